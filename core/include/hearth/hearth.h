@@ -1,0 +1,276 @@
+/* hearth/hearth.h: the public C API of libhearth, the simulator.
+ *
+ * Used by the command line, the Lua binding, the dashboard and the tests.
+ * The library never exits, aborts or prints: every failure that comes from
+ * outside the program returns a status and fills a hearth_error whose text
+ * names the file, parameter or particle and the valid range.
+ *
+ * Units are SI; temperature is in degrees C. Vectors are always 3 doubles;
+ * 2D scenes use x and y and keep z = 0.
+ */
+#ifndef HEARTH_H
+#define HEARTH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "material.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define HEARTH_VERSION "0.1.0"
+
+/// Status codes at the API boundary.
+typedef enum hearth_status {
+    HEARTH_OK = 0,
+    HEARTH_ERR_IO,      ///< a file could not be read or written
+    HEARTH_ERR_PLUGIN,  ///< a plugin could not be loaded or failed a check
+    HEARTH_ERR_PARAM,   ///< a parameter is unknown or out of range
+    HEARTH_ERR_NOMEM,   ///< an allocation failed
+    HEARTH_ERR_GUARD,   ///< the stability guard stopped the run (see hearth_stats.diagnosis)
+    HEARTH_ERR_FORMAT,  ///< a file is not in the expected format or version
+    HEARTH_ERR_STATE    ///< the call does not fit the object's state
+} hearth_status;
+
+/// Filled by every call that can fail. msg is one or more lines, no trailing newline.
+typedef struct hearth_error {
+    hearth_status code;
+    char msg[1024];
+} hearth_error;
+
+/* ---- memory --------------------------------------------------------- */
+
+/// Allocator hook, Lua style: nsize == 0 frees ptr; otherwise (re)allocates.
+/// Returns NULL on failure. osize is the old size (0 for a new block).
+typedef void *(*hearth_alloc_fn)(void *ud, void *ptr, size_t osize, size_t nsize);
+/// Replace the allocator for all later allocations. NULL restores the default.
+/// Call it before creating any scene.
+void hearth_set_allocator(hearth_alloc_fn fn, void *ud);
+/// Bytes currently held by the library (particles, grid, scratch), all scenes together.
+size_t hearth_bytes_allocated(void);
+
+/* ---- threads -------------------------------------------------------- */
+
+/// Number of OpenMP threads the library uses (0 = the OpenMP default). Results
+/// do not depend on it: every parallel loop is deterministic.
+void hearth_set_threads(int n);
+int hearth_get_threads(void);
+
+/* ---- plugins -------------------------------------------------------- */
+
+typedef struct hearth_plugin hearth_plugin; ///< a loaded plugin; lives until process exit
+
+/// Add a folder to the end of the plugin search path (the scene's folder, say).
+/// The search order is: the build's plugin folder, the install folder, every
+/// folder in $HEARTH_PLUGIN_PATH (colon separated), then folders added here.
+void hearth_plugin_path_add(const char *dir);
+/// Load a plugin by name ("elastic" finds hearth_elastic.so on the path) or by
+/// a path containing '/'. Loaded plugins are cached by resolved path.
+const hearth_plugin *hearth_plugin_load(const char *name_or_path, hearth_error *err);
+const hearth_material *hearth_plugin_material(const hearth_plugin *pl);
+const char *hearth_plugin_file(const hearth_plugin *pl);
+/// Call fn for every plugin file found on the search path (each name once, first wins).
+/// Returns the number of files visited.
+int hearth_plugin_each(void (*fn)(void *ud, const char *name, const char *path), void *ud);
+
+/// One line of the conformance report.
+typedef void (*hearth_check_fn)(void *ud, const char *check, int passed, const char *detail);
+/// Run the conformance battery on a plugin file. Returns the number of failed
+/// checks (0 = all pass), or -1 when the plugin cannot be loaded (err says why).
+int hearth_plugin_check(const char *path, hearth_check_fn fn, void *ud, hearth_error *err);
+
+/* ---- shapes (signed distance functions) ----------------------------- */
+
+typedef struct hearth_shape hearth_shape; ///< immutable tree of primitives; owned by the caller
+
+typedef enum hearth_shape_op { HEARTH_UNION, HEARTH_INTERSECT, HEARTH_SUBTRACT } hearth_shape_op;
+
+/// Half-space below the plane through point with outward normal n (solid where (x-point).n < 0).
+hearth_shape *hearth_shape_plane(const double point[3], const double normal[3]);
+/// Axis-aligned box by centre and half extents. In 2D the z extent is ignored.
+hearth_shape *hearth_shape_box(const double centre[3], const double half[3]);
+/// Sphere (a disc in 2D, where z is 0).
+hearth_shape *hearth_shape_sphere(const double centre[3], double radius);
+/// Capped cylinder: centre, unit axis, radius, half height.
+hearth_shape *hearth_shape_cylinder(const double centre[3], const double axis[3], double radius, double half_height);
+/// Capsule: segment a-b swept by radius.
+hearth_shape *hearth_shape_capsule(const double a[3], const double b[3], double radius);
+/// Open container (cup, ramekin, pan): a cylinder wall of inner radius r_in and
+/// thickness wall around axis, a floor of thickness floor below base, height of
+/// the wall measured up the axis from base. The inside is empty.
+hearth_shape *hearth_shape_container(const double base[3], const double axis[3], double r_in,
+                                     double height, double wall, double floor);
+/// Boolean combination (copies a and b).
+hearth_shape *hearth_shape_combine(hearth_shape_op op, const hearth_shape *a, const hearth_shape *b);
+hearth_shape *hearth_shape_copy(const hearth_shape *s);
+void hearth_shape_free(hearth_shape *s);
+/// Signed distance (negative inside) at x; normal (may be NULL) gets the outward unit gradient.
+double hearth_shape_sdf(const hearth_shape *s, const double x[3], double normal[3]);
+/// A box that contains the solid part (infinite extents for a plane).
+void hearth_shape_bounds(const hearth_shape *s, double lo[3], double hi[3]);
+
+/* ---- scenes --------------------------------------------------------- */
+
+typedef struct hearth_scene hearth_scene;
+
+/// Contact response at walls and colliders.
+typedef enum hearth_contact {
+    HEARTH_STICKY = 0,  ///< velocity equals the boundary's
+    HEARTH_SLIP = 1,    ///< normal velocity removed, tangential kept (friction applies)
+    HEARTH_SEPARATE = 2 ///< only approaching normal velocity removed (friction applies)
+} hearth_contact;
+
+typedef enum hearth_guard_policy {
+    HEARTH_GUARD_STOP = 0,    ///< stop with a diagnosis
+    HEARTH_GUARD_ROLLBACK = 1 ///< roll back to the last good state, halve dt, retry (max_rollbacks times)
+} hearth_guard_policy;
+
+typedef struct hearth_scene_def {
+    int dim;              ///< 2 (plane strain) or 3
+    double dx;            ///< grid spacing (m)
+    double lo[3], hi[3];  ///< domain box (m); in 2D z is ignored
+    double gravity[3];    ///< m/s^2
+    double cfl;           ///< CFL number in (0, 4]; dt = cfl dx / (speed + wave speed)
+    double dt_max;        ///< user maximum dt (s); 0 = none
+    hearth_contact wall;  ///< domain walls
+    double wall_friction; ///< Coulomb coefficient at the walls
+    hearth_guard_policy guard;
+    int max_rollbacks;    ///< consecutive rollbacks before the guard stops anyway
+    double energy_growth; ///< kinetic energy growth per step that counts as runaway
+    uint64_t seed;        ///< for jittered seeding
+} hearth_scene_def;
+
+/// Defaults: 2D, dx 0.01, box [0,1]^3, gravity (0,-9.81,0), cfl 0.5, slip walls,
+/// no friction, guard stops, 8 rollbacks, energy growth 10, seed 1.
+hearth_scene_def hearth_default_scene_def(void);
+hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err);
+void hearth_scene_destroy(hearth_scene *s);
+const hearth_scene_def *hearth_scene_get_def(const hearth_scene *s);
+/// Change dt_max / cfl while running (values checked; returns status).
+hearth_status hearth_scene_set_dt_limits(hearth_scene *s, double cfl, double dt_max, hearth_error *err);
+
+/// Add a material from a plugin with named parameters (others take defaults).
+/// Returns the material id (>= 0) or -1 with err filled: unknown names suggest
+/// the nearest valid name; out-of-range values give the range and unit.
+int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *const *names,
+                              const double *values, int n, hearth_error *err);
+int hearth_scene_material_count(const hearth_scene *s);
+const hearth_material *hearth_scene_material_info(const hearth_scene *s, int mat);
+const double *hearth_scene_material_params(const hearth_scene *s, int mat);
+
+/// Particles given explicitly: x and v are 3 doubles each per particle (v may be
+/// NULL for rest), volume each (m^3, or area x 1 m in 2D). Returns the number added or -1.
+int hearth_scene_add_particles(hearth_scene *s, int material, int n, const double *x, const double *v,
+                               double volume, hearth_error *err);
+/// Fill a shape with ppc particles per cell (rounded to a lattice of k^dim), jittered
+/// by `jitter` (0..1 of the sub-cell) from the scene's seeded generator. Returns the count added.
+int hearth_scene_seed_shape(hearth_scene *s, int material, const hearth_shape *shape, int ppc, double jitter,
+                            const double velocity[3], hearth_error *err);
+
+typedef void (*hearth_motion_fn)(void *ud, double t, double v[3], double omega[3]);
+
+typedef struct hearth_collider_def {
+    const hearth_shape *shape; ///< copied
+    hearth_contact mode;
+    double friction;           ///< Coulomb coefficient
+    double velocity[3];        ///< constant translation velocity (m/s), used when motion is NULL
+    double omega[3];           ///< constant angular velocity (rad/s) about pivot, used when motion is NULL
+    double pivot[3];           ///< rotation centre at t = 0 (moves with the collider)
+    hearth_motion_fn motion;   ///< optional: velocity and omega as functions of time
+    void *motion_ud;
+} hearth_collider_def;
+
+hearth_collider_def hearth_default_collider_def(void);
+/// Returns the collider id or -1.
+int hearth_scene_add_collider(hearth_scene *s, const hearth_collider_def *def, hearth_error *err);
+/// Set a collider's velocity function (for scenes restored from a checkpoint).
+hearth_status hearth_scene_collider_motion(hearth_scene *s, int id, hearth_motion_fn fn, void *ud, hearth_error *err);
+
+/// Extra body force as an acceleration field (m/s^2), added to gravity. NULL removes it.
+typedef void (*hearth_body_force_fn)(void *ud, double t, const double x[3], double acc[3]);
+void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void *ud);
+
+/// Advance n steps. HEARTH_ERR_GUARD when the guard stopped the run (see
+/// hearth_stats.diagnosis). With the rollback policy the scene is left at the
+/// last good state; with the stop policy it keeps the failed step for inspection.
+hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err);
+/// Advance until sim time t_end (the last step is shortened to land on it).
+hearth_status hearth_scene_advance(hearth_scene *s, double t_end, hearth_error *err);
+
+typedef enum hearth_guard_state {
+    HEARTH_GUARD_OK = 0,
+    HEARTH_GUARD_ROLLED_BACK, ///< recovered by rolling back at least once
+    HEARTH_GUARD_STOPPED      ///< a check failed; diagnosis says which
+} hearth_guard_state;
+
+typedef struct hearth_stats {
+    double t, dt;          ///< sim time and the last step (s)
+    long step;
+    int particles;
+    double kinetic;        ///< 1/2 sum m |v|^2 (J, or J/m in 2D)
+    double max_speed;      ///< m/s
+    double cfl;            ///< (max speed + wave speed) dt / dx of the last step
+    double wave_speed;     ///< largest material wave speed (m/s)
+    long out_of_domain;    ///< particles pushed back inside the domain so far
+    int rollbacks;         ///< rollbacks so far
+    hearth_guard_state guard;
+    char diagnosis[1024];  ///< empty unless the guard acted
+    int grid_blocks;       ///< active grid blocks
+} hearth_stats;
+void hearth_scene_stats(const hearth_scene *s, hearth_stats *st);
+
+/* ---- fields and probes ---------------------------------------------- */
+
+/// Names of the fields live in this scene, space separated (static until the scene changes).
+const char *hearth_scene_fields(const hearth_scene *s);
+/// Number of components of a field (1 or 3), or 0 when the name is unknown.
+int hearth_field_components(const char *field);
+/// Unit of a field ("m/s", "kg/m^3", ...), or NULL when unknown.
+const char *hearth_field_unit(const char *field);
+
+/// Value of a field at a point (kernel-weighted over nearby particles). out gets
+/// the components; NaN where no particle supports the point.
+hearth_status hearth_probe_point(const hearth_scene *s, const char *field, const double x[3], double *out,
+                                 hearth_error *err);
+/// n samples along a..b (n >= 2); out gets n*components values.
+hearth_status hearth_probe_line(const hearth_scene *s, const char *field, const double a[3], const double b[3],
+                                int n, double *out, hearth_error *err);
+/// A plane slice normal to axis (0,1,2) at coordinate `at`, rasterised to w x h
+/// samples over the domain (row 0 at the low end of the second in-plane axis).
+/// In 2D, axis 2 is the whole domain. Scalar fields only ("velocity_x" etc. for components).
+hearth_status hearth_probe_slice(const hearth_scene *s, const char *field, int axis, double at, int w, int h,
+                                 double *out, hearth_error *err);
+/// A field evaluated at every particle: out gets count*components values.
+hearth_status hearth_scene_particle_field(const hearth_scene *s, const char *field, double *out, hearth_error *err);
+/// Particle positions, 3 doubles each, valid until the next step.
+const double *hearth_scene_positions(const hearth_scene *s);
+int hearth_scene_particle_count(const hearth_scene *s);
+
+/* ---- pictures -------------------------------------------------------- */
+
+/// PNG of the particles coloured by a scalar field (vector fields use their
+/// magnitude): a 2D scatter, or in 3D an orthographic view along -z (nearer
+/// particles on top). Colour bar with min/max and unit, title with the field
+/// and the sim time. width x height pixels; written atomically.
+hearth_status hearth_render_particles(const hearth_scene *s, const char *field, const char *path, int width, int height,
+                                      hearth_error *err);
+/// PNG of a plane slice of a scalar field (see hearth_probe_slice), width pixels
+/// wide with the domain's aspect ratio; outside the material is background.
+hearth_status hearth_render_slice(const hearth_scene *s, const char *field, int axis, double at, const char *path,
+                                  int width, hearth_error *err);
+
+/* ---- checkpoints ---------------------------------------------------- */
+
+/// Save the full state (written atomically). Motion callbacks are not saved.
+hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_error *err);
+/// Restore a scene saved by hearth_scene_save; plugins are reloaded by name.
+hearth_scene *hearth_scene_load(const char *path, hearth_error *err);
+/// A 64-bit hash of the particle state, for determinism checks.
+uint64_t hearth_scene_hash(const hearth_scene *s);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,78 @@
+/* alloc.c: counted allocation through the user's hook. */
+#include "alloc.h"
+
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hearth/hearth.h"
+
+static void *default_alloc(void *ud, void *ptr, size_t osize, size_t nsize) {
+    (void)ud;
+    (void)osize;
+    if (nsize == 0) {
+        free(ptr);
+        return NULL;
+    }
+    return realloc(ptr, nsize);
+}
+
+static hearth_alloc_fn g_fn = default_alloc;
+static void *g_ud;
+static atomic_size_t g_bytes;
+static atomic_long g_fail_after = -1;
+
+void hearth_set_allocator(hearth_alloc_fn fn, void *ud) {
+    g_fn = fn ? fn : default_alloc;
+    g_ud = fn ? ud : NULL;
+}
+
+size_t hearth_bytes_allocated(void) { return atomic_load(&g_bytes); }
+
+void mem_fail_after(long n) { atomic_store(&g_fail_after, n); }
+
+static int should_fail(void) {
+    long n = atomic_load(&g_fail_after);
+    if (n < 0) return 0;
+    if (n == 0) return 1;
+    atomic_fetch_sub(&g_fail_after, 1);
+    return 0;
+}
+
+void *mem_realloc(void *p, size_t osize, size_t nsize) {
+    if (nsize == 0) {
+        mem_free(p, osize);
+        return NULL;
+    }
+    if (should_fail()) return NULL;
+    void *q = g_fn(g_ud, p, p ? osize : 0, nsize);
+    if (!q) return NULL;
+    if (p) atomic_fetch_sub(&g_bytes, osize);
+    atomic_fetch_add(&g_bytes, nsize);
+    return q;
+}
+
+void *mem_alloc(size_t n) { return n ? mem_realloc(NULL, 0, n) : NULL; }
+
+void *mem_calloc(size_t n) {
+    void *p = mem_alloc(n);
+    if (p) memset(p, 0, n);
+    return p;
+}
+
+void mem_free(void *p, size_t n) {
+    if (!p) return;
+    g_fn(g_ud, p, n, 0);
+    atomic_fetch_sub(&g_bytes, n);
+}
+
+char *mem_strdup(const char *s) {
+    size_t n = strlen(s) + 1;
+    char *d = mem_alloc(n);
+    if (d) memcpy(d, s, n);
+    return d;
+}
+
+void mem_strfree(char *s) {
+    if (s) mem_free(s, strlen(s) + 1);
+}

@@ -1,0 +1,22 @@
+/* alloc.h: the one allocation path of libhearth (style rule 6).
+ * Every block is counted so hearth_bytes_allocated() and `hearth bench`
+ * can report bytes per particle. Tests can make the Nth allocation fail. */
+#ifndef HEARTH_SIM_ALLOC_H
+#define HEARTH_SIM_ALLOC_H
+#include <stddef.h>
+
+/// Allocate n bytes (NULL on failure or when n == 0).
+void *mem_alloc(size_t n);
+/// Allocate n zeroed bytes.
+void *mem_calloc(size_t n);
+/// Grow or shrink p from osize to nsize bytes; on failure p is untouched and NULL returned.
+void *mem_realloc(void *p, size_t osize, size_t nsize);
+/// Free p of size n (NULL is fine).
+void mem_free(void *p, size_t n);
+/// Duplicate a string (counted).
+char *mem_strdup(const char *s);
+void mem_strfree(char *s);
+
+/// Testing: make the allocation after `n` more succeed calls fail (n < 0 disables).
+void mem_fail_after(long n);
+#endif

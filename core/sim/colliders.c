@@ -1,0 +1,114 @@
+/* colliders.c: moving analytic colliders (rigid motion of a hearth_shape)
+ * and the contact projection applied to grid velocities.
+ *
+ * The shape is never transformed; queries are mapped into its t = 0 frame.
+ * That keeps shapes immutable and the SDF exact under any rigid motion. */
+#include "colliders.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "error.h"
+#include "tensor.h"
+
+/* Report the first non-finite component of a def vector. */
+static hearth_status check_vec(const double a[3], const char *name, const char *unit, hearth_error *err) {
+    for (int i = 0; i < 3; i++)
+        if (!isfinite(a[i]))
+            return err_set(err, HEARTH_ERR_PARAM, "collider %s[%d] = %g is not finite; valid range: any finite %s",
+                           name, i, a[i], unit);
+    return HEARTH_OK;
+}
+
+hearth_status collider_init(collider *c, const hearth_collider_def *def, hearth_error *err) {
+    HEARTH_ASSERT(c && def);
+    memset(c, 0, sizeof *c); /* so collider_free is safe whatever happens below */
+    if (!def->shape)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "collider shape is NULL; valid: a shape from hearth_shape_* (copied by the collider)");
+    if (!(def->friction >= 0) || !isfinite(def->friction))
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "collider friction = %g is out of range; valid range: [0, inf) (Coulomb coefficient, finite)",
+                       def->friction);
+    if (def->mode != HEARTH_STICKY && def->mode != HEARTH_SLIP && def->mode != HEARTH_SEPARATE)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "collider mode = %d is out of range; valid: 0 (sticky), 1 (slip), 2 (separate)",
+                       (int)def->mode);
+    hearth_status st;
+    if ((st = check_vec(def->velocity, "velocity", "m/s", err)) != HEARTH_OK) return st;
+    if ((st = check_vec(def->omega, "omega", "rad/s", err)) != HEARTH_OK) return st;
+    if ((st = check_vec(def->pivot, "pivot", "m", err)) != HEARTH_OK) return st;
+
+    c->shape = hearth_shape_copy(def->shape);
+    if (!c->shape) return err_set(err, HEARTH_ERR_NOMEM, "collider: out of memory copying the shape");
+    c->mode = def->mode;
+    c->friction = def->friction;
+    memcpy(c->vel, def->velocity, sizeof c->vel);
+    memcpy(c->omega, def->omega, sizeof c->omega);
+    memcpy(c->pivot0, def->pivot, sizeof c->pivot0);
+    t3_identity(c->R);
+    c->motion = def->motion;
+    c->motion_ud = def->motion_ud;
+    /* With a motion function the def constants are unused: start from motion(0)
+     * so vel/omega are meaningful before the scene first sets the time. */
+    collider_set_time(c, 0.0);
+    return HEARTH_OK;
+}
+
+void collider_free(collider *c) {
+    if (!c) return;
+    hearth_shape_free(c->shape);
+    c->shape = NULL;
+}
+
+void collider_set_time(collider *c, double t) {
+    if (c->motion) c->motion(c->motion_ud, t, c->vel, c->omega);
+}
+
+void collider_advance(collider *c, double dt) {
+    for (int i = 0; i < 3; i++) c->offset[i] += c->vel[i] * dt;
+    double w = sqrt(c->omega[0] * c->omega[0] + c->omega[1] * c->omega[1] + c->omega[2] * c->omega[2]);
+    if (!(w > 0)) return;
+    /* Left-multiply: omega is a world-frame angular velocity. */
+    double axis[3] = {c->omega[0] / w, c->omega[1] / w, c->omega[2] / w}, Q[9], Rn[9];
+    t3_rotation(axis, w * dt, Q);
+    t3_mul(Q, c->R, Rn);
+    t3_copy(Rn, c->R);
+}
+
+double collider_sdf(const collider *c, const double x[3], double n[3]) {
+    double p[3], xl[3], nl[3];
+    for (int i = 0; i < 3; i++) p[i] = x[i] - c->pivot0[i] - c->offset[i];
+    /* xl = R^T p + pivot0 (R^T p written out: t3_mulv has no transpose form) */
+    for (int i = 0; i < 3; i++)
+        xl[i] = c->R[i] * p[0] + c->R[3 + i] * p[1] + c->R[6 + i] * p[2] + c->pivot0[i];
+    double d = hearth_shape_sdf(c->shape, xl, n ? nl : NULL);
+    if (n) t3_mulv(c->R, nl, n);
+    return d;
+}
+
+void collider_velocity_at(const collider *c, const double x[3], double v[3]) {
+    const double *w = c->omega;
+    double r[3];
+    for (int i = 0; i < 3; i++) r[i] = x[i] - c->pivot0[i] - c->offset[i];
+    v[0] = c->vel[0] + w[1] * r[2] - w[2] * r[1];
+    v[1] = c->vel[1] + w[2] * r[0] - w[0] * r[2];
+    v[2] = c->vel[2] + w[0] * r[1] - w[1] * r[0];
+}
+
+void contact_apply(hearth_contact mode, double friction, const double n[3], const double vb[3], double v[3]) {
+    if (mode == HEARTH_STICKY) {
+        memcpy(v, vb, 3 * sizeof *v);
+        return;
+    }
+    double rel[3] = {v[0] - vb[0], v[1] - vb[1], v[2] - vb[2]};
+    double vn = rel[0] * n[0] + rel[1] * n[1] + rel[2] * n[2];
+    if (mode == HEARTH_SEPARATE && vn >= 0) return; /* leaving or sliding: free */
+    double vt[3] = {rel[0] - vn * n[0], rel[1] - vn * n[1], rel[2] - vn * n[2]};
+    /* Coulomb: the impulse that removed |vn| can cancel at most friction*|vn|
+     * of tangential speed. */
+    double t = sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]);
+    double lim = friction * fabs(vn);
+    double scale = t <= lim ? 0.0 : 1.0 - lim / t;
+    for (int i = 0; i < 3; i++) v[i] = vb[i] + scale * vt[i];
+}

@@ -1,0 +1,45 @@
+/* colliders.h: moving analytic colliders and the grid contact rule.
+ *
+ * A collider holds its own copy of a shape in the frame it had at t = 0 and
+ * the rigid motion accumulated since: world x = R (xl - pivot0) + pivot0 + offset.
+ * The pivot moves with the collider, so omega always spins it about its
+ * current pivot (pivot0 + offset). */
+#ifndef HEARTH_SIM_COLLIDERS_H
+#define HEARTH_SIM_COLLIDERS_H
+#include "hearth/hearth.h"
+
+typedef struct collider {
+    hearth_shape *shape;     /* owned copy, in the collider's local (t=0) frame */
+    hearth_contact mode;
+    double friction;         /* Coulomb coefficient, >= 0 */
+    double vel[3], omega[3]; /* current, from def constants or from motion(t) (m/s, rad/s) */
+    double pivot0[3];        /* rotation centre at t=0 (m) */
+    double offset[3];        /* translation so far (m) */
+    double R[9];             /* rotation so far, row-major */
+    hearth_motion_fn motion; /* optional; not owned */
+    void *motion_ud;
+} collider;
+
+/// Validate def and fill c (shape copied). On failure c holds nothing to free and
+/// err names the parameter and its valid range (HEARTH_ERR_PARAM) or HEARTH_ERR_NOMEM.
+/// With a motion function, vel/omega come from motion(0).
+hearth_status collider_init(collider *c, const hearth_collider_def *def, hearth_error *err);
+/// Release the shape copy (c may be zeroed or already freed).
+void collider_free(collider *c);
+/// If c has a motion function, vel and omega = motion(t); otherwise nothing.
+void collider_set_time(collider *c, double t);
+/// Move by the current vel/omega over dt (s): exact for constant vel and omega.
+void collider_advance(collider *c, double dt);
+/// Signed distance (m, negative inside) at world point x; n (may be NULL) gets the
+/// outward unit normal in world space.
+double collider_sdf(const collider *c, const double x[3], double n[3]);
+/// Rigid velocity of the collider's material at world point x (m/s).
+void collider_velocity_at(const collider *c, const double x[3], double v[3]);
+
+/// Project velocity v (in place) of a grid node touching a boundary with outward
+/// unit normal n that moves at vb. sticky: v = vb. slip: the normal part of
+/// v - vb is removed, then Coulomb friction acts on the tangential part.
+/// separate: as slip, but only when (v - vb).n < 0; otherwise v is left alone.
+/// friction >= 0.
+void contact_apply(hearth_contact mode, double friction, const double n[3], const double vb[3], double v[3]);
+#endif

@@ -1,0 +1,70 @@
+/* grid.c: block-sparse storage for grid nodes. */
+#include "grid.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "alloc.h"
+#include "error.h"
+
+hearth_status grid_init(grid *g, int dim, double dx, const double lo[3], const double hi[3], hearth_error *err) {
+    memset(g, 0, sizeof *g);
+    g->dim = dim;
+    g->dx = dx;
+    g->inv_dx = 1.0 / dx;
+    long nb = 1;
+    for (int d = 0; d < 3; d++) {
+        g->lo[d] = d < dim ? lo[d] : 0.0;
+        g->nn[d] = d < dim ? (int)ceil((hi[d] - lo[d]) / dx - 1e-9) + 1 : 1;
+        g->nb[d] = d < dim ? (g->nn[d] + GRID_B - 1) / GRID_B + 1 : 1; /* +1: tiles reach one block past the last */
+        nb *= g->nb[d];
+    }
+    if (nb > (1L << 28))
+        return err_set(err, HEARTH_ERR_PARAM, "dx = %g gives %ld grid blocks over the box; the limit is %ld (use a larger dx or a smaller box)",
+                       dx, nb, 1L << 28);
+    g->nblocks = (int)nb;
+    g->nodes_per_block = dim == 2 ? GRID_B * GRID_B : GRID_B * GRID_B * GRID_B;
+    g->slot = mem_alloc(sizeof(int) * (size_t)nb);
+    if (!g->slot) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the grid block table (%ld blocks)", nb);
+    for (long i = 0; i < nb; i++) g->slot[i] = -1;
+    return HEARTH_OK;
+}
+
+void grid_free(grid *g) {
+    mem_free(g->slot, sizeof(int) * (size_t)g->nblocks);
+    mem_free(g->active, sizeof(int) * (size_t)g->acap);
+    mem_free(g->data, sizeof(double) * GRID_NCH * (size_t)g->nodes_per_block * (size_t)g->cap);
+    memset(g, 0, sizeof *g);
+}
+
+hearth_status grid_activate(grid *g, const unsigned char *mark, hearth_error *err) {
+    for (int i = 0; i < g->nactive; i++) g->slot[g->active[i]] = -1;
+    int n = 0;
+    for (int b = 0; b < g->nblocks; b++) n += mark[b] != 0;
+    if (n > g->acap) {
+        int ncap = g->acap ? g->acap : 64;
+        while (ncap < n) ncap *= 2;
+        int *a = mem_realloc(g->active, sizeof(int) * (size_t)g->acap, sizeof(int) * (size_t)ncap);
+        if (!a) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d grid blocks", n);
+        g->active = a;
+        g->acap = ncap;
+    }
+    if (n > g->cap) {
+        int ncap = g->cap ? g->cap : 64;
+        while (ncap < n) ncap *= 2;
+        const size_t per = sizeof(double) * GRID_NCH * (size_t)g->nodes_per_block;
+        double *d = mem_realloc(g->data, per * (size_t)g->cap, per * (size_t)ncap);
+        if (!d) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d grid blocks", n);
+        g->data = d;
+        g->cap = ncap;
+    }
+    n = 0;
+    for (int b = 0; b < g->nblocks; b++)
+        if (mark[b]) {
+            g->slot[b] = n;
+            g->active[n++] = b;
+        }
+    g->nactive = n;
+    memset(g->data, 0, sizeof(double) * GRID_NCH * (size_t)g->nodes_per_block * (size_t)n);
+    return HEARTH_OK;
+}

@@ -1,0 +1,32 @@
+/* io_png.h: PNG files for frames (written) and cookie-cutter masks (read).
+ *
+ * A thin layer over libpng. Writes are atomic so a viewer or a crashed run
+ * never sees half a frame; reads flatten every PNG flavour to 8-bit grey. */
+#ifndef HEARTH_SIM_IO_PNG_H
+#define HEARTH_SIM_IO_PNG_H
+#include "hearth/hearth.h"
+
+/// Largest width or height accepted by png_write_rgb and png_read_gray (pixels).
+#define PNG_DIM_MAX 32768
+
+/// Write an 8-bit RGB image (w*h*3 bytes, row 0 at the top, no padding) to path.
+/// The data go to path + ".tmp.<pid>" in the same folder, are flushed and
+/// fsynced, then renamed over path. On any failure the temporary file is
+/// removed and an existing file at path is left untouched. Errors:
+/// HEARTH_ERR_PARAM (size outside 1..PNG_DIM_MAX), HEARTH_ERR_IO (with the
+/// path and strerror), HEARTH_ERR_NOMEM. Not safe for two threads of one
+/// process writing the same path at once (they share the temporary name).
+hearth_status png_write_rgb(const char *path, int w, int h, const unsigned char *rgb,
+                            hearth_error *err);
+
+/// Read any PNG (palette, grey, RGB, with or without alpha, 1..16 bits) as 8-bit
+/// luminance L = 0.299 R + 0.587 G + 0.114 B, composited over white when the
+/// image has alpha: L a/255 + 255 (1 - a/255). Rows top first. Stored values
+/// are used as they are (gAMA, cHRM and iCCP are ignored). On success *pixels
+/// is a w*h block from mem_alloc that the caller releases with
+/// mem_free(*pixels, (size_t)w * h). On failure *pixels is NULL, *w = *h = 0,
+/// and the status is HEARTH_ERR_IO (cannot open or read), HEARTH_ERR_FORMAT
+/// (not a PNG, truncated or corrupt) or HEARTH_ERR_NOMEM.
+hearth_status png_read_gray(const char *path, int *w, int *h, unsigned char **pixels,
+                            hearth_error *err);
+#endif

@@ -1,0 +1,431 @@
+/* mpm.c: one explicit MPM step (Ding et al. 2019 §6.1, eq. 15-16; Jiang et al. 2015 APIC).
+ *
+ * Transfers use quadratic B-splines. The force on the grid uses the moving
+ * least squares form of Hu et al. 2018 (MLS-MPM): grad w_ip ~ w_ip D^-1 (x_i - x_p)
+ * with D = dx^2/4 I, and the APIC affine matrix C_p is the velocity gradient
+ * that advances F. We chose it over the classic B-spline gradient form because
+ * it needs no stored stress or velocity gradient (one plugin call per particle
+ * per step, fused into P2G) and keeps linear and angular momentum exactly.
+ *
+ * Step order (design notes): sort particles into blocks, then per particle
+ * F <- (I + dt C) F and the plugin's stress, fused into P2G; grid update with
+ * gravity, walls and colliders; G2P with APIC velocity and C, positions.
+ *
+ * Determinism: P2G runs block by block in 2^dim colour phases. Blocks of one
+ * colour are two blocks apart, and a block's particles touch only itself and
+ * the next block on each axis, so no two threads ever write the same node and
+ * every node sums its contributions in the same order whatever the thread
+ * count. No atomics. */
+#include <math.h>
+#include <string.h>
+
+#include "error.h"
+#include "scene.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#define FORCE_INLINE static inline __attribute__((always_inline))
+
+/* ---- sorting --------------------------------------------------------- */
+
+static int block_of_position(const grid *g, const double *x) {
+    int b[3] = {0, 0, 0};
+    for (int d = 0; d < g->dim; d++) {
+        int base = (int)floor((x[d] - g->lo[d]) * g->inv_dx - 0.5);
+        b[d] = base / GRID_B; /* base >= 0: particles are clamped inside the domain */
+    }
+    return grid_block_id(g, b[0], b[1], b[2]);
+}
+
+hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const int n = ps->n;
+    hearth_status st = scene_ensure_scratch(s, n, err);
+    if (st) return st;
+    const double *X = pcold(ps, PC_X);
+    int *keys = s->keys, *order = s->order, *counts = s->counts;
+
+    int sorted = 1;
+#pragma omp parallel for schedule(static) reduction(&& : sorted)
+    for (int i = 0; i < n; i++) {
+        keys[i] = block_of_position(g, X + 3 * i);
+        if (i > 0 && block_of_position(g, X + 3 * (i - 1)) > keys[i]) sorted = 0;
+    }
+    /* counting sort: stable, O(n + blocks), the same for any thread count */
+    memset(counts, 0, sizeof(int) * ((size_t)g->nblocks + 1));
+    for (int i = 0; i < n; i++) counts[keys[i] + 1]++;
+    for (int b = 0; b < g->nblocks; b++) counts[b + 1] += counts[b];
+    if (!sorted) {
+        for (int i = 0; i < n; i++) order[counts[keys[i]]++] = i;
+        particles_permute(ps, order, s->perm_scratch);
+        /* counts were advanced to block ends; rebuild starts */
+        memset(counts, 0, sizeof(int) * ((size_t)g->nblocks + 1));
+        for (int i = 0; i < n; i++) counts[keys[order[i]] + 1]++;
+        for (int b = 0; b < g->nblocks; b++) counts[b + 1] += counts[b];
+    }
+
+    /* runs of particles per block, and the blocks their tiles touch */
+    s->npb = 0;
+    memset(s->mark, 0, (size_t)g->nblocks);
+    int ncolour[8] = {0};
+    for (int b = 0; b < g->nblocks; b++) {
+        if (counts[b + 1] == counts[b]) continue;
+        s->pb[s->npb++] = (pblock){b, counts[b], counts[b + 1]};
+        int c[3];
+        grid_block_coords(g, b, c);
+        ncolour[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++;
+        for (int dx = 0; dx <= 1; dx++)
+            for (int dy = 0; dy <= 1; dy++)
+                for (int dz = 0; dz <= (g->dim == 3); dz++) s->mark[grid_block_id(g, c[0] + dx, c[1] + dy, c[2] + dz)] = 1;
+    }
+    s->colour_start[0] = 0;
+    for (int k = 0; k < 8; k++) s->colour_start[k + 1] = s->colour_start[k] + ncolour[k];
+    int fill[8];
+    memcpy(fill, s->colour_start, sizeof fill);
+    for (int k = 0; k < s->npb; k++) {
+        int c[3];
+        grid_block_coords(g, s->pb[k].block, c);
+        s->colour_pb[fill[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++] = k;
+    }
+    return grid_activate(g, s->mark, err);
+}
+
+/* ---- P2G ------------------------------------------------------------- */
+
+static void record_fail(pb_partial *pp, int i, fail_kind kind, int code) {
+    if (pp->fail_i < 0) {
+        pp->fail_i = i;
+        pp->fail_kind = kind;
+        pp->fail_code = code;
+    }
+}
+
+static int all_finite(const double *a, int n) {
+    for (int k = 0; k < n; k++)
+        if (!isfinite(a[k])) return 0;
+    return 1;
+}
+
+FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, double *tile) {
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const pblock pb = s->pb[k];
+    pb_partial *pp = &s->partial[k];
+    const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
+    const int NPB = g->nodes_per_block;
+    int bc[3];
+    grid_block_coords(g, pb.block, bc);
+    const int org[3] = {bc[0] * GRID_B, bc[1] * GRID_B, bc[2] * GRID_B};
+    memset(tile, 0, sizeof(double) * GRID_NCH * (size_t)TN);
+
+    const double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *M = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
+    double *Cc = pcold(ps, PC_C), *Fc = pcold(ps, PC_F), *state = pcold(ps, PC_STATE);
+    const int *mat = pcoli(ps, PC_MAT);
+    const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
+    const int stride = ps->state_stride;
+
+    for (int i = pb.start; i < pb.end; i++) {
+        const double *x = X + 3 * i, *v = V + 3 * i, *C = Cc + 9 * i;
+        double *F = Fc + 9 * i;
+        /* F^{n+1} = (I + dt C) F^n: C is the APIC velocity gradient from the last G2P */
+        double Fn[9];
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++)
+                Fn[3 * r + c] = F[3 * r + c] + dt * (C[3 * r] * F[c] + C[3 * r + 1] * F[3 + c] + C[3 * r + 2] * F[6 + c]);
+        memcpy(F, Fn, sizeof Fn);
+        const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
+                         F[2] * (F[3] * F[7] - F[4] * F[6]);
+        double tau[9] = {0};
+        if (!(J > 0) || !all_finite(F, 9)) {
+            record_fail(pp, i, FAIL_F, 0);
+        } else {
+            const material_slot *ms = &s->mats[mat[i]];
+            hearth_point pt;
+            memcpy(pt.grad_v, C, sizeof pt.grad_v);
+            memcpy(pt.F, F, sizeof pt.F);
+            pt.dt = dt;
+            pt.temperature = pt.porosity = pt.saturation = NAN;
+            pt.p = scene_params_for(s, mat[i], i);
+            pt.state = state ? state + (size_t)i * stride : NULL;
+            int code = ms->m->stress(&pt, tau);
+            if (code) {
+                record_fail(pp, i, FAIL_PLUGIN, code);
+                memset(tau, 0, sizeof tau);
+            } else if (!all_finite(tau, 9)) {
+                record_fail(pp, i, FAIL_STRESS, 0);
+                memset(tau, 0, sizeof tau);
+            }
+        }
+        /* affine momentum with the stress folded in (MLS-MPM): Q = m C - dt V0 D^-1 tau */
+        const double m = M[i], k0 = dt * V0[i] * Dinv;
+        double Q[9];
+        for (int a = 0; a < 9; a++) Q[a] = m * C[a] - k0 * tau[a];
+
+        int base[3] = {0, 0, 0};
+        double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
+        for (int d = 0; d < D; d++) {
+            const double Xd = (x[d] - g->lo[d]) * inv_dx;
+            const int b = (int)floor(Xd - 0.5);
+            fx[d] = Xd - b;
+            base[d] = b - org[d];
+            bspline_weights(fx[d], w[d], dw);
+        }
+        const double mv0 = m * v[0], mv1 = m * v[1], mv2 = m * v[2];
+        for (int a = 0; a < 3; a++) {
+            const double d0 = (a - fx[0]) * dx;
+            for (int b = 0; b < 3; b++) {
+                const double d1 = (b - fx[1]) * dx, wab = w[0][a] * w[1][b];
+                if (D == 2) {
+                    const int t = (base[0] + a) * GRID_T + (base[1] + b);
+                    tile[t] += wab * m;
+                    tile[TN + t] += wab * (mv0 + Q[0] * d0 + Q[1] * d1);
+                    tile[2 * TN + t] += wab * (mv1 + Q[3] * d0 + Q[4] * d1);
+                } else {
+                    for (int c = 0; c < 3; c++) {
+                        const double d2 = (c - fx[2]) * dx, wt = wab * w[2][c];
+                        const int t = ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + c);
+                        tile[t] += wt * m;
+                        tile[TN + t] += wt * (mv0 + Q[0] * d0 + Q[1] * d1 + Q[2] * d2);
+                        tile[2 * TN + t] += wt * (mv1 + Q[3] * d0 + Q[4] * d1 + Q[5] * d2);
+                        tile[3 * TN + t] += wt * (mv2 + Q[6] * d0 + Q[7] * d1 + Q[8] * d2);
+                    }
+                }
+            }
+        }
+    }
+
+    /* flush the tile into the block and its +1 neighbours */
+    for (int a = 0; a < GRID_T; a++)
+        for (int b = 0; b < GRID_T; b++)
+            for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
+                const int t = D == 2 ? a * GRID_T + b : (a * GRID_T + b) * GRID_T + c;
+                if (tile[t] == 0.0) continue;
+                const int blk = grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0));
+                double *node = grid_block(g, g->slot[blk]);
+                const int l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B
+                                     : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
+                for (int ch = 0; ch < GRID_NCH; ch++) node[ch * NPB + l] += tile[ch * TN + t];
+            }
+}
+
+static void p2g_block_2d(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 2, k, dt, tile); }
+static void p2g_block_3d(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 3, k, dt, tile); }
+
+void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
+    (void)rep;
+    void (*fn)(hearth_scene *, int, double, double *) = s->g.dim == 2 ? p2g_block_2d : p2g_block_3d;
+    for (int k = 0; k < s->npb; k++) s->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
+#pragma omp parallel
+    {
+        double tile[GRID_NCH * GRID_T * GRID_T * GRID_T];
+        for (int col = 0; col < 8; col++) {
+            const int a = s->colour_start[col], b = s->colour_start[col + 1];
+#pragma omp for schedule(dynamic, 2)
+            for (int q = a; q < b; q++) fn(s, s->colour_pb[q], dt, tile);
+            /* the implicit barrier of omp for separates colours */
+        }
+    }
+}
+
+/* ---- grid update ----------------------------------------------------- */
+
+void mpm_grid_update(hearth_scene *s, double dt) {
+    grid *g = &s->g;
+    const int D = g->dim, NPB = g->nodes_per_block;
+    const hearth_scene_def *def = &s->def;
+#pragma omp parallel for schedule(dynamic, 4)
+    for (int k = 0; k < g->nactive; k++) {
+        double *node = grid_block(g, k);
+        int bc[3];
+        grid_block_coords(g, g->active[k], bc);
+        for (int l = 0; l < NPB; l++) {
+            const double m = node[l];
+            if (m <= 0.0) {
+                node[NPB + l] = node[2 * NPB + l] = node[3 * NPB + l] = 0.0;
+                continue;
+            }
+            const int li[3] = {D == 2 ? l / GRID_B : l / (GRID_B * GRID_B), D == 2 ? l % GRID_B : (l / GRID_B) % GRID_B,
+                               D == 2 ? 0 : l % GRID_B};
+            int idx[3];
+            double xi[3] = {0, 0, 0};
+            for (int d = 0; d < 3; d++) {
+                idx[d] = bc[d] * GRID_B + li[d];
+                if (d < D) xi[d] = g->lo[d] + idx[d] * g->dx;
+            }
+            double v[3] = {node[NPB + l] / m, node[2 * NPB + l] / m, D == 3 ? node[3 * NPB + l] / m : 0.0};
+            double acc[3] = {def->gravity[0], def->gravity[1], D == 3 ? def->gravity[2] : 0.0};
+            if (s->body_force) {
+                double extra[3] = {0, 0, 0};
+                s->body_force(s->body_force_ud, s->t, xi, extra);
+                for (int d = 0; d < D; d++) acc[d] += extra[d];
+            }
+            for (int d = 0; d < D; d++) v[d] += dt * acc[d];
+            /* domain walls act on the two node layers nearest each face */
+            for (int d = 0; d < D; d++) {
+                const double zero[3] = {0, 0, 0};
+                double n[3] = {0, 0, 0};
+                if (idx[d] < 2) n[d] = 1.0;
+                else if (idx[d] > g->nn[d] - 3) n[d] = -1.0;
+                else continue;
+                contact_apply(def->wall, def->wall_friction, n, zero, v);
+            }
+            for (int c = 0; c < s->ncol; c++) {
+                double n[3];
+                if (collider_sdf(&s->cols[c], xi, n) > 0.0) continue;
+                double vb[3];
+                collider_velocity_at(&s->cols[c], xi, vb);
+                if (D == 2) n[2] = vb[2] = 0.0;
+                contact_apply(s->cols[c].mode, s->cols[c].friction, n, vb, v);
+            }
+            node[NPB + l] = v[0];
+            node[2 * NPB + l] = v[1];
+            node[3 * NPB + l] = D == 3 ? v[2] : 0.0;
+        }
+    }
+}
+
+/* ---- G2P ------------------------------------------------------------- */
+
+FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, double *tile) {
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const pblock pb = s->pb[k];
+    pb_partial *pp = &s->partial[k];
+    const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
+    const int NPB = g->nodes_per_block;
+    int bc[3];
+    grid_block_coords(g, pb.block, bc);
+    const int org[3] = {bc[0] * GRID_B, bc[1] * GRID_B, bc[2] * GRID_B};
+
+    /* gather the tile's velocities once; particles then read a small dense array */
+    for (int a = 0; a < GRID_T; a++)
+        for (int b = 0; b < GRID_T; b++)
+            for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
+                const int t = D == 2 ? a * GRID_T + b : (a * GRID_T + b) * GRID_T + c;
+                const int blk = grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0));
+                const double *node = grid_block(g, g->slot[blk]);
+                const int l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B
+                                     : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
+                for (int d = 0; d < 3; d++) tile[d * TN + t] = node[(d + 1) * NPB + l];
+            }
+
+    double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *Cc = pcold(ps, PC_C);
+    const double *M = pcold(ps, PC_MASS), *state = pcold(ps, PC_STATE);
+    const int *mat = pcoli(ps, PC_MAT);
+    const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
+    double lo[3], hi[3];
+    for (int d = 0; d < 3; d++) {
+        lo[d] = g->lo[d] + dx;                       /* keep every particle's stencil on the grid */
+        hi[d] = g->lo[d] + (g->nn[d] - 2) * dx;
+    }
+    double ke = 0, vmax = -1, cmax = 0;
+    int fastest = -1;
+    long ood = 0;
+    for (int i = pb.start; i < pb.end; i++) {
+        double *x = X + 3 * i, *v = V + 3 * i, *C = Cc + 9 * i;
+        int base[3] = {0, 0, 0};
+        double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
+        for (int d = 0; d < D; d++) {
+            const double Xd = (x[d] - g->lo[d]) * inv_dx;
+            const int b = (int)floor(Xd - 0.5);
+            fx[d] = Xd - b;
+            base[d] = b - org[d];
+            bspline_weights(fx[d], w[d], dw);
+        }
+        double nv[3] = {0, 0, 0}, B[9] = {0};
+        for (int a = 0; a < 3; a++) {
+            const double d0 = (a - fx[0]) * dx;
+            for (int b = 0; b < 3; b++) {
+                const double d1 = (b - fx[1]) * dx, wab = w[0][a] * w[1][b];
+                if (D == 2) {
+                    const int t = (base[0] + a) * GRID_T + (base[1] + b);
+                    const double u0 = tile[t], u1 = tile[TN + t];
+                    nv[0] += wab * u0;
+                    nv[1] += wab * u1;
+                    B[0] += wab * u0 * d0; B[1] += wab * u0 * d1;
+                    B[3] += wab * u1 * d0; B[4] += wab * u1 * d1;
+                } else {
+                    for (int c = 0; c < 3; c++) {
+                        const double d2 = (c - fx[2]) * dx, wt = wab * w[2][c];
+                        const int t = ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + c);
+                        const double u0 = tile[t], u1 = tile[TN + t], u2 = tile[2 * TN + t];
+                        nv[0] += wt * u0; nv[1] += wt * u1; nv[2] += wt * u2;
+                        B[0] += wt * u0 * d0; B[1] += wt * u0 * d1; B[2] += wt * u0 * d2;
+                        B[3] += wt * u1 * d0; B[4] += wt * u1 * d1; B[5] += wt * u1 * d2;
+                        B[6] += wt * u2 * d0; B[7] += wt * u2 * d1; B[8] += wt * u2 * d2;
+                    }
+                }
+            }
+        }
+        for (int a = 0; a < 9; a++) C[a] = Dinv * B[a];
+        int out = 0;
+        for (int d = 0; d < D; d++) {
+            v[d] = nv[d];
+            x[d] += dt * nv[d];
+            /* a particle that left the domain is put back on its edge and counted, never dropped */
+            if (x[d] < lo[d]) { x[d] = lo[d]; out = 1; }
+            else if (x[d] > hi[d]) { x[d] = hi[d]; out = 1; }
+        }
+        ood += out;
+        if (!all_finite(x, 3)) record_fail(pp, i, FAIL_X, 0);
+        else if (!all_finite(v, 3)) record_fail(pp, i, FAIL_V, 0);
+        else if (!all_finite(C, 9)) record_fail(pp, i, FAIL_C, 0);
+        const double sp2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        ke += 0.5 * M[i] * sp2;
+        if (sp2 > vmax) { vmax = sp2; fastest = i; }
+        const material_slot *ms = &s->mats[mat[i]];
+        if (ms->m->state_size > 0) {
+            const double c = ms->m->wave_speed(scene_params_for(s, mat[i], i), state + (size_t)i * ps->state_stride);
+            if (c > cmax) cmax = c;
+        }
+    }
+    pp->ke = ke;
+    pp->vmax = vmax;
+    pp->fastest = fastest;
+    pp->cmax = cmax;
+    pp->ood = ood;
+}
+
+static void g2p_block_2d(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 2, k, dt, tile); }
+static void g2p_block_3d(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 3, k, dt, tile); }
+
+void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
+    void (*fn)(hearth_scene *, int, double, double *) = s->g.dim == 2 ? g2p_block_2d : g2p_block_3d;
+#pragma omp parallel
+    {
+        double tile[3 * GRID_T * GRID_T * GRID_T];
+#pragma omp for schedule(dynamic, 2)
+        for (int k = 0; k < s->npb; k++) fn(s, k, dt, tile);
+    }
+    /* reduce in block order so sums and the first failure do not depend on threads */
+    *rep = (step_report){.particle = -1, .fastest = -1};
+    double vmax = -1;
+    for (int k = 0; k < s->npb; k++) {
+        const pb_partial *pp = &s->partial[k];
+        if (pp->fail_i >= 0 && (rep->particle < 0 || pp->fail_i < rep->particle)) {
+            rep->particle = pp->fail_i;
+            rep->kind = (fail_kind)pp->fail_kind;
+            rep->code = pp->fail_code;
+        }
+        rep->kinetic += pp->ke;
+        if (pp->vmax > vmax) {
+            vmax = pp->vmax;
+            rep->fastest = pp->fastest;
+        }
+        if (pp->cmax > rep->c_max) rep->c_max = pp->cmax;
+        rep->out_of_domain += pp->ood;
+    }
+    rep->max_speed = vmax > 0 ? sqrt(vmax) : 0.0;
+}
+
+hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err) {
+    hearth_status st = mpm_sort(s, err);
+    if (st) return st;
+    mpm_p2g(s, dt, rep);
+    mpm_grid_update(s, dt);
+    mpm_g2p(s, dt, rep);
+    return HEARTH_OK;
+}

@@ -1,0 +1,73 @@
+/* params.c: parameter validation with messages that say how to fix the input. */
+#include "params.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "error.h"
+
+int params_index(const hearth_material *m, const char *name) {
+    for (int i = 0; i < m->nparams; i++)
+        if (strcmp(m->params[i].name, name) == 0) return i;
+    return -1;
+}
+
+static int edit_distance(const char *a, const char *b) {
+    int la = (int)strlen(a), lb = (int)strlen(b);
+    if (la > 63 || lb > 63) return 99;
+    int prev[64], cur[64];
+    for (int j = 0; j <= lb; j++) prev[j] = j;
+    for (int i = 1; i <= la; i++) {
+        cur[0] = i;
+        for (int j = 1; j <= lb; j++) {
+            int sub = prev[j - 1] + (a[i - 1] != b[j - 1]);
+            int del = prev[j] + 1, ins = cur[j - 1] + 1;
+            cur[j] = sub < del ? (sub < ins ? sub : ins) : (del < ins ? del : ins);
+        }
+        memcpy(prev, cur, sizeof(int) * (size_t)(lb + 1));
+    }
+    return prev[lb];
+}
+
+const char *params_nearest(const char *word, const char *const *candidates, int n) {
+    const char *best = NULL;
+    int bd = 1 << 30;
+    for (int i = 0; i < n; i++) {
+        int d = edit_distance(word, candidates[i]);
+        if (d < bd) {
+            bd = d;
+            best = candidates[i];
+        }
+    }
+    /* a suggestion further than half the word away is noise */
+    return bd <= 1 + (int)strlen(word) / 2 ? best : NULL;
+}
+
+hearth_status params_resolve(const hearth_material *m, const char *const *names, const double *values, int n,
+                             double *out, hearth_error *err) {
+    for (int i = 0; i < m->nparams; i++) out[i] = m->params[i].def;
+    for (int k = 0; k < n; k++) {
+        int i = params_index(m, names[k]);
+        if (i < 0) {
+            const char *cand[64];
+            int nc = m->nparams < 64 ? m->nparams : 64;
+            for (int j = 0; j < nc; j++) cand[j] = m->params[j].name;
+            const char *near = params_nearest(names[k], cand, nc);
+            char list[512] = "";
+            for (int j = 0; j < nc; j++) {
+                strncat(list, cand[j], sizeof list - strlen(list) - 3);
+                if (j + 1 < nc) strncat(list, ", ", sizeof list - strlen(list) - 1);
+            }
+            if (near)
+                return err_set(err, HEARTH_ERR_PARAM, "material '%s': unknown parameter '%s'; did you mean '%s'? (valid: %s)",
+                               m->name, names[k], near, list);
+            return err_set(err, HEARTH_ERR_PARAM, "material '%s': unknown parameter '%s' (valid: %s)", m->name, names[k], list);
+        }
+        const hearth_param *p = &m->params[i];
+        if (!isfinite(values[k]) || values[k] < p->min || values[k] > p->max)
+            return err_set(err, HEARTH_ERR_PARAM, "material '%s': parameter '%s' = %g is outside its range [%g, %g] %s (%s)",
+                           m->name, p->name, values[k], p->min, p->max, p->unit, p->help);
+        out[i] = values[k];
+    }
+    return HEARTH_OK;
+}

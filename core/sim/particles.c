@@ -1,0 +1,156 @@
+/* particles.c: SoA columns, their growth, permutation and copies. */
+#include "particles.h"
+
+#include <string.h>
+
+#include "alloc.h"
+#include "error.h"
+
+static const struct {
+    const char *name;
+    int ncomp; /* 0: state stride */
+    int is_int;
+} col_info[PC_COUNT] = {
+    [PC_X] = {"x", 3, 0},           [PC_V] = {"v", 3, 0},
+    [PC_C] = {"C", 9, 0},           [PC_F] = {"F", 9, 0},
+    [PC_MASS] = {"mass", 1, 0},     [PC_VOL0] = {"vol0", 1, 0},
+    [PC_MAT] = {"material", 1, 1},  [PC_ID] = {"id", 1, 1},
+    [PC_STATE] = {"state", 0, 0},   [PC_TEMPERATURE] = {"temperature", 1, 0},
+    [PC_TEMP_MAX] = {"temperature_max", 1, 0},
+};
+
+const char *particles_col_name(int c) { return col_info[c].name; }
+int particles_col_is_int(int c) { return col_info[c].is_int; }
+
+int particles_col_ncomp(const particles *ps, int c) {
+    return col_info[c].ncomp ? col_info[c].ncomp : ps->state_stride;
+}
+
+size_t particles_col_bytes(const particles *ps, int c) {
+    return (size_t)particles_col_ncomp(ps, c) * (col_info[c].is_int ? sizeof(int) : sizeof(double));
+}
+
+void particles_init(particles *ps) {
+    memset(ps, 0, sizeof *ps);
+    for (int c = 0; c < PC_NCORE; c++) ps->enabled |= 1u << c;
+}
+
+void particles_free(particles *ps) {
+    for (int c = 0; c < PC_COUNT; c++)
+        if (ps->col[c]) mem_free(ps->col[c], particles_col_bytes(ps, c) * (size_t)ps->cap);
+    uint32_t en = ps->enabled;
+    memset(ps, 0, sizeof *ps);
+    ps->enabled = en;
+}
+
+hearth_status particles_reserve(particles *ps, int cap, hearth_error *err) {
+    if (cap <= ps->cap) return HEARTH_OK;
+    int ncap = ps->cap ? ps->cap : 64;
+    while (ncap < cap) ncap = ncap > (1 << 29) ? cap : ncap * 2;
+    /* all new columns first, so a failure leaves the store exactly as it was */
+    void *fresh[PC_COUNT] = {0};
+    for (int c = 0; c < PC_COUNT; c++) {
+        size_t b = particles_col_bytes(ps, c);
+        if (!(ps->enabled & (1u << c)) || b == 0) continue;
+        fresh[c] = mem_calloc(b * (size_t)ncap);
+        if (!fresh[c]) {
+            for (int d = 0; d < c; d++)
+                if (fresh[d]) mem_free(fresh[d], particles_col_bytes(ps, d) * (size_t)ncap);
+            return err_set(err, HEARTH_ERR_NOMEM, "out of memory growing particle column '%s' to %d particles",
+                           col_info[c].name, ncap);
+        }
+    }
+    for (int c = 0; c < PC_COUNT; c++) {
+        if (!fresh[c]) continue;
+        size_t b = particles_col_bytes(ps, c);
+        if (ps->col[c]) {
+            memcpy(fresh[c], ps->col[c], b * (size_t)ps->n);
+            mem_free(ps->col[c], b * (size_t)ps->cap);
+        }
+        ps->col[c] = fresh[c];
+    }
+    ps->cap = ncap;
+    return HEARTH_OK;
+}
+
+hearth_status particles_enable(particles *ps, int c, hearth_error *err) {
+    if (ps->enabled & (1u << c)) return HEARTH_OK;
+    size_t b = particles_col_bytes(ps, c) * (size_t)(ps->cap ? ps->cap : 0);
+    if (b) {
+        ps->col[c] = mem_calloc(b);
+        if (!ps->col[c]) return err_set(err, HEARTH_ERR_NOMEM, "out of memory enabling field '%s'", col_info[c].name);
+    }
+    ps->enabled |= 1u << c;
+    return HEARTH_OK;
+}
+
+hearth_status particles_set_state_stride(particles *ps, int stride, hearth_error *err) {
+    if (stride <= ps->state_stride) return HEARTH_OK;
+    int old = ps->state_stride;
+    double *nu = NULL;
+    if (ps->cap) {
+        nu = mem_calloc(sizeof(double) * (size_t)stride * (size_t)ps->cap);
+        if (!nu) return err_set(err, HEARTH_ERR_NOMEM, "out of memory growing plugin state to %d doubles", stride);
+        const double *od = ps->col[PC_STATE];
+        for (int i = 0; i < ps->n && old > 0; i++) memcpy(nu + (size_t)i * stride, od + (size_t)i * old, sizeof(double) * old);
+        mem_free(ps->col[PC_STATE], sizeof(double) * (size_t)old * (size_t)ps->cap);
+    }
+    ps->col[PC_STATE] = nu;
+    ps->state_stride = stride;
+    return HEARTH_OK;
+}
+
+void particles_permute(particles *ps, const int *order, double *scratch) {
+    const int n = ps->n;
+    for (int c = 0; c < PC_COUNT; c++) {
+        if (!(ps->enabled & (1u << c)) || !ps->col[c]) continue;
+        const int nc = particles_col_ncomp(ps, c);
+        if (col_info[c].is_int) {
+            int *a = ps->col[c], *tmp = (int *)scratch; /* n ints fit in n doubles */
+            for (int k = 0; k < nc; k++) {
+                for (int i = 0; i < n; i++) tmp[i] = a[(size_t)order[i] * nc + k];
+                for (int i = 0; i < n; i++) a[(size_t)i * nc + k] = tmp[i];
+            }
+        } else {
+            /* one component at a time keeps the scratch at n doubles (8 bytes a particle) */
+            double *a = ps->col[c];
+            for (int k = 0; k < nc; k++) {
+                for (int i = 0; i < n; i++) scratch[i] = a[(size_t)order[i] * nc + k];
+                for (int i = 0; i < n; i++) a[(size_t)i * nc + k] = scratch[i];
+            }
+        }
+    }
+}
+
+hearth_status particles_copy(particles *dst, const particles *src, hearth_error *err) {
+    if (dst->state_stride != src->state_stride || dst->enabled != src->enabled || dst->cap < src->n) {
+        particles_free(dst);
+        particles_init(dst);
+        dst->enabled = src->enabled;
+        dst->state_stride = src->state_stride;
+        hearth_status st = particles_reserve(dst, src->n > 0 ? src->n : 1, err);
+        if (st) return st;
+    }
+    for (int c = 0; c < PC_COUNT; c++)
+        if ((src->enabled & (1u << c)) && src->col[c] && src->n)
+            memcpy(dst->col[c], src->col[c], particles_col_bytes(src, c) * (size_t)src->n);
+    dst->n = src->n;
+    return HEARTH_OK;
+}
+
+int particles_compact(particles *ps, const unsigned char *remove) {
+    int w = 0;
+    for (int i = 0; i < ps->n; i++) {
+        if (remove[i]) continue;
+        if (w != i)
+            for (int c = 0; c < PC_COUNT; c++) {
+                if (!(ps->enabled & (1u << c)) || !ps->col[c]) continue;
+                size_t b = particles_col_bytes(ps, c);
+                memcpy((char *)ps->col[c] + b * (size_t)w, (char *)ps->col[c] + b * (size_t)i, b);
+            }
+        w++;
+    }
+    int removed = ps->n - w;
+    ps->n = w;
+    return removed;
+}

@@ -1,0 +1,62 @@
+/* particles.h: the structure-of-arrays particle store.
+ *
+ * Every per-particle quantity is a column. Core columns always exist; optional
+ * columns (temperature, water, gas, mixing ratios, ...) are allocated only when
+ * a scene or material enables them, so a scene pays only for what it uses.
+ * Sorting, checkpoints, rollback snapshots and hashing walk the column table,
+ * so a new field needs one line in the table and nothing else. */
+#ifndef HEARTH_PARTICLES_H
+#define HEARTH_PARTICLES_H
+#include <stdint.h>
+
+#include "hearth/hearth.h"
+
+typedef enum pcol {
+    /* core: always present */
+    PC_X,     /* position (m), 3 */
+    PC_V,     /* velocity (m/s), 3 */
+    PC_C,     /* APIC affine velocity = velocity gradient (1/s), 9 */
+    PC_F,     /* deformation gradient, 9 */
+    PC_MASS,  /* kg, 1 */
+    PC_VOL0,  /* initial volume (m^3), 1 */
+    PC_MAT,   /* material index (int32) */
+    PC_ID,    /* stable id, survives sorting (int32) */
+    PC_STATE, /* plugin state, state_stride doubles */
+    PC_NCORE,
+    /* optional: enabled on demand by later modules */
+    PC_TEMPERATURE = PC_NCORE, /* degrees C, 1 */
+    PC_TEMP_MAX,               /* highest temperature reached (for irreversible curves), 1 */
+    PC_COUNT
+} pcol;
+
+typedef struct particles {
+    int n, cap;
+    int state_stride;      /* doubles of plugin state per particle (max over materials) */
+    uint32_t enabled;      /* bit c set when column c is allocated */
+    void *col[PC_COUNT];
+} particles;
+
+/// Name, components and element size of a column (state uses state_stride).
+const char *particles_col_name(int c);
+int particles_col_ncomp(const particles *ps, int c);
+int particles_col_is_int(int c);
+size_t particles_col_bytes(const particles *ps, int c); /* bytes per particle */
+
+static inline double *pcold(const particles *ps, int c) { return (double *)ps->col[c]; }
+static inline int *pcoli(const particles *ps, int c) { return (int *)ps->col[c]; }
+
+void particles_init(particles *ps);
+void particles_free(particles *ps);
+/// Make room for cap particles in every enabled column.
+hearth_status particles_reserve(particles *ps, int cap, hearth_error *err);
+/// Allocate an optional column (zeroed). Enabling twice is a no-op.
+hearth_status particles_enable(particles *ps, int c, hearth_error *err);
+/// Grow the plugin state stride, keeping existing state.
+hearth_status particles_set_state_stride(particles *ps, int stride, hearth_error *err);
+/// Reorder every column so that new[i] = old[order[i]]; scratch holds n doubles.
+void particles_permute(particles *ps, const int *order, double *scratch);
+/// Copy every enabled column of src into dst (same layout); dst grows as needed.
+hearth_status particles_copy(particles *dst, const particles *src, hearth_error *err);
+/// Remove particles whose flag is non-zero, keeping order. Returns the number removed.
+int particles_compact(particles *ps, const unsigned char *remove);
+#endif

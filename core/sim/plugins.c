@@ -1,0 +1,483 @@
+/* plugins.c: find, dlopen, validate and cache material plugins.
+ *
+ * A plugin is trusted only after every field of its descriptor has been
+ * checked (Redis-modules style: one entry symbol, RTLD_NOW|RTLD_LOCAL,
+ * dlclose and a specific reason on any failure). Loaded plugins stay loaded
+ * until exit: the core keeps pointers to their callbacks and static strings,
+ * so unloading would be a use-after-free waiting to happen.
+ *
+ * Not thread-safe: plugins are loaded while a scene is being built, from one
+ * thread; the step loop only calls into already-loaded descriptors. */
+#ifndef _XOPEN_SOURCE
+#define _XOPEN_SOURCE 700 /* realpath, PATH_MAX, dirent */
+#endif
+#include "plugins.h"
+
+#include <dirent.h>
+#include <dlfcn.h>
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "alloc.h"
+#include "error.h"
+
+/* Empty means "no such folder": a build without a plugin folder (or an
+ * uninstalled library) simply skips that entry of the path. */
+#ifndef HEARTH_BUILD_PLUGIN_DIR
+#define HEARTH_BUILD_PLUGIN_DIR ""
+#endif
+#ifndef HEARTH_INSTALL_PLUGIN_DIR
+#define HEARTH_INSTALL_PLUGIN_DIR ""
+#endif
+
+struct hearth_plugin {
+    char *path;  /* resolved (realpath), the cache key */
+    void *handle;
+    plugin_desc desc;
+};
+
+/* Each plugin is its own block, so the pointers handed out stay valid when
+ * the registry array grows. */
+static hearth_plugin **g_loaded;
+static int g_nloaded, g_caploaded;
+static char **g_added; /* folders from hearth_plugin_path_add, in call order */
+static int g_nadded, g_capadded;
+
+/* ---- growable arrays of pointers ------------------------------------ */
+
+/* arrp points to an array of pointers (char **, hearth_plugin **, ...). The
+ * pointer is moved with memcpy rather than a (void ***) cast, which would
+ * break strict aliasing. */
+static int plugin_grow(void *arrp, int *cap, int need) {
+    if (need <= *cap) return 0;
+    int ncap = *cap ? *cap * 2 : 8;
+    while (ncap < need) ncap *= 2;
+    void *old;
+    memcpy(&old, arrp, sizeof old);
+    void *n = mem_realloc(old, (size_t)*cap * sizeof(void *), (size_t)ncap * sizeof(void *));
+    if (!n) return -1;
+    memcpy(arrp, &n, sizeof n);
+    *cap = ncap;
+    return 0;
+}
+
+/* ---- the search path ------------------------------------------------- */
+
+typedef struct plugin_dirs {
+    char **dir;
+    int n, cap;
+} plugin_dirs;
+
+static void plugin_dirs_free(plugin_dirs *d) {
+    for (int i = 0; i < d->n; i++) mem_strfree(d->dir[i]);
+    mem_free(d->dir, (size_t)d->cap * sizeof *d->dir);
+    *d = (plugin_dirs){0};
+}
+
+/* Empty entries (as in "a::b") and repeats are dropped: a repeat can never
+ * win and would only lengthen the "not found" message. */
+static int plugin_dirs_push(plugin_dirs *d, const char *s, size_t len) {
+    if (len == 0) return 0;
+    for (int i = 0; i < d->n; i++)
+        if (strlen(d->dir[i]) == len && memcmp(d->dir[i], s, len) == 0) return 0;
+    if (plugin_grow(&d->dir, &d->cap, d->n + 1)) return -1;
+    char *c = mem_alloc(len + 1);
+    if (!c) return -1;
+    memcpy(c, s, len);
+    c[len] = '\0';
+    d->dir[d->n++] = c;
+    return 0;
+}
+
+/* Order: build folder, install folder, $HEARTH_PLUGIN_PATH, added folders.
+ * The build folder comes first so a developer running from the tree gets the
+ * plugins they just compiled, not stale installed ones. */
+static int plugin_dirs_build(plugin_dirs *d) {
+    *d = (plugin_dirs){0};
+    const char *fixed[2] = {HEARTH_BUILD_PLUGIN_DIR, HEARTH_INSTALL_PLUGIN_DIR};
+    for (int i = 0; i < 2; i++)
+        if (plugin_dirs_push(d, fixed[i], strlen(fixed[i]))) goto nomem;
+    const char *env = getenv("HEARTH_PLUGIN_PATH");
+    while (env && *env) {
+        const char *colon = strchr(env, ':');
+        size_t len = colon ? (size_t)(colon - env) : strlen(env);
+        if (plugin_dirs_push(d, env, len)) goto nomem;
+        env = colon ? colon + 1 : NULL;
+    }
+    for (int i = 0; i < g_nadded; i++)
+        if (plugin_dirs_push(d, g_added[i], strlen(g_added[i]))) goto nomem;
+    return 0;
+nomem:
+    plugin_dirs_free(d);
+    return -1;
+}
+
+void hearth_plugin_path_add(const char *dir) {
+    if (!dir || !*dir) return;
+    for (int i = 0; i < g_nadded; i++)
+        if (strcmp(g_added[i], dir) == 0) return;
+    /* The API returns nothing, so out of memory just leaves the path as it
+     * was; a later load then reports the folders it did search. */
+    if (plugin_grow(&g_added, &g_capadded, g_nadded + 1)) return;
+    char *c = mem_strdup(dir);
+    if (c) g_added[g_nadded++] = c;
+}
+
+/* dir + "/" + file into out; 0 when it fits. */
+static int plugin_join(char *out, size_t cap, const char *dir, const char *file) {
+    size_t n = strlen(dir);
+    const char *sep = (n > 0 && dir[n - 1] == '/') ? "" : "/";
+    int w = snprintf(out, cap, "%s%s%s", dir, sep, file);
+    return (w < 0 || (size_t)w >= cap) ? -1 : 0;
+}
+
+static int plugin_is_file(const char *path) {
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+/* Resolve a bare name to the first hearth_<name>.so on the path. */
+static hearth_status plugin_find(const char *name, char *out, size_t cap, hearth_error *err) {
+    char file[256]; /* NAME_MAX on every system we target */
+    int w = snprintf(file, sizeof file, "hearth_%s.so", name);
+    if (w < 0 || (size_t)w >= sizeof file)
+        return err_set(err, HEARTH_ERR_PLUGIN, "%s: plugin name is too long for a file name", name);
+    plugin_dirs d;
+    if (plugin_dirs_build(&d))
+        return err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory building the plugin search path", name);
+    for (int i = 0; i < d.n; i++) {
+        if (plugin_join(out, cap, d.dir[i], file) == 0 && plugin_is_file(out)) {
+            plugin_dirs_free(&d);
+            return HEARTH_OK;
+        }
+    }
+    char list[768] = "";
+    size_t used = 0;
+    for (int i = 0; i < d.n && used < sizeof list; i++) {
+        int k = snprintf(list + used, sizeof list - used, "%s%s", i ? ", " : "", d.dir[i]);
+        if (k < 0) break;
+        used += (size_t)k;
+    }
+    /* A user who typed "foo.so" meant a file; say how to give one. */
+    size_t nl = strlen(name);
+    int looks_like_file = nl > 3 && strcmp(name + nl - 3, ".so") == 0;
+    err_set(err, HEARTH_ERR_PLUGIN,
+            "%s: plugin not found: no %s in %s%s; %s HEARTH_PLUGIN_PATH (colon separated), or give a path "
+            "containing '/'%s%s%s",
+            name, file, d.n ? "the search path: " : "any folder (the search path is empty)", list,
+            d.n ? "put the file in one of these folders, add its folder to" : "add the plugin's folder to",
+            looks_like_file ? " (for this file: ./" : "", looks_like_file ? name : "", looks_like_file ? ")" : "");
+    plugin_dirs_free(&d);
+    return HEARTH_ERR_PLUGIN;
+}
+
+/* ---- descriptor validation ------------------------------------------ */
+
+int plugin_param_index(const hearth_material *m, const char *name) {
+    for (int i = 0; i < m->nparams; i++)
+        if (m->params[i].name && strcmp(m->params[i].name, name) == 0) return i;
+    return -1;
+}
+
+/* Material names are [a-z0-9_]+ (material.h). Parameter names become Lua
+ * table keys ({E = 2e4}), so they follow Lua's identifier rule. */
+static int plugin_ident_ok(const char *s, int lua_ident) {
+    if (!s || !*s) return 0;
+    for (const char *c = s; *c; c++) {
+        int lower = (*c >= 'a' && *c <= 'z') || *c == '_';
+        int digit = *c >= '0' && *c <= '9';
+        int upper = *c >= 'A' && *c <= 'Z';
+        int ok = lua_ident ? (lower || upper || (digit && c != s)) : (lower || digit);
+        if (!ok) return 0;
+    }
+    return 1;
+}
+
+void plugin_desc_free(plugin_desc *d) {
+    if (!d) return;
+    mem_free(d->params, (size_t)d->mat.nparams * sizeof *d->params);
+    *d = (plugin_desc){0};
+}
+
+/* The bytes of a v1 descriptor up to and including describe_error: every
+ * required field. plastic_J (appended later) is optional. */
+#define PLUGIN_V1_MIN_SIZE (offsetof(hearth_material, describe_error) + sizeof(((hearth_material *)0)->describe_error))
+#define PLUGIN_KNOWN_NEEDS                                                                         \
+    (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_SATURATION |                  \
+     HEARTH_NEEDS_THERMAL_EXPANSION)
+
+static hearth_status plugin_check_params(const char *shown, const hearth_material *m, hearth_error *err) {
+    const hearth_param *ps = m->params;
+    for (int i = 0; i < m->nparams; i++) {
+        const hearth_param *q = &ps[i];
+        if (!plugin_ident_ok(q->name, 1))
+            return err_set(err, HEARTH_ERR_PLUGIN,
+                           "%s: parameter %d has %s name \"%s\"; names are identifiers [A-Za-z_][A-Za-z0-9_]* "
+                           "used from Lua",
+                           shown, i, q->name ? "an invalid" : "a NULL", q->name ? q->name : "");
+        if (!q->unit)
+            return err_set(err, HEARTH_ERR_PLUGIN,
+                           "%s: parameter '%s' has a NULL unit; give its SI unit (\"1\" if dimensionless)",
+                           shown, q->name);
+        if (!isfinite(q->min) || !isfinite(q->max))
+            return err_set(err, HEARTH_ERR_PLUGIN,
+                           "%s: parameter '%s' has non-finite bounds [%g, %g] %s; give finite min and max",
+                           shown, q->name, q->min, q->max, q->unit);
+        if (q->min > q->max)
+            return err_set(err, HEARTH_ERR_PLUGIN,
+                           "%s: parameter '%s' has min %g > max %g (%s); swap or fix the bounds", shown,
+                           q->name, q->min, q->max, q->unit);
+        if (!(q->def >= q->min && q->def <= q->max))
+            return err_set(err, HEARTH_ERR_PLUGIN,
+                           "%s: parameter '%s' default %g %s is outside its own range [%g, %g] %s", shown,
+                           q->name, q->def, q->unit, q->min, q->max, q->unit);
+        for (int j = 0; j < i; j++)
+            if (strcmp(ps[j].name, q->name) == 0)
+                return err_set(err, HEARTH_ERR_PLUGIN,
+                               "%s: duplicate parameter name '%s' (entries %d and %d); names must be unique",
+                               shown, q->name, j, i);
+    }
+    int d = plugin_param_index(m, "density");
+    if (d < 0)
+        return err_set(err, HEARTH_ERR_PLUGIN,
+                       "%s: material '%s' has no parameter named \"density\" (unit kg/m^3); the core needs "
+                       "it to give particles mass",
+                       shown, m->name);
+    if (strcmp(ps[d].unit, "kg/m^3") != 0)
+        return err_set(err, HEARTH_ERR_PLUGIN,
+                       "%s: parameter 'density' has unit \"%s\"; it must be \"kg/m^3\" (the core computes "
+                       "particle mass from it)",
+                       shown, ps[d].unit);
+    if (!(ps[d].min > 0))
+        return err_set(err, HEARTH_ERR_PLUGIN,
+                       "%s: parameter 'density' has min %g kg/m^3; it must be > 0 so every particle has mass",
+                       shown, ps[d].min);
+    return HEARTH_OK;
+}
+
+hearth_status plugin_describe(const char *shown, const hearth_material *m, plugin_desc *out, hearth_error *err) {
+    *out = (plugin_desc){0};
+    if (!m)
+        return err_set(err, HEARTH_ERR_PLUGIN, "%s: %s() returned NULL; it must return a static descriptor",
+                       shown, HEARTH_MATERIAL_ENTRY_NAME);
+    /* abi_version, struct_size and real_size lead every version of the
+     * struct, so they are safe to read before anything else. */
+    if (m->abi_version != HEARTH_MATERIAL_ABI)
+        return err_set(err, HEARTH_ERR_PLUGIN,
+                       "%s: built for material ABI %d, this hearth expects %d; rebuild against this hearth's "
+                       "<hearth/material.h>",
+                       shown, m->abi_version, HEARTH_MATERIAL_ABI);
+    if (m->struct_size < 0 || (size_t)m->struct_size < PLUGIN_V1_MIN_SIZE)
+        return err_set(err, HEARTH_ERR_PLUGIN,
+                       "%s: descriptor struct_size is %d bytes, smaller than the %zu bytes of a material ABI "
+                       "%d descriptor through describe_error; set struct_size = sizeof(hearth_material) and "
+                       "rebuild against this hearth's <hearth/material.h>",
+                       shown, m->struct_size, (size_t)PLUGIN_V1_MIN_SIZE, HEARTH_MATERIAL_ABI);
+    if (m->real_size != (int)sizeof(double))
+        return err_set(err, HEARTH_ERR_PLUGIN,
+                       "%s: built with %d-byte reals, this hearth uses %zu-byte double; set real_size = "
+                       "sizeof(double) and rebuild with double precision",
+                       shown, m->real_size, sizeof(double));
+
+    /* Copy only what the plugin declared: fields appended after its build
+     * stay zero (NULL optional callbacks), and a newer plugin's extra fields
+     * are ignored rather than read past our struct. */
+    hearth_material c;
+    memset(&c, 0, sizeof c);
+    size_t n = (size_t)m->struct_size < sizeof c ? (size_t)m->struct_size : sizeof c;
+    memcpy(&c, m, n);
+
+    if (!c.name)
+        return err_set(err, HEARTH_ERR_PLUGIN, "%s: descriptor name is NULL; give a short identifier [a-z0-9_]+",
+                       shown);
+    if (!plugin_ident_ok(c.name, 0))
+        return err_set(err, HEARTH_ERR_PLUGIN,
+                       "%s: material name \"%s\" is not an identifier [a-z0-9_]+ (it is used from Lua)", shown,
+                       c.name);
+    if (c.nparams < 0)
+        return err_set(err, HEARTH_ERR_PLUGIN, "%s: material '%s' has negative nparams (%d)", shown, c.name,
+                       c.nparams);
+    if (c.nparams > 0 && !c.params)
+        return err_set(err, HEARTH_ERR_PLUGIN, "%s: material '%s' has nparams = %d but params is NULL", shown,
+                       c.name, c.nparams);
+    if (c.state_size < 0)
+        return err_set(err, HEARTH_ERR_PLUGIN, "%s: material '%s' has negative state_size (%d)", shown, c.name,
+                       c.state_size);
+    if (c.needs & ~(unsigned)PLUGIN_KNOWN_NEEDS)
+        return err_set(err, HEARTH_ERR_PLUGIN,
+                       "%s: material '%s' needs fields 0x%x unknown to this hearth (known bits 0x%x); rebuild "
+                       "against this hearth's <hearth/material.h>",
+                       shown, c.name, c.needs & ~(unsigned)PLUGIN_KNOWN_NEEDS, (unsigned)PLUGIN_KNOWN_NEEDS);
+    const char *missing = !c.init         ? "init"
+                          : !c.stress     ? "stress"
+                          : !c.wave_speed ? "wave_speed"
+                          : !c.describe_error ? "describe_error"
+                                              : NULL;
+    if (missing)
+        return err_set(err, HEARTH_ERR_PLUGIN,
+                       "%s: material '%s' has required callback '%s' set to NULL; every plugin must provide "
+                       "init, stress, wave_speed and describe_error",
+                       shown, c.name, missing);
+    hearth_status st = plugin_check_params(shown, &c, err);
+    if (st != HEARTH_OK) return st;
+
+    /* Own a copy of the schema so the core never meets a NULL help or summary. */
+    if (c.nparams > 0) {
+        out->params = mem_alloc((size_t)c.nparams * sizeof *out->params);
+        if (!out->params)
+            return err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory copying the parameter schema", shown);
+        memcpy(out->params, c.params, (size_t)c.nparams * sizeof *out->params);
+        for (int i = 0; i < c.nparams; i++)
+            if (!out->params[i].help) out->params[i].help = "";
+    }
+    if (!c.summary) c.summary = "";
+    c.params = out->params;
+    out->mat = c;
+    out->density = plugin_param_index(&c, "density");
+    return HEARTH_OK;
+}
+
+/* ---- loading ---------------------------------------------------------- */
+
+static hearth_plugin *plugin_cached(const char *real) {
+    for (int i = 0; i < g_nloaded; i++)
+        if (strcmp(g_loaded[i]->path, real) == 0) return g_loaded[i];
+    return NULL;
+}
+
+/* dlopen the file at real (shown in messages as `shown`), validate, cache. */
+static const hearth_plugin *plugin_open(const char *shown, const char *real, hearth_error *err) {
+    dlerror(); /* clear a stale message so the one we report is ours */
+    void *h = dlopen(real, RTLD_NOW | RTLD_LOCAL);
+    if (!h) {
+        const char *why = dlerror();
+        err_set(err, HEARTH_ERR_PLUGIN,
+                "%s: not loadable as a shared object: %s; build a plugin with cc -shared -fPIC and link any "
+                "library it uses",
+                shown, why ? why : "unknown dlopen error");
+        return NULL;
+    }
+    void *sym = dlsym(h, HEARTH_MATERIAL_ENTRY_NAME);
+    if (!sym) {
+        dlclose(h);
+        err_set(err, HEARTH_ERR_PLUGIN,
+                "%s: not a hearth plugin: it exports no symbol '%s'; define HEARTH_PLUGIN_EXPORT const "
+                "hearth_material *%s(void) from <hearth/material.h>",
+                shown, HEARTH_MATERIAL_ENTRY_NAME, HEARTH_MATERIAL_ENTRY_NAME);
+        return NULL;
+    }
+    /* ISO C has no object-to-function pointer cast; POSIX guarantees the
+     * representations match, so copy the bits. */
+    hearth_material_entry_fn entry;
+    memcpy(&entry, &sym, sizeof entry);
+
+    hearth_plugin *pl = mem_calloc(sizeof *pl);
+    if (!pl || plugin_grow(&g_loaded, &g_caploaded, g_nloaded + 1) ||
+        !(pl->path = mem_strdup(real))) {
+        if (pl) mem_free(pl, sizeof *pl);
+        dlclose(h);
+        err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory registering the plugin", shown);
+        return NULL;
+    }
+    if (plugin_describe(shown, entry(), &pl->desc, err) != HEARTH_OK) {
+        mem_strfree(pl->path);
+        mem_free(pl, sizeof *pl);
+        dlclose(h);
+        return NULL;
+    }
+    pl->handle = h;
+    g_loaded[g_nloaded++] = pl;
+    return pl;
+}
+
+const hearth_plugin *hearth_plugin_load(const char *name_or_path, hearth_error *err) {
+    if (!name_or_path || !*name_or_path) {
+        err_set(err, HEARTH_ERR_PLUGIN, "(empty): plugin name is empty; give a name such as \"elastic\" or a path");
+        return NULL;
+    }
+    char file[PATH_MAX];
+    if (strchr(name_or_path, '/')) {
+        if (strlen(name_or_path) >= sizeof file) {
+            err_set(err, HEARTH_ERR_PLUGIN, "%.200s...: plugin path is longer than PATH_MAX", name_or_path);
+            return NULL;
+        }
+        strcpy(file, name_or_path);
+        struct stat st;
+        if (stat(file, &st) != 0) {
+            int e = errno;
+            err_set(err, HEARTH_ERR_PLUGIN, "%s: %s (%s); check the path", file,
+                    e == ENOENT || e == ENOTDIR ? "plugin file not found" : "cannot access the plugin file",
+                    strerror(e));
+            return NULL;
+        }
+        if (!S_ISREG(st.st_mode)) {
+            err_set(err, HEARTH_ERR_PLUGIN, "%s: not a regular file; give the path of a hearth_<name>.so", file);
+            return NULL;
+        }
+    } else if (plugin_find(name_or_path, file, sizeof file, err) != HEARTH_OK) {
+        return NULL;
+    }
+    char real[PATH_MAX];
+    if (!realpath(file, real)) {
+        err_set(err, HEARTH_ERR_PLUGIN, "%s: cannot resolve the path (%s)", file, strerror(errno));
+        return NULL;
+    }
+    const hearth_plugin *pl = plugin_cached(real);
+    return pl ? pl : plugin_open(file, real, err);
+}
+
+const hearth_material *hearth_plugin_material(const hearth_plugin *pl) { return pl ? &pl->desc.mat : NULL; }
+
+const char *hearth_plugin_file(const hearth_plugin *pl) { return pl ? pl->path : NULL; }
+
+int plugin_density_index(const hearth_plugin *pl) { return pl->desc.density; }
+
+/* ---- listing ------------------------------------------------------------ */
+
+static int plugin_cmp(const void *a, const void *b) {
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* "hearth_foo.so" -> length of "foo", or 0 when the file is not a plugin name. */
+static size_t plugin_stem(const char *f) {
+    size_t n = strlen(f);
+    if (n <= 10 || strncmp(f, "hearth_", 7) != 0 || strcmp(f + n - 3, ".so") != 0) return 0;
+    return n - 10;
+}
+
+int hearth_plugin_each(void (*fn)(void *ud, const char *name, const char *path), void *ud) {
+    plugin_dirs d;
+    if (plugin_dirs_build(&d)) return 0;
+    plugin_dirs seen = {0}; /* names already reported: first folder wins */
+    int visited = 0;
+    for (int i = 0; i < d.n; i++) {
+        DIR *dir = opendir(d.dir[i]);
+        if (!dir) continue; /* a missing folder on the path is normal */
+        /* Sort each folder so the listing does not depend on readdir order. */
+        plugin_dirs files = {0};
+        for (struct dirent *e; (e = readdir(dir));)
+            if (plugin_stem(e->d_name)) plugin_dirs_push(&files, e->d_name, strlen(e->d_name));
+        closedir(dir);
+        if (files.n) qsort(files.dir, (size_t)files.n, sizeof *files.dir, plugin_cmp);
+        for (int k = 0; k < files.n; k++) {
+            char path[PATH_MAX];
+            const char *f = files.dir[k];
+            size_t len = plugin_stem(f);
+            if (plugin_join(path, sizeof path, d.dir[i], f) || !plugin_is_file(path)) continue;
+            int before = seen.n;
+            if (plugin_dirs_push(&seen, f + 7, len) || seen.n == before) continue;
+            if (fn) fn(ud, seen.dir[seen.n - 1], path);
+            visited++;
+        }
+        plugin_dirs_free(&files);
+    }
+    plugin_dirs_free(&seen);
+    plugin_dirs_free(&d);
+    return visited;
+}

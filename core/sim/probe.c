@@ -1,0 +1,241 @@
+/* probe.c: fields evaluated at particles, and probes at points, along lines
+ * and on plane slices.
+ *
+ * A probe value is the mass-weighted B-spline average of nearby particles'
+ * values (kernel radius 1.5 dx, as the transfers). Where the particles' volume
+ * fraction under the kernel is below 1/4 the point is outside the material and
+ * the probe returns NaN, which displays as background. */
+#include <math.h>
+#include <string.h>
+
+#include "alloc.h"
+#include "error.h"
+#include "scene.h"
+
+typedef enum field_id { F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_COUNT } field_id;
+
+static const struct {
+    const char *name, *unit;
+    int ncomp;
+} fields[F_COUNT] = {
+    [F_VELOCITY] = {"velocity", "m/s", 3}, [F_VX] = {"velocity_x", "m/s", 1},   [F_VY] = {"velocity_y", "m/s", 1},
+    [F_VZ] = {"velocity_z", "m/s", 1},     [F_SPEED] = {"speed", "m/s", 1},     [F_DENSITY] = {"density", "kg/m^3", 1},
+    [F_J] = {"J", "1", 1},                 [F_PRESSURE] = {"pressure", "Pa", 1}, [F_VON_MISES] = {"von_mises", "Pa", 1},
+};
+
+static int field_lookup(const char *name) {
+    for (int f = 0; f < F_COUNT; f++)
+        if (strcmp(fields[f].name, name) == 0) return f;
+    return -1;
+}
+
+int hearth_field_components(const char *field) {
+    int f = field_lookup(field);
+    return f < 0 ? 0 : fields[f].ncomp;
+}
+
+const char *hearth_field_unit(const char *field) {
+    int f = field_lookup(field);
+    return f < 0 ? NULL : fields[f].unit;
+}
+
+const char *hearth_scene_fields(const hearth_scene *s) {
+    (void)s;
+    return "velocity speed density J pressure von_mises";
+}
+
+static hearth_status find_field(const char *field, int scalar_only, int *out, hearth_error *err) {
+    int f = field_lookup(field);
+    if (f < 0) {
+        return err_set(err, HEARTH_ERR_PARAM, "unknown field '%s'; live fields: velocity (velocity_x, _y, _z), speed, density, J, pressure, von_mises",
+                       field);
+    }
+    if (scalar_only && fields[f].ncomp != 1)
+        return err_set(err, HEARTH_ERR_PARAM, "field '%s' has %d components; slice one of them (%s_x, %s_y, %s_z)", field,
+                       fields[f].ncomp, field, field, field);
+    *out = f;
+    return HEARTH_OK;
+}
+
+static double det3(const double *F) {
+    return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
+}
+
+/* Stress for display: the plugin evaluates with dt = 0 on a copy of the state,
+ * so looking never changes the simulation. */
+static void particle_stress(const hearth_scene *s, int i, double tau[9], double *state_copy) {
+    const particles *ps = &s->ps;
+    const int m = pcoli(ps, PC_MAT)[i];
+    const material_slot *ms = &s->mats[m];
+    hearth_point pt;
+    memcpy(pt.grad_v, pcold(ps, PC_C) + 9 * i, sizeof pt.grad_v);
+    memcpy(pt.F, pcold(ps, PC_F) + 9 * i, sizeof pt.F);
+    pt.dt = 0;
+    pt.temperature = pt.porosity = pt.saturation = NAN;
+    pt.p = scene_params_for(s, m, i);
+    pt.state = NULL;
+    if (ps->state_stride) {
+        memcpy(state_copy, pcold(ps, PC_STATE) + (size_t)i * ps->state_stride, sizeof(double) * (size_t)ps->state_stride);
+        pt.state = state_copy;
+    }
+    if (ms->m->stress(&pt, tau)) {
+        for (int k = 0; k < 9; k++) tau[k] = NAN;
+    }
+}
+
+static void particle_value(const hearth_scene *s, int f, int i, double *out, double *state_copy) {
+    const particles *ps = &s->ps;
+    const double *v = pcold(ps, PC_V) + 3 * i, *F = pcold(ps, PC_F) + 9 * i;
+    switch (f) {
+    case F_VELOCITY: memcpy(out, v, 3 * sizeof(double)); break;
+    case F_VX: case F_VY: case F_VZ: out[0] = v[f - F_VX]; break;
+    case F_SPEED: out[0] = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); break;
+    case F_DENSITY: out[0] = pcold(ps, PC_MASS)[i] / (pcold(ps, PC_VOL0)[i] * det3(F)); break;
+    case F_J: out[0] = det3(F); break;
+    default: {
+        double tau[9];
+        particle_stress(s, i, tau, state_copy);
+        const double J = det3(F);
+        double sig[9];
+        for (int k = 0; k < 9; k++) sig[k] = tau[k] / J;
+        const double p = -(sig[0] + sig[4] + sig[8]) / 3.0;
+        if (f == F_PRESSURE) {
+            out[0] = p;
+        } else { /* q = sqrt(3/2 s:s), s the deviatoric Cauchy stress */
+            double ss = 0;
+            for (int r = 0; r < 3; r++)
+                for (int c = 0; c < 3; c++) {
+                    double d = sig[3 * r + c] + (r == c ? p : 0.0);
+                    ss += d * d;
+                }
+            out[0] = sqrt(1.5 * ss);
+        }
+    }
+    }
+}
+
+hearth_status hearth_scene_particle_field(const hearth_scene *s, const char *field, double *out, hearth_error *err) {
+    int f = 0;
+    hearth_status st = find_field(field, 0, &f, err);
+    if (st) return st;
+    const int nc = fields[f].ncomp, stride = s->ps.state_stride;
+    double *copy = stride ? mem_alloc(sizeof(double) * (size_t)stride) : NULL;
+    if (stride && !copy) return err_set(err, HEARTH_ERR_NOMEM, "out of memory evaluating '%s'", field);
+    for (int i = 0; i < s->ps.n; i++) particle_value(s, f, i, out + (size_t)i * nc, copy);
+    mem_free(copy, sizeof(double) * (size_t)stride);
+    return HEARTH_OK;
+}
+
+/* Accumulate particle values onto sample points. Samples are given as a
+ * regular lattice: origin + a*ea + b*eb for a < na, b < nb (a line is nb = 1). */
+typedef struct lattice {
+    double origin[3], ea[3], eb[3];
+    int na, nb;
+} lattice;
+
+static hearth_status splat(const hearth_scene *s, int f, const lattice *L, double *out, hearth_error *err) {
+    const particles *ps = &s->ps;
+    const int D = s->def.dim, nc = fields[f].ncomp, ns = L->na * L->nb;
+    const double dx = s->def.dx, r = 1.5 * dx, cellv = pow(dx, D);
+    double *acc = mem_calloc(sizeof(double) * (size_t)ns * (size_t)(nc + 2));
+    double *copy = ps->state_stride ? mem_alloc(sizeof(double) * (size_t)ps->state_stride) : NULL;
+    if (!acc || (ps->state_stride && !copy)) {
+        mem_free(acc, sizeof(double) * (size_t)ns * (size_t)(nc + 2));
+        mem_free(copy, sizeof(double) * (size_t)ps->state_stride);
+        return err_set(err, HEARTH_ERR_NOMEM, "out of memory for a probe of %d samples", ns);
+    }
+    const double la2 = L->ea[0] * L->ea[0] + L->ea[1] * L->ea[1] + L->ea[2] * L->ea[2];
+    const double lb2 = L->eb[0] * L->eb[0] + L->eb[1] * L->eb[1] + L->eb[2] * L->eb[2];
+    const double *X = pcold(ps, PC_X);
+    for (int i = 0; i < ps->n; i++) {
+        const double *x = X + 3 * i;
+        /* candidate sample range: project onto the lattice axes (they are orthogonal) */
+        double rel[3] = {x[0] - L->origin[0], x[1] - L->origin[1], x[2] - L->origin[2]};
+        int a0 = 0, a1 = L->na - 1, b0 = 0, b1 = L->nb - 1;
+        if (la2 > 0) {
+            double ta = (rel[0] * L->ea[0] + rel[1] * L->ea[1] + rel[2] * L->ea[2]) / la2, ra = r / sqrt(la2);
+            a0 = (int)fmax(0, ceil(ta - ra));
+            a1 = (int)fmin(L->na - 1, floor(ta + ra));
+        }
+        if (lb2 > 0) {
+            double tb = (rel[0] * L->eb[0] + rel[1] * L->eb[1] + rel[2] * L->eb[2]) / lb2, rb = r / sqrt(lb2);
+            b0 = (int)fmax(0, ceil(tb - rb));
+            b1 = (int)fmin(L->nb - 1, floor(tb + rb));
+        }
+        if (a0 > a1 || b0 > b1) continue;
+        double val[3];
+        int have = 0;
+        const double m = pcold(ps, PC_MASS)[i], V = pcold(ps, PC_VOL0)[i] * det3(pcold(ps, PC_F) + 9 * i);
+        for (int a = a0; a <= a1; a++)
+            for (int b = b0; b <= b1; b++) {
+                double w = 1;
+                for (int d = 0; d < D; d++) {
+                    double p = L->origin[d] + a * L->ea[d] + b * L->eb[d];
+                    double q = fabs(x[d] - p) / dx;
+                    w *= q < 0.5 ? 0.75 - q * q : (q < 1.5 ? 0.5 * (1.5 - q) * (1.5 - q) : 0.0);
+                }
+                if (w <= 0) continue;
+                if (!have) {
+                    particle_value(s, f, i, val, copy);
+                    have = 1;
+                }
+                double *A = acc + (size_t)(a * L->nb + b) * (nc + 2);
+                A[0] += w * V / cellv;
+                A[1] += w * m;
+                for (int k = 0; k < nc; k++) A[2 + k] += w * m * val[k];
+            }
+    }
+    for (int q = 0; q < ns; q++) {
+        const double *A = acc + (size_t)q * (nc + 2);
+        for (int k = 0; k < nc; k++) out[(size_t)q * nc + k] = A[0] >= 0.25 && A[1] > 0 ? A[2 + k] / A[1] : NAN;
+    }
+    mem_free(acc, sizeof(double) * (size_t)ns * (size_t)(nc + 2));
+    mem_free(copy, sizeof(double) * (size_t)ps->state_stride);
+    return HEARTH_OK;
+}
+
+hearth_status hearth_probe_point(const hearth_scene *s, const char *field, const double x[3], double *out, hearth_error *err) {
+    int f = 0;
+    hearth_status st = find_field(field, 0, &f, err);
+    if (st) return st;
+    lattice L = {.na = 1, .nb = 1};
+    memcpy(L.origin, x, sizeof L.origin);
+    if (s->def.dim == 2) L.origin[2] = 0;
+    return splat(s, f, &L, out, err);
+}
+
+hearth_status hearth_probe_line(const hearth_scene *s, const char *field, const double a[3], const double b[3], int n,
+                                double *out, hearth_error *err) {
+    int f = 0;
+    hearth_status st = find_field(field, 0, &f, err);
+    if (st) return st;
+    if (n < 2 || n > 1000000) return err_set(err, HEARTH_ERR_PARAM, "line probe: n = %d samples; valid range [2, 1000000]", n);
+    lattice L = {.na = n, .nb = 1};
+    for (int d = 0; d < 3; d++) {
+        L.origin[d] = a[d];
+        L.ea[d] = (b[d] - a[d]) / (n - 1);
+    }
+    if (s->def.dim == 2) L.origin[2] = L.ea[2] = 0;
+    return splat(s, f, &L, out, err);
+}
+
+hearth_status hearth_probe_slice(const hearth_scene *s, const char *field, int axis, double at, int w, int h, double *out,
+                                 hearth_error *err) {
+    int f = 0;
+    hearth_status st = find_field(field, 1, &f, err);
+    if (st) return st;
+    if (w < 1 || h < 1 || (long)w * h > 64L * 1024 * 1024)
+        return err_set(err, HEARTH_ERR_PARAM, "slice: %d x %d samples; each side must be >= 1 and the total <= 67108864", w, h);
+    if (axis < 0 || axis > 2) return err_set(err, HEARTH_ERR_PARAM, "slice: axis %d; valid: 0 (x), 1 (y), 2 (z)", axis);
+    if (s->def.dim == 2 && axis != 2) return err_set(err, HEARTH_ERR_PARAM, "slice: a 2D scene has only the z slice (axis 2)");
+    const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2; /* in-plane axes: columns along u, rows along v */
+    const double *lo = s->def.lo, *hi = s->def.hi;
+    /* rows are sampled along v, columns along u: out[row*w + col], row 0 at the low end of v */
+    lattice L = {.na = h, .nb = w};
+    L.origin[axis] = s->def.dim == 2 ? 0 : at;
+    L.origin[u] = lo[u] + 0.5 * (hi[u] - lo[u]) / w;
+    L.origin[v] = lo[v] + 0.5 * (hi[v] - lo[v]) / h;
+    L.eb[u] = (hi[u] - lo[u]) / w;
+    L.ea[v] = (hi[v] - lo[v]) / h;
+    return splat(s, f, &L, out, err);
+}

@@ -1,0 +1,539 @@
+/* scene.c: scene lifetime, materials, particles, colliders, and the step loop
+ * with its guard and rollback. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "alloc.h"
+#include "error.h"
+#include "params.h"
+#include "scene.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+/* ---- threads --------------------------------------------------------- */
+
+static int g_threads;
+
+void hearth_set_threads(int n) {
+    g_threads = n > 0 ? n : 0;
+#ifdef _OPENMP
+    if (n > 0) omp_set_num_threads(n);
+#endif
+}
+
+int hearth_get_threads(void) {
+#ifdef _OPENMP
+    return g_threads > 0 ? g_threads : omp_get_max_threads();
+#else
+    return 1;
+#endif
+}
+
+/* ---- definition ------------------------------------------------------ */
+
+hearth_scene_def hearth_default_scene_def(void) {
+    return (hearth_scene_def){
+        .dim = 2,
+        .dx = 0.01,
+        .lo = {0, 0, 0},
+        .hi = {1, 1, 1},
+        .gravity = {0, -9.81, 0},
+        .cfl = 0.5,
+        .dt_max = 0,
+        .wall = HEARTH_SLIP,
+        .wall_friction = 0,
+        .guard = HEARTH_GUARD_STOP,
+        .max_rollbacks = 8,
+        .energy_growth = 10,
+        .seed = 1,
+    };
+}
+
+hearth_collider_def hearth_default_collider_def(void) {
+    return (hearth_collider_def){.mode = HEARTH_SLIP};
+}
+
+static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
+    if (d->dim != 2 && d->dim != 3) return err_set(err, HEARTH_ERR_PARAM, "scene: dim = %d; valid values are 2 and 3", d->dim);
+    if (!(d->dx > 0) || !isfinite(d->dx)) return err_set(err, HEARTH_ERR_PARAM, "scene: dx = %g m; it must be > 0", d->dx);
+    for (int k = 0; k < d->dim; k++) {
+        if (!isfinite(d->lo[k]) || !isfinite(d->hi[k]) || d->hi[k] - d->lo[k] < 6 * d->dx)
+            return err_set(err, HEARTH_ERR_PARAM,
+                           "scene: box axis %c spans [%g, %g] m; it must be at least 6 dx = %g m long", "xyz"[k],
+                           d->lo[k], d->hi[k], 6 * d->dx);
+        if (!isfinite(d->gravity[k])) return err_set(err, HEARTH_ERR_PARAM, "scene: gravity[%d] is not finite", k);
+    }
+    if (!(d->cfl > 0 && d->cfl <= 4))
+        return err_set(err, HEARTH_ERR_PARAM, "scene: cfl = %g; valid range (0, 4] (1 is the stability limit)", d->cfl);
+    if (!(d->dt_max >= 0) || !isfinite(d->dt_max))
+        return err_set(err, HEARTH_ERR_PARAM, "scene: dt_max = %g s; it must be >= 0 (0 = no limit)", d->dt_max);
+    if ((unsigned)d->wall > HEARTH_SEPARATE)
+        return err_set(err, HEARTH_ERR_PARAM, "scene: wall mode %d; valid: sticky, slip, separate", (int)d->wall);
+    if (!(d->wall_friction >= 0) || !isfinite(d->wall_friction))
+        return err_set(err, HEARTH_ERR_PARAM, "scene: wall friction = %g; valid range [0, inf)", d->wall_friction);
+    if ((unsigned)d->guard > HEARTH_GUARD_ROLLBACK)
+        return err_set(err, HEARTH_ERR_PARAM, "scene: guard policy %d; valid: stop, rollback", (int)d->guard);
+    if (d->max_rollbacks < 0 || d->max_rollbacks > 60)
+        return err_set(err, HEARTH_ERR_PARAM, "scene: max_rollbacks = %d; valid range [0, 60]", d->max_rollbacks);
+    if (!(d->energy_growth > 1))
+        return err_set(err, HEARTH_ERR_PARAM, "scene: energy_growth = %g; it must be > 1", d->energy_growth);
+    return HEARTH_OK;
+}
+
+hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err) {
+    err_clear(err);
+    hearth_scene_def d = def ? *def : hearth_default_scene_def();
+    if (check_def(&d, err)) return NULL;
+    if (d.dim == 2) d.lo[2] = d.hi[2] = d.gravity[2] = 0;
+    hearth_scene *s = mem_calloc(sizeof *s);
+    if (!s) {
+        err_set(err, HEARTH_ERR_NOMEM, "out of memory creating a scene");
+        return NULL;
+    }
+    s->def = d;
+    s->dt_scale = 1.0;
+    s->rng = d.seed ? d.seed : 1;
+    particles_init(&s->ps);
+    particles_init(&s->snap);
+    if (grid_init(&s->g, d.dim, d.dx, d.lo, d.hi, err)) {
+        mem_free(s, sizeof *s);
+        return NULL;
+    }
+    s->counts = mem_calloc(sizeof(int) * ((size_t)s->g.nblocks + 1));
+    s->mark = mem_calloc((size_t)s->g.nblocks);
+    if (!s->counts || !s->mark) {
+        err_set(err, HEARTH_ERR_NOMEM, "out of memory for the grid tables");
+        hearth_scene_destroy(s);
+        return NULL;
+    }
+    return s;
+}
+
+static void free_scratch(hearth_scene *s) {
+    mem_free(s->keys, sizeof(int) * (size_t)s->scratch_cap);
+    mem_free(s->order, sizeof(int) * (size_t)s->scratch_cap);
+    mem_free(s->perm_scratch, sizeof(double) * (size_t)s->scratch_cap);
+    s->keys = s->order = NULL;
+    s->perm_scratch = NULL;
+    s->scratch_cap = 0;
+}
+
+void hearth_scene_destroy(hearth_scene *s) {
+    if (!s) return;
+    for (int i = 0; i < s->nmat; i++) mem_free(s->mats[i].params, sizeof(double) * (size_t)s->mats[i].m->nparams);
+    mem_free(s->mats, sizeof(material_slot) * (size_t)s->capmat);
+    for (int i = 0; i < s->ncol; i++) collider_free(&s->cols[i]);
+    mem_free(s->cols, sizeof(collider) * (size_t)s->capcol);
+    mem_free(s->snap_cols, sizeof(collider) * (size_t)s->capcol);
+    particles_free(&s->ps);
+    particles_free(&s->snap);
+    free_scratch(s);
+    mem_free(s->pb, sizeof(pblock) * (size_t)s->pbcap);
+    mem_free(s->colour_pb, sizeof(int) * (size_t)s->pbcap);
+    mem_free(s->partial, sizeof(pb_partial) * (size_t)s->pbcap);
+    mem_free(s->counts, sizeof(int) * ((size_t)s->g.nblocks + 1));
+    mem_free(s->mark, (size_t)s->g.nblocks);
+    grid_free(&s->g);
+    mem_free(s, sizeof *s);
+}
+
+const hearth_scene_def *hearth_scene_get_def(const hearth_scene *s) { return &s->def; }
+
+hearth_status hearth_scene_set_dt_limits(hearth_scene *s, double cfl, double dt_max, hearth_error *err) {
+    hearth_scene_def d = s->def;
+    d.cfl = cfl;
+    d.dt_max = dt_max;
+    hearth_status st = check_def(&d, err);
+    if (st) return st;
+    s->def = d;
+    return HEARTH_OK;
+}
+
+hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err) {
+    if (n > s->scratch_cap) {
+        int cap = s->ps.cap > n ? s->ps.cap : n;
+        free_scratch(s);
+        s->keys = mem_alloc(sizeof(int) * (size_t)cap);
+        s->order = mem_alloc(sizeof(int) * (size_t)cap);
+        s->perm_scratch = mem_alloc(sizeof(double) * (size_t)cap);
+        if (!s->keys || !s->order || !s->perm_scratch) {
+            s->scratch_cap = cap; /* so free_scratch releases them with their true size */
+            free_scratch(s);
+            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for sorting %d particles", n);
+        }
+        s->scratch_cap = cap;
+    }
+    /* one particle block per grid block at most */
+    int need = s->g.nblocks < n ? s->g.nblocks : n;
+    if (need > s->pbcap) {
+        int cap = s->pbcap ? s->pbcap : 64;
+        while (cap < need) cap *= 2;
+        /* contents are rebuilt by every sort, so fresh arrays replace the old ones */
+        pblock *pb = mem_alloc(sizeof(pblock) * (size_t)cap);
+        int *cp = mem_alloc(sizeof(int) * (size_t)cap);
+        pb_partial *pp = mem_alloc(sizeof(pb_partial) * (size_t)cap);
+        if (!pb || !cp || !pp) {
+            mem_free(pb, sizeof(pblock) * (size_t)cap);
+            mem_free(cp, sizeof(int) * (size_t)cap);
+            mem_free(pp, sizeof(pb_partial) * (size_t)cap);
+            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle blocks", need);
+        }
+        mem_free(s->pb, sizeof(pblock) * (size_t)s->pbcap);
+        mem_free(s->colour_pb, sizeof(int) * (size_t)s->pbcap);
+        mem_free(s->partial, sizeof(pb_partial) * (size_t)s->pbcap);
+        s->pb = pb;
+        s->colour_pb = cp;
+        s->partial = pp;
+        s->pbcap = cap;
+    }
+    return HEARTH_OK;
+}
+
+/* ---- materials ------------------------------------------------------- */
+
+const double *scene_params_for(const hearth_scene *s, int mat, int particle) {
+    (void)particle; /* per-particle resolution (temperature curves, blends) arrives with the fields */
+    return s->mats[mat].params;
+}
+
+int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *const *names, const double *values,
+                              int n, hearth_error *err) {
+    err_clear(err);
+    const hearth_plugin *pl = hearth_plugin_load(plugin, err);
+    if (!pl) return -1;
+    const hearth_material *m = hearth_plugin_material(pl);
+    double *p = mem_alloc(sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1));
+    if (!p) {
+        err_set(err, HEARTH_ERR_NOMEM, "out of memory for material '%s'", m->name);
+        return -1;
+    }
+    if (params_resolve(m, names, values, n, p, err)) {
+        mem_free(p, sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1));
+        return -1;
+    }
+    if (s->nmat == s->capmat) {
+        int cap = s->capmat ? s->capmat * 2 : 4;
+        material_slot *ms = mem_realloc(s->mats, sizeof(material_slot) * (size_t)s->capmat, sizeof(material_slot) * (size_t)cap);
+        if (!ms) {
+            mem_free(p, sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1));
+            err_set(err, HEARTH_ERR_NOMEM, "out of memory for materials");
+            return -1;
+        }
+        s->mats = ms;
+        s->capmat = cap;
+    }
+    if (particles_set_state_stride(&s->ps, m->state_size, err)) {
+        mem_free(p, sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1));
+        return -1;
+    }
+    material_slot *ms = &s->mats[s->nmat];
+    *ms = (material_slot){.plugin = pl, .m = m, .params = p, .density_index = params_index(m, "density")};
+    if (m->state_size == 0) {
+        ms->wave_speed = m->wave_speed(p, NULL);
+        if (ms->wave_speed > s->c_max) s->c_max = ms->wave_speed;
+    }
+    return s->nmat++;
+}
+
+int hearth_scene_material_count(const hearth_scene *s) { return s->nmat; }
+const hearth_material *hearth_scene_material_info(const hearth_scene *s, int mat) {
+    return mat >= 0 && mat < s->nmat ? s->mats[mat].m : NULL;
+}
+const double *hearth_scene_material_params(const hearth_scene *s, int mat) {
+    return mat >= 0 && mat < s->nmat ? s->mats[mat].params : NULL;
+}
+
+/* ---- particles ------------------------------------------------------- */
+
+static void valid_region(const hearth_scene *s, double lo[3], double hi[3]) {
+    for (int d = 0; d < 3; d++) {
+        lo[d] = d < s->def.dim ? s->g.lo[d] + s->g.dx : 0;
+        hi[d] = d < s->def.dim ? s->g.lo[d] + (s->g.nn[d] - 2) * s->g.dx : 0;
+    }
+}
+
+int hearth_scene_add_particles(hearth_scene *s, int material, int n, const double *x, const double *v, double volume,
+                               hearth_error *err) {
+    err_clear(err);
+    if (material < 0 || material >= s->nmat) {
+        err_set(err, HEARTH_ERR_PARAM, "add particles: material %d does not exist (the scene has %d)", material, s->nmat);
+        return -1;
+    }
+    if (!(volume > 0) || !isfinite(volume)) {
+        err_set(err, HEARTH_ERR_PARAM, "add particles: volume = %g m^3; it must be > 0", volume);
+        return -1;
+    }
+    double lo[3], hi[3];
+    valid_region(s, lo, hi);
+    for (int i = 0; i < n; i++)
+        for (int d = 0; d < s->def.dim; d++) {
+            double xd = x[3 * i + d];
+            if (!(xd >= lo[d] && xd <= hi[d])) {
+                err_set(err, HEARTH_ERR_PARAM,
+                        "add particles: particle %d has %c = %g m, outside the domain's usable range [%g, %g] m (one cell inside the box)",
+                        i, "xyz"[d], xd, lo[d], hi[d]);
+                return -1;
+            }
+            if (v && !isfinite(v[3 * i + d])) {
+                err_set(err, HEARTH_ERR_PARAM, "add particles: particle %d has a non-finite velocity", i);
+                return -1;
+            }
+        }
+    particles *ps = &s->ps;
+    if (particles_reserve(ps, ps->n + n, err)) return -1;
+    const material_slot *ms = &s->mats[material];
+    const double rho = ms->params[ms->density_index];
+    for (int i = 0; i < n; i++) {
+        const int j = ps->n + i;
+        for (int d = 0; d < 3; d++) {
+            pcold(ps, PC_X)[3 * j + d] = d < s->def.dim ? x[3 * i + d] : 0.0;
+            pcold(ps, PC_V)[3 * j + d] = v && d < s->def.dim ? v[3 * i + d] : 0.0;
+        }
+        memset(pcold(ps, PC_C) + 9 * j, 0, 9 * sizeof(double));
+        double *F = pcold(ps, PC_F) + 9 * j;
+        memset(F, 0, 9 * sizeof(double));
+        F[0] = F[4] = F[8] = 1.0;
+        pcold(ps, PC_MASS)[j] = rho * volume;
+        pcold(ps, PC_VOL0)[j] = volume;
+        pcoli(ps, PC_MAT)[j] = material;
+        pcoli(ps, PC_ID)[j] = s->next_id++;
+        if (ps->state_stride) {
+            double *st = pcold(ps, PC_STATE) + (size_t)j * ps->state_stride;
+            memset(st, 0, sizeof(double) * (size_t)ps->state_stride);
+            ms->m->init(ms->params, st);
+        }
+        const double *vv = pcold(ps, PC_V) + 3 * j;
+        double sp = sqrt(vv[0] * vv[0] + vv[1] * vv[1] + vv[2] * vv[2]);
+        if (sp > s->max_speed) s->max_speed = sp;
+        s->kinetic += 0.5 * rho * volume * sp * sp;
+    }
+    ps->n += n;
+    if (ms->m->state_size > 0 && ps->n) {
+        double c = ms->m->wave_speed(ms->params, pcold(ps, PC_STATE));
+        if (c > s->c_max) s->c_max = c;
+    }
+    return n;
+}
+
+static double rng_uniform(uint64_t *st) {
+    /* splitmix64: tiny, good enough for jitter, and the same on every machine */
+    uint64_t z = (*st += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+}
+
+int hearth_scene_seed_shape(hearth_scene *s, int material, const hearth_shape *shape, int ppc, double jitter,
+                            const double velocity[3], hearth_error *err) {
+    err_clear(err);
+    const int D = s->def.dim;
+    if (ppc < 1 || ppc > 1000) {
+        err_set(err, HEARTH_ERR_PARAM, "seed: ppc = %d; valid range [1, 1000] particles per cell", ppc);
+        return -1;
+    }
+    if (!(jitter >= 0 && jitter <= 1)) {
+        err_set(err, HEARTH_ERR_PARAM, "seed: jitter = %g; valid range [0, 1]", jitter);
+        return -1;
+    }
+    int k = (int)floor(pow((double)ppc, 1.0 / D) + 0.5);
+    if (k < 1) k = 1;
+    double blo[3], bhi[3], lo[3], hi[3];
+    hearth_shape_bounds(shape, blo, bhi);
+    valid_region(s, lo, hi);
+    long cells[3] = {1, 1, 1};
+    int c0[3] = {0, 0, 0};
+    const double dx = s->def.dx, h = dx / k;
+    for (int d = 0; d < D; d++) {
+        double a = blo[d] > lo[d] ? blo[d] : lo[d], b = bhi[d] < hi[d] ? bhi[d] : hi[d];
+        if (b <= a) return 0;
+        c0[d] = (int)floor((a - s->g.lo[d]) / dx);
+        cells[d] = (long)ceil((b - s->g.lo[d]) / dx) - c0[d];
+    }
+    /* positions are handed over in chunks so the stack buffer stays small */
+    double vel[3] = {0, 0, 0};
+    if (velocity) memcpy(vel, velocity, sizeof vel);
+    const double volume = pow(h, D);
+    int added = 0;
+    enum { CHUNK = 4096 };
+    double xs[3 * CHUNK], vs[3 * CHUNK];
+    int nx = 0;
+    long total = cells[0] * cells[1] * cells[2] * (long)pow(k, D);
+    for (long q = 0; q < total; q++) {
+        long r = q;
+        double x[3] = {0, 0, 0};
+        for (int d = D - 1; d >= 0; d--) {
+            long per = cells[d] * k;
+            long idx = r % per;
+            r /= per;
+            x[d] = s->g.lo[d] + c0[d] * dx + (idx + 0.5) * h;
+        }
+        for (int d = 0; d < D; d++) x[d] += jitter * (rng_uniform(&s->rng) - 0.5) * h;
+        int inside = hearth_shape_sdf(shape, x, NULL) < 0;
+        for (int d = 0; d < D; d++) inside = inside && x[d] >= lo[d] && x[d] <= hi[d];
+        if (!inside) continue;
+        memcpy(xs + 3 * nx, x, sizeof x);
+        memcpy(vs + 3 * nx, vel, sizeof vel);
+        if (++nx == CHUNK) {
+            if (hearth_scene_add_particles(s, material, nx, xs, vs, volume, err) < 0) return -1;
+            added += nx;
+            nx = 0;
+        }
+    }
+    if (nx && hearth_scene_add_particles(s, material, nx, xs, vs, volume, err) < 0) return -1;
+    return added + nx;
+}
+
+/* ---- colliders and forces -------------------------------------------- */
+
+int hearth_scene_add_collider(hearth_scene *s, const hearth_collider_def *def, hearth_error *err) {
+    err_clear(err);
+    if (s->ncol == s->capcol) {
+        int cap = s->capcol ? s->capcol * 2 : 4;
+        collider *c = mem_realloc(s->cols, sizeof(collider) * (size_t)s->capcol, sizeof(collider) * (size_t)cap);
+        if (!c) {
+            err_set(err, HEARTH_ERR_NOMEM, "out of memory for colliders");
+            return -1;
+        }
+        s->cols = c;
+        s->capcol = cap;
+    }
+    if (collider_init(&s->cols[s->ncol], def, err)) return -1;
+    collider_set_time(&s->cols[s->ncol], s->t);
+    return s->ncol++;
+}
+
+hearth_status hearth_scene_collider_motion(hearth_scene *s, int id, hearth_motion_fn fn, void *ud, hearth_error *err) {
+    if (id < 0 || id >= s->ncol) return err_set(err, HEARTH_ERR_PARAM, "collider %d does not exist (the scene has %d)", id, s->ncol);
+    s->cols[id].motion = fn;
+    s->cols[id].motion_ud = ud;
+    collider_set_time(&s->cols[id], s->t);
+    return HEARTH_OK;
+}
+
+void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void *ud) {
+    s->body_force = fn;
+    s->body_force_ud = fn ? ud : NULL;
+}
+
+/* ---- stepping -------------------------------------------------------- */
+
+double scene_stable_dt(const hearth_scene *s) {
+    const double sp = s->max_speed + s->c_max;
+    double dt = sp > 0 ? s->def.cfl * s->def.dx / sp : (s->def.dt_max > 0 ? s->def.dt_max : s->def.cfl * s->def.dx);
+    if (s->def.dt_max > 0 && dt > s->def.dt_max) dt = s->def.dt_max;
+    return dt * s->dt_scale;
+}
+
+static double stateless_c_max(const hearth_scene *s) {
+    double c = 0;
+    for (int i = 0; i < s->nmat; i++)
+        if (s->mats[i].m->state_size == 0 && s->mats[i].wave_speed > c) c = s->mats[i].wave_speed;
+    return c;
+}
+
+/* One step of length dt (shortened by rollbacks). */
+static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
+    const int rollback = s->def.guard == HEARTH_GUARD_ROLLBACK;
+    s->consecutive_rollbacks = 0;
+    for (;;) {
+        if (rollback) {
+            hearth_status st = particles_copy(&s->snap, &s->ps, err);
+            if (st) return st;
+        }
+        const double speed_before = s->max_speed;
+        for (int c = 0; c < s->ncol; c++) collider_set_time(&s->cols[c], s->t);
+        step_report rep;
+        hearth_status st = mpm_step(s, dt, &rep, err);
+        if (st) return st;
+        if (!guard_check(s, &rep, dt, speed_before)) {
+            s->t += dt;
+            s->step++;
+            s->dt_last = dt;
+            for (int c = 0; c < s->ncol; c++) collider_advance(&s->cols[c], dt);
+            s->max_speed = rep.max_speed;
+            double c0 = stateless_c_max(s);
+            s->c_max = rep.c_max > c0 ? rep.c_max : c0;
+            s->kinetic = rep.kinetic;
+            if (s->kinetic > s->kinetic_peak) s->kinetic_peak = s->kinetic;
+            s->out_of_domain += rep.out_of_domain;
+            if (s->dt_scale < 1) s->dt_scale = fmin(1.0, s->dt_scale * 1.25);
+            return HEARTH_OK;
+        }
+        if (rollback && s->consecutive_rollbacks < s->def.max_rollbacks) {
+            particles_copy(&s->ps, &s->snap, NULL); /* same layout: cannot fail */
+            dt *= 0.5;
+            s->dt_scale *= 0.5;
+            s->consecutive_rollbacks++;
+            s->rollbacks++;
+            s->guard = HEARTH_GUARD_ROLLED_BACK;
+            continue;
+        }
+        s->guard = HEARTH_GUARD_STOPPED;
+        if (rollback) {
+            particles_copy(&s->ps, &s->snap, NULL);
+            size_t l = strlen(s->diagnosis);
+            snprintf(s->diagnosis + l, sizeof s->diagnosis - l, " (after %d rollbacks; the scene is at the last good state)",
+                     s->consecutive_rollbacks);
+        }
+        return err_set(err, HEARTH_ERR_GUARD, "%s", s->diagnosis);
+    }
+}
+
+hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err) {
+    err_clear(err);
+    if (s->guard == HEARTH_GUARD_STOPPED) s->guard = HEARTH_GUARD_OK; /* the caller chose to go on */
+    for (int k = 0; k < n; k++) {
+        hearth_status st = one_step(s, scene_stable_dt(s), err);
+        if (st) return st;
+    }
+    return HEARTH_OK;
+}
+
+hearth_status hearth_scene_advance(hearth_scene *s, double t_end, hearth_error *err) {
+    err_clear(err);
+    if (s->guard == HEARTH_GUARD_STOPPED) s->guard = HEARTH_GUARD_OK;
+    while (s->t < t_end) {
+        double dt = scene_stable_dt(s);
+        if (s->t + dt >= t_end) dt = t_end - s->t;
+        else if (s->t + 1.5 * dt > t_end) dt = 0.5 * (t_end - s->t); /* avoid a sliver of a last step */
+        if (!(dt > 0)) break;
+        hearth_status st = one_step(s, dt, err);
+        if (st) return st;
+    }
+    return HEARTH_OK;
+}
+
+void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
+    memset(st, 0, sizeof *st);
+    st->t = s->t;
+    st->dt = s->dt_last;
+    st->step = s->step;
+    st->particles = s->ps.n;
+    st->kinetic = s->kinetic;
+    st->max_speed = s->max_speed;
+    st->cfl = s->cfl_last;
+    st->wave_speed = s->c_max;
+    st->out_of_domain = s->out_of_domain;
+    st->rollbacks = s->rollbacks;
+    st->guard = s->guard;
+    snprintf(st->diagnosis, sizeof st->diagnosis, "%s", s->guard == HEARTH_GUARD_OK ? "" : s->diagnosis);
+    st->grid_blocks = s->g.nactive;
+}
+
+int hearth_scene_particle_count(const hearth_scene *s) { return s->ps.n; }
+const double *hearth_scene_positions(const hearth_scene *s) { return pcold(&s->ps, PC_X); }
+
+uint64_t hearth_scene_hash(const hearth_scene *s) {
+    uint64_t h = 1469598103934665603ULL; /* FNV-1a over every enabled column */
+    for (int c = 0; c < PC_COUNT; c++) {
+        if (!(s->ps.enabled & (1u << c)) || !s->ps.col[c]) continue;
+        const unsigned char *b = s->ps.col[c];
+        size_t len = particles_col_bytes(&s->ps, c) * (size_t)s->ps.n;
+        for (size_t i = 0; i < len; i++) h = (h ^ b[i]) * 1099511628211ULL;
+    }
+    return h;
+}

@@ -1,0 +1,109 @@
+/* scene.h: the scene object (private). Owned by scene.c; mpm.c, guard.c,
+ * probe.c and checkpoint.c read and step it. */
+#ifndef HEARTH_SCENE_H
+#define HEARTH_SCENE_H
+#include <stdint.h>
+
+#include "colliders.h"
+#include "grid.h"
+#include "particles.h"
+
+typedef struct material_slot {
+    const hearth_plugin *plugin;
+    const hearth_material *m;
+    double *params;     /* resolved, schema order */
+    int density_index;  /* schema index of "density" */
+    double wave_speed;  /* cached when the plugin is stateless (state_size 0) */
+} material_slot;
+
+/* A run of sorted particles sharing one grid block. */
+typedef struct pblock {
+    int block, start, end;
+} pblock;
+
+/* What went wrong first in a step, in particle order (so the answer does not
+ * depend on the thread count). */
+typedef enum fail_kind {
+    FAIL_NONE = 0,
+    FAIL_PLUGIN,       /* stress() returned a code */
+    FAIL_STRESS,       /* stress() returned NaN/inf */
+    FAIL_F,            /* F non-finite or det F <= 0 */
+    FAIL_X, FAIL_V, FAIL_C,
+} fail_kind;
+
+typedef struct step_report {
+    fail_kind kind;
+    int particle;      /* index after this step's sort */
+    int code;          /* plugin code for FAIL_PLUGIN */
+    double max_speed;  /* after the step */
+    int fastest;
+    double kinetic;
+    double c_max;      /* largest wave speed met (stateful plugins; stateless come from the slot) */
+    long out_of_domain;
+} step_report;
+
+/* Per particle-block partial results, reduced in block order. */
+typedef struct pb_partial {
+    int fail_i, fail_kind, fail_code, fastest;
+    double ke, vmax, cmax;
+    long ood;
+} pb_partial;
+
+struct hearth_scene {
+    hearth_scene_def def;
+    double t, dt_last, dt_scale;
+    long step;
+    int rollbacks, consecutive_rollbacks;
+    double max_speed, c_max, kinetic, cfl_last;
+    double kinetic_peak; /* largest kinetic energy so far: runaway is judged against it */
+    long out_of_domain;
+    hearth_guard_state guard;
+    char diagnosis[1024];
+    uint64_t rng;
+    int next_id;
+
+    particles ps;
+    grid g;
+    material_slot *mats;
+    int nmat, capmat;
+    collider *cols;
+    int ncol, capcol;
+    hearth_body_force_fn body_force;
+    void *body_force_ud;
+
+    /* per-step scratch: grown when the particle count grows, never in the step loop otherwise */
+    int *keys, *order;
+    double *perm_scratch;
+    int scratch_cap;
+    int *counts;            /* nblocks + 1 */
+    unsigned char *mark;    /* nblocks */
+    pblock *pb;
+    int npb, pbcap;
+    int *colour_pb;         /* pb indices grouped by colour */
+    int colour_start[9];
+    pb_partial *partial;
+
+    /* rollback snapshot (only with HEARTH_GUARD_ROLLBACK) */
+    particles snap;
+    double snap_t;
+    long snap_step;
+    collider *snap_cols;
+
+    char fields[256];
+};
+
+/* scene.c */
+const double *scene_params_for(const hearth_scene *s, int mat, int particle);
+hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err);
+double scene_stable_dt(const hearth_scene *s);
+
+/* mpm.c */
+hearth_status mpm_sort(hearth_scene *s, hearth_error *err);
+void mpm_p2g(hearth_scene *s, double dt, step_report *rep);
+void mpm_grid_update(hearth_scene *s, double dt);
+void mpm_g2p(hearth_scene *s, double dt, step_report *rep);
+hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err);
+
+/* guard.c: returns 1 when the step must not stand; writes the diagnosis. */
+int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed_before);
+#endif
