@@ -1,0 +1,127 @@
+/* elastic.c: compressible neo-Hookean solid -- and the template for writing
+ * a hearth material plugin. Copy this file, rename, change the physics.
+ *
+ * Build out of tree (the only header you need is <hearth/material.h>):
+ *
+ *     cc -shared -fPIC $(pkg-config --cflags hearth) elastic.c -o hearth_elastic.so
+ *
+ * (log and sqrt need no -lm here: hearth itself links libm, so the symbols
+ * are already in the process when the plugin is loaded.)
+ *
+ * The file name matters: a material called `foo` lives in hearth_foo.so.
+ * Put it in a folder on $HEARTH_PLUGIN_PATH (or next to your scene), then
+ * check it before trusting it in a scene:
+ *
+ *     hearth plugin check ./hearth_elastic.so
+ *
+ * This plugin deliberately uses no helper library (not even hearth's
+ * tensor.h, which is not installed), so the command above is all it takes.
+ */
+#include <hearth/material.h>
+#include <math.h>
+
+/* ---- parameters ----------------------------------------------------------
+ * The schema: name, SI unit, one-line help, default, min, max. The core
+ * validates user values against [min, max] and passes them to every callback
+ * as p[] in this order, with temperature curves already evaluated. Every
+ * plugin needs "density" (kg/m^3): the core gives particles mass from it. */
+enum { P_E, P_NU, P_DENSITY, P_COUNT };
+
+static const hearth_param params[P_COUNT] = {
+    [P_E] = {"E", "Pa", "Young's modulus", 1e4, 1e-2, 1e12},
+    /* Up to 0.499, not 0.5: lambda grows like 1/(1 - 2 nu). */
+    [P_NU] = {"nu", "1", "Poisson's ratio", 0.3, 0.0, 0.499},
+    [P_DENSITY] = {"density", "kg/m^3", "mass density at rest", 1000, 1e-3, 1e5},
+};
+
+/* Lame parameters from (E, nu). Computed per call: p[] may differ per
+ * particle (curves, blending), so nothing can be cached. */
+static void lame(const double *p, double *mu, double *lambda) {
+    double E = p[P_E], nu = p[P_NU];
+    *mu = E / (2 * (1 + nu));
+    *lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+}
+
+/* ---- callbacks ------------------------------------------------------------ */
+
+/* Called once per particle at rest (F = I), with its resolved parameters.
+ * This material keeps no state of its own (state_size 0): the core already
+ * carries the deformation gradient F, so there is nothing to set. A plugin
+ * with state (plastic strain, a damage variable...) writes its rest values here. */
+static void init(const double *p, double *state) {
+    (void)p;
+    (void)state;
+}
+
+/* The core calls this once per particle per step, in parallel, so it must
+ * only touch pt and tau. pt holds (all 3x3 row-major, a[3*row + col]):
+ *   pt->F       deformation gradient at the END of the step (already updated)
+ *   pt->grad_v  velocity gradient over the step (1/s), for rate-dependent laws
+ *   pt->dt      step (s); 0 means "evaluate only, do not advance state"
+ *   pt->p       the parameters above; pt->state your state_size doubles
+ *   pt->temperature etc.: NaN unless `needs` asks for them.
+ * Write all nine entries of the Kirchhoff stress tau = J sigma (Pa), which
+ * must be symmetric. Return 0, or a positive code that describe_error explains:
+ * the core's guard stops the run and shows that text. */
+static int stress(hearth_point *pt, double tau[9]) {
+    const double *F = pt->F;
+    double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
+               F[2] * (F[3] * F[7] - F[4] * F[6]);
+    if (!(J > 0)) return 1; /* ln J below would be NaN; let the guard say why */
+    double mu, lambda;
+    lame(pt->p, &mu, &lambda);
+    /* tau = mu (F F^T - I) + lambda ln(J) I: zero at rest, symmetric by
+     * construction, and objective because F F^T turns with the observer. */
+    double vol = lambda * log(J);
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) {
+            double b = F[3 * r] * F[3 * c] + F[3 * r + 1] * F[3 * c + 1] + F[3 * r + 2] * F[3 * c + 2];
+            tau[3 * r + c] = mu * (b - (r == c)) + (r == c ? vol : 0.0);
+        }
+    return 0;
+}
+
+/* Upper bound of the wave speed (m/s) for the CFL step limit: here the
+ * small-strain P-wave speed sqrt((lambda + 2 mu) / rho). Underestimating it
+ * makes the simulation blow up; `hearth plugin check` compares it with the
+ * stiffness it measures. */
+static double wave_speed(const double *p, const double *state) {
+    (void)state;
+    double mu, lambda;
+    lame(p, &mu, &lambda);
+    return sqrt((lambda + 2 * mu) / p[P_DENSITY]);
+}
+
+/* Text for each code stress can return (static strings, shown to the user). */
+static const char *describe_error(int code) {
+    switch (code) {
+    case 1: return "inverted element (det F <= 0)";
+    default: return "unknown error";
+    }
+}
+
+/* ---- the descriptor -------------------------------------------------------
+ * Static, never freed. abi_version, struct_size and real_size let the loader
+ * refuse a plugin built against another <hearth/material.h> or another float
+ * width before touching anything else. Optional callbacks (blend, plastic_J)
+ * left out are NULL. */
+static const hearth_material material = {
+    .abi_version = HEARTH_MATERIAL_ABI,
+    .struct_size = sizeof(hearth_material),
+    .real_size = sizeof(double),
+    .name = "elastic", /* must match the file name hearth_<name>.so */
+    .summary = "compressible neo-Hookean solid (template plugin)",
+    .params = params,
+    .nparams = P_COUNT,
+    .state_size = 0,
+    .needs = 0, /* no temperature, porosity or saturation */
+    .init = init,
+    .stress = stress,
+    .wave_speed = wave_speed,
+    .describe_error = describe_error,
+};
+
+/* The one exported symbol. Declared before it is defined only to keep
+ * -Wmissing-prototypes quiet. */
+HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void);
+HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void) { return &material; }
