@@ -1,0 +1,82 @@
+/* cmd_bench.c: `hearth bench`, the throughput of a standard elastic block.
+ *
+ * The problem is the one ../shared/bench/mpm_reference.c steps, so the two
+ * can be compared in one run (scripts/bench/compare_reference.sh): a block
+ * filling [0.2,0.8]^dim of the unit box at 8 particles per cell (4 in 2D),
+ * neo-Hookean E = 1e5 Pa, nu = 0.3, rho = 1000, gravity, sticky walls,
+ * dt = 1e-4 * 64 / cells. */
+#include <stdio.h>
+#include <string.h>
+
+#include "commands.h"
+#include "hearth/hearth.h"
+#include "progress.h"
+
+int cmd_bench(int argc, char **argv) {
+    long threads = 0, cells = 64, steps = 40, dim = 3;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--help")) {
+            printf("usage: hearth bench [--threads N] [--cells N] [--steps N] [--dim 2|3]\n"
+                   "Steps an elastic block filling [0.2,0.8]^dim of a unit box with N cells per side\n"
+                   "(default 64: about 440k particles in 3D) and prints JSON with particles, steps,\n"
+                   "threads, seconds, particle_steps_per_s and bytes_per_particle.\n");
+            return 0;
+        }
+        if (i + 1 >= argc) {
+            fprintf(stderr, "hearth bench: %s needs a value (see --help)\n", a);
+            return 2;
+        }
+        long *dst = !strcmp(a, "--threads") ? &threads : !strcmp(a, "--cells") ? &cells : !strcmp(a, "--steps") ? &steps
+                  : !strcmp(a, "--dim")     ? &dim
+                                            : NULL;
+        if (!dst) {
+            fprintf(stderr, "hearth bench: unknown option '%s' (see --help)\n", a);
+            return 2;
+        }
+        long lo = dst == &dim ? 2 : dst == &cells ? 16 : 1, hi = dst == &dim ? 3 : dst == &cells ? 1024 : 1000000;
+        if ((*dst = app_parse_int("bench", a, argv[++i], lo, hi)) < 0) return 2;
+    }
+    if (threads > 0) hearth_set_threads((int)threads);
+
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dim = (int)dim;
+    d.dx = 1.0 / cells;
+    d.wall = HEARTH_STICKY;
+    d.dt_max = 1e-4 * 64.0 / cells;
+    d.cfl = 0.5;
+    d.seed = 7;
+    hearth_error err;
+    hearth_scene *s = hearth_scene_create(&d, &err);
+    const char *names[] = {"E", "nu", "density"};
+    const double vals[] = {1e5, 0.3, 1000};
+    int mat = s ? hearth_scene_add_material(s, "elastic", names, vals, 3, &err) : -1;
+    const double c[3] = {0.5, 0.5, 0.5}, h[3] = {0.3, 0.3, 0.3};
+    hearth_shape *box = hearth_shape_box(c, h);
+    int n = mat >= 0 && box ? hearth_scene_seed_shape(s, mat, box, dim == 3 ? 8 : 4, 0.5, NULL, &err) : -1;
+    hearth_shape_free(box);
+    if (n <= 0) {
+        fprintf(stderr, "hearth bench: %s\n", s ? err.msg : err.msg);
+        hearth_scene_destroy(s);
+        return 1;
+    }
+    /* one warm-up step sizes every buffer, so the timed steps measure the steady state */
+    if (hearth_scene_step(s, 1, &err)) {
+        fprintf(stderr, "hearth bench: %s\n", err.msg);
+        hearth_scene_destroy(s);
+        return 1;
+    }
+    const double t0 = progress_wall();
+    hearth_status rc = hearth_scene_step(s, (int)steps, &err);
+    const double secs = progress_wall() - t0;
+    if (rc) {
+        fprintf(stderr, "hearth bench: %s\n", err.msg);
+        hearth_scene_destroy(s);
+        return rc == HEARTH_ERR_GUARD ? 3 : 1;
+    }
+    printf("{\"particles\": %d, \"steps\": %ld, \"threads\": %d, \"seconds\": %.4f, \"particle_steps_per_s\": %.6g, "
+           "\"bytes_per_particle\": %.1f, \"dim\": %ld, \"cells\": %ld}\n",
+           n, steps, hearth_get_threads(), secs, (double)n * steps / secs, (double)hearth_bytes_allocated() / n, dim, cells);
+    hearth_scene_destroy(s);
+    return 0;
+}

@@ -1,0 +1,52 @@
+/* progress.c: the progress bar. */
+#include "progress.h"
+
+#include <stdio.h>
+#include <time.h>
+#include <unistd.h>
+
+double progress_wall(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+void progress_start(progress *p, double t_end, int quiet) {
+    p->t0_wall = p->last_print = progress_wall();
+    p->t_end = t_end;
+    p->steps0 = 0;
+    p->tty = isatty(2);
+    p->quiet = quiet;
+}
+
+static void draw(progress *p, double t, long steps, int final) {
+    const double now = progress_wall(), el = now - p->t0_wall;
+    const double frac = p->t_end > 0 ? t / p->t_end : 1.0;
+    const double sps = el > 0 ? steps / el : 0.0;
+    const double eta = frac > 1e-9 && frac < 1 ? el * (1 - frac) / frac : 0.0;
+    if (p->tty) {
+        char bar[31];
+        int k = (int)(frac * 30 + 0.5);
+        for (int i = 0; i < 30; i++) bar[i] = i < k ? '#' : '.';
+        bar[30] = '\0';
+        fprintf(stderr, "\r[%s] %3.0f%%  t = %.4g / %.4g s  %.0f steps/s  ETA %.0f s   %s", bar, 100 * frac, t, p->t_end, sps,
+                eta, final ? "\n" : "");
+    } else {
+        fprintf(stderr, "progress: t = %.4g / %.4g s (%.0f%%), %ld steps, %.0f steps/s, elapsed %.1f s\n", t, p->t_end,
+                100 * frac, steps, sps, el);
+    }
+    fflush(stderr);
+}
+
+void progress_update(progress *p, double t, long steps) {
+    if (p->quiet) return;
+    const double now = progress_wall();
+    if (now - p->last_print < (p->tty ? 0.1 : 5.0)) return;
+    p->last_print = now;
+    draw(p, t, steps, 0);
+}
+
+void progress_finish(progress *p, double t, long steps) {
+    if (p->quiet) return;
+    draw(p, t, steps, 1);
+}
