@@ -1,0 +1,57 @@
+/* mpm_fixture.h: small helpers for building scenes in the MPM tests. */
+#ifndef HEARTH_MPM_FIXTURE_H
+#define HEARTH_MPM_FIXTURE_H
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "hearth/hearth.h"
+#include "scene.h"
+#include "test.h"
+
+static inline hearth_scene *fx_scene(int dim, double dx, double lo, double hi) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dim = dim;
+    d.dx = dx;
+    for (int k = 0; k < 3; k++) {
+        d.lo[k] = lo;
+        d.hi[k] = hi;
+    }
+    hearth_error err;
+    hearth_scene *s = hearth_scene_create(&d, &err);
+    if (!s) fprintf(stderr, "scene: %s\n", err.msg);
+    return s;
+}
+
+static inline hearth_scene *fx_scene_def(const hearth_scene_def *d) {
+    hearth_error err;
+    hearth_scene *s = hearth_scene_create(d, &err);
+    if (!s) fprintf(stderr, "scene: %s\n", err.msg);
+    return s;
+}
+
+static inline int fx_elastic(hearth_scene *s, double E, double nu, double rho) {
+    const char *n[] = {"E", "nu", "density"};
+    const double v[] = {E, nu, rho};
+    hearth_error err;
+    int m = hearth_scene_add_material(s, "elastic", n, v, 3, &err);
+    if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
+    return m;
+}
+
+/* Path of a test fixture plugin (tests/plugins), built next to the tests. */
+static inline const char *fx_test_plugin(const char *name) {
+    static char buf[4096];
+    const char *dir = getenv("HEARTH_TEST_PLUGIN_DIR");
+    snprintf(buf, sizeof buf, "%s/hearth_%s.so", dir ? dir : "tests/plugins", name);
+    return buf;
+}
+
+static inline int fx_box(hearth_scene *s, int mat, const double c[3], const double h[3], int ppc, const double v[3]) {
+    hearth_shape *b = hearth_shape_box(c, h);
+    hearth_error err;
+    int n = hearth_scene_seed_shape(s, mat, b, ppc, 0.0, v, &err);
+    if (n < 0) fprintf(stderr, "seed: %s\n", err.msg);
+    hearth_shape_free(b);
+    return n;
+}
+#endif

@@ -1,0 +1,438 @@
+/* unit_image.c: PNG files, colour maps and the built-in font.
+ *
+ * PNGs written by hearth are decoded here with libpng's own simplified API,
+ * so a bug shared by png_write_rgb and png_read_gray cannot hide itself. */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp, opendir */
+
+#include <dirent.h>
+#include <png.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "alloc.h"
+#include "colormap.h"
+#include "font.h"
+#include "image.h"
+#include "io_png.h"
+#include "test.h"
+
+/* ---- helpers --------------------------------------------------------- */
+
+/* A fresh folder under /tmp; removed (with its files) by rm_dir. */
+static void make_dir(char *dir, size_t n) {
+    snprintf(dir, n, "/tmp/hearth_unit_image_XXXXXX");
+    CHECK(mkdtemp(dir) != NULL);
+}
+
+static void rm_dir(const char *dir) {
+    DIR *d = opendir(dir);
+    if (!d) return;
+    struct dirent *e;
+    char p[512];
+    while ((e = readdir(d))) {
+        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+        snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
+        if (remove(p) != 0) rmdir(p);
+    }
+    closedir(d);
+    rmdir(dir);
+}
+
+/* Number of entries in dir whose name contains ".tmp.". */
+static int count_tmp(const char *dir) {
+    DIR *d = opendir(dir);
+    int n = 0;
+    if (!d) return -1;
+    struct dirent *e;
+    while ((e = readdir(d)))
+        if (strstr(e->d_name, ".tmp.")) n++;
+    closedir(d);
+    return n;
+}
+
+/* Whole file into a malloc'd buffer (test code, not the library). */
+static unsigned char *slurp(const char *path, size_t *n) {
+    FILE *f = fopen(path, "rb");
+    *n = 0;
+    if (!f) return NULL;
+    unsigned char *buf = NULL;
+    size_t cap = 0;
+    for (;;) {
+        if (*n == cap) {
+            cap = cap ? 2 * cap : 4096;
+            unsigned char *nb = realloc(buf, cap);
+            if (!nb) break;
+            buf = nb;
+        }
+        size_t got = fread(buf + *n, 1, cap - *n, f);
+        *n += got;
+        if (got == 0) break;
+    }
+    fclose(f);
+    return buf;
+}
+
+static void spit(const char *path, const void *data, size_t n) {
+    FILE *f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (!f) return;
+    CHECK(fwrite(data, 1, n, f) == n);
+    fclose(f);
+}
+
+/* Decode path with libpng's simplified API to 8-bit RGB; NULL on failure. */
+static unsigned char *decode_rgb(const char *path, int *w, int *h) {
+    png_image im;
+    memset(&im, 0, sizeof im);
+    im.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&im, path)) return NULL;
+    im.format = PNG_FORMAT_RGB;
+    unsigned char *buf = malloc(PNG_IMAGE_SIZE(im));
+    if (!buf || !png_image_finish_read(&im, NULL, buf, 0, NULL)) {
+        png_image_free(&im);
+        free(buf);
+        return NULL;
+    }
+    *w = (int)im.width;
+    *h = (int)im.height;
+    return buf;
+}
+
+static int lum601(int r, int g, int b) { return (int)lround(0.299 * r + 0.587 * g + 0.114 * b); }
+
+/* ---- PNG ------------------------------------------------------------- */
+
+TEST(png_roundtrip) {
+    char dir[64], path[128];
+    make_dir(dir, sizeof dir);
+    size_t bytes0 = hearth_bytes_allocated();
+
+    /* Odd sizes and three independent ramps catch row stride and channel order mistakes. */
+    enum { W = 37, H = 23 };
+    unsigned char rgb[W * H * 3];
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            unsigned char *q = rgb + (y * W + x) * 3;
+            q[0] = (unsigned char)(x * 255 / (W - 1));
+            q[1] = (unsigned char)(y * 255 / (H - 1));
+            q[2] = (unsigned char)((x * 7 + y * 13) & 255);
+        }
+    snprintf(path, sizeof path, "%s/grad.png", dir);
+    hearth_error err = {0};
+    CHECK(png_write_rgb(path, W, H, rgb, &err) == HEARTH_OK);
+
+    int w = 0, h = 0;
+    unsigned char *back = decode_rgb(path, &w, &h);
+    CHECK(back != NULL);
+    CHECK(w == W && h == H);
+    if (back && w == W && h == H) CHECK(memcmp(back, rgb, sizeof rgb) == 0);
+    free(back);
+
+    unsigned char *g = NULL;
+    CHECK(png_read_gray(path, &w, &h, &g, &err) == HEARTH_OK);
+    CHECK(w == W && h == H && g != NULL);
+    if (g && w == W && h == H) {
+        static const int px[][2] = {{0, 0}, {W - 1, 0}, {0, H - 1}, {W - 1, H - 1}, {17, 9}};
+        for (size_t k = 0; k < sizeof px / sizeof px[0]; k++) {
+            const unsigned char *q = rgb + (px[k][1] * W + px[k][0]) * 3;
+            CHECK_NEAR(g[px[k][1] * W + px[k][0]], lum601(q[0], q[1], q[2]), 0.5);
+        }
+        CHECK(g[0] == 0); /* top left is black: row 0 really is the top */
+    }
+    mem_free(g, (size_t)w * (size_t)h);
+
+    /* RGBA: alpha composites over white. */
+    static const unsigned char rgba[4 * 4] = {255, 0, 0, 255, 0, 0, 0, 0,
+                                              0, 0, 0, 128, 100, 100, 100, 128};
+    png_image pi;
+    memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    pi.width = 4;
+    pi.height = 1;
+    pi.format = PNG_FORMAT_RGBA;
+    snprintf(path, sizeof path, "%s/rgba.png", dir);
+    CHECK(png_image_write_to_file(&pi, path, 0, rgba, 0, NULL));
+    CHECK(png_read_gray(path, &w, &h, &g, &err) == HEARTH_OK);
+    if (g && w == 4 && h == 1) {
+        CHECK(g[0] == 76);  /* red, opaque: 0.299 * 255 */
+        CHECK(g[1] == 255); /* fully transparent: white */
+        CHECK(g[2] == 127); /* black at 128/255: 255 * 127/255 */
+        CHECK(g[3] == 177); /* 100 * 128/255 + 127 = 177.2 */
+    }
+    mem_free(g, (size_t)w * (size_t)h);
+
+    /* 16-bit grey: scaled to 8 bits with rounding. */
+    static const png_uint_16 gray16[3] = {0, 25700, 65535};
+    memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    pi.width = 1;
+    pi.height = 3; /* a column, to check the row order too */
+    pi.format = PNG_FORMAT_LINEAR_Y;
+    snprintf(path, sizeof path, "%s/g16.png", dir);
+    CHECK(png_image_write_to_file(&pi, path, 0, gray16, 0, NULL));
+    CHECK(png_read_gray(path, &w, &h, &g, &err) == HEARTH_OK);
+    if (g && w == 1 && h == 3) CHECK(g[0] == 0 && g[1] == 100 && g[2] == 255);
+    mem_free(g, (size_t)w * (size_t)h);
+
+    /* Palette. */
+    static const unsigned char pal[3 * 3] = {0, 0, 255, 0, 255, 0, 200, 200, 200};
+    static const unsigned char idx[3] = {2, 0, 1};
+    memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    pi.width = 3;
+    pi.height = 1;
+    pi.format = PNG_FORMAT_RGB_COLORMAP;
+    pi.colormap_entries = 3;
+    snprintf(path, sizeof path, "%s/pal.png", dir);
+    CHECK(png_image_write_to_file(&pi, path, 0, idx, 0, pal));
+    CHECK(png_read_gray(path, &w, &h, &g, &err) == HEARTH_OK);
+    if (g && w == 3 && h == 1) CHECK(g[0] == 200 && g[1] == 29 && g[2] == 150);
+    mem_free(g, (size_t)w * (size_t)h);
+
+    CHECK(hearth_bytes_allocated() == bytes0);
+    rm_dir(dir);
+}
+
+TEST(png_atomic_on_failure) {
+    char dir[64], path[128], sub[128];
+    make_dir(dir, sizeof dir);
+    size_t bytes0 = hearth_bytes_allocated();
+    hearth_error err = {0};
+    unsigned char rgb[4 * 3 * 3];
+    for (size_t i = 0; i < sizeof rgb; i++) rgb[i] = (unsigned char)(i * 11);
+
+    /* A folder that does not exist. */
+    snprintf(path, sizeof path, "%s/no_such_dir/x.png", dir);
+    CHECK(png_write_rgb(path, 4, 3, rgb, &err) == HEARTH_ERR_IO);
+    CHECK(err.code == HEARTH_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, path);
+    CHECK_STR_CONTAINS(err.msg, "No such file");
+
+    /* A good file, then a failed overwrite must leave it byte for byte. */
+    snprintf(path, sizeof path, "%s/good.png", dir);
+    CHECK(png_write_rgb(path, 4, 3, rgb, &err) == HEARTH_OK);
+    size_t n0 = 0, n1 = 0;
+    unsigned char *before = slurp(path, &n0);
+    CHECK(before != NULL && n0 > 8);
+
+    CHECK(png_write_rgb(path, 0, 3, rgb, &err) == HEARTH_ERR_PARAM);
+    CHECK_STR_CONTAINS(err.msg, path);
+    CHECK_STR_CONTAINS(err.msg, "0x3");
+
+    /* Every allocation the write makes (libpng and zlib included) fails in
+     * turn; each failure must report NOMEM and keep the old file. */
+    unsigned char other[4 * 3 * 3];
+    memset(other, 99, sizeof other);
+    int fails = 0;
+    for (long k = 0; k < 1000; k++) {
+        mem_fail_after(k);
+        hearth_status st = png_write_rgb(path, 4, 3, other, &err);
+        mem_fail_after(-1);
+        if (st == HEARTH_OK) break;
+        fails++;
+        CHECK(st == HEARTH_ERR_NOMEM);
+        unsigned char *now = slurp(path, &n1);
+        CHECK(now && n1 == n0 && memcmp(now, before, n0) == 0);
+        free(now);
+        CHECK(count_tmp(dir) == 0);
+    }
+    CHECK(fails >= 3); /* the loop did reach past the name buffer into libpng */
+    CHECK(hearth_bytes_allocated() == bytes0);
+
+    /* The last round succeeded: the new content is there. Put the old one back. */
+    int w = 0, h = 0;
+    unsigned char *dec = decode_rgb(path, &w, &h);
+    CHECK(dec && w == 4 && h == 3 && memcmp(dec, other, sizeof other) == 0);
+    free(dec);
+    spit(path, before, n0);
+
+    /* rename() failing (the target is a folder) removes the temporary file. */
+    snprintf(sub, sizeof sub, "%s/a_folder.png", dir);
+    CHECK(mkdir(sub, 0700) == 0);
+    CHECK(png_write_rgb(sub, 4, 3, rgb, &err) == HEARTH_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, sub);
+
+    /* The old file is intact and still decodes to the first image. */
+    unsigned char *after = slurp(path, &n1);
+    CHECK(after && n1 == n0 && memcmp(after, before, n0) == 0);
+    dec = decode_rgb(path, &w, &h);
+    CHECK(dec && w == 4 && h == 3 && memcmp(dec, rgb, sizeof rgb) == 0);
+    free(dec);
+    free(after);
+    free(before);
+
+    CHECK(count_tmp(dir) == 0);
+    rm_dir(dir);
+}
+
+TEST(png_read_errors) {
+    char dir[64], path[128];
+    make_dir(dir, sizeof dir);
+    size_t bytes0 = hearth_bytes_allocated();
+    hearth_error err = {0};
+    int w = 7, h = 7;
+    static unsigned char sentinel[1];
+    unsigned char *g = sentinel; /* must come back NULL */
+
+    snprintf(path, sizeof path, "%s/missing.png", dir);
+    CHECK(png_read_gray(path, &w, &h, &g, &err) == HEARTH_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, path);
+    CHECK_STR_CONTAINS(err.msg, "No such file");
+    CHECK(g == NULL && w == 0 && h == 0);
+
+    snprintf(path, sizeof path, "%s/notes.png", dir);
+    static const char text[] = "this is a text file, not a picture\n";
+    spit(path, text, sizeof text - 1);
+    CHECK(png_read_gray(path, &w, &h, &g, &err) == HEARTH_ERR_FORMAT);
+    CHECK_STR_CONTAINS(err.msg, path);
+    CHECK_STR_CONTAINS(err.msg, "not a PNG");
+    CHECK(g == NULL);
+
+    /* Shorter than the signature. */
+    spit(path, "\x89PN", 3);
+    CHECK(png_read_gray(path, &w, &h, &g, &err) == HEARTH_ERR_FORMAT);
+
+    /* A real PNG cut in half: the signature passes, libpng fails later. */
+    enum { W = 40, H = 30 };
+    unsigned char rgb[W * H * 3];
+    for (size_t i = 0; i < sizeof rgb; i++) rgb[i] = (unsigned char)(i * 31 % 251);
+    snprintf(path, sizeof path, "%s/cut.png", dir);
+    CHECK(png_write_rgb(path, W, H, rgb, &err) == HEARTH_OK);
+    size_t n = 0;
+    unsigned char *full = slurp(path, &n);
+    CHECK(full != NULL);
+    spit(path, full, n / 2);
+    CHECK(png_read_gray(path, &w, &h, &g, &err) == HEARTH_ERR_FORMAT);
+    CHECK_STR_CONTAINS(err.msg, path);
+    CHECK_STR_CONTAINS(err.msg, "truncated");
+    CHECK(g == NULL && w == 0 && h == 0);
+
+    /* Allocation failures while reading report NOMEM and leak nothing. */
+    spit(path, full, n);
+    free(full);
+    int fails = 0;
+    for (long k = 0; k < 1000; k++) {
+        mem_fail_after(k);
+        hearth_status st = png_read_gray(path, &w, &h, &g, &err);
+        mem_fail_after(-1);
+        if (st == HEARTH_OK) {
+            mem_free(g, (size_t)w * (size_t)h);
+            break;
+        }
+        fails++;
+        CHECK(st == HEARTH_ERR_NOMEM);
+        CHECK(g == NULL);
+    }
+    CHECK(fails >= 3);
+
+    CHECK(hearth_bytes_allocated() == bytes0);
+    rm_dir(dir);
+}
+
+/* ---- colour maps ----------------------------------------------------- */
+
+static void check_rgb(int map, double t, int r, int g, int b) {
+    unsigned char c[3];
+    cmap_eval(map, t, c);
+    CHECK_NEAR(c[0], r, 2);
+    CHECK_NEAR(c[1], g, 2);
+    CHECK_NEAR(c[2], b, 2);
+}
+
+TEST(colormap_endpoints) {
+    check_rgb(CMAP_VIRIDIS, 0.0, 68, 1, 84);
+    check_rgb(CMAP_VIRIDIS, 1.0, 253, 231, 37);
+    check_rgb(CMAP_INFERNO, 0.0, 0, 0, 4);
+    check_rgb(CMAP_INFERNO, 1.0, 252, 255, 164);
+    check_rgb(CMAP_VIRIDIS, 0.5, 33, 145, 140); /* matplotlib's viridis(0.5) */
+    check_rgb(CMAP_GRAY, 0.0, 0, 0, 0);
+    check_rgb(CMAP_GRAY, 1.0, 255, 255, 255);
+
+    /* Clamping, including infinities. */
+    check_rgb(CMAP_VIRIDIS, -3.0, 68, 1, 84);
+    check_rgb(CMAP_INFERNO, 7.0, 252, 255, 164);
+    check_rgb(CMAP_VIRIDIS, INFINITY, 253, 231, 37);
+    check_rgb(CMAP_VIRIDIS, -INFINITY, 68, 1, 84);
+
+    /* Viridis was designed so lightness rises steadily. */
+    double prev = -1;
+    for (int i = 0; i < 64; i++) {
+        unsigned char c[3];
+        cmap_eval(CMAP_VIRIDIS, i / 63.0, c);
+        double l = 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2];
+        if (!(l > prev)) fprintf(stderr, "viridis lightness not rising at sample %d\n", i);
+        CHECK(l > prev);
+        prev = l;
+    }
+
+    unsigned char c[3] = {1, 2, 3};
+    cmap_eval(CMAP_INFERNO, NAN, c);
+    CHECK(c[0] == CMAP_NAN_GREY && c[1] == CMAP_NAN_GREY && c[2] == CMAP_NAN_GREY);
+    cmap_eval(CMAP_VIRIDIS, NAN, c);
+    CHECK(c[0] == CMAP_NAN_GREY && c[1] == CMAP_NAN_GREY && c[2] == CMAP_NAN_GREY);
+
+    CHECK(cmap_by_name("viridis") == CMAP_VIRIDIS);
+    CHECK(cmap_by_name("inferno") == CMAP_INFERNO);
+    CHECK(cmap_by_name("gray") == CMAP_GRAY);
+    CHECK(cmap_by_name("jet") == -1);
+    CHECK(cmap_by_name("") == -1);
+    CHECK(cmap_by_name(NULL) == -1);
+}
+
+/* ---- font ------------------------------------------------------------ */
+
+TEST(font_renders_digits) {
+    static const unsigned char white[3] = {255, 255, 255};
+    const char *digits = "0123456789";
+    for (int scale = 1; scale <= 3; scale++)
+        CHECK(font_text_width(digits, scale) == 10 * 6 * scale);
+    CHECK(font_text_width("", 1) == 0);
+    CHECK(font_text_width("ab\nc", 1) == 12);
+    CHECK(font_text_width("20\xc2\xb0""C", 1) == 4 * 6); /* the degree sign is one cell */
+
+    enum { W = 130, H = 24 };
+    unsigned char rgb[W * H * 3];
+    memset(rgb, 0, sizeof rgb);
+    font_draw(rgb, W, H, 2, 2, digits, 2, white);
+    int lit = 0;
+    for (size_t i = 0; i < sizeof rgb; i += 3) lit += rgb[i] == 255;
+    CHECK(lit > 10 * 8 * 4); /* every digit has at least 8 pixels, 4 per pixel at scale 2 */
+    /* Nothing drawn right of the text's width. */
+    int stray = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 2 + 120; x < W; x++) stray += rgb[(y * W + x) * 3] != 0;
+    CHECK(stray == 0);
+
+    /* Each digit on its own: all ten masks differ. */
+    unsigned char cell[10][6 * 9 * 3];
+    for (int d = 0; d < 10; d++) {
+        char s[2] = {(char)('0' + d), 0};
+        memset(cell[d], 0, sizeof cell[d]);
+        font_draw(cell[d], 6, 9, 0, 0, s, 1, white);
+        int on = 0;
+        for (size_t i = 0; i < sizeof cell[d]; i += 3) on += cell[d][i] != 0;
+        CHECK(on >= 8);
+    }
+    for (int a = 0; a < 10; a++)
+        for (int b = a + 1; b < 10; b++) {
+            if (memcmp(cell[a], cell[b], sizeof cell[a]) == 0)
+                fprintf(stderr, "digits %d and %d look the same\n", a, b);
+            CHECK(memcmp(cell[a], cell[b], sizeof cell[a]) != 0);
+        }
+
+    /* Clipping: text hanging off every edge must stay inside the buffer
+     * (ASan checks the writes); a canvas with text partly drawn still works. */
+    img im;
+    hearth_error err = {0};
+    CHECK(img_init(&im, 20, 10, NULL, &err) == HEARTH_OK);
+    img_text(&im, -7, -5, "Wg", 3, white);
+    img_text(&im, 15, 6, "Hy\xe2\x82\xac", 2, white);
+    img_text(&im, 100000, -100000, "x", 1000, white);
+    img_free(&im);
+}
+
+TEST_MAIN(T(png_roundtrip), T(png_atomic_on_failure), T(png_read_errors), T(colormap_endpoints),
+          T(font_renders_digits))

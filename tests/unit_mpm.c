@@ -1,0 +1,624 @@
+/* unit_mpm.c: the MPM core against closed forms and conservation laws. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "alloc.h"
+#include "grid.h"
+#include "mpm_fixture.h"
+
+#define PI 3.14159265358979323846
+
+static uint64_t rng_state = 12345;
+static double urand(void) {
+    uint64_t z = (rng_state += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return (double)((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* Quadratic B-splines: partition of unity, linear and quadratic moments, and
+ * derivatives that match finite differences. */
+TEST(bspline_weights) {
+    for (int k = 0; k < 1000; k++) {
+        double fx = 0.5 + urand(), w[3], dw[3];
+        bspline_weights(fx, w, dw);
+        double s0 = 0, s1 = 0, s2 = 0, sd = 0, sdx = 0;
+        for (int i = 0; i < 3; i++) {
+            s0 += w[i];
+            s1 += w[i] * (i - fx);
+            s2 += w[i] * (i - fx) * (i - fx);
+            sd += dw[i];
+            sdx += dw[i] * i; /* d/dX sum_i w_i x_i = d/dX X = 1 */
+            CHECK(w[i] >= 0);
+        }
+        CHECK_NEAR(s0, 1.0, 1e-15);
+        CHECK_NEAR(s1, 0.0, 1e-15);
+        CHECK_NEAR(s2, 0.25, 1e-15); /* D_p = dx^2/4 I, as APIC uses */
+        CHECK_NEAR(sd, 0.0, 1e-15);
+        CHECK_NEAR(sdx, 1.0, 1e-14);
+        /* dw is dw_i/dX at fixed base */
+        const double h = 1e-6;
+        double wp[3], wm[3], tmp[3];
+        bspline_weights(fx + h, wp, tmp);
+        bspline_weights(fx - h, wm, tmp);
+        for (int i = 0; i < 3; i++) CHECK_NEAR((wp[i] - wm[i]) / (2 * h), dw[i], 1e-8);
+    }
+}
+
+static void momenta(const hearth_scene *s, double mass_mom[4], double L[3], int affine) {
+    const particles *ps = &s->ps;
+    memset(mass_mom, 0, 4 * sizeof(double));
+    memset(L, 0, 3 * sizeof(double));
+    const double Dk = 0.25 * s->def.dx * s->def.dx;
+    for (int i = 0; i < ps->n; i++) {
+        const double m = pcold(ps, PC_MASS)[i], *x = pcold(ps, PC_X) + 3 * i, *v = pcold(ps, PC_V) + 3 * i,
+                     *C = pcold(ps, PC_C) + 9 * i;
+        mass_mom[0] += m;
+        for (int d = 0; d < 3; d++) mass_mom[1 + d] += m * v[d];
+        L[0] += m * (x[1] * v[2] - x[2] * v[1]);
+        L[1] += m * (x[2] * v[0] - x[0] * v[2]);
+        L[2] += m * (x[0] * v[1] - x[1] * v[0]);
+        if (affine) { /* APIC: L_affine = m eps_abc (C D)_cb with D = dx^2/4 I */
+            L[0] += m * Dk * (C[7] - C[5]);
+            L[1] += m * Dk * (C[2] - C[6]);
+            L[2] += m * Dk * (C[3] - C[1]);
+        }
+    }
+}
+
+static void grid_momenta(const hearth_scene *s, double mass_mom[4], double L[3]) {
+    const grid *g = &s->g;
+    const int D = g->dim, NPB = g->nodes_per_block;
+    memset(mass_mom, 0, 4 * sizeof(double));
+    memset(L, 0, 3 * sizeof(double));
+    for (int k = 0; k < g->nactive; k++) {
+        const double *node = grid_block(g, k);
+        int bc[3];
+        grid_block_coords(g, g->active[k], bc);
+        for (int l = 0; l < NPB; l++) {
+            const int li[3] = {D == 2 ? l / GRID_B : l / 16, D == 2 ? l % GRID_B : (l / GRID_B) % GRID_B, D == 2 ? 0 : l % GRID_B};
+            double x[3] = {0, 0, 0};
+            for (int d = 0; d < D; d++) x[d] = g->lo[d] + (bc[d] * GRID_B + li[d]) * g->dx;
+            const double m = node[l], p[3] = {node[NPB + l], node[2 * NPB + l], node[3 * NPB + l]};
+            mass_mom[0] += m;
+            for (int d = 0; d < 3; d++) mass_mom[1 + d] += p[d];
+            L[0] += x[1] * p[2] - x[2] * p[1];
+            L[1] += x[2] * p[0] - x[0] * p[2];
+            L[2] += x[0] * p[1] - x[1] * p[0];
+        }
+    }
+}
+
+static double rel(double a, double b) { return fabs(a - b) / fmax(1e-300, fmax(fabs(a), fabs(b))); }
+
+/* P2G then G2P (dt = 0, no grid forces) conserves mass, linear and angular
+ * momentum, the latter with APIC's affine term (Jiang et al. 2015). */
+static void conservation(int dim) {
+    hearth_scene *s = fx_scene(dim, 0.05, 0, 1);
+    int mat = fx_elastic(s, 1e3, 0.3, 1000);
+    const int n = 300;
+    double x[3 * 300], v[3 * 300];
+    for (int i = 0; i < 3 * n; i++) {
+        x[i] = 0.2 + 0.6 * urand();
+        v[i] = urand() - 0.5;
+    }
+    hearth_error err;
+    CHECK(hearth_scene_add_particles(s, mat, n, x, v, 1e-4, &err) == n);
+    for (int i = 0; i < n; i++)
+        for (int a = 0; a < 9; a++) pcold(&s->ps, PC_C)[9 * i + a] = (dim == 3 || (a % 3 < 2 && a < 6)) ? 4 * (urand() - 0.5) : 0;
+    double P0[4], L0[3], Pg[4], Lg[3], P1[4], L1[3];
+    momenta(s, P0, L0, 1);
+    CHECK(mpm_sort(s, &err) == HEARTH_OK);
+    step_report rep;
+    mpm_p2g(s, 0.0, &rep);
+    grid_momenta(s, Pg, Lg);
+    /* turn momentum into velocity without forces */
+    for (int k = 0; k < s->g.nactive; k++) {
+        double *node = grid_block(&s->g, k);
+        const int NPB = s->g.nodes_per_block;
+        for (int l = 0; l < NPB; l++)
+            for (int d = 1; d <= 3; d++) node[d * NPB + l] = node[l] > 0 ? node[d * NPB + l] / node[l] : 0;
+    }
+    mpm_g2p(s, 0.0, &rep);
+    momenta(s, P1, L1, 1);
+    for (int d = 0; d < 4; d++) {
+        CHECK(rel(P0[d], Pg[d]) <= 1e-12);
+        CHECK(rel(P0[d], P1[d]) <= 1e-12);
+    }
+    const double Ls = sqrt(L0[0] * L0[0] + L0[1] * L0[1] + L0[2] * L0[2]);
+    for (int d = 0; d < 3; d++) {
+        CHECK(fabs(L0[d] - Lg[d]) <= 1e-12 * Ls);
+        CHECK(fabs(Lg[d] - L1[d]) <= 1e-12 * Ls);
+    }
+    printf("  %dD: mass %.3g, |L| %.6g, grid-particle |dL|/|L| = %.2g, after G2P %.2g\n", dim, P0[0], Ls,
+           fabs(L0[2] - Lg[2]) / Ls, fabs(Lg[2] - L1[2]) / Ls);
+    hearth_scene_destroy(s);
+}
+
+TEST(transfer_conservation_2d) { conservation(2); }
+TEST(transfer_conservation_3d) { conservation(3); }
+
+static double neo_hookean_energy(const hearth_scene *s, double mu, double lam) {
+    double E = 0;
+    for (int i = 0; i < s->ps.n; i++) {
+        const double *F = pcold(&s->ps, PC_F) + 9 * i;
+        double tr = 0;
+        for (int a = 0; a < 9; a++) tr += F[a] * F[a];
+        const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
+        const double lj = log(J);
+        E += pcold(&s->ps, PC_VOL0)[i] * (0.5 * mu * (tr - 3) - mu * lj + 0.5 * lam * lj * lj);
+    }
+    return E;
+}
+
+/* A spinning elastic disc keeps its angular momentum to round-off and never
+ * gains energy (the issue's setup: rho 1, E 1e3, nu 0.2, R 0.15, dx 1/64, 4 ppc,
+ * omega 10 rad/s, dt 2e-4, one revolution). */
+TEST(rotating_disc) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 64;
+    d.gravity[1] = 0;
+    d.dt_max = 2e-4;
+    d.cfl = 1.0;
+    hearth_scene *s = fx_scene_def(&d);
+    const double E = 1e3, nu = 0.2, w = 10;
+    int mat = fx_elastic(s, E, nu, 1);
+    const double c[3] = {0.5, 0.5, 0};
+    hearth_shape *disc = hearth_shape_sphere(c, 0.15);
+    hearth_error err;
+    int n = hearth_scene_seed_shape(s, mat, disc, 4, 0.0, NULL, &err);
+    hearth_shape_free(disc);
+    CHECK(n > 1000);
+    for (int i = 0; i < n; i++) { /* rigid rotation: v = w x r, C = grad v */
+        double *x = pcold(&s->ps, PC_X) + 3 * i, *v = pcold(&s->ps, PC_V) + 3 * i, *C = pcold(&s->ps, PC_C) + 9 * i;
+        v[0] = -w * (x[1] - 0.5);
+        v[1] = w * (x[0] - 0.5);
+        C[1] = -w;
+        C[3] = w;
+    }
+    s->max_speed = w * 0.15;
+    const double mu = E / (2 * (1 + nu)), lam = E * nu / ((1 + nu) * (1 - 2 * nu));
+    double P[4], L0[3], L[3];
+    momenta(s, P, L0, 1);
+    double ke0 = 0;
+    for (int i = 0; i < n; i++) {
+        const double *v = pcold(&s->ps, PC_V) + 3 * i;
+        ke0 += 0.5 * pcold(&s->ps, PC_MASS)[i] * (v[0] * v[0] + v[1] * v[1]);
+    }
+    const double E0 = ke0 + neo_hookean_energy(s, mu, lam);
+    const int steps = (int)lround(2 * PI / w / 2e-4);
+    double worst_L = 0, worst_E = -1;
+    for (int k = 0; k < steps; k++) {
+        CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+        momenta(s, P, L, 1);
+        worst_L = fmax(worst_L, fabs(L[2] / L0[2] - 1));
+        hearth_stats st;
+        hearth_scene_stats(s, &st);
+        worst_E = fmax(worst_E, (st.kinetic + neo_hookean_energy(s, mu, lam)) / E0 - 1);
+    }
+    hearth_stats st;
+    hearth_scene_stats(s, &st);
+    printf("  %d particles, %d steps to t = %.4f s: max |L/L0 - 1| = %.3g, max energy rise = %.3g%%\n", n, steps, st.t,
+           worst_L, 100 * worst_E);
+    CHECK(fabs(st.dt - 2e-4) < 1e-15);
+    CHECK(worst_L <= 1e-10);
+    CHECK(worst_E <= 1e-3);
+    hearth_scene_destroy(s);
+}
+
+/* Free fall: the centroid follows g t^2 / 2. Symplectic Euler's position lags
+ * the parabola by g t dt / 2, a relative error of dt / t, so 1e-6 needs
+ * dt <= 1e-6 t: we step at 5e-8 s and compare at t >= 0.08 s. */
+TEST(free_fall) {
+    hearth_set_threads(1);
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 16;
+    d.dt_max = 5e-8;
+    hearth_scene *s = fx_scene_def(&d);
+    int mat = fx_elastic(s, 1e4, 0.3, 1000);
+    const double c[3] = {0.5, 0.8, 0}, h[3] = {1.0 / 32, 1.0 / 32, 0};
+    int n = fx_box(s, mat, c, h, 4, NULL);
+    CHECK(n == 4);
+    double y0 = 0;
+    for (int i = 0; i < n; i++) y0 += pcold(&s->ps, PC_X)[3 * i + 1] / n;
+    hearth_error err;
+    const double times[] = {0.08, 0.1};
+    double worst = 0;
+    for (int k = 0; k < 2; k++) {
+        CHECK(hearth_scene_advance(s, times[k], &err) == HEARTH_OK);
+        double y = 0;
+        for (int i = 0; i < n; i++) y += pcold(&s->ps, PC_X)[3 * i + 1] / n;
+        const double exact = 0.5 * 9.81 * times[k] * times[k];
+        worst = fmax(worst, fabs((y0 - y) - exact) / exact);
+    }
+    printf("  worst relative error of the fall distance: %.3g\n", worst);
+    CHECK(worst <= 1e-6);
+    hearth_set_threads(0);
+    hearth_scene_destroy(s);
+}
+
+/* Vibrating bar (Bardenhagen 2002): L 25, E 100, rho 1, nu 0, fixed at x = 0,
+ * v0 = 0.1 sin(pi x / 2L). The centre-of-mass velocity oscillates with period
+ * 4L/c = 10 s and amplitude 0.2/pi = 0.063662. */
+TEST(vibrating_bar) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.5;
+    d.lo[0] = -3;
+    d.hi[0] = 30;
+    d.lo[1] = 0;
+    d.hi[1] = 5;
+    d.gravity[1] = 0;
+    d.cfl = 0.2;
+    hearth_scene *s = fx_scene_def(&d);
+    int mat = fx_elastic(s, 100, 0.0, 1);
+    const double Lb = 25, c[3] = {12.5, 2.5, 0}, h[3] = {12.5, 0.5, 0};
+    int n = fx_box(s, mat, c, h, 4, NULL);
+    CHECK(n == 50 * 2 * 4);
+    for (int i = 0; i < n; i++) {
+        double x = pcold(&s->ps, PC_X)[3 * i];
+        pcold(&s->ps, PC_V)[3 * i] = 0.1 * sin(PI * x / (2 * Lb));
+        pcold(&s->ps, PC_C)[0 + 9 * i] = 0.1 * PI / (2 * Lb) * cos(PI * x / (2 * Lb));
+    }
+    s->max_speed = 0.1;
+    const double p[3] = {0, 0, 0}, nrm[3] = {1, 0, 0};
+    hearth_shape *wall = hearth_shape_plane(p, nrm);
+    hearth_collider_def cd = hearth_default_collider_def();
+    cd.shape = wall;
+    cd.mode = HEARTH_STICKY;
+    hearth_error err;
+    CHECK(hearth_scene_add_collider(s, &cd, &err) == 0);
+    hearth_shape_free(wall);
+    /* zero crossings with hysteresis: small high-frequency ripples near zero
+     * must not count, so a crossing is confirmed once |v| passes 0.01 on the
+     * other side, and dated at the last sign change before that */
+    double prev_v = 0.063662, prev_t = 0, peak = 0, worst_amp = 0, last_change = 0;
+    double crossings[16];
+    int nc = 0, npeaks = 0, sign = 1;
+    while (s->t < 50.0) {
+        if (hearth_scene_step(s, 1, &err) != HEARTH_OK) {
+            fprintf(stderr, "%s\n", err.msg);
+            test_failures++;
+            break;
+        }
+        double vc = 0, m = 0;
+        for (int i = 0; i < n; i++) {
+            vc += pcold(&s->ps, PC_MASS)[i] * pcold(&s->ps, PC_V)[3 * i];
+            m += pcold(&s->ps, PC_MASS)[i];
+        }
+        vc /= m;
+        if ((prev_v > 0) != (vc > 0)) last_change = prev_t + (s->t - prev_t) * prev_v / (prev_v - vc);
+        if (vc * sign < -0.01 && nc < 16) {
+            worst_amp = fmax(worst_amp, fabs(fabs(peak) / 0.063662 - 1));
+            npeaks++;
+            crossings[nc++] = last_change;
+            sign = -sign;
+            peak = 0;
+        }
+        if (fabs(vc) > fabs(peak)) peak = vc;
+        prev_v = vc;
+        prev_t = s->t;
+    }
+    CHECK(nc >= 10);
+    /* successive crossings are half a period apart */
+    double period = nc >= 2 ? 2 * (crossings[nc - 1] - crossings[0]) / (nc - 1) : 0;
+    printf("  %d particles, %ld steps, period %.5f s (exact 10), worst peak amplitude error %.3g%% over %d peaks\n", n,
+           s->step, period, 100 * worst_amp, npeaks);
+    CHECK(fabs(period / 10.0 - 1) <= 0.01);
+    CHECK(worst_amp <= 0.02);
+    hearth_scene_destroy(s);
+}
+
+/* A mixed 3D scene: a block and a ball of two materials hitting a sphere and a plane. */
+static hearth_scene *busy_scene(void) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dim = 3;
+    d.dx = 1.0 / 32;
+    d.wall = HEARTH_SEPARATE;
+    d.wall_friction = 0.3;
+    hearth_scene *s = fx_scene_def(&d);
+    int a = fx_elastic(s, 5e4, 0.3, 1000);
+    const char *nn[] = {"bulk", "viscosity"};
+    const double nv[] = {1e5, 0.5};
+    hearth_error err;
+    int b = hearth_scene_add_material(s, "newtonian", nn, nv, 2, &err);
+    const double c1[3] = {0.4, 0.5, 0.5}, h1[3] = {0.12, 0.1, 0.1}, v1[3] = {1, -1, 0};
+    fx_box(s, a, c1, h1, 8, v1);
+    const double c2[3] = {0.65, 0.6, 0.45};
+    hearth_shape *ball = hearth_shape_sphere(c2, 0.1);
+    hearth_scene_seed_shape(s, b, ball, 8, 0.7, NULL, &err);
+    hearth_shape_free(ball);
+    const double sc[3] = {0.5, 0.2, 0.5};
+    hearth_shape *sph = hearth_shape_sphere(sc, 0.12);
+    hearth_collider_def cd = hearth_default_collider_def();
+    cd.shape = sph;
+    cd.mode = HEARTH_SLIP;
+    cd.friction = 0.2;
+    cd.velocity[0] = 0.1;
+    cd.omega[1] = 2.0;
+    memcpy(cd.pivot, sc, sizeof sc);
+    hearth_scene_add_collider(s, &cd, &err);
+    hearth_shape_free(sph);
+    return s;
+}
+
+/* 1 vs 2 threads: bit-identical particle states after 100 steps. */
+TEST(determinism_threads) {
+    uint64_t h[2];
+    for (int t = 1; t <= 2; t++) {
+        hearth_set_threads(t);
+        hearth_scene *s = busy_scene();
+        hearth_error err;
+        CHECK(hearth_scene_step(s, 100, &err) == HEARTH_OK);
+        h[t - 1] = hearth_scene_hash(s);
+        hearth_stats st;
+        hearth_scene_stats(s, &st);
+        printf("  %d thread(s): %d particles, t = %.5g s, hash %016llx\n", t, st.particles, st.t, (unsigned long long)h[t - 1]);
+        hearth_scene_destroy(s);
+    }
+    hearth_set_threads(0);
+    CHECK(h[0] == h[1]);
+}
+
+/* A checkpoint restore continues bit-identically. */
+TEST(checkpoint_restore) {
+    hearth_error err;
+    hearth_scene *s = busy_scene();
+    CHECK(hearth_scene_step(s, 40, &err) == HEARTH_OK);
+    char path[] = "/tmp/hearth_ckpt_XXXXXX";
+    int fd = mkstemp(path);
+    CHECK(fd >= 0);
+    close(fd);
+    CHECK(hearth_scene_save(s, path, &err) == HEARTH_OK);
+    CHECK(hearth_scene_step(s, 60, &err) == HEARTH_OK);
+    uint64_t want = hearth_scene_hash(s);
+    hearth_scene *r = hearth_scene_load(path, &err);
+    CHECK(r != NULL);
+    if (r) {
+        CHECK(hearth_scene_step(r, 60, &err) == HEARTH_OK);
+        hearth_stats a, b;
+        hearth_scene_stats(s, &a);
+        hearth_scene_stats(r, &b);
+        CHECK(a.t == b.t && a.step == b.step);
+        CHECK(hearth_scene_hash(r) == want);
+        hearth_scene_destroy(r);
+    }
+    /* a damaged file is refused with a reason */
+    FILE *f = fopen(path, "r+b");
+    fseek(f, -100, SEEK_END);
+    fputc(0x5a, f);
+    fclose(f);
+    r = hearth_scene_load(path, &err);
+    CHECK(r == NULL);
+    CHECK_STR_CONTAINS(err.msg, "checksum");
+    remove(path);
+    r = hearth_scene_load("/nonexistent/x.ckpt", &err);
+    CHECK(r == NULL && err.code == HEARTH_ERR_IO);
+    hearth_scene_destroy(s);
+}
+
+/* A NaN from a plugin is caught with the particle and material named. */
+TEST(guard_nan_plugin) {
+    hearth_scene *s = fx_scene(2, 1.0 / 32, 0, 1);
+    int a = fx_elastic(s, 1e4, 0.3, 1000);
+    hearth_error err;
+    const char *nm[] = {"after"};
+    const double nv[] = {5};
+    int b = hearth_scene_add_material(s, fx_test_plugin("nan_after"), nm, nv, 1, &err);
+    CHECK(b == 1);
+    const double c[3] = {0.5, 0.3, 0}, h[3] = {0.1, 0.1, 0};
+    fx_box(s, a, c, h, 4, NULL);
+    const double x[3] = {0.5, 0.41, 0};
+    CHECK(hearth_scene_add_particles(s, b, 1, x, NULL, 1e-4, &err) == 1);
+    const int id = s->next_id - 1;
+    hearth_status st = hearth_scene_step(s, 20, &err);
+    CHECK(st == HEARTH_ERR_GUARD);
+    char want[64];
+    snprintf(want, sizeof want, "(id %d)", id);
+    CHECK_STR_CONTAINS(err.msg, want);
+    CHECK_STR_CONTAINS(err.msg, "material 'nan_after'");
+    CHECK_STR_CONTAINS(err.msg, "stress is NaN");
+    CHECK_STR_CONTAINS(err.msg, "step 6");
+    hearth_stats stats;
+    hearth_scene_stats(s, &stats);
+    CHECK(stats.guard == HEARTH_GUARD_STOPPED);
+    printf("  %s\n", err.msg);
+    hearth_scene_destroy(s);
+}
+
+/* A plugin's error code is reported with the plugin's own text. */
+TEST(guard_plugin_error) {
+    hearth_scene *s = fx_scene(2, 1.0 / 32, 0, 1);
+    hearth_error err;
+    int m = hearth_scene_add_material(s, fx_test_plugin("err_code"), NULL, NULL, 0, &err);
+    CHECK(m == 0);
+    const double c[3] = {0.5, 0.3, 0}, h[3] = {0.05, 0.05, 0};
+    fx_box(s, m, c, h, 4, NULL);
+    CHECK(hearth_scene_step(s, 1, &err) == HEARTH_ERR_GUARD);
+    CHECK_STR_CONTAINS(err.msg, "code 7");
+    CHECK_STR_CONTAINS(err.msg, "return mapping did not converge");
+    printf("  %s\n", err.msg);
+    hearth_scene_destroy(s);
+}
+
+/* cfl = 4 breaks the wave CFL condition: the guard stops with that diagnosis,
+ * and with the rollback policy the run completes by halving dt. */
+TEST(guard_cfl_and_rollback) {
+    for (int policy = 0; policy <= 1; policy++) {
+        hearth_scene_def d = hearth_default_scene_def();
+        d.dx = 1.0 / 32;
+        d.cfl = 4.0;
+        d.guard = policy ? HEARTH_GUARD_ROLLBACK : HEARTH_GUARD_STOP;
+        hearth_scene *s = fx_scene_def(&d);
+        int m = fx_elastic(s, 1e5, 0.3, 1000);
+        const double c[3] = {0.5, 0.3, 0}, h[3] = {0.1, 0.1, 0};
+        fx_box(s, m, c, h, 4, NULL);
+        hearth_error err;
+        hearth_status st = hearth_scene_step(s, 30, &err);
+        hearth_stats stats;
+        hearth_scene_stats(s, &stats);
+        if (!policy) {
+            CHECK(st == HEARTH_ERR_GUARD);
+            CHECK_STR_CONTAINS(err.msg, "CFL violated");
+            printf("  stop: %s\n", err.msg);
+        } else {
+            CHECK(st == HEARTH_OK);
+            CHECK(stats.rollbacks > 0);
+            CHECK(stats.guard == HEARTH_GUARD_ROLLED_BACK);
+            CHECK(stats.cfl <= 1.0 + 1e-9);
+            printf("  rollback: 30 steps done with %d rollbacks, last cfl %.3g\n", stats.rollbacks, stats.cfl);
+        }
+        hearth_scene_destroy(s);
+    }
+}
+
+/* A block resting on a plane collider stays on it; a pressing collider squashes it. */
+TEST(colliders_contact) {
+    hearth_scene *s = fx_scene(2, 1.0 / 64, 0, 1);
+    int m = fx_elastic(s, 2e4, 0.3, 1000);
+    const double c[3] = {0.5, 0.35, 0}, h[3] = {0.1, 0.1, 0};
+    fx_box(s, m, c, h, 4, NULL);
+    const double p0[3] = {0, 0.2, 0}, up[3] = {0.0, 1, 0};
+    hearth_shape *floor_ = hearth_shape_plane(p0, up);
+    hearth_collider_def cd = hearth_default_collider_def();
+    cd.shape = floor_;
+    cd.mode = HEARTH_SEPARATE;
+    hearth_error err;
+    CHECK(hearth_scene_add_collider(s, &cd, &err) == 0);
+    hearth_shape_free(floor_);
+    CHECK(hearth_scene_advance(s, 0.4, &err) == HEARTH_OK);
+    double ymin = 1, ymax = 0;
+    for (int i = 0; i < s->ps.n; i++) {
+        ymin = fmin(ymin, pcold(&s->ps, PC_X)[3 * i + 1]);
+        ymax = fmax(ymax, pcold(&s->ps, PC_X)[3 * i + 1]);
+    }
+    printf("  resting block: lowest particle at y = %.4f (floor 0.2), top %.4f\n", ymin, ymax);
+    CHECK(ymin > 0.2 - 0.25 / 64);
+    /* a press whose face starts at 0.42 and moves down at 0.2 m/s for 0.5 s ends at 0.32 */
+    const double pc[3] = {0.5, 0.45, 0}, ph[3] = {0.3, 0.03, 0};
+    hearth_shape *press = hearth_shape_box(pc, ph);
+    cd.shape = press;
+    cd.mode = HEARTH_STICKY;
+    cd.velocity[1] = -0.2;
+    CHECK(hearth_scene_add_collider(s, &cd, &err) == 1);
+    hearth_shape_free(press);
+    CHECK(hearth_scene_advance(s, 0.9, &err) == HEARTH_OK);
+    double ytop = 0;
+    for (int i = 0; i < s->ps.n; i++) ytop = fmax(ytop, pcold(&s->ps, PC_X)[3 * i + 1]);
+    printf("  pressed block: top at y = %.4f (press face at %.4f)\n", ytop, 0.32);
+    CHECK(ytop < ymax - 0.03);
+    CHECK(ytop < 0.32 + 1.5 / 64);
+    hearth_scene_destroy(s);
+}
+
+/* Probes: a block at rest has its own density, J = 1 and no stress; outside is NaN. */
+TEST(probe_fields) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 32;
+    d.gravity[1] = 0;
+    hearth_scene *s = fx_scene_def(&d);
+    int m = fx_elastic(s, 1e4, 0.3, 800);
+    const double c[3] = {0.5, 0.5, 0}, h[3] = {0.2, 0.2, 0}, v[3] = {0.3, 0, 0};
+    fx_box(s, m, c, h, 4, v);
+    hearth_error err;
+    double val[3];
+    CHECK(hearth_probe_point(s, "density", c, val, &err) == HEARTH_OK);
+    CHECK_NEAR(val[0], 800, 1e-9);
+    CHECK(hearth_probe_point(s, "J", c, val, &err) == HEARTH_OK);
+    CHECK_NEAR(val[0], 1, 1e-12);
+    CHECK(hearth_probe_point(s, "pressure", c, val, &err) == HEARTH_OK);
+    CHECK_NEAR(val[0], 0, 1e-9);
+    CHECK(hearth_probe_point(s, "velocity", c, val, &err) == HEARTH_OK);
+    CHECK_NEAR(val[0], 0.3, 1e-12);
+    CHECK_NEAR(val[1], 0, 1e-12);
+    const double out[3] = {0.1, 0.1, 0};
+    CHECK(hearth_probe_point(s, "speed", out, val, &err) == HEARTH_OK);
+    CHECK(isnan(val[0]));
+    CHECK(hearth_probe_point(s, "temperature", c, val, &err) == HEARTH_ERR_PARAM);
+    CHECK_STR_CONTAINS(err.msg, "unknown field 'temperature'");
+    double line[11];
+    const double a[3] = {0, 0.5, 0}, b[3] = {1, 0.5, 0};
+    CHECK(hearth_probe_line(s, "density", a, b, 11, line, &err) == HEARTH_OK);
+    CHECK(isnan(line[0]) && isnan(line[10]));
+    CHECK_NEAR(line[5], 800, 1e-9);
+    double slice[40 * 30];
+    CHECK(hearth_probe_slice(s, "velocity", 2, 0, 40, 30, slice, &err) == HEARTH_ERR_PARAM);
+    CHECK_STR_CONTAINS(err.msg, "velocity_x");
+    CHECK(hearth_probe_slice(s, "velocity_x", 2, 0, 40, 30, slice, &err) == HEARTH_OK);
+    CHECK(isnan(slice[0]));
+    CHECK_NEAR(slice[15 * 40 + 20], 0.3, 1e-12);
+    /* compressing the block gives a positive pressure and J < 1 */
+    for (int i = 0; i < s->ps.n; i++) {
+        double *F = pcold(&s->ps, PC_F) + 9 * i;
+        F[0] = F[4] = 0.95;
+    }
+    CHECK(hearth_probe_point(s, "pressure", c, val, &err) == HEARTH_OK);
+    CHECK(val[0] > 0);
+    CHECK(hearth_probe_point(s, "von_mises", c, val, &err) == HEARTH_OK);
+    CHECK(val[0] >= 0 && isfinite(val[0]));
+    hearth_scene_destroy(s);
+}
+
+/* Bad input gets a message naming the parameter and the valid range. */
+TEST(scene_bad_input) {
+    hearth_error err;
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dim = 4;
+    CHECK(hearth_scene_create(&d, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "dim = 4");
+    d = hearth_default_scene_def();
+    d.cfl = 0;
+    CHECK(hearth_scene_create(&d, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "(0, 4]");
+    hearth_scene *s = fx_scene(2, 0.05, 0, 1);
+    const char *nm[] = {"E", "nu", "densty"};
+    const double bad[] = {1e4, 0.3, 1000};
+    CHECK(hearth_scene_add_material(s, "elastic", nm, bad, 3, &err) < 0);
+    CHECK_STR_CONTAINS(err.msg, "did you mean 'density'");
+    const char *nm2[] = {"nu"};
+    const double bad2[] = {0.6};
+    CHECK(hearth_scene_add_material(s, "elastic", nm2, bad2, 1, &err) < 0);
+    CHECK_STR_CONTAINS(err.msg, "[0, 0.499]");
+    int m = fx_elastic(s, 1e4, 0.3, 1000);
+    const double x[3] = {1.5, 0.5, 0};
+    CHECK(hearth_scene_add_particles(s, m, 1, x, NULL, 1e-4, &err) < 0);
+    CHECK_STR_CONTAINS(err.msg, "x = 1.5");
+    hearth_scene_destroy(s);
+}
+
+/* Every allocation on the way to a stepping scene may fail; each failure is
+ * reported, nothing crashes and nothing leaks. */
+TEST(alloc_failure_paths) {
+    const size_t base = hearth_bytes_allocated();
+    int failures = 0;
+    for (long k = 0; k < 200; k++) {
+        mem_fail_after(k);
+        hearth_error err = {0};
+        hearth_scene *s = hearth_scene_create(NULL, &err);
+        int ok = s != NULL;
+        int m = ok ? hearth_scene_add_material(s, "elastic", NULL, NULL, 0, &err) : -1;
+        ok = ok && m >= 0;
+        const double c[3] = {0.5, 0.5, 0}, h[3] = {0.1, 0.1, 0};
+        hearth_shape *b = hearth_shape_box(c, h);
+        ok = ok && b && hearth_scene_seed_shape(s, m, b, 4, 0.5, NULL, &err) > 0;
+        hearth_shape_free(b);
+        ok = ok && hearth_scene_step(s, 2, &err) == HEARTH_OK;
+        mem_fail_after(-1);
+        if (!ok) {
+            failures++;
+            CHECK(err.code == HEARTH_ERR_NOMEM || b == NULL);
+        }
+        hearth_scene_destroy(s);
+        if (hearth_bytes_allocated() > base + 4096) /* the plugin cache may keep its first entry */
+            printf("  injected failure %ld left %zu bytes counted\n", k, hearth_bytes_allocated() - base);
+        CHECK(hearth_bytes_allocated() <= base + 4096);
+        if (ok) break;
+    }
+    printf("  %d injected failures reported cleanly before a run succeeded\n", failures);
+    CHECK(failures > 5);
+}
+
+TEST_MAIN(T(bspline_weights), T(transfer_conservation_2d), T(transfer_conservation_3d), T(rotating_disc), T(free_fall),
+          T(vibrating_bar), T(determinism_threads), T(checkpoint_restore), T(guard_nan_plugin), T(guard_plugin_error),
+          T(guard_cfl_and_rollback), T(colliders_contact), T(probe_fields), T(scene_bad_input), T(alloc_failure_paths))

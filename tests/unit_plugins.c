@@ -1,0 +1,335 @@
+/* unit_plugins.c: the plugin loader and the conformance battery.
+ *
+ * Fixture plugins (tests/plugins/, each built as hearth_<name>.so) are found in
+ * $HEARTH_TEST_PLUGIN_DIR; the real plugins (elastic, newtonian) through the
+ * ordinary search path, $HEARTH_PLUGIN_PATH. Every refusal is asserted on the
+ * key words of its message: the message is the feature. */
+#ifndef _XOPEN_SOURCE
+#define _XOPEN_SOURCE 700 /* mkdtemp */
+#endif
+#include <stddef.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include "alloc.h"
+#include "hearth/hearth.h"
+#include "plugins.h"
+#include "test.h"
+
+/* $HEARTH_TEST_PLUGIN_DIR/hearth_<stem>.so into buf; NULL (and a failure) when unset. */
+static const char *fixture(char *buf, size_t n, const char *stem) {
+    const char *dir = getenv("HEARTH_TEST_PLUGIN_DIR");
+    if (!dir || !*dir) {
+        fprintf(stderr, "HEARTH_TEST_PLUGIN_DIR is not set: point it at the built test fixtures\n");
+        test_failures++;
+        return NULL;
+    }
+    snprintf(buf, n, "%s/hearth_%s.so", dir, stem);
+    return buf;
+}
+
+/* Load a fixture expected to be refused; checks the common parts of the refusal. */
+static void load_refused(const char *stem, hearth_error *err) {
+    char path[1024];
+    if (!fixture(path, sizeof path, stem)) return;
+    const hearth_plugin *pl = hearth_plugin_load(path, err);
+    CHECK(pl == NULL);
+    CHECK(err->code == HEARTH_ERR_PLUGIN);
+    CHECK(strncmp(err->msg, path, strlen(path)) == 0); /* starts with the plugin's path */
+}
+
+TEST(plugin_missing_file) {
+    hearth_error err = {0};
+    CHECK(hearth_plugin_load("no_such_material", &err) == NULL);
+    CHECK(err.code == HEARTH_ERR_PLUGIN);
+    CHECK_STR_CONTAINS(err.msg, "no_such_material: plugin not found");
+    CHECK_STR_CONTAINS(err.msg, "hearth_no_such_material.so");
+    CHECK_STR_CONTAINS(err.msg, "HEARTH_PLUGIN_PATH");
+    /* the folders searched are listed, $HEARTH_PLUGIN_PATH's first one among them */
+    const char *env = getenv("HEARTH_PLUGIN_PATH");
+    if (env && *env && *env != ':') {
+        char first[512];
+        snprintf(first, sizeof first, "%.*s", (int)strcspn(env, ":"), env);
+        CHECK_STR_CONTAINS(err.msg, first);
+    }
+    /* a folder added for a scene is searched (and listed) too */
+    hearth_plugin_path_add("/nonexistent/hearth_scene_dir");
+    CHECK(hearth_plugin_load("no_such_material", &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "/nonexistent/hearth_scene_dir");
+    /* a path (contains '/') is not searched for */
+    CHECK(hearth_plugin_load("/nonexistent/dir/hearth_x.so", &err) == NULL);
+    CHECK(err.code == HEARTH_ERR_PLUGIN);
+    CHECK_STR_CONTAINS(err.msg, "/nonexistent/dir/hearth_x.so: plugin file not found");
+    /* "foo.so" without a '/' is a name; the message says how to give a file */
+    CHECK(hearth_plugin_load("foo.so", &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "(for this file: ./foo.so)");
+    CHECK(hearth_plugin_load("", &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "plugin name is empty");
+}
+
+TEST(plugin_not_shared_object) {
+    const char *tmp = getenv("TMPDIR");
+    char dir[512], path[600];
+    snprintf(dir, sizeof dir, "%s/hearth_test_XXXXXX", tmp && *tmp ? tmp : "/tmp");
+    if (!mkdtemp(dir)) {
+        CHECK(!"mkdtemp failed");
+        return;
+    }
+    snprintf(path, sizeof path, "%s/hearth_garbage.so", dir);
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (f) {
+        fputs("this is a text file, not a shared object\n", f);
+        fclose(f);
+        hearth_error err = {0};
+        CHECK(hearth_plugin_load(path, &err) == NULL);
+        CHECK(err.code == HEARTH_ERR_PLUGIN);
+        CHECK(strncmp(err.msg, path, strlen(path)) == 0);
+        CHECK_STR_CONTAINS(err.msg, "not loadable as a shared object");
+        CHECK_STR_CONTAINS(err.msg, "-shared -fPIC");
+        remove(path);
+    }
+    rmdir(dir);
+}
+
+TEST(plugin_no_entry) {
+    hearth_error err = {0};
+    load_refused("bad_nosym", &err);
+    CHECK_STR_CONTAINS(err.msg, "not a hearth plugin");
+    CHECK_STR_CONTAINS(err.msg, "no symbol 'hearth_material_v1'");
+}
+
+TEST(plugin_wrong_abi) {
+    hearth_error err = {0};
+    load_refused("bad_abi", &err);
+    CHECK_STR_CONTAINS(err.msg, "built for material ABI 99, this hearth expects 1");
+    CHECK_STR_CONTAINS(err.msg, "rebuild against this hearth's <hearth/material.h>");
+}
+
+TEST(plugin_null_callback) {
+    hearth_error err = {0};
+    load_refused("bad_nullcb", &err);
+    CHECK_STR_CONTAINS(err.msg, "required callback 'stress'");
+    CHECK_STR_CONTAINS(err.msg, "NULL");
+}
+
+TEST(plugin_bad_default) {
+    hearth_error err = {0};
+    load_refused("bad_default", &err);
+    CHECK_STR_CONTAINS(err.msg, "parameter 'viscosity' default 5 Pa s");
+    CHECK_STR_CONTAINS(err.msg, "outside its own range [0, 1] Pa s");
+}
+
+typedef struct seen_plugins {
+    int elastic, newtonian, calls;
+} seen_plugins;
+
+static void note_plugin(void *ud, const char *name, const char *path) {
+    seen_plugins *s = ud;
+    s->calls++;
+    if (strcmp(name, "elastic") == 0) {
+        s->elastic++;
+        CHECK_STR_CONTAINS(path, "/hearth_elastic.so");
+    }
+    if (strcmp(name, "newtonian") == 0) {
+        s->newtonian++;
+        CHECK_STR_CONTAINS(path, "/hearth_newtonian.so");
+    }
+}
+
+TEST(plugin_load_cached) {
+    hearth_error err = {0};
+    const hearth_plugin *a = hearth_plugin_load("elastic", &err);
+    if (!a) fprintf(stderr, "%s\n", err.msg);
+    CHECK(a != NULL);
+    if (!a) return;
+    CHECK(hearth_plugin_load("elastic", &err) == a);
+    CHECK(hearth_plugin_load(hearth_plugin_file(a), &err) == a); /* by path: same realpath, same handle */
+    CHECK(strcmp(hearth_plugin_material(a)->name, "elastic") == 0);
+    CHECK(hearth_plugin_file(a)[0] == '/');
+    seen_plugins s = {0};
+    int n = hearth_plugin_each(note_plugin, &s);
+    CHECK(n == s.calls);
+    CHECK(s.elastic == 1); /* listed once even if the folder is on the path twice */
+    CHECK(s.newtonian == 1);
+}
+
+enum { N_CHECKS = 5 };
+static const char *const check_names[N_CHECKS] = {"rest", "symmetric", "frame_indifference", "extremes",
+                                                  "wave_speed"};
+
+typedef struct report {
+    int seen[N_CHECKS], passed[N_CHECKS], other;
+    char detail[N_CHECKS][512];
+} report;
+
+static void note_check(void *ud, const char *check, int passed, const char *detail) {
+    report *r = ud;
+    printf("    %-20s %s  %s\n", check, passed ? "pass" : "FAIL", detail);
+    for (int i = 0; i < N_CHECKS; i++)
+        if (strcmp(check, check_names[i]) == 0) {
+            r->seen[i]++;
+            r->passed[i] = passed;
+            snprintf(r->detail[i], sizeof r->detail[i], "%s", detail);
+            return;
+        }
+    r->other++;
+}
+
+static int run_check(const char *path, report *r) {
+    hearth_error err = {0};
+    memset(r, 0, sizeof *r);
+    int n = hearth_plugin_check(path, note_check, r, &err);
+    if (n < 0) fprintf(stderr, "%s\n", err.msg);
+    for (int i = 0; i < N_CHECKS; i++) CHECK(r->seen[i] == 1);
+    CHECK(r->other == 0);
+    return n;
+}
+
+TEST(plugin_check_builtin) {
+    const char *names[] = {"elastic", "newtonian"};
+    for (int k = 0; k < 2; k++) {
+        hearth_error err = {0};
+        const hearth_plugin *pl = hearth_plugin_load(names[k], &err);
+        if (!pl) fprintf(stderr, "%s\n", err.msg);
+        CHECK(pl != NULL);
+        if (!pl) continue;
+        report r;
+        CHECK(run_check(hearth_plugin_file(pl), &r) == 0);
+        CHECK_STR_CONTAINS(r.detail[4], "sqrt(M/rho)");
+    }
+}
+
+TEST(plugin_check_catches_asym) {
+    char path[1024];
+    if (!fixture(path, sizeof path, "asym")) return;
+    report r;
+    CHECK(run_check(path, &r) >= 1);
+    CHECK(r.passed[0]);  /* rest: k (F - I) vanishes at F = I */
+    CHECK(!r.passed[1]); /* symmetric */
+    CHECK_STR_CONTAINS(r.detail[1], "|tau - tau^T|");
+}
+
+/* Not in the required list: the check's own failure paths. A stress code
+ * that describe_error explains is accepted at extremes (a law may refuse an
+ * extreme state), while silent NaN is not. */
+TEST(plugin_check_reports_codes) {
+    char path[1024];
+    report r;
+    if (!fixture(path, sizeof path, "err_code")) return;
+    CHECK(run_check(path, &r) > 0);
+    CHECK(!r.passed[0]);
+    CHECK_STR_CONTAINS(r.detail[0], "code 7 at rest: err_code test plugin: return mapping did not converge");
+    CHECK(r.passed[3]);
+    CHECK_STR_CONTAINS(r.detail[3], "return mapping did not converge");
+    fixture(path, sizeof path, "nan_after");
+    CHECK(run_check(path, &r) > 0);
+    CHECK(r.passed[0]); /* one step: still below `after` = 3 */
+    CHECK(!r.passed[3]);
+    CHECK_STR_CONTAINS(r.detail[3], "is not finite");
+    hearth_error err = {0};
+    CHECK(hearth_plugin_check("/nonexistent/hearth_x.so", note_check, &r, &err) == -1);
+    CHECK_STR_CONTAINS(err.msg, "not found");
+}
+
+/* Every allocation of a fresh load fails in turn; each must come back as
+ * HEARTH_ERR_NOMEM with nothing cached, until the load succeeds. */
+TEST(plugin_load_nomem) {
+    char path[1024];
+    if (!fixture(path, sizeof path, "err_code")) return;
+    hearth_error err = {0};
+    const hearth_plugin *pl = NULL;
+    for (long n = 0; n < 20 && !pl; n++) {
+        mem_fail_after(n);
+        pl = hearth_plugin_load(path, &err);
+        mem_fail_after(-1);
+        if (!pl) CHECK(err.code == HEARTH_ERR_NOMEM);
+    }
+    CHECK(pl != NULL);
+    CHECK(hearth_plugin_load(path, &err) == pl);
+}
+
+/* ---- descriptor rules, without a shared object ------------------------- */
+
+static void d_init(const double *p, double *s) {
+    (void)p;
+    (void)s;
+}
+static int d_stress(hearth_point *pt, double tau[9]) {
+    (void)pt;
+    memset(tau, 0, 9 * sizeof *tau);
+    return 0;
+}
+static double d_wave(const double *p, const double *s) {
+    (void)p;
+    (void)s;
+    return 1;
+}
+static const char *d_describe(int code) {
+    (void)code;
+    return "";
+}
+static double d_plastic_J(const double *p, const double *s) {
+    (void)p;
+    (void)s;
+    return 1;
+}
+
+static hearth_param g_params[2];
+static hearth_material good(void) {
+    g_params[0] = (hearth_param){"density", "kg/m^3", NULL, 1000, 1, 1e4};
+    g_params[1] = (hearth_param){"E", "Pa", "stiffness", 1e4, 1, 1e6};
+    return (hearth_material){HEARTH_MATERIAL_ABI, sizeof(hearth_material), sizeof(double), "good", NULL,
+                             g_params, 2, 0, 0, d_init, d_stress, d_wave, NULL, d_describe, d_plastic_J};
+}
+
+static void refused(const hearth_material *m, const char *words) {
+    hearth_error err = {0};
+    plugin_desc d;
+    CHECK(plugin_describe("x.so", m, &d, &err) != HEARTH_OK);
+    CHECK(strncmp(err.msg, "x.so: ", 6) == 0);
+    CHECK_STR_CONTAINS(err.msg, words);
+}
+
+TEST(plugin_descriptor_rules) {
+    hearth_material m = good();
+    hearth_error err = {0};
+    plugin_desc d;
+    CHECK(plugin_describe("x.so", &m, &d, &err) == HEARTH_OK);
+    CHECK(d.mat.plastic_J == d_plastic_J && d.density == 0);
+    CHECK(d.mat.summary && d.params[0].help && d.mat.params == d.params); /* NULL text made "" */
+    plugin_desc_free(&d);
+    /* a plugin built before plastic_J existed: the field is not read */
+    m.struct_size = (int)(offsetof(hearth_material, plastic_J));
+    CHECK(plugin_describe("x.so", &m, &d, &err) == HEARTH_OK);
+    CHECK(d.mat.plastic_J == NULL);
+    plugin_desc_free(&d);
+
+    refused(NULL, "returned NULL");
+    m = good(), m.struct_size = 16, refused(&m, "struct_size is 16 bytes, smaller than");
+    m = good(), m.real_size = 4, refused(&m, "built with 4-byte reals");
+    m = good(), m.name = NULL, refused(&m, "name is NULL");
+    m = good(), m.name = "Bad-Name", refused(&m, "\"Bad-Name\" is not an identifier");
+    m = good(), m.nparams = -1, refused(&m, "negative nparams");
+    m = good(), m.params = NULL, refused(&m, "params is NULL");
+    m = good(), m.state_size = -2, refused(&m, "negative state_size");
+    m = good(), m.needs = 1u << 9, refused(&m, "unknown to this hearth");
+    m = good(), m.init = NULL, refused(&m, "callback 'init'");
+    m = good(), m.wave_speed = NULL, refused(&m, "callback 'wave_speed'");
+    m = good(), m.describe_error = NULL, refused(&m, "callback 'describe_error'");
+    m = good(), g_params[1].name = NULL, refused(&m, "parameter 1 has a NULL name");
+    m = good(), g_params[1].name = "2x", refused(&m, "invalid name \"2x\"");
+    m = good(), g_params[1].unit = NULL, refused(&m, "'E' has a NULL unit");
+    m = good(), g_params[1].max = INFINITY, refused(&m, "'E' has non-finite bounds");
+    m = good(), g_params[1].min = 1e7, refused(&m, "'E' has min 1e+07 > max 1e+06 (Pa)");
+    m = good(), g_params[1].def = NAN, refused(&m, "'E' default nan Pa is outside its own range [1, 1e+06] Pa");
+    m = good(), g_params[1].name = "density", refused(&m, "duplicate parameter name 'density' (entries 0 and 1)");
+    m = good(), g_params[0].name = "rho", refused(&m, "no parameter named \"density\" (unit kg/m^3)");
+    m = good(), g_params[0].unit = "g/cm^3", refused(&m, "it must be \"kg/m^3\"");
+    m = good(), g_params[0].min = 0, refused(&m, "must be > 0");
+}
+
+TEST_MAIN(T(plugin_missing_file), T(plugin_not_shared_object), T(plugin_no_entry), T(plugin_wrong_abi),
+          T(plugin_null_callback), T(plugin_bad_default), T(plugin_load_cached), T(plugin_check_builtin),
+          T(plugin_check_catches_asym), T(plugin_check_reports_codes), T(plugin_load_nomem),
+          T(plugin_descriptor_rules))
