@@ -1,0 +1,45 @@
+# setup.sh: shared by scripts/hearth and scripts/test (sourced, not run).
+# Installs missing Debian packages, then configures and builds with meson.
+HEARTH_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+
+# Debian packages hearth needs, and how to tell each is there.
+hearth_missing_packages() {
+    local missing=()
+    command -v meson >/dev/null 2>&1 || missing+=(meson)
+    command -v ninja >/dev/null 2>&1 || missing+=(ninja-build)
+    command -v pkg-config >/dev/null 2>&1 || missing+=(pkg-config)
+    command -v cc >/dev/null 2>&1 || missing+=(gcc)
+    command -v python3 >/dev/null 2>&1 || missing+=(python3)
+    if command -v pkg-config >/dev/null 2>&1; then
+        pkg-config --exists lua5.4 || missing+=(liblua5.4-dev)
+        pkg-config --exists ncursesw || missing+=(libncurses-dev)
+        pkg-config --exists libpng || missing+=(libpng-dev)
+    else
+        missing+=(liblua5.4-dev libncurses-dev libpng-dev)
+    fi
+    echo "${missing[@]}"
+}
+
+hearth_install_deps() {
+    local extra=("$@") missing
+    missing=$(hearth_missing_packages)
+    for p in "${extra[@]}"; do
+        command -v "$p" >/dev/null 2>&1 || missing="$missing $p"
+    done
+    [ -z "${missing// /}" ] && return 0
+    echo "hearth: installing missing Debian packages:$missing" >&2
+    local sudo=""
+    [ "$(id -u)" -ne 0 ] && sudo="sudo"
+    $sudo apt-get update -qq >&2 || true
+    # shellcheck disable=SC2086
+    $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $missing >&2
+}
+
+# hearth_build DIR [meson options...]: configure once, then build.
+hearth_build() {
+    local dir="$1"; shift
+    if [ ! -f "$HEARTH_ROOT/$dir/build.ninja" ]; then
+        meson setup "$HEARTH_ROOT/$dir" "$HEARTH_ROOT" "$@" >&2
+    fi
+    ninja -C "$HEARTH_ROOT/$dir" >&2
+}
