@@ -51,12 +51,12 @@ int cmd_bench(int argc, char **argv) {
     const char *names[] = {"E", "nu", "density"};
     const double vals[] = {1e5, 0.3, 1000};
     int mat = s ? hearth_scene_add_material(s, "elastic", names, vals, 3, &err) : -1;
-    const double c[3] = {0.5, 0.5, 0.5}, h[3] = {0.3, 0.3, 0.3};
+    const double c[3] = {0.5, 0.5, dim == 3 ? 0.5 : 0.0}, h[3] = {0.3, 0.3, 0.3};
     hearth_shape *box = hearth_shape_box(c, h);
     int n = mat >= 0 && box ? hearth_scene_seed_shape(s, mat, box, dim == 3 ? 8 : 4, 0.5, NULL, &err) : -1;
     hearth_shape_free(box);
     if (n <= 0) {
-        fprintf(stderr, "hearth bench: %s\n", s ? err.msg : err.msg);
+        fprintf(stderr, "hearth bench: %s\n", n == 0 ? "the block holds no particles" : err.msg);
         hearth_scene_destroy(s);
         return 1;
     }

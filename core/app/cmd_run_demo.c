@@ -34,15 +34,15 @@ static hearth_scene *build_demo(hearth_error *err) {
     hearth_scene *s = hearth_scene_create(&d, err);
     if (!s) return NULL;
     const char *jn[] = {"E", "nu", "density"};
-    const double jv[] = {2e4, 0.3, 1000};
+    const double jv[] = {5e4, 0.3, 1000};
     const char *sn[] = {"bulk", "viscosity", "density"};
-    const double sv[] = {2e5, 2.0, 1400};
+    const double sv[] = {2e5, 20.0, 1400}; /* honey-like: about 10-20 Pa s */
     int jelly = hearth_scene_add_material(s, "elastic", jn, jv, 3, err);
     int syrup = jelly < 0 ? -1 : hearth_scene_add_material(s, "newtonian", sn, sv, 3, err);
     if (syrup < 0) goto fail;
 
     /* a cup at the bottom right and a ramp leading into it from the left */
-    const double base[3] = {0.68, 0.06, 0}, up[3] = {0, 1, 0};
+    const double base[3] = {0.68, 0.045, 0}, up[3] = {0, 1, 0}; /* the cup's floor rests on the oven floor */
     hearth_shape *cup = hearth_shape_container(base, up, 0.2, 0.22, 0.03, 0.03);
     const double rp[3] = {0.25, 0.25, 0}, rn[3] = {0.42, 1.0, 0};
     hearth_shape *plane = hearth_shape_plane(rp, rn);
@@ -63,7 +63,7 @@ static hearth_scene *build_demo(hearth_error *err) {
     hearth_shape_free(ramp);
     if (!ok) goto fail;
 
-    const double dc[3] = {0.68, 0.52, 0}, v0[3] = {0, -0.5, 0};
+    const double dc[3] = {0.68, 0.42, 0}, v0[3] = {0, 0, 0};
     hearth_shape *disc = hearth_shape_sphere(dc, 0.085);
     const double fc[3] = {0.16, 0.55, 0}, fh[3] = {0.1, 0.1, 0};
     hearth_shape *blob = hearth_shape_box(fc, fh);

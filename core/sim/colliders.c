@@ -112,3 +112,45 @@ void contact_apply(hearth_contact mode, double friction, const double n[3], cons
     double scale = t <= lim ? 0.0 : 1.0 - lim / t;
     for (int i = 0; i < 3; i++) v[i] = vb[i] + scale * vt[i];
 }
+
+void collider_update_bounds(collider *c, double margin) {
+    double lo[3], hi[3];
+    hearth_shape_bounds(c->shape, lo, hi);
+    int finite = 1;
+    for (int d = 0; d < 3; d++) finite = finite && isfinite(lo[d]) && isfinite(hi[d]);
+    if (!finite) {
+        for (int d = 0; d < 3; d++) {
+            c->blo[d] = -INFINITY;
+            c->bhi[d] = INFINITY;
+        }
+        return;
+    }
+    for (int d = 0; d < 3; d++) {
+        c->blo[d] = INFINITY;
+        c->bhi[d] = -INFINITY;
+    }
+    for (int k = 0; k < 8; k++) { /* the box of the 8 moved corners contains the moved shape */
+        const double xl[3] = {k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]};
+        const double rel[3] = {xl[0] - c->pivot0[0], xl[1] - c->pivot0[1], xl[2] - c->pivot0[2]};
+        double w[3];
+        t3_mulv(c->R, rel, w);
+        for (int d = 0; d < 3; d++) {
+            const double x = w[d] + c->pivot0[d] + c->offset[d];
+            c->blo[d] = fmin(c->blo[d], x - margin);
+            c->bhi[d] = fmax(c->bhi[d], x + margin);
+        }
+    }
+}
+
+int collider_project_particle(const collider *c, int dim, double x[3], double v[3]) {
+    double n[3];
+    const double phi = collider_sdf(c, x, n);
+    if (phi >= 0) return 0;
+    if (dim == 2) n[2] = 0;
+    for (int d = 0; d < dim; d++) x[d] -= phi * n[d];
+    double vb[3];
+    collider_velocity_at(c, x, vb);
+    if (dim == 2) vb[2] = 0;
+    contact_apply(c->mode, c->friction, n, vb, v);
+    return 1;
+}

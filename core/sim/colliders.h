@@ -18,6 +18,7 @@ typedef struct collider {
     double R[9];             /* rotation so far, row-major */
     hearth_motion_fn motion; /* optional; not owned */
     void *motion_ud;
+    double blo[3], bhi[3];   /* world bounding box at the current pose (collider_update_bounds) */
 } collider;
 
 /// Validate def and fill c (shape copied). On failure c holds nothing to free and
@@ -33,6 +34,17 @@ void collider_advance(collider *c, double dt);
 /// Signed distance (m, negative inside) at world point x; n (may be NULL) gets the
 /// outward unit normal in world space.
 double collider_sdf(const collider *c, const double x[3], double n[3]);
+/// Recompute the world bounding box (blo, bhi) of the current pose, grown by margin (m).
+/// Unbounded shapes (planes) get infinite boxes.
+void collider_update_bounds(collider *c, double margin);
+/// 1 when x lies inside the cached bounding box (cheap test before collider_sdf).
+static inline int collider_near(const collider *c, const double x[3]) {
+    return x[0] >= c->blo[0] && x[0] <= c->bhi[0] && x[1] >= c->blo[1] && x[1] <= c->bhi[1] && x[2] >= c->blo[2] &&
+           x[2] <= c->bhi[2];
+}
+/// Push a particle at x that is inside the collider back to its surface and
+/// apply the contact rule to its velocity v. dim 2 keeps z untouched. Returns 1 if it was inside.
+int collider_project_particle(const collider *c, int dim, double x[3], double v[3]);
 /// Rigid velocity of the collider's material at world point x (m/s).
 void collider_velocity_at(const collider *c, const double x[3], double v[3]);
 

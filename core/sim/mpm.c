@@ -274,7 +274,7 @@ void mpm_grid_update(hearth_scene *s, double dt) {
             }
             for (int c = 0; c < s->ncol; c++) {
                 double n[3];
-                if (collider_sdf(&s->cols[c], xi, n) > 0.0) continue;
+                if (!collider_near(&s->cols[c], xi) || collider_sdf(&s->cols[c], xi, n) > 0.0) continue;
                 double vb[3];
                 collider_velocity_at(&s->cols[c], xi, vb);
                 if (D == 2) n[2] = vb[2] = 0.0;
@@ -370,6 +370,11 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
             else if (x[d] > hi[d]) { x[d] = hi[d]; out = 1; }
         }
         ood += out;
+        /* Grid nodes past the middle of a thin wall see the far face's normal and
+         * let material through; a particle that ends inside a collider is put
+         * back on its surface (the usual particle-level safeguard). */
+        for (int c = 0; c < s->ncol; c++)
+            if (collider_near(&s->cols[c], x)) collider_project_particle(&s->cols[c], D, x, v);
         if (!all_finite(x, 3)) record_fail(pp, i, FAIL_X, 0);
         else if (!all_finite(v, 3)) record_fail(pp, i, FAIL_V, 0);
         else if (!all_finite(C, 9)) record_fail(pp, i, FAIL_C, 0);

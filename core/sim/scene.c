@@ -445,7 +445,10 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             if (st) return st;
         }
         const double speed_before = s->max_speed;
-        for (int c = 0; c < s->ncol; c++) collider_set_time(&s->cols[c], s->t);
+        for (int c = 0; c < s->ncol; c++) {
+            collider_set_time(&s->cols[c], s->t);
+            collider_update_bounds(&s->cols[c], 2.0 * s->def.dx);
+        }
         step_report rep;
         hearth_status st = mpm_step(s, dt, &rep, err);
         if (st) return st;

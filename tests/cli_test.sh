@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# cli_test.sh CASE HEARTH: the hearth command line as a user meets it.
+set -u
+case_name=$1
+hearth=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+png_ok() { # file: a PNG signature and an IHDR of non-zero size
+    python3 - "$1" <<'PY' || return 1
+import struct, sys
+b = open(sys.argv[1], "rb").read()
+assert b[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+w, h = struct.unpack(">II", b[16:24])
+assert w > 0 and h > 0
+PY
+}
+
+case "$case_name" in
+cli_help)
+    "$hearth" --help | grep -q "hearth plugin check" || fail "--help lacks the subcommands"
+    "$hearth" --version | grep -q "material ABI" || fail "--version"
+    for sub in demo bench plugins; do "$hearth" $sub --help >/dev/null || fail "$sub --help"; done
+    ;;
+cli_demo_frames)
+    (cd "$tmp" && "$hearth" demo --until 0.02 --frames 2 --quiet) || fail "demo exited $?"
+    n=$(ls "$tmp"/hearth-out/demo/frame_*.png 2>/dev/null | wc -l)
+    [ "$n" -eq 3 ] || fail "expected 3 frames, found $n"
+    for f in "$tmp"/hearth-out/demo/frame_*.png; do png_ok "$f" || fail "$f does not decode"; done
+    ls "$tmp"/hearth-out/demo | grep -q tmp && fail "temp files left behind"
+    # without a terminal, progress comes as plain lines on stderr
+    (cd "$tmp" && "$hearth" demo --until 0.01 --frames 1 --out o2 2>err.txt) || fail "demo with progress"
+    grep -q "progress: t = " "$tmp/err.txt" || fail "no plain progress line: $(cat "$tmp/err.txt")"
+    ;;
+cli_bench_json)
+    out=$("$hearth" bench --cells 16 --steps 2 --dim 2 --threads 1) || fail "bench exited $?"
+    python3 - "$out" <<'PY' || fail "bench JSON: $out"
+import json, sys
+j = json.loads(sys.argv[1])
+for k in ("particles", "steps", "threads", "seconds", "particle_steps_per_s", "bytes_per_particle"):
+    assert k in j, k
+assert j["particles"] > 0 and j["steps"] == 2 and j["threads"] == 1 and j["particle_steps_per_s"] > 0
+PY
+    ;;
+cli_plugins_list)
+    out=$("$hearth" plugins) || fail "plugins exited $?"
+    echo "$out" | grep -q "^elastic" || fail "elastic not listed"
+    echo "$out" | grep -q "^newtonian" || fail "newtonian not listed"
+    echo "$out" | grep -q "kg/m^3" || fail "no units in the table"
+    ;;
+cli_plugin_check_exit)
+    "$hearth" plugin check "$HEARTH_PLUGIN_PATH/hearth_elastic.so" >"$tmp/ok.txt" || fail "elastic should pass: $(cat "$tmp/ok.txt")"
+    [ "$(grep -c PASS "$tmp/ok.txt")" -eq 5 ] || fail "expected 5 PASS lines"
+    "$hearth" plugin check "$HEARTH_TEST_PLUGIN_DIR/hearth_asym.so" >"$tmp/bad.txt" && fail "asym should fail"
+    grep -q "symmetric *FAIL" "$tmp/bad.txt" || fail "asym: symmetric check should fail"
+    "$hearth" plugin check /nonexistent/hearth_x.so 2>"$tmp/err.txt"; [ $? -eq 1 ] || fail "missing file exit"
+    grep -q "not found" "$tmp/err.txt" || fail "missing file message: $(cat "$tmp/err.txt")"
+    ;;
+cli_bad_usage)
+    "$hearth" frobnicate 2>/dev/null; [ $? -eq 2 ] || fail "unknown command should exit 2"
+    "$hearth" bench --cells x 2>"$tmp/e"; [ $? -eq 2 ] || fail "bad number should exit 2"
+    grep -q "\-\-cells needs a whole number" "$tmp/e" || fail "message: $(cat "$tmp/e")"
+    ;;
+*) fail "unknown case $case_name" ;;
+esac
+echo "ok"
