@@ -536,7 +536,10 @@ TEST(probe_fields) {
     CHECK(hearth_probe_point(s, "speed", out, val, &err) == HEARTH_OK);
     CHECK(isnan(val[0]));
     CHECK(hearth_probe_point(s, "temperature", c, val, &err) == HEARTH_ERR_PARAM);
-    CHECK_STR_CONTAINS(err.msg, "unknown field 'temperature'");
+    CHECK_STR_CONTAINS(err.msg, "field 'temperature' is not live");
+    CHECK_STR_CONTAINS(err.msg, "temperature = 20");
+    CHECK(hearth_probe_point(s, "temprature", c, val, &err) == HEARTH_ERR_PARAM);
+    CHECK_STR_CONTAINS(err.msg, "unknown field 'temprature'");
     double line[11];
     const double a[3] = {0, 0.5, 0}, b[3] = {1, 0.5, 0};
     CHECK(hearth_probe_line(s, "density", a, b, 11, line, &err) == HEARTH_OK);

@@ -79,7 +79,7 @@ static void io_def(ck_io *io, hearth_scene_def *d, int writing) {
 static void io_clocks(ck_io *io, hearth_scene *s, int writing) {
     void (*f)(ck_io *, void *, size_t) = writing ? (void (*)(ck_io *, void *, size_t))wr : rd;
     int64_t step = s->step, ood = s->out_of_domain;
-    int32_t rb = s->rollbacks, guard = s->guard, next_id = s->next_id;
+    int32_t rb = s->rollbacks, guard = s->guard, next_id = s->next_id, nbodies = s->nbodies;
     f(io, &s->t, sizeof s->t);
     f(io, &s->dt_last, sizeof s->dt_last);
     f(io, &s->dt_scale, sizeof s->dt_scale);
@@ -94,6 +94,8 @@ static void io_clocks(ck_io *io, hearth_scene *s, int writing) {
     f(io, &guard, sizeof guard);
     f(io, &s->rng, sizeof s->rng);
     f(io, &next_id, sizeof next_id);
+    f(io, &nbodies, sizeof nbodies);
+    s->nbodies = nbodies;
     s->step = step;
     s->out_of_domain = ood;
     s->rollbacks = rb;
@@ -121,6 +123,15 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
         int32_t np = s->mats[i].m->nparams;
         WR(&io, np);
         wr(&io, s->mats[i].params, sizeof(double) * (size_t)np);
+        int32_t nc = s->mats[i].ncurves;
+        WR(&io, nc);
+        for (int k = 0; k < nc; k++) {
+            const curve *c = &s->mats[i].curves[k];
+            int32_t hdr3[3] = {c->param, c->n, c->irreversible};
+            wr(&io, hdr3, sizeof hdr3);
+            wr(&io, c->T, sizeof(double) * (size_t)c->n);
+            wr(&io, c->v, sizeof(double) * (size_t)c->n);
+        }
     }
     int32_t ncol = s->ncol;
     WR(&io, ncol);
@@ -222,7 +233,26 @@ hearth_scene *hearth_scene_load(const char *path, hearth_error *err) {
         }
         const char *names[1024];
         for (int k = 0; k < np; k++) names[k] = m->params[k].name;
-        if (hearth_scene_add_material(s, which, names, vals, np, err) < 0) return load_fail(s, f, err, path, "");
+        const int mat = hearth_scene_add_material(s, which, names, vals, np, err);
+        if (mat < 0) return load_fail(s, f, err, path, "");
+        int32_t nc = 0;
+        RD(&io, nc);
+        if (io.bad || nc < 0 || nc > np) return load_fail(s, f, err, path, "bad curve count");
+        for (int k = 0; k < nc; k++) {
+            int32_t h3[3] = {0, 0, 0};
+            rd(&io, h3, sizeof h3);
+            if (io.bad || h3[0] < 0 || h3[0] >= np || h3[1] < 1 || h3[1] > 10000) return load_fail(s, f, err, path, "bad curve");
+            const size_t bytes = sizeof(double) * (size_t)h3[1];
+            double *T = mem_alloc(bytes), *v = mem_alloc(bytes);
+            if (T && v) {
+                rd(&io, T, bytes);
+                rd(&io, v, bytes);
+            }
+            int bad = !T || !v || io.bad || hearth_scene_material_curve(s, mat, m->params[h3[0]].name, h3[1], T, v, h3[2], err);
+            mem_free(T, bytes);
+            mem_free(v, bytes);
+            if (bad) return load_fail(s, f, err, path, "bad curve");
+        }
     }
     int32_t ncol = 0;
     RD(&io, ncol);
@@ -298,5 +328,6 @@ hearth_scene *hearth_scene_load(const char *path, hearth_error *err) {
     s->guard = clocks.guard;
     s->rng = clocks.rng;
     s->next_id = clocks.next_id;
+    s->nbodies = clocks.nbodies;
     return s;
 }

@@ -124,8 +124,10 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
     const double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *M = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
     double *Cc = pcold(ps, PC_C), *Fc = pcold(ps, PC_F), *state = pcold(ps, PC_STATE);
     const int *mat = pcoli(ps, PC_MAT);
+    const double *Tcol = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
     const int stride = ps->state_stride;
+    double pscratch[SCENE_MAX_PARAMS];
 
     for (int i = pb.start; i < pb.end; i++) {
         const double *x = X + 3 * i, *v = V + 3 * i, *C = Cc + 9 * i;
@@ -147,8 +149,9 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
             memcpy(pt.grad_v, C, sizeof pt.grad_v);
             memcpy(pt.F, F, sizeof pt.F);
             pt.dt = dt;
-            pt.temperature = pt.porosity = pt.saturation = NAN;
-            pt.p = scene_params_for(s, mat[i], i);
+            pt.temperature = Tcol ? Tcol[i] : NAN;
+            pt.porosity = pt.saturation = NAN;
+            pt.p = scene_params_for(s, mat[i], i, pscratch);
             pt.state = state ? state + (size_t)i * stride : NULL;
             int code = ms->m->stress(&pt, tau);
             if (code) {
@@ -321,7 +324,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
         lo[d] = g->lo[d] + dx;                       /* keep every particle's stencil on the grid */
         hi[d] = g->lo[d] + (g->nn[d] - 2) * dx;
     }
-    double ke = 0, vmax = -1, cmax = 0;
+    double ke = 0, vmax = -1, cmax = 0, pscratch[SCENE_MAX_PARAMS];
     int fastest = -1;
     long ood = 0;
     for (int i = pb.start; i < pb.end; i++) {
@@ -383,7 +386,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
         if (sp2 > vmax) { vmax = sp2; fastest = i; }
         const material_slot *ms = &s->mats[mat[i]];
         if (ms->m->state_size > 0) {
-            const double c = ms->m->wave_speed(scene_params_for(s, mat[i], i), state + (size_t)i * ps->state_stride);
+            const double c =
+                ms->m->wave_speed(scene_params_for(s, mat[i], i, pscratch), state + (size_t)i * ps->state_stride);
             if (c > cmax) cmax = c;
         }
     }

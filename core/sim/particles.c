@@ -17,6 +17,7 @@ static const struct {
     [PC_MAT] = {"material", 1, 1},  [PC_ID] = {"id", 1, 1},
     [PC_STATE] = {"state", 0, 0},   [PC_TEMPERATURE] = {"temperature", 1, 0},
     [PC_TEMP_MAX] = {"temperature_max", 1, 0},
+    [PC_BODY] = {"body", 1, 1},
 };
 
 const char *particles_col_name(int c) { return col_info[c].name; }

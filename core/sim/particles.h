@@ -26,6 +26,7 @@ typedef enum pcol {
     /* optional: enabled on demand by later modules */
     PC_TEMPERATURE = PC_NCORE, /* degrees C, 1 */
     PC_TEMP_MAX,               /* highest temperature reached (for irreversible curves), 1 */
+    PC_BODY,                   /* body id (int32), for scenes built from bodies */
     PC_COUNT
 } pcol;
 

@@ -12,15 +12,23 @@
 #include "error.h"
 #include "scene.h"
 
-typedef enum field_id { F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_COUNT } field_id;
+typedef enum field_id {
+    F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_TEMPERATURE, F_COUNT
+} field_id;
 
+/* A field is live when its column is enabled (column -1: always live). */
 static const struct {
     const char *name, *unit;
-    int ncomp;
+    int ncomp, column;
+    const char *how; /* how to make it live */
 } fields[F_COUNT] = {
-    [F_VELOCITY] = {"velocity", "m/s", 3}, [F_VX] = {"velocity_x", "m/s", 1},   [F_VY] = {"velocity_y", "m/s", 1},
-    [F_VZ] = {"velocity_z", "m/s", 1},     [F_SPEED] = {"speed", "m/s", 1},     [F_DENSITY] = {"density", "kg/m^3", 1},
-    [F_J] = {"J", "1", 1},                 [F_PRESSURE] = {"pressure", "Pa", 1}, [F_VON_MISES] = {"von_mises", "Pa", 1},
+    [F_TEMPERATURE] = {"temperature", "degC", 1, PC_TEMPERATURE,
+                       "give a body a temperature (s:add{..., temperature = 20}) or a material a temperature curve"},
+    [F_VELOCITY] = {"velocity", "m/s", 3, -1, NULL},   [F_VX] = {"velocity_x", "m/s", 1, -1, NULL},
+    [F_VY] = {"velocity_y", "m/s", 1, -1, NULL},       [F_VZ] = {"velocity_z", "m/s", 1, -1, NULL},
+    [F_SPEED] = {"speed", "m/s", 1, -1, NULL},         [F_DENSITY] = {"density", "kg/m^3", 1, -1, NULL},
+    [F_J] = {"J", "1", 1, -1, NULL},                   [F_PRESSURE] = {"pressure", "Pa", 1, -1, NULL},
+    [F_VON_MISES] = {"von_mises", "Pa", 1, -1, NULL},
 };
 
 static int field_lookup(const char *name) {
@@ -39,17 +47,28 @@ const char *hearth_field_unit(const char *field) {
     return f < 0 ? NULL : fields[f].unit;
 }
 
-const char *hearth_scene_fields(const hearth_scene *s) {
-    (void)s;
-    return "velocity speed density J pressure von_mises";
+static int field_live(const hearth_scene *s, int f) {
+    return fields[f].column < 0 || (s->ps.enabled & (1u << fields[f].column));
 }
 
-static hearth_status find_field(const char *field, int scalar_only, int *out, hearth_error *err) {
-    int f = field_lookup(field);
-    if (f < 0) {
-        return err_set(err, HEARTH_ERR_PARAM, "unknown field '%s'; live fields: velocity (velocity_x, _y, _z), speed, density, J, pressure, von_mises",
-                       field);
+const char *hearth_scene_fields(const hearth_scene *s) {
+    hearth_scene *m = (hearth_scene *)s; /* the string is a cache of the enabled columns */
+    m->fields[0] = '\0';
+    for (int f = 0; f < F_COUNT; f++) {
+        if (f == F_VX || f == F_VY || f == F_VZ || !field_live(s, f)) continue;
+        if (m->fields[0]) strncat(m->fields, " ", sizeof m->fields - strlen(m->fields) - 1);
+        strncat(m->fields, fields[f].name, sizeof m->fields - strlen(m->fields) - 1);
     }
+    return m->fields;
+}
+
+static hearth_status find_field(const hearth_scene *s, const char *field, int scalar_only, int *out, hearth_error *err) {
+    int f = field_lookup(field);
+    if (f < 0)
+        return err_set(err, HEARTH_ERR_PARAM, "unknown field '%s'; live fields: %s (vector components as velocity_x, _y, _z)",
+                       field, hearth_scene_fields(s));
+    if (!field_live(s, f))
+        return err_set(err, HEARTH_ERR_PARAM, "field '%s' is not live in this scene; to enable it, %s", field, fields[f].how);
     if (scalar_only && fields[f].ncomp != 1)
         return err_set(err, HEARTH_ERR_PARAM, "field '%s' has %d components; slice one of them (%s_x, %s_y, %s_z)", field,
                        fields[f].ncomp, field, field, field);
@@ -71,8 +90,10 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
     memcpy(pt.grad_v, pcold(ps, PC_C) + 9 * i, sizeof pt.grad_v);
     memcpy(pt.F, pcold(ps, PC_F) + 9 * i, sizeof pt.F);
     pt.dt = 0;
-    pt.temperature = pt.porosity = pt.saturation = NAN;
-    pt.p = scene_params_for(s, m, i);
+    pt.temperature = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE)[i] : NAN;
+    pt.porosity = pt.saturation = NAN;
+    double pscratch[SCENE_MAX_PARAMS];
+    pt.p = scene_params_for(s, m, i, pscratch);
     pt.state = NULL;
     if (ps->state_stride) {
         memcpy(state_copy, pcold(ps, PC_STATE) + (size_t)i * ps->state_stride, sizeof(double) * (size_t)ps->state_stride);
@@ -92,6 +113,7 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_SPEED: out[0] = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); break;
     case F_DENSITY: out[0] = pcold(ps, PC_MASS)[i] / (pcold(ps, PC_VOL0)[i] * det3(F)); break;
     case F_J: out[0] = det3(F); break;
+    case F_TEMPERATURE: out[0] = pcold(ps, PC_TEMPERATURE)[i]; break;
     default: {
         double tau[9];
         particle_stress(s, i, tau, state_copy);
@@ -116,7 +138,7 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
 
 hearth_status hearth_scene_particle_field(const hearth_scene *s, const char *field, double *out, hearth_error *err) {
     int f = 0;
-    hearth_status st = find_field(field, 0, &f, err);
+    hearth_status st = find_field(s, field, 0, &f, err);
     if (st) return st;
     const int nc = fields[f].ncomp, stride = s->ps.state_stride;
     double *copy = stride ? mem_alloc(sizeof(double) * (size_t)stride) : NULL;
@@ -196,7 +218,7 @@ static hearth_status splat(const hearth_scene *s, int f, const lattice *L, doubl
 
 hearth_status hearth_probe_point(const hearth_scene *s, const char *field, const double x[3], double *out, hearth_error *err) {
     int f = 0;
-    hearth_status st = find_field(field, 0, &f, err);
+    hearth_status st = find_field(s, field, 0, &f, err);
     if (st) return st;
     lattice L = {.na = 1, .nb = 1};
     memcpy(L.origin, x, sizeof L.origin);
@@ -207,7 +229,7 @@ hearth_status hearth_probe_point(const hearth_scene *s, const char *field, const
 hearth_status hearth_probe_line(const hearth_scene *s, const char *field, const double a[3], const double b[3], int n,
                                 double *out, hearth_error *err) {
     int f = 0;
-    hearth_status st = find_field(field, 0, &f, err);
+    hearth_status st = find_field(s, field, 0, &f, err);
     if (st) return st;
     if (n < 2 || n > 1000000) return err_set(err, HEARTH_ERR_PARAM, "line probe: n = %d samples; valid range [2, 1000000]", n);
     lattice L = {.na = n, .nb = 1};
@@ -222,7 +244,7 @@ hearth_status hearth_probe_line(const hearth_scene *s, const char *field, const 
 hearth_status hearth_probe_slice(const hearth_scene *s, const char *field, int axis, double at, int w, int h, double *out,
                                  hearth_error *err) {
     int f = 0;
-    hearth_status st = find_field(field, 1, &f, err);
+    hearth_status st = find_field(s, field, 1, &f, err);
     if (st) return st;
     if (w < 1 || h < 1 || (long)w * h > 64L * 1024 * 1024)
         return err_set(err, HEARTH_ERR_PARAM, "slice: %d x %d samples; each side must be >= 1 and the total <= 67108864", w, h);

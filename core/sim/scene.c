@@ -123,7 +123,14 @@ static void free_scratch(hearth_scene *s) {
 
 void hearth_scene_destroy(hearth_scene *s) {
     if (!s) return;
-    for (int i = 0; i < s->nmat; i++) mem_free(s->mats[i].params, sizeof(double) * (size_t)s->mats[i].m->nparams);
+    for (int i = 0; i < s->nmat; i++) {
+        mem_free(s->mats[i].params, sizeof(double) * (size_t)(s->mats[i].m->nparams > 0 ? s->mats[i].m->nparams : 1));
+        for (int k = 0; k < s->mats[i].ncurves; k++) {
+            mem_free(s->mats[i].curves[k].T, sizeof(double) * (size_t)s->mats[i].curves[k].n);
+            mem_free(s->mats[i].curves[k].v, sizeof(double) * (size_t)s->mats[i].curves[k].n);
+        }
+        mem_free(s->mats[i].curves, sizeof(curve) * (size_t)s->mats[i].ncurves);
+    }
     mem_free(s->mats, sizeof(material_slot) * (size_t)s->capmat);
     for (int i = 0; i < s->ncol; i++) collider_free(&s->cols[i]);
     mem_free(s->cols, sizeof(collider) * (size_t)s->capcol);
@@ -194,9 +201,26 @@ hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err) {
 
 /* ---- materials ------------------------------------------------------- */
 
-const double *scene_params_for(const hearth_scene *s, int mat, int particle) {
-    (void)particle; /* per-particle resolution (temperature curves, blends) arrives with the fields */
-    return s->mats[mat].params;
+const double *scene_params_for(const hearth_scene *s, int mat, int particle, double *scratch) {
+    const material_slot *ms = &s->mats[mat];
+    if (ms->ncurves == 0) return ms->params;
+    memcpy(scratch, ms->params, sizeof(double) * (size_t)ms->m->nparams);
+    const double *T = pcold(&s->ps, PC_TEMPERATURE), *Tmax = pcold(&s->ps, PC_TEMP_MAX);
+    for (int k = 0; k < ms->ncurves; k++) {
+        const curve *c = &ms->curves[k];
+        scratch[c->param] = curve_eval(c, c->irreversible ? Tmax[particle] : T[particle]);
+    }
+    return scratch;
+}
+
+hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err) {
+    particles *ps = &s->ps;
+    if (ps->enabled & (1u << PC_TEMPERATURE)) return HEARTH_OK;
+    hearth_status st = particles_enable(ps, PC_TEMPERATURE, err);
+    if (!st) st = particles_enable(ps, PC_TEMP_MAX, err);
+    if (st) return st;
+    for (int i = 0; i < ps->n; i++) pcold(ps, PC_TEMPERATURE)[i] = pcold(ps, PC_TEMP_MAX)[i] = SCENE_ROOM_TEMPERATURE;
+    return HEARTH_OK;
 }
 
 int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *const *names, const double *values,
@@ -205,6 +229,11 @@ int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *c
     const hearth_plugin *pl = hearth_plugin_load(plugin, err);
     if (!pl) return -1;
     const hearth_material *m = hearth_plugin_material(pl);
+    if (m->nparams > SCENE_MAX_PARAMS) {
+        err_set(err, HEARTH_ERR_PLUGIN, "material '%s' declares %d parameters; hearth supports at most %d", m->name,
+                m->nparams, SCENE_MAX_PARAMS);
+        return -1;
+    }
     double *p = mem_alloc(sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1));
     if (!p) {
         err_set(err, HEARTH_ERR_NOMEM, "out of memory for material '%s'", m->name);
@@ -300,6 +329,9 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         pcold(ps, PC_VOL0)[j] = volume;
         pcoli(ps, PC_MAT)[j] = material;
         pcoli(ps, PC_ID)[j] = s->next_id++;
+        if (ps->enabled & (1u << PC_TEMPERATURE))
+            pcold(ps, PC_TEMPERATURE)[j] = pcold(ps, PC_TEMP_MAX)[j] = SCENE_ROOM_TEMPERATURE;
+        if (ps->enabled & (1u << PC_BODY)) pcoli(ps, PC_BODY)[j] = -1;
         if (ps->state_stride) {
             double *st = pcold(ps, PC_STATE) + (size_t)j * ps->state_stride;
             memset(st, 0, sizeof(double) * (size_t)ps->state_stride);

@@ -5,6 +5,7 @@
 #include <stdint.h>
 
 #include "colliders.h"
+#include "curves.h"
 #include "grid.h"
 #include "particles.h"
 
@@ -14,7 +15,15 @@ typedef struct material_slot {
     double *params;     /* resolved, schema order */
     int density_index;  /* schema index of "density" */
     double wave_speed;  /* cached when the plugin is stateless (state_size 0) */
+    curve *curves;      /* parameters that follow temperature */
+    int ncurves;
 } material_slot;
+
+/* Plugins may declare at most this many parameters (per-particle resolution
+ * uses a stack buffer of this size). */
+#define SCENE_MAX_PARAMS 256
+/* Temperature given to particles when the field turns on without a value (degrees C). */
+#define SCENE_ROOM_TEMPERATURE 20.0
 
 /* A run of sorted particles sharing one grid block. */
 typedef struct pblock {
@@ -61,6 +70,7 @@ struct hearth_scene {
     char diagnosis[1024];
     uint64_t rng;
     int next_id;
+    int nbodies;
 
     particles ps;
     grid g;
@@ -93,7 +103,11 @@ struct hearth_scene {
 };
 
 /* scene.c */
-const double *scene_params_for(const hearth_scene *s, int mat, int particle);
+/* Parameters of particle i's material, with temperature curves evaluated into
+ * scratch (SCENE_MAX_PARAMS doubles) when the material has any. */
+const double *scene_params_for(const hearth_scene *s, int mat, int particle, double *scratch);
+/* Turn the temperature field on (room temperature for particles that have none). */
+hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err);
 hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err);
 double scene_stable_dt(const hearth_scene *s);
 

@@ -102,6 +102,12 @@ hearth_shape *hearth_shape_capsule(const double a[3], const double b[3], double 
 /// the wall measured up the axis from base. The inside is empty.
 hearth_shape *hearth_shape_container(const double base[3], const double axis[3], double r_in,
                                      double height, double wall, double floor);
+/// A 2D shape from a mask image: pixels darker than 50% grey are inside. The
+/// image spans the rectangle lo..hi (x right, y up: the image's top row is at hi[1]).
+/// Reads the PNG with libpng. The shape is infinite in z (use hearth_shape_extrude for 3D).
+hearth_shape *hearth_shape_mask(const char *png_path, const double lo[2], const double hi[2], hearth_error *err);
+/// Limit a shape to z0 <= z <= z1 (an extruded mask in 3D).
+hearth_shape *hearth_shape_extrude(const hearth_shape *s, double z0, double z1);
 /// Boolean combination (copies a and b).
 hearth_shape *hearth_shape_combine(hearth_shape_op op, const hearth_shape *a, const hearth_shape *b);
 hearth_shape *hearth_shape_copy(const hearth_shape *s);
@@ -221,6 +227,50 @@ typedef struct hearth_stats {
 } hearth_stats;
 void hearth_scene_stats(const hearth_scene *s, hearth_stats *st);
 
+/* ---- bodies and events --------------------------------------------- */
+
+/// A body: a shape filled with particles of one material.
+typedef struct hearth_body_def {
+    const hearth_shape *shape; ///< not kept
+    int material;              ///< from hearth_scene_add_material
+    int ppc;                   ///< particles per cell (rounded to a k^dim lattice)
+    double jitter;             ///< 0..1 of the sub-cell, from the scene's seeded generator
+    double velocity[3];        ///< m/s
+    double temperature;        ///< initial temperature (degrees C); NaN = not set. Setting it makes the temperature field live.
+} hearth_body_def;
+
+/// ppc 4, jitter 0.5, at rest, temperature unset.
+hearth_body_def hearth_default_body_def(void);
+/// Seed a body. Returns its id (>= 0) or -1; a shape that holds no particle is an error.
+int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_error *err);
+int hearth_scene_body_count(const hearth_scene *s);
+/// Number of particles a body still has (cutting removes some).
+int hearth_scene_body_particles(const hearth_scene *s, int body);
+/// Set the velocity of every particle of a body (a push). Returns status.
+hearth_status hearth_scene_body_set_velocity(hearth_scene *s, int body, const double v[3], hearth_error *err);
+/// Remove every particle inside a shape (cutting). Returns the number removed, or -1.
+int hearth_scene_remove_inside(hearth_scene *s, const hearth_shape *shape, hearth_error *err);
+/// Replace a collider's motion with constant velocities (removes any motion callback).
+hearth_status hearth_scene_collider_set_velocity(hearth_scene *s, int id, const double v[3], const double omega[3],
+                                                 hearth_error *err);
+/// Move a collider now by d (m), e.g. to press or place it.
+hearth_status hearth_scene_collider_translate(hearth_scene *s, int id, const double d[3], hearth_error *err);
+int hearth_scene_collider_count(const hearth_scene *s);
+
+/* ---- temperature curves --------------------------------------------- */
+
+/// Make parameter `param` of material `mat` a piecewise-linear function of
+/// temperature through n points (T ascending, degrees C; values inside the
+/// parameter's range; constant beyond the ends). Irreversible curves are
+/// evaluated at the highest temperature each particle has reached (setting
+/// gelatinises and stays set). The core evaluates curves, so plugins see plain
+/// numbers. Makes the temperature field live.
+hearth_status hearth_scene_material_curve(hearth_scene *s, int mat, const char *param, int n, const double *T,
+                                          const double *v, int irreversible, hearth_error *err);
+/// Check plugin parameters without a scene (for early, precise errors in scripts).
+hearth_status hearth_material_check(const char *plugin, const char *const *names, const double *values, int n,
+                                    hearth_error *err);
+
 /* ---- fields and probes ---------------------------------------------- */
 
 /// Names of the fields live in this scene, space separated (static until the scene changes).
@@ -260,6 +310,15 @@ hearth_status hearth_render_particles(const hearth_scene *s, const char *field, 
 /// wide with the domain's aspect ratio; outside the material is background.
 hearth_status hearth_render_slice(const hearth_scene *s, const char *field, int axis, double at, const char *path,
                                   int width, hearth_error *err);
+
+/* ---- particle dumps ------------------------------------------------- */
+
+/// Write every particle with every live field as point data, as VTK XML
+/// UnstructuredGrid (.vtu, one VTK_VERTEX cell per particle, ParaView reads it).
+/// Binary appended data, base64-free ("raw" encoding), Float64. Written atomically.
+hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_error *err);
+/// The same as binary little-endian PLY (vertex x y z as double, then one double property per field component).
+hearth_status hearth_write_ply(const hearth_scene *s, const char *path, hearth_error *err);
 
 /* ---- checkpoints ---------------------------------------------------- */
 

@@ -1,0 +1,170 @@
+/* bodies.c: bodies (shapes filled with one material), the events that act
+ * on them and on colliders, and temperature curves of material parameters. */
+#include <math.h>
+#include <string.h>
+
+#include "alloc.h"
+#include "error.h"
+#include "params.h"
+#include "scene.h"
+
+hearth_body_def hearth_default_body_def(void) {
+    return (hearth_body_def){.ppc = 4, .jitter = 0.5, .temperature = NAN};
+}
+
+int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_error *err) {
+    err_clear(err);
+    if (!def || !def->shape) {
+        err_set(err, HEARTH_ERR_PARAM, "body: a shape is required");
+        return -1;
+    }
+    if (def->material < 0 || def->material >= s->nmat) {
+        err_set(err, HEARTH_ERR_PARAM, "body: material %d does not exist (the scene has %d)", def->material, s->nmat);
+        return -1;
+    }
+    if (!isnan(def->temperature) && !(def->temperature >= -273.15 && def->temperature <= 5000)) {
+        err_set(err, HEARTH_ERR_PARAM, "body: temperature = %g degrees C; valid range [-273.15, 5000]", def->temperature);
+        return -1;
+    }
+    hearth_status st = particles_enable(&s->ps, PC_BODY, err);
+    if (!st && !isnan(def->temperature)) st = scene_enable_temperature(s, err);
+    if (st) return -1;
+    const int n0 = s->ps.n;
+    int n = hearth_scene_seed_shape(s, def->material, def->shape, def->ppc, def->jitter, def->velocity, err);
+    if (n < 0) return -1;
+    if (n == 0) {
+        err_set(err, HEARTH_ERR_PARAM, "body: its shape holds no particle inside the domain (check the shape's position and size against the box)");
+        return -1;
+    }
+    const int id = s->nbodies++;
+    for (int i = n0; i < s->ps.n; i++) {
+        pcoli(&s->ps, PC_BODY)[i] = id;
+        if (!isnan(def->temperature)) pcold(&s->ps, PC_TEMPERATURE)[i] = pcold(&s->ps, PC_TEMP_MAX)[i] = def->temperature;
+    }
+    return id;
+}
+
+int hearth_scene_body_count(const hearth_scene *s) { return s->nbodies; }
+
+int hearth_scene_body_particles(const hearth_scene *s, int body) {
+    if (!(s->ps.enabled & (1u << PC_BODY))) return 0;
+    int n = 0;
+    for (int i = 0; i < s->ps.n; i++) n += pcoli(&s->ps, PC_BODY)[i] == body;
+    return n;
+}
+
+hearth_status hearth_scene_body_set_velocity(hearth_scene *s, int body, const double v[3], hearth_error *err) {
+    if (body < 0 || body >= s->nbodies)
+        return err_set(err, HEARTH_ERR_PARAM, "push: body %d does not exist (the scene has %d)", body, s->nbodies);
+    for (int d = 0; d < 3; d++)
+        if (!isfinite(v[d])) return err_set(err, HEARTH_ERR_PARAM, "push: velocity[%d] is not finite", d);
+    double sp = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (int i = 0; i < s->ps.n; i++) {
+        if (pcoli(&s->ps, PC_BODY)[i] != body) continue;
+        for (int d = 0; d < s->def.dim; d++) pcold(&s->ps, PC_V)[3 * i + d] = v[d];
+        memset(pcold(&s->ps, PC_C) + 9 * i, 0, 9 * sizeof(double)); /* a push is a uniform motion */
+    }
+    if (sp > s->max_speed) s->max_speed = sp; /* the next dt must respect the new speed */
+    return HEARTH_OK;
+}
+
+int hearth_scene_remove_inside(hearth_scene *s, const hearth_shape *shape, hearth_error *err) {
+    err_clear(err);
+    const int n = s->ps.n;
+    unsigned char *rm = mem_calloc((size_t)(n > 0 ? n : 1));
+    if (!rm) {
+        err_set(err, HEARTH_ERR_NOMEM, "cut: out of memory");
+        return -1;
+    }
+    for (int i = 0; i < n; i++) rm[i] = hearth_shape_sdf(shape, pcold(&s->ps, PC_X) + 3 * i, NULL) < 0;
+    int removed = particles_compact(&s->ps, rm);
+    mem_free(rm, (size_t)(n > 0 ? n : 1));
+    return removed;
+}
+
+static hearth_status check_collider(const hearth_scene *s, int id, hearth_error *err) {
+    if (id < 0 || id >= s->ncol) return err_set(err, HEARTH_ERR_PARAM, "collider %d does not exist (the scene has %d)", id, s->ncol);
+    return HEARTH_OK;
+}
+
+hearth_status hearth_scene_collider_set_velocity(hearth_scene *s, int id, const double v[3], const double omega[3],
+                                                 hearth_error *err) {
+    hearth_status st = check_collider(s, id, err);
+    if (st) return st;
+    for (int d = 0; d < 3; d++)
+        if (!isfinite(v[d]) || !isfinite(omega[d]))
+            return err_set(err, HEARTH_ERR_PARAM, "collider %d: velocity and omega must be finite", id);
+    collider *c = &s->cols[id];
+    c->motion = NULL;
+    c->motion_ud = NULL;
+    memcpy(c->vel, v, sizeof c->vel);
+    memcpy(c->omega, omega, sizeof c->omega);
+    return HEARTH_OK;
+}
+
+hearth_status hearth_scene_collider_translate(hearth_scene *s, int id, const double d[3], hearth_error *err) {
+    hearth_status st = check_collider(s, id, err);
+    if (st) return st;
+    for (int k = 0; k < 3; k++) {
+        if (!isfinite(d[k])) return err_set(err, HEARTH_ERR_PARAM, "collider %d: translation must be finite", id);
+        s->cols[id].offset[k] += k < s->def.dim ? d[k] : 0;
+    }
+    return HEARTH_OK;
+}
+
+int hearth_scene_collider_count(const hearth_scene *s) { return s->ncol; }
+
+/* ---- curves ---------------------------------------------------------- */
+
+hearth_status hearth_scene_material_curve(hearth_scene *s, int mat, const char *param, int n, const double *T,
+                                          const double *v, int irreversible, hearth_error *err) {
+    if (mat < 0 || mat >= s->nmat) return err_set(err, HEARTH_ERR_PARAM, "curve: material %d does not exist", mat);
+    material_slot *ms = &s->mats[mat];
+    const int k = params_index(ms->m, param);
+    if (k < 0) return err_set(err, HEARTH_ERR_PARAM, "curve: material '%s' has no parameter '%s'", ms->m->name, param);
+    const hearth_param *p = &ms->m->params[k];
+    if (n < 1 || n > 10000) return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': %d points; valid range [1, 10000]", param, n);
+    for (int i = 0; i < n; i++) {
+        if (!isfinite(T[i]) || (i > 0 && !(T[i] > T[i - 1])))
+            return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': temperatures must be finite and strictly increasing (point %d: %g)",
+                           param, i + 1, T[i]);
+        if (!(v[i] >= p->min && v[i] <= p->max))
+            return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': value %g at %g degrees C is outside the range [%g, %g] %s",
+                           param, v[i], T[i], p->min, p->max, p->unit);
+    }
+    for (int i = 0; i < ms->ncurves; i++)
+        if (ms->curves[i].param == k)
+            return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': the parameter already has a curve", param);
+    hearth_status st = scene_enable_temperature(s, err);
+    if (st) return st;
+    /* fresh arrays first, so a failure leaves the material as it was */
+    curve *cs = mem_alloc(sizeof(curve) * (size_t)(ms->ncurves + 1));
+    double *tt = mem_alloc(sizeof(double) * (size_t)n), *vv = mem_alloc(sizeof(double) * (size_t)n);
+    if (!cs || !tt || !vv) {
+        mem_free(cs, sizeof(curve) * (size_t)(ms->ncurves + 1));
+        mem_free(tt, sizeof(double) * (size_t)n);
+        mem_free(vv, sizeof(double) * (size_t)n);
+        return err_set(err, HEARTH_ERR_NOMEM, "curve: out of memory");
+    }
+    if (ms->ncurves) memcpy(cs, ms->curves, sizeof(curve) * (size_t)ms->ncurves);
+    mem_free(ms->curves, sizeof(curve) * (size_t)ms->ncurves);
+    ms->curves = cs;
+    memcpy(tt, T, sizeof(double) * (size_t)n);
+    memcpy(vv, v, sizeof(double) * (size_t)n);
+    ms->curves[ms->ncurves++] = (curve){.param = k, .n = n, .T = tt, .v = vv, .irreversible = irreversible != 0};
+    return HEARTH_OK;
+}
+
+hearth_status hearth_material_check(const char *plugin, const char *const *names, const double *values, int n,
+                                    hearth_error *err) {
+    hearth_error local;
+    if (!err) err = &local;
+    const hearth_plugin *pl = hearth_plugin_load(plugin, err);
+    if (!pl) return err->code;
+    const hearth_material *m = hearth_plugin_material(pl);
+    double tmp[SCENE_MAX_PARAMS];
+    if (m->nparams > SCENE_MAX_PARAMS)
+        return err_set(err, HEARTH_ERR_PLUGIN, "material '%s' declares %d parameters; hearth supports at most %d", m->name,
+                       m->nparams, SCENE_MAX_PARAMS);
+    return params_resolve(m, names, values, n, tmp, err);
+}
