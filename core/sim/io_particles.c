@@ -49,7 +49,7 @@ static int field_next(field_walk *w) {
     w->name[len] = '\0';
     w->p += len;
     w->nc = hearth_field_components(w->name);
-    HEARTH_ASSERT(w->nc > 0);
+    HEARTH_ASSERT(w->nc == 1 || w->nc == 3); /* the public contract; PLY names components _x _y _z */
     return 1;
 }
 
@@ -121,24 +121,32 @@ static hearth_status dump_finish(dump *d, const char *path, hearth_error *err) {
     return atomic_commit(&d->af, err);
 }
 
-/* The field list and a scratch buffer of `doubles` values, both counted by
- * mem_*. The buffer is always at least one value so that an empty scene
- * takes the same allocation path as any other. */
+/* A copy of the field list and a scratch buffer of `doubles` values, both
+ * counted by mem_*. The buffer always holds at least one value so that an
+ * empty scene takes the same allocation path as any other. */
 typedef struct scratch {
     char *names;
     double *buf;
     size_t doubles;
 } scratch;
 
-static hearth_status scratch_get(scratch *sc, const hearth_scene *s, size_t per_particle, size_t extra,
-                                 const char *path, hearth_error *err) {
-    const size_t n = (size_t)hearth_scene_particle_count(s);
-    sc->doubles = n * per_particle + extra + 1;
+static hearth_status scratch_get(scratch *sc, const hearth_scene *s, const char *path, hearth_error *err) {
+    sc->doubles = 0;
+    sc->buf = NULL;
     sc->names = mem_strdup(hearth_scene_fields(s));
-    sc->buf = sc->names ? mem_alloc(sizeof(double) * sc->doubles) : NULL;
+    if (!sc->names)
+        return err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory for a dump of %d particles", path,
+                       hearth_scene_particle_count(s));
+    return HEARTH_OK;
+}
+
+static hearth_status scratch_buf(scratch *sc, size_t doubles, const char *path, hearth_error *err) {
+    sc->doubles = doubles + 1;
+    sc->buf = mem_alloc(sizeof(double) * sc->doubles);
     if (!sc->buf) {
-        mem_strfree(sc->names);
-        return err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory for a dump of %zu particles", path, n);
+        sc->doubles = 0;
+        return err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory for a dump (%zu bytes)", path,
+                       sizeof(double) * (doubles + 1));
     }
     return HEARTH_OK;
 }
@@ -149,13 +157,18 @@ static void scratch_free(scratch *sc) {
 }
 
 /* Largest and total component counts over the live fields. */
-static void field_counts(const char *names, int *max_nc, int *total_nc) {
+static void field_counts(const char *names, size_t *max_nc, size_t *total_nc) {
     field_walk w = {names, "", 0};
     *max_nc = *total_nc = 0;
     while (field_next(&w)) {
-        if (w.nc > *max_nc) *max_nc = w.nc;
-        *total_nc += w.nc;
+        if ((size_t)w.nc > *max_nc) *max_nc = (size_t)w.nc;
+        *total_nc += (size_t)w.nc;
     }
+}
+
+static const char *unit_of(const char *field) {
+    const char *u = hearth_field_unit(field);
+    return u ? u : "?";
 }
 
 /* ---- VTU ------------------------------------------------------------- */
@@ -163,22 +176,25 @@ static void field_counts(const char *names, int *max_nc, int *total_nc) {
 /* Offsets in the appended block count from the byte after '_'; every array
  * there is a UInt64 byte count (header_type) followed by the bytes. */
 static void vtu_array_tag(dump *d, const char *type, const char *name, int nc, uint64_t *offset, uint64_t bytes) {
-    put_text(d, "        <DataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\" format=\"appended\" offset=\"%llu\"/>\n",
+    put_text(d, "<DataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\" format=\"appended\" offset=\"%llu\"/>\n",
              type, name, nc, (unsigned long long)*offset);
     *offset += sizeof(uint64_t) + bytes;
 }
 
-static void vtu_block(dump *d, const void *p, size_t size, size_t count) {
-    const uint64_t bytes = (uint64_t)size * count;
-    put_le(d, &bytes, sizeof bytes, 1);
-    put_le(d, p, size, count);
+/* FieldData arrays have no Piece to take their length from: VTK reads an
+ * array without NumberOfTuples there as empty. */
+static void vtu_time_tag(dump *d, uint64_t *offset) {
+    put_text(d, "<DataArray type=\"Float64\" Name=\"TIME\" NumberOfComponents=\"1\" NumberOfTuples=\"1\" "
+                "format=\"appended\" offset=\"%llu\"/>\n",
+             (unsigned long long)*offset);
+    *offset += sizeof(uint64_t) + sizeof(double);
 }
 
-/* Connectivity 0..n-1 or offsets 1..n, in chunks so that no n-sized array of
- * integers is ever allocated. */
+static void vtu_count(dump *d, uint64_t bytes) { put_le(d, &bytes, sizeof bytes, 1); }
+
+/* Connectivity 0..n-1 or offsets 1..n, in chunks: no n-sized integer array. */
 static void vtu_ramp(dump *d, size_t n, int64_t first) {
-    const uint64_t bytes = (uint64_t)n * sizeof(int64_t);
-    put_le(d, &bytes, sizeof bytes, 1);
+    vtu_count(d, (uint64_t)n * sizeof(int64_t));
     int64_t chunk[512];
     for (size_t i = 0; i < n;) {
         size_t k = 0;
@@ -193,54 +209,56 @@ hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_e
     hearth_stats stats;
     hearth_scene_stats(s, &stats);
     scratch sc;
-    int max_nc = 0, total_nc = 0;
-    hearth_status st = scratch_get(&sc, s, 3, 0, path, err); /* no field has more than 3 components */
+    size_t max_nc = 0, total_nc = 0;
+    hearth_status st = scratch_get(&sc, s, path, err);
     if (st) return st;
     field_counts(sc.names, &max_nc, &total_nc);
-    HEARTH_ASSERT(max_nc <= 3);
+    /* Fields go out one at a time, so the buffer holds the widest one only. */
     dump d;
-    if ((st = dump_open(&d, path, err))) {
+    if ((st = scratch_buf(&sc, n * max_nc, path, err)) || (st = dump_open(&d, path, err))) {
         scratch_free(&sc);
         return st;
     }
 
-    /* The XML part: every offset is known up front from n and the components. */
+    /* The XML part: every offset follows from n and the component counts. */
     uint64_t off = 0;
     put_text(&d, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
-                 "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <UnstructuredGrid>\n"
-                 "    <FieldData>\n  ");
-    put_text(&d, "    <!-- TIME: sim time (s) -->\n  ");
-    vtu_array_tag(&d, "Float64", "TIME", 1, &off, sizeof(double));
-    put_text(&d, "    </FieldData>\n    <Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n      <Points>\n", n, n);
+                 "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n<FieldData>\n"
+                 "<!-- TIME: sim time (s) -->\n");
+    vtu_time_tag(&d, &off);
+    put_text(&d, "</FieldData>\n<Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n<Points>\n", n, n);
     vtu_array_tag(&d, "Float64", "Points", 3, &off, 3 * sizeof(double) * n);
-    put_text(&d, "      </Points>\n      <Cells>\n");
+    put_text(&d, "</Points>\n<Cells>\n");
     vtu_array_tag(&d, "Int64", "connectivity", 1, &off, sizeof(int64_t) * n);
     vtu_array_tag(&d, "Int64", "offsets", 1, &off, sizeof(int64_t) * n);
     vtu_array_tag(&d, "UInt8", "types", 1, &off, n);
-    put_text(&d, "      </Cells>\n      <PointData>\n");
+    put_text(&d, "</Cells>\n<PointData>\n");
     field_walk w = {sc.names, "", 0};
     while (field_next(&w)) {
-        /* VTK XML has no unit attribute; a comment keeps it for people. */
-        put_text(&d, "        <!-- %s: %s -->\n", w.name, hearth_field_unit(w.name));
+        /* VTK XML has no unit attribute; a comment keeps the unit for people. */
+        put_text(&d, "<!-- %s: %s -->\n", w.name, unit_of(w.name));
         vtu_array_tag(&d, "Float64", w.name, w.nc, &off, sizeof(double) * (size_t)w.nc * n);
     }
-    put_text(&d, "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n  <AppendedData encoding=\"raw\">\n   _");
+    put_text(&d, "</PointData>\n</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_");
 
     /* The appended block, in the order of the offsets above. */
-    vtu_block(&d, &stats.t, sizeof(double), 1);
-    vtu_block(&d, hearth_scene_positions(s), sizeof(double), 3 * n);
+    vtu_count(&d, sizeof(double));
+    put_le(&d, &stats.t, sizeof(double), 1);
+    vtu_count(&d, 3 * sizeof(double) * n);
+    put_le(&d, hearth_scene_positions(s), sizeof(double), 3 * n);
     vtu_ramp(&d, n, 0);
     vtu_ramp(&d, n, 1);
-    const uint64_t type_bytes = n;
-    put_le(&d, &type_bytes, sizeof type_bytes, 1);
-    const unsigned char vertex[256] = {[0 ... 255] = 1}; /* VTK_VERTEX */
+    vtu_count(&d, n);
+    unsigned char vertex[512];
+    memset(vertex, 1, sizeof vertex); /* VTK_VERTEX */
     for (size_t i = 0; i < n; i += sizeof vertex) put_bytes(&d, vertex, n - i < sizeof vertex ? n - i : sizeof vertex);
     w = (field_walk){sc.names, "", 0};
     while (!d.err_no && field_next(&w)) {
         if ((st = field_values(s, w.name, sc.buf, path, err))) break;
-        vtu_block(&d, sc.buf, sizeof(double), (size_t)w.nc * n);
+        vtu_count(&d, sizeof(double) * (size_t)w.nc * n);
+        put_le(&d, sc.buf, sizeof(double), (size_t)w.nc * n);
     }
-    put_text(&d, "\n  </AppendedData>\n</VTKFile>\n");
+    put_text(&d, "\n</AppendedData>\n</VTKFile>\n");
     scratch_free(&sc);
     if (st) {
         atomic_abort(&d.af);
@@ -256,27 +274,33 @@ hearth_status hearth_write_ply(const hearth_scene *s, const char *path, hearth_e
     const size_t n = (size_t)hearth_scene_particle_count(s);
     hearth_stats stats;
     hearth_scene_stats(s, &stats);
-    /* PLY is row-major (one vertex after another) while fields come a column
-     * at a time, so all columns are gathered first: total_nc doubles per
-     * particle, plus one row. */
-    char *names = mem_strdup(hearth_scene_fields(s));
-    if (!names) return err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory for a dump of %zu particles", path, n);
-    int max_nc = 0, total_nc = 0;
-    field_counts(names, &max_nc, &total_nc);
-    mem_strfree(names);
-    const size_t row_len = 3 + (size_t)total_nc;
     scratch sc;
-    hearth_status st = scratch_get(&sc, s, (size_t)total_nc, row_len, path, err);
+    size_t max_nc = 0, total_nc = 0;
+    hearth_status st = scratch_get(&sc, s, path, err);
     if (st) return st;
-    double *cols = sc.buf, *row = sc.buf + n * (size_t)total_nc;
-    /* The field list could only change if the scene did; it cannot between these two calls. */
+    field_counts(sc.names, &max_nc, &total_nc);
+    /* PLY is row-major (one vertex after another) while fields come a column
+     * at a time, so the whole body is assembled first: n rows of row_len,
+     * then room for one field's values. Writing field by field with seeks
+     * would save the memory but not work on pipes. */
+    const size_t row_len = 3 + total_nc;
+    if ((st = scratch_buf(&sc, n * row_len + n * max_nc, path, err))) {
+        scratch_free(&sc);
+        return st;
+    }
+    double *rows = sc.buf, *col = sc.buf + n * row_len;
+    const double *x = hearth_scene_positions(s);
+    for (size_t i = 0; i < n; i++) memcpy(rows + i * row_len, x + 3 * i, 3 * sizeof(double));
     field_walk w = {sc.names, "", 0};
-    for (size_t c = 0; field_next(&w); c += (size_t)w.nc) {
-        if ((st = field_values(s, w.name, cols + c * n, path, err))) {
+    for (size_t c = 3; field_next(&w); c += (size_t)w.nc) {
+        if ((st = field_values(s, w.name, col, path, err))) {
             scratch_free(&sc);
             return st;
         }
+        for (size_t i = 0; i < n; i++)
+            memcpy(rows + i * row_len + c, col + i * (size_t)w.nc, sizeof(double) * (size_t)w.nc);
     }
+
     dump d;
     if ((st = dump_open(&d, path, err))) {
         scratch_free(&sc);
@@ -284,26 +308,15 @@ hearth_status hearth_write_ply(const hearth_scene *s, const char *path, hearth_e
     }
     /* %.17g: the time reads back as the same double. */
     put_text(&d, "ply\nformat binary_little_endian 1.0\ncomment hearth t=%.17g\n", stats.t);
-    static const char *const xyz[3] = {"_x", "_y", "_z"};
     w = (field_walk){sc.names, "", 0};
-    while (field_next(&w)) put_text(&d, "comment unit %s %s\n", w.name, hearth_field_unit(w.name));
+    while (field_next(&w)) put_text(&d, "comment unit %s %s\n", w.name, unit_of(w.name));
     put_text(&d, "element vertex %zu\nproperty double x\nproperty double y\nproperty double z\n", n);
+    static const char *const axis[3] = {"_x", "_y", "_z"};
     w = (field_walk){sc.names, "", 0};
     while (field_next(&w))
-        for (int k = 0; k < w.nc; k++) put_text(&d, "property double %s%s\n", w.name, w.nc == 1 ? "" : xyz[k]);
+        for (int k = 0; k < w.nc; k++) put_text(&d, "property double %s%s\n", w.name, w.nc == 1 ? "" : axis[k]);
     put_text(&d, "end_header\n");
-
-    const double *x = hearth_scene_positions(s);
-    for (size_t i = 0; i < n && !d.err_no; i++) {
-        memcpy(row, x + 3 * i, 3 * sizeof(double));
-        /* Column c of particle i sits at cols[c*n + i*nc_of_field + k]: each
-         * field's block is n*nc values laid out particle-major. */
-        size_t r = 3;
-        w = (field_walk){sc.names, "", 0};
-        for (size_t c = 0; field_next(&w); c += (size_t)w.nc)
-            for (int k = 0; k < w.nc; k++) row[r++] = cols[c * n + i * (size_t)w.nc + (size_t)k];
-        put_le(&d, row, sizeof(double), row_len);
-    }
+    put_le(&d, rows, sizeof(double), n * row_len);
     scratch_free(&sc);
     return dump_finish(&d, path, err);
 }
