@@ -1,0 +1,294 @@
+/* cmd_run.c: `hearth run SCENE.lua` (headless, progress bar, outputs) and
+ * `hearth repl [SCENE.lua]` (a plain Lua prompt; lines from a pipe run too). */
+#include <errno.h>
+#include <lauxlib.h>
+#include <lua.h>
+#include <lualib.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "commands.h"
+#include "hearth/hearth.h"
+#include "hearth_lua.h"
+#include "progress.h"
+
+typedef struct run_args {
+    const char *scene;
+    const char *out;
+    double until;
+    long frames;
+    int quiet, trust;
+    const char *sets[65];
+    int nsets;
+    char out_buf[4096], dir_buf[4096];
+} run_args;
+
+static void run_usage(FILE *f, const char *cmd) {
+    if (!strcmp(cmd, "repl"))
+        fprintf(f, "usage: hearth repl [SCENE.lua] [--out DIR] [--set k=v]... [--threads N] [--trust]\n"
+                   "A plain Lua prompt (no curses) with the scene loaded; its variables are globals.\n"
+                   "Lines read from a pipe run too:  echo 'print(s:stats().t)' | hearth repl scene.lua\n");
+    else
+        fprintf(f, "usage: hearth run SCENE.lua [--until T] [--frames N] [--out DIR] [--set k=v]... [--threads N] [--quiet] [--trust]\n"
+                   "Runs a Lua scene headless. Outputs go to DIR (default ./hearth-out/<scene name>/).\n"
+                   "  --until T    stop every s:run at sim time T (s)\n"
+                   "  --frames N   N frames per run (every = span / N)\n"
+                   "  --set k=v    override a parameter the scene declares with h.params{...}\n"
+                   "  --threads N  OpenMP threads (results do not depend on it)\n"
+                   "  --quiet      no progress output\n"
+                   "  --trust      lift the sandbox (os.execute, io.popen, writes outside DIR, C modules)\n"
+                   "Exit status: 0 done, 1 scene error, 2 bad usage, 3 the stability guard stopped the run.\n");
+}
+
+static int mkdir_p(const char *dir) {
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s", dir);
+    for (char *p = buf + 1; *p; p++)
+        if (*p == '/') {
+            *p = '\0';
+            if (mkdir(buf, 0777) && errno != EEXIST) return -1;
+            *p = '/';
+        }
+    return mkdir(buf, 0777) && errno != EEXIST ? -1 : 0;
+}
+
+static int parse(run_args *a, int argc, char **argv, const char *cmd) {
+    memset(a, 0, sizeof *a);
+    for (int i = 1; i < argc; i++) {
+        const char *s = argv[i];
+        if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
+            run_usage(stdout, cmd);
+            return 1;
+        }
+        if (!strcmp(s, "--quiet")) { a->quiet = 1; continue; }
+        if (!strcmp(s, "--trust")) { a->trust = 1; continue; }
+        if (s[0] == '-' && s[1] == '-') {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "hearth %s: %s needs a value (see --help)\n", cmd, s);
+                return 2;
+            }
+            const char *v = argv[++i];
+            if (!strcmp(s, "--out")) a->out = v;
+            else if (!strcmp(s, "--until")) {
+                char *end;
+                a->until = strtod(v, &end);
+                if (*end || !(a->until > 0)) {
+                    fprintf(stderr, "hearth %s: --until needs a time > 0 in seconds, got '%s'\n", cmd, v);
+                    return 2;
+                }
+            } else if (!strcmp(s, "--frames")) {
+                if ((a->frames = app_parse_int(cmd, "--frames", v, 1, 1000000)) < 0) return 2;
+            } else if (!strcmp(s, "--threads")) {
+                long t = app_parse_int(cmd, "--threads", v, 1, 1024);
+                if (t < 0) return 2;
+                hearth_set_threads((int)t);
+            } else if (!strcmp(s, "--set")) {
+                if (!strchr(v, '=') || v[0] == '=') {
+                    fprintf(stderr, "hearth %s: --set needs name=value, got '%s'\n", cmd, v);
+                    return 2;
+                }
+                if (a->nsets == 64) {
+                    fprintf(stderr, "hearth %s: at most 64 --set options\n", cmd);
+                    return 2;
+                }
+                a->sets[a->nsets++] = v;
+            } else {
+                fprintf(stderr, "hearth %s: unknown option '%s' (see --help)\n", cmd, s);
+                return 2;
+            }
+            continue;
+        }
+        if (a->scene) {
+            fprintf(stderr, "hearth %s: one scene file at a time ('%s' and '%s')\n", cmd, a->scene, s);
+            return 2;
+        }
+        a->scene = s;
+    }
+    if (!a->scene && !strcmp(cmd, "run")) {
+        fprintf(stderr, "hearth run: which scene? usage: hearth run SCENE.lua (see --help)\n");
+        return 2;
+    }
+    if (a->scene && access(a->scene, R_OK) != 0) {
+        fprintf(stderr, "hearth %s: cannot read scene '%s': %s\n", cmd, a->scene, strerror(errno));
+        return 2;
+    }
+    /* scene folder (plugins and assets next to a scene are found) and default output folder */
+    snprintf(a->dir_buf, sizeof a->dir_buf, "%s", a->scene ? a->scene : ".");
+    char *slash = strrchr(a->dir_buf, '/');
+    if (!a->scene) snprintf(a->dir_buf, sizeof a->dir_buf, ".");
+    else if (slash) *slash = '\0';
+    else snprintf(a->dir_buf, sizeof a->dir_buf, ".");
+    if (!a->out) {
+        const char *base = a->scene ? strrchr(a->scene, '/') : NULL;
+        base = base ? base + 1 : (a->scene ? a->scene : "repl");
+        size_t n = strlen(base);
+        if (n > 4 && !strcmp(base + n - 4, ".lua")) n -= 4;
+        snprintf(a->out_buf, sizeof a->out_buf, "hearth-out/%.*s", (int)n, base);
+        a->out = a->out_buf;
+    }
+    return 0;
+}
+
+static void on_progress(void *ud, double t, double t_end, long steps, int final) {
+    progress *p = ud;
+    p->t_end = t_end;
+    if (final) progress_finish(p, t, steps);
+    else progress_update(p, t, steps);
+}
+
+/* Report a failed protected call; returns the exit status (3 for a guard stop). */
+static int report(lua_State *L, const char *cmd) {
+    if (lua_istable(L, -1)) {
+        lua_getfield(L, -1, "message");
+        fprintf(stderr, "hearth %s: the stability guard stopped the run:\n  %s\n", cmd, lua_tostring(L, -1));
+        lua_pop(L, 2);
+        return 3;
+    }
+    fprintf(stderr, "hearth %s: %s\n", cmd, lua_tostring(L, -1));
+    lua_pop(L, 1);
+    return 1;
+}
+
+static lua_State *start(run_args *a, progress *pr, const char *cmd) {
+    if (mkdir_p(a->out)) {
+        fprintf(stderr, "hearth %s: cannot create output folder '%s': %s\n", cmd, a->out, strerror(errno));
+        return NULL;
+    }
+    hearth_plugin_path_add(a->dir_buf);
+    lua_State *L = luaL_newstate();
+    if (!L) {
+        fprintf(stderr, "hearth %s: out of memory starting Lua\n", cmd);
+        return NULL;
+    }
+    luaL_openlibs(L);
+    progress_start(pr, a->until, a->quiet);
+    hl_options o = {.out_dir = a->out, .scene_dir = a->dir_buf, .until_override = a->until,
+                    .frames_override = (int)a->frames, .quiet = a->quiet, .trusted = a->trust,
+                    .sets = a->sets, .progress = on_progress, .progress_ud = pr};
+    hl_open(L, &o);
+    return L;
+}
+
+int cmd_run(int argc, char **argv) {
+    run_args a;
+    int rc = parse(&a, argc, argv, "run");
+    if (rc) return rc == 1 ? 0 : rc;
+    progress pr;
+    lua_State *L = start(&a, &pr, "run");
+    if (!L) return 1;
+    int status = 0;
+    if (luaL_loadfilex(L, a.scene, "t") != LUA_OK) status = report(L, "run");
+    else if (hl_pcall(L, 0, 0) != LUA_OK) status = report(L, "run");
+    else { /* h._finish(): --set checks, and run a scene the file built but did not run */
+        lua_getglobal(L, "require");
+        lua_pushliteral(L, "hearth");
+        if (hl_pcall(L, 1, 1) != LUA_OK) status = report(L, "run");
+        else {
+            lua_getfield(L, -1, "_finish");
+            if (hl_pcall(L, 0, 0) != LUA_OK) status = report(L, "run");
+            lua_pop(L, 1);
+        }
+    }
+    if (status == 0 && !a.quiet) fprintf(stderr, "hearth run: done; outputs in %s/\n", a.out);
+    lua_close(L);
+    return status;
+}
+
+/* ---- repl ------------------------------------------------------------- */
+
+static int incomplete(lua_State *L, int status) {
+    if (status != LUA_ERRSYNTAX) return 0;
+    size_t n;
+    const char *msg = lua_tolstring(L, -1, &n);
+    return n >= 5 && !strcmp(msg + n - 5, "<eof>");
+}
+
+int cmd_repl(int argc, char **argv) {
+    run_args a;
+    int rc = parse(&a, argc, argv, "repl");
+    if (rc) return rc == 1 ? 0 : rc;
+    a.quiet = 1;
+    progress pr;
+    lua_State *L = start(&a, &pr, "repl");
+    if (!L) return 1;
+    const int tty = isatty(0);
+    if (a.scene) {
+        if (luaL_loadfilex(L, a.scene, "t") != LUA_OK || hl_pcall(L, 0, 0) != LUA_OK) {
+            int st = report(L, "repl");
+            lua_close(L);
+            return st;
+        }
+    }
+    /* `h` is always at hand; `s` is the scene the file built */
+    lua_getglobal(L, "require");
+    lua_pushliteral(L, "hearth");
+    if (hl_pcall(L, 1, 1) == LUA_OK) {
+        lua_getfield(L, -1, "_last_scene");
+        if (!lua_isnil(L, -1)) {
+            lua_getglobal(L, "s");
+            if (lua_isnil(L, -1)) lua_pushvalue(L, -2), lua_setglobal(L, "s");
+            lua_pop(L, 1);
+        }
+        lua_pop(L, 1);
+        lua_setglobal(L, "h");
+    } else lua_pop(L, 1);
+    if (tty) printf("hearth %s repl: Lua 5.4 with the scene loaded (h = require \"hearth\"); Ctrl-D quits\n", HEARTH_VERSION);
+    char line[8192];
+    luaL_Buffer *unused = NULL;
+    (void)unused;
+    char *buf = NULL;
+    size_t blen = 0;
+    int errors = 0;
+    for (;;) {
+        if (tty) {
+            fputs(blen ? ">> " : "> ", stdout);
+            fflush(stdout);
+        }
+        if (!fgets(line, sizeof line, stdin)) break;
+        size_t ln = strlen(line);
+        char *nb = realloc(buf, blen + ln + 1);
+        if (!nb) break;
+        buf = nb;
+        memcpy(buf + blen, line, ln + 1);
+        blen += ln;
+        /* an expression prints its value; otherwise a statement */
+        lua_pushfstring(L, "return %s", buf);
+        int st = luaL_loadbufferx(L, lua_tostring(L, -1), strlen(lua_tostring(L, -1)), "=stdin", "t");
+        lua_remove(L, -2);
+        if (st != LUA_OK) {
+            lua_pop(L, 1);
+            st = luaL_loadbufferx(L, buf, blen, "=stdin", "t");
+        }
+        if (incomplete(L, st)) { /* multi-line input: keep reading */
+            lua_pop(L, 1);
+            continue;
+        }
+        blen = 0;
+        if (st != LUA_OK) {
+            fprintf(stderr, "%s\n", lua_tostring(L, -1));
+            lua_pop(L, 1);
+            errors++;
+            continue;
+        }
+        int top = lua_gettop(L) - 1;
+        if (hl_pcall(L, 0, LUA_MULTRET) != LUA_OK) {
+            report(L, "repl");
+            errors++;
+            continue;
+        }
+        int nres = lua_gettop(L) - top;
+        for (int i = 1; i <= nres; i++) {
+            printf("%s%s", luaL_tolstring(L, top + i, NULL), i < nres ? "\t" : "\n");
+            lua_pop(L, 1);
+        }
+        lua_settop(L, top);
+        fflush(stdout);
+    }
+    free(buf);
+    if (tty) printf("\n");
+    lua_close(L);
+    return errors && !tty ? 1 : 0;
+}

@@ -1,0 +1,108 @@
+/* lua_output.c: files a scene writes: pictures, particle dumps, checkpoints,
+ * and the atomic text writer the Lua side uses for CSV series. Relative paths
+ * resolve under the output folder, which is created when missing. */
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "atomic_file.h"
+#include "hearth_lua.h"
+
+static int mkdir_p(const char *dir) {
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s", dir);
+    for (char *p = buf + 1; *p; p++)
+        if (*p == '/') {
+            *p = '\0';
+            if (mkdir(buf, 0777) && errno != EEXIST) return -1;
+            *p = '/';
+        }
+    return mkdir(buf, 0777) && errno != EEXIST ? -1 : 0;
+}
+
+const char *hl_out_path(lua_State *L, const char *path, char *buf, size_t n) {
+    const hl_options *o = hl_opts(L);
+    if (path[0] == '/' || !o->out_dir) snprintf(buf, n, "%s", path);
+    else snprintf(buf, n, "%s/%s", o->out_dir, path);
+    /* make the file's folder, so "frames/t0001.png" just works */
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s", buf);
+    char *slash = strrchr(dir, '/');
+    if (slash && slash != dir) {
+        *slash = '\0';
+        if (mkdir_p(dir)) luaL_error(L, "cannot create folder '%s': %s", dir, strerror(errno));
+    }
+    return buf;
+}
+
+/* s:png(field, path, {kind = "slice"|"particles", width, height, axis, at}) */
+static int l_png(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const char *field = luaL_checkstring(L, 2);
+    char buf[4096];
+    const char *path = hl_out_path(L, luaL_checkstring(L, 3), buf, sizeof buf);
+    const char *kind = "slice";
+    int width = 800, height = 600, axis = hearth_scene_get_def(u->s)->dim == 2 ? 2 : 2;
+    double at = 0.5 * (hearth_scene_get_def(u->s)->lo[2] + hearth_scene_get_def(u->s)->hi[2]);
+    if (lua_istable(L, 4)) {
+        if (lua_getfield(L, 4, "kind") == LUA_TSTRING) kind = lua_tostring(L, -1);
+        if (lua_getfield(L, 4, "width") == LUA_TNUMBER) width = (int)lua_tointeger(L, -1);
+        if (lua_getfield(L, 4, "height") == LUA_TNUMBER) height = (int)lua_tointeger(L, -1);
+        if (lua_getfield(L, 4, "axis") == LUA_TSTRING) {
+            const char *a = lua_tostring(L, -1);
+            axis = a[0] == 'x' ? 0 : a[0] == 'y' ? 1 : 2;
+        }
+        if (lua_getfield(L, 4, "at") == LUA_TNUMBER) at = lua_tonumber(L, -1);
+        lua_pop(L, 5);
+    }
+    hearth_error err;
+    hearth_status st;
+    if (!strcmp(kind, "particles")) st = hearth_render_particles(u->s, field, path, width, height, &err);
+    else if (!strcmp(kind, "slice")) st = hearth_render_slice(u->s, field, axis, at, path, width, &err);
+    else return luaL_error(L, "png: kind = '%s'; valid: 'slice', 'particles'", kind);
+    if (st) return hl_raise(L, &err);
+    lua_pushstring(L, path);
+    return 1;
+}
+
+static int dump(lua_State *L, hearth_status (*fn)(const hearth_scene *, const char *, hearth_error *)) {
+    hl_scene *u = hl_checkscene(L, 1);
+    char buf[4096];
+    const char *path = hl_out_path(L, luaL_checkstring(L, 2), buf, sizeof buf);
+    hearth_error err;
+    if (fn(u->s, path, &err)) return hl_raise(L, &err);
+    lua_pushstring(L, path);
+    return 1;
+}
+static int l_vtu(lua_State *L) { return dump(L, hearth_write_vtu); }
+static int l_ply(lua_State *L) { return dump(L, hearth_write_ply); }
+static int l_save(lua_State *L) { return dump(L, hearth_scene_save); }
+
+/* core.write_atomic(path, text): for CSV series and anything else a scene writes */
+static int l_write_atomic(lua_State *L) {
+    size_t len;
+    char buf[4096];
+    const char *path = hl_out_path(L, luaL_checkstring(L, 1), buf, sizeof buf);
+    const char *text = luaL_checklstring(L, 2, &len);
+    atomic_file af;
+    hearth_error err;
+    if (atomic_open(&af, path, &err)) return hl_raise(L, &err);
+    if (len && fwrite(text, len, 1, af.f) != 1) {
+        atomic_abort(&af);
+        return luaL_error(L, "%s: write failed", path);
+    }
+    if (atomic_commit(&af, &err)) return hl_raise(L, &err);
+    lua_pushstring(L, path);
+    return 1;
+}
+
+void hl_open_output(lua_State *L) {
+    luaL_getmetatable(L, HL_SCENE);
+    lua_getfield(L, -1, "__index");
+    static const luaL_Reg methods[] = {{"png", l_png}, {"vtu", l_vtu}, {"ply", l_ply}, {"save", l_save}, {NULL, NULL}};
+    luaL_setfuncs(L, methods, 0);
+    lua_pop(L, 2);
+    lua_pushcfunction(L, l_write_atomic);
+    lua_setfield(L, -2, "write_atomic");
+}

@@ -1,0 +1,497 @@
+/* lua_scene.c: the scene userdata. Each method is one core operation; the
+ * Lua side (lua/hearth/init.lua) validates tables and adds events, runs and
+ * frames on top. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hearth_lua.h"
+
+hl_scene *hl_checkscene(lua_State *L, int idx) {
+    hl_scene *u = luaL_checkudata(L, idx, HL_SCENE);
+    if (!u->s) luaL_argerror(L, idx, "scene was released");
+    return u;
+}
+
+int hl_raise(lua_State *L, const hearth_error *err) {
+    if (err->code == HEARTH_ERR_GUARD) { /* a table, so `hearth run` can tell a guard stop (exit 3) from a script error */
+        lua_createtable(L, 0, 2);
+        lua_pushboolean(L, 1);
+        lua_setfield(L, -2, "guard");
+        lua_pushstring(L, err->msg);
+        lua_setfield(L, -2, "message");
+        luaL_getmetatable(L, "hearth.guard_error");
+        lua_setmetatable(L, -2);
+        return lua_error(L);
+    }
+    return luaL_error(L, "%s", err->msg);
+}
+
+/* core.scene_new{dim, dx, lo, hi, gravity, cfl, dt_max, wall, friction, guard, max_rollbacks, seed}
+ * (already validated and filled with defaults by init.lua) */
+static double field_num(lua_State *L, int t, const char *k) {
+    lua_getfield(L, t, k);
+    double x = lua_tonumber(L, -1);
+    lua_pop(L, 1);
+    return x;
+}
+
+static void field_vec(lua_State *L, int t, const char *k, double v[3]) {
+    lua_getfield(L, t, k);
+    hl_checkvec(L, lua_gettop(L), k, v);
+    lua_pop(L, 1);
+}
+
+static int l_scene_new(lua_State *L) {
+    luaL_checktype(L, 1, LUA_TTABLE);
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dim = (int)field_num(L, 1, "dim");
+    d.dx = field_num(L, 1, "dx");
+    field_vec(L, 1, "lo", d.lo);
+    field_vec(L, 1, "hi", d.hi);
+    field_vec(L, 1, "gravity", d.gravity);
+    d.cfl = field_num(L, 1, "cfl");
+    d.dt_max = field_num(L, 1, "dt_max");
+    d.wall = (hearth_contact)field_num(L, 1, "wall");
+    d.wall_friction = field_num(L, 1, "friction");
+    d.guard = (hearth_guard_policy)field_num(L, 1, "guard");
+    d.max_rollbacks = (int)field_num(L, 1, "max_rollbacks");
+    d.seed = (uint64_t)field_num(L, 1, "seed");
+    hl_scene *u = lua_newuserdatauv(L, sizeof *u, 1);
+    u->s = NULL;
+    luaL_setmetatable(L, HL_SCENE);
+    lua_newtable(L); /* per-scene Lua state: materials, colliders' motion, events */
+    lua_setiuservalue(L, -2, 1);
+    hearth_error err;
+    u->s = hearth_scene_create(&d, &err);
+    if (!u->s) return hl_raise(L, &err);
+    return 1;
+}
+
+static int l_gc(lua_State *L) {
+    hl_scene *u = luaL_checkudata(L, 1, HL_SCENE);
+    hearth_scene_destroy(u->s);
+    u->s = NULL;
+    return 0;
+}
+
+/* s:_state() -> the per-scene Lua table */
+static int l_state(lua_State *L) {
+    hl_checkscene(L, 1);
+    lua_getiuservalue(L, 1, 1);
+    return 1;
+}
+
+/* s:_material(plugin, {name = number, ...}) -> id */
+static int l_material(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const char *plugin = luaL_checkstring(L, 2);
+    luaL_checktype(L, 3, LUA_TTABLE);
+    const char *names[256];
+    double vals[256];
+    int n = 0;
+    lua_pushnil(L);
+    while (lua_next(L, 3) && n < 256) {
+        names[n] = lua_tostring(L, -2);
+        vals[n++] = lua_tonumber(L, -1);
+        lua_pop(L, 1);
+    }
+    hearth_error err;
+    int id = hearth_scene_add_material(u->s, plugin, names, vals, n, &err);
+    if (id < 0) return hl_raise(L, &err);
+    lua_pushinteger(L, id);
+    return 1;
+}
+
+/* core.material_check(plugin, {name = number}) -> true or raises */
+static int l_material_check(lua_State *L) {
+    const char *plugin = luaL_checkstring(L, 1);
+    luaL_checktype(L, 2, LUA_TTABLE);
+    const char *names[256];
+    double vals[256];
+    int n = 0;
+    lua_pushnil(L);
+    while (lua_next(L, 2) && n < 256) {
+        names[n] = lua_tostring(L, -2);
+        vals[n++] = lua_tonumber(L, -1);
+        lua_pop(L, 1);
+    }
+    hearth_error err;
+    if (hearth_material_check(plugin, names, vals, n, &err)) return hl_raise(L, &err);
+    lua_pushboolean(L, 1);
+    return 1;
+}
+
+/* s:_curve(mat, param, {T...}, {v...}, irreversible) */
+static int l_curve(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    int mat = (int)luaL_checkinteger(L, 2);
+    const char *param = luaL_checkstring(L, 3);
+    int n = (int)luaL_len(L, 4);
+    if (n < 1 || n > 10000 || luaL_len(L, 5) != n) luaL_error(L, "curve for '%s': need 1..10000 points", param);
+    double *T = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n, 0), *v = T + n; /* freed by the GC */
+    for (int i = 0; i < n; i++) {
+        lua_geti(L, 4, i + 1);
+        T[i] = lua_tonumber(L, -1);
+        lua_geti(L, 5, i + 1);
+        v[i] = lua_tonumber(L, -1);
+        lua_pop(L, 2);
+    }
+    hearth_error err;
+    if (hearth_scene_material_curve(u->s, mat, param, n, T, v, lua_toboolean(L, 6), &err)) return hl_raise(L, &err);
+    return 0;
+}
+
+/* s:_add(shape, mat, ppc, jitter, velocity, temperature|nil) -> body id */
+static int l_add(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    hearth_body_def b = hearth_default_body_def();
+    b.shape = hl_checkshape(L, 2);
+    b.material = (int)luaL_checkinteger(L, 3);
+    b.ppc = (int)luaL_checkinteger(L, 4);
+    b.jitter = luaL_checknumber(L, 5);
+    hl_checkvec(L, 6, "velocity", b.velocity);
+    b.temperature = lua_isnoneornil(L, 7) ? NAN : luaL_checknumber(L, 7);
+    hearth_error err;
+    int id = hearth_scene_add_body(u->s, &b, &err);
+    if (id < 0) return hl_raise(L, &err);
+    lua_pushinteger(L, id);
+    return 1;
+}
+
+/* Collider motion from Lua functions. The record lives in the scene's state
+ * table so the GC keeps it while the scene lives. A Lua error inside the
+ * step cannot unwind through the C library: it is caught, the collider
+ * stops for that step, and the error is raised when the step returns. */
+typedef struct hl_motion {
+    lua_State *L;
+    int vref, oref;   /* registry refs of velocity(t) and omega(t), or LUA_NOREF */
+    int failed;
+    char msg[512];
+} hl_motion;
+
+static void call_vec(hl_motion *m, int ref, double t, double out[3], int scalar_is_z) {
+    lua_State *L = m->L;
+    out[0] = out[1] = out[2] = 0;
+    if (ref == LUA_NOREF || m->failed) return;
+    lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+    lua_pushnumber(L, t);
+    if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+        m->failed = 1;
+        snprintf(m->msg, sizeof m->msg, "collider motion function: %s", lua_tostring(L, -1));
+    } else if (lua_isnumber(L, -1) && scalar_is_z) {
+        out[2] = lua_tonumber(L, -1); /* a 2D spin: omega about z */
+    } else if (lua_istable(L, -1)) {
+        for (int k = 0; k < 3; k++) {
+            lua_geti(L, -1, k + 1);
+            out[k] = lua_isnumber(L, -1) ? lua_tonumber(L, -1) : 0;
+            lua_pop(L, 1);
+        }
+    } else {
+        m->failed = 1;
+        snprintf(m->msg, sizeof m->msg, "collider motion function at t = %g returned %s; expected a vector%s", t,
+                 luaL_typename(L, -1), scalar_is_z ? " or a number" : "");
+    }
+    lua_pop(L, 1);
+}
+
+static void motion_cb(void *ud, double t, double v[3], double omega[3]) {
+    hl_motion *m = ud;
+    call_vec(m, m->vref, t, v, 0);
+    call_vec(m, m->oref, t, omega, 1);
+}
+
+static int motion_check(lua_State *L) {
+    lua_getiuservalue(L, 1, 1);
+    if (lua_getfield(L, -1, "motions") == LUA_TTABLE) {
+        lua_Integer n = luaL_len(L, -1);
+        for (lua_Integer i = 1; i <= n; i++) {
+            lua_geti(L, -1, i);
+            hl_motion *m = lua_touserdata(L, -1);
+            if (m && m->failed) {
+                m->failed = 0;
+                return luaL_error(L, "%s", m->msg);
+            }
+            lua_pop(L, 1);
+        }
+    }
+    lua_pop(L, 2);
+    return 0;
+}
+
+static int l_motion_gc(lua_State *L) {
+    hl_motion *m = lua_touserdata(L, 1);
+    luaL_unref(L, LUA_REGISTRYINDEX, m->vref);
+    luaL_unref(L, LUA_REGISTRYINDEX, m->oref);
+    m->vref = m->oref = LUA_NOREF;
+    return 0;
+}
+
+/* s:_collider(shape, mode, friction, velocity (vec|fn), omega (num|vec|fn), pivot) -> id */
+static int l_collider(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    hearth_collider_def cd = hearth_default_collider_def();
+    cd.shape = hl_checkshape(L, 2);
+    cd.mode = (hearth_contact)luaL_checkinteger(L, 3);
+    cd.friction = luaL_checknumber(L, 4);
+    int vfn = lua_isfunction(L, 5), ofn = lua_isfunction(L, 6);
+    if (!vfn && !lua_isnil(L, 5)) hl_checkvec(L, 5, "collider velocity", cd.velocity);
+    if (!ofn && lua_isnumber(L, 6)) cd.omega[2] = lua_tonumber(L, 6);
+    else if (!ofn && !lua_isnil(L, 6)) hl_checkvec(L, 6, "collider omega", cd.omega);
+    if (!lua_isnil(L, 7)) hl_checkvec(L, 7, "collider pivot", cd.pivot);
+    if (vfn || ofn) {
+        hl_motion *m = lua_newuserdatauv(L, sizeof *m, 0);
+        memset(m, 0, sizeof *m);
+        m->L = L;
+        m->vref = m->oref = LUA_NOREF;
+        if (luaL_newmetatable(L, "hearth.motion")) {
+            lua_pushcfunction(L, l_motion_gc);
+            lua_setfield(L, -2, "__gc");
+        }
+        lua_setmetatable(L, -2);
+        if (vfn) {
+            lua_pushvalue(L, 5);
+            m->vref = luaL_ref(L, LUA_REGISTRYINDEX);
+        }
+        if (ofn) {
+            lua_pushvalue(L, 6);
+            m->oref = luaL_ref(L, LUA_REGISTRYINDEX);
+        }
+        lua_getiuservalue(L, 1, 1);
+        if (lua_getfield(L, -1, "motions") != LUA_TTABLE) {
+            lua_pop(L, 1);
+            lua_newtable(L);
+            lua_pushvalue(L, -1);
+            lua_setfield(L, -3, "motions");
+        }
+        lua_pushvalue(L, -3);
+        lua_seti(L, -2, luaL_len(L, -2) + 1);
+        lua_pop(L, 2);
+        cd.motion = motion_cb;
+        cd.motion_ud = m;
+    }
+    hearth_error err;
+    int id = hearth_scene_add_collider(u->s, &cd, &err);
+    if (id < 0) return hl_raise(L, &err);
+    motion_check(L);
+    lua_pushinteger(L, id);
+    return 1;
+}
+
+/* s:_advance(t_end) / s:_step(n): one core call each; raises on guard stops */
+static int l_advance(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    hearth_error err;
+    hearth_status st = hearth_scene_advance(u->s, luaL_checknumber(L, 2), &err);
+    motion_check(L);
+    if (st) return hl_raise(L, &err);
+    return 0;
+}
+
+static int l_step_raw(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    hearth_error err;
+    hearth_status st = hearth_scene_step(u->s, (int)luaL_optinteger(L, 2, 1), &err);
+    motion_check(L);
+    if (st) return hl_raise(L, &err);
+    return 0;
+}
+
+static int l_push(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    double v[3];
+    hl_checkvec(L, 3, "push velocity", v);
+    hearth_error err;
+    if (hearth_scene_body_set_velocity(u->s, (int)luaL_checkinteger(L, 2), v, &err)) return hl_raise(L, &err);
+    return 0;
+}
+
+static int l_cut(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    hearth_error err;
+    int n = hearth_scene_remove_inside(u->s, hl_checkshape(L, 2), &err);
+    if (n < 0) return hl_raise(L, &err);
+    lua_pushinteger(L, n);
+    return 1;
+}
+
+static int l_move(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    double d[3];
+    hl_checkvec(L, 3, "move by", d);
+    hearth_error err;
+    if (hearth_scene_collider_translate(u->s, (int)luaL_checkinteger(L, 2), d, &err)) return hl_raise(L, &err);
+    return 0;
+}
+
+static int l_collider_velocity(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    double v[3] = {0, 0, 0}, w[3] = {0, 0, 0};
+    hl_checkvec(L, 3, "collider velocity", v);
+    if (lua_isnumber(L, 4)) w[2] = lua_tonumber(L, 4);
+    else if (!lua_isnoneornil(L, 4)) hl_checkvec(L, 4, "collider omega", w);
+    hearth_error err;
+    if (hearth_scene_collider_set_velocity(u->s, (int)luaL_checkinteger(L, 2), v, w, &err)) return hl_raise(L, &err);
+    return 0;
+}
+
+static int l_set_dt(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const hearth_scene_def *d = hearth_scene_get_def(u->s);
+    hearth_error err;
+    if (hearth_scene_set_dt_limits(u->s, luaL_optnumber(L, 2, d->cfl), luaL_optnumber(L, 3, d->dt_max), &err))
+        return hl_raise(L, &err);
+    return 0;
+}
+
+static void push_values(lua_State *L, const double *v, int n) {
+    if (n == 1) {
+        lua_pushnumber(L, v[0]);
+        return;
+    }
+    lua_createtable(L, n, 0);
+    for (int k = 0; k < n; k++) {
+        lua_pushnumber(L, v[k]);
+        lua_seti(L, -2, k + 1);
+    }
+}
+
+static int l_probe(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const char *f = luaL_checkstring(L, 2);
+    double x[3], out[3];
+    hl_checkvec(L, 3, "probe point", x);
+    hearth_error err;
+    if (hearth_probe_point(u->s, f, x, out, &err)) return hl_raise(L, &err);
+    push_values(L, out, hearth_field_components(f));
+    return 1;
+}
+
+static int l_line(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const char *f = luaL_checkstring(L, 2);
+    double a[3], b[3];
+    hl_checkvec(L, 3, "line start", a);
+    hl_checkvec(L, 4, "line end", b);
+    int n = (int)luaL_checkinteger(L, 5), nc = hearth_field_components(f);
+    if (n < 2 || n > 1000000) luaL_error(L, "line: n = %d samples; valid range [2, 1000000]", n);
+    double *out = lua_newuserdatauv(L, sizeof(double) * (size_t)n * (size_t)(nc > 0 ? nc : 1), 0);
+    hearth_error err;
+    if (hearth_probe_line(u->s, f, a, b, n, out, &err)) return hl_raise(L, &err);
+    lua_createtable(L, n, 0);
+    for (int i = 0; i < n; i++) {
+        push_values(L, out + (size_t)i * nc, nc);
+        lua_seti(L, -2, i + 1);
+    }
+    return 1;
+}
+
+/* s:_slice(field, axis, at, w, h) -> rows (h tables of w numbers, row 1 at the low end) */
+static int l_slice(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const char *f = luaL_checkstring(L, 2);
+    int axis = (int)luaL_checkinteger(L, 3), w = (int)luaL_checkinteger(L, 5), h = (int)luaL_checkinteger(L, 6);
+    if (w < 1 || h < 1 || (long)w * h > 16L * 1024 * 1024) luaL_error(L, "slice: res %d x %d; each side >= 1, total <= 16M", w, h);
+    double *out = lua_newuserdatauv(L, sizeof(double) * (size_t)w * (size_t)h, 0);
+    hearth_error err;
+    if (hearth_probe_slice(u->s, f, axis, luaL_checknumber(L, 4), w, h, out, &err)) return hl_raise(L, &err);
+    lua_createtable(L, h, 0);
+    for (int r = 0; r < h; r++) {
+        lua_createtable(L, w, 0);
+        for (int c = 0; c < w; c++) {
+            lua_pushnumber(L, out[(size_t)r * w + c]);
+            lua_seti(L, -2, c + 1);
+        }
+        lua_seti(L, -2, r + 1);
+    }
+    return 1;
+}
+
+static int l_stats(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    hearth_stats st;
+    hearth_scene_stats(u->s, &st);
+    lua_createtable(L, 0, 14);
+    lua_pushnumber(L, st.t); lua_setfield(L, -2, "t");
+    lua_pushinteger(L, st.step); lua_setfield(L, -2, "step");
+    lua_pushnumber(L, st.dt); lua_setfield(L, -2, "dt");
+    lua_pushinteger(L, st.particles); lua_setfield(L, -2, "particles");
+    lua_pushnumber(L, st.kinetic); lua_setfield(L, -2, "kinetic");
+    lua_pushnumber(L, st.max_speed); lua_setfield(L, -2, "max_speed");
+    lua_pushnumber(L, st.cfl); lua_setfield(L, -2, "cfl");
+    lua_pushnumber(L, st.wave_speed); lua_setfield(L, -2, "wave_speed");
+    lua_pushinteger(L, st.out_of_domain); lua_setfield(L, -2, "out_of_domain");
+    lua_pushinteger(L, st.rollbacks); lua_setfield(L, -2, "rollbacks");
+    static const char *gs[] = {"ok", "rolled_back", "stopped"};
+    lua_pushstring(L, gs[st.guard]); lua_setfield(L, -2, "guard");
+    lua_pushstring(L, st.diagnosis); lua_setfield(L, -2, "diagnosis");
+    lua_pushinteger(L, hearth_scene_body_count(u->s)); lua_setfield(L, -2, "bodies");
+    /* the live fields as a list */
+    lua_newtable(L);
+    const char *f = hearth_scene_fields(u->s);
+    int k = 0;
+    while (*f) {
+        const char *e = strchr(f, ' ');
+        size_t len = e ? (size_t)(e - f) : strlen(f);
+        lua_pushlstring(L, f, len);
+        lua_seti(L, -2, ++k);
+        f += len + (e != NULL);
+    }
+    lua_setfield(L, -2, "fields");
+    return 1;
+}
+
+static int l_body_particles(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    lua_pushinteger(L, hearth_scene_body_particles(u->s, (int)luaL_checkinteger(L, 2)));
+    return 1;
+}
+
+static int l_hash(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    char buf[32];
+    snprintf(buf, sizeof buf, "%016llx", (unsigned long long)hearth_scene_hash(u->s));
+    lua_pushstring(L, buf);
+    return 1;
+}
+
+static int l_load(lua_State *L) {
+    char buf[4096];
+    const char *path = hl_out_path(L, luaL_checkstring(L, 1), buf, sizeof buf);
+    hearth_error err;
+    hearth_scene *s = hearth_scene_load(path, &err);
+    if (!s) return hl_raise(L, &err);
+    hl_scene *u = lua_newuserdatauv(L, sizeof *u, 1);
+    u->s = s;
+    luaL_setmetatable(L, HL_SCENE);
+    lua_newtable(L);
+    lua_setiuservalue(L, -2, 1);
+    return 1;
+}
+
+static int l_guard_tostring(lua_State *L) {
+    lua_getfield(L, 1, "message");
+    return 1;
+}
+
+void hl_open_scene(lua_State *L) {
+    static const luaL_Reg methods[] = {
+        {"_state", l_state},     {"_material", l_material}, {"_curve", l_curve},       {"_add", l_add},
+        {"_collider", l_collider}, {"_advance", l_advance}, {"_step", l_step_raw},     {"push", l_push},
+        {"cut", l_cut},          {"move", l_move},         {"collider_velocity", l_collider_velocity},
+        {"set_dt", l_set_dt},    {"probe", l_probe},       {"line", l_line},          {"_slice", l_slice},
+        {"stats", l_stats},      {"body_particles", l_body_particles}, {"hash", l_hash}, {NULL, NULL}};
+    luaL_newmetatable(L, HL_SCENE);
+    lua_pushcfunction(L, l_gc);
+    lua_setfield(L, -2, "__gc");
+    luaL_newlib(L, methods);
+    lua_setfield(L, -2, "__index");
+    lua_pop(L, 1);
+    luaL_newmetatable(L, "hearth.guard_error");
+    lua_pushcfunction(L, l_guard_tostring);
+    lua_setfield(L, -2, "__tostring");
+    lua_pop(L, 1);
+    static const luaL_Reg fns[] = {{"scene_new", l_scene_new}, {"load", l_load}, {"material_check", l_material_check},
+                                   {NULL, NULL}};
+    luaL_setfuncs(L, fns, 0);
+}
