@@ -43,8 +43,9 @@ static int l_png(lua_State *L) {
     char buf[4096];
     const char *path = hl_out_path(L, luaL_checkstring(L, 3), buf, sizeof buf);
     const char *kind = "slice";
-    int width = 800, height = 600, axis = hearth_scene_get_def(u->s)->dim == 2 ? 2 : 2;
-    double at = 0.5 * (hearth_scene_get_def(u->s)->lo[2] + hearth_scene_get_def(u->s)->hi[2]);
+    const hearth_scene_def *d = hearth_scene_get_def(u->s);
+    int width = 800, height = 0, axis = 2;
+    double at = 0.5 * (d->lo[2] + d->hi[2]);
     if (lua_istable(L, 4)) {
         if (lua_getfield(L, 4, "kind") == LUA_TSTRING) kind = lua_tostring(L, -1);
         if (lua_getfield(L, 4, "width") == LUA_TNUMBER) width = (int)lua_tointeger(L, -1);
@@ -56,6 +57,11 @@ static int l_png(lua_State *L) {
         if (lua_getfield(L, 4, "at") == LUA_TNUMBER) at = lua_tonumber(L, -1);
         lua_pop(L, 5);
     }
+    if (width < 64 || width > 8192) return luaL_error(L, "png: width = %d px; valid range [64, 8192]", width);
+    if (height == 0) /* follow the domain's aspect (plus room for the title and colour bar) */
+        height = (int)((width - 120) * (d->hi[1] - d->lo[1]) / (d->hi[0] - d->lo[0])) + 38;
+    if (height < 64) height = 64;
+    if (height > 8192) return luaL_error(L, "png: height = %d px; valid range [64, 8192]", height);
     hearth_error err;
     hearth_status st;
     if (!strcmp(kind, "particles")) st = hearth_render_particles(u->s, field, path, width, height, &err);

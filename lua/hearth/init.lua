@@ -131,6 +131,14 @@ function h.material(plugin, params)
   return setmetatable({ plugin = plugin, params = plain, curves = curves }, material_mt)
 end
 
+--- Write a text file (a CSV, a note) atomically; relative paths go under the output folder.
+function h.write(path, text)
+  if type(path) ~= "string" or type(text) ~= "string" then error("h.write(path, text): two strings", 2) end
+  local ok, e = pcall(core.write_atomic, path, text)
+  if not ok then error(e, 2) end
+  return e
+end
+
 -- ---- scene parameters -----------------------------------------------------
 
 --- Named defaults that `hearth run scene.lua --set name=value` overrides.

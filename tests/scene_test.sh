@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# scene_test.sh SCENE HEARTH SOURCE_ROOT: run a shipped scene for a few frames
+# and check it finishes and writes pictures that decode.
+set -u
+name=$1 hearth=$2 root=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp" || exit 1
+"$hearth" run "$root/scripts/scenes/$name.lua" --until 0.1 --frames 2 --quiet > out.txt 2> err.txt
+rc=$?
+[ $rc -eq 0 ] || { echo "FAIL: $name exited $rc: $(cat err.txt)" >&2; exit 1; }
+n=$(find "hearth-out/$name" -name '*.png' | wc -l)
+[ "$n" -ge 3 ] || { echo "FAIL: $name wrote $n PNG frames, expected at least 3" >&2; exit 1; }
+for f in $(find "hearth-out/$name" -name '*.png'); do
+    python3 - "$f" <<'PY' || { echo "FAIL: $f does not decode" >&2; exit 1; }
+import sys, zlib, struct
+b = open(sys.argv[1], "rb").read()
+assert b[:8] == b"\x89PNG\r\n\x1a\n"
+i, idat = 8, b""
+while i < len(b):
+    n, t = struct.unpack(">I4s", b[i:i + 8])
+    if t == b"IDAT": idat += b[i + 8:i + 8 + n]
+    i += 12 + n
+raw = zlib.decompress(idat)
+assert len(set(raw)) > 4, "constant image"
+PY
+done
+cat out.txt
+echo ok
