@@ -314,7 +314,8 @@ hearth_status hearth_write_ply(const hearth_scene *s, const char *path, hearth_e
     static const char *const axis[3] = {"_x", "_y", "_z"};
     w = (field_walk){sc.names, "", 0};
     while (field_next(&w))
-        for (int k = 0; k < w.nc; k++) put_text(&d, "property double %s%s\n", w.name, w.nc == 1 ? "" : axis[k]);
+        for (int k = 0; k < w.nc && k < 3; k++)
+            put_text(&d, "property double %s%s\n", w.name, w.nc == 1 ? "" : axis[k]);
     put_text(&d, "end_header\n");
     put_le(&d, rows, sizeof(double), n * row_len);
     scratch_free(&sc);

@@ -66,7 +66,8 @@ hearth_status params_resolve(const hearth_material *m, const char *const *names,
         const hearth_param *p = &m->params[i];
         if (!isfinite(values[k]) || values[k] < p->min || values[k] > p->max)
             return err_set(err, HEARTH_ERR_PARAM, "material '%s': parameter '%s' = %g is outside its range [%g, %g] %s (%s)",
-                           m->name, p->name, values[k], p->min, p->max, p->unit, p->help);
+                           m->name, p->name, values[k], p->min, p->max,
+                           strcmp(p->unit, "1") ? p->unit : "(dimensionless)", p->help);
         out[i] = values[k];
     }
     return HEARTH_OK;

@@ -17,6 +17,11 @@
  * axis of a cylinder) the gradient does not exist and we return one valid
  * face normal. We rejected central differences as the general method: they
  * cost six extra tree walks per query and smear the normal across ridges.
+ *
+ * Masks (cookie cutters from PNG images) are the one leaf that is sampled
+ * rather than analytic: shape_mask.c owns their distance field, and this file
+ * treats them like any other leaf. A mask is unbounded in z like a 2D box;
+ * SHAPE_EXTRUDE cuts any shape to a slab z0..z1.
  */
 #include <math.h>
 #include <stdint.h>
@@ -34,7 +39,10 @@ typedef enum shape_kind {
     SHAPE_CYLINDER,
     SHAPE_CAPSULE,
     SHAPE_CONTAINER,
-    SHAPE_COMBINE
+    SHAPE_COMBINE,
+    /* appended so the kind numbers in existing checkpoints keep their meaning */
+    SHAPE_MASK,
+    SHAPE_EXTRUDE
 } shape_kind;
 
 struct hearth_shape {
@@ -42,11 +50,13 @@ struct hearth_shape {
     hearth_shape_op op;   /* SHAPE_COMBINE only */
     double c[3];          /* plane point, box/sphere/cylinder centre, capsule a, container base */
     double u[3];          /* plane normal, cylinder/container unit axis */
-    double b[3];          /* box half extents, capsule end b */
+    double b[3];          /* box half extents, capsule end b, extrude z0 and z1 in b[0], b[1] */
     double r;             /* radius (container: inner radius) */
     double hh;            /* cylinder half height, container wall height */
     double wall, floor;   /* container thicknesses */
-    hearth_shape *ca, *cb; /* combine children (owned) */
+    hearth_shape *ca, *cb; /* combine children, extrude child in ca (owned) */
+    shape_mask *mask;      /* SHAPE_MASK: its sampled field (owned) */
+    int flat;              /* extrude: the child does not depend on z (see sdf_extrude) */
 };
 
 /* ---- small vector helpers (static: tensor.h has no vector ops) ------- */
@@ -89,6 +99,7 @@ void hearth_shape_free(hearth_shape *s) {
     if (!s) return;
     hearth_shape_free(s->ca);
     hearth_shape_free(s->cb);
+    mask_free(s->mask);
     mem_free(s, sizeof *s);
 }
 
@@ -98,11 +109,26 @@ hearth_shape *hearth_shape_copy(const hearth_shape *s) {
     if (!d) return NULL;
     *d = *s;
     d->ca = d->cb = NULL;
+    d->mask = NULL;
     if (s->kind == SHAPE_COMBINE) {
         d->ca = hearth_shape_copy(s->ca);
         d->cb = d->ca ? hearth_shape_copy(s->cb) : NULL;
         if (!d->cb) {
             hearth_shape_free(d); /* frees whichever child was made */
+            return NULL;
+        }
+    } else if (s->kind == SHAPE_EXTRUDE) {
+        d->ca = hearth_shape_copy(s->ca);
+        if (!d->ca) {
+            hearth_shape_free(d);
+            return NULL;
+        }
+    } else if (s->kind == SHAPE_MASK) {
+        /* A deep copy keeps every shape independently owned (no shared
+         * counts to get wrong); masks are at most 64 MB and copies are rare. */
+        d->mask = mask_copy(s->mask);
+        if (!d->mask) {
+            hearth_shape_free(d);
             return NULL;
         }
     }
@@ -182,6 +208,46 @@ hearth_shape *hearth_shape_container(const double base[3], const double axis[3],
     s->hh = height;
     s->wall = wall;
     s->floor = floor;
+    return s;
+}
+
+hearth_shape *hearth_shape_mask(const char *png_path, const double lo[2], const double hi[2], hearth_error *err) {
+    shape_mask *m = mask_load(png_path, lo, hi, err);
+    if (!m) return NULL;
+    hearth_shape *s = shape_new(SHAPE_MASK);
+    if (!s) {
+        mask_free(m);
+        err_set(err, HEARTH_ERR_NOMEM, "mask '%s': out of memory", png_path);
+        return NULL;
+    }
+    s->mask = m;
+    return s;
+}
+
+/* Whether s is a function of x and y only (a 2D shape): then the extrusion
+ * formula below is exact. */
+static int z_free(const hearth_shape *s) {
+    switch (s->kind) {
+    case SHAPE_MASK: return 1;
+    case SHAPE_PLANE: return s->u[2] == 0.0;
+    case SHAPE_BOX: return !(s->b[2] > 0);
+    case SHAPE_COMBINE: return z_free(s->ca) && z_free(s->cb);
+    default: return 0;
+    }
+}
+
+hearth_shape *hearth_shape_extrude(const hearth_shape *child, double z0, double z1) {
+    if (!child || !isfinite(z0) || !isfinite(z1) || !(z0 < z1)) return NULL;
+    hearth_shape *s = shape_new(SHAPE_EXTRUDE);
+    if (!s) return NULL;
+    s->b[0] = z0;
+    s->b[1] = z1;
+    s->ca = hearth_shape_copy(child);
+    if (!s->ca) {
+        hearth_shape_free(s);
+        return NULL;
+    }
+    s->flat = z_free(child);
     return s;
 }
 
@@ -321,6 +387,43 @@ static double sdf_container(const hearth_shape *s, const double x[3], double n[3
     return d;
 }
 
+static double sdf_mask(const hearth_shape *s, const double x[3], double n[3]) {
+    double g[2];
+    double d = mask_sdf(s->mask, x[0], x[1], n ? g : NULL);
+    if (n) {
+        double g3[3] = {g[0], g[1], 0.0};
+        if (!unit3(g3, n)) set3(n, 0.0, 1.0, 0.0); /* flat spot of the sampled field */
+    }
+    return d;
+}
+
+/* The intersection of the child with the slab z0 <= z <= z1. For a 2D child
+ * (distance d2 in the xy plane, independent of z) the distance to the prism
+ * is exact: outside both, the nearest point is on the rim, at
+ * sqrt(d2^2 + dz^2); otherwise max(d2, dz). For a 3D child the rim formula
+ * could overstate the distance (the nearest point may be on a cap away from
+ * the rim), so it gets the plain max, a bound like the other intersections. */
+static double sdf_extrude(const hearth_shape *s, const double x[3], double n[3]) {
+    double n2[3];
+    double d2 = hearth_shape_sdf(s->ca, x, n ? n2 : NULL);
+    double below = s->b[0] - x[2], above = x[2] - s->b[1];
+    double dz = fmax(below, above), sz = above >= below ? 1.0 : -1.0;
+    if (s->flat && d2 > 0 && dz > 0) {
+        double d = hypot(d2, dz);
+        if (n) {
+            double v[3] = {d2 * n2[0], d2 * n2[1], dz * sz};
+            if (!unit3(v, n)) set3(n, 0.0, 0.0, sz);
+        }
+        return d;
+    }
+    if (d2 >= dz) {
+        if (n) memcpy(n, n2, sizeof n2);
+        return d2;
+    }
+    if (n) set3(n, 0.0, 0.0, sz);
+    return dz;
+}
+
 double hearth_shape_sdf(const hearth_shape *s, const double x[3], double normal[3]) {
     HEARTH_ASSERT(s && x);
     double d;
@@ -339,6 +442,8 @@ double hearth_shape_sdf(const hearth_shape *s, const double x[3], double normal[
     case SHAPE_CYLINDER: return revolved_rect(s->c, s->u, x, 0.0, s->r, 0.0, s->hh, normal);
     case SHAPE_CAPSULE: return sdf_capsule(s, x, normal);
     case SHAPE_CONTAINER: return sdf_container(s, x, normal);
+    case SHAPE_MASK: return sdf_mask(s, x, normal);
+    case SHAPE_EXTRUDE: return sdf_extrude(s, x, normal);
     case SHAPE_COMBINE: {
         double na[3], nb[3];
         double da = hearth_shape_sdf(s->ca, x, normal ? na : NULL);
@@ -415,6 +520,16 @@ void hearth_shape_bounds(const hearth_shape *s, double lo[3], double hi[3]) {
         cylinder_bounds(cc, s->u, s->r + s->wall, 0.5 * (s->hh + s->floor), lo, hi);
         return;
     }
+    case SHAPE_MASK:
+        mask_bounds(s->mask, lo, hi); /* writes x and y */
+        lo[2] = -HUGE_VAL;
+        hi[2] = HUGE_VAL;
+        return;
+    case SHAPE_EXTRUDE:
+        hearth_shape_bounds(s->ca, lo, hi);
+        lo[2] = fmax(lo[2], s->b[0]);
+        hi[2] = fmin(hi[2], s->b[1]);
+        return;
     case SHAPE_COMBINE: {
         double blo[3], bhi[3];
         hearth_shape_bounds(s->ca, lo, hi);
@@ -444,6 +559,8 @@ int shape_write(FILE *f, const hearth_shape *s) {
     if (fwrite(k, sizeof k, 1, f) != 1 || fwrite(v, sizeof v, 1, f) != 1 || fwrite(&s->floor, sizeof s->floor, 1, f) != 1)
         return -1;
     if (s->kind == SHAPE_COMBINE) return shape_write(f, s->ca) || shape_write(f, s->cb);
+    if (s->kind == SHAPE_EXTRUDE) return shape_write(f, s->ca);
+    if (s->kind == SHAPE_MASK) return mask_write(f, s->mask);
     return 0;
 }
 
@@ -451,7 +568,7 @@ hearth_shape *shape_read(FILE *f, int depth) {
     int32_t k[2];
     double v[13];
     if (depth > 64 || fread(k, sizeof k, 1, f) != 1 || fread(v, sizeof v, 1, f) != 1) return NULL;
-    if (k[0] < SHAPE_PLANE || k[0] > SHAPE_COMBINE) return NULL;
+    if (k[0] < SHAPE_PLANE || k[0] > SHAPE_EXTRUDE) return NULL;
     hearth_shape *s = shape_new((shape_kind)k[0]);
     if (!s) return NULL;
     s->op = (hearth_shape_op)k[1];
@@ -468,6 +585,20 @@ hearth_shape *shape_read(FILE *f, int depth) {
         s->ca = shape_read(f, depth + 1);
         s->cb = s->ca ? shape_read(f, depth + 1) : NULL;
         if (!s->ca || !s->cb) {
+            hearth_shape_free(s);
+            return NULL;
+        }
+    } else if (s->kind == SHAPE_EXTRUDE) {
+        int ok = isfinite(s->b[0]) && isfinite(s->b[1]) && s->b[0] < s->b[1];
+        s->ca = ok ? shape_read(f, depth + 1) : NULL;
+        if (!s->ca) {
+            hearth_shape_free(s);
+            return NULL;
+        }
+        s->flat = z_free(s->ca);
+    } else if (s->kind == SHAPE_MASK) {
+        s->mask = mask_read(f);
+        if (!s->mask) {
             hearth_shape_free(s);
             return NULL;
         }
