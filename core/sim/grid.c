@@ -24,6 +24,7 @@ hearth_status grid_init(grid *g, int dim, double dx, const double lo[3], const d
                        dx, nb, 1L << 28);
     g->nblocks = (int)nb;
     g->nodes_per_block = dim == 2 ? GRID_B * GRID_B : GRID_B * GRID_B * GRID_B;
+    g->nch = GRID_NCH_MOMENTUM;
     g->slot = mem_alloc(sizeof(int) * (size_t)nb);
     if (!g->slot) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the grid block table (%ld blocks)", nb);
     for (long i = 0; i < nb; i++) g->slot[i] = -1;
@@ -33,8 +34,20 @@ hearth_status grid_init(grid *g, int dim, double dx, const double lo[3], const d
 void grid_free(grid *g) {
     mem_free(g->slot, sizeof(int) * (size_t)g->nblocks);
     mem_free(g->active, sizeof(int) * (size_t)g->acap);
-    mem_free(g->data, sizeof(double) * GRID_NCH * (size_t)g->nodes_per_block * (size_t)g->cap);
+    mem_free(g->data, sizeof(double) * (size_t)g->nch * (size_t)g->nodes_per_block * (size_t)g->cap);
     memset(g, 0, sizeof *g);
+}
+
+hearth_status grid_set_channels(grid *g, int nch, hearth_error *err) {
+    if (nch == g->nch) return HEARTH_OK;
+    /* keep the byte capacity honest: convert it to blocks of the new width */
+    const size_t bytes = sizeof(double) * (size_t)g->nch * (size_t)g->nodes_per_block * (size_t)g->cap;
+    mem_free(g->data, bytes);
+    g->data = NULL;
+    g->cap = 0;
+    g->nch = nch;
+    (void)err;
+    return HEARTH_OK;
 }
 
 hearth_status grid_activate(grid *g, const unsigned char *mark, hearth_error *err) {
@@ -52,7 +65,7 @@ hearth_status grid_activate(grid *g, const unsigned char *mark, hearth_error *er
     if (n > g->cap) {
         int ncap = g->cap ? g->cap : 64;
         while (ncap < n) ncap *= 2;
-        const size_t per = sizeof(double) * GRID_NCH * (size_t)g->nodes_per_block;
+        const size_t per = sizeof(double) * (size_t)g->nch * (size_t)g->nodes_per_block;
         double *d = mem_realloc(g->data, per * (size_t)g->cap, per * (size_t)ncap);
         if (!d) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d grid blocks", n);
         g->data = d;
@@ -65,6 +78,6 @@ hearth_status grid_activate(grid *g, const unsigned char *mark, hearth_error *er
             g->active[n++] = b;
         }
     g->nactive = n;
-    memset(g->data, 0, sizeof(double) * GRID_NCH * (size_t)g->nodes_per_block * (size_t)n);
+    memset(g->data, 0, sizeof(double) * (size_t)g->nch * (size_t)g->nodes_per_block * (size_t)n);
     return HEARTH_OK;
 }

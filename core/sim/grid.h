@@ -3,15 +3,26 @@
  * Nodes sit at lo + i*dx. They are grouped in blocks of GRID_B^dim nodes; only
  * blocks near particles hold storage, so memory follows the material, not the
  * box. A dense table of block slots (4 bytes per block of the whole box) maps a
- * block to its storage. Each node carries GRID_NCH channels: mass and momentum
- * (velocity after the grid update). */
+ * block to its storage. Each node carries g->nch channels (see CH_*). */
 #ifndef HEARTH_GRID_H
 #define HEARTH_GRID_H
 #include "hearth/hearth.h"
 
 #define GRID_B 4     /* nodes per block side */
 #define GRID_T 6     /* tile side: a block's particles touch nodes 0..5 from the block origin */
-#define GRID_NCH 4   /* mass, momentum x, y, z */
+/* Node channels. Momentum runs always use the first four; a scene with heat
+ * transport uses all of them (grid_set_channels), so it alone pays for them. */
+enum {
+    CH_M = 0, CH_PX, CH_PY, CH_PZ, /* mass, momentum (velocity after the grid update) */
+    CH_HC,                          /* heat capacity sum m alpha w (J/K) */
+    CH_T,                           /* sum m alpha theta w, then temperature theta_i */
+    CH_T0,                          /* temperature before the heat update (FLIP, eq. 21) */
+    CH_R,                           /* heat flux accumulated into the node (W) / CG Ap */
+    CH_CG_R, CH_CG_P,               /* conjugate-gradient residual and direction */
+    CH_B,                           /* implicit heat: boundary coefficient sum S beta w (W/K) (diagonal part) */
+    GRID_NCH_MAX
+};
+#define GRID_NCH_MOMENTUM 4
 
 typedef struct grid {
     int dim;
@@ -22,16 +33,19 @@ typedef struct grid {
     int nodes_per_block;/* GRID_B^dim */
     int *slot;          /* per block of the box: storage slot or -1 */
     int nactive, cap, acap; /* active blocks; capacity of data and of active */
+    int nch;                /* channels per node in use (GRID_NCH_MOMENTUM or GRID_NCH_MAX) */
     int *active;        /* block ids with storage, ascending */
-    double *data;       /* cap * GRID_NCH * nodes_per_block */
+    double *data;       /* cap * nch * nodes_per_block, channel-major within a block */
 } grid;
 
 hearth_status grid_init(grid *g, int dim, double dx, const double lo[3], const double hi[3], hearth_error *err);
 void grid_free(grid *g);
+/// Use nch channels per node from the next activation on (storage is rebuilt every step).
+hearth_status grid_set_channels(grid *g, int nch, hearth_error *err);
 /// Give storage (zeroed) to exactly the blocks flagged in mark (nblocks bytes). Keeps capacity.
 hearth_status grid_activate(grid *g, const unsigned char *mark, hearth_error *err);
 static inline double *grid_block(const grid *g, int slot) {
-    return g->data + (size_t)slot * GRID_NCH * (size_t)g->nodes_per_block;
+    return g->data + (size_t)slot * (size_t)g->nch * (size_t)g->nodes_per_block;
 }
 static inline int grid_block_id(const grid *g, int bx, int by, int bz) { return (bx * g->nb[1] + by) * g->nb[2] + bz; }
 static inline void grid_block_coords(const grid *g, int id, int b[3]) {

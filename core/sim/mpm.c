@@ -119,7 +119,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
     int bc[3];
     grid_block_coords(g, pb.block, bc);
     const int org[3] = {bc[0] * GRID_B, bc[1] * GRID_B, bc[2] * GRID_B};
-    memset(tile, 0, sizeof(double) * GRID_NCH * (size_t)TN);
+    memset(tile, 0, sizeof(double) * (size_t)g->nch * (size_t)TN);
 
     const double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *M = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
     double *Cc = pcold(ps, PC_C), *Fc = pcold(ps, PC_F), *state = pcold(ps, PC_STATE);
@@ -210,7 +210,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
                 double *node = grid_block(g, g->slot[blk]);
                 const int l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B
                                      : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
-                for (int ch = 0; ch < GRID_NCH; ch++) node[ch * NPB + l] += tile[ch * TN + t];
+                for (int ch = 0; ch < g->nch; ch++) node[ch * NPB + l] += tile[ch * TN + t];
             }
 }
 
@@ -223,7 +223,7 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
     for (int k = 0; k < s->npb; k++) s->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
 #pragma omp parallel
     {
-        double tile[GRID_NCH * GRID_T * GRID_T * GRID_T];
+        double tile[GRID_NCH_MAX * GRID_T * GRID_T * GRID_T];
         for (int col = 0; col < 8; col++) {
             const int a = s->colour_start[col], b = s->colour_start[col + 1];
 #pragma omp for schedule(dynamic, 2)
