@@ -7,6 +7,7 @@
  * crafted bytecode can break the VM. */
 #define _XOPEN_SOURCE 700 /* realpath */
 #include <limits.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -76,6 +77,68 @@ static int text_only_load(lua_State *L) { /* load(chunk, name, mode, env) with m
     return lua_gettop(L);
 }
 
+/* loadfile(name, mode, env) with mode forced to "t" */
+static int text_only_loadfile(lua_State *L) {
+    lua_settop(L, 3);
+    const char *name = luaL_optstring(L, 1, NULL);
+    int envi = !lua_isnone(L, 3) && !lua_isnil(L, 3);
+    if (luaL_loadfilex(L, name, "t") != LUA_OK) {
+        lua_pushnil(L);
+        lua_insert(L, -2);
+        return 2;
+    }
+    if (envi) {
+        lua_pushvalue(L, 3);
+        if (!lua_setupvalue(L, -2, 1)) lua_pop(L, 1);
+    }
+    return 1;
+}
+
+static int text_only_dofile(lua_State *L) {
+    const char *name = luaL_optstring(L, 1, NULL);
+    lua_settop(L, 1);
+    if (luaL_loadfilex(L, name, "t") != LUA_OK) return lua_error(L);
+    lua_call(L, 0, LUA_MULTRET);
+    return lua_gettop(L) - 1;
+}
+
+/* package.searchers[2] for scenes: Lua files on package.path, text only */
+static int lua_file_searcher(lua_State *L) {
+    const char *name = luaL_checkstring(L, 1);
+    lua_getglobal(L, "package");
+    lua_getfield(L, -1, "path");
+    const char *path = lua_tostring(L, -1);
+    const char *file = path ? luaL_gsub(L, name, ".", "/") : NULL;
+    if (!file) return 0;
+    /* try each template */
+    const char *p = path;
+    luaL_Buffer tried;
+    luaL_buffinit(L, &tried);
+    while (*p) {
+        const char *e = strchr(p, ';');
+        size_t len = e ? (size_t)(e - p) : strlen(p);
+        lua_pushlstring(L, p, len);
+        const char *cand = luaL_gsub(L, lua_tostring(L, -1), "?", file);
+        FILE *f = fopen(cand, "r");
+        if (f) {
+            fclose(f);
+            if (luaL_loadfilex(L, cand, "t") != LUA_OK) return lua_error(L);
+            lua_pushstring(L, cand);
+            return 2;
+        }
+        lua_pop(L, 2);
+        p += len + (e != NULL);
+    }
+    lua_pushfstring(L, "no Lua file for '%s' on package.path", name);
+    return 1;
+}
+
+static int no_c_modules(lua_State *L) {
+    lua_pushfstring(L, "C modules are not allowed in a scene: require '%s' cannot load native code (run with --trust to allow it)",
+                    luaL_checkstring(L, 1));
+    return 1;
+}
+
 static void wrap(lua_State *L, const char *lib, const char *name, lua_CFunction fn, const char *out) {
     lua_getglobal(L, lib);
     lua_pushstring(L, out);
@@ -103,12 +166,18 @@ void hl_sandbox(lua_State *L, const char *out_dir) {
     lua_getfield(L, -1, "searchers");
     lua_pushnil(L);
     lua_seti(L, -2, 4);
-    lua_pushnil(L);
+    lua_pushcfunction(L, no_c_modules);
     lua_seti(L, -2, 3);
+    lua_pushcfunction(L, lua_file_searcher);
+    lua_seti(L, -2, 2);
     lua_pop(L, 2);
     lua_getglobal(L, "load");
     lua_pushcclosure(L, text_only_load, 1);
     lua_setglobal(L, "load");
+    lua_pushcfunction(L, text_only_loadfile);
+    lua_setglobal(L, "loadfile");
+    lua_pushcfunction(L, text_only_dofile);
+    lua_setglobal(L, "dofile");
     lua_pushnil(L); /* debug can reach into anything (registry, metatables of userdata) */
     lua_setglobal(L, "debug");
 }

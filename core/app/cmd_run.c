@@ -66,6 +66,13 @@ static int parse(run_args *a, int argc, char **argv, const char *cmd) {
         if (!strcmp(s, "--quiet")) { a->quiet = 1; continue; }
         if (!strcmp(s, "--trust")) { a->trust = 1; continue; }
         if (s[0] == '-' && s[1] == '-') {
+            static const char *const valued[] = {"--out", "--until", "--frames", "--threads", "--set", NULL};
+            int known = 0;
+            for (int k = 0; valued[k]; k++) known |= !strcmp(s, valued[k]);
+            if (!known) {
+                fprintf(stderr, "hearth %s: unknown option '%s' (see --help)\n", cmd, s);
+                return 2;
+            }
             if (i + 1 >= argc) {
                 fprintf(stderr, "hearth %s: %s needs a value (see --help)\n", cmd, s);
                 return 2;

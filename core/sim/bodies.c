@@ -65,6 +65,14 @@ hearth_status hearth_scene_body_set_velocity(hearth_scene *s, int body, const do
         memset(pcold(&s->ps, PC_C) + 9 * i, 0, 9 * sizeof(double)); /* a push is a uniform motion */
     }
     if (sp > s->max_speed) s->max_speed = sp; /* the next dt must respect the new speed */
+    /* the kinetic energy changed by decree, not by a runaway: the guard's reference moves with it */
+    double ke = 0;
+    for (int i = 0; i < s->ps.n; i++) {
+        const double *vv = pcold(&s->ps, PC_V) + 3 * i;
+        ke += 0.5 * pcold(&s->ps, PC_MASS)[i] * (vv[0] * vv[0] + vv[1] * vv[1] + vv[2] * vv[2]);
+    }
+    s->kinetic = ke;
+    if (ke > s->kinetic_peak) s->kinetic_peak = ke;
     return HEARTH_OK;
 }
 
@@ -162,9 +170,9 @@ hearth_status hearth_material_check(const char *plugin, const char *const *names
     const hearth_plugin *pl = hearth_plugin_load(plugin, err);
     if (!pl) return err->code;
     const hearth_material *m = hearth_plugin_material(pl);
-    double tmp[SCENE_MAX_PARAMS];
+    double tmp[SCENE_MAX_PARAMS], core[CP_COUNT];
     if (m->nparams > SCENE_MAX_PARAMS)
         return err_set(err, HEARTH_ERR_PLUGIN, "material '%s' declares %d parameters; hearth supports at most %d", m->name,
                        m->nparams, SCENE_MAX_PARAMS);
-    return params_resolve(m, names, values, n, tmp, err);
+    return params_resolve(m, names, values, n, tmp, core, err);
 }

@@ -123,6 +123,7 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
         int32_t np = s->mats[i].m->nparams;
         WR(&io, np);
         wr(&io, s->mats[i].params, sizeof(double) * (size_t)np);
+        wr(&io, s->mats[i].core, sizeof(double) * CP_COUNT);
         int32_t nc = s->mats[i].ncurves;
         WR(&io, nc);
         for (int k = 0; k < nc; k++) {
@@ -213,8 +214,9 @@ hearth_scene *hearth_scene_load(const char *path, hearth_error *err) {
         rd_str(&io, name, sizeof name);
         RD(&io, np);
         if (io.bad || np < 0 || np > 1024) return load_fail(s, f, err, path, "bad material record");
-        double vals[1024];
+        double vals[1024 + CP_COUNT];
         rd(&io, vals, sizeof(double) * (size_t)np);
+        rd(&io, vals + np, sizeof(double) * CP_COUNT);
         if (io.bad) return load_fail(s, f, err, path, "truncated material record");
         /* the plugin by its saved path first, then by name on the search path */
         hearth_error e2;
@@ -231,9 +233,11 @@ hearth_scene *hearth_scene_load(const char *path, hearth_error *err) {
                     m->nparams);
             return load_fail(s, f, err, path, "");
         }
-        const char *names[1024];
+        const char *names[1024 + CP_COUNT];
         for (int k = 0; k < np; k++) names[k] = m->params[k].name;
-        const int mat = hearth_scene_add_material(s, which, names, vals, np, err);
+        const hearth_param *cp = hearth_core_params(NULL);
+        for (int k = 0; k < CP_COUNT; k++) names[np + k] = cp[k].name;
+        const int mat = hearth_scene_add_material(s, which, names, vals, np + CP_COUNT, err);
         if (mat < 0) return load_fail(s, f, err, path, "");
         int32_t nc = 0;
         RD(&io, nc);

@@ -6,6 +6,19 @@
 
 #include "error.h"
 
+/* Ding et al. 2019 eq. 9 (kappa, alpha, c lambda) and eq. 10 (thermal stress). */
+static const hearth_param core_schema[CP_COUNT] = {
+    [CP_CONDUCTIVITY] = {"conductivity", "W/(m K)", "heat conduction kappa (Ding et al. eq. 9)", 0.5, 0, 1e4},
+    [CP_SPECIFIC_HEAT] = {"specific_heat", "J/(kg K)", "specific heat alpha (Ding et al. eq. 9)", 2500, 1, 1e7},
+    [CP_EXPANSION] = {"expansion", "Pa/K", "thermal expansion coupling c lambda (Ding et al. eq. 9-10); 0 = none", 0, 0, 1e9},
+    [CP_REFERENCE_T] = {"reference_temperature", "degC", "temperature of zero thermal stress", 20, -273.15, 5000},
+};
+
+const hearth_param *hearth_core_params(int *n) {
+    if (n) *n = CP_COUNT;
+    return core_schema;
+}
+
 int params_index(const hearth_material *m, const char *name) {
     for (int i = 0; i < m->nparams; i++)
         if (strcmp(m->params[i].name, name) == 0) return i;
@@ -44,16 +57,20 @@ const char *params_nearest(const char *word, const char *const *candidates, int 
 }
 
 hearth_status params_resolve(const hearth_material *m, const char *const *names, const double *values, int n,
-                             double *out, hearth_error *err) {
+                             double *out, double *core, hearth_error *err) {
     for (int i = 0; i < m->nparams; i++) out[i] = m->params[i].def;
+    for (int i = 0; i < CP_COUNT; i++) core[i] = core_schema[i].def;
     for (int k = 0; k < n; k++) {
-        int i = params_index(m, names[k]);
-        if (i < 0) {
-            const char *cand[64];
+        int i = params_index(m, names[k]), c = -1;
+        for (int j = 0; i < 0 && j < CP_COUNT; j++)
+            if (strcmp(core_schema[j].name, names[k]) == 0) c = j;
+        if (i < 0 && c < 0) {
+            const char *cand[64 + CP_COUNT];
             int nc = m->nparams < 64 ? m->nparams : 64;
             for (int j = 0; j < nc; j++) cand[j] = m->params[j].name;
+            for (int j = 0; j < CP_COUNT; j++) cand[nc++] = core_schema[j].name;
             const char *near = params_nearest(names[k], cand, nc);
-            char list[512] = "";
+            char list[768] = "";
             for (int j = 0; j < nc; j++) {
                 strncat(list, cand[j], sizeof list - strlen(list) - 3);
                 if (j + 1 < nc) strncat(list, ", ", sizeof list - strlen(list) - 1);
@@ -63,12 +80,13 @@ hearth_status params_resolve(const hearth_material *m, const char *const *names,
                                m->name, names[k], near, list);
             return err_set(err, HEARTH_ERR_PARAM, "material '%s': unknown parameter '%s' (valid: %s)", m->name, names[k], list);
         }
-        const hearth_param *p = &m->params[i];
+        const hearth_param *p = i >= 0 ? &m->params[i] : &core_schema[c];
         if (!isfinite(values[k]) || values[k] < p->min || values[k] > p->max)
             return err_set(err, HEARTH_ERR_PARAM, "material '%s': parameter '%s' = %g is outside its range [%g, %g] %s (%s)",
                            m->name, p->name, values[k], p->min, p->max,
                            strcmp(p->unit, "1") ? p->unit : "(dimensionless)", p->help);
-        out[i] = values[k];
+        if (i >= 0) out[i] = values[k];
+        else core[c] = values[k];
     }
     return HEARTH_OK;
 }

@@ -239,7 +239,8 @@ int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *c
         err_set(err, HEARTH_ERR_NOMEM, "out of memory for material '%s'", m->name);
         return -1;
     }
-    if (params_resolve(m, names, values, n, p, err)) {
+    double core[CP_COUNT];
+    if (params_resolve(m, names, values, n, p, core, err)) {
         mem_free(p, sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1));
         return -1;
     }
@@ -260,6 +261,7 @@ int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *c
     }
     material_slot *ms = &s->mats[s->nmat];
     *ms = (material_slot){.plugin = pl, .m = m, .params = p, .density_index = params_index(m, "density")};
+    memcpy(ms->core, core, sizeof core);
     if (m->state_size == 0) {
         ms->wave_speed = m->wave_speed(p, NULL);
         if (ms->wave_speed > s->c_max) s->c_max = ms->wave_speed;

@@ -176,6 +176,9 @@ local contact = { "sticky", "slip", "separate" }
 function h.scene(o)
   o = o or {}
   if type(o) ~= "table" then error("h.scene: expected a table", 2) end
+  if next(core.options().sets) and not h._params_declared then
+    error("--set: this scene declares no parameters with h.params{...} before h.scene; there is nothing to set", 2)
+  end
   check_keys(o, scene_keys, "h.scene")
   local dim = o.dim or 2
   if dim ~= 2 and dim ~= 3 then error(("h.scene: dim = %s; valid: 2, 3"):format(tostring(dim)), 2) end
@@ -292,6 +295,7 @@ function S:step(n)
     self:_step(1)
   end
   fire_events(self)
+  self:_state().ran = true -- hearth run does not run a stepped scene again
   return self
 end
 

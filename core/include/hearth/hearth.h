@@ -146,10 +146,14 @@ typedef struct hearth_scene_def {
     int max_rollbacks;    ///< consecutive rollbacks before the guard stops anyway
     double energy_growth; ///< kinetic energy growth per step that counts as runaway
     uint64_t seed;        ///< for jittered seeding
+    double oven_temperature; ///< oven air temperature (degrees C) for the Robin boundary; NaN = no oven
+    double oven_beta;        ///< oven air heat transfer coefficient beta (W/(m^2 K)), >= 0
+    int heat_implicit;       ///< 0: forward Euler heat (dt limited by conduction); 1: backward Euler (CG solve)
 } hearth_scene_def;
 
 /// Defaults: 2D, dx 0.01, box [0,1]^3, gravity (0,-9.81,0), cfl 0.5, slip walls,
-/// no friction, guard stops, 8 rollbacks, energy growth 10, seed 1.
+/// no friction, guard stops, 8 rollbacks, energy growth 10, seed 1, no oven, explicit heat.
+/// An oven makes the temperature field live.
 hearth_scene_def hearth_default_scene_def(void);
 hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err);
 void hearth_scene_destroy(hearth_scene *s);
@@ -158,11 +162,16 @@ const hearth_scene_def *hearth_scene_get_def(const hearth_scene *s);
 hearth_status hearth_scene_set_dt_limits(hearth_scene *s, double cfl, double dt_max, hearth_error *err);
 
 /// Add a material from a plugin with named parameters (others take defaults).
+/// Besides the plugin's own schema, every material accepts the core's field
+/// properties: conductivity (W/(m K)), specific_heat (J/(kg K)), expansion
+/// (c lambda, Pa/K) and reference_temperature (degrees C); see hearth_core_params.
 /// Returns the material id (>= 0) or -1 with err filled: unknown names suggest
 /// the nearest valid name; out-of-range values give the range and unit.
 int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *const *names,
                               const double *values, int n, hearth_error *err);
 int hearth_scene_material_count(const hearth_scene *s);
+/// The schema of the field properties every material has (count in *n).
+const hearth_param *hearth_core_params(int *n);
 const hearth_material *hearth_scene_material_info(const hearth_scene *s, int mat);
 const double *hearth_scene_material_params(const hearth_scene *s, int mat);
 
@@ -186,6 +195,8 @@ typedef struct hearth_collider_def {
     double pivot[3];           ///< rotation centre at t = 0 (moves with the collider)
     hearth_motion_fn motion;   ///< optional: velocity and omega as functions of time
     void *motion_ud;
+    double temperature;        ///< a heated collider (pan, tray): its temperature (degrees C); NaN = not heated
+    double beta;               ///< contact heat transfer coefficient (W/(m^2 K)) ("conductive theta, beta", Ding et al. Table 2)
 } hearth_collider_def;
 
 hearth_collider_def hearth_default_collider_def(void);
@@ -237,6 +248,7 @@ typedef struct hearth_body_def {
     double jitter;             ///< 0..1 of the sub-cell, from the scene's seeded generator
     double velocity[3];        ///< m/s
     double temperature;        ///< initial temperature (degrees C); NaN = not set. Setting it makes the temperature field live.
+    int fixed;                 ///< pinned: the particles never move (for tests of the fields alone)
 } hearth_body_def;
 
 /// ppc 4, jitter 0.5, at rest, temperature unset.

@@ -1,0 +1,2 @@
+local h = require "hearth"
+local m = h.material("elastic", { Ee = 1 })
