@@ -57,6 +57,11 @@ static int l_scene_new(lua_State *L) {
     d.guard = (hearth_guard_policy)field_num(L, 1, "guard");
     d.max_rollbacks = (int)field_num(L, 1, "max_rollbacks");
     d.seed = (uint64_t)field_num(L, 1, "seed");
+    lua_getfield(L, 1, "oven_temperature");
+    d.oven_temperature = lua_isnumber(L, -1) ? lua_tonumber(L, -1) : NAN;
+    lua_pop(L, 1);
+    d.oven_beta = field_num(L, 1, "oven_beta");
+    d.heat_implicit = (int)field_num(L, 1, "heat_implicit");
     hl_scene *u = lua_newuserdatauv(L, sizeof *u, 1);
     u->s = NULL;
     luaL_setmetatable(L, HL_SCENE);
@@ -152,6 +157,7 @@ static int l_add(lua_State *L) {
     b.jitter = luaL_checknumber(L, 5);
     hl_checkvec(L, 6, "velocity", b.velocity);
     b.temperature = lua_isnoneornil(L, 7) ? NAN : luaL_checknumber(L, 7);
+    b.fixed = lua_toboolean(L, 8);
     hearth_error err;
     int id = hearth_scene_add_body(u->s, &b, &err);
     if (id < 0) return hl_raise(L, &err);
@@ -239,6 +245,8 @@ static int l_collider(lua_State *L) {
     if (!ofn && lua_isnumber(L, 6)) cd.omega[2] = lua_tonumber(L, 6);
     else if (!ofn && !lua_isnil(L, 6)) hl_checkvec(L, 6, "collider omega", cd.omega);
     if (!lua_isnil(L, 7)) hl_checkvec(L, 7, "collider pivot", cd.pivot);
+    if (!lua_isnoneornil(L, 8)) cd.temperature = luaL_checknumber(L, 8);
+    cd.beta = luaL_optnumber(L, 9, 0);
     if (vfn || ofn) {
         hl_motion *m = lua_newuserdatauv(L, sizeof *m, 0);
         memset(m, 0, sizeof *m);
@@ -426,6 +434,8 @@ static int l_stats(lua_State *L) {
     lua_pushstring(L, gs[st.guard]); lua_setfield(L, -2, "guard");
     lua_pushstring(L, st.diagnosis); lua_setfield(L, -2, "diagnosis");
     lua_pushinteger(L, hearth_scene_body_count(u->s)); lua_setfield(L, -2, "bodies");
+    lua_pushnumber(L, st.heat_energy); lua_setfield(L, -2, "heat_energy");
+    lua_pushinteger(L, st.cg_iterations); lua_setfield(L, -2, "cg_iterations");
     /* the live fields as a list */
     lua_newtable(L);
     const char *f = hearth_scene_fields(u->s);

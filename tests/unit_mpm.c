@@ -626,14 +626,20 @@ TEST(alloc_failure_paths) {
  * through sorting and checkpoints. */
 TEST(particles_optional_columns) {
     hearth_scene *s = fx_scene(2, 1.0 / 32, 0, 1);
-    int m = fx_elastic(s, 1e4, 0.3, 1000);
+    hearth_error err;
+    /* no conduction, so the temperatures used as tags below stay put */
+    const char *nm[] = {"E", "conductivity"};
+    const double nv[] = {1e4, 0.0};
+    int m = hearth_scene_add_material(s, "elastic", nm, nv, 2, &err);
     const double c[3] = {0.5, 0.5, 0}, h[3] = {0.2, 0.1, 0}, v[3] = {0, 0, 0};
     fx_box(s, m, c, h, 4, v);
     CHECK(!(s->ps.enabled & (1u << PC_TEMPERATURE)) && s->ps.col[PC_TEMPERATURE] == NULL);
+    CHECK(strstr(hearth_scene_fields(s), "temperature") == NULL);
     const size_t before = hearth_bytes_allocated();
-    hearth_error err;
-    CHECK(particles_enable(&s->ps, PC_TEMPERATURE, &err) == HEARTH_OK);
-    CHECK(hearth_bytes_allocated() - before == sizeof(double) * (size_t)s->ps.cap);
+    CHECK(scene_enable_temperature(s, &err) == HEARTH_OK);
+    /* temperature, its running maximum and the flags: 8 + 8 + 4 bytes a particle */
+    CHECK(hearth_bytes_allocated() - before == (2 * sizeof(double) + sizeof(int)) * (size_t)s->ps.cap);
+    CHECK(strstr(hearth_scene_fields(s), "temperature") != NULL);
     /* tag each particle's temperature with its id, then scramble the order */
     for (int i = 0; i < s->ps.n; i++) pcold(&s->ps, PC_TEMPERATURE)[i] = pcoli(&s->ps, PC_ID)[i];
     for (int i = 0; i < s->ps.n; i++) pcold(&s->ps, PC_V)[3 * i] = (i % 2 ? 1.5 : -1.5);

@@ -27,6 +27,7 @@ int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_er
         return -1;
     }
     hearth_status st = particles_enable(&s->ps, PC_BODY, err);
+    if (!st && def->fixed) st = particles_enable(&s->ps, PC_FLAGS, err);
     if (!st && !isnan(def->temperature)) st = scene_enable_temperature(s, err);
     if (st) return -1;
     const int n0 = s->ps.n;
@@ -39,8 +40,13 @@ int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_er
     const int id = s->nbodies++;
     for (int i = n0; i < s->ps.n; i++) {
         pcoli(&s->ps, PC_BODY)[i] = id;
+        if (def->fixed) {
+            pcoli(&s->ps, PC_FLAGS)[i] |= PF_FIXED;
+            memset(pcold(&s->ps, PC_V) + 3 * i, 0, 3 * sizeof(double));
+        }
         if (!isnan(def->temperature)) pcold(&s->ps, PC_TEMPERATURE)[i] = pcold(&s->ps, PC_TEMP_MAX)[i] = def->temperature;
     }
+    if (def->fixed) scene_refresh_wave_speed(s); /* a pinned body's waves do not limit dt */
     return id;
 }
 
@@ -87,6 +93,7 @@ int hearth_scene_remove_inside(hearth_scene *s, const hearth_shape *shape, heart
     for (int i = 0; i < n; i++) rm[i] = hearth_shape_sdf(shape, pcold(&s->ps, PC_X) + 3 * i, NULL) < 0;
     int removed = particles_compact(&s->ps, rm);
     mem_free(rm, (size_t)(n > 0 ? n : 1));
+    scene_refresh_wave_speed(s);
     return removed;
 }
 

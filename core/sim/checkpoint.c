@@ -70,6 +70,11 @@ static void io_def(ck_io *io, hearth_scene_def *d, int writing) {
     f(io, &mr, sizeof mr);
     f(io, &d->energy_growth, sizeof d->energy_growth);
     f(io, &d->seed, sizeof d->seed);
+    int32_t hi = d->heat_implicit;
+    f(io, &d->oven_temperature, sizeof d->oven_temperature);
+    f(io, &d->oven_beta, sizeof d->oven_beta);
+    f(io, &hi, sizeof hi);
+    d->heat_implicit = hi;
     d->dim = dim;
     d->wall = (hearth_contact)wall;
     d->guard = (hearth_guard_policy)guard;
@@ -148,6 +153,8 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
         wr(&io, c->offset, sizeof c->offset);
         wr(&io, c->R, sizeof c->R);
         WR(&io, has_motion);
+        WR(&io, c->temperature);
+        WR(&io, c->beta);
     }
     const particles *ps = &s->ps;
     int32_t n = ps->n, stride = ps->state_stride;
@@ -274,6 +281,8 @@ hearth_scene *hearth_scene_load(const char *path, hearth_error *err) {
         rd(&io, c.offset, sizeof c.offset);
         rd(&io, c.R, sizeof c.R);
         RD(&io, has_motion);
+        RD(&io, c.temperature);
+        RD(&io, c.beta);
         hearth_collider_def cd = hearth_default_collider_def();
         cd.shape = sh;
         cd.mode = (hearth_contact)mode;
@@ -281,6 +290,8 @@ hearth_scene *hearth_scene_load(const char *path, hearth_error *err) {
         memcpy(cd.velocity, c.vel, sizeof c.vel);
         memcpy(cd.omega, c.omega, sizeof c.omega);
         memcpy(cd.pivot, c.pivot0, sizeof c.pivot0);
+        cd.temperature = c.temperature;
+        cd.beta = c.beta;
         int id = io.bad ? -1 : hearth_scene_add_collider(s, &cd, err);
         hearth_shape_free(sh);
         if (id < 0) return load_fail(s, f, err, path, "bad collider record");

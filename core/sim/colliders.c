@@ -49,6 +49,18 @@ hearth_status collider_init(collider *c, const hearth_collider_def *def, hearth_
     t3_identity(c->R);
     c->motion = def->motion;
     c->motion_ud = def->motion_ud;
+    if (!isnan(def->temperature) && !(def->temperature >= -273.15 && def->temperature <= 5000)) {
+        hearth_shape_free(c->shape);
+        c->shape = NULL;
+        return err_set(err, HEARTH_ERR_PARAM, "collider temperature = %g degrees C; valid range [-273.15, 5000]", def->temperature);
+    }
+    if (!(def->beta >= 0) || !isfinite(def->beta)) {
+        hearth_shape_free(c->shape);
+        c->shape = NULL;
+        return err_set(err, HEARTH_ERR_PARAM, "collider beta = %g W/(m^2 K); valid range [0, inf)", def->beta);
+    }
+    c->temperature = def->temperature;
+    c->beta = def->beta;
     /* With a motion function the def constants are unused: start from motion(0)
      * so vel/omega are meaningful before the scene first sets the time. */
     collider_set_time(c, 0.0);

@@ -21,6 +21,7 @@
 
 #include "error.h"
 #include "scene.h"
+#include "thermal.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -90,6 +91,8 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
         grid_block_coords(g, s->pb[k].block, c);
         s->colour_pb[fill[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++] = k;
     }
+    st = grid_set_channels(g, thermal_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
+    if (st) return st;
     return grid_activate(g, s->mark, err);
 }
 
@@ -125,6 +128,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
     double *Cc = pcold(ps, PC_C), *Fc = pcold(ps, PC_F), *state = pcold(ps, PC_STATE);
     const int *mat = pcoli(ps, PC_MAT);
     const double *Tcol = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    const int *pflags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
     const int stride = ps->state_stride;
     double pscratch[SCENE_MAX_PARAMS];
@@ -141,7 +145,9 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
         const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
                          F[2] * (F[3] * F[7] - F[4] * F[6]);
         double tau[9] = {0};
-        if (!(J > 0) || !all_finite(F, 9)) {
+        if (pflags && (pflags[i] & PF_FIXED)) {
+            /* a pinned particle has no dynamics: no stress, and its waves do not limit dt */
+        } else if (!(J > 0) || !all_finite(F, 9)) {
             record_fail(pp, i, FAIL_F, 0);
         } else {
             const material_slot *ms = &s->mats[mat[i]];
@@ -161,6 +167,14 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
                 record_fail(pp, i, FAIL_STRESS, 0);
                 memset(tau, 0, sizeof tau);
             }
+            /* thermal expansion (Ding et al. eq. 10): sigma += -c lambda J (theta - theta_ref) I, so tau = J sigma */
+            const double cl = ms->core[CP_EXPANSION];
+            if (cl > 0 && Tcol) {
+                const double th = cl * J * J * (Tcol[i] - ms->core[CP_REFERENCE_T]);
+                tau[0] -= th;
+                tau[4] -= th;
+                tau[8] -= th;
+            }
         }
         /* affine momentum with the stress folded in (MLS-MPM): Q = m C - dt V0 D^-1 tau */
         const double m = M[i], k0 = dt * V0[i] * Dinv;
@@ -177,6 +191,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
             bspline_weights(fx[d], w[d], dw);
         }
         const double mv0 = m * v[0], mv1 = m * v[1], mv2 = m * v[2];
+        /* heat (eq. 17, weighted by heat capacity m alpha so energy is conserved across materials) */
+        const double hc = Tcol ? m * s->mats[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = Tcol ? hc * Tcol[i] : 0.0;
         for (int a = 0; a < 3; a++) {
             const double d0 = (a - fx[0]) * dx;
             for (int b = 0; b < 3; b++) {
@@ -186,6 +202,10 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
                     tile[t] += wab * m;
                     tile[TN + t] += wab * (mv0 + Q[0] * d0 + Q[1] * d1);
                     tile[2 * TN + t] += wab * (mv1 + Q[3] * d0 + Q[4] * d1);
+                    if (Tcol) {
+                        tile[CH_HC * TN + t] += wab * hc;
+                        tile[CH_T * TN + t] += wab * hct;
+                    }
                 } else {
                     for (int c = 0; c < 3; c++) {
                         const double d2 = (c - fx[2]) * dx, wt = wab * w[2][c];
@@ -194,6 +214,10 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
                         tile[TN + t] += wt * (mv0 + Q[0] * d0 + Q[1] * d1 + Q[2] * d2);
                         tile[2 * TN + t] += wt * (mv1 + Q[3] * d0 + Q[4] * d1 + Q[5] * d2);
                         tile[3 * TN + t] += wt * (mv2 + Q[6] * d0 + Q[7] * d1 + Q[8] * d2);
+                        if (Tcol) {
+                            tile[CH_HC * TN + t] += wt * hc;
+                            tile[CH_T * TN + t] += wt * hct;
+                        }
                     }
                 }
             }
@@ -295,6 +319,9 @@ void mpm_grid_update(hearth_scene *s, double dt) {
 FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
+    const int heat = g->nch > GRID_NCH_MOMENTUM;
+    double *Tcol = heat ? pcold(ps, PC_TEMPERATURE) : NULL, *Tmax = heat ? pcold(ps, PC_TEMP_MAX) : NULL;
+    const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     const pblock pb = s->pb[k];
     pb_partial *pp = &s->partial[k];
     const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
@@ -313,6 +340,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
                 const int l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B
                                      : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
                 for (int d = 0; d < 3; d++) tile[d * TN + t] = node[(d + 1) * NPB + l];
+                if (heat) tile[3 * TN + t] = node[CH_T * NPB + l] - node[CH_T0 * NPB + l];
             }
 
     double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *Cc = pcold(ps, PC_C);
@@ -338,7 +366,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
             base[d] = b - org[d];
             bspline_weights(fx[d], w[d], dw);
         }
-        double nv[3] = {0, 0, 0}, B[9] = {0};
+        double nv[3] = {0, 0, 0}, B[9] = {0}, dT = 0;
         for (int a = 0; a < 3; a++) {
             const double d0 = (a - fx[0]) * dx;
             for (int b = 0; b < 3; b++) {
@@ -346,6 +374,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
                 if (D == 2) {
                     const int t = (base[0] + a) * GRID_T + (base[1] + b);
                     const double u0 = tile[t], u1 = tile[TN + t];
+                    if (heat) dT += wab * tile[3 * TN + t];
                     nv[0] += wab * u0;
                     nv[1] += wab * u1;
                     B[0] += wab * u0 * d0; B[1] += wab * u0 * d1;
@@ -355,6 +384,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
                         const double d2 = (c - fx[2]) * dx, wt = wab * w[2][c];
                         const int t = ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + c);
                         const double u0 = tile[t], u1 = tile[TN + t], u2 = tile[2 * TN + t];
+                        if (heat) dT += wt * tile[3 * TN + t];
                         nv[0] += wt * u0; nv[1] += wt * u1; nv[2] += wt * u2;
                         B[0] += wt * u0 * d0; B[1] += wt * u0 * d1; B[2] += wt * u0 * d2;
                         B[3] += wt * u1 * d0; B[4] += wt * u1 * d1; B[5] += wt * u1 * d2;
@@ -364,6 +394,15 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
             }
         }
         for (int a = 0; a < 9; a++) C[a] = Dinv * B[a];
+        if (heat) { /* FLIP (eq. 21): the particle takes its nodes' temperature change */
+            Tcol[i] += dT;
+            if (Tcol[i] > Tmax[i]) Tmax[i] = Tcol[i];
+        }
+        if (flags && (flags[i] & PF_FIXED)) { /* a pinned particle keeps its place */
+            memset(v, 0, 3 * sizeof(double));
+            memset(C, 0, 9 * sizeof(double));
+            continue;
+        }
         int out = 0;
         for (int d = 0; d < D; d++) {
             v[d] = nv[d];
@@ -385,11 +424,10 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
         ke += 0.5 * M[i] * sp2;
         if (sp2 > vmax) { vmax = sp2; fastest = i; }
         const material_slot *ms = &s->mats[mat[i]];
-        if (ms->m->state_size > 0) {
-            const double c =
-                ms->m->wave_speed(scene_params_for(s, mat[i], i, pscratch), state + (size_t)i * ps->state_stride);
-            if (c > cmax) cmax = c;
-        }
+        const double c = ms->m->state_size > 0
+                             ? ms->m->wave_speed(scene_params_for(s, mat[i], i, pscratch), state + (size_t)i * ps->state_stride)
+                             : ms->wave_speed;
+        if (c > cmax) cmax = c;
     }
     pp->ke = ke;
     pp->vmax = vmax;
@@ -405,7 +443,7 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
     void (*fn)(hearth_scene *, int, double, double *) = s->g.dim == 2 ? g2p_block_2d : g2p_block_3d;
 #pragma omp parallel
     {
-        double tile[3 * GRID_T * GRID_T * GRID_T];
+        double tile[4 * GRID_T * GRID_T * GRID_T];
 #pragma omp for schedule(dynamic, 2)
         for (int k = 0; k < s->npb; k++) fn(s, k, dt, tile);
     }
@@ -434,6 +472,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     hearth_status st = mpm_sort(s, err);
     if (st) return st;
     mpm_p2g(s, dt, rep);
+    if (thermal_active(s) && (st = thermal_grid_update(s, dt, err))) return st;
     mpm_grid_update(s, dt);
     mpm_g2p(s, dt, rep);
     return HEARTH_OK;

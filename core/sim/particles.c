@@ -18,6 +18,7 @@ static const struct {
     [PC_STATE] = {"state", 0, 0},   [PC_TEMPERATURE] = {"temperature", 1, 0},
     [PC_TEMP_MAX] = {"temperature_max", 1, 0},
     [PC_BODY] = {"body", 1, 1},
+    [PC_FLAGS] = {"flags", 1, 1},
 };
 
 const char *particles_col_name(int c) { return col_info[c].name; }

@@ -27,8 +27,11 @@ typedef enum pcol {
     PC_TEMPERATURE = PC_NCORE, /* degrees C, 1 */
     PC_TEMP_MAX,               /* highest temperature reached (for irreversible curves), 1 */
     PC_BODY,                   /* body id (int32), for scenes built from bodies */
+    PC_FLAGS,                  /* PF_* bits (int32) */
     PC_COUNT
 } pcol;
+
+enum { PF_FIXED = 1, PF_BOUNDARY = 2 }; /* pinned body; boundary particle (Ding et al. §6.6) */
 
 typedef struct particles {
     int n, cap;

@@ -13,7 +13,7 @@
 #include "scene.h"
 
 typedef enum field_id {
-    F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_TEMPERATURE, F_COUNT
+    F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_TEMPERATURE, F_BOUNDARY, F_COUNT
 } field_id;
 
 /* A field is live when its column is enabled (column -1: always live). */
@@ -23,7 +23,8 @@ static const struct {
     const char *how; /* how to make it live */
 } fields[F_COUNT] = {
     [F_TEMPERATURE] = {"temperature", "degC", 1, PC_TEMPERATURE,
-                       "give a body a temperature (s:add{..., temperature = 20}) or a material a temperature curve"},
+                       "give a body a temperature (s:add{..., temperature = 20}), the scene an oven, or a material a temperature curve"},
+    [F_BOUNDARY] = {"boundary", "1", 1, PC_TEMPERATURE, "turn the temperature field on (boundary particles are where heat enters)"},
     [F_VELOCITY] = {"velocity", "m/s", 3, -1, NULL},   [F_VX] = {"velocity_x", "m/s", 1, -1, NULL},
     [F_VY] = {"velocity_y", "m/s", 1, -1, NULL},       [F_VZ] = {"velocity_z", "m/s", 1, -1, NULL},
     [F_SPEED] = {"speed", "m/s", 1, -1, NULL},         [F_DENSITY] = {"density", "kg/m^3", 1, -1, NULL},
@@ -114,6 +115,7 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_DENSITY: out[0] = pcold(ps, PC_MASS)[i] / (pcold(ps, PC_VOL0)[i] * det3(F)); break;
     case F_J: out[0] = det3(F); break;
     case F_TEMPERATURE: out[0] = pcold(ps, PC_TEMPERATURE)[i]; break;
+    case F_BOUNDARY: out[0] = (pcoli(ps, PC_FLAGS)[i] & PF_BOUNDARY) ? 1.0 : 0.0; break;
     default: {
         double tau[9];
         particle_stress(s, i, tau, state_copy);

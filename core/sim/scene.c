@@ -8,6 +8,7 @@
 #include "error.h"
 #include "params.h"
 #include "scene.h"
+#include "thermal.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -49,11 +50,14 @@ hearth_scene_def hearth_default_scene_def(void) {
         .max_rollbacks = 8,
         .energy_growth = 10,
         .seed = 1,
+        .oven_temperature = NAN,
+        .oven_beta = 0,
+        .heat_implicit = 0,
     };
 }
 
 hearth_collider_def hearth_default_collider_def(void) {
-    return (hearth_collider_def){.mode = HEARTH_SLIP};
+    return (hearth_collider_def){.mode = HEARTH_SLIP, .temperature = NAN};
 }
 
 static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
@@ -78,6 +82,13 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
         return err_set(err, HEARTH_ERR_PARAM, "scene: guard policy %d; valid: stop, rollback", (int)d->guard);
     if (d->max_rollbacks < 0 || d->max_rollbacks > 60)
         return err_set(err, HEARTH_ERR_PARAM, "scene: max_rollbacks = %d; valid range [0, 60]", d->max_rollbacks);
+    if (!isnan(d->oven_temperature) && !(d->oven_temperature >= -273.15 && d->oven_temperature <= 5000))
+        return err_set(err, HEARTH_ERR_PARAM, "scene: oven temperature = %g degrees C; valid range [-273.15, 5000]",
+                       d->oven_temperature);
+    if (!(d->oven_beta >= 0) || !isfinite(d->oven_beta))
+        return err_set(err, HEARTH_ERR_PARAM, "scene: oven beta = %g W/(m^2 K); valid range [0, inf)", d->oven_beta);
+    if (d->heat_implicit != 0 && d->heat_implicit != 1)
+        return err_set(err, HEARTH_ERR_PARAM, "scene: heat = %d; valid: 0 (explicit), 1 (implicit)", d->heat_implicit);
     if (!(d->energy_growth > 1))
         return err_set(err, HEARTH_ERR_PARAM, "scene: energy_growth = %g; it must be > 1", d->energy_growth);
     return HEARTH_OK;
@@ -100,6 +111,10 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
     particles_init(&s->snap);
     if (grid_init(&s->g, d.dim, d.dx, d.lo, d.hi, err)) {
         mem_free(s, sizeof *s);
+        return NULL;
+    }
+    if (!isnan(d.oven_temperature) && scene_enable_temperature(s, err)) { /* an oven makes the field live */
+        hearth_scene_destroy(s);
         return NULL;
     }
     s->counts = mem_calloc(sizeof(int) * ((size_t)s->g.nblocks + 1));
@@ -142,6 +157,9 @@ void hearth_scene_destroy(hearth_scene *s) {
     mem_free(s->colour_pb, sizeof(int) * (size_t)s->pbcap);
     mem_free(s->partial, sizeof(pb_partial) * (size_t)s->pbcap);
     mem_free(s->counts, sizeof(int) * ((size_t)s->g.nblocks + 1));
+    mem_free(s->bnd_coef, sizeof(double) * (size_t)s->bnd_cap);
+    mem_free(s->bnd_temp, sizeof(double) * (size_t)s->bnd_cap);
+    mem_free(s->cg_partial, sizeof(double) * (size_t)s->cg_cap);
     mem_free(s->mark, (size_t)s->g.nblocks);
     grid_free(&s->g);
     mem_free(s, sizeof *s);
@@ -218,6 +236,7 @@ hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err) {
     if (ps->enabled & (1u << PC_TEMPERATURE)) return HEARTH_OK;
     hearth_status st = particles_enable(ps, PC_TEMPERATURE, err);
     if (!st) st = particles_enable(ps, PC_TEMP_MAX, err);
+    if (!st) st = particles_enable(ps, PC_FLAGS, err); /* the boundary flag is a field with heat */
     if (st) return st;
     for (int i = 0; i < ps->n; i++) pcold(ps, PC_TEMPERATURE)[i] = pcold(ps, PC_TEMP_MAX)[i] = SCENE_ROOM_TEMPERATURE;
     return HEARTH_OK;
@@ -262,10 +281,7 @@ int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *c
     material_slot *ms = &s->mats[s->nmat];
     *ms = (material_slot){.plugin = pl, .m = m, .params = p, .density_index = params_index(m, "density")};
     memcpy(ms->core, core, sizeof core);
-    if (m->state_size == 0) {
-        ms->wave_speed = m->wave_speed(p, NULL);
-        if (ms->wave_speed > s->c_max) s->c_max = ms->wave_speed;
-    }
+    if (m->state_size == 0) ms->wave_speed = m->wave_speed(p, NULL);
     return s->nmat++;
 }
 
@@ -334,6 +350,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         if (ps->enabled & (1u << PC_TEMPERATURE))
             pcold(ps, PC_TEMPERATURE)[j] = pcold(ps, PC_TEMP_MAX)[j] = SCENE_ROOM_TEMPERATURE;
         if (ps->enabled & (1u << PC_BODY)) pcoli(ps, PC_BODY)[j] = -1;
+        if (ps->enabled & (1u << PC_FLAGS)) pcoli(ps, PC_FLAGS)[j] = 0;
         if (ps->state_stride) {
             double *st = pcold(ps, PC_STATE) + (size_t)j * ps->state_stride;
             memset(st, 0, sizeof(double) * (size_t)ps->state_stride);
@@ -345,10 +362,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         s->kinetic += 0.5 * rho * volume * sp * sp;
     }
     ps->n += n;
-    if (ms->m->state_size > 0 && ps->n) {
-        double c = ms->m->wave_speed(ms->params, pcold(ps, PC_STATE));
-        if (c > s->c_max) s->c_max = c;
-    }
+    scene_refresh_wave_speed(s);
     return n;
 }
 
@@ -456,17 +470,30 @@ void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void 
 /* ---- stepping -------------------------------------------------------- */
 
 double scene_stable_dt(const hearth_scene *s) {
+    /* the tightest of: motion and waves (CFL), the user's maximum, explicit conduction */
     const double sp = s->max_speed + s->c_max;
-    double dt = sp > 0 ? s->def.cfl * s->def.dx / sp : (s->def.dt_max > 0 ? s->def.dt_max : s->def.cfl * s->def.dx);
+    double dt = sp > 0 ? s->def.cfl * s->def.dx / sp : INFINITY;
     if (s->def.dt_max > 0 && dt > s->def.dt_max) dt = s->def.dt_max;
+    const double heat = thermal_dt_limit(s);
+    if (dt > heat) dt = heat;
+    if (isinf(dt)) dt = s->def.cfl * s->def.dx; /* nothing moves or conducts: as if at 1 m/s */
     return dt * s->dt_scale;
 }
 
-static double stateless_c_max(const hearth_scene *s) {
-    double c = 0;
-    for (int i = 0; i < s->nmat; i++)
-        if (s->mats[i].m->state_size == 0 && s->mats[i].wave_speed > c) c = s->mats[i].wave_speed;
-    return c;
+void scene_refresh_wave_speed(hearth_scene *s) {
+    const particles *ps = &s->ps;
+    const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
+    double c = 0, pscratch[SCENE_MAX_PARAMS];
+    for (int i = 0; i < ps->n; i++) {
+        if (flags && (flags[i] & PF_FIXED)) continue;
+        const int m = pcoli(ps, PC_MAT)[i];
+        const material_slot *ms = &s->mats[m];
+        const double ci = ms->m->state_size > 0
+                              ? ms->m->wave_speed(scene_params_for(s, m, i, pscratch), pcold(ps, PC_STATE) + (size_t)i * ps->state_stride)
+                              : ms->wave_speed;
+        if (ci > c) c = ci;
+    }
+    s->c_max = c;
 }
 
 /* One step of length dt (shortened by rollbacks). */
@@ -492,8 +519,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             s->dt_last = dt;
             for (int c = 0; c < s->ncol; c++) collider_advance(&s->cols[c], dt);
             s->max_speed = rep.max_speed;
-            double c0 = stateless_c_max(s);
-            s->c_max = rep.c_max > c0 ? rep.c_max : c0;
+            s->c_max = rep.c_max; /* moving particles only: a pinned body has no waves */
             s->kinetic = rep.kinetic;
             if (s->kinetic > s->kinetic_peak) s->kinetic_peak = s->kinetic;
             s->out_of_domain += rep.out_of_domain;
@@ -559,6 +585,8 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
     st->guard = s->guard;
     snprintf(st->diagnosis, sizeof st->diagnosis, "%s", s->guard == HEARTH_GUARD_OK ? "" : s->diagnosis);
     st->grid_blocks = s->g.nactive;
+    st->heat_energy = thermal_energy(s);
+    st->cg_iterations = s->cg_iterations;
 }
 
 int hearth_scene_particle_count(const hearth_scene *s) { return s->ps.n; }

@@ -102,6 +102,12 @@ struct hearth_scene {
     collider *snap_cols;
 
     char fields[256];
+
+    /* heat transport scratch (thermal.c), allocated only when the temperature field is live */
+    double *bnd_coef, *bnd_temp; /* per particle: boundary S beta (W/K) and outside temperature */
+    int bnd_cap;
+    double *cg_partial;          /* per active block: partial dot products */
+    int cg_cap, cg_iterations;
 };
 
 /* scene.c */
@@ -110,6 +116,8 @@ struct hearth_scene {
 const double *scene_params_for(const hearth_scene *s, int mat, int particle, double *scratch);
 /* Turn the temperature field on (room temperature for particles that have none). */
 hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err);
+/* Largest wave speed over moving particles (s->c_max), after particles change. */
+void scene_refresh_wave_speed(hearth_scene *s);
 hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err);
 double scene_stable_dt(const hearth_scene *s);
 

@@ -169,7 +169,7 @@ end
 
 local S = core.scene_methods
 local scene_keys = { dim = true, dx = true, box = true, solver = true, gravity = true, cfl = true, dt_max = true,
-  wall = true, friction = true, guard = true, max_rollbacks = true, seed = true, name = true }
+  wall = true, friction = true, guard = true, max_rollbacks = true, seed = true, name = true, oven = true, heat = true }
 local contact = { "sticky", "slip", "separate" }
 
 --- A scene: h.scene{dim = 2, dx = 0.01, box = {{0,0},{1,1}}, gravity = {0,-9.81}, ...}
@@ -199,7 +199,15 @@ function h.scene(o)
     guard = check_choice(o.guard or "stop", "h.scene: guard", { "stop", "rollback" }),
     max_rollbacks = check_number(o.max_rollbacks or 8, "h.scene: max_rollbacks", 0, 60),
     seed = check_number(o.seed or 1, "h.scene: seed", 0, 2 ^ 52),
+    heat_implicit = check_choice(o.heat or "explicit", "h.scene: heat", { "explicit", "implicit" }),
+    oven_beta = 0,
   }
+  if o.oven ~= nil then
+    if type(o.oven) ~= "table" then error("h.scene: oven = {temperature = degC, beta = W/(m^2 K)}", 2) end
+    check_keys(o.oven, { temperature = true, beta = true }, "h.scene: oven")
+    def.oven_temperature = check_number(o.oven.temperature, "h.scene: oven.temperature", -273.15, 5000, "degC")
+    def.oven_beta = check_number(o.oven.beta or 10, "h.scene: oven.beta", 0, 1e9, "W/(m^2 K)")
+  end
   if dim == 2 then def.lo[3], def.hi[3] = 0, 0 end
   local ok, s = pcall(core.scene_new, def)
   if not ok then error(s, 2) end
@@ -237,7 +245,7 @@ end
 function S:add(o)
   if type(o) ~= "table" then error("s:add: expected a table", 2) end
   check_keys(o, { shape = true, material = true, ppc = true, velocity = true, jitter = true, temperature = true,
-    name = true }, "s:add")
+    name = true, fixed = true }, "s:add")
   if not is_shape(o.shape) then error("s:add: shape = h.box(...), h.disc(...), ... is required", 2) end
   if o.material == nil then error("s:add: material = h.material(...) is required", 2) end
   local ok, id = pcall(material_id, self, o.material)
@@ -246,7 +254,7 @@ function S:add(o)
   local jitter = check_number(o.jitter or 0.5, "s:add: jitter", 0, 1)
   local vel = check_vec(o.velocity or { 0, 0, 0 }, "s:add: velocity")
   if o.temperature ~= nil then check_number(o.temperature, "s:add: temperature", -273.15, 5000, "degC") end
-  local ok2, body = pcall(self._add, self, o.shape, id, math.floor(ppc), jitter, vel, o.temperature)
+  local ok2, body = pcall(self._add, self, o.shape, id, math.floor(ppc), jitter, vel, o.temperature, o.fixed)
   if not ok2 then error(body, 2) end
   return body
 end
@@ -254,8 +262,10 @@ end
 --- s:collider{shape = ..., mode = "separate", friction = 0, velocity = {..} or function(t), omega = ..., pivot = {..}}
 function S:collider(o)
   if type(o) ~= "table" then error("s:collider: expected a table", 2) end
-  check_keys(o, { shape = true, mode = true, friction = true, velocity = true, omega = true, pivot = true, name = true },
-    "s:collider")
+  check_keys(o, { shape = true, mode = true, friction = true, velocity = true, omega = true, pivot = true, name = true,
+    temperature = true, beta = true }, "s:collider")
+  if o.temperature ~= nil then check_number(o.temperature, "s:collider: temperature", -273.15, 5000, "degC") end
+  if o.beta ~= nil then check_number(o.beta, "s:collider: beta", 0, 1e9, "W/(m^2 K)") end
   if not is_shape(o.shape) then error("s:collider: shape = h.plane(...), h.box(...), ... is required", 2) end
   local mode = check_choice(o.mode or "separate", "s:collider: mode", contact)
   local fr = check_number(o.friction or 0, "s:collider: friction", 0, 1e6)
@@ -264,7 +274,8 @@ function S:collider(o)
   local w = o.omega
   if w ~= nil and type(w) ~= "function" and type(w) ~= "number" then w = check_vec(w, "s:collider: omega") end
   local p = o.pivot and check_vec(o.pivot, "s:collider: pivot") or nil
-  local ok, id = pcall(self._collider, self, o.shape, mode, fr, v, w, p)
+  local ok, id = pcall(self._collider, self, o.shape, mode, fr, v, w, p, o.temperature,
+    o.temperature and (o.beta or 100) or 0)
   if not ok then error(id, 2) end
   return id
 end

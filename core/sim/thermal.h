@@ -1,0 +1,18 @@
+/* thermal.h: heat transport of Ding et al. 2019 §4 and §6.3 on the MPM grid.
+ * Runs only when the temperature field is live. */
+#ifndef HEARTH_THERMAL_H
+#define HEARTH_THERMAL_H
+#include "hearth/hearth.h"
+
+struct hearth_scene;
+
+/// Is heat transport on for this scene (temperature live)?
+int thermal_active(const struct hearth_scene *s);
+/// Largest explicit heat step (s), or INFINITY when implicit or inactive.
+double thermal_dt_limit(const struct hearth_scene *s);
+/// After P2G (heat capacity and C*theta scattered): temperatures on nodes,
+/// boundary particles, and the forward or backward Euler update of eq. 9.
+hearth_status thermal_grid_update(struct hearth_scene *s, double dt, hearth_error *err);
+/// Total heat energy sum m alpha (theta + 273.15) of the particles (J).
+double thermal_energy(const struct hearth_scene *s);
+#endif
