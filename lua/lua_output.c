@@ -9,17 +9,6 @@
 #include "atomic_file.h"
 #include "hearth_lua.h"
 
-static int mkdir_p(const char *dir) {
-    char buf[4096];
-    snprintf(buf, sizeof buf, "%s", dir);
-    for (char *p = buf + 1; *p; p++)
-        if (*p == '/') {
-            *p = '\0';
-            if (mkdir(buf, 0777) && errno != EEXIST) return -1;
-            *p = '/';
-        }
-    return mkdir(buf, 0777) && errno != EEXIST ? -1 : 0;
-}
 
 const char *hl_out_path(lua_State *L, const char *path, char *buf, size_t n) {
     const hl_options *o = hl_opts(L);
@@ -31,7 +20,8 @@ const char *hl_out_path(lua_State *L, const char *path, char *buf, size_t n) {
     char *slash = strrchr(dir, '/');
     if (slash && slash != dir) {
         *slash = '\0';
-        if (mkdir_p(dir)) luaL_error(L, "cannot create folder '%s': %s", dir, strerror(errno));
+        hearth_error err;
+        if (hearth_mkdir_p(dir, &err)) hl_raise(L, &err);
     }
     return buf;
 }

@@ -43,17 +43,6 @@ static void run_usage(FILE *f, const char *cmd) {
                    "Exit status: 0 done, 1 scene error, 2 bad usage, 3 the stability guard stopped the run.\n");
 }
 
-static int mkdir_p(const char *dir) {
-    char buf[4096];
-    snprintf(buf, sizeof buf, "%s", dir);
-    for (char *p = buf + 1; *p; p++)
-        if (*p == '/') {
-            *p = '\0';
-            if (mkdir(buf, 0777) && errno != EEXIST) return -1;
-            *p = '/';
-        }
-    return mkdir(buf, 0777) && errno != EEXIST ? -1 : 0;
-}
 
 static int parse(run_args *a, int argc, char **argv, const char *cmd) {
     memset(a, 0, sizeof *a);
@@ -160,8 +149,9 @@ static int report(lua_State *L, const char *cmd) {
 }
 
 static lua_State *start(run_args *a, progress *pr, const char *cmd) {
-    if (mkdir_p(a->out)) {
-        fprintf(stderr, "hearth %s: cannot create output folder '%s': %s\n", cmd, a->out, strerror(errno));
+    hearth_error err;
+    if (hearth_mkdir_p(a->out, &err)) {
+        fprintf(stderr, "hearth %s: %s\n", cmd, err.msg);
         return NULL;
     }
     hearth_plugin_path_add(a->dir_buf);

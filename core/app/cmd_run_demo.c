@@ -12,17 +12,6 @@
 #include "hearth/hearth.h"
 #include "progress.h"
 
-static int mkdir_p(const char *dir) {
-    char buf[4096];
-    snprintf(buf, sizeof buf, "%s", dir);
-    for (char *p = buf + 1; *p; p++)
-        if (*p == '/') {
-            *p = '\0';
-            if (mkdir(buf, 0777) && errno != EEXIST) return -1;
-            *p = '/';
-        }
-    return mkdir(buf, 0777) && errno != EEXIST ? -1 : 0;
-}
 
 static hearth_scene *build_demo(hearth_error *err) {
     hearth_scene_def d = hearth_default_scene_def();
@@ -120,8 +109,8 @@ int cmd_demo(int argc, char **argv) {
         fprintf(stderr, "hearth demo: %s\n", err.msg);
         return 1;
     }
-    if (mkdir_p(out)) {
-        fprintf(stderr, "hearth demo: cannot create output folder '%s': %s\n", out, strerror(errno));
+    if (hearth_mkdir_p(out, &err)) {
+        fprintf(stderr, "hearth demo: %s\n", err.msg);
         hearth_scene_destroy(s);
         return 1;
     }

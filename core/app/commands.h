@@ -2,6 +2,7 @@
  * process exit status: 0 ok, 1 a scene or run error, 2 bad usage, 3 guard stop. */
 #ifndef HEARTH_APP_COMMANDS_H
 #define HEARTH_APP_COMMANDS_H
+#include "hearth/hearth.h"
 
 int cmd_demo(int argc, char **argv);
 int cmd_plugins(int argc, char **argv);
@@ -9,6 +10,13 @@ int cmd_plugin_check(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
 int cmd_run(int argc, char **argv);
 int cmd_repl(int argc, char **argv);
+int cmd_rheometer(int argc, char **argv);
+int cmd_fit(int argc, char **argv);
+
+/* shared by the rheometer and fit commands (cmd_rheometer.c) */
+int app_flow_plot(const char *path, const char *title, const double *x, const double *y, int n, const char *data_label,
+                  const double *cx, const double *cy, int cn, const char *curve_label, hearth_error *err);
+const char *app_sauce_library_path(const char *override);
 
 /// Parse a whole positive integer option value; prints a usage error and returns -1 when bad.
 long app_parse_int(const char *cmd, const char *flag, const char *text, long min, long max);

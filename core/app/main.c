@@ -20,6 +20,10 @@ static void usage(FILE *f) {
             "  hearth repl [SCENE.lua]       a plain Lua prompt with the scene loaded (reads pipes too)\n"
             "  hearth plugins                list material plugins and their parameters\n"
             "  hearth plugin check FILE.so   run the conformance battery on one plugin\n"
+            "  hearth rheometer MATERIAL [--mix sauce.a:0.5,sauce.b:0.5] [--rates MIN:MAX:COUNT] [--out DIR] [--json]\n"
+            "                                flow curve of a material or library sauce in a virtual rheometer\n"
+            "  hearth fit FLOWCURVE.csv [--json] [--out DIR]\n"
+            "                                fit sigma = sigma_y + eta rate^h (relative error, Nagasawa et al. eq. 2)\n"
             "  hearth bench [--threads N] [--cells N] [--steps N] [--dim 2|3]\n"
             "                                throughput of a standard elastic block, as JSON\n"
             "  hearth --help | --version\n"
@@ -70,6 +74,8 @@ int main(int argc, char **argv) {
     if (!strcmp(c, "bench")) return cmd_bench(argc - 1, argv + 1);
     if (!strcmp(c, "run")) return cmd_run(argc - 1, argv + 1);
     if (!strcmp(c, "repl")) return cmd_repl(argc - 1, argv + 1);
+    if (!strcmp(c, "rheometer")) return cmd_rheometer(argc - 1, argv + 1);
+    if (!strcmp(c, "fit")) return cmd_fit(argc - 1, argv + 1);
     /* `hearth SCENE.lua` will open the dashboard; until it exists it runs the scene headless */
     if (strlen(c) > 4 && !strcmp(c + strlen(c) - 4, ".lua")) return cmd_run(argc, argv);
     fprintf(stderr, "hearth: unknown command '%s'\n\n", c);

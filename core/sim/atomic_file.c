@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "error.h"
@@ -34,6 +35,20 @@ hearth_status atomic_commit(atomic_file *af, hearth_error *err) {
         remove(af->tmp);
         return err_set(err, HEARTH_ERR_IO, "%s: write failed: %s", af->path, strerror(e));
     }
+    return HEARTH_OK;
+}
+
+hearth_status hearth_mkdir_p(const char *dir, hearth_error *err) {
+    char buf[4096];
+    if (snprintf(buf, sizeof buf, "%s", dir) >= (int)sizeof buf) return err_set(err, HEARTH_ERR_IO, "%s: path too long", dir);
+    for (char *p = buf + 1; *p; p++)
+        if (*p == '/') {
+            *p = '\0';
+            if (mkdir(buf, 0777) && errno != EEXIST)
+                return err_set(err, HEARTH_ERR_IO, "cannot create folder '%s': %s", buf, strerror(errno));
+            *p = '/';
+        }
+    if (mkdir(buf, 0777) && errno != EEXIST) return err_set(err, HEARTH_ERR_IO, "cannot create folder '%s': %s", buf, strerror(errno));
     return HEARTH_OK;
 }
 

@@ -235,6 +235,8 @@ typedef struct hearth_stats {
     hearth_guard_state guard;
     char diagnosis[1024];  ///< empty unless the guard acted
     int grid_blocks;       ///< active grid blocks
+    double heat_energy;    ///< sum m alpha (theta + 273.15) over particles (J); 0 without temperature
+    int cg_iterations;     ///< conjugate-gradient iterations of the last implicit heat solve
 } hearth_stats;
 void hearth_scene_stats(const hearth_scene *s, hearth_stats *st);
 
@@ -322,6 +324,9 @@ hearth_status hearth_render_particles(const hearth_scene *s, const char *field, 
 /// wide with the domain's aspect ratio; outside the material is background.
 hearth_status hearth_render_slice(const hearth_scene *s, const char *field, int axis, double at, const char *path,
                                   int width, hearth_error *err);
+
+/// Create a folder and any missing parents (like mkdir -p). Output folders use it.
+hearth_status hearth_mkdir_p(const char *dir, hearth_error *err);
 
 /* ---- particle dumps ------------------------------------------------- */
 
