@@ -436,6 +436,7 @@ static int l_stats(lua_State *L) {
     lua_pushinteger(L, hearth_scene_body_count(u->s)); lua_setfield(L, -2, "bodies");
     lua_pushnumber(L, st.heat_energy); lua_setfield(L, -2, "heat_energy");
     lua_pushinteger(L, st.cg_iterations); lua_setfield(L, -2, "cg_iterations");
+    lua_pushnumber(L, st.gas_moles); lua_setfield(L, -2, "gas");
     /* the live fields as a list */
     lua_newtable(L);
     const char *f = hearth_scene_fields(u->s);

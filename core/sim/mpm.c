@@ -21,6 +21,7 @@
 
 #include "error.h"
 #include "scene.h"
+#include "gas.h"
 #include "thermal.h"
 
 #ifdef _OPENMP
@@ -129,6 +130,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
     const int *mat = pcoli(ps, PC_MAT);
     const double *Tcol = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     const int *pflags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
+    const double *Gcol = ps->enabled & (1u << PC_GAS) ? pcold(ps, PC_GAS) : NULL;
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
     const int stride = ps->state_stride;
     double pscratch[SCENE_MAX_PARAMS];
@@ -166,6 +168,13 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
             } else if (!all_finite(tau, 9)) {
                 record_fail(pp, i, FAIL_STRESS, 0);
                 memset(tau, 0, sizeof tau);
+            }
+            if (Gcol) { /* gas pressure (eq. 13): tau_g = J sigma_g = -n^g R theta / n^p I */
+                const double JP = ms->m->plastic_J ? ms->m->plastic_J(pt.p, pt.state) : 1.0;
+                const double tg = gas_tau(Gcol[i], Tcol[i], gas_porosity(JP, ms->core[CP_POROSITY0]));
+                tau[0] += tg;
+                tau[4] += tg;
+                tau[8] += tg;
             }
             /* thermal expansion (Ding et al. eq. 10): sigma += -c lambda J (theta - theta_ref) I, so tau = J sigma */
             const double cl = ms->core[CP_EXPANSION];
@@ -321,6 +330,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
     particles *ps = &s->ps;
     const int heat = g->nch > GRID_NCH_MOMENTUM;
     double *Tcol = heat ? pcold(ps, PC_TEMPERATURE) : NULL, *Tmax = heat ? pcold(ps, PC_TEMP_MAX) : NULL;
+    double *Gcol = heat && (ps->enabled & (1u << PC_GAS)) ? pcold(ps, PC_GAS) : NULL;
     const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     const pblock pb = s->pb[k];
     pb_partial *pp = &s->partial[k];
@@ -395,8 +405,14 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
         }
         for (int a = 0; a < 9; a++) C[a] = Dinv * B[a];
         if (heat) { /* FLIP (eq. 21): the particle takes its nodes' temperature change */
+            const double T0 = Tcol[i];
             Tcol[i] += dT;
             if (Tcol[i] > Tmax[i]) Tmax[i] = Tcol[i];
+            if (Gcol) { /* CO2 over the step, temperature moving linearly from T0 to T1 (§5.4) */
+                const material_slot *gm = &s->mats[mat[i]];
+                Gcol[i] += gas_moles_step(T0, Tcol[i], dt, gm->core[CP_GAS_RATE], gm->params[gm->density_index],
+                                          gm->core[CP_REACTION_T], gm->core[CP_REACTION_WIDTH]);
+            }
         }
         if (flags && (flags[i] & PF_FIXED)) { /* a pinned particle keeps its place */
             memset(v, 0, 3 * sizeof(double));

@@ -12,6 +12,10 @@ static const hearth_param core_schema[CP_COUNT] = {
     [CP_SPECIFIC_HEAT] = {"specific_heat", "J/(kg K)", "specific heat alpha (Ding et al. eq. 9)", 2500, 1, 1e7},
     [CP_EXPANSION] = {"expansion", "Pa/K", "thermal expansion coupling c lambda (Ding et al. eq. 9-10); 0 = none", 0, 0, 1e9},
     [CP_REFERENCE_T] = {"reference_temperature", "degC", "temperature of zero thermal stress", 20, -273.15, 5000},
+    [CP_GAS_RATE] = {"gas_rate", "mol/(kg s)", "leavening CO2 rate alpha^g (Ding et al. §5.4); 0 = no gas", 0, 0, 1e3},
+    [CP_REACTION_T] = {"reaction_temperature", "degC", "temperature of the peak CO2 rate theta_r", 40, -273.15, 1000},
+    [CP_REACTION_WIDTH] = {"reaction_width", "K", "width dtheta of the CO2 rate's bell curve", 20, 1e-3, 1000},
+    [CP_POROSITY0] = {"porosity", "1", "initial gas porosity n^p_0 (gas volume over solid-gas volume)", 0.1, 1e-6, 0.99},
 };
 
 const hearth_param *hearth_core_params(int *n) {

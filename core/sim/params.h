@@ -4,7 +4,11 @@
 #include "hearth/hearth.h"
 
 /* The field properties every material has, besides its plugin's parameters. */
-enum { CP_CONDUCTIVITY, CP_SPECIFIC_HEAT, CP_EXPANSION, CP_REFERENCE_T, CP_COUNT };
+enum {
+    CP_CONDUCTIVITY, CP_SPECIFIC_HEAT, CP_EXPANSION, CP_REFERENCE_T,
+    CP_GAS_RATE, CP_REACTION_T, CP_REACTION_WIDTH, CP_POROSITY0,
+    CP_COUNT
+};
 
 /// Fill out[] (plugin schema order) and core[] (CP_* order) from defaults and
 /// the given name/value pairs. Unknown names suggest the nearest valid one;

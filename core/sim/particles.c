@@ -19,6 +19,7 @@ static const struct {
     [PC_TEMP_MAX] = {"temperature_max", 1, 0},
     [PC_BODY] = {"body", 1, 1},
     [PC_FLAGS] = {"flags", 1, 1},
+    [PC_GAS] = {"gas", 1, 0},
 };
 
 const char *particles_col_name(int c) { return col_info[c].name; }

@@ -28,6 +28,7 @@ typedef enum pcol {
     PC_TEMP_MAX,               /* highest temperature reached (for irreversible curves), 1 */
     PC_BODY,                   /* body id (int32), for scenes built from bodies */
     PC_FLAGS,                  /* PF_* bits (int32) */
+    PC_GAS,                    /* CO2 moles per unit reference volume n^g (mol/m^3), 1 */
     PC_COUNT
 } pcol;
 

@@ -10,10 +10,12 @@
 
 #include "alloc.h"
 #include "error.h"
+#include "gas.h"
 #include "scene.h"
 
 typedef enum field_id {
-    F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_TEMPERATURE, F_BOUNDARY, F_COUNT
+    F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_TEMPERATURE, F_BOUNDARY,
+    F_GAS, F_POROSITY, F_GAS_PRESSURE, F_COUNT
 } field_id;
 
 /* A field is live when its column is enabled (column -1: always live). */
@@ -25,6 +27,9 @@ static const struct {
     [F_TEMPERATURE] = {"temperature", "degC", 1, PC_TEMPERATURE,
                        "give a body a temperature (s:add{..., temperature = 20}), the scene an oven, or a material a temperature curve"},
     [F_BOUNDARY] = {"boundary", "1", 1, PC_TEMPERATURE, "turn the temperature field on (boundary particles are where heat enters)"},
+    [F_GAS] = {"gas", "mol/m^3", 1, PC_GAS, "give a material a leavening rate (gas_rate > 0)"},
+    [F_POROSITY] = {"porosity", "1", 1, PC_GAS, "give a material a leavening rate (gas_rate > 0)"},
+    [F_GAS_PRESSURE] = {"gas_pressure", "Pa", 1, PC_GAS, "give a material a leavening rate (gas_rate > 0)"},
     [F_VELOCITY] = {"velocity", "m/s", 3, -1, NULL},   [F_VX] = {"velocity_x", "m/s", 1, -1, NULL},
     [F_VY] = {"velocity_y", "m/s", 1, -1, NULL},       [F_VZ] = {"velocity_z", "m/s", 1, -1, NULL},
     [F_SPEED] = {"speed", "m/s", 1, -1, NULL},         [F_DENSITY] = {"density", "kg/m^3", 1, -1, NULL},
@@ -116,6 +121,18 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_J: out[0] = det3(F); break;
     case F_TEMPERATURE: out[0] = pcold(ps, PC_TEMPERATURE)[i]; break;
     case F_BOUNDARY: out[0] = (pcoli(ps, PC_FLAGS)[i] & PF_BOUNDARY) ? 1.0 : 0.0; break;
+    case F_GAS: out[0] = pcold(ps, PC_GAS)[i]; break;
+    case F_POROSITY:
+    case F_GAS_PRESSURE: {
+        const int m = pcoli(ps, PC_MAT)[i];
+        const material_slot *ms = &s->mats[m];
+        double pscratch[SCENE_MAX_PARAMS];
+        const double *st = ps->state_stride ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL;
+        const double JP = ms->m->plastic_J ? ms->m->plastic_J(scene_params_for(s, m, i, pscratch), st) : 1.0;
+        const double np = gas_porosity(JP, ms->core[CP_POROSITY0]);
+        out[0] = f == F_POROSITY ? np : -gas_tau(pcold(ps, PC_GAS)[i], pcold(ps, PC_TEMPERATURE)[i], np) / det3(F);
+        break;
+    }
     default: {
         double tau[9];
         particle_stress(s, i, tau, state_copy);

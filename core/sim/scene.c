@@ -282,7 +282,11 @@ int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *c
     *ms = (material_slot){.plugin = pl, .m = m, .params = p, .density_index = params_index(m, "density")};
     memcpy(ms->core, core, sizeof core);
     if (m->state_size == 0) ms->wave_speed = m->wave_speed(p, NULL);
-    return s->nmat++;
+    s->nmat++;
+    /* leavening needs the gas column, and the reaction needs temperature */
+    if (core[CP_GAS_RATE] > 0 &&
+        (particles_enable(&s->ps, PC_GAS, err) || scene_enable_temperature(s, err))) return -1;
+    return s->nmat - 1;
 }
 
 int hearth_scene_material_count(const hearth_scene *s) { return s->nmat; }
@@ -351,6 +355,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
             pcold(ps, PC_TEMPERATURE)[j] = pcold(ps, PC_TEMP_MAX)[j] = SCENE_ROOM_TEMPERATURE;
         if (ps->enabled & (1u << PC_BODY)) pcoli(ps, PC_BODY)[j] = -1;
         if (ps->enabled & (1u << PC_FLAGS)) pcoli(ps, PC_FLAGS)[j] = 0;
+        if (ps->enabled & (1u << PC_GAS)) pcold(ps, PC_GAS)[j] = 0;
         if (ps->state_stride) {
             double *st = pcold(ps, PC_STATE) + (size_t)j * ps->state_stride;
             memset(st, 0, sizeof(double) * (size_t)ps->state_stride);
@@ -587,6 +592,8 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
     st->grid_blocks = s->g.nactive;
     st->heat_energy = thermal_energy(s);
     st->cg_iterations = s->cg_iterations;
+    if (s->ps.enabled & (1u << PC_GAS))
+        for (int i = 0; i < s->ps.n; i++) st->gas_moles += pcold(&s->ps, PC_GAS)[i] * pcold(&s->ps, PC_VOL0)[i];
 }
 
 int hearth_scene_particle_count(const hearth_scene *s) { return s->ps.n; }

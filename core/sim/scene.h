@@ -18,7 +18,7 @@ typedef struct material_slot {
     double wave_speed;  /* cached when the plugin is stateless (state_size 0) */
     curve *curves;      /* parameters that follow temperature */
     int ncurves;
-    double core[8];     /* field properties (params.h CP_*) */
+    double core[CP_COUNT]; /* field properties (params.h CP_*) */
 } material_slot;
 
 /* Plugins may declare at most this many parameters (per-particle resolution

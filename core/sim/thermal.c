@@ -37,15 +37,18 @@ int thermal_active(const hearth_scene *s) { return (s->ps.enabled & (1u << PC_TE
 
 double thermal_dt_limit(const hearth_scene *s) {
     if (!thermal_active(s) || s->def.heat_implicit) return INFINITY;
+    /* the strongest boundary coupling: a node's heat capacity against S beta */
+    double beta = isnan(s->def.oven_temperature) ? 0 : s->def.oven_beta;
+    for (int c = 0; c < s->ncol; c++)
+        if (!isnan(s->cols[c].temperature) && s->cols[c].beta > beta) beta = s->cols[c].beta;
     double dt = INFINITY;
     for (int m = 0; m < s->nmat; m++) {
         const material_slot *ms = &s->mats[m];
-        const double k = ms->core[CP_CONDUCTIVITY];
-        if (k <= 0) continue;
-        const double rho = ms->params[ms->density_index], a = ms->core[CP_SPECIFIC_HEAT];
+        const double k = ms->core[CP_CONDUCTIVITY], ra = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
         /* forward Euler on the B-spline Laplacian: rho alpha dx^2 / (2 dim kappa) */
-        const double lim = rho * a * s->def.dx * s->def.dx / (2.0 * s->def.dim * k);
-        if (lim < dt) dt = lim;
+        if (k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * s->def.dim * k));
+        /* and on the Robin term: a boundary cell's rho alpha dx^dim against beta dx^(dim-1) */
+        if (beta > 0) dt = fmin(dt, ra * s->def.dx / (2.0 * beta));
     }
     return dt;
 }

@@ -237,6 +237,7 @@ typedef struct hearth_stats {
     int grid_blocks;       ///< active grid blocks
     double heat_energy;    ///< sum m alpha (theta + 273.15) over particles (J); 0 without temperature
     int cg_iterations;     ///< conjugate-gradient iterations of the last implicit heat solve
+    double gas_moles;      ///< CO2 in the particles (mol, or mol/m in 2D); 0 without leavening
 } hearth_stats;
 void hearth_scene_stats(const hearth_scene *s, hearth_stats *st);
 

@@ -1,0 +1,14 @@
+/* gas.h: CO2 from leavening and the gas pressure (Ding et al. 2019 §5.4). */
+#ifndef HEARTH_GAS_H
+#define HEARTH_GAS_H
+
+/// Moles per unit reference volume produced over one step while the
+/// temperature goes linearly from T0 to T1 (degrees C):
+///   integral of alpha_g R0 exp(-((T - Tr)/dT)^2) dt.
+/// Exact for constant and for linearly varying temperature (an erf difference).
+double gas_moles_step(double T0, double T1, double dt, double alpha_g, double R0, double Tr, double dT);
+/// Porosity n^p = J^P - 1 + n^p_0, kept inside (1e-6, 1) so the pressure stays finite.
+double gas_porosity(double JP, double n0);
+/// Kirchhoff gas stress coefficient: tau_g = -n^g R theta_abs / n^p I (eq. 13 times J).
+double gas_tau(double ng, double T, double np);
+#endif
