@@ -15,60 +15,10 @@
 #include <unistd.h>
 
 #include "alloc.h"
+#include "fs_fixture.h"
 #include "mpm_fixture.h"
 
 /* ---- helpers --------------------------------------------------------- */
-
-static void make_dir(char *dir, size_t n) {
-    snprintf(dir, n, "/tmp/hearth_unit_dumps_XXXXXX");
-    CHECK(mkdtemp(dir) != NULL);
-}
-
-static void rm_dir(const char *dir) {
-    DIR *d = opendir(dir);
-    if (!d) return;
-    struct dirent *e;
-    char p[512];
-    while ((e = readdir(d))) {
-        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
-        snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
-        if (remove(p) != 0) rmdir(p);
-    }
-    closedir(d);
-    rmdir(dir);
-}
-
-static int count_tmp(const char *dir) {
-    DIR *d = opendir(dir);
-    int n = 0;
-    if (!d) return -1;
-    struct dirent *e;
-    while ((e = readdir(d)))
-        if (strstr(e->d_name, ".tmp.")) n++;
-    closedir(d);
-    return n;
-}
-
-/* Whole file, NUL-terminated so the text part can be searched (malloc'd). */
-static unsigned char *slurp(const char *path, size_t *n) {
-    FILE *f = fopen(path, "rb");
-    *n = 0;
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long len = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    unsigned char *b = malloc((size_t)len + 1);
-    if (b && fread(b, 1, (size_t)len, f) != (size_t)len) {
-        free(b);
-        b = NULL;
-    }
-    fclose(f);
-    if (b) {
-        b[len] = 0;
-        *n = (size_t)len;
-    }
-    return b;
-}
 
 static uint64_t le_u64(const unsigned char *p) {
     uint64_t v = 0;

@@ -17,63 +17,14 @@
 #include "font.h"
 #include "image.h"
 #include "io_png.h"
+#include "fs_fixture.h"
 #include "test.h"
 
 /* ---- helpers --------------------------------------------------------- */
 
-/* A fresh folder under /tmp; removed (with its files) by rm_dir. */
-static void make_dir(char *dir, size_t n) {
-    snprintf(dir, n, "/tmp/hearth_unit_image_XXXXXX");
-    CHECK(mkdtemp(dir) != NULL);
-}
 
-static void rm_dir(const char *dir) {
-    DIR *d = opendir(dir);
-    if (!d) return;
-    struct dirent *e;
-    char p[512];
-    while ((e = readdir(d))) {
-        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
-        snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
-        if (remove(p) != 0) rmdir(p);
-    }
-    closedir(d);
-    rmdir(dir);
-}
 
-/* Number of entries in dir whose name contains ".tmp.". */
-static int count_tmp(const char *dir) {
-    DIR *d = opendir(dir);
-    int n = 0;
-    if (!d) return -1;
-    struct dirent *e;
-    while ((e = readdir(d)))
-        if (strstr(e->d_name, ".tmp.")) n++;
-    closedir(d);
-    return n;
-}
 
-/* Whole file into a malloc'd buffer (test code, not the library). */
-static unsigned char *slurp(const char *path, size_t *n) {
-    FILE *f = fopen(path, "rb");
-    *n = 0;
-    if (!f) return NULL;
-    unsigned char *buf = NULL;
-    size_t cap = 0;
-    for (;;) {
-        if (*n == cap) {
-            cap = cap ? 2 * cap : 4096;
-            unsigned char *nb = realloc(buf, cap);
-            if (!nb) break;
-            buf = nb;
-        }
-        size_t got = fread(buf + *n, 1, cap - *n, f);
-        *n += got;
-        if (got == 0) break;
-    }
-    fclose(f);
-    return buf;
-}
 
 static void spit(const char *path, const void *data, size_t n) {
     FILE *f = fopen(path, "wb");

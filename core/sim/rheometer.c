@@ -2,6 +2,8 @@
  * the Herschel-Bulkley fit of Nagasawa et al. 2019 (eq. 1, 2). */
 #include "rheometer.h"
 
+#include "csv.h"
+
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -231,30 +233,7 @@ void rheo_curve_free(rheo_curve *c) {
     memset(c, 0, sizeof *c);
 }
 
-static char *trim(char *s) {
-    while (*s && isspace((unsigned char)*s)) s++;
-    size_t n = strlen(s);
-    while (n && isspace((unsigned char)s[n - 1])) s[--n] = '\0';
-    if (n >= 2 && s[0] == '"' && s[n - 1] == '"') { /* a quoted cell: "shear_rate" */
-        s[n - 1] = '\0';
-        s++;
-    }
-    return s;
-}
 
-/* Split line in place at commas into at most max cells; returns the count. */
-static int split(char *line, char **cells, int max) {
-    int n = 0;
-    char *s = line;
-    while (n < max) {
-        char *comma = strchr(s, ',');
-        if (comma) *comma = '\0';
-        cells[n++] = trim(s);
-        if (!comma) break;
-        s = comma + 1;
-    }
-    return n;
-}
 
 #define CSV_MAX_CELLS 64
 #define CSV_LINE 4096
@@ -279,9 +258,9 @@ hearth_status rheo_curve_read(const char *path, rheo_curve *c, hearth_error *err
         if (lineno == 1 && len >= 3 && (unsigned char)line[0] == 0xEF && (unsigned char)line[1] == 0xBB &&
             (unsigned char)line[2] == 0xBF)
             memmove(line, line + 3, len - 2); /* UTF-8 byte order mark */
-        char *t = trim(line);
+        char *t = csv_trim(line);
         if (!*t || *t == '#') continue;
-        int nc = split(t, cells, CSV_MAX_CELLS);
+        int nc = csv_split(t, cells, CSV_MAX_CELLS);
         if (!header_line) {
             header_line = lineno;
             for (int i = 0; i < nc; i++) {

@@ -1,6 +1,8 @@
 /* sauce_library.c: reading assets/sauces.csv. */
 #include "sauce_library.h"
 
+#include "csv.h"
+
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -18,25 +20,7 @@ static const char *const col_names[C_COUNT] = {"name", "label", "temperature_C",
 #define LIB_LINE 4096
 #define LIB_CELLS 64
 
-static char *trim(char *s) {
-    while (*s && isspace((unsigned char)*s)) s++;
-    size_t n = strlen(s);
-    while (n && isspace((unsigned char)s[n - 1])) s[--n] = '\0';
-    return s;
-}
 
-static int split(char *line, char **cells, int max) {
-    int n = 0;
-    char *s = line;
-    while (n < max) {
-        char *comma = strchr(s, ',');
-        if (comma) *comma = '\0';
-        cells[n++] = trim(s);
-        if (!comma) break;
-        s = comma + 1;
-    }
-    return n;
-}
 
 static int valid_name(const char *s) {
     if (!*s) return 0;
@@ -69,9 +53,9 @@ hearth_status sauce_library_load(const char *path, sauce_library *lib, hearth_er
             st = err_set(err, HEARTH_ERR_FORMAT, "%s: line %d is too long", path, lineno);
             break;
         }
-        char *t = trim(line);
+        char *t = csv_trim(line);
         if (!*t || *t == '#') continue;
-        int nc = split(t, cells, LIB_CELLS);
+        int nc = csv_split(t, cells, LIB_CELLS);
         if (!header) {
             header = lineno;
             for (int i = 0; i < nc; i++)
