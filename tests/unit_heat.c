@@ -225,7 +225,7 @@ TEST(heat_determinism_threads) {
         hearth_set_threads(t);
         for (int implicit = 0; implicit <= 1; implicit++) {
             hearth_scene_def d = hearth_default_scene_def();
-            d.dx = 1.0 / 48;
+            d.dx = 1.0 / 96; /* enough particles that the step really runs on two threads */
             d.oven_temperature = 180;
             d.oven_beta = 30;
             d.heat_implicit = implicit;
@@ -235,12 +235,13 @@ TEST(heat_determinism_threads) {
             hearth_error err;
             int m = hearth_scene_add_material(s, "elastic", nm, nv, 3, &err);
             const double c[3] = {0.5, 0.3, 0};
-            hearth_shape *ball = hearth_shape_sphere(c, 0.12);
+            hearth_shape *ball = hearth_shape_sphere(c, 0.2);
             hearth_body_def bd = hearth_default_body_def();
             bd.shape = ball, bd.material = m, bd.temperature = 20;
             hearth_scene_add_body(s, &bd, &err);
             hearth_shape_free(ball);
-            CHECK(hearth_scene_step(s, 60, &err) == HEARTH_OK);
+            CHECK(s->ps.n >= SCENE_PARALLEL_MIN);
+            CHECK(hearth_scene_step(s, 40, &err) == HEARTH_OK);
             if (implicit) hash[t - 1] ^= hearth_scene_hash(s) * 31;
             else hash[t - 1] = hearth_scene_hash(s);
             hearth_scene_destroy(s);

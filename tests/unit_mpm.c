@@ -350,6 +350,7 @@ TEST(determinism_threads) {
         hearth_set_threads(t);
         hearth_scene *s = busy_scene();
         hearth_error err;
+        CHECK(s->ps.n >= SCENE_PARALLEL_MIN); /* so the step really runs on two threads */
         CHECK(hearth_scene_step(s, 100, &err) == HEARTH_OK);
         h[t - 1] = hearth_scene_hash(s);
         hearth_stats st;

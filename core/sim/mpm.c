@@ -51,7 +51,7 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     int *keys = s->keys, *order = s->order, *counts = s->counts;
 
     int sorted = 1;
-#pragma omp parallel for schedule(static) reduction(&& : sorted)
+#pragma omp parallel for schedule(static) reduction(&& : sorted) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         keys[i] = block_of_position(g, X + 3 * i);
         if (i > 0 && block_of_position(g, X + 3 * (i - 1)) > keys[i]) sorted = 0;
@@ -254,7 +254,7 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
     (void)rep;
     void (*fn)(hearth_scene *, int, double, double *) = s->g.dim == 2 ? p2g_block_2d : p2g_block_3d;
     for (int k = 0; k < s->npb; k++) s->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
-#pragma omp parallel
+#pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
         double tile[GRID_NCH_MAX * GRID_T * GRID_T * GRID_T];
         for (int col = 0; col < 8; col++) {
@@ -272,7 +272,7 @@ void mpm_grid_update(hearth_scene *s, double dt) {
     grid *g = &s->g;
     const int D = g->dim, NPB = g->nodes_per_block;
     const hearth_scene_def *def = &s->def;
-#pragma omp parallel for schedule(dynamic, 4)
+#pragma omp parallel for schedule(dynamic, 4) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         double *node = grid_block(g, k);
         int bc[3];
@@ -457,7 +457,7 @@ static void g2p_block_3d(hearth_scene *s, int k, double dt, double *tile) { g2p_
 
 void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
     void (*fn)(hearth_scene *, int, double, double *) = s->g.dim == 2 ? g2p_block_2d : g2p_block_3d;
-#pragma omp parallel
+#pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
         double tile[4 * GRID_T * GRID_T * GRID_T];
 #pragma omp for schedule(dynamic, 2)

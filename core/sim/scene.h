@@ -24,6 +24,9 @@ typedef struct material_slot {
 /* Plugins may declare at most this many parameters (per-particle resolution
  * uses a stack buffer of this size). */
 #define SCENE_MAX_PARAMS 256
+/* Below this many particles a step runs on one thread: waking the pool costs
+ * more than it saves (a 129-particle scene spent 6 s of 11 in the kernel). */
+#define SCENE_PARALLEL_MIN 2048
 /* Temperature given to particles when the field turns on without a value (degrees C). */
 #define SCENE_ROOM_TEMPERATURE 20.0
 

@@ -133,7 +133,7 @@ static void find_boundary(hearth_scene *s) {
     if (oven) {
         /* mark boundary nodes (mass, an empty face neighbour, not inside a collider):
          * CH_CG_R = best squared distance so far (-1: not a boundary node), CH_CG_P = particle */
-#pragma omp parallel for schedule(dynamic, 4)
+#pragma omp parallel for schedule(dynamic, 4) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int k = 0; k < g->nactive; k++) {
             double *node = grid_block(g, k);
             int bc[3];
@@ -163,7 +163,7 @@ static void find_boundary(hearth_scene *s) {
         }
         /* closest particle of each boundary node: particles in sorted order, so ties go to the lower index */
         for (int col = 0; col < 8; col++) {
-#pragma omp parallel for schedule(dynamic, 2)
+#pragma omp parallel for schedule(dynamic, 2) if (s->ps.n >= SCENE_PARALLEL_MIN)
             for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) {
                 const pblock pb = s->pb[s->colour_pb[q]];
                 stencil st;
@@ -233,7 +233,7 @@ static void apply(hearth_scene *s, int in, int out, int src) {
     const double *T = pcold(ps, PC_TEMPERATURE);
     const int *mat = pcoli(ps, PC_MAT);
     for (int col = 0; col < 8; col++) {
-#pragma omp parallel for schedule(dynamic, 2)
+#pragma omp parallel for schedule(dynamic, 2) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) {
             const pblock pb = s->pb[s->colour_pb[q]];
             stencil st;
@@ -271,7 +271,7 @@ static double dot(hearth_scene *s, int a, int b) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block;
     double *part = s->cg_partial;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         const double *node = grid_block(g, k);
         double acc = 0;
@@ -287,7 +287,7 @@ static double dot(hearth_scene *s, int a, int b) {
 static void clear_channel(hearth_scene *s, int ch) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) memset(grid_block(g, k) + ch * NPB, 0, sizeof(double) * (size_t)NPB);
 }
 
@@ -314,7 +314,7 @@ hearth_status thermal_grid_update(hearth_scene *s, double dt, hearth_error *err)
         s->cg_cap = gc;
     }
     /* node temperatures (eq. 17): C theta / C */
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         double *node = grid_block(g, k);
         for (int l = 0; l < NPB; l++) {
@@ -328,7 +328,7 @@ hearth_status thermal_grid_update(hearth_scene *s, double dt, hearth_error *err)
     /* sources into CH_B, L theta^n into CH_R */
     apply(s, CH_T, CH_R, CH_B);
     if (!s->def.heat_implicit) { /* forward Euler (gamma = 0) */
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int k = 0; k < g->nactive; k++) {
             double *node = grid_block(g, k);
             for (int l = 0; l < NPB; l++) {
@@ -341,7 +341,7 @@ hearth_status thermal_grid_update(hearth_scene *s, double dt, hearth_error *err)
     /* backward Euler (gamma = 1): (C/dt + L) x = C/dt theta^n + b, solved by
      * conjugate gradients from x = theta^n; r = b - L theta^n. Jacobi-preconditioning
      * by C/dt would change little: L is small next to C/dt except at large steps. */
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         double *node = grid_block(g, k);
         for (int l = 0; l < NPB; l++) {
@@ -367,7 +367,7 @@ hearth_status thermal_grid_update(hearth_scene *s, double dt, hearth_error *err)
     for (int it = 0; it < 2000 && sqrt(rr) > 1e-12 * scale; it++) {
         clear_channel(s, CH_R);
         apply(s, CH_CG_P, CH_R, -1);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int k = 0; k < g->nactive; k++) {
             double *node = grid_block(g, k);
             for (int l = 0; l < NPB; l++) {
@@ -378,7 +378,7 @@ hearth_status thermal_grid_update(hearth_scene *s, double dt, hearth_error *err)
         const double pAp = dot(s, CH_CG_P, CH_R);
         if (!(pAp > 0)) break;
         const double alpha = rr / pAp;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int k = 0; k < g->nactive; k++) {
             double *node = grid_block(g, k);
             for (int l = 0; l < NPB; l++) {
@@ -389,7 +389,7 @@ hearth_status thermal_grid_update(hearth_scene *s, double dt, hearth_error *err)
         }
         const double rr2 = dot(s, CH_CG_R, CH_CG_R), beta = rr2 / rr;
         rr = rr2;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int k = 0; k < g->nactive; k++) {
             double *node = grid_block(g, k);
             for (int l = 0; l < NPB; l++)
