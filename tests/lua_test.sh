@@ -428,6 +428,10 @@ lua_run_help)
     run tiny.lua --until abc
     expect_rc 2 "--until abc"
     ;;
+lua_helpers)
+    out=$("$hearth" run "$scenes/helpers.lua" --quiet 2>&1) || fail "helpers.lua: $out"
+    echo "$out" | grep -q "helpers ok" || fail "helpers.lua did not finish: $out"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"

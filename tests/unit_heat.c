@@ -300,6 +300,41 @@ TEST(thermal_expansion) {
     hearth_scene_destroy(s);
 }
 
+/* Parameters that follow temperature curves are evaluated per particle by the
+ * core; an irreversible curve reads the highest temperature the particle reached. */
+TEST(temperature_curves) {
+    hearth_scene *s = fx_scene(2, 1.0 / 32, 0, 1);
+    hearth_error err;
+    int m = fx_elastic(s, 1e4, 0.3, 1000);
+    const double T[] = {20, 60, 90}, E[] = {1e4, 5e3, 4e4};
+    CHECK(hearth_scene_material_curve(s, m, "E", 3, T, E, 0, &err) == HEARTH_OK);
+    const double nuT[] = {20, 100}, nu[] = {0.3, 0.1};
+    CHECK(hearth_scene_material_curve(s, m, "nu", 2, nuT, nu, 1, &err) == HEARTH_OK);
+    CHECK(strstr(hearth_scene_fields(s), "temperature") != NULL);
+    const double x[3] = {0.5, 0.5, 0};
+    CHECK(hearth_scene_add_particles(s, m, 1, x, NULL, 1e-4, &err) == 1);
+    double scratch[SCENE_MAX_PARAMS];
+    double *Tp = pcold(&s->ps, PC_TEMPERATURE), *Tmax = pcold(&s->ps, PC_TEMP_MAX);
+    const int iE = 0, inu = 1; /* schema order of the elastic plugin: E, nu, density */
+    Tp[0] = Tmax[0] = 40; /* halfway between 20 and 60 */
+    const double *p = scene_params_for(s, m, 0, scratch);
+    CHECK_NEAR(p[iE], 7.5e3, 1e-9);
+    CHECK_NEAR(p[inu], 0.3 - 0.2 * 20 / 80, 1e-12);
+    Tp[0] = Tmax[0] = 200; /* beyond the last point: constant */
+    p = scene_params_for(s, m, 0, scratch);
+    CHECK_NEAR(p[iE], 4e4, 1e-9);
+    CHECK_NEAR(p[inu], 0.1, 1e-12);
+    Tp[0] = 20; /* cooled down: E follows, the irreversible nu stays set */
+    p = scene_params_for(s, m, 0, scratch);
+    CHECK_NEAR(p[iE], 1e4, 1e-9);
+    CHECK_NEAR(p[inu], 0.1, 1e-12);
+    CHECK(hearth_scene_material_params(s, m)[iE] == 1e4); /* the base values are untouched */
+    const double bad[] = {1e4, 5e3, 1e13};
+    CHECK(hearth_scene_material_curve(s, m, "density", 3, T, bad, 0, &err) == HEARTH_ERR_PARAM);
+    CHECK_STR_CONTAINS(err.msg, "outside the range");
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(slab_series_reference), T(heat_slab_robin_explicit), T(heat_slab_robin_implicit),
           T(heat_insulated_conservation_explicit), T(heat_insulated_conservation_implicit), T(heat_pan_contact),
-          T(heat_determinism_threads), T(thermal_expansion))
+          T(heat_determinism_threads), T(thermal_expansion), T(temperature_curves))

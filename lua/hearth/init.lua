@@ -12,6 +12,9 @@ for _, k in ipairs { "box", "sphere", "disc", "cylinder", "capsule", "plane", "c
   h[k] = core[k]
 end
 
+h.shapes = require "hearth.shapes"
+h.recipes = require "hearth.recipes"
+
 -- ---- checking ------------------------------------------------------------
 
 local function distance(a, b)

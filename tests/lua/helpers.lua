@@ -1,0 +1,21 @@
+-- The pure-Lua helpers: shapes and recipes.
+local h = require "hearth"
+local s = h.scene { dim = 2, dx = 1 / 64, box = { { 0, 0 }, { 1, 1 } } }
+local m = h.material("elastic", { E = 2e4 })
+local ring = h.shapes.ring({ 0.3, 0.6 }, 0.05, 0.1)
+assert(ring:sdf({ 0.3, 0.6 }) > 0 and ring:sdf({ 0.3, 0.675 }) < 0, "ring shape")
+local rb = h.shapes.rounded_box({ 0.5, 0.5 }, { 0.8, 0.7 }, 0.03)
+assert(rb:sdf({ 0.5, 0.5 }) > 0 and rb:sdf({ 0.65, 0.6 }) < 0, "rounded box corners")
+local cookie = h.shapes.cookie({ 0.5, 0.2 }, 0.08, 0.02)
+assert(cookie:sdf({ 0.5, 0.2 }) < 0 and cookie:sdf({ 0.5, 0.22 }) > 0, "cookie thickness")
+local loaf = h.shapes.loaf({ 0.5, 0.3 }, 0.2, 0.1)
+assert(loaf:sdf({ 0.5, 0.49 }) < 0 and loaf:sdf({ 0.5, 0.29 }) > 0, "loaf")
+local centres = h.recipes.grid(3, 3, { 0, 0 }, { 0.9, 0.9 })
+assert(#centres == 9 and math.abs(centres[5][1] - 0.45) < 1e-12, "3x3 grid")
+s:add { shape = ring, material = m }
+local tray = h.recipes.tray(s, 0.45, { temperature = 150, beta = 30 })
+assert(tray == 0, "tray collider id")
+local height = h.recipes.height(s, 0.3, 0.45, 0.8)
+print(("ring height above the tray: %.3f m"):format(height))
+assert(height > 0.2 and height < 0.26, "height recipe")
+print("helpers ok")
