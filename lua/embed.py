@@ -11,11 +11,12 @@ with open(out, "w") as f:
     for i, pair in enumerate(pairs):
         name, path = pair.split("=", 1)
         data = open(path, "rb").read()
-        f.write(f"static const char src{i}[] = {{")
+        # unsigned: the sources are UTF-8 and may hold bytes above 127
+        f.write(f"static const unsigned char src{i}[] = {{")
         f.write(",".join(str(b) for b in data))
         f.write(",0};\n")
         names.append((name, i, len(data)))
     f.write("const hl_embedded hl_embedded_sources[] = {\n")
     for name, i, n in names:
-        f.write(f'  {{"{name}", src{i}, {n}}},\n')
+        f.write(f'  {{"{name}", (const char *)src{i}, {n}}},\n')
     f.write("  {NULL, NULL, 0}\n};\n")

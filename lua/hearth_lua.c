@@ -46,6 +46,7 @@ static int l_options(lua_State *L) {
     lua_createtable(L, 0, 8);
     if (o->out_dir) lua_pushstring(L, o->out_dir), lua_setfield(L, -2, "out_dir");
     if (o->scene_dir) lua_pushstring(L, o->scene_dir), lua_setfield(L, -2, "scene_dir");
+    if (o->assets_dir) lua_pushstring(L, o->assets_dir), lua_setfield(L, -2, "assets_dir");
     if (o->until_override > 0) lua_pushnumber(L, o->until_override), lua_setfield(L, -2, "until_t");
     if (o->frames_override > 0) lua_pushinteger(L, o->frames_override), lua_setfield(L, -2, "frames");
     lua_pushboolean(L, o->quiet), lua_setfield(L, -2, "quiet");
@@ -81,6 +82,7 @@ static int open_core(lua_State *L) {
     hl_open_shapes(L);
     hl_open_scene(L);
     hl_open_output(L);
+    hl_open_material(L);
     luaL_getmetatable(L, HL_SCENE); /* init.lua adds its Lua methods to the same table */
     lua_getfield(L, -1, "__index");
     lua_setfield(L, -3, "scene_methods");

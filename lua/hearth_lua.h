@@ -23,6 +23,7 @@ typedef struct hl_options {
     int quiet;              ///< no progress bar
     int trusted;            ///< --trust: no sandbox
     const char *const *sets;///< --set k=v strings (NULL-terminated), read by h.params
+    const char *assets_dir; ///< where the material tables live (sauces.csv), for h.library
     /// Progress of s:run (sim time t of t_end after `steps` steps; final = last call). May be NULL.
     void (*progress)(void *ud, double t, double t_end, long steps, int final);
     void *progress_ud;
@@ -51,4 +52,5 @@ int hl_raise(lua_State *L, const hearth_error *err);
 void hl_open_shapes(lua_State *L);   /* adds shape constructors to the table on top */
 void hl_open_scene(lua_State *L);    /* adds h.scene and h.load to the table on top */
 void hl_open_output(lua_State *L);   /* scene methods for files, registered into the scene metatable */
+void hl_open_material(lua_State *L); /* core.blend */
 #endif

@@ -112,8 +112,6 @@ static int lua_file_searcher(lua_State *L) {
     if (!file) return 0;
     /* try each template */
     const char *p = path;
-    luaL_Buffer tried;
-    luaL_buffinit(L, &tried);
     while (*p) {
         const char *e = strchr(p, ';');
         size_t len = e ? (size_t)(e - p) : strlen(p);

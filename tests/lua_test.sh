@@ -432,6 +432,10 @@ lua_helpers)
     out=$("$hearth" run "$scenes/helpers.lua" --quiet 2>&1) || fail "helpers.lua: $out"
     echo "$out" | grep -q "helpers ok" || fail "helpers.lua did not finish: $out"
     ;;
+lua_library)
+    out=$("$hearth" run "$scenes/library.lua" --quiet 2>&1) || fail "library.lua: $out"
+    echo "$out" | grep -q "library ok" || fail "library.lua did not finish: $out"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"

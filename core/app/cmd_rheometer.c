@@ -33,11 +33,15 @@
 #define MAX_RATES 1000
 #define SAUCE_PLUGIN "von_mises_sauce"
 
+const char *app_assets_dir(void) {
+    const char *env = getenv("HEARTH_ASSETS_DIR");
+    return env && *env ? env : HEARTH_ASSETS_DIR;
+}
+
 const char *app_sauce_library_path(const char *override) {
     static char buf[4096];
     if (override) return override;
-    const char *env = getenv("HEARTH_ASSETS_DIR");
-    snprintf(buf, sizeof buf, "%s/sauces.csv", env && *env ? env : HEARTH_ASSETS_DIR);
+    snprintf(buf, sizeof buf, "%s/sauces.csv", app_assets_dir());
     return buf;
 }
 

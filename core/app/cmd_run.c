@@ -164,7 +164,8 @@ static lua_State *start(run_args *a, progress *pr, const char *cmd) {
     progress_start(pr, a->until, a->quiet);
     hl_options o = {.out_dir = a->out, .scene_dir = a->dir_buf, .until_override = a->until,
                     .frames_override = (int)a->frames, .quiet = a->quiet, .trusted = a->trust,
-                    .sets = a->sets, .progress = on_progress, .progress_ud = pr};
+                    .sets = a->sets, .progress = on_progress, .progress_ud = pr,
+                    .assets_dir = app_assets_dir()};
     hl_open(L, &o);
     return L;
 }
@@ -234,8 +235,6 @@ int cmd_repl(int argc, char **argv) {
     } else lua_pop(L, 1);
     if (tty) printf("hearth %s repl: Lua 5.4 with the scene loaded (h = require \"hearth\"); Ctrl-D quits\n", HEARTH_VERSION);
     char line[8192];
-    luaL_Buffer *unused = NULL;
-    (void)unused;
     char *buf = NULL;
     size_t blen = 0;
     int errors = 0;

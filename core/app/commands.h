@@ -17,6 +17,8 @@ int cmd_fit(int argc, char **argv);
 int app_flow_plot(const char *path, const char *title, const double *x, const double *y, int n, const char *data_label,
                   const double *cx, const double *cy, int cn, const char *curve_label, hearth_error *err);
 const char *app_sauce_library_path(const char *override);
+/// The assets folder: $HEARTH_ASSETS_DIR, else the source tree's assets/ (cmd_rheometer.c).
+const char *app_assets_dir(void);
 
 /// Parse a whole positive integer option value; prints a usage error and returns -1 when bad.
 long app_parse_int(const char *cmd, const char *flag, const char *text, long min, long max);

@@ -142,6 +142,70 @@ function h.write(path, text)
   return e
 end
 
+-- ---- material library ---------------------------------------------------
+
+-- h.library.sauce.<name>: the 21 sauces of Nagasawa et al. Table 1 as
+-- parameter tables for the von_mises_sauce plugin (kappa 1e6 Pa and mu 1e5 Pa,
+-- as the paper assumed in §4.6). Read from assets/sauces.csv on first use.
+local function load_sauces()
+  local dir = core.options().assets_dir or "assets"
+  local f, e = io.open(dir .. "/sauces.csv", "r")
+  if not f then error("h.library.sauce: cannot read " .. dir .. "/sauces.csv (" .. tostring(e) .. ")", 3) end
+  local lib, header = {}, nil
+  for line in f:lines() do
+    if not line:match("^%s*#") and line:match("%S") then
+      local cells = {}
+      for c in (line .. ","):gmatch("([^,]*),") do cells[#cells + 1] = c:match("^%s*(.-)%s*$") end
+      if not header then
+        header = {}
+        for i, c in ipairs(cells) do header[c] = i end
+      else
+        lib[cells[header.name]] = { kappa = 1e6, mu = 1e5, h = tonumber(cells[header.h]),
+          eta = tonumber(cells[header.eta]), sigma_y = tonumber(cells[header.sigma_y]),
+          label = cells[header.label] }
+      end
+    end
+  end
+  f:close()
+  return lib
+end
+
+local sauce_mt = {}
+sauce_mt.__index = function(t, name)
+  local lib = rawget(t, "_all")
+  if not lib then
+    lib = load_sauces()
+    rawset(t, "_all", lib)
+  end
+  local s = lib[name]
+  if not s then
+    error(("h.library.sauce: no sauce '%s'%s (valid: %s)"):format(tostring(name),
+      nearest(tostring(name), lib) and ("; did you mean '" .. nearest(tostring(name), lib) .. "'?") or "",
+      table.concat(sorted_keys(lib), ", ")), 2)
+  end
+  local copy = {} -- a fresh table each time, so a scene may change its copy
+  for k, v in pairs(s) do if k ~= "label" then copy[k] = v end end
+  return copy
+end
+h.library.sauce = setmetatable({}, sauce_mt)
+
+--- h.mix{ {params_a, 0.5}, {params_b, 0.5}, plugin = "von_mises_sauce" }: one parameter set
+--- blended by the plugin's own blend rule (Nagasawa et al. eq. 28-31 for sauces).
+function h.mix(t)
+  if type(t) ~= "table" or #t < 1 then error("h.mix: expected { {params, ratio}, ... }", 2) end
+  local plugin = t.plugin or "von_mises_sauce"
+  local sets, weights = {}, {}
+  for i, c in ipairs(t) do
+    if type(c) ~= "table" or type(c[1]) ~= "table" or type(c[2]) ~= "number" then
+      error(("h.mix: entry %d must be {params, ratio}"):format(i), 2)
+    end
+    sets[i], weights[i] = c[1], c[2]
+  end
+  local ok, r = pcall(core.blend, plugin, sets, weights)
+  if not ok then error(r, 2) end
+  return r
+end
+
 -- ---- scene parameters -----------------------------------------------------
 
 --- Named defaults that `hearth run scene.lua --set name=value` overrides.
