@@ -19,7 +19,7 @@ enum {
     CH_T0,                          /* temperature before the heat update (FLIP, eq. 21) */
     CH_R,                           /* heat flux accumulated into the node (W) / CG Ap */
     CH_CG_R, CH_CG_P,               /* conjugate-gradient residual and direction */
-    CH_B,                           /* implicit heat: boundary coefficient sum S beta w (W/K) (diagonal part) */
+    CH_B,                           /* heat sources (W); in the implicit solve, then the preconditioned residual */
     GRID_NCH_MAX
 };
 #define GRID_NCH_MOMENTUM 4
