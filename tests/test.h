@@ -58,15 +58,6 @@ static int test_xfailed;
         test_xfailed = 1;                                                                          \
     } while (0)
 
-/* Skip the running case (exit 77, counted as skipped), saying why. */
-#define SKIP(...)                                                                                  \
-    do {                                                                                           \
-        printf("SKIPPED: ");                                                                       \
-        printf(__VA_ARGS__);                                                                       \
-        printf("\n");                                                                              \
-        test_xfailed = 1;                                                                          \
-    } while (0)
-
 static inline int test_run(const test_case *cases, int n, int argc, char **argv) {
     int ran = 0;
     for (int i = 0; i < n; i++) {
