@@ -113,7 +113,9 @@ static int all_finite(const double *a, int n) {
     return 1;
 }
 
-FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, double *tile) {
+/* D (2 or 3) and HEAT (temperature live) are compile-time constants in each
+ * instantiation below, so a momentum-only scene runs the momentum-only loops. */
+FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k, double dt, double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
     const pblock pb = s->pb[k];
@@ -123,12 +125,13 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
     int bc[3];
     grid_block_coords(g, pb.block, bc);
     const int org[3] = {bc[0] * GRID_B, bc[1] * GRID_B, bc[2] * GRID_B};
-    memset(tile, 0, sizeof(double) * (size_t)g->nch * (size_t)TN);
+    const int NCH = HEAT ? GRID_NCH_MAX : GRID_NCH_MOMENTUM;
+    memset(tile, 0, sizeof(double) * (size_t)NCH * (size_t)TN);
 
     const double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *M = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
     double *Cc = pcold(ps, PC_C), *Fc = pcold(ps, PC_F), *state = pcold(ps, PC_STATE);
     const int *mat = pcoli(ps, PC_MAT);
-    const double *Tcol = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    const double *Tcol = HEAT ? pcold(ps, PC_TEMPERATURE) : NULL;
     const int *pflags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     const double *Gcol = ps->enabled & (1u << PC_GAS) ? pcold(ps, PC_GAS) : NULL;
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
@@ -211,7 +214,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
                     tile[t] += wab * m;
                     tile[TN + t] += wab * (mv0 + Q[0] * d0 + Q[1] * d1);
                     tile[2 * TN + t] += wab * (mv1 + Q[3] * d0 + Q[4] * d1);
-                    if (Tcol) {
+                    if (HEAT) {
                         tile[CH_HC * TN + t] += wab * hc;
                         tile[CH_T * TN + t] += wab * hct;
                     }
@@ -223,7 +226,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
                         tile[TN + t] += wt * (mv0 + Q[0] * d0 + Q[1] * d1 + Q[2] * d2);
                         tile[2 * TN + t] += wt * (mv1 + Q[3] * d0 + Q[4] * d1 + Q[5] * d2);
                         tile[3 * TN + t] += wt * (mv2 + Q[6] * d0 + Q[7] * d1 + Q[8] * d2);
-                        if (Tcol) {
+                        if (HEAT) {
                             tile[CH_HC * TN + t] += wt * hc;
                             tile[CH_T * TN + t] += wt * hct;
                         }
@@ -243,16 +246,20 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, int k, double dt, doub
                 double *node = grid_block(g, g->slot[blk]);
                 const int l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B
                                      : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
-                for (int ch = 0; ch < g->nch; ch++) node[ch * NPB + l] += tile[ch * TN + t];
+                for (int ch = 0; ch < NCH; ch++) node[ch * NPB + l] += tile[ch * TN + t];
             }
 }
 
-static void p2g_block_2d(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 2, k, dt, tile); }
-static void p2g_block_3d(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 3, k, dt, tile); }
+static void p2g_block_2d(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 2, 0, k, dt, tile); }
+static void p2g_block_3d(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 3, 0, k, dt, tile); }
+static void p2g_block_2d_heat(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 2, 1, k, dt, tile); }
+static void p2g_block_3d_heat(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 3, 1, k, dt, tile); }
 
 void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
     (void)rep;
-    void (*fn)(hearth_scene *, int, double, double *) = s->g.dim == 2 ? p2g_block_2d : p2g_block_3d;
+    const int heat = s->g.nch > GRID_NCH_MOMENTUM;
+    void (*fn)(hearth_scene *, int, double, double *) =
+        s->g.dim == 2 ? (heat ? p2g_block_2d_heat : p2g_block_2d) : (heat ? p2g_block_3d_heat : p2g_block_3d);
     for (int k = 0; k < s->npb; k++) s->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
@@ -325,12 +332,11 @@ void mpm_grid_update(hearth_scene *s, double dt) {
 
 /* ---- G2P ------------------------------------------------------------- */
 
-FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, double *tile) {
+FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k, double dt, double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
-    const int heat = g->nch > GRID_NCH_MOMENTUM;
-    double *Tcol = heat ? pcold(ps, PC_TEMPERATURE) : NULL, *Tmax = heat ? pcold(ps, PC_TEMP_MAX) : NULL;
-    double *Gcol = heat && (ps->enabled & (1u << PC_GAS)) ? pcold(ps, PC_GAS) : NULL;
+    double *Tcol = HEAT ? pcold(ps, PC_TEMPERATURE) : NULL, *Tmax = HEAT ? pcold(ps, PC_TEMP_MAX) : NULL;
+    double *Gcol = HEAT && (ps->enabled & (1u << PC_GAS)) ? pcold(ps, PC_GAS) : NULL;
     const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     const pblock pb = s->pb[k];
     pb_partial *pp = &s->partial[k];
@@ -350,7 +356,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
                 const int l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B
                                      : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
                 for (int d = 0; d < 3; d++) tile[d * TN + t] = node[(d + 1) * NPB + l];
-                if (heat) tile[3 * TN + t] = node[CH_T * NPB + l] - node[CH_T0 * NPB + l];
+                if (HEAT) tile[3 * TN + t] = node[CH_T * NPB + l] - node[CH_T0 * NPB + l];
             }
 
     double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *Cc = pcold(ps, PC_C);
@@ -384,7 +390,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
                 if (D == 2) {
                     const int t = (base[0] + a) * GRID_T + (base[1] + b);
                     const double u0 = tile[t], u1 = tile[TN + t];
-                    if (heat) dT += wab * tile[3 * TN + t];
+                    if (HEAT) dT += wab * tile[3 * TN + t];
                     nv[0] += wab * u0;
                     nv[1] += wab * u1;
                     B[0] += wab * u0 * d0; B[1] += wab * u0 * d1;
@@ -394,7 +400,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
                         const double d2 = (c - fx[2]) * dx, wt = wab * w[2][c];
                         const int t = ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + c);
                         const double u0 = tile[t], u1 = tile[TN + t], u2 = tile[2 * TN + t];
-                        if (heat) dT += wt * tile[3 * TN + t];
+                        if (HEAT) dT += wt * tile[3 * TN + t];
                         nv[0] += wt * u0; nv[1] += wt * u1; nv[2] += wt * u2;
                         B[0] += wt * u0 * d0; B[1] += wt * u0 * d1; B[2] += wt * u0 * d2;
                         B[3] += wt * u1 * d0; B[4] += wt * u1 * d1; B[5] += wt * u1 * d2;
@@ -404,7 +410,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
             }
         }
         for (int a = 0; a < 9; a++) C[a] = Dinv * B[a];
-        if (heat) { /* FLIP (eq. 21): the particle takes its nodes' temperature change */
+        if (HEAT) { /* FLIP (eq. 21): the particle takes its nodes' temperature change */
             const double T0 = Tcol[i];
             Tcol[i] += dT;
             if (Tcol[i] > Tmax[i]) Tmax[i] = Tcol[i];
@@ -452,11 +458,15 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, int k, double dt, doub
     pp->ood = ood;
 }
 
-static void g2p_block_2d(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 2, k, dt, tile); }
-static void g2p_block_3d(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 3, k, dt, tile); }
+static void g2p_block_2d(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 2, 0, k, dt, tile); }
+static void g2p_block_3d(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 3, 0, k, dt, tile); }
+static void g2p_block_2d_heat(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 2, 1, k, dt, tile); }
+static void g2p_block_3d_heat(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 3, 1, k, dt, tile); }
 
 void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
-    void (*fn)(hearth_scene *, int, double, double *) = s->g.dim == 2 ? g2p_block_2d : g2p_block_3d;
+    const int heat = s->g.nch > GRID_NCH_MOMENTUM;
+    void (*fn)(hearth_scene *, int, double, double *) =
+        s->g.dim == 2 ? (heat ? g2p_block_2d_heat : g2p_block_2d) : (heat ? g2p_block_3d_heat : g2p_block_3d);
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
         double tile[4 * GRID_T * GRID_T * GRID_T];
