@@ -37,6 +37,14 @@ static int l_png(lua_State *L) {
     int width = 800, height = 0, axis = 2;
     double at = 0.5 * (d->lo[2] + d->hi[2]);
     if (lua_istable(L, 4)) {
+        static const char *const keys[] = {"kind", "width", "height", "axis", "at", NULL};
+        lua_pushnil(L);
+        while (lua_next(L, 4)) { /* a misspelt option must not be silently ignored */
+            int ok = 0;
+            for (int k = 0; keys[k]; k++) ok |= lua_type(L, -2) == LUA_TSTRING && !strcmp(lua_tostring(L, -2), keys[k]);
+            if (!ok) return luaL_error(L, "png: unknown option '%s' (valid: kind, width, height, axis, at)", luaL_tolstring(L, -2, NULL));
+            lua_pop(L, 1);
+        }
         if (lua_getfield(L, 4, "kind") == LUA_TSTRING) kind = lua_tostring(L, -1);
         if (lua_getfield(L, 4, "width") == LUA_TNUMBER) width = (int)lua_tointeger(L, -1);
         if (lua_getfield(L, 4, "height") == LUA_TNUMBER) height = (int)lua_tointeger(L, -1);
