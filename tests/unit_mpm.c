@@ -78,9 +78,10 @@ static void grid_momenta(const hearth_scene *s, double mass_mom[4], double L[3])
         int bc[3];
         grid_block_coords(g, g->active[k], bc);
         for (int l = 0; l < NPB; l++) {
-            const int li[3] = {D == 2 ? l / GRID_B : l / 16, D == 2 ? l % GRID_B : (l / GRID_B) % GRID_B, D == 2 ? 0 : l % GRID_B};
+            int gi[3];
+            grid_node_index(g, bc, l, gi);
             double x[3] = {0, 0, 0};
-            for (int d = 0; d < D; d++) x[d] = g->lo[d] + (bc[d] * GRID_B + li[d]) * g->dx;
+            for (int d = 0; d < D; d++) x[d] = g->lo[d] + gi[d] * g->dx;
             const double m = node[l], p[3] = {node[NPB + l], node[2 * NPB + l], node[3 * NPB + l]};
             mass_mom[0] += m;
             for (int d = 0; d < 3; d++) mass_mom[1 + d] += p[d];

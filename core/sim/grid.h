@@ -54,6 +54,20 @@ static inline void grid_block_coords(const grid *g, int id, int b[3]) {
     b[0] = id / (g->nb[2] * g->nb[1]);
 }
 
+/// Grid coordinates gi of node l (local index) of the block at block coordinates bc.
+static inline void grid_node_index(const grid *g, const int bc[3], int l, int gi[3]) {
+    const int B = GRID_B;
+    if (g->dim == 2) {
+        gi[0] = bc[0] * B + l / B;
+        gi[1] = bc[1] * B + l % B;
+        gi[2] = 0;
+    } else {
+        gi[0] = bc[0] * B + l / (B * B);
+        gi[1] = bc[1] * B + (l / B) % B;
+        gi[2] = bc[2] * B + l % B;
+    }
+}
+
 /// Quadratic B-spline weights and their derivatives (in grid units) for a
 /// coordinate X in grid units: base = floor(X - 0.5), fx = X - base in [0.5, 1.5).
 static inline void bspline_weights(double fx, double w[3], double dw[3]) {

@@ -50,15 +50,15 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     const double *X = pcold(ps, PC_X);
     int *keys = s->keys, *order = s->order, *counts = s->counts;
 
-    int sorted = 1;
-#pragma omp parallel for schedule(static) reduction(&& : sorted) if (s->ps.n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        keys[i] = block_of_position(g, X + 3 * i);
-        if (i > 0 && block_of_position(g, X + 3 * (i - 1)) > keys[i]) sorted = 0;
-    }
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) keys[i] = block_of_position(g, X + 3 * i);
     /* counting sort: stable, O(n + blocks), the same for any thread count */
+    int sorted = 1;
     memset(counts, 0, sizeof(int) * ((size_t)g->nblocks + 1));
-    for (int i = 0; i < n; i++) counts[keys[i] + 1]++;
+    for (int i = 0; i < n; i++) {
+        counts[keys[i] + 1]++;
+        if (i > 0 && keys[i - 1] > keys[i]) sorted = 0;
+    }
     for (int b = 0; b < g->nblocks; b++) counts[b + 1] += counts[b];
     if (!sorted) {
         for (int i = 0; i < n; i++) order[counts[keys[i]]++] = i;
@@ -290,14 +290,10 @@ void mpm_grid_update(hearth_scene *s, double dt) {
                 node[NPB + l] = node[2 * NPB + l] = node[3 * NPB + l] = 0.0;
                 continue;
             }
-            const int li[3] = {D == 2 ? l / GRID_B : l / (GRID_B * GRID_B), D == 2 ? l % GRID_B : (l / GRID_B) % GRID_B,
-                               D == 2 ? 0 : l % GRID_B};
             int idx[3];
+            grid_node_index(g, bc, l, idx);
             double xi[3] = {0, 0, 0};
-            for (int d = 0; d < 3; d++) {
-                idx[d] = bc[d] * GRID_B + li[d];
-                if (d < D) xi[d] = g->lo[d] + idx[d] * g->dx;
-            }
+            for (int d = 0; d < D; d++) xi[d] = g->lo[d] + idx[d] * g->dx;
             double v[3] = {node[NPB + l] / m, node[2 * NPB + l] / m, D == 3 ? node[3 * NPB + l] / m : 0.0};
             double acc[3] = {def->gravity[0], def->gravity[1], D == 3 ? def->gravity[2] : 0.0};
             if (s->body_force) {

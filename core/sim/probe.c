@@ -12,6 +12,7 @@
 #include "error.h"
 #include "gas.h"
 #include "scene.h"
+#include "tensor.h"
 
 typedef enum field_id {
     F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_TEMPERATURE, F_BOUNDARY,
@@ -82,10 +83,6 @@ static hearth_status find_field(const hearth_scene *s, const char *field, int sc
     return HEARTH_OK;
 }
 
-static double det3(const double *F) {
-    return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
-}
-
 /* Stress for display: the plugin evaluates with dt = 0 on a copy of the state,
  * so looking never changes the simulation. */
 static void particle_stress(const hearth_scene *s, int i, double tau[9], double *state_copy) {
@@ -117,8 +114,8 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_VELOCITY: memcpy(out, v, 3 * sizeof(double)); break;
     case F_VX: case F_VY: case F_VZ: out[0] = v[f - F_VX]; break;
     case F_SPEED: out[0] = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); break;
-    case F_DENSITY: out[0] = pcold(ps, PC_MASS)[i] / (pcold(ps, PC_VOL0)[i] * det3(F)); break;
-    case F_J: out[0] = det3(F); break;
+    case F_DENSITY: out[0] = pcold(ps, PC_MASS)[i] / (pcold(ps, PC_VOL0)[i] * t3_det(F)); break;
+    case F_J: out[0] = t3_det(F); break;
     case F_TEMPERATURE: out[0] = pcold(ps, PC_TEMPERATURE)[i]; break;
     case F_BOUNDARY: out[0] = (pcoli(ps, PC_FLAGS)[i] & PF_BOUNDARY) ? 1.0 : 0.0; break;
     case F_GAS: out[0] = pcold(ps, PC_GAS)[i]; break;
@@ -130,13 +127,13 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
         const double *st = ps->state_stride ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL;
         const double JP = ms->m->plastic_J ? ms->m->plastic_J(scene_params_for(s, m, i, pscratch), st) : 1.0;
         const double np = gas_porosity(JP, ms->core[CP_POROSITY0]);
-        out[0] = f == F_POROSITY ? np : -gas_tau(pcold(ps, PC_GAS)[i], pcold(ps, PC_TEMPERATURE)[i], np) / det3(F);
+        out[0] = f == F_POROSITY ? np : -gas_tau(pcold(ps, PC_GAS)[i], pcold(ps, PC_TEMPERATURE)[i], np) / t3_det(F);
         break;
     }
     default: {
         double tau[9];
         particle_stress(s, i, tau, state_copy);
-        const double J = det3(F);
+        const double J = t3_det(F);
         double sig[9];
         for (int k = 0; k < 9; k++) sig[k] = tau[k] / J;
         const double p = -(sig[0] + sig[4] + sig[8]) / 3.0;
@@ -206,7 +203,7 @@ static hearth_status splat(const hearth_scene *s, int f, const lattice *L, doubl
         if (a0 > a1 || b0 > b1) continue;
         double val[3];
         int have = 0;
-        const double m = pcold(ps, PC_MASS)[i], V = pcold(ps, PC_VOL0)[i] * det3(pcold(ps, PC_F) + 9 * i);
+        const double m = pcold(ps, PC_MASS)[i], V = pcold(ps, PC_VOL0)[i] * t3_det(pcold(ps, PC_F) + 9 * i);
         for (int a = a0; a <= a1; a++)
             for (int b = b0; b <= b1; b++) {
                 double w = 1;

@@ -13,6 +13,7 @@
 
 #include "alloc.h"
 #include "error.h"
+#include "tensor.h"
 
 rheo_opts rheo_default_opts(void) {
     rheo_opts o = {.dt = 0, .rel_tol = 1e-6, .window = 64, .max_strain = 1e7, .max_steps = 4000000};
@@ -43,10 +44,6 @@ typedef struct rig {
     long steps;
     double strain, time;
 } rig;
-
-static double det3(const double A[9]) {
-    return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) + A[2] * (A[3] * A[7] - A[4] * A[6]);
-}
 
 static hearth_status rig_open(rig *g, const hearth_material *m, const double *p, double rate, hearth_error *err) {
     memset(g, 0, sizeof *g);
@@ -106,7 +103,7 @@ static hearth_status rig_step(rig *g, double dt, double *sigma, hearth_error *er
                        "material '%s' returned code %d (%s) at step %ld, shear strain %g, rate %g 1/s, dt %g s",
                        g->m->name, rc, t ? t : "no description", g->steps, g->strain, g->rate, dt);
     }
-    double J = det3(g->F);
+    double J = t3_det(g->F);
     double s = 0.5 * (tau[1] + tau[3]) / J;
     if (!isfinite(s))
         return err_set(err, HEARTH_ERR_PLUGIN,

@@ -366,8 +366,16 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         if (sp > s->max_speed) s->max_speed = sp;
         s->kinetic += 0.5 * rho * volume * sp * sp;
     }
+    /* new particles only raise the largest wave speed (pinning, which lowers it, rescans) */
+    double pscratch[SCENE_MAX_PARAMS];
+    for (int j = ps->n; j < ps->n + n; j++) {
+        const double c = ms->m->state_size > 0
+                             ? ms->m->wave_speed(scene_params_for(s, material, j, pscratch),
+                                                 pcold(ps, PC_STATE) + (size_t)j * ps->state_stride)
+                             : ms->wave_speed;
+        if (c > s->c_max) s->c_max = c;
+    }
     ps->n += n;
-    scene_refresh_wave_speed(s);
     return n;
 }
 

@@ -30,6 +30,7 @@
 #include "alloc.h"
 #include "error.h"
 #include "scene.h"
+#include "tensor.h"
 
 #define KELVIN 273.15
 
@@ -101,10 +102,6 @@ static void make_stencil(const grid *g, const double *x, stencil *st) {
 
 #define NODE(st, k, ch, npb) ((st).node[k][(ch) * (npb) + (st).l[k]])
 
-static double det3(const double *F) {
-    return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
-}
-
 /* ---- boundary particles (§6.6) ---------------------------------------- */
 
 static double node_mass(const grid *g, int i, int j, int k) {
@@ -142,9 +139,8 @@ static void find_boundary(hearth_scene *s) {
                 node[CH_CG_R * NPB + l] = -1;
                 node[CH_CG_P * NPB + l] = -1;
                 if (node[l] <= 0) continue;
-                const int li[3] = {D == 2 ? l / GRID_B : l / (GRID_B * GRID_B), D == 2 ? l % GRID_B : (l / GRID_B) % GRID_B,
-                                   D == 2 ? 0 : l % GRID_B};
-                const int gi[3] = {bc[0] * GRID_B + li[0], bc[1] * GRID_B + li[1], bc[2] * GRID_B + li[2]};
+                int gi[3];
+                grid_node_index(g, bc, l, gi);
                 int edge = 0;
                 for (int d = 0; d < D && !edge; d++)
                     for (int sgn = -1; sgn <= 1; sgn += 2) {
@@ -209,7 +205,7 @@ static void find_boundary(hearth_scene *s) {
         for (int i = 0; i < n; i++) {
             const double *x = X + 3 * i;
             if (!collider_near(col, x) || collider_sdf(col, x, NULL) >= g->dx) continue;
-            const double Vp = V0[i] * det3(Fc + 9 * i);
+            const double Vp = V0[i] * t3_det(Fc + 9 * i);
             /* a particle touching both air and the pan: the pan's temperature wins the ambient, areas add */
             const double cS = Vp / g->dx * col->beta;
             temp[i] = coef[i] > 0 ? (temp[i] * coef[i] + col->temperature * cS) / (coef[i] + cS) : col->temperature;
@@ -260,7 +256,7 @@ static void apply_block(hearth_scene *s, int q, int in, int out, int src, double
             base[d] = bb - bc[d] * GRID_B;
         }
         const material_slot *ms = &s->mats[mat[i]];
-        const double J = det3(Fc + 9 * i), Vp = V0[i] * J, kap = ms->core[CP_CONDUCTIVITY];
+        const double J = t3_det(Fc + 9 * i), Vp = V0[i] * J, kap = ms->core[CP_CONDUCTIVITY];
         double xp = 0, gx[3] = {0, 0, 0};
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++)
