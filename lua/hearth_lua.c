@@ -3,6 +3,7 @@
  * `require "hearth"` runs the embedded lua/hearth/init.lua with the C core
  * table (hearth.core) as its argument. The options (output folder, --set
  * values, overrides) are kept in the registry for the module's functions. */
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -30,6 +31,15 @@ static int traceback(lua_State *L) {
     if (!msg) msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
     luaL_traceback(L, L, msg, 1);
     return 1;
+}
+
+int hl_errorf(lua_State *L, const char *fmt, ...) {
+    char buf[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    return luaL_error(L, "%s", buf);
 }
 
 int hl_pcall(lua_State *L, int nargs, int nres) {

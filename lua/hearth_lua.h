@@ -49,6 +49,8 @@ void hl_checkvec(lua_State *L, int idx, const char *what, double v[3]);
 /* resolve a scene path against the output folder (absolute paths stay) into buf */
 const char *hl_out_path(lua_State *L, const char *path, char *buf, size_t n);
 int hl_raise(lua_State *L, const hearth_error *err);
+/* luaL_error with C printf formats (%g and friends, which lua_pushfstring lacks). */
+int hl_errorf(lua_State *L, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 void hl_open_shapes(lua_State *L);   /* adds shape constructors to the table on top */
 void hl_open_scene(lua_State *L);    /* adds h.scene and h.load to the table on top */
 void hl_open_output(lua_State *L);   /* scene methods for files, registered into the scene metatable */

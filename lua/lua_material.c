@@ -34,7 +34,7 @@ static int l_blend(lua_State *L) {
         lua_geti(L, 3, c + 1);
         alpha[c] = lua_tonumber(L, -1);
         lua_pop(L, 1);
-        if (!(alpha[c] >= 0)) return luaL_error(L, "h.mix: weight %d = %g; weights must be >= 0", c + 1, alpha[c]);
+        if (!(alpha[c] >= 0)) return hl_errorf(L, "h.mix: weight %d = %g; weights must be >= 0", c + 1, alpha[c]);
         sum += alpha[c];
     }
     if (!(sum > 0)) return luaL_error(L, "h.mix: the weights sum to zero");

@@ -62,6 +62,7 @@ static int l_scene_new(lua_State *L) {
     lua_pop(L, 1);
     d.oven_beta = field_num(L, 1, "oven_beta");
     d.heat_implicit = (int)field_num(L, 1, "heat_implicit");
+    d.water_momentum = (int)field_num(L, 1, "water_momentum");
     hl_scene *u = lua_newuserdatauv(L, sizeof *u, 1);
     u->s = NULL;
     luaL_setmetatable(L, HL_SCENE);
@@ -147,7 +148,7 @@ static int l_curve(lua_State *L) {
     return 0;
 }
 
-/* s:_add(shape, mat, ppc, jitter, velocity, temperature|nil) -> body id */
+/* s:_add(shape, mat, ppc, jitter, velocity, temperature|nil, fixed, saturation|nil) -> body id */
 static int l_add(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     hearth_body_def b = hearth_default_body_def();
@@ -158,6 +159,7 @@ static int l_add(lua_State *L) {
     hl_checkvec(L, 6, "velocity", b.velocity);
     b.temperature = lua_isnoneornil(L, 7) ? NAN : luaL_checknumber(L, 7);
     b.fixed = lua_toboolean(L, 8);
+    b.saturation = lua_isnoneornil(L, 9) ? NAN : luaL_checknumber(L, 9);
     hearth_error err;
     int id = hearth_scene_add_body(u->s, &b, &err);
     if (id < 0) return hl_raise(L, &err);
@@ -247,6 +249,7 @@ static int l_collider(lua_State *L) {
     if (!lua_isnil(L, 7)) hl_checkvec(L, 7, "collider pivot", cd.pivot);
     if (!lua_isnoneornil(L, 8)) cd.temperature = luaL_checknumber(L, 8);
     cd.beta = luaL_optnumber(L, 9, 0);
+    if (!lua_isnoneornil(L, 10)) cd.saturation = luaL_checknumber(L, 10);
     if (vfn || ofn) {
         hl_motion *m = lua_newuserdatauv(L, sizeof *m, 0);
         memset(m, 0, sizeof *m);
@@ -437,6 +440,8 @@ static int l_stats(lua_State *L) {
     lua_pushnumber(L, st.heat_energy); lua_setfield(L, -2, "heat_energy");
     lua_pushinteger(L, st.cg_iterations); lua_setfield(L, -2, "cg_iterations");
     lua_pushnumber(L, st.gas_moles); lua_setfield(L, -2, "gas");
+    lua_pushnumber(L, st.water_mass); lua_setfield(L, -2, "water_mass");
+    lua_pushnumber(L, st.water_lost); lua_setfield(L, -2, "water_lost");
     /* the live fields as a list */
     lua_newtable(L);
     const char *f = hearth_scene_fields(u->s);

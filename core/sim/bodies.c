@@ -7,9 +7,10 @@
 #include "error.h"
 #include "params.h"
 #include "scene.h"
+#include "water.h"
 
 hearth_body_def hearth_default_body_def(void) {
-    return (hearth_body_def){.ppc = 4, .jitter = 0.5, .temperature = NAN};
+    return (hearth_body_def){.ppc = 4, .jitter = 0.5, .temperature = NAN, .saturation = NAN};
 }
 
 int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_error *err) {
@@ -26,9 +27,14 @@ int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_er
         err_set(err, HEARTH_ERR_PARAM, "body: temperature = %g degrees C; valid range [-273.15, 5000]", def->temperature);
         return -1;
     }
+    if (!isnan(def->saturation) && !(def->saturation >= 0 && def->saturation <= 1)) {
+        err_set(err, HEARTH_ERR_PARAM, "body: saturation = %g; valid range [0, 1] (water volume over volume)", def->saturation);
+        return -1;
+    }
     hearth_status st = particles_enable(&s->ps, PC_BODY, err);
     if (!st && def->fixed) st = particles_enable(&s->ps, PC_FLAGS, err);
     if (!st && !isnan(def->temperature)) st = scene_enable_temperature(s, err);
+    if (!st && !isnan(def->saturation)) st = water_enable(s, err);
     if (st) return -1;
     const int n0 = s->ps.n;
     int n = hearth_scene_seed_shape(s, def->material, def->shape, def->ppc, def->jitter, def->velocity, err);
@@ -46,6 +52,7 @@ int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_er
         }
         if (!isnan(def->temperature)) pcold(&s->ps, PC_TEMPERATURE)[i] = pcold(&s->ps, PC_TEMP_MAX)[i] = def->temperature;
     }
+    if (!isnan(def->saturation)) water_init_particles(s, n0, s->ps.n, def->saturation);
     if (def->fixed) scene_refresh_wave_speed(s); /* a pinned body's waves do not limit dt */
     return id;
 }

@@ -1,6 +1,7 @@
 /* checkpoint.c: save and restore the full scene state.
  *
- * Layout (version 1, native endianness, checked on load):
+ * Layout (version 2, native endianness, checked on load; version 2 added the
+ * water properties, the wet colliders and the water-lost clock):
  *   "HEARTHCK" u32 version u32 0x01020304 u32 sizeof(double)
  *   scene definition and clocks, field by field
  *   materials: plugin name, parameter count, parameters
@@ -21,7 +22,7 @@
 #include "shapes.h"
 
 #define CK_MAGIC "HEARTHCK"
-#define CK_VERSION 1u
+#define CK_VERSION 2u
 
 typedef struct ck_io {
     FILE *f;
@@ -70,11 +71,13 @@ static void io_def(ck_io *io, hearth_scene_def *d, int writing) {
     f(io, &mr, sizeof mr);
     f(io, &d->energy_growth, sizeof d->energy_growth);
     f(io, &d->seed, sizeof d->seed);
-    int32_t hi = d->heat_implicit;
+    int32_t hi = d->heat_implicit, wm = d->water_momentum;
     f(io, &d->oven_temperature, sizeof d->oven_temperature);
     f(io, &d->oven_beta, sizeof d->oven_beta);
     f(io, &hi, sizeof hi);
+    f(io, &wm, sizeof wm);
     d->heat_implicit = hi;
+    d->water_momentum = wm;
     d->dim = dim;
     d->wall = (hearth_contact)wall;
     d->guard = (hearth_guard_policy)guard;
@@ -100,6 +103,7 @@ static void io_clocks(ck_io *io, hearth_scene *s, int writing) {
     f(io, &s->rng, sizeof s->rng);
     f(io, &next_id, sizeof next_id);
     f(io, &nbodies, sizeof nbodies);
+    f(io, &s->water_lost, sizeof s->water_lost);
     s->nbodies = nbodies;
     s->step = step;
     s->out_of_domain = ood;
@@ -155,6 +159,7 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
         WR(&io, has_motion);
         WR(&io, c->temperature);
         WR(&io, c->beta);
+        WR(&io, c->saturation);
     }
     const particles *ps = &s->ps;
     int32_t n = ps->n, stride = ps->state_stride;
@@ -283,6 +288,7 @@ hearth_scene *hearth_scene_load(const char *path, hearth_error *err) {
         RD(&io, has_motion);
         RD(&io, c.temperature);
         RD(&io, c.beta);
+        RD(&io, c.saturation);
         hearth_collider_def cd = hearth_default_collider_def();
         cd.shape = sh;
         cd.mode = (hearth_contact)mode;
@@ -292,6 +298,7 @@ hearth_scene *hearth_scene_load(const char *path, hearth_error *err) {
         memcpy(cd.pivot, c.pivot0, sizeof c.pivot0);
         cd.temperature = c.temperature;
         cd.beta = c.beta;
+        cd.saturation = c.saturation;
         int id = io.bad ? -1 : hearth_scene_add_collider(s, &cd, err);
         hearth_shape_free(sh);
         if (id < 0) return load_fail(s, f, err, path, "bad collider record");
@@ -344,5 +351,6 @@ hearth_scene *hearth_scene_load(const char *path, hearth_error *err) {
     s->rng = clocks.rng;
     s->next_id = clocks.next_id;
     s->nbodies = clocks.nbodies;
+    s->water_lost = clocks.water_lost;
     return s;
 }

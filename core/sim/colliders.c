@@ -59,8 +59,14 @@ hearth_status collider_init(collider *c, const hearth_collider_def *def, hearth_
         c->shape = NULL;
         return err_set(err, HEARTH_ERR_PARAM, "collider beta = %g W/(m^2 K); valid range [0, inf)", def->beta);
     }
+    if (!isnan(def->saturation) && !(def->saturation >= 0 && def->saturation <= 1)) {
+        hearth_shape_free(c->shape);
+        c->shape = NULL;
+        return err_set(err, HEARTH_ERR_PARAM, "collider saturation = %g; valid range [0, 1] (NaN = dry)", def->saturation);
+    }
     c->temperature = def->temperature;
     c->beta = def->beta;
+    c->saturation = def->saturation;
     /* With a motion function the def constants are unused: start from motion(0)
      * so vel/omega are meaningful before the scene first sets the time. */
     collider_set_time(c, 0.0);

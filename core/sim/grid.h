@@ -11,7 +11,8 @@
 #define GRID_B 4     /* nodes per block side */
 #define GRID_T 6     /* tile side: a block's particles touch nodes 0..5 from the block origin */
 /* Node channels. Momentum runs always use the first four; a scene with heat
- * transport uses all of them (grid_set_channels), so it alone pays for them. */
+ * or water transport uses all of them (grid_set_channels), so it alone pays
+ * for them. */
 enum {
     CH_M = 0, CH_PX, CH_PY, CH_PZ, /* mass, momentum (velocity after the grid update) */
     CH_HC,                          /* heat capacity sum m alpha w (J/K) */
@@ -20,6 +21,9 @@ enum {
     CH_R,                           /* heat flux accumulated into the node (W) / CG Ap */
     CH_CG_R, CH_CG_P,               /* conjugate-gradient residual and direction */
     CH_B,                           /* heat sources (W); in the implicit solve, then the preconditioned residual */
+    CH_MW,                          /* water mass m_i^w (eq. 15) */
+    CH_SW,                          /* water capacity sum rho0^w V_p w (eq. 18), then saturation s_i */
+    CH_DMW,                         /* water mass change over the step (eq. 25) */
     GRID_NCH_MAX
 };
 #define GRID_NCH_MOMENTUM 4

@@ -52,9 +52,13 @@ int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed
     }
     /* Runaway: growth by energy_growth in one step beyond anything seen so far.
      * Judging against the last step alone would flag an oscillator passing
-     * its turning point, where the kinetic energy is momentarily near zero. */
+     * its turning point, where the kinetic energy is momentarily near zero.
+     * Motion below a thousandth of a cell per step is not judged: a body
+     * starting from rest (a drying block, a slow creep) multiplies a tiny
+     * energy many times without anything going wrong, and a real runaway
+     * grows past that speed within a few steps and is caught there. */
     const double ref = fmax(s->kinetic, s->kinetic_peak);
-    if (ref > 1e-300 && rep->kinetic > s->def.energy_growth * ref) {
+    if (ref > 1e-300 && rep->kinetic > s->def.energy_growth * ref && move > 1e-3) {
         if (rep->fastest >= 0) describe_particle(s, rep->fastest, who, sizeof who);
         else snprintf(who, sizeof who, "no particle");
         snprintf(s->diagnosis, sizeof s->diagnosis,

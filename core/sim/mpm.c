@@ -23,6 +23,8 @@
 #include "scene.h"
 #include "gas.h"
 #include "thermal.h"
+#include "water.h"
+#include "boundary.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -92,7 +94,7 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
         grid_block_coords(g, s->pb[k].block, c);
         s->colour_pb[fill[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++] = k;
     }
-    st = grid_set_channels(g, thermal_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
+    st = grid_set_channels(g, thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
     if (st) return st;
     return grid_activate(g, s->mark, err);
 }
@@ -125,7 +127,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k,
     int bc[3];
     grid_block_coords(g, pb.block, bc);
     const int org[3] = {bc[0] * GRID_B, bc[1] * GRID_B, bc[2] * GRID_B};
-    const int NCH = HEAT ? GRID_NCH_MAX : GRID_NCH_MOMENTUM;
+    const int NCH = HEAT ? CH_T + 1 : GRID_NCH_MOMENTUM; /* the channels P2G writes */
     memset(tile, 0, sizeof(double) * (size_t)NCH * (size_t)TN);
 
     const double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *M = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
@@ -134,6 +136,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k,
     const double *Tcol = HEAT ? pcold(ps, PC_TEMPERATURE) : NULL;
     const int *pflags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     const double *Gcol = ps->enabled & (1u << PC_GAS) ? pcold(ps, PC_GAS) : NULL;
+    const double *Wcol = ps->enabled & (1u << PC_WATER) ? pcold(ps, PC_WATER) : NULL;
+    const double *S0col = Wcol ? pcold(ps, PC_SAT0) : NULL;
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
     const int stride = ps->state_stride;
     double pscratch[SCENE_MAX_PARAMS];
@@ -161,9 +165,17 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k,
             memcpy(pt.F, F, sizeof pt.F);
             pt.dt = dt;
             pt.temperature = Tcol ? Tcol[i] : NAN;
-            pt.porosity = pt.saturation = NAN;
             pt.p = scene_params_for(s, mat[i], i, pscratch);
             pt.state = state ? state + (size_t)i * stride : NULL;
+            /* porosity n^p = J^P - 1 + n^p_0 (§5.4), from the plastic volume change at the start of the step */
+            if (Gcol || (ms->m->needs & HEARTH_NEEDS_POROSITY)) {
+                const double JP = ms->m->plastic_J ? ms->m->plastic_J(pt.p, pt.state) : 1.0;
+                pt.porosity = gas_porosity(JP, ms->core[CP_POROSITY0]);
+            } else {
+                pt.porosity = NAN;
+            }
+            const double rho0w = ms->core[CP_WATER_DENSITY];
+            pt.saturation = Wcol ? Wcol[i] / (rho0w * J * V0[i]) : NAN;
             int code = ms->m->stress(&pt, tau);
             if (code) {
                 record_fail(pp, i, FAIL_PLUGIN, code);
@@ -172,9 +184,16 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k,
                 record_fail(pp, i, FAIL_STRESS, 0);
                 memset(tau, 0, sizeof tau);
             }
+            if (Wcol && ms->core[CP_WATER_STIFFNESS] > 0) { /* water pressure (eq. 14): tau_w = -J c (s - s_0) I */
+                const double tw = -J * ms->core[CP_WATER_STIFFNESS] * (pt.saturation - S0col[i]);
+                tau[0] += tw;
+                tau[4] += tw;
+                tau[8] += tw;
+            }
             if (Gcol) { /* gas pressure (eq. 13): tau_g = J sigma_g = -n^g R theta / n^p I */
-                const double JP = ms->m->plastic_J ? ms->m->plastic_J(pt.p, pt.state) : 1.0;
-                const double tg = gas_tau(Gcol[i], Tcol[i], gas_porosity(JP, ms->core[CP_POROSITY0]));
+                /* porosity after this step's plastic flow */
+                const double np = ms->m->plastic_J ? gas_porosity(ms->m->plastic_J(pt.p, pt.state), ms->core[CP_POROSITY0]) : pt.porosity;
+                const double tg = gas_tau(Gcol[i], Tcol[i], np);
                 tau[0] += tg;
                 tau[4] += tg;
                 tau[8] += tg;
@@ -257,7 +276,7 @@ static void p2g_block_3d_heat(hearth_scene *s, int k, double dt, double *tile) {
 
 void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
     (void)rep;
-    const int heat = s->g.nch > GRID_NCH_MOMENTUM;
+    const int heat = thermal_active(s);
     void (*fn)(hearth_scene *, int, double, double *) =
         s->g.dim == 2 ? (heat ? p2g_block_2d_heat : p2g_block_2d) : (heat ? p2g_block_3d_heat : p2g_block_3d);
     for (int k = 0; k < s->npb; k++) s->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
@@ -460,7 +479,7 @@ static void g2p_block_2d_heat(hearth_scene *s, int k, double dt, double *tile) {
 static void g2p_block_3d_heat(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 3, 1, k, dt, tile); }
 
 void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
-    const int heat = s->g.nch > GRID_NCH_MOMENTUM;
+    const int heat = thermal_active(s);
     void (*fn)(hearth_scene *, int, double, double *) =
         s->g.dim == 2 ? (heat ? g2p_block_2d_heat : g2p_block_2d) : (heat ? g2p_block_3d_heat : g2p_block_3d);
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
@@ -494,7 +513,10 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     hearth_status st = mpm_sort(s, err);
     if (st) return st;
     mpm_p2g(s, dt, rep);
-    if (thermal_active(s) && (st = thermal_grid_update(s, dt, err))) return st;
+    const int heat = thermal_active(s), water = water_active(s);
+    if ((heat || water) && (st = boundary_find(s, err))) return st;
+    if (heat && (st = thermal_grid_update(s, dt, err))) return st;
+    if (water) water_update(s, dt);
     mpm_grid_update(s, dt);
     mpm_g2p(s, dt, rep);
     return HEARTH_OK;

@@ -16,6 +16,13 @@ static const hearth_param core_schema[CP_COUNT] = {
     [CP_REACTION_T] = {"reaction_temperature", "degC", "temperature of the peak CO2 rate theta_r", 40, -273.15, 1000},
     [CP_REACTION_WIDTH] = {"reaction_width", "K", "width dtheta of the CO2 rate's bell curve", 20, 1e-3, 1000},
     [CP_POROSITY0] = {"porosity", "1", "initial gas porosity n^p_0 (gas volume over solid-gas volume)", 0.1, 1e-6, 0.99},
+    [CP_SATURATION0] = {"saturation", "1", "initial water saturation s_0 = V^w/V, where water is live (Ding et al. §3.2)", 0.5, 0, 1},
+    [CP_WATER_DIFFUSIVITY] = {"water_diffusivity", "m^2/(s K)",
+                              "Fick's law q^w = -K theta rho^w grad s, theta absolute (Ding et al. §3.2); 0 = water does not move", 0, 0, 1},
+    [CP_EVAPORATION] = {"evaporation", "kg/(m^2 s K)",
+                        "surface water loss q^w.n = beta^w theta s, theta absolute (Ding et al. §3.2); 0 = none", 0, 0, 10},
+    [CP_WATER_STIFFNESS] = {"water_stiffness", "Pa", "water pressure sigma^w = -c (s - s_0) I (Ding et al. eq. 14); 0 = none", 0, 0, 1e9},
+    [CP_WATER_DENSITY] = {"water_density", "kg/m^3", "density of pure water rho_0^w (Ding et al. eq. 8)", 1000, 1, 1e5},
 };
 
 const hearth_param *hearth_core_params(int *n) {

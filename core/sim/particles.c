@@ -20,6 +20,9 @@ static const struct {
     [PC_BODY] = {"body", 1, 1},
     [PC_FLAGS] = {"flags", 1, 1},
     [PC_GAS] = {"gas", 1, 0},
+    [PC_WATER] = {"water", 1, 0},
+    [PC_SAT0] = {"saturation0", 1, 0},
+    [PC_QW] = {"water_flux", 3, 0},
 };
 
 const char *particles_col_name(int c) { return col_info[c].name; }

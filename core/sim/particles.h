@@ -29,6 +29,9 @@ typedef enum pcol {
     PC_BODY,                   /* body id (int32), for scenes built from bodies */
     PC_FLAGS,                  /* PF_* bits (int32) */
     PC_GAS,                    /* CO2 moles per unit reference volume n^g (mol/m^3), 1 */
+    PC_WATER,                  /* water mass m_p^w (kg; kg/m in 2D), 1 */
+    PC_SAT0,                   /* initial saturation s_0 (the zero of the water pressure, eq. 14), 1 */
+    PC_QW,                     /* water flux relative to the solid q^w (kg/(m^2 s)), 3 */
     PC_COUNT
 } pcol;
 

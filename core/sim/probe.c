@@ -13,10 +13,11 @@
 #include "gas.h"
 #include "scene.h"
 #include "tensor.h"
+#include "water.h"
 
 typedef enum field_id {
     F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_TEMPERATURE, F_BOUNDARY,
-    F_GAS, F_POROSITY, F_GAS_PRESSURE, F_COUNT
+    F_GAS, F_POROSITY, F_GAS_PRESSURE, F_SATURATION, F_WATER_MASS, F_WATER_PRESSURE, F_COUNT
 } field_id;
 
 /* A field is live when its column is enabled (column -1: always live). */
@@ -27,10 +28,16 @@ static const struct {
 } fields[F_COUNT] = {
     [F_TEMPERATURE] = {"temperature", "degC", 1, PC_TEMPERATURE,
                        "give a body a temperature (s:add{..., temperature = 20}), the scene an oven, or a material a temperature curve"},
-    [F_BOUNDARY] = {"boundary", "1", 1, PC_TEMPERATURE, "turn the temperature field on (boundary particles are where heat enters)"},
+    [F_BOUNDARY] = {"boundary", "1", 1, PC_FLAGS, "turn the temperature or water field on (boundary particles are where heat and water cross)"},
     [F_GAS] = {"gas", "mol/m^3", 1, PC_GAS, "give a material a leavening rate (gas_rate > 0)"},
     [F_POROSITY] = {"porosity", "1", 1, PC_GAS, "give a material a leavening rate (gas_rate > 0)"},
     [F_GAS_PRESSURE] = {"gas_pressure", "Pa", 1, PC_GAS, "give a material a leavening rate (gas_rate > 0)"},
+    [F_SATURATION] = {"saturation", "1", 1, PC_WATER,
+                      "give a body a saturation (s:add{..., saturation = 0.5}) or a material water_diffusivity, evaporation or water_stiffness"},
+    [F_WATER_MASS] = {"water_mass", "kg/m^3", 1, PC_WATER,
+                      "give a body a saturation (s:add{..., saturation = 0.5}) or a material water_diffusivity, evaporation or water_stiffness"},
+    [F_WATER_PRESSURE] = {"water_pressure", "Pa", 1, PC_WATER,
+                          "give a body a saturation (s:add{..., saturation = 0.5}) or a material water_diffusivity, evaporation or water_stiffness"},
     [F_VELOCITY] = {"velocity", "m/s", 3, -1, NULL},   [F_VX] = {"velocity_x", "m/s", 1, -1, NULL},
     [F_VY] = {"velocity_y", "m/s", 1, -1, NULL},       [F_VZ] = {"velocity_z", "m/s", 1, -1, NULL},
     [F_SPEED] = {"speed", "m/s", 1, -1, NULL},         [F_DENSITY] = {"density", "kg/m^3", 1, -1, NULL},
@@ -94,7 +101,7 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
     memcpy(pt.F, pcold(ps, PC_F) + 9 * i, sizeof pt.F);
     pt.dt = 0;
     pt.temperature = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE)[i] : NAN;
-    pt.porosity = pt.saturation = NAN;
+    pt.saturation = ps->enabled & (1u << PC_WATER) ? water_saturation(s, i) : NAN;
     double pscratch[SCENE_MAX_PARAMS];
     pt.p = scene_params_for(s, m, i, pscratch);
     pt.state = NULL;
@@ -102,6 +109,7 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
         memcpy(state_copy, pcold(ps, PC_STATE) + (size_t)i * ps->state_stride, sizeof(double) * (size_t)ps->state_stride);
         pt.state = state_copy;
     }
+    pt.porosity = gas_porosity(ms->m->plastic_J ? ms->m->plastic_J(pt.p, pt.state) : 1.0, ms->core[CP_POROSITY0]);
     if (ms->m->stress(&pt, tau)) {
         for (int k = 0; k < 9; k++) tau[k] = NAN;
     }
@@ -119,6 +127,13 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_TEMPERATURE: out[0] = pcold(ps, PC_TEMPERATURE)[i]; break;
     case F_BOUNDARY: out[0] = (pcoli(ps, PC_FLAGS)[i] & PF_BOUNDARY) ? 1.0 : 0.0; break;
     case F_GAS: out[0] = pcold(ps, PC_GAS)[i]; break;
+    case F_SATURATION: out[0] = water_saturation(s, i); break;
+    case F_WATER_MASS: /* as a density: water mass over the particle's current volume */
+        out[0] = pcold(ps, PC_WATER)[i] / (pcold(ps, PC_VOL0)[i] * t3_det(F));
+        break;
+    case F_WATER_PRESSURE: /* p^w = c (s - s_0), compression positive (eq. 14) */
+        out[0] = s->mats[pcoli(ps, PC_MAT)[i]].core[CP_WATER_STIFFNESS] * (water_saturation(s, i) - pcold(ps, PC_SAT0)[i]);
+        break;
     case F_POROSITY:
     case F_GAS_PRESSURE: {
         const int m = pcoli(ps, PC_MAT)[i];

@@ -9,6 +9,7 @@
 #include "params.h"
 #include "scene.h"
 #include "thermal.h"
+#include "water.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -57,7 +58,7 @@ hearth_scene_def hearth_default_scene_def(void) {
 }
 
 hearth_collider_def hearth_default_collider_def(void) {
-    return (hearth_collider_def){.mode = HEARTH_SLIP, .temperature = NAN};
+    return (hearth_collider_def){.mode = HEARTH_SLIP, .temperature = NAN, .saturation = NAN};
 }
 
 static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
@@ -160,6 +161,7 @@ void hearth_scene_destroy(hearth_scene *s) {
     mem_free(s->bnd_coef, sizeof(double) * (size_t)s->bnd_cap);
     mem_free(s->bnd_temp, sizeof(double) * (size_t)s->bnd_cap);
     mem_free(s->cg_partial, sizeof(double) * (size_t)s->cg_cap);
+    mem_free(s->bnd_area, sizeof(double) * (size_t)s->bnd_area_cap);
     mem_free(s->mark, (size_t)s->g.nblocks);
     grid_free(&s->g);
     mem_free(s, sizeof *s);
@@ -286,6 +288,10 @@ int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *c
     /* leavening needs the gas column, and the reaction needs temperature */
     if (core[CP_GAS_RATE] > 0 &&
         (particles_enable(&s->ps, PC_GAS, err) || scene_enable_temperature(s, err))) return -1;
+    /* and so does a plugin that reads temperature */
+    if ((m->needs & HEARTH_NEEDS_TEMPERATURE) && scene_enable_temperature(s, err)) return -1;
+    if (water_material_wants(s, s->nmat - 1) && water_enable(s, err)) return -1;
+    s->water_limits_valid = 0;
     return s->nmat - 1;
 }
 
@@ -376,6 +382,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         if (c > s->c_max) s->c_max = c;
     }
     ps->n += n;
+    if (ps->enabled & (1u << PC_WATER)) water_init_particles(s, ps->n - n, ps->n, NAN);
     return n;
 }
 
@@ -463,6 +470,10 @@ int hearth_scene_add_collider(hearth_scene *s, const hearth_collider_def *def, h
         s->capcol = cap;
     }
     if (collider_init(&s->cols[s->ncol], def, err)) return -1;
+    if (!isnan(def->saturation) && water_enable(s, err)) { /* a wet collider makes water live */
+        collider_free(&s->cols[s->ncol]);
+        return -1;
+    }
     collider_set_time(&s->cols[s->ncol], s->t);
     return s->ncol++;
 }
@@ -487,8 +498,9 @@ double scene_stable_dt(const hearth_scene *s) {
     const double sp = s->max_speed + s->c_max;
     double dt = sp > 0 ? s->def.cfl * s->def.dx / sp : INFINITY;
     if (s->def.dt_max > 0 && dt > s->def.dt_max) dt = s->def.dt_max;
-    const double heat = thermal_dt_limit(s);
+    const double heat = thermal_dt_limit(s), water = water_dt_limit(s);
     if (dt > heat) dt = heat;
+    if (dt > water) dt = water;
     if (isinf(dt)) dt = s->def.cfl * s->def.dx; /* nothing moves or conducts: as if at 1 m/s */
     return dt * s->dt_scale;
 }
@@ -536,6 +548,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             s->kinetic = rep.kinetic;
             if (s->kinetic > s->kinetic_peak) s->kinetic_peak = s->kinetic;
             s->out_of_domain += rep.out_of_domain;
+            if (water_active(s)) s->water_lost += s->water_step_removed;
             if (s->dt_scale < 1) s->dt_scale = fmin(1.0, s->dt_scale * 1.25);
             return HEARTH_OK;
         }
@@ -602,6 +615,8 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
     st->cg_iterations = s->cg_iterations;
     if (s->ps.enabled & (1u << PC_GAS))
         for (int i = 0; i < s->ps.n; i++) st->gas_moles += pcold(&s->ps, PC_GAS)[i] * pcold(&s->ps, PC_VOL0)[i];
+    st->water_mass = water_total(s);
+    st->water_lost = s->water_lost;
 }
 
 int hearth_scene_particle_count(const hearth_scene *s) { return s->ps.n; }

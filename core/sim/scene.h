@@ -61,6 +61,7 @@ typedef struct pb_partial {
     int fail_i, fail_kind, fail_code, fastest;
     double ke, vmax, cmax;
     long ood;
+    double water_removed, water_dmax, water_emax; /* water.c */
 } pb_partial;
 
 struct hearth_scene {
@@ -111,6 +112,16 @@ struct hearth_scene {
     int bnd_cap;
     double *cg_partial;          /* per active block: partial dot products */
     int cg_cap, cg_iterations;
+
+    /* boundary particles (boundary.c): each one's share of the air surface */
+    double *bnd_area;
+    int bnd_area_cap;
+
+    /* water (water.c) */
+    double water_lost;            /* through the boundary so far (kg) */
+    double water_step_removed;    /* by the step being taken; counted when it stands */
+    double water_dmax, water_emax; /* largest K theta s and beta theta / rho_0 after the last step */
+    int water_limits_valid;        /* 0: particles changed since, scan again */
 };
 
 /* scene.c */

@@ -12,11 +12,8 @@
  *
  * Boundaries relax toward the outside temperature: the flux into the body is
  * S beta (theta_out - theta) (the printed signs in §4/§6.3 are ambiguous; the
- * analytic slab test decides). Boundary particles follow §6.6: a node with
- * mass next to an empty node picks its closest particle. Each pick carries
- * the node's face area dx^(dim-1) rather than (9 pi/16 V_p^2)^(1/3): with one
- * pick per boundary node the latter counts about a third of a flat surface at
- * 8 particles per cell, and the slab test misses by far more than 1e-2.
+ * analytic slab test decides). Boundary particles and their areas S come from
+ * boundary.c (§6.6).
  * Heated colliders act on particles within dx of them, each carrying V_p/dx
  * of contact area (a band of thickness dx sums to the contact area).
  *
@@ -63,141 +60,25 @@ double thermal_energy(const hearth_scene *s) {
     return e;
 }
 
-/* ---- node access ------------------------------------------------------ */
+/* ---- boundary coefficients ------------------------------------------- */
 
-typedef struct stencil {
-    double *node[27]; /* block base of each stencil node (NULL if inactive) */
-    int l[27];        /* local index in the block */
-    double w[27], gw[27][3];
-    int n;
-} stencil;
-
-static void make_stencil(const grid *g, const double *x, stencil *st) {
-    const int D = g->dim;
-    int base[3] = {0, 0, 0};
-    double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
-    for (int d = 0; d < D; d++) {
-        const double X = (x[d] - g->lo[d]) * g->inv_dx;
-        base[d] = (int)floor(X - 0.5);
-        bspline_weights(X - base[d], w[d], dw[d]);
-    }
-    st->n = 0;
-    for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++)
-            for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
-                const int blk = grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B);
-                const int slot = g->slot[blk];
-                const int k = st->n++;
-                st->node[k] = slot >= 0 ? grid_block(g, slot) : NULL;
-                st->l[k] = D == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
-                                  : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
-                const double wc = D == 3 ? w[2][c] : 1.0;
-                st->w[k] = w[0][a] * w[1][b] * wc;
-                st->gw[k][0] = dw[0][a] * w[1][b] * wc * g->inv_dx;
-                st->gw[k][1] = w[0][a] * dw[1][b] * wc * g->inv_dx;
-                st->gw[k][2] = D == 3 ? w[0][a] * w[1][b] * dw[2][c] * g->inv_dx : 0.0;
-            }
-}
-
-#define NODE(st, k, ch, npb) ((st).node[k][(ch) * (npb) + (st).l[k]])
-
-/* ---- boundary particles (§6.6) ---------------------------------------- */
-
-static double node_mass(const grid *g, int i, int j, int k) {
-    if (i < 0 || j < 0 || k < 0 || i >= g->nb[0] * GRID_B || j >= g->nb[1] * GRID_B || k >= g->nb[2] * GRID_B) return 0;
-    const int slot = g->slot[grid_block_id(g, i / GRID_B, j / GRID_B, k / GRID_B)];
-    if (slot < 0) return 0;
-    const int l = g->dim == 2 ? (i % GRID_B) * GRID_B + j % GRID_B
-                              : ((i % GRID_B) * GRID_B + j % GRID_B) * GRID_B + k % GRID_B;
-    return grid_block(g, slot)[l];
-}
-
-/* Fills s->bnd_coef (S beta, W/K) and s->bnd_temp (degrees C) per particle. */
+/* Fills s->bnd_coef (S beta, W/K) and s->bnd_temp (degrees C) per particle
+ * from the air boundary (boundary.c) and the heated colliders. */
 static void find_boundary(hearth_scene *s) {
-    grid *g = &s->g;
+    const grid *g = &s->g;
     particles *ps = &s->ps;
-    const int D = g->dim, NPB = g->nodes_per_block, n = ps->n;
+    const int n = ps->n;
     double *coef = s->bnd_coef, *temp = s->bnd_temp;
     memset(coef, 0, sizeof(double) * (size_t)n);
-    for (int i = 0; i < n; i++) temp[i] = 0;
+    memset(temp, 0, sizeof(double) * (size_t)n);
     const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0), *Fc = pcold(ps, PC_F);
     int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
-    if (flags)
-        for (int i = 0; i < n; i++) flags[i] &= ~PF_BOUNDARY;
-
-    const int oven = !isnan(s->def.oven_temperature) && s->def.oven_beta > 0;
-    if (oven) {
-        /* mark boundary nodes (mass, an empty face neighbour, not inside a collider):
-         * CH_CG_R = best squared distance so far (-1: not a boundary node), CH_CG_P = particle */
-#pragma omp parallel for schedule(dynamic, 4) if (s->ps.n >= SCENE_PARALLEL_MIN)
-        for (int k = 0; k < g->nactive; k++) {
-            double *node = grid_block(g, k);
-            int bc[3];
-            grid_block_coords(g, g->active[k], bc);
-            for (int l = 0; l < NPB; l++) {
-                node[CH_CG_R * NPB + l] = -1;
-                node[CH_CG_P * NPB + l] = -1;
-                if (node[l] <= 0) continue;
-                int gi[3];
-                grid_node_index(g, bc, l, gi);
-                int edge = 0;
-                for (int d = 0; d < D && !edge; d++)
-                    for (int sgn = -1; sgn <= 1; sgn += 2) {
-                        int nb[3] = {gi[0], gi[1], gi[2]};
-                        nb[d] += sgn;
-                        if (node_mass(g, nb[0], nb[1], nb[2]) <= 0) edge = 1;
-                    }
-                if (!edge) continue;
-                double xi[3] = {0, 0, 0};
-                for (int d = 0; d < D; d++) xi[d] = g->lo[d] + gi[d] * g->dx;
-                int in_col = 0;
-                for (int c = 0; c < s->ncol && !in_col; c++)
-                    in_col = collider_near(&s->cols[c], xi) && collider_sdf(&s->cols[c], xi, NULL) < 0;
-                if (!in_col) node[CH_CG_R * NPB + l] = INFINITY;
+    if (!isnan(s->def.oven_temperature) && s->def.oven_beta > 0)
+        for (int i = 0; i < n; i++)
+            if (s->bnd_area[i] > 0) {
+                coef[i] = s->bnd_area[i] * s->def.oven_beta;
+                temp[i] = s->def.oven_temperature;
             }
-        }
-        /* closest particle of each boundary node: particles in sorted order, so ties go to the lower index */
-        for (int col = 0; col < 8; col++) {
-#pragma omp parallel for schedule(dynamic, 2) if (s->ps.n >= SCENE_PARALLEL_MIN)
-            for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) {
-                const pblock pb = s->pb[s->colour_pb[q]];
-                stencil st;
-                for (int i = pb.start; i < pb.end; i++) {
-                    make_stencil(g, X + 3 * i, &st);
-                    for (int k = 0; k < st.n; k++) {
-                        if (!st.node[k]) continue;
-                        double *best = &NODE(st, k, CH_CG_R, NPB);
-                        if (*best < 0) continue;
-                        /* node position from its weight offset is awkward; recompute from the stencil order */
-                        const int a = k / (D == 3 ? 9 : 3), b = (k / (D == 3 ? 3 : 1)) % 3, c = D == 3 ? k % 3 : 0;
-                        double d2 = 0;
-                        const int off[3] = {a, b, c};
-                        for (int d = 0; d < D; d++) {
-                            const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
-                            const double node_x = g->lo[d] + (floor(Xd - 0.5) + off[d]) * g->dx;
-                            d2 += (X[3 * i + d] - node_x) * (X[3 * i + d] - node_x);
-                        }
-                        if (d2 < *best) {
-                            *best = d2;
-                            NODE(st, k, CH_CG_P, NPB) = i;
-                        }
-                    }
-                }
-            }
-        }
-        const double area = D == 2 ? g->dx : g->dx * g->dx;
-        for (int k = 0; k < g->nactive; k++) { /* serial: several nodes may pick one particle */
-            const double *node = grid_block(g, k);
-            for (int l = 0; l < NPB; l++) {
-                const int p = (int)node[CH_CG_P * NPB + l];
-                if (node[CH_CG_R * NPB + l] < 0 || p < 0) continue;
-                coef[p] += area * s->def.oven_beta;
-                temp[p] = s->def.oven_temperature;
-                if (flags) flags[p] |= PF_BOUNDARY;
-            }
-        }
-    }
     /* heated colliders: the band within dx of the surface */
     for (int c = 0; c < s->ncol; c++) {
         const collider *col = &s->cols[c];

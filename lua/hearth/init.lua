@@ -236,7 +236,8 @@ end
 
 local S = core.scene_methods
 local scene_keys = { dim = true, dx = true, box = true, solver = true, gravity = true, cfl = true, dt_max = true,
-  wall = true, friction = true, guard = true, max_rollbacks = true, seed = true, name = true, oven = true, heat = true }
+  wall = true, friction = true, guard = true, max_rollbacks = true, seed = true, name = true, oven = true, heat = true,
+  water_momentum = true }
 local contact = { "sticky", "slip", "separate" }
 
 --- A scene: h.scene{dim = 2, dx = 0.01, box = {{0,0},{1,1}}, gravity = {0,-9.81}, ...}
@@ -268,6 +269,7 @@ function h.scene(o)
     seed = check_number(o.seed or 1, "h.scene: seed", 0, 2 ^ 52),
     heat_implicit = check_choice(o.heat or "explicit", "h.scene: heat", { "explicit", "implicit" }),
     oven_beta = 0,
+    water_momentum = o.water_momentum and 1 or 0,
   }
   if o.oven ~= nil then
     if type(o.oven) ~= "table" then error("h.scene: oven = {temperature = degC, beta = W/(m^2 K)}", 2) end
@@ -308,11 +310,11 @@ local function material_id(s, m)
   return id
 end
 
---- s:add{shape = ..., material = ..., ppc = 4, velocity = {0,0}, jitter = 0.5, temperature = 20} -> body id
+--- s:add{shape = ..., material = ..., ppc = 4, velocity = {0,0}, jitter = 0.5, temperature = 20, saturation = 0.5} -> body id
 function S:add(o)
   if type(o) ~= "table" then error("s:add: expected a table", 2) end
   check_keys(o, { shape = true, material = true, ppc = true, velocity = true, jitter = true, temperature = true,
-    name = true, fixed = true }, "s:add")
+    name = true, fixed = true, saturation = true }, "s:add")
   if not is_shape(o.shape) then error("s:add: shape = h.box(...), h.disc(...), ... is required", 2) end
   if o.material == nil then error("s:add: material = h.material(...) is required", 2) end
   local ok, id = pcall(material_id, self, o.material)
@@ -321,7 +323,8 @@ function S:add(o)
   local jitter = check_number(o.jitter or 0.5, "s:add: jitter", 0, 1)
   local vel = check_vec(o.velocity or { 0, 0, 0 }, "s:add: velocity")
   if o.temperature ~= nil then check_number(o.temperature, "s:add: temperature", -273.15, 5000, "degC") end
-  local ok2, body = pcall(self._add, self, o.shape, id, math.floor(ppc), jitter, vel, o.temperature, o.fixed)
+  if o.saturation ~= nil then check_number(o.saturation, "s:add: saturation", 0, 1) end
+  local ok2, body = pcall(self._add, self, o.shape, id, math.floor(ppc), jitter, vel, o.temperature, o.fixed, o.saturation)
   if not ok2 then error(body, 2) end
   return body
 end
@@ -330,7 +333,8 @@ end
 function S:collider(o)
   if type(o) ~= "table" then error("s:collider: expected a table", 2) end
   check_keys(o, { shape = true, mode = true, friction = true, velocity = true, omega = true, pivot = true, name = true,
-    temperature = true, beta = true }, "s:collider")
+    temperature = true, beta = true, saturation = true }, "s:collider")
+  if o.saturation ~= nil then check_number(o.saturation, "s:collider: saturation", 0, 1) end
   if o.temperature ~= nil then check_number(o.temperature, "s:collider: temperature", -273.15, 5000, "degC") end
   if o.beta ~= nil then check_number(o.beta, "s:collider: beta", 0, 1e9, "W/(m^2 K)") end
   if not is_shape(o.shape) then error("s:collider: shape = h.plane(...), h.box(...), ... is required", 2) end
@@ -342,7 +346,7 @@ function S:collider(o)
   if w ~= nil and type(w) ~= "function" and type(w) ~= "number" then w = check_vec(w, "s:collider: omega") end
   local p = o.pivot and check_vec(o.pivot, "s:collider: pivot") or nil
   local ok, id = pcall(self._collider, self, o.shape, mode, fr, v, w, p, o.temperature,
-    o.temperature and (o.beta or 100) or 0)
+    o.temperature and (o.beta or 100) or 0, o.saturation)
   if not ok then error(id, 2) end
   return id
 end

@@ -149,11 +149,12 @@ typedef struct hearth_scene_def {
     double oven_temperature; ///< oven air temperature (degrees C) for the Robin boundary; NaN = no oven
     double oven_beta;        ///< oven air heat transfer coefficient beta (W/(m^2 K)), >= 0
     int heat_implicit;       ///< 0: forward Euler heat (dt limited by conduction); 1: backward Euler (CG solve)
+    int water_momentum;      ///< 1: the water's motion relative to the solid carries momentum (Ding et al. eq. 26-27)
 } hearth_scene_def;
 
 /// Defaults: 2D, dx 0.01, box [0,1]^3, gravity (0,-9.81,0), cfl 0.5, slip walls,
-/// no friction, guard stops, 8 rollbacks, energy growth 10, seed 1, no oven, explicit heat.
-/// An oven makes the temperature field live.
+/// no friction, guard stops, 8 rollbacks, energy growth 10, seed 1, no oven, explicit heat,
+/// no water momentum. An oven makes the temperature field live.
 hearth_scene_def hearth_default_scene_def(void);
 hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err);
 void hearth_scene_destroy(hearth_scene *s);
@@ -164,7 +165,10 @@ hearth_status hearth_scene_set_dt_limits(hearth_scene *s, double cfl, double dt_
 /// Add a material from a plugin with named parameters (others take defaults).
 /// Besides the plugin's own schema, every material accepts the core's field
 /// properties: conductivity (W/(m K)), specific_heat (J/(kg K)), expansion
-/// (c lambda, Pa/K) and reference_temperature (degrees C); see hearth_core_params.
+/// (c lambda, Pa/K), reference_temperature (degrees C), leavening and water
+/// properties; see hearth_core_params. A material with water_diffusivity,
+/// evaporation or water_stiffness > 0, or one whose plugin needs saturation,
+/// makes the water field live.
 /// Returns the material id (>= 0) or -1 with err filled: unknown names suggest
 /// the nearest valid name; out-of-range values give the range and unit.
 int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *const *names,
@@ -197,6 +201,7 @@ typedef struct hearth_collider_def {
     void *motion_ud;
     double temperature;        ///< a heated collider (pan, tray): its temperature (degrees C); NaN = not heated
     double beta;               ///< contact heat transfer coefficient (W/(m^2 K)) ("conductive theta, beta", Ding et al. Table 2)
+    double saturation;         ///< a wet collider (cloth, humid surface) holds the saturation of the particles touching it; NaN = dry
 } hearth_collider_def;
 
 hearth_collider_def hearth_default_collider_def(void);
@@ -238,6 +243,8 @@ typedef struct hearth_stats {
     double heat_energy;    ///< sum m alpha (theta + 273.15) over particles (J); 0 without temperature
     int cg_iterations;     ///< conjugate-gradient iterations of the last implicit heat solve
     double gas_moles;      ///< CO2 in the particles (mol, or mol/m in 2D); 0 without leavening
+    double water_mass;     ///< water in the particles (kg, or kg/m in 2D); 0 without water
+    double water_lost;     ///< water that left through the boundary so far (kg, or kg/m in 2D); negative if gained
 } hearth_stats;
 void hearth_scene_stats(const hearth_scene *s, hearth_stats *st);
 
@@ -251,10 +258,11 @@ typedef struct hearth_body_def {
     double jitter;             ///< 0..1 of the sub-cell, from the scene's seeded generator
     double velocity[3];        ///< m/s
     double temperature;        ///< initial temperature (degrees C); NaN = not set. Setting it makes the temperature field live.
+    double saturation;         ///< initial water saturation (0..1); NaN = the material's. Setting it makes the water field live.
     int fixed;                 ///< pinned: the particles never move (for tests of the fields alone)
 } hearth_body_def;
 
-/// ppc 4, jitter 0.5, at rest, temperature unset.
+/// ppc 4, jitter 0.5, at rest, temperature and saturation unset.
 hearth_body_def hearth_default_body_def(void);
 /// Seed a body. Returns its id (>= 0) or -1; a shape that holds no particle is an error.
 int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_error *err);

@@ -1,0 +1,395 @@
+/* water.c: water moving through the solid (Ding et al. 2019 §3.2, §5.5, §6.2).
+ *
+ *   q^w = -K theta rho^w grad s,  rho^w = rho_0^w s     (Fick's law, §3.2, eq. 8)
+ *   q^w . n = beta^w theta s on the air boundary        (evaporation, §3.2)
+ *   sigma^w = -c (s - s_0) I                            (water pressure, eq. 14)
+ *
+ * The diffusivity is D = K theta s: the equation is nonlinear in s.
+ * theta is absolute temperature (degrees C + 273.15), as in the gas law: in
+ * degrees C the diffusivity would vanish at the freezing point and change
+ * sign below it. Without a temperature field a material's
+ * reference_temperature stands in.
+ *
+ * Particles carry their water mass m_p^w (eq. 15) and the saturation is
+ * m_p^w / (rho_0^w J V_0): the water rides with the solid exactly, which is
+ * what the divergence term of eq. 25 approximates in the paper's Eulerian
+ * form, so that term is not needed here. Nodes get water mass and water
+ * capacity sum rho_0^w V_p w_ip (eq. 15, 18), hence saturation s_i. The flux
+ * is evaluated from the current node saturations (eq. 22) and gives the node
+ * mass change (eq. 25):
+ *
+ *   dm_i = dt sum_p V_p q_p . grad w_ip - dt sum_(p in boundary) beta theta_p s_p S_p w_ip.
+ *
+ * Since sum_i grad w_ip = 0 the flux term moves water without creating any;
+ * each node's change then goes to its particles in proportion to
+ * their water capacity (see gather_block), which also conserves exactly.
+ * Boundary particles and
+ * their areas S come from boundary.c (§6.6).
+ *
+ * Wet colliders hold the saturation of the grid nodes inside them or within
+ * dx/2 of their surface (a Dirichlet condition at the collider's surface): a wet cloth, or humid air
+ * in equilibrium. Water that flows into those nodes leaves into the collider;
+ * holding particles instead leaves a boundary layer that halves the exchange
+ * in the Crank sheet test, because eq. 19 hands most of a node's gain back to
+ * the free particles that share it.
+ *
+ * With the scene's water_momentum switch the water's motion relative to the
+ * solid carries momentum (eq. 26-27): the grid gets sum_p w_ip V_p dq_p with
+ * dq_p = q_p^(n-1) - q_p^n (the relative momentum handed back to the solid;
+ * lagged one step, since q^(n+1) is not known before the momentum update),
+ * and the convective stress -v^w (x) q^w (eq. 7). The solid's mass stays the
+ * material's density: the particle mass is the dough's, water included. */
+#include "water.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "error.h"
+#include "scene.h"
+#include "tensor.h"
+
+#define KELVIN 273.15
+
+int water_active(const hearth_scene *s) { return (s->ps.enabled & (1u << PC_WATER)) != 0; }
+
+int water_material_wants(const hearth_scene *s, int mat) {
+    const material_slot *ms = &s->mats[mat];
+    return ms->core[CP_WATER_DIFFUSIVITY] > 0 || ms->core[CP_EVAPORATION] > 0 || ms->core[CP_WATER_STIFFNESS] > 0 ||
+           (ms->m->needs & HEARTH_NEEDS_SATURATION);
+}
+
+static double capacity(const hearth_scene *s, int i) { /* rho_0^w J V_0: water mass at saturation 1 */
+    const particles *ps = &s->ps;
+    const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
+    return ms->core[CP_WATER_DENSITY] * t3_det(pcold(ps, PC_F) + 9 * i) * pcold(ps, PC_VOL0)[i];
+}
+
+double water_saturation(const hearth_scene *s, int i) { return pcold(&s->ps, PC_WATER)[i] / capacity(s, i); }
+
+void water_init_particles(hearth_scene *s, int from, int to, double sat) {
+    particles *ps = &s->ps;
+    for (int i = from; i < to; i++) {
+        const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
+        double s0 = isnan(sat) ? ms->core[CP_SATURATION0] : sat;
+        if (s0 < WATER_SATURATION_FLOOR) s0 = WATER_SATURATION_FLOOR;
+        pcold(ps, PC_SAT0)[i] = s0;
+        pcold(ps, PC_WATER)[i] = s0 * capacity(s, i);
+        memset(pcold(ps, PC_QW) + 3 * i, 0, 3 * sizeof(double));
+    }
+    s->water_limits_valid = 0;
+}
+
+hearth_status water_enable(hearth_scene *s, hearth_error *err) {
+    particles *ps = &s->ps;
+    if (water_active(s)) return HEARTH_OK;
+    hearth_status st = particles_enable(ps, PC_WATER, err);
+    if (!st) st = particles_enable(ps, PC_SAT0, err);
+    if (!st) st = particles_enable(ps, PC_QW, err);
+    if (!st) st = particles_enable(ps, PC_FLAGS, err); /* boundary particles */
+    if (st) return st;
+    water_init_particles(s, 0, ps->n, NAN);
+    return HEARTH_OK;
+}
+
+static double theta_abs(const hearth_scene *s, const double *T, int i, const material_slot *ms) {
+    (void)s;
+    return (T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN;
+}
+
+/* The largest diffusivity K theta s and evaporation rate beta theta / rho_0 over the particles. */
+static void scan_limits(const hearth_scene *s, double *dmax, double *emax) {
+    const particles *ps = &s->ps;
+    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    double d = 0, e = 0;
+    for (int i = 0; i < ps->n; i++) {
+        const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
+        const double th = theta_abs(s, T, i, ms);
+        const double di = ms->core[CP_WATER_DIFFUSIVITY] * th * water_saturation(s, i);
+        const double ei = ms->core[CP_EVAPORATION] * th / ms->core[CP_WATER_DENSITY];
+        if (di > d) d = di;
+        if (ei > e) e = ei;
+    }
+    *dmax = d;
+    *emax = e;
+}
+
+double water_dt_limit(const hearth_scene *s) {
+    if (!water_active(s)) return INFINITY;
+    double d = s->water_dmax, e = s->water_emax;
+    if (!s->water_limits_valid) scan_limits(s, &d, &e);
+    const double dx = s->def.dx;
+    double dt = INFINITY;
+    /* forward Euler on the B-spline Laplacian, as for heat: dx^2 / (2 dim D) */
+    if (d > 0) dt = dx * dx / (2.0 * s->def.dim * d);
+    /* a boundary cell's water rho_0 s dx^dim against its loss beta theta s dx^(dim-1) */
+    if (e > 0) dt = fmin(dt, dx / (2.0 * e));
+    return dt;
+}
+
+double water_total(const hearth_scene *s) {
+    if (!water_active(s)) return 0;
+    double m = 0;
+    const double *W = pcold(&s->ps, PC_WATER);
+    for (int i = 0; i < s->ps.n; i++) m += W[i];
+    return m;
+}
+
+/* ---- per-particle stencils --------------------------------------------- */
+
+typedef struct wstencil {
+    int t[27];                   /* tile index of each node */
+    double w[27], gw[27][3];     /* weight and gradient */
+    int n;
+} wstencil;
+
+/* Stencil of particle x in the tile of block origin bc (the block and its +1
+ * neighbours, GRID_T nodes per axis). */
+static void stencil_in_tile(const grid *g, const int bc[3], const double *x, wstencil *st) {
+    const int D = g->dim;
+    int base[3] = {0, 0, 0};
+    double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
+    for (int d = 0; d < D; d++) {
+        const double X = (x[d] - g->lo[d]) * g->inv_dx;
+        const int b = (int)floor(X - 0.5);
+        bspline_weights(X - b, w[d], dw[d]);
+        base[d] = b - bc[d] * GRID_B;
+    }
+    st->n = 0;
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+            for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                const int k = st->n++;
+                const double wc = D == 3 ? w[2][c] : 1.0;
+                st->t[k] = D == 2 ? (base[0] + a) * GRID_T + base[1] + b
+                                  : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
+                st->w[k] = w[0][a] * w[1][b] * wc;
+                st->gw[k][0] = dw[0][a] * w[1][b] * wc * g->inv_dx;
+                st->gw[k][1] = w[0][a] * dw[1][b] * wc * g->inv_dx;
+                st->gw[k][2] = D == 3 ? w[0][a] * w[1][b] * dw[2][c] * g->inv_dx : 0.0;
+            }
+}
+
+static double *tile_node(const grid *g, const int bc[3], int t, int *l) {
+    const int D = g->dim;
+    int a, b, c = 0;
+    if (D == 2) {
+        a = t / GRID_T;
+        b = t % GRID_T;
+    } else {
+        a = t / (GRID_T * GRID_T);
+        b = (t / GRID_T) % GRID_T;
+        c = t % GRID_T;
+    }
+    const int blk = grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0));
+    *l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
+    return grid_block(g, g->slot[blk]);
+}
+
+static int tile_count(const grid *g) { return g->dim == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T; }
+
+/* ---- the passes -------------------------------------------------------- */
+
+/* Water mass and capacity to the nodes (eq. 15, 18). */
+static void scatter_block(hearth_scene *s, int q, double *tile) {
+    grid *g = &s->g;
+    const particles *ps = &s->ps;
+    const int TN = tile_count(g), NPB = g->nodes_per_block;
+    const pblock pb = s->pb[s->colour_pb[q]];
+    int bc[3];
+    grid_block_coords(g, pb.block, bc);
+    memset(tile, 0, sizeof(double) * 2 * (size_t)TN);
+    const double *X = pcold(ps, PC_X), *W = pcold(ps, PC_WATER);
+    wstencil st;
+    for (int i = pb.start; i < pb.end; i++) {
+        stencil_in_tile(g, bc, X + 3 * i, &st);
+        const double cap = capacity(s, i);
+        for (int k = 0; k < st.n; k++) {
+            tile[st.t[k]] += st.w[k] * W[i];
+            tile[TN + st.t[k]] += st.w[k] * cap;
+        }
+    }
+    for (int t = 0; t < TN; t++) {
+        if (tile[TN + t] == 0.0) continue;
+        int l;
+        double *node = tile_node(g, bc, t, &l);
+        node[CH_MW * NPB + l] += tile[t];
+        node[CH_SW * NPB + l] += tile[TN + t];
+    }
+}
+
+/* Fick flux (eq. 22) and evaporation into the node mass change (eq. 25), and
+ * with water_momentum the relative water momentum (eq. 26-27). */
+static void flux_block(hearth_scene *s, int q, double dt, double *tile) {
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const int D = g->dim, TN = tile_count(g), NPB = g->nodes_per_block, mom = s->def.water_momentum;
+    const pblock pb = s->pb[s->colour_pb[q]];
+    int bc[3];
+    grid_block_coords(g, pb.block, bc);
+    double *sat = tile, *dm = tile + TN, *dp = tile + 2 * TN; /* dp: 3 momentum components */
+    for (int t = 0; t < TN; t++) {
+        int l;
+        const double *node = tile_node(g, bc, t, &l);
+        sat[t] = node[CH_SW * NPB + l];
+    }
+    memset(dm, 0, sizeof(double) * (size_t)TN * (mom ? 4 : 1));
+    const double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *W = pcold(ps, PC_WATER), *V0 = pcold(ps, PC_VOL0),
+                 *Fc = pcold(ps, PC_F);
+    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    const double *area = s->bnd_area;
+    double *Q = pcold(ps, PC_QW);
+    const int *mat = pcoli(ps, PC_MAT);
+    wstencil st;
+    for (int i = pb.start; i < pb.end; i++) {
+        stencil_in_tile(g, bc, X + 3 * i, &st);
+        const material_slot *ms = &s->mats[mat[i]];
+        const double rho0 = ms->core[CP_WATER_DENSITY], Vp = V0[i] * t3_det(Fc + 9 * i);
+        const double sp = W[i] / (rho0 * Vp), th = theta_abs(s, T, i, ms);
+        double gs[3] = {0, 0, 0}, si = 0;
+        for (int k = 0; k < st.n; k++) {
+            si += sat[st.t[k]] * st.w[k];
+            for (int d = 0; d < 3; d++) gs[d] += sat[st.t[k]] * st.gw[k][d];
+        }
+        const double kq = -ms->core[CP_WATER_DIFFUSIVITY] * th * rho0 * sp; /* eq. 22 */
+        const double qn[3] = {kq * gs[0], kq * gs[1], kq * gs[2]};
+        /* evaporation from the saturation the grid sees at the particle, as the heat
+         * Robin term uses the interpolated temperature */
+        const double evap = area && area[i] > 0 ? ms->core[CP_EVAPORATION] * th * si * area[i] : 0.0; /* kg/s */
+        for (int k = 0; k < st.n; k++)
+            dm[st.t[k]] += dt * (Vp * (qn[0] * st.gw[k][0] + qn[1] * st.gw[k][1] + qn[2] * st.gw[k][2]) - st.w[k] * evap);
+        if (mom) {
+            /* v^w = v^s + q^w / rho^w; the grid takes w V dq + dt V (v^w (x) q^w) grad w */
+            double vw[3], dq[3];
+            for (int d = 0; d < 3; d++) {
+                vw[d] = V[3 * i + d] + qn[d] / (rho0 * sp);
+                dq[d] = Q[3 * i + d] - qn[d];
+            }
+            for (int k = 0; k < st.n; k++) {
+                const double qg = qn[0] * st.gw[k][0] + qn[1] * st.gw[k][1] + qn[2] * st.gw[k][2];
+                for (int d = 0; d < D; d++) dp[d * TN + st.t[k]] += Vp * (st.w[k] * dq[d] + dt * vw[d] * qg);
+            }
+        }
+        memcpy(Q + 3 * i, qn, sizeof qn);
+    }
+    for (int t = 0; t < TN; t++) {
+        int l;
+        double *node = tile_node(g, bc, t, &l);
+        node[CH_DMW * NPB + l] += dm[t];
+        if (mom)
+            for (int d = 0; d < D; d++) node[(CH_PX + d) * NPB + l] += dp[d * TN + t];
+    }
+}
+
+/* Each particle takes its nodes' change of saturation (FLIP, as temperature
+ * in eq. 21), dm_p = rho_0 V_p sum_i w_ip ds_i, which hands out exactly each
+ * node's dm_i since V_i = sum_p V_p w_ip. Eq. 19 shares dm_i in proportion to
+ * the particles' water instead; next to a dry region that multiplies a wet
+ * particle's gain by s_p / s_i and pushed saturation past its largest initial
+ * value (0.94 from 0.9 in water_conservation). Then the floor applies. Returns through the block's partial: water removed and
+ * the largest diffusivity and evaporation rate. */
+static void gather_block(hearth_scene *s, int k) {
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const int NPB = g->nodes_per_block;
+    const pblock pb = s->pb[k];
+    pb_partial *pp = &s->partial[k];
+    int bc[3];
+    grid_block_coords(g, pb.block, bc);
+    const int TN = tile_count(g);
+    double ratio[GRID_T * GRID_T * GRID_T];
+    for (int t = 0; t < TN; t++) { /* the change of node saturation, ds_i = dm_i / (rho_0 V_i) */
+        int l;
+        const double *node = tile_node(g, bc, t, &l);
+        const double c = node[CH_MW * NPB + l];
+        ratio[t] = c > 0 ? node[CH_DMW * NPB + l] / c : 0.0;
+    }
+    const double *X = pcold(ps, PC_X);
+    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    double *W = pcold(ps, PC_WATER);
+    const int *mat = pcoli(ps, PC_MAT);
+    double removed = 0, dmax = 0, emax = 0;
+    wstencil st;
+    for (int i = pb.start; i < pb.end; i++) {
+        stencil_in_tile(g, bc, X + 3 * i, &st);
+        double r = 0;
+        for (int q = 0; q < st.n; q++) r += st.w[q] * ratio[st.t[q]];
+        const double cap = capacity(s, i), before = W[i];
+        double m = before + cap * r;
+        if (m < WATER_SATURATION_FLOOR * cap) m = WATER_SATURATION_FLOOR * cap;
+        W[i] = m;
+        removed += before - m;
+        const material_slot *ms = &s->mats[mat[i]];
+        const double th = theta_abs(s, T, i, ms);
+        dmax = fmax(dmax, ms->core[CP_WATER_DIFFUSIVITY] * th * m / cap);
+        emax = fmax(emax, ms->core[CP_EVAPORATION] * th / ms->core[CP_WATER_DENSITY]);
+    }
+    pp->water_removed = removed;
+    pp->water_dmax = dmax;
+    pp->water_emax = emax;
+}
+
+void water_update(hearth_scene *s, double dt) {
+    grid *g = &s->g;
+    const int NPB = g->nodes_per_block;
+    const int par = s->ps.n >= SCENE_PARALLEL_MIN;
+    for (int col = 0; col < 8; col++) {
+#pragma omp parallel if (par)
+        {
+            double tile[2 * GRID_T * GRID_T * GRID_T];
+#pragma omp for schedule(dynamic, 2)
+            for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) scatter_block(s, q, tile);
+        }
+    }
+    int wet = 0;
+    for (int c = 0; c < s->ncol; c++) wet |= !isnan(s->cols[c].saturation);
+#pragma omp parallel for schedule(static) if (par)
+    for (int k = 0; k < g->nactive; k++) { /* node saturation s_i = m_i^w / (rho_0^w V_i) */
+        double *node = grid_block(g, k);
+        int bc[3];
+        grid_block_coords(g, g->active[k], bc);
+        for (int l = 0; l < NPB; l++) {
+            const double c = node[CH_SW * NPB + l];
+            if (!(c > 0)) {
+                node[CH_SW * NPB + l] = 0.0;
+                continue;
+            }
+            node[CH_SW * NPB + l] = node[CH_MW * NPB + l] / c;
+            node[CH_MW * NPB + l] = c; /* from here on CH_MW is the capacity, for eq. 19 */
+            if (!wet) continue;
+            /* a node inside a wet collider holds its saturation; water reaching it goes
+             * into the collider (its mass is zeroed so eq. 19 hands none of it back) */
+            int gi[3];
+            grid_node_index(g, bc, l, gi);
+            double xi[3] = {0, 0, 0};
+            for (int d = 0; d < g->dim; d++) xi[d] = g->lo[d] + gi[d] * g->dx;
+            for (int q = 0; q < s->ncol; q++) {
+                const collider *col = &s->cols[q];
+                /* nodes inside, and the node layer nearest the surface: the held value sits on the surface to within dx/2 */
+                if (isnan(col->saturation) || !collider_near(col, xi) || collider_sdf(col, xi, NULL) >= 0.5 * g->dx) continue;
+                node[CH_SW * NPB + l] = col->saturation;
+                node[CH_MW * NPB + l] = 0.0; /* no capacity: nothing is handed back */
+            }
+        }
+    }
+    for (int col = 0; col < 8; col++) {
+#pragma omp parallel if (par)
+        {
+            double tile[5 * GRID_T * GRID_T * GRID_T];
+#pragma omp for schedule(dynamic, 2)
+            for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) flux_block(s, q, dt, tile);
+        }
+    }
+#pragma omp parallel for schedule(dynamic, 2) if (par)
+    for (int k = 0; k < s->npb; k++) gather_block(s, k);
+    /* reduce in block order: the same sums on any thread count */
+    double removed = 0, dmax = 0, emax = 0;
+    for (int k = 0; k < s->npb; k++) {
+        removed += s->partial[k].water_removed;
+        dmax = fmax(dmax, s->partial[k].water_dmax);
+        emax = fmax(emax, s->partial[k].water_emax);
+    }
+    s->water_step_removed = removed;
+    s->water_dmax = dmax;
+    s->water_emax = emax;
+    s->water_limits_valid = 1;
+}
