@@ -185,7 +185,8 @@ most 1.5 sqrt(v0^2 + 2 g H) + 1 m/s, H = 1 m), or the guard stops it within
 inverted F, plugin error). A crash, a hang ({timeout:g} s per cell), a silent
 NaN, a late stop or a wrong cause fails. A cell whose failure is understood but
 not yet fixed is listed as XFAIL with the reason (test `extremes_known_issues`
-reports them as expected failures).
+reports them as expected failures). `steps` counts the steps that stood (a
+stop at step 1 shows 0).
 """
 
 
