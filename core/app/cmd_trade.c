@@ -21,6 +21,7 @@
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <fcntl.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "atomic_file.h"
@@ -356,6 +357,12 @@ static void read_failure(const char *log, char *msg, size_t n) {
     fclose(f);
 }
 
+static volatile sig_atomic_t interrupted;
+static void on_signal(int sig) {
+    (void)sig;
+    interrupted = 1;
+}
+
 static void finish_run(trade *T, int i, int wstatus, const struct rusage *ru) {
     trade_run *r = &T->r[i];
     r->wall = progress_wall() - r->t0;
@@ -374,7 +381,10 @@ static void finish_run(trade *T, int i, int wstatus, const struct rusage *ru) {
         fclose(f);
     }
     snprintf(path, sizeof path, "%s/log.txt", dir);
-    if (WIFSIGNALED(wstatus)) {
+    if (WIFSIGNALED(wstatus) && interrupted) {
+        r->st = RS_ERROR;
+        snprintf(r->msg, sizeof r->msg, "stopped: hearth trade was interrupted");
+    } else if (WIFSIGNALED(wstatus)) {
         r->st = RS_CRASH;
         snprintf(r->msg, sizeof r->msg, "killed by signal %d (%s); see %.150s", WTERMSIG(wstatus), strsignal(WTERMSIG(wstatus)), path);
     } else if (WEXITSTATUS(wstatus) == 0 && isfinite(r->metric)) r->st = RS_OK;
@@ -385,15 +395,11 @@ static void finish_run(trade *T, int i, int wstatus, const struct rusage *ru) {
     }
 }
 
-static volatile sig_atomic_t interrupted;
-static void on_signal(int sig) {
-    (void)sig;
-    interrupted = 1;
-}
 
 static int run_all(trade *T) {
-    int next = 0, running = 0, done = 0;
+    int next = 0, running = 0, done = 0, killed = 0;
     const double t0 = progress_wall();
+    double last_beat = t0;
     struct sigaction sa, old_int, old_term;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_signal;
@@ -411,15 +417,31 @@ static int run_all(trade *T) {
         if (!running) break;
         int ws;
         struct rusage ru;
-        pid_t pid = wait4(-1, &ws, 0, &ru);
-        if (pid < 0) {
-            if (errno == EINTR) {
+        pid_t pid = wait4(-1, &ws, WNOHANG, &ru);
+        if (pid < 0 && errno != EINTR) break;
+        if (pid <= 0) { /* nothing ended yet: poll, and say what is running now and then */
+            if (interrupted && !killed) {
                 for (int i = 0; i < T->nr; i++)
                     if (T->r[i].st == RS_RUNNING) kill(T->r[i].pid, SIGTERM);
-                continue;
+                killed = 1;
             }
-            break;
+            const struct timespec nap = {0, 100000000};
+            nanosleep(&nap, NULL);
+            const double now = progress_wall();
+            if (!T->quiet && now - last_beat >= 15) {
+                last_beat = now;
+                fprintf(stderr, "trade: %d/%d done, running:", done, T->nr);
+                for (int i = 0; i < T->nr; i++)
+                    if (T->r[i].st == RS_RUNNING) {
+                        char lab[512];
+                        run_label(T, &T->r[i], 0, lab, sizeof lab);
+                        fprintf(stderr, " [%s for %.0f s]", lab, now - T->r[i].t0);
+                    }
+                fprintf(stderr, "  (elapsed %.0f s)\n", now - t0);
+            }
+            continue;
         }
+        last_beat = progress_wall();
         for (int i = 0; i < T->nr; i++) {
             if (T->r[i].st != RS_RUNNING || T->r[i].pid != pid) continue;
             finish_run(T, i, ws, &ru);
