@@ -714,13 +714,6 @@ static int write_plot(const trade *T, const char *path) {
 }
 
 static void print_table(const trade *T) {
-    int w = 8;
-    for (int j = 0; j < T->nk; j++) {
-        int l = (int)strlen(T->k[j].name);
-        for (int i = 0; i < T->k[j].n; i++) l = (int)strlen(T->k[j].v[i]) > l ? (int)strlen(T->k[j].v[i]) : l;
-        (void)l;
-    }
-    (void)w;
     printf("%4s", "run");
     for (int j = 0; j < T->nk; j++) printf("  %10s", T->k[j].name);
     printf("  %6s %9s %8s %8s %14s %10s %7s  %s\n", "status", "wall [s]", "steps", "peak MB", T->metric, "rel error", "order",
@@ -780,7 +773,7 @@ int cmd_trade(int argc, char **argv) {
     print_table(&T);
     int failed = 0;
     for (int i = 0; i < T.nr; i++) failed += T.r[i].st != RS_OK;
-    printf("\nwrote %s and %s%s\n", csv, png, failed ? "" : "");
+    printf("\nwrote %s and %s\n", csv, png);
     if (failed) printf("%d of %d runs did not finish (see the status column and runs/NNN/log.txt)\n", failed, T.nr);
     free(T.r);
     return rc || failed ? 1 : 0;
