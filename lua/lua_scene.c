@@ -463,6 +463,24 @@ static int l_body_particles(lua_State *L) {
     return 1;
 }
 
+/* s:positions() -> flat array {x1, y1, z1, x2, ...} (for metrics and scripts) */
+static int l_positions(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const int n = hearth_scene_particle_count(u->s);
+    const double *x = hearth_scene_positions(u->s);
+    lua_createtable(L, 3 * n, 0);
+    for (int i = 0; i < 3 * n; i++) {
+        lua_pushnumber(L, x[i]);
+        lua_seti(L, -2, i + 1);
+    }
+    return 1;
+}
+
+static int l_volume(lua_State *L) {
+    lua_pushnumber(L, hearth_scene_volume(hl_checkscene(L, 1)->s));
+    return 1;
+}
+
 static int l_hash(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     char buf[32];
@@ -496,7 +514,8 @@ void hl_open_scene(lua_State *L) {
         {"_collider", l_collider}, {"_advance", l_advance}, {"_step", l_step_raw},     {"push", l_push},
         {"cut", l_cut},          {"move", l_move},         {"collider_velocity", l_collider_velocity},
         {"set_dt", l_set_dt},    {"probe", l_probe},       {"line", l_line},          {"_slice", l_slice},
-        {"stats", l_stats},      {"body_particles", l_body_particles}, {"hash", l_hash}, {NULL, NULL}};
+        {"stats", l_stats},      {"body_particles", l_body_particles}, {"hash", l_hash},
+        {"positions", l_positions}, {"volume", l_volume}, {NULL, NULL}};
     luaL_newmetatable(L, HL_SCENE);
     lua_pushcfunction(L, l_gc);
     lua_setfield(L, -2, "__gc");

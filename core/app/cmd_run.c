@@ -1,6 +1,7 @@
 /* cmd_run.c: `hearth run SCENE.lua` (headless, progress bar, outputs) and
  * `hearth repl [SCENE.lua]` (a plain Lua prompt; lines from a pipe run too). */
 #include <errno.h>
+#include <math.h>
 #include <lauxlib.h>
 #include <lua.h>
 #include <lualib.h>
@@ -21,6 +22,7 @@ typedef struct run_args {
     double until;
     long frames;
     int quiet, trust;
+    const char *metric, *metric_out; /* --metric NAME [--metric-out FILE] (used by hearth trade) */
     const char *sets[65];
     int nsets;
     char out_buf[4096], dir_buf[4096];
@@ -39,6 +41,9 @@ static void run_usage(FILE *f, const char *cmd) {
                    "  --set k=v    override a parameter the scene declares with h.params{...}\n"
                    "  --threads N  OpenMP threads (results do not depend on it)\n"
                    "  --quiet      no progress output\n"
+                   "  --metric M   at the end print metric M (h.metric or built-in: height, spread,\n"
+                   "               centre_temperature, front, volume, water_lost)\n"
+                   "  --metric-out FILE  also write it with steps and wall time to FILE (for hearth trade)\n"
                    "  --trust      lift the sandbox (os.execute, io.popen, writes outside DIR, C modules)\n"
                    "Exit status: 0 done, 1 scene error, 2 bad usage, 3 the stability guard stopped the run.\n");
 }
@@ -55,7 +60,7 @@ static int parse(run_args *a, int argc, char **argv, const char *cmd) {
         if (!strcmp(s, "--quiet")) { a->quiet = 1; continue; }
         if (!strcmp(s, "--trust")) { a->trust = 1; continue; }
         if (s[0] == '-' && s[1] == '-') {
-            static const char *const valued[] = {"--out", "--until", "--frames", "--threads", "--set", NULL};
+            static const char *const valued[] = {"--out", "--until", "--frames", "--threads", "--set", "--metric", "--metric-out", NULL};
             int known = 0;
             for (int k = 0; valued[k]; k++) known |= !strcmp(s, valued[k]);
             if (!known) {
@@ -68,6 +73,8 @@ static int parse(run_args *a, int argc, char **argv, const char *cmd) {
             }
             const char *v = argv[++i];
             if (!strcmp(s, "--out")) a->out = v;
+            else if (!strcmp(s, "--metric")) a->metric = v;
+            else if (!strcmp(s, "--metric-out")) a->metric_out = v;
             else if (!strcmp(s, "--until")) {
                 char *end;
                 a->until = strtod(v, &end);
@@ -170,6 +177,55 @@ static lua_State *start(run_args *a, progress *pr, const char *cmd) {
     return L;
 }
 
+/* Evaluate --metric on the scene the file built and print it; with
+ * --metric-out also write "key value" lines (status, metric, steps, t,
+ * particles, rollbacks, message) for hearth trade. status is the run's
+ * status so far; returns the final one. */
+static int metric_report(lua_State *L, const run_args *a, int status) {
+    double value = NAN, t = NAN;
+    long steps = -1, rollbacks = 0, particles = 0;
+    char msg[1200] = "";
+    if (status == 0) {
+        lua_getglobal(L, "require");
+        lua_pushliteral(L, "hearth");
+        if (hl_pcall(L, 1, 1) == LUA_OK) {
+            lua_getfield(L, -1, "_metric");
+            lua_pushstring(L, a->metric);
+            if (hl_pcall(L, 1, 2) != LUA_OK) {
+                snprintf(msg, sizeof msg, "%s", lua_tostring(L, -1));
+                lua_pop(L, 1);
+                fprintf(stderr, "hearth run: %s\n", msg);
+                status = 1;
+            } else {
+                value = lua_tonumber(L, -2);
+                lua_getfield(L, -1, "step"), steps = (long)lua_tointeger(L, -1), lua_pop(L, 1);
+                lua_getfield(L, -1, "t"), t = lua_tonumber(L, -1), lua_pop(L, 1);
+                lua_getfield(L, -1, "rollbacks"), rollbacks = (long)lua_tointeger(L, -1), lua_pop(L, 1);
+                lua_getfield(L, -1, "particles"), particles = (long)lua_tointeger(L, -1), lua_pop(L, 1);
+                lua_pop(L, 2);
+                printf("metric %s = %.10g\n", a->metric, value);
+            }
+            lua_pop(L, 1);
+        }
+    }
+    if (!a->metric_out) return status;
+    char tmp[4200];
+    snprintf(tmp, sizeof tmp, "%s.tmp", a->metric_out);
+    FILE *f = fopen(tmp, "w");
+    if (!f) {
+        fprintf(stderr, "hearth run: cannot write %s: %s\n", tmp, strerror(errno));
+        return status ? status : 1;
+    }
+    fprintf(f, "status %d\nmetric %.17g\nsteps %ld\nt %.17g\nparticles %ld\nrollbacks %ld\n", status, value, steps, t,
+            particles, rollbacks);
+    if (msg[0]) fprintf(f, "message %s\n", msg);
+    if (fclose(f) || rename(tmp, a->metric_out)) {
+        fprintf(stderr, "hearth run: cannot write %s: %s\n", a->metric_out, strerror(errno));
+        return status ? status : 1;
+    }
+    return status;
+}
+
 int cmd_run(int argc, char **argv) {
     run_args a;
     int rc = parse(&a, argc, argv, "run");
@@ -190,6 +246,7 @@ int cmd_run(int argc, char **argv) {
             lua_pop(L, 1);
         }
     }
+    if (a.metric) status = metric_report(L, &a, status);
     if (status == 0 && !a.quiet) fprintf(stderr, "hearth run: done; outputs in %s/\n", a.out);
     lua_close(L);
     return status;

@@ -12,6 +12,7 @@ int cmd_run(int argc, char **argv);
 int cmd_repl(int argc, char **argv);
 int cmd_rheometer(int argc, char **argv);
 int cmd_fit(int argc, char **argv);
+int cmd_trade(int argc, char **argv);
 
 /* shared by the rheometer and fit commands (cmd_rheometer.c) */
 int app_flow_plot(const char *path, const char *title, const double *x, const double *y, int n, const char *data_label,

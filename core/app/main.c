@@ -24,6 +24,8 @@ static void usage(FILE *f) {
             "                                flow curve of a material or library sauce in a virtual rheometer\n"
             "  hearth fit FLOWCURVE.csv [--json] [--out DIR]\n"
             "                                fit sigma = sigma_y + eta rate^h (relative error, Nagasawa et al. eq. 2)\n"
+            "  hearth trade SCENE.lua --metric NAME [--knob name=v1,v2,...]... [--reference finest|analytic:EXPR] [--out DIR] [--jobs N]\n"
+            "                                run a scene over a ladder of settings: cost, error and order of each\n"
             "  hearth bench [--threads N] [--cells N] [--steps N] [--dim 2|3]\n"
             "                                throughput of a standard elastic block, as JSON\n"
             "  hearth --help | --version\n"
@@ -76,6 +78,7 @@ int main(int argc, char **argv) {
     if (!strcmp(c, "repl")) return cmd_repl(argc - 1, argv + 1);
     if (!strcmp(c, "rheometer")) return cmd_rheometer(argc - 1, argv + 1);
     if (!strcmp(c, "fit")) return cmd_fit(argc - 1, argv + 1);
+    if (!strcmp(c, "trade")) return cmd_trade(argc - 1, argv + 1);
     /* `hearth SCENE.lua` will open the dashboard; until it exists it runs the scene headless */
     if (strlen(c) > 4 && !strcmp(c + strlen(c) - 4, ".lua")) return cmd_run(argc, argv);
     fprintf(stderr, "hearth: unknown command '%s'\n\n", c);

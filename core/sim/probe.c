@@ -292,3 +292,10 @@ hearth_status hearth_probe_slice(const hearth_scene *s, const char *field, int a
     L.ea[v] = (hi[v] - lo[v]) / h;
     return splat(s, f, &L, out, err);
 }
+
+double hearth_scene_volume(const hearth_scene *s) {
+    const particles *ps = &s->ps;
+    double v = 0;
+    for (int i = 0; i < ps->n; i++) v += pcold(ps, PC_VOL0)[i] * t3_det(pcold(ps, PC_F) + 9 * i);
+    return v;
+}

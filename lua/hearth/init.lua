@@ -84,6 +84,26 @@ end
 
 local function is_shape(v) return type(v) == "userdata" and tostring(v):sub(1, 12) == "hearth.shape" end
 
+--- Scene settings `--set` may override when the scene's h.params does not
+--- declare the name itself (so `hearth trade --knob dx=...` works on any scene):
+--- the h.scene keys below, and ppc (every s:add), transfer and blend (h.mix).
+local scene_knobs = { dx = true, cfl = true, dt_max = true, dim = true, heat = true, solver = true, guard = true,
+  max_rollbacks = true, ppc = true, transfer = true, blend = true }
+h._scene_knobs = scene_knobs
+
+-- The --set values meant for scene settings (not declared by h.params), as strings.
+local function knob_sets()
+  local k = {}
+  for name, v in pairs(core.options().sets) do
+    if scene_knobs[name] and not (h._param_names and h._param_names[name]) then k[name] = v end
+  end
+  return k
+end
+
+local function knob_number(name, v, level)
+  return tonumber(v) or error(("--set %s=%s: expected a number"):format(name, v), level or 3)
+end
+
 h._check = { keys = check_keys, number = check_number, choice = check_choice, vec = check_vec }
 
 -- ---- curves and materials -------------------------------------------------
@@ -194,6 +214,18 @@ h.library.sauce = setmetatable({}, sauce_mt)
 function h.mix(t)
   if type(t) ~= "table" or #t < 1 then error("h.mix: expected { {params, ratio}, ... }", 2) end
   local plugin = t.plugin or "von_mises_sauce"
+  local mode = t.blend or knob_sets().blend or "nonlinear"
+  check_choice(mode, "h.mix: blend", { "nonlinear", "linear" })
+  if mode == "linear" then -- the naive rule the plugin's blend improves on: weighted means of the parameters
+    local out = {}
+    for i, c in ipairs(t) do
+      if type(c) ~= "table" or type(c[1]) ~= "table" or type(c[2]) ~= "number" then
+        error(("h.mix: entry %d must be {params, ratio}"):format(i), 2)
+      end
+      for k, v in pairs(c[1]) do out[k] = (out[k] or 0) + c[2] * v end
+    end
+    return out
+  end
   local sets, weights = {}, {}
   for i, c in ipairs(t) do
     if type(c) ~= "table" or type(c[1]) ~= "table" or type(c[2]) ~= "number" then
@@ -212,10 +244,12 @@ end
 function h.params(defaults)
   if type(defaults) ~= "table" then error("h.params: expected a table of name = default", 2) end
   local P = {}
-  for k, v in pairs(defaults) do P[k] = v end
+  h._param_names = {}
+  for k, v in pairs(defaults) do P[k], h._param_names[k] = v, true end
   for k, v in pairs(core.options().sets) do
     local d = defaults[k]
-    if d == nil then
+    if d == nil and scene_knobs[k] then -- a scene setting, applied by h.scene / s:add / h.mix
+    elseif d == nil then
       error(("--set %s: this scene has no parameter '%s'; valid names: %s"):format(k, k,
         table.concat(sorted_keys(defaults), ", ")), 2)
     end
@@ -244,10 +278,32 @@ local contact = { "sticky", "slip", "separate" }
 function h.scene(o)
   o = o or {}
   if type(o) ~= "table" then error("h.scene: expected a table", 2) end
-  if next(core.options().sets) and not h._params_declared then
-    error("--set: this scene declares no parameters with h.params{...} before h.scene; there is nothing to set", 2)
+  for k in pairs(core.options().sets) do
+    if not h._params_declared and not scene_knobs[k] then
+      error(("--set %s: this scene declares no parameters with h.params{...} before h.scene; scene settings that --set may change: %s")
+        :format(k, table.concat(sorted_keys(scene_knobs), ", ")), 2)
+    end
   end
   check_keys(o, scene_keys, "h.scene")
+  local ks = knob_sets()
+  if next(ks) then -- --set dx=... and friends replace what the scene file says
+    local oo = {}
+    for k, v in pairs(o) do oo[k] = v end
+    for _, k in ipairs { "dx", "cfl", "dt_max", "dim", "max_rollbacks" } do
+      if ks[k] then oo[k] = knob_number(k, ks[k]) end
+    end
+    for _, k in ipairs { "heat", "solver", "guard" } do
+      if ks[k] then oo[k] = ks[k] end
+    end
+    if ks.transfer and ks.transfer:lower() ~= "apic" then
+      error(("--set transfer=%s: not built yet; the MPM core transfers momentum with APIC and heat with FLIP only"):format(
+        ks.transfer), 2)
+    end
+    if oo.dim == 3 and oo.box and not ((oo.box[2][3] or 0) > (oo.box[1][3] or 0)) then
+      error("--set dim=3: this scene's box has no z extent, so it cannot run in 3D", 2)
+    end
+    o = oo
+  end
   local dim = o.dim or 2
   if dim ~= 2 and dim ~= 3 then error(("h.scene: dim = %s; valid: 2, 3"):format(tostring(dim)), 2) end
   if o.solver and o.solver ~= "mpm" then
@@ -319,7 +375,8 @@ function S:add(o)
   if o.material == nil then error("s:add: material = h.material(...) is required", 2) end
   local ok, id = pcall(material_id, self, o.material)
   if not ok then error(id, 2) end
-  local ppc = check_number(o.ppc or 4, "s:add: ppc", 1, 1000, "particles per cell")
+  local kppc = knob_sets().ppc
+  local ppc = check_number(kppc and knob_number("ppc", kppc) or o.ppc or 4, "s:add: ppc", 1, 1000, "particles per cell")
   local jitter = check_number(o.jitter or 0.5, "s:add: jitter", 0, 1)
   local vel = check_vec(o.velocity or { 0, 0, 0 }, "s:add: velocity")
   if o.temperature ~= nil then check_number(o.temperature, "s:add: temperature", -273.15, 5000, "degC") end
@@ -492,9 +549,10 @@ end
 -- Called by `hearth run` after the scene file: checks --set use, and runs a
 -- scene the file built but did not run.
 function h._finish()
-  local sets = core.options().sets
-  if next(sets) and not h._params_declared then
-    error("--set: this scene declares no parameters (h.params{...}); there is nothing to set", 0)
+  for k in pairs(core.options().sets) do
+    if not h._params_declared and not scene_knobs[k] then
+      error(("--set %s: this scene declares no parameters (h.params{...}); there is nothing to set"):format(k), 0)
+    end
   end
   local s = h._last_scene
   if s and not s:_state().ran then
@@ -502,6 +560,90 @@ function h._finish()
     s:run { until_t = opts.until_t or 1.0, png = { path = "frame_%04d.png" },
             every = opts.frames and nil or (opts.until_t or 1.0) / 10 }
   end
+end
+
+-- ---- metrics (what `hearth trade` and `hearth run --metric` measure) ---------
+
+h._metrics = {}
+
+--- h.metric("height", function(s) return ... end): a number the scene reports at the
+--- end of its run, for `hearth trade SCENE --metric height`. A scene's own metric
+--- replaces a built-in of the same name.
+function h.metric(name, fn)
+  if type(name) ~= "string" or not name:match("^[%w_]+$") then
+    error("h.metric: the first argument is a name of letters, digits and _", 2)
+  end
+  if type(fn) ~= "function" then error("h.metric: the second argument is a function(s) returning a number", 2) end
+  h._metrics[name] = fn
+end
+
+-- Extent of the particles: lowest and highest coordinate per axis, and the centroid.
+local function extent(s)
+  local x, n = s:positions(), s:stats().particles
+  if n == 0 then error("metric: the scene has no particles", 0) end
+  local lo, hi, c = { math.huge, math.huge, math.huge }, { -math.huge, -math.huge, -math.huge }, { 0, 0, 0 }
+  for i = 0, n - 1 do
+    for k = 1, 3 do
+      local v = x[3 * i + k]
+      if v < lo[k] then lo[k] = v end
+      if v > hi[k] then hi[k] = v end
+      c[k] = c[k] + v / n
+    end
+  end
+  return lo, hi, c, x, n
+end
+
+h.builtin_metrics = {
+  -- top minus bottom of the material (m)
+  height = function(s) local lo, hi = extent(s); return hi[2] - lo[2] end,
+  -- largest horizontal distance of a particle from the centroid (m): x in 2D, x and z in 3D
+  spread = function(s)
+    local _, _, c, x, n = extent(s)
+    local r = 0
+    for i = 0, n - 1 do
+      local d = (x[3 * i + 1] - c[1]) ^ 2 + (x[3 * i + 3] - c[3]) ^ 2
+      if d > r then r = d end
+    end
+    return math.sqrt(r)
+  end,
+  -- temperature at the centre of the material's bounding box (degC)
+  centre_temperature = function(s)
+    local lo, hi = extent(s)
+    return s:probe("temperature", { (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2, (lo[3] + hi[3]) / 2 })
+  end,
+  -- the furthest particle along +x (m): the front of a flow or a nozzle jet
+  front = function(s) local _, hi = extent(s); return hi[1] end,
+  -- the material's volume at the end, sum of V0 J (m^3, or m^2 in 2D)
+  volume = function(s) return s:volume() end,
+  -- water lost from the material (kg): needs the water field
+  water_lost = function(s)
+    for _, f in ipairs(s:stats().fields) do
+      if f == "water" and s.water_lost then return s:water_lost() end
+    end
+    error("metric water_lost: this scene has no water field (water transport is not built yet, or no material holds water)", 0)
+  end,
+}
+h.builtin_metrics.centre_temp = h.builtin_metrics.centre_temperature
+h.builtin_metrics.final_volume = h.builtin_metrics.volume
+
+-- Evaluate a metric on the scene the file built (called by `hearth run --metric`).
+function h._metric(name)
+  local fn = h._metrics[name] or h.builtin_metrics[name]
+  if not fn then
+    local all = {}
+    for k in pairs(h._metrics) do all[k] = true end
+    for k in pairs(h.builtin_metrics) do all[k] = true end
+    local near = nearest(name, all)
+    error(("--metric %s: no such metric%s (this scene has: %s)"):format(name,
+      near and ("; did you mean '" .. near .. "'?") or "", table.concat(sorted_keys(all), ", ")), 0)
+  end
+  local s = h._last_scene
+  if not s then error("--metric " .. name .. ": the scene file built no scene", 0) end
+  local v = fn(s)
+  if type(v) ~= "number" then
+    error(("--metric %s: the metric returned %s, not a number"):format(name, type(v)), 0)
+  end
+  return v, s:stats()
 end
 
 return h

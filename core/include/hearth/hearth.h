@@ -317,6 +317,8 @@ hearth_status hearth_probe_slice(const hearth_scene *s, const char *field, int a
                                  double *out, hearth_error *err);
 /// A field evaluated at every particle: out gets count*components values.
 hearth_status hearth_scene_particle_field(const hearth_scene *s, const char *field, double *out, hearth_error *err);
+/// Current volume of the material, sum of V0 J over particles (m^3, or m^2 in 2D).
+double hearth_scene_volume(const hearth_scene *s);
 /// Particle positions, 3 doubles each, valid until the next step.
 const double *hearth_scene_positions(const hearth_scene *s);
 int hearth_scene_particle_count(const hearth_scene *s);

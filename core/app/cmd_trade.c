@@ -1,0 +1,780 @@
+/* cmd_trade.c: `hearth trade SCENE.lua --metric NAME --knob k=v1,v2...`: the
+ * speed/accuracy trade of a scene. Every combination of knob values is one
+ * `hearth run` in its own process (so peak memory and wall time are the run's
+ * own), up to --jobs at a time with the cores shared out as OpenMP threads.
+ * Each run reports a metric; against a reference (the finest run or an
+ * analytic value) that gives an error, and along a refinement knob (dx, dt_max,
+ * cfl or ppc) the observed order of convergence. Results go to a CSV, a
+ * log-log PNG of error against wall time with the Pareto front, and a table. */
+#define _DEFAULT_SOURCE /* wait4 and struct rusage's ru_maxrss */
+#include <errno.h>
+#include <lauxlib.h>
+#include <lua.h>
+#include <lualib.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <fcntl.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "atomic_file.h"
+#include "commands.h"
+#include "font.h"
+#include "hearth/hearth.h"
+#include "image.h"
+#include "io_png.h"
+#include "progress.h"
+
+#define MAX_KNOBS 12
+#define MAX_VALUES 32
+#define MAX_RUNS 4096
+#define MAX_SETS 32
+
+typedef struct knob {
+    char name[64];
+    int n;
+    char *v[MAX_VALUES];
+    char buf[2048];
+} knob;
+
+typedef enum run_state { RS_WAIT, RS_RUNNING, RS_OK, RS_GUARD, RS_ERROR, RS_CRASH } run_state;
+static const char *const state_name[] = {"waiting", "running", "ok", "guard", "error", "crash"};
+
+typedef struct trade_run {
+    int vi[MAX_KNOBS]; /* value index per knob */
+    run_state st;
+    pid_t pid;
+    double t0, wall, metric, ref, err, rel, order, h, peak_mb;
+    long steps;
+    int series, pareto, is_ref;
+    char msg[256];
+} trade_run;
+
+typedef struct trade {
+    const char *scene, *metric, *reference, *until;
+    char out[4096];
+    knob k[MAX_KNOBS];
+    int nk;
+    const char *sets[MAX_SETS];
+    int nsets, jobs, threads, quiet, trust;
+    trade_run *r;
+    int nr;
+    int refine; /* knob index of the refinement knob, or -1 */
+    char analytic[1024];
+} trade;
+
+static void usage(FILE *f) {
+    fprintf(f,
+            "usage: hearth trade SCENE.lua --metric NAME [--knob name=v1,v2,...]... [--reference finest|analytic:EXPR]\n"
+            "                    [--out DIR] [--jobs N] [--until T] [--set k=v]... [--quiet] [--trust]\n"
+            "Runs the scene once for every combination of knob values, each run a separate\n"
+            "`hearth run` process, and measures what each setting costs and buys.\n"
+            "  --metric NAME   what to measure at the end of a run: a metric the scene declares with\n"
+            "                  h.metric(NAME, function(s) ... end), or a built-in: height, spread,\n"
+            "                  centre_temperature, front, volume, water_lost\n"
+            "  --knob k=a,b,c  values to try. Scene settings: dx, ppc, cfl, dt_max, dim, solver (mpm|sph),\n"
+            "                  transfer (apic), heat (explicit|implicit), blend (nonlinear|linear for h.mix);\n"
+            "                  or any parameter the scene declares with h.params{...}\n"
+            "  --reference R   finest (default): the run with the smallest refinement knob (dx, else\n"
+            "                  dt_max, cfl, ppc; among equals the one with most steps), or\n"
+            "                  analytic:EXPR, a Lua expression with math.* and the run's knobs as variables\n"
+            "  --out DIR       results folder (default ./hearth-out/trade-<scene>): trade.csv, trade.png,\n"
+            "                  and runs/NNN/ with each run's log and outputs\n"
+            "  --jobs N        runs at a time (default: the number of cores); each run gets\n"
+            "                  cores/N OpenMP threads so the machine is not oversubscribed\n"
+            "  --until T, --set k=v, --trust   passed to every run\n"
+            "Per run: wall time, steps, peak memory (the run's own), the metric, its error against\n"
+            "the reference, and the observed order p = log(e1/e2) / log(h1/h2) between successive\n"
+            "refinements of runs that differ only in the refinement knob.\n"
+            "Exit status: 0 when every run finished, 1 when some did not, 2 bad usage.\n");
+}
+
+static int bad(const char *fmt, const char *a) {
+    fprintf(stderr, "hearth trade: ");
+    fprintf(stderr, fmt, a);
+    fprintf(stderr, " (see --help)\n");
+    return 2;
+}
+
+static int parse_knob(trade *T, const char *text) {
+    if (T->nk == MAX_KNOBS) return bad("at most %s --knob options", "12");
+    const char *eq = strchr(text, '=');
+    if (!eq || eq == text || !eq[1]) return bad("--knob needs name=v1,v2,..., got '%s'", text);
+    knob *k = &T->k[T->nk];
+    memset(k, 0, sizeof *k);
+    snprintf(k->name, sizeof k->name, "%.*s", (int)(eq - text), text);
+    for (int j = 0; j < T->nk; j++)
+        if (!strcmp(T->k[j].name, k->name)) return bad("--knob %s given twice; list all its values in one option", k->name);
+    snprintf(k->buf, sizeof k->buf, "%s", eq + 1);
+    for (char *p = k->buf; p;) {
+        char *c = strchr(p, ',');
+        if (c) *c = '\0';
+        if (!*p) return bad("--knob has an empty value in '%s'", text);
+        if (k->n == MAX_VALUES) return bad("--knob: at most 32 values in '%s'", text);
+        k->v[k->n++] = p;
+        p = c ? c + 1 : NULL;
+    }
+    T->nk++;
+    return 0;
+}
+
+static int parse(trade *T, int argc, char **argv) {
+    memset(T, 0, sizeof *T);
+    T->reference = "finest";
+    T->jobs = -1;
+    for (int i = 1; i < argc; i++) {
+        const char *s = argv[i];
+        if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
+            usage(stdout);
+            return 1;
+        }
+        if (!strcmp(s, "--quiet")) { T->quiet = 1; continue; }
+        if (!strcmp(s, "--trust")) { T->trust = 1; continue; }
+        if (s[0] == '-' && s[1] == '-') {
+            static const char *const valued[] = {"--metric", "--knob", "--reference", "--out", "--jobs", "--until", "--set", NULL};
+            int known = 0;
+            for (int k = 0; valued[k]; k++) known |= !strcmp(s, valued[k]);
+            if (!known) return bad("unknown option '%s'", s);
+            if (i + 1 >= argc) return bad("%s needs a value", s);
+            const char *v = argv[++i];
+            if (!strcmp(s, "--metric")) T->metric = v;
+            else if (!strcmp(s, "--knob")) {
+                if (parse_knob(T, v)) return 2;
+            } else if (!strcmp(s, "--reference")) T->reference = v;
+            else if (!strcmp(s, "--out")) snprintf(T->out, sizeof T->out, "%s", v);
+            else if (!strcmp(s, "--jobs")) {
+                if ((T->jobs = (int)app_parse_int("trade", "--jobs", v, 1, 256)) < 0) return 2;
+            } else if (!strcmp(s, "--until")) {
+                char *end;
+                double u = strtod(v, &end);
+                if (*end || !(u > 0)) return bad("--until needs a time > 0 in seconds, got '%s'", v);
+                T->until = v;
+            } else { /* --set */
+                if (!strchr(v, '=') || v[0] == '=') return bad("--set needs name=value, got '%s'", v);
+                if (T->nsets == MAX_SETS) return bad("at most %s --set options", "32");
+                T->sets[T->nsets++] = v;
+            }
+            continue;
+        }
+        if (T->scene) return bad("one scene file at a time (got a second: '%s')", s);
+        T->scene = s;
+    }
+    if (!T->scene) return bad("which scene? %s", "usage: hearth trade SCENE.lua --metric NAME");
+    if (access(T->scene, R_OK) != 0) {
+        fprintf(stderr, "hearth trade: cannot read scene '%s': %s\n", T->scene, strerror(errno));
+        return 2;
+    }
+    if (!T->metric) return bad("--metric NAME is required (e.g. %s)", "--metric height");
+    if (strcmp(T->reference, "finest") && strncmp(T->reference, "analytic:", 9))
+        return bad("--reference must be 'finest' or 'analytic:<lua expression>', got '%s'", T->reference);
+    for (int j = 0; j < T->nk; j++)
+        for (int s = 0; s < T->nsets; s++)
+            if (!strncmp(T->sets[s], T->k[j].name, strlen(T->k[j].name)) && T->sets[s][strlen(T->k[j].name)] == '=')
+                return bad("'%s' is both a --knob and a --set", T->k[j].name);
+    if (!T->out[0]) {
+        const char *base = strrchr(T->scene, '/');
+        base = base ? base + 1 : T->scene;
+        size_t n = strlen(base);
+        if (n > 4 && !strcmp(base + n - 4, ".lua")) n -= 4;
+        snprintf(T->out, sizeof T->out, "hearth-out/trade-%.*s", (int)n, base);
+    }
+    return 0;
+}
+
+/* ---- the ladder ------------------------------------------------------------ */
+
+static int is_number(const char *s, double *v) {
+    char *end;
+    errno = 0;
+    *v = strtod(s, &end);
+    return end != s && !*end && !errno && isfinite(*v);
+}
+
+/* Refinement measure h of a knob value: smaller is finer. ppc refines like
+ * 1/sqrt(ppc) (particle spacing in 2D). */
+static double refine_h(const trade *T, const trade_run *r) {
+    if (T->refine < 0) return NAN;
+    const knob *k = &T->k[T->refine];
+    double v;
+    if (!is_number(k->v[r->vi[T->refine]], &v) || !(v > 0)) return NAN;
+    return strcmp(k->name, "ppc") ? v : 1.0 / sqrt(v);
+}
+
+static int build_ladder(trade *T) {
+    long n = 1;
+    for (int j = 0; j < T->nk; j++) n *= T->k[j].n;
+    if (n > MAX_RUNS) {
+        fprintf(stderr, "hearth trade: %ld runs is more than the %d allowed; use fewer knob values\n", n, MAX_RUNS);
+        return 2;
+    }
+    T->nr = (int)n;
+    T->r = calloc((size_t)n, sizeof *T->r);
+    if (!T->r) return 1;
+    /* the refinement knob: the first of these that has more than one value */
+    static const char *const pref[] = {"dx", "dt_max", "cfl", "ppc"};
+    T->refine = -1;
+    for (int p = 0; p < 4 && T->refine < 0; p++)
+        for (int j = 0; j < T->nk; j++) {
+            double v;
+            if (strcmp(T->k[j].name, pref[p]) || T->k[j].n < 2) continue;
+            int numeric = 1;
+            for (int i = 0; i < T->k[j].n; i++) numeric &= is_number(T->k[j].v[i], &v) && v > 0;
+            if (!numeric) {
+                fprintf(stderr, "hearth trade: --knob %s needs numbers > 0\n", T->k[j].name);
+                return 2;
+            }
+            T->refine = j;
+            break;
+        }
+    for (int i = 0; i < T->nr; i++) { /* the last knob varies fastest */
+        long rem = i;
+        for (int j = T->nk - 1; j >= 0; j--) {
+            T->r[i].vi[j] = (int)(rem % T->k[j].n);
+            rem /= T->k[j].n;
+        }
+        T->r[i].metric = T->r[i].ref = T->r[i].err = T->r[i].rel = T->r[i].order = NAN;
+        T->r[i].steps = -1;
+        T->r[i].h = refine_h(T, &T->r[i]);
+    }
+    /* series: runs equal in every knob but the refinement knob */
+    int ns = 0;
+    for (int i = 0; i < T->nr; i++) {
+        T->r[i].series = -1;
+        for (int j = 0; j < i && T->r[i].series < 0; j++) {
+            int same = 1;
+            for (int k = 0; k < T->nk; k++) same &= k == T->refine || T->r[i].vi[k] == T->r[j].vi[k];
+            if (same) T->r[i].series = T->r[j].series;
+        }
+        if (T->r[i].series < 0) T->r[i].series = ns++;
+    }
+    return 0;
+}
+
+/* "dx=0.01 heat=implicit" (all knobs, or all but the refinement knob) */
+static void run_label(const trade *T, const trade_run *r, int skip_refine, char *buf, size_t n) {
+    size_t l = 0;
+    buf[0] = '\0';
+    for (int j = 0; j < T->nk && l < n; j++) {
+        if (skip_refine && j == T->refine) continue;
+        l += (size_t)snprintf(buf + l, n - l, "%s%s=%s", l ? " " : "", T->k[j].name, T->k[j].v[r->vi[j]]);
+    }
+    if (!buf[0]) snprintf(buf, n, "%s", skip_refine ? "all runs" : "(defaults)");
+}
+
+/* ---- running ------------------------------------------------------------- */
+
+static void run_dir(const trade *T, int i, char *buf, size_t n) { snprintf(buf, n, "%s/runs/%03d", T->out, i); }
+
+static int start_run(trade *T, int i) {
+    trade_run *r = &T->r[i];
+    char dir[4200], res[4300], log[4300], thr[16];
+    run_dir(T, i, dir, sizeof dir);
+    hearth_error err;
+    if (hearth_mkdir_p(dir, &err)) {
+        fprintf(stderr, "hearth trade: %s\n", err.msg);
+        return -1;
+    }
+    snprintf(res, sizeof res, "%s/result.txt", dir);
+    snprintf(log, sizeof log, "%s/log.txt", dir);
+    unlink(res);
+    snprintf(thr, sizeof thr, "%d", T->threads);
+    char setbuf[MAX_KNOBS][600];
+    const char *av[32 + 2 * (MAX_KNOBS + MAX_SETS)];
+    int a = 0;
+    av[a++] = "hearth";
+    av[a++] = "run";
+    av[a++] = T->scene;
+    av[a++] = "--quiet";
+    av[a++] = "--out";
+    av[a++] = dir;
+    av[a++] = "--metric";
+    av[a++] = T->metric;
+    av[a++] = "--metric-out";
+    av[a++] = res;
+    av[a++] = "--threads";
+    av[a++] = thr;
+    if (T->until) av[a++] = "--until", av[a++] = T->until;
+    if (T->trust) av[a++] = "--trust";
+    for (int s = 0; s < T->nsets; s++) av[a++] = "--set", av[a++] = T->sets[s];
+    for (int j = 0; j < T->nk; j++) {
+        snprintf(setbuf[j], sizeof setbuf[j], "%s=%s", T->k[j].name, T->k[j].v[r->vi[j]]);
+        av[a++] = "--set", av[a++] = setbuf[j];
+    }
+    av[a] = NULL;
+    fflush(NULL);
+    r->t0 = progress_wall();
+    pid_t pid = fork();
+    if (pid < 0) {
+        fprintf(stderr, "hearth trade: cannot start a run: %s\n", strerror(errno));
+        return -1;
+    }
+    if (pid == 0) {
+        int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (fd >= 0) {
+            dup2(fd, 1);
+            dup2(fd, 2);
+            close(fd);
+        }
+        setenv("OMP_NUM_THREADS", thr, 1);
+        setenv("OMP_WAIT_POLICY", "passive", 1);
+        execv("/proc/self/exe", (char *const *)av);
+        fprintf(stderr, "hearth trade: cannot run /proc/self/exe: %s\n", strerror(errno));
+        _exit(127);
+    }
+    r->pid = pid;
+    r->st = RS_RUNNING;
+    return 0;
+}
+
+/* The reason a run did not finish, from its log: the guard's diagnosis or the error line. */
+static void read_failure(const char *log, char *msg, size_t n) {
+    FILE *f = fopen(log, "r");
+    snprintf(msg, n, "(no log)");
+    if (!f) return;
+    char line[2048];
+    int next_is_diag = 0;
+    while (fgets(line, sizeof line, f)) {
+        line[strcspn(line, "\n")] = '\0';
+        if (next_is_diag) {
+            const char *p = line;
+            while (*p == ' ') p++;
+            snprintf(msg, n, "%.*s", (int)n - 1, p);
+            break;
+        }
+        if (strstr(line, "stability guard stopped the run")) next_is_diag = 1;
+        else if (!strncmp(line, "hearth run: ", 12)) {
+            snprintf(msg, n, "%.*s", (int)n - 1, line + 12);
+            break;
+        }
+    }
+    fclose(f);
+}
+
+static volatile sig_atomic_t interrupted;
+static void on_signal(int sig) {
+    (void)sig;
+    interrupted = 1;
+}
+
+static void finish_run(trade *T, int i, int wstatus, const struct rusage *ru) {
+    trade_run *r = &T->r[i];
+    r->wall = progress_wall() - r->t0;
+    r->peak_mb = ru->ru_maxrss / 1024.0; /* Linux: kilobytes */
+    char dir[4200], path[4300];
+    run_dir(T, i, dir, sizeof dir);
+    snprintf(path, sizeof path, "%s/result.txt", dir);
+    FILE *f = fopen(path, "r");
+    if (f) {
+        char key[32];
+        double v;
+        while (fscanf(f, "%31s %lf%*[^\n]", key, &v) == 2) {
+            if (!strcmp(key, "metric")) r->metric = v;
+            else if (!strcmp(key, "steps")) r->steps = (long)v;
+        }
+        fclose(f);
+    }
+    snprintf(path, sizeof path, "%s/log.txt", dir);
+    if (WIFSIGNALED(wstatus) && interrupted) {
+        r->st = RS_ERROR;
+        snprintf(r->msg, sizeof r->msg, "stopped: hearth trade was interrupted");
+    } else if (WIFSIGNALED(wstatus)) {
+        r->st = RS_CRASH;
+        snprintf(r->msg, sizeof r->msg, "killed by signal %d (%s); see %.150s", WTERMSIG(wstatus), strsignal(WTERMSIG(wstatus)), path);
+    } else if (WEXITSTATUS(wstatus) == 0 && isfinite(r->metric)) r->st = RS_OK;
+    else {
+        r->st = WEXITSTATUS(wstatus) == 3 ? RS_GUARD : RS_ERROR;
+        read_failure(path, r->msg, sizeof r->msg);
+        if (WEXITSTATUS(wstatus) == 0) snprintf(r->msg, sizeof r->msg, "the metric is not a finite number");
+    }
+}
+
+
+static int run_all(trade *T) {
+    int next = 0, running = 0, done = 0, killed = 0;
+    const double t0 = progress_wall();
+    double last_beat = t0;
+    struct sigaction sa, old_int, old_term;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+    while (done < T->nr) {
+        while (!interrupted && running < T->jobs && next < T->nr) {
+            if (start_run(T, next)) {
+                T->r[next].st = RS_ERROR;
+                snprintf(T->r[next].msg, sizeof T->r[next].msg, "could not start");
+                done++;
+            } else running++;
+            next++;
+        }
+        if (!running) break;
+        int ws;
+        struct rusage ru;
+        pid_t pid = wait4(-1, &ws, WNOHANG, &ru);
+        if (pid < 0 && errno != EINTR) break;
+        if (pid <= 0) { /* nothing ended yet: poll, and say what is running now and then */
+            if (interrupted && !killed) {
+                for (int i = 0; i < T->nr; i++)
+                    if (T->r[i].st == RS_RUNNING) kill(T->r[i].pid, SIGTERM);
+                killed = 1;
+            }
+            const struct timespec nap = {0, 100000000};
+            nanosleep(&nap, NULL);
+            const double now = progress_wall();
+            if (!T->quiet && now - last_beat >= 15) {
+                last_beat = now;
+                fprintf(stderr, "trade: %d/%d done, running:", done, T->nr);
+                for (int i = 0; i < T->nr; i++)
+                    if (T->r[i].st == RS_RUNNING) {
+                        char lab[512];
+                        run_label(T, &T->r[i], 0, lab, sizeof lab);
+                        fprintf(stderr, " [%s for %.0f s]", lab, now - T->r[i].t0);
+                    }
+                fprintf(stderr, "  (elapsed %.0f s)\n", now - t0);
+            }
+            continue;
+        }
+        last_beat = progress_wall();
+        for (int i = 0; i < T->nr; i++) {
+            if (T->r[i].st != RS_RUNNING || T->r[i].pid != pid) continue;
+            finish_run(T, i, ws, &ru);
+            running--;
+            done++;
+            if (!T->quiet) {
+                char lab[512];
+                run_label(T, &T->r[i], 0, lab, sizeof lab);
+                const double el = progress_wall() - t0;
+                fprintf(stderr, "trade: [%d/%d] %s: %s, %.2f s", done, T->nr, lab, state_name[T->r[i].st], T->r[i].wall);
+                if (T->r[i].st == RS_OK) fprintf(stderr, ", %s = %.6g", T->metric, T->r[i].metric);
+                else fprintf(stderr, ": %s", T->r[i].msg);
+                fprintf(stderr, "  (elapsed %.0f s, ETA %.0f s)\n", el, done ? el * (T->nr - done) / done : 0.0);
+            }
+        }
+    }
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+    if (interrupted) {
+        fprintf(stderr, "hearth trade: interrupted; %d of %d runs done\n", done, T->nr);
+        return 1;
+    }
+    return 0;
+}
+
+/* ---- analysis ------------------------------------------------------------ */
+
+/* The analytic reference for one run: EXPR with math.* and the run's knobs as globals. */
+static int analytic_value(const trade *T, const trade_run *r, double *out, char *msg, size_t n) {
+    lua_State *L = luaL_newstate();
+    if (!L) return snprintf(msg, n, "out of memory"), -1;
+    luaL_requiref(L, LUA_GNAME, luaopen_base, 1);
+    luaL_requiref(L, LUA_MATHLIBNAME, luaopen_math, 1);
+    lua_pop(L, 2);
+    for (int j = 0; j < T->nk; j++) {
+        double v;
+        const char *s = T->k[j].v[r->vi[j]];
+        if (is_number(s, &v)) lua_pushnumber(L, v);
+        else lua_pushstring(L, s);
+        lua_setglobal(L, T->k[j].name);
+    }
+    char code[1200];
+    snprintf(code, sizeof code, "return (%s)", T->analytic);
+    int rc = -1;
+    if (luaL_loadbufferx(L, code, strlen(code), "=--reference", "t") != LUA_OK || lua_pcall(L, 0, 1, 0) != LUA_OK)
+        snprintf(msg, n, "--reference analytic:%s: %s", T->analytic, lua_tostring(L, -1));
+    else if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
+        snprintf(msg, n, "--reference analytic:%s: gives %s, not a finite number", T->analytic, luaL_tolstring(L, -1, NULL));
+    else *out = lua_tonumber(L, -1), rc = 0;
+    lua_close(L);
+    return rc;
+}
+
+static int analyse(trade *T) {
+    int ref_run = -1;
+    if (T->analytic[0]) {
+        for (int i = 0; i < T->nr; i++) {
+            char msg[1400];
+            if (analytic_value(T, &T->r[i], &T->r[i].ref, msg, sizeof msg)) {
+                fprintf(stderr, "hearth trade: %s\n", msg);
+                return 2;
+            }
+        }
+    } else {
+        for (int i = 0; i < T->nr; i++) {
+            const trade_run *r = &T->r[i], *b = ref_run >= 0 ? &T->r[ref_run] : NULL;
+            if (r->st != RS_OK) continue;
+            const double hr = isfinite(r->h) ? r->h : INFINITY, hb = b && isfinite(b->h) ? b->h : INFINITY;
+            if (!b || hr < hb || (hr == hb && r->steps >= b->steps)) ref_run = i;
+        }
+        if (ref_run < 0) return 0;
+        T->r[ref_run].is_ref = 1;
+        for (int i = 0; i < T->nr; i++) T->r[i].ref = T->r[ref_run].metric;
+    }
+    for (int i = 0; i < T->nr; i++) {
+        trade_run *r = &T->r[i];
+        if (r->st != RS_OK) continue;
+        r->err = fabs(r->metric - r->ref);
+        r->rel = r->ref != 0 ? r->err / fabs(r->ref) : r->err;
+    }
+    /* observed order between successive refinements within a series */
+    if (T->refine >= 0)
+        for (int i = 0; i < T->nr; i++) {
+            trade_run *r = &T->r[i];
+            int prev = -1; /* the next coarser run of the same series */
+            for (int j = 0; j < T->nr; j++) {
+                const trade_run *q = &T->r[j];
+                if (j == i || q->series != r->series || !(q->h > r->h)) continue;
+                if (prev < 0 || q->h < T->r[prev].h) prev = j;
+            }
+            if (prev < 0 || r->st != RS_OK || T->r[prev].st != RS_OK) continue;
+            if (r->err > 0 && T->r[prev].err > 0 && !r->is_ref)
+                r->order = log(T->r[prev].err / r->err) / log(T->r[prev].h / r->h);
+        }
+    /* Pareto front over (wall time, error): no other run is both as fast and as accurate */
+    for (int i = 0; i < T->nr; i++) {
+        trade_run *r = &T->r[i];
+        if (r->st != RS_OK || !(r->rel > 0)) continue;
+        r->pareto = 1;
+        for (int j = 0; j < T->nr && r->pareto; j++) {
+            const trade_run *q = &T->r[j];
+            if (j == i || q->st != RS_OK || !(q->rel > 0)) continue;
+            if (q->wall <= r->wall && q->rel <= r->rel && (q->wall < r->wall || q->rel < r->rel)) r->pareto = 0;
+        }
+    }
+    return 0;
+}
+
+/* ---- outputs -------------------------------------------------------------- */
+
+static int write_csv(const trade *T, const char *path) {
+    atomic_file af;
+    hearth_error err;
+    if (atomic_open(&af, path, &err)) {
+        fprintf(stderr, "hearth trade: %s\n", err.msg);
+        return -1;
+    }
+    fprintf(af.f, "run");
+    for (int j = 0; j < T->nk; j++) fprintf(af.f, ",%s", T->k[j].name);
+    fprintf(af.f, ",status,wall_s,steps,peak_mb,%s,reference,error,rel_error,order,pareto,note\n", T->metric);
+    for (int i = 0; i < T->nr; i++) {
+        const trade_run *r = &T->r[i];
+        fprintf(af.f, "%d", i);
+        for (int j = 0; j < T->nk; j++) fprintf(af.f, ",%s", T->k[j].v[r->vi[j]]);
+        fprintf(af.f, ",%s,%.3f,%ld,%.1f,%.10g,%.10g,%.4g,%.4g,%.3f,%d,", state_name[r->st], r->wall, r->steps, r->peak_mb,
+                r->metric, r->ref, r->err, r->rel, r->order, r->pareto);
+        const char *note = r->is_ref ? "reference (finest run)" : r->msg;
+        fputc('"', af.f);
+        for (const char *p = note; *p; p++) fputc(*p == '"' ? '\'' : *p, af.f);
+        fputs("\"\n", af.f);
+    }
+    if (atomic_commit(&af, &err)) {
+        fprintf(stderr, "hearth trade: %s\n", err.msg);
+        return -1;
+    }
+    return 0;
+}
+
+static const unsigned char C_BG[3] = {255, 255, 255}, C_AXIS[3] = {0, 0, 0}, C_GRID[3] = {228, 228, 228},
+                           C_MINOR[3] = {243, 243, 243}, C_TEXT[3] = {30, 30, 30}, C_FRONT[3] = {40, 40, 40};
+static const unsigned char C_SERIES[8][3] = {{31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {255, 127, 14},
+                                              {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {23, 190, 207}};
+
+static void decade_label(int k, char *buf, size_t n) {
+    if (k >= -2 && k <= 3) snprintf(buf, n, "%g", pow(10, k));
+    else snprintf(buf, n, "1e%d", k);
+}
+
+static void log_range(const trade *T, int yaxis, double *lo, double *hi) {
+    double mn = INFINITY, mx = -INFINITY;
+    for (int i = 0; i < T->nr; i++) {
+        const trade_run *r = &T->r[i];
+        const double v = yaxis ? r->rel : r->wall;
+        if (r->st == RS_OK && r->rel > 0 && v > 0 && isfinite(v)) mn = fmin(mn, v), mx = fmax(mx, v);
+    }
+    if (!(mn <= mx)) mn = 1, mx = 10;
+    *lo = floor(log10(mn));
+    *hi = ceil(log10(mx));
+    if (*hi <= *lo) *hi = *lo + 1;
+}
+
+/* Error against wall time on log-log axes: one colour per series, each point
+ * labelled with its refinement value, the Pareto front joined and ringed. */
+static int write_plot(const trade *T, const char *path) {
+    const int W = 860, H = 580, left = 78, right = 24, top = 52, bottom = 62;
+    const int pw = W - left - right, ph = H - top - bottom;
+    img im;
+    hearth_error err;
+    if (img_init(&im, W, H, C_BG, &err)) {
+        fprintf(stderr, "hearth trade: %s\n", err.msg);
+        return -1;
+    }
+    double lx0, lx1, ly0, ly1;
+    log_range(T, 0, &lx0, &lx1);
+    log_range(T, 1, &ly0, &ly1);
+#define PX(v) (left + (log10(v) - lx0) / (lx1 - lx0) * pw)
+#define PY(v) (top + ph - (log10(v) - ly0) / (ly1 - ly0) * ph)
+    char buf[256];
+    for (int k = (int)lx0; k < (int)lx1; k++)
+        for (int j = 2; j <= 9; j++) img_line(&im, PX(j * pow(10, k)), top, PX(j * pow(10, k)), top + ph, C_MINOR);
+    for (int k = (int)ly0; k < (int)ly1; k++)
+        for (int j = 2; j <= 9; j++) img_line(&im, left, PY(j * pow(10, k)), left + pw, PY(j * pow(10, k)), C_MINOR);
+    for (int k = (int)lx0; k <= (int)lx1; k++) {
+        const double px = PX(pow(10, k));
+        img_line(&im, px, top, px, top + ph, C_GRID);
+        decade_label(k, buf, sizeof buf);
+        img_text(&im, (int)lround(px) - font_text_width(buf, 1) / 2, top + ph + 9, buf, 1, C_TEXT);
+    }
+    for (int k = (int)ly0; k <= (int)ly1; k++) {
+        const double py = PY(pow(10, k));
+        img_line(&im, left, py, left + pw, py, C_GRID);
+        decade_label(k, buf, sizeof buf);
+        img_text(&im, left - 9 - font_text_width(buf, 1), (int)lround(py) - 4, buf, 1, C_TEXT);
+    }
+    img_line(&im, left, top, left + pw, top, C_AXIS);
+    img_line(&im, left, top + ph, left + pw, top + ph, C_AXIS);
+    img_line(&im, left, top, left, top + ph, C_AXIS);
+    img_line(&im, left + pw, top, left + pw, top + ph, C_AXIS);
+    /* the Pareto front, in order of wall time */
+    int prev = -1;
+    for (;;) {
+        int best = -1;
+        for (int i = 0; i < T->nr; i++)
+            if (T->r[i].pareto && (prev < 0 || T->r[i].wall > T->r[prev].wall) && (best < 0 || T->r[i].wall < T->r[best].wall))
+                best = i;
+        if (best < 0) break;
+        const trade_run *b = &T->r[best];
+        img_disc(&im, PX(b->wall), PY(b->rel), 7.5, C_FRONT);
+        img_disc(&im, PX(b->wall), PY(b->rel), 5.5, C_BG);
+        if (prev >= 0) {
+            const trade_run *a = &T->r[prev];
+            img_line(&im, PX(a->wall), PY(a->rel), PX(b->wall), PY(b->rel), C_FRONT);
+        }
+        prev = best;
+    }
+    /* the runs, and the series they belong to */
+    int nseries = 0;
+    for (int i = 0; i < T->nr; i++) nseries = T->r[i].series + 1 > nseries ? T->r[i].series + 1 : nseries;
+    for (int i = 0; i < T->nr; i++) {
+        const trade_run *r = &T->r[i];
+        if (r->st != RS_OK || !(r->rel > 0)) continue;
+        const unsigned char *c = C_SERIES[r->series % 8];
+        for (int j = 0; j < T->nr; j++) { /* join each run to its next finer one of the series */
+            const trade_run *q = &T->r[j];
+            if (q->series == r->series && q->st == RS_OK && q->rel > 0 && q->h < r->h) {
+                int closer = 1;
+                for (int k = 0; k < T->nr; k++)
+                    if (T->r[k].series == r->series && T->r[k].st == RS_OK && T->r[k].rel > 0 && T->r[k].h < r->h && T->r[k].h > q->h)
+                        closer = 0;
+                if (closer) img_line(&im, PX(r->wall), PY(r->rel), PX(q->wall), PY(q->rel), c);
+            }
+        }
+        img_disc(&im, PX(r->wall), PY(r->rel), 3.5, c);
+        if (T->refine >= 0) {
+            snprintf(buf, sizeof buf, "%s", T->k[T->refine].v[r->vi[T->refine]]);
+            img_text(&im, (int)lround(PX(r->wall)) + 6, (int)lround(PY(r->rel)) - 10, buf, 1, c);
+        }
+    }
+#undef PX
+#undef PY
+    char title[600];
+    const char *base = strrchr(T->scene, '/');
+    snprintf(title, sizeof title, "%s: error in %s against %s", base ? base + 1 : T->scene, T->metric,
+             T->analytic[0] ? "the analytic value" : "the finest run");
+    img_text(&im, left, 12, title, font_text_width(title, 2) <= W - left - 8 ? 2 : 1, C_TEXT);
+    const char *xl = "wall time per run [s]";
+    img_text(&im, left + pw / 2 - font_text_width(xl, 1) / 2, H - 22, xl, 1, C_TEXT);
+    img_text(&im, 8, top - 14, "relative error", 1, C_TEXT);
+    int ly = top + ph - 14 * (nseries < 8 ? nseries : 8) - 20;
+    for (int s = 0; s < nseries && s < 8; s++) {
+        for (int i = 0; i < T->nr; i++)
+            if (T->r[i].series == s) {
+                run_label(T, &T->r[i], 1, buf, sizeof buf);
+                break;
+            }
+        char lab[300];
+        if (T->refine >= 0) snprintf(lab, sizeof lab, "%s (labels: %s)", buf, T->k[T->refine].name);
+        else snprintf(lab, sizeof lab, "%s", buf);
+        img_disc(&im, left + 16, ly + 3, 3.5, C_SERIES[s]);
+        img_text(&im, left + 28, ly, lab, 1, C_TEXT);
+        ly += 14;
+    }
+    img_disc(&im, left + 16, ly + 3, 7.5, C_FRONT);
+    img_disc(&im, left + 16, ly + 3, 5.5, C_BG);
+    img_text(&im, left + 28, ly, "Pareto front (nothing else is both faster and more accurate)", 1, C_TEXT);
+    hearth_status st = png_write_rgb(path, im.w, im.h, im.rgb, &err);
+    img_free(&im);
+    if (st) fprintf(stderr, "hearth trade: %s\n", err.msg);
+    return st ? -1 : 0;
+}
+
+static void print_table(const trade *T) {
+    printf("%4s", "run");
+    for (int j = 0; j < T->nk; j++) printf("  %10s", T->k[j].name);
+    printf("  %6s %9s %8s %8s %14s %10s %7s  %s\n", "status", "wall [s]", "steps", "peak MB", T->metric, "rel error", "order",
+           "");
+    for (int i = 0; i < T->nr; i++) {
+        const trade_run *r = &T->r[i];
+        printf("%4d", i);
+        for (int j = 0; j < T->nk; j++) printf("  %10s", T->k[j].v[r->vi[j]]);
+        printf("  %6s %9.2f %8ld %8.1f %14.7g %10.3g %7.2f  %s%s%s\n", state_name[r->st], r->wall, r->steps, r->peak_mb,
+               r->metric, r->rel, r->order, r->pareto ? "pareto " : "", r->is_ref ? "reference " : "",
+               r->st != RS_OK ? r->msg : "");
+    }
+}
+
+int cmd_trade(int argc, char **argv) {
+    trade T;
+    int rc = parse(&T, argc, argv);
+    if (rc) return rc == 1 ? 0 : rc;
+    if (!strncmp(T.reference, "analytic:", 9)) snprintf(T.analytic, sizeof T.analytic, "%s", T.reference + 9);
+    if ((rc = build_ladder(&T))) {
+        free(T.r);
+        return rc;
+    }
+    if (T.analytic[0]) { /* a bad expression is a usage error, found before any run */
+        char msg[1400];
+        double v;
+        if (analytic_value(&T, &T.r[0], &v, msg, sizeof msg)) {
+            fprintf(stderr, "hearth trade: %s\n", msg);
+            free(T.r);
+            return 2;
+        }
+    }
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    if (cores < 1) cores = 1;
+    if (T.jobs < 0) T.jobs = (int)cores;
+    if (T.jobs > T.nr) T.jobs = T.nr;
+    T.threads = (int)(cores / T.jobs) > 0 ? (int)(cores / T.jobs) : 1;
+    hearth_error err;
+    if (hearth_mkdir_p(T.out, &err)) {
+        fprintf(stderr, "hearth trade: %s\n", err.msg);
+        free(T.r);
+        return 1;
+    }
+    if (!T.quiet)
+        fprintf(stderr, "trade: %s, %d runs, %d at a time with %d thread%s each; metric %s, reference %s\n", T.scene, T.nr,
+                T.jobs, T.threads, T.threads > 1 ? "s" : "", T.metric, T.reference);
+    rc = run_all(&T);
+    int arc = analyse(&T);
+    if (arc) {
+        free(T.r);
+        return arc;
+    }
+    char csv[4200], png[4200];
+    snprintf(csv, sizeof csv, "%s/trade.csv", T.out);
+    snprintf(png, sizeof png, "%s/trade.png", T.out);
+    if (write_csv(&T, csv) || write_plot(&T, png)) rc = 1;
+    print_table(&T);
+    int failed = 0;
+    for (int i = 0; i < T.nr; i++) failed += T.r[i].st != RS_OK;
+    printf("\nwrote %s and %s\n", csv, png);
+    if (failed) printf("%d of %d runs did not finish (see the status column and runs/NNN/log.txt)\n", failed, T.nr);
+    free(T.r);
+    return rc || failed ? 1 : 0;
+}

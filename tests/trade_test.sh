@@ -1,0 +1,117 @@
+#!/usr/bin/env bash
+# trade_test.sh CASE HEARTH SOURCE_ROOT: `hearth trade` and the scene settings
+# --set may change, as a user meets them. Every case runs in a fresh temp folder.
+set -u
+case_name=$1 hearth=$2 root=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp" || exit 1
+fail() { echo "FAIL: $*" >&2; exit 1; }
+knobs="$root/tests/trade/knobs.lua" slab="$root/scripts/trade/heat_slab.lua"
+# csv_field FILE ROW COLUMN: one cell of a CSV written by hearth trade (row 0 = first run)
+csv_field() {
+    python3 - "$@" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+print(rows[int(sys.argv[2])][sys.argv[3]])
+PY
+}
+png_ok() {
+    python3 - "$1" <<'PY' || fail "$1 is not a whole PNG"
+import struct, sys, zlib
+b = open(sys.argv[1], "rb").read()
+assert b[:8] == b"\x89PNG\r\n\x1a\n"
+w, h = struct.unpack(">II", b[16:24])
+assert (w, h) == (860, 580), (w, h)
+i, idat = 8, b""
+while i < len(b):
+    n, t = struct.unpack(">I4s", b[i:i + 8])
+    if t == b"IDAT": idat += b[i + 8:i + 8 + n]
+    i += 12 + n
+assert len(set(zlib.decompress(idat))) > 4, "a flat picture"
+PY
+}
+
+case $case_name in
+trade_heat_slab_order)
+    # explicit heat over two dx against the analytic centre temperature: the
+    # error halves with dx (first order, see docs/trade/README.md for why)
+    "$hearth" trade "$slab" --metric centre_temperature --knob dx=0.004,0.002 --knob heat=explicit \
+        --reference "analytic:120 - 100 * 0.7725263834238096^2" --jobs 2 --out o --quiet >out.txt 2>err.txt \
+        || fail "exit $?: $(cat err.txt)"
+    [ "$(wc -l <o/trade.csv)" -eq 3 ] || fail "trade.csv: $(cat o/trade.csv)"
+    for r in 0 1; do
+        [ "$(csv_field o/trade.csv $r status)" = ok ] || fail "run $r did not finish: $(cat o/trade.csv)"
+        python3 -c "import sys; s, m = float(sys.argv[1]), float(sys.argv[2]); sys.exit(not (s > 0 and m > 0))" \
+            "$(csv_field o/trade.csv $r steps)" "$(csv_field o/trade.csv $r peak_mb)" || fail "steps or peak memory missing"
+    done
+    order=$(csv_field o/trade.csv 1 order)
+    e0=$(csv_field o/trade.csv 0 rel_error) e1=$(csv_field o/trade.csv 1 rel_error)
+    echo "observed order $order (relative errors $e0 at dx 0.004, $e1 at dx 0.002)"
+    python3 -c "import sys; p = float(sys.argv[1]); sys.exit(not (0.8 <= p <= 1.3))" "$order" \
+        || fail "observed order $order, expected first order (0.8..1.3)"
+    [ "$(csv_field o/trade.csv 0 order)" = nan ] || fail "the coarsest run has no order"
+    png_ok o/trade.png
+    grep -q "centre_temperature" out.txt || fail "no table printed: $(cat out.txt)"
+    ;;
+trade_finest_reference)
+    # the finest run is the reference: its error is 0; a knob without a
+    # refinement measure (a scene parameter) gives no order
+    "$hearth" trade "$knobs" --metric particles --knob ppc=1,4,9 --knob size=0.125,0.25 --out o --quiet >out.txt 2>err.txt \
+        || fail "exit $?: $(cat err.txt)"
+    [ "$(wc -l <o/trade.csv)" -eq 7 ] || fail "expected 6 runs: $(cat o/trade.csv)"
+    grep -q '^[0-9]*,9,0.25,ok,.*reference (finest run)' o/trade.csv || fail "the reference is not ppc 9 size 0.25: $(cat o/trade.csv)"
+    # particle counts follow ppc (rounded to k^2) and size: 1, 4, 9 per cell
+    for r in 0 1 2 3 4 5; do csv_field o/trade.csv $r particles; done >counts.txt
+    python3 - counts.txt <<'PY' || fail "particle counts do not follow ppc and size: $(cat counts.txt)"
+import sys
+c = [float(x) for x in open(sys.argv[1])]
+# rows: (ppc 1, size .1), (1, .2), (4, .1), (4, .2), (9, .1), (9, .2)
+assert c[2] == 4 * c[0] and c[4] == 9 * c[0], c
+assert c[1] > 3.5 * c[0], c
+PY
+    png_ok o/trade.png
+    ;;
+trade_bad_usage)
+    "$hearth" trade "$knobs" --knob dx=0.1 >out.txt 2>err.txt
+    [ $? -eq 2 ] && grep -q -- "--metric NAME is required" err.txt || fail "no --metric: $(cat err.txt)"
+    "$hearth" trade "$knobs" --metric particles --knob dx=0.1 --knob dx=0.2 >out.txt 2>err.txt
+    [ $? -eq 2 ] && grep -q "given twice" err.txt || fail "knob twice: $(cat err.txt)"
+    "$hearth" trade "$knobs" --metric particles --knob size=0.1 --reference "analytic:1 +* 2" >out.txt 2>err.txt
+    [ $? -eq 2 ] && grep -q "reference analytic" err.txt && [ ! -d hearth-out ] || fail "bad expression: $(cat err.txt)"
+    "$hearth" trade "$knobs" --metric particles --reference exact >out.txt 2>err.txt
+    [ $? -eq 2 ] && grep -q "finest' or 'analytic" err.txt || fail "bad reference: $(cat err.txt)"
+    "$hearth" trade "$knobs" --metric particles --knob dx=fine,coarse >out.txt 2>err.txt
+    [ $? -eq 2 ] && grep -q "needs numbers" err.txt || fail "dx words: $(cat err.txt)"
+    # a metric the scene lacks: the run fails and says which exist
+    "$hearth" trade "$knobs" --metric partcles --knob size=0.1 --out o --quiet >out.txt 2>err.txt
+    [ $? -eq 1 ] || fail "unknown metric: exit $?"
+    grep -q "no such metric; did you mean 'particles'" o/trade.csv || fail "unknown metric note: $(cat o/trade.csv)"
+    "$hearth" run "$knobs" --quiet --metric not_a_number >out.txt 2>err.txt
+    [ $? -eq 1 ] && grep -q "returned string, not a number" err.txt || fail "string metric: $(cat err.txt)"
+    "$hearth" run "$knobs" --quiet --metric water_lost >out.txt 2>err.txt
+    [ $? -eq 1 ] && grep -q "no water field" err.txt || fail "water_lost: $(cat err.txt)"
+    ;;
+trade_scene_settings)
+    # --set reaches scene settings the scene does not declare as parameters
+    "$hearth" run "$knobs" --quiet --metric particles --set ppc=9 >out.txt 2>err.txt || fail "ppc: $(cat err.txt)"
+    grep -q "metric particles = 576$" out.txt || fail "ppc=9 should give 576 particles: $(cat out.txt)"
+    "$hearth" run "$knobs" --quiet --metric particles --set dx=0.015625 >out.txt 2>err.txt || fail "dx: $(cat err.txt)"
+    grep -q "metric particles = 1024$" out.txt || fail "dx=1/64 should give 1024 particles: $(cat out.txt)"
+    "$hearth" run "$knobs" --quiet --metric mixed_yield >out.txt 2>err.txt || fail "blend: $(cat err.txt)"
+    nonlinear=$(sed -n 's/^metric mixed_yield = //p' out.txt)
+    "$hearth" run "$knobs" --quiet --metric mixed_yield --set blend=linear >out.txt 2>err.txt || fail "linear: $(cat err.txt)"
+    grep -q "metric mixed_yield = 25$" out.txt || fail "linear blend of 10 and 40 is 25: $(cat out.txt)"
+    [ "$nonlinear" != 25 ] || fail "the nonlinear blend should differ from the linear one"
+    "$hearth" run "$knobs" --quiet --set transfer=pic >out.txt 2>err.txt
+    [ $? -eq 1 ] && grep -q "transfer=pic: not built yet" err.txt || fail "transfer=pic: $(cat err.txt)"
+    "$hearth" run "$knobs" --quiet --set dim=3 >out.txt 2>err.txt
+    [ $? -eq 1 ] && grep -q "no z extent" err.txt || fail "dim=3 on a flat box: $(cat err.txt)"
+    "$hearth" run "$knobs" --quiet --set heat=sideways >out.txt 2>err.txt
+    [ $? -eq 1 ] && grep -q "heat = sideways; valid: explicit, implicit" err.txt || fail "heat: $(cat err.txt)"
+    "$hearth" run "$knobs" --quiet --set sise=0.2 >out.txt 2>err.txt
+    [ $? -eq 1 ] && grep -q "no parameter 'sise'" err.txt || fail "misspelt parameter: $(cat err.txt)"
+    ;;
+*) fail "unknown case $case_name" ;;
+esac
+echo ok
