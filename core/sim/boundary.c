@@ -1,10 +1,11 @@
 /* boundary.c: boundary particles (Ding et al. 2019 §6.6).
  *
  * A grid node is on the boundary when it has mass and a face neighbour that
- * is empty air: an empty node inside the domain proper, not one of the two
- * wall layers or beyond. Material pressed against a domain wall does not
- * exchange heat or water through it, and a node inside a collider is contact,
- * not air. Each boundary node picks its closest particle.
+ * is empty air: an empty node of the grid. Past the grid's last node is the
+ * domain wall: material pressed against a wall (particles stop one cell from
+ * it, so their stencils reach the last node) does not exchange heat or water
+ * through it. A node inside a collider is contact, not air. Each boundary
+ * node picks its closest particle.
  *
  * A pick carries the node's face area dx^(dim-1) rather than the paper's
  * S_p = (9 pi/16 V_p^2)^(1/3): with one pick per boundary node the latter
@@ -27,11 +28,10 @@ int boundary_needed(const hearth_scene *s) {
     return 0;
 }
 
-/* Mass of node (i, j, k), or -1 where the neighbour is not air: outside the
- * grid or in a wall layer. */
+/* Mass of node (i, j, k), or -1 past the grid (the wall, not air). */
 static double air_or_mass(const grid *g, const int gi[3]) {
     for (int d = 0; d < g->dim; d++)
-        if (gi[d] < 2 || gi[d] > g->nn[d] - 3) return -1;
+        if (gi[d] < 0 || gi[d] > g->nn[d] - 1) return -1;
     const int slot = g->slot[grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B)];
     if (slot < 0) return 0;
     const int l = g->dim == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
