@@ -202,6 +202,32 @@ tui_dumb_line_mode)
     for _ in $(seq 50); do [ -f "$tmp/exit.txt" ] && break; sleep 0.1; done
     [ "$(cat "$tmp/exit.txt" 2>/dev/null)" = 0 ] || fail "quit should end line mode with status 0"
     ;;
+tui_guard_pauses)
+    # cfl = 4 breaks the wave CFL condition: the guard stops the scene's run
+    start "'$src/tests/lua/guard.lua'"
+    wait_for "paused"
+    keys Space
+    wait_for "the stability guard stopped the run \(paused\)" 15
+    wait_for "guard STOPPED" 5
+    wait_for "paused" 5
+    keys :
+    keys "print('still here')" Enter
+    wait_for "^.*still here" 5
+    alive
+    ;;
+tui_crash_restores)
+    start "'$scene'"
+    wait_for "paused"
+    shell=$(tmux -L "$sock" display -p -t t '#{pane_pid}')
+    pid=$(pgrep -P "$shell" | head -1)
+    [ -n "$pid" ] || fail "no hearth process under the pane"
+    kill -ABRT "$pid"
+    for _ in $(seq 50); do [ -f "$tmp/exit.txt" ] && break; sleep 0.1; done
+    [ "$(cat "$tmp/exit.txt" 2>/dev/null)" = 134 ] || fail "SIGABRT should end hearth with status 134"
+    [ "$(tmux -L "$sock" display -p -t t '#{alternate_on}')" = 0 ] || fail "the alternate screen is still on"
+    grep -Eq '(^| )icanon( |$)' "$tmp/stty.txt" && grep -Eq '(^| )echo( |$)' "$tmp/stty.txt" ||
+        fail "terminal modes not restored after SIGABRT: $(cat "$tmp/stty.txt")"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"

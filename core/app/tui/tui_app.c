@@ -17,7 +17,7 @@
 #include "tui_screen.h"
 
 #define FRAME_MIN (1.0 / 30) /* redraws per second at most: 30 */
-#define DRAW_SHARE 0.03      /* drawing's share of the wall time while running */
+#define DRAW_SHARE 0.025     /* drawing's share of the wall time while running: 5% of the step time is the budget */
 
 double tui_wall(void) {
     struct timespec ts;

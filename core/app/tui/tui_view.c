@@ -153,8 +153,12 @@ static void draw_status(tui_app *a, const tui_rect *r) {
     const hearth_scene_def *d = hearth_scene_get_def(a->s);
     char oven[64] = "";
     if (!isnan(d->oven_temperature)) snprintf(oven, sizeof oven, "  oven %.4g degC", d->oven_temperature);
-    snprintf(l1, sizeof l1, " %s   t %.5g s   step %ld   dt %.3g s   CFL %.2f%s", a->opt.name, st.t, st.step, st.dt,
-             st.cfl, oven);
+    snprintf(l1, sizeof l1, " t %.5g s   step %ld   dt %.3g s   CFL %.2f%s", st.t, st.step, st.dt, st.cfl, oven);
+    if ((int)(strlen(l1) + strlen(a->opt.name)) + 28 < r->w) { /* the scene's name when there is room */
+        char named[1100];
+        snprintf(named, sizeof named, " %.500s  %s", a->opt.name, l1);
+        snprintf(l1, sizeof l1, "%.511s", named);
+    }
     char fields[256];
     snprintf(fields, sizeof fields, "%s", hearth_scene_fields(a->s));
     static const char *gs[] = {"ok", "rolled back", "STOPPED"};
