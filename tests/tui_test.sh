@@ -97,6 +97,10 @@ tui_prompt_changes_oven)
     keys "s:oven(120)" Enter
     wait_for "oven 120 degC" 5
     screen | grep -q "oven 180" && fail "the old oven temperature is still shown"
+    # a run typed at the prompt runs while the screen goes on, then pauses
+    keys "s:run{until_t = 0.05}" Enter
+    wait_for "the scene's run finished at t = 0.05 s" 15
+    wait_for "paused" 5
     # multi-line input and print to the log
     keys "print(greeting," Enter
     wait_for "^>>" 5

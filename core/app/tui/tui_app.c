@@ -32,6 +32,7 @@ static void refresh_scene(tui_app *a) {
         a->nfp = a->npins = 0;
         a->field[0][0] = a->field[1][0] = '\0';
         a->sampled_step = -1;
+        a->probed[0].valid = a->probed[1].valid = 0;
         if (s) {
             const hearth_scene_def *d = hearth_scene_get_def(s);
             for (int k = 0; k < 3; k++) a->cursor[k] = 0.5 * (d->lo[k] + d->hi[k]), a->at[k] = 0.5;
@@ -278,7 +279,8 @@ static void key(tui_app *a, int k) {
 static void app_free(tui_app *a) {
     tui_lua_close(&a->lua);
     tui_prompt_free(&a->prompt);
-    free(a->slice);
+    free(a->slice[0]);
+    free(a->slice[1]);
     free(a->cells);
 }
 
@@ -332,9 +334,9 @@ int tui_run(const tui_options *o) {
         free(a);
         return 1;
     }
-    double next_draw = 0, interval = FRAME_MIN;
+    double next_draw = 0, last_draw = 0;
     long seen_log = -1;
-    int dirty = 1;
+    int dirty = 1, keyed = 0;
     a->rate_wall = tui_wall();
     if (a->s) {
         hearth_stats st;
@@ -347,17 +349,17 @@ int tui_run(const tui_options *o) {
             break;
         }
         double now = tui_wall();
-        /* keys: all that are waiting; when paused, wait for one until the next redraw */
-        int wait_ms = a->running ? 0 : (int)fmax(0, fmin(250, (next_draw - now) * 1000));
-        if (!a->running && !dirty) wait_ms = 250;
+        /* keys: all that are waiting; when paused, wait for one (the screen has nothing else to do) */
+        int wait_ms = a->running ? 0 : dirty || keyed ? (int)fmax(0, fmin(250, (last_draw + FRAME_MIN - now) * 1000)) : 250;
         for (int k; (k = tui_screen_key(wait_ms)) != 0; wait_ms = 0) {
             key(a, k);
-            dirty = 1;
+            keyed = 1;
             if (a->quit) break;
         }
         if (a->quit) break;
         if (a->running) {
-            double t0 = tui_wall();
+            /* step until the next redraw, looking at the keys at least 20 times a second */
+            double t0 = tui_wall(), until = fmin(next_draw, t0 + 0.05);
             long s0 = 0;
             if (a->s) {
                 hearth_stats st;
@@ -366,7 +368,7 @@ int tui_run(const tui_options *o) {
             }
             do {
                 if (tui_step(a)) break;
-            } while (tui_wall() < next_draw && !tui_screen_interrupted());
+            } while (tui_wall() < until && !tui_screen_interrupted());
             a->step_secs += tui_wall() - t0;
             if (a->s) {
                 hearth_stats st;
@@ -383,17 +385,27 @@ int tui_run(const tui_options *o) {
             a->rate_step = st.step;
             a->rate_wall = now;
         }
-        if (a->log.changed != seen_log) dirty = 1;
-        if (dirty && now >= next_draw) {
+        if (a->log.changed != seen_log) keyed = 1;
+        if (now - last_draw < FRAME_MIN) continue; /* 30 redraws a second at most */
+        if (a->running ? now >= next_draw : dirty || keyed) {
+            /* the full redraw: probes and slices afresh */
             double t0 = tui_wall();
             if (a->running) tui_sample_probes(a);
-            tui_view_draw(a);
+            tui_view_draw(a, 1);
             double cost = tui_wall() - t0;
             if (a->running) a->draw_secs += cost;
-            interval = fmax(FRAME_MIN, cost / DRAW_SHARE);
-            next_draw = t0 + interval;
+            next_draw = t0 + fmax(FRAME_MIN, cost / DRAW_SHARE);
+            last_draw = t0;
+            dirty = keyed = 0;
             seen_log = a->log.changed;
-            dirty = 0;
+        } else if (keyed) {
+            /* a key while running: show it now from the last probes, which costs little */
+            double t0 = tui_wall();
+            tui_view_draw(a, 0);
+            if (a->running) a->draw_secs += tui_wall() - t0;
+            last_draw = t0;
+            keyed = 0;
+            seen_log = a->log.changed;
         }
     }
     tui_screen_close();

@@ -30,6 +30,13 @@ typedef struct tui_field_probe {
     double value;
 } tui_field_probe;
 
+/// What a view's slice buffer holds, so a redraw can tell whether it still fits.
+typedef struct tui_probed {
+    char field[32];
+    int axis, zoom, fw, fh, valid;
+    double at;
+} tui_probed;
+
 typedef struct tui_app {
     tui_options opt;
     tui_color_mode mode;
@@ -56,8 +63,9 @@ typedef struct tui_app {
     double step_secs, draw_secs, sps, rate_wall;
     long rate_step, steps_run;
     /* scratch */
-    double *slice;
-    long slice_cap;
+    double *slice[2];  ///< each view's last slice, reused by redraws between probes
+    long slice_cap[2];
+    tui_probed probed[2]; ///< what slice[k] holds
     tui_cell *cells;
     long cells_cap;
     double lo[2], hi[2];
@@ -67,7 +75,8 @@ typedef struct tui_app {
 int tui_run(const tui_options *o);
 
 /* between the dashboard's files */
-void tui_view_draw(tui_app *a);                      /* tui_view.c: the whole screen */
+void tui_view_draw(tui_app *a, int fresh);           /* tui_view.c: the whole screen; fresh = probe the slices
+                                                        again (else reuse them when the view is unchanged) */
 void tui_sample_probes(tui_app *a);                  /* tui_view.c: cursor and pinned probes */
 void tui_default_fields(tui_app *a);                 /* tui_view.c: choose live fields for the views */
 int tui_scalar_fields(const hearth_scene *s, char out[][32], int max); /* live scalar fields */

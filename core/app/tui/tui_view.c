@@ -179,7 +179,7 @@ static void plane_axes(int axis, int *u, int *v) {
     *v = axis == 2 ? 1 : 2;
 }
 
-static void draw_view(tui_app *a, int k, const tui_layout *L) {
+static void draw_view(tui_app *a, int k, const tui_layout *L, int fresh) {
     const tui_rect *t = &L->title[k], *r = &L->view[k], *b = &L->bar[k];
     clear_rect(t->y, t->x, t->w, 1);
     clear_rect(r->y, r->x, r->w, r->h);
@@ -209,11 +209,12 @@ static void draw_view(tui_app *a, int k, const tui_layout *L) {
     int x0 = r->x + (r->w - dw) / 2, y0 = r->y + (r->h - dh) / 2;
     int fw = dw * a->zoom, fh = 2 * dh * a->zoom;
     long need = (long)fw * fh;
-    if (need > a->slice_cap) {
-        double *ns = realloc(a->slice, sizeof(double) * (size_t)need);
+    if (need > a->slice_cap[k]) {
+        double *ns = realloc(a->slice[k], sizeof(double) * (size_t)need);
         if (!ns) return;
-        a->slice = ns;
-        a->slice_cap = need;
+        a->slice[k] = ns;
+        a->slice_cap[k] = need;
+        a->probed[k].valid = 0;
     }
     if ((long)dw * dh > a->cells_cap) {
         tui_cell *nc = realloc(a->cells, sizeof(tui_cell) * (size_t)dw * (size_t)dh);
@@ -221,19 +222,28 @@ static void draw_view(tui_app *a, int k, const tui_layout *L) {
         a->cells = nc;
         a->cells_cap = (long)dw * dh;
     }
-    hearth_error err;
-    if (hearth_probe_slice(a->s, a->field[k], d->dim == 2 ? 2 : a->axis, at, fw, fh, a->slice, &err)) {
-        put(r->y, r->x, r->w, err.msg);
-        return;
+    /* a redraw for a key while running reuses the last slice of an unchanged view: the probes are
+     * the expensive part and their cost is held to the drawing budget */
+    tui_probed *pr = &a->probed[k];
+    int same = pr->valid && !strcmp(pr->field, a->field[k]) && pr->axis == a->axis && pr->zoom == a->zoom &&
+               pr->fw == fw && pr->fh == fh && pr->at == at;
+    if (fresh || !same) {
+        hearth_error err;
+        if (hearth_probe_slice(a->s, a->field[k], d->dim == 2 ? 2 : a->axis, at, fw, fh, a->slice[k], &err)) {
+            pr->valid = 0;
+            put(r->y, r->x, r->w, err.msg);
+            return;
+        }
+        memcpy(pr->field, a->field[k], sizeof pr->field);
+        pr->axis = a->axis, pr->zoom = a->zoom, pr->fw = fw, pr->fh = fh, pr->at = at, pr->valid = 1;
+        tui_range(a->slice[k], need, &a->lo[k], &a->hi[k]);
     }
-    double lo, hi;
-    tui_range(a->slice, need, &lo, &hi);
-    a->lo[k] = lo, a->hi[k] = hi;
+    double lo = a->lo[k], hi = a->hi[k];
     /* the zoom window, centred on the cursor and kept inside the domain */
     double span = 1.0 / a->zoom;
     double cu = (a->cursor[u] - d->lo[u]) / W, cv = (a->cursor[v] - d->lo[v]) / H;
     double u0 = fmin(fmax(cu - span / 2, 0), 1 - span), v0 = fmin(fmax(cv - span / 2, 0), 1 - span);
-    tui_draw_heatmap(a->slice, fw, fh, lo, hi, u0, u0 + span, v0, v0 + span, a->mode, dw, dh, a->cells);
+    tui_draw_heatmap(a->slice[k], fw, fh, lo, hi, u0, u0 + span, v0, v0 + span, a->mode, dw, dh, a->cells);
     tui_screen_cells(x0, y0, dw, dh, a->cells, a->mode);
     /* the cursor and the pinned probes */
     for (int p = -1; p < a->npins; p++) {
@@ -377,7 +387,7 @@ static void draw_help(int cols, int rows) {
     for (int i = 0; i < n; i++) put(y + 1 + i, x + 2, w - 4, lines[i]);
 }
 
-void tui_view_draw(tui_app *a) {
+void tui_view_draw(tui_app *a, int fresh) {
     int cols = COLS, rows = LINES;
     tui_layout L;
     erase();
@@ -393,7 +403,7 @@ void tui_view_draw(tui_app *a) {
         return;
     }
     draw_status(a, &L.status);
-    for (int k = 0; k < 2; k++) draw_view(a, k, &L);
+    for (int k = 0; k < 2; k++) draw_view(a, k, &L, fresh);
     draw_probes(a, &L.probes);
     draw_log(a, &L.log);
     if (a->help) draw_help(cols, rows);
