@@ -37,7 +37,7 @@ void hl_open(lua_State *L, const hl_options *opt);
 int hl_pcall(lua_State *L, int nargs, int nres);
 /// Push a Lua scene object that owns s (freed by the garbage collector) and
 /// make it the module's current scene (h._last_scene), as h.load does.
-/// Raises on a NULL scene.
+/// Raises on a NULL scene or when the module cannot load; call it protected.
 void hl_push_scene(lua_State *L, hearth_scene *s);
 /// The C scene of the module's current scene (the last h.scene / h.load), or NULL.
 hearth_scene *hl_current_scene(lua_State *L);

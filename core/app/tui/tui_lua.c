@@ -142,8 +142,8 @@ int tui_lua_adopt(tui_lua *t, hearth_scene *s) {
     lua_pushcfunction(t->L, adopt);
     lua_pushlightuserdata(t->L, s);
     if (lua_pcall(t->L, 1, 1, 0) != LUA_OK) {
+        /* not destroyed here: once its Lua object exists the collector owns the scene */
         log_error(t, t->L);
-        hearth_scene_destroy(s);
         return -1;
     }
     lua_setglobal(t->L, "s");
