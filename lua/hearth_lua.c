@@ -60,6 +60,7 @@ static int l_options(lua_State *L) {
     if (o->until_override > 0) lua_pushnumber(L, o->until_override), lua_setfield(L, -2, "until_t");
     if (o->frames_override > 0) lua_pushinteger(L, o->frames_override), lua_setfield(L, -2, "frames");
     lua_pushboolean(L, o->quiet), lua_setfield(L, -2, "quiet");
+    lua_pushboolean(L, o->yield_steps), lua_setfield(L, -2, "yield");
     lua_newtable(L);
     for (int i = 0; o->sets && o->sets[i]; i++) {
         const char *eq = strchr(o->sets[i], '=');
@@ -135,4 +136,39 @@ void hl_open(lua_State *L, const hl_options *opt) {
     }
     lua_pop(L, 2);
     if (!opt->trusted) hl_sandbox(L, opt->out_dir);
+}
+
+/* the module table, from package.loaded (loading it if need be); raises on failure */
+static void push_module(lua_State *L) {
+    lua_getglobal(L, "require");
+    lua_pushliteral(L, "hearth");
+    lua_call(L, 1, 1);
+}
+
+void hl_push_scene(lua_State *L, hearth_scene *s) {
+    if (!s) luaL_error(L, "hl_push_scene: no scene");
+    push_module(L);
+    hl_scene *u = lua_newuserdatauv(L, sizeof *u, 1);
+    u->s = s;
+    luaL_setmetatable(L, HL_SCENE);
+    lua_newtable(L);
+    lua_setiuservalue(L, -2, 1);
+    lua_getfield(L, -2, "_adopt");
+    lua_pushvalue(L, -2);
+    lua_call(L, 1, 0);
+    lua_remove(L, -2);
+}
+
+hearth_scene *hl_current_scene(lua_State *L) {
+    lua_getfield(L, LUA_REGISTRYINDEX, LUA_LOADED_TABLE);
+    lua_getfield(L, -1, "hearth");
+    hearth_scene *s = NULL;
+    if (lua_istable(L, -1)) {
+        lua_getfield(L, -1, "_last_scene");
+        hl_scene *u = luaL_testudata(L, -1, HL_SCENE);
+        s = u ? u->s : NULL;
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 2);
+    return s;
 }

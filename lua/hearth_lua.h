@@ -27,12 +27,20 @@ typedef struct hl_options {
     /// Progress of s:run (sim time t of t_end after `steps` steps; final = last call). May be NULL.
     void (*progress)(void *ud, double t, double t_end, long steps, int final);
     void *progress_ud;
+    int yield_steps;        ///< s:run and s:step yield (coroutine.yield) between steps, so a host
+                            ///< running them in a coroutine can draw and take input (the dashboard)
 } hl_options;
 
 /// Open the module into L: registers package.preload.hearth and sets the options.
 void hl_open(lua_State *L, const hl_options *opt);
 /// Run a chunk under a traceback handler; on error leaves "file:line: msg\ntraceback" on the stack top.
 int hl_pcall(lua_State *L, int nargs, int nres);
+/// Push a Lua scene object that owns s (freed by the garbage collector) and
+/// make it the module's current scene (h._last_scene), as h.load does.
+/// Raises on a NULL scene or when the module cannot load; call it protected.
+void hl_push_scene(lua_State *L, hearth_scene *s);
+/// The C scene of the module's current scene (the last h.scene / h.load), or NULL.
+hearth_scene *hl_current_scene(lua_State *L);
 /// Set up the restricted environment for untrusted scenes (see lua_sandbox.c).
 void hl_sandbox(lua_State *L, const char *out_dir);
 

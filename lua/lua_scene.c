@@ -293,7 +293,7 @@ static int l_collider(lua_State *L) {
 static int l_advance(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     hearth_error err;
-    hearth_status st = hearth_scene_advance(u->s, luaL_checknumber(L, 2), &err);
+    hearth_status st = hearth_scene_advance_steps(u->s, luaL_checknumber(L, 2), (long)luaL_optinteger(L, 3, -1), &err);
     motion_check(L);
     if (st) return hl_raise(L, &err);
     return 0;
@@ -353,6 +353,22 @@ static int l_set_dt(lua_State *L) {
     if (hearth_scene_set_dt_limits(u->s, luaL_optnumber(L, 2, d->cfl), luaL_optnumber(L, 3, d->dt_max), &err))
         return hl_raise(L, &err);
     return 0;
+}
+
+/* s:oven(temperature [, beta]) -> the oven now; s:oven(nil) removes it; s:oven() reads it */
+static int l_oven(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const hearth_scene_def *d = hearth_scene_get_def(u->s);
+    if (lua_gettop(L) >= 2) {
+        double T = lua_isnil(L, 2) ? NAN : luaL_checknumber(L, 2);
+        double beta = luaL_optnumber(L, 3, d->oven_beta > 0 ? d->oven_beta : 10);
+        hearth_error err;
+        if (hearth_scene_set_oven(u->s, T, beta, &err)) return hl_raise(L, &err);
+    }
+    if (isnan(d->oven_temperature)) return lua_pushnil(L), 1;
+    lua_pushnumber(L, d->oven_temperature);
+    lua_pushnumber(L, d->oven_beta);
+    return 2;
 }
 
 static void push_values(lua_State *L, const double *v, int n) {
@@ -513,7 +529,7 @@ void hl_open_scene(lua_State *L) {
         {"_state", l_state},     {"_material", l_material}, {"_curve", l_curve},       {"_add", l_add},
         {"_collider", l_collider}, {"_advance", l_advance}, {"_step", l_step_raw},     {"push", l_push},
         {"cut", l_cut},          {"move", l_move},         {"collider_velocity", l_collider_velocity},
-        {"set_dt", l_set_dt},    {"probe", l_probe},       {"line", l_line},          {"_slice", l_slice},
+        {"set_dt", l_set_dt},    {"oven", l_oven},    {"probe", l_probe},       {"line", l_line},          {"_slice", l_slice},
         {"stats", l_stats},      {"body_particles", l_body_particles}, {"hash", l_hash},
         {"positions", l_positions}, {"volume", l_volume}, {NULL, NULL}};
     luaL_newmetatable(L, HL_SCENE);

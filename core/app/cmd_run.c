@@ -16,17 +16,6 @@
 #include "hearth_lua.h"
 #include "progress.h"
 
-typedef struct run_args {
-    const char *scene;
-    const char *out;
-    double until;
-    long frames;
-    int quiet, trust;
-    const char *metric, *metric_out; /* --metric NAME [--metric-out FILE] (used by hearth trade) */
-    const char *sets[65];
-    int nsets;
-    char out_buf[4096], dir_buf[4096];
-} run_args;
 
 static void run_usage(FILE *f, const char *cmd) {
     if (!strcmp(cmd, "repl"))
@@ -49,7 +38,7 @@ static void run_usage(FILE *f, const char *cmd) {
 }
 
 
-static int parse(run_args *a, int argc, char **argv, const char *cmd) {
+int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
     memset(a, 0, sizeof *a);
     for (int i = 1; i < argc; i++) {
         const char *s = argv[i];
@@ -228,7 +217,7 @@ static int metric_report(lua_State *L, const run_args *a, int status) {
 
 int cmd_run(int argc, char **argv) {
     run_args a;
-    int rc = parse(&a, argc, argv, "run");
+    int rc = app_run_parse(&a, argc, argv, "run");
     if (rc) return rc == 1 ? 0 : rc;
     progress pr;
     lua_State *L = start(&a, &pr, "run");
@@ -263,7 +252,7 @@ static int incomplete(lua_State *L, int status) {
 
 int cmd_repl(int argc, char **argv) {
     run_args a;
-    int rc = parse(&a, argc, argv, "repl");
+    int rc = app_run_parse(&a, argc, argv, "repl");
     if (rc) return rc == 1 ? 0 : rc;
     a.quiet = 1;
     progress pr;

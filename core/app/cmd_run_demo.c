@@ -1,7 +1,7 @@
 /* cmd_run_demo.c: the built-in demo scene, embedded so `hearth` works with no
  * files: a jelly disc and a blob of syrup fall onto a ramp and into a cup.
- * Until the dashboard exists it runs headless with a progress bar and writes
- * PNG frames. */
+ * `hearth demo` runs it headless with a progress bar and writes PNG frames;
+ * the dashboard (cmd_dashboard.c) shows it live. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,7 +13,7 @@
 #include "progress.h"
 
 
-static hearth_scene *build_demo(hearth_error *err) {
+hearth_scene *app_demo_scene(hearth_error *err) {
     hearth_scene_def d = hearth_default_scene_def();
     d.dim = 2;
     d.dx = 1.0 / 128;
@@ -104,7 +104,7 @@ int cmd_demo(int argc, char **argv) {
         }
     }
     hearth_error err;
-    hearth_scene *s = build_demo(&err);
+    hearth_scene *s = app_demo_scene(&err);
     if (!s) {
         fprintf(stderr, "hearth demo: %s\n", err.msg);
         return 1;

@@ -6,7 +6,9 @@
  * analytic value) that gives an error, and along a refinement knob (dx, dt_max,
  * cfl or ppc) the observed order of convergence. Results go to a CSV, a
  * log-log PNG of error against wall time with the Pareto front, and a table. */
+#ifndef _DEFAULT_SOURCE
 #define _DEFAULT_SOURCE /* wait4 and struct rusage's ru_maxrss */
+#endif
 #include <errno.h>
 #include <lauxlib.h>
 #include <lua.h>

@@ -14,6 +14,26 @@ int cmd_rheometer(int argc, char **argv);
 int cmd_fit(int argc, char **argv);
 int cmd_trade(int argc, char **argv);
 
+int cmd_dashboard(int argc, char **argv);
+
+/// The options of hearth run / hearth repl / the dashboard (cmd_run.c).
+typedef struct run_args {
+    const char *scene;
+    const char *out;
+    double until;
+    long frames;
+    int quiet, trust;
+    const char *metric, *metric_out; /* --metric NAME [--metric-out FILE] (used by hearth trade) */
+    const char *sets[65];
+    int nsets;
+    char out_buf[4096], dir_buf[4096];
+} run_args;
+/// Parse them; prints usage errors. Returns 0 ok, 1 when --help was printed, 2 bad usage.
+/// The scene file is required for cmd "run"; the output folder defaults to hearth-out/<scene name>.
+int app_run_parse(run_args *a, int argc, char **argv, const char *cmd);
+/// The built-in demo scene (cmd_run_demo.c): a jelly disc and syrup falling into a cup.
+hearth_scene *app_demo_scene(hearth_error *err);
+
 /* shared by the rheometer and fit commands (cmd_rheometer.c) */
 int app_flow_plot(const char *path, const char *title, const double *x, const double *y, int n, const char *data_label,
                   const double *cx, const double *cy, int cn, const char *curve_label, hearth_error *err);

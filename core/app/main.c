@@ -13,8 +13,11 @@ static void usage(FILE *f) {
             "hearth %s: a terminal workbench for simulating cooking materials\n"
             "\n"
             "usage:\n"
-            "  hearth                        run the built-in demo (headless for now: progress bar, PNG frames in ./hearth-out/)\n"
+            "  hearth [SCENE.lua] [--out DIR] [--set k=v]... [--until T] [--play] [--trust]\n"
+            "                                the live dashboard on a scene, or on the built-in demo; it needs a\n"
+            "                                terminal (press ? inside for the keys; hearth --help-dashboard)\n"
             "  hearth demo [--out DIR] [--until T] [--frames N] [--threads N] [--quiet]\n"
+            "                                the built-in demo headless: progress bar, PNG frames in ./hearth-out/demo/\n"
             "  hearth run SCENE.lua [--until T] [--frames N] [--out DIR] [--set k=v]... [--threads N] [--quiet] [--trust]\n"
             "                                run a Lua scene headless (progress bar, PNG/VTU/CSV outputs)\n"
             "  hearth repl [SCENE.lua]       a plain Lua prompt with the scene loaded (reads pipes too)\n"
@@ -55,18 +58,22 @@ int main(int argc, char **argv) {
         setenv("OMP_WAIT_POLICY", "passive", 1);
         execv("/proc/self/exe", argv); /* returns only on failure: then carry on as we are */
     }
-    if (argc < 2) return cmd_demo(argc, argv);
+    if (argc < 2) return cmd_dashboard(argc, argv);
     const char *c = argv[1];
     if (!strcmp(c, "--help") || !strcmp(c, "-h") || !strcmp(c, "help")) {
         usage(stdout);
         return 0;
+    }
+    if (!strcmp(c, "--help-dashboard")) {
+        char *dash[] = {argv[0], "--help", NULL};
+        return cmd_dashboard(2, dash);
     }
     if (!strcmp(c, "--version")) {
         printf("hearth %s (material ABI %d)\n", HEARTH_VERSION, HEARTH_MATERIAL_ABI);
         return 0;
     }
     if (!strcmp(c, "demo")) return cmd_demo(argc - 1, argv + 1);
-    if (c[0] == '-' && c[1] == '-') return cmd_demo(argc, argv); /* `hearth --frames 5` means the demo */
+    if (c[0] == '-' && c[1] == '-') return cmd_dashboard(argc, argv); /* `hearth --play`: the dashboard on the demo */
     if (!strcmp(c, "plugins")) return cmd_plugins(argc - 1, argv + 1);
     if (!strcmp(c, "plugin")) {
         if (argc >= 3 && !strcmp(argv[2], "check")) return cmd_plugin_check(argc - 2, argv + 2);
@@ -79,8 +86,7 @@ int main(int argc, char **argv) {
     if (!strcmp(c, "rheometer")) return cmd_rheometer(argc - 1, argv + 1);
     if (!strcmp(c, "fit")) return cmd_fit(argc - 1, argv + 1);
     if (!strcmp(c, "trade")) return cmd_trade(argc - 1, argv + 1);
-    /* `hearth SCENE.lua` will open the dashboard; until it exists it runs the scene headless */
-    if (strlen(c) > 4 && !strcmp(c + strlen(c) - 4, ".lua")) return cmd_run(argc, argv);
+    if (strlen(c) > 4 && !strcmp(c + strlen(c) - 4, ".lua")) return cmd_dashboard(argc, argv);
     fprintf(stderr, "hearth: unknown command '%s'\n\n", c);
     usage(stderr);
     return 2;

@@ -179,6 +179,18 @@ hearth_status hearth_scene_set_dt_limits(hearth_scene *s, double cfl, double dt_
     return HEARTH_OK;
 }
 
+hearth_status hearth_scene_set_oven(hearth_scene *s, double temperature, double beta, hearth_error *err) {
+    err_clear(err);
+    hearth_scene_def d = s->def;
+    d.oven_temperature = temperature;
+    d.oven_beta = beta;
+    hearth_status st = check_def(&d, err);
+    if (st) return st;
+    if (!isnan(temperature) && (st = scene_enable_temperature(s, err))) return st; /* an oven makes the field live */
+    s->def = d;
+    return HEARTH_OK;
+}
+
 hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err) {
     if (n > s->scratch_cap) {
         int cap = s->ps.cap > n ? s->ps.cap : n;
@@ -583,9 +595,13 @@ hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err) {
 }
 
 hearth_status hearth_scene_advance(hearth_scene *s, double t_end, hearth_error *err) {
+    return hearth_scene_advance_steps(s, t_end, -1, err);
+}
+
+hearth_status hearth_scene_advance_steps(hearth_scene *s, double t_end, long max_steps, hearth_error *err) {
     err_clear(err);
     if (s->guard == HEARTH_GUARD_STOPPED) s->guard = HEARTH_GUARD_OK;
-    while (s->t < t_end) {
+    for (long k = 0; s->t < t_end && (max_steps < 0 || k < max_steps); k++) {
         double dt = scene_stable_dt(s);
         if (s->t + dt >= t_end) dt = t_end - s->t;
         else if (s->t + 1.5 * dt > t_end) dt = 0.5 * (t_end - s->t); /* avoid a sliver of a last step */

@@ -342,13 +342,26 @@ function h.scene(o)
   return s
 end
 
-h.load = function(path)
-  local ok, s = pcall(core.load, path)
-  if not ok then error(s, 2) end
+-- A scene made outside Lua (a checkpoint, the dashboard's built-in demo) becomes the current scene.
+function h._adopt(s)
   local st = s:_state()
   st.events, st.mats, st.frame = {}, {}, 0
   h._last_scene = s
   return s
+end
+
+h.load = function(path)
+  local ok, s = pcall(core.load, path)
+  if not ok then error(s, 2) end
+  return h._adopt(s)
+end
+
+-- A host that draws between steps (the dashboard) runs scene code in a
+-- coroutine; s:run and s:step hand control back after every step there.
+local host_yields -- the options do not change once the module is open
+local function host_yield()
+  if host_yields == nil then host_yields = core.options().yield and true or false end
+  if host_yields and coroutine.isyieldable() then coroutine.yield("step") end
 end
 
 local function material_id(s, m)
@@ -431,6 +444,7 @@ function S:step(n)
   check_number(n, "s:step: n", 0, 1e9)
   for _ = 1, n do
     fire_events(self)
+    host_yield()
     self:_step(1)
   end
   fire_events(self)
@@ -526,12 +540,24 @@ function S:run(o)
   frame()
   local next_frame = t0 + every
   local chunk = math.max(span / 200, 1e-12) -- so the progress bar moves between sparse frames
+  local yield_steps = opts.yield and coroutine.isyieldable()
   while self:stats().t < until_t - 1e-12 * math.max(1, until_t) do
     local now = self:stats().t
     local target = math.min(next_frame, until_t, now + chunk)
     local ev = st.events[1]
     if ev and ev.t > now and ev.t < target then target = ev.t end
-    self:_advance(target)
+    if yield_steps then
+      local t = self:stats().t
+      while t < target do -- one step at a time, the host draws in between
+        host_yield()
+        self:_advance(target, 1)
+        local t1 = self:stats().t
+        if t1 == t then break end -- no step was possible (dt underflow): as _advance would
+        t = t1
+      end
+    else
+      self:_advance(target)
+    end
     fire_events(self)
     local stt = self:stats()
     if stt.t >= next_frame - 1e-9 * every then

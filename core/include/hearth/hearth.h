@@ -162,6 +162,12 @@ const hearth_scene_def *hearth_scene_get_def(const hearth_scene *s);
 /// Change dt_max / cfl while running (values checked; returns status).
 hearth_status hearth_scene_set_dt_limits(hearth_scene *s, double cfl, double dt_max, hearth_error *err);
 
+/// Set the oven air temperature (degrees C; NaN removes the oven) and its heat
+/// transfer coefficient beta (W/(m^2 K), >= 0) while running. Values are checked
+/// as in hearth_scene_create; an oven makes the temperature field live
+/// (particles without a temperature start at room temperature).
+hearth_status hearth_scene_set_oven(hearth_scene *s, double temperature, double beta, hearth_error *err);
+
 /// Add a material from a plugin with named parameters (others take defaults).
 /// Besides the plugin's own schema, every material accepts the core's field
 /// properties: conductivity (W/(m K)), specific_heat (J/(kg K)), expansion
@@ -220,6 +226,10 @@ void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void 
 hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err);
 /// Advance until sim time t_end (the last step is shortened to land on it).
 hearth_status hearth_scene_advance(hearth_scene *s, double t_end, hearth_error *err);
+/// As hearth_scene_advance, but take at most max_steps steps (< 0: no limit), so
+/// a host can draw or take input between steps (the dashboard). Returns HEARTH_OK
+/// with the scene short of t_end when the limit was reached.
+hearth_status hearth_scene_advance_steps(hearth_scene *s, double t_end, long max_steps, hearth_error *err);
 
 typedef enum hearth_guard_state {
     HEARTH_GUARD_OK = 0,

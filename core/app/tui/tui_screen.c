@@ -1,0 +1,152 @@
+/* tui_screen.c: curses set-up and tear-down, signals, keys, cell output.
+ *
+ * Colours go through ncurses' alloc_pair (6.1+), which keeps a least recently
+ * used table of colour pairs: a heat map needs far more (fg, bg) pairs than a
+ * terminal has, but only the ones on the screen at once. */
+#define NCURSES_WIDECHAR 1
+#include "tui_screen.h"
+
+#include <curses.h>
+#include <langinfo.h>
+#include <locale.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "tui_prompt.h"
+
+static volatile sig_atomic_t stop_signal;
+static int open_now;
+
+static void on_stop(int sig) { stop_signal = sig; }
+
+static void on_crash(int sig) {
+    /* endwin is not async-signal-safe, but the process is going down and a
+     * terminal left in raw mode on the alternate screen is worse */
+    if (open_now) endwin();
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+int tui_screen_interrupted(void) { return (int)stop_signal; }
+
+int tui_screen_open(tui_color_mode *mode) {
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_stop;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGHUP, &sa, NULL);
+    sa.sa_handler = on_crash;
+    sa.sa_flags = SA_RESETHAND;
+    const int crash[] = {SIGSEGV, SIGABRT, SIGBUS, SIGFPE, SIGILL};
+    for (size_t i = 0; i < sizeof crash / sizeof crash[0]; i++) sigaction(crash[i], &sa, NULL);
+
+    setlocale(LC_ALL, ""); /* wide characters need the user's locale */
+    setlocale(LC_NUMERIC, "C"); /* but numbers keep their point, in printf and in Lua */
+    if (!getenv("ESCDELAY")) set_escdelay(25); /* Esc leaves the prompt at once, not after a second */
+    if (!initscr()) return -1;
+    open_now = 1;
+    cbreak();
+    noecho();
+    nonl();
+    keypad(stdscr, TRUE);
+    curs_set(0);
+    int colors = 0;
+    if (has_colors() && start_color() == OK) {
+        use_default_colors();
+        colors = COLORS;
+    }
+    const char *cs = nl_langinfo(CODESET);
+    int utf8 = cs && (!strcmp(cs, "UTF-8") || !strcmp(cs, "utf8"));
+    *mode = tui_pick_mode(getenv("TERM"), getenv("NO_COLOR"), utf8, colors);
+    if (*mode == TUI_PLAIN) *mode = TUI_ASCII; /* curses did start: a terminal after all */
+    return 0;
+}
+
+void tui_screen_close(void) {
+    if (!open_now) return;
+    open_now = 0;
+    curs_set(1);
+    endwin();
+}
+
+static int map_key(wint_t k, int is_key) {
+    if (is_key) {
+        switch (k) {
+        case KEY_LEFT: return TUI_KEY_LEFT;
+        case KEY_RIGHT: return TUI_KEY_RIGHT;
+        case KEY_UP: return TUI_KEY_UP;
+        case KEY_DOWN: return TUI_KEY_DOWN;
+        case KEY_HOME: return TUI_KEY_HOME;
+        case KEY_END: return TUI_KEY_END;
+        case KEY_BACKSPACE: return TUI_KEY_BACKSPACE;
+        case KEY_DC: return TUI_KEY_DELETE;
+        case KEY_ENTER: return TUI_KEY_ENTER;
+        case KEY_RESIZE: return TUI_SCREEN_RESIZE;
+        default: {
+            const char *name = keyname((int)k); /* Ctrl+arrows have no fixed codes */
+            if (name && !strcmp(name, "kLFT5")) return TUI_KEY_WORD_LEFT;
+            if (name && !strcmp(name, "kRIT5")) return TUI_KEY_WORD_RIGHT;
+            if (name && !strcmp(name, "kDC5")) return TUI_KEY_DELETE_WORD_FORWARD;
+            return 0;
+        }
+        }
+    }
+    switch (k) {
+    case '\n': case '\r': return TUI_KEY_ENTER;
+    case '\t': return TUI_KEY_TAB;
+    case 127: case 8: return TUI_KEY_BACKSPACE;
+    case 1: return TUI_KEY_HOME;       /* Ctrl-A */
+    case 5: return TUI_KEY_END;        /* Ctrl-E */
+    case 2: return TUI_KEY_LEFT;       /* Ctrl-B */
+    case 6: return TUI_KEY_RIGHT;      /* Ctrl-F */
+    case 4: return TUI_KEY_DELETE;     /* Ctrl-D */
+    case 23: return TUI_KEY_DELETE_WORD_BACK; /* Ctrl-W */
+    case 21: return TUI_KEY_KILL_START;       /* Ctrl-U */
+    case 11: return TUI_KEY_KILL_END;         /* Ctrl-K */
+    case 16: return TUI_KEY_UP;        /* Ctrl-P */
+    case 14: return TUI_KEY_DOWN;      /* Ctrl-N */
+    case 27: { /* Esc alone, or Alt+key as Esc then the key */
+        wint_t n;
+        nodelay(stdscr, TRUE);
+        int r = get_wch(&n);
+        if (r == OK) {
+            if (n == 'b') return TUI_KEY_WORD_LEFT;
+            if (n == 'f') return TUI_KEY_WORD_RIGHT;
+            if (n == 'd') return TUI_KEY_DELETE_WORD_FORWARD;
+            if (n == 127 || n == 8) return TUI_KEY_DELETE_WORD_BACK;
+            unget_wch((wchar_t)n);
+        } else if (r == KEY_CODE_YES) {
+            ungetch((int)n);
+        }
+        return TUI_KEY_ESC;
+    }
+    default: return (int)k;
+    }
+}
+
+int tui_screen_key(int ms) {
+    timeout(ms);
+    wint_t k;
+    int r = get_wch(&k);
+    if (r == ERR) return 0;
+    return map_key(k, r == KEY_CODE_YES);
+}
+
+void tui_screen_cells(int x, int y, int w, int h, const tui_cell *cells, tui_color_mode m) {
+    for (int r = 0; r < h; r++)
+        for (int c = 0; c < w; c++) {
+            const tui_cell *e = &cells[(long)r * w + c];
+            wchar_t s[2] = {(wchar_t)e->ch, 0};
+            cchar_t cc;
+            int pair = 0;
+            if (m >= TUI_256 && (e->fg != TUI_DEFAULT || e->bg != TUI_DEFAULT)) {
+                pair = alloc_pair(e->fg, e->bg);
+                if (pair < 0) pair = 0;
+            }
+            setcchar(&cc, s, A_NORMAL, 0, &pair);
+            mvadd_wch(y + r, x + c, &cc);
+        }
+}

@@ -1,0 +1,237 @@
+#!/usr/bin/env bash
+# tui_test.sh CASE HEARTH SOURCE_ROOT: the dashboard driven through tmux as a
+# user would: a detached pane of a fixed size, send-keys, capture-pane.
+# Each case has its own tmux server (-L), so cases run in parallel safely.
+set -u
+case_name=$1
+hearth=$(realpath "$2")
+src=$3
+scene="$src/tests/tui/bake.lua"
+tmp=$(mktemp -d)
+sock="hearth-tui-$case_name-$$"
+cleanup() { tmux -L "$sock" kill-server 2>/dev/null; rm -rf "$tmp"; }
+trap cleanup EXIT
+fail() {
+    echo "FAIL: $*" >&2
+    echo "---- screen ----" >&2
+    tmux -L "$sock" capture-pane -p -t t >&2
+    echo "---- stderr ----" >&2
+    cat "$tmp/stderr.txt" 2>/dev/null >&2
+    [ -f "$tmp/exit.txt" ] && echo "exit status: $(cat "$tmp/exit.txt")" >&2
+    exit 1
+}
+command -v tmux >/dev/null || { echo "FAIL: tmux is not installed (scripts/test installs it)" >&2; exit 1; }
+
+# start ARGS...: hearth in a 120x40 pane; after it exits the pane records the
+# exit status, the terminal modes and stays open for inspection.
+start() {
+    local cmd="cd '$tmp' && env LANG=C.UTF-8 LC_ALL=C.UTF-8 TERM=${TUI_TERM:-tmux-256color} XDG_STATE_HOME='$tmp/state' '$hearth' $* 2>'$tmp/stderr.txt'; echo \$? > '$tmp/exit.txt'; stty -a > '$tmp/stty.txt'; sleep 60"
+    tmux -L "$sock" -f /dev/null new-session -d -x 120 -y 40 -s t "$cmd" || fail "tmux did not start"
+}
+screen() { tmux -L "$sock" capture-pane -p -t t; }
+# wait_for REGEX [SECONDS]: until the screen matches
+wait_for() {
+    local i n=$(( ${2:-10} * 10 ))
+    for ((i = 0; i < n; i++)); do
+        screen | grep -Eq -- "$1" && return 0
+        sleep 0.1
+    done
+    fail "the screen never showed /$1/"
+}
+keys() { tmux -L "$sock" send-keys -t t "$@"; }
+sim_time() { screen | sed -n '1s/.* t \([0-9.e+-]*\) s .*/\1/p'; }
+alive() { [ ! -f "$tmp/exit.txt" ] || fail "hearth exited ($(cat "$tmp/exit.txt"))"; }
+
+png_ok() { # file: PNG signature, IHDR of non-zero size, final IEND
+    python3 - "$1" <<'PY' || return 1
+import struct, sys
+b = open(sys.argv[1], "rb").read()
+assert b[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+assert b[12:16] == b"IHDR"
+w, h = struct.unpack(">II", b[16:24])
+assert w > 0 and h > 0, (w, h)
+assert b[-12:] == b"\x00\x00\x00\x00IEND\xaeB`\x82", "no IEND"
+PY
+}
+
+case "$case_name" in
+tui_space_advances_time)
+    start "'$scene'"
+    wait_for "paused"
+    t0=$(sim_time)
+    [ "$t0" = 0 ] || fail "the scene should start at t = 0, status shows '$t0'"
+    keys Space
+    wait_for "running"
+    wait_for " t [0-9.]*[1-9][0-9.e-]* s " 10
+    keys Space
+    wait_for "paused"
+    t1=$(sim_time)
+    sleep 0.5
+    t2=$(sim_time)
+    python3 -c "import sys; t1, t2 = float('$t1'), float('$t2'); sys.exit(not (t1 > 0 and t1 == t2))" ||
+        fail "time should advance while running and stop when paused: $t1 then $t2"
+    keys n
+    wait_for "step [0-9]+ " 5
+    sleep 0.3
+    t3=$(sim_time)
+    python3 -c "import sys; sys.exit(not (float('$t3') > float('$t2')))" || fail "n should step once: $t2 -> $t3"
+    ;;
+tui_field_cycle)
+    start "'$scene'"
+    wait_for "^temperature  \(2D"
+    keys f
+    wait_for "^boundary  \(2D" 5
+    keys F
+    sleep 0.3
+    right=$(screen | sed -n '3p' | awk '{print $NF}')
+    screen | sed -n '3p' | grep -q "pressure  (2D" && fail "F should change the right view's field"
+    keys f
+    wait_for "^velocity_x  \(2D|^speed  \(2D" 5
+    alive
+    ;;
+tui_prompt_changes_oven)
+    start "'$scene'"
+    wait_for "oven 180 degC"
+    keys :
+    wait_for "^lua>"
+    keys "s:oven(120)" Enter
+    wait_for "oven 120 degC" 5
+    screen | grep -q "oven 180" && fail "the old oven temperature is still shown"
+    # a run typed at the prompt runs while the screen goes on, then pauses
+    keys "s:run{until_t = 0.05}" Enter
+    wait_for "the scene's run finished at t = 0.05 s" 15
+    wait_for "paused" 5
+    # multi-line input and print to the log
+    keys "print(greeting," Enter
+    wait_for "^>>" 5
+    keys "'and more')" Enter
+    wait_for "hello from bake and more" 5
+    # Tab completes hearth names
+    keys "h.sce" Tab
+    wait_for "^lua> h\.scene" 5
+    keys C-u Escape
+    # the history is kept across sessions
+    grep -q "s:oven(120)" "$tmp/state/hearth/history" || fail "no history file with the command"
+    ;;
+tui_lua_error_survives)
+    start "'$scene'"
+    wait_for "paused"
+    keys :
+    keys "x = = 1" Enter
+    wait_for "error: prompt:1: unexpected symbol near '='" 5
+    keys "error('boom')" Enter
+    wait_for "error: prompt:1: boom" 5
+    keys "s:set_dt(99)" Enter
+    wait_for "error: .*cfl" 5
+    keys Escape Space
+    wait_for "running" 5
+    wait_for " t [0-9.]*[1-9][0-9.e-]* s " 10
+    alive
+    ;;
+tui_save_png)
+    start "'$scene'"
+    wait_for "paused"
+    keys n
+    keys s
+    wait_for "saved hearth-out/bake/left_" 10
+    n=0
+    for f in "$tmp"/hearth-out/bake/*.png; do
+        [ -f "$f" ] || continue
+        png_ok "$f" || fail "$f does not decode"
+        n=$((n + 1))
+    done
+    [ "$n" -eq 2 ] || fail "expected 2 PNG files, found $n: $(ls "$tmp/hearth-out/bake")"
+    keys c
+    wait_for "checkpoint hearth-out/bake/checkpoint_" 5
+    [ -s "$tmp/hearth-out/bake/checkpoint_000001.bin" ] || fail "no checkpoint file"
+    ;;
+tui_resize)
+    start "'$scene'"
+    wait_for "paused"
+    tmux -L "$sock" resize-window -t t -x 60 -y 20 || fail "resize-window"
+    wait_for "terminal too small: 60x20" 5
+    screen | grep -q "paused" && fail "the dashboard is still drawn at 60x20"
+    tmux -L "$sock" resize-window -t t -x 120 -y 40
+    wait_for "paused" 5
+    screen | grep -q "too small" && fail "the size message stayed at 120x40"
+    screen | grep -q "^temperature  (2D" || fail "the views are not back"
+    ;;
+tui_quit_restores)
+    start "'$scene'"
+    wait_for "paused"
+    keys n
+    keys q
+    wait_for "Quit\? y quits" 5
+    keys x
+    sleep 0.3
+    alive
+    keys q
+    wait_for "Quit\? y quits" 5
+    keys y
+    for _ in $(seq 50); do [ -f "$tmp/exit.txt" ] && break; sleep 0.1; done
+    [ -f "$tmp/exit.txt" ] || fail "hearth did not exit after q, y"
+    [ "$(cat "$tmp/exit.txt")" = 0 ] || fail "exit status $(cat "$tmp/exit.txt")"
+    sleep 0.2
+    [ "$(tmux -L "$sock" display -p -t t '#{alternate_on}')" = 0 ] || fail "the alternate screen is still on"
+    grep -Eq '(^| )icanon( |$)' "$tmp/stty.txt" && grep -Eq '(^| )echo( |$)' "$tmp/stty.txt" ||
+        fail "terminal modes not restored: $(cat "$tmp/stty.txt")"
+    ;;
+tui_ctrl_c_restores)
+    start "'$scene'"
+    wait_for "paused"
+    keys Space
+    wait_for "running"
+    keys C-c
+    for _ in $(seq 50); do [ -f "$tmp/exit.txt" ] && break; sleep 0.1; done
+    [ -f "$tmp/exit.txt" ] || fail "hearth did not exit on Ctrl-C"
+    [ "$(cat "$tmp/exit.txt")" = 130 ] || fail "exit status $(cat "$tmp/exit.txt"), expected 130"
+    [ "$(tmux -L "$sock" display -p -t t '#{alternate_on}')" = 0 ] || fail "the alternate screen is still on"
+    grep -Eq '(^| )icanon( |$)' "$tmp/stty.txt" || fail "terminal modes not restored"
+    ;;
+tui_not_a_terminal)
+    "$hearth" "$scene" >"$tmp/out.txt" 2>"$tmp/err.txt"
+    st=$?
+    [ $st -ne 0 ] || fail "hearth with stdout not a terminal should refuse"
+    grep -q "hearth run SCENE.lua" "$tmp/err.txt" && grep -q "hearth repl" "$tmp/err.txt" ||
+        fail "the refusal should point to hearth run and hearth repl: $(cat "$tmp/err.txt")"
+    "$hearth" >"$tmp/out.txt" 2>"$tmp/err.txt" && fail "hearth (no scene) into a file should refuse too"
+    ;;
+tui_dumb_line_mode)
+    TUI_TERM=dumb start "'$scene'"
+    wait_for "line mode" 5
+    wait_for "^t [0-9.e-]+ s  step [0-9]+ .*running" 5
+    keys "print(greeting)" Enter
+    wait_for "^hello from bake" 5
+    keys "quit" Enter
+    for _ in $(seq 50); do [ -f "$tmp/exit.txt" ] && break; sleep 0.1; done
+    [ "$(cat "$tmp/exit.txt" 2>/dev/null)" = 0 ] || fail "quit should end line mode with status 0"
+    ;;
+tui_guard_pauses)
+    # cfl = 4 breaks the wave CFL condition: the guard stops the scene's run
+    start "'$src/tests/lua/guard.lua'"
+    wait_for "paused"
+    keys Space
+    wait_for "the stability guard stopped the run \(paused\)" 15
+    wait_for "guard STOPPED" 5
+    wait_for "paused" 5
+    keys :
+    keys "print('still here')" Enter
+    wait_for "^.*still here" 5
+    alive
+    ;;
+tui_crash_restores)
+    start "'$scene'"
+    wait_for "paused"
+    shell=$(tmux -L "$sock" display -p -t t '#{pane_pid}')
+    pid=$(pgrep -P "$shell" | head -1)
+    [ -n "$pid" ] || fail "no hearth process under the pane"
+    kill -ABRT "$pid"
+    for _ in $(seq 50); do [ -f "$tmp/exit.txt" ] && break; sleep 0.1; done
+    [ "$(cat "$tmp/exit.txt" 2>/dev/null)" = 134 ] || fail "SIGABRT should end hearth with status 134"
+    [ "$(tmux -L "$sock" display -p -t t '#{alternate_on}')" = 0 ] || fail "the alternate screen is still on"
+    grep -Eq '(^| )icanon( |$)' "$tmp/stty.txt" && grep -Eq '(^| )echo( |$)' "$tmp/stty.txt" ||
+        fail "terminal modes not restored after SIGABRT: $(cat "$tmp/stty.txt")"
+    ;;
+*) fail "unknown case $case_name" ;;
+esac
+echo "ok"
