@@ -4,7 +4,7 @@
 -- matrix reads:  cell status=ok|guard steps=N max_speed=V nonfinite=K rollbacks=R diag=...
 local h = require "hearth"
 local P = h.params { plugin = "elastic", param = "none", value = 0, speed = 0, temperature = -999, expansion = 0,
-  gas_rate = 0, porosity = -1, steps = 60, cfl_ = 0.5, guard_ = "stop" }
+  gas_rate = 0, porosity = -1, saturation = -1, steps = 60, cfl_ = 0.5, guard_ = "stop" }
 
 local s = h.scene { dim = 2, dx = 1 / 32, box = { { 0, 0 }, { 1, 1 } }, cfl = P.cfl_, guard = P.guard_ }
 local params = {}
@@ -12,9 +12,12 @@ if P.param ~= "none" then params[P.param] = P.value end
 if P.expansion > 0 then params.expansion = P.expansion end
 if P.gas_rate > 0 then params.gas_rate = P.gas_rate end
 if P.porosity >= 0 then params.porosity = P.porosity end
+if P.saturation >= 0 then -- water that moves, evaporates and pushes back
+  params.water_diffusivity, params.evaporation, params.water_stiffness = 1e-8, 1e-4, 1e4
+end
 local m = h.material(P.plugin, params)
 s:add { shape = h.box({ 0.4, 0.15 }, { 0.6, 0.35 }), material = m, ppc = 4, velocity = { 0, -P.speed },
-  temperature = P.temperature > -274 and P.temperature or nil }
+  temperature = P.temperature > -274 and P.temperature or nil, saturation = P.saturation >= 0 and P.saturation or nil }
 s:collider { shape = h.plane({ 0, 0.1 }, { 0, 1 }), mode = "separate", friction = 0.3 }
 
 local ok, e = pcall(s.step, s, P.steps)

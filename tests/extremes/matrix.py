@@ -83,8 +83,8 @@ def cells(schema):
             out.append((pl, "temperature", f"{T:g} degC", {"temperature": str(T), "expansion": "10"}, None))
         for n in (1e-6, 0.99):  # gas porosity needs the CO2 field: a leavening material at 40 degC
             out.append((pl, "porosity", fmt(n), {"porosity": repr(n), "gas_rate": "0.01", "temperature": "40"}, None))
-        for sat in ("0", "1"):
-            out.append((pl, "saturation", sat, None, "skip: saturation is not a live field yet (water transport)"))
+        for sat in ("0", "1"):  # water diffusing, evaporating and pushing back (water_stiffness)
+            out.append((pl, "saturation", sat, {"saturation": sat}, None))
     if "elastic" in schema:
         out.append(("elastic", "nu (extra)", "0.499", {"param": "nu", "value": "0.499", "speed": "5"}, None))
     out.extend(rollback_cells())
