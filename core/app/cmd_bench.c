@@ -4,7 +4,8 @@
  * can be compared in one run (scripts/bench/compare_reference.sh): a block
  * filling [0.2,0.8]^dim of the unit box at 8 particles per cell (4 in 2D),
  * neo-Hookean E = 1e5 Pa, nu = 0.3, rho = 1000, gravity, sticky walls,
- * dt = 1e-4 * 64 / cells. */
+ * dt = 1e-4 * 64 / cells. With --fields the same particles also carry heat
+ * (an oven), or heat, CO2 and water (scripts/bench/fields_overhead.sh). */
 #include <stdio.h>
 #include <string.h>
 
@@ -14,13 +15,23 @@
 
 int cmd_bench(int argc, char **argv) {
     long threads = 0, cells = 64, steps = 40, dim = 3;
+    const char *fields = "none";
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
+        if (!strcmp(a, "--fields") && i + 1 < argc) {
+            fields = argv[++i];
+            if (strcmp(fields, "none") && strcmp(fields, "heat") && strcmp(fields, "all")) {
+                fprintf(stderr, "hearth bench: --fields %s; valid: none, heat (an oven), all (heat, CO2 and water)\n", fields);
+                return 2;
+            }
+            continue;
+        }
         if (!strcmp(a, "--help")) {
-            printf("usage: hearth bench [--threads N] [--cells N] [--steps N] [--dim 2|3]\n"
+            printf("usage: hearth bench [--threads N] [--cells N] [--steps N] [--dim 2|3] [--fields none|heat|all]\n"
                    "Steps an elastic block filling [0.2,0.8]^dim of a unit box with N cells per side\n"
                    "(default 64: about 440k particles in 3D) and prints JSON with particles, steps,\n"
-                   "threads, seconds, particle_steps_per_s and bytes_per_particle.\n");
+                   "threads, seconds, particle_steps_per_s and bytes_per_particle.\n"
+                   "--fields heat adds an oven (temperature); all adds leavening CO2 and water too.\n");
             return 0;
         }
         if (i + 1 >= argc) {
@@ -46,11 +57,16 @@ int cmd_bench(int argc, char **argv) {
     d.dt_max = 1e-4 * 64.0 / cells;
     d.cfl = 0.5;
     d.seed = 7;
+    const int heat = strcmp(fields, "none") != 0, all = !strcmp(fields, "all");
+    if (heat) {
+        d.oven_temperature = 180;
+        d.oven_beta = 10;
+    }
     hearth_error err;
     hearth_scene *s = hearth_scene_create(&d, &err);
-    const char *names[] = {"E", "nu", "density"};
-    const double vals[] = {1e5, 0.3, 1000};
-    int mat = s ? hearth_scene_add_material(s, "elastic", names, vals, 3, &err) : -1;
+    const char *names[] = {"E", "nu", "density", "gas_rate", "water_diffusivity", "evaporation", "water_stiffness"};
+    const double vals[] = {1e5, 0.3, 1000, 1e-3, 1e-10, 1e-6, 1e3};
+    int mat = s ? hearth_scene_add_material(s, "elastic", names, vals, all ? 7 : 3, &err) : -1;
     const double c[3] = {0.5, 0.5, dim == 3 ? 0.5 : 0.0}, h[3] = {0.3, 0.3, 0.3};
     hearth_shape *box = hearth_shape_box(c, h);
     int n = mat >= 0 && box ? hearth_scene_seed_shape(s, mat, box, dim == 3 ? 8 : 4, 0.5, NULL, &err) : -1;
@@ -75,8 +91,9 @@ int cmd_bench(int argc, char **argv) {
         return rc == HEARTH_ERR_GUARD ? 3 : 1;
     }
     printf("{\"particles\": %d, \"steps\": %ld, \"threads\": %d, \"seconds\": %.4f, \"particle_steps_per_s\": %.6g, "
-           "\"bytes_per_particle\": %.1f, \"dim\": %ld, \"cells\": %ld}\n",
-           n, steps, hearth_get_threads(), secs, (double)n * steps / secs, (double)hearth_bytes_allocated() / n, dim, cells);
+           "\"bytes_per_particle\": %.1f, \"dim\": %ld, \"cells\": %ld, \"fields\": \"%s\"}\n",
+           n, steps, hearth_get_threads(), secs, (double)n * steps / secs, (double)hearth_bytes_allocated() / n, dim, cells,
+           hearth_scene_fields(s));
     hearth_scene_destroy(s);
     return 0;
 }
