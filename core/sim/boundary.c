@@ -99,6 +99,20 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
 #pragma omp parallel for schedule(dynamic, 2) if (n >= SCENE_PARALLEL_MIN)
         for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) {
             const pblock pb = s->pb[s->colour_pb[q]];
+            /* most particle blocks lie inside the body: skip those whose tile has no boundary node */
+            int bc[3], any = 0;
+            grid_block_coords(g, pb.block, bc);
+            for (int a = 0; a < GRID_T && !any; a++)
+                for (int b = 0; b < GRID_T && !any; b++)
+                    for (int c = 0; c < (D == 3 ? GRID_T : 1) && !any; c++) {
+                        const int gi[3] = {bc[0] * GRID_B + a, bc[1] * GRID_B + b, D == 3 ? bc[2] * GRID_B + c : 0};
+                        const int slot = g->slot[grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B)];
+                        if (slot < 0) continue;
+                        const int l = D == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
+                                             : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
+                        any = grid_block(g, slot)[CH_CG_R * NPB + l] >= 0;
+                    }
+            if (!any) continue;
             for (int i = pb.start; i < pb.end; i++) {
                 const double *x = X + 3 * i;
                 int base[3] = {0, 0, 0};
