@@ -20,10 +20,10 @@ local press = s:collider { shape = h.box({ 0.1, 0.36 }, { 0.5, 0.5 }), mode = "s
 local function check(name, ok, detail)
   print(("check %s %s %s"):format(name, ok and "ok" or "FAIL", detail or ""))
 end
-local function top_of_block() -- highest y on x = 0.3 where there is material
-  local top = 0
-  for i, d in ipairs(s:line("density", { 0.3, 0 }, { 0.3, 1 }, 129)) do
-    if d == d and d > 0 then top = (i - 1) / 128 end
+local function top_of_block() -- highest particle within 2 cm of x = 0.3 (under the press)
+  local x, top = s:positions(), 0
+  for i = 1, #x, 3 do
+    if math.abs(x[i] - 0.3) < 0.02 and x[i + 1] < 0.6 and x[i + 1] > top then top = x[i + 1] end
   end
   return top
 end
