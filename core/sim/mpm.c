@@ -161,9 +161,14 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k,
             memcpy(pt.F, F, sizeof pt.F);
             pt.dt = dt;
             pt.temperature = Tcol ? Tcol[i] : NAN;
-            pt.porosity = pt.saturation = NAN;
+            pt.saturation = NAN;
             pt.p = scene_params_for(s, mat[i], i, pscratch);
             pt.state = state ? state + (size_t)i * stride : NULL;
+            /* porosity n^p = J^P - 1 + n^p_0 (Ding et al. §5.4) from the state the step starts from */
+            pt.porosity = (ms->m->needs & HEARTH_NEEDS_POROSITY)
+                              ? gas_porosity(ms->m->plastic_J ? ms->m->plastic_J(pt.p, pt.state) : 1.0,
+                                             ms->core[CP_POROSITY0])
+                              : NAN;
             int code = ms->m->stress(&pt, tau);
             if (code) {
                 record_fail(pp, i, FAIL_PLUGIN, code);

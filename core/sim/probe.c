@@ -94,7 +94,7 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
     memcpy(pt.F, pcold(ps, PC_F) + 9 * i, sizeof pt.F);
     pt.dt = 0;
     pt.temperature = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE)[i] : NAN;
-    pt.porosity = pt.saturation = NAN;
+    pt.saturation = NAN;
     double pscratch[SCENE_MAX_PARAMS];
     pt.p = scene_params_for(s, m, i, pscratch);
     pt.state = NULL;
@@ -102,6 +102,9 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
         memcpy(state_copy, pcold(ps, PC_STATE) + (size_t)i * ps->state_stride, sizeof(double) * (size_t)ps->state_stride);
         pt.state = state_copy;
     }
+    pt.porosity = (ms->m->needs & HEARTH_NEEDS_POROSITY)
+                      ? gas_porosity(ms->m->plastic_J ? ms->m->plastic_J(pt.p, pt.state) : 1.0, ms->core[CP_POROSITY0])
+                      : NAN;
     if (ms->m->stress(&pt, tau)) {
         for (int k = 0; k < 9; k++) tau[k] = NAN;
     }
