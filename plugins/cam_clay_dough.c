@@ -49,6 +49,21 @@
  * §6.5 seen through b^E = F^E F^E^T; V (the rest-frame rotation) drops out
  * because the law is isotropic.
  *
+ * ---- closed pores --------------------------------------------------------------
+ * Eq. 12 is symmetric in p, so a dough under more pressure than
+ * tau_y/sqrt(M) compacts plastically, and n^p = J^P - 1 + n^p_0 (§5.4) can
+ * fall to zero: the skeleton has closed its pores. Then the gas pressure of
+ * eq. 13, n^g R theta / (J n^p), which the core adds explicitly after this
+ * return, grows without bound and blows the body apart (seen: a 7 cm loaf
+ * under its own weight). A solid cannot compact by more than its pore
+ * volume, so plastic compaction is capped: J^P >= 1 - c n^p_0 with c the
+ * parameter `compaction` (default 0.5: at most half the pores close, so
+ * compaction at most doubles the gas pressure). n^p_0 is recovered from the
+ * porosity the core passes, n^p_0 = n^p - (J^P - 1). Past the cap the
+ * volume change stays elastic (the volumetric strain of the return is
+ * shifted back towards the trial's). This is outside eq. 12; it only acts
+ * on a return that would take n^p below (1 - c) n^p_0.
+ *
  * ---- state ---------------------------------------------------------------------
  * Seven doubles: b^E (xx, yy, zz, xy, yz, zx) and J^P. Why b^E and not F^E:
  * the stress and the return depend only on b^E, its update f b f^T is
@@ -73,7 +88,7 @@
 
 #include "tensor.h"
 
-enum { P_E, P_NU, P_TAU_Y, P_ETA, P_DENSITY, P_COUNT };
+enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_COUNT };
 
 /* Defaults: the cookie column of Ding et al. Table 2 (E 4e4, tau_y 20,
  * eta 500, density 500); nu is not in Table 2. */
@@ -84,6 +99,9 @@ static const hearth_param params[P_COUNT] = {
                  20, 1e-6, 1e9},
     [P_ETA] = {"eta", "Pa^3 s", "viscoplastic penalty eta of §5.3 (g = f^2/2, f in Pa^2); 0 = rate-independent", 500, 0,
                1e12},
+    [P_COMPACTION] = {"compaction", "1",
+                      "fraction of the initial pore volume plastic compaction may close (J^P >= 1 - compaction n^p_0)",
+                      0.5, 0, 1},
     [P_DENSITY] = {"density", "kg/m^3", "mass density at rest (Ding et al. Table 2: 500)", 500, 1e-3, 1e5},
 };
 
@@ -221,7 +239,19 @@ static int stress(hearth_point *pt, double tau[9]) {
     if (!(l[0] > 0) || !isfinite(l[2])) return E_STATE;
     for (int i = 0; i < 3; i++) eps[i] = 0.5 * log(l[i]);
     if (pt->dt > 0) {
+        const double ev0 = eps[0] + eps[1] + eps[2];
         if (return_map(prm, porosity_coefficient(n), pt->dt, eps)) {
+            /* Closed pores: plastic compaction may close at most the fraction
+             * `compaction` of the initial pore volume n^p_0 = n^p - (J^P - 1),
+             * i.e. J^P >= 1 - compaction n^p_0 (header). The rest of the
+             * volume change stays elastic. */
+            const double n0 = n - (st[S_JP] - 1);
+            const double jmin = 1 - prm[P_COMPACTION] * n0;
+            const double ev = eps[0] + eps[1] + eps[2];
+            if (n0 > 0 && jmin > 0 && J / exp(ev) < jmin && ev > ev0) { /* ev > ev0: the return compacted */
+                const double shift = (fmax(log(J / jmin), ev0) - ev) / 3;
+                for (int i = 0; i < 3; i++) eps[i] += shift;
+            }
             double d[3];
             for (int i = 0; i < 3; i++) d[i] = exp(2 * eps[i]);
             if (!isfinite(d[0] + d[1] + d[2]) || !(d[0] > 0 && d[1] > 0 && d[2] > 0)) return E_SOLVE;

@@ -226,6 +226,8 @@ h.library.dough = dough_lookup("dough", function(params, curves)
   return params
 end)
 h.library.oven = dough_lookup("oven", function(_, _, oven) return oven end)
+-- what Table 2's eta and alpha^g are multiplied by (a scene converting its own Table 2 numbers)
+h.library.dough_scale = { eta = dough_data.ETA_SCALE, gas = dough_data.GAS_SCALE }
 
 -- ---- scene parameters -----------------------------------------------------
 
