@@ -153,6 +153,49 @@ static void from_eigen(const double Q[9], const double d[3], double A[9]) {
         }
 }
 
+/* Symmetric eigen-decomposition S = Q diag(l) Q^T by cyclic Jacobi, for
+ * this plugin's hot path: hearth_tensor's t3_sym_eigen is the same method,
+ * but sorts and takes the rotation's tangent through hypot, which made up
+ * a third of a 3D dough step. Here the tangent uses sqrt (with a guard for
+ * a huge zeta, where 1 + zeta^2 would overflow), nothing is sorted (the
+ * return map does not need an order), and a 2D (plane-strain) b^E, whose
+ * xz and yz entries are exactly 0, takes one rotation. Stops when the
+ * off-diagonal part is below 1e-15 of the whole, as t3_sym_eigen does. */
+static void sym_eigen(const double S[9], double l[3], double Q[9]) {
+    double a[9];
+    for (int i = 0; i < 3; i++)
+        for (int j = i; j < 3; j++) a[3 * i + j] = a[3 * j + i] = S[3 * i + j];
+    for (int i = 0; i < 9; i++) Q[i] = i % 4 == 0;
+    double norm2 = 0;
+    for (int i = 0; i < 9; i++) norm2 += a[i] * a[i];
+    const double tol2 = 1e-30 * norm2;
+    static const int PP[3] = {0, 0, 1}, QQ[3] = {1, 2, 2};
+    for (int sweep = 0; sweep < 50; sweep++) {
+        if (2 * (a[1] * a[1] + a[2] * a[2] + a[5] * a[5]) <= tol2) break;
+        for (int k = 0; k < 3; k++) {
+            const int p = PP[k], q = QQ[k], r = 3 - p - q;
+            const double apq = a[3 * p + q];
+            if (apq == 0) continue;
+            const double zeta = (a[4 * q] - a[4 * p]) / (2 * apq);
+            const double t = fabs(zeta) > 1e150 ? 0.5 / zeta
+                                                : (zeta >= 0 ? 1 : -1) / (fabs(zeta) + sqrt(1 + zeta * zeta));
+            const double c = 1 / sqrt(1 + t * t), sn = t * c;
+            const double arp = a[3 * r + p], arq = a[3 * r + q];
+            a[3 * r + p] = a[3 * p + r] = c * arp - sn * arq;
+            a[3 * r + q] = a[3 * q + r] = sn * arp + c * arq;
+            a[4 * p] -= t * apq;
+            a[4 * q] += t * apq;
+            a[3 * p + q] = a[3 * q + p] = 0;
+            for (int i = 0; i < 3; i++) {
+                const double qp = Q[3 * i + p], qq = Q[3 * i + q];
+                Q[3 * i + p] = c * qp - sn * qq;
+                Q[3 * i + q] = sn * qp + c * qq;
+            }
+        }
+    }
+    l[0] = a[0], l[1] = a[4], l[2] = a[8];
+}
+
 /* The multiplier gamma of the return (header): root of phi(gamma) = 0 with
  * phi(0) = f_tr > 0. Pm = sqrt(M) |p_tr|, a = 2 K M, b = 6 mu, ty2 = tau_y^2,
  * c = eta/dt (0 for rate-independent). */
@@ -235,8 +278,8 @@ static int stress(hearth_point *pt, double tau[9]) {
         t3_mul_abt(fB, f, B);
     }
     double l[3], Q[9], eps[3];
-    t3_sym_eigen(B, l, Q);
-    if (!(l[0] > 0) || !isfinite(l[2])) return E_STATE;
+    sym_eigen(B, l, Q);
+    if (!(l[0] > 0 && l[1] > 0 && l[2] > 0) || !isfinite(l[0] + l[1] + l[2])) return E_STATE;
     for (int i = 0; i < 3; i++) eps[i] = 0.5 * log(l[i]);
     if (pt->dt > 0) {
         const double ev0 = eps[0] + eps[1] + eps[2];
