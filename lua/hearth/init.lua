@@ -238,6 +238,29 @@ function h.mix(t)
   return r
 end
 
+-- h.library.dough.<name>: the baked goods of Ding et al. Table 2 with Fig. 8's
+-- temperature curves, as parameters for the cam_clay_dough plugin;
+-- h.library.oven.<name>: their oven, pan and dough temperatures. The unit
+-- and scale choices are documented in lua/hearth/dough.lua.
+local dough_data = require "hearth.dough"
+local function dough_lookup(what, pick)
+  return setmetatable({}, { __index = function(_, name)
+    if not dough_data.paper[name] then
+      local near = nearest(tostring(name), dough_data.paper)
+      error(("h.library.%s: no preset '%s'%s (valid: %s)"):format(what, tostring(name),
+        near and ("; did you mean '" .. near .. "'?") or "", table.concat(sorted_keys(dough_data.paper), ", ")), 2)
+    end
+    return pick(dough_data.preset(name)) -- a fresh table each time, so a scene may change its copy
+  end })
+end
+h.library.dough = dough_lookup("dough", function(params, curves)
+  for k, pts in pairs(curves) do params[k] = h.curve(pts) end
+  return params
+end)
+h.library.oven = dough_lookup("oven", function(_, _, oven) return oven end)
+-- what Table 2's eta and alpha^g are multiplied by (a scene converting its own Table 2 numbers)
+h.library.dough_scale = { eta = dough_data.ETA_SCALE, gas = dough_data.GAS_SCALE }
+
 -- ---- scene parameters -----------------------------------------------------
 
 --- Named defaults that `hearth run scene.lua --set name=value` overrides.

@@ -1,0 +1,112 @@
+-- hearth.dough: the baked goods of Ding et al. 2019 (Table 2, Fig. 8) as
+-- presets for the cam_clay_dough plugin. Scenes use them through
+--   h.material("cam_clay_dough", h.library.dough.cookie)   -- parameters and curves
+--   h.library.oven.cookie                                     -- oven, pan and dough temperatures
+-- Each preset keeps Table 2's column as `paper` next to the numbers used.
+--
+-- Choices where Table 2 does not say (units, theta scale):
+--  * Temperatures are degrees C: theta_0 (dough), ambient theta (oven air)
+--    and conductive theta (tray or pan) are taken as printed. The oven's beta
+--    is Table 2's ambient beta, the tray's beta its conductive beta, both in
+--    W/(m^2 K).
+--  * E, density, specific heat and kappa are SI as printed. Specific heat 20
+--    J/(kg K) and kappa 30-250 W/(m K) are ~1/100 and ~100x a real dough's:
+--    the paper's scaling, which bakes a cookie in seconds of simulated time;
+--    kept, because it is what makes the scenes affordable.
+--  * tau_y(theta) follows Fig. 8's shape with Table 2's "yield surface" value
+--    y as the fridge value: x1 at theta_1 = 5 degC (fridge), x0.8 at
+--    theta_2 = 20 degC (room), x0.3 at theta_3 = 35 degC (fat melts), x20 at
+--    theta_4 = 70 degC (starch gelatinises), constant beyond, irreversible
+--    (the core evaluates it at the highest temperature a particle reached,
+--    so a set cookie stays set).
+--  * eta: g = f^2/2 with f in Pa^2 (eq. 12, §6.5) makes eta a Pa^3 s
+--    quantity. Table 2's eta taken in those units returns to the surface
+--    within one step at the scenes' steps (rate-independent), so nothing
+--    spreads over time. eta here is ETA_SCALE = 4000 times Table 2's value at
+--    the fridge point, then Fig. 8's non-increasing shape: x1, x0.5, x0.1 and
+--    x0.05 at theta_1..theta_4, irreversible. The cookie's 500 -> 2e6 Pa^3 s
+--    makes a 2.5 cm dough ball spread over ~1 s, the time the oven takes to
+--    set it, so the oven temperature decides how far it spreads (§7.2).
+--  * alpha^g: the core integrates dn^g/dt = alpha^g R0 exp(-((theta -
+--    theta_r)/dtheta)^2) in mol/m^3 with the SI gas constant. Table 2's
+--    alpha^g in mol/(kg s) would build ~1e5 Pa of CO2 pressure against a
+--    dough that yields at tens of Pa, and blow it apart. gas_rate here is
+--    GAS_SCALE = 1/600 of Table 2's value (cookie: 0.015 -> 2.5e-5), which
+--    gives pressures of a few tau_y: the dough rises, and sets before it
+--    tears. (At 1/300 the cookie in a 110 degC oven tears: the porous dough
+--    weakens in tension as n^p grows, eq. 12, so an unset dough that keeps
+--    making gas runs away.)
+--  * Per good (TUNE below), where Table 2 taken as above fails in SI at
+--    kitchen size: bread's tau_y x10 (200 Pa at the fridge point), because
+--    a 7 cm loaf under gravity loads its base with rho g H ~ 340 Pa and at
+--    20 Pa it spreads into a puddle before the oven sets it; and bread's
+--    gas x0.4 (alpha^g / 1500): the loaf's centre sits near theta_r for
+--    seconds, and at 1/600 it keeps making CO2 past the runaway described
+--    above and tears (seen at t = 3.5 s). Muffin and lava cake gas x0.1: a batter
+--    with tau_y = 1-2 Pa tears within 0.5 s at 1/600 (the same runaway).
+--    With these factors the muffins do not dome (their batter settles in
+--    the cups; see the report in scripts/scenes/baking/muffins.lua).
+--  * nu (not in Table 2) 0.3; initial porosity n^p_0 0.1; thermal expansion
+--    c lambda (not in Table 2) 0.1 Pa/K from the dough's start temperature,
+--    2 Pa/K for the marshmallow (its visible swelling, §7.2).
+--  * Table 2's dx and dt are the paper's 3D resolutions; the scenes pick
+--    their own (coarser) dx, and dt follows the CFL limit.
+local ETA_SCALE, GAS_SCALE = 4000, 1 / 600
+local THETA = { 5, 20, 35, 70 }            -- Fig. 8: fridge, room, fat melting, gelatinisation (degC)
+local TAU_SHAPE = { 1, 0.8, 0.3, 20 }      -- Fig. 8 left, relative to Table 2's value
+local ETA_SHAPE = { 1, 0.5, 0.1, 0.05 }    -- Fig. 8 right, relative to ETA_SCALE x Table 2's value
+
+-- Table 2, one column per good (N/A as nil).
+local paper = {
+  bread = { E = 2e3, density = 500, specific_heat = 20, kappa = 100, yield = 20, eta = 500, theta0 = 1,
+    ambient_theta = 100, ambient_beta = 100, conductive_theta = 100, conductive_beta = 150, alpha_g = 0.03,
+    theta_r = 40, dtheta = 20, dx = 0.01, dt = 4e-3 },
+  cookie = { E = 4e4, density = 500, specific_heat = 20, kappa = 30, yield = 20, eta = 500, theta0 = 0,
+    ambient_theta = 150, ambient_beta = 25, conductive_theta = 150, conductive_beta = 35, alpha_g = 0.015,
+    theta_r = 40, dtheta = 20, dx = 0.0051, dt = 3e-4 },
+  pancake = { E = 4e4, density = 500, specific_heat = 20, kappa = 200, yield = 2, eta = 50, theta0 = 0,
+    ambient_theta = nil, ambient_beta = nil, conductive_theta = 200, conductive_beta = 70, alpha_g = 0.02,
+    theta_r = 30, dtheta = 20, dx = 0.016, dt = 5e-4 },
+  muffin = { E = 4e4, density = 500, specific_heat = 20, kappa = 100, yield = 2, eta = 10, theta0 = 0,
+    ambient_theta = 105, ambient_beta = 75, conductive_theta = 105, conductive_beta = 150, alpha_g = 0.03,
+    theta_r = 40, dtheta = 20, dx = 0.008, dt = 2e-4 },
+  lava_cake = { E = 2e3, density = 500, specific_heat = 20, kappa = 250, yield = 1, eta = 10, theta0 = 0,
+    ambient_theta = 100, ambient_beta = 110, conductive_theta = 100, conductive_beta = 110, alpha_g = 0.025,
+    theta_r = 20, dtheta = 10, dx = 0.0075, dt = 4e-4 },
+  smore = { E = 4e4, density = 500, specific_heat = 200, kappa = 150, yield = 200, eta = 60, theta0 = 0,
+    ambient_theta = 400, ambient_beta = 120, conductive_theta = 400, conductive_beta = 360, alpha_g = nil,
+    theta_r = nil, dtheta = nil, dx = 0.003, dt = 2e-4 },
+}
+
+-- per-good factors on top of the global ones (see the header)
+local TUNE = { bread = { tau = 10, gas = 0.4 }, muffin = { gas = 0.1 }, lava_cake = { gas = 0.1 } }
+
+local D = { paper = paper, TUNE = TUNE, ETA_SCALE = ETA_SCALE, GAS_SCALE = GAS_SCALE, THETA = THETA, TAU_SHAPE = TAU_SHAPE,
+  ETA_SHAPE = ETA_SHAPE }
+
+local function curve(base, shape)
+  local pts = { irreversible = true }
+  for i, T in ipairs(THETA) do pts[i] = { T, base * shape[i] } end
+  return pts
+end
+
+--- The preset of one good: plain parameters, curve point lists (for h.curve), and its oven.
+function D.preset(name)
+  local c = paper[name]
+  if not c then return nil end
+  local tune = TUNE[name] or {}
+  local params = {
+    E = c.E, nu = 0.3, density = c.density,
+    specific_heat = c.specific_heat, conductivity = c.kappa,
+    gas_rate = c.alpha_g and c.alpha_g * GAS_SCALE * (tune.gas or 1) or 0,
+    reaction_temperature = c.theta_r or 40, reaction_width = c.dtheta or 20,
+    porosity = 0.1,
+    expansion = name == "smore" and 2 or 0.1, reference_temperature = c.theta0,
+  }
+  local curves = { tau_y = curve(c.yield * (tune.tau or 1), TAU_SHAPE), eta = curve(c.eta * ETA_SCALE, ETA_SHAPE) }
+  local oven = { temperature = c.ambient_theta, beta = c.ambient_beta, pan_temperature = c.conductive_theta,
+    pan_beta = c.conductive_beta, dough_temperature = c.theta0 }
+  return params, curves, oven
+end
+
+return D

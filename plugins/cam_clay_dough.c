@@ -1,0 +1,357 @@
+/* cam_clay_dough.c: the solid phase of dough and batter (Ding et al. 2019,
+ * "A Thermomechanical Material Point Method for Baking and Cooking",
+ * §5.2-5.3 and §6.5): Hencky elasticity with a viscoplastic, porosity
+ * dependent modified Cam-clay yield surface.
+ *
+ * ---- elasticity (§5.2) ---------------------------------------------------
+ *   eps = 1/2 log(b^E),  b^E = F^E F^E^T          (elastic Hencky strain)
+ *   Psi = 1/2 lambda (tr eps)^2 + mu eps:eps,  so tau = C eps = lambda tr(eps) I + 2 mu eps.
+ * The thermal expansion term of eq. 10 (-c lambda J theta) is added by the
+ * core (HEARTH_NEEDS_THERMAL_EXPANSION, core parameter `expansion`), and so
+ * is the gas pressure of eq. 13; this plugin returns the elastic Kirchhoff
+ * stress tau^{s,E} only, and the yield condition acts on it (§6.5).
+ *
+ * ---- yield surface (eq. 12) -------------------------------------------------
+ *   f(tau) = M(n^p) p^2 + q^2 - tau_y^2 <= 0,
+ *   M(n)   = 9 / (4 ln^2(1/n) (7/2 n + 1)),
+ *   p = -tr(tau)/3,  q = sqrt(3/2) |tau + p I|.
+ * n^p is the gas porosity the core passes in pt->porosity
+ * (n^p = J^P - 1 + n^p_0, §5.4, from this plugin's plastic_J). M -> 0 as
+ * n^p -> 0, so the surface becomes von Mises q <= tau_y; but only like
+ * 1/ln^2: M(1e-9) = 5.2e-3 still, so the exact von Mises limit is n^p = 0,
+ * which this plugin also accepts. A NaN porosity (the field is off, e.g. a
+ * solver that does not fill it) is read as n^p = 0, i.e. von Mises.
+ *
+ * ---- the return map (§6.5) --------------------------------------------------
+ * Trial: b_tr = f b_n f^T with f = I + dt grad_v (the same f the core applies
+ * to F, so F^E_tr = f F^E_n). With eps_tr = 1/2 log b_tr, tau_tr = C eps_tr,
+ *   tau = argmin 1/2 (tau_tr - tau) : C^-1 (tau_tr - tau) + (dt/eta) g(f(tau)),
+ *   g(f) = 1/2 f^2 for f > 0, else 0                             (eta > 0)
+ *   tau = argmin 1/2 (tau_tr - tau) : C^-1 (tau_tr - tau), f(tau) <= 0   (eta = 0).
+ * Everything is isotropic, so tau shares the eigenvectors of b_tr and the
+ * problem lives in principal (Hencky) space. There C^-1 splits into a bulk
+ * and a shear part, (p - p_tr)^2 / (2K) + (q - q_tr)^2 / (6 mu), K = lambda
+ * + 2/3 mu, and since f depends on the deviator only through q, the
+ * deviator returns radially (s = q/q_tr s_tr). Stationarity gives, with a
+ * multiplier gamma >= 0 (gamma = (dt/eta) f for eta > 0):
+ *   p(gamma) = p_tr / (1 + 2 K M gamma),   q(gamma) = q_tr / (1 + 6 mu gamma),
+ *   phi(gamma) = M p(gamma)^2 + q(gamma)^2 - tau_y^2 - (eta/dt) gamma = 0.
+ * phi is strictly decreasing with phi(0) = f_tr > 0, so the root is unique;
+ * eta = 0 is the closest-point projection onto f = 0 (and the viscous
+ * solution tends to it as eta -> 0). The root is bracketed by
+ * [0, max(gamma_p, gamma_q)] (at the root one of M p^2, q^2 carries at least
+ * half of tau_y^2) and found by Newton on the reciprocal-norm form
+ *   chi(gamma) = 1/sqrt(M p^2 + q^2) - 1/sqrt(tau_y^2 + (eta/dt) gamma),
+ * which is exactly linear for a purely deviatoric von Mises return (one
+ * step) and mildly curved otherwise; a step that leaves the bracket is
+ * replaced by bisection. Then eps = C^-1 tau (eps_vol = -p/K, eps_dev = s /
+ * (2 mu)) and b^E = U exp(2 Lambda) U^T: this is F^E = U exp(Lambda) V^T of
+ * §6.5 seen through b^E = F^E F^E^T; V (the rest-frame rotation) drops out
+ * because the law is isotropic.
+ *
+ * ---- closed pores --------------------------------------------------------------
+ * Eq. 12 is symmetric in p, so a dough under more pressure than
+ * tau_y/sqrt(M) compacts plastically, and n^p = J^P - 1 + n^p_0 (§5.4) can
+ * fall to zero: the skeleton has closed its pores. Then the gas pressure of
+ * eq. 13, n^g R theta / (J n^p), which the core adds explicitly after this
+ * return, grows without bound and blows the body apart (seen: a 7 cm loaf
+ * under its own weight). A solid cannot compact by more than its pore
+ * volume, so plastic compaction is capped: J^P >= 1 - c n^p_0 with c the
+ * parameter `compaction` (default 0.5: at most half the pores close, so
+ * compaction at most doubles the gas pressure). n^p_0 is recovered from the
+ * porosity the core passes, n^p_0 = n^p - (J^P - 1). Past the cap the
+ * volume change stays elastic (the volumetric strain of the return is
+ * shifted back towards the trial's). This is outside eq. 12; it only acts
+ * on a return that would take n^p below (1 - c) n^p_0.
+ *
+ * ---- state ---------------------------------------------------------------------
+ * Seven doubles: b^E (xx, yy, zz, xy, yz, zx) and J^P. Why b^E and not F^E:
+ * the stress and the return depend only on b^E, its update f b f^T is
+ * objective as it stands, it is symmetric (6 doubles), and its eigen
+ * decomposition (Jacobi) replaces the SVD of F^E. J^P = det F / det F^E is
+ * stored after each return from the core's total F, so the porosity of
+ * §5.4 never drifts from the deformation: plastic_J returns it.
+ *
+ * ---- units -------------------------------------------------------------------------
+ * g = 1/2 f^2 with f in Pa^2 makes eta a "viscosity" in Pa^3 s, exactly as
+ * eq. 12 and §6.5 are written. The rate of plastic flow is then (1/eta) f
+ * df/dtau, so a given eta is more viscous for a small tau_y: eta / tau_y^2
+ * (in s/Pa) is the time scale that matters. Table 2's values (tau_y 20, eta
+ * 500 for bread and cookies; tau_y 1, eta 10 for lava cake) are taken in
+ * these units; see lua/hearth/dough.lua.
+ *
+ * dt = 0 evaluates the stress of the stored state without advancing it.
+ */
+#include <hearth/material.h>
+#include <math.h>
+#include <string.h>
+
+#include "tensor.h"
+
+enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_COUNT };
+
+/* Defaults: the cookie column of Ding et al. Table 2 (E 4e4, tau_y 20,
+ * eta 500, density 500); nu is not in Table 2. */
+static const hearth_param params[P_COUNT] = {
+    [P_E] = {"E", "Pa", "Young's modulus of the dough (Ding et al. Table 2: 2e3 bread .. 4e4 cookie)", 4e4, 1e-2, 1e12},
+    [P_NU] = {"nu", "1", "Poisson's ratio (not in Ding et al.; 0.3 by default)", 0.3, 0.0, 0.49},
+    [P_TAU_Y] = {"tau_y", "Pa", "yield stress tau_y of the Cam-clay surface (eq. 12); give it a temperature curve for Fig. 8",
+                 20, 1e-6, 1e9},
+    [P_ETA] = {"eta", "Pa^3 s", "viscoplastic penalty eta of §5.3 (g = f^2/2, f in Pa^2); 0 = rate-independent", 500, 0,
+               1e12},
+    [P_COMPACTION] = {"compaction", "1",
+                      "fraction of the initial pore volume plastic compaction may close (J^P >= 1 - compaction n^p_0)",
+                      0.5, 0, 1},
+    [P_DENSITY] = {"density", "kg/m^3", "mass density at rest (Ding et al. Table 2: 500)", 500, 1e-3, 1e5},
+};
+
+enum { S_XX, S_YY, S_ZZ, S_XY, S_YZ, S_ZX, S_JP, S_COUNT };
+
+enum {
+    E_INVERTED = 1, /* det F <= 0 or not finite */
+    E_STEP = 2,     /* grad_v not finite, or det(I + dt grad_v) <= 0 */
+    E_STATE = 3,    /* stored b^E not finite or not positive definite */
+    E_POROSITY = 4, /* porosity outside [0, 1) */
+    E_SOLVE = 5     /* the return map produced a non-finite strain (overflow) */
+};
+
+static const double SQRT2 = 1.41421356237309504880;
+
+static void lame(const double *p, double *mu, double *lambda) {
+    const double E = p[P_E], nu = p[P_NU];
+    *mu = E / (2 * (1 + nu));
+    *lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+}
+
+/* The porosity coefficient of eq. 12; 0 at n = 0 (von Mises). */
+static double porosity_coefficient(double n) {
+    if (!(n > 0)) return 0;
+    const double l = log(1 / n);
+    return 9.0 / (4.0 * l * l * (3.5 * n + 1.0));
+}
+
+static void sym_to_full(const double *s, double B[9]) {
+    B[0] = s[S_XX], B[4] = s[S_YY], B[8] = s[S_ZZ];
+    B[1] = B[3] = s[S_XY];
+    B[5] = B[7] = s[S_YZ];
+    B[2] = B[6] = s[S_ZX];
+}
+
+static void full_to_sym(const double B[9], double *s) {
+    s[S_XX] = B[0], s[S_YY] = B[4], s[S_ZZ] = B[8];
+    s[S_XY] = 0.5 * (B[1] + B[3]);
+    s[S_YZ] = 0.5 * (B[5] + B[7]);
+    s[S_ZX] = 0.5 * (B[2] + B[6]);
+}
+
+/* Q diag(d) Q^T, written symmetric. */
+static void from_eigen(const double Q[9], const double d[3], double A[9]) {
+    for (int r = 0; r < 3; r++)
+        for (int c = r; c < 3; c++) {
+            const double v = Q[3 * r] * d[0] * Q[3 * c] + Q[3 * r + 1] * d[1] * Q[3 * c + 1] + Q[3 * r + 2] * d[2] * Q[3 * c + 2];
+            A[3 * r + c] = A[3 * c + r] = v;
+        }
+}
+
+/* Symmetric eigen-decomposition S = Q diag(l) Q^T by cyclic Jacobi, for
+ * this plugin's hot path: hearth_tensor's t3_sym_eigen is the same method,
+ * but sorts and takes the rotation's tangent through hypot, which made up
+ * a third of a 3D dough step. Here the tangent uses sqrt (with a guard for
+ * a huge zeta, where 1 + zeta^2 would overflow), nothing is sorted (the
+ * return map does not need an order), and a 2D (plane-strain) b^E, whose
+ * xz and yz entries are exactly 0, takes one rotation. Stops when the
+ * off-diagonal part is below 1e-15 of the whole, as t3_sym_eigen does. */
+static void sym_eigen(const double S[9], double l[3], double Q[9]) {
+    double a[9];
+    for (int i = 0; i < 3; i++)
+        for (int j = i; j < 3; j++) a[3 * i + j] = a[3 * j + i] = S[3 * i + j];
+    for (int i = 0; i < 9; i++) Q[i] = i % 4 == 0;
+    double norm2 = 0;
+    for (int i = 0; i < 9; i++) norm2 += a[i] * a[i];
+    const double tol2 = 1e-30 * norm2;
+    static const int PP[3] = {0, 0, 1}, QQ[3] = {1, 2, 2};
+    for (int sweep = 0; sweep < 50; sweep++) {
+        if (2 * (a[1] * a[1] + a[2] * a[2] + a[5] * a[5]) <= tol2) break;
+        for (int k = 0; k < 3; k++) {
+            const int p = PP[k], q = QQ[k], r = 3 - p - q;
+            const double apq = a[3 * p + q];
+            if (apq == 0) continue;
+            const double zeta = (a[4 * q] - a[4 * p]) / (2 * apq);
+            const double t = fabs(zeta) > 1e150 ? 0.5 / zeta
+                                                : (zeta >= 0 ? 1 : -1) / (fabs(zeta) + sqrt(1 + zeta * zeta));
+            const double c = 1 / sqrt(1 + t * t), sn = t * c;
+            const double arp = a[3 * r + p], arq = a[3 * r + q];
+            a[3 * r + p] = a[3 * p + r] = c * arp - sn * arq;
+            a[3 * r + q] = a[3 * q + r] = sn * arp + c * arq;
+            a[4 * p] -= t * apq;
+            a[4 * q] += t * apq;
+            a[3 * p + q] = a[3 * q + p] = 0;
+            for (int i = 0; i < 3; i++) {
+                const double qp = Q[3 * i + p], qq = Q[3 * i + q];
+                Q[3 * i + p] = c * qp - sn * qq;
+                Q[3 * i + q] = sn * qp + c * qq;
+            }
+        }
+    }
+    l[0] = a[0], l[1] = a[4], l[2] = a[8];
+}
+
+/* The multiplier gamma of the return (header): root of phi(gamma) = 0 with
+ * phi(0) = f_tr > 0. Pm = sqrt(M) |p_tr|, a = 2 K M, b = 6 mu, ty2 = tau_y^2,
+ * c = eta/dt (0 for rate-independent). */
+static double solve_gamma(double Pm, double a, double qt, double b, double ty2, double c) {
+    const double ty = sqrt(ty2);
+    double gp = Pm > ty / SQRT2 && a > 0 ? (SQRT2 * Pm / ty - 1) / a : 0;
+    double gq = qt > ty / SQRT2 ? (SQRT2 * qt / ty - 1) / b : 0;
+    double lo = 0, hi = fmax(gp, gq);
+    if (!(hi > 0) || !isfinite(hi)) return 0;
+    double g = 0;
+    for (int it = 0; it < 200; it++) {
+        const double up = 1 / (1 + a * g), uq = 1 / (1 + b * g);
+        const double P = Pm * up, Q = qt * uq;
+        const double r2 = P * P + Q * Q, r = sqrt(r2);
+        const double y2 = ty2 + c * g, y = sqrt(y2);
+        const double chi = 1 / r - 1 / y; /* increasing in gamma, < 0 below the root */
+        if (chi < 0) lo = g;
+        else if (chi > 0) hi = g;
+        else return g;
+        /* d(1/r)/dg = -(1/r^3) (P dP + Q dQ), dP = -a P up, dQ = -b Q uq; d(1/y)/dg = -c / (2 y^3) */
+        const double dr = (a * P * P * up + b * Q * Q * uq) / (r2 * r);
+        const double dchi = dr + 0.5 * c / (y2 * y);
+        double gn = dchi > 0 ? g - chi / dchi : 0.5 * (lo + hi);
+        if (!(gn > lo && gn < hi)) gn = 0.5 * (lo + hi); /* safeguard: bisection */
+        if (fabs(gn - g) <= 4e-16 * gn || hi - lo <= 4e-16 * hi) return gn;
+        g = gn;
+    }
+    return g;
+}
+
+/* Return-mapped principal Hencky strains from trial ones (in place).
+ * Returns 1 when plastic flow happened. */
+static int return_map(const double *prm, double M, double dt, double eps[3]) {
+    double mu, lambda;
+    lame(prm, &mu, &lambda);
+    const double K = lambda + 2.0 / 3.0 * mu;
+    const double ev = eps[0] + eps[1] + eps[2];
+    const double pt = -K * ev; /* p = -tr(tau)/3 = -K tr(eps) */
+    double e[3], s2 = 0;
+    for (int i = 0; i < 3; i++) {
+        e[i] = eps[i] - ev / 3; /* deviatoric strain; s = 2 mu e */
+        s2 += e[i] * e[i];
+    }
+    const double qt = 2 * mu * sqrt(1.5 * s2);
+    const double ty = prm[P_TAU_Y], ty2 = ty * ty;
+    const double ftr = M * pt * pt + qt * qt - ty2;
+    if (!(ftr > 0)) return 0; /* inside (or on) the surface: elastic */
+    const double eta = prm[P_ETA];
+    const double c = dt > 0 && eta > 0 ? eta / dt : 0;
+    const double g = solve_gamma(sqrt(M) * fabs(pt), 2 * K * M, qt, 6 * mu, ty2, c);
+    const double p = pt / (1 + 2 * K * M * g), ratio = 1 / (1 + 6 * mu * g);
+    for (int i = 0; i < 3; i++) eps[i] = -p / (3 * K) + ratio * e[i];
+    return 1;
+}
+
+static void init(const double *p, double *state) {
+    (void)p;
+    state[S_XX] = state[S_YY] = state[S_ZZ] = 1;
+    state[S_XY] = state[S_YZ] = state[S_ZX] = 0;
+    state[S_JP] = 1;
+}
+
+static int stress(hearth_point *pt, double tau[9]) {
+    const double *prm = pt->p;
+    const double J = t3_det(pt->F);
+    if (!(J > 0) || !isfinite(J)) return E_INVERTED;
+    double *st = pt->state;
+    for (int i = 0; i < S_COUNT; i++)
+        if (!isfinite(st[i])) return E_STATE;
+    const double n = pt->porosity;
+    if (n < 0 || n >= 1) return E_POROSITY; /* NaN reads as 0: von Mises */
+    double B[9];
+    sym_to_full(st, B);
+    if (pt->dt > 0) { /* trial b_tr = f b f^T */
+        double f[9], fB[9];
+        for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + pt->dt * pt->grad_v[i];
+        const double jf = t3_det(f);
+        if (!(jf > 0) || !isfinite(jf)) return E_STEP;
+        t3_mul(f, B, fB);
+        t3_mul_abt(fB, f, B);
+    }
+    double l[3], Q[9], eps[3];
+    sym_eigen(B, l, Q);
+    if (!(l[0] > 0 && l[1] > 0 && l[2] > 0) || !isfinite(l[0] + l[1] + l[2])) return E_STATE;
+    for (int i = 0; i < 3; i++) eps[i] = 0.5 * log(l[i]);
+    if (pt->dt > 0) {
+        const double ev0 = eps[0] + eps[1] + eps[2];
+        if (return_map(prm, porosity_coefficient(n), pt->dt, eps)) {
+            /* Closed pores: plastic compaction may close at most the fraction
+             * `compaction` of the initial pore volume n^p_0 = n^p - (J^P - 1),
+             * i.e. J^P >= 1 - compaction n^p_0 (header). The rest of the
+             * volume change stays elastic. */
+            const double n0 = n - (st[S_JP] - 1);
+            const double jmin = 1 - prm[P_COMPACTION] * n0;
+            const double ev = eps[0] + eps[1] + eps[2];
+            if (n0 > 0 && jmin > 0 && J / exp(ev) < jmin && ev > ev0) { /* ev > ev0: the return compacted */
+                const double shift = (fmax(log(J / jmin), ev0) - ev) / 3;
+                for (int i = 0; i < 3; i++) eps[i] += shift;
+            }
+            double d[3];
+            for (int i = 0; i < 3; i++) d[i] = exp(2 * eps[i]);
+            if (!isfinite(d[0] + d[1] + d[2]) || !(d[0] > 0 && d[1] > 0 && d[2] > 0)) return E_SOLVE;
+            from_eigen(Q, d, B);
+        }
+        full_to_sym(B, st);
+        st[S_JP] = J / exp(eps[0] + eps[1] + eps[2]); /* J^P = J / J^E */
+    }
+    double mu, lambda;
+    lame(prm, &mu, &lambda);
+    const double tv = lambda * (eps[0] + eps[1] + eps[2]);
+    const double d[3] = {tv + 2 * mu * eps[0], tv + 2 * mu * eps[1], tv + 2 * mu * eps[2]};
+    from_eigen(Q, d, tau);
+    return 0;
+}
+
+/* Small-strain P-wave speed sqrt((lambda + 2 mu)/rho): the Hencky law's
+ * tangent at rest; plastic flow only softens it. */
+static double wave_speed(const double *p, const double *state) {
+    (void)state;
+    double mu, lambda;
+    lame(p, &mu, &lambda);
+    return sqrt((lambda + 2 * mu) / p[P_DENSITY]);
+}
+
+static double plastic_J(const double *p, const double *state) {
+    (void)p;
+    return state ? state[S_JP] : 1.0;
+}
+
+static const char *describe_error(int code) {
+    switch (code) {
+    case E_INVERTED: return "inverted element (det F <= 0)";
+    case E_STEP: return "grad_v is not finite, or the step inverts: det(I + dt grad_v) <= 0";
+    case E_STATE: return "elastic state b^E is not finite or not positive definite";
+    case E_POROSITY: return "porosity n^p outside [0, 1) (Ding et al. eq. 12 needs 0 <= n^p < 1)";
+    case E_SOLVE: return "the return map overflowed: elastic Hencky strain beyond exp range";
+    default: return "unknown error";
+    }
+}
+
+static const hearth_material material = {
+    .abi_version = HEARTH_MATERIAL_ABI,
+    .struct_size = sizeof(hearth_material),
+    .real_size = sizeof(double),
+    .name = "cam_clay_dough",
+    .summary = "dough: Hencky elasticity, viscoplastic porous Cam-clay yield (Ding et al. 2019 eq. 12, §6.5)",
+    .params = params,
+    .nparams = P_COUNT,
+    .state_size = S_COUNT,
+    .needs = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_THERMAL_EXPANSION,
+    .init = init,
+    .stress = stress,
+    .wave_speed = wave_speed,
+    .describe_error = describe_error,
+    .plastic_J = plastic_J,
+};
+
+HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void); /* for -Wmissing-prototypes */
+HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void) { return &material; }

@@ -1,0 +1,81 @@
+-- Bread (Ding et al. 2019, Fig. 15): three loaves of the same dough baked side
+-- by side, one intact, one with a slit scored on top, one with two.
+--   hearth run scripts/scenes/baking/bread.lua [--set dim=3] [--set until_t=4]
+-- Writes, under hearth-out/bread/: heat_%04d.png (temperature) and
+-- bread.csv: per frame, each loaf's height and each slit's gap width (the
+-- open width of the cut, measured across it just below the loaf's top).
+local h = require "hearth"
+local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth = 0.02, slit_width = 0.01, only = 0 }
+local d3 = P.dim == 3
+local dx = d3 and math.max(P.dx, 0.008) or P.dx
+local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
+
+local oven = h.library.oven.bread
+local TRAY, WIDTH, BODY, SPACING = 0.02, 0.08, 0.03, 0.14 -- m: tray, loaf width, straight part, loaf spacing
+local zc, ZW = 0.06, 0.06 -- 3D: loaves are extruded along z over +-ZW/2
+local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(3 * SPACING, 0.14, 0.12) },
+  oven = { temperature = oven.temperature, beta = oven.beta }, name = "bread" }
+h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta })
+local dough = h.material("cam_clay_dough", h.library.dough.bread)
+
+-- a loaf: a box with a round top (2D), extruded in 3D; slits are thin boxes cut from the top
+local loaves = {
+  { x = 0.5 * SPACING, slits = {} },
+  { x = 1.5 * SPACING, slits = { 0 } },
+  { x = 2.5 * SPACING, slits = { -0.018, 0.018 } },
+}
+local top0 = TRAY + BODY + WIDTH / 2
+for i, L in ipairs(loaves) do
+  if P.only > 0 and i ~= P.only then goto next end -- --set only=2: bake just that loaf (the tests do)
+  local shape
+  if d3 then
+    shape = h.box(v(L.x - WIDTH / 2, TRAY, zc - ZW / 2), v(L.x + WIDTH / 2, TRAY + BODY, zc + ZW / 2)) +
+      h.cylinder(v(L.x, TRAY + BODY, zc), { 0, 0, 1 }, WIDTH / 2, ZW / 2) -
+      h.box(v(L.x - WIDTH, TRAY - WIDTH, 0), v(L.x + WIDTH, TRAY, 0.12))
+  else
+    shape = h.shapes.loaf({ L.x, TRAY }, WIDTH, BODY)
+  end
+  for _, off in ipairs(L.slits) do
+    shape = shape - h.box(v(L.x + off - P.slit_width / 2, top0 - P.slit_depth, 0), v(L.x + off + P.slit_width / 2,
+      top0 + 0.01, 0.12))
+  end
+  s:add { shape = shape, material = dough, temperature = oven.dough_temperature, ppc = d3 and 8 or 4 }
+  ::next::
+end
+
+-- height of the material above the tray on the vertical line at x
+local function height(x)
+  local n = 1000
+  local d = s:line("density", v(x, TRAY, zc), v(x, 0.14, zc), n + 1)
+  local top = 0
+  for k, val in ipairs(d) do if val == val then top = (k - 1) * (0.14 - TRAY) / n end end
+  return top
+end
+-- the gap of a slit at x0: the empty run around x0 on a horizontal line
+-- a third of the slit depth below the loaf's current top beside the slit
+local function gap(x0)
+  local y = TRAY + math.min(height(x0 - 0.012), height(x0 + 0.012)) - P.slit_depth / 3
+  local n, span = 400, 0.03
+  local d = s:line("density", v(x0 - span, y, zc), v(x0 + span, y, zc), n + 1)
+  local mid = n // 2 + 1
+  if d[mid] == d[mid] then return 0 end -- closed: material at the slit's centre
+  local lo, hi = mid, mid
+  while lo > 1 and d[lo - 1] ~= d[lo - 1] do lo = lo - 1 end
+  while hi < n + 1 and d[hi + 1] ~= d[hi + 1] do hi = hi + 1 end
+  return (hi - lo + 2) * 2 * span / n
+end
+
+local rows = { "t,height_plain_m,height_one_slit_m,height_two_slits_m,gap_one_slit_m,gap_two_slits_left_m,gap_two_slits_right_m" }
+s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png" },
+  on_frame = function(f)
+    local r = { ("%.3f"):format(f.t) }
+    for _, L in ipairs(loaves) do
+      r[#r + 1] = ("%.5f"):format(height(L.x + (#L.slits == 1 and 0.02 or 0)))
+    end
+    r[#r + 1] = ("%.5f"):format(gap(loaves[2].x))
+    r[#r + 1] = ("%.5f"):format(gap(loaves[3].x + loaves[3].slits[1]))
+    r[#r + 1] = ("%.5f"):format(gap(loaves[3].x + loaves[3].slits[2]))
+    rows[#rows + 1] = table.concat(r, ",")
+    h.write("bread.csv", table.concat(rows, "\n") .. "\n")
+    print(rows[#rows])
+  end }

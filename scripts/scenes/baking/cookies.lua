@@ -1,0 +1,88 @@
+-- Cookies (Ding et al. 2019, Fig. 3): dough balls baked on a hot tray, a 3 x 3
+-- grid of leavener (alpha^g in Table 2 units: 0.015, 0.0075, 0) x oven
+-- temperature. Each oven is its own bake (the oven air is one temperature per
+-- scene), with the three leaveners side by side on one tray.
+--   hearth run scripts/scenes/baking/cookies.lua [--set dim=3] [--set ovens=150]
+--   [--set baseline=true]   gas off and rate-independent plasticity (eta = 0):
+--                           the Stomakhin-like comparison of Fig. 17
+-- Writes, under hearth-out/cookies/: oven_<T>/heat_%04d.png (the heat
+-- progress, Fig. 3's right column) and cookies.csv (final height, spread and
+-- top curvature per cookie; negative curvature = domed), series.csv (height
+-- and spread over time).
+local h = require "hearth"
+local P = h.params { dim = 2, dx = 0.005, until_t = 3, frames = 6, ovens = "190,150,110", leaveners = "0.015,0.0075,0",
+  baseline = false }
+local d3 = P.dim == 3
+local dx = d3 and math.max(P.dx, 0.01) or P.dx
+local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
+local function list(str)
+  local t = {}
+  for w in tostring(str):gmatch("[^,]+") do t[#t + 1] = tonumber(w) or error("not a number list: " .. str) end
+  return t
+end
+local ovens, leaveners = list(P.ovens), list(P.leaveners)
+
+local oven = h.library.oven.cookie
+local TRAY, SPACING, R, THICK = 0.02, 0.12, 0.03, 0.025 -- m: tray height, cookie spacing, dough radius and height
+local W = SPACING * #leaveners
+local zc = 0.06
+
+local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_per_m" }
+local series = { "oven_degC,leavener,t,height_m,spread_m,centre_temperature_degC" }
+for _, T in ipairs(ovens) do
+  local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.09, 0.12) },
+    oven = { temperature = T, beta = oven.beta }, name = "cookies" }
+  h.recipes.tray(s, TRAY, { temperature = T, beta = oven.pan_beta })
+  local xs = {}
+  for i, a in ipairs(leaveners) do
+    local d = h.library.dough.cookie
+    d.gas_rate = a * h.library.dough_scale.gas
+    if P.baseline then d.gas_rate, d.eta = 0, 0 end
+    xs[i] = (i - 0.5) * SPACING
+    s:add { shape = h.shapes.cookie(v(xs[i], TRAY + THICK / 2, zc), R, THICK), material = h.material("cam_clay_dough", d),
+      temperature = oven.dough_temperature, ppc = d3 and 8 or 4 }
+  end
+  local function measure(i)
+    local c = d3 and { xs[i], zc } or { xs[i] }
+    local function line_h(x) -- the height above the tray at x (in 3D on the plane z = zc)
+      local dd = s:line("density", v(x, TRAY, zc), v(x, 0.09, zc), 1401)
+      local top = 0
+      for k, val in ipairs(dd) do if val == val then top = (k - 1) * (0.09 - TRAY) / 1400 end end
+      return top
+    end
+    local hgt = line_h(c[1])
+    local yb = TRAY + 1.5 * dx
+    local dd = s:line("density", v(xs[i] - SPACING / 2, yb, zc), v(xs[i] + SPACING / 2, yb, zc), 241)
+    local lo, hi
+    for k, val in ipairs(dd) do if val == val then lo = lo or k; hi = k end end
+    local spread = lo and (hi - lo) * SPACING / 240 or 0
+    -- top curvature: a parabola through heights over the middle third of the spread
+    local n, S2, S4, T0, T2 = 9, 0, 0, 0, 0
+    local S0 = n
+    for k = 1, n do
+      local u = (k - 5) / 4 * spread / 6
+      local y = line_h(xs[i] + u)
+      S2, S4, T0, T2 = S2 + u * u, S4 + u ^ 4, T0 + y, T2 + y * u * u
+    end
+    local a = (S0 * T2 - S2 * T0) / (S0 * S4 - S2 * S2)
+    return hgt, spread, 2 * a
+  end
+  s:run { until_t = P.until_t, every = P.until_t / P.frames,
+    png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T) },
+    on_frame = function(f)
+      for i, a in ipairs(leaveners) do
+        local hgt, spread = measure(i)
+        local tc = s:probe("temperature", v(xs[i], TRAY + 0.01, zc))
+        series[#series + 1] = ("%g,%g,%.4f,%.5f,%.5f,%.2f"):format(T, a, f.t, hgt, spread, tc)
+      end
+      h.write("series.csv", table.concat(series, "\n") .. "\n")
+    end }
+  for i, a in ipairs(leaveners) do
+    local hgt, spread, curv = measure(i)
+    rows[#rows + 1] = ("%g,%g,%.3g,%.5f,%.5f,%.4f"):format(T, a, P.baseline and 0 or a * h.library.dough_scale.gas, hgt,
+      spread, curv)
+    print(("oven %g degC, leavener %g: height %.4f m, spread %.4f m, top curvature %.3f 1/m"):format(T, a, hgt, spread,
+      curv))
+  end
+  h.write("cookies.csv", table.concat(rows, "\n") .. "\n")
+end

@@ -1,0 +1,441 @@
+/* unit_dough.c: the cam_clay_dough plugin (Ding et al. 2019 §5.2-5.3, eq. 12,
+ * §6.5) through its ABI, against conditions computed here from the returned
+ * stress alone: the yield function, the KKT conditions of the closest-point
+ * projection, the first-order optimality of the viscoplastic minimisation,
+ * a closed-form von Mises radial return, frame indifference, and extremes.
+ *
+ * Every case starts from rest (b^E = I) and takes one step with
+ * f = I + dt L, so the trial elastic state is b_tr = f f^T and the trial
+ * Hencky strain eps_tr = 1/2 log(f f^T) is known without the plugin. */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#include "hearth/hearth.h"
+#include "hearth/material.h"
+#include "tensor.h"
+#include "test.h"
+
+enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, NP };
+enum { NSTATE = 7 };
+
+static const hearth_material *dough(void) {
+    hearth_error err = {0};
+    const hearth_plugin *pl = hearth_plugin_load("cam_clay_dough", &err);
+    if (!pl) {
+        fprintf(stderr, "%s\n", err.msg);
+        return NULL;
+    }
+    return hearth_plugin_material(pl);
+}
+
+static void lame(const double *p, double *mu, double *lambda) {
+    *mu = p[P_E] / (2 * (1 + p[P_NU]));
+    *lambda = p[P_E] * p[P_NU] / ((1 + p[P_NU]) * (1 - 2 * p[P_NU]));
+}
+
+static double norm9(const double *a) {
+    double s = 0;
+    for (int i = 0; i < 9; i++) s += a[i] * a[i];
+    return sqrt(s);
+}
+
+/* tau = C eps and eps = C^-1 tau for the isotropic Hencky law. */
+static void c_apply(const double *p, const double eps[9], double tau[9]) {
+    double mu, la;
+    lame(p, &mu, &la);
+    const double tr = eps[0] + eps[4] + eps[8];
+    for (int i = 0; i < 9; i++) tau[i] = 2 * mu * eps[i] + (i % 4 == 0 ? la * tr : 0);
+}
+static void c_inverse(const double *p, const double tau[9], double eps[9]) {
+    double mu, la;
+    lame(p, &mu, &la);
+    const double tr = tau[0] + tau[4] + tau[8];
+    for (int i = 0; i < 9; i++) eps[i] = (tau[i] - (i % 4 == 0 ? la / (3 * la + 2 * mu) * tr : 0)) / (2 * mu);
+}
+
+/* p, q, deviator s and the yield function of eq. 12. */
+static double coefficient(double n) {
+    if (!(n > 0)) return 0;
+    const double l = log(1 / n);
+    return 9.0 / (4.0 * l * l * (3.5 * n + 1.0));
+}
+static double yield_f(const double tau[9], double M, double ty, double *p_out, double *q_out, double s[9]) {
+    const double p = -(tau[0] + tau[4] + tau[8]) / 3;
+    for (int i = 0; i < 9; i++) s[i] = tau[i] + (i % 4 == 0 ? p : 0);
+    const double q = sqrt(1.5) * norm9(s);
+    if (p_out) *p_out = p;
+    if (q_out) *q_out = q;
+    return M * p * p + q * q - ty * ty;
+}
+
+/* The step f = R diag(exp(e)) R^T from rest: eps_tr = R diag(e) R^T. */
+static void trial(const double e[3], const double R[9], double f[9], double eps_tr[9]) {
+    double D[9] = {0}, RD[9], E[9] = {0}, RE[9];
+    for (int i = 0; i < 3; i++) D[4 * i] = exp(e[i]), E[4 * i] = e[i];
+    t3_mul(R, D, RD);
+    t3_mul_abt(RD, R, f);
+    t3_mul(R, E, RE);
+    t3_mul_abt(RE, R, eps_tr);
+}
+
+/* One step from rest with F = f; returns the plugin's code. */
+static int step_from_rest(const hearth_material *m, const double *p, const double f[9], double dt, double n, double T,
+                          double *state, double tau[9]) {
+    hearth_point pt;
+    m->init(p, state);
+    for (int i = 0; i < 9; i++) pt.grad_v[i] = (f[i] - (i % 4 == 0)) / dt, pt.F[i] = f[i];
+    pt.dt = dt;
+    pt.temperature = T;
+    pt.porosity = n;
+    pt.saturation = NAN;
+    pt.p = p;
+    pt.state = state;
+    for (int i = 0; i < 9; i++) tau[i] = NAN;
+    return m->stress(&pt, tau);
+}
+
+static uint64_t rng = 0x0d0c0ffee;
+static double uni(void) {
+    rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
+    return (double)(rng >> 11) * 0x1.0p-53;
+}
+static void random_rotation(double R[9]) {
+    double u[3] = {uni(), uni(), uni()};
+    t3_random_rotation(u, R);
+}
+
+/* A trial state outside the surface: principal log strains with a deviator
+ * well past yield and a volume change (either sign) of at most 2%. Plastic
+ * compaction is then at most 2%, short of the closed-pore cap (J^P >= 1 -
+ * 0.5 n^p_0 >= 0.975 for the porosities used), so these returns are eq. 12's
+ * alone. */
+static void random_outside(double e[3]) {
+    const double vol = (2 * uni() - 1) * 0.02;
+    double d[3], m = 0;
+    for (int i = 0; i < 3; i++) d[i] = (2 * uni() - 1) * 0.05, m += d[i] / 3;
+    for (int i = 0; i < 3; i++) e[i] = vol / 3 + d[i] - m;
+}
+
+/* eta = 0: the returned stress lies on the surface (|f| <= 1e-10 tau_y^2) and
+ * is the closest point: C^-1 (tau_tr - tau) = gamma df/dtau with gamma >= 0,
+ * to 1e-9 relative. */
+TEST(dough_closest_point) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL);
+    if (!m) return;
+    double worst_f = 0, worst_kkt = 0;
+    const double ns[] = {0.0, 0.05, 0.3, 0.7, 0.95};
+    for (int k = 0; k < 40; k++) {
+        const double p[NP] = {4e4, 0.3, 20 + 200 * uni(), 0, 0.5, 500};
+        const double n = ns[k % 5];
+        double e[3], R[9], f[9], eps_tr[9], tau_tr[9], tau[9], st[NSTATE];
+        random_outside(e);
+        random_rotation(R);
+        trial(e, R, f, eps_tr);
+        c_apply(p, eps_tr, tau_tr);
+        const double M = coefficient(n);
+        double s[9], pp, q;
+        if (!(yield_f(tau_tr, M, p[P_TAU_Y], NULL, NULL, s) > 0)) continue; /* only returns are of interest */
+        CHECK(step_from_rest(m, p, f, 1e-3, n, 20, st, tau) == 0);
+        const double fv = yield_f(tau, M, p[P_TAU_Y], &pp, &q, s);
+        worst_f = fmax(worst_f, fabs(fv) / (p[P_TAU_Y] * p[P_TAU_Y]));
+        double d[9], dtau[9], nrm[9], r[9];
+        for (int i = 0; i < 9; i++) dtau[i] = tau_tr[i] - tau[i];
+        c_inverse(p, dtau, d);
+        for (int i = 0; i < 9; i++) nrm[i] = 3 * s[i] - (i % 4 == 0 ? 2 * M * pp / 3 : 0); /* df/dtau */
+        double dn = 0, nn = 0;
+        for (int i = 0; i < 9; i++) dn += d[i] * nrm[i], nn += nrm[i] * nrm[i];
+        const double gamma = dn / nn;
+        CHECK(gamma > 0);
+        for (int i = 0; i < 9; i++) r[i] = d[i] - gamma * nrm[i];
+        worst_kkt = fmax(worst_kkt, norm9(r) / norm9(d));
+    }
+    printf("  worst |f|/tau_y^2 = %.3g (need <= 1e-10), worst KKT residual |dEps - gamma df/dtau|/|dEps| = %.3g (need <= 1e-9)\n",
+           worst_f, worst_kkt);
+    CHECK(worst_f <= 1e-10);
+    CHECK(worst_kkt <= 1e-9);
+}
+
+/* eta > 0: the stationarity of 1/2 |tau_tr - tau|_{C^-1}^2 + dt/eta g(f(tau)),
+ *   C^-1 (tau_tr - tau) = (dt/eta) f(tau) df/dtau,  f(tau) > 0, to 1e-9. */
+TEST(dough_viscoplastic_optimality) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL);
+    if (!m) return;
+    double worst = 0, fmin_rel = INFINITY;
+    const double etas[] = {1e-2, 1, 100, 1e4, 1e6};
+    for (int k = 0; k < 40; k++) {
+        const double p[NP] = {4e4, 0.3, 20, etas[k % 5], 0.5, 500};
+        const double n = 0.05 + 0.8 * uni(), dt = 1e-3;
+        double e[3], R[9], f[9], eps_tr[9], tau_tr[9], tau[9], st[NSTATE], s[9], pp, q;
+        random_outside(e);
+        random_rotation(R);
+        trial(e, R, f, eps_tr);
+        c_apply(p, eps_tr, tau_tr);
+        const double M = coefficient(n);
+        if (!(yield_f(tau_tr, M, p[P_TAU_Y], NULL, NULL, s) > 0)) continue;
+        CHECK(step_from_rest(m, p, f, dt, n, 20, st, tau) == 0);
+        const double fv = yield_f(tau, M, p[P_TAU_Y], &pp, &q, s);
+        fmin_rel = fmin(fmin_rel, fv / (p[P_TAU_Y] * p[P_TAU_Y]));
+        double d[9], dtau[9], r[9];
+        for (int i = 0; i < 9; i++) dtau[i] = tau_tr[i] - tau[i];
+        c_inverse(p, dtau, d);
+        for (int i = 0; i < 9; i++) r[i] = d[i] - dt / p[P_ETA] * fmax(fv, 0) * (3 * s[i] - (i % 4 == 0 ? 2 * M * pp / 3 : 0));
+        worst = fmax(worst, norm9(r) / norm9(d));
+    }
+    printf("  worst |C^-1(tau_tr - tau) - dt/eta f df/dtau| / |C^-1(tau_tr - tau)| = %.3g (need <= 1e-9); smallest "
+           "f/tau_y^2 = %.3g (viscous: stays outside)\n",
+           worst, fmin_rel);
+    CHECK(worst <= 1e-9);
+    CHECK(fmin_rel > 0);
+}
+
+/* Inside the surface the trial state is the answer: tau = C eps_tr, J^P = 1. */
+TEST(dough_inside_unchanged) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL);
+    if (!m) return;
+    double worst = 0;
+    for (int k = 0; k < 20; k++) {
+        const double p[NP] = {4e4, 0.3, 20, k % 2 ? 500 : 0, 0.5, 500};
+        double e[3], R[9], f[9], eps_tr[9], tau_tr[9], tau[9], st[NSTATE], s[9];
+        for (int i = 0; i < 3; i++) e[i] = (2 * uni() - 1) * 2e-4; /* |tau| ~ 10 Pa < tau_y */
+        random_rotation(R);
+        trial(e, R, f, eps_tr);
+        c_apply(p, eps_tr, tau_tr);
+        const double n = 0.3;
+        CHECK(yield_f(tau_tr, coefficient(n), p[P_TAU_Y], NULL, NULL, s) < 0);
+        CHECK(step_from_rest(m, p, f, 1e-3, n, 20, st, tau) == 0);
+        double d[9];
+        for (int i = 0; i < 9; i++) d[i] = tau[i] - tau_tr[i];
+        worst = fmax(worst, norm9(d) / norm9(tau_tr));
+        CHECK(fabs(m->plastic_J(p, st) - 1) <= 1e-12);
+    }
+    /* the floor is rounding in log(exp(2 eps)) / 2 at |eps| ~ 1e-4: about 1e-16 / 1e-4 relative */
+    printf("  worst |tau - C eps_tr| / |C eps_tr| = %.3g (need <= 1e-10)\n", worst);
+    CHECK(worst <= 1e-10);
+}
+
+/* Von Mises radial return in closed form: p = p_tr, s = s_tr tau_y / q_tr.
+ * Trial states past yield in shear with a mean stress of the order of tau_y
+ * (volume change +-1e-3 at K = 3.3e4 Pa: |p_tr| <= 33 Pa, tau_y = 20 Pa). */
+static double vm_difference(const hearth_material *m, double n, int *count) {
+    double worst = 0;
+    rng = 0x5eedu;
+    *count = 0;
+    for (int k = 0; k < 20; k++) {
+        const double p[NP] = {4e4, 0.3, 20, 0, 0.5, 500};
+        double e[3], R[9], f[9], eps_tr[9], tau_tr[9], tau[9], st[NSTATE], s[9], pt, qt, want[9], d[9];
+        random_outside(e);
+        const double shift = (2 * uni() - 1) * 1e-3 / 3 - (e[0] + e[1] + e[2]) / 3;
+        for (int i = 0; i < 3; i++) e[i] += shift;
+        random_rotation(R);
+        trial(e, R, f, eps_tr);
+        c_apply(p, eps_tr, tau_tr);
+        yield_f(tau_tr, 0, p[P_TAU_Y], &pt, &qt, s);
+        if (!(qt > p[P_TAU_Y])) continue;
+        for (int i = 0; i < 9; i++) want[i] = s[i] * p[P_TAU_Y] / qt - (i % 4 == 0 ? pt : 0);
+        if (step_from_rest(m, p, f, 1e-3, n, 20, st, tau)) return INFINITY;
+        for (int i = 0; i < 9; i++) d[i] = tau[i] - want[i];
+        worst = fmax(worst, norm9(d) / norm9(want));
+        (*count)++;
+    }
+    return worst;
+}
+
+/* n^p -> 0: the return becomes von Mises. Exact at n^p = 0, and the
+ * difference shrinks as n^p does; the issue's 1e-8 at n^p = 1e-9 is checked
+ * last (eq. 12's coefficient falls only like 1/ln^2(1/n^p)). */
+TEST(dough_von_mises_limit) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL);
+    if (!m) return;
+    int c0, c;
+    const double d0 = vm_difference(m, 0, &c0);
+    printf("  n^p = 0: worst relative difference from the von Mises radial return %.3g over %d returns\n", d0, c0);
+    CHECK(c0 >= 10);
+    CHECK(d0 <= 1e-10); /* rounding: |tau_tr| is ~100 |tau| here */
+    const double ns[] = {1e-1, 1e-3, 1e-6, 1e-9};
+    double prev = INFINITY, d9 = 0;
+    for (int k = 0; k < 4; k++) {
+        const double d = vm_difference(m, ns[k], &c);
+        printf("  n^p = %g: coefficient M = %.3g, worst relative difference %.3g\n", ns[k], coefficient(ns[k]), d);
+        CHECK(d < prev); /* converges towards von Mises */
+        prev = d;
+        d9 = d;
+    }
+    if (d9 > 1e-8)
+        XFAIL("at n^p = 1e-9 the return differs from von Mises by %.3g (issue asks 1e-8): eq. 12's coefficient "
+              "9/(4 ln^2(1/n)(7/2 n + 1)) is still %.3g there, and the associative flow shrinks p by 1/(1 + 2 K M gamma) with "
+              "gamma ~ (q_tr/tau_y - 1)/(6 mu), which is O(M q_tr/tau_y), not small, far past yield; the limit is exact only at n^p = 0 (checked above to 1e-10)",
+              d9, coefficient(1e-9));
+    else CHECK(d9 <= 1e-8);
+}
+
+/* tau(Q F) = Q tau(F) Q^T over a plastic history: the observer's turn
+ * rotates the velocity gradients (L' = Q L Q^T). */
+TEST(dough_frame_indifference) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL);
+    if (!m) return;
+    double worst = 0;
+    for (int k = 0; k < 10; k++) {
+        const double p[NP] = {4e4, 0.3, 20, k % 2 ? 0 : 300, 0.5, 500};
+        double Q[9], st[NSTATE], str[NSTATE], F[9], Fr[9];
+        random_rotation(Q);
+        m->init(p, st);
+        m->init(p, str);
+        t3_identity(F);
+        for (int s = 0; s < 6; s++) {
+            const double dt = 1e-3;
+            double L[9], Lr[9], QL[9], f[9], Fn[9], tau[9], taur[9], want[9], QT[9], d[9];
+            for (int i = 0; i < 9; i++) L[i] = (2 * uni() - 1) * 0.05 / dt;
+            for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
+            t3_mul(f, F, Fn);
+            t3_copy(Fn, F);
+            t3_mul(Q, L, QL);
+            t3_mul_abt(QL, Q, Lr);
+            t3_mul(Q, F, Fr);
+            hearth_point a = {.dt = dt, .temperature = 50, .porosity = 0.2, .saturation = NAN, .p = p, .state = st};
+            hearth_point b = a;
+            b.state = str;
+            memcpy(a.grad_v, L, sizeof L), memcpy(a.F, F, sizeof F);
+            memcpy(b.grad_v, Lr, sizeof Lr), memcpy(b.F, Fr, sizeof Fr);
+            CHECK(m->stress(&a, tau) == 0);
+            CHECK(m->stress(&b, taur) == 0);
+            t3_mul(Q, tau, QT);
+            t3_mul_abt(QT, Q, want);
+            for (int i = 0; i < 9; i++) d[i] = taur[i] - want[i];
+            worst = fmax(worst, norm9(d) / fmax(1, norm9(tau)));
+            CHECK(fabs(m->plastic_J(p, st) - m->plastic_J(p, str)) <= 1e-12);
+        }
+    }
+    printf("  worst |tau(QF) - Q tau(F) Q^T| / |tau| = %.3g over 10 plastic histories of 6 steps (need <= 1e-9)\n", worst);
+    CHECK(worst <= 1e-9);
+}
+
+/* The extremes matrix: every corner returns finite numbers or a code that
+ * describe_error documents; never NaN. Three steps each, so the stored state
+ * is exercised too. */
+TEST(dough_extremes) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL);
+    if (!m) return;
+    const double Es[] = {1e2, 1e8}, etas[] = {0, 1e-3, 1e8}, nps[] = {1e-8, 0.1, 0.999}, tys[] = {1e-3, 1e5},
+                 Ts[] = {-20, 400};
+    const double strains[][3] = {{3, 3, 3}, {-3, -3, -3}, {3, -3, 0}, {-3, 3, 3}, {3, 0, 0}, {0, 0, -3}};
+    int cases = 0, codes = 0, bad = 0;
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 3; b++)
+            for (int c = 0; c < 3; c++)
+                for (int d = 0; d < 2; d++)
+                    for (int t = 0; t < 2; t++)
+                        for (int e = 0; e < 6; e++) {
+                            const double p[NP] = {Es[a], 0.3, tys[d], etas[b], 0.5, 500};
+                            double R[9], f[9], eps_tr[9], tau[9], st[NSTATE];
+                            random_rotation(R);
+                            trial(strains[e], R, f, eps_tr);
+                            int rc = step_from_rest(m, p, f, 1e-4, nps[c], Ts[t], st, tau);
+                            for (int s = 0; s < 2 && rc == 0; s++) { /* two more steps at rest: evaluate the stored state */
+                                hearth_point pt = {.dt = 1e-4, .temperature = Ts[t], .porosity = nps[c],
+                                                   .saturation = NAN, .p = p, .state = st};
+                                memcpy(pt.F, f, sizeof f);
+                                memset(pt.grad_v, 0, sizeof pt.grad_v);
+                                rc = m->stress(&pt, tau);
+                            }
+                            cases++;
+                            if (rc) {
+                                codes++;
+                                const char *txt = m->describe_error(rc);
+                                if (!txt || strcmp(txt, "unknown error") == 0) {
+                                    bad++;
+                                    fprintf(stderr, "undocumented code %d at E %g eta %g n %g tau_y %g strain %d\n", rc,
+                                            p[P_E], p[P_ETA], nps[c], p[P_TAU_Y], e);
+                                }
+                                continue;
+                            }
+                            int finite = 1;
+                            for (int i = 0; i < 9; i++) finite &= isfinite(tau[i]);
+                            for (int i = 0; i < NSTATE; i++) finite &= isfinite(st[i]);
+                            const double jp = m->plastic_J(p, st);
+                            finite &= isfinite(jp) && jp > 0;
+                            if (!finite) {
+                                bad++;
+                                fprintf(stderr, "non-finite at E %g eta %g n %g tau_y %g T %g strain %d\n", p[P_E],
+                                        p[P_ETA], nps[c], p[P_TAU_Y], Ts[t], e);
+                            }
+                        }
+    /* the documented refusals: porosity outside [0, 1), inverted F */
+    const double p[NP] = {4e4, 0.3, 20, 0, 0.5, 500};
+    double st[NSTATE], tau[9], I[9];
+    t3_identity(I);
+    const int rc1 = step_from_rest(m, p, I, 1e-4, 1.0, 20, st, tau), rc2 = step_from_rest(m, p, I, 1e-4, -0.1, 20, st, tau);
+    CHECK(rc1 > 0 && rc1 == rc2);
+    CHECK_STR_CONTAINS(m->describe_error(rc1), "porosity");
+    double Finv[9] = {-1, 0, 0, 0, 1, 0, 0, 0, 1};
+    CHECK_STR_CONTAINS(m->describe_error(step_from_rest(m, p, Finv, 1e-4, 0.1, 20, st, tau)), "inverted");
+    /* NaN porosity (the field off) reads as von Mises, not as an error */
+    CHECK(step_from_rest(m, p, I, 1e-4, NAN, 20, st, tau) == 0);
+    printf("  %d corners (E x eta x n^p x tau_y x T x log-strain +-3): %d finite, %d documented codes, %d bad\n", cases,
+           cases - codes - bad, codes, bad);
+    CHECK(bad == 0);
+}
+
+/* Closed pores: squeezed hard for many steps (the porosity passed as the
+ * core computes it, n^p = J^P - 1 + n^p_0), the dough compacts plastically
+ * but never below J^P = 1 - compaction n^p_0, so n^p stays >= n^p_0 / 2 and
+ * the gas pressure of eq. 13 stays bounded. */
+TEST(dough_closed_pores) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL);
+    if (!m) return;
+    const double p[NP] = {2e3, 0.3, 20, 0, 0.5, 500}, n0 = 0.1, dt = 1e-3;
+    double st[NSTATE], F[9], tau[9], jp_min = 1;
+    m->init(p, st);
+    t3_identity(F);
+    for (int k = 0; k < 200; k++) {
+        double L[9] = {0}, f[9], Fn[9];
+        L[0] = L[4] = L[8] = -0.2; /* steady isotropic compression: 2e-4 volumetric strain per step */
+        L[1] = 0.5;                /* and shear */
+        for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
+        t3_mul(f, F, Fn);
+        t3_copy(Fn, F);
+        double np = m->plastic_J(p, st) - 1 + n0;
+        hearth_point pt = {.dt = dt, .temperature = 20, .porosity = np < 1e-6 ? 1e-6 : np, .saturation = NAN, .p = p,
+                           .state = st};
+        memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
+        CHECK(m->stress(&pt, tau) == 0);
+        jp_min = fmin(jp_min, m->plastic_J(p, st));
+    }
+    printf("  J = %.4f after 200 squeezing steps; smallest J^P = %.6f (cap 1 - 0.5 n0 = %.6f)\n", t3_det(F), jp_min,
+           1 - 0.5 * n0);
+    CHECK(jp_min < 1 - 0.25 * n0);             /* it did compact plastically */
+    CHECK(jp_min >= 1 - 0.5 * n0 - 1e-12);     /* but not past the cap */
+}
+
+static void note(void *ud, const char *name, int passed, const char *detail) {
+    (void)ud;
+    printf("  %-20s %s  %s\n", name, passed ? "PASS" : "FAIL", detail);
+}
+
+/* `hearth plugin check` on the built plugin. */
+TEST(dough_plugin_check) {
+    hearth_error err = {0};
+    const hearth_plugin *pl = hearth_plugin_load("cam_clay_dough", &err);
+    CHECK(pl != NULL);
+    if (!pl) return;
+    CHECK(hearth_plugin_check(hearth_plugin_file(pl), note, NULL, &err) == 0);
+    const hearth_material *m = hearth_plugin_material(pl);
+    CHECK(m->plastic_J != NULL);
+    CHECK((m->needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_THERMAL_EXPANSION)) ==
+          (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_THERMAL_EXPANSION));
+    for (int i = 0; i < m->nparams; i++) {
+        CHECK(m->params[i].unit && *m->params[i].unit);
+        CHECK(m->params[i].help && *m->params[i].help);
+        CHECK(m->params[i].min <= m->params[i].def && m->params[i].def <= m->params[i].max);
+    }
+}
+
+TEST_MAIN(T(dough_closest_point), T(dough_viscoplastic_optimality), T(dough_inside_unchanged), T(dough_von_mises_limit),
+          T(dough_frame_indifference), T(dough_extremes), T(dough_closed_pores), T(dough_plugin_check))
