@@ -36,6 +36,13 @@
  * plugin: tau = J S + bulk/2 (J^2 - 1) I, the same volumetric term as the
  * sauce plugin.
  *
+ * ---- viscosity (eq. 3.19, 4.1) ------------------------------------------
+ * The thesis adds a Newtonian viscous force (eq. 3.19) next to the Maxwell
+ * stress. Here it is the parameter `viscosity`, a dashpot in parallel:
+ * tau gets + 2 J viscosity dev(sym L). The SPH solver knows this name and
+ * applies it with the thesis's Laplacian form (eq. 3.19) instead, calling the
+ * plugin with viscosity 0, so the two solvers see the same law.
+ *
  * ---- temperature (eq. 4.2, 4.3) ----------------------------------------
  * mu_e (eq. 4.2) and the viscosity (eq. 4.1) are piecewise linear in T with
  * three points: give them as core temperature curves, h.curve{...}. The
@@ -48,7 +55,7 @@
 #include <math.h>
 #include <string.h>
 
-enum { P_MU_E, P_LAMBDA, P_C_LAMBDA, P_BULK, P_DENSITY, P_COUNT };
+enum { P_MU_E, P_LAMBDA, P_C_LAMBDA, P_VISCOSITY, P_BULK, P_DENSITY, P_COUNT };
 
 static const hearth_param params[P_COUNT] = {
     [P_MU_E] = {"mu_e", "Pa", "elasticity constant of eq. 3.20 (shear modulus mu_e/2); eq. 4.2 as a temperature curve",
@@ -59,6 +66,9 @@ static const hearth_param params[P_COUNT] = {
                     "0 = use lambda; > 0 = eq. 4.3 arctan law lambda(T) = C_lambda [2/pi atan((T-65)/2) + 1] + 2 "
                     "(needs temperature)",
                     0.0, 0.0, 1e9},
+    [P_VISCOSITY] = {"viscosity", "Pa s",
+                     "Newtonian viscosity in parallel (eq. 3.19, 4.1 as a curve); MPM adds 2 eta dev D, SPH applies eq. 3.19",
+                     0.0, 0.0, 1e9},
     [P_BULK] = {"bulk", "Pa", "bulk modulus of the volume response (MPM; SPH uses its Tait pressure instead)", 1e5,
                 1e-3, 1e12},
     [P_DENSITY] = {"density", "kg/m^3", "mass density at rest", 1000, 1e-3, 1e5},
@@ -161,6 +171,13 @@ static int stress(hearth_point *pt, double tau[9]) {
     }
     double vol = 0.5 * p[P_BULK] * (J * J - 1);
     for (int i = 0; i < 9; i++) tau[i] = J * S[i] + (i % 4 == 0 ? vol : 0.0);
+    if (p[P_VISCOSITY] > 0 && pt->dt > 0) { /* dt = 0 evaluates the elastic state only */
+        const double *L = pt->grad_v, eta2 = 2 * J * p[P_VISCOSITY];
+        double trd = (L[0] + L[4] + L[8]) / 3;
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++)
+                tau[3 * r + c] += eta2 * (0.5 * (L[3 * r + c] + L[3 * c + r]) - (r == c ? trd : 0.0));
+    }
     return 0;
 }
 

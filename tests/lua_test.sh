@@ -436,6 +436,10 @@ lua_library)
     out=$("$hearth" run "$scenes/library.lua" --quiet 2>&1) || fail "library.lua: $out"
     echo "$out" | grep -q "library ok" || fail "library.lua did not finish: $out"
     ;;
+lua_sph_library)
+    out=$("$hearth" run "$scenes/sph_library.lua" --quiet 2>&1) || fail "sph_library.lua: $out"
+    echo "$out" | grep -q "sph library ok" || fail "sph_library.lua did not finish: $out"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"

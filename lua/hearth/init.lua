@@ -189,6 +189,9 @@ sauce_mt.__index = function(t, name)
 end
 h.library.sauce = setmetatable({}, sauce_mt)
 
+-- h.library.sph.<name>: Rodriguez-Arenas 2011 presets (Table 4.1 as bread_roll); see sph_library.lua.
+h.library.sph = (require "hearth.sph_library")(h)
+
 --- h.mix{ {params_a, 0.5}, {params_b, 0.5}, plugin = "von_mises_sauce" }: one parameter set
 --- blended by the plugin's own blend rule (Nagasawa et al. eq. 28-31 for sauces).
 function h.mix(t)
