@@ -16,6 +16,8 @@ static const hearth_param core_schema[CP_COUNT] = {
     [CP_REACTION_T] = {"reaction_temperature", "degC", "temperature of the peak CO2 rate theta_r", 40, -273.15, 1000},
     [CP_REACTION_WIDTH] = {"reaction_width", "K", "width dtheta of the CO2 rate's bell curve", 20, 1e-3, 1000},
     [CP_POROSITY0] = {"porosity", "1", "initial gas porosity n^p_0 (gas volume over solid-gas volume)", 0.1, 1e-6, 0.99},
+    /* Rodriguez-Arenas 2011 eq. 3.50: V_b0 of bubble particles; the SPH solver only */
+    [CP_BUBBLE] = {"bubble", "1", "SPH: initial bubble volume V_b0 (eq. 3.50) marks bubble particles; 0 = dough", 0, 0, 100},
 };
 
 const hearth_param *hearth_core_params(int *n) {

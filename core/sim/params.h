@@ -7,6 +7,7 @@
 enum {
     CP_CONDUCTIVITY, CP_SPECIFIC_HEAT, CP_EXPANSION, CP_REFERENCE_T,
     CP_GAS_RATE, CP_REACTION_T, CP_REACTION_WIDTH, CP_POROSITY0,
+    CP_BUBBLE, /* SPH bubble particles (Rodriguez-Arenas §3.3.3) */
     CP_COUNT
 };
 

@@ -111,6 +111,8 @@ struct hearth_scene {
     int bnd_cap;
     double *cg_partial;          /* per active block: partial dot products */
     int cg_cap, cg_iterations;
+
+    struct sph_state *sph;       /* SPH solver state (sph.c), NULL until the first SPH step */
 };
 
 /* scene.c */

@@ -1,0 +1,268 @@
+/* unit_sph.c: the SPH solver (Rodriguez-Arenas 2011, ch. 3-4): kernels,
+ * neighbour search, hydrostatics, Poiseuille flow, bubble expansion,
+ * extremes and determinism. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "hearth/hearth.h"
+#include "scene.h"
+#include "sph.h"
+#include "sph_kernel.h"
+#include "sph_neighbours.h"
+#include "test.h"
+
+/* ---- kernels ---------------------------------------------------------------- */
+
+/* Sum W V over a lattice of spacing 1 around a point: 1 within 1e-3 (2D, 3D),
+ * at the default h = 2.4 spacings and at 4 (the sum oscillates with h/spacing:
+ * 2.6 gives 0.9973 in 3D, 3.0 gives 1.0034 in 2D; 2.4 is H = 1.2 spacings
+ * in the smoothing-length convention, the usual choice). */
+TEST(sph_kernel_normalisation) {
+    double hs[] = {2.4, 4.0};
+    CHECK(hearth_default_scene_def().sph.h_factor == hs[0]);
+    for (int dim = 2; dim <= 3; dim++)
+        for (int k = 0; k < 2; k++) {
+            const double h = hs[k];
+            double sum = 0;
+            const int R = 5;
+            for (int z = (dim == 3 ? -R : 0); z <= (dim == 3 ? R : 0); z++)
+                for (int y = -R; y <= R; y++)
+                    for (int x = -R; x <= R; x++) sum += sph_w(dim, sqrt((double)(x * x + y * y + z * z)), h);
+            printf("dim %d, h = %.1f spacings: sum W V = %.6f\n", dim, h, sum);
+            CHECK_NEAR(sum, 1.0, 1e-3);
+        }
+}
+
+/* grad_i W(x_i - x_j) = -grad_j W, dW/dr matches a finite difference of W,
+ * both vanish at and beyond the support h, and the viscosity Laplacian
+ * integrates r^2 K to 2 d (what makes eq. 3.19 exact for a parabola). */
+TEST(sph_kernel_gradient_support) {
+    const double h = 0.1;
+    for (int dim = 2; dim <= 3; dim++) {
+        double xi[3] = {0.01, 0.02, 0.005}, xj[3] = {0.05, -0.01, 0.02};
+        double d[3], gi[3], gj[3];
+        for (int a = 0; a < 3; a++) d[a] = xi[a] - xj[a];
+        double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        for (int a = 0; a < 3; a++) {
+            gi[a] = sph_dw(dim, r, h) * d[a] / r;
+            gj[a] = sph_dw(dim, r, h) * -d[a] / r;
+            CHECK_NEAR(gi[a], -gj[a], 1e-12 * fabs(gi[a]));
+        }
+        CHECK(sph_dw(dim, r, h) < 0);
+        for (double q = 0.05; q < 1.99; q += 0.1) {
+            double rr = q * h / 2, e = 1e-7 * h;
+            double fd = (sph_w(dim, rr + e, h) - sph_w(dim, rr - e, h)) / (2 * e);
+            CHECK_NEAR(sph_dw(dim, rr, h), fd, 1e-5 * fabs(fd) + 1e-6);
+        }
+        CHECK(sph_w(dim, h, h) == 0 && sph_dw(dim, h, h) == 0 && sph_lap_visc(dim, h, h) == 0);
+        CHECK(sph_w(dim, 1.5 * h, h) == 0 && sph_dw(dim, 1.5 * h, h) == 0 && sph_lap_visc(dim, 2 * h, h) == 0);
+        CHECK(sph_w(dim, 0.999 * h, h) > 0);
+        /* continuity of W and dW at q = 1 */
+        CHECK_NEAR(sph_w(dim, 0.5 * h * (1 - 1e-9), h), sph_w(dim, 0.5 * h * (1 + 1e-9), h), 1e-6 * sph_w(dim, 0.5 * h, h));
+        double I = 0;
+        const int nr = 20000;
+        for (int k = 0; k < nr; k++) {
+            double rr = (k + 0.5) * h / nr, shell = dim == 3 ? 4 * SPH_PI * rr * rr : 2 * SPH_PI * rr;
+            I += rr * rr * sph_lap_visc(dim, rr, h) * shell * h / nr;
+        }
+        CHECK_NEAR(I, 2.0 * dim, 1e-6 * 2 * dim);
+    }
+}
+
+/* ---- neighbour search ---------------------------------------------------------- */
+
+static double now(void) {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+static int cmp_int(const void *a, const void *b) { return *(const int *)a - *(const int *)b; }
+
+/* 50k particles (3D, ~40 neighbours each): the cell list over particles sorted
+ * by cell and the kd-tree find the same neighbour sets. Prints both timings
+ * (the comparison reported in docs/architecture.md; no timed assertion). */
+TEST(sph_neighbours_agree) {
+    const int n = 50000;
+    double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, hh = 0.06;
+    int per[3] = {0, 0, 0};
+    double *x = malloc(sizeof(double) * 3 * n), *xs = malloc(sizeof(double) * 3 * n);
+    int *key = malloc(sizeof(int) * n), *order = malloc(sizeof(int) * n);
+    uint64_t r = 12345;
+    for (int i = 0; i < 3 * n; i++) {
+        r = r * 6364136223846793005ULL + 1442695040888963407ULL;
+        x[i] = (double)(r >> 11) / 9007199254740992.0;
+    }
+    sph_cells c = {0};
+    sph_nlist a = {0}, b = {0};
+    hearth_error err;
+    CHECK(sph_cells_setup(&c, 3, lo, hi, hh, per, &err) == HEARTH_OK);
+    double t0 = now();
+    for (int i = 0; i < n; i++) key[i] = sph_cell_of(&c, x + 3 * i);
+    sph_cells_sort(&c, key, n, order);
+    for (int i = 0; i < n; i++) memcpy(xs + 3 * i, x + 3 * order[i], 3 * sizeof(double));
+    CHECK(sph_nlist_build(&a, &c, xs, n, NULL, hh, &err) == HEARTH_OK);
+    double t1 = now();
+    CHECK(sph_nlist_kdtree(&b, &c, xs, n, hh, &err) == HEARTH_OK);
+    double t2 = now();
+    printf("50k particles, %d pairs: cell list (sort + lists) %.1f ms, kd-tree (build + queries) %.1f ms\n", a.off[n],
+           1e3 * (t1 - t0), 1e3 * (t2 - t1));
+    CHECK(a.off[n] == b.off[n]);
+    CHECK(a.off[n] > 20 * n);
+    int same = 1;
+    for (int i = 0; i < n && same; i++) {
+        int na = a.off[i + 1] - a.off[i], nb = b.off[i + 1] - b.off[i];
+        if (na != nb) {
+            same = 0;
+            break;
+        }
+        qsort(a.j + a.off[i], (size_t)na, sizeof(int), cmp_int);
+        qsort(b.j + b.off[i], (size_t)nb, sizeof(int), cmp_int);
+        same = !memcmp(a.j + a.off[i], b.j + b.off[i], sizeof(int) * (size_t)na);
+    }
+    CHECK(same);
+    sph_nlist_free(&a);
+    sph_nlist_free(&b);
+    sph_cells_free(&c);
+    free(x), free(xs), free(key), free(order);
+}
+
+/* ---- scenes ------------------------------------------------------------------ */
+
+static hearth_scene_def sph_def(int dim, double dx, const double lo[3], const double hi[3]) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.solver = HEARTH_SOLVER_SPH;
+    d.dim = dim;
+    d.dx = dx;
+    for (int a = 0; a < 3; a++) d.lo[a] = lo[a], d.hi[a] = hi[a];
+    return d;
+}
+
+static int newtonian(hearth_scene *s, double rho, double bulk, double eta) {
+    const char *n[] = {"density", "bulk", "viscosity"};
+    const double v[] = {rho, bulk, eta};
+    hearth_error err;
+    int m = hearth_scene_add_material(s, "newtonian", n, v, 3, &err);
+    if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
+    return m;
+}
+
+static int box_body(hearth_scene *s, int mat, double x0, double y0, double x1, double y1, int fixed, double T) {
+    double c[3] = {0.5 * (x0 + x1), 0.5 * (y0 + y1), 0}, hh[3] = {0.5 * (x1 - x0), 0.5 * (y1 - y0), 0.5};
+    hearth_shape *b = hearth_shape_box(c, hh);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = b;
+    bd.material = mat;
+    bd.ppc = 1;
+    bd.jitter = 0;
+    bd.fixed = fixed;
+    bd.temperature = T;
+    hearth_error err;
+    int id = hearth_scene_add_body(s, &bd, &err);
+    if (id < 0) fprintf(stderr, "body: %s\n", err.msg);
+    hearth_shape_free(b);
+    return id;
+}
+
+/* Hydrostatic tank: a 0.1 m water column (c = 10 m/s, three layers of fixed
+ * wall particles) settles; the pressure of the lowest fluid layer is
+ * rho g (H - y) within 3%, and the kinetic energy decays. */
+TEST(sph_hydrostatic) {
+    const double dx = 0.005, lo[3] = {0, 0, 0}, hi[3] = {0.13, 0.3, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    CHECK(s != NULL);
+    if (!s) return;
+    const double rho = 1000, g = 9.81;
+    int m = newtonian(s, rho, 1e5, 2.0);
+    const double w = 3 * dx, H = 0.1, top = w + H;
+    CHECK(box_body(s, m, 0, 0, hi[0], w, 1, NAN) >= 0);
+    CHECK(box_body(s, m, 0, w, w, 0.2, 1, NAN) >= 0);
+    CHECK(box_body(s, m, hi[0] - w, w, hi[0], 0.2, 1, NAN) >= 0);
+    int fluid = box_body(s, m, w, w, hi[0] - w, top, 0, NAN);
+    CHECK(fluid >= 0);
+    hearth_error err;
+    double kpeak = 0;
+    hearth_stats st;
+    for (int k = 1; k <= 24; k++) {
+        hearth_status rc = hearth_scene_advance(s, 0.025 * k, &err);
+        if (rc) {
+            fprintf(stderr, "%s\n", err.msg);
+            CHECK(0);
+            break;
+        }
+        hearth_scene_stats(s, &st);
+        if (st.kinetic > kpeak) kpeak = st.kinetic;
+    }
+    hearth_scene_stats(s, &st);
+    const double *P = sph_particle_values(s, "pressure");
+    CHECK(P != NULL);
+    if (P) {
+        const double *x = hearth_scene_positions(s);
+        const int *flags = pcoli(&s->ps, PC_FLAGS);
+        double sum = 0, want = 0;
+        int cnt = 0;
+        for (int i = 0; i < hearth_scene_particle_count(s); i++)
+            if (!(flags[i] & PF_FIXED) && x[3 * i + 1] < w + dx) {
+                sum += P[i];
+                want += rho * g * (top - x[3 * i + 1]);
+                cnt++;
+            }
+        printf("hydrostatic: bottom layer (%d particles) p = %.2f Pa, rho g (H - y) = %.2f Pa, rel %.3f; KE %.3g J "
+               "(peak %.3g J)\n",
+               cnt, sum / cnt, want / cnt, (sum - want) / want, st.kinetic, kpeak);
+        CHECK(cnt > 10);
+        CHECK(fabs(sum - want) <= 0.03 * want);
+        CHECK(st.kinetic < 0.05 * kpeak);
+    }
+    hearth_scene_destroy(s);
+}
+
+static void push_x(void *ud, double t, const double x[3], double acc[3]) {
+    (void)t, (void)x;
+    acc[0] = *(const double *)ud;
+}
+
+/* Poiseuille flow between fixed plates (periodic in x) under a body force
+ * f: the steady profile u(y) = f / (2 nu) y (L - y) within 3% of the peak. */
+TEST(sph_poiseuille) {
+    const double dx = 0.001, L = 0.02, w = 3 * dx, lo[3] = {0, 0, 0}, hi[3] = {0.012, L + 2 * w, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[1] = 0;
+    d.sph.periodic[0] = 1;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    CHECK(s != NULL);
+    if (!s) return;
+    const double rho = 1000, eta = 1.0, nu = eta / rho;
+    double f = 0.1; /* peak u = f L^2 / (8 nu) = 5 mm/s */
+    int m = newtonian(s, rho, 1e3, eta);
+    CHECK(box_body(s, m, 0, 0, hi[0], w, 1, NAN) >= 0);
+    CHECK(box_body(s, m, 0, L + w, hi[0], hi[1], 1, NAN) >= 0);
+    CHECK(box_body(s, m, 0, w, hi[0], L + w, 0, NAN) >= 0);
+    hearth_scene_set_body_force(s, push_x, &f);
+    hearth_error err;
+    const double tend = 2.0 * L * L / nu; /* many viscous times (L^2 / (pi^2 nu) each) */
+    hearth_status rc = hearth_scene_advance(s, tend, &err);
+    if (rc) fprintf(stderr, "%s\n", err.msg);
+    CHECK(rc == HEARTH_OK);
+    const double *x = hearth_scene_positions(s), *v = pcold(&s->ps, PC_V);
+    const int *flags = pcoli(&s->ps, PC_FLAGS);
+    const double umax = f * L * L / (8 * nu);
+    double worst = 0;
+    for (int i = 0; i < hearth_scene_particle_count(s); i++) {
+        if (flags[i] & PF_FIXED) continue;
+        const double y = x[3 * i + 1] - w, want = f / (2 * nu) * y * (L - y);
+        worst = fmax(worst, fabs(v[3 * i] - want));
+    }
+    printf("poiseuille: peak %.4g m/s, worst |u - u_exact| = %.3g m/s = %.2f%% of the peak (t = %.3g s)\n", umax,
+           worst, 100 * worst / umax, tend);
+    CHECK(worst <= 0.03 * umax);
+    hearth_scene_destroy(s);
+}
+
+TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_neighbours_agree), T(sph_hydrostatic),
+          T(sph_poiseuille))
