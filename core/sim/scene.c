@@ -59,7 +59,7 @@ hearth_scene_def hearth_default_scene_def(void) {
         .sph = {.h_factor = 2.4, .leapfrog = 0, .gamma = 7, .av_beta = 0, .surface_tension = 0,
                 .surface_threshold = 0.75, .alpha_c = 0, .beta_c = 1, .xsph0 = 0, .xsph_f = 0, .xsph_T0 = 26,
                 .xsph_Tf = 120, .heat_ext = 0, .heat_int = 0, .adaptive_h = 0, .k_g = 1, .eps_g = 0.5,
-                .bubble_T0 = 26, .dt_viscous = 0.125, .dt_force = 0.25, .periodic = {0, 0, 0}},
+                .bubble_T0 = 26, .dt_viscous = 0.125, .dt_force = 0.25, .periodic = {0, 0, 0}, .tension = 0},
     };
 }
 
@@ -312,6 +312,10 @@ const double *hearth_scene_material_params(const hearth_scene *s, int mat) {
 /* ---- particles ------------------------------------------------------- */
 
 static void valid_region(const hearth_scene *s, double lo[3], double hi[3]) {
+    if (s->def.solver == HEARTH_SOLVER_SPH) { /* SPH (sph.c): no grid margin, the whole box */
+        for (int d = 0; d < 3; d++) lo[d] = s->def.lo[d], hi[d] = s->def.hi[d];
+        return;
+    }
     for (int d = 0; d < 3; d++) {
         lo[d] = d < s->def.dim ? s->g.lo[d] + s->g.dx : 0;
         hi[d] = d < s->def.dim ? s->g.lo[d] + (s->g.nn[d] - 2) * s->g.dx : 0;

@@ -75,6 +75,8 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
     if (o->leapfrog != 0 && o->leapfrog != 1)
         return err_set(err, HEARTH_ERR_PARAM, "scene: sph.leapfrog = %d; valid: 0 (symplectic Euler), 1 (leapfrog)",
                        o->leapfrog);
+    if (o->tension != 0 && o->tension != 1)
+        return err_set(err, HEARTH_ERR_PARAM, "scene: sph.tension = %d; valid: 0 (clamp negative pressure), 1", o->tension);
     if (o->adaptive_h != 0 && o->adaptive_h != 1)
         return err_set(err, HEARTH_ERR_PARAM, "scene: sph.adaptive_h = %d; valid: 0, 1", o->adaptive_h);
     return HEARTH_OK;
@@ -329,6 +331,10 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
             st->prs[i] = st->B[i] * st->rho[i] / rho0 * (Vb - 1);
         } else
             st->prs[i] = st->B[i] * (pow(st->rho[i] / st->rhof[i], gam) - 1); /* eq. 3.17, 3.52 */
+        /* A free surface has too few neighbours, so its summed density is low
+         * and Tait pulls: particles clump and climb walls (tensile
+         * instability). Clamped unless the scene asks for tension. */
+        if (!o->tension && st->prs[i] < 0) st->prs[i] = 0;
     }
     /* while any bubble expands, dough and bubbles keep their density as final density (eq. 3.52) */
     int any_heating = 0;

@@ -159,6 +159,7 @@ typedef struct hearth_sph_def {
     double dt_viscous;     ///< viscous step factor: dt <= dt_viscous rho h^2 / mu; default 0.125
     double dt_force;       ///< force step factor: dt <= dt_force sqrt(h / |a|); default 0.25
     int periodic[3];       ///< 1 = periodic along that axis (box faces wrap); default 0
+    int tension;           ///< 0: negative Tait pressure clamped to 0 (free surfaces stay clean); 1: kept, as the thesis; default 0
 } hearth_sph_def;
 
 typedef struct hearth_scene_def {
