@@ -277,5 +277,168 @@ TEST(sph_poiseuille) {
     hearth_scene_destroy(s);
 }
 
+/* A dough disc (lattice, no gravity) with every fourth particle a bubble
+ * (eq. 3.48-3.51), its temperature raised uniformly step by step. */
+static hearth_scene *bubble_dough(int *nout) {
+    const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.12, 0.12, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[1] = 0;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    if (!s) return NULL;
+    const char *n[] = {"density", "bulk", "viscosity", "bubble"};
+    double v[] = {1000, 1e4, 2.0, 0};
+    hearth_error err;
+    int dough = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
+    v[3] = 1;
+    int bub = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
+    if (dough < 0 || bub < 0) {
+        fprintf(stderr, "%s\n", err.msg);
+        hearth_scene_destroy(s);
+        return NULL;
+    }
+    int cnt = 0;
+    for (int j = 0; j < 40; j++)
+        for (int i = 0; i < 40; i++) {
+            double p[3] = {0.06 + (i - 19.5) * dx, 0.06 + (j - 19.5) * dx, 0};
+            if (hypot(p[0] - 0.06, p[1] - 0.06) > 0.02) continue;
+            if (hearth_scene_add_particles(s, (cnt % 4 == 0) ? bub : dough, 1, p, NULL, dx * dx, &err) != 1)
+                fprintf(stderr, "%s\n", err.msg);
+            cnt++;
+        }
+    hearth_body_def bd = hearth_default_body_def(); /* a far-away pinned speck turns the temperature field on */
+    double c[3] = {0.005, 0.005, 0}, hh[3] = {0.001, 0.001, 0.5};
+    bd.shape = hearth_shape_box(c, hh);
+    bd.material = dough;
+    bd.ppc = 1;
+    bd.jitter = 0;
+    bd.fixed = 1;
+    bd.temperature = 26;
+    if (hearth_scene_add_body(s, &bd, &err) < 0) fprintf(stderr, "%s\n", err.msg);
+    hearth_shape_free((hearth_shape *)bd.shape);
+    *nout = cnt;
+    return s;
+}
+
+static double sph_volume(const hearth_scene *s) {
+    const double *rho = sph_particle_values(s, "density"), *m = pcold(&s->ps, PC_MASS);
+    const int *flags = pcoli(&s->ps, PC_FLAGS);
+    double V = 0;
+    for (int i = 0; i < s->ps.n; i++)
+        if (!(flags[i] & PF_FIXED)) V += m[i] / rho[i];
+    return V;
+}
+
+/* Relative volume rises with every temperature stage (26 -> 100 degC); once
+ * the temperature stops rising, eq. 3.52 keeps the volume. */
+TEST(sph_bubble_expansion) {
+    int nd = 0;
+    hearth_scene *s = bubble_dough(&nd);
+    CHECK(s != NULL);
+    if (!s) return;
+    hearth_error err;
+    double *T = pcold(&s->ps, PC_TEMPERATURE);
+    const int n = s->ps.n;
+    for (int i = 0; i < n; i++) T[i] = 26;
+    CHECK(hearth_scene_step(s, 50, &err) == HEARTH_OK);
+    const double V0 = sph_volume(s);
+    double prev = V0, Tnow = 26;
+    int mono = 1;
+    for (int stage = 1; stage <= 6; stage++) {
+        for (int k = 0; k < 150; k++) { /* +2.1 K over 150 steps, every step a little warmer */
+            Tnow += 12.5 / 150 * 1.0 + (stage == 6 && k == 149 ? 100 - (Tnow + 12.5 / 150) : 0);
+            T = pcold(&s->ps, PC_TEMPERATURE);
+            for (int i = 0; i < n; i++) T[i] = Tnow;
+            if (hearth_scene_step(s, 1, &err)) {
+                fprintf(stderr, "%s\n", err.msg);
+                CHECK(0);
+                hearth_scene_destroy(s);
+                return;
+            }
+        }
+        const double V = sph_volume(s);
+        printf("T = %.1f degC: relative volume %.4f\n", Tnow, V / V0);
+        if (!(V > prev)) mono = 0;
+        prev = V;
+    }
+    CHECK(mono);
+    CHECK(prev / V0 > 1.02);
+    /* hold the temperature: the expansion stops and the volume stays */
+    CHECK(hearth_scene_step(s, 600, &err) == HEARTH_OK);
+    const double Vh = sph_volume(s);
+    printf("held at %.1f degC for 600 steps: relative volume %.4f (was %.4f)\n", Tnow, Vh / V0, prev / V0);
+    CHECK(fabs(Vh - prev) <= 0.01 * prev);
+    (void)nd;
+    hearth_scene_destroy(s);
+}
+
+/* Viscosity 1e-3..1e5 Pa s and mu_e 1..1e5 Pa (maxwell_sph) in a falling
+ * block: every run either stays finite or the guard stops it with a diagnosis. */
+TEST(sph_extremes) {
+    const double etas[] = {1e-3, 1e5}, mus[] = {1, 1e5};
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 2; b++) {
+            const double dx = 0.004, lo[3] = {0, 0, 0}, hi[3] = {0.2, 0.2, 0};
+            hearth_scene_def d = sph_def(2, dx, lo, hi);
+            d.sph.xsph0 = 0.05;
+            d.sph.av_beta = 1;
+            hearth_scene *s = hearth_scene_create(&d, NULL);
+            CHECK(s != NULL);
+            if (!s) continue;
+            const char *n[] = {"density", "viscosity", "mu_e", "lambda", "bulk"};
+            const double v[] = {1100, etas[a], mus[b], 0.5, 2e4};
+            hearth_error err;
+            int m = hearth_scene_add_material(s, "maxwell_sph", n, v, 5, &err);
+            CHECK(m >= 0);
+            double c[3] = {0.1, 0.06, 0}, hh[3] = {0.04, 0.04, 0.5}, vel[3] = {0.3, -1, 0};
+            hearth_shape *bx = hearth_shape_box(c, hh);
+            hearth_body_def bd = hearth_default_body_def();
+            bd.shape = bx, bd.material = m, bd.ppc = 1, bd.jitter = 0;
+            memcpy(bd.velocity, vel, sizeof vel);
+            CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+            hearth_shape_free(bx);
+            hearth_status rc = hearth_scene_step(s, 150, &err);
+            hearth_stats st;
+            hearth_scene_stats(s, &st);
+            int finite = 1;
+            for (int i = 0; i < 3 * s->ps.n; i++) finite &= isfinite(pcold(&s->ps, PC_X)[i]) && isfinite(pcold(&s->ps, PC_V)[i]);
+            printf("viscosity %g Pa s, mu_e %g Pa: %s after %ld steps, t = %.3g s, dt %.3g s, KE %.3g J%s%s\n",
+                   etas[a], mus[b], rc ? "guard stopped" : "ran", st.step, st.t, st.dt, st.kinetic, rc ? ": " : "",
+                   rc ? err.msg : "");
+            CHECK(rc == HEARTH_OK ? finite : (rc == HEARTH_ERR_GUARD && strlen(err.msg) > 10));
+            hearth_scene_destroy(s);
+        }
+}
+
+/* 1 and 2 threads give the same particles bit for bit (a scene above the
+ * parallel threshold, with plugin stress, XSPH and artificial viscosity). */
+TEST(sph_determinism_threads) {
+    uint64_t hsh[2];
+    for (int k = 0; k < 2; k++) {
+        hearth_set_threads(k + 1);
+        const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.2, 0.2, 0};
+        hearth_scene_def d = sph_def(2, dx, lo, hi);
+        d.sph.xsph0 = 0.1;
+        d.sph.av_beta = 1;
+        hearth_scene *s = hearth_scene_create(&d, NULL);
+        const char *n[] = {"density", "viscosity", "mu_e", "bulk"};
+        const double v[] = {1000, 0.5, 100, 1e4};
+        hearth_error err;
+        int m = hearth_scene_add_material(s, "maxwell_sph", n, v, 4, &err);
+        double c[3] = {0.1, 0.06, 0}, hh[3] = {0.05, 0.05, 0.5};
+        hearth_shape *bx = hearth_shape_box(c, hh);
+        hearth_body_def bd = hearth_default_body_def();
+        bd.shape = bx, bd.material = m, bd.ppc = 1, bd.jitter = 0.5;
+        CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+        hearth_shape_free(bx);
+        CHECK(s->ps.n > SCENE_PARALLEL_MIN);
+        CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+        hsh[k] = hearth_scene_hash(s);
+        hearth_scene_destroy(s);
+    }
+    hearth_set_threads(1);
+    printf("hash 1 thread %016llx, 2 threads %016llx\n", (unsigned long long)hsh[0], (unsigned long long)hsh[1]);
+    CHECK(hsh[0] == hsh[1]);
+}
+
 TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_neighbours_agree), T(sph_hydrostatic),
-          T(sph_poiseuille))
+          T(sph_poiseuille), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads))

@@ -39,7 +39,7 @@ struct sph_state {
     int valid;      /* per-particle results match the scene's particles */
     int *key, *order;
     double *perm;   /* permutation scratch, cap doubles */
-    double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *brown, *surf, *rhof, *dT;
+    double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *brown, *surf, *rhof, *dT, *Tprev;
     double *rho0, *B, *mu, *c0, *xsph;
     double amax;    /* largest |a| of the last step, for the force limit */
 };
@@ -86,7 +86,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
 
 #define ARRAYS(X)                                                                                                      \
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(brown, 1) X(surf, 1) X(rhof, 1)       \
-        X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1)
+        X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1)
 
 void sph_free(struct sph_state *st) {
     if (!st) return;
@@ -120,7 +120,10 @@ static hearth_status ensure(hearth_scene *s, int n, hearth_error *err) {
     nw.key = mem_alloc(sizeof(int) * (size_t)cap);
     nw.order = mem_alloc(sizeof(int) * (size_t)cap);
     ok = ok && nw.key && nw.order;
-    if (ok && st->n > 0) memcpy(nw.rhof, st->rhof, sizeof(double) * (size_t)st->n); /* the one array kept across steps */
+    if (ok && st->n > 0) { /* the arrays kept across steps */
+        memcpy(nw.rhof, st->rhof, sizeof(double) * (size_t)st->n);
+        memcpy(nw.Tprev, st->Tprev, sizeof(double) * (size_t)st->n);
+    }
     if (!ok) {
 #define FREE(a, k) mem_free(nw.a, sizeof(double) * (k) * (size_t)cap);
         ARRAYS(FREE)
@@ -208,6 +211,8 @@ static hearth_status sort_and_list(hearth_scene *s, double hcell, const double *
         /* the SPH arrays that carry over: final density (eq. 3.52) and h (for the adaptive pass) */
         for (int i = 0; i < n; i++) st->perm[i] = st->rhof[st->order[i]];
         memcpy(st->rhof, st->perm, sizeof(double) * (size_t)n);
+        for (int i = 0; i < n; i++) st->perm[i] = st->Tprev[st->order[i]];
+        memcpy(st->Tprev, st->perm, sizeof(double) * (size_t)n);
         if (h) {
             for (int i = 0; i < n; i++) st->perm[i] = h[st->order[i]];
             memcpy(st->h, st->perm, sizeof(double) * (size_t)n);
@@ -249,7 +254,7 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     if (e) return e;
     struct sph_state *st = s->sph;
     if (st->n != n) /* particles added or removed since the last step: final densities start over */
-        for (int i = 0; i < n; i++) st->rhof[i] = NAN;
+        for (int i = 0; i < n; i++) st->rhof[i] = st->Tprev[i] = NAN;
     st->valid = 0;
     if (n == 0) {
         st->n = 0;
@@ -323,8 +328,8 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         const material_slot *ms = &s->mats[mat[i]];
         const double gam = o->gamma, rho0 = st->rho0[i];
         const double bub = ms->core[CP_BUBBLE];
-        /* a particle is expanding while it is a bubble being heated above bubble_T0 */
-        const int heating = T && Tmax && T[i] > o->bubble_T0 && T[i] >= Tmax[i] - 1e-9;
+        /* a bubble expands while its temperature rises (since the last step) above bubble_T0 */
+        const int heating = T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
         if (!isfinite(st->rhof[i])) st->rhof[i] = rho0;
         if (bub > 0 && heating) { /* eq. 3.51 (Kelvin: ideal gas) */
             const double Vb = bub * (T[i] + KELVIN) / (o->bubble_T0 + KELVIN);
@@ -339,10 +344,11 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     /* while any bubble expands, dough and bubbles keep their density as final density (eq. 3.52) */
     int any_heating = 0;
     for (int i = 0; i < n && !any_heating; i++)
-        any_heating = s->mats[mat[i]].core[CP_BUBBLE] > 0 && T && Tmax && T[i] > o->bubble_T0 && T[i] >= Tmax[i] - 1e-9;
+        any_heating = s->mats[mat[i]].core[CP_BUBBLE] > 0 && T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
     if (any_heating)
         for (int i = 0; i < n; i++)
             if (st->rho[i] < st->rhof[i]) st->rhof[i] = st->rho[i];
+    if (T) memcpy(st->Tprev, T, sizeof(double) * (size_t)n);
 
     /* velocity gradient (3.27), colour gradient (3.29) and Laplacian; surface particles */
     double *C = pcold(ps, PC_C);
