@@ -83,12 +83,12 @@ static double now(void) {
 
 static int cmp_int(const void *a, const void *b) { return *(const int *)a - *(const int *)b; }
 
-/* 50k particles (3D, ~40 neighbours each): the cell list over particles sorted
+/* 20k particles (50k with SPH_BENCH_N=50000; 3D, ~40 neighbours each): the cell list over particles sorted
  * by cell and the kd-tree find the same neighbour sets. Prints both timings
  * (the comparison reported in docs/architecture.md; no timed assertion). */
 TEST(sph_neighbours_agree) {
-    const int n = 50000;
-    double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, hh = 0.06;
+    const int n = getenv("SPH_BENCH_N") ? atoi(getenv("SPH_BENCH_N")) : 20000; /* 50000 for the reported numbers */
+    double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, hh = 0.06 * cbrt(50000.0 / n); /* ~45 neighbours at any n */
     int per[3] = {0, 0, 0};
     double *x = malloc(sizeof(double) * 3 * n), *xs = malloc(sizeof(double) * 3 * n);
     int *key = malloc(sizeof(int) * n), *order = malloc(sizeof(int) * n);
@@ -109,7 +109,7 @@ TEST(sph_neighbours_agree) {
     double t1 = now();
     CHECK(sph_nlist_kdtree(&b, &c, xs, n, hh, &err) == HEARTH_OK);
     double t2 = now();
-    printf("50k particles, %d pairs: cell list (sort + lists) %.1f ms, kd-tree (build + queries) %.1f ms\n", a.off[n],
+    printf("%d particles, %d pairs: cell list (sort + lists) %.1f ms, kd-tree (build + queries) %.1f ms\n", n, a.off[n],
            1e3 * (t1 - t0), 1e3 * (t2 - t1));
     CHECK(a.off[n] == b.off[n]);
     CHECK(a.off[n] > 20 * n);
@@ -168,17 +168,17 @@ static int box_body(hearth_scene *s, int mat, double x0, double y0, double x1, d
     return id;
 }
 
-/* Hydrostatic tank: a 0.1 m water column (c = 10 m/s, three layers of fixed
+/* Hydrostatic tank: a 0.1 m water column (10 x 10 particles, c = 10 m/s, three layers of fixed
  * wall particles) settles; the pressure of the lowest fluid layer is
  * rho g (H - y) within 3%, and the kinetic energy decays. */
 TEST(sph_hydrostatic) {
-    const double dx = 0.005, lo[3] = {0, 0, 0}, hi[3] = {0.13, 0.3, 0};
+    const double dx = 0.01, lo[3] = {0, 0, 0}, hi[3] = {0.16, 0.3, 0};
     hearth_scene_def d = sph_def(2, dx, lo, hi);
     hearth_scene *s = hearth_scene_create(&d, NULL);
     CHECK(s != NULL);
     if (!s) return;
     const double rho = 1000, g = 9.81;
-    int m = newtonian(s, rho, 1e5, 2.0);
+    int m = newtonian(s, rho, 1e5, 5.0);
     const double w = 3 * dx, H = 0.1, top = w + H;
     CHECK(box_body(s, m, 0, 0, hi[0], w, 1, NAN) >= 0);
     CHECK(box_body(s, m, 0, w, w, 0.2, 1, NAN) >= 0);
@@ -218,7 +218,7 @@ TEST(sph_hydrostatic) {
         printf("hydrostatic: p(floor) = %.2f Pa from %d particles, rho g H = %.2f Pa, rel %+.4f; dp/dy = %.1f Pa/m "
                "(-rho g = %.1f); KE %.3g J (peak %.3g J)\n",
                pb, (int)S0, want, (pb - want) / want, slope, -rho * g, st.kinetic, kpeak);
-        CHECK(S0 > 200);
+        CHECK(S0 > 50);
         CHECK(fabs(pb - want) <= 0.03 * want);
         CHECK(st.kinetic < 0.05 * kpeak);
     }
@@ -248,7 +248,7 @@ TEST(sph_poiseuille) {
     CHECK(box_body(s, m, 0, w, hi[0], L + w, 0, NAN) >= 0);
     hearth_scene_set_body_force(s, push_x, &f);
     hearth_error err;
-    const double tend = 2.0 * L * L / nu; /* many viscous times (L^2 / (pi^2 nu) each) */
+    const double tend = 1.0 * L * L / nu; /* ten viscous times L^2 / (pi^2 nu): steady to e^-10 */
     hearth_status rc = hearth_scene_advance(s, tend, &err);
     if (rc) fprintf(stderr, "%s\n", err.msg);
     CHECK(rc == HEARTH_OK);

@@ -81,18 +81,6 @@ void sph_cells_sort(sph_cells *c, const int *key, int n, int *order) {
     c->start[0] = 0;
 }
 
-void sph_disp(const sph_cells *c, const double *xi, const double *xj, double d[3]) {
-    for (int a = 0; a < 3; a++) {
-        double v = xi[a] - xj[a];
-        if (c->periodic[a]) {
-            const double L = c->len[a];
-            if (v > 0.5 * L) v -= L;
-            else if (v < -0.5 * L) v += L;
-        }
-        d[a] = v;
-    }
-}
-
 /* Visit the neighbours of particle i: fn-like macro body over cells. */
 static int walk(const sph_cells *c, const double *x, int i, const double *h, double h0, int *out) {
     int ki[3] = {0, 0, 0};

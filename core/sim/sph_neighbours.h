@@ -43,7 +43,17 @@ int sph_cell_of(const sph_cells *c, const double x[3]);
 /// (new i = old order[i]); fills c->start.
 void sph_cells_sort(sph_cells *c, const int *key, int n, int *order);
 /// Displacement x_i - x_j, minimum image on periodic axes.
-void sph_disp(const sph_cells *c, const double *xi, const double *xj, double d[3]);
+static inline void sph_disp(const sph_cells *c, const double *xi, const double *xj, double d[3]) {
+    for (int a = 0; a < 3; a++) {
+        double v = xi[a] - xj[a];
+        if (c->periodic[a]) {
+            const double L = c->len[a];
+            if (v > 0.5 * L) v -= L;
+            else if (v < -0.5 * L) v += L;
+        }
+        d[a] = v;
+    }
+}
 
 /// Neighbour lists of sorted particles: j is a neighbour of i (j != i) when
 /// |x_i - x_j| < (h_i + h_j) / 2 (symmetric h_ij, eq. 3.56). h may be NULL
