@@ -12,11 +12,12 @@
 #include "error.h"
 #include "gas.h"
 #include "scene.h"
+#include "sph.h"
 #include "tensor.h"
 
 typedef enum field_id {
     F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_TEMPERATURE, F_BOUNDARY,
-    F_GAS, F_POROSITY, F_GAS_PRESSURE, F_COUNT
+    F_GAS, F_POROSITY, F_GAS_PRESSURE, F_BROWNING, F_COUNT
 } field_id;
 
 /* A field is live when its column is enabled (column -1: always live). */
@@ -36,6 +37,8 @@ static const struct {
     [F_SPEED] = {"speed", "m/s", 1, -1, NULL},         [F_DENSITY] = {"density", "kg/m^3", 1, -1, NULL},
     [F_J] = {"J", "1", 1, -1, NULL},                   [F_PRESSURE] = {"pressure", "Pa", 1, -1, NULL},
     [F_VON_MISES] = {"von_mises", "Pa", 1, -1, NULL},
+    [F_BROWNING] = {"browning", "1", 1, PC_TEMPERATURE,
+                    "use solver = \"sph\" and turn the temperature field on (Rodriguez-Arenas eq. 4.5-4.6)"},
 };
 
 static int field_lookup(const char *name) {
@@ -55,6 +58,7 @@ const char *hearth_field_unit(const char *field) {
 }
 
 static int field_live(const hearth_scene *s, int f) {
+    if (f == F_BROWNING && s->def.solver != HEARTH_SOLVER_SPH) return 0;
     return fields[f].column < 0 || (s->ps.enabled & (1u << fields[f].column));
 }
 
@@ -119,6 +123,11 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_TEMPERATURE: out[0] = pcold(ps, PC_TEMPERATURE)[i]; break;
     case F_BOUNDARY: out[0] = (pcoli(ps, PC_FLAGS)[i] & PF_BOUNDARY) ? 1.0 : 0.0; break;
     case F_GAS: out[0] = pcold(ps, PC_GAS)[i]; break;
+    case F_BROWNING: { /* from the last SPH step; NaN before the first */
+        const double *b = sph_particle_values(s, "browning");
+        out[0] = b ? b[i] : NAN;
+        break;
+    }
     case F_POROSITY:
     case F_GAS_PRESSURE: {
         const int m = pcoli(ps, PC_MAT)[i];

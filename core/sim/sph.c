@@ -59,8 +59,11 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
     RANGE(surface_threshold, 0.0, 10.0, "");
     RANGE(alpha_c, 0.0, 1.0, "");
     RANGE(beta_c, 0.0, 1.0, "");
-    RANGE(xsph0, 0.0, 10.0, "");
-    RANGE(xsph_f, 0.0, 10.0, "");
+    /* XSPH moves a particle toward its neighbours' mean velocity by epsilon
+     * times the difference: above 1 it overshoots and grows (Table 4.1 lists
+     * 5, the text of §4.3 uses 0.5) */
+    RANGE(xsph0, 0.0, 1.0, " (above 1 XSPH overshoots the neighbours' mean velocity)");
+    RANGE(xsph_f, 0.0, 1.0, " (above 1 XSPH overshoots the neighbours' mean velocity)");
     RANGE(heat_ext, 0.0, 1e12, "");
     RANGE(heat_int, 0.0, 1e6, " m^2/s");
     RANGE(k_g, 0.1, 10.0, "");
@@ -322,37 +325,9 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         density(s);
     }
 
-    /* pressure: Tait (3.17); bubbles (3.51) while heating, then final-density Tait (3.52) */
-    const int *mat = pcoli(ps, PC_MAT);
-    for (int i = 0; i < n; i++) {
-        const material_slot *ms = &s->mats[mat[i]];
-        const double gam = o->gamma, rho0 = st->rho0[i];
-        const double bub = ms->core[CP_BUBBLE];
-        /* a bubble expands while its temperature rises (since the last step) above bubble_T0 */
-        const int heating = T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
-        if (!isfinite(st->rhof[i])) st->rhof[i] = rho0;
-        if (bub > 0 && heating) { /* eq. 3.51 (Kelvin: ideal gas) */
-            const double Vb = bub * (T[i] + KELVIN) / (o->bubble_T0 + KELVIN);
-            st->prs[i] = st->B[i] * st->rho[i] / rho0 * (Vb - 1);
-        } else
-            st->prs[i] = st->B[i] * (pow(st->rho[i] / st->rhof[i], gam) - 1); /* eq. 3.17, 3.52 */
-        /* A free surface has too few neighbours, so its summed density is low
-         * and Tait pulls: particles clump and climb walls (tensile
-         * instability). Clamped unless the scene asks for tension. */
-        if (!o->tension && st->prs[i] < 0) st->prs[i] = 0;
-    }
-    /* while any bubble expands, dough and bubbles keep their density as final density (eq. 3.52) */
-    int any_heating = 0;
-    for (int i = 0; i < n && !any_heating; i++)
-        any_heating = s->mats[mat[i]].core[CP_BUBBLE] > 0 && T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
-    if (any_heating)
-        for (int i = 0; i < n; i++)
-            if (st->rho[i] < st->rhof[i]) st->rhof[i] = st->rho[i];
-    if (T) memcpy(st->Tprev, T, sizeof(double) * (size_t)n);
-
-    /* velocity gradient (3.27), colour gradient (3.29) and Laplacian; surface particles */
     double *C = pcold(ps, PC_C);
     const int *off = st->nl.off, *nb = st->nl.j;
+    /* velocity gradient (3.27), colour gradient (3.29) and Laplacian; surface particles */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = 0;
@@ -375,6 +350,51 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         st->lapC[i] = lc;
         st->surf[i] = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]) * st->h[i] > o->surface_threshold;
     }
+
+    /* pressure: Tait (3.17); bubbles (3.51) while heating, then final-density Tait (3.52) */
+    const int *mat = pcoli(ps, PC_MAT);
+    for (int i = 0; i < n; i++) {
+        const material_slot *ms = &s->mats[mat[i]];
+        const double gam = o->gamma, rho0 = st->rho0[i];
+        const double bub = ms->core[CP_BUBBLE];
+        /* a bubble expands while its temperature rises (since the last step) above bubble_T0 */
+        const int heating = T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
+        if (!isfinite(st->rhof[i])) st->rhof[i] = rho0;
+        st->prs[i] = st->B[i] * (pow(st->rho[i] / st->rhof[i], gam) - 1); /* eq. 3.17, 3.52 */
+        if (bub > 0 && heating) { /* eq. 3.51 (Kelvin: ideal gas) */
+            const double Vb = bub * (T[i] + KELVIN) / (o->bubble_T0 + KELVIN);
+            /* Not below Tait: eq. 3.51 alone has no resistance to compression,
+             * so a heating bubble squeezed by its neighbours (on a tray, seen)
+             * collapses onto them and explodes when it stops heating. */
+            st->prs[i] = fmax(st->prs[i], st->B[i] * st->rho[i] / rho0 * (Vb - 1));
+        }
+        /* A free surface has too few neighbours, so its summed density is low
+         * and Tait pulls: particles clump and climb walls (tensile
+         * instability). Clamped unless the scene asks for tension. */
+        if (!o->tension && st->prs[i] < 0) st->prs[i] = 0;
+    }
+    /* while any bubble expands, dough and bubbles keep their density as final density (eq. 3.52) */
+    int any_heating = 0;
+    for (int i = 0; i < n && !any_heating; i++)
+        any_heating = s->mats[mat[i]].core[CP_BUBBLE] > 0 && T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
+    if (any_heating) {
+        /* A surface particle's summed density is low for want of neighbours,
+         * not because it expanded: keeping that as its final density would
+         * make it explode when it is surrounded again. Interior particles
+         * keep their own density; surface particles the mean of their
+         * interior neighbours'. */
+        for (int i = 0; i < n; i++)
+            if (!st->surf[i] && st->rho[i] < st->rhof[i]) st->rhof[i] = st->rho[i];
+        for (int i = 0; i < n; i++) {
+            if (!st->surf[i]) continue;
+            double sum = 0;
+            int cnt = 0;
+            for (int k = off[i]; k < off[i + 1]; k++)
+                if (!st->surf[nb[k]]) sum += st->rhof[nb[k]], cnt++;
+            if (cnt && sum / cnt < st->rhof[i]) st->rhof[i] = sum / cnt;
+        }
+    }
+    if (T) memcpy(st->Tprev, T, sizeof(double) * (size_t)n);
 
     /* plugin stress: F <- (I + dt L) F, deviator of sigma = tau / J */
     double *F = pcold(ps, PC_F), *state = pcold(ps, PC_STATE);

@@ -239,7 +239,14 @@ end
 
 local S = core.scene_methods
 local scene_keys = { dim = true, dx = true, box = true, solver = true, gravity = true, cfl = true, dt_max = true,
-  wall = true, friction = true, guard = true, max_rollbacks = true, seed = true, name = true, oven = true, heat = true }
+  wall = true, friction = true, guard = true, max_rollbacks = true, seed = true, name = true, oven = true, heat = true,
+  sph = true }
+-- h.scene{solver = "sph", sph = {...}}: numbers (ranges are checked by the core) and flags (booleans)
+local sph_number_keys = { h_factor = true, gamma = true, av_beta = true, surface_tension = true,
+  surface_threshold = true, alpha_c = true, beta_c = true, xsph0 = true, xsph_f = true, xsph_T0 = true, xsph_Tf = true,
+  heat_ext = true, heat_int = true, k_g = true, eps_g = true, bubble_T0 = true, dt_viscous = true, dt_force = true }
+local sph_flag_keys = { leapfrog = true, adaptive_h = true, tension = true, periodic_x = true, periodic_y = true,
+  periodic_z = true }
 local contact = { "sticky", "slip", "separate" }
 
 --- A scene: h.scene{dim = 2, dx = 0.01, box = {{0,0},{1,1}}, gravity = {0,-9.81}, ...}
@@ -252,8 +259,24 @@ function h.scene(o)
   check_keys(o, scene_keys, "h.scene")
   local dim = o.dim or 2
   if dim ~= 2 and dim ~= 3 then error(("h.scene: dim = %s; valid: 2, 3"):format(tostring(dim)), 2) end
-  if o.solver and o.solver ~= "mpm" then
-    error(("h.scene: solver = %s; valid: mpm (sph is not built yet)"):format(tostring(o.solver)), 2)
+  local solver = check_choice(o.solver or "mpm", "h.scene: solver", { "mpm", "sph" })
+  local sph
+  if o.sph ~= nil then
+    if type(o.sph) ~= "table" then error("h.scene: sph = {h_factor = 2.4, xsph0 = 0.05, ...}", 2) end
+    if solver ~= 1 then error("h.scene: sph = {...} needs solver = \"sph\"", 2) end
+    local all = {}
+    for k in pairs(sph_number_keys) do all[k] = true end
+    for k in pairs(sph_flag_keys) do all[k] = true end
+    check_keys(o.sph, all, "h.scene: sph")
+    sph = {}
+    for k, v in pairs(o.sph) do
+      if sph_number_keys[k] and type(v) ~= "number" then
+        error(("h.scene: sph.%s must be a number, got %s"):format(k, type(v)), 2)
+      elseif sph_flag_keys[k] and type(v) ~= "boolean" then
+        error(("h.scene: sph.%s must be true or false, got %s"):format(k, type(v)), 2)
+      end
+      sph[k] = v
+    end
   end
   local box = o.box or { { 0, 0, 0 }, { 1, 1, 1 } }
   if type(box) ~= "table" or #box ~= 2 then error("h.scene: box = {{lo}, {hi}}", 2) end
@@ -271,6 +294,7 @@ function h.scene(o)
     seed = check_number(o.seed or 1, "h.scene: seed", 0, 2 ^ 52),
     heat_implicit = check_choice(o.heat or "explicit", "h.scene: heat", { "explicit", "implicit" }),
     oven_beta = 0,
+    solver = solver, sph = sph,
   }
   if o.oven ~= nil then
     if type(o.oven) ~= "table" then error("h.scene: oven = {temperature = degC, beta = W/(m^2 K)}", 2) end

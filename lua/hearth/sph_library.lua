@@ -8,7 +8,8 @@
 --              viscosity eq. 4.1 through (T0, mu0), (Tc, muc), (Tf, muf)
 --              C_lambda  eq. 4.3 (the arctan law is a parameter mode of the plugin)
 --   .sph       the XSPH tuner of eq. 4.4 (linear from eps0 at T0 to eps_f at Tf)
---              for h.scene{solver = "sph", sph = ...}
+--              for h.scene{solver = "sph", sph = ...}; eps_f is 0.5 as in the text of
+--              §4.3 (Table 4.1 prints 5; XSPH above 1 overshoots and the core refuses it)
 --   .table     the raw Table 4.1 numbers.
 -- Difference from the thesis: eq. 4.1 and 4.2 extrapolate linearly beyond T0
 -- and Tf; hearth's curves are constant beyond their end points.
@@ -26,7 +27,8 @@ return function(h)
           viscosity = h.curve { { t.T0, t.mu0 }, { t.Tc, t.muc }, { t.Tf, t.muf } },
           C_lambda = t.C_lambda, density = 1100, bulk = 2e4,
         },
-        sph = { xsph0 = t.eps0, xsph_f = t.epsf, xsph_T0 = t.T0, xsph_Tf = t.Tf },
+        -- eps_f: §4.3's text value 0.5, not Table 4.1's 5 (XSPH overshoots above 1; the core refuses it)
+        sph = { xsph0 = t.eps0, xsph_f = 0.5, xsph_T0 = t.T0, xsph_Tf = t.Tf },
         table = (function() local c = {} for k, v in pairs(t) do c[k] = v end return c end)(),
       }
     end,

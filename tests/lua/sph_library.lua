@@ -3,7 +3,7 @@ local h = require "hearth"
 local b = h.library.sph.bread_roll
 local t = b.table
 assert(t.T0 == 26 and t.Tc == 45 and t.Tf == 120 and t.C_lambda == 450 and t.epsf == 5, "Table 4.1 numbers")
-assert(b.sph.xsph0 == 0.05 and b.sph.xsph_f == 5, "XSPH tuner eq. 4.4")
+assert(b.sph.xsph0 == 0.05 and b.sph.xsph_f == 0.5, "XSPH tuner eq. 4.4 (eps_f of the text of §4.3)")
 b.table.T0 = 0
 assert(h.library.sph.bread_roll.table.T0 == 26, "a fresh table on every access")
 local ok, e = pcall(function() return h.library.sph.bagel end)
