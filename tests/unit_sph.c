@@ -440,5 +440,100 @@ TEST(sph_determinism_threads) {
     CHECK(hsh[0] == hsh[1]);
 }
 
+/* One particle in free fall: leapfrog (drift-kick-drift) is exact for a
+ * constant acceleration; symplectic Euler (eq. 3.57-3.58) lands g dt t / 2
+ * lower, exactly. */
+TEST(sph_integrators_free_fall) {
+    for (int lf = 0; lf <= 1; lf++) {
+        const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 0};
+        hearth_scene_def d = sph_def(2, 0.01, lo, hi);
+        d.sph.leapfrog = lf;
+        d.dt_max = 1e-3;
+        d.cfl = 1; /* so dt_max sets every step */
+        hearth_scene *s = hearth_scene_create(&d, NULL);
+        CHECK(s != NULL);
+        if (!s) continue;
+        int m = newtonian(s, 1000, 1e4, 0);
+        double x0[3] = {0.5, 0.9, 0};
+        hearth_error err;
+        CHECK(hearth_scene_add_particles(s, m, 1, x0, NULL, 1e-4, &err) == 1);
+        CHECK(hearth_scene_step(s, 200, &err) == HEARTH_OK);
+        hearth_stats st;
+        hearth_scene_stats(s, &st);
+        const double t = st.t, dt = st.dt, g = 9.81, y = hearth_scene_positions(s)[1];
+        const double exact = 0.9 - 0.5 * g * t * t, want = lf ? exact : exact - 0.5 * g * dt * t;
+        printf("%s: t = %.4g s, y = %.12f m, exact %.12f m, expected %.12f m\n", lf ? "leapfrog" : "symplectic Euler",
+               t, y, exact, want);
+        CHECK(fabs(dt - 1e-3) < 1e-15);
+        CHECK_NEAR(y, want, 1e-12);
+        hearth_scene_destroy(s);
+    }
+}
+
+/* Collider response (eq. 3.31-3.33): a particle hitting a plane keeps beta_c
+ * of its tangential velocity and leaves with alpha_c of its normal speed. */
+TEST(sph_collider_response) {
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 0};
+    hearth_scene_def d = sph_def(2, 0.01, lo, hi);
+    d.gravity[1] = 0;
+    d.sph.alpha_c = 0.5;
+    d.sph.beta_c = 0.8;
+    d.dt_max = 1e-3;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    CHECK(s != NULL);
+    if (!s) return;
+    int m = newtonian(s, 1000, 1e4, 0);
+    double x0[3] = {0.5, 0.3005, 0}, v0[3] = {0.2, -1.0, 0};
+    hearth_error err;
+    CHECK(hearth_scene_add_particles(s, m, 1, x0, v0, 1e-4, &err) == 1);
+    hearth_collider_def cd = hearth_default_collider_def();
+    double p[3] = {0, 0.3, 0}, nrm[3] = {0, 1, 0};
+    cd.shape = hearth_shape_plane(p, nrm);
+    cd.mode = HEARTH_SLIP;
+    CHECK(hearth_scene_add_collider(s, &cd, &err) >= 0);
+    hearth_shape_free((hearth_shape *)cd.shape);
+    CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+    const double *v = pcold(&s->ps, PC_V), *x = hearth_scene_positions(s);
+    printf("after contact: x = (%.6f, %.6f), v = (%.6f, %.6f)\n", x[0], x[1], v[0], v[1]);
+    CHECK_NEAR(x[1], 0.3, 1e-12);
+    CHECK_NEAR(v[0], 0.8 * 0.2, 1e-12);
+    CHECK_NEAR(v[1], 0.5 * 1.0, 1e-12);
+    hearth_scene_destroy(s);
+}
+
+/* Internal heat (eq. 3.45-3.46) in a pinned block, hot left half: the
+ * pairwise form conserves sum m T exactly and the halves approach each other. */
+TEST(sph_heat_internal_conserves) {
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.1, 0};
+    hearth_scene_def d = sph_def(2, 0.005, lo, hi);
+    d.sph.heat_int = 0.5;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    CHECK(s != NULL);
+    if (!s) return;
+    int m = newtonian(s, 1000, 1e4, 0);
+    CHECK(box_body(s, m, 0.02, 0.02, 0.05, 0.08, 1, 80) >= 0);
+    CHECK(box_body(s, m, 0.05, 0.02, 0.08, 0.08, 1, 20) >= 0);
+    const int n = s->ps.n;
+    double E0 = 0, dT0 = 0, E1 = 0;
+    const double *mass = pcold(&s->ps, PC_MASS);
+    for (int i = 0; i < n; i++) E0 += mass[i] * pcold(&s->ps, PC_TEMPERATURE)[i];
+    hearth_error err;
+    CHECK(hearth_scene_step(s, 200, &err) == HEARTH_OK);
+    const double *T = pcold(&s->ps, PC_TEMPERATURE), *x = hearth_scene_positions(s);
+    double hot = 0, cold = 0;
+    int nh = 0, nc = 0;
+    for (int i = 0; i < n; i++) {
+        E1 += mass[i] * T[i];
+        if (x[3 * i] < 0.05) hot += T[i], nh++;
+        else cold += T[i], nc++;
+    }
+    dT0 = 60;
+    printf("heat: sum m T %.15g -> %.15g; halves %.3f and %.3f degC\n", E0, E1, hot / nh, cold / nc);
+    CHECK_NEAR(E1, E0, 1e-12 * E0);
+    CHECK(hot / nh - cold / nc < 0.9 * dT0 && hot / nh > cold / nc);
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_neighbours_agree), T(sph_hydrostatic),
-          T(sph_poiseuille), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads))
+          T(sph_poiseuille), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads),
+          T(sph_integrators_free_fall), T(sph_collider_response), T(sph_heat_internal_conserves))
