@@ -6,7 +6,7 @@
 -- and the block slumps into a puddle. Writes height.csv (top of the material
 -- above the tray over time).
 local h = require "hearth"
-local P = h.params { floor = 150, dx = 0.003 }
+local P = h.params { floor = 150, dx = 0.004 }
 
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.3, 0.15 } }, solver = "sph",
   sph = { heat_ext = 3e8, heat_int = 0.5, av_beta = 1, xsph0 = 0.1, xsph_f = 0.02, xsph_T0 = 20, xsph_Tf = 80 } }
