@@ -219,6 +219,12 @@ TEST(sph_hydrostatic) {
                "(-rho g = %.1f); KE %.3g J (peak %.3g J)\n",
                pb, (int)S0, want, (pb - want) / want, slope, -rho * g, st.kinetic, kpeak);
         CHECK(S0 > 50);
+        /* probes see the SPH fields: the Tait pressure mid-column, kernel-averaged */
+        double q[3] = {0.08, w + 0.5 * H, 0}, pp = NAN;
+        hearth_error perr;
+        CHECK(hearth_probe_point(s, "pressure", q, &pp, &perr) == HEARTH_OK);
+        printf("probe pressure at mid-depth %.1f Pa, rho g H / 2 = %.1f Pa\n", pp, rho * g * (top - q[1]));
+        CHECK(fabs(pp - rho * g * (top - q[1])) <= 0.1 * rho * g * (top - q[1]));
         CHECK(fabs(pb - want) <= 0.03 * want);
         CHECK(st.kinetic < 0.05 * kpeak);
     }

@@ -114,6 +114,13 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
 static void particle_value(const hearth_scene *s, int f, int i, double *out, double *state_copy) {
     const particles *ps = &s->ps;
     const double *v = pcold(ps, PC_V) + 3 * i, *F = pcold(ps, PC_F) + 9 * i;
+    if (f == F_DENSITY || f == F_PRESSURE) { /* SPH: the summed density (eq. 3.13) and the Tait pressure that move it */
+        const double *sv = sph_particle_values(s, f == F_DENSITY ? "density" : "pressure");
+        if (sv) {
+            out[0] = sv[i];
+            return;
+        }
+    }
     switch (f) {
     case F_VELOCITY: memcpy(out, v, 3 * sizeof(double)); break;
     case F_VX: case F_VY: case F_VZ: out[0] = v[f - F_VX]; break;
