@@ -540,6 +540,43 @@ TEST(sph_heat_internal_conserves) {
     hearth_scene_destroy(s);
 }
 
+/* Sigalotti's adaptive h (eq. 3.54-3.55): in a pinned block, a corner
+ * particle (low summed density) gets a longer h than the centre, and every h
+ * is k_g (rho / geometric mean)^-eps_g h0 from the first density estimate. */
+TEST(sph_adaptive_h) {
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.1, 0}, dx = 0.005;
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.sph.adaptive_h = 1;
+    d.sph.k_g = 1.1;
+    d.sph.eps_g = 0.5;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    CHECK(s != NULL);
+    if (!s) return;
+    int m = newtonian(s, 1000, 1e4, 0);
+    CHECK(box_body(s, m, 0.02, 0.02, 0.08, 0.08, 1, NAN) >= 0);
+    hearth_error err;
+    CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+    const double *h = sph_particle_values(s, "h"), *x = hearth_scene_positions(s);
+    CHECK(h != NULL);
+    if (!h) {
+        hearth_scene_destroy(s);
+        return;
+    }
+    int corner = -1, centre = -1;
+    for (int i = 0; i < s->ps.n; i++) {
+        if (fabs(x[3 * i] - 0.0225) < 1e-9 && fabs(x[3 * i + 1] - 0.0225) < 1e-9) corner = i;
+        if (fabs(x[3 * i] - 0.0475) < 1e-9 && fabs(x[3 * i + 1] - 0.0475) < 1e-9) centre = i;
+    }
+    CHECK(corner >= 0 && centre >= 0);
+    if (corner >= 0 && centre >= 0) {
+        const double h0 = 2.4 * dx;
+        printf("adaptive h: corner %.5f m, centre %.5f m (h0 %.5f m, k_g 1.1)\n", h[corner], h[centre], h0);
+        CHECK(h[corner] > 1.15 * h[centre]);
+        CHECK(h[centre] > 0.9 * 1.1 * h0 && h[centre] < 1.1 * h0);
+    }
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_neighbours_agree), T(sph_hydrostatic),
           T(sph_poiseuille), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads),
-          T(sph_integrators_free_fall), T(sph_collider_response), T(sph_heat_internal_conserves))
+          T(sph_integrators_free_fall), T(sph_collider_response), T(sph_heat_internal_conserves), T(sph_adaptive_h))
