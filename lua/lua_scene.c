@@ -63,6 +63,34 @@ static int l_scene_new(lua_State *L) {
     d.oven_beta = field_num(L, 1, "oven_beta");
     d.heat_implicit = (int)field_num(L, 1, "heat_implicit");
     d.water_momentum = (int)field_num(L, 1, "water_momentum");
+    /* ---- SPH: solver = 1 and the optional sph = {...} table (keys checked by init.lua) ---- */
+    d.solver = (int)field_num(L, 1, "solver");
+    lua_getfield(L, 1, "sph");
+    if (lua_istable(L, -1)) {
+        const int t = lua_gettop(L);
+        hearth_sph_def *o = &d.sph;
+        struct { const char *k; double *v; } nums[] = {
+            {"h_factor", &o->h_factor}, {"gamma", &o->gamma}, {"av_beta", &o->av_beta},
+            {"surface_tension", &o->surface_tension}, {"surface_threshold", &o->surface_threshold},
+            {"alpha_c", &o->alpha_c}, {"beta_c", &o->beta_c}, {"xsph0", &o->xsph0}, {"xsph_f", &o->xsph_f},
+            {"xsph_T0", &o->xsph_T0}, {"xsph_Tf", &o->xsph_Tf}, {"heat_ext", &o->heat_ext}, {"heat_int", &o->heat_int},
+            {"k_g", &o->k_g}, {"eps_g", &o->eps_g}, {"bubble_T0", &o->bubble_T0}, {"dt_viscous", &o->dt_viscous},
+            {"dt_force", &o->dt_force}};
+        for (size_t k = 0; k < sizeof nums / sizeof nums[0]; k++) {
+            lua_getfield(L, t, nums[k].k);
+            if (lua_isnumber(L, -1)) *nums[k].v = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+        struct { const char *k; int *v; } flags[] = {{"leapfrog", &o->leapfrog}, {"adaptive_h", &o->adaptive_h},
+                                                     {"tension", &o->tension}, {"periodic_x", &o->periodic[0]},
+                                                     {"periodic_y", &o->periodic[1]}, {"periodic_z", &o->periodic[2]}};
+        for (size_t k = 0; k < sizeof flags / sizeof flags[0]; k++) {
+            lua_getfield(L, t, flags[k].k);
+            if (lua_isboolean(L, -1)) *flags[k].v = lua_toboolean(L, -1);
+            lua_pop(L, 1);
+        }
+    }
+    lua_pop(L, 1);
     hl_scene *u = lua_newuserdatauv(L, sizeof *u, 1);
     u->s = NULL;
     luaL_setmetatable(L, HL_SCENE);

@@ -440,6 +440,10 @@ lua_dough_library)
     out=$("$hearth" run "$scenes/dough_library.lua" --quiet 2>&1) || fail "dough_library.lua: $out"
     echo "$out" | grep -q "dough library ok" || fail "dough_library.lua did not finish: $out"
     ;;
+lua_sph_library)
+    out=$("$hearth" run "$scenes/sph_library.lua" --quiet 2>&1) || fail "sph_library.lua: $out"
+    echo "$out" | grep -q "sph library ok" || fail "sph_library.lua did not finish: $out"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"

@@ -9,9 +9,10 @@ cd "$tmp" || exit 1
 "$hearth" run "$root/scripts/scenes/$name.lua" --until 0.1 --frames 2 --quiet > out.txt 2> err.txt
 rc=$?
 [ $rc -eq 0 ] || { echo "FAIL: $name exited $rc: $(cat err.txt)" >&2; exit 1; }
-n=$(find "hearth-out/$name" -name '*.png' | wc -l)
+out=$(basename "$name") # scenes in subfolders (sph/bread_roll) write to hearth-out/<file name>
+n=$(find "hearth-out/$out" -name '*.png' | wc -l)
 [ "$n" -ge 3 ] || { echo "FAIL: $name wrote $n PNG frames, expected at least 3" >&2; exit 1; }
-for f in $(find "hearth-out/$name" -name '*.png'); do
+for f in $(find "hearth-out/$out" -name '*.png'); do
     python3 - "$f" <<'PY' || { echo "FAIL: $f does not decode" >&2; exit 1; }
 import sys, zlib, struct
 b = open(sys.argv[1], "rb").read()

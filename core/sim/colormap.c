@@ -30,6 +30,16 @@ static const unsigned char inferno[N_ANCHORS][3] = {
     {242, 232, 101}, {252, 255, 164},
 };
 
+/* Crust colour for the SPH browning value (Rodriguez-Arenas 2011 §4.4 maps
+ * it through a texture gradient): raw dough, golden, deep brown. Our own
+ * anchors, interpolated like the others. */
+static const unsigned char browning[N_ANCHORS][3] = {
+    {242, 226, 190}, {240, 220, 178}, {238, 212, 164}, {236, 203, 148}, {233, 193, 131},
+    {229, 181, 113}, {224, 168, 96},  {217, 154, 80},  {208, 139, 66},  {197, 124, 54},
+    {184, 109, 44},  {168, 95, 37},   {151, 82, 31},   {133, 69, 27},   {114, 58, 24},
+    {95, 48, 21},    {76, 38, 18},
+};
+
 static unsigned char to_byte(double v) {
     /* v is already within 0..255; the + 0.5 rounds to nearest. */
     return (unsigned char)(v + 0.5);
@@ -46,6 +56,7 @@ void cmap_eval(int map, double t, unsigned char rgb[3]) {
     switch (map) {
     case CMAP_VIRIDIS: table = viridis; break;
     case CMAP_INFERNO: table = inferno; break;
+    case CMAP_BROWNING: table = browning; break;
     case CMAP_GRAY: rgb[0] = rgb[1] = rgb[2] = to_byte(255.0 * t); return;
     default:
         HEARTH_ASSERT(!"unknown colour map");
@@ -64,7 +75,7 @@ int cmap_by_name(const char *name) {
     static const struct {
         const char *name;
         int id;
-    } names[] = {{"viridis", CMAP_VIRIDIS}, {"inferno", CMAP_INFERNO}, {"gray", CMAP_GRAY}};
+    } names[] = {{"viridis", CMAP_VIRIDIS}, {"inferno", CMAP_INFERNO}, {"gray", CMAP_GRAY}, {"browning", CMAP_BROWNING}};
     if (!name) return -1;
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
         if (strcmp(name, names[i].name) == 0) return names[i].id;

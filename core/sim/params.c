@@ -23,6 +23,8 @@ static const hearth_param core_schema[CP_COUNT] = {
                         "surface water loss q^w.n = beta^w theta s, theta absolute (Ding et al. §3.2); 0 = none", 0, 0, 10},
     [CP_WATER_STIFFNESS] = {"water_stiffness", "Pa", "water pressure sigma^w = -c (s - s_0) I (Ding et al. eq. 14); 0 = none", 0, 0, 1e9},
     [CP_WATER_DENSITY] = {"water_density", "kg/m^3", "density of pure water rho_0^w (Ding et al. eq. 8)", 1000, 1, 1e5},
+    /* Rodriguez-Arenas 2011 eq. 3.50: V_b0 of bubble particles; the SPH solver only */
+    [CP_BUBBLE] = {"bubble", "1", "SPH: initial bubble volume V_b0 (eq. 3.50) marks bubble particles; 0 = dough", 0, 0, 100},
 };
 
 const hearth_param *hearth_core_params(int *n) {

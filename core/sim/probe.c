@@ -12,12 +12,13 @@
 #include "error.h"
 #include "gas.h"
 #include "scene.h"
+#include "sph.h"
 #include "tensor.h"
 #include "water.h"
 
 typedef enum field_id {
     F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_TEMPERATURE, F_BOUNDARY,
-    F_GAS, F_POROSITY, F_GAS_PRESSURE, F_SATURATION, F_WATER_MASS, F_WATER_PRESSURE, F_COUNT
+    F_GAS, F_POROSITY, F_GAS_PRESSURE, F_SATURATION, F_WATER_MASS, F_WATER_PRESSURE, F_BROWNING, F_COUNT
 } field_id;
 
 /* A field is live when its column is enabled (column -1: always live). */
@@ -43,6 +44,8 @@ static const struct {
     [F_SPEED] = {"speed", "m/s", 1, -1, NULL},         [F_DENSITY] = {"density", "kg/m^3", 1, -1, NULL},
     [F_J] = {"J", "1", 1, -1, NULL},                   [F_PRESSURE] = {"pressure", "Pa", 1, -1, NULL},
     [F_VON_MISES] = {"von_mises", "Pa", 1, -1, NULL},
+    [F_BROWNING] = {"browning", "1", 1, PC_TEMPERATURE,
+                    "use solver = \"sph\" and turn the temperature field on (Rodriguez-Arenas eq. 4.5-4.6)"},
 };
 
 static int field_lookup(const char *name) {
@@ -62,6 +65,7 @@ const char *hearth_field_unit(const char *field) {
 }
 
 static int field_live(const hearth_scene *s, int f) {
+    if (f == F_BROWNING && s->def.solver != HEARTH_SOLVER_SPH) return 0;
     return fields[f].column < 0 || (s->ps.enabled & (1u << fields[f].column));
 }
 
@@ -118,6 +122,13 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
 static void particle_value(const hearth_scene *s, int f, int i, double *out, double *state_copy) {
     const particles *ps = &s->ps;
     const double *v = pcold(ps, PC_V) + 3 * i, *F = pcold(ps, PC_F) + 9 * i;
+    if (f == F_DENSITY || f == F_PRESSURE) { /* SPH: the summed density (eq. 3.13) and the Tait pressure that move it */
+        const double *sv = sph_particle_values(s, f == F_DENSITY ? "density" : "pressure");
+        if (sv) {
+            out[0] = sv[i];
+            return;
+        }
+    }
     switch (f) {
     case F_VELOCITY: memcpy(out, v, 3 * sizeof(double)); break;
     case F_VX: case F_VY: case F_VZ: out[0] = v[f - F_VX]; break;
@@ -134,6 +145,11 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_WATER_PRESSURE: /* p^w = c (s - s_0), compression positive (eq. 14) */
         out[0] = s->mats[pcoli(ps, PC_MAT)[i]].core[CP_WATER_STIFFNESS] * (water_saturation(s, i) - pcold(ps, PC_SAT0)[i]);
         break;
+    case F_BROWNING: { /* from the last SPH step; NaN before the first */
+        const double *b = sph_particle_values(s, "browning");
+        out[0] = b ? b[i] : NAN;
+        break;
+    }
     case F_POROSITY:
     case F_GAS_PRESSURE: {
         const int m = pcoli(ps, PC_MAT)[i];

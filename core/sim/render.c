@@ -13,7 +13,10 @@
 
 static const unsigned char BG[3] = {24, 24, 28}, FG[3] = {230, 230, 230}, FRAME[3] = {90, 90, 100};
 
-static int map_for(const char *field) { return strncmp(field, "temperature", 11) == 0 ? CMAP_INFERNO : CMAP_VIRIDIS; }
+static int map_for(const char *field) {
+    if (strcmp(field, "browning") == 0) return CMAP_BROWNING; /* SPH crust colour (sph.c, eq. 4.5-4.6) */
+    return strncmp(field, "temperature", 11) == 0 ? CMAP_INFERNO : CMAP_VIRIDIS;
+}
 
 static void finite_range(const double *v, long n, double *lo, double *hi) {
     *lo = INFINITY;
@@ -89,6 +92,7 @@ hearth_status hearth_render_particles(const hearth_scene *s, const char *field, 
     double vmin, vmax;
     finite_range(val, n, &vmin, &vmax);
     const int map = map_for(field);
+    if (map == CMAP_BROWNING) vmin = 0, vmax = 1; /* absolute: raw dough to dark crust */
     const double sc = f.w / (hi[0] - lo[0]);
     /* a particle covers its share of a cell: (dx^dim / ppc)^(1/dim) */
     double r = 0.5 * sc * pow(n > 0 ? pcold(&s->ps, PC_VOL0)[0] : s->def.dx * s->def.dx, 1.0 / s->def.dim);

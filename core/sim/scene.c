@@ -8,6 +8,7 @@
 #include "error.h"
 #include "params.h"
 #include "scene.h"
+#include "sph.h"
 #include "thermal.h"
 #include "water.h"
 
@@ -54,6 +55,12 @@ hearth_scene_def hearth_default_scene_def(void) {
         .oven_temperature = NAN,
         .oven_beta = 0,
         .heat_implicit = 0,
+        /* ---- SPH (sph.c) ---- */
+        .solver = HEARTH_SOLVER_MPM,
+        .sph = {.h_factor = 2.4, .leapfrog = 0, .gamma = 7, .av_beta = 0, .surface_tension = 0,
+                .surface_threshold = 0.75, .alpha_c = 0, .beta_c = 1, .xsph0 = 0, .xsph_f = 0, .xsph_T0 = 26,
+                .xsph_Tf = 120, .heat_ext = 0, .heat_int = 0, .adaptive_h = 0, .k_g = 1, .eps_g = 0.5,
+                .bubble_T0 = 26, .dt_viscous = 0.125, .dt_force = 0.25, .periodic = {0, 0, 0}, .tension = 0},
     };
 }
 
@@ -92,6 +99,10 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
         return err_set(err, HEARTH_ERR_PARAM, "scene: heat = %d; valid: 0 (explicit), 1 (implicit)", d->heat_implicit);
     if (!(d->energy_growth > 1))
         return err_set(err, HEARTH_ERR_PARAM, "scene: energy_growth = %g; it must be > 1", d->energy_growth);
+    /* ---- SPH (sph.c) ---- */
+    if (d->solver != HEARTH_SOLVER_MPM && d->solver != HEARTH_SOLVER_SPH)
+        return err_set(err, HEARTH_ERR_PARAM, "scene: solver = %d; valid: 0 (mpm), 1 (sph)", d->solver);
+    if (d->solver == HEARTH_SOLVER_SPH) return sph_check_def(d, err);
     return HEARTH_OK;
 }
 
@@ -163,6 +174,7 @@ void hearth_scene_destroy(hearth_scene *s) {
     mem_free(s->cg_partial, sizeof(double) * (size_t)s->cg_cap);
     mem_free(s->bnd_area, sizeof(double) * (size_t)s->bnd_area_cap);
     mem_free(s->mark, (size_t)s->g.nblocks);
+    sph_free(s->sph); /* SPH (sph.c) */
     grid_free(&s->g);
     mem_free(s, sizeof *s);
 }
@@ -318,6 +330,10 @@ const double *hearth_scene_material_params(const hearth_scene *s, int mat) {
 /* ---- particles ------------------------------------------------------- */
 
 static void valid_region(const hearth_scene *s, double lo[3], double hi[3]) {
+    if (s->def.solver == HEARTH_SOLVER_SPH) { /* SPH (sph.c): no grid margin, the whole box */
+        for (int d = 0; d < 3; d++) lo[d] = s->def.lo[d], hi[d] = s->def.hi[d];
+        return;
+    }
     for (int d = 0; d < 3; d++) {
         lo[d] = d < s->def.dim ? s->g.lo[d] + s->g.dx : 0;
         hi[d] = d < s->def.dim ? s->g.lo[d] + (s->g.nn[d] - 2) * s->g.dx : 0;
@@ -506,6 +522,7 @@ void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void 
 /* ---- stepping -------------------------------------------------------- */
 
 double scene_stable_dt(const hearth_scene *s) {
+    if (s->def.solver == HEARTH_SOLVER_SPH) return sph_stable_dt(s); /* SPH (sph.c) */
     /* the tightest of: motion and waves (CFL), the user's maximum, explicit conduction */
     const double sp = s->max_speed + s->c_max;
     double dt = sp > 0 ? s->def.cfl * s->def.dx / sp : INFINITY;
@@ -548,7 +565,8 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             collider_update_bounds(&s->cols[c], 2.0 * s->def.dx);
         }
         step_report rep;
-        hearth_status st = mpm_step(s, dt, &rep, err);
+        hearth_status st = s->def.solver == HEARTH_SOLVER_SPH ? sph_step(s, dt, &rep, err) /* SPH (sph.c) */
+                                                               : mpm_step(s, dt, &rep, err);
         if (st) return st;
         if (!guard_check(s, &rep, dt, speed_before)) {
             s->t += dt;

@@ -122,6 +122,8 @@ struct hearth_scene {
     double water_step_removed;    /* by the step being taken; counted when it stands */
     double water_dmax, water_emax; /* largest K theta s and beta theta / rho_0 after the last step */
     int water_limits_valid;        /* 0: particles changed since, scan again */
+
+    struct sph_state *sph;       /* SPH solver state (sph.c), NULL until the first SPH step */
 };
 
 /* scene.c */

@@ -209,6 +209,9 @@ sauce_mt.__index = function(t, name)
 end
 h.library.sauce = setmetatable({}, sauce_mt)
 
+-- h.library.sph.<name>: Rodriguez-Arenas 2011 presets (Table 4.1 as bread_roll); see sph_library.lua.
+h.library.sph = (require "hearth.sph_library")(h)
+
 --- h.mix{ {params_a, 0.5}, {params_b, 0.5}, plugin = "von_mises_sauce" }: one parameter set
 --- blended by the plugin's own blend rule (Nagasawa et al. eq. 28-31 for sauces).
 function h.mix(t)
@@ -294,7 +297,14 @@ end
 local S = core.scene_methods
 local scene_keys = { dim = true, dx = true, box = true, solver = true, gravity = true, cfl = true, dt_max = true,
   wall = true, friction = true, guard = true, max_rollbacks = true, seed = true, name = true, oven = true, heat = true,
-  water_momentum = true }
+  water_momentum = true,
+  sph = true }
+-- h.scene{solver = "sph", sph = {...}}: numbers (ranges are checked by the core) and flags (booleans)
+local sph_number_keys = { h_factor = true, gamma = true, av_beta = true, surface_tension = true,
+  surface_threshold = true, alpha_c = true, beta_c = true, xsph0 = true, xsph_f = true, xsph_T0 = true, xsph_Tf = true,
+  heat_ext = true, heat_int = true, k_g = true, eps_g = true, bubble_T0 = true, dt_viscous = true, dt_force = true }
+local sph_flag_keys = { leapfrog = true, adaptive_h = true, tension = true, periodic_x = true, periodic_y = true,
+  periodic_z = true }
 local contact = { "sticky", "slip", "separate" }
 
 --- A scene: h.scene{dim = 2, dx = 0.01, box = {{0,0},{1,1}}, gravity = {0,-9.81}, ...}
@@ -329,8 +339,24 @@ function h.scene(o)
   end
   local dim = o.dim or 2
   if dim ~= 2 and dim ~= 3 then error(("h.scene: dim = %s; valid: 2, 3"):format(tostring(dim)), 2) end
-  if o.solver and o.solver ~= "mpm" then
-    error(("h.scene: solver = %s; valid: mpm (sph is not built yet)"):format(tostring(o.solver)), 2)
+  local solver = check_choice(o.solver or "mpm", "h.scene: solver", { "mpm", "sph" })
+  local sph
+  if o.sph ~= nil then
+    if type(o.sph) ~= "table" then error("h.scene: sph = {h_factor = 2.4, xsph0 = 0.05, ...}", 2) end
+    if solver ~= 1 then error("h.scene: sph = {...} needs solver = \"sph\"", 2) end
+    local all = {}
+    for k in pairs(sph_number_keys) do all[k] = true end
+    for k in pairs(sph_flag_keys) do all[k] = true end
+    check_keys(o.sph, all, "h.scene: sph")
+    sph = {}
+    for k, v in pairs(o.sph) do
+      if sph_number_keys[k] and type(v) ~= "number" then
+        error(("h.scene: sph.%s must be a number, got %s"):format(k, type(v)), 2)
+      elseif sph_flag_keys[k] and type(v) ~= "boolean" then
+        error(("h.scene: sph.%s must be true or false, got %s"):format(k, type(v)), 2)
+      end
+      sph[k] = v
+    end
   end
   local box = o.box or { { 0, 0, 0 }, { 1, 1, 1 } }
   if type(box) ~= "table" or #box ~= 2 then error("h.scene: box = {{lo}, {hi}}", 2) end
@@ -349,6 +375,7 @@ function h.scene(o)
     heat_implicit = check_choice(o.heat or "explicit", "h.scene: heat", { "explicit", "implicit" }),
     oven_beta = 0,
     water_momentum = o.water_momentum and 1 or 0,
+    solver = solver, sph = sph,
   }
   if o.oven ~= nil then
     if type(o.oven) ~= "table" then error("h.scene: oven = {temperature = degC, beta = W/(m^2 K)}", 2) end

@@ -133,6 +133,35 @@ typedef enum hearth_guard_policy {
     HEARTH_GUARD_ROLLBACK = 1 ///< roll back to the last good state, halve dt, retry (max_rollbacks times)
 } hearth_guard_policy;
 
+/// Which solver steps a scene.
+typedef enum hearth_solver {
+    HEARTH_SOLVER_MPM = 0, ///< material point method (Ding et al. 2019)
+    HEARTH_SOLVER_SPH = 1  ///< smoothed particle hydrodynamics (Rodriguez-Arenas 2011, ch. 3-4)
+} hearth_solver;
+
+/// Options of the SPH solver (used when solver = HEARTH_SOLVER_SPH). Equation
+/// numbers are Rodriguez-Arenas 2011. Start from hearth_default_scene_def().
+typedef struct hearth_sph_def {
+    double h_factor;       ///< smoothing length h (kernel support radius) over the particle spacing V0^(1/dim); default 2.4 (lattice sum of W V within 1e-3 of 1)
+    int leapfrog;          ///< 0: symplectic Euler (eq. 3.57-3.58); 1: leapfrog drift-kick-drift (§3.6)
+    double gamma;          ///< Tait exponent (eq. 3.17); default 7
+    double av_beta;        ///< Monaghan artificial viscosity beta (eq. 3.41); default 0 (off)
+    double surface_tension;///< colour-field surface tension sigma (eq. 3.30), N/m; 0 = off
+    double surface_threshold; ///< |grad C| h above this marks a surface particle (§3.1.8); default 0.75
+    double alpha_c, beta_c;///< collider response (eq. 3.33): normal restitution and tangential keep; default 0, 1
+    double xsph0, xsph_f;  ///< XSPH tuner epsilon (eq. 3.34, 0..1) at xsph_T0 and xsph_Tf (eq. 4.4); default 0, 0
+    double xsph_T0, xsph_Tf; ///< temperatures of the XSPH tuner's line (degrees C); default 26, 120
+    double heat_ext;       ///< k_h,ext of eq. 3.42 (surface particles toward the oven temperature), 1/(m^2 s) scaled; 0 = off
+    double heat_int;       ///< k_h,int of eq. 3.45 (diffusivity, m^2/s); 0 = off
+    int adaptive_h;        ///< 1: Sigalotti adaptive smoothing length (eq. 3.54-3.56)
+    double k_g, eps_g;     ///< eq. 3.54 factors; default 1 and 0.5
+    double bubble_T0;      ///< temperature where bubbles have their initial volume (degrees C, eq. 3.50); default 26
+    double dt_viscous;     ///< viscous step factor: dt <= dt_viscous rho h^2 / mu; default 0.125
+    double dt_force;       ///< force step factor: dt <= dt_force sqrt(h / |a|); default 0.25
+    int periodic[3];       ///< 1 = periodic along that axis (box faces wrap); default 0
+    int tension;           ///< 0: negative Tait pressure clamped to 0 (free surfaces stay clean); 1: kept, as the thesis; default 0
+} hearth_sph_def;
+
 typedef struct hearth_scene_def {
     int dim;              ///< 2 (plane strain) or 3
     double dx;            ///< grid spacing (m)
@@ -150,6 +179,8 @@ typedef struct hearth_scene_def {
     double oven_beta;        ///< oven air heat transfer coefficient beta (W/(m^2 K)), >= 0
     int heat_implicit;       ///< 0: forward Euler heat (dt limited by conduction); 1: backward Euler (CG solve)
     int water_momentum;      ///< 1: the water's motion relative to the solid carries momentum (Ding et al. eq. 26-27)
+    int solver;              ///< hearth_solver; default MPM
+    hearth_sph_def sph;      ///< SPH options (solver = HEARTH_SOLVER_SPH)
 } hearth_scene_def;
 
 /// Defaults: 2D, dx 0.01, box [0,1]^3, gravity (0,-9.81,0), cfl 0.5, slip walls,

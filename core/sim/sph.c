@@ -1,0 +1,690 @@
+/* sph.c: one SPH step (Rodriguez-Arenas 2011, ch. 3-4; equation numbers are
+ * the thesis's).
+ *
+ * Order of a step:
+ *   (leapfrog: drift half a step)
+ *   sort particles by cell, neighbour lists (sph_neighbours.c)
+ *   density by summation (3.13); Sigalotti adaptive h (3.54-3.56) if asked
+ *   pressure: Tait (3.17); bubble particles (3.48-3.51) while they heat, the
+ *     final-density Tait (3.52) afterwards
+ *   velocity gradient (3.27), colour field and its gradient (3.28-3.29),
+ *     surface particles
+ *   plugin stress: F <- (I + dt L) F, the plugin's Kirchhoff stress, its
+ *     deviator enters the momentum equation (Tait gives the pressure)
+ *   accelerations: pressure (3.18), deviatoric stress, viscosity (3.19),
+ *     artificial viscosity beta term (3.41), surface tension (3.30), gravity
+ *   heat: internal (3.45-3.46) and external at surface particles (3.42)
+ *   kick, XSPH (3.34 with the tuner of 4.4), drift (3.57-3.58), colliders and
+ *     walls with the thesis's response (3.31-3.33)
+ *   browning value (4.5-4.6)
+ * Every particle writes only its own slots and sums its neighbours in list
+ * order, so a step is deterministic for any thread count. */
+#include "sph.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "alloc.h"
+#include "error.h"
+#include "sph_kernel.h"
+#include "sph_neighbours.h"
+
+#define KELVIN 273.15
+
+struct sph_state {
+    sph_cells cells;
+    sph_nlist nl;
+    int cap, n;     /* arrays hold cap particles; n = particles of the last step (-1 = stale) */
+    int valid;      /* per-particle results match the scene's particles */
+    int *key, *order;
+    double *perm;   /* permutation scratch, cap doubles */
+    double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *brown, *surf, *rhof, *dT, *Tprev;
+    double *rho0, *B, *mu, *c0, *xsph;
+    double amax;    /* largest |a| of the last step, for the force limit */
+};
+
+/* ---- options ---------------------------------------------------------------- */
+
+hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
+    const hearth_sph_def *o = &d->sph;
+#define RANGE(f, lo, hi, unit)                                                                                         \
+    if (!(o->f >= (lo) && o->f <= (hi)))                                                                               \
+    return err_set(err, HEARTH_ERR_PARAM, "scene: sph.%s = %g; valid: %g to %g%s", #f, (double)o->f, (double)(lo),    \
+                   (double)(hi), unit)
+    RANGE(h_factor, 1.0, 6.0, "");
+    RANGE(gamma, 1.0, 15.0, "");
+    RANGE(av_beta, 0.0, 100.0, "");
+    RANGE(surface_tension, 0.0, 1e6, " N/m");
+    RANGE(surface_threshold, 0.0, 10.0, "");
+    RANGE(alpha_c, 0.0, 1.0, "");
+    RANGE(beta_c, 0.0, 1.0, "");
+    /* XSPH moves a particle toward its neighbours' mean velocity by epsilon
+     * times the difference: above 1 it overshoots and grows (Table 4.1 lists
+     * 5, the text of §4.3 uses 0.5) */
+    RANGE(xsph0, 0.0, 1.0, " (above 1 XSPH overshoots the neighbours' mean velocity)");
+    RANGE(xsph_f, 0.0, 1.0, " (above 1 XSPH overshoots the neighbours' mean velocity)");
+    RANGE(heat_ext, 0.0, 1e12, "");
+    RANGE(heat_int, 0.0, 1e6, " m^2/s");
+    RANGE(k_g, 0.1, 10.0, "");
+    RANGE(eps_g, 0.0, 1.0, "");
+    RANGE(bubble_T0, -273.0, 5000.0, " degC");
+    RANGE(dt_viscous, 1e-6, 1.0, "");
+    RANGE(dt_force, 1e-6, 1.0, "");
+#undef RANGE
+    if (!(o->xsph_Tf > o->xsph_T0))
+        return err_set(err, HEARTH_ERR_PARAM, "scene: sph.xsph_Tf = %g degC must be above sph.xsph_T0 = %g degC",
+                       o->xsph_Tf, o->xsph_T0);
+    if (o->leapfrog != 0 && o->leapfrog != 1)
+        return err_set(err, HEARTH_ERR_PARAM, "scene: sph.leapfrog = %d; valid: 0 (symplectic Euler), 1 (leapfrog)",
+                       o->leapfrog);
+    if (o->tension != 0 && o->tension != 1)
+        return err_set(err, HEARTH_ERR_PARAM, "scene: sph.tension = %d; valid: 0 (clamp negative pressure), 1", o->tension);
+    if (o->adaptive_h != 0 && o->adaptive_h != 1)
+        return err_set(err, HEARTH_ERR_PARAM, "scene: sph.adaptive_h = %d; valid: 0, 1", o->adaptive_h);
+    return HEARTH_OK;
+}
+
+/* ---- storage ---------------------------------------------------------------- */
+
+#define ARRAYS(X)                                                                                                      \
+    X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(brown, 1) X(surf, 1) X(rhof, 1)       \
+        X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1)
+
+void sph_free(struct sph_state *st) {
+    if (!st) return;
+    sph_cells_free(&st->cells);
+    sph_nlist_free(&st->nl);
+    size_t c = (size_t)st->cap;
+#define FREE(a, k) mem_free(st->a, sizeof(double) * (k) * c);
+    ARRAYS(FREE)
+#undef FREE
+    mem_free(st->key, sizeof(int) * c);
+    mem_free(st->order, sizeof(int) * c);
+    mem_free(st, sizeof *st);
+}
+
+static hearth_status ensure(hearth_scene *s, int n, hearth_error *err) {
+    if (!s->sph) {
+        s->sph = mem_calloc(sizeof *s->sph);
+        if (!s->sph) return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory");
+        s->sph->n = -1;
+    }
+    struct sph_state *st = s->sph;
+    if (n <= st->cap) return HEARTH_OK;
+    int cap = n + n / 4 + 16;
+    struct sph_state nw = *st;
+    int ok = 1;
+#define ALLOC(a, k)                                                                                                    \
+    nw.a = mem_calloc(sizeof(double) * (k) * (size_t)cap);                                                             \
+    ok = ok && nw.a;
+    ARRAYS(ALLOC)
+#undef ALLOC
+    nw.key = mem_alloc(sizeof(int) * (size_t)cap);
+    nw.order = mem_alloc(sizeof(int) * (size_t)cap);
+    ok = ok && nw.key && nw.order;
+    if (ok && st->n > 0) { /* the arrays kept across steps */
+        memcpy(nw.rhof, st->rhof, sizeof(double) * (size_t)st->n);
+        memcpy(nw.Tprev, st->Tprev, sizeof(double) * (size_t)st->n);
+    }
+    if (!ok) {
+#define FREE(a, k) mem_free(nw.a, sizeof(double) * (k) * (size_t)cap);
+        ARRAYS(FREE)
+#undef FREE
+        mem_free(nw.key, sizeof(int) * (size_t)cap);
+        mem_free(nw.order, sizeof(int) * (size_t)cap);
+        return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory for %d particles", n);
+    }
+    size_t c = (size_t)st->cap;
+#define FREE(a, k) mem_free(st->a, sizeof(double) * (k) * c);
+    ARRAYS(FREE)
+#undef FREE
+    mem_free(st->key, sizeof(int) * c);
+    mem_free(st->order, sizeof(int) * c);
+    nw.cap = cap;
+    *st = nw;
+    return HEARTH_OK;
+}
+
+/* ---- helpers ---------------------------------------------------------------- */
+
+static int finite_n(const double *a, int n) {
+    for (int i = 0; i < n; i++)
+        if (!isfinite(a[i])) return 0;
+    return 1;
+}
+
+/* Laplacian of the cubic spline: W'' + (d - 1) W' / r (for the colour field). */
+static double lap_w(int dim, double r, double h) {
+    const double q = 2.0 * r / h;
+    if (q >= 2.0 || r <= 0) return 0.0;
+    const double sg = sph_sigma(dim, h), k = 2.0 / h;
+    const double f1 = q < 1.0 ? -3.0 * q + 2.25 * q * q : -0.75 * (2.0 - q) * (2.0 - q);
+    const double f2 = q < 1.0 ? -3.0 + 4.5 * q : 1.5 * (2.0 - q); /* eq. 3.12 (whose printed 1.5 (2 - 1) is (2 - q)) */
+    return sg * (f2 * k * k + (dim - 1) * f1 * k / r);
+}
+
+/* Index of a parameter of the material's plugin, or -1. */
+static int pindex(const hearth_material *m, const char *name) {
+    for (int i = 0; i < m->nparams; i++)
+        if (!strcmp(m->params[i].name, name)) return i;
+    return -1;
+}
+
+/* Per-particle material constants: rest density, Tait B, viscosity (eq. 4.1
+ * through a curve), sound speed, XSPH tuner (eq. 4.4), smoothing length. */
+static void particle_constants(hearth_scene *s, int i, const double *T, double *pscratch) {
+    struct sph_state *st = s->sph;
+    const particles *ps = &s->ps;
+    const int m = pcoli(ps, PC_MAT)[i];
+    const material_slot *ms = &s->mats[m];
+    const double *p = T ? scene_params_for(s, m, i, pscratch) : ms->params;
+    const double rho0 = p[ms->density_index];
+    const double c = ms->m->wave_speed(p, ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
+    st->rho0[i] = rho0;
+    st->c0[i] = isfinite(c) && c > 0 ? c : 0;
+    st->B[i] = rho0 * st->c0[i] * st->c0[i] / s->def.sph.gamma; /* eq. 3.17: c0^2 = gamma B / rho0 */
+    const int vi = pindex(ms->m, "viscosity");
+    st->mu[i] = vi >= 0 ? p[vi] : 0.0;
+    const hearth_sph_def *o = &s->def.sph;
+    double eps = o->xsph0;
+    if (T) { /* eq. 4.4, held at the ends */
+        double u = (T[i] - o->xsph_T0) / (o->xsph_Tf - o->xsph_T0);
+        u = u < 0 ? 0 : u > 1 ? 1 : u;
+        eps = o->xsph0 + u * (o->xsph_f - o->xsph0);
+    }
+    st->xsph[i] = eps;
+    const double V0 = pcold(ps, PC_VOL0)[i];
+    st->h[i] = o->h_factor * (s->def.dim == 3 ? cbrt(V0) : sqrt(V0));
+}
+
+static hearth_status sort_and_list(hearth_scene *s, double hcell, const double *h, hearth_error *err) {
+    struct sph_state *st = s->sph;
+    particles *ps = &s->ps;
+    const int n = ps->n;
+    hearth_status e = sph_cells_setup(&st->cells, s->def.dim, s->def.lo, s->def.hi, hcell, s->def.sph.periodic, err);
+    if (e) return e;
+    const double *x = pcold(ps, PC_X);
+    for (int i = 0; i < n; i++) st->key[i] = sph_cell_of(&st->cells, x + 3 * i);
+    sph_cells_sort(&st->cells, st->key, n, st->order);
+    int moved = 0;
+    for (int i = 0; i < n && !moved; i++) moved = st->order[i] != i;
+    if (moved) {
+        particles_permute(ps, st->order, st->perm);
+        /* the SPH arrays that carry over: final density (eq. 3.52) and h (for the adaptive pass) */
+        for (int i = 0; i < n; i++) st->perm[i] = st->rhof[st->order[i]];
+        memcpy(st->rhof, st->perm, sizeof(double) * (size_t)n);
+        for (int i = 0; i < n; i++) st->perm[i] = st->Tprev[st->order[i]];
+        memcpy(st->Tprev, st->perm, sizeof(double) * (size_t)n);
+        if (h) {
+            for (int i = 0; i < n; i++) st->perm[i] = h[st->order[i]];
+            memcpy(st->h, st->perm, sizeof(double) * (size_t)n);
+        }
+    }
+    return sph_nlist_build(&st->nl, &st->cells, pcold(ps, PC_X), n, h ? st->h : NULL, hcell, err);
+}
+
+/* Density by summation (eq. 3.13) with h_ij (eq. 3.56). */
+static void density(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    const particles *ps = &s->ps;
+    const int n = ps->n, dim = s->def.dim;
+    const double *x = pcold(ps, PC_X), *m = pcold(ps, PC_MASS);
+    const int *off = st->nl.off, *nb = st->nl.j;
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        double r = m[i] * sph_w(dim, 0, st->h[i]);
+        for (int k = off[i]; k < off[i + 1]; k++) {
+            const int j = nb[k];
+            double d[3];
+            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
+            r += m[j] * sph_w(dim, sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 0.5 * (st->h[i] + st->h[j]));
+        }
+        st->rho[i] = r;
+    }
+}
+
+/* ---- the step ----------------------------------------------------------------- */
+
+hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err) {
+    particles *ps = &s->ps;
+    const int n = ps->n, dim = s->def.dim;
+    const hearth_sph_def *o = &s->def.sph;
+    memset(rep, 0, sizeof *rep);
+    rep->particle = -1;
+    rep->fastest = -1;
+    hearth_status e = ensure(s, n > 0 ? n : 1, err);
+    if (e) return e;
+    struct sph_state *st = s->sph;
+    if (st->n != n) /* particles added or removed since the last step: final densities start over */
+        for (int i = 0; i < n; i++) st->rhof[i] = st->Tprev[i] = NAN;
+    st->valid = 0;
+    if (n == 0) {
+        st->n = 0;
+        return HEARTH_OK;
+    }
+    if ((e = scene_ensure_scratch(s, n, err))) return e;
+    const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
+    double *x = pcold(ps, PC_X), *v = pcold(ps, PC_V);
+
+    /* leapfrog (drift-kick-drift): first half drift */
+    if (o->leapfrog)
+        for (int i = 0; i < n; i++)
+            if (!(flags && (flags[i] & PF_FIXED)))
+                for (int a = 0; a < dim; a++) x[3 * i + a] += 0.5 * dt * v[3 * i + a];
+    /* periodic axes: positions back into the box */
+    for (int a = 0; a < dim; a++)
+        if (o->periodic[a]) {
+            const double lo = s->def.lo[a], L = s->def.hi[a] - lo;
+            for (int i = 0; i < n; i++) x[3 * i + a] = lo + fmod(fmod(x[3 * i + a] - lo, L) + L, L);
+        }
+
+    /* smoothing lengths from the rest volumes, then sort and list */
+    double hmax = 0;
+    for (int i = 0; i < n; i++) {
+        const double V0 = pcold(ps, PC_VOL0)[i];
+        const double h0 = o->h_factor * (dim == 3 ? cbrt(V0) : sqrt(V0));
+        st->h[i] = h0;
+        if (h0 > hmax) hmax = h0;
+    }
+    if ((e = sort_and_list(s, hmax, st->h, err))) return e;
+    flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
+    x = pcold(ps, PC_X);
+    v = pcold(ps, PC_V);
+    const double *m = pcold(ps, PC_MASS);
+    double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    double *Tmax = ps->enabled & (1u << PC_TEMP_MAX) ? pcold(ps, PC_TEMP_MAX) : NULL;
+
+    {
+        double pscratch[SCENE_MAX_PARAMS];
+        for (int i = 0; i < n; i++) particle_constants(s, i, T, pscratch);
+    }
+    density(s);
+    if (o->adaptive_h) { /* Sigalotti et al.: eq. 3.54 with the geometric mean of eq. 3.55 */
+        double lg = 0;
+        for (int i = 0; i < n; i++) lg += log(st->rho[i]);
+        const double rbar = exp(lg / n);
+        double hm = 0;
+        for (int i = 0; i < n; i++) {
+            st->h[i] *= o->k_g * pow(st->rho[i] / rbar, -o->eps_g);
+            if (st->h[i] > hm) hm = st->h[i];
+        }
+        if ((e = sort_and_list(s, hm, st->h, err))) return e; /* order unchanged unless the cells changed */
+        flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
+        x = pcold(ps, PC_X);
+        v = pcold(ps, PC_V);
+        m = pcold(ps, PC_MASS);
+        T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+        Tmax = ps->enabled & (1u << PC_TEMP_MAX) ? pcold(ps, PC_TEMP_MAX) : NULL;
+        double pscratch[SCENE_MAX_PARAMS];
+        for (int i = 0; i < n; i++) {
+            const double hkeep = st->h[i];
+            particle_constants(s, i, T, pscratch);
+            st->h[i] = hkeep;
+        }
+        density(s);
+    }
+
+    double *C = pcold(ps, PC_C);
+    const int *off = st->nl.off, *nb = st->nl.j;
+    /* velocity gradient (3.27), colour gradient (3.29) and Laplacian; surface particles */
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = 0;
+        for (int k = off[i]; k < off[i + 1]; k++) {
+            const int j = nb[k];
+            double d[3];
+            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
+            const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), hij = 0.5 * (st->h[i] + st->h[j]);
+            if (r <= 0) continue;
+            const double Vj = m[j] / st->rho[j], g = sph_dw(dim, r, hij) / r;
+            for (int a = 0; a < 3; a++) {
+                const double dv = v[3 * j + a] - v[3 * i + a];
+                for (int b = 0; b < 3; b++) L[3 * a + b] += Vj * dv * g * d[b];
+                Ni[a] += Vj * g * d[a];
+            }
+            lc += Vj * lap_w(dim, r, hij);
+        }
+        memcpy(C + 9 * i, L, sizeof L);
+        memcpy(st->N + 3 * i, Ni, sizeof Ni);
+        st->lapC[i] = lc;
+        st->surf[i] = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]) * st->h[i] > o->surface_threshold;
+    }
+
+    /* pressure: Tait (3.17); bubbles (3.51) while heating, then final-density Tait (3.52) */
+    const int *mat = pcoli(ps, PC_MAT);
+    for (int i = 0; i < n; i++) {
+        const material_slot *ms = &s->mats[mat[i]];
+        const double gam = o->gamma, rho0 = st->rho0[i];
+        const double bub = ms->core[CP_BUBBLE];
+        /* a bubble expands while its temperature rises (since the last step) above bubble_T0 */
+        const int heating = T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
+        if (!isfinite(st->rhof[i])) st->rhof[i] = rho0;
+        st->prs[i] = st->B[i] * (pow(st->rho[i] / st->rhof[i], gam) - 1); /* eq. 3.17, 3.52 */
+        if (bub > 0 && heating) { /* eq. 3.51 (Kelvin: ideal gas) */
+            const double Vb = bub * (T[i] + KELVIN) / (o->bubble_T0 + KELVIN);
+            /* Not below Tait: eq. 3.51 alone has no resistance to compression,
+             * so a heating bubble squeezed by its neighbours (on a tray, seen)
+             * collapses onto them and explodes when it stops heating. */
+            st->prs[i] = fmax(st->prs[i], st->B[i] * st->rho[i] / rho0 * (Vb - 1));
+        }
+        /* A free surface has too few neighbours, so its summed density is low
+         * and Tait pulls: particles clump and climb walls (tensile
+         * instability). Clamped unless the scene asks for tension. */
+        if (!o->tension && st->prs[i] < 0) st->prs[i] = 0;
+    }
+    /* while any bubble expands, dough and bubbles keep their density as final density (eq. 3.52) */
+    int any_heating = 0;
+    for (int i = 0; i < n && !any_heating; i++)
+        any_heating = s->mats[mat[i]].core[CP_BUBBLE] > 0 && T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
+    if (any_heating) {
+        /* A surface particle's summed density is low for want of neighbours,
+         * not because it expanded: keeping that as its final density would
+         * make it explode when it is surrounded again. Interior particles
+         * keep their own density; surface particles the mean of their
+         * interior neighbours'. */
+        for (int i = 0; i < n; i++)
+            if (!st->surf[i] && st->rho[i] < st->rhof[i]) st->rhof[i] = st->rho[i];
+        for (int i = 0; i < n; i++) {
+            if (!st->surf[i]) continue;
+            double sum = 0;
+            int cnt = 0;
+            for (int k = off[i]; k < off[i + 1]; k++)
+                if (!st->surf[nb[k]]) sum += st->rhof[nb[k]], cnt++;
+            if (cnt && sum / cnt < st->rhof[i]) st->rhof[i] = sum / cnt;
+        }
+    }
+    if (T) memcpy(st->Tprev, T, sizeof(double) * (size_t)n);
+
+    /* plugin stress: F <- (I + dt L) F, deviator of sigma = tau / J */
+    double *F = pcold(ps, PC_F), *state = pcold(ps, PC_STATE);
+    const int stride = ps->state_stride;
+    int fail_i = -1, fk = 0, fail_code = 0;
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        double *Si = st->S + 9 * i;
+        memset(Si, 0, 9 * sizeof(double));
+        if (flags && (flags[i] & PF_FIXED)) continue;
+        const double *L = C + 9 * i;
+        double *Fi = F + 9 * i, f[9], Fn[9];
+        for (int a = 0; a < 9; a++) f[a] = (a % 4 == 0) + dt * L[a];
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++)
+                Fn[3 * r + c] = f[3 * r] * Fi[c] + f[3 * r + 1] * Fi[3 + c] + f[3 * r + 2] * Fi[6 + c];
+        memcpy(Fi, Fn, sizeof Fn);
+        const double J = Fi[0] * (Fi[4] * Fi[8] - Fi[5] * Fi[7]) - Fi[1] * (Fi[3] * Fi[8] - Fi[5] * Fi[6]) +
+                         Fi[2] * (Fi[3] * Fi[7] - Fi[4] * Fi[6]);
+        if (!(J > 0) || !finite_n(Fi, 9)) {
+            Si[0] = NAN; /* recorded below, in particle order */
+            continue;
+        }
+        const material_slot *ms = &s->mats[mat[i]];
+        double pscratch[SCENE_MAX_PARAMS];
+        const double *p = scene_params_for(s, mat[i], i, pscratch);
+        const int vi = pindex(ms->m, "viscosity");
+        if (vi >= 0) { /* eq. 3.19 applies the viscosity: the plugin sees none */
+            if (p != pscratch) {
+                memcpy(pscratch, p, sizeof(double) * (size_t)ms->m->nparams);
+                p = pscratch;
+            }
+            pscratch[vi] = 0;
+        }
+        hearth_point pt;
+        memcpy(pt.grad_v, L, sizeof pt.grad_v);
+        memcpy(pt.F, Fi, sizeof pt.F);
+        pt.dt = dt;
+        pt.temperature = T ? T[i] : NAN;
+        pt.porosity = pt.saturation = NAN;
+        pt.p = p;
+        pt.state = state ? state + (size_t)i * stride : NULL;
+        double tau[9];
+        const int code = ms->m->stress(&pt, tau);
+        if (code) {
+            Si[0] = NAN;
+            Si[1] = (double)code;
+            continue;
+        }
+        if (!finite_n(tau, 9)) {
+            Si[0] = NAN;
+            Si[1] = -1;
+            continue;
+        }
+        const double tr = (tau[0] + tau[4] + tau[8]) / 3;
+        for (int a = 0; a < 9; a++) Si[a] = (tau[a] - (a % 4 == 0 ? tr : 0.0)) / J;
+    }
+    for (int i = 0; i < n && fail_i < 0; i++)
+        if (isnan(st->S[9 * i])) {
+            fail_i = i;
+            const double c = st->S[9 * i + 1];
+            fk = c > 0 ? FAIL_PLUGIN : c < 0 ? FAIL_STRESS : FAIL_F;
+            fail_code = c > 0 ? (int)c : 0;
+        }
+    if (fail_i >= 0) {
+        rep->kind = (fail_kind)fk;
+        rep->particle = fail_i;
+        rep->code = fail_code;
+        return HEARTH_OK;
+    }
+
+    /* accelerations (3.18, stress, 3.19, 3.41, 3.30) and heat (3.42, 3.45-3.46) */
+    const double *gvec = s->def.gravity;
+    const double Text = s->def.oven_temperature;
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0}, dTi = 0;
+        if (s->body_force) {
+            double bf[3] = {0, 0, 0};
+            s->body_force(s->body_force_ud, s->t, x + 3 * i, bf);
+            for (int c = 0; c < dim; c++) a[c] += bf[c];
+        }
+        const double ri = st->rho[i], Pi = st->prs[i] / (ri * ri), *Si = st->S + 9 * i;
+        for (int k = off[i]; k < off[i + 1]; k++) {
+            const int j = nb[k];
+            double d[3];
+            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
+            const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], r = sqrt(r2);
+            if (r <= 0) continue;
+            const double hij = 0.5 * (st->h[i] + st->h[j]), rj = st->rho[j];
+            const double g = sph_dw(dim, r, hij) / r; /* grad_i W = g d */
+            double vij[3], vd = 0;
+            for (int c = 0; c < 3; c++) {
+                vij[c] = v[3 * i + c] - v[3 * j + c];
+                vd += vij[c] * d[c];
+            }
+            double Pij = Pi + st->prs[j] / (rj * rj); /* eq. 3.18 */
+            if (o->av_beta > 0 && vd < 0) {          /* eq. 3.41, with mu_ij of eq. 3.37 */
+                const double muij = hij * vd / (r2 + 0.01 * hij * hij);
+                Pij += o->av_beta * muij * muij / (0.5 * (ri + rj));
+            }
+            const double *Sj = st->S + 9 * j, lv = sph_lap_visc(dim, r, hij);
+            const double visc = 0.5 * (st->mu[i] + st->mu[j]) * m[j] / (rj * ri) * lv; /* eq. 3.19 over rho_i */
+            for (int c = 0; c < dim; c++) {
+                double sd = 0;
+                for (int b = 0; b < 3; b++) sd += (Si[3 * c + b] / (ri * ri) + Sj[3 * c + b] / (rj * rj)) * d[b];
+                a[c] += m[j] * (-Pij * g * d[c] + sd * g) - visc * vij[c];
+            }
+            if (T && o->heat_int > 0) /* eq. 3.45-3.46 */
+                dTi += o->heat_int * 4 * m[j] / ((ri + rj) * (ri + rj)) * (T[j] - T[i]) * lv;
+        }
+        if (o->surface_tension > 0 && st->surf[i]) { /* eq. 3.30 */
+            const double *Ni = st->N + 3 * i, nn = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]);
+            if (nn > 0)
+                for (int c = 0; c < dim; c++) a[c] -= o->surface_tension / ri * st->lapC[i] * Ni[c] / nn;
+        }
+        if (T && o->heat_ext > 0 && st->surf[i]) { /* eq. 3.42 at surface particles; r_i from eq. 3.43 */
+            double Tout = Text;
+            for (int c = 0; c < s->ncol; c++) { /* a heated collider within h is the outside instead */
+                const collider *cl = &s->cols[c];
+                if (isnan(cl->temperature) || !collider_near(cl, x + 3 * i)) continue;
+                if (collider_sdf(cl, x + 3 * i, NULL) < st->h[i]) Tout = cl->temperature;
+            }
+            if (isfinite(Tout)) {
+                const double V = m[i] / st->rho0[i];
+                const double rad = dim == 3 ? cbrt(3 * V / (4 * SPH_PI)) : sqrt(V / SPH_PI);
+                /* the thesis prints (T_i - T_ext); heat flows from the hotter side, so (T_ext - T_i) */
+                dTi += o->heat_ext * (Tout - T[i]) * rad * rad / ri;
+            }
+        }
+        memcpy(st->acc + 3 * i, a, sizeof a);
+        st->dT[i] = dTi;
+    }
+
+    /* kick, then XSPH (3.34) from the kicked velocities */
+    for (int i = 0; i < n; i++) {
+        const int fixed = flags && (flags[i] & PF_FIXED);
+        for (int c = 0; c < 3; c++) st->vnew[3 * i + c] = fixed ? 0.0 : v[3 * i + c] + dt * st->acc[3 * i + c];
+    }
+    double amax = 0;
+#pragma omp parallel for schedule(static) reduction(max : amax) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        double *vi = v + 3 * i;
+        const double *wi = st->vnew + 3 * i;
+        if (flags && (flags[i] & PF_FIXED)) {
+            vi[0] = vi[1] = vi[2] = 0;
+            continue;
+        }
+        double corr[3] = {0, 0, 0};
+        if (st->xsph[i] > 0)
+            for (int k = off[i]; k < off[i + 1]; k++) {
+                const int j = nb[k];
+                double d[3];
+                sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
+                const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+                const double w = 2 * m[j] / (st->rho[i] + st->rho[j]) * sph_w(dim, r, 0.5 * (st->h[i] + st->h[j]));
+                for (int c = 0; c < dim; c++) corr[c] += w * (st->vnew[3 * j + c] - wi[c]);
+            }
+        for (int c = 0; c < 3; c++) vi[c] = wi[c] + st->xsph[i] * corr[c];
+        if (dim == 2) vi[2] = 0;
+        const double an = sqrt(st->acc[3 * i] * st->acc[3 * i] + st->acc[3 * i + 1] * st->acc[3 * i + 1] +
+                               st->acc[3 * i + 2] * st->acc[3 * i + 2]);
+        if (an > amax) amax = an;
+    }
+    st->amax = amax;
+
+    /* drift, colliders (3.31-3.33) and walls; heat */
+    const double drift = o->leapfrog ? 0.5 * dt : dt;
+    double ke = 0, vmax = 0, cmax = 0;
+    int fastest = -1;
+    for (int i = 0; i < n; i++) {
+        if (T) {
+            T[i] += dt * st->dT[i];
+            if (Tmax && T[i] > Tmax[i]) Tmax[i] = T[i];
+        }
+        if (flags && (flags[i] & PF_FIXED)) continue;
+        double *xi = x + 3 * i, *vi = v + 3 * i;
+        for (int c = 0; c < dim; c++) xi[c] += drift * vi[c];
+        for (int c = 0; c < s->ncol; c++) {
+            const collider *cl = &s->cols[c];
+            if (!collider_near(cl, xi)) continue;
+            double nrm[3];
+            const double phi = collider_sdf(cl, xi, nrm);
+            if (!(phi < 0)) continue;
+            for (int a = 0; a < dim; a++) xi[a] -= phi * nrm[a];
+            double vb[3];
+            collider_velocity_at(cl, xi, vb);
+            if (cl->mode == HEARTH_STICKY) {
+                for (int a = 0; a < dim; a++) vi[a] = vb[a];
+                continue;
+            }
+            double rel[3], vn = 0;
+            for (int a = 0; a < 3; a++) rel[a] = vi[a] - vb[a];
+            for (int a = 0; a < dim; a++) vn += rel[a] * nrm[a];
+            if (vn >= 0) continue;
+            for (int a = 0; a < dim; a++) { /* eq. 3.33: v = beta_c v_t - alpha_c v_n */
+                const double nv = vn * nrm[a], tv = rel[a] - nv;
+                vi[a] = vb[a] + o->beta_c * tv - o->alpha_c * nv;
+            }
+        }
+        for (int a = 0; a < dim; a++) { /* box walls, the same response */
+            if (o->periodic[a]) continue;
+            const double lo = s->def.lo[a], hi = s->def.hi[a];
+            if (xi[a] < lo || xi[a] > hi) {
+                xi[a] = xi[a] < lo ? lo : hi;
+                const double sgn = xi[a] <= lo ? -1.0 : 1.0; /* outward normal */
+                if (vi[a] * sgn > 0) {
+                    for (int b = 0; b < dim; b++)
+                        if (b != a) vi[b] *= o->beta_c;
+                    vi[a] *= -o->alpha_c;
+                }
+            }
+        }
+        if (!finite_n(xi, 3) && rep->particle < 0) rep->kind = FAIL_X, rep->particle = i;
+        if (!finite_n(vi, 3) && rep->particle < 0) rep->kind = FAIL_V, rep->particle = i;
+        const double sp = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
+        ke += 0.5 * m[i] * sp * sp;
+        if (sp > vmax) vmax = sp, fastest = i;
+        if (st->c0[i] > cmax) cmax = st->c0[i];
+    }
+    /* browning (eq. 4.5 with G of eq. 4.6, T0 and Tf of the XSPH line) */
+    if (T) {
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+        for (int i = 0; i < n; i++) {
+            double u = m[i] / st->rho[i] * (0.9 * (T[i] - o->xsph_T0) / (o->xsph_Tf - o->xsph_T0) + 0.05) *
+                       sph_w(dim, 0, st->h[i]);
+            for (int k = off[i]; k < off[i + 1]; k++) {
+                const int j = nb[k];
+                double d[3];
+                sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
+                const double G = 0.9 * (T[j] - o->xsph_T0) / (o->xsph_Tf - o->xsph_T0) + 0.05; /* eq. 4.6 */
+                u += m[j] / st->rho[j] * G *
+                     sph_w(dim, sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 0.5 * (st->h[i] + st->h[j]));
+            }
+            st->brown[i] = u < 0 ? 0 : u > 1 ? 1 : u;
+        }
+    } else
+        memset(st->brown, 0, sizeof(double) * (size_t)n);
+    rep->kinetic = ke;
+    rep->max_speed = vmax;
+    rep->fastest = fastest;
+    rep->c_max = cmax;
+    st->n = n;
+    st->valid = 1;
+    return HEARTH_OK;
+}
+
+double sph_stable_dt(const hearth_scene *s) {
+    const hearth_sph_def *o = &s->def.sph;
+    const particles *ps = &s->ps;
+    const int dim = s->def.dim;
+    double c = s->c_max;
+    double dt = INFINITY, pscratch[SCENE_MAX_PARAMS];
+    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    double hmin = INFINITY, numax = 0, rhomin = INFINITY;
+    for (int i = 0; i < ps->n; i++) {
+        const int m = pcoli(ps, PC_MAT)[i];
+        const material_slot *ms = &s->mats[m];
+        const double *p = T ? scene_params_for(s, m, i, pscratch) : ms->params;
+        const double V0 = pcold(ps, PC_VOL0)[i], h = o->h_factor * (dim == 3 ? cbrt(V0) : sqrt(V0));
+        if (h < hmin) hmin = h;
+        if (p[ms->density_index] < rhomin) rhomin = p[ms->density_index];
+        const int vi = pindex(ms->m, "viscosity");
+        if (vi >= 0) {
+            const double nu = p[vi] / p[ms->density_index];
+            if (nu > numax) numax = nu;
+        }
+        if (s->step == 0) { /* before the first step the sound speed comes from the materials */
+            const double ci = ms->m->wave_speed(p, ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
+            if (ci > c) c = ci;
+        }
+    }
+    if (!isfinite(hmin)) hmin = s->def.dx;
+    const double sp = s->max_speed + c;
+    if (sp > 0) dt = s->def.cfl * s->def.dx / sp;
+    if (numax > 0) dt = fmin(dt, o->dt_viscous * hmin * hmin / numax);
+    if (s->sph && s->sph->amax > 0) dt = fmin(dt, o->dt_force * sqrt(hmin / s->sph->amax));
+    if (o->heat_int > 0 && T) dt = fmin(dt, 0.1 * hmin * hmin * rhomin / o->heat_int); /* eq. 3.45 has 1/rho */
+    if (s->def.dt_max > 0 && dt > s->def.dt_max) dt = s->def.dt_max;
+    if (isinf(dt)) dt = s->def.cfl * s->def.dx;
+    return dt * s->dt_scale;
+}
+
+const double *sph_particle_values(const hearth_scene *s, const char *which) {
+    const struct sph_state *st = s->sph;
+    if (!st || !st->valid || st->n != s->ps.n) return NULL;
+    if (!strcmp(which, "density")) return st->rho;
+    if (!strcmp(which, "pressure")) return st->prs;
+    if (!strcmp(which, "h")) return st->h;
+    if (!strcmp(which, "browning")) return st->brown;
+    if (!strcmp(which, "surface")) return st->surf;
+    return NULL;
+}

@@ -1,0 +1,67 @@
+/* sph_neighbours.h: neighbour search for SPH.
+ *
+ * A uniform cell list (cell size >= the largest support radius) over
+ * particles sorted by cell, and the neighbour lists it produces in CSR form.
+ * A kd-tree (the thesis's choice, §3.1.2) builds the same lists; it is kept
+ * for the comparison the tests print, the solver uses the cell list (faster,
+ * see docs/architecture.md). Periodic axes wrap: displacements are minimum
+ * images. Lists are in a fixed order (cells in z, y, x order, particles in
+ * sorted order), so sums over them do not depend on the thread count. */
+#ifndef HEARTH_SPH_NEIGHBOURS_H
+#define HEARTH_SPH_NEIGHBOURS_H
+#include <stddef.h>
+
+#include "hearth/hearth.h"
+
+typedef struct sph_cells {
+    int dim;
+    double lo[3], len[3]; /* box origin and size */
+    double cell;          /* cell edge (m) */
+    int nc[3];            /* cells per axis (1 along z in 2D) */
+    int periodic[3];
+    int ncell;
+    int *start;           /* ncell + 1: particles of cell c are [start[c], start[c+1]) after sorting */
+    int cap;
+} sph_cells;
+
+typedef struct sph_nlist {
+    int n;
+    int *off;   /* n + 1 */
+    int *j;     /* off[n] neighbour indices (self excluded) */
+    size_t ncap;
+    int offcap;
+} sph_nlist;
+
+/// Set up the cell table for box [lo, hi] and cell edge `cell`. Periodic axes
+/// need at least 3 cells. Reuses storage.
+hearth_status sph_cells_setup(sph_cells *c, int dim, const double lo[3], const double hi[3], double cell,
+                              const int periodic[3], hearth_error *err);
+void sph_cells_free(sph_cells *c);
+/// Cell index of a point (clamped into the box; periodic axes wrapped).
+int sph_cell_of(const sph_cells *c, const double x[3]);
+/// Counting sort: key[i] = cell of particle i; order gets the stable order
+/// (new i = old order[i]); fills c->start.
+void sph_cells_sort(sph_cells *c, const int *key, int n, int *order);
+/// Displacement x_i - x_j, minimum image on periodic axes.
+static inline void sph_disp(const sph_cells *c, const double *xi, const double *xj, double d[3]) {
+    for (int a = 0; a < 3; a++) {
+        double v = xi[a] - xj[a];
+        if (c->periodic[a]) {
+            const double L = c->len[a];
+            if (v > 0.5 * L) v -= L;
+            else if (v < -0.5 * L) v += L;
+        }
+        d[a] = v;
+    }
+}
+
+/// Neighbour lists of sorted particles: j is a neighbour of i (j != i) when
+/// |x_i - x_j| < (h_i + h_j) / 2 (symmetric h_ij, eq. 3.56). h may be NULL
+/// for the constant h0. The cell edge must be >= max h.
+hearth_status sph_nlist_build(sph_nlist *nl, const sph_cells *c, const double *x, int n, const double *h, double h0,
+                              hearth_error *err);
+/// The same lists from a kd-tree over unsorted particles (for the comparison).
+hearth_status sph_nlist_kdtree(sph_nlist *nl, const sph_cells *c, const double *x, int n, double h0,
+                               hearth_error *err);
+void sph_nlist_free(sph_nlist *nl);
+#endif

@@ -1,0 +1,48 @@
+-- hearth.sph_library: presets from Rodriguez-Arenas 2011 (SPH baking thesis).
+-- Loaded by init.lua as h.library.sph; called with h so it can build curves.
+--
+-- h.library.sph.bread_roll: Table 4.1 (solidification parameters) for the
+-- maxwell_sph plugin, a fresh table on every access:
+--   .material  parameters for h.material("maxwell_sph", ...):
+--              mu_e      eq. 4.2 through (T0, mu_e0), (Tc, mu_ec), (Tf, mu_ef)
+--              viscosity eq. 4.1 through (T0, mu0), (Tc, muc), (Tf, muf)
+--              C_lambda  eq. 4.3 (the arctan law is a parameter mode of the plugin)
+--   .sph       the XSPH tuner of eq. 4.4 (linear from eps0 at T0 to eps_f at Tf)
+--              for h.scene{solver = "sph", sph = ...}; eps_f is 0.5 as in the text of
+--              §4.3 (Table 4.1 prints 5; XSPH above 1 overshoots and the core refuses it)
+--   .table     the raw Table 4.1 numbers.
+-- Difference from the thesis: eq. 4.1 and 4.2 extrapolate linearly beyond T0
+-- and Tf; hearth's curves are constant beyond their end points.
+-- The thesis's values are scaled for animation (its units are not SI
+-- rheometry); bulk modulus and density are hearth's choices for a dough.
+return function(h)
+  local T41 = { T0 = 26, Tc = 45, Tf = 120, mu0 = 0.1, muc = 1, muf = 5e3, mue0 = 1, muec = 10, muef = 5e4,
+                C_lambda = 450, eps0 = 0.05, epsf = 5 }
+  local presets = {
+    bread_roll = function()
+      local t = T41
+      return {
+        material = {
+          mu_e = h.curve { { t.T0, t.mue0 }, { t.Tc, t.muec }, { t.Tf, t.muef } },
+          viscosity = h.curve { { t.T0, t.mu0 }, { t.Tc, t.muc }, { t.Tf, t.muf } },
+          C_lambda = t.C_lambda, density = 1100, bulk = 2e4,
+        },
+        -- eps_f: §4.3's text value 0.5, not Table 4.1's 5 (XSPH overshoots above 1; the core refuses it)
+        sph = { xsph0 = t.eps0, xsph_f = 0.5, xsph_T0 = t.T0, xsph_Tf = t.Tf },
+        table = (function() local c = {} for k, v in pairs(t) do c[k] = v end return c end)(),
+      }
+    end,
+  }
+  local names = {}
+  for k in pairs(presets) do names[#names + 1] = k end
+  table.sort(names)
+  return setmetatable({}, {
+    __index = function(_, name)
+      local f = presets[name]
+      if not f then
+        error(("h.library.sph: no preset '%s' (valid: %s)"):format(tostring(name), table.concat(names, ", ")), 2)
+      end
+      return f()
+    end,
+  })
+end
