@@ -41,7 +41,7 @@ void hl_checkvec(lua_State *L, int idx, const char *what, double v[3]) {
 
 static double posnum(lua_State *L, int idx, const char *what, const char *unit) {
     double x = luaL_checknumber(L, idx);
-    if (!(x > 0) || !isfinite(x)) luaL_error(L, "%s = %g %s; it must be > 0", what, x, unit);
+    if (!(x > 0) || !isfinite(x)) luaL_error(L, "%s = %f %s; it must be > 0", what, x, unit);
     return x;
 }
 
@@ -51,7 +51,7 @@ static int l_box(lua_State *L) {
     hl_checkvec(L, 2, "box hi", hi);
     int n2 = (int)luaL_len(L, 1);
     for (int d = 0; d < 3; d++) {
-        if (d < n2 && !(hi[d] > lo[d])) luaL_error(L, "box: hi[%d] = %g must exceed lo[%d] = %g", d + 1, hi[d], d + 1, lo[d]);
+        if (d < n2 && !(hi[d] > lo[d])) luaL_error(L, "box: hi[%d] = %f must exceed lo[%d] = %f", d + 1, hi[d], d + 1, lo[d]);
         c[d] = 0.5 * (lo[d] + hi[d]);
         h[d] = 0.5 * (hi[d] - lo[d]);
     }
@@ -128,7 +128,7 @@ static int l_mask(lua_State *L) {
 static int l_extrude(lua_State *L) {
     hearth_shape *a = hl_checkshape(L, 1);
     double z0 = luaL_checknumber(L, 2), z1 = luaL_checknumber(L, 3);
-    if (!(z1 > z0)) luaL_error(L, "extrude: z1 = %g must exceed z0 = %g", z1, z0);
+    if (!(z1 > z0)) luaL_error(L, "extrude: z1 = %f must exceed z0 = %f", z1, z0);
     hl_pushshape(L, hearth_shape_extrude(a, z0, z1));
     return 1;
 }

@@ -436,6 +436,10 @@ lua_library)
     out=$("$hearth" run "$scenes/library.lua" --quiet 2>&1) || fail "library.lua: $out"
     echo "$out" | grep -q "library ok" || fail "library.lua did not finish: $out"
     ;;
+lua_blend_modes)
+    out=$("$hearth" run "$scenes/blend_modes.lua" --quiet 2>&1) || fail "blend_modes.lua: $out"
+    echo "$out" | grep -q "blend modes ok" || fail "blend_modes.lua did not finish: $out"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"
