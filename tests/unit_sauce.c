@@ -532,6 +532,36 @@ TEST(sauce_extremes) {
     CHECK(bad == 0);
 }
 
+/* ---- the MPM shear cell --------------------------------------------------- */
+
+/* The full solver between moving plates (rheo_mpm_steady): mayo and honey at
+ * 10 1/s within 5% of sigma_Y + eta rate^h (eq. 1), the stress compared with
+ * eq. 1 at the nominal rate; the measured rate must be the nominal one. */
+TEST(sauce_mpm_shear_cell) {
+    const hearth_material *m = sauce_plugin();
+    sauce_library lib;
+    CHECK(m && load_library(&lib));
+    if (!m || !lib.n) return;
+    const char *names[] = {"mayo", "honey"};
+    for (int i = 0; i < 2; i++) {
+        const sauce *sc = sauce_find(&lib, names[i]);
+        double p[MAXP];
+        sauce_p(m, &lib, names[i], p);
+        rheo_mpm_result r;
+        hearth_error err;
+        hearth_status st = rheo_mpm_steady("von_mises_sauce", p, 10, NULL, &r, &err);
+        if (st) fprintf(stderr, "%s: %s\n", names[i], err.msg);
+        CHECK(st == HEARTH_OK && r.steady);
+        const double want = rheo_hb(sc->sigma_y, sc->eta, sc->h, 10), e = rel(r.stress, want);
+        printf("sauce_mpm_shear_cell: %s at 10 1/s: MPM %.5g Pa, eq. 1 %.5g Pa (%+.2f%%); measured rate %.5g 1/s; "
+               "%d particles, %ld steps, %.4g s\n",
+               names[i], r.stress, want, 100 * (r.stress - want) / want, r.rate, r.particles, r.steps, r.time);
+        CHECK(e < 0.05);
+        CHECK(rel(r.rate, 10) < 0.02);
+    }
+    sauce_library_free(&lib);
+}
+
 TEST_MAIN(T(sauce_rheometer_library), T(sauce_maxwell_startup), T(sauce_limits), T(blend_zero_law),
           T(blend_identity_law), T(blend_commutative), T(blend_associative), T(blend_fig4a_claim), T(fit_roundtrip),
-          T(fit_bad_csv), T(sauce_extremes))
+          T(fit_bad_csv), T(sauce_extremes), T(sauce_mpm_shear_cell))
