@@ -345,19 +345,23 @@ local function material_id(s, m)
   local mix = m.mix
   if not mix or st.blend == "nonlinear" then
     id = register(s, m, m.params)
-  elseif st.blend == "linear" then
-    -- parameters the scene set after mixing (say a density) win over the blend
-    local p = core.blend(mix.plugin, mix.sets, mix.weights, "linear")
-    local blended = core.blend(mix.plugin, mix.sets, mix.weights)
+    st.mats[m] = id
+    return id
+  end
+  -- parameters the scene changed after mixing (say the moduli or a density) win over the blend
+  local blended = core.blend(mix.plugin, mix.sets, mix.weights)
+  local function with_changes(p)
     for k, v in pairs(m.params) do
       if blended[k] ~= v then p[k] = v end
     end
-    id = register(s, m, p)
+    return p
+  end
+  if st.blend == "linear" then
+    id = register(s, m, with_changes(core.blend(mix.plugin, mix.sets, mix.weights, "linear")))
   else -- labels: one material per constituent
     local ids, ratios = {}, {}
     for i, set in ipairs(mix.sets) do
-      local p = core.blend(mix.plugin, { set }, { 1 })
-      ids[i], ratios[i] = register(s, m, p), mix.weights[i]
+      ids[i], ratios[i] = register(s, m, with_changes(core.blend(mix.plugin, { set }, { 1 }))), mix.weights[i]
     end
     id = ids
     st.mats[ids] = ratios
@@ -375,9 +379,16 @@ function S:add(o)
   if o.material == nil then error("s:add: material = h.material(...) is required", 2) end
   local mat = o.material
   local mix = mix_info(mat)
-  if mix then -- a bare h.mix{...} table: the mixture's plugin with those parameters
-    local okm, mm = pcall(h.material, mix.plugin, mat)
-    if not okm then error(mm, 2) end
+  if mix then -- a bare h.mix{...} table: the mixture's plugin with those parameters, one material per table
+    local st = self:_state()
+    st.mix_materials = st.mix_materials or setmetatable({}, { __mode = "k" })
+    local mm = st.mix_materials[mat]
+    if not mm then
+      local okm
+      okm, mm = pcall(h.material, mix.plugin, mat)
+      if not okm then error(mm, 2) end
+      st.mix_materials[mat] = mm
+    end
     mat = mm
   end
   local ok, id, ratios = pcall(material_id, self, mat)
