@@ -44,7 +44,6 @@ local height = P.lane * math.tan(th) + P.drop + 0.04
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { nl * P.lane, height } }, gravity = { 0, -9.81 },
   blend = P.blend, name = "nozzle" }
 
-local hp = P.dx / 2 -- particle spacing at ppc 4
 local lanes = {}
 for i, r in ipairs(ratios) do
   local X = (i - 1) * P.lane
@@ -58,31 +57,16 @@ for i, r in ipairs(ratios) do
   lanes[i] = { ratio = r, xn = xn, top = top, material = mix }
 end
 
--- The nozzle: every hp / speed seconds one row of particles leaves the slot
--- at the extrusion speed. Rows sit on the seeding lattice (rows of spacing hp
--- from the box's low corner), so the stream is evenly filled.
-local exit_y = math.floor((height - 0.04 + 0.5 * P.dx) / hp) * hp
-local period = hp / P.speed
-local function emit(sc)
-  for _, L in ipairs(lanes) do
-    sc:add { shape = h.box({ L.xn - P.width / 2, exit_y }, { L.xn + P.width / 2, exit_y + hp }),
-      material = L.material, ppc = 4, jitter = 0, velocity = { 0, -P.speed } }
-  end
+for _, L in ipairs(lanes) do
+  h.recipes.nozzle(s, { x = L.xn, y = height - 0.04, width = P.width, speed = P.speed, material = L.material,
+    dx = P.dx, to = P.emit })
 end
-for k = 0, math.floor(P.emit / period) - 1 do s:at(k * period, emit) end
 
--- Front: sample the density along a line parallel to the plate, 1.5 dx above
--- it, from under the nozzle to the lane's end; the last sample inside the
--- material is the front.
+-- Front: how far the material reaches along a line parallel to the plate,
+-- 1.5 dx above it, from under the nozzle to the lane's end.
 local function front(L)
-  local len = (P.lane - 0.03 - P.dx) / c
-  local n = math.floor(len / (P.dx / 2)) + 1
   local off = 1.5 * P.dx
-  local x0, y0 = L.xn + off * sn, L.top + off * c
-  local d = s:line("density", { x0, y0 }, { x0 + len * c, y0 - len * sn }, n)
-  local f = 0
-  for j, v in ipairs(d) do if v == v then f = (j - 1) * len / (n - 1) end end
-  return f
+  return h.recipes.reach(s, { L.xn + off * sn, L.top + off * c }, { c, -sn }, (P.lane - 0.03 - P.dx) / c, P.dx / 2)
 end
 
 local head = { "t" }
