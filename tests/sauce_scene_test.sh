@@ -41,7 +41,7 @@ scene_sauces_*)
     # a shipped sauce scene runs briefly and writes decodable PNG frames and its CSV
     name=${case_name#scene_sauces_}
     csv=$4
-    "$hearth" run "$scenes/$name.lua" --until 0.04 --frames 2 --quiet --out out $5 >out.txt 2>err.txt ||
+    "$hearth" run "$scenes/$name.lua" --until 0.02 --frames 2 --quiet --out out $5 >out.txt 2>err.txt ||
         fail "$name exited $?: $(cat err.txt)"
     n=$(find out -name '*.png' | wc -l)
     [ "$n" -ge 3 ] || fail "$name wrote $n PNG frames, expected at least 3"
