@@ -4,10 +4,14 @@
 --   hearth run scripts/scenes/sauces/celery_dip.lua [--set sauce=mustard] [--set sauce=mix --set blend=linear]
 -- sauce: a library name (mayo, mustard, ...) or "mix", the half-and-half
 -- mayo/mustard mixture of Fig. 12, blended as `blend` says.
--- dip.csv: the area of sauce (m^2 per m of depth) above the bowl's sauce
--- level over time: what the celery lifts out. A thicker sauce clings more.
+-- dip.csv over time: the height of the sauce's surface on the dip's centre
+-- line (the hole the celery leaves: a sauce with a yield stress keeps it, a
+-- thin one levels), and the area of sauce (m^2 per m of depth) above the
+-- bowl's initial level (what the celery pushes up and lifts out). The sauce
+-- wets the celery only through its sticky contact; there is no adhesion or
+-- surface tension, so little sauce leaves the bowl with it.
 local h = require "hearth"
-local P = h.params { sauce = "mix", blend = "nonlinear", dx = 0.002, speed = 0.1, depth = 0.025, rest = 0.2,
+local P = h.params { sauce = "mix", blend = "nonlinear", dx = 0.003, speed = 0.1, depth = 0.025, rest = 0.2,
   until_t = 1.2, every = 0.05, png = true }
 
 local material
@@ -48,14 +52,15 @@ local function lifted()
   return n * (W / nx) * (H / ny)
 end
 
-local rows = { "t,lifted_m2" }
-local last = 0
+local rows = { "t,centre_height_m,lifted_m2" }
+local last, centre = 0, 0
 s:run { until_t = P.until_t, every = P.every,
   png = P.png and { field = "speed", path = "frames/speed_%04d.png" } or nil,
   on_frame = function(f)
     last = lifted()
-    rows[#rows + 1] = ("%.4f,%.6g"):format(f.t, last)
+    centre = h.recipes.height(s, W / 2, base, H - 0.01, 400)
+    rows[#rows + 1] = ("%.4f,%.5f,%.6g"):format(f.t, centre, last)
     h.write("dip.csv", table.concat(rows, "\n") .. "\n")
   end }
-print(("celery dip (%s, %s): %.3g m^2 of sauce above the bowl's level at t = %.2f s"):format(P.sauce, P.blend, last,
-  s:stats().t))
+print(("celery dip (%s, %s) at t = %.2f s: sauce surface %.4f m above the bowl floor at the dip (%.4f m at the start); %.3g m^2 above the initial level"):format(
+  P.sauce, P.blend, s:stats().t, centre, level - base, last))
