@@ -162,10 +162,9 @@ static void usage(FILE *f) {
             "usage: hearth rheometer MATERIAL [--mix sauce.a:0.5,sauce.b:0.5] [--rates MIN:MAX:COUNT]\n"
             "                        [--out DIR] [--json] [--dt DT] [--library FILE] [--mode homogeneous|mpm]\n"
             "Drives the material in simple shear at each rate until the shear stress is steady and\n"
-            "prints the flow curve. It is\n"
-            "saved as DIR/<material>.csv (shear_rate, stress, and hb_stress when the material has\n"
-            "Herschel-Bulkley parameters) and drawn on log-log axes with the analytic curve as\n"
-            "DIR/<material>.png.\n"
+            "prints the flow curve. It is saved as DIR/<material>.csv (shear_rate, stress, and\n"
+            "hb_stress when the material has Herschel-Bulkley parameters) and drawn on log-log axes\n"
+            "with the analytic curve as DIR/<material>.png.\n"
             "  MATERIAL        sauce.<name> from the sauce library (assets/sauces.csv, Nagasawa et al.\n"
             "                  2019 Table 1) with the %s plugin, or a plugin name with its defaults\n"
             "  --mix LIST      blend library sauces with the plugin's blend callback (eq. 28-31);\n"
@@ -179,7 +178,8 @@ static void usage(FILE *f) {
             "                  mpm: the full MPM solver, a 2D layer 1 cm thick and 4 cm long between two\n"
             "                  sticky plates moving at +-rate x 0.5 cm/s, 16 cells across, started with\n"
             "                  the shear profile; stress = mean particle sigma_xy over the middle half.\n"
-            "                  The CSV then has a measured_rate column (the slope of v_x across the gap)\n",
+            "                  The CSV then has a measured_rate column (the slope of v_x across the gap).\n"
+            "                  A few seconds per rate.\n",
             SAUCE_PLUGIN, app_sauce_library_path(NULL));
 }
 
