@@ -7,7 +7,7 @@
 -- spread.csv: how far the sauce reaches over the steak's top to the left
 -- and right of the pour point over time, and the area that ran off onto the plate.
 local h = require "hearth"
-local P = h.params { sauce = "mix", blend = "nonlinear", dx = 0.0025, speed = 0.3, width = 0.008, pour = 0.5,
+local P = h.params { sauce = "mix", blend = "nonlinear", dx = 0.0025, speed = 0.2, width = 0.02, drop = 0.006, pour = 0.4,
   until_t = 1.0, every = 0.05, png = true }
 
 local material
@@ -22,7 +22,9 @@ local plate_y, sx0, sx1, stop = 0.01, 0.04, 0.16, 0.035 -- the steak: 12 cm long
 s:collider { shape = h.plane({ 0, plate_y }, { 0, 1 }), mode = "sticky" }
 s:collider { shape = h.shapes.rounded_box({ sx0, plate_y - 0.005 }, { sx1, stop }, 0.008), mode = "sticky" }
 local x_pour = 0.085 -- a little left of the middle, as a cook pours
-h.recipes.nozzle(s, { x = x_pour, y = stop + 0.04, width = P.width, speed = P.speed, material = material, dx = P.dx,
+-- a wide slot close above the steak: a free-falling stream thins as it speeds
+-- up, and a stream under two cells wide loses its continuum in MPM
+h.recipes.nozzle(s, { x = x_pour, y = stop + P.drop, width = P.width, speed = P.speed, material = material, dx = P.dx,
   to = P.pour })
 
 local function spread()
