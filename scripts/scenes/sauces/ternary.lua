@@ -8,7 +8,7 @@
 -- front.csv: distance down the slope of each lane's farthest material over time.
 local h = require "hearth"
 local P = h.params { blend = "nonlinear", dx = 0.0025, angle = 45, speed = 0.2, width = 0.01, drop = 0.02,
-  emit = 0.6, until_t = 1.0, lane = 0.14, every = 0.05, png = true }
+  emit = 0.6, until_t = 1.0, lane = 0.22, every = 0.05, png = true }
 
 local L = h.library.sauce
 local sauces = { L.mayo, L.mustard, L.honey }
@@ -43,7 +43,7 @@ end
 local rows = { "t,front_" .. table.concat(names, ",front_") }
 local last = {}
 s:run { until_t = P.until_t, every = P.every,
-  png = P.png and { field = "speed", path = "frames/speed_%04d.png", width = 1400 } or nil,
+  png = P.png and { field = "speed", path = "frames/speed_%04d.png", width = 1600 } or nil,
   on_frame = function(f)
     local r = { ("%.4f"):format(f.t) }
     for i, ln in ipairs(lanes) do
