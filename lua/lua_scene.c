@@ -195,6 +195,34 @@ static int l_add(lua_State *L) {
     return 1;
 }
 
+/* s:_labels(body, {material ids}, {ratios}, seed) -> {count per material} */
+static int l_labels(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const int body = (int)luaL_checkinteger(L, 2);
+    luaL_checktype(L, 3, LUA_TTABLE);
+    luaL_checktype(L, 4, LUA_TTABLE);
+    const double seed = luaL_checknumber(L, 5);
+    const int k = (int)luaL_len(L, 3);
+    if (k < 1 || k > 8 || luaL_len(L, 4) != k) return luaL_error(L, "labels: 1 to 8 materials with one ratio each");
+    int mats[8], counts[8];
+    double ratio[8];
+    for (int i = 0; i < k; i++) {
+        lua_geti(L, 3, i + 1);
+        mats[i] = (int)lua_tointeger(L, -1);
+        lua_geti(L, 4, i + 1);
+        ratio[i] = lua_tonumber(L, -1);
+        lua_pop(L, 2);
+    }
+    hearth_error err;
+    if (hearth_scene_body_labels(u->s, body, k, mats, ratio, (uint64_t)seed, counts, &err)) return hl_raise(L, &err);
+    lua_createtable(L, k, 0);
+    for (int i = 0; i < k; i++) {
+        lua_pushinteger(L, counts[i]);
+        lua_seti(L, -2, i + 1);
+    }
+    return 1;
+}
+
 /* Collider motion from Lua functions. The record lives in the scene's state
  * table so the GC keeps it while the scene lives. A Lua error inside the
  * step cannot unwind through the C library: it is caught, the collider
@@ -520,6 +548,23 @@ static int l_positions(lua_State *L) {
     return 1;
 }
 
+/* s:material_params(id) -> {name = value, ...}: what the scene simulates with
+ * (after blending), so a scene can print or check it. */
+static int l_material_params(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const int id = (int)luaL_checkinteger(L, 2);
+    const hearth_material *m = hearth_scene_material_info(u->s, id);
+    if (!m) return luaL_error(L, "material_params: material %d does not exist (the scene has %d)", id,
+                              hearth_scene_material_count(u->s));
+    const double *p = hearth_scene_material_params(u->s, id);
+    lua_createtable(L, 0, m->nparams);
+    for (int i = 0; i < m->nparams; i++) {
+        lua_pushnumber(L, p[i]);
+        lua_setfield(L, -2, m->params[i].name);
+    }
+    return 1;
+}
+
 static int l_volume(lua_State *L) {
     lua_pushnumber(L, hearth_scene_volume(hl_checkscene(L, 1)->s));
     return 1;
@@ -554,12 +599,12 @@ static int l_guard_tostring(lua_State *L) {
 
 void hl_open_scene(lua_State *L) {
     static const luaL_Reg methods[] = {
-        {"_state", l_state},     {"_material", l_material}, {"_curve", l_curve},       {"_add", l_add},
+        {"_state", l_state},     {"_material", l_material}, {"_curve", l_curve},       {"_add", l_add},       {"_labels", l_labels},
         {"_collider", l_collider}, {"_advance", l_advance}, {"_step", l_step_raw},     {"push", l_push},
         {"cut", l_cut},          {"move", l_move},         {"collider_velocity", l_collider_velocity},
         {"set_dt", l_set_dt},    {"oven", l_oven},    {"probe", l_probe},       {"line", l_line},          {"_slice", l_slice},
         {"stats", l_stats},      {"body_particles", l_body_particles}, {"hash", l_hash},
-        {"positions", l_positions}, {"volume", l_volume}, {NULL, NULL}};
+        {"positions", l_positions}, {"volume", l_volume}, {"material_params", l_material_params}, {NULL, NULL}};
     luaL_newmetatable(L, HL_SCENE);
     lua_pushcfunction(L, l_gc);
     lua_setfield(L, -2, "__gc");

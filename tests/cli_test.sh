@@ -23,6 +23,17 @@ cli_help)
     "$hearth" --version | grep -q "material ABI" || fail "--version"
     for sub in demo bench plugins; do "$hearth" $sub --help >/dev/null || fail "$sub --help"; done
     ;;
+cli_rheometer_mpm)
+    # the MPM shear-cell mode as a user runs it: --json, the CSV with the measured rate, a bad mode named
+    out=$(cd "$tmp" && "$hearth" rheometer sauce.mayo --mode mpm --rates 10:10:1 --json) || fail "rheometer --mode mpm exited $?"
+    echo "$out" | grep -qE '^\{"shear_rate":\[10\],"stress":\[1[45][0-9]\.[0-9]+\]\}$' || fail "mpm json: $out"
+    head -1 "$tmp"/hearth-out/rheometer/sauce.mayo.csv | grep -qx "shear_rate,stress,hb_stress,measured_rate" ||
+        fail "mpm CSV header: $(head -1 "$tmp"/hearth-out/rheometer/sauce.mayo.csv)"
+    png_ok "$tmp"/hearth-out/rheometer/sauce.mayo.png || fail "mpm flow-curve PNG does not decode"
+    "$hearth" rheometer --help | grep -q -- "--mode MODE" || fail "rheometer --help lacks --mode"
+    err=$("$hearth" rheometer sauce.mayo --mode cone 2>&1) && fail "a bad --mode was accepted"
+    echo "$err" | grep -qF -- "--mode cone; valid: homogeneous, mpm" || fail "bad --mode message: $err"
+    ;;
 cli_demo_frames)
     (cd "$tmp" && "$hearth" demo --until 0.02 --frames 2 --quiet) || fail "demo exited $?"
     n=$(ls "$tmp"/hearth-out/demo/frame_*.png 2>/dev/null | wc -l)

@@ -532,6 +532,97 @@ TEST(sauce_extremes) {
     CHECK(bad == 0);
 }
 
+/* ---- random binary labels (hearth_scene_body_labels) --------------------- */
+
+/* Labels follow the ratios, carry the new material's density into the mass,
+ * do not depend on the particle order, and bad input is named. */
+TEST(labels_hook) {
+    const hearth_material *m = sauce_plugin();
+    CHECK(m != NULL);
+    if (!m) return;
+    hearth_error err;
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 64;
+    hearth_scene *s = hearth_scene_create(&d, &err);
+    CHECK(s != NULL);
+    if (!s) return;
+    const char *names[] = {"density"};
+    const double light = 900, heavy = 1300;
+    int a = hearth_scene_add_material(s, "von_mises_sauce", names, &light, 1, &err);
+    int b = hearth_scene_add_material(s, "von_mises_sauce", names, &heavy, 1, &err);
+    int e = hearth_scene_add_material(s, "elastic", NULL, NULL, 0, &err);
+    CHECK(a >= 0 && b >= 0 && e >= 0);
+    const double c[3] = {0.5, 0.5, 0}, half[3] = {0.25, 0.25, 0};
+    hearth_shape *box = hearth_shape_box(c, half);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = box;
+    bd.material = a;
+    int body = hearth_scene_add_body(s, &bd, &err);
+    CHECK(body == 0);
+    const int n = hearth_scene_body_particles(s, body);
+    int mats[2] = {a, b}, counts[2] = {0, 0};
+    double ratio[2] = {1, 3}; /* unnormalised: 25% light */
+    CHECK(hearth_scene_body_labels(s, body, 2, mats, ratio, 42, counts, &err) == HEARTH_OK);
+    const double frac = (double)counts[0] / n, sd = sqrt(0.25 * 0.75 / n);
+    printf("labels_hook: %d particles, %d light (%.4f, want 0.25 +- %.4f)\n", n, counts[0], frac, 4 * sd);
+    CHECK(counts[0] + counts[1] == n);
+    CHECK(fabs(frac - 0.25) < 4 * sd);
+    /* the density field shows the labels: the mean density is the mixture's */
+    double *rho = malloc(sizeof(double) * (size_t)n);
+    CHECK(hearth_scene_particle_field(s, "density", rho, &err) == HEARTH_OK);
+    int nl = 0, nh = 0;
+    for (int i = 0; i < n; i++) nl += rho[i] == light, nh += rho[i] == heavy;
+    CHECK(nl == counts[0] && nh == counts[1]);
+    free(rho);
+    /* the same seed gives the same labels after the particles were sorted by a step */
+    CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+    int again[2];
+    CHECK(hearth_scene_body_labels(s, body, 2, mats, ratio, 42, again, &err) == HEARTH_OK);
+    CHECK(again[0] == counts[0] && again[1] == counts[1]);
+    /* bad input, each named */
+    double zero[2] = {0, 0}, neg[2] = {-1, 1};
+    int other[2] = {a, e}, missing[2] = {a, 99};
+    CHECK(hearth_scene_body_labels(s, 7, 2, mats, ratio, 1, NULL, &err) == HEARTH_ERR_PARAM && strstr(err.msg, "body 7"));
+    CHECK(hearth_scene_body_labels(s, body, 2, mats, zero, 1, NULL, &err) == HEARTH_ERR_PARAM && strstr(err.msg, "sum to zero"));
+    CHECK(hearth_scene_body_labels(s, body, 2, mats, neg, 1, NULL, &err) == HEARTH_ERR_PARAM && strstr(err.msg, "ratio 1"));
+    CHECK(hearth_scene_body_labels(s, body, 2, other, ratio, 1, NULL, &err) == HEARTH_ERR_PARAM && strstr(err.msg, "one plugin"));
+    CHECK(hearth_scene_body_labels(s, body, 2, missing, ratio, 1, NULL, &err) == HEARTH_ERR_PARAM && strstr(err.msg, "material 99"));
+    CHECK(hearth_scene_body_labels(s, body, 9, mats, ratio, 1, NULL, &err) == HEARTH_ERR_PARAM);
+    hearth_shape_free(box);
+    hearth_scene_destroy(s);
+}
+
+/* ---- the MPM shear cell --------------------------------------------------- */
+
+/* The full solver between moving plates (rheo_mpm_steady): mayo and honey at
+ * 10 1/s within 5% of sigma_Y + eta rate^h (eq. 1), the stress compared with
+ * eq. 1 at the nominal rate; the measured rate must be the nominal one. */
+TEST(sauce_mpm_shear_cell) {
+    const hearth_material *m = sauce_plugin();
+    sauce_library lib;
+    CHECK(m && load_library(&lib));
+    if (!m || !lib.n) return;
+    const char *names[] = {"mayo", "honey"};
+    for (int i = 0; i < 2; i++) {
+        const sauce *sc = sauce_find(&lib, names[i]);
+        double p[MAXP];
+        sauce_p(m, &lib, names[i], p);
+        rheo_mpm_result r;
+        hearth_error err;
+        hearth_status st = rheo_mpm_steady("von_mises_sauce", p, 10, NULL, &r, &err);
+        if (st) fprintf(stderr, "%s: %s\n", names[i], err.msg);
+        CHECK(st == HEARTH_OK && r.steady);
+        const double want = rheo_hb(sc->sigma_y, sc->eta, sc->h, 10), e = rel(r.stress, want);
+        printf("sauce_mpm_shear_cell: %s at 10 1/s: MPM %.5g Pa, eq. 1 %.5g Pa (%+.2f%%); measured rate %.5g 1/s; "
+               "%d particles, %ld steps, %.4g s\n",
+               names[i], r.stress, want, 100 * (r.stress - want) / want, r.rate, r.particles, r.steps, r.time);
+        CHECK(e < 0.05);
+        CHECK(rel(r.rate, 10) < 0.02);
+    }
+    sauce_library_free(&lib);
+}
+
 TEST_MAIN(T(sauce_rheometer_library), T(sauce_maxwell_startup), T(sauce_limits), T(blend_zero_law),
           T(blend_identity_law), T(blend_commutative), T(blend_associative), T(blend_fig4a_claim), T(fit_roundtrip),
-          T(fit_bad_csv), T(sauce_extremes))
+          T(fit_bad_csv), T(sauce_extremes), T(sauce_mpm_shear_cell),
+          T(labels_hook))

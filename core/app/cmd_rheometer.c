@@ -160,12 +160,11 @@ int app_flow_plot(const char *path, const char *title, const double *x, const do
 static void usage(FILE *f) {
     fprintf(f,
             "usage: hearth rheometer MATERIAL [--mix sauce.a:0.5,sauce.b:0.5] [--rates MIN:MAX:COUNT]\n"
-            "                        [--out DIR] [--json] [--dt DT] [--library FILE]\n"
-            "Drives one material point in simple shear at each rate until the shear stress is steady\n"
-            "(homogeneous: the plugin is called directly, no grid) and prints the flow curve. It is\n"
-            "saved as DIR/<material>.csv (shear_rate, stress, and hb_stress when the material has\n"
-            "Herschel-Bulkley parameters) and drawn on log-log axes with the analytic curve as\n"
-            "DIR/<material>.png.\n"
+            "                        [--out DIR] [--json] [--dt DT] [--library FILE] [--mode homogeneous|mpm]\n"
+            "Drives the material in simple shear at each rate until the shear stress is steady and\n"
+            "prints the flow curve. It is saved as DIR/<material>.csv (shear_rate, stress, and\n"
+            "hb_stress when the material has Herschel-Bulkley parameters) and drawn on log-log axes\n"
+            "with the analytic curve as DIR/<material>.png.\n"
             "  MATERIAL        sauce.<name> from the sauce library (assets/sauces.csv, Nagasawa et al.\n"
             "                  2019 Table 1) with the %s plugin, or a plugin name with its defaults\n"
             "  --mix LIST      blend library sauces with the plugin's blend callback (eq. 28-31);\n"
@@ -174,7 +173,13 @@ static void usage(FILE *f) {
             "  --out DIR       output folder (default ./hearth-out/rheometer)\n"
             "  --json          print {\"shear_rate\":[...],\"stress\":[...]} and nothing else\n"
             "  --dt DT         fixed step in seconds (default: adaptive, from the material's stiffness)\n"
-            "  --library FILE  the sauce library CSV (default %s)\n",
+            "  --library FILE  the sauce library CSV (default %s)\n"
+            "  --mode MODE     homogeneous (default): one material point, the plugin called directly;\n"
+            "                  mpm: the full MPM solver, a 2D layer 1 cm thick and 4 cm long between two\n"
+            "                  sticky plates moving at +-rate x 0.5 cm/s, 16 cells across, started with\n"
+            "                  the shear profile; stress = mean particle sigma_xy over the middle half.\n"
+            "                  The CSV then has a measured_rate column (the slope of v_x across the gap).\n"
+            "                  A few seconds per rate.\n",
             SAUCE_PLUGIN, app_sauce_library_path(NULL));
 }
 
@@ -266,20 +271,23 @@ static int pindex(const hearth_material *m, const char *name) {
     return -1;
 }
 
-static int write_csv(const char *path, const double *x, const double *y, const double *hb, int n, hearth_error *err) {
+static int write_csv(const char *path, const double *x, const double *y, const double *hb, const double *measured, int n,
+                     hearth_error *err) {
     atomic_file af;
     if (atomic_open(&af, path, err)) return -1;
-    fprintf(af.f, hb ? "shear_rate,stress,hb_stress\n" : "shear_rate,stress\n");
+    fprintf(af.f, "shear_rate,stress%s%s\n", hb ? ",hb_stress" : "", measured ? ",measured_rate" : "");
     for (int i = 0; i < n; i++) {
-        if (hb) fprintf(af.f, "%.10g,%.10g,%.10g\n", x[i], y[i], hb[i]);
-        else fprintf(af.f, "%.10g,%.10g\n", x[i], y[i]);
+        fprintf(af.f, "%.10g,%.10g", x[i], y[i]);
+        if (hb) fprintf(af.f, ",%.10g", hb[i]);
+        if (measured) fprintf(af.f, ",%.10g", measured[i]);
+        fprintf(af.f, "\n");
     }
     return atomic_commit(&af, err) ? -1 : 0;
 }
 
 int cmd_rheometer(int argc, char **argv) {
     const char *material = NULL, *mix = NULL, *rates_s = "1:200:12", *out = "hearth-out/rheometer", *library = NULL;
-    int json = 0;
+    int json = 0, mpm = 0;
     double dt = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -301,6 +309,14 @@ int cmd_rheometer(int argc, char **argv) {
             else if (!strcmp(a, "--rates")) rates_s = v;
             else if (!strcmp(a, "--out")) out = v;
             else if (!strcmp(a, "--library")) library = v;
+            else if (!strcmp(a, "--mode")) {
+                if (!strcmp(v, "mpm")) mpm = 1;
+                else if (!strcmp(v, "homogeneous")) mpm = 0;
+                else {
+                    fprintf(stderr, "hearth rheometer: --mode %s; valid: homogeneous, mpm\n", v);
+                    return 2;
+                }
+            }
             else if (!strcmp(a, "--dt")) {
                 if (parse_double("--dt", v, &dt)) return 2;
                 if (!(dt > 0)) {
@@ -404,13 +420,28 @@ int cmd_rheometer(int argc, char **argv) {
         snprintf(label, sizeof label, "%s (defaults)", m->name);
     }
 
-    double rates[MAX_RATES], stress[MAX_RATES], hbv[MAX_RATES];
+    static double rates[MAX_RATES], stress[MAX_RATES], hbv[MAX_RATES], measured[MAX_RATES];
     rheo_log_rates(lo, hi, (int)count, rates);
     int isy = pindex(m, "sigma_y"), ieta = pindex(m, "eta"), ih = pindex(m, "h");
     int has_hb = isy >= 0 && ieta >= 0 && ih >= 0;
     rheo_opts o = rheo_default_opts();
     o.dt = dt;
+    if (mpm && dt > 0) {
+        fprintf(stderr, "hearth rheometer: --dt applies to the homogeneous mode; the MPM cell steps at its CFL limit\n");
+        goto done;
+    }
     for (int i = 0; i < count; i++) {
+        if (mpm) {
+            rheo_mpm_result r;
+            if (rheo_mpm_steady(plugin, p, rates[i], NULL, &r, &err)) {
+                fprintf(stderr, "hearth rheometer: %s\n", err.msg);
+                goto done;
+            }
+            stress[i] = r.stress;
+            measured[i] = r.rate;
+            if (has_hb) hbv[i] = rheo_hb(p[isy], p[ieta], p[ih], rates[i]);
+            continue;
+        }
         rheo_result r;
         if (rheo_steady(m, p, rates[i], &o, &r, &err)) {
             fprintf(stderr, "hearth rheometer: %s\n", err.msg);
@@ -436,7 +467,7 @@ int cmd_rheometer(int argc, char **argv) {
     }
     snprintf(csv, sizeof csv, "%s/%s.csv", out, slug);
     snprintf(png, sizeof png, "%s/%s.png", out, slug);
-    if (write_csv(csv, rates, stress, has_hb ? hbv : NULL, (int)count, &err)) {
+    if (write_csv(csv, rates, stress, has_hb ? hbv : NULL, mpm ? measured : NULL, (int)count, &err)) {
         fprintf(stderr, "hearth rheometer: %s\n", err.msg);
         goto done;
     }
@@ -451,7 +482,7 @@ int cmd_rheometer(int argc, char **argv) {
     }
     char title[600];
     snprintf(title, sizeof title, "flow curve: %s", label);
-    if (app_flow_plot(png, title, rates, stress, (int)count, "virtual rheometer (homogeneous)", has_hb ? cx : NULL,
+    if (app_flow_plot(png, title, rates, stress, (int)count, mpm ? "virtual rheometer (MPM shear cell)" : "virtual rheometer (homogeneous)", has_hb ? cx : NULL,
                       has_hb ? cy : NULL, NC, clabel, &err)) {
         fprintf(stderr, "hearth rheometer: %s\n", err.msg);
         goto done;
@@ -468,14 +499,20 @@ int cmd_rheometer(int argc, char **argv) {
         for (int i = 0; i < m->nparams; i++)
             printf(" %s %g%s%s%s", m->params[i].name, p[i], strcmp(m->params[i].unit, "1") ? " " : "",
                    strcmp(m->params[i].unit, "1") ? m->params[i].unit : "", i + 1 < m->nparams ? "," : "");
-        printf("\n  homogeneous simple shear, %s dt, steady when sigma_xy changes < %g (relative)\n\n",
-               dt > 0 ? "fixed" : "adaptive", o.rel_tol);
+        if (mpm)
+            printf("\n  MPM shear cell (2D layer between sticky plates), steady when the mean sigma_xy changes < %g\n\n",
+                   rheo_mpm_default_opts().rel_tol);
+        else
+            printf("\n  homogeneous simple shear, %s dt, steady when sigma_xy changes < %g (relative)\n\n",
+                   dt > 0 ? "fixed" : "adaptive", o.rel_tol);
         if (has_hb) printf("  %16s  %16s  %22s  %10s\n", "shear_rate [1/s]", "stress [Pa]", "Herschel-Bulkley [Pa]", "difference");
         else printf("  %16s  %16s\n", "shear_rate [1/s]", "stress [Pa]");
         for (int i = 0; i < count; i++) {
             if (has_hb)
-                printf("  %16.6g  %16.6g  %22.6g  %9.3f%%\n", rates[i], stress[i], hbv[i], 100 * (stress[i] - hbv[i]) / hbv[i]);
-            else printf("  %16.6g  %16.6g\n", rates[i], stress[i]);
+                printf("  %16.6g  %16.6g  %22.6g  %9.3f%%", rates[i], stress[i], hbv[i], 100 * (stress[i] - hbv[i]) / hbv[i]);
+            else printf("  %16.6g  %16.6g", rates[i], stress[i]);
+            if (mpm) printf("  (measured rate %.5g 1/s)", measured[i]);
+            printf("\n");
         }
         printf("\nwrote %s and %s\n", csv, png);
     }

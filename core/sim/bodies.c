@@ -66,6 +66,61 @@ int hearth_scene_body_particles(const hearth_scene *s, int body) {
     return n;
 }
 
+/* splitmix64 finaliser of seed and id: one uniform number per particle. */
+static double label_uniform(uint64_t seed, int id) {
+    uint64_t z = seed + 0x9e3779b97f4a7c15ULL * ((uint64_t)(uint32_t)id + 1);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+}
+
+hearth_status hearth_scene_body_labels(hearth_scene *s, int body, int k, const int *materials, const double *ratio,
+                                       uint64_t seed, int *counts, hearth_error *err) {
+    enum { LABELS_MAX = 8 };
+    if (body < 0 || body >= s->nbodies)
+        return err_set(err, HEARTH_ERR_PARAM, "labels: body %d does not exist (the scene has %d)", body, s->nbodies);
+    if (k < 1 || k > LABELS_MAX) return err_set(err, HEARTH_ERR_PARAM, "labels: %d materials; valid range [1, %d]", k, LABELS_MAX);
+    double cum[LABELS_MAX], total = 0;
+    for (int i = 0; i < k; i++) {
+        if (materials[i] < 0 || materials[i] >= s->nmat)
+            return err_set(err, HEARTH_ERR_PARAM, "labels: material %d does not exist (the scene has %d)", materials[i], s->nmat);
+        if (s->mats[materials[i]].m != s->mats[materials[0]].m)
+            return err_set(err, HEARTH_ERR_PARAM, "labels: materials must share one plugin ('%s' and '%s')",
+                           s->mats[materials[0]].m->name, s->mats[materials[i]].m->name);
+        if (!(ratio[i] >= 0) || !isfinite(ratio[i]))
+            return err_set(err, HEARTH_ERR_PARAM, "labels: ratio %d = %g; valid range [0, inf)", i + 1, ratio[i]);
+        total += ratio[i];
+        cum[i] = total;
+    }
+    if (!(total > 0)) return err_set(err, HEARTH_ERR_PARAM, "labels: the ratios sum to zero");
+    if (counts) memset(counts, 0, sizeof(int) * (size_t)k);
+    particles *ps = &s->ps;
+    double ke = 0;
+    for (int i = 0; i < ps->n; i++) {
+        const double *v = pcold(ps, PC_V) + 3 * i;
+        if (pcoli(ps, PC_BODY)[i] == body) {
+            const double u = label_uniform(seed, pcoli(ps, PC_ID)[i]) * total;
+            int c = 0;
+            while (c < k - 1 && !(u < cum[c])) c++;
+            const material_slot *ms = &s->mats[materials[c]];
+            pcoli(ps, PC_MAT)[i] = materials[c];
+            pcold(ps, PC_MASS)[i] = ms->params[ms->density_index] * pcold(ps, PC_VOL0)[i];
+            if (ps->state_stride) {
+                double *st = pcold(ps, PC_STATE) + (size_t)i * ps->state_stride;
+                memset(st, 0, sizeof(double) * (size_t)ps->state_stride);
+                ms->m->init(ms->params, st);
+            }
+            if (counts) counts[c]++;
+        }
+        ke += 0.5 * pcold(ps, PC_MASS)[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    }
+    s->kinetic = ke; /* masses changed by decree: the guard's reference follows */
+    if (ke > s->kinetic_peak) s->kinetic_peak = ke;
+    scene_refresh_wave_speed(s);
+    return HEARTH_OK;
+}
+
 hearth_status hearth_scene_body_set_velocity(hearth_scene *s, int body, const double v[3], hearth_error *err) {
     if (body < 0 || body >= s->nbodies)
         return err_set(err, HEARTH_ERR_PARAM, "push: body %d does not exist (the scene has %d)", body, s->nbodies);

@@ -17,7 +17,7 @@
 #include "water.h"
 
 typedef enum field_id {
-    F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_TEMPERATURE, F_BOUNDARY,
+    F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_STRESS_XY, F_TEMPERATURE, F_BOUNDARY,
     F_GAS, F_POROSITY, F_GAS_PRESSURE, F_SATURATION, F_WATER_MASS, F_WATER_PRESSURE, F_BROWNING, F_COUNT
 } field_id;
 
@@ -46,6 +46,7 @@ static const struct {
     [F_VON_MISES] = {"von_mises", "Pa", 1, -1, NULL},
     [F_BROWNING] = {"browning", "1", 1, PC_TEMPERATURE,
                     "use solver = \"sph\" and turn the temperature field on (Rodriguez-Arenas eq. 4.5-4.6)"},
+    [F_STRESS_XY] = {"stress_xy", "Pa", 1, -1, NULL}, /* Cauchy shear stress: what a rheometer measures */
 };
 
 static int field_lookup(const char *name) {
@@ -170,6 +171,8 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
         const double p = -(sig[0] + sig[4] + sig[8]) / 3.0;
         if (f == F_PRESSURE) {
             out[0] = p;
+        } else if (f == F_STRESS_XY) {
+            out[0] = 0.5 * (sig[1] + sig[3]);
         } else { /* q = sqrt(3/2 s:s), s the deviatoric Cauchy stress */
             double ss = 0;
             for (int r = 0; r < 3; r++)

@@ -69,6 +69,42 @@ void rheo_log_rates(double lo, double hi, int n, double *rates);
 /// Herschel-Bulkley stress sigma_Y + eta rate^h (eq. 1).
 double rheo_hb(double sigma_y, double eta, double h, double rate);
 
+/* ---- the MPM shear cell (rheometer_mpm.c) --------------------------------- */
+
+/// Options of rheo_mpm_steady. Start from rheo_mpm_default_opts().
+typedef struct rheo_mpm_opts {
+    double gap;      ///< plate separation H (m), default 0.01
+    int cells;       ///< grid cells across the gap, default 16
+    double length;   ///< cell length in gaps (the layer is length x H), default 4
+    int ppc;         ///< particles per cell (a k x k lattice), default 4
+    double rel_tol;  ///< steady when the windowed mean stress changes less than this (relative), default 2e-4
+    double max_time; ///< give up after this sim time (s), default 1
+} rheo_mpm_opts;
+
+rheo_mpm_opts rheo_mpm_default_opts(void);
+
+/// What rheo_mpm_steady measured.
+typedef struct rheo_mpm_result {
+    double stress;      ///< mean Cauchy sigma_xy of the particles in the middle half of the layer (Pa)
+    double rate;        ///< shear rate measured there: slope of v_x against y over the inner 80% of the gap (1/s)
+    double plate_speed; ///< each plate's speed (m/s), +V on top and -V below
+    double time;        ///< sim time to steady (s)
+    long steps;
+    int particles;
+    int steady;
+} rheo_mpm_result;
+
+/// The full MPM solver as a rheometer: a 2D (plane strain) layer of material
+/// between two sticky plates (colliders) moving at +-V = +-rate H / 2, no
+/// gravity, slip walls at the ends. The layer starts with the linear velocity
+/// profile of simple shear (so only the stress has to build up, not the flow)
+/// and runs until the mean shear stress in its middle half is steady. The
+/// plates' no-slip surfaces are the layer's faces, so the nominal rate is
+/// 2V/H; the measured rate is reported too. Errors as rheo_steady, plus the
+/// scene's own (a guard stop is HEARTH_ERR_GUARD).
+hearth_status rheo_mpm_steady(const char *plugin, const double *p, double rate, const rheo_mpm_opts *o,
+                              rheo_mpm_result *r, hearth_error *err);
+
 /* ---- flow-curve files ---------------------------------------------------- */
 
 /// A flow curve read from CSV: n points, rate (1/s) and stress (Pa).

@@ -108,6 +108,17 @@ h._check = { keys = check_keys, number = check_number, choice = check_choice, ve
 
 -- ---- curves and materials -------------------------------------------------
 
+-- A mixed parameter table remembers its constituents in its metatable (so
+-- pairs() still sees only parameters): a scene whose blend mode is "linear"
+-- or "labels" rebuilds the material from them (see material_id).
+local mix_mt = { __name = "hearth.mix" }
+local blend_modes = { "nonlinear", "linear", "labels" }
+
+local function mix_info(t)
+  local mt = type(t) == "table" and getmetatable(t)
+  return type(mt) == "table" and mt.__name == mix_mt.__name and mt.mix or nil
+end
+
 local curve_mt = { __name = "hearth.curve" }
 local material_mt = { __name = "hearth.material" }
 
@@ -151,7 +162,7 @@ function h.material(plugin, params)
       if not ok then error(("%s (curve point %d, at %g degC)"):format(e, i, p[1]), 2) end
     end
   end
-  return setmetatable({ plugin = plugin, params = plain, curves = curves }, material_mt)
+  return setmetatable({ plugin = plugin, params = plain, curves = curves, mix = mix_info(params) }, material_mt)
 end
 
 --- Write a text file (a CSV, a note) atomically; relative paths go under the output folder.
@@ -214,8 +225,11 @@ h.library.sph = (require "hearth.sph_library")(h)
 
 --- h.mix{ {params_a, 0.5}, {params_b, 0.5}, plugin = "von_mises_sauce" }: one parameter set
 --- blended by the plugin's own blend rule (Nagasawa et al. eq. 28-31 for sauces).
+--- The scene's `blend` key decides how a body made of it is simulated.
 function h.mix(t)
   if type(t) ~= "table" or #t < 1 then error("h.mix: expected { {params, ratio}, ... }", 2) end
+  check_keys(t, setmetatable({ plugin = true }, { __index = function(_, k) return math.type(k) == "integer" end }),
+    "h.mix")
   local plugin = t.plugin or "von_mises_sauce"
   local mode = t.blend or knob_sets().blend or "nonlinear"
   check_choice(mode, "h.mix: blend", { "nonlinear", "linear" })
@@ -237,6 +251,19 @@ function h.mix(t)
     sets[i], weights[i] = c[1], c[2]
   end
   local ok, r = pcall(core.blend, plugin, sets, weights)
+  if not ok then error(r, 2) end
+  return setmetatable(r, { __name = mix_mt.__name, mix = { plugin = plugin, sets = sets, weights = weights } })
+end
+
+
+
+--- h.blend(mix, mode): the parameters a scene with blend = mode simulates a mixture with:
+--- "nonlinear" (the model) or "linear" (the weighted mean of every parameter).
+function h.blend(m, mode)
+  local mix = mix_info(m)
+  if not mix then error("h.blend: expected a table made by h.mix{...}", 2) end
+  check_choice(mode or "nonlinear", "h.blend: mode", { "nonlinear", "linear" })
+  local ok, r = pcall(core.blend, mix.plugin, mix.sets, mix.weights, mode or "nonlinear")
   if not ok then error(r, 2) end
   return r
 end
@@ -297,7 +324,7 @@ end
 local S = core.scene_methods
 local scene_keys = { dim = true, dx = true, box = true, solver = true, gravity = true, cfl = true, dt_max = true,
   wall = true, friction = true, guard = true, max_rollbacks = true, seed = true, name = true, oven = true, heat = true,
-  water_momentum = true,
+  water_momentum = true, blend = true,
   sph = true }
 -- h.scene{solver = "sph", sph = {...}}: numbers (ranges are checked by the core) and flags (booleans)
 local sph_number_keys = { h_factor = true, gamma = true, av_beta = true, surface_tension = true,
@@ -388,6 +415,10 @@ function h.scene(o)
   if not ok then error(s, 2) end
   local st = s:_state()
   st.events, st.mats, st.name, st.frame, st.dim = {}, {}, o.name, 0, dim
+  -- how bodies made of h.mix{...} materials are simulated (Nagasawa et al. Figs. 1, 9, 10):
+  -- "nonlinear" the blend model, "linear" linearly blended parameters, "labels" random binary labels
+  st.blend = blend_modes[check_choice(o.blend or "nonlinear", "h.scene: blend", blend_modes) + 1]
+  st.seed = def.seed
   h._last_scene = s
   return s
 end
@@ -414,19 +445,49 @@ local function host_yield()
   if host_yields and coroutine.isyieldable() then coroutine.yield("step") end
 end
 
-local function material_id(s, m)
-  if getmetatable(m) ~= material_mt then error("material: expected h.material(...)", 3) end
-  local st = s:_state()
-  local id = st.mats[m]
-  if id then return id end
-  id = s:_material(m.plugin, m.params)
+local function register(s, m, params)
+  local id = s:_material(m.plugin, params)
   for k, c in pairs(m.curves) do
     local T, V = {}, {}
     for i, p in ipairs(c) do T[i], V[i] = p[1], p[2] end
     s:_curve(id, k, T, V, c.irreversible)
   end
-  st.mats[m] = id
   return id
+end
+
+-- The material id of m in scene s; for a mixture under blend = "labels", a
+-- list of one id per constituent and the list of ratios.
+local function material_id(s, m)
+  if getmetatable(m) ~= material_mt then error("material: expected h.material(...)", 3) end
+  local st = s:_state()
+  local id = st.mats[m]
+  if id then return id, st.mats[id] end
+  local mix = m.mix
+  if not mix or st.blend == "nonlinear" then
+    id = register(s, m, m.params)
+    st.mats[m] = id
+    return id
+  end
+  -- parameters the scene changed after mixing (say the moduli or a density) win over the blend
+  local blended = core.blend(mix.plugin, mix.sets, mix.weights)
+  local function with_changes(p)
+    for k, v in pairs(m.params) do
+      if blended[k] ~= v then p[k] = v end
+    end
+    return p
+  end
+  if st.blend == "linear" then
+    id = register(s, m, with_changes(core.blend(mix.plugin, mix.sets, mix.weights, "linear")))
+  else -- labels: one material per constituent
+    local ids, ratios = {}, {}
+    for i, set in ipairs(mix.sets) do
+      ids[i], ratios[i] = register(s, m, with_changes(core.blend(mix.plugin, { set }, { 1 }))), mix.weights[i]
+    end
+    id = ids
+    st.mats[ids] = ratios
+  end
+  st.mats[m] = id
+  return id, st.mats[id]
 end
 
 --- s:add{shape = ..., material = ..., ppc = 4, velocity = {0,0}, jitter = 0.5, temperature = 20, saturation = 0.5} -> body id
@@ -436,7 +497,21 @@ function S:add(o)
     name = true, fixed = true, saturation = true }, "s:add")
   if not is_shape(o.shape) then error("s:add: shape = h.box(...), h.disc(...), ... is required", 2) end
   if o.material == nil then error("s:add: material = h.material(...) is required", 2) end
-  local ok, id = pcall(material_id, self, o.material)
+  local mat = o.material
+  local mix = mix_info(mat)
+  if mix then -- a bare h.mix{...} table: the mixture's plugin with those parameters, one material per table
+    local st = self:_state()
+    st.mix_materials = st.mix_materials or setmetatable({}, { __mode = "k" })
+    local mm = st.mix_materials[mat]
+    if not mm then
+      local okm
+      okm, mm = pcall(h.material, mix.plugin, mat)
+      if not okm then error(mm, 2) end
+      st.mix_materials[mat] = mm
+    end
+    mat = mm
+  end
+  local ok, id, ratios = pcall(material_id, self, mat)
   if not ok then error(id, 2) end
   local kppc = knob_sets().ppc
   local ppc = check_number(kppc and knob_number("ppc", kppc) or o.ppc or 4, "s:add: ppc", 1, 1000, "particles per cell")
@@ -444,8 +519,16 @@ function S:add(o)
   local vel = check_vec(o.velocity or { 0, 0, 0 }, "s:add: velocity")
   if o.temperature ~= nil then check_number(o.temperature, "s:add: temperature", -273.15, 5000, "degC") end
   if o.saturation ~= nil then check_number(o.saturation, "s:add: saturation", 0, 1) end
-  local ok2, body = pcall(self._add, self, o.shape, id, math.floor(ppc), jitter, vel, o.temperature, o.fixed, o.saturation)
+  local ok2, body = pcall(self._add, self, o.shape, type(id) == "table" and id[1] or id, math.floor(ppc), jitter, vel,
+    o.temperature, o.fixed, o.saturation)
   if not ok2 then error(body, 2) end
+  if type(id) == "table" then -- blend = "labels": each particle one constituent, drawn with its ratio
+    local st = self:_state()
+    local ok3, counts = pcall(self._labels, self, body, id, ratios, st.seed * 7919 + body)
+    if not ok3 then error(counts, 2) end
+    st.label_counts = st.label_counts or {}
+    st.label_counts[body] = counts
+  end
   return body
 end
 

@@ -35,4 +35,41 @@ function R.height(s, x, y0, y1, n)
   return top and (top - y0) or 0
 end
 
+--- A nozzle (Nagasawa et al. 2019, Fig. 8) in a 2D scene: a slot of `width`
+--- centred at x whose exit is at height y, extruding `material` downwards at
+--- `speed` from time `from` to `to`. Every spacing / speed seconds one row of
+--- particles (spacing = dx / sqrt(ppc)) leaves the slot; rows sit on the
+--- seeding lattice, so the stream is evenly filled. Returns the number of rows.
+--- opts: x, y, width, speed, material, dx (the scene's), from (0), to, ppc (4).
+function R.nozzle(s, o)
+  for _, k in ipairs { "x", "y", "width", "speed", "dx", "to" } do
+    if type(o[k]) ~= "number" then error(("recipes.nozzle: %s (a number) is required"):format(k), 2) end
+  end
+  if o.material == nil then error("recipes.nozzle: material is required", 2) end
+  if not (o.speed > 0 and o.width > 0 and o.dx > 0) then error("recipes.nozzle: speed, width and dx must be > 0", 2) end
+  local ppc = o.ppc or 4
+  local hp = o.dx / math.floor(math.sqrt(ppc) + 0.5)
+  local y = math.floor(o.y / hp + 0.5) * hp
+  local period, from = hp / o.speed, o.from or 0
+  local rows = math.floor((o.to - from) / period)
+  local shape = core.box({ o.x - o.width / 2, y }, { o.x + o.width / 2, y + hp })
+  local function emit(sc)
+    sc:add { shape = shape, material = o.material, ppc = ppc, jitter = 0, velocity = { 0, -o.speed } }
+  end
+  for k = 0, rows - 1 do s:at(from + k * period, emit) end
+  return rows
+end
+
+--- How far material reaches along a line: samples the density from `a`
+--- along the unit direction `dir` for `len` metres every `step` metres and
+--- returns the distance of the last sample inside the material (0 if none).
+function R.reach(s, a, dir, len, step)
+  local n = math.floor(len / step) + 1
+  local b = { a[1] + len * dir[1], a[2] + len * dir[2], (a[3] or 0) + len * (dir[3] or 0) }
+  local d = s:line("density", a, b, n)
+  local f = 0
+  for j, v in ipairs(d) do if v == v then f = (j - 1) * len / (n - 1) end end
+  return f
+end
+
 return R

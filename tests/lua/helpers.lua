@@ -18,4 +18,16 @@ assert(tray == 0, "tray collider id")
 local height = h.recipes.height(s, 0.3, 0.45, 0.8)
 print(("ring height above the tray: %.3f m"):format(height))
 assert(height > 0.2 and height < 0.26, "height recipe")
+
+-- a nozzle: rows of particles leave the slot at the set rate, and reach finds the stream
+local sn = h.scene { dim = 2, dx = 0.01, box = { { 0, 0 }, { 0.3, 0.3 } }, gravity = { 0, 0 } }
+local rows = h.recipes.nozzle(sn, { x = 0.15, y = 0.2, width = 0.04, speed = 0.5, dx = 0.01, to = 0.1,
+  material = h.material("newtonian", { viscosity = 1 }) })
+assert(rows == 10, "rows in 0.1 s at 0.5 m/s and 5 mm spacing: " .. rows)
+sn:run { until_t = 0.1 }
+assert(sn:stats().bodies == 10 and sn:stats().particles == 80, ("nozzle bodies %d, particles %d"):format(
+  sn:stats().bodies, sn:stats().particles))
+local reach = h.recipes.reach(sn, { 0.15, 0.21 }, { 0, -1 }, 0.2, 0.0025)
+print(("nozzle stream reaches %.3f m below the exit"):format(reach))
+assert(reach > 0.035 and reach < 0.07, "the stream is 0.05 m long after 0.1 s at 0.5 m/s")
 print("helpers ok")

@@ -310,6 +310,14 @@ int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_er
 int hearth_scene_body_count(const hearth_scene *s);
 /// Number of particles a body still has (cutting removes some).
 int hearth_scene_body_particles(const hearth_scene *s, int body);
+/// Random binary labels (Nagasawa et al. 2019, Fig. 1c): give every particle of
+/// a body one of k materials (all from the same plugin), drawn independently
+/// with probability ratio[i] / sum(ratio). The draw hashes `seed` with each
+/// particle's stable id, so it is deterministic and independent of particle
+/// order. Mass (density x volume) and plugin state follow the new material.
+/// counts (may be NULL) gets the number of particles given each material.
+hearth_status hearth_scene_body_labels(hearth_scene *s, int body, int k, const int *materials, const double *ratio,
+                                       uint64_t seed, int *counts, hearth_error *err);
 /// Set the velocity of every particle of a body (a push). Returns status.
 hearth_status hearth_scene_body_set_velocity(hearth_scene *s, int body, const double v[3], hearth_error *err);
 /// Remove every particle inside a shape (cutting). Returns the number removed, or -1.
