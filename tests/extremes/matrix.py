@@ -32,6 +32,15 @@ KNOWN = {
     ("newtonian", "cfl", "1"): "at the CFL limit a falling fluid block stops late: F inverted on the floor (step ~136); cfl 0.5 completes",
     ("newtonian", "impact speed", "20 m/s"):
         "a 20 m/s impact is supersonic for the default fluid (sound speed sqrt(K/rho) = 10 m/s): compression inverts F late (step ~113)",
+    ("cam_clay_dough", "temperature", "100 degC"):
+        "the expansion stress (c lambda = 10 Pa/K over 80 K) accelerates the soft default dough faster than the step "
+        "chosen from its last speed and elastic wave speed; the guard catches the CFL violation at step ~18",
+    ("cam_clay_dough", "porosity", "0.99"):
+        "n^p_0 = 0.99 leaves eq. 12 almost no strength (its porosity coefficient grows without bound as n^p -> 1): "
+        "the dough collapses on the floor and F inverts at step ~123",
+    ("maxwell_sph", "bulk", "0.001"):
+        "a bulk modulus of 1e-3 Pa offers no resistance to compression: the dropped block flattens until F inverts "
+        "(step ~29), which is the physics, named correctly but after more than 10 steps",
     ("newtonian", "viscosity", "1e+06"):
         "the time step has no viscous limit (dt < rho dx^2 / (2 eta)); the guard names the symptom, runaway kinetic energy",
 }
