@@ -12,6 +12,9 @@
 /* The scene `hearth` opens with no scene file: the one place to change it.
  * Today the built-in demo (a jelly disc and syrup falling into a cup); the
  * cookie bake takes its place when its material lands. */
+/* The scene `hearth` opens by default: a cookie baking (assets/cookie_bake.lua);
+ * without the assets folder, the demo built in C. */
+#define BUILTIN_SCENE_FILE "cookie_bake.lua"
 static hearth_scene *builtin_scene(const char **name, hearth_error *err) {
     *name = "built-in demo: jelly and syrup into a cup";
     return app_demo_scene(err);
@@ -51,6 +54,19 @@ int cmd_dashboard(int argc, char **argv) {
                         "  for a headless run:  hearth run SCENE.lua   (or hearth demo for the built-in scene)\n"
                         "  for a plain prompt:  hearth repl [SCENE.lua]\n");
         return 2;
+    }
+    /* no scene given: the cookie bake in the assets folder, when it is there */
+    int has_scene = 0;
+    for (int i = 1; i < n; i++) {
+        const size_t l = strlen(args[i]);
+        has_scene |= l > 4 && !strcmp(args[i] + l - 4, ".lua");
+    }
+    static char cookie[4096];
+    snprintf(cookie, sizeof cookie, "%s/" BUILTIN_SCENE_FILE, app_assets_dir());
+    if (!has_scene && n < 255 && access(cookie, R_OK) == 0) {
+        for (int i = n; i >= 1; i--) args[i + 1] = args[i];
+        args[1] = cookie;
+        n++;
     }
     run_args a;
     int rc = app_run_parse(&a, n, args, "dashboard");
