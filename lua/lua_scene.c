@@ -176,6 +176,60 @@ static int l_curve(lua_State *L) {
     return 0;
 }
 
+/* s:mixing_ratios() -> flat array of the dynamic mixture's particles' ratios, k per particle */
+static int l_mixing_ratios(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const int n = hearth_scene_particle_count(u->s);
+    int k = 0;
+    const double *r = hearth_scene_mixing_ratios(u->s, &k);
+    lua_newtable(L);
+    int j = 0;
+    for (int i = 0; r && i < n; i++) {
+        double sum = 0;
+        for (int c = 0; c < k; c++) sum += r[8 * i + c];
+        if (!(sum > 0)) continue; /* not a particle of the mixture */
+        for (int c = 0; c < k; c++) {
+            lua_pushnumber(L, r[8 * i + c]);
+            lua_seti(L, -2, ++j);
+        }
+    }
+    return 1;
+}
+
+/* s:_mixture(plugin, {params1, params2, ...}) -> material id of a dynamic mixture */
+static int l_mixture(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const char *plugin = luaL_checkstring(L, 2);
+    luaL_checktype(L, 3, LUA_TTABLE);
+    const int k = (int)luaL_len(L, 3);
+    if (k < 2 || k > 8) return luaL_error(L, "mixture: 2 to 8 constituents (got %d)", k);
+    const char *names[8][256];
+    double values[8][256];
+    int n[8] = {0};
+    const char *const *np[8];
+    const double *vp[8];
+    for (int c = 0; c < k; c++) {
+        lua_geti(L, 3, c + 1);
+        luaL_checktype(L, -1, LUA_TTABLE);
+        lua_pushnil(L);
+        while (lua_next(L, -2)) { /* the keys stay alive in the table while this function runs */
+            if (lua_type(L, -2) == LUA_TSTRING && lua_isnumber(L, -1) && n[c] < 256) {
+                names[c][n[c]] = lua_tostring(L, -2);
+                values[c][n[c]++] = lua_tonumber(L, -1);
+            }
+            lua_pop(L, 1);
+        }
+        np[c] = names[c];
+        vp[c] = values[c];
+        lua_pop(L, 1);
+    }
+    hearth_error err;
+    const int id = hearth_scene_add_mixture(u->s, plugin, k, np, vp, n, &err);
+    if (id < 0) return hl_raise(L, &err);
+    lua_pushinteger(L, id);
+    return 1;
+}
+
 /* s:_add(shape, mat, ppc, jitter, velocity, temperature|nil, fixed, saturation|nil) -> body id */
 static int l_add(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
@@ -188,6 +242,14 @@ static int l_add(lua_State *L) {
     b.temperature = lua_isnoneornil(L, 7) ? NAN : luaL_checknumber(L, 7);
     b.fixed = lua_toboolean(L, 8);
     b.saturation = lua_isnoneornil(L, 9) ? NAN : luaL_checknumber(L, 9);
+    if (lua_istable(L, 10)) { /* a dynamic mixture's initial ratios */
+        const int k = (int)luaL_len(L, 10);
+        for (int c = 0; c < k && c < 8; c++) {
+            lua_geti(L, 10, c + 1);
+            b.ratios[c] = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+    }
     hearth_error err;
     int id = hearth_scene_add_body(u->s, &b, &err);
     if (id < 0) return hl_raise(L, &err);
@@ -599,7 +661,7 @@ static int l_guard_tostring(lua_State *L) {
 
 void hl_open_scene(lua_State *L) {
     static const luaL_Reg methods[] = {
-        {"_state", l_state},     {"_material", l_material}, {"_curve", l_curve},       {"_add", l_add},       {"_labels", l_labels},
+        {"_state", l_state},     {"_material", l_material}, {"_curve", l_curve},       {"_add", l_add}, {"_mixture", l_mixture}, {"mixing_ratios", l_mixing_ratios},       {"_labels", l_labels},
         {"_collider", l_collider}, {"_advance", l_advance}, {"_step", l_step_raw},     {"push", l_push},
         {"cut", l_cut},          {"move", l_move},         {"collider_velocity", l_collider_velocity},
         {"set_dt", l_set_dt},    {"oven", l_oven},    {"probe", l_probe},       {"line", l_line},          {"_slice", l_slice},

@@ -8,6 +8,7 @@
 #include "params.h"
 #include "scene.h"
 #include "water.h"
+#include "mixing.h"
 
 hearth_body_def hearth_default_body_def(void) {
     return (hearth_body_def){.ppc = 4, .jitter = 0.5, .temperature = NAN, .saturation = NAN};
@@ -53,6 +54,11 @@ int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_er
         if (!isnan(def->temperature)) pcold(&s->ps, PC_TEMPERATURE)[i] = pcold(&s->ps, PC_TEMP_MAX)[i] = def->temperature;
     }
     if (!isnan(def->saturation)) water_init_particles(s, n0, s->ps.n, def->saturation);
+    if (def->material == s->mix_mat && mixing_set_ratios(s, n0, s->ps.n, def->ratios, err)) {
+        s->ps.n = n0; /* the body is not made */
+        s->nbodies--;
+        return -1;
+    }
     if (def->fixed) scene_refresh_wave_speed(s); /* a pinned body's waves do not limit dt */
     return id;
 }

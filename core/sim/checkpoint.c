@@ -117,6 +117,9 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
     if (s->def.solver != HEARTH_SOLVER_MPM) /* SPH (sph.c): its options and final densities are not in the format yet */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of SPH scenes (solver = \"sph\") are not supported yet",
                        path);
+    if (s->mix_mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
+        return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
+                       path);
     atomic_file af;
     hearth_status st = atomic_open(&af, path, err);
     if (st) return st;

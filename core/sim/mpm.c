@@ -25,6 +25,7 @@
 #include "thermal.h"
 #include "water.h"
 #include "boundary.h"
+#include "mixing.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -512,6 +513,7 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err) {
     hearth_status st = mpm_sort(s, err);
     if (st) return st;
+    if (mixing_active(s) && (st = mixing_update(s, err))) return st;
     mpm_p2g(s, dt, rep);
     const int heat = thermal_active(s), water = water_active(s);
     if ((heat || water) && (st = boundary_find(s, err))) return st;

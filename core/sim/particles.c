@@ -23,6 +23,8 @@ static const struct {
     [PC_WATER] = {"water", 1, 0},
     [PC_SAT0] = {"saturation0", 1, 0},
     [PC_QW] = {"water_flux", 3, 0},
+    [PC_MIX] = {"mix_ratios", 8, 0},
+    [PC_MIXD] = {"mix_ratios_dynamic", 8, 0},
 };
 
 const char *particles_col_name(int c) { return col_info[c].name; }

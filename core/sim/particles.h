@@ -32,6 +32,8 @@ typedef enum pcol {
     PC_WATER,                  /* water mass m_p^w (kg; kg/m in 2D), 1 */
     PC_SAT0,                   /* initial saturation s_0 (the zero of the water pressure, eq. 14), 1 */
     PC_QW,                     /* water flux relative to the solid q^w (kg/(m^2 s)), 3 */
+    PC_MIX,                    /* initial mixing ratios of a mixture's constituents (labels), MIX_MAX */
+    PC_MIXD,                   /* dynamic mixing ratios (Nagasawa et al. eq. 44), MIX_MAX */
     PC_COUNT
 } pcol;
 

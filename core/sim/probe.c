@@ -18,7 +18,7 @@
 
 typedef enum field_id {
     F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_STRESS_XY, F_TEMPERATURE, F_BOUNDARY,
-    F_GAS, F_POROSITY, F_GAS_PRESSURE, F_SATURATION, F_WATER_MASS, F_WATER_PRESSURE, F_BROWNING, F_COUNT
+    F_GAS, F_POROSITY, F_GAS_PRESSURE, F_SATURATION, F_WATER_MASS, F_WATER_PRESSURE, F_BROWNING, F_MIX_RATIO, F_COUNT
 } field_id;
 
 /* A field is live when its column is enabled (column -1: always live). */
@@ -33,6 +33,8 @@ static const struct {
     [F_GAS] = {"gas", "mol/m^3", 1, PC_GAS, "give a material a leavening rate (gas_rate > 0)"},
     [F_POROSITY] = {"porosity", "1", 1, PC_GAS, "give a material a leavening rate (gas_rate > 0)"},
     [F_GAS_PRESSURE] = {"gas_pressure", "Pa", 1, PC_GAS, "give a material a leavening rate (gas_rate > 0)"},
+    [F_MIX_RATIO] = {"mixing_ratio", "1", 1, PC_MIXD,
+                     "make a dynamic mixture (h.scene{mixing = \"dynamic\"} with h.mix bodies); this is its first constituent's ratio"},
     [F_SATURATION] = {"saturation", "1", 1, PC_WATER,
                       "give a body a saturation (s:add{..., saturation = 0.5}) or a material water_diffusivity, evaporation or water_stiffness"},
     [F_WATER_MASS] = {"water_mass", "kg/m^3", 1, PC_WATER,
@@ -140,6 +142,9 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_BOUNDARY: out[0] = (pcoli(ps, PC_FLAGS)[i] & PF_BOUNDARY) ? 1.0 : 0.0; break;
     case F_GAS: out[0] = pcold(ps, PC_GAS)[i]; break;
     case F_SATURATION: out[0] = water_saturation(s, i); break;
+    case F_MIX_RATIO: /* NaN on other materials' particles: they are not part of the mixture */
+        out[0] = pcoli(ps, PC_MAT)[i] == s->mix_mat ? pcold(ps, PC_MIXD)[8 * i] : NAN;
+        break;
     case F_WATER_MASS: /* as a density: water mass over the particle's current volume */
         out[0] = pcold(ps, PC_WATER)[i] / (pcold(ps, PC_VOL0)[i] * t3_det(F));
         break;

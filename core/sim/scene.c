@@ -11,6 +11,7 @@
 #include "sph.h"
 #include "thermal.h"
 #include "water.h"
+#include "mixing.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -118,6 +119,7 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
     }
     s->def = d;
     s->dt_scale = 1.0;
+    s->mix_mat = -1;
     s->rng = d.seed ? d.seed : 1;
     particles_init(&s->ps);
     particles_init(&s->snap);
@@ -157,6 +159,7 @@ void hearth_scene_destroy(hearth_scene *s) {
             mem_free(s->mats[i].curves[k].v, sizeof(double) * (size_t)s->mats[i].curves[k].n);
         }
         mem_free(s->mats[i].curves, sizeof(curve) * (size_t)s->mats[i].ncurves);
+        mem_free(s->mats[i].mix_params, sizeof(double) * (size_t)s->mats[i].mix_k * (size_t)s->mats[i].m->nparams);
     }
     mem_free(s->mats, sizeof(material_slot) * (size_t)s->capmat);
     for (int i = 0; i < s->ncol; i++) collider_free(&s->cols[i]);
@@ -173,6 +176,7 @@ void hearth_scene_destroy(hearth_scene *s) {
     mem_free(s->bnd_temp, sizeof(double) * (size_t)s->bnd_cap);
     mem_free(s->cg_partial, sizeof(double) * (size_t)s->cg_cap);
     mem_free(s->bnd_area, sizeof(double) * (size_t)s->bnd_area_cap);
+    mem_free(s->mix_nodes, sizeof(double) * s->mix_cap);
     mem_free(s->mark, (size_t)s->g.nblocks);
     sph_free(s->sph); /* SPH (sph.c) */
     grid_free(&s->g);
@@ -247,8 +251,9 @@ hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err) {
 
 const double *scene_params_for(const hearth_scene *s, int mat, int particle, double *scratch) {
     const material_slot *ms = &s->mats[mat];
-    if (ms->ncurves == 0) return ms->params;
-    memcpy(scratch, ms->params, sizeof(double) * (size_t)ms->m->nparams);
+    if (ms->mix_k) mixing_params(s, mat, particle, scratch); /* a mixture: the blend at the particle's ratios */
+    else if (ms->ncurves == 0) return ms->params;
+    else memcpy(scratch, ms->params, sizeof(double) * (size_t)ms->m->nparams);
     const double *T = pcold(&s->ps, PC_TEMPERATURE), *Tmax = pcold(&s->ps, PC_TEMP_MAX);
     for (int k = 0; k < ms->ncurves; k++) {
         const curve *c = &ms->curves[k];
@@ -411,6 +416,11 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
     }
     ps->n += n;
     if (ps->enabled & (1u << PC_WATER)) water_init_particles(s, ps->n - n, ps->n, NAN);
+    if (ps->enabled & (1u << PC_MIX)) { /* no ratios; a mixture's own particles start as its first constituent */
+        memset(pcold(ps, PC_MIX) + (size_t)MIX_MAX * (ps->n - n), 0, sizeof(double) * MIX_MAX * (size_t)n);
+        memset(pcold(ps, PC_MIXD) + (size_t)MIX_MAX * (ps->n - n), 0, sizeof(double) * MIX_MAX * (size_t)n);
+        if (material == s->mix_mat) mixing_set_ratios(s, ps->n - n, ps->n, NULL, NULL);
+    }
     return n;
 }
 

@@ -19,6 +19,8 @@ typedef struct material_slot {
     curve *curves;      /* parameters that follow temperature */
     int ncurves;
     double core[CP_COUNT]; /* field properties (params.h CP_*) */
+    int mix_k;             /* a mixture (mixing.c): number of constituents, 0 for a plain material */
+    double *mix_params;    /* mix_k parameter sets, schema order */
 } material_slot;
 
 /* Plugins may declare at most this many parameters (per-particle resolution
@@ -82,6 +84,9 @@ struct hearth_scene {
     grid g;
     material_slot *mats;
     int nmat, capmat;
+    int mix_mat;            /* the mixture material (mixing.c), -1 when none */
+    double *mix_nodes;      /* its node sums, (k + 1) per node */
+    size_t mix_cap;
     collider *cols;
     int ncol, capcol;
     hearth_body_force_fn body_force;

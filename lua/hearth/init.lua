@@ -324,7 +324,7 @@ end
 local S = core.scene_methods
 local scene_keys = { dim = true, dx = true, box = true, solver = true, gravity = true, cfl = true, dt_max = true,
   wall = true, friction = true, guard = true, max_rollbacks = true, seed = true, name = true, oven = true, heat = true,
-  water_momentum = true, blend = true,
+  water_momentum = true, blend = true, mixing = true,
   sph = true }
 -- h.scene{solver = "sph", sph = {...}}: numbers (ranges are checked by the core) and flags (booleans)
 local sph_number_keys = { h_factor = true, gamma = true, av_beta = true, surface_tension = true,
@@ -418,6 +418,11 @@ function h.scene(o)
   -- how bodies made of h.mix{...} materials are simulated (Nagasawa et al. Figs. 1, 9, 10):
   -- "nonlinear" the blend model, "linear" linearly blended parameters, "labels" random binary labels
   st.blend = blend_modes[check_choice(o.blend or "nonlinear", "h.scene: blend", blend_modes) + 1]
+  -- mixing = "dynamic": h.mix bodies share one mixture whose ratios follow the particles (Nagasawa et al. eq. 43-44)
+  st.mixing = ({ "fixed", "dynamic" })[check_choice(o.mixing or "fixed", "h.scene: mixing", { "fixed", "dynamic" }) + 1]
+  if st.mixing == "dynamic" and st.blend ~= "nonlinear" then
+    error(('h.scene: mixing = "dynamic" blends through the model; it needs blend = "nonlinear" (got "%s")'):format(st.blend), 2)
+  end
   st.seed = def.seed
   h._last_scene = s
   return s
@@ -463,6 +468,31 @@ local function material_id(s, m)
   local id = st.mats[m]
   if id then return id, st.mats[id] end
   local mix = m.mix
+  if mix and st.mixing == "dynamic" then
+    -- one mixture for the scene, its constituents those of the first h.mix; a body's
+    -- ratios are its own mix's weights, matched to those constituents by their parameters
+    local function same(a, b)
+      for k, v in pairs(a) do if b[k] ~= v then return false end end
+      for k, v in pairs(b) do if a[k] ~= v then return false end end
+      return true
+    end
+    if not st.dynamic then
+      st.dynamic = { plugin = mix.plugin, sets = mix.sets, id = s:_mixture(mix.plugin, mix.sets) }
+    end
+    local dm, ratios = st.dynamic, {}
+    if mix.plugin ~= dm.plugin then error("h.mix: a dynamic mixture is of one plugin (" .. dm.plugin .. ")", 3) end
+    for j = 1, #dm.sets do ratios[j] = 0 end
+    for i, set in ipairs(mix.sets) do
+      local found
+      for j, d in ipairs(dm.sets) do if same(set, d) then found = j break end end
+      if not found then
+        error(("h.mix: constituent %d is not in the scene's dynamic mixture; its first h.mix names every constituent "
+          .. "(give the others ratio 0)"):format(i), 3)
+      end
+      ratios[found] = ratios[found] + mix.weights[i]
+    end
+    return dm.id, nil, ratios
+  end
   if not mix or st.blend == "nonlinear" then
     id = register(s, m, m.params)
     st.mats[m] = id
@@ -511,7 +541,7 @@ function S:add(o)
     end
     mat = mm
   end
-  local ok, id, ratios = pcall(material_id, self, mat)
+  local ok, id, ratios, mix_ratios = pcall(material_id, self, mat)
   if not ok then error(id, 2) end
   local kppc = knob_sets().ppc
   local ppc = check_number(kppc and knob_number("ppc", kppc) or o.ppc or 4, "s:add: ppc", 1, 1000, "particles per cell")
@@ -520,7 +550,7 @@ function S:add(o)
   if o.temperature ~= nil then check_number(o.temperature, "s:add: temperature", -273.15, 5000, "degC") end
   if o.saturation ~= nil then check_number(o.saturation, "s:add: saturation", 0, 1) end
   local ok2, body = pcall(self._add, self, o.shape, type(id) == "table" and id[1] or id, math.floor(ppc), jitter, vel,
-    o.temperature, o.fixed, o.saturation)
+    o.temperature, o.fixed, o.saturation, mix_ratios)
   if not ok2 then error(body, 2) end
   if type(id) == "table" then -- blend = "labels": each particle one constituent, drawn with its ratio
     local st = self:_state()

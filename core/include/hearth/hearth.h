@@ -211,6 +211,18 @@ hearth_status hearth_scene_set_oven(hearth_scene *s, double temperature, double 
 int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *const *names,
                               const double *values, int n, hearth_error *err);
 int hearth_scene_material_count(const hearth_scene *s);
+/// A dynamic mixture (Nagasawa et al. 2019 §6, eq. 43-44): k (2..8) constituents of one
+/// plugin with a blend callback, constituent c given as names[c]/values[c]/n[c] like
+/// hearth_scene_add_material (the first one's core field properties are the mixture's).
+/// Bodies of it give their initial mixing ratios (hearth_body_def.ratios); every step
+/// each particle's dynamic ratios are the grid average of its neighbours' initial
+/// ratios, and its parameters the plugin's blend at those ratios. One mixture per
+/// scene. Returns the material id or -1.
+int hearth_scene_add_mixture(hearth_scene *s, const char *plugin, int k, const char *const *const *names,
+                             const double *const *values, const int *n, hearth_error *err);
+/// The dynamic mixing ratios, 8 per particle (the mixture's k in *k; zero for
+/// other materials' particles), or NULL when the scene holds no mixture.
+const double *hearth_scene_mixing_ratios(const hearth_scene *s, int *k);
 /// The schema of the field properties every material has (count in *n).
 const hearth_param *hearth_core_params(int *n);
 const hearth_material *hearth_scene_material_info(const hearth_scene *s, int mat);
@@ -301,6 +313,7 @@ typedef struct hearth_body_def {
     double temperature;        ///< initial temperature (degrees C); NaN = not set. Setting it makes the temperature field live.
     double saturation;         ///< initial water saturation (0..1); NaN = the material's. Setting it makes the water field live.
     int fixed;                 ///< pinned: the particles never move (for tests of the fields alone)
+    double ratios[8];          ///< a mixture's initial mixing ratios per constituent (normalised; need not sum to 1)
 } hearth_body_def;
 
 /// ppc 4, jitter 0.5, at rest, temperature and saturation unset.

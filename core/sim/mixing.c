@@ -1,0 +1,256 @@
+/* mixing.c: dynamic mixing ratios (Nagasawa et al. 2019 §6).
+ *
+ * A mixture material holds k full parameter sets of one plugin. Each of its
+ * particles keeps its initial mixing ratios alpha_p as a label (no
+ * dissolution, as in the paper) and, every step, takes dynamic ratios from
+ * its neighbours through the grid:
+ *
+ *   alpha_i = sum_p V_p w_ip alpha_p / sum_p V_p w_ip     (eq. 43)
+ *   alpha^_p = sum_i w_ip alpha_i                         (eq. 44)
+ *
+ * Its parameters are then the plugin's blend of the constituents at alpha^_p
+ * (scene_params_for -> mixing_params), so any plugin with a blend callback can
+ * mix. Only particles of the mixture take part: another material's particles
+ * carry no ratios. A uniform mixture keeps its ratios exactly (the weights
+ * are a partition of unity); pure bodies stirred together grade into each
+ * other over the kernel's width (1.5 dx) and then as far as the stirring
+ * carries particles. The nodes' sums live in an array of their own, indexed
+ * like the grid's blocks, so the grid's channels stay as they are. */
+#include "mixing.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "alloc.h"
+#include "error.h"
+#include "params.h"
+#include "scene.h"
+#include "tensor.h"
+
+int mixing_active(const hearth_scene *s) { return s->mix_mat >= 0; }
+
+void mixing_params(const hearth_scene *s, int mat, int i, double *out) {
+    const material_slot *ms = &s->mats[mat];
+    const int np = ms->m->nparams, k = ms->mix_k;
+    const double *a = pcold(&s->ps, PC_MIXD) + (size_t)MIX_MAX * i;
+    const double *pk[MIX_MAX];
+    double alpha[MIX_MAX], sum = 0;
+    for (int c = 0; c < k; c++) {
+        pk[c] = ms->mix_params + (size_t)c * np;
+        alpha[c] = a[c] > 0 ? a[c] : 0;
+        sum += alpha[c];
+    }
+    if (!(sum > 0)) { /* cannot happen for a mixture particle; keep the first constituent */
+        memcpy(out, pk[0], sizeof(double) * (size_t)np);
+        return;
+    }
+    for (int c = 0; c < k; c++) alpha[c] /= sum;
+    if (ms->m->blend(k, alpha, pk, out)) { /* a plugin that refuses: the dominant constituent */
+        int best = 0;
+        for (int c = 1; c < k; c++)
+            if (alpha[c] > alpha[best]) best = c;
+        memcpy(out, pk[best], sizeof(double) * (size_t)np);
+    }
+}
+
+static int tile_count(const grid *g) { return g->dim == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T; }
+
+/* Tile index t of block origin bc -> the node's storage slot and local index. */
+static int tile_slot(const grid *g, const int bc[3], int t, int *l) {
+    const int D = g->dim;
+    int a, b, c = 0;
+    if (D == 2) {
+        a = t / GRID_T;
+        b = t % GRID_T;
+    } else {
+        a = t / (GRID_T * GRID_T);
+        b = (t / GRID_T) % GRID_T;
+        c = t % GRID_T;
+    }
+    *l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
+    return g->slot[grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0))];
+}
+
+/* Weights of particle x in the tile of block origin bc. */
+static int weights(const grid *g, const int bc[3], const double *x, int *t, double *w) {
+    const int D = g->dim;
+    int base[3] = {0, 0, 0};
+    double ww[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
+    for (int d = 0; d < D; d++) {
+        const double X = (x[d] - g->lo[d]) * g->inv_dx;
+        const int b = (int)floor(X - 0.5);
+        bspline_weights(X - b, ww[d], dw);
+        base[d] = b - bc[d] * GRID_B;
+    }
+    int n = 0;
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+            for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                t[n] = D == 2 ? (base[0] + a) * GRID_T + base[1] + b
+                              : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
+                w[n++] = ww[0][a] * ww[1][b] * (D == 3 ? ww[2][c] : 1.0);
+            }
+    return n;
+}
+
+hearth_status mixing_update(hearth_scene *s, hearth_error *err) {
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const int NPB = g->nodes_per_block, TN = tile_count(g), k = s->mats[s->mix_mat].mix_k, W = k + 1;
+    const size_t need = (size_t)g->nactive * NPB * W;
+    if (need > s->mix_cap) {
+        double *a = mem_alloc(sizeof(double) * need * 2);
+        if (!a) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the mixing ratios' grid");
+        mem_free(s->mix_nodes, sizeof(double) * s->mix_cap);
+        s->mix_nodes = a;
+        s->mix_cap = need * 2;
+    }
+    memset(s->mix_nodes, 0, sizeof(double) * need);
+    const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0), *Fc = pcold(ps, PC_F), *A0 = pcold(ps, PC_MIX);
+    double *A = pcold(ps, PC_MIXD);
+    const int *mat = pcoli(ps, PC_MAT), mm = s->mix_mat;
+    const int par = ps->n >= SCENE_PARALLEL_MIN;
+    /* eq. 43, numerator and denominator, in colour phases (disjoint nodes, no atomics) */
+    for (int col = 0; col < 8; col++) {
+#pragma omp parallel if (par)
+        {
+            double tile[(MIX_MAX + 1) * GRID_T * GRID_T * GRID_T];
+            int t[27];
+            double w[27];
+#pragma omp for schedule(dynamic, 2)
+            for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) {
+                const pblock pb = s->pb[s->colour_pb[q]];
+                int bc[3], any = 0;
+                grid_block_coords(g, pb.block, bc);
+                memset(tile, 0, sizeof(double) * (size_t)W * TN);
+                for (int i = pb.start; i < pb.end; i++) {
+                    if (mat[i] != mm) continue;
+                    any = 1;
+                    const int n = weights(g, bc, X + 3 * i, t, w);
+                    const double Vp = V0[i] * t3_det(Fc + 9 * i);
+                    for (int j = 0; j < n; j++) {
+                        const double vw = Vp * w[j];
+                        tile[k * TN + t[j]] += vw;
+                        for (int c = 0; c < k; c++) tile[c * TN + t[j]] += vw * A0[MIX_MAX * i + c];
+                    }
+                }
+                if (!any) continue;
+                for (int tt = 0; tt < TN; tt++) {
+                    if (tile[k * TN + tt] == 0.0) continue;
+                    int l;
+                    double *node = s->mix_nodes + ((size_t)tile_slot(g, bc, tt, &l) * NPB + l) * W;
+                    for (int c = 0; c <= k; c++) node[c] += tile[c * TN + tt];
+                }
+            }
+        }
+    }
+    /* eq. 44: each mixture particle gathers its nodes' ratios */
+#pragma omp parallel for schedule(dynamic, 2) if (par)
+    for (int q = 0; q < s->npb; q++) {
+        const pblock pb = s->pb[q];
+        int bc[3], t[27];
+        double w[27];
+        grid_block_coords(g, pb.block, bc);
+        for (int i = pb.start; i < pb.end; i++) {
+            if (mat[i] != mm) continue;
+            const int n = weights(g, bc, X + 3 * i, t, w);
+            double a[MIX_MAX] = {0};
+            for (int j = 0; j < n; j++) {
+                int l;
+                const double *node = s->mix_nodes + ((size_t)tile_slot(g, bc, t[j], &l) * NPB + l) * W;
+                if (!(node[k] > 0)) continue;
+                for (int c = 0; c < k; c++) a[c] += w[j] * node[c] / node[k];
+            }
+            memcpy(A + (size_t)MIX_MAX * i, a, sizeof a);
+        }
+    }
+    return HEARTH_OK;
+}
+
+int hearth_scene_add_mixture(hearth_scene *s, const char *plugin, int k, const char *const *const *names,
+                             const double *const *values, const int *n, hearth_error *err) {
+    err_clear(err);
+    if (k < 2 || k > MIX_MAX) {
+        err_set(err, HEARTH_ERR_PARAM, "mixture: %d constituents; valid range [2, %d]", k, MIX_MAX);
+        return -1;
+    }
+    if (s->mix_mat >= 0) {
+        err_set(err, HEARTH_ERR_PARAM,
+                "mixture: the scene already holds one (material %d); put every constituent that will be stirred "
+                "together into that one",
+                s->mix_mat);
+        return -1;
+    }
+    /* the first constituent makes the slot (its core field properties are the mixture's) */
+    const int id = hearth_scene_add_material(s, plugin, names[0], values[0], n[0], err);
+    if (id < 0) return -1;
+    material_slot *ms = &s->mats[id];
+    const hearth_material *m = ms->m;
+    if (!m->blend) {
+        err_set(err, HEARTH_ERR_PARAM, "mixture: plugin '%s' has no blend callback; it cannot mix", m->name);
+        return -1;
+    }
+    const int np = m->nparams;
+    double *mp = mem_alloc(sizeof(double) * (size_t)k * (size_t)(np > 0 ? np : 1));
+    if (!mp) {
+        err_set(err, HEARTH_ERR_NOMEM, "out of memory for a mixture");
+        return -1;
+    }
+    memcpy(mp, ms->params, sizeof(double) * (size_t)np);
+    double core[CP_COUNT];
+    for (int c = 1; c < k; c++)
+        if (params_resolve(m, names[c], values[c], n[c], mp + (size_t)c * np, core, err)) {
+            char msg[sizeof err->msg];
+            snprintf(msg, sizeof msg, "%s", err->msg);
+            err_set(err, HEARTH_ERR_PARAM, "mixture constituent %d: %s", c + 1, msg);
+            mem_free(mp, sizeof(double) * (size_t)k * (size_t)(np > 0 ? np : 1));
+            return -1;
+        }
+    if (particles_enable(&s->ps, PC_MIX, err) || particles_enable(&s->ps, PC_MIXD, err)) {
+        mem_free(mp, sizeof(double) * (size_t)k * (size_t)(np > 0 ? np : 1));
+        return -1;
+    }
+    ms->mix_k = k;
+    ms->mix_params = mp;
+    if (m->state_size == 0) /* any blend's waves are bounded by the fastest constituent's */
+        for (int c = 1; c < k; c++) ms->wave_speed = fmax(ms->wave_speed, m->wave_speed(mp + (size_t)c * np, NULL));
+    s->mix_mat = id;
+    return id;
+}
+
+hearth_status mixing_set_ratios(hearth_scene *s, int from, int to, const double *ratios, hearth_error *err) {
+    const material_slot *ms = &s->mats[s->mix_mat];
+    double a[MIX_MAX] = {0}, sum = 0;
+    for (int c = 0; c < MIX_MAX; c++) {
+        const double r = ratios ? ratios[c] : c == 0;
+        if (c >= ms->mix_k ? r != 0 : !(r >= 0 && isfinite(r)))
+            return err_set(err, HEARTH_ERR_PARAM, "body: mixing ratio %d = %g; the mixture has %d constituents, each ratio >= 0",
+                           c + 1, r, ms->mix_k);
+        a[c] = r;
+        sum += r;
+    }
+    if (!(sum > 0))
+        return err_set(err, HEARTH_ERR_PARAM, "body: material %d is a mixture of %d constituents; give its mixing ratios "
+                                              "(they sum to zero)", s->mix_mat, ms->mix_k);
+    for (int c = 0; c < MIX_MAX; c++) a[c] /= sum;
+    particles *ps = &s->ps;
+    double scratch[SCENE_MAX_PARAMS];
+    for (int i = from; i < to; i++) {
+        memcpy(pcold(ps, PC_MIX) + (size_t)MIX_MAX * i, a, sizeof a);
+        memcpy(pcold(ps, PC_MIXD) + (size_t)MIX_MAX * i, a, sizeof a);
+        /* mass from the blend's density at the initial ratios; it does not change after */
+        const double *p = scene_params_for(s, s->mix_mat, i, scratch);
+        pcold(ps, PC_MASS)[i] = p[ms->density_index] * pcold(ps, PC_VOL0)[i];
+    }
+    return HEARTH_OK;
+}
+
+const double *hearth_scene_mixing_ratios(const hearth_scene *s, int *k) {
+    if (s->mix_mat < 0) {
+        if (k) *k = 0;
+        return NULL;
+    }
+    if (k) *k = s->mats[s->mix_mat].mix_k;
+    return pcold(&s->ps, PC_MIXD);
+}
