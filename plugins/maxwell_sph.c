@@ -188,6 +188,14 @@ static double wave_speed(const double *p, const double *state) {
     return sqrt((p[P_BULK] + 4.0 / 3.0 * 0.5 * p[P_MU_E]) / p[P_DENSITY]);
 }
 
+/* The parallel dashpot is explicit in the velocity gradient: the core keeps
+ * dt below rho dx^2 / (2 dim viscosity) (the Maxwell element itself is split
+ * exactly and needs no limit). */
+static double viscosity(const double *p, const double *state) {
+    (void)state;
+    return p[P_VISCOSITY];
+}
+
 static const char *describe_error(int code) {
     switch (code) {
     case E_INVERTED: return "inverted element (det F <= 0)";
@@ -214,6 +222,7 @@ static const hearth_material material = {
     .stress = stress,
     .wave_speed = wave_speed,
     .describe_error = describe_error,
+    .viscosity = viscosity,
 };
 
 HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void);

@@ -60,6 +60,13 @@ static const char *describe_error(int code) {
     return code == 1 ? "inverted element (det F <= 0)" : "unknown error";
 }
 
+/* The viscous stress is explicit in the velocity gradient: the core keeps
+ * dt below rho dx^2 / (2 dim eta). */
+static double viscosity(const double *p, const double *state) {
+    (void)state;
+    return p[P_VISCOSITY];
+}
+
 static const hearth_material material = {
     .abi_version = HEARTH_MATERIAL_ABI,
     .struct_size = sizeof(hearth_material),
@@ -72,6 +79,7 @@ static const hearth_material material = {
     .stress = stress,
     .wave_speed = wave_speed,
     .describe_error = describe_error,
+    .viscosity = viscosity,
 };
 
 HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void); /* for -Wmissing-prototypes */

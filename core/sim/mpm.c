@@ -384,7 +384,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
         lo[d] = g->lo[d] + dx;                       /* keep every particle's stencil on the grid */
         hi[d] = g->lo[d] + (g->nn[d] - 2) * dx;
     }
-    double ke = 0, vmax = -1, cmax = 0, pscratch[SCENE_MAX_PARAMS];
+    double ke = 0, vmax = -1, cmax = 0, numax = 0, pscratch[SCENE_MAX_PARAMS];
     int fastest = -1;
     long ood = 0;
     for (int i = pb.start; i < pb.end; i++) {
@@ -466,8 +466,15 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
                              ? ms->m->wave_speed(scene_params_for(s, mat[i], i, pscratch), state + (size_t)i * ps->state_stride)
                              : ms->wave_speed;
         if (c > cmax) cmax = c;
+        if (ms->m->viscosity) {
+            const double *pv = scene_params_for(s, mat[i], i, pscratch);
+            const double nu = ms->m->viscosity(pv, ms->m->state_size > 0 ? state + (size_t)i * ps->state_stride : NULL) /
+                              pv[ms->density_index];
+            if (nu > numax) numax = nu;
+        }
     }
     pp->ke = ke;
+    pp->numax = numax;
     pp->vmax = vmax;
     pp->fastest = fastest;
     pp->cmax = cmax;
@@ -505,6 +512,7 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
             rep->fastest = pp->fastest;
         }
         if (pp->cmax > rep->c_max) rep->c_max = pp->cmax;
+        if (pp->numax > rep->nu_max) rep->nu_max = pp->numax;
         rep->out_of_domain += pp->ood;
     }
     rep->max_speed = vmax > 0 ? sqrt(vmax) : 0.0;

@@ -405,6 +405,11 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         if (sp > s->max_speed) s->max_speed = sp;
         s->kinetic += 0.5 * rho * volume * sp * sp;
     }
+    if (ps->enabled & (1u << PC_MIX)) { /* no ratios; a mixture's own particles start as its first constituent */
+        memset(pcold(ps, PC_MIX) + (size_t)MIX_MAX * ps->n, 0, sizeof(double) * MIX_MAX * (size_t)n);
+        memset(pcold(ps, PC_MIXD) + (size_t)MIX_MAX * ps->n, 0, sizeof(double) * MIX_MAX * (size_t)n);
+        if (material == s->mix_mat) mixing_set_ratios(s, ps->n, ps->n + n, NULL, NULL);
+    }
     /* new particles only raise the largest wave speed (pinning, which lowers it, rescans) */
     double pscratch[SCENE_MAX_PARAMS];
     for (int j = ps->n; j < ps->n + n; j++) {
@@ -413,14 +418,15 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
                                                  pcold(ps, PC_STATE) + (size_t)j * ps->state_stride)
                              : ms->wave_speed;
         if (c > s->c_max) s->c_max = c;
+        if (ms->m->viscosity) {
+            const double *pp = scene_params_for(s, material, j, pscratch);
+            const double nu = ms->m->viscosity(pp, ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)j * ps->state_stride : NULL) /
+                              pp[ms->density_index];
+            if (nu > s->nu_max) s->nu_max = nu;
+        }
     }
     ps->n += n;
     if (ps->enabled & (1u << PC_WATER)) water_init_particles(s, ps->n - n, ps->n, NAN);
-    if (ps->enabled & (1u << PC_MIX)) { /* no ratios; a mixture's own particles start as its first constituent */
-        memset(pcold(ps, PC_MIX) + (size_t)MIX_MAX * (ps->n - n), 0, sizeof(double) * MIX_MAX * (size_t)n);
-        memset(pcold(ps, PC_MIXD) + (size_t)MIX_MAX * (ps->n - n), 0, sizeof(double) * MIX_MAX * (size_t)n);
-        if (material == s->mix_mat) mixing_set_ratios(s, ps->n - n, ps->n, NULL, NULL);
-    }
     return n;
 }
 
@@ -540,6 +546,9 @@ double scene_stable_dt(const hearth_scene *s) {
     const double heat = thermal_dt_limit(s), water = water_dt_limit(s);
     if (dt > heat) dt = heat;
     if (dt > water) dt = water;
+    /* explicit viscosity is diffusion of momentum: the same limit as explicit heat */
+    if (s->nu_max > 0 && dt > s->def.dx * s->def.dx / (2.0 * s->def.dim * s->nu_max))
+        dt = s->def.dx * s->def.dx / (2.0 * s->def.dim * s->nu_max);
     if (isinf(dt)) dt = s->def.cfl * s->def.dx; /* nothing moves or conducts: as if at 1 m/s */
     return dt * s->dt_scale;
 }
@@ -585,6 +594,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             for (int c = 0; c < s->ncol; c++) collider_advance(&s->cols[c], dt);
             s->max_speed = rep.max_speed;
             s->c_max = rep.c_max; /* moving particles only: a pinned body has no waves */
+            s->nu_max = rep.nu_max;
             s->kinetic = rep.kinetic;
             if (s->kinetic > s->kinetic_peak) s->kinetic_peak = s->kinetic;
             s->out_of_domain += rep.out_of_domain;

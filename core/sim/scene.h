@@ -55,13 +55,14 @@ typedef struct step_report {
     int fastest;
     double kinetic;
     double c_max;      /* largest wave speed met (stateful plugins; stateless come from the slot) */
+    double nu_max;     /* largest kinematic viscosity met (plugins with a viscosity callback) */
     long out_of_domain;
 } step_report;
 
 /* Per particle-block partial results, reduced in block order. */
 typedef struct pb_partial {
     int fail_i, fail_kind, fail_code, fastest;
-    double ke, vmax, cmax;
+    double ke, vmax, cmax, numax; /* numax: largest kinematic viscosity eta / rho (m^2/s) */
     long ood;
     double water_removed, water_dmax, water_emax; /* water.c */
 } pb_partial;
@@ -72,6 +73,7 @@ struct hearth_scene {
     long step;
     int rollbacks, consecutive_rollbacks;
     double max_speed, c_max, kinetic, cfl_last;
+    double nu_max;       /* largest kinematic viscosity a plugin applies explicitly (m^2/s) */
     double kinetic_peak; /* largest kinetic energy so far: runaway is judged against it */
     long out_of_domain;
     hearth_guard_state guard;

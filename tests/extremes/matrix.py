@@ -41,12 +41,10 @@ KNOWN = {
     ("maxwell_sph", "bulk", "0.001"):
         "a bulk modulus of 1e-3 Pa offers no resistance to compression: the dropped block flattens until F inverts "
         "(step ~29), which is the physics, named correctly but after more than 10 steps",
-    ("newtonian", "viscosity", "1e+06"):
-        "the time step has no viscous limit (dt < rho dx^2 / (2 eta)); the guard names the symptom, runaway kinetic energy",
 }
 
 # Of those, the ones whose diagnosis does not lead to the cause (expected failures).
-WRONG_CAUSE = {("newtonian", "viscosity", "1e+06")}
+WRONG_CAUSE = set()
 
 
 def plugins(hearth):

@@ -80,6 +80,10 @@ typedef struct hearth_material {
     const char *(*describe_error)(int code);
     /// Optional (may be NULL, meaning 1). Plastic volume ratio J^P from the state, for porosity (Ding et al. §5.4).
     double (*plastic_J)(const double *p, const double *state);
+    /// Optional (may be NULL; read only when struct_size covers it). The dynamic viscosity (Pa s)
+    /// the stress applies explicitly from the velocity gradient, for the step limit
+    /// dt <= rho dx^2 / (2 dim eta). Leave NULL when viscous flow is integrated implicitly.
+    double (*viscosity)(const double *p, const double *state);
 } hearth_material;
 
 /// The entry point a plugin defines.
