@@ -25,8 +25,9 @@ scenes="$root/scripts/scenes" trade="$root/scripts/trade"
 # The heat slab's exact centre temperature at Fo = 0.5 (see heat_slab.lua)
 slab_ref="analytic:120 - 100 * 0.7725263834238096^2"
 
-ladder() { # name, then hearth trade arguments
+ladder() { # name, then hearth trade arguments; LADDERS="a b" runs only those
     local name=$1; shift
+    if [ -n "${LADDERS:-}" ] && [[ " $LADDERS " != *" $name "* ]]; then return 0; fi
     echo "== ladder $name ==" >&2
     mkdir -p "$out/$name"
     "$hearth" trade "$@" --jobs "$jobs" --out "$out/$name/work" >"$out/$name/table.txt" || status=1
@@ -59,4 +60,12 @@ ladder cookie_dim "$scenes/cookie_cutter.lua" --metric height --knob dx=0.03125,
     --set ppc=8 --until 0.4
 # the dam break's front position (newtonian syrup): dx
 ladder dam_break_front "$scenes/dam_break.lua" --metric front --knob dx=0.04,0.02,0.01,0.005 --until 0.3
+# the 50:50 mayo/honey front down the slope after 1 s: dx x blend mode (Nagasawa et al. Fig. 1)
+ladder nozzle_front "$scenes/sauces/nozzle.lua" --metric front --knob dx=0.005,0.0025,0.00125 \
+    --knob blend=nonlinear,linear --set ratios=0.5 --set png=false
+# one cam_clay_dough cookie in a 150 degC oven: its height after 3 s, dx (Ding et al. Fig. 3)
+ladder cookie_dough_height "$scenes/baking/cookies.lua" --metric height --knob dx=0.01,0.005,0.0025 \
+    --set ovens=150 --set leaveners=0.0075
+# the same maxwell_sph dough under MPM and SPH: its height after 0.5 s, dx x solver
+ladder dough_solver "$trade/dough_solver.lua" --metric height --knob dx=0.008,0.004,0.002 --knob solver=mpm,sph
 exit $status

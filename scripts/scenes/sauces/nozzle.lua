@@ -69,6 +69,9 @@ local function front(L)
   return h.recipes.reach(s, { L.xn + off * sn, L.top + off * c }, { c, -sn }, (P.lane - 0.03 - P.dx) / c, P.dx / 2)
 end
 
+-- for hearth trade: the front of the middle lane (the 50:50 mix by default) at the end
+h.metric("front", function() return front(lanes[(#lanes + 1) // 2]) end)
+
 local head = { "t" }
 for _, L in ipairs(lanes) do head[#head + 1] = ("front_%g"):format(L.ratio) end
 local rows = { table.concat(head, ",") }
