@@ -63,6 +63,8 @@ static int l_scene_new(lua_State *L) {
     d.oven_beta = field_num(L, 1, "oven_beta");
     d.heat_implicit = (int)field_num(L, 1, "heat_implicit");
     d.water_momentum = (int)field_num(L, 1, "water_momentum");
+    d.transfer = (int)field_num(L, 1, "transfer");
+    d.heat_flip = field_num(L, 1, "heat_flip");
     /* ---- SPH: solver = 1 and the optional sph = {...} table (keys checked by init.lua) ---- */
     d.solver = (int)field_num(L, 1, "solver");
     lua_getfield(L, 1, "sph");

@@ -103,8 +103,10 @@ trade_scene_settings)
     "$hearth" run "$knobs" --quiet --metric mixed_yield --set blend=linear >out.txt 2>err.txt || fail "linear: $(cat err.txt)"
     grep -q "metric mixed_yield = 25$" out.txt || fail "linear blend of 10 and 40 is 25: $(cat out.txt)"
     [ "$nonlinear" != 25 ] || fail "the nonlinear blend should differ from the linear one"
-    "$hearth" run "$knobs" --quiet --set transfer=pic >out.txt 2>err.txt
-    [ $? -eq 1 ] && grep -q "transfer=pic: not built yet" err.txt || fail "transfer=pic: $(cat err.txt)"
+    "$hearth" run "$knobs" --quiet --metric particles --set transfer=pic --set heat_flip=0.5 >out.txt 2>err.txt ||
+        fail "transfer=pic: $(cat err.txt)"
+    "$hearth" run "$knobs" --quiet --set transfer=flip >out.txt 2>err.txt
+    [ $? -eq 1 ] && grep -q "transfer = flip; valid: apic, pic" err.txt || fail "transfer=flip: $(cat err.txt)"
     "$hearth" run "$knobs" --quiet --set dim=3 >out.txt 2>err.txt
     [ $? -eq 1 ] && grep -q "no z extent" err.txt || fail "dim=3 on a flat box: $(cat err.txt)"
     "$hearth" run "$knobs" --quiet --set heat=sideways >out.txt 2>err.txt

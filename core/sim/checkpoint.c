@@ -71,11 +71,14 @@ static void io_def(ck_io *io, hearth_scene_def *d, int writing) {
     f(io, &mr, sizeof mr);
     f(io, &d->energy_growth, sizeof d->energy_growth);
     f(io, &d->seed, sizeof d->seed);
-    int32_t hi = d->heat_implicit, wm = d->water_momentum;
+    int32_t hi = d->heat_implicit, wm = d->water_momentum, tr = d->transfer;
     f(io, &d->oven_temperature, sizeof d->oven_temperature);
     f(io, &d->oven_beta, sizeof d->oven_beta);
     f(io, &hi, sizeof hi);
     f(io, &wm, sizeof wm);
+    f(io, &tr, sizeof tr);
+    f(io, &d->heat_flip, sizeof d->heat_flip);
+    d->transfer = tr;
     d->heat_implicit = hi;
     d->water_momentum = wm;
     d->dim = dim;

@@ -140,7 +140,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k,
     const double *Wcol = ps->enabled & (1u << PC_WATER) ? pcold(ps, PC_WATER) : NULL;
     const double *S0col = Wcol ? pcold(ps, PC_SAT0) : NULL;
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
-    const int stride = ps->state_stride;
+    const int stride = ps->state_stride, apic = s->def.transfer == 0;
     double pscratch[SCENE_MAX_PARAMS];
 
     for (int i = pb.start; i < pb.end; i++) {
@@ -209,9 +209,9 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k,
             }
         }
         /* affine momentum with the stress folded in (MLS-MPM): Q = m C - dt V0 D^-1 tau */
-        const double m = M[i], k0 = dt * V0[i] * Dinv;
+        const double m = M[i], k0 = dt * V0[i] * Dinv, mC = apic ? m : 0.0; /* PIC drops the affine momentum */
         double Q[9];
-        for (int a = 0; a < 9; a++) Q[a] = m * C[a] - k0 * tau[a];
+        for (int a = 0; a < 9; a++) Q[a] = mC * C[a] - k0 * tau[a];
 
         int base[3] = {0, 0, 0};
         double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
@@ -372,7 +372,10 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
                 const int l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B
                                      : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
                 for (int d = 0; d < 3; d++) tile[d * TN + t] = node[(d + 1) * NPB + l];
-                if (HEAT) tile[3 * TN + t] = node[CH_T * NPB + l] - node[CH_T0 * NPB + l];
+                if (HEAT) {
+                    tile[3 * TN + t] = node[CH_T * NPB + l] - node[CH_T0 * NPB + l];
+                    tile[4 * TN + t] = node[CH_T * NPB + l];
+                }
             }
 
     double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *Cc = pcold(ps, PC_C);
@@ -398,7 +401,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
             base[d] = b - org[d];
             bspline_weights(fx[d], w[d], dw);
         }
-        double nv[3] = {0, 0, 0}, B[9] = {0}, dT = 0;
+        double nv[3] = {0, 0, 0}, B[9] = {0}, dT = 0, Tn = 0;
         for (int a = 0; a < 3; a++) {
             const double d0 = (a - fx[0]) * dx;
             for (int b = 0; b < 3; b++) {
@@ -406,7 +409,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
                 if (D == 2) {
                     const int t = (base[0] + a) * GRID_T + (base[1] + b);
                     const double u0 = tile[t], u1 = tile[TN + t];
-                    if (HEAT) dT += wab * tile[3 * TN + t];
+                    if (HEAT) dT += wab * tile[3 * TN + t], Tn += wab * tile[4 * TN + t];
                     nv[0] += wab * u0;
                     nv[1] += wab * u1;
                     B[0] += wab * u0 * d0; B[1] += wab * u0 * d1;
@@ -416,7 +419,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
                         const double d2 = (c - fx[2]) * dx, wt = wab * w[2][c];
                         const int t = ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + c);
                         const double u0 = tile[t], u1 = tile[TN + t], u2 = tile[2 * TN + t];
-                        if (HEAT) dT += wt * tile[3 * TN + t];
+                        if (HEAT) dT += wt * tile[3 * TN + t], Tn += wt * tile[4 * TN + t];
                         nv[0] += wt * u0; nv[1] += wt * u1; nv[2] += wt * u2;
                         B[0] += wt * u0 * d0; B[1] += wt * u0 * d1; B[2] += wt * u0 * d2;
                         B[3] += wt * u1 * d0; B[4] += wt * u1 * d1; B[5] += wt * u1 * d2;
@@ -427,8 +430,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
         }
         for (int a = 0; a < 9; a++) C[a] = Dinv * B[a];
         if (HEAT) { /* FLIP (eq. 21): the particle takes its nodes' temperature change */
-            const double T0 = Tcol[i];
-            Tcol[i] += dT;
+            const double T0 = Tcol[i], flip = s->def.heat_flip;
+            Tcol[i] = flip == 1.0 ? T0 + dT : flip * (T0 + dT) + (1.0 - flip) * Tn; /* FLIP-PIC blend */
             if (Tcol[i] > Tmax[i]) Tmax[i] = Tcol[i];
             if (Gcol) { /* CO2 over the step, temperature moving linearly from T0 to T1 (§5.4) */
                 const material_slot *gm = &s->mats[mat[i]];
@@ -492,7 +495,7 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
         s->g.dim == 2 ? (heat ? g2p_block_2d_heat : g2p_block_2d) : (heat ? g2p_block_3d_heat : g2p_block_3d);
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
-        double tile[4 * GRID_T * GRID_T * GRID_T];
+        double tile[5 * GRID_T * GRID_T * GRID_T];
 #pragma omp for schedule(dynamic, 2)
         for (int k = 0; k < s->npb; k++) fn(s, k, dt, tile);
     }

@@ -56,6 +56,7 @@ hearth_scene_def hearth_default_scene_def(void) {
         .oven_temperature = NAN,
         .oven_beta = 0,
         .heat_implicit = 0,
+        .heat_flip = 1,
         /* ---- SPH (sph.c) ---- */
         .solver = HEARTH_SOLVER_MPM,
         .sph = {.h_factor = 2.4, .leapfrog = 0, .gamma = 7, .av_beta = 0, .surface_tension = 0,
@@ -96,6 +97,10 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
                        d->oven_temperature);
     if (!(d->oven_beta >= 0) || !isfinite(d->oven_beta))
         return err_set(err, HEARTH_ERR_PARAM, "scene: oven beta = %g W/(m^2 K); valid range [0, inf)", d->oven_beta);
+    if (d->transfer != 0 && d->transfer != 1)
+        return err_set(err, HEARTH_ERR_PARAM, "scene: transfer = %d; valid: 0 (APIC), 1 (PIC)", d->transfer);
+    if (!(d->heat_flip >= 0 && d->heat_flip <= 1))
+        return err_set(err, HEARTH_ERR_PARAM, "scene: heat_flip = %g; valid range [0, 1] (1 FLIP, 0 PIC)", d->heat_flip);
     if (d->heat_implicit != 0 && d->heat_implicit != 1)
         return err_set(err, HEARTH_ERR_PARAM, "scene: heat = %d; valid: 0 (explicit), 1 (implicit)", d->heat_implicit);
     if (!(d->energy_growth > 1))

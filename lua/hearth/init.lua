@@ -86,9 +86,9 @@ local function is_shape(v) return type(v) == "userdata" and tostring(v):sub(1, 1
 
 --- Scene settings `--set` may override when the scene's h.params does not
 --- declare the name itself (so `hearth trade --knob dx=...` works on any scene):
---- the h.scene keys below, and ppc (every s:add), transfer and blend (h.mix).
+--- the h.scene keys below, and ppc (every s:add) and blend (h.mix).
 local scene_knobs = { dx = true, cfl = true, dt_max = true, dim = true, heat = true, solver = true, guard = true,
-  max_rollbacks = true, ppc = true, transfer = true, blend = true }
+  max_rollbacks = true, ppc = true, transfer = true, heat_flip = true, blend = true }
 h._scene_knobs = scene_knobs
 
 -- The --set values meant for scene settings (not declared by h.params), as strings.
@@ -324,7 +324,7 @@ end
 local S = core.scene_methods
 local scene_keys = { dim = true, dx = true, box = true, solver = true, gravity = true, cfl = true, dt_max = true,
   wall = true, friction = true, guard = true, max_rollbacks = true, seed = true, name = true, oven = true, heat = true,
-  water_momentum = true, blend = true, mixing = true,
+  water_momentum = true, blend = true, mixing = true, transfer = true, heat_flip = true,
   sph = true }
 -- h.scene{solver = "sph", sph = {...}}: numbers (ranges are checked by the core) and flags (booleans)
 local sph_number_keys = { h_factor = true, gamma = true, av_beta = true, surface_tension = true,
@@ -349,15 +349,11 @@ function h.scene(o)
   if next(ks) then -- --set dx=... and friends replace what the scene file says
     local oo = {}
     for k, v in pairs(o) do oo[k] = v end
-    for _, k in ipairs { "dx", "cfl", "dt_max", "dim", "max_rollbacks" } do
+    for _, k in ipairs { "dx", "cfl", "dt_max", "dim", "max_rollbacks", "heat_flip" } do
       if ks[k] then oo[k] = knob_number(k, ks[k]) end
     end
-    for _, k in ipairs { "heat", "solver", "guard" } do
+    for _, k in ipairs { "heat", "solver", "guard", "transfer" } do
       if ks[k] then oo[k] = ks[k] end
-    end
-    if ks.transfer and ks.transfer:lower() ~= "apic" then
-      error(("--set transfer=%s: not built yet; the MPM core transfers momentum with APIC and heat with FLIP only"):format(
-        ks.transfer), 2)
     end
     if oo.dim == 3 and oo.box and not ((oo.box[2][3] or 0) > (oo.box[1][3] or 0)) then
       error("--set dim=3: this scene's box has no z extent, so it cannot run in 3D", 2)
@@ -400,6 +396,9 @@ function h.scene(o)
     max_rollbacks = check_number(o.max_rollbacks or 8, "h.scene: max_rollbacks", 0, 60),
     seed = check_number(o.seed or 1, "h.scene: seed", 0, 2 ^ 52),
     heat_implicit = check_choice(o.heat or "explicit", "h.scene: heat", { "explicit", "implicit" }),
+    -- momentum transfer: APIC (Jiang et al. 2015) or PIC; temperature: FLIP (eq. 21) blended towards PIC
+    transfer = check_choice(o.transfer and tostring(o.transfer):lower() or "apic", "h.scene: transfer", { "apic", "pic" }),
+    heat_flip = check_number(o.heat_flip or 1, "h.scene: heat_flip", 0, 1, "(1 FLIP, 0 PIC)"),
     oven_beta = 0,
     water_momentum = o.water_momentum and 1 or 0,
     solver = solver, sph = sph,

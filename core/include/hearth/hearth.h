@@ -179,6 +179,8 @@ typedef struct hearth_scene_def {
     double oven_beta;        ///< oven air heat transfer coefficient beta (W/(m^2 K)), >= 0
     int heat_implicit;       ///< 0: forward Euler heat (dt limited by conduction); 1: backward Euler (CG solve)
     int water_momentum;      ///< 1: the water's motion relative to the solid carries momentum (Ding et al. eq. 26-27)
+    int transfer;            ///< momentum transfer: 0 APIC (default), 1 PIC (no affine part: dissipative)
+    double heat_flip;        ///< temperature to particles: 1 FLIP (default, eq. 21) .. 0 PIC (the nodes' value)
     int solver;              ///< hearth_solver; default MPM
     hearth_sph_def sph;      ///< SPH options (solver = HEARTH_SOLVER_SPH)
 } hearth_scene_def;
