@@ -23,7 +23,7 @@ run() {
 COARSE=(--set dx=0.0075 --set until_t=2.5 --set frames=1)
 
 case "$case_name" in
-baking_scene_cookies | baking_scene_bread | baking_scene_muffins | baking_scene_drying | baking_scene_pancake)
+baking_scene_cookies | baking_scene_bread | baking_scene_muffins | baking_scene_drying | baking_scene_pancake | baking_scene_marshmallow)
     sc=${case_name#baking_scene_}
     extra=()
     [ "$sc" = cookies ] && extra=(--set ovens=150 --set leaveners=0.015,0)
