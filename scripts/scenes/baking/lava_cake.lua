@@ -21,14 +21,16 @@
 -- lava_cake.csv: over time, the centre's temperature, the cake's height and
 -- how far the material reaches along the plate to the right of the centre.
 local h = require "hearth"
-local P = h.params { dim = 2, dx = 0.002, bake = 0.8, lift = 0.4, after = 0.6, frames = 18, kappa = 0.02, gas = 1, dt_max = 5e-5 }
+local P = h.params { dim = 2, dx = 0.002, bake = 0.8, lift = 0.4, after = 0.6, frames = 18, kappa = 0.02, gas = 1,
+  dt_max = 5e-5 }
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.004) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local oven = h.library.oven.lava_cake
 local W, H, zc = 0.2, 0.08, 0.05
-local PLATE, R, HC, WALL, XC = 0.01, 0.02, 0.03, 0.004, 0.08 -- m: plate top, cake radius and height, ring wall, centre x
+-- m: plate top, cake radius and height, ring wall, centre x
+local PLATE, R, HC, WALL, XC = 0.01, 0.02, 0.03, 0.004, 0.08
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, H, 0.1) }, gravity = v(0, -9.81, 0),
   oven = { temperature = oven.temperature, beta = oven.beta }, name = "lava_cake" }
 s:collider { shape = h.box(v(-1, -1, -1), v(W + 1, PLATE, 1)), mode = "slip", friction = 0.5 }
@@ -45,7 +47,7 @@ local cake = d3 and h.cylinder(v(XC, PLATE + HC / 2, zc), { 0, 1, 0 }, R - dx / 
 s:add { shape = cake, material = h.material("cam_clay_dough", d), temperature = oven.dough_temperature,
   ppc = d3 and 8 or 4 }
 
--- out of the oven: the ring rises off the cake at 5 cm/s, then the cut
+-- out of the oven: the ring rises to the top of the scene over P.lift seconds, then the cut
 s:at(P.bake, function(sc) sc:oven(nil); sc:collider_velocity(ring, v(0, (H - PLATE) / P.lift, 0), 0) end)
 s:at(P.bake + P.lift, function(sc)
   sc:collider_velocity(ring, v(0, 0, 0), 0)

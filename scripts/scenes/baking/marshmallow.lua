@@ -33,7 +33,8 @@ local mat = h.material("cam_clay_dough", h.library.dough.smore)
 local xs, names = { 0.045, 0.115 }, { "raw", "roasted" }
 local crackers = {}
 for i, x in ipairs(xs) do
-  local lower = { shape = h.box(v(x - CW, BASE - CT, zc - CW), v(x + CW, BASE, zc + CW)), mode = "slip", friction = 0.5 }
+  local lower = { shape = h.box(v(x - CW, BASE - CT, zc - CW), v(x + CW, BASE, zc + CW)), mode = "slip",
+    friction = 0.5 }
   if i == 2 then lower.temperature, lower.beta = oven.pan_temperature, oven.pan_beta end -- on the element
   local upper = { shape = h.box(v(x - CW, BASE + HM + GAP, zc - CW), v(x + CW, BASE + HM + GAP + CT, zc + CW)),
     mode = "slip", friction = 0.5 }

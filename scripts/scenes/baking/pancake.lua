@@ -48,7 +48,8 @@ s:collider { shape = h.box(v(-1, -1, -1), v(W + 1, PAN, 1)), mode = "separate", 
 -- the spatula: flush with the pan's top under where the batter lands
 -- (sticky: the batter wets it, so the pancake turns over with it and does
 -- not slide off first, as it did on a "separate" spatula at 60 degrees)
-local spatula = s:collider { shape = h.box(v(0.02, PAN - 0.004, zc - 0.05), v(XP, PAN, zc + 0.05)), mode = P.spatula, friction = 1, pivot = v(XP, PAN + HALF, zc), temperature = P.pan, beta = oven.pan_beta }
+local spatula = s:collider { shape = h.box(v(0.02, PAN - 0.004, zc - 0.05), v(XP, PAN, zc + 0.05)), mode = P.spatula,
+  friction = 1, pivot = v(XP, PAN + HALF, zc), temperature = P.pan, beta = oven.pan_beta }
 
 -- The spout: a row of batter one lattice spacing high leaves it every
 -- spacing / SPEED seconds, at the spout's position then (as h.recipes.nozzle,
@@ -122,5 +123,6 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temp
     end
   end }
 local bt, tt, th = faces()
-print(flip_t and ("flipped at t = %.3f s (bottom %.1f degC > %g degC); at the end: face on the pan %.1f degC, top %.1f degC, "
+print(flip_t and ("flipped at t = %.3f s (bottom %.1f degC > %g degC); at the end: face on the pan %.1f degC, "
+  .. "top %.1f degC, "
   .. "thickness %.4f m"):format(flip_t, flip_T, P.set_at, bt, tt, th) or "not flipped yet (the bottom has not set)")
