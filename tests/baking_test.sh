@@ -23,11 +23,14 @@ run() {
 COARSE=(--set dx=0.0075 --set until_t=2.5 --set frames=1)
 
 case "$case_name" in
-baking_scene_cookies | baking_scene_bread | baking_scene_muffins)
+baking_scene_cookies | baking_scene_bread | baking_scene_muffins | baking_scene_drying | baking_scene_pancake | baking_scene_marshmallow | baking_scene_lava_cake)
     sc=${case_name#baking_scene_}
     extra=()
     [ "$sc" = cookies ] && extra=(--set ovens=150 --set leaveners=0.015,0)
-    run "$sc" --until 0.1 --frames 2 "${extra[@]}" >/dev/null
+    until=0.1
+    [ "$sc" = pancake ] && until=0.3   # the first batter lands at ~0.15 s
+    [ "$sc" = lava_cake ] && until=0.05 # its steps are capped at 5e-5 s
+    run "$sc" --until $until --frames 2 "${extra[@]}" >/dev/null
     n=$(find "hearth-out/$sc" -name '*.png' | wc -l)
     [ "$n" -ge 3 ] || fail "$sc wrote $n PNG frames, expected at least 3"
     csv=$(find "hearth-out/$sc" -name "$sc.csv" | head -1)
@@ -123,6 +126,22 @@ gs = [float(r["gap_one_slit_m"]) for r in rows]
 i = min(range(len(hs)), key=lambda k: hs[k])
 print(f"lowest height {hs[i]:.5f} m at t = {rows[i]['t']} s with gap {gs[i]:.5f} m; end: height {hs[-1]:.5f} m, gap {gs[-1]:.5f} m")
 sys.exit(0 if i < len(hs) - 1 and hs[-1] > hs[i] and gs[-1] > gs[i] else 1)
+PY
+    ;;
+# §7.1, Figs. 9 and 13: a drying body loses volume as it loses water,
+# monotonically: over a coarse drying run, sampled every 0.1 s, the water left
+# falls at every sample and so does the volume (s:volume()).
+claim_drying_volume_monotone)
+    run drying --set dx=0.004 --set until_t=0.6 --set frames=6 >/dev/null
+    python3 - hearth-out/drying/drying.csv <<'PY' || fail "volume does not fall monotonically with the water (numbers above)"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+w = [float(r["water_fraction"]) for r in rows]
+v = [float(r["volume"]) for r in rows]
+print("water fraction:", w)
+print("volume:", v)
+ok = len(rows) >= 5 and all(w[k + 1] < w[k] and v[k + 1] < v[k] for k in range(len(rows) - 1))
+sys.exit(0 if ok else 1)
 PY
     ;;
 *) fail "unknown case $case_name" ;;

@@ -1,0 +1,49 @@
+-- Dehydrating an apple slice (Ding et al. 2019 §7.1, Figs. 9 and 13): wet
+-- cam_clay_dough flesh (high saturation) under a thin skin that holds little
+-- water, dried at one constant temperature on a rack. Water diffuses to the
+-- air boundary and evaporates (eq. 14's flux); the water pressure
+-- -c (s - s0) I pulls the flesh in, so the slice shrinks, and where the
+-- shrinking strain passes the yield surface it stays (the wrinkles).
+--   hearth run scripts/scenes/baking/drying.lua [--set dim=3] [--set until_t=3]
+-- Rates are a time lapse (as scripts/scenes/drying.lua): hours of drying in
+-- seconds, diffusivity and evaporation scaled up together.
+-- Writes, under hearth-out/drying/: sat_%04d.png (saturation) and drying.csv
+-- (time, water fraction left, volume by s:volume(): m^2 in 2D, m^3 in 3D).
+local h = require "hearth"
+local P = h.params { dim = 2, dx = 0.0025, until_t = 2, frames = 20, temperature = 60 }
+local d3 = P.dim == 3
+local dx = d3 and math.max(P.dx, 0.004) or P.dx
+local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
+
+local L, H, SKIN, RACK, zc = 0.06, 0.008, 0.002, 0.012, 0.03 -- m: slice length, flesh height, skin, rack height
+local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(0.1, 0.04, 0.06) },
+  oven = { temperature = P.temperature, beta = 20 }, name = "drying" }
+-- The flesh: an apple's density and heat, a stiff, strong dough (the cell
+-- walls) that yields once drying strains it well past the elastic range.
+local function apple(E, tau, D)
+  return h.material("cam_clay_dough", {
+    E = E, nu = 0.3, density = 1050, specific_heat = 3600, conductivity = 0.5,
+    tau_y = tau, eta = 0, gas_rate = 0, porosity = 0.1, expansion = 0, reference_temperature = P.temperature,
+    water_diffusivity = D, evaporation = 1.5 / 333, water_stiffness = 8e4 })
+end
+local flesh = apple(3e4, 2e3, 1e-5 / 333)
+local skin = apple(3e5, 2e4, 1e-6 / 333) -- tougher, and water crosses it slowly
+local x0, x1 = 0.02, 0.02 + L
+local zlo, zhi = zc - L / 2, zc + L / 2
+s:add { shape = h.box(v(x0, RACK, zlo), v(x1, RACK + H, zhi)), material = flesh, saturation = 0.85,
+  temperature = P.temperature, ppc = d3 and 8 or 4 }
+s:add { shape = h.box(v(x0, RACK + H, zlo), v(x1, RACK + H + SKIN, zhi)), material = skin, saturation = 0.3,
+  temperature = P.temperature, ppc = d3 and 8 or 4 }
+s:collider { shape = h.plane(v(0, RACK, 0), v(0, 1, 0)), mode = "sticky" }
+
+local w0 = s:stats().water_mass
+local rows = { "t_s,water_fraction,volume" }
+s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "saturation", path = "sat_%04d.png" },
+  on_frame = function(f)
+    local st = f.scene:stats()
+    rows[#rows + 1] = ("%.4f,%.6f,%.8g"):format(f.t, st.water_mass / w0, f.scene:volume())
+    h.write("drying.csv", table.concat(rows, "\n") .. "\n")
+  end }
+local st = s:stats()
+print(("dried to %.1f%% of its water; volume %.4g (%s)"):format(100 * st.water_mass / w0, s:volume(),
+  d3 and "m^3" or "m^2"))
