@@ -364,6 +364,13 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         /* a bubble expands while its temperature rises (since the last step) above bubble_T0 */
         const int heating = T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
         if (!isfinite(st->rhof[i])) st->rhof[i] = rho0;
+        /* A cooling bubble contracts: eq. 3.51's ideal gas in reverse (V
+         * proportional to absolute temperature), so its final density of
+         * eq. 3.52 rises back toward the rest density. Without this a baked
+         * bubble dough keeps its oven volume however cold it gets; the thesis
+         * raises rho_f by hand for the collapsing angel food cake (§4.4). */
+        if (bub > 0 && T && T[i] < st->Tprev[i])
+            st->rhof[i] = fmin(rho0, st->rhof[i] * (st->Tprev[i] + KELVIN) / (T[i] + KELVIN));
         st->prs[i] = st->B[i] * (pow(st->rho[i] / st->rhof[i], gam) - 1); /* eq. 3.17, 3.52 */
         if (bub > 0 && heating) { /* eq. 3.51 (Kelvin: ideal gas) */
             const double Vb = bub * (T[i] + KELVIN) / (o->bubble_T0 + KELVIN);
