@@ -378,6 +378,65 @@ TEST(sph_bubble_expansion) {
     hearth_scene_destroy(s);
 }
 
+/* A cooling bubble contracts (eq. 3.51's ideal gas in reverse): heat a
+ * bubble dough from 26 to 100 degC, then cool it back to 40 degC step by
+ * step: the volume falls with every cooling stage, by what the bubble
+ * particles' gas loses at constant pressure (within 30%); the dough keeps its
+ * final density (eq. 3.52), so the volume stays above the start. */
+TEST(sph_bubble_cooling_contracts) {
+    int nd = 0;
+    hearth_scene *s = bubble_dough(&nd);
+    CHECK(s != NULL);
+    if (!s) return;
+    hearth_error err;
+    const int n = s->ps.n;
+    double *T = pcold(&s->ps, PC_TEMPERATURE);
+    for (int i = 0; i < n; i++) T[i] = 26;
+    CHECK(hearth_scene_step(s, 50, &err) == HEARTH_OK);
+    const double V0 = sph_volume(s);
+    double Tnow = 26;
+    for (int k = 0; k < 600; k++) { /* 26 -> 100 degC */
+        Tnow = 26 + 74.0 * (k + 1) / 600;
+        T = pcold(&s->ps, PC_TEMPERATURE);
+        for (int i = 0; i < n; i++) T[i] = Tnow;
+        CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+    }
+    CHECK(hearth_scene_step(s, 200, &err) == HEARTH_OK);
+    const double Vhot = sph_volume(s);
+    double Vbub = 0; /* the bubble particles' share (material 1 is the bubble) */
+    {
+        const double *rho = sph_particle_values(s, "density"), *m = pcold(&s->ps, PC_MASS);
+        const int *mat = pcoli(&s->ps, PC_MAT);
+        for (int i = 0; rho && i < n; i++)
+            if (mat[i] == 1) Vbub += m[i] / rho[i];
+    }
+    double prev = Vhot;
+    int falls = 1;
+    for (int stage = 1; stage <= 4; stage++) {
+        for (int k = 0; k < 100; k++) { /* -15 K a stage */
+            Tnow -= 15.0 / 100;
+            T = pcold(&s->ps, PC_TEMPERATURE);
+            for (int i = 0; i < n; i++) T[i] = Tnow;
+            CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+        }
+        CHECK(hearth_scene_step(s, 100, &err) == HEARTH_OK);
+        const double V = sph_volume(s);
+        printf("cooled to %.1f degC: relative volume %.4f\n", Tnow, V / V0);
+        if (!(V < prev)) falls = 0;
+        prev = V;
+    }
+    /* the bubbles' gas at constant pressure: V (T + 273.15) / (100 + 273.15) */
+    const double want = Vbub * (1 - (Tnow + 273.15) / (100 + 273.15));
+    printf("hot (100 degC) %.4f (bubbles %.4f), cooled (%.0f degC) %.4f: lost %.4f, the bubbles' gas alone %.4f\n",
+           Vhot / V0, Vbub / V0, Tnow, prev / V0, (Vhot - prev) / V0, want / V0);
+    CHECK(Vhot / V0 > 1.02 && Vbub > 0);
+    CHECK(falls);
+    CHECK(fabs((Vhot - prev) - want) <= 0.3 * want); /* the dough keeps its own volume (eq. 3.52) */
+    CHECK(prev > V0);
+    (void)nd;
+    hearth_scene_destroy(s);
+}
+
 /* Viscosity 1e-3..1e5 Pa s and mu_e 1..1e5 Pa (maxwell_sph) in a falling
  * block: every run either stays finite or the guard stops it with a diagnosis. */
 TEST(sph_extremes) {
@@ -643,4 +702,4 @@ TEST(sph_surface_tension_rounds_drop) {
 TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_neighbours_agree), T(sph_hydrostatic),
           T(sph_poiseuille), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads),
           T(sph_integrators_free_fall), T(sph_collider_response), T(sph_heat_internal_conserves), T(sph_adaptive_h),
-          T(sph_surface_tension_rounds_drop))
+          T(sph_surface_tension_rounds_drop), T(sph_bubble_cooling_contracts))
