@@ -133,9 +133,17 @@ static int l_extrude(lua_State *L) {
     return 1;
 }
 
+/* h.union(a, b, c, ...) folds left to right: ((a op b) op c) ...; every
+ * argument counts (a third shape used to be dropped without a word). */
 static int combine(lua_State *L, hearth_shape_op op) {
+    const int n = lua_gettop(L);
     hearth_shape *a = hl_checkshape(L, 1), *b = hl_checkshape(L, 2);
+    for (int k = 3; k <= n; k++) hl_checkshape(L, k);
     hl_pushshape(L, hearth_shape_combine(op, a, b));
+    for (int k = 3; k <= n; k++) {
+        hearth_shape *acc = hl_checkshape(L, -1);
+        hl_pushshape(L, hearth_shape_combine(op, acc, hl_checkshape(L, k)));
+    }
     return 1;
 }
 static int l_union(lua_State *L) { return combine(L, HEARTH_UNION); }

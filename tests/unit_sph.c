@@ -378,6 +378,65 @@ TEST(sph_bubble_expansion) {
     hearth_scene_destroy(s);
 }
 
+/* A cooling bubble contracts (eq. 3.51's ideal gas in reverse): heat a
+ * bubble dough from 26 to 100 degC, then cool it back to 40 degC step by
+ * step: the volume falls with every cooling stage, by what the bubble
+ * particles' gas loses at constant pressure (within 30%); the dough keeps its
+ * final density (eq. 3.52), so the volume stays above the start. */
+TEST(sph_bubble_cooling_contracts) {
+    int nd = 0;
+    hearth_scene *s = bubble_dough(&nd);
+    CHECK(s != NULL);
+    if (!s) return;
+    hearth_error err;
+    const int n = s->ps.n;
+    double *T = pcold(&s->ps, PC_TEMPERATURE);
+    for (int i = 0; i < n; i++) T[i] = 26;
+    CHECK(hearth_scene_step(s, 50, &err) == HEARTH_OK);
+    const double V0 = sph_volume(s);
+    double Tnow = 26;
+    for (int k = 0; k < 600; k++) { /* 26 -> 100 degC */
+        Tnow = 26 + 74.0 * (k + 1) / 600;
+        T = pcold(&s->ps, PC_TEMPERATURE);
+        for (int i = 0; i < n; i++) T[i] = Tnow;
+        CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+    }
+    CHECK(hearth_scene_step(s, 200, &err) == HEARTH_OK);
+    const double Vhot = sph_volume(s);
+    double Vbub = 0; /* the bubble particles' share (material 1 is the bubble) */
+    {
+        const double *rho = sph_particle_values(s, "density"), *m = pcold(&s->ps, PC_MASS);
+        const int *mat = pcoli(&s->ps, PC_MAT);
+        for (int i = 0; rho && i < n; i++)
+            if (mat[i] == 1) Vbub += m[i] / rho[i];
+    }
+    double prev = Vhot;
+    int falls = 1;
+    for (int stage = 1; stage <= 4; stage++) {
+        for (int k = 0; k < 100; k++) { /* -15 K a stage */
+            Tnow -= 15.0 / 100;
+            T = pcold(&s->ps, PC_TEMPERATURE);
+            for (int i = 0; i < n; i++) T[i] = Tnow;
+            CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+        }
+        CHECK(hearth_scene_step(s, 100, &err) == HEARTH_OK);
+        const double V = sph_volume(s);
+        printf("cooled to %.1f degC: relative volume %.4f\n", Tnow, V / V0);
+        if (!(V < prev)) falls = 0;
+        prev = V;
+    }
+    /* the bubbles' gas at constant pressure: V (T + 273.15) / (100 + 273.15) */
+    const double want = Vbub * (1 - (Tnow + 273.15) / (100 + 273.15));
+    printf("hot (100 degC) %.4f (bubbles %.4f), cooled (%.0f degC) %.4f: lost %.4f, the bubbles' gas alone %.4f\n",
+           Vhot / V0, Vbub / V0, Tnow, prev / V0, (Vhot - prev) / V0, want / V0);
+    CHECK(Vhot / V0 > 1.02 && Vbub > 0);
+    CHECK(falls);
+    CHECK(fabs((Vhot - prev) - want) <= 0.3 * want); /* the dough keeps its own volume (eq. 3.52) */
+    CHECK(prev > V0);
+    (void)nd;
+    hearth_scene_destroy(s);
+}
+
 /* Viscosity 1e-3..1e5 Pa s and mu_e 1..1e5 Pa (maxwell_sph) in a falling
  * block: every run either stays finite or the guard stops it with a diagnosis. */
 TEST(sph_extremes) {
@@ -578,6 +637,69 @@ TEST(sph_adaptive_h) {
     hearth_scene_destroy(s);
 }
 
+/* A square drop, result of one surface-tension run: the farthest particle
+ * from the centroid over the square's half-diagonal, and the polar second
+ * moment of area over the square's (a^2/6 per unit area). */
+static int square_drop(double sigma, double *rmax_rel, double *J_rel) {
+    const double dx = 0.003, a = 0.06, lo[3] = {0, 0, 0}, hi[3] = {0.2, 0.2, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[0] = d.gravity[1] = d.gravity[2] = 0;
+    d.sph.surface_tension = sigma;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    if (!s) return -1;
+    int m = newtonian(s, 1000, 1e4, 0.5);
+    if (m < 0 || box_body(s, m, 0.1 - a / 2, 0.1 - a / 2, 0.1 + a / 2, 0.1 + a / 2, 0, NAN) < 0) {
+        hearth_scene_destroy(s);
+        return -1;
+    }
+    hearth_error err;
+    if (hearth_scene_advance(s, 1.2, &err)) {
+        fprintf(stderr, "%s\n", err.msg);
+        hearth_scene_destroy(s);
+        return -1;
+    }
+    const int n = hearth_scene_particle_count(s);
+    const double *x = hearth_scene_positions(s);
+    double cx = 0, cy = 0;
+    for (int i = 0; i < n; i++) cx += x[3 * i] / n, cy += x[3 * i + 1] / n;
+    double rmax = 0, J = 0;
+    for (int i = 0; i < n; i++) {
+        const double r2 = (x[3 * i] - cx) * (x[3 * i] - cx) + (x[3 * i + 1] - cy) * (x[3 * i + 1] - cy);
+        J += r2 / n;
+        if (r2 > rmax) rmax = r2;
+    }
+    /* the lattice's own: particles at cell centres, half a spacing in from the edges */
+    const double ai = a - dx;
+    *rmax_rel = sqrt(rmax) / (ai / sqrt(2.0));
+    *J_rel = J / (a * a / 6);
+    hearth_scene_destroy(s);
+    return 0;
+}
+
+/* Surface tension (colour field, eq. 3.28-3.30): a square drop without
+ * gravity rounds up. Its corners come in toward the circle of the same area
+ * (radius a / sqrt(pi), 0.80 of the half-diagonal) and its second moment of
+ * area falls toward the circle's (6 / (2 pi) = 0.955 of the square's). The
+ * same drop without surface tension keeps its corners. 0.06 m of water-like
+ * fluid (1000 kg/m^3, 0.5 Pa s, c = 3.2 m/s), 400 particles, 1.2 s.
+ * sigma is small on purpose: from about 0.02 N/m on, the corner particles,
+ * pulled by eq. 3.30 alone (the force acts on surface particles only), shoot
+ * past the circle and the drop does not settle (0.05 N/m: farthest particle
+ * 0.90-0.95 and wandering; 2 N/m: the drop flies apart). */
+TEST(sph_surface_tension_rounds_drop) {
+    double r0 = 0, J0 = 0, r1 = 0, J1 = 0;
+    CHECK(square_drop(0, &r0, &J0) == 0);
+    CHECK(square_drop(0.005, &r1, &J1) == 0);
+    printf("square drop after 1.2 s: without tension farthest particle %.3f of the half-diagonal, second moment %.4f "
+           "of the square's; with sigma = 0.005 N/m %.3f and %.4f (circle: 0.798 and 0.955)\n",
+           r0, J0, r1, J1);
+    CHECK(r0 > 0.97 && J0 > 0.97);
+    CHECK(r1 < 0.90);      /* corners pulled at least half-way toward the circle */
+    CHECK(r1 > 0.70);      /* not collapsed */
+    CHECK(J1 < J0 - 0.02); /* the whole drop rounder, not just its corner particles */
+}
+
 TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_neighbours_agree), T(sph_hydrostatic),
           T(sph_poiseuille), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads),
-          T(sph_integrators_free_fall), T(sph_collider_response), T(sph_heat_internal_conserves), T(sph_adaptive_h))
+          T(sph_integrators_free_fall), T(sph_collider_response), T(sph_heat_internal_conserves), T(sph_adaptive_h),
+          T(sph_surface_tension_rounds_drop), T(sph_bubble_cooling_contracts))

@@ -157,8 +157,9 @@ static int finite_n(const double *a, int n) {
 /* Laplacian of the cubic spline: W'' + (d - 1) W' / r (for the colour field). */
 static double lap_w(int dim, double r, double h) {
     const double q = 2.0 * r / h;
-    if (q >= 2.0 || r <= 0) return 0.0;
+    if (q >= 2.0) return 0.0;
     const double sg = sph_sigma(dim, h), k = 2.0 / h;
+    if (r <= 0) return -3.0 * dim * sg * k * k; /* the limit r -> 0: W''(0) = W'(r)/r = -3 sg k^2 */
     const double f1 = q < 1.0 ? -3.0 * q + 2.25 * q * q : -0.75 * (2.0 - q) * (2.0 - q);
     const double f2 = q < 1.0 ? -3.0 + 4.5 * q : 1.5 * (2.0 - q); /* eq. 3.12 (whose printed 1.5 (2 - 1) is (2 - q)) */
     return sg * (f2 * k * k + (dim - 1) * f1 * k / r);
@@ -330,7 +331,10 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     /* velocity gradient (3.27), colour gradient (3.29) and Laplacian; surface particles */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = 0;
+        /* eq. 3.28 sums over every j including i itself: without the self
+         * term the Laplacian is positive everywhere and eq. 3.30 pushes the
+         * surface outward (a square drop blew apart) */
+        double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = m[i] / st->rho[i] * lap_w(dim, 0, st->h[i]);
         for (int k = off[i]; k < off[i + 1]; k++) {
             const int j = nb[k];
             double d[3];
@@ -360,6 +364,13 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         /* a bubble expands while its temperature rises (since the last step) above bubble_T0 */
         const int heating = T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
         if (!isfinite(st->rhof[i])) st->rhof[i] = rho0;
+        /* A cooling bubble contracts: eq. 3.51's ideal gas in reverse (V
+         * proportional to absolute temperature), so its final density of
+         * eq. 3.52 rises back toward the rest density. Without this a baked
+         * bubble dough keeps its oven volume however cold it gets; the thesis
+         * raises rho_f by hand for the collapsing angel food cake (§4.4). */
+        if (bub > 0 && T && T[i] < st->Tprev[i])
+            st->rhof[i] = fmin(rho0, st->rhof[i] * (st->Tprev[i] + KELVIN) / (T[i] + KELVIN));
         st->prs[i] = st->B[i] * (pow(st->rho[i] / st->rhof[i], gam) - 1); /* eq. 3.17, 3.52 */
         if (bub > 0 && heating) { /* eq. 3.51 (Kelvin: ideal gas) */
             const double Vb = bub * (T[i] + KELVIN) / (o->bubble_T0 + KELVIN);
