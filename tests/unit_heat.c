@@ -120,6 +120,28 @@ static void slab_robin(int implicit) {
 TEST(heat_slab_robin_explicit) { slab_robin(0); }
 TEST(heat_slab_robin_implicit) { slab_robin(1); }
 
+/* Two pinned blocks side by side, at 90 and 5 degC, of different
+ * conductivity and specific heat (the insulated and FLIP/PIC tests). */
+static hearth_scene *two_blocks(const hearth_scene_def *d) {
+    hearth_scene *s = fx_scene_def(d);
+    const char *nm[] = {"E", "conductivity", "specific_heat"};
+    const double hot[] = {1e-2, 2.0, 1500}, cold[] = {1e-2, 0.5, 4000};
+    hearth_error err;
+    const int a = hearth_scene_add_material(s, "elastic", nm, hot, 3, &err),
+              b = hearth_scene_add_material(s, "elastic", nm, cold, 3, &err);
+    const double c1[3] = {0.4, 0.5, 0}, c2[3] = {0.6, 0.5, 0}, h[3] = {0.1, 0.15, 0};
+    hearth_shape *s1 = hearth_shape_box(c1, h), *s2 = hearth_shape_box(c2, h);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.fixed = 1;
+    bd.shape = s1, bd.material = a, bd.temperature = 90;
+    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    bd.shape = s2, bd.material = b, bd.temperature = 5;
+    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    hearth_shape_free(s1);
+    hearth_shape_free(s2);
+    return s;
+}
+
 /* Temperature to particles as PIC (heat_flip = 0) keeps a maximum principle
  * that FLIP (eq. 21) does not: two touching blocks at 90 and 5 degC never
  * leave [5, 90] with PIC; with FLIP the hot particles on shared nodes
@@ -132,22 +154,8 @@ TEST(heat_flip_pic_bounds) {
         d.dx = 1.0 / 24;
         d.gravity[1] = 0;
         d.heat_flip = k == 0 ? 1.0 : 0.0;
-        hearth_scene *s = fx_scene_def(&d);
-        const char *nm[] = {"E", "conductivity", "specific_heat"};
-        const double hot[] = {1e-2, 2.0, 1500}, cold[] = {1e-2, 0.5, 4000};
+        hearth_scene *s = two_blocks(&d);
         hearth_error err;
-        const int a = hearth_scene_add_material(s, "elastic", nm, hot, 3, &err),
-                  b = hearth_scene_add_material(s, "elastic", nm, cold, 3, &err);
-        const double c1[3] = {0.4, 0.5, 0}, c2[3] = {0.6, 0.5, 0}, h[3] = {0.1, 0.15, 0};
-        hearth_shape *s1 = hearth_shape_box(c1, h), *s2 = hearth_shape_box(c2, h);
-        hearth_body_def bd = hearth_default_body_def();
-        bd.fixed = 1;
-        bd.shape = s1, bd.material = a, bd.temperature = 90;
-        CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
-        bd.shape = s2, bd.material = b, bd.temperature = 5;
-        CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
-        hearth_shape_free(s1);
-        hearth_shape_free(s2);
         hi[k] = -1e9, lo[k] = 1e9;
         for (int step = 0; step < 300; step++) {
             CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
@@ -170,21 +178,8 @@ static void insulated(int implicit) {
     d.gravity[1] = 0;
     d.heat_implicit = implicit;
     if (implicit) d.dt_max = 1.0;
-    hearth_scene *s = fx_scene_def(&d);
-    const char *nm[] = {"E", "conductivity", "specific_heat"};
-    const double hot[] = {1e-2, 2.0, 1500}, cold[] = {1e-2, 0.5, 4000};
+    hearth_scene *s = two_blocks(&d);
     hearth_error err;
-    int a = hearth_scene_add_material(s, "elastic", nm, hot, 3, &err), b = hearth_scene_add_material(s, "elastic", nm, cold, 3, &err);
-    const double c1[3] = {0.4, 0.5, 0}, c2[3] = {0.6, 0.5, 0}, h[3] = {0.1, 0.15, 0};
-    hearth_shape *s1 = hearth_shape_box(c1, h), *s2 = hearth_shape_box(c2, h);
-    hearth_body_def bd = hearth_default_body_def();
-    bd.fixed = 1;
-    bd.shape = s1, bd.material = a, bd.temperature = 90;
-    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
-    bd.shape = s2, bd.material = b, bd.temperature = 5;
-    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
-    hearth_shape_free(s1);
-    hearth_shape_free(s2);
     hearth_stats st;
     hearth_scene_stats(s, &st);
     const double e0 = st.heat_energy;
