@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # sauce_scene_test.sh CASE HEARTH SOURCE_ROOT: the sauce scenes of
 # scripts/scenes/sauces/ as a user runs them, and the paper's claims they show.
+here=$(cd "$(dirname "$0")" && pwd) # png_check.py lives here
 set -u
 case_name=$1 hearth=$2 root=$3
 scenes=$root/scripts/scenes/sauces
@@ -46,18 +47,7 @@ scene_sauces_*)
     n=$(find out -name '*.png' | wc -l)
     [ "$n" -ge 3 ] || fail "$name wrote $n PNG frames, expected at least 3"
     for f in $(find out -name '*.png'); do
-        python3 - "$f" <<'PY' || fail "$f does not decode"
-import sys, zlib, struct
-b = open(sys.argv[1], "rb").read()
-assert b[:8] == b"\x89PNG\r\n\x1a\n"
-i, idat = 8, b""
-while i < len(b):
-    n, t = struct.unpack(">I4s", b[i:i + 8])
-    if t == b"IDAT": idat += b[i + 8:i + 8 + n]
-    i += 12 + n
-raw = zlib.decompress(idat)
-assert len(set(raw)) > 4, "constant image"
-PY
+        python3 "$here/png_check.py" "$f" >/dev/null || fail "$f does not decode"
     done
     [ "$(wc -l <"out/$csv")" -ge 3 ] || fail "$name: out/$csv has fewer than 2 data rows: $(cat "out/$csv")"
     cat out.txt

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # trade_test.sh CASE HEARTH SOURCE_ROOT: `hearth trade` and the scene settings
 # --set may change, as a user meets them. Every case runs in a fresh temp folder.
+here=$(cd "$(dirname "$0")" && pwd) # png_check.py lives here
 set -u
 case_name=$1 hearth=$2 root=$3
 tmp=$(mktemp -d)
@@ -16,21 +17,7 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 print(rows[int(sys.argv[2])][sys.argv[3]])
 PY
 }
-png_ok() {
-    python3 - "$1" <<'PY' || fail "$1 is not a whole PNG"
-import struct, sys, zlib
-b = open(sys.argv[1], "rb").read()
-assert b[:8] == b"\x89PNG\r\n\x1a\n"
-w, h = struct.unpack(">II", b[16:24])
-assert (w, h) == (860, 580), (w, h)
-i, idat = 8, b""
-while i < len(b):
-    n, t = struct.unpack(">I4s", b[i:i + 8])
-    if t == b"IDAT": idat += b[i + 8:i + 8 + n]
-    i += 12 + n
-assert len(set(zlib.decompress(idat))) > 4, "a flat picture"
-PY
-}
+png_ok() { python3 "$here/png_check.py" "$1" 860 580 >/dev/null || fail "$1 is not a whole 860 x 580 PNG"; }
 
 case $case_name in
 trade_heat_slab_order)
