@@ -81,3 +81,43 @@ hearth_status grid_activate(grid *g, const unsigned char *mark, hearth_error *er
     memset(g->data, 0, sizeof(double) * (size_t)g->nch * (size_t)g->nodes_per_block * (size_t)n);
     return HEARTH_OK;
 }
+
+int grid_tile_slot(const grid *g, const int bc[3], int t, int *l) {
+    const int D = g->dim;
+    int a, b, c = 0;
+    if (D == 2) {
+        a = t / GRID_T;
+        b = t % GRID_T;
+    } else {
+        a = t / (GRID_T * GRID_T);
+        b = (t / GRID_T) % GRID_T;
+        c = t % GRID_T;
+    }
+    *l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
+    return g->slot[grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0))];
+}
+
+void grid_tile_stencil(const grid *g, const int bc[3], const double *x, grid_stencil *st) {
+    const int D = g->dim;
+    int base[3] = {0, 0, 0};
+    double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
+    for (int d = 0; d < D; d++) {
+        const double X = (x[d] - g->lo[d]) * g->inv_dx;
+        const int b = (int)floor(X - 0.5);
+        bspline_weights(X - b, w[d], dw[d]);
+        base[d] = b - bc[d] * GRID_B;
+    }
+    st->n = 0;
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+            for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                const int k = st->n++;
+                const double wc = D == 3 ? w[2][c] : 1.0;
+                st->t[k] = D == 2 ? (base[0] + a) * GRID_T + base[1] + b
+                                  : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
+                st->w[k] = w[0][a] * w[1][b] * wc;
+                st->gw[k][0] = dw[0][a] * w[1][b] * wc * g->inv_dx;
+                st->gw[k][1] = w[0][a] * dw[1][b] * wc * g->inv_dx;
+                st->gw[k][2] = D == 3 ? w[0][a] * w[1][b] * dw[2][c] * g->inv_dx : 0.0;
+            }
+}

@@ -72,6 +72,22 @@ static inline void grid_node_index(const grid *g, const int bc[3], int l, int gi
     }
 }
 
+/* A particle block's tile: the block and its +1 neighbours, GRID_T nodes per
+ * axis from the block's origin node (as P2G gathers and scatters). */
+/// Nodes in a tile (GRID_T^dim).
+static inline int grid_tile_count(const grid *g) { return g->dim == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T; }
+/// Storage slot of tile node t of the block at bc, and its local index in *l.
+int grid_tile_slot(const grid *g, const int bc[3], int t, int *l);
+
+/// A particle's B-spline stencil in its block's tile: tile index, weight and
+/// weight gradient (1/m) of each of its 3^dim nodes.
+typedef struct grid_stencil {
+    int t[27];
+    double w[27], gw[27][3];
+    int n;
+} grid_stencil;
+void grid_tile_stencil(const grid *g, const int bc[3], const double *x, grid_stencil *st);
+
 /// Quadratic B-spline weights and their derivatives (in grid units) for a
 /// coordinate X in grid units: base = floor(X - 0.5), fx = X - base in [0.5, 1.5).
 static inline void bspline_weights(double fx, double w[3], double dw[3]) {

@@ -54,50 +54,10 @@ void mixing_params(const hearth_scene *s, int mat, int i, double *out) {
     }
 }
 
-static int tile_count(const grid *g) { return g->dim == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T; }
-
-/* Tile index t of block origin bc -> the node's storage slot and local index. */
-static int tile_slot(const grid *g, const int bc[3], int t, int *l) {
-    const int D = g->dim;
-    int a, b, c = 0;
-    if (D == 2) {
-        a = t / GRID_T;
-        b = t % GRID_T;
-    } else {
-        a = t / (GRID_T * GRID_T);
-        b = (t / GRID_T) % GRID_T;
-        c = t % GRID_T;
-    }
-    *l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
-    return g->slot[grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0))];
-}
-
-/* Weights of particle x in the tile of block origin bc. */
-static int weights(const grid *g, const int bc[3], const double *x, int *t, double *w) {
-    const int D = g->dim;
-    int base[3] = {0, 0, 0};
-    double ww[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
-    for (int d = 0; d < D; d++) {
-        const double X = (x[d] - g->lo[d]) * g->inv_dx;
-        const int b = (int)floor(X - 0.5);
-        bspline_weights(X - b, ww[d], dw);
-        base[d] = b - bc[d] * GRID_B;
-    }
-    int n = 0;
-    for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++)
-            for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                t[n] = D == 2 ? (base[0] + a) * GRID_T + base[1] + b
-                              : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
-                w[n++] = ww[0][a] * ww[1][b] * (D == 3 ? ww[2][c] : 1.0);
-            }
-    return n;
-}
-
 hearth_status mixing_update(hearth_scene *s, hearth_error *err) {
     grid *g = &s->g;
     particles *ps = &s->ps;
-    const int NPB = g->nodes_per_block, TN = tile_count(g), k = s->mats[s->mix_mat].mix_k, W = k + 1;
+    const int NPB = g->nodes_per_block, TN = grid_tile_count(g), k = s->mats[s->mix_mat].mix_k, W = k + 1;
     const size_t need = (size_t)g->nactive * NPB * W;
     if (need > s->mix_cap) {
         double *a = mem_alloc(sizeof(double) * need * 2);
@@ -116,8 +76,7 @@ hearth_status mixing_update(hearth_scene *s, hearth_error *err) {
 #pragma omp parallel if (par)
         {
             double tile[(MIX_MAX + 1) * GRID_T * GRID_T * GRID_T];
-            int t[27];
-            double w[27];
+            grid_stencil st;
 #pragma omp for schedule(dynamic, 2)
             for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) {
                 const pblock pb = s->pb[s->colour_pb[q]];
@@ -127,19 +86,19 @@ hearth_status mixing_update(hearth_scene *s, hearth_error *err) {
                 for (int i = pb.start; i < pb.end; i++) {
                     if (mat[i] != mm) continue;
                     any = 1;
-                    const int n = weights(g, bc, X + 3 * i, t, w);
+                    grid_tile_stencil(g, bc, X + 3 * i, &st);
                     const double Vp = V0[i] * t3_det(Fc + 9 * i);
-                    for (int j = 0; j < n; j++) {
-                        const double vw = Vp * w[j];
-                        tile[k * TN + t[j]] += vw;
-                        for (int c = 0; c < k; c++) tile[c * TN + t[j]] += vw * A0[MIX_MAX * i + c];
+                    for (int j = 0; j < st.n; j++) {
+                        const double vw = Vp * st.w[j];
+                        tile[k * TN + st.t[j]] += vw;
+                        for (int c = 0; c < k; c++) tile[c * TN + st.t[j]] += vw * A0[MIX_MAX * i + c];
                     }
                 }
                 if (!any) continue;
                 for (int tt = 0; tt < TN; tt++) {
                     if (tile[k * TN + tt] == 0.0) continue;
                     int l;
-                    double *node = s->mix_nodes + ((size_t)tile_slot(g, bc, tt, &l) * NPB + l) * W;
+                    double *node = s->mix_nodes + ((size_t)grid_tile_slot(g, bc, tt, &l) * NPB + l) * W;
                     for (int c = 0; c <= k; c++) node[c] += tile[c * TN + tt];
                 }
             }
@@ -149,18 +108,18 @@ hearth_status mixing_update(hearth_scene *s, hearth_error *err) {
 #pragma omp parallel for schedule(dynamic, 2) if (par)
     for (int q = 0; q < s->npb; q++) {
         const pblock pb = s->pb[q];
-        int bc[3], t[27];
-        double w[27];
+        int bc[3];
+        grid_stencil st;
         grid_block_coords(g, pb.block, bc);
         for (int i = pb.start; i < pb.end; i++) {
             if (mat[i] != mm) continue;
-            const int n = weights(g, bc, X + 3 * i, t, w);
+            grid_tile_stencil(g, bc, X + 3 * i, &st);
             double a[MIX_MAX] = {0};
-            for (int j = 0; j < n; j++) {
+            for (int j = 0; j < st.n; j++) {
                 int l;
-                const double *node = s->mix_nodes + ((size_t)tile_slot(g, bc, t[j], &l) * NPB + l) * W;
+                const double *node = s->mix_nodes + ((size_t)grid_tile_slot(g, bc, st.t[j], &l) * NPB + l) * W;
                 if (!(node[k] > 0)) continue;
-                for (int c = 0; c < k; c++) a[c] += w[j] * node[c] / node[k];
+                for (int c = 0; c < k; c++) a[c] += st.w[j] * node[c] / node[k];
             }
             memcpy(A + (size_t)MIX_MAX * i, a, sizeof a);
         }

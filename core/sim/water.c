@@ -91,9 +91,15 @@ hearth_status water_enable(hearth_scene *s, hearth_error *err) {
     return HEARTH_OK;
 }
 
-static double theta_abs(const hearth_scene *s, const double *T, int i, const material_slot *ms) {
-    (void)s;
+static double theta_abs(const double *T, int i, const material_slot *ms) {
     return (T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN;
+}
+
+/* What limits the explicit step at one particle of saturation sat: its
+ * diffusivity K theta s and its evaporation rate beta theta / rho_0. */
+static void particle_limits(const material_slot *ms, double th, double sat, double *d, double *e) {
+    *d = fmax(*d, ms->core[CP_WATER_DIFFUSIVITY] * th * sat);
+    *e = fmax(*e, ms->core[CP_EVAPORATION] * th / ms->core[CP_WATER_DENSITY]);
 }
 
 /* The largest diffusivity K theta s and evaporation rate beta theta / rho_0 over the particles. */
@@ -103,11 +109,7 @@ static void scan_limits(const hearth_scene *s, double *dmax, double *emax) {
     double d = 0, e = 0;
     for (int i = 0; i < ps->n; i++) {
         const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
-        const double th = theta_abs(s, T, i, ms);
-        const double di = ms->core[CP_WATER_DIFFUSIVITY] * th * water_saturation(s, i);
-        const double ei = ms->core[CP_EVAPORATION] * th / ms->core[CP_WATER_DENSITY];
-        if (di > d) d = di;
-        if (ei > e) e = ei;
+        particle_limits(ms, theta_abs(T, i, ms), water_saturation(s, i), &d, &e);
     }
     *dmax = d;
     *emax = e;
@@ -134,74 +136,21 @@ double water_total(const hearth_scene *s) {
     return m;
 }
 
-/* ---- per-particle stencils --------------------------------------------- */
-
-typedef struct wstencil {
-    int t[27];                   /* tile index of each node */
-    double w[27], gw[27][3];     /* weight and gradient */
-    int n;
-} wstencil;
-
-/* Stencil of particle x in the tile of block origin bc (the block and its +1
- * neighbours, GRID_T nodes per axis). */
-static void stencil_in_tile(const grid *g, const int bc[3], const double *x, wstencil *st) {
-    const int D = g->dim;
-    int base[3] = {0, 0, 0};
-    double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
-    for (int d = 0; d < D; d++) {
-        const double X = (x[d] - g->lo[d]) * g->inv_dx;
-        const int b = (int)floor(X - 0.5);
-        bspline_weights(X - b, w[d], dw[d]);
-        base[d] = b - bc[d] * GRID_B;
-    }
-    st->n = 0;
-    for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++)
-            for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                const int k = st->n++;
-                const double wc = D == 3 ? w[2][c] : 1.0;
-                st->t[k] = D == 2 ? (base[0] + a) * GRID_T + base[1] + b
-                                  : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
-                st->w[k] = w[0][a] * w[1][b] * wc;
-                st->gw[k][0] = dw[0][a] * w[1][b] * wc * g->inv_dx;
-                st->gw[k][1] = w[0][a] * dw[1][b] * wc * g->inv_dx;
-                st->gw[k][2] = D == 3 ? w[0][a] * w[1][b] * dw[2][c] * g->inv_dx : 0.0;
-            }
-}
-
-static double *tile_node(const grid *g, const int bc[3], int t, int *l) {
-    const int D = g->dim;
-    int a, b, c = 0;
-    if (D == 2) {
-        a = t / GRID_T;
-        b = t % GRID_T;
-    } else {
-        a = t / (GRID_T * GRID_T);
-        b = (t / GRID_T) % GRID_T;
-        c = t % GRID_T;
-    }
-    const int blk = grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0));
-    *l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
-    return grid_block(g, g->slot[blk]);
-}
-
-static int tile_count(const grid *g) { return g->dim == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T; }
-
 /* ---- the passes -------------------------------------------------------- */
 
 /* Water mass and capacity to the nodes (eq. 15, 18). */
 static void scatter_block(hearth_scene *s, int q, double *tile) {
     grid *g = &s->g;
     const particles *ps = &s->ps;
-    const int TN = tile_count(g), NPB = g->nodes_per_block;
+    const int TN = grid_tile_count(g), NPB = g->nodes_per_block;
     const pblock pb = s->pb[s->colour_pb[q]];
     int bc[3];
     grid_block_coords(g, pb.block, bc);
     memset(tile, 0, sizeof(double) * 2 * (size_t)TN);
     const double *X = pcold(ps, PC_X), *W = pcold(ps, PC_WATER);
-    wstencil st;
+    grid_stencil st;
     for (int i = pb.start; i < pb.end; i++) {
-        stencil_in_tile(g, bc, X + 3 * i, &st);
+        grid_tile_stencil(g, bc, X + 3 * i, &st);
         const double cap = capacity(s, i);
         for (int k = 0; k < st.n; k++) {
             tile[st.t[k]] += st.w[k] * W[i];
@@ -211,7 +160,7 @@ static void scatter_block(hearth_scene *s, int q, double *tile) {
     for (int t = 0; t < TN; t++) {
         if (tile[TN + t] == 0.0) continue;
         int l;
-        double *node = tile_node(g, bc, t, &l);
+        double *node = grid_block(g, grid_tile_slot(g, bc, t, &l));
         node[CH_MW * NPB + l] += tile[t];
         node[CH_SW * NPB + l] += tile[TN + t];
     }
@@ -222,14 +171,14 @@ static void scatter_block(hearth_scene *s, int q, double *tile) {
 static void flux_block(hearth_scene *s, int q, double dt, double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
-    const int D = g->dim, TN = tile_count(g), NPB = g->nodes_per_block, mom = s->def.water_momentum;
+    const int D = g->dim, TN = grid_tile_count(g), NPB = g->nodes_per_block, mom = s->def.water_momentum;
     const pblock pb = s->pb[s->colour_pb[q]];
     int bc[3];
     grid_block_coords(g, pb.block, bc);
     double *sat = tile, *dm = tile + TN, *dp = tile + 2 * TN; /* dp: 3 momentum components */
     for (int t = 0; t < TN; t++) {
         int l;
-        const double *node = tile_node(g, bc, t, &l);
+        const double *node = grid_block(g, grid_tile_slot(g, bc, t, &l));
         sat[t] = node[CH_SW * NPB + l];
     }
     memset(dm, 0, sizeof(double) * (size_t)TN * (mom ? 4 : 1));
@@ -239,12 +188,12 @@ static void flux_block(hearth_scene *s, int q, double dt, double *tile) {
     const double *area = s->bnd_area;
     double *Q = pcold(ps, PC_QW);
     const int *mat = pcoli(ps, PC_MAT);
-    wstencil st;
+    grid_stencil st;
     for (int i = pb.start; i < pb.end; i++) {
-        stencil_in_tile(g, bc, X + 3 * i, &st);
+        grid_tile_stencil(g, bc, X + 3 * i, &st);
         const material_slot *ms = &s->mats[mat[i]];
         const double rho0 = ms->core[CP_WATER_DENSITY], Vp = V0[i] * t3_det(Fc + 9 * i);
-        const double sp = W[i] / (rho0 * Vp), th = theta_abs(s, T, i, ms);
+        const double sp = W[i] / (rho0 * Vp), th = theta_abs(T, i, ms);
         double gs[3] = {0, 0, 0}, si = 0;
         for (int k = 0; k < st.n; k++) {
             si += sat[st.t[k]] * st.w[k];
@@ -273,7 +222,7 @@ static void flux_block(hearth_scene *s, int q, double dt, double *tile) {
     }
     for (int t = 0; t < TN; t++) {
         int l;
-        double *node = tile_node(g, bc, t, &l);
+        double *node = grid_block(g, grid_tile_slot(g, bc, t, &l));
         node[CH_DMW * NPB + l] += dm[t];
         if (mom)
             for (int d = 0; d < D; d++) node[(CH_PX + d) * NPB + l] += dp[d * TN + t];
@@ -295,11 +244,11 @@ static void gather_block(hearth_scene *s, int k) {
     pb_partial *pp = &s->partial[k];
     int bc[3];
     grid_block_coords(g, pb.block, bc);
-    const int TN = tile_count(g);
+    const int TN = grid_tile_count(g);
     double ratio[GRID_T * GRID_T * GRID_T];
     for (int t = 0; t < TN; t++) { /* the change of node saturation, ds_i = dm_i / (rho_0 V_i) */
         int l;
-        const double *node = tile_node(g, bc, t, &l);
+        const double *node = grid_block(g, grid_tile_slot(g, bc, t, &l));
         const double c = node[CH_MW * NPB + l];
         ratio[t] = c > 0 ? node[CH_DMW * NPB + l] / c : 0.0;
     }
@@ -308,9 +257,9 @@ static void gather_block(hearth_scene *s, int k) {
     double *W = pcold(ps, PC_WATER);
     const int *mat = pcoli(ps, PC_MAT);
     double removed = 0, dmax = 0, emax = 0;
-    wstencil st;
+    grid_stencil st;
     for (int i = pb.start; i < pb.end; i++) {
-        stencil_in_tile(g, bc, X + 3 * i, &st);
+        grid_tile_stencil(g, bc, X + 3 * i, &st);
         double r = 0;
         for (int q = 0; q < st.n; q++) r += st.w[q] * ratio[st.t[q]];
         const double cap = capacity(s, i), before = W[i];
@@ -319,9 +268,7 @@ static void gather_block(hearth_scene *s, int k) {
         W[i] = m;
         removed += before - m;
         const material_slot *ms = &s->mats[mat[i]];
-        const double th = theta_abs(s, T, i, ms);
-        dmax = fmax(dmax, ms->core[CP_WATER_DIFFUSIVITY] * th * m / cap);
-        emax = fmax(emax, ms->core[CP_EVAPORATION] * th / ms->core[CP_WATER_DENSITY]);
+        particle_limits(ms, theta_abs(T, i, ms), m / cap, &dmax, &emax);
     }
     pp->water_removed = removed;
     pp->water_dmax = dmax;
