@@ -262,10 +262,6 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                         tile[P2G_MW * TN + t] += wab * mw;
                         tile[P2G_SW * TN + t] += wab * cap;
                     }
-                    if (picks) { /* in particle order with <: a tie goes to the lower index */
-                        const double r2 = e2[0][a] + e2[1][b];
-                        if (r2 < bd[t]) bd[t] = r2, bi[t] = i;
-                    }
                 } else {
                     for (int c = 0; c < 3; c++) {
                         const double d2 = (c - fx[2]) * dx, wt = wab * w[2][c];
@@ -282,14 +278,21 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                             tile[P2G_MW * TN + t] += wt * mw;
                             tile[P2G_SW * TN + t] += wt * cap;
                         }
-                        if (picks) {
-                            const double r2 = e2[0][a] + e2[1][b] + e2[2][c];
-                            if (r2 < bd[t]) bd[t] = r2, bi[t] = i;
-                        }
                     }
                 }
             }
         }
+        if (picks) /* in particle order with <: a tie goes to the lower index. A loop of its own, so the one above stays branch-free */
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++)
+                    for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                        const int t = D == 2 ? (base[0] + a) * GRID_T + (base[1] + b)
+                                             : ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + c);
+                        const double r2 = D == 2 ? e2[0][a] + e2[1][b] : e2[0][a] + e2[1][b] + e2[2][c];
+                        const int better = r2 < bd[t];
+                        bd[t] = better ? r2 : bd[t];
+                        bi[t] = better ? i : bi[t];
+                    }
     }
 
     /* flush the tile into the block and its +1 neighbours */
@@ -589,7 +592,9 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         if (heat && (st = thermal_prepare(s, err))) return st;
         if (water) water_prepare(s);
         /* L theta^n and the heat sources, the water flux and evaporation: one pass */
-        const transport_pass tp = {.heat_in = heat ? CH_T : -1, .heat_out = CH_R, .heat_src = CH_B, .water = water, .dt = dt};
+        /* forward Euler needs only L theta^n - b, so the sources go into CH_R too (CH_B stays 0) */
+        const transport_pass tp = {.heat_in = heat ? CH_T : -1, .heat_out = CH_R, .heat_src = s->def.heat_implicit ? CH_B : CH_R,
+                                   .water = water, .dt = dt};
         transport_apply(s, &tp);
         if (heat) thermal_finish(s, dt);
     }

@@ -36,6 +36,53 @@ FORCE_INLINE double *tile_node(const grid *g, const int D, const int bc[3], int 
     return grid_block(g, g->slot[blk]);
 }
 
+FORCE_INLINE int tile_index(const int D, const int base[3], int a, int b, int c) {
+    return D == 2 ? (base[0] + a) * GRID_T + base[1] + b : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
+}
+
+/* v and grad v at a particle from tile values: sum_i v_i w_ip and sum_i v_i grad w_ip. */
+FORCE_INLINE void gather(const int D, const double *v, const int base[3], double w[3][3], double dw[3][3],
+                         double *val, double grad[3]) {
+    for (int a = 0; a < 3; a++) {
+        double ta = 0, tb = 0, tc = 0; /* sum over b of (w1, dw1) x (sum over c of w2) and w1 x (sum over c of dw2) */
+        for (int b = 0; b < 3; b++) {
+            double s0, s1 = 0;
+            if (D == 3) {
+                const double *vc = v + tile_index(D, base, a, b, 0);
+                s0 = vc[0] * w[2][0] + vc[1] * w[2][1] + vc[2] * w[2][2];
+                s1 = vc[0] * dw[2][0] + vc[1] * dw[2][1] + vc[2] * dw[2][2];
+            } else {
+                s0 = v[tile_index(D, base, a, b, 0)];
+            }
+            ta += s0 * w[1][b];
+            tb += s0 * dw[1][b];
+            tc += s1 * w[1][b];
+        }
+        *val += ta * w[0][a];
+        grad[0] += ta * dw[0][a];
+        grad[1] += tb * w[0][a];
+        if (D == 3) grad[2] += tc * w[0][a];
+    }
+}
+
+/* out_i += grad w_ip . f + w_ip r (f NULL: only the second term). */
+FORCE_INLINE void scatter(const int D, double *out, const int base[3], double w[3][3], double dw[3][3],
+                          const double *f, double r) {
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) {
+            const double wab = w[0][a] * w[1][b];
+            /* the node's term is A w2_c + B dw2_c */
+            const double A = wab * r + (f ? dw[0][a] * w[1][b] * f[0] + w[0][a] * dw[1][b] * f[1] : 0.0);
+            if (D == 3) {
+                const double B = f ? wab * f[2] : 0.0;
+                double *oc = out + tile_index(D, base, a, b, 0);
+                for (int c = 0; c < 3; c++) oc[c] += A * w[2][c] + B * dw[2][c];
+            } else {
+                out[tile_index(D, base, a, b, 0)] += A;
+            }
+        }
+}
+
 /* tile layout: [0] heat input, [1] heat out, [2] heat sources, [3] saturation,
  * [4] water mass change, [5..7] water momentum */
 enum { T_IN, T_OUT, T_SRC, T_SAT, T_DM, T_DP, T_COUNT = T_DP + 3 };
@@ -58,7 +105,9 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
                 if (HEAT) tile[T_IN * TN + t] = node[tp->heat_in * NPB + l];
                 if (WATER) tile[T_SAT * TN + t] = node[CH_SW * NPB + l];
             }
-    if (HEAT) memset(tile + T_OUT * TN, 0, sizeof(double) * (size_t)TN * (SRC ? 2 : 1));
+    /* sources into the output channel itself (out_i += (L x)_i - src_i) when the caller asks for one sum */
+    const int apart = SRC && tp->heat_src != tp->heat_out;
+    if (HEAT) memset(tile + T_OUT * TN, 0, sizeof(double) * (size_t)TN * (apart ? 2 : 1));
     if (WATER) memset(tile + T_DM * TN, 0, sizeof(double) * (size_t)TN * (mom ? 4 : 1));
     double *tin = tile + T_IN * TN, *tout = tile + T_OUT * TN, *tsrc = tile + T_SRC * TN;
     double *sat = tile + T_SAT * TN, *dm = tile + T_DM * TN, *dp = tile + T_DP * TN;
@@ -81,30 +130,11 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
         }
         const material_slot *ms = &s->mats[mat[i]];
         const double Vp = V0[i] * t3_det(Fc + 9 * i);
+        /* value and gradient at the particle, contracted one axis at a time (the
+         * weights are a tensor product): about half the work of node by node */
         double xp = 0, gx[3] = {0, 0, 0}, si = 0, gs[3] = {0, 0, 0};
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++)
-                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                    const double wc = D == 3 ? w[2][c] : 1.0, wt = w[0][a] * w[1][b] * wc;
-                    const double g0 = dw[0][a] * w[1][b] * wc, g1 = w[0][a] * dw[1][b] * wc,
-                                 g2 = D == 3 ? w[0][a] * w[1][b] * dw[2][c] : 0.0;
-                    const int t = D == 2 ? (base[0] + a) * GRID_T + base[1] + b
-                                         : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
-                    if (HEAT) {
-                        const double v = tin[t];
-                        xp += wt * v;
-                        gx[0] += g0 * v;
-                        gx[1] += g1 * v;
-                        if (D == 3) gx[2] += g2 * v;
-                    }
-                    if (WATER) {
-                        const double v = sat[t];
-                        si += wt * v;
-                        gs[0] += g0 * v;
-                        gs[1] += g1 * v;
-                        if (D == 3) gs[2] += g2 * v;
-                    }
-                }
+        if (HEAT) gather(D, tin, base, w, dw, &xp, gx);
+        if (WATER) gather(D, sat, base, w, dw, &si, gs);
         double qk[3] = {0, 0, 0}, bcoef = 0, source = 0;
         if (HEAT) {
             const double kap = Vp * ms->core[CP_CONDUCTIVITY];
@@ -116,7 +146,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
                 if (cl > 0) source -= V0[i] * cl * (T[i] + KELVIN) * (Cc[9 * i] + Cc[9 * i + 4] + Cc[9 * i + 8]);
             }
         }
-        double qn[3] = {0, 0, 0}, evap = 0, vw[3] = {0, 0, 0}, dq[3] = {0, 0, 0};
+        double qn[3] = {0, 0, 0}, evap = 0;
         if (WATER) {
             const double rho0 = ms->core[CP_WATER_DENSITY], sp = W[i] / (rho0 * Vp);
             const double th = (T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN; /* absolute: see water.c */
@@ -125,32 +155,31 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
             /* evaporation from the saturation the grid sees at the particle, as the
              * heat Robin term uses the interpolated temperature */
             evap = area && area[i] > 0 ? ms->core[CP_EVAPORATION] * th * si * area[i] : 0.0; /* kg/s */
-            if (mom) /* v^w = v^s + q^w / rho^w; the grid takes w V dq + dt V (v^w (x) q^w) grad w */
+            if (mom) { /* v^w = v^s + q^w / rho^w; the grid takes w V dq + dt V (v^w (x) q^w) grad w */
+                double vw[3], dq[3];
                 for (int d = 0; d < 3; d++) {
                     vw[d] = V[3 * i + d] + qn[d] / (rho0 * sp);
                     dq[d] = Q[3 * i + d] - qn[d];
                 }
+                for (int a = 0; a < 3; a++)
+                    for (int b = 0; b < 3; b++)
+                        for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                            const double wc = D == 3 ? w[2][c] : 1.0, wt = w[0][a] * w[1][b] * wc;
+                            const double qg = qn[0] * dw[0][a] * w[1][b] * wc + qn[1] * w[0][a] * dw[1][b] * wc +
+                                              (D == 3 ? qn[2] * w[0][a] * w[1][b] * dw[2][c] : 0.0);
+                            const int t = tile_index(D, base, a, b, c);
+                            for (int d = 0; d < D; d++) dp[d * TN + t] += Vp * (wt * dq[d] + dt * vw[d] * qg);
+                        }
+            }
             memcpy(Q + 3 * i, qn, sizeof qn);
         }
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++)
-                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                    const double wc = D == 3 ? w[2][c] : 1.0, wt = w[0][a] * w[1][b] * wc;
-                    const double g0 = dw[0][a] * w[1][b] * wc, g1 = w[0][a] * dw[1][b] * wc,
-                                 g2 = D == 3 ? w[0][a] * w[1][b] * dw[2][c] : 0.0;
-                    const int t = D == 2 ? (base[0] + a) * GRID_T + base[1] + b
-                                         : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
-                    if (HEAT) {
-                        tout[t] += g0 * qk[0] + g1 * qk[1] + g2 * qk[2] + wt * bcoef * xp;
-                        if (SRC) tsrc[t] += wt * source;
-                    }
-                    if (WATER) {
-                        const double qg = qn[0] * g0 + qn[1] * g1 + qn[2] * g2;
-                        dm[t] += dt * (Vp * qg - wt * evap);
-                        if (mom)
-                            for (int d = 0; d < D; d++) dp[d * TN + t] += Vp * (wt * dq[d] + dt * vw[d] * qg);
-                    }
-                }
+        /* scatter grad w . f + w r, again one axis at a time */
+        if (HEAT) scatter(D, tout, base, w, dw, qk, bcoef * xp - (SRC && !apart ? source : 0.0));
+        if (apart) scatter(D, tsrc, base, w, dw, NULL, source);
+        if (WATER) {
+            const double mq[3] = {dt * Vp * qn[0], dt * Vp * qn[1], dt * Vp * qn[2]};
+            scatter(D, dm, base, w, dw, mq, -dt * evap);
+        }
     }
     for (int a = 0; a < GRID_T; a++) /* flush into the block and its +1 neighbours */
         for (int b = 0; b < GRID_T; b++)
@@ -160,7 +189,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
                 double *node = tile_node(g, D, bc, a, b, c, &l);
                 if (HEAT) {
                     node[tp->heat_out * NPB + l] += tout[t];
-                    if (SRC) node[tp->heat_src * NPB + l] += tsrc[t];
+                    if (apart) node[tp->heat_src * NPB + l] += tsrc[t];
                 }
                 if (WATER) {
                     node[CH_DMW * NPB + l] += dm[t];

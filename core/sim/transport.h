@@ -8,7 +8,8 @@ struct hearth_scene;
 typedef struct transport_pass {
     int heat_in;  ///< grid channel the heat operator reads (node temperature or CG direction), -1: no heat
     int heat_out; ///< channel that accumulates (L x)_i
-    int heat_src; ///< channel that accumulates the boundary and expansion sources, -1: none
+    int heat_src; ///< channel that accumulates the boundary and expansion sources, -1: none;
+                  ///< heat_out itself: it takes (L x)_i - src_i, one scatter fewer
     int water;    ///< also the Fick flux and evaporation into CH_DMW (and water momentum)
     double dt;    ///< the step, for the water mass change
 } transport_pass;
