@@ -66,6 +66,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
 
     /* P2G left each node's closest particle in CH_CG_P (index + 1; 0: none). Keep
      * it on boundary nodes, clear it elsewhere. */
+    const int stride[3] = {D == 2 ? GRID_B : GRID_B * GRID_B, D == 2 ? 1 : GRID_B, 1}; /* node index steps within a block */
 #pragma omp parallel for schedule(dynamic, 4) if (n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         double *node = grid_block(g, k);
@@ -83,7 +84,12 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
                 for (int sgn = -1; sgn <= 1; sgn += 2) {
                     int nb[3] = {gi[0], gi[1], gi[2]};
                     nb[d] += sgn;
-                    if (air_or_mass(g, nb) == 0) edge = 1;
+                    const int lc = gi[d] % GRID_B + sgn; /* a neighbour inside this block is read directly */
+                    if (lc >= 0 && lc < GRID_B && nb[d] < g->nn[d]) {
+                        if (node[l + sgn * stride[d]] == 0) edge = 1;
+                    } else if (air_or_mass(g, nb) == 0) {
+                        edge = 1;
+                    }
                 }
             double xi[3] = {0, 0, 0};
             for (int d = 0; d < D; d++) xi[d] = g->lo[d] + gi[d] * g->dx;

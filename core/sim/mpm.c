@@ -284,15 +284,17 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
         }
         if (picks) /* in particle order with <: a tie goes to the lower index. A loop of its own, so the one above stays branch-free */
             for (int a = 0; a < 3; a++)
-                for (int b = 0; b < 3; b++)
+                for (int b = 0; b < 3; b++) {
+                    const int t = D == 2 ? (base[0] + a) * GRID_T + (base[1] + b) : ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + base[2];
+                    double *restrict pd = bd + t, *restrict pi = bi + t;
+                    const double rab = e2[0][a] + e2[1][b];
                     for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                        const int t = D == 2 ? (base[0] + a) * GRID_T + (base[1] + b)
-                                             : ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + c);
-                        const double r2 = D == 2 ? e2[0][a] + e2[1][b] : e2[0][a] + e2[1][b] + e2[2][c];
-                        const int better = r2 < bd[t];
-                        bd[t] = better ? r2 : bd[t];
-                        bi[t] = better ? i : bi[t];
+                        const double r2 = D == 2 ? rab : rab + e2[2][c];
+                        const int better = r2 < pd[c];
+                        pd[c] = better ? r2 : pd[c];
+                        pi[c] = better ? i : pi[c];
                     }
+                }
     }
 
     /* flush the tile into the block and its +1 neighbours */

@@ -62,11 +62,6 @@ void t3_mulv(const double A[9], const double x[3], double y[3]) {
     y[2] = t[2];
 }
 
-double t3_det(const double A[9]) {
-    return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
-           A[2] * (A[3] * A[7] - A[4] * A[6]);
-}
-
 double t3_trace(const double A[9]) { return A[0] + A[4] + A[8]; }
 
 double t3_ddot(const double A[9], const double B[9]) {

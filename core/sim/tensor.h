@@ -13,7 +13,10 @@ void t3_mul(const double A[9], const double B[9], double C[9]);     ///< C = A B
 void t3_mul_atb(const double A[9], const double B[9], double C[9]); ///< C = A^T B
 void t3_mul_abt(const double A[9], const double B[9], double C[9]); ///< C = A B^T
 void t3_mulv(const double A[9], const double x[3], double y[3]);    ///< y = A x
-double t3_det(const double A[9]);
+/* inline: the field passes take a determinant per particle per step */
+static inline double t3_det(const double A[9]) {
+    return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) + A[2] * (A[3] * A[7] - A[4] * A[6]);
+}
 double t3_trace(const double A[9]);
 double t3_ddot(const double A[9], const double B[9]);              ///< A:B
 /// Inverse; returns 0 when |det| is below 1e-300 (Ainv untouched).

@@ -40,45 +40,55 @@ FORCE_INLINE int tile_index(const int D, const int base[3], int a, int b, int c)
     return D == 2 ? (base[0] + a) * GRID_T + base[1] + b : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
 }
 
-/* v and grad v at a particle from tile values: sum_i v_i w_ip and sum_i v_i grad w_ip. */
-FORCE_INLINE void gather(const int D, const double *v, const int base[3], double w[3][3], double dw[3][3],
-                         double *val, double grad[3]) {
+/* v and grad v at a particle from tile values, for NC (1 or 2) channels at
+ * once so they share the stencil: sum_i v_i w_ip and sum_i v_i grad w_ip. */
+FORCE_INLINE void gather(const int D, const int NC, const double *const v[2], const int base[3], double w[3][3],
+                         double dw[3][3], double val[2], double grad[2][3]) {
     for (int a = 0; a < 3; a++) {
-        double ta = 0, tb = 0, tc = 0; /* sum over b of (w1, dw1) x (sum over c of w2) and w1 x (sum over c of dw2) */
+        /* sum over b of (w1, dw1) x (sum over c of w2) and w1 x (sum over c of dw2) */
+        double ta[2] = {0, 0}, tb[2] = {0, 0}, tc[2] = {0, 0};
         for (int b = 0; b < 3; b++) {
-            double s0, s1 = 0;
-            if (D == 3) {
-                const double *vc = v + tile_index(D, base, a, b, 0);
-                s0 = vc[0] * w[2][0] + vc[1] * w[2][1] + vc[2] * w[2][2];
-                s1 = vc[0] * dw[2][0] + vc[1] * dw[2][1] + vc[2] * dw[2][2];
-            } else {
-                s0 = v[tile_index(D, base, a, b, 0)];
+            const int t = tile_index(D, base, a, b, 0);
+            for (int k = 0; k < NC; k++) {
+                double s0, s1 = 0;
+                if (D == 3) {
+                    const double *vc = v[k] + t;
+                    s0 = vc[0] * w[2][0] + vc[1] * w[2][1] + vc[2] * w[2][2];
+                    s1 = vc[0] * dw[2][0] + vc[1] * dw[2][1] + vc[2] * dw[2][2];
+                } else {
+                    s0 = v[k][t];
+                }
+                ta[k] += s0 * w[1][b];
+                tb[k] += s0 * dw[1][b];
+                tc[k] += s1 * w[1][b];
             }
-            ta += s0 * w[1][b];
-            tb += s0 * dw[1][b];
-            tc += s1 * w[1][b];
         }
-        *val += ta * w[0][a];
-        grad[0] += ta * dw[0][a];
-        grad[1] += tb * w[0][a];
-        if (D == 3) grad[2] += tc * w[0][a];
+        for (int k = 0; k < NC; k++) {
+            val[k] += ta[k] * w[0][a];
+            grad[k][0] += ta[k] * dw[0][a];
+            grad[k][1] += tb[k] * w[0][a];
+            if (D == 3) grad[k][2] += tc[k] * w[0][a];
+        }
     }
 }
 
-/* out_i += grad w_ip . f + w_ip r (f NULL: only the second term). */
-FORCE_INLINE void scatter(const int D, double *out, const int base[3], double w[3][3], double dw[3][3],
-                          const double *f, double r) {
+/* out_k,i += grad w_ip . f_k + w_ip r_k for NC (1 or 2) outputs sharing the stencil. */
+FORCE_INLINE void scatter(const int D, const int NC, double *const out[2], const int base[3], double w[3][3],
+                          double dw[3][3], double f[2][3], const double r[2]) {
     for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++) {
-            const double wab = w[0][a] * w[1][b];
-            /* the node's term is A w2_c + B dw2_c */
-            const double A = wab * r + (f ? dw[0][a] * w[1][b] * f[0] + w[0][a] * dw[1][b] * f[1] : 0.0);
-            if (D == 3) {
-                const double B = f ? wab * f[2] : 0.0;
-                double *oc = out + tile_index(D, base, a, b, 0);
-                for (int c = 0; c < 3; c++) oc[c] += A * w[2][c] + B * dw[2][c];
-            } else {
-                out[tile_index(D, base, a, b, 0)] += A;
+            const double wab = w[0][a] * w[1][b], p0 = dw[0][a] * w[1][b], p1 = w[0][a] * dw[1][b];
+            const int t = tile_index(D, base, a, b, 0);
+            for (int k = 0; k < NC; k++) {
+                /* the node's term is A w2_c + B dw2_c */
+                const double A = wab * r[k] + (p0 * f[k][0] + p1 * f[k][1]);
+                if (D == 3) {
+                    const double B = wab * f[k][2];
+                    double *oc = out[k] + t;
+                    for (int c = 0; c < 3; c++) oc[c] += A * w[2][c] + B * dw[2][c];
+                } else {
+                    out[k][t] += A;
+                }
             }
         }
 }
@@ -132,9 +142,10 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
         const double Vp = V0[i] * t3_det(Fc + 9 * i);
         /* value and gradient at the particle, contracted one axis at a time (the
          * weights are a tensor product): about half the work of node by node */
-        double xp = 0, gx[3] = {0, 0, 0}, si = 0, gs[3] = {0, 0, 0};
-        if (HEAT) gather(D, tin, base, w, dw, &xp, gx);
-        if (WATER) gather(D, sat, base, w, dw, &si, gs);
+        double val[2] = {0, 0}, grad[2][3] = {{0, 0, 0}, {0, 0, 0}};
+        const double *const in[2] = {HEAT ? tin : sat, sat};
+        gather(D, HEAT + WATER, in, base, w, dw, val, grad);
+        const double xp = HEAT ? val[0] : 0.0, *gx = grad[0], si = WATER ? val[HEAT] : 0.0, *gs = grad[HEAT];
         double qk[3] = {0, 0, 0}, bcoef = 0, source = 0;
         if (HEAT) {
             const double kap = Vp * ms->core[CP_CONDUCTIVITY];
@@ -174,11 +185,24 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
             memcpy(Q + 3 * i, qn, sizeof qn);
         }
         /* scatter grad w . f + w r, again one axis at a time */
-        if (HEAT) scatter(D, tout, base, w, dw, qk, bcoef * xp - (SRC && !apart ? source : 0.0));
-        if (apart) scatter(D, tsrc, base, w, dw, NULL, source);
-        if (WATER) {
-            const double mq[3] = {dt * Vp * qn[0], dt * Vp * qn[1], dt * Vp * qn[2]};
-            scatter(D, dm, base, w, dw, mq, -dt * evap);
+        {
+            double *const out[2] = {HEAT ? tout : dm, dm};
+            double f[2][3], r[2];
+            if (HEAT) {
+                for (int d = 0; d < 3; d++) f[0][d] = qk[d];
+                r[0] = bcoef * xp - (SRC && !apart ? source : 0.0);
+            }
+            if (WATER) {
+                for (int d = 0; d < 3; d++) f[HEAT][d] = dt * Vp * qn[d];
+                r[HEAT] = -dt * evap;
+            }
+            scatter(D, HEAT + WATER, out, base, w, dw, f, r);
+        }
+        if (apart) {
+            double *const out[2] = {tsrc, tsrc};
+            double f[2][3] = {{0, 0, 0}, {0, 0, 0}};
+            const double r[2] = {source, 0};
+            scatter(D, 1, out, base, w, dw, f, r);
         }
     }
     for (int a = 0; a < GRID_T; a++) /* flush into the block and its +1 neighbours */
