@@ -128,6 +128,24 @@ print(f"lowest height {hs[i]:.5f} m at t = {rows[i]['t']} s with gap {gs[i]:.5f}
 sys.exit(0 if i < len(hs) - 1 and hs[-1] > hs[i] and gs[-1] > gs[i] else 1)
 PY
     ;;
+# §7 and Fig. 2: muffins rise into a dome. The tin sets the batter at its
+# walls and floor while the centre still rises with gas, so at the end of a
+# coarse bake (2D, dx 4 mm, one cup, 1.5 s: the crumb has set by ~1.3 s) the
+# centre's top stands more than one grid cell above the top at the walls, the
+# top's parabola curves down, and the centre rose from where it started.
+claim_muffin_domes)
+    run muffins --set cups=1 --set dx=0.004 --set until_t=1.5 --set frames=3 >/dev/null
+    python3 - hearth-out/muffins/muffins.csv <<'PY' || fail "the muffin does not dome (numbers above)"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+dx = 0.004
+top0, top1 = float(rows[0]["top_above_rim_1_m"]), float(rows[-1]["top_above_rim_1_m"])
+ce, k = float(rows[-1]["centre_above_edge_1_m"]), float(rows[-1]["top_curvature_1_1_per_m"])
+print(f"t = {rows[-1]['t']} s: centre {ce * 1e3:.2f} mm above the edge (need > dx = {dx * 1e3:.1f} mm), "
+      f"top curvature {k:.2f} 1/m (need < 0); centre top {top0 * 1e3:.2f} -> {top1 * 1e3:.2f} mm from the rim")
+sys.exit(0 if ce > dx and k < 0 and top1 > top0 else 1)
+PY
+    ;;
 # §7.1, Figs. 9 and 13: a drying body loses volume as it loses water,
 # monotonically: over a coarse drying run, sampled every 0.1 s, the water left
 # falls at every sample and so does the volume (s:volume()).
