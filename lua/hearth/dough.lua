@@ -63,8 +63,9 @@
 --      1.3-1.7 s under ~110 Pa of gas (kinetic energy x15).
 --    - gas x2.5 (alpha^g / 240): at x0.1 the pressure peaked at 58 Pa, below
 --      the batter's own weight at the floor (rho g h ~ 110 Pa), and nothing
---      rose. Centre above edge (kappa, tau and cap as here, 2D, dx 4 mm):
---      gas x2 3.5 mm, x2.5 5.0 mm, x3 6.1 mm.
+--      rose. Centre above edge (kappa, tau and cap as here, 2D, dx 4 mm,
+--      one cup, edge = the top at the walls): gas x2 3.5 mm, x2.5 5.0 mm,
+--      x3 6.1 mm; the scene's measure at x2.5: 5.5 mm (claim_muffin_domes).
 --    - max_porosity 0.6 (a plugin parameter, not in the paper; see the
 --      header of plugins/cam_clay_dough.c): past n^p ~ 0.45 a layer holding
 --      more gas than ~0.385 tau_y inflates without end, and without the cap
