@@ -5,7 +5,8 @@
  * domain wall: material pressed against a wall (particles stop one cell from
  * it, so their stencils reach the last node) does not exchange heat or water
  * through it. A node inside a collider is contact, not air. Each boundary
- * node picks its closest particle.
+ * node picks its closest particle: P2G records every node's closest particle
+ * as it scatters (mpm.c), so the search costs no pass of its own.
  *
  * A pick carries the node's face area dx^(dim-1) rather than the paper's
  * S_p = (9 pi/16 V_p^2)^(1/3): with one pick per boundary node the latter
@@ -58,23 +59,23 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
     const int D = g->dim, NPB = g->nodes_per_block, n = ps->n;
     double *area = s->bnd_area;
     memset(area, 0, sizeof(double) * (size_t)n);
-    const double *X = pcold(ps, PC_X);
     int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     if (flags)
         for (int i = 0; i < n; i++) flags[i] &= ~PF_BOUNDARY;
     if (!boundary_needed(s)) return HEARTH_OK;
 
-    /* mark boundary nodes: CH_CG_R = best squared distance so far (-1: not a
-     * boundary node), CH_CG_P = the particle picked */
+    /* P2G left each node's closest particle in CH_CG_P (index + 1; 0: none). Keep
+     * it on boundary nodes, clear it elsewhere. */
 #pragma omp parallel for schedule(dynamic, 4) if (n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         double *node = grid_block(g, k);
         int bc[3];
         grid_block_coords(g, g->active[k], bc);
         for (int l = 0; l < NPB; l++) {
-            node[CH_CG_R * NPB + l] = -1;
-            node[CH_CG_P * NPB + l] = -1;
-            if (node[l] <= 0) continue;
+            if (node[l] <= 0 || node[CH_CG_P * NPB + l] == 0) {
+                node[CH_CG_P * NPB + l] = 0;
+                continue;
+            }
             int gi[3];
             grid_node_index(g, bc, l, gi);
             int edge = 0;
@@ -84,69 +85,20 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
                     nb[d] += sgn;
                     if (air_or_mass(g, nb) == 0) edge = 1;
                 }
-            if (!edge) continue;
             double xi[3] = {0, 0, 0};
             for (int d = 0; d < D; d++) xi[d] = g->lo[d] + gi[d] * g->dx;
             int in_col = 0;
-            for (int c = 0; c < s->ncol && !in_col; c++)
+            for (int c = 0; c < s->ncol && edge && !in_col; c++)
                 in_col = collider_near(&s->cols[c], xi) && collider_sdf(&s->cols[c], xi, NULL) < 0;
-            if (!in_col) node[CH_CG_R * NPB + l] = INFINITY;
-        }
-    }
-    /* the closest particle of each boundary node; colours keep writes apart, and
-     * particles go in sorted order, so ties go to the lower index on any thread count */
-    for (int col = 0; col < 8; col++) {
-#pragma omp parallel for schedule(dynamic, 2) if (n >= SCENE_PARALLEL_MIN)
-        for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) {
-            const pblock pb = s->pb[s->colour_pb[q]];
-            /* most particle blocks lie inside the body: skip those whose tile has no boundary node */
-            int bc[3], any = 0;
-            grid_block_coords(g, pb.block, bc);
-            for (int a = 0; a < GRID_T && !any; a++)
-                for (int b = 0; b < GRID_T && !any; b++)
-                    for (int c = 0; c < (D == 3 ? GRID_T : 1) && !any; c++) {
-                        const int gi[3] = {bc[0] * GRID_B + a, bc[1] * GRID_B + b, D == 3 ? bc[2] * GRID_B + c : 0};
-                        const int slot = g->slot[grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B)];
-                        if (slot < 0) continue;
-                        const int l = D == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
-                                             : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
-                        any = grid_block(g, slot)[CH_CG_R * NPB + l] >= 0;
-                    }
-            if (!any) continue;
-            for (int i = pb.start; i < pb.end; i++) {
-                const double *x = X + 3 * i;
-                int base[3] = {0, 0, 0};
-                for (int d = 0; d < D; d++) base[d] = (int)floor((x[d] - g->lo[d]) * g->inv_dx - 0.5);
-                for (int a = 0; a < 3; a++)
-                    for (int b = 0; b < 3; b++)
-                        for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                            const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
-                            const int slot = g->slot[grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B)];
-                            if (slot < 0) continue;
-                            double *node = grid_block(g, slot);
-                            const int l = D == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
-                                                 : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
-                            double *best = &node[CH_CG_R * NPB + l];
-                            if (*best < 0) continue;
-                            double d2 = 0;
-                            for (int d = 0; d < D; d++) {
-                                const double e = x[d] - (g->lo[d] + gi[d] * g->dx);
-                                d2 += e * e;
-                            }
-                            if (d2 < *best) {
-                                *best = d2;
-                                node[CH_CG_P * NPB + l] = i;
-                            }
-                        }
-            }
+            if (!edge || in_col) node[CH_CG_P * NPB + l] = 0;
         }
     }
     const double face = D == 2 ? g->dx : g->dx * g->dx;
     for (int k = 0; k < g->nactive; k++) { /* serial: several nodes may pick one particle */
         const double *node = grid_block(g, k);
         for (int l = 0; l < NPB; l++) {
-            const int p = (int)node[CH_CG_P * NPB + l];
-            if (node[CH_CG_R * NPB + l] < 0 || p < 0) continue;
+            const int p = (int)node[CH_CG_P * NPB + l] - 1;
+            if (p < 0) continue;
             area[p] += face;
             if (flags) flags[p] |= PF_BOUNDARY;
         }

@@ -26,6 +26,7 @@
 #include "water.h"
 #include "boundary.h"
 #include "mixing.h"
+#include "transport.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -116,9 +117,16 @@ static int all_finite(const double *a, int n) {
     return 1;
 }
 
-/* D (2 or 3) and HEAT (temperature live) are compile-time constants in each
- * instantiation below, so a momentum-only scene runs the momentum-only loops. */
-FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k, double dt, double *tile) {
+/* P2G's tile holds only the channels it writes: momentum, then heat, then
+ * water, then each node's closest particle for the boundary search
+ * (boundary.c: squared distance in CH_CG_R, index + 1 in CH_CG_P). */
+enum { P2G_HC = GRID_NCH_MOMENTUM, P2G_T, P2G_MW, P2G_SW, P2G_BD, P2G_BI, P2G_NCH };
+static const int p2g_channel[P2G_SW + 1] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T, CH_MW, CH_SW};
+
+/* D (2 or 3), HEAT (temperature live) and WATER (water live) are compile-time
+ * constants in each instantiation below, so a momentum-only scene runs the
+ * momentum-only loops. */
+FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const int WATER, int k, double dt, double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
     const pblock pb = s->pb[k];
@@ -128,8 +136,13 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k,
     int bc[3];
     grid_block_coords(g, pb.block, bc);
     const int org[3] = {bc[0] * GRID_B, bc[1] * GRID_B, bc[2] * GRID_B};
-    const int NCH = HEAT ? CH_T + 1 : GRID_NCH_MOMENTUM; /* the channels P2G writes */
-    memset(tile, 0, sizeof(double) * (size_t)NCH * (size_t)TN);
+    memset(tile, 0, sizeof(double) * GRID_NCH_MOMENTUM * (size_t)TN);
+    if (HEAT) memset(tile + P2G_HC * TN, 0, sizeof(double) * 2 * (size_t)TN);
+    if (WATER) memset(tile + P2G_MW * TN, 0, sizeof(double) * 2 * (size_t)TN);
+    const int picks = (HEAT || WATER) && s->bnd_picks;
+    double *bd = tile + P2G_BD * TN, *bi = tile + P2G_BI * TN;
+    if (picks)
+        for (int t = 0; t < TN; t++) bd[t] = INFINITY, bi[t] = -1;
 
     const double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *M = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
     double *Cc = pcold(ps, PC_C), *Fc = pcold(ps, PC_F), *state = pcold(ps, PC_STATE);
@@ -214,17 +227,24 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k,
         for (int a = 0; a < 9; a++) Q[a] = mC * C[a] - k0 * tau[a];
 
         int base[3] = {0, 0, 0};
-        double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
+        double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3], e2[3][3] = {{0}};
         for (int d = 0; d < D; d++) {
             const double Xd = (x[d] - g->lo[d]) * inv_dx;
             const int b = (int)floor(Xd - 0.5);
             fx[d] = Xd - b;
             base[d] = b - org[d];
             bspline_weights(fx[d], w[d], dw);
+            if (picks) /* squared distances to the nodes, as x - x_i: near-ties on a lattice round the same way each step */
+                for (int a = 0; a < 3; a++) {
+                    const double e = x[d] - (g->lo[d] + (b + a) * dx);
+                    e2[d][a] = e * e;
+                }
         }
         const double mv0 = m * v[0], mv1 = m * v[1], mv2 = m * v[2];
         /* heat (eq. 17, weighted by heat capacity m alpha so energy is conserved across materials) */
-        const double hc = Tcol ? m * s->mats[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = Tcol ? hc * Tcol[i] : 0.0;
+        const double hc = HEAT ? m * s->mats[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = HEAT ? hc * Tcol[i] : 0.0;
+        /* water mass and capacity rho_0^w J V_0 (eq. 15, 18) */
+        const double mw = WATER ? Wcol[i] : 0.0, cap = WATER ? s->mats[mat[i]].core[CP_WATER_DENSITY] * J * V0[i] : 0.0;
         for (int a = 0; a < 3; a++) {
             const double d0 = (a - fx[0]) * dx;
             for (int b = 0; b < 3; b++) {
@@ -235,8 +255,12 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k,
                     tile[TN + t] += wab * (mv0 + Q[0] * d0 + Q[1] * d1);
                     tile[2 * TN + t] += wab * (mv1 + Q[3] * d0 + Q[4] * d1);
                     if (HEAT) {
-                        tile[CH_HC * TN + t] += wab * hc;
-                        tile[CH_T * TN + t] += wab * hct;
+                        tile[P2G_HC * TN + t] += wab * hc;
+                        tile[P2G_T * TN + t] += wab * hct;
+                    }
+                    if (WATER) {
+                        tile[P2G_MW * TN + t] += wab * mw;
+                        tile[P2G_SW * TN + t] += wab * cap;
                     }
                 } else {
                     for (int c = 0; c < 3; c++) {
@@ -247,13 +271,28 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k,
                         tile[2 * TN + t] += wt * (mv1 + Q[3] * d0 + Q[4] * d1 + Q[5] * d2);
                         tile[3 * TN + t] += wt * (mv2 + Q[6] * d0 + Q[7] * d1 + Q[8] * d2);
                         if (HEAT) {
-                            tile[CH_HC * TN + t] += wt * hc;
-                            tile[CH_T * TN + t] += wt * hct;
+                            tile[P2G_HC * TN + t] += wt * hc;
+                            tile[P2G_T * TN + t] += wt * hct;
+                        }
+                        if (WATER) {
+                            tile[P2G_MW * TN + t] += wt * mw;
+                            tile[P2G_SW * TN + t] += wt * cap;
                         }
                     }
                 }
             }
         }
+        if (picks) /* in particle order with <: a tie goes to the lower index. A loop of its own, so the one above stays branch-free */
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++)
+                    for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                        const int t = D == 2 ? (base[0] + a) * GRID_T + (base[1] + b)
+                                             : ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + c);
+                        const double r2 = D == 2 ? e2[0][a] + e2[1][b] : e2[0][a] + e2[1][b] + e2[2][c];
+                        const int better = r2 < bd[t];
+                        bd[t] = better ? r2 : bd[t];
+                        bi[t] = better ? i : bi[t];
+                    }
     }
 
     /* flush the tile into the block and its +1 neighbours */
@@ -266,24 +305,36 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, int k,
                 double *node = grid_block(g, g->slot[blk]);
                 const int l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B
                                      : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
-                for (int ch = 0; ch < NCH; ch++) node[ch * NPB + l] += tile[ch * TN + t];
+                for (int ch = 0; ch < GRID_NCH_MOMENTUM; ch++) node[ch * NPB + l] += tile[ch * TN + t];
+                if (HEAT)
+                    for (int ch = P2G_HC; ch <= P2G_T; ch++) node[p2g_channel[ch] * NPB + l] += tile[ch * TN + t];
+                if (WATER)
+                    for (int ch = P2G_MW; ch <= P2G_SW; ch++) node[p2g_channel[ch] * NPB + l] += tile[ch * TN + t];
+                if (picks && bi[t] >= 0) {
+                    /* the closest over the blocks that reach the node; colours flush in
+                     * order, so a tie goes to the earlier colour whatever the threads */
+                    double *nd = &node[CH_CG_R * NPB + l], *ni = &node[CH_CG_P * NPB + l];
+                    if (*ni == 0 || bd[t] < *nd) *nd = bd[t], *ni = bi[t] + 1;
+                }
             }
 }
 
-static void p2g_block_2d(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 2, 0, k, dt, tile); }
-static void p2g_block_3d(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 3, 0, k, dt, tile); }
-static void p2g_block_2d_heat(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 2, 1, k, dt, tile); }
-static void p2g_block_3d_heat(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 3, 1, k, dt, tile); }
+typedef void (*block_fn)(hearth_scene *, int, double, double *);
+/* the instantiations, indexed [dim == 3][heat][water] */
+#define BLOCK_FN(kind, D, H, W) \
+    static void kind##_##D##H##W(hearth_scene *s, int k, double dt, double *tile) { kind##_block(s, D, H, W, k, dt, tile); }
+BLOCK_FN(p2g, 2, 0, 0) BLOCK_FN(p2g, 2, 0, 1) BLOCK_FN(p2g, 2, 1, 0) BLOCK_FN(p2g, 2, 1, 1)
+BLOCK_FN(p2g, 3, 0, 0) BLOCK_FN(p2g, 3, 0, 1) BLOCK_FN(p2g, 3, 1, 0) BLOCK_FN(p2g, 3, 1, 1)
+static const block_fn p2g_fns[2][2][2] = {{{p2g_200, p2g_201}, {p2g_210, p2g_211}}, {{p2g_300, p2g_301}, {p2g_310, p2g_311}}};
 
 void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
     (void)rep;
-    const int heat = thermal_active(s);
-    void (*fn)(hearth_scene *, int, double, double *) =
-        s->g.dim == 2 ? (heat ? p2g_block_2d_heat : p2g_block_2d) : (heat ? p2g_block_3d_heat : p2g_block_3d);
+    const block_fn fn = p2g_fns[s->g.dim == 3][thermal_active(s)][water_active(s)];
+    s->bnd_picks = boundary_needed(s);
     for (int k = 0; k < s->npb; k++) s->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
-        double tile[GRID_NCH_MAX * GRID_T * GRID_T * GRID_T];
+        double tile[P2G_NCH * GRID_T * GRID_T * GRID_T];
         for (int col = 0; col < 8; col++) {
             const int a = s->colour_start[col], b = s->colour_start[col + 1];
 #pragma omp for schedule(dynamic, 2)
@@ -348,7 +399,7 @@ void mpm_grid_update(hearth_scene *s, double dt) {
 
 /* ---- G2P ------------------------------------------------------------- */
 
-FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k, double dt, double *tile) {
+FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const int WATER, int k, double dt, double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
     double *Tcol = HEAT ? pcold(ps, PC_TEMPERATURE) : NULL, *Tmax = HEAT ? pcold(ps, PC_TEMP_MAX) : NULL;
@@ -376,6 +427,10 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
                     tile[3 * TN + t] = node[CH_T * NPB + l] - node[CH_T0 * NPB + l];
                     tile[4 * TN + t] = node[CH_T * NPB + l];
                 }
+                if (WATER) { /* the change of node saturation, ds_i = dm_i / (rho_0 V_i) (water.c) */
+                    const double cw = node[CH_MW * NPB + l];
+                    tile[5 * TN + t] = cw > 0 ? node[CH_DMW * NPB + l] / cw : 0.0;
+                }
             }
 
     double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *Cc = pcold(ps, PC_C);
@@ -388,6 +443,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
         hi[d] = g->lo[d] + (g->nn[d] - 2) * dx;
     }
     double ke = 0, vmax = -1, cmax = 0, numax = 0, pscratch[SCENE_MAX_PARAMS];
+    double w_removed = 0, w_dmax = 0, w_emax = 0;
     int fastest = -1;
     long ood = 0;
     for (int i = pb.start; i < pb.end; i++) {
@@ -401,7 +457,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
             base[d] = b - org[d];
             bspline_weights(fx[d], w[d], dw);
         }
-        double nv[3] = {0, 0, 0}, B[9] = {0}, dT = 0, Tn = 0;
+        double nv[3] = {0, 0, 0}, B[9] = {0}, dT = 0, Tn = 0, ds = 0;
         for (int a = 0; a < 3; a++) {
             const double d0 = (a - fx[0]) * dx;
             for (int b = 0; b < 3; b++) {
@@ -410,6 +466,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
                     const int t = (base[0] + a) * GRID_T + (base[1] + b);
                     const double u0 = tile[t], u1 = tile[TN + t];
                     if (HEAT) dT += wab * tile[3 * TN + t], Tn += wab * tile[4 * TN + t];
+                    if (WATER) ds += wab * tile[5 * TN + t];
                     nv[0] += wab * u0;
                     nv[1] += wab * u1;
                     B[0] += wab * u0 * d0; B[1] += wab * u0 * d1;
@@ -420,6 +477,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
                         const int t = ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + c);
                         const double u0 = tile[t], u1 = tile[TN + t], u2 = tile[2 * TN + t];
                         if (HEAT) dT += wt * tile[3 * TN + t], Tn += wt * tile[4 * TN + t];
+                        if (WATER) ds += wt * tile[5 * TN + t];
                         nv[0] += wt * u0; nv[1] += wt * u1; nv[2] += wt * u2;
                         B[0] += wt * u0 * d0; B[1] += wt * u0 * d1; B[2] += wt * u0 * d2;
                         B[3] += wt * u1 * d0; B[4] += wt * u1 * d1; B[5] += wt * u1 * d2;
@@ -429,6 +487,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
             }
         }
         for (int a = 0; a < 9; a++) C[a] = Dinv * B[a];
+        /* water first: its step limits use the temperature the flux was evaluated at */
+        if (WATER) w_removed += water_take(s, i, ds, &w_dmax, &w_emax);
         if (HEAT) { /* FLIP (eq. 21): the particle takes its nodes' temperature change */
             const double T0 = Tcol[i], flip = s->def.heat_flip;
             Tcol[i] = flip == 1.0 ? T0 + dT : flip * (T0 + dT) + (1.0 - flip) * Tn; /* FLIP-PIC blend */
@@ -482,20 +542,20 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, int k,
     pp->fastest = fastest;
     pp->cmax = cmax;
     pp->ood = ood;
+    pp->water_removed = w_removed;
+    pp->water_dmax = w_dmax;
+    pp->water_emax = w_emax;
 }
 
-static void g2p_block_2d(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 2, 0, k, dt, tile); }
-static void g2p_block_3d(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 3, 0, k, dt, tile); }
-static void g2p_block_2d_heat(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 2, 1, k, dt, tile); }
-static void g2p_block_3d_heat(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 3, 1, k, dt, tile); }
+BLOCK_FN(g2p, 2, 0, 0) BLOCK_FN(g2p, 2, 0, 1) BLOCK_FN(g2p, 2, 1, 0) BLOCK_FN(g2p, 2, 1, 1)
+BLOCK_FN(g2p, 3, 0, 0) BLOCK_FN(g2p, 3, 0, 1) BLOCK_FN(g2p, 3, 1, 0) BLOCK_FN(g2p, 3, 1, 1)
+static const block_fn g2p_fns[2][2][2] = {{{g2p_200, g2p_201}, {g2p_210, g2p_211}}, {{g2p_300, g2p_301}, {g2p_310, g2p_311}}};
 
 void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
-    const int heat = thermal_active(s);
-    void (*fn)(hearth_scene *, int, double, double *) =
-        s->g.dim == 2 ? (heat ? g2p_block_2d_heat : g2p_block_2d) : (heat ? g2p_block_3d_heat : g2p_block_3d);
+    const block_fn fn = g2p_fns[s->g.dim == 3][thermal_active(s)][water_active(s)];
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
-        double tile[5 * GRID_T * GRID_T * GRID_T];
+        double tile[6 * GRID_T * GRID_T * GRID_T];
 #pragma omp for schedule(dynamic, 2)
         for (int k = 0; k < s->npb; k++) fn(s, k, dt, tile);
     }
@@ -527,10 +587,19 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     if (mixing_active(s) && (st = mixing_update(s, err))) return st;
     mpm_p2g(s, dt, rep);
     const int heat = thermal_active(s), water = water_active(s);
-    if ((heat || water) && (st = boundary_find(s, err))) return st;
-    if (heat && (st = thermal_grid_update(s, dt, err))) return st;
-    if (water) water_update(s, dt);
+    if (heat || water) {
+        if ((st = boundary_find(s, err))) return st;
+        if (heat && (st = thermal_prepare(s, err))) return st;
+        if (water) water_prepare(s);
+        /* L theta^n and the heat sources, the water flux and evaporation: one pass */
+        /* forward Euler needs only L theta^n - b, so the sources go into CH_R too (CH_B stays 0) */
+        const transport_pass tp = {.heat_in = heat ? CH_T : -1, .heat_out = CH_R, .heat_src = s->def.heat_implicit ? CH_B : CH_R,
+                                   .water = water, .dt = dt};
+        transport_apply(s, &tp);
+        if (heat) thermal_finish(s, dt);
+    }
     mpm_grid_update(s, dt);
     mpm_g2p(s, dt, rep);
+    if (water) water_finish(s);
     return HEARTH_OK;
 }

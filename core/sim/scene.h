@@ -123,6 +123,7 @@ struct hearth_scene {
     /* boundary particles (boundary.c): each one's share of the air surface */
     double *bnd_area;
     int bnd_area_cap;
+    int bnd_picks; /* P2G records each node's closest particle (boundary.c) this step */
 
     /* water (water.c) */
     double water_lost;            /* through the boundary so far (kg) */

@@ -9,6 +9,7 @@
  * whose columns sum to zero, so conduction conserves heat exactly in both
  * the forward (gamma = 0) and backward (gamma = 1) Euler updates of §6.3.
  * Particles take the change of their nodes' temperature (FLIP, eq. 21) in G2P.
+ * The operator itself is applied by transport.c, in one pass with water's.
  *
  * Boundaries relax toward the outside temperature: the flux into the body is
  * S beta (theta_out - theta) (the printed signs in §4/§6.3 are ambiguous; the
@@ -28,6 +29,7 @@
 #include "error.h"
 #include "scene.h"
 #include "tensor.h"
+#include "transport.h"
 
 #define KELVIN 273.15
 
@@ -96,107 +98,6 @@ static void find_boundary(hearth_scene *s) {
     }
 }
 
-/* ---- the operator ------------------------------------------------------ */
-
-/* Node of a tile: the tile spans GRID_T nodes per axis from the block origin,
- * i.e. the block and its +1 neighbours (as in P2G). */
-static double *tile_node(const grid *g, const int bc[3], int a, int b, int c, int *l) {
-    const int D = g->dim;
-    const int blk = grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0));
-    *l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
-    return grid_block(g, g->slot[blk]);
-}
-
-static void apply_block(hearth_scene *s, int q, int in, int out, int src, double *tin, double *tout, double *tsrc) {
-    grid *g = &s->g;
-    particles *ps = &s->ps;
-    const int D = g->dim, NPB = g->nodes_per_block, TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
-    const pblock pb = s->pb[s->colour_pb[q]];
-    int bc[3];
-    grid_block_coords(g, pb.block, bc);
-    for (int a = 0; a < GRID_T; a++) /* gather the input once into a dense tile */
-        for (int b = 0; b < GRID_T; b++)
-            for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
-                int l;
-                const double *node = tile_node(g, bc, a, b, c, &l);
-                tin[D == 2 ? a * GRID_T + b : (a * GRID_T + b) * GRID_T + c] = node[in * NPB + l];
-            }
-    memset(tout, 0, sizeof(double) * (size_t)TN);
-    if (src >= 0) memset(tsrc, 0, sizeof(double) * (size_t)TN);
-    const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0), *Fc = pcold(ps, PC_F), *Cc = pcold(ps, PC_C);
-    const double *T = pcold(ps, PC_TEMPERATURE);
-    const int *mat = pcoli(ps, PC_MAT);
-    for (int i = pb.start; i < pb.end; i++) {
-        int base[3] = {0, 0, 0};
-        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
-        for (int d = 0; d < D; d++) {
-            const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
-            const int bb = (int)floor(Xd - 0.5);
-            bspline_weights(Xd - bb, w[d], dw[d]);
-            for (int k = 0; k < 3; k++) dw[d][k] *= g->inv_dx;
-            base[d] = bb - bc[d] * GRID_B;
-        }
-        const material_slot *ms = &s->mats[mat[i]];
-        const double J = t3_det(Fc + 9 * i), Vp = V0[i] * J, kap = ms->core[CP_CONDUCTIVITY];
-        double xp = 0, gx[3] = {0, 0, 0};
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++)
-                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                    const double wc = D == 3 ? w[2][c] : 1.0, v = tin[D == 2 ? (base[0] + a) * GRID_T + base[1] + b
-                                                                               : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c];
-                    xp += w[0][a] * w[1][b] * wc * v;
-                    gx[0] += dw[0][a] * w[1][b] * wc * v;
-                    gx[1] += w[0][a] * dw[1][b] * wc * v;
-                    if (D == 3) gx[2] += w[0][a] * w[1][b] * dw[2][c] * v;
-                }
-        const double qk[3] = {Vp * kap * gx[0], Vp * kap * gx[1], Vp * kap * gx[2]};
-        const double bcoef = s->bnd_coef[i];
-        double source = 0;
-        if (src >= 0) {
-            source = bcoef * s->bnd_temp[i];
-            const double cl = ms->core[CP_EXPANSION];
-            if (cl > 0) source -= V0[i] * cl * (T[i] + KELVIN) * (Cc[9 * i] + Cc[9 * i + 4] + Cc[9 * i + 8]);
-        }
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++)
-                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                    const double wc = D == 3 ? w[2][c] : 1.0, wt = w[0][a] * w[1][b] * wc;
-                    const double g0 = dw[0][a] * w[1][b] * wc, g1 = w[0][a] * dw[1][b] * wc,
-                                 g2 = D == 3 ? w[0][a] * w[1][b] * dw[2][c] : 0.0;
-                    const int t = D == 2 ? (base[0] + a) * GRID_T + base[1] + b
-                                         : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
-                    tout[t] += g0 * qk[0] + g1 * qk[1] + g2 * qk[2] + wt * bcoef * xp;
-                    if (src >= 0) tsrc[t] += wt * source;
-                }
-    }
-    for (int a = 0; a < GRID_T; a++) /* flush into the block and its +1 neighbours */
-        for (int b = 0; b < GRID_T; b++)
-            for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
-                const int t = D == 2 ? a * GRID_T + b : (a * GRID_T + b) * GRID_T + c;
-                int l;
-                double *node = tile_node(g, bc, a, b, c, &l);
-                node[out * NPB + l] += tout[t];
-                if (src >= 0) node[src * NPB + l] += tsrc[t];
-            }
-}
-
-/* One coloured particle pass: out_i += (L x)_i with
- *   (L x)_i = sum_p grad w_ip . (V_p kappa_p grad x_p) + sum_p S_p beta_p w_ip x_p,
- * and, when src >= 0, src_i += sum_p w_ip (S_p beta_p theta_out,p + e_p), the
- * sources: boundary ambient and the expansion term e_p = -V0 c lambda theta_abs div v.
- * Each particle block works in dense tiles, as P2G does; colours keep it
- * deterministic and free of atomics. */
-static void apply(hearth_scene *s, int in, int out, int src) {
-    for (int col = 0; col < 8; col++) {
-#pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
-        {
-            double tin[GRID_T * GRID_T * GRID_T], tout[GRID_T * GRID_T * GRID_T], tsrc[GRID_T * GRID_T * GRID_T];
-#pragma omp for schedule(dynamic, 2)
-            for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) apply_block(s, q, in, out, src, tin, tout, tsrc);
-        }
-    }
-}
-
 /* Deterministic dot product over nodes with heat capacity: per block, then in block order. */
 static double dot(hearth_scene *s, int a, int b) {
     grid *g = &s->g;
@@ -222,7 +123,7 @@ static void clear_channel(hearth_scene *s, int ch) {
     for (int k = 0; k < g->nactive; k++) memset(grid_block(g, k) + ch * NPB, 0, sizeof(double) * (size_t)NPB);
 }
 
-hearth_status thermal_grid_update(hearth_scene *s, double dt, hearth_error *err) {
+hearth_status thermal_prepare(hearth_scene *s, hearth_error *err) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block, n = s->ps.n;
     if (n > s->bnd_cap || g->nactive > s->cg_cap) {
@@ -256,8 +157,18 @@ hearth_status thermal_grid_update(hearth_scene *s, double dt, hearth_error *err)
         }
     }
     find_boundary(s);
-    /* sources into CH_B, L theta^n into CH_R */
-    apply(s, CH_T, CH_R, CH_B);
+    return HEARTH_OK;
+}
+
+/* One heat-only pass of the operator (the CG's products). */
+static void apply(hearth_scene *s, int in, int out) {
+    const transport_pass tp = {.heat_in = in, .heat_out = out, .heat_src = -1, .water = 0};
+    transport_apply(s, &tp);
+}
+
+void thermal_finish(hearth_scene *s, double dt) {
+    grid *g = &s->g;
+    const int NPB = g->nodes_per_block;
     if (!s->def.heat_implicit) { /* forward Euler (gamma = 0) */
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int k = 0; k < g->nactive; k++) {
@@ -267,7 +178,7 @@ hearth_status thermal_grid_update(hearth_scene *s, double dt, hearth_error *err)
                 if (c > 0) node[CH_T * NPB + l] += dt * (node[CH_B * NPB + l] - node[CH_R * NPB + l]) / c;
             }
         }
-        return HEARTH_OK;
+        return;
     }
     /* backward Euler (gamma = 1): (C/dt + L) x = C/dt theta^n + b, solved by
      * conjugate gradients from x = theta^n; r = b - L theta^n. Preconditioned by
@@ -302,7 +213,7 @@ hearth_status thermal_grid_update(hearth_scene *s, double dt, hearth_error *err)
     s->cg_iterations = 0;
     for (int it = 0; it < 2000 && sqrt(rr) > 1e-12 * scale; it++) {
         clear_channel(s, CH_R);
-        apply(s, CH_CG_P, CH_R, -1);
+        apply(s, CH_CG_P, CH_R);
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int k = 0; k < g->nactive; k++) {
             double *node = grid_block(g, k);
@@ -335,5 +246,4 @@ hearth_status thermal_grid_update(hearth_scene *s, double dt, hearth_error *err)
         }
         s->cg_iterations = it + 1;
     }
-    return HEARTH_OK;
 }

@@ -10,9 +10,13 @@ struct hearth_scene;
 int thermal_active(const struct hearth_scene *s);
 /// Largest explicit heat step (s), or INFINITY when implicit or inactive.
 double thermal_dt_limit(const struct hearth_scene *s);
-/// After P2G (heat capacity and C*theta scattered): temperatures on nodes,
-/// boundary particles, and the forward or backward Euler update of eq. 9.
-hearth_status thermal_grid_update(struct hearth_scene *s, double dt, hearth_error *err);
+/// After P2G (heat capacity and C*theta scattered) and the boundary search:
+/// temperatures on nodes, and the boundary particles' coefficients. Then
+/// transport_apply (transport.h) evaluates L theta^n into CH_R and the sources
+/// into CH_B.
+hearth_status thermal_prepare(struct hearth_scene *s, hearth_error *err);
+/// The forward or backward Euler update of eq. 9 on the nodes (§6.3).
+void thermal_finish(struct hearth_scene *s, double dt);
 /// Total heat energy sum m alpha (theta + 273.15) of the particles (J).
 double thermal_energy(const struct hearth_scene *s);
 #endif

@@ -22,7 +22,7 @@
  *
  * Since sum_i grad w_ip = 0 the flux term moves water without creating any;
  * each node's change then goes to its particles in proportion to
- * their water capacity (see gather_block), which also conserves exactly.
+ * their water capacity (see water_take), which also conserves exactly.
  * Boundary particles and
  * their areas S come from boundary.c (§6.6).
  *
@@ -136,160 +136,18 @@ double water_total(const hearth_scene *s) {
     return m;
 }
 
-/* ---- the passes -------------------------------------------------------- */
+/* ---- the step ----------------------------------------------------------
+ * P2G (mpm.c) scatters water mass and capacity (eq. 15, 18); water_prepare
+ * turns them into node saturations; transport.c evaluates the flux and
+ * evaporation (eq. 22, 25) into CH_DMW in one pass with heat; G2P hands each
+ * particle its share (water_take); water_finish sums the step's losses. */
 
-/* Water mass and capacity to the nodes (eq. 15, 18). */
-static void scatter_block(hearth_scene *s, int q, double *tile) {
-    grid *g = &s->g;
-    const particles *ps = &s->ps;
-    const int TN = grid_tile_count(g), NPB = g->nodes_per_block;
-    const pblock pb = s->pb[s->colour_pb[q]];
-    int bc[3];
-    grid_block_coords(g, pb.block, bc);
-    memset(tile, 0, sizeof(double) * 2 * (size_t)TN);
-    const double *X = pcold(ps, PC_X), *W = pcold(ps, PC_WATER);
-    grid_stencil st;
-    for (int i = pb.start; i < pb.end; i++) {
-        grid_tile_stencil(g, bc, X + 3 * i, &st);
-        const double cap = capacity(s, i);
-        for (int k = 0; k < st.n; k++) {
-            tile[st.t[k]] += st.w[k] * W[i];
-            tile[TN + st.t[k]] += st.w[k] * cap;
-        }
-    }
-    for (int t = 0; t < TN; t++) {
-        if (tile[TN + t] == 0.0) continue;
-        int l;
-        double *node = grid_block(g, grid_tile_slot(g, bc, t, &l));
-        node[CH_MW * NPB + l] += tile[t];
-        node[CH_SW * NPB + l] += tile[TN + t];
-    }
-}
-
-/* Fick flux (eq. 22) and evaporation into the node mass change (eq. 25), and
- * with water_momentum the relative water momentum (eq. 26-27). */
-static void flux_block(hearth_scene *s, int q, double dt, double *tile) {
-    grid *g = &s->g;
-    particles *ps = &s->ps;
-    const int D = g->dim, TN = grid_tile_count(g), NPB = g->nodes_per_block, mom = s->def.water_momentum;
-    const pblock pb = s->pb[s->colour_pb[q]];
-    int bc[3];
-    grid_block_coords(g, pb.block, bc);
-    double *sat = tile, *dm = tile + TN, *dp = tile + 2 * TN; /* dp: 3 momentum components */
-    for (int t = 0; t < TN; t++) {
-        int l;
-        const double *node = grid_block(g, grid_tile_slot(g, bc, t, &l));
-        sat[t] = node[CH_SW * NPB + l];
-    }
-    memset(dm, 0, sizeof(double) * (size_t)TN * (mom ? 4 : 1));
-    const double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *W = pcold(ps, PC_WATER), *V0 = pcold(ps, PC_VOL0),
-                 *Fc = pcold(ps, PC_F);
-    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
-    const double *area = s->bnd_area;
-    double *Q = pcold(ps, PC_QW);
-    const int *mat = pcoli(ps, PC_MAT);
-    grid_stencil st;
-    for (int i = pb.start; i < pb.end; i++) {
-        grid_tile_stencil(g, bc, X + 3 * i, &st);
-        const material_slot *ms = &s->mats[mat[i]];
-        const double rho0 = ms->core[CP_WATER_DENSITY], Vp = V0[i] * t3_det(Fc + 9 * i);
-        const double sp = W[i] / (rho0 * Vp), th = theta_abs(T, i, ms);
-        double gs[3] = {0, 0, 0}, si = 0;
-        for (int k = 0; k < st.n; k++) {
-            si += sat[st.t[k]] * st.w[k];
-            for (int d = 0; d < 3; d++) gs[d] += sat[st.t[k]] * st.gw[k][d];
-        }
-        const double kq = -ms->core[CP_WATER_DIFFUSIVITY] * th * rho0 * sp; /* eq. 22 */
-        const double qn[3] = {kq * gs[0], kq * gs[1], kq * gs[2]};
-        /* evaporation from the saturation the grid sees at the particle, as the heat
-         * Robin term uses the interpolated temperature */
-        const double evap = area && area[i] > 0 ? ms->core[CP_EVAPORATION] * th * si * area[i] : 0.0; /* kg/s */
-        for (int k = 0; k < st.n; k++)
-            dm[st.t[k]] += dt * (Vp * (qn[0] * st.gw[k][0] + qn[1] * st.gw[k][1] + qn[2] * st.gw[k][2]) - st.w[k] * evap);
-        if (mom) {
-            /* v^w = v^s + q^w / rho^w; the grid takes w V dq + dt V (v^w (x) q^w) grad w */
-            double vw[3], dq[3];
-            for (int d = 0; d < 3; d++) {
-                vw[d] = V[3 * i + d] + qn[d] / (rho0 * sp);
-                dq[d] = Q[3 * i + d] - qn[d];
-            }
-            for (int k = 0; k < st.n; k++) {
-                const double qg = qn[0] * st.gw[k][0] + qn[1] * st.gw[k][1] + qn[2] * st.gw[k][2];
-                for (int d = 0; d < D; d++) dp[d * TN + st.t[k]] += Vp * (st.w[k] * dq[d] + dt * vw[d] * qg);
-            }
-        }
-        memcpy(Q + 3 * i, qn, sizeof qn);
-    }
-    for (int t = 0; t < TN; t++) {
-        int l;
-        double *node = grid_block(g, grid_tile_slot(g, bc, t, &l));
-        node[CH_DMW * NPB + l] += dm[t];
-        if (mom)
-            for (int d = 0; d < D; d++) node[(CH_PX + d) * NPB + l] += dp[d * TN + t];
-    }
-}
-
-/* Each particle takes its nodes' change of saturation (FLIP, as temperature
- * in eq. 21), dm_p = rho_0 V_p sum_i w_ip ds_i, which hands out exactly each
- * node's dm_i since V_i = sum_p V_p w_ip. Eq. 19 shares dm_i in proportion to
- * the particles' water instead; next to a dry region that multiplies a wet
- * particle's gain by s_p / s_i and pushed saturation past its largest initial
- * value (0.94 from 0.9 in water_conservation). Then the floor applies. Returns through the block's partial: water removed and
- * the largest diffusivity and evaporation rate. */
-static void gather_block(hearth_scene *s, int k) {
-    grid *g = &s->g;
-    particles *ps = &s->ps;
-    const int NPB = g->nodes_per_block;
-    const pblock pb = s->pb[k];
-    pb_partial *pp = &s->partial[k];
-    int bc[3];
-    grid_block_coords(g, pb.block, bc);
-    const int TN = grid_tile_count(g);
-    double ratio[GRID_T * GRID_T * GRID_T];
-    for (int t = 0; t < TN; t++) { /* the change of node saturation, ds_i = dm_i / (rho_0 V_i) */
-        int l;
-        const double *node = grid_block(g, grid_tile_slot(g, bc, t, &l));
-        const double c = node[CH_MW * NPB + l];
-        ratio[t] = c > 0 ? node[CH_DMW * NPB + l] / c : 0.0;
-    }
-    const double *X = pcold(ps, PC_X);
-    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
-    double *W = pcold(ps, PC_WATER);
-    const int *mat = pcoli(ps, PC_MAT);
-    double removed = 0, dmax = 0, emax = 0;
-    grid_stencil st;
-    for (int i = pb.start; i < pb.end; i++) {
-        grid_tile_stencil(g, bc, X + 3 * i, &st);
-        double r = 0;
-        for (int q = 0; q < st.n; q++) r += st.w[q] * ratio[st.t[q]];
-        const double cap = capacity(s, i), before = W[i];
-        double m = before + cap * r;
-        if (m < WATER_SATURATION_FLOOR * cap) m = WATER_SATURATION_FLOOR * cap;
-        W[i] = m;
-        removed += before - m;
-        const material_slot *ms = &s->mats[mat[i]];
-        particle_limits(ms, theta_abs(T, i, ms), m / cap, &dmax, &emax);
-    }
-    pp->water_removed = removed;
-    pp->water_dmax = dmax;
-    pp->water_emax = emax;
-}
-
-void water_update(hearth_scene *s, double dt) {
+void water_prepare(hearth_scene *s) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block;
-    const int par = s->ps.n >= SCENE_PARALLEL_MIN;
-    for (int col = 0; col < 8; col++) {
-#pragma omp parallel if (par)
-        {
-            double tile[2 * GRID_T * GRID_T * GRID_T];
-#pragma omp for schedule(dynamic, 2)
-            for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) scatter_block(s, q, tile);
-        }
-    }
     int wet = 0;
     for (int c = 0; c < s->ncol; c++) wet |= !isnan(s->cols[c].saturation);
-#pragma omp parallel for schedule(static) if (par)
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) { /* node saturation s_i = m_i^w / (rho_0^w V_i) */
         double *node = grid_block(g, k);
         int bc[3];
@@ -318,16 +176,28 @@ void water_update(hearth_scene *s, double dt) {
             }
         }
     }
-    for (int col = 0; col < 8; col++) {
-#pragma omp parallel if (par)
-        {
-            double tile[5 * GRID_T * GRID_T * GRID_T];
-#pragma omp for schedule(dynamic, 2)
-            for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) flux_block(s, q, dt, tile);
-        }
-    }
-#pragma omp parallel for schedule(dynamic, 2) if (par)
-    for (int k = 0; k < s->npb; k++) gather_block(s, k);
+}
+
+/* Each particle takes its nodes' change of saturation (FLIP, as temperature
+ * in eq. 21), dm_p = rho_0 V_p sum_i w_ip ds_i, which hands out exactly each
+ * node's dm_i since V_i = sum_p V_p w_ip. Eq. 19 shares dm_i in proportion to
+ * the particles' water instead; next to a dry region that multiplies a wet
+ * particle's gain by s_p / s_i and pushed saturation past its largest initial
+ * value (0.94 from 0.9 in water_conservation). Then the floor applies. */
+double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) {
+    particles *ps = &s->ps;
+    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    double *W = pcold(ps, PC_WATER);
+    const double cap = capacity(s, i), before = W[i];
+    double m = before + cap * r;
+    if (m < WATER_SATURATION_FLOOR * cap) m = WATER_SATURATION_FLOOR * cap;
+    W[i] = m;
+    const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
+    particle_limits(ms, theta_abs(T, i, ms), m / cap, dmax, emax);
+    return before - m;
+}
+
+void water_finish(hearth_scene *s) {
     /* reduce in block order: the same sums on any thread count */
     double removed = 0, dmax = 0, emax = 0;
     for (int k = 0; k < s->npb; k++) {

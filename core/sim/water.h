@@ -22,12 +22,17 @@ void water_init_particles(struct hearth_scene *s, int from, int to, double sat);
 double water_dt_limit(const struct hearth_scene *s);
 /// Saturation of particle i (from its water mass and current volume).
 double water_saturation(const struct hearth_scene *s, int i);
-/// After P2G and the boundary search, before the momentum grid update:
-/// grid water mass and saturation (eq. 15, 18), Fick flux and evaporation
-/// (eq. 22, 25), the particle water update (eq. 19-20), wet colliders, and
-/// with def.water_momentum the relative water momentum (eq. 26-27).
-/// Particle positions must still be those of P2G.
-void water_update(struct hearth_scene *s, double dt);
+/// After P2G (water mass and capacity scattered, eq. 15, 18): node
+/// saturations, and the wet colliders' held values. transport_apply then
+/// adds the Fick flux and evaporation (eq. 22, 25) into CH_DMW, and with
+/// def.water_momentum the relative water momentum (eq. 26-27).
+void water_prepare(struct hearth_scene *s);
+/// In G2P, at P2G's positions: particle i takes r, the interpolated change of
+/// its nodes' saturation (eq. 19-20, FLIP), floored. Returns the water it
+/// lost (kg); raises *dmax and *emax, the explicit-step limits.
+double water_take(struct hearth_scene *s, int i, double r, double *dmax, double *emax);
+/// After G2P: the step's water lost and the step limits, summed in block order.
+void water_finish(struct hearth_scene *s);
 /// Total water in the particles (kg, or kg/m in 2D).
 double water_total(const struct hearth_scene *s);
 #endif

@@ -37,7 +37,8 @@ KNOWN = {
         "chosen from its last speed and elastic wave speed; the guard catches the CFL violation at step ~18",
     ("cam_clay_dough", "porosity", "0.99"):
         "n^p_0 = 0.99 leaves eq. 12 almost no strength (its porosity coefficient grows without bound as n^p -> 1): "
-        "the dough collapses on the floor and F inverts at step ~123",
+        "the dough collapses on the floor and the guard stops it at step ~123 (F inverts or the CFL trips in the same "
+        "step; rounding decides which the guard names first)",
     ("maxwell_sph", "bulk", "0.001"):
         "a bulk modulus of 1e-3 Pa offers no resistance to compression: the dropped block flattens until F inverts "
         "(step ~29), which is the physics, named correctly but after more than 10 steps",

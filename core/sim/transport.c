@@ -1,0 +1,226 @@
+/* transport.c: the particle pass of the diffusive fields' grid operators.
+ *
+ * Heat (Ding et al. 2019 eq. 9, §6.3) and water (eq. 22, 25) are both
+ * diffusion on the grid with particle quadrature: each particle gathers its
+ * nodes' value and gradient, and scatters grad w_ip . (flux) plus its
+ * boundary and source terms back. One pass does both when both fields are
+ * live, so their stencils, tiles and volumes are computed once per particle
+ * (the fields' cost against the momentum step is a target of issue #4).
+ *
+ * Heat:   out_i += sum_p grad w_ip . (V_p kappa_p grad x_p) + sum_p S_p beta_p w_ip x_p,
+ *         src_i += sum_p w_ip (S_p beta_p theta_out,p - V0 c lambda theta_abs,p div v_p),
+ *         x the input channel: node temperature, or the CG direction.
+ * Water:  dm_i += dt sum_p V_p q_p . grad w_ip - dt sum_p w_ip beta^w theta_p s_p S_p,
+ *         q_p = -K theta rho_0^w s_p grad s (eq. 22), and with water_momentum the
+ *         relative water momentum of eq. 26-27 (see water.c).
+ * The conduction and Fick terms use the B-spline gradients, whose columns sum
+ * to zero, so neither creates heat or water.
+ *
+ * Particle blocks go in the 2^dim colours of P2G: deterministic, no atomics.
+ * Dimension and the live fields are compile-time constants of each
+ * instantiation, as in mpm.c. */
+#include "transport.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "scene.h"
+#include "tensor.h"
+
+#define KELVIN 273.15
+#define FORCE_INLINE static inline __attribute__((always_inline))
+
+FORCE_INLINE double *tile_node(const grid *g, const int D, const int bc[3], int a, int b, int c, int *l) {
+    const int blk = grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0));
+    *l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
+    return grid_block(g, g->slot[blk]);
+}
+
+FORCE_INLINE int tile_index(const int D, const int base[3], int a, int b, int c) {
+    return D == 2 ? (base[0] + a) * GRID_T + base[1] + b : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
+}
+
+/* v and grad v at a particle from tile values: sum_i v_i w_ip and sum_i v_i grad w_ip. */
+FORCE_INLINE void gather(const int D, const double *v, const int base[3], double w[3][3], double dw[3][3],
+                         double *val, double grad[3]) {
+    for (int a = 0; a < 3; a++) {
+        double ta = 0, tb = 0, tc = 0; /* sum over b of (w1, dw1) x (sum over c of w2) and w1 x (sum over c of dw2) */
+        for (int b = 0; b < 3; b++) {
+            double s0, s1 = 0;
+            if (D == 3) {
+                const double *vc = v + tile_index(D, base, a, b, 0);
+                s0 = vc[0] * w[2][0] + vc[1] * w[2][1] + vc[2] * w[2][2];
+                s1 = vc[0] * dw[2][0] + vc[1] * dw[2][1] + vc[2] * dw[2][2];
+            } else {
+                s0 = v[tile_index(D, base, a, b, 0)];
+            }
+            ta += s0 * w[1][b];
+            tb += s0 * dw[1][b];
+            tc += s1 * w[1][b];
+        }
+        *val += ta * w[0][a];
+        grad[0] += ta * dw[0][a];
+        grad[1] += tb * w[0][a];
+        if (D == 3) grad[2] += tc * w[0][a];
+    }
+}
+
+/* out_i += grad w_ip . f + w_ip r (f NULL: only the second term). */
+FORCE_INLINE void scatter(const int D, double *out, const int base[3], double w[3][3], double dw[3][3],
+                          const double *f, double r) {
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) {
+            const double wab = w[0][a] * w[1][b];
+            /* the node's term is A w2_c + B dw2_c */
+            const double A = wab * r + (f ? dw[0][a] * w[1][b] * f[0] + w[0][a] * dw[1][b] * f[1] : 0.0);
+            if (D == 3) {
+                const double B = f ? wab * f[2] : 0.0;
+                double *oc = out + tile_index(D, base, a, b, 0);
+                for (int c = 0; c < 3; c++) oc[c] += A * w[2][c] + B * dw[2][c];
+            } else {
+                out[tile_index(D, base, a, b, 0)] += A;
+            }
+        }
+}
+
+/* tile layout: [0] heat input, [1] heat out, [2] heat sources, [3] saturation,
+ * [4] water mass change, [5..7] water momentum */
+enum { T_IN, T_OUT, T_SRC, T_SAT, T_DM, T_DP, T_COUNT = T_DP + 3 };
+
+FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const int SRC, const int WATER,
+                             const transport_pass *tp, int q, double *tile) {
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const int NPB = g->nodes_per_block, TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
+    const int mom = WATER && s->def.water_momentum;
+    const pblock pb = s->pb[s->colour_pb[q]];
+    int bc[3];
+    grid_block_coords(g, pb.block, bc);
+    for (int a = 0; a < GRID_T; a++) /* gather the inputs once into dense tiles */
+        for (int b = 0; b < GRID_T; b++)
+            for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
+                int l;
+                const double *node = tile_node(g, D, bc, a, b, c, &l);
+                const int t = D == 2 ? a * GRID_T + b : (a * GRID_T + b) * GRID_T + c;
+                if (HEAT) tile[T_IN * TN + t] = node[tp->heat_in * NPB + l];
+                if (WATER) tile[T_SAT * TN + t] = node[CH_SW * NPB + l];
+            }
+    /* sources into the output channel itself (out_i += (L x)_i - src_i) when the caller asks for one sum */
+    const int apart = SRC && tp->heat_src != tp->heat_out;
+    if (HEAT) memset(tile + T_OUT * TN, 0, sizeof(double) * (size_t)TN * (apart ? 2 : 1));
+    if (WATER) memset(tile + T_DM * TN, 0, sizeof(double) * (size_t)TN * (mom ? 4 : 1));
+    double *tin = tile + T_IN * TN, *tout = tile + T_OUT * TN, *tsrc = tile + T_SRC * TN;
+    double *sat = tile + T_SAT * TN, *dm = tile + T_DM * TN, *dp = tile + T_DP * TN;
+
+    const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0), *Fc = pcold(ps, PC_F), *Cc = pcold(ps, PC_C);
+    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    const double *V = WATER ? pcold(ps, PC_V) : NULL, *W = WATER ? pcold(ps, PC_WATER) : NULL;
+    double *Q = WATER ? pcold(ps, PC_QW) : NULL;
+    const double *area = s->bnd_area, dt = tp->dt;
+    const int *mat = pcoli(ps, PC_MAT);
+    for (int i = pb.start; i < pb.end; i++) {
+        int base[3] = {0, 0, 0};
+        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
+        for (int d = 0; d < D; d++) {
+            const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
+            const int bb = (int)floor(Xd - 0.5);
+            bspline_weights(Xd - bb, w[d], dw[d]);
+            for (int k = 0; k < 3; k++) dw[d][k] *= g->inv_dx;
+            base[d] = bb - bc[d] * GRID_B;
+        }
+        const material_slot *ms = &s->mats[mat[i]];
+        const double Vp = V0[i] * t3_det(Fc + 9 * i);
+        /* value and gradient at the particle, contracted one axis at a time (the
+         * weights are a tensor product): about half the work of node by node */
+        double xp = 0, gx[3] = {0, 0, 0}, si = 0, gs[3] = {0, 0, 0};
+        if (HEAT) gather(D, tin, base, w, dw, &xp, gx);
+        if (WATER) gather(D, sat, base, w, dw, &si, gs);
+        double qk[3] = {0, 0, 0}, bcoef = 0, source = 0;
+        if (HEAT) {
+            const double kap = Vp * ms->core[CP_CONDUCTIVITY];
+            for (int d = 0; d < 3; d++) qk[d] = kap * gx[d];
+            bcoef = s->bnd_coef[i];
+            if (SRC) {
+                source = bcoef * s->bnd_temp[i];
+                const double cl = ms->core[CP_EXPANSION];
+                if (cl > 0) source -= V0[i] * cl * (T[i] + KELVIN) * (Cc[9 * i] + Cc[9 * i + 4] + Cc[9 * i + 8]);
+            }
+        }
+        double qn[3] = {0, 0, 0}, evap = 0;
+        if (WATER) {
+            const double rho0 = ms->core[CP_WATER_DENSITY], sp = W[i] / (rho0 * Vp);
+            const double th = (T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN; /* absolute: see water.c */
+            const double kq = -ms->core[CP_WATER_DIFFUSIVITY] * th * rho0 * sp; /* eq. 22 */
+            for (int d = 0; d < 3; d++) qn[d] = kq * gs[d];
+            /* evaporation from the saturation the grid sees at the particle, as the
+             * heat Robin term uses the interpolated temperature */
+            evap = area && area[i] > 0 ? ms->core[CP_EVAPORATION] * th * si * area[i] : 0.0; /* kg/s */
+            if (mom) { /* v^w = v^s + q^w / rho^w; the grid takes w V dq + dt V (v^w (x) q^w) grad w */
+                double vw[3], dq[3];
+                for (int d = 0; d < 3; d++) {
+                    vw[d] = V[3 * i + d] + qn[d] / (rho0 * sp);
+                    dq[d] = Q[3 * i + d] - qn[d];
+                }
+                for (int a = 0; a < 3; a++)
+                    for (int b = 0; b < 3; b++)
+                        for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                            const double wc = D == 3 ? w[2][c] : 1.0, wt = w[0][a] * w[1][b] * wc;
+                            const double qg = qn[0] * dw[0][a] * w[1][b] * wc + qn[1] * w[0][a] * dw[1][b] * wc +
+                                              (D == 3 ? qn[2] * w[0][a] * w[1][b] * dw[2][c] : 0.0);
+                            const int t = tile_index(D, base, a, b, c);
+                            for (int d = 0; d < D; d++) dp[d * TN + t] += Vp * (wt * dq[d] + dt * vw[d] * qg);
+                        }
+            }
+            memcpy(Q + 3 * i, qn, sizeof qn);
+        }
+        /* scatter grad w . f + w r, again one axis at a time */
+        if (HEAT) scatter(D, tout, base, w, dw, qk, bcoef * xp - (SRC && !apart ? source : 0.0));
+        if (apart) scatter(D, tsrc, base, w, dw, NULL, source);
+        if (WATER) {
+            const double mq[3] = {dt * Vp * qn[0], dt * Vp * qn[1], dt * Vp * qn[2]};
+            scatter(D, dm, base, w, dw, mq, -dt * evap);
+        }
+    }
+    for (int a = 0; a < GRID_T; a++) /* flush into the block and its +1 neighbours */
+        for (int b = 0; b < GRID_T; b++)
+            for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
+                const int t = D == 2 ? a * GRID_T + b : (a * GRID_T + b) * GRID_T + c;
+                int l;
+                double *node = tile_node(g, D, bc, a, b, c, &l);
+                if (HEAT) {
+                    node[tp->heat_out * NPB + l] += tout[t];
+                    if (apart) node[tp->heat_src * NPB + l] += tsrc[t];
+                }
+                if (WATER) {
+                    node[CH_DMW * NPB + l] += dm[t];
+                    if (mom)
+                        for (int d = 0; d < D; d++) node[(CH_PX + d) * NPB + l] += dp[d * TN + t];
+                }
+            }
+}
+
+typedef void (*block_fn)(hearth_scene *, const transport_pass *, int, double *);
+#define PASS(D, H, S, W)                                                                                 \
+    static void pass_##D##_##H##S##W(hearth_scene *s, const transport_pass *tp, int q, double *tile) { \
+        pass_block(s, D, H, S, W, tp, q, tile);                                                          \
+    }
+PASS(2, 1, 1, 1) PASS(2, 1, 1, 0) PASS(2, 1, 0, 0) PASS(2, 0, 0, 1)
+PASS(3, 1, 1, 1) PASS(3, 1, 1, 0) PASS(3, 1, 0, 0) PASS(3, 0, 0, 1)
+
+void transport_apply(hearth_scene *s, const transport_pass *tp) {
+    const int heat = tp->heat_in >= 0, src = heat && tp->heat_src >= 0, water = tp->water, d3 = s->g.dim == 3;
+    block_fn fn = NULL;
+    if (heat && src && water) fn = d3 ? pass_3_111 : pass_2_111;
+    else if (heat && src) fn = d3 ? pass_3_110 : pass_2_110;
+    else if (heat && !water) fn = d3 ? pass_3_100 : pass_2_100;
+    else if (!heat && water) fn = d3 ? pass_3_001 : pass_2_001;
+    if (!fn) return; /* heat without sources alongside water is never asked for */
+    for (int col = 0; col < 8; col++) {
+#pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
+        {
+            double tile[T_COUNT * GRID_T * GRID_T * GRID_T];
+#pragma omp for schedule(dynamic, 2)
+            for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) fn(s, tp, q, tile);
+        }
+    }
+}
