@@ -64,6 +64,19 @@
  * shifted back towards the trial's). This is outside eq. 12; it only acts
  * on a return that would take n^p below (1 - c) n^p_0.
  *
+ * ---- stiffening pores -------------------------------------------------------
+ * The other way the same symmetry bites: a porous dough yields in tension
+ * at tau_y / sqrt(M(n^p)), which falls to 0 as n^p -> 1, while the gas
+ * pressure n^g R theta / n^p falls only like 1/n^p. Past n^p ~ 0.45 (where
+ * n / sqrt(M(n)) peaks, ~0.385 tau_y of gas content held) a layer that
+ * holds more gas inflates without end, and the core's guard stops the run
+ * (seen: muffin batter, CFL violated by a particle at 300 m/s). The cell
+ * walls of a real dough stiffen as they are stretched thin, so a pore does
+ * not grow without end; the parameter `max_porosity` says where: past it
+ * the plastic dilation stops, J^P <= 1 + max_porosity - n^p_0, and further
+ * volume change is elastic (the gas is then held by elastic tension, p/K,
+ * ~2% for 600 Pa at E 4e4). Default 1: no cap, eq. 12 as it stands.
+ *
  * ---- state ---------------------------------------------------------------------
  * Seven doubles: b^E (xx, yy, zz, xy, yz, zx) and J^P. Why b^E and not F^E:
  * the stress and the return depend only on b^E, its update f b f^T is
@@ -88,7 +101,7 @@
 
 #include "tensor.h"
 
-enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_COUNT };
+enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_COUNT };
 
 /* Defaults: the cookie column of Ding et al. Table 2 (E 4e4, tau_y 20,
  * eta 500, density 500); nu is not in Table 2. */
@@ -103,6 +116,9 @@ static const hearth_param params[P_COUNT] = {
                       "fraction of the initial pore volume plastic compaction may close (J^P >= 1 - compaction n^p_0)",
                       0.5, 0, 1},
     [P_DENSITY] = {"density", "kg/m^3", "mass density at rest (Ding et al. Table 2: 500)", 500, 1e-3, 1e5},
+    [P_MAX_POROSITY] = {"max_porosity", "1",
+                        "porosity n^p past which the pores grow only elastically (J^P <= 1 + max_porosity - n^p_0); 1 = no cap",
+                        1, 1e-3, 1},
 };
 
 enum { S_XX, S_YY, S_ZZ, S_XY, S_YZ, S_ZX, S_JP, S_COUNT };
@@ -293,6 +309,13 @@ static int stress(hearth_point *pt, double tau[9]) {
             const double ev = eps[0] + eps[1] + eps[2];
             if (n0 > 0 && jmin > 0 && J / exp(ev) < jmin && ev > ev0) { /* ev > ev0: the return compacted */
                 const double shift = (fmax(log(J / jmin), ev0) - ev) / 3;
+                for (int i = 0; i < 3; i++) eps[i] += shift;
+            }
+            /* Stiffening pores: past n^p = max_porosity plastic dilation
+             * stops, J^P <= 1 + max_porosity - n^p_0 (header). */
+            const double jmax = 1 + prm[P_MAX_POROSITY] - n0;
+            if (prm[P_MAX_POROSITY] < 1 && J / exp(ev) > jmax && ev < ev0) { /* ev < ev0: the return dilated */
+                const double shift = (fmin(log(J / jmax), ev0) - ev) / 3;
                 for (int i = 0; i < 3; i++) eps[i] += shift;
             }
             double d[3];

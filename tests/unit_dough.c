@@ -16,7 +16,7 @@
 #include "tensor.h"
 #include "test.h"
 
-enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, NP };
+enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, NP };
 enum { NSTATE = 7 };
 
 static const hearth_material *dough(void) {
@@ -127,7 +127,7 @@ TEST(dough_closest_point) {
     double worst_f = 0, worst_kkt = 0;
     const double ns[] = {0.0, 0.05, 0.3, 0.7, 0.95};
     for (int k = 0; k < 40; k++) {
-        const double p[NP] = {4e4, 0.3, 20 + 200 * uni(), 0, 0.5, 500};
+        const double p[NP] = {4e4, 0.3, 20 + 200 * uni(), 0, 0.5, 500, 1};
         const double n = ns[k % 5];
         double e[3], R[9], f[9], eps_tr[9], tau_tr[9], tau[9], st[NSTATE];
         random_outside(e);
@@ -166,7 +166,7 @@ TEST(dough_viscoplastic_optimality) {
     double worst = 0, fmin_rel = INFINITY;
     const double etas[] = {1e-2, 1, 100, 1e4, 1e6};
     for (int k = 0; k < 40; k++) {
-        const double p[NP] = {4e4, 0.3, 20, etas[k % 5], 0.5, 500};
+        const double p[NP] = {4e4, 0.3, 20, etas[k % 5], 0.5, 500, 1};
         const double n = 0.05 + 0.8 * uni(), dt = 1e-3;
         double e[3], R[9], f[9], eps_tr[9], tau_tr[9], tau[9], st[NSTATE], s[9], pp, q;
         random_outside(e);
@@ -198,7 +198,7 @@ TEST(dough_inside_unchanged) {
     if (!m) return;
     double worst = 0;
     for (int k = 0; k < 20; k++) {
-        const double p[NP] = {4e4, 0.3, 20, k % 2 ? 500 : 0, 0.5, 500};
+        const double p[NP] = {4e4, 0.3, 20, k % 2 ? 500 : 0, 0.5, 500, 1};
         double e[3], R[9], f[9], eps_tr[9], tau_tr[9], tau[9], st[NSTATE], s[9];
         for (int i = 0; i < 3; i++) e[i] = (2 * uni() - 1) * 2e-4; /* |tau| ~ 10 Pa < tau_y */
         random_rotation(R);
@@ -225,7 +225,7 @@ static double vm_difference(const hearth_material *m, double n, int *count) {
     rng = 0x5eedu;
     *count = 0;
     for (int k = 0; k < 20; k++) {
-        const double p[NP] = {4e4, 0.3, 20, 0, 0.5, 500};
+        const double p[NP] = {4e4, 0.3, 20, 0, 0.5, 500, 1};
         double e[3], R[9], f[9], eps_tr[9], tau_tr[9], tau[9], st[NSTATE], s[9], pt, qt, want[9], d[9];
         random_outside(e);
         const double shift = (2 * uni() - 1) * 1e-3 / 3 - (e[0] + e[1] + e[2]) / 3;
@@ -281,7 +281,7 @@ TEST(dough_frame_indifference) {
     if (!m) return;
     double worst = 0;
     for (int k = 0; k < 10; k++) {
-        const double p[NP] = {4e4, 0.3, 20, k % 2 ? 0 : 300, 0.5, 500};
+        const double p[NP] = {4e4, 0.3, 20, k % 2 ? 0 : 300, 0.5, 500, 1};
         double Q[9], st[NSTATE], str[NSTATE], F[9], Fr[9];
         random_rotation(Q);
         m->init(p, st);
@@ -332,7 +332,7 @@ TEST(dough_extremes) {
                 for (int d = 0; d < 2; d++)
                     for (int t = 0; t < 2; t++)
                         for (int e = 0; e < 6; e++) {
-                            const double p[NP] = {Es[a], 0.3, tys[d], etas[b], 0.5, 500};
+                            const double p[NP] = {Es[a], 0.3, tys[d], etas[b], 0.5, 500, 1};
                             double R[9], f[9], eps_tr[9], tau[9], st[NSTATE];
                             random_rotation(R);
                             trial(strains[e], R, f, eps_tr);
@@ -367,7 +367,7 @@ TEST(dough_extremes) {
                             }
                         }
     /* the documented refusals: porosity outside [0, 1), inverted F */
-    const double p[NP] = {4e4, 0.3, 20, 0, 0.5, 500};
+    const double p[NP] = {4e4, 0.3, 20, 0, 0.5, 500, 1};
     double st[NSTATE], tau[9], I[9];
     t3_identity(I);
     const int rc1 = step_from_rest(m, p, I, 1e-4, 1.0, 20, st, tau), rc2 = step_from_rest(m, p, I, 1e-4, -0.1, 20, st, tau);
@@ -390,7 +390,7 @@ TEST(dough_closed_pores) {
     const hearth_material *m = dough();
     CHECK(m != NULL);
     if (!m) return;
-    const double p[NP] = {2e3, 0.3, 20, 0, 0.5, 500}, n0 = 0.1, dt = 1e-3;
+    const double p[NP] = {2e3, 0.3, 20, 0, 0.5, 500, 1}, n0 = 0.1, dt = 1e-3;
     double st[NSTATE], F[9], tau[9], jp_min = 1;
     m->init(p, st);
     t3_identity(F);
@@ -412,6 +412,41 @@ TEST(dough_closed_pores) {
            1 - 0.5 * n0);
     CHECK(jp_min < 1 - 0.25 * n0);             /* it did compact plastically */
     CHECK(jp_min >= 1 - 0.5 * n0 - 1e-12);     /* but not past the cap */
+}
+
+/* Stiffening pores: pulled apart hydrostatically for many steps (the gas
+ * pressure of an inflating dough does this), the dough dilates plastically
+ * up to n^p = max_porosity, J^P = 1 + max_porosity - n^p_0, and no further;
+ * without the cap (max_porosity 1) the same pull takes it past. */
+TEST(dough_pore_cap) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL);
+    if (!m) return;
+    const double n0 = 0.1, dt = 1e-3, cap = 0.3;
+    double jp_end[2];
+    for (int c = 0; c < 2; c++) {
+        const double p[NP] = {2e3, 0.3, 20, 0, 0.5, 500, c ? 1 : cap};
+        double st[NSTATE], F[9], tau[9];
+        m->init(p, st);
+        t3_identity(F);
+        for (int k = 0; k < 300; k++) {
+            double L[9] = {0}, f[9], Fn[9];
+            L[0] = L[4] = L[8] = 0.4; /* steady isotropic expansion: 1.2e-3 volumetric strain per step */
+            for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
+            t3_mul(f, F, Fn);
+            t3_copy(Fn, F);
+            double np = m->plastic_J(p, st) - 1 + n0;
+            hearth_point pt = {.dt = dt, .temperature = 20, .porosity = np > 0.999999 ? 0.999999 : np, .saturation = NAN,
+                               .p = p, .state = st};
+            memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
+            CHECK(m->stress(&pt, tau) == 0);
+        }
+        jp_end[c] = m->plastic_J(p, st);
+    }
+    printf("  J^P after 300 pulling steps: %.6f with max_porosity %g (cap 1 + %g - n0 = %.6f), %.6f without\n", jp_end[0],
+           cap, cap, 1 + cap - n0, jp_end[1]);
+    CHECK(fabs(jp_end[0] - (1 + cap - n0)) <= 1e-9); /* dilated up to the cap, not past it */
+    CHECK(jp_end[1] > 1 + cap - n0 + 0.05);         /* the uncapped dough goes on */
 }
 
 static void note(void *ud, const char *name, int passed, const char *detail) {
@@ -438,4 +473,4 @@ TEST(dough_plugin_check) {
 }
 
 TEST_MAIN(T(dough_closest_point), T(dough_viscoplastic_optimality), T(dough_inside_unchanged), T(dough_von_mises_limit),
-          T(dough_frame_indifference), T(dough_extremes), T(dough_closed_pores), T(dough_plugin_check))
+          T(dough_frame_indifference), T(dough_extremes), T(dough_closed_pores), T(dough_pore_cap), T(dough_plugin_check))

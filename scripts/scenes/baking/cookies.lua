@@ -3,12 +3,23 @@
 -- temperature. Each oven is its own bake (the oven air is one temperature per
 -- scene), with the three leaveners side by side on one tray.
 --   hearth run scripts/scenes/baking/cookies.lua [--set dim=3] [--set ovens=150]
---   [--set baseline=true]   gas off and rate-independent plasticity (eta = 0):
---                           the Stomakhin-like comparison of Fig. 17
+--   [--set baseline=true]   gas off, rate-independent plasticity (eta = 0) and
+--                           no thermal expansion: the Stomakhin et al. 2014
+--                           comparison of Fig. 17 (Ding et al. §2: neither
+--                           Stomakhin et al. nor Gao et al. model expansion)
 -- Writes, under hearth-out/cookies/: oven_<T>/heat_%04d.png (the heat
 -- progress, Fig. 3's right column) and cookies.csv (final height, spread and
 -- top curvature per cookie; negative curvature = domed), series.csv (height
--- and spread over time).
+-- and spread over time). Two curvatures: top_curvature from the density
+-- probe's top over the middle third of the spread (9 samples), and
+-- top_curvature_particles from the highest particle in each one-cell bin,
+-- a least-squares parabola over the middle 60% of the cookie's width.
+-- What shapes the top (measured, 2D, dx 7.5 mm, 150 degC): the cold dough
+-- (tau_y 20 Pa) cannot carry its own 25 mm (rho g H ~ 120 Pa), so without
+-- eta (baseline) it collapses within 0.16 s, before the oven warms it, into
+-- the mound a yield-stress pile settles to; the same mound forms with the
+-- oven and tray off. With eta the full model slumps slowly and is set while
+-- still rounded; its CO2 never inflates it (n^p stays ~0.10).
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 3, frames = 6, ovens = "190,150,110", leaveners = "0.015,0.0075,0",
   baseline = false }
@@ -27,7 +38,7 @@ local TRAY, SPACING, R, THICK = 0.02, 0.12, 0.03, 0.025 -- m: tray height, cooki
 local W = SPACING * #leaveners
 local zc = 0.06
 
-local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_per_m" }
+local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_per_m,top_curvature_particles_1_per_m" }
 local series = { "oven_degC,leavener,t,height_m,spread_m,centre_temperature_degC" }
 for _, T in ipairs(ovens) do
   local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.09, 0.12) },
@@ -37,7 +48,7 @@ for _, T in ipairs(ovens) do
   for i, a in ipairs(leaveners) do
     local d = h.library.dough.cookie
     d.gas_rate = a * h.library.dough_scale.gas
-    if P.baseline then d.gas_rate, d.eta = 0, 0 end
+    if P.baseline then d.gas_rate, d.eta, d.expansion = 0, 0, 0 end
     xs[i] = (i - 0.5) * SPACING
     s:add { shape = h.shapes.cookie(v(xs[i], TRAY + THICK / 2, zc), R, THICK), material = h.material("cam_clay_dough", d),
       temperature = oven.dough_temperature, ppc = d3 and 8 or 4 }
@@ -67,6 +78,36 @@ for _, T in ipairs(ovens) do
     local a = (S0 * T2 - S2 * T0) / (S0 * S4 - S2 * S2)
     return hgt, spread, 2 * a
   end
+  -- the top from the particles: the highest in each one-cell bin across the
+  -- cookie (in 3D on the slab |z - zc| < dx/2), and 2a of the least-squares
+  -- y = a u^2 + b u + c over the middle 60% of the cookie's width
+  local function particle_curvature(i)
+    local x = s:positions()
+    local top, lo, hi = {}, math.huge, -math.huge
+    for p = 0, #x // 3 - 1 do
+      local px, py, pz = x[3 * p + 1], x[3 * p + 2], x[3 * p + 3]
+      if math.abs(px - xs[i]) < SPACING / 2 and (not d3 or math.abs(pz - zc) < dx / 2) then
+        local b = math.floor((px - xs[i]) / dx + 0.5)
+        if not top[b] or py > top[b] then top[b] = py end
+        lo, hi = math.min(lo, px), math.max(hi, px)
+      end
+    end
+    local mid, half = (lo + hi) / 2, 0.3 * (hi - lo)
+    local m = { 0, 0, 0, 0, 0, 0, 0, 0 } -- sums of 1, u, u^2, u^3, u^4, y, yu, yu^2
+    for b, y in pairs(top) do
+      local u = xs[i] + b * dx - mid
+      if math.abs(u) <= half then
+        m[1], m[2], m[3], m[4], m[5] = m[1] + 1, m[2] + u, m[3] + u * u, m[4] + u ^ 3, m[5] + u ^ 4
+        m[6], m[7], m[8] = m[6] + y, m[7] + y * u, m[8] + y * u * u
+      end
+    end
+    if m[1] < 3 then return 0 / 0 end
+    local function det(a, b, c) -- columns a, b, c of a 3x3 matrix
+      return a[1] * (b[2] * c[3] - b[3] * c[2]) - b[1] * (a[2] * c[3] - a[3] * c[2]) + c[1] * (a[2] * b[3] - a[3] * b[2])
+    end
+    local c1, c2, c3, r = { m[1], m[2], m[3] }, { m[2], m[3], m[4] }, { m[3], m[4], m[5] }, { m[6], m[7], m[8] }
+    return 2 * det(c1, c2, r) / det(c1, c2, c3) -- Cramer's rule for a
+  end
   s:run { until_t = P.until_t, every = P.until_t / P.frames,
     png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T) },
     on_frame = function(f)
@@ -79,10 +120,11 @@ for _, T in ipairs(ovens) do
     end }
   for i, a in ipairs(leaveners) do
     local hgt, spread, curv = measure(i)
-    rows[#rows + 1] = ("%g,%g,%.3g,%.5f,%.5f,%.4f"):format(T, a, P.baseline and 0 or a * h.library.dough_scale.gas, hgt,
-      spread, curv)
-    print(("oven %g degC, leavener %g: height %.4f m, spread %.4f m, top curvature %.3f 1/m"):format(T, a, hgt, spread,
-      curv))
+    local pcurv = particle_curvature(i)
+    rows[#rows + 1] = ("%g,%g,%.3g,%.5f,%.5f,%.4f,%.4f"):format(T, a, P.baseline and 0 or a * h.library.dough_scale.gas,
+      hgt, spread, curv, pcurv)
+    print(("oven %g degC, leavener %g: height %.4f m, spread %.4f m, top curvature %.3f 1/m (particles %.3f)"):format(T,
+      a, hgt, spread, curv, pcurv))
   end
   h.write("cookies.csv", table.concat(rows, "\n") .. "\n")
 end

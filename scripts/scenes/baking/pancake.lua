@@ -54,7 +54,7 @@ local spatula = s:collider { shape = h.box(v(0.02, PAN - 0.004, zc - 0.05), v(XP
 -- The spout: a row of batter one lattice spacing high leaves it every
 -- spacing / SPEED seconds, at the spout's position then (as h.recipes.nozzle,
 -- which holds its slot still).
--- Gas x0.1, as the muffin and lava cake presets (lua/hearth/dough.lua): at
+-- Gas x0.1, as the lava cake preset (lua/hearth/dough.lua): at
 -- the preset's rate this 2 Pa batter tears while it passes theta_r (the
 -- guard stopped the run at t = 0.59 s, kinetic energy x18).
 local d = h.library.dough.pancake
