@@ -117,11 +117,9 @@ static int all_finite(const double *a, int n) {
     return 1;
 }
 
-/* P2G's tile holds only the channels it writes: momentum, then heat, then
- * water, then each node's closest particle for the boundary search
- * (boundary.c: squared distance in CH_CG_R, index + 1 in CH_CG_P). */
-enum { P2G_HC = GRID_NCH_MOMENTUM, P2G_T, P2G_MW, P2G_SW, P2G_BD, P2G_BI, P2G_NCH };
-static const int p2g_channel[P2G_SW + 1] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T, CH_MW, CH_SW};
+/* P2G's tile holds only the channels it writes: momentum, then heat, then water. */
+enum { P2G_HC = GRID_NCH_MOMENTUM, P2G_T, P2G_MW, P2G_SW, P2G_NCH };
+static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T, CH_MW, CH_SW};
 
 /* D (2 or 3), HEAT (temperature live) and WATER (water live) are compile-time
  * constants in each instantiation below, so a momentum-only scene runs the
@@ -139,10 +137,6 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     memset(tile, 0, sizeof(double) * GRID_NCH_MOMENTUM * (size_t)TN);
     if (HEAT) memset(tile + P2G_HC * TN, 0, sizeof(double) * 2 * (size_t)TN);
     if (WATER) memset(tile + P2G_MW * TN, 0, sizeof(double) * 2 * (size_t)TN);
-    const int picks = (HEAT || WATER) && s->bnd_picks;
-    double *bd = tile + P2G_BD * TN, *bi = tile + P2G_BI * TN;
-    if (picks)
-        for (int t = 0; t < TN; t++) bd[t] = INFINITY, bi[t] = -1;
 
     const double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *M = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
     double *Cc = pcold(ps, PC_C), *Fc = pcold(ps, PC_F), *state = pcold(ps, PC_STATE);
@@ -227,22 +221,18 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
         for (int a = 0; a < 9; a++) Q[a] = mC * C[a] - k0 * tau[a];
 
         int base[3] = {0, 0, 0};
-        double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3], e2[3][3] = {{0}};
+        double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
         for (int d = 0; d < D; d++) {
             const double Xd = (x[d] - g->lo[d]) * inv_dx;
             const int b = (int)floor(Xd - 0.5);
             fx[d] = Xd - b;
             base[d] = b - org[d];
             bspline_weights(fx[d], w[d], dw);
-            if (picks) /* squared distances to the nodes, as x - x_i: near-ties on a lattice round the same way each step */
-                for (int a = 0; a < 3; a++) {
-                    const double e = x[d] - (g->lo[d] + (b + a) * dx);
-                    e2[d][a] = e * e;
-                }
         }
         const double mv0 = m * v[0], mv1 = m * v[1], mv2 = m * v[2];
         /* heat (eq. 17, weighted by heat capacity m alpha so energy is conserved across materials) */
         const double hc = HEAT ? m * s->mats[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = HEAT ? hc * Tcol[i] : 0.0;
+        if (HEAT || WATER) s->vol[i] = J * V0[i]; /* for transport.c and water_take */
         /* water mass and capacity rho_0^w J V_0 (eq. 15, 18) */
         const double mw = WATER ? Wcol[i] : 0.0, cap = WATER ? s->mats[mat[i]].core[CP_WATER_DENSITY] * J * V0[i] : 0.0;
         for (int a = 0; a < 3; a++) {
@@ -282,19 +272,6 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 }
             }
         }
-        if (picks) /* in particle order with <: a tie goes to the lower index. A loop of its own, so the one above stays branch-free */
-            for (int a = 0; a < 3; a++)
-                for (int b = 0; b < 3; b++) {
-                    const int t = D == 2 ? (base[0] + a) * GRID_T + (base[1] + b) : ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + base[2];
-                    double *restrict pd = bd + t, *restrict pi = bi + t;
-                    const double rab = e2[0][a] + e2[1][b];
-                    for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                        const double r2 = D == 2 ? rab : rab + e2[2][c];
-                        const int better = r2 < pd[c];
-                        pd[c] = better ? r2 : pd[c];
-                        pi[c] = better ? i : pi[c];
-                    }
-                }
     }
 
     /* flush the tile into the block and its +1 neighbours */
@@ -312,12 +289,6 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                     for (int ch = P2G_HC; ch <= P2G_T; ch++) node[p2g_channel[ch] * NPB + l] += tile[ch * TN + t];
                 if (WATER)
                     for (int ch = P2G_MW; ch <= P2G_SW; ch++) node[p2g_channel[ch] * NPB + l] += tile[ch * TN + t];
-                if (picks && bi[t] >= 0) {
-                    /* the closest over the blocks that reach the node; colours flush in
-                     * order, so a tie goes to the earlier colour whatever the threads */
-                    double *nd = &node[CH_CG_R * NPB + l], *ni = &node[CH_CG_P * NPB + l];
-                    if (*ni == 0 || bd[t] < *nd) *nd = bd[t], *ni = bi[t] + 1;
-                }
             }
 }
 
@@ -332,7 +303,6 @@ static const block_fn p2g_fns[2][2][2] = {{{p2g_200, p2g_201}, {p2g_210, p2g_211
 void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
     (void)rep;
     const block_fn fn = p2g_fns[s->g.dim == 3][thermal_active(s)][water_active(s)];
-    s->bnd_picks = boundary_needed(s);
     for (int k = 0; k < s->npb; k++) s->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {

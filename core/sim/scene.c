@@ -150,8 +150,9 @@ static void free_scratch(hearth_scene *s) {
     mem_free(s->keys, sizeof(int) * (size_t)s->scratch_cap);
     mem_free(s->order, sizeof(int) * (size_t)s->scratch_cap);
     mem_free(s->perm_scratch, sizeof(double) * (size_t)s->scratch_cap);
+    mem_free(s->vol, sizeof(double) * (size_t)s->scratch_cap);
     s->keys = s->order = NULL;
-    s->perm_scratch = NULL;
+    s->perm_scratch = s->vol = NULL;
     s->scratch_cap = 0;
 }
 
@@ -226,6 +227,9 @@ hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err) {
         }
         s->scratch_cap = cap;
     }
+    /* the field passes read each particle's volume from here rather than F (72 bytes a particle) */
+    if (!s->vol && (thermal_active(s) || water_active(s)) && !(s->vol = mem_alloc(sizeof(double) * (size_t)s->scratch_cap)))
+        return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle volumes", s->scratch_cap);
     /* one particle block per grid block at most */
     int need = s->g.nblocks < n ? s->g.nblocks : n;
     if (need > s->pbcap) {

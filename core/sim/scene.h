@@ -97,6 +97,7 @@ struct hearth_scene {
     /* per-step scratch: grown when the particle count grows, never in the step loop otherwise */
     int *keys, *order;
     double *perm_scratch;
+    double *vol;            /* with heat or water: each particle's volume J V_0 this step, from P2G (NULL otherwise) */
     int scratch_cap;
     int *counts;            /* nblocks + 1 */
     unsigned char *mark;    /* nblocks */
@@ -123,7 +124,6 @@ struct hearth_scene {
     /* boundary particles (boundary.c): each one's share of the air surface */
     double *bnd_area;
     int bnd_area_cap;
-    int bnd_picks; /* P2G records each node's closest particle (boundary.c) this step */
 
     /* water (water.c) */
     double water_lost;            /* through the boundary so far (kg) */

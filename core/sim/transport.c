@@ -25,7 +25,6 @@
 #include <string.h>
 
 #include "scene.h"
-#include "tensor.h"
 
 #define KELVIN 273.15
 #define FORCE_INLINE static inline __attribute__((always_inline))
@@ -122,7 +121,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
     double *tin = tile + T_IN * TN, *tout = tile + T_OUT * TN, *tsrc = tile + T_SRC * TN;
     double *sat = tile + T_SAT * TN, *dm = tile + T_DM * TN, *dp = tile + T_DP * TN;
 
-    const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0), *Fc = pcold(ps, PC_F), *Cc = pcold(ps, PC_C);
+    const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0), *Cc = pcold(ps, PC_C);
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     const double *V = WATER ? pcold(ps, PC_V) : NULL, *W = WATER ? pcold(ps, PC_WATER) : NULL;
     double *Q = WATER ? pcold(ps, PC_QW) : NULL;
@@ -139,7 +138,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
             base[d] = bb - bc[d] * GRID_B;
         }
         const material_slot *ms = &s->mats[mat[i]];
-        const double Vp = V0[i] * t3_det(Fc + 9 * i);
+        const double Vp = s->vol[i]; /* J V_0, from P2G */
         /* value and gradient at the particle, contracted one axis at a time (the
          * weights are a tensor product): about half the work of node by node */
         double val[2] = {0, 0}, grad[2][3] = {{0, 0, 0}, {0, 0, 0}};

@@ -188,11 +188,11 @@ double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) 
     particles *ps = &s->ps;
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     double *W = pcold(ps, PC_WATER);
-    const double cap = capacity(s, i), before = W[i];
+    const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
+    const double cap = ms->core[CP_WATER_DENSITY] * s->vol[i], before = W[i]; /* capacity(), with P2G's volume */
     double m = before + cap * r;
     if (m < WATER_SATURATION_FLOOR * cap) m = WATER_SATURATION_FLOOR * cap;
     W[i] = m;
-    const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
     particle_limits(ms, theta_abs(T, i, ms), m / cap, dmax, emax);
     return before - m;
 }
