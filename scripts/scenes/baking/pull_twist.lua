@@ -15,11 +15,20 @@
 -- dough: its length (the extent of its material along the pull), the
 -- thinnest section of its free part (the neck; 0 = torn through), and how
 -- far its free part sagged.
--- What it shows (2D, dx 2 mm, 0.4 s): a low tau_y dough flows along its
--- whole length and stays thick (neck ~10 mm of 12); at tau_y = 1000 Pa it
--- necks next to the grips (~6 mm) and at 3000 Pa it tears there. The
--- porous Cam-clay surface (eq. 12) yields in tension and dilates where it
--- necks, so the stiff doughs localise.
+-- What it shows (2D, dx 2 mm, 0.4 s, neck of the 12 mm strips): at eta = 1e8
+-- a 300 Pa dough flows along its whole length and keeps a 10.2 mm neck, a
+-- 1000 Pa one necks next to its grips (3.9 mm) and a 3000 Pa one tears
+-- there (0); at eta = 1e10 all three keep ~10 mm (the viscous stress holds
+-- them); at eta = 1e6 all tear, the 300 Pa one off both grips (it falls).
+-- The porous Cam-clay surface (eq. 12) yields in tension and dilates where
+-- a dough necks, so the stiffer doughs localise. 3D (dx 4 mm): the same
+-- order (eta = 1e8: 11.9, 0, 0 mm; 1e10: 11.9, 11.9, 0 mm).
+-- Cost: 2D ~60 s of CPU on one thread (the steps run on 2 threads; the shared
+-- machine was too loaded to time the 2-core wall clock), 3D ~45 s.
+-- The grips: a "sticky" collider holds only the grid nodes inside it, so a
+-- dough's end in it was squeezed out to its surface and the dough peeled
+-- off when pulled; a grip carries the particles inside it and holds the
+-- nodes within a cell of its surface (core/sim/colliders.c, mpm.c).
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.002, until_t = 0.4, frames = 4, taus = "300,1000,3000", etas = "1e6,1e8,1e10",
   speed = 0.02, spin = 0.5, E = 4e4 }
