@@ -30,9 +30,9 @@ hearth_status collider_init(collider *c, const hearth_collider_def *def, hearth_
         return err_set(err, HEARTH_ERR_PARAM,
                        "collider friction = %g is out of range; valid range: [0, inf) (Coulomb coefficient, finite)",
                        def->friction);
-    if (def->mode != HEARTH_STICKY && def->mode != HEARTH_SLIP && def->mode != HEARTH_SEPARATE)
+    if (def->mode != HEARTH_STICKY && def->mode != HEARTH_SLIP && def->mode != HEARTH_SEPARATE && def->mode != HEARTH_GRIP)
         return err_set(err, HEARTH_ERR_PARAM,
-                       "collider mode = %d is out of range; valid: 0 (sticky), 1 (slip), 2 (separate)",
+                       "collider mode = %d is out of range; valid: 0 (sticky), 1 (slip), 2 (separate), 3 (grip)",
                        (int)def->mode);
     hearth_status st;
     if ((st = check_vec(def->velocity, "velocity", "m/s", err)) != HEARTH_OK) return st;
@@ -115,7 +115,7 @@ void collider_velocity_at(const collider *c, const double x[3], double v[3]) {
 }
 
 void contact_apply(hearth_contact mode, double friction, const double n[3], const double vb[3], double v[3]) {
-    if (mode == HEARTH_STICKY) {
+    if (mode == HEARTH_STICKY || mode == HEARTH_GRIP) {
         memcpy(v, vb, 3 * sizeof *v);
         return;
     }
@@ -160,7 +160,33 @@ void collider_update_bounds(collider *c, double margin) {
     }
 }
 
+int collider_carry_particle(const collider *c, int dim, double dt, double x[3], double v[3], double C[9]) {
+    if (c->mode != HEARTH_GRIP || collider_sdf(c, x, NULL) >= 0) return 0;
+    /* the rigid motion of the coming step about the current pivot, exact as in collider_advance */
+    double r[3], vb[3];
+    for (int i = 0; i < 3; i++) r[i] = x[i] - c->pivot0[i] - c->offset[i];
+    collider_velocity_at(c, x, vb);
+    const double w = sqrt(c->omega[0] * c->omega[0] + c->omega[1] * c->omega[1] + c->omega[2] * c->omega[2]);
+    double rr[3] = {r[0], r[1], r[2]};
+    if (w > 0) {
+        const double axis[3] = {c->omega[0] / w, c->omega[1] / w, c->omega[2] / w};
+        double Q[9];
+        t3_rotation(axis, w * dt, Q);
+        t3_mulv(Q, r, rr);
+    }
+    for (int d = 0; d < dim; d++) {
+        x[d] += rr[d] - r[d] + c->vel[d] * dt;
+        v[d] = vb[d];
+    }
+    /* the velocity gradient of a rigid motion: skew(omega), so F only rotates */
+    const double *o = c->omega;
+    const double W[9] = {0, -o[2], o[1], o[2], 0, -o[0], -o[1], o[0], 0};
+    for (int a = 0; a < 9; a++) C[a] = dim == 2 && (a % 3 == 2 || a / 3 == 2) ? 0.0 : W[a];
+    return 1;
+}
+
 int collider_project_particle(const collider *c, int dim, double x[3], double v[3]) {
+    if (c->mode == HEARTH_GRIP) return 0; /* a grip holds what is inside it (collider_carry_particle) */
     double n[3];
     const double phi = collider_sdf(c, x, n);
     if (phi >= 0) return 0;

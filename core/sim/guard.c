@@ -56,8 +56,12 @@ int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed
      * Motion below a thousandth of a cell per step is not judged: a body
      * starting from rest (a drying block, a slow creep) multiplies a tiny
      * energy many times without anything going wrong, and a real runaway
-     * grows past that speed within a few steps and is caught there. */
-    const double ref = fmax(s->kinetic, s->kinetic_peak);
+     * grows past that speed within a few steps and is caught there.
+     * A moving collider may give the material energy at once (a spatula that
+     * starts to turn under a resting pancake): the reference is at least the
+     * energy of every particle moving as fast as the fastest collider that
+     * holds a node, so only growth beyond what the colliders drive counts. */
+    const double ref = fmax(fmax(s->kinetic, s->kinetic_peak), rep->driven_kinetic);
     if (ref > 1e-300 && rep->kinetic > s->def.energy_growth * ref && move > 1e-3) {
         if (rep->fastest >= 0) describe_particle(s, rep->fastest, who, sizeof who);
         else snprintf(who, sizeof who, "no particle");

@@ -206,10 +206,16 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 tau[4] += tg;
                 tau[8] += tg;
             }
-            /* thermal expansion (Ding et al. eq. 10): sigma += -c lambda J (theta - theta_ref) I, so tau = J sigma */
+            /* thermal expansion (Ding et al. eq. 10): sigma += -c lambda J (theta - theta_ref) I, so tau = J sigma.
+             * J is the elastic J^E = J / J^P of a plastic material: the potential
+             * penalises F^{s,E} only (§5.2). With the total J, a skeleton that
+             * yields in tension (Cam-clay, eq. 12, M > 0) grows J^P, which raised
+             * the expansion pressure as J^2, which grew J^P further: the batter
+             * of the pancake and the lava cake swelled x4 and blew up. */
             const double cl = ms->core[CP_EXPANSION];
             if (cl > 0 && Tcol) {
-                const double th = cl * J * J * (Tcol[i] - ms->core[CP_REFERENCE_T]);
+                const double JE = ms->m->plastic_J ? J / ms->m->plastic_J(pt.p, pt.state) : J;
+                const double th = cl * JE * JE * (Tcol[i] - ms->core[CP_REFERENCE_T]);
                 tau[0] -= th;
                 tau[4] -= th;
                 tau[8] -= th;
@@ -318,11 +324,12 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
 
 /* ---- grid update ----------------------------------------------------- */
 
-void mpm_grid_update(hearth_scene *s, double dt) {
+double mpm_grid_update(hearth_scene *s, double dt) {
     grid *g = &s->g;
     const int D = g->dim, NPB = g->nodes_per_block;
     const hearth_scene_def *def = &s->def;
-#pragma omp parallel for schedule(dynamic, 4) if (s->ps.n >= SCENE_PARALLEL_MIN)
+    double vcol2 = 0; /* the fastest collider at a node with mass (the guard's driven energy) */
+#pragma omp parallel for schedule(dynamic, 4) reduction(max : vcol2) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         double *node = grid_block(g, k);
         int bc[3];
@@ -356,17 +363,24 @@ void mpm_grid_update(hearth_scene *s, double dt) {
             }
             for (int c = 0; c < s->ncol; c++) {
                 double n[3];
-                if (!collider_near(&s->cols[c], xi) || collider_sdf(&s->cols[c], xi, n) > 0.0) continue;
+                /* A grip holds the nodes within a cell of its surface too: the particles
+                 * it carries reach them, and a node they share with free material
+                 * must move with the grip, or the free material peels off (seen: an
+                 * elastic strip pulled at 2 cm/s left both grips within 0.05 s). */
+                const double band = s->cols[c].mode == HEARTH_GRIP ? g->dx : 0.0;
+                if (!collider_near(&s->cols[c], xi) || collider_sdf(&s->cols[c], xi, n) > band) continue;
                 double vb[3];
                 collider_velocity_at(&s->cols[c], xi, vb);
                 if (D == 2) n[2] = vb[2] = 0.0;
                 contact_apply(s->cols[c].mode, s->cols[c].friction, n, vb, v);
+                vcol2 = fmax(vcol2, vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]);
             }
             node[NPB + l] = v[0];
             node[2 * NPB + l] = v[1];
             node[3 * NPB + l] = D == 3 ? v[2] : 0.0;
         }
     }
+    return sqrt(vcol2);
 }
 
 /* ---- G2P ------------------------------------------------------------- */
@@ -414,7 +428,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         lo[d] = g->lo[d] + dx;                       /* keep every particle's stencil on the grid */
         hi[d] = g->lo[d] + (g->nn[d] - 2) * dx;
     }
-    double ke = 0, vmax = -1, cmax = 0, numax = 0, pscratch[SCENE_MAX_PARAMS];
+    double ke = 0, mass = 0, vmax = -1, cmax = 0, numax = 0, pscratch[SCENE_MAX_PARAMS];
     double w_removed = 0, w_dmax = 0, w_emax = 0;
     int fastest = -1;
     long ood = 0;
@@ -476,10 +490,18 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             memset(C, 0, 9 * sizeof(double));
             continue;
         }
+        /* a grip carries the particles inside it rigidly (the nodes near its
+         * face mix in the material's velocity, which let a held end slip out) */
+        int carried = 0;
+        for (int c = 0; c < s->ncol && !carried; c++)
+            if (s->cols[c].mode == HEARTH_GRIP && collider_near(&s->cols[c], x))
+                carried = collider_carry_particle(&s->cols[c], D, dt, x, v, C);
         int out = 0;
         for (int d = 0; d < D; d++) {
-            v[d] = nv[d];
-            x[d] += dt * nv[d];
+            if (!carried) {
+                v[d] = nv[d];
+                x[d] += dt * nv[d];
+            }
             /* a particle that left the domain is put back on its edge and counted, never dropped */
             if (x[d] < lo[d]) { x[d] = lo[d]; out = 1; }
             else if (x[d] > hi[d]) { x[d] = hi[d]; out = 1; }
@@ -488,13 +510,14 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         /* Grid nodes past the middle of a thin wall see the far face's normal and
          * let material through; a particle that ends inside a collider is put
          * back on its surface (the usual particle-level safeguard). */
-        for (int c = 0; c < s->ncol; c++)
+        for (int c = 0; c < s->ncol && !carried; c++)
             if (collider_near(&s->cols[c], x)) collider_project_particle(&s->cols[c], D, x, v);
         if (!all_finite(x, 3)) record_fail(pp, i, FAIL_X, 0);
         else if (!all_finite(v, 3)) record_fail(pp, i, FAIL_V, 0);
         else if (!all_finite(C, 9)) record_fail(pp, i, FAIL_C, 0);
         const double sp2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
         ke += 0.5 * M[i] * sp2;
+        mass += M[i];
         if (sp2 > vmax) { vmax = sp2; fastest = i; }
         const material_slot *ms = &s->mats[mat[i]];
         const double c = ms->m->state_size > 0
@@ -509,6 +532,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         }
     }
     pp->ke = ke;
+    pp->mass = mass;
     pp->numax = numax;
     pp->vmax = vmax;
     pp->fastest = fastest;
@@ -533,7 +557,7 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
     }
     /* reduce in block order so sums and the first failure do not depend on threads */
     *rep = (step_report){.particle = -1, .fastest = -1};
-    double vmax = -1;
+    double vmax = -1, mass = 0;
     for (int k = 0; k < s->npb; k++) {
         const pb_partial *pp = &s->partial[k];
         if (pp->fail_i >= 0 && (rep->particle < 0 || pp->fail_i < rep->particle)) {
@@ -542,6 +566,7 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
             rep->code = pp->fail_code;
         }
         rep->kinetic += pp->ke;
+        mass += pp->mass;
         if (pp->vmax > vmax) {
             vmax = pp->vmax;
             rep->fastest = pp->fastest;
@@ -551,6 +576,7 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
         rep->out_of_domain += pp->ood;
     }
     rep->max_speed = vmax > 0 ? sqrt(vmax) : 0.0;
+    rep->mass = mass;
 }
 
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err) {
@@ -570,8 +596,9 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         transport_apply(s, &tp);
         if (heat) thermal_finish(s, dt);
     }
-    mpm_grid_update(s, dt);
+    const double vcol = mpm_grid_update(s, dt);
     mpm_g2p(s, dt, rep);
     if (water) water_finish(s);
+    rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;
     return HEARTH_OK;
 }

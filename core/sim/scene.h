@@ -57,12 +57,14 @@ typedef struct step_report {
     double c_max;      /* largest wave speed met (stateful plugins; stateless come from the slot) */
     double nu_max;     /* largest kinematic viscosity met (plugins with a viscosity callback) */
     long out_of_domain;
+    double mass;           /* of the particles that move */
+    double driven_kinetic; /* 1/2 (mass) (fastest collider speed at a node it holds)^2: energy a collider may give */
 } step_report;
 
 /* Per particle-block partial results, reduced in block order. */
 typedef struct pb_partial {
     int fail_i, fail_kind, fail_code, fastest;
-    double ke, vmax, cmax, numax; /* numax: largest kinematic viscosity eta / rho (m^2/s) */
+    double ke, mass, vmax, cmax, numax; /* numax: largest kinematic viscosity eta / rho (m^2/s) */
     long ood;
     double water_removed, water_dmax, water_emax; /* water.c */
 } pb_partial;
@@ -148,7 +150,8 @@ double scene_stable_dt(const hearth_scene *s);
 /* mpm.c */
 hearth_status mpm_sort(hearth_scene *s, hearth_error *err);
 void mpm_p2g(hearth_scene *s, double dt, step_report *rep);
-void mpm_grid_update(hearth_scene *s, double dt);
+/// Returns the largest collider speed (m/s) at a node with mass that a collider set.
+double mpm_grid_update(hearth_scene *s, double dt);
 void mpm_g2p(hearth_scene *s, double dt, step_report *rep);
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err);
 

@@ -593,7 +593,7 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
             for (int a = 0; a < dim; a++) xi[a] -= phi * nrm[a];
             double vb[3];
             collider_velocity_at(cl, xi, vb);
-            if (cl->mode == HEARTH_STICKY) {
+            if (cl->mode == HEARTH_STICKY || cl->mode == HEARTH_GRIP) {
                 for (int a = 0; a < dim; a++) vi[a] = vb[a];
                 continue;
             }

@@ -332,7 +332,7 @@ local sph_number_keys = { h_factor = true, gamma = true, av_beta = true, surface
   heat_ext = true, heat_int = true, k_g = true, eps_g = true, bubble_T0 = true, dt_viscous = true, dt_force = true }
 local sph_flag_keys = { leapfrog = true, adaptive_h = true, tension = true, periodic_x = true, periodic_y = true,
   periodic_z = true }
-local contact = { "sticky", "slip", "separate" }
+local contact = { "sticky", "slip", "separate", "grip" }
 
 --- A scene: h.scene{dim = 2, dx = 0.01, box = {{0,0},{1,1}}, gravity = {0,-9.81}, ...}
 function h.scene(o)
@@ -390,7 +390,7 @@ function h.scene(o)
     gravity = check_vec(o.gravity or { 0, -9.81, 0 }, "h.scene: gravity"),
     cfl = check_number(o.cfl or 0.5, "h.scene: cfl", 1e-6, 4),
     dt_max = check_number(o.dt_max or 0, "h.scene: dt_max", 0, 1e6, "s"),
-    wall = check_choice(o.wall or "slip", "h.scene: wall", contact),
+    wall = check_choice(o.wall or "slip", "h.scene: wall", { "sticky", "slip", "separate" }),
     friction = check_number(o.friction or 0, "h.scene: friction", 0, 1e6),
     guard = check_choice(o.guard or "stop", "h.scene: guard", { "stop", "rollback" }),
     max_rollbacks = check_number(o.max_rollbacks or 8, "h.scene: max_rollbacks", 0, 60),

@@ -33,8 +33,13 @@ KNOWN = {
     ("newtonian", "impact speed", "20 m/s"):
         "a 20 m/s impact is supersonic for the default fluid (sound speed sqrt(K/rho) = 10 m/s): compression inverts F late (step ~113)",
     ("cam_clay_dough", "temperature", "100 degC"):
-        "the expansion stress (c lambda = 10 Pa/K over 80 K) accelerates the soft default dough faster than the step "
-        "chosen from its last speed and elastic wave speed; the guard catches the CFL violation at step ~18",
+        "the expansion stress (c lambda = 10 Pa/K over 80 K: 800 Pa) is ~20x the default dough's tensile strength "
+        "(tau_y = 20 Pa, eq. 12), so the dough bursts; the step is chosen from its last speed and elastic wave speed, "
+        "and F inverts at step ~131",
+    ("cam_clay_dough", "temperature", "400 degC"):
+        "the expansion stress (c lambda = 10 Pa/K over 380 K: 3800 Pa) is ~100x the default dough's tensile strength "
+        "(tau_y = 20 Pa, eq. 12), so the dough bursts; the step is chosen from its last speed and elastic wave speed, "
+        "and the guard catches the CFL violation at step ~85",
     ("cam_clay_dough", "porosity", "0.99"):
         "n^p_0 = 0.99 leaves eq. 12 almost no strength (its porosity coefficient grows without bound as n^p -> 1): "
         "the dough collapses on the floor and the guard stops it at step ~123 (F inverts or the CFL trips in the same "
