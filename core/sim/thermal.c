@@ -64,23 +64,23 @@ double thermal_energy(const hearth_scene *s) {
 
 /* ---- boundary coefficients ------------------------------------------- */
 
-/* Fills s->bnd_coef (S beta, W/K) and s->bnd_temp (degrees C) per particle
- * from the air boundary (boundary.c) and the heated colliders. */
+/* Fills s->bnd_coef (S beta, W/K) and s->bnd_temp (degrees C) for the
+ * particles flagged PF_BOUNDARY, from the air boundary (boundary.c) and the
+ * heated colliders. Other particles' entries are stale: readers check the
+ * flag first, so the interior costs no memory traffic. */
 static void find_boundary(hearth_scene *s) {
     const grid *g = &s->g;
     particles *ps = &s->ps;
     const int n = ps->n;
     double *coef = s->bnd_coef, *temp = s->bnd_temp;
-    memset(coef, 0, sizeof(double) * (size_t)n);
-    memset(temp, 0, sizeof(double) * (size_t)n);
     const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0), *Fc = pcold(ps, PC_F);
-    int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
-    if (!isnan(s->def.oven_temperature) && s->def.oven_beta > 0)
-        for (int i = 0; i < n; i++)
-            if (s->bnd_area[i] > 0) {
-                coef[i] = s->bnd_area[i] * s->def.oven_beta;
-                temp[i] = s->def.oven_temperature;
-            }
+    int *flags = pcoli(ps, PC_FLAGS); /* live with temperature */
+    const int oven = !isnan(s->def.oven_temperature) && s->def.oven_beta > 0;
+    for (int i = 0; i < n; i++)
+        if (flags[i] & PF_BOUNDARY) { /* flagged by boundary.c: the air boundary */
+            coef[i] = oven ? s->bnd_area[i] * s->def.oven_beta : 0.0;
+            temp[i] = oven ? s->def.oven_temperature : 0.0;
+        }
     /* heated colliders: the band within dx of the surface */
     for (int c = 0; c < s->ncol; c++) {
         const collider *col = &s->cols[c];
@@ -88,12 +88,13 @@ static void find_boundary(hearth_scene *s) {
         for (int i = 0; i < n; i++) {
             const double *x = X + 3 * i;
             if (!collider_near(col, x) || collider_sdf(col, x, NULL) >= g->dx) continue;
+            if (!(flags[i] & PF_BOUNDARY)) coef[i] = temp[i] = 0.0;
             const double Vp = V0[i] * t3_det(Fc + 9 * i);
             /* a particle touching both air and the pan: the pan's temperature wins the ambient, areas add */
             const double cS = Vp / g->dx * col->beta;
             temp[i] = coef[i] > 0 ? (temp[i] * coef[i] + col->temperature * cS) / (coef[i] + cS) : col->temperature;
             coef[i] += cS;
-            if (flags) flags[i] |= PF_BOUNDARY;
+            flags[i] |= PF_BOUNDARY;
         }
     }
 }

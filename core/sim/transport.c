@@ -126,7 +126,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
     const double *V = WATER ? pcold(ps, PC_V) : NULL, *W = WATER ? pcold(ps, PC_WATER) : NULL;
     double *Q = WATER ? pcold(ps, PC_QW) : NULL;
     const double *area = s->bnd_area, dt = tp->dt;
-    const int *mat = pcoli(ps, PC_MAT);
+    const int *mat = pcoli(ps, PC_MAT), *flags = pcoli(ps, PC_FLAGS); /* live with heat and with water */
     for (int i = pb.start; i < pb.end; i++) {
         int base[3] = {0, 0, 0};
         double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
@@ -139,6 +139,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
         }
         const material_slot *ms = &s->mats[mat[i]];
         const double Vp = s->vol[i]; /* J V_0, from P2G */
+        const int bnd = (flags[i] & PF_BOUNDARY) != 0;
         /* value and gradient at the particle, contracted one axis at a time (the
          * weights are a tensor product): about half the work of node by node */
         double val[2] = {0, 0}, grad[2][3] = {{0, 0, 0}, {0, 0, 0}};
@@ -149,9 +150,9 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
         if (HEAT) {
             const double kap = Vp * ms->core[CP_CONDUCTIVITY];
             for (int d = 0; d < 3; d++) qk[d] = kap * gx[d];
-            bcoef = s->bnd_coef[i];
+            bcoef = bnd ? s->bnd_coef[i] : 0.0; /* thermal.c fills only flagged entries */
             if (SRC) {
-                source = bcoef * s->bnd_temp[i];
+                source = bnd ? bcoef * s->bnd_temp[i] : 0.0;
                 const double cl = ms->core[CP_EXPANSION];
                 if (cl > 0) source -= V0[i] * cl * (T[i] + KELVIN) * (Cc[9 * i] + Cc[9 * i + 4] + Cc[9 * i + 8]);
             }
@@ -164,7 +165,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
             for (int d = 0; d < 3; d++) qn[d] = kq * gs[d];
             /* evaporation from the saturation the grid sees at the particle, as the
              * heat Robin term uses the interpolated temperature */
-            evap = area && area[i] > 0 ? ms->core[CP_EVAPORATION] * th * si * area[i] : 0.0; /* kg/s */
+            evap = bnd && area && area[i] > 0 ? ms->core[CP_EVAPORATION] * th * si * area[i] : 0.0; /* kg/s */
             if (mom) { /* v^w = v^s + q^w / rho^w; the grid takes w V dq + dt V (v^w (x) q^w) grad w */
                 double vw[3], dq[3];
                 for (int d = 0; d < 3; d++) {
