@@ -15,7 +15,8 @@
  *   accelerations: pressure (3.18), deviatoric stress, artificial stress,
  *     viscosity (3.19) with no-slip walls (Morris et al. 1997), artificial
  *     viscosity beta term (3.41), surface tension (3.30), gravity
- *   heat: internal (3.45-3.46) and external at surface particles (3.42)
+ *   heat: internal (3.45-3.46) and external at surface particles (3.42);
+ *     the oven's Robin flux and heated colliders' contact beta (as MPM)
  *   kick, XSPH (3.34 with the tuner of 4.4), drift (3.57-3.58), colliders and
  *     walls with the thesis's response (3.31-3.33)
  *   browning value (4.5-4.6)
@@ -575,6 +576,11 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     /* accelerations (3.18, stress, 3.19, 3.41, 3.30) and heat (3.42, 3.45-3.46) */
     const double *gvec = s->def.gravity;
     const double Text = s->def.oven_temperature;
+    /* Robin heat exchange (Ding et al. 2019 §6.6, the MPM solver's oven): beta
+     * of the oven and of heated colliders, next to eq. 3.42's heat_ext */
+    const double beta_oven = isfinite(Text) ? s->def.oven_beta : 0.0;
+    int robin = beta_oven > 0;
+    for (int c = 0; c < s->ncol; c++) robin |= !isnan(s->cols[c].temperature) && s->cols[c].beta > 0;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0}, dTi = 0;
@@ -645,6 +651,27 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
                 /* the thesis prints (T_i - T_ext); heat flows from the hotter side, so (T_ext - T_i) */
                 dTi += o->heat_ext * (Tout - T[i]) * rad * rad / ri;
             }
+        }
+        if (T && robin) { /* the oven's Robin flux and heated colliders' contact beta, as MPM sees them */
+            /* Each surface particle (the ones eq. 3.42 heats) carries its
+             * face, V^((d-1)/d) of its rest volume, as a boundary node does in
+             * MPM (boundary.c); a particle within its spacing of a heated
+             * collider carries the same face of contact (MPM: within dx). The
+             * colour gradient as a surface delta (V |grad C|) would need no
+             * flag, but with particles on one side only it sums to 0.69 of a
+             * block's outline. */
+            const double ci = s->mats[mat[i]].core[CP_SPECIFIC_HEAT], Vr = m[i] / st->rho0[i];
+            const double sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
+            double coef = beta_oven > 0 && st->surf[i] ? face * beta_oven : 0.0, Tr = Text;
+            for (int c = 0; c < s->ncol; c++) {
+                const collider *cl = &s->cols[c];
+                if (isnan(cl->temperature) || !(cl->beta > 0) || !collider_near(cl, x + 3 * i)) continue;
+                if (!(collider_sdf(cl, x + 3 * i, NULL) < sp)) continue;
+                const double cS = face * cl->beta; /* the pan's temperature wins the ambient, areas add (as MPM) */
+                Tr = coef > 0 ? (Tr * coef + cl->temperature * cS) / (coef + cS) : cl->temperature;
+                coef += cS;
+            }
+            if (coef > 0 && ci > 0) dTi += coef * (Tr - T[i]) / (m[i] * ci);
         }
         memcpy(st->acc + 3 * i, a, sizeof a);
         st->wd[i] = drag;
@@ -800,6 +827,17 @@ double sph_stable_dt(const hearth_scene *s) {
     if (numax > 0) dt = fmin(dt, o->dt_viscous * hmin * hmin / numax);
     if (s->sph && s->sph->amax > 0) dt = fmin(dt, o->dt_force * sqrt(hmin / s->sph->amax));
     if (o->heat_int > 0 && T) dt = fmin(dt, 0.1 * hmin * hmin * rhomin / o->heat_int); /* eq. 3.45 has 1/rho */
+    if (T) { /* Robin: a face of V / spacing against the heat capacity rho c V */
+        double beta = isnan(s->def.oven_temperature) ? 0 : s->def.oven_beta, bc = 0;
+        for (int k = 0; k < s->ncol; k++)
+            if (!isnan(s->cols[k].temperature) && s->cols[k].beta > bc) bc = s->cols[k].beta;
+        beta += bc;
+        for (int m = 0; m < s->nmat && beta > 0; m++) {
+            const material_slot *ms = &s->mats[m];
+            const double rc = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
+            if (rc > 0) dt = fmin(dt, 0.25 * rc * hmin / o->h_factor / beta);
+        }
+    }
     if (s->def.dt_max > 0 && dt > s->def.dt_max) dt = s->def.dt_max;
     if (isinf(dt)) dt = s->def.cfl * s->def.dx;
     return dt * s->dt_scale;
