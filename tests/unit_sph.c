@@ -452,8 +452,8 @@ TEST(sph_oven_robin) {
         T = pcold(&s->ps, PC_TEMPERATURE), mass = pcold(&s->ps, PC_MASS);
         for (int i = 0; i < s->ps.n; i++) E1 += mass[i] * cp * T[i];
         const double want = (k == 1 ? beta * 2 * (0.04 + 0.02) : k == 2 ? 50 * 0.04 : 0.0) * (180 - 26) * s->t;
-        printf("%s: heat in %.4g J over %.3g s, expected %.4g J\n", k == 0 ? "oven beta 0" : k == 1 ? "oven beta 50" : "tray beta 50",
-               E1 - E0, s->t, want);
+        const char *what = k == 0 ? "oven beta 0" : k == 1 ? "oven beta 50" : "tray beta 50";
+        printf("%s: heat in %.4g J over %.3g s, expected %.4g J\n", what, E1 - E0, s->t, want);
         if (k)
             CHECK(fabs((E1 - E0) - want) <= 0.05 * want);
         else

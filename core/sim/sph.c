@@ -567,8 +567,10 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
             double r[3];
             for (int k = 0; k < 3; k++) r[k] = l[k] > 0 ? -eps_as * l[k] / (st->rho[i] * st->rho[i]) : 0.0;
             for (int a = 0; a < 3; a++)
-                for (int b = 0; b < 3; b++)
-                    Ri[3 * a + b] = Q[3 * a] * r[0] * Q[3 * b] + Q[3 * a + 1] * r[1] * Q[3 * b + 1] + Q[3 * a + 2] * r[2] * Q[3 * b + 2];
+                for (int b = 0; b < 3; b++) { /* R = Q diag(r) Q^T */
+                    Ri[3 * a + b] = 0;
+                    for (int k = 0; k < 3; k++) Ri[3 * a + b] += Q[3 * a + k] * r[k] * Q[3 * b + k];
+                }
         }
     }
     const double *V0 = pcold(ps, PC_VOL0);
