@@ -547,7 +547,7 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
      * Methods Appl. Mech. Engrg. 190, 6641-6662, for elastic solids). Under
      * tension, SPH particles attract their neighbours more the closer they
      * are, so they clump in pairs and strings and a stretched body breaks
-     * (the bread scenes split along their toppings). In the principal frame
+     * (bread of the dead split along its toppings). In the principal frame
      * of sigma = S - p I each tensile component sigma'_k > 0 gets
      * R'_k = -epsilon sigma'_k / rho^2 (compressive ones 0); rotated back,
      * R_a enters the momentum equation as sum_b m_b f_ab^n (R_a + R_b) .
@@ -556,7 +556,7 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
      * (r < dp) and negligible at the rest spacing's neighbours beyond.
      * Off by default (sph.artificial_stress = 0): the same repulsion resists
      * a cooling bubble's contraction (at 0.3 it loses 31% less volume than
-     * its gas, `sph_bubble_cooling_contracts`); the bread scenes set 0.3. */
+     * its gas, `sph_bubble_cooling_contracts`); bread of the dead sets 0.3. */
     const double eps_as = o->artificial_stress;
     if (eps_as > 0) {
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
