@@ -77,7 +77,7 @@ static int l_scene_new(lua_State *L) {
             {"alpha_c", &o->alpha_c}, {"beta_c", &o->beta_c}, {"xsph0", &o->xsph0}, {"xsph_f", &o->xsph_f},
             {"xsph_T0", &o->xsph_T0}, {"xsph_Tf", &o->xsph_Tf}, {"heat_ext", &o->heat_ext}, {"heat_int", &o->heat_int},
             {"k_g", &o->k_g}, {"eps_g", &o->eps_g}, {"bubble_T0", &o->bubble_T0}, {"dt_viscous", &o->dt_viscous},
-            {"dt_force", &o->dt_force}};
+            {"dt_force", &o->dt_force}, {"artificial_stress", &o->artificial_stress}};
         for (size_t k = 0; k < sizeof nums / sizeof nums[0]; k++) {
             lua_getfield(L, t, nums[k].k);
             if (lua_isnumber(L, -1)) *nums[k].v = lua_tonumber(L, -1);

@@ -169,8 +169,11 @@ static int box_body(hearth_scene *s, int mat, double x0, double y0, double x1, d
 }
 
 /* Hydrostatic tank: a 0.1 m water column (10 x 10 particles, c = 10 m/s, three layers of fixed
- * wall particles) settles; the pressure of the lowest fluid layer is
- * rho g (H - y) within 3%, and the kinetic energy decays. */
+ * wall particles) settles for 1.5 s; the pressure of the lowest fluid layer
+ * is rho g (H - y) within 3%, and the kinetic energy decays. (At 1 s the
+ * free surface's top layer is rearranging, a pulse of kinetic energy there
+ * between 0.6 and 1.2 s, with and without no-slip walls; by 1.5 s it has
+ * settled.) */
 TEST(sph_hydrostatic) {
     const double dx = 0.01, lo[3] = {0, 0, 0}, hi[3] = {0.16, 0.3, 0};
     hearth_scene_def d = sph_def(2, dx, lo, hi);
@@ -188,7 +191,7 @@ TEST(sph_hydrostatic) {
     hearth_error err;
     double kpeak = 0;
     hearth_stats st;
-    for (int k = 1; k <= 40; k++) {
+    for (int k = 1; k <= 60; k++) {
         hearth_status rc = hearth_scene_advance(s, 0.025 * k, &err);
         if (rc) {
             fprintf(stderr, "%s\n", err.msg);
@@ -236,51 +239,228 @@ static void push_x(void *ud, double t, const double x[3], double acc[3]) {
     acc[0] = *(const double *)ud;
 }
 
-/* Poiseuille flow between fixed plates (periodic in x) under a body force
- * f: the steady profile u(y) = f / (2 nu) y (L - y) within 3% of the peak. */
-TEST(sph_poiseuille) {
+/* Poiseuille flow between fixed plates (periodic in x, three wall layers,
+ * the wall surface half a spacing beyond the last wall particle) under a
+ * body force f, at viscosity eta, run for t_end. Returns the worst
+ * |u - u_exact| over the fluid particles as a fraction of the peak
+ * f L^2 / (8 nu), or NAN if a step failed or a velocity is not finite. */
+static double poiseuille(double eta, double tend_viscous, int debug) {
     const double dx = 0.001, L = 0.02, w = 3 * dx, lo[3] = {0, 0, 0}, hi[3] = {0.012, L + 2 * w, 0};
     hearth_scene_def d = sph_def(2, dx, lo, hi);
     d.gravity[1] = 0;
     d.sph.periodic[0] = 1;
     hearth_scene *s = hearth_scene_create(&d, NULL);
-    CHECK(s != NULL);
-    if (!s) return;
-    const double rho = 1000, eta = 1.0, nu = eta / rho;
-    double f = 0.1; /* peak u = f L^2 / (8 nu) = 5 mm/s */
+    if (!s) return NAN;
+    const double rho = 1000, nu = eta / rho;
+    double f = 0.1 * eta; /* peak u = f L^2 / (8 nu) = 5 mm/s at any eta */
     int m = newtonian(s, rho, 1e3, eta);
-    CHECK(box_body(s, m, 0, 0, hi[0], w, 1, NAN) >= 0);
-    CHECK(box_body(s, m, 0, L + w, hi[0], hi[1], 1, NAN) >= 0);
-    CHECK(box_body(s, m, 0, w, hi[0], L + w, 0, NAN) >= 0);
+    int ok = box_body(s, m, 0, 0, hi[0], w, 1, NAN) >= 0 && box_body(s, m, 0, L + w, hi[0], hi[1], 1, NAN) >= 0 &&
+             box_body(s, m, 0, w, hi[0], L + w, 0, NAN) >= 0;
     hearth_scene_set_body_force(s, push_x, &f);
     hearth_error err;
-    const double tend = 1.0 * L * L / nu; /* ten viscous times L^2 / (pi^2 nu): steady to e^-10 */
-    hearth_status rc = hearth_scene_advance(s, tend, &err);
+    const double tend = tend_viscous * L * L / nu; /* L^2 / nu is pi^2 viscous times L^2 / (pi^2 nu) */
+    hearth_status rc = ok ? hearth_scene_advance(s, tend, &err) : HEARTH_ERR_PARAM;
     if (rc) fprintf(stderr, "%s\n", err.msg);
-    CHECK(rc == HEARTH_OK);
     const double *x = hearth_scene_positions(s), *v = pcold(&s->ps, PC_V);
     const int *flags = pcoli(&s->ps, PC_FLAGS);
     const double umax = f * L * L / (8 * nu);
-    double worst = 0;
-    for (int i = 0; i < hearth_scene_particle_count(s); i++) {
+    double worst = rc ? NAN : 0;
+    for (int i = 0; i < hearth_scene_particle_count(s) && !rc; i++) {
         if (flags[i] & PF_FIXED) continue;
         const double y = x[3 * i + 1] - w, want = f / (2 * nu) * y * (L - y);
+        if (!isfinite(v[3 * i])) worst = NAN;
         worst = fmax(worst, fabs(v[3 * i] - want));
-        if (getenv("SPH_DEBUG") && x[3 * i] < 0.001) printf("y %.5f u %.5g want %.5g vy %.3g\n", y, v[3 * i], want, v[3 * i + 1]);
+        if (debug && x[3 * i] < 0.001) printf("y %.5f u %.5g want %.5g vy %.3g\n", y, v[3 * i], want, v[3 * i + 1]);
     }
-    printf("poiseuille: peak %.4g m/s, worst |u - u_exact| = %.3g m/s = %.2f%% of the peak (t = %.3g s)\n", umax,
-           worst, 100 * worst / umax, tend);
-    /* Measured 12.6%: the profile is the right parabola (centre minus wall
-     * layer 4.7% under the exact difference, which is the lattice sum of eq. 3.8
-     * at h = 2.4 spacings being 5.7% strong) shifted up by a slip of 0.63 mm/s:
-     * eq. 3.19 with wall particles at rest pulls the first fluid layer back
-     * much less than a mirrored flow would (a Morris or Adami wall velocity
-     * would be needed; the thesis has none). Kept as an expected failure. */
-    CHECK(worst < 0.2 * umax); /* the parabola is there: far below the 100% of a plug or a stuck flow */
-    if (worst > 0.03 * umax)
-        XFAIL("Poiseuille worst error %.1f%% of the peak > 3%%: wall slip of eq. 3.19 with resting wall particles",
-              100 * worst / umax);
+    printf("poiseuille at %g Pa s: peak %.4g m/s, worst |u - u_exact| = %.3g m/s = %.2f%% of the peak (t = %.3g s, %ld "
+           "steps)\n",
+           eta, umax, worst, 100 * worst / umax, tend, (long)s->step);
     hearth_scene_destroy(s);
+    return worst / umax;
+}
+
+/* The steady profile u(y) = f / (2 nu) y (L - y) within 3% of the peak.
+ * Measured 2.2% with Morris et al.'s no-slip wall velocities (sph.c,
+ * wall_frame); 12.6% with wall particles at rest in eq. 3.19 (slip). What
+ * is left is eq. 3.8's Laplacian summed over particles: its second moment
+ * over rows of particles sliding past each other is 3.8% above the
+ * integral at h = 2.4 spacings (5.7% on a lattice at rest), so the flow is
+ * a little slow in the middle. */
+TEST(sph_poiseuille) {
+    const double err = poiseuille(1.0, 1.0, getenv("SPH_DEBUG") != NULL);
+    CHECK(err < 0.03);
+}
+
+/* The no-slip wall drag is integrated implicitly: at 1e4 Pa s (the viscous
+ * dt limit governs) the channel stays finite and within 10% of the parabola
+ * after half of L^2 / nu (measured 5.5%: the particles barely move, so eq.
+ * 3.8's lattice sum, 5.7% strong, is what they see, and e^(-pi^2 / 2) of
+ * the start-up is left). Taken explicitly, the wall velocities of up to
+ * 5 v_a grew the velocities to 89 m/s. */
+TEST(sph_wall_drag_stable) {
+    const double err = poiseuille(1e4, 0.5, 0);
+    CHECK(isfinite(err) && err < 0.1);
+}
+
+/* Smallest and largest nearest-neighbour distance over a periodic 2D box
+ * of size hi, in units of a (O(n^2): small blocks only). */
+static void nn_range(const hearth_scene *s, const double hi[3], double a, double *dmin, double *dmax) {
+    const double *x = hearth_scene_positions(s);
+    const int n = hearth_scene_particle_count(s);
+    *dmin = INFINITY, *dmax = 0;
+    for (int i = 0; i < n; i++) {
+        double best = INFINITY;
+        for (int j = 0; j < n; j++) {
+            if (j == i) continue;
+            double dd[2];
+            for (int c = 0; c < 2; c++) {
+                dd[c] = x[3 * i + c] - x[3 * j + c];
+                dd[c] -= hi[c] * round(dd[c] / hi[c]);
+            }
+            best = fmin(best, hypot(dd[0], dd[1]));
+        }
+        *dmin = fmin(*dmin, best / a), *dmax = fmax(*dmax, best / a);
+    }
+}
+
+/* A periodic 16 x 16 block in uniform tension, 1% jitter, Tait pressure
+ * kept negative (sph.tension), run for 0.15 s (about 240 sound crossings of
+ * a spacing) with artificial stress epsilon:
+ *   elastic = 0: Monaghan 2000's fluid case. Particles of rest volume dx^2
+ *     on a lattice of spacing 1.02 dx: the summed density is 4% below rest
+ *     and the Tait pressure about -0.24 B everywhere.
+ *   elastic = 1: Gray, Monaghan & Swift 2001's solid case. maxwell_sph
+ *     (mu_e 1e4 Pa, lambda 100 s) at its rest spacing, prestressed in
+ *     uniaxial deviatoric tension S = sigma0 (n n - I/3), sigma0 = 1 kPa,
+ *     n at 30 degrees to x (so the principal frame is not the axes').
+ * Uniform stress is an equilibrium; the tensile instability is what moves
+ * particles. Returns the nearest-neighbour distance range over the lattice
+ * spacing at the end. */
+static void tension_block(int elastic, double eps, double *dmin, double *dmax) {
+    const int N = 16;
+    const double dx = 0.002, a = (elastic ? 1.0 : 1.02) * dx, lo[3] = {0, 0, 0}, hi[3] = {N * a, N * a, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[1] = 0;
+    d.sph.periodic[0] = d.sph.periodic[1] = 1;
+    d.sph.tension = 1;
+    d.sph.artificial_stress = eps;
+    *dmin = *dmax = NAN;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    if (!s) return;
+    hearth_error err;
+    int m;
+    if (elastic) {
+        const char *names[] = {"density", "viscosity", "mu_e", "lambda", "bulk"};
+        const double vals[] = {1000, 0.1, 1e4, 100, 1e4};
+        m = hearth_scene_add_material(s, "maxwell_sph", names, vals, 5, &err);
+        if (m < 0) fprintf(stderr, "%s\n", err.msg);
+    } else
+        m = newtonian(s, 1000, 1e4, 1.0);
+    uint64_t r = 42;
+    for (int j = 0; j < N; j++)
+        for (int i = 0; i < N; i++) {
+            double p[3] = {(i + 0.5) * a, (j + 0.5) * a, 0};
+            for (int c = 0; c < 2; c++) {
+                r = r * 6364136223846793005ULL + 1442695040888963407ULL;
+                p[c] += 0.01 * a * ((double)(r >> 11) / 9007199254740992.0 - 0.5);
+            }
+            if (hearth_scene_add_particles(s, m, 1, p, NULL, dx * dx, &err) != 1) fprintf(stderr, "%s\n", err.msg);
+        }
+    if (elastic) { /* plugin state: S xx, yy, zz, xy, yz, zx */
+        const double sig0 = 1e3, c = cos(SPH_PI / 6), sn = sin(SPH_PI / 6);
+        for (int i = 0; i < s->ps.n; i++) {
+            double *S = pcold(&s->ps, PC_STATE) + (size_t)i * s->ps.state_stride;
+            S[0] = sig0 * (c * c - 1.0 / 3), S[1] = sig0 * (sn * sn - 1.0 / 3), S[2] = -sig0 / 3;
+            S[3] = sig0 * c * sn, S[4] = S[5] = 0;
+        }
+    }
+    const double tend = getenv("SPH_AS_T") ? atof(getenv("SPH_AS_T")) : 0.15; /* longer runs for the notes below */
+    for (int k = 1; k <= 5; k++) {
+        if (hearth_scene_advance(s, tend * k / 5, &err)) {
+            fprintf(stderr, "%s\n", err.msg);
+            break;
+        }
+        nn_range(s, hi, a, dmin, dmax);
+        printf("%s, epsilon %.2f, t = %.3f s: nearest-neighbour distance %.3f to %.3f spacings\n",
+               elastic ? "elastic, deviatoric tension" : "fluid, negative pressure", eps, s->t, *dmin, *dmax);
+    }
+    hearth_scene_destroy(s);
+}
+
+/* Artificial stress (Monaghan 2000, sph.c): without it the stretched fluid
+ * (1 Pa s) pairs up (nearest neighbours at 0.45 spacings within 0.03 s,
+ * measured); with epsilon = 0.3 every nearest neighbour stays within 10% of
+ * the spacing (measured 0.97 to 1.03). Longer (SPH_AS_T=1): at epsilon 0.3
+ * it creeps, 0.68 by 1 s; epsilon 0.5 stays within 0.94 to 1.07. */
+TEST(sph_artificial_stress_fluid) {
+    double lo0, hi0, lo1, hi1;
+    tension_block(0, 0.0, &lo0, &hi0);
+    tension_block(0, getenv("SPH_AS_EPS") ? atof(getenv("SPH_AS_EPS")) : 0.3, &lo1, &hi1);
+    CHECK(lo0 < 0.5);
+    CHECK(lo1 > 0.9 && hi1 < 1.1);
+}
+
+/* The same for an elastic solid (0.1 Pa s) in deviatoric tension along a
+ * tilted axis (Gray et al. 2001): without artificial stress nearest
+ * neighbours come to 0.2 to 0.35 spacings (measured); with epsilon = 0.3
+ * within 10% (measured 0.99 to 1.01; to 1 s, 0.90 to 1.03). */
+TEST(sph_artificial_stress_elastic) {
+    double lo0, hi0, lo1, hi1;
+    tension_block(1, 0.0, &lo0, &hi0);
+    tension_block(1, getenv("SPH_AS_EPS") ? atof(getenv("SPH_AS_EPS")) : 0.3, &lo1, &hi1);
+    CHECK(lo0 < 0.5);
+    CHECK(lo1 > 0.9 && hi1 < 1.1);
+}
+
+/* The oven's Robin flux reaches SPH particles (sph.c): a 40 x 20 mm block
+ * (1 mm particles, no gravity, no conduction, no eq. 3.42) at 26 degC in a
+ * 180 degC oven with beta = 50 W/(m^2 K) takes in heat at beta P (T_oven - T)
+ * with P its perimeter (per metre of depth in 2D), within 5% (measured 3.4%
+ * short: the four corners), over 20 steps (the temperature barely moves, so
+ * the rate is the initial one). With beta = 0 it takes in none; on a tray
+ * at 180 degC with contact beta 50 (oven beta 0) it takes in beta W
+ * (T_tray - T) through its 40 mm bottom W, within 5%. */
+TEST(sph_oven_robin) {
+    for (int k = 0; k < 3; k++) {
+        const double dx = 0.001, lo[3] = {0, 0, 0}, hi[3] = {0.08, 0.06, 0}, beta = k == 1 ? 50.0 : 0.0, cp = 2500;
+        hearth_scene_def d = sph_def(2, dx, lo, hi);
+        d.gravity[1] = 0;
+        d.oven_temperature = 180;
+        d.oven_beta = beta;
+        hearth_scene *s = hearth_scene_create(&d, NULL);
+        CHECK(s != NULL);
+        if (!s) return;
+        const char *n[] = {"density", "bulk", "viscosity", "specific_heat"};
+        const double v[] = {1000, 1e4, 1.0, cp};
+        hearth_error err;
+        int m = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
+        CHECK(m >= 0);
+        CHECK(box_body(s, m, 0.02, 0.02, 0.06, 0.04, 0, 26) >= 0);
+        if (k == 2) { /* the tray under the block */
+            double pt[3] = {0, 0.02, 0}, nrm[3] = {0, 1, 0};
+            hearth_collider_def cd = hearth_default_collider_def();
+            cd.shape = hearth_shape_plane(pt, nrm);
+            cd.mode = HEARTH_SLIP;
+            cd.temperature = 180;
+            cd.beta = 50;
+            CHECK(hearth_scene_add_collider(s, &cd, &err) >= 0);
+            hearth_shape_free((hearth_shape *)cd.shape);
+        }
+        const double *T = pcold(&s->ps, PC_TEMPERATURE), *mass = pcold(&s->ps, PC_MASS);
+        double E0 = 0, E1 = 0;
+        for (int i = 0; i < s->ps.n; i++) E0 += mass[i] * cp * T[i];
+        CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+        T = pcold(&s->ps, PC_TEMPERATURE), mass = pcold(&s->ps, PC_MASS);
+        for (int i = 0; i < s->ps.n; i++) E1 += mass[i] * cp * T[i];
+        const double want = (k == 1 ? beta * 2 * (0.04 + 0.02) : k == 2 ? 50 * 0.04 : 0.0) * (180 - 26) * s->t;
+        const char *what = k == 0 ? "oven beta 0" : k == 1 ? "oven beta 50" : "tray beta 50";
+        printf("%s: heat in %.4g J over %.3g s, expected %.4g J\n", what, E1 - E0, s->t, want);
+        if (k)
+            CHECK(fabs((E1 - E0) - want) <= 0.05 * want);
+        else
+            CHECK(E1 - E0 == 0);
+        hearth_scene_destroy(s);
+    }
 }
 
 /* A dough disc (lattice, no gravity) with every fourth particle a bubble
@@ -700,6 +880,6 @@ TEST(sph_surface_tension_rounds_drop) {
 }
 
 TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_neighbours_agree), T(sph_hydrostatic),
-          T(sph_poiseuille), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads),
+          T(sph_poiseuille), T(sph_wall_drag_stable), T(sph_artificial_stress_fluid), T(sph_artificial_stress_elastic), T(sph_oven_robin), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads),
           T(sph_integrators_free_fall), T(sph_collider_response), T(sph_heat_internal_conserves), T(sph_adaptive_h),
           T(sph_surface_tension_rounds_drop), T(sph_bubble_cooling_contracts))

@@ -62,7 +62,8 @@ hearth_scene_def hearth_default_scene_def(void) {
         .sph = {.h_factor = 2.4, .leapfrog = 0, .gamma = 7, .av_beta = 0, .surface_tension = 0,
                 .surface_threshold = 0.75, .alpha_c = 0, .beta_c = 1, .xsph0 = 0, .xsph_f = 0, .xsph_T0 = 26,
                 .xsph_Tf = 120, .heat_ext = 0, .heat_int = 0, .adaptive_h = 0, .k_g = 1, .eps_g = 0.5,
-                .bubble_T0 = 26, .dt_viscous = 0.125, .dt_force = 0.25, .periodic = {0, 0, 0}, .tension = 0},
+                .bubble_T0 = 26, .dt_viscous = 0.125, .dt_force = 0.25, .periodic = {0, 0, 0}, .tension = 0,
+                .artificial_stress = 0},
     };
 }
 

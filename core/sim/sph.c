@@ -11,9 +11,12 @@
  *     surface particles
  *   plugin stress: F <- (I + dt L) F, the plugin's Kirchhoff stress, its
  *     deviator enters the momentum equation (Tait gives the pressure)
- *   accelerations: pressure (3.18), deviatoric stress, viscosity (3.19),
- *     artificial viscosity beta term (3.41), surface tension (3.30), gravity
- *   heat: internal (3.45-3.46) and external at surface particles (3.42)
+ *   artificial stress on tensile principal stresses (Monaghan 2000)
+ *   accelerations: pressure (3.18), deviatoric stress, artificial stress,
+ *     viscosity (3.19) with no-slip walls (Morris et al. 1997), artificial
+ *     viscosity beta term (3.41), surface tension (3.30), gravity
+ *   heat: internal (3.45-3.46) and external at surface particles (3.42);
+ *     the oven's Robin flux and heated colliders' contact beta (as MPM)
  *   kick, XSPH (3.34 with the tuner of 4.4), drift (3.57-3.58), colliders and
  *     walls with the thesis's response (3.31-3.33)
  *   browning value (4.5-4.6)
@@ -29,6 +32,7 @@
 #include "error.h"
 #include "sph_kernel.h"
 #include "sph_neighbours.h"
+#include "tensor.h"
 
 #define KELVIN 273.15
 
@@ -41,6 +45,8 @@ struct sph_state {
     double *perm;   /* permutation scratch, cap doubles */
     double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *brown, *surf, *rhof, *dT, *Tprev;
     double *rho0, *B, *mu, *c0, *xsph;
+    double *wd;     /* no-slip wall drag coefficient (1/s), integrated implicitly in the kick */
+    double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
     double amax;    /* largest |a| of the last step, for the force limit */
 };
 
@@ -71,6 +77,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
     RANGE(bubble_T0, -273.0, 5000.0, " degC");
     RANGE(dt_viscous, 1e-6, 1.0, "");
     RANGE(dt_force, 1e-6, 1.0, "");
+    RANGE(artificial_stress, 0.0, 1.0, " (Monaghan's epsilon; 0.2-0.3 is usual)");
 #undef RANGE
     if (!(o->xsph_Tf > o->xsph_T0))
         return err_set(err, HEARTH_ERR_PARAM, "scene: sph.xsph_Tf = %g degC must be above sph.xsph_T0 = %g degC",
@@ -89,7 +96,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
 
 #define ARRAYS(X)                                                                                                      \
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(brown, 1) X(surf, 1) X(rhof, 1)       \
-        X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1)
+        X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(wd, 1) X(R, 9)
 
 void sph_free(struct sph_state *st) {
     if (!st) return;
@@ -197,6 +204,64 @@ static void particle_constants(hearth_scene *s, int i, const double *T, double *
     st->xsph[i] = eps;
     const double V0 = pcold(ps, PC_VOL0)[i];
     st->h[i] = o->h_factor * (s->def.dim == 3 ? cbrt(V0) : sqrt(V0));
+}
+
+/* No-slip walls of fixed particles (Morris, Fox & Zhu 1997, J. Comput. Phys.
+ * 136, 214-226): in the viscous term a wall particle b seen from a fluid
+ * particle a moves with v_b = -(d_b / d_a) v_a, d the distances to the wall
+ * surface, so the velocity extrapolates linearly to zero on the surface.
+ * With wall particles at rest instead, eq. 3.19 lets the first fluid layer
+ * slip (Poiseuille flow 12.6% off the parabola; 2.2% with this,
+ * `sph_poiseuille`). Particle walls carry no surface, so it is estimated
+ * per fluid particle a: the wall normal n is minus the gradient of the
+ * fixed particles' colour field at a (that gradient points into the wall),
+ * and the surface lies half a wall spacing beyond the wall particle nearest
+ * along n (exact for the lattice walls bodies make). Morris et al. bound
+ * 1 + d_b / d_a so a particle close to the surface does not get an
+ * unbounded wall velocity; here d_a is taken as at least half the fluid
+ * particle's own spacing instead, which never bites on the rest lattice
+ * (their bound of 1.5 would, and leaves 4.9% slip in `sph_poiseuille`).
+ * wall_frame returns 0 when a has no fixed neighbour. */
+static int wall_frame(const hearth_scene *s, int i, double n[3], double *da) {
+    const struct sph_state *st = s->sph;
+    const particles *ps = &s->ps;
+    const int *flags = pcoli(ps, PC_FLAGS), dim = s->def.dim;
+    const double *x = pcold(ps, PC_X), *m = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
+    const int *off = st->nl.off, *nb = st->nl.j;
+    double g[3] = {0, 0, 0};
+    for (int k = off[i]; k < off[i + 1]; k++) {
+        const int j = nb[k];
+        if (!(flags[j] & PF_FIXED)) continue;
+        double d[3];
+        sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
+        const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        if (r <= 0) continue;
+        const double w = m[j] / st->rho[j] * sph_dw(dim, r, 0.5 * (st->h[i] + st->h[j])) / r;
+        for (int c = 0; c < 3; c++) g[c] += w * d[c];
+    }
+    const double gn = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if (!(gn > 0)) return 0;
+    for (int c = 0; c < 3; c++) n[c] = -g[c] / gn;
+    double best = INFINITY;
+    for (int k = off[i]; k < off[i + 1]; k++) {
+        const int j = nb[k];
+        if (!(flags[j] & PF_FIXED)) continue;
+        double d[3];
+        sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
+        const double sj = d[0] * n[0] + d[1] * n[1] + d[2] * n[2] - 0.5 * (dim == 3 ? cbrt(V0[j]) : sqrt(V0[j]));
+        if (sj < best) best = sj;
+    }
+    *da = best;
+    return 1;
+}
+
+/* 1 + d_b / d_a for wall particle b at displacement d = x_a - x_b: the
+ * factor on v_a in a's viscous interaction with b (v_a - v_b of eq. 3.19
+ * with the wall velocity above). d_a at least half of a's spacing. */
+static double wall_beta(const hearth_scene *s, int i, const double d[3], const double n[3], double da) {
+    const double V0 = pcold(&s->ps, PC_VOL0)[i], half = 0.5 * (s->def.dim == 3 ? cbrt(V0) : sqrt(V0));
+    const double db = d[0] * n[0] + d[1] * n[1] + d[2] * n[2] - da;
+    return db > 0 ? 1.0 + db / fmax(da, half) : 1.0;
 }
 
 static hearth_status sort_and_list(hearth_scene *s, double hcell, const double *h, hearth_error *err) {
@@ -477,9 +542,47 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         return HEARTH_OK;
     }
 
+    /* Artificial stress against the tensile instability (Monaghan 2000,
+     * J. Comput. Phys. 159, 290-311; Gray, Monaghan & Swift 2001, Comput.
+     * Methods Appl. Mech. Engrg. 190, 6641-6662, for elastic solids). Under
+     * tension, SPH particles attract their neighbours more the closer they
+     * are, so they clump in pairs and strings and a stretched body breaks
+     * (bread of the dead split along its toppings). In the principal frame
+     * of sigma = S - p I each tensile component sigma'_k > 0 gets
+     * R'_k = -epsilon sigma'_k / rho^2 (compressive ones 0); rotated back,
+     * R_a enters the momentum equation as sum_b m_b f_ab^n (R_a + R_b) .
+     * grad_a W with f_ab = W(r_ab) / W(dp), dp the rest spacing, n = 4: a
+     * short-range repulsion that is strong exactly where particles clump
+     * (r < dp) and negligible at the rest spacing's neighbours beyond.
+     * Off by default (sph.artificial_stress = 0): the same repulsion resists
+     * a cooling bubble's contraction (at 0.3 it loses 31% less volume than
+     * its gas, `sph_bubble_cooling_contracts`); bread of the dead sets 0.3. */
+    const double eps_as = o->artificial_stress;
+    if (eps_as > 0) {
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+        for (int i = 0; i < n; i++) {
+            double sig[9], l[3], Q[9], *Ri = st->R + 9 * i;
+            for (int a = 0; a < 9; a++) sig[a] = st->S[9 * i + a] - (a % 4 == 0 ? st->prs[i] : 0.0);
+            t3_sym_eigen(sig, l, Q);
+            double r[3];
+            for (int k = 0; k < 3; k++) r[k] = l[k] > 0 ? -eps_as * l[k] / (st->rho[i] * st->rho[i]) : 0.0;
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++) { /* R = Q diag(r) Q^T */
+                    Ri[3 * a + b] = 0;
+                    for (int k = 0; k < 3; k++) Ri[3 * a + b] += Q[3 * a + k] * r[k] * Q[3 * b + k];
+                }
+        }
+    }
+    const double *V0 = pcold(ps, PC_VOL0);
+
     /* accelerations (3.18, stress, 3.19, 3.41, 3.30) and heat (3.42, 3.45-3.46) */
     const double *gvec = s->def.gravity;
     const double Text = s->def.oven_temperature;
+    /* Robin heat exchange (Ding et al. 2019 §6.6, the MPM solver's oven): beta
+     * of the oven and of heated colliders, next to eq. 3.42's heat_ext */
+    const double beta_oven = isfinite(Text) ? s->def.oven_beta : 0.0;
+    int robin = beta_oven > 0;
+    for (int c = 0; c < s->ncol; c++) robin |= !isnan(s->cols[c].temperature) && s->cols[c].beta > 0;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0}, dTi = 0;
@@ -489,6 +592,8 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
             for (int c = 0; c < dim; c++) a[c] += bf[c];
         }
         const double ri = st->rho[i], Pi = st->prs[i] / (ri * ri), *Si = st->S + 9 * i;
+        double wn[3] = {0, 0, 0}, da = 0, drag = 0;
+        const int wall = flags && !(flags[i] & PF_FIXED) && wall_frame(s, i, wn, &da);
         for (int k = off[i]; k < off[i + 1]; k++) {
             const int j = nb[k];
             double d[3];
@@ -509,11 +614,24 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
             }
             const double *Sj = st->S + 9 * j, lv = sph_lap_visc(dim, r, hij);
             const double visc = 0.5 * (st->mu[i] + st->mu[j]) * m[j] / (rj * ri) * lv; /* eq. 3.19 over rho_i */
+            /* a wall particle's velocity for eq. 3.19: Morris et al. 1997 (below) */
+            const int wj = wall && (flags[j] & PF_FIXED);
+            const double beta = wj ? wall_beta(s, i, d, wn, da) : 1.0;
+            double fn = 0; /* f_ab^4 of the artificial stress */
+            if (eps_as > 0) {
+                const double dp = 0.5 * (dim == 3 ? cbrt(V0[i]) + cbrt(V0[j]) : sqrt(V0[i]) + sqrt(V0[j]));
+                const double f = sph_w(dim, r, hij) / sph_w(dim, dp, hij);
+                fn = f * f * f * f;
+            }
+            const double *Ri = st->R + 9 * i, *Rj = st->R + 9 * j;
             for (int c = 0; c < dim; c++) {
                 double sd = 0;
                 for (int b = 0; b < 3; b++) sd += (Si[3 * c + b] / (ri * ri) + Sj[3 * c + b] / (rj * rj)) * d[b];
-                a[c] += m[j] * (-Pij * g * d[c] + sd * g) - visc * vij[c];
+                if (fn > 0)
+                    for (int b = 0; b < 3; b++) sd += fn * (Ri[3 * c + b] + Rj[3 * c + b]) * d[b];
+                a[c] += m[j] * (-Pij * g * d[c] + sd * g) - (wj ? 0.0 : visc * vij[c]);
             }
+            drag += wj ? visc * beta : 0.0;
             if (T && o->heat_int > 0) /* eq. 3.45-3.46 */
                 dTi += o->heat_int * 4 * m[j] / ((ri + rj) * (ri + rj)) * (T[j] - T[i]) * lv;
         }
@@ -536,14 +654,41 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
                 dTi += o->heat_ext * (Tout - T[i]) * rad * rad / ri;
             }
         }
+        if (T && robin) { /* the oven's Robin flux and heated colliders' contact beta, as MPM sees them */
+            /* Each surface particle (the ones eq. 3.42 heats) carries its
+             * face, V^((d-1)/d) of its rest volume, as a boundary node does in
+             * MPM (boundary.c); a particle within its spacing of a heated
+             * collider carries the same face of contact (MPM: within dx). The
+             * colour gradient as a surface delta (V |grad C|) would need no
+             * flag, but with particles on one side only it sums to 0.69 of a
+             * block's outline. */
+            const double ci = s->mats[mat[i]].core[CP_SPECIFIC_HEAT], Vr = m[i] / st->rho0[i];
+            const double sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
+            double coef = beta_oven > 0 && st->surf[i] ? face * beta_oven : 0.0, Tr = Text;
+            for (int c = 0; c < s->ncol; c++) {
+                const collider *cl = &s->cols[c];
+                if (isnan(cl->temperature) || !(cl->beta > 0) || !collider_near(cl, x + 3 * i)) continue;
+                if (!(collider_sdf(cl, x + 3 * i, NULL) < sp)) continue;
+                const double cS = face * cl->beta; /* the pan's temperature wins the ambient, areas add (as MPM) */
+                Tr = coef > 0 ? (Tr * coef + cl->temperature * cS) / (coef + cS) : cl->temperature;
+                coef += cS;
+            }
+            if (coef > 0 && ci > 0) dTi += coef * (Tr - T[i]) / (m[i] * ci);
+        }
         memcpy(st->acc + 3 * i, a, sizeof a);
+        st->wd[i] = drag;
         st->dT[i] = dTi;
     }
 
     /* kick, then XSPH (3.34) from the kicked velocities */
     for (int i = 0; i < n; i++) {
         const int fixed = flags && (flags[i] & PF_FIXED);
-        for (int c = 0; c < 3; c++) st->vnew[3 * i + c] = fixed ? 0.0 : v[3 * i + c] + dt * st->acc[3 * i + c];
+        /* the wall drag -wd v is linear in v (the wall velocities above are
+         * multiples of v_i), so it is taken implicitly: with beta up to about
+         * 5 it would otherwise break the viscous dt limit, which is set for
+         * fluid-fluid pairs (a channel at 100 Pa s blew up) */
+        for (int c = 0; c < 3; c++)
+            st->vnew[3 * i + c] = fixed ? 0.0 : (v[3 * i + c] + dt * st->acc[3 * i + c]) / (1.0 + dt * st->wd[i]);
     }
     double amax = 0;
 #pragma omp parallel for schedule(static) reduction(max : amax) if (n >= SCENE_PARALLEL_MIN)
@@ -684,6 +829,17 @@ double sph_stable_dt(const hearth_scene *s) {
     if (numax > 0) dt = fmin(dt, o->dt_viscous * hmin * hmin / numax);
     if (s->sph && s->sph->amax > 0) dt = fmin(dt, o->dt_force * sqrt(hmin / s->sph->amax));
     if (o->heat_int > 0 && T) dt = fmin(dt, 0.1 * hmin * hmin * rhomin / o->heat_int); /* eq. 3.45 has 1/rho */
+    if (T) { /* Robin: a face of V / spacing against the heat capacity rho c V */
+        double beta = isnan(s->def.oven_temperature) ? 0 : s->def.oven_beta, bc = 0;
+        for (int k = 0; k < s->ncol; k++)
+            if (!isnan(s->cols[k].temperature) && s->cols[k].beta > bc) bc = s->cols[k].beta;
+        beta += bc;
+        for (int m = 0; m < s->nmat && beta > 0; m++) {
+            const material_slot *ms = &s->mats[m];
+            const double rc = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
+            if (rc > 0) dt = fmin(dt, 0.25 * rc * hmin / o->h_factor / beta);
+        }
+    }
     if (s->def.dt_max > 0 && dt > s->def.dt_max) dt = s->def.dt_max;
     if (isinf(dt)) dt = s->def.cfl * s->def.dx;
     return dt * s->dt_scale;

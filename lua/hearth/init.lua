@@ -329,7 +329,8 @@ local scene_keys = { dim = true, dx = true, box = true, solver = true, gravity =
 -- h.scene{solver = "sph", sph = {...}}: numbers (ranges are checked by the core) and flags (booleans)
 local sph_number_keys = { h_factor = true, gamma = true, av_beta = true, surface_tension = true,
   surface_threshold = true, alpha_c = true, beta_c = true, xsph0 = true, xsph_f = true, xsph_T0 = true, xsph_Tf = true,
-  heat_ext = true, heat_int = true, k_g = true, eps_g = true, bubble_T0 = true, dt_viscous = true, dt_force = true }
+  heat_ext = true, heat_int = true, k_g = true, eps_g = true, bubble_T0 = true, dt_viscous = true, dt_force = true,
+  artificial_stress = true }
 local sph_flag_keys = { leapfrog = true, adaptive_h = true, tension = true, periodic_x = true, periodic_y = true,
   periodic_z = true }
 local contact = { "sticky", "slip", "separate", "grip" }

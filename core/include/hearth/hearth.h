@@ -161,6 +161,7 @@ typedef struct hearth_sph_def {
     double dt_force;       ///< force step factor: dt <= dt_force sqrt(h / |a|); default 0.25
     int periodic[3];       ///< 1 = periodic along that axis (box faces wrap); default 0
     int tension;           ///< 0: negative Tait pressure clamped to 0 (free surfaces stay clean); 1: kept, as the thesis; default 0
+    double artificial_stress; ///< Monaghan's epsilon (2000) against the tensile instability, 0..1 (0.2-0.3 usual); default 0 = off (it also resists a cooling bubble's contraction)
 } hearth_sph_def;
 
 typedef struct hearth_scene_def {

@@ -4,8 +4,9 @@
 -- ABI is solver-agnostic, so the plugin runs unchanged in both). Each run
 -- reports its wall time, steps, particles and final shape (width and height of
 -- the material from density lines), side by side, and compare.csv holds both.
--- Heat enters differently, each solver its own way: MPM through the oven's
--- Robin flux (Ding et al.), SPH through eq. 3.42 at surface particles.
+-- Heat enters differently: MPM through the oven's Robin flux (Ding et al.);
+-- SPH through eq. 3.42 at surface particles (the thesis's animation-scaled
+-- heat_ext) plus the same Robin flux, which at beta = 20 is about 1/800 of it.
 local h = require "hearth"
 local P = h.params { t_end = 0.5, dx = 0.004, oven = 180 }
 
