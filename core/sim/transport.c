@@ -124,7 +124,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
     const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0), *Cc = pcold(ps, PC_C);
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     const double *V = WATER ? pcold(ps, PC_V) : NULL, *W = WATER ? pcold(ps, PC_WATER) : NULL;
-    double *Q = WATER ? pcold(ps, PC_QW) : NULL;
+    double *Q = mom ? pcold(ps, PC_QW) : NULL; /* kept only for the momentum coupling */
     const double *area = s->bnd_area, dt = tp->dt;
     const int *mat = pcoli(ps, PC_MAT), *flags = pcoli(ps, PC_FLAGS); /* live with heat and with water */
     for (int i = pb.start; i < pb.end; i++) {
@@ -181,8 +181,8 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
                             const int t = tile_index(D, base, a, b, c);
                             for (int d = 0; d < D; d++) dp[d * TN + t] += Vp * (wt * dq[d] + dt * vw[d] * qg);
                         }
+                memcpy(Q + 3 * i, qn, sizeof qn);
             }
-            memcpy(Q + 3 * i, qn, sizeof qn);
         }
         /* scatter grad w . f + w r, again one axis at a time */
         {

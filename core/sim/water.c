@@ -74,7 +74,7 @@ void water_init_particles(hearth_scene *s, int from, int to, double sat) {
         if (s0 < WATER_SATURATION_FLOOR) s0 = WATER_SATURATION_FLOOR;
         pcold(ps, PC_SAT0)[i] = s0;
         pcold(ps, PC_WATER)[i] = s0 * capacity(s, i);
-        memset(pcold(ps, PC_QW) + 3 * i, 0, 3 * sizeof(double));
+        if (ps->enabled & (1u << PC_QW)) memset(pcold(ps, PC_QW) + 3 * i, 0, 3 * sizeof(double));
     }
     s->water_limits_valid = 0;
 }
@@ -84,7 +84,8 @@ hearth_status water_enable(hearth_scene *s, hearth_error *err) {
     if (water_active(s)) return HEARTH_OK;
     hearth_status st = particles_enable(ps, PC_WATER, err);
     if (!st) st = particles_enable(ps, PC_SAT0, err);
-    if (!st) st = particles_enable(ps, PC_QW, err);
+    /* the last step's flux q^w: only the momentum coupling (eq. 26-27) reads it back */
+    if (!st && s->def.water_momentum) st = particles_enable(ps, PC_QW, err);
     if (!st) st = particles_enable(ps, PC_FLAGS, err); /* boundary particles */
     if (st) return st;
     water_init_particles(s, 0, ps->n, NAN);
