@@ -148,7 +148,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     const double *S0col = Wcol ? pcold(ps, PC_SAT0) : NULL;
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
     const int stride = ps->state_stride, apic = s->def.transfer == 0;
-    double pscratch[SCENE_MAX_PARAMS];
+    double pscratch[SCENE_MAX_PARAMS], cmax = 0, numax = 0; /* numax: largest kinematic viscosity a plugin applies (m^2/s) */
 
     for (int i = pb.start; i < pb.end; i++) {
         const double *x = X + 3 * i, *v = V + 3 * i, *C = Cc + 9 * i;
@@ -191,6 +191,15 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
             } else if (!all_finite(tau, 9)) {
                 record_fail(pp, i, FAIL_STRESS, 0);
                 memset(tau, 0, sizeof tau);
+            }
+            /* the next step's limits, from the state the plugin just wrote and the
+             * parameters it used: here both are in cache, and G2P need not
+             * evaluate the temperature curves a second time */
+            const double c = ms->m->state_size > 0 ? ms->m->wave_speed(pt.p, pt.state) : ms->wave_speed;
+            if (c > cmax) cmax = c;
+            if (ms->m->viscosity) {
+                const double nu = ms->m->viscosity(pt.p, ms->m->state_size > 0 ? pt.state : NULL) / pt.p[ms->density_index];
+                if (nu > numax) numax = nu;
             }
             if (Wcol && ms->core[CP_WATER_STIFFNESS] > 0) { /* water pressure (eq. 14): tau_w = -J c (s - s_0) I */
                 const double tw = -J * ms->core[CP_WATER_STIFFNESS] * (pt.saturation - S0col[i]);
@@ -279,6 +288,9 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
             }
         }
     }
+
+    pp->cmax = cmax;
+    pp->numax = numax;
 
     /* flush the tile into the block and its +1 neighbours */
     for (int a = 0; a < GRID_T; a++)
@@ -420,7 +432,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             }
 
     double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *Cc = pcold(ps, PC_C);
-    const double *M = pcold(ps, PC_MASS), *state = pcold(ps, PC_STATE);
+    const double *M = pcold(ps, PC_MASS);
     const int *mat = pcoli(ps, PC_MAT);
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
     double lo[3], hi[3];
@@ -428,7 +440,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         lo[d] = g->lo[d] + dx;                       /* keep every particle's stencil on the grid */
         hi[d] = g->lo[d] + (g->nn[d] - 2) * dx;
     }
-    double ke = 0, mass = 0, vmax = -1, cmax = 0, numax = 0, pscratch[SCENE_MAX_PARAMS];
+    double ke = 0, mass = 0, vmax = -1;
     double w_removed = 0, w_dmax = 0, w_emax = 0;
     int fastest = -1;
     long ood = 0;
@@ -519,24 +531,11 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         ke += 0.5 * M[i] * sp2;
         mass += M[i];
         if (sp2 > vmax) { vmax = sp2; fastest = i; }
-        const material_slot *ms = &s->mats[mat[i]];
-        const double c = ms->m->state_size > 0
-                             ? ms->m->wave_speed(scene_params_for(s, mat[i], i, pscratch), state + (size_t)i * ps->state_stride)
-                             : ms->wave_speed;
-        if (c > cmax) cmax = c;
-        if (ms->m->viscosity) {
-            const double *pv = scene_params_for(s, mat[i], i, pscratch);
-            const double nu = ms->m->viscosity(pv, ms->m->state_size > 0 ? state + (size_t)i * ps->state_stride : NULL) /
-                              pv[ms->density_index];
-            if (nu > numax) numax = nu;
-        }
     }
     pp->ke = ke;
     pp->mass = mass;
-    pp->numax = numax;
     pp->vmax = vmax;
     pp->fastest = fastest;
-    pp->cmax = cmax;
     pp->ood = ood;
     pp->water_removed = w_removed;
     pp->water_dmax = w_dmax;
