@@ -42,7 +42,14 @@ static double air_or_mass(const grid *g, const int gi[3]) {
 }
 
 static hearth_status ensure_area(hearth_scene *s, hearth_error *err) {
-    const int n = s->ps.n;
+    const int n = s->ps.n, nb = s->g.nactive;
+    if (nb > s->bnd_blocks_cap) {
+        unsigned char *b = mem_alloc((size_t)nb * 2);
+        if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for boundary blocks (%d blocks)", nb);
+        mem_free(s->bnd_blocks, (size_t)s->bnd_blocks_cap);
+        s->bnd_blocks = b;
+        s->bnd_blocks_cap = nb * 2;
+    }
     if (n <= s->bnd_area_cap) return HEARTH_OK;
     double *a = mem_alloc(sizeof(double) * (size_t)n);
     if (!a) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for boundary particles (%d particles)", n);
@@ -64,8 +71,14 @@ static void closest_in_block(hearth_scene *s, int k) {
     const pblock pb = s->pb[k];
     int bc[3];
     grid_block_coords(g, pb.block, bc);
+    int any = 0; /* the tile spans the block and its +1 neighbours: is there a boundary node in any? */
+    for (int a = 0; a <= 1 && !any; a++)
+        for (int b = 0; b <= 1 && !any; b++)
+            for (int c = 0; c <= (D == 3) && !any; c++) any = s->bnd_blocks[g->slot[grid_block_id(g, bc[0] + a, bc[1] + b, bc[2] + c)]];
+    if (!any) return; /* most particle blocks lie inside the body */
     double best[GRID_T * GRID_T * GRID_T];
-    int pick[GRID_T * GRID_T * GRID_T], any = 0;
+    int pick[GRID_T * GRID_T * GRID_T];
+    any = 0;
     for (int t = 0; t < TN; t++) {
         int l;
         const double *node = grid_block(g, grid_tile_slot(g, bc, t, &l));
@@ -73,7 +86,7 @@ static void closest_in_block(hearth_scene *s, int k) {
         pick[t] = -1;
         any |= best[t] >= 0;
     }
-    if (!any) return; /* most particle blocks lie inside the body */
+    if (!any) return; /* the blocks have boundary nodes, this tile none */
     /* near[base]: a boundary node in the 3^dim stencil starting at base (a node of the block) */
     unsigned char near[GRID_B * GRID_B * GRID_B];
     for (int a = 0; a < GRID_B; a++)
@@ -142,6 +155,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
         double *node = grid_block(g, k);
         int bc[3];
         grid_block_coords(g, g->active[k], bc);
+        s->bnd_blocks[k] = 0;
         for (int l = 0; l < NPB; l++) {
             node[CH_CG_R * NPB + l] = -1;
             node[CH_CG_P * NPB + l] = -1;
@@ -166,7 +180,10 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
             int in_col = 0;
             for (int c = 0; c < s->ncol && !in_col; c++)
                 in_col = collider_near(&s->cols[c], xi) && collider_sdf(&s->cols[c], xi, NULL) < 0;
-            if (!in_col) node[CH_CG_R * NPB + l] = INFINITY;
+            if (!in_col) {
+                node[CH_CG_R * NPB + l] = INFINITY;
+                s->bnd_blocks[k] = 1;
+            }
         }
     }
     /* the closest particle of each boundary node; colours keep writes apart, and

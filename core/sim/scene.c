@@ -183,6 +183,7 @@ void hearth_scene_destroy(hearth_scene *s) {
     mem_free(s->bnd_temp, sizeof(double) * (size_t)s->bnd_cap);
     mem_free(s->cg_partial, sizeof(double) * (size_t)s->cg_cap);
     mem_free(s->bnd_area, sizeof(double) * (size_t)s->bnd_area_cap);
+    mem_free(s->bnd_blocks, (size_t)s->bnd_blocks_cap);
     mem_free(s->mix_nodes, sizeof(double) * s->mix_cap);
     mem_free(s->mark, (size_t)s->g.nblocks);
     sph_free(s->sph); /* SPH (sph.c) */

@@ -126,6 +126,8 @@ struct hearth_scene {
     /* boundary particles (boundary.c): each one's share of the air surface */
     double *bnd_area;
     int bnd_area_cap;
+    unsigned char *bnd_blocks; /* per active grid block: holds a boundary node (boundary.c) */
+    int bnd_blocks_cap;
 
     /* water (water.c) */
     double water_lost;            /* through the boundary so far (kg) */

@@ -595,7 +595,9 @@ function S:at(t, fn)
 end
 
 local function fire_events(s)
-  local ev, now = s:_state().events, s:stats().t
+  local ev = s:_state().events
+  if not ev[1] then return end -- s:stats() sums over every particle: not once a step for nothing
+  local now = s:stats().t
   while ev[1] and ev[1].t <= now + 1e-12 * math.max(1, now) do
     table.remove(ev, 1).fn(s)
   end

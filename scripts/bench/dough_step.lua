@@ -7,7 +7,7 @@
 -- dough's fields (oven, temperature, CO2, expansion), and the dough with all
 -- fields, and the ratios. Timings are CPU seconds (os.clock).
 local h = require "hearth"
-local P = h.params { dim = 2, cells = 64, steps = 200 }
+local P = h.params { dim = 2, cells = 64, steps = 200, only = "" }
 local d3 = P.dim == 3
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
@@ -27,6 +27,13 @@ local elastic = h.material("elastic", { E = 1e5, nu = 0.3, density = 1000 })
 local elastic_fields = h.material("elastic", { E = 1e5, nu = 0.3, density = 1000, specific_heat = 20, conductivity = 30,
   gas_rate = 2.5e-5, expansion = 0.1, reference_temperature = 20 })
 local dough = h.material("cam_clay_dough", h.library.dough.cookie)
+
+-- only=elastic|dough: step that one scene, untimed (scripts/bench/dough_instructions.sh counts it under callgrind)
+if P.only ~= "" then
+  if P.only ~= "elastic" and P.only ~= "dough" then error("only: elastic or dough, not '" .. P.only .. "'") end
+  timed(P.only == "dough" and dough or elastic, P.only == "dough")
+  return
+end
 
 local te, n = timed(elastic, false)
 local tf = timed(elastic_fields, true)
