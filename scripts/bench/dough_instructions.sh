@@ -11,16 +11,12 @@
 set -euo pipefail
 dim=${1:-2} cells=${2:-64}
 root=$(cd "$(dirname "$0")/../.." && pwd)
-command -v valgrind >/dev/null || { echo "dough_instructions: needs valgrind" >&2; exit 2; }
-[ -f "$root/build/nn/build.ninja" ] || meson setup "$root/build/nn" "$root" --buildtype=release -Dnative=false >/dev/null
-ninja -C "$root/build/nn" >/dev/null
+. "$root/scripts/bench/callgrind.sh"
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 count() { # count elastic|dough STEPS -> instructions
-    OMP_WAIT_POLICY=passive OMP_NUM_THREADS=1 HEARTH_PLUGIN_PATH="$root/build/nn/plugins" valgrind --tool=callgrind \
-        --callgrind-out-file=/dev/null "$root/build/nn/core/app/hearth" run "$root/scripts/bench/dough_step.lua" --quiet \
-        --out "$out" --set only="$1" --set steps="$2" --set dim="$dim" --set cells="$cells" 2>&1 |
-        awk '/refs/ {gsub(",", "", $NF); print $NF}'
+    refs "$nn_hearth" run "$root/scripts/bench/dough_step.lua" --quiet --out "$out" --set only="$1" --set steps="$2" \
+        --set dim="$dim" --set cells="$cells"
 }
 short=2 long=$([ "$dim" = 3 ] && echo 5 || echo 12)
 e=$(python3 -c "print(($(count elastic $long) - $(count elastic $short)) / ($long - $short))")

@@ -10,15 +10,8 @@
 set -euo pipefail
 cells=${1:-24} dim=${2:-3}
 root=$(cd "$(dirname "$0")/../.." && pwd)
-command -v valgrind >/dev/null || { echo "fields_instructions: needs valgrind" >&2; exit 2; }
-[ -f "$root/build/nn/build.ninja" ] || meson setup "$root/build/nn" "$root" --buildtype=release -Dnative=false >/dev/null
-ninja -C "$root/build/nn" >/dev/null
-hearth=$root/build/nn/core/app/hearth
-count() { # count FIELDS STEPS -> instructions
-    OMP_WAIT_POLICY=passive OMP_NUM_THREADS=1 valgrind --tool=callgrind --callgrind-out-file=/dev/null \
-        "$hearth" bench --threads 1 --cells "$cells" --steps "$2" --dim "$dim" --fields "$1" 2>&1 |
-        awk '/refs/ {gsub(",", "", $NF); print $NF}'
-}
+. "$root/scripts/bench/callgrind.sh"
+count() { refs "$nn_hearth" bench --threads 1 --cells "$cells" --steps "$2" --dim "$dim" --fields "$1"; } # FIELDS STEPS
 declare -A per
 for f in none heat all; do
     per[$f]=$(python3 -c "print(($(count $f 4) - $(count $f 1)) / 3)")
