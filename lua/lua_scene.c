@@ -634,6 +634,11 @@ static int l_volume(lua_State *L) {
     return 1;
 }
 
+static int l_time(lua_State *L) {
+    lua_pushnumber(L, hearth_scene_time(hl_checkscene(L, 1)->s));
+    return 1;
+}
+
 static int l_hash(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     char buf[32];
@@ -667,7 +672,7 @@ void hl_open_scene(lua_State *L) {
         {"_collider", l_collider}, {"_advance", l_advance}, {"_step", l_step_raw},     {"push", l_push},
         {"cut", l_cut},          {"move", l_move},         {"collider_velocity", l_collider_velocity},
         {"set_dt", l_set_dt},    {"oven", l_oven},    {"probe", l_probe},       {"line", l_line},          {"_slice", l_slice},
-        {"stats", l_stats},      {"body_particles", l_body_particles}, {"hash", l_hash},
+        {"stats", l_stats},      {"_time", l_time},      {"body_particles", l_body_particles}, {"hash", l_hash},
         {"positions", l_positions}, {"volume", l_volume}, {"material_params", l_material_params}, {NULL, NULL}};
     luaL_newmetatable(L, HL_SCENE);
     lua_pushcfunction(L, l_gc);

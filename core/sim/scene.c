@@ -661,6 +661,8 @@ hearth_status hearth_scene_advance_steps(hearth_scene *s, double t_end, long max
     return HEARTH_OK;
 }
 
+double hearth_scene_time(const hearth_scene *s) { return s->t; }
+
 void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
     memset(st, 0, sizeof *st);
     st->t = s->t;

@@ -595,9 +595,7 @@ function S:at(t, fn)
 end
 
 local function fire_events(s)
-  local ev = s:_state().events
-  if not ev[1] then return end -- s:stats() sums over every particle: not once a step for nothing
-  local now = s:stats().t
+  local ev, now = s:_state().events, s:_time() -- not s:stats(): it sums over every particle, and this runs every step
   while ev[1] and ev[1].t <= now + 1e-12 * math.max(1, now) do
     table.remove(ev, 1).fn(s)
   end
@@ -659,7 +657,7 @@ function S:run(o)
   if type(o) ~= "table" then error("s:run: expected a table", 2) end
   check_keys(o, run_keys, "s:run")
   local opts = core.options()
-  local t0 = self:stats().t
+  local t0 = self:_time()
   local until_t = opts.until_t or o.until_t
   if until_t == nil then error("s:run: until_t is required (or pass --until to hearth run)", 2) end
   check_number(until_t, "s:run: until_t", 0, 1e12, "s")
@@ -705,17 +703,17 @@ function S:run(o)
   frame()
   local next_frame = t0 + every
   local yield_steps = opts.yield and coroutine.isyieldable()
-  while self:stats().t < until_t - 1e-12 * math.max(1, until_t) do
-    local now = self:stats().t
+  while self:_time() < until_t - 1e-12 * math.max(1, until_t) do
+    local now = self:_time()
     local target = math.min(next_frame, until_t)
     local ev = st.events[1]
     if ev and ev.t > now and ev.t < target then target = ev.t end
     if yield_steps then
-      local t = self:stats().t
+      local t = self:_time()
       while t < target do -- one step at a time, the host draws in between
         host_yield()
         self:_advance(target, 1)
-        local t1 = self:stats().t
+        local t1 = self:_time()
         if t1 == t then break end -- no step was possible (dt underflow): as _advance would
         t = t1
       end

@@ -304,6 +304,8 @@ typedef struct hearth_stats {
     double water_lost;     ///< water that left through the boundary so far (kg, or kg/m in 2D); negative if gained
 } hearth_stats;
 void hearth_scene_stats(const hearth_scene *s, hearth_stats *st);
+/// Simulated time (s): hearth_stats.t without the sums over every particle.
+double hearth_scene_time(const hearth_scene *s);
 
 /* ---- bodies and events --------------------------------------------- */
 
