@@ -169,6 +169,50 @@ static void from_eigen(const double Q[9], const double d[3], double A[9]) {
         }
 }
 
+/* The plane-strain case, which is every point of a 2D scene: b^E and the
+ * step's f have no out-of-plane shear, so b^E is a 2x2 block plus its zz
+ * entry, and the trial, the eigen-decomposition and the rebuild need only
+ * that block. These do the same arithmetic as the general path with its
+ * zero terms left out (the Jacobi below takes the same single rotation),
+ * at a third of its cost: the plugin was over a third of a 2D dough step. */
+static int is_plane(const double *st, const double *gv, double dt) {
+    return st[S_YZ] == 0 && st[S_ZX] == 0 && (!(dt > 0) || (gv[2] == 0 && gv[5] == 0 && gv[6] == 0 && gv[7] == 0));
+}
+
+/* b_tr = f b f^T on the block, and f_zz^2 b_zz. Returns det f. */
+static double trial_plane(const double *gv, double dt, double B[9]) {
+    const double f0 = 1 + dt * gv[0], f1 = dt * gv[1], f3 = dt * gv[3], f4 = 1 + dt * gv[4], f8 = 1 + dt * gv[8];
+    const double g0 = f0 * B[0] + f1 * B[3], g1 = f0 * B[1] + f1 * B[4];
+    const double g3 = f3 * B[0] + f4 * B[3], g4 = f3 * B[1] + f4 * B[4];
+    B[0] = g0 * f0 + g1 * f1;
+    B[1] = B[3] = g0 * f3 + g1 * f4;
+    B[4] = g3 * f3 + g4 * f4;
+    B[8] *= f8 * f8;
+    return (f0 * f4 - f1 * f3) * f8;
+}
+
+/* One Jacobi rotation diagonalises the block (the sym_eigen step below). */
+static void eigen_plane(const double B[9], double l[3], double Q[9]) {
+    for (int i = 0; i < 9; i++) Q[i] = i % 4 == 0;
+    l[0] = B[0], l[1] = B[4], l[2] = B[8];
+    const double apq = B[1];
+    if (apq == 0) return;
+    const double zeta = (B[4] - B[0]) / (2 * apq);
+    const double t = fabs(zeta) > 1e150 ? 0.5 / zeta : (zeta >= 0 ? 1 : -1) / (fabs(zeta) + sqrt(1 + zeta * zeta));
+    const double c = 1 / sqrt(1 + t * t), sn = t * c;
+    l[0] -= t * apq;
+    l[1] += t * apq;
+    Q[0] = c, Q[1] = sn, Q[3] = -sn, Q[4] = c;
+}
+
+static void from_eigen_plane(const double Q[9], const double d[3], double A[9]) {
+    A[0] = Q[0] * d[0] * Q[0] + Q[1] * d[1] * Q[1];
+    A[1] = A[3] = Q[0] * d[0] * Q[3] + Q[1] * d[1] * Q[4];
+    A[4] = Q[3] * d[0] * Q[3] + Q[4] * d[1] * Q[4];
+    A[2] = A[6] = A[5] = A[7] = 0;
+    A[8] = d[2];
+}
+
 /* Symmetric eigen-decomposition S = Q diag(l) Q^T by cyclic Jacobi, for
  * this plugin's hot path: hearth_tensor's t3_sym_eigen is the same method,
  * but sorts and takes the rotation's tangent through hypot, which made up
@@ -285,16 +329,23 @@ static int stress(hearth_point *pt, double tau[9]) {
     if (n < 0 || n >= 1) return E_POROSITY; /* NaN reads as 0: von Mises */
     double B[9];
     sym_to_full(st, B);
+    const int plane = is_plane(st, pt->grad_v, pt->dt);
     if (pt->dt > 0) { /* trial b_tr = f b f^T */
-        double f[9], fB[9];
-        for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + pt->dt * pt->grad_v[i];
-        const double jf = t3_det(f);
+        double jf;
+        if (plane) {
+            jf = trial_plane(pt->grad_v, pt->dt, B);
+        } else {
+            double f[9], fB[9];
+            for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + pt->dt * pt->grad_v[i];
+            jf = t3_det(f);
+            t3_mul(f, B, fB);
+            t3_mul_abt(fB, f, B);
+        }
         if (!(jf > 0) || !isfinite(jf)) return E_STEP;
-        t3_mul(f, B, fB);
-        t3_mul_abt(fB, f, B);
     }
     double l[3], Q[9], eps[3];
-    sym_eigen(B, l, Q);
+    if (plane) eigen_plane(B, l, Q);
+    else sym_eigen(B, l, Q);
     if (!(l[0] > 0 && l[1] > 0 && l[2] > 0) || !isfinite(l[0] + l[1] + l[2])) return E_STATE;
     for (int i = 0; i < 3; i++) eps[i] = 0.5 * log(l[i]);
     if (pt->dt > 0) {
@@ -321,7 +372,8 @@ static int stress(hearth_point *pt, double tau[9]) {
             double d[3];
             for (int i = 0; i < 3; i++) d[i] = exp(2 * eps[i]);
             if (!isfinite(d[0] + d[1] + d[2]) || !(d[0] > 0 && d[1] > 0 && d[2] > 0)) return E_SOLVE;
-            from_eigen(Q, d, B);
+            if (plane) from_eigen_plane(Q, d, B);
+            else from_eigen(Q, d, B);
         }
         full_to_sym(B, st);
         st[S_JP] = J / exp(eps[0] + eps[1] + eps[2]); /* J^P = J / J^E */
@@ -330,7 +382,8 @@ static int stress(hearth_point *pt, double tau[9]) {
     lame(prm, &mu, &lambda);
     const double tv = lambda * (eps[0] + eps[1] + eps[2]);
     const double d[3] = {tv + 2 * mu * eps[0], tv + 2 * mu * eps[1], tv + 2 * mu * eps[2]};
-    from_eigen(Q, d, tau);
+    if (plane) from_eigen_plane(Q, d, tau);
+    else from_eigen(Q, d, tau);
     return 0;
 }
 

@@ -2,25 +2,28 @@
 -- elastic benchmark step (`hearth bench`: a block filling [0.2,0.8]^dim of the
 -- unit box, 4 particles per cell in 2D, 8 in 3D, neo-Hookean E = 1e5 Pa) on
 -- the same particles, in one run. Run with one thread for a clean ratio:
---   OMP_NUM_THREADS=1 hearth run scripts/bench/dough_step.lua [--set dim=3] [--set cells=32]
+--   OMP_NUM_THREADS=1 hearth run scripts/bench/dough_step.lua [--set dim=3] [--set cells=32] [--set rounds=5]
 -- Prints seconds per step for: elastic (momentum only), elastic with the
 -- dough's fields (oven, temperature, CO2, expansion), and the dough with all
--- fields, and the ratios. Timings are CPU seconds (os.clock).
+-- fields, and the ratios: the median over the rounds of each round's ratio,
+-- and their range. Timings are CPU seconds (os.clock).
 local h = require "hearth"
-local P = h.params { dim = 2, cells = 64, steps = 200, only = "" }
+local P = h.params { dim = 2, cells = 64, steps = 200, rounds = 5, only = "" }
 local d3 = P.dim == 3
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
-local function timed(material, fields)
+local function scene(material, fields)
   local s = h.scene { dim = P.dim, dx = 1 / P.cells, box = { v(0, 0, 0), v(1, 1, 1) }, wall = "sticky", seed = 7,
     dt_max = 1e-5, oven = fields and { temperature = 150, beta = 25 } or nil }
   s:add { shape = h.box(v(0.2, 0.2, 0.2), v(0.8, 0.8, 0.8)), material = material, ppc = d3 and 8 or 4,
     temperature = fields and 20 or nil }
   s:step(2) -- warm-up: buffers sized
+  return s
+end
+local function timed(s) -- CPU seconds per step over the next P.steps steps
   local t0 = os.clock()
   s:step(P.steps)
-  local dt = (os.clock() - t0) / P.steps
-  return dt, s:stats().particles
+  return (os.clock() - t0) / P.steps
 end
 
 local elastic = h.material("elastic", { E = 1e5, nu = 0.3, density = 1000 })
@@ -31,14 +34,34 @@ local dough = h.material("cam_clay_dough", h.library.dough.cookie)
 -- only=elastic|dough: step that one scene, untimed (scripts/bench/dough_instructions.sh counts it under callgrind)
 if P.only ~= "" then
   if P.only ~= "elastic" and P.only ~= "dough" then error("only: elastic or dough, not '" .. P.only .. "'") end
-  timed(P.only == "dough" and dough or elastic, P.only == "dough")
+  timed(scene(P.only == "dough" and dough or elastic, P.only == "dough"))
   return
 end
 
-local te, n = timed(elastic, false)
-local tf = timed(elastic_fields, true)
-local td = timed(dough, true)
-print(("%dD, %d particles, %d steps each (1 thread unless OMP_NUM_THREADS says otherwise)"):format(P.dim, n, P.steps))
-print(("elastic step                 %.3e s"):format(te))
-print(("elastic + dough's fields     %.3e s  (%.2fx)"):format(tf, tf / te))
-print(("cam_clay_dough, all fields   %.3e s  (%.2fx the elastic step; target <= 2.5x)"):format(td, td / te))
+-- The three scenes step in turn, P.rounds times, and each round gives its
+-- own ratios: a machine that slows down for a while slows all three of a
+-- round alike, so the median of the rounds' ratios is steadier than a
+-- ratio of two single timings taken seconds apart.
+local se, sf, sd = scene(elastic, false), scene(elastic_fields, true), scene(dough, true)
+local te, tf, td, rf, rd = {}, {}, {}, {}, {}
+for r = 1, P.rounds do
+  te[r], tf[r], td[r] = timed(se), timed(sf), timed(sd)
+  rf[r], rd[r] = tf[r] / te[r], td[r] / te[r]
+end
+local function median(t)
+  local c = { table.unpack(t) }
+  table.sort(c)
+  local n = #c
+  return n % 2 == 1 and c[(n + 1) / 2] or 0.5 * (c[n / 2] + c[n / 2 + 1])
+end
+local function range(t)
+  local c = { table.unpack(t) }
+  table.sort(c)
+  return ("%.2f..%.2f"):format(c[1], c[#c])
+end
+print(("%dD, %d particles, %d rounds of %d steps each (1 thread unless OMP_NUM_THREADS says otherwise)"):format(P.dim,
+  se:stats().particles, P.rounds, P.steps))
+print(("elastic step                 %.3e s (median)"):format(median(te)))
+print(("elastic + dough's fields     %.3e s  (%.2fx, rounds %s)"):format(median(tf), median(rf), range(rf)))
+print(("cam_clay_dough, all fields   %.3e s  (%.2fx the elastic step, rounds %s; target <= 2.5x)"):format(median(td),
+  median(rd), range(rd)))
