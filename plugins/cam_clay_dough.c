@@ -286,19 +286,15 @@ static double solve_gamma(double Pm, double a, double qt, double b, double ty2, 
     return g;
 }
 
-/* Return-mapped principal Hencky strains from trial ones (in place).
- * Returns 1 when plastic flow happened. */
-static int return_map(const double *prm, double M, double dt, double eps[3]) {
+/* The return on the invariants of the trial Hencky strain: its volume part
+ * *ev = tr eps_tr and the squared norm s2 of its deviator e. Returns 1 on
+ * plastic flow, with *ev the returned volume part and *ratio the deviator's
+ * scale (eps = ev/3 I + ratio e, header); 0 inside the surface. */
+static int return_map(const double *prm, double M, double dt, double s2, double *ev, double *ratio) {
     double mu, lambda;
     lame(prm, &mu, &lambda);
     const double K = lambda + 2.0 / 3.0 * mu;
-    const double ev = eps[0] + eps[1] + eps[2];
-    const double pt = -K * ev; /* p = -tr(tau)/3 = -K tr(eps) */
-    double e[3], s2 = 0;
-    for (int i = 0; i < 3; i++) {
-        e[i] = eps[i] - ev / 3; /* deviatoric strain; s = 2 mu e */
-        s2 += e[i] * e[i];
-    }
+    const double pt = -K * *ev; /* p = -tr(tau)/3 = -K tr(eps) */
     const double qt = 2 * mu * sqrt(1.5 * s2);
     const double ty = prm[P_TAU_Y], ty2 = ty * ty;
     const double ftr = M * pt * pt + qt * qt - ty2;
@@ -306,9 +302,87 @@ static int return_map(const double *prm, double M, double dt, double eps[3]) {
     const double eta = prm[P_ETA];
     const double c = dt > 0 && eta > 0 ? eta / dt : 0;
     const double g = solve_gamma(sqrt(M) * fabs(pt), 2 * K * M, qt, 6 * mu, ty2, c);
-    const double p = pt / (1 + 2 * K * M * g), ratio = 1 / (1 + 6 * mu * g);
-    for (int i = 0; i < 3; i++) eps[i] = -p / (3 * K) + ratio * e[i];
+    *ev = -pt / (1 + 2 * K * M * g) / K;
+    *ratio = 1 / (1 + 6 * mu * g);
     return 1;
+}
+
+/* The returned volume part ev (ev0 the trial's) held within the pore caps
+ * (header, "closed pores" and "stiffening pores"); n the porosity at the
+ * step's start, JP the stored J^P, J = det F. */
+static double cap_volume(const double *prm, double n, double JP, double J, double ev0, double ev) {
+    const double n0 = n - (JP - 1); /* n^p_0 = n^p - (J^P - 1) */
+    const double jmin = 1 - prm[P_COMPACTION] * n0;
+    if (n0 > 0 && jmin > 0 && J / exp(ev) < jmin && ev > ev0) /* ev > ev0: the return compacted */
+        ev = fmax(log(J / jmin), ev0);
+    const double jmax = 1 + prm[P_MAX_POROSITY] - n0;
+    if (prm[P_MAX_POROSITY] < 1 && J / exp(ev) > jmax && ev < ev0) /* ev < ev0: the return dilated */
+        ev = fmin(log(J / jmax), ev0);
+    return ev;
+}
+
+/* ---- near the rest shape, without the eigen-decomposition --------------------
+ * A dough's elastic strain is small: its deviator is bounded by the yield
+ * stress, q <= tau_y, so |dev eps| <= tau_y / (sqrt(6) mu), ~1e-2 for a set
+ * cookie. There log b and exp(2 eps) are short power series in b's deviatoric
+ * part, and the return above needs no eigenvectors (it scales the deviator
+ * and sets the volume), so the whole step is a few 3x3 products. The cyclic
+ * Jacobi takes 4-5 sweeps of rotations whose sqrt and division chain was
+ * over half of a 3D dough step. Used when b / m, m = tr(b)/3 its mean
+ * eigenvalue, is within NEAR = 0.1 of I (Frobenius); beyond it, the eigen
+ * path. The series are summed until the next term is below 1e-16
+ * of the first, so both paths agree to rounding (dough_near_identity_return). */
+enum { NEAR_MAX_TERMS = 40 };
+static const double NEAR = 0.1;
+
+static inline void sym_mul(const double A[9], const double B[9], double C[9]) { /* C = A B for commuting symmetric A, B */
+    double T[9];
+    for (int r = 0; r < 3; r++)
+        for (int c = r; c < 3; c++)
+            T[3 * r + c] = T[3 * c + r] = A[3 * r] * B[c] + A[3 * r + 1] * B[3 + c] + A[3 * r + 2] * B[6 + c];
+    memcpy(C, T, sizeof T);
+}
+
+static double norm2_9(const double A[9]) {
+    double s = 0;
+    for (int i = 0; i < 9; i++) s += A[i] * A[i];
+    return s;
+}
+
+/* log(I + D) for symmetric |D| <= NEAR, by the Gregory series
+ * 2 (Z + Z^3/3 + Z^5/5 + ...), Z = D (2I + D)^-1, |Z| <= |D| / (2 - |D|). */
+static void log_near(const double D[9], double L[9]) {
+    double S[9], C[9], Z[9], W[9], P[9];
+    for (int i = 0; i < 9; i++) S[i] = D[i] + 2 * (i % 4 == 0);
+    C[0] = S[4] * S[8] - S[5] * S[5], C[1] = S[2] * S[5] - S[1] * S[8], C[2] = S[1] * S[5] - S[2] * S[4];
+    C[4] = S[0] * S[8] - S[2] * S[2], C[5] = S[1] * S[2] - S[0] * S[5], C[8] = S[0] * S[4] - S[1] * S[1];
+    C[3] = C[1], C[6] = C[2], C[7] = C[5];
+    const double inv_det = 1 / (S[0] * C[0] + S[1] * C[1] + S[2] * C[2]);
+    for (int i = 0; i < 9; i++) C[i] *= inv_det;
+    sym_mul(D, C, Z);
+    sym_mul(Z, Z, W);
+    const double d = sqrt(norm2_9(D)), z2 = (d / (2 - d)) * (d / (2 - d));
+    int J = 0;
+    for (double t = z2; t > 1e-16 && J < NEAR_MAX_TERMS; t *= z2) J++;
+    for (int i = 0; i < 9; i++) P[i] = (i % 4 == 0) / (2.0 * J + 1);
+    for (int j = J - 1; j >= 0; j--) { /* P = I/(2j+1) + W P */
+        sym_mul(W, P, P);
+        for (int i = 0; i < 9; i += 4) P[i] += 1.0 / (2 * j + 1);
+    }
+    sym_mul(Z, P, L);
+    for (int i = 0; i < 9; i++) L[i] *= 2;
+}
+
+/* exp(X) for symmetric X with |X| <= 2 NEAR, by its Taylor series (Horner). */
+static void exp_near(const double X[9], double E[9]) {
+    const double x = sqrt(norm2_9(X));
+    int K = 1;
+    for (double t = x; t > 1e-17 && K < NEAR_MAX_TERMS; t *= x / (K + 1)) K++;
+    for (int i = 0; i < 9; i++) E[i] = (i % 4 == 0) + X[i] / K;
+    for (int k = K - 1; k >= 1; k--) { /* E = I + X E / k */
+        sym_mul(X, E, E);
+        for (int i = 0; i < 9; i++) E[i] = (i % 4 == 0) + E[i] / k;
+    }
 }
 
 static void init(const double *p, double *state) {
@@ -316,6 +390,49 @@ static void init(const double *p, double *state) {
     state[S_XX] = state[S_YY] = state[S_ZZ] = 1;
     state[S_XY] = state[S_YZ] = state[S_ZX] = 0;
     state[S_JP] = 1;
+}
+
+/* The Kirchhoff stress tau = lambda ev I + 2 mu eps. */
+static void hencky_tau(const double *prm, double ev, const double eps_or_dev[9], double dev_scale, double tau[9]) {
+    double mu, lambda;
+    lame(prm, &mu, &lambda);
+    for (int i = 0; i < 9; i++) tau[i] = 2 * mu * dev_scale * eps_or_dev[i];
+    const double iso = lambda * ev + 2 * mu * ev / 3;
+    tau[0] += iso, tau[4] += iso, tau[8] += iso;
+}
+
+/* The step on the near path (above): B is the trial b^E, its mean
+ * eigenvalue m = tr(B)/3 > 0 and |B/m - I| <= NEAR. log B = log(m) I +
+ * log(B/m): B/m is near I whatever the volume change, and this needs no
+ * cube root of det B. */
+static int stress_near(hearth_point *pt, double m, const double B[9], double J, double tau[9]) {
+    const double *prm = pt->p;
+    double *st = pt->state;
+    double D[9], L[9], e[9];
+    const double sc = 1 / m;
+    for (int i = 0; i < 9; i++) D[i] = sc * B[i] - (i % 4 == 0);
+    log_near(D, L);
+    const double trL = L[0] + L[4] + L[8];
+    for (int i = 0; i < 9; i++) e[i] = 0.5 * (L[i] - (i % 4 == 0) * trL / 3); /* dev eps = 1/2 dev log(B/m) */
+    const double ev0 = 1.5 * log(m) + 0.5 * trL;                              /* tr eps = 1/2 tr log B */
+    double ev = ev0, ratio = 1;
+    if (pt->dt > 0) {
+        if (return_map(prm, porosity_coefficient(pt->porosity), pt->dt, norm2_9(e), &ev, &ratio)) {
+            ev = cap_volume(prm, pt->porosity, st[S_JP], J, ev0, ev);
+            double X[9], E[9], Bn[9];
+            for (int i = 0; i < 9; i++) X[i] = 2 * ratio * e[i];
+            exp_near(X, E);
+            const double v = exp(2 * ev / 3);
+            if (!isfinite(v) || !(v > 0)) return E_SOLVE;
+            for (int i = 0; i < 9; i++) Bn[i] = v * E[i];
+            full_to_sym(Bn, st);
+        } else {
+            full_to_sym(B, st);
+        }
+        st[S_JP] = J / exp(ev); /* J^P = J / J^E */
+    }
+    hencky_tau(prm, ev, e, ratio, tau);
+    return 0;
 }
 
 static int stress(hearth_point *pt, double tau[9]) {
@@ -334,54 +451,52 @@ static int stress(hearth_point *pt, double tau[9]) {
         double jf;
         if (plane) {
             jf = trial_plane(pt->grad_v, pt->dt, B);
-        } else {
-            double f[9], fB[9];
+        } else { /* f B, then the upper triangle of (f B) f^T */
+            double f[9], G[9];
             for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + pt->dt * pt->grad_v[i];
             jf = t3_det(f);
-            t3_mul(f, B, fB);
-            t3_mul_abt(fB, f, B);
+            for (int r = 0; r < 3; r++)
+                for (int c = 0; c < 3; c++) G[3 * r + c] = f[3 * r] * B[c] + f[3 * r + 1] * B[3 + c] + f[3 * r + 2] * B[6 + c];
+            for (int r = 0; r < 3; r++)
+                for (int c = r; c < 3; c++)
+                    B[3 * r + c] = B[3 * c + r] = G[3 * r] * f[3 * c] + G[3 * r + 1] * f[3 * c + 1] + G[3 * r + 2] * f[3 * c + 2];
         }
         if (!(jf > 0) || !isfinite(jf)) return E_STEP;
+    }
+    if (!plane) {
+        const double m = (B[0] + B[4] + B[8]) / 3;
+        if (m > 0 && norm2_9(B) / (m * m) - 3 <= NEAR * NEAR) /* |B/m - I|^2 = |B/m|^2 - 3, as tr(B/m) = 3 */
+            return stress_near(pt, m, B, J, tau);
     }
     double l[3], Q[9], eps[3];
     if (plane) eigen_plane(B, l, Q);
     else sym_eigen(B, l, Q);
     if (!(l[0] > 0 && l[1] > 0 && l[2] > 0) || !isfinite(l[0] + l[1] + l[2])) return E_STATE;
     for (int i = 0; i < 3; i++) eps[i] = 0.5 * log(l[i]);
+    double ev = eps[0] + eps[1] + eps[2];
+    const double ev0 = ev;
+    double e[3], s2 = 0, ratio = 1;
+    for (int i = 0; i < 3; i++) {
+        e[i] = eps[i] - ev0 / 3; /* deviatoric strain; s = 2 mu e */
+        s2 += e[i] * e[i];
+    }
     if (pt->dt > 0) {
-        const double ev0 = eps[0] + eps[1] + eps[2];
-        if (return_map(prm, porosity_coefficient(n), pt->dt, eps)) {
-            /* Closed pores: plastic compaction may close at most the fraction
-             * `compaction` of the initial pore volume n^p_0 = n^p - (J^P - 1),
-             * i.e. J^P >= 1 - compaction n^p_0 (header). The rest of the
-             * volume change stays elastic. */
-            const double n0 = n - (st[S_JP] - 1);
-            const double jmin = 1 - prm[P_COMPACTION] * n0;
-            const double ev = eps[0] + eps[1] + eps[2];
-            if (n0 > 0 && jmin > 0 && J / exp(ev) < jmin && ev > ev0) { /* ev > ev0: the return compacted */
-                const double shift = (fmax(log(J / jmin), ev0) - ev) / 3;
-                for (int i = 0; i < 3; i++) eps[i] += shift;
-            }
-            /* Stiffening pores: past n^p = max_porosity plastic dilation
-             * stops, J^P <= 1 + max_porosity - n^p_0 (header). */
-            const double jmax = 1 + prm[P_MAX_POROSITY] - n0;
-            if (prm[P_MAX_POROSITY] < 1 && J / exp(ev) > jmax && ev < ev0) { /* ev < ev0: the return dilated */
-                const double shift = (fmin(log(J / jmax), ev0) - ev) / 3;
-                for (int i = 0; i < 3; i++) eps[i] += shift;
-            }
+        if (return_map(prm, porosity_coefficient(n), pt->dt, s2, &ev, &ratio)) {
+            ev = cap_volume(prm, n, st[S_JP], J, ev0, ev);
             double d[3];
-            for (int i = 0; i < 3; i++) d[i] = exp(2 * eps[i]);
+            for (int i = 0; i < 3; i++) d[i] = exp(2 * (ev / 3 + ratio * e[i]));
             if (!isfinite(d[0] + d[1] + d[2]) || !(d[0] > 0 && d[1] > 0 && d[2] > 0)) return E_SOLVE;
             if (plane) from_eigen_plane(Q, d, B);
             else from_eigen(Q, d, B);
         }
         full_to_sym(B, st);
-        st[S_JP] = J / exp(eps[0] + eps[1] + eps[2]); /* J^P = J / J^E */
+        st[S_JP] = J / exp(ev); /* J^P = J / J^E */
     }
     double mu, lambda;
     lame(prm, &mu, &lambda);
-    const double tv = lambda * (eps[0] + eps[1] + eps[2]);
-    const double d[3] = {tv + 2 * mu * eps[0], tv + 2 * mu * eps[1], tv + 2 * mu * eps[2]};
+    const double tv = lambda * ev;
+    double d[3];
+    for (int i = 0; i < 3; i++) d[i] = tv + 2 * mu * (ev / 3 + ratio * e[i]);
     if (plane) from_eigen_plane(Q, d, tau);
     else from_eigen(Q, d, tau);
     return 0;
@@ -391,9 +506,8 @@ static int stress(hearth_point *pt, double tau[9]) {
  * tangent at rest; plastic flow only softens it. */
 static double wave_speed(const double *p, const double *state) {
     (void)state;
-    double mu, lambda;
-    lame(p, &mu, &lambda);
-    return sqrt((lambda + 2 * mu) / p[P_DENSITY]);
+    const double nu = p[P_NU]; /* lambda + 2 mu = E (1 - nu) / ((1 + nu)(1 - 2 nu)): one division, per particle per step */
+    return sqrt(p[P_E] * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * p[P_DENSITY]));
 }
 
 static double plastic_J(const double *p, const double *state) {

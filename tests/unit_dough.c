@@ -273,6 +273,86 @@ TEST(dough_von_mises_limit) {
     else CHECK(d9 <= 1e-8);
 }
 
+/* The 3D near-rest path (log and exp as power series, no eigenvectors) and
+ * the eigen path meet at |b/m - I| = 0.1 (m = tr(b)/3): trials whose deviator
+ * spans 1e-5 .. 0.3 in log strain, on both sides of it, return to the
+ * closest point (eta = 0) or the viscous optimum (eta > 0) to 1e-9, and a
+ * trial inside the surface comes back as C eps_tr to 1e-10. */
+TEST(dough_near_identity_return) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL);
+    if (!m) return;
+    double worst_kkt = 0, worst_f = 0, worst_in = 0, worst_state = 0;
+    int near = 0, far = 0;
+    for (int k = 0; k < 120; k++) {
+        const double scale = pow(10, -5 + 4.5 * uni()), n = 0.05 + 0.8 * uni(), dt = 1e-3;
+        double e[3], R[9], f[9], eps_tr[9], tau_tr[9], tau[9], st[NSTATE], s[9], pp, q;
+        const double vol = (2 * uni() - 1) * 0.02;
+        double d[3], mean = 0, dist = 0;
+        for (int i = 0; i < 3; i++) d[i] = (2 * uni() - 1) * scale, mean += d[i] / 3;
+        double lam[3], lm = 0; /* b's eigenvalues over their mean */
+        for (int i = 0; i < 3; i++) e[i] = vol / 3 + d[i] - mean, lam[i] = exp(2 * (d[i] - mean)), lm += lam[i] / 3;
+        for (int i = 0; i < 3; i++) dist += pow(lam[i] / lm - 1, 2);
+        if (sqrt(dist) <= 0.1) near++;
+        else far++;
+        random_rotation(R);
+        trial(e, R, f, eps_tr);
+        double p[NP] = {4e4, 0.3, 1, 0, 0.5, 500, 1};
+        const double M = coefficient(n);
+        c_apply(p, eps_tr, tau_tr);
+        yield_f(tau_tr, M, 0, &pp, &q, s);
+        const double reach = sqrt(M * pp * pp + q * q); /* the trial's "radius" */
+        /* eta > 0 on two in three: scaled to the trial, so the viscous optimum
+         * stays clear of the surface (6 mu gamma ~ 0.1 .. 10); closer, f is a
+         * difference of near-equal numbers and the check measures rounding */
+        if (k % 3) p[P_ETA] = pow(10, 2 * uni() - 1) * 60 * dt * (p[P_E] / 2.6) * reach * reach;
+        if (k % 4 == 3) { /* inside: tau_y past the trial */
+            p[P_TAU_Y] = 1.5 * reach;
+            CHECK(step_from_rest(m, p, f, dt, n, 20, st, tau) == 0);
+            double r[9];
+            for (int i = 0; i < 9; i++) r[i] = tau[i] - tau_tr[i];
+            worst_in = fmax(worst_in, norm9(r) / norm9(tau_tr));
+            continue;
+        }
+        p[P_TAU_Y] = 0.5 * reach;
+        CHECK(step_from_rest(m, p, f, dt, n, 20, st, tau) == 0);
+        const double fv = yield_f(tau, M, p[P_TAU_Y], &pp, &q, s);
+        double dtau[9], dd[9], nrm[9], r[9];
+        for (int i = 0; i < 9; i++) dtau[i] = tau_tr[i] - tau[i];
+        c_inverse(p, dtau, dd);
+        for (int i = 0; i < 9; i++) nrm[i] = 3 * s[i] - (i % 4 == 0 ? 2 * M * pp / 3 : 0); /* df/dtau */
+        if (p[P_ETA] == 0) {
+            worst_f = fmax(worst_f, fabs(fv) / (p[P_TAU_Y] * p[P_TAU_Y]));
+            double dn = 0, nn = 0;
+            for (int i = 0; i < 9; i++) dn += dd[i] * nrm[i], nn += nrm[i] * nrm[i];
+            for (int i = 0; i < 9; i++) r[i] = dd[i] - dn / nn * nrm[i];
+        } else {
+            for (int i = 0; i < 9; i++) r[i] = dd[i] - dt / p[P_ETA] * fmax(fv, 0) * nrm[i];
+        }
+        worst_kkt = fmax(worst_kkt, norm9(r) / norm9(dd));
+        /* the stored state is the returned elastic strain: b^E = exp(2 eps), eps = C^-1 tau, and J^P = J / exp(tr eps) */
+        double eps[9], l[3], Q[9], D[9] = {0}, QD[9], b[9], db[9];
+        c_inverse(p, tau, eps);
+        t3_sym_eigen(eps, l, Q);
+        for (int i = 0; i < 3; i++) D[4 * i] = exp(2 * l[i]);
+        t3_mul(Q, D, QD);
+        t3_mul_abt(QD, Q, b);
+        const double sb[9] = {st[0], st[3], st[5], st[3], st[1], st[4], st[5], st[4], st[2]}; /* xx yy zz xy yz zx */
+        for (int i = 0; i < 9; i++) db[i] = sb[i] - b[i];
+        worst_state = fmax(worst_state, norm9(db) / norm9(b));
+        worst_state = fmax(worst_state, fabs(st[6] * exp(eps[0] + eps[4] + eps[8]) / t3_det(f) - 1));
+    }
+    printf("  %d trials on the near path, %d on the eigen path: worst optimality residual %.3g (need <= 1e-9), worst "
+           "|f|/tau_y^2 %.3g (eta = 0, need <= 1e-10), worst inside |tau - C eps_tr|/|C eps_tr| %.3g (need <= 1e-10), worst stored b^E and J^P against exp(2 C^-1 tau) "
+           "%.3g (need <= 1e-12)\n",
+           near, far, worst_kkt, worst_f, worst_in, worst_state);
+    CHECK(near >= 30 && far >= 10);
+    CHECK(worst_kkt <= 1e-9);
+    CHECK(worst_f <= 1e-10);
+    CHECK(worst_in <= 1e-10);
+    CHECK(worst_state <= 1e-12);
+}
+
 /* The largest |tau(Q F) - Q tau(F) Q^T| / |tau| over 10 plastic histories
  * of 6 steps each; the observer's turn rotates the velocity gradients
  * (L' = Q L Q^T). plane = 1 draws plane-strain gradients, as a 2D scene's
@@ -494,4 +574,4 @@ TEST(dough_plugin_check) {
 }
 
 TEST_MAIN(T(dough_closest_point), T(dough_viscoplastic_optimality), T(dough_inside_unchanged), T(dough_von_mises_limit),
-          T(dough_frame_indifference), T(dough_plane_strain_path), T(dough_extremes), T(dough_closed_pores), T(dough_pore_cap), T(dough_plugin_check))
+          T(dough_frame_indifference), T(dough_plane_strain_path), T(dough_near_identity_return), T(dough_extremes), T(dough_closed_pores), T(dough_pore_cap), T(dough_plugin_check))

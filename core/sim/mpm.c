@@ -201,6 +201,9 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 const double nu = ms->m->viscosity(pt.p, ms->m->state_size > 0 ? pt.state : NULL) / pt.p[ms->density_index];
                 if (nu > numax) numax = nu;
             }
+            /* J^P after this step's plastic flow, for the gas and expansion terms below */
+            const double cl = ms->core[CP_EXPANSION];
+            const double JP1 = ms->m->plastic_J && (Gcol || (cl > 0 && Tcol)) ? ms->m->plastic_J(pt.p, pt.state) : 1.0;
             if (Wcol && ms->core[CP_WATER_STIFFNESS] > 0) { /* water pressure (eq. 14): tau_w = -J c (s - s_0) I */
                 const double tw = -J * ms->core[CP_WATER_STIFFNESS] * (pt.saturation - S0col[i]);
                 tau[0] += tw;
@@ -209,7 +212,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
             }
             if (Gcol) { /* gas pressure (eq. 13): tau_g = J sigma_g = -n^g R theta / n^p I */
                 /* porosity after this step's plastic flow */
-                const double np = ms->m->plastic_J ? gas_porosity(ms->m->plastic_J(pt.p, pt.state), ms->core[CP_POROSITY0]) : pt.porosity;
+                const double np = ms->m->plastic_J ? gas_porosity(JP1, ms->core[CP_POROSITY0]) : pt.porosity;
                 const double tg = gas_tau(Gcol[i], Tcol[i], np);
                 tau[0] += tg;
                 tau[4] += tg;
@@ -221,9 +224,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
              * yields in tension (Cam-clay, eq. 12, M > 0) grows J^P, which raised
              * the expansion pressure as J^2, which grew J^P further: the batter
              * of the pancake and the lava cake swelled x4 and blew up. */
-            const double cl = ms->core[CP_EXPANSION];
             if (cl > 0 && Tcol) {
-                const double JE = ms->m->plastic_J ? J / ms->m->plastic_J(pt.p, pt.state) : J;
+                const double JE = J / JP1;
                 const double th = cl * JE * JE * (Tcol[i] - ms->core[CP_REFERENCE_T]);
                 tau[0] -= th;
                 tau[4] -= th;
