@@ -3,10 +3,14 @@
 -- temperature. Each oven is its own bake (the oven air is one temperature per
 -- scene), with the three leaveners side by side on one tray.
 --   hearth run scripts/scenes/baking/cookies.lua [--set dim=3] [--set ovens=150]
---   [--set baseline=true]   gas off, rate-independent plasticity (eta = 0) and
---                           no thermal expansion: the Stomakhin et al. 2014
---                           comparison of Fig. 17 (Ding et al. §2: neither
---                           Stomakhin et al. nor Gao et al. model expansion)
+--   [--set baseline=true]   the Stomakhin et al. 2014 comparison of Fig. 17:
+--                           the snow_plastic plugin (Stomakhin et al. 2013's
+--                           law: fixed corotated, elastic stretch clamped to
+--                           [1 - 2.5e-2, 1 + 7.5e-3], hardening xi = 10) with
+--                           the cookie's E, nu, density and heat; no gas, no
+--                           viscoplasticity and no thermal expansion (Ding et
+--                           al. §2: neither Stomakhin et al. nor Gao et al.
+--                           model expansion). Heat still flows.
 -- Writes, under hearth-out/cookies/: oven_<T>/heat_%04d.png (the heat
 -- progress, Fig. 3's right column) and cookies.csv (final height, spread and
 -- top curvature per cookie; negative curvature = domed), series.csv (height
@@ -15,11 +19,13 @@
 -- top_curvature_particles from the highest particle in each one-cell bin,
 -- a least-squares parabola over the middle 60% of the cookie's width.
 -- What shapes the top (measured, 2D, dx 7.5 mm, 150 degC): the cold dough
--- (tau_y 20 Pa) cannot carry its own 25 mm (rho g H ~ 120 Pa), so without
--- eta (baseline) it collapses within 0.16 s, before the oven warms it, into
--- the mound a yield-stress pile settles to; the same mound forms with the
--- oven and tray off. With eta the full model slumps slowly and is set while
--- still rounded; its CO2 never inflates it (n^p stays ~0.10).
+-- (tau_y 20 Pa) cannot carry its own 25 mm (rho g H ~ 120 Pa); with eta the
+-- full model slumps slowly and is set while still rounded; its CO2 never
+-- inflates it (n^p stays ~0.10). The baseline does not flow at all: its
+-- weight strains it ~0.2%, inside the snow law's clamp, so it keeps the
+-- placed dough's shape (a capsule: flat top, round ends) through the bake,
+-- and its top curvature is the measures' reading of that shape (see
+-- claim_cookie_domed_vs_baseline in tests/baking_test.sh for the numbers).
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 3, frames = 6, ovens = "190,150,110", leaveners = "0.015,0.0075,0",
   baseline = false }
@@ -48,9 +54,13 @@ for _, T in ipairs(ovens) do
   for i, a in ipairs(leaveners) do
     local d = h.library.dough.cookie
     d.gas_rate = a * h.library.dough_scale.gas
-    if P.baseline then d.gas_rate, d.eta, d.expansion = 0, 0, 0 end
+    local mat = h.material("cam_clay_dough", d)
+    if P.baseline then -- the cookie's E, nu, density and heat; the snow law's theta_c, theta_s, xi (plugin defaults)
+      mat = h.material("snow_plastic", { E = d.E, nu = d.nu, density = d.density, specific_heat = d.specific_heat,
+        conductivity = d.conductivity, reference_temperature = d.reference_temperature })
+    end
     xs[i] = (i - 0.5) * SPACING
-    s:add { shape = h.shapes.cookie(v(xs[i], TRAY + THICK / 2, zc), R, THICK), material = h.material("cam_clay_dough", d),
+    s:add { shape = h.shapes.cookie(v(xs[i], TRAY + THICK / 2, zc), R, THICK), material = mat,
       temperature = oven.dough_temperature, ppc = d3 and 8 or 4 }
   end
   local function measure(i)
