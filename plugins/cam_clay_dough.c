@@ -313,7 +313,7 @@ static int return_map(const double *prm, double M, double dt, double s2, double 
 static double cap_volume(const double *prm, double n, double JP, double J, double ev0, double ev) {
     const double n0 = n - (JP - 1); /* n^p_0 = n^p - (J^P - 1) */
     const double jmin = 1 - prm[P_COMPACTION] * n0;
-    if (n0 > 0 && jmin > 0 && J / exp(ev) < jmin && ev > ev0) /* ev > ev0: the return compacted */
+    if (ev > ev0 && n0 > 0 && jmin > 0 && J / exp(ev) < jmin) /* ev > ev0: the return compacted */
         ev = fmax(log(J / jmin), ev0);
     const double jmax = 1 + prm[P_MAX_POROSITY] - n0;
     if (prm[P_MAX_POROSITY] < 1 && J / exp(ev) > jmax && ev < ev0) /* ev < ev0: the return dilated */
