@@ -15,29 +15,17 @@
 #include "hearth/material.h"
 #include "tensor.h"
 #include "test.h"
+#define PLUGIN_FIXTURE_SEED 0x0d0c0ffee
+#include "plugin_fixture.h"
 
 enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, NP };
 enum { NSTATE = 7 };
 
-static const hearth_material *dough(void) {
-    hearth_error err = {0};
-    const hearth_plugin *pl = hearth_plugin_load("cam_clay_dough", &err);
-    if (!pl) {
-        fprintf(stderr, "%s\n", err.msg);
-        return NULL;
-    }
-    return hearth_plugin_material(pl);
-}
+static const hearth_material *dough(void) { return load_material("cam_clay_dough"); }
 
 static void lame(const double *p, double *mu, double *lambda) {
     *mu = p[P_E] / (2 * (1 + p[P_NU]));
     *lambda = p[P_E] * p[P_NU] / ((1 + p[P_NU]) * (1 - 2 * p[P_NU]));
-}
-
-static double norm9(const double *a) {
-    double s = 0;
-    for (int i = 0; i < 9; i++) s += a[i] * a[i];
-    return sqrt(s);
 }
 
 /* tau = C eps and eps = C^-1 tau for the isotropic Hencky law. */
@@ -95,15 +83,6 @@ static int step_from_rest(const hearth_material *m, const double *p, const doubl
     return m->stress(&pt, tau);
 }
 
-static uint64_t rng = 0x0d0c0ffee;
-static double uni(void) {
-    rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
-    return (double)(rng >> 11) * 0x1.0p-53;
-}
-static void random_rotation(double R[9]) {
-    double u[3] = {uni(), uni(), uni()};
-    t3_random_rotation(u, R);
-}
 
 /* A trial state outside the surface: principal log strains with a deviator
  * well past yield and a volume change (either sign) of at most 2%. Plastic

@@ -14,25 +14,13 @@
 #include "hearth/material.h"
 #include "tensor.h"
 #include "test.h"
+#define PLUGIN_FIXTURE_SEED 0x5a0f1a7e
+#include "plugin_fixture.h"
 
 enum { P_E, P_NU, P_DENSITY, P_THETA_C, P_THETA_S, P_XI, NP };
 enum { NSTATE = 7, S_JP = 6 };
 
-static const hearth_material *snow(void) {
-    hearth_error err = {0};
-    const hearth_plugin *pl = hearth_plugin_load("snow_plastic", &err);
-    if (!pl) {
-        fprintf(stderr, "%s\n", err.msg);
-        return NULL;
-    }
-    return hearth_plugin_material(pl);
-}
-
-static double norm9(const double *a) {
-    double s = 0;
-    for (int i = 0; i < 9; i++) s += a[i] * a[i];
-    return sqrt(s);
-}
+static const hearth_material *snow(void) { return load_material("snow_plastic"); }
 
 /* One step from rest with F = f; returns the plugin's code. */
 static int step_from_rest(const hearth_material *m, const double *p, const double f[9], double dt, double *state,
@@ -50,15 +38,6 @@ static int step_from_rest(const hearth_material *m, const double *p, const doubl
     return m->stress(&pt, tau);
 }
 
-static uint64_t rng = 0x5a0f1a7e;
-static double uni(void) {
-    rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
-    return (double)(rng >> 11) * 0x1.0p-53;
-}
-static void random_rotation(double R[9]) {
-    double u[3] = {uni(), uni(), uni()};
-    t3_random_rotation(u, R);
-}
 
 /* f = R1 diag(exp(e)) R2^T: singular values exp(e), left vectors R1. */
 static void step_with(const double e[3], const double R1[9], const double R2[9], double f[9]) {
