@@ -33,7 +33,11 @@ enum {
     HEARTH_NEEDS_TEMPERATURE = 1u << 0, ///< hearth_point.temperature is filled (degrees C)
     HEARTH_NEEDS_POROSITY = 1u << 1,    ///< hearth_point.porosity is filled (0..1)
     HEARTH_NEEDS_SATURATION = 1u << 2,  ///< hearth_point.saturation is filled (0..1)
-    HEARTH_NEEDS_THERMAL_EXPANSION = 1u << 3 ///< the core adds -c*lambda*J*(T-Tref) I to tau (Ding et al. eq. 10)
+    /// The law is written to be completed by the core's thermal expansion term -c*lambda*J^E*(T-Tref) I
+    /// (Ding et al. eq. 10). The core adds that term to any material whose core parameter `expansion`
+    /// (c*lambda) is > 0, flagged or not; the flag states the intent, and `hearth plugin check` and the
+    /// rheometer fill the temperature for it.
+    HEARTH_NEEDS_THERMAL_EXPANSION = 1u << 3
 };
 
 /// One entry of a parameter schema. def must lie in [min, max].
