@@ -124,6 +124,16 @@ PY
     [ $rc -eq 0 ] || fail "the full model's cookie is not domed (numbers above)"
     ;;
 
+# A press that would drive the crackers through each other is refused up
+# front, naming the parameters and the largest press time at that speed
+# (unchecked, 15 mm/s for 1 s crushed the marshmallow to inverted particles).
+baking_marshmallow_press_refused)
+    "$hearth" run "$scenes/marshmallow.lua" --quiet --set speed=0.015 >out.txt 2>err.txt && fail "the over-closing press ran"
+    grep -q "marshmallow.lua:[0-9]*: --set speed=0.015, press=1: the crackers would close 30.0 mm" err.txt ||
+        fail "unexpected message: $(cat err.txt)"
+    grep -q "press <= 0.8 s" err.txt || fail "the message does not give the largest press: $(cat err.txt)"
+    ;;
+
 # §7.4, Fig. 15: a scored loaf's slit opens while the loaf rises: from the
 # loaf's lowest height (after the dough settles) to the end of the bake, the
 # height grows and so does the slit's gap.

@@ -7,10 +7,12 @@
 -- The s'more preset (lua/hearth/dough.lua) makes the marshmallow softest near
 -- 35 degC (tau_y x0.3, Fig. 8) and sets it past 70 degC (x20, irreversible):
 -- a short roast softens the inside and crusts the bottom.
--- The crackers close at 5 mm/s each: at 15 mm/s the stability guard stops
--- the run as the upper cracker presses the roasted marshmallow (a CFL
--- runaway, 167 m/s, t = 1.50 s; it was t = 0.71 s before the core's thermal
--- expansion stress took the elastic J^E). Not yet diagnosed.
+-- The crackers close at `speed` each (5 mm/s) for `press` seconds, so they
+-- travel 2 speed press toward each other: the scene refuses a press that
+-- would leave the marshmallow less than a fifth of its height (the crackers
+-- start 29 mm apart). Unchecked, 15 mm/s for 1 s closed them through each
+-- other at t = 1.47 s and the guard stopped the run on the crushed, inverted
+-- particles between them (t = 1.50 s).
 -- The element keeps heating during the press, so by the end the roasted
 -- marshmallow has set through (Fig. 8's x20 past 70 degC) and comes out of
 -- the press a little thicker than the raw one: with this preset's curve a
@@ -28,6 +30,12 @@ local oven = h.library.oven.smore
 local W, H, zc = 0.16, 0.08, 0.04         -- m: scene box, depth centre (3D)
 local BASE, HM, RM = 0.02, 0.025, 0.015   -- m: lower crackers' top, marshmallow height and half width
 local CW, CT, GAP = 0.025, 0.004, 0.004   -- m: crackers' half width and thickness, gap above the marshmallow
+local closure, room = 2 * P.speed * P.press, HM + GAP - HM / 5 -- m: how far the crackers close, and may
+if closure > room then
+  error(("--set speed=%g, press=%g: the crackers would close %.1f mm, more than the %.1f mm that leaves the "
+    .. "marshmallow a fifth of its %.0f mm height; keep 2 speed press <= %.3f m (at this speed, press <= %.3g s)")
+    :format(P.speed, P.press, closure * 1e3, room * 1e3, HM * 1e3, room, room / (2 * P.speed)))
+end
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, H, 0.08) }, gravity = v(0, -9.81, 0),
   name = "marshmallow" }
 local mat = h.material("cam_clay_dough", h.library.dough.smore)
