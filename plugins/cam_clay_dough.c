@@ -47,7 +47,9 @@
  * replaced by bisection. Then eps = C^-1 tau (eps_vol = -p/K, eps_dev = s /
  * (2 mu)) and b^E = U exp(2 Lambda) U^T: this is F^E = U exp(Lambda) V^T of
  * §6.5 seen through b^E = F^E F^E^T; V (the rest-frame rotation) drops out
- * because the law is isotropic.
+ * because the law is isotropic. The return needs only tr eps and |dev eps|
+ * (it sets the volume and scales the deviator), so near the rest shape the
+ * eigenvectors are not needed at all (below, "near the rest shape").
  *
  * ---- closed pores --------------------------------------------------------------
  * Eq. 12 is symmetric in p, so a dough under more pressure than
@@ -81,7 +83,7 @@
  * Seven doubles: b^E (xx, yy, zz, xy, yz, zx) and J^P. Why b^E and not F^E:
  * the stress and the return depend only on b^E, its update f b f^T is
  * objective as it stands, it is symmetric (6 doubles), and its eigen
- * decomposition (Jacobi) replaces the SVD of F^E. J^P = det F / det F^E is
+ * decomposition (Jacobi, or none near the rest shape) replaces the SVD of F^E. J^P = det F / det F^E is
  * stored after each return from the core's total F, so the porosity of
  * §5.4 never drifts from the deformation: plastic_J returns it.
  *
