@@ -83,9 +83,10 @@
  * Seven doubles: b^E (xx, yy, zz, xy, yz, zx) and J^P. Why b^E and not F^E:
  * the stress and the return depend only on b^E, its update f b f^T is
  * objective as it stands, it is symmetric (6 doubles), and its eigen
- * decomposition (Jacobi, or none near the rest shape) replaces the SVD of F^E. J^P = det F / det F^E is
- * stored after each return from the core's total F, so the porosity of
- * §5.4 never drifts from the deformation: plastic_J returns it.
+ * decomposition (Jacobi, or none near the rest shape) replaces the SVD of
+ * F^E. J^P = det F / det F^E is stored after each return from the core's
+ * total F, so the porosity of §5.4 never drifts from the deformation:
+ * plastic_J returns it.
  *
  * ---- units -------------------------------------------------------------------------
  * g = 1/2 f^2 with f in Pa^2 makes eta a "viscosity" in Pa^3 s, exactly as
