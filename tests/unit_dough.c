@@ -404,14 +404,18 @@ TEST(dough_extremes) {
     if (!m) return;
     const double Es[] = {1e2, 1e8}, etas[] = {0, 1e-3, 1e8}, nps[] = {1e-8, 0.1, 0.999}, tys[] = {1e-3, 1e5},
                  Ts[] = {-20, 400};
-    const double strains[][3] = {{3, 3, 3}, {-3, -3, -3}, {3, -3, 0}, {-3, 3, 3}, {3, 0, 0}, {0, 0, -3}};
+    /* the last three (and the two pure volume changes) take the plugin's near-rest path: a deviator of
+     * 1e-9, one of 2%, and a volume compacted to e^-3 with a 5% deviator */
+    const double strains[][3] = {{3, 3, 3},       {-3, -3, -3},         {3, -3, 0},           {-3, 3, 3}, {3, 0, 0},
+                                 {0, 0, -3},      {1e-9, -1e-9, 0},     {0.02, -0.01, -0.01}, {-1, -1.05, -1}};
+    const int NSTRAIN = (int)(sizeof strains / sizeof strains[0]);
     int cases = 0, codes = 0, bad = 0;
     for (int a = 0; a < 2; a++)
         for (int b = 0; b < 3; b++)
             for (int c = 0; c < 3; c++)
                 for (int d = 0; d < 2; d++)
                     for (int t = 0; t < 2; t++)
-                        for (int e = 0; e < 6; e++) {
+                        for (int e = 0; e < NSTRAIN; e++) {
                             const double p[NP] = {Es[a], 0.3, tys[d], etas[b], 0.5, 500, 1};
                             double R[9], f[9], eps_tr[9], tau[9], st[NSTATE];
                             random_rotation(R);
@@ -457,7 +461,7 @@ TEST(dough_extremes) {
     CHECK_STR_CONTAINS(m->describe_error(step_from_rest(m, p, Finv, 1e-4, 0.1, 20, st, tau)), "inverted");
     /* NaN porosity (the field off) reads as von Mises, not as an error */
     CHECK(step_from_rest(m, p, I, 1e-4, NAN, 20, st, tau) == 0);
-    printf("  %d corners (E x eta x n^p x tau_y x T x log-strain +-3): %d finite, %d documented codes, %d bad\n", cases,
+    printf("  %d corners (E x eta x n^p x tau_y x T x log-strains from 1e-9 to +-3): %d finite, %d documented codes, %d bad\n", cases,
            cases - codes - bad, codes, bad);
     CHECK(bad == 0);
 }
