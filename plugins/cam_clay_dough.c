@@ -194,17 +194,21 @@ static double trial_plane(const double *gv, double dt, double B[9]) {
     return (f0 * f4 - f1 * f3) * f8;
 }
 
-/* One Jacobi rotation diagonalises the block (the sym_eigen step below). */
+/* One Jacobi rotation diagonalises the block: the sym_eigen step below,
+ * written with its tangent t = sgn(h) b / w, h = (b_yy - b_xx)/2,
+ * r = sqrt(h^2 + b^2), w = |h| + r, so cos = sqrt(w / 2r) and
+ * sin = sgn(h) b / sqrt(2 r w): three dependent square roots and divisions
+ * instead of five (this chain was a fifth of the plugin's time in 2D). */
 static void eigen_plane(const double B[9], double l[3], double Q[9]) {
     for (int i = 0; i < 9; i++) Q[i] = i % 4 == 0;
     l[0] = B[0], l[1] = B[4], l[2] = B[8];
-    const double apq = B[1];
-    if (apq == 0) return;
-    const double zeta = (B[4] - B[0]) / (2 * apq);
-    const double t = fabs(zeta) > 1e150 ? 0.5 / zeta : (zeta >= 0 ? 1 : -1) / (fabs(zeta) + sqrt(1 + zeta * zeta));
-    const double c = 1 / sqrt(1 + t * t), sn = t * c;
-    l[0] -= t * apq;
-    l[1] += t * apq;
+    const double b = B[1];
+    if (b == 0) return;
+    const double h = 0.5 * (B[4] - B[0]), r = sqrt(h * h + b * b), w = fabs(h) + r;
+    const double sb = h >= 0 ? b : -b, tb = sb * b / w; /* t b */
+    const double c = sqrt(w / (2 * r)), sn = sb / sqrt(2 * r * w);
+    l[0] -= tb;
+    l[1] += tb;
     Q[0] = c, Q[1] = sn, Q[3] = -sn, Q[4] = c;
 }
 
