@@ -101,8 +101,7 @@ int grid_tile_slot(const grid *g, const int bc[3], int t, int *l) {
         b = (t / GRID_T) % GRID_T;
         c = t % GRID_T;
     }
-    *l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
-    return g->slot[grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0))];
+    return grid_tile_slot_at(g, D, bc, a, b, c, l);
 }
 
 void grid_tile_stencil(const grid *g, const int bc[3], const double *x, grid_stencil *st) {

@@ -78,6 +78,20 @@ static inline void grid_node_index(const grid *g, const int bc[3], int l, int gi
 static inline int grid_tile_count(const grid *g) { return g->dim == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T; }
 /// Storage slot of tile node t of the block at bc, and its local index in *l.
 int grid_tile_slot(const grid *g, const int bc[3], int t, int *l);
+/// Node (a, b, c) of the tile of the block at bc (c = 0 in 2D): the storage
+/// slot of its block, and its local index in *l. D is the dimension; the
+/// particle passes give it as a compile-time constant, so this inlines to a
+/// few adds.
+static inline __attribute__((always_inline)) int grid_tile_slot_at(const grid *g, const int D, const int bc[3], int a,
+                                                                   int b, int c, int *l) {
+    *l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
+    return g->slot[grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0))];
+}
+/// The same node's block storage.
+static inline __attribute__((always_inline)) double *grid_tile_node(const grid *g, const int D, const int bc[3], int a,
+                                                                    int b, int c, int *l) {
+    return grid_block(g, grid_tile_slot_at(g, D, bc, a, b, c, l));
+}
 
 /// A particle's B-spline stencil in its block's tile: tile index, weight and
 /// weight gradient (1/m) of each of its 3^dim nodes.

@@ -300,10 +300,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
             for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
                 const int t = D == 2 ? a * GRID_T + b : (a * GRID_T + b) * GRID_T + c;
                 if (tile[t] == 0.0) continue;
-                const int blk = grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0));
-                double *node = grid_block(g, g->slot[blk]);
-                const int l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B
-                                     : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
+                int l;
+                double *node = grid_tile_node(g, D, bc, a, b, c, &l);
                 for (int ch = 0; ch < GRID_NCH_MOMENTUM; ch++) node[ch * NPB + l] += tile[ch * TN + t];
                 if (HEAT)
                     for (int ch = P2G_HC; ch <= P2G_T; ch++) node[p2g_channel[ch] * NPB + l] += tile[ch * TN + t];
@@ -418,10 +416,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         for (int b = 0; b < GRID_T; b++)
             for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
                 const int t = D == 2 ? a * GRID_T + b : (a * GRID_T + b) * GRID_T + c;
-                const int blk = grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0));
-                const double *node = grid_block(g, g->slot[blk]);
-                const int l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B
-                                     : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
+                int l;
+                const double *node = grid_tile_node(g, D, bc, a, b, c, &l);
                 for (int d = 0; d < 3; d++) tile[d * TN + t] = node[(d + 1) * NPB + l];
                 if (HEAT) {
                     tile[3 * TN + t] = node[CH_T * NPB + l] - node[CH_T0 * NPB + l];

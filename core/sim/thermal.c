@@ -28,7 +28,6 @@
 #include "alloc.h"
 #include "error.h"
 #include "scene.h"
-#include "tensor.h"
 #include "transport.h"
 
 #define KELVIN 273.15
@@ -73,7 +72,7 @@ static void find_boundary(hearth_scene *s) {
     particles *ps = &s->ps;
     const int n = ps->n;
     double *coef = s->bnd_coef, *temp = s->bnd_temp;
-    const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0), *Fc = pcold(ps, PC_F);
+    const double *X = pcold(ps, PC_X);
     int *flags = pcoli(ps, PC_FLAGS); /* live with temperature */
     const int oven = !isnan(s->def.oven_temperature) && s->def.oven_beta > 0;
     for (int i = 0; i < n; i++)
@@ -89,7 +88,7 @@ static void find_boundary(hearth_scene *s) {
             const double *x = X + 3 * i;
             if (!collider_near(col, x) || collider_sdf(col, x, NULL) >= g->dx) continue;
             if (!(flags[i] & PF_BOUNDARY)) coef[i] = temp[i] = 0.0;
-            const double Vp = V0[i] * t3_det(Fc + 9 * i);
+            const double Vp = s->vol[i]; /* J V_0, from this step's P2G */
             /* a particle touching both air and the pan: the pan's temperature wins the ambient, areas add */
             const double cS = Vp / g->dx * col->beta;
             temp[i] = coef[i] > 0 ? (temp[i] * coef[i] + col->temperature * cS) / (coef[i] + cS) : col->temperature;

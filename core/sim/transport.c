@@ -29,12 +29,6 @@
 #define KELVIN 273.15
 #define FORCE_INLINE static inline __attribute__((always_inline))
 
-FORCE_INLINE double *tile_node(const grid *g, const int D, const int bc[3], int a, int b, int c, int *l) {
-    const int blk = grid_block_id(g, bc[0] + a / GRID_B, bc[1] + b / GRID_B, bc[2] + (D == 3 ? c / GRID_B : 0));
-    *l = D == 2 ? (a % GRID_B) * GRID_B + b % GRID_B : ((a % GRID_B) * GRID_B + b % GRID_B) * GRID_B + c % GRID_B;
-    return grid_block(g, g->slot[blk]);
-}
-
 FORCE_INLINE int tile_index(const int D, const int base[3], int a, int b, int c) {
     return D == 2 ? (base[0] + a) * GRID_T + base[1] + b : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
 }
@@ -109,7 +103,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
         for (int b = 0; b < GRID_T; b++)
             for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
                 int l;
-                const double *node = tile_node(g, D, bc, a, b, c, &l);
+                const double *node = grid_tile_node(g, D, bc, a, b, c, &l);
                 const int t = D == 2 ? a * GRID_T + b : (a * GRID_T + b) * GRID_T + c;
                 if (HEAT) tile[T_IN * TN + t] = node[tp->heat_in * NPB + l];
                 if (WATER) tile[T_SAT * TN + t] = node[CH_SW * NPB + l];
@@ -210,7 +204,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
             for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
                 const int t = D == 2 ? a * GRID_T + b : (a * GRID_T + b) * GRID_T + c;
                 int l;
-                double *node = tile_node(g, D, bc, a, b, c, &l);
+                double *node = grid_tile_node(g, D, bc, a, b, c, &l);
                 if (HEAT) {
                     node[tp->heat_out * NPB + l] += tout[t];
                     if (apart) node[tp->heat_src * NPB + l] += tsrc[t];
@@ -239,10 +233,10 @@ void transport_apply(hearth_scene *s, const transport_pass *tp) {
     else if (heat && !water) fn = d3 ? pass_3_100 : pass_2_100;
     else if (!heat && water) fn = d3 ? pass_3_001 : pass_2_001;
     if (!fn) return; /* heat without sources alongside water is never asked for */
-    for (int col = 0; col < 8; col++) {
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
-        {
-            double tile[T_COUNT * GRID_T * GRID_T * GRID_T];
+    {
+        double tile[T_COUNT * GRID_T * GRID_T * GRID_T];
+        for (int col = 0; col < 8; col++) { /* the loop's barrier keeps the colours apart */
 #pragma omp for schedule(dynamic, 2)
             for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) fn(s, tp, q, tile);
         }
