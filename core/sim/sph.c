@@ -45,7 +45,7 @@ struct sph_state {
     double *perm;   /* permutation scratch, cap doubles */
     double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *brown, *surf, *rhof, *dT, *Tprev;
     double *rho0, *B, *mu, *c0, *xsph;
-    double *wd;     /* no-slip wall drag coefficient (1/s), integrated implicitly in the kick */
+    double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
     double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
     double amax;    /* largest |a| of the last step, for the force limit */
 };
@@ -96,7 +96,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
 
 #define ARRAYS(X)                                                                                                      \
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(brown, 1) X(surf, 1) X(rhof, 1)       \
-        X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(wd, 1) X(R, 9)
+        X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9)
 
 void sph_free(struct sph_state *st) {
     if (!st) return;
@@ -226,7 +226,7 @@ static int wall_frame(const hearth_scene *s, int i, double n[3], double *da) {
     const struct sph_state *st = s->sph;
     const particles *ps = &s->ps;
     const int *flags = pcoli(ps, PC_FLAGS), dim = s->def.dim;
-    const double *x = pcold(ps, PC_X), *m = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
+    const double *x = pcold(ps, PC_X), *m = pcold(ps, PC_MASS);
     const int *off = st->nl.off, *nb = st->nl.j;
     double g[3] = {0, 0, 0};
     for (int k = off[i]; k < off[i + 1]; k++) {
@@ -248,7 +248,7 @@ static int wall_frame(const hearth_scene *s, int i, double n[3], double *da) {
         if (!(flags[j] & PF_FIXED)) continue;
         double d[3];
         sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-        const double sj = d[0] * n[0] + d[1] * n[1] + d[2] * n[2] - 0.5 * (dim == 3 ? cbrt(V0[j]) : sqrt(V0[j]));
+        const double sj = d[0] * n[0] + d[1] * n[1] + d[2] * n[2] - 0.5 * st->sp[j];
         if (sj < best) best = sj;
     }
     *da = best;
@@ -257,11 +257,10 @@ static int wall_frame(const hearth_scene *s, int i, double n[3], double *da) {
 
 /* 1 + d_b / d_a for wall particle b at displacement d = x_a - x_b: the
  * factor on v_a in a's viscous interaction with b (v_a - v_b of eq. 3.19
- * with the wall velocity above). d_a at least half of a's spacing. */
-static double wall_beta(const hearth_scene *s, int i, const double d[3], const double n[3], double da) {
-    const double V0 = pcold(&s->ps, PC_VOL0)[i], half = 0.5 * (s->def.dim == 3 ? cbrt(V0) : sqrt(V0));
+ * with the wall velocity above). dah: d_a, at least half of a's spacing. */
+static double wall_beta(const double d[3], const double n[3], double da, double dah) {
     const double db = d[0] * n[0] + d[1] * n[1] + d[2] * n[2] - da;
-    return db > 0 ? 1.0 + db / fmax(da, half) : 1.0;
+    return db > 0 ? 1.0 + db / dah : 1.0;
 }
 
 static hearth_status sort_and_list(hearth_scene *s, double hcell, const double *h, hearth_error *err) {
@@ -574,6 +573,7 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         }
     }
     const double *V0 = pcold(ps, PC_VOL0);
+    for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(V0[i]) : sqrt(V0[i]); /* once, not per pair */
 
     /* accelerations (3.18, stress, 3.19, 3.41, 3.30) and heat (3.42, 3.45-3.46) */
     const double *gvec = s->def.gravity;
@@ -594,6 +594,7 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         const double ri = st->rho[i], Pi = st->prs[i] / (ri * ri), *Si = st->S + 9 * i;
         double wn[3] = {0, 0, 0}, da = 0, drag = 0;
         const int wall = flags && !(flags[i] & PF_FIXED) && wall_frame(s, i, wn, &da);
+        const double dah = fmax(da, 0.5 * st->sp[i]);
         for (int k = off[i]; k < off[i + 1]; k++) {
             const int j = nb[k];
             double d[3];
@@ -616,10 +617,10 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
             const double visc = 0.5 * (st->mu[i] + st->mu[j]) * m[j] / (rj * ri) * lv; /* eq. 3.19 over rho_i */
             /* a wall particle's velocity for eq. 3.19: Morris et al. 1997 (below) */
             const int wj = wall && (flags[j] & PF_FIXED);
-            const double beta = wj ? wall_beta(s, i, d, wn, da) : 1.0;
+            const double beta = wj ? wall_beta(d, wn, da, dah) : 1.0;
             double fn = 0; /* f_ab^4 of the artificial stress */
             if (eps_as > 0) {
-                const double dp = 0.5 * (dim == 3 ? cbrt(V0[i]) + cbrt(V0[j]) : sqrt(V0[i]) + sqrt(V0[j]));
+                const double dp = 0.5 * (st->sp[i] + st->sp[j]);
                 const double f = sph_w(dim, r, hij) / sph_w(dim, dp, hij);
                 fn = f * f * f * f;
             }
@@ -676,20 +677,16 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
             if (coef > 0 && ci > 0) dTi += coef * (Tr - T[i]) / (m[i] * ci);
         }
         memcpy(st->acc + 3 * i, a, sizeof a);
-        st->wd[i] = drag;
         st->dT[i] = dTi;
+        /* the kick. The wall drag -drag v is linear in v (the wall velocities
+         * above are multiples of v_i), so it is taken implicitly: with beta up
+         * to about 5 it would otherwise break the viscous dt limit, which is
+         * set for fluid-fluid pairs (a channel at 100 Pa s blew up) */
+        const int fixed = flags && (flags[i] & PF_FIXED);
+        for (int c = 0; c < 3; c++) st->vnew[3 * i + c] = fixed ? 0.0 : (v[3 * i + c] + dt * a[c]) / (1.0 + dt * drag);
     }
 
-    /* kick, then XSPH (3.34) from the kicked velocities */
-    for (int i = 0; i < n; i++) {
-        const int fixed = flags && (flags[i] & PF_FIXED);
-        /* the wall drag -wd v is linear in v (the wall velocities above are
-         * multiples of v_i), so it is taken implicitly: with beta up to about
-         * 5 it would otherwise break the viscous dt limit, which is set for
-         * fluid-fluid pairs (a channel at 100 Pa s blew up) */
-        for (int c = 0; c < 3; c++)
-            st->vnew[3 * i + c] = fixed ? 0.0 : (v[3 * i + c] + dt * st->acc[3 * i + c]) / (1.0 + dt * st->wd[i]);
-    }
+    /* XSPH (3.34) from the kicked velocities */
     double amax = 0;
 #pragma omp parallel for schedule(static) reduction(max : amax) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
