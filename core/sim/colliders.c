@@ -83,13 +83,21 @@ void collider_set_time(collider *c, double t) {
     if (c->motion) c->motion(c->motion_ud, t, c->vel, c->omega);
 }
 
+/* The rotation Q of one step dt at the angular velocity omega; 0 (Q
+ * untouched) when the collider does not turn. */
+static int step_rotation(const collider *c, double dt, double Q[9]) {
+    const double w = sqrt(c->omega[0] * c->omega[0] + c->omega[1] * c->omega[1] + c->omega[2] * c->omega[2]);
+    if (!(w > 0)) return 0;
+    const double axis[3] = {c->omega[0] / w, c->omega[1] / w, c->omega[2] / w};
+    t3_rotation(axis, w * dt, Q);
+    return 1;
+}
+
 void collider_advance(collider *c, double dt) {
     for (int i = 0; i < 3; i++) c->offset[i] += c->vel[i] * dt;
-    double w = sqrt(c->omega[0] * c->omega[0] + c->omega[1] * c->omega[1] + c->omega[2] * c->omega[2]);
-    if (!(w > 0)) return;
+    double Q[9], Rn[9];
+    if (!step_rotation(c, dt, Q)) return;
     /* Left-multiply: omega is a world-frame angular velocity. */
-    double axis[3] = {c->omega[0] / w, c->omega[1] / w, c->omega[2] / w}, Q[9], Rn[9];
-    t3_rotation(axis, w * dt, Q);
     t3_mul(Q, c->R, Rn);
     t3_copy(Rn, c->R);
 }
@@ -166,14 +174,8 @@ int collider_carry_particle(const collider *c, int dim, double dt, double x[3], 
     double r[3], vb[3];
     for (int i = 0; i < 3; i++) r[i] = x[i] - c->pivot0[i] - c->offset[i];
     collider_velocity_at(c, x, vb);
-    const double w = sqrt(c->omega[0] * c->omega[0] + c->omega[1] * c->omega[1] + c->omega[2] * c->omega[2]);
-    double rr[3] = {r[0], r[1], r[2]};
-    if (w > 0) {
-        const double axis[3] = {c->omega[0] / w, c->omega[1] / w, c->omega[2] / w};
-        double Q[9];
-        t3_rotation(axis, w * dt, Q);
-        t3_mulv(Q, r, rr);
-    }
+    double rr[3] = {r[0], r[1], r[2]}, Q[9];
+    if (step_rotation(c, dt, Q)) t3_mulv(Q, r, rr);
     for (int d = 0; d < dim; d++) {
         x[d] += rr[d] - r[d] + c->vel[d] * dt;
         v[d] = vb[d];
