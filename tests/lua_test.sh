@@ -149,10 +149,17 @@ lua_set_overrides)
     has out.txt "height=0.5 type=float" "--set height"
     has out.txt "label=b" "--set label"
     has out.txt "filled_at_0.35=false" "the block moved with --set height"
+    has out.txt "sizes=1/2 n=2" "a number-list default"
+    run params.lua --set sizes=0.5,3,1e2
+    expect_rc 0 "--set sizes=0.5,3,1e2"
+    has out.txt "sizes=0.5/3/100.0 n=3" "--set a number list"
+    run params.lua --set sizes=1,x
+    expect_rc 1 "--set sizes=1,x"
+    has err.txt "--set sizes=1,x: expected numbers separated by commas" "a bad number list"
     run params.lua --set nope=1
     expect_rc 1 "--set nope=1"
     has err.txt "no parameter 'nope'" "unknown parameter"
-    has err.txt "valid names: height, label" "the valid names"
+    has err.txt "valid names: height, label, sizes" "the valid names"
     run params.lua --set height=abc
     expect_rc 1 "--set height=abc"
     has err.txt "--set height=abc: expected a number" "non-number"

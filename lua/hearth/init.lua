@@ -294,6 +294,7 @@ h.library.dough_scale = { eta = dough_data.ETA_SCALE, gas = dough_data.GAS_SCALE
 -- ---- scene parameters -----------------------------------------------------
 
 --- Named defaults that `hearth run scene.lua --set name=value` overrides.
+--- A default that is a list of numbers takes `--set name=1,2.5,3`.
 function h.params(defaults)
   if type(defaults) ~= "table" then error("h.params: expected a table of name = default", 2) end
   local P = {}
@@ -308,6 +309,12 @@ function h.params(defaults)
     end
     if type(d) == "number" then
       P[k] = tonumber(v) or error(("--set %s=%s: expected a number"):format(k, v), 2)
+    elseif type(d) == "table" then
+      local t = {}
+      for w in (v .. ","):gmatch("([^,]*),") do
+        t[#t + 1] = tonumber(w) or error(("--set %s=%s: expected numbers separated by commas"):format(k, v), 2)
+      end
+      P[k] = t
     elseif type(d) == "boolean" then
       if v ~= "true" and v ~= "false" then error(("--set %s=%s: expected true or false"):format(k, v), 2) end
       P[k] = v == "true"

@@ -27,17 +27,12 @@
 -- and its top curvature is the measures' reading of that shape (see
 -- claim_cookie_domed_vs_baseline in tests/baking_test.sh for the numbers).
 local h = require "hearth"
-local P = h.params { dim = 2, dx = 0.005, until_t = 3, frames = 6, ovens = "190,150,110", leaveners = "0.015,0.0075,0",
-  baseline = false }
+local P = h.params { dim = 2, dx = 0.005, until_t = 3, frames = 6, ovens = { 190, 150, 110 },
+  leaveners = { 0.015, 0.0075, 0 }, baseline = false }
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.01) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
-local function list(str)
-  local t = {}
-  for w in tostring(str):gmatch("[^,]+") do t[#t + 1] = tonumber(w) or error("not a number list: " .. str) end
-  return t
-end
-local ovens, leaveners = list(P.ovens), list(P.leaveners)
+local ovens, leaveners = P.ovens, P.leaveners
 
 local oven = h.library.oven.cookie
 local TRAY, SPACING, R, THICK = 0.02, 0.12, 0.03, 0.025 -- m: tray height, cookie spacing, dough radius and height
@@ -54,11 +49,10 @@ for _, T in ipairs(ovens) do
   for i, a in ipairs(leaveners) do
     local d = h.library.dough.cookie
     d.gas_rate = a * h.library.dough_scale.gas
-    local mat = h.material("cam_clay_dough", d)
-    if P.baseline then -- the cookie's E, nu, density and heat; the snow law's theta_c, theta_s, xi (plugin defaults)
-      mat = h.material("snow_plastic", { E = d.E, nu = d.nu, density = d.density, specific_heat = d.specific_heat,
-        conductivity = d.conductivity, reference_temperature = d.reference_temperature })
-    end
+    -- the baseline: the cookie's E, nu, density and heat; the snow law's theta_c, theta_s, xi (plugin defaults)
+    local mat = P.baseline and h.material("snow_plastic", { E = d.E, nu = d.nu, density = d.density,
+      specific_heat = d.specific_heat, conductivity = d.conductivity, reference_temperature = d.reference_temperature })
+      or h.material("cam_clay_dough", d)
     xs[i] = (i - 0.5) * SPACING
     s:add { shape = h.shapes.cookie(v(xs[i], TRAY + THICK / 2, zc), R, THICK), material = mat,
       temperature = oven.dough_temperature, ppc = d3 and 8 or 4 }

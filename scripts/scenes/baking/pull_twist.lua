@@ -30,17 +30,12 @@
 -- off when pulled; a grip carries the particles inside it and holds the
 -- nodes within a cell of its surface (core/sim/colliders.c, mpm.c).
 local h = require "hearth"
-local P = h.params { dim = 2, dx = 0.002, until_t = 0.4, frames = 4, taus = "300,1000,3000", etas = "1e6,1e8,1e10",
-  speed = 0.02, spin = 0.5, E = 4e4 }
+local P = h.params { dim = 2, dx = 0.002, until_t = 0.4, frames = 4, taus = { 300, 1000, 3000 },
+  etas = { 1e6, 1e8, 1e10 }, speed = 0.02, spin = 0.5, E = 4e4 }
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.004) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
-local function list(str)
-  local t = {}
-  for w in tostring(str):gmatch("[^,]+") do t[#t + 1] = tonumber(w) or error("not a number list: " .. str) end
-  return t
-end
-local taus, etas = list(P.taus), list(P.etas)
+local taus, etas = P.taus, P.etas
 
 local CW, CH = 0.1, 0.07                 -- m: one dough's cell (width, height)
 local L, T, G, LIP = 0.06, 0.012, 0.01, 0.004 -- m: dough length, thickness, grip depth on the dough, grip lip
