@@ -173,6 +173,24 @@ function h.write(path, text)
   return e
 end
 
+--- The leading coefficient a of the least-squares parabola y = a u^2 + b u + c
+--- through points {{u, y}, ...} (normal equations, Cramer's rule); NaN with
+--- fewer than 3 points. The baking scenes measure a top's curvature as 2a.
+function h.parabola(points)
+  local m = { 0, 0, 0, 0, 0, 0, 0, 0 } -- sums of 1, u, u^2, u^3, u^4, y, yu, yu^2
+  for _, p in ipairs(points) do
+    local u, y = p[1], p[2]
+    m[1], m[2], m[3], m[4], m[5] = m[1] + 1, m[2] + u, m[3] + u * u, m[4] + u ^ 3, m[5] + u ^ 4
+    m[6], m[7], m[8] = m[6] + y, m[7] + y * u, m[8] + y * u * u
+  end
+  if m[1] < 3 then return 0 / 0 end
+  local function det(a, b, c) -- columns a, b, c of a 3x3 matrix
+    return a[1] * (b[2] * c[3] - b[3] * c[2]) - b[1] * (a[2] * c[3] - a[3] * c[2]) + c[1] * (a[2] * b[3] - a[3] * b[2])
+  end
+  local c1, c2, c3, r = { m[1], m[2], m[3] }, { m[2], m[3], m[4] }, { m[3], m[4], m[5] }, { m[6], m[7], m[8] }
+  return det(c1, c2, r) / det(c1, c2, c3)
+end
+
 -- ---- material library ---------------------------------------------------
 
 -- h.library.sauce.<name>: the 21 sauces of Nagasawa et al. Table 1 as

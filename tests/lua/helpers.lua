@@ -30,4 +30,10 @@ assert(sn:stats().bodies == 10 and sn:stats().particles == 80, ("nozzle bodies %
 local reach = h.recipes.reach(sn, { 0.15, 0.21 }, { 0, -1 }, 0.2, 0.0025)
 print(("nozzle stream reaches %.3f m below the exit"):format(reach))
 assert(reach > 0.035 and reach < 0.07, "the stream is 0.05 m long after 0.1 s at 0.5 m/s")
+-- h.parabola: exact on points of y = 3u^2 - 2u + 1; NaN with fewer than three points
+local pts = {}
+for k = -4, 5 do pts[#pts + 1] = { 0.01 * k, 3 * (0.01 * k) ^ 2 - 2 * 0.01 * k + 1 } end
+assert(math.abs(h.parabola(pts) - 3) < 1e-9, "parabola coefficient: " .. h.parabola(pts)) -- measured 3e-13 off
+local nan = h.parabola({ { 0, 1 }, { 1, 2 } })
+assert(nan ~= nan, "parabola through two points")
 print("helpers ok")

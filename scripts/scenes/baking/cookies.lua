@@ -96,21 +96,12 @@ for _, T in ipairs(ovens) do
         lo, hi = math.min(lo, px), math.max(hi, px)
       end
     end
-    local mid, half = (lo + hi) / 2, 0.3 * (hi - lo)
-    local m = { 0, 0, 0, 0, 0, 0, 0, 0 } -- sums of 1, u, u^2, u^3, u^4, y, yu, yu^2
+    local mid, half, pts = (lo + hi) / 2, 0.3 * (hi - lo), {}
     for b, y in pairs(top) do
       local u = xs[i] + b * dx - mid
-      if math.abs(u) <= half then
-        m[1], m[2], m[3], m[4], m[5] = m[1] + 1, m[2] + u, m[3] + u * u, m[4] + u ^ 3, m[5] + u ^ 4
-        m[6], m[7], m[8] = m[6] + y, m[7] + y * u, m[8] + y * u * u
-      end
+      if math.abs(u) <= half then pts[#pts + 1] = { u, y } end
     end
-    if m[1] < 3 then return 0 / 0 end
-    local function det(a, b, c) -- columns a, b, c of a 3x3 matrix
-      return a[1] * (b[2] * c[3] - b[3] * c[2]) - b[1] * (a[2] * c[3] - a[3] * c[2]) + c[1] * (a[2] * b[3] - a[3] * b[2])
-    end
-    local c1, c2, c3, r = { m[1], m[2], m[3] }, { m[2], m[3], m[4] }, { m[3], m[4], m[5] }, { m[6], m[7], m[8] }
-    return 2 * det(c1, c2, r) / det(c1, c2, c3) -- Cramer's rule for a
+    return 2 * h.parabola(pts)
   end
   s:run { until_t = P.until_t, every = P.until_t / P.frames,
     png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T) },

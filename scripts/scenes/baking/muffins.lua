@@ -64,26 +64,16 @@ end
 -- centre: mean top over |u| <= R/4; edge: over |u| >= 3R/4 (the batter at the
 -- walls); curvature: 2a of the least-squares y = a u^2 + b u + c over |u| <= 0.6 R
 local function measure(top)
-  local c, nc, e, ne = 0, 0, 0, 0
-  local m = { 0, 0, 0, 0, 0, 0, 0, 0 } -- sums of 1, u, u^2, u^3, u^4, y, yu, yu^2
+  local c, nc, e, ne, pts = 0, 0, 0, 0, {}
   for b, y in pairs(top) do
     local u = b * dx
     if math.abs(u) <= R / 4 then c, nc = c + y, nc + 1 end
     if math.abs(u) >= 3 * R / 4 then e, ne = e + y, ne + 1 end
-    if math.abs(u) <= 0.6 * R then
-      m[1], m[2], m[3], m[4], m[5] = m[1] + 1, m[2] + u, m[3] + u * u, m[4] + u ^ 3, m[5] + u ^ 4
-      m[6], m[7], m[8] = m[6] + y, m[7] + y * u, m[8] + y * u * u
-    end
+    if math.abs(u) <= 0.6 * R then pts[#pts + 1] = { u, y } end
   end
-  if nc == 0 or ne == 0 or m[1] < 3 then return 0 / 0, 0 / 0, 0 / 0 end
-  -- normal equations for (c0, b, a), solved by Cramer's rule
-  local A = { { m[1], m[2], m[3] }, { m[2], m[3], m[4] }, { m[3], m[4], m[5] } }
-  local function det(M)
-    return M[1][1] * (M[2][2] * M[3][3] - M[2][3] * M[3][2]) - M[1][2] * (M[2][1] * M[3][3] - M[2][3] * M[3][1]) +
-      M[1][3] * (M[2][1] * M[3][2] - M[2][2] * M[3][1])
-  end
-  local Aa = { { m[1], m[2], m[6] }, { m[2], m[3], m[7] }, { m[3], m[4], m[8] } }
-  return c / nc, c / nc - e / ne, 2 * det(Aa) / det(A)
+  local a = h.parabola(pts)
+  if nc == 0 or ne == 0 or a ~= a then return 0 / 0, 0 / 0, 0 / 0 end
+  return c / nc, c / nc - e / ne, 2 * a
 end
 
 local head = { "t" }
