@@ -54,4 +54,18 @@ static inline int fx_box(hearth_scene *s, int mat, const double c[3], const doub
     hearth_shape_free(b);
     return n;
 }
+/* A box collider of centre c and half sizes h in the given contact mode,
+ * moving at vx along x; returns its id (-1 with the message on stderr). */
+static inline int fx_box_collider(hearth_scene *s, const double c[3], const double h[3], hearth_contact mode, double vx) {
+    hearth_shape *b = hearth_shape_box(c, h);
+    hearth_collider_def cd = hearth_default_collider_def();
+    cd.shape = b;
+    cd.mode = mode;
+    cd.velocity[0] = vx;
+    hearth_error err;
+    const int id = hearth_scene_add_collider(s, &cd, &err);
+    if (id < 0) fprintf(stderr, "collider: %s\n", err.msg);
+    hearth_shape_free(b);
+    return id;
+}
 #endif

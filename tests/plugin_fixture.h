@@ -67,6 +67,12 @@ static inline int step_from_rest(const hearth_material *m, const double *p, cons
     return m->stress(&pt, tau);
 }
 
+/* Lame parameters mu and lambda from Young's modulus E and Poisson's ratio nu. */
+static inline void lame_from(double E, double nu, double *mu, double *lambda) {
+    *mu = E / (2 * (1 + nu));
+    *lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+}
+
 /* Frobenius norm of a 3x3 tensor. */
 static inline double norm9(const double *a) {
     double s = 0;

@@ -23,10 +23,7 @@ enum { NSTATE = 7 };
 
 static const hearth_material *dough(void) { return load_material("cam_clay_dough"); }
 
-static void lame(const double *p, double *mu, double *lambda) {
-    *mu = p[P_E] / (2 * (1 + p[P_NU]));
-    *lambda = p[P_E] * p[P_NU] / ((1 + p[P_NU]) * (1 - 2 * p[P_NU]));
-}
+static void lame(const double *p, double *mu, double *lambda) { lame_from(p[P_E], p[P_NU], mu, lambda); }
 
 /* tau = C eps and eps = C^-1 tau for the isotropic Hencky law. */
 static void c_apply(const double *p, const double eps[9], double tau[9]) {

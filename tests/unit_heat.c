@@ -394,13 +394,7 @@ static double sheared_layer_volume(double expansion, hearth_status *st) {
     hearth_shape_free(box);
     for (int k = 0; k < 2; k++) { /* the floor holds still, the lid slides at 0.2 m/s */
         const double pc[3] = {0.05, k ? 0.55 : -0.46, 0}, ph[3] = {1, 0.5, 0};
-        hearth_shape *p = hearth_shape_box(pc, ph);
-        hearth_collider_def cd = hearth_default_collider_def();
-        cd.shape = p;
-        cd.mode = HEARTH_STICKY;
-        cd.velocity[0] = k ? 0.2 : 0;
-        CHECK(hearth_scene_add_collider(s, &cd, &err) == k);
-        hearth_shape_free(p);
+        CHECK(fx_box_collider(s, pc, ph, HEARTH_STICKY, k ? 0.2 : 0) == k);
     }
     const double v0 = hearth_scene_volume(s);
     *st = hearth_scene_advance(s, 0.12, &err);

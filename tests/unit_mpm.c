@@ -742,14 +742,9 @@ TEST(guard_collider_drive) {
     const double c[3] = {0.5, 0.3, 0}, h[3] = {0.1, 0.05, 0};
     fx_box(s, m, c, h, 4, NULL);
     const double pc[3] = {0.5, 0.2, 0}, ph[3] = {0.3, 0.05, 0};
-    hearth_shape *plate = hearth_shape_box(pc, ph);
-    hearth_collider_def cd = hearth_default_collider_def();
-    cd.shape = plate;
-    cd.mode = HEARTH_STICKY;
-    hearth_error err;
-    const int id = hearth_scene_add_collider(s, &cd, &err);
+    const int id = fx_box_collider(s, pc, ph, HEARTH_STICKY, 0);
     CHECK(id == 0);
-    hearth_shape_free(plate);
+    hearth_error err;
     CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK); /* at rest but for one step of gravity */
     const double up[3] = {0, 0.5, 0}, no[3] = {0, 0, 0};
     CHECK(hearth_scene_collider_set_velocity(s, id, up, no, &err) == HEARTH_OK);
@@ -781,13 +776,7 @@ static double pulled_strip(hearth_contact mode, double *length) {
     hearth_error err;
     for (int side = -1; side <= 1; side += 2) { /* each grip covers 1 cm of the strip's end */
         const double gc[3] = {0.1 + side * 0.027, y0, 0}, gh[3] = {0.007, 0.01, 0};
-        hearth_shape *g = hearth_shape_box(gc, gh);
-        hearth_collider_def cd = hearth_default_collider_def();
-        cd.shape = g;
-        cd.mode = mode;
-        cd.velocity[0] = side * 0.02;
-        CHECK(hearth_scene_add_collider(s, &cd, &err) >= 0);
-        hearth_shape_free(g);
+        CHECK(fx_box_collider(s, gc, gh, mode, side * 0.02) >= 0);
     }
     CHECK(hearth_scene_advance(s, 0.16, &err) == HEARTH_OK);
     double sy = 0, lo = 1, hi = 0;

@@ -36,7 +36,8 @@ static void step_with(const double e[3], const double R1[9], const double R2[9],
 static void expected(const double *p, const double f[9], double tau[9], double *jp, double sc[3]) {
     double U[9], s[3], V[9];
     t3_svd(f, U, s, V);
-    const double mu = p[P_E] / (2 * (1 + p[P_NU])), la = p[P_E] * p[P_NU] / ((1 + p[P_NU]) * (1 - 2 * p[P_NU]));
+    double mu, la;
+    lame_from(p[P_E], p[P_NU], &mu, &la);
     for (int i = 0; i < 3; i++) sc[i] = fmin(fmax(s[i], 1 - p[P_THETA_C]), 1 + p[P_THETA_S]);
     const double JE = sc[0] * sc[1] * sc[2];
     *jp = t3_det(f) / JE;
@@ -120,7 +121,8 @@ TEST(snow_elastic_inside) {
         step_with(e, R1, R2, f);
         CHECK(step_from_rest(m, p, f, 1e-3, NAN, NAN, st, tau) == 0);
         t3_polar(f, R, S);
-        const double mu = p[P_E] / (2 * (1 + p[P_NU])), la = p[P_E] * p[P_NU] / ((1 + p[P_NU]) * (1 - 2 * p[P_NU]));
+        double mu, la;
+        lame_from(p[P_E], p[P_NU], &mu, &la);
         const double J = t3_det(f);
         for (int i = 0; i < 9; i++) FR[i] = f[i] - R[i];
         t3_mul_abt(FR, f, want);

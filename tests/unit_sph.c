@@ -387,30 +387,29 @@ static void tension_block(int elastic, double eps, double *dmin, double *dmax) {
     hearth_scene_destroy(s);
 }
 
+/* A block in tension (elastic: 1, fluid: 0) without and with artificial
+ * stress (epsilon 0.3, or SPH_AS_EPS): without, nearest neighbours pair up
+ * (below half a spacing); with, each stays within 10% of the spacing. */
+static void check_tension(int elastic) {
+    double lo0, hi0, lo1, hi1;
+    tension_block(elastic, 0.0, &lo0, &hi0);
+    tension_block(elastic, getenv("SPH_AS_EPS") ? atof(getenv("SPH_AS_EPS")) : 0.3, &lo1, &hi1);
+    CHECK(lo0 < 0.5);
+    CHECK(lo1 > 0.9 && hi1 < 1.1);
+}
+
 /* Artificial stress (Monaghan 2000, sph.c): without it the stretched fluid
  * (1 Pa s) pairs up (nearest neighbours at 0.45 spacings within 0.03 s,
  * measured); with epsilon = 0.3 every nearest neighbour stays within 10% of
  * the spacing (measured 0.97 to 1.03). Longer (SPH_AS_T=1): at epsilon 0.3
  * it creeps, 0.68 by 1 s; epsilon 0.5 stays within 0.94 to 1.07. */
-TEST(sph_artificial_stress_fluid) {
-    double lo0, hi0, lo1, hi1;
-    tension_block(0, 0.0, &lo0, &hi0);
-    tension_block(0, getenv("SPH_AS_EPS") ? atof(getenv("SPH_AS_EPS")) : 0.3, &lo1, &hi1);
-    CHECK(lo0 < 0.5);
-    CHECK(lo1 > 0.9 && hi1 < 1.1);
-}
+TEST(sph_artificial_stress_fluid) { check_tension(0); }
 
 /* The same for an elastic solid (0.1 Pa s) in deviatoric tension along a
  * tilted axis (Gray et al. 2001): without artificial stress nearest
  * neighbours come to 0.2 to 0.35 spacings (measured); with epsilon = 0.3
  * within 10% (measured 0.99 to 1.01; to 1 s, 0.90 to 1.03). */
-TEST(sph_artificial_stress_elastic) {
-    double lo0, hi0, lo1, hi1;
-    tension_block(1, 0.0, &lo0, &hi0);
-    tension_block(1, getenv("SPH_AS_EPS") ? atof(getenv("SPH_AS_EPS")) : 0.3, &lo1, &hi1);
-    CHECK(lo0 < 0.5);
-    CHECK(lo1 > 0.9 && hi1 < 1.1);
-}
+TEST(sph_artificial_stress_elastic) { check_tension(1); }
 
 /* The oven's Robin flux reaches SPH particles (sph.c): a 40 x 20 mm block
  * (1 mm particles, no gravity, no conduction, no eq. 3.42) at 26 degC in a
