@@ -399,11 +399,12 @@ static void init(const double *p, double *state) {
     state[S_JP] = 1;
 }
 
-/* The Kirchhoff stress tau = lambda ev I + 2 mu eps. */
-static void hencky_tau(const double *prm, double ev, const double eps_or_dev[9], double dev_scale, double tau[9]) {
+/* The Kirchhoff stress tau = lambda ev I + 2 mu eps of eps = ev/3 I + ratio e
+ * (e the trial deviator as a matrix, the return's scale ratio). */
+static void hencky_tau(const double *prm, double ev, const double e[9], double ratio, double tau[9]) {
     double mu, lambda;
     lame(prm, &mu, &lambda);
-    for (int i = 0; i < 9; i++) tau[i] = 2 * mu * dev_scale * eps_or_dev[i];
+    for (int i = 0; i < 9; i++) tau[i] = 2 * mu * ratio * e[i];
     const double iso = lambda * ev + 2 * mu * ev / 3;
     tau[0] += iso, tau[4] += iso, tau[8] += iso;
 }
