@@ -49,6 +49,29 @@ static int g_nloaded, g_caploaded;
 static char **g_added; /* folders from hearth_plugin_path_add, in call order */
 static int g_nadded, g_capadded;
 
+_Thread_local plugin_call plugin_current_call __attribute__((tls_model("initial-exec")));
+
+void hearth_plugin_call_enter(const hearth_material *m, const char *callback) { plugin_call_enter(m, callback); }
+void hearth_plugin_call_leave(void) { plugin_call_leave(); }
+
+/* Called from signal handlers: no locks, no allocation, only reads. The
+ * registry is written only while scenes are built (one thread), never while
+ * a callback runs. */
+int hearth_plugin_call_current(hearth_plugin_call_info *out) {
+    const plugin_call c = plugin_current_call;
+    if (!c.callback) return 0;
+    const char *file = c.file;
+    for (int i = 0; !file && c.m && i < g_nloaded; i++)
+        if (&g_loaded[i]->desc.mat == c.m) file = g_loaded[i]->path;
+    *out = (hearth_plugin_call_info){
+        .material = c.m && c.m->name ? c.m->name : "(unknown)",
+        .file = file ? file : "",
+        .callback = c.callback,
+        .context = c.context ? c.context : "",
+    };
+    return 1;
+}
+
 /* ---- growable arrays of pointers ------------------------------------ */
 
 /* arrp points to an array of pointers (char **, hearth_plugin **, ...). The
@@ -208,6 +231,11 @@ void plugin_desc_free(plugin_desc *d) {
 /* The bytes of a v1 descriptor up to and including describe_error: every
  * required field. plastic_J (appended later) is optional. */
 #define PLUGIN_V1_MIN_SIZE (offsetof(hearth_material, describe_error) + sizeof(((hearth_material *)0)->describe_error))
+/* Bounds a descriptor must respect before the loader allocates for it: the
+ * core's per-particle parameter buffer (scene.h SCENE_MAX_PARAMS) and a
+ * state far beyond any law's (cam_clay_dough keeps 7 doubles). */
+#define PLUGIN_MAX_PARAMS 256
+#define PLUGIN_MAX_STATE 4096
 #define PLUGIN_KNOWN_NEEDS                                                                         \
     (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_SATURATION |                  \
      HEARTH_NEEDS_THERMAL_EXPANSION)
@@ -259,6 +287,75 @@ static hearth_status plugin_check_params(const char *shown, const hearth_materia
                        "%s: parameter 'density' has min %g kg/m^3; it must be > 0 so every particle has mass",
                        shown, ps[d].min);
     return HEARTH_OK;
+}
+
+/* "E = 0.01 Pa, nu = 0 1, density = 1 kg/m^3" into buf (cut with "..." when long). */
+static void plugin_format_params(const hearth_material *c, const double *p, char *buf, size_t cap) {
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < c->nparams; i++) {
+        int k = snprintf(buf + used, cap - used, "%s%s = %g %s", i ? ", " : "", c->params[i].name, p[i],
+                         c->params[i].unit);
+        if (k < 0 || (size_t)k >= cap - used) {
+            if (cap > 4) memcpy(buf + cap - 4, "...", 4);
+            return;
+        }
+        used += (size_t)k;
+    }
+}
+
+/* The step size is cfl dx / (speed + wave speed): a wave speed that is NaN,
+ * infinite, zero or negative anywhere in the schema's range gives a step of
+ * 0 or NaN, or no CFL limit at all. Evaluate init and wave_speed at the
+ * defaults, at each parameter's min and max (the rest at defaults), and with
+ * every parameter at its min and at its max, before the plugin is trusted.
+ * The rest of the range is the run-time guard's (mpm.c P2G). */
+static hearth_status plugin_check_wave_corners(const char *shown, const hearth_material *raw, const hearth_material *c,
+                                               hearth_error *err) {
+    const int np = c->nparams, ns = c->state_size;
+    double *p = mem_alloc(sizeof(double) * (size_t)(np > 0 ? np : 1));
+    double *state = mem_alloc(sizeof(double) * (size_t)(ns > 0 ? ns : 1));
+    if (!p || !state) {
+        mem_free(p, sizeof(double) * (size_t)(np > 0 ? np : 1));
+        mem_free(state, sizeof(double) * (size_t)(ns > 0 ? ns : 1));
+        return err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory checking the wave speed", shown);
+    }
+    hearth_status st = HEARTH_OK;
+    plugin_call_set_context(shown, "the loader's wave-speed check at the schema's corners");
+    /* corner k: 0 defaults; 1..2np one parameter at min (odd) or max (even); then all-min, all-max */
+    for (int k = 0; k < 2 * np + 3 && st == HEARTH_OK; k++) {
+        const char *which = "at the defaults";
+        char label[160];
+        for (int i = 0; i < np; i++) p[i] = c->params[i].def;
+        if (k >= 1 && k <= 2 * np) {
+            const int i = (k - 1) / 2, hi = (k - 1) % 2;
+            p[i] = hi ? c->params[i].max : c->params[i].min;
+            snprintf(label, sizeof label, "with %s at its %s (the rest at defaults)", c->params[i].name, hi ? "max" : "min");
+            which = label;
+        } else if (k > 2 * np) {
+            const int hi = k == 2 * np + 2;
+            for (int i = 0; i < np; i++) p[i] = hi ? c->params[i].max : c->params[i].min;
+            which = hi ? "with every parameter at its max" : "with every parameter at its min";
+        }
+        for (int i = 0; i < ns; i++) state[i] = 0;
+        plugin_call_enter(raw, "init");
+        c->init(p, state); /* a buffer even when state_size is 0: the core never passes NULL to init */
+        plugin_call_enter(raw, "wave_speed");
+        const double w = c->wave_speed(p, ns > 0 ? state : NULL);
+        plugin_call_leave();
+        if (!(isfinite(w) && w > 0)) {
+            char vals[600];
+            plugin_format_params(c, p, vals, sizeof vals);
+            st = err_set(err, HEARTH_ERR_PLUGIN,
+                         "%s: material '%s': wave_speed is %g m/s %s (%s); it must be finite and > 0 over the "
+                         "whole parameter range, or no stable step exists (fix wave_speed or narrow the range)",
+                         shown, c->name, w, which, vals);
+        }
+    }
+    plugin_call_set_context(NULL, NULL);
+    mem_free(p, sizeof(double) * (size_t)(np > 0 ? np : 1));
+    mem_free(state, sizeof(double) * (size_t)(ns > 0 ? ns : 1));
+    return st;
 }
 
 hearth_status plugin_describe(const char *shown, const hearth_material *m, plugin_desc *out, hearth_error *err) {
@@ -324,8 +421,16 @@ hearth_status plugin_describe(const char *shown, const hearth_material *m, plugi
                        "%s: material '%s' has required callback '%s' set to NULL; every plugin must provide "
                        "init, stress, wave_speed and describe_error",
                        shown, c.name, missing);
+    if (c.state_size > PLUGIN_MAX_STATE)
+        return err_set(err, HEARTH_ERR_PLUGIN,
+                       "%s: material '%s' has state_size %d doubles per point; at most %d are allowed", shown,
+                       c.name, c.state_size, PLUGIN_MAX_STATE);
+    if (c.nparams > PLUGIN_MAX_PARAMS)
+        return err_set(err, HEARTH_ERR_PLUGIN, "%s: material '%s' has %d parameters; at most %d are allowed",
+                       shown, c.name, c.nparams, PLUGIN_MAX_PARAMS);
     hearth_status st = plugin_check_params(shown, &c, err);
     if (st != HEARTH_OK) return st;
+    if ((st = plugin_check_wave_corners(shown, m, &c, err)) != HEARTH_OK) return st;
 
     /* Own a copy of the schema so the core never meets a NULL help or summary. */
     if (c.nparams > 0) {
@@ -385,7 +490,13 @@ static const hearth_plugin *plugin_open(const char *shown, const char *real, hea
         err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory registering the plugin", shown);
         return NULL;
     }
-    if (plugin_describe(shown, entry(), &pl->desc, err) != HEARTH_OK) {
+    /* The entry function is plugin code too: a crash in it names the file. */
+    plugin_call_set_context(shown, "loading");
+    plugin_call_enter(NULL, HEARTH_MATERIAL_ENTRY_NAME);
+    const hearth_material *desc = entry();
+    plugin_call_leave();
+    plugin_call_set_context(NULL, NULL);
+    if (plugin_describe(shown, desc, &pl->desc, err) != HEARTH_OK) {
         mem_strfree(pl->path);
         mem_free(pl, sizeof *pl);
         dlclose(h);

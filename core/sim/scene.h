@@ -45,6 +45,7 @@ typedef enum fail_kind {
     FAIL_STRESS,       /* stress() returned NaN/inf */
     FAIL_F,            /* F non-finite or det F <= 0 */
     FAIL_X, FAIL_V, FAIL_C,
+    FAIL_WAVE,         /* wave_speed() returned NaN, inf or <= 0 */
 } fail_kind;
 
 typedef struct step_report {
@@ -53,6 +54,8 @@ typedef struct step_report {
     int code;          /* plugin code for FAIL_PLUGIN */
     double max_speed;  /* after the step */
     int fastest;
+    double max_move;   /* largest distance a particle was moved this step (m), before walls or colliders stopped it */
+    int mover;         /* that particle, or -1 */
     double kinetic;
     double c_max;      /* largest wave speed met (stateful plugins; stateless come from the slot) */
     double nu_max;     /* largest kinematic viscosity met (plugins with a viscosity callback) */
@@ -63,7 +66,8 @@ typedef struct step_report {
 
 /* Per particle-block partial results, reduced in block order. */
 typedef struct pb_partial {
-    int fail_i, fail_kind, fail_code, fastest;
+    int fail_i, fail_kind, fail_code, fastest, mover;
+    double move; /* largest displacement in the block this step (m) */
     double ke, mass, vmax, cmax, numax; /* numax: largest kinematic viscosity eta / rho (m^2/s) */
     long ood;
     double water_removed, water_dmax, water_emax; /* water.c */
