@@ -156,14 +156,16 @@ static void parent_line(check_parent *cp, char *line) {
     }
 }
 
-/* "in its stress callback during check 'frame_indifference'" or "outside any plugin callback ..." */
-static void where_text(const check_parent *cp, char *buf, size_t cap) {
-    if (cp->rec_kind && cp->rec[3][0])
-        snprintf(buf, cap, "plugin '%s' (%s), in its %s callback%s%s", cp->rec[1], cp->rec[2][0] ? cp->rec[2] : cp->shown,
-                 cp->rec[3], cp->rec[4][0] ? " during " : "", cp->rec[4]);
-    else
-        snprintf(buf, cap, "plugin %s, outside any plugin callback (while loading: dlopen, a constructor or the "
-                           "entry function)", cp->shown);
+/* who: "plugin 'x' (/p/hearth_x.so)"; where: "in its stress callback during check 'rest'"
+ * or "outside any plugin callback (...)" when no callback was in flight. */
+static void who_where(const check_parent *cp, char *who, size_t wcap, char *where, size_t cap) {
+    if (cp->rec_kind && cp->rec[3][0]) {
+        snprintf(who, wcap, "plugin '%s' (%s)", cp->rec[1], cp->rec[2][0] ? cp->rec[2] : cp->shown);
+        snprintf(where, cap, "in its %s callback%s%s", cp->rec[3], cp->rec[4][0] ? " during " : "", cp->rec[4]);
+    } else {
+        snprintf(who, wcap, "plugin %s", cp->shown);
+        snprintf(where, cap, "outside any plugin callback (while loading: dlopen, a constructor or the entry function)");
+    }
 }
 
 static double now_s(void) {
@@ -237,24 +239,24 @@ static int run_isolated(const char *path, const char *shown, double timeout) {
     int status = 0;
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
     if (cp.loaded_err) return 1;
-    char where[3072], msg[3800];
-    where_text(&cp, where, sizeof where);
+    char who[1200], where[1200], msg[3000];
+    who_where(&cp, who, sizeof who, where, sizeof where);
     const char *label = NULL;
     if (probed) {
         label = "timeout";
-        snprintf(msg, sizeof msg, "%s did not finish within %g s%s", where, timeout,
+        snprintf(msg, sizeof msg, "%s did not finish within %g s %s%s", who, timeout, where,
                  killed ? " (and did not answer; killed)" : "; stopped");
     } else if (cp.rec_kind == 'C' || (WIFSIGNALED(status) && !cp.done)) {
         label = "crash";
-        snprintf(msg, sizeof msg, "%s crashed with %s", where,
-                 cp.rec_kind == 'C' ? cp.rec[0] : crash_signal_name(WTERMSIG(status)));
+        snprintf(msg, sizeof msg, "%s crashed with %s %s", who,
+                 cp.rec_kind == 'C' ? cp.rec[0] : crash_signal_name(WTERMSIG(status)), where);
     } else if (cp.rec_kind == 'X') {
         label = "exit";
-        snprintf(msg, sizeof msg, "%s called exit() before the battery finished", where);
+        snprintf(msg, sizeof msg, "%s called exit() %s, before the battery finished", who, where);
     } else if (!cp.done) {
         label = "exit";
-        snprintf(msg, sizeof msg, "%s ended the check process (exit status %d) before the battery finished", where,
-                 WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+        snprintf(msg, sizeof msg, "%s ended the check process (exit status %d) %s, before the battery finished", who,
+                 WIFEXITED(status) ? WEXITSTATUS(status) : -1, where);
     }
     if (label) {
         printf("%-20s FAIL  %s\n", label, msg);

@@ -15,6 +15,7 @@
 
 #include <dirent.h>
 #include <dlfcn.h>
+#include <elf.h>
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -456,10 +457,71 @@ static hearth_plugin *plugin_cached(const char *real) {
     return NULL;
 }
 
+/* dlopen maps a file's segments as the headers describe them; a file cut
+ * short (an interrupted copy) then faults with SIGBUS when the loader touches
+ * a page past its end. Check that the headers and every loaded segment lie
+ * inside the file first, so a truncated plugin is a message, not a crash. */
+static hearth_status plugin_elf_check(const char *shown, const char *real, hearth_error *err) {
+    FILE *f = fopen(real, "rb");
+    if (!f) return err_set(err, HEARTH_ERR_PLUGIN, "%s: cannot open the plugin file (%s)", shown, strerror(errno));
+    Elf64_Ehdr eh;
+    struct stat st;
+    hearth_status rc = HEARTH_OK;
+    const char *why = NULL;
+    char detail[160] = "";
+    if (fstat(fileno(f), &st) != 0 || fread(&eh, sizeof eh, 1, f) != 1) {
+        why = "too short for an ELF header";
+    } else if (memcmp(eh.e_ident, ELFMAG, SELFMAG) != 0) {
+        why = "not an ELF file";
+    } else if (eh.e_ident[EI_CLASS] != ELFCLASS64 || sizeof(void *) != 8) {
+        why = "not a 64-bit ELF object (this hearth is 64-bit)";
+    } else if (eh.e_type != ET_DYN) {
+        why = "not a shared object (ELF type is not ET_DYN)";
+    } else if (eh.e_phentsize != sizeof(Elf64_Phdr) || eh.e_phnum == 0 || eh.e_phnum > 4096) {
+        why = "its program header table is malformed";
+    } else {
+        const unsigned long long size = (unsigned long long)st.st_size;
+        const unsigned long long ph_end = (unsigned long long)eh.e_phoff + (unsigned long long)eh.e_phnum * sizeof(Elf64_Phdr);
+        const unsigned long long sh_end = (unsigned long long)eh.e_shoff + (unsigned long long)eh.e_shnum * eh.e_shentsize;
+        if (ph_end > size || eh.e_phoff > size) {
+            why = "truncated";
+            snprintf(detail, sizeof detail, " (its program headers end at byte %llu, the file has %llu)", ph_end, size);
+        } else if (eh.e_shoff > 0 && (sh_end > size || eh.e_shoff > size)) {
+            why = "truncated";
+            snprintf(detail, sizeof detail, " (its section headers end at byte %llu, the file has %llu)", sh_end, size);
+        } else if (fseek(f, (long)eh.e_phoff, SEEK_SET) != 0) {
+            why = "unreadable";
+        } else {
+            for (int i = 0; i < eh.e_phnum && !why; i++) {
+                Elf64_Phdr ph;
+                if (fread(&ph, sizeof ph, 1, f) != 1) {
+                    why = "unreadable";
+                } else if (ph.p_type == PT_LOAD && (ph.p_offset > size || ph.p_filesz > size - ph.p_offset)) {
+                    why = "truncated";
+                    snprintf(detail, sizeof detail, " (segment %d needs bytes up to %llu, the file has %llu)", i,
+                             (unsigned long long)ph.p_offset + (unsigned long long)ph.p_filesz, size);
+                }
+            }
+        }
+    }
+    fclose(f);
+    if (why)
+        rc = err_set(err, HEARTH_ERR_PLUGIN,
+                     "%s: not loadable as a shared object: %s%s; rebuild or copy the plugin again (cc -shared -fPIC)",
+                     shown, why, detail);
+    return rc;
+}
+
 /* dlopen the file at real (shown in messages as `shown`), validate, cache. */
 static const hearth_plugin *plugin_open(const char *shown, const char *real, hearth_error *err) {
+    if (plugin_elf_check(shown, real, err) != HEARTH_OK) return NULL;
     dlerror(); /* clear a stale message so the one we report is ours */
+    /* dlopen runs the plugin's constructors: plugin code, so a crash names the file */
+    plugin_call_set_context(shown, "loading");
+    plugin_call_enter(NULL, "dlopen (the plugin's constructors)");
     void *h = dlopen(real, RTLD_NOW | RTLD_LOCAL);
+    plugin_call_leave();
+    plugin_call_set_context(NULL, NULL);
     if (!h) {
         const char *why = dlerror();
         err_set(err, HEARTH_ERR_PLUGIN,

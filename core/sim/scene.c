@@ -661,7 +661,9 @@ hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err) {
     err_clear(err);
     if (s->guard == HEARTH_GUARD_STOPPED) s->guard = HEARTH_GUARD_OK; /* the caller chose to go on */
     for (int k = 0; k < n; k++) {
-        hearth_status st = one_step(s, scene_stable_dt(s), err);
+        const double dt = scene_stable_dt(s);
+        if (!(dt > 0) || s->t + dt == s->t) return guard_no_step(s, dt, err);
+        hearth_status st = one_step(s, dt, err);
         if (st) return st;
     }
     return HEARTH_OK;
@@ -676,8 +678,12 @@ hearth_status hearth_scene_advance_steps(hearth_scene *s, double t_end, long max
     if (s->guard == HEARTH_GUARD_STOPPED) s->guard = HEARTH_GUARD_OK;
     for (long k = 0; s->t < t_end && (max_steps < 0 || k < max_steps); k++) {
         double dt = scene_stable_dt(s);
+        /* A stable step of 0 or NaN (an infinite or NaN wave speed, say) used
+         * to end this loop quietly, and s:run called it again forever. */
+        if (!(dt > 0) || s->t + dt == s->t) return guard_no_step(s, dt, err);
         if (s->t + dt >= t_end) dt = t_end - s->t;
         else if (s->t + 1.5 * dt > t_end) dt = 0.5 * (t_end - s->t); /* avoid a sliver of a last step */
+        if (s->t + dt == s->t) dt = t_end - s->t; /* half of the last ulp before t_end would not advance */
         if (!(dt > 0)) break;
         hearth_status st = one_step(s, dt, err);
         if (st) return st;

@@ -163,4 +163,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
 
 /* guard.c: returns 1 when the step must not stand; writes the diagnosis. */
 int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed_before);
+/* guard.c: dt is 0, NaN or does not advance the clock: stop with a diagnosis
+ * naming why (a plugin's wave speed, usually) instead of looping forever. */
+hearth_status guard_no_step(hearth_scene *s, double dt, hearth_error *err);
 #endif
