@@ -162,6 +162,9 @@ static void who_where(const check_parent *cp, char *who, size_t wcap, char *wher
     if (cp->rec_kind && cp->rec[3][0]) {
         snprintf(who, wcap, "plugin '%s' (%s)", cp->rec[1], cp->rec[2][0] ? cp->rec[2] : cp->shown);
         snprintf(where, cap, "in its %s callback%s%s", cp->rec[3], cp->rec[4][0] ? " during " : "", cp->rec[4]);
+    } else if (cp->rec_kind == 'H') { /* the child answered the timeout probe between callbacks */
+        snprintf(who, wcap, "plugin %s", cp->shown);
+        snprintf(where, cap, "while the battery ran between callbacks (no plugin code was running)");
     } else {
         snprintf(who, wcap, "plugin %s", cp->shown);
         snprintf(where, cap, "outside any plugin callback (while loading: dlopen, a constructor or the entry function)");
