@@ -180,6 +180,17 @@ EOF
     grep -q "thermal expansion blew the material apart: its pressure c lambda (J^E)^2 (T - T_ref) = [0-9.e+]* Pa outweighs the plugin's stress" "$tmp/err.txt" ||
         fail "message: $(cat "$tmp/err.txt")"
     ;;
+cli_scene_error_not_guard)
+    # error({}) in a scene is a scene error (exit 1), never "the stability guard stopped the run: (null)"
+    printf 'error({})\n' >"$tmp/s.lua"
+    (cd "$tmp" && "$hearth" run s.lua --quiet >out.txt 2>err.txt); rc=$?
+    [ $rc -eq 1 ] || fail "exit $rc, expected 1: $(cat "$tmp/err.txt")"
+    grep -q "stability guard" "$tmp/err.txt" && fail "reported as a guard stop: $(cat "$tmp/err.txt")"
+    grep -q "the scene raised an error that is a table, not a message" "$tmp/err.txt" || fail "message: $(cat "$tmp/err.txt")"
+    printf 'error({ guard = true, message = "looks like a guard stop" })\n' >"$tmp/s.lua"
+    (cd "$tmp" && "$hearth" run s.lua --quiet >out.txt 2>err.txt); rc=$?
+    [ $rc -eq 1 ] || fail "a look-alike table: exit $rc, expected 1: $(cat "$tmp/err.txt")"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"
