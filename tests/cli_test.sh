@@ -191,6 +191,15 @@ cli_scene_error_not_guard)
     (cd "$tmp" && "$hearth" run s.lua --quiet >out.txt 2>err.txt); rc=$?
     [ $rc -eq 1 ] || fail "a look-alike table: exit $rc, expected 1: $(cat "$tmp/err.txt")"
     ;;
+cli_run_wave_inf_sph)
+    # the same in an SPH scene: a guard stop naming the plugin, not a zero sound speed or a hang
+    export HEARTH_PLUGIN_PATH="$HEARTH_PLUGIN_PATH:$HEARTH_TEST_PLUGIN_DIR"
+    block_scene wave_inf_after | sed 's/box = { { 0, 0 }, { 1, 1 } } }/box = { { 0, 0 }, { 1, 1 } }, solver = "sph" }/' >"$tmp/s.lua"
+    grep -q 'solver = "sph"' "$tmp/s.lua" || fail "the scene is not SPH: $(cat "$tmp/s.lua")"
+    (cd "$tmp" && timeout 60 "$hearth" run s.lua --quiet >out.txt 2>err.txt); rc=$?
+    [ $rc -eq 3 ] || fail "exit $rc, expected 3 (124 is a hang): $(cat "$tmp/err.txt")"
+    grep -q "plugin 'wave_inf_after' (.*): wave_speed returned inf m/s" "$tmp/err.txt" || fail "message: $(cat "$tmp/err.txt")"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"

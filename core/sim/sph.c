@@ -773,6 +773,8 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         ke += 0.5 * m[i] * sp * sp;
         if (sp > vmax) vmax = sp, fastest = i;
         if (st->c0[i] > cmax) cmax = st->c0[i];
+        /* particle_constants keeps 0 for a wave speed that is NaN, inf or <= 0: the guard names the plugin */
+        if (!(st->c0[i] > 0) && rep->particle < 0) rep->kind = FAIL_WAVE, rep->particle = i;
     }
     /* browning (eq. 4.5 with G of eq. 4.6, T0 and Tf of the XSPH line) */
     if (T) {
