@@ -54,7 +54,11 @@ static int l_blend(lua_State *L) {
             for (int c = 0; c < k; c++) out[i] += alpha[c] * pk[c][i];
             out[i] = fmin(fmax(out[i], m->params[i].min), m->params[i].max); /* rounding only */
         }
-    else code = m->blend(k, alpha, pk, out);
+    else {
+        hearth_plugin_call_enter(m, "blend"); /* a crash in it names the plugin (core/app/crash.c) */
+        code = m->blend(k, alpha, pk, out);
+        hearth_plugin_call_leave();
+    }
     if (code) return luaL_error(L, "h.mix: plugin '%s' could not blend: %s", plugin, m->describe_error(code));
     lua_createtable(L, 0, np);
     for (int i = 0; i < np; i++) {

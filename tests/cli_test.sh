@@ -9,6 +9,16 @@ trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 png_ok() { python3 "$here/png_check.py" "$1" >/dev/null; } # see png_check.py
+# block_scene PLUGIN: a small 2D block of a (test) plugin's material, stepped 0.05 s
+block_scene() {
+    cat <<EOF
+local h = require "hearth"
+local s = h.scene { dim = 2, dx = 1 / 16, box = { { 0, 0 }, { 1, 1 } } }
+local m = h.material("$1", { E = 1e4, density = 1000 })
+s:add { shape = h.box({ 0.3, 0.3 }, { 0.6, 0.6 }), material = m, ppc = 4 }
+s:run { until_t = 0.05 }
+EOF
+}
 
 case "$case_name" in
 cli_help)
@@ -65,6 +75,130 @@ cli_bad_usage)
     "$hearth" frobnicate 2>/dev/null; [ $? -eq 2 ] || fail "unknown command should exit 2"
     "$hearth" bench --cells x 2>"$tmp/e"; [ $? -eq 2 ] || fail "bad number should exit 2"
     grep -q "\-\-cells needs a whole number" "$tmp/e" || fail "message: $(cat "$tmp/e")"
+    ;;
+cli_check_segv_stress)
+    # a plugin that segfaults in stress: the battery runs in a child, the parent names plugin and callback
+    out=$("$hearth" plugin check "$HEARTH_TEST_PLUGIN_DIR/hearth_segv_stress.so" 2>&1); rc=$?
+    [ $rc -ne 0 ] || fail "a crashing plugin passed: $out"
+    echo "$out" | grep -q "^crash .*FAIL  plugin 'segv_stress' (.*hearth_segv_stress.so) crashed with SIGSEGV" ||
+        fail "crash not named: $out"
+    echo "$out" | grep -q "in its stress callback during check 'rest'" || fail "callback not named: $out"
+    echo "$out" | grep -q "FAILED$" || fail "no FAILED verdict: $out"
+    ;;
+cli_check_abort_init)
+    # abort() in init happens in the loader's wave-speed corners, before the battery
+    out=$("$hearth" plugin check "$HEARTH_TEST_PLUGIN_DIR/hearth_abort_init.so" 2>&1) && fail "abort passed: $out"
+    echo "$out" | grep -q "plugin 'abort_init' .* crashed with SIGABRT (abort) in its init callback" ||
+        fail "abort not named: $out"
+    ;;
+cli_check_hang_stress)
+    # a plugin that never returns: --timeout stops it and the child says where it was stuck
+    start=$(date +%s)
+    out=$("$hearth" plugin check --timeout 1 "$HEARTH_TEST_PLUGIN_DIR/hearth_hang_stress.so" 2>&1) && fail "hang passed: $out"
+    took=$(( $(date +%s) - start ))
+    [ "$took" -le 6 ] || fail "a 1 s timeout took $took s"
+    echo "$out" | grep -q "^timeout .*plugin 'hang_stress' .* did not finish within 1 s in its stress callback" ||
+        fail "hang not named: $out"
+    "$hearth" plugin check --timeout 0 x.so 2>/dev/null; [ $? -eq 2 ] || fail "--timeout 0 should be a usage error"
+    ;;
+cli_check_exit_stress)
+    # exit(0) inside a callback is a failure, not success
+    out=$("$hearth" plugin check "$HEARTH_TEST_PLUGIN_DIR/hearth_exit_stress.so" 2>&1) && fail "exit(0) passed: $out"
+    echo "$out" | grep -q "^exit .*plugin 'exit_stress' .* called exit() in its stress callback" ||
+        fail "exit not named: $out"
+    ;;
+cli_check_truncated)
+    # a .so cut short is a load failure with a reason, not a SIGBUS
+    out=$("$hearth" plugin check "$HEARTH_TEST_PLUGIN_DIR/hearth_truncated.so" 2>&1); rc=$?
+    [ $rc -eq 1 ] || fail "truncated plugin: exit $rc: $out"
+    echo "$out" | grep -q "hearth_truncated.so: not loadable as a shared object: truncated" || fail "message: $out"
+    echo "$out" | grep -q "SIG" && fail "a signal was involved: $out"
+    ;;
+cli_check_wave_corners)
+    # wave speed NaN, inf, 0 or negative with E at its max: refused naming the values
+    for mode in nan inf zero neg; do
+        case $mode in nan) v=nan ;; inf) v=inf ;; zero) v=0 ;; neg) v=-1160.24 ;; esac
+        out=$("$hearth" plugin check "$HEARTH_TEST_PLUGIN_DIR/hearth_wave_$mode.so" 2>&1) && fail "wave_$mode passed: $out"
+        echo "$out" | grep -qF "material 'wave_$mode': wave_speed is $v m/s with E at its max (the rest at defaults) (E = 1e+09 Pa, nu = 0.3 1" ||
+            fail "wave_$mode message: $out"
+    done
+    ;;
+cli_run_plugin_segv)
+    # hearth run: a segfault inside stress names plugin and callback and exits 4
+    export HEARTH_PLUGIN_PATH="$HEARTH_PLUGIN_PATH:$HEARTH_TEST_PLUGIN_DIR"
+    block_scene segv_stress >"$tmp/s.lua"
+    (cd "$tmp" && "$hearth" run s.lua --quiet >out.txt 2>err.txt); rc=$?
+    [ $rc -eq 4 ] || fail "exit $rc, expected 4: $(cat "$tmp/err.txt")"
+    grep -q "plugin 'segv_stress' (.*hearth_segv_stress.so) crashed with SIGSEGV (segmentation fault) in its stress callback" "$tmp/err.txt" ||
+        fail "message: $(cat "$tmp/err.txt")"
+    ;;
+cli_run_plugin_exit)
+    export HEARTH_PLUGIN_PATH="$HEARTH_PLUGIN_PATH:$HEARTH_TEST_PLUGIN_DIR"
+    block_scene exit_stress >"$tmp/s.lua"
+    (cd "$tmp" && "$hearth" run s.lua --quiet >out.txt 2>err.txt); rc=$?
+    [ $rc -eq 4 ] || fail "exit $rc, expected 4: $(cat "$tmp/err.txt")"
+    grep -q "plugin 'exit_stress' .* called exit() in its stress callback" "$tmp/err.txt" || fail "message: $(cat "$tmp/err.txt")"
+    ;;
+cli_run_wave_inf)
+    # a wave speed that turns inf at run time: a guard stop naming the plugin, not dt = 0 forever
+    export HEARTH_PLUGIN_PATH="$HEARTH_PLUGIN_PATH:$HEARTH_TEST_PLUGIN_DIR"
+    block_scene wave_inf_after >"$tmp/s.lua"
+    (cd "$tmp" && timeout 60 "$hearth" run s.lua --quiet >out.txt 2>err.txt); rc=$?
+    [ $rc -eq 3 ] || fail "exit $rc, expected 3 (124 is a hang): $(cat "$tmp/err.txt")"
+    grep -q "material 'wave_inf_after' (#0): plugin 'wave_inf_after' (.*): wave_speed returned inf m/s" "$tmp/err.txt" ||
+        fail "message: $(cat "$tmp/err.txt")"
+    ;;
+cli_guard_soft_block_jump)
+    # E = 0.01 Pa (in range) with dt_max 0.5 s: gravity moves the block 12 cells in one step onto a floor that
+    # zeroes its speed; the guard must judge the motion, not the end speed
+    cat >"$tmp/s.lua" <<'EOF'
+local h = require "hearth"
+local s = h.scene { dim = 2, dx = 0.2, box = { { 0, 0 }, { 4, 4 } }, dt_max = 0.5 }
+local m = h.material("elastic", { E = 0.01, nu = 0.3, density = 1000 })
+s:add { shape = h.box({ 1.6, 1.0 }, { 2.4, 1.6 }), material = m, ppc = 4 }
+s:collider { shape = h.plane({ 0, 0.6 }, { 0, 1 }), mode = "separate", friction = 0.3 }
+s:run { until_t = 0.5 }
+EOF
+    (cd "$tmp" && "$hearth" run s.lua --quiet >out.txt 2>err.txt); rc=$?
+    [ $rc -eq 3 ] || fail "exit $rc, expected a guard stop (3): $(cat "$tmp/err.txt")"
+    grep -q "step 1, t = 0.5 s: CFL violated: a particle moved 1[0-9].[0-9]* cells in one step of dt = 0.5 s" "$tmp/err.txt" ||
+        fail "message: $(cat "$tmp/err.txt")"
+    grep -q "a wall or collider stopped it" "$tmp/err.txt" || fail "message: $(cat "$tmp/err.txt")"
+    ;;
+cli_guard_expansion_named)
+    # a block heated to 400 degC with expansion 10 Pa/K bursts: the guard names thermal expansion
+    cat >"$tmp/s.lua" <<'EOF'
+local h = require "hearth"
+local s = h.scene { dim = 2, dx = 1 / 32, box = { { 0, 0 }, { 1, 1 } } }
+local m = h.material("elastic", { expansion = 10 })
+s:add { shape = h.box({ 0.4, 0.15 }, { 0.6, 0.35 }), material = m, ppc = 4, temperature = 400 }
+s:collider { shape = h.plane({ 0, 0.1 }, { 0, 1 }), mode = "separate", friction = 0.3 }
+s:run { until_t = 0.5 }
+EOF
+    (cd "$tmp" && "$hearth" run s.lua --quiet >out.txt 2>err.txt); rc=$?
+    [ $rc -eq 3 ] || fail "exit $rc, expected a guard stop (3): $(cat "$tmp/err.txt")"
+    grep -q "thermal expansion blew the material apart: its pressure c lambda (J^E)^2 (T - T_ref) = [0-9.e+]* Pa outweighs the plugin's stress" "$tmp/err.txt" ||
+        fail "message: $(cat "$tmp/err.txt")"
+    ;;
+cli_scene_error_not_guard)
+    # error({}) in a scene is a scene error (exit 1), never "the stability guard stopped the run: (null)"
+    printf 'error({})\n' >"$tmp/s.lua"
+    (cd "$tmp" && "$hearth" run s.lua --quiet >out.txt 2>err.txt); rc=$?
+    [ $rc -eq 1 ] || fail "exit $rc, expected 1: $(cat "$tmp/err.txt")"
+    grep -q "stability guard" "$tmp/err.txt" && fail "reported as a guard stop: $(cat "$tmp/err.txt")"
+    grep -q "the scene raised an error that is a table, not a message" "$tmp/err.txt" || fail "message: $(cat "$tmp/err.txt")"
+    printf 'error({ guard = true, message = "looks like a guard stop" })\n' >"$tmp/s.lua"
+    (cd "$tmp" && "$hearth" run s.lua --quiet >out.txt 2>err.txt); rc=$?
+    [ $rc -eq 1 ] || fail "a look-alike table: exit $rc, expected 1: $(cat "$tmp/err.txt")"
+    ;;
+cli_run_wave_inf_sph)
+    # the same in an SPH scene: a guard stop naming the plugin, not a zero sound speed or a hang
+    export HEARTH_PLUGIN_PATH="$HEARTH_PLUGIN_PATH:$HEARTH_TEST_PLUGIN_DIR"
+    block_scene wave_inf_after | sed 's/box = { { 0, 0 }, { 1, 1 } } }/box = { { 0, 0 }, { 1, 1 } }, solver = "sph" }/' >"$tmp/s.lua"
+    grep -q 'solver = "sph"' "$tmp/s.lua" || fail "the scene is not SPH: $(cat "$tmp/s.lua")"
+    (cd "$tmp" && timeout 60 "$hearth" run s.lua --quiet >out.txt 2>err.txt); rc=$?
+    [ $rc -eq 3 ] || fail "exit $rc, expected 3 (124 is a hang): $(cat "$tmp/err.txt")"
+    grep -q "plugin 'wave_inf_after' (.*): wave_speed returned inf m/s" "$tmp/err.txt" || fail "message: $(cat "$tmp/err.txt")"
     ;;
 *) fail "unknown case $case_name" ;;
 esac

@@ -7,6 +7,7 @@
 #ifndef _XOPEN_SOURCE
 #define _XOPEN_SOURCE 700 /* mkdtemp */
 #endif
+#include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -329,7 +330,52 @@ TEST(plugin_descriptor_rules) {
     m = good(), g_params[0].min = 0, refused(&m, "must be > 0");
 }
 
+/* ---- wave speeds at the schema's corners, and the call record ------------ */
+
+static int g_wave_mode; /* 0 fine, 1 NaN at E's min, 2 0 with all at min, 3 inf with all at max, 4 negative at defaults */
+static int g_seen_calls;
+static hearth_plugin_call_info g_seen;
+
+static double d_wave_corner(const double *p, const double *s) {
+    (void)s;
+    if (hearth_plugin_call_current(&g_seen)) g_seen_calls++;
+    const int e_min = p[1] == 1, rho_min = p[0] == 1, e_max = p[1] == 1e6, rho_max = p[0] == 1e4;
+    if (g_wave_mode == 1 && e_min) return NAN;
+    if (g_wave_mode == 2 && e_min && rho_min) return 0;
+    if (g_wave_mode == 3 && e_max && rho_max) return INFINITY;
+    if (g_wave_mode == 4) return -1;
+    return 1;
+}
+
+TEST(plugin_wave_corners) {
+    hearth_material m = good();
+    m.wave_speed = d_wave_corner;
+    hearth_error err = {0};
+    plugin_desc d;
+    g_wave_mode = 0, g_seen_calls = 0;
+    CHECK(plugin_describe("x.so", &m, &d, &err) == HEARTH_OK);
+    plugin_desc_free(&d);
+    CHECK(g_seen_calls == 2 * 2 + 3); /* defaults, each of 2 parameters at min and max, all-min, all-max */
+    /* the record said which plugin, callback and what the core was doing, and is clear again */
+    CHECK_STR_CONTAINS(g_seen.material, "good");
+    CHECK_STR_CONTAINS(g_seen.callback, "wave_speed");
+    CHECK_STR_CONTAINS(g_seen.file, "x.so");
+    CHECK_STR_CONTAINS(g_seen.context, "wave-speed check at the schema's corners");
+    hearth_plugin_call_info now;
+    CHECK(hearth_plugin_call_current(&now) == 0);
+    g_wave_mode = 1, refused(&m, "material 'good': wave_speed is nan m/s with E at its min (the rest at defaults) "
+                                 "(density = 1000 kg/m^3, E = 1 Pa)");
+    g_wave_mode = 2, refused(&m, "wave_speed is 0 m/s with every parameter at its min (density = 1 kg/m^3, E = 1 Pa)");
+    g_wave_mode = 3, refused(&m, "wave_speed is inf m/s with every parameter at its max (density = 10000 kg/m^3, E = 1e+06 Pa)");
+    g_wave_mode = 4, refused(&m, "wave_speed is -1 m/s at the defaults");
+    CHECK(hearth_plugin_call_current(&now) == 0); /* cleared on the refusal path too */
+    g_wave_mode = 0;
+    /* bounds checked before anything is allocated for the descriptor */
+    m = good(), m.state_size = 1 << 20, refused(&m, "state_size 1048576 doubles per point; at most 4096");
+    m = good(), m.nparams = 100000, refused(&m, "has 100000 parameters; at most 256");
+}
+
 TEST_MAIN(T(plugin_missing_file), T(plugin_not_shared_object), T(plugin_no_entry), T(plugin_wrong_abi),
           T(plugin_null_callback), T(plugin_bad_default), T(plugin_load_cached), T(plugin_check_builtin),
           T(plugin_check_catches_asym), T(plugin_check_reports_codes), T(plugin_load_nomem),
-          T(plugin_descriptor_rules))
+          T(plugin_descriptor_rules), T(plugin_wave_corners))

@@ -404,7 +404,9 @@ int cmd_rheometer(int argc, char **argv) {
             int w = snprintf(label + used, sizeof label - used, "%s%s:%g", k ? " + " : "mix ", s->name, items[k].w);
             if (w > 0 && used + (size_t)w < sizeof label) used += (size_t)w;
         }
+        hearth_plugin_call_enter(m, "blend");
         int bc = m->blend(nmix, alpha, pk, p);
+        hearth_plugin_call_leave();
         if (bc) {
             const char *t = m->describe_error ? m->describe_error(bc) : NULL;
             fprintf(stderr, "hearth rheometer: --mix: the blend returned code %d (%s)\n", bc, t ? t : "no description");

@@ -133,13 +133,25 @@ static void on_progress(void *ud, double t, double t_end, long steps, int final)
 
 /* Report a failed protected call; returns the exit status (3 for a guard stop). */
 static int report(lua_State *L, const char *cmd) {
-    if (lua_istable(L, -1)) {
-        lua_getfield(L, -1, "message");
-        fprintf(stderr, "hearth %s: the stability guard stopped the run:\n  %s\n", cmd, lua_tostring(L, -1));
+    /* Only the core's guard error (hl_raise: a table with the hearth.guard_error
+     * metatable and a message) is a guard stop; a scene's own error({}),
+     * error(nil) or a look-alike table is a scene error. */
+    if (lua_istable(L, -1) && lua_getmetatable(L, -1)) {
+        luaL_getmetatable(L, "hearth.guard_error");
+        const int guard_mt = lua_rawequal(L, -1, -2);
         lua_pop(L, 2);
-        return 3;
+        lua_getfield(L, -1, "message");
+        if (guard_mt && lua_type(L, -1) == LUA_TSTRING) {
+            fprintf(stderr, "hearth %s: the stability guard stopped the run:\n  %s\n", cmd, lua_tostring(L, -1));
+            lua_pop(L, 2);
+            return 3;
+        }
+        lua_pop(L, 1);
     }
-    fprintf(stderr, "hearth %s: %s\n", cmd, lua_tostring(L, -1));
+    const char *msg = lua_type(L, -1) == LUA_TSTRING || lua_type(L, -1) == LUA_TNUMBER ? lua_tostring(L, -1) : NULL;
+    if (msg) fprintf(stderr, "hearth %s: %s\n", cmd, msg);
+    else fprintf(stderr, "hearth %s: the scene raised an error that is a %s, not a message (error(\"text\") gives one)\n", cmd,
+                 luaL_typename(L, -1));
     lua_pop(L, 1);
     return 1;
 }

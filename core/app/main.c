@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "commands.h"
+#include "crash.h"
 #include "hearth/hearth.h"
 
 static void usage(FILE *f) {
@@ -22,7 +23,8 @@ static void usage(FILE *f) {
             "                                run a Lua scene headless (progress bar, PNG/VTU/CSV outputs)\n"
             "  hearth repl [SCENE.lua]       a plain Lua prompt with the scene loaded (reads pipes too)\n"
             "  hearth plugins                list material plugins and their parameters\n"
-            "  hearth plugin check FILE.so   run the conformance battery on one plugin\n"
+            "  hearth plugin check [--timeout S] FILE.so\n"
+            "                                run the conformance battery on one plugin, isolated in a child process\n"
             "  hearth rheometer MATERIAL [--mix sauce.a:0.5,sauce.b:0.5] [--rates MIN:MAX:COUNT] [--out DIR] [--json]\n"
             "                                flow curve of a material or library sauce in a virtual rheometer\n"
             "  hearth fit FLOWCURVE.csv [--json] [--out DIR]\n"
@@ -58,6 +60,9 @@ int main(int argc, char **argv) {
         setenv("OMP_WAIT_POLICY", "passive", 1);
         execv("/proc/self/exe", argv); /* returns only on failure: then carry on as we are */
     }
+    /* A plugin that crashes or calls exit() inside a callback is named, and the
+     * process ends with status 4 (crash.c); other crashes keep their default. */
+    crash_install(-1);
     if (argc < 2) return cmd_dashboard(argc, argv);
     const char *c = argv[1];
     if (!strcmp(c, "--help") || !strcmp(c, "-h") || !strcmp(c, "help")) {

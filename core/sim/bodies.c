@@ -3,6 +3,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "plugins.h"
 #include "alloc.h"
 #include "error.h"
 #include "params.h"
@@ -115,7 +116,9 @@ hearth_status hearth_scene_body_labels(hearth_scene *s, int body, int k, const i
             if (ps->state_stride) {
                 double *st = pcold(ps, PC_STATE) + (size_t)i * ps->state_stride;
                 memset(st, 0, sizeof(double) * (size_t)ps->state_stride);
+                plugin_call_enter(ms->m, "init");
                 ms->m->init(ms->params, st);
+                plugin_call_leave();
             }
             if (counts) counts[c]++;
         }

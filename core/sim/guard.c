@@ -1,10 +1,18 @@
 /* guard.c: the stability guard. After every step it decides whether the step
  * may stand, and if not, writes a diagnosis a user can act on: step, time,
- * particle, position, material and the quantity that went bad. */
+ * particle, position, material, the quantity that went bad and, for a blow-up,
+ * which stress drove it (the plugin's, thermal expansion or gas pressure). */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
+#include "alloc.h"
+#include "error.h"
+#include "gas.h"
+#include "plugins.h"
 #include "scene.h"
+#include "tensor.h"
 
 static void describe_particle(const hearth_scene *s, int i, char *buf, size_t n) {
     const particles *ps = &s->ps;
@@ -14,21 +22,124 @@ static void describe_particle(const hearth_scene *s, int i, char *buf, size_t n)
              x[1], x[2], s->mats[m].m->name, m);
 }
 
+/* The pressure scale of each stress term at particle i after the step (Pa),
+ * measured as mpm.c P2G adds them: the plugin's Kirchhoff stress (evaluated
+ * with dt = 0 on a copy of the state, so the scene does not change), thermal
+ * expansion (Ding et al. eq. 10) and gas pressure (eq. 13). |tau|_F / sqrt(3)
+ * is |p| for a pure pressure p I, so the three compare directly. */
+typedef struct guard_terms {
+    double plugin, expansion, gas;
+} guard_terms;
+
+static void guard_measure(const hearth_scene *s, int i, guard_terms *t) {
+    *t = (guard_terms){0};
+    const particles *ps = &s->ps;
+    const int mat = pcoli(ps, PC_MAT)[i];
+    const material_slot *ms = &s->mats[mat];
+    const double *F = pcold(ps, PC_F) + 9 * i;
+    const double J = t3_det(F);
+    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    const double *G = ps->enabled & (1u << PC_GAS) ? pcold(ps, PC_GAS) : NULL;
+    double pscratch[SCENE_MAX_PARAMS];
+    const double *p = scene_params_for(s, mat, i, pscratch);
+    const size_t sbytes = sizeof(double) * (size_t)ps->state_stride;
+    double *state = sbytes ? mem_alloc(sbytes) : NULL;
+    if (sbytes && !state) return; /* out of memory: no attribution, the diagnosis still stands */
+    if (state) memcpy(state, pcold(ps, PC_STATE) + (size_t)i * ps->state_stride, sbytes);
+    double JP = 1.0;
+    if (ms->m->plastic_J) {
+        plugin_call_enter(ms->m, "plastic_J");
+        JP = ms->m->plastic_J(p, state);
+    }
+    hearth_point pt;
+    memcpy(pt.grad_v, pcold(ps, PC_C) + 9 * i, sizeof pt.grad_v);
+    memcpy(pt.F, F, sizeof pt.F);
+    pt.dt = 0;
+    pt.temperature = T ? T[i] : NAN;
+    pt.porosity = gas_porosity(JP, ms->core[CP_POROSITY0]);
+    pt.saturation = NAN;
+    pt.p = p;
+    pt.state = state;
+    double tau[9];
+    plugin_call_enter(ms->m, "stress");
+    const int rc = ms->m->stress(&pt, tau);
+    plugin_call_leave();
+    if (!rc) {
+        double n2 = 0;
+        for (int k = 0; k < 9; k++) n2 += tau[k] * tau[k];
+        t->plugin = sqrt(n2 / 3.0);
+    }
+    if (ms->core[CP_EXPANSION] > 0 && T && J > 0) {
+        const double JE = J / JP;
+        t->expansion = fabs(ms->core[CP_EXPANSION] * JE * JE * (T[i] - ms->core[CP_REFERENCE_T]));
+    }
+    if (G && T) t->gas = fabs(gas_tau(G[i], T[i], gas_porosity(JP, ms->core[CP_POROSITY0])));
+    mem_free(state, sbytes);
+}
+
+/* "thermal expansion (...)" or "gas pressure (...)" when that term outweighs
+ * the plugin's stress at particle i; "" when the plugin's stress (or plain
+ * motion) is the larger, so the caller keeps its own wording. */
+static void guard_cause(const hearth_scene *s, int i, char *buf, size_t n) {
+    buf[0] = '\0';
+    if (i < 0) return;
+    guard_terms t;
+    guard_measure(s, i, &t);
+    if (t.expansion > t.plugin && t.expansion >= t.gas)
+        snprintf(buf, n,
+                 "thermal expansion blew the material apart: its pressure c lambda (J^E)^2 (T - T_ref) = %.4g Pa "
+                 "outweighs the plugin's stress (%.4g Pa) and gas pressure (%.4g Pa) at the particle; lower the "
+                 "material's `expansion` or heat it more slowly. ",
+                 t.expansion, t.plugin, t.gas);
+    else if (t.gas > t.plugin)
+        snprintf(buf, n,
+                 "gas pressure blew the material apart: the CO2 pressure n^g R T / n^p = %.4g Pa outweighs the "
+                 "plugin's stress (%.4g Pa) and thermal expansion (%.4g Pa) at the particle (the step is chosen "
+                 "from the plugin's wave speed, which does not include it); lower gas_rate, raise porosity or "
+                 "lower cfl. ",
+                 t.gas, t.plugin, t.expansion);
+}
+
+/* The wave speed of particle i's material in its current state. */
+static double guard_wave_speed(const hearth_scene *s, int i) {
+    const particles *ps = &s->ps;
+    const int mat = pcoli(ps, PC_MAT)[i];
+    const material_slot *ms = &s->mats[mat];
+    if (ms->m->state_size == 0) return ms->wave_speed;
+    double pscratch[SCENE_MAX_PARAMS];
+    plugin_call_enter(ms->m, "wave_speed");
+    const double c = ms->m->wave_speed(scene_params_for(s, mat, i, pscratch), pcold(ps, PC_STATE) + (size_t)i * ps->state_stride);
+    plugin_call_leave();
+    return c;
+}
+
+static void guard_wave_text(const hearth_scene *s, int i, char *what, size_t n) {
+    const material_slot *ms = &s->mats[pcoli(&s->ps, PC_MAT)[i]];
+    snprintf(what, n,
+             "plugin '%s' (%s): wave_speed returned %g m/s; it must be finite and > 0, since the step size is "
+             "chosen from it (run hearth plugin check on it)",
+             ms->m->name, hearth_plugin_file(ms->plugin) ? hearth_plugin_file(ms->plugin) : "built in",
+             guard_wave_speed(s, i));
+}
+
 int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed_before) {
     const double dx = s->def.dx;
     s->cfl_last = (fmax(speed_before, rep->max_speed) + s->c_max) * dt / dx;
-    char who[200], what[320];
+    char who[200], what[400], cause[400];
     if (rep->particle >= 0) {
         const int i = rep->particle;
         describe_particle(s, i, who, sizeof who);
         const material_slot *ms = &s->mats[pcoli(&s->ps, PC_MAT)[i]];
         switch (rep->kind) {
         case FAIL_PLUGIN: {
+            plugin_call_enter(ms->m, "describe_error");
             const char *txt = ms->m->describe_error(rep->code);
+            plugin_call_leave();
             snprintf(what, sizeof what, "stress: plugin '%s' returned code %d: %s", ms->m->name, rep->code, txt ? txt : "(no text)");
             break;
         }
         case FAIL_STRESS: snprintf(what, sizeof what, "stress is NaN or inf (returned by plugin '%s')", ms->m->name); break;
+        case FAIL_WAVE: guard_wave_text(s, i, what, sizeof what); break;
         case FAIL_F: snprintf(what, sizeof what, "deformation gradient F is not finite or inverted (det F <= 0)"); break;
         case FAIL_X: snprintf(what, sizeof what, "position is NaN or inf"); break;
         case FAIL_V: snprintf(what, sizeof what, "velocity is NaN or inf"); break;
@@ -38,16 +149,29 @@ int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed
         return 1;
     }
     /* Two CFL conditions: no particle may cross more than a cell, and elastic
-     * waves may not cross more than a cell (the latter is what cfl > 1 breaks). */
-    const double move = rep->max_speed * dt / dx, wave = s->c_max * dt / dx;
+     * waves may not cross more than a cell (the latter is what cfl > 1 breaks).
+     * Motion is judged by how far a particle was moved (G2P), not only by its
+     * speed at the end of the step: a floor or collider may have zeroed the
+     * speed of a particle that jumped many cells onto it. */
+    const double speed_move = rep->max_speed * dt / dx, jump = rep->max_move / dx;
+    const double move = fmax(speed_move, jump), wave = s->c_max * dt / dx;
     if (move > 1.0 + 1e-9 || wave > 1.0 + 1e-9) {
-        if (rep->fastest >= 0) describe_particle(s, rep->fastest, who, sizeof who);
+        const int culprit = jump > speed_move && rep->mover >= 0 ? rep->mover : rep->fastest;
+        if (culprit >= 0) describe_particle(s, culprit, who, sizeof who);
         else snprintf(who, sizeof who, "no particle");
-        snprintf(s->diagnosis, sizeof s->diagnosis,
-                 "guard: step %ld, t = %.6g s: CFL violated: %s moved %.3g cells and waves (%.4g m/s) crossed %.3g cells in dt = %.4g s; "
-                 "the limit is 1 (fastest: %s, speed %.4g m/s); lower cfl or dt_max",
-                 s->step + 1, s->t + dt, move > 1.0 + 1e-9 ? "a particle" : "no particle", move, s->c_max, wave, dt, who,
-                 rep->max_speed);
+        guard_cause(s, culprit, cause, sizeof cause);
+        if (jump > speed_move && jump > 1.0 + 1e-9)
+            snprintf(s->diagnosis, sizeof s->diagnosis,
+                     "guard: step %ld, t = %.6g s: %sCFL violated: a particle moved %.3g cells in one step of dt = "
+                     "%.4g s (its speed at the end, %.4g m/s, is lower: a wall or collider stopped it), and waves "
+                     "(%.4g m/s) crossed %.3g cells; the limit is 1 (%s); lower cfl or dt_max",
+                     s->step + 1, s->t + dt, cause, jump, dt, rep->max_speed, s->c_max, wave, who);
+        else
+            snprintf(s->diagnosis, sizeof s->diagnosis,
+                     "guard: step %ld, t = %.6g s: %sCFL violated: %s moved %.3g cells and waves (%.4g m/s) crossed "
+                     "%.3g cells in dt = %.4g s; the limit is 1 (fastest: %s, speed %.4g m/s); lower cfl or dt_max",
+                     s->step + 1, s->t + dt, cause, move > 1.0 + 1e-9 ? "a particle" : "no particle", move, s->c_max,
+                     wave, dt, who, rep->max_speed);
         return 1;
     }
     /* Runaway: growth by energy_growth in one step beyond anything seen so far.
@@ -65,11 +189,39 @@ int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed
     if (ref > 1e-300 && rep->kinetic > s->def.energy_growth * ref && move > 1e-3) {
         if (rep->fastest >= 0) describe_particle(s, rep->fastest, who, sizeof who);
         else snprintf(who, sizeof who, "no particle");
+        guard_cause(s, rep->fastest, cause, sizeof cause);
         snprintf(s->diagnosis, sizeof s->diagnosis,
-                 "guard: step %ld, t = %.6g s: kinetic energy ran away: it reached %.4g J, x%.3g the largest so far (%.4g J; limit x%g); "
+                 "guard: step %ld, t = %.6g s: %skinetic energy ran away: it reached %.4g J, x%.3g the largest so far (%.4g J; limit x%g); "
                  "fastest: %s",
-                 s->step + 1, s->t + dt, rep->kinetic, rep->kinetic / ref, ref, s->def.energy_growth, who);
+                 s->step + 1, s->t + dt, cause, rep->kinetic, rep->kinetic / ref, ref, s->def.energy_growth, who);
         return 1;
     }
     return 0;
+}
+
+/* No step can be taken: dt is 0, NaN or too small to advance the clock.
+ * Name what set it; a wave speed a plugin returned is the usual culprit. */
+hearth_status guard_no_step(hearth_scene *s, double dt, hearth_error *err) {
+    char who[200], what[400];
+    const particles *ps = &s->ps;
+    const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
+    int bad = -1;
+    for (int i = 0; i < ps->n && bad < 0; i++) {
+        if (flags && (flags[i] & PF_FIXED)) continue;
+        const double c = guard_wave_speed(s, i);
+        if (!(c > 0 && c <= DBL_MAX)) bad = i;
+    }
+    if (bad >= 0) {
+        describe_particle(s, bad, who, sizeof who);
+        guard_wave_text(s, bad, what, sizeof what);
+        snprintf(s->diagnosis, sizeof s->diagnosis, "guard: step %ld, t = %.6g s: no step is possible: %s: %s", s->step + 1,
+                 s->t, who, what);
+    } else {
+        snprintf(s->diagnosis, sizeof s->diagnosis,
+                 "guard: step %ld, t = %.6g s: no step is possible: the stable step is %g s (largest speed %g m/s, "
+                 "wave speed %g m/s, dx %g m, cfl %g); it does not advance the clock",
+                 s->step + 1, s->t, dt, s->max_speed, s->c_max, s->def.dx, s->def.cfl);
+    }
+    s->guard = HEARTH_GUARD_STOPPED;
+    return err_set(err, HEARTH_ERR_GUARD, "%s", s->diagnosis);
 }

@@ -16,6 +16,7 @@
  * other over the kernel's width (1.5 dx) and then as far as the stirring
  * carries particles. The nodes' sums live in an array of their own, indexed
  * like the grid's blocks, so the grid's channels stay as they are. */
+#include "plugins.h"
 #include "mixing.h"
 
 #include <math.h>
@@ -46,7 +47,10 @@ void mixing_params(const hearth_scene *s, int mat, int i, double *out) {
         return;
     }
     for (int c = 0; c < k; c++) alpha[c] /= sum;
-    if (ms->m->blend(k, alpha, pk, out)) { /* a plugin that refuses: the dominant constituent */
+    plugin_call_enter(ms->m, "blend");
+    const int refused = ms->m->blend(k, alpha, pk, out);
+    plugin_call_leave();
+    if (refused) { /* a plugin that refuses: the dominant constituent */
         int best = 0;
         for (int c = 1; c < k; c++)
             if (alpha[c] > alpha[best]) best = c;
@@ -173,7 +177,11 @@ int hearth_scene_add_mixture(hearth_scene *s, const char *plugin, int k, const c
     ms->mix_k = k;
     ms->mix_params = mp;
     if (m->state_size == 0) /* any blend's waves are bounded by the fastest constituent's */
-        for (int c = 1; c < k; c++) ms->wave_speed = fmax(ms->wave_speed, m->wave_speed(mp + (size_t)c * np, NULL));
+        for (int c = 1; c < k; c++) {
+            plugin_call_enter(m, "wave_speed");
+            ms->wave_speed = fmax(ms->wave_speed, m->wave_speed(mp + (size_t)c * np, NULL));
+            plugin_call_leave();
+        }
     s->mix_mat = id;
     return id;
 }

@@ -16,10 +16,12 @@
  * the next block on each axis, so no two threads ever write the same node and
  * every node sums its contributions in the same order whatever the thread
  * count. No atomics. */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
 #include "error.h"
+#include "plugins.h"
 #include "scene.h"
 #include "gas.h"
 #include "thermal.h"
@@ -177,13 +179,18 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
             pt.state = state ? state + (size_t)i * stride : NULL;
             /* porosity n^p = J^P - 1 + n^p_0 (§5.4), from the plastic volume change at the start of the step */
             if (Gcol || (ms->m->needs & HEARTH_NEEDS_POROSITY)) {
-                const double JP = ms->m->plastic_J ? ms->m->plastic_J(pt.p, pt.state) : 1.0;
+                double JP = 1.0;
+                if (ms->m->plastic_J) {
+                    plugin_call_enter(ms->m, "plastic_J");
+                    JP = ms->m->plastic_J(pt.p, pt.state);
+                }
                 pt.porosity = gas_porosity(JP, ms->core[CP_POROSITY0]);
             } else {
                 pt.porosity = NAN;
             }
             const double rho0w = ms->core[CP_WATER_DENSITY];
             pt.saturation = Wcol ? Wcol[i] / (rho0w * J * V0[i]) : NAN;
+            plugin_call_enter(ms->m, "stress"); /* a crash in the plugin names it (plugins.h) */
             int code = ms->m->stress(&pt, tau);
             if (code) {
                 record_fail(pp, i, FAIL_PLUGIN, code);
@@ -195,15 +202,28 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
             /* the next step's limits, from the state the plugin just wrote and the
              * parameters it used: here both are in cache, and G2P need not
              * evaluate the temperature curves a second time */
-            const double c = ms->m->state_size > 0 ? ms->m->wave_speed(pt.p, pt.state) : ms->wave_speed;
-            if (c > cmax) cmax = c;
+            double c = ms->wave_speed;
+            if (ms->m->state_size > 0) {
+                plugin_call_enter(ms->m, "wave_speed");
+                c = ms->m->wave_speed(pt.p, pt.state);
+            }
+            /* NaN, inf or <= 0 would make the next dt NaN or 0 (fmax would also
+             * drop a NaN silently): the guard stops the run naming the plugin */
+            if (!(c > 0 && c <= DBL_MAX)) record_fail(pp, i, FAIL_WAVE, 0);
+            else if (c > cmax) cmax = c;
             if (ms->m->viscosity) {
+                plugin_call_enter(ms->m, "viscosity");
                 const double nu = ms->m->viscosity(pt.p, ms->m->state_size > 0 ? pt.state : NULL) / pt.p[ms->density_index];
                 if (nu > numax) numax = nu;
             }
             /* J^P after this step's plastic flow, for the gas and expansion terms below */
             const double cl = ms->core[CP_EXPANSION];
-            const double JP1 = ms->m->plastic_J && (Gcol || (cl > 0 && Tcol)) ? ms->m->plastic_J(pt.p, pt.state) : 1.0;
+            double JP1 = 1.0;
+            if (ms->m->plastic_J && (Gcol || (cl > 0 && Tcol))) {
+                plugin_call_enter(ms->m, "plastic_J");
+                JP1 = ms->m->plastic_J(pt.p, pt.state);
+            }
+            plugin_call_leave();
             if (Wcol && ms->core[CP_WATER_STIFFNESS] > 0) { /* water pressure (eq. 14): tau_w = -J c (s - s_0) I */
                 const double tw = -J * ms->core[CP_WATER_STIFFNESS] * (pt.saturation - S0col[i]);
                 tau[0] += tw;
@@ -438,7 +458,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         lo[d] = g->lo[d] + dx;                       /* keep every particle's stencil on the grid */
         hi[d] = g->lo[d] + (g->nn[d] - 2) * dx;
     }
-    double ke = 0, mass = 0, vmax = -1;
+    double ke = 0, mass = 0, vmax = -1, move2 = 0;
+    int mover = -1;
     double w_removed = 0, w_dmax = 0, w_emax = 0;
     int fastest = -1;
     long ood = 0;
@@ -506,6 +527,11 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         for (int c = 0; c < s->ncol && !carried; c++)
             if (s->cols[c].mode == HEARTH_GRIP && collider_near(&s->cols[c], x))
                 carried = collider_carry_particle(&s->cols[c], D, dt, x, v, C);
+        /* The guard judges motion, not only the end speed: a wall or collider
+         * below may zero v after the particle has already jumped cells. The
+         * grid's velocity over dt is the motion asked for; a carried particle
+         * moves with its grip. */
+        const double xo[3] = {x[0], x[1], x[2]};
         int out = 0;
         for (int d = 0; d < D; d++) {
             if (!carried) {
@@ -522,6 +548,14 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
          * back on its surface (the usual particle-level safeguard). */
         for (int c = 0; c < s->ncol && !carried; c++)
             if (collider_near(&s->cols[c], x)) collider_project_particle(&s->cols[c], D, x, v);
+        {
+            double m2 = 0;
+            for (int d = 0; d < D; d++) {
+                const double dd = carried ? x[d] - xo[d] : dt * nv[d];
+                m2 += dd * dd;
+            }
+            if (m2 > move2) { move2 = m2; mover = i; }
+        }
         if (!all_finite(x, 3)) record_fail(pp, i, FAIL_X, 0);
         else if (!all_finite(v, 3)) record_fail(pp, i, FAIL_V, 0);
         else if (!all_finite(C, 9)) record_fail(pp, i, FAIL_C, 0);
@@ -534,6 +568,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     pp->mass = mass;
     pp->vmax = vmax;
     pp->fastest = fastest;
+    pp->move = sqrt(move2);
+    pp->mover = mover;
     pp->ood = ood;
     pp->water_removed = w_removed;
     pp->water_dmax = w_dmax;
@@ -553,7 +589,7 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
         for (int k = 0; k < s->npb; k++) fn(s, k, dt, tile);
     }
     /* reduce in block order so sums and the first failure do not depend on threads */
-    *rep = (step_report){.particle = -1, .fastest = -1};
+    *rep = (step_report){.particle = -1, .fastest = -1, .mover = -1};
     double vmax = -1, mass = 0;
     for (int k = 0; k < s->npb; k++) {
         const pb_partial *pp = &s->partial[k];
@@ -567,6 +603,10 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
         if (pp->vmax > vmax) {
             vmax = pp->vmax;
             rep->fastest = pp->fastest;
+        }
+        if (pp->move > rep->max_move) {
+            rep->max_move = pp->move;
+            rep->mover = pp->mover;
         }
         if (pp->cmax > rep->c_max) rep->c_max = pp->cmax;
         if (pp->numax > rep->nu_max) rep->nu_max = pp->numax;

@@ -43,7 +43,9 @@ static void check_defaults(check_rig *r) {
  * initialise part of it fails loudly here instead of by luck in a scene. */
 static void check_init(check_rig *r) {
     for (int i = 0; i < r->m->state_size; i++) r->state[i] = NAN;
+    plugin_call_enter(r->m, "init");
     r->m->init(r->p, r->state);
+    plugin_call_leave();
 }
 
 /* One stress call. tau starts as NaN so an entry the plugin never writes
@@ -61,11 +63,28 @@ static int check_stress(check_rig *r, const double F[9], const double L[9], doub
     pt.p = r->p;
     pt.state = r->state;
     for (int i = 0; i < 9; i++) tau[i] = NAN;
-    return r->m->stress(&pt, tau);
+    plugin_call_enter(r->m, "stress");
+    const int rc = r->m->stress(&pt, tau);
+    plugin_call_leave();
+    return rc;
+}
+
+static const char *check_describe(const check_rig *r, int rc) {
+    plugin_call_enter(r->m, "describe_error");
+    const char *t = r->m->describe_error(rc);
+    plugin_call_leave();
+    return t;
+}
+
+static double check_wave_speed(const check_rig *r) {
+    plugin_call_enter(r->m, "wave_speed");
+    const double c = r->m->wave_speed(r->p, r->m->state_size > 0 ? r->state : NULL);
+    plugin_call_leave();
+    return c;
 }
 
 static const char *check_code_text(const check_rig *r, int rc) {
-    const char *t = r->m->describe_error(rc);
+    const char *t = check_describe(r, rc);
     return t ? t : "(describe_error returned NULL)";
 }
 
@@ -205,17 +224,26 @@ static void check_frame(check_rig *r) {
     check_report(r, "frame_indifference", bad < 0, detail);
 }
 
-/* One parameter pinned at a bound, 5 steps of shear and stretch. Returns 1
- * on pass; on failure writes why into detail. note gets a stress code the
- * plugin explained (accepted: refusing an extreme state is legitimate). */
+/* One parameter pinned at a bound (i >= 0), or every parameter at its min or
+ * max (i = -1: the loader's all-min and all-max corners), then 5 steps of
+ * shear and stretch. Returns 1 on pass; on failure writes why into detail.
+ * note gets a stress code the plugin explained (accepted: refusing an
+ * extreme state is legitimate). */
 static int check_extreme_case(check_rig *r, int i, int side, char *detail, char *note) {
-    const hearth_param *q = &r->m->params[i];
     const double dt = 1e-3;
     /* dt L: 10% shear and a few % stretch per step, a hard but physical deformation. */
     const double L[9] = {0.05 / dt, 0.1 / dt, 0, 0, -0.03 / dt, 0, 0, 0, 0.02 / dt};
     double F[9], A[9], Fn[9], tau[9];
+    char at[160];
     check_defaults(r);
-    r->p[i] = side ? q->max : q->min;
+    if (i >= 0) {
+        const hearth_param *q = &r->m->params[i];
+        r->p[i] = side ? q->max : q->min;
+        snprintf(at, sizeof at, "%s = %g %s (%s)", q->name, r->p[i], q->unit, side ? "max" : "min");
+    } else {
+        for (int j = 0; j < r->m->nparams; j++) r->p[j] = side ? r->m->params[j].max : r->m->params[j].min;
+        snprintf(at, sizeof at, "every parameter at its %s", side ? "max" : "min");
+    }
     check_init(r);
     t3_identity(F);
     for (int s = 0; s < 5; s++) {
@@ -224,28 +252,24 @@ static int check_extreme_case(check_rig *r, int i, int side, char *detail, char 
         t3_copy(Fn, F);
         int rc = check_stress(r, F, L, dt, tau);
         if (rc) {
-            const char *t = r->m->describe_error(rc);
+            const char *t = check_describe(r, rc);
             if (!t) {
-                snprintf(detail, CHECK_DETAIL, "%s = %g %s (%s): step %d: stress returned code %d and describe_error(%d) is NULL",
-                         q->name, r->p[i], q->unit, side ? "max" : "min", s + 1, rc, rc);
+                snprintf(detail, CHECK_DETAIL, "%s: step %d: stress returned code %d and describe_error(%d) is NULL", at,
+                         s + 1, rc, rc);
                 return 0;
             }
-            if (!*note)
-                snprintf(note, CHECK_DETAIL, "; accepted %s = %g %s (%s): step %d code %d \"%s\"", q->name, r->p[i],
-                         q->unit, side ? "max" : "min", s + 1, rc, t);
+            if (!*note) snprintf(note, CHECK_DETAIL, "; accepted %s: step %d code %d \"%s\"", at, s + 1, rc, t);
             break;
         }
         for (int j = 0; j < 9; j++)
             if (!isfinite(tau[j])) {
-                snprintf(detail, CHECK_DETAIL, "%s = %g %s (%s): step %d: tau[%d] = %g is not finite", q->name, r->p[i],
-                         q->unit, side ? "max" : "min", s + 1, j, tau[j]);
+                snprintf(detail, CHECK_DETAIL, "%s: step %d: tau[%d] = %g is not finite", at, s + 1, j, tau[j]);
                 return 0;
             }
     }
-    double c = r->m->wave_speed(r->p, r->state);
+    double c = check_wave_speed(r);
     if (!(isfinite(c) && c > 0)) {
-        snprintf(detail, CHECK_DETAIL, "%s = %g %s (%s): wave_speed = %g m/s, must be finite and > 0", q->name, r->p[i],
-                 q->unit, side ? "max" : "min", c);
+        snprintf(detail, CHECK_DETAIL, "%s: wave_speed = %g m/s, must be finite and > 0", at, c);
         return 0;
     }
     return 1;
@@ -254,13 +278,15 @@ static int check_extreme_case(check_rig *r, int i, int side, char *detail, char 
 static void check_extremes(check_rig *r) {
     char detail[CHECK_DETAIL], note[CHECK_DETAIL] = "";
     int n = r->m->nparams;
-    for (int i = 0; i < n; i++)
+    for (int i = -1; i < n; i++)
         for (int side = 0; side < 2; side++)
             if (!check_extreme_case(r, i, side, detail, note)) {
                 check_report(r, "extremes", 0, detail);
                 return;
             }
-    snprintf(detail, sizeof detail, "%d parameters at min and max, 5 steps each: tau finite, wave_speed finite > 0%.400s",
+    snprintf(detail, sizeof detail,
+             "%d parameters at min and max, and all at min and all at max, 5 steps each: tau finite, wave_speed "
+             "finite > 0%.400s",
              n, note);
     check_report(r, "extremes", 1, detail);
 }
@@ -275,7 +301,7 @@ static void check_wave(check_rig *r) {
     double txx[2];
     check_defaults(r);
     check_init(r);
-    double c = r->m->wave_speed(r->p, r->state), rho = r->p[r->density];
+    double c = check_wave_speed(r), rho = r->p[r->density];
     for (int k = 0; k < 2; k++) {
         double F[9], L[9] = {0}, tau[9];
         t3_identity(F);
@@ -327,11 +353,19 @@ int hearth_plugin_check(const char *path, hearth_check_fn fn, void *ud, hearth_e
         err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory for the conformance check", hearth_plugin_file(pl));
         return -1;
     }
+    /* each check names itself to a crash report (hearth_plugin_call_current) */
+    const char *file = hearth_plugin_file(pl);
+    plugin_call_set_context(file, "check 'rest'");
     check_rest(&r);
+    plugin_call_set_context(file, "check 'symmetric'");
     check_symmetric(&r);
+    plugin_call_set_context(file, "check 'frame_indifference'");
     check_frame(&r);
+    plugin_call_set_context(file, "check 'extremes'");
     check_extremes(&r);
+    plugin_call_set_context(file, "check 'wave_speed'");
     check_wave(&r);
+    plugin_call_set_context(NULL, NULL);
     mem_free(r.p, pbytes);
     mem_free(r.state, sbytes);
     return r.failed;

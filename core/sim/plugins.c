@@ -15,6 +15,7 @@
 
 #include <dirent.h>
 #include <dlfcn.h>
+#include <elf.h>
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -48,6 +49,29 @@ static hearth_plugin **g_loaded;
 static int g_nloaded, g_caploaded;
 static char **g_added; /* folders from hearth_plugin_path_add, in call order */
 static int g_nadded, g_capadded;
+
+_Thread_local plugin_call plugin_current_call __attribute__((tls_model("initial-exec")));
+
+void hearth_plugin_call_enter(const hearth_material *m, const char *callback) { plugin_call_enter(m, callback); }
+void hearth_plugin_call_leave(void) { plugin_call_leave(); }
+
+/* Called from signal handlers: no locks, no allocation, only reads. The
+ * registry is written only while scenes are built (one thread), never while
+ * a callback runs. */
+int hearth_plugin_call_current(hearth_plugin_call_info *out) {
+    const plugin_call c = plugin_current_call;
+    if (!c.callback) return 0;
+    const char *file = c.file;
+    for (int i = 0; !file && c.m && i < g_nloaded; i++)
+        if (&g_loaded[i]->desc.mat == c.m) file = g_loaded[i]->path;
+    *out = (hearth_plugin_call_info){
+        .material = c.m && c.m->name ? c.m->name : "(unknown)",
+        .file = file ? file : "",
+        .callback = c.callback,
+        .context = c.context ? c.context : "",
+    };
+    return 1;
+}
 
 /* ---- growable arrays of pointers ------------------------------------ */
 
@@ -208,6 +232,11 @@ void plugin_desc_free(plugin_desc *d) {
 /* The bytes of a v1 descriptor up to and including describe_error: every
  * required field. plastic_J (appended later) is optional. */
 #define PLUGIN_V1_MIN_SIZE (offsetof(hearth_material, describe_error) + sizeof(((hearth_material *)0)->describe_error))
+/* Bounds a descriptor must respect before the loader allocates for it: the
+ * core's per-particle parameter buffer (scene.h SCENE_MAX_PARAMS) and a
+ * state far beyond any law's (cam_clay_dough keeps 7 doubles). */
+#define PLUGIN_MAX_PARAMS 256
+#define PLUGIN_MAX_STATE 4096
 #define PLUGIN_KNOWN_NEEDS                                                                         \
     (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_SATURATION |                  \
      HEARTH_NEEDS_THERMAL_EXPANSION)
@@ -259,6 +288,75 @@ static hearth_status plugin_check_params(const char *shown, const hearth_materia
                        "%s: parameter 'density' has min %g kg/m^3; it must be > 0 so every particle has mass",
                        shown, ps[d].min);
     return HEARTH_OK;
+}
+
+/* "E = 0.01 Pa, nu = 0 1, density = 1 kg/m^3" into buf (cut with "..." when long). */
+static void plugin_format_params(const hearth_material *c, const double *p, char *buf, size_t cap) {
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < c->nparams; i++) {
+        int k = snprintf(buf + used, cap - used, "%s%s = %g %s", i ? ", " : "", c->params[i].name, p[i],
+                         c->params[i].unit);
+        if (k < 0 || (size_t)k >= cap - used) {
+            if (cap > 4) memcpy(buf + cap - 4, "...", 4);
+            return;
+        }
+        used += (size_t)k;
+    }
+}
+
+/* The step size is cfl dx / (speed + wave speed): a wave speed that is NaN,
+ * infinite, zero or negative anywhere in the schema's range gives a step of
+ * 0 or NaN, or no CFL limit at all. Evaluate init and wave_speed at the
+ * defaults, at each parameter's min and max (the rest at defaults), and with
+ * every parameter at its min and at its max, before the plugin is trusted.
+ * The rest of the range is the run-time guard's (mpm.c P2G). */
+static hearth_status plugin_check_wave_corners(const char *shown, const hearth_material *raw, const hearth_material *c,
+                                               hearth_error *err) {
+    const int np = c->nparams, ns = c->state_size;
+    double *p = mem_alloc(sizeof(double) * (size_t)(np > 0 ? np : 1));
+    double *state = mem_alloc(sizeof(double) * (size_t)(ns > 0 ? ns : 1));
+    if (!p || !state) {
+        mem_free(p, sizeof(double) * (size_t)(np > 0 ? np : 1));
+        mem_free(state, sizeof(double) * (size_t)(ns > 0 ? ns : 1));
+        return err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory checking the wave speed", shown);
+    }
+    hearth_status st = HEARTH_OK;
+    plugin_call_set_context(shown, "the loader's wave-speed check at the schema's corners");
+    /* corner k: 0 defaults; 1..2np one parameter at min (odd) or max (even); then all-min, all-max */
+    for (int k = 0; k < 2 * np + 3 && st == HEARTH_OK; k++) {
+        const char *which = "at the defaults";
+        char label[160];
+        for (int i = 0; i < np; i++) p[i] = c->params[i].def;
+        if (k >= 1 && k <= 2 * np) {
+            const int i = (k - 1) / 2, hi = (k - 1) % 2;
+            p[i] = hi ? c->params[i].max : c->params[i].min;
+            snprintf(label, sizeof label, "with %s at its %s (the rest at defaults)", c->params[i].name, hi ? "max" : "min");
+            which = label;
+        } else if (k > 2 * np) {
+            const int hi = k == 2 * np + 2;
+            for (int i = 0; i < np; i++) p[i] = hi ? c->params[i].max : c->params[i].min;
+            which = hi ? "with every parameter at its max" : "with every parameter at its min";
+        }
+        for (int i = 0; i < ns; i++) state[i] = 0;
+        plugin_call_enter(raw, "init");
+        c->init(p, state); /* a buffer even when state_size is 0: the core never passes NULL to init */
+        plugin_call_enter(raw, "wave_speed");
+        const double w = c->wave_speed(p, ns > 0 ? state : NULL);
+        plugin_call_leave();
+        if (!(isfinite(w) && w > 0)) {
+            char vals[600];
+            plugin_format_params(c, p, vals, sizeof vals);
+            st = err_set(err, HEARTH_ERR_PLUGIN,
+                         "%s: material '%s': wave_speed is %g m/s %s (%s); it must be finite and > 0 over the "
+                         "whole parameter range, or no stable step exists (fix wave_speed or narrow the range)",
+                         shown, c->name, w, which, vals);
+        }
+    }
+    plugin_call_set_context(NULL, NULL);
+    mem_free(p, sizeof(double) * (size_t)(np > 0 ? np : 1));
+    mem_free(state, sizeof(double) * (size_t)(ns > 0 ? ns : 1));
+    return st;
 }
 
 hearth_status plugin_describe(const char *shown, const hearth_material *m, plugin_desc *out, hearth_error *err) {
@@ -324,8 +422,16 @@ hearth_status plugin_describe(const char *shown, const hearth_material *m, plugi
                        "%s: material '%s' has required callback '%s' set to NULL; every plugin must provide "
                        "init, stress, wave_speed and describe_error",
                        shown, c.name, missing);
+    if (c.state_size > PLUGIN_MAX_STATE)
+        return err_set(err, HEARTH_ERR_PLUGIN,
+                       "%s: material '%s' has state_size %d doubles per point; at most %d are allowed", shown,
+                       c.name, c.state_size, PLUGIN_MAX_STATE);
+    if (c.nparams > PLUGIN_MAX_PARAMS)
+        return err_set(err, HEARTH_ERR_PLUGIN, "%s: material '%s' has %d parameters; at most %d are allowed",
+                       shown, c.name, c.nparams, PLUGIN_MAX_PARAMS);
     hearth_status st = plugin_check_params(shown, &c, err);
     if (st != HEARTH_OK) return st;
+    if ((st = plugin_check_wave_corners(shown, m, &c, err)) != HEARTH_OK) return st;
 
     /* Own a copy of the schema so the core never meets a NULL help or summary. */
     if (c.nparams > 0) {
@@ -351,10 +457,71 @@ static hearth_plugin *plugin_cached(const char *real) {
     return NULL;
 }
 
+/* dlopen maps a file's segments as the headers describe them; a file cut
+ * short (an interrupted copy) then faults with SIGBUS when the loader touches
+ * a page past its end. Check that the headers and every loaded segment lie
+ * inside the file first, so a truncated plugin is a message, not a crash. */
+static hearth_status plugin_elf_check(const char *shown, const char *real, hearth_error *err) {
+    FILE *f = fopen(real, "rb");
+    if (!f) return err_set(err, HEARTH_ERR_PLUGIN, "%s: cannot open the plugin file (%s)", shown, strerror(errno));
+    Elf64_Ehdr eh;
+    struct stat st;
+    hearth_status rc = HEARTH_OK;
+    const char *why = NULL;
+    char detail[160] = "";
+    if (fstat(fileno(f), &st) != 0 || fread(&eh, sizeof eh, 1, f) != 1) {
+        why = "too short for an ELF header";
+    } else if (memcmp(eh.e_ident, ELFMAG, SELFMAG) != 0) {
+        why = "not an ELF file";
+    } else if (eh.e_ident[EI_CLASS] != ELFCLASS64 || sizeof(void *) != 8) {
+        why = "not a 64-bit ELF object (this hearth is 64-bit)";
+    } else if (eh.e_type != ET_DYN) {
+        why = "not a shared object (ELF type is not ET_DYN)";
+    } else if (eh.e_phentsize != sizeof(Elf64_Phdr) || eh.e_phnum == 0 || eh.e_phnum > 4096) {
+        why = "its program header table is malformed";
+    } else {
+        const unsigned long long size = (unsigned long long)st.st_size;
+        const unsigned long long ph_end = (unsigned long long)eh.e_phoff + (unsigned long long)eh.e_phnum * sizeof(Elf64_Phdr);
+        const unsigned long long sh_end = (unsigned long long)eh.e_shoff + (unsigned long long)eh.e_shnum * eh.e_shentsize;
+        if (ph_end > size || eh.e_phoff > size) {
+            why = "truncated";
+            snprintf(detail, sizeof detail, " (its program headers end at byte %llu, the file has %llu)", ph_end, size);
+        } else if (eh.e_shoff > 0 && (sh_end > size || eh.e_shoff > size)) {
+            why = "truncated";
+            snprintf(detail, sizeof detail, " (its section headers end at byte %llu, the file has %llu)", sh_end, size);
+        } else if (fseek(f, (long)eh.e_phoff, SEEK_SET) != 0) {
+            why = "unreadable";
+        } else {
+            for (int i = 0; i < eh.e_phnum && !why; i++) {
+                Elf64_Phdr ph;
+                if (fread(&ph, sizeof ph, 1, f) != 1) {
+                    why = "unreadable";
+                } else if (ph.p_type == PT_LOAD && (ph.p_offset > size || ph.p_filesz > size - ph.p_offset)) {
+                    why = "truncated";
+                    snprintf(detail, sizeof detail, " (segment %d needs bytes up to %llu, the file has %llu)", i,
+                             (unsigned long long)ph.p_offset + (unsigned long long)ph.p_filesz, size);
+                }
+            }
+        }
+    }
+    fclose(f);
+    if (why)
+        rc = err_set(err, HEARTH_ERR_PLUGIN,
+                     "%s: not loadable as a shared object: %s%s; rebuild or copy the plugin again (cc -shared -fPIC)",
+                     shown, why, detail);
+    return rc;
+}
+
 /* dlopen the file at real (shown in messages as `shown`), validate, cache. */
 static const hearth_plugin *plugin_open(const char *shown, const char *real, hearth_error *err) {
+    if (plugin_elf_check(shown, real, err) != HEARTH_OK) return NULL;
     dlerror(); /* clear a stale message so the one we report is ours */
+    /* dlopen runs the plugin's constructors: plugin code, so a crash names the file */
+    plugin_call_set_context(shown, "loading");
+    plugin_call_enter(NULL, "dlopen (the plugin's constructors)");
     void *h = dlopen(real, RTLD_NOW | RTLD_LOCAL);
+    plugin_call_leave();
+    plugin_call_set_context(NULL, NULL);
     if (!h) {
         const char *why = dlerror();
         err_set(err, HEARTH_ERR_PLUGIN,
@@ -385,7 +552,13 @@ static const hearth_plugin *plugin_open(const char *shown, const char *real, hea
         err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory registering the plugin", shown);
         return NULL;
     }
-    if (plugin_describe(shown, entry(), &pl->desc, err) != HEARTH_OK) {
+    /* The entry function is plugin code too: a crash in it names the file. */
+    plugin_call_set_context(shown, "loading");
+    plugin_call_enter(NULL, HEARTH_MATERIAL_ENTRY_NAME);
+    const hearth_material *desc = entry();
+    plugin_call_leave();
+    plugin_call_set_context(NULL, NULL);
+    if (plugin_describe(shown, desc, &pl->desc, err) != HEARTH_OK) {
         mem_strfree(pl->path);
         mem_free(pl, sizeof *pl);
         dlclose(h);

@@ -30,4 +30,31 @@ void plugin_desc_free(plugin_desc *d);
 int plugin_param_index(const hearth_material *m, const char *name);
 /// Index of the "density" parameter of a loaded plugin (always present: the loader refuses schemas without it).
 int plugin_density_index(const hearth_plugin *pl);
+
+/// The plugin callback a thread is in (plugin_call_enter / plugin_call_leave
+/// around every call into plugin code). A fatal-signal handler or an atexit
+/// hook reads it through hearth_plugin_call_current to name the plugin.
+/// The hot path pays two stores before a call and one after; `file` and
+/// `context` are set only by the loader and the conformance battery, which
+/// clear them again (plugin_call_set_context).
+typedef struct plugin_call {
+    const hearth_material *m; /* NULL before the descriptor is known */
+    const char *callback;     /* NULL: no callback running */
+    const char *file;         /* set by the loader before the plugin is registered */
+    const char *context;
+} plugin_call;
+/* initial-exec: the record sits in the static TLS block, so reading it from a
+ * signal handler never allocates (a lazily allocated dynamic TLS block would). */
+extern _Thread_local plugin_call plugin_current_call __attribute__((tls_model("initial-exec")));
+
+static inline void plugin_call_enter(const hearth_material *m, const char *callback) {
+    plugin_current_call.m = m;
+    plugin_current_call.callback = callback;
+}
+static inline void plugin_call_leave(void) { plugin_current_call.callback = NULL; }
+/// Set (or clear, with NULLs) the file and context the next calls report.
+static inline void plugin_call_set_context(const char *file, const char *context) {
+    plugin_current_call.file = file;
+    plugin_current_call.context = context;
+}
 #endif

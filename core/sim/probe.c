@@ -8,6 +8,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "plugins.h"
 #include "alloc.h"
 #include "error.h"
 #include "gas.h"
@@ -116,8 +117,16 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
         memcpy(state_copy, pcold(ps, PC_STATE) + (size_t)i * ps->state_stride, sizeof(double) * (size_t)ps->state_stride);
         pt.state = state_copy;
     }
-    pt.porosity = gas_porosity(ms->m->plastic_J ? ms->m->plastic_J(pt.p, pt.state) : 1.0, ms->core[CP_POROSITY0]);
-    if (ms->m->stress(&pt, tau)) {
+    double JP = 1.0;
+    if (ms->m->plastic_J) {
+        plugin_call_enter(ms->m, "plastic_J");
+        JP = ms->m->plastic_J(pt.p, pt.state);
+    }
+    pt.porosity = gas_porosity(JP, ms->core[CP_POROSITY0]);
+    plugin_call_enter(ms->m, "stress");
+    const int rc = ms->m->stress(&pt, tau);
+    plugin_call_leave();
+    if (rc) {
         for (int k = 0; k < 9; k++) tau[k] = NAN;
     }
 }
@@ -162,7 +171,12 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
         const material_slot *ms = &s->mats[m];
         double pscratch[SCENE_MAX_PARAMS];
         const double *st = ps->state_stride ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL;
-        const double JP = ms->m->plastic_J ? ms->m->plastic_J(scene_params_for(s, m, i, pscratch), st) : 1.0;
+        double JP = 1.0;
+        if (ms->m->plastic_J) {
+            plugin_call_enter(ms->m, "plastic_J");
+            JP = ms->m->plastic_J(scene_params_for(s, m, i, pscratch), st);
+            plugin_call_leave();
+        }
         const double np = gas_porosity(JP, ms->core[CP_POROSITY0]);
         out[0] = f == F_POROSITY ? np : -gas_tau(pcold(ps, PC_GAS)[i], pcold(ps, PC_TEMPERATURE)[i], np) / t3_det(F);
         break;

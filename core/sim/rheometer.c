@@ -1,5 +1,6 @@
 /* rheometer.c: the homogeneous virtual rheometer, flow-curve CSV reading and
  * the Herschel-Bulkley fit of Nagasawa et al. 2019 (eq. 1, 2). */
+#include "plugins.h"
 #include "rheometer.h"
 
 #include "csv.h"
@@ -61,7 +62,9 @@ static hearth_status rig_open(rig *g, const hearth_material *m, const double *p,
         g->state = mem_alloc(g->sbytes);
         if (!g->state) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the plugin state");
     }
+    plugin_call_enter(m, "init");
     m->init(p, g->state);
+    plugin_call_leave();
     for (int i = 0; i < 9; i++) g->F[i] = (i % 4 == 0);
     return HEARTH_OK;
 }
@@ -96,7 +99,9 @@ static hearth_status rig_step(rig *g, double dt, double *sigma, hearth_error *er
     g->steps++;
     g->strain += g->rate * dt;
     g->time += dt;
+    plugin_call_enter(g->m, "stress");
     int rc = g->m->stress(&pt, tau);
+    plugin_call_leave();
     if (rc) {
         const char *t = g->m->describe_error ? g->m->describe_error(rc) : NULL;
         return err_set(err, HEARTH_ERR_PLUGIN,
@@ -118,7 +123,9 @@ static hearth_status rig_step(rig *g, double dt, double *sigma, hearth_error *er
  * shear stiffness, used until the first steps have measured the shear
  * modulus itself. */
 static double rig_modulus(const rig *g) {
+    plugin_call_enter(g->m, "wave_speed");
     double c = g->m->wave_speed(g->p, g->state);
+    plugin_call_leave();
     double rho = g->density >= 0 ? g->p[g->density] : 1000.0;
     double M = rho * c * c;
     return isfinite(M) && M > 0 ? M : 0;

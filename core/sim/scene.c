@@ -1,9 +1,11 @@
 /* scene.c: scene lifetime, materials, particles, colliders, and the step loop
  * with its guard and rollback. */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "plugins.h"
 #include "alloc.h"
 #include "error.h"
 #include "params.h"
@@ -323,7 +325,20 @@ int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *c
     material_slot *ms = &s->mats[s->nmat];
     *ms = (material_slot){.plugin = pl, .m = m, .params = p, .density_index = params_index(m, "density")};
     memcpy(ms->core, core, sizeof core);
-    if (m->state_size == 0) ms->wave_speed = m->wave_speed(p, NULL);
+    if (m->state_size == 0) {
+        plugin_call_enter(m, "wave_speed");
+        ms->wave_speed = m->wave_speed(p, NULL);
+        plugin_call_leave();
+        /* the loader checked the schema's corners; these values may lie between them */
+        if (!(ms->wave_speed > 0 && ms->wave_speed <= DBL_MAX)) {
+            err_set(err, HEARTH_ERR_PARAM,
+                    "material '%s' (%s): wave_speed is %g m/s at these parameters; it must be finite and > 0 for "
+                    "a stable step to exist",
+                    m->name, hearth_plugin_file(pl), ms->wave_speed);
+            mem_free(p, sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1));
+            return -1;
+        }
+    }
     s->nmat++;
     /* leavening needs the gas column, and the reaction needs temperature */
     if (core[CP_GAS_RATE] > 0 &&
@@ -409,7 +424,9 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         if (ps->state_stride) {
             double *st = pcold(ps, PC_STATE) + (size_t)j * ps->state_stride;
             memset(st, 0, sizeof(double) * (size_t)ps->state_stride);
+            plugin_call_enter(ms->m, "init");
             ms->m->init(ms->params, st);
+            plugin_call_leave();
         }
         const double *vv = pcold(ps, PC_V) + 3 * j;
         double sp = sqrt(vv[0] * vv[0] + vv[1] * vv[1] + vv[2] * vv[2]);
@@ -424,17 +441,21 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
     /* new particles only raise the largest wave speed (pinning, which lowers it, rescans) */
     double pscratch[SCENE_MAX_PARAMS];
     for (int j = ps->n; j < ps->n + n; j++) {
-        const double c = ms->m->state_size > 0
-                             ? ms->m->wave_speed(scene_params_for(s, material, j, pscratch),
-                                                 pcold(ps, PC_STATE) + (size_t)j * ps->state_stride)
-                             : ms->wave_speed;
-        if (c > s->c_max) s->c_max = c;
+        double c = ms->wave_speed;
+        if (ms->m->state_size > 0) {
+            plugin_call_enter(ms->m, "wave_speed");
+            c = ms->m->wave_speed(scene_params_for(s, material, j, pscratch), pcold(ps, PC_STATE) + (size_t)j * ps->state_stride);
+        }
+        /* NaN or inf here would stall the step size; the first step's guard names it (mpm.c) */
+        if (c > s->c_max && c <= DBL_MAX) s->c_max = c;
         if (ms->m->viscosity) {
             const double *pp = scene_params_for(s, material, j, pscratch);
+            plugin_call_enter(ms->m, "viscosity");
             const double nu = ms->m->viscosity(pp, ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)j * ps->state_stride : NULL) /
                               pp[ms->density_index];
             if (nu > s->nu_max) s->nu_max = nu;
         }
+        plugin_call_leave();
     }
     ps->n += n;
     if (ps->enabled & (1u << PC_WATER)) water_init_particles(s, ps->n - n, ps->n, NAN);
@@ -572,10 +593,13 @@ void scene_refresh_wave_speed(hearth_scene *s) {
         if (flags && (flags[i] & PF_FIXED)) continue;
         const int m = pcoli(ps, PC_MAT)[i];
         const material_slot *ms = &s->mats[m];
-        const double ci = ms->m->state_size > 0
-                              ? ms->m->wave_speed(scene_params_for(s, m, i, pscratch), pcold(ps, PC_STATE) + (size_t)i * ps->state_stride)
-                              : ms->wave_speed;
-        if (ci > c) c = ci;
+        double ci = ms->wave_speed;
+        if (ms->m->state_size > 0) {
+            plugin_call_enter(ms->m, "wave_speed");
+            ci = ms->m->wave_speed(scene_params_for(s, m, i, pscratch), pcold(ps, PC_STATE) + (size_t)i * ps->state_stride);
+            plugin_call_leave();
+        }
+        if (ci > c && ci <= DBL_MAX) c = ci;
     }
     s->c_max = c;
 }
@@ -637,7 +661,9 @@ hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err) {
     err_clear(err);
     if (s->guard == HEARTH_GUARD_STOPPED) s->guard = HEARTH_GUARD_OK; /* the caller chose to go on */
     for (int k = 0; k < n; k++) {
-        hearth_status st = one_step(s, scene_stable_dt(s), err);
+        const double dt = scene_stable_dt(s);
+        if (!(dt > 0) || s->t + dt == s->t) return guard_no_step(s, dt, err);
+        hearth_status st = one_step(s, dt, err);
         if (st) return st;
     }
     return HEARTH_OK;
@@ -652,8 +678,12 @@ hearth_status hearth_scene_advance_steps(hearth_scene *s, double t_end, long max
     if (s->guard == HEARTH_GUARD_STOPPED) s->guard = HEARTH_GUARD_OK;
     for (long k = 0; s->t < t_end && (max_steps < 0 || k < max_steps); k++) {
         double dt = scene_stable_dt(s);
+        /* A stable step of 0 or NaN (an infinite or NaN wave speed, say) used
+         * to end this loop quietly, and s:run called it again forever. */
+        if (!(dt > 0) || s->t + dt == s->t) return guard_no_step(s, dt, err);
         if (s->t + dt >= t_end) dt = t_end - s->t;
         else if (s->t + 1.5 * dt > t_end) dt = 0.5 * (t_end - s->t); /* avoid a sliver of a last step */
+        if (s->t + dt == s->t) dt = t_end - s->t; /* half of the last ulp before t_end would not advance */
         if (!(dt > 0)) break;
         hearth_status st = one_step(s, dt, err);
         if (st) return st;

@@ -45,6 +45,7 @@ typedef enum fail_kind {
     FAIL_STRESS,       /* stress() returned NaN/inf */
     FAIL_F,            /* F non-finite or det F <= 0 */
     FAIL_X, FAIL_V, FAIL_C,
+    FAIL_WAVE,         /* wave_speed() returned NaN, inf or <= 0 */
 } fail_kind;
 
 typedef struct step_report {
@@ -53,6 +54,8 @@ typedef struct step_report {
     int code;          /* plugin code for FAIL_PLUGIN */
     double max_speed;  /* after the step */
     int fastest;
+    double max_move;   /* largest distance a particle was moved this step (m), before walls or colliders stopped it */
+    int mover;         /* that particle, or -1 */
     double kinetic;
     double c_max;      /* largest wave speed met (stateful plugins; stateless come from the slot) */
     double nu_max;     /* largest kinematic viscosity met (plugins with a viscosity callback) */
@@ -63,7 +66,8 @@ typedef struct step_report {
 
 /* Per particle-block partial results, reduced in block order. */
 typedef struct pb_partial {
-    int fail_i, fail_kind, fail_code, fastest;
+    int fail_i, fail_kind, fail_code, fastest, mover;
+    double move; /* largest displacement in the block this step (m) */
     double ke, mass, vmax, cmax, numax; /* numax: largest kinematic viscosity eta / rho (m^2/s) */
     long ood;
     double water_removed, water_dmax, water_emax; /* water.c */
@@ -159,4 +163,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
 
 /* guard.c: returns 1 when the step must not stand; writes the diagnosis. */
 int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed_before);
+/* guard.c: dt is 0, NaN or does not advance the clock: stop with a diagnosis
+ * naming why (a plugin's wave speed, usually) instead of looping forever. */
+hearth_status guard_no_step(hearth_scene *s, double dt, hearth_error *err);
 #endif

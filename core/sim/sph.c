@@ -22,6 +22,7 @@
  *   browning value (4.5-4.6)
  * Every particle writes only its own slots and sums its neighbours in list
  * order, so a step is deterministic for any thread count. */
+#include "plugins.h"
 #include "sph.h"
 
 #include <math.h>
@@ -188,7 +189,9 @@ static void particle_constants(hearth_scene *s, int i, const double *T, double *
     const material_slot *ms = &s->mats[m];
     const double *p = T ? scene_params_for(s, m, i, pscratch) : ms->params;
     const double rho0 = p[ms->density_index];
+    plugin_call_enter(ms->m, "wave_speed");
     const double c = ms->m->wave_speed(p, ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
+    plugin_call_leave();
     st->rho0[i] = rho0;
     st->c0[i] = isfinite(c) && c > 0 ? c : 0;
     st->B[i] = rho0 * st->c0[i] * st->c0[i] / s->def.sph.gamma; /* eq. 3.17: c0^2 = gamma B / rho0 */
@@ -318,6 +321,7 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     memset(rep, 0, sizeof *rep);
     rep->particle = -1;
     rep->fastest = -1;
+    rep->mover = -1;
     hearth_status e = ensure(s, n > 0 ? n : 1, err);
     if (e) return e;
     struct sph_state *st = s->sph;
@@ -513,7 +517,9 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         pt.p = p;
         pt.state = state ? state + (size_t)i * stride : NULL;
         double tau[9];
+        plugin_call_enter(ms->m, "stress");
         const int code = ms->m->stress(&pt, tau);
+        plugin_call_leave();
         if (code) {
             Si[0] = NAN;
             Si[1] = (double)code;
@@ -767,6 +773,8 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         ke += 0.5 * m[i] * sp * sp;
         if (sp > vmax) vmax = sp, fastest = i;
         if (st->c0[i] > cmax) cmax = st->c0[i];
+        /* particle_constants keeps 0 for a wave speed that is NaN, inf or <= 0: the guard names the plugin */
+        if (!(st->c0[i] > 0) && rep->particle < 0) rep->kind = FAIL_WAVE, rep->particle = i;
     }
     /* browning (eq. 4.5 with G of eq. 4.6, T0 and Tf of the XSPH line) */
     if (T) {
@@ -816,7 +824,9 @@ double sph_stable_dt(const hearth_scene *s) {
             if (nu > numax) numax = nu;
         }
         if (s->step == 0) { /* before the first step the sound speed comes from the materials */
+            plugin_call_enter(ms->m, "wave_speed");
             const double ci = ms->m->wave_speed(p, ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
+            plugin_call_leave();
             if (ci > c) c = ci;
         }
     }

@@ -44,8 +44,8 @@ KNOWN = {
         "and the guard catches the CFL violation at step ~85",
     ("cam_clay_dough", "porosity", "0.99"):
         "n^p_0 = 0.99 leaves eq. 12 almost no strength (its porosity coefficient grows without bound as n^p -> 1): "
-        "the dough collapses on the floor and the guard stops it at step ~123 (F inverts or the CFL trips in the same "
-        "step; rounding decides which the guard names first)",
+        "the dough collapses on the floor and the guard stops it at step ~123, when the particles jump more than a "
+        "cell; the gas pressure is then the largest stress on the strengthless skeleton, and the guard names it",
     ("snow_plastic", "temperature", "400 degC"):
         "the core's expansion stress (eq. 10: c lambda = 10 Pa/K over 380 K, 3800 Pa) acts on J^E, which the snow law "
         "clamps (Stomakhin et al. 2013): at its critical stretch the default block holds at most ~600 Pa of tension "
@@ -119,7 +119,8 @@ def rollback_cells():
             ("rollback", "guard rollback", "cfl 2, 20 m/s", dict(stiff, guard_="rollback"), "rollback")]
 
 
-CAUSES = [("CFL violated", "CFL"), ("kinetic energy ran away", "runaway energy"), ("is NaN or inf", "NaN"),
+# The blow-up causes come first: such a diagnosis also reports the CFL violation they led to.
+CAUSES = [("thermal expansion blew", "thermal expansion"), ("gas pressure blew", "gas pressure"), ("CFL violated", "CFL"), ("kinetic energy ran away", "runaway energy"), ("is NaN or inf", "NaN"),
           ("not finite or inverted", "inverted F"), ("returned code", "plugin error")]
 
 
@@ -210,8 +211,11 @@ at 20 m/s with cfl 2 must stop without rollback and complete with it.
 
 A cell passes when it completes with no NaN and bounded energy (max speed at
 most 1.5 sqrt(v0^2 + 2 g H) + 1 m/s, H = 1 m), or the guard stops it within
-{few} steps with a diagnosis naming one cause (CFL, runaway energy, NaN,
-inverted F, plugin error). A crash, a hang ({timeout:g} s per cell), a silent
+{few} steps with a diagnosis naming one cause (thermal expansion, gas pressure,
+CFL, runaway energy, NaN, inverted F, plugin error). A blow-up is named thermal
+expansion or gas pressure when that pressure outweighs the plugin's stress at
+the particle the guard reports, and CFL counts how far a particle moved in the
+step, even when a floor stopped it afterwards. A crash, a hang ({timeout:g} s per cell), a silent
 NaN, a late stop or a wrong cause fails. A cell whose failure is understood but
 not yet fixed is listed as XFAIL with the reason (test `extremes_known_issues`
 reports them as expected failures). `steps` counts the steps that stood (a

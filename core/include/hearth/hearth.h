@@ -81,6 +81,23 @@ typedef void (*hearth_check_fn)(void *ud, const char *check, int passed, const c
 /// checks (0 = all pass), or -1 when the plugin cannot be loaded (err says why).
 int hearth_plugin_check(const char *path, hearth_check_fn fn, void *ud, hearth_error *err);
 
+/// The plugin callback the calling thread is running, for crash reports
+/// (`hearth run` names the plugin when one segfaults or calls exit()).
+typedef struct hearth_plugin_call_info {
+    const char *material; ///< the descriptor's name, or "(unknown)" before the descriptor is read
+    const char *file;     ///< the plugin's path, or "" when it was not loaded from a file
+    const char *callback; ///< "init", "stress", "wave_speed", "plastic_J", "viscosity", "blend", ...
+    const char *context;  ///< what the core was doing ("" when nothing in particular)
+} hearth_plugin_call_info;
+/// 1 and fills out when the calling thread is inside a plugin callback, else 0.
+/// Async-signal-safe (reads only; the strings are static or live until exit).
+int hearth_plugin_call_current(hearth_plugin_call_info *out);
+/// Mark the calling thread as inside callback `callback` (a static string) of
+/// material m, for callers outside the core that call a plugin directly (the
+/// Lua binding's blend); pair with hearth_plugin_call_leave.
+void hearth_plugin_call_enter(const hearth_material *m, const char *callback);
+void hearth_plugin_call_leave(void);
+
 /* ---- shapes (signed distance functions) ----------------------------- */
 
 typedef struct hearth_shape hearth_shape; ///< immutable tree of primitives; owned by the caller
