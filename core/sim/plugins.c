@@ -48,6 +48,10 @@ static hearth_plugin **g_loaded;
 static int g_nloaded, g_caploaded;
 static char **g_added; /* folders from hearth_plugin_path_add, in call order */
 static int g_nadded, g_capadded;
+/* hearth_plugin_restrict: an untrusted scene is running. Plugins load only by
+ * name, and not from the folder it can write (its realpath, or "" for none). */
+static int g_restricted;
+static char g_writable[PATH_MAX];
 
 /* ---- growable arrays of pointers ------------------------------------ */
 
@@ -396,9 +400,28 @@ static const hearth_plugin *plugin_open(const char *shown, const char *real, hea
     return pl;
 }
 
+void hearth_plugin_restrict(const char *writable_dir) {
+    g_restricted = 1;
+    g_writable[0] = '\0';
+    if (writable_dir && !realpath(writable_dir, g_writable)) snprintf(g_writable, sizeof g_writable, "%s", writable_dir);
+}
+
+static int plugin_plain_name(const char *s) {
+    for (const char *p = s; *p; p++)
+        if (!((*p >= 'a' && *p <= 'z') || (*p >= '0' && *p <= '9') || *p == '_')) return 0;
+    return 1;
+}
+
 const hearth_plugin *hearth_plugin_load(const char *name_or_path, hearth_error *err) {
     if (!name_or_path || !*name_or_path) {
         err_set(err, HEARTH_ERR_PLUGIN, "(empty): plugin name is empty; give a name such as \"elastic\" or a path");
+        return NULL;
+    }
+    if (g_restricted && !plugin_plain_name(name_or_path)) {
+        err_set(err, HEARTH_ERR_PLUGIN,
+                "%.300s: a scene without --trust loads plugins by name (a-z, 0-9 and _, such as \"elastic\") from the "
+                "plugin search path; run with --trust to load a file",
+                name_or_path);
         return NULL;
     }
     char file[PATH_MAX];
@@ -426,6 +449,14 @@ const hearth_plugin *hearth_plugin_load(const char *name_or_path, hearth_error *
     char real[PATH_MAX];
     if (!realpath(file, real)) {
         err_set(err, HEARTH_ERR_PLUGIN, "%s: cannot resolve the path (%s)", file, strerror(errno));
+        return NULL;
+    }
+    size_t wl = strlen(g_writable);
+    if (g_restricted && wl && !strncmp(real, g_writable, wl) && (real[wl] == '/' || !strcmp(g_writable, "/"))) {
+        err_set(err, HEARTH_ERR_PLUGIN,
+                "%s: the plugin file %s is in the output folder %s, which the scene can write; a scene without "
+                "--trust loads plugins only from folders it cannot write (run with --trust to allow it)",
+                name_or_path, real, g_writable);
         return NULL;
     }
     const hearth_plugin *pl = plugin_cached(real);
