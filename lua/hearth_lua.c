@@ -228,10 +228,15 @@ static int on_panic(lua_State *L) {
 
 static volatile sig_atomic_t g_signal;
 static int (*g_host_interrupted)(void);
+static lua_State *volatile g_main; /* the state of hl_new_state, for the signal handler */
+static void interrupt_hook(lua_State *L, lua_Debug *ar);
 
 static void on_signal(int sig) {
     if (g_signal) _exit(128 + sig); /* the second Ctrl-C: the user means it */
     g_signal = sig;
+    /* lua_sethook is safe in a signal handler (the manual says so): the main
+     * thread now stops at its next instruction, not its next count */
+    if (g_main) lua_sethook(g_main, interrupt_hook, LUA_MASKCALL | LUA_MASKRET | LUA_MASKCOUNT, 1);
 }
 
 void hl_interrupt_install(void) {
@@ -249,14 +254,16 @@ int hl_interrupted(void) {
 }
 
 /* Every HOOK_COUNT instructions in every coroutine (a new thread inherits its
- * creator's hook). The error is raised again at each count while the signal
- * stands, so a pcall in the scene only delays the unwinding by a few
- * instructions. */
+ * creator's hook). Once a signal stands the hook fires at every instruction,
+ * call and return of the thread it caught, and raises each time: a pcall in
+ * the scene catches the error only to meet it again at its next instruction,
+ * so the scene unwinds to the host. */
 #define HOOK_COUNT 1000
 static void interrupt_hook(lua_State *L, lua_Debug *ar) {
     (void)ar;
     int sig = hl_interrupted();
     if (!sig) return;
+    lua_sethook(L, interrupt_hook, LUA_MASKCALL | LUA_MASKRET | LUA_MASKCOUNT, 1);
     lua_pushstring(L, sig == SIGTERM ? "interrupted by SIGTERM" : sig == SIGINT ? "interrupted by SIGINT" : "interrupted by a signal");
     lua_error(L);
 }
@@ -288,6 +295,7 @@ lua_State *hl_new_state(const hl_options *opt, hearth_error *err) {
     lua_setwarnf(L, NULL, NULL);
     g_host_interrupted = opt->interrupted;
     lua_sethook(L, interrupt_hook, LUA_MASKCOUNT, HOOK_COUNT);
+    g_main = L;
     /* before any scene code: native code only by name from folders the scene cannot write */
     if (!opt->trusted) hearth_plugin_restrict(opt->out_dir);
     lua_pushcfunction(L, open_state);
@@ -304,6 +312,8 @@ lua_State *hl_new_state(const hl_options *opt, hearth_error *err) {
 
 void hl_close_state(lua_State *L) {
     if (!L) return;
+    if (g_main == L) g_main = NULL;
+    lua_sethook(L, NULL, 0, 0); /* the scene's finalizers (freeing scenes) run even after an interrupt */
     void *ud = NULL;
     const lua_Alloc f = lua_getallocf(L, &ud);
     lua_close(L);
