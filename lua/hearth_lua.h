@@ -101,9 +101,11 @@ void hl_checkvec(lua_State *L, int idx, const char *what, double v[3]);
  * relative path to the output folder, resolves the real location of its
  * deepest existing part (symlinks and ..), and without --trust raises an
  * error naming `call`, the path, the output folder and --trust when it lies
- * outside the output folder. Creates the file's missing folders when mkdirs.
- * The result is in buf. */
-const char *hl_out_path(lua_State *L, const char *call, const char *path, int mkdirs, char *buf, size_t n);
+ * outside the output folder. flags: HL_PATH_MKDIRS creates the file's missing
+ * folders; HL_PATH_AS_IS leaves a relative path relative to the working
+ * folder, as Lua's own io and os functions take it. The result is in buf. */
+enum { HL_PATH_MKDIRS = 1, HL_PATH_AS_IS = 2 };
+const char *hl_out_path(lua_State *L, const char *call, const char *path, int flags, char *buf, size_t n);
 /* a path a scene reads: relative paths resolve under the output folder (absolute ones stay) */
 const char *hl_in_path(lua_State *L, const char *path, char *buf, size_t n);
 /* a marked error object (kind "guard" or "usage") with message msg; see hl_error_message */

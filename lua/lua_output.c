@@ -58,9 +58,9 @@ static const char *resolve_target(const char *path, char *out, size_t n) {
     return NULL;
 }
 
-const char *hl_out_path(lua_State *L, const char *call, const char *path, int mkdirs, char *buf, size_t n) {
+const char *hl_out_path(lua_State *L, const char *call, const char *path, int flags, char *buf, size_t n) {
     const hl_options *o = hl_opts(L);
-    if (path[0] == '/' || !o->out_dir) snprintf(buf, n, "%s", path);
+    if (path[0] == '/' || !o->out_dir || (flags & HL_PATH_AS_IS)) snprintf(buf, n, "%s", path);
     else snprintf(buf, n, "%s/%s", o->out_dir, path);
     if (!o->trusted) {
         char out_real[PATH_MAX], target[PATH_MAX];
@@ -83,7 +83,7 @@ const char *hl_out_path(lua_State *L, const char *call, const char *path, int mk
                               call, path, o->out_dir, target),
                    (const char *)NULL;
     }
-    if (mkdirs) { /* make the file's folder, so "frames/t0001.png" just works */
+    if (flags & HL_PATH_MKDIRS) { /* make the file's folder, so "frames/t0001.png" just works */
         char dir[4096];
         snprintf(dir, sizeof dir, "%s", buf);
         char *slash = strrchr(dir, '/');
@@ -108,7 +108,7 @@ static int l_png(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     const char *field = luaL_checkstring(L, 2);
     char buf[4096];
-    const char *path = hl_out_path(L, "s:png", luaL_checkstring(L, 3), 1, buf, sizeof buf);
+    const char *path = hl_out_path(L, "s:png", luaL_checkstring(L, 3), HL_PATH_MKDIRS, buf, sizeof buf);
     const char *kind = "slice";
     const hearth_scene_def *d = hearth_scene_get_def(u->s);
     int width = 800, height = 0, axis = 2;
@@ -150,7 +150,7 @@ static int l_png(lua_State *L) {
 static int dump(lua_State *L, const char *call, hearth_status (*fn)(const hearth_scene *, const char *, hearth_error *)) {
     hl_scene *u = hl_checkscene(L, 1);
     char buf[4096];
-    const char *path = hl_out_path(L, call, luaL_checkstring(L, 2), 1, buf, sizeof buf);
+    const char *path = hl_out_path(L, call, luaL_checkstring(L, 2), HL_PATH_MKDIRS, buf, sizeof buf);
     hearth_error err;
     if (fn(u->s, path, &err)) return hl_raise(L, &err);
     lua_pushstring(L, path);
@@ -166,7 +166,7 @@ static int l_write_atomic(lua_State *L) {
     size_t len;
     char buf[4096];
     const char *call = luaL_optstring(L, 3, "h.write");
-    const char *path = hl_out_path(L, call, luaL_checkstring(L, 1), 1, buf, sizeof buf);
+    const char *path = hl_out_path(L, call, luaL_checkstring(L, 1), HL_PATH_MKDIRS, buf, sizeof buf);
     const char *text = luaL_checklstring(L, 2, &len);
     atomic_file af;
     hearth_error err;

@@ -46,8 +46,8 @@ static int safe_open(lua_State *L) {
     const int base = lua_gettop(L);
     char buf[4096];
     if (strpbrk(mode, "wa+")) {
-        lua_pushfstring(L, "io.open(..., '%s')", mode);
-        path = hl_out_path(L, lua_tostring(L, -1), path, 1, buf, sizeof buf);
+        lua_pushfstring(L, "io.open('%s', '%s')", path, mode);
+        path = hl_out_path(L, lua_tostring(L, -1), path, HL_PATH_AS_IS, buf, sizeof buf);
         lua_pop(L, 1);
     }
     lua_pushvalue(L, lua_upvalueindex(1)); /* the real io.open, reachable only from here */
@@ -72,8 +72,11 @@ static int safe_path_op(lua_State *L) {
     int n = lua_gettop(L);
     for (int i = 1; i <= n; i++) {
         char buf[4096];
-        lua_pushstring(L, hl_out_path(L, call, luaL_checkstring(L, i), 0, buf, sizeof buf));
+        const char *path = luaL_checkstring(L, i);
+        lua_pushfstring(L, "%s('%s')", call, path);
+        lua_pushstring(L, hl_out_path(L, lua_tostring(L, -1), path, HL_PATH_AS_IS, buf, sizeof buf));
         lua_replace(L, i);
+        lua_pop(L, 1);
     }
     lua_pushvalue(L, lua_upvalueindex(1));
     lua_insert(L, 1);

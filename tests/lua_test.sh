@@ -105,8 +105,13 @@ lua_error_messages)
     check err_range_unit.lua 2 "'density' = 1e+09" "[0.001, 100000] kg/m^3"
     check err_curve.lua 2 "h.curve: temperatures must increase" "point 2: 50 after 100"
     check err_add_nomat.lua 3 "s:add: material = h.material(...) is required"
-    check err_plugin.lua 2 "plugin not found" "hearth_no_such_plugin_xyz.so" "search path" "$scenes" "HEARTH_PLUGIN_PATH"
+    check err_plugin.lua 2 "plugin not found" "hearth_no_such_plugin_xyz.so" "search path" "HEARTH_PLUGIN_PATH"
     if [ -n "${HEARTH_PLUGIN_PATH:-}" ]; then has err.txt "$HEARTH_PLUGIN_PATH" "plugin folders listed"; fi
+    # the scene's own folder is searched only with --trust (an untrusted scene may have put a plugin there)
+    grep -qE "(path: |, )$scenes[,;]" err.txt && fail "without --trust the scene's folder is on the plugin path: $(cat err.txt)"
+    run err_plugin.lua --trust
+    expect_rc 1 "err_plugin.lua --trust"
+    grep -qE "(path: |, )$scenes[,;]" err.txt || fail "--trust: the scene's folder is not on the plugin path: $(cat err.txt)"
     check err_not_live.lua 5 "field 'temperature' is not live" "to enable it" "temperature = 20"
     has out.txt "speed" "a live field probes before the error"
     check err_runtime.lua 3 "attempt to call a nil value (field 'missing_function')" "stack traceback" \
@@ -154,20 +159,20 @@ lua_set_overrides)
     expect_rc 0 "--set sizes=0.5,3,1e2"
     has out.txt "sizes=0.5/3/100.0 n=3" "--set a number list"
     run params.lua --set sizes=1,x
-    expect_rc 1 "--set sizes=1,x"
+    expect_rc 2 "--set sizes=1,x"
     has err.txt "--set sizes=1,x: expected numbers separated by commas" "a bad number list"
     run params.lua --set nope=1
-    expect_rc 1 "--set nope=1"
+    expect_rc 2 "--set nope=1"
     has err.txt "no parameter 'nope'" "unknown parameter"
     has err.txt "valid names: height, label, sizes" "the valid names"
     run params.lua --set height=abc
-    expect_rc 1 "--set height=abc"
+    expect_rc 2 "--set height=abc"
     has err.txt "--set height=abc: expected a number" "non-number"
     run params.lua --set height
     expect_rc 2 "--set without ="
     has err.txt "--set needs name=value" "--set without ="
     run no_params.lua --set height=1
-    expect_rc 1 "--set on a scene without h.params"
+    expect_rc 2 "--set on a scene without h.params"
     has err.txt "declares no parameters" "no h.params"
     ;;
 lua_sandbox)
@@ -199,10 +204,11 @@ lua_sandbox)
     expect_rc 0 "io.open inside the output folder"
     has out.txt "open_in ok" "io.open inside"
     has hearth-out/sandbox/inside.txt "written from a scene" "the file written inside"
-    # load() of bytecode is refused (text chunks only)
+    # load() of bytecode is refused (text chunks only), and string.dump is not there to make any
     run sandbox.lua --set call=load_binary
     expect_rc 0 "load of a binary chunk"
     has out.txt "attempt to load a binary chunk" "load(bytecode) refused"
+    refused dump "string.dump is not allowed"
     # require of a C module: native code must not load, and the message must say so
     run sandbox.lua --set call=require_c
     expect_rc 1 "require of a C module"

@@ -172,11 +172,12 @@ static hearth_status plugin_find(const char *name, char *out, size_t cap, hearth
     size_t nl = strlen(name);
     int looks_like_file = nl > 3 && strcmp(name + nl - 3, ".so") == 0;
     err_set(err, HEARTH_ERR_PLUGIN,
-            "%s: plugin not found: no %s in %s%s; %s HEARTH_PLUGIN_PATH (colon separated), or give a path "
-            "containing '/'%s%s%s",
+            "%s: plugin not found: no %s in %s%s; %s HEARTH_PLUGIN_PATH (colon separated), or %s%s%s%s",
             name, file, d.n ? "the search path: " : "any folder (the search path is empty)", list,
             d.n ? "put the file in one of these folders, add its folder to" : "add the plugin's folder to",
-            looks_like_file ? " (for this file: ./" : "", looks_like_file ? name : "", looks_like_file ? ")" : "");
+            g_restricted ? "run with --trust to load a file by its path" : "give a path containing '/'",
+            looks_like_file && !g_restricted ? " (for this file: ./" : "", looks_like_file && !g_restricted ? name : "",
+            looks_like_file && !g_restricted ? ")" : "");
     plugin_dirs_free(&d);
     return HEARTH_ERR_PLUGIN;
 }
