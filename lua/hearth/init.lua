@@ -686,7 +686,9 @@ local png_keys = { kind = true, width = true, height = true, axis = true, at = t
 local raw_png = S.png
 function S:png(field, path, opts)
   if type(opts) == "table" then check_keys(opts, png_keys, "s:png") end
-  return raw_png(self, field, path, opts)
+  local ok, r = pcall(raw_png, self, field, path, opts)
+  if not ok then error(r, 2) end -- the scene's line, not this one
+  return r
 end
 
 -- s:run's output tables: a misspelt option must fail, not be ignored
