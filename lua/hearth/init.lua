@@ -383,8 +383,17 @@ function h.scene(o)
     for _, k in ipairs { "dx", "cfl", "dt_max", "dim", "max_rollbacks", "heat_flip" } do
       if ks[k] then oo[k] = knob_number(k, ks[k]) end
     end
+    local knob_choices = { heat = { "explicit", "implicit" }, solver = { "mpm", "sph" }, guard = { "stop", "rollback" },
+      transfer = { "apic", "pic" } }
     for _, k in ipairs { "heat", "solver", "guard", "transfer" } do
-      if ks[k] then oo[k] = ks[k] end
+      if ks[k] then
+        local ok = false
+        for _, c in ipairs(knob_choices[k]) do ok = ok or ks[k]:lower() == c end
+        if not ok then
+          usage_error(("--set %s=%s: valid: %s"):format(k, ks[k], table.concat(knob_choices[k], ", ")), 2)
+        end
+        oo[k] = ks[k]
+      end
     end
     if oo.dim == 3 and oo.box and not ((oo.box[2][3] or 0) > (oo.box[1][3] or 0)) then
       usage_error("--set dim=3: this scene's box has no z extent, so it cannot run in 3D", 2)
