@@ -571,8 +571,27 @@ sandbox_sigint_loop)
     stop loop INT 130
     stop pcall_loop INT 130
     stop coroutine_loop INT 130
+    stop recursion INT 130
+    stop rep_loop INT 130
     stop loop TERM 143
     stop run INT 130
+    # hearth repl: a runaway command at the prompt stops the same way
+    mkfifo cmds
+    "$hearth" repl >out.txt 2>err.txt <cmds &
+    bg_pid=$!
+    exec 3>cmds
+    echo 'io.stdout:setvbuf("no") print("started") while true do end' >&3
+    for _ in $(seq 100); do grep -q started out.txt && break; sleep 0.05; done
+    grep -q started out.txt || fail "repl: the command did not start: $(cat err.txt)"
+    kill -INT "$bg_pid"
+    for _ in $(seq 40); do kill -0 "$bg_pid" 2>/dev/null || break; sleep 0.025; done
+    kill -0 "$bg_pid" 2>/dev/null && fail "repl: still running 1 s after SIGINT"
+    wait "$bg_pid"
+    rc=$?
+    bg_pid=
+    exec 3>&-
+    expect_rc 130 "repl after SIGINT"
+    has err.txt "interrupted by SIGINT" "repl: the message"
     # the outputs written before the interrupt are whole, and no temp file is left
     out=hearth-out/runaway
     summary=$(whole_files "$out") || fail "a truncated file after SIGINT"

@@ -9,6 +9,13 @@ if P.kind == "loop" then
 elseif P.kind == "pcall_loop" then
   -- catching the interrupt must not keep the scene alive
   while true do pcall(function() while true do end end) end
+elseif P.kind == "recursion" then
+  -- deep recursion that catches its own stack overflows and goes on forever
+  local function f(n) while true do pcall(f, n + 1) end end
+  f(1)
+elseif P.kind == "rep_loop" then
+  -- big strings made and dropped, under the memory ceiling, forever
+  while true do local s = string.rep("x", 1 << 22) end
 elseif P.kind == "coroutine_loop" then
   local co = coroutine.wrap(function() while true do end end)
   co()
