@@ -45,9 +45,11 @@ static int marked_error(lua_State *L, int idx) {
 }
 
 int hl_raise_kind(lua_State *L, const char *kind, const char *msg) {
-    lua_createtable(L, 0, 2);
+    lua_createtable(L, 0, 3);
     lua_pushstring(L, kind);
     lua_setfield(L, -2, "kind");
+    lua_pushboolean(L, !strcmp(kind, "guard")); /* scenes test e.guard to tell a guard stop from an error */
+    lua_setfield(L, -2, "guard");
     lua_pushstring(L, msg);
     lua_setfield(L, -2, "message");
     luaL_setmetatable(L, HL_ERROR);

@@ -612,6 +612,7 @@ scene_error_table_not_guard)
     grep -q "stability guard" err.txt && fail "a forged table reported as a guard stop: $(cat err.txt)"
     run error_kinds.lua --set kind=rethrow_guard
     expect_rc 3 "a real guard stop passed on with error(e)"
+    has out.txt "caught	false	guard=true	kind=guard" "a caught guard stop says so (e.guard, e.kind)"
     has err.txt "stability guard" "the real guard stop"
     has err.txt "CFL" "the real guard stop's diagnosis"
     ;;

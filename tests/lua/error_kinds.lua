@@ -19,6 +19,6 @@ elseif P.kind == "rethrow_guard" then
   local s = h.scene { dim = 2, dx = 1 / 32, box = { { 0, 0 }, { 1, 1 } }, cfl = 4 }
   s:add { shape = h.box({ 0.3, 0.3 }, { 0.7, 0.6 }), material = h.material("elastic", { E = 1e4, nu = 0.3, density = 1000 }) }
   local ok, e = pcall(s.run, s, { until_t = 2 })
-  print("caught", ok, tostring(e):sub(1, 20))
+  print("caught", ok, "guard=" .. tostring(e.guard), "kind=" .. tostring(e.kind))
   error(e) -- the real guard stop, passed on: still a guard stop
 end
