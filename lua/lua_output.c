@@ -60,8 +60,11 @@ static const char *resolve_target(const char *path, char *out, size_t n) {
 
 const char *hl_out_path(lua_State *L, const char *call, const char *path, int flags, char *buf, size_t n) {
     const hl_options *o = hl_opts(L);
-    if (path[0] == '/' || !o->out_dir || (flags & HL_PATH_AS_IS)) snprintf(buf, n, "%s", path);
-    else snprintf(buf, n, "%s/%s", o->out_dir, path);
+    int w;
+    if (path[0] == '/' || !o->out_dir || (flags & HL_PATH_AS_IS)) w = snprintf(buf, n, "%s", path);
+    else w = snprintf(buf, n, "%s/%s", o->out_dir, path);
+    if (w < 0 || (size_t)w >= n) /* a cut path would name another file than the one checked and asked for */
+        return hl_errorf(L, "%s: the path '%.200s...' is longer than %zu bytes", call, path, n - 1), (const char *)NULL;
     if (!o->trusted) {
         char out_real[PATH_MAX], target[PATH_MAX];
         hearth_error err;
