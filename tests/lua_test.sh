@@ -440,6 +440,11 @@ sandbox_write_escapes)
     has_msg "--trust" "missing folder and ..: --trust"
     [ -z "$(ls -A elsewhere)" ] || fail "h.write through new/../.. wrote outside: $(ls -A elsewhere)"
     [ -e "$out/new" ] && fail "the refused write created the folder new/"
+    # a path longer than the gate's buffer is refused, not cut to another name
+    long=$(printf 'd/%.0s' $(seq 2100))x.txt
+    run escape.lua --set call=write --set "target=$long"
+    expect_rc 1 "h.write of a path too long"
+    has_msg "is longer than" "a path too long: the reason"
     # the same writes inside the output folder work, sub-folders made on the way
     for call in vtu ply save write; do
         run escape.lua --set "call=$call" --set "target=in/$call.out"
