@@ -1,11 +1,18 @@
-/* hearth_lua.c: opening the `hearth` module in a Lua state.
+/* hearth_lua.c: the Lua state scenes run in, and the `hearth` module in it.
  *
- * `require "hearth"` runs the embedded lua/hearth/init.lua with the C core
- * table (hearth.core) as its argument. The options (output folder, --set
+ * hl_new_state is the one constructor: a counting allocator with a ceiling,
+ * an interrupt hook, the standard library (sandboxed unless trusted) and the
+ * module. `require "hearth"` runs the embedded lua/hearth/init.lua with the C
+ * core table (hearth.core) as its argument. The options (output folder, --set
  * values, overrides) are kept in the registry for the module's functions. */
+#define _POSIX_C_SOURCE 200809L /* sigaction */
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+#include <lualib.h>
 
 #include "hearth_lua.h"
 
@@ -25,9 +32,50 @@ const hl_options *hl_opts(lua_State *L) {
     return o;
 }
 
+#define HL_ERROR "hearth.error" /* metatable of the module's marked errors (guard stops, usage) */
+
+/* Is the value at idx one of the module's marked errors? Compares the real
+ * metatable (lua_getmetatable ignores __metatable), which scenes cannot reach. */
+static int marked_error(lua_State *L, int idx) {
+    if (lua_type(L, idx) != LUA_TTABLE || !lua_getmetatable(L, idx)) return 0;
+    luaL_getmetatable(L, HL_ERROR);
+    int ours = lua_rawequal(L, -1, -2);
+    lua_pop(L, 2);
+    return ours;
+}
+
+int hl_raise_kind(lua_State *L, const char *kind, const char *msg) {
+    lua_createtable(L, 0, 3);
+    lua_pushstring(L, kind);
+    lua_setfield(L, -2, "kind");
+    lua_pushboolean(L, !strcmp(kind, "guard")); /* scenes test e.guard to tell a guard stop from an error */
+    lua_setfield(L, -2, "guard");
+    lua_pushstring(L, msg);
+    lua_setfield(L, -2, "message");
+    luaL_setmetatable(L, HL_ERROR);
+    return lua_error(L);
+}
+
+static int l_error_tostring(lua_State *L) {
+    lua_getfield(L, 1, "message");
+    return 1;
+}
+
+/* core.usage_error(msg [, level]): a bad --set value, exit 2 in hearth run;
+ * level as error()'s, for the scene line that declared the parameter */
+static int l_usage_error(lua_State *L) {
+    const char *msg = luaL_checkstring(L, 1);
+    int level = (int)luaL_optinteger(L, 2, 0);
+    if (level > 0) luaL_where(L, level);
+    else lua_pushliteral(L, "");
+    lua_pushstring(L, msg);
+    lua_concat(L, 2);
+    return hl_raise_kind(L, "usage", lua_tostring(L, -1));
+}
+
 static int traceback(lua_State *L) {
-    if (lua_istable(L, 1)) return 1; /* a guard stop: its message is the diagnosis, no traceback */
-    const char *msg = lua_tostring(L, 1);
+    if (marked_error(L, 1)) return 1; /* a guard stop or usage error: its message says it all, no traceback */
+    const char *msg = lua_type(L, 1) == LUA_TSTRING || lua_type(L, 1) == LUA_TNUMBER ? lua_tostring(L, 1) : NULL;
     if (!msg) msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
     luaL_traceback(L, L, msg, 1);
     return 1;
@@ -104,6 +152,8 @@ static int open_core(lua_State *L) {
     lua_setfield(L, -2, "progress");
     lua_pushcfunction(L, l_field_unit);
     lua_setfield(L, -2, "field_unit");
+    lua_pushcfunction(L, l_usage_error);
+    lua_setfield(L, -2, "usage_error");
     lua_pushstring(L, HEARTH_VERSION);
     lua_setfield(L, -2, "version");
     return 1;
@@ -135,7 +185,185 @@ void hl_open(lua_State *L, const hl_options *opt) {
         lua_setfield(L, -2, e->name);
     }
     lua_pop(L, 2);
-    if (!opt->trusted) hl_sandbox(L, opt->out_dir);
+    if (luaL_newmetatable(L, HL_ERROR)) {
+        lua_pushcfunction(L, l_error_tostring);
+        lua_setfield(L, -2, "__tostring");
+        lua_pushliteral(L, HL_ERROR); /* getmetatable(e) gives this string: a scene cannot forge a guard stop */
+        lua_setfield(L, -2, "__metatable");
+    }
+    lua_pop(L, 1);
+}
+
+/* ---- the state: memory ceiling, interrupts ---------------------------- */
+
+typedef struct hl_mem {
+    size_t used, limit;
+    int hit; /* an allocation was refused for the ceiling */
+} hl_mem;
+
+/* Lua's allocator with a ceiling: growing past limit fails like malloc, so
+ * Lua raises its memory error, which hl_error_message names. Shrinking and
+ * freeing always succeed. */
+static void *counting_alloc(void *ud, void *ptr, size_t osize, size_t nsize) {
+    hl_mem *m = ud;
+    const size_t old = ptr ? osize : 0; /* without ptr, osize is a type tag */
+    if (nsize == 0) {
+        free(ptr);
+        m->used -= old;
+        return NULL;
+    }
+    if (nsize > old && nsize - old > m->limit - m->used) {
+        m->hit = 1;
+        return NULL;
+    }
+    void *p = realloc(ptr, nsize);
+    if (!p) return NULL;
+    m->used = m->used - old + nsize;
+    return p;
+}
+
+static int on_panic(lua_State *L) {
+    const char *msg = lua_tostring(L, -1);
+    fprintf(stderr, "hearth: Lua panic (an error outside any protected call): %s\n", msg ? msg : "?");
+    return 0; /* Lua aborts */
+}
+
+static volatile sig_atomic_t g_signal;
+static int (*g_host_interrupted)(void);
+static lua_State *volatile g_main; /* the state of hl_new_state, for the signal handler */
+static void interrupt_hook(lua_State *L, lua_Debug *ar);
+
+static void on_signal(int sig) {
+    if (g_signal) _exit(128 + sig); /* the second Ctrl-C: the user means it */
+    g_signal = sig;
+    /* lua_sethook is safe in a signal handler (the manual says so): the main
+     * thread now stops at its next instruction, not its next count */
+    if (g_main) lua_sethook(g_main, interrupt_hook, LUA_MASKCALL | LUA_MASKRET | LUA_MASKCOUNT, 1);
+}
+
+void hl_interrupt_install(void) {
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+}
+
+int hl_interrupted(void) {
+    if (g_signal) return (int)g_signal;
+    return g_host_interrupted ? g_host_interrupted() : 0;
+}
+
+/* Every HOOK_COUNT instructions in every coroutine (a new thread inherits its
+ * creator's hook). Once a signal stands the hook fires at every instruction,
+ * call and return of the thread it caught, and raises each time: a pcall in
+ * the scene catches the error only to meet it again at its next instruction,
+ * so the scene unwinds to the host. */
+#define HOOK_COUNT 1000
+static void interrupt_hook(lua_State *L, lua_Debug *ar) {
+    (void)ar;
+    int sig = hl_interrupted();
+    if (!sig) return;
+    lua_sethook(L, interrupt_hook, LUA_MASKCALL | LUA_MASKRET | LUA_MASKCOUNT, 1);
+    lua_pushstring(L, sig == SIGTERM ? "interrupted by SIGTERM" : sig == SIGINT ? "interrupted by SIGINT" : "interrupted by a signal");
+    lua_error(L);
+}
+
+static int open_state(lua_State *L) {
+    const hl_options *opt = lua_touserdata(L, 1);
+    if (opt->trusted) luaL_openlibs(L);
+    else hl_open_sandboxed_libs(L);
+    hl_open(L, opt);
+    return 0;
+}
+
+lua_State *hl_new_state(const hl_options *opt, hearth_error *err) {
+    hl_mem *m = calloc(1, sizeof *m);
+    if (!m) {
+        err->code = HEARTH_ERR_NOMEM;
+        snprintf(err->msg, sizeof err->msg, "out of memory starting Lua");
+        return NULL;
+    }
+    m->limit = opt->lua_memory ? opt->lua_memory : HL_LUA_MEMORY_DEFAULT;
+    lua_State *L = lua_newstate(counting_alloc, m);
+    if (!L) {
+        free(m);
+        err->code = HEARTH_ERR_NOMEM;
+        snprintf(err->msg, sizeof err->msg, "out of memory starting Lua");
+        return NULL;
+    }
+    lua_atpanic(L, on_panic);
+    lua_setwarnf(L, NULL, NULL);
+    g_host_interrupted = opt->interrupted;
+    lua_sethook(L, interrupt_hook, LUA_MASKCOUNT, HOOK_COUNT);
+    g_main = L;
+    /* before any scene code: native code only by name from folders the scene cannot write */
+    if (!opt->trusted) hearth_plugin_restrict(opt->out_dir);
+    lua_pushcfunction(L, open_state);
+    lua_pushlightuserdata(L, (void *)opt);
+    if (lua_pcall(L, 1, 0, 0) != LUA_OK) {
+        err->code = HEARTH_ERR_NOMEM;
+        snprintf(err->msg, sizeof err->msg, "cannot start Lua: %s (the Lua memory ceiling is %zu bytes; see --lua-memory)",
+                 lua_tostring(L, -1) ? lua_tostring(L, -1) : "?", m->limit);
+        hl_close_state(L);
+        return NULL;
+    }
+    return L;
+}
+
+void hl_close_state(lua_State *L) {
+    if (!L) return;
+    if (g_main == L) g_main = NULL;
+    lua_sethook(L, NULL, 0, 0); /* the scene's finalizers (freeing scenes) run even after an interrupt */
+    void *ud = NULL;
+    const lua_Alloc f = lua_getallocf(L, &ud);
+    lua_close(L);
+    if (f == counting_alloc) free(ud);
+}
+
+/* "512 MiB", "1.5 GiB", "300000 bytes" */
+static void format_size(char *buf, size_t n, size_t bytes) {
+    if (bytes >= ((size_t)1 << 30) && bytes % ((size_t)1 << 30) == 0) snprintf(buf, n, "%zu GiB", bytes >> 30);
+    else if (bytes >= ((size_t)1 << 20) && bytes % ((size_t)1 << 20) == 0) snprintf(buf, n, "%zu MiB", bytes >> 20);
+    else snprintf(buf, n, "%zu bytes", bytes);
+}
+
+hl_error_kind hl_error_message(lua_State *L, int idx) {
+    idx = lua_absindex(L, idx);
+    int sig = hl_interrupted();
+    if (sig) {
+        lua_pushstring(L, sig == SIGTERM ? "interrupted by SIGTERM" : sig == SIGINT ? "interrupted by SIGINT" : "interrupted by a signal");
+        return HL_ERR_INTERRUPT;
+    }
+    if (marked_error(L, idx)) {
+        lua_getfield(L, idx, "kind");
+        const int guard = lua_tostring(L, -1) && !strcmp(lua_tostring(L, -1), "guard");
+        lua_pop(L, 1);
+        lua_getfield(L, idx, "message");
+        if (!lua_isstring(L, -1)) {
+            lua_pop(L, 1);
+            lua_pushliteral(L, "(no message)");
+        }
+        return guard ? HL_ERR_GUARD : HL_ERR_USAGE;
+    }
+    const int t = lua_type(L, idx);
+    if (t != LUA_TSTRING && t != LUA_TNUMBER) {
+        lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, idx));
+        return HL_ERR_SCRIPT;
+    }
+    const char *msg = lua_tostring(L, idx);
+    void *ud = NULL;
+    const hl_mem *m = lua_getallocf(L, &ud) == counting_alloc ? ud : NULL;
+    if (m && m->hit && !strncmp(msg, "not enough memory", 17)) {
+        char size[64];
+        format_size(size, sizeof size, m->limit);
+        lua_pushfstring(L, "not enough memory: the scene's Lua memory reached its ceiling of %s; "
+                           "raise it with --lua-memory SIZE (e.g. --lua-memory 2G)", size);
+        return HL_ERR_MEMORY;
+    }
+    lua_pushstring(L, msg);
+    return HL_ERR_SCRIPT;
 }
 
 /* the module table, from package.loaded (loading it if need be); raises on failure */

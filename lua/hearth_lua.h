@@ -14,6 +14,10 @@
 #define HL_SCENE "hearth.scene"
 #define HL_SHAPE "hearth.shape"
 
+/// The Lua memory ceiling when the host gives none (--lua-memory): room for
+/// any scene we ship many times over, far below what takes a machine down.
+#define HL_LUA_MEMORY_DEFAULT ((size_t)512 << 20)
+
 /// Options a host (the command line) gives the module before scenes run.
 typedef struct hl_options {
     const char *out_dir;    ///< output folder; relative paths in scenes resolve here
@@ -29,7 +33,45 @@ typedef struct hl_options {
     void *progress_ud;
     int yield_steps;        ///< s:run and s:step yield (coroutine.yield) between steps, so a host
                             ///< running them in a coroutine can draw and take input (the dashboard)
+    size_t lua_memory;      ///< ceiling of the Lua state's memory in bytes (0 = HL_LUA_MEMORY_DEFAULT)
+    /// A host's own stop flag (the dashboard's signal handler), polled with the
+    /// module's own by the interrupt hook; NULL for none. Returns a signal number or 0.
+    int (*interrupted)(void);
 } hl_options;
+
+/// The one constructor of a Lua state that runs scenes (hearth run, repl, the
+/// dashboard, the scene fuzz target). It has a counting allocator that refuses
+/// past opt->lua_memory, an interrupt hook (see hl_interrupt_install), the
+/// standard library (all of it with opt->trusted; without, the allow-list
+/// sandbox of lua_sandbox.c, and plugins restricted to names on the search
+/// path outside the output folder: hearth_plugin_restrict), and the hearth
+/// module (hl_open). Returns NULL with err set when Lua cannot start.
+lua_State *hl_new_state(const hl_options *opt, hearth_error *err);
+/// Close a state made by hl_new_state and free its allocator record.
+void hl_close_state(lua_State *L);
+
+/// SIGINT and SIGTERM stop the running scene: the handler only sets a flag,
+/// and the interrupt hook (every few hundred Lua instructions, in every
+/// coroutine) raises "interrupted by SIGINT" until the scene has unwound, so a
+/// pcall in the scene cannot swallow it. A second signal exits at once with
+/// 128 + its number. Work in C (a simulation step, a file write) finishes
+/// first, so completed outputs are whole.
+void hl_interrupt_install(void);
+/// The signal that stopped the scene (SIGINT, SIGTERM), or 0.
+int hl_interrupted(void);
+
+/// What an error value left by hl_pcall (or a failed resume) is.
+typedef enum hl_error_kind {
+    HL_ERR_SCRIPT,    ///< an error in the scene (or a bad call): exit 1
+    HL_ERR_GUARD,     ///< the stability guard stopped a run: exit 3
+    HL_ERR_USAGE,     ///< a bad --set value (core.usage_error): exit 2
+    HL_ERR_MEMORY,    ///< the Lua memory ceiling was reached: exit 1
+    HL_ERR_INTERRUPT, ///< SIGINT / SIGTERM (hl_interrupted says which): exit 128 + signal
+} hl_error_kind;
+/// Classify the error value at idx and push its message (a string, always).
+/// Only errors made by the module are guard or usage errors: their marker
+/// metatable is hidden from scenes, so error({}) is a script error.
+hl_error_kind hl_error_message(lua_State *L, int idx);
 
 /// Open the module into L: registers package.preload.hearth and sets the options.
 void hl_open(lua_State *L, const hl_options *opt);
@@ -41,8 +83,8 @@ int hl_pcall(lua_State *L, int nargs, int nres);
 void hl_push_scene(lua_State *L, hearth_scene *s);
 /// The C scene of the module's current scene (the last h.scene / h.load), or NULL.
 hearth_scene *hl_current_scene(lua_State *L);
-/// Set up the restricted environment for untrusted scenes (see lua_sandbox.c).
-void hl_sandbox(lua_State *L, const char *out_dir);
+/// Open the standard library as the allow-list sandbox for untrusted scenes (see lua_sandbox.c).
+void hl_open_sandboxed_libs(lua_State *L);
 
 /* internal, between the binding's files */
 typedef struct hl_scene {
@@ -54,8 +96,20 @@ void hl_pushshape(lua_State *L, hearth_shape *sh); /* takes ownership; raises on
 const hl_options *hl_opts(lua_State *L);
 /* a vector of 2 or 3 numbers at idx (z = 0 when absent) */
 void hl_checkvec(lua_State *L, int idx, const char *what, double v[3]);
-/* resolve a scene path against the output folder (absolute paths stay) into buf */
-const char *hl_out_path(lua_State *L, const char *path, char *buf, size_t n);
+/* The one gate for every file a scene writes (frames, VTU, PLY, CSV,
+ * checkpoints, h.write, io.open for writing, os.remove / os.rename): joins a
+ * relative path to the output folder, resolves the real location of its
+ * deepest existing part (symlinks and ..), and without --trust raises an
+ * error naming `call`, the path, the output folder and --trust when it lies
+ * outside the output folder. flags: HL_PATH_MKDIRS creates the file's missing
+ * folders; HL_PATH_AS_IS leaves a relative path relative to the working
+ * folder, as Lua's own io and os functions take it. The result is in buf. */
+enum { HL_PATH_MKDIRS = 1, HL_PATH_AS_IS = 2 };
+const char *hl_out_path(lua_State *L, const char *call, const char *path, int flags, char *buf, size_t n);
+/* a path a scene reads: relative paths resolve under the output folder (absolute ones stay) */
+const char *hl_in_path(lua_State *L, const char *path, char *buf, size_t n);
+/* a marked error object (kind "guard" or "usage") with message msg; see hl_error_message */
+int hl_raise_kind(lua_State *L, const char *kind, const char *msg);
 int hl_raise(lua_State *L, const hearth_error *err);
 /* luaL_error with C printf formats (%g and friends, which lua_pushfstring lacks). */
 int hl_errorf(lua_State *L, const char *fmt, ...) __attribute__((format(printf, 2, 3)));

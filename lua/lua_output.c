@@ -1,28 +1,108 @@
 /* lua_output.c: files a scene writes: pictures, particle dumps, checkpoints,
  * and the atomic text writer the Lua side uses for CSV series. Relative paths
- * resolve under the output folder, which is created when missing. */
+ * resolve under the output folder, which is created when missing. Every one
+ * of them, and every write the sandbox allows (io.open, os.remove,
+ * os.rename), passes hl_out_path: the one place that decides what a scene
+ * may write. It lives here at the bottom, in C, because a scene can reach
+ * hearth.core's raw functions around any check made in Lua. */
+#define _XOPEN_SOURCE 700 /* realpath, lstat */
 #include <errno.h>
+#include <limits.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
 #include "atomic_file.h"
 #include "hearth_lua.h"
 
+/* Does the path (a "/"-separated tail of folders not yet made) hold a ".."
+ * component? Such a tail cannot be resolved before the folders exist. */
+static int has_dotdot(const char *tail) {
+    for (const char *p = tail; *p;) {
+        const char *e = strchr(p, '/');
+        size_t len = e ? (size_t)(e - p) : strlen(p);
+        if (len == 2 && p[0] == '.' && p[1] == '.') return 1;
+        if (!e) break;
+        p = e + 1;
+    }
+    return 0;
+}
 
-const char *hl_out_path(lua_State *L, const char *path, char *buf, size_t n) {
+/* The real location of path, which need not exist yet: realpath of its
+ * deepest existing ancestor with the missing rest appended. Returns NULL on
+ * success, or why it cannot say where the path leads. */
+static const char *resolve_target(const char *path, char *out, size_t n) {
+    char head[PATH_MAX], tail[PATH_MAX] = "", real[PATH_MAX];
+    if (snprintf(head, sizeof head, "%s", path) >= (int)sizeof head) return "the path is too long";
+    for (;;) {
+        size_t hl = strlen(head);
+        while (hl > 1 && head[hl - 1] == '/') head[--hl] = '\0'; /* "a/b/" is "a/b" */
+        if (realpath(hl ? head : ".", real)) break;
+        struct stat st;
+        if (hl && lstat(head, &st) == 0) /* it exists, yet does not resolve: a dangling or looping link */
+            return "it passes through a symbolic link that does not resolve";
+        if (!hl || !strcmp(head, "/") || !strcmp(head, ".")) return "no part of it exists";
+        char *slash = strrchr(head, '/');
+        const char *comp = slash ? slash + 1 : head;
+        char t[PATH_MAX];
+        if (snprintf(t, sizeof t, "%s%s%s", comp, tail[0] ? "/" : "", tail) >= (int)sizeof t) return "the path is too long";
+        memcpy(tail, t, sizeof tail);
+        if (!slash) head[0] = '\0';
+        else if (slash == head) head[1] = '\0';
+        else *slash = '\0';
+    }
+    if (has_dotdot(tail)) return "'..' follows a folder that does not exist";
+    size_t rl = strlen(real);
+    if (snprintf(out, n, "%s%s%s", real, tail[0] && real[rl - 1] != '/' ? "/" : "", tail) >= (int)n) return "the path is too long";
+    return NULL;
+}
+
+const char *hl_out_path(lua_State *L, const char *call, const char *path, int flags, char *buf, size_t n) {
+    const hl_options *o = hl_opts(L);
+    int w;
+    if (path[0] == '/' || !o->out_dir || (flags & HL_PATH_AS_IS)) w = snprintf(buf, n, "%s", path);
+    else w = snprintf(buf, n, "%s/%s", o->out_dir, path);
+    if (w < 0 || (size_t)w >= n) /* a cut path would name another file than the one checked and asked for */
+        return hl_errorf(L, "%s: the path '%.200s...' is longer than %zu bytes", call, path, n - 1), (const char *)NULL;
+    if (!o->trusted) {
+        char out_real[PATH_MAX], target[PATH_MAX];
+        hearth_error err;
+        if (!o->out_dir || hearth_mkdir_p(o->out_dir, &err) || !realpath(o->out_dir, out_real))
+            return luaL_error(L, "%s: '%s': the output folder '%s' cannot be resolved, so a scene without --trust cannot "
+                                 "write (run with --trust to allow it)", call, path, o->out_dir ? o->out_dir : "(none)"),
+                   (const char *)NULL;
+        const char *why = resolve_target(buf, target, sizeof target);
+        if (why)
+            return luaL_error(L, "%s: '%s' is refused: %s, so it may lead outside the output folder '%s'; a scene "
+                                 "without --trust writes only inside its output folder (run with --trust to allow it)",
+                              call, path, why, o->out_dir),
+                   (const char *)NULL;
+        size_t ol = strlen(out_real);
+        int inside = !strcmp(out_real, "/") || (!strncmp(target, out_real, ol) && (target[ol] == '/' || target[ol] == '\0'));
+        if (!inside)
+            return luaL_error(L, "%s: '%s' is outside the output folder '%s' (it resolves to '%s'); a scene without "
+                                 "--trust writes only inside its output folder (run with --trust to allow it)",
+                              call, path, o->out_dir, target),
+                   (const char *)NULL;
+    }
+    if (flags & HL_PATH_MKDIRS) { /* make the file's folder, so "frames/t0001.png" just works */
+        char dir[4096];
+        snprintf(dir, sizeof dir, "%s", buf);
+        char *slash = strrchr(dir, '/');
+        if (slash && slash != dir) {
+            *slash = '\0';
+            hearth_error err;
+            if (hearth_mkdir_p(dir, &err)) hl_raise(L, &err);
+        }
+    }
+    return buf;
+}
+
+const char *hl_in_path(lua_State *L, const char *path, char *buf, size_t n) {
     const hl_options *o = hl_opts(L);
     if (path[0] == '/' || !o->out_dir) snprintf(buf, n, "%s", path);
     else snprintf(buf, n, "%s/%s", o->out_dir, path);
-    /* make the file's folder, so "frames/t0001.png" just works */
-    char dir[4096];
-    snprintf(dir, sizeof dir, "%s", buf);
-    char *slash = strrchr(dir, '/');
-    if (slash && slash != dir) {
-        *slash = '\0';
-        hearth_error err;
-        if (hearth_mkdir_p(dir, &err)) hl_raise(L, &err);
-    }
     return buf;
 }
 
@@ -31,7 +111,7 @@ static int l_png(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     const char *field = luaL_checkstring(L, 2);
     char buf[4096];
-    const char *path = hl_out_path(L, luaL_checkstring(L, 3), buf, sizeof buf);
+    const char *path = hl_out_path(L, "s:png", luaL_checkstring(L, 3), HL_PATH_MKDIRS, buf, sizeof buf);
     const char *kind = "slice";
     const hearth_scene_def *d = hearth_scene_get_def(u->s);
     int width = 800, height = 0, axis = 2;
@@ -70,24 +150,26 @@ static int l_png(lua_State *L) {
     return 1;
 }
 
-static int dump(lua_State *L, hearth_status (*fn)(const hearth_scene *, const char *, hearth_error *)) {
+static int dump(lua_State *L, const char *call, hearth_status (*fn)(const hearth_scene *, const char *, hearth_error *)) {
     hl_scene *u = hl_checkscene(L, 1);
     char buf[4096];
-    const char *path = hl_out_path(L, luaL_checkstring(L, 2), buf, sizeof buf);
+    const char *path = hl_out_path(L, call, luaL_checkstring(L, 2), HL_PATH_MKDIRS, buf, sizeof buf);
     hearth_error err;
     if (fn(u->s, path, &err)) return hl_raise(L, &err);
     lua_pushstring(L, path);
     return 1;
 }
-static int l_vtu(lua_State *L) { return dump(L, hearth_write_vtu); }
-static int l_ply(lua_State *L) { return dump(L, hearth_write_ply); }
-static int l_save(lua_State *L) { return dump(L, hearth_scene_save); }
+static int l_vtu(lua_State *L) { return dump(L, "s:vtu", hearth_write_vtu); }
+static int l_ply(lua_State *L) { return dump(L, "s:ply", hearth_write_ply); }
+static int l_save(lua_State *L) { return dump(L, "s:save", hearth_scene_save); }
 
-/* core.write_atomic(path, text): for CSV series and anything else a scene writes */
+/* core.write_atomic(path, text [, call]): for CSV series and anything else a
+ * scene writes; call names the Lua function in messages (default h.write) */
 static int l_write_atomic(lua_State *L) {
     size_t len;
     char buf[4096];
-    const char *path = hl_out_path(L, luaL_checkstring(L, 1), buf, sizeof buf);
+    const char *call = luaL_optstring(L, 3, "h.write");
+    const char *path = hl_out_path(L, call, luaL_checkstring(L, 1), HL_PATH_MKDIRS, buf, sizeof buf);
     const char *text = luaL_checklstring(L, 2, &len);
     atomic_file af;
     hearth_error err;

@@ -14,16 +14,8 @@ hl_scene *hl_checkscene(lua_State *L, int idx) {
 }
 
 int hl_raise(lua_State *L, const hearth_error *err) {
-    if (err->code == HEARTH_ERR_GUARD) { /* a table, so `hearth run` can tell a guard stop (exit 3) from a script error */
-        lua_createtable(L, 0, 2);
-        lua_pushboolean(L, 1);
-        lua_setfield(L, -2, "guard");
-        lua_pushstring(L, err->msg);
-        lua_setfield(L, -2, "message");
-        luaL_getmetatable(L, "hearth.guard_error");
-        lua_setmetatable(L, -2);
-        return lua_error(L);
-    }
+    /* a marked object, so `hearth run` can tell a guard stop (exit 3) from a script error */
+    if (err->code == HEARTH_ERR_GUARD) return hl_raise_kind(L, "guard", err->msg);
     return luaL_error(L, "%s", err->msg);
 }
 
@@ -649,7 +641,7 @@ static int l_hash(lua_State *L) {
 
 static int l_load(lua_State *L) {
     char buf[4096];
-    const char *path = hl_out_path(L, luaL_checkstring(L, 1), buf, sizeof buf);
+    const char *path = hl_in_path(L, luaL_checkstring(L, 1), buf, sizeof buf);
     hearth_error err;
     hearth_scene *s = hearth_scene_load(path, &err);
     if (!s) return hl_raise(L, &err);
@@ -658,11 +650,6 @@ static int l_load(lua_State *L) {
     luaL_setmetatable(L, HL_SCENE);
     lua_newtable(L);
     lua_setiuservalue(L, -2, 1);
-    return 1;
-}
-
-static int l_guard_tostring(lua_State *L) {
-    lua_getfield(L, 1, "message");
     return 1;
 }
 
@@ -679,10 +666,6 @@ void hl_open_scene(lua_State *L) {
     lua_setfield(L, -2, "__gc");
     luaL_newlib(L, methods);
     lua_setfield(L, -2, "__index");
-    lua_pop(L, 1);
-    luaL_newmetatable(L, "hearth.guard_error");
-    lua_pushcfunction(L, l_guard_tostring);
-    lua_setfield(L, -2, "__tostring");
     lua_pop(L, 1);
     static const luaL_Reg fns[] = {{"scene_new", l_scene_new}, {"load", l_load}, {"material_check", l_material_check},
                                    {NULL, NULL}};

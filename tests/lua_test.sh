@@ -105,8 +105,13 @@ lua_error_messages)
     check err_range_unit.lua 2 "'density' = 1e+09" "[0.001, 100000] kg/m^3"
     check err_curve.lua 2 "h.curve: temperatures must increase" "point 2: 50 after 100"
     check err_add_nomat.lua 3 "s:add: material = h.material(...) is required"
-    check err_plugin.lua 2 "plugin not found" "hearth_no_such_plugin_xyz.so" "search path" "$scenes" "HEARTH_PLUGIN_PATH"
+    check err_plugin.lua 2 "plugin not found" "hearth_no_such_plugin_xyz.so" "search path" "HEARTH_PLUGIN_PATH"
     if [ -n "${HEARTH_PLUGIN_PATH:-}" ]; then has err.txt "$HEARTH_PLUGIN_PATH" "plugin folders listed"; fi
+    # the scene's own folder is searched only with --trust (an untrusted scene may have put a plugin there)
+    grep -qE "(path: |, )$scenes[,;]" err.txt && fail "without --trust the scene's folder is on the plugin path: $(cat err.txt)"
+    run err_plugin.lua --trust
+    expect_rc 1 "err_plugin.lua --trust"
+    grep -qE "(path: |, )$scenes[,;]" err.txt || fail "--trust: the scene's folder is not on the plugin path: $(cat err.txt)"
     check err_not_live.lua 5 "field 'temperature' is not live" "to enable it" "temperature = 20"
     has out.txt "speed" "a live field probes before the error"
     check err_runtime.lua 3 "attempt to call a nil value (field 'missing_function')" "stack traceback" \
@@ -154,20 +159,20 @@ lua_set_overrides)
     expect_rc 0 "--set sizes=0.5,3,1e2"
     has out.txt "sizes=0.5/3/100.0 n=3" "--set a number list"
     run params.lua --set sizes=1,x
-    expect_rc 1 "--set sizes=1,x"
+    expect_rc 2 "--set sizes=1,x"
     has err.txt "--set sizes=1,x: expected numbers separated by commas" "a bad number list"
     run params.lua --set nope=1
-    expect_rc 1 "--set nope=1"
+    expect_rc 2 "--set nope=1"
     has err.txt "no parameter 'nope'" "unknown parameter"
     has err.txt "valid names: height, label, sizes" "the valid names"
     run params.lua --set height=abc
-    expect_rc 1 "--set height=abc"
+    expect_rc 2 "--set height=abc"
     has err.txt "--set height=abc: expected a number" "non-number"
     run params.lua --set height
     expect_rc 2 "--set without ="
     has err.txt "--set needs name=value" "--set without ="
     run no_params.lua --set height=1
-    expect_rc 1 "--set on a scene without h.params"
+    expect_rc 2 "--set on a scene without h.params"
     has err.txt "declares no parameters" "no h.params"
     ;;
 lua_sandbox)
@@ -199,10 +204,11 @@ lua_sandbox)
     expect_rc 0 "io.open inside the output folder"
     has out.txt "open_in ok" "io.open inside"
     has hearth-out/sandbox/inside.txt "written from a scene" "the file written inside"
-    # load() of bytecode is refused (text chunks only)
+    # load() of bytecode is refused (text chunks only), and string.dump is not there to make any
     run sandbox.lua --set call=load_binary
     expect_rc 0 "load of a binary chunk"
     has out.txt "attempt to load a binary chunk" "load(bytecode) refused"
+    refused dump "string.dump is not allowed"
     # require of a C module: native code must not load, and the message must say so
     run sandbox.lua --set call=require_c
     expect_rc 1 "require of a C module"
@@ -398,6 +404,278 @@ lua_sph_library)
 lua_blend_modes)
     out=$("$hearth" run "$scenes/blend_modes.lua" --quiet 2>&1) || fail "blend_modes.lua: $out"
     echo "$out" | grep -q "blend modes ok" || fail "blend_modes.lua did not finish: $out"
+    ;;
+sandbox_write_escapes)
+    # every writer a scene has, aimed outside the output folder: refused with
+    # the call, the path and --trust named, and nothing written
+    mkdir -p elsewhere
+    out=hearth-out/escape
+    escape() { # call target what
+        local call=$1 target=$2 what=$3
+        run escape.lua --set "call=$call" --set "target=$target"
+        expect_rc 1 "$call to $target"
+        has_msg "$what" "$call: the call named"
+        has_msg "${target/\%04d/0000}" "$call: the path named"
+        has_msg "outside the output folder" "$call: the reason"
+        has_msg "--trust" "$call: --trust named"
+        grep -q "^done" out.txt && fail "$call: the scene went on after the refused write"
+        [ -z "$(ls -A elsewhere)" ] || fail "$call wrote outside the output folder: $(ls -A elsewhere)"
+        [ -z "$(find "$tmp" -maxdepth 2 -name 'x.*' -newer "$scenes/escape.lua" -not -path "*/hearth-out/*")" ] ||
+            fail "$call: a file appeared outside the output folder"
+    }
+    escape vtu "$tmp/elsewhere/x.vtu" "s:vtu"
+    escape ply "../../elsewhere/x.ply" "s:ply"
+    escape png "$tmp/elsewhere/x.png" "s:png"
+    escape save "$tmp/elsewhere/x.ck" "s:save"
+    escape csv "$tmp/elsewhere/x.csv" "s:run{csv = ...}"
+    escape frame_png "../../elsewhere/x_%04d.png" "s:png" # the path is named as formatted: x_0000.png
+    escape write "$tmp/elsewhere/x" "h.write"
+    escape write "sub/../../../elsewhere/x" "h.write"
+    escape core_write "$tmp/elsewhere/x" "h.write"
+    escape io_open "$tmp/elsewhere/x" "io.open('$tmp/elsewhere/x', 'w')"
+    # '..' after a folder that does not exist yet cannot be resolved: refused too
+    run escape.lua --set call=write --set "target=new/../../../elsewhere/x"
+    expect_rc 1 "h.write through a missing folder and .."
+    has_msg "h.write" "missing folder and ..: the call"
+    has_msg "--trust" "missing folder and ..: --trust"
+    [ -z "$(ls -A elsewhere)" ] || fail "h.write through new/../.. wrote outside: $(ls -A elsewhere)"
+    [ -e "$out/new" ] && fail "the refused write created the folder new/"
+    # a path longer than the gate's buffer is refused, not cut to another name
+    long=$(printf 'd/%.0s' $(seq 2100))x.txt
+    run escape.lua --set call=write --set "target=$long"
+    expect_rc 1 "h.write of a path too long"
+    has_msg "is longer than" "a path too long: the reason"
+    # the same writes inside the output folder work, sub-folders made on the way
+    for call in vtu ply save write; do
+        run escape.lua --set "call=$call" --set "target=in/$call.out"
+        expect_rc 0 "$call inside the output folder"
+        [ -s "$out/in/$call.out" ] || fail "$call inside: $out/in/$call.out not written"
+    done
+    # with --trust the scene may write where it likes
+    run escape.lua --trust --set call=write --set "target=$tmp/elsewhere/trusted.txt"
+    expect_rc 0 "--trust h.write outside"
+    has elsewhere/trusted.txt "text from a scene" "--trust: h.write outside"
+    ;;
+sandbox_symlink_escape)
+    # links inside the output folder that lead outside it: a folder link, a
+    # file link (h.write would follow it with io.open, s:vtu replaces it) and a
+    # dangling link to a file that does not exist yet
+    out=hearth-out/escape
+    mkdir -p "$out" elsewhere
+    echo keep >elsewhere/victim.txt
+    ln -s "$tmp/elsewhere" "$out/link"
+    ln -s "$tmp/elsewhere/victim.txt" "$out/victim.txt"
+    ln -s "$tmp/elsewhere/new.txt" "$out/dangling.txt"
+    for spec in "write link/x.txt h.write" "vtu link/x.vtu s:vtu" "io_open $out/link/x.txt io.open" \
+        "write victim.txt h.write" "io_open $out/victim.txt io.open" "save victim.txt s:save" \
+        "write dangling.txt h.write" "io_open $out/dangling.txt io.open"; do
+        set -- $spec
+        run escape.lua --set "call=$1" --set "target=$2"
+        expect_rc 1 "$1 through the link $2"
+        has_msg "$3" "link $2: the call named"
+        has_msg "--trust" "link $2: --trust named"
+    done
+    [ "$(cat elsewhere/victim.txt)" = keep ] || fail "a write through a file link changed the file outside"
+    [ -e elsewhere/new.txt ] && fail "a write through a dangling link created the file outside"
+    [ "$(ls elsewhere)" = victim.txt ] || fail "files appeared outside through links: $(ls elsewhere)"
+    # a link that stays inside the output folder is fine
+    mkdir -p "$out/real"
+    ln -s real "$out/inner"
+    run escape.lua --set call=write --set target=inner/ok.txt
+    expect_rc 0 "h.write through a link inside the output folder"
+    has "$out/real/ok.txt" "text from a scene" "the file behind the inner link"
+    ;;
+sandbox_plugin_path)
+    # native code a scene wrote itself: by its file name, by a path, by a name
+    # resolving into the output folder
+    run escape.lua --set call=plugin_written --set target=hearth_x.so
+    expect_rc 1 "h.material of a file the scene wrote"
+    has_msg "loads plugins by name" "a file name refused"
+    has_msg "--trust" "a file name: --trust named"
+    run escape.lua --set call=plugin_written --set target=hearth-out/escape/hearth_x.so
+    expect_rc 1 "h.material of a path"
+    has_msg "loads plugins by name" "a path refused"
+    grep -q "not loadable as a shared object" err.txt && fail "dlopen was tried on the scene's file: $(cat err.txt)"
+    # a real plugin placed in the output folder and put on the search path
+    real=$(ls "${HEARTH_PLUGIN_PATH%%:*}"/hearth_elastic.so) || fail "no elastic plugin on HEARTH_PLUGIN_PATH"
+    mkdir -p hearth-out/escape/plugins
+    cp "$real" hearth-out/escape/plugins/hearth_copied.so
+    HEARTH_PLUGIN_PATH="$tmp/hearth-out/escape/plugins:$HEARTH_PLUGIN_PATH" run escape.lua --set call=plugin_name --set target=copied
+    expect_rc 1 "a plugin in the output folder"
+    has_msg "in the output folder" "plugin in the output folder: the reason"
+    has_msg "--trust" "plugin in the output folder: --trust named"
+    # a plugin next to the scene loads only with --trust
+    mkdir -p scenedir
+    cp "$scenes/escape.lua" scenedir/
+    cp "$real" scenedir/hearth_besidescene.so
+    "$hearth" run scenedir/escape.lua --quiet --set call=plugin_name --set target=besidescene >out.txt 2>err.txt
+    rc=$?
+    expect_rc 1 "a plugin beside the scene without --trust"
+    has_msg "plugin not found" "beside the scene: not on the path"
+    "$hearth" run scenedir/escape.lua --quiet --trust --set call=plugin_name --set target=besidescene >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "a plugin beside the scene with --trust"
+    # names on the search path still work without --trust
+    run escape.lua --set call=plugin_name --set target=elastic
+    expect_rc 0 "h.material by name"
+    has out.txt "done plugin_name" "h.material by name"
+    ;;
+sandbox_debug_unreachable)
+    run sandbox_probe.lua
+    cat out.txt
+    expect_rc 0 "the probe scene"
+    grep -q "FAIL" out.txt && fail "reached something real: $(grep FAIL out.txt)"
+    [ "$(grep -c '^check .* ok$' out.txt)" -ge 35 ] || fail "too few checks ran: $(grep -c '^check' out.txt)"
+    has out.txt "probe done" "the probe's end"
+    [ -e /tmp/hearth_sandbox_probe_escape.txt ] && fail "hearth.core.write_atomic wrote to /tmp"
+    # with --trust the full library is back
+    echo 'print("trusted", debug ~= nil, type(string.dump), type(io.popen))' >trusted.lua
+    "$hearth" run trusted.lua --quiet --trust >out.txt 2>err.txt || fail "--trust scene: $(cat err.txt)"
+    has out.txt "trusted	true	function	function" "--trust: debug, string.dump, io.popen"
+    ;;
+sandbox_lua_memory)
+    run memory_hog.lua --lua-memory 32M
+    expect_rc 1 "a table growing past --lua-memory 32M"
+    has_msg "ceiling of 32 MiB" "the ceiling named"
+    has_msg "--lua-memory" "the flag named"
+    grep -q "unreachable" out.txt && fail "the scene went on past the ceiling"
+    run memory_hog.lua --set kind=rep
+    expect_rc 1 "a 1 GiB string.rep under the default ceiling"
+    has_msg "ceiling of 512 MiB" "the default ceiling named"
+    run tiny.lua --lua-memory 16M
+    expect_rc 0 "a small scene under --lua-memory 16M"
+    for bad in abc 12M 0 -5M 2Q; do
+        run tiny.lua --lua-memory "$bad"
+        expect_rc 2 "--lua-memory $bad"
+        has err.txt "--lua-memory needs a size" "--lua-memory $bad: the message"
+    done
+    ;;
+sandbox_sigint_loop)
+    # stop(kind, signal, status): start, wait for "started", signal, time the stop
+    stop() {
+        local kind=$1 sig=$2 want=$3
+        "$hearth" run "$scenes/runaway.lua" --quiet --set "kind=$kind" >out.txt 2>err.txt &
+        bg_pid=$!
+        for _ in $(seq 100); do grep -q started out.txt && break; sleep 0.05; done
+        grep -q started out.txt || fail "$kind: the scene did not start: $(cat err.txt)"
+        sleep 0.3
+        local t0 t1
+        t0=$(date +%s%N)
+        kill "-$sig" "$bg_pid"
+        for _ in $(seq 40); do kill -0 "$bg_pid" 2>/dev/null || break; sleep 0.025; done
+        t1=$(date +%s%N)
+        kill -0 "$bg_pid" 2>/dev/null && fail "$kind: still running 1 s after SIG$sig"
+        wait "$bg_pid"
+        rc=$?
+        bg_pid=
+        echo "$kind SIG$sig: exit $rc after $(((t1 - t0) / 1000000)) ms"
+        [ $(((t1 - t0) / 1000000)) -le 1000 ] || fail "$kind: took more than 1 s"
+        expect_rc "$want" "$kind after SIG$sig"
+        has err.txt "interrupted by SIG$sig" "$kind: the message"
+    }
+    stop loop INT 130
+    stop pcall_loop INT 130
+    stop coroutine_loop INT 130
+    stop recursion INT 130
+    stop rep_loop INT 130
+    stop loop TERM 143
+    stop run INT 130
+    # hearth repl: a runaway command at the prompt stops the same way
+    mkfifo cmds
+    "$hearth" repl >out.txt 2>err.txt <cmds &
+    bg_pid=$!
+    exec 3>cmds
+    echo 'io.stdout:setvbuf("no") print("started") while true do end' >&3
+    for _ in $(seq 100); do grep -q started out.txt && break; sleep 0.05; done
+    grep -q started out.txt || fail "repl: the command did not start: $(cat err.txt)"
+    kill -INT "$bg_pid"
+    for _ in $(seq 40); do kill -0 "$bg_pid" 2>/dev/null || break; sleep 0.025; done
+    kill -0 "$bg_pid" 2>/dev/null && fail "repl: still running 1 s after SIGINT"
+    wait "$bg_pid"
+    rc=$?
+    bg_pid=
+    exec 3>&-
+    expect_rc 130 "repl after SIGINT"
+    has err.txt "interrupted by SIGINT" "repl: the message"
+    # the outputs written before the interrupt are whole, and no temp file is left
+    out=hearth-out/runaway
+    summary=$(whole_files "$out") || fail "a truncated file after SIGINT"
+    echo "after SIGINT in s:run: $summary"
+    ls "$out"/frame_*.vtu >/dev/null 2>&1 || fail "no frame written before the interrupt"
+    ls -a "$out" | grep -q '\.tmp\.' && fail "temp files left after SIGINT: $(ls -a "$out")"
+    ;;
+scene_error_table_not_guard)
+    run error_kinds.lua --set kind=table
+    expect_rc 1 "error({})"
+    has_msg "error object is a table value" "error({}): what it was"
+    grep -q "stability guard" err.txt && fail "error({}) reported as a guard stop: $(cat err.txt)"
+    grep -q "(null)" err.txt && fail "error({}) printed (null): $(cat err.txt)"
+    run error_kinds.lua --set kind=forged
+    expect_rc 1 "a forged guard stop"
+    has out.txt "guard metatable seen as	string" "the guard stop's metatable is hidden"
+    has out.txt "setmetatable with it	false" "the hidden metatable cannot be set"
+    grep -q "stability guard" err.txt && fail "a forged table reported as a guard stop: $(cat err.txt)"
+    run error_kinds.lua --set kind=rethrow_guard
+    expect_rc 3 "a real guard stop passed on with error(e)"
+    has out.txt "caught	false	guard=true	kind=guard" "a caught guard stop says so (e.guard, e.kind)"
+    has err.txt "stability guard" "the real guard stop"
+    has err.txt "CFL" "the real guard stop's diagnosis"
+    ;;
+set_bad_value_exit2)
+    bad_set() { # what text args...
+        local what=$1 text=$2
+        shift 2
+        run params.lua "$@"
+        expect_rc 2 "$what"
+        has err.txt "$text" "$what"
+    }
+    bad_set "a number expected" "--set height=abc: expected a number" --set height=abc
+    bad_set "an unknown name" "no parameter 'heigt'; did you mean 'height'?" --set heigt=1
+    bad_set "a bad number list" "--set sizes=1,,2: expected numbers separated by commas" --set sizes=1,,2
+    bad_set "a scene setting that is not a number" "--set dx=fine: expected a number" --set dx=fine
+    run no_params.lua --set depth=1
+    expect_rc 2 "--set on a scene without h.params"
+    has err.txt "--set depth" "the parameter named"
+    run params.lua --set height=0.5
+    expect_rc 0 "a good --set"
+    ;;
+output_options_did_you_mean)
+    opt() { # which text...
+        local which=$1
+        shift
+        run output_options.lua --set "which=$which"
+        expect_rc 1 "$which"
+        has_msg "output_options.lua:" "$which: the scene's line"
+        for t in "$@"; do has_msg "$t" "$which"; done
+    }
+    opt png "s:png: unknown field 'widht'" "did you mean 'width'?"
+    opt run_png "s:run: png: unknown field 'feild'" "did you mean 'field'?"
+    opt probes "s:run: probes[1]: unknown field 'pont'" "did you mean 'point'?"
+    opt csv "s:run: csv = \"series.csv\" (a file name), got table"
+    opt run "s:run: unknown field 'evry'" "did you mean 'every'?"
+    ;;
+stale_tmp_cleaned)
+    # temp files of two dead writers (one in a sub-folder) and of a live one
+    sh -c 'exit 0' &
+    dead=$!
+    wait "$dead"
+    kill -0 "$dead" 2>/dev/null && fail "pid $dead still alive"
+    out=hearth-out/tiny
+    mkdir -p "$out/frames"
+    echo partial >"$out/frame_0001.vtu.tmp.$dead"
+    echo partial >"$out/frames/f.png.tmp.$dead"
+    echo partial >"$out/live.csv.tmp.$$"
+    echo keep >"$out/notes.tmp.txt"
+    "$hearth" run "$scenes/tiny.lua" >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "a run into a folder with stale temp files"
+    has err.txt "removed 2 stale temporary files" "the count reported"
+    [ -e "$out/frame_0001.vtu.tmp.$dead" ] && fail "a dead writer's temp file was kept"
+    [ -e "$out/frames/f.png.tmp.$dead" ] && fail "a dead writer's temp file in a sub-folder was kept"
+    [ -e "$out/live.csv.tmp.$$" ] || fail "a live writer's temp file was removed"
+    [ -e "$out/notes.tmp.txt" ] || fail "a file that is not a temp file was removed"
+    "$hearth" run "$scenes/tiny.lua" >out.txt 2>err.txt
+    grep -q "stale" err.txt && fail "nothing stale the second time, yet: $(cat err.txt)"
     ;;
 *) fail "unknown case $case_name" ;;
 esac

@@ -93,13 +93,13 @@ trade_scene_settings)
     "$hearth" run "$knobs" --quiet --metric particles --set transfer=pic --set heat_flip=0.5 >out.txt 2>err.txt ||
         fail "transfer=pic: $(cat err.txt)"
     "$hearth" run "$knobs" --quiet --set transfer=flip >out.txt 2>err.txt
-    [ $? -eq 1 ] && grep -q "transfer = flip; valid: apic, pic" err.txt || fail "transfer=flip: $(cat err.txt)"
+    [ $? -eq 2 ] && grep -q "transfer=flip: valid: apic, pic" err.txt || fail "transfer=flip: $(cat err.txt)"
     "$hearth" run "$knobs" --quiet --set dim=3 >out.txt 2>err.txt
-    [ $? -eq 1 ] && grep -q "no z extent" err.txt || fail "dim=3 on a flat box: $(cat err.txt)"
+    [ $? -eq 2 ] && grep -q "no z extent" err.txt || fail "dim=3 on a flat box: $(cat err.txt)"
     "$hearth" run "$knobs" --quiet --set heat=sideways >out.txt 2>err.txt
-    [ $? -eq 1 ] && grep -q "heat = sideways; valid: explicit, implicit" err.txt || fail "heat: $(cat err.txt)"
+    [ $? -eq 2 ] && grep -q "heat=sideways: valid: explicit, implicit" err.txt || fail "heat: $(cat err.txt)"
     "$hearth" run "$knobs" --quiet --set sise=0.2 >out.txt 2>err.txt
-    [ $? -eq 1 ] && grep -q "no parameter 'sise'" err.txt || fail "misspelt parameter: $(cat err.txt)"
+    [ $? -eq 2 ] && grep -q "no parameter 'sise'" err.txt || fail "misspelt parameter: $(cat err.txt)"
     ;;
 *) fail "unknown case $case_name" ;;
 esac

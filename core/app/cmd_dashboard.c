@@ -23,7 +23,7 @@ static hearth_scene *builtin_scene(const char **name, hearth_error *err) {
 
 static void usage(FILE *f) {
     fprintf(f, "usage: hearth [SCENE.lua] [--out DIR] [--set k=v]... [--threads N] [--trust] [--until T]\n"
-               "              [--play] [--exit-when-done]\n"
+               "              [--lua-memory SIZE] [--play] [--exit-when-done]\n"
                "The live dashboard: two slice views, status, probes, a log and a Lua prompt.\n"
                "With no scene it opens the built-in demo. Press ? inside for the keys.\n"
                "  --out DIR         where s, c and the scene's outputs go (default hearth-out/<scene>)\n"
@@ -31,6 +31,7 @@ static void usage(FILE *f) {
                "  --until T         stop every s:run at sim time T (s)\n"
                "  --play            start running instead of paused\n"
                "  --exit-when-done  quit when the scene's runs have finished (for benchmarks)\n"
+               "  --lua-memory SIZE ceiling of the scene's Lua memory (default 512M)\n"
                "  --trust           lift the scene sandbox\n"
                "It needs a terminal; for pipes and scripts use `hearth run SCENE.lua` (headless)\n"
                "or `hearth repl [SCENE.lua]` (a plain prompt). TERM=dumb gives a line mode.\n");
@@ -79,8 +80,11 @@ int cmd_dashboard(int argc, char **argv) {
         fprintf(stderr, "hearth: %s\n", err.msg);
         return 1;
     }
+    int stale = hearth_clean_stale_temps(a.out);
+    if (stale > 0) fprintf(stderr, "hearth: removed %d stale temporary file%s of killed runs from %s/\n", stale, stale == 1 ? "" : "s", a.out);
     if (a.scene) {
-        hearth_plugin_path_add(a.dir_buf);
+        /* plugins next to the scene load only with --trust: an untrusted scene may have put them there */
+        if (a.trust) hearth_plugin_path_add(a.dir_buf);
         o.name = a.scene;
     } else if (!(o.builtin = builtin_scene(&o.name, &err))) {
         fprintf(stderr, "hearth: the built-in scene: %s\n", err.msg);
@@ -89,6 +93,6 @@ int cmd_dashboard(int argc, char **argv) {
     a.sets[a.nsets] = NULL;
     o.lua = (hl_options){.out_dir = a.out, .scene_dir = a.dir_buf, .until_override = a.until,
                          .frames_override = (int)a.frames, .quiet = 1, .trusted = a.trust, .sets = a.sets,
-                         .assets_dir = app_assets_dir()};
+                         .assets_dir = app_assets_dir(), .lua_memory = a.lua_memory};
     return tui_run(&o);
 }

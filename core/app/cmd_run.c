@@ -2,6 +2,7 @@
  * `hearth repl [SCENE.lua]` (a plain Lua prompt; lines from a pipe run too). */
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <lauxlib.h>
 #include <lua.h>
 #include <lualib.h>
@@ -19,11 +20,12 @@
 
 static void run_usage(FILE *f, const char *cmd) {
     if (!strcmp(cmd, "repl"))
-        fprintf(f, "usage: hearth repl [SCENE.lua] [--out DIR] [--set k=v]... [--threads N] [--trust]\n"
+        fprintf(f, "usage: hearth repl [SCENE.lua] [--out DIR] [--set k=v]... [--threads N] [--lua-memory SIZE] [--trust]\n"
                    "A plain Lua prompt (no curses) with the scene loaded; its variables are globals.\n"
                    "Lines read from a pipe run too:  echo 'print(s:stats().t)' | hearth repl scene.lua\n");
     else
-        fprintf(f, "usage: hearth run SCENE.lua [--until T] [--frames N] [--out DIR] [--set k=v]... [--threads N] [--quiet] [--trust]\n"
+        fprintf(f, "usage: hearth run SCENE.lua [--until T] [--frames N] [--out DIR] [--set k=v]... [--threads N] [--quiet]\n"
+                   "                 [--lua-memory SIZE] [--trust]\n"
                    "Runs a Lua scene headless. Outputs go to DIR (default ./hearth-out/<scene name>/).\n"
                    "  --until T    stop every s:run at sim time T (s)\n"
                    "  --frames N   N frames per run (every = span / N)\n"
@@ -33,10 +35,33 @@ static void run_usage(FILE *f, const char *cmd) {
                    "  --metric M   at the end print metric M (h.metric or built-in: height, spread,\n"
                    "               centre_temperature, front, volume, water_lost)\n"
                    "  --metric-out FILE  also write it with steps and wall time to FILE (for hearth trade)\n"
-                   "  --trust      lift the sandbox (os.execute, io.popen, writes outside DIR, C modules)\n"
-                   "Exit status: 0 done, 1 scene error, 2 bad usage, 3 the stability guard stopped the run.\n");
+                   "  --lua-memory SIZE  ceiling of the scene's Lua memory: bytes, or with K, M, G (default 512M)\n"
+                   "  --trust      lift the sandbox (os.execute, io.popen, writes outside DIR, C modules,\n"
+                   "               plugins by path or from the scene's folder)\n"
+                   "Exit status: 0 done, 1 scene error, 2 bad usage or --set value, 3 the stability guard stopped\n"
+                   "the run, 130 SIGINT (Ctrl-C), 143 SIGTERM.\n");
 }
 
+/* "300M", "2G", "1.5G", "65536": bytes, K/M/G binary multiples, an optional
+ * trailing B or iB. Returns 0 and the size, or -1. */
+static int parse_size(const char *v, size_t *out) {
+    char *end;
+    errno = 0;
+    double x = strtod(v, &end);
+    if (end == v || errno || !(x > 0)) return -1;
+    double mul = 1;
+    if (*end == 'K' || *end == 'k') mul = 1024.0, end++;
+    else if (*end == 'M' || *end == 'm') mul = 1024.0 * 1024, end++;
+    else if (*end == 'G' || *end == 'g') mul = 1024.0 * 1024 * 1024, end++;
+    else if (*end == 'T' || *end == 't') mul = 1024.0 * 1024 * 1024 * 1024, end++;
+    if (mul > 1 && *end == 'i') end++;
+    if (*end == 'B' || *end == 'b') end++;
+    if (*end) return -1;
+    x *= mul;
+    if (!(x < 9.0e15)) return -1;
+    *out = (size_t)x;
+    return 0;
+}
 
 int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
     memset(a, 0, sizeof *a);
@@ -49,7 +74,7 @@ int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
         if (!strcmp(s, "--quiet")) { a->quiet = 1; continue; }
         if (!strcmp(s, "--trust")) { a->trust = 1; continue; }
         if (s[0] == '-' && s[1] == '-') {
-            static const char *const valued[] = {"--out", "--until", "--frames", "--threads", "--set", "--metric", "--metric-out", NULL};
+            static const char *const valued[] = {"--out", "--until", "--frames", "--threads", "--set", "--metric", "--metric-out", "--lua-memory", NULL};
             int known = 0;
             for (int k = 0; valued[k]; k++) known |= !strcmp(s, valued[k]);
             if (!known) {
@@ -64,6 +89,14 @@ int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
             if (!strcmp(s, "--out")) a->out = v;
             else if (!strcmp(s, "--metric")) a->metric = v;
             else if (!strcmp(s, "--metric-out")) a->metric_out = v;
+            else if (!strcmp(s, "--lua-memory")) {
+                /* below 16M the module itself does not fit; the top is only a sanity bound */
+                if (parse_size(v, &a->lua_memory) || a->lua_memory < ((size_t)16 << 20) || a->lua_memory > ((size_t)1 << 40)) {
+                    fprintf(stderr, "hearth %s: --lua-memory needs a size from 16M to 1T (bytes, or with K, M, G: "
+                                    "300M, 2G), got '%s'\n", cmd, v);
+                    return 2;
+                }
+            }
             else if (!strcmp(s, "--until")) {
                 char *end;
                 a->until = strtod(v, &end);
@@ -131,29 +164,29 @@ static void on_progress(void *ud, double t, double t_end, long steps, int final)
     else progress_update(p, t, steps);
 }
 
-/* Report a failed protected call; returns the exit status (3 for a guard stop). */
-static int report(lua_State *L, const char *cmd) {
-    /* Only the core's guard error (hl_raise: a table with the hearth.guard_error
-     * metatable and a message) is a guard stop; a scene's own error({}),
-     * error(nil) or a look-alike table is a scene error. */
-    if (lua_istable(L, -1) && lua_getmetatable(L, -1)) {
-        luaL_getmetatable(L, "hearth.guard_error");
-        const int guard_mt = lua_rawequal(L, -1, -2);
-        lua_pop(L, 2);
-        lua_getfield(L, -1, "message");
-        if (guard_mt && lua_type(L, -1) == LUA_TSTRING) {
-            fprintf(stderr, "hearth %s: the stability guard stopped the run:\n  %s\n", cmd, lua_tostring(L, -1));
-            lua_pop(L, 2);
-            return 3;
-        }
-        lua_pop(L, 1);
+/* Report a failed protected call; returns the exit status: 3 for a guard
+ * stop, 2 for a bad --set value, 128 + the signal for an interrupt, else 1. */
+static int report(lua_State *L, const char *cmd, const char *out) {
+    int st;
+    switch (hl_error_message(L, -1)) {
+    case HL_ERR_GUARD:
+        fprintf(stderr, "hearth %s: the stability guard stopped the run:\n  %s\n", cmd, lua_tostring(L, -1));
+        st = 3;
+        break;
+    case HL_ERR_USAGE:
+        fprintf(stderr, "hearth %s: %s\n", cmd, lua_tostring(L, -1));
+        st = 2;
+        break;
+    case HL_ERR_INTERRUPT:
+        fprintf(stderr, "hearth %s: %s; the outputs written before it are whole, in %s/\n", cmd, lua_tostring(L, -1), out);
+        st = 128 + hl_interrupted();
+        break;
+    default:
+        fprintf(stderr, "hearth %s: %s\n", cmd, lua_tostring(L, -1));
+        st = 1;
     }
-    const char *msg = lua_type(L, -1) == LUA_TSTRING || lua_type(L, -1) == LUA_TNUMBER ? lua_tostring(L, -1) : NULL;
-    if (msg) fprintf(stderr, "hearth %s: %s\n", cmd, msg);
-    else fprintf(stderr, "hearth %s: the scene raised an error that is a %s, not a message (error(\"text\") gives one)\n", cmd,
-                 luaL_typename(L, -1));
-    lua_pop(L, 1);
-    return 1;
+    lua_pop(L, 2);
+    return st;
 }
 
 static lua_State *start(run_args *a, progress *pr, const char *cmd) {
@@ -162,19 +195,21 @@ static lua_State *start(run_args *a, progress *pr, const char *cmd) {
         fprintf(stderr, "hearth %s: %s\n", cmd, err.msg);
         return NULL;
     }
-    hearth_plugin_path_add(a->dir_buf);
-    lua_State *L = luaL_newstate();
-    if (!L) {
-        fprintf(stderr, "hearth %s: out of memory starting Lua\n", cmd);
-        return NULL;
-    }
-    luaL_openlibs(L);
+    int stale = hearth_clean_stale_temps(a->out);
+    if (stale > 0)
+        fprintf(stderr, "hearth %s: removed %d stale temporary file%s of killed runs from %s/\n", cmd, stale,
+                stale == 1 ? "" : "s", a->out);
+    /* the scene's folder may hold plugins only a trusted scene may load:
+     * an untrusted one could have put them there */
+    if (a->trust) hearth_plugin_path_add(a->dir_buf);
+    hl_interrupt_install();
     progress_start(pr, a->until, a->quiet);
     hl_options o = {.out_dir = a->out, .scene_dir = a->dir_buf, .until_override = a->until,
                     .frames_override = (int)a->frames, .quiet = a->quiet, .trusted = a->trust,
                     .sets = a->sets, .progress = on_progress, .progress_ud = pr,
-                    .assets_dir = app_assets_dir()};
-    hl_open(L, &o);
+                    .assets_dir = app_assets_dir(), .lua_memory = a->lua_memory};
+    lua_State *L = hl_new_state(&o, &err);
+    if (!L) fprintf(stderr, "hearth %s: %s\n", cmd, err.msg);
     return L;
 }
 
@@ -193,8 +228,9 @@ static int metric_report(lua_State *L, const run_args *a, int status) {
             lua_getfield(L, -1, "_metric");
             lua_pushstring(L, a->metric);
             if (hl_pcall(L, 1, 2) != LUA_OK) {
+                hl_error_message(L, -1);
                 snprintf(msg, sizeof msg, "%s", lua_tostring(L, -1));
-                lua_pop(L, 1);
+                lua_pop(L, 2);
                 fprintf(stderr, "hearth run: %s\n", msg);
                 status = 1;
             } else {
@@ -235,21 +271,21 @@ int cmd_run(int argc, char **argv) {
     lua_State *L = start(&a, &pr, "run");
     if (!L) return 1;
     int status = 0;
-    if (luaL_loadfilex(L, a.scene, "t") != LUA_OK) status = report(L, "run");
-    else if (hl_pcall(L, 0, 0) != LUA_OK) status = report(L, "run");
+    if (luaL_loadfilex(L, a.scene, "t") != LUA_OK) status = report(L, "run", a.out);
+    else if (hl_pcall(L, 0, 0) != LUA_OK) status = report(L, "run", a.out);
     else { /* h._finish(): --set checks, and run a scene the file built but did not run */
         lua_getglobal(L, "require");
         lua_pushliteral(L, "hearth");
-        if (hl_pcall(L, 1, 1) != LUA_OK) status = report(L, "run");
+        if (hl_pcall(L, 1, 1) != LUA_OK) status = report(L, "run", a.out);
         else {
             lua_getfield(L, -1, "_finish");
-            if (hl_pcall(L, 0, 0) != LUA_OK) status = report(L, "run");
+            if (hl_pcall(L, 0, 0) != LUA_OK) status = report(L, "run", a.out);
             lua_pop(L, 1);
         }
     }
-    if (a.metric) status = metric_report(L, &a, status);
+    if (a.metric && status < 128) status = metric_report(L, &a, status);
     if (status == 0 && !a.quiet) fprintf(stderr, "hearth run: done; outputs in %s/\n", a.out);
-    lua_close(L);
+    hl_close_state(L);
     return status;
 }
 
@@ -273,8 +309,8 @@ int cmd_repl(int argc, char **argv) {
     const int tty = isatty(0);
     if (a.scene) {
         if (luaL_loadfilex(L, a.scene, "t") != LUA_OK || hl_pcall(L, 0, 0) != LUA_OK) {
-            int st = report(L, "repl");
-            lua_close(L);
+            int st = report(L, "repl", a.out);
+            hl_close_state(L);
             return st;
         }
     }
@@ -301,7 +337,7 @@ int cmd_repl(int argc, char **argv) {
             fputs(blen ? ">> " : "> ", stdout);
             fflush(stdout);
         }
-        if (!fgets(line, sizeof line, stdin)) break;
+        if (hl_interrupted() || !fgets(line, sizeof line, stdin)) break;
         size_t ln = strlen(line);
         char *nb = realloc(buf, blen + ln + 1);
         if (!nb) break;
@@ -329,7 +365,7 @@ int cmd_repl(int argc, char **argv) {
         }
         int top = lua_gettop(L) - 1;
         if (hl_pcall(L, 0, LUA_MULTRET) != LUA_OK) {
-            report(L, "repl");
+            if (report(L, "repl", a.out) >= 128) break; /* Ctrl-C stops the repl as it stops a run */
             errors++;
             continue;
         }
@@ -343,6 +379,7 @@ int cmd_repl(int argc, char **argv) {
     }
     free(buf);
     if (tty) printf("\n");
-    lua_close(L);
+    hl_close_state(L);
+    if (hl_interrupted()) return 128 + hl_interrupted();
     return errors && !tty ? 1 : 0;
 }

@@ -383,7 +383,9 @@ static void finish_run(trade *T, int i, int wstatus, const struct rusage *ru) {
         fclose(f);
     }
     snprintf(path, sizeof path, "%s/log.txt", dir);
-    if (WIFSIGNALED(wstatus) && interrupted) {
+    /* a run stops itself on our SIGTERM with 128 + the signal (hearth run's interrupt) */
+    const int stopped = WIFSIGNALED(wstatus) || (WIFEXITED(wstatus) && WEXITSTATUS(wstatus) > 128);
+    if (stopped && interrupted) {
         r->st = RS_ERROR;
         snprintf(r->msg, sizeof r->msg, "stopped: hearth trade was interrupted");
     } else if (WIFSIGNALED(wstatus)) {

@@ -23,6 +23,7 @@ typedef struct run_args {
     double until;
     long frames;
     int quiet, trust;
+    size_t lua_memory; /* --lua-memory SIZE in bytes; 0 = the default ceiling */
     const char *metric, *metric_out; /* --metric NAME [--metric-out FILE] (used by hearth trade) */
     const char *sets[65];
     int nsets;

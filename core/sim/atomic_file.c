@@ -1,10 +1,15 @@
-/* atomic_file.c: temp file + fsync + rename. */
+/* atomic_file.c: temp file + fsync + rename, and sweeping the temp files
+ * of runs that were killed before they could rename or remove them. */
 #define _POSIX_C_SOURCE 200809L
 #include "atomic_file.h"
 
+#include <dirent.h>
 #include <errno.h>
+#include <signal.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/types.h>
 #include <unistd.h>
 
 #include "error.h"
@@ -57,3 +62,46 @@ void atomic_abort(atomic_file *af) {
     af->f = NULL;
     remove(af->tmp);
 }
+
+/* The pid of a temp file name "<path>.tmp.<pid>", or 0 when it is not one. */
+static long temp_pid(const char *name) {
+    const char *t = NULL;
+    for (const char *p = strstr(name, ".tmp."); p; p = strstr(p + 1, ".tmp.")) t = p; /* the last one */
+    if (!t || t == name) return 0;
+    const char *d = t + 5;
+    if (*d < '1' || *d > '9') return 0;
+    char *end;
+    long pid = strtol(d, &end, 10);
+    return *end || pid <= 0 ? 0 : pid;
+}
+
+/* depth bounds the walk in a folder tree with cycles of bind mounts */
+static int clean_dir(const char *dir, int depth) {
+    if (depth > 32) return 0;
+    DIR *d = opendir(dir);
+    if (!d) return 0;
+    int removed = 0;
+    const long self = (long)getpid();
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+        char path[4096];
+        if (snprintf(path, sizeof path, "%s/%s", dir, e->d_name) >= (int)sizeof path) continue;
+        struct stat st;
+        if (lstat(path, &st) != 0) continue; /* lstat: never follow a link out of the folder */
+        if (S_ISDIR(st.st_mode)) {
+            removed += clean_dir(path, depth + 1);
+            continue;
+        }
+        if (!S_ISREG(st.st_mode)) continue;
+        long pid = temp_pid(e->d_name);
+        /* ESRCH: no such process, so no writer will ever rename it; EPERM means alive */
+        if (pid && pid != self && kill((pid_t)pid, 0) != 0 && errno == ESRCH && remove(path) == 0) removed++;
+    }
+    closedir(d);
+    return removed;
+}
+
+int atomic_clean_stale(const char *dir) { return dir ? clean_dir(dir, 0) : 0; }
+
+int hearth_clean_stale_temps(const char *dir) { return atomic_clean_stale(dir); }

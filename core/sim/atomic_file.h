@@ -18,4 +18,8 @@ hearth_status atomic_open(atomic_file *af, const char *path, hearth_error *err);
 hearth_status atomic_commit(atomic_file *af, hearth_error *err);
 /// Give up: close and remove the temp file.
 void atomic_abort(atomic_file *af);
+/// Remove the temp files ("<path>.tmp.<pid>") under dir, recursively, whose
+/// process no longer exists: a run killed mid-write leaves its temp file, and
+/// nothing else would ever remove it. Returns how many were removed.
+int atomic_clean_stale(const char *dir);
 #endif

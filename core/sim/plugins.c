@@ -49,6 +49,10 @@ static hearth_plugin **g_loaded;
 static int g_nloaded, g_caploaded;
 static char **g_added; /* folders from hearth_plugin_path_add, in call order */
 static int g_nadded, g_capadded;
+/* hearth_plugin_restrict: an untrusted scene is running. Plugins load only by
+ * name, and not from the folder it can write (its realpath, or "" for none). */
+static int g_restricted;
+static char g_writable[PATH_MAX];
 
 _Thread_local plugin_call plugin_current_call __attribute__((tls_model("initial-exec")));
 
@@ -192,11 +196,12 @@ static hearth_status plugin_find(const char *name, char *out, size_t cap, hearth
     size_t nl = strlen(name);
     int looks_like_file = nl > 3 && strcmp(name + nl - 3, ".so") == 0;
     err_set(err, HEARTH_ERR_PLUGIN,
-            "%s: plugin not found: no %s in %s%s; %s HEARTH_PLUGIN_PATH (colon separated), or give a path "
-            "containing '/'%s%s%s",
+            "%s: plugin not found: no %s in %s%s; %s HEARTH_PLUGIN_PATH (colon separated), or %s%s%s%s",
             name, file, d.n ? "the search path: " : "any folder (the search path is empty)", list,
             d.n ? "put the file in one of these folders, add its folder to" : "add the plugin's folder to",
-            looks_like_file ? " (for this file: ./" : "", looks_like_file ? name : "", looks_like_file ? ")" : "");
+            g_restricted ? "run with --trust to load a file by its path" : "give a path containing '/'",
+            looks_like_file && !g_restricted ? " (for this file: ./" : "", looks_like_file && !g_restricted ? name : "",
+            looks_like_file && !g_restricted ? ")" : "");
     plugin_dirs_free(&d);
     return HEARTH_ERR_PLUGIN;
 }
@@ -569,9 +574,28 @@ static const hearth_plugin *plugin_open(const char *shown, const char *real, hea
     return pl;
 }
 
+void hearth_plugin_restrict(const char *writable_dir) {
+    g_restricted = 1;
+    g_writable[0] = '\0';
+    if (writable_dir && !realpath(writable_dir, g_writable)) snprintf(g_writable, sizeof g_writable, "%s", writable_dir);
+}
+
+static int plugin_plain_name(const char *s) {
+    for (const char *p = s; *p; p++)
+        if (!((*p >= 'a' && *p <= 'z') || (*p >= '0' && *p <= '9') || *p == '_')) return 0;
+    return 1;
+}
+
 const hearth_plugin *hearth_plugin_load(const char *name_or_path, hearth_error *err) {
     if (!name_or_path || !*name_or_path) {
         err_set(err, HEARTH_ERR_PLUGIN, "(empty): plugin name is empty; give a name such as \"elastic\" or a path");
+        return NULL;
+    }
+    if (g_restricted && !plugin_plain_name(name_or_path)) {
+        err_set(err, HEARTH_ERR_PLUGIN,
+                "%.300s: a scene without --trust loads plugins by name (a-z, 0-9 and _, such as \"elastic\") from the "
+                "plugin search path; run with --trust to load a file",
+                name_or_path);
         return NULL;
     }
     char file[PATH_MAX];
@@ -599,6 +623,14 @@ const hearth_plugin *hearth_plugin_load(const char *name_or_path, hearth_error *
     char real[PATH_MAX];
     if (!realpath(file, real)) {
         err_set(err, HEARTH_ERR_PLUGIN, "%s: cannot resolve the path (%s)", file, strerror(errno));
+        return NULL;
+    }
+    size_t wl = strlen(g_writable);
+    if (g_restricted && wl && !strncmp(real, g_writable, wl) && (real[wl] == '/' || !strcmp(g_writable, "/"))) {
+        err_set(err, HEARTH_ERR_PLUGIN,
+                "%s: the plugin file %s is in the output folder %s, which the scene can write; a scene without "
+                "--trust loads plugins only from folders it cannot write (run with --trust to allow it)",
+                name_or_path, real, g_writable);
         return NULL;
     }
     const hearth_plugin *pl = plugin_cached(real);

@@ -100,8 +100,12 @@ local function knob_sets()
   return k
 end
 
+-- A bad --set is a usage error (exit 2), not a scene error: the object
+-- core.usage_error raises is marked so `hearth run` can tell.
+local usage_error = core.usage_error
+
 local function knob_number(name, v, level)
-  return tonumber(v) or error(("--set %s=%s: expected a number"):format(name, v), level or 3)
+  return tonumber(v) or usage_error(("--set %s=%s: expected a number"):format(name, v), level or 3)
 end
 
 h._check = { keys = check_keys, number = check_number, choice = check_choice, vec = check_vec }
@@ -168,7 +172,7 @@ end
 --- Write a text file (a CSV, a note) atomically; relative paths go under the output folder.
 function h.write(path, text)
   if type(path) ~= "string" or type(text) ~= "string" then error("h.write(path, text): two strings", 2) end
-  local ok, e = pcall(core.write_atomic, path, text)
+  local ok, e = pcall(core.write_atomic, path, text, "h.write")
   if not ok then error(e, 2) end
   return e
 end
@@ -322,19 +326,20 @@ function h.params(defaults)
     local d = defaults[k]
     if d == nil and scene_knobs[k] then -- a scene setting, applied by h.scene / s:add / h.mix
     elseif d == nil then
-      error(("--set %s: this scene has no parameter '%s'; valid names: %s"):format(k, k,
-        table.concat(sorted_keys(defaults), ", ")), 2)
+      local near = nearest(k, defaults)
+      usage_error(("--set %s: this scene has no parameter '%s'%s; valid names: %s"):format(k, k,
+        near and ("; did you mean '" .. near .. "'?") or "", table.concat(sorted_keys(defaults), ", ")), 2)
     end
     if type(d) == "number" then
-      P[k] = tonumber(v) or error(("--set %s=%s: expected a number"):format(k, v), 2)
+      P[k] = tonumber(v) or usage_error(("--set %s=%s: expected a number"):format(k, v), 2)
     elseif type(d) == "table" then
       local t = {}
       for w in (v .. ","):gmatch("([^,]*),") do
-        t[#t + 1] = tonumber(w) or error(("--set %s=%s: expected numbers separated by commas"):format(k, v), 2)
+        t[#t + 1] = tonumber(w) or usage_error(("--set %s=%s: expected numbers separated by commas"):format(k, v), 2)
       end
       P[k] = t
     elseif type(d) == "boolean" then
-      if v ~= "true" and v ~= "false" then error(("--set %s=%s: expected true or false"):format(k, v), 2) end
+      if v ~= "true" and v ~= "false" then usage_error(("--set %s=%s: expected true or false"):format(k, v), 2) end
       P[k] = v == "true"
     else
       P[k] = v
@@ -366,7 +371,7 @@ function h.scene(o)
   if type(o) ~= "table" then error("h.scene: expected a table", 2) end
   for k in pairs(core.options().sets) do
     if not h._params_declared and not scene_knobs[k] then
-      error(("--set %s: this scene declares no parameters with h.params{...} before h.scene; scene settings that --set may change: %s")
+      usage_error(("--set %s: this scene declares no parameters with h.params{...} before h.scene; scene settings that --set may change: %s")
         :format(k, table.concat(sorted_keys(scene_knobs), ", ")), 2)
     end
   end
@@ -378,11 +383,20 @@ function h.scene(o)
     for _, k in ipairs { "dx", "cfl", "dt_max", "dim", "max_rollbacks", "heat_flip" } do
       if ks[k] then oo[k] = knob_number(k, ks[k]) end
     end
+    local knob_choices = { heat = { "explicit", "implicit" }, solver = { "mpm", "sph" }, guard = { "stop", "rollback" },
+      transfer = { "apic", "pic" } }
     for _, k in ipairs { "heat", "solver", "guard", "transfer" } do
-      if ks[k] then oo[k] = ks[k] end
+      if ks[k] then
+        local ok = false
+        for _, c in ipairs(knob_choices[k]) do ok = ok or ks[k]:lower() == c end
+        if not ok then
+          usage_error(("--set %s=%s: valid: %s"):format(k, ks[k], table.concat(knob_choices[k], ", ")), 2)
+        end
+        oo[k] = ks[k]
+      end
     end
     if oo.dim == 3 and oo.box and not ((oo.box[2][3] or 0) > (oo.box[1][3] or 0)) then
-      error("--set dim=3: this scene's box has no z extent, so it cannot run in 3D", 2)
+      usage_error("--set dim=3: this scene's box has no z extent, so it cannot run in 3D", 2)
     end
     o = oo
   end
@@ -674,6 +688,46 @@ local function default_field(s)
 end
 
 local run_keys = { until_t = true, every = true, on_frame = true, csv = true, probes = true, png = true }
+local run_png_keys = { field = true, path = true, kind = true, width = true, height = true, axis = true, at = true }
+local png_keys = { kind = true, width = true, height = true, axis = true, at = true }
+
+-- s:png checks its options here first, for the "did you mean" (the C method checks again)
+local raw_png = S.png
+function S:png(field, path, opts)
+  if type(opts) == "table" then check_keys(opts, png_keys, "s:png") end
+  local ok, r = pcall(raw_png, self, field, path, opts)
+  if not ok then error(r, 2) end -- the scene's line, not this one
+  return r
+end
+
+-- s:run's output tables: a misspelt option must fail, not be ignored
+local function check_run_outputs(o)
+  if o.png ~= nil then
+    if type(o.png) ~= "table" then error(("s:run: png = {field = ..., path = ...}, got %s"):format(type(o.png)), 3) end
+    check_keys(o.png, run_png_keys, "s:run: png", 4)
+  end
+  if o.csv ~= nil and type(o.csv) ~= "string" then
+    error(("s:run: csv = \"series.csv\" (a file name), got %s"):format(type(o.csv)), 3)
+  end
+  if o.probes ~= nil then
+    if type(o.probes) ~= "table" then error(("s:run: probes = {{field, {x, y}}, ...}, got %s"):format(type(o.probes)), 3) end
+    for k, p in pairs(o.probes) do
+      if math.type(k) ~= "integer" then
+        error(("s:run: probes: unknown field '%s'; probes is a list {{field, {x, y}}, ...}"):format(tostring(k)), 3)
+      end
+      if type(p) ~= "table" or type(p[1]) ~= "string" then
+        error(("s:run: probes[%s] = {field, {x, y}}, e.g. {\"speed\", {0.5, 0.2}}"):format(tostring(k)), 3)
+      end
+      for pk in pairs(p) do
+        if pk ~= 1 and pk ~= 2 then
+          local near = type(pk) == "string" and nearest(pk, { field = true, point = true })
+          error(("s:run: probes[%s]: unknown field '%s'%s (a probe is {field, {x, y}})"):format(tostring(k), tostring(pk),
+            near and ("; did you mean '" .. near .. "'? write it as the first or second entry") or ""), 3)
+        end
+      end
+    end
+  end
+end
 
 --- s:run{until_t = T, every = dt, on_frame = function(frame) ... end, csv = "series.csv",
 ---       probes = {{"speed", {x, y}}, ...}, png = {field = "speed", path = "frame_%04d.png", kind = "particles"}}
@@ -681,6 +735,7 @@ function S:run(o)
   o = o or {}
   if type(o) ~= "table" then error("s:run: expected a table", 2) end
   check_keys(o, run_keys, "s:run")
+  check_run_outputs(o)
   local opts = core.options()
   local t0 = self:_time()
   local until_t = opts.until_t or o.until_t
@@ -719,7 +774,7 @@ function S:run(o)
           or ("%.9g"):format(v)
       end
       rows[#rows + 1] = table.concat(r, ",")
-      core.write_atomic(o.csv, table.concat(rows, "\n") .. "\n")
+      core.write_atomic(o.csv, table.concat(rows, "\n") .. "\n", "s:run{csv = ...}")
     end
     if o.on_frame then o.on_frame(fr) end
     st.frame = st.frame + 1
@@ -766,7 +821,7 @@ end
 function h._finish()
   for k in pairs(core.options().sets) do
     if not h._params_declared and not scene_knobs[k] then
-      error(("--set %s: this scene declares no parameters (h.params{...}); there is nothing to set"):format(k), 0)
+      usage_error(("--set %s: this scene declares no parameters (h.params{...}); there is nothing to set"):format(k))
     end
   end
   local s = h._last_scene

@@ -7,6 +7,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "tui_screen.h"
+
 static const char LOG_KEY = 'l';
 
 /* print(...) -> the log panel, tab separated as the standard print */
@@ -30,13 +32,15 @@ static int l_print(lua_State *L) {
 int tui_lua_open(tui_lua *t, const hl_options *o, tui_log *log) {
     memset(t, 0, sizeof *t);
     t->log = log;
-    t->L = luaL_newstate();
+    hl_options lo = *o;
+    /* Ctrl-C is the dashboard's signal; the hook also stops a runaway prompt command with it */
+    if (!lo.interrupted) lo.interrupted = tui_screen_interrupted;
+    hearth_error err;
+    t->L = hl_new_state(&lo, &err);
     if (!t->L) {
-        tui_log_add(log, "out of memory starting Lua");
+        tui_log_add(log, "%s", err.msg);
         return -1;
     }
-    luaL_openlibs(t->L);
-    hl_open(t->L, o);
     lua_pushlightuserdata(t->L, log);
     lua_rawsetp(t->L, LUA_REGISTRYINDEX, &LOG_KEY);
     lua_pushcfunction(t->L, l_print);
@@ -45,21 +49,19 @@ int tui_lua_open(tui_lua *t, const hl_options *o, tui_log *log) {
 }
 
 void tui_lua_close(tui_lua *t) {
-    if (t->L) lua_close(t->L);
+    if (t->L) hl_close_state(t->L);
     t->L = NULL;
 }
 
 /* log an error value left on top of L (a message or a guard table) and pop it */
 static tui_lua_result log_error(tui_lua *t, lua_State *L) {
-    if (lua_istable(L, -1)) {
-        lua_getfield(L, -1, "message");
+    if (hl_error_message(L, -1) == HL_ERR_GUARD) {
         tui_log_add(t->log, "the stability guard stopped the run (paused):\n  %s", lua_tostring(L, -1));
         lua_pop(L, 2);
         return TUI_LUA_GUARD;
     }
-    const char *msg = lua_tostring(L, -1);
-    tui_log_add(t->log, "error: %s", msg ? msg : "(an error object that is not a string)");
-    lua_pop(L, 1);
+    tui_log_add(t->log, "error: %s", lua_tostring(L, -1));
+    lua_pop(L, 2);
     return TUI_LUA_ERROR;
 }
 

@@ -58,6 +58,11 @@ size_t hearth_bytes_allocated(void);
 void hearth_set_threads(int n);
 int hearth_get_threads(void);
 
+/// Remove the temporary files ("<name>.tmp.<pid>") that runs killed while
+/// writing left under dir (recursively), when their process is gone. Returns
+/// the number removed. Hosts call it before a run writes into dir.
+int hearth_clean_stale_temps(const char *dir);
+
 /* ---- plugins -------------------------------------------------------- */
 
 typedef struct hearth_plugin hearth_plugin; ///< a loaded plugin; lives until process exit
@@ -69,6 +74,11 @@ void hearth_plugin_path_add(const char *dir);
 /// Load a plugin by name ("elastic" finds hearth_elastic.so on the path) or by
 /// a path containing '/'. Loaded plugins are cached by resolved path.
 const hearth_plugin *hearth_plugin_load(const char *name_or_path, hearth_error *err);
+/// From now on (for the rest of the process) load plugins only by name
+/// ([a-z0-9_]+, resolved on the search path), and refuse a file that resolves
+/// under writable_dir (NULL for none): the policy for a scene run without
+/// --trust, which may write only there. A path containing '/' is refused.
+void hearth_plugin_restrict(const char *writable_dir);
 const hearth_material *hearth_plugin_material(const hearth_plugin *pl);
 const char *hearth_plugin_file(const hearth_plugin *pl);
 /// Call fn for every plugin file found on the search path (each name once, first wins).
