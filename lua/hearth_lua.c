@@ -76,7 +76,9 @@ static int l_usage_error(lua_State *L) {
 static int traceback(lua_State *L) {
     if (marked_error(L, 1)) return 1; /* a guard stop or usage error: its message says it all, no traceback */
     const char *msg = lua_type(L, 1) == LUA_TSTRING || lua_type(L, 1) == LUA_TNUMBER ? lua_tostring(L, 1) : NULL;
-    if (!msg) msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+    if (!msg)
+        msg = lua_pushfstring(L, "the scene raised an error that is a %s, not a message (error(\"text\") gives one)",
+                              luaL_typename(L, 1));
     luaL_traceback(L, L, msg, 1);
     return 1;
 }
@@ -349,7 +351,8 @@ hl_error_kind hl_error_message(lua_State *L, int idx) {
     }
     const int t = lua_type(L, idx);
     if (t != LUA_TSTRING && t != LUA_TNUMBER) {
-        lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, idx));
+        lua_pushfstring(L, "the scene raised an error that is a %s, not a message (error(\"text\") gives one)",
+                        luaL_typename(L, idx));
         return HL_ERR_SCRIPT;
     }
     const char *msg = lua_tostring(L, idx);

@@ -607,7 +607,7 @@ sandbox_sigint_loop)
 scene_error_table_not_guard)
     run error_kinds.lua --set kind=table
     expect_rc 1 "error({})"
-    has_msg "error object is a table value" "error({}): what it was"
+    has_msg "an error that is a table, not a message" "error({}): what it was"
     grep -q "stability guard" err.txt && fail "error({}) reported as a guard stop: $(cat err.txt)"
     grep -q "(null)" err.txt && fail "error({}) printed (null): $(cat err.txt)"
     run error_kinds.lua --set kind=forged
