@@ -223,6 +223,26 @@ tui_crash_restores)
     grep -Eq '(^| )icanon( |$)' "$tmp/stty.txt" && grep -Eq '(^| )echo( |$)' "$tmp/stty.txt" ||
         fail "terminal modes not restored after SIGABRT: $(cat "$tmp/stty.txt")"
     ;;
+tui_plugin_crash_named)
+    # a plugin that segfaults in its stress callback: the terminal is restored and
+    # the plugin and callback are named (crash.c), exit status 4
+    export HEARTH_PLUGIN_PATH="${HEARTH_PLUGIN_PATH:-}:$HEARTH_TEST_PLUGIN_DIR"
+    cat >"$tmp/segv.lua" <<'EOF2'
+local h = require "hearth"
+local s = h.scene { dim = 2, dx = 1 / 16, box = { { 0, 0 }, { 1, 1 } } }
+local m = h.material("segv_stress", { E = 1e4, density = 1000 })
+s:add { shape = h.box({ 0.3, 0.3 }, { 0.6, 0.6 }), material = m, ppc = 4 }
+EOF2
+    start "'$tmp/segv.lua'"
+    wait_for "paused"
+    keys Space
+    for _ in $(seq 100); do [ -f "$tmp/exit.txt" ] && break; sleep 0.1; done
+    [ "$(cat "$tmp/exit.txt" 2>/dev/null)" = 4 ] || fail "a plugin crash should end the dashboard with status 4"
+    grep -q "plugin 'segv_stress'" "$tmp/stderr.txt" && grep -q "in its stress callback" "$tmp/stderr.txt" ||
+        fail "the plugin and its callback are not named"
+    [ "$(tmux -L "$sock" display -p -t t '#{alternate_on}')" = 0 ] || fail "the alternate screen is still on"
+    grep -Eq '(^| )icanon( |$)' "$tmp/stty.txt" || fail "terminal modes not restored after the plugin crash"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"

@@ -20,12 +20,22 @@ static int open_now;
 
 static void on_stop(int sig) { stop_signal = sig; }
 
+/* The handlers that were there before the dashboard's (crash.c's, which name
+ * a plugin that crashed): the dashboard restores the terminal, then hands the
+ * signal on to them. */
+static const int crash_signals[] = {SIGSEGV, SIGABRT, SIGBUS, SIGFPE, SIGILL};
+static struct sigaction crash_before[sizeof crash_signals / sizeof crash_signals[0]];
+
 static void on_crash(int sig) {
     /* endwin is not async-signal-safe, but the process is going down and a
      * terminal left in raw mode on the alternate screen is worse */
     if (open_now) endwin();
-    signal(sig, SIG_DFL);
-    raise(sig);
+    open_now = 0;
+    int handed = 0;
+    for (size_t i = 0; i < sizeof crash_signals / sizeof crash_signals[0]; i++)
+        if (crash_signals[i] == sig) handed = sigaction(sig, &crash_before[i], NULL) == 0;
+    if (!handed) signal(sig, SIG_DFL);
+    raise(sig); /* delivered when this handler returns, to the handler restored above */
 }
 
 int tui_screen_interrupted(void) { return (int)stop_signal; }
@@ -40,8 +50,8 @@ int tui_screen_open(tui_color_mode *mode) {
     sigaction(SIGHUP, &sa, NULL);
     sa.sa_handler = on_crash;
     sa.sa_flags = SA_RESETHAND;
-    const int crash[] = {SIGSEGV, SIGABRT, SIGBUS, SIGFPE, SIGILL};
-    for (size_t i = 0; i < sizeof crash / sizeof crash[0]; i++) sigaction(crash[i], &sa, NULL);
+    for (size_t i = 0; i < sizeof crash_signals / sizeof crash_signals[0]; i++)
+        sigaction(crash_signals[i], &sa, &crash_before[i]);
 
     setlocale(LC_ALL, ""); /* wide characters need the user's locale */
     setlocale(LC_NUMERIC, "C"); /* but numbers keep their point, in printf and in Lua */
