@@ -28,6 +28,7 @@
 #include <string.h>
 
 #include "alloc.h"
+#include "checkpoint.h"
 #include "error.h"
 #include "hearth/hearth.h"
 #include "shapes.h"
@@ -564,13 +565,55 @@ int shape_write(FILE *f, const hearth_shape *s) {
     return 0;
 }
 
-hearth_shape *shape_read(FILE *f, int depth) {
+/* Whether a node read from a checkpoint holds values its constructor would
+ * accept: a crafted file must not build a shape the constructors refuse (a
+ * NaN centre, a zero axis) and so reach the solver with NaN distances. */
+static int unit_ok(const double u[3]) { return finite3(u) && fabs(len3(u) - 1.0) <= 1e-9; }
+
+static const char *node_problem(const hearth_shape *s) {
+    if (!finite3(s->c) || !finite3(s->u) || !finite3(s->b) || !isfinite(s->r) || !isfinite(s->hh) ||
+        !isfinite(s->wall) || !isfinite(s->floor))
+        return "collider shape: a non-finite number";
+    if ((unsigned)s->op > HEARTH_SUBTRACT) return "collider shape: unknown boolean operation";
+    switch (s->kind) {
+    case SHAPE_PLANE: return unit_ok(s->u) ? NULL : "collider shape: a plane normal that is not a unit vector";
+    case SHAPE_BOX:
+        return s->b[0] >= 0 && s->b[1] >= 0 && s->b[2] >= 0 ? NULL : "collider shape: a box with a negative half extent";
+    case SHAPE_SPHERE:
+    case SHAPE_CAPSULE: return s->r > 0 ? NULL : "collider shape: a radius <= 0";
+    case SHAPE_CYLINDER:
+        return unit_ok(s->u) && s->r > 0 && s->hh >= 0 ? NULL : "collider shape: a cylinder with a bad axis, radius or height";
+    case SHAPE_CONTAINER:
+        return unit_ok(s->u) && s->r > 0 && s->wall > 0 && s->hh >= 0 && s->floor >= 0 && s->hh + s->floor > 0
+                   ? NULL
+                   : "collider shape: a container with a bad axis, radius, height, wall or floor";
+    case SHAPE_EXTRUDE: return s->b[0] < s->b[1] ? NULL : "collider shape: an extrusion with z0 >= z1";
+    default: return NULL;
+    }
+}
+
+/* Bytes of one node record: kind, op, 13 doubles. */
+#define SHAPE_NODE_BYTES (2 * sizeof(int32_t) + 13 * sizeof(double))
+/* Bytes of a mask record's own header: w, h, lo[2], hi[2]. */
+#define MASK_HEADER_BYTES (2 * sizeof(int32_t) + 4 * sizeof(double))
+
+hearth_shape *shape_read_mem(ck_cursor *cur, int depth) {
     int32_t k[2];
     double v[13];
-    if (depth > 64 || fread(k, sizeof k, 1, f) != 1 || fread(v, sizeof v, 1, f) != 1) return NULL;
-    if (k[0] < SHAPE_PLANE || k[0] > SHAPE_EXTRUDE) return NULL;
+    if (depth > SHAPE_DEPTH_MAX) {
+        ck_fail(cur, "collider shape: the tree is deeper than 64 levels");
+        return NULL;
+    }
+    if (ck_get(cur, k, sizeof k) || ck_get(cur, v, sizeof v)) return NULL;
+    if (k[0] < SHAPE_PLANE || k[0] > SHAPE_EXTRUDE) {
+        ck_fail(cur, "collider shape: unknown node kind");
+        return NULL;
+    }
     hearth_shape *s = shape_new((shape_kind)k[0]);
-    if (!s) return NULL;
+    if (!s) {
+        ck_fail(cur, "out of memory for a collider shape");
+        return NULL;
+    }
     s->op = (hearth_shape_op)k[1];
     for (int d = 0; d < 3; d++) {
         s->c[d] = v[d];
@@ -581,27 +624,69 @@ hearth_shape *shape_read(FILE *f, int depth) {
     s->hh = v[10];
     s->wall = v[11];
     s->floor = v[12];
+    const char *why = (unsigned)k[1] > HEARTH_SUBTRACT ? "collider shape: unknown boolean operation" : node_problem(s);
+    if (why) {
+        ck_fail(cur, why);
+        hearth_shape_free(s);
+        return NULL;
+    }
     if (s->kind == SHAPE_COMBINE) {
-        s->ca = shape_read(f, depth + 1);
-        s->cb = s->ca ? shape_read(f, depth + 1) : NULL;
-        if (!s->ca || !s->cb) {
-            hearth_shape_free(s);
-            return NULL;
-        }
+        s->ca = shape_read_mem(cur, depth + 1);
+        s->cb = s->ca ? shape_read_mem(cur, depth + 1) : NULL;
     } else if (s->kind == SHAPE_EXTRUDE) {
-        int ok = isfinite(s->b[0]) && isfinite(s->b[1]) && s->b[0] < s->b[1];
-        s->ca = ok ? shape_read(f, depth + 1) : NULL;
-        if (!s->ca) {
-            hearth_shape_free(s);
-            return NULL;
-        }
-        s->flat = z_free(s->ca);
+        s->ca = shape_read_mem(cur, depth + 1);
+        if (s->ca) s->flat = z_free(s->ca);
     } else if (s->kind == SHAPE_MASK) {
-        s->mask = mask_read(f);
+        /* the field's size is checked against the bytes left before mask_read
+         * allocates it; mask_read then parses exactly that slice */
+        int32_t wh[2] = {0, 0};
+        if (cur->left >= sizeof wh) memcpy(wh, cur->p, sizeof wh);
+        if (wh[0] < 1 || wh[1] < 1 || wh[0] > MASK_DIM_MAX || wh[1] > MASK_DIM_MAX) {
+            ck_fail(cur, cur->left < sizeof wh ? "truncated" : "collider shape: mask size out of range [1, 4096]");
+        } else {
+            const size_t bytes = MASK_HEADER_BYTES + sizeof(float) * (size_t)wh[0] * (size_t)wh[1];
+            if (bytes > cur->left) {
+                ck_fail(cur, "truncated");
+            } else {
+                FILE *f = fmemopen((void *)(uintptr_t)cur->p, bytes, "rb");
+                s->mask = f ? mask_read(f) : NULL;
+                if (f) fclose(f);
+                if (!s->mask) ck_fail(cur, "collider shape: a bad mask field");
+                else {
+                    cur->p += bytes;
+                    cur->left -= bytes;
+                }
+            }
+        }
         if (!s->mask) {
             hearth_shape_free(s);
             return NULL;
         }
+        return s;
     }
+    if ((s->kind == SHAPE_COMBINE && (!s->ca || !s->cb)) || (s->kind == SHAPE_EXTRUDE && !s->ca)) {
+        hearth_shape_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+hearth_shape *shape_read(FILE *f, int depth) {
+    /* the rest of the stream into memory, parsed by shape_read_mem, then the
+     * stream left just after the tree (one parser for files and checkpoints) */
+    const long start = ftell(f);
+    if (start < 0 || fseek(f, 0, SEEK_END) != 0) return NULL;
+    const long end = ftell(f);
+    if (end < start || fseek(f, start, SEEK_SET) != 0) return NULL;
+    const size_t n = (size_t)(end - start);
+    uint8_t *buf = mem_alloc(n ? n : 1);
+    if (!buf) return NULL;
+    hearth_shape *s = NULL;
+    if (fread(buf, 1, n, f) == n) {
+        ck_cursor cur = {buf, n, 0, NULL};
+        s = shape_read_mem(&cur, depth);
+        if (s) fseek(f, start + (long)(n - cur.left), SEEK_SET);
+    }
+    mem_free(buf, n ? n : 1);
     return s;
 }
