@@ -424,7 +424,7 @@ static hearth_scene *refuse_at(hearth_scene *s, hearth_error *err, const char *n
         else
             err_set(err, HEARTH_ERR_FORMAT, "%s: not a valid hearth checkpoint: %s: %s", name, section,
                     c->what ? c->what : "malformed");
-    } else if (err) {
+    } else if (err && strncmp(err->msg, name, strlen(name)) != 0) {
         /* a constructor's message: say that the checkpoint holds the value */
         char msg[sizeof err->msg];
         snprintf(msg, sizeof msg, "%s", err->msg);
@@ -480,11 +480,18 @@ static int get_materials(ck_cursor *c, hearth_scene *s, const char *name, hearth
                     m->name);
             return -1;
         }
-        if (m->nparams != (int)np || schema_hash(m) != hash) {
+        if (m->nparams != (int)np) {
             err_set(err, HEARTH_ERR_FORMAT,
-                    "%s: material '%s' was saved with another parameter schema (%u parameters; the plugin '%s' now "
-                    "has %d, or other names, units, ranges, defaults or state): the plugin changed since the save",
+                    "%s: material '%s' was saved with %u parameters; the plugin '%s' now has %d (the plugin changed "
+                    "since the save)",
                     name, pname, np, hearth_plugin_file(pl), m->nparams);
+            return -1;
+        }
+        if (schema_hash(m) != hash) {
+            err_set(err, HEARTH_ERR_FORMAT,
+                    "%s: material '%s' was saved with another parameter schema (hash %016llx; the plugin '%s' now has "
+                    "%016llx): its parameter names, units, ranges, defaults, state size or needs changed since the save",
+                    name, pname, (unsigned long long)hash, hearth_plugin_file(pl), (unsigned long long)schema_hash(m));
             return -1;
         }
         const char *names[SCENE_MAX_PARAMS + CP_COUNT];
