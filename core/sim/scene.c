@@ -75,9 +75,13 @@ hearth_collider_def hearth_default_collider_def(void) {
 
 static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
     if (d->dim != 2 && d->dim != 3) return err_set(err, HEARTH_ERR_PARAM, "scene: dim = %d; valid values are 2 and 3", d->dim);
-    if (!(d->dx > 0) || !isfinite(d->dx)) return err_set(err, HEARTH_ERR_PARAM, "scene: dx = %g m; it must be > 0", d->dx);
+    if (!(d->dx > 0) || !isfinite(d->dx))
+        return err_set(err, HEARTH_ERR_PARAM, "scene: dx = %g m; it must be finite and > 0", d->dx);
     for (int k = 0; k < d->dim; k++) {
-        if (!isfinite(d->lo[k]) || !isfinite(d->hi[k]) || d->hi[k] - d->lo[k] < 6 * d->dx)
+        if (!isfinite(d->lo[k]) || !isfinite(d->hi[k]))
+            return err_set(err, HEARTH_ERR_PARAM, "scene: box axis %c spans [%g, %g] m; its edges must be finite",
+                           "xyz"[k], d->lo[k], d->hi[k]);
+        if (!(d->hi[k] - d->lo[k] >= 6 * d->dx))
             return err_set(err, HEARTH_ERR_PARAM,
                            "scene: box axis %c spans [%g, %g] m; it must be at least 6 dx = %g m long", "xyz"[k],
                            d->lo[k], d->hi[k], 6 * d->dx);

@@ -90,9 +90,23 @@ static void perp3(const double u[3], double p[3]) {
 
 /* ---- allocation ------------------------------------------------------- */
 
+/* Why the last constructor on this thread returned NULL (static text naming
+ * the parameter and its valid range), for hearth_shape_error. A thread-local
+ * string keeps the constructors' signatures (public, used by scripts and
+ * plugins' hosts) while a NaN centre is no longer reported as out of memory. */
+static _Thread_local const char *shape_why;
+
+const char *hearth_shape_error(void) { return shape_why; }
+
+static hearth_shape *refuse(const char *why) {
+    shape_why = why;
+    return NULL;
+}
+
 static hearth_shape *shape_new(shape_kind kind) {
     hearth_shape *s = mem_calloc(sizeof *s);
     if (s) s->kind = kind;
+    shape_why = s ? NULL : "out of memory";
     return s;
 }
 
@@ -105,7 +119,7 @@ void hearth_shape_free(hearth_shape *s) {
 }
 
 hearth_shape *hearth_shape_copy(const hearth_shape *s) {
-    if (!s) return NULL;
+    if (!s) return refuse("copy: the shape is NULL");
     hearth_shape *d = shape_new(s->kind);
     if (!d) return NULL;
     *d = *s;
@@ -130,18 +144,20 @@ hearth_shape *hearth_shape_copy(const hearth_shape *s) {
         d->mask = mask_copy(s->mask);
         if (!d->mask) {
             hearth_shape_free(d);
-            return NULL;
+            return refuse("out of memory");
         }
     }
     return d;
 }
 
-/* ---- constructors: NULL on bad arguments or allocation failure ---------- */
+/* ---- constructors: NULL on bad arguments (hearth_shape_error says which) or
+ * allocation failure ------------------------------------------------------ */
 
 hearth_shape *hearth_shape_plane(const double point[3], const double normal[3]) {
-    if (!point || !normal || !finite3(point)) return NULL;
+    if (!point || !normal) return refuse("plane: point or normal is NULL");
+    if (!finite3(point)) return refuse("plane: point is not finite (NaN or inf)");
     double n[3];
-    if (!unit3(normal, n)) return NULL;
+    if (!unit3(normal, n)) return refuse("plane: normal must be a finite non-zero vector");
     hearth_shape *s = shape_new(SHAPE_PLANE);
     if (!s) return NULL;
     memcpy(s->c, point, sizeof s->c);
@@ -150,8 +166,10 @@ hearth_shape *hearth_shape_plane(const double point[3], const double normal[3]) 
 }
 
 hearth_shape *hearth_shape_box(const double centre[3], const double half[3]) {
-    if (!centre || !half || !finite3(centre) || !finite3(half)) return NULL;
-    if (half[0] < 0 || half[1] < 0 || half[2] < 0) return NULL;
+    if (!centre || !half) return refuse("box: centre or half extents are NULL");
+    if (!finite3(centre)) return refuse("box: centre is not finite (NaN or inf)");
+    if (!finite3(half) || half[0] < 0 || half[1] < 0 || half[2] < 0)
+        return refuse("box: half extents must be finite and >= 0 m");
     hearth_shape *s = shape_new(SHAPE_BOX);
     if (!s) return NULL;
     memcpy(s->c, centre, sizeof s->c);
@@ -160,7 +178,9 @@ hearth_shape *hearth_shape_box(const double centre[3], const double half[3]) {
 }
 
 hearth_shape *hearth_shape_sphere(const double centre[3], double radius) {
-    if (!centre || !finite3(centre) || !(radius > 0) || !isfinite(radius)) return NULL;
+    if (!centre) return refuse("sphere: centre is NULL");
+    if (!finite3(centre)) return refuse("sphere: centre is not finite (NaN or inf)");
+    if (!(radius > 0) || !isfinite(radius)) return refuse("sphere: radius must be finite and > 0 m");
     hearth_shape *s = shape_new(SHAPE_SPHERE);
     if (!s) return NULL;
     memcpy(s->c, centre, sizeof s->c);
@@ -169,10 +189,12 @@ hearth_shape *hearth_shape_sphere(const double centre[3], double radius) {
 }
 
 hearth_shape *hearth_shape_cylinder(const double centre[3], const double axis[3], double radius, double half_height) {
-    if (!centre || !axis || !finite3(centre) || !(radius > 0) || !isfinite(radius)) return NULL;
-    if (!(half_height >= 0) || !isfinite(half_height)) return NULL;
+    if (!centre || !axis) return refuse("cylinder: centre or axis is NULL");
+    if (!finite3(centre)) return refuse("cylinder: centre is not finite (NaN or inf)");
+    if (!(radius > 0) || !isfinite(radius)) return refuse("cylinder: radius must be finite and > 0 m");
+    if (!(half_height >= 0) || !isfinite(half_height)) return refuse("cylinder: half height must be finite and >= 0 m");
     double u[3];
-    if (!unit3(axis, u)) return NULL;
+    if (!unit3(axis, u)) return refuse("cylinder: axis must be a finite non-zero vector");
     hearth_shape *s = shape_new(SHAPE_CYLINDER);
     if (!s) return NULL;
     memcpy(s->c, centre, sizeof s->c);
@@ -184,7 +206,9 @@ hearth_shape *hearth_shape_cylinder(const double centre[3], const double axis[3]
 
 hearth_shape *hearth_shape_capsule(const double a[3], const double b[3], double radius) {
     /* a == b is allowed: the capsule is then a sphere. */
-    if (!a || !b || !finite3(a) || !finite3(b) || !(radius > 0) || !isfinite(radius)) return NULL;
+    if (!a || !b) return refuse("capsule: an end is NULL");
+    if (!finite3(a) || !finite3(b)) return refuse("capsule: an end is not finite (NaN or inf)");
+    if (!(radius > 0) || !isfinite(radius)) return refuse("capsule: radius must be finite and > 0 m");
     hearth_shape *s = shape_new(SHAPE_CAPSULE);
     if (!s) return NULL;
     memcpy(s->c, a, sizeof s->c);
@@ -195,12 +219,15 @@ hearth_shape *hearth_shape_capsule(const double a[3], const double b[3], double 
 
 hearth_shape *hearth_shape_container(const double base[3], const double axis[3], double r_in, double height,
                                      double wall, double floor) {
-    if (!base || !axis || !finite3(base)) return NULL;
-    if (!(r_in > 0) || !(wall > 0) || !(height >= 0) || !(floor >= 0)) return NULL;
-    if (!isfinite(r_in) || !isfinite(wall) || !isfinite(height) || !isfinite(floor)) return NULL;
-    if (!(height + floor > 0)) return NULL; /* nothing solid would remain */
+    if (!base || !axis) return refuse("container: base or axis is NULL");
+    if (!finite3(base)) return refuse("container: base is not finite (NaN or inf)");
+    if (!(r_in > 0) || !isfinite(r_in)) return refuse("container: inner radius must be finite and > 0 m");
+    if (!(wall > 0) || !isfinite(wall)) return refuse("container: wall must be finite and > 0 m");
+    if (!(height >= 0) || !isfinite(height)) return refuse("container: height must be finite and >= 0 m");
+    if (!(floor >= 0) || !isfinite(floor)) return refuse("container: floor must be finite and >= 0 m");
+    if (!(height + floor > 0)) return refuse("container: height + floor must be > 0 m (nothing solid would remain)");
     double u[3];
-    if (!unit3(axis, u)) return NULL;
+    if (!unit3(axis, u)) return refuse("container: axis must be a finite non-zero vector");
     hearth_shape *s = shape_new(SHAPE_CONTAINER);
     if (!s) return NULL;
     memcpy(s->c, base, sizeof s->c);
@@ -238,7 +265,8 @@ static int z_free(const hearth_shape *s) {
 }
 
 hearth_shape *hearth_shape_extrude(const hearth_shape *child, double z0, double z1) {
-    if (!child || !isfinite(z0) || !isfinite(z1) || !(z0 < z1)) return NULL;
+    if (!child) return refuse("extrude: the shape is NULL");
+    if (!isfinite(z0) || !isfinite(z1) || !(z0 < z1)) return refuse("extrude: z0 and z1 must be finite with z0 < z1");
     hearth_shape *s = shape_new(SHAPE_EXTRUDE);
     if (!s) return NULL;
     s->b[0] = z0;
@@ -253,8 +281,9 @@ hearth_shape *hearth_shape_extrude(const hearth_shape *child, double z0, double 
 }
 
 hearth_shape *hearth_shape_combine(hearth_shape_op op, const hearth_shape *a, const hearth_shape *b) {
-    if (!a || !b) return NULL;
-    if (op != HEARTH_UNION && op != HEARTH_INTERSECT && op != HEARTH_SUBTRACT) return NULL;
+    if (!a || !b) return refuse("combine: a shape is NULL");
+    if (op != HEARTH_UNION && op != HEARTH_INTERSECT && op != HEARTH_SUBTRACT)
+        return refuse("combine: op must be HEARTH_UNION, HEARTH_INTERSECT or HEARTH_SUBTRACT");
     hearth_shape *s = shape_new(SHAPE_COMBINE);
     if (!s) return NULL;
     s->op = op;

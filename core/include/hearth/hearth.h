@@ -112,6 +112,11 @@ hearth_shape *hearth_shape_extrude(const hearth_shape *s, double z0, double z1);
 hearth_shape *hearth_shape_combine(hearth_shape_op op, const hearth_shape *a, const hearth_shape *b);
 hearth_shape *hearth_shape_copy(const hearth_shape *s);
 void hearth_shape_free(hearth_shape *s);
+/// Why the last shape constructor called on this thread returned NULL: static
+/// text naming the argument and its valid range ("sphere: centre is not finite
+/// (NaN or inf)"), or "out of memory". NULL after a constructor that succeeded.
+/// (hearth_shape_mask reports through its hearth_error instead.)
+const char *hearth_shape_error(void);
 /// Signed distance (negative inside) at x; normal (may be NULL) gets the outward unit gradient.
 double hearth_shape_sdf(const hearth_shape *s, const double x[3], double normal[3]);
 /// A box that contains the solid part (infinite extents for a plane).
