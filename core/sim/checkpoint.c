@@ -399,6 +399,11 @@ static void get_clocks(ck_cursor *c, ck_clocks *k) {
     k->kinetic = get_finite(c, "clock: kinetic energy is not finite");
     k->kinetic_peak = get_finite(c, "clock: peak kinetic energy is not finite");
     k->cfl_last = get_finite(c, "clock: last CFL number is not finite");
+    /* speeds, energies and the last step feed the guard and the next dt: a
+     * negative one would disarm the runaway check or the CFL limit */
+    if (!(k->dt_last >= 0 && k->max_speed >= 0 && k->c_max >= 0 && k->kinetic >= 0 && k->kinetic_peak >= 0 &&
+          k->cfl_last >= 0))
+        ck_fail(c, "clock: a negative step, speed, wave speed, energy or CFL number");
     k->ood = get_i64(c);
     if (k->ood < 0) ck_fail(c, "clock: negative out-of-domain count");
     k->rng = get_u64(c);
