@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "alloc.h"
@@ -460,6 +461,24 @@ TEST(checkpoint_count_before_alloc) {
     free(img);
 }
 
+/* A folder or a FIFO named as a checkpoint is refused, without blocking. */
+TEST(checkpoint_not_regular_file) {
+    hearth_error err;
+    CHECK(hearth_scene_load("/tmp", &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "not a regular file");
+    char dir[] = "/tmp/hearth_fifo_XXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    char path[64];
+    snprintf(path, sizeof path, "%s/ck", dir);
+    CHECK(mkfifo(path, 0600) == 0);
+    CHECK(hearth_scene_load(path, &err) == NULL); /* would block forever in fopen */
+    CHECK_STR_CONTAINS(err.msg, "not a regular file");
+    remove(path);
+    rmdir(dir);
+    CHECK(hearth_scene_load("/nonexistent/x.ck", &err) == NULL && err.code == HEARTH_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, "/nonexistent/x.ck");
+}
+
 TEST_MAIN(T(checkpoint_v3_roundtrip), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
           T(checkpoint_bitflip_campaign), T(checkpoint_resealed_flips), T(checkpoint_crafted_fields),
-          T(checkpoint_old_version), T(checkpoint_count_before_alloc))
+          T(checkpoint_old_version), T(checkpoint_count_before_alloc), T(checkpoint_not_regular_file))

@@ -27,11 +27,13 @@
 #include "checkpoint.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "alloc.h"
 #include "atomic_file.h"
@@ -718,15 +720,23 @@ hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name
 
 hearth_scene *hearth_scene_load(const char *path, hearth_error *err) {
     err_clear(err);
-    FILE *f = fopen(path, "rb");
-    if (!f) {
+    /* non-blocking open, then fstat: a FIFO or a device named as a checkpoint
+     * is refused instead of blocking the open or the read */
+    const int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
         err_set(err, HEARTH_ERR_IO, "%s: cannot open checkpoint (%s)", path, strerror(errno));
         return NULL;
     }
     struct stat st;
-    if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode)) {
-        fclose(f);
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
         err_set(err, HEARTH_ERR_IO, "%s: not a regular file", path);
+        return NULL;
+    }
+    FILE *f = fdopen(fd, "rb");
+    if (!f) {
+        close(fd);
+        err_set(err, HEARTH_ERR_NOMEM, "%s: cannot open checkpoint (%s)", path, strerror(errno));
         return NULL;
     }
     const uint64_t n = (uint64_t)st.st_size;
