@@ -479,6 +479,37 @@ TEST(checkpoint_not_regular_file) {
     CHECK_STR_CONTAINS(err.msg, "/nonexistent/x.ck");
 }
 
+/* Every allocation of a load failing in turn: a refusal with a message and
+ * nothing leaked, until the load goes through. */
+TEST(checkpoint_alloc_failures) {
+    hearth_scene *s = small_scene();
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    const uint64_t want = hearth_scene_hash(s);
+    hearth_scene_destroy(s);
+    const size_t base = hearth_bytes_allocated();
+    int failed = 0, k;
+    for (k = 0; k < 500; k++) {
+        hearth_error err;
+        mem_fail_after(k);
+        hearth_scene *r = hearth_scene_load_mem(img, n, "nomem.ck", &err);
+        mem_fail_after(-1);
+        if (r) {
+            CHECK(hearth_scene_hash(r) == want);
+            hearth_scene_destroy(r);
+            break;
+        }
+        failed++;
+        CHECK(err.code != HEARTH_OK);
+        CHECK_STR_CONTAINS(err.msg, "nomem.ck");
+        CHECK(hearth_bytes_allocated() == base);
+    }
+    printf("  %d allocation failures refused before the load went through\n", failed);
+    CHECK(k < 500 && failed > 5);
+    free(img);
+}
+
 TEST_MAIN(T(checkpoint_v3_roundtrip), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
           T(checkpoint_bitflip_campaign), T(checkpoint_resealed_flips), T(checkpoint_crafted_fields),
-          T(checkpoint_old_version), T(checkpoint_count_before_alloc), T(checkpoint_not_regular_file))
+          T(checkpoint_old_version), T(checkpoint_count_before_alloc), T(checkpoint_not_regular_file),
+          T(checkpoint_alloc_failures))
