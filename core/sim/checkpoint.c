@@ -110,7 +110,7 @@ static void get_tag(ck_cursor *c, const char tag[4], const char *what) {
     char t[4];
     if (!ck_get(c, t, 4) && memcmp(t, tag, 4) != 0) ck_fail(c, what);
 }
-/* A string of at most cap - 1 bytes, [a-z0-9_] only when ident. */
+/* A string of at most cap - 1 bytes without a NUL inside; what names the refusal. */
 static void get_str(ck_cursor *c, char *buf, size_t cap, const char *what) {
     buf[0] = '\0';
     const uint32_t n = get_u32(c);
