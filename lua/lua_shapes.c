@@ -20,7 +20,10 @@ hearth_shape *hl_checkshape(lua_State *L, int idx) {
 }
 
 void hl_pushshape(lua_State *L, hearth_shape *sh) {
-    if (!sh) luaL_error(L, "could not make the shape (out of memory)");
+    if (!sh) { /* the constructor says which argument (a NaN centre is not "out of memory") */
+        const char *why = hearth_shape_error();
+        luaL_error(L, "could not make the shape: %s", why ? why : "out of memory");
+    }
     hl_shape *u = lua_newuserdatauv(L, sizeof *u, 0);
     u->sh = sh;
     luaL_setmetatable(L, HL_SHAPE);

@@ -1,118 +1,301 @@
-/* checkpoint.c: save and restore the full scene state.
+/* checkpoint.c: save and restore the full scene state (layout: checkpoint.h).
  *
- * Layout (version 2, native endianness, checked on load; version 2 added the
- * water properties, the wet colliders and the water-lost clock):
- *   "HEARTHCK" u32 version u32 0x01020304 u32 sizeof(double)
- *   scene definition and clocks, field by field
- *   materials: plugin name, parameter count, parameters
- *   colliders: shape tree, contact, motion so far
- *   particles: count, state stride, enabled mask, then each enabled column
- *   u64 hash of the particle columns
  * A restored scene continues bit-identically: particle order, clocks, dt
  * scale, the jitter generator and collider poses are all in the file. Motion
  * callbacks are code and are not saved; re-attach them with
- * hearth_scene_collider_motion. */
-#include <stdint.h>
+ * hearth_scene_collider_motion.
+ *
+ * A checkpoint is untrusted input (it may come from anywhere), so loading:
+ *   1. reads the file into memory after checking its size against the cap and
+ *      against the size its header states;
+ *   2. verifies the CRC-32 over the whole file before parsing anything else;
+ *   3. parses with a bounds-checked cursor: every count is checked against
+ *      the bytes left and a sane limit before anything is allocated, every
+ *      enum against its range, every float that must be finite is, and no
+ *      float becomes an integer;
+ *   4. names materials by plugin name only, resolved on the plugin search
+ *      path, with the ABI and a hash of the schema checked: a checkpoint never
+ *      makes hearth dlopen a path it holds;
+ *   5. builds the scene through the public constructors (scene, materials,
+ *      curves, colliders), which check values as they do for a script.
+ * The checksum alone would refuse random damage; the checks of 3-5 are for
+ * a file crafted to pass it.
+ *
+ * The writer builds the whole image in memory (open_memstream) so the header
+ * can carry the size and CRC, then writes it atomically. Version 2 files (a
+ * checksum over the particles only, plugins by path) are refused by version. */
+#include "checkpoint.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "alloc.h"
 #include "atomic_file.h"
+#include "crc32.h"
 #include "error.h"
 #include "scene.h"
 #include "shapes.h"
 
-#define CK_MAGIC "HEARTHCK"
-#define CK_VERSION 2u
+/* Limits a valid checkpoint stays far inside; a count above one is refused
+ * before anything is allocated for it. */
+#define CK_MAX_MATERIALS 4096
+#define CK_MAX_COLLIDERS 4096
+#define CK_MAX_CURVE_POINTS 100000
+#define CK_MAX_STRIDE 4096
+#define CK_MAX_NAME 64
 
-typedef struct ck_io {
-    FILE *f;
-    int bad;
-} ck_io;
+/* ---- cursor ----------------------------------------------------------- */
 
-static void wr(ck_io *io, const void *p, size_t n) {
-    if (!io->bad && n && fwrite(p, n, 1, io->f) != 1) io->bad = 1;
-}
-static void rd(ck_io *io, void *p, size_t n) {
-    if (!io->bad && n && fread(p, n, 1, io->f) != 1) io->bad = 1;
-}
-#define WR(io, v) wr(io, &(v), sizeof(v))
-#define RD(io, v) rd(io, &(v), sizeof(v))
-
-static void wr_str(ck_io *io, const char *s) {
-    uint32_t n = (uint32_t)strlen(s);
-    WR(io, n);
-    wr(io, s, n);
+int ck_fail(ck_cursor *c, const char *what) {
+    if (!c->bad) {
+        c->bad = 1;
+        c->what = what;
+    }
+    return -1;
 }
 
-static void rd_str(ck_io *io, char *buf, size_t cap) {
-    uint32_t n = 0;
-    RD(io, n);
+int ck_get(ck_cursor *c, void *out, size_t n) {
+    if (c->bad || n > c->left) {
+        memset(out, 0, n);
+        return ck_fail(c, "truncated");
+    }
+    memcpy(out, c->p, n);
+    c->p += n;
+    c->left -= n;
+    return 0;
+}
+
+static int32_t get_i32(ck_cursor *c) {
+    int32_t v;
+    ck_get(c, &v, sizeof v);
+    return v;
+}
+static uint32_t get_u32(ck_cursor *c) {
+    uint32_t v;
+    ck_get(c, &v, sizeof v);
+    return v;
+}
+static uint64_t get_u64(ck_cursor *c) {
+    uint64_t v;
+    ck_get(c, &v, sizeof v);
+    return v;
+}
+static int64_t get_i64(ck_cursor *c) {
+    int64_t v;
+    ck_get(c, &v, sizeof v);
+    return v;
+}
+static double get_f64(ck_cursor *c) {
+    double v;
+    ck_get(c, &v, sizeof v);
+    return v;
+}
+/* A double that must be finite; what names it in the refusal. */
+static double get_finite(ck_cursor *c, const char *what) {
+    double v = get_f64(c);
+    if (!isfinite(v)) ck_fail(c, what);
+    return v;
+}
+static void get_finite_n(ck_cursor *c, double *v, int n, const char *what) {
+    for (int k = 0; k < n; k++) v[k] = get_finite(c, what);
+}
+/* A section tag: the parser and the file agree on where each part starts. */
+static void get_tag(ck_cursor *c, const char tag[4], const char *what) {
+    char t[4];
+    if (!ck_get(c, t, 4) && memcmp(t, tag, 4) != 0) ck_fail(c, what);
+}
+/* A string of at most cap - 1 bytes without a NUL inside; what names the refusal. */
+static void get_str(ck_cursor *c, char *buf, size_t cap, const char *what) {
+    buf[0] = '\0';
+    const uint32_t n = get_u32(c);
+    if (c->bad) return;
     if (n >= cap) {
-        io->bad = 1;
+        ck_fail(c, what);
         return;
     }
-    rd(io, buf, n);
-    buf[io->bad ? 0 : n] = '\0';
+    if (ck_get(c, buf, n)) return;
+    buf[n] = '\0';
+    if (memchr(buf, '\0', n)) ck_fail(c, what);
 }
 
-static void io_def(ck_io *io, hearth_scene_def *d, int writing) {
-    void (*f)(ck_io *, void *, size_t) = writing ? (void (*)(ck_io *, void *, size_t))wr : rd;
-    int32_t dim = d->dim, wall = d->wall, guard = d->guard, mr = d->max_rollbacks;
-    f(io, &dim, sizeof dim);
-    f(io, &d->dx, sizeof d->dx);
-    f(io, d->lo, sizeof d->lo);
-    f(io, d->hi, sizeof d->hi);
-    f(io, d->gravity, sizeof d->gravity);
-    f(io, &d->cfl, sizeof d->cfl);
-    f(io, &d->dt_max, sizeof d->dt_max);
-    f(io, &wall, sizeof wall);
-    f(io, &d->wall_friction, sizeof d->wall_friction);
-    f(io, &guard, sizeof guard);
-    f(io, &mr, sizeof mr);
-    f(io, &d->energy_growth, sizeof d->energy_growth);
-    f(io, &d->seed, sizeof d->seed);
-    int32_t hi = d->heat_implicit, wm = d->water_momentum, tr = d->transfer;
-    f(io, &d->oven_temperature, sizeof d->oven_temperature);
-    f(io, &d->oven_beta, sizeof d->oven_beta);
-    f(io, &hi, sizeof hi);
-    f(io, &wm, sizeof wm);
-    f(io, &tr, sizeof tr);
-    f(io, &d->heat_flip, sizeof d->heat_flip);
-    d->transfer = tr;
-    d->heat_implicit = hi;
-    d->water_momentum = wm;
-    d->dim = dim;
-    d->wall = (hearth_contact)wall;
-    d->guard = (hearth_guard_policy)guard;
-    d->max_rollbacks = mr;
+/* ---- checksum --------------------------------------------------------- */
+
+uint32_t ck_crc(const uint8_t *buf, size_t n) {
+    static const uint8_t zero[4] = {0, 0, 0, 0};
+    uint32_t crc = crc32_update(0, buf, CK_OFF_CRC);
+    crc = crc32_update(crc, zero, 4);
+    return crc32_update(crc, buf + CK_OFF_CRC + 4, n - CK_OFF_CRC - 4);
 }
 
-static void io_clocks(ck_io *io, hearth_scene *s, int writing) {
-    void (*f)(ck_io *, void *, size_t) = writing ? (void (*)(ck_io *, void *, size_t))wr : rd;
-    int64_t step = s->step, ood = s->out_of_domain;
-    int32_t rb = s->rollbacks, guard = s->guard, next_id = s->next_id, nbodies = s->nbodies;
-    f(io, &s->t, sizeof s->t);
-    f(io, &s->dt_last, sizeof s->dt_last);
-    f(io, &s->dt_scale, sizeof s->dt_scale);
-    f(io, &step, sizeof step);
-    f(io, &rb, sizeof rb);
-    f(io, &s->max_speed, sizeof s->max_speed);
-    f(io, &s->c_max, sizeof s->c_max);
-    f(io, &s->kinetic, sizeof s->kinetic);
-    f(io, &s->kinetic_peak, sizeof s->kinetic_peak);
-    f(io, &s->cfl_last, sizeof s->cfl_last);
-    f(io, &ood, sizeof ood);
-    f(io, &guard, sizeof guard);
-    f(io, &s->rng, sizeof s->rng);
-    f(io, &next_id, sizeof next_id);
-    f(io, &nbodies, sizeof nbodies);
-    f(io, &s->water_lost, sizeof s->water_lost);
-    s->nbodies = nbodies;
-    s->step = step;
-    s->out_of_domain = ood;
-    s->rollbacks = rb;
-    s->guard = (hearth_guard_state)guard;
-    s->next_id = next_id;
+void ck_reseal(uint8_t *buf, size_t n) {
+    if (n < CK_HEADER_SIZE) return;
+    const uint64_t size = n;
+    memcpy(buf + CK_OFF_SIZE, &size, sizeof size);
+    const uint32_t crc = ck_crc(buf, n);
+    memcpy(buf + CK_OFF_CRC, &crc, sizeof crc);
+}
+
+/* ---- the plugin schema's hash ----------------------------------------- */
+
+static uint64_t fnv(uint64_t h, const void *p, size_t n) {
+    const unsigned char *b = p;
+    for (size_t i = 0; i < n; i++) h = (h ^ b[i]) * 1099511628211ULL;
+    return h;
+}
+static uint64_t fnv_str(uint64_t h, const char *s) { return fnv(h, s ? s : "", (s ? strlen(s) : 0) + 1); }
+
+/* FNV-1a over what a saved material depends on: the parameter names, units,
+ * ranges and defaults (the meaning of the saved numbers), the state size and
+ * the needs (the meaning of the saved state columns). The help text is left
+ * out: rewording it changes nothing saved. */
+static uint64_t schema_hash(const hearth_material *m) {
+    uint64_t h = 1469598103934665603ULL;
+    h = fnv_str(h, m->name);
+    const int32_t head[4] = {m->real_size, m->nparams, m->state_size, (int32_t)m->needs};
+    h = fnv(h, head, sizeof head);
+    for (int k = 0; k < m->nparams; k++) {
+        const hearth_param *p = &m->params[k];
+        h = fnv_str(h, p->name);
+        h = fnv_str(h, p->unit);
+        const double r[3] = {p->def, p->min, p->max};
+        h = fnv(h, r, sizeof r);
+    }
+    return h;
+}
+
+static int is_plugin_name(const char *s) {
+    if (!*s) return 0;
+    for (; *s; s++)
+        if (!((*s >= 'a' && *s <= 'z') || (*s >= '0' && *s <= '9') || *s == '_')) return 0;
+    return 1;
+}
+
+/* ---- writing ---------------------------------------------------------- */
+
+typedef struct ck_out {
+    FILE *f;
+    int bad;
+} ck_out;
+
+static void put(ck_out *o, const void *p, size_t n) {
+    if (!o->bad && n && fwrite(p, n, 1, o->f) != 1) o->bad = 1;
+}
+static void put_i32(ck_out *o, int32_t v) { put(o, &v, sizeof v); }
+static void put_u32(ck_out *o, uint32_t v) { put(o, &v, sizeof v); }
+static void put_u64(ck_out *o, uint64_t v) { put(o, &v, sizeof v); }
+static void put_i64(ck_out *o, int64_t v) { put(o, &v, sizeof v); }
+static void put_f64(ck_out *o, double v) { put(o, &v, sizeof v); }
+static void put_str(ck_out *o, const char *s) {
+    const uint32_t n = (uint32_t)strlen(s);
+    put_u32(o, n);
+    put(o, s, n);
+}
+
+static void put_def(ck_out *o, const hearth_scene_def *d) {
+    put(o, "DEF ", 4);
+    put_i32(o, d->dim);
+    put_f64(o, d->dx);
+    put(o, d->lo, sizeof d->lo);
+    put(o, d->hi, sizeof d->hi);
+    put(o, d->gravity, sizeof d->gravity);
+    put_f64(o, d->cfl);
+    put_f64(o, d->dt_max);
+    put_i32(o, (int32_t)d->wall);
+    put_f64(o, d->wall_friction);
+    put_i32(o, (int32_t)d->guard);
+    put_i32(o, d->max_rollbacks);
+    put_f64(o, d->energy_growth);
+    put_u64(o, d->seed);
+    put_f64(o, d->oven_temperature);
+    put_f64(o, d->oven_beta);
+    put_i32(o, d->heat_implicit);
+    put_i32(o, d->water_momentum);
+    put_i32(o, d->transfer);
+    put_f64(o, d->heat_flip);
+}
+
+static void put_clocks(ck_out *o, const hearth_scene *s) {
+    put(o, "CLK ", 4);
+    put_i32(o, (int32_t)s->guard); /* first: its offset is fixed (tests craft it) */
+    put_f64(o, s->t);
+    put_f64(o, s->dt_last);
+    put_f64(o, s->dt_scale);
+    put_i64(o, s->step);
+    put_i32(o, s->rollbacks);
+    put_f64(o, s->max_speed);
+    put_f64(o, s->c_max);
+    put_f64(o, s->kinetic);
+    put_f64(o, s->kinetic_peak);
+    put_f64(o, s->cfl_last);
+    put_i64(o, s->out_of_domain);
+    put_u64(o, s->rng);
+    put_i32(o, s->next_id);
+    put_i32(o, s->nbodies);
+    put_f64(o, s->water_lost);
+}
+
+static void put_materials(ck_out *o, const hearth_scene *s) {
+    put(o, "MATS", 4);
+    put_u32(o, (uint32_t)s->nmat);
+    for (int i = 0; i < s->nmat; i++) {
+        const material_slot *ms = &s->mats[i];
+        put_str(o, ms->m->name); /* the name only: never the path it was loaded from */
+        put_u32(o, (uint32_t)ms->m->abi_version);
+        put_u64(o, schema_hash(ms->m));
+        put_u32(o, (uint32_t)ms->m->nparams);
+        put(o, ms->params, sizeof(double) * (size_t)ms->m->nparams);
+        put(o, ms->core, sizeof(double) * CP_COUNT);
+        put_u32(o, (uint32_t)ms->ncurves);
+        for (int k = 0; k < ms->ncurves; k++) {
+            const curve *c = &ms->curves[k];
+            put_u32(o, (uint32_t)c->param);
+            put_u32(o, (uint32_t)c->n);
+            put_u32(o, (uint32_t)c->irreversible);
+            put(o, c->T, sizeof(double) * (size_t)c->n);
+            put(o, c->v, sizeof(double) * (size_t)c->n);
+        }
+    }
+}
+
+static void put_colliders(ck_out *o, const hearth_scene *s) {
+    put(o, "COLS", 4);
+    put_u32(o, (uint32_t)s->ncol);
+    for (int i = 0; i < s->ncol; i++) {
+        const collider *c = &s->cols[i];
+        if (!o->bad && shape_write(o->f, c->shape)) o->bad = 1;
+        put_i32(o, (int32_t)c->mode);
+        put_f64(o, c->friction);
+        put(o, c->vel, sizeof c->vel);
+        put(o, c->omega, sizeof c->omega);
+        put(o, c->pivot0, sizeof c->pivot0);
+        put(o, c->offset, sizeof c->offset);
+        put(o, c->R, sizeof c->R);
+        put_i32(o, c->motion != NULL);
+        put_f64(o, c->temperature);
+        put_f64(o, c->beta);
+        put_f64(o, c->saturation);
+    }
+}
+
+static void put_particles(ck_out *o, const hearth_scene *s) {
+    const particles *ps = &s->ps;
+    put(o, "PART", 4);
+    put_u32(o, (uint32_t)ps->n);
+    put_u32(o, (uint32_t)ps->state_stride);
+    put_u32(o, ps->enabled);
+    for (int c = 0; c < PC_COUNT; c++) {
+        if (!(ps->enabled & (1u << c))) continue;
+        put_str(o, particles_col_name(c));
+        if (ps->col[c]) put(o, ps->col[c], particles_col_bytes(ps, c) * (size_t)ps->n);
+    }
+    put(o, "HASH", 4);
+    put_u64(o, hearth_scene_hash(s));
 }
 
 hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_error *err) {
@@ -123,243 +306,473 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
     if (s->mix_mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
                        path);
+    char *img = NULL;
+    size_t n = 0;
+    FILE *mf = open_memstream(&img, &n);
+    if (!mf) return err_set(err, HEARTH_ERR_NOMEM, "save %s: out of memory for the checkpoint image", path);
+    ck_out o = {mf, 0};
+    put(&o, CK_MAGIC, 8);
+    put_u32(&o, CK_VERSION);
+    put_u32(&o, CK_BOM);
+    put_u32(&o, (uint32_t)sizeof(double));
+    put_u32(&o, CK_HEADER_SIZE);
+    put_u64(&o, 0); /* size and CRC: ck_reseal below */
+    put_u32(&o, 0);
+    put_u32(&o, 0);
+    put_def(&o, &s->def);
+    put_clocks(&o, s);
+    put_materials(&o, s);
+    put_colliders(&o, s);
+    put_particles(&o, s);
+    if (fclose(mf) != 0) o.bad = 1;
+    if (o.bad || n < CK_HEADER_SIZE) {
+        free(img);
+        return err_set(err, HEARTH_ERR_NOMEM, "save %s: out of memory building the checkpoint image", path);
+    }
+    ck_reseal((uint8_t *)img, n);
     atomic_file af;
     hearth_status st = atomic_open(&af, path, err);
-    if (st) return st;
-    ck_io io = {af.f, 0};
-    wr(&io, CK_MAGIC, 8);
-    uint32_t hdr[3] = {CK_VERSION, 0x01020304u, (uint32_t)sizeof(double)};
-    wr(&io, hdr, sizeof hdr);
-    hearth_scene_def d = s->def;
-    io_def(&io, &d, 1);
-    io_clocks(&io, (hearth_scene *)s, 1);
-    int32_t nmat = s->nmat;
-    WR(&io, nmat);
-    for (int i = 0; i < s->nmat; i++) {
-        wr_str(&io, hearth_plugin_file(s->mats[i].plugin));
-        wr_str(&io, s->mats[i].m->name);
-        int32_t np = s->mats[i].m->nparams;
-        WR(&io, np);
-        wr(&io, s->mats[i].params, sizeof(double) * (size_t)np);
-        wr(&io, s->mats[i].core, sizeof(double) * CP_COUNT);
-        int32_t nc = s->mats[i].ncurves;
-        WR(&io, nc);
-        for (int k = 0; k < nc; k++) {
-            const curve *c = &s->mats[i].curves[k];
-            int32_t hdr3[3] = {c->param, c->n, c->irreversible};
-            wr(&io, hdr3, sizeof hdr3);
-            wr(&io, c->T, sizeof(double) * (size_t)c->n);
-            wr(&io, c->v, sizeof(double) * (size_t)c->n);
-        }
+    if (st) {
+        free(img);
+        return st;
     }
-    int32_t ncol = s->ncol;
-    WR(&io, ncol);
-    for (int i = 0; i < s->ncol; i++) {
-        const collider *c = &s->cols[i];
-        if (!io.bad && shape_write(io.f, c->shape)) io.bad = 1;
-        int32_t mode = c->mode, has_motion = c->motion != NULL;
-        WR(&io, mode);
-        WR(&io, c->friction);
-        wr(&io, c->vel, sizeof c->vel);
-        wr(&io, c->omega, sizeof c->omega);
-        wr(&io, c->pivot0, sizeof c->pivot0);
-        wr(&io, c->offset, sizeof c->offset);
-        wr(&io, c->R, sizeof c->R);
-        WR(&io, has_motion);
-        WR(&io, c->temperature);
-        WR(&io, c->beta);
-        WR(&io, c->saturation);
-    }
-    const particles *ps = &s->ps;
-    int32_t n = ps->n, stride = ps->state_stride;
-    uint32_t enabled = ps->enabled;
-    WR(&io, n);
-    WR(&io, stride);
-    WR(&io, enabled);
-    for (int c = 0; c < PC_COUNT; c++) {
-        if (!(ps->enabled & (1u << c))) continue;
-        wr_str(&io, particles_col_name(c));
-        if (ps->col[c]) wr(&io, ps->col[c], particles_col_bytes(ps, c) * (size_t)ps->n);
-    }
-    uint64_t h = hearth_scene_hash(s);
-    WR(&io, h);
-    if (io.bad) {
+    const int bad = fwrite(img, n, 1, af.f) != 1;
+    free(img);
+    if (bad) {
         atomic_abort(&af);
         return err_set(err, HEARTH_ERR_IO, "%s: write failed", path);
     }
     return atomic_commit(&af, err);
 }
 
-static hearth_scene *load_fail(hearth_scene *s, FILE *f, hearth_error *err, const char *path, const char *what) {
-    if (err && err->code == HEARTH_OK) err_set(err, HEARTH_ERR_FORMAT, "%s: not a valid hearth checkpoint: %s", path, what);
+/* ---- reading ---------------------------------------------------------- */
+
+/* The scene definition, every field checked here or by hearth_scene_create. */
+static void get_def(ck_cursor *c, hearth_scene_def *d) {
+    get_tag(c, "DEF ", "the scene definition section is missing");
+    d->dim = get_i32(c);
+    d->dx = get_finite(c, "scene: dx is not finite");
+    get_finite_n(c, d->lo, 3, "scene: box lo is not finite");
+    get_finite_n(c, d->hi, 3, "scene: box hi is not finite");
+    get_finite_n(c, d->gravity, 3, "scene: gravity is not finite");
+    d->cfl = get_finite(c, "scene: cfl is not finite");
+    d->dt_max = get_finite(c, "scene: dt_max is not finite");
+    const int32_t wall = get_i32(c);
+    if (wall < HEARTH_STICKY || wall > HEARTH_SEPARATE) ck_fail(c, "scene: wall mode out of range [0, 2]");
+    d->wall = (hearth_contact)wall;
+    d->wall_friction = get_finite(c, "scene: wall friction is not finite");
+    const int32_t guard = get_i32(c);
+    if (guard < HEARTH_GUARD_STOP || guard > HEARTH_GUARD_ROLLBACK) ck_fail(c, "scene: guard policy out of range [0, 1]");
+    d->guard = (hearth_guard_policy)guard;
+    d->max_rollbacks = get_i32(c);
+    d->energy_growth = get_finite(c, "scene: energy_growth is not finite");
+    d->seed = get_u64(c);
+    d->oven_temperature = get_f64(c); /* NaN means no oven; hearth_scene_create checks the rest */
+    d->oven_beta = get_finite(c, "scene: oven beta is not finite");
+    d->heat_implicit = get_i32(c);
+    d->water_momentum = get_i32(c);
+    if (d->water_momentum != 0 && d->water_momentum != 1) ck_fail(c, "scene: water_momentum is neither 0 nor 1");
+    d->transfer = get_i32(c);
+    d->heat_flip = get_finite(c, "scene: heat_flip is not finite");
+    d->solver = HEARTH_SOLVER_MPM; /* the only solver saved */
+}
+
+typedef struct ck_clocks {
+    int32_t guard, rollbacks, next_id, nbodies;
+    double t, dt_last, dt_scale, max_speed, c_max, kinetic, kinetic_peak, cfl_last, water_lost;
+    int64_t step, ood;
+    uint64_t rng;
+} ck_clocks;
+
+static void get_clocks(ck_cursor *c, ck_clocks *k) {
+    get_tag(c, "CLK ", "the clocks section is missing");
+    k->guard = get_i32(c);
+    if (k->guard < HEARTH_GUARD_OK || k->guard > HEARTH_GUARD_STOPPED) ck_fail(c, "guard state out of range [0, 2]");
+    k->t = get_finite(c, "clock: t is not finite");
+    k->dt_last = get_finite(c, "clock: dt_last is not finite");
+    k->dt_scale = get_finite(c, "clock: dt_scale is not finite");
+    if (!(k->dt_scale > 0 && k->dt_scale <= 1)) ck_fail(c, "clock: dt_scale out of range (0, 1]");
+    k->step = get_i64(c);
+    if (k->step < 0) ck_fail(c, "clock: negative step count");
+    k->rollbacks = get_i32(c);
+    if (k->rollbacks < 0) ck_fail(c, "clock: negative rollback count");
+    k->max_speed = get_finite(c, "clock: max speed is not finite");
+    k->c_max = get_finite(c, "clock: wave speed is not finite");
+    k->kinetic = get_finite(c, "clock: kinetic energy is not finite");
+    k->kinetic_peak = get_finite(c, "clock: peak kinetic energy is not finite");
+    k->cfl_last = get_finite(c, "clock: last CFL number is not finite");
+    /* speeds, energies and the last step feed the guard and the next dt: a
+     * negative one would disarm the runaway check or the CFL limit */
+    if (!(k->dt_last >= 0 && k->max_speed >= 0 && k->c_max >= 0 && k->kinetic >= 0 && k->kinetic_peak >= 0 &&
+          k->cfl_last >= 0))
+        ck_fail(c, "clock: a negative step, speed, wave speed, energy or CFL number");
+    k->ood = get_i64(c);
+    if (k->ood < 0) ck_fail(c, "clock: negative out-of-domain count");
+    k->rng = get_u64(c);
+    k->next_id = get_i32(c);
+    k->nbodies = get_i32(c);
+    if (k->next_id < 0 || k->nbodies < 0) ck_fail(c, "clock: negative particle id or body count");
+    k->water_lost = get_finite(c, "clock: water lost is not finite");
+}
+
+/* A refusal: the file named, then what is wrong. Frees s. */
+static hearth_scene *refuse(hearth_scene *s, hearth_error *err, const char *name, const char *what) {
+    if (err && err->code == HEARTH_OK) err_set(err, HEARTH_ERR_FORMAT, "%s: not a valid hearth checkpoint: %s", name, what);
     hearth_scene_destroy(s);
-    if (f) fclose(f);
     return NULL;
+}
+/* A refusal from the cursor, or from err when a constructor filled it. */
+static hearth_scene *refuse_at(hearth_scene *s, hearth_error *err, const char *name, const ck_cursor *c,
+                               const char *section) {
+    if (err && err->code == HEARTH_OK) {
+        if (c->what && strcmp(c->what, "truncated") == 0)
+            err_set(err, HEARTH_ERR_FORMAT, "%s: not a valid hearth checkpoint: %s ends early (%zu bytes left)", name,
+                    section, c->left);
+        else
+            err_set(err, HEARTH_ERR_FORMAT, "%s: not a valid hearth checkpoint: %s: %s", name, section,
+                    c->what ? c->what : "malformed");
+    } else if (err && strncmp(err->msg, name, strlen(name)) != 0) {
+        /* a constructor's message: say that the checkpoint holds the value */
+        char msg[sizeof err->msg];
+        snprintf(msg, sizeof msg, "%s", err->msg);
+        err_set(err, err->code == HEARTH_ERR_NOMEM ? HEARTH_ERR_NOMEM : HEARTH_ERR_FORMAT,
+                "%s: checkpoint refused (%s): %s", name, section, msg);
+    }
+    hearth_scene_destroy(s);
+    return NULL;
+}
+
+static int get_materials(ck_cursor *c, hearth_scene *s, const char *name, hearth_error *err) {
+    get_tag(c, "MATS", "the materials section is missing");
+    const uint32_t nmat = get_u32(c);
+    if (c->bad) return -1;
+    if (nmat > CK_MAX_MATERIALS) return ck_fail(c, "more than 4096 materials");
+    for (uint32_t i = 0; i < nmat; i++) {
+        char pname[CK_MAX_NAME];
+        get_str(c, pname, sizeof pname, "a material's plugin name is longer than 63 bytes");
+        const uint32_t abi = get_u32(c);
+        const uint64_t hash = get_u64(c);
+        const uint32_t np = get_u32(c);
+        if (c->bad) return -1;
+        if (!is_plugin_name(pname)) {
+            /* a path (or anything else) is never handed to the loader */
+            err_set(err, HEARTH_ERR_FORMAT,
+                    "%s: not a valid hearth checkpoint: material %u names plugin \"%.40s\", which is not a plugin name "
+                    "[a-z0-9_]+ (checkpoints name plugins, never paths)",
+                    name, i, pname);
+            return -1;
+        }
+        if (np > SCENE_MAX_PARAMS) return ck_fail(c, "a material with more than 256 parameters");
+        if ((size_t)(np + CP_COUNT) * sizeof(double) > c->left) return ck_fail(c, "truncated");
+        double vals[SCENE_MAX_PARAMS + CP_COUNT];
+        get_finite_n(c, vals, (int)np + CP_COUNT, "a material parameter is not finite");
+        if (c->bad) return -1;
+        if (abi != HEARTH_MATERIAL_ABI) {
+            err_set(err, HEARTH_ERR_FORMAT,
+                    "%s: material '%s' was saved with plugin ABI %u; this hearth has ABI %d (rebuild the plugin and "
+                    "start the run again)",
+                    name, pname, abi, HEARTH_MATERIAL_ABI);
+            return -1;
+        }
+        const hearth_plugin *pl = hearth_plugin_load(pname, err); /* by name, on the search path */
+        if (!pl) {
+            char msg[sizeof err->msg];
+            snprintf(msg, sizeof msg, "%s", err->msg);
+            err_set(err, HEARTH_ERR_PLUGIN, "%s: material '%s': %s", name, pname, msg);
+            return -1;
+        }
+        const hearth_material *m = hearth_plugin_material(pl);
+        if (strcmp(m->name, pname) != 0) {
+            err_set(err, HEARTH_ERR_FORMAT, "%s: plugin '%s' on the search path declares material '%s'", name, pname,
+                    m->name);
+            return -1;
+        }
+        if (m->nparams != (int)np) {
+            err_set(err, HEARTH_ERR_FORMAT,
+                    "%s: material '%s' was saved with %u parameters; the plugin '%s' now has %d (the plugin changed "
+                    "since the save)",
+                    name, pname, np, hearth_plugin_file(pl), m->nparams);
+            return -1;
+        }
+        if (schema_hash(m) != hash) {
+            err_set(err, HEARTH_ERR_FORMAT,
+                    "%s: material '%s' was saved with another parameter schema (hash %016llx; the plugin '%s' now has "
+                    "%016llx): its parameter names, units, ranges, defaults, state size or needs changed since the save",
+                    name, pname, (unsigned long long)hash, hearth_plugin_file(pl), (unsigned long long)schema_hash(m));
+            return -1;
+        }
+        const char *names[SCENE_MAX_PARAMS + CP_COUNT];
+        for (uint32_t k = 0; k < np; k++) names[k] = m->params[k].name;
+        const hearth_param *cp = hearth_core_params(NULL);
+        for (int k = 0; k < CP_COUNT; k++) names[np + k] = cp[k].name;
+        const int mat = hearth_scene_add_material(s, pname, names, vals, (int)np + CP_COUNT, err);
+        if (mat < 0) return -1;
+        const uint32_t nc = get_u32(c);
+        if (c->bad) return -1;
+        if (nc > np) return ck_fail(c, "more temperature curves than parameters");
+        for (uint32_t k = 0; k < nc; k++) {
+            const uint32_t param = get_u32(c), npts = get_u32(c), irr = get_u32(c);
+            if (c->bad) return -1;
+            if (param >= np) return ck_fail(c, "a curve of a parameter the material does not have");
+            if (npts < 1 || npts > CK_MAX_CURVE_POINTS) return ck_fail(c, "a curve's point count out of range [1, 100000]");
+            if (irr > 1) return ck_fail(c, "a curve's irreversible flag is neither 0 nor 1");
+            const size_t bytes = sizeof(double) * npts;
+            if (2 * bytes > c->left) return ck_fail(c, "truncated");
+            double *T = mem_alloc(bytes), *v = mem_alloc(bytes);
+            int bad = !T || !v;
+            if (bad) err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory for a curve of %u points", name, npts);
+            else {
+                get_finite_n(c, T, (int)npts, "a curve's temperature is not finite");
+                get_finite_n(c, v, (int)npts, "a curve's value is not finite");
+                bad = c->bad || hearth_scene_material_curve(s, mat, m->params[param].name, (int)npts, T, v, (int)irr, err);
+            }
+            mem_free(T, bytes);
+            mem_free(v, bytes);
+            if (bad) return -1;
+        }
+    }
+    return 0;
+}
+
+static int rotation_ok(const double R[9]) {
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) {
+            const double d = R[3 * a] * R[3 * b] + R[3 * a + 1] * R[3 * b + 1] + R[3 * a + 2] * R[3 * b + 2];
+            if (!(fabs(d - (a == b)) <= 1e-6)) return 0;
+        }
+    return 1;
+}
+
+static int get_colliders(ck_cursor *c, hearth_scene *s, hearth_error *err) {
+    get_tag(c, "COLS", "the colliders section is missing");
+    const uint32_t ncol = get_u32(c);
+    if (c->bad) return -1;
+    if (ncol > CK_MAX_COLLIDERS) return ck_fail(c, "more than 4096 colliders");
+    for (uint32_t i = 0; i < ncol; i++) {
+        hearth_shape *sh = shape_read_mem(c, 0);
+        if (!sh) return -1;
+        hearth_collider_def cd = hearth_default_collider_def();
+        cd.shape = sh;
+        const int32_t mode = get_i32(c);
+        if (mode < HEARTH_STICKY || mode > HEARTH_GRIP) ck_fail(c, "collider contact mode out of range [0, 3]");
+        cd.mode = (hearth_contact)mode;
+        cd.friction = get_finite(c, "collider friction is not finite");
+        double offset[3], R[9];
+        get_finite_n(c, cd.velocity, 3, "collider velocity is not finite");
+        get_finite_n(c, cd.omega, 3, "collider angular velocity is not finite");
+        get_finite_n(c, cd.pivot, 3, "collider pivot is not finite");
+        get_finite_n(c, offset, 3, "collider offset is not finite");
+        get_finite_n(c, R, 9, "collider rotation is not finite");
+        if (!c->bad && !rotation_ok(R)) ck_fail(c, "collider rotation is not a rotation matrix");
+        const int32_t has_motion = get_i32(c);
+        if (has_motion != 0 && has_motion != 1) ck_fail(c, "collider motion flag is neither 0 nor 1");
+        cd.temperature = get_f64(c); /* NaN: not heated; collider_init checks the rest */
+        cd.beta = get_finite(c, "collider beta is not finite");
+        cd.saturation = get_f64(c);  /* NaN: dry */
+        const int id = c->bad ? -1 : hearth_scene_add_collider(s, &cd, err);
+        hearth_shape_free(sh);
+        if (id < 0) return -1;
+        memcpy(s->cols[id].offset, offset, sizeof offset);
+        memcpy(s->cols[id].R, R, sizeof R);
+        collider_update_bounds(&s->cols[id], 2 * s->def.dx);
+    }
+    return 0;
+}
+
+/* Whether every value of a column is acceptable: finite where it must be,
+ * indices in range. Names the first offender in c. */
+static int check_column(ck_cursor *c, const hearth_scene *s, int col, int n) {
+    const particles *ps = &s->ps;
+    if (col == PC_STATE) return 0; /* the plugin's own numbers: its state, its meaning */
+    if (particles_col_is_int(col)) {
+        const int *a = pcoli(ps, col);
+        for (int i = 0; i < n; i++) {
+            const int v = a[i];
+            if (col == PC_MAT && (v < 0 || v >= s->nmat)) return ck_fail(c, "a particle with an unknown material");
+            if (col == PC_BODY && (v < -1 || v >= s->nbodies)) return ck_fail(c, "a particle with an unknown body");
+            if (col == PC_FLAGS && (v & ~(PF_FIXED | PF_BOUNDARY))) return ck_fail(c, "a particle with unknown flags");
+            if (col == PC_ID && (v < 0 || v >= s->next_id)) return ck_fail(c, "a particle id out of range");
+        }
+        return 0;
+    }
+    const double *a = pcold(ps, col);
+    const size_t len = (size_t)particles_col_ncomp(ps, col) * (size_t)n;
+    for (size_t i = 0; i < len; i++)
+        if (!isfinite(a[i])) return ck_fail(c, "a particle value that is not finite");
+    if (col == PC_MASS || col == PC_VOL0)
+        for (int i = 0; i < n; i++)
+            if (!(a[i] > 0)) return ck_fail(c, "a particle mass or volume <= 0");
+    return 0;
+}
+
+static int get_particles(ck_cursor *c, hearth_scene *s, hearth_error *err) {
+    get_tag(c, "PART", "the particles section is missing");
+    const uint32_t n = get_u32(c), stride = get_u32(c), enabled = get_u32(c);
+    if (c->bad) return -1;
+    const uint32_t core = (1u << PC_NCORE) - 1;
+    if ((enabled & core) != core || enabled >= (1u << PC_COUNT)) return ck_fail(c, "unknown or missing particle columns");
+    if (stride > CK_MAX_STRIDE) return ck_fail(c, "plugin state stride above 4096 doubles");
+    particles *ps = &s->ps;
+    if ((int)stride < ps->state_stride) return ck_fail(c, "plugin state stride smaller than a material's state");
+    /* every column is in the file: bytes per particle times n must fit in what is left */
+    particles probe = *ps;
+    probe.state_stride = (int)stride;
+    probe.enabled = enabled;
+    size_t per = 0;
+    for (int k = 0; k < PC_COUNT; k++)
+        if (enabled & (1u << k)) per += particles_col_bytes(&probe, k);
+    if (n > (uint32_t)INT32_MAX / 2 || (per && (uint64_t)n > c->left / per))
+        return ck_fail(c, "a particle count larger than the file holds");
+    if (particles_set_state_stride(ps, (int)stride, err)) return -1;
+    for (int k = PC_NCORE; k < PC_COUNT; k++)
+        if ((enabled & (1u << k)) && particles_enable(ps, k, err)) return -1;
+    if (n && particles_reserve(ps, (int)n, err)) return -1;
+    for (int k = 0; k < PC_COUNT; k++) {
+        if (!(enabled & (1u << k))) continue;
+        char cname[CK_MAX_NAME];
+        get_str(c, cname, sizeof cname, "a particle column name is too long");
+        if (c->bad) return -1;
+        if (strcmp(cname, particles_col_name(k)) != 0) return ck_fail(c, "particle columns out of order");
+        const size_t bytes = particles_col_bytes(ps, k) * (size_t)n;
+        if (bytes && ck_get(c, ps->col[k], bytes)) return -1;
+        if (check_column(c, s, k, (int)n)) return -1;
+    }
+    ps->n = (int)n;
+    return 0;
+}
+
+static void set_clocks(hearth_scene *s, const ck_clocks *k) {
+    s->t = k->t;
+    s->dt_last = k->dt_last;
+    s->dt_scale = k->dt_scale;
+    s->step = (long)k->step;
+    s->rollbacks = k->rollbacks;
+    s->max_speed = k->max_speed;
+    s->c_max = k->c_max;
+    s->kinetic = k->kinetic;
+    s->kinetic_peak = k->kinetic_peak;
+    s->cfl_last = k->cfl_last;
+    s->out_of_domain = (long)k->ood;
+    s->guard = (hearth_guard_state)k->guard;
+    s->rng = k->rng;
+    s->next_id = k->next_id;
+    s->nbodies = k->nbodies;
+    s->water_lost = k->water_lost;
+}
+
+hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name, hearth_error *err) {
+    hearth_error local;
+    if (!err) err = &local; /* the messages below read err back */
+    err_clear(err);
+    if (!name) name = "(checkpoint in memory)";
+    const uint8_t *b = data;
+    if (!b || n < CK_HEADER_SIZE || memcmp(b, CK_MAGIC, 8) != 0)
+        return refuse(NULL, err, name, "bad magic (not a checkpoint, or shorter than its 40-byte header)");
+    uint32_t version, bom, dsize, hsize;
+    uint64_t size;
+    memcpy(&version, b + 8, 4);
+    memcpy(&bom, b + 12, 4);
+    memcpy(&dsize, b + 16, 4);
+    memcpy(&hsize, b + 20, 4);
+    memcpy(&size, b + CK_OFF_SIZE, 8);
+    if (bom != CK_BOM || dsize != sizeof(double))
+        return refuse(NULL, err, name, "written on a machine with another byte order or double size");
+    if (version != CK_VERSION) {
+        err_set(err, HEARTH_ERR_FORMAT, "%s: checkpoint version %u; this hearth reads version %u only (save it again "
+                "with the hearth that wrote it is not possible: rerun the scene)", name, version, CK_VERSION);
+        return NULL;
+    }
+    if (hsize != CK_HEADER_SIZE) return refuse(NULL, err, name, "header size is not 40");
+    if (size != n) {
+        err_set(err, HEARTH_ERR_FORMAT, "%s: not a valid hearth checkpoint: the header says %llu bytes, the file has %zu "
+                "(truncated or extended)", name, (unsigned long long)size, n);
+        return NULL;
+    }
+    uint32_t crc;
+    memcpy(&crc, b + CK_OFF_CRC, 4);
+    if (crc != ck_crc(b, n)) return refuse(NULL, err, name, "checksum mismatch (the file is damaged)");
+    uint32_t reserved;
+    memcpy(&reserved, b + 36, 4);
+    if (reserved != 0) return refuse(NULL, err, name, "reserved header field is not 0");
+
+    ck_cursor c = {b + CK_HEADER_SIZE, n - CK_HEADER_SIZE, 0, NULL};
+    hearth_scene_def d = hearth_default_scene_def();
+    get_def(&c, &d);
+    if (c.bad) return refuse_at(NULL, err, name, &c, "scene definition");
+    hearth_scene *s = hearth_scene_create(&d, err); /* checks every value and the memory it needs */
+    if (!s) return refuse_at(NULL, err, name, &c, "scene definition");
+    ck_clocks k;
+    get_clocks(&c, &k);
+    if (c.bad) return refuse_at(s, err, name, &c, "clocks");
+    s->nbodies = k.nbodies; /* particle body ids are checked against it */
+    if (get_materials(&c, s, name, err)) return refuse_at(s, err, name, &c, "materials");
+    if (get_colliders(&c, s, err)) return refuse_at(s, err, name, &c, "colliders");
+    s->next_id = k.next_id;
+    if (get_particles(&c, s, err)) return refuse_at(s, err, name, &c, "particles");
+    get_tag(&c, "HASH", "the particle hash is missing");
+    const uint64_t h = get_u64(&c);
+    if (c.bad) return refuse_at(s, err, name, &c, "particle hash");
+    if (c.left) return refuse(s, err, name, "bytes after the end of the checkpoint");
+    if (h != hearth_scene_hash(s)) return refuse(s, err, name, "particle data checksum mismatch (the file is damaged)");
+    set_clocks(s, &k); /* last: adding materials and particles above touched them */
+    return s;
 }
 
 hearth_scene *hearth_scene_load(const char *path, hearth_error *err) {
     err_clear(err);
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        err_set(err, HEARTH_ERR_IO, "%s: cannot open checkpoint", path);
+    /* non-blocking open, then fstat: a FIFO or a device named as a checkpoint
+     * is refused instead of blocking the open or the read */
+    const int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        err_set(err, HEARTH_ERR_IO, "%s: cannot open checkpoint (%s)", path, strerror(errno));
         return NULL;
     }
-    ck_io io = {f, 0};
-    char magic[8];
-    uint32_t hdr[3];
-    rd(&io, magic, 8);
-    rd(&io, hdr, sizeof hdr);
-    if (io.bad || memcmp(magic, CK_MAGIC, 8) != 0) return load_fail(NULL, f, err, path, "bad magic");
-    if (hdr[1] != 0x01020304u || hdr[2] != sizeof(double))
-        return load_fail(NULL, f, err, path, "written on a machine with another byte order or double size");
-    if (hdr[0] != CK_VERSION) {
-        err_set(err, HEARTH_ERR_FORMAT, "%s: checkpoint version %u; this hearth reads version %u", path, hdr[0], CK_VERSION);
-        return load_fail(NULL, f, err, path, "");
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        err_set(err, HEARTH_ERR_IO, "%s: not a regular file", path);
+        return NULL;
     }
-    hearth_scene_def d;
-    memset(&d, 0, sizeof d);
-    io_def(&io, &d, 0);
-    if (io.bad) return load_fail(NULL, f, err, path, "truncated header");
-    hearth_scene *s = hearth_scene_create(&d, err);
-    if (!s) return load_fail(NULL, f, NULL, path, "");
-    hearth_scene clocks;
-    memset(&clocks, 0, sizeof clocks);
-    io_clocks(&io, &clocks, 0);
-    int32_t nmat = 0;
-    RD(&io, nmat);
-    if (io.bad || nmat < 0 || nmat > 4096) return load_fail(s, f, err, path, "bad material count");
-    for (int i = 0; i < nmat; i++) {
-        char file[4096], name[256];
-        int32_t np = 0;
-        rd_str(&io, file, sizeof file);
-        rd_str(&io, name, sizeof name);
-        RD(&io, np);
-        if (io.bad || np < 0 || np > 1024) return load_fail(s, f, err, path, "bad material record");
-        double vals[1024 + CP_COUNT];
-        rd(&io, vals, sizeof(double) * (size_t)np);
-        rd(&io, vals + np, sizeof(double) * CP_COUNT);
-        if (io.bad) return load_fail(s, f, err, path, "truncated material record");
-        /* the plugin by its saved path first, then by name on the search path */
-        hearth_error e2;
-        const hearth_plugin *pl = hearth_plugin_load(file, &e2);
-        const char *which = pl ? file : name;
-        const hearth_material *m = pl ? hearth_plugin_material(pl) : NULL;
-        if (!m) {
-            pl = hearth_plugin_load(name, err);
-            if (!pl) return load_fail(s, f, err, path, "");
-            m = hearth_plugin_material(pl);
-        }
-        if (m->nparams != np) {
-            err_set(err, HEARTH_ERR_FORMAT, "%s: material '%s' was saved with %d parameters; the plugin now has %d", path, name, np,
-                    m->nparams);
-            return load_fail(s, f, err, path, "");
-        }
-        const char *names[1024 + CP_COUNT];
-        for (int k = 0; k < np; k++) names[k] = m->params[k].name;
-        const hearth_param *cp = hearth_core_params(NULL);
-        for (int k = 0; k < CP_COUNT; k++) names[np + k] = cp[k].name;
-        const int mat = hearth_scene_add_material(s, which, names, vals, np + CP_COUNT, err);
-        if (mat < 0) return load_fail(s, f, err, path, "");
-        int32_t nc = 0;
-        RD(&io, nc);
-        if (io.bad || nc < 0 || nc > np) return load_fail(s, f, err, path, "bad curve count");
-        for (int k = 0; k < nc; k++) {
-            int32_t h3[3] = {0, 0, 0};
-            rd(&io, h3, sizeof h3);
-            if (io.bad || h3[0] < 0 || h3[0] >= np || h3[1] < 1 || h3[1] > 10000) return load_fail(s, f, err, path, "bad curve");
-            const size_t bytes = sizeof(double) * (size_t)h3[1];
-            double *T = mem_alloc(bytes), *v = mem_alloc(bytes);
-            if (T && v) {
-                rd(&io, T, bytes);
-                rd(&io, v, bytes);
-            }
-            int bad = !T || !v || io.bad || hearth_scene_material_curve(s, mat, m->params[h3[0]].name, h3[1], T, v, h3[2], err);
-            mem_free(T, bytes);
-            mem_free(v, bytes);
-            if (bad) return load_fail(s, f, err, path, "bad curve");
-        }
+    FILE *f = fdopen(fd, "rb");
+    if (!f) {
+        close(fd);
+        err_set(err, HEARTH_ERR_NOMEM, "%s: cannot open checkpoint (%s)", path, strerror(errno));
+        return NULL;
     }
-    int32_t ncol = 0;
-    RD(&io, ncol);
-    if (io.bad || ncol < 0 || ncol > 4096) return load_fail(s, f, err, path, "bad collider count");
-    for (int i = 0; i < ncol; i++) {
-        hearth_shape *sh = shape_read(f, 0);
-        if (!sh) return load_fail(s, f, err, path, "bad collider shape");
-        collider c;
-        int32_t mode = 0, has_motion = 0;
-        RD(&io, mode);
-        RD(&io, c.friction);
-        rd(&io, c.vel, sizeof c.vel);
-        rd(&io, c.omega, sizeof c.omega);
-        rd(&io, c.pivot0, sizeof c.pivot0);
-        rd(&io, c.offset, sizeof c.offset);
-        rd(&io, c.R, sizeof c.R);
-        RD(&io, has_motion);
-        RD(&io, c.temperature);
-        RD(&io, c.beta);
-        RD(&io, c.saturation);
-        hearth_collider_def cd = hearth_default_collider_def();
-        cd.shape = sh;
-        cd.mode = (hearth_contact)mode;
-        cd.friction = c.friction;
-        memcpy(cd.velocity, c.vel, sizeof c.vel);
-        memcpy(cd.omega, c.omega, sizeof c.omega);
-        memcpy(cd.pivot, c.pivot0, sizeof c.pivot0);
-        cd.temperature = c.temperature;
-        cd.beta = c.beta;
-        cd.saturation = c.saturation;
-        int id = io.bad ? -1 : hearth_scene_add_collider(s, &cd, err);
-        hearth_shape_free(sh);
-        if (id < 0) return load_fail(s, f, err, path, "bad collider record");
-        memcpy(s->cols[id].offset, c.offset, sizeof c.offset);
-        memcpy(s->cols[id].R, c.R, sizeof c.R);
+    const uint64_t n = (uint64_t)st.st_size;
+    /* the header first: its size field must agree before the body is allocated */
+    uint8_t head[CK_HEADER_SIZE];
+    if (n < CK_HEADER_SIZE || fread(head, CK_HEADER_SIZE, 1, f) != 1) {
+        fclose(f);
+        return hearth_scene_load_mem(head, n < CK_HEADER_SIZE ? (size_t)n : 0, path, err);
     }
-    int32_t n = 0, stride = 0;
-    uint32_t enabled = 0;
-    RD(&io, n);
-    RD(&io, stride);
-    RD(&io, enabled);
-    if (io.bad || n < 0 || stride < 0 || stride > 4096 || (enabled & ((1u << PC_NCORE) - 1)) != (1u << PC_NCORE) - 1 ||
-        enabled >= (1u << PC_COUNT))
-        return load_fail(s, f, err, path, "bad particle header");
-    particles *ps = &s->ps;
-    if (particles_set_state_stride(ps, stride, err)) return load_fail(s, f, err, path, "");
-    for (int c = PC_NCORE; c < PC_COUNT; c++)
-        if ((enabled & (1u << c)) && particles_enable(ps, c, err)) return load_fail(s, f, err, path, "");
-    if (n && particles_reserve(ps, n, err)) return load_fail(s, f, err, path, "");
-    for (int c = 0; c < PC_COUNT; c++) {
-        if (!(enabled & (1u << c))) continue;
-        char name[64];
-        rd_str(&io, name, sizeof name);
-        if (io.bad || strcmp(name, particles_col_name(c)) != 0) return load_fail(s, f, err, path, "particle columns out of order");
-        if (ps->col[c]) rd(&io, ps->col[c], particles_col_bytes(ps, c) * (size_t)n);
+    uint64_t size;
+    memcpy(&size, head + CK_OFF_SIZE, 8);
+    if (n > CK_FILE_MAX || (memcmp(head, CK_MAGIC, 8) == 0 && size != n)) {
+        fclose(f);
+        uint32_t version;
+        memcpy(&version, head + 8, 4);
+        if (memcmp(head, CK_MAGIC, 8) == 0 && version != CK_VERSION) return hearth_scene_load_mem(head, sizeof head, path, err);
+        if (n > CK_FILE_MAX)
+            err_set(err, HEARTH_ERR_FORMAT, "%s: checkpoint of %llu bytes; hearth reads at most %llu", path,
+                    (unsigned long long)n, (unsigned long long)CK_FILE_MAX);
+        else
+            err_set(err, HEARTH_ERR_FORMAT, "%s: not a valid hearth checkpoint: the header says %llu bytes, the file has %llu "
+                    "(truncated or extended)", path, (unsigned long long)size, (unsigned long long)n);
+        return NULL;
     }
-    ps->n = n;
-    uint64_t h = 0;
-    RD(&io, h);
-    if (io.bad) return load_fail(s, f, err, path, "truncated particle data");
-    if (h != hearth_scene_hash(s)) return load_fail(s, f, err, path, "particle data checksum mismatch (file damaged)");
-    for (int i = 0; i < n; i++) {
-        int m = pcoli(ps, PC_MAT)[i];
-        if (m < 0 || m >= s->nmat) return load_fail(s, f, err, path, "particle with an unknown material");
+    uint8_t *buf = mem_alloc((size_t)n);
+    if (!buf) {
+        fclose(f);
+        err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory reading a checkpoint of %llu bytes", path, (unsigned long long)n);
+        return NULL;
     }
+    memcpy(buf, head, CK_HEADER_SIZE);
+    const int ok = fread(buf + CK_HEADER_SIZE, (size_t)n - CK_HEADER_SIZE, 1, f) == 1 || n == CK_HEADER_SIZE;
     fclose(f);
-    /* clocks last: adding materials and particles above touched them */
-    s->t = clocks.t;
-    s->dt_last = clocks.dt_last;
-    s->dt_scale = clocks.dt_scale;
-    s->step = clocks.step;
-    s->rollbacks = clocks.rollbacks;
-    s->max_speed = clocks.max_speed;
-    s->c_max = clocks.c_max;
-    s->kinetic = clocks.kinetic;
-    s->kinetic_peak = clocks.kinetic_peak;
-    s->cfl_last = clocks.cfl_last;
-    s->out_of_domain = clocks.out_of_domain;
-    s->guard = clocks.guard;
-    s->rng = clocks.rng;
-    s->next_id = clocks.next_id;
-    s->nbodies = clocks.nbodies;
-    s->water_lost = clocks.water_lost;
+    hearth_scene *s = NULL;
+    if (ok) s = hearth_scene_load_mem(buf, (size_t)n, path, err);
+    else err_set(err, HEARTH_ERR_IO, "%s: read failed", path);
+    mem_free(buf, (size_t)n);
     return s;
 }

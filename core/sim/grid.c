@@ -7,21 +7,44 @@
 #include "alloc.h"
 #include "error.h"
 
+hearth_status grid_plan(int dim, double dx, const double lo[3], const double hi[3], int nn[3], int nb[3], long *nblocks,
+                        hearth_error *err) {
+    /* counts are worked out in double and range-checked before any becomes an
+     * int: a box edge at 1e300 used to give a negative block count */
+    double total = 1;
+    for (int d = 0; d < 3; d++) {
+        if (d >= dim) {
+            nn[d] = nb[d] = 1;
+            continue;
+        }
+        const double cells = (hi[d] - lo[d]) / dx;
+        if (!(cells >= 1 && cells <= GRID_CELLS_MAX))
+            return err_set(err, HEARTH_ERR_PARAM,
+                           "scene: box axis %c spans %g m = %g cells of dx = %g m; valid range [1, %d] cells per axis "
+                           "(use a larger dx or a smaller box)",
+                           "xyz"[d], hi[d] - lo[d], cells, dx, GRID_CELLS_MAX);
+        nn[d] = (int)ceil(cells - 1e-9) + 1;
+        nb[d] = (nn[d] + GRID_B - 1) / GRID_B + 1; /* +1: tiles reach one block past the last */
+        total *= nb[d];
+    }
+    if (total > (double)GRID_BLOCKS_MAX)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "scene: dx = %g m gives %.4g grid blocks over the box; the limit is %ld (use a larger dx or a "
+                       "smaller box)",
+                       dx, total, GRID_BLOCKS_MAX);
+    *nblocks = (long)total;
+    return HEARTH_OK;
+}
+
 hearth_status grid_init(grid *g, int dim, double dx, const double lo[3], const double hi[3], hearth_error *err) {
     memset(g, 0, sizeof *g);
+    long nb = 1;
+    hearth_status st = grid_plan(dim, dx, lo, hi, g->nn, g->nb, &nb, err);
+    if (st) return st;
     g->dim = dim;
     g->dx = dx;
     g->inv_dx = 1.0 / dx;
-    long nb = 1;
-    for (int d = 0; d < 3; d++) {
-        g->lo[d] = d < dim ? lo[d] : 0.0;
-        g->nn[d] = d < dim ? (int)ceil((hi[d] - lo[d]) / dx - 1e-9) + 1 : 1;
-        g->nb[d] = d < dim ? (g->nn[d] + GRID_B - 1) / GRID_B + 1 : 1; /* +1: tiles reach one block past the last */
-        nb *= g->nb[d];
-    }
-    if (nb > (1L << 28))
-        return err_set(err, HEARTH_ERR_PARAM, "dx = %g gives %ld grid blocks over the box; the limit is %ld (use a larger dx or a smaller box)",
-                       dx, nb, 1L << 28);
+    for (int d = 0; d < 3; d++) g->lo[d] = d < dim ? lo[d] : 0.0;
     g->nblocks = (int)nb;
     g->nodes_per_block = dim == 2 ? GRID_B * GRID_B : GRID_B * GRID_B * GRID_B;
     g->nch = GRID_NCH_MOMENTUM;

@@ -42,6 +42,17 @@ typedef struct grid {
     double *data;       /* cap * nch * nodes_per_block, channel-major within a block */
 } grid;
 
+/// Most cells along one axis of the box, and most blocks in the slot table.
+#define GRID_CELLS_MAX (1 << 22)
+#define GRID_BLOCKS_MAX (1L << 28)
+/// Bytes per block of the tables kept for the whole box (slot table, the
+/// sort's counts, the activity marks); the node data is only for active blocks.
+#define GRID_TABLE_BYTES_PER_BLOCK (2 * sizeof(int) + 1)
+/// Node and block counts of the grid over lo..hi, checked (every count within
+/// its limit before it becomes an int) without allocating. dim, dx, lo and hi
+/// must be finite with hi > lo (check_def in scene.c).
+hearth_status grid_plan(int dim, double dx, const double lo[3], const double hi[3], int nn[3], int nb[3], long *nblocks,
+                        hearth_error *err);
 hearth_status grid_init(grid *g, int dim, double dx, const double lo[3], const double hi[3], hearth_error *err);
 void grid_free(grid *g);
 /// Use nch channels per node from the next activation on (storage is rebuilt every step).

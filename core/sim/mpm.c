@@ -38,13 +38,41 @@
 
 /* ---- sorting --------------------------------------------------------- */
 
+/* The block of a particle's B-spline base node. P2G and G2P read the
+ * particle's stencil from its block's tile, which holds base nodes 0..3 of the
+ * block and two more: that is only true when the base node lies in
+ * [0, nn - 3], which block_of_position's callers guarantee (mpm_sort). */
 static int block_of_position(const grid *g, const double *x) {
     int b[3] = {0, 0, 0};
     for (int d = 0; d < g->dim; d++) {
         int base = (int)floor((x[d] - g->lo[d]) * g->inv_dx - 0.5);
-        b[d] = base / GRID_B; /* base >= 0: particles are clamped inside the domain */
+        b[d] = base / GRID_B;
     }
     return grid_block_id(g, b[0], b[1], b[2]);
+}
+
+/* Put a particle outside the usable domain (one cell inside the box: every
+ * node of its stencil on the grid) back on its edge. Returns 1 if it moved.
+ * G2P clamps too, but a collider's projection comes after that clamp, and a
+ * collider that covers the box projects particles out of the grid: the sort
+ * then filed them in a block whose tile did not hold their stencil (a write
+ * outside P2G's tile and the block tables). Clamping here, where the block is
+ * chosen, makes the invariant hold whatever moved the particle (a collider,
+ * a plugin, a restored file). A NaN coordinate goes to the low edge so the
+ * cast below stays defined; the guard has already stopped on it. */
+static int clamp_to_grid(const grid *g, double *x) {
+    int moved = 0;
+    for (int d = 0; d < g->dim; d++) {
+        const double lo = g->lo[d] + g->dx, hi = g->lo[d] + (g->nn[d] - 2) * g->dx;
+        if (!(x[d] >= lo)) {
+            x[d] = lo;
+            moved = 1;
+        } else if (x[d] > hi) {
+            x[d] = hi;
+            moved = 1;
+        }
+    }
+    return moved;
 }
 
 hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
@@ -53,11 +81,16 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     const int n = ps->n;
     hearth_status st = scene_ensure_scratch(s, n, err);
     if (st) return st;
-    const double *X = pcold(ps, PC_X);
+    double *X = pcold(ps, PC_X);
     int *keys = s->keys, *order = s->order, *counts = s->counts;
 
-#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) keys[i] = block_of_position(g, X + 3 * i);
+    long moved = 0;
+#pragma omp parallel for schedule(static) reduction(+ : moved) if (s->ps.n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        moved += clamp_to_grid(g, X + 3 * i);
+        keys[i] = block_of_position(g, X + 3 * i);
+    }
+    s->out_of_domain += moved;
     /* counting sort: stable, O(n + blocks), the same for any thread count */
     int sorted = 1;
     memset(counts, 0, sizeof(int) * ((size_t)g->nblocks + 1));
@@ -264,6 +297,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
             const int b = (int)floor(Xd - 0.5);
             fx[d] = Xd - b;
             base[d] = b - org[d];
+            /* the stencil's 3 nodes must lie in the 6-node tile: mpm_sort's clamp_to_grid */
+            HEARTH_ASSERT(base[d] >= 0 && base[d] <= GRID_T - 3);
             bspline_weights(fx[d], w[d], dw);
         }
         const double mv0 = m * v[0], mv1 = m * v[1], mv2 = m * v[2];

@@ -1,9 +1,11 @@
 /* scene.c: scene lifetime, materials, particles, colliders, and the step loop
  * with its guard and rollback. */
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "plugins.h"
 #include "alloc.h"
@@ -75,9 +77,13 @@ hearth_collider_def hearth_default_collider_def(void) {
 
 static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
     if (d->dim != 2 && d->dim != 3) return err_set(err, HEARTH_ERR_PARAM, "scene: dim = %d; valid values are 2 and 3", d->dim);
-    if (!(d->dx > 0) || !isfinite(d->dx)) return err_set(err, HEARTH_ERR_PARAM, "scene: dx = %g m; it must be > 0", d->dx);
+    if (!(d->dx > 0) || !isfinite(d->dx))
+        return err_set(err, HEARTH_ERR_PARAM, "scene: dx = %g m; it must be finite and > 0", d->dx);
     for (int k = 0; k < d->dim; k++) {
-        if (!isfinite(d->lo[k]) || !isfinite(d->hi[k]) || d->hi[k] - d->lo[k] < 6 * d->dx)
+        if (!isfinite(d->lo[k]) || !isfinite(d->hi[k]))
+            return err_set(err, HEARTH_ERR_PARAM, "scene: box axis %c spans [%g, %g] m; its edges must be finite",
+                           "xyz"[k], d->lo[k], d->hi[k]);
+        if (!(d->hi[k] - d->lo[k] >= 6 * d->dx))
             return err_set(err, HEARTH_ERR_PARAM,
                            "scene: box axis %c spans [%g, %g] m; it must be at least 6 dx = %g m long", "xyz"[k],
                            d->lo[k], d->hi[k], 6 * d->dx);
@@ -115,10 +121,59 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
     return HEARTH_OK;
 }
 
+/* ---- memory estimates ------------------------------------------------ */
+
+size_t scene_memory_limit(void) {
+    /* the machine's physical memory: a scene that needs more would be
+     * OOM-killed without a word, so it is refused up front with the estimate */
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || page <= 0) return SIZE_MAX; /* unknown: no up-front refusal */
+    const double b = (double)pages * (double)page;
+    return b >= (double)SIZE_MAX ? SIZE_MAX : (size_t)b;
+}
+
+double scene_bytes_per_particle(const hearth_scene *s) {
+    double b = 0;
+    for (int c = 0; c < PC_COUNT; c++)
+        if (s->ps.enabled & (1u << c)) b += (double)particles_col_bytes(&s->ps, c);
+    /* the step's scratch (keys, order, permutation, volumes) and a rollback snapshot's copy */
+    b += 2 * sizeof(int) + 2 * sizeof(double);
+    if (s->def.guard == HEARTH_GUARD_ROLLBACK) b *= 2;
+    return b;
+}
+
+hearth_status scene_check_particle_budget(const hearth_scene *s, double more, const char *what, hearth_error *err) {
+    const double total = (double)s->ps.n + more;
+    if (!(total <= (double)(INT_MAX / 2)))
+        return err_set(err, HEARTH_ERR_PARAM, "%s: %.4g particles (%d already in the scene); at most %d", what, total,
+                       s->ps.n, INT_MAX / 2);
+    const double need = total * scene_bytes_per_particle(s), limit = (double)scene_memory_limit();
+    if (need > limit)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "%s: %.4g particles would need about %.3g GB (%.0f bytes each); this machine has %.3g GB of "
+                       "memory (use a larger dx, fewer particles per cell or a smaller shape)",
+                       what, total, need / 1e9, scene_bytes_per_particle(s), limit / 1e9);
+    return HEARTH_OK;
+}
+
 hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err) {
     err_clear(err);
     hearth_scene_def d = def ? *def : hearth_default_scene_def();
     if (check_def(&d, err)) return NULL;
+    { /* the tables over the whole box, before any is allocated */
+        int nn[3], nb[3];
+        long blocks = 0;
+        if (grid_plan(d.dim, d.dx, d.lo, d.hi, nn, nb, &blocks, err)) return NULL;
+        const double need = (double)blocks * (double)GRID_TABLE_BYTES_PER_BLOCK, limit = (double)scene_memory_limit();
+        if (need > limit / 2) {
+            err_set(err, HEARTH_ERR_PARAM,
+                    "scene: dx = %g m over this box needs %ld grid blocks, about %.3g GB for the grid tables alone; "
+                    "this machine has %.3g GB of memory, and the tables may take at most half (use a larger dx or a "
+                    "smaller box)",
+                    d.dx, blocks, need / 1e9, limit / 1e9);
+            return NULL;
+        }
+    }
     if (d.dim == 2) d.lo[2] = d.hi[2] = d.gravity[2] = 0;
     hearth_scene *s = mem_calloc(sizeof *s);
     if (!s) {
@@ -382,6 +437,11 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         err_set(err, HEARTH_ERR_PARAM, "add particles: volume = %g m^3; it must be > 0", volume);
         return -1;
     }
+    if (n < 0) {
+        err_set(err, HEARTH_ERR_PARAM, "add particles: n = %d; it must be >= 0", n);
+        return -1;
+    }
+    if (scene_check_particle_budget(s, n, "add particles", err)) return -1;
     double lo[3], hi[3];
     valid_region(s, lo, hi);
     for (int i = 0; i < n; i++)
@@ -491,12 +551,22 @@ int hearth_scene_seed_shape(hearth_scene *s, int material, const hearth_shape *s
     long cells[3] = {1, 1, 1};
     int c0[3] = {0, 0, 0};
     const double dx = s->def.dx, h = dx / k;
+    double bound = pow(k, D); /* lattice points to visit: an upper bound of the particles seeded */
     for (int d = 0; d < D; d++) {
+        if (isnan(blo[d]) || isnan(bhi[d])) {
+            err_set(err, HEARTH_ERR_PARAM, "seed: the shape's bounds are not numbers (a NaN centre or size)");
+            return -1;
+        }
+        /* the valid region is inside the box, so these are bounded by the grid's cell counts */
         double a = blo[d] > lo[d] ? blo[d] : lo[d], b = bhi[d] < hi[d] ? bhi[d] : hi[d];
         if (b <= a) return 0;
         c0[d] = (int)floor((a - s->g.lo[d]) / dx);
         cells[d] = (long)ceil((b - s->g.lo[d]) / dx) - c0[d];
+        bound *= (double)cells[d];
     }
+    /* refuse before allocating: the bound is within a factor of the shape's
+     * fill of its bounding box */
+    if (scene_check_particle_budget(s, bound, "seed", err)) return -1;
     /* positions are handed over in chunks so the stack buffer stays small */
     double vel[3] = {0, 0, 0};
     if (velocity) memcpy(vel, velocity, sizeof vel);

@@ -152,6 +152,14 @@ hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err);
 void scene_refresh_wave_speed(hearth_scene *s);
 hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err);
 double scene_stable_dt(const hearth_scene *s);
+/// Memory a scene may plan for (bytes): the machine's physical memory
+/// (SIZE_MAX when unknown).
+size_t scene_memory_limit(void);
+/// Bytes a particle costs in this scene: its enabled columns and step scratch.
+double scene_bytes_per_particle(const hearth_scene *s);
+/// Refuse (HEARTH_ERR_PARAM, what names the caller) adding `more` particles
+/// when the count or its memory estimate is beyond what the machine holds.
+hearth_status scene_check_particle_budget(const hearth_scene *s, double more, const char *what, hearth_error *err);
 
 /* mpm.c */
 hearth_status mpm_sort(hearth_scene *s, hearth_error *err);

@@ -28,6 +28,7 @@
 #include <string.h>
 
 #include "alloc.h"
+#include "checkpoint.h"
 #include "error.h"
 #include "hearth/hearth.h"
 #include "shapes.h"
@@ -89,9 +90,23 @@ static void perp3(const double u[3], double p[3]) {
 
 /* ---- allocation ------------------------------------------------------- */
 
+/* Why the last constructor on this thread returned NULL (static text naming
+ * the parameter and its valid range), for hearth_shape_error. A thread-local
+ * string keeps the constructors' signatures (public, used by scripts and
+ * plugins' hosts) while a NaN centre is no longer reported as out of memory. */
+static _Thread_local const char *shape_why;
+
+const char *hearth_shape_error(void) { return shape_why; }
+
+static hearth_shape *refuse(const char *why) {
+    shape_why = why;
+    return NULL;
+}
+
 static hearth_shape *shape_new(shape_kind kind) {
     hearth_shape *s = mem_calloc(sizeof *s);
     if (s) s->kind = kind;
+    shape_why = s ? NULL : "out of memory";
     return s;
 }
 
@@ -104,7 +119,7 @@ void hearth_shape_free(hearth_shape *s) {
 }
 
 hearth_shape *hearth_shape_copy(const hearth_shape *s) {
-    if (!s) return NULL;
+    if (!s) return refuse("copy: the shape is NULL");
     hearth_shape *d = shape_new(s->kind);
     if (!d) return NULL;
     *d = *s;
@@ -129,18 +144,20 @@ hearth_shape *hearth_shape_copy(const hearth_shape *s) {
         d->mask = mask_copy(s->mask);
         if (!d->mask) {
             hearth_shape_free(d);
-            return NULL;
+            return refuse("out of memory");
         }
     }
     return d;
 }
 
-/* ---- constructors: NULL on bad arguments or allocation failure ---------- */
+/* ---- constructors: NULL on bad arguments (hearth_shape_error says which) or
+ * allocation failure ------------------------------------------------------ */
 
 hearth_shape *hearth_shape_plane(const double point[3], const double normal[3]) {
-    if (!point || !normal || !finite3(point)) return NULL;
+    if (!point || !normal) return refuse("plane: point or normal is NULL");
+    if (!finite3(point)) return refuse("plane: point is not finite (NaN or inf)");
     double n[3];
-    if (!unit3(normal, n)) return NULL;
+    if (!unit3(normal, n)) return refuse("plane: normal must be a finite non-zero vector");
     hearth_shape *s = shape_new(SHAPE_PLANE);
     if (!s) return NULL;
     memcpy(s->c, point, sizeof s->c);
@@ -149,8 +166,10 @@ hearth_shape *hearth_shape_plane(const double point[3], const double normal[3]) 
 }
 
 hearth_shape *hearth_shape_box(const double centre[3], const double half[3]) {
-    if (!centre || !half || !finite3(centre) || !finite3(half)) return NULL;
-    if (half[0] < 0 || half[1] < 0 || half[2] < 0) return NULL;
+    if (!centre || !half) return refuse("box: centre or half extents are NULL");
+    if (!finite3(centre)) return refuse("box: centre is not finite (NaN or inf)");
+    if (!finite3(half) || half[0] < 0 || half[1] < 0 || half[2] < 0)
+        return refuse("box: half extents must be finite and >= 0 m");
     hearth_shape *s = shape_new(SHAPE_BOX);
     if (!s) return NULL;
     memcpy(s->c, centre, sizeof s->c);
@@ -159,7 +178,9 @@ hearth_shape *hearth_shape_box(const double centre[3], const double half[3]) {
 }
 
 hearth_shape *hearth_shape_sphere(const double centre[3], double radius) {
-    if (!centre || !finite3(centre) || !(radius > 0) || !isfinite(radius)) return NULL;
+    if (!centre) return refuse("sphere: centre is NULL");
+    if (!finite3(centre)) return refuse("sphere: centre is not finite (NaN or inf)");
+    if (!(radius > 0) || !isfinite(radius)) return refuse("sphere: radius must be finite and > 0 m");
     hearth_shape *s = shape_new(SHAPE_SPHERE);
     if (!s) return NULL;
     memcpy(s->c, centre, sizeof s->c);
@@ -168,10 +189,12 @@ hearth_shape *hearth_shape_sphere(const double centre[3], double radius) {
 }
 
 hearth_shape *hearth_shape_cylinder(const double centre[3], const double axis[3], double radius, double half_height) {
-    if (!centre || !axis || !finite3(centre) || !(radius > 0) || !isfinite(radius)) return NULL;
-    if (!(half_height >= 0) || !isfinite(half_height)) return NULL;
+    if (!centre || !axis) return refuse("cylinder: centre or axis is NULL");
+    if (!finite3(centre)) return refuse("cylinder: centre is not finite (NaN or inf)");
+    if (!(radius > 0) || !isfinite(radius)) return refuse("cylinder: radius must be finite and > 0 m");
+    if (!(half_height >= 0) || !isfinite(half_height)) return refuse("cylinder: half height must be finite and >= 0 m");
     double u[3];
-    if (!unit3(axis, u)) return NULL;
+    if (!unit3(axis, u)) return refuse("cylinder: axis must be a finite non-zero vector");
     hearth_shape *s = shape_new(SHAPE_CYLINDER);
     if (!s) return NULL;
     memcpy(s->c, centre, sizeof s->c);
@@ -183,7 +206,9 @@ hearth_shape *hearth_shape_cylinder(const double centre[3], const double axis[3]
 
 hearth_shape *hearth_shape_capsule(const double a[3], const double b[3], double radius) {
     /* a == b is allowed: the capsule is then a sphere. */
-    if (!a || !b || !finite3(a) || !finite3(b) || !(radius > 0) || !isfinite(radius)) return NULL;
+    if (!a || !b) return refuse("capsule: an end is NULL");
+    if (!finite3(a) || !finite3(b)) return refuse("capsule: an end is not finite (NaN or inf)");
+    if (!(radius > 0) || !isfinite(radius)) return refuse("capsule: radius must be finite and > 0 m");
     hearth_shape *s = shape_new(SHAPE_CAPSULE);
     if (!s) return NULL;
     memcpy(s->c, a, sizeof s->c);
@@ -194,12 +219,15 @@ hearth_shape *hearth_shape_capsule(const double a[3], const double b[3], double 
 
 hearth_shape *hearth_shape_container(const double base[3], const double axis[3], double r_in, double height,
                                      double wall, double floor) {
-    if (!base || !axis || !finite3(base)) return NULL;
-    if (!(r_in > 0) || !(wall > 0) || !(height >= 0) || !(floor >= 0)) return NULL;
-    if (!isfinite(r_in) || !isfinite(wall) || !isfinite(height) || !isfinite(floor)) return NULL;
-    if (!(height + floor > 0)) return NULL; /* nothing solid would remain */
+    if (!base || !axis) return refuse("container: base or axis is NULL");
+    if (!finite3(base)) return refuse("container: base is not finite (NaN or inf)");
+    if (!(r_in > 0) || !isfinite(r_in)) return refuse("container: inner radius must be finite and > 0 m");
+    if (!(wall > 0) || !isfinite(wall)) return refuse("container: wall must be finite and > 0 m");
+    if (!(height >= 0) || !isfinite(height)) return refuse("container: height must be finite and >= 0 m");
+    if (!(floor >= 0) || !isfinite(floor)) return refuse("container: floor must be finite and >= 0 m");
+    if (!(height + floor > 0)) return refuse("container: height + floor must be > 0 m (nothing solid would remain)");
     double u[3];
-    if (!unit3(axis, u)) return NULL;
+    if (!unit3(axis, u)) return refuse("container: axis must be a finite non-zero vector");
     hearth_shape *s = shape_new(SHAPE_CONTAINER);
     if (!s) return NULL;
     memcpy(s->c, base, sizeof s->c);
@@ -237,7 +265,8 @@ static int z_free(const hearth_shape *s) {
 }
 
 hearth_shape *hearth_shape_extrude(const hearth_shape *child, double z0, double z1) {
-    if (!child || !isfinite(z0) || !isfinite(z1) || !(z0 < z1)) return NULL;
+    if (!child) return refuse("extrude: the shape is NULL");
+    if (!isfinite(z0) || !isfinite(z1) || !(z0 < z1)) return refuse("extrude: z0 and z1 must be finite with z0 < z1");
     hearth_shape *s = shape_new(SHAPE_EXTRUDE);
     if (!s) return NULL;
     s->b[0] = z0;
@@ -252,8 +281,9 @@ hearth_shape *hearth_shape_extrude(const hearth_shape *child, double z0, double 
 }
 
 hearth_shape *hearth_shape_combine(hearth_shape_op op, const hearth_shape *a, const hearth_shape *b) {
-    if (!a || !b) return NULL;
-    if (op != HEARTH_UNION && op != HEARTH_INTERSECT && op != HEARTH_SUBTRACT) return NULL;
+    if (!a || !b) return refuse("combine: a shape is NULL");
+    if (op != HEARTH_UNION && op != HEARTH_INTERSECT && op != HEARTH_SUBTRACT)
+        return refuse("combine: op must be HEARTH_UNION, HEARTH_INTERSECT or HEARTH_SUBTRACT");
     hearth_shape *s = shape_new(SHAPE_COMBINE);
     if (!s) return NULL;
     s->op = op;
@@ -564,13 +594,55 @@ int shape_write(FILE *f, const hearth_shape *s) {
     return 0;
 }
 
-hearth_shape *shape_read(FILE *f, int depth) {
+/* Whether a node read from a checkpoint holds values its constructor would
+ * accept: a crafted file must not build a shape the constructors refuse (a
+ * NaN centre, a zero axis) and so reach the solver with NaN distances. */
+static int unit_ok(const double u[3]) { return finite3(u) && fabs(len3(u) - 1.0) <= 1e-9; }
+
+static const char *node_problem(const hearth_shape *s) {
+    if (!finite3(s->c) || !finite3(s->u) || !finite3(s->b) || !isfinite(s->r) || !isfinite(s->hh) ||
+        !isfinite(s->wall) || !isfinite(s->floor))
+        return "collider shape: a non-finite number";
+    if ((unsigned)s->op > HEARTH_SUBTRACT) return "collider shape: unknown boolean operation";
+    switch (s->kind) {
+    case SHAPE_PLANE: return unit_ok(s->u) ? NULL : "collider shape: a plane normal that is not a unit vector";
+    case SHAPE_BOX:
+        return s->b[0] >= 0 && s->b[1] >= 0 && s->b[2] >= 0 ? NULL : "collider shape: a box with a negative half extent";
+    case SHAPE_SPHERE:
+    case SHAPE_CAPSULE: return s->r > 0 ? NULL : "collider shape: a radius <= 0";
+    case SHAPE_CYLINDER:
+        return unit_ok(s->u) && s->r > 0 && s->hh >= 0 ? NULL : "collider shape: a cylinder with a bad axis, radius or height";
+    case SHAPE_CONTAINER:
+        return unit_ok(s->u) && s->r > 0 && s->wall > 0 && s->hh >= 0 && s->floor >= 0 && s->hh + s->floor > 0
+                   ? NULL
+                   : "collider shape: a container with a bad axis, radius, height, wall or floor";
+    case SHAPE_EXTRUDE: return s->b[0] < s->b[1] ? NULL : "collider shape: an extrusion with z0 >= z1";
+    default: return NULL;
+    }
+}
+
+/* Bytes of one node record: kind, op, 13 doubles. */
+#define SHAPE_NODE_BYTES (2 * sizeof(int32_t) + 13 * sizeof(double))
+/* Bytes of a mask record's own header: w, h, lo[2], hi[2]. */
+#define MASK_HEADER_BYTES (2 * sizeof(int32_t) + 4 * sizeof(double))
+
+hearth_shape *shape_read_mem(ck_cursor *cur, int depth) {
     int32_t k[2];
     double v[13];
-    if (depth > 64 || fread(k, sizeof k, 1, f) != 1 || fread(v, sizeof v, 1, f) != 1) return NULL;
-    if (k[0] < SHAPE_PLANE || k[0] > SHAPE_EXTRUDE) return NULL;
+    if (depth > SHAPE_DEPTH_MAX) {
+        ck_fail(cur, "collider shape: the tree is deeper than 64 levels");
+        return NULL;
+    }
+    if (ck_get(cur, k, sizeof k) || ck_get(cur, v, sizeof v)) return NULL;
+    if (k[0] < SHAPE_PLANE || k[0] > SHAPE_EXTRUDE) {
+        ck_fail(cur, "collider shape: unknown node kind");
+        return NULL;
+    }
     hearth_shape *s = shape_new((shape_kind)k[0]);
-    if (!s) return NULL;
+    if (!s) {
+        ck_fail(cur, "out of memory for a collider shape");
+        return NULL;
+    }
     s->op = (hearth_shape_op)k[1];
     for (int d = 0; d < 3; d++) {
         s->c[d] = v[d];
@@ -581,27 +653,69 @@ hearth_shape *shape_read(FILE *f, int depth) {
     s->hh = v[10];
     s->wall = v[11];
     s->floor = v[12];
+    const char *why = (unsigned)k[1] > HEARTH_SUBTRACT ? "collider shape: unknown boolean operation" : node_problem(s);
+    if (why) {
+        ck_fail(cur, why);
+        hearth_shape_free(s);
+        return NULL;
+    }
     if (s->kind == SHAPE_COMBINE) {
-        s->ca = shape_read(f, depth + 1);
-        s->cb = s->ca ? shape_read(f, depth + 1) : NULL;
-        if (!s->ca || !s->cb) {
-            hearth_shape_free(s);
-            return NULL;
-        }
+        s->ca = shape_read_mem(cur, depth + 1);
+        s->cb = s->ca ? shape_read_mem(cur, depth + 1) : NULL;
     } else if (s->kind == SHAPE_EXTRUDE) {
-        int ok = isfinite(s->b[0]) && isfinite(s->b[1]) && s->b[0] < s->b[1];
-        s->ca = ok ? shape_read(f, depth + 1) : NULL;
-        if (!s->ca) {
-            hearth_shape_free(s);
-            return NULL;
-        }
-        s->flat = z_free(s->ca);
+        s->ca = shape_read_mem(cur, depth + 1);
+        if (s->ca) s->flat = z_free(s->ca);
     } else if (s->kind == SHAPE_MASK) {
-        s->mask = mask_read(f);
+        /* the field's size is checked against the bytes left before mask_read
+         * allocates it; mask_read then parses exactly that slice */
+        int32_t wh[2] = {0, 0};
+        if (cur->left >= sizeof wh) memcpy(wh, cur->p, sizeof wh);
+        if (wh[0] < 1 || wh[1] < 1 || wh[0] > MASK_DIM_MAX || wh[1] > MASK_DIM_MAX) {
+            ck_fail(cur, cur->left < sizeof wh ? "truncated" : "collider shape: mask size out of range [1, 4096]");
+        } else {
+            const size_t bytes = MASK_HEADER_BYTES + sizeof(float) * (size_t)wh[0] * (size_t)wh[1];
+            if (bytes > cur->left) {
+                ck_fail(cur, "truncated");
+            } else {
+                FILE *f = fmemopen((void *)(uintptr_t)cur->p, bytes, "rb");
+                s->mask = f ? mask_read(f) : NULL;
+                if (f) fclose(f);
+                if (!s->mask) ck_fail(cur, "collider shape: a bad mask field");
+                else {
+                    cur->p += bytes;
+                    cur->left -= bytes;
+                }
+            }
+        }
         if (!s->mask) {
             hearth_shape_free(s);
             return NULL;
         }
+        return s;
     }
+    if ((s->kind == SHAPE_COMBINE && (!s->ca || !s->cb)) || (s->kind == SHAPE_EXTRUDE && !s->ca)) {
+        hearth_shape_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+hearth_shape *shape_read(FILE *f, int depth) {
+    /* the rest of the stream into memory, parsed by shape_read_mem, then the
+     * stream left just after the tree (one parser for files and checkpoints) */
+    const long start = ftell(f);
+    if (start < 0 || fseek(f, 0, SEEK_END) != 0) return NULL;
+    const long end = ftell(f);
+    if (end < start || fseek(f, start, SEEK_SET) != 0) return NULL;
+    const size_t n = (size_t)(end - start);
+    uint8_t *buf = mem_alloc(n ? n : 1);
+    if (!buf) return NULL;
+    hearth_shape *s = NULL;
+    if (fread(buf, 1, n, f) == n) {
+        ck_cursor cur = {buf, n, 0, NULL};
+        s = shape_read_mem(&cur, depth);
+        if (s) fseek(f, start + (long)(n - cur.left), SEEK_SET);
+    }
+    mem_free(buf, n ? n : 1);
     return s;
 }

@@ -10,7 +10,16 @@
 /// Write a shape tree in the checkpoint's binary layout. Returns 0 on success.
 int shape_write(FILE *f, const hearth_shape *s);
 /// Read a tree written by shape_write; NULL on a malformed or truncated stream.
+/// Reads the rest of f into memory and parses it with shape_read_mem; f is left
+/// just after the tree.
 hearth_shape *shape_read(FILE *f, int depth);
+struct ck_cursor;
+/// Deepest shape tree a checkpoint may hold (levels below the root).
+#define SHAPE_DEPTH_MAX 64
+/// Read a tree from a checkpoint cursor (checkpoint.h), checking every node's
+/// values as its constructor would and every size against the bytes left
+/// before allocating. NULL with the cursor marked bad (and its reason) on failure.
+hearth_shape *shape_read_mem(struct ck_cursor *cur, int depth);
 
 /* ---- mask fields (shape_mask.c) ---------------------------------------- */
 

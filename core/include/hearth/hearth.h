@@ -139,6 +139,11 @@ hearth_shape *hearth_shape_extrude(const hearth_shape *s, double z0, double z1);
 hearth_shape *hearth_shape_combine(hearth_shape_op op, const hearth_shape *a, const hearth_shape *b);
 hearth_shape *hearth_shape_copy(const hearth_shape *s);
 void hearth_shape_free(hearth_shape *s);
+/// Why the last shape constructor called on this thread returned NULL: static
+/// text naming the argument and its valid range ("sphere: centre is not finite
+/// (NaN or inf)"), or "out of memory". NULL after a constructor that succeeded.
+/// (hearth_shape_mask reports through its hearth_error instead.)
+const char *hearth_shape_error(void);
 /// Signed distance (negative inside) at x; normal (may be NULL) gets the outward unit gradient.
 double hearth_shape_sdf(const hearth_shape *s, const double x[3], double normal[3]);
 /// A box that contains the solid part (infinite extents for a plane).
@@ -447,8 +452,17 @@ hearth_status hearth_write_ply(const hearth_scene *s, const char *path, hearth_e
 
 /// Save the full state (written atomically). Motion callbacks are not saved.
 hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_error *err);
-/// Restore a scene saved by hearth_scene_save; plugins are reloaded by name.
+/// Restore a scene saved by hearth_scene_save. The file is untrusted input: it is
+/// refused (NULL, err naming the file and what is wrong) unless its size, its
+/// CRC-32 over the whole file and every value in it check out. Plugins are
+/// found by name on the plugin search path (never by a path in the file), and
+/// their ABI and parameter schema must match those at the save.
 hearth_scene *hearth_scene_load(const char *path, hearth_error *err);
+/// As hearth_scene_load, from a checkpoint image of n bytes in memory (the
+/// caller keeps it; it is not modified). name labels the image in messages
+/// (NULL: "(checkpoint in memory)"). For fuzzing and for hosts that keep
+/// checkpoints elsewhere than in files.
+hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name, hearth_error *err);
 /// A 64-bit hash of the particle state, for determinism checks.
 uint64_t hearth_scene_hash(const hearth_scene *s);
 

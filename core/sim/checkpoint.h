@@ -1,0 +1,70 @@
+/* checkpoint.h: private parts of the checkpoint format (checkpoint.c) that
+ * shapes.c, the unit tests and the fuzz target need: the bounds-checked read
+ * cursor, the header layout, and ck_reseal.
+ *
+ * Layout of version 3 (native byte order and double width, both recorded and
+ * checked; every count is unsigned 32-bit, every string a u32 length then its
+ * bytes without a terminator):
+ *
+ *   header, 40 bytes:
+ *     0  "HEARTHCK"
+ *     8  u32 version (3)
+ *    12  u32 byte-order mark 0x01020304
+ *    16  u32 sizeof(double) (8)
+ *    20  u32 header size (40)
+ *    24  u64 total file size in bytes
+ *    32  u32 CRC-32 of the whole file, computed with these 4 bytes taken as 0
+ *    36  u32 reserved, 0
+ *   sections, each opened by a 4-byte tag:
+ *    "DEF " the scene definition (ck_put_def in checkpoint.c)
+ *    "CLK " i32 guard state, then the clocks and the jitter generator
+ *    "MATS" u32 count; per material: name, u32 ABI, u64 schema hash,
+ *           u32 nparams, f64 params, f64 core params, u32 curves, curves
+ *    "COLS" u32 count; per collider: shape tree (shape_read_mem), contact and pose
+ *    "PART" u32 n, u32 state stride, u32 enabled columns; per enabled column
+ *           its name and n * (bytes per particle)
+ *    "HASH" u64 hearth_scene_hash of the restored particles
+ *   and nothing after it.
+ */
+#ifndef HEARTH_CHECKPOINT_H
+#define HEARTH_CHECKPOINT_H
+#include <stddef.h>
+#include <stdint.h>
+
+#define CK_MAGIC "HEARTHCK"
+#define CK_VERSION 3u
+#define CK_BOM 0x01020304u
+#define CK_HEADER_SIZE 40u
+#define CK_OFF_SIZE 24u
+#define CK_OFF_CRC 32u
+
+/// Largest checkpoint hearth reads (bytes): above it the file is refused
+/// before it is read. 2^36 = 64 GiB, a few hundred million particles.
+#define CK_FILE_MAX ((uint64_t)1 << 36)
+
+/// A read cursor over a checkpoint image in memory. Every read checks the
+/// bytes left first; after the first failure bad stays set, every read returns
+/// zeros, and what names the failure (a static string) for the message.
+typedef struct ck_cursor {
+    const uint8_t *p; ///< next byte
+    size_t left;      ///< bytes from p to the end of the image
+    int bad;
+    const char *what; ///< why the cursor went bad (static), NULL while good
+} ck_cursor;
+
+/// Copy n bytes to out and advance; on too few bytes zero out, set bad and
+/// return -1 (what = "truncated").
+int ck_get(ck_cursor *c, void *out, size_t n);
+/// Mark the cursor bad with a reason (static string) unless it already is. Returns -1.
+int ck_fail(ck_cursor *c, const char *what);
+
+/// The CRC-32 a checkpoint image of n bytes should carry (the header's field
+/// taken as 0). n must be at least CK_HEADER_SIZE.
+uint32_t ck_crc(const uint8_t *buf, size_t n);
+
+/// Recompute and store the whole-file checksum (and the size field) of the
+/// checkpoint image buf[0..n) in place, so a fuzzer's or a test's changes to
+/// the body reach the parser instead of stopping at the checksum. Does nothing
+/// when n is smaller than the header.
+void ck_reseal(uint8_t *buf, size_t n);
+#endif

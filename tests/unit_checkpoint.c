@@ -1,0 +1,515 @@
+/* unit_checkpoint.c: checkpoints are untrusted input. A valid file restores
+ * bit-identically; a damaged or crafted one is refused with a message naming
+ * the file and what is wrong, and nothing crashes (run under ASan). Crafted
+ * files are made from a real save, changed in memory and resealed with
+ * ck_reseal so they pass the checksum and reach the parser. */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "alloc.h"
+#include "checkpoint.h"
+#include "mpm_fixture.h"
+
+/* A small scene with something in every section: a temperature curve, two
+ * colliders (one a boolean tree), the temperature column. */
+static hearth_scene *small_scene(void) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.1;
+    d.oven_temperature = 180;
+    d.oven_beta = 10;
+    hearth_scene *s = fx_scene_def(&d);
+    if (!s) return NULL;
+    const int m = fx_elastic(s, 1e4, 0.3, 1000);
+    const double T[2] = {20, 100}, E[2] = {1e4, 2e4};
+    hearth_error err;
+    CHECK(hearth_scene_material_curve(s, m, "E", 2, T, E, 0, &err) == HEARTH_OK);
+    const double c[3] = {0.5, 0.4, 0}, h[3] = {0.1, 0.1, 0};
+    CHECK(fx_box(s, m, c, h, 1, NULL) > 0);
+    const double fc[3] = {0.5, 0.1, 0}, fh[3] = {0.5, 0.05, 0};
+    CHECK(fx_box_collider(s, fc, fh, HEARTH_STICKY, 0.0) >= 0);
+    hearth_shape *a = hearth_shape_sphere((const double[]){0.2, 0.8, 0}, 0.05);
+    hearth_shape *b = hearth_shape_sphere((const double[]){0.25, 0.8, 0}, 0.05);
+    hearth_shape *u = hearth_shape_combine(HEARTH_UNION, a, b);
+    hearth_collider_def cd = hearth_default_collider_def();
+    cd.shape = u;
+    cd.velocity[0] = 0.01;
+    CHECK(hearth_scene_add_collider(s, &cd, &err) >= 0);
+    hearth_shape_free(a);
+    hearth_shape_free(b);
+    hearth_shape_free(u);
+    CHECK(hearth_scene_step(s, 3, &err) == HEARTH_OK);
+    return s;
+}
+
+/* The image of a save, read back into memory (malloc'd; *n its size). */
+static uint8_t *save_image(const hearth_scene *s, size_t *n) {
+    char path[] = "/tmp/hearth_ck_XXXXXX";
+    const int fd = mkstemp(path);
+    CHECK(fd >= 0);
+    if (fd < 0) return NULL;
+    close(fd);
+    hearth_error err;
+    CHECK(hearth_scene_save(s, path, &err) == HEARTH_OK);
+    FILE *f = fopen(path, "rb");
+    uint8_t *buf = NULL;
+    *n = 0;
+    if (f) {
+        fseek(f, 0, SEEK_END);
+        *n = (size_t)ftell(f);
+        rewind(f);
+        buf = malloc(*n);
+        if (buf && fread(buf, 1, *n, f) != *n) *n = 0;
+        fclose(f);
+    }
+    remove(path);
+    return buf;
+}
+
+static size_t find(const uint8_t *buf, size_t n, const void *what, size_t len) {
+    for (size_t i = 0; i + len <= n; i++)
+        if (memcmp(buf + i, what, len) == 0) return i;
+    return (size_t)-1;
+}
+
+/* Load a resealed copy of img changed by fn; expect a refusal whose message
+ * names the image and contains want. */
+static void expect_refused(const uint8_t *img, size_t n, void (*fn)(uint8_t *, size_t), const char *want) {
+    uint8_t *b = malloc(n);
+    memcpy(b, img, n);
+    fn(b, n);
+    ck_reseal(b, n);
+    hearth_error err;
+    hearth_scene *s = hearth_scene_load_mem(b, n, "crafted.ck", &err);
+    CHECK(s == NULL);
+    CHECK(err.code != HEARTH_OK);
+    CHECK_STR_CONTAINS(err.msg, "crafted.ck");
+    CHECK_STR_CONTAINS(err.msg, want);
+    printf("  refused: %s\n", err.msg);
+    hearth_scene_destroy(s);
+    free(b);
+}
+
+/* A save restores bit-identically, from a file and from memory, and the
+ * header holds the size and the CRC of the whole file. */
+TEST(checkpoint_v3_roundtrip) {
+    hearth_scene *s = small_scene();
+    CHECK(s);
+    if (!s) return;
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img && n > CK_HEADER_SIZE);
+    uint32_t version, crc;
+    uint64_t size;
+    memcpy(&version, img + 8, 4);
+    memcpy(&size, img + CK_OFF_SIZE, 8);
+    memcpy(&crc, img + CK_OFF_CRC, 4);
+    CHECK(version == 3);
+    CHECK(size == n);
+    CHECK(crc == ck_crc(img, n));
+    CHECK(find(img, n, "elastic", 7) != (size_t)-1);
+    CHECK(find(img, n, "/", 1) == (size_t)-1 || find(img, n, ".so", 3) == (size_t)-1); /* no plugin path */
+    hearth_error err;
+    hearth_scene *r = hearth_scene_load_mem(img, n, "mem", &err);
+    CHECK(r);
+    if (r) {
+        CHECK(hearth_scene_hash(r) == hearth_scene_hash(s));
+        CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+        CHECK(hearth_scene_step(r, 20, &err) == HEARTH_OK);
+        CHECK(hearth_scene_hash(r) == hearth_scene_hash(s));
+        hearth_stats a, b;
+        hearth_scene_stats(s, &a);
+        hearth_scene_stats(r, &b);
+        CHECK(a.t == b.t && a.step == b.step);
+        /* saving the restored scene again gives the same bytes as saving the original */
+        size_t n1, n2;
+        uint8_t *i1 = save_image(s, &n1), *i2 = save_image(r, &n2);
+        CHECK(i1 && i2 && n1 == n2 && memcmp(i1, i2, n1) == 0);
+        free(i1);
+        free(i2);
+    }
+    hearth_scene_destroy(r);
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+TEST(checkpoint_bad_magic) {
+    hearth_scene *s = small_scene();
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    img[0] = 'X';
+    hearth_error err;
+    CHECK(hearth_scene_load_mem(img, n, "m.ck", &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "m.ck");
+    CHECK_STR_CONTAINS(err.msg, "bad magic");
+    CHECK(hearth_scene_load_mem("HEARTH", 6, "short.ck", &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "bad magic");
+    CHECK(hearth_scene_load_mem(NULL, 0, "empty.ck", &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "empty.ck");
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+/* Cut short anywhere: refused, from memory and from a file (whose header
+ * size is checked before the body is read). */
+TEST(checkpoint_truncated) {
+    hearth_scene *s = small_scene();
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    hearth_error err;
+    int refused = 0, tried = 0;
+    for (size_t cut = 0; cut < n; cut += cut < 64 ? 1 : 37) {
+        tried++;
+        hearth_scene *r = hearth_scene_load_mem(img, cut, "cut.ck", &err);
+        refused += r == NULL && strstr(err.msg, "cut.ck") != NULL;
+        hearth_scene_destroy(r);
+    }
+    /* resealed after the cut: the size and CRC agree, the parser finds the end */
+    int resealed = 0;
+    for (size_t cut = CK_HEADER_SIZE; cut < n; cut += 13) {
+        uint8_t *b = malloc(cut);
+        memcpy(b, img, cut);
+        ck_reseal(b, cut);
+        hearth_scene *r = hearth_scene_load_mem(b, cut, "cut.ck", &err);
+        resealed += r == NULL && (strstr(err.msg, "ends early") || strstr(err.msg, "truncated") || strstr(err.msg, "checkpoint"));
+        tried++;
+        hearth_scene_destroy(r);
+        free(b);
+    }
+    printf("  %d of %d cuts refused\n", refused + resealed, tried);
+    CHECK(refused + resealed == tried);
+    char path[] = "/tmp/hearth_cut_XXXXXX";
+    const int fd = mkstemp(path);
+    CHECK(fd >= 0 && write(fd, img, n / 2) == (ssize_t)(n / 2));
+    close(fd);
+    CHECK(hearth_scene_load(path, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, path);
+    CHECK_STR_CONTAINS(err.msg, "the header says");
+    remove(path);
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+/* Every single-byte change of a small checkpoint is refused (the CRC covers
+ * the whole file: settings, materials and colliders included). */
+TEST(checkpoint_every_byte_flip) {
+    hearth_scene *s = small_scene();
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    int loaded = 0;
+    hearth_error err;
+    for (size_t i = 0; i < n; i++) {
+        img[i] ^= 0xFF;
+        hearth_scene *r = hearth_scene_load_mem(img, n, "flip.ck", &err);
+        if (r) loaded++;
+        hearth_scene_destroy(r);
+        img[i] ^= 0xFF;
+    }
+    printf("  %zu bytes flipped one at a time, %d loaded\n", n, loaded);
+    CHECK(loaded == 0);
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+/* Random single-bit flips (issue 15: 657 of 2500 loaded silently in v2). */
+TEST(checkpoint_bitflip_campaign) {
+    hearth_scene *s = small_scene();
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    uint64_t rng = 88172645463325252ULL;
+    int loaded = 0;
+    hearth_error err;
+    enum { FLIPS = 2500 };
+    for (int k = 0; k < FLIPS; k++) {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        const size_t byte = (size_t)(rng % n);
+        const uint8_t bit = (uint8_t)(1u << ((rng >> 32) % 8));
+        img[byte] ^= bit;
+        hearth_scene *r = hearth_scene_load_mem(img, n, "flip.ck", &err);
+        loaded += r != NULL;
+        hearth_scene_destroy(r);
+        img[byte] ^= bit;
+    }
+    printf("  %d random bit flips, %d loaded silently\n", FLIPS, loaded);
+    CHECK(loaded == 0);
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+/* The same flips resealed (what a crafted file can do): whatever loads holds
+ * only values the constructors accept, and nothing crashes under ASan. */
+TEST(checkpoint_resealed_flips) {
+    hearth_scene *s = small_scene();
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    uint8_t *b = malloc(n);
+    uint64_t rng = 0x9E3779B97F4A7C15ULL;
+    int loaded = 0, refused = 0;
+    hearth_error err;
+    for (int k = 0; k < 2500; k++) {
+        memcpy(b, img, n);
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        b[CK_HEADER_SIZE + rng % (n - CK_HEADER_SIZE)] ^= (uint8_t)(1u << ((rng >> 32) % 8));
+        ck_reseal(b, n);
+        hearth_scene *r = hearth_scene_load_mem(b, n, "resealed.ck", &err);
+        if (r) {
+            loaded++;
+            /* a loaded scene steps without tripping the sanitizers */
+            hearth_scene_step(r, 1, &err);
+        } else {
+            refused++;
+            if (!strstr(err.msg, "resealed.ck")) {
+                printf("  message without the file: %s\n", err.msg);
+                CHECK(0);
+            }
+        }
+        hearth_scene_destroy(r);
+    }
+    printf("  2500 resealed bit flips: %d refused with a message, %d loaded (changed values still in range)\n", refused,
+           loaded);
+    CHECK(refused + loaded == 2500);
+    CHECK(refused > 0);
+    free(b);
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+/* ---- crafted fields ---------------------------------------------------- */
+
+static void set_u32_after(uint8_t *b, size_t n, const char *tag, size_t off, uint32_t v) {
+    const size_t at = find(b, n, tag, 4);
+    CHECK(at != (size_t)-1);
+    if (at != (size_t)-1) memcpy(b + at + 4 + off, &v, 4);
+}
+static void set_f64_after(uint8_t *b, size_t n, const char *tag, size_t off, double v) {
+    const size_t at = find(b, n, tag, 4);
+    CHECK(at != (size_t)-1);
+    if (at != (size_t)-1) memcpy(b + at + 4 + off, &v, 8);
+}
+
+static void count_2e31(uint8_t *b, size_t n) { set_u32_after(b, n, "PART", 0, 1u << 31); }
+static void count_2e30(uint8_t *b, size_t n) { set_u32_after(b, n, "PART", 0, 1u << 30); }
+static void count_plus1(uint8_t *b, size_t n) {
+    const size_t at = find(b, n, "PART", 4);
+    uint32_t v;
+    memcpy(&v, b + at + 4, 4);
+    set_u32_after(b, n, "PART", 0, v + 1);
+}
+static void guard_state_7(uint8_t *b, size_t n) { set_u32_after(b, n, "CLK ", 0, 7); }
+static void guard_state_neg(uint8_t *b, size_t n) { set_u32_after(b, n, "CLK ", 0, (uint32_t)-1); }
+static void dx_nan(uint8_t *b, size_t n) { set_f64_after(b, n, "DEF ", 4, NAN); }
+static void dx_tiny(uint8_t *b, size_t n) { set_f64_after(b, n, "DEF ", 4, 1e-300); }
+static void dx_negative(uint8_t *b, size_t n) { set_f64_after(b, n, "DEF ", 4, -0.1); }
+static void box_huge(uint8_t *b, size_t n) { set_f64_after(b, n, "DEF ", 4 + 8 + 24, 1e300); } /* hi[0] */
+static void dim_7(uint8_t *b, size_t n) { set_u32_after(b, n, "DEF ", 0, 7); }
+static void wall_mode_9(uint8_t *b, size_t n) { set_u32_after(b, n, "DEF ", 4 + 8 + 72 + 16, 9); }
+static void plugin_path(uint8_t *b, size_t n) {
+    const size_t at = find(b, n, "elastic", 7);
+    CHECK(at != (size_t)-1);
+    memcpy(b + at, "/tmp/el", 7);
+}
+static void plugin_dots(uint8_t *b, size_t n) {
+    const size_t at = find(b, n, "elastic", 7);
+    memcpy(b + at, "../../x", 7);
+}
+static void schema_hash(uint8_t *b, size_t n) {
+    const size_t at = find(b, n, "elastic", 7);
+    b[at + 7 + 4] ^= 1; /* after the name: u32 ABI, then the u64 hash */
+}
+static void abi_2(uint8_t *b, size_t n) {
+    const size_t at = find(b, n, "elastic", 7);
+    const uint32_t v = 2;
+    memcpy(b + at + 7, &v, 4);
+}
+static void version_2(uint8_t *b, size_t n) {
+    (void)n;
+    const uint32_t v = 2;
+    memcpy(b + 8, &v, 4);
+}
+static void particle_x_nan(uint8_t *b, size_t n) {
+    const size_t at = find(b, n, "\1\0\0\0x", 5); /* the column "x": length 1, then the name */
+    CHECK(at != (size_t)-1);
+    const double v = NAN;
+    memcpy(b + at + 5 + 8, &v, 8);
+}
+static void particle_material_9(uint8_t *b, size_t n) {
+    const size_t at = find(b, n, "\10\0\0\0material", 12);
+    CHECK(at != (size_t)-1);
+    const int32_t v = 9;
+    memcpy(b + at + 12, &v, 4);
+}
+static void curve_points_huge(uint8_t *b, size_t n) {
+    /* after the core parameters: u32 curve count, then param, points */
+    const size_t at = find(b, n, "COLS", 4);
+    (void)at;
+    const size_t m = find(b, n, "elastic", 7);
+    const size_t off = m + 7 + 4 + 8 + 4 + 8 * 3 + 8 * CP_COUNT + 4 + 4; /* elastic has 3 parameters */
+    const uint32_t v = 0x7fffffff;
+    memcpy(b + off, &v, 4);
+}
+/* The first sphere node: the second collider is a union (kind 6) of two
+ * spheres (kind 2); searched from the colliders' tag. */
+static size_t first_sphere(const uint8_t *b, size_t n) {
+    const size_t cols = find(b, n, "COLS", 4);
+    const int32_t sphere[2] = {2, 0};
+    const size_t at = find(b + cols, n - cols, sphere, 8);
+    CHECK(cols != (size_t)-1 && at != (size_t)-1);
+    return cols + at;
+}
+static void shape_nan_radius(uint8_t *b, size_t n) {
+    const size_t at = first_sphere(b, n);
+    const double v = NAN;
+    memcpy(b + at + 8 + 9 * 8, &v, 8); /* r is the 10th double */
+}
+static void shape_kind_99(uint8_t *b, size_t n) {
+    const size_t at = first_sphere(b, n);
+    const int32_t k = 99;
+    memcpy(b + at, &k, 4);
+}
+static void trailing(uint8_t *b, size_t n) { (void)b, (void)n; }
+
+TEST(checkpoint_crafted_fields) {
+    hearth_scene *s = small_scene();
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    expect_refused(img, n, count_2e31, "particle count");
+    expect_refused(img, n, count_2e30, "particle count");
+    expect_refused(img, n, count_plus1, "particle");
+    expect_refused(img, n, guard_state_7, "guard state out of range");
+    expect_refused(img, n, guard_state_neg, "guard state out of range");
+    expect_refused(img, n, dx_nan, "dx is not finite");
+    expect_refused(img, n, dx_tiny, "dx");
+    expect_refused(img, n, dx_negative, "dx");
+    expect_refused(img, n, box_huge, "box");
+    expect_refused(img, n, dim_7, "dim");
+    expect_refused(img, n, wall_mode_9, "wall mode");
+    expect_refused(img, n, plugin_path, "not a plugin name");
+    expect_refused(img, n, plugin_dots, "not a plugin name");
+    expect_refused(img, n, schema_hash, "another parameter schema");
+    expect_refused(img, n, abi_2, "ABI 2");
+    expect_refused(img, n, particle_x_nan, "not finite");
+    expect_refused(img, n, particle_material_9, "unknown material");
+    expect_refused(img, n, curve_points_huge, "point count");
+    expect_refused(img, n, shape_nan_radius, "collider shape");
+    expect_refused(img, n, shape_kind_99, "unknown node kind");
+    (void)trailing;
+    /* bytes after the end */
+    uint8_t *b = malloc(n + 8);
+    memcpy(b, img, n);
+    memset(b + n, 0, 8);
+    ck_reseal(b, n + 8);
+    hearth_error err;
+    CHECK(hearth_scene_load_mem(b, n + 8, "long.ck", &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "bytes after the end");
+    free(b);
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+/* Version 2 files are refused by their version, not parsed. */
+TEST(checkpoint_old_version) {
+    hearth_scene *s = small_scene();
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    version_2(img, n);
+    hearth_error err;
+    CHECK(hearth_scene_load_mem(img, n, "old.ck", &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "old.ck");
+    CHECK_STR_CONTAINS(err.msg, "version 2");
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+/* A 2^31 particle count in a small file allocates nothing large: refused
+ * before the columns are reserved. An allocator that records the largest
+ * request watches the load. */
+static size_t largest;
+static void *watch_alloc(void *ud, void *p, size_t osize, size_t nsize) {
+    (void)ud, (void)osize;
+    if (nsize == 0) {
+        free(p);
+        return NULL;
+    }
+    if (nsize > largest) largest = nsize;
+    return realloc(p, nsize);
+}
+
+TEST(checkpoint_count_before_alloc) {
+    hearth_scene *s = small_scene();
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    hearth_scene_destroy(s);
+    count_2e31(img, n);
+    ck_reseal(img, n);
+    hearth_set_allocator(watch_alloc, NULL);
+    largest = 0;
+    hearth_error err;
+    hearth_scene *r = hearth_scene_load_mem(img, n, "big.ck", &err);
+    hearth_set_allocator(NULL, NULL);
+    CHECK(r == NULL);
+    CHECK(err.code == HEARTH_ERR_FORMAT);
+    CHECK_STR_CONTAINS(err.msg, "particle count larger than the file holds");
+    printf("  %zu-byte file, largest allocation %zu bytes\n", n, largest);
+    CHECK(largest < (size_t)1 << 20);
+    free(img);
+}
+
+/* A folder or a FIFO named as a checkpoint is refused, without blocking. */
+TEST(checkpoint_not_regular_file) {
+    hearth_error err;
+    CHECK(hearth_scene_load("/tmp", &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "not a regular file");
+    char dir[] = "/tmp/hearth_fifo_XXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    char path[64];
+    snprintf(path, sizeof path, "%s/ck", dir);
+    CHECK(mkfifo(path, 0600) == 0);
+    CHECK(hearth_scene_load(path, &err) == NULL); /* would block forever in fopen */
+    CHECK_STR_CONTAINS(err.msg, "not a regular file");
+    remove(path);
+    rmdir(dir);
+    CHECK(hearth_scene_load("/nonexistent/x.ck", &err) == NULL && err.code == HEARTH_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, "/nonexistent/x.ck");
+}
+
+/* Every allocation of a load failing in turn: a refusal with a message and
+ * nothing leaked, until the load goes through. */
+TEST(checkpoint_alloc_failures) {
+    hearth_scene *s = small_scene();
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    const uint64_t want = hearth_scene_hash(s);
+    hearth_scene_destroy(s);
+    const size_t base = hearth_bytes_allocated();
+    int failed = 0, k;
+    for (k = 0; k < 500; k++) {
+        hearth_error err;
+        mem_fail_after(k);
+        hearth_scene *r = hearth_scene_load_mem(img, n, "nomem.ck", &err);
+        mem_fail_after(-1);
+        if (r) {
+            CHECK(hearth_scene_hash(r) == want);
+            hearth_scene_destroy(r);
+            break;
+        }
+        failed++;
+        CHECK(err.code != HEARTH_OK);
+        CHECK_STR_CONTAINS(err.msg, "nomem.ck");
+        CHECK(hearth_bytes_allocated() == base);
+    }
+    printf("  %d allocation failures refused before the load went through\n", failed);
+    CHECK(k < 500 && failed > 5);
+    free(img);
+}
+
+TEST_MAIN(T(checkpoint_v3_roundtrip), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
+          T(checkpoint_bitflip_campaign), T(checkpoint_resealed_flips), T(checkpoint_crafted_fields),
+          T(checkpoint_old_version), T(checkpoint_count_before_alloc), T(checkpoint_not_regular_file),
+          T(checkpoint_alloc_failures))
