@@ -1,17 +1,19 @@
 /* fuzz_csv.c: the flow-curve CSV reader and what `hearth fit` does with it.
  *
  * Bytes -> file -> rheo_curve_read -> rheo_fit_hb, as cmd_fit.c does; and the
- * same bytes as one line through csv_trim / csv_split, which the sauce
- * library's reader shares. A curve that reads must hold at least 3 finite
+ * same bytes as one line through csv_trim / csv_split, and as a sauce
+ * library (`hearth rheometer --library FILE`), which shares the line reader. A curve that reads must hold at least 3 finite
  * positive points; a fit that succeeds must give finite, non-negative
  * parameters; every refusal carries a message. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "csv.h"
 #include "fuzz_util.h"
 #include "rheometer.h"
+#include "sauce_library.h"
 
 static void split_line(const uint8_t *data, size_t size) {
     char *line = malloc(size + 1);
@@ -31,8 +33,18 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (!path) return 0;
     hearth_error err;
     memset(&err, 0, sizeof err);
+    sauce_library lib;
+    if (sauce_library_load(path, &lib, &err) == HEARTH_OK) {
+        for (int i = 0; i < lib.n; i++)
+            FUZZ_CHECK(lib.items[i].h > 0 && lib.items[i].eta > 0 && lib.items[i].sigma_y >= 0);
+        sauce_library_free(&lib);
+    } else {
+        FUZZ_CHECK(err.msg[0] != '\0');
+    }
+    memset(&err, 0, sizeof err);
     rheo_curve c;
     if (rheo_curve_read(path, &c, &err) != HEARTH_OK) {
+        if (fuzz_verbose()) fprintf(stderr, "fuzz_csv: %s\n", err.msg);
         FUZZ_CHECK(err.code != HEARTH_OK && err.msg[0] != '\0');
         FUZZ_CHECK(c.n == 0 && !c.rate && !c.stress);
         return 0;

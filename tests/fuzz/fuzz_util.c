@@ -1,6 +1,8 @@
 /* fuzz_util.c: temporary files for the path-taking readers (see fuzz_util.h). */
+#define _XOPEN_SOURCE 700 /* nftw */
 #include "fuzz_util.h"
 
+#include <ftw.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -19,13 +21,20 @@ static char g_file[512], g_dir[512];
 
 static void cleanup(void) {
     if (g_file[0]) unlink(g_file);
-    /* The scene target's folder holds whatever the scene wrote: remove the
-     * files one level down, then the folder (nothing deeper is expected). */
-    if (g_dir[0]) {
-        char cmd[600];
-        snprintf(cmd, sizeof cmd, "rm -rf '%s'", g_dir);
-        if (system(cmd) != 0) { /* best effort: a leftover temp folder is harmless */ }
-    }
+    if (g_dir[0]) fuzz_remove_tree(g_dir, 1);
+}
+
+static int remove_one(const char *path, const struct stat *st, int type, struct FTW *ftw) {
+    (void)st;
+    (void)type;
+    if (ftw->level > 0) remove(path);
+    return 0;
+}
+
+void fuzz_remove_tree(const char *dir, int and_dir) {
+    /* depth first, not following symlinks: a scene may leave one pointing anywhere */
+    nftw(dir, remove_one, 16, FTW_DEPTH | FTW_PHYS);
+    if (and_dir) rmdir(dir);
 }
 
 static void register_cleanup(void) {
@@ -61,4 +70,13 @@ const char *fuzz_temp_dir(void) {
         register_cleanup();
     }
     return g_dir;
+}
+
+int fuzz_verbose(void) {
+    static int v = -1;
+    if (v < 0) {
+        const char *e = getenv("FUZZ_VERBOSE");
+        v = e && *e && strcmp(e, "0") != 0;
+    }
+    return v;
 }

@@ -28,5 +28,13 @@ const char *fuzz_temp_file(const uint8_t *data, size_t size, const char *suffix)
 /// A fresh empty folder for a target's outputs, made once per process.
 const char *fuzz_temp_dir(void);
 
+/// FUZZ_VERBOSE=1 in the environment: targets print why each input was
+/// refused, to check by hand that seeds reach the code they are meant for.
+int fuzz_verbose(void);
+
+/// Remove everything inside dir (symlinks themselves, never their targets),
+/// and dir too when and_dir. Best effort.
+void fuzz_remove_tree(const char *dir, int and_dir);
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 #endif
