@@ -41,7 +41,7 @@ static const png_flavour png_flavours[] = {
     {"gray_alpha16", 16, PNG_COLOR_TYPE_GRAY_ALPHA, 0, {100 * 257, 65535, 0, 0}, {0, 0, 0, 0}, 0, 100, 255},
     /* light: black at alpha 128 over white, (255 * 127 + 127) / 255 = 127 */
     {"rgba8", 8, PNG_COLOR_TYPE_RGBA, 0, {10, 200, 30, 255}, {0, 0, 0, 128}, 0, 124, 127},
-    {"rgba16", 16, PNG_COLOR_TYPE_RGBA, 0, {10 * 257, 200 * 257, 30 * 257, 65535}, {0, 0, 0, 128 * 257}, 0, 124, 127},
+    {"rgba16", 16, PNG_COLOR_TYPE_RGBA, 0, {10 * 257, 200 * 257, 30 * 257, 65535}, {0, 0, 0, 0}, 0, 124, 255},
     {"rgba8_interlaced", 8, PNG_COLOR_TYPE_RGBA, 1, {10, 200, 30, 255}, {0, 0, 0, 128}, 0, 124, 127},
 };
 #undef PF_G

@@ -13,6 +13,7 @@
 #include "alloc.h"
 #include "hearth/hearth.h"
 #include "io_png.h"
+#include "png_fixture.h"
 #include "shapes.h"
 #include "test.h"
 
@@ -489,4 +490,135 @@ TEST(mask_serialise) {
     CHECK(hearth_bytes_allocated() == base);
 }
 
-TEST_MAIN(T(mask_sdf_disc), T(mask_assets_load), T(mask_extrude), T(mask_errors), T(mask_serialise))
+/* ---- every PNG flavour, damaged files, the smallest masks ------------------ */
+
+static int disc_xy(int x, int y, void *ud) {
+    (void)ud;
+    double dx = x + 0.5 - 20, dy = y + 0.5 - 15;
+    return dx * dx + dy * dy < 9.0 * 9.0;
+}
+
+/* A disc drawn in every colour type and depth whose dark and light greys
+ * fall either side of 50% gives the very same field as 8-bit grey. */
+TEST(mask_png_flavours) {
+    size_t base = hearth_bytes_allocated();
+    char ref_path[128], path[128];
+    const double lo[2] = {0, 0}, hi[2] = {0.4, 0.3};
+    tmp_path(ref_path, sizeof ref_path, "ref.png");
+    write_mask(ref_path, 40, 30, disc_xy, NULL);
+    hearth_error err = {0};
+    hearth_shape *ref = hearth_shape_mask(ref_path, lo, hi, &err);
+    CHECK(ref != NULL);
+    if (!ref) return;
+    int tried = 0;
+    for (int k = 0; k < PNG_FLAVOURS; k++) {
+        const png_flavour *f = &png_flavours[k];
+        if (!(f->want_dark < 128 && f->want_light >= 128)) continue; /* not a two-sided mask */
+        tried++;
+        tmp_path(path, sizeof path, f->name);
+        CHECK(write_png_flavour(path, f, 40, 30, disc_xy, NULL) == 0);
+        err = (hearth_error){0};
+        hearth_shape *m = hearth_shape_mask(path, lo, hi, &err);
+        if (!m) fprintf(stderr, "%s: %s\n", f->name, err.msg);
+        CHECK(m != NULL);
+        if (!m) continue;
+        int differ = 0;
+        for (int j = 0; j <= 30; j++)
+            for (int i = 0; i <= 40; i++) {
+                double x = -0.05 + 0.5 * i / 40, y = -0.05 + 0.4 * j / 30;
+                differ += sdf_at(m, x, y, 0) != sdf_at(ref, x, y, 0);
+            }
+        if (differ) fprintf(stderr, "%s: %d samples differ from 8-bit grey\n", f->name, differ);
+        CHECK(differ == 0);
+        hearth_shape_free(m);
+        unlink(path);
+    }
+    printf("mask_png_flavours: %d flavours match 8-bit grey\n", tried);
+    CHECK(tried >= 12);
+    hearth_shape_free(ref);
+    unlink(ref_path);
+    CHECK(hearth_bytes_allocated() == base);
+}
+
+/* A mask file cut short or with a byte changed: refused naming the file, or
+ * (a change the format cannot see) read; never a crash, never a leak. */
+TEST(mask_damaged_files) {
+    char path[128];
+    tmp_path(path, sizeof path, "damaged.png");
+    write_mask(path, 40, 30, disc_xy, NULL);
+    FILE *f = fopen(path, "rb");
+    CHECK(f != NULL);
+    if (!f) return;
+    unsigned char good[4096];
+    size_t n = fread(good, 1, sizeof good, f);
+    fclose(f);
+    CHECK(n > 60 && n < sizeof good);
+    const double lo[2] = {0, 0}, hi[2] = {1, 1};
+    size_t base = hearth_bytes_allocated();
+    int refused = 0, loaded = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (size_t at = 0; at < n; at += pass ? 1 : 3) {
+            unsigned char buf[4096];
+            memcpy(buf, good, n);
+            size_t len = pass ? n : at;
+            if (pass) buf[at] ^= 0xA5;
+            f = fopen(path, "wb");
+            CHECK(f && fwrite(buf, 1, len, f) == len);
+            if (f) fclose(f);
+            hearth_error err = {0};
+            hearth_shape *m = hearth_shape_mask(path, lo, hi, &err);
+            if (m) {
+                loaded++;
+                hearth_shape_free(m);
+            } else {
+                refused++;
+                CHECK(err.code != HEARTH_OK);
+                CHECK_STR_CONTAINS(err.msg, path);
+            }
+        }
+    printf("mask_damaged_files: %d refused, %d loaded\n", refused, loaded);
+    CHECK(refused > (int)n / 3);
+    CHECK(hearth_bytes_allocated() == base);
+    unlink(path);
+}
+
+static int one_px(int i, int r, void *ud) {
+    (void)ud;
+    return i == 0 && r == 0;
+}
+
+static int middle_of_line(int i, int r, void *ud) {
+    (void)ud;
+    return i + r >= 10 && i + r < 30; /* one of i, r is always 0 */
+}
+
+/* The smallest masks: one pixel, one row, one column. Inside is negative,
+ * the image's outside positive, all finite. */
+TEST(mask_tiny_images) {
+    size_t base = hearth_bytes_allocated();
+    static const struct {
+        int w, h;
+        int (*inside)(int, int, void *);
+        double in[2]; /* a point inside, in the unit square */
+    } cases[] = {{1, 1, one_px, {0.5, 0.5}}, {40, 1, middle_of_line, {0.5, 0.5}}, {1, 40, middle_of_line, {0.5, 0.5}}};
+    char path[128];
+    tmp_path(path, sizeof path, "tiny.png");
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        write_mask(path, cases[k].w, cases[k].h, cases[k].inside, NULL);
+        hearth_error err = {0};
+        hearth_shape *m = hearth_shape_mask(path, (const double[]){0, 0}, (const double[]){1, 1}, &err);
+        CHECK(m != NULL);
+        if (!m) continue;
+        double in = sdf_at(m, cases[k].in[0], cases[k].in[1], 0);
+        CHECK(isfinite(in) && in < 0);
+        CHECK(sdf_at(m, -0.5, 0.5, 0) > 0 && sdf_at(m, 0.5, 1.5, 0) > 0);
+        for (int j = 0; j <= 10; j++)
+            for (int i = 0; i <= 10; i++) CHECK(isfinite(sdf_at(m, i / 10.0, j / 10.0, 0)));
+        hearth_shape_free(m);
+    }
+    unlink(path);
+    CHECK(hearth_bytes_allocated() == base);
+}
+
+TEST_MAIN(T(mask_sdf_disc), T(mask_assets_load), T(mask_extrude), T(mask_errors), T(mask_serialise),
+          T(mask_png_flavours), T(mask_damaged_files), T(mask_tiny_images))
