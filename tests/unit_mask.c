@@ -620,5 +620,35 @@ TEST(mask_tiny_images) {
     CHECK(hearth_bytes_allocated() == base);
 }
 
+/* Sizes refused from the header, before any pixel is decoded: zero (libpng's
+ * words, with the file) and past 4096 a side (the mask limit, named). */
+TEST(mask_header_sizes) {
+    size_t base = hearth_bytes_allocated();
+    static const struct {
+        uint32_t w, h;
+        hearth_status want;
+        const char *says;
+    } cases[] = {
+        {0, 5, HEARTH_ERR_FORMAT, "width is zero"},
+        {5, 0, HEARTH_ERR_FORMAT, "height is zero"},
+        {4097, 1, HEARTH_ERR_PARAM, "is 4097x1 pixels; the largest mask is 4096x4096"},
+        {1, 5000, HEARTH_ERR_PARAM, "the largest mask is 4096x4096"},
+        {0x7FFFFFFFu, 0x7FFFFFFFu, HEARTH_ERR_PARAM, "the largest mask is 4096x4096"},
+    };
+    char path[128];
+    tmp_path(path, sizeof path, "header.png");
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        CHECK(write_png_header_only(path, cases[k].w, cases[k].h) == 0);
+        hearth_error err = {0};
+        CHECK(!hearth_shape_mask(path, (const double[]){0, 0}, (const double[]){1, 1}, &err));
+        CHECK(err.code == cases[k].want);
+        CHECK_STR_CONTAINS(err.msg, path);
+        CHECK_STR_CONTAINS(err.msg, cases[k].says);
+        printf("%s\n", err.msg);
+    }
+    unlink(path);
+    CHECK(hearth_bytes_allocated() == base);
+}
+
 TEST_MAIN(T(mask_sdf_disc), T(mask_assets_load), T(mask_extrude), T(mask_errors), T(mask_serialise),
-          T(mask_png_flavours), T(mask_damaged_files), T(mask_tiny_images))
+          T(mask_png_flavours), T(mask_damaged_files), T(mask_tiny_images), T(mask_header_sizes))
