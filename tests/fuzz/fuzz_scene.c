@@ -90,6 +90,17 @@ static void check_no_escape(const char *root) {
     closedir(d);
 }
 
+/* Under libFuzzer only (driver.c does not call it): a scene's io.read must
+ * not wait on the terminal, and its prints would bury libFuzzer's log. */
+int LLVMFuzzerInitialize(int *argc, char ***argv);
+int LLVMFuzzerInitialize(int *argc, char ***argv) {
+    (void)argc;
+    (void)argv;
+    if (!freopen("/dev/null", "r", stdin) || !freopen("/dev/null", "w", stdout))
+        fprintf(stderr, "fuzz_scene: cannot point stdin and stdout at /dev/null\n");
+    return 0;
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     hearth_set_threads(1);
     const char *root = fuzz_temp_dir();
