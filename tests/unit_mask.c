@@ -89,9 +89,10 @@ static double rnd(double a, double b) {
 
 /* The field sample at pixel (i, r) computed by brute force: the nearest
  * opposite pixel centre (the virtual outside ring one pixel beyond the image
- * included for inside pixels), minus the inscribed-ellipse half pixel. Ties
- * between sites at the same distance may give different half pixels, so
- * returns the interval [lo, hi] of valid magnitudes. */
+ * included for inside pixels), minus the inscribed-ellipse half pixel, and a
+ * depth no more than the distance to the image's edge. Ties between sites at
+ * the same distance may give different half pixels, so returns the interval
+ * [lo, hi] of valid magnitudes. */
 static void brute_sample(int w, int h, int (*inside)(int, int, void *), int i, int r, double sx, double sy,
                          double *lo, double *hi) {
     int in = inside(i, r, NULL);
@@ -113,9 +114,10 @@ static void brute_sample(int w, int h, int (*inside)(int, int, void *), int i, i
                     *hi = fmax(*hi, v);
                 }
             }
-    if (in) {
-        double t = *lo;
-        *lo = -*hi;
+    if (in) { /* a depth is at most the distance to the image's edge (shape_mask.c) */
+        double edge = fmin(fmin(i + 0.5, w - i - 0.5) * sx, fmin(r + 0.5, h - r - 0.5) * sy);
+        double t = fmin(*lo, edge);
+        *lo = -fmin(*hi, edge);
         *hi = -t;
     }
 }
@@ -650,5 +652,41 @@ TEST(mask_header_sizes) {
     CHECK(hearth_bytes_allocated() == base);
 }
 
+/* Non-square pixels: the solid stays inside the image rectangle. A 16 x 1
+ * mask over 2 x 1 m (pixels 0.125 x 1 m), all dark but the first pixel, was
+ * 0.44 m deep at its top edge before depths were bounded by the distance to
+ * the edge (found by fuzz_png_mask). */
+static int all_but_first(int i, int r, void *ud) {
+    (void)r, (void)ud;
+    return i > 0;
+}
+
+TEST(mask_anisotropic_inside_rect) {
+    char path[128];
+    tmp_path(path, sizeof path, "aniso.png");
+    const double lo[2] = {-0.5, 0}, hi[2] = {1.5, 1};
+    int bad = 0, n = 0;
+    for (int shape = 0; shape < 2; shape++) {
+        int w = shape ? 1 : 16, h = shape ? 16 : 1; /* wide pixels, then tall ones */
+        write_mask(path, w, h, shape ? all_black : all_but_first, NULL);
+        hearth_error err = {0};
+        hearth_shape *m = hearth_shape_mask(path, lo, hi, &err);
+        CHECK(m != NULL);
+        if (!m) continue;
+        for (int k = 0; k <= 64; k++) {
+            double t = k / 64.0, x = lo[0] + (hi[0] - lo[0]) * t, y = lo[1] + (hi[1] - lo[1]) * t;
+            const double out[4][2] = {{x, hi[1] + 0.01}, {x, lo[1] - 0.01}, {lo[0] - 0.01, y}, {hi[0] + 0.01, y}};
+            for (int q = 0; q < 4; q++, n++) bad += !(sdf_at(m, out[q][0], out[q][1], 0) > 0);
+            double edge = sdf_at(m, x, hi[1], 0); /* on the rectangle: never inside */
+            bad += !(edge >= -1e-12);
+        }
+        hearth_shape_free(m);
+    }
+    unlink(path);
+    printf("mask_anisotropic_inside_rect: %d of %d points outside the rectangle read as inside\n", bad, n);
+    CHECK(bad == 0);
+}
+
 TEST_MAIN(T(mask_sdf_disc), T(mask_assets_load), T(mask_extrude), T(mask_errors), T(mask_serialise),
-          T(mask_png_flavours), T(mask_damaged_files), T(mask_tiny_images), T(mask_header_sizes))
+          T(mask_png_flavours), T(mask_damaged_files), T(mask_tiny_images), T(mask_header_sizes),
+          T(mask_anisotropic_inside_rect))
