@@ -5,9 +5,10 @@
  * sandbox), the output folder a fresh temporary one, text chunks only. Three
  * limits keep one input cheap and let the fuzzer explore instead of waiting:
  * a Lua memory ceiling (the allocator refuses past LUA_MEM_CAP, and Lua
- * raises "not enough memory"), an instruction budget (a count hook raises
- * after ~1e6 VM instructions) and the --until / --frames overrides, so any
- * s:run stops early. A scene error is the normal outcome; a crash, a leak
+ * raises "not enough memory"), an instruction and time budget (a count hook
+ * raises after ~1e6 VM instructions or 1 s) and the --until / --frames
+ * overrides, so any s:run stops early. Time spent inside one C call (a long
+ * s:step) is not bounded here; libFuzzer's -timeout catches that. A scene error is the normal outcome; a crash, a leak
  * or a file written beside the output folder (a sandbox escape through
  * "..") is a finding.
  *
@@ -25,6 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 
 #include "fuzz_util.h"
 #include "hearth_lua.h"
@@ -55,9 +57,21 @@ static void *capped_alloc(void *ud, void *ptr, size_t osize, size_t nsize) {
     return p;
 }
 
+/* Instructions alone do not bound time: `s = s .. s` on megabyte strings
+ * costs a copy per instruction. So the hook also checks the clock. */
+#define WALL_BUDGET_S 1.0
+static struct timespec g_start;
+
+static double seconds_since_start(void) {
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (double)(now.tv_sec - g_start.tv_sec) + 1e-9 * (double)(now.tv_nsec - g_start.tv_nsec);
+}
+
 static void budget_hook(lua_State *L, lua_Debug *ar) {
     (void)ar;
     g_instructions += HOOK_EVERY;
+    if (seconds_since_start() > WALL_BUDGET_S) luaL_error(L, "fuzz: time budget of %d s spent", (int)WALL_BUDGET_S);
     if (g_instructions > INSTR_BUDGET) luaL_error(L, "fuzz: instruction budget of %d spent", (int)INSTR_BUDGET);
 }
 
@@ -112,6 +126,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
 
     lua_budget b = {0};
     g_instructions = 0;
+    clock_gettime(CLOCK_MONOTONIC, &g_start);
     hl_options o = {.out_dir = out, .scene_dir = out, .until_override = 0.005, .frames_override = 1,
                     .quiet = 1, .trusted = 0};
     lua_State *L = new_state(&b, &o);
