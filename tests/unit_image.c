@@ -18,6 +18,7 @@
 #include "image.h"
 #include "io_png.h"
 #include "fs_fixture.h"
+#include "png_fixture.h"
 #include "test.h"
 
 /* ---- helpers --------------------------------------------------------- */
@@ -283,6 +284,146 @@ TEST(png_read_errors) {
     rm_dir(dir);
 }
 
+/* ---- reading every flavour, and what must be refused ------------------ */
+
+static int left_half_dark(int x, int y, void *ud) {
+    (void)y;
+    (void)ud;
+    return x < 4;
+}
+
+/* Every colour type and bit depth libpng knows, with and without tRNS and
+ * interlacing, reads to the exact grey png_fixture.h gives for it. */
+TEST(png_read_flavours) {
+    char dir[64], path[160];
+    make_dir(dir, sizeof dir);
+    size_t bytes0 = hearth_bytes_allocated();
+    enum { W = 9, H = 7 };
+    for (int k = 0; k < PNG_FLAVOURS; k++) {
+        const png_flavour *f = &png_flavours[k];
+        snprintf(path, sizeof path, "%s/%s.png", dir, f->name);
+        CHECK(write_png_flavour(path, f, W, H, left_half_dark, NULL) == 0);
+        hearth_error err = {0};
+        int w = 0, h = 0;
+        unsigned char *g = NULL;
+        hearth_status st = png_read_gray(path, &w, &h, &g, &err);
+        if (st != HEARTH_OK) fprintf(stderr, "%s: %s\n", f->name, err.msg);
+        CHECK(st == HEARTH_OK);
+        if (st != HEARTH_OK) continue;
+        CHECK(w == W && h == H);
+        int bad = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                int want = x < 4 ? f->want_dark : f->want_light;
+                if (g[y * W + x] != want) {
+                    if (!bad) fprintf(stderr, "%s: pixel (%d, %d) is %d, want %d\n", f->name, x, y, g[y * W + x], want);
+                    bad++;
+                }
+            }
+        CHECK(bad == 0);
+        mem_free(g, (size_t)w * (size_t)h);
+    }
+    CHECK(hearth_bytes_allocated() == bytes0);
+    rm_dir(dir);
+}
+
+/* Sizes the reader must refuse from the header, before it allocates the
+ * image: the message names the file and the limit. */
+TEST(png_read_size_limits) {
+    char dir[64], path[160];
+    make_dir(dir, sizeof dir);
+    size_t bytes0 = hearth_bytes_allocated();
+    static const struct {
+        uint32_t w, h;
+        hearth_status want;
+        const char *says;
+    } cases[] = {
+        {0, 5, HEARTH_ERR_FORMAT, "width is zero"},
+        {5, 0, HEARTH_ERR_FORMAT, "height is zero"},
+        {40000, 3, HEARTH_ERR_PARAM, "the largest PNG read is 32768x32768"},
+        {3, 40000, HEARTH_ERR_PARAM, "3x40000"},
+        {8193, 8193, HEARTH_ERR_PARAM, "64 megapixels"},        /* each side fine, the area is not */
+        {32768, 32768, HEARTH_ERR_PARAM, "64 megapixels"},      /* would be 5 GB */
+        {0x80000000u, 1, HEARTH_ERR_FORMAT, "cannot read PNG"}, /* past PNG's 2^31 - 1 */
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        snprintf(path, sizeof path, "%s/size%zu.png", dir, k);
+        CHECK(write_png_header_only(path, cases[k].w, cases[k].h) == 0);
+        hearth_error err = {0};
+        int w = 7, h = 7;
+        unsigned char *g = (unsigned char *)path;
+        CHECK(png_read_gray(path, &w, &h, &g, &err) == cases[k].want);
+        CHECK_STR_CONTAINS(err.msg, path);
+        CHECK_STR_CONTAINS(err.msg, cases[k].says);
+        CHECK(g == NULL && w == 0 && h == 0);
+        printf("%ux%u: %s\n", cases[k].w, cases[k].h, err.msg);
+    }
+    CHECK(hearth_bytes_allocated() == bytes0);
+    rm_dir(dir);
+}
+
+/* A good file damaged every way a download or a disk does it: cut at every
+ * length, one byte changed at every offset (CRC left stale, or recomputed so
+ * the damage reaches the decoder). Each read either succeeds with the right
+ * size or fails with a message naming the file; nothing leaks. */
+TEST(png_read_damaged) {
+    char dir[64], path[160];
+    make_dir(dir, sizeof dir);
+    snprintf(path, sizeof path, "%s/good.png", dir);
+    CHECK(write_png_flavour(path, &png_flavours[3], 9, 7, left_half_dark, NULL) == 0); /* gray8 */
+    size_t n = 0;
+    unsigned char *good = slurp(path, &n);
+    CHECK(good != NULL && n > 60);
+    if (!good) return;
+    unsigned char *buf = malloc(n);
+    CHECK(buf != NULL);
+    if (!buf) return;
+    size_t bytes0 = hearth_bytes_allocated();
+    int refused = 0, read_ok = 0;
+    for (int pass = 0; pass < 3; pass++)
+        for (size_t at = 0; at < n; at++) {
+            size_t len = n;
+            memcpy(buf, good, n);
+            if (pass == 0) {
+                len = at; /* cut */
+            } else {
+                buf[at] ^= (unsigned char)(0x5A + at);
+                if (pass == 2 && at >= 8) { /* recompute the CRC of the chunk holding at */
+                    size_t c = 8;
+                    while (c + 12 <= n) {
+                        uint32_t cl = (uint32_t)good[c] << 24 | (uint32_t)good[c + 1] << 16 |
+                                      (uint32_t)good[c + 2] << 8 | good[c + 3];
+                        if (at >= c + 4 && at < c + 8 + cl) {
+                            pf_be32(buf + c + 8 + cl, pf_crc32(buf + c + 4, cl + 4));
+                            break;
+                        }
+                        c += 12 + cl;
+                    }
+                }
+            }
+            spit(path, buf, len);
+            hearth_error err = {0};
+            int w = 0, h = 0;
+            unsigned char *g = NULL;
+            if (png_read_gray(path, &w, &h, &g, &err) == HEARTH_OK) {
+                read_ok++;
+                CHECK(g != NULL && w >= 1 && h >= 1 && (size_t)w * (size_t)h <= PNG_PIXELS_MAX);
+                mem_free(g, (size_t)w * (size_t)h);
+            } else {
+                refused++;
+                CHECK(err.code != HEARTH_OK);
+                CHECK_STR_CONTAINS(err.msg, path);
+                CHECK(g == NULL);
+            }
+        }
+    printf("png_read_damaged: %zu-byte file, %d damaged copies refused, %d read\n", n, refused, read_ok);
+    CHECK(refused >= (int)n); /* every cut is refused, and more */
+    CHECK(hearth_bytes_allocated() == bytes0);
+    free(buf);
+    free(good);
+    rm_dir(dir);
+}
+
 /* ---- colour maps ----------------------------------------------------- */
 
 static void check_rgb(int map, double t, int r, int g, int b) {
@@ -385,5 +526,6 @@ TEST(font_renders_digits) {
     img_free(&im);
 }
 
-TEST_MAIN(T(png_roundtrip), T(png_atomic_on_failure), T(png_read_errors), T(colormap_endpoints),
+TEST_MAIN(T(png_roundtrip), T(png_atomic_on_failure), T(png_read_errors), T(png_read_flavours),
+          T(png_read_size_limits), T(png_read_damaged), T(colormap_endpoints),
           T(font_renders_digits))

@@ -13,6 +13,7 @@
 #include "alloc.h"
 #include "hearth/hearth.h"
 #include "io_png.h"
+#include "png_fixture.h"
 #include "shapes.h"
 #include "test.h"
 
@@ -88,9 +89,10 @@ static double rnd(double a, double b) {
 
 /* The field sample at pixel (i, r) computed by brute force: the nearest
  * opposite pixel centre (the virtual outside ring one pixel beyond the image
- * included for inside pixels), minus the inscribed-ellipse half pixel. Ties
- * between sites at the same distance may give different half pixels, so
- * returns the interval [lo, hi] of valid magnitudes. */
+ * included for inside pixels), minus the inscribed-ellipse half pixel, and a
+ * depth no more than the distance to the image's edge. Ties between sites at
+ * the same distance may give different half pixels, so returns the interval
+ * [lo, hi] of valid magnitudes. */
 static void brute_sample(int w, int h, int (*inside)(int, int, void *), int i, int r, double sx, double sy,
                          double *lo, double *hi) {
     int in = inside(i, r, NULL);
@@ -112,9 +114,10 @@ static void brute_sample(int w, int h, int (*inside)(int, int, void *), int i, i
                     *hi = fmax(*hi, v);
                 }
             }
-    if (in) {
-        double t = *lo;
-        *lo = -*hi;
+    if (in) { /* a depth is at most the distance to the image's edge (shape_mask.c) */
+        double edge = fmin(fmin(i + 0.5, w - i - 0.5) * sx, fmin(r + 0.5, h - r - 0.5) * sy);
+        double t = fmin(*lo, edge);
+        *lo = -fmin(*hi, edge);
         *hi = -t;
     }
 }
@@ -489,4 +492,201 @@ TEST(mask_serialise) {
     CHECK(hearth_bytes_allocated() == base);
 }
 
-TEST_MAIN(T(mask_sdf_disc), T(mask_assets_load), T(mask_extrude), T(mask_errors), T(mask_serialise))
+/* ---- every PNG flavour, damaged files, the smallest masks ------------------ */
+
+static int disc_xy(int x, int y, void *ud) {
+    (void)ud;
+    double dx = x + 0.5 - 20, dy = y + 0.5 - 15;
+    return dx * dx + dy * dy < 9.0 * 9.0;
+}
+
+/* A disc drawn in every colour type and depth whose dark and light greys
+ * fall either side of 50% gives the very same field as 8-bit grey. */
+TEST(mask_png_flavours) {
+    size_t base = hearth_bytes_allocated();
+    char ref_path[128], path[128];
+    const double lo[2] = {0, 0}, hi[2] = {0.4, 0.3};
+    tmp_path(ref_path, sizeof ref_path, "ref.png");
+    write_mask(ref_path, 40, 30, disc_xy, NULL);
+    hearth_error err = {0};
+    hearth_shape *ref = hearth_shape_mask(ref_path, lo, hi, &err);
+    CHECK(ref != NULL);
+    if (!ref) return;
+    int tried = 0;
+    for (int k = 0; k < PNG_FLAVOURS; k++) {
+        const png_flavour *f = &png_flavours[k];
+        if (!(f->want_dark < 128 && f->want_light >= 128)) continue; /* not a two-sided mask */
+        tried++;
+        tmp_path(path, sizeof path, f->name);
+        CHECK(write_png_flavour(path, f, 40, 30, disc_xy, NULL) == 0);
+        err = (hearth_error){0};
+        hearth_shape *m = hearth_shape_mask(path, lo, hi, &err);
+        if (!m) fprintf(stderr, "%s: %s\n", f->name, err.msg);
+        CHECK(m != NULL);
+        if (!m) continue;
+        int differ = 0;
+        for (int j = 0; j <= 30; j++)
+            for (int i = 0; i <= 40; i++) {
+                double x = -0.05 + 0.5 * i / 40, y = -0.05 + 0.4 * j / 30;
+                differ += sdf_at(m, x, y, 0) != sdf_at(ref, x, y, 0);
+            }
+        if (differ) fprintf(stderr, "%s: %d samples differ from 8-bit grey\n", f->name, differ);
+        CHECK(differ == 0);
+        hearth_shape_free(m);
+        unlink(path);
+    }
+    printf("mask_png_flavours: %d flavours match 8-bit grey\n", tried);
+    CHECK(tried >= 12);
+    hearth_shape_free(ref);
+    unlink(ref_path);
+    CHECK(hearth_bytes_allocated() == base);
+}
+
+/* A mask file cut short or with a byte changed: refused naming the file, or
+ * (a change the format cannot see) read; never a crash, never a leak. */
+TEST(mask_damaged_files) {
+    char path[128];
+    tmp_path(path, sizeof path, "damaged.png");
+    write_mask(path, 40, 30, disc_xy, NULL);
+    FILE *f = fopen(path, "rb");
+    CHECK(f != NULL);
+    if (!f) return;
+    unsigned char good[4096];
+    size_t n = fread(good, 1, sizeof good, f);
+    fclose(f);
+    CHECK(n > 60 && n < sizeof good);
+    const double lo[2] = {0, 0}, hi[2] = {1, 1};
+    size_t base = hearth_bytes_allocated();
+    int refused = 0, loaded = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (size_t at = 0; at < n; at += pass ? 1 : 3) {
+            unsigned char buf[4096];
+            memcpy(buf, good, n);
+            size_t len = pass ? n : at;
+            if (pass) buf[at] ^= 0xA5;
+            f = fopen(path, "wb");
+            CHECK(f && fwrite(buf, 1, len, f) == len);
+            if (f) fclose(f);
+            hearth_error err = {0};
+            hearth_shape *m = hearth_shape_mask(path, lo, hi, &err);
+            if (m) {
+                loaded++;
+                hearth_shape_free(m);
+            } else {
+                refused++;
+                CHECK(err.code != HEARTH_OK);
+                CHECK_STR_CONTAINS(err.msg, path);
+            }
+        }
+    printf("mask_damaged_files: %d refused, %d loaded\n", refused, loaded);
+    CHECK(refused > (int)n / 3);
+    CHECK(hearth_bytes_allocated() == base);
+    unlink(path);
+}
+
+static int one_px(int i, int r, void *ud) {
+    (void)ud;
+    return i == 0 && r == 0;
+}
+
+static int middle_of_line(int i, int r, void *ud) {
+    (void)ud;
+    return i + r >= 10 && i + r < 30; /* one of i, r is always 0 */
+}
+
+/* The smallest masks: one pixel, one row, one column. Inside is negative,
+ * the image's outside positive, all finite. */
+TEST(mask_tiny_images) {
+    size_t base = hearth_bytes_allocated();
+    static const struct {
+        int w, h;
+        int (*inside)(int, int, void *);
+        double in[2]; /* a point inside, in the unit square */
+    } cases[] = {{1, 1, one_px, {0.5, 0.5}}, {40, 1, middle_of_line, {0.5, 0.5}}, {1, 40, middle_of_line, {0.5, 0.5}}};
+    char path[128];
+    tmp_path(path, sizeof path, "tiny.png");
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        write_mask(path, cases[k].w, cases[k].h, cases[k].inside, NULL);
+        hearth_error err = {0};
+        hearth_shape *m = hearth_shape_mask(path, (const double[]){0, 0}, (const double[]){1, 1}, &err);
+        CHECK(m != NULL);
+        if (!m) continue;
+        double in = sdf_at(m, cases[k].in[0], cases[k].in[1], 0);
+        CHECK(isfinite(in) && in < 0);
+        CHECK(sdf_at(m, -0.5, 0.5, 0) > 0 && sdf_at(m, 0.5, 1.5, 0) > 0);
+        for (int j = 0; j <= 10; j++)
+            for (int i = 0; i <= 10; i++) CHECK(isfinite(sdf_at(m, i / 10.0, j / 10.0, 0)));
+        hearth_shape_free(m);
+    }
+    unlink(path);
+    CHECK(hearth_bytes_allocated() == base);
+}
+
+/* Sizes refused from the header, before any pixel is decoded: zero (libpng's
+ * words, with the file) and past 4096 a side (the mask limit, named). */
+TEST(mask_header_sizes) {
+    size_t base = hearth_bytes_allocated();
+    static const struct {
+        uint32_t w, h;
+        hearth_status want;
+        const char *says;
+    } cases[] = {
+        {0, 5, HEARTH_ERR_FORMAT, "width is zero"},
+        {5, 0, HEARTH_ERR_FORMAT, "height is zero"},
+        {4097, 1, HEARTH_ERR_PARAM, "is 4097x1 pixels; the largest mask is 4096x4096"},
+        {1, 5000, HEARTH_ERR_PARAM, "the largest mask is 4096x4096"},
+        {0x7FFFFFFFu, 0x7FFFFFFFu, HEARTH_ERR_PARAM, "the largest mask is 4096x4096"},
+    };
+    char path[128];
+    tmp_path(path, sizeof path, "header.png");
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        CHECK(write_png_header_only(path, cases[k].w, cases[k].h) == 0);
+        hearth_error err = {0};
+        CHECK(!hearth_shape_mask(path, (const double[]){0, 0}, (const double[]){1, 1}, &err));
+        CHECK(err.code == cases[k].want);
+        CHECK_STR_CONTAINS(err.msg, path);
+        CHECK_STR_CONTAINS(err.msg, cases[k].says);
+        printf("%s\n", err.msg);
+    }
+    unlink(path);
+    CHECK(hearth_bytes_allocated() == base);
+}
+
+/* Non-square pixels: the solid stays inside the image rectangle. A 16 x 1
+ * mask over 2 x 1 m (pixels 0.125 x 1 m), all dark but the first pixel, was
+ * 0.44 m deep at its top edge before depths were bounded by the distance to
+ * the edge (found by fuzz_png_mask). */
+static int all_but_first(int i, int r, void *ud) {
+    (void)r, (void)ud;
+    return i > 0;
+}
+
+TEST(mask_anisotropic_inside_rect) {
+    char path[128];
+    tmp_path(path, sizeof path, "aniso.png");
+    const double lo[2] = {-0.5, 0}, hi[2] = {1.5, 1};
+    int bad = 0, n = 0;
+    for (int shape = 0; shape < 2; shape++) {
+        int w = shape ? 1 : 16, h = shape ? 16 : 1; /* wide pixels, then tall ones */
+        write_mask(path, w, h, shape ? all_black : all_but_first, NULL);
+        hearth_error err = {0};
+        hearth_shape *m = hearth_shape_mask(path, lo, hi, &err);
+        CHECK(m != NULL);
+        if (!m) continue;
+        for (int k = 0; k <= 64; k++) {
+            double t = k / 64.0, x = lo[0] + (hi[0] - lo[0]) * t, y = lo[1] + (hi[1] - lo[1]) * t;
+            const double out[4][2] = {{x, hi[1] + 0.01}, {x, lo[1] - 0.01}, {lo[0] - 0.01, y}, {hi[0] + 0.01, y}};
+            for (int q = 0; q < 4; q++, n++) bad += !(sdf_at(m, out[q][0], out[q][1], 0) > 0);
+            double edge = sdf_at(m, x, hi[1], 0); /* on the rectangle: never inside */
+            bad += !(edge >= -1e-12);
+        }
+        hearth_shape_free(m);
+    }
+    unlink(path);
+    printf("mask_anisotropic_inside_rect: %d of %d points outside the rectangle read as inside\n", bad, n);
+    CHECK(bad == 0);
+}
+
+TEST_MAIN(T(mask_sdf_disc), T(mask_assets_load), T(mask_extrude), T(mask_errors), T(mask_serialise),
+          T(mask_png_flavours), T(mask_damaged_files), T(mask_tiny_images), T(mask_header_sizes),
+          T(mask_anisotropic_inside_rect))

@@ -486,6 +486,160 @@ TEST(fit_bad_csv) {
     CHECK_STR_CONTAINS(err.msg, "/nonexistent/flow.csv");
 }
 
+/* ---- hostile flow-curve and library files ----------------------------------- */
+
+/* Write n bytes (NULs allowed) to a temporary file; path gets its name. */
+static int write_bytes(char *path, size_t pn, const char *name, const void *data, size_t n) {
+    tmp_path(path, pn, name);
+    FILE *f = fopen(path, "wb");
+    if (!f) return 0;
+    size_t w = n ? fwrite(data, 1, n, f) : 0;
+    return fclose(f) == 0 && w == n;
+}
+
+/* Read bytes as a flow curve: it must be refused with a message naming the
+ * file and containing want1 and want2, and leave c empty. */
+static void refused_bytes(const void *data, size_t n, const char *want1, const char *want2) {
+    char path[4096];
+    CHECK(write_bytes(path, sizeof path, "hostile.csv", data, n));
+    size_t base = hearth_bytes_allocated();
+    rheo_curve c;
+    hearth_error err = {0};
+    hearth_status st = rheo_curve_read(path, &c, &err);
+    unlink(path);
+    CHECK(st == HEARTH_ERR_FORMAT);
+    if (st == HEARTH_OK) rheo_curve_free(&c);
+    CHECK(c.n == 0 && !c.rate && !c.stress);
+    CHECK(hearth_bytes_allocated() == base);
+    printf("  %s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, path);
+    CHECK_STR_CONTAINS(err.msg, want1);
+    CHECK_STR_CONTAINS(err.msg, want2);
+}
+
+static void refused(const char *text, const char *want1, const char *want2) {
+    refused_bytes(text, strlen(text), want1, want2);
+}
+
+/* Nothing to fit: an empty file, only comments, a header alone, one or two rows. */
+TEST(fit_csv_empty_and_short) {
+    refused("", "empty file", "expected a header row");
+    refused("# only a comment\n\n   \n", "empty file", "'shear_rate' and 'stress'");
+    refused("shear_rate,stress\n", "only 0 data rows", "at least 3");
+    refused("shear_rate,stress\n1,2\n", "only 1 data row after the header (line 1)", "at least 3");
+    refused("# units: 1/s, Pa\nshear_rate,stress\n1,2\n3,4\n", "only 2 data rows after the header (line 2)", "at least 3");
+    refused("1,2\n3,4\n5,6\n", "line 1 (header row)", "both are missing");
+}
+
+/* Cells that are not finite positive numbers, each named with its line, its
+ * data row and its column. */
+TEST(fit_csv_bad_numbers) {
+    static const struct {
+        const char *cell, *says;
+    } cases[] = {
+        {"nan", "stress 'nan' is not a finite number"},   {"NaN", "stress 'NaN' is not a finite number"},
+        {"inf", "stress 'inf' is not a finite number"},   {"-inf", "stress '-inf' is not a finite number"},
+        {"1e400", "stress '1e400' is not a finite number"}, {"high", "stress 'high' is not a finite number"},
+        {"12 Pa", "stress '12 Pa' is not a finite number"}, {"", "stress '' is not a finite number"},
+        {"0", "stress 0 must be > 0"},                    {"-3", "stress -3 must be > 0"},
+        {"1e-400", "stress 0 must be > 0"}, /* underflows to zero */
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char text[256];
+        snprintf(text, sizeof text, "shear_rate,stress\n1,10\n2,11\n3,%s\n4,13\n", cases[k].cell);
+        refused(text, "line 4 (data row 3)", cases[k].says);
+    }
+    refused("stress,shear_rate\n10,fast\n", "line 2 (data row 1)", "shear_rate 'fast' is not a finite number");
+}
+
+/* Lines of any length cost no memory: one longer than 4095 characters is
+ * refused with its number; one of exactly 4095 reads. */
+TEST(fit_csv_long_lines) {
+    enum { BIG = 1 << 20 };
+    char *text = malloc(BIG + 256);
+    CHECK(text != NULL);
+    if (!text) return;
+    /* a 1 MB line with no newline at all, after the header */
+    int n = snprintf(text, 256, "shear_rate,stress\n");
+    memset(text + n, '7', BIG);
+    text[n + BIG] = '\0';
+    refused(text, "line 2 is longer than 4095 characters", "");
+    /* 4096 characters on line 3 */
+    n = snprintf(text, 256, "shear_rate,stress\n1,2\n");
+    memset(text + n, '0', 4094);
+    strcpy(text + n + 4094, "1,5\n3,4\n5,6\n");
+    refused(text, "line 3 is longer than 4095", "");
+    /* exactly 4095: leading zeros make it the number 1 */
+    n = snprintf(text, 256, "shear_rate,stress\n1,2\n");
+    memset(text + n, '0', 4092);
+    strcpy(text + n + 4092, "1,5\n3,4\n5,6\n");
+    char path[4096];
+    CHECK(write_bytes(path, sizeof path, "long_ok.csv", text, strlen(text)));
+    rheo_curve c;
+    hearth_error err = {0};
+    CHECK(rheo_curve_read(path, &c, &err) == HEARTH_OK);
+    unlink(path);
+    CHECK(c.n == 4 && c.rate[1] == 1 && c.stress[1] == 5);
+    if (c.n) rheo_curve_free(&c);
+    free(text);
+}
+
+/* A NUL byte means a binary file or UTF-16: refused, not read as a shorter line. */
+TEST(fit_csv_nul_bytes) {
+    static const char nul_in_row[] = "shear_rate,stress\n1,2\n3,4\0junk\n5,6\n";
+    refused_bytes(nul_in_row, sizeof nul_in_row - 1, "line 3 holds a NUL byte", "not a text CSV");
+    /* "shear_rate,stress\n" saved as UTF-16LE with its byte order mark */
+    static const char head[] = "shear_rate,stress\n";
+    unsigned char u16[2 + 2 * sizeof head];
+    u16[0] = 0xFF, u16[1] = 0xFE;
+    for (size_t i = 0; i + 1 < sizeof head; i++) u16[2 + 2 * i] = (unsigned char)head[i], u16[3 + 2 * i] = 0;
+    refused_bytes(u16, 2 + 2 * (sizeof head - 1), "line 1 holds a NUL byte", "UTF-16");
+}
+
+/* A runaway file: more than a million data rows is refused at the row past
+ * the cap, whatever the file's size. */
+TEST(fit_csv_too_many_rows) {
+    enum { ROWS = 1000001 };
+    size_t cap = 32 + (size_t)ROWS * 4;
+    char *text = malloc(cap);
+    CHECK(text != NULL);
+    if (!text) return;
+    size_t n = (size_t)snprintf(text, cap, "shear_rate,stress\n");
+    for (int i = 0; i < ROWS; i++) memcpy(text + n, "1,1\n", 4), n += 4;
+    refused_bytes(text, n, "line 1000002: more than 1000000 data rows", "");
+    free(text);
+}
+
+/* The sauce library (hearth rheometer --library FILE) shares the line reader. */
+TEST(sauce_library_hostile) {
+    static const char head[] = "name,label,temperature_C,h,eta,sigma_y,geometry\n";
+    char path[4096];
+    sauce_library lib;
+    hearth_error err = {0};
+    static const char nul[] = "name,label,temperature_C,h,eta,sigma_y,geometry\nx,X,20,1,1,0,cone\0\n";
+    CHECK(write_bytes(path, sizeof path, "lib.csv", nul, sizeof nul - 1));
+    CHECK(sauce_library_load(path, &lib, &err) == HEARTH_ERR_FORMAT);
+    CHECK_STR_CONTAINS(err.msg, "line 2 holds a NUL byte");
+    size_t cap = 64 + 10001 * 40 + 8192;
+    char *text = malloc(cap);
+    CHECK(text != NULL);
+    if (!text) return;
+    size_t n = (size_t)snprintf(text, cap, "%s", head);
+    memset(text + n, 'a', 5000);
+    strcpy(text + n + 5000, ",A,20,1,1,0,cone\n");
+    CHECK(write_bytes(path, sizeof path, "lib.csv", text, strlen(text)));
+    CHECK(sauce_library_load(path, &lib, &err) == HEARTH_ERR_FORMAT);
+    CHECK_STR_CONTAINS(err.msg, "line 2 is longer than 4095 characters");
+    n = (size_t)snprintf(text, cap, "%s", head);
+    for (int i = 0; i < 10001; i++) n += (size_t)snprintf(text + n, cap - n, "s%d,S,20,1,1,0,cone\n", i);
+    CHECK(write_bytes(path, sizeof path, "lib.csv", text, n));
+    CHECK(sauce_library_load(path, &lib, &err) == HEARTH_ERR_FORMAT);
+    CHECK_STR_CONTAINS(err.msg, "line 10002: more than 10000 sauces");
+    CHECK_STR_CONTAINS(err.msg, path);
+    unlink(path);
+    free(text);
+}
+
 /* ---- extremes --------------------------------------------------------------- */
 
 /* h 0.2..1, eta 1e-3..1e4, sigma_y 0..1e4, dt adaptive and 100x the CFL step of
@@ -624,5 +778,6 @@ TEST(sauce_mpm_shear_cell) {
 
 TEST_MAIN(T(sauce_rheometer_library), T(sauce_maxwell_startup), T(sauce_limits), T(blend_zero_law),
           T(blend_identity_law), T(blend_commutative), T(blend_associative), T(blend_fig4a_claim), T(fit_roundtrip),
-          T(fit_bad_csv), T(sauce_extremes), T(sauce_mpm_shear_cell),
+          T(fit_bad_csv), T(fit_csv_empty_and_short), T(fit_csv_bad_numbers), T(fit_csv_long_lines),
+          T(fit_csv_nul_bytes), T(fit_csv_too_many_rows), T(sauce_library_hostile), T(sauce_extremes), T(sauce_mpm_shear_cell),
           T(labels_hook))

@@ -33,10 +33,15 @@
 typedef struct pngio {
     FILE *fp;
     char why[256];
+    char warning[112]; /* libpng's last warning */
     int io_failed; /* the OS refused a read or write (errno in why) */
     int oom;       /* an allocation failed */
     int truncated; /* the file ended early */
+    int too_large; /* the header asks for more than PNG_DIM_MAX / PNG_PIXELS_MAX */
 } pngio;
+
+/* No chunk a mask needs (IHDR, PLTE, tRNS, IDAT pieces) is near this. */
+#define PNG_CHUNK_MAX ((png_alloc_size_t)8 << 20)
 
 /* ---- libpng hooks ---------------------------------------------------- */
 
@@ -66,17 +71,23 @@ static void hook_free(png_structp p, png_voidp ptr) {
     mem_free(b, sz + HOOK_HDR);
 }
 
+/* libpng often says what was wrong in a warning just before a vaguer error
+ * ("Image width is zero in IHDR", then "Invalid IHDR data"), so the last
+ * warning goes into the message beside the error. */
 static void on_error(png_structp p, png_const_charp msg) {
     pngio *io = png_get_error_ptr(p);
-    if (!io->why[0]) snprintf(io->why, sizeof io->why, "%s", msg);
+    if (!io->why[0]) {
+        if (io->warning[0]) snprintf(io->why, sizeof io->why, "%s (%s)", msg, io->warning);
+        else snprintf(io->why, sizeof io->why, "%s", msg);
+    }
     png_longjmp(p, 1);
 }
 
 /* Warnings (unknown chunks, a bad sRGB profile) never stop a read or write,
- * and the library does not print (hearth.h), so they are dropped. */
+ * and the library does not print (hearth.h): kept only for on_error. */
 static void on_warning(png_structp p, png_const_charp msg) {
-    (void)p;
-    (void)msg;
+    pngio *io = png_get_error_ptr(p);
+    snprintf(io->warning, sizeof io->warning, "%s", msg);
 }
 
 static void on_write(png_structp p, png_bytep data, size_t n) {
@@ -236,10 +247,29 @@ static int decode(pngio *io, decoded *d) {
 
     png_set_read_fn(d->p, io, on_read);
     png_set_sig_bytes(d->p, 8);
-    /* A mask larger than this is a mistake, and refusing it in IHDR keeps a
-     * hostile header from asking for gigabytes. */
-    png_set_user_limits(d->p, PNG_DIM_MAX, PNG_DIM_MAX);
+    /* The size limits are checked below, after IHDR and before any image
+     * memory, so the message can give them; libpng's own check ("exceeds
+     * user limit") cannot. Its limits stay as a backstop at 2^31 - 1. */
+    png_set_user_limits(d->p, PNG_UINT_31_MAX, PNG_UINT_31_MAX);
+    /* Ancillary chunks that carry compressed or unbounded data (text, ICC
+     * profiles, suggested palettes) mean nothing to a mask: skip them unread
+     * rather than inflate them, and cap what any one chunk may allocate. */
+    static const png_byte skip[] = {'i', 'C', 'C', 'P', '\0', 'z', 'T', 'X', 't', '\0', 'i', 'T', 'X', 't', '\0',
+                                    't', 'E', 'X', 't', '\0', 's', 'P', 'L', 'T', '\0', 'e', 'X', 'I', 'f', '\0'};
+    png_set_keep_unknown_chunks(d->p, PNG_HANDLE_CHUNK_NEVER, skip, (int)(sizeof skip / 5));
+    png_set_keep_unknown_chunks(d->p, PNG_HANDLE_CHUNK_NEVER, NULL, 0); /* and every unknown chunk */
+    png_set_chunk_malloc_max(d->p, PNG_CHUNK_MAX);
     png_read_info(d->p, d->info);
+    {
+        png_uint_32 iw = png_get_image_width(d->p, d->info), ih = png_get_image_height(d->p, d->info);
+        if (iw > PNG_DIM_MAX || ih > PNG_DIM_MAX || (uint64_t)iw * ih > PNG_PIXELS_MAX) {
+            io->too_large = 1;
+            snprintf(io->why, sizeof io->why,
+                     "the image is %lux%lu pixels; the largest PNG read is %dx%d pixels and %d megapixels in all",
+                     (unsigned long)iw, (unsigned long)ih, PNG_DIM_MAX, PNG_DIM_MAX, (int)(PNG_PIXELS_MAX >> 20));
+            png_error(d->p, "image too large");
+        }
+    }
 
     /* Normalise every flavour to 8-bit RGBA, then one loop computes luminance.
      * Rejected: png_set_rgb_to_gray, whose weights and gamma handling differ
@@ -310,6 +340,8 @@ hearth_status png_read_gray(const char *path, int *w, int *h, unsigned char **pi
     if (decode(&io, &d) != 0) {
         if (io.io_failed)
             st = err_set(err, HEARTH_ERR_IO, "cannot read PNG '%s': %s", path, io.why);
+        else if (io.too_large)
+            st = err_set(err, HEARTH_ERR_PARAM, "cannot read PNG '%s': %s", path, io.why);
         else if (io.oom)
             st = err_set(err, HEARTH_ERR_NOMEM, "cannot read PNG '%s': out of memory", path);
         else

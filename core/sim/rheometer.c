@@ -7,6 +7,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -241,6 +242,9 @@ void rheo_curve_free(rheo_curve *c) {
 
 #define CSV_MAX_CELLS 64
 #define CSV_LINE 4096
+/* A rheometer gives tens of points; the cap keeps the doubling of cap and
+ * the byte counts far from int overflow, and a runaway file from memory. */
+#define CURVE_MAX_ROWS 1000000
 
 hearth_status rheo_curve_read(const char *path, rheo_curve *c, hearth_error *err) {
     err_clear(err);
@@ -252,13 +256,25 @@ hearth_status rheo_curve_read(const char *path, rheo_curve *c, hearth_error *err
     int lineno = 0, col_rate = -1, col_stress = -1, header_line = 0, rows = 0, cap = 0;
     hearth_status st = HEARTH_OK;
     double *xy = NULL; /* rate, stress pairs */
-    while (fgets(line, sizeof line, f)) {
-        lineno++;
-        size_t len = strlen(line);
-        if (len == sizeof line - 1 && line[len - 1] != '\n' && !feof(f)) {
-            st = err_set(err, HEARTH_ERR_FORMAT, "%s: line %d is longer than %d characters", path, lineno, CSV_LINE - 2);
+    for (;;) {
+        csv_line got = csv_read_line(f, line, sizeof line);
+        if (got == CSV_LINE_EOF || got == CSV_LINE_IO) break; /* IO: ferror below names it */
+        if (lineno == INT_MAX) { /* lineno++ must not overflow: only a file of >2^31 blank lines gets here */
+            st = err_set(err, HEARTH_ERR_FORMAT, "%s: more than %d lines", path, INT_MAX);
             break;
         }
+        lineno++;
+        if (got == CSV_LINE_TOO_LONG) {
+            st = err_set(err, HEARTH_ERR_FORMAT, "%s: line %d is longer than %d characters", path, lineno, CSV_LINE - 1);
+            break;
+        }
+        if (got == CSV_LINE_NUL) {
+            st = err_set(err, HEARTH_ERR_FORMAT,
+                         "%s: line %d holds a NUL byte: this is not a text CSV file (saved as UTF-16? save it as UTF-8)",
+                         path, lineno);
+            break;
+        }
+        size_t len = strlen(line);
         if (lineno == 1 && len >= 3 && (unsigned char)line[0] == 0xEF && (unsigned char)line[1] == 0xBB &&
             (unsigned char)line[2] == 0xBF)
             memmove(line, line + 3, len - 2); /* UTF-8 byte order mark */
@@ -306,6 +322,12 @@ hearth_status rheo_curve_read(const char *path, rheo_curve *c, hearth_error *err
                              path, lineno, row, names[k], v[k]);
         }
         if (st) break;
+        if (rows == CURVE_MAX_ROWS) {
+            st = err_set(err, HEARTH_ERR_FORMAT,
+                         "%s: line %d: more than %d data rows; a measured flow curve has tens (thin the data first)", path,
+                         lineno, CURVE_MAX_ROWS);
+            break;
+        }
         if (rows == cap) {
             int ncap = cap ? 2 * cap : 64;
             double *nxy = mem_realloc(xy, sizeof(double) * 2 * (size_t)cap, sizeof(double) * 2 * (size_t)ncap);

@@ -117,8 +117,9 @@ typedef struct rheo_curve {
 /// (any order, other columns ignored; blank lines and lines starting with '#'
 /// skipped). Every data row needs both cells as finite numbers, shear_rate > 0
 /// and stress > 0 (the fit's residuals are relative and the plot is log-log);
-/// at least 3 rows. Errors (HEARTH_ERR_IO, HEARTH_ERR_FORMAT) name the file,
-/// the line and the data row.
+/// at least 3 rows, at most 1,000,000; lines of at most 4095 characters and
+/// no NUL bytes (a UTF-16 file is refused as such). Errors (HEARTH_ERR_IO,
+/// HEARTH_ERR_FORMAT) name the file, the line and the data row.
 hearth_status rheo_curve_read(const char *path, rheo_curve *c, hearth_error *err);
 void rheo_curve_free(rheo_curve *c);
 

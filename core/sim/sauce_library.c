@@ -5,6 +5,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,6 +20,9 @@ static const char *const col_names[C_COUNT] = {"name", "label", "temperature_C",
 
 #define LIB_LINE 4096
 #define LIB_CELLS 64
+/* Table 1 has tens of sauces; the duplicate-name check is quadratic, so a
+ * runaway file is refused before it costs minutes. */
+#define LIB_MAX_SAUCES 10000
 
 
 
@@ -46,11 +50,22 @@ hearth_status sauce_library_load(const char *path, sauce_library *lib, hearth_er
     for (int k = 0; k < C_COUNT; k++) col[k] = -1;
     sauce *items = NULL;
     hearth_status st = HEARTH_OK;
-    while (!st && fgets(line, sizeof line, f)) {
+    while (!st) {
+        csv_line got = csv_read_line(f, line, sizeof line);
+        if (got == CSV_LINE_EOF || got == CSV_LINE_IO) break;
+        if (lineno == INT_MAX) {
+            st = err_set(err, HEARTH_ERR_FORMAT, "%s: more than %d lines", path, INT_MAX);
+            break;
+        }
         lineno++;
-        size_t len = strlen(line);
-        if (len == sizeof line - 1 && line[len - 1] != '\n' && !feof(f)) {
-            st = err_set(err, HEARTH_ERR_FORMAT, "%s: line %d is too long", path, lineno);
+        if (got == CSV_LINE_TOO_LONG) {
+            st = err_set(err, HEARTH_ERR_FORMAT, "%s: line %d is longer than %d characters", path, lineno,
+                         (int)sizeof line - 1);
+            break;
+        }
+        if (got == CSV_LINE_NUL) {
+            st = err_set(err, HEARTH_ERR_FORMAT, "%s: line %d holds a NUL byte: this is not a text CSV file", path,
+                         lineno);
             break;
         }
         char *t = csv_trim(line);
@@ -113,6 +128,10 @@ hearth_status sauce_library_load(const char *path, sauce_library *lib, hearth_er
                 break;
             }
         if (st) break;
+        if (n == LIB_MAX_SAUCES) {
+            st = err_set(err, HEARTH_ERR_FORMAT, "%s: line %d: more than %d sauces", path, lineno, LIB_MAX_SAUCES);
+            break;
+        }
         if (n == cap) {
             int ncap = cap ? 2 * cap : 32;
             sauce *ni = mem_realloc(items, sizeof(sauce) * (size_t)cap, sizeof(sauce) * (size_t)ncap);

@@ -29,9 +29,10 @@
  * nearest (not only the squared distance) because delta depends on it.
  *
  * Outside the image the shape is empty. The transform for inside pixels sees
- * a ring of virtual outside pixels just beyond the image, so an inside pixel
- * on the border gets at most half a pixel of depth and the zero level set
- * closes at the image rectangle: the solid never leaves lo..hi.
+ * a ring of virtual outside pixels just beyond the image, and every depth is
+ * bounded by the distance to the image's edge, so an inside pixel on the
+ * border gets at most half a pixel of depth and the zero level set closes at
+ * the image rectangle: the solid never leaves lo..hi.
  */
 #include <float.h>
 #include <math.h>
@@ -145,6 +146,19 @@ static void edt_run(edt *t, int want, const double s[2], float *field) {
             double dj = (double)(j - (q == 0 || q == w + 1 ? j : row[q - 1]));
             double dist = hypot(s[0] * di, s[1] * dj);
             double val = dist * (1.0 - 0.5 / sqrt(di * di + dj * dj)); /* minus delta */
+            /* A depth is never more than the distance to the image's edge,
+             * which is what the virtual ring gives along each axis. The bound
+             * matters only for non-square pixels: there the Euclidean nearest
+             * site need not have the smallest distance minus delta (a site
+             * along the short side has the smaller delta), so a border pixel
+             * could get more than half a pixel of depth and the solid would
+             * cross the image rectangle. fuzz_png_mask found it: a 16x1 mask
+             * over 2 x 1 m was 0.44 m deep at its top edge (corpus file
+             * crash-aniso-16x1-leaks-above.png). Square pixels never reach it. */
+            if (!want) {
+                double ex = fmin(i + 0.5, w - i - 0.5) * s[0], ey = fmin(j + 0.5, h - j - 0.5) * s[1];
+                val = fmin(val, fmin(ex, ey));
+            }
             field[(size_t)j * (size_t)w + (size_t)i] = (float)(want ? val : -val);
         }
     }

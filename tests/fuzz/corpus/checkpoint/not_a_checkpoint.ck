@@ -1,0 +1,2 @@
+shear_rate,stress
+1,2

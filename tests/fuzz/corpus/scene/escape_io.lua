@@ -1,0 +1,1 @@
+io.open('../escape_io', 'w'):write('x')

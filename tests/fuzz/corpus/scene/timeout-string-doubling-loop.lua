@@ -1,0 +1,2 @@
+local s = string.rep('x', 1 << 20)
+while true do s0= s .. s end

@@ -1,0 +1,2 @@
+local h = require 'hearth'
+h.write('../escape_write', 'x')
