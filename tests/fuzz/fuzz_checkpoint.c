@@ -4,15 +4,11 @@
  * loads must be whole enough to step: a few steps of a small one run (a step
  * may fail with a message, never crash), bigger ones are only counted.
  *
- * TODO(issue 15, coordinator): another helper adds
- *   hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name, hearth_error *err);
- *   void ck_reseal(void *buf, size_t n);   (private: recompute the whole-file checksum)
- * After merging, build with -DFUZZ_CK_MEM (tests/fuzz/meson.build has the
- * line, commented out, and scripts/fuzz passes FUZZ_CFLAGS through) so inputs
- * skip the temporary file and, resealed, get past the checksum into the
- * parsing behind it. Without the reseal a whole-file checksum stops nearly
- * every mutation at the first check, and the fuzzer only tests that check.
- * If the names differ, only the FUZZ_CK_MEM branch below changes. */
+ * Each input is resealed first (ck_reseal recomputes the whole-file
+ * checksum), so mutations get past the checksum into the parsing behind it:
+ * without that, the checksum stops nearly every mutation at the first check
+ * and the fuzzer tests only that check (which checkpoint_every_byte_flip and
+ * checkpoint_bitflip_campaign in unit_checkpoint already cover). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,9 +16,7 @@
 #include "fuzz_util.h"
 #include "hearth/hearth.h"
 
-#ifdef FUZZ_CK_MEM
-void ck_reseal(void *buf, size_t n); /* private to core/sim/checkpoint.c */
-#endif
+#include "checkpoint.h" /* ck_reseal, private to core/sim */
 
 /* Stepping is where a checkpoint that loads but lies (a grid too small for
  * its particles, a NaN left in a column) shows; keep it cheap. */
@@ -30,7 +24,6 @@ void ck_reseal(void *buf, size_t n); /* private to core/sim/checkpoint.c */
 #define STEPS 2
 
 static hearth_scene *load(const uint8_t *data, size_t size, hearth_error *err) {
-#ifdef FUZZ_CK_MEM
     unsigned char *copy = malloc(size ? size : 1);
     if (!copy) return NULL;
     memcpy(copy, data, size);
@@ -38,11 +31,6 @@ static hearth_scene *load(const uint8_t *data, size_t size, hearth_error *err) {
     hearth_scene *s = hearth_scene_load_mem(copy, size, "fuzz.ck", err);
     free(copy);
     return s;
-#else
-    const char *path = fuzz_temp_file(data, size, ".ck");
-    if (!path) return NULL;
-    return hearth_scene_load(path, err);
-#endif
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {

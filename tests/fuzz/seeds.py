@@ -215,9 +215,9 @@ def csv_seeds():
 
 def scene_seeds():
     w = lambda name, text: write("scene", name, text.encode())
-    # Escapes the sandbox of this branch still lets out: kept in pending/ until
-    # the allow-list sandbox of issue 15 is merged, then moved into the corpus.
-    p = lambda name, text: write("../pending/scene", name, text.encode())
+    # Escapes the sandbox let out before issue 15's allow-list sandbox: kept as
+    # regressions (the sandbox must refuse them).
+    p = w
     w("tiny_drop.lua", """local h = require "hearth"
 local s = h.scene{dim = 2, box = {{0, 0}, {0.1, 0.1}}, dx = 0.01, seed = 1}
 local m = h.material("elastic", {E = 1e4, nu = 0.3, density = 1000})
