@@ -402,7 +402,23 @@ TEST(plugin_reserved_name) {
     plugin_desc_free(&d);
 }
 
+/* material.h lists the reserved names for plugin authors; the loader refuses
+ * the names of hearth_core_params. The two must be the same list, in order. */
+TEST(plugin_reserved_names_documented) {
+    static const char *const listed[] = {HEARTH_RESERVED_PARAM_NAMES};
+    const int nl = (int)(sizeof listed / sizeof listed[0]);
+    int n = 0;
+    const hearth_param *core = hearth_core_params(&n);
+    CHECK(nl == n);
+    for (int i = 0; i < n && i < nl; i++)
+        if (strcmp(listed[i], core[i].name) != 0) {
+            fprintf(stderr, "HEARTH_RESERVED_PARAM_NAMES[%d] is '%s', hearth_core_params has '%s'\n", i, listed[i], core[i].name);
+            CHECK(0);
+        }
+}
+
 TEST_MAIN(T(plugin_missing_file), T(plugin_not_shared_object), T(plugin_no_entry), T(plugin_wrong_abi),
           T(plugin_null_callback), T(plugin_bad_default), T(plugin_load_cached), T(plugin_check_builtin),
           T(plugin_check_catches_asym), T(plugin_check_reports_codes), T(plugin_load_nomem),
-          T(plugin_descriptor_rules), T(plugin_wave_corners), T(plugin_reserved_name))
+          T(plugin_descriptor_rules), T(plugin_wave_corners), T(plugin_reserved_name),
+          T(plugin_reserved_names_documented))
