@@ -102,7 +102,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "tensor.h"
+#include <hearth/tensor.h>
 
 enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_COUNT };
 
@@ -124,7 +124,8 @@ static const hearth_param params[P_COUNT] = {
                         1, 1e-3, 1},
 };
 
-enum { S_XX, S_YY, S_ZZ, S_XY, S_YZ, S_ZX, S_JP, S_COUNT };
+enum { S_XX = HEARTH_SYM_XX, S_YY = HEARTH_SYM_YY, S_ZZ = HEARTH_SYM_ZZ, S_XY = HEARTH_SYM_XY, S_YZ = HEARTH_SYM_YZ,
+       S_ZX = HEARTH_SYM_ZX, S_JP, S_COUNT };
 
 enum {
     E_INVERTED = 1, /* det F <= 0 or not finite */
@@ -136,40 +137,11 @@ enum {
 
 static const double SQRT2 = 1.41421356237309504880;
 
-static void lame(const double *p, double *mu, double *lambda) {
-    const double E = p[P_E], nu = p[P_NU];
-    *mu = E / (2 * (1 + nu));
-    *lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-}
-
 /* The porosity coefficient of eq. 12; 0 at n = 0 (von Mises). */
 static double porosity_coefficient(double n) {
     if (!(n > 0)) return 0;
     const double l = log(1 / n);
     return 9.0 / (4.0 * l * l * (3.5 * n + 1.0));
-}
-
-static void sym_to_full(const double *s, double B[9]) {
-    B[0] = s[S_XX], B[4] = s[S_YY], B[8] = s[S_ZZ];
-    B[1] = B[3] = s[S_XY];
-    B[5] = B[7] = s[S_YZ];
-    B[2] = B[6] = s[S_ZX];
-}
-
-static void full_to_sym(const double B[9], double *s) {
-    s[S_XX] = B[0], s[S_YY] = B[4], s[S_ZZ] = B[8];
-    s[S_XY] = 0.5 * (B[1] + B[3]);
-    s[S_YZ] = 0.5 * (B[5] + B[7]);
-    s[S_ZX] = 0.5 * (B[2] + B[6]);
-}
-
-/* Q diag(d) Q^T, written symmetric. */
-static void from_eigen(const double Q[9], const double d[3], double A[9]) {
-    for (int r = 0; r < 3; r++)
-        for (int c = r; c < 3; c++) {
-            const double v = Q[3 * r] * d[0] * Q[3 * c] + Q[3 * r + 1] * d[1] * Q[3 * c + 1] + Q[3 * r + 2] * d[2] * Q[3 * c + 2];
-            A[3 * r + c] = A[3 * c + r] = v;
-        }
 }
 
 /* The plane-strain case, which is every point of a 2D scene: b^E and the
@@ -221,13 +193,13 @@ static void from_eigen_plane(const double Q[9], const double d[3], double A[9]) 
 }
 
 /* Symmetric eigen-decomposition S = Q diag(l) Q^T by cyclic Jacobi, for
- * this plugin's hot path: hearth_tensor's t3_sym_eigen is the same method,
+ * this plugin's hot path: <hearth/tensor.h>'s hearth_t3_sym_eigen is the same method,
  * but sorts and takes the rotation's tangent through hypot, which made up
  * a third of a 3D dough step. Here the tangent uses sqrt (with a guard for
  * a huge zeta, where 1 + zeta^2 would overflow), nothing is sorted (the
  * return map does not need an order), and a 2D (plane-strain) b^E, whose
  * xz and yz entries are exactly 0, takes one rotation. Stops when the
- * off-diagonal part is below 1e-15 of the whole, as t3_sym_eigen does. */
+ * off-diagonal part is below 1e-15 of the whole, as hearth_t3_sym_eigen does. */
 static void sym_eigen(const double S[9], double l[3], double Q[9]) {
     double a[9];
     for (int i = 0; i < 3; i++)
@@ -299,7 +271,7 @@ static double solve_gamma(double Pm, double a, double qt, double b, double ty2, 
  * scale (eps = ev/3 I + ratio e, header); 0 inside the surface. */
 static int return_map(const double *prm, double M, double dt, double s2, double *ev, double *ratio) {
     double mu, lambda;
-    lame(prm, &mu, &lambda);
+    hearth_lame(prm[P_E], prm[P_NU], &mu, &lambda);
     const double K = lambda + 2.0 / 3.0 * mu;
     const double pt = -K * *ev; /* p = -tr(tau)/3 = -K tr(eps) */
     const double qt = 2 * mu * sqrt(1.5 * s2);
@@ -403,7 +375,7 @@ static void init(const double *p, double *state) {
  * (e the trial deviator as a matrix, the return's scale ratio). */
 static void hencky_tau(const double *prm, double ev, const double e[9], double ratio, double tau[9]) {
     double mu, lambda;
-    lame(prm, &mu, &lambda);
+    hearth_lame(prm[P_E], prm[P_NU], &mu, &lambda);
     for (int i = 0; i < 9; i++) tau[i] = 2 * mu * ratio * e[i];
     const double iso = lambda * ev + 2 * mu * ev / 3;
     tau[0] += iso, tau[4] += iso, tau[8] += iso;
@@ -433,9 +405,9 @@ static int stress_near(hearth_point *pt, double m, const double B[9], double J, 
             const double v = exp(2 * ev / 3);
             if (!isfinite(v) || !(v > 0)) return E_SOLVE;
             for (int i = 0; i < 9; i++) Bn[i] = v * E[i];
-            full_to_sym(Bn, st);
+            hearth_full_to_sym(Bn, st);
         } else {
-            full_to_sym(B, st);
+            hearth_full_to_sym(B, st);
         }
         st[S_JP] = J / exp(ev); /* J^P = J / J^E */
     }
@@ -445,7 +417,7 @@ static int stress_near(hearth_point *pt, double m, const double B[9], double J, 
 
 static int stress(hearth_point *pt, double tau[9]) {
     const double *prm = pt->p;
-    const double J = t3_det(pt->F);
+    const double J = hearth_t3_det(pt->F);
     if (!(J > 0) || !isfinite(J)) return E_INVERTED;
     double *st = pt->state;
     for (int i = 0; i < S_COUNT; i++)
@@ -453,7 +425,7 @@ static int stress(hearth_point *pt, double tau[9]) {
     const double n = pt->porosity;
     if (n < 0 || n >= 1) return E_POROSITY; /* NaN reads as 0: von Mises */
     double B[9];
-    sym_to_full(st, B);
+    hearth_sym_to_full(st, B);
     const int plane = is_plane(st, pt->grad_v, pt->dt);
     if (pt->dt > 0) { /* trial b_tr = f b f^T */
         double jf;
@@ -462,7 +434,7 @@ static int stress(hearth_point *pt, double tau[9]) {
         } else { /* f B, then the upper triangle of (f B) f^T */
             double f[9], G[9];
             for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + pt->dt * pt->grad_v[i];
-            jf = t3_det(f);
+            jf = hearth_t3_det(f);
             for (int r = 0; r < 3; r++)
                 for (int c = 0; c < 3; c++) G[3 * r + c] = f[3 * r] * B[c] + f[3 * r + 1] * B[3 + c] + f[3 * r + 2] * B[6 + c];
             for (int r = 0; r < 3; r++)
@@ -495,18 +467,18 @@ static int stress(hearth_point *pt, double tau[9]) {
             for (int i = 0; i < 3; i++) d[i] = exp(2 * (ev / 3 + ratio * e[i]));
             if (!isfinite(d[0] + d[1] + d[2]) || !(d[0] > 0 && d[1] > 0 && d[2] > 0)) return E_SOLVE;
             if (plane) from_eigen_plane(Q, d, B);
-            else from_eigen(Q, d, B);
+            else hearth_sym_from_eigen(Q, d, B);
         }
-        full_to_sym(B, st);
+        hearth_full_to_sym(B, st);
         st[S_JP] = J / exp(ev); /* J^P = J / J^E */
     }
     double mu, lambda;
-    lame(prm, &mu, &lambda);
+    hearth_lame(prm[P_E], prm[P_NU], &mu, &lambda);
     const double tv = lambda * ev;
     double d[3];
     for (int i = 0; i < 3; i++) d[i] = tv + 2 * mu * (ev / 3 + ratio * e[i]);
     if (plane) from_eigen_plane(Q, d, tau);
-    else from_eigen(Q, d, tau);
+    else hearth_sym_from_eigen(Q, d, tau);
     return 0;
 }
 

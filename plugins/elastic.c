@@ -1,7 +1,8 @@
 /* elastic.c: compressible neo-Hookean solid -- and the template for writing
  * a hearth material plugin. Copy this file, rename, change the physics.
  *
- * Build out of tree (the only header you need is <hearth/material.h>):
+ * Build out of tree (the only headers you need are <hearth/material.h>, the
+ * contract, and <hearth/tensor.h>, header-only 3x3 helpers):
  *
  *     cc -shared -fPIC $(pkg-config --cflags hearth) elastic.c -o hearth_elastic.so
  *
@@ -14,10 +15,11 @@
  *
  *     hearth plugin check ./hearth_elastic.so
  *
- * This plugin deliberately uses no helper library (not even hearth's
- * tensor.h, which is not installed), so the command above is all it takes.
+ * <hearth/tensor.h> is all static inline (here for the Lame constants), so
+ * the plugin links no helper library and the command above is all it takes.
  */
 #include <hearth/material.h>
+#include <hearth/tensor.h>
 #include <math.h>
 
 /* ---- parameters ----------------------------------------------------------
@@ -33,14 +35,6 @@ static const hearth_param params[P_COUNT] = {
     [P_NU] = {"nu", "1", "Poisson's ratio", 0.3, 0.0, 0.499},
     [P_DENSITY] = {"density", "kg/m^3", "mass density at rest", 1000, 1e-3, 1e5},
 };
-
-/* Lame parameters from (E, nu). Computed per call: p[] may differ per
- * particle (curves, blending), so nothing can be cached. */
-static void lame(const double *p, double *mu, double *lambda) {
-    double E = p[P_E], nu = p[P_NU];
-    *mu = E / (2 * (1 + nu));
-    *lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-}
 
 /* ---- callbacks ------------------------------------------------------------ */
 
@@ -69,7 +63,7 @@ static int stress(hearth_point *pt, double tau[9]) {
                F[2] * (F[3] * F[7] - F[4] * F[6]);
     if (!(J > 0)) return 1; /* ln J below would be NaN; let the guard say why */
     double mu, lambda;
-    lame(pt->p, &mu, &lambda);
+    hearth_lame(pt->p[P_E], pt->p[P_NU], &mu, &lambda);
     /* tau = mu (F F^T - I) + lambda ln(J) I: zero at rest, symmetric by
      * construction, and objective because F F^T turns with the observer. */
     double vol = lambda * log(J);
@@ -88,7 +82,7 @@ static int stress(hearth_point *pt, double tau[9]) {
 static double wave_speed(const double *p, const double *state) {
     (void)state;
     double mu, lambda;
-    lame(p, &mu, &lambda);
+    hearth_lame(p[P_E], p[P_NU], &mu, &lambda);
     return sqrt((lambda + 2 * mu) / p[P_DENSITY]);
 }
 

@@ -52,6 +52,7 @@
  * and then needs the temperature field (error code E_NO_TEMPERATURE when the
  * scene has none). State: the six components of S (xx, yy, zz, xy, yz, zx). */
 #include <hearth/material.h>
+#include <hearth/tensor.h>
 #include <math.h>
 #include <string.h>
 
@@ -74,26 +75,13 @@ static const hearth_param params[P_COUNT] = {
     [P_DENSITY] = {"density", "kg/m^3", "mass density at rest", 1000, 1e-3, 1e5},
 };
 
-enum { S_XX, S_YY, S_ZZ, S_XY, S_YZ, S_ZX, S_COUNT };
+enum { S_XX = HEARTH_SYM_XX, S_YY = HEARTH_SYM_YY, S_ZZ = HEARTH_SYM_ZZ, S_XY = HEARTH_SYM_XY, S_YZ = HEARTH_SYM_YZ,
+       S_ZX = HEARTH_SYM_ZX, S_COUNT };
 enum { E_INVERTED = 1, E_STEP, E_STATE, E_NO_TEMPERATURE };
 
 static void init(const double *p, double *state) {
     (void)p;
     for (int i = 0; i < S_COUNT; i++) state[i] = 0;
-}
-
-static void unpack(const double *s, double S[9]) {
-    S[0] = s[S_XX], S[4] = s[S_YY], S[8] = s[S_ZZ];
-    S[1] = S[3] = s[S_XY];
-    S[5] = S[7] = s[S_YZ];
-    S[2] = S[6] = s[S_ZX];
-}
-
-static void pack(const double S[9], double *s) {
-    s[S_XX] = S[0], s[S_YY] = S[4], s[S_ZZ] = S[8];
-    s[S_XY] = 0.5 * (S[1] + S[3]);
-    s[S_YZ] = 0.5 * (S[5] + S[7]);
-    s[S_ZX] = 0.5 * (S[2] + S[6]);
 }
 
 /* Q = exp(t W) for antisymmetric W (Rodrigues): W = [w]_x with axis w. */
@@ -143,7 +131,7 @@ static int stress(hearth_point *pt, double tau[9]) {
     for (int i = 0; i < S_COUNT; i++)
         if (!isfinite(pt->state[i])) return E_STATE;
     double S[9];
-    unpack(pt->state, S);
+    hearth_sym_to_full(pt->state, S);
     if (pt->dt > 0) {
         const double *L = pt->grad_v;
         for (int i = 0; i < 9; i++)
@@ -166,8 +154,8 @@ static int stress(hearth_point *pt, double tau[9]) {
         rotate(Q, S);
         for (int i = 0; i < 9; i++)
             if (!isfinite(S[i])) return E_STATE;
-        pack(S, pt->state);
-        unpack(pt->state, S); /* exactly symmetric */
+        hearth_full_to_sym(S, pt->state);
+        hearth_sym_to_full(pt->state, S); /* exactly symmetric */
     }
     double vol = 0.5 * p[P_BULK] * (J * J - 1);
     for (int i = 0; i < 9; i++) tau[i] = J * S[i] + (i % 4 == 0 ? vol : 0.0);

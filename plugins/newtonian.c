@@ -17,7 +17,7 @@
 #include <hearth/material.h>
 #include <math.h>
 
-#include "tensor.h"
+#include <hearth/tensor.h>
 
 enum { P_DENSITY, P_BULK, P_VISCOSITY, P_COUNT };
 
@@ -34,7 +34,7 @@ static void init(const double *p, double *state) {
 }
 
 static int stress(hearth_point *pt, double tau[9]) {
-    double J = t3_det(pt->F);
+    double J = hearth_t3_det(pt->F);
     if (!(J > 0)) return 1;
     const double *L = pt->grad_v;
     double K = pt->p[P_BULK], eta = pt->p[P_VISCOSITY];

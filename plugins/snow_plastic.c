@@ -55,7 +55,7 @@
 #include <hearth/material.h>
 #include <math.h>
 
-#include "tensor.h"
+#include <hearth/tensor.h>
 
 enum { P_E, P_NU, P_DENSITY, P_THETA_C, P_THETA_S, P_XI, P_COUNT };
 
@@ -76,7 +76,8 @@ static const hearth_param params[P_COUNT] = {
     [P_XI] = {"xi", "1", "hardening coefficient: moduli x exp(xi (1 - J_P)) (Stomakhin et al. 2013: 10)", 10, 0, 100},
 };
 
-enum { S_XX, S_YY, S_ZZ, S_XY, S_YZ, S_ZX, S_JP, S_COUNT };
+enum { S_XX = HEARTH_SYM_XX, S_YY = HEARTH_SYM_YY, S_ZZ = HEARTH_SYM_ZZ, S_XY = HEARTH_SYM_XY, S_YZ = HEARTH_SYM_YZ,
+       S_ZX = HEARTH_SYM_ZX, S_JP, S_COUNT };
 
 enum {
     E_INVERTED = 1, /* det F <= 0 or not finite */
@@ -84,30 +85,8 @@ enum {
     E_STATE = 3     /* stored b_E or J_P not finite, or b_E not positive definite */
 };
 
-static void lame(const double *p, double *mu, double *lambda) {
-    const double E = p[P_E], nu = p[P_NU];
-    *mu = E / (2 * (1 + nu));
-    *lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-}
-
 /* e^{xi (1 - J_P)}, held at e^-700 and above (header). */
 static double hardening(const double *p, double jp) { return exp(fmax(p[P_XI] * (1 - jp), -700.0)); }
-
-static void sym_to_full(const double *s, double B[9]) {
-    B[0] = s[S_XX], B[4] = s[S_YY], B[8] = s[S_ZZ];
-    B[1] = B[3] = s[S_XY];
-    B[5] = B[7] = s[S_YZ];
-    B[2] = B[6] = s[S_ZX];
-}
-
-/* Q diag(d) Q^T, written symmetric. */
-static void from_eigen(const double Q[9], const double d[3], double A[9]) {
-    for (int r = 0; r < 3; r++)
-        for (int c = r; c < 3; c++) {
-            const double v = Q[3 * r] * d[0] * Q[3 * c] + Q[3 * r + 1] * d[1] * Q[3 * c + 1] + Q[3 * r + 2] * d[2] * Q[3 * c + 2];
-            A[3 * r + c] = A[3 * c + r] = v;
-        }
-}
 
 static void init(const double *p, double *state) {
     (void)p;
@@ -118,24 +97,24 @@ static void init(const double *p, double *state) {
 
 static int stress(hearth_point *pt, double tau[9]) {
     const double *prm = pt->p;
-    const double J = t3_det(pt->F);
+    const double J = hearth_t3_det(pt->F);
     if (!(J > 0) || !isfinite(J)) return E_INVERTED;
     double *st = pt->state;
     for (int i = 0; i < S_COUNT; i++)
         if (!isfinite(st[i])) return E_STATE;
     if (!(st[S_JP] > 0)) return E_STATE;
     double B[9];
-    sym_to_full(st, B);
+    hearth_sym_to_full(st, B);
     if (pt->dt > 0) { /* trial b_tr = f b_n f^T */
         double f[9], fB[9];
         for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + pt->dt * pt->grad_v[i];
-        const double jf = t3_det(f);
+        const double jf = hearth_t3_det(f);
         if (!(jf > 0) || !isfinite(jf)) return E_STEP;
-        t3_mul(f, B, fB);
-        t3_mul_abt(fB, f, B);
+        hearth_t3_mul(f, B, fB);
+        hearth_t3_mul_abt(fB, f, B);
     }
     double l[3], Q[9], s[3];
-    t3_sym_eigen(B, l, Q);
+    hearth_t3_sym_eigen(B, l, Q);
     if (!(l[0] > 0 && l[1] > 0 && l[2] > 0) || !isfinite(l[0] + l[1] + l[2])) return E_STATE;
     for (int i = 0; i < 3; i++) s[i] = sqrt(l[i]);
     if (pt->dt > 0) {
@@ -143,19 +122,19 @@ static int stress(hearth_point *pt, double tau[9]) {
         const double lo = 1 - prm[P_THETA_C], hi = 1 + prm[P_THETA_S];
         for (int i = 0; i < 3; i++) s[i] = fmin(fmax(s[i], lo), hi);
         const double d[3] = {s[0] * s[0], s[1] * s[1], s[2] * s[2]};
-        from_eigen(Q, d, B);
+        hearth_sym_from_eigen(Q, d, B);
         st[S_XX] = B[0], st[S_YY] = B[4], st[S_ZZ] = B[8];
         st[S_XY] = B[1], st[S_YZ] = B[5], st[S_ZX] = B[2];
         st[S_JP] = J / (s[0] * s[1] * s[2]); /* J_P = J / J_E */
     }
     double mu, lambda;
-    lame(prm, &mu, &lambda);
+    hearth_lame(prm[P_E], prm[P_NU], &mu, &lambda);
     const double h = hardening(prm, st[S_JP]);
     const double JE = s[0] * s[1] * s[2];
     const double vol = h * lambda * (JE - 1) * JE;
     const double d[3] = {2 * h * mu * (s[0] * s[0] - s[0]) + vol, 2 * h * mu * (s[1] * s[1] - s[1]) + vol,
                          2 * h * mu * (s[2] * s[2] - s[2]) + vol};
-    from_eigen(Q, d, tau);
+    hearth_sym_from_eigen(Q, d, tau);
     return 0;
 }
 
@@ -164,7 +143,7 @@ static int stress(hearth_point *pt, double tau[9]) {
  * within a few percent of a rotation, so the tangent changes little. */
 static double wave_speed(const double *p, const double *state) {
     double mu, lambda;
-    lame(p, &mu, &lambda);
+    hearth_lame(p[P_E], p[P_NU], &mu, &lambda);
     const double h = hardening(p, state && state[S_JP] > 0 ? state[S_JP] : 1.0);
     return sqrt((lambda + 2 * mu) * h / p[P_DENSITY]);
 }

@@ -81,7 +81,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "tensor.h"
+#include <hearth/tensor.h>
 
 enum { P_KAPPA, P_MU, P_SIGMA_Y, P_ETA, P_H, P_DENSITY, P_COUNT };
 
@@ -96,7 +96,8 @@ static const hearth_param params[P_COUNT] = {
     [P_DENSITY] = {"density", "kg/m^3", "mass density at rest", 1000, 1e-3, 1e5},
 };
 
-enum { S_XX, S_YY, S_ZZ, S_XY, S_YZ, S_ZX, S_COUNT };
+enum { S_XX = HEARTH_SYM_XX, S_YY = HEARTH_SYM_YY, S_ZZ = HEARTH_SYM_ZZ, S_XY = HEARTH_SYM_XY, S_YZ = HEARTH_SYM_YZ,
+       S_ZX = HEARTH_SYM_ZX, S_COUNT };
 
 enum {
     E_INVERTED = 1, /* det F <= 0 */
@@ -107,23 +108,6 @@ enum {
 };
 
 static const double SQRT2 = 1.41421356237309504880, LN2 = 0.69314718055994530942;
-
-/* ---- small symmetric helpers ------------------------------------------- */
-
-static void sym_to_full(const double *s, double B[9]) {
-    B[0] = s[S_XX], B[4] = s[S_YY], B[8] = s[S_ZZ];
-    B[1] = B[3] = s[S_XY];
-    B[5] = B[7] = s[S_YZ];
-    B[2] = B[6] = s[S_ZX];
-}
-
-/* Symmetric part of a full matrix: (A_rc + A_cr)/2 is bitwise symmetric. */
-static void full_to_sym(const double B[9], double *s) {
-    s[S_XX] = B[0], s[S_YY] = B[4], s[S_ZZ] = B[8];
-    s[S_XY] = 0.5 * (B[1] + B[3]);
-    s[S_YZ] = 0.5 * (B[5] + B[7]);
-    s[S_ZX] = 0.5 * (B[2] + B[6]);
-}
 
 static double sym_det(const double *s) {
     return s[S_XX] * (s[S_YY] * s[S_ZZ] - s[S_YZ] * s[S_YZ]) - s[S_XY] * (s[S_XY] * s[S_ZZ] - s[S_YZ] * s[S_ZX]) +
@@ -183,7 +167,7 @@ static void kirchhoff(const double *p, double J, const double *bbar, double tau[
     double vol = 0.5 * kappa * (J * J - 1); /* eq. 40, volumetric part */
     double m = (bbar[S_XX] + bbar[S_YY] + bbar[S_ZZ]) / 3;
     double B[9];
-    sym_to_full(bbar, B);
+    hearth_sym_to_full(bbar, B);
     for (int r = 0; r < 3; r++)
         for (int c = 0; c < 3; c++) tau[3 * r + c] = mu * (B[3 * r + c] - (r == c ? m : 0.0)) + (r == c ? vol : 0.0);
 }
@@ -213,8 +197,8 @@ static int advance(const double *p, const double L[9], double dt, double *bs) {
     double Lb[9], B[9], LB[9], btr[S_COUNT];
     double tl = (L[0] + L[4] + L[8]) / 3;
     for (int i = 0; i < 9; i++) Lb[i] = L[i] - (i % 4 == 0 ? tl : 0.0);
-    sym_to_full(bs, B);
-    t3_mul(Lb, B, LB); /* L̄ b̄ + (L̄ b̄)^T = L̄ b̄ + b̄ L̄^T since b̄ is symmetric */
+    hearth_sym_to_full(bs, B);
+    hearth_t3_mul(Lb, B, LB); /* L̄ b̄ + (L̄ b̄)^T = L̄ b̄ + b̄ L̄^T since b̄ is symmetric */
     btr[S_XX] = bs[S_XX] + dt * 2 * LB[0];
     btr[S_YY] = bs[S_YY] + dt * 2 * LB[4];
     btr[S_ZZ] = bs[S_ZZ] + dt * 2 * LB[8];
@@ -224,13 +208,13 @@ static int advance(const double *p, const double L[9], double dt, double *bs) {
     if (!sym_spd(btr)) {
         double f[9], fB[9], Btr[9];
         for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
-        double jf = t3_det(f);
+        double jf = hearth_t3_det(f);
         if (!(jf > 0) || !isfinite(jf)) return E_STEP;
         double sc = cbrt(jf);
         for (int i = 0; i < 9; i++) f[i] /= sc;
-        t3_mul(f, B, fB);
-        t3_mul_abt(fB, f, Btr);
-        full_to_sym(Btr, btr);
+        hearth_t3_mul(f, B, fB);
+        hearth_t3_mul_abt(fB, f, Btr);
+        hearth_full_to_sym(Btr, btr);
     }
 
     /* mū = mu Ī with Ī = tr(b̄_n)/3 of the state the step starts from (the
@@ -296,7 +280,7 @@ static int advance(const double *p, const double L[9], double dt, double *bs) {
 
 static int stress(hearth_point *pt, double tau[9]) {
     const double *p = pt->p;
-    double J = t3_det(pt->F);
+    double J = hearth_t3_det(pt->F);
     if (!(J > 0) || !isfinite(J)) return E_INVERTED;
     double *bs = pt->state;
     for (int i = 0; i < S_COUNT; i++)

@@ -375,7 +375,50 @@ TEST(plugin_wave_corners) {
     m = good(), m.nparams = 100000, refused(&m, "has 100000 parameters; at most 256");
 }
 
+/* The core's own per-material parameters (hearth_core_params) share the
+ * scene's parameter table with the plugin's; a plugin name equal to one would
+ * hide the core's, so the loader refuses every one of them by name. */
+TEST(plugin_reserved_name) {
+    hearth_error err = {0};
+    load_refused("bad_reserved", &err);
+    CHECK_STR_CONTAINS(err.msg, "parameter 'porosity' clashes with the core parameter 'porosity' (1, initial gas porosity");
+    CHECK_STR_CONTAINS(err.msg, "rename the plugin's parameter (reserved names: conductivity, specific_heat, expansion,");
+    CHECK_STR_CONTAINS(err.msg, "water_density, bubble)");
+    int n = 0;
+    const hearth_param *core = hearth_core_params(&n);
+    CHECK(n >= 14);
+    for (int c = 0; c < n; c++) {
+        hearth_material m = good();
+        g_params[1].name = core[c].name;
+        char words[160];
+        snprintf(words, sizeof words, "parameter '%s' clashes with the core parameter '%s'", core[c].name, core[c].name);
+        refused(&m, words);
+    }
+    /* a name that merely contains a reserved one is the plugin's own (cam_clay_dough's max_porosity) */
+    hearth_material m = good();
+    g_params[1].name = "max_porosity";
+    plugin_desc d;
+    CHECK(plugin_describe("x.so", &m, &d, &err) == HEARTH_OK);
+    plugin_desc_free(&d);
+}
+
+/* material.h lists the reserved names for plugin authors; the loader refuses
+ * the names of hearth_core_params. The two must be the same list, in order. */
+TEST(plugin_reserved_names_documented) {
+    static const char *const listed[] = {HEARTH_RESERVED_PARAM_NAMES};
+    const int nl = (int)(sizeof listed / sizeof listed[0]);
+    int n = 0;
+    const hearth_param *core = hearth_core_params(&n);
+    CHECK(nl == n);
+    for (int i = 0; i < n && i < nl; i++)
+        if (strcmp(listed[i], core[i].name) != 0) {
+            fprintf(stderr, "HEARTH_RESERVED_PARAM_NAMES[%d] is '%s', hearth_core_params has '%s'\n", i, listed[i], core[i].name);
+            CHECK(0);
+        }
+}
+
 TEST_MAIN(T(plugin_missing_file), T(plugin_not_shared_object), T(plugin_no_entry), T(plugin_wrong_abi),
           T(plugin_null_callback), T(plugin_bad_default), T(plugin_load_cached), T(plugin_check_builtin),
           T(plugin_check_catches_asym), T(plugin_check_reports_codes), T(plugin_load_nomem),
-          T(plugin_descriptor_rules), T(plugin_wave_corners))
+          T(plugin_descriptor_rules), T(plugin_wave_corners), T(plugin_reserved_name),
+          T(plugin_reserved_names_documented))

@@ -276,6 +276,23 @@ static hearth_status plugin_check_params(const char *shown, const hearth_materia
                 return err_set(err, HEARTH_ERR_PLUGIN,
                                "%s: duplicate parameter name '%s' (entries %d and %d); names must be unique",
                                shown, q->name, j, i);
+        /* A scene names core and plugin parameters in one table ({density = 500,
+         * porosity = 0.3}); params_resolve looks in the plugin's schema first, so
+         * a plugin entry with a core name would silently hide the core's. */
+        int ncore = 0;
+        const hearth_param *core = hearth_core_params(&ncore);
+        for (int c = 0; c < ncore; c++)
+            if (strcmp(core[c].name, q->name) == 0) {
+                char list[512] = "";
+                for (int k = 0; k < ncore; k++) {
+                    if (k) strncat(list, ", ", sizeof list - strlen(list) - 1);
+                    strncat(list, core[k].name, sizeof list - strlen(list) - 1);
+                }
+                return err_set(err, HEARTH_ERR_PLUGIN,
+                               "%s: parameter '%s' clashes with the core parameter '%s' (%s, %s) that every "
+                               "material accepts; rename the plugin's parameter (reserved names: %s)",
+                               shown, q->name, core[c].name, core[c].unit, core[c].help, list);
+            }
     }
     int d = plugin_param_index(m, "density");
     if (d < 0)

@@ -14,80 +14,19 @@
 #define T3_JACOBI_TOL 1e-15
 #define T3_MAX_SWEEPS 50
 
-void t3_identity(double A[9]) {
-    for (int i = 0; i < 9; i++) A[i] = (i % 4 == 0) ? 1.0 : 0.0;
-}
-
-void t3_copy(const double A[9], double B[9]) {
-    for (int i = 0; i < 9; i++) B[i] = A[i];
-}
-
-void t3_transpose(const double A[9], double At[9]) {
-    double T[9];
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++) T[3 * c + r] = A[3 * r + c];
-    t3_copy(T, At);
-}
-
-void t3_mul(const double A[9], const double B[9], double C[9]) {
-    double T[9];
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            T[3 * r + c] = A[3 * r] * B[c] + A[3 * r + 1] * B[3 + c] + A[3 * r + 2] * B[6 + c];
-    t3_copy(T, C);
-}
-
-void t3_mul_atb(const double A[9], const double B[9], double C[9]) {
-    double T[9];
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            T[3 * r + c] = A[r] * B[c] + A[3 + r] * B[3 + c] + A[6 + r] * B[6 + c];
-    t3_copy(T, C);
-}
-
-void t3_mul_abt(const double A[9], const double B[9], double C[9]) {
-    double T[9];
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            T[3 * r + c] = A[3 * r] * B[3 * c] + A[3 * r + 1] * B[3 * c + 1] +
-                           A[3 * r + 2] * B[3 * c + 2];
-    t3_copy(T, C);
-}
-
-void t3_mulv(const double A[9], const double x[3], double y[3]) {
-    double t[3];
-    for (int r = 0; r < 3; r++) t[r] = A[3 * r] * x[0] + A[3 * r + 1] * x[1] + A[3 * r + 2] * x[2];
-    y[0] = t[0];
-    y[1] = t[1];
-    y[2] = t[2];
-}
-
-double t3_trace(const double A[9]) { return A[0] + A[4] + A[8]; }
-
-double t3_ddot(const double A[9], const double B[9]) {
-    double d = 0.0;
-    for (int i = 0; i < 9; i++) d += A[i] * B[i];
-    return d;
-}
-
-int t3_inverse(const double A[9], double Ainv[9]) {
-    /* Adjugate over determinant: exact enough for 3x3 and branch-free. */
-    double C[9];
-    C[0] = A[4] * A[8] - A[5] * A[7];
-    C[1] = A[2] * A[7] - A[1] * A[8];
-    C[2] = A[1] * A[5] - A[2] * A[4];
-    C[3] = A[5] * A[6] - A[3] * A[8];
-    C[4] = A[0] * A[8] - A[2] * A[6];
-    C[5] = A[2] * A[3] - A[0] * A[5];
-    C[6] = A[3] * A[7] - A[4] * A[6];
-    C[7] = A[1] * A[6] - A[0] * A[7];
-    C[8] = A[0] * A[4] - A[1] * A[3];
-    double det = A[0] * C[0] + A[1] * C[3] + A[2] * C[6];
-    if (!(fabs(det) >= 1e-300)) return 0; /* also rejects NaN */
-    double inv = 1.0 / det;
-    for (int i = 0; i < 9; i++) Ainv[i] = C[i] * inv;
-    return 1;
-}
+/* The small products and the inverse are <hearth/tensor.h>'s, which plugins
+ * include directly; these out-of-line names keep the core's call sites and
+ * give the core and the plugins one implementation. */
+void t3_identity(double A[9]) { hearth_t3_identity(A); }
+void t3_copy(const double A[9], double B[9]) { hearth_t3_copy(A, B); }
+void t3_transpose(const double A[9], double At[9]) { hearth_t3_transpose(A, At); }
+void t3_mul(const double A[9], const double B[9], double C[9]) { hearth_t3_mul(A, B, C); }
+void t3_mul_atb(const double A[9], const double B[9], double C[9]) { hearth_t3_mul_atb(A, B, C); }
+void t3_mul_abt(const double A[9], const double B[9], double C[9]) { hearth_t3_mul_abt(A, B, C); }
+void t3_mulv(const double A[9], const double x[3], double y[3]) { hearth_t3_mulv(A, x, y); }
+double t3_trace(const double A[9]) { return hearth_t3_trace(A); }
+double t3_ddot(const double A[9], const double B[9]) { return hearth_t3_ddot(A, B); }
+int t3_inverse(const double A[9], double Ainv[9]) { return hearth_t3_inverse(A, Ainv); }
 
 /* ---- small vector helpers (columns of row-major matrices) ---- */
 
@@ -105,36 +44,6 @@ static void set_col(double A[9], int c, const double v[3]) {
     A[c] = v[0];
     A[3 + c] = v[1];
     A[6 + c] = v[2];
-}
-
-static void swap_cols(double A[9], int a, int b) {
-    for (int r = 0; r < 3; r++) {
-        double t = A[3 * r + a];
-        A[3 * r + a] = A[3 * r + b];
-        A[3 * r + b] = t;
-    }
-}
-
-static void negate_col(double A[9], int c) {
-    for (int r = 0; r < 3; r++) A[3 * r + c] = -A[3 * r + c];
-}
-
-/* Right-multiply columns p,q of A by the Jacobi rotation [[c, s], [-s, c]]. */
-static void rotate_cols(double A[9], int p, int q, double c, double s) {
-    for (int r = 0; r < 3; r++) {
-        double ap = A[3 * r + p], aq = A[3 * r + q];
-        A[3 * r + p] = c * ap - s * aq;
-        A[3 * r + q] = s * ap + c * aq;
-    }
-}
-
-/* Smaller root t of t^2 + 2 zeta t - 1 = 0, the tangent of the Jacobi angle that
- * zeroes the (p,q) coupling with |angle| <= pi/4 (Golub & Van Loan 8.5.2).
- * hypot keeps it finite when zeta is huge; the sign choice avoids cancellation. */
-static double jacobi_tangent(double alpha, double beta, double gamma) {
-    double zeta = (beta - alpha) / (2.0 * gamma);
-    double sgn = zeta >= 0.0 ? 1.0 : -1.0;
-    return sgn / (fabs(zeta) + hypot(1.0, zeta));
 }
 
 /* Normalise v in place; returns the old length. */
@@ -181,58 +90,8 @@ static void sym_from_eigen(const double Q[9], const double d[3], double E[9]) {
 
 /* ---- symmetric eigen-decomposition ---- */
 
-void t3_sym_eigen(const double S[9], double l[3], double Q[9]) {
-    /* Cyclic Jacobi: slower than a closed-form cubic but accurate to machine
-     * precision even for repeated or clustered eigenvalues, where the
-     * trigonometric formula loses half the digits. Only the upper triangle of
-     * S is read, so a slightly asymmetric input is treated as symmetric. */
-    static const int P[3] = {0, 0, 1}, Qi[3] = {1, 2, 2};
-    double a[9];
-    for (int i = 0; i < 3; i++)
-        for (int j = i; j < 3; j++) a[3 * i + j] = a[3 * j + i] = S[3 * i + j];
-    t3_identity(Q);
-
-    double norm2 = 0.0;
-    for (int i = 0; i < 9; i++) norm2 += a[i] * a[i];
-    double tol2 = T3_JACOBI_TOL * T3_JACOBI_TOL * norm2;
-
-    for (int sweep = 0; sweep < T3_MAX_SWEEPS; sweep++) {
-        double off2 = 2.0 * (a[1] * a[1] + a[2] * a[2] + a[5] * a[5]);
-        if (off2 <= tol2) break;
-        for (int k = 0; k < 3; k++) {
-            int p = P[k], q = Qi[k];
-            double apq = a[3 * p + q];
-            if (apq == 0.0) continue;
-            double t = jacobi_tangent(a[4 * p], a[4 * q], apq);
-            double c = 1.0 / sqrt(1.0 + t * t), s = t * c;
-            /* A <- J^T A J with the updates of Golub & Van Loan alg. 8.5.2;
-             * the diagonal uses the t*apq form, which is more accurate. */
-            int r = 3 - p - q; /* the remaining index */
-            double arp = a[3 * r + p], arq = a[3 * r + q];
-            a[3 * r + p] = a[3 * p + r] = c * arp - s * arq;
-            a[3 * r + q] = a[3 * q + r] = s * arp + c * arq;
-            a[4 * p] -= t * apq;
-            a[4 * q] += t * apq;
-            a[3 * p + q] = a[3 * q + p] = 0.0;
-            rotate_cols(Q, p, q, c, s);
-        }
-    }
-
-    l[0] = a[0];
-    l[1] = a[4];
-    l[2] = a[8];
-    /* Sort ascending (three elements: a tiny exchange sort), moving columns. */
-    for (int i = 0; i < 2; i++)
-        for (int j = i + 1; j < 3; j++)
-            if (l[j] < l[i]) {
-                double t = l[i];
-                l[i] = l[j];
-                l[j] = t;
-                swap_cols(Q, i, j);
-            }
-    /* Every swap flips det Q; an eigenvector's sign is free, so fix it here. */
-    if (t3_det(Q) < 0.0) negate_col(Q, 2);
-}
+/* Plugins need it too (snow_plastic's return map), so it lives in <hearth/tensor.h>. */
+void t3_sym_eigen(const double S[9], double l[3], double Q[9]) { hearth_t3_sym_eigen(S, l, Q); }
 
 /* ---- SVD ---- */
 
@@ -267,10 +126,10 @@ void t3_svd(const double A[9], double U[9], double s[3], double V[9]) {
             double alpha = dot3(bp, bp), beta = dot3(bq, bq), gamma = dot3(bp, bq);
             /* Columns already orthogonal to working precision: skip. */
             if (!(fabs(gamma) > T3_JACOBI_TOL * sqrt(alpha) * sqrt(beta))) continue;
-            double t = jacobi_tangent(alpha, beta, gamma);
+            double t = hearth_t3_jacobi_tangent(alpha, beta, gamma);
             double c = 1.0 / sqrt(1.0 + t * t), sn = t * c;
-            rotate_cols(B, p, q, c, sn);
-            rotate_cols(V, p, q, c, sn);
+            hearth_t3_rotate_cols(B, p, q, c, sn);
+            hearth_t3_rotate_cols(V, p, q, c, sn);
             rotated = 1;
         }
         if (!rotated) break;
@@ -293,13 +152,13 @@ void t3_svd(const double A[9], double U[9], double s[3], double V[9]) {
                     b[i][r] = b[j][r];
                     b[j][r] = x;
                 }
-                swap_cols(V, i, j);
+                hearth_t3_swap_cols(V, i, j);
             }
     /* Swaps may have made V a reflection. Flipping its last column (and B's,
      * so that A V = B still holds) makes it a rotation; the sign then shows up
      * in s[2] below. */
     if (t3_det(V) < 0.0) {
-        negate_col(V, 2);
+        hearth_t3_negate_col(V, 2);
         for (int r = 0; r < 3; r++) b[2][r] = -b[2][r];
     }
 

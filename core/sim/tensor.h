@@ -1,10 +1,14 @@
-/* tensor.h: 3x3 matrix algebra for the solvers and plugins.
+/* tensor.h: 3x3 matrix algebra for the solvers.
  * Matrices are double[9], row-major (A[3*r+c]). Outputs may not alias inputs
- * unless a function says so. Built as a small static library (PIC) that
- * libhearth and the in-tree plugins both link, so a plugin needs no symbol
- * from the host process. */
-#ifndef HEARTH_TENSOR_H
-#define HEARTH_TENSOR_H
+ * unless a function says so. The small helpers plugins need are static inline
+ * in the public <hearth/tensor.h>; the t3_ names below wrap them for the core
+ * (one implementation), and add the heavier algebra only the core uses (SVD,
+ * polar, symmetric log and exp, rotations). Built as a small static library
+ * that libhearth links; plugins do not link it. */
+#ifndef HEARTH_SIM_TENSOR_H
+#define HEARTH_SIM_TENSOR_H
+
+#include "hearth/tensor.h"
 
 void t3_identity(double A[9]);
 void t3_copy(const double A[9], double B[9]);
@@ -14,9 +18,7 @@ void t3_mul_atb(const double A[9], const double B[9], double C[9]); ///< C = A^T
 void t3_mul_abt(const double A[9], const double B[9], double C[9]); ///< C = A B^T
 void t3_mulv(const double A[9], const double x[3], double y[3]);    ///< y = A x
 /* inline: the field passes take a determinant per particle per step */
-static inline double t3_det(const double A[9]) {
-    return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) + A[2] * (A[3] * A[7] - A[4] * A[6]);
-}
+static inline double t3_det(const double A[9]) { return hearth_t3_det(A); }
 double t3_trace(const double A[9]);
 double t3_ddot(const double A[9], const double B[9]);              ///< A:B
 /// Inverse; returns 0 when |det| is below 1e-300 (Ainv untouched).

@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "tensor.h"
+#include <hearth/tensor.h>
 
 #define MODE_IS(x) (strcmp(MISBEHAVE, x) == 0)
 
@@ -28,11 +28,6 @@ static const hearth_param params[P_COUNT] = {
     [P_DENSITY] = {"density", "kg/m^3", "mass density", 1000, 1, 1e5},
     [P_AFTER] = {"after", "1", "advancing stress calls before wave_inf_after misbehaves", 2, 0, 1e9},
 };
-
-static void lame(const double *p, double *mu, double *lambda) {
-    *mu = p[P_E] / (2 * (1 + p[P_NU]));
-    *lambda = p[P_E] * p[P_NU] / ((1 + p[P_NU]) * (1 - 2 * p[P_NU]));
-}
 
 static void init(const double *p, double *state) {
     (void)p;
@@ -57,17 +52,17 @@ static int stress(hearth_point *pt, double tau[9]) {
             while (g_spin) {}
         if (MODE_IS("exit_stress")) exit(0);
     }
-    double J = t3_det(pt->F), b[9], mu, lambda;
+    double J = hearth_t3_det(pt->F), b[9], mu, lambda;
     if (!(J > 0)) return 1;
-    lame(pt->p, &mu, &lambda);
-    t3_mul_abt(pt->F, pt->F, b);
+    hearth_lame(pt->p[P_E], pt->p[P_NU], &mu, &lambda);
+    hearth_t3_mul_abt(pt->F, pt->F, b);
     for (int i = 0; i < 9; i++) tau[i] = mu * (b[i] - (i % 4 == 0)) + (i % 4 == 0 ? lambda * log(J) : 0.0);
     return 0;
 }
 
 static double wave_speed(const double *p, const double *state) {
     double mu, lambda;
-    lame(p, &mu, &lambda);
+    hearth_lame(p[P_E], p[P_NU], &mu, &lambda);
     const double c = sqrt((lambda + 2 * mu) / p[P_DENSITY]);
     if (p[P_E] >= params[P_E].max) {
         if (MODE_IS("wave_nan")) return NAN;

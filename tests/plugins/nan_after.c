@@ -5,7 +5,7 @@
 #include <hearth/material.h>
 #include <math.h>
 
-#include "tensor.h"
+#include <hearth/tensor.h>
 
 enum { P_E, P_NU, P_DENSITY, P_AFTER, P_COUNT };
 
@@ -15,11 +15,6 @@ static const hearth_param params[P_COUNT] = {
     [P_DENSITY] = {"density", "kg/m^3", "mass density", 1000, 1e-3, 1e5},
     [P_AFTER] = {"after", "1", "stress calls (dt > 0) before the stress turns NaN", 3, 0, 1e9},
 };
-
-static void lame(const double *p, double *mu, double *lambda) {
-    *mu = p[P_E] / (2 * (1 + p[P_NU]));
-    *lambda = p[P_E] * p[P_NU] / ((1 + p[P_NU]) * (1 - 2 * p[P_NU]));
-}
 
 static void init(const double *p, double *state) {
     (void)p;
@@ -32,10 +27,10 @@ static int stress(hearth_point *pt, double tau[9]) {
         for (int i = 0; i < 9; i++) tau[i] = NAN;
         return 0;
     }
-    double J = t3_det(pt->F), b[9], mu, lambda;
+    double J = hearth_t3_det(pt->F), b[9], mu, lambda;
     if (!(J > 0)) return 1;
-    lame(pt->p, &mu, &lambda);
-    t3_mul_abt(pt->F, pt->F, b);
+    hearth_lame(pt->p[P_E], pt->p[P_NU], &mu, &lambda);
+    hearth_t3_mul_abt(pt->F, pt->F, b);
     for (int i = 0; i < 9; i++) tau[i] = mu * (b[i] - (i % 4 == 0)) + (i % 4 == 0 ? lambda * log(J) : 0.0);
     return 0;
 }
@@ -43,7 +38,7 @@ static int stress(hearth_point *pt, double tau[9]) {
 static double wave_speed(const double *p, const double *state) {
     (void)state;
     double mu, lambda;
-    lame(p, &mu, &lambda);
+    hearth_lame(p[P_E], p[P_NU], &mu, &lambda);
     return sqrt((lambda + 2 * mu) / p[P_DENSITY]);
 }
 

@@ -1,19 +1,80 @@
-/* hearth/material.h: the material plugin ABI. The only header a plugin needs.
+/* hearth/material.h: the material plugin ABI and its contract. A plugin needs
+ * this header and, for 3x3 algebra, the header-only <hearth/tensor.h>; both are
+ * installed (`pkg-config --cflags hearth`), and a plugin links nothing but libm.
  *
- * A plugin is a shared object that exports one symbol, HEARTH_MATERIAL_ENTRY
- * ("hearth_material_v1"), returning a pointer to a static descriptor. The
- * loader checks abi_version, struct_size and real_size before reading any
- * other field, then checks every required callback and the parameter schema.
+ * A plugin is a shared object named hearth_<name>.so that exports one symbol,
+ * HEARTH_MATERIAL_ENTRY ("hearth_material_v1"), returning a pointer to a
+ * static descriptor. Every rule below is one the loader (core/sim/plugins.c)
+ * or the solvers enforce; the loader refuses a plugin that breaks a load-time
+ * rule with a message naming the file, the field and the fix. Run
+ * `hearth plugin check hearth_<name>.so` to meet them before a scene does.
  *
- * Rules that keep old plugins working:
- *   - fields of hearth_material and hearth_point are only ever appended;
- *   - a new optional callback is read only when struct_size says it exists;
- *   - a change that breaks layout bumps HEARTH_MATERIAL_ABI.
+ * THE CONTRACT
+ *
+ * 1. Size and version (checked first, before any other field is read).
+ *    abi_version == HEARTH_MATERIAL_ABI, struct_size == sizeof(hearth_material)
+ *    and real_size == sizeof(double) as the plugin was compiled. struct_size
+ *    must cover every field through describe_error; the loader copies only
+ *    struct_size bytes, so an optional callback appended after the plugin was
+ *    built reads as NULL, and a newer plugin's extra fields are ignored.
+ *    hearth_material and hearth_point only grow at the end; a change to either
+ *    that breaks layout bumps HEARTH_MATERIAL_ABI, and the loader refuses any
+ *    other major version. hearth_point carries no size of its own: a field
+ *    appended to it comes with a new HEARTH_NEEDS_* bit, and a core that does
+ *    not know a needs bit refuses the plugin, so a plugin that sets the bit
+ *    never reads past an older core's point, and one that does not never
+ *    reads the new field.
+ *
+ * 2. Descriptor. name is [a-z0-9_]+ (it is the file's <name> and a Lua
+ *    string). init, stress, wave_speed and describe_error are non-NULL;
+ *    blend, plastic_J and viscosity may be NULL. nparams <= 256 with params
+ *    non-NULL when nparams > 0; 0 <= state_size <= 4096; needs holds only
+ *    known HEARTH_NEEDS_* bits.
+ *
+ * 3. Parameters. Each name is a Lua identifier [A-Za-z_][A-Za-z0-9_]*, unique
+ *    in the schema; unit is non-NULL (SI, "1" when dimensionless); min and max
+ *    are finite with min <= max; min <= def <= max.
+ *    - `density` is required: unit exactly "kg/m^3" and min > 0 (the core
+ *      gives particles their mass from it).
+ *    - The names in HEARTH_RESERVED_PARAM_NAMES are the core's own parameters,
+ *      which every material accepts in the same table as the plugin's (see
+ *      hearth_core_params() in <hearth/hearth.h> for units, ranges and help);
+ *      a plugin parameter with one of these names is refused.
+ *    - Under the SPH solver a parameter named `viscosity` (Pa s) is the
+ *      core's: SPH applies it itself (Morris et al. viscous term, eq. 3.19 of
+ *      Rodriguez-Arenas 2011, with no-slip walls), passes 0 for it to stress,
+ *      and limits the step with its kinematic value viscosity/density. Under
+ *      MPM the plugin applies it, like any other parameter.
+ *
+ * 4. Wave speed. wave_speed must be finite and > 0 over the whole schema. At
+ *    load the loader calls init and then wave_speed on a fresh state at the
+ *    defaults, with each parameter at its min and at its max (the rest at
+ *    defaults), with every parameter at its min and with every one at its max,
+ *    and refuses the plugin at the first bad value; during a run a bad value
+ *    goes to the stability guard, which names the plugin. MPM
+ *    limits the step with it (CFL); SPH takes it as the sound speed c0 of its
+ *    Tait pressure.
+ *
+ * 5. Concurrency. init is called from one thread while a scene is built.
+ *    stress, wave_speed, plastic_J, viscosity and blend are called from many
+ *    OpenMP threads at once, each call on its own point and state. A plugin
+ *    must therefore keep no writable global or static data: everything a call
+ *    needs is in its arguments, everything it keeps is in the point's state.
+ *
+ * 6. Calls. Every pointer the core passes is valid only for the duration of
+ *    the call. A callback returns: it does not exit, abort, longjmp or block
+ *    (the hearth command ends with status 4, naming the plugin and the
+ *    callback, when one crashes or calls exit). stress reports failure by its
+ *    return code, never by printing; a code, or a NaN or infinite tau, goes to
+ *    the stability guard, which stops the scene naming the plugin and the
+ *    code's describe_error text (or, under the rollback policy, retries the
+ *    step smaller).
  *
  * All tensors are 3x3, row-major (a[3*row+col]), in SI units. 2D scenes are
  * plane strain: the solver passes tensors whose z row and column describe no
  * deformation, and ignores the zz stress for motion (it still counts for
- * pressure and yield).
+ * pressure and yield). SPH keeps only the deviatoric part of tau / J; its
+ * pressure is the Tait equation's.
  */
 #ifndef HEARTH_MATERIAL_H
 #define HEARTH_MATERIAL_H
@@ -40,6 +101,13 @@ enum {
     HEARTH_NEEDS_THERMAL_EXPANSION = 1u << 3
 };
 
+/// The parameter names the core reserves (contract rule 3): its own per-material parameters, in the
+/// order of hearth_core_params(). The loader refuses a plugin parameter with any of these names.
+#define HEARTH_RESERVED_PARAM_NAMES                                                                          \
+    "conductivity", "specific_heat", "expansion", "reference_temperature", "gas_rate", "reaction_temperature", \
+        "reaction_width", "porosity", "saturation", "water_diffusivity", "evaporation", "water_stiffness",       \
+        "water_density", "bubble"
+
 /// One entry of a parameter schema. def must lie in [min, max].
 typedef struct hearth_param {
     const char *name; ///< identifier used in Lua and on the command line
@@ -49,14 +117,19 @@ typedef struct hearth_param {
 } hearth_param;
 
 /// One material point, solver-agnostic (MPM and SPH fill it the same way).
-/// Valid only for the duration of one callback.
+/// Valid only for the duration of one callback; its layout is fixed for a given
+/// HEARTH_MATERIAL_ABI (contract rule 1).
 typedef struct hearth_point {
     double grad_v[9]; ///< velocity gradient dv/dx over the step (1/s)
     double F[9];      ///< total deformation gradient at the END of the step (already updated by the solver)
     double dt;        ///< step (s); 0 means "evaluate only": do not advance time-dependent state
-    double temperature, porosity, saturation; ///< NaN when the field is off
-    const double *p;  ///< resolved parameters in schema order (curves already evaluated)
-    double *state;    ///< plugin-owned per-point state, state_size doubles
+    /// degrees C, (0..1), (0..1); NaN when the scene does not carry the field. Declare the ones the law
+    /// reads in `needs`: HEARTH_NEEDS_TEMPERATURE turns the temperature field on. Today MPM fills porosity
+    /// (from plastic_J and the core's `porosity`) when the material needs it or the scene has gas;
+    /// SPH passes NaN for porosity and saturation.
+    double temperature, porosity, saturation;
+    const double *p;  ///< resolved parameters in schema order (curves evaluated, blends applied), nparams doubles
+    double *state;    ///< plugin-owned per-point state, state_size doubles (may be NULL when state_size is 0)
 } hearth_point;
 
 /// The descriptor a plugin returns. Static storage, never freed by the core.
@@ -71,12 +144,15 @@ typedef struct hearth_material {
     int state_size;  ///< doubles of per-point state (0 allowed)
     unsigned needs;  ///< HEARTH_NEEDS_* bits
 
-    /// Required. Set the initial state of a point at rest (F = I).
+    /// Required. Set the initial state of a point at rest (F = I). state is never NULL here; the
+    /// core may skip the call for a material whose state_size is 0.
     void (*init)(const double *p, double *state);
-    /// Required. Advance state over pt->dt and write the Kirchhoff stress tau = J sigma.
-    /// Returns 0 on success, or a plugin-specific positive code explained by describe_error.
+    /// Required. Advance state over pt->dt and write the Kirchhoff stress tau = J sigma (Pa).
+    /// Returns 0 on success, or a plugin-specific positive code explained by describe_error; a code
+    /// goes to the stability guard like a NaN stress (contract rule 6). Called concurrently (rule 5).
     int (*stress)(hearth_point *pt, double tau[9]);
-    /// Required. An upper bound of the speed of elastic/pressure waves (m/s) for the CFL limit.
+    /// Required. An upper bound of the speed of elastic/pressure waves (m/s): the CFL limit under MPM,
+    /// the Tait sound speed under SPH. Finite and > 0 (contract rule 4). state is NULL when state_size is 0.
     double (*wave_speed)(const double *p, const double *state);
     /// Optional (may be NULL). Blend k parameter sets with weights alpha (summing to 1) into out.
     int (*blend)(int k, const double *alpha, const double *const *pk, double *out);

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# plugin_sdk_test.sh CASE HEARTH BUILD_ROOT SOURCE_ROOT CC: a plugin author's
+# view of hearth. The headers are taken from `meson install --tags devel` into
+# a scratch folder, not from the source tree, so a helper that lives only in a
+# private header, or a header that is not installed, fails here.
+set -u
+case_name=$1 hearth=$2 build=$3 src=$4 cc=$5
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+meson install -C "$build" --no-rebuild --quiet --tags devel --destdir "$tmp/root" >"$tmp/install.txt" 2>&1 ||
+    fail "meson install --tags devel: $(cat "$tmp/install.txt")"
+pc=$(find "$tmp/root" -name hearth.pc | head -1)
+[ -n "$pc" ] || fail "hearth.pc was not installed"
+# --cflags through the installed hearth.pc, rebased into the scratch root, as an author's build reads it
+cflags=$(PKG_CONFIG_PATH=$(dirname "$pc") PKG_CONFIG_SYSROOT_DIR="$tmp/root" pkg-config --cflags hearth) ||
+    fail "pkg-config --cflags hearth"
+inc=$(find "$tmp/root" -type d -path '*/include/hearth' | head -1)
+for h in material.h tensor.h; do [ -f "$inc/$h" ] || fail "<hearth/$h> is not installed"; done
+# the project's own warnings, as errors
+warn="-std=c17 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes -Werror"
+
+case "$case_name" in
+plugin_sdk_headers_standalone)
+    # each plugin header compiles alone, in C and in C++, and tensor.h defines no symbol
+    for h in material.h tensor.h; do
+        printf '#include <hearth/%s>\n' "$h" >"$tmp/one.c"
+        "$cc" $warn $cflags -c "$tmp/one.c" -o "$tmp/one.o" 2>"$tmp/err.txt" || fail "<hearth/$h> alone: $(cat "$tmp/err.txt")"
+        [ -z "$(nm --defined-only "$tmp/one.o" | awk '$2 ~ /^[TDBRC]$/')" ] ||
+            fail "<hearth/$h> defines symbols: $(nm --defined-only "$tmp/one.o")"
+        if command -v c++ >/dev/null; then
+            printf '#include <hearth/%s>\n' "$h" >"$tmp/one.cc"
+            c++ -std=c++17 -Wall -Wextra -Werror $cflags -c "$tmp/one.cc" -o "$tmp/one_cc.o" 2>"$tmp/err.txt" ||
+                fail "<hearth/$h> from C++: $(cat "$tmp/err.txt")"
+        fi
+    done
+    ;;
+plugin_sdk_out_of_tree)
+    # the shipped plugins built as an outside author builds them: installed headers, libm, nothing else
+    for p in elastic snow_plastic cam_clay_dough von_mises_sauce maxwell_sph newtonian; do
+        "$cc" $warn -O2 -fPIC -shared -fvisibility=hidden $cflags "$src/plugins/$p.c" -o "$tmp/hearth_$p.so" -lm \
+            2>"$tmp/err.txt" || fail "$p.c with only the installed headers: $(cat "$tmp/err.txt")"
+        # no symbol wanted from the host: everything undefined is libc's or libm's
+        undef=$(nm -D --undefined-only "$tmp/hearth_$p.so" | awk '{print $NF}' | grep -v '@GLIBC' | grep -vE '^(_ITM_|__gmon_start__|__cxa_finalize)')
+        [ -z "$undef" ] || fail "$p needs symbols from the host: $undef"
+        out=$("$hearth" plugin check "$tmp/hearth_$p.so" 2>&1) || fail "plugin check $p (exit $?): $out"
+    done
+    ;;
+*) fail "unknown case $case_name" ;;
+esac
