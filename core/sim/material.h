@@ -35,10 +35,10 @@ enum {
     /* n^p = J^P - 1 + n^p_0 (Ding et al. §5.4) from the plugin's plastic_J at the start of the step;
      * without the bit the point gets env->porosity as given. */
     MATERIAL_POROSITY_PLASTIC = 1u << 1,
-    /* The core's coupling stresses, each where the solver supplies the field (MPM today). */
-    MATERIAL_WATER_PRESSURE = 1u << 2, /* eq. 14: tau_w = -J c (s - s_0) I, when water_stiffness c > 0 */
-    MATERIAL_GAS_PRESSURE = 1u << 3,   /* eq. 13: tau_g = -n^g R theta / n^p I */
-    MATERIAL_EXPANSION = 1u << 4       /* eq. 10: tau -= c lambda J^E^2 (theta - theta_ref) I, when c lambda > 0 */
+    /* The core's thermal expansion, eq. 10: tau -= c lambda J^E^2 (theta - theta_ref) I, when c lambda > 0.
+     * The gas (eq. 13) and water (eq. 14) pressures are added when env->gas and env->saturation0 are
+     * non-NULL: a bit and two pointers that MPM's instantiations know at compile time or once per block. */
+    MATERIAL_EXPANSION = 1u << 2
 };
 
 /* The door's result beyond the plugin's own positive codes: tau came back NaN or infinite. */
@@ -51,8 +51,11 @@ typedef struct material_env {
     double temperature; /* degrees C, NaN when the scene has no temperature */
     double saturation;  /* (0..1), NaN when the scene has no water */
     double porosity;    /* passed as is without MATERIAL_POROSITY_PLASTIC (NaN: not supplied) */
-    double gas;         /* n^g (mol/m^3), read with MATERIAL_GAS_PRESSURE */
-    double saturation0; /* s_0, read with MATERIAL_WATER_PRESSURE */
+    /* Per-particle columns read at [index] only by the term that needs them, so a solver hands
+     * over its columns without loading a value it may not use. NULL: the scene has no such field. */
+    const double *gas;         /* n^g (mol/m^3): gas pressure, eq. 13: tau_g = -n^g R theta / n^p I */
+    const double *saturation0; /* s_0: water pressure, eq. 14: tau_w = -J c (s - s_0) I, when water_stiffness c > 0 */
+    int index;
 } material_env;
 
 MATERIAL_INLINE int material_finite9(const double *a) {
@@ -87,27 +90,28 @@ MATERIAL_INLINE int material_point_eval(const hearth_material *m, const double *
     int code = m->stress(pt, tau);
     if (!code && !material_finite9(tau)) code = MATERIAL_NONFINITE;
     if (code && (fl & MATERIAL_ZERO_FAILED)) memset(tau, 0, 9 * sizeof(double));
-    if (!(fl & (MATERIAL_WATER_PRESSURE | MATERIAL_GAS_PRESSURE | MATERIAL_EXPANSION))) return code;
+    const double *gas = env->gas, *s0 = env->saturation0;
+    if (!gas && !s0 && !(fl & MATERIAL_EXPANSION)) return code;
 
     /* J^P after this step's plastic flow, for the gas and expansion terms */
     const double cl = core[CP_EXPANSION];
     const int expand = (fl & MATERIAL_EXPANSION) && cl > 0;
     double JP1 = 1.0;
-    if (m->plastic_J && ((fl & MATERIAL_GAS_PRESSURE) || expand)) {
+    if (m->plastic_J && (gas || expand)) {
         plugin_call_enter(m, "plastic_J");
         JP1 = m->plastic_J(pt->p, pt->state);
     }
     const double J = env->J;
-    if ((fl & MATERIAL_WATER_PRESSURE) && core[CP_WATER_STIFFNESS] > 0) { /* water pressure (eq. 14) */
-        const double tw = -J * core[CP_WATER_STIFFNESS] * (pt->saturation - env->saturation0);
+    if (s0 && core[CP_WATER_STIFFNESS] > 0) { /* water pressure (eq. 14) */
+        const double tw = -J * core[CP_WATER_STIFFNESS] * (pt->saturation - s0[env->index]);
         tau[0] += tw;
         tau[4] += tw;
         tau[8] += tw;
     }
-    if (fl & MATERIAL_GAS_PRESSURE) { /* gas pressure (eq. 13): tau_g = J sigma_g = -n^g R theta / n^p I */
+    if (gas) { /* gas pressure (eq. 13): tau_g = J sigma_g = -n^g R theta / n^p I */
         /* porosity after this step's plastic flow */
         const double np = m->plastic_J ? gas_porosity(JP1, core[CP_POROSITY0]) : pt->porosity;
-        const double tg = gas_tau(env->gas, env->temperature, np);
+        const double tg = gas_tau(gas[env->index], env->temperature, np);
         tau[0] += tg;
         tau[4] += tg;
         tau[8] += tg;

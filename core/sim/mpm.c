@@ -185,6 +185,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
     const int stride = ps->state_stride, apic = s->def.transfer == 0;
     double pscratch[SCENE_MAX_PARAMS], cmax = 0, numax = 0; /* numax: largest kinematic viscosity a plugin applies (m^2/s) */
+    /* what this scene supplies to the material door, the same for every particle; gas needs the porosity */
+    const unsigned env_flags = MATERIAL_ZERO_FAILED | (Gcol ? MATERIAL_POROSITY_PLASTIC : 0u) | (HEAT ? MATERIAL_EXPANSION : 0u);
 
     for (int i = pb.start; i < pb.end; i++) {
         const double *x = X + 3 * i, *v = V + 3 * i, *C = Cc + 9 * i;
@@ -212,15 +214,14 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
             pt.state = state ? state + (size_t)i * stride : NULL;
             /* the fields this scene carries, and the core's terms on them (material.h) */
             const material_env env = {
-                .flags = MATERIAL_ZERO_FAILED | (Gcol || (ms->m->needs & HEARTH_NEEDS_POROSITY) ? MATERIAL_POROSITY_PLASTIC : 0u) |
-                         (Wcol ? MATERIAL_WATER_PRESSURE : 0u) | (Gcol ? MATERIAL_GAS_PRESSURE : 0u) |
-                         (Tcol ? MATERIAL_EXPANSION : 0u),
+                .flags = env_flags | (ms->m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u),
                 .J = J,
                 .temperature = Tcol ? Tcol[i] : NAN,
                 .saturation = Wcol ? Wcol[i] / (ms->core[CP_WATER_DENSITY] * J * V0[i]) : NAN,
                 .porosity = NAN,
-                .gas = Gcol ? Gcol[i] : 0.0,
-                .saturation0 = Wcol ? S0col[i] : 0.0,
+                .gas = Gcol,
+                .saturation0 = S0col,
+                .index = i,
             };
             const int code = material_point_eval(ms->m, ms->core, &pt, &env, tau);
             if (code) record_fail(pp, i, code == MATERIAL_NONFINITE ? FAIL_STRESS : FAIL_PLUGIN, code == MATERIAL_NONFINITE ? 0 : code);
