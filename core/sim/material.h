@@ -64,15 +64,15 @@ MATERIAL_INLINE int material_finite9(const double *a) {
     return 1;
 }
 
-/* Fill pt's temperature, porosity and saturation from env, call the plugin's
- * stress (recorded, so a crash names the plugin and the callback), and add
- * the core's coupling terms env->flags asks for. core is the material's core
- * parameters (params.h CP_*); it may be NULL when env asks for neither the
- * plastic porosity nor a coupling term. Returns 0, the plugin's code, or
- * MATERIAL_NONFINITE. The caller leaves the plugin-call record afterwards
- * (plugin_call_leave), so it can make further calls under the same record. */
-MATERIAL_INLINE int material_point_eval(const hearth_material *m, const double *core, hearth_point *pt,
-                                        const material_env *env, double tau[9]) {
+/* The first half of the door: fill pt's temperature, porosity and saturation
+ * from env and call the plugin's stress (recorded, so a crash names the plugin
+ * and the callback). core is the material's core parameters (params.h CP_*);
+ * it may be NULL when env asks for neither the plastic porosity nor a coupling
+ * term. Returns 0, the plugin's code, or MATERIAL_NONFINITE. The caller leaves
+ * the plugin-call record afterwards (plugin_call_leave), so it can make
+ * further calls under the same record. */
+MATERIAL_INLINE int material_point_stress(const hearth_material *m, const double *core, hearth_point *pt,
+                                          const material_env *env, double tau[9]) {
     const unsigned fl = env->flags;
     pt->temperature = env->temperature;
     pt->saturation = env->saturation;
@@ -88,10 +88,19 @@ MATERIAL_INLINE int material_point_eval(const hearth_material *m, const double *
     }
     plugin_call_enter(m, "stress");
     int code = m->stress(pt, tau);
-    if (!code && !material_finite9(tau)) code = MATERIAL_NONFINITE;
-    if (code && (fl & MATERIAL_ZERO_FAILED)) memset(tau, 0, 9 * sizeof(double));
+    if (__builtin_expect(!code && !material_finite9(tau), 0)) code = MATERIAL_NONFINITE;
+    if (__builtin_expect(code != 0, 0) && (fl & MATERIAL_ZERO_FAILED)) memset(tau, 0, 9 * sizeof(double));
+    return code;
+}
+
+/* The second half of material_point_eval: the core's coupling terms, after the
+ * plugin's stress. MPM calls the halves apart so it can read the step limits
+ * (wave_speed, viscosity) between them while the state is in cache. */
+MATERIAL_INLINE void material_point_couple(const hearth_material *m, const double *core, hearth_point *pt,
+                                           const material_env *env, double tau[9]) {
+    const unsigned fl = env->flags;
     const double *gas = env->gas, *s0 = env->saturation0;
-    if (!gas && !s0 && !(fl & MATERIAL_EXPANSION)) return code;
+    if (!gas && !s0 && !(fl & MATERIAL_EXPANSION)) return;
 
     /* J^P after this step's plastic flow, for the gas and expansion terms */
     const double cl = core[CP_EXPANSION];
@@ -129,6 +138,14 @@ MATERIAL_INLINE int material_point_eval(const hearth_material *m, const double *
         tau[4] -= th;
         tau[8] -= th;
     }
+}
+
+/* The door: material_point_stress, then material_point_couple. Returns 0, the
+ * plugin's code, or MATERIAL_NONFINITE. */
+MATERIAL_INLINE int material_point_eval(const hearth_material *m, const double *core, hearth_point *pt,
+                                        const material_env *env, double tau[9]) {
+    const int code = material_point_stress(m, core, pt, env, tau);
+    material_point_couple(m, core, pt, env, tau);
     return code;
 }
 #endif

@@ -223,7 +223,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 .saturation0 = S0col,
                 .index = i,
             };
-            const int code = material_point_eval(ms->m, ms->core, &pt, &env, tau);
+            const int code = material_point_stress(ms->m, ms->core, &pt, &env, tau);
             if (code) record_fail(pp, i, code == MATERIAL_NONFINITE ? FAIL_STRESS : FAIL_PLUGIN, code == MATERIAL_NONFINITE ? 0 : code);
             /* the next step's limits, from the state the plugin just wrote and the
              * parameters it used: here both are in cache, and G2P need not
@@ -242,6 +242,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 const double nu = ms->m->viscosity(pt.p, ms->m->state_size > 0 ? pt.state : NULL) / pt.p[ms->density_index];
                 if (nu > numax) numax = nu;
             }
+            material_point_couple(ms->m, ms->core, &pt, &env, tau); /* the door's second half: the core's terms */
             plugin_call_leave();
         }
         /* affine momentum with the stress folded in (MLS-MPM): Q = m C - dt V0 D^-1 tau */
