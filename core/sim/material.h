@@ -1,7 +1,7 @@
 /* material.h: the one door to a material point. Every caller that asks a
- * plugin for a stress (MPM's P2G, SPH's stress phase, the probes, `hearth
- * plugin check` and the rheometer) goes through material_point_eval(), so the
- * fields the point carries, the recording of the plugin call (plugins.h) and
+ * plugin for a stress (MPM's P2G, SPH's stress phase, the probes, the guard's
+ * cause attribution, `hearth plugin check` and the rheometer) goes through
+ * material_point_eval() or its two halves, so the fields the point carries, the recording of the plugin call (plugins.h) and
  * the core's coupling stresses are written once.
  *
  * The caller fills the point's kinematics and parameters (grad_v, F, dt, p,
