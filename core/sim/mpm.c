@@ -24,6 +24,7 @@
 #include "plugins.h"
 #include "scene.h"
 #include "gas.h"
+#include "material.h"
 #include "thermal.h"
 #include "water.h"
 #include "boundary.h"
@@ -184,6 +185,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
     const int stride = ps->state_stride, apic = s->def.transfer == 0;
     double pscratch[SCENE_MAX_PARAMS], cmax = 0, numax = 0; /* numax: largest kinematic viscosity a plugin applies (m^2/s) */
+    /* what this scene supplies to the material door, the same for every particle; gas needs the porosity */
+    const unsigned env_flags = MATERIAL_ZERO_FAILED | (Gcol ? MATERIAL_POROSITY_PLASTIC : 0u) | (HEAT ? MATERIAL_EXPANSION : 0u);
 
     for (int i = pb.start; i < pb.end; i++) {
         const double *x = X + 3 * i, *v = V + 3 * i, *C = Cc + 9 * i;
@@ -207,31 +210,21 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
             memcpy(pt.grad_v, C, sizeof pt.grad_v);
             memcpy(pt.F, F, sizeof pt.F);
             pt.dt = dt;
-            pt.temperature = Tcol ? Tcol[i] : NAN;
             pt.p = scene_params_for(s, mat[i], i, pscratch);
             pt.state = state ? state + (size_t)i * stride : NULL;
-            /* porosity n^p = J^P - 1 + n^p_0 (§5.4), from the plastic volume change at the start of the step */
-            if (Gcol || (ms->m->needs & HEARTH_NEEDS_POROSITY)) {
-                double JP = 1.0;
-                if (ms->m->plastic_J) {
-                    plugin_call_enter(ms->m, "plastic_J");
-                    JP = ms->m->plastic_J(pt.p, pt.state);
-                }
-                pt.porosity = gas_porosity(JP, ms->core[CP_POROSITY0]);
-            } else {
-                pt.porosity = NAN;
-            }
-            const double rho0w = ms->core[CP_WATER_DENSITY];
-            pt.saturation = Wcol ? Wcol[i] / (rho0w * J * V0[i]) : NAN;
-            plugin_call_enter(ms->m, "stress"); /* a crash in the plugin names it (plugins.h) */
-            int code = ms->m->stress(&pt, tau);
-            if (code) {
-                record_fail(pp, i, FAIL_PLUGIN, code);
-                memset(tau, 0, sizeof tau);
-            } else if (!all_finite(tau, 9)) {
-                record_fail(pp, i, FAIL_STRESS, 0);
-                memset(tau, 0, sizeof tau);
-            }
+            /* the fields this scene carries, and the core's terms on them (material.h) */
+            const material_env env = {
+                .flags = env_flags | (ms->m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u),
+                .J = J,
+                .temperature = Tcol ? Tcol[i] : NAN,
+                .saturation = Wcol ? Wcol[i] / (ms->core[CP_WATER_DENSITY] * J * V0[i]) : NAN,
+                .porosity = NAN,
+                .gas = Gcol,
+                .saturation0 = S0col,
+                .index = i,
+            };
+            const int code = material_point_stress(ms->m, ms->core, &pt, &env, tau);
+            if (code) record_fail(pp, i, code == MATERIAL_NONFINITE ? FAIL_STRESS : FAIL_PLUGIN, code == MATERIAL_NONFINITE ? 0 : code);
             /* the next step's limits, from the state the plugin just wrote and the
              * parameters it used: here both are in cache, and G2P need not
              * evaluate the temperature curves a second time */
@@ -249,41 +242,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 const double nu = ms->m->viscosity(pt.p, ms->m->state_size > 0 ? pt.state : NULL) / pt.p[ms->density_index];
                 if (nu > numax) numax = nu;
             }
-            /* J^P after this step's plastic flow, for the gas and expansion terms below */
-            const double cl = ms->core[CP_EXPANSION];
-            double JP1 = 1.0;
-            if (ms->m->plastic_J && (Gcol || (cl > 0 && Tcol))) {
-                plugin_call_enter(ms->m, "plastic_J");
-                JP1 = ms->m->plastic_J(pt.p, pt.state);
-            }
+            material_point_couple(ms->m, ms->core, &pt, &env, tau); /* the door's second half: the core's terms */
             plugin_call_leave();
-            if (Wcol && ms->core[CP_WATER_STIFFNESS] > 0) { /* water pressure (eq. 14): tau_w = -J c (s - s_0) I */
-                const double tw = -J * ms->core[CP_WATER_STIFFNESS] * (pt.saturation - S0col[i]);
-                tau[0] += tw;
-                tau[4] += tw;
-                tau[8] += tw;
-            }
-            if (Gcol) { /* gas pressure (eq. 13): tau_g = J sigma_g = -n^g R theta / n^p I */
-                /* porosity after this step's plastic flow */
-                const double np = ms->m->plastic_J ? gas_porosity(JP1, ms->core[CP_POROSITY0]) : pt.porosity;
-                const double tg = gas_tau(Gcol[i], Tcol[i], np);
-                tau[0] += tg;
-                tau[4] += tg;
-                tau[8] += tg;
-            }
-            /* thermal expansion (Ding et al. eq. 10): sigma += -c lambda J (theta - theta_ref) I, so tau = J sigma.
-             * J is the elastic J^E = J / J^P of a plastic material: the potential
-             * penalises F^{s,E} only (§5.2). With the total J, a skeleton that
-             * yields in tension (Cam-clay, eq. 12, M > 0) grows J^P, which raised
-             * the expansion pressure as J^2, which grew J^P further: the batter
-             * of the pancake and the lava cake swelled x4 and blew up. */
-            if (cl > 0 && Tcol) {
-                const double JE = J / JP1;
-                const double th = cl * JE * JE * (Tcol[i] - ms->core[CP_REFERENCE_T]);
-                tau[0] -= th;
-                tau[4] -= th;
-                tau[8] -= th;
-            }
         }
         /* affine momentum with the stress folded in (MLS-MPM): Q = m C - dt V0 D^-1 tau */
         const double m = M[i], k0 = dt * V0[i] * Dinv, mC = apic ? m : 0.0; /* PIC drops the affine momentum */

@@ -12,6 +12,7 @@
 #include "alloc.h"
 #include "error.h"
 #include "gas.h"
+#include "material.h"
 #include "scene.h"
 #include "sph.h"
 #include "tensor.h"
@@ -108,8 +109,6 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
     memcpy(pt.grad_v, pcold(ps, PC_C) + 9 * i, sizeof pt.grad_v);
     memcpy(pt.F, pcold(ps, PC_F) + 9 * i, sizeof pt.F);
     pt.dt = 0;
-    pt.temperature = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE)[i] : NAN;
-    pt.saturation = ps->enabled & (1u << PC_WATER) ? water_saturation(s, i) : NAN;
     double pscratch[SCENE_MAX_PARAMS];
     pt.p = scene_params_for(s, m, i, pscratch);
     pt.state = NULL;
@@ -117,16 +116,17 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
         memcpy(state_copy, pcold(ps, PC_STATE) + (size_t)i * ps->state_stride, sizeof(double) * (size_t)ps->state_stride);
         pt.state = state_copy;
     }
-    double JP = 1.0;
-    if (ms->m->plastic_J) {
-        plugin_call_enter(ms->m, "plastic_J");
-        JP = ms->m->plastic_J(pt.p, pt.state);
-    }
-    pt.porosity = gas_porosity(JP, ms->core[CP_POROSITY0]);
-    plugin_call_enter(ms->m, "stress");
-    const int rc = ms->m->stress(&pt, tau);
+    /* The plugin's own stress, as it has always been shown: the porosity from
+     * J^P whatever the material declares, and none of the core's coupling
+     * terms (the pressure fields show those). A non-finite tau is shown as is. */
+    const material_env env = {
+        .flags = MATERIAL_POROSITY_PLASTIC,
+        .temperature = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE)[i] : NAN,
+        .saturation = ps->enabled & (1u << PC_WATER) ? water_saturation(s, i) : NAN,
+    };
+    const int rc = material_point_eval(ms->m, ms->core, &pt, &env, tau);
     plugin_call_leave();
-    if (rc) {
+    if (rc > 0) {
         for (int k = 0; k < 9; k++) tau[k] = NAN;
     }
 }

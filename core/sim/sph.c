@@ -31,6 +31,7 @@
 
 #include "alloc.h"
 #include "error.h"
+#include "material.h"
 #include "sph_kernel.h"
 #include "sph_neighbours.h"
 #include "tensor.h"
@@ -512,22 +513,16 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         memcpy(pt.grad_v, L, sizeof pt.grad_v);
         memcpy(pt.F, Fi, sizeof pt.F);
         pt.dt = dt;
-        pt.temperature = T ? T[i] : NAN;
-        pt.porosity = pt.saturation = NAN;
         pt.p = p;
         pt.state = state ? state + (size_t)i * stride : NULL;
+        /* SPH carries no porosity or water, and adds none of the core's coupling terms (material.h) */
+        const material_env env = {.temperature = T ? T[i] : NAN, .saturation = NAN, .porosity = NAN};
         double tau[9];
-        plugin_call_enter(ms->m, "stress");
-        const int code = ms->m->stress(&pt, tau);
+        const int code = material_point_eval(ms->m, ms->core, &pt, &env, tau);
         plugin_call_leave();
-        if (code) {
+        if (code) { /* recorded below, in particle order: a plugin code, or -1 for a non-finite tau */
             Si[0] = NAN;
-            Si[1] = (double)code;
-            continue;
-        }
-        if (!finite_n(tau, 9)) {
-            Si[0] = NAN;
-            Si[1] = -1;
+            Si[1] = code == MATERIAL_NONFINITE ? -1.0 : (double)code;
             continue;
         }
         const double tr = (tau[0] + tau[4] + tau[8]) / 3;
