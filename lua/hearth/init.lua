@@ -366,6 +366,10 @@ local sph_flag_keys = { leapfrog = true, adaptive_h = true, tension = true, peri
 local contact = { "sticky", "slip", "separate", "grip" }
 
 --- A scene: h.scene{dim = 2, dx = 0.01, box = {{0,0},{1,1}}, gravity = {0,-9.81}, ...}
+-- The scene settings that take a word: h.scene checks them and so does --set.
+local scene_choices = { heat = { "explicit", "implicit" }, solver = { "mpm", "sph" }, guard = { "stop", "rollback" },
+  transfer = { "apic", "pic" } }
+
 function h.scene(o)
   o = o or {}
   if type(o) ~= "table" then error("h.scene: expected a table", 2) end
@@ -383,14 +387,12 @@ function h.scene(o)
     for _, k in ipairs { "dx", "cfl", "dt_max", "dim", "max_rollbacks", "heat_flip" } do
       if ks[k] then oo[k] = knob_number(k, ks[k]) end
     end
-    local knob_choices = { heat = { "explicit", "implicit" }, solver = { "mpm", "sph" }, guard = { "stop", "rollback" },
-      transfer = { "apic", "pic" } }
     for _, k in ipairs { "heat", "solver", "guard", "transfer" } do
       if ks[k] then
         local ok = false
-        for _, c in ipairs(knob_choices[k]) do ok = ok or ks[k]:lower() == c end
+        for _, c in ipairs(scene_choices[k]) do ok = ok or ks[k]:lower() == c end
         if not ok then
-          usage_error(("--set %s=%s: valid: %s"):format(k, ks[k], table.concat(knob_choices[k], ", ")), 2)
+          usage_error(("--set %s=%s: valid: %s"):format(k, ks[k], table.concat(scene_choices[k], ", ")), 2)
         end
         oo[k] = ks[k]
       end
@@ -402,7 +404,7 @@ function h.scene(o)
   end
   local dim = o.dim or 2
   if dim ~= 2 and dim ~= 3 then error(("h.scene: dim = %s; valid: 2, 3"):format(tostring(dim)), 2) end
-  local solver = check_choice(o.solver or "mpm", "h.scene: solver", { "mpm", "sph" })
+  local solver = check_choice(o.solver or "mpm", "h.scene: solver", scene_choices.solver)
   local sph
   if o.sph ~= nil then
     if type(o.sph) ~= "table" then error("h.scene: sph = {h_factor = 2.4, xsph0 = 0.05, ...}", 2) end
@@ -432,12 +434,12 @@ function h.scene(o)
     dt_max = check_number(o.dt_max or 0, "h.scene: dt_max", 0, 1e6, "s"),
     wall = check_choice(o.wall or "slip", "h.scene: wall", { "sticky", "slip", "separate" }),
     friction = check_number(o.friction or 0, "h.scene: friction", 0, 1e6),
-    guard = check_choice(o.guard or "stop", "h.scene: guard", { "stop", "rollback" }),
+    guard = check_choice(o.guard or "stop", "h.scene: guard", scene_choices.guard),
     max_rollbacks = check_number(o.max_rollbacks or 8, "h.scene: max_rollbacks", 0, 60),
     seed = check_number(o.seed or 1, "h.scene: seed", 0, 2 ^ 52),
-    heat_implicit = check_choice(o.heat or "explicit", "h.scene: heat", { "explicit", "implicit" }),
+    heat_implicit = check_choice(o.heat or "explicit", "h.scene: heat", scene_choices.heat),
     -- momentum transfer: APIC (Jiang et al. 2015) or PIC; temperature: FLIP (eq. 21) blended towards PIC
-    transfer = check_choice(o.transfer and tostring(o.transfer):lower() or "apic", "h.scene: transfer", { "apic", "pic" }),
+    transfer = check_choice(o.transfer and tostring(o.transfer):lower() or "apic", "h.scene: transfer", scene_choices.transfer),
     heat_flip = check_number(o.heat_flip or 1, "h.scene: heat_flip", 0, 1, "(1 FLIP, 0 PIC)"),
     oven_beta = 0,
     water_momentum = o.water_momentum and 1 or 0,
