@@ -25,8 +25,8 @@
 
 int boundary_needed(const hearth_scene *s) {
     if (!isnan(s->def.oven_temperature) && s->def.oven_beta > 0) return 1;
-    for (int m = 0; m < s->nmat; m++)
-        if (s->mats[m].core[CP_EVAPORATION] > 0 && (s->ps.enabled & (1u << PC_WATER))) return 1;
+    for (int m = 0; m < s->mats.n; m++)
+        if (s->mats.slot[m].core[CP_EVAPORATION] > 0 && (s->ps.enabled & (1u << PC_WATER))) return 1;
     return 0;
 }
 

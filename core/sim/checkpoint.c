@@ -242,9 +242,9 @@ static void put_clocks(ck_out *o, const hearth_scene *s) {
 
 static void put_materials(ck_out *o, const hearth_scene *s) {
     put(o, "MATS", 4);
-    put_u32(o, (uint32_t)s->nmat);
-    for (int i = 0; i < s->nmat; i++) {
-        const material_slot *ms = &s->mats[i];
+    put_u32(o, (uint32_t)s->mats.n);
+    for (int i = 0; i < s->mats.n; i++) {
+        const material_slot *ms = &s->mats.slot[i];
         put_str(o, ms->m->name); /* the name only: never the path it was loaded from */
         put_u32(o, (uint32_t)ms->m->abi_version);
         put_u64(o, schema_hash(ms->m));
@@ -588,7 +588,7 @@ static int check_column(ck_cursor *c, const hearth_scene *s, int col, int n) {
         const int *a = pcoli(ps, col);
         for (int i = 0; i < n; i++) {
             const int v = a[i];
-            if (col == PC_MAT && (v < 0 || v >= s->nmat)) return ck_fail(c, "a particle with an unknown material");
+            if (col == PC_MAT && (v < 0 || v >= s->mats.n)) return ck_fail(c, "a particle with an unknown material");
             if (col == PC_BODY && (v < -1 || v >= s->nbodies)) return ck_fail(c, "a particle with an unknown body");
             if (col == PC_FLAGS && (v & ~(PF_FIXED | PF_BOUNDARY))) return ck_fail(c, "a particle with unknown flags");
             if (col == PC_ID && (v < 0 || v >= s->next_id)) return ck_fail(c, "a particle id out of range");

@@ -1,31 +1,19 @@
 /* scene.h: the scene object (private). Owned by scene.c; mpm.c, guard.c,
- * probe.c and checkpoint.c read and step it. */
+ * probe.c and checkpoint.c read and step it. Each field module keeps its
+ * state in a struct of its own, declared in its header and held here by
+ * value: the materials (material.h) and, behind a pointer, SPH (sph.c). */
 #ifndef HEARTH_SCENE_H
 #define HEARTH_SCENE_H
 #include <stdint.h>
 
 #include "colliders.h"
-#include "curves.h"
 #include "grid.h"
+#include "material.h"
 #include "params.h"
 #include "particles.h"
 
-typedef struct material_slot {
-    const hearth_plugin *plugin;
-    const hearth_material *m;
-    double *params;     /* resolved, schema order */
-    int density_index;  /* schema index of "density" */
-    double wave_speed;  /* cached when the plugin is stateless (state_size 0) */
-    curve *curves;      /* parameters that follow temperature */
-    int ncurves;
-    double core[CP_COUNT]; /* field properties (params.h CP_*) */
-    int mix_k;             /* a mixture (mixing.c): number of constituents, 0 for a plain material */
-    double *mix_params;    /* mix_k parameter sets, schema order */
-} material_slot;
-
-/* Plugins may declare at most this many parameters (per-particle resolution
- * uses a stack buffer of this size). */
-#define SCENE_MAX_PARAMS 256
+/* The stack buffer for a particle's resolved parameters (material_params). */
+#define SCENE_MAX_PARAMS MATERIAL_MAX_PARAMS
 /* Below this many particles a step runs on one thread: waking the pool costs
  * more than it saves (a 129-particle scene spent 6 s of 11 in the kernel). */
 #define SCENE_PARALLEL_MIN 2048
@@ -90,8 +78,7 @@ struct hearth_scene {
 
     particles ps;
     grid g;
-    material_slot *mats;
-    int nmat, capmat;
+    material_table mats;    /* material.c */
     int mix_mat;            /* the mixture material (mixing.c), -1 when none */
     double *mix_nodes;      /* its node sums, (k + 1) per node */
     size_t mix_cap;
@@ -143,9 +130,11 @@ struct hearth_scene {
 };
 
 /* scene.c */
-/* Parameters of particle i's material, with temperature curves evaluated into
- * scratch (SCENE_MAX_PARAMS doubles) when the material has any. */
-const double *scene_params_for(const hearth_scene *s, int mat, int particle, double *scratch);
+/* Add a material from plugin (a name or path) with its parameters and turn on
+ * the fields it needs: hearth_scene_add_material without clearing err, for
+ * the core's own callers (a mixture's first constituent, mixing.c). */
+int scene_add_material(hearth_scene *s, const char *plugin, const char *const *names, const double *values, int n,
+                       hearth_error *err);
 /* Turn the temperature field on (room temperature for particles that have none). */
 hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err);
 /* Largest wave speed over moving particles (s->c_max), after particles change. */

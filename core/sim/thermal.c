@@ -41,8 +41,8 @@ double thermal_dt_limit(const hearth_scene *s) {
     for (int c = 0; c < s->ncol; c++)
         if (!isnan(s->cols[c].temperature) && s->cols[c].beta > beta) beta = s->cols[c].beta;
     double dt = INFINITY;
-    for (int m = 0; m < s->nmat; m++) {
-        const material_slot *ms = &s->mats[m];
+    for (int m = 0; m < s->mats.n; m++) {
+        const material_slot *ms = &s->mats.slot[m];
         const double k = ms->core[CP_CONDUCTIVITY], ra = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
         /* forward Euler on the B-spline Laplacian: rho alpha dx^2 / (2 dim kappa) */
         if (k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * s->def.dim * k));
@@ -57,7 +57,7 @@ double thermal_energy(const hearth_scene *s) {
     double e = 0;
     const double *T = pcold(&s->ps, PC_TEMPERATURE), *m = pcold(&s->ps, PC_MASS);
     const int *mat = pcoli(&s->ps, PC_MAT);
-    for (int i = 0; i < s->ps.n; i++) e += m[i] * s->mats[mat[i]].core[CP_SPECIFIC_HEAT] * (T[i] + KELVIN);
+    for (int i = 0; i < s->ps.n; i++) e += m[i] * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT] * (T[i] + KELVIN);
     return e;
 }
 

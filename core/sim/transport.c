@@ -131,7 +131,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
             for (int k = 0; k < 3; k++) dw[d][k] *= g->inv_dx;
             base[d] = bb - bc[d] * GRID_B;
         }
-        const material_slot *ms = &s->mats[mat[i]];
+        const material_slot *ms = &s->mats.slot[mat[i]];
         const double Vp = s->vol[i]; /* J V_0, from P2G */
         const int bnd = (flags[i] & PF_BOUNDARY) != 0;
         /* value and gradient at the particle, contracted one axis at a time (the

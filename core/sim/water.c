@@ -53,14 +53,14 @@
 int water_active(const hearth_scene *s) { return (s->ps.enabled & (1u << PC_WATER)) != 0; }
 
 int water_material_wants(const hearth_scene *s, int mat) {
-    const material_slot *ms = &s->mats[mat];
+    const material_slot *ms = &s->mats.slot[mat];
     return ms->core[CP_WATER_DIFFUSIVITY] > 0 || ms->core[CP_EVAPORATION] > 0 || ms->core[CP_WATER_STIFFNESS] > 0 ||
            (ms->m->needs & HEARTH_NEEDS_SATURATION);
 }
 
 static double capacity(const hearth_scene *s, int i) { /* rho_0^w J V_0: water mass at saturation 1 */
     const particles *ps = &s->ps;
-    const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
+    const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
     return ms->core[CP_WATER_DENSITY] * t3_det(pcold(ps, PC_F) + 9 * i) * pcold(ps, PC_VOL0)[i];
 }
 
@@ -69,7 +69,7 @@ double water_saturation(const hearth_scene *s, int i) { return pcold(&s->ps, PC_
 void water_init_particles(hearth_scene *s, int from, int to, double sat) {
     particles *ps = &s->ps;
     for (int i = from; i < to; i++) {
-        const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
+        const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
         double s0 = isnan(sat) ? ms->core[CP_SATURATION0] : sat;
         if (s0 < WATER_SATURATION_FLOOR) s0 = WATER_SATURATION_FLOOR;
         pcold(ps, PC_SAT0)[i] = s0;
@@ -109,7 +109,7 @@ static void scan_limits(const hearth_scene *s, double *dmax, double *emax) {
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     double d = 0, e = 0;
     for (int i = 0; i < ps->n; i++) {
-        const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
+        const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
         particle_limits(ms, theta_abs(T, i, ms), water_saturation(s, i), &d, &e);
     }
     *dmax = d;
@@ -189,7 +189,7 @@ double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) 
     particles *ps = &s->ps;
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     double *W = pcold(ps, PC_WATER);
-    const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
+    const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
     const double cap = ms->core[CP_WATER_DENSITY] * s->vol[i], before = W[i]; /* capacity(), with P2G's volume */
     double m = before + cap * r;
     if (m < WATER_SATURATION_FLOOR * cap) m = WATER_SATURATION_FLOOR * cap;
