@@ -237,7 +237,7 @@ static void put_clocks(ck_out *o, const hearth_scene *s) {
     put_u64(o, s->rng);
     put_i32(o, s->next_id);
     put_i32(o, s->nbodies);
-    put_f64(o, s->water_lost);
+    put_f64(o, s->water.lost);
 }
 
 static void put_materials(ck_out *o, const hearth_scene *s) {
@@ -303,7 +303,7 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
     if (s->def.solver != HEARTH_SOLVER_MPM) /* SPH (sph.c): its options and final densities are not in the format yet */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of SPH scenes (solver = \"sph\") are not supported yet",
                        path);
-    if (s->mix_mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
+    if (s->mix.mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
                        path);
     char *img = NULL;
@@ -657,7 +657,7 @@ static void set_clocks(hearth_scene *s, const ck_clocks *k) {
     s->rng = k->rng;
     s->next_id = k->next_id;
     s->nbodies = k->nbodies;
-    s->water_lost = k->water_lost;
+    water_restore_lost(&s->water, k->water_lost);
 }
 
 hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name, hearth_error *err) {

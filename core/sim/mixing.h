@@ -7,6 +7,20 @@
 
 struct hearth_scene;
 
+/* The mixture's own state (mixing.c), held by value in the scene as s->mix.
+ * Only mixing.c writes it; bodies.c, probe.c, scene.c and checkpoint.c read
+ * mat. */
+typedef struct mixing_state {
+    int mat;       /* the mixture material, -1 when none */
+    double *nodes; /* its node sums, (k + 1) per node, indexed like the grid's blocks */
+    size_t cap;    /* doubles */
+} mixing_state;
+
+/// No mixture (allocates nothing).
+void mixing_init(mixing_state *x);
+/// Free the node sums; x is empty afterwards (mixing_init's state).
+void mixing_free(mixing_state *x);
+
 /// Does the scene hold a mixture material?
 int mixing_active(const struct hearth_scene *s);
 /// After the sort, before P2G: each mixture particle's dynamic ratios are the

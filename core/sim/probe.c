@@ -152,7 +152,7 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_GAS: out[0] = pcold(ps, PC_GAS)[i]; break;
     case F_SATURATION: out[0] = water_saturation(s, i); break;
     case F_MIX_RATIO: /* NaN on other materials' particles: they are not part of the mixture */
-        out[0] = pcoli(ps, PC_MAT)[i] == s->mix_mat ? pcold(ps, PC_MIXD)[8 * i] : NAN;
+        out[0] = pcoli(ps, PC_MAT)[i] == s->mix.mat ? pcold(ps, PC_MIXD)[8 * i] : NAN;
         break;
     case F_WATER_MASS: /* as a density: water mass over the particle's current volume */
         out[0] = pcold(ps, PC_WATER)[i] / (pcold(ps, PC_VOL0)[i] * t3_det(F));

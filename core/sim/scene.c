@@ -183,7 +183,10 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
     s->def = d;
     s->dt_scale = 1.0;
     material_table_init(&s->mats);
-    s->mix_mat = -1;
+    mixing_init(&s->mix);
+    thermal_init(&s->heat);
+    boundary_init(&s->boundary);
+    water_init(&s->water);
     s->rng = d.seed ? d.seed : 1;
     particles_init(&s->ps);
     particles_init(&s->snap);
@@ -228,12 +231,10 @@ void hearth_scene_destroy(hearth_scene *s) {
     mem_free(s->colour_pb, sizeof(int) * (size_t)s->pbcap);
     mem_free(s->partial, sizeof(pb_partial) * (size_t)s->pbcap);
     mem_free(s->counts, sizeof(int) * ((size_t)s->g.nblocks + 1));
-    mem_free(s->bnd_coef, sizeof(double) * (size_t)s->bnd_cap);
-    mem_free(s->bnd_temp, sizeof(double) * (size_t)s->bnd_cap);
-    mem_free(s->cg_partial, sizeof(double) * (size_t)s->cg_cap);
-    mem_free(s->bnd_area, sizeof(double) * (size_t)s->bnd_area_cap);
-    mem_free(s->bnd_blocks, (size_t)s->bnd_blocks_cap);
-    mem_free(s->mix_nodes, sizeof(double) * s->mix_cap);
+    thermal_free(&s->heat);
+    boundary_free(&s->boundary);
+    water_free(&s->water);
+    mixing_free(&s->mix);
     mem_free(s->mark, (size_t)s->g.nblocks);
     sph_free(s->sph); /* SPH (sph.c) */
     grid_free(&s->g);
@@ -340,7 +341,7 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
     /* and so does a plugin that reads temperature */
     if ((m->needs & HEARTH_NEEDS_TEMPERATURE) && scene_enable_temperature(s, err)) return -1;
     if (water_material_wants(s, id) && water_enable(s, err)) return -1;
-    s->water_limits_valid = 0;
+    water_forget_limits(&s->water);
     return id;
 }
 
@@ -441,7 +442,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
     if (ps->enabled & (1u << PC_MIX)) { /* no ratios; a mixture's own particles start as its first constituent */
         memset(pcold(ps, PC_MIX) + (size_t)MIX_MAX * ps->n, 0, sizeof(double) * MIX_MAX * (size_t)n);
         memset(pcold(ps, PC_MIXD) + (size_t)MIX_MAX * ps->n, 0, sizeof(double) * MIX_MAX * (size_t)n);
-        if (material == s->mix_mat) mixing_set_ratios(s, ps->n, ps->n + n, NULL, NULL);
+        if (material == s->mix.mat) mixing_set_ratios(s, ps->n, ps->n + n, NULL, NULL);
     }
     /* new particles only raise the largest wave speed (pinning, which lowers it, rescans) */
     double pscratch[SCENE_MAX_PARAMS];
@@ -648,7 +649,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             s->kinetic = rep.kinetic;
             if (s->kinetic > s->kinetic_peak) s->kinetic_peak = s->kinetic;
             s->out_of_domain += rep.out_of_domain;
-            if (water_active(s)) s->water_lost += s->water_step_removed;
+            if (water_active(s)) water_step_stands(&s->water);
             if (s->dt_scale < 1) s->dt_scale = fmin(1.0, s->dt_scale * 1.25);
             return HEARTH_OK;
         }
@@ -724,11 +725,11 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
     snprintf(st->diagnosis, sizeof st->diagnosis, "%s", s->guard == HEARTH_GUARD_OK ? "" : s->diagnosis);
     st->grid_blocks = s->g.nactive;
     st->heat_energy = thermal_energy(s);
-    st->cg_iterations = s->cg_iterations;
+    st->cg_iterations = thermal_cg_iterations(s);
     if (s->ps.enabled & (1u << PC_GAS))
         for (int i = 0; i < s->ps.n; i++) st->gas_moles += pcold(&s->ps, PC_GAS)[i] * pcold(&s->ps, PC_VOL0)[i];
     st->water_mass = water_total(s);
-    st->water_lost = s->water_lost;
+    st->water_lost = s->water.lost;
 }
 
 int hearth_scene_particle_count(const hearth_scene *s) { return s->ps.n; }

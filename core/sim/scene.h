@@ -1,16 +1,23 @@
 /* scene.h: the scene object (private). Owned by scene.c; mpm.c, guard.c,
  * probe.c and checkpoint.c read and step it. Each field module keeps its
  * state in a struct of its own, declared in its header and held here by
- * value: the materials (material.h) and, behind a pointer, SPH (sph.c). */
+ * value: the materials (material.h), heat (thermal.h), the boundary
+ * (boundary.h), water (water.h), mixing (mixing.h) and, behind a pointer,
+ * SPH (sph.c). Only the owning module writes its struct. Gas keeps no
+ * scene-level state (its column lives with the particles). */
 #ifndef HEARTH_SCENE_H
 #define HEARTH_SCENE_H
 #include <stdint.h>
 
+#include "boundary.h"
 #include "colliders.h"
 #include "grid.h"
 #include "material.h"
+#include "mixing.h"
 #include "params.h"
 #include "particles.h"
+#include "thermal.h"
+#include "water.h"
 
 /* The stack buffer for a particle's resolved parameters (material_params). */
 #define SCENE_MAX_PARAMS MATERIAL_MAX_PARAMS
@@ -58,7 +65,9 @@ typedef struct pb_partial {
     double move; /* largest displacement in the block this step (m) */
     double ke, mass, vmax, cmax, numax; /* numax: largest kinematic viscosity eta / rho (m^2/s) */
     long ood;
-    double water_removed, water_dmax, water_emax; /* water.c */
+    /* water.c's per-block sums, written by G2P's block loop and reduced by water_finish: they stay
+     * here with the other partials so a step's reduction is one array in block order */
+    double water_removed, water_dmax, water_emax;
 } pb_partial;
 
 struct hearth_scene {
@@ -79,9 +88,7 @@ struct hearth_scene {
     particles ps;
     grid g;
     material_table mats;    /* material.c */
-    int mix_mat;            /* the mixture material (mixing.c), -1 when none */
-    double *mix_nodes;      /* its node sums, (k + 1) per node */
-    size_t mix_cap;
+    mixing_state mix;       /* mixing.c */
     collider *cols;
     int ncol, capcol;
     hearth_body_force_fn body_force;
@@ -108,23 +115,9 @@ struct hearth_scene {
 
     char fields[256];
 
-    /* heat transport scratch (thermal.c), allocated only when the temperature field is live */
-    double *bnd_coef, *bnd_temp; /* per particle: boundary S beta (W/K) and outside temperature */
-    int bnd_cap;
-    double *cg_partial;          /* per active block: partial dot products */
-    int cg_cap, cg_iterations;
-
-    /* boundary particles (boundary.c): each one's share of the air surface */
-    double *bnd_area;
-    int bnd_area_cap;
-    unsigned char *bnd_blocks; /* per active grid block: holds a boundary node (boundary.c) */
-    int bnd_blocks_cap;
-
-    /* water (water.c) */
-    double water_lost;            /* through the boundary so far (kg) */
-    double water_step_removed;    /* by the step being taken; counted when it stands */
-    double water_dmax, water_emax; /* largest K theta s and beta theta / rho_0 after the last step */
-    int water_limits_valid;        /* 0: particles changed since, scan again */
+    thermal_state heat;       /* thermal.c */
+    boundary_state boundary;  /* boundary.c */
+    water_state water;        /* water.c */
 
     struct sph_state *sph;       /* SPH solver state (sph.c), NULL until the first SPH step */
 };

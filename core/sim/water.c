@@ -50,6 +50,16 @@
 
 #define KELVIN 273.15
 
+void water_init(water_state *w) { *w = (water_state){0}; }
+
+void water_free(water_state *w) { water_init(w); }
+
+void water_step_stands(water_state *w) { w->lost += w->step_removed; }
+
+void water_forget_limits(water_state *w) { w->limits_valid = 0; }
+
+void water_restore_lost(water_state *w, double lost) { w->lost = lost; }
+
 int water_active(const hearth_scene *s) { return (s->ps.enabled & (1u << PC_WATER)) != 0; }
 
 int water_material_wants(const hearth_scene *s, int mat) {
@@ -76,7 +86,7 @@ void water_init_particles(hearth_scene *s, int from, int to, double sat) {
         pcold(ps, PC_WATER)[i] = s0 * capacity(s, i);
         if (ps->enabled & (1u << PC_QW)) memset(pcold(ps, PC_QW) + 3 * i, 0, 3 * sizeof(double));
     }
-    s->water_limits_valid = 0;
+    s->water.limits_valid = 0;
 }
 
 hearth_status water_enable(hearth_scene *s, hearth_error *err) {
@@ -118,8 +128,8 @@ static void scan_limits(const hearth_scene *s, double *dmax, double *emax) {
 
 double water_dt_limit(const hearth_scene *s) {
     if (!water_active(s)) return INFINITY;
-    double d = s->water_dmax, e = s->water_emax;
-    if (!s->water_limits_valid) scan_limits(s, &d, &e);
+    double d = s->water.dmax, e = s->water.emax;
+    if (!s->water.limits_valid) scan_limits(s, &d, &e);
     const double dx = s->def.dx;
     double dt = INFINITY;
     /* forward Euler on the B-spline Laplacian, as for heat: dx^2 / (2 dim D) */
@@ -206,8 +216,8 @@ void water_finish(hearth_scene *s) {
         dmax = fmax(dmax, s->partial[k].water_dmax);
         emax = fmax(emax, s->partial[k].water_emax);
     }
-    s->water_step_removed = removed;
-    s->water_dmax = dmax;
-    s->water_emax = emax;
-    s->water_limits_valid = 1;
+    s->water.step_removed = removed;
+    s->water.dmax = dmax;
+    s->water.emax = emax;
+    s->water.limits_valid = 1;
 }
