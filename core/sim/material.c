@@ -228,8 +228,7 @@ hearth_status hearth_material_check(const char *plugin, const char *const *names
 
 /* ---- a particle's parameters ------------------------------------------ */
 
-const double *material_params(const material_table *t, const particles *ps, int mat, int i, double *scratch) {
-    const material_slot *ms = &t->slot[mat];
+const double *material_params_resolve(const material_slot *ms, const particles *ps, int i, double *scratch) {
     if (ms->mix_k) blend(ms, pcold(ps, PC_MIXD) + (size_t)MIX_MAX * i, scratch); /* a mixture: the blend at the particle's ratios */
     else if (ms->ncurves == 0) return ms->params;
     else memcpy(scratch, ms->params, sizeof(double) * (size_t)ms->m->nparams);
