@@ -184,8 +184,9 @@ void material_mixture_set(material_table *t, int id, int k, double *mp) {
         }
 }
 
-/* The blend of a mixture's constituents at ratios a (MIX_MAX, normalised here), into out. */
-static void blend(const material_slot *ms, const double *a, double *out) {
+/* The ratios are normalised here; a plugin that refuses the blend gets its dominant constituent. */
+void material_blend_at(const material_slot *ms, const particles *ps, int i, double *out) {
+    const double *a = pcold(ps, PC_MIXD) + (size_t)MIX_MAX * i;
     const int np = ms->m->nparams, k = ms->mix_k;
     const double *pk[MIX_MAX];
     double alpha[MIX_MAX], sum = 0;
@@ -224,18 +225,4 @@ hearth_status hearth_material_check(const char *plugin, const char *const *names
         return err_set(err, HEARTH_ERR_PLUGIN, "material '%s' declares %d parameters; hearth supports at most %d", m->name,
                        m->nparams, MATERIAL_MAX_PARAMS);
     return params_resolve(m, names, values, n, tmp, core, err);
-}
-
-/* ---- a particle's parameters ------------------------------------------ */
-
-const double *material_params_resolve(const material_slot *ms, const particles *ps, int i, double *scratch) {
-    if (ms->mix_k) blend(ms, pcold(ps, PC_MIXD) + (size_t)MIX_MAX * i, scratch); /* a mixture: the blend at the particle's ratios */
-    else if (ms->ncurves == 0) return ms->params;
-    else memcpy(scratch, ms->params, sizeof(double) * (size_t)ms->m->nparams);
-    const double *T = pcold(ps, PC_TEMPERATURE), *Tmax = pcold(ps, PC_TEMP_MAX);
-    for (int k = 0; k < ms->ncurves; k++) {
-        const curve *c = &ms->curves[k];
-        scratch[c->param] = curve_eval(c, c->irreversible ? Tmax[i] : T[i]);
-    }
-    return scratch;
 }

@@ -100,19 +100,27 @@ void material_mixture_params_free(const material_table *t, int id, int k, double
 /// plugin's cached wave speed becomes the fastest constituent's.
 void material_mixture_set(material_table *t, int id, int k, double *mp);
 
-/// material_params for a slot with curves or constituents (material.c).
-const double *material_params_resolve(const material_slot *ms, const particles *ps, int i, double *scratch);
+/// A mixture's blend of its constituents at particle i's dynamic ratios (PC_MIXD), into out (material.c).
+void material_blend_at(const material_slot *ms, const particles *ps, int i, double *out);
 /// Particle i's parameters (schema order): the slot's own when it has no
 /// curve and is no mixture, otherwise a mixture's blend at the particle's
 /// dynamic ratios (PC_MIXD) and the curves at its temperature (PC_TEMPERATURE,
 /// or PC_TEMP_MAX for an irreversible curve), written into scratch
-/// (MATERIAL_MAX_PARAMS doubles). Calls no plugin but blend. Inline for the
-/// plain slot, the usual case, which P2G meets once per particle per step.
+/// (MATERIAL_MAX_PARAMS doubles). Calls no plugin but blend. Inline: P2G
+/// resolves every particle's parameters every step, and a call there cost
+/// instructions (the blend, rare and long, stays out of line).
 static inline const double *material_params(const material_table *t, const particles *ps, int mat, int i,
                                             double *scratch) {
     const material_slot *ms = &t->slot[mat];
-    if (!ms->mix_k && ms->ncurves == 0) return ms->params;
-    return material_params_resolve(ms, ps, i, scratch);
+    if (ms->mix_k) material_blend_at(ms, ps, i, scratch);
+    else if (ms->ncurves == 0) return ms->params;
+    else memcpy(scratch, ms->params, sizeof(double) * (size_t)ms->m->nparams);
+    const double *T = pcold(ps, PC_TEMPERATURE), *Tmax = pcold(ps, PC_TEMP_MAX);
+    for (int k = 0; k < ms->ncurves; k++) {
+        const curve *c = &ms->curves[k];
+        scratch[c->param] = curve_eval(c, c->irreversible ? Tmax[i] : T[i]);
+    }
+    return scratch;
 }
 
 #define MATERIAL_INLINE static inline __attribute__((always_inline))
