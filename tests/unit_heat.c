@@ -351,15 +351,15 @@ TEST(temperature_curves) {
     double *Tp = pcold(&s->ps, PC_TEMPERATURE), *Tmax = pcold(&s->ps, PC_TEMP_MAX);
     const int iE = 0, inu = 1; /* schema order of the elastic plugin: E, nu, density */
     Tp[0] = Tmax[0] = 40; /* halfway between 20 and 60 */
-    const double *p = scene_params_for(s, m, 0, scratch);
+    const double *p = material_params(&s->mats, &s->ps, m, 0, scratch);
     CHECK_NEAR(p[iE], 7.5e3, 1e-9);
     CHECK_NEAR(p[inu], 0.3 - 0.2 * 20 / 80, 1e-12);
     Tp[0] = Tmax[0] = 200; /* beyond the last point: constant */
-    p = scene_params_for(s, m, 0, scratch);
+    p = material_params(&s->mats, &s->ps, m, 0, scratch);
     CHECK_NEAR(p[iE], 4e4, 1e-9);
     CHECK_NEAR(p[inu], 0.1, 1e-12);
     Tp[0] = 20; /* cooled down: E follows, the irreversible nu stays set */
-    p = scene_params_for(s, m, 0, scratch);
+    p = material_params(&s->mats, &s->ps, m, 0, scratch);
     CHECK_NEAR(p[iE], 1e4, 1e-9);
     CHECK_NEAR(p[inu], 0.1, 1e-12);
     CHECK(hearth_scene_material_params(s, m)[iE] == 1e4); /* the base values are untouched */

@@ -31,8 +31,8 @@ static int add_box(hearth_scene *s, int m, const double c[3], const double h[3],
 
 /* The plugin's own blend at ratios (a, 1 - a). */
 static void blend_at(const hearth_scene *s, int m, double a, double *out) {
-    const hearth_material *mat = s->mats[m].m;
-    const double *pk[2] = {s->mats[m].mix_params, s->mats[m].mix_params + mat->nparams};
+    const hearth_material *mat = s->mats.slot[m].m;
+    const double *pk[2] = {s->mats.slot[m].mix_params, s->mats.slot[m].mix_params + mat->nparams};
     const double alpha[2] = {a, 1 - a};
     CHECK(mat->blend(2, alpha, pk, out) == 0);
 }
@@ -50,11 +50,11 @@ TEST(mixing_uniform_ratios_exact) {
     CHECK(hearth_scene_step(s, 30, &err) == HEARTH_OK);
     double want[SCENE_MAX_PARAMS], scratch[SCENE_MAX_PARAMS], worst_a = 0, worst_p = 0, worst_m = 0;
     blend_at(s, m, 0.3, want);
-    const int np = s->mats[m].m->nparams, di = s->mats[m].density_index;
+    const int np = s->mats.slot[m].m->nparams, di = s->mats.slot[m].density_index;
     for (int i = 0; i < s->ps.n; i++) {
         const double *a = pcold(&s->ps, PC_MIXD) + MIX_MAX * i;
         worst_a = fmax(worst_a, fmax(fabs(a[0] - 0.3), fabs(a[1] - 0.7)));
-        const double *p = scene_params_for(s, m, i, scratch);
+        const double *p = material_params(&s->mats, &s->ps, m, i, scratch);
         for (int k = 0; k < np; k++) worst_p = fmax(worst_p, fabs(p[k] - want[k]) / fmax(fabs(want[k]), 1e-300));
         worst_m = fmax(worst_m, fabs(pcold(&s->ps, PC_MASS)[i] / (want[di] * pcold(&s->ps, PC_VOL0)[i]) - 1));
     }

@@ -21,8 +21,8 @@ int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_er
         err_set(err, HEARTH_ERR_PARAM, "body: a shape is required");
         return -1;
     }
-    if (def->material < 0 || def->material >= s->nmat) {
-        err_set(err, HEARTH_ERR_PARAM, "body: material %d does not exist (the scene has %d)", def->material, s->nmat);
+    if (def->material < 0 || def->material >= s->mats.n) {
+        err_set(err, HEARTH_ERR_PARAM, "body: material %d does not exist (the scene has %d)", def->material, s->mats.n);
         return -1;
     }
     if (!isnan(def->temperature) && !(def->temperature >= -273.15 && def->temperature <= 5000)) {
@@ -55,7 +55,7 @@ int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_er
         if (!isnan(def->temperature)) pcold(&s->ps, PC_TEMPERATURE)[i] = pcold(&s->ps, PC_TEMP_MAX)[i] = def->temperature;
     }
     if (!isnan(def->saturation)) water_init_particles(s, n0, s->ps.n, def->saturation);
-    if (def->material == s->mix_mat && mixing_set_ratios(s, n0, s->ps.n, def->ratios, err)) {
+    if (def->material == s->mix.mat && mixing_set_ratios(s, n0, s->ps.n, def->ratios, err)) {
         s->ps.n = n0; /* the body is not made */
         s->nbodies--;
         return -1;
@@ -90,11 +90,11 @@ hearth_status hearth_scene_body_labels(hearth_scene *s, int body, int k, const i
     if (k < 1 || k > LABELS_MAX) return err_set(err, HEARTH_ERR_PARAM, "labels: %d materials; valid range [1, %d]", k, LABELS_MAX);
     double cum[LABELS_MAX], total = 0;
     for (int i = 0; i < k; i++) {
-        if (materials[i] < 0 || materials[i] >= s->nmat)
-            return err_set(err, HEARTH_ERR_PARAM, "labels: material %d does not exist (the scene has %d)", materials[i], s->nmat);
-        if (s->mats[materials[i]].m != s->mats[materials[0]].m)
+        if (materials[i] < 0 || materials[i] >= s->mats.n)
+            return err_set(err, HEARTH_ERR_PARAM, "labels: material %d does not exist (the scene has %d)", materials[i], s->mats.n);
+        if (s->mats.slot[materials[i]].m != s->mats.slot[materials[0]].m)
             return err_set(err, HEARTH_ERR_PARAM, "labels: materials must share one plugin ('%s' and '%s')",
-                           s->mats[materials[0]].m->name, s->mats[materials[i]].m->name);
+                           s->mats.slot[materials[0]].m->name, s->mats.slot[materials[i]].m->name);
         if (!(ratio[i] >= 0) || !isfinite(ratio[i]))
             return err_set(err, HEARTH_ERR_PARAM, "labels: ratio %d = %g; valid range [0, inf)", i + 1, ratio[i]);
         total += ratio[i];
@@ -110,7 +110,7 @@ hearth_status hearth_scene_body_labels(hearth_scene *s, int body, int k, const i
             const double u = label_uniform(seed, pcoli(ps, PC_ID)[i]) * total;
             int c = 0;
             while (c < k - 1 && !(u < cum[c])) c++;
-            const material_slot *ms = &s->mats[materials[c]];
+            const material_slot *ms = &s->mats.slot[materials[c]];
             pcoli(ps, PC_MAT)[i] = materials[c];
             pcold(ps, PC_MASS)[i] = ms->params[ms->density_index] * pcold(ps, PC_VOL0)[i];
             if (ps->state_stride) {
@@ -204,53 +204,9 @@ int hearth_scene_collider_count(const hearth_scene *s) { return s->ncol; }
 
 hearth_status hearth_scene_material_curve(hearth_scene *s, int mat, const char *param, int n, const double *T,
                                           const double *v, int irreversible, hearth_error *err) {
-    if (mat < 0 || mat >= s->nmat) return err_set(err, HEARTH_ERR_PARAM, "curve: material %d does not exist", mat);
-    material_slot *ms = &s->mats[mat];
-    const int k = params_index(ms->m, param);
-    if (k < 0) return err_set(err, HEARTH_ERR_PARAM, "curve: material '%s' has no parameter '%s'", ms->m->name, param);
-    const hearth_param *p = &ms->m->params[k];
-    if (n < 1 || n > 10000) return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': %d points; valid range [1, 10000]", param, n);
-    for (int i = 0; i < n; i++) {
-        if (!isfinite(T[i]) || (i > 0 && !(T[i] > T[i - 1])))
-            return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': temperatures must be finite and strictly increasing (point %d: %g)",
-                           param, i + 1, T[i]);
-        if (!(v[i] >= p->min && v[i] <= p->max))
-            return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': value %g at %g degrees C is outside the range [%g, %g] %s",
-                           param, v[i], T[i], p->min, p->max, p->unit);
-    }
-    for (int i = 0; i < ms->ncurves; i++)
-        if (ms->curves[i].param == k)
-            return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': the parameter already has a curve", param);
-    hearth_status st = scene_enable_temperature(s, err);
-    if (st) return st;
-    /* fresh arrays first, so a failure leaves the material as it was */
-    curve *cs = mem_alloc(sizeof(curve) * (size_t)(ms->ncurves + 1));
-    double *tt = mem_alloc(sizeof(double) * (size_t)n), *vv = mem_alloc(sizeof(double) * (size_t)n);
-    if (!cs || !tt || !vv) {
-        mem_free(cs, sizeof(curve) * (size_t)(ms->ncurves + 1));
-        mem_free(tt, sizeof(double) * (size_t)n);
-        mem_free(vv, sizeof(double) * (size_t)n);
-        return err_set(err, HEARTH_ERR_NOMEM, "curve: out of memory");
-    }
-    if (ms->ncurves) memcpy(cs, ms->curves, sizeof(curve) * (size_t)ms->ncurves);
-    mem_free(ms->curves, sizeof(curve) * (size_t)ms->ncurves);
-    ms->curves = cs;
-    memcpy(tt, T, sizeof(double) * (size_t)n);
-    memcpy(vv, v, sizeof(double) * (size_t)n);
-    ms->curves[ms->ncurves++] = (curve){.param = k, .n = n, .T = tt, .v = vv, .irreversible = irreversible != 0};
-    return HEARTH_OK;
-}
-
-hearth_status hearth_material_check(const char *plugin, const char *const *names, const double *values, int n,
-                                    hearth_error *err) {
-    hearth_error local;
-    if (!err) err = &local;
-    const hearth_plugin *pl = hearth_plugin_load(plugin, err);
-    if (!pl) return err->code;
-    const hearth_material *m = hearth_plugin_material(pl);
-    double tmp[SCENE_MAX_PARAMS], core[CP_COUNT];
-    if (m->nparams > SCENE_MAX_PARAMS)
-        return err_set(err, HEARTH_ERR_PLUGIN, "material '%s' declares %d parameters; hearth supports at most %d", m->name,
-                       m->nparams, SCENE_MAX_PARAMS);
-    return params_resolve(m, names, values, n, tmp, core, err);
+    int k;
+    hearth_status st = material_curve_check(&s->mats, mat, param, n, T, v, &k, err);
+    if (!st) st = scene_enable_temperature(s, err);
+    if (!st) st = material_curve_add(&s->mats, mat, k, n, T, v, irreversible, err);
+    return st;
 }

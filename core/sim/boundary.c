@@ -23,10 +23,18 @@
 #include "error.h"
 #include "scene.h"
 
+void boundary_init(boundary_state *b) { *b = (boundary_state){0}; }
+
+void boundary_free(boundary_state *b) {
+    mem_free(b->area, sizeof(double) * (size_t)b->area_cap);
+    mem_free(b->blocks, (size_t)b->blocks_cap);
+    boundary_init(b);
+}
+
 int boundary_needed(const hearth_scene *s) {
     if (!isnan(s->def.oven_temperature) && s->def.oven_beta > 0) return 1;
-    for (int m = 0; m < s->nmat; m++)
-        if (s->mats[m].core[CP_EVAPORATION] > 0 && (s->ps.enabled & (1u << PC_WATER))) return 1;
+    for (int m = 0; m < s->mats.n; m++)
+        if (s->mats.slot[m].core[CP_EVAPORATION] > 0 && (s->ps.enabled & (1u << PC_WATER))) return 1;
     return 0;
 }
 
@@ -43,19 +51,19 @@ static double air_or_mass(const grid *g, const int gi[3]) {
 
 static hearth_status ensure_area(hearth_scene *s, hearth_error *err) {
     const int n = s->ps.n, nb = s->g.nactive;
-    if (nb > s->bnd_blocks_cap) {
+    if (nb > s->boundary.blocks_cap) {
         unsigned char *b = mem_alloc((size_t)nb * 2);
         if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for boundary blocks (%d blocks)", nb);
-        mem_free(s->bnd_blocks, (size_t)s->bnd_blocks_cap);
-        s->bnd_blocks = b;
-        s->bnd_blocks_cap = nb * 2;
+        mem_free(s->boundary.blocks, (size_t)s->boundary.blocks_cap);
+        s->boundary.blocks = b;
+        s->boundary.blocks_cap = nb * 2;
     }
-    if (n <= s->bnd_area_cap) return HEARTH_OK;
+    if (n <= s->boundary.area_cap) return HEARTH_OK;
     double *a = mem_alloc(sizeof(double) * (size_t)n);
     if (!a) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for boundary particles (%d particles)", n);
-    mem_free(s->bnd_area, sizeof(double) * (size_t)s->bnd_area_cap);
-    s->bnd_area = a;
-    s->bnd_area_cap = n;
+    mem_free(s->boundary.area, sizeof(double) * (size_t)s->boundary.area_cap);
+    s->boundary.area = a;
+    s->boundary.area_cap = n;
     return HEARTH_OK;
 }
 
@@ -74,7 +82,7 @@ static void closest_in_block(hearth_scene *s, int k) {
     int any = 0; /* the tile spans the block and its +1 neighbours: is there a boundary node in any? */
     for (int a = 0; a <= 1 && !any; a++)
         for (int b = 0; b <= 1 && !any; b++)
-            for (int c = 0; c <= (D == 3) && !any; c++) any = s->bnd_blocks[g->slot[grid_block_id(g, bc[0] + a, bc[1] + b, bc[2] + c)]];
+            for (int c = 0; c <= (D == 3) && !any; c++) any = s->boundary.blocks[g->slot[grid_block_id(g, bc[0] + a, bc[1] + b, bc[2] + c)]];
     if (!any) return; /* most particle blocks lie inside the body */
     double best[GRID_T * GRID_T * GRID_T];
     int pick[GRID_T * GRID_T * GRID_T];
@@ -140,7 +148,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
     grid *g = &s->g;
     particles *ps = &s->ps;
     const int D = g->dim, NPB = g->nodes_per_block, n = ps->n;
-    double *area = s->bnd_area;
+    double *area = s->boundary.area;
     memset(area, 0, sizeof(double) * (size_t)n);
     int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     if (flags)
@@ -155,7 +163,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
         double *node = grid_block(g, k);
         int bc[3];
         grid_block_coords(g, g->active[k], bc);
-        s->bnd_blocks[k] = 0;
+        s->boundary.blocks[k] = 0;
         for (int l = 0; l < NPB; l++) {
             node[CH_CG_R * NPB + l] = -1;
             node[CH_CG_P * NPB + l] = -1;
@@ -182,7 +190,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
                 in_col = collider_near(&s->cols[c], xi) && collider_sdf(&s->cols[c], xi, NULL) < 0;
             if (!in_col) {
                 node[CH_CG_R * NPB + l] = INFINITY;
-                s->bnd_blocks[k] = 1;
+                s->boundary.blocks[k] = 1;
             }
         }
     }

@@ -6,9 +6,24 @@
 
 struct hearth_scene;
 
+/* The boundary's own state (boundary.c), held by value in the scene as
+ * s->boundary. Written only by boundary_find; thermal.c and transport.c read
+ * area. */
+typedef struct boundary_state {
+    double *area;          /* per particle: its share of the air surface (m^(dim-1)), 0 inside */
+    int area_cap;
+    unsigned char *blocks; /* per active grid block: holds a boundary node */
+    int blocks_cap;
+} boundary_state;
+
+/// Empty state (allocates nothing).
+void boundary_init(boundary_state *b);
+/// Free the arrays; b is empty afterwards (boundary_init's state).
+void boundary_free(boundary_state *b);
+
 /// Does anything in the scene act through the air boundary (an oven, evaporation)?
 int boundary_needed(const struct hearth_scene *s);
-/// After P2G (node masses): fill s->bnd_area with each particle's share of the
+/// After P2G (node masses): fill s->boundary.area with each particle's share of the
 /// air surface (m^(dim-1); 0 inside) and set PF_BOUNDARY on those particles
 /// (all zero when nothing needs the boundary). Runs when heat or water is live.
 /// Uses the grid channels CH_CG_R and CH_CG_P as scratch.

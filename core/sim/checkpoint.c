@@ -237,14 +237,14 @@ static void put_clocks(ck_out *o, const hearth_scene *s) {
     put_u64(o, s->rng);
     put_i32(o, s->next_id);
     put_i32(o, s->nbodies);
-    put_f64(o, s->water_lost);
+    put_f64(o, s->water.lost);
 }
 
 static void put_materials(ck_out *o, const hearth_scene *s) {
     put(o, "MATS", 4);
-    put_u32(o, (uint32_t)s->nmat);
-    for (int i = 0; i < s->nmat; i++) {
-        const material_slot *ms = &s->mats[i];
+    put_u32(o, (uint32_t)s->mats.n);
+    for (int i = 0; i < s->mats.n; i++) {
+        const material_slot *ms = &s->mats.slot[i];
         put_str(o, ms->m->name); /* the name only: never the path it was loaded from */
         put_u32(o, (uint32_t)ms->m->abi_version);
         put_u64(o, schema_hash(ms->m));
@@ -303,7 +303,7 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
     if (s->def.solver != HEARTH_SOLVER_MPM) /* SPH (sph.c): its options and final densities are not in the format yet */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of SPH scenes (solver = \"sph\") are not supported yet",
                        path);
-    if (s->mix_mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
+    if (s->mix.mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
                        path);
     char *img = NULL;
@@ -588,7 +588,7 @@ static int check_column(ck_cursor *c, const hearth_scene *s, int col, int n) {
         const int *a = pcoli(ps, col);
         for (int i = 0; i < n; i++) {
             const int v = a[i];
-            if (col == PC_MAT && (v < 0 || v >= s->nmat)) return ck_fail(c, "a particle with an unknown material");
+            if (col == PC_MAT && (v < 0 || v >= s->mats.n)) return ck_fail(c, "a particle with an unknown material");
             if (col == PC_BODY && (v < -1 || v >= s->nbodies)) return ck_fail(c, "a particle with an unknown body");
             if (col == PC_FLAGS && (v & ~(PF_FIXED | PF_BOUNDARY))) return ck_fail(c, "a particle with unknown flags");
             if (col == PC_ID && (v < 0 || v >= s->next_id)) return ck_fail(c, "a particle id out of range");
@@ -657,7 +657,7 @@ static void set_clocks(hearth_scene *s, const ck_clocks *k) {
     s->rng = k->rng;
     s->next_id = k->next_id;
     s->nbodies = k->nbodies;
-    s->water_lost = k->water_lost;
+    water_restore_lost(&s->water, k->water_lost);
 }
 
 hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name, hearth_error *err) {

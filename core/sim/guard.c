@@ -20,7 +20,7 @@ static void describe_particle(const hearth_scene *s, int i, char *buf, size_t n)
     const double *x = pcold(ps, PC_X) + 3 * i;
     const int m = pcoli(ps, PC_MAT)[i];
     snprintf(buf, n, "particle %d (id %d) at (%.6g, %.6g, %.6g) m, material '%s' (#%d)", i, pcoli(ps, PC_ID)[i], x[0],
-             x[1], x[2], s->mats[m].m->name, m);
+             x[1], x[2], s->mats.slot[m].m->name, m);
 }
 
 /* The pressure scale of each stress term at particle i after the step (Pa),
@@ -36,13 +36,13 @@ static void guard_measure(const hearth_scene *s, int i, guard_terms *t) {
     *t = (guard_terms){0};
     const particles *ps = &s->ps;
     const int mat = pcoli(ps, PC_MAT)[i];
-    const material_slot *ms = &s->mats[mat];
+    const material_slot *ms = &s->mats.slot[mat];
     const double *F = pcold(ps, PC_F) + 9 * i;
     const double J = t3_det(F);
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     const double *G = ps->enabled & (1u << PC_GAS) ? pcold(ps, PC_GAS) : NULL;
     double pscratch[SCENE_MAX_PARAMS];
-    const double *p = scene_params_for(s, mat, i, pscratch);
+    const double *p = material_params(&s->mats, &s->ps, mat, i, pscratch);
     const size_t sbytes = sizeof(double) * (size_t)ps->state_stride;
     double *state = sbytes ? mem_alloc(sbytes) : NULL;
     if (sbytes && !state) return; /* out of memory: no attribution, the diagnosis still stands */
@@ -103,17 +103,17 @@ static void guard_cause(const hearth_scene *s, int i, char *buf, size_t n) {
 static double guard_wave_speed(const hearth_scene *s, int i) {
     const particles *ps = &s->ps;
     const int mat = pcoli(ps, PC_MAT)[i];
-    const material_slot *ms = &s->mats[mat];
+    const material_slot *ms = &s->mats.slot[mat];
     if (ms->m->state_size == 0) return ms->wave_speed;
     double pscratch[SCENE_MAX_PARAMS];
     plugin_call_enter(ms->m, "wave_speed");
-    const double c = ms->m->wave_speed(scene_params_for(s, mat, i, pscratch), pcold(ps, PC_STATE) + (size_t)i * ps->state_stride);
+    const double c = ms->m->wave_speed(material_params(&s->mats, &s->ps, mat, i, pscratch), pcold(ps, PC_STATE) + (size_t)i * ps->state_stride);
     plugin_call_leave();
     return c;
 }
 
 static void guard_wave_text(const hearth_scene *s, int i, char *what, size_t n) {
-    const material_slot *ms = &s->mats[pcoli(&s->ps, PC_MAT)[i]];
+    const material_slot *ms = &s->mats.slot[pcoli(&s->ps, PC_MAT)[i]];
     snprintf(what, n,
              "plugin '%s' (%s): wave_speed returned %g m/s; it must be finite and > 0, since the step size is "
              "chosen from it (run hearth plugin check on it)",
@@ -128,7 +128,7 @@ int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed
     if (rep->particle >= 0) {
         const int i = rep->particle;
         describe_particle(s, i, who, sizeof who);
-        const material_slot *ms = &s->mats[pcoli(&s->ps, PC_MAT)[i]];
+        const material_slot *ms = &s->mats.slot[pcoli(&s->ps, PC_MAT)[i]];
         switch (rep->kind) {
         case FAIL_PLUGIN: {
             plugin_call_enter(ms->m, "describe_error");

@@ -1,4 +1,14 @@
-/* material.h: the one door to a material point. Every caller that asks a
+/* material.h: the scene's materials and the one door to a material point.
+ *
+ * The slots (material.c). A scene holds its materials in a material_table:
+ * one slot per material id (the PC_MAT column), with the plugin, its resolved
+ * parameters, the core's field properties (params.h CP_*), the parameters
+ * that follow temperature (curves.h) and, for a mixture, its constituents'
+ * parameter sets. material_params() is the one place a particle's parameters
+ * are resolved: temperature curves evaluated, a mixture blended at the
+ * particle's ratios. Only material.c writes a slot; everyone else reads.
+ *
+ * The door. Every caller that asks a
  * plugin for a stress (MPM's P2G, SPH's stress phase, the probes, the guard's
  * cause attribution, `hearth plugin check` and the rheometer) goes through
  * material_point_eval() or its two halves, so the fields the point carries, the recording of the plugin call (plugins.h) and
@@ -12,17 +22,106 @@
  * from J^P, SPH passes NaN), each passes its own value explicitly, so the
  * disagreement is visible at the call rather than hidden in a copy.
  *
- * Header-only and always inlined: MPM's P2G instantiates it per dimension and
+ * The door is header-only and always inlined: MPM's P2G instantiates it per dimension and
  * field set, and a call there would cost instructions on the hot path. */
 #ifndef HEARTH_SIM_MATERIAL_H
 #define HEARTH_SIM_MATERIAL_H
 #include <math.h>
 #include <string.h>
 
+#include "curves.h"
 #include "gas.h"
 #include "hearth/material.h"
 #include "params.h"
+#include "particles.h"
 #include "plugins.h"
+
+/* Plugins may declare at most this many parameters (per-particle resolution
+ * uses a stack buffer of this size). */
+#define MATERIAL_MAX_PARAMS 256
+/* Constituents of a mixture, and the width of the particles' ratio columns (PC_MIX, PC_MIXD). */
+#define MIX_MAX 8
+
+typedef struct material_slot {
+    const hearth_plugin *plugin;
+    const hearth_material *m;
+    double *params;     /* resolved, schema order */
+    int density_index;  /* schema index of "density" */
+    double wave_speed;  /* cached when the plugin is stateless (state_size 0) */
+    curve *curves;      /* parameters that follow temperature */
+    int ncurves;
+    double core[CP_COUNT]; /* field properties (params.h CP_*) */
+    int mix_k;             /* a mixture (mixing.c): number of constituents, 0 for a plain material */
+    double *mix_params;    /* mix_k parameter sets, schema order */
+} material_slot;
+
+/* The scene's materials, indexed by material id. Held by value in the scene. */
+typedef struct material_table {
+    material_slot *slot;
+    int n, cap;
+} material_table;
+
+/// An empty table (allocates nothing).
+void material_table_init(material_table *t);
+/// Free every slot and the table; t is empty afterwards (material_table_init's state).
+void material_table_free(material_table *t);
+/// Resolve plugin pl's parameters (names/values, n pairs) into a slot that no
+/// table holds yet: checks the parameter count against MATERIAL_MAX_PARAMS and
+/// every value against the schema. On failure nothing stays allocated.
+hearth_status material_slot_init(material_slot *ms, const hearth_plugin *pl, const char *const *names,
+                                 const double *values, int n, hearth_error *err);
+/// Free what a slot owns (parameters, curves, constituents).
+void material_slot_free(material_slot *ms);
+/// Room for one more slot.
+hearth_status material_table_reserve(material_table *t, hearth_error *err);
+/// Append ms (reserved room) after caching a stateless plugin's wave speed,
+/// which must be finite and > 0 at these parameters. Returns the new id, or
+/// -1 with err set and ms freed.
+int material_table_push(material_table *t, material_slot *ms, hearth_error *err);
+
+/// Check a temperature curve for parameter `param` of material mat (n
+/// points, T strictly increasing, values in the parameter's range, no curve
+/// yet); *k gets the parameter's schema index.
+hearth_status material_curve_check(const material_table *t, int mat, const char *param, int n, const double *T,
+                                   const double *v, int *k, hearth_error *err);
+/// Add the checked curve (copies T and v); a failure leaves the slot as it was.
+hearth_status material_curve_add(material_table *t, int mat, int k, int n, const double *T, const double *v,
+                                 int irreversible, hearth_error *err);
+
+/// The k parameter sets of a mixture whose first constituent is material id
+/// (its parameters are set 0); sets 1..k-1 resolved from names[c]/values[c].
+/// Returns an array for material_mixture_set, or NULL with err set (the
+/// plugin has no blend callback, a constituent is refused, no memory).
+double *material_mixture_params(const material_table *t, int id, int k, const char *const *const *names,
+                                const double *const *values, const int *n, hearth_error *err);
+/// Free an array from material_mixture_params that was not handed over.
+void material_mixture_params_free(const material_table *t, int id, int k, double *mp);
+/// Make material id a mixture of k constituents, taking mp; a stateless
+/// plugin's cached wave speed becomes the fastest constituent's.
+void material_mixture_set(material_table *t, int id, int k, double *mp);
+
+/// A mixture's blend of its constituents at particle i's dynamic ratios (PC_MIXD), into out (material.c).
+void material_blend_at(const material_slot *ms, const particles *ps, int i, double *out);
+/// Particle i's parameters (schema order): the slot's own when it has no
+/// curve and is no mixture, otherwise a mixture's blend at the particle's
+/// dynamic ratios (PC_MIXD) and the curves at its temperature (PC_TEMPERATURE,
+/// or PC_TEMP_MAX for an irreversible curve), written into scratch
+/// (MATERIAL_MAX_PARAMS doubles). Calls no plugin but blend. Inline: P2G
+/// resolves every particle's parameters every step, and a call there cost
+/// instructions (the blend, rare and long, stays out of line).
+static inline const double *material_params(const material_table *t, const particles *ps, int mat, int i,
+                                            double *scratch) {
+    const material_slot *ms = &t->slot[mat];
+    if (ms->mix_k) material_blend_at(ms, ps, i, scratch);
+    else if (ms->ncurves == 0) return ms->params;
+    else memcpy(scratch, ms->params, sizeof(double) * (size_t)ms->m->nparams);
+    const double *T = pcold(ps, PC_TEMPERATURE), *Tmax = pcold(ps, PC_TEMP_MAX);
+    for (int k = 0; k < ms->ncurves; k++) {
+        const curve *c = &ms->curves[k];
+        scratch[c->param] = curve_eval(c, c->irreversible ? Tmax[i] : T[i]);
+    }
+    return scratch;
+}
 
 #define MATERIAL_INLINE static inline __attribute__((always_inline))
 

@@ -9,13 +9,19 @@
  *   alpha^_p = sum_i w_ip alpha_i                         (eq. 44)
  *
  * Its parameters are then the plugin's blend of the constituents at alpha^_p
- * (scene_params_for -> mixing_params), so any plugin with a blend callback can
+ * (material_params, material.c), so any plugin with a blend callback can
  * mix. Only particles of the mixture take part: another material's particles
  * carry no ratios. A uniform mixture keeps its ratios exactly (the weights
  * are a partition of unity); pure bodies stirred together grade into each
  * other over the kernel's width (1.5 dx) and then as far as the stirring
  * carries particles. The nodes' sums live in an array of their own, indexed
- * like the grid's blocks, so the grid's channels stay as they are. */
+ * like the grid's blocks, so the grid's channels stay as they are.
+ *
+ * What lives where: this file owns the dynamic ratios (the node sums in
+ * mixing_state, the particles' PC_MIXD) and which material is the mixture;
+ * the constituents' parameter sets and their blend belong to the material's
+ * slot (material.c). Adding the mixture goes through the core's own
+ * scene_add_material, not the public entry point. */
 #include "plugins.h"
 #include "mixing.h"
 
@@ -29,51 +35,31 @@
 #include "scene.h"
 #include "tensor.h"
 
-int mixing_active(const hearth_scene *s) { return s->mix_mat >= 0; }
+int mixing_active(const hearth_scene *s) { return s->mix.mat >= 0; }
 
-void mixing_params(const hearth_scene *s, int mat, int i, double *out) {
-    const material_slot *ms = &s->mats[mat];
-    const int np = ms->m->nparams, k = ms->mix_k;
-    const double *a = pcold(&s->ps, PC_MIXD) + (size_t)MIX_MAX * i;
-    const double *pk[MIX_MAX];
-    double alpha[MIX_MAX], sum = 0;
-    for (int c = 0; c < k; c++) {
-        pk[c] = ms->mix_params + (size_t)c * np;
-        alpha[c] = a[c] > 0 ? a[c] : 0;
-        sum += alpha[c];
-    }
-    if (!(sum > 0)) { /* cannot happen for a mixture particle; keep the first constituent */
-        memcpy(out, pk[0], sizeof(double) * (size_t)np);
-        return;
-    }
-    for (int c = 0; c < k; c++) alpha[c] /= sum;
-    plugin_call_enter(ms->m, "blend");
-    const int refused = ms->m->blend(k, alpha, pk, out);
-    plugin_call_leave();
-    if (refused) { /* a plugin that refuses: the dominant constituent */
-        int best = 0;
-        for (int c = 1; c < k; c++)
-            if (alpha[c] > alpha[best]) best = c;
-        memcpy(out, pk[best], sizeof(double) * (size_t)np);
-    }
+void mixing_init(mixing_state *x) { *x = (mixing_state){.mat = -1}; }
+
+void mixing_free(mixing_state *x) {
+    mem_free(x->nodes, sizeof(double) * x->cap);
+    mixing_init(x);
 }
 
 hearth_status mixing_update(hearth_scene *s, hearth_error *err) {
     grid *g = &s->g;
     particles *ps = &s->ps;
-    const int NPB = g->nodes_per_block, TN = grid_tile_count(g), k = s->mats[s->mix_mat].mix_k, W = k + 1;
+    const int NPB = g->nodes_per_block, TN = grid_tile_count(g), k = s->mats.slot[s->mix.mat].mix_k, W = k + 1;
     const size_t need = (size_t)g->nactive * NPB * W;
-    if (need > s->mix_cap) {
+    if (need > s->mix.cap) {
         double *a = mem_alloc(sizeof(double) * need * 2);
         if (!a) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the mixing ratios' grid");
-        mem_free(s->mix_nodes, sizeof(double) * s->mix_cap);
-        s->mix_nodes = a;
-        s->mix_cap = need * 2;
+        mem_free(s->mix.nodes, sizeof(double) * s->mix.cap);
+        s->mix.nodes = a;
+        s->mix.cap = need * 2;
     }
-    memset(s->mix_nodes, 0, sizeof(double) * need);
+    memset(s->mix.nodes, 0, sizeof(double) * need);
     const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0), *Fc = pcold(ps, PC_F), *A0 = pcold(ps, PC_MIX);
     double *A = pcold(ps, PC_MIXD);
-    const int *mat = pcoli(ps, PC_MAT), mm = s->mix_mat;
+    const int *mat = pcoli(ps, PC_MAT), mm = s->mix.mat;
     const int par = ps->n >= SCENE_PARALLEL_MIN;
     /* eq. 43, numerator and denominator, in colour phases (disjoint nodes, no atomics) */
     for (int col = 0; col < 8; col++) {
@@ -102,7 +88,7 @@ hearth_status mixing_update(hearth_scene *s, hearth_error *err) {
                 for (int tt = 0; tt < TN; tt++) {
                     if (tile[k * TN + tt] == 0.0) continue;
                     int l;
-                    double *node = s->mix_nodes + ((size_t)grid_tile_slot(g, bc, tt, &l) * NPB + l) * W;
+                    double *node = s->mix.nodes + ((size_t)grid_tile_slot(g, bc, tt, &l) * NPB + l) * W;
                     for (int c = 0; c <= k; c++) node[c] += tile[c * TN + tt];
                 }
             }
@@ -121,7 +107,7 @@ hearth_status mixing_update(hearth_scene *s, hearth_error *err) {
             double a[MIX_MAX] = {0};
             for (int j = 0; j < st.n; j++) {
                 int l;
-                const double *node = s->mix_nodes + ((size_t)grid_tile_slot(g, bc, st.t[j], &l) * NPB + l) * W;
+                const double *node = s->mix.nodes + ((size_t)grid_tile_slot(g, bc, st.t[j], &l) * NPB + l) * W;
                 if (!(node[k] > 0)) continue;
                 for (int c = 0; c < k; c++) a[c] += st.w[j] * node[c] / node[k];
             }
@@ -138,56 +124,29 @@ int hearth_scene_add_mixture(hearth_scene *s, const char *plugin, int k, const c
         err_set(err, HEARTH_ERR_PARAM, "mixture: %d constituents; valid range [2, %d]", k, MIX_MAX);
         return -1;
     }
-    if (s->mix_mat >= 0) {
+    if (s->mix.mat >= 0) {
         err_set(err, HEARTH_ERR_PARAM,
                 "mixture: the scene already holds one (material %d); put every constituent that will be stirred "
                 "together into that one",
-                s->mix_mat);
+                s->mix.mat);
         return -1;
     }
     /* the first constituent makes the slot (its core field properties are the mixture's) */
-    const int id = hearth_scene_add_material(s, plugin, names[0], values[0], n[0], err);
+    const int id = scene_add_material(s, plugin, names[0], values[0], n[0], err);
     if (id < 0) return -1;
-    material_slot *ms = &s->mats[id];
-    const hearth_material *m = ms->m;
-    if (!m->blend) {
-        err_set(err, HEARTH_ERR_PARAM, "mixture: plugin '%s' has no blend callback; it cannot mix", m->name);
-        return -1;
-    }
-    const int np = m->nparams;
-    double *mp = mem_alloc(sizeof(double) * (size_t)k * (size_t)(np > 0 ? np : 1));
-    if (!mp) {
-        err_set(err, HEARTH_ERR_NOMEM, "out of memory for a mixture");
-        return -1;
-    }
-    memcpy(mp, ms->params, sizeof(double) * (size_t)np);
-    double core[CP_COUNT];
-    for (int c = 1; c < k; c++)
-        if (params_resolve(m, names[c], values[c], n[c], mp + (size_t)c * np, core, err)) {
-            char msg[sizeof err->msg];
-            snprintf(msg, sizeof msg, "%s", err->msg);
-            err_set(err, HEARTH_ERR_PARAM, "mixture constituent %d: %s", c + 1, msg);
-            mem_free(mp, sizeof(double) * (size_t)k * (size_t)(np > 0 ? np : 1));
-            return -1;
-        }
+    double *mp = material_mixture_params(&s->mats, id, k, names, values, n, err);
+    if (!mp) return -1;
     if (particles_enable(&s->ps, PC_MIX, err) || particles_enable(&s->ps, PC_MIXD, err)) {
-        mem_free(mp, sizeof(double) * (size_t)k * (size_t)(np > 0 ? np : 1));
+        material_mixture_params_free(&s->mats, id, k, mp);
         return -1;
     }
-    ms->mix_k = k;
-    ms->mix_params = mp;
-    if (m->state_size == 0) /* any blend's waves are bounded by the fastest constituent's */
-        for (int c = 1; c < k; c++) {
-            plugin_call_enter(m, "wave_speed");
-            ms->wave_speed = fmax(ms->wave_speed, m->wave_speed(mp + (size_t)c * np, NULL));
-            plugin_call_leave();
-        }
-    s->mix_mat = id;
+    material_mixture_set(&s->mats, id, k, mp);
+    s->mix.mat = id;
     return id;
 }
 
 hearth_status mixing_set_ratios(hearth_scene *s, int from, int to, const double *ratios, hearth_error *err) {
-    const material_slot *ms = &s->mats[s->mix_mat];
+    const material_slot *ms = &s->mats.slot[s->mix.mat];
     double a[MIX_MAX] = {0}, sum = 0;
     for (int c = 0; c < MIX_MAX; c++) {
         const double r = ratios ? ratios[c] : c == 0;
@@ -199,7 +158,7 @@ hearth_status mixing_set_ratios(hearth_scene *s, int from, int to, const double 
     }
     if (!(sum > 0))
         return err_set(err, HEARTH_ERR_PARAM, "body: material %d is a mixture of %d constituents; give its mixing ratios "
-                                              "(they sum to zero)", s->mix_mat, ms->mix_k);
+                                              "(they sum to zero)", s->mix.mat, ms->mix_k);
     for (int c = 0; c < MIX_MAX; c++) a[c] /= sum;
     particles *ps = &s->ps;
     double scratch[SCENE_MAX_PARAMS];
@@ -207,17 +166,17 @@ hearth_status mixing_set_ratios(hearth_scene *s, int from, int to, const double 
         memcpy(pcold(ps, PC_MIX) + (size_t)MIX_MAX * i, a, sizeof a);
         memcpy(pcold(ps, PC_MIXD) + (size_t)MIX_MAX * i, a, sizeof a);
         /* mass from the blend's density at the initial ratios; it does not change after */
-        const double *p = scene_params_for(s, s->mix_mat, i, scratch);
+        const double *p = material_params(&s->mats, &s->ps, s->mix.mat, i, scratch);
         pcold(ps, PC_MASS)[i] = p[ms->density_index] * pcold(ps, PC_VOL0)[i];
     }
     return HEARTH_OK;
 }
 
 const double *hearth_scene_mixing_ratios(const hearth_scene *s, int *k) {
-    if (s->mix_mat < 0) {
+    if (s->mix.mat < 0) {
         if (k) *k = 0;
         return NULL;
     }
-    if (k) *k = s->mats[s->mix_mat].mix_k;
+    if (k) *k = s->mats.slot[s->mix.mat].mix_k;
     return pcold(&s->ps, PC_MIXD);
 }

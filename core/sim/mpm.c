@@ -205,12 +205,12 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
         } else if (!(J > 0) || !all_finite(F, 9)) {
             record_fail(pp, i, FAIL_F, 0);
         } else {
-            const material_slot *ms = &s->mats[mat[i]];
+            const material_slot *ms = &s->mats.slot[mat[i]];
             hearth_point pt;
             memcpy(pt.grad_v, C, sizeof pt.grad_v);
             memcpy(pt.F, F, sizeof pt.F);
             pt.dt = dt;
-            pt.p = scene_params_for(s, mat[i], i, pscratch);
+            pt.p = material_params(&s->mats, &s->ps, mat[i], i, pscratch);
             pt.state = state ? state + (size_t)i * stride : NULL;
             /* the fields this scene carries, and the core's terms on them (material.h) */
             const material_env env = {
@@ -263,10 +263,10 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
         }
         const double mv0 = m * v[0], mv1 = m * v[1], mv2 = m * v[2];
         /* heat (eq. 17, weighted by heat capacity m alpha so energy is conserved across materials) */
-        const double hc = HEAT ? m * s->mats[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = HEAT ? hc * Tcol[i] : 0.0;
+        const double hc = HEAT ? m * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = HEAT ? hc * Tcol[i] : 0.0;
         if (HEAT || WATER) s->vol[i] = J * V0[i]; /* for transport.c and water_take */
         /* water mass and capacity rho_0^w J V_0 (eq. 15, 18) */
-        const double mw = WATER ? Wcol[i] : 0.0, cap = WATER ? s->mats[mat[i]].core[CP_WATER_DENSITY] * J * V0[i] : 0.0;
+        const double mw = WATER ? Wcol[i] : 0.0, cap = WATER ? s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * J * V0[i] : 0.0;
         for (int a = 0; a < 3; a++) {
             const double d0 = (a - fx[0]) * dx;
             for (int b = 0; b < 3; b++) {
@@ -506,7 +506,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             Tcol[i] = flip == 1.0 ? T0 + dT : flip * (T0 + dT) + (1.0 - flip) * Tn; /* FLIP-PIC blend */
             if (Tcol[i] > Tmax[i]) Tmax[i] = Tcol[i];
             if (Gcol) { /* CO2 over the step, temperature moving linearly from T0 to T1 (§5.4) */
-                const material_slot *gm = &s->mats[mat[i]];
+                const material_slot *gm = &s->mats.slot[mat[i]];
                 Gcol[i] += gas_moles_step(T0, Tcol[i], dt, gm->core[CP_GAS_RATE], gm->params[gm->density_index],
                                           gm->core[CP_REACTION_T], gm->core[CP_REACTION_WIDTH]);
             }

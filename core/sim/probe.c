@@ -104,13 +104,13 @@ static hearth_status find_field(const hearth_scene *s, const char *field, int sc
 static void particle_stress(const hearth_scene *s, int i, double tau[9], double *state_copy) {
     const particles *ps = &s->ps;
     const int m = pcoli(ps, PC_MAT)[i];
-    const material_slot *ms = &s->mats[m];
+    const material_slot *ms = &s->mats.slot[m];
     hearth_point pt;
     memcpy(pt.grad_v, pcold(ps, PC_C) + 9 * i, sizeof pt.grad_v);
     memcpy(pt.F, pcold(ps, PC_F) + 9 * i, sizeof pt.F);
     pt.dt = 0;
     double pscratch[SCENE_MAX_PARAMS];
-    pt.p = scene_params_for(s, m, i, pscratch);
+    pt.p = material_params(&s->mats, &s->ps, m, i, pscratch);
     pt.state = NULL;
     if (ps->state_stride) {
         memcpy(state_copy, pcold(ps, PC_STATE) + (size_t)i * ps->state_stride, sizeof(double) * (size_t)ps->state_stride);
@@ -152,13 +152,13 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_GAS: out[0] = pcold(ps, PC_GAS)[i]; break;
     case F_SATURATION: out[0] = water_saturation(s, i); break;
     case F_MIX_RATIO: /* NaN on other materials' particles: they are not part of the mixture */
-        out[0] = pcoli(ps, PC_MAT)[i] == s->mix_mat ? pcold(ps, PC_MIXD)[8 * i] : NAN;
+        out[0] = pcoli(ps, PC_MAT)[i] == s->mix.mat ? pcold(ps, PC_MIXD)[8 * i] : NAN;
         break;
     case F_WATER_MASS: /* as a density: water mass over the particle's current volume */
         out[0] = pcold(ps, PC_WATER)[i] / (pcold(ps, PC_VOL0)[i] * t3_det(F));
         break;
     case F_WATER_PRESSURE: /* p^w = c (s - s_0), compression positive (eq. 14) */
-        out[0] = s->mats[pcoli(ps, PC_MAT)[i]].core[CP_WATER_STIFFNESS] * (water_saturation(s, i) - pcold(ps, PC_SAT0)[i]);
+        out[0] = s->mats.slot[pcoli(ps, PC_MAT)[i]].core[CP_WATER_STIFFNESS] * (water_saturation(s, i) - pcold(ps, PC_SAT0)[i]);
         break;
     case F_BROWNING: { /* from the last SPH step; NaN before the first */
         const double *b = sph_particle_values(s, "browning");
@@ -168,13 +168,13 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_POROSITY:
     case F_GAS_PRESSURE: {
         const int m = pcoli(ps, PC_MAT)[i];
-        const material_slot *ms = &s->mats[m];
+        const material_slot *ms = &s->mats.slot[m];
         double pscratch[SCENE_MAX_PARAMS];
         const double *st = ps->state_stride ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL;
         double JP = 1.0;
         if (ms->m->plastic_J) {
             plugin_call_enter(ms->m, "plastic_J");
-            JP = ms->m->plastic_J(scene_params_for(s, m, i, pscratch), st);
+            JP = ms->m->plastic_J(material_params(&s->mats, &s->ps, m, i, pscratch), st);
             plugin_call_leave();
         }
         const double np = gas_porosity(JP, ms->core[CP_POROSITY0]);

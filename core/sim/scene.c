@@ -182,7 +182,11 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
     }
     s->def = d;
     s->dt_scale = 1.0;
-    s->mix_mat = -1;
+    material_table_init(&s->mats);
+    mixing_init(&s->mix);
+    thermal_init(&s->heat);
+    boundary_init(&s->boundary);
+    water_init(&s->water);
     s->rng = d.seed ? d.seed : 1;
     particles_init(&s->ps);
     particles_init(&s->snap);
@@ -216,16 +220,7 @@ static void free_scratch(hearth_scene *s) {
 
 void hearth_scene_destroy(hearth_scene *s) {
     if (!s) return;
-    for (int i = 0; i < s->nmat; i++) {
-        mem_free(s->mats[i].params, sizeof(double) * (size_t)(s->mats[i].m->nparams > 0 ? s->mats[i].m->nparams : 1));
-        for (int k = 0; k < s->mats[i].ncurves; k++) {
-            mem_free(s->mats[i].curves[k].T, sizeof(double) * (size_t)s->mats[i].curves[k].n);
-            mem_free(s->mats[i].curves[k].v, sizeof(double) * (size_t)s->mats[i].curves[k].n);
-        }
-        mem_free(s->mats[i].curves, sizeof(curve) * (size_t)s->mats[i].ncurves);
-        mem_free(s->mats[i].mix_params, sizeof(double) * (size_t)s->mats[i].mix_k * (size_t)s->mats[i].m->nparams);
-    }
-    mem_free(s->mats, sizeof(material_slot) * (size_t)s->capmat);
+    material_table_free(&s->mats);
     for (int i = 0; i < s->ncol; i++) collider_free(&s->cols[i]);
     mem_free(s->cols, sizeof(collider) * (size_t)s->capcol);
     mem_free(s->snap_cols, sizeof(collider) * (size_t)s->capcol);
@@ -236,12 +231,10 @@ void hearth_scene_destroy(hearth_scene *s) {
     mem_free(s->colour_pb, sizeof(int) * (size_t)s->pbcap);
     mem_free(s->partial, sizeof(pb_partial) * (size_t)s->pbcap);
     mem_free(s->counts, sizeof(int) * ((size_t)s->g.nblocks + 1));
-    mem_free(s->bnd_coef, sizeof(double) * (size_t)s->bnd_cap);
-    mem_free(s->bnd_temp, sizeof(double) * (size_t)s->bnd_cap);
-    mem_free(s->cg_partial, sizeof(double) * (size_t)s->cg_cap);
-    mem_free(s->bnd_area, sizeof(double) * (size_t)s->bnd_area_cap);
-    mem_free(s->bnd_blocks, (size_t)s->bnd_blocks_cap);
-    mem_free(s->mix_nodes, sizeof(double) * s->mix_cap);
+    thermal_free(&s->heat);
+    boundary_free(&s->boundary);
+    water_free(&s->water);
+    mixing_free(&s->mix);
     mem_free(s->mark, (size_t)s->g.nblocks);
     sph_free(s->sph); /* SPH (sph.c) */
     grid_free(&s->g);
@@ -317,19 +310,6 @@ hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err) {
 
 /* ---- materials ------------------------------------------------------- */
 
-const double *scene_params_for(const hearth_scene *s, int mat, int particle, double *scratch) {
-    const material_slot *ms = &s->mats[mat];
-    if (ms->mix_k) mixing_params(s, mat, particle, scratch); /* a mixture: the blend at the particle's ratios */
-    else if (ms->ncurves == 0) return ms->params;
-    else memcpy(scratch, ms->params, sizeof(double) * (size_t)ms->m->nparams);
-    const double *T = pcold(&s->ps, PC_TEMPERATURE), *Tmax = pcold(&s->ps, PC_TEMP_MAX);
-    for (int k = 0; k < ms->ncurves; k++) {
-        const curve *c = &ms->curves[k];
-        scratch[c->param] = curve_eval(c, c->irreversible ? Tmax[particle] : T[particle]);
-    }
-    return scratch;
-}
-
 hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err) {
     particles *ps = &s->ps;
     if (ps->enabled & (1u << PC_TEMPERATURE)) return HEARTH_OK;
@@ -341,76 +321,42 @@ hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err) {
     return HEARTH_OK;
 }
 
-int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *const *names, const double *values,
-                              int n, hearth_error *err) {
-    err_clear(err);
+int scene_add_material(hearth_scene *s, const char *plugin, const char *const *names, const double *values, int n,
+                       hearth_error *err) {
     const hearth_plugin *pl = hearth_plugin_load(plugin, err);
     if (!pl) return -1;
-    const hearth_material *m = hearth_plugin_material(pl);
-    if (m->nparams > SCENE_MAX_PARAMS) {
-        err_set(err, HEARTH_ERR_PLUGIN, "material '%s' declares %d parameters; hearth supports at most %d", m->name,
-                m->nparams, SCENE_MAX_PARAMS);
+    material_slot ms;
+    if (material_slot_init(&ms, pl, names, values, n, err)) return -1;
+    const hearth_material *m = ms.m;
+    if (material_table_reserve(&s->mats, err) || particles_set_state_stride(&s->ps, m->state_size, err)) {
+        material_slot_free(&ms);
         return -1;
     }
-    double *p = mem_alloc(sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1));
-    if (!p) {
-        err_set(err, HEARTH_ERR_NOMEM, "out of memory for material '%s'", m->name);
-        return -1;
-    }
-    double core[CP_COUNT];
-    if (params_resolve(m, names, values, n, p, core, err)) {
-        mem_free(p, sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1));
-        return -1;
-    }
-    if (s->nmat == s->capmat) {
-        int cap = s->capmat ? s->capmat * 2 : 4;
-        material_slot *ms = mem_realloc(s->mats, sizeof(material_slot) * (size_t)s->capmat, sizeof(material_slot) * (size_t)cap);
-        if (!ms) {
-            mem_free(p, sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1));
-            err_set(err, HEARTH_ERR_NOMEM, "out of memory for materials");
-            return -1;
-        }
-        s->mats = ms;
-        s->capmat = cap;
-    }
-    if (particles_set_state_stride(&s->ps, m->state_size, err)) {
-        mem_free(p, sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1));
-        return -1;
-    }
-    material_slot *ms = &s->mats[s->nmat];
-    *ms = (material_slot){.plugin = pl, .m = m, .params = p, .density_index = params_index(m, "density")};
-    memcpy(ms->core, core, sizeof core);
-    if (m->state_size == 0) {
-        plugin_call_enter(m, "wave_speed");
-        ms->wave_speed = m->wave_speed(p, NULL);
-        plugin_call_leave();
-        /* the loader checked the schema's corners; these values may lie between them */
-        if (!(ms->wave_speed > 0 && ms->wave_speed <= DBL_MAX)) {
-            err_set(err, HEARTH_ERR_PARAM,
-                    "material '%s' (%s): wave_speed is %g m/s at these parameters; it must be finite and > 0 for "
-                    "a stable step to exist",
-                    m->name, hearth_plugin_file(pl), ms->wave_speed);
-            mem_free(p, sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1));
-            return -1;
-        }
-    }
-    s->nmat++;
+    const int id = material_table_push(&s->mats, &ms, err); /* checks a stateless plugin's wave speed */
+    if (id < 0) return -1;
+    const double *core = s->mats.slot[id].core;
     /* leavening needs the gas column, and the reaction needs temperature */
     if (core[CP_GAS_RATE] > 0 &&
         (particles_enable(&s->ps, PC_GAS, err) || scene_enable_temperature(s, err))) return -1;
     /* and so does a plugin that reads temperature */
     if ((m->needs & HEARTH_NEEDS_TEMPERATURE) && scene_enable_temperature(s, err)) return -1;
-    if (water_material_wants(s, s->nmat - 1) && water_enable(s, err)) return -1;
-    s->water_limits_valid = 0;
-    return s->nmat - 1;
+    if (water_material_wants(s, id) && water_enable(s, err)) return -1;
+    water_forget_limits(&s->water);
+    return id;
 }
 
-int hearth_scene_material_count(const hearth_scene *s) { return s->nmat; }
+int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *const *names, const double *values,
+                              int n, hearth_error *err) {
+    err_clear(err);
+    return scene_add_material(s, plugin, names, values, n, err);
+}
+
+int hearth_scene_material_count(const hearth_scene *s) { return s->mats.n; }
 const hearth_material *hearth_scene_material_info(const hearth_scene *s, int mat) {
-    return mat >= 0 && mat < s->nmat ? s->mats[mat].m : NULL;
+    return mat >= 0 && mat < s->mats.n ? s->mats.slot[mat].m : NULL;
 }
 const double *hearth_scene_material_params(const hearth_scene *s, int mat) {
-    return mat >= 0 && mat < s->nmat ? s->mats[mat].params : NULL;
+    return mat >= 0 && mat < s->mats.n ? s->mats.slot[mat].params : NULL;
 }
 
 /* ---- particles ------------------------------------------------------- */
@@ -429,8 +375,8 @@ static void valid_region(const hearth_scene *s, double lo[3], double hi[3]) {
 int hearth_scene_add_particles(hearth_scene *s, int material, int n, const double *x, const double *v, double volume,
                                hearth_error *err) {
     err_clear(err);
-    if (material < 0 || material >= s->nmat) {
-        err_set(err, HEARTH_ERR_PARAM, "add particles: material %d does not exist (the scene has %d)", material, s->nmat);
+    if (material < 0 || material >= s->mats.n) {
+        err_set(err, HEARTH_ERR_PARAM, "add particles: material %d does not exist (the scene has %d)", material, s->mats.n);
         return -1;
     }
     if (!(volume > 0) || !isfinite(volume)) {
@@ -460,7 +406,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         }
     particles *ps = &s->ps;
     if (particles_reserve(ps, ps->n + n, err)) return -1;
-    const material_slot *ms = &s->mats[material];
+    const material_slot *ms = &s->mats.slot[material];
     const double rho = ms->params[ms->density_index];
     for (int i = 0; i < n; i++) {
         const int j = ps->n + i;
@@ -496,7 +442,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
     if (ps->enabled & (1u << PC_MIX)) { /* no ratios; a mixture's own particles start as its first constituent */
         memset(pcold(ps, PC_MIX) + (size_t)MIX_MAX * ps->n, 0, sizeof(double) * MIX_MAX * (size_t)n);
         memset(pcold(ps, PC_MIXD) + (size_t)MIX_MAX * ps->n, 0, sizeof(double) * MIX_MAX * (size_t)n);
-        if (material == s->mix_mat) mixing_set_ratios(s, ps->n, ps->n + n, NULL, NULL);
+        if (material == s->mix.mat) mixing_set_ratios(s, ps->n, ps->n + n, NULL, NULL);
     }
     /* new particles only raise the largest wave speed (pinning, which lowers it, rescans) */
     double pscratch[SCENE_MAX_PARAMS];
@@ -504,12 +450,12 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         double c = ms->wave_speed;
         if (ms->m->state_size > 0) {
             plugin_call_enter(ms->m, "wave_speed");
-            c = ms->m->wave_speed(scene_params_for(s, material, j, pscratch), pcold(ps, PC_STATE) + (size_t)j * ps->state_stride);
+            c = ms->m->wave_speed(material_params(&s->mats, &s->ps, material, j, pscratch), pcold(ps, PC_STATE) + (size_t)j * ps->state_stride);
         }
         /* NaN or inf here would stall the step size; the first step's guard names it (mpm.c) */
         if (c > s->c_max && c <= DBL_MAX) s->c_max = c;
         if (ms->m->viscosity) {
-            const double *pp = scene_params_for(s, material, j, pscratch);
+            const double *pp = material_params(&s->mats, &s->ps, material, j, pscratch);
             plugin_call_enter(ms->m, "viscosity");
             const double nu = ms->m->viscosity(pp, ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)j * ps->state_stride : NULL) /
                               pp[ms->density_index];
@@ -662,11 +608,11 @@ void scene_refresh_wave_speed(hearth_scene *s) {
     for (int i = 0; i < ps->n; i++) {
         if (flags && (flags[i] & PF_FIXED)) continue;
         const int m = pcoli(ps, PC_MAT)[i];
-        const material_slot *ms = &s->mats[m];
+        const material_slot *ms = &s->mats.slot[m];
         double ci = ms->wave_speed;
         if (ms->m->state_size > 0) {
             plugin_call_enter(ms->m, "wave_speed");
-            ci = ms->m->wave_speed(scene_params_for(s, m, i, pscratch), pcold(ps, PC_STATE) + (size_t)i * ps->state_stride);
+            ci = ms->m->wave_speed(material_params(&s->mats, &s->ps, m, i, pscratch), pcold(ps, PC_STATE) + (size_t)i * ps->state_stride);
             plugin_call_leave();
         }
         if (ci > c && ci <= DBL_MAX) c = ci;
@@ -703,7 +649,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             s->kinetic = rep.kinetic;
             if (s->kinetic > s->kinetic_peak) s->kinetic_peak = s->kinetic;
             s->out_of_domain += rep.out_of_domain;
-            if (water_active(s)) s->water_lost += s->water_step_removed;
+            if (water_active(s)) water_step_stands(&s->water);
             if (s->dt_scale < 1) s->dt_scale = fmin(1.0, s->dt_scale * 1.25);
             return HEARTH_OK;
         }
@@ -779,11 +725,11 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
     snprintf(st->diagnosis, sizeof st->diagnosis, "%s", s->guard == HEARTH_GUARD_OK ? "" : s->diagnosis);
     st->grid_blocks = s->g.nactive;
     st->heat_energy = thermal_energy(s);
-    st->cg_iterations = s->cg_iterations;
+    st->cg_iterations = thermal_cg_iterations(s);
     if (s->ps.enabled & (1u << PC_GAS))
         for (int i = 0; i < s->ps.n; i++) st->gas_moles += pcold(&s->ps, PC_GAS)[i] * pcold(&s->ps, PC_VOL0)[i];
     st->water_mass = water_total(s);
-    st->water_lost = s->water_lost;
+    st->water_lost = s->water.lost;
 }
 
 int hearth_scene_particle_count(const hearth_scene *s) { return s->ps.n; }

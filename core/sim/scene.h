@@ -1,31 +1,26 @@
 /* scene.h: the scene object (private). Owned by scene.c; mpm.c, guard.c,
- * probe.c and checkpoint.c read and step it. */
+ * probe.c and checkpoint.c read and step it. Each field module keeps its
+ * state in a struct of its own, declared in its header and held here by
+ * value: the materials (material.h), heat (thermal.h), the boundary
+ * (boundary.h), water (water.h), mixing (mixing.h) and, behind a pointer,
+ * SPH (sph.c). Only the owning module writes its struct. Gas keeps no
+ * scene-level state (its column lives with the particles). */
 #ifndef HEARTH_SCENE_H
 #define HEARTH_SCENE_H
 #include <stdint.h>
 
+#include "boundary.h"
 #include "colliders.h"
-#include "curves.h"
 #include "grid.h"
+#include "material.h"
+#include "mixing.h"
 #include "params.h"
 #include "particles.h"
+#include "thermal.h"
+#include "water.h"
 
-typedef struct material_slot {
-    const hearth_plugin *plugin;
-    const hearth_material *m;
-    double *params;     /* resolved, schema order */
-    int density_index;  /* schema index of "density" */
-    double wave_speed;  /* cached when the plugin is stateless (state_size 0) */
-    curve *curves;      /* parameters that follow temperature */
-    int ncurves;
-    double core[CP_COUNT]; /* field properties (params.h CP_*) */
-    int mix_k;             /* a mixture (mixing.c): number of constituents, 0 for a plain material */
-    double *mix_params;    /* mix_k parameter sets, schema order */
-} material_slot;
-
-/* Plugins may declare at most this many parameters (per-particle resolution
- * uses a stack buffer of this size). */
-#define SCENE_MAX_PARAMS 256
+/* The stack buffer for a particle's resolved parameters (material_params). */
+#define SCENE_MAX_PARAMS MATERIAL_MAX_PARAMS
 /* Below this many particles a step runs on one thread: waking the pool costs
  * more than it saves (a 129-particle scene spent 6 s of 11 in the kernel). */
 #define SCENE_PARALLEL_MIN 2048
@@ -70,7 +65,9 @@ typedef struct pb_partial {
     double move; /* largest displacement in the block this step (m) */
     double ke, mass, vmax, cmax, numax; /* numax: largest kinematic viscosity eta / rho (m^2/s) */
     long ood;
-    double water_removed, water_dmax, water_emax; /* water.c */
+    /* water.c's per-block sums, written by G2P's block loop and reduced by water_finish: they stay
+     * here with the other partials so a step's reduction is one array in block order */
+    double water_removed, water_dmax, water_emax;
 } pb_partial;
 
 struct hearth_scene {
@@ -90,11 +87,8 @@ struct hearth_scene {
 
     particles ps;
     grid g;
-    material_slot *mats;
-    int nmat, capmat;
-    int mix_mat;            /* the mixture material (mixing.c), -1 when none */
-    double *mix_nodes;      /* its node sums, (k + 1) per node */
-    size_t mix_cap;
+    material_table mats;    /* material.c */
+    mixing_state mix;       /* mixing.c */
     collider *cols;
     int ncol, capcol;
     hearth_body_force_fn body_force;
@@ -121,31 +115,19 @@ struct hearth_scene {
 
     char fields[256];
 
-    /* heat transport scratch (thermal.c), allocated only when the temperature field is live */
-    double *bnd_coef, *bnd_temp; /* per particle: boundary S beta (W/K) and outside temperature */
-    int bnd_cap;
-    double *cg_partial;          /* per active block: partial dot products */
-    int cg_cap, cg_iterations;
-
-    /* boundary particles (boundary.c): each one's share of the air surface */
-    double *bnd_area;
-    int bnd_area_cap;
-    unsigned char *bnd_blocks; /* per active grid block: holds a boundary node (boundary.c) */
-    int bnd_blocks_cap;
-
-    /* water (water.c) */
-    double water_lost;            /* through the boundary so far (kg) */
-    double water_step_removed;    /* by the step being taken; counted when it stands */
-    double water_dmax, water_emax; /* largest K theta s and beta theta / rho_0 after the last step */
-    int water_limits_valid;        /* 0: particles changed since, scan again */
+    thermal_state heat;       /* thermal.c */
+    boundary_state boundary;  /* boundary.c */
+    water_state water;        /* water.c */
 
     struct sph_state *sph;       /* SPH solver state (sph.c), NULL until the first SPH step */
 };
 
 /* scene.c */
-/* Parameters of particle i's material, with temperature curves evaluated into
- * scratch (SCENE_MAX_PARAMS doubles) when the material has any. */
-const double *scene_params_for(const hearth_scene *s, int mat, int particle, double *scratch);
+/* Add a material from plugin (a name or path) with its parameters and turn on
+ * the fields it needs: hearth_scene_add_material without clearing err, for
+ * the core's own callers (a mixture's first constituent, mixing.c). */
+int scene_add_material(hearth_scene *s, const char *plugin, const char *const *names, const double *values, int n,
+                       hearth_error *err);
 /* Turn the temperature field on (room temperature for particles that have none). */
 hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err);
 /* Largest wave speed over moving particles (s->c_max), after particles change. */

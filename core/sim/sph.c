@@ -187,8 +187,8 @@ static void particle_constants(hearth_scene *s, int i, const double *T, double *
     struct sph_state *st = s->sph;
     const particles *ps = &s->ps;
     const int m = pcoli(ps, PC_MAT)[i];
-    const material_slot *ms = &s->mats[m];
-    const double *p = T ? scene_params_for(s, m, i, pscratch) : ms->params;
+    const material_slot *ms = &s->mats.slot[m];
+    const double *p = T ? material_params(&s->mats, &s->ps, m, i, pscratch) : ms->params;
     const double rho0 = p[ms->density_index];
     plugin_call_enter(ms->m, "wave_speed");
     const double c = ms->m->wave_speed(p, ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
@@ -427,7 +427,7 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     /* pressure: Tait (3.17); bubbles (3.51) while heating, then final-density Tait (3.52) */
     const int *mat = pcoli(ps, PC_MAT);
     for (int i = 0; i < n; i++) {
-        const material_slot *ms = &s->mats[mat[i]];
+        const material_slot *ms = &s->mats.slot[mat[i]];
         const double gam = o->gamma, rho0 = st->rho0[i];
         const double bub = ms->core[CP_BUBBLE];
         /* a bubble expands while its temperature rises (since the last step) above bubble_T0 */
@@ -456,7 +456,7 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     /* while any bubble expands, dough and bubbles keep their density as final density (eq. 3.52) */
     int any_heating = 0;
     for (int i = 0; i < n && !any_heating; i++)
-        any_heating = s->mats[mat[i]].core[CP_BUBBLE] > 0 && T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
+        any_heating = s->mats.slot[mat[i]].core[CP_BUBBLE] > 0 && T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
     if (any_heating) {
         /* A surface particle's summed density is low for want of neighbours,
          * not because it expanded: keeping that as its final density would
@@ -498,9 +498,9 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
             Si[0] = NAN; /* recorded below, in particle order */
             continue;
         }
-        const material_slot *ms = &s->mats[mat[i]];
+        const material_slot *ms = &s->mats.slot[mat[i]];
         double pscratch[SCENE_MAX_PARAMS];
-        const double *p = scene_params_for(s, mat[i], i, pscratch);
+        const double *p = material_params(&s->mats, &s->ps, mat[i], i, pscratch);
         const int vi = pindex(ms->m, "viscosity");
         if (vi >= 0) { /* eq. 3.19 applies the viscosity: the plugin sees none */
             if (p != pscratch) {
@@ -664,7 +664,7 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
              * colour gradient as a surface delta (V |grad C|) would need no
              * flag, but with particles on one side only it sums to 0.69 of a
              * block's outline. */
-            const double ci = s->mats[mat[i]].core[CP_SPECIFIC_HEAT], Vr = m[i] / st->rho0[i];
+            const double ci = s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT], Vr = m[i] / st->rho0[i];
             const double sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
             double coef = beta_oven > 0 && st->surf[i] ? face * beta_oven : 0.0, Tr = Text;
             for (int c = 0; c < s->ncol; c++) {
@@ -808,8 +808,8 @@ double sph_stable_dt(const hearth_scene *s) {
     double hmin = INFINITY, numax = 0, rhomin = INFINITY;
     for (int i = 0; i < ps->n; i++) {
         const int m = pcoli(ps, PC_MAT)[i];
-        const material_slot *ms = &s->mats[m];
-        const double *p = T ? scene_params_for(s, m, i, pscratch) : ms->params;
+        const material_slot *ms = &s->mats.slot[m];
+        const double *p = T ? material_params(&s->mats, &s->ps, m, i, pscratch) : ms->params;
         const double V0 = pcold(ps, PC_VOL0)[i], h = o->h_factor * (dim == 3 ? cbrt(V0) : sqrt(V0));
         if (h < hmin) hmin = h;
         if (p[ms->density_index] < rhomin) rhomin = p[ms->density_index];
@@ -836,8 +836,8 @@ double sph_stable_dt(const hearth_scene *s) {
         for (int k = 0; k < s->ncol; k++)
             if (!isnan(s->cols[k].temperature) && s->cols[k].beta > bc) bc = s->cols[k].beta;
         beta += bc;
-        for (int m = 0; m < s->nmat && beta > 0; m++) {
-            const material_slot *ms = &s->mats[m];
+        for (int m = 0; m < s->mats.n && beta > 0; m++) {
+            const material_slot *ms = &s->mats.slot[m];
             const double rc = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
             if (rc > 0) dt = fmin(dt, 0.25 * rc * hmin / o->h_factor / beta);
         }

@@ -32,6 +32,17 @@
 
 #define KELVIN 273.15
 
+void thermal_init(thermal_state *h) { *h = (thermal_state){0}; }
+
+void thermal_free(thermal_state *h) {
+    mem_free(h->bnd_coef, sizeof(double) * (size_t)h->bnd_cap);
+    mem_free(h->bnd_temp, sizeof(double) * (size_t)h->bnd_cap);
+    mem_free(h->cg_partial, sizeof(double) * (size_t)h->cg_cap);
+    thermal_init(h);
+}
+
+int thermal_cg_iterations(const hearth_scene *s) { return s->heat.cg_iterations; }
+
 int thermal_active(const hearth_scene *s) { return (s->ps.enabled & (1u << PC_TEMPERATURE)) != 0; }
 
 double thermal_dt_limit(const hearth_scene *s) {
@@ -41,8 +52,8 @@ double thermal_dt_limit(const hearth_scene *s) {
     for (int c = 0; c < s->ncol; c++)
         if (!isnan(s->cols[c].temperature) && s->cols[c].beta > beta) beta = s->cols[c].beta;
     double dt = INFINITY;
-    for (int m = 0; m < s->nmat; m++) {
-        const material_slot *ms = &s->mats[m];
+    for (int m = 0; m < s->mats.n; m++) {
+        const material_slot *ms = &s->mats.slot[m];
         const double k = ms->core[CP_CONDUCTIVITY], ra = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
         /* forward Euler on the B-spline Laplacian: rho alpha dx^2 / (2 dim kappa) */
         if (k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * s->def.dim * k));
@@ -57,13 +68,13 @@ double thermal_energy(const hearth_scene *s) {
     double e = 0;
     const double *T = pcold(&s->ps, PC_TEMPERATURE), *m = pcold(&s->ps, PC_MASS);
     const int *mat = pcoli(&s->ps, PC_MAT);
-    for (int i = 0; i < s->ps.n; i++) e += m[i] * s->mats[mat[i]].core[CP_SPECIFIC_HEAT] * (T[i] + KELVIN);
+    for (int i = 0; i < s->ps.n; i++) e += m[i] * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT] * (T[i] + KELVIN);
     return e;
 }
 
 /* ---- boundary coefficients ------------------------------------------- */
 
-/* Fills s->bnd_coef (S beta, W/K) and s->bnd_temp (degrees C) for the
+/* Fills s->heat.bnd_coef (S beta, W/K) and s->heat.bnd_temp (degrees C) for the
  * particles flagged PF_BOUNDARY, from the air boundary (boundary.c) and the
  * heated colliders. Other particles' entries are stale: readers check the
  * flag first, so the interior costs no memory traffic. */
@@ -71,13 +82,13 @@ static void find_boundary(hearth_scene *s) {
     const grid *g = &s->g;
     particles *ps = &s->ps;
     const int n = ps->n;
-    double *coef = s->bnd_coef, *temp = s->bnd_temp;
+    double *coef = s->heat.bnd_coef, *temp = s->heat.bnd_temp;
     const double *X = pcold(ps, PC_X);
     int *flags = pcoli(ps, PC_FLAGS); /* live with temperature */
     const int oven = !isnan(s->def.oven_temperature) && s->def.oven_beta > 0;
     for (int i = 0; i < n; i++)
         if (flags[i] & PF_BOUNDARY) { /* flagged by boundary.c: the air boundary */
-            coef[i] = oven ? s->bnd_area[i] * s->def.oven_beta : 0.0;
+            coef[i] = oven ? s->boundary.area[i] * s->def.oven_beta : 0.0;
             temp[i] = oven ? s->def.oven_temperature : 0.0;
         }
     /* heated colliders: the band within dx of the surface */
@@ -102,7 +113,7 @@ static void find_boundary(hearth_scene *s) {
 static double dot(hearth_scene *s, int a, int b) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block;
-    double *part = s->cg_partial;
+    double *part = s->heat.cg_partial;
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         const double *node = grid_block(g, k);
@@ -126,8 +137,8 @@ static void clear_channel(hearth_scene *s, int ch) {
 hearth_status thermal_prepare(hearth_scene *s, hearth_error *err) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block, n = s->ps.n;
-    if (n > s->bnd_cap || g->nactive > s->cg_cap) {
-        const int nc = n > s->bnd_cap ? n : s->bnd_cap, gc = g->nactive > s->cg_cap ? g->nactive * 2 : s->cg_cap;
+    if (n > s->heat.bnd_cap || g->nactive > s->heat.cg_cap) {
+        const int nc = n > s->heat.bnd_cap ? n : s->heat.bnd_cap, gc = g->nactive > s->heat.cg_cap ? g->nactive * 2 : s->heat.cg_cap;
         double *a = mem_alloc(sizeof(double) * (size_t)nc), *b = mem_alloc(sizeof(double) * (size_t)nc);
         double *c = mem_alloc(sizeof(double) * (size_t)gc);
         if (!a || !b || !c) {
@@ -136,14 +147,14 @@ hearth_status thermal_prepare(hearth_scene *s, hearth_error *err) {
             mem_free(c, sizeof(double) * (size_t)gc);
             return err_set(err, HEARTH_ERR_NOMEM, "out of memory for heat transport (%d particles)", n);
         }
-        mem_free(s->bnd_coef, sizeof(double) * (size_t)s->bnd_cap);
-        mem_free(s->bnd_temp, sizeof(double) * (size_t)s->bnd_cap);
-        mem_free(s->cg_partial, sizeof(double) * (size_t)s->cg_cap);
-        s->bnd_coef = a;
-        s->bnd_temp = b;
-        s->cg_partial = c;
-        s->bnd_cap = nc;
-        s->cg_cap = gc;
+        mem_free(s->heat.bnd_coef, sizeof(double) * (size_t)s->heat.bnd_cap);
+        mem_free(s->heat.bnd_temp, sizeof(double) * (size_t)s->heat.bnd_cap);
+        mem_free(s->heat.cg_partial, sizeof(double) * (size_t)s->heat.cg_cap);
+        s->heat.bnd_coef = a;
+        s->heat.bnd_temp = b;
+        s->heat.cg_partial = c;
+        s->heat.bnd_cap = nc;
+        s->heat.cg_cap = gc;
     }
     /* node temperatures (eq. 17): C theta / C */
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
@@ -210,7 +221,7 @@ void thermal_finish(hearth_scene *s, double dt) {
     }
     scale = sqrt(scale);
     double rz = dot(s, CH_CG_R, CH_B), rr = dot(s, CH_CG_R, CH_CG_R);
-    s->cg_iterations = 0;
+    s->heat.cg_iterations = 0;
     for (int it = 0; it < 2000 && sqrt(rr) > 1e-12 * scale; it++) {
         clear_channel(s, CH_R);
         apply(s, CH_CG_P, CH_R);
@@ -244,6 +255,6 @@ void thermal_finish(hearth_scene *s, double dt) {
             double *node = grid_block(g, k);
             for (int l = 0; l < NPB; l++) node[CH_CG_P * NPB + l] = node[CH_B * NPB + l] + beta * node[CH_CG_P * NPB + l];
         }
-        s->cg_iterations = it + 1;
+        s->heat.cg_iterations = it + 1;
     }
 }

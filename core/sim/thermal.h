@@ -6,6 +6,26 @@
 
 struct hearth_scene;
 
+/* Heat transport's own state (thermal.c), held by value in the scene as
+ * s->heat. Scratch grown when the particle or block count grows; nothing is
+ * allocated until the temperature field is live. transport.c reads bnd_coef
+ * and bnd_temp (it applies the operator whose sources they are); only
+ * thermal.c writes. */
+typedef struct thermal_state {
+    double *bnd_coef, *bnd_temp; /* per particle: boundary S beta (W/K) and outside temperature (degrees C) */
+    int bnd_cap;
+    double *cg_partial;          /* per active block: partial dot products */
+    int cg_cap;
+    int cg_iterations;           /* of the last implicit solve */
+} thermal_state;
+
+/// Empty state (allocates nothing).
+void thermal_init(thermal_state *h);
+/// Free the scratch; h is empty afterwards (thermal_init's state).
+void thermal_free(thermal_state *h);
+/// Iterations of the last implicit heat solve (0 when explicit or none yet).
+int thermal_cg_iterations(const struct hearth_scene *s);
+
 /// Is heat transport on for this scene (temperature live)?
 int thermal_active(const struct hearth_scene *s);
 /// Largest explicit heat step (s), or INFINITY when implicit or inactive.

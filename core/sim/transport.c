@@ -119,7 +119,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     const double *V = WATER ? pcold(ps, PC_V) : NULL, *W = WATER ? pcold(ps, PC_WATER) : NULL;
     double *Q = mom ? pcold(ps, PC_QW) : NULL; /* kept only for the momentum coupling */
-    const double *area = s->bnd_area, dt = tp->dt;
+    const double *area = s->boundary.area, dt = tp->dt;
     const int *mat = pcoli(ps, PC_MAT), *flags = pcoli(ps, PC_FLAGS); /* live with heat and with water */
     for (int i = pb.start; i < pb.end; i++) {
         int base[3] = {0, 0, 0};
@@ -131,7 +131,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
             for (int k = 0; k < 3; k++) dw[d][k] *= g->inv_dx;
             base[d] = bb - bc[d] * GRID_B;
         }
-        const material_slot *ms = &s->mats[mat[i]];
+        const material_slot *ms = &s->mats.slot[mat[i]];
         const double Vp = s->vol[i]; /* J V_0, from P2G */
         const int bnd = (flags[i] & PF_BOUNDARY) != 0;
         /* value and gradient at the particle, contracted one axis at a time (the
@@ -144,9 +144,9 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
         if (HEAT) {
             const double kap = Vp * ms->core[CP_CONDUCTIVITY];
             for (int d = 0; d < 3; d++) qk[d] = kap * gx[d];
-            bcoef = bnd ? s->bnd_coef[i] : 0.0; /* thermal.c fills only flagged entries */
+            bcoef = bnd ? s->heat.bnd_coef[i] : 0.0; /* thermal.c fills only flagged entries */
             if (SRC) {
-                source = bnd ? bcoef * s->bnd_temp[i] : 0.0;
+                source = bnd ? bcoef * s->heat.bnd_temp[i] : 0.0;
                 const double cl = ms->core[CP_EXPANSION];
                 if (cl > 0) source -= V0[i] * cl * (T[i] + KELVIN) * (Cc[9 * i] + Cc[9 * i + 4] + Cc[9 * i + 8]);
             }

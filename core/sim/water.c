@@ -50,17 +50,27 @@
 
 #define KELVIN 273.15
 
+void water_init(water_state *w) { *w = (water_state){0}; }
+
+void water_free(water_state *w) { water_init(w); }
+
+void water_step_stands(water_state *w) { w->lost += w->step_removed; }
+
+void water_forget_limits(water_state *w) { w->limits_valid = 0; }
+
+void water_restore_lost(water_state *w, double lost) { w->lost = lost; }
+
 int water_active(const hearth_scene *s) { return (s->ps.enabled & (1u << PC_WATER)) != 0; }
 
 int water_material_wants(const hearth_scene *s, int mat) {
-    const material_slot *ms = &s->mats[mat];
+    const material_slot *ms = &s->mats.slot[mat];
     return ms->core[CP_WATER_DIFFUSIVITY] > 0 || ms->core[CP_EVAPORATION] > 0 || ms->core[CP_WATER_STIFFNESS] > 0 ||
            (ms->m->needs & HEARTH_NEEDS_SATURATION);
 }
 
 static double capacity(const hearth_scene *s, int i) { /* rho_0^w J V_0: water mass at saturation 1 */
     const particles *ps = &s->ps;
-    const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
+    const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
     return ms->core[CP_WATER_DENSITY] * t3_det(pcold(ps, PC_F) + 9 * i) * pcold(ps, PC_VOL0)[i];
 }
 
@@ -69,14 +79,14 @@ double water_saturation(const hearth_scene *s, int i) { return pcold(&s->ps, PC_
 void water_init_particles(hearth_scene *s, int from, int to, double sat) {
     particles *ps = &s->ps;
     for (int i = from; i < to; i++) {
-        const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
+        const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
         double s0 = isnan(sat) ? ms->core[CP_SATURATION0] : sat;
         if (s0 < WATER_SATURATION_FLOOR) s0 = WATER_SATURATION_FLOOR;
         pcold(ps, PC_SAT0)[i] = s0;
         pcold(ps, PC_WATER)[i] = s0 * capacity(s, i);
         if (ps->enabled & (1u << PC_QW)) memset(pcold(ps, PC_QW) + 3 * i, 0, 3 * sizeof(double));
     }
-    s->water_limits_valid = 0;
+    s->water.limits_valid = 0;
 }
 
 hearth_status water_enable(hearth_scene *s, hearth_error *err) {
@@ -109,7 +119,7 @@ static void scan_limits(const hearth_scene *s, double *dmax, double *emax) {
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     double d = 0, e = 0;
     for (int i = 0; i < ps->n; i++) {
-        const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
+        const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
         particle_limits(ms, theta_abs(T, i, ms), water_saturation(s, i), &d, &e);
     }
     *dmax = d;
@@ -118,8 +128,8 @@ static void scan_limits(const hearth_scene *s, double *dmax, double *emax) {
 
 double water_dt_limit(const hearth_scene *s) {
     if (!water_active(s)) return INFINITY;
-    double d = s->water_dmax, e = s->water_emax;
-    if (!s->water_limits_valid) scan_limits(s, &d, &e);
+    double d = s->water.dmax, e = s->water.emax;
+    if (!s->water.limits_valid) scan_limits(s, &d, &e);
     const double dx = s->def.dx;
     double dt = INFINITY;
     /* forward Euler on the B-spline Laplacian, as for heat: dx^2 / (2 dim D) */
@@ -189,7 +199,7 @@ double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) 
     particles *ps = &s->ps;
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     double *W = pcold(ps, PC_WATER);
-    const material_slot *ms = &s->mats[pcoli(ps, PC_MAT)[i]];
+    const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
     const double cap = ms->core[CP_WATER_DENSITY] * s->vol[i], before = W[i]; /* capacity(), with P2G's volume */
     double m = before + cap * r;
     if (m < WATER_SATURATION_FLOOR * cap) m = WATER_SATURATION_FLOOR * cap;
@@ -206,8 +216,8 @@ void water_finish(hearth_scene *s) {
         dmax = fmax(dmax, s->partial[k].water_dmax);
         emax = fmax(emax, s->partial[k].water_emax);
     }
-    s->water_step_removed = removed;
-    s->water_dmax = dmax;
-    s->water_emax = emax;
-    s->water_limits_valid = 1;
+    s->water.step_removed = removed;
+    s->water.dmax = dmax;
+    s->water.emax = emax;
+    s->water.limits_valid = 1;
 }

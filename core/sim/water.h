@@ -6,6 +6,29 @@
 
 struct hearth_scene;
 
+/* Water's own state (water.c), held by value in the scene as s->water: the
+ * running totals and the explicit-step limits. Only water.c writes it; the
+ * per-block partial sums of a step (pb_partial's water_* members, scene.h)
+ * stay with the other P2G/G2P partials, where G2P's block loop writes them,
+ * and water_finish reduces them into here. */
+typedef struct water_state {
+    double lost;           /* through the boundary so far (kg) */
+    double step_removed;   /* by the step being taken; counted when it stands (water_step_stands) */
+    double dmax, emax;     /* largest K theta s and beta theta / rho_0 after the last step */
+    int limits_valid;      /* 0: particles or materials changed since, scan again */
+} water_state;
+
+/// Empty state: nothing lost, limits to be scanned.
+void water_init(water_state *w);
+/// Water holds no memory; this resets w to water_init's state, so every field has the same lifetime calls.
+void water_free(water_state *w);
+/// The step stands: its water loss counts.
+void water_step_stands(water_state *w);
+/// Particles or materials changed: the step limits are scanned again.
+void water_forget_limits(water_state *w);
+/// A restored checkpoint's water lost so far (kg).
+void water_restore_lost(water_state *w, double lost);
+
 /* Saturation never reaches zero (Ding et al. §3: "our mixture will never be
  * completely dry"): particles keep at least this much. */
 #define WATER_SATURATION_FLOOR 1e-4

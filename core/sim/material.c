@@ -1,0 +1,228 @@
+/* material.c: the scene's material slots and the resolution of a particle's
+ * parameters (temperature curves, a mixture's blend). The slots used to sit
+ * loose in the scene, written by scene.c, bodies.c and mixing.c; now this
+ * file is the only writer, and the scene, the fields and the solvers read.
+ * The door to a material point (material_point_eval) stays header-only in
+ * material.h: it runs per particle per step. */
+#include "material.h"
+
+#include <float.h>
+#include <stdio.h>
+
+#include "alloc.h"
+#include "error.h"
+
+/* A parameter array is never of size 0, so a plugin without parameters still has a pointer. */
+static size_t params_bytes(const hearth_material *m) { return sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1); }
+
+/* A mixture's k parameter sets. */
+static size_t mixture_bytes(const hearth_material *m, int k) {
+    return sizeof(double) * (size_t)k * (size_t)(m->nparams > 0 ? m->nparams : 1);
+}
+
+void material_table_init(material_table *t) { *t = (material_table){0}; }
+
+void material_slot_free(material_slot *ms) {
+    mem_free(ms->params, params_bytes(ms->m));
+    for (int k = 0; k < ms->ncurves; k++) {
+        mem_free(ms->curves[k].T, sizeof(double) * (size_t)ms->curves[k].n);
+        mem_free(ms->curves[k].v, sizeof(double) * (size_t)ms->curves[k].n);
+    }
+    mem_free(ms->curves, sizeof(curve) * (size_t)ms->ncurves);
+    mem_free(ms->mix_params, mixture_bytes(ms->m, ms->mix_k));
+    ms->params = ms->mix_params = NULL;
+    ms->curves = NULL;
+    ms->ncurves = ms->mix_k = 0;
+}
+
+void material_table_free(material_table *t) {
+    for (int i = 0; i < t->n; i++) material_slot_free(&t->slot[i]);
+    mem_free(t->slot, sizeof(material_slot) * (size_t)t->cap);
+    material_table_init(t);
+}
+
+hearth_status material_slot_init(material_slot *ms, const hearth_plugin *pl, const char *const *names,
+                                 const double *values, int n, hearth_error *err) {
+    const hearth_material *m = hearth_plugin_material(pl);
+    if (m->nparams > MATERIAL_MAX_PARAMS)
+        return err_set(err, HEARTH_ERR_PLUGIN, "material '%s' declares %d parameters; hearth supports at most %d", m->name,
+                       m->nparams, MATERIAL_MAX_PARAMS);
+    double *p = mem_alloc(params_bytes(m));
+    if (!p) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for material '%s'", m->name);
+    double core[CP_COUNT];
+    hearth_status st = params_resolve(m, names, values, n, p, core, err);
+    if (st) {
+        mem_free(p, params_bytes(m));
+        return st;
+    }
+    *ms = (material_slot){.plugin = pl, .m = m, .params = p, .density_index = params_index(m, "density")};
+    memcpy(ms->core, core, sizeof core);
+    return HEARTH_OK;
+}
+
+hearth_status material_table_reserve(material_table *t, hearth_error *err) {
+    if (t->n < t->cap) return HEARTH_OK;
+    const int cap = t->cap ? t->cap * 2 : 4;
+    material_slot *ms = mem_realloc(t->slot, sizeof(material_slot) * (size_t)t->cap, sizeof(material_slot) * (size_t)cap);
+    if (!ms) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for materials");
+    t->slot = ms;
+    t->cap = cap;
+    return HEARTH_OK;
+}
+
+int material_table_push(material_table *t, material_slot *ms, hearth_error *err) {
+    HEARTH_ASSERT(t->n < t->cap);
+    const hearth_material *m = ms->m;
+    if (m->state_size == 0) {
+        plugin_call_enter(m, "wave_speed");
+        ms->wave_speed = m->wave_speed(ms->params, NULL);
+        plugin_call_leave();
+        /* the loader checked the schema's corners; these values may lie between them */
+        if (!(ms->wave_speed > 0 && ms->wave_speed <= DBL_MAX)) {
+            err_set(err, HEARTH_ERR_PARAM,
+                    "material '%s' (%s): wave_speed is %g m/s at these parameters; it must be finite and > 0 for "
+                    "a stable step to exist",
+                    m->name, hearth_plugin_file(ms->plugin), ms->wave_speed);
+            material_slot_free(ms);
+            return -1;
+        }
+    }
+    t->slot[t->n] = *ms;
+    return t->n++;
+}
+
+/* ---- temperature curves ---------------------------------------------- */
+
+hearth_status material_curve_check(const material_table *t, int mat, const char *param, int n, const double *T,
+                                   const double *v, int *kout, hearth_error *err) {
+    if (mat < 0 || mat >= t->n) return err_set(err, HEARTH_ERR_PARAM, "curve: material %d does not exist", mat);
+    const material_slot *ms = &t->slot[mat];
+    const int k = params_index(ms->m, param);
+    if (k < 0) return err_set(err, HEARTH_ERR_PARAM, "curve: material '%s' has no parameter '%s'", ms->m->name, param);
+    const hearth_param *p = &ms->m->params[k];
+    if (n < 1 || n > 10000) return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': %d points; valid range [1, 10000]", param, n);
+    for (int i = 0; i < n; i++) {
+        if (!isfinite(T[i]) || (i > 0 && !(T[i] > T[i - 1])))
+            return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': temperatures must be finite and strictly increasing (point %d: %g)",
+                           param, i + 1, T[i]);
+        if (!(v[i] >= p->min && v[i] <= p->max))
+            return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': value %g at %g degrees C is outside the range [%g, %g] %s",
+                           param, v[i], T[i], p->min, p->max, p->unit);
+    }
+    for (int i = 0; i < ms->ncurves; i++)
+        if (ms->curves[i].param == k)
+            return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': the parameter already has a curve", param);
+    *kout = k;
+    return HEARTH_OK;
+}
+
+hearth_status material_curve_add(material_table *t, int mat, int k, int n, const double *T, const double *v,
+                                 int irreversible, hearth_error *err) {
+    material_slot *ms = &t->slot[mat];
+    /* fresh arrays first, so a failure leaves the material as it was */
+    curve *cs = mem_alloc(sizeof(curve) * (size_t)(ms->ncurves + 1));
+    double *tt = mem_alloc(sizeof(double) * (size_t)n), *vv = mem_alloc(sizeof(double) * (size_t)n);
+    if (!cs || !tt || !vv) {
+        mem_free(cs, sizeof(curve) * (size_t)(ms->ncurves + 1));
+        mem_free(tt, sizeof(double) * (size_t)n);
+        mem_free(vv, sizeof(double) * (size_t)n);
+        return err_set(err, HEARTH_ERR_NOMEM, "curve: out of memory");
+    }
+    if (ms->ncurves) memcpy(cs, ms->curves, sizeof(curve) * (size_t)ms->ncurves);
+    mem_free(ms->curves, sizeof(curve) * (size_t)ms->ncurves);
+    ms->curves = cs;
+    memcpy(tt, T, sizeof(double) * (size_t)n);
+    memcpy(vv, v, sizeof(double) * (size_t)n);
+    ms->curves[ms->ncurves++] = (curve){.param = k, .n = n, .T = tt, .v = vv, .irreversible = irreversible != 0};
+    return HEARTH_OK;
+}
+
+/* ---- mixtures -------------------------------------------------------- */
+
+double *material_mixture_params(const material_table *t, int id, int k, const char *const *const *names,
+                                const double *const *values, const int *n, hearth_error *err) {
+    const material_slot *ms = &t->slot[id];
+    const hearth_material *m = ms->m;
+    if (!m->blend) {
+        err_set(err, HEARTH_ERR_PARAM, "mixture: plugin '%s' has no blend callback; it cannot mix", m->name);
+        return NULL;
+    }
+    const int np = m->nparams;
+    double *mp = mem_alloc(mixture_bytes(m, k));
+    if (!mp) {
+        err_set(err, HEARTH_ERR_NOMEM, "out of memory for a mixture");
+        return NULL;
+    }
+    memcpy(mp, ms->params, sizeof(double) * (size_t)np);
+    double core[CP_COUNT]; /* the first constituent's core field properties are the mixture's */
+    for (int c = 1; c < k; c++)
+        if (params_resolve(m, names[c], values[c], n[c], mp + (size_t)c * np, core, err)) {
+            char msg[sizeof err->msg];
+            snprintf(msg, sizeof msg, "%s", err->msg);
+            err_set(err, HEARTH_ERR_PARAM, "mixture constituent %d: %s", c + 1, msg);
+            mem_free(mp, mixture_bytes(m, k));
+            return NULL;
+        }
+    return mp;
+}
+
+void material_mixture_params_free(const material_table *t, int id, int k, double *mp) {
+    mem_free(mp, mixture_bytes(t->slot[id].m, k));
+}
+
+void material_mixture_set(material_table *t, int id, int k, double *mp) {
+    material_slot *ms = &t->slot[id];
+    const hearth_material *m = ms->m;
+    const int np = m->nparams;
+    ms->mix_k = k;
+    ms->mix_params = mp;
+    if (m->state_size == 0) /* any blend's waves are bounded by the fastest constituent's */
+        for (int c = 1; c < k; c++) {
+            plugin_call_enter(m, "wave_speed");
+            ms->wave_speed = fmax(ms->wave_speed, m->wave_speed(mp + (size_t)c * np, NULL));
+            plugin_call_leave();
+        }
+}
+
+/* The ratios are normalised here; a plugin that refuses the blend gets its dominant constituent. */
+void material_blend_at(const material_slot *ms, const particles *ps, int i, double *out) {
+    const double *a = pcold(ps, PC_MIXD) + (size_t)MIX_MAX * i;
+    const int np = ms->m->nparams, k = ms->mix_k;
+    const double *pk[MIX_MAX];
+    double alpha[MIX_MAX], sum = 0;
+    for (int c = 0; c < k; c++) {
+        pk[c] = ms->mix_params + (size_t)c * np;
+        alpha[c] = a[c] > 0 ? a[c] : 0;
+        sum += alpha[c];
+    }
+    if (!(sum > 0)) { /* cannot happen for a mixture particle; keep the first constituent */
+        memcpy(out, pk[0], sizeof(double) * (size_t)np);
+        return;
+    }
+    for (int c = 0; c < k; c++) alpha[c] /= sum;
+    plugin_call_enter(ms->m, "blend");
+    const int refused = ms->m->blend(k, alpha, pk, out);
+    plugin_call_leave();
+    if (refused) { /* a plugin that refuses: the dominant constituent */
+        int best = 0;
+        for (int c = 1; c < k; c++)
+            if (alpha[c] > alpha[best]) best = c;
+        memcpy(out, pk[best], sizeof(double) * (size_t)np);
+    }
+}
+
+/* ---- checking parameters without a scene ----------------------------- */
+
+hearth_status hearth_material_check(const char *plugin, const char *const *names, const double *values, int n,
+                                    hearth_error *err) {
+    hearth_error local;
+    if (!err) err = &local;
+    const hearth_plugin *pl = hearth_plugin_load(plugin, err);
+    if (!pl) return err->code;
+    const hearth_material *m = hearth_plugin_material(pl);
+    double tmp[MATERIAL_MAX_PARAMS], core[CP_COUNT];
+    if (m->nparams > MATERIAL_MAX_PARAMS)
+        return err_set(err, HEARTH_ERR_PLUGIN, "material '%s' declares %d parameters; hearth supports at most %d", m->name,
+                       m->nparams, MATERIAL_MAX_PARAMS);
+    return params_resolve(m, names, values, n, tmp, core, err);
+}
