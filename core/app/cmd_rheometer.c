@@ -14,8 +14,7 @@
 #include "hearth/hearth.h"
 #include "image.h"
 #include "io_png.h"
-#include "rheometer.h"
-#include "sauce_library.h"
+#include "hearth/lab.h"
 
 /* Also in commands.h once it lists them; repeated so this file stands alone. */
 
@@ -218,7 +217,7 @@ static int parse_rates(const char *s, double *lo, double *hi, long *count) {
 }
 
 typedef struct mix_item {
-    char name[SAUCE_NAME_MAX + 8];
+    char name[HEARTH_SAUCE_NAME_MAX + 8];
     double w;
 } mix_item;
 
@@ -368,10 +367,10 @@ int cmd_rheometer(int argc, char **argv) {
     }
     double p[64];
     for (int i = 0; i < m->nparams; i++) p[i] = m->params[i].def;
-    sauce_library lib = {0};
+    hearth_sauce_library lib = {0};
     if (is_sauce || mix) {
         const char *lp = app_sauce_library_path(library);
-        if (sauce_library_load(lp, &lib, &err)) {
+        if (hearth_sauce_library_load(lp, &lib, &err)) {
             fprintf(stderr, "hearth rheometer: %s%s\n", err.msg, library ? "" : " (use --library FILE)");
             return 1;
         }
@@ -379,8 +378,8 @@ int cmd_rheometer(int argc, char **argv) {
     int rc = 1;
     char label[512] = "";
     if (is_sauce) {
-        const sauce *s = sauce_lookup(&lib, material, &err);
-        if (!s || sauce_params(m, s, p, &err)) {
+        const hearth_sauce *s = hearth_sauce_lookup(&lib, material, &err);
+        if (!s || hearth_sauce_params(m, s, p, &err)) {
             fprintf(stderr, "hearth rheometer: %s\n", err.msg);
             goto done;
         }
@@ -394,8 +393,8 @@ int cmd_rheometer(int argc, char **argv) {
         const double *pk[MAX_MIX];
         size_t used = 0;
         for (int k = 0; k < nmix; k++) {
-            const sauce *s = sauce_lookup(&lib, items[k].name, &err);
-            if (!s || sauce_params(m, s, sets[k], &err)) {
+            const hearth_sauce *s = hearth_sauce_lookup(&lib, items[k].name, &err);
+            if (!s || hearth_sauce_params(m, s, sets[k], &err)) {
                 fprintf(stderr, "hearth rheometer: --mix: %s\n", err.msg);
                 goto done;
             }
@@ -423,10 +422,10 @@ int cmd_rheometer(int argc, char **argv) {
     }
 
     static double rates[MAX_RATES], stress[MAX_RATES], hbv[MAX_RATES], measured[MAX_RATES];
-    rheo_log_rates(lo, hi, (int)count, rates);
+    hearth_log_spaced(lo, hi, (int)count, rates);
     int isy = pindex(m, "sigma_y"), ieta = pindex(m, "eta"), ih = pindex(m, "h");
     int has_hb = isy >= 0 && ieta >= 0 && ih >= 0;
-    rheo_opts o = rheo_default_opts();
+    hearth_rheometer_opts o = hearth_rheometer_default_opts();
     o.dt = dt;
     if (mpm && dt > 0) {
         fprintf(stderr, "hearth rheometer: --dt applies to the homogeneous mode; the MPM cell steps at its CFL limit\n");
@@ -434,23 +433,23 @@ int cmd_rheometer(int argc, char **argv) {
     }
     for (int i = 0; i < count; i++) {
         if (mpm) {
-            rheo_mpm_result r;
-            if (rheo_mpm_steady(plugin, p, rates[i], NULL, &r, &err)) {
+            hearth_rheometer_mpm_result r;
+            if (hearth_rheometer_mpm_steady(plugin, p, rates[i], NULL, &r, &err)) {
                 fprintf(stderr, "hearth rheometer: %s\n", err.msg);
                 goto done;
             }
             stress[i] = r.stress;
             measured[i] = r.rate;
-            if (has_hb) hbv[i] = rheo_hb(p[isy], p[ieta], p[ih], rates[i]);
+            if (has_hb) hbv[i] = hearth_hb_stress(p[isy], p[ieta], p[ih], rates[i]);
             continue;
         }
-        rheo_result r;
-        if (rheo_steady(m, p, rates[i], &o, &r, &err)) {
+        hearth_rheometer_result r;
+        if (hearth_rheometer_steady(m, p, rates[i], &o, &r, &err)) {
             fprintf(stderr, "hearth rheometer: %s\n", err.msg);
             goto done;
         }
         stress[i] = r.stress;
-        if (has_hb) hbv[i] = rheo_hb(p[isy], p[ieta], p[ih], rates[i]);
+        if (has_hb) hbv[i] = hearth_hb_stress(p[isy], p[ieta], p[ih], rates[i]);
     }
 
     /* files */
@@ -478,8 +477,8 @@ int cmd_rheometer(int argc, char **argv) {
     double cx[NC], cy[NC];
     char clabel[256] = "";
     if (has_hb) {
-        rheo_log_rates(lo, hi > lo ? hi : lo * 10, NC, cx);
-        for (int i = 0; i < NC; i++) cy[i] = rheo_hb(p[isy], p[ieta], p[ih], cx[i]);
+        hearth_log_spaced(lo, hi > lo ? hi : lo * 10, NC, cx);
+        for (int i = 0; i < NC; i++) cy[i] = hearth_hb_stress(p[isy], p[ieta], p[ih], cx[i]);
         snprintf(clabel, sizeof clabel, "Herschel-Bulkley: sigma_y %.4g Pa, eta %.4g Pa s^h, h %.4g", p[isy], p[ieta], p[ih]);
     }
     char title[600];
@@ -503,7 +502,7 @@ int cmd_rheometer(int argc, char **argv) {
                    strcmp(m->params[i].unit, "1") ? m->params[i].unit : "", i + 1 < m->nparams ? "," : "");
         if (mpm)
             printf("\n  MPM shear cell (2D layer between sticky plates), steady when the mean sigma_xy changes < %g\n\n",
-                   rheo_mpm_default_opts().rel_tol);
+                   hearth_rheometer_mpm_default_opts().rel_tol);
         else
             printf("\n  homogeneous simple shear, %s dt, steady when sigma_xy changes < %g (relative)\n\n",
                    dt > 0 ? "fixed" : "adaptive", o.rel_tol);
@@ -520,6 +519,6 @@ int cmd_rheometer(int argc, char **argv) {
     }
     rc = 0;
 done:
-    sauce_library_free(&lib);
+    hearth_sauce_library_free(&lib);
     return rc;
 }
