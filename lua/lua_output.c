@@ -13,7 +13,6 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "atomic_file.h"
 #include "hearth_lua.h"
 
 /* Does the path (a "/"-separated tail of folders not yet made) hold a ".."
@@ -171,14 +170,11 @@ static int l_write_atomic(lua_State *L) {
     const char *call = luaL_optstring(L, 3, "h.write");
     const char *path = hl_out_path(L, call, luaL_checkstring(L, 1), HL_PATH_MKDIRS, buf, sizeof buf);
     const char *text = luaL_checklstring(L, 2, &len);
-    atomic_file af;
     hearth_error err;
-    if (atomic_open(&af, path, &err)) return hl_raise(L, &err);
-    if (len && fwrite(text, len, 1, af.f) != 1) {
-        atomic_abort(&af);
-        return luaL_error(L, "%s: write failed", path);
-    }
-    if (atomic_commit(&af, &err)) return hl_raise(L, &err);
+    hearth_atomic_file *af = hearth_atomic_file_open(path, &err);
+    if (!af) return hl_raise(L, &err);
+    hearth_atomic_file_write(af, text, len); /* a failed write is reported by the commit, with its cause */
+    if (hearth_atomic_file_commit(af, &err)) return hl_raise(L, &err);
     lua_pushstring(L, path);
     return 1;
 }

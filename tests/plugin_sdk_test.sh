@@ -17,14 +17,15 @@ pc=$(find "$tmp/root" -name hearth.pc | head -1)
 cflags=$(PKG_CONFIG_PATH=$(dirname "$pc") PKG_CONFIG_SYSROOT_DIR="$tmp/root" pkg-config --cflags hearth) ||
     fail "pkg-config --cflags hearth"
 inc=$(find "$tmp/root" -type d -path '*/include/hearth' | head -1)
-for h in material.h tensor.h; do [ -f "$inc/$h" ] || fail "<hearth/$h> is not installed"; done
+for h in material.h tensor.h hearth.h lab.h plot.h; do [ -f "$inc/$h" ] || fail "<hearth/$h> is not installed"; done
 # the project's own warnings, as errors
 warn="-std=c17 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes -Werror"
 
 case "$case_name" in
 plugin_sdk_headers_standalone)
-    # each plugin header compiles alone, in C and in C++, and tensor.h defines no symbol
-    for h in material.h tensor.h; do
+    # each installed header compiles alone, in C and in C++, and defines no symbol (tensor.h's
+    # helpers are static inline); the host's headers too, as an embedding program includes them
+    for h in material.h tensor.h hearth.h lab.h plot.h; do
         printf '#include <hearth/%s>\n' "$h" >"$tmp/one.c"
         "$cc" $warn $cflags -c "$tmp/one.c" -o "$tmp/one.o" 2>"$tmp/err.txt" || fail "<hearth/$h> alone: $(cat "$tmp/err.txt")"
         [ -z "$(nm --defined-only "$tmp/one.o" | awk '$2 ~ /^[TDBRC]$/')" ] ||

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "hearth/hearth.h"
-#include "rheometer.h"
+#include "hearth/lab.h"
 #include "test.h"
 
 enum { MAXP = 8 };
@@ -112,7 +112,7 @@ TEST(maxwell_relaxation) {
 
 /* Start-up of simple shear at lambda g = 0.01: sigma_xy = eta0 g (1 - e^{-t/lambda})
  * with eta0 = mu_e lambda / 2 (eq. 3.24: 1/2 D has xy = g/2), within 1% at
- * lambda, 3 lambda, 5 lambda. Driven by the core's rheometer (rheo_startup). */
+ * lambda, 3 lambda, 5 lambda. Driven by the core's rheometer (hearth_rheometer_startup). */
 TEST(maxwell_startup) {
     const hearth_material *m = maxwell();
     CHECK(m != NULL);
@@ -122,7 +122,7 @@ TEST(maxwell_startup) {
     int per = 400, n = 5 * per;
     double *sig = malloc(sizeof(double) * n);
     hearth_error err;
-    CHECK(rheo_startup(m, p, rate, lambda / per, n, sig, &err) == HEARTH_OK);
+    CHECK(hearth_rheometer_startup(m, p, rate, lambda / per, n, sig, &err) == HEARTH_OK);
     double eta0 = mu_e * lambda / 2;
     for (int k = 1; k <= 5; k += 2) {
         double t = k * lambda, want = eta0 * rate * -expm1(-t / lambda), got = sig[k * per - 1];
@@ -134,18 +134,18 @@ TEST(maxwell_startup) {
 }
 
 /* Steady shear at lambda g = 1: the corotational Maxwell result
- * eta0 g / (1 + (lambda g)^2) within 2% (the core's rheo_steady). */
+ * eta0 g / (1 + (lambda g)^2) within 2% (the core's hearth_rheometer_steady). */
 TEST(maxwell_steady_wi1) {
     const hearth_material *m = maxwell();
     CHECK(m != NULL);
     if (!m) return;
     double p[MAXP], mu_e = 1e3, lambda = 0.1, rate = 1 / lambda;
     params(m, p, mu_e, lambda);
-    rheo_opts o = rheo_default_opts();
+    hearth_rheometer_opts o = hearth_rheometer_default_opts();
     o.dt = lambda / 200;
-    rheo_result r;
+    hearth_rheometer_result r;
     hearth_error err;
-    hearth_status st = rheo_steady(m, p, rate, &o, &r, &err);
+    hearth_status st = hearth_rheometer_steady(m, p, rate, &o, &r, &err);
     if (st) fprintf(stderr, "%s\n", err.msg);
     CHECK(st == HEARTH_OK);
     double eta0 = mu_e * lambda / 2, want = eta0 * rate / 2;
@@ -153,7 +153,7 @@ TEST(maxwell_steady_wi1) {
            fabs(r.stress - want) / want);
     CHECK(fabs(r.stress - want) <= 0.02 * want);
     /* and the Weissenberg number matters: at lambda g = 3 the stress is lower than at 1 */
-    CHECK(rheo_steady(m, p, 3 / lambda, &o, &r, &err) == HEARTH_OK);
+    CHECK(hearth_rheometer_steady(m, p, 3 / lambda, &o, &r, &err) == HEARTH_OK);
     CHECK_NEAR(r.stress, eta0 * 3 / lambda / 10, 0.02 * eta0 * 3 / lambda / 10);
 }
 

@@ -9,8 +9,7 @@
 #include <unistd.h>
 
 #include "hearth/hearth.h"
-#include "rheometer.h"
-#include "sauce_library.h"
+#include "hearth/lab.h"
 #include "test.h"
 
 #define MAXP 16
@@ -48,39 +47,39 @@ static void hb_params(const hearth_material *m, double *p, double sy, double eta
     if (mu > 0) p[pidx(m, "mu")] = mu;
 }
 
-static int load_library(sauce_library *lib) {
+static int load_library(hearth_sauce_library *lib) {
     const char *root = getenv("HEARTH_SOURCE_ROOT");
     char path[4096];
     snprintf(path, sizeof path, "%s/assets/sauces.csv", root && *root ? root : ".");
     hearth_error err;
-    if (sauce_library_load(path, lib, &err)) {
+    if (hearth_sauce_library_load(path, lib, &err)) {
         fprintf(stderr, "library: %s\n", err.msg);
         return 0;
     }
     return 1;
 }
 
-static void sauce_p(const hearth_material *m, const sauce_library *lib, const char *name, double *p) {
+static void sauce_p(const hearth_material *m, const hearth_sauce_library *lib, const char *name, double *p) {
     hearth_error err;
-    const sauce *s = sauce_find(lib, name);
+    const hearth_sauce *s = hearth_sauce_find(lib, name);
     CHECK(s != NULL);
     if (!s) {
         defaults(m, p);
         return;
     }
-    if (sauce_params(m, s, p, &err)) {
+    if (hearth_sauce_params(m, s, p, &err)) {
         fprintf(stderr, "%s\n", err.msg);
         CHECK(0);
     }
 }
 
 static double steady(const hearth_material *m, const double *p, double rate, double dt) {
-    rheo_opts o = rheo_default_opts();
+    hearth_rheometer_opts o = hearth_rheometer_default_opts();
     o.dt = dt;
-    rheo_result r;
+    hearth_rheometer_result r;
     hearth_error err;
-    if (rheo_steady(m, p, rate, &o, &r, &err)) {
-        fprintf(stderr, "rheo_steady: %s\n", err.msg);
+    if (hearth_rheometer_steady(m, p, rate, &o, &r, &err)) {
+        fprintf(stderr, "hearth_rheometer_steady: %s\n", err.msg);
         return NAN;
     }
     return r.stress;
@@ -108,7 +107,7 @@ static double gauss(void) { return sqrt(-2 * log(urand())) * cos(2 * 3.141592653
 /* Every library sauce: steady shear stress at 1, 10 and 100 1/s within 2% of eq. 1. */
 TEST(sauce_rheometer_library) {
     const hearth_material *m = sauce_plugin();
-    sauce_library lib;
+    hearth_sauce_library lib;
     CHECK(m && load_library(&lib));
     if (!m || !lib.n) return;
     CHECK(lib.n == 21);
@@ -117,17 +116,17 @@ TEST(sauce_rheometer_library) {
     double wrate = 0;
     long steps = 0;
     for (int i = 0; i < lib.n; i++) {
-        const sauce *s = &lib.items[i];
+        const hearth_sauce *s = &lib.items[i];
         double p[MAXP];
         hearth_error err;
-        CHECK(sauce_params(m, s, p, &err) == HEARTH_OK);
+        CHECK(hearth_sauce_params(m, s, p, &err) == HEARTH_OK);
         const double rates[3] = {1, 10, 100};
         for (int k = 0; k < 3; k++) {
-            rheo_result r;
-            CHECK(rheo_steady(m, p, rates[k], NULL, &r, &err) == HEARTH_OK);
+            hearth_rheometer_result r;
+            CHECK(hearth_rheometer_steady(m, p, rates[k], NULL, &r, &err) == HEARTH_OK);
             CHECK(r.steady);
             steps += r.steps;
-            double want = rheo_hb(s->sigma_y, s->eta, s->h, rates[k]), e = rel(r.stress, want);
+            double want = hearth_hb_stress(s->sigma_y, s->eta, s->h, rates[k]), e = rel(r.stress, want);
             if (!(e <= 0.02)) fprintf(stderr, "%s at %g 1/s: %g Pa, eq. 1 gives %g Pa (%.3g%%)\n", s->name, rates[k], r.stress, want, 100 * e);
             CHECK(e <= 0.02);
             if (e > worst) worst = e, wname = s->name, wrate = rates[k];
@@ -135,7 +134,7 @@ TEST(sauce_rheometer_library) {
     }
     printf("sauce_rheometer_library: worst relative error %.3g%% (%s at %g 1/s), %ld steps for 63 points\n", 100 * worst,
            wname, wrate, steps);
-    sauce_library_free(&lib);
+    hearth_sauce_library_free(&lib);
 }
 
 /* Maxwell start-up (sigma_y = 0, h = 1): sigma(t) = eta rate (1 - exp(-t / lambda)), lambda = eta / mu (seed eq. 38). */
@@ -150,7 +149,7 @@ TEST(sauce_maxwell_startup) {
     const double lambda = 10.0 / 1000.0, dt = lambda / 100;
     double sig[500];
     hearth_error err;
-    CHECK(rheo_startup(m, p, 1.0, dt, 500, sig, &err) == HEARTH_OK);
+    CHECK(hearth_rheometer_startup(m, p, 1.0, dt, 500, sig, &err) == HEARTH_OK);
     const int at[3] = {100, 300, 500};
     const double want[3] = {6.3212, 9.5021, 9.9326};
     for (int k = 0; k < 3; k++) {
@@ -174,7 +173,7 @@ TEST(sauce_limits) {
     {
         hb_params(m, p, 0, 2, 1, 100);
         const double rate = 3, lambda = 2.0 / 100, dt = lambda / 400;
-        CHECK(rheo_startup(m, p, rate, dt, 400, sig, &err) == HEARTH_OK);
+        CHECK(hearth_rheometer_startup(m, p, rate, dt, 400, sig, &err) == HEARTH_OK);
         double worst = 0;
         for (int i = 39; i < 400; i += 40) {
             double t = (i + 1) * dt, want = 2 * rate * (1 - exp(-t / lambda));
@@ -193,7 +192,7 @@ TEST(sauce_limits) {
     {
         hb_params(m, p, 50, 3, 1, 1e4);
         const double rate = 2, dt = 1e-4; /* yield at strain 50/1e4 = 5e-3, t = 2.5e-3 s */
-        CHECK(rheo_startup(m, p, rate, dt, 20, sig, &err) == HEARTH_OK);
+        CHECK(hearth_rheometer_startup(m, p, rate, dt, 20, sig, &err) == HEARTH_OK);
         double worst = 0;
         for (int i = 0; i < 20; i++) worst = fmax(worst, rel(sig[i], 1e4 * rate * (i + 1) * dt));
         printf("sauce_limits: elastic Bingham below yield vs mu gamma: worst %.3g\n", worst);
@@ -211,14 +210,14 @@ TEST(sauce_limits) {
     {
         hb_params(m, p, 0, 10, 1, 1e9);
         const double dt = 1e-3;
-        CHECK(rheo_startup(m, p, 1.0, dt, 10, sig, &err) == HEARTH_OK);
+        CHECK(hearth_rheometer_startup(m, p, 1.0, dt, 10, sig, &err) == HEARTH_OK);
         double worst = 0;
         for (int i = 0; i < 10; i++) worst = fmax(worst, rel(sig[i], 10.0));
         printf("sauce_limits: mu = 1e9, first 10 steps of dt = 1e-3 s vs eta rate: worst %.3g\n", worst);
         CHECK(worst <= 1e-3);
         /* with mu = 1e3 (lambda = 10 ms) the first step is still far from it */
         hb_params(m, p, 0, 10, 1, 1e3);
-        CHECK(rheo_startup(m, p, 1.0, dt, 1, sig, &err) == HEARTH_OK);
+        CHECK(hearth_rheometer_startup(m, p, 1.0, dt, 1, sig, &err) == HEARTH_OK);
         CHECK(sig[0] < 5);
     }
 }
@@ -231,7 +230,7 @@ static const char *const pairs[][2] = {{"honey_b", "mayo_b"}, {"pork_cutlet_b", 
 
 TEST(blend_zero_law) {
     const hearth_material *m = sauce_plugin();
-    sauce_library lib;
+    hearth_sauce_library lib;
     CHECK(m && m->blend && load_library(&lib));
     if (!m || !m->blend || !lib.n) return;
     int np = m->nparams;
@@ -254,12 +253,12 @@ TEST(blend_zero_law) {
     sauce_p(m, &lib, "mayo", B);
     CHECK(blend2(m, 1.0, A, B, out) == 0 && memcmp(out, A, sizeof(double) * (size_t)np) == 0);
     CHECK(blend2(m, 0.0, A, B, out) == 0 && memcmp(out, B, sizeof(double) * (size_t)np) == 0);
-    sauce_library_free(&lib);
+    hearth_sauce_library_free(&lib);
 }
 
 TEST(blend_identity_law) {
     const hearth_material *m = sauce_plugin();
-    sauce_library lib;
+    hearth_sauce_library lib;
     CHECK(m && m->blend && load_library(&lib));
     if (!m || !m->blend || !lib.n) return;
     const double alphas[] = {0.1, 0.37, 0.5, 0.9, 1e-9};
@@ -280,12 +279,12 @@ TEST(blend_identity_law) {
     }
     printf("blend_identity_law: worst relative deviation %.3g\n", worst);
     CHECK(worst <= 1e-12);
-    sauce_library_free(&lib);
+    hearth_sauce_library_free(&lib);
 }
 
 TEST(blend_commutative) {
     const hearth_material *m = sauce_plugin();
-    sauce_library lib;
+    hearth_sauce_library lib;
     CHECK(m && m->blend && load_library(&lib));
     if (!m || !m->blend || !lib.n) return;
     int np = m->nparams;
@@ -315,13 +314,13 @@ TEST(blend_commutative) {
         CHECK(m->blend(3, wq, pq, q ? out : ref) == 0);
         if (q) CHECK(memcmp(out, ref, sizeof(double) * (size_t)np) == 0);
     }
-    sauce_library_free(&lib);
+    hearth_sauce_library_free(&lib);
 }
 
 /* eq. 14: ((A + B) + C) = (A + (B + C)) = the direct ternary blend. */
 TEST(blend_associative) {
     const hearth_material *m = sauce_plugin();
-    sauce_library lib;
+    hearth_sauce_library lib;
     CHECK(m && m->blend && load_library(&lib));
     if (!m || !m->blend || !lib.n) return;
     const char *const triples[][3] = {{"honey", "mustard", "mayo"}, {"worcestershire", "bbq", "sweet_bean"},
@@ -350,14 +349,14 @@ TEST(blend_associative) {
     }
     printf("blend_associative: worst relative difference between pairings %.3g\n", worst);
     CHECK(worst <= 1e-10);
-    sauce_library_free(&lib);
+    hearth_sauce_library_free(&lib);
 }
 
 /* Fig. 4a: the honey (Ho^b) / mayo (My^b) 50:50 blend is thinner at 22 1/s than
  * either constituent with the model, and not with linear parameter blending. */
 TEST(blend_fig4a_claim) {
     const hearth_material *m = sauce_plugin();
-    sauce_library lib;
+    hearth_sauce_library lib;
     CHECK(m && m->blend && load_library(&lib));
     if (!m || !m->blend || !lib.n) return;
     double A[MAXP], B[MAXP], NL[MAXP], LIN[MAXP];
@@ -372,7 +371,7 @@ TEST(blend_fig4a_claim) {
            sa / rate, sb / rate, snl / rate, NL[pidx(m, "h")], NL[pidx(m, "eta")], NL[pidx(m, "sigma_y")], slin / rate);
     CHECK(snl < sa && snl < sb);
     CHECK(!(slin < sa && slin < sb));
-    sauce_library_free(&lib);
+    hearth_sauce_library_free(&lib);
 }
 
 /* ---- fitting ------------------------------------------------------------------ */
@@ -397,36 +396,36 @@ static void tmp_path(char *buf, size_t n, const char *name) {
  * no fit could meet 3% there. Over 0.1..1000 with 60 points the 95th
  * percentiles for the three sauces below are at most 2.2% (mayo's eta). */
 TEST(fit_roundtrip) {
-    sauce_library lib;
+    hearth_sauce_library lib;
     CHECK(load_library(&lib));
     if (!lib.n) return;
     const char *names[3] = {"mayo", "chocolate_syrup", "worcestershire"};
     enum { N = 60 };
     double worst = 0;
     for (int k = 0; k < 3; k++) {
-        const sauce *s = sauce_find(&lib, names[k]);
+        const hearth_sauce *s = hearth_sauce_find(&lib, names[k]);
         CHECK(s != NULL);
         if (!s) continue;
         double rates[N];
-        rheo_log_rates(0.1, 1000, N, rates);
+        hearth_log_spaced(0.1, 1000, N, rates);
         char path[4096], line[128], text[8192] = "shear_rate,stress\n";
         for (int i = 0; i < N; i++) {
-            double y = rheo_hb(s->sigma_y, s->eta, s->h, rates[i]) * (1 + 0.01 * gauss());
+            double y = hearth_hb_stress(s->sigma_y, s->eta, s->h, rates[i]) * (1 + 0.01 * gauss());
             snprintf(line, sizeof line, "%.10g,%.10g\n", rates[i], y);
             strncat(text, line, sizeof text - strlen(text) - 1);
         }
         tmp_path(path, sizeof path, "fit.csv");
         CHECK(write_file(path, text));
-        rheo_curve c;
+        hearth_flow_curve c;
         hearth_error err;
-        CHECK(rheo_curve_read(path, &c, &err) == HEARTH_OK);
+        CHECK(hearth_flow_curve_read(path, &c, &err) == HEARTH_OK);
         unlink(path);
         if (c.n != N) {
             CHECK(0);
             continue;
         }
-        rheo_fit_result fr;
-        CHECK(rheo_fit_hb(c.rate, c.stress, c.n, &fr, &err) == HEARTH_OK);
+        hearth_hb_fit_result fr;
+        CHECK(hearth_hb_fit(c.rate, c.stress, c.n, &fr, &err) == HEARTH_OK);
         double e[3] = {rel(fr.sigma_y, s->sigma_y), rel(fr.eta, s->eta), rel(fr.h, s->h)};
         printf("fit_roundtrip: %s: sigma_y %.4g (%.4g, %.2f%%), eta %.4g (%.4g, %.2f%%), h %.4g (%.4g, %.2f%%), rel_error %.3g%%\n",
                s->name, fr.sigma_y, s->sigma_y, 100 * e[0], fr.eta, s->eta, 100 * e[1], fr.h, s->h, 100 * e[2],
@@ -435,32 +434,32 @@ TEST(fit_roundtrip) {
             CHECK(e[j] <= 0.03);
             worst = fmax(worst, e[j]);
         }
-        rheo_curve_free(&c);
+        hearth_flow_curve_free(&c);
     }
     printf("fit_roundtrip: worst parameter error %.3g%%\n", 100 * worst);
     /* noise-free data come back to rounding */
-    const sauce *s = sauce_find(&lib, "mustard");
+    const hearth_sauce *s = hearth_sauce_find(&lib, "mustard");
     double x[12], y[12];
-    rheo_log_rates(0.5, 500, 12, x);
-    for (int i = 0; i < 12; i++) y[i] = rheo_hb(s->sigma_y, s->eta, s->h, x[i]);
-    rheo_fit_result fr;
+    hearth_log_spaced(0.5, 500, 12, x);
+    for (int i = 0; i < 12; i++) y[i] = hearth_hb_stress(s->sigma_y, s->eta, s->h, x[i]);
+    hearth_hb_fit_result fr;
     hearth_error err;
-    CHECK(rheo_fit_hb(x, y, 12, &fr, &err) == HEARTH_OK);
+    CHECK(hearth_hb_fit(x, y, 12, &fr, &err) == HEARTH_OK);
     CHECK(rel(fr.sigma_y, s->sigma_y) <= 1e-6 && rel(fr.eta, s->eta) <= 1e-6 && rel(fr.h, s->h) <= 1e-6);
     CHECK(fr.rel_error <= 1e-8);
-    sauce_library_free(&lib);
+    hearth_sauce_library_free(&lib);
 }
 
 static void bad_csv(const char *text, const char *want1, const char *want2) {
     char path[4096];
     tmp_path(path, sizeof path, "bad.csv");
     CHECK(write_file(path, text));
-    rheo_curve c;
+    hearth_flow_curve c;
     hearth_error err;
-    hearth_status st = rheo_curve_read(path, &c, &err);
+    hearth_status st = hearth_flow_curve_read(path, &c, &err);
     unlink(path);
     CHECK(st == HEARTH_ERR_FORMAT);
-    if (st == HEARTH_OK) rheo_curve_free(&c);
+    if (st == HEARTH_OK) hearth_flow_curve_free(&c);
     printf("fit_bad_csv: %s\n", err.msg);
     CHECK_STR_CONTAINS(err.msg, want1);
     CHECK_STR_CONTAINS(err.msg, want2);
@@ -476,13 +475,13 @@ TEST(fit_bad_csv) {
     char path[4096];
     tmp_path(path, sizeof path, "good.csv");
     CHECK(write_file(path, "# from hearth rheometer\r\nstress,hb_stress,shear_rate\r\n10,10,1\r\n\r\n11,11,2\r\n12,12,3\r\n"));
-    rheo_curve c;
+    hearth_flow_curve c;
     hearth_error err;
-    CHECK(rheo_curve_read(path, &c, &err) == HEARTH_OK);
+    CHECK(hearth_flow_curve_read(path, &c, &err) == HEARTH_OK);
     unlink(path);
     CHECK(c.n == 3 && c.rate[2] == 3 && c.stress[0] == 10);
-    rheo_curve_free(&c);
-    CHECK(rheo_curve_read("/nonexistent/flow.csv", &c, &err) == HEARTH_ERR_IO);
+    hearth_flow_curve_free(&c);
+    CHECK(hearth_flow_curve_read("/nonexistent/flow.csv", &c, &err) == HEARTH_ERR_IO);
     CHECK_STR_CONTAINS(err.msg, "/nonexistent/flow.csv");
 }
 
@@ -503,12 +502,12 @@ static void refused_bytes(const void *data, size_t n, const char *want1, const c
     char path[4096];
     CHECK(write_bytes(path, sizeof path, "hostile.csv", data, n));
     size_t base = hearth_bytes_allocated();
-    rheo_curve c;
+    hearth_flow_curve c;
     hearth_error err = {0};
-    hearth_status st = rheo_curve_read(path, &c, &err);
+    hearth_status st = hearth_flow_curve_read(path, &c, &err);
     unlink(path);
     CHECK(st == HEARTH_ERR_FORMAT);
-    if (st == HEARTH_OK) rheo_curve_free(&c);
+    if (st == HEARTH_OK) hearth_flow_curve_free(&c);
     CHECK(c.n == 0 && !c.rate && !c.stress);
     CHECK(hearth_bytes_allocated() == base);
     printf("  %s\n", err.msg);
@@ -575,12 +574,12 @@ TEST(fit_csv_long_lines) {
     strcpy(text + n + 4092, "1,5\n3,4\n5,6\n");
     char path[4096];
     CHECK(write_bytes(path, sizeof path, "long_ok.csv", text, strlen(text)));
-    rheo_curve c;
+    hearth_flow_curve c;
     hearth_error err = {0};
-    CHECK(rheo_curve_read(path, &c, &err) == HEARTH_OK);
+    CHECK(hearth_flow_curve_read(path, &c, &err) == HEARTH_OK);
     unlink(path);
     CHECK(c.n == 4 && c.rate[1] == 1 && c.stress[1] == 5);
-    if (c.n) rheo_curve_free(&c);
+    if (c.n) hearth_flow_curve_free(&c);
     free(text);
 }
 
@@ -614,11 +613,11 @@ TEST(fit_csv_too_many_rows) {
 TEST(sauce_library_hostile) {
     static const char head[] = "name,label,temperature_C,h,eta,sigma_y,geometry\n";
     char path[4096];
-    sauce_library lib;
+    hearth_sauce_library lib;
     hearth_error err = {0};
     static const char nul[] = "name,label,temperature_C,h,eta,sigma_y,geometry\nx,X,20,1,1,0,cone\0\n";
     CHECK(write_bytes(path, sizeof path, "lib.csv", nul, sizeof nul - 1));
-    CHECK(sauce_library_load(path, &lib, &err) == HEARTH_ERR_FORMAT);
+    CHECK(hearth_sauce_library_load(path, &lib, &err) == HEARTH_ERR_FORMAT);
     CHECK_STR_CONTAINS(err.msg, "line 2 holds a NUL byte");
     size_t cap = 64 + 10001 * 40 + 8192;
     char *text = malloc(cap);
@@ -628,12 +627,12 @@ TEST(sauce_library_hostile) {
     memset(text + n, 'a', 5000);
     strcpy(text + n + 5000, ",A,20,1,1,0,cone\n");
     CHECK(write_bytes(path, sizeof path, "lib.csv", text, strlen(text)));
-    CHECK(sauce_library_load(path, &lib, &err) == HEARTH_ERR_FORMAT);
+    CHECK(hearth_sauce_library_load(path, &lib, &err) == HEARTH_ERR_FORMAT);
     CHECK_STR_CONTAINS(err.msg, "line 2 is longer than 4095 characters");
     n = (size_t)snprintf(text, cap, "%s", head);
     for (int i = 0; i < 10001; i++) n += (size_t)snprintf(text + n, cap - n, "s%d,S,20,1,1,0,cone\n", i);
     CHECK(write_bytes(path, sizeof path, "lib.csv", text, n));
-    CHECK(sauce_library_load(path, &lib, &err) == HEARTH_ERR_FORMAT);
+    CHECK(hearth_sauce_library_load(path, &lib, &err) == HEARTH_ERR_FORMAT);
     CHECK_STR_CONTAINS(err.msg, "line 10002: more than 10000 sauces");
     CHECK_STR_CONTAINS(err.msg, path);
     unlink(path);
@@ -665,12 +664,12 @@ TEST(sauce_extremes) {
                     double dt = mode ? 100 * sd.cfl * sd.dx / cw : 0;
                     double prev = -INFINITY;
                     for (int k = 0; k < 4; k++) {
-                        rheo_opts o = rheo_default_opts();
+                        hearth_rheometer_opts o = hearth_rheometer_default_opts();
                         o.dt = dt;
                         o.rel_tol = 1e-12;
-                        rheo_result r;
+                        hearth_rheometer_result r;
                         hearth_error err;
-                        hearth_status st = rheo_steady(m, p, rates[k], &o, &r, &err);
+                        hearth_status st = hearth_rheometer_steady(m, p, rates[k], &o, &r, &err);
                         steps += r.steps;
                         int ok = st == HEARTH_OK && isfinite(r.stress) && r.stress >= prev * (1 - 1e-9);
                         if (!ok) {
@@ -748,32 +747,32 @@ TEST(labels_hook) {
 
 /* ---- the MPM shear cell --------------------------------------------------- */
 
-/* The full solver between moving plates (rheo_mpm_steady): mayo and honey at
+/* The full solver between moving plates (hearth_rheometer_mpm_steady): mayo and honey at
  * 10 1/s within 5% of sigma_Y + eta rate^h (eq. 1), the stress compared with
  * eq. 1 at the nominal rate; the measured rate must be the nominal one. */
 TEST(sauce_mpm_shear_cell) {
     const hearth_material *m = sauce_plugin();
-    sauce_library lib;
+    hearth_sauce_library lib;
     CHECK(m && load_library(&lib));
     if (!m || !lib.n) return;
     const char *names[] = {"mayo", "honey"};
     for (int i = 0; i < 2; i++) {
-        const sauce *sc = sauce_find(&lib, names[i]);
+        const hearth_sauce *sc = hearth_sauce_find(&lib, names[i]);
         double p[MAXP];
         sauce_p(m, &lib, names[i], p);
-        rheo_mpm_result r;
+        hearth_rheometer_mpm_result r;
         hearth_error err;
-        hearth_status st = rheo_mpm_steady("von_mises_sauce", p, 10, NULL, &r, &err);
+        hearth_status st = hearth_rheometer_mpm_steady("von_mises_sauce", p, 10, NULL, &r, &err);
         if (st) fprintf(stderr, "%s: %s\n", names[i], err.msg);
         CHECK(st == HEARTH_OK && r.steady);
-        const double want = rheo_hb(sc->sigma_y, sc->eta, sc->h, 10), e = rel(r.stress, want);
+        const double want = hearth_hb_stress(sc->sigma_y, sc->eta, sc->h, 10), e = rel(r.stress, want);
         printf("sauce_mpm_shear_cell: %s at 10 1/s: MPM %.5g Pa, eq. 1 %.5g Pa (%+.2f%%); measured rate %.5g 1/s; "
                "%d particles, %ld steps, %.4g s\n",
                names[i], r.stress, want, 100 * (r.stress - want) / want, r.rate, r.particles, r.steps, r.time);
         CHECK(e < 0.05);
         CHECK(rel(r.rate, 10) < 0.02);
     }
-    sauce_library_free(&lib);
+    hearth_sauce_library_free(&lib);
 }
 
 TEST_MAIN(T(sauce_rheometer_library), T(sauce_maxwell_startup), T(sauce_limits), T(blend_zero_law),

@@ -8,7 +8,7 @@
 
 #include "commands.h"
 #include "hearth/hearth.h"
-#include "rheometer.h"
+#include "hearth/lab.h"
 
 /* Also in commands.h once it lists them; repeated so this file stands alone. */
 
@@ -61,15 +61,15 @@ int cmd_fit(int argc, char **argv) {
         return 2;
     }
     hearth_error err;
-    rheo_curve c;
-    if (rheo_curve_read(csv, &c, &err)) {
+    hearth_flow_curve c;
+    if (hearth_flow_curve_read(csv, &c, &err)) {
         fprintf(stderr, "hearth fit: %s\n", err.msg);
         return 1;
     }
-    rheo_fit_result fr;
-    if (rheo_fit_hb(c.rate, c.stress, c.n, &fr, &err)) {
+    hearth_hb_fit_result fr;
+    if (hearth_hb_fit(c.rate, c.stress, c.n, &fr, &err)) {
         fprintf(stderr, "hearth fit: %s: %s\n", csv, err.msg);
-        rheo_curve_free(&c);
+        hearth_flow_curve_free(&c);
         return 1;
     }
     /* the picture: data and the fitted curve over the data's range */
@@ -77,8 +77,8 @@ int cmd_fit(int argc, char **argv) {
     for (int i = 0; i < c.n; i++) lo = fmin(lo, c.rate[i]), hi = fmax(hi, c.rate[i]);
     enum { NC = 200 };
     double cx[NC], cy[NC];
-    rheo_log_rates(lo, hi > lo ? hi : lo * 10, NC, cx);
-    for (int i = 0; i < NC; i++) cy[i] = rheo_hb(fr.sigma_y, fr.eta, fr.h, cx[i]);
+    hearth_log_spaced(lo, hi > lo ? hi : lo * 10, NC, cx);
+    for (int i = 0; i < NC; i++) cy[i] = hearth_hb_stress(fr.sigma_y, fr.eta, fr.h, cx[i]);
     const char *base = strrchr(csv, '/');
     base = base ? base + 1 : csv;
     char name[256], png[4400], title[400], clabel[256];
@@ -109,7 +109,7 @@ int cmd_fit(int argc, char **argv) {
                    100 * fr.rel_error, fr.objective);
             printf("  %16s  %14s  %14s  %10s\n", "shear_rate [1/s]", "stress [Pa]", "fit [Pa]", "residual");
             for (int i = 0; i < c.n; i++) {
-                double f = rheo_hb(fr.sigma_y, fr.eta, fr.h, c.rate[i]);
+                double f = hearth_hb_stress(fr.sigma_y, fr.eta, fr.h, c.rate[i]);
                 printf("  %16.6g  %14.6g  %14.6g  %9.3f%%\n", c.rate[i], c.stress[i], f, 100 * (f - c.stress[i]) / c.stress[i]);
             }
             if (fr.h <= 0.0201 || fr.h >= 2.999)
@@ -117,6 +117,6 @@ int cmd_fit(int argc, char **argv) {
             printf("\nwrote %s\n", png);
         }
     }
-    rheo_curve_free(&c);
+    hearth_flow_curve_free(&c);
     return rc;
 }

@@ -8,14 +8,10 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "atomic_file.h"
 #include "commands.h"
-#include "font.h"
 #include "hearth/hearth.h"
-#include "image.h"
-#include "io_png.h"
-#include "rheometer.h"
-#include "sauce_library.h"
+#include "hearth/lab.h"
+#include "hearth/plot.h"
 
 /* Also in commands.h once it lists them; repeated so this file stands alone. */
 
@@ -48,111 +44,31 @@ const char *app_sauce_library_path(const char *override) {
 
 /* ---- the plot ------------------------------------------------------------- */
 
-static const unsigned char P_BG[3] = {255, 255, 255}, P_AXIS[3] = {0, 0, 0}, P_GRID[3] = {228, 228, 228},
-                           P_MINOR[3] = {243, 243, 243}, P_DATA[3] = {31, 119, 180}, P_CURVE[3] = {214, 39, 40},
-                           P_TEXT[3] = {30, 30, 30};
-
-static void decade_label(int k, char *buf, size_t n) {
-    if (k >= -2 && k <= 3) snprintf(buf, n, "%g", pow(10, k));
-    else snprintf(buf, n, "1e%d", k);
-}
-
-static void log_range(const double *a, int n, const double *b, int nb, double *lo, double *hi) {
-    double mn = INFINITY, mx = -INFINITY;
-    for (int i = 0; i < n; i++)
-        if (a[i] > 0 && isfinite(a[i])) mn = fmin(mn, a[i]), mx = fmax(mx, a[i]);
-    for (int i = 0; b && i < nb; i++)
-        if (b[i] > 0 && isfinite(b[i])) mn = fmin(mn, b[i]), mx = fmax(mx, b[i]);
-    if (!(mn <= mx)) mn = 1, mx = 10;
-    *lo = floor(log10(mn));
-    *hi = ceil(log10(mx));
-    if (*hi <= *lo) *hi = *lo + 1;
-}
-
 /* A log-log plot of n data points (x, y) as dots and, when cx is not NULL,
- * a curve through its cn samples (cx, cy) as a line; PNG written atomically.
- * Axes span whole decades around everything drawn. Returns 0 or -1 (err). */
+ * a curve through its cn samples (cx, cy) as a line under them; PNG written
+ * atomically (<hearth/plot.h>). Returns 0 or -1 (err). */
 int app_flow_plot(const char *path, const char *title, const double *x, const double *y, int n, const char *data_label,
                   const double *cx, const double *cy, int cn, const char *curve_label, hearth_error *err) {
-    const int W = 760, H = 520, left = 78, right = 24, top = 52, bottom = 62;
-    const int pw = W - left - right, ph = H - top - bottom;
-    img im;
-    if (img_init(&im, W, H, P_BG, err)) return -1;
-    double lx0, lx1, ly0, ly1;
-    log_range(x, n, cx, cx ? cn : 0, &lx0, &lx1);
-    log_range(y, n, cy, cx ? cn : 0, &ly0, &ly1);
-#define PX(v) (left + (log10(v) - lx0) / (lx1 - lx0) * pw)
-#define PY(v) (top + ph - (log10(v) - ly0) / (ly1 - ly0) * ph)
-    char buf[64];
-    /* grid: minor lines at 2..9, major at decades, with labels */
-    /* with two decades or fewer, 2 and 5 get labels too */
-    int xmin_lab = lx1 - lx0 <= 2, ymin_lab = ly1 - ly0 <= 2;
-    for (int k = (int)lx0; k < (int)lx1; k++)
-        for (int j = 2; j <= 9; j++) {
-            double v = j * pow(10, k), px = PX(v);
-            img_line(&im, px, top, px, top + ph, P_MINOR);
-            if (xmin_lab && (j == 2 || j == 5)) {
-                snprintf(buf, sizeof buf, "%g", v);
-                img_text(&im, (int)lround(px) - font_text_width(buf, 1) / 2, top + ph + 9, buf, 1, P_TEXT);
-            }
-        }
-    for (int k = (int)ly0; k < (int)ly1; k++)
-        for (int j = 2; j <= 9; j++) {
-            double v = j * pow(10, k), py = PY(v);
-            img_line(&im, left, py, left + pw, py, P_MINOR);
-            if (ymin_lab && (j == 2 || j == 5)) {
-                snprintf(buf, sizeof buf, "%g", v);
-                img_text(&im, left - 9 - font_text_width(buf, 1), (int)lround(py) - 4, buf, 1, P_TEXT);
-            }
-        }
-    for (int k = (int)lx0; k <= (int)lx1; k++) {
-        double px = PX(pow(10, k));
-        img_line(&im, px, top, px, top + ph, P_GRID);
-        img_line(&im, px, top + ph, px, top + ph + 5, P_AXIS);
-        decade_label(k, buf, sizeof buf);
-        img_text(&im, (int)lround(px) - font_text_width(buf, 1) / 2, top + ph + 9, buf, 1, P_TEXT);
+    hearth_plot_def d = hearth_default_plot_def();
+    d.title = title;
+    d.x_label = "shear rate [1/s]";
+    d.y_label = "stress [Pa]";
+    hearth_plot *p = hearth_plot_create(&d, err);
+    if (!p) return -1;
+    hearth_plot_series_def data = hearth_default_plot_series_def();
+    data.n = n, data.x = x, data.y = y, data.label = data_label;
+    hearth_plot_color(0, data.color);
+    int rc = hearth_plot_add_series(p, &data, err) < 0 ? -1 : 0;
+    if (!rc && cx) {
+        hearth_plot_series_def curve = hearth_default_plot_series_def();
+        curve.n = cn, curve.x = cx, curve.y = cy, curve.label = curve_label;
+        curve.marker = HEARTH_MARKER_NONE, curve.line_width = 2, curve.behind = 1;
+        hearth_plot_color(1, curve.color);
+        rc = hearth_plot_add_series(p, &curve, err) < 0 ? -1 : 0;
     }
-    for (int k = (int)ly0; k <= (int)ly1; k++) {
-        double py = PY(pow(10, k));
-        img_line(&im, left, py, left + pw, py, P_GRID);
-        img_line(&im, left - 5, py, left, py, P_AXIS);
-        decade_label(k, buf, sizeof buf);
-        img_text(&im, left - 9 - font_text_width(buf, 1), (int)lround(py) - 4, buf, 1, P_TEXT);
-    }
-    /* frame */
-    img_line(&im, left, top, left + pw, top, P_AXIS);
-    img_line(&im, left, top + ph, left + pw, top + ph, P_AXIS);
-    img_line(&im, left, top, left, top + ph, P_AXIS);
-    img_line(&im, left + pw, top, left + pw, top + ph, P_AXIS);
-    /* the curve (two pixels wide), then the data on top */
-    if (cx)
-        for (int i = 0; i + 1 < cn; i++) {
-            if (!(cy[i] > 0 && cy[i + 1] > 0 && cx[i] > 0 && cx[i + 1] > 0)) continue;
-            double x0 = PX(cx[i]), y0 = PY(cy[i]), x1 = PX(cx[i + 1]), y1 = PY(cy[i + 1]);
-            img_line(&im, x0, y0, x1, y1, P_CURVE);
-            img_line(&im, x0, y0 + 1, x1, y1 + 1, P_CURVE);
-        }
-    for (int i = 0; i < n; i++)
-        if (x[i] > 0 && y[i] > 0) img_disc(&im, PX(x[i]), PY(y[i]), 3.5, P_DATA);
-#undef PX
-#undef PY
-    /* title, axis names, legend */
-    img_text(&im, left, 12, title, font_text_width(title, 2) <= W - left - 8 ? 2 : 1, P_TEXT);
-    const char *xl = "shear rate [1/s]";
-    img_text(&im, left + pw / 2 - font_text_width(xl, 1) / 2, H - 22, xl, 1, P_TEXT);
-    img_text(&im, 8, top - 14, "stress [Pa]", 1, P_TEXT);
-    int ly = top + 10;
-    img_disc(&im, left + 16, ly + 3, 3.5, P_DATA);
-    img_text(&im, left + 28, ly, data_label, 1, P_TEXT);
-    if (cx && curve_label) {
-        ly += 14;
-        img_line(&im, left + 8, ly + 3, left + 24, ly + 3, P_CURVE);
-        img_line(&im, left + 8, ly + 4, left + 24, ly + 4, P_CURVE);
-        img_text(&im, left + 28, ly, curve_label, 1, P_TEXT);
-    }
-    hearth_status st = png_write_rgb(path, im.w, im.h, im.rgb, err);
-    img_free(&im);
-    return st ? -1 : 0;
+    if (!rc) rc = hearth_plot_write_png(p, path, err) ? -1 : 0;
+    hearth_plot_free(p);
+    return rc;
 }
 
 /* ---- the command ------------------------------------------------------------ */
@@ -218,7 +134,7 @@ static int parse_rates(const char *s, double *lo, double *hi, long *count) {
 }
 
 typedef struct mix_item {
-    char name[SAUCE_NAME_MAX + 8];
+    char name[HEARTH_SAUCE_NAME_MAX + 8];
     double w;
 } mix_item;
 
@@ -273,16 +189,16 @@ static int pindex(const hearth_material *m, const char *name) {
 
 static int write_csv(const char *path, const double *x, const double *y, const double *hb, const double *measured, int n,
                      hearth_error *err) {
-    atomic_file af;
-    if (atomic_open(&af, path, err)) return -1;
-    fprintf(af.f, "shear_rate,stress%s%s\n", hb ? ",hb_stress" : "", measured ? ",measured_rate" : "");
+    hearth_atomic_file *af = hearth_atomic_file_open(path, err);
+    if (!af) return -1;
+    hearth_atomic_file_printf(af, "shear_rate,stress%s%s\n", hb ? ",hb_stress" : "", measured ? ",measured_rate" : "");
     for (int i = 0; i < n; i++) {
-        fprintf(af.f, "%.10g,%.10g", x[i], y[i]);
-        if (hb) fprintf(af.f, ",%.10g", hb[i]);
-        if (measured) fprintf(af.f, ",%.10g", measured[i]);
-        fprintf(af.f, "\n");
+        hearth_atomic_file_printf(af, "%.10g,%.10g", x[i], y[i]);
+        if (hb) hearth_atomic_file_printf(af, ",%.10g", hb[i]);
+        if (measured) hearth_atomic_file_printf(af, ",%.10g", measured[i]);
+        hearth_atomic_file_printf(af, "\n");
     }
-    return atomic_commit(&af, err) ? -1 : 0;
+    return hearth_atomic_file_commit(af, err) ? -1 : 0;
 }
 
 int cmd_rheometer(int argc, char **argv) {
@@ -368,10 +284,10 @@ int cmd_rheometer(int argc, char **argv) {
     }
     double p[64];
     for (int i = 0; i < m->nparams; i++) p[i] = m->params[i].def;
-    sauce_library lib = {0};
+    hearth_sauce_library lib = {0};
     if (is_sauce || mix) {
         const char *lp = app_sauce_library_path(library);
-        if (sauce_library_load(lp, &lib, &err)) {
+        if (hearth_sauce_library_load(lp, &lib, &err)) {
             fprintf(stderr, "hearth rheometer: %s%s\n", err.msg, library ? "" : " (use --library FILE)");
             return 1;
         }
@@ -379,8 +295,8 @@ int cmd_rheometer(int argc, char **argv) {
     int rc = 1;
     char label[512] = "";
     if (is_sauce) {
-        const sauce *s = sauce_lookup(&lib, material, &err);
-        if (!s || sauce_params(m, s, p, &err)) {
+        const hearth_sauce *s = hearth_sauce_lookup(&lib, material, &err);
+        if (!s || hearth_sauce_params(m, s, p, &err)) {
             fprintf(stderr, "hearth rheometer: %s\n", err.msg);
             goto done;
         }
@@ -394,8 +310,8 @@ int cmd_rheometer(int argc, char **argv) {
         const double *pk[MAX_MIX];
         size_t used = 0;
         for (int k = 0; k < nmix; k++) {
-            const sauce *s = sauce_lookup(&lib, items[k].name, &err);
-            if (!s || sauce_params(m, s, sets[k], &err)) {
+            const hearth_sauce *s = hearth_sauce_lookup(&lib, items[k].name, &err);
+            if (!s || hearth_sauce_params(m, s, sets[k], &err)) {
                 fprintf(stderr, "hearth rheometer: --mix: %s\n", err.msg);
                 goto done;
             }
@@ -423,10 +339,10 @@ int cmd_rheometer(int argc, char **argv) {
     }
 
     static double rates[MAX_RATES], stress[MAX_RATES], hbv[MAX_RATES], measured[MAX_RATES];
-    rheo_log_rates(lo, hi, (int)count, rates);
+    hearth_log_spaced(lo, hi, (int)count, rates);
     int isy = pindex(m, "sigma_y"), ieta = pindex(m, "eta"), ih = pindex(m, "h");
     int has_hb = isy >= 0 && ieta >= 0 && ih >= 0;
-    rheo_opts o = rheo_default_opts();
+    hearth_rheometer_opts o = hearth_rheometer_default_opts();
     o.dt = dt;
     if (mpm && dt > 0) {
         fprintf(stderr, "hearth rheometer: --dt applies to the homogeneous mode; the MPM cell steps at its CFL limit\n");
@@ -434,23 +350,23 @@ int cmd_rheometer(int argc, char **argv) {
     }
     for (int i = 0; i < count; i++) {
         if (mpm) {
-            rheo_mpm_result r;
-            if (rheo_mpm_steady(plugin, p, rates[i], NULL, &r, &err)) {
+            hearth_rheometer_mpm_result r;
+            if (hearth_rheometer_mpm_steady(plugin, p, rates[i], NULL, &r, &err)) {
                 fprintf(stderr, "hearth rheometer: %s\n", err.msg);
                 goto done;
             }
             stress[i] = r.stress;
             measured[i] = r.rate;
-            if (has_hb) hbv[i] = rheo_hb(p[isy], p[ieta], p[ih], rates[i]);
+            if (has_hb) hbv[i] = hearth_hb_stress(p[isy], p[ieta], p[ih], rates[i]);
             continue;
         }
-        rheo_result r;
-        if (rheo_steady(m, p, rates[i], &o, &r, &err)) {
+        hearth_rheometer_result r;
+        if (hearth_rheometer_steady(m, p, rates[i], &o, &r, &err)) {
             fprintf(stderr, "hearth rheometer: %s\n", err.msg);
             goto done;
         }
         stress[i] = r.stress;
-        if (has_hb) hbv[i] = rheo_hb(p[isy], p[ieta], p[ih], rates[i]);
+        if (has_hb) hbv[i] = hearth_hb_stress(p[isy], p[ieta], p[ih], rates[i]);
     }
 
     /* files */
@@ -478,8 +394,8 @@ int cmd_rheometer(int argc, char **argv) {
     double cx[NC], cy[NC];
     char clabel[256] = "";
     if (has_hb) {
-        rheo_log_rates(lo, hi > lo ? hi : lo * 10, NC, cx);
-        for (int i = 0; i < NC; i++) cy[i] = rheo_hb(p[isy], p[ieta], p[ih], cx[i]);
+        hearth_log_spaced(lo, hi > lo ? hi : lo * 10, NC, cx);
+        for (int i = 0; i < NC; i++) cy[i] = hearth_hb_stress(p[isy], p[ieta], p[ih], cx[i]);
         snprintf(clabel, sizeof clabel, "Herschel-Bulkley: sigma_y %.4g Pa, eta %.4g Pa s^h, h %.4g", p[isy], p[ieta], p[ih]);
     }
     char title[600];
@@ -503,7 +419,7 @@ int cmd_rheometer(int argc, char **argv) {
                    strcmp(m->params[i].unit, "1") ? m->params[i].unit : "", i + 1 < m->nparams ? "," : "");
         if (mpm)
             printf("\n  MPM shear cell (2D layer between sticky plates), steady when the mean sigma_xy changes < %g\n\n",
-                   rheo_mpm_default_opts().rel_tol);
+                   hearth_rheometer_mpm_default_opts().rel_tol);
         else
             printf("\n  homogeneous simple shear, %s dt, steady when sigma_xy changes < %g (relative)\n\n",
                    dt > 0 ? "fixed" : "adaptive", o.rel_tol);
@@ -520,6 +436,6 @@ int cmd_rheometer(int argc, char **argv) {
     }
     rc = 0;
 done:
-    sauce_library_free(&lib);
+    hearth_sauce_library_free(&lib);
     return rc;
 }

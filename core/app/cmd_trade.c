@@ -26,12 +26,9 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "atomic_file.h"
 #include "commands.h"
-#include "font.h"
 #include "hearth/hearth.h"
-#include "image.h"
-#include "io_png.h"
+#include "hearth/plot.h"
 #include "progress.h"
 
 #define MAX_KNOBS 12
@@ -567,164 +564,111 @@ static int analyse(trade *T) {
 /* ---- outputs -------------------------------------------------------------- */
 
 static int write_csv(const trade *T, const char *path) {
-    atomic_file af;
     hearth_error err;
-    if (atomic_open(&af, path, &err)) {
+    hearth_atomic_file *af = hearth_atomic_file_open(path, &err);
+    if (!af) {
         fprintf(stderr, "hearth trade: %s\n", err.msg);
         return -1;
     }
-    fprintf(af.f, "run");
-    for (int j = 0; j < T->nk; j++) fprintf(af.f, ",%s", T->k[j].name);
-    fprintf(af.f, ",status,wall_s,steps,peak_mb,%s,reference,error,rel_error,order,pareto,note\n", T->metric);
+    hearth_atomic_file_printf(af, "run");
+    for (int j = 0; j < T->nk; j++) hearth_atomic_file_printf(af, ",%s", T->k[j].name);
+    hearth_atomic_file_printf(af, ",status,wall_s,steps,peak_mb,%s,reference,error,rel_error,order,pareto,note\n", T->metric);
     for (int i = 0; i < T->nr; i++) {
         const trade_run *r = &T->r[i];
-        fprintf(af.f, "%d", i);
-        for (int j = 0; j < T->nk; j++) fprintf(af.f, ",%s", T->k[j].v[r->vi[j]]);
-        fprintf(af.f, ",%s,%.3f,%ld,%.1f,%.10g,%.10g,%.4g,%.4g,%.3f,%d,", state_name[r->st], r->wall, r->steps, r->peak_mb,
+        hearth_atomic_file_printf(af, "%d", i);
+        for (int j = 0; j < T->nk; j++) hearth_atomic_file_printf(af, ",%s", T->k[j].v[r->vi[j]]);
+        hearth_atomic_file_printf(af, ",%s,%.3f,%ld,%.1f,%.10g,%.10g,%.4g,%.4g,%.3f,%d,", state_name[r->st], r->wall, r->steps, r->peak_mb,
                 r->metric, r->ref, r->err, r->rel, r->order, r->pareto);
         const char *note = r->is_ref ? "reference (finest run)" : r->msg;
-        fputc('"', af.f);
-        for (const char *p = note; *p; p++) fputc(*p == '"' ? '\'' : *p, af.f);
-        fputs("\"\n", af.f);
+        hearth_atomic_file_write(af, "\"", 1);
+        for (const char *p = note; *p; p++) hearth_atomic_file_write(af, *p == '"' ? "'" : p, 1);
+        hearth_atomic_file_write(af, "\"\n", 2);
     }
-    if (atomic_commit(&af, &err)) {
+    if (hearth_atomic_file_commit(af, &err)) {
         fprintf(stderr, "hearth trade: %s\n", err.msg);
         return -1;
     }
     return 0;
 }
 
-static const unsigned char C_BG[3] = {255, 255, 255}, C_AXIS[3] = {0, 0, 0}, C_GRID[3] = {228, 228, 228},
-                           C_MINOR[3] = {243, 243, 243}, C_TEXT[3] = {30, 30, 30}, C_FRONT[3] = {40, 40, 40};
-static const unsigned char C_SERIES[8][3] = {{31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {255, 127, 14},
-                                              {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {23, 190, 207}};
-
-static void decade_label(int k, char *buf, size_t n) {
-    if (k >= -2 && k <= 3) snprintf(buf, n, "%g", pow(10, k));
-    else snprintf(buf, n, "1e%d", k);
-}
-
-static void log_range(const trade *T, int yaxis, double *lo, double *hi) {
-    double mn = INFINITY, mx = -INFINITY;
-    for (int i = 0; i < T->nr; i++) {
-        const trade_run *r = &T->r[i];
-        const double v = yaxis ? r->rel : r->wall;
-        if (r->st == RS_OK && r->rel > 0 && v > 0 && isfinite(v)) mn = fmin(mn, v), mx = fmax(mx, v);
-    }
-    if (!(mn <= mx)) mn = 1, mx = 10;
-    *lo = floor(log10(mn));
-    *hi = ceil(log10(mx));
-    if (*hi <= *lo) *hi = *lo + 1;
-}
-
-/* Error against wall time on log-log axes: one colour per series, each point
- * labelled with its refinement value, the Pareto front joined and ringed. */
+/* Error against wall time on log-log axes (<hearth/plot.h>): one colour per
+ * series, each run joined to its next finer one and labelled with its
+ * refinement value, the Pareto front joined and ringed under the runs. */
 static int write_plot(const trade *T, const char *path) {
-    const int W = 860, H = 580, left = 78, right = 24, top = 52, bottom = 62;
-    const int pw = W - left - right, ph = H - top - bottom;
-    img im;
     hearth_error err;
-    if (img_init(&im, W, H, C_BG, &err)) {
-        fprintf(stderr, "hearth trade: %s\n", err.msg);
-        return -1;
-    }
-    double lx0, lx1, ly0, ly1;
-    log_range(T, 0, &lx0, &lx1);
-    log_range(T, 1, &ly0, &ly1);
-#define PX(v) (left + (log10(v) - lx0) / (lx1 - lx0) * pw)
-#define PY(v) (top + ph - (log10(v) - ly0) / (ly1 - ly0) * ph)
-    char buf[256];
-    for (int k = (int)lx0; k < (int)lx1; k++)
-        for (int j = 2; j <= 9; j++) img_line(&im, PX(j * pow(10, k)), top, PX(j * pow(10, k)), top + ph, C_MINOR);
-    for (int k = (int)ly0; k < (int)ly1; k++)
-        for (int j = 2; j <= 9; j++) img_line(&im, left, PY(j * pow(10, k)), left + pw, PY(j * pow(10, k)), C_MINOR);
-    for (int k = (int)lx0; k <= (int)lx1; k++) {
-        const double px = PX(pow(10, k));
-        img_line(&im, px, top, px, top + ph, C_GRID);
-        decade_label(k, buf, sizeof buf);
-        img_text(&im, (int)lround(px) - font_text_width(buf, 1) / 2, top + ph + 9, buf, 1, C_TEXT);
-    }
-    for (int k = (int)ly0; k <= (int)ly1; k++) {
-        const double py = PY(pow(10, k));
-        img_line(&im, left, py, left + pw, py, C_GRID);
-        decade_label(k, buf, sizeof buf);
-        img_text(&im, left - 9 - font_text_width(buf, 1), (int)lround(py) - 4, buf, 1, C_TEXT);
-    }
-    img_line(&im, left, top, left + pw, top, C_AXIS);
-    img_line(&im, left, top + ph, left + pw, top + ph, C_AXIS);
-    img_line(&im, left, top, left, top + ph, C_AXIS);
-    img_line(&im, left + pw, top, left + pw, top + ph, C_AXIS);
-    /* the Pareto front, in order of wall time */
-    int prev = -1;
-    for (;;) {
-        int best = -1;
-        for (int i = 0; i < T->nr; i++)
-            if (T->r[i].pareto && (prev < 0 || T->r[i].wall > T->r[prev].wall) && (best < 0 || T->r[i].wall < T->r[best].wall))
-                best = i;
-        if (best < 0) break;
-        const trade_run *b = &T->r[best];
-        img_disc(&im, PX(b->wall), PY(b->rel), 7.5, C_FRONT);
-        img_disc(&im, PX(b->wall), PY(b->rel), 5.5, C_BG);
-        if (prev >= 0) {
-            const trade_run *a = &T->r[prev];
-            img_line(&im, PX(a->wall), PY(a->rel), PX(b->wall), PY(b->rel), C_FRONT);
-        }
-        prev = best;
-    }
-    /* the runs, and the series they belong to */
-    int nseries = 0;
-    for (int i = 0; i < T->nr; i++) nseries = T->r[i].series + 1 > nseries ? T->r[i].series + 1 : nseries;
-    for (int i = 0; i < T->nr; i++) {
-        const trade_run *r = &T->r[i];
-        if (r->st != RS_OK || !(r->rel > 0)) continue;
-        const unsigned char *c = C_SERIES[r->series % 8];
-        for (int j = 0; j < T->nr; j++) { /* join each run to its next finer one of the series */
-            const trade_run *q = &T->r[j];
-            if (q->series == r->series && q->st == RS_OK && q->rel > 0 && q->h < r->h) {
-                int closer = 1;
-                for (int k = 0; k < T->nr; k++)
-                    if (T->r[k].series == r->series && T->r[k].st == RS_OK && T->r[k].rel > 0 && T->r[k].h < r->h && T->r[k].h > q->h)
-                        closer = 0;
-                if (closer) img_line(&im, PX(r->wall), PY(r->rel), PX(q->wall), PY(q->rel), c);
-            }
-        }
-        img_disc(&im, PX(r->wall), PY(r->rel), 3.5, c);
-        if (T->refine >= 0) {
-            snprintf(buf, sizeof buf, "%s", T->k[T->refine].v[r->vi[T->refine]]);
-            img_text(&im, (int)lround(PX(r->wall)) + 6, (int)lround(PY(r->rel)) - 10, buf, 1, c);
-        }
-    }
-#undef PX
-#undef PY
     char title[600];
     const char *base = strrchr(T->scene, '/');
     snprintf(title, sizeof title, "%s: error in %s against %s", base ? base + 1 : T->scene, T->metric,
              T->analytic[0] ? "the analytic value" : "each series' finest run");
-    img_text(&im, left, 12, title, font_text_width(title, 2) <= W - left - 8 ? 2 : 1, C_TEXT);
-    const char *xl = "wall time per run [s]";
-    img_text(&im, left + pw / 2 - font_text_width(xl, 1) / 2, H - 22, xl, 1, C_TEXT);
-    img_text(&im, 8, top - 14, "relative error", 1, C_TEXT);
-    int ly = top + ph - 14 * (nseries < 8 ? nseries : 8) - 20;
-    for (int s = 0; s < nseries && s < 8; s++) {
+    hearth_plot_def d = hearth_default_plot_def();
+    d.width = 860, d.height = 580;
+    d.title = title, d.x_label = "wall time per run [s]", d.y_label = "relative error";
+    d.legend = HEARTH_LEGEND_BOTTOM_LEFT;
+    hearth_plot *p = hearth_plot_create(&d, &err);
+    double *x = malloc(sizeof(double) * (size_t)T->nr), *y = malloc(sizeof(double) * (size_t)T->nr);
+    const char **labels = malloc(sizeof(char *) * (size_t)T->nr);
+    int *order = malloc(sizeof(int) * (size_t)T->nr), rc = 0;
+    if (!p || !x || !y || !labels || !order) {
+        fprintf(stderr, "hearth trade: %s\n", p ? "out of memory for the plot" : err.msg);
+        rc = -1;
+        goto done;
+    }
+    /* the runs a log-log plot can show */
+#define SHOWN(r) ((r)->st == RS_OK && (r)->rel > 0)
+    int nseries = 0;
+    for (int i = 0; i < T->nr; i++) nseries = T->r[i].series + 1 > nseries ? T->r[i].series + 1 : nseries;
+    for (int s = 0; s < nseries && !rc; s++) {
+        /* the series' runs from coarsest to finest, so the line joins each to its next finer one */
+        int m = 0;
+        for (int i = 0; i < T->nr; i++)
+            if (T->r[i].series == s && SHOWN(&T->r[i])) {
+                int j = m++;
+                for (; j > 0 && T->r[order[j - 1]].h < T->r[i].h; j--) order[j] = order[j - 1];
+                order[j] = i;
+            }
+        for (int j = 0; j < m; j++) {
+            const trade_run *r = &T->r[order[j]];
+            x[j] = r->wall, y[j] = r->rel;
+            labels[j] = T->refine >= 0 ? T->k[T->refine].v[r->vi[T->refine]] : NULL;
+        }
+        char buf[256], lab[300];
         for (int i = 0; i < T->nr; i++)
             if (T->r[i].series == s) {
                 run_label(T, &T->r[i], 1, buf, sizeof buf);
                 break;
             }
-        char lab[300];
         if (T->refine >= 0) snprintf(lab, sizeof lab, "%s (labels: %s)", buf, T->k[T->refine].name);
         else snprintf(lab, sizeof lab, "%s", buf);
-        img_disc(&im, left + 16, ly + 3, 3.5, C_SERIES[s]);
-        img_text(&im, left + 28, ly, lab, 1, C_TEXT);
-        ly += 14;
+        hearth_plot_series_def sd = hearth_default_plot_series_def();
+        sd.n = m, sd.x = x, sd.y = y, sd.point_labels = labels, sd.line_width = T->refine >= 0;
+        sd.label = s < 8 ? lab : NULL; /* the legend lists the first 8 */
+        hearth_plot_color(s, sd.color);
+        if (hearth_plot_add_series(p, &sd, &err) < 0) rc = -1;
     }
-    img_disc(&im, left + 16, ly + 3, 7.5, C_FRONT);
-    img_disc(&im, left + 16, ly + 3, 5.5, C_BG);
-    img_text(&im, left + 28, ly, "Pareto front (nothing else is both faster and more accurate)", 1, C_TEXT);
-    hearth_status st = png_write_rgb(path, im.w, im.h, im.rgb, &err);
-    img_free(&im);
-    if (st) fprintf(stderr, "hearth trade: %s\n", err.msg);
-    return st ? -1 : 0;
+    /* the Pareto front, in order of wall time, under the runs */
+    int m = 0;
+    for (int i = 0; i < T->nr; i++)
+        if (T->r[i].pareto) {
+            int j = m++;
+            for (; j > 0 && T->r[order[j - 1]].wall > T->r[i].wall; j--) order[j] = order[j - 1];
+            order[j] = i;
+        }
+    for (int j = 0; j < m; j++) x[j] = T->r[order[j]].wall, y[j] = T->r[order[j]].rel;
+    hearth_plot_series_def fd = hearth_default_plot_series_def();
+    fd.n = m, fd.x = x, fd.y = y, fd.marker = HEARTH_MARKER_RING, fd.line_width = 1, fd.behind = 1;
+    fd.label = "Pareto front (nothing else is both faster and more accurate)";
+    memcpy(fd.color, (const unsigned char[3]){40, 40, 40}, 3);
+    if (!rc && hearth_plot_add_series(p, &fd, &err) < 0) rc = -1;
+#undef SHOWN
+    if (!rc && hearth_plot_write_png(p, path, &err)) rc = -1;
+    if (rc) fprintf(stderr, "hearth trade: %s\n", err.msg);
+done:
+    hearth_plot_free(p);
+    free(x);
+    free(y);
+    free(labels);
+    free(order);
+    return rc;
 }
 
 static void print_table(const trade *T) {

@@ -6,12 +6,14 @@
 #include <dirent.h>
 #include <errno.h>
 #include <signal.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <unistd.h>
 
+#include "alloc.h"
 #include "error.h"
 
 hearth_status atomic_open(atomic_file *af, const char *path, hearth_error *err) {
@@ -105,3 +107,47 @@ static int clean_dir(const char *dir, int depth) {
 int atomic_clean_stale(const char *dir) { return dir ? clean_dir(dir, 0) : 0; }
 
 int hearth_clean_stale_temps(const char *dir) { return atomic_clean_stale(dir); }
+
+/* ---- the public handle (<hearth/hearth.h>) ----------------------------------
+ * Hosts get an opaque, allocated handle rather than the struct: its 8 KiB of
+ * path buffers stay private and may change without breaking a caller. */
+
+struct hearth_atomic_file {
+    atomic_file af;
+};
+
+hearth_atomic_file *hearth_atomic_file_open(const char *path, hearth_error *err) {
+    hearth_atomic_file *h = mem_alloc(sizeof *h);
+    if (!h) {
+        err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory to start writing it", path);
+        return NULL;
+    }
+    if (atomic_open(&h->af, path, err)) {
+        mem_free(h, sizeof *h);
+        return NULL;
+    }
+    return h;
+}
+
+void hearth_atomic_file_write(hearth_atomic_file *af, const void *data, size_t n) {
+    if (n) fwrite(data, 1, n, af->af.f); /* a short write sets the stream's error flag, which the commit reads */
+}
+
+void hearth_atomic_file_printf(hearth_atomic_file *af, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    vfprintf(af->af.f, fmt, ap);
+    va_end(ap);
+}
+
+hearth_status hearth_atomic_file_commit(hearth_atomic_file *af, hearth_error *err) {
+    hearth_status st = atomic_commit(&af->af, err);
+    mem_free(af, sizeof *af);
+    return st;
+}
+
+void hearth_atomic_file_abort(hearth_atomic_file *af) {
+    if (!af) return;
+    atomic_abort(&af->af);
+    mem_free(af, sizeof *af);
+}

@@ -1,7 +1,7 @@
 /* rheometer.c: the homogeneous virtual rheometer, flow-curve CSV reading and
  * the Herschel-Bulkley fit of Nagasawa et al. 2019 (eq. 1, 2). */
 #include "plugins.h"
-#include "rheometer.h"
+#include "hearth/lab.h"
 
 #include "csv.h"
 
@@ -18,14 +18,14 @@
 #include "material.h"
 #include "tensor.h"
 
-rheo_opts rheo_default_opts(void) {
-    rheo_opts o = {.dt = 0, .rel_tol = 1e-6, .window = 64, .max_strain = 1e7, .max_steps = 4000000};
+hearth_rheometer_opts hearth_rheometer_default_opts(void) {
+    hearth_rheometer_opts o = {.dt = 0, .rel_tol = 1e-6, .window = 64, .max_strain = 1e7, .max_steps = 4000000};
     return o;
 }
 
-double rheo_hb(double sigma_y, double eta, double h, double rate) { return sigma_y + eta * pow(rate, h); }
+double hearth_hb_stress(double sigma_y, double eta, double h, double rate) { return sigma_y + eta * pow(rate, h); }
 
-void rheo_log_rates(double lo, double hi, int n, double *rates) {
+void hearth_log_spaced(double lo, double hi, int n, double *rates) {
     if (n <= 0) return;
     rates[0] = lo;
     if (n == 1) return;
@@ -137,7 +137,7 @@ static double rig_modulus(const rig *g) {
     return isfinite(M) && M > 0 ? M : 0;
 }
 
-static hearth_status check_opts(const rheo_opts *o, hearth_error *err) {
+static hearth_status check_opts(const hearth_rheometer_opts *o, hearth_error *err) {
     if (!(o->dt >= 0) || !isfinite(o->dt))
         return err_set(err, HEARTH_ERR_PARAM, "dt must be >= 0 s (0 = adaptive), got %g", o->dt);
     if (!(o->rel_tol > 0) || !(o->rel_tol < 1))
@@ -148,10 +148,10 @@ static hearth_status check_opts(const rheo_opts *o, hearth_error *err) {
     return HEARTH_OK;
 }
 
-hearth_status rheo_steady(const hearth_material *m, const double *p, double rate, const rheo_opts *o, rheo_result *r,
-                          hearth_error *err) {
+hearth_status hearth_rheometer_steady(const hearth_material *m, const double *p, double rate,
+                                      const hearth_rheometer_opts *o, hearth_rheometer_result *r, hearth_error *err) {
     err_clear(err);
-    rheo_opts def = rheo_default_opts();
+    hearth_rheometer_opts def = hearth_rheometer_default_opts();
     if (!o) o = &def;
     memset(r, 0, sizeof *r);
     hearth_status st = check_opts(o, err);
@@ -208,8 +208,8 @@ hearth_status rheo_steady(const hearth_material *m, const double *p, double rate
     return HEARTH_OK;
 }
 
-hearth_status rheo_startup(const hearth_material *m, const double *p, double rate, double dt, int n, double *sigma,
-                           hearth_error *err) {
+hearth_status hearth_rheometer_startup(const hearth_material *m, const double *p, double rate, double dt, int n,
+                                       double *sigma, hearth_error *err) {
     err_clear(err);
     if (!(dt > 0) || !isfinite(dt)) return err_set(err, HEARTH_ERR_PARAM, "start-up needs dt > 0 s, got %g", dt);
     if (n < 1) return err_set(err, HEARTH_ERR_PARAM, "start-up needs at least 1 step, got %d", n);
@@ -221,12 +221,12 @@ hearth_status rheo_startup(const hearth_material *m, const double *p, double rat
     return st;
 }
 
-hearth_status rheo_flow_curve(const hearth_material *m, const double *p, const double *rates, int n,
-                              const rheo_opts *o, double *stress, hearth_error *err) {
+hearth_status hearth_rheometer_flow_curve(const hearth_material *m, const double *p, const double *rates, int n,
+                                          const hearth_rheometer_opts *o, double *stress, hearth_error *err) {
     err_clear(err);
     for (int i = 0; i < n; i++) {
-        rheo_result r;
-        hearth_status st = rheo_steady(m, p, rates[i], o, &r, err);
+        hearth_rheometer_result r;
+        hearth_status st = hearth_rheometer_steady(m, p, rates[i], o, &r, err);
         stress[i] = r.stress;
         if (st) return st;
     }
@@ -235,7 +235,7 @@ hearth_status rheo_flow_curve(const hearth_material *m, const double *p, const d
 
 /* ---- flow-curve CSV ----------------------------------------------------- */
 
-void rheo_curve_free(rheo_curve *c) {
+void hearth_flow_curve_free(hearth_flow_curve *c) {
     if (!c) return;
     size_t bytes = sizeof(double) * (size_t)(c->n > 0 ? c->n : 0);
     mem_free(c->rate, bytes);
@@ -251,7 +251,7 @@ void rheo_curve_free(rheo_curve *c) {
  * the byte counts far from int overflow, and a runaway file from memory. */
 #define CURVE_MAX_ROWS 1000000
 
-hearth_status rheo_curve_read(const char *path, rheo_curve *c, hearth_error *err) {
+hearth_status hearth_flow_curve_read(const char *path, hearth_flow_curve *c, hearth_error *err) {
     err_clear(err);
     memset(c, 0, sizeof *c);
     FILE *f = fopen(path, "r");
@@ -420,7 +420,8 @@ static double fit_profile(const fit_data *d, double h, double *sy_out, double *e
     return best;
 }
 
-hearth_status rheo_fit_hb(const double *rate, const double *stress, int n, rheo_fit_result *out, hearth_error *err) {
+hearth_status hearth_hb_fit(const double *rate, const double *stress, int n, hearth_hb_fit_result *out,
+                            hearth_error *err) {
     err_clear(err);
     memset(out, 0, sizeof *out);
     if (n < 3) return err_set(err, HEARTH_ERR_PARAM, "fit: %d points; fitting sigma_y, eta and h needs at least 3", n);

@@ -1,5 +1,5 @@
 /* rheometer_mpm.c: the virtual rheometer's second mode, the real MPM solver
- * between moving plates (rheometer.h). It uses only the public scene API, so
+ * between moving plates (<hearth/lab.h>). It uses only the public scene API, so
  * it measures exactly what a scene would simulate: the transfers, the grid,
  * the colliders and the plugin together.
  *
@@ -15,10 +15,10 @@
 
 #include "alloc.h"
 #include "error.h"
-#include "rheometer.h"
+#include "hearth/lab.h"
 
-rheo_mpm_opts rheo_mpm_default_opts(void) {
-    return (rheo_mpm_opts){.gap = 0.01, .cells = 16, .length = 4, .ppc = 4, .rel_tol = 2e-4, .max_time = 1};
+hearth_rheometer_mpm_opts hearth_rheometer_mpm_default_opts(void) {
+    return (hearth_rheometer_mpm_opts){.gap = 0.01, .cells = 16, .length = 4, .ppc = 4, .rel_tol = 2e-4, .max_time = 1};
 }
 
 /* The measurement over the middle half of the layer: mean sigma_xy, and the
@@ -47,12 +47,13 @@ static hearth_status measure(hearth_scene *s, double x0, double x1, double y0, d
     return HEARTH_OK;
 }
 
-hearth_status rheo_mpm_steady(const char *plugin, const double *p, double rate, const rheo_mpm_opts *o,
-                              rheo_mpm_result *r, hearth_error *err) {
+hearth_status hearth_rheometer_mpm_steady(const char *plugin, const double *p, double rate,
+                                          const hearth_rheometer_mpm_opts *o, hearth_rheometer_mpm_result *r,
+                                          hearth_error *err) {
     hearth_error local;
     if (!err) err = &local;
     err_clear(err);
-    rheo_mpm_opts opt = o ? *o : rheo_mpm_default_opts();
+    hearth_rheometer_mpm_opts opt = o ? *o : hearth_rheometer_mpm_default_opts();
     memset(r, 0, sizeof *r);
     if (!(rate > 0) || !isfinite(rate))
         return err_set(err, HEARTH_ERR_PARAM, "rheometer (mpm): shear rate must be finite and > 0 1/s, got %g", rate);

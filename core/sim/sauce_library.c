@@ -1,5 +1,5 @@
 /* sauce_library.c: reading assets/sauces.csv. */
-#include "sauce_library.h"
+#include "hearth/lab.h"
 
 #include "csv.h"
 
@@ -33,13 +33,13 @@ static int valid_name(const char *s) {
     return 1;
 }
 
-void sauce_library_free(sauce_library *lib) {
+void hearth_sauce_library_free(hearth_sauce_library *lib) {
     if (!lib) return;
-    mem_free(lib->items, sizeof(sauce) * (size_t)(lib->n > 0 ? lib->n : 0));
+    mem_free(lib->items, sizeof(hearth_sauce) * (size_t)(lib->n > 0 ? lib->n : 0));
     memset(lib, 0, sizeof *lib);
 }
 
-hearth_status sauce_library_load(const char *path, sauce_library *lib, hearth_error *err) {
+hearth_status hearth_sauce_library_load(const char *path, hearth_sauce_library *lib, hearth_error *err) {
     err_clear(err);
     memset(lib, 0, sizeof *lib);
     FILE *f = fopen(path, "r");
@@ -48,7 +48,7 @@ hearth_status sauce_library_load(const char *path, sauce_library *lib, hearth_er
     char *cells[LIB_CELLS];
     int col[C_COUNT], lineno = 0, header = 0, n = 0, cap = 0;
     for (int k = 0; k < C_COUNT; k++) col[k] = -1;
-    sauce *items = NULL;
+    hearth_sauce *items = NULL;
     hearth_status st = HEARTH_OK;
     while (!st) {
         csv_line got = csv_read_line(f, line, sizeof line);
@@ -84,7 +84,7 @@ hearth_status sauce_library_load(const char *path, sauce_library *lib, hearth_er
                                  path, lineno, col_names[k]);
             continue;
         }
-        sauce s;
+        hearth_sauce s;
         memset(&s, 0, sizeof s);
         for (int k = 0; k < C_COUNT && !st; k++) {
             if (col[k] >= nc) {
@@ -134,7 +134,7 @@ hearth_status sauce_library_load(const char *path, sauce_library *lib, hearth_er
         }
         if (n == cap) {
             int ncap = cap ? 2 * cap : 32;
-            sauce *ni = mem_realloc(items, sizeof(sauce) * (size_t)cap, sizeof(sauce) * (size_t)ncap);
+            hearth_sauce *ni = mem_realloc(items, sizeof(hearth_sauce) * (size_t)cap, sizeof(hearth_sauce) * (size_t)ncap);
             if (!ni) {
                 st = err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory at line %d", path, lineno);
                 break;
@@ -149,19 +149,19 @@ hearth_status sauce_library_load(const char *path, sauce_library *lib, hearth_er
     if (!st && !header) st = err_set(err, HEARTH_ERR_FORMAT, "%s: empty file: expected a header row", path);
     if (!st && n == 0) st = err_set(err, HEARTH_ERR_FORMAT, "%s: no sauces after the header (line %d)", path, header);
     if (!st) {
-        sauce *exact = mem_alloc(sizeof(sauce) * (size_t)n);
+        hearth_sauce *exact = mem_alloc(sizeof(hearth_sauce) * (size_t)n);
         if (!exact) st = err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory", path);
         else {
-            memcpy(exact, items, sizeof(sauce) * (size_t)n);
+            memcpy(exact, items, sizeof(hearth_sauce) * (size_t)n);
             lib->items = exact;
             lib->n = n;
         }
     }
-    mem_free(items, sizeof(sauce) * (size_t)cap);
+    mem_free(items, sizeof(hearth_sauce) * (size_t)cap);
     return st;
 }
 
-const sauce *sauce_find(const sauce_library *lib, const char *name) {
+const hearth_sauce *hearth_sauce_find(const hearth_sauce_library *lib, const char *name) {
     if (!lib || !name) return NULL;
     if (!strncmp(name, "sauce.", 6)) name += 6;
     for (int i = 0; i < lib->n; i++)
@@ -169,8 +169,8 @@ const sauce *sauce_find(const sauce_library *lib, const char *name) {
     return NULL;
 }
 
-const sauce *sauce_lookup(const sauce_library *lib, const char *name, hearth_error *err) {
-    const sauce *s = sauce_find(lib, name);
+const hearth_sauce *hearth_sauce_lookup(const hearth_sauce_library *lib, const char *name, hearth_error *err) {
+    const hearth_sauce *s = hearth_sauce_find(lib, name);
     if (s) return s;
     const char *bare = name && !strncmp(name, "sauce.", 6) ? name + 6 : name ? name : "";
     enum { MAXC = 256 };
@@ -186,7 +186,7 @@ const sauce *sauce_lookup(const sauce_library *lib, const char *name, hearth_err
     return NULL;
 }
 
-hearth_status sauce_params(const hearth_material *m, const sauce *s, double *p, hearth_error *err) {
+hearth_status hearth_sauce_params(const hearth_material *m, const hearth_sauce *s, double *p, hearth_error *err) {
     err_clear(err);
     for (int i = 0; i < m->nparams; i++) p[i] = m->params[i].def;
     const char *names[3] = {"h", "eta", "sigma_y"};

@@ -1,6 +1,6 @@
 /* fuzz_csv.c: the flow-curve CSV reader and what `hearth fit` does with it.
  *
- * Bytes -> file -> rheo_curve_read -> rheo_fit_hb, as cmd_fit.c does; and the
+ * Bytes -> file -> hearth_flow_curve_read -> hearth_hb_fit, as cmd_fit.c does; and the
  * same bytes as one line through csv_trim / csv_split, and as a sauce
  * library (`hearth rheometer --library FILE`), which shares the line reader. A curve that reads must hold at least 3 finite
  * positive points; a fit that succeeds must give finite, non-negative
@@ -12,8 +12,7 @@
 
 #include "csv.h"
 #include "fuzz_util.h"
-#include "rheometer.h"
-#include "sauce_library.h"
+#include "hearth/lab.h"
 
 #define FIT_MAX_POINTS 64
 
@@ -35,17 +34,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (!path) return 0;
     hearth_error err;
     memset(&err, 0, sizeof err);
-    sauce_library lib;
-    if (sauce_library_load(path, &lib, &err) == HEARTH_OK) {
+    hearth_sauce_library lib;
+    if (hearth_sauce_library_load(path, &lib, &err) == HEARTH_OK) {
         for (int i = 0; i < lib.n; i++)
             FUZZ_CHECK(lib.items[i].h > 0 && lib.items[i].eta > 0 && lib.items[i].sigma_y >= 0);
-        sauce_library_free(&lib);
+        hearth_sauce_library_free(&lib);
     } else {
         FUZZ_CHECK(err.msg[0] != '\0');
     }
     memset(&err, 0, sizeof err);
-    rheo_curve c;
-    if (rheo_curve_read(path, &c, &err) != HEARTH_OK) {
+    hearth_flow_curve c;
+    if (hearth_flow_curve_read(path, &c, &err) != HEARTH_OK) {
         if (fuzz_verbose()) fprintf(stderr, "fuzz_csv: %s\n", err.msg);
         FUZZ_CHECK(err.code != HEARTH_OK && err.msg[0] != '\0');
         FUZZ_CHECK(c.n == 0 && !c.rate && !c.stress);
@@ -57,12 +56,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     /* The fit's cost grows with the points and its paths do not: fitting only
      * curves of up to FIT_MAX_POINTS keeps long files (whose parsing matters)
      * from slowing every input tenfold. */
-    rheo_fit_result fr;
+    hearth_hb_fit_result fr;
     if (c.n > FIT_MAX_POINTS) {
-        rheo_curve_free(&c);
+        hearth_flow_curve_free(&c);
         return 0;
     }
-    if (rheo_fit_hb(c.rate, c.stress, c.n, &fr, &err) == HEARTH_OK) {
+    if (hearth_hb_fit(c.rate, c.stress, c.n, &fr, &err) == HEARTH_OK) {
         FUZZ_CHECK(isfinite(fr.sigma_y) && fr.sigma_y >= 0);
         FUZZ_CHECK(isfinite(fr.eta) && fr.eta >= 0);
         FUZZ_CHECK(isfinite(fr.h) && fr.h > 0);
@@ -70,6 +69,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     } else {
         FUZZ_CHECK(err.msg[0] != '\0');
     }
-    rheo_curve_free(&c);
+    hearth_flow_curve_free(&c);
     return 0;
 }

@@ -466,6 +466,34 @@ hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name
 /// A 64-bit hash of the particle state, for determinism checks.
 uint64_t hearth_scene_hash(const hearth_scene *s);
 
+/* ---- atomic files (for hosts: the command line, the Lua binding) ------ */
+
+/// A file being written atomically: readers of its path see the old file or
+/// the whole new one, never a torn one (a temp file "<path>.tmp.<pid>" in the
+/// same folder, fsynced and renamed over path at commit).
+typedef struct hearth_atomic_file hearth_atomic_file;
+
+#if defined(__GNUC__)
+#define HEARTH_PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
+#else
+#define HEARTH_PRINTF_LIKE(f, a)
+#endif
+
+/// Start writing path. NULL on failure: HEARTH_ERR_IO (the temp file cannot be
+/// created; the message names path and why) or HEARTH_ERR_NOMEM. The handle
+/// must end in hearth_atomic_file_commit or hearth_atomic_file_abort.
+hearth_atomic_file *hearth_atomic_file_open(const char *path, hearth_error *err);
+/// Append n bytes. A failed write is remembered and reported by the commit.
+void hearth_atomic_file_write(hearth_atomic_file *af, const void *data, size_t n);
+/// Append formatted text (printf rules). Failures as hearth_atomic_file_write.
+void hearth_atomic_file_printf(hearth_atomic_file *af, const char *fmt, ...) HEARTH_PRINTF_LIKE(2, 3);
+/// Flush, fsync and rename over path, then release af. On any failure
+/// (including an earlier write's) the temp file is removed, path is left as
+/// it was and HEARTH_ERR_IO names path and the cause.
+hearth_status hearth_atomic_file_commit(hearth_atomic_file *af, hearth_error *err);
+/// Give up: remove the temp file and release af (NULL is fine).
+void hearth_atomic_file_abort(hearth_atomic_file *af);
+
 #ifdef __cplusplus
 }
 #endif
