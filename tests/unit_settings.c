@@ -145,6 +145,26 @@ TEST(settings_table_well_formed) {
         if (e->kind == HEARTH_SETTING_REAL && !isnan(e->def))
             CHECK((e->min_open ? e->def > e->min : e->def >= e->min) && e->def <= e->max);
     }
+    /* every field of hearth_scene_def has a row: the bytes no row covers are alignment padding only
+     * (less than a double between two rows), so a new field without a row fails here */
+    unsigned char covered[sizeof(hearth_scene_def)] = {0};
+    for (int k = 0; k < n; k++) {
+        const hearth_setting *e = &set[k];
+        if (e->offset < 0) continue;
+        size_t size = e->kind == HEARTH_SETTING_REAL || e->kind == HEARTH_SETTING_SEED ? 8
+                      : e->kind == HEARTH_SETTING_VECTOR || e->kind == HEARTH_SETTING_BOX ? 24 : sizeof(int);
+        CHECK((size_t)e->offset + size <= sizeof covered);
+        for (size_t b = 0; b < size && (size_t)e->offset + b < sizeof covered; b++) covered[e->offset + b]++;
+        if (e->kind == HEARTH_SETTING_BOX)
+            for (size_t b = 0; b < size; b++) covered[e->offset2 + b]++;
+    }
+    size_t gap = 0;
+    for (size_t b = 0; b < sizeof covered; b++) {
+        CHECK(covered[b] <= 1); /* no two rows write the same bytes */
+        gap = covered[b] ? 0 : gap + 1;
+        if (gap >= sizeof(double)) fprintf(stderr, "hearth_scene_def bytes %zu..: no settings row\n", b + 1 - gap);
+        CHECK(gap < sizeof(double));
+    }
     CHECK(hearth_scene_setting("oven.beta") && !strcmp(hearth_scene_setting("oven.beta")->unit, "W/(m^2 K)"));
     CHECK(hearth_scene_setting("nope") == NULL);
     CHECK(hearth_scene_setting(NULL) == NULL);

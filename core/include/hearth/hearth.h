@@ -173,7 +173,8 @@ typedef enum hearth_solver {
 } hearth_solver;
 
 /// Options of the SPH solver (used when solver = HEARTH_SOLVER_SPH). Equation
-/// numbers are Rodriguez-Arenas 2011. Start from hearth_default_scene_def().
+/// numbers are Rodriguez-Arenas 2011. Start from hearth_default_scene_def();
+/// ranges and defaults are the sph.* rows of hearth_scene_settings().
 typedef struct hearth_sph_def {
     double h_factor;       ///< smoothing length h (kernel support radius) over the particle spacing V0^(1/dim); default 2.4 (lattice sum of W V within 1e-3 of 1)
     int leapfrog;          ///< 0: symplectic Euler (eq. 3.57-3.58); 1: leapfrog drift-kick-drift (§3.6)
@@ -196,6 +197,8 @@ typedef struct hearth_sph_def {
     double artificial_stress; ///< Monaghan's epsilon (2000) against the tensile instability, 0..1 (0.2-0.3 usual); default 0 = off (it also resists a cooling bubble's contraction)
 } hearth_sph_def;
 
+/// A scene's settings. Each field is one row of hearth_scene_settings(), which
+/// gives its Lua name, unit, default, valid range and help (`hearth help scene`).
 typedef struct hearth_scene_def {
     int dim;              ///< 2 (plane strain) or 3
     double dx;            ///< grid spacing (m)
