@@ -103,8 +103,10 @@ static void print_lua(void) {
         char d[96], v[128];
         default_text(&set[k], d, sizeof d);
         valid_text(&set[k], v, sizeof v);
-        printf("| `%s` | %s | `%s` | %s | %s | %s |\n", set[k].name, unit_text(&set[k]), d, v, set[k].knob ? "yes" : "",
-               set[k].help);
+        printf("| `%s` | %s | `%s` | %s | %s | ", set[k].name, unit_text(&set[k]), d, v, set[k].knob ? "yes" : "");
+        for (const char *c = set[k].help; *c; c++) /* a | in the help (|grad C|) would end the cell */
+            *c == '|' ? fputs("\\|", stdout) : putchar(*c);
+        printf(" |\n");
     }
 }
 
