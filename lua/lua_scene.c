@@ -19,13 +19,54 @@ int hl_raise(lua_State *L, const hearth_error *err) {
     return luaL_error(L, "%s", err->msg);
 }
 
-/* core.scene_new{dim, dx, lo, hi, gravity, cfl, dt_max, wall, friction, guard, max_rollbacks, seed}
- * (already validated and filled with defaults by init.lua) */
-static double field_num(lua_State *L, int t, const char *k) {
-    lua_getfield(L, t, k);
-    double x = lua_tonumber(L, -1);
-    lua_pop(L, 1);
-    return x;
+/* core.scene_settings() -> the schema (hearth_scene_settings) as a list of
+ * {name, kind, unit, help, default, min, max, min_open, nan_ok, words, vec_default,
+ * lua_only, knob}: init.lua's h.scene checks, defaults and suggestions, and --set's
+ * knobs, read it here rather than keep a copy. */
+static int l_scene_settings(lua_State *L) {
+    static const char *const kinds[] = {"real", "int", "seed", "flag", "choice", "vector", "box", "text"};
+    int n = 0;
+    const hearth_setting *set = hearth_scene_settings(&n);
+    lua_createtable(L, n, 0);
+    for (int k = 0; k < n; k++) {
+        const hearth_setting *e = &set[k];
+        lua_createtable(L, 0, 13);
+        lua_pushstring(L, e->name), lua_setfield(L, -2, "name");
+        lua_pushstring(L, kinds[e->kind]), lua_setfield(L, -2, "kind");
+        lua_pushstring(L, e->unit), lua_setfield(L, -2, "unit");
+        lua_pushstring(L, e->help), lua_setfield(L, -2, "help");
+        if (!isnan(e->def)) {
+            if (e->kind == HEARTH_SETTING_FLAG) lua_pushboolean(L, e->def != 0);
+            else if (e->kind == HEARTH_SETTING_CHOICE) lua_pushstring(L, e->words[(int)e->def]);
+            else if (e->kind == HEARTH_SETTING_REAL) lua_pushnumber(L, e->def);
+            else lua_pushinteger(L, (lua_Integer)e->def);
+            lua_setfield(L, -2, "default");
+        }
+        lua_pushnumber(L, e->min), lua_setfield(L, -2, "min");
+        lua_pushnumber(L, e->max), lua_setfield(L, -2, "max");
+        lua_pushboolean(L, e->min_open), lua_setfield(L, -2, "min_open");
+        lua_pushboolean(L, e->nan_ok), lua_setfield(L, -2, "nan_ok");
+        lua_pushboolean(L, e->offset < 0), lua_setfield(L, -2, "lua_only");
+        lua_pushboolean(L, e->knob), lua_setfield(L, -2, "knob");
+        if (e->words) {
+            lua_newtable(L);
+            for (int w = 0; e->words[w]; w++) lua_pushstring(L, e->words[w]), lua_seti(L, -2, w + 1);
+            lua_setfield(L, -2, "words");
+        }
+        if (e->vec_def) {
+            const int nv = e->kind == HEARTH_SETTING_BOX ? 2 : 1;
+            lua_createtable(L, nv, 0);
+            for (int v = 0; v < nv; v++) {
+                lua_createtable(L, 3, 0);
+                for (int c = 0; c < 3; c++) lua_pushnumber(L, e->vec_def[3 * v + c]), lua_seti(L, -2, c + 1);
+                lua_seti(L, -2, v + 1);
+            }
+            if (nv == 1) lua_geti(L, -1, 1), lua_remove(L, -2); /* a vector is {x, y, z}, a box {{lo}, {hi}} */
+            lua_setfield(L, -2, "vec_default");
+        }
+        lua_seti(L, -2, k + 1);
+    }
+    return 1;
 }
 
 static void field_vec(lua_State *L, int t, const char *k, double v[3]) {
@@ -34,57 +75,35 @@ static void field_vec(lua_State *L, int t, const char *k, double v[3]) {
     lua_pop(L, 1);
 }
 
+/* core.scene_new{[name] = value, ...}: keys are hearth_scene_settings() names
+ * ("dx", "oven.beta", "sph.h_factor"), already checked by init.lua's h.scene;
+ * a word is given as its index, a flag as a boolean, the box as {lo, hi}.
+ * Missing keys keep the schema's defaults; the core checks every range again. */
 static int l_scene_new(lua_State *L) {
     luaL_checktype(L, 1, LUA_TTABLE);
     hearth_scene_def d = hearth_default_scene_def();
-    d.dim = (int)field_num(L, 1, "dim");
-    d.dx = field_num(L, 1, "dx");
-    field_vec(L, 1, "lo", d.lo);
-    field_vec(L, 1, "hi", d.hi);
-    field_vec(L, 1, "gravity", d.gravity);
-    d.cfl = field_num(L, 1, "cfl");
-    d.dt_max = field_num(L, 1, "dt_max");
-    d.wall = (hearth_contact)field_num(L, 1, "wall");
-    d.wall_friction = field_num(L, 1, "friction");
-    d.guard = (hearth_guard_policy)field_num(L, 1, "guard");
-    d.max_rollbacks = (int)field_num(L, 1, "max_rollbacks");
-    d.seed = (uint64_t)field_num(L, 1, "seed");
-    lua_getfield(L, 1, "oven_temperature");
-    d.oven_temperature = lua_isnumber(L, -1) ? lua_tonumber(L, -1) : NAN;
-    lua_pop(L, 1);
-    d.oven_beta = field_num(L, 1, "oven_beta");
-    d.heat_implicit = (int)field_num(L, 1, "heat_implicit");
-    d.water_momentum = (int)field_num(L, 1, "water_momentum");
-    d.transfer = (int)field_num(L, 1, "transfer");
-    d.heat_flip = field_num(L, 1, "heat_flip");
-    /* ---- SPH: solver = 1 and the optional sph = {...} table (keys checked by init.lua) ---- */
-    d.solver = (int)field_num(L, 1, "solver");
-    lua_getfield(L, 1, "sph");
-    if (lua_istable(L, -1)) {
-        const int t = lua_gettop(L);
-        hearth_sph_def *o = &d.sph;
-        struct { const char *k; double *v; } nums[] = {
-            {"h_factor", &o->h_factor}, {"gamma", &o->gamma}, {"av_beta", &o->av_beta},
-            {"surface_tension", &o->surface_tension}, {"surface_threshold", &o->surface_threshold},
-            {"alpha_c", &o->alpha_c}, {"beta_c", &o->beta_c}, {"xsph0", &o->xsph0}, {"xsph_f", &o->xsph_f},
-            {"xsph_T0", &o->xsph_T0}, {"xsph_Tf", &o->xsph_Tf}, {"heat_ext", &o->heat_ext}, {"heat_int", &o->heat_int},
-            {"k_g", &o->k_g}, {"eps_g", &o->eps_g}, {"bubble_T0", &o->bubble_T0}, {"dt_viscous", &o->dt_viscous},
-            {"dt_force", &o->dt_force}, {"artificial_stress", &o->artificial_stress}};
-        for (size_t k = 0; k < sizeof nums / sizeof nums[0]; k++) {
-            lua_getfield(L, t, nums[k].k);
-            if (lua_isnumber(L, -1)) *nums[k].v = lua_tonumber(L, -1);
-            lua_pop(L, 1);
-        }
-        struct { const char *k; int *v; } flags[] = {{"leapfrog", &o->leapfrog}, {"adaptive_h", &o->adaptive_h},
-                                                     {"tension", &o->tension}, {"periodic_x", &o->periodic[0]},
-                                                     {"periodic_y", &o->periodic[1]}, {"periodic_z", &o->periodic[2]}};
-        for (size_t k = 0; k < sizeof flags / sizeof flags[0]; k++) {
-            lua_getfield(L, t, flags[k].k);
-            if (lua_isboolean(L, -1)) *flags[k].v = lua_toboolean(L, -1);
-            lua_pop(L, 1);
-        }
+    int n = 0;
+    const hearth_setting *set = hearth_scene_settings(&n);
+    for (int k = 0; k < n; k++) {
+        const hearth_setting *e = &set[k];
+        if (e->offset < 0) continue;
+        char *f = (char *)&d + e->offset;
+        const int ty = lua_getfield(L, 1, e->name), top = lua_gettop(L);
+        if (ty != LUA_TNIL) switch (e->kind) {
+            case HEARTH_SETTING_REAL: *(double *)f = luaL_checknumber(L, top); break;
+            case HEARTH_SETTING_INT:
+            case HEARTH_SETTING_CHOICE: *(int *)f = (int)luaL_checknumber(L, top); break;
+            case HEARTH_SETTING_SEED: *(uint64_t *)f = (uint64_t)luaL_checknumber(L, top); break;
+            case HEARTH_SETTING_FLAG: *(int *)f = lua_toboolean(L, top); break;
+            case HEARTH_SETTING_VECTOR: hl_checkvec(L, top, e->name, (double *)f); break;
+            case HEARTH_SETTING_BOX:
+                field_vec(L, top, "lo", (double *)f);
+                field_vec(L, top, "hi", (double *)((char *)&d + e->offset2));
+                break;
+            case HEARTH_SETTING_TEXT: break;
+            }
+        lua_pop(L, 1);
     }
-    lua_pop(L, 1);
     hl_scene *u = lua_newuserdatauv(L, sizeof *u, 1);
     u->s = NULL;
     luaL_setmetatable(L, HL_SCENE);
@@ -473,7 +492,8 @@ static int l_oven(lua_State *L) {
     const hearth_scene_def *d = hearth_scene_get_def(u->s);
     if (lua_gettop(L) >= 2) {
         double T = lua_isnil(L, 2) ? NAN : luaL_checknumber(L, 2);
-        double beta = luaL_optnumber(L, 3, d->oven_beta > 0 ? d->oven_beta : 10);
+        /* beta: the scene's own when it has one, else the schema's default (10) */
+        double beta = luaL_optnumber(L, 3, d->oven_beta > 0 ? d->oven_beta : hearth_scene_setting("oven.beta")->def);
         hearth_error err;
         if (hearth_scene_set_oven(u->s, T, beta, &err)) return hl_raise(L, &err);
     }
@@ -481,6 +501,47 @@ static int l_oven(lua_State *L) {
     lua_pushnumber(L, d->oven_temperature);
     lua_pushnumber(L, d->oven_beta);
     return 2;
+}
+
+static void push_vec3(lua_State *L, const double v[3]) {
+    lua_createtable(L, 3, 0);
+    for (int c = 0; c < 3; c++) lua_pushnumber(L, v[c]), lua_seti(L, -2, c + 1);
+}
+
+/* s:settings() -> the scene's settings now, keyed as h.scene spells them
+ * ("dx", "oven.beta", "sph.h_factor"): words as words, flags as booleans, no
+ * oven as a missing oven.temperature. Read from the core's definition through
+ * the schema, so a test can hold h.scene's defaults against the C ones. */
+static int l_settings(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const char *d = (const char *)hearth_scene_get_def(u->s);
+    int n = 0;
+    const hearth_setting *set = hearth_scene_settings(&n);
+    lua_newtable(L);
+    for (int k = 0; k < n; k++) {
+        const hearth_setting *e = &set[k];
+        if (e->offset < 0) continue;
+        const char *f = d + e->offset;
+        switch (e->kind) {
+        case HEARTH_SETTING_REAL:
+            if (isnan(*(const double *)f)) continue;
+            lua_pushnumber(L, *(const double *)f);
+            break;
+        case HEARTH_SETTING_INT: lua_pushinteger(L, *(const int *)f); break;
+        case HEARTH_SETTING_SEED: lua_pushinteger(L, (lua_Integer) * (const uint64_t *)f); break;
+        case HEARTH_SETTING_FLAG: lua_pushboolean(L, *(const int *)f); break;
+        case HEARTH_SETTING_CHOICE: lua_pushstring(L, e->words[*(const int *)f]); break;
+        case HEARTH_SETTING_VECTOR: push_vec3(L, (const double *)f); break;
+        case HEARTH_SETTING_BOX:
+            lua_createtable(L, 2, 0);
+            push_vec3(L, (const double *)f), lua_seti(L, -2, 1);
+            push_vec3(L, (const double *)(d + e->offset2)), lua_seti(L, -2, 2);
+            break;
+        case HEARTH_SETTING_TEXT: continue;
+        }
+        lua_setfield(L, -2, e->name);
+    }
+    return 1;
 }
 
 static void push_values(lua_State *L, const double *v, int n) {
@@ -658,7 +719,7 @@ void hl_open_scene(lua_State *L) {
         {"_state", l_state},     {"_material", l_material}, {"_curve", l_curve},       {"_add", l_add}, {"_mixture", l_mixture}, {"mixing_ratios", l_mixing_ratios},       {"_labels", l_labels},
         {"_collider", l_collider}, {"_advance", l_advance}, {"_step", l_step_raw},     {"push", l_push},
         {"cut", l_cut},          {"move", l_move},         {"collider_velocity", l_collider_velocity},
-        {"set_dt", l_set_dt},    {"oven", l_oven},    {"probe", l_probe},       {"line", l_line},          {"_slice", l_slice},
+        {"set_dt", l_set_dt}, {"settings", l_settings},    {"oven", l_oven},    {"probe", l_probe},       {"line", l_line},          {"_slice", l_slice},
         {"stats", l_stats},      {"_time", l_time},      {"body_particles", l_body_particles}, {"hash", l_hash},
         {"positions", l_positions}, {"volume", l_volume}, {"material_params", l_material_params}, {NULL, NULL}};
     luaL_newmetatable(L, HL_SCENE);
@@ -667,7 +728,7 @@ void hl_open_scene(lua_State *L) {
     luaL_newlib(L, methods);
     lua_setfield(L, -2, "__index");
     lua_pop(L, 1);
-    static const luaL_Reg fns[] = {{"scene_new", l_scene_new}, {"load", l_load}, {"material_check", l_material_check},
+    static const luaL_Reg fns[] = {{"scene_new", l_scene_new}, {"scene_settings", l_scene_settings}, {"load", l_load}, {"material_check", l_material_check},
                                    {NULL, NULL}};
     luaL_setfuncs(L, fns, 0);
 }

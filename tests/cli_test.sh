@@ -26,6 +26,23 @@ cli_help)
     "$hearth" --version | grep -q "material ABI" || fail "--version"
     for sub in demo bench plugins; do "$hearth" $sub --help >/dev/null || fail "$sub --help"; done
     ;;
+cli_help_scene)
+    # every setting of the schema is listed with its unit, default and range; --help points there
+    out=$("$hearth" help scene) || fail "hearth help scene failed"
+    "$hearth" doc lua | sed -n 's/^| `\([^`]*\)`.*/\1/p' >"$tmp/names"
+    [ "$(wc -l <"$tmp/names")" -gt 40 ] || fail "hearth doc lua lists too few settings: $(cat "$tmp/names")"
+    while read -r name; do
+        echo "$out" | grep -q "^  $name " || fail "hearth help scene lacks $name"
+    done <"$tmp/names"
+    echo "$out" | grep -qF "oven.beta          default 10 W/(m^2 K); valid [0, inf) W/(m^2 K)" || fail "oven.beta line: $out"
+    "$hearth" --help | grep -q "hearth help scene" || fail "--help does not point to hearth help scene"
+    "$hearth" help bogus 2>/dev/null
+    [ $? -eq 2 ] || fail "hearth help bogus: expected exit 2"
+    ;;
+settings_docs_current)
+    # the man page's and docs/lua.md's settings sections are what the schema prints now
+    "$here/../scripts/settings_docs" "$hearth" --check || fail "docs out of date with the settings schema (diff above)"
+    ;;
 cli_rheometer_mpm)
     # the MPM shear-cell mode as a user runs it: --json, the CSV with the measured rate, a bad mode named
     out=$(cd "$tmp" && "$hearth" rheometer sauce.mayo --mode mpm --rates 10:10:1 --json) || fail "rheometer --mode mpm exited $?"

@@ -389,6 +389,10 @@ lua_helpers)
     out=$("$hearth" run "$scenes/helpers.lua" --quiet 2>&1) || fail "helpers.lua: $out"
     echo "$out" | grep -q "helpers ok" || fail "helpers.lua did not finish: $out"
     ;;
+lua_settings_schema)
+    out=$("$hearth" run "$scenes/settings_schema.lua" --quiet 2>&1) || fail "settings_schema.lua: $out"
+    echo "$out" | grep -q "settings ok" || fail "settings_schema.lua did not finish: $out"
+    ;;
 lua_library)
     out=$("$hearth" run "$scenes/library.lua" --quiet 2>&1) || fail "library.lua: $out"
     echo "$out" | grep -q "library ok" || fail "library.lua did not finish: $out"

@@ -78,9 +78,24 @@ static void usage(FILE *f) {
             "  --metric NAME   what to measure at the end of a run: a metric the scene declares with\n"
             "                  h.metric(NAME, function(s) ... end), or a built-in: height, spread,\n"
             "                  centre_temperature, front, volume, water_lost\n"
-            "  --knob k=a,b,c  values to try. Scene settings: dx, ppc, cfl, dt_max, dim, solver (mpm|sph),\n"
-            "                  transfer (apic), heat (explicit|implicit), blend (nonlinear|linear for h.mix);\n"
-            "                  or any parameter the scene declares with h.params{...}\n"
+            "  --knob k=a,b,c  values to try: a parameter the scene declares with h.params{...}, ppc (every\n"
+            "                  s:add), or a scene setting (hearth help scene):");
+    /* the settings a knob may change: the schema's, so this list cannot drift from h.scene's */
+    int n = 0, col = 66;
+    const hearth_setting *set = hearth_scene_settings(&n);
+    for (int k = 0; k < n; k++) {
+        if (!set[k].knob) continue;
+        char item[128];
+        int len = snprintf(item, sizeof item, " %s", set[k].name);
+        for (int w = 0; set[k].words && set[k].words[w] && len < (int)sizeof item; w++)
+            len += snprintf(item + len, sizeof item - (size_t)len, "%s%s", w ? "|" : " (", set[k].words[w]);
+        if (set[k].words && len < (int)sizeof item) len += snprintf(item + len, sizeof item - (size_t)len, ")");
+        if (col + len > 100) fprintf(f, "\n                 "), col = 17;
+        fputs(item, f);
+        col += len;
+    }
+    fprintf(f,
+            "\n"
             "  --reference R   finest (default): each series' run with the smallest refinement knob (dx, else\n"
             "                  dt_max, cfl, ppc; among equals the one with most steps), or\n"
             "                  analytic:EXPR, a Lua expression with math.* and the run's knobs as variables\n"

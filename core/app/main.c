@@ -33,6 +33,8 @@ static void usage(FILE *f) {
             "                                run a scene over a ladder of settings: cost, error and order of each\n"
             "  hearth bench [--threads N] [--cells N] [--steps N] [--dim 2|3]\n"
             "                                throughput of a standard elastic block, as JSON\n"
+            "  hearth help scene             every h.scene{...} setting: unit, default, range, help\n"
+            "  hearth doc man|lua            print the generated settings sections of docs/hearth.1, docs/lua.md\n"
             "  hearth --help | --version\n"
             "\n"
             "Plugins are searched in the build's plugin folder, the install folder,\n"
@@ -65,6 +67,7 @@ int main(int argc, char **argv) {
     crash_install(-1);
     if (argc < 2) return cmd_dashboard(argc, argv);
     const char *c = argv[1];
+    if (!strcmp(c, "help") && argc >= 3) return cmd_help(argc - 1, argv + 1); /* hearth help scene */
     if (!strcmp(c, "--help") || !strcmp(c, "-h") || !strcmp(c, "help")) {
         usage(stdout);
         return 0;
@@ -91,6 +94,7 @@ int main(int argc, char **argv) {
     if (!strcmp(c, "rheometer")) return cmd_rheometer(argc - 1, argv + 1);
     if (!strcmp(c, "fit")) return cmd_fit(argc - 1, argv + 1);
     if (!strcmp(c, "trade")) return cmd_trade(argc - 1, argv + 1);
+    if (!strcmp(c, "doc")) return cmd_doc(argc - 1, argv + 1);
     if (strlen(c) > 4 && !strcmp(c + strlen(c) - 4, ".lua")) return cmd_dashboard(argc, argv);
     fprintf(stderr, "hearth: unknown command '%s'\n\n", c);
     usage(stderr);

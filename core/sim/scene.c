@@ -12,6 +12,7 @@
 #include "error.h"
 #include "params.h"
 #include "scene.h"
+#include "settings.h"
 #include "sph.h"
 #include "thermal.h"
 #include "water.h"
@@ -43,32 +44,9 @@ int hearth_get_threads(void) {
 /* ---- definition ------------------------------------------------------ */
 
 hearth_scene_def hearth_default_scene_def(void) {
-    return (hearth_scene_def){
-        .dim = 2,
-        .dx = 0.01,
-        .lo = {0, 0, 0},
-        .hi = {1, 1, 1},
-        .gravity = {0, -9.81, 0},
-        .cfl = 0.5,
-        .dt_max = 0,
-        .wall = HEARTH_SLIP,
-        .wall_friction = 0,
-        .guard = HEARTH_GUARD_STOP,
-        .max_rollbacks = 8,
-        .energy_growth = 10,
-        .seed = 1,
-        .oven_temperature = NAN,
-        .oven_beta = 0,
-        .heat_implicit = 0,
-        .heat_flip = 1,
-        /* ---- SPH (sph.c) ---- */
-        .solver = HEARTH_SOLVER_MPM,
-        .sph = {.h_factor = 2.4, .leapfrog = 0, .gamma = 7, .av_beta = 0, .surface_tension = 0,
-                .surface_threshold = 0.75, .alpha_c = 0, .beta_c = 1, .xsph0 = 0, .xsph_f = 0, .xsph_T0 = 26,
-                .xsph_Tf = 120, .heat_ext = 0, .heat_int = 0, .adaptive_h = 0, .k_g = 1, .eps_g = 0.5,
-                .bubble_T0 = 26, .dt_viscous = 0.125, .dt_force = 0.25, .periodic = {0, 0, 0}, .tension = 0,
-                .artificial_stress = 0},
-    };
+    hearth_scene_def d;
+    settings_defaults(&d); /* settings.c's table is the one list of defaults */
+    return d;
 }
 
 hearth_collider_def hearth_default_collider_def(void) {
@@ -76,9 +54,10 @@ hearth_collider_def hearth_default_collider_def(void) {
 }
 
 static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
-    if (d->dim != 2 && d->dim != 3) return err_set(err, HEARTH_ERR_PARAM, "scene: dim = %d; valid values are 2 and 3", d->dim);
-    if (!(d->dx > 0) || !isfinite(d->dx))
-        return err_set(err, HEARTH_ERR_PARAM, "scene: dx = %g m; it must be finite and > 0", d->dx);
+    /* every setting's own range from settings.c's table (dim and dx first: the box is measured in dx);
+     * the SPH solver's only when it steps the scene */
+    hearth_status st = settings_check(d, "", "sph.", err);
+    if (st) return st;
     for (int k = 0; k < d->dim; k++) {
         if (!isfinite(d->lo[k]) || !isfinite(d->hi[k]))
             return err_set(err, HEARTH_ERR_PARAM, "scene: box axis %c spans [%g, %g] m; its edges must be finite",
@@ -89,34 +68,6 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
                            d->lo[k], d->hi[k], 6 * d->dx);
         if (!isfinite(d->gravity[k])) return err_set(err, HEARTH_ERR_PARAM, "scene: gravity[%d] is not finite", k);
     }
-    if (!(d->cfl > 0 && d->cfl <= 4))
-        return err_set(err, HEARTH_ERR_PARAM, "scene: cfl = %g; valid range (0, 4] (1 is the stability limit)", d->cfl);
-    if (!(d->dt_max >= 0) || !isfinite(d->dt_max))
-        return err_set(err, HEARTH_ERR_PARAM, "scene: dt_max = %g s; it must be >= 0 (0 = no limit)", d->dt_max);
-    if ((unsigned)d->wall > HEARTH_SEPARATE)
-        return err_set(err, HEARTH_ERR_PARAM, "scene: wall mode %d; valid: sticky, slip, separate", (int)d->wall);
-    if (!(d->wall_friction >= 0) || !isfinite(d->wall_friction))
-        return err_set(err, HEARTH_ERR_PARAM, "scene: wall friction = %g; valid range [0, inf)", d->wall_friction);
-    if ((unsigned)d->guard > HEARTH_GUARD_ROLLBACK)
-        return err_set(err, HEARTH_ERR_PARAM, "scene: guard policy %d; valid: stop, rollback", (int)d->guard);
-    if (d->max_rollbacks < 0 || d->max_rollbacks > 60)
-        return err_set(err, HEARTH_ERR_PARAM, "scene: max_rollbacks = %d; valid range [0, 60]", d->max_rollbacks);
-    if (!isnan(d->oven_temperature) && !(d->oven_temperature >= -273.15 && d->oven_temperature <= 5000))
-        return err_set(err, HEARTH_ERR_PARAM, "scene: oven temperature = %g degrees C; valid range [-273.15, 5000]",
-                       d->oven_temperature);
-    if (!(d->oven_beta >= 0) || !isfinite(d->oven_beta))
-        return err_set(err, HEARTH_ERR_PARAM, "scene: oven beta = %g W/(m^2 K); valid range [0, inf)", d->oven_beta);
-    if (d->transfer != 0 && d->transfer != 1)
-        return err_set(err, HEARTH_ERR_PARAM, "scene: transfer = %d; valid: 0 (APIC), 1 (PIC)", d->transfer);
-    if (!(d->heat_flip >= 0 && d->heat_flip <= 1))
-        return err_set(err, HEARTH_ERR_PARAM, "scene: heat_flip = %g; valid range [0, 1] (1 FLIP, 0 PIC)", d->heat_flip);
-    if (d->heat_implicit != 0 && d->heat_implicit != 1)
-        return err_set(err, HEARTH_ERR_PARAM, "scene: heat = %d; valid: 0 (explicit), 1 (implicit)", d->heat_implicit);
-    if (!(d->energy_growth > 1))
-        return err_set(err, HEARTH_ERR_PARAM, "scene: energy_growth = %g; it must be > 1", d->energy_growth);
-    /* ---- SPH (sph.c) ---- */
-    if (d->solver != HEARTH_SOLVER_MPM && d->solver != HEARTH_SOLVER_SPH)
-        return err_set(err, HEARTH_ERR_PARAM, "scene: solver = %d; valid: 0 (mpm), 1 (sph)", d->solver);
     if (d->solver == HEARTH_SOLVER_SPH) return sph_check_def(d, err);
     return HEARTH_OK;
 }

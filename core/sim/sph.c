@@ -24,6 +24,7 @@
  * order, so a step is deterministic for any thread count. */
 #include "plugins.h"
 #include "sph.h"
+#include "settings.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -56,41 +57,12 @@ struct sph_state {
 
 hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
     const hearth_sph_def *o = &d->sph;
-#define RANGE(f, lo, hi, unit)                                                                                         \
-    if (!(o->f >= (lo) && o->f <= (hi)))                                                                               \
-    return err_set(err, HEARTH_ERR_PARAM, "scene: sph.%s = %g; valid: %g to %g%s", #f, (double)o->f, (double)(lo),    \
-                   (double)(hi), unit)
-    RANGE(h_factor, 1.0, 6.0, "");
-    RANGE(gamma, 1.0, 15.0, "");
-    RANGE(av_beta, 0.0, 100.0, "");
-    RANGE(surface_tension, 0.0, 1e6, " N/m");
-    RANGE(surface_threshold, 0.0, 10.0, "");
-    RANGE(alpha_c, 0.0, 1.0, "");
-    RANGE(beta_c, 0.0, 1.0, "");
-    /* XSPH moves a particle toward its neighbours' mean velocity by epsilon
-     * times the difference: above 1 it overshoots and grows (Table 4.1 lists
-     * 5, the text of §4.3 uses 0.5) */
-    RANGE(xsph0, 0.0, 1.0, " (above 1 XSPH overshoots the neighbours' mean velocity)");
-    RANGE(xsph_f, 0.0, 1.0, " (above 1 XSPH overshoots the neighbours' mean velocity)");
-    RANGE(heat_ext, 0.0, 1e12, "");
-    RANGE(heat_int, 0.0, 1e6, " m^2/s");
-    RANGE(k_g, 0.1, 10.0, "");
-    RANGE(eps_g, 0.0, 1.0, "");
-    RANGE(bubble_T0, -273.0, 5000.0, " degC");
-    RANGE(dt_viscous, 1e-6, 1.0, "");
-    RANGE(dt_force, 1e-6, 1.0, "");
-    RANGE(artificial_stress, 0.0, 1.0, " (Monaghan's epsilon; 0.2-0.3 is usual)");
-#undef RANGE
+    /* each option's range (flags 0 or 1), unit and help: settings.c's table; here the rules between options */
+    hearth_status st = settings_check(d, "sph.", NULL, err);
+    if (st) return st;
     if (!(o->xsph_Tf > o->xsph_T0))
         return err_set(err, HEARTH_ERR_PARAM, "scene: sph.xsph_Tf = %g degC must be above sph.xsph_T0 = %g degC",
                        o->xsph_Tf, o->xsph_T0);
-    if (o->leapfrog != 0 && o->leapfrog != 1)
-        return err_set(err, HEARTH_ERR_PARAM, "scene: sph.leapfrog = %d; valid: 0 (symplectic Euler), 1 (leapfrog)",
-                       o->leapfrog);
-    if (o->tension != 0 && o->tension != 1)
-        return err_set(err, HEARTH_ERR_PARAM, "scene: sph.tension = %d; valid: 0 (clamp negative pressure), 1", o->tension);
-    if (o->adaptive_h != 0 && o->adaptive_h != 1)
-        return err_set(err, HEARTH_ERR_PARAM, "scene: sph.adaptive_h = %d; valid: 0, 1", o->adaptive_h);
     return HEARTH_OK;
 }
 

@@ -84,11 +84,21 @@ end
 
 local function is_shape(v) return type(v) == "userdata" and tostring(v):sub(1, 12) == "hearth.shape" end
 
+-- The scene's and solvers' settings: the core's one schema (core/sim/settings.c,
+-- hearth_scene_settings), read here at run time. h.scene's keys, checks,
+-- defaults and suggestions and --set's knobs all come from it.
+local scene_settings = core.scene_settings()
+local scene_setting = {}
+for _, e in ipairs(scene_settings) do scene_setting[e.name] = e end
+h._scene_settings = scene_settings
+
 --- Scene settings `--set` may override when the scene's h.params does not
 --- declare the name itself (so `hearth trade --knob dx=...` works on any scene):
---- the h.scene keys below, and ppc (every s:add) and blend (h.mix).
-local scene_knobs = { dx = true, cfl = true, dt_max = true, dim = true, heat = true, solver = true, guard = true,
-  max_rollbacks = true, ppc = true, transfer = true, heat_flip = true, blend = true }
+--- the h.scene settings the schema marks as knobs, and ppc (every s:add).
+local scene_knobs = { ppc = true }
+for _, e in ipairs(scene_settings) do
+  if e.knob then scene_knobs[e.name] = true end
+end
 h._scene_knobs = scene_knobs
 
 -- The --set values meant for scene settings (not declared by h.params), as strings.
@@ -116,7 +126,7 @@ h._check = { keys = check_keys, number = check_number, choice = check_choice, ve
 -- pairs() still sees only parameters): a scene whose blend mode is "linear"
 -- or "labels" rebuilds the material from them (see material_id).
 local mix_mt = { __name = "hearth.mix" }
-local blend_modes = { "nonlinear", "linear", "labels" }
+local blend_modes = scene_setting.blend.words
 
 local function mix_info(t)
   local mt = type(t) == "table" and getmetatable(t)
@@ -352,24 +362,63 @@ end
 -- ---- scenes -----------------------------------------------------------------
 
 local S = core.scene_methods
-local scene_keys = { dim = true, dx = true, box = true, solver = true, gravity = true, cfl = true, dt_max = true,
-  wall = true, friction = true, guard = true, max_rollbacks = true, seed = true, name = true, oven = true, heat = true,
-  water_momentum = true, blend = true, mixing = true, transfer = true, heat_flip = true,
-  sph = true }
--- h.scene{solver = "sph", sph = {...}}: numbers (ranges are checked by the core) and flags (booleans)
-local sph_number_keys = { h_factor = true, gamma = true, av_beta = true, surface_tension = true,
-  surface_threshold = true, alpha_c = true, beta_c = true, xsph0 = true, xsph_f = true, xsph_T0 = true, xsph_Tf = true,
-  heat_ext = true, heat_int = true, k_g = true, eps_g = true, bubble_T0 = true, dt_viscous = true, dt_force = true,
-  artificial_stress = true }
-local sph_flag_keys = { leapfrog = true, adaptive_h = true, tension = true, periodic_x = true, periodic_y = true,
-  periodic_z = true }
+-- h.scene's keys: a setting "oven.beta" is the key beta of the sub-table oven
+local scene_keys, scene_subkeys = {}, {}
+for _, e in ipairs(scene_settings) do
+  local top, sub = e.name:match("^([^.]+)%.(.+)$")
+  if top then
+    scene_keys[top] = true
+    scene_subkeys[top] = scene_subkeys[top] or {}
+    scene_subkeys[top][sub] = true
+  else
+    scene_keys[e.name] = true
+  end
+end
 local contact = { "sticky", "slip", "separate", "grip" }
 
---- A scene: h.scene{dim = 2, dx = 0.01, box = {{0,0},{1,1}}, gravity = {0,-9.81}, ...}
--- The scene settings that take a word: h.scene checks them and so does --set.
-local scene_choices = { heat = { "explicit", "implicit" }, solver = { "mpm", "sph" }, guard = { "stop", "rollback" },
-  transfer = { "apic", "pic" } }
+-- a number as a person writes it: 4, not 4.0; inf for no bound
+local function num_text(x)
+  if x == math.huge then return "inf" end
+  if x == math.floor(x) and math.abs(x) < 2 ^ 53 then return ("%d"):format(x) end
+  return ("%.14g"):format(x)
+end
 
+local function range_text(e)
+  local unit = (e.unit ~= "" and e.unit ~= "1") and (" " .. e.unit) or ""
+  return ("%s%s, %s%s%s"):format(e.min_open and "(" or "[", num_text(e.min), num_text(e.max),
+    e.max == math.huge and ")" or "]", unit)
+end
+
+-- Setting e's value v from h.scene's table, checked against the schema;
+-- returns what core.scene_new takes (a number, a word's index, a boolean, a
+-- vector, {lo=, hi=} for the box). Errors point at the scene's line.
+local function check_setting(e, v)
+  local what = "h.scene: " .. e.name
+  if e.kind == "real" or e.kind == "int" or e.kind == "seed" then
+    local bad = type(v) ~= "number" or v ~= v or v == math.huge or v == -math.huge
+      or (e.min_open and not (v > e.min) or v < e.min) or v > e.max
+      or (e.kind ~= "real" and v ~= math.floor(v))
+    if bad then
+      error(("%s = %s; valid range %s%s (%s)"):format(what, tostring(v), range_text(e),
+        e.kind ~= "real" and ", whole numbers" or "", e.help), 3)
+    end
+    return v
+  elseif e.kind == "flag" then
+    if type(v) ~= "boolean" then error(("%s must be true or false, got %s (%s)"):format(what, type(v), e.help), 3) end
+    return v
+  elseif e.kind == "choice" then
+    return check_choice(type(v) == "string" and v:lower() or v, what, e.words, 4)
+  elseif e.kind == "vector" then
+    return check_vec(v, what, 4)
+  elseif e.kind == "box" then
+    if type(v) ~= "table" or #v ~= 2 then error(what .. " = {{lo}, {hi}}", 3) end
+    return { lo = check_vec(v[1], what .. "[1]", 4), hi = check_vec(v[2], what .. "[2]", 4) }
+  end
+  return v
+end
+
+--- A scene: h.scene{dim = 2, dx = 0.01, box = {{0,0},{1,1}}, gravity = {0,-9.81}, ...}
+--- (`hearth help scene` lists every setting; docs/lua.md too)
 function h.scene(o)
   o = o or {}
   if type(o) ~= "table" then error("h.scene: expected a table", 2) end
@@ -380,21 +429,29 @@ function h.scene(o)
     end
   end
   check_keys(o, scene_keys, "h.scene")
+  for top, keys in pairs(scene_subkeys) do
+    if o[top] ~= nil then
+      if type(o[top]) ~= "table" then
+        error(("h.scene: %s = {%s = ..., ...}"):format(top, table.concat(sorted_keys(keys), " = ..., ")), 2)
+      end
+      check_keys(o[top], keys, "h.scene: " .. top)
+    end
+  end
   local ks = knob_sets()
   if next(ks) then -- --set dx=... and friends replace what the scene file says
     local oo = {}
     for k, v in pairs(o) do oo[k] = v end
-    for _, k in ipairs { "dx", "cfl", "dt_max", "dim", "max_rollbacks", "heat_flip" } do
-      if ks[k] then oo[k] = knob_number(k, ks[k]) end
-    end
-    for _, k in ipairs { "heat", "solver", "guard", "transfer" } do
-      if ks[k] then
-        local ok = false
-        for _, c in ipairs(scene_choices[k]) do ok = ok or ks[k]:lower() == c end
-        if not ok then
-          usage_error(("--set %s=%s: valid: %s"):format(k, ks[k], table.concat(scene_choices[k], ", ")), 2)
+    for _, e in ipairs(scene_settings) do
+      local v = ks[e.name]
+      if v and not e.lua_only then -- blend is h.mix's
+        if e.kind == "choice" then
+          local ok = false
+          for _, c in ipairs(e.words) do ok = ok or v:lower() == c end
+          if not ok then usage_error(("--set %s=%s: valid: %s"):format(e.name, v, table.concat(e.words, ", ")), 2) end
+          oo[e.name] = v
+        else
+          oo[e.name] = knob_number(e.name, v)
         end
-        oo[k] = ks[k]
       end
     end
     if oo.dim == 3 and oo.box and not ((oo.box[2][3] or 0) > (oo.box[1][3] or 0)) then
@@ -402,69 +459,38 @@ function h.scene(o)
     end
     o = oo
   end
-  local dim = o.dim or 2
-  if dim ~= 2 and dim ~= 3 then error(("h.scene: dim = %s; valid: 2, 3"):format(tostring(dim)), 2) end
-  local solver = check_choice(o.solver or "mpm", "h.scene: solver", scene_choices.solver)
-  local sph
-  if o.sph ~= nil then
-    if type(o.sph) ~= "table" then error("h.scene: sph = {h_factor = 2.4, xsph0 = 0.05, ...}", 2) end
-    if solver ~= 1 then error("h.scene: sph = {...} needs solver = \"sph\"", 2) end
-    local all = {}
-    for k in pairs(sph_number_keys) do all[k] = true end
-    for k in pairs(sph_flag_keys) do all[k] = true end
-    check_keys(o.sph, all, "h.scene: sph")
-    sph = {}
-    for k, v in pairs(o.sph) do
-      if sph_number_keys[k] and type(v) ~= "number" then
-        error(("h.scene: sph.%s must be a number, got %s"):format(k, type(v)), 2)
-      elseif sph_flag_keys[k] and type(v) ~= "boolean" then
-        error(("h.scene: sph.%s must be true or false, got %s"):format(k, type(v)), 2)
-      end
-      sph[k] = v
+  -- every setting, in the schema's order: the given value checked, or the default
+  local def, lua_side = {}, {}
+  for _, e in ipairs(scene_settings) do
+    local top, sub = e.name:match("^([^.]+)%.(.+)$")
+    local v
+    if top then v = o[top] and o[top][sub] else v = o[e.name] end
+    if v == nil and e.nan_ok and top and o[top] ~= nil then
+      -- a sub-table's unset-able setting is its reason to be there (oven = {...} needs its temperature)
+      error(("h.scene: %s = nil; valid range %s (%s)"):format(e.name, range_text(e), e.help), 2)
+    end
+    if v ~= nil then
+      v = check_setting(e, v)
+      if e.lua_only then lua_side[e.name] = v else def[e.name] = v end
+    elseif e.lua_only then
+      lua_side[e.name] = e.kind == "choice" and check_choice(e.default, e.name, e.words) or e.default
     end
   end
-  local box = o.box or { { 0, 0, 0 }, { 1, 1, 1 } }
-  if type(box) ~= "table" or #box ~= 2 then error("h.scene: box = {{lo}, {hi}}", 2) end
-  local def = {
-    dim = dim,
-    dx = check_number(o.dx or 0.01, "h.scene: dx", 1e-6, 1e3, "m"),
-    lo = check_vec(box[1], "h.scene: box[1]"), hi = check_vec(box[2], "h.scene: box[2]"),
-    gravity = check_vec(o.gravity or { 0, -9.81, 0 }, "h.scene: gravity"),
-    cfl = check_number(o.cfl or 0.5, "h.scene: cfl", 1e-6, 4),
-    dt_max = check_number(o.dt_max or 0, "h.scene: dt_max", 0, 1e6, "s"),
-    wall = check_choice(o.wall or "slip", "h.scene: wall", { "sticky", "slip", "separate" }),
-    friction = check_number(o.friction or 0, "h.scene: friction", 0, 1e6),
-    guard = check_choice(o.guard or "stop", "h.scene: guard", scene_choices.guard),
-    max_rollbacks = check_number(o.max_rollbacks or 8, "h.scene: max_rollbacks", 0, 60),
-    seed = check_number(o.seed or 1, "h.scene: seed", 0, 2 ^ 52),
-    heat_implicit = check_choice(o.heat or "explicit", "h.scene: heat", scene_choices.heat),
-    -- momentum transfer: APIC (Jiang et al. 2015) or PIC; temperature: FLIP (eq. 21) blended towards PIC
-    transfer = check_choice(o.transfer and tostring(o.transfer):lower() or "apic", "h.scene: transfer", scene_choices.transfer),
-    heat_flip = check_number(o.heat_flip or 1, "h.scene: heat_flip", 0, 1, "(1 FLIP, 0 PIC)"),
-    oven_beta = 0,
-    water_momentum = o.water_momentum and 1 or 0,
-    solver = solver, sph = sph,
-  }
-  if o.oven ~= nil then
-    if type(o.oven) ~= "table" then error("h.scene: oven = {temperature = degC, beta = W/(m^2 K)}", 2) end
-    check_keys(o.oven, { temperature = true, beta = true }, "h.scene: oven")
-    def.oven_temperature = check_number(o.oven.temperature, "h.scene: oven.temperature", -273.15, 5000, "degC")
-    def.oven_beta = check_number(o.oven.beta or 10, "h.scene: oven.beta", 0, 1e9, "W/(m^2 K)")
-  end
-  if dim == 2 then def.lo[3], def.hi[3] = 0, 0 end
+  if o.sph ~= nil and def.solver ~= 1 then error("h.scene: sph = {...} needs solver = \"sph\"", 2) end
+  local dim = def.dim or scene_setting.dim.default
   local ok, s = pcall(core.scene_new, def)
   if not ok then error(s, 2) end
   local st = s:_state()
-  st.events, st.mats, st.name, st.frame, st.dim = {}, {}, o.name, 0, dim
+  st.events, st.mats, st.name, st.frame, st.dim = {}, {}, lua_side.name, 0, dim
   -- how bodies made of h.mix{...} materials are simulated (Nagasawa et al. Figs. 1, 9, 10):
   -- "nonlinear" the blend model, "linear" linearly blended parameters, "labels" random binary labels
-  st.blend = blend_modes[check_choice(o.blend or "nonlinear", "h.scene: blend", blend_modes) + 1]
+  st.blend = blend_modes[lua_side.blend + 1]
   -- mixing = "dynamic": h.mix bodies share one mixture whose ratios follow the particles (Nagasawa et al. eq. 43-44)
-  st.mixing = ({ "fixed", "dynamic" })[check_choice(o.mixing or "fixed", "h.scene: mixing", { "fixed", "dynamic" }) + 1]
+  st.mixing = scene_setting.mixing.words[lua_side.mixing + 1]
   if st.mixing == "dynamic" and st.blend ~= "nonlinear" then
     error(('h.scene: mixing = "dynamic" blends through the model; it needs blend = "nonlinear" (got "%s")'):format(st.blend), 2)
   end
-  st.seed = def.seed
+  st.seed = def.seed or scene_setting.seed.default
   h._last_scene = s
   return s
 end

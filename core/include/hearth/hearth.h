@@ -173,7 +173,8 @@ typedef enum hearth_solver {
 } hearth_solver;
 
 /// Options of the SPH solver (used when solver = HEARTH_SOLVER_SPH). Equation
-/// numbers are Rodriguez-Arenas 2011. Start from hearth_default_scene_def().
+/// numbers are Rodriguez-Arenas 2011. Start from hearth_default_scene_def();
+/// ranges and defaults are the sph.* rows of hearth_scene_settings().
 typedef struct hearth_sph_def {
     double h_factor;       ///< smoothing length h (kernel support radius) over the particle spacing V0^(1/dim); default 2.4 (lattice sum of W V within 1e-3 of 1)
     int leapfrog;          ///< 0: symplectic Euler (eq. 3.57-3.58); 1: leapfrog drift-kick-drift (§3.6)
@@ -196,6 +197,8 @@ typedef struct hearth_sph_def {
     double artificial_stress; ///< Monaghan's epsilon (2000) against the tensile instability, 0..1 (0.2-0.3 usual); default 0 = off (it also resists a cooling bubble's contraction)
 } hearth_sph_def;
 
+/// A scene's settings. Each field is one row of hearth_scene_settings(), which
+/// gives its Lua name, unit, default, valid range and help (`hearth help scene`).
 typedef struct hearth_scene_def {
     int dim;              ///< 2 (plane strain) or 3
     double dx;            ///< grid spacing (m)
@@ -219,10 +222,50 @@ typedef struct hearth_scene_def {
     hearth_sph_def sph;      ///< SPH options (solver = HEARTH_SOLVER_SPH)
 } hearth_scene_def;
 
-/// Defaults: 2D, dx 0.01, box [0,1]^3, gravity (0,-9.81,0), cfl 0.5, slip walls,
-/// no friction, guard stops, 8 rollbacks, energy growth 10, seed 1, no oven, explicit heat,
-/// no water momentum. An oven makes the temperature field live.
+/// Defaults: those of hearth_scene_settings() (2D, dx 0.01, box [0,1]^3, gravity
+/// (0,-9.81,0), cfl 0.5, slip walls, no friction, guard stops, 8 rollbacks, energy
+/// growth 10, seed 1, no oven (its beta 10 once there is one), explicit heat, no water
+/// momentum, APIC, MPM). An oven makes the temperature field live.
 hearth_scene_def hearth_default_scene_def(void);
+
+/// How a scene setting's value is written.
+typedef enum hearth_setting_kind {
+    HEARTH_SETTING_REAL = 0, ///< a finite double in [min, max] (min excluded when min_open); NaN too when nan_ok
+    HEARTH_SETTING_INT,      ///< a whole number in [min, max], stored as int
+    HEARTH_SETTING_SEED,     ///< a whole number in [min, max], stored as uint64_t
+    HEARTH_SETTING_FLAG,     ///< 0 or 1 (true or false in Lua), stored as int
+    HEARTH_SETTING_CHOICE,   ///< one of words[] (Lua spells the word; C stores its index as int or an enum)
+    HEARTH_SETTING_VECTOR,   ///< 3 finite doubles (vec_def), a {x, y[, z]} table in Lua
+    HEARTH_SETTING_BOX,      ///< lo and hi, 3 doubles each (vec_def holds 6), {{lo}, {hi}} in Lua
+    HEARTH_SETTING_TEXT      ///< a string (Lua only)
+} hearth_setting_kind;
+
+/// One scene or solver setting: the one description the C defaults and range
+/// checks, the Lua binding's h.scene{...}, `hearth help scene`, the man page and
+/// docs/lua.md all derive from. Static storage.
+typedef struct hearth_setting {
+    const char *name;  ///< as Lua spells it: "dx", "oven.beta", "sph.h_factor" (a dot: a key of a sub-table)
+    hearth_setting_kind kind;
+    const char *unit;  ///< SI unit, "1" for dimensionless, "" for words, flags and text
+    const char *help;  ///< one line
+    double def;        ///< default (REAL, INT, SEED, FLAG; CHOICE: the word's index); NaN = unset (nan_ok)
+    double min, max;   ///< valid range (REAL, INT, SEED); max may be HUGE_VAL
+    int min_open;      ///< 1: the value must be > min
+    int nan_ok;        ///< 1: NaN is valid and means "none" (oven.temperature: no oven)
+    const char *const *words; ///< CHOICE: the words, NULL-terminated; the value is the index
+    const double *vec_def;    ///< VECTOR (3) and BOX (6: lo then hi) defaults; NULL otherwise
+    long offset;       ///< byte offset of the value in hearth_scene_def, -1 when only the Lua binding keeps it
+    long offset2;      ///< BOX: offset of hi (offset is lo); -1 otherwise
+    const char *field; ///< the hearth_scene_def field ("oven_beta", "sph.h_factor"), or "" for Lua-only
+    int knob;          ///< 1: `hearth run --set NAME=V` may change it in any scene (and `hearth trade --knob`)
+} hearth_setting;
+
+/// The scene's and solvers' settings, in the order they are documented (count in
+/// *n). hearth_default_scene_def() fills from it and hearth_scene_create checks
+/// every setting with an offset against it.
+const hearth_setting *hearth_scene_settings(int *n);
+/// The setting called name (as Lua spells it), or NULL.
+const hearth_setting *hearth_scene_setting(const char *name);
 hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err);
 void hearth_scene_destroy(hearth_scene *s);
 const hearth_scene_def *hearth_scene_get_def(const hearth_scene *s);
