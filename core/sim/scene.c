@@ -12,7 +12,7 @@
 #include "error.h"
 #include "params.h"
 #include "scene.h"
-#include "sph.h"
+#include "solver.h"
 #include "thermal.h"
 #include "water.h"
 #include "mixing.h"
@@ -114,11 +114,10 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
         return err_set(err, HEARTH_ERR_PARAM, "scene: heat = %d; valid: 0 (explicit), 1 (implicit)", d->heat_implicit);
     if (!(d->energy_growth > 1))
         return err_set(err, HEARTH_ERR_PARAM, "scene: energy_growth = %g; it must be > 1", d->energy_growth);
-    /* ---- SPH (sph.c) ---- */
-    if (d->solver != HEARTH_SOLVER_MPM && d->solver != HEARTH_SOLVER_SPH)
-        return err_set(err, HEARTH_ERR_PARAM, "scene: solver = %d; valid: 0 (mpm), 1 (sph)", d->solver);
-    if (d->solver == HEARTH_SOLVER_SPH) return sph_check_def(d, err);
-    return HEARTH_OK;
+    /* ---- the solver's own options (solver.h) ---- */
+    const solver *sv = solver_of(d->solver);
+    if (!sv) return err_set(err, HEARTH_ERR_PARAM, "scene: solver = %d; valid: 0 (mpm), 1 (sph)", d->solver);
+    return sv->check ? sv->check(d, err) : HEARTH_OK;
 }
 
 /* ---- memory estimates ------------------------------------------------ */
@@ -181,6 +180,7 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
         return NULL;
     }
     s->def = d;
+    s->solver = solver_of(d.solver); /* check_def refused any other */
     s->dt_scale = 1.0;
     s->mix_mat = -1;
     s->rng = d.seed ? d.seed : 1;
@@ -243,7 +243,7 @@ void hearth_scene_destroy(hearth_scene *s) {
     mem_free(s->bnd_blocks, (size_t)s->bnd_blocks_cap);
     mem_free(s->mix_nodes, sizeof(double) * s->mix_cap);
     mem_free(s->mark, (size_t)s->g.nblocks);
-    sph_free(s->sph); /* SPH (sph.c) */
+    if (s->solver->free) s->solver->free(s);
     grid_free(&s->g);
     mem_free(s, sizeof *s);
 }
@@ -395,6 +395,7 @@ int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *c
         }
     }
     s->nmat++;
+    if (s->solver->material_added && s->solver->material_added(s, s->nmat - 1, err)) return -1;
     /* leavening needs the gas column, and the reaction needs temperature */
     if (core[CP_GAS_RATE] > 0 &&
         (particles_enable(&s->ps, PC_GAS, err) || scene_enable_temperature(s, err))) return -1;
@@ -415,17 +416,6 @@ const double *hearth_scene_material_params(const hearth_scene *s, int mat) {
 
 /* ---- particles ------------------------------------------------------- */
 
-static void valid_region(const hearth_scene *s, double lo[3], double hi[3]) {
-    if (s->def.solver == HEARTH_SOLVER_SPH) { /* SPH (sph.c): no grid margin, the whole box */
-        for (int d = 0; d < 3; d++) lo[d] = s->def.lo[d], hi[d] = s->def.hi[d];
-        return;
-    }
-    for (int d = 0; d < 3; d++) {
-        lo[d] = d < s->def.dim ? s->g.lo[d] + s->g.dx : 0;
-        hi[d] = d < s->def.dim ? s->g.lo[d] + (s->g.nn[d] - 2) * s->g.dx : 0;
-    }
-}
-
 int hearth_scene_add_particles(hearth_scene *s, int material, int n, const double *x, const double *v, double volume,
                                hearth_error *err) {
     err_clear(err);
@@ -443,7 +433,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
     }
     if (scene_check_particle_budget(s, n, "add particles", err)) return -1;
     double lo[3], hi[3];
-    valid_region(s, lo, hi);
+    s->solver->region(s, lo, hi);
     for (int i = 0; i < n; i++)
         for (int d = 0; d < s->def.dim; d++) {
             double xd = x[3 * i + d];
@@ -547,7 +537,7 @@ int hearth_scene_seed_shape(hearth_scene *s, int material, const hearth_shape *s
     if (k < 1) k = 1;
     double blo[3], bhi[3], lo[3], hi[3];
     hearth_shape_bounds(shape, blo, bhi);
-    valid_region(s, lo, hi);
+    s->solver->region(s, lo, hi);
     long cells[3] = {1, 1, 1};
     int c0[3] = {0, 0, 0};
     const double dx = s->def.dx, h = dx / k;
@@ -639,21 +629,7 @@ void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void 
 
 /* ---- stepping -------------------------------------------------------- */
 
-double scene_stable_dt(const hearth_scene *s) {
-    if (s->def.solver == HEARTH_SOLVER_SPH) return sph_stable_dt(s); /* SPH (sph.c) */
-    /* the tightest of: motion and waves (CFL), the user's maximum, explicit conduction */
-    const double sp = s->max_speed + s->c_max;
-    double dt = sp > 0 ? s->def.cfl * s->def.dx / sp : INFINITY;
-    if (s->def.dt_max > 0 && dt > s->def.dt_max) dt = s->def.dt_max;
-    const double heat = thermal_dt_limit(s), water = water_dt_limit(s);
-    if (dt > heat) dt = heat;
-    if (dt > water) dt = water;
-    /* explicit viscosity is diffusion of momentum: the same limit as explicit heat */
-    if (s->nu_max > 0 && dt > s->def.dx * s->def.dx / (2.0 * s->def.dim * s->nu_max))
-        dt = s->def.dx * s->def.dx / (2.0 * s->def.dim * s->nu_max);
-    if (isinf(dt)) dt = s->def.cfl * s->def.dx; /* nothing moves or conducts: as if at 1 m/s */
-    return dt * s->dt_scale;
-}
+double scene_stable_dt(const hearth_scene *s) { return s->solver->stable_dt(s); }
 
 void scene_refresh_wave_speed(hearth_scene *s) {
     const particles *ps = &s->ps;
@@ -689,8 +665,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             collider_update_bounds(&s->cols[c], 2.0 * s->def.dx);
         }
         step_report rep;
-        hearth_status st = s->def.solver == HEARTH_SOLVER_SPH ? sph_step(s, dt, &rep, err) /* SPH (sph.c) */
-                                                               : mpm_step(s, dt, &rep, err);
+        hearth_status st = s->solver->step(s, dt, &rep, err);
         if (st) return st;
         if (!guard_check(s, &rep, dt, speed_before)) {
             s->t += dt;

@@ -23,6 +23,7 @@
  * Every particle writes only its own slots and sums its neighbours in list
  * order, so a step is deterministic for any thread count. */
 #include "plugins.h"
+#include "solver.h"
 #include "sph.h"
 
 #include <math.h>
@@ -100,7 +101,8 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(brown, 1) X(surf, 1) X(rhof, 1)       \
         X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9)
 
-void sph_free(struct sph_state *st) {
+static void sph_free(hearth_scene *s) {
+    struct sph_state *st = s->sph;
     if (!st) return;
     sph_cells_free(&st->cells);
     sph_nlist_free(&st->nl);
@@ -111,6 +113,7 @@ void sph_free(struct sph_state *st) {
     mem_free(st->key, sizeof(int) * c);
     mem_free(st->order, sizeof(int) * c);
     mem_free(st, sizeof *st);
+    s->sph = NULL;
 }
 
 static hearth_status ensure(hearth_scene *s, int n, hearth_error *err) {
@@ -315,7 +318,7 @@ static void density(hearth_scene *s) {
 
 /* ---- the step ----------------------------------------------------------------- */
 
-hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err) {
+static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err) {
     particles *ps = &s->ps;
     const int n = ps->n, dim = s->def.dim;
     const hearth_sph_def *o = &s->def.sph;
@@ -798,7 +801,7 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     return HEARTH_OK;
 }
 
-double sph_stable_dt(const hearth_scene *s) {
+static double sph_stable_dt(const hearth_scene *s) {
     const hearth_sph_def *o = &s->def.sph;
     const particles *ps = &s->ps;
     const int dim = s->def.dim;
@@ -857,3 +860,22 @@ const double *sph_particle_values(const hearth_scene *s, const char *which) {
     if (!strcmp(which, "surface")) return st->surf;
     return NULL;
 }
+
+/* No grid, so no margin: particles may fill the whole box. */
+static void sph_region(const hearth_scene *s, double lo[3], double hi[3]) {
+    for (int d = 0; d < 3; d++) lo[d] = s->def.lo[d], hi[d] = s->def.hi[d];
+}
+
+const solver sph_solver = {
+    .name = "sph",
+    .check = sph_check_def,
+    .stable_dt = sph_stable_dt,
+    .step = sph_step,
+    .free = sph_free,
+    .region = sph_region,
+    .particle_values = sph_particle_values,
+    /* temperature from the heat field; no porosity (NaN) and no water */
+    .supplies = HEARTH_NEEDS_TEMPERATURE,
+    .outputs = SOLVER_OUT_BROWNING,
+    .can_checkpoint = 0, /* its options and final densities (eq. 3.52) are not in the format yet */
+};
