@@ -394,8 +394,11 @@ int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *c
             return -1;
         }
     }
+    if (s->solver->material_added && s->solver->material_added(s, s->nmat, err)) { /* before it counts */
+        mem_free(p, sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1));
+        return -1;
+    }
     s->nmat++;
-    if (s->solver->material_added && s->solver->material_added(s, s->nmat - 1, err)) return -1;
     /* leavening needs the gas column, and the reaction needs temperature */
     if (core[CP_GAS_RATE] > 0 &&
         (particles_enable(&s->ps, PC_GAS, err) || scene_enable_temperature(s, err))) return -1;

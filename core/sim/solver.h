@@ -25,9 +25,10 @@ typedef struct solver {
     /* The solver's own options in a scene definition; NULL when it has none.
      * Called by hearth_scene_create and every def change. */
     hearth_status (*check)(const hearth_scene_def *d, hearth_error *err);
-    /* Material `mat` was just added to s (its slot is filled and counted):
-     * resolve what the solver looks up per material once, here, rather than
-     * per particle per step. NULL when there is nothing to resolve. */
+    /* Material `mat` is being added to s (its slot s->mats[mat] is filled; it
+     * counts in s->nmat once this returns HEARTH_OK): resolve what the solver
+     * looks up per material once, here, rather than per particle per step.
+     * NULL when there is nothing to resolve. */
     hearth_status (*material_added)(hearth_scene *s, int mat, hearth_error *err);
     /* The stable step (s), scaled by s->dt_scale. */
     double (*stable_dt)(const hearth_scene *s);

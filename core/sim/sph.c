@@ -56,6 +56,11 @@ struct sph_state {
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
     double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
     double amax;    /* largest |a| of the last step, for the force limit */
+    /* Per material: the schema index of the plugin parameter SPH applies
+     * itself as viscosity (eq. 3.19), or -1. Resolved once, when the material
+     * is added (sph_material_added); see sph_viscosity_index. */
+    int *visc_index;
+    int visc_cap;
 };
 
 /* ---- options ---------------------------------------------------------------- */
@@ -117,17 +122,27 @@ static void sph_free(hearth_scene *s) {
 #undef FREE
     mem_free(st->key, sizeof(int) * c);
     mem_free(st->order, sizeof(int) * c);
+    mem_free(st->visc_index, sizeof(int) * (size_t)st->visc_cap);
     mem_free(st, sizeof *st);
     s->sph = NULL;
 }
 
-static hearth_status ensure(hearth_scene *s, int n, hearth_error *err) {
+/* The scene's SPH state, made on first use (a material added, or a step). */
+static struct sph_state *state_of(hearth_scene *s, hearth_error *err) {
     if (!s->sph) {
         s->sph = mem_calloc(sizeof *s->sph);
-        if (!s->sph) return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory");
+        if (!s->sph) {
+            err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory");
+            return NULL;
+        }
         s->sph->n = -1;
     }
-    struct sph_state *st = s->sph;
+    return s->sph;
+}
+
+static hearth_status ensure(hearth_scene *s, int n, hearth_error *err) {
+    struct sph_state *st = state_of(s, err);
+    if (!st) return HEARTH_ERR_NOMEM;
     if (n <= st->cap) return HEARTH_OK;
     int cap = n + n / 4 + 16;
     struct sph_state nw = *st;
@@ -182,11 +197,29 @@ static double lap_w(int dim, double r, double h) {
     return sg * (f2 * k * k + (dim - 1) * f1 * k / r);
 }
 
-/* Index of a parameter of the material's plugin, or -1. */
-static int pindex(const hearth_material *m, const char *name) {
-    for (int i = 0; i < m->nparams; i++)
-        if (!strcmp(m->params[i].name, name)) return i;
-    return -1;
+/* ---- the viscosity rule -------------------------------------------------------- */
+
+/* Contract rule 3 of <hearth/material.h>: under SPH a plugin parameter named
+ * `viscosity` (Pa s) is the core's. SPH applies it itself, in the viscous
+ * term of eq. 3.19 with no-slip walls (phase_forces), limits the step with
+ * viscosity / density (sph_stable_dt), and passes 0 for it to the plugin's
+ * stress (phase_stress), so the law does not apply it a second time. Under
+ * MPM the plugin applies it, like any other parameter. This is the one place
+ * the name is looked up: once per material, when it is added. */
+static int sph_viscosity_index(const hearth_material *m) { return params_index(m, "viscosity"); }
+
+static hearth_status sph_material_added(hearth_scene *s, int mat, hearth_error *err) {
+    struct sph_state *st = state_of(s, err);
+    if (!st) return HEARTH_ERR_NOMEM;
+    if (mat >= st->visc_cap) {
+        const int cap = mat + 1 > 2 * st->visc_cap ? mat + 1 : 2 * st->visc_cap;
+        int *v = mem_realloc(st->visc_index, sizeof(int) * (size_t)st->visc_cap, sizeof(int) * (size_t)cap);
+        if (!v) return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory for material %d", mat);
+        st->visc_index = v;
+        st->visc_cap = cap;
+    }
+    st->visc_index[mat] = sph_viscosity_index(s->mats[mat].m);
+    return HEARTH_OK;
 }
 
 /* Per-particle material constants: rest density, Tait B, viscosity (eq. 4.1
@@ -204,7 +237,7 @@ static void particle_constants(hearth_scene *s, int i, const double *T, double *
     st->rho0[i] = rho0;
     st->c0[i] = isfinite(c) && c > 0 ? c : 0;
     st->B[i] = rho0 * st->c0[i] * st->c0[i] / s->def.sph.gamma; /* eq. 3.17: c0^2 = gamma B / rho0 */
-    const int vi = pindex(ms->m, "viscosity");
+    const int vi = st->visc_index[m];
     st->mu[i] = vi >= 0 ? p[vi] : 0.0;
     const hearth_sph_def *o = &s->def.sph;
     double eps = o->xsph0;
@@ -548,8 +581,8 @@ static int phase_stress(hearth_scene *s, double dt, step_report *rep) {
         const material_slot *ms = &s->mats[mat[i]];
         double pscratch[SCENE_MAX_PARAMS];
         const double *p = scene_params_for(s, mat[i], i, pscratch);
-        const int vi = pindex(ms->m, "viscosity");
-        if (vi >= 0) { /* eq. 3.19 applies the viscosity: the plugin sees none */
+        const int vi = st->visc_index[mat[i]];
+        if (vi >= 0) { /* eq. 3.19 applies the viscosity: the plugin sees none (sph_viscosity_index) */
             if (p != pscratch) {
                 memcpy(pscratch, p, sizeof(double) * (size_t)ms->m->nparams);
                 p = pscratch;
@@ -943,7 +976,7 @@ static double sph_stable_dt(const hearth_scene *s) {
         const double V0 = pcold(ps, PC_VOL0)[i], h = o->h_factor * (dim == 3 ? cbrt(V0) : sqrt(V0));
         if (h < hmin) hmin = h;
         if (p[ms->density_index] < rhomin) rhomin = p[ms->density_index];
-        const int vi = pindex(ms->m, "viscosity");
+        const int vi = s->sph->visc_index[m]; /* a particle has a material, so the state exists */
         if (vi >= 0) {
             const double nu = p[vi] / p[ms->density_index];
             if (nu > numax) numax = nu;
@@ -996,6 +1029,7 @@ static void sph_region(const hearth_scene *s, double lo[3], double hi[3]) {
 const solver sph_solver = {
     .name = "sph",
     .check = sph_check_def,
+    .material_added = sph_material_added,
     .stable_dt = sph_stable_dt,
     .step = sph_step,
     .free = sph_free,

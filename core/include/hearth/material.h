@@ -43,8 +43,9 @@
  *    - Under the SPH solver a parameter named `viscosity` (Pa s) is the
  *      core's: SPH applies it itself (Morris et al. viscous term, eq. 3.19 of
  *      Rodriguez-Arenas 2011, with no-slip walls), passes 0 for it to stress,
- *      and limits the step with its kinematic value viscosity/density. Under
- *      MPM the plugin applies it, like any other parameter.
+ *      and limits the step with its kinematic value viscosity/density. The
+ *      name is looked up once per material, when it is added to an SPH
+ *      scene. Under MPM the plugin applies it, like any other parameter.
  *
  * 4. Wave speed. wave_speed must be finite and > 0 over the whole schema. At
  *    load the loader calls init and then wave_speed on a fresh state at the
