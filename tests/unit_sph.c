@@ -962,6 +962,63 @@ TEST(sph_viscosity_rule) {
     }
 }
 
+/* SPH supplies the porosity a material needs, from plastic_J as MPM does
+ * (before, it passed NaN and cam_clay_dough silently lost its pore term):
+ * point_porosity, whose stress fails on a porosity outside [0, 1], steps;
+ * and cam_clay_dough (temperature and porosity) steps and stays finite. */
+TEST(sph_porosity_supplied) {
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.2, 0.2, 0};
+    const char *plugins[] = {test_plugin("point_porosity"), "cam_clay_dough"};
+    for (int k = 0; k < 2; k++) {
+        hearth_scene_def d = sph_def(2, 0.01, lo, hi);
+        hearth_scene *s = hearth_scene_create(&d, NULL);
+        CHECK(s != NULL);
+        if (!s) continue;
+        hearth_error err;
+        char path[4096];
+        snprintf(path, sizeof path, "%s", plugins[k]); /* test_plugin's buffer is static */
+        const int m = hearth_scene_add_material(s, path, NULL, NULL, 0, &err);
+        if (m < 0) fprintf(stderr, "material %s: %s\n", path, err.msg);
+        CHECK(m == 0);
+        CHECK(box_body(s, m, 0.05, 0.02, 0.15, 0.12, 0, 25) >= 0);
+        const hearth_status rc = hearth_scene_step(s, 20, &err);
+        if (rc) fprintf(stderr, "%s: %s\n", path, err.msg);
+        CHECK(rc == HEARTH_OK);
+        int finite = 1;
+        for (int i = 0; i < 3 * s->ps.n; i++) finite &= isfinite(pcold(&s->ps, PC_X)[i]) && isfinite(pcold(&s->ps, PC_V)[i]);
+        CHECK(finite);
+        hearth_scene_destroy(s);
+    }
+}
+
+/* A material that needs a point field the solver does not fill is refused
+ * when added, naming both (SPH carries no water); MPM takes it. */
+TEST(sph_refuses_saturation) {
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.2, 0.2, 0};
+    for (int sph = 0; sph <= 1; sph++) {
+        hearth_scene_def d = sph_def(2, 0.01, lo, hi);
+        d.solver = sph ? HEARTH_SOLVER_SPH : HEARTH_SOLVER_MPM;
+        hearth_scene *s = hearth_scene_create(&d, NULL);
+        CHECK(s != NULL);
+        if (!s) continue;
+        hearth_error err;
+        const int m = hearth_scene_add_material(s, test_plugin("point_saturation"), NULL, NULL, 0, &err);
+        if (sph) {
+            CHECK(m < 0);
+            CHECK(err.code == HEARTH_ERR_PARAM);
+            CHECK_STR_CONTAINS(err.msg, "material 'point_saturation' needs the point's saturation");
+            CHECK_STR_CONTAINS(err.msg, "the sph solver does not supply");
+            CHECK_STR_CONTAINS(err.msg, "solver = \"mpm\" does");
+            CHECK(hearth_scene_material_count(s) == 0);
+            printf("  %s\n", err.msg);
+        } else {
+            if (m < 0) fprintf(stderr, "mpm: %s\n", err.msg);
+            CHECK(m == 0);
+        }
+        hearth_scene_destroy(s);
+    }
+}
+
 /* Every allocation on the way to a stepping SPH scene may fail (the solver's
  * per-material table, its state, cells and neighbour lists among them); each
  * failure is reported, nothing crashes and nothing leaks. */
@@ -1007,4 +1064,4 @@ TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_nei
           T(sph_poiseuille), T(sph_wall_drag_stable), T(sph_artificial_stress_fluid), T(sph_artificial_stress_elastic), T(sph_oven_robin), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads),
           T(sph_integrators_free_fall), T(sph_collider_response), T(sph_heat_internal_conserves), T(sph_adaptive_h),
           T(sph_surface_tension_rounds_drop), T(sph_bubble_cooling_contracts), T(sph_solver_table),
-          T(sph_viscosity_rule), T(sph_alloc_failure_paths))
+          T(sph_viscosity_rule), T(sph_porosity_supplied), T(sph_refuses_saturation), T(sph_alloc_failure_paths))

@@ -347,6 +347,7 @@ int hearth_scene_add_material(hearth_scene *s, const char *plugin, const char *c
     const hearth_plugin *pl = hearth_plugin_load(plugin, err);
     if (!pl) return -1;
     const hearth_material *m = hearth_plugin_material(pl);
+    if (solver_accepts(s->solver, m, err)) return -1; /* it needs a point field the solver does not fill */
     if (m->nparams > SCENE_MAX_PARAMS) {
         err_set(err, HEARTH_ERR_PLUGIN, "material '%s' declares %d parameters; hearth supports at most %d", m->name,
                 m->nparams, SCENE_MAX_PARAMS);

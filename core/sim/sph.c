@@ -595,8 +595,17 @@ static int phase_stress(hearth_scene *s, double dt, step_report *rep) {
         pt.dt = dt;
         pt.p = p;
         pt.state = c.state ? c.state + (size_t)i * stride : NULL;
-        /* SPH carries no porosity or water, and adds none of the core's coupling terms (material.h) */
-        const material_env env = {.temperature = T ? T[i] : NAN, .saturation = NAN, .porosity = NAN};
+        /* The porosity as MPM gives it, n^p = J^P - 1 + n^p_0 from the plugin's plastic_J at the
+         * start of the step, to a material that needs it (cam_clay_dough's yield surface); NaN to
+         * the rest, which do not read it. No water: a material that needs the saturation is
+         * refused when added (sph_solver.supplies). None of the core's coupling terms: they are
+         * isotropic, and SPH keeps only the deviator (Tait gives the pressure). */
+        const material_env env = {
+            .flags = ms->m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u,
+            .temperature = T ? T[i] : NAN,
+            .saturation = NAN,
+            .porosity = NAN,
+        };
         double tau[9];
         const int code = material_point_eval(ms->m, ms->core, &pt, &env, tau);
         plugin_call_leave();
@@ -1035,8 +1044,8 @@ const solver sph_solver = {
     .free = sph_free,
     .region = sph_region,
     .particle_values = sph_particle_values,
-    /* temperature from the heat field; no porosity (NaN) and no water */
-    .supplies = HEARTH_NEEDS_TEMPERATURE,
+    /* temperature from the heat field, porosity from plastic_J (phase_stress); no water */
+    .supplies = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY,
     .outputs = SOLVER_OUT_BROWNING,
     .can_checkpoint = 0, /* its options and final densities (eq. 3.52) are not in the format yet */
 };
