@@ -40,6 +40,7 @@
 #include "crc32.h"
 #include "error.h"
 #include "scene.h"
+#include "solver.h"
 #include "shapes.h"
 
 /* Limits a valid checkpoint stays far inside; a count above one is refused
@@ -300,9 +301,9 @@ static void put_particles(ck_out *o, const hearth_scene *s) {
 
 hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_error *err) {
     err_clear(err);
-    if (s->def.solver != HEARTH_SOLVER_MPM) /* SPH (sph.c): its options and final densities are not in the format yet */
-        return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of SPH scenes (solver = \"sph\") are not supported yet",
-                       path);
+    if (!s->solver->can_checkpoint) /* the solver's own state is not in the format (solver.h) */
+        return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of %s scenes (solver = \"%s\") are not supported yet",
+                       path, s->solver->name, s->solver->name);
     if (s->mix.mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
                        path);
@@ -374,7 +375,7 @@ static void get_def(ck_cursor *c, hearth_scene_def *d) {
     if (d->water_momentum != 0 && d->water_momentum != 1) ck_fail(c, "scene: water_momentum is neither 0 nor 1");
     d->transfer = get_i32(c);
     d->heat_flip = get_finite(c, "scene: heat_flip is not finite");
-    d->solver = HEARTH_SOLVER_MPM; /* the only solver saved */
+    d->solver = HEARTH_SOLVER_MPM; /* the only solver whose table says can_checkpoint (solver.h) */
 }
 
 typedef struct ck_clocks {

@@ -18,8 +18,8 @@
  * state) and says in a material_env what its solver supplies: the
  * temperature, saturation and porosity to pass, and which of the core's
  * coupling terms to add. Where the callers disagree on a field (the plugin
- * check passes porosity 0.1, the rheometer 0, MPM and the probes derive it
- * from J^P, SPH passes NaN), each passes its own value explicitly, so the
+ * check passes porosity 0.1, the rheometer 0, MPM, SPH and the probes
+ * derive it from J^P), each passes its own value explicitly, so the
  * disagreement is visible at the call rather than hidden in a copy.
  *
  * The door is header-only and always inlined: MPM's P2G instantiates it per dimension and

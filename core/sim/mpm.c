@@ -23,6 +23,7 @@
 #include "error.h"
 #include "plugins.h"
 #include "scene.h"
+#include "solver.h"
 #include "gas.h"
 #include "material.h"
 #include "thermal.h"
@@ -634,3 +635,39 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;
     return HEARTH_OK;
 }
+
+double mpm_stable_dt(const hearth_scene *s) {
+    /* the tightest of: motion and waves (CFL), the user's maximum, explicit conduction */
+    const double sp = s->max_speed + s->c_max;
+    double dt = sp > 0 ? s->def.cfl * s->def.dx / sp : INFINITY;
+    if (s->def.dt_max > 0 && dt > s->def.dt_max) dt = s->def.dt_max;
+    const double heat = thermal_dt_limit(s), water = water_dt_limit(s);
+    if (dt > heat) dt = heat;
+    if (dt > water) dt = water;
+    /* explicit viscosity is diffusion of momentum: the same limit as explicit heat */
+    if (s->nu_max > 0 && dt > s->def.dx * s->def.dx / (2.0 * s->def.dim * s->nu_max))
+        dt = s->def.dx * s->def.dx / (2.0 * s->def.dim * s->nu_max);
+    if (isinf(dt)) dt = s->def.cfl * s->def.dx; /* nothing moves or conducts: as if at 1 m/s */
+    return dt * s->dt_scale;
+}
+
+/* Particles stay a node inside the grid, so a particle's B-spline base node
+ * lies in [0, nn - 3] where its block's tile holds its stencil (block_of_position). */
+static void mpm_region(const hearth_scene *s, double lo[3], double hi[3]) {
+    for (int d = 0; d < 3; d++) {
+        lo[d] = d < s->def.dim ? s->g.lo[d] + s->g.dx : 0;
+        hi[d] = d < s->def.dim ? s->g.lo[d] + (s->g.nn[d] - 2) * s->g.dx : 0;
+    }
+}
+
+/* The grid and the step scratch are the scene's (scene.c), so MPM has no
+ * state of its own to free; its options are the scene's, checked there. */
+const solver mpm_solver = {
+    .name = "mpm",
+    .stable_dt = mpm_stable_dt,
+    .step = mpm_step,
+    .region = mpm_region,
+    /* temperature from the heat field, porosity from plastic_J (P2G), saturation from the water field */
+    .supplies = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_SATURATION,
+    .can_checkpoint = 1,
+};

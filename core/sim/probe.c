@@ -14,7 +14,7 @@
 #include "gas.h"
 #include "material.h"
 #include "scene.h"
-#include "sph.h"
+#include "solver.h"
 #include "tensor.h"
 #include "water.h"
 
@@ -69,8 +69,14 @@ const char *hearth_field_unit(const char *field) {
     return f < 0 ? NULL : fields[f].unit;
 }
 
+/* The solver's own per-particle results of the last step (sph.c's summed
+ * density and Tait pressure, the browning value), or NULL. */
+static const double *solver_values(const hearth_scene *s, const char *which) {
+    return s->solver->particle_values ? s->solver->particle_values(s, which) : NULL;
+}
+
 static int field_live(const hearth_scene *s, int f) {
-    if (f == F_BROWNING && s->def.solver != HEARTH_SOLVER_SPH) return 0;
+    if (f == F_BROWNING && !(s->solver->outputs & SOLVER_OUT_BROWNING)) return 0;
     return fields[f].column < 0 || (s->ps.enabled & (1u << fields[f].column));
 }
 
@@ -135,7 +141,7 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     const particles *ps = &s->ps;
     const double *v = pcold(ps, PC_V) + 3 * i, *F = pcold(ps, PC_F) + 9 * i;
     if (f == F_DENSITY || f == F_PRESSURE) { /* SPH: the summed density (eq. 3.13) and the Tait pressure that move it */
-        const double *sv = sph_particle_values(s, f == F_DENSITY ? "density" : "pressure");
+        const double *sv = solver_values(s, f == F_DENSITY ? "density" : "pressure");
         if (sv) {
             out[0] = sv[i];
             return;
@@ -161,7 +167,7 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
         out[0] = s->mats.slot[pcoli(ps, PC_MAT)[i]].core[CP_WATER_STIFFNESS] * (water_saturation(s, i) - pcold(ps, PC_SAT0)[i]);
         break;
     case F_BROWNING: { /* from the last SPH step; NaN before the first */
-        const double *b = sph_particle_values(s, "browning");
+        const double *b = solver_values(s, "browning");
         out[0] = b ? b[i] : NAN;
         break;
     }

@@ -13,7 +13,7 @@
 #include "params.h"
 #include "scene.h"
 #include "settings.h"
-#include "sph.h"
+#include "solver.h"
 #include "thermal.h"
 #include "water.h"
 #include "mixing.h"
@@ -68,8 +68,10 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
                            d->lo[k], d->hi[k], 6 * d->dx);
         if (!isfinite(d->gravity[k])) return err_set(err, HEARTH_ERR_PARAM, "scene: gravity[%d] is not finite", k);
     }
-    if (d->solver == HEARTH_SOLVER_SPH) return sph_check_def(d, err);
-    return HEARTH_OK;
+    /* ---- the solver's own options (solver.h) ---- */
+    const solver *sv = solver_of(d->solver);
+    if (!sv) return err_set(err, HEARTH_ERR_PARAM, "scene: solver = %d; valid: 0 (mpm), 1 (sph)", d->solver);
+    return sv->check ? sv->check(d, err) : HEARTH_OK;
 }
 
 /* ---- memory estimates ------------------------------------------------ */
@@ -132,6 +134,7 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
         return NULL;
     }
     s->def = d;
+    s->solver = solver_of(d.solver); /* check_def refused any other */
     s->dt_scale = 1.0;
     material_table_init(&s->mats);
     mixing_init(&s->mix);
@@ -187,7 +190,7 @@ void hearth_scene_destroy(hearth_scene *s) {
     water_free(&s->water);
     mixing_free(&s->mix);
     mem_free(s->mark, (size_t)s->g.nblocks);
-    sph_free(s->sph); /* SPH (sph.c) */
+    if (s->solver->free) s->solver->free(s);
     grid_free(&s->g);
     mem_free(s, sizeof *s);
 }
@@ -276,6 +279,7 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
                        hearth_error *err) {
     const hearth_plugin *pl = hearth_plugin_load(plugin, err);
     if (!pl) return -1;
+    if (solver_accepts(s->solver, hearth_plugin_material(pl), err)) return -1; /* it needs a point field the solver does not fill */
     material_slot ms;
     if (material_slot_init(&ms, pl, names, values, n, err)) return -1;
     const hearth_material *m = ms.m;
@@ -285,6 +289,10 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
     }
     const int id = material_table_push(&s->mats, &ms, err); /* checks a stateless plugin's wave speed */
     if (id < 0) return -1;
+    if (s->solver->material_added && s->solver->material_added(s, id, err)) { /* the solver's per-material data */
+        material_slot_free(&s->mats.slot[--s->mats.n]);
+        return -1;
+    }
     const double *core = s->mats.slot[id].core;
     /* leavening needs the gas column, and the reaction needs temperature */
     if (core[CP_GAS_RATE] > 0 &&
@@ -312,17 +320,6 @@ const double *hearth_scene_material_params(const hearth_scene *s, int mat) {
 
 /* ---- particles ------------------------------------------------------- */
 
-static void valid_region(const hearth_scene *s, double lo[3], double hi[3]) {
-    if (s->def.solver == HEARTH_SOLVER_SPH) { /* SPH (sph.c): no grid margin, the whole box */
-        for (int d = 0; d < 3; d++) lo[d] = s->def.lo[d], hi[d] = s->def.hi[d];
-        return;
-    }
-    for (int d = 0; d < 3; d++) {
-        lo[d] = d < s->def.dim ? s->g.lo[d] + s->g.dx : 0;
-        hi[d] = d < s->def.dim ? s->g.lo[d] + (s->g.nn[d] - 2) * s->g.dx : 0;
-    }
-}
-
 int hearth_scene_add_particles(hearth_scene *s, int material, int n, const double *x, const double *v, double volume,
                                hearth_error *err) {
     err_clear(err);
@@ -340,7 +337,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
     }
     if (scene_check_particle_budget(s, n, "add particles", err)) return -1;
     double lo[3], hi[3];
-    valid_region(s, lo, hi);
+    s->solver->region(s, lo, hi);
     for (int i = 0; i < n; i++)
         for (int d = 0; d < s->def.dim; d++) {
             double xd = x[3 * i + d];
@@ -444,7 +441,7 @@ int hearth_scene_seed_shape(hearth_scene *s, int material, const hearth_shape *s
     if (k < 1) k = 1;
     double blo[3], bhi[3], lo[3], hi[3];
     hearth_shape_bounds(shape, blo, bhi);
-    valid_region(s, lo, hi);
+    s->solver->region(s, lo, hi);
     long cells[3] = {1, 1, 1};
     int c0[3] = {0, 0, 0};
     const double dx = s->def.dx, h = dx / k;
@@ -536,21 +533,7 @@ void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void 
 
 /* ---- stepping -------------------------------------------------------- */
 
-double scene_stable_dt(const hearth_scene *s) {
-    if (s->def.solver == HEARTH_SOLVER_SPH) return sph_stable_dt(s); /* SPH (sph.c) */
-    /* the tightest of: motion and waves (CFL), the user's maximum, explicit conduction */
-    const double sp = s->max_speed + s->c_max;
-    double dt = sp > 0 ? s->def.cfl * s->def.dx / sp : INFINITY;
-    if (s->def.dt_max > 0 && dt > s->def.dt_max) dt = s->def.dt_max;
-    const double heat = thermal_dt_limit(s), water = water_dt_limit(s);
-    if (dt > heat) dt = heat;
-    if (dt > water) dt = water;
-    /* explicit viscosity is diffusion of momentum: the same limit as explicit heat */
-    if (s->nu_max > 0 && dt > s->def.dx * s->def.dx / (2.0 * s->def.dim * s->nu_max))
-        dt = s->def.dx * s->def.dx / (2.0 * s->def.dim * s->nu_max);
-    if (isinf(dt)) dt = s->def.cfl * s->def.dx; /* nothing moves or conducts: as if at 1 m/s */
-    return dt * s->dt_scale;
-}
+double scene_stable_dt(const hearth_scene *s) { return s->solver->stable_dt(s); }
 
 void scene_refresh_wave_speed(hearth_scene *s) {
     const particles *ps = &s->ps;
@@ -586,8 +569,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             collider_update_bounds(&s->cols[c], 2.0 * s->def.dx);
         }
         step_report rep;
-        hearth_status st = s->def.solver == HEARTH_SOLVER_SPH ? sph_step(s, dt, &rep, err) /* SPH (sph.c) */
-                                                               : mpm_step(s, dt, &rep, err);
+        hearth_status st = s->solver->step(s, dt, &rep, err);
         if (st) return st;
         if (!guard_check(s, &rep, dt, speed_before)) {
             s->t += dt;

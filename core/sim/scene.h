@@ -70,8 +70,11 @@ typedef struct pb_partial {
     double water_removed, water_dmax, water_emax;
 } pb_partial;
 
+struct solver;
+
 struct hearth_scene {
     hearth_scene_def def;
+    const struct solver *solver; /* solver.h: chosen once from def.solver by hearth_scene_create */
     double t, dt_last, dt_scale;
     long step;
     int rollbacks, consecutive_rollbacks;
@@ -133,6 +136,7 @@ hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err);
 /* Largest wave speed over moving particles (s->c_max), after particles change. */
 void scene_refresh_wave_speed(hearth_scene *s);
 hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err);
+/* The solver's stable step (solver.h). */
 double scene_stable_dt(const hearth_scene *s);
 /// Memory a scene may plan for (bytes): the machine's physical memory
 /// (SIZE_MAX when unknown).
@@ -150,6 +154,8 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep);
 double mpm_grid_update(hearth_scene *s, double dt);
 void mpm_g2p(hearth_scene *s, double dt, step_report *rep);
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err);
+/* The stable step: CFL, the user's maximum, explicit conduction, water and viscosity. */
+double mpm_stable_dt(const hearth_scene *s);
 
 /* guard.c: returns 1 when the step must not stand; writes the diagnosis. */
 int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed_before);

@@ -1,28 +1,34 @@
 /* sph.c: one SPH step (Rodriguez-Arenas 2011, ch. 3-4; equation numbers are
  * the thesis's).
  *
- * Order of a step:
- *   (leapfrog: drift half a step)
- *   sort particles by cell, neighbour lists (sph_neighbours.c)
- *   density by summation (3.13); Sigalotti adaptive h (3.54-3.56) if asked
- *   pressure: Tait (3.17); bubble particles (3.48-3.51) while they heat, the
- *     final-density Tait (3.52) afterwards
- *   velocity gradient (3.27), colour field and its gradient (3.28-3.29),
- *     surface particles
- *   plugin stress: F <- (I + dt L) F, the plugin's Kirchhoff stress, its
- *     deviator enters the momentum equation (Tait gives the pressure)
- *   artificial stress on tensile principal stresses (Monaghan 2000)
- *   accelerations: pressure (3.18), deviatoric stress, artificial stress,
- *     viscosity (3.19) with no-slip walls (Morris et al. 1997), artificial
- *     viscosity beta term (3.41), surface tension (3.30), gravity
- *   heat: internal (3.45-3.46) and external at surface particles (3.42);
- *     the oven's Robin flux and heated colliders' contact beta (as MPM)
- *   kick, XSPH (3.34 with the tuner of 4.4), drift (3.57-3.58), colliders and
- *     walls with the thesis's response (3.31-3.33)
- *   browning value (4.5-4.6)
+ * Order of a step (sph_step, one static function per phase):
+ *   phase_predrift       (leapfrog: drift half a step); periodic wrap
+ *   phase_neighbours     sort particles by cell, neighbour lists (sph_neighbours.c)
+ *   phase_density        density by summation (3.13); Sigalotti adaptive h
+ *                        (3.54-3.56) if asked
+ *   phase_kinematics     velocity gradient (3.27), colour field and its
+ *                        gradient (3.28-3.29), surface particles
+ *   phase_pressure       Tait (3.17); bubble particles (3.48-3.51) while they
+ *                        heat, the final-density Tait (3.52) afterwards
+ *   phase_stress         F <- (I + dt L) F, the plugin's Kirchhoff stress
+ *                        through the material door; its deviator enters the
+ *                        momentum equation (Tait gives the pressure)
+ *   phase_artificial_stress  on tensile principal stresses (Monaghan 2000)
+ *   phase_forces         pressure (3.18), deviatoric stress, artificial
+ *                        stress, viscosity (3.19) with no-slip walls (Morris
+ *                        et al. 1997), artificial viscosity beta term (3.41),
+ *                        surface tension (3.30), gravity; heat: internal
+ *                        (3.45-3.46), external at surface particles (3.42),
+ *                        the oven's Robin flux and heated colliders' contact
+ *                        beta (as MPM); the kick
+ *   phase_xsph           XSPH (3.34 with the tuner of 4.4)
+ *   phase_drift          drift (3.57-3.58), colliders and walls with the
+ *                        thesis's response (3.31-3.33)
+ *   phase_browning       browning value (4.5-4.6)
  * Every particle writes only its own slots and sums its neighbours in list
  * order, so a step is deterministic for any thread count. */
 #include "plugins.h"
+#include "solver.h"
 #include "sph.h"
 #include "settings.h"
 
@@ -51,6 +57,11 @@ struct sph_state {
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
     double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
     double amax;    /* largest |a| of the last step, for the force limit */
+    /* Per material: the schema index of the plugin parameter SPH applies
+     * itself as viscosity (eq. 3.19), or -1. Resolved once, when the material
+     * is added (sph_material_added); see sph_viscosity_index. */
+    int *visc_index;
+    int visc_cap;
 };
 
 /* ---- options ---------------------------------------------------------------- */
@@ -72,7 +83,8 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(brown, 1) X(surf, 1) X(rhof, 1)       \
         X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9)
 
-void sph_free(struct sph_state *st) {
+static void sph_free(hearth_scene *s) {
+    struct sph_state *st = s->sph;
     if (!st) return;
     sph_cells_free(&st->cells);
     sph_nlist_free(&st->nl);
@@ -82,16 +94,27 @@ void sph_free(struct sph_state *st) {
 #undef FREE
     mem_free(st->key, sizeof(int) * c);
     mem_free(st->order, sizeof(int) * c);
+    mem_free(st->visc_index, sizeof(int) * (size_t)st->visc_cap);
     mem_free(st, sizeof *st);
+    s->sph = NULL;
+}
+
+/* The scene's SPH state, made on first use (a material added, or a step). */
+static struct sph_state *state_of(hearth_scene *s, hearth_error *err) {
+    if (!s->sph) {
+        s->sph = mem_calloc(sizeof *s->sph);
+        if (!s->sph) {
+            err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory");
+            return NULL;
+        }
+        s->sph->n = -1;
+    }
+    return s->sph;
 }
 
 static hearth_status ensure(hearth_scene *s, int n, hearth_error *err) {
-    if (!s->sph) {
-        s->sph = mem_calloc(sizeof *s->sph);
-        if (!s->sph) return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory");
-        s->sph->n = -1;
-    }
-    struct sph_state *st = s->sph;
+    struct sph_state *st = state_of(s, err);
+    if (!st) return HEARTH_ERR_NOMEM;
     if (n <= st->cap) return HEARTH_OK;
     int cap = n + n / 4 + 16;
     struct sph_state nw = *st;
@@ -146,11 +169,29 @@ static double lap_w(int dim, double r, double h) {
     return sg * (f2 * k * k + (dim - 1) * f1 * k / r);
 }
 
-/* Index of a parameter of the material's plugin, or -1. */
-static int pindex(const hearth_material *m, const char *name) {
-    for (int i = 0; i < m->nparams; i++)
-        if (!strcmp(m->params[i].name, name)) return i;
-    return -1;
+/* ---- the viscosity rule -------------------------------------------------------- */
+
+/* Contract rule 3 of <hearth/material.h>: under SPH a plugin parameter named
+ * `viscosity` (Pa s) is the core's. SPH applies it itself, in the viscous
+ * term of eq. 3.19 with no-slip walls (phase_forces), limits the step with
+ * viscosity / density (sph_stable_dt), and passes 0 for it to the plugin's
+ * stress (phase_stress), so the law does not apply it a second time. Under
+ * MPM the plugin applies it, like any other parameter. This is the one place
+ * the name is looked up: once per material, when it is added. */
+static int sph_viscosity_index(const hearth_material *m) { return params_index(m, "viscosity"); }
+
+static hearth_status sph_material_added(hearth_scene *s, int mat, hearth_error *err) {
+    struct sph_state *st = state_of(s, err);
+    if (!st) return HEARTH_ERR_NOMEM;
+    if (mat >= st->visc_cap) {
+        const int cap = mat + 1 > 2 * st->visc_cap ? mat + 1 : 2 * st->visc_cap;
+        int *v = mem_realloc(st->visc_index, sizeof(int) * (size_t)st->visc_cap, sizeof(int) * (size_t)cap);
+        if (!v) return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory for material %d", mat);
+        st->visc_index = v;
+        st->visc_cap = cap;
+    }
+    st->visc_index[mat] = sph_viscosity_index(s->mats.slot[mat].m);
+    return HEARTH_OK;
 }
 
 /* Per-particle material constants: rest density, Tait B, viscosity (eq. 4.1
@@ -168,7 +209,7 @@ static void particle_constants(hearth_scene *s, int i, const double *T, double *
     st->rho0[i] = rho0;
     st->c0[i] = isfinite(c) && c > 0 ? c : 0;
     st->B[i] = rho0 * st->c0[i] * st->c0[i] / s->def.sph.gamma; /* eq. 3.17: c0^2 = gamma B / rho0 */
-    const int vi = pindex(ms->m, "viscosity");
+    const int vi = st->visc_index[m];
     st->mu[i] = vi >= 0 ? p[vi] : 0.0;
     const hearth_sph_def *o = &s->def.sph;
     double eps = o->xsph0;
@@ -285,91 +326,114 @@ static void density(hearth_scene *s) {
     }
 }
 
-/* ---- the step ----------------------------------------------------------------- */
+/* ---- the step's phases ----------------------------------------------------------- */
 
-hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err) {
+/* The particle columns a phase reads. Sorting permutes the particles, and
+ * the permutation may swap the columns' storage, so a phase takes them fresh
+ * from cols_of after every sort_and_list. */
+typedef struct sph_cols {
+    int n, dim;
+    const int *flags; /* NULL when no particle carries flags */
+    const int *mat;
+    double *x, *v, *C, *F, *state;
+    const double *m, *V0;
+    double *T, *Tmax; /* NULL without the temperature field */
+} sph_cols;
+
+static sph_cols cols_of(hearth_scene *s) {
     particles *ps = &s->ps;
-    const int n = ps->n, dim = s->def.dim;
-    const hearth_sph_def *o = &s->def.sph;
-    memset(rep, 0, sizeof *rep);
-    rep->particle = -1;
-    rep->fastest = -1;
-    rep->mover = -1;
-    hearth_status e = ensure(s, n > 0 ? n : 1, err);
-    if (e) return e;
-    struct sph_state *st = s->sph;
-    if (st->n != n) /* particles added or removed since the last step: final densities start over */
-        for (int i = 0; i < n; i++) st->rhof[i] = st->Tprev[i] = NAN;
-    st->valid = 0;
-    if (n == 0) {
-        st->n = 0;
-        return HEARTH_OK;
-    }
-    if ((e = scene_ensure_scratch(s, n, err))) return e;
-    const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
-    double *x = pcold(ps, PC_X), *v = pcold(ps, PC_V);
+    return (sph_cols){
+        .n = ps->n,
+        .dim = s->def.dim,
+        .flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL,
+        .mat = pcoli(ps, PC_MAT),
+        .x = pcold(ps, PC_X),
+        .v = pcold(ps, PC_V),
+        .C = pcold(ps, PC_C),
+        .F = pcold(ps, PC_F),
+        .state = pcold(ps, PC_STATE),
+        .m = pcold(ps, PC_MASS),
+        .V0 = pcold(ps, PC_VOL0),
+        .T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL,
+        .Tmax = ps->enabled & (1u << PC_TEMP_MAX) ? pcold(ps, PC_TEMP_MAX) : NULL,
+    };
+}
 
-    /* leapfrog (drift-kick-drift): first half drift */
+/* Leapfrog's first half drift (drift-kick-drift; symplectic Euler, eq.
+ * 3.57-3.58, drifts once at the end), then positions on periodic axes back
+ * into the box. */
+static void phase_predrift(hearth_scene *s, double dt) {
+    const hearth_sph_def *o = &s->def.sph;
+    const sph_cols c = cols_of(s);
     if (o->leapfrog)
-        for (int i = 0; i < n; i++)
-            if (!(flags && (flags[i] & PF_FIXED)))
-                for (int a = 0; a < dim; a++) x[3 * i + a] += 0.5 * dt * v[3 * i + a];
-    /* periodic axes: positions back into the box */
-    for (int a = 0; a < dim; a++)
+        for (int i = 0; i < c.n; i++)
+            if (!(c.flags && (c.flags[i] & PF_FIXED)))
+                for (int a = 0; a < c.dim; a++) c.x[3 * i + a] += 0.5 * dt * c.v[3 * i + a];
+    for (int a = 0; a < c.dim; a++)
         if (o->periodic[a]) {
             const double lo = s->def.lo[a], L = s->def.hi[a] - lo;
-            for (int i = 0; i < n; i++) x[3 * i + a] = lo + fmod(fmod(x[3 * i + a] - lo, L) + L, L);
+            for (int i = 0; i < c.n; i++) c.x[3 * i + a] = lo + fmod(fmod(c.x[3 * i + a] - lo, L) + L, L);
         }
+}
 
-    /* smoothing lengths from the rest volumes, then sort and list */
+/* Smoothing lengths from the rest volumes, h = h_factor V0^(1/dim); then
+ * sort by cell and build the neighbour lists. */
+static hearth_status phase_neighbours(hearth_scene *s, hearth_error *err) {
+    struct sph_state *st = s->sph;
+    const particles *ps = &s->ps;
+    const int n = ps->n, dim = s->def.dim;
     double hmax = 0;
     for (int i = 0; i < n; i++) {
         const double V0 = pcold(ps, PC_VOL0)[i];
-        const double h0 = o->h_factor * (dim == 3 ? cbrt(V0) : sqrt(V0));
+        const double h0 = s->def.sph.h_factor * (dim == 3 ? cbrt(V0) : sqrt(V0));
         st->h[i] = h0;
         if (h0 > hmax) hmax = h0;
     }
-    if ((e = sort_and_list(s, hmax, st->h, err))) return e;
-    flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
-    x = pcold(ps, PC_X);
-    v = pcold(ps, PC_V);
-    const double *m = pcold(ps, PC_MASS);
-    double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
-    double *Tmax = ps->enabled & (1u << PC_TEMP_MAX) ? pcold(ps, PC_TEMP_MAX) : NULL;
+    return sort_and_list(s, hmax, st->h, err);
+}
 
-    {
-        double pscratch[SCENE_MAX_PARAMS];
-        for (int i = 0; i < n; i++) particle_constants(s, i, T, pscratch);
+/* Per-particle constants, then density by summation (eq. 3.13). With
+ * adaptive h, Sigalotti et al.'s pass: eq. 3.54 with the geometric mean of
+ * eq. 3.55, the lists again for the new h, and the density again. */
+static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
+    struct sph_state *st = s->sph;
+    const hearth_sph_def *o = &s->def.sph;
+    const int n = s->ps.n;
+    double pscratch[SCENE_MAX_PARAMS];
+    const double *T = cols_of(s).T;
+    for (int i = 0; i < n; i++) particle_constants(s, i, T, pscratch);
+    density(s);
+    if (!o->adaptive_h) return HEARTH_OK;
+    double lg = 0;
+    for (int i = 0; i < n; i++) lg += log(st->rho[i]);
+    const double rbar = exp(lg / n);
+    double hm = 0;
+    for (int i = 0; i < n; i++) {
+        st->h[i] *= o->k_g * pow(st->rho[i] / rbar, -o->eps_g);
+        if (st->h[i] > hm) hm = st->h[i];
+    }
+    hearth_status e = sort_and_list(s, hm, st->h, err); /* order unchanged unless the cells changed */
+    if (e) return e;
+    T = cols_of(s).T;
+    for (int i = 0; i < n; i++) {
+        const double hkeep = st->h[i];
+        particle_constants(s, i, T, pscratch);
+        st->h[i] = hkeep;
     }
     density(s);
-    if (o->adaptive_h) { /* Sigalotti et al.: eq. 3.54 with the geometric mean of eq. 3.55 */
-        double lg = 0;
-        for (int i = 0; i < n; i++) lg += log(st->rho[i]);
-        const double rbar = exp(lg / n);
-        double hm = 0;
-        for (int i = 0; i < n; i++) {
-            st->h[i] *= o->k_g * pow(st->rho[i] / rbar, -o->eps_g);
-            if (st->h[i] > hm) hm = st->h[i];
-        }
-        if ((e = sort_and_list(s, hm, st->h, err))) return e; /* order unchanged unless the cells changed */
-        flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
-        x = pcold(ps, PC_X);
-        v = pcold(ps, PC_V);
-        m = pcold(ps, PC_MASS);
-        T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
-        Tmax = ps->enabled & (1u << PC_TEMP_MAX) ? pcold(ps, PC_TEMP_MAX) : NULL;
-        double pscratch[SCENE_MAX_PARAMS];
-        for (int i = 0; i < n; i++) {
-            const double hkeep = st->h[i];
-            particle_constants(s, i, T, pscratch);
-            st->h[i] = hkeep;
-        }
-        density(s);
-    }
+    return HEARTH_OK;
+}
 
-    double *C = pcold(ps, PC_C);
+/* Velocity gradient (eq. 3.27) into the particles' C, the colour field's
+ * gradient (eq. 3.29) and Laplacian (eq. 3.28); surface particles where
+ * |grad C| h passes sph.surface_threshold. */
+static void phase_kinematics(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    const sph_cols c = cols_of(s);
+    const int n = c.n, dim = c.dim;
+    const double *x = c.x, *v = c.v, *m = c.m;
     const int *off = st->nl.off, *nb = st->nl.j;
-    /* velocity gradient (3.27), colour gradient (3.29) and Laplacian; surface particles */
+    const double threshold = s->def.sph.surface_threshold;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         /* eq. 3.28 sums over every j including i itself: without the self
@@ -390,14 +454,23 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
             }
             lc += Vj * lap_w(dim, r, hij);
         }
-        memcpy(C + 9 * i, L, sizeof L);
+        memcpy(c.C + 9 * i, L, sizeof L);
         memcpy(st->N + 3 * i, Ni, sizeof Ni);
         st->lapC[i] = lc;
-        st->surf[i] = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]) * st->h[i] > o->surface_threshold;
+        st->surf[i] = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]) * st->h[i] > threshold;
     }
+}
 
-    /* pressure: Tait (3.17); bubbles (3.51) while heating, then final-density Tait (3.52) */
-    const int *mat = pcoli(ps, PC_MAT);
+/* Pressure: Tait (eq. 3.17) against the final density (eq. 3.52); bubble
+ * particles (eq. 3.48-3.51) while they heat. While any bubble expands, dough
+ * and bubbles keep their density as the final density. */
+static void phase_pressure(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    const hearth_sph_def *o = &s->def.sph;
+    const sph_cols c = cols_of(s);
+    const int n = c.n, *mat = c.mat;
+    const double *T = c.T;
+    const int *off = st->nl.off, *nb = st->nl.j;
     for (int i = 0; i < n; i++) {
         const material_slot *ms = &s->mats.slot[mat[i]];
         const double gam = o->gamma, rho0 = st->rho0[i];
@@ -425,7 +498,6 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
          * instability). Clamped unless the scene asks for tension. */
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0;
     }
-    /* while any bubble expands, dough and bubbles keep their density as final density (eq. 3.52) */
     int any_heating = 0;
     for (int i = 0; i < n && !any_heating; i++)
         any_heating = s->mats.slot[mat[i]].core[CP_BUBBLE] > 0 && T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
@@ -447,22 +519,30 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         }
     }
     if (T) memcpy(st->Tprev, T, sizeof(double) * (size_t)n);
+}
 
-    /* plugin stress: F <- (I + dt L) F, deviator of sigma = tau / J */
-    double *F = pcold(ps, PC_F), *state = pcold(ps, PC_STATE);
-    const int stride = ps->state_stride;
-    int fail_i = -1, fk = 0, fail_code = 0;
+/* The plugin's stress through the material door: F <- (I + dt L) F with L
+ * of eq. 3.27, then the deviator of sigma = tau / J enters the momentum
+ * equation (Tait gives the pressure). Returns 0, or 1 with rep naming the
+ * first failed particle in particle order (a bad F, a plugin code or a
+ * non-finite tau), so the guard's answer does not depend on the threads. */
+static int phase_stress(hearth_scene *s, double dt, step_report *rep) {
+    struct sph_state *st = s->sph;
+    const sph_cols c = cols_of(s);
+    const int n = c.n, *mat = c.mat, *flags = c.flags;
+    const double *T = c.T;
+    const int stride = s->ps.state_stride;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         double *Si = st->S + 9 * i;
         memset(Si, 0, 9 * sizeof(double));
         if (flags && (flags[i] & PF_FIXED)) continue;
-        const double *L = C + 9 * i;
-        double *Fi = F + 9 * i, f[9], Fn[9];
+        const double *L = c.C + 9 * i;
+        double *Fi = c.F + 9 * i, f[9], Fn[9];
         for (int a = 0; a < 9; a++) f[a] = (a % 4 == 0) + dt * L[a];
         for (int r = 0; r < 3; r++)
-            for (int c = 0; c < 3; c++)
-                Fn[3 * r + c] = f[3 * r] * Fi[c] + f[3 * r + 1] * Fi[3 + c] + f[3 * r + 2] * Fi[6 + c];
+            for (int q = 0; q < 3; q++)
+                Fn[3 * r + q] = f[3 * r] * Fi[q] + f[3 * r + 1] * Fi[3 + q] + f[3 * r + 2] * Fi[6 + q];
         memcpy(Fi, Fn, sizeof Fn);
         const double J = Fi[0] * (Fi[4] * Fi[8] - Fi[5] * Fi[7]) - Fi[1] * (Fi[3] * Fi[8] - Fi[5] * Fi[6]) +
                          Fi[2] * (Fi[3] * Fi[7] - Fi[4] * Fi[6]);
@@ -473,8 +553,8 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         const material_slot *ms = &s->mats.slot[mat[i]];
         double pscratch[SCENE_MAX_PARAMS];
         const double *p = material_params(&s->mats, &s->ps, mat[i], i, pscratch);
-        const int vi = pindex(ms->m, "viscosity");
-        if (vi >= 0) { /* eq. 3.19 applies the viscosity: the plugin sees none */
+        const int vi = st->visc_index[mat[i]];
+        if (vi >= 0) { /* eq. 3.19 applies the viscosity: the plugin sees none (sph_viscosity_index) */
             if (p != pscratch) {
                 memcpy(pscratch, p, sizeof(double) * (size_t)ms->m->nparams);
                 p = pscratch;
@@ -486,9 +566,18 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         memcpy(pt.F, Fi, sizeof pt.F);
         pt.dt = dt;
         pt.p = p;
-        pt.state = state ? state + (size_t)i * stride : NULL;
-        /* SPH carries no porosity or water, and adds none of the core's coupling terms (material.h) */
-        const material_env env = {.temperature = T ? T[i] : NAN, .saturation = NAN, .porosity = NAN};
+        pt.state = c.state ? c.state + (size_t)i * stride : NULL;
+        /* The porosity as MPM gives it, n^p = J^P - 1 + n^p_0 from the plugin's plastic_J at the
+         * start of the step, to a material that needs it (cam_clay_dough's yield surface); NaN to
+         * the rest, which do not read it. No water: a material that needs the saturation is
+         * refused when added (sph_solver.supplies). None of the core's coupling terms: they are
+         * isotropic, and SPH keeps only the deviator (Tait gives the pressure). */
+        const material_env env = {
+            .flags = ms->m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u,
+            .temperature = T ? T[i] : NAN,
+            .saturation = NAN,
+            .porosity = NAN,
+        };
         double tau[9];
         const int code = material_point_eval(ms->m, ms->core, &pt, &env, tau);
         plugin_call_leave();
@@ -500,69 +589,83 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         const double tr = (tau[0] + tau[4] + tau[8]) / 3;
         for (int a = 0; a < 9; a++) Si[a] = (tau[a] - (a % 4 == 0 ? tr : 0.0)) / J;
     }
-    for (int i = 0; i < n && fail_i < 0; i++)
+    for (int i = 0; i < n; i++)
         if (isnan(st->S[9 * i])) {
-            fail_i = i;
-            const double c = st->S[9 * i + 1];
-            fk = c > 0 ? FAIL_PLUGIN : c < 0 ? FAIL_STRESS : FAIL_F;
-            fail_code = c > 0 ? (int)c : 0;
+            const double code = st->S[9 * i + 1];
+            rep->kind = code > 0 ? FAIL_PLUGIN : code < 0 ? FAIL_STRESS : FAIL_F;
+            rep->particle = i;
+            rep->code = code > 0 ? (int)code : 0;
+            return 1;
         }
-    if (fail_i >= 0) {
-        rep->kind = (fail_kind)fk;
-        rep->particle = fail_i;
-        rep->code = fail_code;
-        return HEARTH_OK;
-    }
+    return 0;
+}
 
-    /* Artificial stress against the tensile instability (Monaghan 2000,
-     * J. Comput. Phys. 159, 290-311; Gray, Monaghan & Swift 2001, Comput.
-     * Methods Appl. Mech. Engrg. 190, 6641-6662, for elastic solids). Under
-     * tension, SPH particles attract their neighbours more the closer they
-     * are, so they clump in pairs and strings and a stretched body breaks
-     * (bread of the dead split along its toppings). In the principal frame
-     * of sigma = S - p I each tensile component sigma'_k > 0 gets
-     * R'_k = -epsilon sigma'_k / rho^2 (compressive ones 0); rotated back,
-     * R_a enters the momentum equation as sum_b m_b f_ab^n (R_a + R_b) .
-     * grad_a W with f_ab = W(r_ab) / W(dp), dp the rest spacing, n = 4: a
-     * short-range repulsion that is strong exactly where particles clump
-     * (r < dp) and negligible at the rest spacing's neighbours beyond.
-     * Off by default (sph.artificial_stress = 0): the same repulsion resists
-     * a cooling bubble's contraction (at 0.3 it loses 31% less volume than
-     * its gas, `sph_bubble_cooling_contracts`); bread of the dead sets 0.3. */
-    const double eps_as = o->artificial_stress;
-    if (eps_as > 0) {
+/* Artificial stress against the tensile instability (Monaghan 2000,
+ * J. Comput. Phys. 159, 290-311; Gray, Monaghan & Swift 2001, Comput.
+ * Methods Appl. Mech. Engrg. 190, 6641-6662, for elastic solids). Under
+ * tension, SPH particles attract their neighbours more the closer they
+ * are, so they clump in pairs and strings and a stretched body breaks
+ * (bread of the dead split along its toppings). In the principal frame
+ * of sigma = S - p I each tensile component sigma'_k > 0 gets
+ * R'_k = -epsilon sigma'_k / rho^2 (compressive ones 0); rotated back,
+ * R_a enters the momentum equation as sum_b m_b f_ab^n (R_a + R_b) .
+ * grad_a W with f_ab = W(r_ab) / W(dp), dp the rest spacing, n = 4: a
+ * short-range repulsion that is strong exactly where particles clump
+ * (r < dp) and negligible at the rest spacing's neighbours beyond.
+ * Off by default (sph.artificial_stress = 0): the same repulsion resists
+ * a cooling bubble's contraction (at 0.3 it loses 31% less volume than
+ * its gas, `sph_bubble_cooling_contracts`); bread of the dead sets 0.3. */
+static void phase_artificial_stress(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    const int n = s->ps.n;
+    const double eps_as = s->def.sph.artificial_stress;
+    if (!(eps_as > 0)) return;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-        for (int i = 0; i < n; i++) {
-            double sig[9], l[3], Q[9], *Ri = st->R + 9 * i;
-            for (int a = 0; a < 9; a++) sig[a] = st->S[9 * i + a] - (a % 4 == 0 ? st->prs[i] : 0.0);
-            t3_sym_eigen(sig, l, Q);
-            double r[3];
-            for (int k = 0; k < 3; k++) r[k] = l[k] > 0 ? -eps_as * l[k] / (st->rho[i] * st->rho[i]) : 0.0;
-            for (int a = 0; a < 3; a++)
-                for (int b = 0; b < 3; b++) { /* R = Q diag(r) Q^T */
-                    Ri[3 * a + b] = 0;
-                    for (int k = 0; k < 3; k++) Ri[3 * a + b] += Q[3 * a + k] * r[k] * Q[3 * b + k];
-                }
-        }
+    for (int i = 0; i < n; i++) {
+        double sig[9], l[3], Q[9], *Ri = st->R + 9 * i;
+        for (int a = 0; a < 9; a++) sig[a] = st->S[9 * i + a] - (a % 4 == 0 ? st->prs[i] : 0.0);
+        t3_sym_eigen(sig, l, Q);
+        double r[3];
+        for (int k = 0; k < 3; k++) r[k] = l[k] > 0 ? -eps_as * l[k] / (st->rho[i] * st->rho[i]) : 0.0;
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) { /* R = Q diag(r) Q^T */
+                Ri[3 * a + b] = 0;
+                for (int k = 0; k < 3; k++) Ri[3 * a + b] += Q[3 * a + k] * r[k] * Q[3 * b + k];
+            }
     }
-    const double *V0 = pcold(ps, PC_VOL0);
-    for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(V0[i]) : sqrt(V0[i]); /* once, not per pair */
+}
 
-    /* accelerations (3.18, stress, 3.19, 3.41, 3.30) and heat (3.42, 3.45-3.46) */
+/* Accelerations and heat rates, then the kick into st->vnew. Per particle:
+ * gravity and the body force; per neighbour the pressure (eq. 3.18) with the
+ * artificial viscosity's beta term (eq. 3.41, mu_ij of eq. 3.37), the
+ * deviatoric and artificial stresses, the viscosity (eq. 3.19) with no-slip
+ * walls (Morris et al. 1997, wall_frame), internal heat (eq. 3.45-3.46);
+ * then surface tension (eq. 3.30), external heat at surface particles (eq.
+ * 3.42) and the oven's Robin flux and heated colliders' contact beta (as
+ * MPM's, Ding et al. 2019 §6.6). */
+static void phase_forces(hearth_scene *s, double dt) {
+    struct sph_state *st = s->sph;
+    const hearth_sph_def *o = &s->def.sph;
+    const sph_cols c = cols_of(s);
+    const int n = c.n, dim = c.dim, *flags = c.flags, *mat = c.mat;
+    const double *x = c.x, *v = c.v, *m = c.m, *T = c.T;
+    const int *off = st->nl.off, *nb = st->nl.j;
+    const double eps_as = o->artificial_stress;
+    for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(c.V0[i]) : sqrt(c.V0[i]); /* once, not per pair */
     const double *gvec = s->def.gravity;
     const double Text = s->def.oven_temperature;
     /* Robin heat exchange (Ding et al. 2019 §6.6, the MPM solver's oven): beta
      * of the oven and of heated colliders, next to eq. 3.42's heat_ext */
     const double beta_oven = isfinite(Text) ? s->def.oven_beta : 0.0;
     int robin = beta_oven > 0;
-    for (int c = 0; c < s->ncol; c++) robin |= !isnan(s->cols[c].temperature) && s->cols[c].beta > 0;
+    for (int q = 0; q < s->ncol; q++) robin |= !isnan(s->cols[q].temperature) && s->cols[q].beta > 0;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0}, dTi = 0;
         if (s->body_force) {
             double bf[3] = {0, 0, 0};
             s->body_force(s->body_force_ud, s->t, x + 3 * i, bf);
-            for (int c = 0; c < dim; c++) a[c] += bf[c];
+            for (int q = 0; q < dim; q++) a[q] += bf[q];
         }
         const double ri = st->rho[i], Pi = st->prs[i] / (ri * ri), *Si = st->S + 9 * i;
         double wn[3] = {0, 0, 0}, da = 0, drag = 0;
@@ -577,9 +680,9 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
             const double hij = 0.5 * (st->h[i] + st->h[j]), rj = st->rho[j];
             const double g = sph_dw(dim, r, hij) / r; /* grad_i W = g d */
             double vij[3], vd = 0;
-            for (int c = 0; c < 3; c++) {
-                vij[c] = v[3 * i + c] - v[3 * j + c];
-                vd += vij[c] * d[c];
+            for (int q = 0; q < 3; q++) {
+                vij[q] = v[3 * i + q] - v[3 * j + q];
+                vd += vij[q] * d[q];
             }
             double Pij = Pi + st->prs[j] / (rj * rj); /* eq. 3.18 */
             if (o->av_beta > 0 && vd < 0) {          /* eq. 3.41, with mu_ij of eq. 3.37 */
@@ -588,7 +691,7 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
             }
             const double *Sj = st->S + 9 * j, lv = sph_lap_visc(dim, r, hij);
             const double visc = 0.5 * (st->mu[i] + st->mu[j]) * m[j] / (rj * ri) * lv; /* eq. 3.19 over rho_i */
-            /* a wall particle's velocity for eq. 3.19: Morris et al. 1997 (below) */
+            /* a wall particle's velocity for eq. 3.19: Morris et al. 1997 (wall_frame) */
             const int wj = wall && (flags[j] & PF_FIXED);
             const double beta = wj ? wall_beta(d, wn, da, dah) : 1.0;
             double fn = 0; /* f_ab^4 of the artificial stress */
@@ -598,12 +701,12 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
                 fn = f * f * f * f;
             }
             const double *Ri = st->R + 9 * i, *Rj = st->R + 9 * j;
-            for (int c = 0; c < dim; c++) {
+            for (int q = 0; q < dim; q++) {
                 double sd = 0;
-                for (int b = 0; b < 3; b++) sd += (Si[3 * c + b] / (ri * ri) + Sj[3 * c + b] / (rj * rj)) * d[b];
+                for (int b = 0; b < 3; b++) sd += (Si[3 * q + b] / (ri * ri) + Sj[3 * q + b] / (rj * rj)) * d[b];
                 if (fn > 0)
-                    for (int b = 0; b < 3; b++) sd += fn * (Ri[3 * c + b] + Rj[3 * c + b]) * d[b];
-                a[c] += m[j] * (-Pij * g * d[c] + sd * g) - (wj ? 0.0 : visc * vij[c]);
+                    for (int b = 0; b < 3; b++) sd += fn * (Ri[3 * q + b] + Rj[3 * q + b]) * d[b];
+                a[q] += m[j] * (-Pij * g * d[q] + sd * g) - (wj ? 0.0 : visc * vij[q]);
             }
             drag += wj ? visc * beta : 0.0;
             if (T && o->heat_int > 0) /* eq. 3.45-3.46 */
@@ -612,12 +715,12 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         if (o->surface_tension > 0 && st->surf[i]) { /* eq. 3.30 */
             const double *Ni = st->N + 3 * i, nn = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]);
             if (nn > 0)
-                for (int c = 0; c < dim; c++) a[c] -= o->surface_tension / ri * st->lapC[i] * Ni[c] / nn;
+                for (int q = 0; q < dim; q++) a[q] -= o->surface_tension / ri * st->lapC[i] * Ni[q] / nn;
         }
         if (T && o->heat_ext > 0 && st->surf[i]) { /* eq. 3.42 at surface particles; r_i from eq. 3.43 */
             double Tout = Text;
-            for (int c = 0; c < s->ncol; c++) { /* a heated collider within h is the outside instead */
-                const collider *cl = &s->cols[c];
+            for (int q = 0; q < s->ncol; q++) { /* a heated collider within h is the outside instead */
+                const collider *cl = &s->cols[q];
                 if (isnan(cl->temperature) || !collider_near(cl, x + 3 * i)) continue;
                 if (collider_sdf(cl, x + 3 * i, NULL) < st->h[i]) Tout = cl->temperature;
             }
@@ -639,8 +742,8 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
             const double ci = s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT], Vr = m[i] / st->rho0[i];
             const double sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
             double coef = beta_oven > 0 && st->surf[i] ? face * beta_oven : 0.0, Tr = Text;
-            for (int c = 0; c < s->ncol; c++) {
-                const collider *cl = &s->cols[c];
+            for (int q = 0; q < s->ncol; q++) {
+                const collider *cl = &s->cols[q];
                 if (isnan(cl->temperature) || !(cl->beta > 0) || !collider_near(cl, x + 3 * i)) continue;
                 if (!(collider_sdf(cl, x + 3 * i, NULL) < sp)) continue;
                 const double cS = face * cl->beta; /* the pan's temperature wins the ambient, areas add (as MPM) */
@@ -656,10 +759,19 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
          * to about 5 it would otherwise break the viscous dt limit, which is
          * set for fluid-fluid pairs (a channel at 100 Pa s blew up) */
         const int fixed = flags && (flags[i] & PF_FIXED);
-        for (int c = 0; c < 3; c++) st->vnew[3 * i + c] = fixed ? 0.0 : (v[3 * i + c] + dt * a[c]) / (1.0 + dt * drag);
+        for (int q = 0; q < 3; q++) st->vnew[3 * i + q] = fixed ? 0.0 : (v[3 * i + q] + dt * a[q]) / (1.0 + dt * drag);
     }
+}
 
-    /* XSPH (3.34) from the kicked velocities */
+/* XSPH (eq. 3.34, its epsilon the tuner of eq. 4.4) from the kicked
+ * velocities into the particles' v; the largest |a| for the force limit. */
+static void phase_xsph(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    const sph_cols c = cols_of(s);
+    const int n = c.n, dim = c.dim, *flags = c.flags;
+    const double *x = c.x, *m = c.m;
+    double *v = c.v;
+    const int *off = st->nl.off, *nb = st->nl.j;
     double amax = 0;
 #pragma omp parallel for schedule(static) reduction(max : amax) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
@@ -677,17 +789,29 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
                 sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
                 const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
                 const double w = 2 * m[j] / (st->rho[i] + st->rho[j]) * sph_w(dim, r, 0.5 * (st->h[i] + st->h[j]));
-                for (int c = 0; c < dim; c++) corr[c] += w * (st->vnew[3 * j + c] - wi[c]);
+                for (int q = 0; q < dim; q++) corr[q] += w * (st->vnew[3 * j + q] - wi[q]);
             }
-        for (int c = 0; c < 3; c++) vi[c] = wi[c] + st->xsph[i] * corr[c];
+        for (int q = 0; q < 3; q++) vi[q] = wi[q] + st->xsph[i] * corr[q];
         if (dim == 2) vi[2] = 0;
         const double an = sqrt(st->acc[3 * i] * st->acc[3 * i] + st->acc[3 * i + 1] * st->acc[3 * i + 1] +
                                st->acc[3 * i + 2] * st->acc[3 * i + 2]);
         if (an > amax) amax = an;
     }
     st->amax = amax;
+}
 
-    /* drift, colliders (3.31-3.33) and walls; heat */
+/* Temperatures forward by their rates; then the drift (eq. 3.57-3.58; the
+ * second half under leapfrog), colliders and box walls with the thesis's
+ * response (eq. 3.31-3.33: v = beta_c v_t - alpha_c v_n), and the report:
+ * kinetic energy, the fastest particle, the largest sound speed, and the
+ * first particle with a non-finite x or v or a bad wave speed. */
+static void phase_drift(hearth_scene *s, double dt, step_report *rep) {
+    struct sph_state *st = s->sph;
+    const hearth_sph_def *o = &s->def.sph;
+    const sph_cols c = cols_of(s);
+    const int n = c.n, dim = c.dim, *flags = c.flags;
+    const double *m = c.m;
+    double *x = c.x, *v = c.v, *T = c.T, *Tmax = c.Tmax;
     const double drift = o->leapfrog ? 0.5 * dt : dt;
     double ke = 0, vmax = 0, cmax = 0;
     int fastest = -1;
@@ -698,9 +822,9 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         }
         if (flags && (flags[i] & PF_FIXED)) continue;
         double *xi = x + 3 * i, *vi = v + 3 * i;
-        for (int c = 0; c < dim; c++) xi[c] += drift * vi[c];
-        for (int c = 0; c < s->ncol; c++) {
-            const collider *cl = &s->cols[c];
+        for (int q = 0; q < dim; q++) xi[q] += drift * vi[q];
+        for (int q = 0; q < s->ncol; q++) {
+            const collider *cl = &s->cols[q];
             if (!collider_near(cl, xi)) continue;
             double nrm[3];
             const double phi = collider_sdf(cl, xi, nrm);
@@ -743,34 +867,82 @@ hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         /* particle_constants keeps 0 for a wave speed that is NaN, inf or <= 0: the guard names the plugin */
         if (!(st->c0[i] > 0) && rep->particle < 0) rep->kind = FAIL_WAVE, rep->particle = i;
     }
-    /* browning (eq. 4.5 with G of eq. 4.6, T0 and Tf of the XSPH line) */
-    if (T) {
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-        for (int i = 0; i < n; i++) {
-            double u = m[i] / st->rho[i] * (0.9 * (T[i] - o->xsph_T0) / (o->xsph_Tf - o->xsph_T0) + 0.05) *
-                       sph_w(dim, 0, st->h[i]);
-            for (int k = off[i]; k < off[i + 1]; k++) {
-                const int j = nb[k];
-                double d[3];
-                sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-                const double G = 0.9 * (T[j] - o->xsph_T0) / (o->xsph_Tf - o->xsph_T0) + 0.05; /* eq. 4.6 */
-                u += m[j] / st->rho[j] * G *
-                     sph_w(dim, sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 0.5 * (st->h[i] + st->h[j]));
-            }
-            st->brown[i] = u < 0 ? 0 : u > 1 ? 1 : u;
-        }
-    } else
-        memset(st->brown, 0, sizeof(double) * (size_t)n);
     rep->kinetic = ke;
     rep->max_speed = vmax;
     rep->fastest = fastest;
     rep->c_max = cmax;
+}
+
+/* The browning value (eq. 4.5 with G of eq. 4.6, T0 and Tf of the XSPH
+ * line), 0 without the temperature field. */
+static void phase_browning(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    const hearth_sph_def *o = &s->def.sph;
+    const sph_cols c = cols_of(s);
+    const int n = c.n, dim = c.dim;
+    const double *x = c.x, *m = c.m, *T = c.T;
+    const int *off = st->nl.off, *nb = st->nl.j;
+    if (!T) {
+        memset(st->brown, 0, sizeof(double) * (size_t)n);
+        return;
+    }
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        double u = m[i] / st->rho[i] * (0.9 * (T[i] - o->xsph_T0) / (o->xsph_Tf - o->xsph_T0) + 0.05) *
+                   sph_w(dim, 0, st->h[i]);
+        for (int k = off[i]; k < off[i + 1]; k++) {
+            const int j = nb[k];
+            double d[3];
+            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
+            const double G = 0.9 * (T[j] - o->xsph_T0) / (o->xsph_Tf - o->xsph_T0) + 0.05; /* eq. 4.6 */
+            u += m[j] / st->rho[j] * G *
+                 sph_w(dim, sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 0.5 * (st->h[i] + st->h[j]));
+        }
+        st->brown[i] = u < 0 ? 0 : u > 1 ? 1 : u;
+    }
+}
+
+/* ---- the step ----------------------------------------------------------------- */
+
+/* One SPH step: the phases in order (the file's header lists them with
+ * their equations). A phase reads what the ones before it left in
+ * struct sph_state and the particles; a failed plugin stress ends the step
+ * early with rep naming the particle, for the guard. */
+static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err) {
+    const int n = s->ps.n;
+    memset(rep, 0, sizeof *rep);
+    rep->particle = -1;
+    rep->fastest = -1;
+    rep->mover = -1;
+    hearth_status e = ensure(s, n > 0 ? n : 1, err);
+    if (e) return e;
+    struct sph_state *st = s->sph;
+    if (st->n != n) /* particles added or removed since the last step: final densities start over */
+        for (int i = 0; i < n; i++) st->rhof[i] = st->Tprev[i] = NAN;
+    st->valid = 0;
+    if (n == 0) {
+        st->n = 0;
+        return HEARTH_OK;
+    }
+    if ((e = scene_ensure_scratch(s, n, err))) return e;
+
+    phase_predrift(s, dt);
+    if ((e = phase_neighbours(s, err))) return e;
+    if ((e = phase_density(s, err))) return e;
+    phase_kinematics(s);
+    phase_pressure(s);
+    if (phase_stress(s, dt, rep)) return HEARTH_OK; /* the guard reads rep */
+    phase_artificial_stress(s);
+    phase_forces(s, dt);
+    phase_xsph(s);
+    phase_drift(s, dt, rep);
+    phase_browning(s);
     st->n = n;
     st->valid = 1;
     return HEARTH_OK;
 }
 
-double sph_stable_dt(const hearth_scene *s) {
+static double sph_stable_dt(const hearth_scene *s) {
     const hearth_sph_def *o = &s->def.sph;
     const particles *ps = &s->ps;
     const int dim = s->def.dim;
@@ -785,7 +957,7 @@ double sph_stable_dt(const hearth_scene *s) {
         const double V0 = pcold(ps, PC_VOL0)[i], h = o->h_factor * (dim == 3 ? cbrt(V0) : sqrt(V0));
         if (h < hmin) hmin = h;
         if (p[ms->density_index] < rhomin) rhomin = p[ms->density_index];
-        const int vi = pindex(ms->m, "viscosity");
+        const int vi = s->sph->visc_index[m]; /* a particle has a material, so the state exists */
         if (vi >= 0) {
             const double nu = p[vi] / p[ms->density_index];
             if (nu > numax) numax = nu;
@@ -829,3 +1001,23 @@ const double *sph_particle_values(const hearth_scene *s, const char *which) {
     if (!strcmp(which, "surface")) return st->surf;
     return NULL;
 }
+
+/* No grid, so no margin: particles may fill the whole box. */
+static void sph_region(const hearth_scene *s, double lo[3], double hi[3]) {
+    for (int d = 0; d < 3; d++) lo[d] = s->def.lo[d], hi[d] = s->def.hi[d];
+}
+
+const solver sph_solver = {
+    .name = "sph",
+    .check = sph_check_def,
+    .material_added = sph_material_added,
+    .stable_dt = sph_stable_dt,
+    .step = sph_step,
+    .free = sph_free,
+    .region = sph_region,
+    .particle_values = sph_particle_values,
+    /* temperature from the heat field, porosity from plastic_J (phase_stress); no water */
+    .supplies = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY,
+    .outputs = SOLVER_OUT_BROWNING,
+    .can_checkpoint = 0, /* its options and final densities (eq. 3.52) are not in the format yet */
+};

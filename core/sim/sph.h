@@ -8,14 +8,13 @@
 
 struct sph_state;
 
-/// One SPH step of length dt (the scene's step loop calls it instead of mpm_step).
-hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err);
-/// The stable step: CFL (as MPM: cfl dx / (speed + sound speed)), viscous
-/// (dt_viscous rho h^2 / mu), force (dt_force sqrt(h / |a|)) and heat limits.
-double sph_stable_dt(const hearth_scene *s);
-/// Check the SPH options of a scene definition.
+/* The scene reaches the step, its stable dt (CFL as MPM's, cfl dx / (speed
+ * + sound speed); viscous, dt_viscous rho h^2 / mu; force, dt_force
+ * sqrt(h / |a|); heat), the state's free and the region particles may fill
+ * through sph_solver (solver.h). */
+
+/// Check the SPH options of a scene definition (sph_solver.check).
 hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err);
-void sph_free(struct sph_state *st);
 
 /// Per-particle results of the last step, in the scene's current particle
 /// order; NULL before the first step or after particles were added/removed.

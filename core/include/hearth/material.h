@@ -43,8 +43,9 @@
  *    - Under the SPH solver a parameter named `viscosity` (Pa s) is the
  *      core's: SPH applies it itself (Morris et al. viscous term, eq. 3.19 of
  *      Rodriguez-Arenas 2011, with no-slip walls), passes 0 for it to stress,
- *      and limits the step with its kinematic value viscosity/density. Under
- *      MPM the plugin applies it, like any other parameter.
+ *      and limits the step with its kinematic value viscosity/density. The
+ *      name is looked up once per material, when it is added to an SPH
+ *      scene. Under MPM the plugin applies it, like any other parameter.
  *
  * 4. Wave speed. wave_speed must be finite and > 0 over the whole schema. At
  *    load the loader calls init and then wave_speed on a fresh state at the
@@ -124,9 +125,10 @@ typedef struct hearth_point {
     double F[9];      ///< total deformation gradient at the END of the step (already updated by the solver)
     double dt;        ///< step (s); 0 means "evaluate only": do not advance time-dependent state
     /// degrees C, (0..1), (0..1); NaN when the scene does not carry the field. Declare the ones the law
-    /// reads in `needs`: HEARTH_NEEDS_TEMPERATURE turns the temperature field on. Today MPM fills porosity
-    /// (from plastic_J and the core's `porosity`) when the material needs it or the scene has gas;
-    /// SPH passes NaN for porosity and saturation.
+    /// reads in `needs`: HEARTH_NEEDS_TEMPERATURE turns the temperature field on. MPM and SPH fill
+    /// porosity (from plastic_J and the core's `porosity`) when the material needs it (MPM also when the
+    /// scene has gas); SPH carries no saturation, and a material that needs it is refused when added
+    /// to an SPH scene.
     double temperature, porosity, saturation;
     const double *p;  ///< resolved parameters in schema order (curves evaluated, blends applied), nparams doubles
     double *state;    ///< plugin-owned per-point state, state_size doubles (may be NULL when state_size is 0)
