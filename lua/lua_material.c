@@ -55,7 +55,7 @@ static int l_blend(lua_State *L) {
             out[i] = fmin(fmax(out[i], m->params[i].min), m->params[i].max); /* rounding only */
         }
     else {
-        hearth_plugin_call_enter(m, "blend"); /* a crash in it names the plugin (core/app/crash.c) */
+        hearth_plugin_call_enter(m, "blend"); /* a crash in it names the plugin (app/crash.c) */
         code = m->blend(k, alpha, pk, out);
         hearth_plugin_call_leave();
     }

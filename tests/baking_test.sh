@@ -186,7 +186,7 @@ PY
 # Fig. 11: the pancake is flipped: after the flip event the spatula lifts
 # the batter (its mean height rises well above its resting height), carries
 # it over the pivot and lays it down on the far side, where it rests again.
-# Before the thermal expansion stress used the elastic J (core/sim/mpm.c),
+# Before the thermal expansion stress used the elastic J (core/sim/solver/mpm.c),
 # the guard stopped this run mid-turn.
 claim_pancake_flips)
     run pancake --set dx=0.004 --set until_t=1.2 --set frames=12 >/dev/null

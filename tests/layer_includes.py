@@ -22,9 +22,8 @@ import sys
 import tempfile
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]', re.M)
-# the layers that must see only core/include; app/ and lua/ at the top level
-# too, for when the folders move (issue #16's layout)
-LAYERS = ("core/app", "app", "lua")
+# the layers above core/sim, which must see only core/include
+LAYERS = ("app", "lua")
 
 
 def sim_headers(root):
@@ -76,33 +75,33 @@ def case_tree(root):
     found = violations(root)
     for v in found:
         print("FAIL:", v, file=sys.stderr)
-    if not os.path.isfile(os.path.join(root, "core", "sim", "grid.h")):
-        sys.exit(f"FAIL: {root} has no core/sim/grid.h; is it the source root?")
+    if not os.path.isfile(os.path.join(root, "core", "sim", "solver", "grid.h")):
+        sys.exit(f"FAIL: {root} has no core/sim/solver/grid.h; is it the source root?")
     if found:
         sys.exit(f"FAIL: {len(found)} private include(s) above core/sim")
-    print("core/app and lua include only public headers")
+    print("app and lua include only public headers")
 
 
 def case_catches(root):
     tmp = tempfile.mkdtemp()
     try:
-        for d in ("core/sim/io", "core/include/hearth", "core/app/tui", "lua"):
+        for d in ("core/sim/solver", "core/sim/io", "core/include/hearth", "app/tui", "lua"):
             os.makedirs(os.path.join(tmp, d))
-        for h in ("core/sim/grid.h", "core/sim/io/atomic_file.h", "core/include/hearth/hearth.h"):
+        for h in ("core/sim/solver/grid.h", "core/sim/io/atomic_file.h", "core/include/hearth/hearth.h"):
             open(os.path.join(tmp, h), "w").write("/* stub */\n")
         bad = {
-            "core/app/a.c": '#include "grid.h"\n',                 # by name: the old include path
-            "core/app/tui/b.c": '#include "../../sim/grid.h"\n',   # a relative path into core/sim
+            "app/a.c": '#include "grid.h"\n',                 # by name: the old include path
+            "app/tui/b.c": '#include "../../core/sim/solver/grid.h"\n',  # a relative path into core/sim
             "lua/c.c": '#  include <atomic_file.h>\n',             # angle brackets, a subfolder's header
             "lua/d.h": '#include "grid.h"\n',                      # beside a copy...
             "lua/grid.h": "/* a copy */\n",                        # ...of a private header
         }
-        good = {"core/app/ok.c": '#include "hearth/hearth.h"\n#include <stdio.h>\n'}
+        good = {"app/ok.c": '#include "hearth/hearth.h"\n#include <stdio.h>\n'}
         for p, t in {**bad, **good}.items():
             open(os.path.join(tmp, p), "w").write(t)
         found = violations(tmp)
         files = {v.split(":")[0] for v in found}
-        want = {"core/app/a.c", "core/app/tui/b.c", "lua/c.c", "lua/d.h"}
+        want = {"app/a.c", "app/tui/b.c", "lua/c.c", "lua/d.h"}
         if files != want:
             sys.exit(f"FAIL: the check flagged {sorted(files)}, expected {sorted(want)}:\n" + "\n".join(found))
         print(f"the check flags all {len(want)} kinds of private include and passes the public one")

@@ -7,9 +7,9 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "../core/app/tui/tui_draw.h"
-#include "../core/app/tui/tui_layout.h"
-#include "../core/app/tui/tui_prompt.h"
+#include "../app/tui/tui_draw.h"
+#include "../app/tui/tui_layout.h"
+#include "../app/tui/tui_prompt.h"
 #include "test.h"
 
 /* A 2 x 4 field (row 0 at the bottom): column 0 holds 0, 1, 2, 3 going up,

@@ -5,7 +5,7 @@
 command -v valgrind >/dev/null || { echo "$(basename "$0"): needs valgrind" >&2; exit 2; }
 [ -f "$root/build/nn/build.ninja" ] || meson setup "$root/build/nn" "$root" --buildtype=release -Dnative=false >/dev/null
 ninja -C "$root/build/nn" >/dev/null
-nn_hearth=$root/build/nn/core/app/hearth
+nn_hearth=$root/build/nn/app/hearth
 
 # refs COMMAND...: the instructions COMMAND executes, one thread.
 refs() {

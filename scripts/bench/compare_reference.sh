@@ -20,7 +20,7 @@ ref_src="$HEARTH_ROOT/../shared/bench/mpm_reference.c"
 [ -f "$ref_src" ] || { echo "compare_reference: $ref_src not found" >&2; exit 2; }
 ref_bin=$(mktemp -d)/mpm_reference
 cc -O3 -march=native -o "$ref_bin" "$ref_src" -lm
-hearth="$HEARTH_ROOT/build/release/core/app/hearth"
+hearth="$HEARTH_ROOT/build/release/app/hearth"
 
 ref=$("$ref_bin" "$cells" "$steps")
 h1=$("$hearth" bench --threads 1 --cells "$cells" --steps "$steps")

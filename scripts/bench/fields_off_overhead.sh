@@ -23,6 +23,6 @@ count() { # count HEARTH STEPS -> instructions
         "$1" bench --threads 1 --cells "$cells" --steps "$2" --dim 3 2>&1 | awk '/refs/ {gsub(",", "", $NF); print $NF}'
 }
 per_step() { python3 -c "print(($(count "$1" 10) - $(count "$1" 1)) / 9)"; }
-old=$(per_step "$tmp/old/build/nn/core/app/hearth")
-new=$(per_step "$root/build/nn/core/app/hearth")
+old=$(per_step "$tmp/old/build/nn/app/hearth")
+new=$(per_step "$root/build/nn/app/hearth")
 python3 -c "print('instructions per step: %s %.4g, now %.4g, ratio %.4f' % ('$rev', $old, $new, $new / $old))"

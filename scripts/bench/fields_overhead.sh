@@ -9,7 +9,7 @@
 # instructions and does not swing with load.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-hearth=${HEARTH:-$root/build/release/core/app/hearth}
+hearth=${HEARTH:-$root/build/release/app/hearth}
 cells=${1:-48} steps=${2:-20} dim=${3:-3} rounds=${4:-5}
 [ -x "$hearth" ] || { echo "fields_overhead: build first (scripts/hearth builds $hearth)" >&2; exit 2; }
 log=$(mktemp)

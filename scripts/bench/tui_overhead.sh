@@ -17,7 +17,7 @@ steps=${2:-300}
 hearth_install_deps tmux
 build=${HEARTH_BUILD:-build/release} # a release build; HEARTH_BUILD=build/dev to reuse another
 hearth_build "$build" --buildtype=release
-hearth="$HEARTH_ROOT/$build/core/app/hearth"
+hearth="$HEARTH_ROOT/$build/app/hearth"
 scene="$HEARTH_ROOT/scripts/bench/tui_bench.lua"
 tmp=$(mktemp -d)
 sock="hearth-tui-bench-$$"

@@ -6,7 +6,7 @@
 # unless --out; docs/trade/README.md says what they show.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-full=0 hearth="$root/build/release/core/app/hearth" out="" jobs=2
+full=0 hearth="$root/build/release/app/hearth" out="" jobs=2
 while [ $# -gt 0 ]; do
     case $1 in
         --full) full=1 ;;

@@ -276,7 +276,7 @@ def main():
             print(f"DRIFT {' / '.join(k)}: table says '{want.get(k)}', the run gives '{got.get(k)}'")
         if drift:
             print(f"matrix: {len(drift)} outcomes differ from {a.check}; if the change is intended, regenerate it with\n"
-                  f"  tests/extremes/matrix.py --hearth build/release/core/app/hearth --write docs/stability.md")
+                  f"  tests/extremes/matrix.py --hearth build/release/app/hearth --write docs/stability.md")
             status = 1
     sys.exit(status)
 

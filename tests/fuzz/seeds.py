@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Write the generated part of the fuzz seed corpora (tests/fuzz/corpus/).
 
-Run from anywhere: python3 tests/fuzz/seeds.py [--hearth BUILD/core/app/hearth]
+Run from anywhere: python3 tests/fuzz/seeds.py [--hearth BUILD/app/hearth]
 (the checkpoint seeds need a hearth binary to save them). Files are small and
 deterministic, so rerunning gives the same bytes. Hand-picked seeds (the
 shipped masks, crash reproducers found by scripts/fuzz) live next to these and

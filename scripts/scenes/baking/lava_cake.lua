@@ -14,7 +14,7 @@
 -- the material reaches 5 mm right of the centre at the cut, 19 mm 0.6 s
 -- later). The default run costs ~10 s of CPU.
 -- Until the core's thermal expansion stress took the elastic J^E (it took
--- the total J: core/sim/mpm.c), the batter, which yields in tension, swelled
+-- the total J: core/sim/solver/mpm.c), the batter, which yields in tension, swelled
 -- without bound next to the hot ring: the guard stopped the bake at t ~ 0.7 s
 -- unless dt was capped at 5e-5 s, and then stopped the run 0.06 s after the
 -- cut. --set dt_max=5e-5 still caps dt.

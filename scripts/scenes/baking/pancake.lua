@@ -21,8 +21,8 @@
 -- stay on the spatula. The turn used to stop (det F <= 0 at ~120 degrees):
 -- the core's thermal expansion stress grew as J^2 with the plastic dilation
 -- of the warm batter (Cam-clay yields in tension), which fed itself; it now
--- takes the elastic J^E (core/sim/mpm.c). The guard also no longer calls the
--- energy the spatula gives a runaway (core/sim/guard.c).
+-- takes the elastic J^E (core/sim/solver/mpm.c). The guard also no longer calls the
+-- energy the spatula gives a runaway (core/sim/solver/guard.c).
 -- Writes, under hearth-out/pancake/: heat_%04d.png (temperature) and
 -- pancake.csv: over time, the temperature of the pancake's face on the pan and
 -- of its top face (-1 while no batter lies on the pan at its centre), whether

@@ -28,7 +28,7 @@
 -- The grips: a "sticky" collider holds only the grid nodes inside it, so a
 -- dough's end in it was squeezed out to its surface and the dough peeled
 -- off when pulled; a grip carries the particles inside it and holds the
--- nodes within a cell of its surface (core/sim/colliders.c, mpm.c).
+-- nodes within a cell of its surface (core/sim/solver/colliders.c, mpm.c).
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.002, until_t = 0.4, frames = 4, taus = { 300, 1000, 3000 },
   etas = { 1e6, 1e8, 1e10 }, speed = 0.02, spin = 0.5, E = 4e4 }

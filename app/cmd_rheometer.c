@@ -1,5 +1,5 @@
 /* cmd_rheometer.c: `hearth rheometer`, the homogeneous virtual rheometer
- * (core/sim/rheometer.c) on a plugin material, a library sauce or a blend of
+ * (core/sim/lab/rheometer.c) on a plugin material, a library sauce or a blend of
  * library sauces; and the log-log flow-curve plot that `hearth fit` shares. */
 #include <errno.h>
 #include <math.h>

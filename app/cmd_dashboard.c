@@ -1,5 +1,5 @@
 /* cmd_dashboard.c: `hearth` and `hearth SCENE.lua`, the live dashboard
- * (core/app/tui/). This file reads the command line and picks the scene;
+ * (app/tui/). This file reads the command line and picks the scene;
  * the dashboard itself is tui_run. */
 #include <stdio.h>
 #include <string.h>
