@@ -5,7 +5,22 @@
  * Each run reports a metric; against a reference (the finest run or an
  * analytic value) that gives an error, and along a refinement knob (dx, dt_max,
  * cfl or ppc) the observed order of convergence. Results go to a CSV, a
- * log-log PNG of error against wall time with the Pareto front, and a table. */
+ * log-log PNG of error against wall time with the Pareto front, and a table.
+ *
+ * A run is `hearth run SCENE --metric NAME --metric-out FILE --set k=v...`
+ * (wall time and peak memory from wait4), --jobs at a time with
+ * cores / jobs OpenMP threads each. Knobs are plain --sets: init.lua applies
+ * a name the scene declares in h.params to the parameter, and otherwise to
+ * the scene setting of that name (the settings settings.c marks as knobs,
+ * listed by `hearth help scene` and `hearth trade --help`; ppc in every
+ * s:add; blend in h.mix). Metrics are h.metric(name, fn) or built in
+ * (h.builtin_metrics: height, spread, centre_temperature, front, volume,
+ * water_lost), evaluated by `hearth run --metric` after the scene ran. The
+ * refinement knob (the first of dx, dt_max, cfl, ppc with several values)
+ * gives the series and observed orders; the plot is a <hearth/plot.h> plot
+ * like the rheometer's: a series per refinement ladder (coarse to fine,
+ * joined), the Pareto front as rings behind. scripts/trade/ holds the
+ * default ladders, docs/trade/ their results. */
 #ifndef _DEFAULT_SOURCE
 #define _DEFAULT_SOURCE /* wait4 and struct rusage's ru_maxrss */
 #endif

@@ -87,7 +87,7 @@ static int cmp_int(const void *a, const void *b) { return *(const int *)a - *(co
 
 /* 20k particles (50k with SPH_BENCH_N=50000; 3D, ~40 neighbours each): the cell list over particles sorted
  * by cell and the kd-tree find the same neighbour sets. Prints both timings
- * (the comparison reported in docs/architecture.md; no timed assertion). */
+ * (the comparison reported in sph_neighbours.h; no timed assertion). */
 TEST(sph_neighbours_agree) {
     const int n = getenv("SPH_BENCH_N") ? atoi(getenv("SPH_BENCH_N")) : 20000; /* 50000 for the reported numbers */
     double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, hh = 0.06 * cbrt(50000.0 / n); /* ~45 neighbours at any n */

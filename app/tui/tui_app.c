@@ -6,7 +6,18 @@
  * second and spaced so drawing takes at most DRAW_SHARE of the wall time
  * (a big scene's slice probes cost more than a small scene's). A thread per
  * simulation was the alternative; it would need every Lua command to lock the
- * scene, and Lua is not thread-safe, so the budget wins. */
+ * scene, and Lua is not thread-safe, so the budget wins.
+ *
+ * Scene files and prompt commands run as Lua coroutines ("jobs"); with
+ * hl_options.yield_steps set, s:run and s:step yield after every step
+ * (hearth_scene_advance_steps(s, t_end, 1)), so the loop steps a job or the
+ * bare scene until the next redraw is due, and a long s:run{...} typed at the
+ * prompt never freezes the screen; Space pauses it. Errors and guard stops
+ * pause the run and go to the log. The terminal is restored on q,
+ * Ctrl-C/SIGTERM/SIGHUP (a flag the loop reads) and crash signals (a handler
+ * calls endwin and re-raises: tui_screen.c). Truecolor needs a terminal
+ * description with direct colour (COLORS >= 2^24); otherwise 256 colours
+ * (tui_draw.c picks the mode). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

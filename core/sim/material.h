@@ -18,9 +18,13 @@
  * state) and says in a material_env what its solver supplies: the
  * temperature, saturation and porosity to pass, and which of the core's
  * coupling terms to add. Where the callers disagree on a field (the plugin
- * check passes porosity 0.1, the rheometer 0, MPM, SPH and the probes
- * derive it from J^P), each passes its own value explicitly, so the
- * disagreement is visible at the call rather than hidden in a copy.
+ * check passes porosity 0.1 and saturation 0.5, the rheometer 0 and 0; MPM
+ * derives the porosity from J^P when the material needs it or the scene has
+ * gas, SPH when the material needs it, the probes always; the guard passes
+ * the J^P-derived value it also uses for its own terms), each passes its own
+ * value explicitly, so the disagreement is visible at the call rather than
+ * hidden in a copy. Only MPM asks for the coupling terms; the door is checked
+ * against each in-tree plugin called directly in tests/unit_material.c.
  *
  * The door is header-only and always inlined: MPM's P2G instantiates it per dimension and
  * field set, and a call there would cost instructions on the hot path. */

@@ -1,5 +1,24 @@
 /* scene.c: scene lifetime, materials, particles, colliders, and the step loop
- * with its guard and rollback. */
+ * with its guard and rollback.
+ *
+ * A scene pays only for the fields it uses. A momentum-only scene has the core
+ * particle columns and four grid channels. Temperature (with its running
+ * maximum and the particle flags) turns on when a body is given a
+ * temperature, the scene an oven, or a material a temperature curve, a
+ * leavening rate or a need for temperature; the grid then carries the heat
+ * channels (grid.h CH_*). CO2 turns on with a material's gas_rate > 0. Water
+ * (water mass and initial saturation columns; the relative flux column only
+ * with the water_momentum switch, which reads it back) turns on when a body
+ * is given a saturation, a collider is wet, or a material has
+ * water_diffusivity, evaporation or water_stiffness > 0 or a plugin needs the
+ * saturation (water_material_wants). Probing a field that is not live says
+ * how to make it live (probe.c). Field properties (conductivity, specific
+ * heat, expansion, gas rate, porosity, ...) are core parameters every
+ * material accepts next to its plugin's own (params.c, hearth_core_params).
+ *
+ * scene_add_material is the core's internal path for adding a material
+ * (mixing.c adds a mixture's first constituent through it, not through the
+ * public hearth_scene_add_material). */
 #include <float.h>
 #include <limits.h>
 #include <math.h>

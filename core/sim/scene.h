@@ -4,7 +4,10 @@
  * value: the materials (material.h), heat (thermal.h), the boundary
  * (boundary.h), water (water.h), mixing (mixing.h) and, behind a pointer,
  * SPH (sph.c). Only the owning module writes its struct. Gas keeps no
- * scene-level state (its column lives with the particles). */
+ * scene-level state (its column lives with the particles). Each init
+ * allocates nothing and each free returns its struct to that state, so a free
+ * is safe twice (unit_fields: fields_init_allocates_nothing,
+ * fields_free_releases_state). */
 #ifndef HEARTH_SCENE_H
 #define HEARTH_SCENE_H
 #include <stdint.h>

@@ -257,7 +257,14 @@ h.library.sph = (require "hearth.sph_library")(h)
 
 --- h.mix{ {params_a, 0.5}, {params_b, 0.5}, plugin = "von_mises_sauce" }: one parameter set
 --- blended by the plugin's own blend rule (Nagasawa et al. eq. 28-31 for sauces).
---- The scene's `blend` key decides how a body made of it is simulated.
+--- The scene's `blend` key decides how a body made of it is simulated: that blend
+--- ("nonlinear"), the weighted mean of every parameter ("linear", core.blend(..., "linear")),
+--- or one material per constituent drawn per particle with the ratios ("labels", through
+--- hearth_scene_body_labels). With h.scene{mixing = "dynamic"} the h.mix bodies instead
+--- share one mixture material (hearth_scene_add_mixture, mixing.c): each particle keeps
+--- its initial ratios as a label, takes dynamic ratios from its neighbours through the
+--- grid every step (Nagasawa et al. eq. 43-44), and its parameters are the plugin's
+--- blend at them.
 function h.mix(t)
   if type(t) ~= "table" or #t < 1 then error("h.mix: expected { {params, ratio}, ... }", 2) end
   check_keys(t, setmetatable({ plugin = true }, { __index = function(_, k) return math.type(k) == "integer" end }),

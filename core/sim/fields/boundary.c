@@ -13,7 +13,10 @@
  * S_p = (9 pi/16 V_p^2)^(1/3): with one pick per boundary node the latter
  * counts about a third of a flat surface at 8 particles per cell, and the
  * heat slab test misses by far more than 1e-2 (see thermal.c). A particle
- * picked by several nodes (a corner) adds their areas. */
+ * picked by several nodes (a corner) adds their areas. At the ends of a face
+ * this over- or under-counts about one node row (see tests/unit_water.c,
+ * `water_drying_vs_fd`, and the heat slab's first-order convergence in
+ * docs/trade/). */
 #include "boundary.h"
 
 #include <math.h>

@@ -19,7 +19,12 @@
  * of contact area (a band of thickness dx sums to the contact area).
  *
  * The expansion term uses absolute temperature (theta + 273.15): in degrees C
- * it would change sign at the freezing point. */
+ * it would change sign at the freezing point.
+ *
+ * FLIP keeps heat exactly but not a maximum principle: where two materials
+ * share nodes a particle can overshoot (seen: 110 degC from a 90 degC start in
+ * `heat_insulated_conservation_explicit`); the scene's heat_flip < 1 blends
+ * toward PIC, which keeps one (`heat_flip_pic_bounds`). */
 #include "thermal.h"
 
 #include <math.h>

@@ -13,7 +13,8 @@
  * Particles carry their water mass m_p^w (eq. 15) and the saturation is
  * m_p^w / (rho_0^w J V_0): the water rides with the solid exactly, which is
  * what the divergence term of eq. 25 approximates in the paper's Eulerian
- * form, so that term is not needed here. Nodes get water mass and water
+ * form, so that term is not needed here. The saturation is floored at
+ * WATER_SATURATION_FLOOR (1e-4, the paper's "never completely dry"). Nodes get water mass and water
  * capacity sum rho_0^w V_p w_ip (eq. 15, 18), hence saturation s_i. The flux
  * is evaluated from the current node saturations (eq. 22) and gives the node
  * mass change (eq. 25):

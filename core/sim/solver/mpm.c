@@ -5,7 +5,8 @@
  * with D = dx^2/4 I, and the APIC affine matrix C_p is the velocity gradient
  * that advances F. We chose it over the classic B-spline gradient form because
  * it needs no stored stress or velocity gradient (one plugin call per particle
- * per step, fused into P2G) and keeps linear and angular momentum exactly.
+ * per step, fused into P2G) and keeps linear and angular momentum exactly
+ * (`transfer_conservation_*`, `rotating_disc`).
  *
  * Step order (design notes): sort particles into blocks, then per particle
  * F <- (I + dt C) F and the plugin's stress, fused into P2G; grid update with
@@ -15,7 +16,28 @@
  * colour are two blocks apart, and a block's particles touch only itself and
  * the next block on each axis, so no two threads ever write the same node and
  * every node sums its contributions in the same order whatever the thread
- * count. No atomics. */
+ * count. No atomics.
+ *
+ * P2G scatters each particle into a dense 6^dim tile, then adds the tile into
+ * its block and the block's +1 neighbours. The fields ride these passes when
+ * they are live (see transport.c): P2G also scatters heat capacity and
+ * C theta, water mass and capacity, and records each particle's volume
+ * J V_0; G2P hands out the nodes' changes of temperature and saturation and
+ * integrates CO2 over the step. G2P also records the largest distance a
+ * particle was moved (dt |v| from the grid, before a wall or collider stops
+ * it), so the guard sees a jump of many cells onto a floor as a CFL stop.
+ *
+ * `transfer = "pic"` drops the affine momentum in P2G (C still advances F):
+ * dissipative, for comparison (`transfer_pic_dissipates`). `heat_flip` blends
+ * the particles' temperature from FLIP (1, eq. 21, exact in heat) toward PIC
+ * (0, the nodes' value, which keeps a maximum principle: `heat_flip_pic_bounds`).
+ * Both are knobs of `hearth trade`.
+ *
+ * Cost, in callgrind instructions on `hearth bench --dim 3 --cells 24`
+ * (23391 particles, one thread, per step), when the plugin call record, the
+ * wave-speed check and the move record came in: P2G 37.16M -> 37.54M (+1.0%),
+ * G2P 34.68M -> 35.29M (+1.8%), the whole step 75.26M -> 76.24M (+1.3%).
+ * The 3D benchmark holds 281 bytes per particle, grid included. */
 #include <float.h>
 #include <math.h>
 #include <string.h>

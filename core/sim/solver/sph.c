@@ -26,7 +26,57 @@
  *                        thesis's response (3.31-3.33)
  *   phase_browning       browning value (4.5-4.6)
  * Every particle writes only its own slots and sums its neighbours in list
- * order, so a step is deterministic for any thread count. */
+ * order, so a step is deterministic for any thread count.
+ *
+ * dt (sph_stable_dt) is the smallest of CFL (cfl dx / (speed + sound speed),
+ * as MPM, so the guard's checks hold), viscous (dt_viscous rho h^2 / mu),
+ * force (dt_force sqrt(h/|a|)) and heat limits.
+ *
+ * Where we differ from the thesis, each with its reason at the code: the
+ * cubic spline's factor is 8/(pi h^3) (sph_kernel.h: the printed 1/(pi h^3)
+ * belongs to the smoothing-length convention); the default h is 2.4 particle
+ * spacings (the lattice sum of W V is within 1e-3 of 1 there); negative Tait
+ * pressure is clamped unless `sph.tension` (a free surface otherwise clumps
+ * and climbs walls); a heating bubble's pressure is never below Tait (eq. 3.51
+ * alone lets it be squeezed onto its neighbours); a cooling bubble's final
+ * density rises by (T_prev + 273.15) / (T + 273.15), capped at rest (its gas
+ * contracts); a surface particle's final density is its interior neighbours'
+ * (its own summed density is low for want of neighbours); the colour field's
+ * Laplacian includes the particle's own term (without it eq. 3.30 pushes
+ * outward); the external heat flows toward the outside temperature (the thesis
+ * prints T_i - T_ext); XSPH epsilon is at most 1 (Table 4.1's 5 overshoots;
+ * the text of §4.3 uses 0.5); fixed particles are no-slip walls in eq. 3.19
+ * (Morris et al. 1997), their drag taken implicitly in the kick.
+ *
+ * Shared with MPM: particles, plugins through the material door (porosity from
+ * plastic_J for a material that needs it; no saturation: a material that needs
+ * it is refused when added), colliders, probes, outputs, the oven's Robin flux
+ * and heated colliders' contact beta (each surface particle carries its face
+ * V^((d-1)/d) of oven surface, a particle within its spacing of a heated
+ * collider the same face of contact; `sph_oven_robin`). Not shared: conduction
+ * parameters (eq. 3.45 uses `sph.heat_int`), thermal expansion and CO2 (not
+ * applied), water, collider friction and the slip/separate distinction (both
+ * take the thesis response; beta_c plays friction's part; sticky is sticky,
+ * and so is a grip, which carries no particles here). A rollback restores the
+ * particles but not the final densities of eq. 3.52.
+ *
+ * Not built: checkpoints of SPH scenes (can_checkpoint = 0, so saving one is
+ * refused with a message); the local convex hull for surface particles
+ * (§3.1.8).
+ *
+ * Known limits the scenes show (scripts/scenes/sph/): the elastic Maxwell
+ * stress alone does not hold a shape against the tensile instability; bread
+ * of the dead sets artificial_stress = 0.3 and holds to 2.5 s instead of
+ * splitting at 1.9 s. The bread roll keeps both off by default: with
+ * `tension` and artificial stress it is one piece to 1.5 s instead of
+ * splitting at 1 s, but its top bursts and the guard stops it at 1.64 s. At
+ * eps 0.3 a block in strong uniform tension still creeps toward pairs over
+ * many sound crossings (`sph_artificial_stress_fluid`: 0.68 spacings at 1 s;
+ * 0.5 holds). Surface tension above about 0.02 N/m does not settle a 0.06 m
+ * drop (`sph_surface_tension_rounds_drop`). Poiseuille flow is 2.2% of the
+ * peak off the parabola: eq. 3.8 summed over particle rows is 3.8% stronger
+ * than its integral at h = 2.4 spacings (5.7% on a resting lattice, so a very
+ * viscous channel is 5% slow, `sph_wall_drag_stable`). */
 #include "plugins.h"
 #include "solver.h"
 #include "sph.h"

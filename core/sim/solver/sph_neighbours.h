@@ -3,8 +3,13 @@
  * A uniform cell list (cell size >= the largest support radius) over
  * particles sorted by cell, and the neighbour lists it produces in CSR form.
  * A kd-tree (the thesis's choice, §3.1.2) builds the same lists; it is kept
- * for the comparison the tests print, the solver uses the cell list (faster,
- * see docs/architecture.md). Periodic axes wrap: displacements are minimum
+ * for the comparison the tests print, the solver uses the cell list, which
+ * is faster: measured with `SPH_BENCH_N=50000 unit_sph sph_neighbours_agree`
+ * (3D, 50k random particles, ~42 neighbours each, wall time on a shared
+ * 2-core machine), the cell list (key, counting sort, gather, count + fill
+ * lists) took 1.00 s on one thread (0.79 s on two) against 2.06 s for a
+ * balanced kd-tree (build + radius queries, serial), both giving the same
+ * 2,108,904 pairs. Periodic axes wrap: displacements are minimum
  * images. Lists are in a fixed order (cells in z, y, x order, particles in
  * sorted order), so sums over them do not depend on the thread count. */
 #ifndef HEARTH_SPH_NEIGHBOURS_H
