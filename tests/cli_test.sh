@@ -26,6 +26,13 @@ cli_help)
     "$hearth" --version | grep -q "material ABI" || fail "--version"
     for sub in demo bench plugins; do "$hearth" $sub --help >/dev/null || fail "$sub --help"; done
     ;;
+cli_lua_md_example_runs)
+    # the first example of docs/lua.md runs as printed and writes its frames
+    awk '/^```lua/{f=1;next} /^```/{if(f)exit} f' "$HEARTH_SOURCE_ROOT/docs/lua.md" >"$tmp/example.lua"
+    [ -s "$tmp/example.lua" ] || fail "docs/lua.md has no lua example"
+    (cd "$tmp" && "$hearth" run example.lua --quiet --until 0.1) || fail "docs/lua.md's example failed"
+    ls "$tmp"/hearth-out/example/frames/speed_0000.png >/dev/null 2>&1 || fail "the example wrote no frames: $(ls -R "$tmp/hearth-out")"
+    ;;
 cli_help_scene)
     # every setting of the schema is listed with its unit, default and range; --help points there
     out=$("$hearth" help scene) || fail "hearth help scene failed"
