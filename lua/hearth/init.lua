@@ -483,7 +483,10 @@ function h.scene(o)
       lua_side[e.name] = e.kind == "choice" and check_choice(e.default, e.name, e.words) or e.default
     end
   end
-  if o.sph ~= nil and def.solver ~= 1 then error("h.scene: sph = {...} needs solver = \"sph\"", 2) end
+  -- the sph.* settings belong to the SPH solver (its word in the schema, not a number here)
+  if o.sph ~= nil and def.solver ~= check_choice("sph", "solver", scene_setting.solver.words) then
+    error("h.scene: sph = {...} needs solver = \"sph\"", 2)
+  end
   local dim = def.dim or scene_setting.dim.default
   local ok, s = pcall(core.scene_new, def)
   if not ok then error(s, 2) end
