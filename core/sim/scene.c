@@ -152,24 +152,11 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
         hearth_scene_destroy(s);
         return NULL;
     }
-    s->counts = mem_calloc(sizeof(int) * ((size_t)s->g.nblocks + 1));
-    s->mark = mem_calloc((size_t)s->g.nblocks);
-    if (!s->counts || !s->mark) {
-        err_set(err, HEARTH_ERR_NOMEM, "out of memory for the grid tables");
+    if (s->solver->init && s->solver->init(s, err)) { /* the solver's own state (solver.h) */
         hearth_scene_destroy(s);
         return NULL;
     }
     return s;
-}
-
-static void free_scratch(hearth_scene *s) {
-    mem_free(s->keys, sizeof(int) * (size_t)s->scratch_cap);
-    mem_free(s->order, sizeof(int) * (size_t)s->scratch_cap);
-    mem_free(s->perm_scratch, sizeof(double) * (size_t)s->scratch_cap);
-    mem_free(s->vol, sizeof(double) * (size_t)s->scratch_cap);
-    s->keys = s->order = NULL;
-    s->perm_scratch = s->vol = NULL;
-    s->scratch_cap = 0;
 }
 
 void hearth_scene_destroy(hearth_scene *s) {
@@ -180,16 +167,10 @@ void hearth_scene_destroy(hearth_scene *s) {
     mem_free(s->snap_cols, sizeof(collider) * (size_t)s->capcol);
     particles_free(&s->ps);
     particles_free(&s->snap);
-    free_scratch(s);
-    mem_free(s->pb, sizeof(pblock) * (size_t)s->pbcap);
-    mem_free(s->colour_pb, sizeof(int) * (size_t)s->pbcap);
-    mem_free(s->partial, sizeof(pb_partial) * (size_t)s->pbcap);
-    mem_free(s->counts, sizeof(int) * ((size_t)s->g.nblocks + 1));
     thermal_free(&s->heat);
     boundary_free(&s->boundary);
     water_free(&s->water);
     mixing_free(&s->mix);
-    mem_free(s->mark, (size_t)s->g.nblocks);
     if (s->solver->free) s->solver->free(s);
     grid_free(&s->g);
     mem_free(s, sizeof *s);
@@ -216,49 +197,6 @@ hearth_status hearth_scene_set_oven(hearth_scene *s, double temperature, double 
     if (st) return st;
     if (!isnan(temperature) && (st = scene_enable_temperature(s, err))) return st; /* an oven makes the field live */
     s->def = d;
-    return HEARTH_OK;
-}
-
-hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err) {
-    if (n > s->scratch_cap) {
-        int cap = s->ps.cap > n ? s->ps.cap : n;
-        free_scratch(s);
-        s->keys = mem_alloc(sizeof(int) * (size_t)cap);
-        s->order = mem_alloc(sizeof(int) * (size_t)cap);
-        s->perm_scratch = mem_alloc(sizeof(double) * (size_t)cap);
-        if (!s->keys || !s->order || !s->perm_scratch) {
-            s->scratch_cap = cap; /* so free_scratch releases them with their true size */
-            free_scratch(s);
-            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for sorting %d particles", n);
-        }
-        s->scratch_cap = cap;
-    }
-    /* the field passes read each particle's volume from here rather than F (72 bytes a particle) */
-    if (!s->vol && (thermal_active(s) || water_active(s)) && !(s->vol = mem_alloc(sizeof(double) * (size_t)s->scratch_cap)))
-        return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle volumes", s->scratch_cap);
-    /* one particle block per grid block at most */
-    int need = s->g.nblocks < n ? s->g.nblocks : n;
-    if (need > s->pbcap) {
-        int cap = s->pbcap ? s->pbcap : 64;
-        while (cap < need) cap *= 2;
-        /* contents are rebuilt by every sort, so fresh arrays replace the old ones */
-        pblock *pb = mem_alloc(sizeof(pblock) * (size_t)cap);
-        int *cp = mem_alloc(sizeof(int) * (size_t)cap);
-        pb_partial *pp = mem_alloc(sizeof(pb_partial) * (size_t)cap);
-        if (!pb || !cp || !pp) {
-            mem_free(pb, sizeof(pblock) * (size_t)cap);
-            mem_free(cp, sizeof(int) * (size_t)cap);
-            mem_free(pp, sizeof(pb_partial) * (size_t)cap);
-            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle blocks", need);
-        }
-        mem_free(s->pb, sizeof(pblock) * (size_t)s->pbcap);
-        mem_free(s->colour_pb, sizeof(int) * (size_t)s->pbcap);
-        mem_free(s->partial, sizeof(pb_partial) * (size_t)s->pbcap);
-        s->pb = pb;
-        s->colour_pb = cp;
-        s->partial = pp;
-        s->pbcap = cap;
-    }
     return HEARTH_OK;
 }
 

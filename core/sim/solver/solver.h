@@ -25,6 +25,11 @@ typedef struct solver {
     /* The solver's own options in a scene definition; NULL when it has none.
      * Called by hearth_scene_create and every def change. */
     hearth_status (*check)(const hearth_scene_def *d, hearth_error *err);
+    /* Make what the solver keeps for itself in a new scene s (its grid is
+     * made): called once by hearth_scene_create; NULL when the solver makes its
+     * state on first use instead. On failure the scene is destroyed, so free
+     * must cope with what init left half made. */
+    hearth_status (*init)(hearth_scene *s, hearth_error *err);
     /* Material `mat` is being added to s (its slot s->mats.slot[mat] is filled and
      * counted; scene.c removes it again unless this returns HEARTH_OK): resolve what the solver
      * looks up per material once, here, rather than per particle per step.

@@ -924,8 +924,6 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
         st->n = 0;
         return HEARTH_OK;
     }
-    if ((e = scene_ensure_scratch(s, n, err))) return e;
-
     phase_predrift(s, dt);
     if ((e = phase_neighbours(s, err))) return e;
     if ((e = phase_density(s, err))) return e;
