@@ -89,8 +89,8 @@ double scene_bytes_per_particle(const hearth_scene *s) {
     double b = 0;
     for (int c = 0; c < PC_COUNT; c++)
         if (s->ps.enabled & (1u << c)) b += (double)particles_col_bytes(&s->ps, c);
-    /* the step's scratch (keys, order, permutation, volumes) and a rollback snapshot's copy */
-    b += 2 * sizeof(int) + 2 * sizeof(double);
+    /* the solver's step scratch (solver.h) and a rollback snapshot's copy */
+    b += s->solver->bytes_per_particle(s);
     if (s->def.guard == HEARTH_GUARD_ROLLBACK) b *= 2;
     return b;
 }
@@ -113,11 +113,12 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
     err_clear(err);
     hearth_scene_def d = def ? *def : hearth_default_scene_def();
     if (check_def(&d, err)) return NULL;
+    const solver *sv = solver_of(d.solver); /* check_def refused any other */
     { /* the tables over the whole box, before any is allocated */
         int nn[3], nb[3];
         long blocks = 0;
         if (grid_plan(d.dim, d.dx, d.lo, d.hi, nn, nb, &blocks, err)) return NULL;
-        const double need = (double)blocks * (double)GRID_TABLE_BYTES_PER_BLOCK, limit = (double)scene_memory_limit();
+        const double need = sv->uses_grid ? (double)blocks * (double)GRID_TABLE_BYTES_PER_BLOCK : 0.0, limit = (double)scene_memory_limit();
         if (need > limit / 2) {
             err_set(err, HEARTH_ERR_PARAM,
                     "scene: dx = %g m over this box needs %ld grid blocks, about %.3g GB for the grid tables alone; "
@@ -134,7 +135,7 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
         return NULL;
     }
     s->def = d;
-    s->solver = solver_of(d.solver); /* check_def refused any other */
+    s->solver = sv;
     s->dt_scale = 1.0;
     material_table_init(&s->mats);
     mixing_init(&s->mix);
@@ -144,7 +145,8 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
     s->rng = d.seed ? d.seed : 1;
     particles_init(&s->ps);
     particles_init(&s->snap);
-    if (grid_init(&s->g, d.dim, d.dx, d.lo, d.hi, err)) {
+    /* a solver that never transfers to the grid still seeds on its lattice */
+    if ((sv->uses_grid ? grid_init : grid_init_geometry)(&s->g, d.dim, d.dx, d.lo, d.hi, err)) {
         mem_free(s, sizeof *s);
         return NULL;
     }

@@ -749,6 +749,13 @@ static void mpm_region(const hearth_scene *s, double lo[3], double hi[3]) {
     }
 }
 
+/* keys and order; the permutation and P2G's volumes, counted whether or not
+ * heat or water is on yet (either may turn on after the particles are seeded) */
+static double mpm_bytes_per_particle(const hearth_scene *s) {
+    (void)s;
+    return 2 * sizeof(int) + 2 * sizeof(double);
+}
+
 /* The grid is the scene's; the step scratch is MPM's own (mpm_state); its
  * options are the scene's, checked there. */
 const solver mpm_solver = {
@@ -758,7 +765,9 @@ const solver mpm_solver = {
     .stable_dt = mpm_stable_dt,
     .step = mpm_step,
     .region = mpm_region,
+    .bytes_per_particle = mpm_bytes_per_particle,
     /* temperature from the heat field, porosity from plastic_J (P2G), saturation from the water field */
     .supplies = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_SATURATION,
     .can_checkpoint = 1,
+    .uses_grid = 1,
 };

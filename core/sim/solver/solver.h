@@ -46,9 +46,16 @@ typedef struct solver {
     /* Per-particle results of the last step ("density", "pressure",
      * "browning", ...), or NULL; the member is NULL when the solver keeps none. */
     const double *(*particle_values)(const hearth_scene *s, const char *which);
+    /* Bytes of step scratch the solver keeps per particle (its own arrays,
+     * with their growth margin), for scene_bytes_per_particle's estimate. */
+    double (*bytes_per_particle)(const hearth_scene *s);
     unsigned supplies;  /* the SOLVER_POINT_FIELDS it fills; a material needing another is refused */
     unsigned outputs;   /* SOLVER_OUT_* */
     int can_checkpoint; /* hearth_scene_save writes everything it needs to resume */
+    /* It transfers through the background grid: the scene makes the grid's
+     * block table (grid_init), else only its geometry (grid_init_geometry),
+     * which seeding's lattice still uses. */
+    int uses_grid;
 } solver;
 
 extern const solver mpm_solver, sph_solver;
