@@ -5,7 +5,7 @@
 #include <stdlib.h>
 
 #include "hearth/hearth.h"
-#include "scene.h"
+#include "mpm.h" /* scene.h, and the MPM phases some tests run one by one */
 #include "test.h"
 
 static inline hearth_scene *fx_scene(int dim, double dx, double lo, double hi) {

@@ -801,7 +801,39 @@ TEST(grip_holds_pulled_strip) {
     CHECK(ds < -0.005);                   /* sticky lets go: the strip falls */
 }
 
+/* The MPM step's scratch is MPM's (struct mpm_state, mpm.h): made with the
+ * scene, grown by the sort, P2G's volumes only once heat or water is live;
+ * and the memory estimate's scratch term is still the sort's 24 bytes. */
+TEST(mpm_state_owned_by_solver) {
+    hearth_scene *s = fx_scene(2, 0.05, 0, 1);
+    CHECK(s != NULL);
+    if (!s) return;
+    const mpm_state *st = mpm_state_of(s);
+    CHECK(st != NULL && st->counts != NULL && st->mark != NULL && st->nblocks == s->g.nblocks);
+    CHECK(s->g.slot != NULL);
+    CHECK(st->scratch_cap == 0 && st->pb == NULL); /* no particles yet */
+    const int m = fx_elastic(s, 1e4, 0.3, 1000);
+    const double c[3] = {0.5, 0.5, 0}, h[3] = {0.1, 0.1, 0};
+    hearth_shape *b = hearth_shape_box(c, h);
+    hearth_error err;
+    const int n = hearth_scene_seed_shape(s, m, b, 4, 0.5, NULL, &err);
+    hearth_shape_free(b);
+    CHECK(n > 0);
+    CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+    CHECK(st->scratch_cap >= n && st->npb > 0 && st->colour_start[8] == st->npb);
+    CHECK(st->vol == NULL); /* no heat, no water: no volumes */
+    double cols = 0;
+    for (int k = 0; k < PC_COUNT; k++)
+        if (s->ps.enabled & (1u << k)) cols += (double)particles_col_bytes(&s->ps, k);
+    CHECK(scene_bytes_per_particle(s) == cols + 2 * sizeof(int) + 2 * sizeof(double));
+    CHECK(hearth_scene_set_oven(s, 180, 10, &err) == HEARTH_OK);
+    CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+    CHECK(st->vol != NULL);
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(bspline_weights), T(transfer_conservation_2d), T(transfer_conservation_3d), T(transfer_pic_dissipates), T(rotating_disc), T(free_fall),
           T(vibrating_bar), T(determinism_threads), T(checkpoint_restore), T(guard_nan_plugin), T(guard_plugin_error),
           T(guard_cfl_and_rollback), T(colliders_contact), T(probe_fields), T(scene_bad_input), T(alloc_failure_paths),
-          T(particles_optional_columns), T(body_force), T(guard_collider_drive), T(grip_holds_pulled_strip))
+          T(particles_optional_columns), T(body_force), T(guard_collider_drive), T(grip_holds_pulled_strip),
+          T(mpm_state_owned_by_solver))

@@ -1060,8 +1060,40 @@ TEST(sph_alloc_failure_paths) {
     CHECK(failures > 10);
 }
 
+/* SPH never transfers to the grid: its scene makes the grid's geometry (the
+ * seeding lattice) but not its block table, and none of MPM's state; the
+ * memory estimate counts SPH's own per-particle arrays, within a factor of
+ * two of what a step really allocates. */
+TEST(sph_keeps_no_grid_tables) {
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.2, 0.2, 0};
+    hearth_scene_def d = sph_def(2, 0.01, lo, hi);
+    hearth_error err;
+    hearth_scene *s = hearth_scene_create(&d, &err);
+    CHECK(s != NULL);
+    if (!s) return;
+    CHECK(s->mpm == NULL);
+    CHECK(s->g.slot == NULL);
+    CHECK(s->g.nblocks > 0 && s->g.dx == 0.01); /* the geometry is there */
+    const int m = newtonian(s, 1000, 1e4, 0.1);
+    CHECK(m >= 0);
+    const size_t before = hearth_bytes_allocated();
+    const double c[3] = {0.1, 0.1, 0}, h[3] = {0.05, 0.05, 0};
+    hearth_shape *b = hearth_shape_box(c, h);
+    const int n = hearth_scene_seed_shape(s, m, b, 1, 0.0, NULL, &err);
+    hearth_shape_free(b);
+    CHECK(n > 50);
+    CHECK(hearth_scene_step(s, 2, &err) == HEARTH_OK);
+    CHECK(s->mpm == NULL && s->g.slot == NULL);
+    const double real = (double)(hearth_bytes_allocated() - before) / n, est = scene_bytes_per_particle(s);
+    printf("  %d particles: %.0f bytes each allocated, %.0f estimated\n", n, real, est);
+    CHECK(est > 43 * sizeof(double)); /* SPH's arrays, not MPM's 24 bytes of sort scratch */
+    CHECK(est >= 0.5 * real && est <= 2 * real);
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_neighbours_agree), T(sph_hydrostatic),
           T(sph_poiseuille), T(sph_wall_drag_stable), T(sph_artificial_stress_fluid), T(sph_artificial_stress_elastic), T(sph_oven_robin), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads),
           T(sph_integrators_free_fall), T(sph_collider_response), T(sph_heat_internal_conserves), T(sph_adaptive_h),
           T(sph_surface_tension_rounds_drop), T(sph_bubble_cooling_contracts), T(sph_solver_table),
-          T(sph_viscosity_rule), T(sph_porosity_supplied), T(sph_refuses_saturation), T(sph_alloc_failure_paths))
+          T(sph_viscosity_rule), T(sph_porosity_supplied), T(sph_refuses_saturation), T(sph_alloc_failure_paths),
+          T(sph_keeps_no_grid_tables))

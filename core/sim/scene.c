@@ -108,8 +108,8 @@ double scene_bytes_per_particle(const hearth_scene *s) {
     double b = 0;
     for (int c = 0; c < PC_COUNT; c++)
         if (s->ps.enabled & (1u << c)) b += (double)particles_col_bytes(&s->ps, c);
-    /* the step's scratch (keys, order, permutation, volumes) and a rollback snapshot's copy */
-    b += 2 * sizeof(int) + 2 * sizeof(double);
+    /* the solver's step scratch (solver.h) and a rollback snapshot's copy */
+    b += s->solver->bytes_per_particle(s);
     if (s->def.guard == HEARTH_GUARD_ROLLBACK) b *= 2;
     return b;
 }
@@ -132,11 +132,12 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
     err_clear(err);
     hearth_scene_def d = def ? *def : hearth_default_scene_def();
     if (check_def(&d, err)) return NULL;
+    const solver *sv = solver_of(d.solver); /* check_def refused any other */
     { /* the tables over the whole box, before any is allocated */
         int nn[3], nb[3];
         long blocks = 0;
         if (grid_plan(d.dim, d.dx, d.lo, d.hi, nn, nb, &blocks, err)) return NULL;
-        const double need = (double)blocks * (double)GRID_TABLE_BYTES_PER_BLOCK, limit = (double)scene_memory_limit();
+        const double need = sv->uses_grid ? (double)blocks * (double)GRID_TABLE_BYTES_PER_BLOCK : 0.0, limit = (double)scene_memory_limit();
         if (need > limit / 2) {
             err_set(err, HEARTH_ERR_PARAM,
                     "scene: dx = %g m over this box needs %ld grid blocks, about %.3g GB for the grid tables alone; "
@@ -153,7 +154,7 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
         return NULL;
     }
     s->def = d;
-    s->solver = solver_of(d.solver); /* check_def refused any other */
+    s->solver = sv;
     s->dt_scale = 1.0;
     material_table_init(&s->mats);
     mixing_init(&s->mix);
@@ -163,7 +164,8 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
     s->rng = d.seed ? d.seed : 1;
     particles_init(&s->ps);
     particles_init(&s->snap);
-    if (grid_init(&s->g, d.dim, d.dx, d.lo, d.hi, err)) {
+    /* a solver that never transfers to the grid still seeds on its lattice */
+    if ((sv->uses_grid ? grid_init : grid_init_geometry)(&s->g, d.dim, d.dx, d.lo, d.hi, err)) {
         mem_free(s, sizeof *s);
         return NULL;
     }
@@ -171,24 +173,11 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
         hearth_scene_destroy(s);
         return NULL;
     }
-    s->counts = mem_calloc(sizeof(int) * ((size_t)s->g.nblocks + 1));
-    s->mark = mem_calloc((size_t)s->g.nblocks);
-    if (!s->counts || !s->mark) {
-        err_set(err, HEARTH_ERR_NOMEM, "out of memory for the grid tables");
+    if (s->solver->init && s->solver->init(s, err)) { /* the solver's own state (solver.h) */
         hearth_scene_destroy(s);
         return NULL;
     }
     return s;
-}
-
-static void free_scratch(hearth_scene *s) {
-    mem_free(s->keys, sizeof(int) * (size_t)s->scratch_cap);
-    mem_free(s->order, sizeof(int) * (size_t)s->scratch_cap);
-    mem_free(s->perm_scratch, sizeof(double) * (size_t)s->scratch_cap);
-    mem_free(s->vol, sizeof(double) * (size_t)s->scratch_cap);
-    s->keys = s->order = NULL;
-    s->perm_scratch = s->vol = NULL;
-    s->scratch_cap = 0;
 }
 
 void hearth_scene_destroy(hearth_scene *s) {
@@ -199,16 +188,10 @@ void hearth_scene_destroy(hearth_scene *s) {
     mem_free(s->snap_cols, sizeof(collider) * (size_t)s->capcol);
     particles_free(&s->ps);
     particles_free(&s->snap);
-    free_scratch(s);
-    mem_free(s->pb, sizeof(pblock) * (size_t)s->pbcap);
-    mem_free(s->colour_pb, sizeof(int) * (size_t)s->pbcap);
-    mem_free(s->partial, sizeof(pb_partial) * (size_t)s->pbcap);
-    mem_free(s->counts, sizeof(int) * ((size_t)s->g.nblocks + 1));
     thermal_free(&s->heat);
     boundary_free(&s->boundary);
     water_free(&s->water);
     mixing_free(&s->mix);
-    mem_free(s->mark, (size_t)s->g.nblocks);
     if (s->solver->free) s->solver->free(s);
     grid_free(&s->g);
     mem_free(s, sizeof *s);
@@ -235,49 +218,6 @@ hearth_status hearth_scene_set_oven(hearth_scene *s, double temperature, double 
     if (st) return st;
     if (!isnan(temperature) && (st = scene_enable_temperature(s, err))) return st; /* an oven makes the field live */
     s->def = d;
-    return HEARTH_OK;
-}
-
-hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err) {
-    if (n > s->scratch_cap) {
-        int cap = s->ps.cap > n ? s->ps.cap : n;
-        free_scratch(s);
-        s->keys = mem_alloc(sizeof(int) * (size_t)cap);
-        s->order = mem_alloc(sizeof(int) * (size_t)cap);
-        s->perm_scratch = mem_alloc(sizeof(double) * (size_t)cap);
-        if (!s->keys || !s->order || !s->perm_scratch) {
-            s->scratch_cap = cap; /* so free_scratch releases them with their true size */
-            free_scratch(s);
-            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for sorting %d particles", n);
-        }
-        s->scratch_cap = cap;
-    }
-    /* the field passes read each particle's volume from here rather than F (72 bytes a particle) */
-    if (!s->vol && (thermal_active(s) || water_active(s)) && !(s->vol = mem_alloc(sizeof(double) * (size_t)s->scratch_cap)))
-        return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle volumes", s->scratch_cap);
-    /* one particle block per grid block at most */
-    int need = s->g.nblocks < n ? s->g.nblocks : n;
-    if (need > s->pbcap) {
-        int cap = s->pbcap ? s->pbcap : 64;
-        while (cap < need) cap *= 2;
-        /* contents are rebuilt by every sort, so fresh arrays replace the old ones */
-        pblock *pb = mem_alloc(sizeof(pblock) * (size_t)cap);
-        int *cp = mem_alloc(sizeof(int) * (size_t)cap);
-        pb_partial *pp = mem_alloc(sizeof(pb_partial) * (size_t)cap);
-        if (!pb || !cp || !pp) {
-            mem_free(pb, sizeof(pblock) * (size_t)cap);
-            mem_free(cp, sizeof(int) * (size_t)cap);
-            mem_free(pp, sizeof(pb_partial) * (size_t)cap);
-            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle blocks", need);
-        }
-        mem_free(s->pb, sizeof(pblock) * (size_t)s->pbcap);
-        mem_free(s->colour_pb, sizeof(int) * (size_t)s->pbcap);
-        mem_free(s->partial, sizeof(pb_partial) * (size_t)s->pbcap);
-        s->pb = pb;
-        s->colour_pb = cp;
-        s->partial = pp;
-        s->pbcap = cap;
-    }
     return HEARTH_OK;
 }
 

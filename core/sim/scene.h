@@ -2,12 +2,12 @@
  * probe.c and checkpoint.c read and step it. Each field module keeps its
  * state in a struct of its own, declared in its header and held here by
  * value: the materials (material.h), heat (thermal.h), the boundary
- * (boundary.h), water (water.h), mixing (mixing.h) and, behind a pointer,
- * SPH (sph.c). Only the owning module writes its struct. Gas keeps no
- * scene-level state (its column lives with the particles). Each init
- * allocates nothing and each free returns its struct to that state, so a free
- * is safe twice (unit_fields: fields_init_allocates_nothing,
- * fields_free_releases_state). */
+ * (boundary.h), water (water.h), mixing (mixing.h) and, behind pointers,
+ * the solvers' own: MPM (mpm.h) and SPH (sph.c). Only the owning module
+ * writes its struct. Gas keeps no scene-level state (its column lives with
+ * the particles). Each init allocates nothing and each free returns its
+ * struct to that state, so a free is safe twice (unit_fields:
+ * fields_init_allocates_nothing, fields_free_releases_state). */
 #ifndef HEARTH_SCENE_H
 #define HEARTH_SCENE_H
 #include <stdint.h>
@@ -29,11 +29,6 @@
 #define SCENE_PARALLEL_MIN 2048
 /* Temperature given to particles when the field turns on without a value (degrees C). */
 #define SCENE_ROOM_TEMPERATURE 20.0
-
-/* A run of sorted particles sharing one grid block. */
-typedef struct pblock {
-    int block, start, end;
-} pblock;
 
 /* What went wrong first in a step, in particle order (so the answer does not
  * depend on the thread count). */
@@ -62,18 +57,8 @@ typedef struct step_report {
     double driven_kinetic; /* 1/2 (mass) (fastest collider speed at a node it holds)^2: energy a collider may give */
 } step_report;
 
-/* Per particle-block partial results, reduced in block order. */
-typedef struct pb_partial {
-    int fail_i, fail_kind, fail_code, fastest, mover;
-    double move; /* largest displacement in the block this step (m) */
-    double ke, mass, vmax, cmax, numax; /* numax: largest kinematic viscosity eta / rho (m^2/s) */
-    long ood;
-    /* water.c's per-block sums, written by G2P's block loop and reduced by water_finish: they stay
-     * here with the other partials so a step's reduction is one array in block order */
-    double water_removed, water_dmax, water_emax;
-} pb_partial;
-
 struct solver;
+struct mpm_state;
 
 struct hearth_scene {
     hearth_scene_def def;
@@ -100,19 +85,6 @@ struct hearth_scene {
     hearth_body_force_fn body_force;
     void *body_force_ud;
 
-    /* per-step scratch: grown when the particle count grows, never in the step loop otherwise */
-    int *keys, *order;
-    double *perm_scratch;
-    double *vol;            /* with heat or water: each particle's volume J V_0 this step, from P2G (NULL otherwise) */
-    int scratch_cap;
-    int *counts;            /* nblocks + 1 */
-    unsigned char *mark;    /* nblocks */
-    pblock *pb;
-    int npb, pbcap;
-    int *colour_pb;         /* pb indices grouped by colour */
-    int colour_start[9];
-    pb_partial *partial;
-
     /* rollback snapshot (only with HEARTH_GUARD_ROLLBACK) */
     particles snap;
     double snap_t;
@@ -125,6 +97,7 @@ struct hearth_scene {
     boundary_state boundary;  /* boundary.c */
     water_state water;        /* water.c */
 
+    struct mpm_state *mpm;       /* MPM solver state (mpm.h): the step's scratch; NULL under SPH */
     struct sph_state *sph;       /* SPH solver state (sph.c), NULL until the first SPH step */
 };
 
@@ -138,7 +111,6 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
 hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err);
 /* Largest wave speed over moving particles (s->c_max), after particles change. */
 void scene_refresh_wave_speed(hearth_scene *s);
-hearth_status scene_ensure_scratch(hearth_scene *s, int n, hearth_error *err);
 /* The solver's stable step (solver.h). */
 double scene_stable_dt(const hearth_scene *s);
 /// Memory a scene may plan for (bytes): the machine's physical memory
@@ -149,16 +121,6 @@ double scene_bytes_per_particle(const hearth_scene *s);
 /// Refuse (HEARTH_ERR_PARAM, what names the caller) adding `more` particles
 /// when the count or its memory estimate is beyond what the machine holds.
 hearth_status scene_check_particle_budget(const hearth_scene *s, double more, const char *what, hearth_error *err);
-
-/* mpm.c */
-hearth_status mpm_sort(hearth_scene *s, hearth_error *err);
-void mpm_p2g(hearth_scene *s, double dt, step_report *rep);
-/// Returns the largest collider speed (m/s) at a node with mass that a collider set.
-double mpm_grid_update(hearth_scene *s, double dt);
-void mpm_g2p(hearth_scene *s, double dt, step_report *rep);
-hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err);
-/* The stable step: CFL, the user's maximum, explicit conduction, water and viscosity. */
-double mpm_stable_dt(const hearth_scene *s);
 
 /* guard.c: returns 1 when the step must not stand; writes the diagnosis. */
 int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed_before);

@@ -25,6 +25,7 @@
 #include "alloc.h"
 #include "error.h"
 #include "scene.h"
+#include "mpm.h"
 
 void boundary_init(boundary_state *b) { *b = (boundary_state){0}; }
 
@@ -79,7 +80,7 @@ static hearth_status ensure_area(hearth_scene *s, hearth_error *err) {
 static void closest_in_block(hearth_scene *s, int k) {
     grid *g = &s->g;
     const int D = g->dim, NPB = g->nodes_per_block, TN = grid_tile_count(g);
-    const pblock pb = s->pb[k];
+    const pblock pb = mpm_state_of(s)->pb[k];
     int bc[3];
     grid_block_coords(g, pb.block, bc);
     int any = 0; /* the tile spans the block and its +1 neighbours: is there a boundary node in any? */
@@ -199,9 +200,10 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
     }
     /* the closest particle of each boundary node; colours keep writes apart, and
      * particles go in sorted order, so a tie goes to the first one met on any thread count */
+    const mpm_state *m = mpm_state_of(s); /* the sort's particle blocks */
     for (int col = 0; col < 8; col++) {
 #pragma omp parallel for schedule(dynamic, 2) if (n >= SCENE_PARALLEL_MIN)
-        for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) closest_in_block(s, s->colour_pb[q]);
+        for (int q = m->colour_start[col]; q < m->colour_start[col + 1]; q++) closest_in_block(s, m->colour_pb[q]);
     }
     const double face = D == 2 ? g->dx : g->dx * g->dx;
     for (int k = 0; k < g->nactive; k++) { /* serial: several nodes may pick one particle */

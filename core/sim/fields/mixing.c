@@ -33,6 +33,7 @@
 #include "error.h"
 #include "params.h"
 #include "scene.h"
+#include "mpm.h"
 #include "tensor.h"
 
 int mixing_active(const hearth_scene *s) { return s->mix.mat >= 0; }
@@ -61,6 +62,7 @@ hearth_status mixing_update(hearth_scene *s, hearth_error *err) {
     double *A = pcold(ps, PC_MIXD);
     const int *mat = pcoli(ps, PC_MAT), mm = s->mix.mat;
     const int par = ps->n >= SCENE_PARALLEL_MIN;
+    const mpm_state *m = mpm_state_of(s); /* the sort's particle blocks (mixing runs inside an MPM step) */
     /* eq. 43, numerator and denominator, in colour phases (disjoint nodes, no atomics) */
     for (int col = 0; col < 8; col++) {
 #pragma omp parallel if (par)
@@ -68,8 +70,8 @@ hearth_status mixing_update(hearth_scene *s, hearth_error *err) {
             double tile[(MIX_MAX + 1) * GRID_T * GRID_T * GRID_T];
             grid_stencil st;
 #pragma omp for schedule(dynamic, 2)
-            for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) {
-                const pblock pb = s->pb[s->colour_pb[q]];
+            for (int q = m->colour_start[col]; q < m->colour_start[col + 1]; q++) {
+                const pblock pb = m->pb[m->colour_pb[q]];
                 int bc[3], any = 0;
                 grid_block_coords(g, pb.block, bc);
                 memset(tile, 0, sizeof(double) * (size_t)W * TN);
@@ -96,8 +98,8 @@ hearth_status mixing_update(hearth_scene *s, hearth_error *err) {
     }
     /* eq. 44: each mixture particle gathers its nodes' ratios */
 #pragma omp parallel for schedule(dynamic, 2) if (par)
-    for (int q = 0; q < s->npb; q++) {
-        const pblock pb = s->pb[q];
+    for (int q = 0; q < m->npb; q++) {
+        const pblock pb = m->pb[q];
         int bc[3];
         grid_stencil st;
         grid_block_coords(g, pb.block, bc);

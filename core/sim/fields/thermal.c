@@ -33,6 +33,7 @@
 #include "alloc.h"
 #include "error.h"
 #include "scene.h"
+#include "mpm.h"
 #include "transport.h"
 
 #define KELVIN 273.15
@@ -104,7 +105,7 @@ static void find_boundary(hearth_scene *s) {
             const double *x = X + 3 * i;
             if (!collider_near(col, x) || collider_sdf(col, x, NULL) >= g->dx) continue;
             if (!(flags[i] & PF_BOUNDARY)) coef[i] = temp[i] = 0.0;
-            const double Vp = s->vol[i]; /* J V_0, from this step's P2G */
+            const double Vp = mpm_state_of(s)->vol[i]; /* J V_0, from this step's P2G */
             /* a particle touching both air and the pan: the pan's temperature wins the ambient, areas add */
             const double cS = Vp / g->dx * col->beta;
             temp[i] = coef[i] > 0 ? (temp[i] * coef[i] + col->temperature * cS) / (coef[i] + cS) : col->temperature;

@@ -41,6 +41,7 @@
 #include <string.h>
 
 #include "scene.h"
+#include "mpm.h"
 
 #define KELVIN 273.15
 #define FORCE_INLINE static inline __attribute__((always_inline))
@@ -112,7 +113,9 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
     particles *ps = &s->ps;
     const int NPB = g->nodes_per_block, TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
     const int mom = WATER && s->def.water_momentum;
-    const pblock pb = s->pb[s->colour_pb[q]];
+    const mpm_state *m = mpm_state_of(s); /* the sort's blocks and P2G's volumes */
+    const pblock pb = m->pb[m->colour_pb[q]];
+    const double *vol = m->vol;
     int bc[3];
     grid_block_coords(g, pb.block, bc);
     for (int a = 0; a < GRID_T; a++) /* gather the inputs once into dense tiles */
@@ -148,7 +151,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
             base[d] = bb - bc[d] * GRID_B;
         }
         const material_slot *ms = &s->mats.slot[mat[i]];
-        const double Vp = s->vol[i]; /* J V_0, from P2G */
+        const double Vp = vol[i]; /* J V_0, from P2G */
         const int bnd = (flags[i] & PF_BOUNDARY) != 0;
         /* value and gradient at the particle, contracted one axis at a time (the
          * weights are a tensor product): about half the work of node by node */
@@ -249,12 +252,13 @@ void transport_apply(hearth_scene *s, const transport_pass *tp) {
     else if (heat && !water) fn = d3 ? pass_3_100 : pass_2_100;
     else if (!heat && water) fn = d3 ? pass_3_001 : pass_2_001;
     if (!fn) return; /* heat without sources alongside water is never asked for */
+    const mpm_state *m = mpm_state_of(s); /* the sort's particle blocks, in colours */
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
         double tile[T_COUNT * GRID_T * GRID_T * GRID_T];
         for (int col = 0; col < 8; col++) { /* the loop's barrier keeps the colours apart */
 #pragma omp for schedule(dynamic, 2)
-            for (int q = s->colour_start[col]; q < s->colour_start[col + 1]; q++) fn(s, tp, q, tile);
+            for (int q = m->colour_start[col]; q < m->colour_start[col + 1]; q++) fn(s, tp, q, tile);
         }
     }
 }

@@ -47,6 +47,7 @@
 
 #include "error.h"
 #include "scene.h"
+#include "mpm.h"
 #include "tensor.h"
 
 #define KELVIN 273.15
@@ -201,7 +202,7 @@ double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) 
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     double *W = pcold(ps, PC_WATER);
     const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
-    const double cap = ms->core[CP_WATER_DENSITY] * s->vol[i], before = W[i]; /* capacity(), with P2G's volume */
+    const double cap = ms->core[CP_WATER_DENSITY] * mpm_state_of(s)->vol[i], before = W[i]; /* capacity(), with P2G's volume */
     double m = before + cap * r;
     if (m < WATER_SATURATION_FLOOR * cap) m = WATER_SATURATION_FLOOR * cap;
     W[i] = m;
@@ -212,10 +213,11 @@ double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) 
 void water_finish(hearth_scene *s) {
     /* reduce in block order: the same sums on any thread count */
     double removed = 0, dmax = 0, emax = 0;
-    for (int k = 0; k < s->npb; k++) {
-        removed += s->partial[k].water_removed;
-        dmax = fmax(dmax, s->partial[k].water_dmax);
-        emax = fmax(emax, s->partial[k].water_emax);
+    const mpm_state *m = mpm_state_of(s);
+    for (int k = 0; k < m->npb; k++) {
+        removed += m->partial[k].water_removed;
+        dmax = fmax(dmax, m->partial[k].water_dmax);
+        emax = fmax(emax, m->partial[k].water_emax);
     }
     s->water.step_removed = removed;
     s->water.dmax = dmax;

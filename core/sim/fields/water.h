@@ -8,7 +8,7 @@ struct hearth_scene;
 
 /* Water's own state (water.c), held by value in the scene as s->water: the
  * running totals and the explicit-step limits. Only water.c writes it; the
- * per-block partial sums of a step (pb_partial's water_* members, scene.h)
+ * per-block partial sums of a step (pb_partial's water_* members, mpm.h)
  * stay with the other P2G/G2P partials, where G2P's block loop writes them,
  * and water_finish reduces them into here. */
 typedef struct water_state {

@@ -36,7 +36,7 @@ hearth_status grid_plan(int dim, double dx, const double lo[3], const double hi[
     return HEARTH_OK;
 }
 
-hearth_status grid_init(grid *g, int dim, double dx, const double lo[3], const double hi[3], hearth_error *err) {
+hearth_status grid_init_geometry(grid *g, int dim, double dx, const double lo[3], const double hi[3], hearth_error *err) {
     memset(g, 0, sizeof *g);
     long nb = 1;
     hearth_status st = grid_plan(dim, dx, lo, hi, g->nn, g->nb, &nb, err);
@@ -48,6 +48,13 @@ hearth_status grid_init(grid *g, int dim, double dx, const double lo[3], const d
     g->nblocks = (int)nb;
     g->nodes_per_block = dim == 2 ? GRID_B * GRID_B : GRID_B * GRID_B * GRID_B;
     g->nch = GRID_NCH_MOMENTUM;
+    return HEARTH_OK;
+}
+
+hearth_status grid_init(grid *g, int dim, double dx, const double lo[3], const double hi[3], hearth_error *err) {
+    hearth_status st = grid_init_geometry(g, dim, dx, lo, hi, err);
+    if (st) return st;
+    const long nb = g->nblocks;
     g->slot = mem_alloc(sizeof(int) * (size_t)nb);
     if (!g->slot) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the grid block table (%ld blocks)", nb);
     for (long i = 0; i < nb; i++) g->slot[i] = -1;

@@ -54,6 +54,10 @@ typedef struct grid {
 hearth_status grid_plan(int dim, double dx, const double lo[3], const double hi[3], int nn[3], int nb[3], long *nblocks,
                         hearth_error *err);
 hearth_status grid_init(grid *g, int dim, double dx, const double lo[3], const double hi[3], hearth_error *err);
+/// The grid's geometry only (dim, dx, lo, node and block counts), with no
+/// tables: for a solver that places particles on the grid's lattice but never
+/// transfers to it (solver.uses_grid = 0). grid_free accepts it.
+hearth_status grid_init_geometry(grid *g, int dim, double dx, const double lo[3], const double hi[3], hearth_error *err);
 void grid_free(grid *g);
 /// Use nch channels per node from the next activation on (storage is rebuilt every step).
 hearth_status grid_set_channels(grid *g, int nch, hearth_error *err);

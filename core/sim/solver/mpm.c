@@ -42,9 +42,10 @@
 #include <math.h>
 #include <string.h>
 
+#include "alloc.h"
 #include "error.h"
 #include "plugins.h"
-#include "scene.h"
+#include "mpm.h"
 #include "solver.h"
 #include "gas.h"
 #include "material.h"
@@ -59,6 +60,89 @@
 #endif
 
 #define FORCE_INLINE static inline __attribute__((always_inline))
+
+/* ---- state ----------------------------------------------------------- */
+
+static void free_scratch(mpm_state *m) {
+    mem_free(m->keys, sizeof(int) * (size_t)m->scratch_cap);
+    mem_free(m->order, sizeof(int) * (size_t)m->scratch_cap);
+    mem_free(m->perm_scratch, sizeof(double) * (size_t)m->scratch_cap);
+    mem_free(m->vol, sizeof(double) * (size_t)m->scratch_cap);
+    m->keys = m->order = NULL;
+    m->perm_scratch = m->vol = NULL;
+    m->scratch_cap = 0;
+}
+
+static void mpm_free(hearth_scene *s) {
+    mpm_state *m = s->mpm;
+    if (!m) return;
+    free_scratch(m);
+    mem_free(m->pb, sizeof(pblock) * (size_t)m->pbcap);
+    mem_free(m->colour_pb, sizeof(int) * (size_t)m->pbcap);
+    mem_free(m->partial, sizeof(pb_partial) * (size_t)m->pbcap);
+    mem_free(m->counts, sizeof(int) * ((size_t)m->nblocks + 1));
+    mem_free(m->mark, (size_t)m->nblocks);
+    mem_free(m, sizeof *m);
+    s->mpm = NULL;
+}
+
+/* The tables over every block of the box are made with the scene; the
+ * per-particle scratch waits for particles (mpm_reserve). */
+static hearth_status mpm_init(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm = mem_calloc(sizeof *m);
+    if (!m) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the MPM solver's state");
+    m->nblocks = s->g.nblocks;
+    m->counts = mem_calloc(sizeof(int) * ((size_t)m->nblocks + 1));
+    m->mark = mem_calloc((size_t)m->nblocks);
+    if (!m->counts || !m->mark) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the grid tables");
+    return HEARTH_OK;
+}
+
+/* Room for n particles' step scratch: grown when the particle count grows, so
+ * the step loop allocates nothing otherwise. */
+static hearth_status mpm_reserve(hearth_scene *s, int n, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    if (n > m->scratch_cap) {
+        int cap = s->ps.cap > n ? s->ps.cap : n;
+        free_scratch(m);
+        m->keys = mem_alloc(sizeof(int) * (size_t)cap);
+        m->order = mem_alloc(sizeof(int) * (size_t)cap);
+        m->perm_scratch = mem_alloc(sizeof(double) * (size_t)cap);
+        if (!m->keys || !m->order || !m->perm_scratch) {
+            m->scratch_cap = cap; /* so free_scratch releases them with their true size */
+            free_scratch(m);
+            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for sorting %d particles", n);
+        }
+        m->scratch_cap = cap;
+    }
+    /* the field passes read each particle's volume from here rather than F (72 bytes a particle) */
+    if (!m->vol && (thermal_active(s) || water_active(s)) && !(m->vol = mem_alloc(sizeof(double) * (size_t)m->scratch_cap)))
+        return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle volumes", m->scratch_cap);
+    /* one particle block per grid block at most */
+    int need = m->nblocks < n ? m->nblocks : n;
+    if (need > m->pbcap) {
+        int cap = m->pbcap ? m->pbcap : 64;
+        while (cap < need) cap *= 2;
+        /* contents are rebuilt by every sort, so fresh arrays replace the old ones */
+        pblock *pb = mem_alloc(sizeof(pblock) * (size_t)cap);
+        int *cp = mem_alloc(sizeof(int) * (size_t)cap);
+        pb_partial *pp = mem_alloc(sizeof(pb_partial) * (size_t)cap);
+        if (!pb || !cp || !pp) {
+            mem_free(pb, sizeof(pblock) * (size_t)cap);
+            mem_free(cp, sizeof(int) * (size_t)cap);
+            mem_free(pp, sizeof(pb_partial) * (size_t)cap);
+            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle blocks", need);
+        }
+        mem_free(m->pb, sizeof(pblock) * (size_t)m->pbcap);
+        mem_free(m->colour_pb, sizeof(int) * (size_t)m->pbcap);
+        mem_free(m->partial, sizeof(pb_partial) * (size_t)m->pbcap);
+        m->pb = pb;
+        m->colour_pb = cp;
+        m->partial = pp;
+        m->pbcap = cap;
+    }
+    return HEARTH_OK;
+}
 
 /* ---- sorting --------------------------------------------------------- */
 
@@ -103,10 +187,11 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     grid *g = &s->g;
     particles *ps = &s->ps;
     const int n = ps->n;
-    hearth_status st = scene_ensure_scratch(s, n, err);
+    hearth_status st = mpm_reserve(s, n, err);
     if (st) return st;
+    mpm_state *m = s->mpm;
     double *X = pcold(ps, PC_X);
-    int *keys = s->keys, *order = s->order, *counts = s->counts;
+    int *keys = m->keys, *order = m->order, *counts = m->counts;
 
     long moved = 0;
 #pragma omp parallel for schedule(static) reduction(+ : moved) if (s->ps.n >= SCENE_PARALLEL_MIN)
@@ -125,7 +210,7 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     for (int b = 0; b < g->nblocks; b++) counts[b + 1] += counts[b];
     if (!sorted) {
         for (int i = 0; i < n; i++) order[counts[keys[i]]++] = i;
-        particles_permute(ps, order, s->perm_scratch);
+        particles_permute(ps, order, m->perm_scratch);
         /* counts were advanced to block ends; rebuild starts */
         memset(counts, 0, sizeof(int) * ((size_t)g->nblocks + 1));
         for (int i = 0; i < n; i++) counts[keys[order[i]] + 1]++;
@@ -133,31 +218,31 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     }
 
     /* runs of particles per block, and the blocks their tiles touch */
-    s->npb = 0;
-    memset(s->mark, 0, (size_t)g->nblocks);
+    m->npb = 0;
+    memset(m->mark, 0, (size_t)g->nblocks);
     int ncolour[8] = {0};
     for (int b = 0; b < g->nblocks; b++) {
         if (counts[b + 1] == counts[b]) continue;
-        s->pb[s->npb++] = (pblock){b, counts[b], counts[b + 1]};
+        m->pb[m->npb++] = (pblock){b, counts[b], counts[b + 1]};
         int c[3];
         grid_block_coords(g, b, c);
         ncolour[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++;
         for (int dx = 0; dx <= 1; dx++)
             for (int dy = 0; dy <= 1; dy++)
-                for (int dz = 0; dz <= (g->dim == 3); dz++) s->mark[grid_block_id(g, c[0] + dx, c[1] + dy, c[2] + dz)] = 1;
+                for (int dz = 0; dz <= (g->dim == 3); dz++) m->mark[grid_block_id(g, c[0] + dx, c[1] + dy, c[2] + dz)] = 1;
     }
-    s->colour_start[0] = 0;
-    for (int k = 0; k < 8; k++) s->colour_start[k + 1] = s->colour_start[k] + ncolour[k];
+    m->colour_start[0] = 0;
+    for (int k = 0; k < 8; k++) m->colour_start[k + 1] = m->colour_start[k] + ncolour[k];
     int fill[8];
-    memcpy(fill, s->colour_start, sizeof fill);
-    for (int k = 0; k < s->npb; k++) {
+    memcpy(fill, m->colour_start, sizeof fill);
+    for (int k = 0; k < m->npb; k++) {
         int c[3];
-        grid_block_coords(g, s->pb[k].block, c);
-        s->colour_pb[fill[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++] = k;
+        grid_block_coords(g, m->pb[k].block, c);
+        m->colour_pb[fill[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++] = k;
     }
     st = grid_set_channels(g, thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
     if (st) return st;
-    return grid_activate(g, s->mark, err);
+    return grid_activate(g, m->mark, err);
 }
 
 /* ---- P2G ------------------------------------------------------------- */
@@ -186,8 +271,10 @@ static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T,
 FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const int WATER, int k, double dt, double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
-    const pblock pb = s->pb[k];
-    pb_partial *pp = &s->partial[k];
+    mpm_state *st = s->mpm;
+    const pblock pb = st->pb[k];
+    pb_partial *pp = &st->partial[k];
+    double *vol = st->vol; /* loaded once: the plugin call in the loop would otherwise reload it */
     const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
     const int NPB = g->nodes_per_block;
     int bc[3];
@@ -287,7 +374,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
         const double mv0 = m * v[0], mv1 = m * v[1], mv2 = m * v[2];
         /* heat (eq. 17, weighted by heat capacity m alpha so energy is conserved across materials) */
         const double hc = HEAT ? m * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = HEAT ? hc * Tcol[i] : 0.0;
-        if (HEAT || WATER) s->vol[i] = J * V0[i]; /* for transport.c and water_take */
+        if (HEAT || WATER) vol[i] = J * V0[i]; /* for transport.c and water_take */
         /* water mass and capacity rho_0^w J V_0 (eq. 15, 18) */
         const double mw = WATER ? Wcol[i] : 0.0, cap = WATER ? s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * J * V0[i] : 0.0;
         for (int a = 0; a < 3; a++) {
@@ -359,14 +446,15 @@ static const block_fn p2g_fns[2][2][2] = {{{p2g_200, p2g_201}, {p2g_210, p2g_211
 void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
     (void)rep;
     const block_fn fn = p2g_fns[s->g.dim == 3][thermal_active(s)][water_active(s)];
-    for (int k = 0; k < s->npb; k++) s->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
+    const mpm_state *m = s->mpm;
+    for (int k = 0; k < m->npb; k++) m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
         double tile[P2G_NCH * GRID_T * GRID_T * GRID_T];
         for (int col = 0; col < 8; col++) {
-            const int a = s->colour_start[col], b = s->colour_start[col + 1];
+            const int a = m->colour_start[col], b = m->colour_start[col + 1];
 #pragma omp for schedule(dynamic, 2)
-            for (int q = a; q < b; q++) fn(s, s->colour_pb[q], dt, tile);
+            for (int q = a; q < b; q++) fn(s, m->colour_pb[q], dt, tile);
             /* the implicit barrier of omp for separates colours */
         }
     }
@@ -441,8 +529,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     double *Tcol = HEAT ? pcold(ps, PC_TEMPERATURE) : NULL, *Tmax = HEAT ? pcold(ps, PC_TEMP_MAX) : NULL;
     double *Gcol = HEAT && (ps->enabled & (1u << PC_GAS)) ? pcold(ps, PC_GAS) : NULL;
     const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
-    const pblock pb = s->pb[k];
-    pb_partial *pp = &s->partial[k];
+    const pblock pb = s->mpm->pb[k];
+    pb_partial *pp = &s->mpm->partial[k];
     const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
     const int NPB = g->nodes_per_block;
     int bc[3];
@@ -599,18 +687,19 @@ BLOCK_FN(g2p, 3, 0, 0) BLOCK_FN(g2p, 3, 0, 1) BLOCK_FN(g2p, 3, 1, 0) BLOCK_FN(g2
 static const block_fn g2p_fns[2][2][2] = {{{g2p_200, g2p_201}, {g2p_210, g2p_211}}, {{g2p_300, g2p_301}, {g2p_310, g2p_311}}};
 
 void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
+    const mpm_state *m = s->mpm;
     const block_fn fn = g2p_fns[s->g.dim == 3][thermal_active(s)][water_active(s)];
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
         double tile[6 * GRID_T * GRID_T * GRID_T];
 #pragma omp for schedule(dynamic, 2)
-        for (int k = 0; k < s->npb; k++) fn(s, k, dt, tile);
+        for (int k = 0; k < m->npb; k++) fn(s, k, dt, tile);
     }
     /* reduce in block order so sums and the first failure do not depend on threads */
     *rep = (step_report){.particle = -1, .fastest = -1, .mover = -1};
     double vmax = -1, mass = 0;
-    for (int k = 0; k < s->npb; k++) {
-        const pb_partial *pp = &s->partial[k];
+    for (int k = 0; k < m->npb; k++) {
+        const pb_partial *pp = &m->partial[k];
         if (pp->fail_i >= 0 && (rep->particle < 0 || pp->fail_i < rep->particle)) {
             rep->particle = pp->fail_i;
             rep->kind = (fail_kind)pp->fail_kind;
@@ -682,14 +771,25 @@ static void mpm_region(const hearth_scene *s, double lo[3], double hi[3]) {
     }
 }
 
-/* The grid and the step scratch are the scene's (scene.c), so MPM has no
- * state of its own to free; its options are the scene's, checked there. */
+/* keys and order; the permutation and P2G's volumes, counted whether or not
+ * heat or water is on yet (either may turn on after the particles are seeded) */
+static double mpm_bytes_per_particle(const hearth_scene *s) {
+    (void)s;
+    return 2 * sizeof(int) + 2 * sizeof(double);
+}
+
+/* The grid is the scene's; the step scratch is MPM's own (mpm_state); its
+ * options are the scene's, checked there. */
 const solver mpm_solver = {
     .name = "mpm",
+    .init = mpm_init,
+    .free = mpm_free,
     .stable_dt = mpm_stable_dt,
     .step = mpm_step,
     .region = mpm_region,
+    .bytes_per_particle = mpm_bytes_per_particle,
     /* temperature from the heat field, porosity from plastic_J (P2G), saturation from the water field */
     .supplies = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_SATURATION,
     .can_checkpoint = 1,
+    .uses_grid = 1,
 };

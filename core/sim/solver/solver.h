@@ -25,6 +25,11 @@ typedef struct solver {
     /* The solver's own options in a scene definition; NULL when it has none.
      * Called by hearth_scene_create and every def change. */
     hearth_status (*check)(const hearth_scene_def *d, hearth_error *err);
+    /* Make what the solver keeps for itself in a new scene s (its grid is
+     * made): called once by hearth_scene_create; NULL when the solver makes its
+     * state on first use instead. On failure the scene is destroyed, so free
+     * must cope with what init left half made. */
+    hearth_status (*init)(hearth_scene *s, hearth_error *err);
     /* Material `mat` is being added to s (its slot s->mats.slot[mat] is filled and
      * counted; scene.c removes it again unless this returns HEARTH_OK): resolve what the solver
      * looks up per material once, here, rather than per particle per step.
@@ -41,9 +46,16 @@ typedef struct solver {
     /* Per-particle results of the last step ("density", "pressure",
      * "browning", ...), or NULL; the member is NULL when the solver keeps none. */
     const double *(*particle_values)(const hearth_scene *s, const char *which);
+    /* Bytes of step scratch the solver keeps per particle (its own arrays,
+     * with their growth margin), for scene_bytes_per_particle's estimate. */
+    double (*bytes_per_particle)(const hearth_scene *s);
     unsigned supplies;  /* the SOLVER_POINT_FIELDS it fills; a material needing another is refused */
     unsigned outputs;   /* SOLVER_OUT_* */
     int can_checkpoint; /* hearth_scene_save writes everything it needs to resume */
+    /* It transfers through the background grid: the scene makes the grid's
+     * block table (grid_init), else only its geometry (grid_init_geometry),
+     * which seeding's lattice still uses. */
+    int uses_grid;
 } solver;
 
 extern const solver mpm_solver, sph_solver;

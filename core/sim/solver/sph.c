@@ -974,8 +974,6 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
         st->n = 0;
         return HEARTH_OK;
     }
-    if ((e = scene_ensure_scratch(s, n, err))) return e;
-
     phase_predrift(s, dt);
     if ((e = phase_neighbours(s, err))) return e;
     if ((e = phase_density(s, err))) return e;
@@ -1052,6 +1050,21 @@ const double *sph_particle_values(const hearth_scene *s, const char *which) {
     return NULL;
 }
 
+/* What ensure() and the neighbour lists keep per particle: the ARRAYS
+ * doubles and the sort's key and order, each with ensure's 1/4 margin; the
+ * lists' offsets, and their entries for the neighbours within the support
+ * h = h_factor V0^(1/dim) (the lattice points of a disc or ball of radius h,
+ * with nlist_reserve's 1/4 margin). Adaptive h (sph.adaptive_h) may grow the
+ * lists past this. */
+static double sph_bytes_per_particle(const hearth_scene *s) {
+#define COUNT(a, k) +(k)
+    const double doubles = 0 ARRAYS(COUNT);
+#undef COUNT
+    const double hf = s->def.sph.h_factor;
+    const double nb = s->def.dim == 3 ? 4.0 / 3.0 * SPH_PI * hf * hf * hf : SPH_PI * hf * hf;
+    return 1.25 * (doubles * sizeof(double) + 2 * sizeof(int)) + sizeof(int) + 1.25 * nb * sizeof(int);
+}
+
 /* No grid, so no margin: particles may fill the whole box. */
 static void sph_region(const hearth_scene *s, double lo[3], double hi[3]) {
     for (int d = 0; d < 3; d++) lo[d] = s->def.lo[d], hi[d] = s->def.hi[d];
@@ -1065,9 +1078,11 @@ const solver sph_solver = {
     .step = sph_step,
     .free = sph_free,
     .region = sph_region,
+    .bytes_per_particle = sph_bytes_per_particle,
     .particle_values = sph_particle_values,
     /* temperature from the heat field, porosity from plastic_J (phase_stress); no water */
     .supplies = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY,
     .outputs = SOLVER_OUT_BROWNING,
     .can_checkpoint = 0, /* its options and final densities (eq. 3.52) are not in the format yet */
+    .uses_grid = 0,      /* neighbours come from its own cell list (sph_neighbours.c) */
 };

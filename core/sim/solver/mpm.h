@@ -1,0 +1,58 @@
+/* mpm.h: the MPM solver's own state (mpm_state) and its phases. mpm.c owns
+ * the state: it is made when an MPM scene is created (mpm_solver.init),
+ * grown by the sort when the particle count grows (never otherwise in the
+ * step loop) and freed with the scene (mpm_solver.free). An SPH scene has
+ * none. The field passes that run inside an MPM step (boundary, transport,
+ * thermal, water, mixing) walk the sort's particle blocks and read P2G's
+ * volumes through mpm_state_of(), read-only. */
+#ifndef HEARTH_SIM_MPM_H
+#define HEARTH_SIM_MPM_H
+#include "scene.h"
+
+/* A run of sorted particles sharing one grid block. */
+typedef struct pblock {
+    int block, start, end;
+} pblock;
+
+/* Per particle-block partial results, reduced in block order. */
+typedef struct pb_partial {
+    int fail_i, fail_kind, fail_code, fastest, mover;
+    double move; /* largest displacement in the block this step (m) */
+    double ke, mass, vmax, cmax, numax; /* numax: largest kinematic viscosity eta / rho (m^2/s) */
+    long ood;
+    /* water.c's per-block sums, written by G2P's block loop and reduced by water_finish: they stay
+     * here with the other partials so a step's reduction is one array in block order */
+    double water_removed, water_dmax, water_emax;
+} pb_partial;
+
+typedef struct mpm_state {
+    /* the sort's per-particle scratch, scratch_cap long */
+    int *keys, *order;
+    double *perm_scratch;
+    double *vol;            /* with heat or water: each particle's volume J V_0 this step, from P2G (NULL otherwise) */
+    int scratch_cap;
+    /* per block of the box (nblocks as when made: the grid never changes size) */
+    int nblocks;
+    int *counts;            /* nblocks + 1 */
+    unsigned char *mark;    /* nblocks */
+    /* the particle blocks of this step, pbcap long */
+    pblock *pb;
+    int npb, pbcap;
+    int *colour_pb;         /* pb indices grouped by colour */
+    int colour_start[9];
+    pb_partial *partial;
+} mpm_state;
+
+/// The MPM state of s (NULL under another solver), for the field passes an
+/// MPM step runs: the particle blocks of this step's sort and P2G's volumes.
+static inline const mpm_state *mpm_state_of(const hearth_scene *s) { return s->mpm; }
+
+hearth_status mpm_sort(hearth_scene *s, hearth_error *err);
+void mpm_p2g(hearth_scene *s, double dt, step_report *rep);
+/// Returns the largest collider speed (m/s) at a node with mass that a collider set.
+double mpm_grid_update(hearth_scene *s, double dt);
+void mpm_g2p(hearth_scene *s, double dt, step_report *rep);
+hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err);
+/* The stable step: CFL, the user's maximum, explicit conduction, water and viscosity. */
+double mpm_stable_dt(const hearth_scene *s);
+#endif
