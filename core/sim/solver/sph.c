@@ -46,7 +46,21 @@
  * outward); the external heat flows toward the outside temperature (the thesis
  * prints T_i - T_ext); XSPH epsilon is at most 1 (Table 4.1's 5 overshoots;
  * the text of §4.3 uses 0.5); fixed particles are no-slip walls in eq. 3.19
- * (Morris et al. 1997), their drag taken implicitly in the kick.
+ * (Morris et al. 1997), their drag taken implicitly in the kick; eq. 3.19's
+ * Laplacian (the kernel of eq. 3.8) is renormalised per particle by its
+ * discrete second moment (viscous_moments). Eq. 3.8 summed over a resting
+ * lattice is 5.7% stronger than its integral at h = 2.4 spacings (3.8% with
+ * rows sliding), a bias fixed by h over the spacing, so it does not shrink
+ * as the spacing does: a creeping channel start-up was 4.6%, 5.2%, 5.4% slow
+ * at 10, 20, 40 particles across. We chose the renormalisation over Morris
+ * et al.'s grad W . r / r^2 form because that form, too, is off by a fixed
+ * fraction on a lattice (0.9% weak resting, 0.6% strong sliding in 2D, 1.8%
+ * weak in 3D), while the renormalised sum is exact for a quadratic velocity
+ * on any resting lattice and within 0.3% sliding; it keeps the thesis's
+ * kernel (and so its viscous dt limit). Now the start-up converges (order
+ * 1.2, `sph_creeping_startup_converges`) and so does the steady profile
+ * (order 1.9, `sph_poiseuille_converges`). Eq. 3.45's heat Laplacian uses the
+ * same kernel and keeps its lattice bias (not renormalised).
  *
  * Shared with MPM: particles, plugins through the material door (porosity from
  * plastic_J for a material that needs it; no saturation: a material that needs
@@ -73,10 +87,7 @@
  * eps 0.3 a block in strong uniform tension still creeps toward pairs over
  * many sound crossings (`sph_artificial_stress_fluid`: 0.68 spacings at 1 s;
  * 0.5 holds). Surface tension above about 0.02 N/m does not settle a 0.06 m
- * drop (`sph_surface_tension_rounds_drop`). Poiseuille flow is 2.2% of the
- * peak off the parabola: eq. 3.8 summed over particle rows is 3.8% stronger
- * than its integral at h = 2.4 spacings (5.7% on a resting lattice, so a very
- * viscous channel is 5% slow, `sph_wall_drag_stable`). */
+ * drop (`sph_surface_tension_rounds_drop`). */
 #include "plugins.h"
 #include "solver.h"
 #include "sph.h"
@@ -104,6 +115,7 @@ struct sph_state {
     double *perm;   /* permutation scratch, cap doubles */
     double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *brown, *surf, *rhof, *dT, *Tprev;
     double *rho0, *B, *mu, *c0, *xsph;
+    double *vc;     /* the viscous Laplacian's renormalisation (viscous_moments), per particle this step */
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
     double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
     double amax;    /* largest |a| of the last step, for the force limit */
@@ -131,7 +143,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
 
 #define ARRAYS(X)                                                                                                      \
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(brown, 1) X(surf, 1) X(rhof, 1)       \
-        X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9)
+        X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9) X(vc, 1)
 
 static void sph_free(hearth_scene *s) {
     struct sph_state *st = s->sph;
@@ -278,16 +290,17 @@ static void particle_constants(hearth_scene *s, int i, const double *T, double *
  * particle a moves with v_b = -(d_b / d_a) v_a, d the distances to the wall
  * surface, so the velocity extrapolates linearly to zero on the surface.
  * With wall particles at rest instead, eq. 3.19 lets the first fluid layer
- * slip (Poiseuille flow 12.6% off the parabola; 2.2% with this,
- * `sph_poiseuille`). Particle walls carry no surface, so it is estimated
- * per fluid particle a: the wall normal n is minus the gradient of the
+ * slip (Poiseuille flow 12.6% off the parabola; 2.2% with this, 0.58% with
+ * eq. 3.8 renormalised as well, `sph_poiseuille`). Particle walls carry no
+ * surface, so it is estimated per fluid particle a: the wall normal n is minus the gradient of the
  * fixed particles' colour field at a (that gradient points into the wall),
  * and the surface lies half a wall spacing beyond the wall particle nearest
  * along n (exact for the lattice walls bodies make). Morris et al. bound
  * 1 + d_b / d_a so a particle close to the surface does not get an
  * unbounded wall velocity; here d_a is taken as at least half the fluid
  * particle's own spacing instead, which never bites on the rest lattice
- * (their bound of 1.5 would, and leaves 4.9% slip in `sph_poiseuille`).
+ * (their bound of 1.5 would, and left 4.9% slip in `sph_poiseuille` before
+ * eq. 3.8 was renormalised).
  * wall_frame returns 0 when a has no fixed neighbour. */
 static int wall_frame(const hearth_scene *s, int i, double n[3], double *da) {
     const struct sph_state *st = s->sph;
@@ -685,6 +698,90 @@ static void phase_artificial_stress(hearth_scene *s) {
     }
 }
 
+/* tr M of eq. 3.8's Laplacian over a full square (2D) or cubic (3D) lattice
+ * of unit spacing at support h (in spacings), unit volumes: 2 dim times
+ * 1.057 at h = 2.4 in 2D (0.966 in 3D). */
+static double lattice_moment(int dim, double h) {
+    const int R = (int)h + 1;
+    double tr = 0;
+    for (int a = -R; a <= R; a++)
+        for (int b = -R; b <= R; b++)
+            for (int c = dim == 3 ? -R : 0; c <= (dim == 3 ? R : 0); c++) {
+                const double r2 = (double)(a * a + b * b + c * c);
+                if (r2 > 0) tr += sph_lap_visc(dim, sqrt(r2), h) * r2;
+            }
+    return tr;
+}
+
+/* The renormalisation of eq. 3.8's Laplacian (our deviation; the header
+ * says why). Summed over neighbours, sum_b V_b L(r_ab) (v_b - v_a) for a
+ * quadratic v is (1/2) M_a : grad grad v, with M_a = sum_b V_b L r r the
+ * kernel's discrete second moment; its integral is 2 I, so with c_a =
+ * 2 dim / tr M_a the sum is the Laplacian exactly wherever M_a is isotropic
+ * (any resting square or cubic lattice, whatever h over the spacing), and
+ * within 0.3% with rows sliding past each other (M_xx and M_yy then differ
+ * by 0.4%). Wall particles count as neighbours, so a fluid particle next to
+ * a wall has a full neighbourhood.
+ *
+ * That holds for a full neighbourhood only: with neighbours missing on one
+ * side (a free surface, the outer face of a wall) tr M loses more than its
+ * share (the far neighbours weigh r^2), so 2 dim phi / tr M, phi the filled
+ * part of the neighbourhood, came out 1.2 at the edge of a disc, 27% above
+ * its inside, and the surface of the bubble dough (`sph_bubble_expansion`)
+ * ran away (the same with the rows two and three in: their phi is 0.97 or
+ * more, the far neighbours being light in W). So c_a blends into the factor
+ * of the resting lattice at a's own h and spacing (lattice_moment) as the
+ * filled part phi_a = sum_b V_b W_ab / (1 - V_a W(0)) falls from 0.95 to
+ * 0.85, or as the centre of the moment, |sum_b V_b L r^2 r| / (h tr M),
+ * moves from 2% to 5% of h off a (0 on any symmetric neighbourhood, resting
+ * or sliding): the same correction throughout a body at rest, and no
+ * strength that the neighbourhood's shape makes up. c_a is held within [0.8, 1.2]: that covers every regular
+ * arrangement (0.94 to 1.16 for h from 2 to 4 spacings), while in a clumped
+ * neighbourhood, where no moment makes eq. 3.8 exact, tr M falls with r^2
+ * and c would grow without bound.
+ *
+ * Rejected: Morris et al.'s (1997) grad W . r / r^2 form alone, 0.9% weak
+ * on the resting lattice and 0.6% strong with rows sliding at h = 2.4
+ * spacings (1.8% weak in 3D): smaller, but a bias that does not shrink with
+ * resolution all the same; the resting lattice's factor everywhere, exact at
+ * rest but 1.8% weak once rows slide (steady Poiseuille flow); a tensor
+ * factor (pair weights e^T A e, A solved from the fourth moment so every
+ * quadratic field is exact), which would remove the 0.2% anisotropy of
+ * sliding rows but fits each instant's skewed arrangement of them: steady
+ * Poiseuille flow went from 0.58% to 3.4% off at 20 across. */
+static void viscous_moments(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    const particles *ps = &s->ps;
+    const int n = ps->n, dim = s->def.dim;
+    const double *x = pcold(ps, PC_X), *m = pcold(ps, PC_MASS);
+    const int *off = st->nl.off, *nb = st->nl.j;
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        double fill = 0, tr = 0, g[3] = {0, 0, 0};
+        for (int k = off[i]; k < off[i + 1]; k++) {
+            const int j = nb[k];
+            double d[3];
+            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
+            const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], r = sqrt(r2);
+            if (r <= 0) continue;
+            const double hij = 0.5 * (st->h[i] + st->h[j]), Vj = m[j] / st->rho[j];
+            const double lr2 = Vj * sph_lap_visc(dim, r, hij) * r2;
+            fill += Vj * sph_w(dim, r, hij);
+            tr += lr2;
+            for (int q = 0; q < 3; q++) g[q] += lr2 * d[q];
+        }
+        const double full = 1.0 - m[i] / st->rho[i] * sph_w(dim, 0, st->h[i]), phi = full > 0 ? fill / full : 0;
+        /* lopsided: the moment's centre off a by more than 2% of h (0 on any symmetric neighbourhood) */
+        const double off_c = tr > 0 ? sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) / (tr * st->h[i]) : 1.0;
+        const double uphi = phi >= 0.95 ? 1.0 : phi <= 0.85 ? 0.0 : (phi - 0.85) / 0.1;
+        const double uoff = off_c <= 0.02 ? 1.0 : off_c >= 0.05 ? 0.0 : (0.05 - off_c) / 0.03;
+        const double u = uphi * uoff;
+        double c = u > 0 ? 2.0 * dim * phi / tr : 1.0;
+        if (u < 1) c = u * c + (1 - u) * 2.0 * dim / lattice_moment(dim, st->h[i] / st->sp[i]);
+        st->vc[i] = c < 0.8 ? 0.8 : c > 1.2 ? 1.2 : c;
+    }
+}
+
 /* Accelerations and heat rates, then the kick into st->vnew. Per particle:
  * gravity and the body force; per neighbour the pressure (eq. 3.18) with the
  * artificial viscosity's beta term (eq. 3.41, mu_ij of eq. 3.37), the
@@ -702,6 +799,7 @@ static void phase_forces(hearth_scene *s, double dt) {
     const int *off = st->nl.off, *nb = st->nl.j;
     const double eps_as = o->artificial_stress;
     for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(c.V0[i]) : sqrt(c.V0[i]); /* once, not per pair */
+    viscous_moments(s);
     const double *gvec = s->def.gravity;
     const double Text = s->def.oven_temperature;
     /* Robin heat exchange (Ding et al. 2019 §6.6, the MPM solver's oven): beta
@@ -740,7 +838,9 @@ static void phase_forces(hearth_scene *s, double dt) {
                 Pij += o->av_beta * muij * muij / (0.5 * (ri + rj));
             }
             const double *Sj = st->S + 9 * j, lv = sph_lap_visc(dim, r, hij);
-            const double visc = 0.5 * (st->mu[i] + st->mu[j]) * m[j] / (rj * ri) * lv; /* eq. 3.19 over rho_i */
+            /* eq. 3.19 over rho_i; its Laplacian renormalised (viscous_moments), the pair's mean factor so
+             * the pair's forces stay equal and opposite */
+            const double visc = 0.5 * (st->mu[i] + st->mu[j]) * m[j] / (rj * ri) * lv * 0.5 * (st->vc[i] + st->vc[j]);
             /* a wall particle's velocity for eq. 3.19: Morris et al. 1997 (wall_frame) */
             const int wj = wall && (flags[j] & PF_FIXED);
             const double beta = wj ? wall_beta(d, wn, da, dah) : 1.0;
