@@ -559,7 +559,7 @@ static void push_values(lua_State *L, const double *v, int n) {
 static int l_probe(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     const char *f = luaL_checkstring(L, 2);
-    double x[3], out[3];
+    double x[3], out[9]; /* the widest field is the stress tensor */
     hl_checkvec(L, 3, "probe point", x);
     hearth_error err;
     if (hearth_probe_point(u->s, f, x, out, &err)) return hl_raise(L, &err);
@@ -665,6 +665,36 @@ static int l_positions(lua_State *L) {
     return 1;
 }
 
+/* s:_particle_field(name) -> flat array of n * components numbers in particle
+ * order; "id" gives the particle ids. init.lua's s:particles checks the names
+ * first (for its did-you-mean) and gathers several fields. */
+static int l_particle_field(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const char *f = luaL_checkstring(L, 2);
+    const int n = hearth_scene_particle_count(u->s);
+    if (strcmp(f, "id") == 0) {
+        const int *id = hearth_scene_particle_ids(u->s);
+        lua_createtable(L, n, 0);
+        for (int i = 0; i < n; i++) {
+            lua_pushinteger(L, id[i]);
+            lua_seti(L, -2, i + 1);
+        }
+        return 1;
+    }
+    const int nc = hearth_field_components(f);
+    const size_t len = (size_t)(n > 0 ? n : 1) * (size_t)(nc > 0 ? nc : 1);
+    double *out = lua_newuserdatauv(L, sizeof(double) * len, 0); /* freed by Lua's GC, even on an error */
+    hearth_error err;
+    if (hearth_scene_particle_field(u->s, f, out, &err)) return hl_raise(L, &err);
+    const lua_Integer total = (lua_Integer)n * nc;
+    lua_createtable(L, (int)total, 0);
+    for (lua_Integer i = 0; i < total; i++) {
+        lua_pushnumber(L, out[i]);
+        lua_seti(L, -2, i + 1);
+    }
+    return 1;
+}
+
 /* s:material_params(id) -> {name = value, ...}: what the scene simulates with
  * (after blending), so a scene can print or check it. */
 static int l_material_params(lua_State *L) {
@@ -721,7 +751,7 @@ void hl_open_scene(lua_State *L) {
         {"cut", l_cut},          {"move", l_move},         {"collider_velocity", l_collider_velocity},
         {"set_dt", l_set_dt}, {"settings", l_settings},    {"oven", l_oven},    {"probe", l_probe},       {"line", l_line},          {"_slice", l_slice},
         {"stats", l_stats},      {"_time", l_time},      {"body_particles", l_body_particles}, {"hash", l_hash},
-        {"positions", l_positions}, {"volume", l_volume}, {"material_params", l_material_params}, {NULL, NULL}};
+        {"positions", l_positions}, {"_particle_field", l_particle_field}, {"volume", l_volume}, {"material_params", l_material_params}, {NULL, NULL}};
     luaL_newmetatable(L, HL_SCENE);
     lua_pushcfunction(L, l_gc);
     lua_setfield(L, -2, "__gc");

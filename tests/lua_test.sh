@@ -681,6 +681,13 @@ stale_tmp_cleaned)
     "$hearth" run "$scenes/tiny.lua" >out.txt 2>err.txt
     grep -q "stale" err.txt && fail "nothing stale the second time, yet: $(cat err.txt)"
     ;;
+particles_track_by_id)
+    # s:particles returns every particle's fields with an id that follows it through the step's sort
+    run particles_track.lua
+    expect_rc 0 "s:particles in free flight"
+    cat out.txt
+    has out.txt "particles_track ok" "every particle found by its id where its flight takes it"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"

@@ -692,6 +692,45 @@ function S:step(n)
   return self
 end
 
+--- s:particles{fields = {"id", "x", "v", "temperature", ...}} -> {n = count, id = {...}, x = {...}, ...}:
+--- every particle's values, in one order for all the fields asked for. Scalars are n numbers;
+--- vectors are flattened, 3 numbers a particle ({x1, y1, z1, x2, ...}, as s:positions());
+--- "stress" 9 a particle (row-major xx xy xz yx yy yz zx zy zz). "x" is the position, "v"
+--- the velocity, "id" the particle's id: the order changes from step to step (the step
+--- sorts particles) but an id stays with its particle, so a marked particle is found again
+--- by its id.
+local particle_aliases = { x = true, v = "velocity", id = true }
+function S:particles(o)
+  if type(o) ~= "table" then error("s:particles: expected a table {fields = {...}}", 2) end
+  check_keys(o, { fields = true }, "s:particles")
+  if type(o.fields) ~= "table" or #o.fields == 0 then
+    error("s:particles: fields = {\"x\", \"v\", ...} (a list of field names) is required", 2)
+  end
+  local valid, live = { x = true, v = true, id = true }, self:stats().fields
+  for _, f in ipairs(live) do
+    valid[f] = true
+    if f == "velocity" then valid.velocity_x, valid.velocity_y, valid.velocity_z = true, true, true end
+    if f == "stress" then
+      for _, c in ipairs { "xx", "yy", "zz", "xy", "xz", "yz" } do valid["stress_" .. c] = true end
+    end
+  end
+  local r = { n = self:stats().particles }
+  for k, f in ipairs(o.fields) do
+    if type(f) ~= "string" then error(("s:particles: fields[%d] is a %s, not a field name"):format(k, type(f)), 2) end
+    if not valid[f] then
+      -- a known field that is not live says how to turn it on; anything else is a misspelling
+      local ok, e = pcall(self._particle_field, self, f)
+      if not ok and tostring(e):find("is not live", 1, true) then error("s:particles: " .. tostring(e), 2) end
+      local near = nearest(f, valid)
+      error(("s:particles: unknown field '%s'%s (live fields: id, x, v, %s)"):format(f,
+        near and ("; did you mean '" .. near .. "'?") or "", table.concat(live, ", ")), 2)
+    end
+    if f == "x" then r.x = self:positions()
+    else r[f] = self:_particle_field(particle_aliases[f] == true and f or particle_aliases[f] or f) end
+  end
+  return r
+end
+
 --- s:slice(field, {axis = "z", at = 0.5, res = 64}) -> rows of numbers (row 1 at the low end)
 function S:slice(field, o)
   o = o or {}
@@ -808,8 +847,13 @@ function S:run(o)
         ("%.9g"):format(stt.kinetic), ("%.9g"):format(stt.max_speed) }
       for _, p in ipairs(probes) do
         local v = self:probe(p[1], p[2])
-        r[#r + 1] = type(v) == "table" and ("%.9g"):format(math.sqrt(v[1] ^ 2 + v[2] ^ 2 + v[3] ^ 2))
-          or ("%.9g"):format(v)
+        local m = v
+        if type(v) == "table" then -- a vector's magnitude, a tensor's Frobenius norm
+          m = 0
+          for _, c in ipairs(v) do m = m + c * c end
+          m = math.sqrt(m)
+        end
+        r[#r + 1] = ("%.9g"):format(m)
       end
       rows[#rows + 1] = table.concat(r, ",")
       core.write_atomic(o.csv, table.concat(rows, "\n") .. "\n", "s:run{csv = ...}")

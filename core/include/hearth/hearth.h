@@ -441,7 +441,10 @@ hearth_status hearth_material_check(const char *plugin, const char *const *names
 
 /// Names of the fields live in this scene, space separated (static until the scene changes).
 const char *hearth_scene_fields(const hearth_scene *s);
-/// Number of components of a field (1 or 3), or 0 when the name is unknown.
+/// Number of components of a field (1, 3 or 9), or 0 when the name is unknown.
+/// "stress" has 9: the Cauchy stress row-major (xx xy xz yx yy yz zx zy zz, Pa,
+/// tension positive); its symmetric components are the scalar fields stress_xx,
+/// stress_yy, stress_zz, stress_xy, stress_xz and stress_yz.
 int hearth_field_components(const char *field);
 /// Unit of a field ("m/s", "kg/m^3", ...), or NULL when unknown.
 const char *hearth_field_unit(const char *field);
@@ -465,6 +468,11 @@ double hearth_scene_volume(const hearth_scene *s);
 /// Particle positions, 3 doubles each, valid until the next step.
 const double *hearth_scene_positions(const hearth_scene *s);
 int hearth_scene_particle_count(const hearth_scene *s);
+/// Particle ids, one each, in the order of hearth_scene_positions and
+/// hearth_scene_particle_field; valid until the next step. An id is given at
+/// seeding and never changes or is reused, while the order of particles does
+/// (the step sorts them), so a marked particle is found again by its id.
+const int *hearth_scene_particle_ids(const hearth_scene *s);
 
 /* ---- pictures -------------------------------------------------------- */
 
