@@ -688,6 +688,18 @@ particles_track_by_id)
     cat out.txt
     has out.txt "particles_track ok" "every particle found by its id where its flight takes it"
     ;;
+damping_settles_column)
+    # h.scene{damping} and s:run{until_rest}: a column comes to rest with its static stress
+    run settled_column.lua
+    expect_rc 0 "the settled column"
+    cat out.txt
+    has out.txt "settled_column ok" "at rest, interior stress within 5% of rho g (top - y), undamped still ringing"
+    ;;
+damping_refusals)
+    run damping_errors.lua
+    expect_rc 0 "damping's and until_rest's errors"
+    has out.txt "damping_errors ok" "bad damping, SPH damping, a damped checkpoint and a bad until_rest are refused"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"

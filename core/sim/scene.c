@@ -90,6 +90,9 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
     /* ---- the solver's own options (solver.h) ---- */
     const solver *sv = solver_of(d->solver);
     if (!sv) return err_set(err, HEARTH_ERR_PARAM, "scene: solver = %d; valid: 0 (mpm), 1 (sph)", d->solver);
+    if (d->damping > 0 && d->solver != HEARTH_SOLVER_MPM) /* it acts in mpm.c's grid update */
+        return err_set(err, HEARTH_ERR_PARAM, "scene: damping = %g 1/s; only the MPM solver damps (solver = \"mpm\")",
+                       d->damping);
     return sv->check ? sv->check(d, err) : HEARTH_OK;
 }
 

@@ -764,7 +764,7 @@ local function default_field(s)
   return "speed"
 end
 
-local run_keys = { until_t = true, every = true, on_frame = true, csv = true, probes = true, png = true }
+local run_keys = { until_t = true, every = true, on_frame = true, csv = true, probes = true, png = true, until_rest = true }
 local run_png_keys = { field = true, path = true, kind = true, width = true, height = true, axis = true, at = true }
 local png_keys = { kind = true, width = true, height = true, axis = true, at = true }
 
@@ -818,6 +818,8 @@ function S:run(o)
   local until_t = opts.until_t or o.until_t
   if until_t == nil then error("s:run: until_t is required (or pass --until to hearth run)", 2) end
   check_number(until_t, "s:run: until_t", 0, 1e12, "s")
+  local rest = o.until_rest
+  if rest ~= nil then check_number(rest, "s:run: until_rest", 0, 1e12, "m/s") end
   local span = until_t - t0
   local every = o.every
   if opts.frames then every = span / opts.frames end
@@ -865,7 +867,13 @@ function S:run(o)
   frame()
   local next_frame = t0 + every
   local yield_steps = opts.yield and coroutine.isyieldable()
-  while self:_time() < until_t - 1e-12 * math.max(1, until_t) do
+  -- until_rest: the largest particle speed is checked after every batch of
+  -- steps (at most 64) and at frames; the run is at rest when it is below the
+  -- tolerance and not larger than at the check before. The second condition
+  -- keeps a body released from rest (slow in its first steps, but
+  -- accelerating) from counting as settled.
+  local at_rest, last_speed = false, math.huge
+  while self:_time() < until_t - 1e-12 * math.max(1, until_t) and not at_rest do
     local now = self:_time()
     local target = math.min(next_frame, until_t)
     local ev = st.events[1]
@@ -886,8 +894,12 @@ function S:run(o)
     end
     fire_events(self)
     local stt = self:stats()
-    if stt.t >= next_frame - 1e-9 * every then
-      frame()
+    if rest then
+      at_rest = stt.max_speed < rest and stt.max_speed <= last_speed
+      last_speed = stt.max_speed
+    end
+    if stt.t >= next_frame - 1e-9 * every or at_rest then
+      frame() -- a run that stops at rest ends with a frame of the rest state
       next_frame = next_frame + every
     end
     core.progress(stt.t, until_t, stt.step, false)
@@ -895,6 +907,7 @@ function S:run(o)
   local stt = self:stats()
   core.progress(stt.t, until_t, stt.step, true)
   st.ran = true
+  if rest then stt.at_rest = at_rest end
   return stt
 end
 

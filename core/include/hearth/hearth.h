@@ -220,6 +220,7 @@ typedef struct hearth_scene_def {
     double heat_flip;        ///< temperature to particles: 1 FLIP (default, eq. 21) .. 0 PIC (the nodes' value)
     int solver;              ///< hearth_solver; default MPM
     hearth_sph_def sph;      ///< SPH options (solver = HEARTH_SOLVER_SPH)
+    double damping;          ///< MPM velocity damping c (1/s): the grid velocity decays as 1/(1 + c dt) a step; 0 = off
 } hearth_scene_def;
 
 /// Defaults: those of hearth_scene_settings() (2D, dx 0.01, box [0,1]^3, gravity

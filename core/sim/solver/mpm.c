@@ -467,6 +467,10 @@ double mpm_grid_update(hearth_scene *s, double dt) {
     const int D = g->dim, NPB = g->nodes_per_block;
     const hearth_scene_def *def = &s->def;
     double vcol2 = 0; /* the fastest collider at a node with mass (the guard's driven energy) */
+    /* Velocity damping for static problems, implicit in the drag (v' = v + dt (g - c v')) so any c dt is
+     * stable; an explicit factor 1 - c dt would reverse velocities past c dt = 1. With c = 0 the branch
+     * below is never taken, so undamped scenes step as before, bit for bit. */
+    const double damp = 1.0 / (1.0 + def->damping * dt);
 #pragma omp parallel for schedule(dynamic, 4) reduction(max : vcol2) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         double *node = grid_block(g, k);
@@ -490,6 +494,8 @@ double mpm_grid_update(hearth_scene *s, double dt) {
                 for (int d = 0; d < D; d++) acc[d] += extra[d];
             }
             for (int d = 0; d < D; d++) v[d] += dt * acc[d];
+            if (def->damping > 0)
+                for (int d = 0; d < D; d++) v[d] *= damp;
             /* domain walls act on the two node layers nearest each face */
             for (int d = 0; d < D; d++) {
                 const double zero[3] = {0, 0, 0};
