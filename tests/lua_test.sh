@@ -700,6 +700,13 @@ damping_refusals)
     expect_rc 0 "damping's and until_rest's errors"
     has out.txt "damping_errors ok" "bad damping, SPH damping, a damped checkpoint and a bad until_rest are refused"
     ;;
+gravity_at_events_and_ramp)
+    # s:gravity{...} at events and s:gravity(function(t) ... end) against the integral of g
+    run gravity_ramp.lua
+    expect_rc 0 "s:gravity"
+    cat out.txt
+    has out.txt "gravity_ramp ok" "step and ramp velocities, bad functions named"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"

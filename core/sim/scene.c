@@ -488,6 +488,27 @@ hearth_status hearth_scene_collider_motion(hearth_scene *s, int id, hearth_motio
     return HEARTH_OK;
 }
 
+hearth_status hearth_scene_set_gravity(hearth_scene *s, const double g[3], hearth_error *err) {
+    err_clear(err);
+    for (int d = 0; d < 3; d++)
+        if (!isfinite(g[d])) return err_set(err, HEARTH_ERR_PARAM, "gravity[%d] = %g m/s^2; it must be finite", d, g[d]);
+    for (int d = 0; d < 3; d++) s->def.gravity[d] = s->def.dim == 2 && d == 2 ? 0.0 : g[d];
+    return HEARTH_OK;
+}
+
+void hearth_scene_set_gravity_fn(hearth_scene *s, hearth_gravity_fn fn, void *ud) {
+    s->gravity_fn = fn;
+    s->gravity_ud = fn ? ud : NULL;
+}
+
+/* The gravity function's value for the step starting now; a non-finite one is ignored (the host reports it). */
+static void gravity_at_step(hearth_scene *s) {
+    if (!s->gravity_fn) return;
+    double g[3] = {s->def.gravity[0], s->def.gravity[1], s->def.gravity[2]};
+    s->gravity_fn(s->gravity_ud, s->t, g);
+    hearth_scene_set_gravity(s, g, NULL);
+}
+
 void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void *ud) {
     s->body_force = fn;
     s->body_force_ud = fn ? ud : NULL;
@@ -526,6 +547,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             if (st) return st;
         }
         const double speed_before = s->max_speed;
+        gravity_at_step(s);
         for (int c = 0; c < s->ncol; c++) {
             collider_set_time(&s->cols[c], s->t);
             collider_update_bounds(&s->cols[c], 2.0 * s->def.dx);

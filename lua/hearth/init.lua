@@ -692,6 +692,15 @@ function S:step(n)
   return self
 end
 
+--- s:gravity({gx, gy[, gz]}) sets gravity (m/s^2) from now on (at an event, say);
+--- s:gravity(function(t) return {gx, gy[, gz]} end) makes it a function of time,
+--- evaluated at the start of every step (a ramp, a tilt, a shaker).
+function S:gravity(g)
+  if type(g) ~= "function" then g = check_vec(g, "s:gravity") end
+  self:_gravity(g)
+  return self
+end
+
 --- s:particles{fields = {"id", "x", "v", "temperature", ...}} -> {n = count, id = {...}, x = {...}, ...}:
 --- every particle's values, in one order for all the fields asked for. Scalars are n numbers;
 --- vectors are flattened, 3 numbers a particle ({x1, y1, z1, x2, ...}, as s:positions());

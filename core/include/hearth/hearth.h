@@ -342,6 +342,15 @@ hearth_status hearth_scene_collider_motion(hearth_scene *s, int id, hearth_motio
 /// Extra body force as an acceleration field (m/s^2), added to gravity. NULL removes it.
 typedef void (*hearth_body_force_fn)(void *ud, double t, const double x[3], double acc[3]);
 void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void *ud);
+/// Set gravity now (m/s^2; z ignored in 2D), for later steps. HEARTH_ERR_PARAM when not finite.
+hearth_status hearth_scene_set_gravity(hearth_scene *s, const double g[3], hearth_error *err);
+/// Gravity as a function of time (a ramp, a tilt): fn(ud, t, g) is called once
+/// at the start of every step, outside parallel loops, with the step's start
+/// time, and its g (m/s^2) acts for that step. A non-finite component keeps the
+/// previous gravity. NULL removes the function; gravity keeps its last value.
+/// Not saved by checkpoints (as motion callbacks).
+typedef void (*hearth_gravity_fn)(void *ud, double t, double g[3]);
+void hearth_scene_set_gravity_fn(hearth_scene *s, hearth_gravity_fn fn, void *ud);
 
 /// Advance n steps. HEARTH_ERR_GUARD when the guard stopped the run (see
 /// hearth_stats.diagnosis). With the rollback policy the scene is left at the
