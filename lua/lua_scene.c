@@ -420,6 +420,78 @@ static int l_collider(lua_State *L) {
     return 1;
 }
 
+/* Gravity from a Lua function of time, called by the core once a step (outside
+ * parallel loops). As with collider motion, a Lua error or a bad value is
+ * kept and raised when the step returns; the step keeps the previous gravity. */
+static void gravity_cb(void *ud, double t, double g[3]) {
+    hl_motion *m = ud;
+    lua_State *L = m->L;
+    if (m->failed) return;
+    lua_rawgeti(L, LUA_REGISTRYINDEX, m->vref);
+    lua_pushnumber(L, t);
+    if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+        m->failed = 1;
+        snprintf(m->msg, sizeof m->msg, "s:gravity function: %s", lua_tostring(L, -1));
+    } else if (lua_istable(L, -1)) {
+        double v[3] = {0, 0, 0};
+        int ok = 1;
+        for (int k = 0; k < 3; k++) {
+            const int ty = lua_geti(L, -1, k + 1);
+            if (ty == LUA_TNUMBER) v[k] = lua_tonumber(L, -1);
+            else if (!(k == 2 && ty == LUA_TNIL)) ok = 0;
+            lua_pop(L, 1);
+        }
+        if (ok && isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2])) memcpy(g, v, sizeof v);
+        else {
+            m->failed = 1;
+            snprintf(m->msg, sizeof m->msg, "s:gravity function at t = %g returned a table that is not {gx, gy[, gz]} of "
+                     "finite numbers (m/s^2)", t);
+        }
+    } else {
+        m->failed = 1;
+        snprintf(m->msg, sizeof m->msg, "s:gravity function at t = %g returned %s; expected {gx, gy[, gz]} (m/s^2)", t,
+                 luaL_typename(L, -1));
+    }
+    lua_pop(L, 1);
+}
+
+/* s:_gravity(vec | function(t) -> vec): set gravity now, or from a function of time every step */
+static int l_gravity(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    if (!lua_isfunction(L, 2)) {
+        double g[3];
+        hl_checkvec(L, 2, "gravity", g);
+        hearth_error err;
+        hearth_scene_set_gravity_fn(u->s, NULL, NULL);
+        if (hearth_scene_set_gravity(u->s, g, &err)) return hl_raise(L, &err);
+        return 0;
+    }
+    hl_motion *m = lua_newuserdatauv(L, sizeof *m, 0);
+    memset(m, 0, sizeof *m);
+    m->L = L;
+    m->vref = m->oref = LUA_NOREF;
+    if (luaL_newmetatable(L, "hearth.motion")) {
+        lua_pushcfunction(L, l_motion_gc);
+        lua_setfield(L, -2, "__gc");
+    }
+    lua_setmetatable(L, -2);
+    lua_pushvalue(L, 2);
+    m->vref = luaL_ref(L, LUA_REGISTRYINDEX);
+    /* kept in the scene's motions list: alive while the scene is, and checked after each step */
+    lua_getiuservalue(L, 1, 1);
+    if (lua_getfield(L, -1, "motions") != LUA_TTABLE) {
+        lua_pop(L, 1);
+        lua_newtable(L);
+        lua_pushvalue(L, -1);
+        lua_setfield(L, -3, "motions");
+    }
+    lua_pushvalue(L, -3);
+    lua_seti(L, -2, luaL_len(L, -2) + 1);
+    lua_pop(L, 2);
+    hearth_scene_set_gravity_fn(u->s, gravity_cb, m);
+    return 0;
+}
+
 /* s:_advance(t_end) / s:_step(n): one core call each; raises on guard stops */
 static int l_advance(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
@@ -559,7 +631,7 @@ static void push_values(lua_State *L, const double *v, int n) {
 static int l_probe(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     const char *f = luaL_checkstring(L, 2);
-    double x[3], out[3];
+    double x[3], out[9]; /* the widest field is the stress tensor */
     hl_checkvec(L, 3, "probe point", x);
     hearth_error err;
     if (hearth_probe_point(u->s, f, x, out, &err)) return hl_raise(L, &err);
@@ -665,6 +737,36 @@ static int l_positions(lua_State *L) {
     return 1;
 }
 
+/* s:_particle_field(name) -> flat array of n * components numbers in particle
+ * order; "id" gives the particle ids. init.lua's s:particles checks the names
+ * first (for its did-you-mean) and gathers several fields. */
+static int l_particle_field(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const char *f = luaL_checkstring(L, 2);
+    const int n = hearth_scene_particle_count(u->s);
+    if (strcmp(f, "id") == 0) {
+        const int *id = hearth_scene_particle_ids(u->s);
+        lua_createtable(L, n, 0);
+        for (int i = 0; i < n; i++) {
+            lua_pushinteger(L, id[i]);
+            lua_seti(L, -2, i + 1);
+        }
+        return 1;
+    }
+    const int nc = hearth_field_components(f);
+    const size_t len = (size_t)(n > 0 ? n : 1) * (size_t)(nc > 0 ? nc : 1);
+    double *out = lua_newuserdatauv(L, sizeof(double) * len, 0); /* freed by Lua's GC, even on an error */
+    hearth_error err;
+    if (hearth_scene_particle_field(u->s, f, out, &err)) return hl_raise(L, &err);
+    const lua_Integer total = (lua_Integer)n * nc;
+    lua_createtable(L, (int)total, 0);
+    for (lua_Integer i = 0; i < total; i++) {
+        lua_pushnumber(L, out[i]);
+        lua_seti(L, -2, i + 1);
+    }
+    return 1;
+}
+
 /* s:material_params(id) -> {name = value, ...}: what the scene simulates with
  * (after blending), so a scene can print or check it. */
 static int l_material_params(lua_State *L) {
@@ -721,7 +823,7 @@ void hl_open_scene(lua_State *L) {
         {"cut", l_cut},          {"move", l_move},         {"collider_velocity", l_collider_velocity},
         {"set_dt", l_set_dt}, {"settings", l_settings},    {"oven", l_oven},    {"probe", l_probe},       {"line", l_line},          {"_slice", l_slice},
         {"stats", l_stats},      {"_time", l_time},      {"body_particles", l_body_particles}, {"hash", l_hash},
-        {"positions", l_positions}, {"volume", l_volume}, {"material_params", l_material_params}, {NULL, NULL}};
+        {"positions", l_positions}, {"_particle_field", l_particle_field}, {"_gravity", l_gravity}, {"volume", l_volume}, {"material_params", l_material_params}, {NULL, NULL}};
     luaL_newmetatable(L, HL_SCENE);
     lua_pushcfunction(L, l_gc);
     lua_setfield(L, -2, "__gc");

@@ -681,6 +681,32 @@ stale_tmp_cleaned)
     "$hearth" run "$scenes/tiny.lua" >out.txt 2>err.txt
     grep -q "stale" err.txt && fail "nothing stale the second time, yet: $(cat err.txt)"
     ;;
+particles_track_by_id)
+    # s:particles returns every particle's fields with an id that follows it through the step's sort
+    run particles_track.lua
+    expect_rc 0 "s:particles in free flight"
+    cat out.txt
+    has out.txt "particles_track ok" "every particle found by its id where its flight takes it"
+    ;;
+damping_settles_column)
+    # h.scene{damping} and s:run{until_rest}: a column comes to rest with its static stress
+    run settled_column.lua
+    expect_rc 0 "the settled column"
+    cat out.txt
+    has out.txt "settled_column ok" "at rest, interior stress within 5% of rho g (top - y), undamped still ringing"
+    ;;
+damping_refusals)
+    run damping_errors.lua
+    expect_rc 0 "damping's and until_rest's errors"
+    has out.txt "damping_errors ok" "bad damping, SPH damping, a damped checkpoint and a bad until_rest are refused"
+    ;;
+gravity_at_events_and_ramp)
+    # s:gravity{...} at events and s:gravity(function(t) ... end) against the integral of g
+    run gravity_ramp.lua
+    expect_rc 0 "s:gravity"
+    cat out.txt
+    has out.txt "gravity_ramp ok" "step and ramp velocities, bad functions named"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"

@@ -227,7 +227,9 @@ static void check_ply_common(const ply *p, const hearth_scene *s) {
         char prop[64];
         int nc = hearth_field_components(f);
         for (int k = 0; k < nc; k++) {
-            snprintf(prop, sizeof prop, nc == 1 ? "%s" : k == 0 ? "%s_x" : k == 1 ? "%s_y" : "%s_z", f);
+            static const char *const vec[3] = {"_x", "_y", "_z"};
+            static const char *const ten[9] = {"_xx", "_xy", "_xz", "_yx", "_yy", "_yz", "_zx", "_zy", "_zz"};
+            snprintf(prop, sizeof prop, "%s%s", f, nc == 1 ? "" : nc == 3 ? vec[k] : ten[k]);
             CHECK(ply_prop(p, prop) == (int)want);
             want++;
         }

@@ -602,6 +602,78 @@ TEST(probe_fields) {
     hearth_scene_destroy(s);
 }
 
+/* The full Cauchy stress: a small uniform stretch e along x and shear g in
+ * xy give, to first order, sigma_xx = (lambda + 2 mu) e, sigma_yy = sigma_zz
+ * = lambda e, sigma_xy = mu g and no xz, yz: each component in its place.
+ * The scalar fields (stress_xx .. stress_yz, pressure, von_mises) agree
+ * with the tensor, at a point, along a line and at the particles. */
+TEST(stress_tensor_components) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 32;
+    d.gravity[1] = 0;
+    hearth_scene *s = fx_scene_def(&d);
+    const double E = 1e4, nu = 0.3, e = 1e-4, g = 2e-4;
+    int m = fx_elastic(s, E, nu, 800);
+    const double c[3] = {0.5, 0.5, 0}, h[3] = {0.2, 0.2, 0}, v0[3] = {0, 0, 0};
+    fx_box(s, m, c, h, 4, v0);
+    for (int i = 0; i < s->ps.n; i++) {
+        double *F = pcold(&s->ps, PC_F) + 9 * i;
+        F[0] = 1 + e;
+        F[1] = g;
+    }
+    const double lam = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+    hearth_error err;
+    CHECK(hearth_field_components("stress") == 9);
+    double sig[9];
+    CHECK(hearth_probe_point(s, "stress", c, sig, &err) == HEARTH_OK);
+    printf("  sigma = [%.6g %.6g %.6g; %.6g %.6g %.6g; %.6g %.6g %.6g] Pa\n", sig[0], sig[1], sig[2], sig[3], sig[4], sig[5],
+           sig[6], sig[7], sig[8]);
+    printf("  first order: xx %.6g, yy = zz %.6g, xy %.6g Pa\n", (lam + 2 * mu) * e, lam * e, mu * g);
+    const double tol = 1e-3 * (lam + 2 * mu) * e; /* second-order terms: e^2, g^2 relative */
+    CHECK_NEAR(sig[0], (lam + 2 * mu) * e, tol);
+    CHECK_NEAR(sig[4], lam * e, tol);
+    CHECK_NEAR(sig[8], lam * e, tol);
+    CHECK_NEAR(sig[1], mu * g, tol);
+    CHECK_NEAR(sig[3], mu * g, tol);
+    CHECK_NEAR(sig[2], 0, 1e-12);
+    CHECK_NEAR(sig[5], 0, 1e-12);
+    CHECK_NEAR(sig[6], 0, 1e-12);
+    CHECK_NEAR(sig[7], 0, 1e-12);
+    static const char *const comp[] = {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_xz", "stress_yz"};
+    static const int at[] = {0, 4, 8, 1, 2, 5};
+    for (int k = 0; k < 6; k++) {
+        double v;
+        CHECK(hearth_probe_point(s, comp[k], c, &v, &err) == HEARTH_OK);
+        CHECK_NEAR(v, sig[at[k]], 1e-12 * (1 + fabs(sig[at[k]])));
+    }
+    double p, q;
+    CHECK(hearth_probe_point(s, "pressure", c, &p, &err) == HEARTH_OK);
+    CHECK_NEAR(p, -(sig[0] + sig[4] + sig[8]) / 3, 1e-12);
+    CHECK(hearth_probe_point(s, "von_mises", c, &q, &err) == HEARTH_OK);
+    double ss = 0;
+    for (int k = 0; k < 9; k++) ss += pow(sig[k] + (k % 4 == 0 ? p : 0), 2);
+    CHECK_NEAR(q, sqrt(1.5 * ss), 1e-9);
+    /* a line gives 9 numbers a sample; a slice wants one component */
+    double line[5 * 9];
+    const double a[3] = {0.4, 0.5, 0}, b[3] = {0.6, 0.5, 0};
+    CHECK(hearth_probe_line(s, "stress", a, b, 5, line, &err) == HEARTH_OK);
+    CHECK_NEAR(line[2 * 9 + 0], sig[0], 1e-12);
+    CHECK_NEAR(line[2 * 9 + 1], sig[1], 1e-12);
+    double slice[4];
+    CHECK(hearth_probe_slice(s, "stress", 2, 0, 2, 2, slice, &err) == HEARTH_ERR_PARAM);
+    CHECK_STR_CONTAINS(err.msg, "stress_xx");
+    CHECK(hearth_probe_slice(s, "stress_yy", 2, 0, 2, 2, slice, &err) == HEARTH_OK);
+    /* the tensor is listed once among the live fields; its components are not */
+    const char *live = hearth_scene_fields(s);
+    CHECK_STR_CONTAINS(live, "stress");
+    CHECK(strstr(live, "stress_") == NULL);
+    double *pf = malloc(sizeof(double) * 9 * (size_t)s->ps.n);
+    CHECK(hearth_scene_particle_field(s, "stress", pf, &err) == HEARTH_OK);
+    CHECK_NEAR(pf[9 * (s->ps.n / 2) + 4], sig[4], 1e-12);
+    free(pf);
+    hearth_scene_destroy(s);
+}
+
 /* Bad input gets a message naming the parameter and the valid range. */
 TEST(scene_bad_input) {
     hearth_error err;
@@ -834,6 +906,6 @@ TEST(mpm_state_owned_by_solver) {
 
 TEST_MAIN(T(bspline_weights), T(transfer_conservation_2d), T(transfer_conservation_3d), T(transfer_pic_dissipates), T(rotating_disc), T(free_fall),
           T(vibrating_bar), T(determinism_threads), T(checkpoint_restore), T(guard_nan_plugin), T(guard_plugin_error),
-          T(guard_cfl_and_rollback), T(colliders_contact), T(probe_fields), T(scene_bad_input), T(alloc_failure_paths),
+          T(guard_cfl_and_rollback), T(colliders_contact), T(probe_fields), T(stress_tensor_components), T(scene_bad_input), T(alloc_failure_paths),
           T(particles_optional_columns), T(body_force), T(guard_collider_drive), T(grip_holds_pulled_strip),
           T(mpm_state_owned_by_solver))

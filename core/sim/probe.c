@@ -20,7 +20,8 @@
 
 typedef enum field_id {
     F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_STRESS_XY, F_TEMPERATURE, F_BOUNDARY,
-    F_GAS, F_POROSITY, F_GAS_PRESSURE, F_SATURATION, F_WATER_MASS, F_WATER_PRESSURE, F_BROWNING, F_MIX_RATIO, F_COUNT
+    F_GAS, F_POROSITY, F_GAS_PRESSURE, F_SATURATION, F_WATER_MASS, F_WATER_PRESSURE, F_BROWNING, F_MIX_RATIO, F_STRESS,
+    F_SXX, F_SYY, F_SZZ, F_SXZ, F_SYZ, F_COUNT
 } field_id;
 
 /* A field is live when its column is enabled (column -1: always live). */
@@ -51,7 +52,21 @@ static const struct {
     [F_BROWNING] = {"browning", "1", 1, PC_TEMPERATURE,
                     "use solver = \"sph\" and turn the temperature field on (Rodriguez-Arenas eq. 4.5-4.6)"},
     [F_STRESS_XY] = {"stress_xy", "Pa", 1, -1, NULL}, /* Cauchy shear stress: what a rheometer measures */
+    /* The whole Cauchy stress, row-major xx xy xz yx yy yz zx zy zz (tension
+     * positive): VTK reads 9 components as a tensor, which ParaView's tensor
+     * filters (eigenvalues, glyphs) expect. The six scalar components are for
+     * slices and pictures; like velocity_x they are not listed as live fields
+     * (stress_xy was, before the tensor), so a dump carries the tensor once. */
+    [F_STRESS] = {"stress", "Pa", 9, -1, NULL},
+    [F_SXX] = {"stress_xx", "Pa", 1, -1, NULL},       [F_SYY] = {"stress_yy", "Pa", 1, -1, NULL},
+    [F_SZZ] = {"stress_zz", "Pa", 1, -1, NULL},       [F_SXZ] = {"stress_xz", "Pa", 1, -1, NULL},
+    [F_SYZ] = {"stress_yz", "Pa", 1, -1, NULL},
 };
+
+/* Scalar fields that are one component of a listed field: not listed themselves. */
+static int field_is_component(int f) {
+    return f == F_VX || f == F_VY || f == F_VZ || f == F_STRESS_XY || (f >= F_SXX && f <= F_SYZ);
+}
 
 static int field_lookup(const char *name) {
     for (int f = 0; f < F_COUNT; f++)
@@ -84,7 +99,7 @@ const char *hearth_scene_fields(const hearth_scene *s) {
     hearth_scene *m = (hearth_scene *)s; /* the string is a cache of the enabled columns */
     m->fields[0] = '\0';
     for (int f = 0; f < F_COUNT; f++) {
-        if (f == F_VX || f == F_VY || f == F_VZ || !field_live(s, f)) continue;
+        if (field_is_component(f) || !field_live(s, f)) continue;
         if (m->fields[0]) strncat(m->fields, " ", sizeof m->fields - strlen(m->fields) - 1);
         strncat(m->fields, fields[f].name, sizeof m->fields - strlen(m->fields) - 1);
     }
@@ -98,6 +113,10 @@ static hearth_status find_field(const hearth_scene *s, const char *field, int sc
                        field, hearth_scene_fields(s));
     if (!field_live(s, f))
         return err_set(err, HEARTH_ERR_PARAM, "field '%s' is not live in this scene; to enable it, %s", field, fields[f].how);
+    if (scalar_only && fields[f].ncomp == 9)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "field '%s' has 9 components; slice one of them (%s_xx, %s_yy, %s_zz, %s_xy, %s_xz, %s_yz)", field,
+                       field, field, field, field, field, field);
     if (scalar_only && fields[f].ncomp != 1)
         return err_set(err, HEARTH_ERR_PARAM, "field '%s' has %d components; slice one of them (%s_x, %s_y, %s_z)", field,
                        fields[f].ncomp, field, field, field);
@@ -196,6 +215,12 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
         const double p = -(sig[0] + sig[4] + sig[8]) / 3.0;
         if (f == F_PRESSURE) {
             out[0] = p;
+        } else if (f == F_STRESS) {
+            memcpy(out, sig, sizeof sig);
+        } else if (f >= F_SXX && f <= F_SYZ) { /* symmetric parts, as stress_xy */
+            static const int r[] = {0, 1, 2, 0, 1}, c[] = {0, 1, 2, 2, 2};
+            const int k = f - F_SXX;
+            out[0] = 0.5 * (sig[3 * r[k] + c[k]] + sig[3 * c[k] + r[k]]);
         } else if (f == F_STRESS_XY) {
             out[0] = 0.5 * (sig[1] + sig[3]);
         } else { /* q = sqrt(3/2 s:s), s the deviatoric Cauchy stress */
@@ -260,7 +285,7 @@ static hearth_status splat(const hearth_scene *s, int f, const lattice *L, doubl
             b1 = (int)fmin(L->nb - 1, floor(tb + rb));
         }
         if (a0 > a1 || b0 > b1) continue;
-        double val[3];
+        double val[9];
         int have = 0;
         const double m = pcold(ps, PC_MASS)[i], V = pcold(ps, PC_VOL0)[i] * t3_det(pcold(ps, PC_F) + 9 * i);
         for (int a = a0; a <= a1; a++)

@@ -90,6 +90,9 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
     /* ---- the solver's own options (solver.h) ---- */
     const solver *sv = solver_of(d->solver);
     if (!sv) return err_set(err, HEARTH_ERR_PARAM, "scene: solver = %d; valid: 0 (mpm), 1 (sph)", d->solver);
+    if (d->damping > 0 && d->solver != HEARTH_SOLVER_MPM) /* it acts in mpm.c's grid update */
+        return err_set(err, HEARTH_ERR_PARAM, "scene: damping = %g 1/s; only the MPM solver damps (solver = \"mpm\")",
+                       d->damping);
     return sv->check ? sv->check(d, err) : HEARTH_OK;
 }
 
@@ -485,6 +488,27 @@ hearth_status hearth_scene_collider_motion(hearth_scene *s, int id, hearth_motio
     return HEARTH_OK;
 }
 
+hearth_status hearth_scene_set_gravity(hearth_scene *s, const double g[3], hearth_error *err) {
+    err_clear(err);
+    for (int d = 0; d < 3; d++)
+        if (!isfinite(g[d])) return err_set(err, HEARTH_ERR_PARAM, "gravity[%d] = %g m/s^2; it must be finite", d, g[d]);
+    for (int d = 0; d < 3; d++) s->def.gravity[d] = s->def.dim == 2 && d == 2 ? 0.0 : g[d];
+    return HEARTH_OK;
+}
+
+void hearth_scene_set_gravity_fn(hearth_scene *s, hearth_gravity_fn fn, void *ud) {
+    s->gravity_fn = fn;
+    s->gravity_ud = fn ? ud : NULL;
+}
+
+/* The gravity function's value for the step starting now; a non-finite one is ignored (the host reports it). */
+static void gravity_at_step(hearth_scene *s) {
+    if (!s->gravity_fn) return;
+    double g[3] = {s->def.gravity[0], s->def.gravity[1], s->def.gravity[2]};
+    s->gravity_fn(s->gravity_ud, s->t, g);
+    hearth_scene_set_gravity(s, g, NULL);
+}
+
 void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void *ud) {
     s->body_force = fn;
     s->body_force_ud = fn ? ud : NULL;
@@ -523,6 +547,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             if (st) return st;
         }
         const double speed_before = s->max_speed;
+        gravity_at_step(s);
         for (int c = 0; c < s->ncol; c++) {
             collider_set_time(&s->cols[c], s->t);
             collider_update_bounds(&s->cols[c], 2.0 * s->def.dx);
@@ -626,6 +651,7 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
 
 int hearth_scene_particle_count(const hearth_scene *s) { return s->ps.n; }
 const double *hearth_scene_positions(const hearth_scene *s) { return pcold(&s->ps, PC_X); }
+const int *hearth_scene_particle_ids(const hearth_scene *s) { return pcoli(&s->ps, PC_ID); }
 
 uint64_t hearth_scene_hash(const hearth_scene *s) {
     uint64_t h = 1469598103934665603ULL; /* FNV-1a over every enabled column */

@@ -84,6 +84,8 @@ struct hearth_scene {
     int ncol, capcol;
     hearth_body_force_fn body_force;
     void *body_force_ud;
+    hearth_gravity_fn gravity_fn; /* sets def.gravity at the start of each step, or NULL */
+    void *gravity_ud;
 
     /* rollback snapshot (only with HEARTH_GUARD_ROLLBACK) */
     particles snap;

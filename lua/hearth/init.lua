@@ -692,6 +692,54 @@ function S:step(n)
   return self
 end
 
+--- s:gravity({gx, gy[, gz]}) sets gravity (m/s^2) from now on (at an event, say);
+--- s:gravity(function(t) return {gx, gy[, gz]} end) makes it a function of time,
+--- evaluated at the start of every step (a ramp, a tilt, a shaker).
+function S:gravity(g)
+  if type(g) ~= "function" then g = check_vec(g, "s:gravity") end
+  self:_gravity(g)
+  return self
+end
+
+--- s:particles{fields = {"id", "x", "v", "temperature", ...}} -> {n = count, id = {...}, x = {...}, ...}:
+--- every particle's values, in one order for all the fields asked for. Scalars are n numbers;
+--- vectors are flattened, 3 numbers a particle ({x1, y1, z1, x2, ...}, as s:positions());
+--- "stress" 9 a particle (row-major xx xy xz yx yy yz zx zy zz). "x" is the position, "v"
+--- the velocity, "id" the particle's id: the order changes from step to step (the step
+--- sorts particles) but an id stays with its particle, so a marked particle is found again
+--- by its id.
+local particle_aliases = { x = true, v = "velocity", id = true }
+function S:particles(o)
+  if type(o) ~= "table" then error("s:particles: expected a table {fields = {...}}", 2) end
+  check_keys(o, { fields = true }, "s:particles")
+  if type(o.fields) ~= "table" or #o.fields == 0 then
+    error("s:particles: fields = {\"x\", \"v\", ...} (a list of field names) is required", 2)
+  end
+  local valid, live = { x = true, v = true, id = true }, self:stats().fields
+  for _, f in ipairs(live) do
+    valid[f] = true
+    if f == "velocity" then valid.velocity_x, valid.velocity_y, valid.velocity_z = true, true, true end
+    if f == "stress" then
+      for _, c in ipairs { "xx", "yy", "zz", "xy", "xz", "yz" } do valid["stress_" .. c] = true end
+    end
+  end
+  local r = { n = self:stats().particles }
+  for k, f in ipairs(o.fields) do
+    if type(f) ~= "string" then error(("s:particles: fields[%d] is a %s, not a field name"):format(k, type(f)), 2) end
+    if not valid[f] then
+      -- a known field that is not live says how to turn it on; anything else is a misspelling
+      local ok, e = pcall(self._particle_field, self, f)
+      if not ok and tostring(e):find("is not live", 1, true) then error("s:particles: " .. tostring(e), 2) end
+      local near = nearest(f, valid)
+      error(("s:particles: unknown field '%s'%s (live fields: id, x, v, %s)"):format(f,
+        near and ("; did you mean '" .. near .. "'?") or "", table.concat(live, ", ")), 2)
+    end
+    if f == "x" then r.x = self:positions()
+    else r[f] = self:_particle_field(particle_aliases[f] == true and f or particle_aliases[f] or f) end
+  end
+  return r
+end
+
 --- s:slice(field, {axis = "z", at = 0.5, res = 64}) -> rows of numbers (row 1 at the low end)
 function S:slice(field, o)
   o = o or {}
@@ -725,7 +773,7 @@ local function default_field(s)
   return "speed"
 end
 
-local run_keys = { until_t = true, every = true, on_frame = true, csv = true, probes = true, png = true }
+local run_keys = { until_t = true, every = true, on_frame = true, csv = true, probes = true, png = true, until_rest = true }
 local run_png_keys = { field = true, path = true, kind = true, width = true, height = true, axis = true, at = true }
 local png_keys = { kind = true, width = true, height = true, axis = true, at = true }
 
@@ -779,6 +827,8 @@ function S:run(o)
   local until_t = opts.until_t or o.until_t
   if until_t == nil then error("s:run: until_t is required (or pass --until to hearth run)", 2) end
   check_number(until_t, "s:run: until_t", 0, 1e12, "s")
+  local rest = o.until_rest
+  if rest ~= nil then check_number(rest, "s:run: until_rest", 0, 1e12, "m/s") end
   local span = until_t - t0
   local every = o.every
   if opts.frames then every = span / opts.frames end
@@ -808,8 +858,13 @@ function S:run(o)
         ("%.9g"):format(stt.kinetic), ("%.9g"):format(stt.max_speed) }
       for _, p in ipairs(probes) do
         local v = self:probe(p[1], p[2])
-        r[#r + 1] = type(v) == "table" and ("%.9g"):format(math.sqrt(v[1] ^ 2 + v[2] ^ 2 + v[3] ^ 2))
-          or ("%.9g"):format(v)
+        local m = v
+        if type(v) == "table" then -- a vector's magnitude, a tensor's Frobenius norm
+          m = 0
+          for _, c in ipairs(v) do m = m + c * c end
+          m = math.sqrt(m)
+        end
+        r[#r + 1] = ("%.9g"):format(m)
       end
       rows[#rows + 1] = table.concat(r, ",")
       core.write_atomic(o.csv, table.concat(rows, "\n") .. "\n", "s:run{csv = ...}")
@@ -821,7 +876,13 @@ function S:run(o)
   frame()
   local next_frame = t0 + every
   local yield_steps = opts.yield and coroutine.isyieldable()
-  while self:_time() < until_t - 1e-12 * math.max(1, until_t) do
+  -- until_rest: the largest particle speed is checked after every batch of
+  -- steps (at most 64) and at frames; the run is at rest when it is below the
+  -- tolerance and not larger than at the check before. The second condition
+  -- keeps a body released from rest (slow in its first steps, but
+  -- accelerating) from counting as settled.
+  local at_rest, last_speed = false, math.huge
+  while self:_time() < until_t - 1e-12 * math.max(1, until_t) and not at_rest do
     local now = self:_time()
     local target = math.min(next_frame, until_t)
     local ev = st.events[1]
@@ -842,8 +903,12 @@ function S:run(o)
     end
     fire_events(self)
     local stt = self:stats()
-    if stt.t >= next_frame - 1e-9 * every then
-      frame()
+    if rest then
+      at_rest = stt.max_speed < rest and stt.max_speed <= last_speed
+      last_speed = stt.max_speed
+    end
+    if stt.t >= next_frame - 1e-9 * every or at_rest then
+      frame() -- a run that stops at rest ends with a frame of the rest state
       next_frame = next_frame + every
     end
     core.progress(stt.t, until_t, stt.step, false)
@@ -851,6 +916,7 @@ function S:run(o)
   local stt = self:stats()
   core.progress(stt.t, until_t, stt.step, true)
   st.ran = true
+  if rest then stt.at_rest = at_rest end
   return stt
 end
 

@@ -220,6 +220,7 @@ typedef struct hearth_scene_def {
     double heat_flip;        ///< temperature to particles: 1 FLIP (default, eq. 21) .. 0 PIC (the nodes' value)
     int solver;              ///< hearth_solver; default MPM
     hearth_sph_def sph;      ///< SPH options (solver = HEARTH_SOLVER_SPH)
+    double damping;          ///< MPM velocity damping c (1/s): the grid velocity decays as 1/(1 + c dt) a step; 0 = off
 } hearth_scene_def;
 
 /// Defaults: those of hearth_scene_settings() (2D, dx 0.01, box [0,1]^3, gravity
@@ -341,6 +342,15 @@ hearth_status hearth_scene_collider_motion(hearth_scene *s, int id, hearth_motio
 /// Extra body force as an acceleration field (m/s^2), added to gravity. NULL removes it.
 typedef void (*hearth_body_force_fn)(void *ud, double t, const double x[3], double acc[3]);
 void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void *ud);
+/// Set gravity now (m/s^2; z ignored in 2D), for later steps. HEARTH_ERR_PARAM when not finite.
+hearth_status hearth_scene_set_gravity(hearth_scene *s, const double g[3], hearth_error *err);
+/// Gravity as a function of time (a ramp, a tilt): fn(ud, t, g) is called once
+/// at the start of every step, outside parallel loops, with the step's start
+/// time, and its g (m/s^2) acts for that step. A non-finite component keeps the
+/// previous gravity. NULL removes the function; gravity keeps its last value.
+/// Not saved by checkpoints (as motion callbacks).
+typedef void (*hearth_gravity_fn)(void *ud, double t, double g[3]);
+void hearth_scene_set_gravity_fn(hearth_scene *s, hearth_gravity_fn fn, void *ud);
 
 /// Advance n steps. HEARTH_ERR_GUARD when the guard stopped the run (see
 /// hearth_stats.diagnosis). With the rollback policy the scene is left at the
@@ -441,7 +451,10 @@ hearth_status hearth_material_check(const char *plugin, const char *const *names
 
 /// Names of the fields live in this scene, space separated (static until the scene changes).
 const char *hearth_scene_fields(const hearth_scene *s);
-/// Number of components of a field (1 or 3), or 0 when the name is unknown.
+/// Number of components of a field (1, 3 or 9), or 0 when the name is unknown.
+/// "stress" has 9: the Cauchy stress row-major (xx xy xz yx yy yz zx zy zz, Pa,
+/// tension positive); its symmetric components are the scalar fields stress_xx,
+/// stress_yy, stress_zz, stress_xy, stress_xz and stress_yz.
 int hearth_field_components(const char *field);
 /// Unit of a field ("m/s", "kg/m^3", ...), or NULL when unknown.
 const char *hearth_field_unit(const char *field);
@@ -465,6 +478,11 @@ double hearth_scene_volume(const hearth_scene *s);
 /// Particle positions, 3 doubles each, valid until the next step.
 const double *hearth_scene_positions(const hearth_scene *s);
 int hearth_scene_particle_count(const hearth_scene *s);
+/// Particle ids, one each, in the order of hearth_scene_positions and
+/// hearth_scene_particle_field; valid until the next step. An id is given at
+/// seeding and never changes or is reused, while the order of particles does
+/// (the step sorts them), so a marked particle is found again by its id.
+const int *hearth_scene_particle_ids(const hearth_scene *s);
 
 /* ---- pictures -------------------------------------------------------- */
 

@@ -304,6 +304,11 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
     if (!s->solver->can_checkpoint) /* the solver's own state is not in the format (solver.h) */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of %s scenes (solver = \"%s\") are not supported yet",
                        path, s->solver->name, s->solver->name);
+    if (s->def.damping > 0) /* not in format version 3's DEF section; resuming undamped would be silently wrong */
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "save %s: checkpoints of damped scenes (damping = %g 1/s) are not supported yet; save with "
+                       "damping = 0",
+                       path, s->def.damping);
     if (s->mix.mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
                        path);

@@ -49,7 +49,7 @@ static int field_next(field_walk *w) {
     w->name[len] = '\0';
     w->p += len;
     w->nc = hearth_field_components(w->name);
-    HEARTH_ASSERT(w->nc == 1 || w->nc == 3); /* the public contract; PLY names components _x _y _z */
+    HEARTH_ASSERT(w->nc == 1 || w->nc == 3 || w->nc == 9); /* the public contract; PLY names the components */
     return 1;
 }
 
@@ -312,10 +312,11 @@ hearth_status hearth_write_ply(const hearth_scene *s, const char *path, hearth_e
     while (field_next(&w)) put_text(&d, "comment unit %s %s\n", w.name, unit_of(w.name));
     put_text(&d, "element vertex %zu\nproperty double x\nproperty double y\nproperty double z\n", n);
     static const char *const axis[3] = {"_x", "_y", "_z"};
+    static const char *const pair[9] = {"_xx", "_xy", "_xz", "_yx", "_yy", "_yz", "_zx", "_zy", "_zz"};
     w = (field_walk){sc.names, "", 0};
     while (field_next(&w))
-        for (int k = 0; k < w.nc && k < 3; k++)
-            put_text(&d, "property double %s%s\n", w.name, w.nc == 1 ? "" : axis[k]);
+        for (int k = 0; k < w.nc; k++)
+            put_text(&d, "property double %s%s\n", w.name, w.nc == 1 ? "" : w.nc == 3 ? axis[k] : pair[k]);
     put_text(&d, "end_header\n");
     put_le(&d, rows, sizeof(double), n * row_len);
     scratch_free(&sc);

@@ -62,6 +62,10 @@ static void decorate(img *im, const frame *f, const hearth_scene *s, const char 
 static hearth_status scalar_per_particle(const hearth_scene *s, const char *field, double **out, hearth_error *err) {
     const int n = s->ps.n, nc = hearth_field_components(field);
     if (nc == 0) return hearth_scene_particle_field(s, field, NULL, err); /* produces the unknown-field message */
+    if (nc == 9) /* a tensor has no one colour: its components and invariants are fields of their own */
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "field '%s' is a tensor; picture one component (%s_xx, %s_yy, %s_zz, %s_xy, %s_xz, %s_yz), "
+                       "pressure or von_mises", field, field, field, field, field, field, field);
     double *v = mem_alloc(sizeof(double) * (size_t)(n > 0 ? n : 1) * (size_t)nc);
     if (!v) return err_set(err, HEARTH_ERR_NOMEM, "out of memory rendering '%s'", field);
     hearth_status st = hearth_scene_particle_field(s, field, v, err);

@@ -462,61 +462,83 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
 
 /* ---- grid update ----------------------------------------------------- */
 
-double mpm_grid_update(hearth_scene *s, double dt) {
+/* One active block's nodes; returns the fastest collider speed squared at a
+ * node with mass (the guard's driven energy). DAMP is a compile-time constant
+ * in each of the two loops of mpm_grid_update, so the undamped one carries no
+ * damping test: OpenMP outlines a parallel loop before inlining, so the
+ * constant must reach the block, not a function holding the pragma. */
+FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double damp, const int DAMP) {
     grid *g = &s->g;
     const int D = g->dim, NPB = g->nodes_per_block;
     const hearth_scene_def *def = &s->def;
-    double vcol2 = 0; /* the fastest collider at a node with mass (the guard's driven energy) */
-#pragma omp parallel for schedule(dynamic, 4) reduction(max : vcol2) if (s->ps.n >= SCENE_PARALLEL_MIN)
-    for (int k = 0; k < g->nactive; k++) {
-        double *node = grid_block(g, k);
-        int bc[3];
-        grid_block_coords(g, g->active[k], bc);
-        for (int l = 0; l < NPB; l++) {
-            const double m = node[l];
-            if (m <= 0.0) {
-                node[NPB + l] = node[2 * NPB + l] = node[3 * NPB + l] = 0.0;
-                continue;
-            }
-            int idx[3];
-            grid_node_index(g, bc, l, idx);
-            double xi[3] = {0, 0, 0};
-            for (int d = 0; d < D; d++) xi[d] = g->lo[d] + idx[d] * g->dx;
-            double v[3] = {node[NPB + l] / m, node[2 * NPB + l] / m, D == 3 ? node[3 * NPB + l] / m : 0.0};
-            double acc[3] = {def->gravity[0], def->gravity[1], D == 3 ? def->gravity[2] : 0.0};
-            if (s->body_force) {
-                double extra[3] = {0, 0, 0};
-                s->body_force(s->body_force_ud, s->t, xi, extra);
-                for (int d = 0; d < D; d++) acc[d] += extra[d];
-            }
-            for (int d = 0; d < D; d++) v[d] += dt * acc[d];
-            /* domain walls act on the two node layers nearest each face */
-            for (int d = 0; d < D; d++) {
-                const double zero[3] = {0, 0, 0};
-                double n[3] = {0, 0, 0};
-                if (idx[d] < 2) n[d] = 1.0;
-                else if (idx[d] > g->nn[d] - 3) n[d] = -1.0;
-                else continue;
-                contact_apply(def->wall, def->wall_friction, n, zero, v);
-            }
-            for (int c = 0; c < s->ncol; c++) {
-                double n[3];
-                /* A grip holds the nodes within a cell of its surface too: the particles
-                 * it carries reach them, and a node they share with free material
-                 * must move with the grip, or the free material peels off (seen: an
-                 * elastic strip pulled at 2 cm/s left both grips within 0.05 s). */
-                const double band = s->cols[c].mode == HEARTH_GRIP ? g->dx : 0.0;
-                if (!collider_near(&s->cols[c], xi) || collider_sdf(&s->cols[c], xi, n) > band) continue;
-                double vb[3];
-                collider_velocity_at(&s->cols[c], xi, vb);
-                if (D == 2) n[2] = vb[2] = 0.0;
-                contact_apply(s->cols[c].mode, s->cols[c].friction, n, vb, v);
-                vcol2 = fmax(vcol2, vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]);
-            }
-            node[NPB + l] = v[0];
-            node[2 * NPB + l] = v[1];
-            node[3 * NPB + l] = D == 3 ? v[2] : 0.0;
+    double vcol2 = 0;
+    double *node = grid_block(g, k);
+    int bc[3];
+    grid_block_coords(g, g->active[k], bc);
+    for (int l = 0; l < NPB; l++) {
+        const double m = node[l];
+        if (m <= 0.0) {
+            node[NPB + l] = node[2 * NPB + l] = node[3 * NPB + l] = 0.0;
+            continue;
         }
+        int idx[3];
+        grid_node_index(g, bc, l, idx);
+        double xi[3] = {0, 0, 0};
+        for (int d = 0; d < D; d++) xi[d] = g->lo[d] + idx[d] * g->dx;
+        double v[3] = {node[NPB + l] / m, node[2 * NPB + l] / m, D == 3 ? node[3 * NPB + l] / m : 0.0};
+        double acc[3] = {def->gravity[0], def->gravity[1], D == 3 ? def->gravity[2] : 0.0};
+        if (s->body_force) {
+            double extra[3] = {0, 0, 0};
+            s->body_force(s->body_force_ud, s->t, xi, extra);
+            for (int d = 0; d < D; d++) acc[d] += extra[d];
+        }
+        for (int d = 0; d < D; d++) v[d] += dt * acc[d];
+        if (DAMP)
+            for (int d = 0; d < D; d++) v[d] *= damp;
+        /* domain walls act on the two node layers nearest each face */
+        for (int d = 0; d < D; d++) {
+            const double zero[3] = {0, 0, 0};
+            double n[3] = {0, 0, 0};
+            if (idx[d] < 2) n[d] = 1.0;
+            else if (idx[d] > g->nn[d] - 3) n[d] = -1.0;
+            else continue;
+            contact_apply(def->wall, def->wall_friction, n, zero, v);
+        }
+        for (int c = 0; c < s->ncol; c++) {
+            double n[3];
+            /* A grip holds the nodes within a cell of its surface too: the particles
+             * it carries reach them, and a node they share with free material
+             * must move with the grip, or the free material peels off (seen: an
+             * elastic strip pulled at 2 cm/s left both grips within 0.05 s). */
+            const double band = s->cols[c].mode == HEARTH_GRIP ? g->dx : 0.0;
+            if (!collider_near(&s->cols[c], xi) || collider_sdf(&s->cols[c], xi, n) > band) continue;
+            double vb[3];
+            collider_velocity_at(&s->cols[c], xi, vb);
+            if (D == 2) n[2] = vb[2] = 0.0;
+            contact_apply(s->cols[c].mode, s->cols[c].friction, n, vb, v);
+            vcol2 = fmax(vcol2, vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]);
+        }
+        node[NPB + l] = v[0];
+        node[2 * NPB + l] = v[1];
+        node[3 * NPB + l] = D == 3 ? v[2] : 0.0;
+    }
+    return vcol2;
+}
+
+double mpm_grid_update(hearth_scene *s, double dt) {
+    const grid *g = &s->g;
+    double vcol2 = 0; /* the fastest collider at a node with mass (the guard's driven energy) */
+    if (s->def.damping > 0) {
+        /* Velocity damping for static problems, implicit in the drag (v' = v + dt (g - c v')) so any c dt
+         * is stable; an explicit factor 1 - c dt would reverse velocities past c dt = 1. It acts after
+         * gravity and before walls and colliders: damping the momentum before gravity instead would
+         * leave a body in equilibrium a residual velocity dt g c dt / (1 + c dt), and it would sink. */
+        const double damp = 1.0 / (1.0 + s->def.damping * dt);
+#pragma omp parallel for schedule(dynamic, 4) reduction(max : vcol2) if (s->ps.n >= SCENE_PARALLEL_MIN)
+        for (int k = 0; k < g->nactive; k++) vcol2 = fmax(vcol2, grid_update_block(s, k, dt, damp, 1));
+    } else {
+#pragma omp parallel for schedule(dynamic, 4) reduction(max : vcol2) if (s->ps.n >= SCENE_PARALLEL_MIN)
+        for (int k = 0; k < g->nactive; k++) vcol2 = fmax(vcol2, grid_update_block(s, k, dt, 1.0, 0));
     }
     return sqrt(vcol2);
 }
