@@ -832,8 +832,58 @@ TEST(mpm_state_owned_by_solver) {
     hearth_scene_destroy(s);
 }
 
+/* Plane Couette flow between a resting floor and a lid sliding at U, both
+ * sticky box colliders whose faces lie on node rows (y = 4 dx and 8 dx; the
+ * box faces are computed as centre -/+ half, so their SDF at the row is zero
+ * up to round-off) at dx = 1/64 and 1/128. The steady profile is linear, so the particles' mean
+ * speed is U/2. `shift` moves the lid's face by shift*dx (positive: up, out
+ * of the fluid). Returns the mean vx/U of the particles in the middle of the
+ * layer, away from its free ends. */
+static double couette_mean(double dx, double shift) {
+    hearth_scene_def d = hearth_default_scene_def();
+    const double U = 0.01, y0 = 0.0625, y1 = 0.125; /* node rows at dx = 1/64 and 1/128 */
+    d.dx = dx;
+    d.hi[1] = 0.25;
+    d.gravity[1] = 0;
+    hearth_scene *s = fx_scene_def(&d);
+    const char *nn[] = {"bulk", "viscosity", "density"};
+    const double nv[] = {1e5, 10, 1000}; /* c = 10 m/s, nu = 0.01 m^2/s: h^2/nu = 0.39 s */
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "newtonian", nn, nv, 3, &err);
+    const double c[3] = {0.5, 0.5 * (y0 + y1), 0}, h[3] = {0.12, 0.5 * (y1 - y0), 0};
+    fx_box(s, m, c, h, 4, NULL); /* free ends: a closed channel would carry no net flow */
+    const double fc[3] = {0.5, 0.5 * y0 + 0.0001, 0}, fh[3] = {0.6, y0 - fc[1], 0};
+    CHECK(fx_box_collider(s, fc, fh, HEARTH_STICKY, 0) == 0);
+    const double ytop = y1 + shift * dx, lc[3] = {0.5, 0.5 * (ytop + 0.2) + 0.0003, 0}, lh[3] = {0.6, lc[1] - ytop, 0};
+    CHECK(fx_box_collider(s, lc, lh, HEARTH_STICKY, U) == 1);
+    CHECK(hearth_scene_advance(s, 0.8, &err) == HEARTH_OK); /* the slowest mode decays as exp(-pi^2 nu t / h^2) */
+    double sv = 0;
+    int n = 0;
+    for (int i = 0; i < s->ps.n; i++) {
+        const double *x = pcold(&s->ps, PC_X) + 3 * i;
+        if (fabs(x[0] - 0.5) < 0.05) sv += pcold(&s->ps, PC_V)[3 * i], n++;
+    }
+    hearth_scene_destroy(s);
+    return n ? sv / n / U : NAN;
+}
+
+/* A collider face on a node row holds that row whatever the round-off of its
+ * SDF there: the layer moves at U/2 (0.5 +- 0.02), the same (within 0.005)
+ * with the lid's face 1e-6 dx either side of the row. */
+TEST(couette_lid_on_node_row) {
+    for (int k = 1; k <= 2; k++) {
+        const double dx = 1.0 / (64 * k);
+        const double on = couette_mean(dx, 0), up = couette_mean(dx, 1e-6), down = couette_mean(dx, -1e-6);
+        printf("  dx = 1/%d: Couette layer mean speed / lid speed: face on the row %.4f, 1e-6 dx out %.4f, 1e-6 dx in %.4f "
+               "(exact 0.5)\n", 64 * k, on, up, down);
+        CHECK(fabs(on - 0.5) < 0.02);
+        CHECK(fabs(up - on) < 0.005);
+        CHECK(fabs(down - on) < 0.005);
+    }
+}
+
 TEST_MAIN(T(bspline_weights), T(transfer_conservation_2d), T(transfer_conservation_3d), T(transfer_pic_dissipates), T(rotating_disc), T(free_fall),
           T(vibrating_bar), T(determinism_threads), T(checkpoint_restore), T(guard_nan_plugin), T(guard_plugin_error),
           T(guard_cfl_and_rollback), T(colliders_contact), T(probe_fields), T(scene_bad_input), T(alloc_failure_paths),
           T(particles_optional_columns), T(body_force), T(guard_collider_drive), T(grip_holds_pulled_strip),
-          T(mpm_state_owned_by_solver))
+          T(mpm_state_owned_by_solver), T(couette_lid_on_node_row))

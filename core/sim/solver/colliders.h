@@ -55,6 +55,15 @@ int collider_carry_particle(const collider *c, int dim, double dt, double x[3], 
 /// Rigid velocity of the collider's material at world point x (m/s).
 void collider_velocity_at(const collider *c, const double x[3], double v[3]);
 
+/// A grid node within this many cells outside a collider's face counts as on
+/// it. Faces are often placed on node rows (a lid at y = 0.125 on a grid of
+/// dx = 1/64), where the SDF at the row is zero only up to round-off: with the
+/// test sdf <= 0 the row was held or not by the last bit of `centre - half`,
+/// and a Couette layer moved at 0.5 or 0.24 of the lid speed
+/// (`couette_lid_on_node_row`). 1e-3 cell is far above round-off and far
+/// below anything a scene means by moving a face.
+#define COLLIDER_ROW_TOL 1e-3
+
 /// Project velocity v (in place) of a grid node touching a boundary with outward
 /// unit normal n that moves at vb. sticky: v = vb. slip: the normal part of
 /// v - vb is removed, then Coulomb friction acts on the tangential part.

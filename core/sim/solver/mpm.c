@@ -505,7 +505,7 @@ double mpm_grid_update(hearth_scene *s, double dt) {
                  * it carries reach them, and a node they share with free material
                  * must move with the grip, or the free material peels off (seen: an
                  * elastic strip pulled at 2 cm/s left both grips within 0.05 s). */
-                const double band = s->cols[c].mode == HEARTH_GRIP ? g->dx : 0.0;
+                const double band = s->cols[c].mode == HEARTH_GRIP ? g->dx : COLLIDER_ROW_TOL * g->dx;
                 if (!collider_near(&s->cols[c], xi) || collider_sdf(&s->cols[c], xi, n) > band) continue;
                 double vb[3];
                 collider_velocity_at(&s->cols[c], xi, vb);
