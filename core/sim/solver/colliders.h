@@ -49,8 +49,9 @@ static inline int collider_near(const collider *c, const double x[3]) {
 int collider_project_particle(const collider *c, int dim, double x[3], double v[3]);
 /// A grip (mode HEARTH_GRIP) carries a particle at x (the position the step
 /// starts from) that lies inside it: x moves by the collider's rigid motion
-/// over dt, v takes the collider's velocity and C its rigid velocity gradient
-/// skew(omega). Returns 1 if it did; 0 (nothing changed) for other modes or outside.
+/// over dt, v takes the collider's velocity and C (unless NULL: MPM keeps the
+/// grid's C) its rigid velocity gradient skew(omega). Returns 1 if it did; 0
+/// (nothing changed) for other modes or outside.
 int collider_carry_particle(const collider *c, int dim, double dt, double x[3], double v[3], double C[9]);
 /// Rigid velocity of the collider's material at world point x (m/s).
 void collider_velocity_at(const collider *c, const double x[3], double v[3]);
