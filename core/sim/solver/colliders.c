@@ -180,6 +180,7 @@ int collider_carry_particle(const collider *c, int dim, double dt, double x[3], 
         x[d] += rr[d] - r[d] + c->vel[d] * dt;
         v[d] = vb[d];
     }
+    if (!C) return 1;
     /* the velocity gradient of a rigid motion: skew(omega), so F only rotates */
     const double *o = c->omega;
     const double W[9] = {0, -o[2], o[1], o[2], 0, -o[0], -o[1], o[0], 0};

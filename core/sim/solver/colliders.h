@@ -49,11 +49,21 @@ static inline int collider_near(const collider *c, const double x[3]) {
 int collider_project_particle(const collider *c, int dim, double x[3], double v[3]);
 /// A grip (mode HEARTH_GRIP) carries a particle at x (the position the step
 /// starts from) that lies inside it: x moves by the collider's rigid motion
-/// over dt, v takes the collider's velocity and C its rigid velocity gradient
-/// skew(omega). Returns 1 if it did; 0 (nothing changed) for other modes or outside.
+/// over dt, v takes the collider's velocity and C (unless NULL: MPM keeps the
+/// grid's C) its rigid velocity gradient skew(omega). Returns 1 if it did; 0
+/// (nothing changed) for other modes or outside.
 int collider_carry_particle(const collider *c, int dim, double dt, double x[3], double v[3], double C[9]);
 /// Rigid velocity of the collider's material at world point x (m/s).
 void collider_velocity_at(const collider *c, const double x[3], double v[3]);
+
+/// A grid node within this many cells outside a collider's face counts as on
+/// it. Faces are often placed on node rows (a lid at y = 0.125 on a grid of
+/// dx = 1/64), where the SDF at the row is zero only up to round-off: with the
+/// test sdf <= 0 the row was held or not by the last bit of `centre - half`,
+/// and a Couette layer moved at 0.5 or 0.24 of the lid speed
+/// (`couette_lid_on_node_row`). 1e-3 cell is far above round-off and far
+/// below anything a scene means by moving a face.
+#define COLLIDER_ROW_TOL 1e-3
 
 /// Project velocity v (in place) of a grid node touching a boundary with outward
 /// unit normal n that moves at vb. sticky: v = vb. slip: the normal part of

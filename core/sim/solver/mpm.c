@@ -506,11 +506,12 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
         }
         for (int c = 0; c < s->ncol; c++) {
             double n[3];
-            /* A grip holds the nodes within a cell of its surface too: the particles
-             * it carries reach them, and a node they share with free material
-             * must move with the grip, or the free material peels off (seen: an
-             * elastic strip pulled at 2 cm/s left both grips within 0.05 s). */
-            const double band = s->cols[c].mode == HEARTH_GRIP ? g->dx : 0.0;
+            /* Every collider, a grip too, holds the nodes inside it and on its
+             * face (COLLIDER_ROW_TOL), none outside: a grip clamps at its face.
+             * (Holding a grip's nodes a cell outside kept a pulled strip from
+             * peeling off, at the cost of a clamp one cell in; G2P's carry now
+             * keeps the stress continuous instead.) */
+            const double band = COLLIDER_ROW_TOL * g->dx;
             if (!collider_near(&s->cols[c], xi) || collider_sdf(&s->cols[c], xi, n) > band) continue;
             double vb[3];
             collider_velocity_at(&s->cols[c], xi, vb);
@@ -649,12 +650,19 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             memset(C, 0, 9 * sizeof(double));
             continue;
         }
-        /* a grip carries the particles inside it rigidly (the nodes near its
-         * face mix in the material's velocity, which let a held end slip out) */
+        /* A grip carries the particles inside it rigidly (the nodes near its
+         * face mix in the material's velocity, which let a held end slip out),
+         * but their C stays the grid's: deep inside, where every node is held,
+         * that is the grip's skew(omega); within a cell of the face it takes the
+         * free material's shear, so the stress is continuous across the face
+         * and the face holds. With C = skew(omega) there the carried particles
+         * stayed unstressed, the first free node row saw a free surface and the
+         * material slid off unless the nodes a cell outside were held too: a
+         * clamp a cell in from the face (`grip_cantilever_clamped_at_face`). */
         int carried = 0;
         for (int c = 0; c < s->ncol && !carried; c++)
             if (s->cols[c].mode == HEARTH_GRIP && collider_near(&s->cols[c], x))
-                carried = collider_carry_particle(&s->cols[c], D, dt, x, v, C);
+                carried = collider_carry_particle(&s->cols[c], D, dt, x, v, NULL);
         /* The guard judges motion, not only the end speed: a wall or collider
          * below may zero v after the particle has already jumped cells. The
          * grid's velocity over dt is the motion asked for; a carried particle
