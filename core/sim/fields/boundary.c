@@ -60,12 +60,12 @@ int boundary_needed(const hearth_scene *s) {
 
 static hearth_status ensure_area(hearth_scene *s, hearth_error *err) {
     const int n = s->ps.n, nb = s->g.nactive;
-    if (nb > s->boundary.blocks_cap) {
-        unsigned char *b = mem_alloc((size_t)nb * 2);
+    if (2 * nb > s->boundary.blocks_cap) { /* two flags per active block, with room to grow */
+        unsigned char *b = mem_alloc((size_t)nb * 4);
         if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for boundary blocks (%d blocks)", nb);
         mem_free(s->boundary.blocks, (size_t)s->boundary.blocks_cap);
         s->boundary.blocks = b;
-        s->boundary.blocks_cap = nb * 2;
+        s->boundary.blocks_cap = nb * 4;
     }
     if (n <= s->boundary.area_cap) return HEARTH_OK;
     double *a = mem_alloc(sizeof(double) * (size_t)n);
@@ -100,7 +100,7 @@ static double node_value(const grid *g, const int gi[3], int ch) {
  * holds area are gathered: the interior of a large body is skipped. */
 static void volume_scatter(hearth_scene *s, int k) {
     grid *g = &s->g;
-    const int NPB = g->nodes_per_block, TN = grid_tile_count(g);
+    const int NPB = g->nodes_per_block, TN = grid_tile_count(g), D = g->dim;
     const mpm_state *m = mpm_state_of(s);
     const pblock pb = m->pb[k];
     int bc[3];
@@ -108,16 +108,45 @@ static void volume_scatter(hearth_scene *s, int k) {
     double acc[GRID_T * GRID_T * GRID_T];
     memset(acc, 0, sizeof(double) * (size_t)TN);
     const double *X = pcold(&s->ps, PC_X);
-    grid_stencil st;
-    for (int i = pb.start; i < pb.end; i++) {
-        grid_tile_stencil(g, bc, X + 3 * i, &st);
-        for (int q = 0; q < st.n; q++) acc[st.t[q]] += st.w[q] * m->vol[i];
+    for (int i = pb.start; i < pb.end; i++) { /* the weights are a tensor product: one axis at a time */
+        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
+        int lb[3] = {0, 0, 0};
+        for (int d = 0; d < D; d++) {
+            const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
+            const int base = (int)floor(Xd - 0.5);
+            bspline_weights(Xd - base, w[d], dw);
+            lb[d] = base - bc[d] * GRID_B;
+        }
+        const double v = m->vol[i];
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) {
+                const double wab = v * w[0][a] * w[1][b];
+                if (D == 2) {
+                    acc[(lb[0] + a) * GRID_T + lb[1] + b] += wab;
+                } else {
+                    double *row = acc + ((lb[0] + a) * GRID_T + lb[1] + b) * GRID_T + lb[2];
+                    for (int c = 0; c < 3; c++) row[c] += wab * w[2][c];
+                }
+            }
     }
     for (int t = 0; t < TN; t++) {
         int l;
         double *node = grid_block(g, grid_tile_slot(g, bc, t, &l));
         node[CH_CG_R * NPB + l] += acc[t];
     }
+}
+
+/* Is any of the blocks at bc + o, o in {lo..lo+1}^dim (lo = -1 or 0), flagged? */
+static int any_flag(const grid *g, const unsigned char *flag, const int bc[3], int lo) {
+    for (int a = lo; a <= lo + 1; a++)
+        for (int b = lo; b <= lo + 1; b++)
+            for (int c = lo; c <= (g->dim == 3 ? lo + 1 : lo); c++) {
+                const int x = bc[0] + a, y = bc[1] + b, z = g->dim == 3 ? bc[2] + c : 0;
+                if (x < 0 || y < 0 || z < 0 || x >= g->nb[0] || y >= g->nb[1] || z >= g->nb[2]) continue;
+                const int slot = g->slot[grid_block_id(g, x, y, z)];
+                if (slot >= 0 && flag[slot]) return 1;
+            }
+    return 0;
 }
 
 static void area_gather(hearth_scene *s, int k) {
@@ -185,10 +214,21 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         double *node = grid_block(g, k);
+        unsigned char mixed = 0;
         for (int l = 0; l < NPB; l++) {
             const double phi = node[CH_CG_R * NPB + l] / cellv;
             node[CH_CG_R * NPB + l] = fmin(1.0, fmax(0.0, (phi - PHI_LO) / (PHI_HI - PHI_LO)));
+            mixed |= node[CH_CG_R * NPB + l] < 1.0;
         }
+        s->boundary.blocks[k] = mixed; /* a block where psi is not one everywhere */
+    }
+    /* only cells with a corner in a mixed block have a gradient: the interior is skipped */
+    unsigned char *near = s->boundary.blocks + g->nactive; /* ensure_area leaves room for two flags per block */
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int k = 0; k < g->nactive; k++) {
+        int bc[3];
+        grid_block_coords(g, g->active[k], bc);
+        near[k] = (unsigned char)any_flag(g, s->boundary.blocks, bc, -1);
     }
 
     /* 2. each cell's gradient of psi (grid units), from the multilinear
@@ -203,9 +243,10 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
         double *node = grid_block(g, k);
         int bc[3];
         grid_block_coords(g, g->active[k], bc);
+        for (int d = 0; d < D; d++) memset(node + GCH[d] * NPB, 0, sizeof(double) * (size_t)NPB);
+        memset(node + CH_R * NPB, 0, sizeof(double) * (size_t)NPB);
+        if (!near[k]) continue;
         for (int l = 0; l < NPB; l++) {
-            for (int d = 0; d < D; d++) node[GCH[d] * NPB + l] = 0;
-            node[CH_R * NPB + l] = 0;
             int gi[3];
             grid_node_index(g, bc, l, gi);
             int inside = 1;
@@ -256,6 +297,11 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
         double *node = grid_block(g, k);
         int bc[3];
         grid_block_coords(g, g->active[k], bc);
+        unsigned char any = 0;
+        if (!near[k]) {
+            s->boundary.blocks[k] = 0;
+            continue;
+        }
         for (int l = 0; l < NPB; l++) {
             const double msum = node[CH_R * NPB + l];
             if (!(msum > 0)) continue;
@@ -282,7 +328,15 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
             gn = nn2 > 0 ? gn / sqrt(nn2) : 0.0;
             /* grad psi . n dx^dim = gr . n dx^(dim-1) */
             node[CH_R * NPB + l] = gn > 0 ? gn * (D == 2 ? g->dx : g->dx * g->dx) / msum : 0.0;
+            any |= gn > 0;
         }
+        s->boundary.blocks[k] = any; /* a cell of this block holds area */
+    }
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int k = 0; k < g->nactive; k++) {
+        int bc[3];
+        grid_block_coords(g, g->active[k], bc);
+        near[k] = (unsigned char)any_flag(g, s->boundary.blocks, bc, 0); /* its nodes' cells reach +1 blocks */
     }
     /* 4. r_i = sum over the node's cells of (area / corner mass), in CH_CG_P; the
      * blocks that hold any */
@@ -292,7 +346,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
         int bc[3];
         grid_block_coords(g, g->active[k], bc);
         unsigned char any = 0;
-        for (int l = 0; l < NPB; l++) {
+        for (int l = 0; l < NPB && near[k]; l++) {
             double r = 0;
             if (node[CH_M * NPB + l] > 0) {
                 int gi[3];
@@ -306,6 +360,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
             node[CH_CG_P * NPB + l] = r;
             any |= r > 0;
         }
+        if (!near[k]) memset(node + CH_CG_P * NPB, 0, sizeof(double) * (size_t)NPB);
         s->boundary.blocks[k] = any;
     }
     /* 5. each particle's share m_p sum_i w_ip r_i: the shares of a cell's area sum to it */

@@ -12,7 +12,7 @@ struct hearth_scene;
 typedef struct boundary_state {
     double *area;          /* per particle: its share of the air surface (m^(dim-1)), 0 away from it */
     int area_cap;
-    unsigned char *blocks; /* per active grid block: a node of it passes surface to particles */
+    unsigned char *blocks; /* two flags per active grid block (boundary.c); the first: a node of it passes surface to particles */
     int blocks_cap;
 } boundary_state;
 
