@@ -88,6 +88,23 @@ static double *node_at(const grid *g, const int gi[3], int *l) {
     return grid_block(g, slot);
 }
 
+/* Node gi + off given node gi at local index l of block storage node: read in
+ * the block when the neighbour lies in it (most nodes), else looked up. */
+static inline const double *node_off(const grid *g, const double *node, int l, const int gi[3], const int off[3], int *lj) {
+    int in = 1, step = 0;
+    for (int d = 0; d < g->dim; d++) {
+        const int c = gi[d] % GRID_B + off[d];
+        in &= c >= 0 && c < GRID_B;
+        step = step * GRID_B + off[d];
+    }
+    if (in) {
+        *lj = l + step;
+        return node;
+    }
+    const int nj[3] = {gi[0] + off[0], gi[1] + off[1], gi[2] + off[2]};
+    return node_at(g, nj, lj);
+}
+
 /* Channel ch of node gi, 0 where the node has no storage (and past the grid). */
 static double node_value(const grid *g, const int gi[3], int ch) {
     int l;
@@ -167,11 +184,26 @@ static void area_gather(hearth_scene *s, int k) {
     }
     const double *X = pcold(&s->ps, PC_X), *M = pcold(&s->ps, PC_MASS);
     int *flags = s->ps.enabled & (1u << PC_FLAGS) ? pcoli(&s->ps, PC_FLAGS) : NULL;
-    grid_stencil st;
-    for (int i = pb.start; i < pb.end; i++) {
-        grid_tile_stencil(g, bc, X + 3 * i, &st);
+    for (int i = pb.start; i < pb.end; i++) { /* one axis at a time, as volume_scatter */
+        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
+        int lb[3] = {0, 0, 0};
+        for (int d = 0; d < D; d++) {
+            const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
+            const int base = (int)floor(Xd - 0.5);
+            bspline_weights(Xd - base, w[d], dw);
+            lb[d] = base - bc[d] * GRID_B;
+        }
         double a = 0;
-        for (int q = 0; q < st.n; q++) a += st.w[q] * r[st.t[q]];
+        for (int x = 0; x < 3; x++)
+            for (int y = 0; y < 3; y++) {
+                const double wxy = w[0][x] * w[1][y];
+                if (D == 2) {
+                    a += wxy * r[(lb[0] + x) * GRID_T + lb[1] + y];
+                } else {
+                    const double *row = r + ((lb[0] + x) * GRID_T + lb[1] + y) * GRID_T + lb[2];
+                    a += wxy * (w[2][0] * row[0] + w[2][1] * row[1] + w[2][2] * row[2]);
+                }
+            }
         if (!(a > 0)) continue;
         s->boundary.area[i] = M[i] * a;
         if (flags) flags[i] |= PF_BOUNDARY;
@@ -254,10 +286,11 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
             if (!inside) continue; /* no cell below the grid's first node */
             double psi[8], msum = 0;
             for (int c = 0; c < NC; c++) {
-                int cj[3] = {gi[0], gi[1], gi[2]};
-                for (int d = 0; d < D; d++) cj[d] -= !((c >> d) & 1);
-                psi[c] = node_value(g, cj, CH_CG_R);
-                msum += node_value(g, cj, CH_M);
+                int off[3] = {0, 0, 0}, lj;
+                for (int d = 0; d < D; d++) off[d] = -!((c >> d) & 1);
+                const double *nj = node_off(g, node, l, gi, off, &lj);
+                psi[c] = nj ? nj[CH_CG_R * NPB + lj] : 0.0;
+                msum += nj ? nj[CH_M * NPB + lj] : 0.0;
             }
             if (!(msum > 0)) continue;
             double gr[3] = {0, 0, 0};
@@ -316,9 +349,9 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
             for (int a = -1; a <= 1; a++)
                 for (int b = -1; b <= 1; b++)
                     for (int c = -1; c <= (D == 3 ? 1 : -1); c++) {
-                        const int cj[3] = {gi[0] + a, gi[1] + b, gi[2] + (D == 3 ? c : 0)};
+                        const int off[3] = {a, b, D == 3 ? c : 0};
                         int lj;
-                        const double *nj = node_at(g, cj, &lj);
+                        const double *nj = node_off(g, node, l, gi, off, &lj);
                         if (!nj) continue;
                         for (int d = 0; d < D; d++) nv[d] += nj[GCH[d] * NPB + lj];
                     }
@@ -352,9 +385,10 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
                 int gi[3];
                 grid_node_index(g, bc, l, gi);
                 for (int c = 0; c < NC; c++) {
-                    int cj[3] = {gi[0], gi[1], gi[2]};
-                    for (int d = 0; d < D; d++) cj[d] += (c >> d) & 1;
-                    r += node_value(g, cj, CH_R);
+                    int off[3] = {0, 0, 0}, lj;
+                    for (int d = 0; d < D; d++) off[d] = (c >> d) & 1;
+                    const double *nj = node_off(g, node, l, gi, off, &lj);
+                    if (nj) r += nj[CH_R * NPB + lj];
                 }
             }
             node[CH_CG_P * NPB + l] = r;
