@@ -6,9 +6,11 @@
  * integral of |grad phi| over the grid is the mean perimeter (area in 3D) of
  * phi's level sets, which tends to the true surface whatever way it lies on
  * the grid. Each grid cell takes |grad psi| dx^dim from the gradient of the
- * multilinear interpolant at its centre, psi being phi clipped to [0.1, 0.9]
- * and rescaled (the clip keeps a disordered interior's noise out; the mean of
- * the level sets between stays on the surface). A cell's area goes to its
+ * multilinear interpolant at its centre, psi being phi clipped to [0.2, 0.8]
+ * and rescaled (the clip keeps a disordered interior's noise out: with
+ * [0.1, 0.9] a disc seeded with jitter 1 measured 1.03 of its perimeter at 32
+ * cells, with [0.2, 0.8] 1.0001; the mean of the level sets between stays on
+ * the surface), along n, the gradient averaged over the 3^dim cells around. A cell's area goes to its
  * corners by their mass and a node's to its particles by their mass share
  * w_ip m_p / m_i, so the particles' areas sum exactly to the cells'.
  *
@@ -214,8 +216,8 @@ static void area_gather(hearth_scene *s, int k) {
  * its gradient's integral is the mean perimeter of phi's level sets between
  * the two, and the clip keeps the noise of a disordered interior (phi within
  * 1 - PHI_HI of one) from counting as surface. */
-#define PHI_LO 0.1
-#define PHI_HI 0.9
+#define PHI_LO 0.2
+#define PHI_HI 0.8
 
 hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
     hearth_status st = ensure_area(s, err);
