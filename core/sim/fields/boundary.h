@@ -26,6 +26,6 @@ int boundary_needed(const struct hearth_scene *s);
 /// After P2G (node masses): fill s->boundary.area with each particle's share of the
 /// air surface (m^(dim-1); 0 inside) and set PF_BOUNDARY on those particles
 /// (all zero when nothing needs the boundary). Runs when heat or water is live.
-/// Uses the grid channels CH_CG_R, CH_CG_P and CH_R as scratch.
+/// Uses the grid channels CH_CG_R, CH_CG_P, CH_R, CH_B and CH_T0 as scratch (thermal_prepare fills them next).
 hearth_status boundary_find(struct hearth_scene *s, hearth_error *err);
 #endif
