@@ -10,9 +10,9 @@ struct hearth_scene;
  * s->boundary. Written only by boundary_find; thermal.c and transport.c read
  * area. */
 typedef struct boundary_state {
-    double *area;          /* per particle: its share of the air surface (m^(dim-1)), 0 inside */
+    double *area;          /* per particle: its share of the air surface (m^(dim-1)), 0 away from it */
     int area_cap;
-    unsigned char *blocks; /* per active grid block: holds a boundary node */
+    unsigned char *blocks; /* two flags per active grid block (boundary.c); the first: a node of it passes surface to particles */
     int blocks_cap;
 } boundary_state;
 
@@ -26,6 +26,6 @@ int boundary_needed(const struct hearth_scene *s);
 /// After P2G (node masses): fill s->boundary.area with each particle's share of the
 /// air surface (m^(dim-1); 0 inside) and set PF_BOUNDARY on those particles
 /// (all zero when nothing needs the boundary). Runs when heat or water is live.
-/// Uses the grid channels CH_CG_R and CH_CG_P as scratch.
+/// Uses the grid channels CH_CG_R, CH_CG_P, CH_R, CH_B and CH_T0 as scratch (thermal_prepare fills them next).
 hearth_status boundary_find(struct hearth_scene *s, hearth_error *err);
 #endif

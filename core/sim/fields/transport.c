@@ -21,7 +21,7 @@
  * instantiation, as in mpm.c.
  *
  * Where it sits in a step: between P2G and the momentum grid update,
- * boundary.c marks the boundary nodes and finds each one's closest particle,
+ * boundary.c measures the air surface and hands each particle its share,
  * thermal.c and water.c turn node sums into temperature and saturation and
  * fill the boundary particles' coefficients, and this pass applies both
  * diffusion operators (forward Euler heat folds its sources into the same
