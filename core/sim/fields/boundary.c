@@ -31,8 +31,9 @@
  * not air. A face ending on a collider keeps its full length, since the
  * tangential gradient's integral across the ramp is the face's extent.
  *
- * Cost: one volume scatter of every particle and two node passes per step
- * when an oven or evaporation is live; the particle gather runs only where
+ * Cost: the node volumes come from P2G, one more tile channel when heat or
+ * water is live (a separate scatter pass cost more: issue #17's follow-up);
+ * then node passes when an oven or evaporation is live; the particle gather runs only where
  * a particle block's tile holds surface. `robin_square_rotations`,
  * `robin_disc_converges`, `robin_ball_converges` (tests/unit_heat.c) check it. */
 #include "boundary.h"
@@ -114,47 +115,6 @@ static double node_value(const grid *g, const int gi[3], int ch) {
     return node ? node[ch * g->nodes_per_block + l] : 0.0;
 }
 
-/* Scatter one particle block's volumes sum_p w_ip V_p into CH_CG_R, or (gather)
- * each particle's area m_p sum_i w_ip r_i from CH_CG_P. Only blocks whose tile
- * holds area are gathered: the interior of a large body is skipped. */
-static void volume_scatter(hearth_scene *s, int k) {
-    grid *g = &s->g;
-    const int NPB = g->nodes_per_block, TN = grid_tile_count(g), D = g->dim;
-    const mpm_state *m = mpm_state_of(s);
-    const pblock pb = m->pb[k];
-    int bc[3];
-    grid_block_coords(g, pb.block, bc);
-    double acc[GRID_T * GRID_T * GRID_T];
-    memset(acc, 0, sizeof(double) * (size_t)TN);
-    const double *X = pcold(&s->ps, PC_X);
-    for (int i = pb.start; i < pb.end; i++) { /* the weights are a tensor product: one axis at a time */
-        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
-        int lb[3] = {0, 0, 0};
-        for (int d = 0; d < D; d++) {
-            const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
-            const int base = (int)floor(Xd - 0.5);
-            bspline_weights(Xd - base, w[d], dw);
-            lb[d] = base - bc[d] * GRID_B;
-        }
-        const double v = m->vol[i];
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++) {
-                const double wab = v * w[0][a] * w[1][b];
-                if (D == 2) {
-                    acc[(lb[0] + a) * GRID_T + lb[1] + b] += wab;
-                } else {
-                    double *row = acc + ((lb[0] + a) * GRID_T + lb[1] + b) * GRID_T + lb[2];
-                    for (int c = 0; c < 3; c++) row[c] += wab * w[2][c];
-                }
-            }
-    }
-    for (int t = 0; t < TN; t++) {
-        int l;
-        double *node = grid_block(g, grid_tile_slot(g, bc, t, &l));
-        node[CH_CG_R * NPB + l] += acc[t];
-    }
-}
-
 /* Is any of the blocks at bc + o, o in {lo..lo+1}^dim (lo = -1 or 0), flagged? */
 static int any_flag(const grid *g, const unsigned char *flag, const int bc[3], int lo) {
     for (int a = lo; a <= lo + 1; a++)
@@ -168,6 +128,9 @@ static int any_flag(const grid *g, const unsigned char *flag, const int bc[3], i
     return 0;
 }
 
+/* Each particle's area m_p sum_i w_ip r_i from CH_CG_P, one particle block at
+ * a time. Only blocks whose tile holds area are gathered: the interior of a
+ * large body is skipped. */
 static void area_gather(hearth_scene *s, int k) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block, TN = grid_tile_count(g), D = g->dim;
@@ -186,7 +149,7 @@ static void area_gather(hearth_scene *s, int k) {
     }
     const double *X = pcold(&s->ps, PC_X), *M = pcold(&s->ps, PC_MASS);
     int *flags = s->ps.enabled & (1u << PC_FLAGS) ? pcoli(&s->ps, PC_FLAGS) : NULL;
-    for (int i = pb.start; i < pb.end; i++) { /* one axis at a time, as volume_scatter */
+    for (int i = pb.start; i < pb.end; i++) { /* the weights are a tensor product: one axis at a time */
         double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
         int lb[3] = {0, 0, 0};
         for (int d = 0; d < D; d++) {
@@ -231,19 +194,10 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
     if (flags)
         for (int i = 0; i < n; i++) flags[i] &= ~PF_BOUNDARY;
     if (!boundary_needed(s)) return HEARTH_OK;
-    const mpm_state *m = mpm_state_of(s); /* the sort's particle blocks, in colours */
+    const mpm_state *m = mpm_state_of(s); /* the sort's particle blocks */
 
-    /* 1. node volumes sum_p w_ip V_p into CH_CG_R; colours keep the writes apart */
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int k = 0; k < g->nactive; k++) {
-        double *node = grid_block(g, k);
-        memset(node + CH_CG_R * NPB, 0, sizeof(double) * (size_t)NPB);
-    }
-    for (int col = 0; col < 8; col++) {
-#pragma omp parallel for schedule(dynamic, 2) if (n >= SCENE_PARALLEL_MIN)
-        for (int q = m->colour_start[col]; q < m->colour_start[col + 1]; q++) volume_scatter(s, m->colour_pb[q]);
-    }
-    /* ... then the clipped volume fraction psi */
+    /* 1. P2G left the node volumes sum_p w_ip J V_0 in CH_CG_R (mpm.c: the
+     * scatter rides along with the mass); from them the clipped volume fraction psi */
     const double cellv = D == 2 ? g->dx * g->dx : g->dx * g->dx * g->dx;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
