@@ -91,9 +91,28 @@ static double *node_at(const grid *g, const int gi[3], int *l) {
     return grid_block(g, slot);
 }
 
-/* Node gi + off given node gi at local index l of block storage node: read in
- * the block when the neighbour lies in it (most nodes), else looked up. */
-static inline const double *node_off(const grid *g, const double *node, int l, const int gi[3], const int off[3], int *lj) {
+/* The storage of the 3^dim blocks around block bc, the block itself among
+ * them, indexed ((a+1) 3 + b+1) 3 + c+1 for the offset (a, b, c) (no c in
+ * 2D); NULL past the grid or where a block has no storage. Looked up once a
+ * block, so a node's neighbours across the block's faces cost an index. */
+static void block_ring(const grid *g, const int bc[3], const double *ring[27]) {
+    const int D = g->dim;
+    int r = 0;
+    for (int a = -1; a <= 1; a++)
+        for (int b = -1; b <= 1; b++)
+            for (int c = D == 3 ? -1 : 0; c <= (D == 3 ? 1 : 0); c++) {
+                const int x = bc[0] + a, y = bc[1] + b, z = bc[2] + c;
+                int slot = -1;
+                if (x >= 0 && y >= 0 && z >= 0 && x < g->nb[0] && y < g->nb[1] && z < g->nb[2]) slot = g->slot[grid_block_id(g, x, y, z)];
+                ring[r++] = slot >= 0 ? grid_block(g, slot) : NULL;
+            }
+}
+
+/* Node gi + off (each component in -1..1) given node gi at local index l of
+ * block storage node, whose blocks around are ring: its storage and local
+ * index, or NULL past the grid or in a block without storage (empty air). */
+static inline const double *node_off(const grid *g, const double *node, const double *const ring[27], int l, const int gi[3],
+                                     const int off[3], int *lj) {
     int in = 1, step = 0;
     for (int d = 0; d < g->dim; d++) {
         const int c = gi[d] % GRID_B + off[d];
@@ -104,8 +123,16 @@ static inline const double *node_off(const grid *g, const double *node, int l, c
         *lj = l + step;
         return node;
     }
-    const int nj[3] = {gi[0] + off[0], gi[1] + off[1], gi[2] + off[2]};
-    return node_at(g, nj, lj);
+    int r = 0, lo = 0;
+    for (int d = 0; d < g->dim; d++) {
+        const int n = gi[d] + off[d];
+        if (n < 0 || n > g->nn[d] - 1) return NULL;
+        const int c = gi[d] % GRID_B + off[d], o = c < 0 ? -1 : c >= GRID_B ? 1 : 0;
+        r = r * 3 + o + 1;
+        lo = lo * GRID_B + c - o * GRID_B;
+    }
+    *lj = lo;
+    return ring[r];
 }
 
 /* Channel ch of node gi, 0 where the node has no storage (and past the grid). */
@@ -234,6 +261,8 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
         for (int d = 0; d < D; d++) memset(node + GCH[d] * NPB, 0, sizeof(double) * (size_t)NPB);
         memset(node + CH_R * NPB, 0, sizeof(double) * (size_t)NPB);
         if (!near[k]) continue;
+        const double *ring[27];
+        block_ring(g, bc, ring);
         for (int l = 0; l < NPB; l++) {
             int gi[3];
             grid_node_index(g, bc, l, gi);
@@ -244,7 +273,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
             for (int c = 0; c < NC; c++) {
                 int off[3] = {0, 0, 0}, lj;
                 for (int d = 0; d < D; d++) off[d] = -!((c >> d) & 1);
-                const double *nj = node_off(g, node, l, gi, off, &lj);
+                const double *nj = node_off(g, node, ring, l, gi, off, &lj);
                 psi[c] = nj ? nj[CH_CG_R * NPB + lj] : 0.0;
                 msum += nj ? nj[CH_M * NPB + lj] : 0.0;
             }
@@ -291,6 +320,8 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
             s->boundary.blocks[k] = 0;
             continue;
         }
+        const double *ring[27];
+        block_ring(g, bc, ring);
         for (int l = 0; l < NPB; l++) {
             const double msum = node[CH_R * NPB + l];
             if (!(msum > 0)) continue;
@@ -307,7 +338,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
                     for (int c = -1; c <= (D == 3 ? 1 : -1); c++) {
                         const int off[3] = {a, b, D == 3 ? c : 0};
                         int lj;
-                        const double *nj = node_off(g, node, l, gi, off, &lj);
+                        const double *nj = node_off(g, node, ring, l, gi, off, &lj);
                         if (!nj) continue;
                         for (int d = 0; d < D; d++) nv[d] += nj[GCH[d] * NPB + lj];
                     }
@@ -335,6 +366,8 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
         int bc[3];
         grid_block_coords(g, g->active[k], bc);
         unsigned char any = 0;
+        const double *ring[27] = {NULL};
+        if (near[k]) block_ring(g, bc, ring);
         for (int l = 0; l < NPB && near[k]; l++) {
             double r = 0;
             if (node[CH_M * NPB + l] > 0) {
@@ -343,7 +376,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
                 for (int c = 0; c < NC; c++) {
                     int off[3] = {0, 0, 0}, lj;
                     for (int d = 0; d < D; d++) off[d] = (c >> d) & 1;
-                    const double *nj = node_off(g, node, l, gi, off, &lj);
+                    const double *nj = node_off(g, node, ring, l, gi, off, &lj);
                     if (nj) r += nj[CH_R * NPB + lj];
                 }
             }
