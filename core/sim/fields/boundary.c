@@ -31,8 +31,9 @@
  * not air. A face ending on a collider keeps its full length, since the
  * tangential gradient's integral across the ramp is the face's extent.
  *
- * Cost: one volume scatter of every particle and two node passes per step
- * when an oven or evaporation is live; the particle gather runs only where
+ * Cost: the node volumes come from P2G, one more tile channel when heat or
+ * water is live (a separate scatter pass cost more: issue #17's follow-up);
+ * then node passes when an oven or evaporation is live; the particle gather runs only where
  * a particle block's tile holds surface. `robin_square_rotations`,
  * `robin_disc_converges`, `robin_ball_converges` (tests/unit_heat.c) check it. */
 #include "boundary.h"
@@ -90,9 +91,28 @@ static double *node_at(const grid *g, const int gi[3], int *l) {
     return grid_block(g, slot);
 }
 
-/* Node gi + off given node gi at local index l of block storage node: read in
- * the block when the neighbour lies in it (most nodes), else looked up. */
-static inline const double *node_off(const grid *g, const double *node, int l, const int gi[3], const int off[3], int *lj) {
+/* The storage of the 3^dim blocks around block bc, the block itself among
+ * them, indexed ((a+1) 3 + b+1) 3 + c+1 for the offset (a, b, c) (no c in
+ * 2D); NULL past the grid or where a block has no storage. Looked up once a
+ * block, so a node's neighbours across the block's faces cost an index. */
+static void block_ring(const grid *g, const int bc[3], const double *ring[27]) {
+    const int D = g->dim;
+    int r = 0;
+    for (int a = -1; a <= 1; a++)
+        for (int b = -1; b <= 1; b++)
+            for (int c = D == 3 ? -1 : 0; c <= (D == 3 ? 1 : 0); c++) {
+                const int x = bc[0] + a, y = bc[1] + b, z = bc[2] + c;
+                int slot = -1;
+                if (x >= 0 && y >= 0 && z >= 0 && x < g->nb[0] && y < g->nb[1] && z < g->nb[2]) slot = g->slot[grid_block_id(g, x, y, z)];
+                ring[r++] = slot >= 0 ? grid_block(g, slot) : NULL;
+            }
+}
+
+/* Node gi + off (each component in -1..1) given node gi at local index l of
+ * block storage node, whose blocks around are ring: its storage and local
+ * index, or NULL past the grid or in a block without storage (empty air). */
+static inline const double *node_off(const grid *g, const double *node, const double *const ring[27], int l, const int gi[3],
+                                     const int off[3], int *lj) {
     int in = 1, step = 0;
     for (int d = 0; d < g->dim; d++) {
         const int c = gi[d] % GRID_B + off[d];
@@ -103,8 +123,16 @@ static inline const double *node_off(const grid *g, const double *node, int l, c
         *lj = l + step;
         return node;
     }
-    const int nj[3] = {gi[0] + off[0], gi[1] + off[1], gi[2] + off[2]};
-    return node_at(g, nj, lj);
+    int r = 0, lo = 0;
+    for (int d = 0; d < g->dim; d++) {
+        const int n = gi[d] + off[d];
+        if (n < 0 || n > g->nn[d] - 1) return NULL;
+        const int c = gi[d] % GRID_B + off[d], o = c < 0 ? -1 : c >= GRID_B ? 1 : 0;
+        r = r * 3 + o + 1;
+        lo = lo * GRID_B + c - o * GRID_B;
+    }
+    *lj = lo;
+    return ring[r];
 }
 
 /* Channel ch of node gi, 0 where the node has no storage (and past the grid). */
@@ -112,47 +140,6 @@ static double node_value(const grid *g, const int gi[3], int ch) {
     int l;
     const double *node = node_at(g, gi, &l);
     return node ? node[ch * g->nodes_per_block + l] : 0.0;
-}
-
-/* Scatter one particle block's volumes sum_p w_ip V_p into CH_CG_R, or (gather)
- * each particle's area m_p sum_i w_ip r_i from CH_CG_P. Only blocks whose tile
- * holds area are gathered: the interior of a large body is skipped. */
-static void volume_scatter(hearth_scene *s, int k) {
-    grid *g = &s->g;
-    const int NPB = g->nodes_per_block, TN = grid_tile_count(g), D = g->dim;
-    const mpm_state *m = mpm_state_of(s);
-    const pblock pb = m->pb[k];
-    int bc[3];
-    grid_block_coords(g, pb.block, bc);
-    double acc[GRID_T * GRID_T * GRID_T];
-    memset(acc, 0, sizeof(double) * (size_t)TN);
-    const double *X = pcold(&s->ps, PC_X);
-    for (int i = pb.start; i < pb.end; i++) { /* the weights are a tensor product: one axis at a time */
-        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
-        int lb[3] = {0, 0, 0};
-        for (int d = 0; d < D; d++) {
-            const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
-            const int base = (int)floor(Xd - 0.5);
-            bspline_weights(Xd - base, w[d], dw);
-            lb[d] = base - bc[d] * GRID_B;
-        }
-        const double v = m->vol[i];
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++) {
-                const double wab = v * w[0][a] * w[1][b];
-                if (D == 2) {
-                    acc[(lb[0] + a) * GRID_T + lb[1] + b] += wab;
-                } else {
-                    double *row = acc + ((lb[0] + a) * GRID_T + lb[1] + b) * GRID_T + lb[2];
-                    for (int c = 0; c < 3; c++) row[c] += wab * w[2][c];
-                }
-            }
-    }
-    for (int t = 0; t < TN; t++) {
-        int l;
-        double *node = grid_block(g, grid_tile_slot(g, bc, t, &l));
-        node[CH_CG_R * NPB + l] += acc[t];
-    }
 }
 
 /* Is any of the blocks at bc + o, o in {lo..lo+1}^dim (lo = -1 or 0), flagged? */
@@ -168,6 +155,9 @@ static int any_flag(const grid *g, const unsigned char *flag, const int bc[3], i
     return 0;
 }
 
+/* Each particle's area m_p sum_i w_ip r_i from CH_CG_P, one particle block at
+ * a time. Only blocks whose tile holds area are gathered: the interior of a
+ * large body is skipped. */
 static void area_gather(hearth_scene *s, int k) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block, TN = grid_tile_count(g), D = g->dim;
@@ -186,7 +176,7 @@ static void area_gather(hearth_scene *s, int k) {
     }
     const double *X = pcold(&s->ps, PC_X), *M = pcold(&s->ps, PC_MASS);
     int *flags = s->ps.enabled & (1u << PC_FLAGS) ? pcoli(&s->ps, PC_FLAGS) : NULL;
-    for (int i = pb.start; i < pb.end; i++) { /* one axis at a time, as volume_scatter */
+    for (int i = pb.start; i < pb.end; i++) { /* the weights are a tensor product: one axis at a time */
         double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
         int lb[3] = {0, 0, 0};
         for (int d = 0; d < D; d++) {
@@ -231,19 +221,10 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
     if (flags)
         for (int i = 0; i < n; i++) flags[i] &= ~PF_BOUNDARY;
     if (!boundary_needed(s)) return HEARTH_OK;
-    const mpm_state *m = mpm_state_of(s); /* the sort's particle blocks, in colours */
+    const mpm_state *m = mpm_state_of(s); /* the sort's particle blocks */
 
-    /* 1. node volumes sum_p w_ip V_p into CH_CG_R; colours keep the writes apart */
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int k = 0; k < g->nactive; k++) {
-        double *node = grid_block(g, k);
-        memset(node + CH_CG_R * NPB, 0, sizeof(double) * (size_t)NPB);
-    }
-    for (int col = 0; col < 8; col++) {
-#pragma omp parallel for schedule(dynamic, 2) if (n >= SCENE_PARALLEL_MIN)
-        for (int q = m->colour_start[col]; q < m->colour_start[col + 1]; q++) volume_scatter(s, m->colour_pb[q]);
-    }
-    /* ... then the clipped volume fraction psi */
+    /* 1. P2G left the node volumes sum_p w_ip J V_0 in CH_CG_R (mpm.c: the
+     * scatter rides along with the mass); from them the clipped volume fraction psi */
     const double cellv = D == 2 ? g->dx * g->dx : g->dx * g->dx * g->dx;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
@@ -280,6 +261,8 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
         for (int d = 0; d < D; d++) memset(node + GCH[d] * NPB, 0, sizeof(double) * (size_t)NPB);
         memset(node + CH_R * NPB, 0, sizeof(double) * (size_t)NPB);
         if (!near[k]) continue;
+        const double *ring[27];
+        block_ring(g, bc, ring);
         for (int l = 0; l < NPB; l++) {
             int gi[3];
             grid_node_index(g, bc, l, gi);
@@ -290,7 +273,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
             for (int c = 0; c < NC; c++) {
                 int off[3] = {0, 0, 0}, lj;
                 for (int d = 0; d < D; d++) off[d] = -!((c >> d) & 1);
-                const double *nj = node_off(g, node, l, gi, off, &lj);
+                const double *nj = node_off(g, node, ring, l, gi, off, &lj);
                 psi[c] = nj ? nj[CH_CG_R * NPB + lj] : 0.0;
                 msum += nj ? nj[CH_M * NPB + lj] : 0.0;
             }
@@ -337,6 +320,8 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
             s->boundary.blocks[k] = 0;
             continue;
         }
+        const double *ring[27];
+        block_ring(g, bc, ring);
         for (int l = 0; l < NPB; l++) {
             const double msum = node[CH_R * NPB + l];
             if (!(msum > 0)) continue;
@@ -353,7 +338,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
                     for (int c = -1; c <= (D == 3 ? 1 : -1); c++) {
                         const int off[3] = {a, b, D == 3 ? c : 0};
                         int lj;
-                        const double *nj = node_off(g, node, l, gi, off, &lj);
+                        const double *nj = node_off(g, node, ring, l, gi, off, &lj);
                         if (!nj) continue;
                         for (int d = 0; d < D; d++) nv[d] += nj[GCH[d] * NPB + lj];
                     }
@@ -381,6 +366,8 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
         int bc[3];
         grid_block_coords(g, g->active[k], bc);
         unsigned char any = 0;
+        const double *ring[27] = {NULL};
+        if (near[k]) block_ring(g, bc, ring);
         for (int l = 0; l < NPB && near[k]; l++) {
             double r = 0;
             if (node[CH_M * NPB + l] > 0) {
@@ -389,7 +376,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
                 for (int c = 0; c < NC; c++) {
                     int off[3] = {0, 0, 0}, lj;
                     for (int d = 0; d < D; d++) off[d] = (c >> d) & 1;
-                    const double *nj = node_off(g, node, l, gi, off, &lj);
+                    const double *nj = node_off(g, node, ring, l, gi, off, &lj);
                     if (nj) r += nj[CH_R * NPB + lj];
                 }
             }

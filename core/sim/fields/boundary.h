@@ -23,7 +23,7 @@ void boundary_free(boundary_state *b);
 
 /// Does anything in the scene act through the air boundary (an oven, evaporation)?
 int boundary_needed(const struct hearth_scene *s);
-/// After P2G (node masses): fill s->boundary.area with each particle's share of the
+/// After P2G (node masses, and node volumes sum w_ip J V_0 in CH_CG_R): fill s->boundary.area with each particle's share of the
 /// air surface (m^(dim-1); 0 inside) and set PF_BOUNDARY on those particles
 /// (all zero when nothing needs the boundary). Runs when heat or water is live.
 /// Uses the grid channels CH_CG_R, CH_CG_P, CH_R, CH_B and CH_T0 as scratch (thermal_prepare fills them next).

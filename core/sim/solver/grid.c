@@ -108,13 +108,15 @@ hearth_status grid_activate(grid *g, const unsigned char *mark, hearth_error *er
             g->active[n++] = b;
         }
     g->nactive = n;
-    /* The channels the passes accumulate into start at zero. CH_T0 to CH_B are
-     * written whole before they are read (thermal.c, boundary.c), so they are
-     * left as they are: a field scene zeroes 9 of its 14 channels. */
+    /* The channels the passes accumulate into start at zero, CH_CG_R among them
+     * (P2G sums the volume there for boundary.c). CH_T0, CH_R, CH_CG_P and CH_B
+     * are written whole before they are read (thermal.c, boundary.c), so they
+     * are left as they are: a field scene zeroes 10 of its 14 channels. */
     const size_t NPB = (size_t)g->nodes_per_block, lo = (size_t)(g->nch < CH_T0 ? g->nch : CH_T0);
     for (int k = 0; k < n; k++) {
         double *b = g->data + (size_t)k * (size_t)g->nch * NPB;
         memset(b, 0, sizeof(double) * lo * NPB);
+        if (g->nch > CH_CG_R) memset(b + CH_CG_R * NPB, 0, sizeof(double) * NPB);
         if (g->nch > CH_MW) memset(b + CH_MW * NPB, 0, sizeof(double) * (size_t)(g->nch - CH_MW) * NPB);
     }
     return HEARTH_OK;
