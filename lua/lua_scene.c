@@ -367,6 +367,22 @@ static int l_motion_gc(lua_State *L) {
 }
 
 /* s:_collider(shape, mode, friction, velocity (vec|fn), omega (num|vec|fn), pivot) -> id */
+/* Append the value on top of the stack (a motion userdata, left there) to the
+ * scene's (argument 1) motions list: alive while the scene is, and checked
+ * after each step. */
+static void keep_motion(lua_State *L) {
+    lua_getiuservalue(L, 1, 1);
+    if (lua_getfield(L, -1, "motions") != LUA_TTABLE) {
+        lua_pop(L, 1);
+        lua_newtable(L);
+        lua_pushvalue(L, -1);
+        lua_setfield(L, -3, "motions");
+    }
+    lua_pushvalue(L, -3);
+    lua_seti(L, -2, luaL_len(L, -2) + 1);
+    lua_pop(L, 2);
+}
+
 static int l_collider(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     hearth_collider_def cd = hearth_default_collider_def();
@@ -399,16 +415,7 @@ static int l_collider(lua_State *L) {
             lua_pushvalue(L, 6);
             m->oref = luaL_ref(L, LUA_REGISTRYINDEX);
         }
-        lua_getiuservalue(L, 1, 1);
-        if (lua_getfield(L, -1, "motions") != LUA_TTABLE) {
-            lua_pop(L, 1);
-            lua_newtable(L);
-            lua_pushvalue(L, -1);
-            lua_setfield(L, -3, "motions");
-        }
-        lua_pushvalue(L, -3);
-        lua_seti(L, -2, luaL_len(L, -2) + 1);
-        lua_pop(L, 2);
+        keep_motion(L);
         cd.motion = motion_cb;
         cd.motion_ud = m;
     }
@@ -478,16 +485,7 @@ static int l_gravity(lua_State *L) {
     lua_pushvalue(L, 2);
     m->vref = luaL_ref(L, LUA_REGISTRYINDEX);
     /* kept in the scene's motions list: alive while the scene is, and checked after each step */
-    lua_getiuservalue(L, 1, 1);
-    if (lua_getfield(L, -1, "motions") != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, -3, "motions");
-    }
-    lua_pushvalue(L, -3);
-    lua_seti(L, -2, luaL_len(L, -2) + 1);
-    lua_pop(L, 2);
+    keep_motion(L);
     hearth_scene_set_gravity_fn(u->s, gravity_cb, m);
     return 0;
 }
