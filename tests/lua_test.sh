@@ -558,6 +558,9 @@ sandbox_sigint_loop)
     # stop(kind, signal, status): start, wait for "started", signal, time the stop
     stop() {
         local kind=$1 sig=$2 want=$3
+        # the background job truncates out.txt only once it runs: remove the last
+        # stop's file first, or its "started" is read before the new run begins
+        rm -f out.txt err.txt
         "$hearth" run "$scenes/runaway.lua" --quiet --set "kind=$kind" >out.txt 2>err.txt &
         bg_pid=$!
         for _ in $(seq 100); do grep -q started out.txt && break; sleep 0.05; done
@@ -586,6 +589,7 @@ sandbox_sigint_loop)
     stop run INT 130
     # hearth repl: a runaway command at the prompt stops the same way
     mkfifo cmds
+    rm -f out.txt err.txt # as in stop(): no earlier run's "started"
     "$hearth" repl >out.txt 2>err.txt <cmds &
     bg_pid=$!
     exec 3>cmds
