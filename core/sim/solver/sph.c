@@ -63,7 +63,8 @@
  * kernel (and so its viscous dt limit). Now the start-up converges (order
  * 1.2, `sph_creeping_startup_converges`) and so does the steady profile
  * (order 1.9, `sph_poiseuille_converges`). Eq. 3.45's heat Laplacian uses the
- * same kernel and keeps its lattice bias (not renormalised).
+ * same kernel, so it takes the same factor (sph_heat.c; slab conduction then
+ * converges at order 2, `sph_heat_conduction_converges`).
  *
  * Shared with MPM: particles, plugins through the material door (porosity from
  * plastic_J for a material that needs it; no saturation: a material that needs
