@@ -132,6 +132,7 @@ static void sph_free(hearth_scene *s) {
     if (!st) return;
     sph_cells_free(&st->cells);
     sph_nlist_free(&st->nl);
+    sph_walls_free(st);
     size_t c = (size_t)st->cap;
 #define FREE(a, k) mem_free(st->a, sizeof(double) * (k) * c);
     ARRAYS(FREE)
@@ -632,7 +633,9 @@ static void phase_forces(hearth_scene *s, double dt) {
                 for (int b = 0; b < 3; b++) sd += (Si[3 * q + b] / (ri * ri) + Sj[3 * q + b] / (rj * rj)) * d[b];
                 if (fn > 0)
                     for (int b = 0; b < 3; b++) sd += fn * (Ri[3 * q + b] + Rj[3 * q + b]) * d[b];
-                a[q] += m[j] * (-Pij * g * d[q] + sd * g) - (wj ? 0.0 : visc * vij[q]);
+                    /* with a wall b: -visc beta (v_a - V_b), V_b the wall's own (prescribed) velocity; the
+                 * beta v_a part is the implicit drag below */
+                a[q] += m[j] * (-Pij * g * d[q] + sd * g) - (wj ? -visc * beta * v[3 * j + q] : visc * vij[q]);
             }
             drag += wj ? visc * beta : 0.0;
         }
@@ -647,7 +650,8 @@ static void phase_forces(hearth_scene *s, double dt) {
          * to about 5 it would otherwise break the viscous dt limit, which is
          * set for fluid-fluid pairs (a channel at 100 Pa s blew up) */
         const int fixed = flags && (flags[i] & PF_FIXED);
-        for (int q = 0; q < 3; q++) st->vnew[3 * i + q] = fixed ? 0.0 : (v[3 * i + q] + dt * a[q]) / (1.0 + dt * drag);
+        for (int q = 0; q < 3; q++) /* a fixed particle keeps its prescribed velocity (sph_walls_begin) */
+            st->vnew[3 * i + q] = fixed ? v[3 * i + q] : (v[3 * i + q] + dt * a[q]) / (1.0 + dt * drag);
     }
     sph_heat_rates(s); /* after sph_viscous_moments and st->sp, which it reads */
 }
@@ -666,10 +670,7 @@ static void phase_xsph(hearth_scene *s) {
     for (int i = 0; i < n; i++) {
         double *vi = v + 3 * i;
         const double *wi = st->vnew + 3 * i;
-        if (flags && (flags[i] & PF_FIXED)) {
-            vi[0] = vi[1] = vi[2] = 0;
-            continue;
-        }
+        if (flags && (flags[i] & PF_FIXED)) continue; /* its prescribed velocity, 0 unless it moves */
         double corr[3] = {0, 0, 0};
         if (st->xsph[i] > 0)
             for (int k = off[i]; k < off[i + 1]; k++) {
@@ -709,8 +710,12 @@ static void phase_drift(hearth_scene *s, double dt, step_report *rep) {
             T[i] += dt * st->dT[i];
             if (Tmax && T[i] > Tmax[i]) Tmax[i] = T[i];
         }
-        if (flags && (flags[i] & PF_FIXED)) continue;
         double *xi = x + 3 * i, *vi = v + 3 * i;
+        if (flags && (flags[i] & PF_FIXED)) { /* moved by sph_walls_end; a moving wall's speed limits dt */
+            const double sp = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
+            if (sp > vmax) vmax = sp, fastest = i;
+            continue;
+        }
         for (int q = 0; q < dim; q++) xi[q] += drift * vi[q];
         for (int q = 0; q < s->ncol; q++) {
             const collider *cl = &s->cols[q];
@@ -813,6 +818,7 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
         st->n = 0;
         return HEARTH_OK;
     }
+    sph_walls_begin(s, s->t);
     phase_predrift(s, dt);
     if ((e = phase_neighbours(s, err))) return e;
     if ((e = phase_density(s, err))) return e;
@@ -823,6 +829,7 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     phase_forces(s, dt);
     phase_xsph(s);
     phase_drift(s, dt, rep);
+    sph_walls_end(s, dt);
     phase_browning(s);
     st->n = n;
     st->valid = 1;

@@ -11,6 +11,17 @@
 
 #define KELVIN 273.15
 
+/* A fixed body's prescribed rigid motion (sph_walls.c): velocity and omega
+ * (constants, or motion(t) at the start of each step) about a pivot that
+ * moves with the body. */
+typedef struct sph_wall_motion {
+    int body;
+    double vel[3], omega[3]; /* this step's (m/s, rad/s) */
+    double pivot[3];         /* the rotation centre now (m) */
+    hearth_motion_fn motion; /* optional; not owned */
+    void *motion_ud;
+} sph_wall_motion;
+
 struct sph_state {
     sph_cells cells;
     sph_nlist nl;
@@ -29,6 +40,8 @@ struct sph_state {
      * is added (sph_material_added); see sph_viscosity_index. */
     int *visc_index;
     int visc_cap;
+    sph_wall_motion *walls; /* moving fixed bodies (hearth_scene_body_motion), nwalls of walls_cap */
+    int nwalls, walls_cap;
 };
 
 /* The particle columns a phase reads. Sorting permutes the particles, and
@@ -77,6 +90,14 @@ void sph_viscous_moments(hearth_scene *s);
 int sph_wall_frame(const hearth_scene *s, int i, double n[3], double *da);
 /// 1 + d_b / d_a: the factor on v_a in a's viscous interaction with wall particle b.
 double sph_wall_beta(const double d[3], const double n[3], double da, double dah);
+/// At the start of a step (serial: it may call motion callbacks): every fixed
+/// particle's velocity, its body's prescribed motion at time t or 0.
+void sph_walls_begin(hearth_scene *s, double t);
+/// At the end of a step: moving fixed bodies move rigidly over dt (exact for
+/// constant velocity and omega); their pivots follow.
+void sph_walls_end(hearth_scene *s, double dt);
+/// Release the motion records (with the state).
+void sph_walls_free(struct sph_state *st);
 
 /* ---- sph_heat.c ---- */
 /// Heat rates dT/dt into st->dT (nothing without the temperature field).
