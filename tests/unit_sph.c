@@ -482,6 +482,58 @@ TEST(sph_viscosity_ladder) {
     }
 }
 
+static int slab_conduction(int N, double *err, double *rate); /* below, with its test */
+
+/* A rung list from an environment variable ("10 20 40"), or def. */
+static int ladder_env(const char *name, const char *def, int *Ns, int cap) {
+    const char *env = getenv(name);
+    int nN = 0;
+    for (const char *p = env ? env : def; *p && nN < cap;) {
+        char *end;
+        const long v = strtol(p, &end, 10);
+        if (end == p) break;
+        if (v >= 4 && v <= 400) Ns[nN++] = (int)v;
+        p = end;
+    }
+    return nN;
+}
+
+/* The ladders behind sph_couette_moving_lid_converges and
+ * sph_heat_conduction_converges, longer: scripts/validation/sph_walls_ladder.sh
+ * runs this case with SPH_LADDER (particles across the Couette layer; default
+ * "10 20") and SPH_HEAT_LADDER (particles along the slab's wave; default
+ * "12 24"). Not a meson test of its own: the two above check its first rungs.
+ * Each error must shrink from one rung to the next. */
+TEST(sph_walls_ladder) {
+    int Ns[8], Hs[8];
+    const int nN = ladder_env("SPH_LADDER", "10 20", Ns, 8), nH = ladder_env("SPH_HEAT_LADDER", "12 24", Hs, 8);
+    CHECK(nN >= 2 && nH >= 2);
+    const double ts[] = {0.05, 0.2, 0.5};
+    double Es[8];
+    printf("moving-lid Couette start-up (1e4 Pa s, lid 5 mm/s)\n%6s %14s %14s %14s %8s\n", "across", "worst % of U",
+           "at 0.2 L^2/nu", "at 0.5 L^2/nu", "order");
+    for (int r = 0; r < nN; r++) {
+        double err[3], slow[3];
+        CHECK(channel_lid(Ns[r], 1e4, 5e-3, ts, 3, err, slow, 0) == 0);
+        Es[r] = fmax(err[0], fmax(err[1], err[2]));
+        const double o = r ? log(Es[r - 1] / Es[r]) / log((double)Ns[r] / Ns[r - 1]) : NAN;
+        printf("%6d %14.4f %14.4f %14.4f %8.2f\n", Ns[r], 100 * Es[r], 100 * err[1], 100 * err[2], o);
+        fflush(stdout);
+        if (r) CHECK(Es[r] < Es[r - 1]);
+    }
+    double Hh[8];
+    printf("slab conduction (eq. 3.45-3.46, one e-fold)\n%6s %14s %14s %8s\n", "along", "worst % of A", "rate / D k^2",
+           "order");
+    for (int r = 0; r < nH; r++) {
+        double rate = NAN;
+        CHECK(slab_conduction(Hs[r], &Hh[r], &rate) == 0);
+        const double o = r ? log(Hh[r - 1] / Hh[r]) / log((double)Hs[r] / Hs[r - 1]) : NAN;
+        printf("%6d %14.4f %14.5f %8.2f\n", Hs[r], 100 * Hh[r], rate, o);
+        fflush(stdout);
+        if (r) CHECK(Hh[r] < Hh[r - 1]);
+    }
+}
+
 /* Smallest and largest nearest-neighbour distance over a periodic 2D box
  * of size hi, in units of a (O(n^2): small blocks only). */
 static void nn_range(const hearth_scene *s, const double hi[3], double a, double *dmin, double *dmax) {
@@ -1459,7 +1511,7 @@ TEST(sph_keeps_no_grid_tables) {
 }
 
 TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_neighbours_agree), T(sph_hydrostatic),
-          T(sph_poiseuille), T(sph_wall_drag_stable), T(sph_creeping_startup_converges), T(sph_couette_moving_lid_converges), T(sph_poiseuille_converges), T(sph_viscosity_ladder), T(sph_artificial_stress_fluid), T(sph_artificial_stress_elastic), T(sph_oven_robin), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads),
+          T(sph_poiseuille), T(sph_wall_drag_stable), T(sph_creeping_startup_converges), T(sph_couette_moving_lid_converges), T(sph_poiseuille_converges), T(sph_viscosity_ladder), T(sph_walls_ladder), T(sph_artificial_stress_fluid), T(sph_artificial_stress_elastic), T(sph_oven_robin), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads),
           T(sph_integrators_free_fall), T(sph_collider_response), T(sph_moving_lid_holds_fluid), T(sph_wall_motion_rigid), T(sph_heat_internal_conserves), T(sph_heat_conduction_converges), T(sph_adaptive_h),
           T(sph_surface_tension_rounds_drop), T(sph_bubble_cooling_contracts), T(sph_solver_table),
           T(sph_viscosity_rule), T(sph_porosity_supplied), T(sph_refuses_saturation), T(sph_alloc_failure_paths),
