@@ -17,7 +17,9 @@
 typedef struct sph_wall_motion {
     int body;
     double vel[3], omega[3]; /* this step's (m/s, rad/s) */
-    double pivot[3];         /* the rotation centre now (m) */
+    double pivot[3];         /* the rotation centre at the scene's time (m) */
+    double pending[3];       /* the pivot's move over the last step, applied once it stands (t == t_pending) */
+    double t_pending;        /* that step's end time; NAN when none is pending */
     hearth_motion_fn motion; /* optional; not owned */
     void *motion_ud;
 } sph_wall_motion;
@@ -94,7 +96,8 @@ double sph_wall_beta(const double d[3], const double n[3], double da, double dah
 /// particle's velocity, its body's prescribed motion at time t or 0.
 void sph_walls_begin(hearth_scene *s, double t);
 /// At the end of a step: moving fixed bodies move rigidly over dt (exact for
-/// constant velocity and omega); their pivots follow.
+/// constant velocity and omega); their pivots follow once the step stands
+/// (a rolled-back step restores the particles, and its pivot move is dropped).
 void sph_walls_end(hearth_scene *s, double dt);
 /// Release the motion records (with the state).
 void sph_walls_free(struct sph_state *st);

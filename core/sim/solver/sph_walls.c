@@ -97,6 +97,11 @@ void sph_walls_begin(hearth_scene *s, double t) {
     if (!(ps->enabled & (1u << PC_FLAGS))) return;
     for (int k = 0; k < st->nwalls; k++) {
         sph_wall_motion *w = &st->walls[k];
+        /* the last step's pivot move, if that step stood (the scene's time moved on to its end); a
+         * rollback restarts at the step's start time, and the particles are back where they were */
+        if (w->t_pending == t)
+            for (int a = 0; a < 3; a++) w->pivot[a] += w->pending[a];
+        w->t_pending = NAN;
         if (!w->motion) continue;
         double v[3] = {0, 0, 0}, o[3] = {0, 0, 0};
         w->motion(w->motion_ud, t, v, o);
@@ -154,8 +159,11 @@ void sph_walls_end(hearth_scene *s, double dt) {
         rotate(w->omega, dt, r, q);
         for (int a = 0; a < dim; a++) x[3 * i + a] = w->pivot[a] + q[a] + dt * w->vel[a];
     }
-    for (int k = 0; k < st->nwalls; k++)
-        for (int a = 0; a < dim; a++) st->walls[k].pivot[a] += dt * st->walls[k].vel[a];
+    for (int k = 0; k < st->nwalls; k++) {
+        sph_wall_motion *w = &st->walls[k];
+        for (int a = 0; a < 3; a++) w->pending[a] = a < dim ? dt * w->vel[a] : 0.0;
+        w->t_pending = s->t + dt; /* scene.c's s->t += dt when the step stands */
+    }
 }
 
 void sph_walls_free(struct sph_state *st) {
@@ -211,6 +219,7 @@ hearth_status hearth_scene_body_motion(hearth_scene *s, int body, const double v
     }
     memset(w, 0, sizeof *w);
     w->body = body;
+    w->t_pending = NAN;
     if (velocity) memcpy(w->vel, velocity, sizeof w->vel);
     if (omega) memcpy(w->omega, omega, sizeof w->omega);
     if (pivot) memcpy(w->pivot, pivot, sizeof w->pivot);
