@@ -1476,12 +1476,21 @@ TEST(sph_alloc_failure_paths) {
         hearth_shape *b = hearth_shape_box(c, h);
         ok = ok && b && hearth_scene_seed_shape(s, m, b, 1, 0.0, NULL, &err) > 0;
         hearth_shape_free(b);
+        /* a moving wall under the block: its motion record is allocated too */
+        const double wc[3] = {0.1, 0.02, 0}, wh[3] = {0.08, 0.015, 0}, U[3] = {0.01, 0, 0};
+        hearth_shape *wb = ok ? hearth_shape_box(wc, wh) : NULL;
+        const int shape_nomem = !b || (ok && !wb); /* a shape's allocation has no error to report */
+        hearth_body_def bd = hearth_default_body_def();
+        bd.shape = wb, bd.material = m, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1;
+        const int wall = ok && wb ? hearth_scene_add_body(s, &bd, &err) : -1;
+        hearth_shape_free(wb);
+        ok = ok && wb && wall >= 0 && hearth_scene_body_motion(s, wall, U, NULL, NULL, NULL, NULL, &err) == HEARTH_OK;
         ok = ok && hearth_scene_step(s, 2, &err) == HEARTH_OK;
         mem_fail_after(-1);
         if (!ok) {
             failures++;
-            if (!(err.code == HEARTH_ERR_NOMEM || b == NULL)) fprintf(stderr, "  failure %ld: %s\n", k, err.msg);
-            CHECK(err.code == HEARTH_ERR_NOMEM || b == NULL);
+            if (!(err.code == HEARTH_ERR_NOMEM || shape_nomem)) fprintf(stderr, "  failure %ld: %s\n", k, err.msg);
+            CHECK(err.code == HEARTH_ERR_NOMEM || shape_nomem);
         }
         hearth_scene_destroy(s);
         if (hearth_bytes_allocated() > base + 4096) /* the plugin cache may keep its first entry */

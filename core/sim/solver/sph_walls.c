@@ -190,9 +190,10 @@ hearth_status hearth_scene_body_motion(hearth_scene *s, int body, const double v
     if (body < 0 || body >= s->nbodies)
         return err_set(err, HEARTH_ERR_PARAM, "body motion: body %d does not exist (the scene has %d)", body, s->nbodies);
     const particles *ps = &s->ps;
+    /* the body's fixed particles (particles seeded without a body read body 0 too, and stay free) */
     int fixed = 0, any = 0;
     if (ps->enabled & (1u << PC_BODY))
-        for (int i = 0; i < ps->n && !any; i++)
+        for (int i = 0; i < ps->n && !fixed; i++)
             if (pcoli(ps, PC_BODY)[i] == body) {
                 any = 1;
                 fixed = ps->enabled & (1u << PC_FLAGS) && (pcoli(ps, PC_FLAGS)[i] & PF_FIXED);
