@@ -2,6 +2,8 @@
  * the thesis's).
  *
  * Order of a step (sph_step, one static function per phase):
+ *   sph_walls_begin      fixed particles take their body's prescribed
+ *                        velocity, or 0 (sph_walls.c)
  *   phase_predrift       (leapfrog: drift half a step); periodic wrap
  *   phase_neighbours     sort particles by cell, neighbour lists (sph_neighbours.c)
  *   phase_density        density by summation (3.13); Sigalotti adaptive h
@@ -24,6 +26,7 @@
  *   phase_xsph           XSPH (3.34 with the tuner of 4.4)
  *   phase_drift          drift (3.57-3.58), colliders and walls with the
  *                        thesis's response (3.31-3.33)
+ *   sph_walls_end        moving fixed bodies move rigidly (sph_walls.c)
  *   phase_browning       browning value (4.5-4.6)
  * Every particle writes only its own slots and sums its neighbours in list
  * order, so a step is deterministic for any thread count. The step's helpers
@@ -49,7 +52,8 @@
  * outward); the external heat flows toward the outside temperature (the thesis
  * prints T_i - T_ext); XSPH epsilon is at most 1 (Table 4.1's 5 overshoots;
  * the text of §4.3 uses 0.5); fixed particles are no-slip walls in eq. 3.19
- * (Morris et al. 1997), their drag taken implicitly in the kick; eq. 3.19's
+ * (Morris et al. 1997), their drag taken implicitly in the kick, and a fixed
+ * body may move rigidly (a lid, a paddle: sph_walls.c); eq. 3.19's
  * Laplacian (the kernel of eq. 3.8) is renormalised per particle by its
  * discrete second moment (sph_viscous_moments). Eq. 3.8 summed over a resting
  * lattice is 5.7% stronger than its integral at h = 2.4 spacings (3.8% with
