@@ -306,6 +306,7 @@ typedef struct hl_motion {
     lua_State *L;
     int vref, oref;   /* registry refs of velocity(t) and omega(t), or LUA_NOREF */
     int failed;
+    const char *what; /* whose motion, for messages: "collider" (NULL) or "body" */
     char msg[512];
 } hl_motion;
 
@@ -317,7 +318,7 @@ static void call_vec(hl_motion *m, int ref, double t, double out[3], int scalar_
     lua_pushnumber(L, t);
     if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
         m->failed = 1;
-        snprintf(m->msg, sizeof m->msg, "collider motion function: %s", lua_tostring(L, -1));
+        snprintf(m->msg, sizeof m->msg, "%s motion function: %s", m->what ? m->what : "collider", lua_tostring(L, -1));
     } else if (lua_isnumber(L, -1) && scalar_is_z) {
         out[2] = lua_tonumber(L, -1); /* a 2D spin: omega about z */
     } else if (lua_istable(L, -1)) {
@@ -328,8 +329,8 @@ static void call_vec(hl_motion *m, int ref, double t, double out[3], int scalar_
         }
     } else {
         m->failed = 1;
-        snprintf(m->msg, sizeof m->msg, "collider motion function at t = %g returned %s; expected a vector%s", t,
-                 luaL_typename(L, -1), scalar_is_z ? " or a number" : "");
+        snprintf(m->msg, sizeof m->msg, "%s motion function at t = %g returned %s; expected a vector%s",
+                 m->what ? m->what : "collider", t, luaL_typename(L, -1), scalar_is_z ? " or a number" : "");
     }
     lua_pop(L, 1);
 }
@@ -425,6 +426,48 @@ static int l_collider(lua_State *L) {
     motion_check(L);
     lua_pushinteger(L, id);
     return 1;
+}
+
+/* s:_body_motion(body, velocity (vec|fn|nil), omega (num|vec|fn|nil), pivot|nil): a fixed body's
+ * prescribed motion (SPH walls and lids), spelt as a collider's; functions go through the same
+ * motion record, kept and checked the same way. */
+static int l_body_motion(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const int body = (int)luaL_checkinteger(L, 2);
+    double v[3] = {0, 0, 0}, w[3] = {0, 0, 0}, p[3] = {0, 0, 0};
+    const int vfn = lua_isfunction(L, 3), ofn = lua_isfunction(L, 4);
+    if (!vfn && !lua_isnoneornil(L, 3)) hl_checkvec(L, 3, "body velocity", v);
+    if (!ofn && lua_isnumber(L, 4)) w[2] = lua_tonumber(L, 4);
+    else if (!ofn && !lua_isnoneornil(L, 4)) hl_checkvec(L, 4, "body omega", w);
+    if (!lua_isnoneornil(L, 5)) hl_checkvec(L, 5, "body pivot", p);
+    hearth_motion_fn fn = NULL;
+    hl_motion *m = NULL;
+    if (vfn || ofn) {
+        m = lua_newuserdatauv(L, sizeof *m, 0);
+        memset(m, 0, sizeof *m);
+        m->L = L;
+        m->what = "body";
+        m->vref = m->oref = LUA_NOREF;
+        if (luaL_newmetatable(L, "hearth.motion")) {
+            lua_pushcfunction(L, l_motion_gc);
+            lua_setfield(L, -2, "__gc");
+        }
+        lua_setmetatable(L, -2);
+        if (vfn) {
+            lua_pushvalue(L, 3);
+            m->vref = luaL_ref(L, LUA_REGISTRYINDEX);
+        }
+        if (ofn) {
+            lua_pushvalue(L, 4);
+            m->oref = luaL_ref(L, LUA_REGISTRYINDEX);
+        }
+        keep_motion(L);
+        fn = motion_cb;
+    }
+    hearth_error err;
+    if (hearth_scene_body_motion(u->s, body, v, w, p, fn, m, &err)) return hl_raise(L, &err);
+    motion_check(L);
+    return 0;
 }
 
 /* Gravity from a Lua function of time, called by the core once a step (outside
@@ -820,7 +863,7 @@ void hl_open_scene(lua_State *L) {
         {"_collider", l_collider}, {"_advance", l_advance}, {"_step", l_step_raw},     {"push", l_push},
         {"cut", l_cut},          {"move", l_move},         {"collider_velocity", l_collider_velocity},
         {"set_dt", l_set_dt}, {"settings", l_settings},    {"oven", l_oven},    {"probe", l_probe},       {"line", l_line},          {"_slice", l_slice},
-        {"stats", l_stats},      {"_time", l_time},      {"body_particles", l_body_particles}, {"hash", l_hash},
+        {"stats", l_stats},      {"_time", l_time},      {"body_particles", l_body_particles}, {"hash", l_hash}, {"_body_motion", l_body_motion},
         {"positions", l_positions}, {"_particle_field", l_particle_field}, {"_gravity", l_gravity}, {"volume", l_volume}, {"material_params", l_material_params}, {NULL, NULL}};
     luaL_newmetatable(L, HL_SCENE);
     lua_pushcfunction(L, l_gc);

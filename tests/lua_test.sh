@@ -405,6 +405,11 @@ lua_sph_library)
     out=$("$hearth" run "$scenes/sph_library.lua" --quiet 2>&1) || fail "sph_library.lua: $out"
     echo "$out" | grep -q "sph library ok" || fail "sph_library.lua did not finish: $out"
     ;;
+lua_sph_moving_lid)
+    out=$("$hearth" run "$scenes/sph_moving_lid.lua" --quiet 2>&1) || fail "sph_moving_lid.lua: $out"
+    echo "$out" | grep -q "sph moving lid ok" || fail "sph_moving_lid.lua did not finish: $out"
+    echo "$out"
+    ;;
 lua_blend_modes)
     out=$("$hearth" run "$scenes/blend_modes.lua" --quiet 2>&1) || fail "blend_modes.lua: $out"
     echo "$out" | grep -q "blend modes ok" || fail "blend_modes.lua did not finish: $out"

@@ -264,7 +264,29 @@ static double startup_series(double f, double nu, double L, double y, double t) 
  * (positive: slow). Returns 0, or -1 if a step failed or a velocity is not
  * finite. The peak of the steady profile, f L^2 / (8 nu), is 5 mm/s at any
  * eta. */
+/* The start-up of plane Couette flow from rest: the lid at y = L slides at U
+ * from t = 0, the floor at y = 0 stays: the steady line less its sine
+ * modes, each decaying at its own rate. */
+static double couette_series(double U, double nu, double L, double y, double t) {
+    double u = U * y / L;
+    for (int k = 1; k < 4000; k++) {
+        const double e = exp(-k * k * SPH_PI * SPH_PI * nu * t / (L * L));
+        if (e < 1e-18) break;
+        u -= 2 * U / (k * SPH_PI) * (k % 2 ? 1.0 : -1.0) * sin(k * SPH_PI * y / L) * e;
+    }
+    return u;
+}
+
+/* As channel below, with the body force f or (lid > 0) with no force and the
+ * top wall moving at lid m/s along x (hearth_scene_body_motion), measured
+ * against the Couette start-up as a fraction of the lid speed. */
+static int channel_lid(int N, double eta, double lid, const double *ts, int nt, double *err, double *slow, int debug);
+
 static int channel(int N, double eta, const double *ts, int nt, double *err, double *slow, int debug) {
+    return channel_lid(N, eta, 0, ts, nt, err, slow, debug);
+}
+
+static int channel_lid(int N, double eta, double lid, const double *ts, int nt, double *err, double *slow, int debug) {
     const double L = 0.02, dx = L / N, w = 3 * dx, lo[3] = {0, 0, 0}, hi[3] = {12 * dx, L + 2 * w, 0};
     hearth_scene_def d = sph_def(2, dx, lo, hi);
     d.gravity[1] = 0;
@@ -272,11 +294,16 @@ static int channel(int N, double eta, const double *ts, int nt, double *err, dou
     hearth_scene *s = hearth_scene_create(&d, NULL);
     if (!s) return -1;
     const double rho = 1000, nu = eta / rho;
-    double f = 0.1 * eta;
+    double f = lid > 0 ? 0.0 : 0.1 * eta;
     int m = newtonian(s, rho, 1e3, eta);
-    int ok = box_body(s, m, 0, 0, hi[0], w, 1, NAN) >= 0 && box_body(s, m, 0, L + w, hi[0], hi[1], 1, NAN) >= 0 &&
-             box_body(s, m, 0, w, hi[0], L + w, 0, NAN) >= 0;
-    hearth_scene_set_body_force(s, push_x, &f);
+    const int top = box_body(s, m, 0, L + w, hi[0], hi[1], 1, NAN);
+    int ok = box_body(s, m, 0, 0, hi[0], w, 1, NAN) >= 0 && top >= 0 && box_body(s, m, 0, w, hi[0], L + w, 0, NAN) >= 0;
+    if (lid > 0) {
+        const double U[3] = {lid, 0, 0};
+        hearth_error e;
+        ok = ok && hearth_scene_body_motion(s, top, U, NULL, NULL, NULL, NULL, &e) == HEARTH_OK;
+    } else
+        hearth_scene_set_body_force(s, push_x, &f);
     int rcode = ok ? 0 : -1;
     for (int k = 0; k < nt && !rcode; k++) {
         hearth_error e;
@@ -288,11 +315,12 @@ static int channel(int N, double eta, const double *ts, int nt, double *err, dou
         }
         const double *x = hearth_scene_positions(s), *v = pcold(&s->ps, PC_V);
         const int *flags = pcoli(&s->ps, PC_FLAGS);
-        const double uc = startup_series(f, nu, L, 0.5 * L, s->t);
+        const double uc = lid > 0 ? lid : startup_series(f, nu, L, 0.5 * L, s->t);
         double worst = 0, su = 0, sw = 0;
         for (int i = 0; i < hearth_scene_particle_count(s); i++) {
             if (flags[i] & PF_FIXED) continue;
-            const double y = x[3 * i + 1] - w, want = startup_series(f, nu, L, y, s->t);
+            const double y = x[3 * i + 1] - w;
+            const double want = lid > 0 ? couette_series(lid, nu, L, y, s->t) : startup_series(f, nu, L, y, s->t);
             if (!isfinite(v[3 * i])) rcode = -1;
             worst = fmax(worst, fabs(v[3 * i] - want));
             su += v[3 * i], sw += want;
@@ -321,8 +349,8 @@ static double poiseuille(double eta, double tend_viscous, int debug) { return po
 
 /* The steady profile u(y) = f / (2 nu) y (L - y) within 3% of the peak.
  * Measured 0.58% (0.56% fast on average) with Morris et al.'s no-slip wall
- * velocities (sph.c, wall_frame) and eq. 3.8 renormalised by its second
- * moment (viscous_moments); 2.2% (1.9% slow) before the renormalisation,
+ * velocities (sph_walls.c, sph_wall_frame) and eq. 3.8 renormalised by its second
+ * moment (sph_viscous_moments); 2.2% (1.9% slow) before the renormalisation,
  * when the moment over rows sliding past each other was 3.8% above the
  * integral at h = 2.4 spacings; 12.6% with wall particles at rest in eq.
  * 3.19 (slip). */
@@ -385,6 +413,35 @@ TEST(sph_poiseuille_converges) {
     CHECK(order >= 1.0);
 }
 
+/* A creeping Couette start-up driven by a moving fixed-particle lid
+ * (hearth_scene_body_motion: the top wall slides at 5 mm/s along x; 1e4 Pa s,
+ * so the particles stay on their lattice) at 10 and 20 particles across: at
+ * t = 0.05, 0.2 and 0.5 L^2 / nu the worst error against the start-up series,
+ * as a fraction of the lid speed, shrinks at an observed order of at least 1
+ * and is under 1% at 20 across. Before walls could move the lid stood still
+ * and the fluid never started (error 100% of the lid speed at both). */
+TEST(sph_couette_moving_lid_converges) {
+    const double ts[] = {0.05, 0.2, 0.5};
+    const int Ns[] = {10, 20};
+    double E[2] = {NAN, NAN};
+    for (int r = 0; r < 2; r++) {
+        double err[3], slow[3];
+        CHECK(channel_lid(Ns[r], 1e4, 5e-3, ts, 3, err, slow, getenv("SPH_DEBUG") != NULL) == 0);
+        E[r] = 0;
+        for (int k = 0; k < 3; k++) {
+            printf("couette start-up, %d across, t = %.2f L^2/nu: worst error %.3f%% of the lid speed, mean %.3f%% slow\n",
+                   Ns[r], ts[k], 100 * err[k], 100 * slow[k]);
+            E[r] = fmax(E[r], err[k]);
+        }
+    }
+    const double order = log(E[0] / E[1]) / log(2.0);
+    printf("couette start-up: worst error %.3f%% (10 across), %.3f%% (20 across), observed order %.2f\n", 100 * E[0],
+           100 * E[1], order);
+    CHECK(E[1] < E[0]);
+    CHECK(order >= 1.0);
+    CHECK(E[1] < 0.01);
+}
+
 /* The ladders behind the two tests above, longer:
  * scripts/validation/sph_viscosity_ladder.sh runs this case with
  * SPH_LADDER="10 20 40 80" (particles across; default "10 20", so running
@@ -422,6 +479,58 @@ TEST(sph_viscosity_ladder) {
                100 * sl, o2);
         fflush(stdout);
         if (r) CHECK(Es[r] < Es[r - 1]);
+    }
+}
+
+static int slab_conduction(int N, double *err, double *rate); /* below, with its test */
+
+/* A rung list from an environment variable ("10 20 40"), or def. */
+static int ladder_env(const char *name, const char *def, int *Ns, int cap) {
+    const char *env = getenv(name);
+    int nN = 0;
+    for (const char *p = env ? env : def; *p && nN < cap;) {
+        char *end;
+        const long v = strtol(p, &end, 10);
+        if (end == p) break;
+        if (v >= 4 && v <= 400) Ns[nN++] = (int)v;
+        p = end;
+    }
+    return nN;
+}
+
+/* The ladders behind sph_couette_moving_lid_converges and
+ * sph_heat_conduction_converges, longer: scripts/validation/sph_walls_ladder.sh
+ * runs this case with SPH_LADDER (particles across the Couette layer; default
+ * "10 20") and SPH_HEAT_LADDER (particles along the slab's wave; default
+ * "12 24"). Not a meson test of its own: the two above check its first rungs.
+ * Each error must shrink from one rung to the next. */
+TEST(sph_walls_ladder) {
+    int Ns[8], Hs[8];
+    const int nN = ladder_env("SPH_LADDER", "10 20", Ns, 8), nH = ladder_env("SPH_HEAT_LADDER", "12 24", Hs, 8);
+    CHECK(nN >= 2 && nH >= 2);
+    const double ts[] = {0.05, 0.2, 0.5};
+    double Es[8];
+    printf("moving-lid Couette start-up (1e4 Pa s, lid 5 mm/s)\n%6s %14s %14s %14s %8s\n", "across", "worst % of U",
+           "at 0.2 L^2/nu", "at 0.5 L^2/nu", "order");
+    for (int r = 0; r < nN; r++) {
+        double err[3], slow[3];
+        CHECK(channel_lid(Ns[r], 1e4, 5e-3, ts, 3, err, slow, 0) == 0);
+        Es[r] = fmax(err[0], fmax(err[1], err[2]));
+        const double o = r ? log(Es[r - 1] / Es[r]) / log((double)Ns[r] / Ns[r - 1]) : NAN;
+        printf("%6d %14.4f %14.4f %14.4f %8.2f\n", Ns[r], 100 * Es[r], 100 * err[1], 100 * err[2], o);
+        fflush(stdout);
+        if (r) CHECK(Es[r] < Es[r - 1]);
+    }
+    double Hh[8];
+    printf("slab conduction (eq. 3.45-3.46, one e-fold)\n%6s %14s %14s %8s\n", "along", "worst % of A", "rate / D k^2",
+           "order");
+    for (int r = 0; r < nH; r++) {
+        double rate = NAN;
+        CHECK(slab_conduction(Hs[r], &Hh[r], &rate) == 0);
+        const double o = r ? log(Hh[r - 1] / Hh[r]) / log((double)Hs[r] / Hs[r - 1]) : NAN;
+        printf("%6d %14.4f %14.5f %8.2f\n", Hs[r], 100 * Hh[r], rate, o);
+        fflush(stdout);
+        if (r) CHECK(Hh[r] < Hh[r - 1]);
     }
 }
 
@@ -838,6 +947,144 @@ TEST(sph_integrators_free_fall) {
     }
 }
 
+/* A paddle of fixed particles (hearth_scene_body_motion) sweeps through a
+ * pool at 0.1 m/s (1% of the sound speed) for 2 cm, 5 spacings: no fluid
+ * particle passes through it. Each fluid particle that started ahead of the
+ * paddle (right of its front face) is still ahead at the end, and none lies
+ * inside the paddle's three layers; the paddle kept its shape. */
+TEST(sph_moving_lid_holds_fluid) {
+    const double dx = 0.004, lo[3] = {0, 0, 0}, hi[3] = {0.24, 0.1, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    CHECK(s != NULL);
+    if (!s) return;
+    const int m = newtonian(s, 1000, 1e5, 1.0);
+    CHECK(box_body(s, m, 0, 0, hi[0], 3 * dx, 1, NAN) >= 0); /* floor */
+    const double px0 = 0.06, px1 = px0 + 3 * dx;
+    const int paddle = box_body(s, m, px0, 3 * dx, px1, 0.09, 1, NAN);
+    CHECK(paddle >= 0);
+    CHECK(box_body(s, m, 0, 3 * dx, px0, 0.05, 0, NAN) >= 0);
+    CHECK(box_body(s, m, px1, 3 * dx, hi[0], 0.05, 0, NAN) >= 0);
+    const double U[3] = {0.1, 0, 0};
+    hearth_error err;
+    CHECK(hearth_scene_body_motion(s, paddle, U, NULL, NULL, NULL, NULL, &err) == HEARTH_OK);
+    const int n = hearth_scene_particle_count(s);
+    int *ahead = calloc((size_t)n, sizeof *ahead);
+    CHECK(ahead != NULL);
+    if (!ahead) return;
+    const double *x = hearth_scene_positions(s);
+    const int *id = pcoli(&s->ps, PC_ID), *flags = pcoli(&s->ps, PC_FLAGS);
+    for (int i = 0; i < n; i++) ahead[id[i]] = !(flags[i] & PF_FIXED) && x[3 * i] > px1;
+    CHECK(hearth_scene_advance(s, 0.2, &err) == HEARTH_OK);
+    x = hearth_scene_positions(s);
+    id = pcoli(&s->ps, PC_ID), flags = pcoli(&s->ps, PC_FLAGS);
+    const int *body = pcoli(&s->ps, PC_BODY);
+    double pmin = INFINITY, pmax = -INFINITY;
+    for (int i = 0; i < n; i++)
+        if (body[i] == paddle) pmin = fmin(pmin, x[3 * i]), pmax = fmax(pmax, x[3 * i]);
+    int behind = 0, inside = 0, nahead = 0;
+    double worst = INFINITY;
+    for (int i = 0; i < n; i++) {
+        if (flags[i] & PF_FIXED) continue;
+        const double xi = x[3 * i], yi = x[3 * i + 1];
+        if (ahead[id[i]]) {
+            nahead++;
+            behind += xi < pmax + 0.5 * dx;
+            worst = fmin(worst, xi - pmax);
+        }
+        inside += yi > 3 * dx && yi < 0.09 && xi > pmin - 0.25 * dx && xi < pmax + 0.25 * dx;
+    }
+    hearth_stats st;
+    hearth_scene_stats(s, &st);
+    printf("paddle moved %.4f m (want %.4f), width %.6f m (want %.6f); %d fluid particles ahead, %d fell behind its "
+           "face, %d inside it; closest ahead %.3f spacings from its last layer; guard %d\n",
+           pmin - (px0 + 0.5 * dx), 0.1 * s->t, pmax - pmin, 2 * dx, nahead, behind, inside, worst / dx, st.guard);
+    CHECK_NEAR(pmin - (px0 + 0.5 * dx), 0.1 * s->t, 1e-9);
+    CHECK_NEAR(pmax - pmin, 2 * dx, 1e-12);
+    CHECK(nahead > 100);
+    CHECK(behind == 0);
+    CHECK(inside == 0);
+    free(ahead);
+    hearth_scene_destroy(s);
+}
+
+/* One run of sph_wall_motion_rigid's wheel: with cfl 4 and the rollback
+ * policy every step is first refused by the guard (CFL) and retried at half
+ * dt, so the pivot's move of a refused step must be dropped. Returns the
+ * rollbacks, or -1 when a check failed. */
+static int spin_wheel(double cfl, int check_errors) {
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.2, 0.2, 0}, dx = 0.005;
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[1] = 0;
+    d.cfl = cfl;
+    d.guard = HEARTH_GUARD_ROLLBACK;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    if (!s) return -1;
+    const int m = newtonian(s, 1000, 1e4, 0.1);
+    const double c0[3] = {0.1, 0.1, 0};
+    hearth_shape *disc = hearth_shape_sphere(c0, 0.03);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = disc, bd.material = m, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1;
+    hearth_error err;
+    const int wheel = hearth_scene_add_body(s, &bd, &err);
+    hearth_shape_free(disc);
+    const int free_body = box_body(s, m, 0.01, 0.01, 0.04, 0.04, 0, NAN);
+    int ok = wheel >= 0 && free_body >= 0;
+    const double V[3] = {0.02, -0.01, 0}, W[3] = {0, 0, 3.0}, bad[3] = {NAN, 0, 0};
+    if (check_errors) {
+        ok = ok && hearth_scene_body_motion(s, free_body, V, NULL, NULL, NULL, NULL, &err) == HEARTH_ERR_PARAM;
+        printf("free body: %s\n", err.msg);
+        ok = ok && strstr(err.msg, "not fixed") != NULL;
+        ok = ok && hearth_scene_body_motion(s, 7, V, NULL, NULL, NULL, NULL, &err) == HEARTH_ERR_PARAM;
+        ok = ok && strstr(err.msg, "does not exist") != NULL;
+        ok = ok && hearth_scene_body_motion(s, wheel, bad, NULL, NULL, NULL, NULL, &err) == HEARTH_ERR_PARAM;
+        ok = ok && strstr(err.msg, "velocity") != NULL;
+    }
+    ok = ok && hearth_scene_body_motion(s, wheel, V, W, c0, NULL, NULL, &err) == HEARTH_OK;
+    const int n = hearth_scene_particle_count(s);
+    const double *x = hearth_scene_positions(s);
+    const int *body = pcoli(&s->ps, PC_BODY);
+    double r0 = 0;
+    for (int i = 0; i < n; i++)
+        if (body[i] == wheel) r0 += hypot(x[3 * i] - c0[0], x[3 * i + 1] - c0[1]);
+    ok = ok && hearth_scene_step(s, 40, &err) == HEARTH_OK;
+    x = hearth_scene_positions(s);
+    body = pcoli(&s->ps, PC_BODY);
+    const double c1[2] = {c0[0] + V[0] * s->t, c0[1] + V[1] * s->t};
+    double r1 = 0, xs = 0;
+    int k = 0;
+    for (int i = 0; i < n; i++)
+        if (body[i] == wheel) r1 += hypot(x[3 * i] - c1[0], x[3 * i + 1] - c1[1]), xs += x[3 * i], k++;
+    hearth_stats st;
+    hearth_scene_stats(s, &st);
+    printf("spinning wheel, cfl %g: mean radius %.12f -> %.12f m, centre x %.9f (want %.9f) after %.4f s, %d rollbacks\n",
+           cfl, r0 / k, r1 / k, xs / k, c1[0], s->t, st.rollbacks);
+    ok = ok && fabs(r1 / k - r0 / k) < 1e-12 && fabs(xs / k - c1[0]) < 1e-9;
+    hearth_scene_destroy(s);
+    return ok ? st.rollbacks : -1;
+}
+
+/* A fixed body's motion: a disc spun about its centre while its centre
+ * translates keeps every particle's distance to the moving centre (the
+ * rigid motion is exact), also when the guard rolls steps back (cfl 4);
+ * the API refuses a free body, a missing body, non-finite values and the
+ * MPM solver, each with a message naming it. */
+TEST(sph_wall_motion_rigid) {
+    CHECK(spin_wheel(0.3, 1) == 0);
+    CHECK(spin_wheel(4.0, 0) > 0);
+    const double V[3] = {0.02, -0.01, 0};
+    hearth_error err;
+    hearth_scene_def dm = hearth_default_scene_def();
+    dm.dim = 2;
+    hearth_scene *mp = hearth_scene_create(&dm, NULL);
+    CHECK(mp != NULL);
+    if (!mp) return;
+    CHECK(hearth_scene_body_motion(mp, 0, V, NULL, NULL, NULL, NULL, &err) == HEARTH_ERR_PARAM);
+    printf("MPM: %s\n", err.msg);
+    CHECK(strstr(err.msg, "collider") != NULL);
+    hearth_scene_destroy(mp);
+}
+
 /* Collider response (eq. 3.31-3.33): a particle hitting a plane keeps beta_c
  * of its tangential velocity and leaves with alpha_c of its normal speed. */
 TEST(sph_collider_response) {
@@ -900,6 +1147,71 @@ TEST(sph_heat_internal_conserves) {
     CHECK_NEAR(E1, E0, 1e-12 * E0);
     CHECK(hot / nh - cold / nc < 0.9 * dT0 && hot / nh > cold / nc);
     hearth_scene_destroy(s);
+}
+
+/* Slab conduction by eq. 3.45-3.46 on a resting lattice: a pinned block,
+ * periodic along both axes (L = 0.1 m long, 8 particles deep, N particles
+ * along x), starts at T = 50 + 30 cos(2 pi x / L) degC. With D = heat_int /
+ * rho the series is one term: the amplitude decays as exp(-D k^2 t). At
+ * t = 1 / (D k^2) (one e-fold) err is the worst |T - T_series| over the
+ * particles as a fraction of the initial amplitude and rate the decay rate
+ * of the fitted amplitude over D k^2 (1 exact). dt is held at 0.01 h^2 / D
+ * (a tenth of the heat limit), so explicit Euler's own error, second order
+ * too, stays below 0.3%. Returns 0, or -1 when a step failed. */
+static int slab_conduction(int N, double *err, double *rate) {
+    const double L = 0.1, dx = L / N, lo[3] = {0, 0, 0}, hi[3] = {L, 8 * dx, 0}, rho = 1000, D = 1e-2;
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[1] = 0;
+    d.sph.periodic[0] = d.sph.periodic[1] = 1;
+    d.sph.heat_int = D * rho;
+    d.dt_max = 0.01 * (d.sph.h_factor * dx) * (d.sph.h_factor * dx) / D;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    if (!s) return -1;
+    const int m = newtonian(s, rho, 1e4, 0);
+    int rc = box_body(s, m, 0, 0, hi[0], hi[1], 1, 50) >= 0 ? 0 : -1;
+    const double k = 2 * SPH_PI / L, A = 30, t = 1 / (D * k * k);
+    const int n = hearth_scene_particle_count(s);
+    const double *x = hearth_scene_positions(s);
+    double *T = pcold(&s->ps, PC_TEMPERATURE);
+    for (int i = 0; i < n && !rc; i++) T[i] = 50 + A * cos(k * x[3 * i]);
+    hearth_error e;
+    if (!rc && hearth_scene_advance(s, t, &e)) {
+        fprintf(stderr, "%s\n", e.msg);
+        rc = -1;
+    }
+    x = hearth_scene_positions(s);
+    T = pcold(&s->ps, PC_TEMPERATURE);
+    const double want = A * exp(-D * k * k * s->t);
+    double worst = 0, sc = 0, cc = 0;
+    for (int i = 0; i < n && !rc; i++) {
+        const double cs = cos(k * x[3 * i]);
+        if (!isfinite(T[i])) rc = -1;
+        worst = fmax(worst, fabs(T[i] - 50 - want * cs));
+        sc += (T[i] - 50) * cs, cc += cs * cs;
+    }
+    *err = worst / A;
+    *rate = log(A / (sc / cc)) / (D * k * k * s->t);
+    hearth_scene_destroy(s);
+    return rc;
+}
+
+/* The slab of slab_conduction converges to its series at 20, 40 and 80
+ * particles along the wave: the worst error shrinks at an observed order of
+ * at least 1 at each step and the decay rate comes within 1% of D k^2. */
+TEST(sph_heat_conduction_converges) {
+    const int Ns[] = {12, 24, 48};
+    double E[3], R[3];
+    for (int r = 0; r < 3; r++) {
+        CHECK(slab_conduction(Ns[r], &E[r], &R[r]) == 0);
+        printf("slab conduction, %d along: worst error %.3f%% of the amplitude, decay rate %.4f of D k^2\n", Ns[r],
+               100 * E[r], R[r]);
+    }
+    for (int r = 1; r < 3; r++) {
+        const double order = log(E[r - 1] / E[r]) / log(2.0);
+        printf("slab conduction: %d -> %d along, observed order %.2f\n", Ns[r - 1], Ns[r], order);
+        CHECK(order >= 1.0);
+    }
+    CHECK(fabs(R[2] - 1) < 0.01);
 }
 
 /* Sigalotti's adaptive h (eq. 3.54-3.55): in a pinned block, a corner
@@ -1164,12 +1476,21 @@ TEST(sph_alloc_failure_paths) {
         hearth_shape *b = hearth_shape_box(c, h);
         ok = ok && b && hearth_scene_seed_shape(s, m, b, 1, 0.0, NULL, &err) > 0;
         hearth_shape_free(b);
+        /* a moving wall under the block: its motion record is allocated too */
+        const double wc[3] = {0.1, 0.02, 0}, wh[3] = {0.08, 0.015, 0}, U[3] = {0.01, 0, 0};
+        hearth_shape *wb = ok ? hearth_shape_box(wc, wh) : NULL;
+        const int shape_nomem = !b || (ok && !wb); /* a shape's allocation has no error to report */
+        hearth_body_def bd = hearth_default_body_def();
+        bd.shape = wb, bd.material = m, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1;
+        const int wall = ok && wb ? hearth_scene_add_body(s, &bd, &err) : -1;
+        hearth_shape_free(wb);
+        ok = ok && wb && wall >= 0 && hearth_scene_body_motion(s, wall, U, NULL, NULL, NULL, NULL, &err) == HEARTH_OK;
         ok = ok && hearth_scene_step(s, 2, &err) == HEARTH_OK;
         mem_fail_after(-1);
         if (!ok) {
             failures++;
-            if (!(err.code == HEARTH_ERR_NOMEM || b == NULL)) fprintf(stderr, "  failure %ld: %s\n", k, err.msg);
-            CHECK(err.code == HEARTH_ERR_NOMEM || b == NULL);
+            if (!(err.code == HEARTH_ERR_NOMEM || shape_nomem)) fprintf(stderr, "  failure %ld: %s\n", k, err.msg);
+            CHECK(err.code == HEARTH_ERR_NOMEM || shape_nomem);
         }
         hearth_scene_destroy(s);
         if (hearth_bytes_allocated() > base + 4096) /* the plugin cache may keep its first entry */
@@ -1213,8 +1534,8 @@ TEST(sph_keeps_no_grid_tables) {
 }
 
 TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_neighbours_agree), T(sph_hydrostatic),
-          T(sph_poiseuille), T(sph_wall_drag_stable), T(sph_creeping_startup_converges), T(sph_poiseuille_converges), T(sph_viscosity_ladder), T(sph_artificial_stress_fluid), T(sph_artificial_stress_elastic), T(sph_oven_robin), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads),
-          T(sph_integrators_free_fall), T(sph_collider_response), T(sph_heat_internal_conserves), T(sph_adaptive_h),
+          T(sph_poiseuille), T(sph_wall_drag_stable), T(sph_creeping_startup_converges), T(sph_couette_moving_lid_converges), T(sph_poiseuille_converges), T(sph_viscosity_ladder), T(sph_walls_ladder), T(sph_artificial_stress_fluid), T(sph_artificial_stress_elastic), T(sph_oven_robin), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads),
+          T(sph_integrators_free_fall), T(sph_collider_response), T(sph_moving_lid_holds_fluid), T(sph_wall_motion_rigid), T(sph_heat_internal_conserves), T(sph_heat_conduction_converges), T(sph_adaptive_h),
           T(sph_surface_tension_rounds_drop), T(sph_bubble_cooling_contracts), T(sph_solver_table),
           T(sph_viscosity_rule), T(sph_porosity_supplied), T(sph_refuses_saturation), T(sph_alloc_failure_paths),
           T(sph_keeps_no_grid_tables))

@@ -598,10 +598,22 @@ local function material_id(s, m)
 end
 
 --- s:add{shape = ..., material = ..., ppc = 4, velocity = {0,0}, jitter = 0.5, temperature = 20, saturation = 0.5} -> body id
+--- A fixed body (fixed = true) under SPH is a wall; velocity = {..} or function(t), omega = ... and
+--- pivot = {..} (spelt as s:collider's) make it move rigidly: a lid, a paddle, a piston.
 function S:add(o)
   if type(o) ~= "table" then error("s:add: expected a table", 2) end
   check_keys(o, { shape = true, material = true, ppc = true, velocity = true, jitter = true, temperature = true,
-    name = true, fixed = true, saturation = true }, "s:add")
+    name = true, fixed = true, saturation = true, omega = true, pivot = true }, "s:add")
+  local mv, mw, mp, start_v = nil, o.omega, nil, o.velocity
+  if o.fixed and (o.velocity ~= nil or o.omega ~= nil or o.pivot ~= nil) then -- a moving wall
+    mv = o.velocity
+    if mv ~= nil and type(mv) ~= "function" then mv = check_vec(mv, "s:add: velocity") end
+    if mw ~= nil and type(mw) ~= "function" and type(mw) ~= "number" then mw = check_vec(mw, "s:add: omega") end
+    mp = o.pivot and check_vec(o.pivot, "s:add: pivot") or nil
+    start_v = nil -- the particles take the motion's velocity each step
+  elseif o.omega ~= nil or o.pivot ~= nil then
+    error("s:add: omega and pivot move a fixed body (fixed = true, SPH walls); a free body takes velocity only", 2)
+  end
   if not is_shape(o.shape) then error("s:add: shape = h.box(...), h.disc(...), ... is required", 2) end
   if o.material == nil then error("s:add: material = h.material(...) is required", 2) end
   local mat = o.material
@@ -623,12 +635,16 @@ function S:add(o)
   local kppc = knob_sets().ppc
   local ppc = check_number(kppc and knob_number("ppc", kppc) or o.ppc or 4, "s:add: ppc", 1, 1000, "particles per cell")
   local jitter = check_number(o.jitter or 0.5, "s:add: jitter", 0, 1)
-  local vel = check_vec(o.velocity or { 0, 0, 0 }, "s:add: velocity")
+  local vel = check_vec(start_v or { 0, 0, 0 }, "s:add: velocity")
   if o.temperature ~= nil then check_number(o.temperature, "s:add: temperature", -273.15, 5000, "degC") end
   if o.saturation ~= nil then check_number(o.saturation, "s:add: saturation", 0, 1) end
   local ok2, body = pcall(self._add, self, o.shape, type(id) == "table" and id[1] or id, math.floor(ppc), jitter, vel,
     o.temperature, o.fixed, o.saturation, mix_ratios)
   if not ok2 then error(body, 2) end
+  if mv ~= nil or mw ~= nil or mp ~= nil then
+    local okm, em = pcall(self._body_motion, self, body, mv, mw, mp)
+    if not okm then error(em, 2) end
+  end
   if type(id) == "table" then -- blend = "labels": each particle one constituent, drawn with its ratio
     local st = self:_state()
     local ok3, counts = pcall(self._labels, self, body, id, ratios, st.seed * 7919 + body)

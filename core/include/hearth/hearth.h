@@ -424,6 +424,18 @@ hearth_status hearth_scene_body_labels(hearth_scene *s, int body, int k, const i
                                        uint64_t seed, int *counts, hearth_error *err);
 /// Set the velocity of every particle of a body (a push). Returns status.
 hearth_status hearth_scene_body_set_velocity(hearth_scene *s, int body, const double v[3], hearth_error *err);
+/// A fixed body's prescribed rigid motion (SPH only: walls, lids, paddles,
+/// pistons): its particles move with velocity + omega x (x - pivot), the pivot
+/// (m, at the time of the call) moving with the body; motion (may be NULL)
+/// gives velocity and omega as functions of time, called once at the start of
+/// every step outside parallel loops (as a collider's). velocity, omega and
+/// pivot may be NULL (zero). The velocity enters the viscous term (no-slip on
+/// the moving wall) and the pressure and artificial viscosity terms. A second
+/// call replaces the body's motion. HEARTH_ERR_PARAM under MPM (move a collider
+/// instead), for a body that is not fixed, or for non-finite values.
+hearth_status hearth_scene_body_motion(hearth_scene *s, int body, const double velocity[3], const double omega[3],
+                                       const double pivot[3], hearth_motion_fn motion, void *motion_ud,
+                                       hearth_error *err);
 /// Remove every particle inside a shape (cutting). Returns the number removed, or -1.
 int hearth_scene_remove_inside(hearth_scene *s, const hearth_shape *shape, hearth_error *err);
 /// Replace a collider's motion with constant velocities (removes any motion callback).

@@ -2,6 +2,8 @@
  * the thesis's).
  *
  * Order of a step (sph_step, one static function per phase):
+ *   sph_walls_begin      fixed particles take their body's prescribed
+ *                        velocity, or 0 (sph_walls.c)
  *   phase_predrift       (leapfrog: drift half a step); periodic wrap
  *   phase_neighbours     sort particles by cell, neighbour lists (sph_neighbours.c)
  *   phase_density        density by summation (3.13); Sigalotti adaptive h
@@ -17,16 +19,20 @@
  *   phase_forces         pressure (3.18), deviatoric stress, artificial
  *                        stress, viscosity (3.19) with no-slip walls (Morris
  *                        et al. 1997), artificial viscosity beta term (3.41),
- *                        surface tension (3.30), gravity; heat: internal
- *                        (3.45-3.46), external at surface particles (3.42),
- *                        the oven's Robin flux and heated colliders' contact
- *                        beta (as MPM); the kick
+ *                        surface tension (3.30), gravity; the kick; then
+ *                        heat (sph_heat.c): internal (3.45-3.46), external
+ *                        at surface particles (3.42), the oven's Robin flux
+ *                        and heated colliders' contact beta (as MPM)
  *   phase_xsph           XSPH (3.34 with the tuner of 4.4)
  *   phase_drift          drift (3.57-3.58), colliders and walls with the
  *                        thesis's response (3.31-3.33)
+ *   sph_walls_end        moving fixed bodies move rigidly (sph_walls.c)
  *   phase_browning       browning value (4.5-4.6)
  * Every particle writes only its own slots and sums its neighbours in list
- * order, so a step is deterministic for any thread count.
+ * order, so a step is deterministic for any thread count. The step's helpers
+ * live beside it (sph_state.h shares the state): the viscosity rule and eq.
+ * 3.8's renormalisation in sph_viscosity.c, the wall particles in
+ * sph_walls.c, the heat rates in sph_heat.c.
  *
  * dt (sph_stable_dt) is the smallest of CFL (cfl dx / (speed + sound speed),
  * as MPM, so the guard's checks hold), viscous (dt_viscous rho h^2 / mu),
@@ -46,9 +52,10 @@
  * outward); the external heat flows toward the outside temperature (the thesis
  * prints T_i - T_ext); XSPH epsilon is at most 1 (Table 4.1's 5 overshoots;
  * the text of §4.3 uses 0.5); fixed particles are no-slip walls in eq. 3.19
- * (Morris et al. 1997), their drag taken implicitly in the kick; eq. 3.19's
+ * (Morris et al. 1997), their drag taken implicitly in the kick, and a fixed
+ * body may move rigidly (a lid, a paddle: sph_walls.c); eq. 3.19's
  * Laplacian (the kernel of eq. 3.8) is renormalised per particle by its
- * discrete second moment (viscous_moments). Eq. 3.8 summed over a resting
+ * discrete second moment (sph_viscous_moments). Eq. 3.8 summed over a resting
  * lattice is 5.7% stronger than its integral at h = 2.4 spacings (3.8% with
  * rows sliding), a bias fixed by h over the spacing, so it does not shrink
  * as the spacing does: a creeping channel start-up was 4.6%, 5.2%, 5.4% slow
@@ -60,7 +67,8 @@
  * kernel (and so its viscous dt limit). Now the start-up converges (order
  * 1.2, `sph_creeping_startup_converges`) and so does the steady profile
  * (order 1.9, `sph_poiseuille_converges`). Eq. 3.45's heat Laplacian uses the
- * same kernel and keeps its lattice bias (not renormalised).
+ * same kernel, so it takes the same factor (sph_heat.c; slab conduction then
+ * converges at order 2, `sph_heat_conduction_converges`).
  *
  * Shared with MPM: particles, plugins through the material door (porosity from
  * plastic_J for a material that needs it; no saturation: a material that needs
@@ -101,30 +109,8 @@
 #include "error.h"
 #include "material.h"
 #include "sph_kernel.h"
-#include "sph_neighbours.h"
+#include "sph_state.h"
 #include "tensor.h"
-
-#define KELVIN 273.15
-
-struct sph_state {
-    sph_cells cells;
-    sph_nlist nl;
-    int cap, n;     /* arrays hold cap particles; n = particles of the last step (-1 = stale) */
-    int valid;      /* per-particle results match the scene's particles */
-    int *key, *order;
-    double *perm;   /* permutation scratch, cap doubles */
-    double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *brown, *surf, *rhof, *dT, *Tprev;
-    double *rho0, *B, *mu, *c0, *xsph;
-    double *vc;     /* the viscous Laplacian's renormalisation (viscous_moments), per particle this step */
-    double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
-    double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
-    double amax;    /* largest |a| of the last step, for the force limit */
-    /* Per material: the schema index of the plugin parameter SPH applies
-     * itself as viscosity (eq. 3.19), or -1. Resolved once, when the material
-     * is added (sph_material_added); see sph_viscosity_index. */
-    int *visc_index;
-    int visc_cap;
-};
 
 /* ---- options ---------------------------------------------------------------- */
 
@@ -150,6 +136,7 @@ static void sph_free(hearth_scene *s) {
     if (!st) return;
     sph_cells_free(&st->cells);
     sph_nlist_free(&st->nl);
+    sph_walls_free(st);
     size_t c = (size_t)st->cap;
 #define FREE(a, k) mem_free(st->a, sizeof(double) * (k) * c);
     ARRAYS(FREE)
@@ -162,7 +149,7 @@ static void sph_free(hearth_scene *s) {
 }
 
 /* The scene's SPH state, made on first use (a material added, or a step). */
-static struct sph_state *state_of(hearth_scene *s, hearth_error *err) {
+struct sph_state *sph_state_of(hearth_scene *s, hearth_error *err) {
     if (!s->sph) {
         s->sph = mem_calloc(sizeof *s->sph);
         if (!s->sph) {
@@ -175,7 +162,7 @@ static struct sph_state *state_of(hearth_scene *s, hearth_error *err) {
 }
 
 static hearth_status ensure(hearth_scene *s, int n, hearth_error *err) {
-    struct sph_state *st = state_of(s, err);
+    struct sph_state *st = sph_state_of(s, err);
     if (!st) return HEARTH_ERR_NOMEM;
     if (n <= st->cap) return HEARTH_OK;
     int cap = n + n / 4 + 16;
@@ -231,31 +218,6 @@ static double lap_w(int dim, double r, double h) {
     return sg * (f2 * k * k + (dim - 1) * f1 * k / r);
 }
 
-/* ---- the viscosity rule -------------------------------------------------------- */
-
-/* Contract rule 3 of <hearth/material.h>: under SPH a plugin parameter named
- * `viscosity` (Pa s) is the core's. SPH applies it itself, in the viscous
- * term of eq. 3.19 with no-slip walls (phase_forces), limits the step with
- * viscosity / density (sph_stable_dt), and passes 0 for it to the plugin's
- * stress (phase_stress), so the law does not apply it a second time. Under
- * MPM the plugin applies it, like any other parameter. This is the one place
- * the name is looked up: once per material, when it is added. */
-static int sph_viscosity_index(const hearth_material *m) { return params_index(m, "viscosity"); }
-
-static hearth_status sph_material_added(hearth_scene *s, int mat, hearth_error *err) {
-    struct sph_state *st = state_of(s, err);
-    if (!st) return HEARTH_ERR_NOMEM;
-    if (mat >= st->visc_cap) {
-        const int cap = mat + 1 > 2 * st->visc_cap ? mat + 1 : 2 * st->visc_cap;
-        int *v = mem_realloc(st->visc_index, sizeof(int) * (size_t)st->visc_cap, sizeof(int) * (size_t)cap);
-        if (!v) return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory for material %d", mat);
-        st->visc_index = v;
-        st->visc_cap = cap;
-    }
-    st->visc_index[mat] = sph_viscosity_index(s->mats.slot[mat].m);
-    return HEARTH_OK;
-}
-
 /* Per-particle material constants: rest density, Tait B, viscosity (eq. 4.1
  * through a curve), sound speed, XSPH tuner (eq. 4.4), smoothing length. */
 static void particle_constants(hearth_scene *s, int i, const double *T, double *pscratch) {
@@ -283,64 +245,6 @@ static void particle_constants(hearth_scene *s, int i, const double *T, double *
     st->xsph[i] = eps;
     const double V0 = pcold(ps, PC_VOL0)[i];
     st->h[i] = o->h_factor * (s->def.dim == 3 ? cbrt(V0) : sqrt(V0));
-}
-
-/* No-slip walls of fixed particles (Morris, Fox & Zhu 1997, J. Comput. Phys.
- * 136, 214-226): in the viscous term a wall particle b seen from a fluid
- * particle a moves with v_b = -(d_b / d_a) v_a, d the distances to the wall
- * surface, so the velocity extrapolates linearly to zero on the surface.
- * With wall particles at rest instead, eq. 3.19 lets the first fluid layer
- * slip (Poiseuille flow 12.6% off the parabola; 2.2% with this, 0.58% with
- * eq. 3.8 renormalised as well, `sph_poiseuille`). Particle walls carry no
- * surface, so it is estimated per fluid particle a: the wall normal n is minus the gradient of the
- * fixed particles' colour field at a (that gradient points into the wall),
- * and the surface lies half a wall spacing beyond the wall particle nearest
- * along n (exact for the lattice walls bodies make). Morris et al. bound
- * 1 + d_b / d_a so a particle close to the surface does not get an
- * unbounded wall velocity; here d_a is taken as at least half the fluid
- * particle's own spacing instead, which never bites on the rest lattice
- * (their bound of 1.5 would, and left 4.9% slip in `sph_poiseuille` before
- * eq. 3.8 was renormalised).
- * wall_frame returns 0 when a has no fixed neighbour. */
-static int wall_frame(const hearth_scene *s, int i, double n[3], double *da) {
-    const struct sph_state *st = s->sph;
-    const particles *ps = &s->ps;
-    const int *flags = pcoli(ps, PC_FLAGS), dim = s->def.dim;
-    const double *x = pcold(ps, PC_X), *m = pcold(ps, PC_MASS);
-    const int *off = st->nl.off, *nb = st->nl.j;
-    double g[3] = {0, 0, 0};
-    for (int k = off[i]; k < off[i + 1]; k++) {
-        const int j = nb[k];
-        if (!(flags[j] & PF_FIXED)) continue;
-        double d[3];
-        sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-        const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-        if (r <= 0) continue;
-        const double w = m[j] / st->rho[j] * sph_dw(dim, r, 0.5 * (st->h[i] + st->h[j])) / r;
-        for (int c = 0; c < 3; c++) g[c] += w * d[c];
-    }
-    const double gn = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-    if (!(gn > 0)) return 0;
-    for (int c = 0; c < 3; c++) n[c] = -g[c] / gn;
-    double best = INFINITY;
-    for (int k = off[i]; k < off[i + 1]; k++) {
-        const int j = nb[k];
-        if (!(flags[j] & PF_FIXED)) continue;
-        double d[3];
-        sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-        const double sj = d[0] * n[0] + d[1] * n[1] + d[2] * n[2] - 0.5 * st->sp[j];
-        if (sj < best) best = sj;
-    }
-    *da = best;
-    return 1;
-}
-
-/* 1 + d_b / d_a for wall particle b at displacement d = x_a - x_b: the
- * factor on v_a in a's viscous interaction with b (v_a - v_b of eq. 3.19
- * with the wall velocity above). dah: d_a, at least half of a's spacing. */
-static double wall_beta(const double d[3], const double n[3], double da, double dah) {
-    const double db = d[0] * n[0] + d[1] * n[1] + d[2] * n[2] - da;
-    return db > 0 ? 1.0 + db / dah : 1.0;
 }
 
 static hearth_status sort_and_list(hearth_scene *s, double hcell, const double *h, hearth_error *err) {
@@ -391,43 +295,12 @@ static void density(hearth_scene *s) {
 
 /* ---- the step's phases ----------------------------------------------------------- */
 
-/* The particle columns a phase reads. Sorting permutes the particles, and
- * the permutation may swap the columns' storage, so a phase takes them fresh
- * from cols_of after every sort_and_list. */
-typedef struct sph_cols {
-    int n, dim;
-    const int *flags; /* NULL when no particle carries flags */
-    const int *mat;
-    double *x, *v, *C, *F, *state;
-    const double *m, *V0;
-    double *T, *Tmax; /* NULL without the temperature field */
-} sph_cols;
-
-static sph_cols cols_of(hearth_scene *s) {
-    particles *ps = &s->ps;
-    return (sph_cols){
-        .n = ps->n,
-        .dim = s->def.dim,
-        .flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL,
-        .mat = pcoli(ps, PC_MAT),
-        .x = pcold(ps, PC_X),
-        .v = pcold(ps, PC_V),
-        .C = pcold(ps, PC_C),
-        .F = pcold(ps, PC_F),
-        .state = pcold(ps, PC_STATE),
-        .m = pcold(ps, PC_MASS),
-        .V0 = pcold(ps, PC_VOL0),
-        .T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL,
-        .Tmax = ps->enabled & (1u << PC_TEMP_MAX) ? pcold(ps, PC_TEMP_MAX) : NULL,
-    };
-}
-
 /* Leapfrog's first half drift (drift-kick-drift; symplectic Euler, eq.
  * 3.57-3.58, drifts once at the end), then positions on periodic axes back
  * into the box. */
 static void phase_predrift(hearth_scene *s, double dt) {
     const hearth_sph_def *o = &s->def.sph;
-    const sph_cols c = cols_of(s);
+    const sph_cols c = sph_cols_of(s);
     if (o->leapfrog)
         for (int i = 0; i < c.n; i++)
             if (!(c.flags && (c.flags[i] & PF_FIXED)))
@@ -463,7 +336,7 @@ static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
     const hearth_sph_def *o = &s->def.sph;
     const int n = s->ps.n;
     double pscratch[SCENE_MAX_PARAMS];
-    const double *T = cols_of(s).T;
+    const double *T = sph_cols_of(s).T;
     for (int i = 0; i < n; i++) particle_constants(s, i, T, pscratch);
     density(s);
     if (!o->adaptive_h) return HEARTH_OK;
@@ -477,7 +350,7 @@ static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
     }
     hearth_status e = sort_and_list(s, hm, st->h, err); /* order unchanged unless the cells changed */
     if (e) return e;
-    T = cols_of(s).T;
+    T = sph_cols_of(s).T;
     for (int i = 0; i < n; i++) {
         const double hkeep = st->h[i];
         particle_constants(s, i, T, pscratch);
@@ -492,7 +365,7 @@ static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
  * |grad C| h passes sph.surface_threshold. */
 static void phase_kinematics(hearth_scene *s) {
     struct sph_state *st = s->sph;
-    const sph_cols c = cols_of(s);
+    const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim;
     const double *x = c.x, *v = c.v, *m = c.m;
     const int *off = st->nl.off, *nb = st->nl.j;
@@ -530,7 +403,7 @@ static void phase_kinematics(hearth_scene *s) {
 static void phase_pressure(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
-    const sph_cols c = cols_of(s);
+    const sph_cols c = sph_cols_of(s);
     const int n = c.n, *mat = c.mat;
     const double *T = c.T;
     const int *off = st->nl.off, *nb = st->nl.j;
@@ -591,7 +464,7 @@ static void phase_pressure(hearth_scene *s) {
  * non-finite tau), so the guard's answer does not depend on the threads. */
 static int phase_stress(hearth_scene *s, double dt, step_report *rep) {
     struct sph_state *st = s->sph;
-    const sph_cols c = cols_of(s);
+    const sph_cols c = sph_cols_of(s);
     const int n = c.n, *mat = c.mat, *flags = c.flags;
     const double *T = c.T;
     const int stride = s->ps.state_stride;
@@ -698,118 +571,26 @@ static void phase_artificial_stress(hearth_scene *s) {
     }
 }
 
-/* tr M of eq. 3.8's Laplacian over a full square (2D) or cubic (3D) lattice
- * of unit spacing at support h (in spacings), unit volumes: 2 dim times
- * 1.057 at h = 2.4 in 2D (0.966 in 3D). */
-static double lattice_moment(int dim, double h) {
-    const int R = (int)h + 1;
-    double tr = 0;
-    for (int a = -R; a <= R; a++)
-        for (int b = -R; b <= R; b++)
-            for (int c = dim == 3 ? -R : 0; c <= (dim == 3 ? R : 0); c++) {
-                const double r2 = (double)(a * a + b * b + c * c);
-                if (r2 > 0) tr += sph_lap_visc(dim, sqrt(r2), h) * r2;
-            }
-    return tr;
-}
-
-/* The renormalisation of eq. 3.8's Laplacian (our deviation; the header
- * says why). Summed over neighbours, sum_b V_b L(r_ab) (v_b - v_a) for a
- * quadratic v is (1/2) M_a : grad grad v, with M_a = sum_b V_b L r r the
- * kernel's discrete second moment; its integral is 2 I, so with c_a =
- * 2 dim / tr M_a the sum is the Laplacian exactly wherever M_a is isotropic
- * (any resting square or cubic lattice, whatever h over the spacing), and
- * within 0.3% with rows sliding past each other (M_xx and M_yy then differ
- * by 0.4%). Wall particles count as neighbours, so a fluid particle next to
- * a wall has a full neighbourhood.
- *
- * That holds for a full neighbourhood only: with neighbours missing on one
- * side (a free surface, the outer face of a wall) tr M loses more than its
- * share (the far neighbours weigh r^2), so 2 dim phi / tr M, phi the filled
- * part of the neighbourhood, came out 1.2 at the edge of a disc, 27% above
- * its inside, and the surface of the bubble dough (`sph_bubble_expansion`)
- * ran away (the same with the rows two and three in: their phi is 0.97 or
- * more, the far neighbours being light in W). So c_a blends into the factor
- * of the resting lattice at a's own h and spacing (lattice_moment) as the
- * filled part phi_a = sum_b V_b W_ab / (1 - V_a W(0)) falls from 0.95 to
- * 0.85, or as the centre of the moment, |sum_b V_b L r^2 r| / (h tr M),
- * moves from 2% to 5% of h off a (0 on any symmetric neighbourhood, resting
- * or sliding): the same correction throughout a body at rest, and no
- * strength that the neighbourhood's shape makes up. c_a is held within [0.8, 1.2]: that covers every regular
- * arrangement (0.94 to 1.16 for h from 2 to 4 spacings), while in a clumped
- * neighbourhood, where no moment makes eq. 3.8 exact, tr M falls with r^2
- * and c would grow without bound.
- *
- * Rejected: Morris et al.'s (1997) grad W . r / r^2 form alone, 0.9% weak
- * on the resting lattice and 0.6% strong with rows sliding at h = 2.4
- * spacings (1.8% weak in 3D): smaller, but a bias that does not shrink with
- * resolution all the same; the resting lattice's factor everywhere, exact at
- * rest but 1.8% weak once rows slide (steady Poiseuille flow); a tensor
- * factor (pair weights e^T A e, A solved from the fourth moment so every
- * quadratic field is exact), which would remove the 0.2% anisotropy of
- * sliding rows but fits each instant's skewed arrangement of them: steady
- * Poiseuille flow went from 0.58% to 3.4% off at 20 across. */
-static void viscous_moments(hearth_scene *s) {
-    struct sph_state *st = s->sph;
-    const particles *ps = &s->ps;
-    const int n = ps->n, dim = s->def.dim;
-    const double *x = pcold(ps, PC_X), *m = pcold(ps, PC_MASS);
-    const int *off = st->nl.off, *nb = st->nl.j;
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        double fill = 0, tr = 0, g[3] = {0, 0, 0};
-        for (int k = off[i]; k < off[i + 1]; k++) {
-            const int j = nb[k];
-            double d[3];
-            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-            const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], r = sqrt(r2);
-            if (r <= 0) continue;
-            const double hij = 0.5 * (st->h[i] + st->h[j]), Vj = m[j] / st->rho[j];
-            const double lr2 = Vj * sph_lap_visc(dim, r, hij) * r2;
-            fill += Vj * sph_w(dim, r, hij);
-            tr += lr2;
-            for (int q = 0; q < 3; q++) g[q] += lr2 * d[q];
-        }
-        const double full = 1.0 - m[i] / st->rho[i] * sph_w(dim, 0, st->h[i]), phi = full > 0 ? fill / full : 0;
-        /* lopsided: the moment's centre off a by more than 2% of h (0 on any symmetric neighbourhood) */
-        const double off_c = tr > 0 ? sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) / (tr * st->h[i]) : 1.0;
-        const double uphi = phi >= 0.95 ? 1.0 : phi <= 0.85 ? 0.0 : (phi - 0.85) / 0.1;
-        const double uoff = off_c <= 0.02 ? 1.0 : off_c >= 0.05 ? 0.0 : (0.05 - off_c) / 0.03;
-        const double u = uphi * uoff;
-        double c = u > 0 ? 2.0 * dim * phi / tr : 1.0;
-        if (u < 1) c = u * c + (1 - u) * 2.0 * dim / lattice_moment(dim, st->h[i] / st->sp[i]);
-        st->vc[i] = c < 0.8 ? 0.8 : c > 1.2 ? 1.2 : c;
-    }
-}
-
-/* Accelerations and heat rates, then the kick into st->vnew. Per particle:
- * gravity and the body force; per neighbour the pressure (eq. 3.18) with the
- * artificial viscosity's beta term (eq. 3.41, mu_ij of eq. 3.37), the
- * deviatoric and artificial stresses, the viscosity (eq. 3.19) with no-slip
- * walls (Morris et al. 1997, wall_frame), internal heat (eq. 3.45-3.46);
- * then surface tension (eq. 3.30), external heat at surface particles (eq.
- * 3.42) and the oven's Robin flux and heated colliders' contact beta (as
- * MPM's, Ding et al. 2019 §6.6). */
+/* Accelerations, then the kick into st->vnew; then the heat rates
+ * (sph_heat.c). Per particle: gravity and the body force; per neighbour the
+ * pressure (eq. 3.18) with the artificial viscosity's beta term (eq. 3.41,
+ * mu_ij of eq. 3.37), the deviatoric and artificial stresses, the viscosity
+ * (eq. 3.19) with no-slip walls (Morris et al. 1997, sph_wall_frame); then
+ * surface tension (eq. 3.30). */
 static void phase_forces(hearth_scene *s, double dt) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
-    const sph_cols c = cols_of(s);
-    const int n = c.n, dim = c.dim, *flags = c.flags, *mat = c.mat;
-    const double *x = c.x, *v = c.v, *m = c.m, *T = c.T;
+    const sph_cols c = sph_cols_of(s);
+    const int n = c.n, dim = c.dim, *flags = c.flags;
+    const double *x = c.x, *v = c.v, *m = c.m;
     const int *off = st->nl.off, *nb = st->nl.j;
     const double eps_as = o->artificial_stress;
     for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(c.V0[i]) : sqrt(c.V0[i]); /* once, not per pair */
-    viscous_moments(s);
+    sph_viscous_moments(s);
     const double *gvec = s->def.gravity;
-    const double Text = s->def.oven_temperature;
-    /* Robin heat exchange (Ding et al. 2019 §6.6, the MPM solver's oven): beta
-     * of the oven and of heated colliders, next to eq. 3.42's heat_ext */
-    const double beta_oven = isfinite(Text) ? s->def.oven_beta : 0.0;
-    int robin = beta_oven > 0;
-    for (int q = 0; q < s->ncol; q++) robin |= !isnan(s->cols[q].temperature) && s->cols[q].beta > 0;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0}, dTi = 0;
+        double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0};
         if (s->body_force) {
             double bf[3] = {0, 0, 0};
             s->body_force(s->body_force_ud, s->t, x + 3 * i, bf);
@@ -817,7 +598,7 @@ static void phase_forces(hearth_scene *s, double dt) {
         }
         const double ri = st->rho[i], Pi = st->prs[i] / (ri * ri), *Si = st->S + 9 * i;
         double wn[3] = {0, 0, 0}, da = 0, drag = 0;
-        const int wall = flags && !(flags[i] & PF_FIXED) && wall_frame(s, i, wn, &da);
+        const int wall = flags && !(flags[i] & PF_FIXED) && sph_wall_frame(s, i, wn, &da);
         const double dah = fmax(da, 0.5 * st->sp[i]);
         for (int k = off[i]; k < off[i + 1]; k++) {
             const int j = nb[k];
@@ -838,12 +619,12 @@ static void phase_forces(hearth_scene *s, double dt) {
                 Pij += o->av_beta * muij * muij / (0.5 * (ri + rj));
             }
             const double *Sj = st->S + 9 * j, lv = sph_lap_visc(dim, r, hij);
-            /* eq. 3.19 over rho_i; its Laplacian renormalised (viscous_moments), the pair's mean factor so
+            /* eq. 3.19 over rho_i; its Laplacian renormalised (sph_viscous_moments), the pair's mean factor so
              * the pair's forces stay equal and opposite */
             const double visc = 0.5 * (st->mu[i] + st->mu[j]) * m[j] / (rj * ri) * lv * 0.5 * (st->vc[i] + st->vc[j]);
-            /* a wall particle's velocity for eq. 3.19: Morris et al. 1997 (wall_frame) */
+            /* a wall particle's velocity for eq. 3.19: Morris et al. 1997 (sph_wall_frame) */
             const int wj = wall && (flags[j] & PF_FIXED);
-            const double beta = wj ? wall_beta(d, wn, da, dah) : 1.0;
+            const double beta = wj ? sph_wall_beta(d, wn, da, dah) : 1.0;
             double fn = 0; /* f_ab^4 of the artificial stress */
             if (eps_as > 0) {
                 const double dp = 0.5 * (st->sp[i] + st->sp[j]);
@@ -856,68 +637,34 @@ static void phase_forces(hearth_scene *s, double dt) {
                 for (int b = 0; b < 3; b++) sd += (Si[3 * q + b] / (ri * ri) + Sj[3 * q + b] / (rj * rj)) * d[b];
                 if (fn > 0)
                     for (int b = 0; b < 3; b++) sd += fn * (Ri[3 * q + b] + Rj[3 * q + b]) * d[b];
-                a[q] += m[j] * (-Pij * g * d[q] + sd * g) - (wj ? 0.0 : visc * vij[q]);
+                    /* with a wall b: -visc beta (v_a - V_b), V_b the wall's own (prescribed) velocity; the
+                 * beta v_a part is the implicit drag below */
+                a[q] += m[j] * (-Pij * g * d[q] + sd * g) - (wj ? -visc * beta * v[3 * j + q] : visc * vij[q]);
             }
             drag += wj ? visc * beta : 0.0;
-            if (T && o->heat_int > 0) /* eq. 3.45-3.46 */
-                dTi += o->heat_int * 4 * m[j] / ((ri + rj) * (ri + rj)) * (T[j] - T[i]) * lv;
         }
         if (o->surface_tension > 0 && st->surf[i]) { /* eq. 3.30 */
             const double *Ni = st->N + 3 * i, nn = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]);
             if (nn > 0)
                 for (int q = 0; q < dim; q++) a[q] -= o->surface_tension / ri * st->lapC[i] * Ni[q] / nn;
         }
-        if (T && o->heat_ext > 0 && st->surf[i]) { /* eq. 3.42 at surface particles; r_i from eq. 3.43 */
-            double Tout = Text;
-            for (int q = 0; q < s->ncol; q++) { /* a heated collider within h is the outside instead */
-                const collider *cl = &s->cols[q];
-                if (isnan(cl->temperature) || !collider_near(cl, x + 3 * i)) continue;
-                if (collider_sdf(cl, x + 3 * i, NULL) < st->h[i]) Tout = cl->temperature;
-            }
-            if (isfinite(Tout)) {
-                const double V = m[i] / st->rho0[i];
-                const double rad = dim == 3 ? cbrt(3 * V / (4 * SPH_PI)) : sqrt(V / SPH_PI);
-                /* the thesis prints (T_i - T_ext); heat flows from the hotter side, so (T_ext - T_i) */
-                dTi += o->heat_ext * (Tout - T[i]) * rad * rad / ri;
-            }
-        }
-        if (T && robin) { /* the oven's Robin flux and heated colliders' contact beta, as MPM sees them */
-            /* Each surface particle (the ones eq. 3.42 heats) carries its
-             * face, V^((d-1)/d) of its rest volume, as a boundary node does in
-             * MPM (boundary.c); a particle within its spacing of a heated
-             * collider carries the same face of contact (MPM: within dx). The
-             * colour gradient as a surface delta (V |grad C|) would need no
-             * flag, but with particles on one side only it sums to 0.69 of a
-             * block's outline. */
-            const double ci = s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT], Vr = m[i] / st->rho0[i];
-            const double sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
-            double coef = beta_oven > 0 && st->surf[i] ? face * beta_oven : 0.0, Tr = Text;
-            for (int q = 0; q < s->ncol; q++) {
-                const collider *cl = &s->cols[q];
-                if (isnan(cl->temperature) || !(cl->beta > 0) || !collider_near(cl, x + 3 * i)) continue;
-                if (!(collider_sdf(cl, x + 3 * i, NULL) < sp)) continue;
-                const double cS = face * cl->beta; /* the pan's temperature wins the ambient, areas add (as MPM) */
-                Tr = coef > 0 ? (Tr * coef + cl->temperature * cS) / (coef + cS) : cl->temperature;
-                coef += cS;
-            }
-            if (coef > 0 && ci > 0) dTi += coef * (Tr - T[i]) / (m[i] * ci);
-        }
         memcpy(st->acc + 3 * i, a, sizeof a);
-        st->dT[i] = dTi;
         /* the kick. The wall drag -drag v is linear in v (the wall velocities
          * above are multiples of v_i), so it is taken implicitly: with beta up
          * to about 5 it would otherwise break the viscous dt limit, which is
          * set for fluid-fluid pairs (a channel at 100 Pa s blew up) */
         const int fixed = flags && (flags[i] & PF_FIXED);
-        for (int q = 0; q < 3; q++) st->vnew[3 * i + q] = fixed ? 0.0 : (v[3 * i + q] + dt * a[q]) / (1.0 + dt * drag);
+        for (int q = 0; q < 3; q++) /* a fixed particle keeps its prescribed velocity (sph_walls_begin) */
+            st->vnew[3 * i + q] = fixed ? v[3 * i + q] : (v[3 * i + q] + dt * a[q]) / (1.0 + dt * drag);
     }
+    sph_heat_rates(s); /* after sph_viscous_moments and st->sp, which it reads */
 }
 
 /* XSPH (eq. 3.34, its epsilon the tuner of eq. 4.4) from the kicked
  * velocities into the particles' v; the largest |a| for the force limit. */
 static void phase_xsph(hearth_scene *s) {
     struct sph_state *st = s->sph;
-    const sph_cols c = cols_of(s);
+    const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim, *flags = c.flags;
     const double *x = c.x, *m = c.m;
     double *v = c.v;
@@ -927,10 +674,7 @@ static void phase_xsph(hearth_scene *s) {
     for (int i = 0; i < n; i++) {
         double *vi = v + 3 * i;
         const double *wi = st->vnew + 3 * i;
-        if (flags && (flags[i] & PF_FIXED)) {
-            vi[0] = vi[1] = vi[2] = 0;
-            continue;
-        }
+        if (flags && (flags[i] & PF_FIXED)) continue; /* its prescribed velocity, 0 unless it moves */
         double corr[3] = {0, 0, 0};
         if (st->xsph[i] > 0)
             for (int k = off[i]; k < off[i + 1]; k++) {
@@ -958,7 +702,7 @@ static void phase_xsph(hearth_scene *s) {
 static void phase_drift(hearth_scene *s, double dt, step_report *rep) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
-    const sph_cols c = cols_of(s);
+    const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim, *flags = c.flags;
     const double *m = c.m;
     double *x = c.x, *v = c.v, *T = c.T, *Tmax = c.Tmax;
@@ -970,8 +714,12 @@ static void phase_drift(hearth_scene *s, double dt, step_report *rep) {
             T[i] += dt * st->dT[i];
             if (Tmax && T[i] > Tmax[i]) Tmax[i] = T[i];
         }
-        if (flags && (flags[i] & PF_FIXED)) continue;
         double *xi = x + 3 * i, *vi = v + 3 * i;
+        if (flags && (flags[i] & PF_FIXED)) { /* moved by sph_walls_end; a moving wall's speed limits dt */
+            const double sp = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
+            if (sp > vmax) vmax = sp, fastest = i;
+            continue;
+        }
         for (int q = 0; q < dim; q++) xi[q] += drift * vi[q];
         for (int q = 0; q < s->ncol; q++) {
             const collider *cl = &s->cols[q];
@@ -1028,7 +776,7 @@ static void phase_drift(hearth_scene *s, double dt, step_report *rep) {
 static void phase_browning(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
-    const sph_cols c = cols_of(s);
+    const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim;
     const double *x = c.x, *m = c.m, *T = c.T;
     const int *off = st->nl.off, *nb = st->nl.j;
@@ -1074,6 +822,7 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
         st->n = 0;
         return HEARTH_OK;
     }
+    sph_walls_begin(s, s->t);
     phase_predrift(s, dt);
     if ((e = phase_neighbours(s, err))) return e;
     if ((e = phase_density(s, err))) return e;
@@ -1084,6 +833,7 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     phase_forces(s, dt);
     phase_xsph(s);
     phase_drift(s, dt, rep);
+    sph_walls_end(s, dt);
     phase_browning(s);
     st->n = n;
     st->valid = 1;
@@ -1122,18 +872,7 @@ static double sph_stable_dt(const hearth_scene *s) {
     if (sp > 0) dt = s->def.cfl * s->def.dx / sp;
     if (numax > 0) dt = fmin(dt, o->dt_viscous * hmin * hmin / numax);
     if (s->sph && s->sph->amax > 0) dt = fmin(dt, o->dt_force * sqrt(hmin / s->sph->amax));
-    if (o->heat_int > 0 && T) dt = fmin(dt, 0.1 * hmin * hmin * rhomin / o->heat_int); /* eq. 3.45 has 1/rho */
-    if (T) { /* Robin: a face of V / spacing against the heat capacity rho c V */
-        double beta = isnan(s->def.oven_temperature) ? 0 : s->def.oven_beta, bc = 0;
-        for (int k = 0; k < s->ncol; k++)
-            if (!isnan(s->cols[k].temperature) && s->cols[k].beta > bc) bc = s->cols[k].beta;
-        beta += bc;
-        for (int m = 0; m < s->mats.n && beta > 0; m++) {
-            const material_slot *ms = &s->mats.slot[m];
-            const double rc = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
-            if (rc > 0) dt = fmin(dt, 0.25 * rc * hmin / o->h_factor / beta);
-        }
-    }
+    dt = fmin(dt, sph_heat_stable_dt(s, hmin, rhomin));
     if (s->def.dt_max > 0 && dt > s->def.dt_max) dt = s->def.dt_max;
     if (isinf(dt)) dt = s->def.cfl * s->def.dx;
     return dt * s->dt_scale;

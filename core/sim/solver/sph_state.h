@@ -1,0 +1,110 @@
+/* sph_state.h: what the SPH solver's files share, and only they (private
+ * to solver/sph*.c): struct sph_state, the particle columns a phase reads,
+ * and what each file lends the step. sph.c runs the step's phases;
+ * sph_viscosity.c holds the viscosity rule and eq. 3.8's renormalisation;
+ * sph_walls.c the fixed particles (no-slip walls, prescribed motion);
+ * sph_heat.c the heat rates (eq. 3.42, 3.45-3.46, the Robin flux). */
+#ifndef HEARTH_SIM_SPH_STATE_H
+#define HEARTH_SIM_SPH_STATE_H
+#include "sph.h"
+#include "sph_neighbours.h"
+
+#define KELVIN 273.15
+
+/* A fixed body's prescribed rigid motion (sph_walls.c): velocity and omega
+ * (constants, or motion(t) at the start of each step) about a pivot that
+ * moves with the body. */
+typedef struct sph_wall_motion {
+    int body;
+    double vel[3], omega[3]; /* this step's (m/s, rad/s) */
+    double pivot[3];         /* the rotation centre at the scene's time (m) */
+    double pending[3];       /* the pivot's move over the last step, applied once it stands (t == t_pending) */
+    double t_pending;        /* that step's end time; NAN when none is pending */
+    hearth_motion_fn motion; /* optional; not owned */
+    void *motion_ud;
+} sph_wall_motion;
+
+struct sph_state {
+    sph_cells cells;
+    sph_nlist nl;
+    int cap, n;     /* arrays hold cap particles; n = particles of the last step (-1 = stale) */
+    int valid;      /* per-particle results match the scene's particles */
+    int *key, *order;
+    double *perm;   /* permutation scratch, cap doubles */
+    double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *brown, *surf, *rhof, *dT, *Tprev;
+    double *rho0, *B, *mu, *c0, *xsph;
+    double *vc;     /* the viscous Laplacian's renormalisation (viscous_moments), per particle this step */
+    double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
+    double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
+    double amax;    /* largest |a| of the last step, for the force limit */
+    /* Per material: the schema index of the plugin parameter SPH applies
+     * itself as viscosity (eq. 3.19), or -1. Resolved once, when the material
+     * is added (sph_material_added); see sph_viscosity_index. */
+    int *visc_index;
+    int visc_cap;
+    sph_wall_motion *walls; /* moving fixed bodies (hearth_scene_body_motion), nwalls of walls_cap */
+    int nwalls, walls_cap;
+};
+
+/* The particle columns a phase reads. Sorting permutes the particles, and
+ * the permutation may swap the columns' storage, so a phase takes them fresh
+ * from sph_cols_of after every sort_and_list. */
+typedef struct sph_cols {
+    int n, dim;
+    const int *flags; /* NULL when no particle carries flags */
+    const int *mat;
+    double *x, *v, *C, *F, *state;
+    const double *m, *V0;
+    double *T, *Tmax; /* NULL without the temperature field */
+} sph_cols;
+
+static inline sph_cols sph_cols_of(hearth_scene *s) {
+    particles *ps = &s->ps;
+    return (sph_cols){
+        .n = ps->n,
+        .dim = s->def.dim,
+        .flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL,
+        .mat = pcoli(ps, PC_MAT),
+        .x = pcold(ps, PC_X),
+        .v = pcold(ps, PC_V),
+        .C = pcold(ps, PC_C),
+        .F = pcold(ps, PC_F),
+        .state = pcold(ps, PC_STATE),
+        .m = pcold(ps, PC_MASS),
+        .V0 = pcold(ps, PC_VOL0),
+        .T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL,
+        .Tmax = ps->enabled & (1u << PC_TEMP_MAX) ? pcold(ps, PC_TEMP_MAX) : NULL,
+    };
+}
+
+/// The scene's SPH state, made on first use (a material added, a wall's
+/// motion, or a step); NULL with err set when out of memory. (sph.c)
+struct sph_state *sph_state_of(hearth_scene *s, hearth_error *err);
+
+/* ---- sph_viscosity.c ---- */
+/// sph_solver.material_added: resolve the material's `viscosity` parameter once.
+hearth_status sph_material_added(hearth_scene *s, int mat, hearth_error *err);
+/// eq. 3.8's renormalisation per particle into st->vc (needs st->sp, st->rho, the lists).
+void sph_viscous_moments(hearth_scene *s);
+
+/* ---- sph_walls.c ---- */
+/// The wall normal n and fluid particle i's distance da to the wall surface; 0 without fixed neighbours.
+int sph_wall_frame(const hearth_scene *s, int i, double n[3], double *da);
+/// 1 + d_b / d_a: the factor on v_a in a's viscous interaction with wall particle b.
+double sph_wall_beta(const double d[3], const double n[3], double da, double dah);
+/// At the start of a step (serial: it may call motion callbacks): every fixed
+/// particle's velocity, its body's prescribed motion at time t or 0.
+void sph_walls_begin(hearth_scene *s, double t);
+/// At the end of a step: moving fixed bodies move rigidly over dt (exact for
+/// constant velocity and omega); their pivots follow once the step stands
+/// (a rolled-back step restores the particles, and its pivot move is dropped).
+void sph_walls_end(hearth_scene *s, double dt);
+/// Release the motion records (with the state).
+void sph_walls_free(struct sph_state *st);
+
+/* ---- sph_heat.c ---- */
+/// Heat rates dT/dt into st->dT (nothing without the temperature field).
+void sph_heat_rates(hearth_scene *s);
+/// The heat limits on dt (INFINITY when none applies); hmin, rhomin over the particles.
+double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin);
+#endif
