@@ -68,6 +68,13 @@ static inline double contact_delta(double sd, double dx) { return (CONTACT_BAND 
  * half: the tolerance decides it for holding, whatever the round-off). */
 #define HOLD_TOL 1e-3
 
+/* Nitsche's penalty for a held collider's face, gamma kappa / dx
+ * (heat_contact_apply). It must outweigh the flux terms for the symmetric form
+ * to stay positive; 4 does on the slab ladders (checked for faces on a node
+ * row and turned 30 degrees, not proven for every cut), and the explicit step
+ * is limited as for beta = gamma kappa / dx (thermal_dt_limit). */
+#define NITSCHE_GAMMA 4.0
+
 void thermal_init(thermal_state *h) { *h = (thermal_state){0}; }
 
 void thermal_free(thermal_state *h) {
@@ -91,6 +98,8 @@ double thermal_dt_limit(const hearth_scene *s) {
     double beta = isnan(s->def.oven_temperature) ? 0 : s->def.oven_beta;
     for (int c = 0; c < s->ncol; c++)
         if (!isnan(s->cols[c].temperature) && isfinite(s->cols[c].beta) && s->cols[c].beta > beta) beta = s->cols[c].beta; /* held nodes are not integrated */
+    int held = 0; /* a held collider's Nitsche penalty acts as beta = gamma kappa / dx */
+    for (int c = 0; c < s->ncol; c++) held |= !isnan(s->cols[c].temperature) && isinf(s->cols[c].beta);
     double dt = INFINITY;
     for (int m = 0; m < s->mats.n; m++) {
         const material_slot *ms = &s->mats.slot[m];
@@ -99,6 +108,7 @@ double thermal_dt_limit(const hearth_scene *s) {
         if (k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * s->def.dim * k));
         /* and on the Robin term: a boundary cell's rho alpha dx^dim against beta dx^(dim-1) */
         if (beta > 0) dt = fmin(dt, ra * s->def.dx / (2.0 * beta));
+        if (held && k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * NITSCHE_GAMMA * k));
     }
     return dt;
 }
@@ -215,7 +225,6 @@ static int contact_stencil(const grid *g, const double x[3], double *node[27], i
  * face), so the face is consistent. Serial in the particles' order, so
  * deterministic at any thread count; the points are a surface's, few against
  * the body's particles. */
-#define NITSCHE_GAMMA 4.0
 static void heat_contact_apply(hearth_scene *s, int in, int out, int src) {
     const grid *g = &s->g;
     const int NPB = g->nodes_per_block;
