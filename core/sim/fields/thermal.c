@@ -256,7 +256,7 @@ static void heat_contact_apply(hearth_scene *s, int in, int out, int src) {
 /* ---- held (Dirichlet) nodes -------------------------------------------- */
 
 /* Marks the nodes that keep a temperature in s->heat.fix (NaN: free) and sets
- * their CH_T to it (CH_T0 keeps theta^n, so particles take the change in G2P):
+ * their CH_T to it (held_settle later sets CH_T0 too; G2P blends by hold_h):
  * a node inside or on the face of a held collider (infinite beta), within the
  * collider's node-row tolerance; a node at least half of whose heat capacity
  * comes from held particles (a body with fixed_temperature), at those
@@ -297,7 +297,7 @@ static hearth_status mark_held(hearth_scene *s) {
             if (!(flags[i] & PF_HOLD_T)) continue;
             double *node[27], w[27];
             int l[27];
-            /* the particle's own stencil, unnormalised: its nodes all carry its heat capacity */
+            /* the particle's own stencil: its nodes all carry its heat capacity, so none is dropped */
             const int m = contact_stencil(g, X + 3 * i, node, l, w, NULL);
             const double hc = M[i] * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT];
             for (int j = 0; j < m; j++) {
