@@ -716,6 +716,23 @@ gravity_at_events_and_ramp)
     cat out.txt
     has out.txt "gravity_ramp ok" "step and ramp velocities, bad functions named"
     ;;
+held_temperature_lua)
+    # s:collider{fixed_temperature} and s:add{fixed_temperature}: refusals, held values, a checkpoint keeps them
+    run held_temperature.lua
+    expect_rc 0 "held temperatures"
+    has out.txt "held_temperature ok" "held collider and body, their refusals, a restored scene"
+    ;;
+lua_md_heat_examples)
+    # every example of docs/lua.md whose first line is "-- heat: ..." runs as printed
+    awk '/^```lua/{f=1;first=1;next} /^```/{f=0;next} f{if(first){k=($0 ~ /^-- heat:/);if(k)n++};first=0;if(k)print >("heat_example_" n ".lua")}' \
+        "$HEARTH_SOURCE_ROOT/docs/lua.md"
+    ls heat_example_*.lua >/dev/null 2>&1 || fail "docs/lua.md has no '-- heat:' example"
+    for f in heat_example_*.lua; do
+        "$hearth" run "$f" --quiet >out.txt 2>err.txt || fail "$f failed: $(cat err.txt)"
+        cat out.txt
+    done
+    [ "$(ls heat_example_*.lua | wc -l)" -ge 2 ] || fail "expected the held and the Robin examples"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"

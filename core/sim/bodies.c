@@ -33,8 +33,16 @@ int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_er
         err_set(err, HEARTH_ERR_PARAM, "body: saturation = %g; valid range [0, 1] (water volume over volume)", def->saturation);
         return -1;
     }
+    if (def->fixed_temperature && isnan(def->temperature)) {
+        err_set(err, HEARTH_ERR_PARAM, "body: fixed_temperature needs a temperature (degrees C) to hold");
+        return -1;
+    }
+    if (def->fixed_temperature && s->def.solver != HEARTH_SOLVER_MPM) {
+        err_set(err, HEARTH_ERR_PARAM, "body: fixed_temperature is held on the MPM grid; this scene's solver is SPH");
+        return -1;
+    }
     hearth_status st = particles_enable(&s->ps, PC_BODY, err);
-    if (!st && def->fixed) st = particles_enable(&s->ps, PC_FLAGS, err);
+    if (!st && (def->fixed || def->fixed_temperature)) st = particles_enable(&s->ps, PC_FLAGS, err);
     if (!st && !isnan(def->temperature)) st = scene_enable_temperature(s, err);
     if (!st && !isnan(def->saturation)) st = water_enable(s, err);
     if (st) return -1;
@@ -53,6 +61,7 @@ int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_er
             memset(pcold(&s->ps, PC_V) + 3 * i, 0, 3 * sizeof(double));
         }
         if (!isnan(def->temperature)) pcold(&s->ps, PC_TEMPERATURE)[i] = pcold(&s->ps, PC_TEMP_MAX)[i] = def->temperature;
+        if (def->fixed_temperature) pcoli(&s->ps, PC_FLAGS)[i] |= PF_HOLD_T;
     }
     if (!isnan(def->saturation)) water_init_particles(s, n0, s->ps.n, def->saturation);
     if (def->material == s->mix.mat && mixing_set_ratios(s, n0, s->ps.n, def->ratios, err)) {

@@ -472,6 +472,11 @@ int hearth_scene_add_collider(hearth_scene *s, const hearth_collider_def *def, h
         s->capcol = cap;
     }
     if (collider_init(&s->cols[s->ncol], def, err)) return -1;
+    if (!isnan(def->temperature) && isinf(def->beta) && s->def.solver != HEARTH_SOLVER_MPM) { /* held on the MPM grid */
+        collider_free(&s->cols[s->ncol]);
+        err_set(err, HEARTH_ERR_PARAM, "collider: beta = inf (held temperature) needs the MPM solver; this scene's solver is SPH");
+        return -1;
+    }
     if (!isnan(def->saturation) && water_enable(s, err)) { /* a wet collider makes water live */
         collider_free(&s->cols[s->ncol]);
         return -1;

@@ -597,13 +597,14 @@ local function material_id(s, m)
   return id, st.mats[id]
 end
 
---- s:add{shape = ..., material = ..., ppc = 4, velocity = {0,0}, jitter = 0.5, temperature = 20, saturation = 0.5} -> body id
+--- s:add{shape = ..., material = ..., ppc = 4, velocity = {0,0}, jitter = 0.5, temperature = 20, saturation = 0.5,
+---   fixed_temperature = false} -> body id (fixed_temperature: the body keeps its temperature, a Dirichlet boundary)
 --- A fixed body (fixed = true) under SPH is a wall; velocity = {..} or function(t), omega = ... and
 --- pivot = {..} (spelt as s:collider's) make it move rigidly: a lid, a paddle, a piston.
 function S:add(o)
   if type(o) ~= "table" then error("s:add: expected a table", 2) end
   check_keys(o, { shape = true, material = true, ppc = true, velocity = true, jitter = true, temperature = true,
-    name = true, fixed = true, saturation = true, omega = true, pivot = true }, "s:add")
+    name = true, fixed = true, saturation = true, omega = true, pivot = true, fixed_temperature = true }, "s:add")
   local mv, mw, mp, start_v = nil, o.omega, nil, o.velocity
   if o.fixed and (o.velocity ~= nil or o.omega ~= nil or o.pivot ~= nil) then -- a moving wall
     mv = o.velocity
@@ -638,8 +639,11 @@ function S:add(o)
   local vel = check_vec(start_v or { 0, 0, 0 }, "s:add: velocity")
   if o.temperature ~= nil then check_number(o.temperature, "s:add: temperature", -273.15, 5000, "degC") end
   if o.saturation ~= nil then check_number(o.saturation, "s:add: saturation", 0, 1) end
+  if o.fixed_temperature and o.temperature == nil then
+    error("s:add: fixed_temperature = true needs temperature = ... (degC), the temperature the body keeps", 2)
+  end
   local ok2, body = pcall(self._add, self, o.shape, type(id) == "table" and id[1] or id, math.floor(ppc), jitter, vel,
-    o.temperature, o.fixed, o.saturation, mix_ratios)
+    o.temperature, o.fixed, o.saturation, mix_ratios, o.fixed_temperature and true or false)
   if not ok2 then error(body, 2) end
   if mv ~= nil or mw ~= nil or mp ~= nil then
     local okm, em = pcall(self._body_motion, self, body, mv, mw, mp)
@@ -655,14 +659,22 @@ function S:add(o)
   return body
 end
 
---- s:collider{shape = ..., mode = "separate", friction = 0, velocity = {..} or function(t), omega = ..., pivot = {..}}
+--- s:collider{shape = ..., mode = "separate", friction = 0, velocity = {..} or function(t), omega = ..., pivot = {..},
+---   temperature = 200, beta = 100 or fixed_temperature = true}
+--- fixed_temperature = true (or beta = math.huge) holds the touching material at temperature (Dirichlet).
 function S:collider(o)
   if type(o) ~= "table" then error("s:collider: expected a table", 2) end
   check_keys(o, { shape = true, mode = true, friction = true, velocity = true, omega = true, pivot = true, name = true,
-    temperature = true, beta = true, saturation = true }, "s:collider")
+    temperature = true, beta = true, saturation = true, fixed_temperature = true }, "s:collider")
   if o.saturation ~= nil then check_number(o.saturation, "s:collider: saturation", 0, 1) end
   if o.temperature ~= nil then check_number(o.temperature, "s:collider: temperature", -273.15, 5000, "degC") end
-  if o.beta ~= nil then check_number(o.beta, "s:collider: beta", 0, 1e9, "W/(m^2 K)") end
+  if o.beta ~= nil and o.beta ~= math.huge then check_number(o.beta, "s:collider: beta", 0, 1e9, "W/(m^2 K)") end
+  if o.fixed_temperature and o.temperature == nil then
+    error("s:collider: fixed_temperature = true needs temperature = ... (degC), the temperature it holds", 2)
+  end
+  if o.fixed_temperature and o.beta ~= nil and o.beta ~= math.huge then
+    error("s:collider: fixed_temperature = true holds the temperature; a finite beta contradicts it (leave beta out)", 2)
+  end
   if not is_shape(o.shape) then error("s:collider: shape = h.plane(...), h.box(...), ... is required", 2) end
   local mode = check_choice(o.mode or "separate", "s:collider: mode", contact)
   local fr = check_number(o.friction or 0, "s:collider: friction", 0, 1e6)
@@ -672,7 +684,7 @@ function S:collider(o)
   if w ~= nil and type(w) ~= "function" and type(w) ~= "number" then w = check_vec(w, "s:collider: omega") end
   local p = o.pivot and check_vec(o.pivot, "s:collider: pivot") or nil
   local ok, id = pcall(self._collider, self, o.shape, mode, fr, v, w, p, o.temperature,
-    o.temperature and (o.beta or 100) or 0, o.saturation)
+    o.temperature and (o.fixed_temperature and math.huge or o.beta or 100) or 0, o.saturation)
   if not ok then error(id, 2) end
   return id
 end

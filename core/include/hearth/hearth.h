@@ -329,7 +329,8 @@ typedef struct hearth_collider_def {
     hearth_motion_fn motion;   ///< optional: velocity and omega as functions of time
     void *motion_ud;
     double temperature;        ///< a heated collider (pan, tray): its temperature (degrees C); NaN = not heated
-    double beta;               ///< contact heat transfer coefficient (W/(m^2 K)) ("conductive theta, beta", Ding et al. Table 2)
+    double beta;               ///< contact heat transfer coefficient (W/(m^2 K)) ("conductive theta, beta", Ding et al. Table 2);
+                               ///< INFINITY holds the touching material at `temperature` (Dirichlet: the grid nodes on or inside its face; MPM only)
     double saturation;         ///< a wet collider (cloth, humid surface) holds the saturation of the particles touching it; NaN = dry
 } hearth_collider_def;
 
@@ -405,6 +406,7 @@ typedef struct hearth_body_def {
     double saturation;         ///< initial water saturation (0..1); NaN = the material's. Setting it makes the water field live.
     int fixed;                 ///< pinned: the particles never move (for tests of the fields alone)
     double ratios[8];          ///< a mixture's initial mixing ratios per constituent (normalised; need not sum to 1)
+    int fixed_temperature;     ///< 1: the body keeps `temperature` (Dirichlet: its particles and the grid nodes it fills); needs a temperature; MPM only
 } hearth_body_def;
 
 /// ppc 4, jitter 0.5, at rest, temperature and saturation unset.

@@ -15,8 +15,23 @@
  * S beta (theta_out - theta) (the printed signs in §4/§6.3 are ambiguous; the
  * analytic slab test decides). Boundary particles and their areas S come from
  * boundary.c (§6.6).
- * Heated colliders act on particles within dx of them, each carrying V_p/dx
- * of contact area (a band of thickness dx sums to the contact area).
+ * Heated colliders act through surface quadrature points: each particle within
+ * 2 dx of the collider carries V_p delta(sdf) of contact area (delta a hat
+ * whose integral is one, so the band sums to the contact area), and its point
+ * is its projection on the collider's face, where the Robin term
+ * beta (theta_c - theta(x_s)) w_i(x_s) of the weak form is evaluated. The band
+ * particles themselves (V_p / dx each, within dx, rejected) put the contact half
+ * a cell inside the body and made it first order (`heat_collider_robin_converges`,
+ * docs/validation.md).
+ *
+ * Held temperatures (Dirichlet): a collider with infinite beta holds the nodes
+ * on or inside its face, a body with fixed_temperature the nodes it fills (at
+ * least half their heat capacity); those nodes keep the temperature and leave
+ * the unknowns of both schemes (mark_held; the CG below). B-splines do not
+ * vanish on the face, so a held collider's face also carries Nitsche's
+ * symmetric terms at the same surface points (heat_contact_apply): without
+ * them its order was 0.86 and its error eight times larger. A held body has
+ * no face to carry them (order 0.9). `heat_dirichlet_slab_converges`.
  *
  * The expansion term uses absolute temperature (theta + 273.15): in degrees C
  * it would change sign at the freezing point.
@@ -28,6 +43,7 @@
 #include "thermal.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 #include "alloc.h"
@@ -38,12 +54,37 @@
 
 #define KELVIN 273.15
 
+/* A heated collider's contact: particles within CONTACT_BAND cells of its face
+ * each carry V_p delta(sdf) of its area, delta the hat (2 dx - s) / (2 dx^2) on
+ * [0, 2 dx), whose integral is one: a lattice with 1, 2, 3 or 4 particles a
+ * cell across the band sums it exactly (the midpoint rule is exact on a line),
+ * and a turned lattice samples its smooth slope with little ripple (the box
+ * 1/dx on [0, dx) this replaced jumps at s = dx). */
+#define CONTACT_BAND 2.0
+static inline double contact_delta(double sd, double dx) { return (CONTACT_BAND * dx - sd) / (0.5 * CONTACT_BAND * CONTACT_BAND * dx * dx); }
+
+/* A node is held by a body when at least half its heat capacity is the held
+ * particles' (a node on the face between a held and a free body has exactly
+ * half: the tolerance decides it for holding, whatever the round-off). */
+#define HOLD_TOL 1e-3
+
+/* Nitsche's penalty for a held collider's face, gamma kappa / dx
+ * (heat_contact_apply). It must outweigh the flux terms for the symmetric form
+ * to stay positive; 4 does on the slab ladders (checked for faces on a node
+ * row and turned 30 degrees, not proven for every cut), and the explicit step
+ * is limited as for beta = gamma kappa / dx (thermal_dt_limit). */
+#define NITSCHE_GAMMA 4.0
+
 void thermal_init(thermal_state *h) { *h = (thermal_state){0}; }
 
 void thermal_free(thermal_state *h) {
     mem_free(h->bnd_coef, sizeof(double) * (size_t)h->bnd_cap);
     mem_free(h->bnd_temp, sizeof(double) * (size_t)h->bnd_cap);
     mem_free(h->cg_partial, sizeof(double) * (size_t)h->cg_cap);
+    mem_free(h->ct, sizeof(double) * THERMAL_CT * (size_t)h->ct_cap);
+    mem_free(h->fix, sizeof(double) * (size_t)h->fix_cap);
+    mem_free(h->fix_w, sizeof(double) * (size_t)h->fix_cap);
+    mem_free(h->hold_h, sizeof(double) * (size_t)h->hold_cap);
     thermal_init(h);
 }
 
@@ -56,7 +97,9 @@ double thermal_dt_limit(const hearth_scene *s) {
     /* the strongest boundary coupling: a node's heat capacity against S beta */
     double beta = isnan(s->def.oven_temperature) ? 0 : s->def.oven_beta;
     for (int c = 0; c < s->ncol; c++)
-        if (!isnan(s->cols[c].temperature) && s->cols[c].beta > beta) beta = s->cols[c].beta;
+        if (!isnan(s->cols[c].temperature) && isfinite(s->cols[c].beta) && s->cols[c].beta > beta) beta = s->cols[c].beta; /* held nodes are not integrated */
+    int held = 0; /* a held collider's Nitsche penalty acts as beta = gamma kappa / dx */
+    for (int c = 0; c < s->ncol; c++) held |= !isnan(s->cols[c].temperature) && isinf(s->cols[c].beta);
     double dt = INFINITY;
     for (int m = 0; m < s->mats.n; m++) {
         const material_slot *ms = &s->mats.slot[m];
@@ -65,6 +108,7 @@ double thermal_dt_limit(const hearth_scene *s) {
         if (k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * s->def.dim * k));
         /* and on the Robin term: a boundary cell's rho alpha dx^dim against beta dx^(dim-1) */
         if (beta > 0) dt = fmin(dt, ra * s->def.dx / (2.0 * beta));
+        if (held && k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * NITSCHE_GAMMA * k));
     }
     return dt;
 }
@@ -84,7 +128,7 @@ double thermal_energy(const hearth_scene *s) {
  * particles flagged PF_BOUNDARY, from the air boundary (boundary.c) and the
  * heated colliders. Other particles' entries are stale: readers check the
  * flag first, so the interior costs no memory traffic. */
-static void find_boundary(hearth_scene *s) {
+static hearth_status find_boundary(hearth_scene *s) {
     const grid *g = &s->g;
     particles *ps = &s->ps;
     const int n = ps->n;
@@ -97,21 +141,249 @@ static void find_boundary(hearth_scene *s) {
             coef[i] = oven ? s->boundary.area[i] * s->def.oven_beta : 0.0;
             temp[i] = oven ? s->def.oven_temperature : 0.0;
         }
-    /* heated colliders: the band within dx of the surface */
+    /* heated colliders: surface quadrature points on the collider's face; a held
+     * collider's (infinite beta) carry its face's Nitsche terms */
+    s->heat.nct = 0;
+    const int *mat = pcoli(ps, PC_MAT);
     for (int c = 0; c < s->ncol; c++) {
         const collider *col = &s->cols[c];
-        if (isnan(col->temperature) || col->beta <= 0) continue;
+        if (isnan(col->temperature) || !(col->beta > 0)) continue;
         for (int i = 0; i < n; i++) {
             const double *x = X + 3 * i;
-            if (!collider_near(col, x) || collider_sdf(col, x, NULL) >= g->dx) continue;
-            if (!(flags[i] & PF_BOUNDARY)) coef[i] = temp[i] = 0.0;
-            const double Vp = mpm_state_of(s)->vol[i]; /* J V_0, from this step's P2G */
-            /* a particle touching both air and the pan: the pan's temperature wins the ambient, areas add */
-            const double cS = Vp / g->dx * col->beta;
-            temp[i] = coef[i] > 0 ? (temp[i] * coef[i] + col->temperature * cS) / (coef[i] + cS) : col->temperature;
-            coef[i] += cS;
+            double nrm[3] = {0, 0, 0};
+            if (!collider_near(col, x)) continue;
+            const double sd = collider_sdf(col, x, nrm);
+            if (sd >= CONTACT_BAND * g->dx) continue;
+            if (!(flags[i] & PF_BOUNDARY)) coef[i] = temp[i] = 0.0; /* the probe's flag; the contact is not in coef */
             flags[i] |= PF_BOUNDARY;
+            if (s->heat.nct == s->heat.ct_cap) return HEARTH_ERR_NOMEM; /* thermal_prepare sized it: n per collider */
+            const double Vp = mpm_state_of(s)->vol[i]; /* J V_0, from this step's P2G */
+            double *ct = s->heat.ct + THERMAL_CT * s->heat.nct++;
+            for (int d = 0; d < 3; d++) ct[d] = x[d] - sd * nrm[d], ct[3 + d] = -nrm[d];
+            const double S = Vp * contact_delta(fmax(sd, 0.0), g->dx);
+            const int held = isinf(col->beta);
+            ct[6] = held ? S : col->beta * S;
+            ct[7] = col->temperature;
+            ct[8] = held ? s->mats.slot[mat[i]].core[CP_CONDUCTIVITY] : 0.0;
         }
+    }
+    return HEARTH_OK;
+}
+
+/* A point's B-spline stencil: the storage, local index, weight and weight
+ * gradient (1/m) of its nodes that carry heat capacity, the weights
+ * renormalised to sum to one (a node without material has no temperature).
+ * Returns the count. gw may be NULL. */
+static int contact_stencil(const grid *g, const double x[3], double *node[27], int l[27], double w[27], double (*gw)[3]) {
+    const int D = g->dim, NPB = g->nodes_per_block;
+    double wd[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
+    int base[3] = {0, 0, 0};
+    for (int d = 0; d < D; d++) {
+        const double Xd = (x[d] - g->lo[d]) * g->inv_dx;
+        base[d] = (int)floor(Xd - 0.5);
+        bspline_weights(Xd - base[d], wd[d], dw[d]);
+        for (int k = 0; k < 3; k++) dw[d][k] *= g->inv_dx;
+    }
+    int m = 0;
+    double wsum = 0;
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+            for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
+                int in = 1;
+                for (int d = 0; d < D; d++) in &= gi[d] >= 0 && gi[d] <= g->nn[d] - 1;
+                if (!in) continue;
+                const int slot = g->slot[grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B)];
+                if (slot < 0) continue;
+                const int li = D == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
+                                      : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
+                double *nd = grid_block(g, slot);
+                const double wz = D == 3 ? wd[2][c] : 1.0, wt = wd[0][a] * wd[1][b] * wz;
+                if (!(nd[CH_HC * NPB + li] > 0) || wt == 0) continue;
+                node[m] = nd, l[m] = li, w[m] = wt;
+                if (gw) {
+                    gw[m][0] = dw[0][a] * wd[1][b] * wz;
+                    gw[m][1] = wd[0][a] * dw[1][b] * wz;
+                    gw[m][2] = D == 3 ? wd[0][a] * wd[1][b] * dw[2][c] : 0.0;
+                }
+                m++;
+                wsum += wt;
+            }
+    for (int k = 0; k < m; k++) w[k] /= wsum;
+    return m;
+}
+
+/* The colliders' surface terms on the nodes, out_i += (A x)_i - b_i (b only
+ * when src), x from channel in, at each point x_s with area S:
+ *   Robin contact:  A_ij = beta S w_i w_j, b_i = beta S w_i T;
+ *   a held face (Nitsche's method, symmetric; nu the body's outward normal):
+ *   A_ij = kappa S (gamma / dx w_i w_j - w_i dw_j/dnu - dw_i/dnu w_j),
+ *   b_i = kappa S (gamma / dx w_i - dw_i/dnu) T.
+ * The held face's nodes are also eliminated (mark_held); Nitsche's terms give
+ * the free rows whose B-splines reach across the face the flux through it,
+ * which eliminating nodes alone leaves out (the B-splines do not vanish on the
+ * face), so the face is consistent. Serial in the particles' order, so
+ * deterministic at any thread count; the points are a surface's, few against
+ * the body's particles. */
+static void heat_contact_apply(hearth_scene *s, int in, int out, int src) {
+    const grid *g = &s->g;
+    const int NPB = g->nodes_per_block;
+    for (int k = 0; k < s->heat.nct; k++) {
+        const double *ct = s->heat.ct + THERMAL_CT * k;
+        double *node[27], w[27], gw[27][3];
+        int l[27];
+        const int m = contact_stencil(g, ct, node, l, w, gw);
+        double v = 0, dv = 0;
+        for (int j = 0; j < m; j++) {
+            const double xj = node[j][in * NPB + l[j]];
+            v += w[j] * xj;
+            dv += (gw[j][0] * ct[3] + gw[j][1] * ct[4] + gw[j][2] * ct[5]) * xj;
+        }
+        const double T = src ? ct[7] : 0.0;
+        if (ct[8] == 0) { /* Robin */
+            const double f = ct[6] * (v - T);
+            for (int j = 0; j < m; j++) node[j][out * NPB + l[j]] += f * w[j];
+            continue;
+        }
+        const double kS = ct[8] * ct[6], pen = NITSCHE_GAMMA * g->inv_dx;
+        for (int j = 0; j < m; j++) {
+            const double dn = gw[j][0] * ct[3] + gw[j][1] * ct[4] + gw[j][2] * ct[5];
+            node[j][out * NPB + l[j]] += kS * (pen * w[j] * (v - T) - w[j] * dv - dn * (v - T));
+        }
+    }
+}
+
+/* ---- held (Dirichlet) nodes -------------------------------------------- */
+
+/* Marks the nodes that keep a temperature in s->heat.fix (NaN: free) and sets
+ * their CH_T to it (held_settle later sets CH_T0 too; G2P blends by hold_h):
+ * a node inside or on the face of a held collider (infinite beta), within the
+ * collider's node-row tolerance; a node at least half of whose heat capacity
+ * comes from held particles (a body with fixed_temperature), at those
+ * particles' mean temperature. Free of cost when the scene holds neither. */
+static hearth_status mark_held(hearth_scene *s) {
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const int NPB = g->nodes_per_block, D = g->dim, n = ps->n;
+    if (s->heat.held_n != n) { /* rescan when particles come or go (bodies, cutting, restore) */
+        s->heat.held = 0;
+        const int *flags = pcoli(ps, PC_FLAGS);
+        for (int i = 0; i < n && !s->heat.held; i++) s->heat.held = (flags[i] & PF_HOLD_T) != 0;
+        s->heat.held_n = n;
+    }
+    int cols = 0;
+    for (int c = 0; c < s->ncol; c++) cols |= !isnan(s->cols[c].temperature) && isinf(s->cols[c].beta);
+    s->heat.nfix = 0;
+    if (!cols && !s->heat.held) return HEARTH_OK;
+    const int nn = g->nactive * NPB;
+    if (nn > s->heat.fix_cap) {
+        const int cap = 2 * nn;
+        double *a = mem_alloc(sizeof(double) * (size_t)cap), *b = mem_alloc(sizeof(double) * (size_t)cap);
+        if (!a || !b) {
+            mem_free(a, sizeof(double) * (size_t)cap);
+            mem_free(b, sizeof(double) * (size_t)cap);
+            return HEARTH_ERR_NOMEM;
+        }
+        mem_free(s->heat.fix, sizeof(double) * (size_t)s->heat.fix_cap);
+        mem_free(s->heat.fix_w, sizeof(double) * (size_t)s->heat.fix_cap);
+        s->heat.fix = a, s->heat.fix_w = b, s->heat.fix_cap = cap;
+    }
+    double *fix = s->heat.fix, *fw = s->heat.fix_w;
+    for (int k = 0; k < nn; k++) fix[k] = fw[k] = 0.0;
+    if (s->heat.held) { /* the held particles' heat capacity and C theta on their nodes */
+        const double *X = pcold(ps, PC_X), *M = pcold(ps, PC_MASS), *T = pcold(ps, PC_TEMPERATURE);
+        const int *flags = pcoli(ps, PC_FLAGS), *mat = pcoli(ps, PC_MAT);
+        for (int i = 0; i < n; i++) {
+            if (!(flags[i] & PF_HOLD_T)) continue;
+            double *node[27], w[27];
+            int l[27];
+            /* the particle's own stencil: its nodes all carry its heat capacity, so none is dropped */
+            const int m = contact_stencil(g, X + 3 * i, node, l, w, NULL);
+            const double hc = M[i] * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT];
+            for (int j = 0; j < m; j++) {
+                const int k = (int)((node[j] - g->data) / ((ptrdiff_t)g->nch * NPB)) * NPB + l[j];
+                fw[k] += w[j] * hc;
+                fix[k] += w[j] * hc * T[i];
+            }
+        }
+    }
+    for (int b = 0; b < g->nactive; b++) {
+        double *node = grid_block(g, b);
+        int bc[3];
+        grid_block_coords(g, g->active[b], bc);
+        for (int l = 0; l < NPB; l++) {
+            const int k = b * NPB + l;
+            const double c = node[CH_HC * NPB + l];
+            double held = NAN;
+            if (c > 0 && fw[k] >= (0.5 - HOLD_TOL) * c) held = fix[k] / fw[k];
+            if (c > 0 && cols) {
+                int gi[3];
+                grid_node_index(g, bc, l, gi);
+                double xn[3] = {0, 0, 0};
+                for (int d = 0; d < D; d++) xn[d] = g->lo[d] + gi[d] * g->dx;
+                for (int q = 0; q < s->ncol; q++) {
+                    const collider *col = &s->cols[q];
+                    if (isnan(col->temperature) || !isinf(col->beta) || !collider_near(col, xn)) continue;
+                    if (collider_sdf(col, xn, NULL) <= COLLIDER_ROW_TOL * g->dx) held = col->temperature;
+                }
+            }
+            fix[k] = held;
+            if (!isnan(held)) {
+                node[CH_T * NPB + l] = held;
+                s->heat.nfix++;
+            }
+        }
+    }
+    if (!s->heat.nfix) return HEARTH_OK;
+    /* each particle's weight on held nodes, for G2P (positions do not change before it) */
+    if (n > s->heat.hold_cap) {
+        double *h = mem_alloc(sizeof(double) * (size_t)n);
+        if (!h) return HEARTH_ERR_NOMEM;
+        mem_free(s->heat.hold_h, sizeof(double) * (size_t)s->heat.hold_cap);
+        s->heat.hold_h = h, s->heat.hold_cap = n;
+    }
+    const double *X = pcold(ps, PC_X);
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        double *node[27], w[27];
+        int l[27];
+        const int m = contact_stencil(g, X + 3 * i, node, l, w, NULL);
+        double h = 0;
+        for (int j = 0; j < m; j++) {
+            const int k = (int)((node[j] - g->data) / ((ptrdiff_t)g->nch * NPB)) * NPB + l[j];
+            if (!isnan(fix[k])) h += w[j];
+        }
+        s->heat.hold_h[i] = h;
+    }
+    return HEARTH_OK;
+}
+
+/* After the update: held nodes' CH_T0 takes their temperature, so FLIP (eq. 21)
+ * carries no change from them. A held node's theta^n is the particles' mean,
+ * not the held value, and FLIP would hand the difference to the particles
+ * around it every step, heating them without bound (seen: a free block beside
+ * a held one at 150 degC reached 218 degC); G2P instead blends the particles
+ * touching held nodes toward the nodes' field by their weight on them. */
+static void held_settle(hearth_scene *s) {
+    if (!s->heat.nfix) return;
+    grid *g = &s->g;
+    const int NPB = g->nodes_per_block;
+    for (int b = 0; b < g->nactive; b++) {
+        double *node = grid_block(g, b);
+        for (int l = 0; l < NPB; l++)
+            if (!isnan(s->heat.fix[b * NPB + l])) node[CH_T0 * NPB + l] = node[CH_T * NPB + l];
+    }
+}
+
+/* Zero channel ch at the held nodes (their rows leave the CG's unknowns). */
+static void clear_held(hearth_scene *s, int ch) {
+    if (!s->heat.nfix) return;
+    grid *g = &s->g;
+    const int NPB = g->nodes_per_block;
+    for (int b = 0; b < g->nactive; b++) {
+        double *node = grid_block(g, b);
+        for (int l = 0; l < NPB; l++)
+            if (!isnan(s->heat.fix[b * NPB + l])) node[ch * NPB + l] = 0.0;
     }
 }
 
@@ -173,7 +445,19 @@ hearth_status thermal_prepare(hearth_scene *s, hearth_error *err) {
             node[CH_R * NPB + l] = node[CH_B * NPB + l] = 0.0;
         }
     }
-    find_boundary(s);
+    int heated = 0; /* contact points: at most one per particle and heated collider */
+    for (int c = 0; c < s->ncol; c++) heated += !isnan(s->cols[c].temperature) && s->cols[c].beta > 0;
+    if (heated && (size_t)n * (size_t)heated > (size_t)s->heat.ct_cap) {
+        if ((size_t)n * (size_t)heated > (size_t)INT32_MAX / THERMAL_CT)
+            return err_set(err, HEARTH_ERR_NOMEM, "too many heated collider contacts (%d particles, %d colliders)", n, heated);
+        const int cap = n * heated;
+        double *x = mem_alloc(sizeof(double) * THERMAL_CT * (size_t)cap);
+        if (!x) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for heated collider contact (%d particles)", n);
+        mem_free(s->heat.ct, sizeof(double) * THERMAL_CT * (size_t)s->heat.ct_cap);
+        s->heat.ct = x, s->heat.ct_cap = cap;
+    }
+    if (find_boundary(s) || mark_held(s))
+        return err_set(err, HEARTH_ERR_NOMEM, "out of memory for held temperatures (%d grid blocks)", g->nactive);
     return HEARTH_OK;
 }
 
@@ -186,6 +470,11 @@ static void apply(hearth_scene *s, int in, int out) {
 void thermal_finish(hearth_scene *s, double dt) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block;
+    /* the heated colliders' contact into L theta^n - b (both schemes read CH_B - CH_R) */
+    heat_contact_apply(s, CH_T, CH_R, 1);
+    /* held nodes keep their temperature: no update, no unknown */
+    clear_held(s, CH_R);
+    clear_held(s, CH_B);
     if (!s->def.heat_implicit) { /* forward Euler (gamma = 0) */
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int k = 0; k < g->nactive; k++) {
@@ -195,6 +484,7 @@ void thermal_finish(hearth_scene *s, double dt) {
                 if (c > 0) node[CH_T * NPB + l] += dt * (node[CH_B * NPB + l] - node[CH_R * NPB + l]) / c;
             }
         }
+        held_settle(s);
         return;
     }
     /* backward Euler (gamma = 1): (C/dt + L) x = C/dt theta^n + b, solved by
@@ -202,7 +492,13 @@ void thermal_finish(hearth_scene *s, double dt) {
      * the diagonal C/dt: node heat capacities span orders of magnitude between
      * the interior and the edge of a body, and plain CG needed ~480 iterations
      * at a tiny step where the preconditioned one needs a handful.
-     * Channels: CH_T = x, CH_CG_R = r, CH_B = z = M^-1 r, CH_CG_P = p, CH_R = Ap. */
+     * Channels: CH_T = x, CH_CG_R = r, CH_B = z = M^-1 r, CH_CG_P = p, CH_R = Ap.
+     * Held nodes are eliminated: x starts at their temperature (mark_held), so
+     * L x^0 carries their known values to the right-hand side, and r, z, p and
+     * Ap are zero on them, which leaves CG the symmetric system of the free
+     * nodes. An infinite-beta stand-in (beta = 1e9) would keep them as
+     * unknowns with rows 1e9 times stiffer and cost iterations:
+     * `heat_dirichlet_cg_iterations`. */
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         double *node = grid_block(g, k);
@@ -231,6 +527,8 @@ void thermal_finish(hearth_scene *s, double dt) {
     for (int it = 0; it < 2000 && sqrt(rr) > 1e-12 * scale; it++) {
         clear_channel(s, CH_R);
         apply(s, CH_CG_P, CH_R);
+        heat_contact_apply(s, CH_CG_P, CH_R, 0);
+        clear_held(s, CH_R);
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int k = 0; k < g->nactive; k++) {
             double *node = grid_block(g, k);
@@ -263,4 +561,5 @@ void thermal_finish(hearth_scene *s, double dt) {
         }
         s->heat.cg_iterations = it + 1;
     }
+    held_settle(s);
 }

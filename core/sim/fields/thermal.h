@@ -11,12 +11,26 @@ struct hearth_scene;
  * allocated until the temperature field is live. transport.c reads bnd_coef
  * and bnd_temp (it applies the operator whose sources they are); only
  * thermal.c writes. */
+#define THERMAL_CT 9
 typedef struct thermal_state {
     double *bnd_coef, *bnd_temp; /* per particle: boundary S beta (W/K) and outside temperature (degrees C) */
     int bnd_cap;
     double *cg_partial;          /* per active block: partial dot products */
     int cg_cap;
     int cg_iterations;           /* of the last implicit solve */
+    /* heated colliders' contact, as surface quadrature points (find_boundary) */
+    double *ct;                  /* per point THERMAL_CT doubles: position on the collider's face (3), the body's
+                                  * outward normal there (3), beta S or S (W/K, m^dim-1), temperature, kappa
+                                  * (0: Robin contact; > 0: a held face's Nitsche terms) */
+    int nct, ct_cap;
+    /* held (Dirichlet) nodes: per active node (block slot * nodes per block) the
+     * temperature it keeps, NaN where free; scratch for the held bodies' sums */
+    double *fix, *fix_w;
+    int fix_cap, nfix;
+    int held_n, held;            /* particle count at the last scan for held particles; any found */
+    double *hold_h;              /* per particle, when nfix > 0: the weight of its held nodes (mpm.c's G2P
+                                  * blends its temperature toward the nodes' by it) */
+    int hold_cap;
 } thermal_state;
 
 /// Empty state (allocates nothing).

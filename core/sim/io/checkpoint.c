@@ -573,7 +573,7 @@ static int get_colliders(ck_cursor *c, hearth_scene *s, hearth_error *err) {
         const int32_t has_motion = get_i32(c);
         if (has_motion != 0 && has_motion != 1) ck_fail(c, "collider motion flag is neither 0 nor 1");
         cd.temperature = get_f64(c); /* NaN: not heated; collider_init checks the rest */
-        cd.beta = get_finite(c, "collider beta is not finite");
+        cd.beta = get_f64(c); /* +inf: held at its temperature; collider_init refuses NaN and negatives */
         cd.saturation = get_f64(c);  /* NaN: dry */
         const int id = c->bad ? -1 : hearth_scene_add_collider(s, &cd, err);
         hearth_shape_free(sh);
@@ -596,7 +596,7 @@ static int check_column(ck_cursor *c, const hearth_scene *s, int col, int n) {
             const int v = a[i];
             if (col == PC_MAT && (v < 0 || v >= s->mats.n)) return ck_fail(c, "a particle with an unknown material");
             if (col == PC_BODY && (v < -1 || v >= s->nbodies)) return ck_fail(c, "a particle with an unknown body");
-            if (col == PC_FLAGS && (v & ~(PF_FIXED | PF_BOUNDARY))) return ck_fail(c, "a particle with unknown flags");
+            if (col == PC_FLAGS && (v & ~(PF_FIXED | PF_BOUNDARY | PF_HOLD_T))) return ck_fail(c, "a particle with unknown flags");
             if (col == PC_ID && (v < 0 || v >= s->next_id)) return ck_fail(c, "a particle id out of range");
         }
         return 0;

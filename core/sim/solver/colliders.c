@@ -54,10 +54,10 @@ hearth_status collider_init(collider *c, const hearth_collider_def *def, hearth_
         c->shape = NULL;
         return err_set(err, HEARTH_ERR_PARAM, "collider temperature = %g degrees C; valid range [-273.15, 5000]", def->temperature);
     }
-    if (!(def->beta >= 0) || !isfinite(def->beta)) {
+    if (!(def->beta >= 0)) { /* +inf: a held temperature (thermal.c) */
         hearth_shape_free(c->shape);
         c->shape = NULL;
-        return err_set(err, HEARTH_ERR_PARAM, "collider beta = %g W/(m^2 K); valid range [0, inf)", def->beta);
+        return err_set(err, HEARTH_ERR_PARAM, "collider beta = %g W/(m^2 K); valid range [0, inf] (inf: held at its temperature)", def->beta);
     }
     if (!isnan(def->saturation) && !(def->saturation >= 0 && def->saturation <= 1)) {
         hearth_shape_free(c->shape);

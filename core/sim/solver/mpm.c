@@ -562,6 +562,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     double *Tcol = HEAT ? pcold(ps, PC_TEMPERATURE) : NULL, *Tmax = HEAT ? pcold(ps, PC_TEMP_MAX) : NULL;
     double *Gcol = HEAT && (ps->enabled & (1u << PC_GAS)) ? pcold(ps, PC_GAS) : NULL;
     const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
+    const double *hold_h = HEAT && s->heat.nfix > 0 ? s->heat.hold_h : NULL; /* held temperatures (thermal.c) */
     const pblock pb = s->mpm->pb[k];
     pb_partial *pp = &s->mpm->partial[k];
     const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
@@ -647,7 +648,10 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         if (WATER) w_removed += water_take(s, i, ds, &w_dmax, &w_emax);
         if (HEAT) { /* FLIP (eq. 21): the particle takes its nodes' temperature change */
             const double T0 = Tcol[i], flip = s->def.heat_flip;
-            Tcol[i] = flip == 1.0 ? T0 + dT : flip * (T0 + dT) + (1.0 - flip) * Tn; /* FLIP-PIC blend */
+            double T1 = flip == 1.0 ? T0 + dT : flip * (T0 + dT) + (1.0 - flip) * Tn; /* FLIP-PIC blend */
+            if (hold_h && hold_h[i] > 0) T1 += hold_h[i] * (Tn - T1); /* toward held nodes (thermal.c's held_settle) */
+            /* a held body's particle keeps its temperature (thermal.c holds its nodes) */
+            if (!(flags && (flags[i] & PF_HOLD_T))) Tcol[i] = T1;
             if (Tcol[i] > Tmax[i]) Tmax[i] = Tcol[i];
             if (Gcol) { /* CO2 over the step, temperature moving linearly from T0 to T1 (§5.4) */
                 const material_slot *gm = &s->mats.slot[mat[i]];

@@ -37,7 +37,7 @@ typedef enum pcol {
     PC_COUNT
 } pcol;
 
-enum { PF_FIXED = 1, PF_BOUNDARY = 2 }; /* pinned body; boundary particle (Ding et al. §6.6) */
+enum { PF_FIXED = 1, PF_BOUNDARY = 2, PF_HOLD_T = 4 }; /* pinned body; boundary particle (Ding et al. §6.6); keeps its temperature (a held body) */
 
 typedef struct particles {
     int n, cap;
