@@ -269,6 +269,71 @@ static int all_finite(const double *a, int n) {
 enum { P2G_HC = GRID_NCH_MOMENTUM, P2G_T, P2G_MW, P2G_SW, P2G_V, P2G_NCH };
 static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T, CH_MW, CH_SW, CH_CG_R};
 
+/* The quadratic B-spline N(r) of a distance r in cells (the weight of a node r cells away). */
+static inline double bspline_at(double r) {
+    r = fabs(r);
+    return r < 0.5 ? 0.75 - r * r : r < 1.5 ? 0.5 * (1.5 - r) * (1.5 - r) : 0.0;
+}
+
+/* The reaction of sticky colliders on the free nodes next to their faces.
+ * A node within 1.5 dx of a face has part of its B-spline support inside the
+ * collider, where there is no material; its equation then needs the weak
+ * form's boundary term (the face's traction times the node's weight there,
+ * 1/8 for the first node row above a face on a row), and the grid update,
+ * which only holds the nodes on and inside the face, drops it. The material
+ * next to the face then made up the missing force: the particle row 0.75 dx
+ * above a sticky floor carried 18% too much stress at every dx, and the base
+ * stress of a settled column overshot more as dx shrank
+ * (`column_base_stress`). Each particle within 1.5 dx outside a sticky face
+ * gets a mirror particle reflected through the face, with its Kirchhoff
+ * stress and volume and no mass or momentum, whose stress force goes to the
+ * particle's own stencil nodes (evenly extended stress: the traction term is
+ * exact for a stress constant near the face, and first order in dx beyond).
+ * For a face on a node row the mirrors fill exactly the lattice sites the
+ * collider cuts away, so the first free row sees the stencil of an interior
+ * node. The nodes on and inside the face receive mirror force too, which
+ * does nothing: the grid update sets their velocity. Slip and separate
+ * colliders supply no shear and may let go, and a grip holds material inside
+ * it whose own stress reaches those nodes: none of them gets mirrors.
+ * Rejected: mirroring in a pass after P2G (a mirror's stencil may leave the
+ * particle's tile, so it would need tau stored per particle and a serial
+ * scatter); restricting the mirror to the particle's stencil keeps it in the
+ * tile, and for a face along a grid axis that stencil holds every free node
+ * the mirror reaches. Only a scene with a sticky collider pays for this. */
+static void p2g_mirror(const hearth_scene *s, const int D, const double *x, const double *tau, double k0,
+                       const int base[3], const double fx[3], double *tile) {
+    const grid *g = &s->g;
+    const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
+    const double dx = g->dx, inv_dx = g->inv_dx;
+    for (int c = 0; c < s->ncol; c++) {
+        const collider *cl = &s->cols[c];
+        if (cl->mode != HEARTH_STICKY || !collider_near(cl, x)) continue;
+        double n[3];
+        const double phi = collider_sdf(cl, x, n);
+        if (!(phi >= 0 && phi < 1.5 * dx)) continue;
+        if (D == 2) n[2] = 0.0;
+        /* node i relative to the mirror x - 2 phi n: (x_i - x) + 2 phi n, in cells */
+        const double sh[3] = {2 * phi * n[0] * inv_dx, 2 * phi * n[1] * inv_dx, 2 * phi * n[2] * inv_dx};
+        double wm[3][3], rm[3][3];
+        for (int d = 0; d < 3; d++)
+            for (int a = 0; a < 3; a++) {
+                rm[d][a] = d < D ? a - fx[d] + sh[d] : 0.0;
+                wm[d][a] = d < D ? bspline_at(rm[d][a]) : (a == 0);
+            }
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++)
+                for (int cc = 0; cc < (D == 3 ? 3 : 1); cc++) {
+                    const double w = wm[0][a] * wm[1][b] * wm[2][cc];
+                    if (w == 0.0) continue;
+                    const double r[3] = {rm[0][a] * dx, rm[1][b] * dx, D == 3 ? rm[2][cc] * dx : 0.0};
+                    const int t = D == 2 ? (base[0] + a) * GRID_T + (base[1] + b)
+                                         : ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + cc);
+                    for (int q = 0; q < D; q++)
+                        tile[(q + 1) * TN + t] -= w * k0 * (tau[3 * q] * r[0] + tau[3 * q + 1] * r[1] + tau[3 * q + 2] * r[2]);
+                }
+    }
+}
+
 /* D (2 or 3), HEAT (temperature live) and WATER (water live) are compile-time
  * constants in each instantiation below, so a momentum-only scene runs the
  * momentum-only loops. */
@@ -298,7 +363,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     const double *Wcol = ps->enabled & (1u << PC_WATER) ? pcold(ps, PC_WATER) : NULL;
     const double *S0col = Wcol ? pcold(ps, PC_SAT0) : NULL;
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
-    const int stride = ps->state_stride, apic = s->def.transfer == 0;
+    const int stride = ps->state_stride, apic = s->def.transfer == 0, mirror = st->sticky_faces;
     double pscratch[SCENE_MAX_PARAMS], cmax = 0, numax = 0; /* numax: largest kinematic viscosity a plugin applies (m^2/s) */
     /* what this scene supplies to the material door, the same for every particle; gas needs the porosity */
     const unsigned env_flags = MATERIAL_ZERO_FAILED | (Gcol ? MATERIAL_POROSITY_PLASTIC : 0u) | (HEAT ? MATERIAL_EXPANSION : 0u);
@@ -423,6 +488,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 }
             }
         }
+        if (mirror) p2g_mirror(s, D, x, tau, k0, base, fx, tile);
     }
 
     pp->cmax = cmax;
@@ -456,7 +522,9 @@ static const block_fn p2g_fns[2][2][2] = {{{p2g_200, p2g_201}, {p2g_210, p2g_211
 void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
     (void)rep;
     const block_fn fn = p2g_fns[s->g.dim == 3][thermal_active(s)][water_active(s)];
-    const mpm_state *m = s->mpm;
+    mpm_state *m = s->mpm;
+    m->sticky_faces = 0;
+    for (int c = 0; c < s->ncol; c++) m->sticky_faces |= s->cols[c].mode == HEARTH_STICKY;
     for (int k = 0; k < m->npb; k++) m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
@@ -536,6 +604,106 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
     return vcol2;
 }
 
+/* 1 when a sticky collider holds the point x (on or inside its face, as
+ * grid_update_block decides), with that collider's velocity in vb; the
+ * first such collider's sdf and outward normal in *phi and n when asked. */
+static int sticky_held(const hearth_scene *s, const double x[3], double vb[3], double *phi, double n[3]) {
+    const double band = COLLIDER_ROW_TOL * s->g.dx;
+    for (int c = 0; c < s->ncol; c++) {
+        const collider *cl = &s->cols[c];
+        if (cl->mode != HEARTH_STICKY || !collider_near(cl, x)) continue;
+        double nn[3];
+        const double d = collider_sdf(cl, x, nn);
+        if (d > band) continue;
+        collider_velocity_at(cl, x, vb);
+        if (s->g.dim == 2) vb[2] = 0.0;
+        if (phi) *phi = d;
+        if (n) memcpy(n, nn, sizeof nn);
+        return 1;
+    }
+    return 0;
+}
+
+/* The grid velocity at x, multilinear in the 2^dim nodes around it, reading
+ * a node held by a sticky collider as that collider's velocity (not the
+ * grid, which sticky_ghosts may be writing) and leaving out nodes without
+ * mass. Returns 0 when no node counts. */
+static int grid_velocity_linear(const hearth_scene *s, const double x[3], double v[3]) {
+    const grid *g = &s->g;
+    const int D = g->dim, NPB = g->nodes_per_block;
+    int b[3] = {0, 0, 0};
+    double f[3] = {0, 0, 0}, sw = 0;
+    for (int d = 0; d < D; d++) {
+        const double X = (x[d] - g->lo[d]) * g->inv_dx;
+        b[d] = (int)floor(X);
+        f[d] = X - b[d];
+    }
+    v[0] = v[1] = v[2] = 0.0;
+    for (int k = 0; k < (1 << D); k++) {
+        int gi[3] = {0, 0, 0};
+        double w = 1, xi[3] = {0, 0, 0};
+        for (int d = 0; d < D; d++) {
+            const int o = (k >> d) & 1;
+            gi[d] = b[d] + o;
+            w *= o ? f[d] : 1.0 - f[d];
+            xi[d] = g->lo[d] + gi[d] * g->dx;
+        }
+        if (w == 0.0) continue;
+        int inside = 1;
+        for (int d = 0; d < D; d++) inside = inside && gi[d] >= 0 && gi[d] < g->nn[d];
+        if (!inside) continue;
+        double vn[3];
+        if (!sticky_held(s, xi, vn, NULL, NULL)) {
+            const int bc[3] = {gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B};
+            const int slot = g->slot[grid_block_id(g, bc[0], bc[1], bc[2])];
+            if (slot < 0) continue;
+            const int l = D == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
+                                 : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
+            const double *node = grid_block(g, slot);
+            if (!(node[l] > 0.0)) continue;
+            for (int d = 0; d < 3; d++) vn[d] = node[(d + 1) * NPB + l];
+        }
+        for (int d = 0; d < 3; d++) v[d] += w * vn[d];
+        sw += w;
+    }
+    if (!(sw > 0)) return 0;
+    for (int d = 0; d < 3; d++) v[d] /= sw;
+    return 1;
+}
+
+/* The held nodes within 1.5 dx inside a sticky face take the odd reflection
+ * of the free velocity, v_i = 2 v_b - v(x_i - 2 phi_i n), instead of v_b
+ * (ghost nodes). A particle near the face reads them in G2P: a velocity field
+ * linear through the wall then gives the particle its exact velocity and
+ * gradient, where holding those nodes at v_b left the particle 0.25 dx above
+ * a floor on a node row 16% short of its strain rate (its lowest node,
+ * weight 1/32, a cell inside the floor, read 0 instead of -v of the first
+ * free row), and the rows next to the floor settled to a wrong stress
+ * (`column_base_stress`). Together with p2g_mirror's reaction this is the
+ * mirror-particle treatment of a sticky face: stress extended evenly,
+ * velocity oddly. Nothing but G2P reads these nodes after the grid update,
+ * and the nodes it writes are never read here (held nodes are read as v_b),
+ * so blocks may run in any order. Only a scene with a sticky collider runs it. */
+static void sticky_ghosts_block(const hearth_scene *s, int k) {
+    const grid *g = &s->g;
+    const int D = g->dim, NPB = g->nodes_per_block;
+    double *node = grid_block(g, k);
+    int bc[3];
+    grid_block_coords(g, g->active[k], bc);
+    for (int l = 0; l < NPB; l++) {
+        if (!(node[l] > 0.0)) continue;
+        int idx[3];
+        grid_node_index(g, bc, l, idx);
+        double xi[3] = {0, 0, 0}, vb[3], n[3], phi;
+        for (int d = 0; d < D; d++) xi[d] = g->lo[d] + idx[d] * g->dx;
+        if (!sticky_held(s, xi, vb, &phi, n) || !(phi > -1.5 * g->dx)) continue;
+        double xr[3] = {0, 0, 0}, vr[3];
+        for (int d = 0; d < D; d++) xr[d] = xi[d] - 2 * phi * n[d];
+        if (!grid_velocity_linear(s, xr, vr)) continue;
+        for (int d = 0; d < D; d++) node[(d + 1) * NPB + l] = 2 * vb[d] - vr[d];
+    }
+}
+
 double mpm_grid_update(hearth_scene *s, double dt) {
     const grid *g = &s->g;
     double vcol2 = 0; /* the fastest collider at a node with mass (the guard's driven energy) */
@@ -550,6 +718,10 @@ double mpm_grid_update(hearth_scene *s, double dt) {
     } else {
 #pragma omp parallel for schedule(dynamic, 4) reduction(max : vcol2) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int k = 0; k < g->nactive; k++) vcol2 = fmax(vcol2, grid_update_block(s, k, dt, 1.0, 0));
+    }
+    if (s->mpm->sticky_faces) {
+#pragma omp parallel for schedule(dynamic, 4) if (s->ps.n >= SCENE_PARALLEL_MIN)
+        for (int k = 0; k < g->nactive; k++) sticky_ghosts_block(s, k);
     }
     return sqrt(vcol2);
 }
