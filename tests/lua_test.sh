@@ -711,6 +711,13 @@ gravity_at_events_and_ramp)
     cat out.txt
     has out.txt "gravity_ramp ok" "step and ramp velocities, bad functions named"
     ;;
+lua_body_force_varies_in_space)
+    # s:body_force(function(x, y, z, t) ...): a column under a force growing with height against its closed form
+    run body_force_field.lua
+    expect_rc 0 "s:body_force"
+    cat out.txt
+    has out.txt "body_force_field ok" "stress under a varying body force at two resolutions, bad functions named"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"

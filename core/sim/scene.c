@@ -512,6 +512,12 @@ static void gravity_at_step(hearth_scene *s) {
 void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void *ud) {
     s->body_force = fn;
     s->body_force_ud = fn ? ud : NULL;
+    s->body_force_serial = 0;
+}
+
+void hearth_scene_set_body_force_serial(hearth_scene *s, hearth_body_force_fn fn, void *ud) {
+    hearth_scene_set_body_force(s, fn, ud);
+    s->body_force_serial = fn != NULL;
 }
 
 /* ---- stepping -------------------------------------------------------- */

@@ -707,16 +707,18 @@ static void sticky_ghosts_block(const hearth_scene *s, int k) {
 double mpm_grid_update(hearth_scene *s, double dt) {
     const grid *g = &s->g;
     double vcol2 = 0; /* the fastest collider at a node with mass (the guard's driven energy) */
+    /* a body force that is not thread-safe (a Lua function) keeps the update on one thread */
+    const int par = s->ps.n >= SCENE_PARALLEL_MIN && !s->body_force_serial;
     if (s->def.damping > 0) {
         /* Velocity damping for static problems, implicit in the drag (v' = v + dt (g - c v')) so any c dt
          * is stable; an explicit factor 1 - c dt would reverse velocities past c dt = 1. It acts after
          * gravity and before walls and colliders: damping the momentum before gravity instead would
          * leave a body in equilibrium a residual velocity dt g c dt / (1 + c dt), and it would sink. */
         const double damp = 1.0 / (1.0 + s->def.damping * dt);
-#pragma omp parallel for schedule(dynamic, 4) reduction(max : vcol2) if (s->ps.n >= SCENE_PARALLEL_MIN)
+#pragma omp parallel for schedule(dynamic, 4) reduction(max : vcol2) if (par)
         for (int k = 0; k < g->nactive; k++) vcol2 = fmax(vcol2, grid_update_block(s, k, dt, damp, 1));
     } else {
-#pragma omp parallel for schedule(dynamic, 4) reduction(max : vcol2) if (s->ps.n >= SCENE_PARALLEL_MIN)
+#pragma omp parallel for schedule(dynamic, 4) reduction(max : vcol2) if (par)
         for (int k = 0; k < g->nactive; k++) vcol2 = fmax(vcol2, grid_update_block(s, k, dt, 1.0, 0));
     }
     if (s->mpm->sticky_faces) {

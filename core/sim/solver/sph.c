@@ -807,7 +807,7 @@ static void phase_forces(hearth_scene *s, double dt) {
     const double beta_oven = isfinite(Text) ? s->def.oven_beta : 0.0;
     int robin = beta_oven > 0;
     for (int q = 0; q < s->ncol; q++) robin |= !isnan(s->cols[q].temperature) && s->cols[q].beta > 0;
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN && !s->body_force_serial)
     for (int i = 0; i < n; i++) {
         double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0}, dTi = 0;
         if (s->body_force) {
