@@ -221,6 +221,7 @@ typedef struct hearth_scene_def {
     int solver;              ///< hearth_solver; default MPM
     hearth_sph_def sph;      ///< SPH options (solver = HEARTH_SOLVER_SPH)
     double damping;          ///< MPM velocity damping c (1/s): the grid velocity decays as 1/(1 + c dt) a step; 0 = off
+    int periodic[3];         ///< 1: the box wraps along that axis (no walls there); the box length must be a whole number of dx. SPH: as sph.periodic
 } hearth_scene_def;
 
 /// Defaults: those of hearth_scene_settings() (2D, dx 0.01, box [0,1]^3, gravity

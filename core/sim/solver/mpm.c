@@ -161,6 +161,99 @@ static int block_of_position(const grid *g, const double *x) {
     return grid_block_id(g, b[0], b[1], b[2]);
 }
 
+/* ---- periodic axes ----------------------------------------------------
+ *
+ * Along a periodic axis of N cells the box [lo, hi) is one period. The grid
+ * there starts a node below lo and ends two above hi (scene.c): node j lies
+ * at lo + (j - 1) dx, the nodes j = 1..N are the period's own, j = 0 is a
+ * ghost of N, and j = N + 1, N + 2 are ghosts of 1 and 2. Particles stay in
+ * [lo, hi) (wrapped by the sort and by G2P), so their stencils reach the
+ * ghosts and no further. After P2G each ghost's mass and momentum are added
+ * to its node (periodic_fold), the grid update runs as usual (no walls on
+ * the axis), and the ghosts take their node's velocity back (the unfold)
+ * before G2P. Ghosts are folded axis by axis, so a corner ghost of two
+ * periodic axes reaches its node in two hops; unfolding goes in the reverse
+ * order so each hop reads a finished node. The sort also activates the
+ * blocks that hold a ghost's node (periodic_mark). Heat and water are not
+ * wrapped (their passes have no ghosts): a periodic scene with them stops
+ * with an error. Rejected: indexing the grid modulo N inside P2G and G2P,
+ * which would put a test in every stencil loop of every scene. */
+
+/* x moved into [lo, hi) by whole periods */
+static inline double periodic_wrap(double x, double lo, double hi) {
+    const double L = hi - lo;
+    if (x >= lo && x < hi) return x;
+    if (!isfinite(x)) return lo; /* the guard stops on it; keep the block index defined */
+    x -= L * floor((x - lo) / L);
+    return x >= lo && x < hi ? x : lo; /* round-off at the top edge */
+}
+
+/* The node a ghost stands for along an axis of nn = N + 3 nodes, or -1 for a node of the period. */
+static inline int periodic_image(int j, int nn) {
+    const int N = nn - 3;
+    return j == 0 ? N : j > N ? j - N : -1;
+}
+
+/* Mark the blocks holding the nodes that the marked blocks' ghosts stand for. */
+static void periodic_mark(const hearth_scene *s, unsigned char *mark) {
+    const grid *g = &s->g;
+    for (int d = 0; d < g->dim; d++) {
+        if (!s->def.periodic[d]) continue;
+        const int N = g->nn[d] - 3, top0 = (N + 1) / GRID_B, top1 = (N + 2) / GRID_B;
+        for (int pass = 0; pass < 2; pass++) /* a block may be both a target and a source of ghosts */
+            for (int b = 0; b < g->nblocks; b++) {
+                if (!mark[b]) continue;
+                int c[3];
+                grid_block_coords(g, b, c);
+                const int cd = c[d];
+                if (cd == 0) {
+                    c[d] = N / GRID_B;
+                    mark[grid_block_id(g, c[0], c[1], c[2])] = 1;
+                    c[d] = cd;
+                }
+                if (cd == top0 || cd == top1) {
+                    c[d] = 0;
+                    mark[grid_block_id(g, c[0], c[1], c[2])] = 1;
+                }
+            }
+    }
+}
+
+/* unfold = 0: add every ghost's mass and momentum to its node; 1: give every
+ * ghost its node's mass and velocity. Serial and in block order: deterministic. */
+static void periodic_fold(hearth_scene *s, int unfold) {
+    grid *g = &s->g;
+    const int D = g->dim, NPB = g->nodes_per_block;
+    for (int q = 0; q < D; q++) {
+        const int d = unfold ? D - 1 - q : q;
+        if (!s->def.periodic[d]) continue;
+        for (int k = 0; k < g->nactive; k++) {
+            int bc[3];
+            grid_block_coords(g, g->active[k], bc);
+            if (bc[d] != 0 && (bc[d] + 1) * GRID_B <= g->nn[d] - 2) continue; /* no ghost along d */
+            double *node = grid_block(g, k);
+            for (int l = 0; l < NPB; l++) {
+                int idx[3];
+                grid_node_index(g, bc, l, idx);
+                int inside = 1;
+                for (int e = 0; e < D; e++) inside = inside && idx[e] < g->nn[e];
+                const int img = inside ? periodic_image(idx[d], g->nn[d]) : -1;
+                if (img < 0) continue;
+                idx[d] = img;
+                const int slot = g->slot[grid_block_id(g, idx[0] / GRID_B, idx[1] / GRID_B, D == 3 ? idx[2] / GRID_B : 0)];
+                if (slot < 0) continue; /* only for a ghost no particle reaches (periodic_mark) */
+                const int lt = D == 2 ? (idx[0] % GRID_B) * GRID_B + idx[1] % GRID_B
+                                      : ((idx[0] % GRID_B) * GRID_B + idx[1] % GRID_B) * GRID_B + idx[2] % GRID_B;
+                double *tn = grid_block(g, slot);
+                for (int ch = 0; ch < GRID_NCH_MOMENTUM; ch++) {
+                    if (unfold) node[ch * NPB + l] = tn[ch * NPB + lt];
+                    else tn[ch * NPB + lt] += node[ch * NPB + l];
+                }
+            }
+        }
+    }
+}
+
 /* Put a particle outside the usable domain (one cell inside the box: every
  * node of its stencil on the grid) back on its edge. Returns 1 if it moved.
  * G2P clamps too, but a collider's projection comes after that clamp, and a
@@ -170,10 +263,14 @@ static int block_of_position(const grid *g, const double *x) {
  * chosen, makes the invariant hold whatever moved the particle (a collider,
  * a plugin, a restored file). A NaN coordinate goes to the low edge so the
  * cast below stays defined; the guard has already stopped on it. */
-static int clamp_to_grid(const grid *g, double *x) {
+static int clamp_to_grid(const grid *g, const int *periodic, double *x) {
     int moved = 0;
     for (int d = 0; d < g->dim; d++) {
         const double lo = g->lo[d] + g->dx, hi = g->lo[d] + (g->nn[d] - 2) * g->dx;
+        if (periodic[d]) { /* on a periodic axis lo and hi are the box's own faces: wrap into [lo, hi) */
+            x[d] = periodic_wrap(x[d], lo, hi);
+            continue;
+        }
         if (!(x[d] >= lo)) {
             x[d] = lo;
             moved = 1;
@@ -196,9 +293,10 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     int *keys = m->keys, *order = m->order, *counts = m->counts;
 
     long moved = 0;
+    const int *periodic = s->def.periodic;
 #pragma omp parallel for schedule(static) reduction(+ : moved) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        moved += clamp_to_grid(g, X + 3 * i);
+        moved += clamp_to_grid(g, periodic, X + 3 * i);
         keys[i] = block_of_position(g, X + 3 * i);
     }
     s->out_of_domain += moved;
@@ -242,6 +340,7 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
         grid_block_coords(g, m->pb[k].block, c);
         m->colour_pb[fill[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++] = k;
     }
+    if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) periodic_mark(s, m->mark);
     st = grid_set_channels(g, thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
     if (st) return st;
     return grid_activate(g, m->mark, err);
@@ -577,6 +676,7 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
         for (int d = 0; d < D; d++) {
             const double zero[3] = {0, 0, 0};
             double n[3] = {0, 0, 0};
+            if (def->periodic[d]) continue; /* no walls across a periodic axis */
             if (idx[d] < 2) n[d] = 1.0;
             else if (idx[d] > g->nn[d] - 3) n[d] = -1.0;
             else continue;
@@ -766,6 +866,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     const double *M = pcold(ps, PC_MASS);
     const int *mat = pcoli(ps, PC_MAT);
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
+    const int *periodic = s->def.periodic;
     double lo[3], hi[3];
     for (int d = 0; d < 3; d++) {
         lo[d] = g->lo[d] + dx;                       /* keep every particle's stencil on the grid */
@@ -859,7 +960,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                 x[d] += dt * nv[d];
             }
             /* a particle that left the domain is put back on its edge and counted, never dropped */
-            if (x[d] < lo[d]) { x[d] = lo[d]; out = 1; }
+            if (periodic[d]) x[d] = periodic_wrap(x[d], lo[d], hi[d]);
+            else if (x[d] < lo[d]) { x[d] = lo[d]; out = 1; }
             else if (x[d] > hi[d]) { x[d] = hi[d]; out = 1; }
         }
         ood += out;
@@ -941,8 +1043,13 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     hearth_status st = mpm_sort(s, err);
     if (st) return st;
     if (mixing_active(s) && (st = mixing_update(s, err))) return st;
-    mpm_p2g(s, dt, rep);
     const int heat = thermal_active(s), water = water_active(s);
+    const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
+    if (wrap && (heat || water))
+        return err_set(err, HEARTH_ERR_PARAM, "scene: periodic axes (periodic_%c) do not carry %s yet; use a closed box",
+                       "xyz"[s->def.periodic[0] ? 0 : s->def.periodic[1] ? 1 : 2], heat ? "heat" : "water");
+    mpm_p2g(s, dt, rep);
+    if (wrap) periodic_fold(s, 0);
     if (heat || water) {
         if ((st = boundary_find(s, err))) return st;
         if (heat && (st = thermal_prepare(s, err))) return st;
@@ -955,6 +1062,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         if (heat) thermal_finish(s, dt);
     }
     const double vcol = mpm_grid_update(s, dt);
+    if (wrap) periodic_fold(s, 1);
     mpm_g2p(s, dt, rep);
     if (water) water_finish(s);
     rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;
@@ -981,7 +1089,7 @@ double mpm_stable_dt(const hearth_scene *s) {
 static void mpm_region(const hearth_scene *s, double lo[3], double hi[3]) {
     for (int d = 0; d < 3; d++) {
         lo[d] = d < s->def.dim ? s->g.lo[d] + s->g.dx : 0;
-        hi[d] = d < s->def.dim ? s->g.lo[d] + (s->g.nn[d] - 2) * s->g.dx : 0;
+        hi[d] = d < s->def.dim ? s->g.lo[d] + (s->g.nn[d] - 2) * s->g.dx : 0; /* periodic: the box's own [lo, hi) */
     }
 }
 
