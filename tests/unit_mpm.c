@@ -1237,9 +1237,48 @@ TEST(mpm_periodic_conserves_momentum) {
     hearth_scene_destroy(s);
 }
 
+/* What periodic axes refuse, each named: a period that is not a whole
+ * number of cells, a z axis in 2D, heat (its passes have no ghosts yet), a
+ * checkpoint; SPH takes them as its own sph.periodic axes. */
+TEST(mpm_periodic_refusals) {
+    hearth_error err;
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.03; /* 33.3 cells across the unit box */
+    d.periodic[0] = 1;
+    CHECK(hearth_scene_create(&d, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "whole number of cells");
+    d = hearth_default_scene_def();
+    d.periodic[2] = 1;
+    CHECK(hearth_scene_create(&d, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "periodic_z in a 2D scene");
+    d = hearth_default_scene_def();
+    d.dx = 1.0 / 32;
+    d.periodic[1] = 1;
+    hearth_scene *s = fx_scene_def(&d);
+    CHECK(s != NULL);
+    if (!s) return;
+    const int m = fx_elastic(s, 1e4, 0.3, 1000);
+    const double c[3] = {0.5, 0.5, 0}, h[3] = {0.1, 0.1, 0};
+    fx_box(s, m, c, h, 4, NULL);
+    CHECK(hearth_scene_step(s, 2, &err) == HEARTH_OK);
+    CHECK(hearth_scene_save(s, "periodic_refused.ck", &err) != HEARTH_OK);
+    CHECK_STR_CONTAINS(err.msg, "periodic axes are not supported");
+    CHECK(hearth_scene_set_oven(s, 180, 10, &err) == HEARTH_OK);
+    CHECK(hearth_scene_step(s, 1, &err) != HEARTH_OK);
+    CHECK_STR_CONTAINS(err.msg, "periodic axes (periodic_y) do not carry heat");
+    hearth_scene_destroy(s);
+    d = hearth_default_scene_def();
+    d.solver = HEARTH_SOLVER_SPH;
+    d.dx = 0.03; /* SPH needs no whole number of cells */
+    d.periodic[0] = 1;
+    s = fx_scene_def(&d);
+    CHECK(s != NULL && s->def.sph.periodic[0] == 1 && s->def.sph.periodic[1] == 0);
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(bspline_weights), T(transfer_conservation_2d), T(transfer_conservation_3d), T(transfer_pic_dissipates), T(rotating_disc), T(free_fall),
           T(vibrating_bar), T(determinism_threads), T(checkpoint_restore), T(guard_nan_plugin), T(guard_plugin_error),
           T(guard_cfl_and_rollback), T(colliders_contact), T(probe_fields), T(stress_tensor_components), T(scene_bad_input), T(alloc_failure_paths),
           T(particles_optional_columns), T(body_force), T(guard_collider_drive), T(grip_holds_pulled_strip),
           T(mpm_state_owned_by_solver), T(couette_lid_on_node_row), T(grip_cantilever_clamped_at_face), T(column_base_stress),
-          T(mpm_periodic_shear_wave), T(mpm_periodic_conserves_momentum))
+          T(mpm_periodic_shear_wave), T(mpm_periodic_conserves_momentum), T(mpm_periodic_refusals))
