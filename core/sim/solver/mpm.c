@@ -380,6 +380,19 @@ static int all_finite(const double *a, int n) {
 enum { P2G_HC = GRID_NCH_MOMENTUM, P2G_T, P2G_MW, P2G_SW, P2G_V, P2G_NCH };
 static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T, CH_MW, CH_SW, CH_CG_R};
 
+/* 1 when the point p lies on or inside collider cl, or where no particle can
+ * be (outside the box's usable region on a closed axis). A reflection through
+ * a sticky face is used only when the collider goes on that deep behind the
+ * reflected point's reach: a thin sticky blade with material on both sides
+ * keeps holding its nodes at its velocity, or the far side's particles would
+ * read, and receive, the near side's reflection. */
+static int solid_behind(const hearth_scene *s, const collider *cl, const double p[3]) {
+    const grid *g = &s->g;
+    for (int d = 0; d < g->dim; d++)
+        if (!s->def.periodic[d] && (p[d] < g->lo[d] + g->dx || p[d] > g->lo[d] + (g->nn[d] - 2) * g->dx)) return 1;
+    return collider_sdf(cl, p, NULL) <= COLLIDER_ROW_TOL * g->dx;
+}
+
 /* The quadratic B-spline N(r) of a distance r in cells (the weight of a node r cells away). */
 static inline double bspline_at(double r) {
     r = fabs(r);
@@ -433,6 +446,9 @@ static __attribute__((noinline)) void p2g_mirror(const hearth_scene *s, const in
         const double phi = collider_sdf(cl, x, n);
         if (!(phi >= 0 && phi < 1.5 * dx)) continue;
         if (D == 2) n[2] = 0.0;
+        const double deep[3] = {x[0] - (2 * phi + 1.5 * dx) * n[0], x[1] - (2 * phi + 1.5 * dx) * n[1],
+                                x[2] - (2 * phi + 1.5 * dx) * n[2]}; /* the far end of the mirror's stencil */
+        if (!solid_behind(s, cl, deep)) continue;
         /* node i relative to the mirror x - 2 phi n: (x_i - x) + 2 phi n, in cells */
         const double sh[3] = {2 * phi * n[0] * inv_dx, 2 * phi * n[1] * inv_dx, 2 * phi * n[2] * inv_dx};
         double wm[3][3], rm[3][3];
@@ -744,7 +760,7 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
 /* 1 when a sticky collider holds the point x (on or inside its face, as
  * grid_update_block decides), with that collider's velocity in vb; the
  * first such collider's sdf and outward normal in *phi and n when asked. */
-static int sticky_held(const hearth_scene *s, const double x[3], double vb[3], double *phi, double n[3]) {
+static const collider *sticky_held(const hearth_scene *s, const double x[3], double vb[3], double *phi, double n[3]) {
     const double band = COLLIDER_ROW_TOL * s->g.dx;
     for (int c = 0; c < s->ncol; c++) {
         const collider *cl = &s->cols[c];
@@ -756,9 +772,9 @@ static int sticky_held(const hearth_scene *s, const double x[3], double vb[3], d
         if (s->g.dim == 2) vb[2] = 0.0;
         if (phi) *phi = d;
         if (n) memcpy(n, nn, sizeof nn);
-        return 1;
+        return cl;
     }
-    return 0;
+    return NULL;
 }
 
 /* The grid velocity at x, multilinear in the 2^dim nodes around it, reading
@@ -833,7 +849,11 @@ static void sticky_ghosts_block(const hearth_scene *s, int k) {
         grid_node_index(g, bc, l, idx);
         double xi[3] = {0, 0, 0}, vb[3], n[3], phi;
         for (int d = 0; d < D; d++) xi[d] = g->lo[d] + idx[d] * g->dx;
-        if (!sticky_held(s, xi, vb, &phi, n) || !(phi > -1.5 * g->dx)) continue;
+        const collider *cl = sticky_held(s, xi, vb, &phi, n);
+        if (!cl || !(phi > -1.5 * g->dx)) continue;
+        if (D == 2) n[2] = 0.0;
+        const double deep[3] = {xi[0] - 1.5 * g->dx * n[0], xi[1] - 1.5 * g->dx * n[1], xi[2] - 1.5 * g->dx * n[2]};
+        if (!solid_behind(s, cl, deep)) continue; /* a particle beyond the collider may read this node */
         double xr[3] = {0, 0, 0}, vr[3];
         for (int d = 0; d < D; d++) xr[d] = xi[d] - 2 * phi * n[d];
         if (!grid_velocity_linear(s, xr, vr)) continue;
