@@ -429,16 +429,8 @@ static __attribute__((noinline)) void p2g_mirror(const hearth_scene *s, const in
     const grid *g = &s->g;
     const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
     const double dx = g->dx, inv_dx = g->inv_dx;
-    /* the particle's stencil in its block's tile, as p2g_block found it (recomputed here so that
-     * p2g_block's own base and fx stay in registers) */
-    int bc[3], base[3] = {0, 0, 0};
+    int base[3] = {0, 0, 0}, have_stencil = 0;
     double fx[3] = {0, 0, 0};
-    grid_block_coords(g, block, bc);
-    for (int d = 0; d < D; d++) {
-        const int b = (int)floor((x[d] - g->lo[d]) * inv_dx - 0.5);
-        fx[d] = (x[d] - g->lo[d]) * inv_dx - b;
-        base[d] = b - bc[d] * GRID_B;
-    }
     for (int c = 0; c < s->ncol; c++) {
         const collider *cl = &s->cols[c];
         if (cl->mode != HEARTH_STICKY || !collider_near(cl, x)) continue;
@@ -449,26 +441,66 @@ static __attribute__((noinline)) void p2g_mirror(const hearth_scene *s, const in
         const double deep[3] = {x[0] - (2 * phi + 1.5 * dx) * n[0], x[1] - (2 * phi + 1.5 * dx) * n[1],
                                 x[2] - (2 * phi + 1.5 * dx) * n[2]}; /* the far end of the mirror's stencil */
         if (!solid_behind(s, cl, deep)) continue;
+        if (!have_stencil) { /* the particle's stencil in its block's tile, as p2g_block found it (recomputed
+                              * here, for the few particles near a face, so that p2g_block's stay in registers) */
+            int bc[3];
+            grid_block_coords(g, block, bc);
+            for (int d = 0; d < D; d++) {
+                const int b = (int)floor((x[d] - g->lo[d]) * inv_dx - 0.5);
+                fx[d] = (x[d] - g->lo[d]) * inv_dx - b;
+                base[d] = b - bc[d] * GRID_B;
+            }
+            have_stencil = 1;
+        }
         /* node i relative to the mirror x - 2 phi n: (x_i - x) + 2 phi n, in cells */
         const double sh[3] = {2 * phi * n[0] * inv_dx, 2 * phi * n[1] * inv_dx, 2 * phi * n[2] * inv_dx};
-        double wm[3][3], rm[3][3];
+        /* per axis: the mirror's weight of each stencil row, and the row's height over the face's
+         * tangent plane at the particle (cells) */
+        double wm[3][3], hn[3][3], ft[3][3][3]; /* ft[d][a]: -k0 tau's column d times the row's offset (m) */
         for (int d = 0; d < 3; d++)
             for (int a = 0; a < 3; a++) {
-                rm[d][a] = d < D ? a - fx[d] + sh[d] : 0.0;
-                wm[d][a] = d < D ? bspline_at(rm[d][a]) : (a == 0);
+                const double rm = d < D ? a - fx[d] + sh[d] : 0.0;
+                wm[d][a] = d < D ? bspline_at(rm) : (a == 0);
+                hn[d][a] = d < D ? (a - fx[d]) * n[d] : 0.0;
+                for (int q = 0; q < 3; q++) ft[d][a][q] = -k0 * tau[3 * q + d] * rm * dx;
             }
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++)
+        /* only nodes on the free side of the tangent plane: the others are held (exactly so for a
+         * flat face), and skipping them makes a particle's mirror a few nodes' work, not 27 */
+        const double h0 = phi * inv_dx - COLLIDER_ROW_TOL;
+        for (int a = 0; a < 3; a++) {
+            if (wm[0][a] == 0.0) continue;
+            for (int b = 0; b < 3; b++) {
+                if (wm[1][b] == 0.0) continue;
                 for (int cc = 0; cc < (D == 3 ? 3 : 1); cc++) {
                     const double w = wm[0][a] * wm[1][b] * wm[2][cc];
-                    if (w == 0.0) continue;
-                    const double r[3] = {rm[0][a] * dx, rm[1][b] * dx, D == 3 ? rm[2][cc] * dx : 0.0};
+                    if (w == 0.0 || h0 + hn[0][a] + hn[1][b] + hn[2][cc] <= 0.0) continue;
                     const int t = D == 2 ? (base[0] + a) * GRID_T + (base[1] + b)
                                          : ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + cc);
-                    for (int q = 0; q < D; q++)
-                        tile[(q + 1) * TN + t] -= w * k0 * (tau[3 * q] * r[0] + tau[3 * q + 1] * r[1] + tau[3 * q + 2] * r[2]);
+                    for (int q = 0; q < D; q++) tile[(q + 1) * TN + t] += w * (ft[0][a][q] + ft[1][b][q] + ft[2][cc][q]);
                 }
+            }
+        }
     }
+}
+
+/* 1 when a particle of the block whose origin node is org may lie within
+ * 1.5 dx outside a sticky face. Its particles lie within 2 dx of the block's
+ * centre along each axis (their base node is one of the block's), and an SDF
+ * changes no faster than the distance, so one SDF per block and collider
+ * rules out the blocks far from every face: most of them, whose particles
+ * then skip p2g_mirror's SDF (a plane's bounding box is everything). */
+static int p2g_block_near_sticky(const hearth_scene *s, const int D, const int org[3]) {
+    const grid *g = &s->g;
+    double c[3] = {0, 0, 0};
+    for (int d = 0; d < D; d++) c[d] = g->lo[d] + (org[d] + 2.5) * g->dx;
+    const double r = (D == 3 ? 1.7321 : 1.4143) * 2.0 * g->dx + 0.25 * g->dx; /* the half diagonal, with room */
+    for (int k = 0; k < s->ncol; k++) {
+        const collider *cl = &s->cols[k];
+        if (cl->mode != HEARTH_STICKY) continue;
+        const double phi = collider_sdf(cl, c, NULL);
+        if (phi < r + 1.5 * g->dx && phi > -r) return 1;
+    }
+    return 0;
 }
 
 /* D (2 or 3), HEAT (temperature live), WATER (water live) and MIRROR (a
@@ -489,6 +521,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     int bc[3];
     grid_block_coords(g, pb.block, bc);
     const int org[3] = {bc[0] * GRID_B, bc[1] * GRID_B, bc[2] * GRID_B};
+    const int near_face = MIRROR ? p2g_block_near_sticky(s, D, org) : 0;
     memset(tile, 0, sizeof(double) * GRID_NCH_MOMENTUM * (size_t)TN);
     if (HEAT) memset(tile + P2G_HC * TN, 0, sizeof(double) * 2 * (size_t)TN);
     if (WATER) memset(tile + P2G_MW * TN, 0, sizeof(double) * 2 * (size_t)TN);
@@ -628,7 +661,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 }
             }
         }
-        if (MIRROR) p2g_mirror(s, D, x, tau, k0, pb.block, tile);
+        if (MIRROR && near_face) p2g_mirror(s, D, x, tau, k0, pb.block, tile);
     }
 
     pp->cmax = cmax;
@@ -743,7 +776,12 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
              * peeling off, at the cost of a clamp one cell in; G2P's carry now
              * keeps the stress continuous instead.) */
             const double band = COLLIDER_ROW_TOL * g->dx;
-            if (!collider_near(&s->cols[c], xi) || collider_sdf(&s->cols[c], xi, n) > band) continue;
+            if (!collider_near(&s->cols[c], xi)) continue;
+            const double phi = collider_sdf(&s->cols[c], xi, n);
+            if (phi > band) continue;
+            /* a held node within reach of a sticky face's reflection: a negative mass marks it for
+             * sticky_ghosts_block, which finds it without an SDF per node and restores the sign */
+            if (s->cols[c].mode == HEARTH_STICKY && phi > -1.5 * g->dx) node[l] = -m;
             double vb[3];
             collider_velocity_at(&s->cols[c], xi, vb);
             if (D == 2) n[2] = vb[2] = 0.0;
@@ -778,9 +816,10 @@ static const collider *sticky_held(const hearth_scene *s, const double x[3], dou
 }
 
 /* The grid velocity at x, multilinear in the 2^dim nodes around it, reading
- * a node held by a sticky collider as that collider's velocity (not the
- * grid, which sticky_ghosts may be writing) and leaving out nodes without
- * mass. Returns 0 when no node counts. */
+ * a node marked for a ghost as its sticky collider's velocity (not the grid,
+ * which sticky_ghosts_block may be writing; an unmarked held node holds that
+ * velocity anyway) and leaving out nodes without mass. Returns 0 when no
+ * node counts. */
 static int grid_velocity_linear(const hearth_scene *s, const double x[3], double v[3]) {
     const grid *g = &s->g;
     const int D = g->dim, NPB = g->nodes_per_block;
@@ -806,14 +845,16 @@ static int grid_velocity_linear(const hearth_scene *s, const double x[3], double
         for (int d = 0; d < D; d++) inside = inside && gi[d] >= 0 && gi[d] < g->nn[d];
         if (!inside) continue;
         double vn[3];
-        if (!sticky_held(s, xi, vn, NULL, NULL)) {
-            const int bc[3] = {gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B};
-            const int slot = g->slot[grid_block_id(g, bc[0], bc[1], bc[2])];
-            if (slot < 0) continue;
-            const int l = D == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
-                                 : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
-            const double *node = grid_block(g, slot);
-            if (!(node[l] > 0.0)) continue;
+        const int bc[3] = {gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B};
+        const int slot = g->slot[grid_block_id(g, bc[0], bc[1], bc[2])];
+        if (slot < 0) continue;
+        const int l = D == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
+                             : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
+        const double *node = grid_block(g, slot);
+        if (node[l] == 0.0) continue;
+        if (node[l] < 0.0) { /* marked: a node sticky_ghosts_block may be writing; held at v_b */
+            if (!sticky_held(s, xi, vn, NULL, NULL)) continue;
+        } else {
             for (int d = 0; d < 3; d++) vn[d] = node[(d + 1) * NPB + l];
         }
         for (int d = 0; d < 3; d++) v[d] += w * vn[d];
@@ -844,7 +885,7 @@ static void sticky_ghosts_block(const hearth_scene *s, int k) {
     int bc[3];
     grid_block_coords(g, g->active[k], bc);
     for (int l = 0; l < NPB; l++) {
-        if (!(node[l] > 0.0)) continue;
+        if (!(node[l] < 0.0)) continue; /* marked by grid_update_block */
         int idx[3];
         grid_node_index(g, bc, l, idx);
         double xi[3] = {0, 0, 0}, vb[3], n[3], phi;
@@ -881,6 +922,12 @@ double mpm_grid_update(hearth_scene *s, double dt) {
     if (s->mpm->sticky_faces) {
 #pragma omp parallel for schedule(dynamic, 4) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int k = 0; k < g->nactive; k++) sticky_ghosts_block(s, k);
+        const int NPB = g->nodes_per_block; /* the marks off again, once every ghost has been read */
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
+        for (int k = 0; k < g->nactive; k++) {
+            double *node = grid_block(g, k);
+            for (int l = 0; l < NPB; l++) node[l] = fabs(node[l]);
+        }
     }
     return sqrt(vcol2);
 }
