@@ -795,9 +795,9 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
     return vcol2;
 }
 
-/* 1 when a sticky collider holds the point x (on or inside its face, as
- * grid_update_block decides), with that collider's velocity in vb; the
- * first such collider's sdf and outward normal in *phi and n when asked. */
+/* The first sticky collider that holds the point x (on or inside its face,
+ * as grid_update_block decides), or NULL; its velocity at x in vb, and its
+ * sdf and outward normal there in *phi and n when asked. */
 static const collider *sticky_held(const hearth_scene *s, const double x[3], double vb[3], double *phi, double n[3]) {
     const double band = COLLIDER_ROW_TOL * s->g.dx;
     for (int c = 0; c < s->ncol; c++) {
