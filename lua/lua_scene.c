@@ -534,6 +534,67 @@ static int l_gravity(lua_State *L) {
     return 0;
 }
 
+/* A body force from a Lua function f(x, y, z, t) -> fx, fy[, fz] (m/s^2),
+ * called by the MPM grid update at every node with mass, each step (by SPH
+ * at every particle), on one thread (hearth_scene_set_body_force_serial).
+ * Several numbers rather than a table: no garbage per node. As with
+ * gravity, the first error or bad value is kept and raised when the step
+ * returns; the nodes after it get no extra force. */
+static void body_force_cb(void *ud, double t, const double x[3], double acc[3]) {
+    hl_motion *m = ud;
+    lua_State *L = m->L;
+    if (m->failed) return;
+    lua_rawgeti(L, LUA_REGISTRYINDEX, m->vref);
+    for (int k = 0; k < 3; k++) lua_pushnumber(L, x[k]);
+    lua_pushnumber(L, t);
+    if (lua_pcall(L, 4, 3, 0) != LUA_OK) {
+        m->failed = 1;
+        snprintf(m->msg, sizeof m->msg, "s:body_force function: %s", lua_tostring(L, -1));
+        lua_pop(L, 1);
+        return;
+    }
+    double f[3] = {0, 0, 0};
+    int ok = 1;
+    for (int k = 0; k < 3; k++) {
+        const int idx = -3 + k;
+        if (lua_type(L, idx) == LUA_TNUMBER) f[k] = lua_tonumber(L, idx);
+        else if (!(k == 2 && lua_isnil(L, idx))) ok = 0;
+    }
+    if (ok && isfinite(f[0]) && isfinite(f[1]) && isfinite(f[2])) {
+        for (int k = 0; k < 3; k++) acc[k] += f[k];
+    } else {
+        m->failed = 1;
+        snprintf(m->msg, sizeof m->msg, "s:body_force function at (%g, %g, %g), t = %g returned %s, %s, %s; expected "
+                 "fx, fy[, fz]: finite numbers (m/s^2)", x[0], x[1], x[2], t, luaL_typename(L, -3), luaL_typename(L, -2),
+                 luaL_typename(L, -1));
+    }
+    lua_pop(L, 3);
+}
+
+/* s:_body_force(function(x, y, z, t) -> fx, fy[, fz] | nil): an acceleration field added to gravity */
+static int l_body_force(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    if (lua_isnoneornil(L, 2)) {
+        hearth_scene_set_body_force(u->s, NULL, NULL);
+        return 0;
+    }
+    luaL_checktype(L, 2, LUA_TFUNCTION);
+    hl_motion *m = lua_newuserdatauv(L, sizeof *m, 0);
+    memset(m, 0, sizeof *m);
+    m->L = L;
+    m->vref = m->oref = LUA_NOREF;
+    if (luaL_newmetatable(L, "hearth.motion")) {
+        lua_pushcfunction(L, l_motion_gc);
+        lua_setfield(L, -2, "__gc");
+    }
+    lua_setmetatable(L, -2);
+    lua_pushvalue(L, 2);
+    m->vref = luaL_ref(L, LUA_REGISTRYINDEX);
+    keep_motion(L); /* alive while the scene is, and checked after each step */
+    hearth_scene_set_body_force_serial(u->s, body_force_cb, m);
+    return 0;
+}
+
 /* s:_advance(t_end) / s:_step(n): one core call each; raises on guard stops */
 static int l_advance(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
@@ -865,7 +926,7 @@ void hl_open_scene(lua_State *L) {
         {"cut", l_cut},          {"move", l_move},         {"collider_velocity", l_collider_velocity},
         {"set_dt", l_set_dt}, {"settings", l_settings},    {"oven", l_oven},    {"probe", l_probe},       {"line", l_line},          {"_slice", l_slice},
         {"stats", l_stats},      {"_time", l_time},      {"body_particles", l_body_particles}, {"hash", l_hash}, {"_body_motion", l_body_motion},
-        {"positions", l_positions}, {"_particle_field", l_particle_field}, {"_gravity", l_gravity}, {"volume", l_volume}, {"material_params", l_material_params}, {NULL, NULL}};
+        {"positions", l_positions}, {"_particle_field", l_particle_field}, {"_gravity", l_gravity}, {"_body_force", l_body_force}, {"volume", l_volume}, {"material_params", l_material_params}, {NULL, NULL}};
     luaL_newmetatable(L, HL_SCENE);
     lua_pushcfunction(L, l_gc);
     lua_setfield(L, -2, "__gc");

@@ -90,6 +90,18 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
     /* ---- the solver's own options (solver.h) ---- */
     const solver *sv = solver_of(d->solver);
     if (!sv) return err_set(err, HEARTH_ERR_PARAM, "scene: solver = %d; valid: 0 (mpm), 1 (sph)", d->solver);
+    for (int k = 0; k < 3; k++) {
+        if (!d->periodic[k]) continue;
+        if (k >= d->dim)
+            return err_set(err, HEARTH_ERR_PARAM, "scene: periodic_%c in a %dD scene; valid: periodic_x, periodic_y%s",
+                           "xyz"[k], d->dim, d->dim == 3 ? ", periodic_z" : "");
+        /* the MPM grid's nodes wrap onto each other: the period must hold a whole number of cells */
+        const double cells = (d->hi[k] - d->lo[k]) / d->dx;
+        if (d->solver == HEARTH_SOLVER_MPM && !(fabs(cells - round(cells)) < 1e-6))
+            return err_set(err, HEARTH_ERR_PARAM,
+                           "scene: periodic_%c: box axis %c spans %g m = %.9g cells of dx = %g m; a periodic axis must "
+                           "span a whole number of cells", "xyz"[k], "xyz"[k], d->hi[k] - d->lo[k], cells, d->dx);
+    }
     if (d->damping > 0 && d->solver != HEARTH_SOLVER_MPM) /* it acts in mpm.c's grid update */
         return err_set(err, HEARTH_ERR_PARAM, "scene: damping = %g 1/s; only the MPM solver damps (solver = \"mpm\")",
                        d->damping);
@@ -151,6 +163,15 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
         }
     }
     if (d.dim == 2) d.lo[2] = d.hi[2] = d.gravity[2] = 0;
+    /* SPH wraps its own way (its neighbour cells); the scene's periodic axes are its sph.periodic ones */
+    for (int k = 0; k < 3; k++) d.sph.periodic[k] |= d.solver == HEARTH_SOLVER_SPH && d.periodic[k];
+    /* MPM: a periodic axis's grid has a ghost node row below lo and two above hi (mpm.c, "periodic axes") */
+    double glo[3], ghi[3];
+    for (int k = 0; k < 3; k++) {
+        const int wrap = d.solver == HEARTH_SOLVER_MPM && d.periodic[k];
+        glo[k] = d.lo[k] - (wrap ? d.dx : 0.0);
+        ghi[k] = wrap ? d.lo[k] + (round((d.hi[k] - d.lo[k]) / d.dx) + 1) * d.dx : d.hi[k];
+    }
     hearth_scene *s = mem_calloc(sizeof *s);
     if (!s) {
         err_set(err, HEARTH_ERR_NOMEM, "out of memory creating a scene");
@@ -168,7 +189,7 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
     particles_init(&s->ps);
     particles_init(&s->snap);
     /* a solver that never transfers to the grid still seeds on its lattice */
-    if ((sv->uses_grid ? grid_init : grid_init_geometry)(&s->g, d.dim, d.dx, d.lo, d.hi, err)) {
+    if ((sv->uses_grid ? grid_init : grid_init_geometry)(&s->g, d.dim, d.dx, glo, ghi, err)) {
         mem_free(s, sizeof *s);
         return NULL;
     }
@@ -517,6 +538,12 @@ static void gravity_at_step(hearth_scene *s) {
 void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void *ud) {
     s->body_force = fn;
     s->body_force_ud = fn ? ud : NULL;
+    s->body_force_serial = 0;
+}
+
+void hearth_scene_set_body_force_serial(hearth_scene *s, hearth_body_force_fn fn, void *ud) {
+    hearth_scene_set_body_force(s, fn, ud);
+    s->body_force_serial = fn != NULL;
 }
 
 /* ---- stepping -------------------------------------------------------- */

@@ -84,6 +84,7 @@ struct hearth_scene {
     int ncol, capcol;
     hearth_body_force_fn body_force;
     void *body_force_ud;
+    int body_force_serial;        /* body_force must run on one thread (hearth_scene_set_body_force_serial) */
     hearth_gravity_fn gravity_fn; /* sets def.gravity at the start of each step, or NULL */
     void *gravity_ud;
 

@@ -77,6 +77,10 @@ static const hearth_setting settings[] = {
     REAL("heat_flip", "1", "temperature to particles: 1 FLIP (eq. 21) .. 0 PIC (the nodes' value)", 1, 0, 1, heat_flip, 1),
     REAL("damping", "1/s", "velocity damping c for static problems: each step the grid velocity is divided by 1 + c dt "
          "(MPM); 0 = off", 0, 0, 1e9, damping, 1),
+    FLAG("periodic_x", "the box wraps along x: material leaving at one face enters at the other, no walls there (the "
+         "box length a whole number of dx; MPM without heat or water, or SPH)", periodic[0]),
+    FLAG("periodic_y", "the box wraps along y (as periodic_x)", periodic[1]),
+    FLAG("periodic_z", "the box wraps along z (as periodic_x; 3D)", periodic[2]),
     LUA_CHOICE("blend", "how bodies of h.mix{...} materials are simulated: the blend model, linearly blended parameters, "
                "or random binary labels (Nagasawa et al. Figs. 1, 9, 10)", 0, w_blend, 1),
     LUA_CHOICE("mixing", "dynamic: h.mix bodies share one mixture whose ratios follow the particles (Nagasawa et al. eq. "

@@ -729,6 +729,17 @@ function S:gravity(g)
   return self
 end
 
+--- s:body_force(function(x, y, z, t) return fx, fy[, fz] end) adds an acceleration field
+--- (m/s^2) that varies in space and time to gravity: MPM evaluates it at every grid node with
+--- mass, every step (SPH at every particle), on one thread. s:body_force(nil) removes it.
+function S:body_force(fn)
+  if fn ~= nil and type(fn) ~= "function" then
+    error(("s:body_force: expected a function(x, y, z, t) returning fx, fy[, fz], or nil; got %s"):format(type(fn)), 2)
+  end
+  self:_body_force(fn)
+  return self
+end
+
 --- s:particles{fields = {"id", "x", "v", "temperature", ...}} -> {n = count, id = {...}, x = {...}, ...}:
 --- every particle's values, in one order for all the fields asked for. Scalars are n numbers;
 --- vectors are flattened, 3 numbers a particle ({x1, y1, z1, x2, ...}, as s:positions());

@@ -221,6 +221,7 @@ typedef struct hearth_scene_def {
     int solver;              ///< hearth_solver; default MPM
     hearth_sph_def sph;      ///< SPH options (solver = HEARTH_SOLVER_SPH)
     double damping;          ///< MPM velocity damping c (1/s): the grid velocity decays as 1/(1 + c dt) a step; 0 = off
+    int periodic[3];         ///< 1: the box wraps along that axis (no walls there); the box length must be a whole number of dx. SPH: as sph.periodic
 } hearth_scene_def;
 
 /// Defaults: those of hearth_scene_settings() (2D, dx 0.01, box [0,1]^3, gravity
@@ -342,7 +343,13 @@ hearth_status hearth_scene_collider_motion(hearth_scene *s, int id, hearth_motio
 
 /// Extra body force as an acceleration field (m/s^2), added to gravity. NULL removes it.
 typedef void (*hearth_body_force_fn)(void *ud, double t, const double x[3], double acc[3]);
+/// MPM calls fn at every grid node with mass each step, SPH at every particle, both
+/// from several threads at once in a large scene.
 void hearth_scene_set_body_force(hearth_scene *s, hearth_body_force_fn fn, void *ud);
+/// The same for a function that must not run on several threads at once (a Lua
+/// function): while it is set, the MPM grid update and SPH's force loop run on
+/// one thread, calling fn in a fixed order. NULL removes it.
+void hearth_scene_set_body_force_serial(hearth_scene *s, hearth_body_force_fn fn, void *ud);
 /// Set gravity now (m/s^2; z ignored in 2D), for later steps. HEARTH_ERR_PARAM when not finite.
 hearth_status hearth_scene_set_gravity(hearth_scene *s, const double g[3], hearth_error *err);
 /// Gravity as a function of time (a ramp, a tilt): fn(ud, t, g) is called once

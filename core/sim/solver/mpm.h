@@ -41,6 +41,7 @@ typedef struct mpm_state {
     int *colour_pb;         /* pb indices grouped by colour */
     int colour_start[9];
     pb_partial *partial;
+    int sticky_faces;       /* this step's scene has a sticky collider: P2G adds its faces' reaction (p2g_mirror) */
 } mpm_state;
 
 /// The MPM state of s (NULL under another solver), for the field passes an

@@ -588,7 +588,7 @@ static void phase_forces(hearth_scene *s, double dt) {
     for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(c.V0[i]) : sqrt(c.V0[i]); /* once, not per pair */
     sph_viscous_moments(s);
     const double *gvec = s->def.gravity;
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN && !s->body_force_serial)
     for (int i = 0; i < n; i++) {
         double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0};
         if (s->body_force) {
