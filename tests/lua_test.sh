@@ -732,6 +732,7 @@ lua_md_heat_examples)
         cat out.txt
     done
     [ "$(ls heat_example_*.lua | wc -l)" -ge 2 ] || fail "expected the held and the Robin examples"
+    ;;
 lua_body_force_varies_in_space)
     # s:body_force(function(x, y, z, t) ...): a column under a force growing with height against its closed form
     run body_force_field.lua
