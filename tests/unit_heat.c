@@ -117,11 +117,11 @@ static void slab_robin(int implicit) {
     if (implicit) CHECK(dt_max_taken >= 10 * dt_explicit * (1 - 1e-9));
     CHECK(worst_centre < 1e-2);
     hearth_scene_destroy(s);
-    /* Explicit, the one particle nearest the face's middle misses: 0.0184 at Fo =
+    /* Explicit, the one particle nearest the face's middle misses: 0.0187 at Fo =
      * 0.5 (it passed at 0.0062 while the oven's flux was overstated by the depth of
      * its temperature sample, 0.009 too warm everywhere). The particles of the
      * surface carry a FLIP mode the grid does not see (neighbours -0.040, +0.036
-     * off the series, the centre 0.0023): with heat_flip = 0.99 the same run gives
+     * off the series, the centre 0.0025): with heat_flip = 0.99 the same run gave
      * 0.0078 at this particle and a smooth profile. An expected failure (77) with
      * its number until the surface mode is damped; see docs/validation.md. */
     if (!implicit && !(worst < 1e-2)) {

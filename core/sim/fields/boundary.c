@@ -31,10 +31,15 @@
  * not air. A face ending on a collider keeps its full length, since the
  * tangential gradient's integral across the ramp is the face's extent.
  *
+ * With an oven, each particle holding area also gets the depth of its
+ * temperature sample below the surface (sample_depth, below), which thermal.c
+ * divides out of the Robin flux.
+ *
  * Cost: the node volumes come from P2G, one more tile channel when heat or
  * water is live (a separate scatter pass cost more: issue #17's follow-up);
  * then node passes when an oven or evaporation is live; the particle gather runs only where
- * a particle block's tile holds surface. `robin_square_rotations`,
+ * a particle block's tile holds surface; the depth is one more interpolation
+ * and a table lookup for particles holding area. `robin_square_rotations`,
  * `robin_disc_converges`, `robin_ball_converges` (tests/unit_heat.c) check it. */
 #include "boundary.h"
 
@@ -172,63 +177,39 @@ static int any_flag(const grid *g, const unsigned char *flag, const int bc[3], i
  * error of order dx (about 0.6 dx Bi / R on a disc). thermal.c divides it out.
  *
  * Across a flat surface at depth t below node i (grid units) the node's volume
- * fraction is P(t), the quadratic B-spline's integral up to t, and the mass
- * weighted mean depth of its material E(t) = t - G(t) / P(t), G the kernel's first
- * moment up to t. A particle's t_p solves sum_i w_ip P(t_p + delta_i) = phi_p
- * (delta_i = -n . (x_i - x_p), n the outward normal from grad phi), which
- * matches the grid's own interpolant at this particle whatever its offset to the
- * nodes, and d_p = sum_i w_ip E(t_p + delta_i). Against the discrete 1D lattice
- * the estimate is within 0.015 dx for the outer two rows, which hold nine tenths
- * of the area. Tilted surfaces see the axis kernel's profile (the same variance;
- * the projected kernel's tails differ slightly).
- * Rejected: (phi_p - 1/2) / |grad phi| (phi is not linear across the ramp: 20%
- * long at half a cell); the geometric depth alone (the nodes' averaging adds
- * 0.3 dx at the outer row); a scatter of the particles' first moment (exact for
- * any arrangement but three more channels or a colour pass each step). */
-static inline double kernel_P(double t) { /* int_-inf^t N(u) du, N the quadratic B-spline */
-    if (t <= -1.5) return 0.0;
-    if (t <= -0.5) return (1.5 + t) * (1.5 + t) * (1.5 + t) / 6.0;
-    if (t <= 0.5) return 1.0 / 6.0 + 0.75 * (t + 0.5) - (t * t * t + 0.125) / 3.0;
-    if (t < 1.5) return 1.0 - (1.5 - t) * (1.5 - t) * (1.5 - t) / 6.0;
-    return 1.0;
-}
+ * fraction is P(t), the quadratic B-spline N's integral up to t, and the mass
+ * weighted mean depth of its material is E(t) = t - G(t) / P(t), G the kernel's
+ * first moment up to t. A particle at depth t_p reads phi_p = sum_i w_ip P(t_i)
+ * and samples the temperature at d_p = sum_i w_ip E(t_i), t_i = t_p - n . (x_i -
+ * x_p). Both depend on the particle's offset to the nodes; D_OF_PHI holds d_p
+ * against phi_p averaged over the offset (axis-aligned, computed offline from P
+ * and E), so a particle costs its phi_p and a table lookup. Against the
+ * per-offset value it is within 0.023 dx for the outer row (a quarter cell in),
+ * 0.034 dx for the next; on a curved surface the offsets vary and the errors
+ * average out (the disc's order is the same as with the per-offset root).
+ * Rejected: solving sum_i w_ip P(t_p + delta_i) = phi_p per particle and summing
+ * E over the stencil (within 0.015 dx of the discrete lattice, but it cost 0.55
+ * of a no-field step in the 3D bench even with one Newton step, against about
+ * 0.03 for the table); (phi_p - 1/2) / |grad phi| (phi is not linear across the
+ * ramp: 20% long at half a cell, and it misses the nodes' averaging, 0.3 dx at
+ * the outer row); a scatter of the particles' first moment (exact for any
+ * arrangement but three more channels and a colour pass each step). */
+static const double D_OF_PHI[65] = { /* d_p (grid units) at phi_p = k / 64 */
+    0.050830, 0.050830, 0.077850, 0.099507, 0.118196, 0.134954, 0.150332, 0.164670,
+    0.178204, 0.191103, 0.203494, 0.215476, 0.227129, 0.238515, 0.249688, 0.260692,
+    0.271567, 0.282346, 0.293059, 0.303734, 0.314395, 0.325066, 0.335769, 0.346524,
+    0.357352, 0.368272, 0.379305, 0.390470, 0.401787, 0.413277, 0.424961, 0.436860,
+    0.448996, 0.461397, 0.474085, 0.487087, 0.500435, 0.514160, 0.528293, 0.542873,
+    0.557941, 0.573541, 0.589725, 0.606548, 0.624073, 0.642373, 0.661533, 0.681647,
+    0.702828, 0.725207, 0.748943, 0.774229, 0.801295, 0.830436, 0.862018, 0.896519,
+    0.934578, 0.977076, 1.025267, 1.081051, 1.147522, 1.230272, 1.341284, 1.516325,
+    2.500028};
 
-static inline double kernel_N(double t) { /* the quadratic B-spline, P's derivative */
-    const double a = fabs(t);
-    return a < 0.5 ? 0.75 - a * a : a < 1.5 ? 0.5 * (1.5 - a) * (1.5 - a) : 0.0;
-}
-
-static inline double kernel_E(double t) { /* mean depth of the material a node at depth t sees */
-    const double p = kernel_P(t);
-    if (p < 1e-9) return t > -1.5 ? 0.25 * (t + 1.5) : 0.0; /* the limit t -> -1.5 */
-    const double a = -fabs(t); /* G(t) = int_-inf^t u N(u) du is even */
-    double G = 0;
-    if (a <= -1.5) G = 0;
-    else if (a <= -0.5) G = 0.5 * ((1.5 + a) * (1.5 + a) * (1.5 + a) * (1.5 + a) / 4 - 0.5 * (1.5 + a) * (1.5 + a) * (1.5 + a));
-    else G = -0.125 + 0.375 * (a * a - 0.25) - (a * a * a * a - 0.0625) / 4;
-    return t - G / p;
-}
-
-/* d_p in grid units from the stencil weights wt, the offsets de and phi_p. */
-static double sample_depth(const double *wt, const double *de, int nst, double phi) {
-    double lo = -4.5, hi = 4.5, t = 0;
-    for (int it = 0; it < 40; it++) { /* safeguarded Newton on the monotone sum_i w P(t + delta_i) */
-        double f = -phi, fp = 0;
-        for (int k = 0; k < nst; k++) {
-            f += wt[k] * kernel_P(t + de[k]);
-            fp += wt[k] * kernel_N(t + de[k]);
-        }
-        if (fabs(f) < 1e-10) break;
-        if (f < 0) lo = t;
-        else hi = t;
-        double tn = fp > 0 ? t - f / fp : 0.5 * (lo + hi);
-        if (!(tn > lo && tn < hi)) tn = 0.5 * (lo + hi);
-        if (fabs(tn - t) < 1e-9) break;
-        t = tn;
-    }
-    double d = 0;
-    for (int k = 0; k < nst; k++) d += wt[k] * kernel_E(t + de[k]);
-    return fmin(3.0, fmax(0.0, d)); /* the area reaches about two cells in */
+/* d_p (grid units) at the particle's interpolated volume fraction phi_p. */
+static inline double sample_depth(double phi) {
+    const double u = fmin(1.0, fmax(0.0, phi)) * 64.0;
+    const int k = u >= 64.0 ? 63 : (int)u;
+    return D_OF_PHI[k] + (u - k) * (D_OF_PHI[k + 1] - D_OF_PHI[k]);
 }
 
 /* Each particle's area m_p sum_i w_ip r_i from CH_CG_P, one particle block at
@@ -256,13 +237,12 @@ static void area_gather(hearth_scene *s, int k, int want_depth) {
     const double *X = pcold(&s->ps, PC_X), *M = pcold(&s->ps, PC_MASS);
     int *flags = s->ps.enabled & (1u << PC_FLAGS) ? pcoli(&s->ps, PC_FLAGS) : NULL;
     for (int i = pb.start; i < pb.end; i++) { /* the weights are a tensor product: one axis at a time */
-        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}}, fx[3] = {0, 0, 0};
+        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
         int lb[3] = {0, 0, 0};
         for (int d = 0; d < D; d++) {
             const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
             const int base = (int)floor(Xd - 0.5);
-            fx[d] = Xd - base;
-            bspline_weights(fx[d], w[d], dw[d]);
+            bspline_weights(Xd - base, w[d], dw);
             lb[d] = base - bc[d] * GRID_B;
         }
         double a = 0;
@@ -280,28 +260,18 @@ static void area_gather(hearth_scene *s, int k, int want_depth) {
         s->boundary.area[i] = M[i] * a;
         if (flags) flags[i] |= PF_BOUNDARY;
         if (!want_depth) continue;
-        /* phi and its gradient (grid units) at the particle, and the stencil */
-        double wt[27], pos[27][3], phi = 0, gr[3] = {0, 0, 0};
-        int nst = 0;
+        double phi = 0; /* the interpolated volume fraction */
         for (int x = 0; x < 3; x++)
-            for (int y = 0; y < 3; y++)
-                for (int z = 0; z < (D == 3 ? 3 : 1); z++) {
-                    const int t = D == 2 ? (lb[0] + x) * GRID_T + lb[1] + y : ((lb[0] + x) * GRID_T + lb[1] + y) * GRID_T + lb[2] + z;
-                    const double wz = D == 3 ? w[2][z] : 1.0;
-                    wt[nst] = w[0][x] * w[1][y] * wz;
-                    phi += wt[nst] * ph[t];
-                    gr[0] += dw[0][x] * w[1][y] * wz * ph[t];
-                    gr[1] += w[0][x] * dw[1][y] * wz * ph[t];
-                    if (D == 3) gr[2] += w[0][x] * w[1][y] * dw[2][z] * ph[t];
-                    const int idx[3] = {x, y, z};
-                    for (int d = 0; d < 3; d++) pos[nst][d] = d < D ? idx[d] - fx[d] : 0.0; /* x_i - x_p */
-                    nst++;
+            for (int y = 0; y < 3; y++) {
+                const double wxy = w[0][x] * w[1][y];
+                if (D == 2) {
+                    phi += wxy * ph[(lb[0] + x) * GRID_T + lb[1] + y];
+                } else {
+                    const double *row = ph + ((lb[0] + x) * GRID_T + lb[1] + y) * GRID_T + lb[2];
+                    phi += wxy * (w[2][0] * row[0] + w[2][1] * row[1] + w[2][2] * row[2]);
                 }
-        const double gn = sqrt(gr[0] * gr[0] + gr[1] * gr[1] + gr[2] * gr[2]);
-        if (!(gn > 1e-6)) continue; /* no direction to measure along: depth 0, no correction */
-        double de[27];
-        for (int q = 0; q < nst; q++) de[q] = (gr[0] * pos[q][0] + gr[1] * pos[q][1] + gr[2] * pos[q][2]) / gn; /* -n . (x_i - x_p), n = -grad phi / |grad phi| */
-        s->boundary.depth[i] = sample_depth(wt, de, nst, phi) * g->dx;
+            }
+        s->boundary.depth[i] = sample_depth(phi) * g->dx;
     }
 }
 
