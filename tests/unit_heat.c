@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "mpm_fixture.h"
+#include "alloc.h"
 #include "thermal.h"
 
 #define PI 3.14159265358979323846
@@ -626,8 +627,65 @@ TEST(robin_ball_converges) {
     robin_round(3, cells, 2, 0.1);
 }
 
+/* The surface's per-particle arrays (area and sample depth) come from the step:
+ * a failed allocation there fails the step with a message and leaks nothing,
+ * at every allocation the first oven step makes. */
+static hearth_scene *oven_disc(void) { /* a pinned disc of 8 cells across in a 120 degC oven */
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.005;
+    d.gravity[1] = 0;
+    for (int a = 0; a < 2; a++) d.lo[a] = -0.04, d.hi[a] = 0.04;
+    d.oven_temperature = 120;
+    d.oven_beta = 50;
+    hearth_scene *s = fx_scene_def(&d);
+    if (!s) return NULL;
+    const char *nm[] = {"E", "density", "conductivity", "specific_heat"};
+    const double nv[] = {1e-2, 1000, 1, 1000}, c[3] = {0, 0, 0};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 4, &err);
+    hearth_shape *disc = hearth_shape_sphere(c, 0.02);
+    hearth_body_def b = hearth_default_body_def();
+    b.shape = disc;
+    b.material = m;
+    b.temperature = 20;
+    b.fixed = 1;
+    const int ok = m >= 0 && hearth_scene_add_body(s, &b, &err) == 0;
+    hearth_shape_free(disc);
+    if (!ok) hearth_scene_destroy(s);
+    return ok ? s : NULL;
+}
+
+TEST(boundary_alloc_failures) {
+    hearth_scene_destroy(oven_disc()); /* loads and caches the plugin, which stays */
+    const size_t base = hearth_bytes_allocated();
+    int failures = 0, boundary = 0;
+    for (long k = 0; k < 400; k++) {
+        hearth_scene *s = oven_disc();
+        CHECK(s != NULL);
+        if (!s) return;
+        hearth_error err;
+        mem_fail_after(k);
+        const hearth_status st = hearth_scene_step(s, 1, &err);
+        mem_fail_after(-1);
+        if (st != HEARTH_OK) {
+            failures++;
+            CHECK(st == HEARTH_ERR_NOMEM && strstr(err.msg, "out of memory") != NULL);
+            if (strstr(err.msg, "boundary particles")) boundary++;
+        } else {
+            double depth = 0;
+            for (int i = 0; i < s->ps.n; i++) depth = fmax(depth, s->boundary.depth[i]);
+            CHECK(depth > 0 && depth < 3 * s->def.dx); /* the samples lie within the ramp */
+        }
+        hearth_scene_destroy(s);
+        CHECK(hearth_bytes_allocated() == base);
+        if (st == HEARTH_OK) break;
+    }
+    printf("  %d failed steps, %d of them at the boundary's particle arrays\n", failures, boundary);
+    CHECK(failures > 0 && boundary >= 2); /* the area's allocation, then the depth's */
+}
+
 TEST_MAIN(T(slab_series_reference), T(heat_slab_robin_explicit), T(heat_slab_robin_implicit),
           T(heat_insulated_conservation_explicit), T(heat_insulated_conservation_implicit), T(heat_pan_contact),
           T(heat_determinism_threads), T(heat_flip_pic_bounds), T(thermal_expansion), T(temperature_curves),
           T(thermal_expansion_plastic_sheared), T(robin_square_rotations), T(robin_round_reference),
-          T(robin_disc_converges), T(robin_ball_converges))
+          T(robin_disc_converges), T(robin_ball_converges), T(boundary_alloc_failures))
