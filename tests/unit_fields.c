@@ -103,12 +103,12 @@ TEST(fields_free_releases_state) {
     CHECK(hearth_bytes_allocated() == b - held);
     CHECK(s->heat.bnd_coef == NULL && s->heat.cg_partial == NULL && s->heat.bnd_cap == 0 && s->heat.cg_iterations == 0);
 
-    held = sizeof(double) * (size_t)s->boundary.area_cap + (size_t)s->boundary.blocks_cap, b = hearth_bytes_allocated();
+    held = sizeof(double) * 2 * (size_t)s->boundary.area_cap + (size_t)s->boundary.blocks_cap, b = hearth_bytes_allocated();
     printf("  boundary holds %zu bytes\n", held);
     CHECK(held > 0);
     boundary_free(&s->boundary);
     CHECK(hearth_bytes_allocated() == b - held);
-    CHECK(s->boundary.area == NULL && s->boundary.blocks == NULL);
+    CHECK(s->boundary.area == NULL && s->boundary.depth == NULL && s->boundary.blocks == NULL);
 
     held = sizeof(double) * s->mix.cap, b = hearth_bytes_allocated();
     printf("  mixing holds %zu bytes (mixture material %d)\n", held, s->mix.mat);
