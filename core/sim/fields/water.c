@@ -1,7 +1,7 @@
 /* water.c: water moving through the solid (Ding et al. 2019 §3.2, §5.5, §6.2).
  *
  *   q^w = -K theta rho^w grad s,  rho^w = rho_0^w s     (Fick's law, §3.2, eq. 8)
- *   q^w . n = beta^w theta s on the air boundary        (evaporation, §3.2)
+ *   q^w . n = beta^w theta (s - s_amb) on the air boundary   (evaporation, §3.2; s_amb ours)
  *   sigma^w = -c (s - s_0) I                            (water pressure, eq. 14)
  *
  * The diffusivity is D = K theta s: the equation is nonlinear in s.
@@ -136,6 +136,10 @@ double water_dt_limit(const hearth_scene *s) {
     double dt = INFINITY;
     /* forward Euler on the B-spline Laplacian, as for heat: dx^2 / (2 dim D) */
     if (d > 0) dt = dx * dx / (2.0 * s->def.dim * d);
+    /* a Robin wet collider's rate beta_water / rho_0, as evaporation's below */
+    for (int c = 0; c < s->ncol; c++)
+        if (!isnan(s->cols[c].saturation) && s->cols[c].beta_water > 0)
+            for (int m = 0; m < s->mats.n; m++) e = fmax(e, s->cols[c].beta_water / s->mats.slot[m].core[CP_WATER_DENSITY]);
     /* a boundary cell's water rho_0 s dx^dim against its loss beta theta s dx^(dim-1) */
     if (e > 0) dt = fmin(dt, dx / (2.0 * e));
     return dt;
@@ -155,16 +159,89 @@ double water_total(const hearth_scene *s) {
  * evaporation (eq. 22, 25) into CH_DMW in one pass with heat; G2P hands each
  * particle its share (water_take); water_finish sums the step's losses. */
 
+/* The node at global index gi: its storage and local index, NULL past the
+ * grid or in a block without storage. */
+static double *node_at(const grid *g, const int gi[3], int *l) {
+    for (int d = 0; d < g->dim; d++)
+        if (gi[d] < 0 || gi[d] > g->nn[d] - 1) return NULL;
+    const int slot = g->slot[grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B)];
+    if (slot < 0) return NULL;
+    *l = g->dim == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
+                     : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
+    return grid_block(g, slot);
+}
+
+/* The holding wet collider (saturation, no beta_water) whose face is nearest
+ * x, if x lies within dx/2 outside it or inside it: its signed distance in *phi
+ * and its outward normal in n. NULL otherwise. */
+static const collider *holder_at(const hearth_scene *s, const double x[3], double reach, double *phi, double n[3]) {
+    const collider *best = NULL;
+    double bd = reach * s->def.dx;
+    for (int q = 0; q < s->ncol; q++) {
+        const collider *col = &s->cols[q];
+        if (isnan(col->saturation) || col->beta_water > 0 || !collider_near(col, x)) continue;
+        double nq[3] = {0, 0, 0};
+        const double d = collider_sdf(col, x, nq);
+        if (d < bd) {
+            bd = d, best = col;
+            memcpy(n, nq, sizeof nq);
+        }
+    }
+    *phi = bd;
+    return best;
+}
+
+/* The held value of a node at signed distance phi from a wet collider's face
+ * (normal n, held saturation S): the profile continued linearly through S at
+ * the face, S + phi g, with g the normal slope between the face and the grid's
+ * saturation at 2 dx inside (a point whose B-spline stencil lies wholly in
+ * free nodes for a flat face). Holding S itself on the nodes past the face, as
+ * before, flattened the profile there: the B-spline field at the face is then
+ * (s_(a-1) + 7 S) / 8, not S, and the outermost particles saw a gradient 3/4
+ * of the true one. g = 0 (S) where that stencil reaches a node without water
+ * or a held one (a corner of the body, a thin part). */
+static double held_value(const hearth_scene *s, const double xi[3], double phi, const double n[3], double S) {
+    const grid *g = &s->g;
+    const int D = g->dim, NPB = g->nodes_per_block;
+    const double dx = g->dx, h = 2.0 * dx;
+    double xm[3] = {0, 0, 0};
+    for (int d = 0; d < D; d++) xm[d] = xi[d] + (h - phi) * n[d];
+    int base[3] = {0, 0, 0};
+    double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
+    for (int d = 0; d < D; d++) {
+        const double Xd = (xm[d] - g->lo[d]) * g->inv_dx;
+        base[d] = (int)floor(Xd - 0.5);
+        bspline_weights(Xd - base[d], w[d], dw);
+    }
+    double sm = 0;
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+            for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
+                int l;
+                const double *node = node_at(g, gi, &l);
+                if (!node || !(node[CH_MW * NPB + l] > 0)) return S;
+                double xj[3] = {0, 0, 0}, pj, nj[3];
+                for (int d = 0; d < D; d++) xj[d] = g->lo[d] + gi[d] * dx;
+                if (holder_at(s, xj, 0.5, &pj, nj)) return S; /* its value is being held, not known */
+                sm += w[0][a] * w[1][b] * w[2][c] * node[CH_SW * NPB + l];
+            }
+    return S + phi * (sm - S) / h;
+}
+
 void water_prepare(hearth_scene *s) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block;
-    int wet = 0;
-    for (int c = 0; c < s->ncol; c++) wet |= !isnan(s->cols[c].saturation);
+    int wet = 0, exchange = 0; /* colliders that hold their saturation, and Robin ones */
+    for (int c = 0; c < s->ncol; c++) {
+        wet |= !isnan(s->cols[c].saturation) && !(s->cols[c].beta_water > 0);
+        exchange |= !isnan(s->cols[c].saturation) && s->cols[c].beta_water > 0;
+    }
+    s->water.exchange = exchange;
+    s->water.hold = wet;
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) { /* node saturation s_i = m_i^w / (rho_0^w V_i) */
         double *node = grid_block(g, k);
-        int bc[3];
-        grid_block_coords(g, g->active[k], bc);
         for (int l = 0; l < NPB; l++) {
             const double c = node[CH_SW * NPB + l];
             if (!(c > 0)) {
@@ -173,22 +250,63 @@ void water_prepare(hearth_scene *s) {
             }
             node[CH_SW * NPB + l] = node[CH_MW * NPB + l] / c;
             node[CH_MW * NPB + l] = c; /* from here on CH_MW is the capacity, for eq. 19 */
-            if (!wet) continue;
-            /* a node inside a wet collider holds its saturation; water reaching it goes
-             * into the collider (its mass is zeroed so eq. 19 hands none of it back) */
-            int gi[3];
-            grid_node_index(g, bc, l, gi);
-            double xi[3] = {0, 0, 0};
-            for (int d = 0; d < g->dim; d++) xi[d] = g->lo[d] + gi[d] * g->dx;
-            for (int q = 0; q < s->ncol; q++) {
-                const collider *col = &s->cols[q];
-                /* nodes inside, and the node layer nearest the surface: the held value sits on the surface to within dx/2 */
-                if (isnan(col->saturation) || !collider_near(col, xi) || collider_sdf(col, xi, NULL) >= 0.5 * g->dx) continue;
-                node[CH_SW * NPB + l] = col->saturation;
-                node[CH_MW * NPB + l] = 0.0; /* no capacity: nothing is handed back */
-            }
         }
     }
+    if (!wet) return;
+    /* A node inside a wet collider or within dx/2 of its face is held; water
+     * reaching it goes into the collider (its capacity is zeroed so eq. 19
+     * hands none of it back). This pass writes only held nodes and reads only
+     * free ones (held_value refuses a held neighbour), so blocks run in parallel. */
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
+    for (int k = 0; k < g->nactive; k++) {
+        double *node = grid_block(g, k);
+        int bc[3];
+        grid_block_coords(g, g->active[k], bc);
+        for (int l = 0; l < NPB; l++) {
+            if (!(node[CH_MW * NPB + l] > 0)) continue;
+            int gi[3];
+            grid_node_index(g, bc, l, gi);
+            double xi[3] = {0, 0, 0}, phi, n[3] = {0, 0, 0};
+            for (int d = 0; d < g->dim; d++) xi[d] = g->lo[d] + gi[d] * g->dx;
+            const collider *col = holder_at(s, xi, 0.5, &phi, n);
+            if (!col) continue;
+            node[CH_SW * NPB + l] = held_value(s, xi, phi, n, col->saturation);
+            node[CH_MW * NPB + l] = 0.0; /* no capacity: nothing is handed back */
+        }
+    }
+}
+
+/* Particles within dx/2 of a holding wet collider's face stand for the layer
+ * the held nodes cover: they take the grid's new saturation at their place
+ * (PIC) rather than its change (FLIP), since the held nodes have no change to
+ * hand them. With FLIP they kept their starting saturation beside a face held
+ * at another (measured: the sheet's uptake 5% low at 40 cells, first order). */
+int water_held_particle(const hearth_scene *s, const double x[3]) {
+    double phi, n[3];
+    return holder_at(s, x, 0.5, &phi, n) != NULL;
+}
+
+/* Robin wet colliders act, as heated ones do (thermal.c), on the particles
+ * within dx of them, each carrying V_p/dx of contact (a band of thickness dx
+ * sums to the contact area whatever way the face lies). The exchange uses
+ * the saturation at the face, extrapolated from the particle along the
+ * collider's normal with the grid's gradient: the particle's own value sits
+ * dx/4 to 3dx/4 inside and would move the exchange's reference by O(dx).
+ * boundary.area is no help here: boundary.c removes the contact faces from
+ * the air surface (contact is not air). */
+double water_exchange(const hearth_scene *s, const double x[3], double Vp, double si, const double gs[3]) {
+    const double dx = s->def.dx;
+    double out = 0;
+    for (int c = 0; c < s->ncol; c++) {
+        const collider *col = &s->cols[c];
+        if (isnan(col->saturation) || !(col->beta_water > 0) || !collider_near(col, x)) continue;
+        double n[3] = {0, 0, 0};
+        const double d = collider_sdf(col, x, n);
+        if (d >= dx) continue;
+        const double h = d > 0 ? d : 0.0, sf = si - h * (n[0] * gs[0] + n[1] * gs[1] + n[2] * gs[2]);
+        out += col->beta_water * (sf - col->saturation) * Vp / dx;
+    }
+    return out;
 }
 
 /* Each particle takes its nodes' change of saturation (FLIP, as temperature
@@ -197,13 +315,13 @@ void water_prepare(hearth_scene *s) {
  * the particles' water instead; next to a dry region that multiplies a wet
  * particle's gain by s_p / s_i and pushed saturation past its largest initial
  * value (0.94 from 0.9 in water_conservation). Then the floor applies. */
-double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) {
+double water_take(hearth_scene *s, int i, double r, double pic, double *dmax, double *emax) {
     particles *ps = &s->ps;
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     double *W = pcold(ps, PC_WATER);
     const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
     const double cap = ms->core[CP_WATER_DENSITY] * mpm_state_of(s)->vol[i], before = W[i]; /* capacity(), with P2G's volume */
-    double m = before + cap * r;
+    double m = isnan(pic) ? before + cap * r : cap * pic;
     if (m < WATER_SATURATION_FLOOR * cap) m = WATER_SATURATION_FLOOR * cap;
     W[i] = m;
     particle_limits(ms, theta_abs(T, i, ms), m / cap, dmax, emax);

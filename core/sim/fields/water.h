@@ -16,6 +16,8 @@ typedef struct water_state {
     double step_removed;   /* by the step being taken; counted when it stands (water_step_stands) */
     double dmax, emax;     /* largest K theta s and beta theta / rho_0 after the last step */
     int limits_valid;      /* 0: particles or materials changed since, scan again */
+    int exchange;          /* this step has wet colliders with beta_water > 0 (Robin): water_prepare sets it */
+    int hold;              /* this step has wet colliders that hold their saturation: water_prepare sets it */
 } water_state;
 
 /// Empty state: nothing lost, limits to be scanned.
@@ -51,9 +53,18 @@ double water_saturation(const struct hearth_scene *s, int i);
 /// def.water_momentum the relative water momentum (eq. 26-27).
 void water_prepare(struct hearth_scene *s);
 /// In G2P, at P2G's positions: particle i takes r, the interpolated change of
-/// its nodes' saturation (eq. 19-20, FLIP), floored. Returns the water it
-/// lost (kg); raises *dmax and *emax, the explicit-step limits.
-double water_take(struct hearth_scene *s, int i, double r, double *dmax, double *emax);
+/// its nodes' saturation (eq. 19-20, FLIP), or when pic is not NaN the
+/// saturation pic itself; floored. Returns the water it lost (kg); raises
+/// *dmax and *emax, the explicit-step limits.
+double water_take(struct hearth_scene *s, int i, double r, double pic, double *dmax, double *emax);
+/// Does x lie within dx/2 of a wet collider that holds its saturation (or
+/// inside it)? Such particles take the grid's saturation (PIC) in G2P.
+int water_held_particle(const struct hearth_scene *s, const double x[3]);
+/// Water leaving the body at a particle x of volume Vp (m^3) through the
+/// Robin wet colliders (beta_water > 0) it touches (kg/s; negative: taken up),
+/// si and gs the grid's saturation and its gradient at x. Called by
+/// transport.c only when s->water.exchange is set.
+double water_exchange(const struct hearth_scene *s, const double x[3], double Vp, double si, const double gs[3]);
 /// After G2P: the step's water lost and the step limits, summed in block order.
 void water_finish(struct hearth_scene *s);
 /// Total water in the particles (kg, or kg/m in 2D).
