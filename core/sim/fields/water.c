@@ -27,12 +27,22 @@
  * Boundary particles and
  * their areas S come from boundary.c (§6.6).
  *
- * Wet colliders hold the saturation of the grid nodes inside them or within
- * dx/2 of their surface (a Dirichlet condition at the collider's surface): a wet cloth, or humid air
- * in equilibrium. Water that flows into those nodes leaves into the collider;
- * holding particles instead leaves a boundary layer that halves the exchange
- * in the Crank sheet test, because eq. 19 hands most of a node's gain back to
- * the free particles that share it.
+ * Wet colliders (our extension, issue #17) either hold a saturation S at
+ * their face (a Dirichlet condition: a wet cloth, humid air in equilibrium)
+ * or, with beta_water > 0, exchange beta_water (s - S) through it (Robin).
+ * A holding collider holds the grid nodes inside it or within dx/2 of its
+ * face at the profile continued linearly through S (held_value); water that
+ * flows into them leaves into the collider; the free nodes get the face's
+ * flux that their B-splines see (water_face_flux), and the particles within
+ * dx/2 of the face take the grid's saturation (water_held_particle). Holding
+ * particles instead of nodes left a boundary layer that halved the exchange
+ * in the Crank sheet test, because eq. 19 hands most of a node's gain back
+ * to the free particles that share it. A Robin collider's exchange goes
+ * through water_face_flux too. Crank's sheet (tests/unit_water.c,
+ * docs/validation.md) converges at second order through both.
+ *
+ * The oven's ambient saturation s_amb (oven.saturation) is ours as well:
+ * Ding et al. dry toward s = 0; with s_amb > s the body takes water up.
  *
  * With the scene's water_momentum switch the water's motion relative to the
  * solid carries momentum (eq. 26-27): the grid gets sum_p w_ip V_p dq_p with
@@ -276,6 +286,90 @@ void water_prepare(hearth_scene *s) {
     }
 }
 
+/* The flux through wet colliders' faces into the free nodes, from the
+ * particles within dx of a face, each carrying V_p/dx of it (a band of
+ * thickness dx sums to the contact area whatever way the face lies; heated
+ * colliders do the same, thermal.c). Each hands its flux density to the
+ * nodes around its foot on the face, where the weak form's boundary term
+ * int_face w_i q.n dS lives:
+ *  - a holding face: -rho_0 D n.grad s, at the particle. The held nodes take
+ *    what the Galerkin sum hands them, but a free node's B-spline does not
+ *    vanish on the face (w = 1/8 there for a face on a node row), so without
+ *    this term the free nodes took 0.875 of a linear profile's flux, and
+ *    Crank's sheet stayed first order (9.8%, 4.1%, 1.9% low at 10, 20, 40
+ *    cells; with it 3.9%, 0.9%, 0.3%).
+ *  - a Robin face (beta_water > 0): -beta_water (s_face - S), s_face the
+ *    saturation extrapolated from the particle to its foot along the normal
+ *    (the particle's own value sits dx/4 to 3dx/4 inside and would move the
+ *    exchange's reference by O(dx)). boundary.area is no help here: boundary.c
+ *    removes the contact faces from the air surface (contact is not air).
+ * Serial: it runs only in scenes with a wet collider. */
+void water_face_flux(hearth_scene *s, double dt) {
+    if (!s->water.hold && !s->water.exchange) return;
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const int D = g->dim, NPB = g->nodes_per_block;
+    const double dx = g->dx, *X = pcold(ps, PC_X), *W = pcold(ps, PC_WATER), *vol = mpm_state_of(s)->vol;
+    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    for (int i = 0; i < ps->n; i++) {
+        const double *x = X + 3 * i;
+        double phi = dx, n[3] = {0, 0, 0};
+        const collider *col = NULL;
+        for (int q = 0; q < s->ncol; q++) { /* the nearest wet face within dx */
+            const collider *cq = &s->cols[q];
+            if (isnan(cq->saturation) || !collider_near(cq, x)) continue;
+            double nq[3] = {0, 0, 0};
+            const double d = collider_sdf(cq, x, nq);
+            if (d < phi) col = cq, phi = d, memcpy(n, nq, sizeof nq);
+        }
+        if (!col) continue;
+        /* n . grad s at the particle, from the node saturations (held ones included) */
+        int base[3] = {0, 0, 0};
+        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
+        for (int d = 0; d < D; d++) {
+            const double Xd = (x[d] - g->lo[d]) * g->inv_dx;
+            base[d] = (int)floor(Xd - 0.5);
+            bspline_weights(Xd - base[d], w[d], dw[d]);
+        }
+        double gn = 0, si = 0;
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++)
+                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                    const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
+                    int l;
+                    const double *node = node_at(g, gi, &l);
+                    if (!node) continue;
+                    const double wz = D == 3 ? w[2][c] : 1.0, sv = node[CH_SW * NPB + l];
+                    si += sv * w[0][a] * w[1][b] * wz;
+                    gn += sv * (n[0] * dw[0][a] * w[1][b] * wz + n[1] * w[0][a] * dw[1][b] * wz +
+                                (D == 3 ? n[2] * w[0][a] * w[1][b] * dw[2][c] : 0.0));
+                }
+        gn *= g->inv_dx;
+        const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
+        const double rho0 = ms->core[CP_WATER_DENSITY], sp = W[i] / (rho0 * vol[i]);
+        const double diff = ms->core[CP_WATER_DIFFUSIVITY] * theta_abs(T, i, ms) * sp;
+        const double h = phi > 0 ? phi : 0.0;
+        const double inflow = col->beta_water > 0 ? -col->beta_water * (si - h * gn - col->saturation) : -rho0 * diff * gn;
+        const double dm = dt * inflow * vol[i] / dx; /* into the body, kg */
+        /* to the nodes around the particle's foot on the face */
+        double xf[3] = {x[0], x[1], x[2]};
+        for (int d = 0; d < D; d++) {
+            xf[d] -= h * n[d];
+            const double Xd = (xf[d] - g->lo[d]) * g->inv_dx;
+            base[d] = (int)floor(Xd - 0.5);
+            bspline_weights(Xd - base[d], w[d], dw[d]);
+        }
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++)
+                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                    const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
+                    int l;
+                    double *node = node_at(g, gi, &l);
+                    if (node) node[CH_DMW * NPB + l] += dm * w[0][a] * w[1][b] * (D == 3 ? w[2][c] : 1.0);
+                }
+    }
+}
+
 /* Particles within dx/2 of a holding wet collider's face stand for the layer
  * the held nodes cover: they take the grid's new saturation at their place
  * (PIC) rather than its change (FLIP), since the held nodes have no change to
@@ -284,29 +378,6 @@ void water_prepare(hearth_scene *s) {
 int water_held_particle(const hearth_scene *s, const double x[3]) {
     double phi, n[3];
     return holder_at(s, x, 0.5, &phi, n) != NULL;
-}
-
-/* Robin wet colliders act, as heated ones do (thermal.c), on the particles
- * within dx of them, each carrying V_p/dx of contact (a band of thickness dx
- * sums to the contact area whatever way the face lies). The exchange uses
- * the saturation at the face, extrapolated from the particle along the
- * collider's normal with the grid's gradient: the particle's own value sits
- * dx/4 to 3dx/4 inside and would move the exchange's reference by O(dx).
- * boundary.area is no help here: boundary.c removes the contact faces from
- * the air surface (contact is not air). */
-double water_exchange(const hearth_scene *s, const double x[3], double Vp, double si, const double gs[3]) {
-    const double dx = s->def.dx;
-    double out = 0;
-    for (int c = 0; c < s->ncol; c++) {
-        const collider *col = &s->cols[c];
-        if (isnan(col->saturation) || !(col->beta_water > 0) || !collider_near(col, x)) continue;
-        double n[3] = {0, 0, 0};
-        const double d = collider_sdf(col, x, n);
-        if (d >= dx) continue;
-        const double h = d > 0 ? d : 0.0, sf = si - h * (n[0] * gs[0] + n[1] * gs[1] + n[2] * gs[2]);
-        out += col->beta_water * (sf - col->saturation) * Vp / dx;
-    }
-    return out;
 }
 
 /* Each particle takes its nodes' change of saturation (FLIP, as temperature

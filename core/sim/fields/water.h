@@ -57,14 +57,13 @@ void water_prepare(struct hearth_scene *s);
 /// saturation pic itself; floored. Returns the water it lost (kg); raises
 /// *dmax and *emax, the explicit-step limits.
 double water_take(struct hearth_scene *s, int i, double r, double pic, double *dmax, double *emax);
+/// After transport_apply: the water crossing wet colliders' faces over dt,
+/// into CH_DMW around each contact particle's foot on the face (the boundary
+/// term of holding faces, the exchange of Robin ones).
+void water_face_flux(struct hearth_scene *s, double dt);
 /// Does x lie within dx/2 of a wet collider that holds its saturation (or
 /// inside it)? Such particles take the grid's saturation (PIC) in G2P.
 int water_held_particle(const struct hearth_scene *s, const double x[3]);
-/// Water leaving the body at a particle x of volume Vp (m^3) through the
-/// Robin wet colliders (beta_water > 0) it touches (kg/s; negative: taken up),
-/// si and gs the grid's saturation and its gradient at x. Called by
-/// transport.c only when s->water.exchange is set.
-double water_exchange(const struct hearth_scene *s, const double x[3], double Vp, double si, const double gs[3]);
 /// After G2P: the step's water lost and the step limits, summed in block order.
 void water_finish(struct hearth_scene *s);
 /// Total water in the particles (kg, or kg/m in 2D).
