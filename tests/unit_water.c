@@ -507,6 +507,16 @@ TEST(water_bad_input) {
     cd.saturation = -0.1;
     CHECK(hearth_scene_add_collider(s, &cd, &err) < 0);
     CHECK_STR_CONTAINS(err.msg, "collider saturation = -0.1; valid range [0, 1]");
+    cd.saturation = 0.5, cd.beta_water = -1;
+    CHECK(hearth_scene_add_collider(s, &cd, &err) < 0);
+    CHECK_STR_CONTAINS(err.msg, "collider beta_water = -1 kg/(m^2 s); valid range [0, inf)");
+    cd.saturation = NAN, cd.beta_water = 0.1; /* an exchange needs the saturation it goes toward */
+    CHECK(hearth_scene_add_collider(s, &cd, &err) < 0);
+    CHECK_STR_CONTAINS(err.msg, "collider beta_water = 0.1 kg/(m^2 s) needs the collider's saturation");
+    hearth_scene_def d = hearth_default_scene_def();
+    d.oven_saturation = 1.2;
+    CHECK(hearth_scene_create(&d, &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "oven.saturation");
     const char *nm[] = {"evaporation"};
     const double nv[] = {-1};
     CHECK(hearth_scene_add_material(s, "elastic", nm, nv, 1, &err) < 0);
@@ -515,12 +525,21 @@ TEST(water_bad_input) {
     hearth_scene_destroy(s);
 }
 
-/* A run with water saved and restored continues bit-identically. */
+/* A run with water saved and restored continues bit-identically, a humid
+ * oven and a Robin wet collider included. */
 TEST(water_checkpoint_restore) {
     const char *nm[] = {"E", "density", "water_diffusivity", "evaporation", "water_stiffness"};
     const double nv[] = {1e3, 1000, 1e-8, 1e-4, 1e3};
     strip st = make_strip(0.005, 10, 6, nm, nv, 5, 0.6);
     hearth_error err;
+    st.s->def.oven_saturation = 0.3;
+    const double p[3] = {0.005, 0, 0}, nrm[3] = {-1, 0, 0};
+    hearth_collider_def cd = hearth_default_collider_def();
+    cd.shape = hearth_shape_plane(p, nrm);
+    cd.saturation = 0.9;
+    cd.beta_water = 1e-3;
+    CHECK(hearth_scene_add_collider(st.s, &cd, &err) >= 0);
+    hearth_shape_free((hearth_shape *)cd.shape);
     CHECK(hearth_scene_step(st.s, 50, &err) == HEARTH_OK);
     char path[] = "/tmp/hearth_water_ckXXXXXX";
     const int fd = mkstemp(path);
@@ -537,6 +556,8 @@ TEST(water_checkpoint_restore) {
         hearth_scene_stats(r, &a);
         hearth_scene_stats(st.s, &b);
         CHECK(a.water_lost == b.water_lost);
+        CHECK(r->def.oven_saturation == 0.3);
+        CHECK(r->cols[r->ncol - 1].beta_water == 1e-3);
         hearth_scene_destroy(r);
     }
     remove(path);
