@@ -34,7 +34,7 @@
  * face at the profile continued linearly through S (held_value); water that
  * flows into them leaves into the collider; the free nodes get the face's
  * flux that their B-splines see (water_face_flux), and the particles within
- * dx/2 of the face take the grid's saturation (water_held_particle). Holding
+ * dx/2 of the face take the grid's saturation (held_particles). Holding
  * particles instead of nodes left a boundary layer that halved the exchange
  * in the Crank sheet test, because eq. 19 hands most of a node's gain back
  * to the free particles that share it. A Robin collider's exchange goes
@@ -370,15 +370,6 @@ void water_face_flux(hearth_scene *s, double dt) {
     }
 }
 
-/* Particles within dx/2 of a holding wet collider's face stand for the layer
- * the held nodes cover: they take the grid's new saturation at their place
- * (PIC) rather than its change (FLIP), since the held nodes have no change to
- * hand them. With FLIP they kept their starting saturation beside a face held
- * at another (measured: the sheet's uptake 5% low at 40 cells, first order). */
-int water_held_particle(const hearth_scene *s, const double x[3]) {
-    double phi, n[3];
-    return holder_at(s, x, 0.5, &phi, n) != NULL;
-}
 
 /* Each particle takes its nodes' change of saturation (FLIP, as temperature
  * in eq. 21), dm_p = rho_0 V_p sum_i w_ip ds_i, which hands out exactly each
@@ -386,17 +377,65 @@ int water_held_particle(const hearth_scene *s, const double x[3]) {
  * the particles' water instead; next to a dry region that multiplies a wet
  * particle's gain by s_p / s_i and pushed saturation past its largest initial
  * value (0.94 from 0.9 in water_conservation). Then the floor applies. */
-double water_take(hearth_scene *s, int i, double r, double pic, double *dmax, double *emax) {
+double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) {
     particles *ps = &s->ps;
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     double *W = pcold(ps, PC_WATER);
     const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
     const double cap = ms->core[CP_WATER_DENSITY] * mpm_state_of(s)->vol[i], before = W[i]; /* capacity(), with P2G's volume */
-    double m = isnan(pic) ? before + cap * r : cap * pic;
+    double m = before + cap * r;
     if (m < WATER_SATURATION_FLOOR * cap) m = WATER_SATURATION_FLOOR * cap;
     W[i] = m;
     particle_limits(ms, theta_abs(T, i, ms), m / cap, dmax, emax);
     return before - m;
+}
+
+/* After G2P, the particles within dx/2 of a holding wet collider's face take
+ * the grid's new saturation at their place, sum_i w_ip (s_i + ds_i) with the
+ * held nodes' values (PIC), instead of the FLIP change G2P gave them: they
+ * stand for the layer the held nodes cover, and the held nodes have no change
+ * to hand them. With FLIP they kept their starting saturation beside a face
+ * held at another (Crank's sheet: 13%, 5.1%, 2.3% low, first order). A pass
+ * of its own, so that G2P costs what it did in scenes without such a
+ * collider; it sees the positions G2P moved the particles to, which differ
+ * from P2G's by v dt, far below dx. Returns the water the particles lost. */
+static double held_particles(hearth_scene *s, double *dmax, double *emax) {
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const int D = g->dim, NPB = g->nodes_per_block;
+    const double *X = pcold(ps, PC_X), *vol = mpm_state_of(s)->vol;
+    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    double *W = pcold(ps, PC_WATER), removed = 0;
+    for (int i = 0; i < ps->n; i++) {
+        double phi, n[3];
+        if (!holder_at(s, X + 3 * i, 0.5, &phi, n)) continue;
+        int base[3] = {0, 0, 0};
+        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
+        for (int d = 0; d < D; d++) {
+            const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
+            base[d] = (int)floor(Xd - 0.5);
+            bspline_weights(Xd - base[d], w[d], dw);
+        }
+        double sat = 0;
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++)
+                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                    const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
+                    int l;
+                    const double *node = node_at(g, gi, &l);
+                    if (!node) continue;
+                    const double cw = node[CH_MW * NPB + l], ds = cw > 0 ? node[CH_DMW * NPB + l] / cw : 0.0;
+                    sat += w[0][a] * w[1][b] * w[2][c] * (node[CH_SW * NPB + l] + ds);
+                }
+        const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
+        const double cap = ms->core[CP_WATER_DENSITY] * vol[i], before = W[i];
+        double m = sat * cap;
+        if (m < WATER_SATURATION_FLOOR * cap) m = WATER_SATURATION_FLOOR * cap;
+        W[i] = m;
+        particle_limits(ms, theta_abs(T, i, ms), m / cap, dmax, emax);
+        removed += before - m;
+    }
+    return removed;
 }
 
 void water_finish(hearth_scene *s) {
@@ -408,6 +447,7 @@ void water_finish(hearth_scene *s) {
         dmax = fmax(dmax, m->partial[k].water_dmax);
         emax = fmax(emax, m->partial[k].water_emax);
     }
+    if (s->water.hold) removed += held_particles(s, &dmax, &emax);
     s->water.step_removed = removed;
     s->water.dmax = dmax;
     s->water.emax = emax;

@@ -53,18 +53,15 @@ double water_saturation(const struct hearth_scene *s, int i);
 /// def.water_momentum the relative water momentum (eq. 26-27).
 void water_prepare(struct hearth_scene *s);
 /// In G2P, at P2G's positions: particle i takes r, the interpolated change of
-/// its nodes' saturation (eq. 19-20, FLIP), or when pic is not NaN the
-/// saturation pic itself; floored. Returns the water it lost (kg); raises
-/// *dmax and *emax, the explicit-step limits.
-double water_take(struct hearth_scene *s, int i, double r, double pic, double *dmax, double *emax);
+/// its nodes' saturation (eq. 19-20, FLIP), floored. Returns the water it
+/// lost (kg); raises *dmax and *emax, the explicit-step limits.
+double water_take(struct hearth_scene *s, int i, double r, double *dmax, double *emax);
 /// After transport_apply: the water crossing wet colliders' faces over dt,
 /// into CH_DMW around each contact particle's foot on the face (the boundary
 /// term of holding faces, the exchange of Robin ones).
 void water_face_flux(struct hearth_scene *s, double dt);
-/// Does x lie within dx/2 of a wet collider that holds its saturation (or
-/// inside it)? Such particles take the grid's saturation (PIC) in G2P.
-int water_held_particle(const struct hearth_scene *s, const double x[3]);
-/// After G2P: the step's water lost and the step limits, summed in block order.
+/// After G2P: the particles beside holding wet colliders take the grid's
+/// saturation (PIC); the step's water lost and the step limits, summed in block order.
 void water_finish(struct hearth_scene *s);
 /// Total water in the particles (kg, or kg/m in 2D).
 double water_total(const struct hearth_scene *s);

@@ -556,10 +556,6 @@ double mpm_grid_update(hearth_scene *s, double dt) {
 
 /* ---- G2P ------------------------------------------------------------- */
 
-FORCE_INLINE int tile_at(const int D, const int base[3], int a, int b, int c) {
-    return D == 2 ? (base[0] + a) * GRID_T + base[1] + b : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
-}
-
 FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const int WATER, int k, double dt, double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
@@ -573,7 +569,6 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     int bc[3];
     grid_block_coords(g, pb.block, bc);
     const int org[3] = {bc[0] * GRID_B, bc[1] * GRID_B, bc[2] * GRID_B};
-    const int hold = WATER && s->water.hold;
 
     /* gather the tile's velocities once; particles then read a small dense array */
     for (int a = 0; a < GRID_T; a++)
@@ -590,8 +585,6 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                 if (WATER) { /* the change of node saturation, ds_i = dm_i / (rho_0 V_i) (water.c) */
                     const double cw = node[CH_MW * NPB + l];
                     tile[5 * TN + t] = cw > 0 ? node[CH_DMW * NPB + l] / cw : 0.0;
-                    /* and the new saturation, for particles beside a holding wet collider */
-                    if (hold) tile[6 * TN + t] = node[CH_SW * NPB + l] + tile[5 * TN + t];
                 }
             }
 
@@ -651,17 +644,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         }
         for (int a = 0; a < 9; a++) C[a] = Dinv * B[a];
         /* water first: its step limits use the temperature the flux was evaluated at */
-        if (WATER) {
-            double pic = NAN; /* beside a holding wet collider: the new saturation (water.c) */
-            if (hold && water_held_particle(s, x)) {
-                pic = 0;
-                for (int a = 0; a < 3; a++)
-                    for (int b = 0; b < 3; b++)
-                        for (int c = 0; c < (D == 3 ? 3 : 1); c++)
-                            pic += w[0][a] * w[1][b] * w[2][c] * tile[6 * TN + tile_at(D, base, a, b, c)];
-            }
-            w_removed += water_take(s, i, ds, pic, &w_dmax, &w_emax);
-        }
+        if (WATER) w_removed += water_take(s, i, ds, &w_dmax, &w_emax);
         if (HEAT) { /* FLIP (eq. 21): the particle takes its nodes' temperature change */
             const double T0 = Tcol[i], flip = s->def.heat_flip;
             Tcol[i] = flip == 1.0 ? T0 + dT : flip * (T0 + dT) + (1.0 - flip) * Tn; /* FLIP-PIC blend */
@@ -748,7 +731,7 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
     const block_fn fn = g2p_fns[s->g.dim == 3][thermal_active(s)][water_active(s)];
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
-        double tile[7 * GRID_T * GRID_T * GRID_T];
+        double tile[6 * GRID_T * GRID_T * GRID_T];
 #pragma omp for schedule(dynamic, 2)
         for (int k = 0; k < m->npb; k++) fn(s, k, dt, tile);
     }
