@@ -640,7 +640,8 @@ function S:add(o)
   return body
 end
 
---- s:collider{shape = ..., mode = "separate", friction = 0, velocity = {..} or function(t), omega = ..., pivot = {..}}
+--- s:collider{shape = ..., mode = "separate", friction = 0, velocity = {..} or function(t), omega = ..., pivot = {..},
+---   temperature = degC, beta = W/(m^2 K), saturation = 0..1, beta_water = kg/(m^2 s)}
 function S:collider(o)
   if type(o) ~= "table" then error("s:collider: expected a table", 2) end
   check_keys(o, { shape = true, mode = true, friction = true, velocity = true, omega = true, pivot = true, name = true,

@@ -230,10 +230,11 @@ static double held_value(const hearth_scene *s, const double xi[3], double phi, 
                 const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
                 int l;
                 const double *node = node_at(g, gi, &l);
-                if (!node || !(node[CH_MW * NPB + l] > 0)) return S;
+                if (!node) return S;
                 double xj[3] = {0, 0, 0}, pj, nj[3];
                 for (int d = 0; d < D; d++) xj[d] = g->lo[d] + gi[d] * dx;
-                if (holder_at(s, xj, 0.5, &pj, nj)) return S; /* its value is being held, not known */
+                /* a held node's value is being written by another thread: ask the geometry first */
+                if (holder_at(s, xj, 0.5, &pj, nj) || !(node[CH_MW * NPB + l] > 0)) return S;
                 sm += w[0][a] * w[1][b] * w[2][c] * node[CH_SW * NPB + l];
             }
     return S + phi * (sm - S) / h;
