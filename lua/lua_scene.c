@@ -399,6 +399,7 @@ static int l_collider(lua_State *L) {
     if (!lua_isnoneornil(L, 8)) cd.temperature = luaL_checknumber(L, 8);
     cd.beta = luaL_optnumber(L, 9, 0);
     if (!lua_isnoneornil(L, 10)) cd.saturation = luaL_checknumber(L, 10);
+    cd.beta_water = luaL_optnumber(L, 11, 0);
     if (vfn || ofn) {
         hl_motion *m = lua_newuserdatauv(L, sizeof *m, 0);
         memset(m, 0, sizeof *m);

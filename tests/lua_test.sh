@@ -709,6 +709,13 @@ damping_refusals)
     expect_rc 0 "damping's and until_rest's errors"
     has out.txt "damping_errors ok" "bad damping, SPH damping, a damped checkpoint and a bad until_rest are refused"
     ;;
+wet_colliders_and_humid_oven)
+    # s:collider{saturation, beta_water} and h.scene{oven = {saturation}}: errors, and water moving their way
+    run wet_boundaries.lua
+    expect_rc 0 "wet colliders and the humid oven"
+    cat out.txt
+    has out.txt "wet_boundaries ok" "held, Robin and humid-air boundaries act and bad values are refused"
+    ;;
 gravity_at_events_and_ramp)
     # s:gravity{...} at events and s:gravity(function(t) ... end) against the integral of g
     run gravity_ramp.lua

@@ -69,6 +69,10 @@ static const hearth_setting settings[] = {
      "field live",
      NAN, -273.15, 5000, 0, 1, NULL, NULL, OFF(oven_temperature), -1, "oven_temperature", 0},
     REAL("oven.beta", "W/(m^2 K)", "oven air heat transfer coefficient beta", 10, 0, HUGE_VAL, oven_beta, 0),
+    REAL("oven.saturation", "1",
+         "ambient saturation (humidity) that evaporation goes toward: q.n = beta^w theta (s - s_amb) (our extension of Ding "
+         "et al. §3.2); 0 = dry air",
+         0, 0, 1, oven_saturation, 0),
     CHOICE("heat", "heat time stepping: forward Euler (dt limited by conduction) or backward Euler (CG solve)", 0, w_heat,
            heat_implicit, 1),
     FLAG("water_momentum", "the water's motion relative to the solid carries momentum (Ding et al. eq. 26-27)",

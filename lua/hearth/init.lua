@@ -472,7 +472,8 @@ function h.scene(o)
     local top, sub = e.name:match("^([^.]+)%.(.+)$")
     local v
     if top then v = o[top] and o[top][sub] else v = o[e.name] end
-    if v == nil and e.nan_ok and top and o[top] ~= nil then
+    -- (oven = {saturation = ...} alone is humid air for evaporation, without heat)
+    if v == nil and e.nan_ok and top and o[top] ~= nil and not (top == "oven" and o.oven.saturation ~= nil) then
       -- a sub-table's unset-able setting is its reason to be there (oven = {...} needs its temperature)
       error(("h.scene: %s = nil; valid range %s (%s)"):format(e.name, range_text(e), e.help), 2)
     end
@@ -660,13 +661,19 @@ function S:add(o)
 end
 
 --- s:collider{shape = ..., mode = "separate", friction = 0, velocity = {..} or function(t), omega = ..., pivot = {..},
----   temperature = 200, beta = 100 or fixed_temperature = true}
+---   temperature = degC, beta = W/(m^2 K) or fixed_temperature = true, saturation = 0..1, beta_water = kg/(m^2 s)}
 --- fixed_temperature = true (or beta = math.huge) holds the touching material at temperature (Dirichlet).
 function S:collider(o)
   if type(o) ~= "table" then error("s:collider: expected a table", 2) end
   check_keys(o, { shape = true, mode = true, friction = true, velocity = true, omega = true, pivot = true, name = true,
-    temperature = true, beta = true, saturation = true, fixed_temperature = true }, "s:collider")
+    temperature = true, beta = true, saturation = true, fixed_temperature = true, beta_water = true }, "s:collider")
   if o.saturation ~= nil then check_number(o.saturation, "s:collider: saturation", 0, 1) end
+  if o.beta_water ~= nil then
+    check_number(o.beta_water, "s:collider: beta_water", 0, 1e9, "kg/(m^2 s)")
+    if o.saturation == nil then
+      error("s:collider: beta_water needs saturation = ... (the saturation it exchanges water toward, 0..1)", 2)
+    end
+  end
   if o.temperature ~= nil then check_number(o.temperature, "s:collider: temperature", -273.15, 5000, "degC") end
   if o.beta ~= nil and o.beta ~= math.huge then check_number(o.beta, "s:collider: beta", 0, 1e9, "W/(m^2 K)") end
   if o.fixed_temperature and o.temperature == nil then
@@ -684,7 +691,7 @@ function S:collider(o)
   if w ~= nil and type(w) ~= "function" and type(w) ~= "number" then w = check_vec(w, "s:collider: omega") end
   local p = o.pivot and check_vec(o.pivot, "s:collider: pivot") or nil
   local ok, id = pcall(self._collider, self, o.shape, mode, fr, v, w, p, o.temperature,
-    o.temperature and (o.fixed_temperature and math.huge or o.beta or 100) or 0, o.saturation)
+    o.temperature and (o.fixed_temperature and math.huge or o.beta or 100) or 0, o.saturation, o.beta_water)
   if not ok then error(id, 2) end
   return id
 end

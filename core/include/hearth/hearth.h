@@ -214,6 +214,7 @@ typedef struct hearth_scene_def {
     uint64_t seed;        ///< for jittered seeding
     double oven_temperature; ///< oven air temperature (degrees C) for the Robin boundary; NaN = no oven
     double oven_beta;        ///< oven air heat transfer coefficient beta (W/(m^2 K)), >= 0
+    double oven_saturation;  ///< ambient saturation s_amb (0..1) that evaporation goes toward: q.n = beta^w theta (s - s_amb)
     int heat_implicit;       ///< 0: forward Euler heat (dt limited by conduction); 1: backward Euler (CG solve)
     int water_momentum;      ///< 1: the water's motion relative to the solid carries momentum (Ding et al. eq. 26-27)
     int transfer;            ///< momentum transfer: 0 APIC (default), 1 PIC (no affine part: dissipative)
@@ -333,6 +334,8 @@ typedef struct hearth_collider_def {
     double beta;               ///< contact heat transfer coefficient (W/(m^2 K)) ("conductive theta, beta", Ding et al. Table 2);
                                ///< INFINITY holds the touching material at `temperature` (Dirichlet: the grid nodes on or inside its face; MPM only)
     double saturation;         ///< a wet collider (cloth, humid surface) holds the saturation of the particles touching it; NaN = dry
+    double beta_water;         ///< with saturation: 0 holds it at the contact (Dirichlet); > 0 exchanges water instead, a flux
+                               ///< beta_water (s - saturation) out of the body through the contact (Robin), kg/(m^2 s)
 } hearth_collider_def;
 
 hearth_collider_def hearth_default_collider_def(void);

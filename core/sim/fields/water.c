@@ -1,7 +1,7 @@
 /* water.c: water moving through the solid (Ding et al. 2019 §3.2, §5.5, §6.2).
  *
  *   q^w = -K theta rho^w grad s,  rho^w = rho_0^w s     (Fick's law, §3.2, eq. 8)
- *   q^w . n = beta^w theta s on the air boundary        (evaporation, §3.2)
+ *   q^w . n = beta^w theta (s - s_amb) on the air boundary   (evaporation, §3.2; s_amb ours)
  *   sigma^w = -c (s - s_0) I                            (water pressure, eq. 14)
  *
  * The diffusivity is D = K theta s: the equation is nonlinear in s.
@@ -27,12 +27,22 @@
  * Boundary particles and
  * their areas S come from boundary.c (§6.6).
  *
- * Wet colliders hold the saturation of the grid nodes inside them or within
- * dx/2 of their surface (a Dirichlet condition at the collider's surface): a wet cloth, or humid air
- * in equilibrium. Water that flows into those nodes leaves into the collider;
- * holding particles instead leaves a boundary layer that halves the exchange
- * in the Crank sheet test, because eq. 19 hands most of a node's gain back to
- * the free particles that share it.
+ * Wet colliders (our extension, issue #17) either hold a saturation S at
+ * their face (a Dirichlet condition: a wet cloth, humid air in equilibrium)
+ * or, with beta_water > 0, exchange beta_water (s - S) through it (Robin).
+ * A holding collider holds the grid nodes inside it or within dx/2 of its
+ * face at the profile continued linearly through S (held_value); water that
+ * flows into them leaves into the collider; the free nodes get the face's
+ * flux that their B-splines see (water_face_flux), and the particles within
+ * dx/2 of the face take the grid's saturation (held_particles). Holding
+ * particles instead of nodes left a boundary layer that halved the exchange
+ * in the Crank sheet test, because eq. 19 hands most of a node's gain back
+ * to the free particles that share it. A Robin collider's exchange goes
+ * through water_face_flux too. Crank's sheet (tests/unit_water.c,
+ * docs/validation.md) converges at second order through both.
+ *
+ * The oven's ambient saturation s_amb (oven.saturation) is ours as well:
+ * Ding et al. dry toward s = 0; with s_amb > s the body takes water up.
  *
  * With the scene's water_momentum switch the water's motion relative to the
  * solid carries momentum (eq. 26-27): the grid gets sum_p w_ip V_p dq_p with
@@ -136,6 +146,10 @@ double water_dt_limit(const hearth_scene *s) {
     double dt = INFINITY;
     /* forward Euler on the B-spline Laplacian, as for heat: dx^2 / (2 dim D) */
     if (d > 0) dt = dx * dx / (2.0 * s->def.dim * d);
+    /* a Robin wet collider's rate beta_water / rho_0, as evaporation's below */
+    for (int c = 0; c < s->ncol; c++)
+        if (!isnan(s->cols[c].saturation) && s->cols[c].beta_water > 0)
+            for (int m = 0; m < s->mats.n; m++) e = fmax(e, s->cols[c].beta_water / s->mats.slot[m].core[CP_WATER_DENSITY]);
     /* a boundary cell's water rho_0 s dx^dim against its loss beta theta s dx^(dim-1) */
     if (e > 0) dt = fmin(dt, dx / (2.0 * e));
     return dt;
@@ -155,16 +169,90 @@ double water_total(const hearth_scene *s) {
  * evaporation (eq. 22, 25) into CH_DMW in one pass with heat; G2P hands each
  * particle its share (water_take); water_finish sums the step's losses. */
 
+/* The node at global index gi: its storage and local index, NULL past the
+ * grid or in a block without storage. */
+static double *node_at(const grid *g, const int gi[3], int *l) {
+    for (int d = 0; d < g->dim; d++)
+        if (gi[d] < 0 || gi[d] > g->nn[d] - 1) return NULL;
+    const int slot = g->slot[grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B)];
+    if (slot < 0) return NULL;
+    *l = g->dim == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
+                     : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
+    return grid_block(g, slot);
+}
+
+/* The holding wet collider (saturation, no beta_water) whose face is nearest
+ * x, if x lies within dx/2 outside it or inside it: its signed distance in *phi
+ * and its outward normal in n. NULL otherwise. */
+static const collider *holder_at(const hearth_scene *s, const double x[3], double reach, double *phi, double n[3]) {
+    const collider *best = NULL;
+    double bd = reach * s->def.dx;
+    for (int q = 0; q < s->ncol; q++) {
+        const collider *col = &s->cols[q];
+        if (isnan(col->saturation) || col->beta_water > 0 || !collider_near(col, x)) continue;
+        double nq[3] = {0, 0, 0};
+        const double d = collider_sdf(col, x, nq);
+        if (d < bd) {
+            bd = d, best = col;
+            memcpy(n, nq, sizeof nq);
+        }
+    }
+    *phi = bd;
+    return best;
+}
+
+/* The held value of a node at signed distance phi from a wet collider's face
+ * (normal n, held saturation S): the profile continued linearly through S at
+ * the face, S + phi g, with g the normal slope between the face and the grid's
+ * saturation at 2 dx inside (a point whose B-spline stencil lies wholly in
+ * free nodes for a flat face). Holding S itself on the nodes past the face, as
+ * before, flattened the profile there: the B-spline field at the face is then
+ * (s_(a-1) + 7 S) / 8, not S, and the outermost particles saw a gradient 3/4
+ * of the true one. g = 0 (S) where that stencil reaches a node without water
+ * or a held one (a corner of the body, a thin part). */
+static double held_value(const hearth_scene *s, const double xi[3], double phi, const double n[3], double S) {
+    const grid *g = &s->g;
+    const int D = g->dim, NPB = g->nodes_per_block;
+    const double dx = g->dx, h = 2.0 * dx;
+    double xm[3] = {0, 0, 0};
+    for (int d = 0; d < D; d++) xm[d] = xi[d] + (h - phi) * n[d];
+    int base[3] = {0, 0, 0};
+    double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
+    for (int d = 0; d < D; d++) {
+        const double Xd = (xm[d] - g->lo[d]) * g->inv_dx;
+        base[d] = (int)floor(Xd - 0.5);
+        bspline_weights(Xd - base[d], w[d], dw);
+    }
+    double sm = 0;
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+            for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
+                int l;
+                const double *node = node_at(g, gi, &l);
+                if (!node) return S;
+                double xj[3] = {0, 0, 0}, pj, nj[3];
+                for (int d = 0; d < D; d++) xj[d] = g->lo[d] + gi[d] * dx;
+                /* a held node's value is being written by another thread: ask the geometry first */
+                if (holder_at(s, xj, 0.5, &pj, nj) || !(node[CH_MW * NPB + l] > 0)) return S;
+                sm += w[0][a] * w[1][b] * w[2][c] * node[CH_SW * NPB + l];
+            }
+    return S + phi * (sm - S) / h;
+}
+
 void water_prepare(hearth_scene *s) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block;
-    int wet = 0;
-    for (int c = 0; c < s->ncol; c++) wet |= !isnan(s->cols[c].saturation);
+    int wet = 0, exchange = 0; /* colliders that hold their saturation, and Robin ones */
+    for (int c = 0; c < s->ncol; c++) {
+        wet |= !isnan(s->cols[c].saturation) && !(s->cols[c].beta_water > 0);
+        exchange |= !isnan(s->cols[c].saturation) && s->cols[c].beta_water > 0;
+    }
+    s->water.exchange = exchange;
+    s->water.hold = wet;
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) { /* node saturation s_i = m_i^w / (rho_0^w V_i) */
         double *node = grid_block(g, k);
-        int bc[3];
-        grid_block_coords(g, g->active[k], bc);
         for (int l = 0; l < NPB; l++) {
             const double c = node[CH_SW * NPB + l];
             if (!(c > 0)) {
@@ -173,23 +261,116 @@ void water_prepare(hearth_scene *s) {
             }
             node[CH_SW * NPB + l] = node[CH_MW * NPB + l] / c;
             node[CH_MW * NPB + l] = c; /* from here on CH_MW is the capacity, for eq. 19 */
-            if (!wet) continue;
-            /* a node inside a wet collider holds its saturation; water reaching it goes
-             * into the collider (its mass is zeroed so eq. 19 hands none of it back) */
+        }
+    }
+    if (!wet) return;
+    /* A node inside a wet collider or within dx/2 of its face is held; water
+     * reaching it goes into the collider (its capacity is zeroed so eq. 19
+     * hands none of it back). This pass writes only held nodes and reads only
+     * free ones (held_value refuses a held neighbour), so blocks run in parallel. */
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
+    for (int k = 0; k < g->nactive; k++) {
+        double *node = grid_block(g, k);
+        int bc[3];
+        grid_block_coords(g, g->active[k], bc);
+        for (int l = 0; l < NPB; l++) {
+            if (!(node[CH_MW * NPB + l] > 0)) continue;
             int gi[3];
             grid_node_index(g, bc, l, gi);
-            double xi[3] = {0, 0, 0};
+            double xi[3] = {0, 0, 0}, phi, n[3] = {0, 0, 0};
             for (int d = 0; d < g->dim; d++) xi[d] = g->lo[d] + gi[d] * g->dx;
-            for (int q = 0; q < s->ncol; q++) {
-                const collider *col = &s->cols[q];
-                /* nodes inside, and the node layer nearest the surface: the held value sits on the surface to within dx/2 */
-                if (isnan(col->saturation) || !collider_near(col, xi) || collider_sdf(col, xi, NULL) >= 0.5 * g->dx) continue;
-                node[CH_SW * NPB + l] = col->saturation;
-                node[CH_MW * NPB + l] = 0.0; /* no capacity: nothing is handed back */
-            }
+            const collider *col = holder_at(s, xi, 0.5, &phi, n);
+            if (!col) continue;
+            node[CH_SW * NPB + l] = held_value(s, xi, phi, n, col->saturation);
+            node[CH_MW * NPB + l] = 0.0; /* no capacity: nothing is handed back */
         }
     }
 }
+
+/* The flux through wet colliders' faces into the free nodes, from the
+ * particles within dx of a face, each carrying V_p/dx of it (a band of
+ * thickness dx sums to the contact area whatever way the face lies; heated
+ * colliders do the same, thermal.c). Each hands its flux density to the
+ * nodes around its foot on the face, where the weak form's boundary term
+ * int_face w_i q.n dS lives:
+ *  - a holding face: -rho_0 D n.grad s, at the particle. The held nodes take
+ *    what the Galerkin sum hands them, but a free node's B-spline does not
+ *    vanish on the face (w = 1/8 there for a face on a node row), so without
+ *    this term the free nodes took 0.875 of a linear profile's flux, and
+ *    Crank's sheet stayed first order (9.8%, 4.1%, 1.9% low at 10, 20, 40
+ *    cells; with it 3.9%, 0.9%, 0.3%).
+ *  - a Robin face (beta_water > 0): -beta_water (s_face - S), s_face the
+ *    saturation extrapolated from the particle to its foot along the normal
+ *    (the particle's own value sits dx/4 to 3dx/4 inside and would move the
+ *    exchange's reference by O(dx)). boundary.area is no help here: boundary.c
+ *    removes the contact faces from the air surface (contact is not air).
+ * Serial: it runs only in scenes with a wet collider. */
+void water_face_flux(hearth_scene *s, double dt) {
+    if (!s->water.hold && !s->water.exchange) return;
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const int D = g->dim, NPB = g->nodes_per_block;
+    const double dx = g->dx, *X = pcold(ps, PC_X), *W = pcold(ps, PC_WATER), *vol = mpm_state_of(s)->vol;
+    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    for (int i = 0; i < ps->n; i++) {
+        const double *x = X + 3 * i;
+        double phi = dx, n[3] = {0, 0, 0};
+        const collider *col = NULL;
+        for (int q = 0; q < s->ncol; q++) { /* the nearest wet face within dx */
+            const collider *cq = &s->cols[q];
+            if (isnan(cq->saturation) || !collider_near(cq, x)) continue;
+            double nq[3] = {0, 0, 0};
+            const double d = collider_sdf(cq, x, nq);
+            if (d < phi) col = cq, phi = d, memcpy(n, nq, sizeof nq);
+        }
+        if (!col) continue;
+        /* n . grad s at the particle, from the node saturations (held ones included) */
+        int base[3] = {0, 0, 0};
+        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
+        for (int d = 0; d < D; d++) {
+            const double Xd = (x[d] - g->lo[d]) * g->inv_dx;
+            base[d] = (int)floor(Xd - 0.5);
+            bspline_weights(Xd - base[d], w[d], dw[d]);
+        }
+        double gn = 0, si = 0;
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++)
+                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                    const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
+                    int l;
+                    const double *node = node_at(g, gi, &l);
+                    if (!node) continue;
+                    const double wz = D == 3 ? w[2][c] : 1.0, sv = node[CH_SW * NPB + l];
+                    si += sv * w[0][a] * w[1][b] * wz;
+                    gn += sv * (n[0] * dw[0][a] * w[1][b] * wz + n[1] * w[0][a] * dw[1][b] * wz +
+                                (D == 3 ? n[2] * w[0][a] * w[1][b] * dw[2][c] : 0.0));
+                }
+        gn *= g->inv_dx;
+        const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
+        const double rho0 = ms->core[CP_WATER_DENSITY], sp = W[i] / (rho0 * vol[i]);
+        const double diff = ms->core[CP_WATER_DIFFUSIVITY] * theta_abs(T, i, ms) * sp;
+        const double h = phi > 0 ? phi : 0.0;
+        const double inflow = col->beta_water > 0 ? -col->beta_water * (si - h * gn - col->saturation) : -rho0 * diff * gn;
+        const double dm = dt * inflow * vol[i] / dx; /* into the body, kg */
+        /* to the nodes around the particle's foot on the face */
+        double xf[3] = {x[0], x[1], x[2]};
+        for (int d = 0; d < D; d++) {
+            xf[d] -= h * n[d];
+            const double Xd = (xf[d] - g->lo[d]) * g->inv_dx;
+            base[d] = (int)floor(Xd - 0.5);
+            bspline_weights(Xd - base[d], w[d], dw[d]);
+        }
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++)
+                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                    const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
+                    int l;
+                    double *node = node_at(g, gi, &l);
+                    if (node) node[CH_DMW * NPB + l] += dm * w[0][a] * w[1][b] * (D == 3 ? w[2][c] : 1.0);
+                }
+    }
+}
+
 
 /* Each particle takes its nodes' change of saturation (FLIP, as temperature
  * in eq. 21), dm_p = rho_0 V_p sum_i w_ip ds_i, which hands out exactly each
@@ -210,6 +391,54 @@ double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) 
     return before - m;
 }
 
+/* After G2P, the particles within dx/2 of a holding wet collider's face take
+ * the grid's new saturation at their place, sum_i w_ip (s_i + ds_i) with the
+ * held nodes' values (PIC), instead of the FLIP change G2P gave them: they
+ * stand for the layer the held nodes cover, and the held nodes have no change
+ * to hand them. With FLIP they kept their starting saturation beside a face
+ * held at another (Crank's sheet: 13%, 5.1%, 2.3% low, first order). A pass
+ * of its own, so that G2P costs what it did in scenes without such a
+ * collider; it sees the positions G2P moved the particles to, which differ
+ * from P2G's by v dt, far below dx. Returns the water the particles lost. */
+static double held_particles(hearth_scene *s, double *dmax, double *emax) {
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const int D = g->dim, NPB = g->nodes_per_block;
+    const double *X = pcold(ps, PC_X), *vol = mpm_state_of(s)->vol;
+    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
+    double *W = pcold(ps, PC_WATER), removed = 0;
+    for (int i = 0; i < ps->n; i++) {
+        double phi, n[3];
+        if (!holder_at(s, X + 3 * i, 0.5, &phi, n)) continue;
+        int base[3] = {0, 0, 0};
+        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
+        for (int d = 0; d < D; d++) {
+            const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
+            base[d] = (int)floor(Xd - 0.5);
+            bspline_weights(Xd - base[d], w[d], dw);
+        }
+        double sat = 0;
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++)
+                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                    const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
+                    int l;
+                    const double *node = node_at(g, gi, &l);
+                    if (!node) continue;
+                    const double cw = node[CH_MW * NPB + l], ds = cw > 0 ? node[CH_DMW * NPB + l] / cw : 0.0;
+                    sat += w[0][a] * w[1][b] * w[2][c] * (node[CH_SW * NPB + l] + ds);
+                }
+        const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
+        const double cap = ms->core[CP_WATER_DENSITY] * vol[i], before = W[i];
+        double m = sat * cap;
+        if (m < WATER_SATURATION_FLOOR * cap) m = WATER_SATURATION_FLOOR * cap;
+        W[i] = m;
+        particle_limits(ms, theta_abs(T, i, ms), m / cap, dmax, emax);
+        removed += before - m;
+    }
+    return removed;
+}
+
 void water_finish(hearth_scene *s) {
     /* reduce in block order: the same sums on any thread count */
     double removed = 0, dmax = 0, emax = 0;
@@ -219,6 +448,7 @@ void water_finish(hearth_scene *s) {
         dmax = fmax(dmax, m->partial[k].water_dmax);
         emax = fmax(emax, m->partial[k].water_emax);
     }
+    if (s->water.hold) removed += held_particles(s, &dmax, &emax);
     s->water.step_removed = removed;
     s->water.dmax = dmax;
     s->water.emax = emax;

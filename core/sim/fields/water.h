@@ -16,6 +16,8 @@ typedef struct water_state {
     double step_removed;   /* by the step being taken; counted when it stands (water_step_stands) */
     double dmax, emax;     /* largest K theta s and beta theta / rho_0 after the last step */
     int limits_valid;      /* 0: particles or materials changed since, scan again */
+    int exchange;          /* this step has wet colliders with beta_water > 0 (Robin): water_prepare sets it */
+    int hold;              /* this step has wet colliders that hold their saturation: water_prepare sets it */
 } water_state;
 
 /// Empty state: nothing lost, limits to be scanned.
@@ -54,7 +56,12 @@ void water_prepare(struct hearth_scene *s);
 /// its nodes' saturation (eq. 19-20, FLIP), floored. Returns the water it
 /// lost (kg); raises *dmax and *emax, the explicit-step limits.
 double water_take(struct hearth_scene *s, int i, double r, double *dmax, double *emax);
-/// After G2P: the step's water lost and the step limits, summed in block order.
+/// After transport_apply: the water crossing wet colliders' faces over dt,
+/// into CH_DMW around each contact particle's foot on the face (the boundary
+/// term of holding faces, the exchange of Robin ones).
+void water_face_flux(struct hearth_scene *s, double dt);
+/// After G2P: the particles beside holding wet colliders take the grid's
+/// saturation (PIC); the step's water lost and the step limits, summed in block order.
 void water_finish(struct hearth_scene *s);
 /// Total water in the particles (kg, or kg/m in 2D).
 double water_total(const struct hearth_scene *s);

@@ -219,6 +219,7 @@ static void put_def(ck_out *o, const hearth_scene_def *d) {
     put_i32(o, d->water_momentum);
     put_i32(o, d->transfer);
     put_f64(o, d->heat_flip);
+    put_f64(o, d->oven_saturation);
 }
 
 static void put_clocks(ck_out *o, const hearth_scene *s) {
@@ -281,6 +282,7 @@ static void put_colliders(ck_out *o, const hearth_scene *s) {
         put_f64(o, c->temperature);
         put_f64(o, c->beta);
         put_f64(o, c->saturation);
+        put_f64(o, c->beta_water);
     }
 }
 
@@ -383,6 +385,7 @@ static void get_def(ck_cursor *c, hearth_scene_def *d) {
     if (d->water_momentum != 0 && d->water_momentum != 1) ck_fail(c, "scene: water_momentum is neither 0 nor 1");
     d->transfer = get_i32(c);
     d->heat_flip = get_finite(c, "scene: heat_flip is not finite");
+    d->oven_saturation = get_finite(c, "scene: oven saturation is not finite");
     d->solver = HEARTH_SOLVER_MPM; /* the only solver whose table says can_checkpoint (solver.h) */
 }
 
@@ -578,6 +581,7 @@ static int get_colliders(ck_cursor *c, hearth_scene *s, hearth_error *err) {
         cd.temperature = get_f64(c); /* NaN: not heated; collider_init checks the rest */
         cd.beta = get_f64(c); /* +inf: held at its temperature; collider_init refuses NaN and negatives */
         cd.saturation = get_f64(c);  /* NaN: dry */
+        cd.beta_water = get_finite(c, "collider beta_water is not finite");
         const int id = c->bad ? -1 : hearth_scene_add_collider(s, &cd, err);
         hearth_shape_free(sh);
         if (id < 0) return -1;

@@ -64,9 +64,19 @@ hearth_status collider_init(collider *c, const hearth_collider_def *def, hearth_
         c->shape = NULL;
         return err_set(err, HEARTH_ERR_PARAM, "collider saturation = %g; valid range [0, 1] (NaN = dry)", def->saturation);
     }
+    if (!(def->beta_water >= 0) || !isfinite(def->beta_water) || (def->beta_water > 0 && isnan(def->saturation))) {
+        hearth_shape_free(c->shape);
+        c->shape = NULL;
+        if (def->beta_water > 0 && isfinite(def->beta_water))
+            return err_set(err, HEARTH_ERR_PARAM, "collider beta_water = %g kg/(m^2 s) needs the collider's saturation (the "
+                                                  "ambient it exchanges with, [0, 1])", def->beta_water);
+        return err_set(err, HEARTH_ERR_PARAM, "collider beta_water = %g kg/(m^2 s); valid range [0, inf) (0 = hold the saturation)",
+                       def->beta_water);
+    }
     c->temperature = def->temperature;
     c->beta = def->beta;
     c->saturation = def->saturation;
+    c->beta_water = def->beta_water;
     /* With a motion function the def constants are unused: start from motion(0)
      * so vel/omega are meaningful before the scene first sets the time. */
     collider_set_time(c, 0.0);

@@ -21,6 +21,7 @@ typedef struct collider {
     double blo[3], bhi[3];   /* world bounding box at the current pose (collider_update_bounds) */
     double temperature, beta;/* heated collider (degrees C, W/(m^2 K)); NaN temperature = not heated */
     double saturation;       /* wet collider: held saturation of touching particles; NaN = dry */
+    double beta_water;       /* wet collider: 0 holds saturation (Dirichlet); > 0 Robin exchange, kg/(m^2 s) */
 } collider;
 
 /// Validate def and fill c (shape copied). On failure c holds nothing to free and

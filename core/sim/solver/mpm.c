@@ -1166,6 +1166,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         const transport_pass tp = {.heat_in = heat ? CH_T : -1, .heat_out = CH_R, .heat_src = s->def.heat_implicit ? CH_B : CH_R,
                                    .water = water, .dt = dt};
         transport_apply(s, &tp);
+        if (water) water_face_flux(s, dt);
         if (heat) thermal_finish(s, dt);
     }
     const double vcol = mpm_grid_update(s, dt);
