@@ -95,7 +95,7 @@ static void expect_refused(const uint8_t *img, size_t n, void (*fn)(uint8_t *, s
 
 /* A save restores bit-identically, from a file and from memory, and the
  * header holds the size and the CRC of the whole file. */
-TEST(checkpoint_v3_roundtrip) {
+TEST(checkpoint_v4_roundtrip) {
     hearth_scene *s = small_scene();
     CHECK(s);
     if (!s) return;
@@ -107,7 +107,7 @@ TEST(checkpoint_v3_roundtrip) {
     memcpy(&version, img + 8, 4);
     memcpy(&size, img + CK_OFF_SIZE, 8);
     memcpy(&crc, img + CK_OFF_CRC, 4);
-    CHECK(version == 3);
+    CHECK(version == 4);
     CHECK(size == n);
     CHECK(crc == ck_crc(img, n));
     CHECK(find(img, n, "elastic", 7) != (size_t)-1);
@@ -509,7 +509,7 @@ TEST(checkpoint_alloc_failures) {
     free(img);
 }
 
-TEST_MAIN(T(checkpoint_v3_roundtrip), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
+TEST_MAIN(T(checkpoint_v4_roundtrip), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
           T(checkpoint_bitflip_campaign), T(checkpoint_resealed_flips), T(checkpoint_crafted_fields),
           T(checkpoint_old_version), T(checkpoint_count_before_alloc), T(checkpoint_not_regular_file),
           T(checkpoint_alloc_failures))

@@ -2,13 +2,13 @@
  * shapes.c, the unit tests and the fuzz target need: the bounds-checked read
  * cursor, the header layout, and ck_reseal.
  *
- * Layout of version 3 (native byte order and double width, both recorded and
+ * Layout of version 4 (native byte order and double width, both recorded and
  * checked; every count is unsigned 32-bit, every string a u32 length then its
  * bytes without a terminator):
  *
  *   header, 40 bytes:
  *     0  "HEARTHCK"
- *     8  u32 version (3)
+ *     8  u32 version (4; 4 added the humid oven, wet colliders' beta_water and held temperatures)
  *    12  u32 byte-order mark 0x01020304
  *    16  u32 sizeof(double) (8)
  *    20  u32 header size (40)
@@ -32,7 +32,7 @@
 #include <stdint.h>
 
 #define CK_MAGIC "HEARTHCK"
-#define CK_VERSION 3u
+#define CK_VERSION 4u
 #define CK_BOM 0x01020304u
 #define CK_HEADER_SIZE 40u
 #define CK_OFF_SIZE 24u
