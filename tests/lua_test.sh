@@ -729,16 +729,16 @@ held_temperature_lua)
     expect_rc 0 "held temperatures"
     has out.txt "held_temperature ok" "held collider and body, their refusals, a restored scene"
     ;;
-lua_md_heat_examples)
-    # every example of docs/lua.md whose first line is "-- heat: ..." runs as printed
-    awk '/^```lua/{f=1;first=1;next} /^```/{f=0;next} f{if(first){k=($0 ~ /^-- heat:/);if(k)n++};first=0;if(k)print >("heat_example_" n ".lua")}' \
-        "$HEARTH_SOURCE_ROOT/docs/lua.md"
-    ls heat_example_*.lua >/dev/null 2>&1 || fail "docs/lua.md has no '-- heat:' example"
-    for f in heat_example_*.lua; do
-        "$hearth" run "$f" --quiet >out.txt 2>err.txt || fail "$f failed: $(cat err.txt)"
-        cat out.txt
+lua_md_examples_run)
+    # every example of docs/lua.md after the first (cli_lua_md_example_runs runs that one) runs as printed:
+    # a reader copies them, so each is a whole scene
+    awk '/^```lua/{f=1;n++;next} /^```/{f=0;next} f{print >sprintf("example_%02d.lua", n)}' "$HEARTH_SOURCE_ROOT/docs/lua.md"
+    rm -f example_01.lua
+    [ "$(ls example_*.lua 2>/dev/null | wc -l)" -ge 8 ] || fail "docs/lua.md has fewer examples than expected: $(ls)"
+    for f in example_*.lua; do
+        "$hearth" run "$f" --quiet >out.txt 2>err.txt || fail "docs/lua.md example '$(head -1 "$f")' failed: $(cat err.txt)"
+        echo "$(head -1 "$f")"; sed 's/^/    /' out.txt
     done
-    [ "$(ls heat_example_*.lua | wc -l)" -ge 2 ] || fail "expected the held and the Robin examples"
     ;;
 lua_body_force_varies_in_space)
     # s:body_force(function(x, y, z, t) ...): a column under a force growing with height against its closed form
