@@ -368,7 +368,6 @@ static int l_motion_gc(lua_State *L) {
     return 0;
 }
 
-/* s:_collider(shape, mode, friction, velocity (vec|fn), omega (num|vec|fn), pivot) -> id */
 /* Append the value on top of the stack (a motion userdata, left there) to the
  * scene's (argument 1) motions list: alive while the scene is, and checked
  * after each step. */
@@ -384,6 +383,34 @@ static void keep_motion(lua_State *L) {
     lua_seti(L, -2, luaL_len(L, -2) + 1);
     lua_pop(L, 2);
 }
+
+/* A motion record for the functions at stack indices vidx (velocity) and
+ * oidx (omega), 0 for none, kept by the scene; left on the stack. what names
+ * its owner in messages (NULL: "collider"). */
+static hl_motion *new_motion(lua_State *L, int vidx, int oidx, const char *what) {
+    hl_motion *m = lua_newuserdatauv(L, sizeof *m, 0);
+    memset(m, 0, sizeof *m);
+    m->L = L;
+    m->what = what;
+    m->vref = m->oref = LUA_NOREF;
+    if (luaL_newmetatable(L, "hearth.motion")) {
+        lua_pushcfunction(L, l_motion_gc);
+        lua_setfield(L, -2, "__gc");
+    }
+    lua_setmetatable(L, -2);
+    if (vidx) {
+        lua_pushvalue(L, vidx);
+        m->vref = luaL_ref(L, LUA_REGISTRYINDEX);
+    }
+    if (oidx) {
+        lua_pushvalue(L, oidx);
+        m->oref = luaL_ref(L, LUA_REGISTRYINDEX);
+    }
+    keep_motion(L);
+    return m;
+}
+
+/* s:_collider(shape, mode, friction, velocity (vec|fn), omega (num|vec|fn), pivot, ...) -> id */
 
 static int l_collider(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
@@ -401,26 +428,8 @@ static int l_collider(lua_State *L) {
     if (!lua_isnoneornil(L, 10)) cd.saturation = luaL_checknumber(L, 10);
     cd.beta_water = luaL_optnumber(L, 11, 0);
     if (vfn || ofn) {
-        hl_motion *m = lua_newuserdatauv(L, sizeof *m, 0);
-        memset(m, 0, sizeof *m);
-        m->L = L;
-        m->vref = m->oref = LUA_NOREF;
-        if (luaL_newmetatable(L, "hearth.motion")) {
-            lua_pushcfunction(L, l_motion_gc);
-            lua_setfield(L, -2, "__gc");
-        }
-        lua_setmetatable(L, -2);
-        if (vfn) {
-            lua_pushvalue(L, 5);
-            m->vref = luaL_ref(L, LUA_REGISTRYINDEX);
-        }
-        if (ofn) {
-            lua_pushvalue(L, 6);
-            m->oref = luaL_ref(L, LUA_REGISTRYINDEX);
-        }
-        keep_motion(L);
         cd.motion = motion_cb;
-        cd.motion_ud = m;
+        cd.motion_ud = new_motion(L, vfn ? 5 : 0, ofn ? 6 : 0, NULL);
     }
     hearth_error err;
     int id = hearth_scene_add_collider(u->s, &cd, &err);
@@ -445,25 +454,7 @@ static int l_body_motion(lua_State *L) {
     hearth_motion_fn fn = NULL;
     hl_motion *m = NULL;
     if (vfn || ofn) {
-        m = lua_newuserdatauv(L, sizeof *m, 0);
-        memset(m, 0, sizeof *m);
-        m->L = L;
-        m->what = "body";
-        m->vref = m->oref = LUA_NOREF;
-        if (luaL_newmetatable(L, "hearth.motion")) {
-            lua_pushcfunction(L, l_motion_gc);
-            lua_setfield(L, -2, "__gc");
-        }
-        lua_setmetatable(L, -2);
-        if (vfn) {
-            lua_pushvalue(L, 3);
-            m->vref = luaL_ref(L, LUA_REGISTRYINDEX);
-        }
-        if (ofn) {
-            lua_pushvalue(L, 4);
-            m->oref = luaL_ref(L, LUA_REGISTRYINDEX);
-        }
-        keep_motion(L);
+        m = new_motion(L, vfn ? 3 : 0, ofn ? 4 : 0, "body");
         fn = motion_cb;
     }
     hearth_error err;
