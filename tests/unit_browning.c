@@ -191,4 +191,49 @@ TEST(browning_history_not_current) {
     }
 }
 
-TEST_MAIN(T(browning_closed_form), T(browning_surface_not_crumb), T(browning_history_not_current))
+/* Water: at a constant 200 degC a body as wet as its dough (s = s_0 = 0.5)
+ * does not brown at all, one dried to half its saturation browns at half
+ * the rate (1 - exp(-k t / 2) to 1e-6), and a body given no water follows
+ * the dry closed form. Water does not move here (no diffusivity, no
+ * evaporation), so each particle's factor 1 - s/s_0 stays what it was set to. */
+TEST(browning_wet_does_not_brown) {
+    hearth_scene *s = brown_scene(HEARTH_SOLVER_MPM, 0.01, 0.3, 500, NAN);
+    CHECK(s != NULL);
+    if (!s) return;
+    const int m = brown_material(s, HEARTH_SOLVER_MPM, 2500, 0.5);
+    const double cw[3] = {0.08, 0.1, 0}, cd[3] = {0.22, 0.1, 0}, h[3] = {0.04, 0.04, 0.5};
+    hearth_body_def bd = hearth_default_body_def();
+    hearth_shape *wet = hearth_shape_box(cw, h), *dry = hearth_shape_box(cd, h);
+    bd.material = m, bd.ppc = 4, bd.jitter = 0, bd.fixed = 1, bd.temperature = 200;
+    hearth_error err;
+    bd.shape = wet, bd.saturation = 0.5;
+    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    bd.shape = dry, bd.saturation = 0;
+    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    hearth_shape_free(wet), hearth_shape_free(dry);
+    CHECK(s->ps.enabled & (1u << PC_WATER));
+    int n = s->ps.n;
+    for (int i = 0; i < n; i++) /* the wet body's left half dried to s = 0.25 */
+        if (pcold(&s->ps, PC_X)[3 * i] < cw[0]) pcold(&s->ps, PC_WATER)[i] *= 0.5;
+    CHECK(hearth_scene_advance(s, 1.0, &err) == HEARTH_OK);
+    n = s->ps.n;
+    const double k = browning_rate(200, 500), t = s->t;
+    double e_wet = 0, e_half = 0, e_dry = 0;
+    int nw = 0, nh = 0, nd = 0;
+    for (int i = 0; i < n; i++) {
+        const double x = pcold(&s->ps, PC_X)[3 * i], b = pcold(&s->ps, PC_BROWNING)[i];
+        if (x > 0.15) e_dry = fmax(e_dry, fabs(b - (1 - exp(-k * t)))), nd++;
+        else if (x < cw[0]) e_half = fmax(e_half, fabs(b - (1 - exp(-0.5 * k * t)))), nh++;
+        else e_wet = fmax(e_wet, fabs(b)), nw++;
+    }
+    printf("t = %.3f s: wet (%d) largest index %.2e; half dried (%d) |diff| %.2e from %.6f; dry (%d) |diff| %.2e from %.6f\n",
+           t, nw, e_wet, nh, e_half, 1 - exp(-0.5 * k * t), nd, e_dry, 1 - exp(-k * t));
+    CHECK(nw > 0 && nh > 0 && nd > 0);
+    CHECK(e_wet <= 1e-12);
+    CHECK(e_half <= 1e-6);
+    CHECK(e_dry <= 1e-6);
+    hearth_scene_destroy(s);
+}
+
+TEST_MAIN(T(browning_closed_form), T(browning_surface_not_crumb), T(browning_history_not_current),
+          T(browning_wet_does_not_brown))
