@@ -605,7 +605,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             s->out_of_domain += rep.out_of_domain;
             if (water_active(s)) water_step_stands(&s->water);
             /* the step stands: the crust's colour integrates its end temperature (a rolled back step never browns) */
-            if (s->ps.enabled & (1u << PC_BROWNING)) browning_step(s, dt);
+            if (s->def.browning) browning_step(s, dt); /* hearth_scene_create made its columns */
             if (s->dt_scale < 1) s->dt_scale = fmin(1.0, s->dt_scale * 1.25);
             return HEARTH_OK;
         }

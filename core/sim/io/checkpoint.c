@@ -627,6 +627,8 @@ static int get_particles(ck_cursor *c, hearth_scene *s, hearth_error *err) {
     if (c->bad) return -1;
     const uint32_t core = (1u << PC_NCORE) - 1;
     if ((enabled & core) != core || enabled >= (1u << PC_COUNT)) return ck_fail(c, "unknown or missing particle columns");
+    if (enabled & (1u << PC_BROWNING)) /* hearth_scene_save refuses browning scenes: only a crafted file has it */
+        return ck_fail(c, "a browning column (scenes with browning = true are not saved in this version)");
     if (stride > CK_MAX_STRIDE) return ck_fail(c, "plugin state stride above 4096 doubles");
     particles *ps = &s->ps;
     if ((int)stride < ps->state_stride) return ck_fail(c, "plugin state stride smaller than a material's state");
