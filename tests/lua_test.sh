@@ -740,6 +740,19 @@ lua_md_examples_run)
         echo "$(head -1 "$f")"; sed 's/^/    /' out.txt
     done
     ;;
+lua_browning_example)
+    # docs/lua.md's "-- browning:" example runs as printed (it asserts a brown crust over a pale crumb) and writes
+    # the field to a PNG and a VTU
+    awk '/^```lua/{f=1;first=1;next} /^```/{f=0;next} f{if(first){k=($0 ~ /^-- browning:/);if(k)n++};first=0;if(k)print >("browning_example_" n ".lua")}' \
+        "$HEARTH_SOURCE_ROOT/docs/lua.md"
+    [ -f browning_example_1.lua ] || fail "docs/lua.md has no '-- browning:' example"
+    "$hearth" run browning_example_1.lua --quiet >out.txt 2>err.txt || fail "browning example failed: $(cat err.txt)"
+    cat out.txt
+    has out.txt "crust 0.9" "a crust index above 0.9 at the loaf's corner"
+    vtu=$(find . -name loaf.vtu | head -1)
+    [ -n "$vtu" ] && grep -aq 'Name="browning"' "$vtu" || fail "the VTU has no browning array"
+    [ -n "$(find . -name loaf_browning.png | head -1)" ] || fail "no browning PNG"
+    ;;
 lua_body_force_varies_in_space)
     # s:body_force(function(x, y, z, t) ...): a column under a force growing with height against its closed form
     run body_force_field.lua

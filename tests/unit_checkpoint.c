@@ -302,6 +302,12 @@ static void count_plus1(uint8_t *b, size_t n) {
     memcpy(&v, b + at + 4, 4);
     set_u32_after(b, n, "PART", 0, v + 1);
 }
+static void browning_bit(uint8_t *b, size_t n) { /* a column hearth_scene_save never writes */
+    const size_t at = find(b, n, "PART", 4);
+    uint32_t v;
+    memcpy(&v, b + at + 12, 4);
+    set_u32_after(b, n, "PART", 8, v | (1u << PC_BROWNING));
+}
 static void guard_state_7(uint8_t *b, size_t n) { set_u32_after(b, n, "CLK ", 0, 7); }
 static void guard_state_neg(uint8_t *b, size_t n) { set_u32_after(b, n, "CLK ", 0, (uint32_t)-1); }
 static void dx_nan(uint8_t *b, size_t n) { set_f64_after(b, n, "DEF ", 4, NAN); }
@@ -382,6 +388,7 @@ TEST(checkpoint_crafted_fields) {
     expect_refused(img, n, count_2e31, "particle count");
     expect_refused(img, n, count_2e30, "particle count");
     expect_refused(img, n, count_plus1, "particle");
+    expect_refused(img, n, browning_bit, "a browning column");
     expect_refused(img, n, guard_state_7, "guard state out of range");
     expect_refused(img, n, guard_state_neg, "guard state out of range");
     expect_refused(img, n, dx_nan, "dx is not finite");

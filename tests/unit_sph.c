@@ -1315,8 +1315,8 @@ TEST(sph_surface_tension_rounds_drop) {
 
 /* The solver table (solver.h) answers what the enum used to: a solver value
  * no entry has is refused naming the valid ones, an SPH scene refuses a
- * checkpoint naming its solver, and the browning field is live only under
- * the solver that computes it. */
+ * checkpoint naming its solver, and the browning field (fields/browning.c)
+ * is live when the scene asks for it, under either solver, not otherwise. */
 TEST(sph_solver_table) {
     const double lo[3] = {0, 0, 0}, hi[3] = {0.2, 0.2, 0};
     hearth_scene_def d = sph_def(2, 0.01, lo, hi);
@@ -1336,15 +1336,16 @@ TEST(sph_solver_table) {
     CHECK(hearth_scene_save(s, path, &err) == HEARTH_ERR_PARAM);
     CHECK_STR_CONTAINS(err.msg, "checkpoints of sph scenes (solver = \"sph\") are not supported yet");
     remove(path); /* only there if the refusal failed */
-    CHECK_STR_CONTAINS(hearth_scene_fields(s), "browning");
+    CHECK(strstr(hearth_scene_fields(s), "browning") == NULL); /* not asked for */
     hearth_scene_destroy(s);
 
     d.solver = HEARTH_SOLVER_MPM;
+    d.browning = 1;
     s = hearth_scene_create(&d, &err);
     CHECK(s != NULL);
     if (!s) return;
     CHECK(s->solver == &mpm_solver);
-    CHECK(strstr(hearth_scene_fields(s), "browning") == NULL);
+    CHECK_STR_CONTAINS(hearth_scene_fields(s), "browning");
     CHECK_STR_CONTAINS(hearth_scene_fields(s), "temperature");
     hearth_scene_destroy(s);
 }

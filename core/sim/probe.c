@@ -49,8 +49,8 @@ static const struct {
     [F_SPEED] = {"speed", "m/s", 1, -1, NULL},         [F_DENSITY] = {"density", "kg/m^3", 1, -1, NULL},
     [F_J] = {"J", "1", 1, -1, NULL},                   [F_PRESSURE] = {"pressure", "Pa", 1, -1, NULL},
     [F_VON_MISES] = {"von_mises", "Pa", 1, -1, NULL},
-    [F_BROWNING] = {"browning", "1", 1, PC_TEMPERATURE,
-                    "use solver = \"sph\" and turn the temperature field on (Rodriguez-Arenas eq. 4.5-4.6)"},
+    [F_BROWNING] = {"browning", "1", 1, PC_BROWNING,
+                    "set browning = true in the scene (h.scene{browning = true}: Zanoni et al. 1995 kinetics, either solver)"},
     [F_STRESS_XY] = {"stress_xy", "Pa", 1, -1, NULL}, /* Cauchy shear stress: what a rheometer measures */
     /* The whole Cauchy stress, row-major xx xy xz yx yy yz zx zy zz (tension
      * positive): VTK reads 9 components as a tensor, which ParaView's tensor
@@ -85,13 +85,12 @@ const char *hearth_field_unit(const char *field) {
 }
 
 /* The solver's own per-particle results of the last step (sph.c's summed
- * density and Tait pressure, the browning value), or NULL. */
+ * density and Tait pressure), or NULL. */
 static const double *solver_values(const hearth_scene *s, const char *which) {
     return s->solver->particle_values ? s->solver->particle_values(s, which) : NULL;
 }
 
 static int field_live(const hearth_scene *s, int f) {
-    if (f == F_BROWNING && !(s->solver->outputs & SOLVER_OUT_BROWNING)) return 0;
     return fields[f].column < 0 || (s->ps.enabled & (1u << fields[f].column));
 }
 
@@ -185,11 +184,7 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_WATER_PRESSURE: /* p^w = c (s - s_0), compression positive (eq. 14) */
         out[0] = s->mats.slot[pcoli(ps, PC_MAT)[i]].core[CP_WATER_STIFFNESS] * (water_saturation(s, i) - pcold(ps, PC_SAT0)[i]);
         break;
-    case F_BROWNING: { /* from the last SPH step; NaN before the first */
-        const double *b = solver_values(s, "browning");
-        out[0] = b ? b[i] : NAN;
-        break;
-    }
+    case F_BROWNING: out[0] = pcold(ps, PC_BROWNING)[i]; break; /* Delta E / 52 (browning.c) */
     case F_POROSITY:
     case F_GAS_PRESSURE: {
         const int m = pcoli(ps, PC_MAT)[i];

@@ -34,6 +34,7 @@
 #include "settings.h"
 #include "solver.h"
 #include "thermal.h"
+#include "browning.h"
 #include "water.h"
 #include "mixing.h"
 
@@ -195,6 +196,10 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
     }
     if (!isnan(d.oven_temperature) && scene_enable_temperature(s, err)) { /* an oven makes the field live */
         hearth_scene_destroy(s);
+        return NULL;
+    }
+    if (d.browning && (scene_enable_temperature(s, err) || particles_enable(&s->ps, PC_BROWNING, err))) {
+        hearth_scene_destroy(s); /* browning.c reads the temperature */
         return NULL;
     }
     if (s->solver->init && s->solver->init(s, err)) { /* the solver's own state (solver.h) */
@@ -599,6 +604,8 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             if (s->kinetic > s->kinetic_peak) s->kinetic_peak = s->kinetic;
             s->out_of_domain += rep.out_of_domain;
             if (water_active(s)) water_step_stands(&s->water);
+            /* the step stands: the crust's colour integrates its end temperature (a rolled back step never browns) */
+            if (s->def.browning) browning_step(s, dt); /* hearth_scene_create made its columns */
             if (s->dt_scale < 1) s->dt_scale = fmin(1.0, s->dt_scale * 1.25);
             return HEARTH_OK;
         }

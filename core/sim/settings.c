@@ -85,6 +85,13 @@ static const hearth_setting settings[] = {
          "box length a whole number of dx; MPM without heat or water, or SPH)", periodic[0]),
     FLAG("periodic_y", "the box wraps along y (as periodic_x)", periodic[1]),
     FLAG("periodic_z", "the box wraps along z (as periodic_x; 3D)", periodic[2]),
+    FLAG("browning",
+         "integrate a browning index 0..1 per particle from its temperature and water history (Zanoni et al. 1995 "
+         "first-order kinetics; fields/browning.c); makes the temperature field live",
+         browning),
+    REAL("browning_scale", "1",
+         "multiplies the browning rate (1 = physical time; a scene whose heat runs N times fast sets N)", 1, 0, 1e9,
+         browning_scale, 0),
     LUA_CHOICE("blend", "how bodies of h.mix{...} materials are simulated: the blend model, linearly blended parameters, "
                "or random binary labels (Nagasawa et al. Figs. 1, 9, 10)", 0, w_blend, 1),
     LUA_CHOICE("mixing", "dynamic: h.mix bodies share one mixture whose ratios follow the particles (Nagasawa et al. eq. "

@@ -223,6 +223,8 @@ typedef struct hearth_scene_def {
     hearth_sph_def sph;      ///< SPH options (solver = HEARTH_SOLVER_SPH)
     double damping;          ///< MPM velocity damping c (1/s): the grid velocity decays as 1/(1 + c dt) a step; 0 = off
     int periodic[3];         ///< 1: the box wraps along that axis (no walls there); the box length must be a whole number of dx. SPH: as sph.periodic
+    int browning;            ///< 1: integrate the per-particle browning index from temperature and water history (Zanoni et al. 1995; fields/browning.c); makes the temperature field live. Default 0
+    double browning_scale;   ///< multiplies the browning rate: 1 for physical time; the time-scale factor of a scene whose heat runs in animation units. Default 1
 } hearth_scene_def;
 
 /// Defaults: those of hearth_scene_settings() (2D, dx 0.01, box [0,1]^3, gravity

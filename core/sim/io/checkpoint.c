@@ -314,6 +314,9 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
     if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) /* not in version 3's DEF section either */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with periodic axes are not supported yet",
                        path);
+    if (s->def.browning) /* browning and browning_scale are not in version 4's DEF section: a resumed crust would stop browning */
+        return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with browning = true are not supported yet",
+                       path);
     if (s->mix.mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
                        path);
@@ -624,6 +627,8 @@ static int get_particles(ck_cursor *c, hearth_scene *s, hearth_error *err) {
     if (c->bad) return -1;
     const uint32_t core = (1u << PC_NCORE) - 1;
     if ((enabled & core) != core || enabled >= (1u << PC_COUNT)) return ck_fail(c, "unknown or missing particle columns");
+    if (enabled & (1u << PC_BROWNING)) /* hearth_scene_save refuses browning scenes: only a crafted file has it */
+        return ck_fail(c, "a browning column (scenes with browning = true are not saved in this version)");
     if (stride > CK_MAX_STRIDE) return ck_fail(c, "plugin state stride above 4096 doubles");
     particles *ps = &s->ps;
     if ((int)stride < ps->state_stride) return ck_fail(c, "plugin state stride smaller than a material's state");

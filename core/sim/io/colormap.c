@@ -30,7 +30,7 @@ static const unsigned char inferno[N_ANCHORS][3] = {
     {242, 232, 101}, {252, 255, 164},
 };
 
-/* Crust colour for the SPH browning value (Rodriguez-Arenas 2011 §4.4 maps
+/* Crust colour for the browning index (fields/browning.c; Rodriguez-Arenas 2011 §4.4 maps
  * it through a texture gradient): raw dough, golden, deep brown. Our own
  * anchors, interpolated like the others. */
 static const unsigned char browning[N_ANCHORS][3] = {

@@ -14,7 +14,7 @@
 static const unsigned char BG[3] = {24, 24, 28}, FG[3] = {230, 230, 230}, FRAME[3] = {90, 90, 100};
 
 static int map_for(const char *field) {
-    if (strcmp(field, "browning") == 0) return CMAP_BROWNING; /* SPH crust colour (sph.c, eq. 4.5-4.6) */
+    if (strcmp(field, "browning") == 0) return CMAP_BROWNING; /* the crust index (fields/browning.c) */
     return strncmp(field, "temperature", 11) == 0 ? CMAP_INFERNO : CMAP_VIRIDIS;
 }
 
@@ -172,6 +172,7 @@ hearth_status hearth_render_slice(const hearth_scene *s, const char *field, int 
     double vmin, vmax;
     finite_range(val, (long)nw * nh, &vmin, &vmax);
     const int map = map_for(field);
+    if (map == CMAP_BROWNING) vmin = 0, vmax = 1; /* absolute, as particles: frames of a bake compare */
     for (int py = 0; py < f.h; py++)
         for (int px = 0; px < f.w; px++) {
             int row = (int)((double)(f.h - 1 - py) / f.h * nh), col = (int)((double)px / f.w * nw);

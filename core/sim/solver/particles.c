@@ -25,6 +25,7 @@ static const struct {
     [PC_QW] = {"water_flux", 3, 0},
     [PC_MIX] = {"mix_ratios", 8, 0},
     [PC_MIXD] = {"mix_ratios_dynamic", 8, 0},
+    [PC_BROWNING] = {"browning", 1, 0},
 };
 
 const char *particles_col_name(int c) { return col_info[c].name; }

@@ -34,6 +34,7 @@ typedef enum pcol {
     PC_QW,                     /* water flux relative to the solid q^w (kg/(m^2 s)), 3 */
     PC_MIX,                    /* initial mixing ratios of a mixture's constituents (labels), MIX_MAX */
     PC_MIXD,                   /* dynamic mixing ratios (Nagasawa et al. eq. 44), MIX_MAX */
+    PC_BROWNING,               /* browning index Delta E / Delta E_inf (Zanoni et al. 1995), 0..1, 1 (browning.c) */
     PC_COUNT
 } pcol;
 

@@ -9,11 +9,6 @@
 #define HEARTH_SIM_SOLVER_H
 #include "scene.h"
 
-/* Bits of solver.outputs: per-particle results only some solvers compute. */
-enum {
-    SOLVER_OUT_BROWNING = 1u << 0, /* the crust value of eq. 4.5-4.6 (SPH) */
-};
-
 /* The HEARTH_NEEDS_* bits that name a hearth_point field a solver has to fill.
  * HEARTH_NEEDS_THERMAL_EXPANSION is not among them: the core adds that term
  * to any material whose `expansion` is > 0, flagged or not (material.h,
@@ -44,13 +39,12 @@ typedef struct solver {
     /* Where particles may be placed: the box less what the solver needs at its edges (m). */
     void (*region)(const hearth_scene *s, double lo[3], double hi[3]);
     /* Per-particle results of the last step ("density", "pressure",
-     * "browning", ...), or NULL; the member is NULL when the solver keeps none. */
+     * "h", ...), or NULL; the member is NULL when the solver keeps none. */
     const double *(*particle_values)(const hearth_scene *s, const char *which);
     /* Bytes of step scratch the solver keeps per particle (its own arrays,
      * with their growth margin), for scene_bytes_per_particle's estimate. */
     double (*bytes_per_particle)(const hearth_scene *s);
     unsigned supplies;  /* the SOLVER_POINT_FIELDS it fills; a material needing another is refused */
-    unsigned outputs;   /* SOLVER_OUT_* */
     int can_checkpoint; /* hearth_scene_save writes everything it needs to resume */
     /* It transfers through the background grid: the scene makes the grid's
      * block table (grid_init), else only its geometry (grid_init_geometry),

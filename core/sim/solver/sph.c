@@ -27,7 +27,10 @@
  *   phase_drift          drift (3.57-3.58), colliders and walls with the
  *                        thesis's response (3.31-3.33)
  *   sph_walls_end        moving fixed bodies move rigidly (sph_walls.c)
- *   phase_browning       browning value (4.5-4.6)
+ * The crust's colour (§4.4) is no phase: scene.c integrates the browning
+ * index of either solver from each particle's temperature history
+ * (fields/browning.c, Zanoni et al. 1995, the thesis's [89]) where we used
+ * eq. 4.5-4.6's texture coordinate, linear in the present temperature.
  * Every particle writes only its own slots and sums its neighbours in list
  * order, so a step is deterministic for any thread count. The step's helpers
  * live beside it (sph_state.h shares the state): the viscosity rule and eq.
@@ -128,7 +131,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
 /* ---- storage ---------------------------------------------------------------- */
 
 #define ARRAYS(X)                                                                                                      \
-    X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(brown, 1) X(surf, 1) X(rhof, 1)       \
+    X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(surf, 1) X(rhof, 1)                  \
         X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9) X(vc, 1)
 
 static void sph_free(hearth_scene *s) {
@@ -771,35 +774,6 @@ static void phase_drift(hearth_scene *s, double dt, step_report *rep) {
     rep->c_max = cmax;
 }
 
-/* The browning value (eq. 4.5 with G of eq. 4.6, T0 and Tf of the XSPH
- * line), 0 without the temperature field. */
-static void phase_browning(hearth_scene *s) {
-    struct sph_state *st = s->sph;
-    const hearth_sph_def *o = &s->def.sph;
-    const sph_cols c = sph_cols_of(s);
-    const int n = c.n, dim = c.dim;
-    const double *x = c.x, *m = c.m, *T = c.T;
-    const int *off = st->nl.off, *nb = st->nl.j;
-    if (!T) {
-        memset(st->brown, 0, sizeof(double) * (size_t)n);
-        return;
-    }
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        double u = m[i] / st->rho[i] * (0.9 * (T[i] - o->xsph_T0) / (o->xsph_Tf - o->xsph_T0) + 0.05) *
-                   sph_w(dim, 0, st->h[i]);
-        for (int k = off[i]; k < off[i + 1]; k++) {
-            const int j = nb[k];
-            double d[3];
-            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-            const double G = 0.9 * (T[j] - o->xsph_T0) / (o->xsph_Tf - o->xsph_T0) + 0.05; /* eq. 4.6 */
-            u += m[j] / st->rho[j] * G *
-                 sph_w(dim, sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 0.5 * (st->h[i] + st->h[j]));
-        }
-        st->brown[i] = u < 0 ? 0 : u > 1 ? 1 : u;
-    }
-}
-
 /* ---- the step ----------------------------------------------------------------- */
 
 /* One SPH step: the phases in order (the file's header lists them with
@@ -834,7 +808,6 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     phase_xsph(s);
     phase_drift(s, dt, rep);
     sph_walls_end(s, dt);
-    phase_browning(s);
     st->n = n;
     st->valid = 1;
     return HEARTH_OK;
@@ -884,7 +857,6 @@ const double *sph_particle_values(const hearth_scene *s, const char *which) {
     if (!strcmp(which, "density")) return st->rho;
     if (!strcmp(which, "pressure")) return st->prs;
     if (!strcmp(which, "h")) return st->h;
-    if (!strcmp(which, "browning")) return st->brown;
     if (!strcmp(which, "surface")) return st->surf;
     return NULL;
 }
@@ -921,7 +893,6 @@ const solver sph_solver = {
     .particle_values = sph_particle_values,
     /* temperature from the heat field, porosity from plastic_J (phase_stress); no water */
     .supplies = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY,
-    .outputs = SOLVER_OUT_BROWNING,
     .can_checkpoint = 0, /* its options and final densities (eq. 3.52) are not in the format yet */
     .uses_grid = 0,      /* neighbours come from its own cell list (sph_neighbours.c) */
 };

@@ -18,6 +18,6 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err);
 
 /// Per-particle results of the last step, in the scene's current particle
 /// order; NULL before the first step or after particles were added/removed.
-/// which: "density", "pressure", "h", "browning", "surface" (0/1).
+/// which: "density", "pressure", "h", "surface" (0/1).
 const double *sph_particle_values(const hearth_scene *s, const char *which);
 #endif

@@ -31,7 +31,7 @@ struct sph_state {
     int valid;      /* per-particle results match the scene's particles */
     int *key, *order;
     double *perm;   /* permutation scratch, cap doubles */
-    double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *brown, *surf, *rhof, *dT, *Tprev;
+    double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *surf, *rhof, *dT, *Tprev;
     double *rho0, *B, *mu, *c0, *xsph;
     double *vc;     /* the viscous Laplacian's renormalisation (viscous_moments), per particle this step */
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */

@@ -30,7 +30,8 @@ local T0, tray = 26, 0.01
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph",
   sph = { heat_ext = 4e8, heat_int = 0.5, av_beta = 1, xsph0 = P.xsph0, xsph_f = P.xsph_f, xsph_T0 = T0, xsph_Tf = 120,
           bubble_T0 = T0, tension = true, artificial_stress = P.artificial_stress },
-  oven = { temperature = P.oven, beta = 0 } }
+  oven = { temperature = P.oven, beta = 0 },
+  browning = true, browning_scale = 1500 } -- Zanoni et al. 1995 kinetics; 1.2 s stand for a 30-minute bake
 
 local props = { density = 1100, bulk = 2e4, lambda = P.lambda, viscosity = P.viscosity, mu_e = P.mu_e }
 local dough = h.material("maxwell_sph", props)

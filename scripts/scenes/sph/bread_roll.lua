@@ -7,7 +7,9 @@
 -- diffuses (eq. 3.45); bubbles expand while they heat, the dough keeps the volume
 -- it reached (eq. 3.52) and stiffens (eq. 4.1-4.3).
 -- Writes volume.csv (relative volume over time, from a density slice) and
--- browning frames (eq. 4.5-4.6).
+-- browning frames: the crust's colour from each particle's temperature history
+-- (Zanoni et al. 1995, the thesis's [89]; browning_scale = 400 lets the 3 s
+-- animation stand for a 20-minute bake).
 -- Scaling: Table 4.1's numbers are animation units. Taken as SI, the raw dough
 -- (0.1 Pa s, mu_e 1 Pa) is water and the roll splashes, and the baked end
 -- (5e3 Pa s) needs microsecond steps. So viscosity and mu_e are multiplied by
@@ -35,7 +37,7 @@ sph.bubble_T0 = lib.table.T0
 sph.artificial_stress, sph.tension = P.artificial_stress, P.tension
 sph.xsph0 = P.xsph0 -- eq. 4.4 at the raw end (Table 4.1: 0.05)
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph", sph = sph,
-  oven = { temperature = P.oven, beta = 0 } }
+  oven = { temperature = P.oven, beta = 0 }, browning = true, browning_scale = 400 }
 
 local function scaled(c, k, cap)
   local pts = {}

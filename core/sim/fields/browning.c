@@ -1,0 +1,79 @@
+/* browning.c: a per-particle browning index from temperature and water
+ * history, the same in both solvers.
+ *
+ * The index is b = Delta E / Delta E_inf in [0, 1], Delta E the colour
+ * difference (CIE Lab distance) between the raw dough and the crust. Zanoni,
+ * Peri & Bruno (1995, LWT 28, 604-609; the Rodriguez-Arenas thesis's [89])
+ * measured it on dried crumb pressed to a plate at 140-250 degC and found
+ * first-order kinetics:
+ *   d(Delta E)/dt = k (Delta E_inf - Delta E),  k = k0 exp(-Ea / (R theta)),
+ *   Delta E_inf = 52, k0 = 42000 1/s, Ea = 64151 J/mol,
+ * so at a constant temperature b(t) = 1 - exp(-k t). Multiply by 52 for
+ * Delta E. At 200 degC k = 3.5e-3 1/s (b = 0.98 after a 20 minute bake); at
+ * 100 degC, the wet crumb's plateau, k = 4.4e-5 1/s (b = 0.05): a crumb stays
+ * pale because its temperature history never leaves the boiling plateau, not
+ * because we tell it to.
+ *
+ * Water. The kinetics were measured on dried crumb, and Maillard browning
+ * needs a low water activity (Purlis 2010, J. Food Eng. 99, 239-249, reviews
+ * it); Zanoni et al. apply it to the crust once it has dried. When the water
+ * field is live we multiply the rate by 1 - s/s_0 (s the particle's
+ * saturation, s_0 its initial one): the full rate for a dry particle, none
+ * for one as wet as the raw dough. The linear map is our choice, the
+ * simplest that has those two ends; it is not a measured law. Without the
+ * water field the factor is 1.
+ *
+ * Integration. Over a step the temperature is taken as constant (its value
+ * at the end of the step) and b advances exactly: b <- 1 - (1 - b)
+ * exp(-k f dt). At constant temperature this reproduces the closed form to
+ * rounding for any dt, and b never leaves [0, 1] nor decreases: a crust that
+ * cools keeps its colour (history, not current temperature).
+ *
+ * Rejected: the SPH value of Rodriguez-Arenas eq. 4.5-4.6 (a texture
+ * coordinate linear in the present temperature, smoothed over neighbours),
+ * which sph.c used before; it browns the whole cake as it warms and pales it
+ * as it cools. Eq. 4.5's smoothing belongs to the renderer of a surface mesh,
+ * which hearth does not build; probes already average particles.
+ *
+ * browning_scale multiplies k: a scene whose heat runs N times faster than
+ * physical time (Ding et al.'s Table 2 units) sets N so that the crust
+ * browns over the same part of the bake. */
+#include "browning.h"
+
+#include <math.h>
+
+#include "scene.h"
+#include "water.h"
+
+double browning_rate(double T, double scale) {
+    const double theta = T + 273.15;
+    if (!(theta > 0)) return 0;
+    return scale * BROWNING_K0 * exp(-BROWNING_EA / (BROWNING_R * theta));
+}
+
+double browning_water_factor(double sat, double sat0) {
+    /* a body given no water starts at water.c's floor: it is dry, not as wet as its dough */
+    if (!(sat0 > 2 * WATER_SATURATION_FLOOR)) return 1;
+    const double f = 1 - sat / sat0;
+    return f < 0 ? 0 : f > 1 ? 1 : f;
+}
+
+double browning_advance(double b, double kf, double dt) {
+    /* 1 - b decays: -expm1 keeps small increments exact */
+    return b - (1 - b) * expm1(-kf * dt);
+}
+
+void browning_step(hearth_scene *s, double dt) {
+    const particles *ps = &s->ps;
+    const int n = ps->n;
+    double *b = pcold(ps, PC_BROWNING);
+    const double *T = pcold(ps, PC_TEMPERATURE); /* browning = true makes it live (scene.c) */
+    const int wet = (ps->enabled & (1u << PC_WATER)) != 0;
+    const double *sat0 = wet ? pcold(ps, PC_SAT0) : NULL;
+    const double scale = s->def.browning_scale;
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        const double f = wet ? browning_water_factor(water_saturation(s, i), sat0[i]) : 1.0;
+        b[i] = browning_advance(b[i], browning_rate(T[i], scale) * f, dt);
+    }
+}
