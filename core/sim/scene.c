@@ -599,6 +599,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             if (s->kinetic > s->kinetic_peak) s->kinetic_peak = s->kinetic;
             s->out_of_domain += rep.out_of_domain;
             if (water_active(s)) water_step_stands(&s->water);
+            if (thermal_active(s)) thermal_step_stands(&s->heat);
             if (s->dt_scale < 1) s->dt_scale = fmin(1.0, s->dt_scale * 1.25);
             return HEARTH_OK;
         }
@@ -679,6 +680,7 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
         for (int i = 0; i < s->ps.n; i++) st->gas_moles += pcold(&s->ps, PC_GAS)[i] * pcold(&s->ps, PC_VOL0)[i];
     st->water_mass = water_total(s);
     st->water_lost = s->water.lost;
+    st->oven_heat_in = s->heat.oven_heat_in;
 }
 
 int hearth_scene_particle_count(const hearth_scene *s) { return s->ps.n; }

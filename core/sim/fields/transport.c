@@ -8,7 +8,8 @@
  * (the fields' cost against the momentum step is a target of issue #4).
  *
  * Heat:   out_i += sum_p grad w_ip . (V_p kappa_p grad x_p) + sum_p S_p beta_p w_ip x_p,
- *         src_i += sum_p w_ip (S_p beta_p theta_out,p - V0 c lambda theta_abs,p div v_p),
+ *         src_i += sum_p w_ip (S_p beta_p theta_out,p - V0 c lambda theta_abs,p div v_p - L e_p),
+ *         e_p the particle's evaporation (kg/s) when the scene's latent_heat is on,
  *         x the input channel: node temperature, or the CG direction.
  * Water:  dm_i += dt sum_p V_p q_p . grad w_ip - dt sum_p w_ip beta^w theta_p (s_p - s_amb) S_p,
  *         q_p = -K theta rho_0^w s_p grad s (eq. 22), and with water_momentum the
@@ -141,6 +142,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
     double *Q = mom ? pcold(ps, PC_QW) : NULL; /* kept only for the momentum coupling */
     const double *area = s->boundary.area, dt = tp->dt, s_amb = s->def.oven_saturation;
     const int *mat = pcoli(ps, PC_MAT), *flags = pcoli(ps, PC_FLAGS); /* live with heat and with water */
+    const int lat = HEAT && WATER && s->def.latent_heat;
     for (int i = pb.start; i < pb.end; i++) {
         int base[3] = {0, 0, 0};
         double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
@@ -181,6 +183,12 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
              * heat Robin term uses the interpolated temperature, toward the oven's
              * ambient saturation (our extension: Ding et al. §3.2 dry into s = 0) */
             evap = bnd && area && area[i] > 0 ? ms->core[CP_EVAPORATION] * th * (si - s_amb) * area[i] : 0.0; /* kg/s */
+            /* latent heat (the scene's latent_heat; beyond Ding et al. eq. 9): the
+             * evaporated water leaves with L per kg from this particle's heat, on
+             * the same weights w_ip as the water, so the heat the nodes lose is L
+             * times the water they lose. Implicit heat takes it on the right-hand
+             * side, lagged: the evaporation is the step start's. */
+            if (SRC && lat) source -= HEARTH_LATENT_HEAT * evap;
             if (mom) { /* v^w = v^s + q^w / rho^w; the grid takes w V dq + dt V (v^w (x) q^w) grad w */
                 double vw[3], dq[3];
                 for (int d = 0; d < 3; d++) {
