@@ -37,6 +37,24 @@
  * The expansion term uses absolute temperature (theta + 273.15): in degrees C
  * it would change sign at the freezing point.
  *
+ * Latent heat (the scene's latent_heat, issue #18; Ding et al.'s eq. 9 has no
+ * such term): the water evaporating through the air boundary takes
+ * L = HEARTH_LATENT_HEAT per kg from the heat of the particle it leaves. The
+ * sink is added where the evaporation is computed (transport.c), on the same
+ * weights w_ip as the water it removes, so the nodes lose L times the water
+ * they lose; forward Euler folds it into the sources, backward Euler takes it
+ * on the right-hand side, lagged (the evaporation is the step start's). Its
+ * rate of change with the particle's own temperature is L e (s - s_amb) S, so
+ * the explicit step is limited as for a Robin coefficient L e
+ * (thermal_dt_limit). With the switch on, oven_ledger tallies the oven's Robin
+ * heat so that heat in = sensible heat + L x water lost can be checked
+ * (`latent_heat_energy_balance`: to 1e-13). Rejected: a sink on the particle's
+ * temperature after G2P, which would take heat that the nodes never lost
+ * from the FLIP update, and a boiling law (a sink that holds theta at 100
+ * degC): Ding et al.'s evaporation beta^w theta s does not know the boiling
+ * point, and the surface then sits at its wet-bulb balance instead
+ * (`latent_heat_wet_plateau`, docs/validation.md).
+ *
  * FLIP keeps heat exactly but not a maximum principle: where two materials
  * share nodes a particle can overshoot (seen: 110 degC from a 90 degC start in
  * `heat_insulated_conservation_explicit`); the scene's heat_flip < 1 blends
