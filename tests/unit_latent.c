@@ -15,6 +15,7 @@
  * know the boiling point. */
 #include <math.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #include "mpm_fixture.h"
 #include "water.h"
@@ -189,4 +190,25 @@ TEST(latent_heat_wet_plateau) {
     }
 }
 
-TEST_MAIN(T(latent_heat_energy_balance), T(latent_heat_wet_plateau))
+/* Where the switch cannot act it says so: SPH carries no water, and the
+ * checkpoint format does not carry the switch. */
+TEST(latent_heat_refusals) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.solver = HEARTH_SOLVER_SPH;
+    d.latent_heat = 1;
+    hearth_error err;
+    hearth_scene *s = hearth_scene_create(&d, &err);
+    CHECK(s == NULL);
+    if (s) hearth_scene_destroy(s);
+    printf("  sph: %s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, "latent_heat = true needs the water field");
+    block b = make_block(0.004, 1, 0, WET_K);
+    CHECK(hearth_scene_step(b.s, 2, &err) == HEARTH_OK);
+    CHECK(hearth_scene_save(b.s, "latent_refused.ckpt", &err) != HEARTH_OK);
+    printf("  save: %s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, "latent_heat = true are not supported yet");
+    CHECK(access("latent_refused.ckpt", F_OK) != 0); /* nothing written */
+    hearth_scene_destroy(b.s);
+}
+
+TEST_MAIN(T(latent_heat_energy_balance), T(latent_heat_wet_plateau), T(latent_heat_refusals))
