@@ -236,7 +236,7 @@ typedef struct hearth_scene_def {
 /// Defaults: those of hearth_scene_settings() (2D, dx 0.01, box [0,1]^3, gravity
 /// (0,-9.81,0), cfl 0.5, slip walls, no friction, guard stops, 8 rollbacks, energy
 /// growth 10, seed 1, no oven (its beta 10 once there is one), explicit heat, no water
-/// momentum, APIC, MPM). An oven makes the temperature field live.
+/// momentum, no latent heat, APIC, MPM). An oven makes the temperature field live.
 hearth_scene_def hearth_default_scene_def(void);
 
 /// How a scene setting's value is written.

@@ -48,7 +48,9 @@
  * the explicit step is limited as for a Robin coefficient L e
  * (thermal_dt_limit). With the switch on, oven_ledger tallies the oven's Robin
  * heat so that heat in = sensible heat + L x water lost can be checked
- * (`latent_heat_energy_balance`: to 1e-13). Rejected: a sink on the particle's
+ * (`latent_heat_energy_balance`: to 1e-13; a particle that reaches water.c's
+ * saturation floor keeps water whose heat was taken, so the books then differ
+ * by L times what the floor kept). Rejected: a sink on the particle's
  * temperature after G2P, which would take heat that the nodes never lost
  * from the FLIP update, and a boiling law (a sink that holds theta at 100
  * degC): Ding et al.'s evaporation beta^w theta s does not know the boiling
