@@ -798,6 +798,7 @@ static int l_stats(lua_State *L) {
     lua_pushnumber(L, st.gas_moles); lua_setfield(L, -2, "gas");
     lua_pushnumber(L, st.water_mass); lua_setfield(L, -2, "water_mass");
     lua_pushnumber(L, st.water_lost); lua_setfield(L, -2, "water_lost");
+    lua_pushnumber(L, st.oven_heat_in); lua_setfield(L, -2, "oven_heat_in");
     /* the live fields as a list */
     lua_newtable(L);
     const char *f = hearth_scene_fields(u->s);

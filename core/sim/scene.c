@@ -606,6 +606,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             if (water_active(s)) water_step_stands(&s->water);
             /* the step stands: the crust's colour integrates its end temperature (a rolled back step never browns) */
             if (s->def.browning) browning_step(s, dt); /* hearth_scene_create made its columns */
+            if (thermal_active(s)) thermal_step_stands(&s->heat);
             if (s->dt_scale < 1) s->dt_scale = fmin(1.0, s->dt_scale * 1.25);
             return HEARTH_OK;
         }
@@ -686,6 +687,7 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
         for (int i = 0; i < s->ps.n; i++) st->gas_moles += pcold(&s->ps, PC_GAS)[i] * pcold(&s->ps, PC_VOL0)[i];
     st->water_mass = water_total(s);
     st->water_lost = s->water.lost;
+    st->oven_heat_in = s->heat.oven_heat_in;
 }
 
 int hearth_scene_particle_count(const hearth_scene *s) { return s->ps.n; }

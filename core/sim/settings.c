@@ -77,6 +77,9 @@ static const hearth_setting settings[] = {
            heat_implicit, 1),
     FLAG("water_momentum", "the water's motion relative to the solid carries momentum (Ding et al. eq. 26-27)",
          water_momentum),
+    FLAG("latent_heat", "evaporated water takes 2.26 MJ/kg (water's latent heat near 100 degC) from the heat of the particle "
+         "it leaves (MPM; beyond Ding et al. eq. 9): a wet surface holds near the boiling point, a dry crust heats on. "
+         "Off by default and for the animation-unit presets h.library.oven.*", latent_heat),
     CHOICE("transfer", "momentum transfer: APIC, or PIC (no affine part: dissipative)", 0, w_transfer, transfer, 1),
     REAL("heat_flip", "1", "temperature to particles: 1 FLIP (eq. 21) .. 0 PIC (the nodes' value)", 1, 0, 1, heat_flip, 1),
     REAL("damping", "1/s", "velocity damping c for static problems: each step the grid velocity is divided by 1 + c dt "

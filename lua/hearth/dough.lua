@@ -75,6 +75,11 @@
 --  * nu (not in Table 2) 0.3; initial porosity n^p_0 0.1; thermal expansion
 --    c lambda (not in Table 2) 0.1 Pa/K from the dough's start temperature,
 --    2 Pa/K for the marshmallow (its visible swelling, §7.2).
+--  * latent_heat = false in every oven (the scene switch h.scene{latent_heat =
+--    ...}, issue #18): with Table 2's c = 20 J/(kg K) a particle that loses
+--    1% of its mass as water would cool by 0.01 L / c = 1130 K (L = 2.26
+--    MJ/kg), so the latent sink belongs only to presets in real heat
+--    capacities; a scene passes `latent_heat = oven.latent_heat`.
 --  * Table 2's dx and dt are the paper's 3D resolutions; the scenes pick
 --    their own (coarser) dx, and dt follows the CFL limit.
 local ETA_SCALE, GAS_SCALE = 4000, 1 / 600
@@ -131,7 +136,7 @@ function D.preset(name)
   }
   local curves = { tau_y = curve(c.yield * (tune.tau or 1), TAU_SHAPE), eta = curve(c.eta * ETA_SCALE, ETA_SHAPE) }
   local oven = { temperature = c.ambient_theta, beta = c.ambient_beta, pan_temperature = c.conductive_theta,
-    pan_beta = c.conductive_beta, dough_temperature = c.theta0 }
+    pan_beta = c.conductive_beta, dough_temperature = c.theta0, latent_heat = false }
   return params, curves, oven
 end
 

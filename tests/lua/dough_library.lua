@@ -20,6 +20,7 @@ for name, t in pairs(T2) do
   local g = ({ bread = 0.4, muffin = 2.5, lava_cake = 0.1 })[name] or 1 -- the documented gas factors
   assert(math.abs(d.gas_rate - g * (t[5] or 0) / 600) <= 1e-15, name .. ": gas_rate = alpha^g / 600")
   assert(o.temperature == t[6], name .. ": oven temperature")
+  assert(o.latent_heat == false, name .. ": Table 2's animation units keep the latent sink off")
   h.material("cam_clay_dough", d) -- every point of every curve passes the plugin's schema
 end
 local ok, e = pcall(function() return h.library.dough.cooky end)

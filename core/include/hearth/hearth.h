@@ -225,12 +225,20 @@ typedef struct hearth_scene_def {
     int periodic[3];         ///< 1: the box wraps along that axis (no walls there); the box length must be a whole number of dx. SPH: as sph.periodic
     int browning;            ///< 1: integrate the per-particle browning index from temperature and water history (Zanoni et al. 1995; fields/browning.c); makes the temperature field live. Default 0
     double browning_scale;   ///< multiplies the browning rate: 1 for physical time; the time-scale factor of a scene whose heat runs in animation units. Default 1
+    int latent_heat;         ///< 1: evaporated water takes HEARTH_LATENT_HEAT J/kg from the particle's heat (MPM; beyond Ding et al. eq. 9); default 0
 } hearth_scene_def;
+
+/// Latent heat of vaporisation of water near 100 degC (J/kg): 2257 kJ/kg at
+/// 100 degC and 1 atm (IAPWS-IF97 steam tables; CRC Handbook of Chemistry and
+/// Physics, "Enthalpy of vaporization of water"), rounded as 2.26 MJ/kg. The
+/// scene's latent_heat switch uses it; one value, since the sink only matters
+/// near the boiling point where the dough's surface sits while it is wet.
+#define HEARTH_LATENT_HEAT 2.26e6
 
 /// Defaults: those of hearth_scene_settings() (2D, dx 0.01, box [0,1]^3, gravity
 /// (0,-9.81,0), cfl 0.5, slip walls, no friction, guard stops, 8 rollbacks, energy
 /// growth 10, seed 1, no oven (its beta 10 once there is one), explicit heat, no water
-/// momentum, APIC, MPM). An oven makes the temperature field live.
+/// momentum, no latent heat, APIC, MPM). An oven makes the temperature field live.
 hearth_scene_def hearth_default_scene_def(void);
 
 /// How a scene setting's value is written.
@@ -400,6 +408,7 @@ typedef struct hearth_stats {
     double gas_moles;      ///< CO2 in the particles (mol, or mol/m in 2D); 0 without leavening
     double water_mass;     ///< water in the particles (kg, or kg/m in 2D); 0 without water
     double water_lost;     ///< water that left through the boundary so far (kg, or kg/m in 2D); negative if gained
+    double oven_heat_in;   ///< heat in through the oven's air boundary so far (J, or J/m in 2D); tallied only with latent_heat on, else 0
 } hearth_stats;
 void hearth_scene_stats(const hearth_scene *s, hearth_stats *st);
 /// Simulated time (s): hearth_stats.t without the sums over every particle.

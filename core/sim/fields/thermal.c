@@ -37,6 +37,26 @@
  * The expansion term uses absolute temperature (theta + 273.15): in degrees C
  * it would change sign at the freezing point.
  *
+ * Latent heat (the scene's latent_heat, issue #18; Ding et al.'s eq. 9 has no
+ * such term): the water evaporating through the air boundary takes
+ * L = HEARTH_LATENT_HEAT per kg from the heat of the particle it leaves. The
+ * sink is added where the evaporation is computed (transport.c), on the same
+ * weights w_ip as the water it removes, so the nodes lose L times the water
+ * they lose; forward Euler folds it into the sources, backward Euler takes it
+ * on the right-hand side, lagged (the evaporation is the step start's). Its
+ * rate of change with the particle's own temperature is L e (s - s_amb) S, so
+ * the explicit step is limited as for a Robin coefficient L e
+ * (thermal_dt_limit). With the switch on, oven_ledger tallies the oven's Robin
+ * heat so that heat in = sensible heat + L x water lost can be checked
+ * (`latent_heat_energy_balance`: to 1e-13; a particle that reaches water.c's
+ * saturation floor keeps water whose heat was taken, so the books then differ
+ * by L times what the floor kept). Rejected: a sink on the particle's
+ * temperature after G2P, which would take heat that the nodes never lost
+ * from the FLIP update, and a boiling law (a sink that holds theta at 100
+ * degC): Ding et al.'s evaporation beta^w theta s does not know the boiling
+ * point, and the surface then sits at its wet-bulb balance instead
+ * (`latent_heat_wet_plateau`, docs/validation.md).
+ *
  * FLIP keeps heat exactly but not a maximum principle: where two materials
  * share nodes a particle can overshoot (seen: 110 degC from a 90 degC start in
  * `heat_insulated_conservation_explicit`); the scene's heat_flip < 1 blends
@@ -101,6 +121,7 @@ double thermal_dt_limit(const hearth_scene *s) {
         if (!isnan(s->cols[c].temperature) && isfinite(s->cols[c].beta) && s->cols[c].beta > beta) beta = s->cols[c].beta; /* held nodes are not integrated */
     int held = 0; /* a held collider's Nitsche penalty acts as beta = gamma kappa / dx */
     for (int c = 0; c < s->ncol; c++) held |= !isnan(s->cols[c].temperature) && isinf(s->cols[c].beta);
+    const int latent = s->def.latent_heat && (s->ps.enabled & (1u << PC_WATER));
     double dt = INFINITY;
     for (int m = 0; m < s->mats.n; m++) {
         const material_slot *ms = &s->mats.slot[m];
@@ -109,9 +130,19 @@ double thermal_dt_limit(const hearth_scene *s) {
         if (k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * s->def.dim * k));
         /* and on the Robin term: a boundary cell's rho alpha dx^dim against beta dx^(dim-1) */
         if (beta > 0) dt = fmin(dt, ra * s->def.dx / (2.0 * beta));
+        /* the latent sink L e theta_abs (s - s_amb) S falls with the particle's own
+         * temperature at the rate L e (s - s_amb) S <= L e S: a Robin term of
+         * coefficient L e, limited as the oven's */
+        const double le = latent ? HEARTH_LATENT_HEAT * ms->core[CP_EVAPORATION] : 0.0;
+        if (le > 0) dt = fmin(dt, ra * s->def.dx / (2.0 * le));
         if (held && k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * NITSCHE_GAMMA * k));
     }
     return dt;
+}
+
+void thermal_step_stands(thermal_state *h) {
+    h->oven_heat_in += h->step_oven_heat;
+    h->step_oven_heat = 0;
 }
 
 double thermal_energy(const hearth_scene *s) {
@@ -482,6 +513,30 @@ static void apply(hearth_scene *s, int in, int out) {
     transport_apply(s, &tp);
 }
 
+/* The heat the oven's Robin boundary put in this step, dt sum_p S_p beta_p
+ * (theta_out - theta_p), theta_p the nodes' temperature at the particle that
+ * the update used: the step start's (forward Euler) or the solution's
+ * (backward). Only for the latent_heat ledger; serial, so deterministic. */
+static void oven_ledger(hearth_scene *s, double dt) {
+    s->heat.step_oven_heat = 0;
+    if (!s->def.latent_heat || isnan(s->def.oven_temperature)) return;
+    const grid *g = &s->g;
+    const int NPB = g->nodes_per_block, ch = s->def.heat_implicit ? CH_T : CH_T0;
+    const double *X = pcold(&s->ps, PC_X), *coef = s->heat.bnd_coef;
+    const int *flags = pcoli(&s->ps, PC_FLAGS);
+    double q = 0;
+    for (int i = 0; i < s->ps.n; i++) {
+        if (!(flags[i] & PF_BOUNDARY) || !(coef[i] > 0)) continue; /* a collider's contact alone leaves coef 0 */
+        double *node[27], w[27];
+        int l[27];
+        const int m = contact_stencil(g, X + 3 * i, node, l, w, NULL);
+        double th = 0;
+        for (int j = 0; j < m; j++) th += w[j] * node[j][ch * NPB + l[j]];
+        q += coef[i] * (s->heat.bnd_temp[i] - th);
+    }
+    s->heat.step_oven_heat = dt * q;
+}
+
 void thermal_finish(hearth_scene *s, double dt) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block;
@@ -500,6 +555,7 @@ void thermal_finish(hearth_scene *s, double dt) {
             }
         }
         held_settle(s);
+        oven_ledger(s, dt);
         return;
     }
     /* backward Euler (gamma = 1): (C/dt + L) x = C/dt theta^n + b, solved by
@@ -577,4 +633,5 @@ void thermal_finish(hearth_scene *s, double dt) {
         s->heat.cg_iterations = it + 1;
     }
     held_settle(s);
+    oven_ledger(s, dt);
 }

@@ -31,6 +31,10 @@ typedef struct thermal_state {
     double *hold_h;              /* per particle, when nfix > 0: the weight of its held nodes (mpm.c's G2P
                                   * blends its temperature toward the nodes' by it) */
     int hold_cap;
+    /* the oven's heat ledger, kept only with the scene's latent_heat (the energy
+     * balance that checks the latent sink): heat in through the oven's Robin
+     * boundary this step and over the steps that stood (J, J/m in 2D) */
+    double step_oven_heat, oven_heat_in;
 } thermal_state;
 
 /// Empty state (allocates nothing).
@@ -51,6 +55,8 @@ double thermal_dt_limit(const struct hearth_scene *s);
 hearth_status thermal_prepare(struct hearth_scene *s, hearth_error *err);
 /// The forward or backward Euler update of eq. 9 on the nodes (§6.3).
 void thermal_finish(struct hearth_scene *s, double dt);
+/// A step stood (the guard kept it): its oven heat joins the ledger.
+void thermal_step_stands(thermal_state *h);
 /// Total heat energy sum m alpha (theta + 273.15) of the particles (J).
 double thermal_energy(const struct hearth_scene *s);
 #endif

@@ -8,7 +8,8 @@
  * (the fields' cost against the momentum step is a target of issue #4).
  *
  * Heat:   out_i += sum_p grad w_ip . (V_p kappa_p grad x_p) + sum_p S_p beta_p w_ip x_p,
- *         src_i += sum_p w_ip (S_p beta_p theta_out,p - V0 c lambda theta_abs,p div v_p),
+ *         src_i += sum_p w_ip (S_p beta_p theta_out,p - V0 c lambda theta_abs,p div v_p - L e_p),
+ *         e_p the particle's evaporation (kg/s) when the scene's latent_heat is on,
  *         x the input channel: node temperature, or the CG direction.
  * Water:  dm_i += dt sum_p V_p q_p . grad w_ip - dt sum_p w_ip beta^w theta_p (s_p - s_amb) S_p,
  *         q_p = -K theta rho_0^w s_p grad s (eq. 22), and with water_momentum the
@@ -108,7 +109,7 @@ FORCE_INLINE void scatter(const int D, const int NC, double *const out[2], const
  * [4] water mass change, [5..7] water momentum */
 enum { T_IN, T_OUT, T_SRC, T_SAT, T_DM, T_DP, T_COUNT = T_DP + 3 };
 
-FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const int SRC, const int WATER,
+FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const int SRC, const int WATER, const int LAT,
                              const transport_pass *tp, int q, double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
@@ -180,7 +181,17 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
             /* evaporation from the saturation the grid sees at the particle, as the
              * heat Robin term uses the interpolated temperature, toward the oven's
              * ambient saturation (our extension: Ding et al. §3.2 dry into s = 0) */
-            evap = bnd && area && area[i] > 0 ? ms->core[CP_EVAPORATION] * th * (si - s_amb) * area[i] : 0.0; /* kg/s */
+            if (bnd && area && area[i] > 0) {
+                evap = ms->core[CP_EVAPORATION] * th * (si - s_amb) * area[i]; /* kg/s */
+                /* latent heat (the scene's latent_heat; beyond Ding et al. eq. 9): the
+                 * evaporated water leaves with L per kg from this particle's heat, on
+                 * the same weights w_ip as the water, so the heat the nodes lose is L
+                 * times the water they lose. Implicit heat takes it on the right-hand
+                 * side, lagged: the evaporation is the step start's. A compile-time
+                 * constant (its own instantiation), so scenes without the switch run
+                 * the code they ran before. */
+                if (LAT) source -= HEARTH_LATENT_HEAT * evap;
+            }
             if (mom) { /* v^w = v^s + q^w / rho^w; the grid takes w V dq + dt V (v^w (x) q^w) grad w */
                 double vw[3], dq[3];
                 for (int d = 0; d < 3; d++) {
@@ -239,20 +250,21 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
 }
 
 typedef void (*block_fn)(hearth_scene *, const transport_pass *, int, double *);
-#define PASS(D, H, S, W)                                                                                 \
-    static void pass_##D##_##H##S##W(hearth_scene *s, const transport_pass *tp, int q, double *tile) { \
-        pass_block(s, D, H, S, W, tp, q, tile);                                                          \
+#define PASS(D, H, S, W, L)                                                                                    \
+    static void pass_##D##_##H##S##W##L(hearth_scene *s, const transport_pass *tp, int q, double *tile) { \
+        pass_block(s, D, H, S, W, L, tp, q, tile);                                                           \
     }
-PASS(2, 1, 1, 1) PASS(2, 1, 1, 0) PASS(2, 1, 0, 0) PASS(2, 0, 0, 1)
-PASS(3, 1, 1, 1) PASS(3, 1, 1, 0) PASS(3, 1, 0, 0) PASS(3, 0, 0, 1)
+PASS(2, 1, 1, 1, 1) PASS(2, 1, 1, 1, 0) PASS(2, 1, 1, 0, 0) PASS(2, 1, 0, 0, 0) PASS(2, 0, 0, 1, 0)
+PASS(3, 1, 1, 1, 1) PASS(3, 1, 1, 1, 0) PASS(3, 1, 1, 0, 0) PASS(3, 1, 0, 0, 0) PASS(3, 0, 0, 1, 0)
 
 void transport_apply(hearth_scene *s, const transport_pass *tp) {
     const int heat = tp->heat_in >= 0, src = heat && tp->heat_src >= 0, water = tp->water, d3 = s->g.dim == 3;
     block_fn fn = NULL;
-    if (heat && src && water) fn = d3 ? pass_3_111 : pass_2_111;
-    else if (heat && src) fn = d3 ? pass_3_110 : pass_2_110;
-    else if (heat && !water) fn = d3 ? pass_3_100 : pass_2_100;
-    else if (!heat && water) fn = d3 ? pass_3_001 : pass_2_001;
+    if (heat && src && water && s->def.latent_heat) fn = d3 ? pass_3_1111 : pass_2_1111;
+    else if (heat && src && water) fn = d3 ? pass_3_1110 : pass_2_1110;
+    else if (heat && src) fn = d3 ? pass_3_1100 : pass_2_1100;
+    else if (heat && !water) fn = d3 ? pass_3_1000 : pass_2_1000;
+    else if (!heat && water) fn = d3 ? pass_3_0010 : pass_2_0010;
     if (!fn) return; /* heat without sources alongside water is never asked for */
     const mpm_state *m = mpm_state_of(s); /* the sort's particle blocks, in colours */
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)

@@ -317,6 +317,11 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
     if (s->def.browning) /* browning and browning_scale are not in version 4's DEF section: a resumed crust would stop browning */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with browning = true are not supported yet",
                        path);
+    if (s->def.latent_heat) /* not in version 4's DEF section: resuming without the latent sink would be silently wrong */
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "save %s: checkpoints of scenes with latent_heat = true are not supported yet; save with "
+                       "latent_heat = false",
+                       path);
     if (s->mix.mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
                        path);

@@ -122,6 +122,10 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
     /* each option's range (flags 0 or 1), unit and help: settings.c's table; here the rules between options */
     hearth_status st = settings_check(d, "sph.", NULL, err);
     if (st) return st;
+    if (d->latent_heat) /* the sink is on evaporated water, and the SPH solver carries no water */
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "scene: latent_heat = true needs the water field, which solver = \"sph\" does not carry; use "
+                       "solver = \"mpm\" or latent_heat = false");
     if (!(o->xsph_Tf > o->xsph_T0))
         return err_set(err, HEARTH_ERR_PARAM, "scene: sph.xsph_Tf = %g degC must be above sph.xsph_T0 = %g degC",
                        o->xsph_Tf, o->xsph_T0);
