@@ -388,7 +388,7 @@ TEST(checkpoint_crafted_fields) {
     expect_refused(img, n, count_2e31, "particle count");
     expect_refused(img, n, count_2e30, "particle count");
     expect_refused(img, n, count_plus1, "particle");
-    expect_refused(img, n, browning_bit, "a browning column");
+    expect_refused(img, n, browning_bit, "a browning column in a scene with browning = false");
     expect_refused(img, n, guard_state_7, "guard state out of range");
     expect_refused(img, n, guard_state_neg, "guard state out of range");
     expect_refused(img, n, dx_nan, "dx is not finite");

@@ -220,6 +220,9 @@ static void put_def(ck_out *o, const hearth_scene_def *d) {
     put_i32(o, d->transfer);
     put_f64(o, d->heat_flip);
     put_f64(o, d->oven_saturation);
+    put_i32(o, d->latent_heat);
+    put_i32(o, d->browning);
+    put_f64(o, d->browning_scale);
 }
 
 static void put_clocks(ck_out *o, const hearth_scene *s) {
@@ -314,14 +317,6 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
     if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) /* not in version 3's DEF section either */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with periodic axes are not supported yet",
                        path);
-    if (s->def.browning) /* browning and browning_scale are not in version 4's DEF section: a resumed crust would stop browning */
-        return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with browning = true are not supported yet",
-                       path);
-    if (s->def.latent_heat) /* not in version 4's DEF section: resuming without the latent sink would be silently wrong */
-        return err_set(err, HEARTH_ERR_PARAM,
-                       "save %s: checkpoints of scenes with latent_heat = true are not supported yet; save with "
-                       "latent_heat = false",
-                       path);
     if (s->mix.mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
                        path);
@@ -394,6 +389,11 @@ static void get_def(ck_cursor *c, hearth_scene_def *d) {
     d->transfer = get_i32(c);
     d->heat_flip = get_finite(c, "scene: heat_flip is not finite");
     d->oven_saturation = get_finite(c, "scene: oven saturation is not finite");
+    d->latent_heat = get_i32(c);
+    if (d->latent_heat != 0 && d->latent_heat != 1) ck_fail(c, "scene: latent_heat is neither 0 nor 1");
+    d->browning = get_i32(c);
+    if (d->browning != 0 && d->browning != 1) ck_fail(c, "scene: browning is neither 0 nor 1");
+    d->browning_scale = get_finite(c, "scene: browning_scale is not finite"); /* hearth_scene_create checks its range */
     d->solver = HEARTH_SOLVER_MPM; /* the only solver whose table says can_checkpoint (solver.h) */
 }
 
@@ -632,8 +632,9 @@ static int get_particles(ck_cursor *c, hearth_scene *s, hearth_error *err) {
     if (c->bad) return -1;
     const uint32_t core = (1u << PC_NCORE) - 1;
     if ((enabled & core) != core || enabled >= (1u << PC_COUNT)) return ck_fail(c, "unknown or missing particle columns");
-    if (enabled & (1u << PC_BROWNING)) /* hearth_scene_save refuses browning scenes: only a crafted file has it */
-        return ck_fail(c, "a browning column (scenes with browning = true are not saved in this version)");
+    if (!(enabled & (1u << PC_BROWNING)) != !s->def.browning) /* the column lives exactly when the scene browns */
+        return ck_fail(c, s->def.browning ? "no browning column in a scene with browning = true"
+                                          : "a browning column in a scene with browning = false");
     if (stride > CK_MAX_STRIDE) return ck_fail(c, "plugin state stride above 4096 doubles");
     particles *ps = &s->ps;
     if ((int)stride < ps->state_stride) return ck_fail(c, "plugin state stride smaller than a material's state");

@@ -8,7 +8,8 @@
  *
  *   header, 40 bytes:
  *     0  "HEARTHCK"
- *     8  u32 version (4; 4 added the humid oven, wet colliders' beta_water and held temperatures)
+ *     8  u32 version (4; 4 added the humid oven, wet colliders' beta_water, held temperatures,
+ *        latent_heat, browning and its scale)
  *    12  u32 byte-order mark 0x01020304
  *    16  u32 sizeof(double) (8)
  *    20  u32 header size (40)
