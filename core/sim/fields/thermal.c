@@ -37,6 +37,11 @@
  * The expansion term uses absolute temperature (theta + 273.15): in degrees C
  * it would change sign at the freezing point.
  *
+ * Forward Euler with an oven merges the nodes just past the air surface that
+ * hold a sliver of heat capacity into their fullest neighbour (explicit_merged:
+ * their 1/c increments left a FLIP pattern in the outer particles that did not
+ * converge, `heat_slab_surface_rows_converge`).
+ *
  * FLIP keeps heat exactly but not a maximum principle: where two materials
  * share nodes a particle can overshoot (seen: 110 degC from a 90 degC start in
  * `heat_insulated_conservation_explicit`); the scene's heat_flip < 1 blends
