@@ -142,7 +142,7 @@ TEST(heat_slab_robin_implicit) { slab_robin(1); }
  * at 10 and 20 cells across L. The small nodes past the face (a thirtieth of a
  * full node's heat capacity) once drove a FLIP pattern across these rows that
  * grew with the heat taken in and did not shrink with dx (0.0227 and 0.0238 here,
- * order -0.07; now 0.0179 and 0.0090, order 0.99); thermal.c merges them into
+ * order -0.07; now 0.0180 and 0.0090, order 1.01); thermal.c merges them into
  * their fullest neighbour. */
 TEST(heat_slab_surface_rows_converge) {
     const double L = 0.02, Fo = 0.2, tscale = 1000.0 * 1000.0 * L * L / 1.0;
