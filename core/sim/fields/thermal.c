@@ -37,6 +37,10 @@
  * The expansion term uses absolute temperature (theta + 273.15): in degrees C
  * it would change sign at the freezing point.
  *
+ * Forward Euler with an oven merges the nodes just past the air surface that
+ * hold a sliver of heat capacity into their fullest neighbour (explicit_merged:
+ * their 1/c increments left a FLIP pattern in the outer particles that did not
+ * converge, `heat_slab_surface_rows_converge`).
  * Latent heat (the scene's latent_heat, issue #18; Ding et al.'s eq. 9 has no
  * such term): the water evaporating through the air boundary takes
  * L = HEARTH_LATENT_HEAT per kg from the heat of the particle it leaves. The
@@ -507,6 +511,126 @@ hearth_status thermal_prepare(hearth_scene *s, hearth_error *err) {
     return HEARTH_OK;
 }
 
+/* ---- small nodes at the air surface (explicit heat with an oven) ----------
+ * A node just past the surface holds a sliver of heat capacity (the aligned
+ * slab's first air node: 1/32 of a full node, from the outer particles' weight
+ * tails), so its forward Euler increment (B - R) / c is some thirty times the
+ * rate of its neighbours, and in the opposite sign to the surface's heating
+ * (its row of the Galerkin Laplacian has the outer particles' full gradient
+ * over that sliver). FLIP (eq. 21) hands w_ip times that increment to the
+ * outer particles, and the particle pattern it leaves across the outer rows is
+ * one the grid's mass-weighted average barely sees, so nothing damps it: it
+ * grows with the heat taken in and does not shrink with dx (explicit slab,
+ * particle a quarter cell in: +0.019 at 20 and at 30 cells across L, its
+ * neighbours -0.040/-0.049 and +0.036/+0.045). This is the small cut-cell
+ * problem; the remedy is the cut-cell one, merging: a node with less than
+ * SMALL_NODE of the capacity of its fullest neighbour takes that neighbour's
+ * increment, and the neighbour takes both sources over both capacities, so
+ * heat is conserved to round-off. Rejected: a FLIP-PIC blend on the
+ * area-holding particles (the grid's one-sided average at the surface
+ * samples deeper material: PIC there pulls the outer rows cold, 0.014 at
+ * blend 0.01; 0.19 and heat lost at full PIC), depositing the Robin heat on
+ * the particles by area (the same pattern, 2.6 times larger), or at the
+ * surface points (its sign flips, the size stays). Only with an oven (the
+ * small nodes are found from boundary.c's volume fraction) and only for
+ * forward Euler; the implicit solve has no 1/c amplification. */
+#define SMALL_NODE 0.1
+
+/* Node gi's storage and local index (NULL past the grid or without storage). */
+static double *heat_node_at(const grid *g, const int gi[3], int *l) {
+    for (int d = 0; d < g->dim; d++)
+        if (gi[d] < 0 || gi[d] > g->nn[d] - 1) return NULL;
+    const int slot = g->slot[grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B)];
+    if (slot < 0) return NULL;
+    *l = g->dim == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
+                     : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
+    return grid_block(g, slot);
+}
+
+/* The node a small node gi (capacity c) merges into: its fullest neighbour
+ * (below), when c < SMALL_NODE of it, that neighbour is not small
+ * itself and neither is held. NULL otherwise. The axis neighbours come first,
+ * the diagonals only when none of them will do (six lookups, not 26, for most
+ * small nodes: the merge cost 6% of a 3D oven step with all 26), and a later
+ * one must be fuller by more than round-off: along an aligned
+ * face the three inner neighbours of an air node tie, and a tie broken by
+ * round-off sent neighbouring air nodes different ways (a ripple of 0.008 along
+ * the slab's face). */
+static double *merge_target(const hearth_scene *s, const int gi[3], double c, int *lj) {
+    const grid *g = &s->g;
+    const int D = g->dim, NPB = g->nodes_per_block;
+    double *best = NULL, cbest = 0;
+    for (int pass = 0; pass < 2 && !(best && c < SMALL_NODE * cbest); pass++) /* diagonals only when no axis neighbour will do */
+        for (int a = -1; a <= 1; a++)
+            for (int b = -1; b <= 1; b++)
+                for (int e = D == 3 ? -1 : 0; e <= (D == 3 ? 1 : 0); e++) {
+                    const int nz = (a != 0) + (b != 0) + (e != 0);
+                    if (!nz || (pass == 0) != (nz == 1)) continue;
+                    const int gj[3] = {gi[0] + a, gi[1] + b, gi[2] + e};
+                    int l;
+                    double *nj = heat_node_at(g, gj, &l);
+                    if (nj && nj[CH_HC * NPB + l] > cbest * (1.0 + 1e-9)) best = nj, cbest = nj[CH_HC * NPB + l], *lj = l;
+                }
+    if (!best || !(c < SMALL_NODE * cbest) || best[CH_CG_R * NPB + *lj] < SMALL_NODE) return NULL;
+    if (s->heat.nfix) {
+        const int kj = (int)((best - g->data) / ((ptrdiff_t)g->nch * NPB)) * NPB + *lj;
+        if (!isnan(s->heat.fix[kj])) return NULL;
+    }
+    return best;
+}
+
+/* Forward Euler with the small nodes merged (above). CH_CG_R holds the volume
+ * fraction phi from boundary.c (phi < SMALL_NODE marks a candidate: a full node
+ * has 1, a node on an aligned face 1/2); CH_CG_P is scratch: the capacity a
+ * node takes in, or -1 on a merged node. Serial over the blocks holding surface,
+ * in block order, so deterministic at any thread count. */
+static void explicit_merged(hearth_scene *s, double dt) {
+    grid *g = &s->g;
+    const int NPB = g->nodes_per_block;
+    const unsigned char *surf = s->boundary.blocks;
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
+    for (int k = 0; k < g->nactive; k++) memset(grid_block(g, k) + CH_CG_P * NPB, 0, sizeof(double) * (size_t)NPB);
+    for (int k = 0; k < g->nactive; k++) { /* each small node's source and capacity into its target */
+        if (!surf[k]) continue;
+        double *node = grid_block(g, k);
+        int bc[3];
+        grid_block_coords(g, g->active[k], bc);
+        for (int l = 0; l < NPB; l++) {
+            const double c = node[CH_HC * NPB + l];
+            if (!(c > 0) || !(node[CH_CG_R * NPB + l] < SMALL_NODE)) continue;
+            if (s->heat.nfix && !isnan(s->heat.fix[k * NPB + l])) continue;
+            int gi[3], lj;
+            grid_node_index(g, bc, l, gi);
+            double *nj = merge_target(s, gi, c, &lj);
+            if (!nj) continue;
+            nj[CH_B * NPB + lj] += node[CH_B * NPB + l] - node[CH_R * NPB + l];
+            nj[CH_CG_P * NPB + lj] += c;
+            node[CH_CG_P * NPB + l] = -1.0;
+        }
+    }
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
+    for (int k = 0; k < g->nactive; k++) {
+        double *node = grid_block(g, k);
+        for (int l = 0; l < NPB; l++) {
+            const double c = node[CH_HC * NPB + l], extra = node[CH_CG_P * NPB + l];
+            if (c > 0 && extra >= 0) node[CH_T * NPB + l] += dt * (node[CH_B * NPB + l] - node[CH_R * NPB + l]) / (c + extra);
+        }
+    }
+    for (int k = 0; k < g->nactive; k++) { /* a merged node takes its target's increment */
+        if (!surf[k]) continue;
+        double *node = grid_block(g, k);
+        int bc[3];
+        grid_block_coords(g, g->active[k], bc);
+        for (int l = 0; l < NPB; l++) {
+            if (node[CH_CG_P * NPB + l] != -1.0) continue;
+            int gi[3], lj;
+            grid_node_index(g, bc, l, gi);
+            const double *nj = merge_target(s, gi, node[CH_HC * NPB + l], &lj);
+            if (nj) node[CH_T * NPB + l] += nj[CH_T * NPB + lj] - nj[CH_T0 * NPB + lj]; /* the same lookup as above */
+        }
+    }
+}
+
 /* One heat-only pass of the operator (the CG's products). */
 static void apply(hearth_scene *s, int in, int out) {
     const transport_pass tp = {.heat_in = in, .heat_out = out, .heat_src = -1, .water = 0};
@@ -545,6 +669,11 @@ void thermal_finish(hearth_scene *s, double dt) {
     /* held nodes keep their temperature: no update, no unknown */
     clear_held(s, CH_R);
     clear_held(s, CH_B);
+    if (!s->def.heat_implicit && !isnan(s->def.oven_temperature) && s->def.oven_beta > 0) {
+        explicit_merged(s, dt); /* forward Euler, the surface's small nodes merged */
+        held_settle(s);
+        return;
+    }
     if (!s->def.heat_implicit) { /* forward Euler (gamma = 0) */
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int k = 0; k < g->nactive; k++) {
