@@ -672,6 +672,7 @@ void thermal_finish(hearth_scene *s, double dt) {
     if (!s->def.heat_implicit && !isnan(s->def.oven_temperature) && s->def.oven_beta > 0) {
         explicit_merged(s, dt); /* forward Euler, the surface's small nodes merged */
         held_settle(s);
+        oven_ledger(s, dt);
         return;
     }
     if (!s->def.heat_implicit) { /* forward Euler (gamma = 0) */
