@@ -65,7 +65,7 @@ static strip make_strip(double a, int cells, int rows, const char *const *names,
     d.lo[0] = -a - 6 * dx;
     d.hi[0] = a + 6 * dx;
     d.lo[1] = 0;
-    d.hi[1] = 12 * dx;
+    d.hi[1] = (rows + 6) * dx;
     st.s = fx_scene_def(&d);
     hearth_error err;
     const int m = hearth_scene_add_material(st.s, "elastic", names, values, n, &err);
@@ -76,9 +76,9 @@ static strip make_strip(double a, int cells, int rows, const char *const *names,
      * boundary node rows, each carrying dx of surface, exactly the strip's
      * height. (Without them the faces' ends gain or lose about a node row of
      * surface, 1/6 of this strip's: see boundary.c.) */
-    const double c[3] = {0, 6 * dx, 0}, h[3] = {a, 0.5 * rows * dx, 0};
+    const double yc = (0.5 * rows + 3) * dx, c[3] = {0, yc, 0}, h[3] = {a, 0.5 * rows * dx, 0};
     for (int side = -1; side <= 1; side += 2) {
-        const double p[3] = {0, 6 * dx + side * 0.5 * rows * dx + 0.1 * dx, 0}, nrm[3] = {0, -side, 0};
+        const double p[3] = {0, yc + side * (0.5 * rows * dx + 0.1 * dx), 0}, nrm[3] = {0, -side, 0};
         hearth_collider_def cd = hearth_default_collider_def();
         cd.shape = hearth_shape_plane(p, nrm);
         hearth_error e2;
@@ -143,13 +143,14 @@ typedef enum { SHEET_HELD, SHEET_COLLIDER_ROBIN, SHEET_OVEN_ROBIN } sheet_bc;
 #define SHEET_S 0.5001
 
 /* Relative error of the exchanged fraction against Crank's at each Fo[k]
- * (the largest returned), the sheet `cells` cells across half its thickness. */
-static double sheet_error(sheet_bc bc, int cells, double L, const double *Fo, int nt) {
+ * (the largest returned), the sheet `cells` cells across half its thickness
+ * and `rows` cells high. */
+static double sheet_error(sheet_bc bc, int cells, int rows, double L, const double *Fo, int nt) {
     const double a = 0.01, D = 1e-6, th = 20 + KELVIN, rho0 = 1000, alpha = L * D / a;
     const double K = D / (th * 0.5 * (SHEET_S0 + SHEET_S));
     const char *nm[] = {"E", "density", "water_diffusivity", "evaporation"};
     const double nv[] = {1e3, 1000, K, bc == SHEET_OVEN_ROBIN ? alpha * rho0 / th : 0};
-    strip st = make_strip(a, cells, 6, nm, nv, bc == SHEET_OVEN_ROBIN ? 4 : 3, SHEET_S0);
+    strip st = make_strip(a, cells, rows, nm, nv, bc == SHEET_OVEN_ROBIN ? 4 : 3, SHEET_S0);
     hearth_scene *s = st.s;
     hearth_error err;
     if (bc == SHEET_OVEN_ROBIN) s->def.oven_saturation = SHEET_S; /* the scene's def: what h.scene{oven = ...} sets */
@@ -167,7 +168,7 @@ static double sheet_error(sheet_bc bc, int cells, double L, const double *Fo, in
     hearth_scene_stats(s, &sts);
     const double W0 = sts.water_mass, Winf = SHEET_S / SHEET_S0 * W0;
     double worst = 0;
-    printf("  %2d cells:", cells);
+    printf("  %2d cells, %2d rows:", cells, rows);
     for (int k = 0; k < nt; k++) {
         CHECK(hearth_scene_advance(s, Fo[k] * a * a / D, &err) == HEARTH_OK);
         hearth_scene_stats(s, &sts);
@@ -181,10 +182,11 @@ static double sheet_error(sheet_bc bc, int cells, double L, const double *Fo, in
     return worst;
 }
 
-/* The ladder's cells across a: 10, 20, 40, or WATER_LADDER="10 20 40 80"
- * (scripts/validation/water_ladder.sh runs longer ones). Returns the count. */
-static int ladder_cells(int cells[8]) {
-    int n = 3;
+/* The ladder's cells across a: the first `levels` of 10, 20, 40, or
+ * WATER_LADDER="10 20 40 80" (scripts/validation/water_ladder.sh runs longer
+ * ones). Returns the count. */
+static int ladder_cells(int cells[8], int levels) {
+    int n = levels;
     cells[0] = 10, cells[1] = 20, cells[2] = 40;
     const char *env = getenv("WATER_LADDER");
     if (env) {
@@ -199,14 +201,16 @@ static int ladder_cells(int cells[8]) {
 }
 
 /* The ladder: errors at each level and the observed orders between them;
- * returns the order between the last two levels, *finest the last error. */
-static double sheet_ladder(sheet_bc bc, double L, double *finest) {
+ * returns the order between the last two levels, *finest the last error.
+ * The strip is `rows` cells high at every level, or with rows = 0 0.6 a high
+ * (its rows refined with its thickness). */
+static double sheet_ladder(sheet_bc bc, double L, int rows, int levels, double *finest) {
     int cells[8];
-    const int n = ladder_cells(cells);
+    const int n = ladder_cells(cells, levels);
     CHECK(n >= 2);
     const double Fo[] = {0.05, 0.2};
     double e[8], order = 0;
-    for (int k = 0; k < n; k++) e[k] = sheet_error(bc, cells[k], L, Fo, 2);
+    for (int k = 0; k < n; k++) e[k] = sheet_error(bc, cells[k], rows > 0 ? rows : (int)lround(0.6 * cells[k]), L, Fo, 2);
     printf("  largest relative errors");
     for (int k = 0; k < n; k++) printf(" %.3e", e[k]);
     printf("; observed orders");
@@ -223,7 +227,7 @@ static double sheet_ladder(sheet_bc bc, double L, double *finest) {
  * first and second order (docs/validation.md). */
 TEST(water_sheet_fixed_surface_converges) {
     double fine;
-    const double order = sheet_ladder(SHEET_HELD, 0, &fine);
+    const double order = sheet_ladder(SHEET_HELD, 0, 6, 3, &fine);
     CHECK(order >= 1.2);
     CHECK(fine < 0.005);
 }
@@ -231,17 +235,41 @@ TEST(water_sheet_fixed_surface_converges) {
 TEST(water_sheet_robin_converges) {
     double fine;
     printf(" wet colliders, beta_water = rho0 alpha, L = 1:\n");
-    const double oc = sheet_ladder(SHEET_COLLIDER_ROBIN, 1.0, &fine); /* 1.8%, 0.32%, 0.043%: orders 2.46, 2.91 */
+    const double oc = sheet_ladder(SHEET_COLLIDER_ROBIN, 1.0, 6, 3, &fine); /* 1.8%, 0.32%, 0.043%: orders 2.46, 2.91 */
     CHECK(oc >= 1.8);
     CHECK(fine < 1e-3);
-    /* The oven's evaporation takes the particle's own saturation and hands it
-     * to the particle's nodes (as the heat Robin term does its temperature),
-     * not the face's: just under first order (6.9%, 3.7%, 1.9%; 0.90, 0.96).
-     * Its surface has no distance or foot to extrapolate to (boundary.c). */
-    printf(" humid oven, evaporation toward oven.saturation, L = 1:\n");
-    const double oo = sheet_ladder(SHEET_OVEN_ROBIN, 1.0, &fine);
-    CHECK(oo >= 0.85);
-    CHECK(fine < 0.025);
+}
+
+/* The same Robin exchange through the air toward a humid oven (evaporation
+ * toward oven.saturation, L = 1). The grid samples a surface particle's
+ * saturation at a depth d below the surface (boundary.c), and the exchange
+ * now goes through the layer between (water_surface_excess, water.h).
+ * Before, it took that sample as the surface's: the flux was overstated by
+ * 1 + L d / a and the ladder first order (+6.9%, +3.7%, +1.9%, +0.95% at 10,
+ * 20, 40, 80 cells, 6 rows; orders 0.90, 0.96, 0.99; on the strip below
+ * +6.9%, +3.6%, +1.8%, orders 0.92, 0.98). Now +0.80%, +0.23%, +0.060%
+ * (orders 1.77, 1.96).
+ *
+ * The strip is 0.6 a high here, not 6 rows at every level: beside the tray
+ * and the lid a particle's volume fraction misses the collider's side, so
+ * its sample depth reads short (0.36 dx rather than 0.55 at the outer row
+ * next to them) and its flux is under-corrected. Over two cells of each
+ * face that is an O(dx) error on an O(dx / height) share of the surface:
+ * second order on a body of fixed size, but first order on a strip whose
+ * height shrinks with dx (6 rows: +0.80%, +0.52%, +0.30%, +0.16%).
+ * WATER_OVEN_ROWS=6 runs that ladder (scripts/validation/water_ladder.sh)
+ * and then does not check the order. */
+TEST(water_humid_oven_converges) {
+    double fine;
+    const char *env = getenv("WATER_OVEN_ROWS");
+    const int rows = env ? atoi(env) : 0;
+    printf(" humid oven, evaporation toward oven.saturation, L = 1, the strip %s:\n", rows > 0 ? "of fixed rows" : "0.6 a high");
+    const double order = sheet_ladder(SHEET_OVEN_ROBIN, 1.0, rows, 3, &fine); /* 2.2 s on one thread */
+    if (rows > 0) return; /* the contact corners' share is fixed: for the docs, not a convergence claim */
+    printf("  observed order between the last two levels %.2f (at least 1.5 checked), finest error %.2e (below 1e-3 checked)\n", order,
+           fine);
+    CHECK(order >= 1.5);
+    CHECK(fine < 1e-3);
 }
 
 /* The same held and Robin sheets in 3D (the held nodes' extension and the
@@ -290,7 +318,7 @@ static double sheet3d_error(int robin) {
 TEST(water_sheet_3d_matches_2d) {
     const double Fo[] = {0.2};
     for (int robin = 0; robin <= 1; robin++) {
-        const double e2 = sheet_error(robin ? SHEET_COLLIDER_ROBIN : SHEET_HELD, 10, 1.0, Fo, 1), e3 = sheet3d_error(robin);
+        const double e2 = sheet_error(robin ? SHEET_COLLIDER_ROBIN : SHEET_HELD, 10, 6, 1.0, Fo, 1), e3 = sheet3d_error(robin);
         /* the 2D sheet's errors at Fo = 0.2, 10 cells: held 0.99%, Robin 0.51% (sheet_error gives |error|);
          * 3D solves the same 1D problem: held 1.07%, Robin 0.47% */
         CHECK(fabs(fabs(e3) - e2) < 2e-3);
@@ -339,16 +367,28 @@ static void drying_fd(int N, double a, double Kth, double bth, double rho0, doub
     free(s), free(sn), free(lo), free(di), free(up), free(rhs);
 }
 
-/* Full drying through the evaporation boundary against the 1D solution. */
-TEST(water_drying_vs_fd) {
-    const double a = 0.01, th = 20 + KELVIN, Kth = 1e-6, rho0 = 1000, s0 = 0.8, bth = 0.5 * rho0 * Kth / a;
+/* Drying through the evaporation boundary (toward s = 0): the strip |x| < a,
+ * `cells` across a and `rows` high, beta^w theta = L rho_0 K theta / a.
+ * drying_reference fills fd with the 1D solution's remaining fraction at t =
+ * 25, 75, 150 s (a few seconds: 30000 implicit steps on 2000 cells);
+ * drying_error prints the strip's against it and returns the largest
+ * relative difference. */
+#define DRY_A 0.01
+#define DRY_KTH 1e-6
+#define DRY_S0 0.8
+static const double dry_times[3] = {25, 75, 150};
+
+static void drying_reference(double L, double fd[3]) {
+    drying_fd(2000, DRY_A, DRY_KTH, L * 1000 * DRY_KTH / DRY_A, 1000, DRY_S0, dry_times, 3, fd);
+}
+
+static double drying_error(double L, int cells, int rows, const double fd[3]) {
+    const double a = DRY_A, th = 20 + KELVIN, Kth = DRY_KTH, rho0 = 1000, bth = L * rho0 * Kth / a;
     const char *nm[] = {"E", "density", "water_diffusivity", "evaporation"};
     const double nv[] = {1e3, 1000, Kth / th, bth / th};
-    strip st = make_strip(a, 40, 6, nm, nv, 4, s0);
+    strip st = make_strip(a, cells, rows, nm, nv, 4, DRY_S0);
     hearth_scene *s = st.s;
-    const double times[3] = {25, 75, 150};
-    double fd[3];
-    drying_fd(2000, a, Kth, bth, rho0, s0, times, 3, fd);
+    const double *times = dry_times;
     hearth_stats sts;
     hearth_scene_stats(s, &sts);
     const double W0 = sts.water_mass;
@@ -364,10 +404,46 @@ TEST(water_drying_vs_fd) {
         /* what left is what the boundary took: the books balance */
         CHECK_NEAR(sts.water_mass + sts.water_lost, W0, 1e-12 * W0);
     }
-    printf("  %d particles, %ld steps; worst relative difference %.3g\n", sts.particles, sts.step, worst);
+    printf("  L = %g, %d cells, %d rows, %d particles, %ld steps; worst relative difference %.3g\n", L, cells, rows, sts.particles,
+           sts.step, worst);
+    hearth_scene_destroy(s);
+    return worst;
+}
+
+/* Full drying, L = 0.5, 40 cells, 6 rows. 0.00958 before the evaporation went
+ * through the sample's depth (water_surface_excess), 0.00141 since. */
+TEST(water_drying_vs_fd) {
+    double fd[3];
+    drying_reference(0.5, fd);
+    const double worst = drying_error(0.5, 40, 6, fd);
     CHECK(fd[2] < 0.7); /* the test dries the sheet substantially */
     CHECK(worst < 0.02);
-    hearth_scene_destroy(s);
+}
+
+/* Fast drying, L = 5: the surface dries out and the exchange is limited by
+ * what diffusion (D = K theta s, small where it is dry) brings through the
+ * layer between the sample and the surface, which the quadratic in
+ * water_surface_excess (s^2/2 linear across the layer) carries. The strip is
+ * 0.6 a high, as in water_humid_oven_converges. Largest differences at 10, 20
+ * cells: without the depth 24%, 11%; with the coefficient beta^w theta / (1 +
+ * a / s_d), linear in s, 8.0%, 3.0%; with the quadratic 2.9%, 0.65%. */
+TEST(water_drying_fast_vs_fd) {
+    double fd[3], e[8];
+    int cells[8];
+    const int n = ladder_cells(cells, 2); /* 10, 20; the script adds 40 (0.41%) */
+    CHECK(n >= 2);
+    drying_reference(5.0, fd);
+    for (int k = 0; k < n; k++) e[k] = drying_error(5.0, cells[k], (int)lround(0.6 * cells[k]), fd);
+    printf("  largest relative differences");
+    for (int k = 0; k < n; k++) printf(" %.3e", e[k]);
+    printf("; observed orders");
+    for (int k = 1; k < n; k++) printf(" %.2f", log(e[k - 1] / e[k]) / log((double)cells[k] / cells[k - 1]));
+    const double order = log(e[0] / e[1]) / log((double)cells[1] / cells[0]);
+    printf("\n  first order %.2f (at least 1 checked); finest %.3g (below 0.01 checked), each level below the last\n", order, e[n - 1]);
+    CHECK(fd[2] < 0.4); /* most of the water leaves */
+    CHECK(order >= 1.0);
+    for (int k = 1; k < n; k++) CHECK(e[k] < e[k - 1]);
+    CHECK(e[n - 1] < 0.01);
 }
 
 /* Bulk diffusion: a sine mode between insulated faces decays as
@@ -405,7 +481,7 @@ static double mode_error(int cells) {
  * heat's: 9.7e-3, 2.4e-3, 6.1e-4. */
 TEST(water_interior_mode_second_order) {
     int cells[8];
-    const int n = ladder_cells(cells);
+    const int n = ladder_cells(cells, 3);
     CHECK(n >= 2);
     double e[8], lowest = 9;
     for (int k = 0; k < n; k++) e[k] = mode_error(cells[k]);
@@ -463,10 +539,17 @@ TEST(water_conservation) {
     hearth_scene_destroy(s);
 }
 
-/* Fierce evaporation: saturation stops at the documented floor, never at 0 or NaN. */
+/* Fierce evaporation: saturation stops at the documented floor, never at 0 or NaN.
+ * The material has no diffusivity, so each surface particle dries at the
+ * full beta^w theta s of its own area. With diffusion (K = 1e-6, as this test
+ * had) the exchange now goes through the layer between the grid's sample and
+ * the surface and is limited by what diffusion brings to a drying surface
+ * (water_surface_excess): after these steps the driest particle holds 0.0222
+ * (it reached the floor when the sample was taken for the surface), so the
+ * floor would not be reached. */
 TEST(water_saturation_floor) {
     const char *nm[] = {"E", "density", "water_diffusivity", "evaporation"};
-    const double nv[] = {1e3, 1000, 1e-6, 10};
+    const double nv[] = {1e3, 1000, 0, 10};
     strip st = make_strip(0.005, 10, 6, nm, nv, 4, 0.3);
     hearth_error err;
     CHECK(hearth_scene_step(st.s, 4000, &err) == HEARTH_OK);
@@ -651,6 +734,6 @@ TEST(water_checkpoint_restore) {
 }
 
 TEST_MAIN(T(water_crank_reference), T(water_crank_small_contrast), T(water_sheet_fixed_surface_converges),
-          T(water_sheet_robin_converges), T(water_sheet_3d_matches_2d), T(water_drying_vs_fd), T(water_interior_mode_second_order), T(water_conservation),
+          T(water_sheet_robin_converges), T(water_humid_oven_converges), T(water_sheet_3d_matches_2d), T(water_drying_vs_fd), T(water_drying_fast_vs_fd), T(water_interior_mode_second_order), T(water_conservation),
           T(water_saturation_floor), T(water_drying_shrinks), T(water_momentum_switch), T(water_probe_fields),
           T(water_bad_input), T(water_checkpoint_restore))

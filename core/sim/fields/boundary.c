@@ -31,9 +31,10 @@
  * not air. A face ending on a collider keeps its full length, since the
  * tangential gradient's integral across the ramp is the face's extent.
  *
- * With an oven, each particle holding area also gets the depth of its
- * temperature sample below the surface (sample_depth, below), which thermal.c
- * divides out of the Robin flux.
+ * With an oven or evaporation, each particle holding area also gets the depth
+ * of its temperature and saturation sample below the surface (sample_depth,
+ * below), which thermal.c divides out of the Robin flux and transport.c out of
+ * the evaporation.
  *
  * Cost: the node volumes come from P2G, one more tile channel when heat or
  * water is live (a separate scatter pass cost more: issue #17's follow-up);
@@ -215,7 +216,7 @@ static inline double sample_depth(double phi) {
 }
 
 /* Each particle's area m_p sum_i w_ip r_i from CH_CG_P, one particle block at
- * a time, and with an oven the depth of its temperature sample from the volume
+ * a time, and with an oven or evaporation the depth of its sample from the volume
  * fraction phi in CH_CG_R. Only blocks whose tile holds area are gathered: the
  * interior of a large body is skipped. */
 static void area_gather(hearth_scene *s, int k, int want_depth) {
@@ -299,8 +300,13 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
         for (int i = 0; i < n; i++) flags[i] &= ~PF_BOUNDARY;
     if (!boundary_needed(s)) return HEARTH_OK;
     const mpm_state *m = mpm_state_of(s); /* the sort's particle blocks */
-    /* the depth of the temperature samples only serves the oven's Robin term */
-    const int want_depth = !isnan(s->def.oven_temperature) && s->def.oven_beta > 0 && (ps->enabled & (1u << PC_TEMPERATURE));
+    /* the depth of the samples serves the oven's Robin term and evaporation
+     * (transport.c: the node saturation averages by capacity, rho_0^w V, as the
+     * temperature does by heat capacity, so a uniform material's samples lie at
+     * the same depth) */
+    int want_depth = !isnan(s->def.oven_temperature) && s->def.oven_beta > 0 && (ps->enabled & (1u << PC_TEMPERATURE));
+    for (int q = 0; q < s->mats.n && !want_depth; q++)
+        want_depth = s->mats.slot[q].core[CP_EVAPORATION] > 0 && (ps->enabled & (1u << PC_WATER));
 
     /* 1. P2G left the node volumes sum_p w_ip J V_0 in CH_CG_R (mpm.c: the
      * scatter rides along with the mass); from them the volume fraction phi, kept

@@ -11,10 +11,11 @@
  *         src_i += sum_p w_ip (S_p beta_p theta_out,p - V0 c lambda theta_abs,p div v_p - L e_p),
  *         e_p the particle's evaporation (kg/s) when the scene's latent_heat is on,
  *         x the input channel: node temperature, or the CG direction.
- * Water:  dm_i += dt sum_p V_p q_p . grad w_ip - dt sum_p w_ip beta^w theta_p (s_p - s_amb) S_p,
+ * Water:  dm_i += dt sum_p V_p q_p . grad w_ip - dt sum_p w_ip beta^w theta_p (s_surface,p - s_amb) S_p,
  *         q_p = -K theta rho_0^w s_p grad s (eq. 22), and with water_momentum the
  *         relative water momentum of eq. 26-27 (see water.c); s_amb the oven's
- *         ambient saturation. Wet colliders' faces: water_face_flux, after this pass.
+ *         ambient saturation; s_surface,p from the grid's s_p at the particle and
+ *         the depth of that sample (water_surface_excess). Wet colliders' faces: water_face_flux, after this pass.
  * The conduction and Fick terms use the B-spline gradients, whose columns sum
  * to zero, so neither creates heat or water.
  *
@@ -140,7 +141,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     const double *V = WATER ? pcold(ps, PC_V) : NULL, *W = WATER ? pcold(ps, PC_WATER) : NULL;
     double *Q = mom ? pcold(ps, PC_QW) : NULL; /* kept only for the momentum coupling */
-    const double *area = s->boundary.area, dt = tp->dt, s_amb = s->def.oven_saturation;
+    const double *area = s->boundary.area, *depth = s->boundary.depth, dt = tp->dt, s_amb = s->def.oven_saturation;
     const int *mat = pcoli(ps, PC_MAT), *flags = pcoli(ps, PC_FLAGS); /* live with heat and with water */
     for (int i = pb.start; i < pb.end; i++) {
         int base[3] = {0, 0, 0};
@@ -180,9 +181,13 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
             for (int d = 0; d < 3; d++) qn[d] = kq * gs[d];
             /* evaporation from the saturation the grid sees at the particle, as the
              * heat Robin term uses the interpolated temperature, toward the oven's
-             * ambient saturation (our extension: Ding et al. §3.2 dry into s = 0) */
+             * ambient saturation (our extension: Ding et al. §3.2 dry into s = 0),
+             * through the layer between the sample's depth and the surface
+             * (water_surface_excess, water.h) */
             if (bnd && area && area[i] > 0) {
-                evap = ms->core[CP_EVAPORATION] * th * (si - s_amb) * area[i]; /* kg/s */
+                const double bw = ms->core[CP_EVAPORATION], K = ms->core[CP_WATER_DIFFUSIVITY];
+                const double lay = K > 0 ? bw * depth[i] / (rho0 * K) : 0.0; /* d beta^w / (rho_0^w K) */
+                evap = bw * th * water_surface_excess(si, s_amb, lay) * area[i]; /* kg/s */
                 /* latent heat (the scene's latent_heat; beyond Ding et al. eq. 9): the
                  * evaporated water leaves with L per kg from this particle's heat, on
                  * the same weights w_ip as the water, so the heat the nodes lose is L

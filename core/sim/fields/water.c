@@ -19,7 +19,10 @@
  * is evaluated from the current node saturations (eq. 22) and gives the node
  * mass change (eq. 25):
  *
- *   dm_i = dt sum_p V_p q_p . grad w_ip - dt sum_(p in boundary) beta theta_p s_p S_p w_ip.
+ *   dm_i = dt sum_p V_p q_p . grad w_ip - dt sum_(p in boundary) beta theta_p (s_surface,p - s_amb) S_p w_ip,
+ *
+ * s_surface,p the surface's saturation behind the grid's sample s_p at the
+ * particle, which lies a depth d_p inside (water_surface_excess, water.h).
  *
  * Since sum_i grad w_ip = 0 the flux term moves water without creating any;
  * each node's change then goes to its particles in proportion to
