@@ -119,7 +119,7 @@ static double wet_bulb(double s) {
 }
 
 typedef struct history {
-    double t[64], top_T[64], top_s[64], centre_T[64], centre_s[64];
+    double t[64], top_T[64], top_s[64], surf_s[64], centre_T[64], centre_s[64];
     int n;
 } history;
 
@@ -135,6 +135,12 @@ static void bake(double dx, int latent, double every, int n, history *hst) {
         hst->t[hst->n] = hearth_scene_time(b.s);
         hst->top_T[hst->n] = T[b.top];
         hst->top_s[hst->n] = water_saturation(b.s, b.top);
+        /* the saturation at the surface itself, where (1) holds: the top particle
+         * samples it a depth d below, and evaporation goes through that layer
+         * (water_surface_excess, water.h; the air is dry) */
+        const material_slot *ms = &b.s->mats.slot[pcoli(&b.s->ps, PC_MAT)[b.top]];
+        const double lay = BETA_W * b.s->boundary.depth[b.top] / (ms->core[CP_WATER_DENSITY] * WET_K);
+        hst->surf_s[hst->n] = water_surface_excess(hst->top_s[hst->n], 0.0, lay);
         hst->centre_T[hst->n] = T[b.centre];
         hst->centre_s[hst->n] = water_saturation(b.s, b.centre);
         hst->n++;
@@ -173,7 +179,7 @@ TEST(latent_heat_wet_plateau) {
                 off_over = fmax(off_over, off.top_T[k] - wet_bulb(off.top_s[k]));
                 plateau++;
             }
-            over = fmax(over, on.top_T[k] - wet_bulb(on.top_s[k]));
+            over = fmax(over, on.top_T[k] - wet_bulb(on.surf_s[k]));
         }
         const double last = on.top_T[on.n - 1];
         printf("  wet (s > 0.6) from 500 s to %.0f s: top at most %.1f degC with latent heat, %.1f degC without at %.0f s "
