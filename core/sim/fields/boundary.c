@@ -92,18 +92,6 @@ static hearth_status ensure_area(hearth_scene *s, hearth_error *err) {
     return HEARTH_OK;
 }
 
-/* Node (gi) of the grid: its block's storage and local index, or NULL when
- * the node lies past the grid or in a block without storage (empty air). */
-static double *node_at(const grid *g, const int gi[3], int *l) {
-    for (int d = 0; d < g->dim; d++)
-        if (gi[d] < 0 || gi[d] > g->nn[d] - 1) return NULL;
-    const int slot = g->slot[grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B)];
-    if (slot < 0) return NULL;
-    *l = g->dim == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
-                     : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
-    return grid_block(g, slot);
-}
-
 /* The storage of the 3^dim blocks around block bc, the block itself among
  * them, indexed ((a+1) 3 + b+1) 3 + c+1 for the offset (a, b, c) (no c in
  * 2D); NULL past the grid or where a block has no storage. Looked up once a
@@ -151,7 +139,7 @@ static inline const double *node_off(const grid *g, const double *node, const do
 /* Channel ch of node gi, 0 where the node has no storage (and past the grid). */
 static double node_value(const grid *g, const int gi[3], int ch) {
     int l;
-    const double *node = node_at(g, gi, &l);
+    const double *node = grid_node_at(g, gi, &l);
     return node ? node[ch * g->nodes_per_block + l] : 0.0;
 }
 

@@ -536,17 +536,6 @@ hearth_status thermal_prepare(hearth_scene *s, hearth_error *err) {
  * forward Euler; the implicit solve has no 1/c amplification. */
 #define SMALL_NODE 0.1
 
-/* Node gi's storage and local index (NULL past the grid or without storage). */
-static double *heat_node_at(const grid *g, const int gi[3], int *l) {
-    for (int d = 0; d < g->dim; d++)
-        if (gi[d] < 0 || gi[d] > g->nn[d] - 1) return NULL;
-    const int slot = g->slot[grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B)];
-    if (slot < 0) return NULL;
-    *l = g->dim == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
-                     : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
-    return grid_block(g, slot);
-}
-
 /* The node a small node gi (capacity c) merges into: its fullest neighbour
  * (below), when c < SMALL_NODE of it, that neighbour is not small
  * itself and neither is held. NULL otherwise. The axis neighbours come first,
@@ -568,7 +557,7 @@ static double *merge_target(const hearth_scene *s, const int gi[3], double c, in
                     if (!nz || (pass == 0) != (nz == 1)) continue;
                     const int gj[3] = {gi[0] + a, gi[1] + b, gi[2] + e};
                     int l;
-                    double *nj = heat_node_at(g, gj, &l);
+                    double *nj = grid_node_at(g, gj, &l);
                     if (nj && nj[CH_HC * NPB + l] > cbest * (1.0 + 1e-9)) best = nj, cbest = nj[CH_HC * NPB + l], *lj = l;
                 }
     if (!best || !(c < SMALL_NODE * cbest) || best[CH_CG_R * NPB + *lj] < SMALL_NODE) return NULL;

@@ -172,18 +172,6 @@ double water_total(const hearth_scene *s) {
  * evaporation (eq. 22, 25) into CH_DMW in one pass with heat; G2P hands each
  * particle its share (water_take); water_finish sums the step's losses. */
 
-/* The node at global index gi: its storage and local index, NULL past the
- * grid or in a block without storage. */
-static double *node_at(const grid *g, const int gi[3], int *l) {
-    for (int d = 0; d < g->dim; d++)
-        if (gi[d] < 0 || gi[d] > g->nn[d] - 1) return NULL;
-    const int slot = g->slot[grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B)];
-    if (slot < 0) return NULL;
-    *l = g->dim == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
-                     : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
-    return grid_block(g, slot);
-}
-
 /* The holding wet collider (saturation, no beta_water) whose face is nearest
  * x, if x lies within dx/2 outside it or inside it: its signed distance in *phi
  * and its outward normal in n. NULL otherwise. */
@@ -232,7 +220,7 @@ static double held_value(const hearth_scene *s, const double xi[3], double phi, 
             for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
                 const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
                 int l;
-                const double *node = node_at(g, gi, &l);
+                const double *node = grid_node_at(g, gi, &l);
                 if (!node) return S;
                 double xj[3] = {0, 0, 0}, pj, nj[3];
                 for (int d = 0; d < D; d++) xj[d] = g->lo[d] + gi[d] * dx;
@@ -341,7 +329,7 @@ void water_face_flux(hearth_scene *s, double dt) {
                 for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
                     const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
                     int l;
-                    const double *node = node_at(g, gi, &l);
+                    const double *node = grid_node_at(g, gi, &l);
                     if (!node) continue;
                     const double wz = D == 3 ? w[2][c] : 1.0, sv = node[CH_SW * NPB + l];
                     si += sv * w[0][a] * w[1][b] * wz;
@@ -368,7 +356,7 @@ void water_face_flux(hearth_scene *s, double dt) {
                 for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
                     const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
                     int l;
-                    double *node = node_at(g, gi, &l);
+                    double *node = grid_node_at(g, gi, &l);
                     if (node) node[CH_DMW * NPB + l] += dm * w[0][a] * w[1][b] * (D == 3 ? w[2][c] : 1.0);
                 }
     }
@@ -426,7 +414,7 @@ static double held_particles(hearth_scene *s, double *dmax, double *emax) {
                 for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
                     const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
                     int l;
-                    const double *node = node_at(g, gi, &l);
+                    const double *node = grid_node_at(g, gi, &l);
                     if (!node) continue;
                     const double cw = node[CH_MW * NPB + l], ds = cw > 0 ? node[CH_DMW * NPB + l] / cw : 0.0;
                     sat += w[0][a] * w[1][b] * w[2][c] * (node[CH_SW * NPB + l] + ds);

@@ -87,6 +87,18 @@ static inline void grid_node_index(const grid *g, const int bc[3], int l, int gi
     }
 }
 
+/// Node gi (global grid coordinates): its block's storage and, in *l, its local
+/// index; NULL past the grid or in a block without storage (empty air).
+static inline double *grid_node_at(const grid *g, const int gi[3], int *l) {
+    for (int d = 0; d < g->dim; d++)
+        if (gi[d] < 0 || gi[d] > g->nn[d] - 1) return NULL;
+    const int slot = g->slot[grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, gi[2] / GRID_B)];
+    if (slot < 0) return NULL;
+    *l = g->dim == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B
+                     : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
+    return grid_block(g, slot);
+}
+
 /* A particle block's tile: the block and its +1 neighbours, GRID_T nodes per
  * axis from the block's origin node (as P2G gathers and scatters). */
 /// Nodes in a tile (GRID_T^dim).
