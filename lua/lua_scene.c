@@ -509,19 +509,8 @@ static int l_gravity(lua_State *L) {
         if (hearth_scene_set_gravity(u->s, g, &err)) return hl_raise(L, &err);
         return 0;
     }
-    hl_motion *m = lua_newuserdatauv(L, sizeof *m, 0);
-    memset(m, 0, sizeof *m);
-    m->L = L;
-    m->vref = m->oref = LUA_NOREF;
-    if (luaL_newmetatable(L, "hearth.motion")) {
-        lua_pushcfunction(L, l_motion_gc);
-        lua_setfield(L, -2, "__gc");
-    }
-    lua_setmetatable(L, -2);
-    lua_pushvalue(L, 2);
-    m->vref = luaL_ref(L, LUA_REGISTRYINDEX);
     /* kept in the scene's motions list: alive while the scene is, and checked after each step */
-    keep_motion(L);
+    hl_motion *m = new_motion(L, 2, 0, NULL);
     hearth_scene_set_gravity_fn(u->s, gravity_cb, m);
     return 0;
 }
@@ -571,18 +560,7 @@ static int l_body_force(lua_State *L) {
         return 0;
     }
     luaL_checktype(L, 2, LUA_TFUNCTION);
-    hl_motion *m = lua_newuserdatauv(L, sizeof *m, 0);
-    memset(m, 0, sizeof *m);
-    m->L = L;
-    m->vref = m->oref = LUA_NOREF;
-    if (luaL_newmetatable(L, "hearth.motion")) {
-        lua_pushcfunction(L, l_motion_gc);
-        lua_setfield(L, -2, "__gc");
-    }
-    lua_setmetatable(L, -2);
-    lua_pushvalue(L, 2);
-    m->vref = luaL_ref(L, LUA_REGISTRYINDEX);
-    keep_motion(L); /* alive while the scene is, and checked after each step */
+    hl_motion *m = new_motion(L, 2, 0, NULL); /* alive while the scene is, and checked after each step */
     hearth_scene_set_body_force_serial(u->s, body_force_cb, m);
     return 0;
 }
