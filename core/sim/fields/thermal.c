@@ -226,14 +226,11 @@ static hearth_status find_boundary(hearth_scene *s) {
  * Returns the count. gw may be NULL. */
 static int contact_stencil(const grid *g, const double x[3], double *node[27], int l[27], double w[27], double (*gw)[3]) {
     const int D = g->dim, NPB = g->nodes_per_block;
-    double wd[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
-    int base[3] = {0, 0, 0};
-    for (int d = 0; d < D; d++) {
-        const double Xd = (x[d] - g->lo[d]) * g->inv_dx;
-        base[d] = (int)floor(Xd - 0.5);
-        bspline_weights(Xd - base[d], wd[d], dw[d]);
+    double wd[3][3], dw[3][3];
+    int base[3];
+    grid_point_weights(g, x, base, wd, dw);
+    for (int d = 0; d < D; d++)
         for (int k = 0; k < 3; k++) dw[d][k] *= g->inv_dx;
-    }
     int m = 0;
     double wsum = 0;
     for (int a = 0; a < 3; a++)

@@ -207,13 +207,9 @@ static double held_value(const hearth_scene *s, const double xi[3], double phi, 
     const double dx = g->dx, h = 2.0 * dx;
     double xm[3] = {0, 0, 0};
     for (int d = 0; d < D; d++) xm[d] = xi[d] + (h - phi) * n[d];
-    int base[3] = {0, 0, 0};
-    double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
-    for (int d = 0; d < D; d++) {
-        const double Xd = (xm[d] - g->lo[d]) * g->inv_dx;
-        base[d] = (int)floor(Xd - 0.5);
-        bspline_weights(Xd - base[d], w[d], dw);
-    }
+    int base[3];
+    double w[3][3], dw[3][3];
+    grid_point_weights(g, xm, base, w, dw);
     double sm = 0;
     for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++)
@@ -316,13 +312,9 @@ void water_face_flux(hearth_scene *s, double dt) {
         }
         if (!col) continue;
         /* n . grad s at the particle, from the node saturations (held ones included) */
-        int base[3] = {0, 0, 0};
-        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
-        for (int d = 0; d < D; d++) {
-            const double Xd = (x[d] - g->lo[d]) * g->inv_dx;
-            base[d] = (int)floor(Xd - 0.5);
-            bspline_weights(Xd - base[d], w[d], dw[d]);
-        }
+        int base[3];
+        double w[3][3], dw[3][3];
+        grid_point_weights(g, x, base, w, dw);
         double gn = 0, si = 0;
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++)
@@ -345,12 +337,8 @@ void water_face_flux(hearth_scene *s, double dt) {
         const double dm = dt * inflow * vol[i] / dx; /* into the body, kg */
         /* to the nodes around the particle's foot on the face */
         double xf[3] = {x[0], x[1], x[2]};
-        for (int d = 0; d < D; d++) {
-            xf[d] -= h * n[d];
-            const double Xd = (xf[d] - g->lo[d]) * g->inv_dx;
-            base[d] = (int)floor(Xd - 0.5);
-            bspline_weights(Xd - base[d], w[d], dw[d]);
-        }
+        for (int d = 0; d < D; d++) xf[d] -= h * n[d];
+        grid_point_weights(g, xf, base, w, dw);
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++)
                 for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
@@ -401,13 +389,9 @@ static double held_particles(hearth_scene *s, double *dmax, double *emax) {
     for (int i = 0; i < ps->n; i++) {
         double phi, n[3];
         if (!holder_at(s, X + 3 * i, 0.5, &phi, n)) continue;
-        int base[3] = {0, 0, 0};
-        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
-        for (int d = 0; d < D; d++) {
-            const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
-            base[d] = (int)floor(Xd - 0.5);
-            bspline_weights(Xd - base[d], w[d], dw);
-        }
+        int base[3];
+        double w[3][3], dw[3][3];
+        grid_point_weights(g, X + 3 * i, base, w, dw);
         double sat = 0;
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++)

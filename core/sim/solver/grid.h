@@ -6,6 +6,7 @@
  * block to its storage. Each node carries g->nch channels (see CH_*). */
 #ifndef HEARTH_GRID_H
 #define HEARTH_GRID_H
+#include <math.h>
 #include "hearth/hearth.h"
 
 #define GRID_B 4     /* nodes per block side */
@@ -138,5 +139,21 @@ static inline void bspline_weights(double fx, double w[3], double dw[3]) {
     dw[0] = fx - 1.5;
     dw[1] = -2.0 * (fx - 1.0);
     dw[2] = fx - 0.5;
+}
+
+/// A point's quadratic B-spline stencil: the lowest node base[d] of its 3 nodes
+/// per axis, their weights w[d][k] and weight derivatives dw[d][k] (per unit of
+/// dx, not per metre). Axes past dim get base 0 and weights {1, 0, 0}.
+static inline void grid_point_weights(const grid *g, const double x[3], int base[3], double w[3][3], double dw[3][3]) {
+    for (int d = 0; d < 3; d++) {
+        base[d] = 0;
+        w[d][0] = 1, w[d][1] = w[d][2] = 0;
+        dw[d][0] = dw[d][1] = dw[d][2] = 0;
+    }
+    for (int d = 0; d < g->dim; d++) {
+        const double Xd = (x[d] - g->lo[d]) * g->inv_dx;
+        base[d] = (int)floor(Xd - 0.5);
+        bspline_weights(Xd - base[d], w[d], dw[d]);
+    }
 }
 #endif
