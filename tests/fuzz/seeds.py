@@ -300,6 +300,20 @@ s:add{shape = h.box({0.3, 0.2}, {0.7, 0.4}), material = dough, ppc = 2}
 s:step(2)
 s:save("OUT")
 """,
+    # version 4's additions: a humid oven with latent heat and browning, a Robin wet
+    # collider, a held (Dirichlet) collider and a body that keeps its temperature
+    "fields_v4_2d.ck": """local h = require "hearth"
+local s = h.scene{dim = 2, dx = 1 / 16, box = {{0, 0}, {1, 1}}, seed = 7, gravity = {0, 0},
+  oven = {temperature = 180, beta = 20, saturation = 0.3}, latent_heat = true, browning = true, browning_scale = 50}
+local m = h.material("elastic", {E = 5e4, density = 500, specific_heat = 2000, conductivity = 0.5,
+  water_diffusivity = 1e-7, evaporation = 6e-6})
+s:collider{shape = h.plane({0, 0.1}, {0, 1}), temperature = 150, fixed_temperature = true}
+s:collider{shape = h.plane({0.9, 0}, {-1, 0}), saturation = 0.9, beta_water = 0.05}
+s:add{shape = h.box({0.3, 0.1}, {0.7, 0.3}), material = m, ppc = 2, saturation = 0.6, fixed = true}
+s:add{shape = h.box({0.1, 0.5}, {0.2, 0.6}), material = m, ppc = 2, temperature = 90, fixed_temperature = true}
+s:step(2)
+s:save("OUT")
+""",
 }
 
 
