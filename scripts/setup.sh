@@ -17,6 +17,8 @@ hearth_missing_packages() {
     else
         missing+=(liblua5.4-dev libncurses-dev libpng-dev)
     fi
+    # the -direct terminal descriptions, so COLORTERM=truecolor gets 24-bit colour in the dashboard
+    [ -e /usr/share/terminfo/x/xterm-direct ] || [ -e /lib/terminfo/x/xterm-direct ] || missing+=(ncurses-term)
     echo "${missing[@]}"
 }
 

@@ -26,8 +26,8 @@ command -v tmux >/dev/null || { echo "FAIL: tmux is not installed (scripts/test 
 # start ARGS...: hearth in a 120x40 pane; after it exits the pane records the
 # exit status, the terminal modes and stays open for inspection.
 start() {
-    local cmd="cd '$tmp' && env LANG=C.UTF-8 LC_ALL=C.UTF-8 TERM=${TUI_TERM:-tmux-256color} XDG_STATE_HOME='$tmp/state' '$hearth' $* 2>'$tmp/stderr.txt'; echo \$? > '$tmp/exit.txt'; stty -a > '$tmp/stty.txt'; sleep 60"
-    tmux -L "$sock" -f /dev/null new-session -d -x 120 -y 40 -s t "$cmd" || fail "tmux did not start"
+    local cmd="cd '$tmp' && env LANG=C.UTF-8 LC_ALL=C.UTF-8 ${TUI_ENV:-} TERM=${TUI_TERM:-tmux-256color} XDG_STATE_HOME='$tmp/state' '$hearth' $* 2>'$tmp/stderr.txt'; echo \$? > '$tmp/exit.txt'; stty -a > '$tmp/stty.txt'; sleep 60"
+    tmux -L "$sock" -f /dev/null new-session -d -x "${TUI_COLS:-120}" -y "${TUI_ROWS:-40}" -s t "$cmd" || fail "tmux did not start"
 }
 screen() { tmux -L "$sock" capture-pane -p -t t; }
 # wait_for REGEX [SECONDS]: until the screen matches
@@ -46,6 +46,37 @@ alive() { [ ! -f "$tmp/exit.txt" ] || fail "hearth exited ($(cat "$tmp/exit.txt"
 png_ok() { python3 "$here/png_check.py" "$1" >/dev/null; } # see png_check.py
 
 case "$case_name" in
+tui_colorterm_truecolor)
+    # COLORTERM=truecolor under a 256-colour $TERM: 24-bit colour when a -direct
+    # terminal description is installed (Debian ncurses-term), else a log line saying why not
+    TUI_ENV=COLORTERM=truecolor TUI_TERM=xterm-256color start "'$scene'"
+    wait_for "paused"
+    if [ -e /usr/share/terminfo/x/xterm-direct ] || [ -e /lib/terminfo/x/xterm-direct ]; then
+        wait_for "24-bit colour through the"
+        tmux -L "$sock" capture-pane -e -p -t t | grep -q $'\e\[[0-9;]*38;2;' ||
+            fail "the screen has no 24-bit colour sequences"
+    else
+        wait_for "no -direct terminal"
+    fi
+    ;;
+tui_80x24_layout)
+    # the smallest screen the dashboard supports: the key bar keeps help and
+    # quit, the run state does not overwrite the status line, and the floor
+    # (a collider) is drawn under the block
+    TUI_COLS=80 TUI_ROWS=24 start "'$scene'"
+    wait_for "paused"
+    screen | sed -n 24p | grep -q '? help  q quit *$' || fail "the key bar lost '? help  q quit' at 80x24"
+    screen | sed -n 1p | grep -Eq 'oven 180 degC +\|\| paused *$' || fail "the status line's run state overlaps the oven"
+    python3 - "$(screen)" <<'PY' || fail "no collider drawn under the block"
+import sys
+rows = sys.argv[1].split("\n")
+bar = next(i for i, r in enumerate(rows) if "degC" in r and i > 3)  # the left view's colour bar line
+floor = rows[bar - 1][:40]
+n = floor.count("\u2580")
+print(f"floor row: {n} upper half blocks in the left view")
+sys.exit(0 if n >= 20 else 1)  # the view is 29 cells wide here; none before colliders were drawn
+PY
+    ;;
 tui_space_advances_time)
     start "'$scene'"
     wait_for "paused"

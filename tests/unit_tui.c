@@ -58,6 +58,66 @@ TEST(draw_256_palette) {
     CHECK(tui_rgb_to_256(grey) == 244);
 }
 
+/* A 256-colour terminal shows the colour map's hues: a coloured sample never
+ * lands on the grey ramp (232..255). Matching by plain RGB distance sent the
+ * map's muted blues and teals to greys, which drew grey bands across a heat
+ * map. Only a colour with little chroma may become a grey. */
+TEST(draw_256_keeps_hue) {
+    int greys = 0, coloured = 0;
+    for (int i = 0; i <= 255; i++) {
+        unsigned char c[3];
+        tui_colormap(i / 255.0, c);
+        int mx = c[0], mn = c[0];
+        for (int k = 1; k < 3; k++) mx = c[k] > mx ? c[k] : mx, mn = c[k] < mn ? c[k] : mn;
+        if (mx - mn < 24) continue; /* near grey: either is fair */
+        coloured++;
+        const int idx = tui_rgb_to_256(c);
+        if (idx >= 232) {
+            if (greys < 3) printf("  map %.3f (%d, %d, %d) -> grey %d\n", i / 255.0, c[0], c[1], c[2], idx);
+            greys++;
+        }
+    }
+    printf("  %d of %d coloured samples of the map went to the grey ramp\n", greys, coloured);
+    CHECK(coloured > 200);
+    CHECK(greys == 0);
+}
+
+/* A collider shows grey where no material is, and never covers material. */
+TEST(draw_solids_fill_empty_pixels) {
+    const double f[4] = {NAN, NAN, 5, NAN}; /* 1 x 4 pixels, row 0 at the bottom: material in row 2 only */
+    tui_cell c[2];
+    tui_draw_heatmap(f, 1, 4, 0, 10, 0, 1, 0, 1, TUI_TRUECOLOR, 1, 2, c);
+    /* cells top to bottom: [row 3 empty over row 2 material], [rows 1 and 0 empty] */
+    const unsigned char solid[4] = {1, 1, 1, 1}; /* a solid everywhere (pixels top to bottom) */
+    tui_cell before[2] = {c[0], c[1]};
+    tui_draw_solids(c, 1, 2, solid, TUI_TRUECOLOR);
+    const int32_t grey = 0x6e6e78;
+    /* top cell: its upper pixel was empty -> grey; its lower pixel held material -> kept */
+    CHECK(c[0].ch == TUI_UPPER_HALF && c[0].fg == grey && c[0].bg == before[0].fg);
+    /* bottom cell: both pixels empty -> both grey */
+    CHECK(c[1].ch == TUI_UPPER_HALF && c[1].fg == grey && c[1].bg == grey);
+    /* no solid: nothing changes */
+    tui_cell d[2] = {before[0], before[1]};
+    const unsigned char none[4] = {0, 0, 0, 0};
+    tui_draw_solids(d, 1, 2, none, TUI_TRUECOLOR);
+    CHECK(d[0].ch == before[0].ch && d[0].fg == before[0].fg && d[1].ch == before[1].ch);
+    /* ASCII: a hatch in empty cells only */
+    tui_draw_heatmap(f, 1, 4, 0, 10, 0, 1, 0, 1, TUI_ASCII, 1, 2, c);
+    tui_draw_solids(c, 1, 2, solid, TUI_ASCII);
+    CHECK(c[0].ch != '/' && c[1].ch == '/');
+}
+
+/* The key bar always ends with help and quit, down to 20 columns. */
+TEST(key_bar_keeps_help_and_quit) {
+    for (int w = 20; w <= 140; w++) {
+        const char *b = tui_key_bar(w);
+        const size_t n = strlen(b);
+        CHECK((int)n <= w);
+        CHECK(n >= 14 && !strcmp(b + n - 14, "? help  q quit"));
+    }
+    CHECK(strstr(tui_key_bar(80), "c ckpt") != NULL); /* at 80 columns the compact bar keeps every key */
+}
+
 TEST(draw_ascii_density) {
     tui_cell c[4];
     tui_draw_heatmap(field, 2, 4, 0, 3, 0, 1, 0, 1, TUI_ASCII, 2, 2, c);
@@ -193,6 +253,7 @@ TEST(prompt_history_file) {
     CHECK(system(cmd) == 0);
 }
 
-TEST_MAIN(T(draw_truecolor_half_blocks), T(draw_lower_half_when_top_outside), T(draw_256_palette),
+TEST_MAIN(T(draw_truecolor_half_blocks), T(draw_lower_half_when_top_outside), T(draw_256_palette), T(draw_256_keeps_hue),
+          T(key_bar_keeps_help_and_quit), T(draw_solids_fill_empty_pixels),
           T(draw_ascii_density), T(draw_zoom_window), T(draw_uniform_field_mid_colour), T(pick_color_mode),
           T(sparkline_scaling), T(layout_sizes), T(prompt_editing), T(prompt_history_file))

@@ -309,7 +309,9 @@ static int app_start(tui_app *a) {
     a->running = a->opt.play;
     tui_log_add(&a->log, "hearth %s: %s. Space runs, ? shows the keys, : opens the Lua prompt.", HEARTH_VERSION,
                 a->opt.name);
-    if (a->lua.njobs) tui_log_add(&a->log, "the scene's run is waiting: Space starts it");
+    if (a->lua.njobs)
+        tui_log_add(&a->log, a->running ? "the scene's run is running (--play); Space pauses it"
+                                        : "the scene's run is waiting: Space starts it");
     return 0;
 }
 
@@ -345,6 +347,7 @@ int tui_run(const tui_options *o) {
         free(a);
         return 1;
     }
+    if (tui_screen_color_note()[0]) tui_log_add(&a->log, "%s", tui_screen_color_note());
     double next_draw = 0, last_draw = 0;
     long seen_log = -1;
     int dirty = 1, keyed = 0;

@@ -42,13 +42,17 @@ int tui_rgb_to_256(const unsigned char rgb[3]) {
     long dc = 0, dg = 0;
     int cube[3] = {lv[r], lv[g], lv[b]};
     int mean = (rgb[0] + rgb[1] + rgb[2]) / 3;
+    int mx = rgb[0], mn = rgb[0];
+    for (int k = 1; k < 3; k++) mx = rgb[k] > mx ? rgb[k] : mx, mn = rgb[k] < mn ? rgb[k] : mn;
     int gi = mean < 8 ? 0 : mean > 238 ? 23 : (mean - 8) / 10; /* greys 232..255 are 8, 18, ..., 238 */
     int grey = 8 + 10 * gi;
     for (int k = 0; k < 3; k++) {
         dc += (long)(rgb[k] - cube[k]) * (rgb[k] - cube[k]);
         dg += (long)(rgb[k] - grey) * (rgb[k] - grey);
     }
-    return dg < dc ? 232 + gi : 16 + 36 * r + 6 * g + b;
+    /* a grey only for a colour with little chroma: by RGB distance alone the
+     * colour map's muted purples and teals went grey and drew grey bands */
+    return dg < dc && mx - mn < 24 ? 232 + gi : 16 + 36 * r + 6 * g + b;
 }
 
 int32_t tui_color(double u, tui_color_mode m) {
@@ -113,6 +117,28 @@ void tui_draw_heatmap(const double *f, int fw, int fh, double lo, double hi, dou
                 o->fg = tui_color(a, m);
                 o->bg = tui_color(b, m);
             }
+        }
+}
+
+void tui_draw_solids(tui_cell *cells, int cols, int rows, const unsigned char *solid, tui_color_mode m) {
+    const int32_t grey = m == TUI_TRUECOLOR ? 0x6e6e78 : 242;
+    for (int r = 0; r < rows; r++)
+        for (int c = 0; c < cols; c++) {
+            tui_cell *o = &cells[(long)r * cols + c];
+            const int st = solid[(long)(2 * r) * cols + c], sb = solid[(long)(2 * r + 1) * cols + c];
+            if (!st && !sb) continue;
+            if (m < TUI_256) { /* characters only: a hatch where nothing else is drawn */
+                if (o->ch == ' ') o->ch = '/';
+                continue;
+            }
+            /* what each half shows now: material colour, or the default (empty) */
+            int32_t top = TUI_DEFAULT, bot = TUI_DEFAULT;
+            if (o->ch == TUI_UPPER_HALF) top = o->fg, bot = o->bg;
+            else if (o->ch == TUI_LOWER_HALF) bot = o->fg;
+            if (top == TUI_DEFAULT && st) top = grey;
+            if (bot == TUI_DEFAULT && sb) bot = grey;
+            if (top == TUI_DEFAULT) o->ch = TUI_LOWER_HALF, o->fg = bot, o->bg = TUI_DEFAULT;
+            else o->ch = TUI_UPPER_HALF, o->fg = top, o->bg = bot;
         }
 }
 

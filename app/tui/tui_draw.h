@@ -56,6 +56,12 @@ void tui_draw_heatmap(const double *f, int fw, int fh, double lo, double hi, dou
 /// colour modes, the density characters in TUI_ASCII).
 void tui_draw_colorbar(tui_color_mode m, int cols, tui_cell *out);
 
+/// Draw solids (colliders: tray, pan, nozzle) into a heat map's cells where no
+/// material is: solid is cols x (2 rows) pixels, row 0 at the top, nonzero
+/// inside a solid. Grey half blocks in the colour modes, '/' in TUI_ASCII;
+/// material keeps its colour.
+void tui_draw_solids(tui_cell *cells, int cols, int rows, const unsigned char *solid, tui_color_mode m);
+
 /// A sparkline of the last `width` of n values (oldest first) into out (width
 /// code points, NUL-free): U+2581..U+2588 scaled between their own min and
 /// max (a flat series draws the lowest bar), ASCII " _.-=+*#" when ascii is

@@ -9,6 +9,8 @@
  */
 #include "tui_layout.h"
 
+#include <string.h>
+
 int tui_layout_compute(int cols, int rows, tui_layout *l) {
     *l = (tui_layout){0};
     if (cols < TUI_MIN_COLS || rows < TUI_MIN_ROWS) return 0;
@@ -30,4 +32,20 @@ int tui_layout_compute(int cols, int rows, tui_layout *l) {
     l->log = (tui_rect){pw + 1, by, cols - pw - 1, bottom};
     l->prompt = (tui_rect){0, rows - 1, cols, 1};
     return 1;
+}
+
+const char *tui_key_bar(int width) {
+    /* widest first; every one ends with help and quit, which a user must always find */
+    static const char *bars[] = {
+        " Space run/pause  n step  f/F field  arrows probe  p pin  s PNG  c checkpoint  : Lua  ? help  q quit",
+        " Spc run  n step  f/F field  arrows probe  p pin  s PNG  c ckpt  : Lua  ? help  q quit",
+        " Spc run  n step  f/F field  arrows probe  s PNG  c ckpt  : Lua  ? help  q quit", /* 80 columns */
+        " Spc run  n step  f/F field  s PNG  : Lua  ? help  q quit",
+        " Spc run  : Lua  ? help  q quit",
+        " ? help  q quit",
+    };
+    const int n = (int)(sizeof bars / sizeof *bars);
+    for (int i = 0; i < n - 1; i++)
+        if ((int)strlen(bars[i]) <= width) return bars[i];
+    return bars[n - 1];
 }

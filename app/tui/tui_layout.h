@@ -23,4 +23,8 @@ typedef struct tui_layout {
 /// Lay out a cols x rows screen. Returns 0 when it is smaller than
 /// TUI_MIN_COLS x TUI_MIN_ROWS (the dashboard then shows a message instead).
 int tui_layout_compute(int cols, int rows, tui_layout *l);
+
+/// The key bar for the prompt line when the prompt is idle: the widest variant
+/// that fits `width` columns; every variant ends with "? help  q quit".
+const char *tui_key_bar(int width);
 #endif

@@ -40,6 +40,36 @@ static void on_crash(int sig) {
 
 int tui_screen_interrupted(void) { return (int)stop_signal; }
 
+static SCREEN *direct_screen;
+
+/* COLORTERM=truecolor (or 24bit) says the terminal takes 24-bit colour even
+ * when $TERM's description (xterm-256color, tmux-256color) lists 256. ncurses
+ * draws direct colour only through a description that has it, so try the
+ * matching "-direct" one (Debian's ncurses-term): TERM's own family first,
+ * then xterm-direct for the xterm-compatible rest. NULL when none is there:
+ * the dashboard stays at 256 colours and says why in its log. */
+static SCREEN *open_direct(const char *term, char *used, size_t n) {
+    const char *ct = getenv("COLORTERM");
+    if (!ct || (strcmp(ct, "truecolor") && strcmp(ct, "24bit")) || !term || strstr(term, "-direct")) return NULL;
+    char fam[64];
+    size_t len = strcspn(term, "-");
+    if (len >= sizeof fam - 8) return NULL;
+    memcpy(fam, term, len);
+    strcpy(fam + len, "-direct");
+    const char *cands[2] = {fam, "xterm-direct"};
+    for (int i = 0; i < 2; i++) {
+        SCREEN *sc = newterm(cands[i], stdout, stdin);
+        if (sc) {
+            snprintf(used, n, "%s", cands[i]);
+            return sc;
+        }
+    }
+    return NULL;
+}
+
+static char direct_note[160];
+const char *tui_screen_color_note(void) { return direct_note; }
+
 int tui_screen_open(tui_color_mode *mode) {
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
@@ -56,7 +86,19 @@ int tui_screen_open(tui_color_mode *mode) {
     setlocale(LC_ALL, ""); /* wide characters need the user's locale */
     setlocale(LC_NUMERIC, "C"); /* but numbers keep their point, in printf and in Lua */
     if (!getenv("ESCDELAY")) set_escdelay(25); /* Esc leaves the prompt at once, not after a second */
-    if (!initscr()) return -1;
+    char used[64] = "";
+    direct_note[0] = '\0';
+    direct_screen = open_direct(getenv("TERM"), used, sizeof used);
+    if (direct_screen) {
+        snprintf(direct_note, sizeof direct_note, "COLORTERM=%s: 24-bit colour through the %s terminal description",
+                 getenv("COLORTERM"), used);
+    } else {
+        const char *ct = getenv("COLORTERM");
+        if (ct && (!strcmp(ct, "truecolor") || !strcmp(ct, "24bit")) && getenv("TERM") && !strstr(getenv("TERM"), "-direct"))
+            snprintf(direct_note, sizeof direct_note,
+                     "COLORTERM=%s, but no -direct terminal description is installed (Debian ncurses-term): 256 colours", ct);
+        if (!initscr()) return -1;
+    }
     open_now = 1;
     cbreak();
     noecho();
@@ -80,6 +122,7 @@ void tui_screen_close(void) {
     open_now = 0;
     curs_set(1);
     endwin();
+    if (direct_screen) delscreen(direct_screen), direct_screen = NULL;
 }
 
 static int map_key(wint_t k, int is_key) {

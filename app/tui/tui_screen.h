@@ -12,6 +12,8 @@
 int tui_screen_open(tui_color_mode *mode);
 /// Restore the terminal (idempotent).
 void tui_screen_close(void);
+/// What tui_screen_open made of COLORTERM=truecolor ("" when it was not set): for the log.
+const char *tui_screen_color_note(void);
 /// The signal that asked to stop (SIGINT, ...), or 0.
 int tui_screen_interrupted(void);
 /// Wait up to ms milliseconds (0: do not wait) for a key. Returns 0 when none

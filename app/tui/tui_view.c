@@ -75,6 +75,16 @@ void tui_sample_probes(tui_app *a) {
     int advanced = st.step != a->sampled_step;
     char names[TUI_MAX_FIELDS][32];
     int n = tui_scalar_fields(a->s, names, TUI_MAX_FIELDS);
+    /* the two views' fields head the list: a short panel still shows what the views show */
+    for (int k = 1; k >= 0; k--)
+        for (int i = 1; i < n; i++)
+            if (!strcmp(names[i], a->field[k])) {
+                char keep[32];
+                memcpy(keep, names[i], sizeof keep);
+                memmove(names[1], names[0], sizeof names[0] * (size_t)i);
+                memcpy(names[0], keep, sizeof keep);
+                break;
+            }
     hearth_error err;
     /* keep the histories of fields that stay live */
     tui_field_probe old[TUI_MAX_FIELDS];
@@ -163,11 +173,13 @@ static void draw_status(tui_app *a, const tui_rect *r) {
     snprintf(fields, sizeof fields, "%s", hearth_scene_fields(a->s));
     static const char *gs[] = {"ok", "rolled back", "STOPPED"};
     const char *run = a->running ? (a->lua.njobs ? "> running (scene run)" : "> running") : "|| paused";
-    snprintf(l2, sizeof l2, " particles %d   fields: %s   %.0f steps/s   guard %s", st.particles, fields, a->sps,
-             gs[st.guard]);
-    put(r->y, 0, r->w, l1);
-    put(r->y + 1, 0, r->w, l2);
+    if ((int)strlen(run) + 44 > r->w) run = a->running ? "> running" : "|| paused";
+    snprintf(l2, sizeof l2, " particles %d   %.0f steps/s   guard %s   fields: %s", st.particles, a->sps, gs[st.guard],
+             fields);
     int rl = (int)strlen(run);
+    put(r->y, 0, r->w - rl - 2, l1); /* the run state keeps its corner: line 1 stops short of it */
+    put(r->y + 1, 0, r->w, l2);
+    if ((int)strlen(l2) > r->w && r->w > 4) put(r->y + 1, r->w - 3, 3, "...");
     if (st.guard == HEARTH_GUARD_STOPPED) attron(A_BOLD);
     put(r->y, r->w - rl - 1, rl, run);
     attroff(A_REVERSE | A_BOLD);
@@ -244,6 +256,21 @@ static void draw_view(tui_app *a, int k, const tui_layout *L, int fresh) {
     double cu = (a->cursor[u] - d->lo[u]) / W, cv = (a->cursor[v] - d->lo[v]) / H;
     double u0 = fmin(fmax(cu - span / 2, 0), 1 - span), v0 = fmin(fmax(cv - span / 2, 0), 1 - span);
     tui_draw_heatmap(a->slice[k], fw, fh, lo, hi, u0, u0 + span, v0, v0 + span, a->mode, dw, dh, a->cells);
+    if (hearth_scene_collider_count(a->s) > 0) { /* colliders as grey where no material is */
+        unsigned char *solid = malloc((size_t)dw * 2 * (size_t)dh);
+        if (solid) {
+            double x[3] = {0, 0, 0};
+            if (d->dim == 3) x[a->axis] = at;
+            for (int py = 0; py < 2 * dh; py++)
+                for (int px = 0; px < dw; px++) {
+                    x[u] = d->lo[u] + W * (u0 + span * (px + 0.5) / dw);
+                    x[v] = d->lo[v] + H * (v0 + span * (1 - (py + 0.5) / (2 * dh)));
+                    solid[(long)py * dw + px] = hearth_scene_collider_distance(a->s, x) < 0;
+                }
+            tui_draw_solids(a->cells, dw, dh, solid, a->mode);
+            free(solid);
+        }
+    }
     tui_screen_cells(x0, y0, dw, dh, a->cells, a->mode);
     /* the cursor and the pinned probes */
     for (int p = -1; p < a->npins; p++) {
@@ -285,7 +312,9 @@ static void draw_probes(tui_app *a, const tui_rect *r) {
     if (spark > TUI_HIST) spark = TUI_HIST;
     uint32_t cps[TUI_HIST];
     int pin_rows = a->npins ? a->npins + 1 : 0;
-    for (int i = 0; i < a->nfp && row < r->h - pin_rows; i++, row++) {
+    int rows_for_fields = r->h - pin_rows - row, shown = a->nfp;
+    if (shown > rows_for_fields) shown = rows_for_fields - 1; /* the last row says how many are hidden */
+    for (int i = 0; i < shown; i++, row++) {
         const tui_field_probe *p = &a->fp[i];
         const char *unit = hearth_field_unit(p->name);
         if (isnan(p->value)) snprintf(line, sizeof line, "%-13.13s %10s %-7.7s", p->name, "-", unit ? unit : "");
@@ -295,6 +324,10 @@ static void draw_probes(tui_app *a, const tui_rect *r) {
             tui_sparkline(p->hist, p->n, spark, a->mode < TUI_256, cps);
             put_codes(r->y + row, r->x + 34, cps, spark);
         }
+    }
+    if (shown >= 0 && shown < a->nfp) {
+        snprintf(line, sizeof line, "+%d more fields (f / F puts one in a view)", a->nfp - shown);
+        put(r->y + row++, r->x, r->w, line);
     }
     if (a->npins) {
         attron(A_BOLD);
@@ -340,7 +373,7 @@ static void draw_prompt(tui_app *a, const tui_rect *r) {
         return;
     }
     if (!a->prompt_focus) {
-        put(r->y, 0, r->w, " Space run/pause  n step  f/F field  arrows probe  p pin  s PNG  c checkpoint  : Lua  ? help  q quit");
+        put(r->y, 0, r->w, tui_key_bar(r->w));
         curs_set(0);
         return;
     }

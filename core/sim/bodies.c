@@ -209,6 +209,15 @@ hearth_status hearth_scene_collider_translate(hearth_scene *s, int id, const dou
 
 int hearth_scene_collider_count(const hearth_scene *s) { return s->ncol; }
 
+double hearth_scene_collider_distance(const hearth_scene *s, const double x[3]) {
+    double best = INFINITY;
+    for (int i = 0; i < s->ncol; i++) {
+        const double d = collider_sdf(&s->cols[i], x, NULL);
+        if (d < best) best = d;
+    }
+    return best;
+}
+
 /* ---- curves ---------------------------------------------------------- */
 
 hearth_status hearth_scene_material_curve(hearth_scene *s, int mat, const char *param, int n, const double *T,

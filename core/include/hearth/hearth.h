@@ -467,6 +467,9 @@ hearth_status hearth_scene_collider_set_velocity(hearth_scene *s, int id, const 
 /// Move a collider now by d (m), e.g. to press or place it.
 hearth_status hearth_scene_collider_translate(hearth_scene *s, int id, const double d[3], hearth_error *err);
 int hearth_scene_collider_count(const hearth_scene *s);
+/// Signed distance (m, negative inside) from x to the nearest collider in its
+/// current pose; +INFINITY when the scene has none. For drawing colliders.
+double hearth_scene_collider_distance(const hearth_scene *s, const double x[3]);
 
 /* ---- temperature curves --------------------------------------------- */
 
