@@ -21,7 +21,7 @@ hearth="$HEARTH_ROOT/$build/app/hearth"
 scene="$HEARTH_ROOT/scripts/bench/tui_bench.lua"
 tmp=$(mktemp -d)
 sock="hearth-tui-bench-$$"
-trap 'tmux -L "$sock" kill-server 2>/dev/null; rm -rf "$tmp"' EXIT
+trap 'status=$?; tmux -L "$sock" kill-server 2>/dev/null || true; rm -rf "$tmp"; exit $status' EXIT # the server may be gone already: that is not a failure
 export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive
 
 now() { date +%s.%N; }
