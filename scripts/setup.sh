@@ -14,9 +14,12 @@ hearth_missing_packages() {
         pkg-config --exists lua5.4 || missing+=(liblua5.4-dev)
         pkg-config --exists ncursesw || missing+=(libncurses-dev)
         pkg-config --exists libpng || missing+=(libpng-dev)
+        pkg-config --exists cairo || missing+=(libcairo2-dev)
     else
-        missing+=(liblua5.4-dev libncurses-dev libpng-dev)
+        missing+=(liblua5.4-dev libncurses-dev libpng-dev libcairo2-dev)
     fi
+    # the pictures' text (Cairo finds it through fontconfig)
+    [ -e /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf ] || missing+=(fonts-dejavu-core)
     echo "${missing[@]}"
 }
 

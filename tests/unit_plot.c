@@ -171,11 +171,11 @@ TEST(plot_layers_and_legend) {
             int line_seen = 0; /* the line between the dots, a quarter of the way along */
             for (int dy = -2; dy <= 2; dy++) line_seen |= is_rgb(px, W, LEFT + PW / 4, TOP + PH - PH / 4 + dy, PURPLE);
             CHECK(line_seen);
-            /* legend rows 14 px apart: a dot for "points", then the line's sample for "line" */
-            int y0 = behind ? TOP + PH - 6 - 2 * 14 : TOP + 10;
+            /* legend rows 17 px apart (room for a 12 px font): a dot for "points", then the line's sample for "line" */
+            int y0 = behind ? TOP + PH - 6 - 2 * 17 : TOP + 10;
             CHECK(is_rgb(px, W, LEFT + 16, y0 + 3, GREEN));
-            CHECK(is_rgb(px, W, LEFT + 16, y0 + 14 + 3, PURPLE));
-            CHECK(is_rgb(px, W, LEFT + 16, y0 + 14 + 4, PURPLE));
+            CHECK(is_rgb(px, W, LEFT + 16, y0 + 17 + 3, PURPLE));
+            CHECK(!is_rgb(px, W, LEFT + 16, y0 + 17 + 6, PURPLE)); /* a line, not a block */
         }
         free(px);
         hearth_plot_free(p);
