@@ -115,7 +115,7 @@ static void range_pair(lua_State *L, int idx, const char *opt, double r[2]) {
         r[k] = lua_tonumber(L, -1);
         lua_pop(L, 1);
     }
-    if (!(r[0] < r[1])) luaL_error(L, "png: %s = {%g, %g}; the first must be smaller", opt, r[0], r[1]);
+    if (!(r[0] < r[1])) luaL_error(L, "png: %s = {%f, %f}; the first must be smaller", opt, r[0], r[1]);
 }
 
 /* s:png(field, path, {kind = "slice"|"particles", width, height, axis, at,
@@ -192,6 +192,17 @@ static int l_png(lua_State *L) {
     return 2;
 }
 
+/* core.colormap(name, t) -> r, g, b (0..255): a colour map's colour at t in
+ * [0, 1]; an unknown name is an error naming the valid ones */
+static int l_colormap(lua_State *L) {
+    const char *name = luaL_checkstring(L, 1);
+    unsigned char rgb[3];
+    if (hearth_colormap_rgb(name, luaL_checknumber(L, 2), rgb))
+        return luaL_error(L, "colormap '%s' is unknown; valid: %s", name, hearth_colormap_names());
+    for (int k = 0; k < 3; k++) lua_pushinteger(L, rgb[k]);
+    return 3;
+}
+
 static int dump(lua_State *L, const char *call, hearth_status (*fn)(const hearth_scene *, const char *, hearth_error *)) {
     hl_scene *u = hl_checkscene(L, 1);
     char buf[4096];
@@ -230,4 +241,6 @@ void hl_open_output(lua_State *L) {
     lua_pop(L, 2);
     lua_pushcfunction(L, l_write_atomic);
     lua_setfield(L, -2, "write_atomic");
+    lua_pushcfunction(L, l_colormap);
+    lua_setfield(L, -2, "colormap");
 }

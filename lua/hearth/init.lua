@@ -180,6 +180,9 @@ function h.material(plugin, params)
 end
 
 --- Write a text file (a CSV, a note) atomically; relative paths go under the output folder.
+--- h.colormap(name, t) -> r, g, b: the colour pictures give t (0..1) in a colour map
+h.colormap = core.colormap
+
 function h.write(path, text)
   if type(path) ~= "string" or type(text) ~= "string" then error("h.write(path, text): two strings", 2) end
   local ok, e = pcall(core.write_atomic, path, text, "h.write")
@@ -838,6 +841,10 @@ local function check_run_outputs(o)
   if o.png ~= nil then
     if type(o.png) ~= "table" then error(("s:run: png = {field = ..., path = ...}, got %s"):format(type(o.png)), 3) end
     check_keys(o.png, run_png_keys, "s:run: png", 4)
+    if o.png.colormap ~= nil then -- before the run, not at its first frame
+      local ok, err = pcall(core.colormap, o.png.colormap, 0)
+      if not ok then error("s:run: png: " .. tostring(err), 3) end
+    end
   end
   if o.csv ~= nil and type(o.csv) ~= "string" then
     error(("s:run: csv = \"series.csv\" (a file name), got %s"):format(type(o.csv)), 3)
