@@ -33,6 +33,17 @@ cli_lua_md_example_runs)
     (cd "$tmp" && "$hearth" run example.lua --quiet --until 0.1) || fail "docs/lua.md's example failed"
     ls "$tmp"/hearth-out/example/frames/speed_0000.png >/dev/null 2>&1 || fail "the example wrote no frames: $(ls -R "$tmp/hearth-out")"
     ;;
+cli_lua_md_png_example_runs)
+    # the Pictures example of docs/lua.md runs as printed: its frames, and the slice with the range it was given
+    awk '/^## Pictures/{p=1} p&&/^```lua/{f=1;next} f&&/^```/{exit} f' "$HEARTH_SOURCE_ROOT/docs/lua.md" >"$tmp/pictures.lua"
+    [ -s "$tmp/pictures.lua" ] || fail "docs/lua.md has no Pictures example"
+    (cd "$tmp" && "$hearth" run pictures.lua --quiet >out.txt) || fail "docs/lua.md's Pictures example failed"
+    cat "$tmp/out.txt"
+    grep -q "heat_slice.png	20.0	200.0	50.0 100.0 150.0 200.0" "$tmp/out.txt" || fail "the example's slice: $(cat "$tmp/out.txt")"
+    n=$(ls "$tmp"/hearth-out/pictures/heat_*.png 2>/dev/null | wc -l)
+    [ "$n" -eq 7 ] || fail "expected 6 frames and the slice, got $n: $(ls -R "$tmp/hearth-out")"
+    for f in "$tmp"/hearth-out/pictures/heat_*.png; do png_ok "$f" || fail "$f does not decode"; done
+    ;;
 cli_help_scene)
     # every setting of the schema is listed with its unit, default and range; --help points there
     out=$("$hearth" help scene) || fail "hearth help scene failed"
