@@ -34,23 +34,6 @@ static void spit(const char *path, const void *data, size_t n) {
     fclose(f);
 }
 
-/* Decode path with libpng's simplified API to 8-bit RGB; NULL on failure. */
-static unsigned char *decode_rgb(const char *path, int *w, int *h) {
-    png_image im;
-    memset(&im, 0, sizeof im);
-    im.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&im, path)) return NULL;
-    im.format = PNG_FORMAT_RGB;
-    unsigned char *buf = malloc(PNG_IMAGE_SIZE(im));
-    if (!buf || !png_image_finish_read(&im, NULL, buf, 0, NULL)) {
-        png_image_free(&im);
-        free(buf);
-        return NULL;
-    }
-    *w = (int)im.width;
-    *h = (int)im.height;
-    return buf;
-}
 
 static int lum601(int r, int g, int b) { return (int)lround(0.299 * r + 0.587 * g + 0.114 * b); }
 

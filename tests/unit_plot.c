@@ -16,29 +16,13 @@
 #include "fs_fixture.h"
 #include "hearth/hearth.h"
 #include "hearth/plot.h"
+#include "png_fixture.h"
 #include "test.h"
 
 enum { W = 760, H = 520, LEFT = 78, TOP = 52, PW = 658, PH = 406 };
 
 static const unsigned char GREEN[3] = {44, 160, 44}, PURPLE[3] = {148, 103, 189};
 
-/* Decode path to 8-bit RGB (malloc'd), or NULL. */
-static unsigned char *decode_rgb(const char *path, int *w, int *h) {
-    png_image im;
-    memset(&im, 0, sizeof im);
-    im.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&im, path)) return NULL;
-    im.format = PNG_FORMAT_RGB;
-    unsigned char *buf = malloc(PNG_IMAGE_SIZE(im));
-    if (!buf || !png_image_finish_read(&im, NULL, buf, 0, NULL)) {
-        png_image_free(&im);
-        free(buf);
-        return NULL;
-    }
-    *w = (int)im.width;
-    *h = (int)im.height;
-    return buf;
-}
 
 static int is_rgb(const unsigned char *px, int w, int x, int y, const unsigned char c[3]) {
     return !memcmp(px + 3 * ((size_t)y * w + x), c, 3);

@@ -15,23 +15,9 @@
 #include "colormap.h"
 #include "fs_fixture.h"
 #include "mpm_fixture.h"
+#include "png_fixture.h"
 #include "test.h"
 
-static unsigned char *decode_rgb(const char *path, int *w, int *h) {
-    png_image im;
-    memset(&im, 0, sizeof im);
-    im.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&im, path)) return NULL;
-    im.format = PNG_FORMAT_RGB;
-    unsigned char *buf = malloc(PNG_IMAGE_SIZE(im));
-    if (!buf || !png_image_finish_read(&im, NULL, buf, 0, NULL)) {
-        png_image_free(&im);
-        free(buf);
-        return NULL;
-    }
-    *w = (int)im.width, *h = (int)im.height;
-    return buf;
-}
 
 static const unsigned char *pixel(const unsigned char *px, int w, double x, double y) {
     return px + 3 * ((size_t)floor(y) * (size_t)w + (size_t)floor(x));
@@ -103,7 +89,7 @@ TEST(png_fixed_range_across_frames) {
         printf("frame %d: t = %.4g s, data %.3f..%.3f degC, range %.3f..%.3f, %d x %d px\n", f, hearth_scene_time(s),
                in[f].data[0], in[f].data[1], in[f].range[0], in[f].range[1], in[f].width, in[f].height);
         CHECK(in[f].range[0] == 20 && in[f].range[1] == 180);
-        int w, h;
+        int w = 0, h = 0;
         unsigned char *px = decode_rgb(path[f], &w, &h);
         CHECK(px != NULL);
         CHECK(w == in[f].width && h == in[f].height);
@@ -141,7 +127,7 @@ TEST(png_colliders_drawn) {
         hearth_error err;
         snprintf(path, sizeof path, "%s/k%d.png", dir, kind);
         CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
-        int w, h;
+        int w = 0, h = 0;
         unsigned char *px = decode_rgb(path, &w, &h);
         CHECK(px != NULL);
         const double sc = in.area[2] / (in.view_hi[0] - in.view_lo[0]);
@@ -179,7 +165,7 @@ TEST(png_colorbar_ticks) {
     CHECK(in.nticks == 4);
     for (int k = 0; k < 4 && k < in.nticks; k++) CHECK(in.ticks[k] == 40.0 * (k + 1));
     CHECK(!strcmp(in.unit, "\xc2\xb0" "C") && !strcmp(in.colormap, "inferno"));
-    int w, h;
+    int w = 0, h = 0;
     unsigned char *px = decode_rgb(path, &w, &h);
     CHECK(px != NULL);
     for (int k = 0; k < in.nticks; k++) {
