@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "alloc.h"
 #include "colormap.h"
 #include "fs_fixture.h"
 #include "mpm_fixture.h"
@@ -226,4 +227,36 @@ TEST(png_options_checked) {
     rm_dir(dir);
 }
 
-TEST_MAIN(T(png_fixed_range_across_frames), T(png_colliders_drawn), T(png_colorbar_ticks), T(png_options_checked))
+/* Every allocation a picture makes may fail: each failure is HEARTH_ERR_NOMEM
+ * with nothing leaked, for both kinds (the colliders' map included). */
+TEST(png_alloc_failures) {
+    char dir[64], path[128];
+    make_dir(dir, sizeof dir);
+    snprintf(path, sizeof path, "%s/a.png", dir);
+    hearth_scene *s = heated_scene();
+    CHECK(s != NULL);
+    for (int kind = 0; kind < 2; kind++) {
+        size_t base = hearth_bytes_allocated();
+        int failed = 0, done = 0;
+        for (long k = 0; k < 32 && !done; k++) {
+            hearth_picture_def d = hearth_default_picture_def();
+            d.field = "temperature", d.kind = kind ? HEARTH_PICTURE_PARTICLES : HEARTH_PICTURE_SLICE, d.width = 200;
+            hearth_error err = {0};
+            mem_fail_after(k);
+            hearth_status st = hearth_render(s, &d, path, NULL, &err);
+            mem_fail_after(-1);
+            if (st) {
+                failed++;
+                CHECK(st == HEARTH_ERR_NOMEM);
+            } else done = 1;
+            CHECK(hearth_bytes_allocated() == base);
+        }
+        printf("%s: %d allocations failed one by one, then it drew\n", kind ? "particles" : "slice", failed);
+        CHECK(failed >= 2 && done);
+    }
+    hearth_scene_destroy(s);
+    rm_dir(dir);
+}
+
+TEST_MAIN(T(png_fixed_range_across_frames), T(png_colliders_drawn), T(png_colorbar_ticks), T(png_options_checked),
+          T(png_alloc_failures))

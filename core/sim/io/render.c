@@ -227,30 +227,58 @@ static void title(canvas *c, const frame *f, const hearth_scene *s) {
  * surface: a Cairo path cannot follow an arbitrary signed distance, and
  * sampling it is what keeps every collider shape (boxes, planes, booleans,
  * masks) drawn the same way. */
-static void colliders(canvas *c, const frame *f, const hearth_scene *s, const int uv[2], int naxis, const double *depths,
-                      int ndepth, int pass) {
-    if (s->ncol == 0) return;
-    cairo_surface_flush(c->sf);
-    unsigned char *data = cairo_image_surface_get_data(c->sf);
-    const int stride = cairo_image_surface_get_stride(c->sf);
-    const int px0 = (int)ceil(f->x0), px1 = (int)floor(f->x0 + f->w), py0 = (int)ceil(f->y0), py1 = (int)floor(f->y0 + f->h);
-    for (int py = py0; py < py1; py++)
-        for (int px = px0; px < px1; px++) {
+typedef struct collider_map {
+    int px0, py0, w, h; /* the pixels sampled: the plot area */
+    float *d;           /* signed distance to the nearest collider (pixels, negative inside); NULL: none */
+} collider_map;
+
+static void collider_map_free(collider_map *m) {
+    if (m->d) mem_free(m->d, sizeof(float) * (size_t)m->w * (size_t)m->h);
+    m->d = NULL;
+}
+
+/* Sample the colliders once per picture; the fill and the outline both read it. */
+static hearth_status collider_map_make(collider_map *m, const frame *f, const hearth_scene *s, const int uv[2], int naxis,
+                                       const double *depths, int ndepth, hearth_error *err) {
+    memset(m, 0, sizeof *m);
+    if (s->ncol == 0) return HEARTH_OK;
+    m->px0 = (int)ceil(f->x0), m->py0 = (int)ceil(f->y0);
+    m->w = (int)floor(f->x0 + f->w) - m->px0, m->h = (int)floor(f->y0 + f->h) - m->py0;
+    if (m->w <= 0 || m->h <= 0) return HEARTH_OK;
+    if (!(m->d = mem_alloc(sizeof(float) * (size_t)m->w * (size_t)m->h)))
+        return err_set(err, HEARTH_ERR_NOMEM, "out of memory drawing the colliders (%d x %d px)", m->w, m->h);
+    for (int j = 0; j < m->h; j++)
+        for (int i = 0; i < m->w; i++) {
             double dmin = INFINITY;
             for (int k = 0; k < s->ncol; k++)
                 for (int z = 0; z < ndepth; z++) {
                     double x[3] = {0, 0, 0};
-                    x[uv[0]] = f->lo[0] + (px + 0.5 - f->x0) / f->sc;
-                    x[uv[1]] = f->lo[1] + (f->y0 + f->h - py - 0.5) / f->sc;
+                    x[uv[0]] = f->lo[0] + (m->px0 + i + 0.5 - f->x0) / f->sc;
+                    x[uv[1]] = f->lo[1] + (f->y0 + f->h - (m->py0 + j) - 0.5) / f->sc;
                     if (naxis >= 0) x[naxis] = depths[z];
                     dmin = fmin(dmin, collider_sdf(&s->cols[k], x, NULL));
                 }
-            const double dp = dmin * f->sc; /* pixels, negative inside */
-            const unsigned char *col = pass == 0 ? COLLIDER : COLLIDER_EDGE;
+            m->d[(size_t)j * m->w + i] = (float)(dmin * f->sc);
+        }
+    return HEARTH_OK;
+}
+
+/* pass 0: the fill, shaded by how much of each pixel lies inside (from the
+ * distance at its centre); pass 1: the outline, about a pixel wide where the
+ * distance crosses zero. Blended straight into the surface's pixels. */
+static void colliders_draw(canvas *c, const collider_map *m, int pass) {
+    if (!m->d) return;
+    cairo_surface_flush(c->sf);
+    unsigned char *data = cairo_image_surface_get_data(c->sf);
+    const int stride = cairo_image_surface_get_stride(c->sf);
+    const unsigned char *col = pass == 0 ? COLLIDER : COLLIDER_EDGE;
+    for (int j = 0; j < m->h; j++)
+        for (int i = 0; i < m->w; i++) {
+            const double dp = m->d[(size_t)j * m->w + i];
             double a = pass == 0 ? fmin(1, fmax(0, 0.5 - dp)) : fmin(1, fmax(0, 1.0 - fabs(dp + 0.5) / 0.9));
             if (a <= 0) continue;
             uint32_t p;
-            unsigned char *q = data + (size_t)py * stride + 4 * (size_t)px;
+            unsigned char *q = data + (size_t)(m->py0 + j) * stride + 4 * (size_t)(m->px0 + i);
             memcpy(&p, q, 4);
             double r = (p >> 16) & 255, g = (p >> 8) & 255, b = p & 255;
             r = a * col[0] + (1 - a) * r, g = a * col[1] + (1 - a) * g, b = a * col[2] + (1 - a) * b;
@@ -340,7 +368,12 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
     const int uv[2] = {0, 1};
     double depths[5];
     for (int k = 0; k < 5; k++) depths[k] = s->def.lo[2] + (k + 0.5) / 5 * (s->def.hi[2] - s->def.lo[2]);
-    colliders(c, &f, s, uv, s->def.dim == 3 ? 2 : -1, depths, s->def.dim == 3 ? 5 : 1, 0);
+    collider_map cm;
+    if ((st = collider_map_make(&cm, &f, s, uv, s->def.dim == 3 ? 2 : -1, depths, s->def.dim == 3 ? 5 : 1, err))) {
+        mem_free(val, bytes);
+        return st;
+    }
+    colliders_draw(c, &cm, 0);
     /* a particle covers its share of a cell: (dx^dim / ppc)^(1/dim) */
     double r = 0.5 * f.sc * pow(n > 0 ? pcold(&s->ps, PC_VOL0)[0] : s->def.dx * s->def.dx, 1.0 / s->def.dim);
     if (r < 0.7) r = 0.7;
@@ -371,7 +404,8 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
     cairo_restore(c->cr);
     if (ord) mem_free(ord, sizeof(int) * (size_t)n);
     mem_free(val, bytes);
-    colliders(c, &f, s, uv, s->def.dim == 3 ? 2 : -1, depths, s->def.dim == 3 ? 5 : 1, 1);
+    colliders_draw(c, &cm, 1);
+    collider_map_free(&cm);
     axes(c, &f, "x", "y");
     colorbar(c, &f, map, d->field, info->unit, info);
     title(c, &f, s);
@@ -441,8 +475,11 @@ static hearth_status draw_slice(canvas *c, const hearth_scene *s, const hearth_p
     cairo_restore(c->cr);
     cairo_surface_destroy(img);
     const int uv[2] = {u, v};
-    colliders(c, &f, s, uv, s->def.dim == 3 ? d->axis : -1, &at, 1, 0);
-    colliders(c, &f, s, uv, s->def.dim == 3 ? d->axis : -1, &at, 1, 1);
+    collider_map cm;
+    if ((st = collider_map_make(&cm, &f, s, uv, s->def.dim == 3 ? d->axis : -1, &at, 1, err))) return st;
+    colliders_draw(c, &cm, 0);
+    colliders_draw(c, &cm, 1);
+    collider_map_free(&cm);
     axes(c, &f, names[u], names[v]);
     colorbar(c, &f, map, d->field, info->unit, info);
     title(c, &f, s);
