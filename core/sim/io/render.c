@@ -99,7 +99,7 @@ static hearth_status scalar_per_particle(const hearth_scene *s, const char *fiel
 /* Margins in units of the font size fs, which follows the picture's width:
  * a title line above, tick labels and an axis name below and left, the
  * colour bar with its tick labels right. */
-static double font_size(int width) { return fmin(14, fmax(8, width / 60.0)); }
+static double font_size(int width) { return fmin(16, fmax(8, width / 50.0)); }
 static void margins(double fs, double *l, double *r, double *t, double *b) {
     *l = 5.2 * fs, *r = 7.6 * fs, *t = 2.6 * fs, *b = 3.4 * fs;
 }
@@ -209,7 +209,7 @@ static void colorbar(canvas *c, const frame *f, int map, const char *field, cons
     }
     snprintf(buf, sizeof buf, "%s (%s)", field, unit);
     double tw = canvas_text_width(c, buf, 0.9 * fs);
-    double tx = fmin(bx, c->w - 0.3 * fs - tw); /* right-aligned to the canvas when the name is long */
+    double tx = fmin(bx, c->w - 0.7 * fs - tw); /* right-aligned to the canvas when the name is long */
     canvas_text(c, fmax(0.3 * fs, tx), by - 0.45 * fs, buf, 0.9 * fs, CANVAS_LEFT, CANVAS_BASELINE, 0, FG);
 }
 
