@@ -398,9 +398,9 @@ hearth_status hearth_plot_write_png(const hearth_plot *p, const char *path, hear
     line(f, left, top + ph, left + pw, top + ph, C_AXIS, 1);
     line(f, left, top, left, top + ph, C_AXIS, 1);
     line(f, left + pw, top, left + pw, top + ph, C_AXIS, 1);
-    /* the series stay inside the frame */
+    /* the series stay inside the frame, but a marker on its edge shows whole */
     cairo_save(F.c.cr);
-    cairo_rectangle(F.c.cr, left, top, pw + 1, ph + 1);
+    cairo_rectangle(F.c.cr, left - RING_OUT - 1, top - RING_OUT - 1, pw + 2 * RING_OUT + 3, ph + 2 * RING_OUT + 3);
     cairo_clip(F.c.cr);
     for (int pass = 1; pass >= 0; pass--)
         for (int k = 0; k < p->n; k++)
