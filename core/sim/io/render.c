@@ -146,7 +146,7 @@ static void axes(canvas *c, const frame *f, const char *uname, const char *vname
     cairo_stroke(cr);
     double t[8], step;
     char buf[48];
-    int n = canvas_ticks(f->lo[0], f->hi[0], 3, 6, t, &step);
+    int n = canvas_ticks(f->lo[0], f->hi[0], 4, 7, t, &step);
     for (int k = 0; k < n; k++) {
         double x = px_of(f, t[k]);
         cairo_move_to(cr, x, f->y0 + f->h + 0.5);
