@@ -375,8 +375,18 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
     }
     colliders_draw(c, &cm, 0);
     /* a particle covers its share of a cell: (dx^dim / ppc)^(1/dim) */
-    double r = 0.5 * f.sc * pow(n > 0 ? pcold(&s->ps, PC_VOL0)[0] : s->def.dx * s->def.dx, 1.0 / s->def.dim);
-    if (r < 0.7) r = 0.7;
+    /* a particle covers its share of the material now: (V0 J)^(1/dim) across,
+     * so a risen loaf stays solid rather than breaking into dots */
+    double *J = n > 0 ? mem_alloc(sizeof(double) * (size_t)n) : NULL;
+    if (n > 0 && !J) {
+        collider_map_free(&cm);
+        mem_free(val, bytes);
+        return err_set(err, HEARTH_ERR_NOMEM, "out of memory rendering '%s'", d->field);
+    }
+    if (J && hearth_scene_particle_field(s, "J", J, err) != HEARTH_OK)
+        for (int i = 0; i < n; i++) J[i] = 1; /* no deformation gradient (cannot happen for live particles): as seeded */
+    err_clear(err);
+    const double *V0 = n > 0 ? pcold(&s->ps, PC_VOL0) : NULL;
     /* 3D: draw far to near so the nearest particle wins the pixel */
     int *ord = NULL;
     if (s->def.dim == 3 && n > 0 && (ord = mem_alloc(sizeof(int) * (size_t)n))) {
@@ -398,11 +408,14 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
         unsigned char rgb[3];
         cmap_eval(map, (val[i] - info->range[0]) / span, rgb);
         canvas_rgb(c, rgb, 1);
+        const double J1 = isfinite(J[i]) ? fmin(8, fmax(0.125, J[i])) : 1;
+        const double r = fmax(0.7, 0.5 * f.sc * pow(V0[i] * J1, 1.0 / s->def.dim));
         cairo_arc(c->cr, px_of(&f, X[3 * i]), py_of(&f, X[3 * i + 1]), r, 0, 2 * CANVAS_PI);
         cairo_fill(c->cr);
     }
     cairo_restore(c->cr);
     if (ord) mem_free(ord, sizeof(int) * (size_t)n);
+    if (J) mem_free(J, sizeof(double) * (size_t)n);
     mem_free(val, bytes);
     colliders_draw(c, &cm, 1);
     collider_map_free(&cm);
