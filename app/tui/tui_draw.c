@@ -1,5 +1,6 @@
 /* tui_draw.c: field values to half-block cells, colour bars and sparklines.
- * Pure functions: see tui_draw.h. */
+ * Pure functions (see tui_draw.h), but for the colour map the views draw with
+ * (tui_use_colormap), which the one drawing thread sets around each view. */
 #include "tui_draw.h"
 
 #include <hearth/hearth.h>

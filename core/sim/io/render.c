@@ -409,7 +409,7 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
         cmap_eval(map, (val[i] - info->range[0]) / span, rgb);
         canvas_rgb(c, rgb, 1);
         const double J1 = isfinite(J[i]) ? fmin(8, fmax(0.125, J[i])) : 1;
-        const double r = fmax(0.7, 0.5 * f.sc * pow(V0[i] * J1, 1.0 / s->def.dim));
+        const double r = fmax(0.7, 0.65 * f.sc * pow(V0[i] * J1, 1.0 / s->def.dim)); /* 1.3 spacings across: no lattice gaps */
         cairo_arc(c->cr, px_of(&f, X[3 * i]), py_of(&f, X[3 * i + 1]), r, 0, 2 * CANVAS_PI);
         cairo_fill(c->cr);
     }
