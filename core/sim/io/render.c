@@ -383,8 +383,10 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
         mem_free(val, bytes);
         return err_set(err, HEARTH_ERR_NOMEM, "out of memory rendering '%s'", d->field);
     }
-    if (J && hearth_scene_particle_field(s, "J", J, err) != HEARTH_OK)
-        for (int i = 0; i < n; i++) J[i] = 1; /* no deformation gradient (cannot happen for live particles): as seeded */
+    /* MPM only: an SPH particle's J comes from its density's kernel sum, which
+     * thins out at a free surface and would draw spray as large discs */
+    if (J && (s->def.solver != HEARTH_SOLVER_MPM || hearth_scene_particle_field(s, "J", J, err) != HEARTH_OK))
+        for (int i = 0; i < n; i++) J[i] = 1; /* as seeded */
     err_clear(err);
     const double *V0 = n > 0 ? pcold(&s->ps, PC_VOL0) : NULL;
     /* 3D: draw far to near so the nearest particle wins the pixel */
@@ -408,7 +410,7 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
         unsigned char rgb[3];
         cmap_eval(map, (val[i] - info->range[0]) / span, rgb);
         canvas_rgb(c, rgb, 1);
-        const double J1 = isfinite(J[i]) ? fmin(8, fmax(0.125, J[i])) : 1;
+        const double J1 = isfinite(J[i]) ? fmin(4, fmax(0.25, J[i])) : 1;
         const double r = fmax(0.7, 0.65 * f.sc * pow(V0[i] * J1, 1.0 / s->def.dim)); /* 1.3 spacings across: no lattice gaps */
         cairo_arc(c->cr, px_of(&f, X[3 * i]), py_of(&f, X[3 * i + 1]), r, 0, 2 * CANVAS_PI);
         cairo_fill(c->cr);
