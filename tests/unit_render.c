@@ -180,7 +180,11 @@ TEST(png_colorbar_ticks) {
         CHECK(mark[0] < 140);
         CHECK(ink > 10);
     }
-    /* a dimensionless field says so */
+    /* a dimensionless field says so ("-", never a lone "1" that reads as a tick) */
+    d.field = "J";
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
+    CHECK(!strcmp(in.unit, "-"));
+    /* a speed's bar starts at rest */
     d.field = "speed";
     CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
     CHECK(!strcmp(in.unit, "m/s") && in.range[0] == 0);
