@@ -120,6 +120,7 @@ int cmd_demo(int argc, char **argv) {
     progress_start(&pr, until, quiet);
     int status = 0;
     hearth_stats st;
+    double held[2] = {0, 1}; /* the speed range the frames so far were drawn with (m/s) */
     for (long f = 0; f <= frames; f++) {
         const double t = until * (double)f / frames;
         hearth_status rc = HEARTH_OK;
@@ -140,11 +141,17 @@ int cmd_demo(int argc, char **argv) {
         }
         char path[4200];
         snprintf(path, sizeof path, "%s/frame_%04ld.png", out, f);
-        if (hearth_render_particles(s, "speed", path, 800, 620, &err)) {
+        /* the frames share one speed scale: each holds the range drawn so far, widened when a frame exceeds it */
+        hearth_picture_def pd = hearth_default_picture_def();
+        pd.field = "speed", pd.kind = HEARTH_PICTURE_PARTICLES, pd.width = 800, pd.height = 620;
+        if (f > 0) pd.range_mode = HEARTH_RANGE_GROW, pd.range[0] = held[0], pd.range[1] = held[1];
+        hearth_picture_info info;
+        if (hearth_render(s, &pd, path, &info, &err)) {
             fprintf(stderr, "hearth demo: %s\n", err.msg);
             status = 1;
             break;
         }
+        held[0] = info.range[0], held[1] = info.range[1];
     }
     if (status == 0) {
         progress_finish(&pr, st.t, st.step);

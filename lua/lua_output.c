@@ -105,48 +105,102 @@ const char *hl_in_path(lua_State *L, const char *path, char *buf, size_t n) {
     return buf;
 }
 
-/* s:png(field, path, {kind = "slice"|"particles", width, height, axis, at}) */
+/* Two numbers {lo, hi} at index idx into r, or a message naming the option. */
+static void range_pair(lua_State *L, int idx, const char *opt, double r[2]) {
+    if (!lua_istable(L, idx) || lua_rawlen(L, idx) != 2)
+        luaL_error(L, "png: %s = {lo, hi}, two numbers in the field's unit", opt);
+    for (int k = 0; k < 2; k++) {
+        lua_rawgeti(L, idx, k + 1);
+        if (!lua_isnumber(L, -1)) luaL_error(L, "png: %s = {lo, hi}, two numbers in the field's unit", opt);
+        r[k] = lua_tonumber(L, -1);
+        lua_pop(L, 1);
+    }
+    if (!(r[0] < r[1])) luaL_error(L, "png: %s = {%f, %f}; the first must be smaller", opt, r[0], r[1]);
+}
+
+/* s:png(field, path, {kind = "slice"|"particles", width, height, axis, at,
+ * range = {lo, hi} | "frame", colormap, grow = {lo, hi}}) -> path, info
+ * (info: range, data, ticks, colormap, unit, width, height: what it drew with) */
 static int l_png(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
-    const char *field = luaL_checkstring(L, 2);
+    hearth_picture_def d = hearth_default_picture_def();
+    d.field = luaL_checkstring(L, 2);
     char buf[4096];
     const char *path = hl_out_path(L, "s:png", luaL_checkstring(L, 3), HL_PATH_MKDIRS, buf, sizeof buf);
     const char *kind = "slice";
-    const hearth_scene_def *d = hearth_scene_get_def(u->s);
-    int width = 800, height = 0, axis = 2;
-    double at = 0.5 * (d->lo[2] + d->hi[2]);
     if (lua_istable(L, 4)) {
-        static const char *const keys[] = {"kind", "width", "height", "axis", "at", NULL};
+        static const char *const keys[] = {"kind", "width", "height", "axis", "at", "range", "colormap", "grow", NULL};
         lua_pushnil(L);
         while (lua_next(L, 4)) { /* a misspelt option must not be silently ignored */
             int ok = 0;
             for (int k = 0; keys[k]; k++) ok |= lua_type(L, -2) == LUA_TSTRING && !strcmp(lua_tostring(L, -2), keys[k]);
-            if (!ok) return luaL_error(L, "png: unknown option '%s' (valid: kind, width, height, axis, at)", luaL_tolstring(L, -2, NULL));
+            if (!ok)
+                return luaL_error(L, "png: unknown option '%s' (valid: kind, width, height, axis, at, range, colormap, grow)",
+                                  luaL_tolstring(L, -2, NULL));
             lua_pop(L, 1);
         }
         if (lua_getfield(L, 4, "kind") == LUA_TSTRING) kind = lua_tostring(L, -1);
-        if (lua_getfield(L, 4, "width") == LUA_TNUMBER) width = (int)lua_tointeger(L, -1);
-        if (lua_getfield(L, 4, "height") == LUA_TNUMBER) height = (int)lua_tointeger(L, -1);
+        if (lua_getfield(L, 4, "width") == LUA_TNUMBER) d.width = (int)lua_tointeger(L, -1);
+        if (lua_getfield(L, 4, "height") == LUA_TNUMBER) d.height = (int)lua_tointeger(L, -1);
         if (lua_getfield(L, 4, "axis") == LUA_TSTRING) {
             const char *a = lua_tostring(L, -1);
-            axis = a[0] == 'x' ? 0 : a[0] == 'y' ? 1 : 2;
+            d.axis = a[0] == 'x' ? 0 : a[0] == 'y' ? 1 : 2;
         }
-        if (lua_getfield(L, 4, "at") == LUA_TNUMBER) at = lua_tonumber(L, -1);
+        if (lua_getfield(L, 4, "at") == LUA_TNUMBER) d.at = lua_tonumber(L, -1);
         lua_pop(L, 5);
+        int t = lua_getfield(L, 4, "range");
+        if (t == LUA_TSTRING && !strcmp(lua_tostring(L, -1), "frame")) d.range_mode = HEARTH_RANGE_FRAME;
+        else if (t == LUA_TTABLE) range_pair(L, -1, "range", d.range), d.range_mode = HEARTH_RANGE_FIXED;
+        else if (t != LUA_TNIL)
+            return luaL_error(L, "png: range = {lo, hi} (the field's unit) or \"frame\" (each frame its own), got %s",
+                              luaL_typename(L, -1));
+        lua_pop(L, 1);
+        if (lua_getfield(L, 4, "grow") == LUA_TTABLE && d.range_mode == HEARTH_RANGE_DEFAULT)
+            range_pair(L, -1, "grow", d.range), d.range_mode = HEARTH_RANGE_GROW;
+        lua_pop(L, 1);
+        t = lua_getfield(L, 4, "colormap");
+        if (t == LUA_TSTRING) d.colormap = lua_tostring(L, -1); /* stays on the stack while the picture is drawn */
+        else if (t != LUA_TNIL) return luaL_error(L, "png: colormap = a name (%s), got %s", hearth_colormap_names(), luaL_typename(L, -1));
     }
-    if (width < 64 || width > 8192) return luaL_error(L, "png: width = %d px; valid range [64, 8192]", width);
-    if (height == 0) /* follow the domain's aspect (plus room for the title and colour bar) */
-        height = (int)((width - 120) * (d->hi[1] - d->lo[1]) / (d->hi[0] - d->lo[0])) + 38;
-    if (height < 64) height = 64;
-    if (height > 8192) return luaL_error(L, "png: height = %d px; valid range [64, 8192]", height);
+    if (!strcmp(kind, "particles")) d.kind = HEARTH_PICTURE_PARTICLES;
+    else if (strcmp(kind, "slice") != 0) return luaL_error(L, "png: kind = '%s'; valid: 'slice', 'particles'", kind);
+    if (d.width < 64 || d.width > 8192) return luaL_error(L, "png: width = %d px; valid range [64, 8192]", d.width);
+    if (d.height != 0 && (d.height < 64 || d.height > 8192))
+        return luaL_error(L, "png: height = %d px; valid range [64, 8192]", d.height);
     hearth_error err;
-    hearth_status st;
-    if (!strcmp(kind, "particles")) st = hearth_render_particles(u->s, field, path, width, height, &err);
-    else if (!strcmp(kind, "slice")) st = hearth_render_slice(u->s, field, axis, at, path, width, &err);
-    else return luaL_error(L, "png: kind = '%s'; valid: 'slice', 'particles'", kind);
-    if (st) return hl_raise(L, &err);
+    hearth_picture_info info;
+    if (hearth_render(u->s, &d, path, &info, &err)) return hl_raise(L, &err);
     lua_pushstring(L, path);
-    return 1;
+    lua_createtable(L, 0, 7);
+    lua_createtable(L, 2, 0);
+    for (int k = 0; k < 2; k++) lua_pushnumber(L, info.range[k]), lua_rawseti(L, -2, k + 1);
+    lua_setfield(L, -2, "range");
+    lua_createtable(L, 2, 0);
+    for (int k = 0; k < 2; k++) lua_pushnumber(L, info.data[k]), lua_rawseti(L, -2, k + 1);
+    lua_setfield(L, -2, "data");
+    lua_createtable(L, info.nticks, 0);
+    for (int k = 0; k < info.nticks; k++) lua_pushnumber(L, info.ticks[k]), lua_rawseti(L, -2, k + 1);
+    lua_setfield(L, -2, "ticks");
+    lua_pushstring(L, info.colormap);
+    lua_setfield(L, -2, "colormap");
+    lua_pushstring(L, info.unit);
+    lua_setfield(L, -2, "unit");
+    lua_pushinteger(L, info.width);
+    lua_setfield(L, -2, "width");
+    lua_pushinteger(L, info.height);
+    lua_setfield(L, -2, "height");
+    return 2;
+}
+
+/* core.colormap(name, t) -> r, g, b (0..255): a colour map's colour at t in
+ * [0, 1]; an unknown name is an error naming the valid ones */
+static int l_colormap(lua_State *L) {
+    const char *name = luaL_checkstring(L, 1);
+    unsigned char rgb[3];
+    if (hearth_colormap_rgb(name, luaL_checknumber(L, 2), rgb))
+        return luaL_error(L, "colormap '%s' is unknown; valid: %s", name, hearth_colormap_names());
+    for (int k = 0; k < 3; k++) lua_pushinteger(L, rgb[k]);
+    return 3;
 }
 
 static int dump(lua_State *L, const char *call, hearth_status (*fn)(const hearth_scene *, const char *, hearth_error *)) {
@@ -187,4 +241,6 @@ void hl_open_output(lua_State *L) {
     lua_pop(L, 2);
     lua_pushcfunction(L, l_write_atomic);
     lua_setfield(L, -2, "write_atomic");
+    lua_pushcfunction(L, l_colormap);
+    lua_setfield(L, -2, "colormap");
 }

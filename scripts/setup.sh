@@ -14,11 +14,14 @@ hearth_missing_packages() {
         pkg-config --exists lua5.4 || missing+=(liblua5.4-dev)
         pkg-config --exists ncursesw || missing+=(libncurses-dev)
         pkg-config --exists libpng || missing+=(libpng-dev)
+        pkg-config --exists cairo || missing+=(libcairo2-dev)
     else
-        missing+=(liblua5.4-dev libncurses-dev libpng-dev)
+        missing+=(liblua5.4-dev libncurses-dev libpng-dev libcairo2-dev)
     fi
     # the -direct terminal descriptions, so COLORTERM=truecolor gets 24-bit colour in the dashboard
     [ -e /usr/share/terminfo/x/xterm-direct ] || [ -e /lib/terminfo/x/xterm-direct ] || missing+=(ncurses-term)
+    # the pictures' text (Cairo finds it through fontconfig)
+    [ -e /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf ] || missing+=(fonts-dejavu-core)
     echo "${missing[@]}"
 }
 

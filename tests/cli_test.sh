@@ -33,6 +33,32 @@ cli_lua_md_example_runs)
     (cd "$tmp" && "$hearth" run example.lua --quiet --until 0.1) || fail "docs/lua.md's example failed"
     ls "$tmp"/hearth-out/example/frames/speed_0000.png >/dev/null 2>&1 || fail "the example wrote no frames: $(ls -R "$tmp/hearth-out")"
     ;;
+cli_lua_md_png_example_runs)
+    # the Pictures example of docs/lua.md runs as printed: its frames, and the slice with the range it was given
+    awk '/^## Pictures/{p=1} p&&/^```lua/{f=1;next} f&&/^```/{exit} f' "$HEARTH_SOURCE_ROOT/docs/lua.md" >"$tmp/pictures.lua"
+    [ -s "$tmp/pictures.lua" ] || fail "docs/lua.md has no Pictures example"
+    (cd "$tmp" && "$hearth" run pictures.lua --quiet >out.txt) || fail "docs/lua.md's Pictures example failed"
+    cat "$tmp/out.txt"
+    grep -q "heat_slice.png	20.0	200.0	50.0 100.0 150.0 200.0" "$tmp/out.txt" || fail "the example's slice: $(cat "$tmp/out.txt")"
+    n=$(ls "$tmp"/hearth-out/pictures/heat_*.png 2>/dev/null | wc -l)
+    [ "$n" -eq 7 ] || fail "expected 6 frames and the slice, got $n: $(ls -R "$tmp/hearth-out")"
+    for f in "$tmp"/hearth-out/pictures/heat_*.png; do png_ok "$f" || fail "$f does not decode"; done
+    ;;
+cli_fit_plot_drawn)
+    # hearth fit draws its data (blue dots) and the fitted curve (a red line) on the one plotting module
+    printf 'shear_rate,stress\n' >"$tmp/hb.csv"
+    for r in 1 2 5 10 20 50 100 200; do
+        python3 -c "print('$r,%.6g' % (50 + 10 * $r ** 0.5))" >>"$tmp/hb.csv"
+    done
+    "$hearth" fit "$tmp/hb.csv" --out "$tmp/fit" >"$tmp/fit.txt" || fail "hearth fit failed: $(cat "$tmp/fit.txt")"
+    grep -q "h          0.49999" "$tmp/fit.txt" || fail "the fit missed h = 0.5: $(cat "$tmp/fit.txt")"
+    r=$(python3 "$here/png_check.py" "$tmp/fit/hb_fit.png" 760 520 --count 31,119,180 --count 214,39,40) ||
+        fail "the fit's PNG: $r"
+    echo "$r"
+    dots=$(echo "$r" | sed -n 's/^31,119,180 //p') line=$(echo "$r" | sed -n 's/^214,39,40 //p')
+    [ "$dots" -ge 8 ] || fail "data dots: $dots blue pixels for 8 points"
+    [ "$line" -ge 200 ] || fail "fitted curve: $line red pixels"
+    ;;
 cli_help_scene)
     # every setting of the schema is listed with its unit, default and range; --help points there
     out=$("$hearth" help scene) || fail "hearth help scene failed"

@@ -312,6 +312,38 @@ lua_png_outputs)
     done
     has out.txt "bad_kind false png: kind = 'pixels'; valid: 'slice', 'particles'" "a bad kind"
     ;;
+png_range_option)
+    # range = {lo, hi} is used as given (ticks follow it), "frame" is the frame's own data,
+    # the default is the field's fixed range; bad ranges are refused with the option named
+    run png_options.lua --set case=range
+    cat out.txt
+    expect_rc 0 "png options scene"
+    out="hearth-out/png_options"
+    has out.txt "default range 20 180 ticks 40.0,80.0,120.0,160.0 colormap inferno unit °C" "the default temperature range: seeded 20 degC to the 180 degC oven"
+    has out.txt "given range 20 200 ticks 50.0,100.0,150.0,200.0" "range = {20, 200} used as given"
+    has out.txt "frame range 19 21" "range = 'frame': the frame's data (all 20 degC, widened)"
+    has out.txt "refused true png: range = {200.0, 20.0}; the first must be smaller" "a backwards range"
+    has out.txt "refused true png: range = {lo, hi}, two numbers" "a range of one number"
+    has out.txt "did you mean 'range'?" "a misspelt run option"
+    cmp -s "$out/default.png" "$out/range.png" && fail "range = {20, 200} drew the same picture as the default 20..180"
+    for f in run_0000.png run_0001.png run_0002.png; do
+        r=$(png_check "$out/$f" 800) || fail "s:run frame $f"
+    done
+    echo "run frames: $r"
+    ;;
+png_colormap_option)
+    run png_options.lua --set case=colormap
+    cat out.txt
+    expect_rc 0 "png options scene"
+    out="hearth-out/png_options"
+    has out.txt "cividis range 20 180 ticks 40.0,80.0,120.0,160.0 colormap cividis" "colormap = 'cividis'"
+    has out.txt "diverging range -1 1 ticks -1.0,-0.5,0.0,0.5,1.0 colormap coolwarm unit m/s" "the diverging map on a signed field"
+    has out.txt "colormap browning" "the browning map on any field"
+    has out.txt "refused true picture: colormap 'jet' is unknown; valid: viridis, inferno, cividis, coolwarm (or diverging), browning, gray" "an unknown colour map, the valid ones named"
+    has out.txt "run_bad_map false s:run: png: colormap 'jett' is unknown; valid: viridis" "s:run checks the colour map before it runs"
+    cmp -s "$out/cividis.png" "$out/browning.png" && fail "two colour maps drew the same picture"
+    png_check "$out/run_0002.png" >/dev/null || fail "s:run frames with colormap = 'cividis'"
+    ;;
 lua_events)
     run events.lua
     cat out.txt

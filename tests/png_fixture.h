@@ -1,5 +1,6 @@
 /* png_fixture.h: PNG files of every flavour, written with libpng directly,
- * for the reader's tests (unit_image.c, unit_mask.c).
+ * for the reader's tests (unit_image.c, unit_mask.c), and decode_rgb for the
+ * tests that read pictures back (unit_plot.c, unit_render.c).
  *
  * A picture is given as "dark" and "light" pixels (a predicate); each flavour
  * says what samples those get in its own colour type and bit depth, and what
@@ -151,5 +152,23 @@ static inline int write_png_header_only(const char *path, uint32_t w, uint32_t h
     if (!fp) return -1;
     size_t ok = fwrite(b, sizeof b, 1, fp);
     return fclose(fp) == 0 && ok == 1 ? 0 : -1;
+}
+/* Decode path with libpng's simplified API to 8-bit RGB (malloc'd, rows top
+ * first); NULL on failure. For the tests that read pictures back. */
+static inline unsigned char *decode_rgb(const char *path, int *w, int *h) {
+    png_image im;
+    memset(&im, 0, sizeof im);
+    im.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&im, path)) return NULL;
+    im.format = PNG_FORMAT_RGB;
+    unsigned char *buf = malloc(PNG_IMAGE_SIZE(im));
+    if (!buf || !png_image_finish_read(&im, NULL, buf, 0, NULL)) {
+        png_image_free(&im);
+        free(buf);
+        return NULL;
+    }
+    *w = (int)im.width;
+    *h = (int)im.height;
+    return buf;
 }
 #endif

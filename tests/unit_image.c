@@ -1,4 +1,4 @@
-/* unit_image.c: PNG files, colour maps and the built-in font.
+/* unit_image.c: PNG files, colour maps and the Cairo canvas (text, ticks, units).
  *
  * PNGs written by hearth are decoded here with libpng's own simplified API,
  * so a bug shared by png_write_rgb and png_read_gray cannot hide itself. */
@@ -14,8 +14,7 @@
 
 #include "alloc.h"
 #include "colormap.h"
-#include "font.h"
-#include "image.h"
+#include "canvas.h"
 #include "io_png.h"
 #include "fs_fixture.h"
 #include "png_fixture.h"
@@ -35,23 +34,6 @@ static void spit(const char *path, const void *data, size_t n) {
     fclose(f);
 }
 
-/* Decode path with libpng's simplified API to 8-bit RGB; NULL on failure. */
-static unsigned char *decode_rgb(const char *path, int *w, int *h) {
-    png_image im;
-    memset(&im, 0, sizeof im);
-    im.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&im, path)) return NULL;
-    im.format = PNG_FORMAT_RGB;
-    unsigned char *buf = malloc(PNG_IMAGE_SIZE(im));
-    if (!buf || !png_image_finish_read(&im, NULL, buf, 0, NULL)) {
-        png_image_free(&im);
-        free(buf);
-        return NULL;
-    }
-    *w = (int)im.width;
-    *h = (int)im.height;
-    return buf;
-}
 
 static int lum601(int r, int g, int b) { return (int)lround(0.299 * r + 0.587 * g + 0.114 * b); }
 
@@ -470,62 +452,124 @@ TEST(colormap_endpoints) {
     CHECK(cmap_by_name("inferno") == CMAP_INFERNO);
     CHECK(cmap_by_name("gray") == CMAP_GRAY);
     CHECK(cmap_by_name("jet") == -1);
+    CHECK(cmap_by_name("cividis") == CMAP_CIVIDIS && cmap_by_name("coolwarm") == CMAP_COOLWARM);
+    CHECK(cmap_by_name("diverging") == CMAP_COOLWARM && !strcmp(cmap_name(CMAP_BROWNING), "browning"));
+    check_rgb(CMAP_CIVIDIS, 0.0, 0, 34, 78);
+    check_rgb(CMAP_CIVIDIS, 1.0, 254, 232, 56);
+    check_rgb(CMAP_COOLWARM, 0.0, 59, 76, 192);
+    check_rgb(CMAP_COOLWARM, 0.5, 221, 220, 220); /* the light middle of a diverging map */
+    check_rgb(CMAP_COOLWARM, 1.0, 180, 4, 38);
+    /* cividis and the browning map darken or lighten steadily too (the crust darkens with the index) */
+    double pc = -1, pb = 1e9;
+    for (int i = 0; i < 64; i++) {
+        unsigned char q[3];
+        cmap_eval(CMAP_CIVIDIS, i / 63.0, q);
+        double l = 0.299 * q[0] + 0.587 * q[1] + 0.114 * q[2];
+        CHECK(l > pc);
+        pc = l;
+        cmap_eval(CMAP_BROWNING, i / 63.0, q);
+        l = 0.299 * q[0] + 0.587 * q[1] + 0.114 * q[2];
+        CHECK(l < pb);
+        pb = l;
+    }
     CHECK(cmap_by_name("") == -1);
     CHECK(cmap_by_name(NULL) == -1);
 }
 
-/* ---- font ------------------------------------------------------------ */
+/* ---- the canvas ----------------------------------------------------- */
 
-TEST(font_renders_digits) {
-    static const unsigned char white[3] = {255, 255, 255};
-    const char *digits = "0123456789";
-    for (int scale = 1; scale <= 3; scale++)
-        CHECK(font_text_width(digits, scale) == 10 * 6 * scale);
-    CHECK(font_text_width("", 1) == 0);
-    CHECK(font_text_width("ab\nc", 1) == 12);
-    CHECK(font_text_width("20\xc2\xb0""C", 1) == 4 * 6); /* the degree sign is one cell */
-
-    enum { W = 130, H = 24 };
-    unsigned char rgb[W * H * 3];
-    memset(rgb, 0, sizeof rgb);
-    font_draw(rgb, W, H, 2, 2, digits, 2, white);
-    int lit = 0;
-    for (size_t i = 0; i < sizeof rgb; i += 3) lit += rgb[i] == 255;
-    CHECK(lit > 10 * 8 * 4); /* every digit has at least 8 pixels, 4 per pixel at scale 2 */
-    /* Nothing drawn right of the text's width. */
-    int stray = 0;
-    for (int y = 0; y < H; y++)
-        for (int x = 2 + 120; x < W; x++) stray += rgb[(y * W + x) * 3] != 0;
-    CHECK(stray == 0);
-
-    /* Each digit on its own: all ten masks differ. */
-    unsigned char cell[10][6 * 9 * 3];
-    for (int d = 0; d < 10; d++) {
-        char s[2] = {(char)('0' + d), 0};
-        memset(cell[d], 0, sizeof cell[d]);
-        font_draw(cell[d], 6, 9, 0, 0, s, 1, white);
-        int on = 0;
-        for (size_t i = 0; i < sizeof cell[d]; i += 3) on += cell[d][i] != 0;
-        CHECK(on >= 8);
-    }
-    for (int a = 0; a < 10; a++)
-        for (int b = a + 1; b < 10; b++) {
-            if (memcmp(cell[a], cell[b], sizeof cell[a]) == 0)
-                fprintf(stderr, "digits %d and %d look the same\n", a, b);
-            CHECK(memcmp(cell[a], cell[b], sizeof cell[a]) != 0);
+/* Ink of a w x h canvas: pixels that are not the white background. */
+static int ink(canvas *c, int x0, int x1) {
+    cairo_surface_flush(c->sf);
+    const unsigned char *d = cairo_image_surface_get_data(c->sf);
+    int stride = cairo_image_surface_get_stride(c->sf), n = 0;
+    for (int y = 0; y < c->h; y++)
+        for (int x = x0; x < x1 && x < c->w; x++) {
+            uint32_t p;
+            memcpy(&p, d + (size_t)y * stride + 4 * (size_t)x, 4);
+            n += (p & 0xffffff) != 0xffffff;
         }
+    return n;
+}
 
-    /* Clipping: text hanging off every edge must stay inside the buffer
-     * (ASan checks the writes); a canvas with text partly drawn still works. */
-    img im;
+/* Text is drawn with a real font: digits leave ink, each digit's ink differs
+ * from the others', wider text takes more room, and text hanging off every
+ * edge is clipped (ASan checks the writes). */
+TEST(canvas_text_draws) {
+    static const unsigned char white[3] = {255, 255, 255}, black[3] = {0, 0, 0};
     hearth_error err = {0};
-    CHECK(img_init(&im, 20, 10, NULL, &err) == HEARTH_OK);
-    img_text(&im, -7, -5, "Wg", 3, white);
-    img_text(&im, 15, 6, "Hy\xe2\x82\xac", 2, white);
-    img_text(&im, 100000, -100000, "x", 1000, white);
-    img_free(&im);
+    canvas c;
+    CHECK(canvas_init(&c, 200, 40, white, &err) == HEARTH_OK);
+    CHECK(ink(&c, 0, 200) == 0);
+    double w1 = canvas_text_width(&c, "0", 20), w10 = canvas_text_width(&c, "0123456789", 20);
+    printf("width of '0' %.2f px, of ten digits %.2f px at 20 px\n", w1, w10);
+    CHECK(w1 > 5 && w1 < 20);
+    CHECK(fabs(w10 - 10 * w1) < 1.0); /* the digits of a sans face share one advance */
+    canvas_text(&c, 2, 20, "0123456789", 20, CANVAS_LEFT, CANVAS_MIDDLE, 0, black);
+    int all = ink(&c, 0, 200);
+    CHECK(all > 10 * 20);
+    CHECK(ink(&c, (int)ceil(2 + w10 + 2), 200) == 0); /* nothing right of the text's width */
+    int cells[10];
+    for (int d = 0; d < 10; d++) cells[d] = ink(&c, (int)(2 + d * w1), (int)(2 + (d + 1) * w1));
+    int distinct = 0; /* digits are told apart: their ink counts mostly differ (a tie or two is allowed) */
+    for (int a = 0; a < 10; a++) {
+        int seen = 0;
+        for (int b = 0; b < a; b++) seen |= cells[b] == cells[a];
+        distinct += !seen;
+    }
+    printf("%d distinct ink counts among the ten digits\n", distinct);
+    CHECK(distinct >= 8);
+    canvas_free(&c);
+    CHECK(canvas_init(&c, 20, 10, white, &err) == HEARTH_OK);
+    canvas_text(&c, -7, -5, "Wg", 30, CANVAS_LEFT, CANVAS_TOP, 0, black);
+    canvas_text(&c, 15, 6, "Hy\xe2\x82\xac", 20, CANVAS_CENTER, CANVAS_BASELINE, 1.0, black);
+    canvas_text(&c, 1e6, -1e6, "x", 1000, CANVAS_RIGHT, CANVAS_MIDDLE, 0, black);
+    CHECK(ink(&c, 0, 20) > 0);
+    canvas_free(&c);
+    CHECK(canvas_init(&c, 0, 10, white, &err) == HEARTH_ERR_PARAM);
+    CHECK(strstr(err.msg, "valid range") != NULL);
+    canvas_free(&c); /* a zeroed canvas frees */
+}
+
+/* Ticks are 1, 2, 2.5, 4 or 5 x 10^k, inside the range, and as many as asked
+ * for: a colour bar from 20 to 180 degC reads 40, 80, 120, 160,
+ * never the two end numbers alone. */
+TEST(canvas_ticks_nice) {
+    static const struct { double lo, hi; } cases[] = {{20, 180}, {0, 1}, {53.8, 63.2}, {-3e-4, 7e-4}, {117, 134},
+                                                     {0, 1e5}, {189, 189.0001}, {-1, 1}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        double t[8], step;
+        int n = canvas_ticks(cases[k].lo, cases[k].hi, 4, 6, t, &step);
+        printf("[%g, %g]: %d ticks, step %g:", cases[k].lo, cases[k].hi, n, step);
+        for (int i = 0; i < n; i++) printf(" %g", t[i]);
+        printf("\n");
+        CHECK(n >= 4 && n <= 6);
+        double e = pow(10, floor(log10(step))), m = step / e;
+        CHECK(fabs(m - 1) < 1e-9 || fabs(m - 2) < 1e-9 || fabs(m - 2.5) < 1e-9 || fabs(m - 4) < 1e-9 || fabs(m - 5) < 1e-9);
+        char prev[32] = "", lab[32];
+        for (int i = 0; i < n; i++) {
+            CHECK(t[i] >= cases[k].lo - 1e-9 * step && t[i] <= cases[k].hi + 1e-9 * step);
+            if (i) CHECK(fabs(t[i] - t[i - 1] - step) < 1e-6 * step);
+            canvas_tick_label(t[i], step, lab, sizeof lab); /* never "189 ... 189": each label its own number */
+            CHECK(strcmp(lab, prev) != 0);
+            memcpy(prev, lab, sizeof prev);
+        }
+    }
+    char buf[32];
+    canvas_tick_label(0.25, 0.25, buf, sizeof buf);
+    CHECK(!strcmp(buf, "0.25"));
+    canvas_tick_label(150, 50, buf, sizeof buf);
+    CHECK(!strcmp(buf, "150"));
+    canvas_tick_label(-1e-18, 0.5, buf, sizeof buf); /* treated as the value it is, not "-0" */
+    CHECK(strcmp(buf, "-0") != 0);
+    canvas_unit("1", buf, sizeof buf);
+    CHECK(!strcmp(buf, "-")); /* a dimensionless field says so, never a lone "1" */
+    canvas_unit("degC", buf, sizeof buf);
+    CHECK(!strcmp(buf, "\xc2\xb0" "C"));
+    canvas_unit("kg/m^3", buf, sizeof buf);
+    CHECK(!strcmp(buf, "kg/m\xc2\xb3"));
 }
 
 TEST_MAIN(T(png_roundtrip), T(png_atomic_on_failure), T(png_read_errors), T(png_read_flavours),
           T(png_read_size_limits), T(png_read_damaged), T(colormap_endpoints),
-          T(font_renders_digits))
+          T(canvas_text_draws), T(canvas_ticks_nice))

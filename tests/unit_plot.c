@@ -16,29 +16,13 @@
 #include "fs_fixture.h"
 #include "hearth/hearth.h"
 #include "hearth/plot.h"
+#include "png_fixture.h"
 #include "test.h"
 
 enum { W = 760, H = 520, LEFT = 78, TOP = 52, PW = 658, PH = 406 };
 
 static const unsigned char GREEN[3] = {44, 160, 44}, PURPLE[3] = {148, 103, 189};
 
-/* Decode path to 8-bit RGB (malloc'd), or NULL. */
-static unsigned char *decode_rgb(const char *path, int *w, int *h) {
-    png_image im;
-    memset(&im, 0, sizeof im);
-    im.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&im, path)) return NULL;
-    im.format = PNG_FORMAT_RGB;
-    unsigned char *buf = malloc(PNG_IMAGE_SIZE(im));
-    if (!buf || !png_image_finish_read(&im, NULL, buf, 0, NULL)) {
-        png_image_free(&im);
-        free(buf);
-        return NULL;
-    }
-    *w = (int)im.width;
-    *h = (int)im.height;
-    return buf;
-}
 
 static int is_rgb(const unsigned char *px, int w, int x, int y, const unsigned char c[3]) {
     return !memcmp(px + 3 * ((size_t)y * w + x), c, 3);
@@ -171,11 +155,11 @@ TEST(plot_layers_and_legend) {
             int line_seen = 0; /* the line between the dots, a quarter of the way along */
             for (int dy = -2; dy <= 2; dy++) line_seen |= is_rgb(px, W, LEFT + PW / 4, TOP + PH - PH / 4 + dy, PURPLE);
             CHECK(line_seen);
-            /* legend rows 14 px apart: a dot for "points", then the line's sample for "line" */
-            int y0 = behind ? TOP + PH - 6 - 2 * 14 : TOP + 10;
+            /* legend rows 17 px apart (room for a 12 px font): a dot for "points", then the line's sample for "line" */
+            int y0 = behind ? TOP + PH - 6 - 2 * 17 : TOP + 10;
             CHECK(is_rgb(px, W, LEFT + 16, y0 + 3, GREEN));
-            CHECK(is_rgb(px, W, LEFT + 16, y0 + 14 + 3, PURPLE));
-            CHECK(is_rgb(px, W, LEFT + 16, y0 + 14 + 4, PURPLE));
+            CHECK(is_rgb(px, W, LEFT + 16, y0 + 17 + 3, PURPLE));
+            CHECK(!is_rgb(px, W, LEFT + 16, y0 + 17 + 6, PURPLE)); /* a line, not a block */
         }
         free(px);
         hearth_plot_free(p);

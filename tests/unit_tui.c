@@ -144,6 +144,24 @@ TEST(draw_uniform_field_mid_colour) {
     CHECK(c.fg == tui_color(0.5, TUI_TRUECOLOR) && c.bg == c.fg);
 }
 
+/* The browning field is drawn in the crust's own map (raw dough to dark
+ * brown), as pictures draw it; other fields keep the dashboard's stops. */
+TEST(draw_browning_colormap) {
+    unsigned char c[3];
+    tui_use_colormap("browning");
+    tui_colormap(0, c);
+    CHECK(c[0] == 242 && c[1] == 226 && c[2] == 190);
+    tui_colormap(1, c);
+    CHECK(c[0] == 76 && c[1] == 38 && c[2] == 18);
+    tui_use_colormap(NULL);
+    tui_colormap(0, c);
+    CHECK(c[0] == 68 && c[1] == 1 && c[2] == 84);
+    tui_use_colormap("no_such_map"); /* an unknown name keeps the stops */
+    tui_colormap(0, c);
+    CHECK(c[0] == 68 && c[1] == 1 && c[2] == 84);
+    tui_use_colormap(NULL);
+}
+
 TEST(pick_color_mode) {
     CHECK(tui_pick_mode("dumb", NULL, 1, 256) == TUI_PLAIN);
     CHECK(tui_pick_mode(NULL, NULL, 1, 256) == TUI_PLAIN);
@@ -255,5 +273,5 @@ TEST(prompt_history_file) {
 
 TEST_MAIN(T(draw_truecolor_half_blocks), T(draw_lower_half_when_top_outside), T(draw_256_palette), T(draw_256_keeps_hue),
           T(key_bar_keeps_help_and_quit), T(draw_solids_fill_empty_pixels),
-          T(draw_ascii_density), T(draw_zoom_window), T(draw_uniform_field_mid_colour), T(pick_color_mode),
+          T(draw_ascii_density), T(draw_zoom_window), T(draw_uniform_field_mid_colour), T(draw_browning_colormap), T(pick_color_mode),
           T(sparkline_scaling), T(layout_sizes), T(prompt_editing), T(prompt_history_file))

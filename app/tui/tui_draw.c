@@ -1,6 +1,9 @@
 /* tui_draw.c: field values to half-block cells, colour bars and sparklines.
- * Pure functions: see tui_draw.h. */
+ * Pure functions (see tui_draw.h), but for the colour map the views draw with
+ * (tui_use_colormap), which the one drawing thread sets around each view. */
 #include "tui_draw.h"
+
+#include <hearth/hearth.h>
 
 #include <math.h>
 #include <stdlib.h>
@@ -18,7 +21,14 @@ tui_color_mode tui_pick_mode(const char *term, const char *no_color, int utf8, l
  * perceptually ordered and readable for the common colour blindnesses. */
 static const unsigned char stops[5][3] = {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
 
+/* the map the views draw with: NULL for the stops above, else a name of
+ * hearth_colormap_names() (the browning field's dough-to-crust map) */
+static const char *view_map;
+
+void tui_use_colormap(const char *name) { view_map = name; }
+
 void tui_colormap(double u, unsigned char rgb[3]) {
+    if (view_map && hearth_colormap_rgb(view_map, u, rgb) == 0) return;
     if (!(u > 0)) u = 0;
     if (u > 1) u = 1;
     double x = u * 4;

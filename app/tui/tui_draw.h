@@ -32,8 +32,12 @@ typedef struct tui_cell {
 /// locale's character set is UTF-8), colors (the terminal's colour count).
 tui_color_mode tui_pick_mode(const char *term, const char *no_color, int utf8, long colors);
 
-/// The colour map (viridis-like, our own stops) at u in [0, 1] (clamped).
+/// The colour map at u in [0, 1] (clamped): viridis-like, our own stops, or
+/// the map chosen with tui_use_colormap.
 void tui_colormap(double u, unsigned char rgb[3]);
+/// Draw with the named picture colour map (hearth_colormap_names(); the name
+/// must outlive its use) or, for NULL or an unknown name, the stops above.
+void tui_use_colormap(const char *name);
 /// The nearest xterm 256-palette entry to rgb (cube or grey ramp).
 int tui_rgb_to_256(const unsigned char rgb[3]);
 /// A cell colour for u in [0, 1] in mode m (TUI_DEFAULT for NaN or a colourless mode).

@@ -251,6 +251,11 @@ static void draw_view(tui_app *a, int k, const tui_layout *L, int fresh) {
         tui_range(a->slice[k], need, &a->lo[k], &a->hi[k]);
     }
     double lo = a->lo[k], hi = a->hi[k];
+    /* the browning index in the crust's own colours over its fixed 0..1, as the pictures draw it */
+    const int browning = !strcmp(a->field[k], "browning");
+    double fixed[2];
+    if (browning && !isnan(lo) && hearth_picture_default_range(a->s, a->field[k], fixed)) lo = fixed[0], hi = fixed[1];
+    tui_use_colormap(browning ? "browning" : NULL);
     /* the zoom window, centred on the cursor and kept inside the domain */
     double span = 1.0 / a->zoom;
     double cu = (a->cursor[u] - d->lo[u]) / W, cv = (a->cursor[v] - d->lo[v]) / H;
@@ -296,6 +301,7 @@ static void draw_view(tui_app *a, int k, const tui_layout *L, int fresh) {
         tui_screen_cells(b->x + lw, b->y, gw, 1, bar, a->mode);
         put(b->y, b->x + lw + gw, hw, h);
     }
+    tui_use_colormap(NULL);
 }
 
 static void draw_probes(tui_app *a, const tui_rect *r) {

@@ -63,6 +63,7 @@ int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_er
         if (!isnan(def->temperature)) pcold(&s->ps, PC_TEMPERATURE)[i] = pcold(&s->ps, PC_TEMP_MAX)[i] = def->temperature;
         if (def->fixed_temperature) pcoli(&s->ps, PC_FLAGS)[i] |= PF_HOLD_T;
     }
+    scene_note_seeded_temperature(s, n0, s->ps.n); /* where pictures' temperature range starts */
     if (!isnan(def->saturation)) water_init_particles(s, n0, s->ps.n, def->saturation);
     if (def->material == s->mix.mat && mixing_set_ratios(s, n0, s->ps.n, def->ratios, err)) {
         s->ps.n = n0; /* the body is not made */

@@ -260,7 +260,19 @@ hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err) {
     if (!st) st = particles_enable(ps, PC_FLAGS, err); /* the boundary flag is a field with heat */
     if (st) return st;
     for (int i = 0; i < ps->n; i++) pcold(ps, PC_TEMPERATURE)[i] = pcold(ps, PC_TEMP_MAX)[i] = SCENE_ROOM_TEMPERATURE;
+    scene_note_seeded_temperature(s, 0, ps->n);
     return HEARTH_OK;
+}
+
+void scene_note_seeded_temperature(hearth_scene *s, int i0, int i1) {
+    if (!(s->ps.enabled & (1u << PC_TEMPERATURE))) return;
+    const double *T = pcold(&s->ps, PC_TEMPERATURE);
+    for (int i = i0; i < i1; i++) {
+        if (!isfinite(T[i])) continue;
+        if (!s->seeded_t_known) s->seeded_t[0] = s->seeded_t[1] = T[i], s->seeded_t_known = 1;
+        s->seeded_t[0] = fmin(s->seeded_t[0], T[i]);
+        s->seeded_t[1] = fmax(s->seeded_t[1], T[i]);
+    }
 }
 
 int scene_add_material(hearth_scene *s, const char *plugin, const char *const *names, const double *values, int n,

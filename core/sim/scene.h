@@ -95,6 +95,11 @@ struct hearth_scene {
     collider *snap_cols;
 
     char fields[256];
+    /* the lowest and highest temperature particles were seeded with (degrees C),
+     * where pictures' fixed temperature range starts (render.c); unknown (0)
+     * before the first, and after a checkpoint restore (render.c then uses the particles') */
+    int seeded_t_known;
+    double seeded_t[2];
 
     thermal_state heat;       /* thermal.c */
     boundary_state boundary;  /* boundary.c */
@@ -112,6 +117,8 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
                        hearth_error *err);
 /* Turn the temperature field on (room temperature for particles that have none). */
 hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err);
+/* Widen seeded_t over particles [i0, i1) when the temperature field is live. */
+void scene_note_seeded_temperature(hearth_scene *s, int i0, int i1);
 /* Largest wave speed over moving particles (s->c_max), after particles change. */
 void scene_refresh_wave_speed(hearth_scene *s);
 /* The solver's stable step (solver.h). */

@@ -180,6 +180,9 @@ function h.material(plugin, params)
 end
 
 --- Write a text file (a CSV, a note) atomically; relative paths go under the output folder.
+--- h.colormap(name, t) -> r, g, b: the colour pictures give t (0..1) in a colour map
+h.colormap = core.colormap
+
 function h.write(path, text)
   if type(path) ~= "string" or type(text) ~= "string" then error("h.write(path, text): two strings", 2) end
   local ok, e = pcall(core.write_atomic, path, text, "h.write")
@@ -820,16 +823,17 @@ local function default_field(s)
 end
 
 local run_keys = { until_t = true, every = true, on_frame = true, csv = true, probes = true, png = true, until_rest = true }
-local run_png_keys = { field = true, path = true, kind = true, width = true, height = true, axis = true, at = true }
-local png_keys = { kind = true, width = true, height = true, axis = true, at = true }
+local run_png_keys = { field = true, path = true, kind = true, width = true, height = true, axis = true, at = true,
+  range = true, colormap = true }
+local png_keys = { kind = true, width = true, height = true, axis = true, at = true, range = true, colormap = true, grow = true }
 
 -- s:png checks its options here first, for the "did you mean" (the C method checks again)
 local raw_png = S.png
 function S:png(field, path, opts)
   if type(opts) == "table" then check_keys(opts, png_keys, "s:png") end
-  local ok, r = pcall(raw_png, self, field, path, opts)
+  local ok, r, info = pcall(raw_png, self, field, path, opts)
   if not ok then error(r, 2) end -- the scene's line, not this one
-  return r
+  return r, info
 end
 
 -- s:run's output tables: a misspelt option must fail, not be ignored
@@ -837,6 +841,10 @@ local function check_run_outputs(o)
   if o.png ~= nil then
     if type(o.png) ~= "table" then error(("s:run: png = {field = ..., path = ...}, got %s"):format(type(o.png)), 3) end
     check_keys(o.png, run_png_keys, "s:run: png", 4)
+    if o.png.colormap ~= nil then -- before the run, not at its first frame
+      local ok, err = pcall(core.colormap, o.png.colormap, 0)
+      if not ok then error("s:run: png: " .. tostring(err), 3) end
+    end
   end
   if o.csv ~= nil and type(o.csv) ~= "string" then
     error(("s:run: csv = \"series.csv\" (a file name), got %s"):format(type(o.csv)), 3)
@@ -896,8 +904,14 @@ function S:run(o)
     local fr = setmetatable({ t = stt.t, index = st.frame, scene = self }, frame_mt)
     if o.png then
       local pf = o.png
-      self:png(pf.field or default_field(self), frame_path(fr, pf.path or "frame_%04d.png"),
-        { kind = pf.kind or "particles", width = pf.width, height = pf.height, axis = pf.axis, at = pf.at })
+      local field = pf.field or default_field(self)
+      -- frames compare: a field without a fixed range (and no range given)
+      -- keeps the range its frames have drawn so far, widened as needed
+      st.png_range = st.png_range or {}
+      local _, info = self:png(field, frame_path(fr, pf.path or "frame_%04d.png"),
+        { kind = pf.kind or "particles", width = pf.width, height = pf.height, axis = pf.axis, at = pf.at,
+          range = pf.range, colormap = pf.colormap, grow = st.png_range[field] })
+      if info then st.png_range[field] = info.range end
     end
     if rows then
       local r = { ("%.9g"):format(stt.t), stt.step, ("%.6g"):format(stt.dt), stt.particles,

@@ -524,14 +524,70 @@ const int *hearth_scene_particle_ids(const hearth_scene *s);
 
 /* ---- pictures -------------------------------------------------------- */
 
-/// PNG of the particles coloured by a scalar field (vector fields use their
-/// magnitude): a 2D scatter, or in 3D an orthographic view along -z (nearer
-/// particles on top). Colour bar with min/max and unit, title with the field
-/// and the sim time. width x height pixels; written atomically.
+/// What a picture shows. Start from hearth_default_picture_def().
+typedef enum hearth_picture_kind {
+    HEARTH_PICTURE_SLICE = 0,    ///< a plane slice of the field (hearth_probe_slice); outside the material is background
+    HEARTH_PICTURE_PARTICLES = 1 ///< the particles as discs (3D: an orthographic view along -z, nearer on top)
+} hearth_picture_kind;
+
+/// How a picture's colour range is chosen.
+typedef enum hearth_picture_range_mode {
+    HEARTH_RANGE_DEFAULT = 0, ///< the field's fixed range (hearth_picture_default_range), else the frame's data
+    HEARTH_RANGE_FIXED,       ///< exactly range[0]..range[1]; values beyond take the end colours
+    HEARTH_RANGE_FRAME,       ///< the frame's own data (frames of a run do not compare)
+    HEARTH_RANGE_GROW         ///< range[0]..range[1] widened to hold the frame's data (s:run holds a field's range so)
+} hearth_picture_range_mode;
+
+typedef struct hearth_picture_def {
+    const char *field;            ///< a scalar field (a vector shows as its magnitude; a tensor is refused)
+    hearth_picture_kind kind;     ///< default HEARTH_PICTURE_SLICE
+    int width, height;            ///< pixels, 64..8192; height 0 (default) follows the domain's aspect; default width 800
+    int axis;                     ///< slices: the axis normal to the plane, 0..2 (default 2)
+    double at;                    ///< slices: the plane's position along axis (m); NaN (default) = the domain's middle
+    hearth_picture_range_mode range_mode; ///< default HEARTH_RANGE_DEFAULT
+    double range[2];              ///< field units, range[0] < range[1]; read by FIXED and GROW
+    const char *colormap;         ///< a name of hearth_colormap_names(); NULL (default) = the field's own
+} hearth_picture_def;
+
+hearth_picture_def hearth_default_picture_def(void);
+
+/// What a picture was drawn with (for a caller holding a range across frames, and for tests).
+typedef struct hearth_picture_info {
+    int width, height;   ///< pixels
+    double range[2];     ///< the colour range used (field units)
+    double data[2];      ///< the smallest and largest finite value drawn (NaN when none)
+    int nticks;          ///< colour bar ticks, 4..6 unless the range is degenerate
+    double ticks[8];     ///< their values, ascending
+    char colormap[16];   ///< the colour map's name
+    char unit[32];       ///< the colour bar's unit as printed ("°C", "-" for a dimensionless field)
+    double area[4];      ///< the plot area: left, top, width, height (pixels)
+    double view_lo[2], view_hi[2]; ///< the domain it shows (m), horizontal then vertical axis
+    double bar[4];       ///< the colour bar: left, top, width, height (pixels); range[1] at the top
+} hearth_picture_info;
+
+/// Draw a picture of the scene as an RGB PNG, written atomically: the field in
+/// its colour map, a colour bar with 4-6 ticks and the field's name and unit,
+/// axes in metres, the simulated time, colliders as filled grey shapes with an
+/// outline. info may be NULL. Errors: HEARTH_ERR_PARAM (an unknown field or
+/// colour map, naming the valid ones; a tensor field; a size, axis or range
+/// out of range), HEARTH_ERR_IO naming the path, HEARTH_ERR_NOMEM.
+hearth_status hearth_render(const hearth_scene *s, const hearth_picture_def *def, const char *path,
+                            hearth_picture_info *info, hearth_error *err);
+/// The field's fixed colour range, which frames of a run share: temperature
+/// from the coldest temperature particles were seeded with to the hottest of
+/// that, the oven and heated or holding colliders; saturation, browning,
+/// porosity, mixing ratios and the boundary flag 0..1. Returns 1 and fills
+/// range, or 0 for a field with no fixed range (its range comes from the data).
+int hearth_picture_default_range(const hearth_scene *s, const char *field, double range[2]);
+/// The colour maps pictures know, as "viridis, inferno, cividis, coolwarm, browning, gray".
+const char *hearth_colormap_names(void);
+/// Colour of t (0..1, clamped; NaN gives a dark grey) in the named map as
+/// 8-bit sRGB. Returns 0, or -1 for an unknown name (rgb untouched).
+int hearth_colormap_rgb(const char *name, double t, unsigned char rgb[3]);
+/// hearth_render of the particles with the field's default range and colour map.
 hearth_status hearth_render_particles(const hearth_scene *s, const char *field, const char *path, int width, int height,
                                       hearth_error *err);
-/// PNG of a plane slice of a scalar field (see hearth_probe_slice), width pixels
-/// wide with the domain's aspect ratio; outside the material is background.
+/// hearth_render of a slice (axis, at), width pixels wide, with the field's defaults.
 hearth_status hearth_render_slice(const hearth_scene *s, const char *field, int axis, double at, const char *path,
                                   int width, hearth_error *err);
 

@@ -1,4 +1,5 @@
-/* colormap.c: viridis, inferno and grey as piecewise-linear maps.
+/* colormap.c: viridis, inferno, cividis, cool-warm, the crust's browning and
+ * grey as piecewise-linear maps.
  *
  * The anchors are the published matplotlib colour maps (van der Walt and
  * Smith, 2015) sampled at t = k/16, k = 0..16, and rounded to 8 bits.
@@ -6,7 +7,13 @@
  * per channel of the full 256-entry tables, which is below what a frame
  * needs; the full tables were rejected as 1.5 kB of numbers that buy nothing
  * visible. Interpolating in sRGB rather than linear light keeps the
- * lightness ramp of the originals, which were designed in sRGB steps. */
+ * lightness ramp of the originals, which were designed in sRGB steps.
+ * Cividis (Nunez et al. 2018) reads the same to the common colour-vision
+ * deficiencies. The diverging map is Moreland's (2009) cool-warm: blue through
+ * a light grey to red, its lightness rising to the middle and falling again
+ * symmetrically, for signed fields (a velocity or stress component) around 0;
+ * blue-white-red with a white middle was rejected because its lightness
+ * jumps at the ends. */
 #include "colormap.h"
 
 #include <math.h>
@@ -28,6 +35,20 @@ static const unsigned char inferno[N_ANCHORS][3] = {
     {112, 25, 110}, {137, 34, 106}, {163, 43, 97},   {187, 55, 85},   {209, 70, 68},
     {227, 89, 50},  {241, 113, 30}, {249, 141, 10},  {252, 171, 15},  {249, 202, 50},
     {242, 232, 101}, {252, 255, 164},
+};
+
+static const unsigned char cividis[N_ANCHORS][3] = {
+    {0, 34, 78},     {0, 46, 106},    {26, 56, 111},   {50, 67, 109},   {67, 78, 108},
+    {83, 90, 109},   {97, 101, 111},  {111, 112, 115}, {125, 124, 120}, {140, 136, 120},
+    {155, 148, 118}, {171, 160, 114}, {188, 174, 108}, {205, 187, 99},  {222, 201, 88},
+    {240, 216, 70},  {254, 232, 56},
+};
+
+static const unsigned char coolwarm[N_ANCHORS][3] = {
+    {59, 76, 192},   {78, 104, 216},  {98, 130, 234},  {119, 154, 247}, {141, 176, 254},
+    {163, 194, 254}, {185, 208, 249}, {204, 217, 237}, {221, 220, 220}, {236, 211, 197},
+    {245, 196, 172}, {247, 176, 147}, {244, 152, 122}, {235, 125, 98},  {221, 95, 75},
+    {202, 59, 55},   {180, 4, 38},
 };
 
 /* Crust colour for the browning index (fields/browning.c; Rodriguez-Arenas 2011 §4.4 maps
@@ -57,6 +78,8 @@ void cmap_eval(int map, double t, unsigned char rgb[3]) {
     case CMAP_VIRIDIS: table = viridis; break;
     case CMAP_INFERNO: table = inferno; break;
     case CMAP_BROWNING: table = browning; break;
+    case CMAP_CIVIDIS: table = cividis; break;
+    case CMAP_COOLWARM: table = coolwarm; break;
     case CMAP_GRAY: rgb[0] = rgb[1] = rgb[2] = to_byte(255.0 * t); return;
     default:
         HEARTH_ASSERT(!"unknown colour map");
@@ -71,13 +94,23 @@ void cmap_eval(int map, double t, unsigned char rgb[3]) {
     for (int c = 0; c < 3; c++) rgb[c] = to_byte((1.0 - f) * table[k][c] + f * table[k + 1][c]);
 }
 
+static const struct {
+    const char *name;
+    int id;
+} names[] = {{"viridis", CMAP_VIRIDIS},   {"inferno", CMAP_INFERNO},   {"cividis", CMAP_CIVIDIS}, {"coolwarm", CMAP_COOLWARM},
+             {"browning", CMAP_BROWNING}, {"gray", CMAP_GRAY},         {"diverging", CMAP_COOLWARM}};
+
 int cmap_by_name(const char *name) {
-    static const struct {
-        const char *name;
-        int id;
-    } names[] = {{"viridis", CMAP_VIRIDIS}, {"inferno", CMAP_INFERNO}, {"gray", CMAP_GRAY}, {"browning", CMAP_BROWNING}};
     if (!name) return -1;
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
         if (strcmp(name, names[i].name) == 0) return names[i].id;
     return -1;
 }
+
+const char *cmap_name(int map) {
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+        if (names[i].id == map) return names[i].name;
+    return "?";
+}
+
+const char *cmap_names(void) { return "viridis, inferno, cividis, coolwarm (or diverging), browning, gray"; }

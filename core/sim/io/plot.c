@@ -1,10 +1,9 @@
 /* plot.c: <hearth/plot.h>, line and scatter plots on log or linear axes,
- * drawn on the image.c canvas with the font.c bitmap font and written by
- * io_png.c. It replaced two hand copies of the same log-log code in
- * cmd_rheometer.c and cmd_trade.c; the geometry (margins, grid, labels,
- * legend) is theirs, so the flow-curve pictures did not change a pixel.
- * Only this file knows how a plot is drawn: a renderer with antialiased
- * text can replace it behind the same header. */
+ * drawn with Cairo (canvas.c) and written atomically by io_png.c: the one
+ * plotting module behind trade, rheometer and fit. It replaced two hand
+ * copies of the same log-log code in cmd_rheometer.c and cmd_trade.c, and
+ * then the bitmap font and hand-drawn pixels they used; the geometry
+ * (margins, grid, legend) stayed, so a point lands where it did. */
 #include "hearth/plot.h"
 
 #include <math.h>
@@ -12,15 +11,14 @@
 #include <string.h>
 
 #include "alloc.h"
+
 #include "error.h"
-#include "font.h"
-#include "image.h"
-#include "io_png.h"
+#include "canvas.h"
 
 #define PLOT_DIM_MIN 200
 #define PLOT_DIM_MAX 8192
 /* the frame's margins (pixels): room for the title above, tick labels left and below */
-enum { M_LEFT = 78, M_RIGHT = 24, M_TOP = 52, M_BOTTOM = 62, LEGEND_STEP = 14 };
+enum { M_LEFT = 78, M_RIGHT = 24, M_TOP = 52, M_BOTTOM = 62, LEGEND_STEP = 17 };
 
 static const unsigned char C_BG[3] = {255, 255, 255}, C_AXIS[3] = {0, 0, 0}, C_GRID[3] = {228, 228, 228},
                            C_MINOR[3] = {243, 243, 243}, C_TEXT[3] = {30, 30, 30};
@@ -219,7 +217,7 @@ static void axis_fit(const hearth_plot *p, int yaxis, axis *a, const axis *other
 }
 
 typedef struct frame {
-    img im;
+    canvas c;
     int left, top, pw, ph;
     axis ax, ay;
 } frame;
@@ -227,16 +225,37 @@ typedef struct frame {
 #define PX(f, v) ((f)->left + (axis_t(&(f)->ax, v) - (f)->ax.lo) / ((f)->ax.hi - (f)->ax.lo) * (f)->pw)
 #define PY(f, v) ((f)->top + (f)->ph - (axis_t(&(f)->ay, v) - (f)->ay.lo) / ((f)->ay.hi - (f)->ay.lo) * (f)->ph)
 
+enum { FS = 12 }; /* label size (px); the title is larger */
+
+/* A one-pixel line that lands on pixel centres (x.5), so a grid line is one
+ * crisp row or column, as the bitmap plots had. */
+static void line(frame *f, double x0, double y0, double x1, double y1, const unsigned char c[3], double width) {
+    cairo_t *cr = f->c.cr;
+    if (x0 == x1) x0 = x1 = floor(x0) + 0.5;
+    if (y0 == y1) y0 = y1 = floor(y0) + 0.5;
+    cairo_move_to(cr, x0, y0);
+    cairo_line_to(cr, x1, y1);
+    canvas_rgb(&f->c, c, 1);
+    cairo_set_line_width(cr, width);
+    cairo_stroke(cr);
+}
+
+static void disc(frame *f, double x, double y, double r, const unsigned char c[3]) {
+    cairo_arc(f->c.cr, x, y, r, 0, 2 * CANVAS_PI);
+    canvas_rgb(&f->c, c, 1);
+    cairo_fill(f->c.cr);
+}
+
 static void decade_label(int k, char *buf, size_t n) {
     if (k >= -2 && k <= 3) snprintf(buf, n, "%g", pow(10, k));
     else snprintf(buf, n, "1e%d", k);
 }
 
 static void x_tick_label(frame *f, double px, const char *s) {
-    img_text(&f->im, (int)lround(px) - font_text_width(s, 1) / 2, f->top + f->ph + 9, s, 1, C_TEXT);
+    canvas_text(&f->c, px, f->top + f->ph + 9, s, FS, CANVAS_CENTER, CANVAS_TOP, 0, C_TEXT);
 }
 static void y_tick_label(frame *f, double py, const char *s) {
-    img_text(&f->im, f->left - 9 - font_text_width(s, 1), (int)lround(py) - 4, s, 1, C_TEXT);
+    canvas_text(&f->c, f->left - 9, py, s, FS, CANVAS_RIGHT, CANVAS_MIDDLE, 0, C_TEXT);
 }
 
 /* Log axes: light lines at 2..9 of every decade (labelled at 2 and 5 when the
@@ -252,11 +271,11 @@ static void grid_log(frame *f, int yaxis) {
             double v = j * pow(10, k);
             if (yaxis) {
                 double py = PY(f, v);
-                img_line(&f->im, left, py, left + pw, py, C_MINOR);
+                line(f, left, py, left + pw, py, C_MINOR, 1);
                 if (minor_labels && (j == 2 || j == 5)) snprintf(buf, sizeof buf, "%g", v), y_tick_label(f, py, buf);
             } else {
                 double px = PX(f, v);
-                img_line(&f->im, px, top, px, top + ph, C_MINOR);
+                line(f, px, top, px, top + ph, C_MINOR, 1);
                 if (minor_labels && (j == 2 || j == 5)) snprintf(buf, sizeof buf, "%g", v), x_tick_label(f, px, buf);
             }
         }
@@ -270,13 +289,13 @@ static void major_log(frame *f, int yaxis) {
         decade_label(k, buf, sizeof buf);
         if (yaxis) {
             double py = PY(f, pow(10, k));
-            img_line(&f->im, left, py, left + pw, py, C_GRID);
-            img_line(&f->im, left - 5, py, left, py, C_AXIS);
+            line(f, left, py, left + pw, py, C_GRID, 1);
+            line(f, left - 5, py, left, py, C_AXIS, 1);
             y_tick_label(f, py, buf);
         } else {
             double px = PX(f, pow(10, k));
-            img_line(&f->im, px, top, px, top + ph, C_GRID);
-            img_line(&f->im, px, top + ph, px, top + ph + 5, C_AXIS);
+            line(f, px, top, px, top + ph, C_GRID, 1);
+            line(f, px, top + ph, px, top + ph + 5, C_AXIS, 1);
             x_tick_label(f, px, buf);
         }
     }
@@ -294,13 +313,13 @@ static void major_linear(frame *f, int yaxis) {
         snprintf(buf, sizeof buf, "%g", v);
         if (yaxis) {
             double py = PY(f, v);
-            img_line(&f->im, left, py, left + pw, py, C_GRID);
-            img_line(&f->im, left - 5, py, left, py, C_AXIS);
+            line(f, left, py, left + pw, py, C_GRID, 1);
+            line(f, left - 5, py, left, py, C_AXIS, 1);
             y_tick_label(f, py, buf);
         } else {
             double px = PX(f, v);
-            img_line(&f->im, px, top, px, top + ph, C_GRID);
-            img_line(&f->im, px, top + ph, px, top + ph + 5, C_AXIS);
+            line(f, px, top, px, top + ph, C_GRID, 1);
+            line(f, px, top + ph, px, top + ph + 5, C_AXIS, 1);
             x_tick_label(f, px, buf);
         }
     }
@@ -311,41 +330,52 @@ static int point_ok(const frame *f, const series *s, int i) {
 }
 
 static void ring(frame *f, double x, double y, const unsigned char c[3]) {
-    img_disc(&f->im, x, y, RING_OUT, c);
-    img_disc(&f->im, x, y, RING_IN, C_BG);
+    cairo_arc(f->c.cr, x, y, 0.5 * (RING_OUT + RING_IN), 0, 2 * CANVAS_PI);
+    canvas_rgb(&f->c, c, 1);
+    cairo_set_line_width(f->c.cr, RING_OUT - RING_IN);
+    cairo_stroke(f->c.cr);
 }
 
 /* Rings first (the line runs into them), then the line, then dots over it,
- * then the point labels. */
+ * then the point labels. A line breaks at a point that cannot be drawn. */
 static void draw_series(frame *f, const series *s) {
     if (s->marker == HEARTH_MARKER_RING)
         for (int i = 0; i < s->n; i++)
             if (point_ok(f, s, i)) ring(f, PX(f, s->x[i]), PY(f, s->y[i]), s->color);
-    if (s->line_width > 0)
-        for (int i = 0; i + 1 < s->n; i++) {
-            if (!point_ok(f, s, i) || !point_ok(f, s, i + 1)) continue;
-            double x0 = PX(f, s->x[i]), y0 = PY(f, s->y[i]), x1 = PX(f, s->x[i + 1]), y1 = PY(f, s->y[i + 1]);
-            for (int w = 0; w < s->line_width; w++) img_line(&f->im, x0, y0 + w, x1, y1 + w, s->color);
+    if (s->line_width > 0) {
+        cairo_t *cr = f->c.cr;
+        int open = 0;
+        for (int i = 0; i < s->n; i++) {
+            if (!point_ok(f, s, i)) {
+                open = 0;
+                continue;
+            }
+            if (open) cairo_line_to(cr, PX(f, s->x[i]), PY(f, s->y[i]));
+            else cairo_move_to(cr, PX(f, s->x[i]), PY(f, s->y[i]));
+            open = 1;
         }
+        canvas_rgb(&f->c, s->color, 1);
+        cairo_set_line_width(cr, 1.25 * s->line_width);
+        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+        cairo_stroke(cr);
+    }
     if (s->marker == HEARTH_MARKER_DOT)
         for (int i = 0; i < s->n; i++)
-            if (point_ok(f, s, i)) img_disc(&f->im, PX(f, s->x[i]), PY(f, s->y[i]), DOT_R, s->color);
+            if (point_ok(f, s, i)) disc(f, PX(f, s->x[i]), PY(f, s->y[i]), DOT_R, s->color);
     if (s->point_labels)
         for (int i = 0; i < s->n; i++)
             if (s->point_labels[i] && point_ok(f, s, i))
-                img_text(&f->im, (int)lround(PX(f, s->x[i])) + 6, (int)lround(PY(f, s->y[i])) - 10, s->point_labels[i], 1,
-                         s->color);
+                canvas_text(&f->c, PX(f, s->x[i]) + 7, PY(f, s->y[i]) - 4, s->point_labels[i], 0.9 * FS, CANVAS_LEFT,
+                            CANVAS_BASELINE, 0, s->color);
 }
 
 /* One legend row: the series' marker (or its line when it has none) and its label. */
 static void legend_entry(frame *f, const series *s, int y) {
     const int x = f->left;
-    if (s->marker == HEARTH_MARKER_DOT) img_disc(&f->im, x + 16, y + 3, DOT_R, s->color);
+    if (s->marker == HEARTH_MARKER_DOT) disc(f, x + 16, y + 3, DOT_R, s->color);
     else if (s->marker == HEARTH_MARKER_RING) ring(f, x + 16, y + 3, s->color);
-    else
-        for (int w = 0; w < (s->line_width > 0 ? s->line_width : 1); w++)
-            img_line(&f->im, x + 8, y + 3 + w, x + 24, y + 3 + w, s->color);
-    img_text(&f->im, x + 28, y, s->label, 1, C_TEXT);
+    else line(f, x + 8, y + 3, x + 24, y + 3, s->color, 1.25 * (s->line_width > 0 ? s->line_width : 1));
+    canvas_text(&f->c, x + 28, y + 3, s->label, FS, CANVAS_LEFT, CANVAS_MIDDLE, 0, C_TEXT);
 }
 
 hearth_status hearth_plot_write_png(const hearth_plot *p, const char *path, hearth_error *err) {
@@ -355,7 +385,7 @@ hearth_status hearth_plot_write_png(const hearth_plot *p, const char *path, hear
     F.ay.scale = p->ys;
     axis_fit(p, 0, &F.ax, &F.ay); /* drawable() reads only the other axis's scale */
     axis_fit(p, 1, &F.ay, &F.ax);
-    if (img_init(&F.im, p->w, p->h, C_BG, err)) return err->code;
+    if (canvas_init(&F.c, p->w, p->h, C_BG, err)) return err->code;
     const int left = F.left, top = F.top, pw = F.pw, ph = F.ph;
     /* grid under everything: the minor lines, then the major ones with their ticks and labels */
     if (p->xs == HEARTH_PLOT_LOG) grid_log(f, 0);
@@ -364,25 +394,42 @@ hearth_status hearth_plot_write_png(const hearth_plot *p, const char *path, hear
     else major_linear(f, 0);
     if (p->ys == HEARTH_PLOT_LOG) major_log(f, 1);
     else major_linear(f, 1);
-    img_line(&F.im, left, top, left + pw, top, C_AXIS);
-    img_line(&F.im, left, top + ph, left + pw, top + ph, C_AXIS);
-    img_line(&F.im, left, top, left, top + ph, C_AXIS);
-    img_line(&F.im, left + pw, top, left + pw, top + ph, C_AXIS);
+    line(f, left, top, left + pw, top, C_AXIS, 1);
+    line(f, left, top + ph, left + pw, top + ph, C_AXIS, 1);
+    line(f, left, top, left, top + ph, C_AXIS, 1);
+    line(f, left + pw, top, left + pw, top + ph, C_AXIS, 1);
+    /* the series stay inside the frame, but a marker on its edge shows whole */
+    cairo_save(F.c.cr);
+    cairo_rectangle(F.c.cr, left - RING_OUT - 1, top - RING_OUT - 1, pw + 2 * RING_OUT + 3, ph + 2 * RING_OUT + 3);
+    cairo_clip(F.c.cr);
     for (int pass = 1; pass >= 0; pass--)
         for (int k = 0; k < p->n; k++)
             if (p->s[k].behind == pass) draw_series(f, &p->s[k]);
+    cairo_restore(F.c.cr);
     /* title (large when it fits), axis names, legend */
-    if (p->title) img_text(&F.im, left, 12, p->title, font_text_width(p->title, 2) <= p->w - left - 8 ? 2 : 1, C_TEXT);
-    if (p->x_label) img_text(&F.im, left + pw / 2 - font_text_width(p->x_label, 1) / 2, p->h - 22, p->x_label, 1, C_TEXT);
-    if (p->y_label) img_text(&F.im, 8, top - 14, p->y_label, 1, C_TEXT);
+    if (p->title) {
+        double size = canvas_text_width(&F.c, p->title, 17) <= p->w - left - 8 ? 17 : FS;
+        canvas_text(&F.c, left, 14, p->title, size, CANVAS_LEFT, CANVAS_TOP, 0, C_TEXT);
+    }
+    if (p->x_label) canvas_text(&F.c, left + pw / 2.0, p->h - 24, p->x_label, FS + 1, CANVAS_CENTER, CANVAS_TOP, 0, C_TEXT);
+    if (p->y_label) canvas_text(&F.c, 8, top - 8, p->y_label, FS + 1, CANVAS_LEFT, CANVAS_BASELINE, 0, C_TEXT);
     if (p->legend != HEARTH_LEGEND_NONE) {
         int rows = 0;
         for (int k = 0; k < p->n; k++) rows += p->s[k].label != NULL;
         int y = p->legend == HEARTH_LEGEND_TOP_LEFT ? top + 10 : top + ph - 6 - LEGEND_STEP * rows;
+        /* a white box under the entries so grid lines do not run through the text */
+        if (rows) {
+            double wmax = 0;
+            for (int k = 0; k < p->n; k++)
+                if (p->s[k].label) wmax = fmax(wmax, canvas_text_width(&F.c, p->s[k].label, FS));
+            canvas_rgb(&F.c, C_BG, 0.85);
+            cairo_rectangle(F.c.cr, left + 4, y - 5, 30 + wmax, LEGEND_STEP * rows + 4);
+            cairo_fill(F.c.cr);
+        }
         for (int k = 0; k < p->n; k++)
             if (p->s[k].label) legend_entry(f, &p->s[k], y), y += LEGEND_STEP;
     }
-    hearth_status st = png_write_rgb(path, F.im.w, F.im.h, F.im.rgb, err);
-    img_free(&F.im);
+    hearth_status st = canvas_write_png(&F.c, path, err);
+    canvas_free(&F.c);
     return st;
 }

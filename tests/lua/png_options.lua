@@ -1,0 +1,46 @@
+-- png_range_option, png_colormap_option: the options of s:png and s:run's png.
+-- A jelly block at 20 degC in a 180 degC oven, on a tray.
+local h = require "hearth"
+local which = h.params { case = "range" }.case
+local s = h.scene { dim = 2, dx = 0.01, box = { { 0, 0 }, { 0.2, 0.1 } }, oven = { temperature = 180, beta = 30 } }
+local jelly = h.material("elastic", { E = 2e5, nu = 0.3, density = 1000 })
+s:collider { shape = h.box({ 0, 0 }, { 0.2, 0.02 }), mode = "sticky" }
+s:add { shape = h.box({ 0.05, 0.02 }, { 0.15, 0.05 }), material = jelly, temperature = 20 }
+
+local function show(name, info)
+  print(("%s range %g %g ticks %s colormap %s unit %s size %dx%d"):format(name, info.range[1], info.range[2],
+    table.concat(info.ticks, ","), info.colormap, info.unit, info.width, info.height))
+end
+local function refused(opts)
+  local ok, err = pcall(s.png, s, "temperature", "bad.png", opts)
+  print("refused " .. tostring(not ok) .. " " .. tostring(err))
+end
+
+if which == "range" then
+  local _, d = s:png("temperature", "default.png")
+  show("default", d)
+  local _, r = s:png("temperature", "range.png", { range = { 20, 200 } })
+  show("given", r)
+  local _, f = s:png("temperature", "frame.png", { range = "frame", kind = "particles" })
+  show("frame", f)
+  refused { range = { 200, 20 } }
+  refused { range = { 20 } }
+  refused { range = "all" }
+  -- s:run passes the range to every frame
+  s:run { until_t = 0.002, every = 0.001,
+    png = { field = "temperature", path = "run_%04d.png", range = { 0, 250 }, kind = "slice" } }
+  local ok, err = pcall(s.run, s, { until_t = s:stats().t + 0.001, png = { field = "temperature", rnage = { 0, 1 } } })
+  print("run_typo " .. tostring(ok) .. " " .. tostring(err))
+else
+  local _, c = s:png("temperature", "cividis.png", { colormap = "cividis" })
+  show("cividis", c)
+  local _, dv = s:png("velocity_x", "diverging.png", { colormap = "diverging", range = { -1, 1 } })
+  show("diverging", dv)
+  local _, b = s:png("temperature", "browning.png", { colormap = "browning" })
+  show("browning", b)
+  refused { colormap = "jet" }
+  refused { colormap = 3 }
+  local ok, err = pcall(s.run, s, { until_t = 0.001, png = { field = "temperature", colormap = "jett" } })
+  print("run_bad_map " .. tostring(ok) .. " " .. tostring(err))
+  s:run { until_t = 0.002, every = 0.001, png = { field = "temperature", path = "run_%04d.png", colormap = "cividis" } }
+end

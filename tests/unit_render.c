@@ -1,0 +1,266 @@
+/* unit_render.c: pictures of a scene (render.c): fixed colour ranges that
+ * frames of a run share, colliders drawn, the colour bar's ticks.
+ *
+ * The scene: a 2D jelly block at 20 degC on a tray heated to 180 degC, in a
+ * 180 degC oven. Pictures are decoded with libpng's simplified API and read
+ * at places hearth_picture_info gives (plot area, colour bar). */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+
+#include <math.h>
+#include <png.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "alloc.h"
+#include "colormap.h"
+#include "fs_fixture.h"
+#include "mpm_fixture.h"
+#include "png_fixture.h"
+#include "test.h"
+
+
+static const unsigned char *pixel(const unsigned char *px, int w, double x, double y) {
+    return px + 3 * ((size_t)floor(y) * (size_t)w + (size_t)floor(x));
+}
+
+static int near_rgb(const unsigned char *p, const unsigned char c[3], int tol) {
+    return abs(p[0] - c[0]) <= tol && abs(p[1] - c[1]) <= tol && abs(p[2] - c[2]) <= tol;
+}
+
+/* The heated scene: jelly block [0.05, 0.15] x [0.02, 0.05] at 20 degC on a
+ * tray [0, 0.2] x [0, 0.02] at 180 degC, oven air 180 degC. */
+static hearth_scene *heated_scene(void) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dim = 2, d.dx = 0.005;
+    d.lo[0] = d.lo[1] = d.lo[2] = 0;
+    d.hi[0] = 0.2, d.hi[1] = 0.1, d.hi[2] = 0.005;
+    d.oven_temperature = 180, d.oven_beta = 30;
+    hearth_scene *s = fx_scene_def(&d);
+    if (!s) return NULL;
+    /* a conductive jelly (diffusivity 1e-3 m^2/s), so a few hundred steps warm it */
+    const char *names[] = {"E", "nu", "density", "conductivity", "specific_heat"};
+    const double vals[] = {2e5, 0.3, 1000, 10, 10};
+    hearth_error e0;
+    int m = hearth_scene_add_material(s, "elastic", names, vals, 5, &e0);
+    if (m < 0) fprintf(stderr, "material: %s\n", e0.msg);
+    hearth_error err;
+    hearth_shape *tray = hearth_shape_box((double[3]){0.1, 0.01, 0}, (double[3]){0.1, 0.01, 1});
+    hearth_collider_def cd = hearth_default_collider_def();
+    cd.shape = tray, cd.mode = HEARTH_STICKY, cd.temperature = 180, cd.beta = 200;
+    CHECK(hearth_scene_add_collider(s, &cd, &err) >= 0);
+    hearth_shape_free(tray);
+    hearth_shape *block = hearth_shape_box((double[3]){0.1, 0.035, 0}, (double[3]){0.05, 0.015, 1});
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = block, bd.material = m, bd.temperature = 20, bd.jitter = 0;
+    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    hearth_shape_free(block);
+    return s;
+}
+
+/* The pixel at the centre of the last particle drawn (on top of the others in 2D). */
+static const unsigned char *last_particle_pixel(const hearth_scene *s, const hearth_picture_info *in,
+                                                const unsigned char *px, int w) {
+    const int n = hearth_scene_particle_count(s);
+    const double *X = hearth_scene_positions(s);
+    const double sc = in->area[2] / (in->view_hi[0] - in->view_lo[0]);
+    double x = in->area[0] + (X[3 * (n - 1)] - in->view_lo[0]) * sc;
+    double y = in->area[1] + in->area[3] - (X[3 * (n - 1) + 1] - in->view_lo[1]) * sc;
+    return pixel(px, w, x, y);
+}
+
+/* Two frames of a heating scene map a temperature to one colour: both use
+ * 20..180 degC (the seeded block to the tray and oven), whatever their data,
+ * and each frame's top particle shows inferno at (T - 20) / 160. Per-frame
+ * ranges (the old renderer) drew the uniform first frame mid-map and the
+ * second frame's coldest particle black. */
+TEST(png_fixed_range_across_frames) {
+    char dir[64], path[2][128];
+    make_dir(dir, sizeof dir);
+    hearth_scene *s = heated_scene();
+    CHECK(s != NULL);
+    hearth_error err;
+    hearth_picture_info in[2];
+    hearth_picture_def d = hearth_default_picture_def();
+    d.field = "temperature", d.kind = HEARTH_PICTURE_PARTICLES, d.width = 640;
+    for (int f = 0; f < 2; f++) {
+        if (f) CHECK(hearth_scene_step(s, 400, &err) == HEARTH_OK);
+        snprintf(path[f], sizeof path[f], "%s/frame%d.png", dir, f);
+        CHECK(hearth_render(s, &d, path[f], &in[f], &err) == HEARTH_OK);
+        printf("frame %d: t = %.4g s, data %.3f..%.3f degC, range %.3f..%.3f, %d x %d px\n", f, hearth_scene_time(s),
+               in[f].data[0], in[f].data[1], in[f].range[0], in[f].range[1], in[f].width, in[f].height);
+        CHECK(in[f].range[0] == 20 && in[f].range[1] == 180);
+        int w = 0, h = 0;
+        unsigned char *px = decode_rgb(path[f], &w, &h);
+        CHECK(px != NULL);
+        CHECK(w == in[f].width && h == in[f].height);
+        const int n = hearth_scene_particle_count(s);
+        double T[4096];
+        CHECK(n <= 4096);
+        CHECK(hearth_scene_particle_field(s, "temperature", T, &err) == HEARTH_OK);
+        unsigned char want[3];
+        cmap_eval(CMAP_INFERNO, (T[n - 1] - 20) / 160, want);
+        const unsigned char *got = last_particle_pixel(s, &in[f], px, w);
+        printf("  top particle at %.3f degC: pixel %d %d %d, inferno gives %d %d %d\n", T[n - 1], got[0], got[1], got[2],
+               want[0], want[1], want[2]);
+        CHECK(near_rgb(got, want, 2));
+        free(px);
+    }
+    CHECK(in[1].data[1] > in[0].data[1] + 1); /* the block did warm: the frames' data differ, their ranges do not */
+    CHECK(in[0].width == in[1].width && in[0].height == in[1].height);
+    hearth_scene_destroy(s);
+    rm_dir(dir);
+}
+
+/* The tray is drawn: pixels inside it are the collider grey in both kinds of
+ * picture (the dashboard saves slices), and empty space above the block is
+ * the white background. */
+TEST(png_colliders_drawn) {
+    char dir[64], path[128];
+    make_dir(dir, sizeof dir);
+    hearth_scene *s = heated_scene();
+    CHECK(s != NULL);
+    static const unsigned char grey[3] = {150, 152, 160}, white[3] = {255, 255, 255};
+    for (int kind = 0; kind < 2; kind++) {
+        hearth_picture_def d = hearth_default_picture_def();
+        d.field = "temperature", d.kind = kind ? HEARTH_PICTURE_PARTICLES : HEARTH_PICTURE_SLICE, d.width = 500;
+        hearth_picture_info in;
+        hearth_error err;
+        snprintf(path, sizeof path, "%s/k%d.png", dir, kind);
+        CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
+        int w = 0, h = 0;
+        unsigned char *px = decode_rgb(path, &w, &h);
+        CHECK(px != NULL);
+        const double sc = in.area[2] / (in.view_hi[0] - in.view_lo[0]);
+        const unsigned char *tray = pixel(px, w, in.area[0] + 0.02 * sc, in.area[1] + in.area[3] - 0.01 * sc);
+        const unsigned char *air = pixel(px, w, in.area[0] + 0.02 * sc, in.area[1] + in.area[3] - 0.08 * sc);
+        printf("%s: tray pixel %d %d %d, air pixel %d %d %d\n", kind ? "particles" : "slice", tray[0], tray[1], tray[2],
+               air[0], air[1], air[2]);
+        CHECK(near_rgb(tray, grey, 1));
+        CHECK(!near_rgb(tray, white, 40));
+        CHECK(kind == 0 || near_rgb(air, white, 0)); /* a slice's empty space is its own light grey */
+        free(px);
+    }
+    hearth_scene_destroy(s);
+    rm_dir(dir);
+}
+
+/* The colour bar has 4-6 ticks at nice values inside the range (40, 80, 120,
+ * 160 for 20..180 degC), its unit as printed, and a tick mark at each: the
+ * pixel just right of the bar at a tick's height is dark, and text (ink) lies
+ * right of every tick. */
+TEST(png_colorbar_ticks) {
+    char dir[64], path[128];
+    make_dir(dir, sizeof dir);
+    hearth_scene *s = heated_scene();
+    CHECK(s != NULL);
+    hearth_picture_def d = hearth_default_picture_def();
+    d.field = "temperature", d.kind = HEARTH_PICTURE_PARTICLES, d.width = 640;
+    hearth_picture_info in;
+    hearth_error err;
+    snprintf(path, sizeof path, "%s/bar.png", dir);
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
+    printf("%d ticks:", in.nticks);
+    for (int k = 0; k < in.nticks; k++) printf(" %g", in.ticks[k]);
+    printf(" (%s), unit '%s'\n", in.colormap, in.unit);
+    CHECK(in.nticks == 4);
+    for (int k = 0; k < 4 && k < in.nticks; k++) CHECK(in.ticks[k] == 40.0 * (k + 1));
+    CHECK(!strcmp(in.unit, "\xc2\xb0" "C") && !strcmp(in.colormap, "inferno"));
+    int w = 0, h = 0;
+    unsigned char *px = decode_rgb(path, &w, &h);
+    CHECK(px != NULL);
+    for (int k = 0; k < in.nticks; k++) {
+        double y = in.bar[1] + in.bar[3] - (in.ticks[k] - in.range[0]) / (in.range[1] - in.range[0]) * in.bar[3];
+        const unsigned char *mark = pixel(px, w, in.bar[0] + in.bar[2] + 2, y);
+        int ink = 0;
+        for (int dy = -4; dy <= 4; dy++)
+            for (int x = (int)(in.bar[0] + in.bar[2] + 6); x < (int)(in.bar[0] + in.bar[2] + 40) && x < w; x++)
+                ink += pixel(px, w, x, y + dy)[0] < 128;
+        printf("tick %g at y %.1f: mark %d, label ink %d px\n", in.ticks[k], y, mark[0], ink);
+        CHECK(mark[0] < 140);
+        CHECK(ink > 10);
+    }
+    /* a dimensionless field says so ("-", never a lone "1" that reads as a tick) */
+    d.field = "J";
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
+    CHECK(!strcmp(in.unit, "-"));
+    /* a speed's bar starts at rest */
+    d.field = "speed";
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
+    CHECK(!strcmp(in.unit, "m/s") && in.range[0] == 0);
+    free(px);
+    hearth_scene_destroy(s);
+    rm_dir(dir);
+}
+
+/* Options and their errors: a fixed range is used as given, an unknown
+ * colour map is refused naming the valid ones, a tensor is refused naming its
+ * components, a backwards range is refused. */
+TEST(png_options_checked) {
+    char dir[64], path[128];
+    make_dir(dir, sizeof dir);
+    hearth_scene *s = heated_scene();
+    CHECK(s != NULL);
+    snprintf(path, sizeof path, "%s/o.png", dir);
+    hearth_picture_def d = hearth_default_picture_def();
+    d.field = "temperature", d.range_mode = HEARTH_RANGE_FIXED, d.range[0] = 0, d.range[1] = 250, d.colormap = "cividis";
+    hearth_picture_info in;
+    hearth_error err;
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
+    CHECK(in.range[0] == 0 && in.range[1] == 250 && !strcmp(in.colormap, "cividis"));
+    d.colormap = "jet";
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_ERR_PARAM);
+    printf("%s\n", err.msg);
+    CHECK(strstr(err.msg, "'jet'") && strstr(err.msg, "viridis") && strstr(err.msg, "cividis"));
+    d.colormap = NULL, d.range[0] = 300;
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_ERR_PARAM);
+    printf("%s\n", err.msg);
+    d = hearth_default_picture_def();
+    d.field = "stress";
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_ERR_PARAM);
+    CHECK(strstr(err.msg, "stress_xx") != NULL);
+    d.field = "saturation_typo";
+    CHECK(hearth_render(s, &d, path, &in, &err) != HEARTH_OK);
+    /* GROW holds a range and widens it to the data: 100..120 grows to hold 20 degC */
+    d = hearth_default_picture_def();
+    d.field = "temperature", d.range_mode = HEARTH_RANGE_GROW, d.range[0] = 100, d.range[1] = 120;
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
+    printf("grow: data %g..%g, range %g..%g\n", in.data[0], in.data[1], in.range[0], in.range[1]);
+    CHECK(in.range[0] == in.data[0] && in.data[0] < 21 && in.range[1] == 120);
+    hearth_scene_destroy(s);
+    rm_dir(dir);
+}
+
+/* Every allocation a picture makes may fail: each failure is HEARTH_ERR_NOMEM
+ * with nothing leaked, for both kinds (the colliders' map included). */
+TEST(png_alloc_failures) {
+    char dir[64], path[128];
+    make_dir(dir, sizeof dir);
+    snprintf(path, sizeof path, "%s/a.png", dir);
+    hearth_scene *s = heated_scene();
+    CHECK(s != NULL);
+    for (int kind = 0; kind < 2; kind++) {
+        size_t base = hearth_bytes_allocated();
+        int failed = 0, done = 0;
+        for (long k = 0; k < 32 && !done; k++) {
+            hearth_picture_def d = hearth_default_picture_def();
+            d.field = "temperature", d.kind = kind ? HEARTH_PICTURE_PARTICLES : HEARTH_PICTURE_SLICE, d.width = 200;
+            hearth_error err = {0};
+            mem_fail_after(k);
+            hearth_status st = hearth_render(s, &d, path, NULL, &err);
+            mem_fail_after(-1);
+            if (st) {
+                failed++;
+                CHECK(st == HEARTH_ERR_NOMEM);
+            } else done = 1;
+            CHECK(hearth_bytes_allocated() == base);
+        }
+        printf("%s: %d allocations failed one by one, then it drew\n", kind ? "particles" : "slice", failed);
+        CHECK(failed >= 2 && done);
+    }
+    hearth_scene_destroy(s);
+    rm_dir(dir);
+}
+
+TEST_MAIN(T(png_fixed_range_across_frames), T(png_colliders_drawn), T(png_colorbar_ticks), T(png_options_checked),
+          T(png_alloc_failures))
