@@ -933,7 +933,12 @@ local function run_dumps(self, o, opts, t0, every)
       local path = d.path or dump_default_path[kind]
       local key = kind .. "\0" .. path
       st.dumps[key] = st.dumps[key] or { count = 0, list = {} }
-      specs[#specs + 1] = { kind = kind, path = path, every = d.every or every, next = t0, state = st.dumps[key],
+      -- a series continued by another s:run already has this instant (the
+      -- last run's end): a second file at the same time would give the .pvd
+      -- two data sets for one time step
+      local e = d.every or every
+      local first = st.dumps[key].last_t == t0 and t0 + e or t0
+      specs[#specs + 1] = { kind = kind, path = path, every = e, next = first, state = st.dumps[key],
         pvd = kind == "vtu" and pvd_path(path, d.pvd) or nil,
         opts = kind == "ply" and { color = d.color, range = d.range, colormap = d.colormap } or nil }
     end
@@ -960,7 +965,7 @@ local function dumps_write(self, specs, t, force)
         local ok, err = pcall(self.ply, self, path, d.opts)
         if not ok then error(err, 0) end
       end
-      d.state.count = d.state.count + 1
+      d.state.count, d.state.last_t = d.state.count + 1, t
       repeat d.next = d.next + d.every until d.next > t + 1e-9 * d.every
     end
   end
