@@ -16,6 +16,7 @@
 #include "hearth/hearth.h"
 #include "hearth_lua.h"
 #include "progress.h"
+#include "run_log.h"
 
 
 static void run_usage(FILE *f, const char *cmd) {
@@ -168,11 +169,16 @@ static void on_progress(void *ud, double t, double t_end, long steps, int final)
     else progress_update(p, t, steps);
 }
 
+/* The last failure's message, for the run record. */
+static char g_last_error[1024];
+
 /* Report a failed protected call; returns the exit status: 3 for a guard
  * stop, 2 for a bad --set value, 128 + the signal for an interrupt, else 1. */
 static int report(lua_State *L, const char *cmd, const char *out) {
     int st;
-    switch (hl_error_message(L, -1)) {
+    int kind = hl_error_message(L, -1);
+    snprintf(g_last_error, sizeof g_last_error, "%s", lua_tostring(L, -1) ? lua_tostring(L, -1) : "");
+    switch (kind) {
     case HL_ERR_GUARD:
         fprintf(stderr, "hearth %s: the stability guard stopped the run:\n  %s\n", cmd, lua_tostring(L, -1));
         st = 3;
@@ -274,6 +280,8 @@ int cmd_run(int argc, char **argv) {
     progress pr;
     lua_State *L = start(&a, &pr, "run");
     if (!L) return 1;
+    run_log rec;
+    run_log_start(&rec, &a);
     int status = 0;
     if (luaL_loadfilex(L, a.scene, "t") != LUA_OK) status = report(L, "run", a.out);
     else if (hl_pcall(L, 0, 0) != LUA_OK) status = report(L, "run", a.out);
@@ -288,6 +296,9 @@ int cmd_run(int argc, char **argv) {
         }
     }
     if (a.metric && status < 128) status = metric_report(L, &a, status);
+    run_log_scene(&rec, L);
+    if (status) run_log_message(&rec, g_last_error);
+    run_log_write(&rec, status);
     if (status == 0 && !a.quiet) fprintf(stderr, "hearth run: done; outputs in %s/\n", a.out);
     hl_close_state(L);
     return status;

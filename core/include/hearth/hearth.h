@@ -80,6 +80,10 @@ const hearth_plugin *hearth_plugin_load(const char *name_or_path, hearth_error *
 /// --trust, which may write only there. A path containing '/' is refused.
 void hearth_plugin_restrict(const char *writable_dir);
 const hearth_material *hearth_plugin_material(const hearth_plugin *pl);
+/// Plugins loaded so far in this process, in load order (for run records):
+/// the count, and the i-th (NULL out of range).
+int hearth_plugin_loaded_count(void);
+const hearth_plugin *hearth_plugin_loaded(int i);
 const char *hearth_plugin_file(const hearth_plugin *pl);
 /// Call fn for every plugin file found on the search path (each name once, first wins).
 /// Returns the number of files visited.
