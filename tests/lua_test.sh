@@ -750,7 +750,7 @@ lua_browning_example)
     cat out.txt
     has out.txt "crust 0.9" "a crust index above 0.9 at the loaf's corner"
     vtu=$(find . -name loaf.vtu | head -1)
-    [ -n "$vtu" ] && grep -aq 'Name="browning"' "$vtu" || fail "the VTU has no browning array"
+    [ -n "$vtu" ] && grep -aq 'Name="browning \[1\]"' "$vtu" || fail "the VTU has no browning array"
     [ -n "$(find . -name loaf_browning.png | head -1)" ] || fail "no browning PNG"
     ;;
 lua_body_force_varies_in_space)
