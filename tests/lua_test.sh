@@ -263,7 +263,9 @@ lua_atomic_output)
     out="hearth-out/atomic_error"
     summary=$(whole_files "$out") || fail "a truncated file after a Lua error"
     echo "after a Lua error: $summary"
-    [ "$summary" = ".csv:1 .ply:5 .png:5 .vtu:5" ] || fail "expected frames 0-4 of each kind and the CSV, got $summary"
+    [ "$summary" = ".csv:1 .json:1 .log:1 .ply:5 .png:5 .vtu:5" ] ||
+        fail "expected frames 0-4 of each kind, the CSV and the run record (run.json, run.log), got $summary"
+    grep -q "^status: 1 (scene error)" "$out/run.log" || fail "run.log does not record the failure: $(cat "$out/run.log")"
     [ "$(wc -l <"$out/series.csv")" -eq 6 ] || fail "series.csv: expected a header and 5 rows"
     ls -a "$out" | grep -q '\.tmp\.' && fail "temp files left after a Lua error: $(ls -a "$out")"
     ;;
