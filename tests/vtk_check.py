@@ -41,7 +41,7 @@ def need_vtk():
         import vtk  # noqa: F401
     except ImportError:
         print("SKIP: VTK's Python module is missing (Debian: apt-get install python3-vtk9; "
-              "scripts/setup.sh --optional installs it)")
+              "scripts/test installs it through scripts/setup.sh hearth_install_optional)")
         sys.exit(77)
     return vtk
 
