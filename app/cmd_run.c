@@ -16,6 +16,7 @@
 #include "hearth/hearth.h"
 #include "hearth_lua.h"
 #include "progress.h"
+#include "run_log.h"
 
 
 static void run_usage(FILE *f, const char *cmd) {
@@ -24,11 +25,12 @@ static void run_usage(FILE *f, const char *cmd) {
                    "A plain Lua prompt (no curses) with the scene loaded; its variables are globals.\n"
                    "Lines read from a pipe run too:  echo 'print(s:stats().t)' | hearth repl scene.lua\n");
     else
-        fprintf(f, "usage: hearth run SCENE.lua [--until T] [--frames N] [--out DIR] [--set k=v]... [--threads N] [--quiet]\n"
+        fprintf(f, "usage: hearth run SCENE.lua [--until T] [--frames N] [--vtu DIR] [--out DIR] [--set k=v]... [--threads N] [--quiet]\n"
                    "                 [--lua-memory SIZE] [--trust]\n"
                    "Runs a Lua scene headless. Outputs go to DIR (default ./hearth-out/<scene name>/).\n"
                    "  --until T    stop every s:run at sim time T (s)\n"
                    "  --frames N   N frames per run (every = span / N)\n"
+                   "  --vtu DIR    every s:run also writes VTU frames and DIR/frame.pvd (DIR under the outputs)\n"
                    "  --set k=v    override a parameter the scene declares with h.params{...}\n"
                    "  --threads N  OpenMP threads (results do not depend on it)\n"
                    "  --quiet      no progress output\n"
@@ -65,6 +67,8 @@ static int parse_size(const char *v, size_t *out) {
 
 int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
     memset(a, 0, sizeof *a);
+    a->argc = argc;
+    a->argv = argv;
     for (int i = 1; i < argc; i++) {
         const char *s = argv[i];
         if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
@@ -74,7 +78,7 @@ int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
         if (!strcmp(s, "--quiet")) { a->quiet = 1; continue; }
         if (!strcmp(s, "--trust")) { a->trust = 1; continue; }
         if (s[0] == '-' && s[1] == '-') {
-            static const char *const valued[] = {"--out", "--until", "--frames", "--threads", "--set", "--metric", "--metric-out", "--lua-memory", NULL};
+            static const char *const valued[] = {"--out", "--until", "--frames", "--threads", "--set", "--metric", "--metric-out", "--lua-memory", "--vtu", NULL};
             int known = 0;
             for (int k = 0; valued[k]; k++) known |= !strcmp(s, valued[k]);
             if (!known) {
@@ -87,6 +91,7 @@ int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
             }
             const char *v = argv[++i];
             if (!strcmp(s, "--out")) a->out = v;
+            else if (!strcmp(s, "--vtu")) a->vtu = v;
             else if (!strcmp(s, "--metric")) a->metric = v;
             else if (!strcmp(s, "--metric-out")) a->metric_out = v;
             else if (!strcmp(s, "--lua-memory")) {
@@ -164,11 +169,16 @@ static void on_progress(void *ud, double t, double t_end, long steps, int final)
     else progress_update(p, t, steps);
 }
 
+/* The last failure's message, for the run record. */
+static char g_last_error[1024];
+
 /* Report a failed protected call; returns the exit status: 3 for a guard
  * stop, 2 for a bad --set value, 128 + the signal for an interrupt, else 1. */
 static int report(lua_State *L, const char *cmd, const char *out) {
     int st;
-    switch (hl_error_message(L, -1)) {
+    int kind = hl_error_message(L, -1);
+    snprintf(g_last_error, sizeof g_last_error, "%s", lua_tostring(L, -1) ? lua_tostring(L, -1) : "");
+    switch (kind) {
     case HL_ERR_GUARD:
         fprintf(stderr, "hearth %s: the stability guard stopped the run:\n  %s\n", cmd, lua_tostring(L, -1));
         st = 3;
@@ -207,7 +217,7 @@ static lua_State *start(run_args *a, progress *pr, const char *cmd) {
     hl_options o = {.out_dir = a->out, .scene_dir = a->dir_buf, .until_override = a->until,
                     .frames_override = (int)a->frames, .quiet = a->quiet, .trusted = a->trust,
                     .sets = a->sets, .progress = on_progress, .progress_ud = pr,
-                    .assets_dir = app_assets_dir(), .lua_memory = a->lua_memory};
+                    .assets_dir = app_assets_dir(), .lua_memory = a->lua_memory, .vtu_dir = a->vtu};
     lua_State *L = hl_new_state(&o, &err);
     if (!L) fprintf(stderr, "hearth %s: %s\n", cmd, err.msg);
     return L;
@@ -270,6 +280,8 @@ int cmd_run(int argc, char **argv) {
     progress pr;
     lua_State *L = start(&a, &pr, "run");
     if (!L) return 1;
+    run_log rec;
+    run_log_start(&rec, &a);
     int status = 0;
     if (luaL_loadfilex(L, a.scene, "t") != LUA_OK) status = report(L, "run", a.out);
     else if (hl_pcall(L, 0, 0) != LUA_OK) status = report(L, "run", a.out);
@@ -284,6 +296,9 @@ int cmd_run(int argc, char **argv) {
         }
     }
     if (a.metric && status < 128) status = metric_report(L, &a, status);
+    run_log_scene(&rec, L);
+    if (status) run_log_message(&rec, g_last_error);
+    run_log_write(&rec, status);
     if (status == 0 && !a.quiet) fprintf(stderr, "hearth run: done; outputs in %s/\n", a.out);
     hl_close_state(L);
     return status;

@@ -28,6 +28,9 @@ typedef struct run_args {
     int quiet, trust;
     size_t lua_memory; /* --lua-memory SIZE in bytes; 0 = the default ceiling */
     const char *metric, *metric_out; /* --metric NAME [--metric-out FILE] (used by hearth trade) */
+    const char *vtu;                 /* --vtu DIR: VTU frames and a .pvd from every s:run, under the output folder */
+    int argc;                        /* the command line, for the run record (run_log.c) */
+    char **argv;
     const char *sets[65];
     int nsets;
     char out_buf[4096], dir_buf[4096];

@@ -109,6 +109,7 @@ static int l_options(lua_State *L) {
     if (o->assets_dir) lua_pushstring(L, o->assets_dir), lua_setfield(L, -2, "assets_dir");
     if (o->until_override > 0) lua_pushnumber(L, o->until_override), lua_setfield(L, -2, "until_t");
     if (o->frames_override > 0) lua_pushinteger(L, o->frames_override), lua_setfield(L, -2, "frames");
+    if (o->vtu_dir) lua_pushstring(L, o->vtu_dir), lua_setfield(L, -2, "vtu_dir");
     lua_pushboolean(L, o->quiet), lua_setfield(L, -2, "quiet");
     lua_pushboolean(L, o->yield_steps), lua_setfield(L, -2, "yield");
     lua_newtable(L);

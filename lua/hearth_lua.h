@@ -37,6 +37,7 @@ typedef struct hl_options {
     /// A host's own stop flag (the dashboard's signal handler), polled with the
     /// module's own by the interrupt hook; NULL for none. Returns a signal number or 0.
     int (*interrupted)(void);
+    const char *vtu_dir;    ///< every s:run without its own vtu = {...} writes VTU frames and a .pvd here (hearth run --vtu)
 } hl_options;
 
 /// The one constructor of a Lua state that runs scenes (hearth run, repl, the

@@ -213,7 +213,46 @@ static int dump(lua_State *L, const char *call, hearth_status (*fn)(const hearth
     return 1;
 }
 static int l_vtu(lua_State *L) { return dump(L, "s:vtu", hearth_write_vtu); }
-static int l_ply(lua_State *L) { return dump(L, "s:ply", hearth_write_ply); }
+
+/* s:ply(path [, {color = "temperature" | false, range = {lo, hi}, colormap = "viridis"}]) */
+static int l_ply(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    char buf[4096];
+    const char *path = hl_out_path(L, "s:ply", luaL_checkstring(L, 2), HL_PATH_MKDIRS, buf, sizeof buf);
+    hearth_ply_def def = hearth_default_ply_def();
+    if (lua_istable(L, 3)) {
+        static const char *const keys[] = {"color", "range", "colormap", NULL};
+        lua_pushnil(L);
+        while (lua_next(L, 3)) { /* a misspelt option must not be silently ignored */
+            int ok = 0;
+            for (int k = 0; keys[k]; k++) ok |= lua_type(L, -2) == LUA_TSTRING && !strcmp(lua_tostring(L, -2), keys[k]);
+            if (!ok) return luaL_error(L, "s:ply: unknown option '%s' (valid: color, range, colormap)", luaL_tolstring(L, -2, NULL));
+            lua_pop(L, 1);
+        }
+        int t = lua_getfield(L, 3, "color");
+        if (t == LUA_TBOOLEAN) def.color = lua_toboolean(L, -1);
+        else if (t == LUA_TSTRING) def.color_field = lua_tostring(L, -1);
+        else if (t != LUA_TNIL) return luaL_error(L, "s:ply: color = \"field name\" or false, got %s", luaL_typename(L, -1));
+        t = lua_getfield(L, 3, "range");
+        if (t == LUA_TTABLE) {
+            lua_geti(L, -1, 1);
+            lua_geti(L, -2, 2);
+            if (!lua_isnumber(L, -2) || !lua_isnumber(L, -1) || !(lua_tonumber(L, -2) < lua_tonumber(L, -1)))
+                return luaL_error(L, "s:ply: range = {lo, hi} with lo < hi (in the field's unit)");
+            def.range[0] = lua_tonumber(L, -2);
+            def.range[1] = lua_tonumber(L, -1);
+            lua_pop(L, 2);
+        } else if (t != LUA_TNIL) return luaL_error(L, "s:ply: range = {lo, hi}, got %s", luaL_typename(L, -1));
+        t = lua_getfield(L, 3, "colormap");
+        if (t == LUA_TSTRING) def.colormap = lua_tostring(L, -1);
+        else if (t != LUA_TNIL) return luaL_error(L, "s:ply: colormap = \"viridis\", got %s", luaL_typename(L, -1));
+        /* the strings stay on the stack (anchored by the table) until the write is done */
+    }
+    hearth_error err;
+    if (hearth_write_ply_with(u->s, path, &def, &err)) return hl_raise(L, &err);
+    lua_pushstring(L, path);
+    return 1;
+}
 static int l_save(lua_State *L) { return dump(L, "s:save", hearth_scene_save); }
 
 /* core.write_atomic(path, text [, call]): for CSV series and anything else a

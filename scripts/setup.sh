@@ -40,6 +40,24 @@ hearth_install_deps() {
     $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $missing >&2
 }
 
+# Optional Debian packages: tests that need one skip (exit 77) without it,
+# and nothing else depends on them. python3-vtk9: VTK's own readers check the
+# VTU series and PLY files (tests/vtk_check.py). A failed install is only
+# reported. scripts/test installs them; HEARTH_NO_OPTIONAL=1 skips that.
+hearth_install_optional() {
+    [ "${HEARTH_NO_OPTIONAL:-0}" = 1 ] && return 0
+    local missing=()
+    /usr/bin/python3 -c "import vtk" >/dev/null 2>&1 || python3 -c "import vtk" >/dev/null 2>&1 || missing+=(python3-vtk9)
+    [ ${#missing[@]} -eq 0 ] && return 0
+    echo "hearth: installing optional Debian packages: ${missing[*]}" >&2
+    local sudo=""
+    [ "$(id -u)" -ne 0 ] && sudo="sudo"
+    $sudo apt-get update -qq >&2 || true
+    $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2 ||
+        echo "hearth: optional packages not installed (${missing[*]}); the tests that need them will skip" >&2
+    return 0
+}
+
 # hearth_build DIR [meson options...]: configure once, then build.
 hearth_build() {
     local dir="$1"; shift

@@ -35,6 +35,11 @@ baking_scene_cookies | baking_scene_bread | baking_scene_muffins | baking_scene_
     [ "$n" -ge 3 ] || fail "$sc wrote $n PNG frames, expected at least 3"
     csv=$(find "hearth-out/$sc" -name "$sc.csv" | head -1)
     [ -n "$csv" ] || fail "$sc wrote no $sc.csv"
+    # the shipped scene that writes ParaView/Blender series (README): 3 frames in its .pvd, 3 PLY
+    if [ "$sc" = bread ]; then
+        [ "$(grep -c '<DataSet ' hearth-out/bread/vtu/bread.pvd)" = 3 ] && [ "$(ls hearth-out/bread/ply/*.ply | wc -l)" = 3 ] ||
+            fail "bread wrote no VTU/PLY series of 3 frames: $(ls -R hearth-out/bread)"
+    fi
     rows=$(wc -l <"$csv")
     [ "$rows" -ge 2 ] || fail "$csv has $rows lines"
     python3 - "$csv" <<'PY' || fail "$csv has non-numeric or non-finite cells"

@@ -121,6 +121,47 @@ cli_plugin_check_exit)
     "$hearth" plugin check /nonexistent/hearth_x.so 2>"$tmp/err.txt"; [ $? -eq 1 ] || fail "missing file exit"
     grep -q "not found" "$tmp/err.txt" || fail "missing file message: $(cat "$tmp/err.txt")"
     ;;
+cli_run_writes_log)
+    # hearth run leaves run.log and run.json beside its outputs: "running" while
+    # it runs (the scene reads it), then the command line, --set values,
+    # plugins, threads, timings and the status; a failed run says why
+    cat >"$tmp/log.lua" <<EOF
+local h = require "hearth"
+local P = h.params { E = 1e4 }
+local f = assert(io.open("$tmp/o/run.json"))
+local during = f:read("a")
+f:close()
+assert(during:find('"status_text": "running"', 1, true), "run.json during the run: " .. during)
+local s = h.scene { dim = 2, dx = 1 / 16, box = { { 0, 0 }, { 1, 1 } } }
+local m = h.material("elastic", { E = P.E, density = 1000 })
+s:add { shape = h.box({ 0.3, 0.3 }, { 0.6, 0.6 }), material = m, ppc = 4 }
+s:run { until_t = 0.02 }
+if P.E > 5e4 then error("E too high for this test") end
+EOF
+    "$hearth" run "$tmp/log.lua" --out "$tmp/o" --quiet --threads 2 --set E=2e4 --trust || fail "the run failed"
+    cat "$tmp/o/run.log"
+    for want in "command: hearth run $tmp/log.lua --out $tmp/o --quiet --threads 2 --set E=2e4 --trust" "set: E=2e4" \
+        "threads: 2" "plugin: elastic abi 1 " "status: 0 (done)" "steps: " "wall: "; do
+        grep -qF "$want" "$tmp/o/run.log" || fail "run.log lacks '$want'"
+    done
+    python3 - "$tmp/o/run.json" <<'PY' || fail "run.json"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["status"] == 0 and r["status_text"] == "done", r
+assert r["sets"] == {"E": "2e4"} and r["threads"] == 2, r
+assert [p["name"] for p in r["plugins"]] == ["elastic"] and r["plugins"][0]["abi"] >= 1, r
+assert r["steps"] > 0 and r["wall_s"] > 0 and r["steps_per_s"] > 0 and r["particles"] > 0, r
+assert abs(r["sim_time_s"] - 0.02) < 1e-12, r
+print(f"run.json: {r['steps']} steps in {r['wall_s']:.3f} s ({r['steps_per_s']:.0f} steps/s)")
+PY
+    # a scene error: status 1 and the message, in both
+    "$hearth" run "$tmp/log.lua" --out "$tmp/o" --quiet --set E=9e4 --trust 2>/dev/null && fail "the failing run passed"
+    grep -q "status: 1 (scene error)" "$tmp/o/run.log" && grep -q "message: .*E too high" "$tmp/o/run.log" ||
+        fail "run.log of a failed run: $(cat "$tmp/o/run.log")"
+    python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); assert r["status"]==1 and "E too high" in r["message"], r' \
+        "$tmp/o/run.json" || fail "run.json of a failed run"
+    ls "$tmp/o" | grep -q '\.tmp\.' && fail "a temp file was left: $(ls "$tmp/o")"
+    ;;
 cli_bad_usage)
     "$hearth" frobnicate 2>/dev/null; [ $? -eq 2 ] || fail "unknown command should exit 2"
     "$hearth" bench --cells x 2>"$tmp/e"; [ $? -eq 2 ] || fail "bad number should exit 2"

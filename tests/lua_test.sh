@@ -263,7 +263,9 @@ lua_atomic_output)
     out="hearth-out/atomic_error"
     summary=$(whole_files "$out") || fail "a truncated file after a Lua error"
     echo "after a Lua error: $summary"
-    [ "$summary" = ".csv:1 .ply:5 .png:5 .vtu:5" ] || fail "expected frames 0-4 of each kind and the CSV, got $summary"
+    [ "$summary" = ".csv:1 .json:1 .log:1 .ply:5 .png:5 .vtu:5" ] ||
+        fail "expected frames 0-4 of each kind, the CSV and the run record (run.json, run.log), got $summary"
+    grep -q "^status: 1 (scene error)" "$out/run.log" || fail "run.log does not record the failure: $(cat "$out/run.log")"
     [ "$(wc -l <"$out/series.csv")" -eq 6 ] || fail "series.csv: expected a header and 5 rows"
     ls -a "$out" | grep -q '\.tmp\.' && fail "temp files left after a Lua error: $(ls -a "$out")"
     ;;
@@ -782,7 +784,7 @@ lua_browning_example)
     cat out.txt
     has out.txt "crust 0.9" "a crust index above 0.9 at the loaf's corner"
     vtu=$(find . -name loaf.vtu | head -1)
-    [ -n "$vtu" ] && grep -aq 'Name="browning"' "$vtu" || fail "the VTU has no browning array"
+    [ -n "$vtu" ] && grep -aq 'Name="browning \[1\]"' "$vtu" || fail "the VTU has no browning array"
     [ -n "$(find . -name loaf_browning.png | head -1)" ] || fail "no browning PNG"
     ;;
 lua_body_force_varies_in_space)

@@ -4,7 +4,7 @@
  * little-endian bytes by hand, so the check does not depend on the host's
  * byte order nor share code with the writer. Values must come back bit for
  * bit: the dumps are Float64 of the same doubles the API returns. */
-#define _POSIX_C_SOURCE 200809L /* mkdtemp, setrlimit */
+#define _GNU_SOURCE /* mkdtemp, setrlimit, memmem */
 
 #include <dirent.h>
 #include <signal.h>
@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "alloc.h"
+#include "colormap.h"
 #include "fs_fixture.h"
 #include "mpm_fixture.h"
 
@@ -125,16 +126,18 @@ static void check_vtu_common(const vtu *v, const hearth_scene *s) {
     snprintf(want, sizeof want, "NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\"", n, n);
     CHECK_STR_CONTAINS(v->xml, want);
 
-    /* Every live field is a PointData array with its component count. */
+    /* Every live field is a PointData array "name [unit]" with its component count. */
     char names[256];
     snprintf(names, sizeof names, "%s", hearth_scene_fields(s));
     uint64_t last_end = 0;
     for (char *save = NULL, *f = strtok_r(names, " ", &save); f; f = strtok_r(NULL, " ", &save)) {
         unsigned long long nc = 0;
-        CHECK(vtu_attr(v, f, "NumberOfComponents", &nc));
+        char an[96];
+        snprintf(an, sizeof an, "%s [%s]", f, hearth_field_unit(f));
+        CHECK(vtu_attr(v, an, "NumberOfComponents", &nc));
         CHECK(nc == (unsigned long long)hearth_field_components(f));
         uint64_t bytes = 0;
-        const unsigned char *p = vtu_array(v, f, &bytes);
+        const unsigned char *p = vtu_array(v, an, &bytes);
         CHECK(p != NULL);
         CHECK(bytes == 8 * nc * n);
         if (p) last_end = (uint64_t)(p - v->data) + bytes;
@@ -148,11 +151,33 @@ static void check_vtu_common(const vtu *v, const hearth_scene *s) {
     hearth_stats st;
     hearth_scene_stats(s, &st);
     uint64_t bytes = 0;
-    const unsigned char *t = vtu_array(v, "TIME", &bytes);
+    const unsigned char *t = vtu_array(v, "TimeValue", &bytes);
     CHECK(t && bytes == 8);
     if (t) CHECK(le_f64(t) == st.t);
     unsigned long long tuples = 0;
-    CHECK(vtu_attr(v, "TIME", "NumberOfTuples", &tuples) && tuples == 1);
+    CHECK(vtu_attr(v, "TimeValue", "NumberOfTuples", &tuples) && tuples == 1);
+    CHECK(strstr(v->xml, "Name=\"TIME\"") == NULL);
+    CHECK_STR_CONTAINS(v->xml, "<PointData Vectors=\"velocity [m/s]\" Tensors=\"stress [Pa]\" GlobalIds=\"id\">");
+
+    /* Ids bit for bit, masses, and volumes that are mass over density. */
+    const unsigned char *id = vtu_array(v, "id", &bytes);
+    CHECK(id && bytes == 4 * n);
+    const int *ids = hearth_scene_particle_ids(s);
+    for (size_t i = 0; id && i < n; i++)
+        CHECK((int32_t)(id[4 * i] | id[4 * i + 1] << 8 | id[4 * i + 2] << 16 | (uint32_t)id[4 * i + 3] << 24) == ids[i]);
+    const int d2 = hearth_scene_get_def(s)->dim == 2;
+    const unsigned char *ma = vtu_array(v, d2 ? "mass [kg/m]" : "mass [kg]", &bytes);
+    CHECK(ma && bytes == 8 * n);
+    const unsigned char *vo = vtu_array(v, d2 ? "volume [m^2]" : "volume [m^3]", &bytes);
+    CHECK(vo && bytes == 8 * n);
+    double *rho = malloc(sizeof(double) * (n + 1));
+    hearth_error err;
+    CHECK(hearth_scene_particle_field(s, "density", rho, &err) == HEARTH_OK);
+    for (size_t i = 0; ma && vo && i < n; i++) {
+        CHECK(le_f64(ma + 8 * i) == hearth_scene_particle_masses(s)[i]);
+        CHECK(fabs(le_f64(ma + 8 * i) / le_f64(vo + 8 * i) - rho[i]) <= 1e-12 * rho[i]);
+    }
+    free(rho);
 
     /* One VTK_VERTEX per particle. */
     const unsigned char *conn = vtu_array(v, "connectivity", &bytes);
@@ -170,8 +195,9 @@ static void check_vtu_common(const vtu *v, const hearth_scene *s) {
 
 typedef struct ply {
     unsigned char *buf;
-    size_t len, n, nprops;
-    char props[32][32];
+    size_t len, n, nprops, row; /* row: bytes per vertex */
+    char props[40][32];
+    size_t size[40], off[40];   /* each property's bytes (uchar 1, int 4, double 8) and offset in the row */
     double t;
     const unsigned char *body;
 } ply;
@@ -191,13 +217,18 @@ static int ply_load(ply *p, const char *path) {
     line = strtok_r(NULL, "\n", &save);
     if (!line || strcmp(line, "format binary_little_endian 1.0") != 0) return 0;
     while ((line = strtok_r(NULL, "\n", &save))) {
-        char name[32];
+        char name[32], type[16];
         unsigned long n;
         if (strncmp(line, "comment hearth t=", 17) == 0) p->t = strtod(line + 17, NULL);
         else if (sscanf(line, "element vertex %lu", &n) == 1) p->n = n;
-        else if (sscanf(line, "property double %31s", name) == 1 && p->nprops < 32)
+        else if (sscanf(line, "property %15s %31s", type, name) == 2 && p->nprops < 40) {
+            size_t sz = !strcmp(type, "double") ? 8 : !strcmp(type, "int") ? 4 : !strcmp(type, "uchar") ? 1 : 0;
+            if (!sz) return 0;
+            p->size[p->nprops] = sz;
+            p->off[p->nprops] = p->row;
+            p->row += sz;
             snprintf(p->props[p->nprops++], sizeof p->props[0], "%s", name);
-        else if (strncmp(line, "comment ", 8) != 0) return 0; /* anything else is unexpected */
+        } else if (strncmp(line, "comment ", 8) != 0) return 0; /* anything else is unexpected */
     }
     return 1;
 }
@@ -209,7 +240,10 @@ static int ply_prop(const ply *p, const char *name) {
 }
 
 static double ply_value(const ply *p, size_t i, int prop) {
-    return le_f64(p->body + 8 * (i * p->nprops + (size_t)prop));
+    const unsigned char *b = p->body + i * p->row + p->off[prop];
+    if (p->size[prop] == 1) return b[0];
+    if (p->size[prop] == 4) return (int32_t)(b[0] | b[1] << 8 | b[2] << 16 | (uint32_t)b[3] << 24);
+    return le_f64(b);
 }
 
 /* Header and size every PLY from hearth must have. */
@@ -220,7 +254,10 @@ static void check_ply_common(const ply *p, const hearth_scene *s) {
     CHECK(p->n == n);
     CHECK(p->t == st.t);
     CHECK(p->nprops >= 3 && !strcmp(p->props[0], "x") && !strcmp(p->props[1], "y") && !strcmp(p->props[2], "z"));
-    size_t want = 3;
+    /* the colours ParaView, Blender and MeshLab show, then id, mass, volume */
+    CHECK(ply_prop(p, "red") == 3 && ply_prop(p, "green") == 4 && ply_prop(p, "blue") == 5);
+    CHECK(ply_prop(p, "id") == 6 && ply_prop(p, "mass") == 7 && ply_prop(p, "volume") == 8);
+    size_t want = 9;
     char names[256];
     snprintf(names, sizeof names, "%s", hearth_scene_fields(s));
     for (char *save = NULL, *f = strtok_r(names, " ", &save); f; f = strtok_r(NULL, " ", &save)) {
@@ -235,7 +272,7 @@ static void check_ply_common(const ply *p, const hearth_scene *s) {
         }
     }
     CHECK(p->nprops == want);
-    CHECK((size_t)(p->buf + p->len - p->body) == 8 * n * p->nprops);
+    CHECK((size_t)(p->buf + p->len - p->body) == n * p->row);
 }
 
 /* ---- cases ------------------------------------------------------------- */
@@ -264,7 +301,7 @@ TEST(vtu_roundtrip) {
         for (int i = 0; pts && i < 3 * n; i++) got[i] = le_f64(pts + 8 * i);
         if (pts) CHECK(same_doubles(got, hearth_scene_positions(s), 3 * (size_t)n));
 
-        const unsigned char *rho = vtu_array(&v, "density", &bytes);
+        const unsigned char *rho = vtu_array(&v, "density [kg/m^3]", &bytes);
         CHECK(rho && bytes == 8 * (uint64_t)n);
         CHECK(hearth_scene_particle_field(s, "density", want, &err) == HEARTH_OK);
         for (int i = 0; rho && i < n; i++) got[i] = le_f64(rho + 8 * i);
@@ -310,6 +347,47 @@ TEST(ply_roundtrip) {
         }
         CHECK(bad == 0);
         CHECK(speed[0] > 0.1); /* the block moves */
+        /* ids and masses as the API gives them */
+        const int pid = ply_prop(&p, "id"), pm = ply_prop(&p, "mass");
+        int idbad = 0;
+        for (size_t i = 0; i < n; i++)
+            idbad += ply_value(&p, i, pid) != hearth_scene_particle_ids(s)[i] ||
+                     ply_value(&p, i, pm) != hearth_scene_particle_masses(s)[i];
+        CHECK(idbad == 0);
+
+        /* Colours from a given range: each vertex is the map's colour of its
+         * speed, and the header says which field, range and map. */
+        hearth_ply_def def = hearth_default_ply_def();
+        def.color_field = "speed";
+        def.range[0] = 0.0, def.range[1] = 1.0;
+        def.colormap = "inferno";
+        CHECK(hearth_write_ply_with(s, path, &def, &err) == HEARTH_OK);
+        size_t hl = 0;
+        char *raw = (char *)slurp(path, &hl);
+        CHECK(raw && memmem(raw, hl, "comment color speed 0 1 m/s inferno\n", 36));
+        free(raw);
+        ply q;
+        CHECK(ply_load(&q, path));
+        if (q.body) {
+            const int pr = ply_prop(&q, "red");
+            int cbad = 0;
+            for (size_t i = 0; i < n; i++) {
+                unsigned char rgb[3];
+                cmap_eval(CMAP_INFERNO, speed[i], rgb);
+                for (int k = 0; k < 3; k++) cbad += ply_value(&q, i, pr + k) != rgb[k];
+            }
+            printf("ply_roundtrip: %zu vertices; speed %.4g m/s is rgb %g %g %g\n", n, speed[0], ply_value(&q, 0, pr),
+                   ply_value(&q, 0, pr + 1), ply_value(&q, 0, pr + 2));
+            CHECK(cbad == 0);
+        }
+        free(q.buf);
+        /* a tensor cannot be a colour; an unknown map is named */
+        def.color_field = "stress";
+        CHECK(hearth_write_ply_with(s, path, &def, &err) == HEARTH_ERR_PARAM);
+        CHECK_STR_CONTAINS(err.msg, "is a tensor");
+        def.color_field = NULL, def.colormap = "jet";
+        CHECK(hearth_write_ply_with(s, path, &def, &err) == HEARTH_ERR_PARAM);
+        CHECK_STR_CONTAINS(err.msg, "colormap 'jet' is unknown");
         free(speed);
         free(vel);
     }

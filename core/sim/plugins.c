@@ -56,6 +56,9 @@ static char g_writable[PATH_MAX];
 
 _Thread_local plugin_call plugin_current_call __attribute__((tls_model("initial-exec")));
 
+int hearth_plugin_loaded_count(void) { return g_nloaded; }
+const hearth_plugin *hearth_plugin_loaded(int i) { return i >= 0 && i < g_nloaded ? g_loaded[i] : NULL; }
+
 void hearth_plugin_call_enter(const hearth_material *m, const char *callback) { plugin_call_enter(m, callback); }
 void hearth_plugin_call_leave(void) { plugin_call_leave(); }
 

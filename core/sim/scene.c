@@ -705,6 +705,7 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
 int hearth_scene_particle_count(const hearth_scene *s) { return s->ps.n; }
 const double *hearth_scene_positions(const hearth_scene *s) { return pcold(&s->ps, PC_X); }
 const int *hearth_scene_particle_ids(const hearth_scene *s) { return pcoli(&s->ps, PC_ID); }
+const double *hearth_scene_particle_masses(const hearth_scene *s) { return pcold(&s->ps, PC_MASS); }
 
 uint64_t hearth_scene_hash(const hearth_scene *s) {
     uint64_t h = 1469598103934665603ULL; /* FNV-1a over every enabled column */

@@ -811,7 +811,7 @@ local function frame_path(fr, path)
 end
 function frame_mt:png(field, path, opts) return self.scene:png(field, frame_path(self, path), opts) end
 function frame_mt:vtu(path) return self.scene:vtu(frame_path(self, path)) end
-function frame_mt:ply(path) return self.scene:ply(frame_path(self, path)) end
+function frame_mt:ply(path, opts) return self.scene:ply(frame_path(self, path), opts) end
 function frame_mt:save(path) return self.scene:save(frame_path(self, path)) end
 function frame_mt:stats() return self.scene:stats() end
 
@@ -822,7 +822,8 @@ local function default_field(s)
   return "speed"
 end
 
-local run_keys = { until_t = true, every = true, on_frame = true, csv = true, probes = true, png = true, until_rest = true }
+local run_keys = { until_t = true, every = true, on_frame = true, csv = true, probes = true, png = true, until_rest = true,
+  vtu = true, ply = true }
 local run_png_keys = { field = true, path = true, kind = true, width = true, height = true, axis = true, at = true,
   range = true, colormap = true }
 local png_keys = { kind = true, width = true, height = true, axis = true, at = true, range = true, colormap = true, grow = true }
@@ -869,13 +870,125 @@ local function check_run_outputs(o)
   end
 end
 
+
+-- ---- particle dumps in runs: s:run{vtu = {...}, ply = {...}} ----------------
+-- Each dump keeps its own cadence (every, default the run's) and counter; the
+-- counter and the VTU's .pvd list live in the scene's state, keyed by the path
+-- pattern, so a second s:run with the same pattern continues the series and
+-- its collection. The .pvd is rewritten whole (atomically) after every frame:
+-- a run opened in ParaView while it goes, or after a kill, has a collection
+-- listing exactly the frames on disk.
+
+local run_dump_keys = {
+  vtu = { path = true, every = true, pvd = true },
+  ply = { path = true, every = true, color = true, range = true, colormap = true },
+}
+local dump_default_path = { vtu = "particles_%04d.vtu", ply = "particles_%04d.ply" }
+
+local function check_dump_outputs(o)
+  for _, kind in ipairs { "vtu", "ply" } do
+    local d = o[kind]
+    if d ~= nil and d ~= true then
+      if type(d) ~= "table" then
+        error(("s:run: %s = {path = \"%s\", every = ...} or true, got %s"):format(kind, dump_default_path[kind], type(d)), 3)
+      end
+      check_keys(d, run_dump_keys[kind], "s:run: " .. kind, 4)
+      if d.path ~= nil and (type(d.path) ~= "string" or not d.path:find("%%0?%d*d")) then
+        error(("s:run: %s.path = %s: a file pattern with the frame number as %%d or %%04d, e.g. \"%s\""):format(
+          kind, tostring(d.path), dump_default_path[kind]), 3)
+      end
+      if d.every ~= nil then check_number(d.every, "s:run: " .. kind .. ".every", 1e-12, 1e12, "s", 4) end
+      if d.pvd ~= nil and (type(d.pvd) ~= "string" or d.pvd:find("/") or not d.pvd:find("%.pvd$")) then
+        error(("s:run: vtu.pvd = %s: a file name ending in .pvd (it is written beside the frames)"):format(tostring(d.pvd)), 3)
+      end
+    end
+  end
+end
+
+-- "out/bake_%04d.vtu" -> "out/bake.pvd"; a pattern that is only the number -> "frames.pvd"
+local function pvd_path(path, name)
+  local dir, base = path:match("^(.*/)([^/]*)$")
+  dir, base = dir or "", base or path
+  if name then return dir .. name end
+  local stem = base:gsub("%%0?%d*d", ""):gsub("%.vtu$", ""):gsub("[_%-%.]+$", "")
+  return dir .. (stem ~= "" and stem or "frames") .. ".pvd"
+end
+
+local function xml_attr(v) return (v:gsub("&", "&amp;"):gsub("<", "&lt;"):gsub(">", "&gt;"):gsub('"', "&quot;")) end
+
+-- VTK's collection format, which ParaView (and vtkXMLCollectionReader) read
+-- as one data set with a time axis: one DataSet per frame, file relative to
+-- the .pvd. %.17g: timestep reads back as the frame's TimeValue, bit for bit.
+local function pvd_text(list)
+  local out = { '<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">\n<Collection>\n' }
+  for _, e in ipairs(list) do
+    out[#out + 1] = ('<DataSet timestep="%.17g" group="" part="0" file="%s"/>\n'):format(e[1], xml_attr(e[2]))
+  end
+  out[#out + 1] = "</Collection>\n</VTKFile>\n"
+  return table.concat(out)
+end
+
+-- The dumps one run writes: {kind, path, every, next, state, opts}.
+local function run_dumps(self, o, opts, t0, every)
+  local specs = {}
+  for _, kind in ipairs { "vtu", "ply" } do
+    local d = o[kind]
+    if d == nil and kind == "vtu" and opts.vtu_dir then d = { path = opts.vtu_dir .. "/frame_%04d.vtu" } end
+    if d ~= nil then
+      if d == true then d = {} end
+      local st = self:_state()
+      st.dumps = st.dumps or {}
+      local path = d.path or dump_default_path[kind]
+      local key = kind .. "\0" .. path
+      st.dumps[key] = st.dumps[key] or { count = 0, list = {} }
+      -- a series continued by another s:run already has this instant (the
+      -- last run's end): a second file at the same time would give the .pvd
+      -- two data sets for one time step
+      local e = d.every or every
+      local first = st.dumps[key].last_t == t0 and t0 + e or t0
+      specs[#specs + 1] = { kind = kind, path = path, every = e, next = first, state = st.dumps[key],
+        pvd = kind == "vtu" and pvd_path(path, d.pvd) or nil,
+        opts = kind == "ply" and { color = d.color, range = d.range, colormap = d.colormap } or nil }
+    end
+  end
+  return specs
+end
+
+-- Earliest time a dump is due (the run steps land on it, as on frames).
+local function dumps_next(specs, t)
+  for _, d in ipairs(specs) do t = math.min(t, d.next) end
+  return t
+end
+
+-- Write the dumps due at time t (all of them when force: the run's end at rest).
+local function dumps_write(self, specs, t, force)
+  for _, d in ipairs(specs) do
+    if force or t >= d.next - 1e-9 * d.every then
+      local path = d.path:format(d.state.count)
+      if d.kind == "vtu" then
+        self:vtu(path)
+        d.state.list[#d.state.list + 1] = { t, path:match("([^/]*)$") }
+        core.write_atomic(d.pvd, pvd_text(d.state.list), "s:run{vtu = ...}")
+      else
+        local ok, err = pcall(self.ply, self, path, d.opts)
+        if not ok then error(err, 0) end
+      end
+      d.state.count, d.state.last_t = d.state.count + 1, t
+      repeat d.next = d.next + d.every until d.next > t + 1e-9 * d.every
+    end
+  end
+end
+
 --- s:run{until_t = T, every = dt, on_frame = function(frame) ... end, csv = "series.csv",
----       probes = {{"speed", {x, y}}, ...}, png = {field = "speed", path = "frame_%04d.png", kind = "particles"}}
+---       probes = {{"speed", {x, y}}, ...}, png = {field = "speed", path = "frame_%04d.png", kind = "particles"},
+---       vtu = {path = "bake_%04d.vtu", every = dt, pvd = "bake.pvd"},
+---       ply = {path = "bake_%04d.ply", every = dt, color = "temperature", range = {20, 200}, colormap = "inferno"}}
 function S:run(o)
   o = o or {}
   if type(o) ~= "table" then error("s:run: expected a table", 2) end
   check_keys(o, run_keys, "s:run")
   check_run_outputs(o)
+  check_dump_outputs(o)
   local opts = core.options()
   local t0 = self:_time()
   local until_t = opts.until_t or o.until_t
@@ -934,6 +1047,8 @@ function S:run(o)
   end
   fire_events(self)
   frame()
+  local dumps = run_dumps(self, o, opts, t0, every)
+  dumps_write(self, dumps, t0, false)
   local next_frame = t0 + every
   local yield_steps = opts.yield and coroutine.isyieldable()
   -- until_rest: the largest particle speed is checked after every batch of
@@ -944,7 +1059,7 @@ function S:run(o)
   local at_rest, last_speed = false, math.huge
   while self:_time() < until_t - 1e-12 * math.max(1, until_t) and not at_rest do
     local now = self:_time()
-    local target = math.min(next_frame, until_t)
+    local target = dumps_next(dumps, math.min(next_frame, until_t))
     local ev = st.events[1]
     if ev and ev.t > now and ev.t < target then target = ev.t end
     if yield_steps then
@@ -971,6 +1086,7 @@ function S:run(o)
       frame() -- a run that stops at rest ends with a frame of the rest state
       next_frame = next_frame + every
     end
+    dumps_write(self, dumps, stt.t, at_rest)
     core.progress(stt.t, until_t, stt.step, false)
   end
   local stt = self:stats()

@@ -80,6 +80,10 @@ const hearth_plugin *hearth_plugin_load(const char *name_or_path, hearth_error *
 /// --trust, which may write only there. A path containing '/' is refused.
 void hearth_plugin_restrict(const char *writable_dir);
 const hearth_material *hearth_plugin_material(const hearth_plugin *pl);
+/// Plugins loaded so far in this process, in load order (for run records):
+/// the count, and the i-th (NULL out of range).
+int hearth_plugin_loaded_count(void);
+const hearth_plugin *hearth_plugin_loaded(int i);
 const char *hearth_plugin_file(const hearth_plugin *pl);
 /// Call fn for every plugin file found on the search path (each name once, first wins).
 /// Returns the number of files visited.
@@ -521,6 +525,10 @@ int hearth_scene_particle_count(const hearth_scene *s);
 /// seeding and never changes or is reused, while the order of particles does
 /// (the step sorts them), so a marked particle is found again by its id.
 const int *hearth_scene_particle_ids(const hearth_scene *s);
+/// Particle masses, one each in the same order (kg; kg/m in 2D, per metre of
+/// depth); valid until the next step. A particle's volume is its mass over
+/// the "density" field (m^3; m^2 in 2D), as the dumps write it.
+const double *hearth_scene_particle_masses(const hearth_scene *s);
 
 /* ---- pictures -------------------------------------------------------- */
 
@@ -596,11 +604,40 @@ hearth_status hearth_mkdir_p(const char *dir, hearth_error *err);
 
 /* ---- particle dumps ------------------------------------------------- */
 
-/// Write every particle with every live field as point data, as VTK XML
-/// UnstructuredGrid (.vtu, one VTK_VERTEX cell per particle, ParaView reads it).
-/// Binary appended data, base64-free ("raw" encoding), Float64. Written atomically.
+/// Write every particle as VTK XML UnstructuredGrid (.vtu, one VTK_VERTEX cell
+/// per particle; ParaView and VTK read it). Binary appended data ("raw"
+/// encoding), Float64 values. FieldData "TimeValue" holds the sim time (s),
+/// the array VTK's XML readers take the time from. PointData: "id" (Int32,
+/// hearth_scene_particle_ids, the GlobalIds attribute), "mass [kg]",
+/// "volume [m^3]" (2D: "mass [kg/m]", "volume [m^2]"), then every live field
+/// as "name [unit]" (hearth_field_unit; "[1]" for a dimensionless one), with
+/// "stress [Pa]" the 9-component row-major Cauchy stress (the Tensors
+/// attribute) and "velocity [m/s]" the Vectors attribute. Written atomically.
 hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_error *err);
-/// The same as binary little-endian PLY (vertex x y z as double, then one double property per field component).
+
+/// Options of a PLY dump. Start from hearth_default_ply_def().
+typedef struct hearth_ply_def {
+    /// Colour the vertices (uchar red, green, blue, which ParaView, Blender and
+    /// MeshLab show). Default 1.
+    int color;
+    /// Field the colours show: a scalar, a vector's magnitude, or a component
+    /// ("velocity_x"). NULL (default): temperature when live, else speed.
+    const char *color_field;
+    /// Colour range in the field's unit; lo >= hi (default {0, 0}): the
+    /// frame's own finite min and max.
+    double range[2];
+    /// Colour map name (cmap names: "viridis", "inferno", ...); NULL: viridis.
+    const char *colormap;
+} hearth_ply_def;
+hearth_ply_def hearth_default_ply_def(void);
+/// Binary little-endian PLY, one vertex per particle: x y z (double), red
+/// green blue (uchar, when def->color), id (int), mass and volume (double,
+/// units as the VTU), then one double property per live field component
+/// (velocity_x .. _z, stress_xx, stress_xy, ... row-major). Units, the time
+/// and the colour field and range are "comment" lines. def NULL: defaults.
+hearth_status hearth_write_ply_with(const hearth_scene *s, const char *path, const hearth_ply_def *def,
+                                    hearth_error *err);
+/// hearth_write_ply_with(s, path, NULL, err).
 hearth_status hearth_write_ply(const hearth_scene *s, const char *path, hearth_error *err);
 
 /* ---- checkpoints ---------------------------------------------------- */

@@ -8,8 +8,8 @@
  *  - PLY (binary_little_endian): one vertex row per particle, for tools that
  *    read point clouds but not VTK (Blender, MeshLab, Open3D).
  *
- * Only the public API is used, so a dump sees exactly what a user of
- * hearth_scene_particle_field would see. Files go through atomic_file, so a
+ * Only the public API is used (and colormap.h for the PLY's colours), so a
+ * dump sees exactly what a user of hearth_scene_particle_field would see. Files go through atomic_file, so a
  * failed write leaves any old file as it was and no temp file behind.
  *
  * Both formats are little-endian whatever the host: a big-endian host swaps
@@ -17,6 +17,7 @@
  * (VTK's byte_order, PLY's binary_big_endian), would make files depend on
  * the machine that wrote them. */
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -24,6 +25,7 @@
 
 #include "alloc.h"
 #include "atomic_file.h"
+#include "colormap.h"
 #include "error.h"
 #include "hearth/hearth.h"
 
@@ -171,7 +173,30 @@ static const char *unit_of(const char *field) {
     return u ? u : "?";
 }
 
+/* Mass and volume per particle: per metre of depth in 2D. */
+static const char *mass_unit(const hearth_scene *s) { return hearth_scene_get_def(s)->dim == 2 ? "kg/m" : "kg"; }
+static const char *volume_unit(const hearth_scene *s) { return hearth_scene_get_def(s)->dim == 2 ? "m^2" : "m^3"; }
+
+/* Each particle's volume, mass over its density: the density field is what
+ * the solver itself uses (MPM: m / (V0 det F); SPH: the summed density), so
+ * mass / volume reads back as the "density" array. */
+static hearth_status particle_volumes(const hearth_scene *s, double *out, const char *path, hearth_error *err) {
+    hearth_status st = field_values(s, "density", out, path, err);
+    if (st) return st;
+    const double *m = hearth_scene_particle_masses(s);
+    const size_t n = (size_t)hearth_scene_particle_count(s);
+    for (size_t i = 0; i < n; i++) out[i] = m[i] / out[i];
+    return HEARTH_OK;
+}
+
 /* ---- VTU ------------------------------------------------------------- */
+
+/* Units travel in the array names, "temperature [degC]": VTK's XML format has
+ * no unit attribute, and a name is the one thing every reader (VTK, ParaView,
+ * meshio, VisIt) keeps and shows, in ParaView's colour legend too. The
+ * alternative, an InformationKey element, is dropped by readers that do not
+ * register the key (VTK 9.1 among them). */
+static void vtu_name(char *out, size_t n, const char *field, const char *unit) { snprintf(out, n, "%s [%s]", field, unit); }
 
 /* Offsets in the appended block count from the byte after '_'; every array
  * there is a UInt64 byte count (header_type) followed by the bytes. */
@@ -181,10 +206,13 @@ static void vtu_array_tag(dump *d, const char *type, const char *name, int nc, u
     *offset += sizeof(uint64_t) + bytes;
 }
 
-/* FieldData arrays have no Piece to take their length from: VTK reads an
- * array without NumberOfTuples there as empty. */
+/* The time as FieldData "TimeValue": the array vtkXMLReader reports as the
+ * file's time step (SetActiveTimeDataArrayName's default), so a .vtu opened
+ * alone still has its time. FieldData arrays have no Piece to take their
+ * length from: without NumberOfTuples VTK reads them as empty. The old name
+ * TIME is gone; nothing read it. */
 static void vtu_time_tag(dump *d, uint64_t *offset) {
-    put_text(d, "<DataArray type=\"Float64\" Name=\"TIME\" NumberOfComponents=\"1\" NumberOfTuples=\"1\" "
+    put_text(d, "<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfComponents=\"1\" NumberOfTuples=\"1\" "
                 "format=\"appended\" offset=\"%llu\"/>\n",
              (unsigned long long)*offset);
     *offset += sizeof(uint64_t) + sizeof(double);
@@ -213,18 +241,24 @@ hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_e
     hearth_status st = scratch_get(&sc, s, path, err);
     if (st) return st;
     field_counts(sc.names, &max_nc, &total_nc);
-    /* Fields go out one at a time, so the buffer holds the widest one only. */
+    /* Fields go out one at a time, so the buffer holds the widest one only
+     * (at least one value each: the volumes use it too). */
     dump d;
-    if ((st = scratch_buf(&sc, n * max_nc, path, err)) || (st = dump_open(&d, path, err))) {
+    if ((st = scratch_buf(&sc, n * (max_nc ? max_nc : 1), path, err)) || (st = dump_open(&d, path, err))) {
         scratch_free(&sc);
         return st;
     }
 
-    /* The XML part: every offset follows from n and the component counts. */
+    /* The XML part: every offset follows from n and the component counts.
+     * The attribute names make velocity ParaView's active vectors and stress
+     * its active tensors (glyphs, eigenvalues), and id the GlobalIds. */
+    char name[NAME_CAP + 16], vec[NAME_CAP + 16], ten[NAME_CAP + 16];
+    vtu_name(vec, sizeof vec, "velocity", unit_of("velocity"));
+    vtu_name(ten, sizeof ten, "stress", unit_of("stress"));
     uint64_t off = 0;
     put_text(&d, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
                  "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n<FieldData>\n"
-                 "<!-- TIME: sim time (s) -->\n");
+                 "<!-- TimeValue: sim time (s) -->\n");
     vtu_time_tag(&d, &off);
     put_text(&d, "</FieldData>\n<Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n<Points>\n", n, n);
     vtu_array_tag(&d, "Float64", "Points", 3, &off, 3 * sizeof(double) * n);
@@ -232,12 +266,16 @@ hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_e
     vtu_array_tag(&d, "Int64", "connectivity", 1, &off, sizeof(int64_t) * n);
     vtu_array_tag(&d, "Int64", "offsets", 1, &off, sizeof(int64_t) * n);
     vtu_array_tag(&d, "UInt8", "types", 1, &off, n);
-    put_text(&d, "</Cells>\n<PointData>\n");
+    put_text(&d, "</Cells>\n<PointData Vectors=\"%s\" Tensors=\"%s\" GlobalIds=\"id\">\n", vec, ten);
+    vtu_array_tag(&d, "Int32", "id", 1, &off, sizeof(int32_t) * n);
+    vtu_name(name, sizeof name, "mass", mass_unit(s));
+    vtu_array_tag(&d, "Float64", name, 1, &off, sizeof(double) * n);
+    vtu_name(name, sizeof name, "volume", volume_unit(s));
+    vtu_array_tag(&d, "Float64", name, 1, &off, sizeof(double) * n);
     field_walk w = {sc.names, "", 0};
     while (field_next(&w)) {
-        /* VTK XML has no unit attribute; a comment keeps the unit for people. */
-        put_text(&d, "<!-- %s: %s -->\n", w.name, unit_of(w.name));
-        vtu_array_tag(&d, "Float64", w.name, w.nc, &off, sizeof(double) * (size_t)w.nc * n);
+        vtu_name(name, sizeof name, w.name, unit_of(w.name));
+        vtu_array_tag(&d, "Float64", name, w.nc, &off, sizeof(double) * (size_t)w.nc * n);
     }
     put_text(&d, "</PointData>\n</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_");
 
@@ -252,8 +290,16 @@ hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_e
     unsigned char vertex[512];
     memset(vertex, 1, sizeof vertex); /* VTK_VERTEX */
     for (size_t i = 0; i < n; i += sizeof vertex) put_bytes(&d, vertex, n - i < sizeof vertex ? n - i : sizeof vertex);
+    vtu_count(&d, sizeof(int32_t) * n);
+    put_le(&d, hearth_scene_particle_ids(s), sizeof(int32_t), n); /* int is 32 bits on every host hearth builds on */
+    vtu_count(&d, sizeof(double) * n);
+    put_le(&d, hearth_scene_particle_masses(s), sizeof(double), n);
+    if (!(st = particle_volumes(s, sc.buf, path, err))) {
+        vtu_count(&d, sizeof(double) * n);
+        put_le(&d, sc.buf, sizeof(double), n);
+    }
     w = (field_walk){sc.names, "", 0};
-    while (!d.err_no && field_next(&w)) {
+    while (!st && !d.err_no && field_next(&w)) {
         if ((st = field_values(s, w.name, sc.buf, path, err))) break;
         vtu_count(&d, sizeof(double) * (size_t)w.nc * n);
         put_le(&d, sc.buf, sizeof(double), (size_t)w.nc * n);
@@ -269,8 +315,61 @@ hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_e
 
 /* ---- PLY ------------------------------------------------------------- */
 
-hearth_status hearth_write_ply(const hearth_scene *s, const char *path, hearth_error *err) {
+/* What each tool shows of these files (checked with VTK 9.1's vtkPLYReader,
+ * which ParaView uses): ParaView/VTK read the points and red/green/blue as
+ * the "RGB" array and skip every other property; Blender (4.x) and MeshLab
+ * show the colours as vertex colours, and Blender imports the other vertex
+ * properties as attributes; Open3D and plyfile read every property. So the
+ * colours carry one field for the viewers, the raw doubles carry all of them
+ * for scripts. */
+
+hearth_ply_def hearth_default_ply_def(void) {
+    return (hearth_ply_def){.color = 1, .color_field = NULL, .range = {0, 0}, .colormap = NULL};
+}
+
+/* Temperature where live (what a baking scene is about), else speed. */
+static const char *default_color_field(const char *names) {
+    field_walk w = {names, "", 0};
+    while (field_next(&w))
+        if (!strcmp(w.name, "temperature")) return "temperature";
+    return "speed";
+}
+
+/* Little-endian copy of one value into a row. */
+static unsigned char *store_le(unsigned char *dst, const void *src, size_t size, int swap) {
+    const unsigned char *b = src;
+    for (size_t j = 0; j < size; j++) dst[j] = swap ? b[size - 1 - j] : b[j];
+    return dst + size;
+}
+
+/* The colour field's values as magnitudes (a vector's length), in col. */
+static hearth_status color_values(const hearth_scene *s, const char *field, double *col, const char *path,
+                                  hearth_error *err) {
+    const int nc = hearth_field_components(field);
+    if (nc != 1 && nc != 3)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "%s: color_field '%s' %s; colour by a scalar, a vector (its magnitude) or one component "
+                       "(velocity_x, stress_xy, von_mises, ...)",
+                       path, field, nc == 0 ? "is not a field" : "is a tensor");
+    hearth_status st = field_values(s, field, col, path, err);
+    if (st || nc == 1) return st;
+    const size_t n = (size_t)hearth_scene_particle_count(s);
+    for (size_t i = 0; i < n; i++)
+        col[i] = sqrt(col[3 * i] * col[3 * i] + col[3 * i + 1] * col[3 * i + 1] + col[3 * i + 2] * col[3 * i + 2]);
+    return HEARTH_OK;
+}
+
+hearth_status hearth_write_ply_with(const hearth_scene *s, const char *path, const hearth_ply_def *def,
+                                    hearth_error *err) {
     err_clear(err);
+    const hearth_ply_def dd = def ? *def : hearth_default_ply_def();
+    const int map = cmap_by_name(dd.colormap ? dd.colormap : "viridis");
+    if (dd.color && map < 0)
+        return err_set(err, HEARTH_ERR_PARAM, "%s: colormap '%s' is unknown (valid: viridis, inferno, gray, browning)",
+                       path, dd.colormap);
+    if (dd.color && !(isfinite(dd.range[0]) && isfinite(dd.range[1])))
+        return err_set(err, HEARTH_ERR_PARAM, "%s: range = {%g, %g}; both ends must be finite", path, dd.range[0],
+                       dd.range[1]);
     const size_t n = (size_t)hearth_scene_particle_count(s);
     hearth_stats stats;
     hearth_scene_stats(s, &stats);
@@ -279,38 +378,78 @@ hearth_status hearth_write_ply(const hearth_scene *s, const char *path, hearth_e
     hearth_status st = scratch_get(&sc, s, path, err);
     if (st) return st;
     field_counts(sc.names, &max_nc, &total_nc);
+    const char *cfield = dd.color ? (dd.color_field ? dd.color_field : default_color_field(sc.names)) : NULL;
     /* PLY is row-major (one vertex after another) while fields come a column
-     * at a time, so the whole body is assembled first: n rows of row_len,
-     * then room for one field's values. Writing field by field with seeks
-     * would save the memory but not work on pipes. */
-    const size_t row_len = 3 + total_nc;
-    if ((st = scratch_buf(&sc, n * row_len + n * max_nc, path, err))) {
+     * at a time, so the whole body is assembled first, as bytes: the row mixes
+     * doubles, uchar colours and an int id. Writing field by field with seeks
+     * would save the memory but not work on pipes. The scratch doubles hold
+     * one field's values (at least 3 per particle: a colour vector) and the
+     * rows after them. */
+    const size_t row_bytes = 3 * 8 + (cfield ? 3 : 0) + 4 + 8 * (2 + total_nc);
+    const size_t col_len = n * (max_nc > 3 ? max_nc : 3);
+    const size_t row_doubles = (n * row_bytes + sizeof(double) - 1) / sizeof(double);
+    if ((st = scratch_buf(&sc, col_len + row_doubles, path, err))) {
         scratch_free(&sc);
         return st;
     }
-    double *rows = sc.buf, *col = sc.buf + n * row_len;
+    double *col = sc.buf;
+    unsigned char *rows = (unsigned char *)(sc.buf + col_len);
+    const uint16_t one = 1;
+    const int swap = *(const unsigned char *)&one != 1;
+    double lo = dd.range[0], hi = dd.range[1];
+    size_t at = 0; /* byte offset of the next property in row 0 */
     const double *x = hearth_scene_positions(s);
-    for (size_t i = 0; i < n; i++) memcpy(rows + i * row_len, x + 3 * i, 3 * sizeof(double));
-    field_walk w = {sc.names, "", 0};
-    for (size_t c = 3; field_next(&w); c += (size_t)w.nc) {
-        if ((st = field_values(s, w.name, col, path, err))) {
-            scratch_free(&sc);
-            return st;
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++) store_le(rows + i * row_bytes + 8 * (size_t)k, x + 3 * i + k, 8, swap);
+    at = 24;
+    if (cfield) {
+        if ((st = color_values(s, cfield, col, path, err))) goto fail;
+        if (!(lo < hi)) { /* the frame's own range */
+            lo = INFINITY, hi = -INFINITY;
+            for (size_t i = 0; i < n; i++)
+                if (isfinite(col[i])) lo = col[i] < lo ? col[i] : lo, hi = col[i] > hi ? col[i] : hi;
+            if (!(lo <= hi)) lo = 0, hi = 1; /* no finite value: every vertex gets the NaN grey */
         }
-        for (size_t i = 0; i < n; i++)
-            memcpy(rows + i * row_len + c, col + i * (size_t)w.nc, sizeof(double) * (size_t)w.nc);
+        for (size_t i = 0; i < n; i++) {
+            /* a single-valued frame maps to the middle of the map */
+            double t = hi > lo ? (col[i] - lo) / (hi - lo) : isnan(col[i]) ? col[i] : 0.5;
+            cmap_eval(map, t, rows + i * row_bytes + at);
+        }
+        at += 3;
     }
+    const int *ids = hearth_scene_particle_ids(s);
+    const double *mass = hearth_scene_particle_masses(s);
+    for (size_t i = 0; i < n; i++) {
+        int32_t id = ids[i];
+        store_le(store_le(rows + i * row_bytes + at, &id, 4, swap), mass + i, 8, swap);
+    }
+    at += 12;
+    if ((st = particle_volumes(s, col, path, err))) goto fail;
+    for (size_t i = 0; i < n; i++) store_le(rows + i * row_bytes + at, col + i, 8, swap);
+    at += 8;
+    field_walk w = {sc.names, "", 0};
+    while (field_next(&w)) {
+        if ((st = field_values(s, w.name, col, path, err))) goto fail;
+        for (size_t i = 0; i < n; i++)
+            for (int k = 0; k < w.nc; k++)
+                store_le(rows + i * row_bytes + at + 8 * (size_t)k, col + i * (size_t)w.nc + k, 8, swap);
+        at += 8 * (size_t)w.nc;
+    }
+    HEARTH_ASSERT(at == row_bytes);
 
     dump d;
-    if ((st = dump_open(&d, path, err))) {
-        scratch_free(&sc);
-        return st;
-    }
-    /* %.17g: the time reads back as the same double. */
+    if ((st = dump_open(&d, path, err))) goto fail;
+    /* %.17g: the time and range read back as the same doubles. */
     put_text(&d, "ply\nformat binary_little_endian 1.0\ncomment hearth t=%.17g\n", stats.t);
+    if (cfield)
+        put_text(&d, "comment color %s %.17g %.17g %s %s\n", cfield, lo, hi, unit_of(cfield),
+                 dd.colormap ? dd.colormap : "viridis");
+    put_text(&d, "comment unit mass %s\ncomment unit volume %s\n", mass_unit(s), volume_unit(s));
     w = (field_walk){sc.names, "", 0};
     while (field_next(&w)) put_text(&d, "comment unit %s %s\n", w.name, unit_of(w.name));
     put_text(&d, "element vertex %zu\nproperty double x\nproperty double y\nproperty double z\n", n);
+    if (cfield) put_text(&d, "property uchar red\nproperty uchar green\nproperty uchar blue\n");
+    put_text(&d, "property int id\nproperty double mass\nproperty double volume\n");
     static const char *const axis[3] = {"_x", "_y", "_z"};
     static const char *const pair[9] = {"_xx", "_xy", "_xz", "_yx", "_yy", "_yz", "_zx", "_zy", "_zz"};
     w = (field_walk){sc.names, "", 0};
@@ -318,7 +457,14 @@ hearth_status hearth_write_ply(const hearth_scene *s, const char *path, hearth_e
         for (int k = 0; k < w.nc; k++)
             put_text(&d, "property double %s%s\n", w.name, w.nc == 1 ? "" : w.nc == 3 ? axis[k] : pair[k]);
     put_text(&d, "end_header\n");
-    put_le(&d, rows, sizeof(double), n * row_len);
+    put_bytes(&d, rows, n * row_bytes);
     scratch_free(&sc);
     return dump_finish(&d, path, err);
+fail:
+    scratch_free(&sc);
+    return st;
+}
+
+hearth_status hearth_write_ply(const hearth_scene *s, const char *path, hearth_error *err) {
+    return hearth_write_ply_with(s, path, NULL, err);
 }

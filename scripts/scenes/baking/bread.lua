@@ -78,4 +78,7 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temp
     rows[#rows + 1] = table.concat(r, ",")
     h.write("bread.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
-  end }
+  end,
+  -- for ParaView (open vtu/bread.pvd: the time axis, temperature, stress, ids) and Blender (ply/)
+  vtu = { path = "vtu/bread_%04d.vtu" },
+  ply = { path = "ply/bread_%04d.ply", color = "temperature", colormap = "inferno" } }
