@@ -252,7 +252,7 @@ TEST(latent_heat_checkpoint_roundtrip) {
 #define SLAB_H 0.01 /* half thickness */
 #define SLAB_K_WATER 1e-15
 
-static block make_slab(double dx, int latent, int implicit, double evaporation) {
+static block make_slab(double dx, int latent, int implicit, double evaporation, double water_k) {
     block b = {NULL, -1, -1};
     hearth_scene_def d = hearth_default_scene_def();
     d.dx = dx;
@@ -268,7 +268,7 @@ static block make_slab(double dx, int latent, int implicit, double evaporation) 
     b.s = fx_scene_def(&d);
     CHECK(b.s != NULL);
     const char *nm[] = {"E", "density", "specific_heat", "conductivity", "water_diffusivity", "evaporation"};
-    const double nv[] = {1e4, SLAB_RHO, SLAB_C, SLAB_K, SLAB_K_WATER, evaporation};
+    const double nv[] = {1e4, SLAB_RHO, SLAB_C, SLAB_K, water_k, evaporation};
     hearth_error err;
     const int m = hearth_scene_add_material(b.s, "elastic", nm, nv, 6, &err);
     if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
@@ -296,7 +296,8 @@ static void slab_probes(block *b) {
 
 /* Books of the slab after `until` s (as balance above). */
 static double slab_balance(double dx, int implicit, double evaporation, double until, double *share) {
-    block b = make_slab(dx, 1, implicit, evaporation);
+    /* with surface evaporation, water must reach the surface for it to act (water_surface_excess): Ding's K as above */
+    block b = make_slab(dx, 1, implicit, evaporation, evaporation > 0 ? WET_K : SLAB_K_WATER);
     hearth_stats st;
     hearth_scene_stats(b.s, &st);
     const double E0 = st.heat_energy, W0 = st.water_mass;
@@ -409,7 +410,7 @@ TEST(latent_heat_crumb_plateau) {
     double err[2];
     for (int r = 0; r < 2; r++) {
         const double dx = r ? 0.001 : 0.002;
-        block on = make_slab(dx, 1, 0, 0), off = make_slab(dx, 0, 0, 0);
+        block on = make_slab(dx, 1, 0, 0, SLAB_K_WATER), off = make_slab(dx, 0, 0, 0, SLAB_K_WATER);
         hearth_error err_;
         double t_hot = NAN, t_dry = NAN, plateau_lo = INFINITY, plateau_hi = -INFINITY, off_centre = NAN, t_off100 = NAN;
         double top_at_dry = NAN;
@@ -462,7 +463,7 @@ TEST(latent_heat_crumb_plateau) {
 /* A boiling point other than 100 degC is not in checkpoint format version 4:
  * saving says so rather than restoring a scene that boils elsewhere. */
 TEST(latent_heat_boiling_point_checkpoint_refused) {
-    block b = make_slab(0.004, 1, 0, 0);
+    block b = make_slab(0.004, 1, 0, 0, SLAB_K_WATER);
     hearth_error err;
     CHECK(hearth_scene_save(b.s, "boil_default.ckpt", &err) == HEARTH_OK);
     remove("boil_default.ckpt");

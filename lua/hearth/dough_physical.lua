@@ -69,9 +69,11 @@ D.goods = {
     -- at the fridge point (a stiff dough holds a 7 cm loaf, rho g H ~ 330 Pa, once it is a few degrees warmer and
     -- sets at 70 degC: Fig. 8's shape)
     E = 3e4, nu = 0.3, tau_y = 200, mu = 1e5,
-    -- CO2: Table 2's alpha^g x GAS_SCALE x bread's TUNE (dough.lua), in physical time: no measured counterpart in the
-    -- same units; kept so the loaf rises as the paper's does
-    gas_rate = 0.03 / 600 * 0.4, reaction_temperature = 40, reaction_width = 20, porosity = 0.1,
+    -- CO2: no measured counterpart: the model's gas pressure n^g R theta / n^p (eq. 13) is not an overpressure over
+    -- the atmosphere, so a real yeast's output (~1e-5 mol/(kg s)) would stand for 1e5 Pa against a dough that
+    -- yields at 1e2 Pa (seen: the guard stopped the loaf at 0.28 s with 2.4e6 Pa of CO2). Set so the bake makes
+    -- what h.library.paper.bread makes over its scene's bake: 2e-5 mol/(kg s) x 2.5 s / 1500 s, in real time
+    gas_rate = 0.03 / 600 * 0.4 * 2.5 / 1500, reaction_temperature = 40, reaction_width = 20, porosity = 0.1,
     expansion = 0.1, dough_temperature = 25,
     -- oven: 200 degC, beta 30 W/(m^2 K) (effective coefficients, radiation included, 20-48 W/(m^2 K) in Baik et al.
     -- 1999, J. Food Sci. 64:688); pan: a tray at the oven's temperature through ~100 W/(m^2 K) contact
@@ -90,7 +92,7 @@ D.goods = {
     -- rheology: short doughs are stiffer than bread dough (G' 1e4-1e5 Pa, Dobraszczyk & Morgenstern 2003's range for
     -- doughs); E = 1e5, yield 500 Pa, viscosity 1e5 Pa s; the cookie spreads as the fat melts (Fig. 8's dip)
     E = 1e5, nu = 0.3, tau_y = 500, mu = 1e5,
-    gas_rate = 0.015 / 600, reaction_temperature = 40, reaction_width = 20, porosity = 0.1,
+    gas_rate = 0.015 / 600 * 3 / 660, reaction_temperature = 40, -- as bread's: the paper cookie's CO2 over cookies.lua's 3 s reaction_width = 20, porosity = 0.1,
     expansion = 0.1, dough_temperature = 20,
     oven_temperature = 190, oven_beta = 30, pan_temperature = 190, pan_beta = 100,
     time_scale = 50, bake_time_real = 660,
@@ -105,7 +107,7 @@ D.goods = {
     -- a batter flows: E 1e4, yield 20 Pa, viscosity 1e2 Pa s (batters are 1-100 Pa s fluids; chosen at the top, so
     -- it stands in its cup while it heats), setting at 70 degC
     E = 1e4, nu = 0.3, tau_y = 20, mu = 100, max_porosity = 0.6,
-    gas_rate = 0.03 / 600 * 2.5, reaction_temperature = 40, reaction_width = 20, porosity = 0.1,
+    gas_rate = 0.03 / 600 * 2.5 * 3 / 1320, reaction_temperature = 40, -- as bread's: the paper muffin's over muffins.lua's 3 s reaction_width = 20, porosity = 0.1,
     expansion = 0.1, dough_temperature = 20,
     oven_temperature = 180, oven_beta = 30, pan_temperature = 180, pan_beta = 100,
     time_scale = 60, bake_time_real = 1320,
