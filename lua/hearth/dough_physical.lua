@@ -78,7 +78,7 @@ D.goods = {
     -- oven: 200 degC, beta 30 W/(m^2 K) (effective coefficients, radiation included, 20-48 W/(m^2 K) in Baik et al.
     -- 1999, J. Food Sci. 64:688); pan: a tray at the oven's temperature through ~100 W/(m^2 K) contact
     oven_temperature = 200, oven_beta = 30, pan_temperature = 200, pan_beta = 100,
-    time_scale = 100, bake_time_real = 1500,
+    time_scale = 300, bake_time_real = 1500,
   },
   cookie = {
     -- sugar-snap cookie dough, 18% water, 20% fat, 55% carbohydrate, 7% protein (a typical AACC 10-52 type formula)

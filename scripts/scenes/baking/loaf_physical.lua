@@ -1,8 +1,11 @@
 -- A loaf in physical units (issue #18): h.library.dough.bread (measured
 -- density, heat capacity, conductivity and water of a proofed bread dough,
 -- lua/hearth/dough_physical.lua) on a tray in its 200 degC oven, with the
--- latent heat and the boiling point on. Heat and water run S = 100 times
--- fast (the preset's time scale): 15 s of simulated time are a 25 minute bake.
+-- latent heat and the boiling point on. Heat and water run S = 300 times
+-- fast (the preset's time scale): 5 s of simulated time are a 25 minute bake.
+-- The crust is a few mm thick: at the default dx = 5 mm the front spans a
+-- particle's stencil (10 mm), so the top particle still holds water at the
+-- end; dx = 2.5 mm shows the dried crust (docs/gallery/crumb_plateau.md).
 --   hearth run scripts/scenes/baking/loaf_physical.lua [--set dx=0.0025] [--set latent=false]
 -- What it shows: the crumb climbs to 100 degC and holds there while it holds
 -- water (the boiling plateau), while the crust dries and heats on toward the
