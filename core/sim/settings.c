@@ -78,7 +78,8 @@ static const hearth_setting settings[] = {
     FLAG("water_momentum", "the water's motion relative to the solid carries momentum (Ding et al. eq. 26-27)",
          water_momentum),
     FLAG("latent_heat", "evaporated water takes 2.26 MJ/kg (water's latent heat near 100 degC) from the heat of the particle "
-         "it leaves (MPM; beyond Ding et al. eq. 9): a wet surface holds near the boiling point, a dry crust heats on. "
+         "it leaves, and a wet particle does not heat past boiling_point but boils its water (MPM; beyond Ding et al. eq. 9): "
+         "a wet crumb holds at the boiling point, a dry crust heats on. "
          "Off by default and for the animation-unit presets h.library.paper_oven.*", latent_heat),
     REAL("boiling_point", "degC",
          "with latent_heat: a particle that holds water does not heat past this; the excess heat boils its water, "
