@@ -47,19 +47,20 @@ local MU_SHAPE = { 1, 0.5, 0.1, 0.05 }     -- Fig. 8 right, relative to the meas
 D.goods = {
   bread = {
     -- proofed wheat dough: porosity eps = 50% (a dough proofed to twice its volume)
-    -- density: Zanoni, Peri & Gianotti 1995 (J. Food Eng. 26:497), crumb rho = 979 - 9.90 eps (eps in %): 484 kg/m^3
+    -- density: Zanoni et al. 1995 (J. Food Eng. 26:497, "Determination of the thermal diffusivity of bread as a function
+    -- of porosity"), measured crumb rho = 979 - 9.90 eps (eps in %): 484 kg/m^3
     density = 484,
     -- specific heat: Choi & Okos composition model (ASHRAE) for 45% water, 55% solids (mostly starch): 2.7 kJ/(kg K);
-    -- within the 2.5-2.9 kJ/(kg K) Rask 1989 (J. Food Eng. 9:167) reviews for doughs of that water content
+    -- the order of the measured doughs Rask 1989 (J. Food Eng. 9:167) reviews
     specific_heat = 2700,
     -- conductivity: kappa = alpha rho c with Zanoni et al. 1995's measured crumb diffusivity
     -- alpha = exp(0.01 eps - 15.25) = 3.9e-7 m^2/s at eps = 50%: 0.51 W/(m K)
     conductivity = 0.51,
-    -- water: 45% wet basis (Zanoni, Peri & Pierucci 1993's dough, J. Food Eng. 19:389; Purlis & Salvadori 2009 use 0.45
-    -- too), s = 0.45 x 484 / 1000
+    -- water: 45% wet basis (a lean bread dough's; Zanoni, Peri & Pierucci 1993, J. Food Eng. 19:383, bake doughs of
+    -- about this), s = 0.45 x 484 / 1000
     saturation = 0.218,
     -- liquid water diffusivity in crumb: chosen 2e-9 m^2/s within the 1e-10..1e-8 m^2/s range of baking models
-    -- (Zanoni et al. 1994, J. Food Eng. 23:321; Purlis & Salvadori 2009); eq. 22's D = K theta s gives K = D / (373 s)
+    -- (e.g. Zanoni, Pierucci & Peri 1994, J. Food Eng. 23:321); eq. 22's D = K theta s gives K = D / (373 s)
     water_diffusivity_m2s = 2e-9,
     -- surface evaporation: chosen so a wet surface (s = 0.218, 373 K) loses ~1 g/(m^2 s) before it boils;
     -- the boiling front (core, boiling_point) carries most of the water
@@ -81,8 +82,9 @@ D.goods = {
     time_scale = 300, bake_time_real = 1500,
   },
   cookie = {
-    -- sugar-snap cookie dough, 18% water, 20% fat, 55% carbohydrate, 7% protein (a typical AACC 10-52 type formula)
-    -- density 1200 kg/m^3 (unleavened dough: the solids' ~1.4-1.6, water 1.0, fat 0.92 g/cm^3, little air)
+    -- sugar-snap cookie dough of an assumed composition: 18% water, 20% fat, 55% carbohydrate, 7% protein;
+    -- density 1200 kg/m^3 from the constituents' (carbohydrate and protein ~1.5, water 1.0, fat 0.92 g/cm^3) with
+    -- ~15% air (estimated, not measured)
     density = 1200,
     -- specific heat and conductivity: Choi & Okos composition model (ASHRAE) for that composition at 25 degC
     specific_heat = 2150, conductivity = 0.35,
@@ -99,8 +101,8 @@ D.goods = {
   },
   muffin = {
     -- cake batter, 38% water: density 800 kg/m^3 (an aerated batter), specific heat 2.8 kJ/(kg K) and
-    -- conductivity 0.25 W/(m K) (Choi & Okos composition model, ASHRAE; the order Baik et al. 2001 (Int. J. Food
-    -- Prop. 4:85, "Cake baking in tunnel type multi-zone industrial ovens") report for cake batter)
+    -- conductivity 0.25 W/(m K): predicted by the Choi & Okos composition model (ASHRAE), not checked here against a
+    -- measurement (Baik et al.'s cake baking studies in tunnel ovens, 1999-2001, are where to look)
     density = 800, specific_heat = 2800, conductivity = 0.25,
     saturation = 0.304,                        -- 0.38 x 800 / 1000
     water_diffusivity_m2s = 2e-9, evaporation = 1.2e-5,

@@ -381,8 +381,8 @@ double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) 
  * schemes: the implicit one solved for T first, and the clamp acts on the
  * solution (operator splitting; the CG never sees the sink).
  * Where the vapour goes: in a real crumb it moves through the pores to the
- * surface and out (and part condenses again further in, the "evaporation-
- * condensation" mechanism of Purlis & Salvadori 2009); here it leaves the body
+ * surface and out (and part condenses again further in: evaporation-
+ * condensation, which moves heat inward ahead of the front); here it leaves the body
  * at once. That is the simplest closure that conserves energy: it leaves out
  * the heat the vapour carries toward the colder core and the water it
  * deposits there, so the wet core heats by conduction alone (slower than
