@@ -52,6 +52,28 @@ for r in rows[1:]:
 PY
     ;;
 
+# The physical loaf (h.library.dough.bread, #18) as a user runs it, for two real
+# minutes: it says its units, writes its CSV and pictures, and its crust
+# (the top particle) is already hotter than its crumb, which is still near
+# the dough's 25 degC. The plateau itself is tests/unit_latent.c's.
+baking_scene_loaf_physical)
+    run loaf_physical --set until_real=120 --set frames=2 >/dev/null
+    grep -q "h.library.dough.bread, physical, heat and water 300 times fast" out.txt ||
+        fail "the summary line does not give the units: $(head -1 out.txt)"
+    for f in loaf.csv temperature.png saturation.png browning.png; do
+        [ -n "$(find hearth-out/loaf_physical -name "$f" | head -1)" ] || fail "loaf_physical wrote no $f"
+    done
+    python3 - "$(find hearth-out/loaf_physical -name loaf.csv | head -1)" <<'PY' || fail "loaf.csv: $(cat hearth-out/loaf_physical/loaf.csv)"
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+last = rows[-1]
+print("after %s real min: crumb %s degC, crust %s degC (saturation %s)" % (last["t_real_min"], last["centre_T_degC"],
+      last["top_T_degC"], last["top_s"]))
+assert abs(float(last["t_real_min"]) - 2.0) < 1e-6
+assert float(last["centre_T_degC"]) < 30 and float(last["top_T_degC"]) > 45
+PY
+    ;;
+
 # §7.3: "Too much leavening agent would produce a very tall cookie, while no
 # leavener at all yields a flat one." Height rises with alpha^g at one oven,
 # and the unleavened top is flat: over the middle third of the cookie its

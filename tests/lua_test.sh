@@ -431,6 +431,10 @@ lua_library)
     out=$("$hearth" run "$scenes/library.lua" --quiet 2>&1) || fail "library.lua: $out"
     echo "$out" | grep -q "library ok" || fail "library.lua did not finish: $out"
     ;;
+lua_dough_physical_presets)
+    out=$("$hearth" run "$scenes/dough_physical.lua" --quiet 2>&1) || fail "dough_physical.lua: $out"
+    echo "$out" | grep -q "dough physical ok" || fail "dough_physical.lua did not finish: $out"
+    ;;
 lua_dough_library)
     out=$("$hearth" run "$scenes/dough_library.lua" --quiet 2>&1) || fail "dough_library.lua: $out"
     echo "$out" | grep -q "dough library ok" || fail "dough_library.lua did not finish: $out"

@@ -236,4 +236,244 @@ TEST(latent_heat_checkpoint_roundtrip) {
     hearth_scene_destroy(b.s);
 }
 
-TEST_MAIN(T(latent_heat_energy_balance), T(latent_heat_wet_plateau), T(latent_heat_refusals), T(latent_heat_checkpoint_roundtrip))
+/* ---- interior boiling (the scene's boiling_point) ---------------------------
+ * The slab: a pinned 2D slab 60 x 20 mm of proofed bread dough in physical
+ * units (h.library.dough.bread's heat numbers, lua/hearth/dough_physical.lua:
+ * density 484 kg/m^3, specific heat 2700 J/(kg K), conductivity 0.51 W/(m K),
+ * water 218 kg/m^3, i.e. saturation 0.218 of rho_0^w = 1000) at 20 degC in a
+ * 200 degC oven with beta 40 W/(m^2 K). No surface evaporation (beta^w = 0) and
+ * next to no water diffusion, so that the water leaves by boiling alone and
+ * the closed form below applies; latent_heat_boiling_energy_balance also runs
+ * it with the surface sink on. */
+#define SLAB_RHO 484.0
+#define SLAB_C 2700.0
+#define SLAB_K 0.51
+#define SLAB_S 0.218
+#define SLAB_H 0.01 /* half thickness */
+#define SLAB_K_WATER 1e-15
+
+static block make_slab(double dx, int latent, int implicit, double evaporation, double water_k) {
+    block b = {NULL, -1, -1};
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = dx;
+    d.gravity[1] = 0;
+    d.lo[0] = d.lo[1] = 0;
+    d.hi[0] = 0.1;
+    d.hi[1] = 0.06;
+    d.oven_temperature = OVEN_T;
+    d.oven_beta = OVEN_BETA;
+    d.latent_heat = latent;
+    d.heat_implicit = implicit;
+    if (implicit) d.dt_max = 4; /* a pinned slab has no CFL limit: without it the implicit heat takes one step */
+    b.s = fx_scene_def(&d);
+    CHECK(b.s != NULL);
+    const char *nm[] = {"E", "density", "specific_heat", "conductivity", "water_diffusivity", "evaporation"};
+    const double nv[] = {1e4, SLAB_RHO, SLAB_C, SLAB_K, water_k, evaporation};
+    hearth_error err;
+    const int m = hearth_scene_add_material(b.s, "elastic", nm, nv, 6, &err);
+    if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
+    CHECK(m >= 0);
+    const double c[3] = {0.05, 0.03, 0}, h[3] = {0.03, SLAB_H, 0};
+    hearth_shape *box = hearth_shape_box(c, h);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = box, bd.material = m, bd.jitter = 0, bd.fixed = 1;
+    bd.temperature = 20, bd.saturation = SLAB_S;
+    CHECK(hearth_scene_add_body(b.s, &bd, &err) >= 0);
+    hearth_shape_free(box);
+    return b;
+}
+
+/* The slab's probes: the top face's middle and the centre. */
+static void slab_probes(block *b) {
+    const double *X = pcold(&b->s->ps, PC_X);
+    double dt = INFINITY, dc = INFINITY;
+    for (int i = 0; i < b->s->ps.n; i++) {
+        const double et = hypot(X[3 * i] - 0.05, X[3 * i + 1] - (0.03 + SLAB_H)), ec = hypot(X[3 * i] - 0.05, X[3 * i + 1] - 0.03);
+        if (et < dt) dt = et, b->top = i;
+        if (ec < dc) dc = ec, b->centre = i;
+    }
+}
+
+/* Books of the slab after `until` s (as balance above). */
+static double slab_balance(double dx, int implicit, double evaporation, double until, double *share) {
+    /* with surface evaporation, water must reach the surface for it to act (water_surface_excess): Ding's K as above */
+    block b = make_slab(dx, 1, implicit, evaporation, evaporation > 0 ? WET_K : SLAB_K_WATER);
+    hearth_stats st;
+    hearth_scene_stats(b.s, &st);
+    const double E0 = st.heat_energy, W0 = st.water_mass;
+    hearth_error err;
+    CHECK(hearth_scene_advance(b.s, until, &err) == HEARTH_OK);
+    hearth_scene_stats(b.s, &st);
+    const double dE = st.heat_energy - E0, dW = W0 - st.water_mass, Q = st.oven_heat_in;
+    const double miss = (dE + HEARTH_LATENT_HEAT * dW - Q) / Q;
+    *share = HEARTH_LATENT_HEAT * dW / Q;
+    printf("  dx %.4g m, %s, surface beta^w %g, %ld steps, t = %.0f s: heat in %.6g J/m = sensible %.6g + L x water %.6g "
+           "(%.4g kg/m of %.4g); imbalance %.3g\n",
+           dx, implicit ? "implicit" : "explicit", evaporation, st.step, st.t, Q, dE, HEARTH_LATENT_HEAT * dW, dW, W0, miss);
+    hearth_scene_destroy(b.s);
+    return miss;
+}
+
+/* Heat in through the Robin boundary = sensible + L x water lost, to 1%, with
+ * the water leaving by boiling (no surface evaporation: every kg lost was
+ * boiled in G2P) at two resolutions and in both heat schemes (the implicit
+ * one boils after its solve), and with both sinks at once. Boiling must carry
+ * a good share of the books, so that a boil that dropped the heat without
+ * the water (or the water without the heat) cannot pass. */
+TEST(latent_heat_boiling_energy_balance) {
+    double share[4];
+    const double m1 = slab_balance(0.002, 0, 0, 900, &share[0]);
+    const double m2 = slab_balance(0.001, 0, 0, 900, &share[1]);
+    const double m3 = slab_balance(0.002, 1, 0, 900, &share[2]);
+    const double m4 = slab_balance(0.002, 0, BETA_W, 900, &share[3]);
+    printf("  latent share of the heat in: %.3f, %.3f, %.3f (boiling alone), %.3f (boiling and surface)\n", share[0], share[1],
+           share[2], share[3]);
+    CHECK(fabs(m1) < 0.01);
+    CHECK(fabs(m2) < 0.01);
+    CHECK(fabs(m3) < 0.01);
+    CHECK(fabs(m4) < 0.01);
+    for (int k = 0; k < 4; k++) CHECK(share[k] > 0.2);
+}
+
+/* The closed form: a receding evaporation front (Zanoni et al. 1993's
+ * picture of baking: a crust dries behind a front at the boiling point, the
+ * crumb ahead of it stays wet). Heated from one face with Robin beta, a dry
+ * crust of thickness X conducts, quasi-steadily, q = beta kappa dT / (beta X +
+ * kappa) (dT = theta_oven - T_b), its surface at T_b + theta(X), theta = beta dT
+ * X / (beta X + kappa). The front advances when q has paid for the crust's own
+ * sensible heat (a linear profile: rho c X theta / 2) and for the wet matter
+ * it reaches: w L + rho c (T_b - T_0) per volume (every kg of the wet zone's
+ * water boils at the front, and the wet zone is brought from T_0 to T_b before,
+ * by conduction; charged at the front, this is exact in the integral once the
+ * front reaches the centre). So the front reaches depth X at
+ *     t(X) = int_0^X (w L + rho c (T_b - T_0) + d/dx [rho c x theta(x) / 2]) / q(x) dx,
+ * Goodman's heat-balance integral with a linear crust profile, evaluated here
+ * by Simpson's rule. */
+static double front_time(double X) {
+    const double dT = OVEN_T - 100.0, w = SLAB_S * 1000.0, Lv = w * HEARTH_LATENT_HEAT + SLAB_RHO * SLAB_C * (100.0 - 20.0);
+    const int n = 2000;
+    double t = 0;
+    for (int k = 0; k <= n; k++) {
+        const double x = X * k / n, q = OVEN_BETA * SLAB_K * dT / (OVEN_BETA * x + SLAB_K);
+        /* d/dx [x theta / 2] = beta dT x (beta x + 2 kappa) / (2 (beta x + kappa)^2) */
+        const double dEc = SLAB_RHO * SLAB_C * OVEN_BETA * dT * x * (OVEN_BETA * x + 2 * SLAB_K) /
+                           (2 * (OVEN_BETA * x + SLAB_K) * (OVEN_BETA * x + SLAB_K));
+        const double f = (Lv + dEc) / q, wt = k == 0 || k == n ? 1 : k % 2 ? 4 : 2;
+        t += wt * f;
+    }
+    return t * X / (3.0 * n);
+}
+
+/* The same front by a 1D enthalpy-method reference: n cells across the half
+ * thickness, Robin at the outer face (through half a cell), symmetry at the
+ * centre, forward Euler, each cell boiling as water_boil does. Returns when
+ * the innermost cell is half dry; *surf the outer face's temperature then. */
+static double front_fd(int n, double *surf) {
+    const double dx = SLAB_H / n, dt = 0.2 * SLAB_RHO * SLAB_C * dx * dx / SLAB_K, w0 = SLAB_S * 1000.0;
+    double T[400], W[400], q[401] = {0}, t = 0;
+    for (int i = 0; i < n; i++) T[i] = 20, W[i] = w0;
+    while (W[n - 1] > 0.5 * w0 && t < 1e5) {
+        q[0] = (OVEN_T - T[0]) / (1.0 / OVEN_BETA + 0.5 * dx / SLAB_K);
+        for (int i = 1; i < n; i++) q[i] = SLAB_K * (T[i - 1] - T[i]) / dx;
+        q[n] = 0;
+        for (int i = 0; i < n; i++) {
+            T[i] += dt * (q[i] - q[i + 1]) / (SLAB_RHO * SLAB_C * dx);
+            if (T[i] > 100 && W[i] > 0) {
+                const double e = SLAB_RHO * SLAB_C * (T[i] - 100) / HEARTH_LATENT_HEAT;
+                if (e < W[i]) W[i] -= e, T[i] = 100;
+                else T[i] -= W[i] * HEARTH_LATENT_HEAT / (SLAB_RHO * SLAB_C), W[i] = 0;
+            }
+        }
+        t += dt;
+    }
+    *surf = T[0] + 0.5 * dx * q[0] / SLAB_K;
+    return t;
+}
+
+/* A wet slab of bread dough in a 200 degC oven: with latent heat (and its
+ * boiling point, 100 degC) the centre climbs to 100 degC and holds there
+ * (within 1 K, never above) while it holds water, for as long as the heat
+ * through the drying crust takes to boil the water between it and the
+ * surface: the front reaches the centre when the 1D reference (front_fd) says,
+ * closer at the finer resolution (the front is a particle's stencil wide, so
+ * the centre dries early by a fraction of dx / H); the closed form's time is
+ * printed against both. The dried top climbs toward the oven, to the closed
+ * form's 100 + theta(H) when the front reaches the centre. Without the switch
+ * the centre passes 100 degC. At two resolutions. */
+TEST(latent_heat_crumb_plateau) {
+    const double every = 20, until = 2400, off_until = 800;
+    double surf_fd;
+    const double t_cf = front_time(SLAB_H), t_fd = front_fd(200, &surf_fd);
+    const double theta_H = OVEN_BETA * (OVEN_T - 100) * SLAB_H / (OVEN_BETA * SLAB_H + SLAB_K);
+    printf("  the centre dries at %.0f s by the 1D reference (top %.1f degC), %.0f s by the closed form (%+.1f%%; top %.1f degC)\n",
+           t_fd, surf_fd, t_cf, 100 * (t_cf - t_fd) / t_fd, 100 + theta_H);
+    double err[2];
+    for (int r = 0; r < 2; r++) {
+        const double dx = r ? 0.001 : 0.002;
+        block on = make_slab(dx, 1, 0, 0, SLAB_K_WATER), off = make_slab(dx, 0, 0, 0, SLAB_K_WATER);
+        hearth_error err_;
+        double t_hot = NAN, t_dry = NAN, plateau_lo = INFINITY, plateau_hi = -INFINITY, off_centre = NAN, t_off100 = NAN;
+        double top_at_dry = NAN;
+        printf("  dx %.3g m:  t(s) | latent: top T  top s  centre T  centre s | none: top T  centre T\n", dx);
+        const int n = (int)(until / every);
+        for (int k = 1; k <= n; k++) {
+            const double *To = NULL;
+            CHECK(hearth_scene_advance(on.s, k * every, &err_) == HEARTH_OK);
+            slab_probes(&on);
+            if (k * every <= off_until) {
+                CHECK(hearth_scene_advance(off.s, k * every, &err_) == HEARTH_OK);
+                slab_probes(&off);
+                To = pcold(&off.s->ps, PC_TEMPERATURE);
+                if (isnan(t_off100) && To[off.centre] > 100) t_off100 = k * every;
+                off_centre = To[off.centre];
+            }
+            const double *T = pcold(&on.s->ps, PC_TEMPERATURE);
+            const double t = hearth_scene_time(on.s), sc = water_saturation(on.s, on.centre);
+            const double Tc = T[on.centre], Tt = T[on.top];
+            if (k % 10 == 0)
+                printf("  %14.0f | %12.1f %6.3f %9.2f %9.3f | %11.1f %9.1f\n", t, Tt, water_saturation(on.s, on.top), Tc, sc,
+                       To ? To[off.top] : NAN, To ? To[off.centre] : NAN);
+            if (isnan(t_dry) && sc < 0.5 * SLAB_S) t_dry = t, top_at_dry = Tt;
+            if (isnan(t_hot) && Tc > 99) t_hot = t;
+            if (!isnan(t_hot) && isnan(t_dry)) { /* hot and still wet: the plateau */
+                plateau_lo = fmin(plateau_lo, Tc);
+                plateau_hi = fmax(plateau_hi, Tc);
+            }
+        }
+        err[r] = (t_dry - t_fd) / t_fd;
+        printf("  centre above 99 degC at %.0f s, dry (s < %.3f) at %.0f s: %+.1f%% off the 1D reference, %+.1f%% off the "
+               "closed form; plateau %.3f .. %.6f degC; top %.1f degC when the centre dried\n",
+               t_hot, 0.5 * SLAB_S, t_dry, 100 * err[r], 100 * (t_dry - t_cf) / t_cf, plateau_lo, plateau_hi, top_at_dry);
+        printf("  without latent heat: centre past 100 degC at %.0f s, %.1f degC at %.0f s\n", t_off100, off_centre, off_until);
+        CHECK(!isnan(t_hot) && !isnan(t_dry));
+        CHECK(t_dry - t_hot > 600);                   /* a plateau of minutes */
+        CHECK(plateau_lo > 99 && plateau_hi <= 100 + 1e-9);
+        CHECK(fabs(err[r]) < (r ? 0.08 : 0.12));      /* the front reaches the centre when the reference says */
+        CHECK(fabs(top_at_dry - (100 + theta_H)) < 8); /* the dried crust has climbed as the closed form says */
+        CHECK(!isnan(t_off100) && t_off100 < t_hot + 200 && off_centre > 150); /* without the switch: no plateau */
+        hearth_scene_destroy(on.s);
+        hearth_scene_destroy(off.s);
+    }
+    printf("  drying time error %.1f%% -> %.1f%%: observed order %.2f\n", 100 * err[0], 100 * err[1],
+           log(fabs(err[0] / err[1])) / log(2.0));
+    CHECK(fabs(err[1]) < fabs(err[0]));
+    CHECK(fabs(t_cf - t_fd) < 0.10 * t_fd); /* the closed form itself */
+}
+
+/* A boiling point other than 100 degC is not in checkpoint format version 4:
+ * saving says so rather than restoring a scene that boils elsewhere. */
+TEST(latent_heat_boiling_point_checkpoint_refused) {
+    block b = make_slab(0.004, 1, 0, 0, SLAB_K_WATER);
+    hearth_error err;
+    CHECK(hearth_scene_save(b.s, "boil_default.ckpt", &err) == HEARTH_OK);
+    remove("boil_default.ckpt");
+    b.s->def.boiling_point = 90;
+    CHECK(hearth_scene_save(b.s, "boil_90.ckpt", &err) != HEARTH_OK);
+    printf("  %s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, "boiling_point");
+    CHECK(access("boil_90.ckpt", F_OK) != 0);
+    hearth_scene_destroy(b.s);
+}
+
+TEST_MAIN(T(latent_heat_energy_balance), T(latent_heat_wet_plateau), T(latent_heat_refusals), T(latent_heat_checkpoint_roundtrip),
+          T(latent_heat_boiling_energy_balance), T(latent_heat_crumb_plateau), T(latent_heat_boiling_point_checkpoint_refused))

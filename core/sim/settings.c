@@ -78,8 +78,12 @@ static const hearth_setting settings[] = {
     FLAG("water_momentum", "the water's motion relative to the solid carries momentum (Ding et al. eq. 26-27)",
          water_momentum),
     FLAG("latent_heat", "evaporated water takes 2.26 MJ/kg (water's latent heat near 100 degC) from the heat of the particle "
-         "it leaves (MPM; beyond Ding et al. eq. 9): a wet surface holds near the boiling point, a dry crust heats on. "
-         "Off by default and for the animation-unit presets h.library.oven.*", latent_heat),
+         "it leaves, and a wet particle does not heat past boiling_point but boils its water (MPM; beyond Ding et al. eq. 9): "
+         "a wet crumb holds at the boiling point, a dry crust heats on. "
+         "Off by default and for the animation-unit presets h.library.paper_oven.*", latent_heat),
+    REAL("boiling_point", "degC",
+         "with latent_heat: a particle that holds water does not heat past this; the excess heat boils its water, "
+         "m c (T - T_b) / L, and the vapour leaves (MPM; the crumb's plateau)", 100, -273.15, 5000, boiling_point, 0),
     CHOICE("transfer", "momentum transfer: APIC, or PIC (no affine part: dissipative)", 0, w_transfer, transfer, 1),
     REAL("heat_flip", "1", "temperature to particles: 1 FLIP (eq. 21) .. 0 PIC (the nodes' value)", 1, 0, 1, heat_flip, 1),
     REAL("damping", "1/s", "velocity damping c for static problems: each step the grid velocity is divided by 1 + c dt "

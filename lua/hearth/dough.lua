@@ -1,7 +1,7 @@
 -- hearth.dough: the baked goods of Ding et al. 2019 (Table 2, Fig. 8) as
 -- presets for the cam_clay_dough plugin. Scenes use them through
---   h.material("cam_clay_dough", h.library.dough.cookie)   -- parameters and curves
---   h.library.oven.cookie                                     -- oven, pan and dough temperatures
+--   h.material("cam_clay_dough", h.library.paper.cookie)   -- parameters and curves
+--   h.library.paper_oven.cookie                                     -- oven, pan and dough temperatures
 -- Each preset keeps Table 2's column as `paper` next to the numbers used.
 --
 -- Choices where Table 2 does not say (units, theta scale):

@@ -310,27 +310,37 @@ function h.blend(m, mode)
   return r
 end
 
--- h.library.dough.<name>: the baked goods of Ding et al. Table 2 with Fig. 8's
--- temperature curves, as parameters for the cam_clay_dough plugin;
--- h.library.oven.<name>: their oven, pan and dough temperatures. The unit
--- and scale choices are documented in lua/hearth/dough.lua.
-local dough_data = require "hearth.dough"
-local function dough_lookup(what, pick)
+-- h.library.paper.<name>: the baked goods of Ding et al. Table 2 with Fig. 8's
+-- temperature curves, in the paper's animation units, as parameters for the
+-- cam_clay_dough plugin; h.library.paper_oven.<name>: their oven, pan and
+-- dough temperatures. The unit and scale choices are documented in
+-- lua/hearth/dough.lua.
+-- h.library.dough.<name>: doughs in physical units (measured density, heat
+-- capacity, conductivity, water), each number's source in
+-- lua/hearth/dough_physical.lua; h.library.oven.<name>: their oven, with the
+-- latent heat and boiling on and the time scale S the preset runs at.
+local dough_data, physical_data = require "hearth.dough", require "hearth.dough_physical"
+local function dough_lookup(what, data, pick)
   return setmetatable({}, { __index = function(_, name)
-    if not dough_data.paper[name] then
-      local near = nearest(tostring(name), dough_data.paper)
+    if not data.preset(name) then
+      local valid = data.paper and data.paper or data.goods
+      local near = nearest(tostring(name), valid)
       error(("h.library.%s: no preset '%s'%s (valid: %s)"):format(what, tostring(name),
-        near and ("; did you mean '" .. near .. "'?") or "", table.concat(sorted_keys(dough_data.paper), ", ")), 2)
+        near and ("; did you mean '" .. near .. "'?") or "", table.concat(sorted_keys(valid), ", ")), 2)
     end
-    return pick(dough_data.preset(name)) -- a fresh table each time, so a scene may change its copy
+    return pick(data.preset(name)) -- a fresh table each time, so a scene may change its copy
   end })
 end
-h.library.dough = dough_lookup("dough", function(params, curves)
+local function with_curves(params, curves)
   for k, pts in pairs(curves) do params[k] = h.curve(pts) end
   return params
-end)
-h.library.oven = dough_lookup("oven", function(_, _, oven) return oven end)
--- what Table 2's eta and alpha^g are multiplied by (a scene converting its own Table 2 numbers)
+end
+local function oven_of(_, _, oven) return oven end
+h.library.paper = dough_lookup("paper", dough_data, with_curves)
+h.library.paper_oven = dough_lookup("paper_oven", dough_data, oven_of)
+h.library.dough = dough_lookup("dough", physical_data, with_curves)
+h.library.oven = dough_lookup("oven", physical_data, oven_of)
+-- what Table 2's eta and alpha^g are multiplied by in h.library.paper (a scene converting its own Table 2 numbers)
 h.library.dough_scale = { eta = dough_data.ETA_SCALE, gas = dough_data.GAS_SCALE }
 
 -- ---- scene parameters -----------------------------------------------------

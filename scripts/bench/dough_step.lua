@@ -29,7 +29,7 @@ end
 local elastic = h.material("elastic", { E = 1e5, nu = 0.3, density = 1000 })
 local elastic_fields = h.material("elastic", { E = 1e5, nu = 0.3, density = 1000, specific_heat = 20, conductivity = 30,
   gas_rate = 2.5e-5, expansion = 0.1, reference_temperature = 20 })
-local dough = h.material("cam_clay_dough", h.library.dough.cookie)
+local dough = h.material("cam_clay_dough", h.library.paper.cookie)
 
 -- only=elastic|fields|dough: step that one scene, untimed, for a profiler
 -- (scripts/bench/dough_instructions.sh counts elastic and dough under callgrind)

@@ -5,7 +5,7 @@ local T2 = { bread = { 2e3, 100, 20, 500, 0.03, 100 }, cookie = { 4e4, 30, 20, 5
   pancake = { 4e4, 200, 2, 50, 0.02, nil }, muffin = { 4e4, 100, 2, 10, 0.03, 105 },
   lava_cake = { 2e3, 250, 1, 10, 0.025, 100 }, smore = { 4e4, 150, 200, 60, nil, 400 } }
 for name, t in pairs(T2) do
-  local d, o = h.library.dough[name], h.library.oven[name]
+  local d, o = h.library.paper[name], h.library.paper_oven[name]
   local kk = name == "muffin" and 0.005 or 1 -- the muffin's documented kappa factor (a real batter's 0.5 W/(m K))
   assert(d.E == t[1] and d.conductivity == kk * t[2] and d.density == 500, name .. ": E, kappa, density from Table 2")
   assert(d.max_porosity == (name == "muffin" and 0.6 or nil), name .. ": the pore cap only where documented")
@@ -23,16 +23,16 @@ for name, t in pairs(T2) do
   assert(o.latent_heat == false, name .. ": Table 2's animation units keep the latent sink off")
   h.material("cam_clay_dough", d) -- every point of every curve passes the plugin's schema
 end
-local ok, e = pcall(function() return h.library.dough.cooky end)
+local ok, e = pcall(function() return h.library.paper.cooky end)
 assert(not ok and e:find("did you mean 'cookie'"), "nearest preset name: " .. tostring(e))
 -- a copy per lookup: changing one does not change the library
-local a = h.library.dough.cookie
+local a = h.library.paper.cookie
 a.E = 1
-assert(h.library.dough.cookie.E == 4e4, "fresh copy")
+assert(h.library.paper.cookie.E == 4e4, "fresh copy")
 -- a cookie bakes a few steps with every field live
-local o = h.library.oven.cookie
+local o = h.library.paper_oven.cookie
 local s = h.scene { dim = 2, dx = 0.005, box = { { 0, 0 }, { 0.12, 0.06 } }, oven = { temperature = o.temperature, beta = o.beta } }
-s:add { shape = h.shapes.cookie({ 0.06, 0.0325 }, 0.03, 0.025), material = h.material("cam_clay_dough", h.library.dough.cookie),
+s:add { shape = h.shapes.cookie({ 0.06, 0.0325 }, 0.03, 0.025), material = h.material("cam_clay_dough", h.library.paper.cookie),
   temperature = o.dough_temperature }
 h.recipes.tray(s, 0.02, { temperature = o.pan_temperature, beta = o.pan_beta })
 s:step(20)

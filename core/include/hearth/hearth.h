@@ -229,7 +229,8 @@ typedef struct hearth_scene_def {
     int periodic[3];         ///< 1: the box wraps along that axis (no walls there); the box length must be a whole number of dx. SPH: as sph.periodic
     int browning;            ///< 1: integrate the per-particle browning index from temperature and water history (Zanoni et al. 1995; fields/browning.c); makes the temperature field live. Default 0
     double browning_scale;   ///< multiplies the browning rate: 1 for physical time; the time-scale factor of a scene whose heat runs in animation units. Default 1
-    int latent_heat;         ///< 1: evaporated water takes HEARTH_LATENT_HEAT J/kg from the particle's heat (MPM; beyond Ding et al. eq. 9); default 0
+    int latent_heat;         ///< 1: evaporated water takes HEARTH_LATENT_HEAT J/kg from the particle's heat, and wet particles boil at boiling_point (MPM; beyond Ding et al. eq. 9); default 0
+    double boiling_point;    ///< with latent_heat: a particle holding water does not heat past this (degrees C); the excess boils its water away (MPM). Default 100
 } hearth_scene_def;
 
 /// Latent heat of vaporisation of water near 100 degC (J/kg): 2257 kJ/kg at

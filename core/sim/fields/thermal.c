@@ -56,10 +56,14 @@
  * saturation floor keeps water whose heat was taken, so the books then differ
  * by L times what the floor kept). Rejected: a sink on the particle's
  * temperature after G2P, which would take heat that the nodes never lost
- * from the FLIP update, and a boiling law (a sink that holds theta at 100
- * degC): Ding et al.'s evaporation beta^w theta s does not know the boiling
- * point, and the surface then sits at its wet-bulb balance instead
- * (`latent_heat_wet_plateau`, docs/validation.md).
+ * from the FLIP update. Ding et al.'s evaporation beta^w theta s does not know
+ * the boiling point: a wet surface sits at its wet-bulb balance
+ * (`latent_heat_wet_plateau`, docs/validation.md). Interior boiling is the
+ * other half of the same switch, and it acts on the particles after G2P,
+ * where their heat lives: a wet particle past the scene's boiling_point
+ * turns the excess into vapour (water.c's water_boil), so a crumb plateaus
+ * at 100 degC while a dried crust heats on (`latent_heat_crumb_plateau`);
+ * it is a projection, so it needs no step limit.
  *
  * FLIP keeps heat exactly but not a maximum principle: where two materials
  * share nodes a particle can overshoot (seen: 110 degC from a 90 degC start in

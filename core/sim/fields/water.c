@@ -370,6 +370,44 @@ double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) 
     return before - m;
 }
 
+/* Interior boiling (the scene's latent_heat with its boiling_point T_b; issue
+ * #18, beyond Ding et al., whose eq. 9 has no latent term and whose eq. 8
+ * evaporates through the surface only). In G2P, after the particle took its
+ * nodes' temperature change: a particle holding water above the saturation
+ * floor whose temperature passed T_b turns the excess sensible heat into
+ * vapour, dm = m c (T - T_b) / L, capped by that water, and T falls by
+ * L dm / (m c) (to T_b unless the cap bit). Its heat is sum m c T (thermal.c's
+ * thermal_energy), so heat lost = L x water lost to round-off, in both heat
+ * schemes: the implicit one solved for T first, and the clamp acts on the
+ * solution (operator splitting; the CG never sees the sink).
+ * Where the vapour goes: in a real crumb it moves through the pores to the
+ * surface and out (and part condenses again further in: evaporation-
+ * condensation, which moves heat inward ahead of the front); here it leaves the body
+ * at once. That is the simplest closure that conserves energy: it leaves out
+ * the heat the vapour carries toward the colder core and the water it
+ * deposits there, so the wet core heats by conduction alone (slower than
+ * a real crumb).
+ * No step limit: it is a projection onto T <= T_b, which never amplifies. A
+ * pinned body's held particles (PF_HOLD_T) keep their temperature: mpm.c
+ * does not call this for them. Returns the water boiled (kg). */
+double water_boil(hearth_scene *s, int i, double *T, double Tb) {
+    particles *ps = &s->ps;
+    double *W = pcold(ps, PC_WATER);
+    const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
+    const double mc = pcold(ps, PC_MASS)[i] * ms->core[CP_SPECIFIC_HEAT];
+    const double spare = W[i] - WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * mpm_state_of(s)->vol[i];
+    if (!(spare > 0) || !(mc > 0)) return 0.0;
+    double dm = mc * (*T - Tb) / HEARTH_LATENT_HEAT;
+    if (dm < spare) {
+        *T = Tb;
+    } else {
+        dm = spare;
+        *T -= dm * HEARTH_LATENT_HEAT / mc;
+    }
+    W[i] -= dm;
+    return dm;
+}
+
 /* After G2P, the particles within dx/2 of a holding wet collider's face take
  * the grid's new saturation at their place, sum_i w_ip (s_i + ds_i) with the
  * held nodes' values (PIC), instead of the FLIP change G2P gave them: they

@@ -92,6 +92,11 @@ void water_prepare(struct hearth_scene *s);
 /// its nodes' saturation (eq. 19-20, FLIP), floored. Returns the water it
 /// lost (kg); raises *dmax and *emax, the explicit-step limits.
 double water_take(struct hearth_scene *s, int i, double r, double *dmax, double *emax);
+/// In G2P, with the scene's latent_heat, for particle i whose new temperature
+/// *T passed Tb (degrees C): the excess heat boils its water above the floor,
+/// m c (*T - Tb) / L, and *T falls by L / (m c) per kg boiled (to Tb unless the
+/// water ran out). Returns the water boiled (kg); the vapour leaves the body.
+double water_boil(struct hearth_scene *s, int i, double *T, double Tb);
 /// After transport_apply: the water crossing wet colliders' faces over dt,
 /// into CH_DMW around each contact particle's foot on the face (the boundary
 /// term of holding faces, the exchange of Robin ones).

@@ -314,6 +314,11 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
                        "save %s: checkpoints of damped scenes (damping = %g 1/s) are not supported yet; save with "
                        "damping = 0",
                        path, s->def.damping);
+    if (s->def.boiling_point != 100.0) /* not in version 4's DEF section: a restored scene would boil at 100 degC */
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "save %s: checkpoints of scenes whose boiling_point is not 100 degC (it is %g) are not supported "
+                       "yet",
+                       path, s->def.boiling_point);
     if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) /* not in version 3's DEF section either */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with periodic axes are not supported yet",
                        path);

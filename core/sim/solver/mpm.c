@@ -712,6 +712,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     double *Gcol = HEAT && (ps->enabled & (1u << PC_GAS)) ? pcold(ps, PC_GAS) : NULL;
     const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     const double *hold_h = HEAT && s->heat.nfix > 0 ? s->heat.hold_h : NULL; /* held temperatures (thermal.c) */
+    const double boil = HEAT && WATER && s->def.latent_heat ? s->def.boiling_point : INFINITY; /* no boiling: never passed */
     const pblock pb = s->mpm->pb[k];
     pb_partial *pp = &s->mpm->partial[k];
     const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
@@ -801,7 +802,11 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             double T1 = flip == 1.0 ? T0 + dT : flip * (T0 + dT) + (1.0 - flip) * Tn; /* FLIP-PIC blend */
             if (hold_h && hold_h[i] > 0) T1 += hold_h[i] * (Tn - T1); /* toward held nodes (thermal.c's held_settle) */
             /* a held body's particle keeps its temperature (thermal.c holds its nodes) */
-            if (!(flags && (flags[i] & PF_HOLD_T))) Tcol[i] = T1;
+            if (!(flags && (flags[i] & PF_HOLD_T))) {
+                Tcol[i] = T1;
+                /* interior boiling (latent_heat): wet matter stays at the boiling point (water.c) */
+                if (WATER && T1 > boil) w_removed += water_boil(s, i, &Tcol[i], boil);
+            }
             if (Tcol[i] > Tmax[i]) Tmax[i] = Tcol[i];
             if (Gcol) { /* CO2 over the step, temperature moving linearly from T0 to T1 (§5.4) */
                 const material_slot *gm = &s->mats.slot[mat[i]];

@@ -10,13 +10,14 @@ local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.008) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
-local oven = h.library.oven.bread
+local oven = h.library.paper_oven.bread
+print("bread.lua: h.library.paper.bread, animation units (Ding Table 2): heat runs in seconds, not minutes")
 local TRAY, WIDTH, BODY, SPACING = 0.02, 0.08, 0.03, 0.14 -- m: tray, loaf width, straight part, loaf spacing
 local zc, ZW = 0.06, 0.06 -- 3D: loaves are extruded along z over +-ZW/2
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(3 * SPACING, 0.14, 0.12) },
   oven = { temperature = oven.temperature, beta = oven.beta }, name = "bread" }
 h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta })
-local dough = h.material("cam_clay_dough", h.library.dough.bread)
+local dough = h.material("cam_clay_dough", h.library.paper.bread)
 
 -- a loaf: a box with a round top (2D), extruded in 3D; slits are thin boxes cut from the top
 local loaves = {

@@ -34,7 +34,8 @@ local dx = d3 and math.max(P.dx, 0.01) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 local ovens, leaveners = P.ovens, P.leaveners
 
-local oven = h.library.oven.cookie
+local oven = h.library.paper_oven.cookie
+print("cookies.lua: h.library.paper.cookie, animation units (Ding Table 2): heat runs in seconds, not minutes")
 local TRAY, SPACING, R, THICK = 0.02, 0.12, 0.03, 0.025 -- m: tray height, cookie spacing, dough radius and height
 local W = SPACING * #leaveners
 local zc = 0.06
@@ -47,7 +48,7 @@ for _, T in ipairs(ovens) do
   h.recipes.tray(s, TRAY, { temperature = T, beta = oven.pan_beta })
   local xs = {}
   for i, a in ipairs(leaveners) do
-    local d = h.library.dough.cookie
+    local d = h.library.paper.cookie
     d.gas_rate = a * h.library.dough_scale.gas
     -- the baseline: the cookie's E, nu, density and heat; the snow law's theta_c, theta_s, xi (plugin defaults)
     local mat = P.baseline and h.material("snow_plastic", { E = d.E, nu = d.nu, density = d.density,

@@ -28,7 +28,8 @@ local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.004) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
-local oven = h.library.oven.lava_cake
+local oven = h.library.paper_oven.lava_cake
+print("lava_cake.lua: h.library.paper.lava_cake, animation units (Ding Table 2): heat runs in seconds, not minutes")
 local W, H, zc = 0.2, 0.08, 0.05
 -- m: plate top, cake radius and height, ring wall, centre x
 local PLATE, R, HC, WALL, XC = 0.01, 0.02, 0.03, 0.004, 0.08
@@ -40,7 +41,7 @@ local ring_shape = d3 and (h.cylinder(v(XC, PLATE + HC / 2, zc), { 0, 1, 0 }, R 
   or (h.box(v(XC - R - WALL, PLATE), v(XC - R, PLATE + HC)) + h.box(v(XC + R, PLATE), v(XC + R + WALL, PLATE + HC)))
 if P.dt_max > 0 then s:set_dt(nil, P.dt_max) end
 local ring = s:collider { shape = ring_shape, mode = "slip", temperature = oven.pan_temperature, beta = oven.pan_beta }
-local d = h.library.dough.lava_cake
+local d = h.library.paper.lava_cake
 d.conductivity = d.conductivity * P.kappa
 d.gas_rate = d.gas_rate * P.gas
 local cake = d3 and h.cylinder(v(XC, PLATE + HC / 2, zc), { 0, 1, 0 }, R - dx / 4, HC / 2)

@@ -26,7 +26,8 @@ local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.004) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
-local oven = h.library.oven.smore
+local oven = h.library.paper_oven.smore
+print("marshmallow.lua: h.library.paper.smore, animation units (Ding Table 2): heat runs in seconds, not minutes")
 local W, H, zc = 0.16, 0.08, 0.04         -- m: scene box, depth centre (3D)
 local BASE, HM, RM = 0.02, 0.025, 0.015   -- m: lower crackers' top, marshmallow height and half width
 local CW, CT, GAP = 0.025, 0.004, 0.004   -- m: crackers' half width and thickness, gap above the marshmallow
@@ -38,7 +39,7 @@ if closure > room then
 end
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, H, 0.08) }, gravity = v(0, -9.81, 0),
   name = "marshmallow" }
-local mat = h.material("cam_clay_dough", h.library.dough.smore)
+local mat = h.material("cam_clay_dough", h.library.paper.smore)
 local xs, names = { 0.045, 0.115 }, { "raw", "roasted" }
 local crackers = {}
 for i, x in ipairs(xs) do

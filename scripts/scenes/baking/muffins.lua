@@ -19,14 +19,15 @@ local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.006) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
-local oven = h.library.oven.muffin
+local oven = h.library.paper_oven.muffin
+print("muffins.lua: h.library.paper.muffin, animation units (Ding Table 2): heat runs in seconds, not minutes")
 -- m: the cups' inner floor, inner radius, wall height above the floor, wall and floor thickness, cup spacing
 local BASE, R, CUP_H, WALL, SPACING = 0.012, 0.025, 0.03, 0.004, 0.08
 local W = SPACING * P.cups
 local zc = 0.04
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.1, 0.08) },
   oven = { temperature = oven.temperature, beta = oven.beta }, name = "muffins" }
-local batter = h.material("cam_clay_dough", h.library.dough.muffin)
+local batter = h.material("cam_clay_dough", h.library.paper.muffin)
 local xs = {}
 for i = 1, P.cups do
   -- cup centres on grid nodes: both walls then sit alike on the grid and the

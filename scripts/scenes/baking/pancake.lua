@@ -31,12 +31,13 @@
 local h = require "hearth"
 local THETA_SET = require("hearth.dough").THETA[4] -- gelatinisation, degC
 local P = h.params { dim = 2, dx = 0.002, until_t = 2, frames = 20, pour = 0.4, spin = 0.5, gas = 0.1, flip_dt = 0,
-  porosity = -1, spatula = "sticky", pan = h.library.oven.pancake.pan_temperature, set_at = THETA_SET }
+  porosity = -1, spatula = "sticky", pan = h.library.paper_oven.pancake.pan_temperature, set_at = THETA_SET }
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.004) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
-local oven = h.library.oven.pancake
+local oven = h.library.paper_oven.pancake
+print("pancake.lua: h.library.paper.pancake, animation units (Ding Table 2): heat runs in seconds, not minutes")
 local W, PAN, zc = 0.32, 0.01, 0.05         -- m: pan width, pan top height, depth centre (3D)
 local X0, X1 = 0.045, 0.105                 -- m: the spout's path
 local SPOUT_W, SPOUT_Y, SPEED = 0.008, PAN + 0.025, 0.15 -- m, m, m/s: spout width, exit height, batter speed
@@ -57,7 +58,7 @@ local spatula = s:collider { shape = h.box(v(0.02, PAN - 0.004, zc - 0.05), v(XP
 -- Gas x0.1, as the lava cake preset (lua/hearth/dough.lua): at
 -- the preset's rate this 2 Pa batter tears while it passes theta_r (the
 -- guard stopped the run at t = 0.59 s, kinetic energy x18).
-local d = h.library.dough.pancake
+local d = h.library.paper.pancake
 d.gas_rate = d.gas_rate * P.gas
 if P.porosity >= 0 then d.porosity = P.porosity end
 local batter = h.material("cam_clay_dough", d)

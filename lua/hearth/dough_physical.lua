@@ -1,0 +1,152 @@
+-- hearth.dough_physical: doughs in physical units (issue #18, "presets say
+-- their units"), for the cam_clay_dough plugin:
+--   h.material("cam_clay_dough", h.library.dough.bread)   -- parameters and curves
+--   h.library.oven.bread                                     -- oven, pan, dough and the time scale
+-- Ding et al.'s Table 2 goods, in the animation units hearth used before, are
+-- h.library.paper.<name> and h.library.paper_oven.<name> (lua/hearth/dough.lua).
+--
+-- Every number below carries its source. Where a value is measured we say so;
+-- where it is predicted from the composition (Choi & Okos 1986, the method of
+-- the ASHRAE Handbook - Refrigeration, chapter "Thermal properties of foods")
+-- or chosen within a reported range, we say that instead.
+--
+-- ---- the time scale S -----------------------------------------------------
+-- A real bake takes 20-30 minutes; the dough's elastic waves limit the MPM
+-- step to ~3e-4 s at dx 5 mm, so a bake in real time would take millions of
+-- steps. The presets therefore run every transport RATE S times fast and
+-- keep every capacity: conductivity, the oven's and the pan's beta, the
+-- water diffusivity, the surface evaporation beta^w and the CO2 rate are
+-- multiplied by S, and the scene runs 1/S of the real time. Heat and water
+-- then follow exactly the real history in t_real = S t (divide eq. 9 and 22
+-- by S: nothing else changes; density, specific heat, water content and
+-- L = 2.26 MJ/kg are capacities and stay). Browning's rate is scaled alike
+-- (oven.browning_scale = S). The mechanics keeps its elasticity (its waves
+-- are not part of the bake: the dough is quasi-static) and divides its
+-- viscosity by S, so a viscous slump under its own weight, time eta / (rho g
+-- H), keeps its ratio to the bake's time. oven.time_scale = S and
+-- oven.bake_time (s, simulated) say it; a scene reports t_real = S t.
+--
+-- ---- viscosity in the plugin's units ----------------------------------------
+-- cam_clay_dough's eta penalises f = M p^2 + q^2 - tau_y^2 (Pa^2) and is in
+-- Pa^3 s (plugins/cam_clay_dough.c). Just past the yield surface f ~ 2 tau_y
+-- (q - tau_y), and the plastic rate is ~ (dt / eta) f q per step, so a
+-- Newtonian overstress viscosity mu (Pa s) is eta = 2 tau_y^2 mu. The curve
+-- of eta below is that, point by point, at each point's tau_y.
+--
+-- ---- water --------------------------------------------------------------
+-- hearth's water is the saturation s of rho_0^w = 1000 kg/m^3 (Ding et al.
+-- eq. 8): water mass per volume = 1000 s. A dough of density rho and water
+-- mass fraction x_w (wet basis) has s = x_w rho / 1000.
+local D = {}
+
+local THETA = { 5, 20, 35, 70 }            -- Fig. 8's points (degC): fridge, room, fat melting, gelatinisation
+local TAU_SHAPE = { 1, 0.8, 0.3, 20 }      -- Fig. 8 left, as the paper presets (dough.lua): the set crumb is 20x
+local MU_SHAPE = { 1, 0.5, 0.1, 0.05 }     -- Fig. 8 right, relative to the measured viscosity at the first point
+
+-- per good: the numbers and their sources
+D.goods = {
+  bread = {
+    -- proofed wheat dough: porosity eps = 50% (a dough proofed to twice its volume)
+    -- density: Zanoni et al. 1995 (J. Food Eng. 26:497, "Determination of the thermal diffusivity of bread as a function
+    -- of porosity"), measured crumb rho = 979 - 9.90 eps (eps in %): 484 kg/m^3
+    density = 484,
+    -- specific heat: Choi & Okos composition model (ASHRAE) for 45% water, 55% solids (mostly starch): 2.7 kJ/(kg K);
+    -- the order of the measured doughs Rask 1989 (J. Food Eng. 9:167) reviews
+    specific_heat = 2700,
+    -- conductivity: kappa = alpha rho c with Zanoni et al. 1995's measured crumb diffusivity
+    -- alpha = exp(0.01 eps - 15.25) = 3.9e-7 m^2/s at eps = 50%: 0.51 W/(m K)
+    conductivity = 0.51,
+    -- water: 45% wet basis (a lean bread dough's; Zanoni, Peri & Pierucci 1993, J. Food Eng. 19:383, bake doughs of
+    -- about this), s = 0.45 x 484 / 1000
+    saturation = 0.218,
+    -- liquid water diffusivity in crumb: chosen 2e-9 m^2/s within the 1e-10..1e-8 m^2/s range of baking models
+    -- (e.g. Zanoni, Pierucci & Peri 1994, J. Food Eng. 23:321); eq. 22's D = K theta s gives K = D / (373 s)
+    water_diffusivity_m2s = 2e-9,
+    -- surface evaporation: chosen so a wet surface (s = 0.218, 373 K) loses ~1 g/(m^2 s) before it boils;
+    -- the boiling front (core, boiling_point) carries most of the water
+    evaporation = 1.2e-5,
+    -- rheology: E = 3 G' with G' ~ 1e4 Pa (small-strain moduli 1e3-1e4 Pa, Dobraszczyk & Morgenstern 2003, J. Cereal
+    -- Sci. 38:229); creep (overstress) viscosity 1e5 Pa s (the 1e4-1e6 Pa s of the same review); yield stress 200 Pa
+    -- at the fridge point (a stiff dough holds a 7 cm loaf, rho g H ~ 330 Pa, once it is a few degrees warmer and
+    -- sets at 70 degC: Fig. 8's shape)
+    E = 3e4, nu = 0.3, tau_y = 200, mu = 1e5,
+    -- CO2: no measured counterpart: the model's gas pressure n^g R theta / n^p (eq. 13) is not an overpressure over
+    -- the atmosphere, so a real yeast's output (~1e-5 mol/(kg s)) would stand for 1e5 Pa against a dough that
+    -- yields at 1e2 Pa (seen: the guard stopped the loaf at 0.28 s with 2.4e6 Pa of CO2). Set so the bake makes
+    -- what h.library.paper.bread makes over its scene's bake: 2e-5 mol/(kg s) x 2.5 s / 1500 s, in real time
+    gas_rate = 0.03 / 600 * 0.4 * 2.5 / 1500, reaction_temperature = 40, reaction_width = 20, porosity = 0.1,
+    expansion = 0.1, dough_temperature = 25,
+    -- oven: 200 degC, beta 30 W/(m^2 K) (effective coefficients, radiation included, 20-48 W/(m^2 K) in Baik et al.
+    -- 1999, J. Food Sci. 64:688); pan: a tray at the oven's temperature through ~100 W/(m^2 K) contact
+    oven_temperature = 200, oven_beta = 30, pan_temperature = 200, pan_beta = 100,
+    time_scale = 300, bake_time_real = 1500,
+  },
+  cookie = {
+    -- sugar-snap cookie dough of an assumed composition: 18% water, 20% fat, 55% carbohydrate, 7% protein;
+    -- density 1200 kg/m^3 from the constituents' (carbohydrate and protein ~1.5, water 1.0, fat 0.92 g/cm^3) with
+    -- ~15% air (estimated, not measured)
+    density = 1200,
+    -- specific heat and conductivity: Choi & Okos composition model (ASHRAE) for that composition at 25 degC
+    specific_heat = 2150, conductivity = 0.35,
+    saturation = 0.216,                        -- 0.18 x 1200 / 1000
+    water_diffusivity_m2s = 1e-9,              -- chosen, as bread's, lower for the denser dough
+    evaporation = 1.2e-5,
+    -- rheology: short doughs are stiffer than bread dough (G' 1e4-1e5 Pa, Dobraszczyk & Morgenstern 2003's range for
+    -- doughs); E = 1e5, yield 500 Pa, viscosity 1e5 Pa s; the cookie spreads as the fat melts (Fig. 8's dip)
+    E = 1e5, nu = 0.3, tau_y = 500, mu = 1e5,
+    gas_rate = 0.015 / 600 * 3 / 660, reaction_temperature = 40, -- as bread's: the paper cookie's CO2 over cookies.lua's 3 s reaction_width = 20, porosity = 0.1,
+    expansion = 0.1, dough_temperature = 20,
+    oven_temperature = 190, oven_beta = 30, pan_temperature = 190, pan_beta = 100,
+    time_scale = 50, bake_time_real = 660,
+  },
+  muffin = {
+    -- cake batter, 38% water: density 800 kg/m^3 (an aerated batter), specific heat 2.8 kJ/(kg K) and
+    -- conductivity 0.25 W/(m K): predicted by the Choi & Okos composition model (ASHRAE), not checked here against a
+    -- measurement (Baik et al.'s cake baking studies in tunnel ovens, 1999-2001, are where to look)
+    density = 800, specific_heat = 2800, conductivity = 0.25,
+    saturation = 0.304,                        -- 0.38 x 800 / 1000
+    water_diffusivity_m2s = 2e-9, evaporation = 1.2e-5,
+    -- a batter flows: E 1e4, yield 20 Pa, viscosity 1e2 Pa s (batters are 1-100 Pa s fluids; chosen at the top, so
+    -- it stands in its cup while it heats), setting at 70 degC
+    E = 1e4, nu = 0.3, tau_y = 20, mu = 100, max_porosity = 0.6,
+    gas_rate = 0.03 / 600 * 2.5 * 3 / 1320, reaction_temperature = 40, -- as bread's: the paper muffin's over muffins.lua's 3 s reaction_width = 20, porosity = 0.1,
+    expansion = 0.1, dough_temperature = 20,
+    oven_temperature = 180, oven_beta = 30, pan_temperature = 180, pan_beta = 100,
+    time_scale = 60, bake_time_real = 1320,
+  },
+}
+
+local function curve(points)
+  local pts = { irreversible = true }
+  for i, T in ipairs(THETA) do pts[i] = { T, points(i) } end
+  return pts
+end
+
+--- The physical preset of one good: plugin parameters, curve point lists (for h.curve), and its oven.
+function D.preset(name)
+  local g = D.goods[name]
+  if not g then return nil end
+  local S = g.time_scale
+  local params = {
+    E = g.E, nu = g.nu, density = g.density, specific_heat = g.specific_heat,
+    conductivity = g.conductivity * S,
+    -- eq. 22: D = K theta s at the boiling point and the dough's saturation
+    water_diffusivity = g.water_diffusivity_m2s / (373.15 * g.saturation) * S,
+    evaporation = g.evaporation * S, saturation = g.saturation,
+    gas_rate = g.gas_rate * S, reaction_temperature = g.reaction_temperature, reaction_width = g.reaction_width,
+    porosity = g.porosity, max_porosity = g.max_porosity, expansion = g.expansion,
+    reference_temperature = g.dough_temperature,
+  }
+  local curves = {
+    tau_y = curve(function(i) return g.tau_y * TAU_SHAPE[i] end),
+    eta = curve(function(i) local t = g.tau_y * TAU_SHAPE[i]; return 2 * t * t * g.mu * MU_SHAPE[i] / S end),
+  }
+  local oven = { temperature = g.oven_temperature, beta = g.oven_beta * S, pan_temperature = g.pan_temperature,
+    pan_beta = g.pan_beta * S, dough_temperature = g.dough_temperature, saturation = g.saturation,
+    latent_heat = true, boiling_point = 100, browning_scale = S, time_scale = S, bake_time = g.bake_time_real / S,
+    units = ("physical, heat and water %g times fast (t_real = %g t)"):format(S, S) }
+  return params, curves, oven
+end
+
+D.THETA, D.TAU_SHAPE, D.MU_SHAPE = THETA, TAU_SHAPE, MU_SHAPE
+return D

@@ -1,0 +1,66 @@
+-- A loaf in physical units (issue #18): h.library.dough.bread (measured
+-- density, heat capacity, conductivity and water of a proofed bread dough,
+-- lua/hearth/dough_physical.lua) on a tray in its 200 degC oven, with the
+-- latent heat and the boiling point on. Heat and water run S = 300 times
+-- fast (the preset's time scale): 5 s of simulated time are a 25 minute bake.
+-- The crust is a few mm thick: at the default dx = 5 mm the front spans a
+-- particle's stencil (10 mm), so the top particle still holds water at the
+-- end; dx = 2.5 mm shows the dried crust (docs/gallery/crumb_plateau.md).
+--   hearth run scripts/scenes/baking/loaf_physical.lua [--set dx=0.0025] [--set latent=false]
+-- What it shows: the crumb climbs to 100 degC and holds there while it holds
+-- water (the boiling plateau), while the crust dries and heats on toward the
+-- oven. Writes, under hearth-out/loaf_physical/: loaf.csv (per frame, in real
+-- minutes: the crumb's and the crust's temperature and saturation, particle
+-- values (crust_and_crumb), the loaf's height and the water left), temperature_%04d.png, and at the end temperature.png,
+-- saturation.png and browning.png.
+local h = require "hearth"
+local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0 }
+local oven = h.library.oven.bread
+local S = oven.time_scale
+local until_t = (P.until_real > 0 and P.until_real or oven.bake_time * S) / S
+print(("loaf_physical.lua: h.library.dough.bread, %s; bake %.0f min in %.1f s"):format(oven.units, until_t * S / 60, until_t))
+
+local TRAY, WIDTH, BODY, X0 = 0.02, 0.08, 0.03, 0.07 -- m: tray top, loaf width, straight part, loaf centre
+local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name = "loaf_physical",
+  oven = { temperature = oven.temperature, beta = oven.beta }, latent_heat = P.latent and oven.latent_heat,
+  boiling_point = oven.boiling_point, browning = true, browning_scale = oven.browning_scale }
+h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta })
+s:add { shape = h.shapes.loaf({ X0, TRAY }, WIDTH, BODY), material = h.material("cam_clay_dough", h.library.dough.bread),
+  temperature = oven.dough_temperature }
+
+local function height() return h.recipes.height(s, X0, TRAY, 0.14, 280) end
+-- particle values, as the unit tests read them (a probe is the grid's B-spline
+-- average over three cells, which blurs a crust a few mm thick): the crust is
+-- the topmost particle within dx/2 of the loaf's vertical axis, the crumb
+-- the particle nearest the axis at 45% of the loaf's height
+local function crust_and_crumb(H)
+  local r = s:particles { fields = { "x", "temperature", "saturation" } }
+  local top, ctr, dc = nil, nil, math.huge
+  for i = 1, r.n do
+    local x, y = r.x[3 * i - 2], r.x[3 * i - 1]
+    if y > TRAY then
+      if math.abs(x - X0) < P.dx / 2 and (not top or y > r.x[3 * top - 1]) then top = i end
+      local d = math.abs(x - X0) + math.abs(y - (TRAY + 0.45 * H))
+      if d < dc then ctr, dc = i, d end
+    end
+  end
+  return r.temperature[ctr], r.saturation[ctr], r.temperature[top], r.saturation[top]
+end
+local w0 = s:stats().water_mass
+local rows = { "t_real_min,centre_T_degC,centre_s,top_T_degC,top_s,height_m,water_left" }
+local last
+s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperature", path = "temperature_%04d.png" },
+  on_frame = function(f)
+    local H = height()
+    local Tc, sc, Tt, st = crust_and_crumb(H)
+    last = { f.t * S / 60, Tc, sc, Tt, st, H, s:stats().water_mass / w0 }
+    rows[#rows + 1] = ("%.2f,%.2f,%.4f,%.2f,%.4f,%.5f,%.4f"):format(table.unpack(last))
+    h.write("loaf.csv", table.concat(rows, "\n") .. "\n")
+    print(rows[#rows])
+  end }
+s:png("temperature", "temperature.png")
+s:png("saturation", "saturation.png")
+s:png("browning", "browning.png")
+print(("after %.0f min: centre %.1f degC at saturation %.3f, top %.1f degC at saturation %.3f; height %.1f mm; "
+  .. "%.1f%% of the water left (latent_heat = %s)"):format(last[1], last[2], last[3], last[4], last[5], 1000 * last[6],
+  100 * last[7], tostring(P.latent)))

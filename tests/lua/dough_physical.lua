@@ -1,0 +1,41 @@
+-- The physical dough presets (h.library.dough / h.library.oven, issue #18) and
+-- the paper's (h.library.paper / h.library.paper_oven) from a scene.
+local h = require "hearth"
+for _, name in ipairs { "bread", "cookie", "muffin" } do
+  local d, o = h.library.dough[name], h.library.oven[name]
+  local S = o.time_scale
+  assert(S > 1 and o.bake_time * S >= 600, name .. ": a time scale and a bake of ten minutes or more in real time")
+  assert(o.latent_heat == true and o.boiling_point == 100 and o.browning_scale == S, name .. ": latent heat and boiling on")
+  assert(o.units:find("physical"), name .. ": the oven says its units")
+  -- real heat capacities and densities, only rates scaled
+  assert(d.specific_heat >= 2000 and d.specific_heat <= 3000, name .. ": a dough's specific heat, J/(kg K)")
+  assert(d.density >= 400 and d.density <= 1300, name .. ": a dough's density")
+  local k = d.conductivity / S
+  assert(k >= 0.2 and k <= 0.6, name .. ": a dough's conductivity once the time scale is taken out: " .. k)
+  assert(o.beta / S >= 20 and o.beta / S <= 48, name .. ": an oven's beta (Baik et al. 1999: 20-48 W/(m^2 K))")
+  -- water content: 15-45% of the mass
+  local xw = 1000 * d.saturation / d.density
+  assert(xw > 0.15 and xw < 0.46, name .. ": water mass fraction " .. xw)
+  -- eta = 2 tau_y^2 mu / S at each point of Fig. 8
+  local ty, eta = d.tau_y, d.eta
+  assert(ty.irreversible and eta.irreversible and #ty == 4 and #eta == 4, name .. ": Fig. 8's curves")
+  local mu1 = eta[1][2] * S / (2 * ty[1][2] ^ 2)
+  assert(mu1 >= 100 and mu1 <= 1e6, name .. ": the viscosity behind eta, Pa s: " .. mu1)
+  h.material("cam_clay_dough", d) -- passes the plugin's schema
+end
+-- the paper presets keep Table 2's animation units and say so
+local p, po = h.library.paper.bread, h.library.paper_oven.bread
+assert(p.specific_heat == 20 and po.latent_heat == false, "h.library.paper: Table 2 verbatim (c = 20 J/(kg K)), latent heat off")
+local ok, e = pcall(function() return h.library.dough.smore end)
+assert(not ok and e:find("no preset 'smore'") and e:find("bread, cookie, muffin"), "physical presets list their names: " .. tostring(e))
+ok, e = pcall(function() return h.library.paper.cooky end)
+assert(not ok and e:find("did you mean 'cookie'"), "nearest paper preset: " .. tostring(e))
+-- a physical scene takes its oven as given
+local o = h.library.oven.bread
+local s = h.scene { dim = 2, dx = 0.005, box = { { 0, 0 }, { 0.12, 0.08 } }, latent_heat = o.latent_heat,
+  boiling_point = o.boiling_point, browning = true, browning_scale = o.browning_scale,
+  oven = { temperature = o.temperature, beta = o.beta } }
+s:add { shape = h.box({ 0.03, 0.015 }, { 0.09, 0.045 }), material = h.material("cam_clay_dough", h.library.dough.bread),
+  temperature = o.dough_temperature }
+s:step(20)
+print("dough physical ok")
