@@ -110,7 +110,7 @@ local paper = {
 }
 
 -- per-good factors on top of the global ones (see the header)
-local TUNE = { bread = { tau = 10, gas = 0.4 }, muffin = { kappa = 0.005, tau = 10, gas = 2.5, max_porosity = 0.6 }, lava_cake = { gas = 0.1 } }
+local TUNE = { bread = { tau = 10 }, muffin = { kappa = 0.005, tau = 10, gas = 2.5, max_porosity = 0.6 }, lava_cake = { gas = 0.1 } }
 
 local D = { paper = paper, TUNE = TUNE, ETA_SCALE = ETA_SCALE, GAS_SCALE = GAS_SCALE, THETA = THETA, TAU_SHAPE = TAU_SHAPE,
   ETA_SHAPE = ETA_SHAPE }
@@ -134,7 +134,9 @@ function D.preset(name)
     porosity = 0.1, max_porosity = tune.max_porosity,
     expansion = name == "smore" and 2 or 0.1, reference_temperature = c.theta0,
   }
-  local curves = { tau_y = curve(c.yield * (tune.tau or 1), TAU_SHAPE), eta = curve(c.eta * ETA_SCALE, ETA_SHAPE) }
+  -- eta carries the square of the tau_y factor (header, "Rise"): eta / tau_y^2 is the dough's viscosity
+  local tau = tune.tau or 1
+  local curves = { tau_y = curve(c.yield * tau, TAU_SHAPE), eta = curve(c.eta * ETA_SCALE * tau * tau, ETA_SHAPE) }
   local oven = { temperature = c.ambient_theta, beta = c.ambient_beta, pan_temperature = c.conductive_theta,
     pan_beta = c.conductive_beta, dough_temperature = c.theta0, latent_heat = false }
   return params, curves, oven
