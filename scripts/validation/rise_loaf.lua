@@ -11,11 +11,17 @@
 local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dx = 0.005, until_t = 2.5, frames = 10, gas = 1, tau = 1, eta = 1, expansion = -1, g = 9.81,
-  max_porosity = -1, compaction = -1, oven = -1, pore_hardening = -1, dough = "bread" }
+  max_porosity = -1, compaction = -1, oven = -1, pore_hardening = -1, dough = "bread", soft_until = -1 }
 local params, curves, oven = D.preset(P.dough)
+-- soft_until (degC): the fat-melted value of Fig. 8 (its 35 degC point) held up to this temperature
 local function scaled(pts, f)
   local c = { irreversible = true }
-  for i, p in ipairs(pts) do c[i] = { p[1], p[2] * f } end
+  for _, p in ipairs(pts) do
+    if P.soft_until > 0 and p[1] > P.soft_until and #c > 0 and c[#c][1] < P.soft_until then
+      c[#c + 1] = { P.soft_until, c[#c][2] }
+    end
+    c[#c + 1] = { p[1], p[2] * f }
+  end
   return h.curve(c)
 end
 params.gas_rate = params.gas_rate * P.gas
@@ -30,7 +36,9 @@ local TRAY, WIDTH, BODY, X = 0.02, 0.08, 0.03, 0.07
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, gravity = { 0, -P.g },
   oven = { temperature = T_oven, beta = oven.beta }, name = "rise_loaf" }
 h.recipes.tray(s, TRAY, { temperature = P.oven >= 0 and P.oven or oven.pan_temperature, beta = oven.pan_beta })
-s:add { shape = h.shapes.loaf({ X, TRAY }, WIDTH, BODY), material = h.material("cam_clay_dough", params),
+-- --set dough=cookie: cookies.lua's dough ball (radius 30 mm, 25 mm thick) in the cookie's oven
+local shape = P.dough == "cookie" and h.shapes.cookie({ X, TRAY + 0.0125 }, 0.03, 0.025) or h.shapes.loaf({ X, TRAY }, WIDTH, BODY)
+s:add { shape = shape, material = h.material("cam_clay_dough", params),
   temperature = oven.dough_temperature, ppc = 4 }
 
 local N = 700
@@ -54,14 +62,15 @@ local function max_porosity()
   return m
 end
 local raw, peak, last = nil, nil, nil
-print("t_s,height_m,area_m2,base_width_m,max_porosity,centre_T_degC")
+print("t_s,height_m,area_m2,base_width_m,max_porosity,centre_T_degC,centre_gas_pressure_Pa")
 s:run { until_t = P.until_t, every = P.until_t / P.frames, on_frame = function(f)
   local r = { t = f.t, h = height(X), a = s:volume(), w = base_width(), n = max_porosity(),
-    T = s:probe("temperature", { X, TRAY + 0.035 }) }
+    T = s:probe("temperature", { X, TRAY + (P.dough == "cookie" and 0.01 or 0.035) }) }
   raw = raw or r
   if not peak or r.a > peak.a then peak = r end
   last = r
-  print(("%.3f,%.5f,%.6g,%.5f,%.3f,%.1f"):format(r.t, r.h, r.a, r.w, r.n, r.T))
+  local pg = P.gas > 0 and s:probe("gas_pressure", { X, TRAY + 0.01 }) or 0
+  print(("%.3f,%.5f,%.6g,%.5f,%.3f,%.1f,%.1f"):format(r.t, r.h, r.a, r.w, r.n, r.T, pg))
 end }
 print(("summary: height %.1f -> %.1f mm (%.0f%%); area peak %+.1f%% at %.2f s, end %+.1f%%; base width %.1f -> %.1f mm")
   :format(raw.h * 1e3, last.h * 1e3, 100 * last.h / raw.h, 100 * (peak.a / raw.a - 1), peak.t,
