@@ -236,6 +236,34 @@ print(f"t = {rows[-1]['t']} s: centre {ce * 1e3:.2f} mm above the edge (need > d
 sys.exit(0 if ce > dx and k < 0 and top1 > top0 else 1)
 PY
     ;;
+# #18, Ding Fig. 2: the muffin's top tears as it domes. A tear is a notch in
+# the top (muffins.lua's tear_depth, tear_width over the particles' one-cell
+# top bins) at least two cells wide and a tenth of the muffin's height (its
+# centre top above the cup's floor) deep, at the end of claim_muffin_domes'
+# bake (2D, dx 4 mm, one cup, 1.5 s). At 3 mm (34 s, too long for the suite
+# while it fails) the notch is 0.03 mm deep (docs/validation.md, Rise (#18)).
+claim_muffin_top_tears)
+    dx=0.004
+    run muffins --set cups=1 --set dx=$dx --set until_t=1.5 --set frames=3 >/dev/null
+    python3 - hearth-out/muffins/muffins.csv $dx <<'PY'
+import csv, sys
+r = list(csv.DictReader(open(sys.argv[1])))[-1]
+dx = float(sys.argv[2])
+BASE, RIM = 0.012, 0.042  # the cup's inner floor and rim (scripts/scenes/baking/muffins.lua)
+height = RIM + float(r["top_above_rim_1_m"]) - BASE
+d, w = float(r["tear_depth_1_m"]), float(r["tear_width_1_m"])
+print(f"dx {dx * 1e3:.0f} mm, t = {r['t']} s: deepest notch in the top {d * 1e3:.2f} mm deep (need >= "
+      f"{0.1 * height * 1e3:.2f} mm), {w * 1e3:.0f} mm wide (need >= {2 * dx * 1e3:.0f} mm); dome "
+      f"{float(r['centre_above_edge_1_m']) * 1e3:.2f} mm")
+if d >= 0.1 * height and w >= 2 * dx:
+    sys.exit(0)
+print("EXPECTED FAILURE: the muffin domes but its top stays whole: the walls and floor set first and the soft centre "
+      "rises as one smooth cap; nothing in the dough law lets a set skin fail in tension (eq. 12 yields in tension and "
+      "flows, it does not part), so a tear needs the crust's stiffening (issue #18, Crust) and a tension failure")
+sys.exit(77)
+PY
+    exit $?
+    ;;
 # §7.1, Figs. 9 and 13: a drying body loses volume as it loses water,
 # monotonically: over a coarse drying run, sampled every 0.1 s, the water left
 # falls at every sample and so does the volume (s:volume()).
