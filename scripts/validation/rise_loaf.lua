@@ -11,7 +11,7 @@
 local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dx = 0.005, until_t = 2.5, frames = 10, gas = 1, tau = 1, eta = 1, expansion = -1, g = 9.81,
-  max_porosity = -1, compaction = -1, oven = -1, pore_hardening = -1, dough = "bread", soft_until = -1 }
+  max_porosity = -1, compaction = -1, oven = -1, pore_hardening = -1, dough = "bread", soft_until = -1, png = "" }
 local params, curves, oven = D.preset(P.dough)
 -- soft_until (degC): the fat-melted value of Fig. 8 (its 35 degC point) held up to this temperature
 local function scaled(pts, f)
@@ -63,7 +63,9 @@ local function max_porosity()
 end
 local raw, peak, last = nil, nil, nil
 print("t_s,height_m,area_m2,base_width_m,max_porosity,centre_T_degC,centre_gas_pressure_Pa")
-s:run { until_t = P.until_t, every = P.until_t / P.frames, on_frame = function(f)
+-- --set png=FIELD: a frame of that field each frame (hearth-out/rise_loaf/FIELD_%04d.png)
+s:run { until_t = P.until_t, every = P.until_t / P.frames,
+  png = P.png ~= "" and { field = P.png, path = P.png .. "_%04d.png" } or nil, on_frame = function(f)
   local r = { t = f.t, h = height(X), a = s:volume(), w = base_width(), n = max_porosity(),
     T = s:probe("temperature", { X, TRAY + (P.dough == "cookie" and 0.01 or 0.035) }) }
   raw = raw or r
