@@ -2,8 +2,11 @@
 --   hearth run scripts/scenes/baking/muffins.lua [--set dim=3] [--set cups=3]
 -- Writes, under hearth-out/muffins/: heat_%04d.png (temperature) and
 -- muffins.csv: per frame and cup, the top of the batter at the cup's centre
--- above the rim, its centre's height above its edge, and the curvature of
--- its top (negative = domed).
+-- above the rim, its centre's height above its edge, the curvature of
+-- its top (negative = domed), and its deepest tear (#18): over the one-cell
+-- bins of its top across the cup, how far a bin's top lies below the lower of
+-- the highest tops on its left and on its right (tear_depth), and the width
+-- of the run of bins around it deeper than half that (tear_width, m).
 -- How it domes: the tin heats the batter from its walls and floor (the
 -- muffin preset's kappa gives a Biot number of ~7, see lua/hearth/dough.lua),
 -- so the batter there passes gelatinisation (tau_y x20, frozen) while the
@@ -77,9 +80,30 @@ local function measure(top)
   return c / nc, c / nc - e / ne, 2 * a
 end
 
+-- the deepest tear of a cup's top (header): its depth and width (m)
+local function tear(top)
+  local lo, hi = math.huge, -math.huge
+  for b in pairs(top) do lo, hi = math.min(lo, b), math.max(hi, b) end
+  if lo > hi then return 0, 0 end
+  local left, right, depth = {}, {}, {}
+  for b = lo, hi do left[b] = math.max(left[b - 1] or -math.huge, top[b] or -math.huge) end
+  for b = hi, lo, -1 do right[b] = math.max(right[b + 1] or -math.huge, top[b] or -math.huge) end
+  local bmax, dmax = lo, 0
+  for b = lo, hi do
+    depth[b] = math.min(left[b], right[b]) - (top[b] or BASE) -- an empty bin is a gap down to the floor
+    if depth[b] > dmax then bmax, dmax = b, depth[b] end
+  end
+  if dmax <= 0 then return 0, 0 end
+  local a, z = bmax, bmax
+  while a > lo and depth[a - 1] > dmax / 2 do a = a - 1 end
+  while z < hi and depth[z + 1] > dmax / 2 do z = z + 1 end
+  return dmax, (z - a + 1) * dx
+end
+
 local head = { "t" }
 for i = 1, P.cups do
-  head[#head + 1] = ("top_above_rim_%d_m,centre_above_edge_%d_m,top_curvature_%d_1_per_m"):format(i, i, i)
+  head[#head + 1] = ("top_above_rim_%d_m,centre_above_edge_%d_m,top_curvature_%d_1_per_m,tear_depth_%d_m,tear_width_%d_m")
+    :format(i, i, i, i, i)
 end
 local rows = { table.concat(head, ",") }
 s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png" },
@@ -88,7 +112,8 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temp
     local t = tops()
     for i = 1, P.cups do
       local c, ce, k = measure(t[i])
-      r[#r + 1] = ("%.5f,%.5f,%.3f"):format(c - RIM, ce, k)
+      local td, tw = tear(t[i])
+      r[#r + 1] = ("%.5f,%.5f,%.3f,%.5f,%.5f"):format(c - RIM, ce, k, td, tw)
     end
     rows[#rows + 1] = table.concat(r, ",")
     h.write("muffins.csv", table.concat(rows, "\n") .. "\n")

@@ -1,0 +1,79 @@
+-- rise_loaf.lua: one plain 2D loaf of h.library.paper.bread in
+-- h.library.paper_oven.bread (bread.lua's first loaf, alone), with each suspected
+-- cause of "nothing rises" switchable, for docs/validation.md ("Rise (#18)").
+--   hearth run scripts/validation/rise_loaf.lua --quiet [--set dx=0.0025] [--set gas=0] ...
+-- Factors on the preset: gas (gas_rate), tau (tau_y curve), eta (eta curve),
+-- expansion (Pa/K, absolute), g (gravity, m/s^2), max_porosity, compaction,
+-- oven (air and tray temperature, degC), pore_hardening (plugin, when given).
+-- Prints one line per frame: t, height above the tray on the centre line,
+-- area (s:volume(), m^2), base width, the largest porosity on the centre line
+-- and the centre temperature; then raw -> peak -> end of height and area.
+local h = require "hearth"
+local D = require "hearth.dough"
+local P = h.params { dx = 0.005, until_t = 2.5, frames = 10, gas = 1, tau = 1, eta = 1, expansion = -1, g = 9.81,
+  max_porosity = -1, compaction = -1, oven = -1, pore_hardening = -1, dough = "bread", soft_until = -1, png = "" }
+local params, curves, oven = D.preset(P.dough)
+-- soft_until (degC): the fat-melted value of Fig. 8 (its 35 degC point) held up to this temperature
+local function scaled(pts, f)
+  local c = { irreversible = true }
+  for _, p in ipairs(pts) do
+    if P.soft_until > 0 and p[1] > P.soft_until and #c > 0 and c[#c][1] < P.soft_until then
+      c[#c + 1] = { P.soft_until, c[#c][2] }
+    end
+    c[#c + 1] = { p[1], p[2] * f }
+  end
+  return h.curve(c)
+end
+params.gas_rate = params.gas_rate * P.gas
+params.tau_y = scaled(curves.tau_y, P.tau)
+params.eta = scaled(curves.eta, P.eta)
+if P.expansion >= 0 then params.expansion = P.expansion end
+if P.max_porosity > 0 then params.max_porosity = P.max_porosity end
+if P.compaction >= 0 then params.compaction = P.compaction end
+if P.pore_hardening >= 0 then params.pore_hardening = P.pore_hardening end
+local T_oven = P.oven >= 0 and P.oven or oven.temperature
+local TRAY, WIDTH, BODY, X = 0.02, 0.08, 0.03, 0.07
+local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, gravity = { 0, -P.g },
+  oven = { temperature = T_oven, beta = oven.beta }, name = "rise_loaf" }
+h.recipes.tray(s, TRAY, { temperature = P.oven >= 0 and P.oven or oven.pan_temperature, beta = oven.pan_beta })
+-- --set dough=cookie: cookies.lua's dough ball (radius 30 mm, 25 mm thick) in the cookie's oven
+local shape = P.dough == "cookie" and h.shapes.cookie({ X, TRAY + 0.0125 }, 0.03, 0.025) or h.shapes.loaf({ X, TRAY }, WIDTH, BODY)
+s:add { shape = shape, material = h.material("cam_clay_dough", params),
+  temperature = oven.dough_temperature, ppc = 4 }
+
+local N = 700
+local function column(field, x)
+  return s:line(field, { x, TRAY }, { x, 0.14 }, N + 1)
+end
+local function height(x)
+  local top = 0
+  for k, val in ipairs(column("density", x)) do if val == val then top = (k - 1) * (0.14 - TRAY) / N end end
+  return top
+end
+local function base_width()
+  local d = s:line("density", { 0, TRAY + 1.5 * P.dx }, { 0.14, TRAY + 1.5 * P.dx }, N + 1)
+  local lo, hi
+  for k, val in ipairs(d) do if val == val then lo = lo or k; hi = k end end
+  return lo and (hi - lo) * 0.14 / N or 0
+end
+local function max_porosity()
+  local m = 0
+  if P.gas > 0 then for _, val in ipairs(column("porosity", X)) do if val == val and val > m then m = val end end end
+  return m
+end
+local raw, peak, last = nil, nil, nil
+print("t_s,height_m,area_m2,base_width_m,max_porosity,centre_T_degC,centre_gas_pressure_Pa")
+-- --set png=FIELD: a frame of that field each frame (hearth-out/rise_loaf/FIELD_%04d.png)
+s:run { until_t = P.until_t, every = P.until_t / P.frames,
+  png = P.png ~= "" and { field = P.png, path = P.png .. "_%04d.png" } or nil, on_frame = function(f)
+  local r = { t = f.t, h = height(X), a = s:volume(), w = base_width(), n = max_porosity(),
+    T = s:probe("temperature", { X, TRAY + (P.dough == "cookie" and 0.01 or 0.035) }) }
+  raw = raw or r
+  if not peak or r.a > peak.a then peak = r end
+  last = r
+  local pg = P.gas > 0 and s:probe("gas_pressure", { X, TRAY + 0.01 }) or 0
+  print(("%.3f,%.5f,%.6g,%.5f,%.3f,%.1f,%.1f"):format(r.t, r.h, r.a, r.w, r.n, r.T, pg))
+end }
+print(("summary: height %.1f -> %.1f mm (%.0f%%); area peak %+.1f%% at %.2f s, end %+.1f%%; base width %.1f -> %.1f mm")
+  :format(raw.h * 1e3, last.h * 1e3, 100 * last.h / raw.h, 100 * (peak.a / raw.a - 1), peak.t,
+    100 * (last.a / raw.a - 1), raw.w * 1e3, last.w * 1e3))
