@@ -39,6 +39,7 @@
 #include "params.h"
 #include "particles.h"
 #include "plugins.h"
+#include "water.h"
 
 /* Plugins may declare at most this many parameters (per-particle resolution
  * uses a stack buffer of this size). */
@@ -83,13 +84,18 @@ hearth_status material_table_reserve(material_table *t, hearth_error *err);
 /// -1 with err set and ms freed.
 int material_table_push(material_table *t, material_slot *ms, hearth_error *err);
 
-/// Check a temperature curve for parameter `param` of material mat (n
-/// points, T strictly increasing, values in the parameter's range, no curve
-/// yet); *k gets the parameter's schema index.
-hearth_status material_curve_check(const material_table *t, int mat, const char *param, int n, const double *T,
+/// Check a curve of kind `of` (CURVE_OF_*) for parameter `param` of material
+/// mat (n points, abscissae strictly increasing, no curve of that kind yet).
+/// A temperature curve's values lie in the parameter's range; a moisture
+/// curve's abscissae are >= 0 and its factors > 0; with both kinds on one
+/// parameter every product of their extremes (or of the parameter's value
+/// and the factors) lies in the range. *k gets the parameter's schema index.
+hearth_status material_curve_check(const material_table *t, int mat, const char *param, int of, int n, const double *T,
                                    const double *v, int *k, hearth_error *err);
-/// Add the checked curve (copies T and v); a failure leaves the slot as it was.
-hearth_status material_curve_add(material_table *t, int mat, int k, int n, const double *T, const double *v,
+/// Add the checked curve (copies T and v), temperature curves ahead of
+/// moisture ones (material_params multiplies after it sets); a failure leaves
+/// the slot as it was.
+hearth_status material_curve_add(material_table *t, int mat, int k, int of, int n, const double *T, const double *v,
                                  int irreversible, hearth_error *err);
 
 /// The k parameter sets of a mixture whose first constituent is material id
@@ -106,10 +112,31 @@ void material_mixture_set(material_table *t, int id, int k, double *mp);
 
 /// A mixture's blend of its constituents at particle i's dynamic ratios (PC_MIXD), into out (material.c).
 void material_blend_at(const material_slot *ms, const particles *ps, int i, double *out);
+/// Particle i's moisture ratio X/X_0 = m^w / (s_0 rho_0^w V_0), its water over
+/// the water it was given (curves.h): 1 when the scene has no water or the
+/// body was given none (water.c's floor), so a moisture curve then leaves
+/// the parameter as the raw dough's.
+static inline double material_moisture_ratio(const material_slot *ms, const particles *ps, int i) {
+    if (!(ps->enabled & (1u << PC_WATER))) return 1.0;
+    const double s0 = pcold(ps, PC_SAT0)[i];
+    if (!(s0 > 2 * WATER_SATURATION_FLOOR)) return 1.0;
+    return pcold(ps, PC_WATER)[i] / (s0 * ms->core[CP_WATER_DENSITY] * pcold(ps, PC_VOL0)[i]);
+}
+
+/// A moisture curve's factor at particle i; an irreversible one at the lowest
+/// ratio the particle has reached (PC_DRIED holds 1 - that ratio, 0 when it
+/// never dried), so a crust stays crisp when water diffuses back into it.
+static inline double material_moisture_factor(const material_slot *ms, const curve *c, const particles *ps, int i) {
+    double r = material_moisture_ratio(ms, ps, i);
+    if (c->irreversible && (ps->enabled & (1u << PC_DRIED))) r = fmin(r, 1.0 - pcold(ps, PC_DRIED)[i]);
+    return curve_eval(c, r);
+}
+
 /// Particle i's parameters (schema order): the slot's own when it has no
 /// curve and is no mixture, otherwise a mixture's blend at the particle's
 /// dynamic ratios (PC_MIXD) and the curves at its temperature (PC_TEMPERATURE,
-/// or PC_TEMP_MAX for an irreversible curve), written into scratch
+/// or PC_TEMP_MAX for an irreversible curve), then times the moisture curves'
+/// factors at its moisture ratio, written into scratch
 /// (MATERIAL_MAX_PARAMS doubles). Calls no plugin but blend. Inline: P2G
 /// resolves every particle's parameters every step, and a call there cost
 /// instructions (the blend, rare and long, stays out of line).
@@ -122,7 +149,8 @@ static inline const double *material_params(const material_table *t, const parti
     const double *T = pcold(ps, PC_TEMPERATURE), *Tmax = pcold(ps, PC_TEMP_MAX);
     for (int k = 0; k < ms->ncurves; k++) {
         const curve *c = &ms->curves[k];
-        scratch[c->param] = curve_eval(c, c->irreversible ? Tmax[i] : T[i]);
+        if (c->of == CURVE_OF_TEMPERATURE) scratch[c->param] = curve_eval(c, c->irreversible ? Tmax[i] : T[i]);
+        else scratch[c->param] *= material_moisture_factor(ms, c, ps, i);
     }
     return scratch;
 }

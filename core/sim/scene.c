@@ -363,6 +363,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         if (ps->enabled & (1u << PC_BODY)) pcoli(ps, PC_BODY)[j] = -1;
         if (ps->enabled & (1u << PC_FLAGS)) pcoli(ps, PC_FLAGS)[j] = 0;
         if (ps->enabled & (1u << PC_GAS)) pcold(ps, PC_GAS)[j] = 0;
+        if (ps->enabled & (1u << PC_DRIED)) pcold(ps, PC_DRIED)[j] = 0; /* never dried */
         if (ps->state_stride) {
             double *st = pcold(ps, PC_STATE) + (size_t)j * ps->state_stride;
             memset(st, 0, sizeof(double) * (size_t)ps->state_stride);
@@ -606,6 +607,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             if (water_active(s)) water_step_stands(&s->water);
             /* the step stands: the crust's colour integrates its end temperature (a rolled back step never browns) */
             if (s->def.browning) browning_step(s, dt); /* hearth_scene_create made its columns */
+            if (water_active(s) && (s->ps.enabled & (1u << PC_DRIED))) water_dried_step(s); /* a crust stays dry */
             if (thermal_active(s)) thermal_step_stands(&s->heat);
             if (s->dt_scale < 1) s->dt_scale = fmin(1.0, s->dt_scale * 1.25);
             return HEARTH_OK;
