@@ -753,6 +753,24 @@ lua_browning_example)
     [ -n "$vtu" ] && grep -aq 'Name="browning"' "$vtu" || fail "the VTU has no browning array"
     [ -n "$(find . -name loaf_browning.png | head -1)" ] || fail "no browning PNG"
     ;;
+crust_surface_dries_first)
+    # issue #18: a loaf's top 4 mm loses water faster than its centre all through a 20 minute bake, at dx 4 and 2 mm
+    for dx in 0.004 0.002; do
+        run crust_dries.lua --set dx=$dx
+        expect_rc 0 "the crust dries first at dx $dx"
+        cat out.txt
+        has out.txt "crust_dries ok" "the top below X/X0 0.7 with the centre above 0.97 at dx $dx"
+    done
+    ;;
+crust_dry_is_stiffer)
+    # issue #18: a block dried under a moisture curve (E x 10 dry) sags as a block of 10 E, the wet one as E, at dx 4 and 2 mm
+    for dx in 0.004 0.002; do
+        run crust_stiffer.lua --set dx=$dx
+        expect_rc 0 "the dried block resists as 10 E at dx $dx"
+        cat out.txt
+        has out.txt "crust_stiffer ok" "sags within 1% of the references at dx $dx"
+    done
+    ;;
 lua_body_force_varies_in_space)
     # s:body_force(function(x, y, z, t) ...): a column under a force growing with height against its closed form
     run body_force_field.lua

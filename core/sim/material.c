@@ -87,6 +87,7 @@ int material_table_push(material_table *t, material_slot *ms, hearth_error *err)
             return -1;
         }
     }
+    ms->wave_per_point = m->state_size > 0 || ms->ncurves > 0;
     t->slot[t->n] = *ms;
     return t->n++;
 }
@@ -173,6 +174,9 @@ hearth_status material_curve_add(material_table *t, int mat, int k, int of, int 
     memcpy(vv, v, sizeof(double) * (size_t)n);
     ms->curves[at] = (curve){.param = k, .n = n, .T = tt, .v = vv, .irreversible = irreversible != 0, .of = of};
     ms->ncurves++;
+    /* the cached wave speed is the base parameters': a stiffer curve point (E x 100 in a dried crust) would
+     * outrun the step limit (seen: an elastic block inverted within a second of drying) */
+    ms->wave_per_point = 1;
     return HEARTH_OK;
 }
 

@@ -52,7 +52,8 @@ typedef struct material_slot {
     const hearth_material *m;
     double *params;     /* resolved, schema order */
     int density_index;  /* schema index of "density" */
-    double wave_speed;  /* cached when the plugin is stateless (state_size 0) */
+    double wave_speed;  /* cached when the plugin is stateless (state_size 0) and no curve moves its parameters */
+    int wave_per_point; /* ask the plugin per particle: it has state, or curves change its parameters (material.c) */
     curve *curves;      /* parameters that follow temperature */
     int ncurves;
     double core[CP_COUNT]; /* field properties (params.h CP_*) */

@@ -385,9 +385,10 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
     double pscratch[SCENE_MAX_PARAMS];
     for (int j = ps->n; j < ps->n + n; j++) {
         double c = ms->wave_speed;
-        if (ms->m->state_size > 0) {
+        if (ms->wave_per_point) {
             plugin_call_enter(ms->m, "wave_speed");
-            c = ms->m->wave_speed(material_params(&s->mats, &s->ps, material, j, pscratch), pcold(ps, PC_STATE) + (size_t)j * ps->state_stride);
+            c = ms->m->wave_speed(material_params(&s->mats, &s->ps, material, j, pscratch),
+                                  ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)j * ps->state_stride : NULL);
         }
         /* NaN or inf here would stall the step size; the first step's guard names it (mpm.c) */
         if (c > s->c_max && c <= DBL_MAX) s->c_max = c;
@@ -565,9 +566,10 @@ void scene_refresh_wave_speed(hearth_scene *s) {
         const int m = pcoli(ps, PC_MAT)[i];
         const material_slot *ms = &s->mats.slot[m];
         double ci = ms->wave_speed;
-        if (ms->m->state_size > 0) {
+        if (ms->wave_per_point) {
             plugin_call_enter(ms->m, "wave_speed");
-            ci = ms->m->wave_speed(material_params(&s->mats, &s->ps, m, i, pscratch), pcold(ps, PC_STATE) + (size_t)i * ps->state_stride);
+            ci = ms->m->wave_speed(material_params(&s->mats, &s->ps, m, i, pscratch),
+                                   ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
             plugin_call_leave();
         }
         if (ci > c && ci <= DBL_MAX) c = ci;
