@@ -65,7 +65,7 @@ TEST(crust_moisture_curve_factor) {
     hearth_error err;
     const double x[] = {0.1, 0.5, 1.0}, f[] = {50, 5, 1};
     CHECK(hearth_scene_material_curve_of(s, m, "E", HEARTH_CURVE_MOISTURE, 3, x, f, 1, &err) == HEARTH_OK);
-    CHECK(wet_block(s, m, 0.4) > 0 || s->ps.n > 0);
+    CHECK(wet_block(s, m, 0.4) >= 0 && s->ps.n > 1);
     CHECK((s->ps.enabled & (1u << PC_DRIED)) && (s->ps.enabled & (1u << PC_WATER)));
     const int kE = params_index(s->mats.slot[m].m, "E");
     /* raw dough: x1 */
@@ -180,4 +180,31 @@ TEST(crust_moisture_checkpoint_roundtrip) {
     hearth_scene_destroy(s);
 }
 
-TEST_MAIN(T(crust_moisture_curve_factor), T(crust_moisture_curve_refusals), T(crust_moisture_checkpoint_roundtrip))
+/* A stateless plugin (elastic) whose E a curve raises is asked its wave speed
+ * per particle: the step limit follows the dried E x 100, not the cached base
+ * value (before: c_max stayed at the base, the stiffened block outran its
+ * step and inverted). */
+TEST(crust_curve_wave_speed_per_particle) {
+    int m;
+    hearth_scene *s = wet_scene(&m);
+    CHECK(s != NULL && m >= 0);
+    hearth_error err;
+    const double x[] = {0.1, 1.0}, f[] = {100, 1};
+    CHECK(hearth_scene_material_curve_of(s, m, "E", HEARTH_CURVE_MOISTURE, 2, x, f, 0, &err) == HEARTH_OK);
+    CHECK(wet_block(s, m, 0.4) >= 0);
+    for (int i = 0; i < s->ps.n; i++) set_ratio(s, i, 0.05);
+    CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+    const material_slot *ms = &s->mats.slot[m];
+    double p[MATERIAL_MAX_PARAMS];
+    memcpy(p, ms->params, sizeof(double) * (size_t)ms->m->nparams);
+    p[params_index(ms->m, "E")] *= 100;
+    const double dried = ms->m->wave_speed(p, NULL);
+    printf("  largest wave speed %.6g m/s; the plugin's at E x 100 %.6g, at E %.6g (the cached value)\n", s->c_max, dried,
+           ms->wave_speed);
+    CHECK(ms->wave_per_point);
+    CHECK_NEAR(s->c_max, dried, 1e-9 * dried);
+    hearth_scene_destroy(s);
+}
+
+TEST_MAIN(T(crust_moisture_curve_factor), T(crust_moisture_curve_refusals), T(crust_moisture_checkpoint_roundtrip),
+          T(crust_curve_wave_speed_per_particle))
