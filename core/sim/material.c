@@ -150,6 +150,30 @@ hearth_status material_curve_check(const material_table *t, int mat, const char 
     return HEARTH_OK;
 }
 
+double material_moisture_factor(const material_slot *ms, const curve *c, const particles *ps, int i) {
+    double r = material_moisture_ratio(ms, ps, i);
+    if (c->irreversible && (ps->enabled & (1u << PC_DRIED))) r = fmin(r, 1.0 - pcold(ps, PC_DRIED)[i]);
+    return curve_eval(c, r);
+}
+
+const double *material_params_resolve(const material_slot *ms, const particles *ps, int i, double *scratch) {
+    if (ms->mix_k) material_blend_at(ms, ps, i, scratch);
+    else memcpy(scratch, ms->params, sizeof(double) * (size_t)ms->m->nparams);
+    const double *T = pcold(ps, PC_TEMPERATURE), *Tmax = pcold(ps, PC_TEMP_MAX);
+    int k = 0;
+    for (; k < ms->ncurves && ms->curves[k].of == CURVE_OF_TEMPERATURE; k++) {
+        const curve *c = &ms->curves[k];
+        scratch[c->param] = curve_eval(c, c->irreversible ? Tmax[i] : T[i]);
+    }
+    /* the moisture factors, after every temperature curve (material_curve_add orders them) */
+    if (k < ms->ncurves) material_moisture_apply(ms, ps, i, k, scratch);
+    return scratch;
+}
+
+void material_moisture_apply(const material_slot *ms, const particles *ps, int i, int k, double *scratch) {
+    for (; k < ms->ncurves; k++) scratch[ms->curves[k].param] *= material_moisture_factor(ms, &ms->curves[k], ps, i);
+}
+
 hearth_status material_curve_add(material_table *t, int mat, int k, int of, int n, const double *T, const double *v,
                                  int irreversible, hearth_error *err) {
     material_slot *ms = &t->slot[mat];

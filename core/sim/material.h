@@ -52,8 +52,9 @@ typedef struct material_slot {
     const hearth_material *m;
     double *params;     /* resolved, schema order */
     int density_index;  /* schema index of "density" */
+    int wave_per_point; /* ask the plugin per particle: it has state, or curves change its parameters (material.c);
+                         * here, in density_index's padding, the slot keeps its size and layout (P2G indexes it) */
     double wave_speed;  /* cached when the plugin is stateless (state_size 0) and no curve moves its parameters */
-    int wave_per_point; /* ask the plugin per particle: it has state, or curves change its parameters (material.c) */
     curve *curves;      /* parameters that follow temperature */
     int ncurves;
     double core[CP_COUNT]; /* field properties (params.h CP_*) */
@@ -127,11 +128,14 @@ static inline double material_moisture_ratio(const material_slot *ms, const part
 /// A moisture curve's factor at particle i; an irreversible one at the lowest
 /// ratio the particle has reached (PC_DRIED holds 1 - that ratio, 0 when it
 /// never dried), so a crust stays crisp when water diffuses back into it.
-static inline double material_moisture_factor(const material_slot *ms, const curve *c, const particles *ps, int i) {
-    double r = material_moisture_ratio(ms, ps, i);
-    if (c->irreversible && (ps->enabled & (1u << PC_DRIED))) r = fmin(r, 1.0 - pcold(ps, PC_DRIED)[i]);
-    return curve_eval(c, r);
-}
+/// Out of line (material.c): inlined, its body grew P2G's particle loop by 1 %
+/// of instructions in `hearth bench --dim 3` for scenes that have no moisture curve.
+double material_moisture_factor(const material_slot *ms, const curve *c, const particles *ps, int i);
+/// Multiply scratch by the factors of ms's curves from index k on (all moisture curves).
+void material_moisture_apply(const material_slot *ms, const particles *ps, int i, int k, double *scratch);
+
+/// The out-of-line half of material_params: a mixture's blend and the curves, into scratch.
+const double *material_params_resolve(const material_slot *ms, const particles *ps, int i, double *scratch);
 
 /// Particle i's parameters (schema order): the slot's own when it has no
 /// curve and is no mixture, otherwise a mixture's blend at the particle's
@@ -144,16 +148,8 @@ static inline double material_moisture_factor(const material_slot *ms, const cur
 static inline const double *material_params(const material_table *t, const particles *ps, int mat, int i,
                                             double *scratch) {
     const material_slot *ms = &t->slot[mat];
-    if (ms->mix_k) material_blend_at(ms, ps, i, scratch);
-    else if (ms->ncurves == 0) return ms->params;
-    else memcpy(scratch, ms->params, sizeof(double) * (size_t)ms->m->nparams);
-    const double *T = pcold(ps, PC_TEMPERATURE), *Tmax = pcold(ps, PC_TEMP_MAX);
-    for (int k = 0; k < ms->ncurves; k++) {
-        const curve *c = &ms->curves[k];
-        if (c->of == CURVE_OF_TEMPERATURE) scratch[c->param] = curve_eval(c, c->irreversible ? Tmax[i] : T[i]);
-        else scratch[c->param] *= material_moisture_factor(ms, c, ps, i);
-    }
-    return scratch;
+    if (__builtin_expect(!ms->mix_k && ms->ncurves == 0, 1)) return ms->params;
+    return material_params_resolve(ms, ps, i, scratch);
 }
 
 #define MATERIAL_INLINE static inline __attribute__((always_inline))
