@@ -169,7 +169,7 @@ static int l_material_check(lua_State *L) {
     return 1;
 }
 
-/* s:_curve(mat, param, {T...}, {v...}, irreversible) */
+/* s:_curve(mat, param, {x...}, {v...}, irreversible, moisture): x in degrees C, or moisture ratios (then v are factors) */
 static int l_curve(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     int mat = (int)luaL_checkinteger(L, 2);
@@ -185,7 +185,8 @@ static int l_curve(lua_State *L) {
         lua_pop(L, 2);
     }
     hearth_error err;
-    if (hearth_scene_material_curve(u->s, mat, param, n, T, v, lua_toboolean(L, 6), &err)) return hl_raise(L, &err);
+    const hearth_curve_of of = lua_toboolean(L, 7) ? HEARTH_CURVE_MOISTURE : HEARTH_CURVE_TEMPERATURE;
+    if (hearth_scene_material_curve_of(u->s, mat, param, of, n, T, v, lua_toboolean(L, 6), &err)) return hl_raise(L, &err);
     return 0;
 }
 

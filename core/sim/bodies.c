@@ -223,9 +223,20 @@ double hearth_scene_collider_distance(const hearth_scene *s, const double x[3]) 
 
 hearth_status hearth_scene_material_curve(hearth_scene *s, int mat, const char *param, int n, const double *T,
                                           const double *v, int irreversible, hearth_error *err) {
+    return hearth_scene_material_curve_of(s, mat, param, HEARTH_CURVE_TEMPERATURE, n, T, v, irreversible, err);
+}
+
+_Static_assert((int)HEARTH_CURVE_TEMPERATURE == (int)CURVE_OF_TEMPERATURE && (int)HEARTH_CURVE_MOISTURE == (int)CURVE_OF_MOISTURE,
+               "the public curve kinds are curves.h's");
+
+hearth_status hearth_scene_material_curve_of(hearth_scene *s, int mat, const char *param, hearth_curve_of of, int n,
+                                             const double *x, const double *v, int irreversible, hearth_error *err) {
     int k;
-    hearth_status st = material_curve_check(&s->mats, mat, param, n, T, v, &k, err);
-    if (!st) st = scene_enable_temperature(s, err);
-    if (!st) st = material_curve_add(&s->mats, mat, k, n, T, v, irreversible, err);
+    hearth_status st = material_curve_check(&s->mats, mat, param, (int)of, n, x, v, &k, err);
+    /* a temperature curve needs the heat field; an irreversible moisture curve its memory of the driest state
+     * (zeroed: never dried). A moisture curve does not turn water on: without it the ratio is 1. */
+    if (!st && of == HEARTH_CURVE_TEMPERATURE) st = scene_enable_temperature(s, err);
+    if (!st && of == HEARTH_CURVE_MOISTURE && irreversible) st = particles_enable(&s->ps, PC_DRIED, err);
+    if (!st) st = material_curve_add(&s->mats, mat, k, (int)of, n, x, v, irreversible, err);
     return st;
 }

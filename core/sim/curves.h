@@ -1,16 +1,32 @@
 /* curves.h: parameters that are functions of temperature (piecewise linear),
- * evaluated by the core so plugins see plain numbers. */
+ * evaluated by the core so plugins see plain numbers; and factors over the
+ * moisture ratio that multiply them (a crust stiffens as it dries, #18).
+ *
+ * A moisture curve's abscissa is X/X_0, the particle's water mass over its
+ * initial water mass (the drying kinetics' moisture ratio, dry basis: the
+ * dry solids do not change), and its values are dimensionless factors on
+ * the parameter (its value or its temperature curve's). A factor rather than
+ * a second value: the dough's tau_y already follows temperature (Ding et al.
+ * Fig. 8), and a dried crust is that dough made stiffer, so the two
+ * multiply. Rejected: a curve over the saturation s itself, which ties a
+ * preset to the saturation a scene gives its dough (s = 0.22 for a 45 %
+ * water dough of density 500, 0.47 unproofed), while X/X_0 is 1 for any raw
+ * dough. */
 #ifndef HEARTH_CURVES_H
 #define HEARTH_CURVES_H
+
+/* What a curve is a function of (curve.of). */
+enum { CURVE_OF_TEMPERATURE = 0, CURVE_OF_MOISTURE = 1 };
 
 typedef struct curve {
     int param;        /* schema index */
     int n;            /* points */
-    double *T, *v;    /* T ascending (degrees C) */
-    int irreversible; /* evaluate at the highest temperature reached */
+    double *T, *v;    /* T ascending: degrees C, or X/X_0 for a moisture curve (then v are factors) */
+    int irreversible; /* at the highest temperature reached; a moisture curve at the driest state reached */
+    int of;           /* CURVE_OF_*; a material's temperature curves come before its moisture curves */
 } curve;
 
-/// Value at temperature T: linear between points, constant beyond the ends.
+/// Value at temperature (or moisture ratio) T: linear between points, constant beyond the ends.
 /// Inline: P2G evaluates each curve of a material for every particle, every step.
 static inline double curve_eval(const curve *c, double T) {
     if (!(T > c->T[0])) return c->v[0]; /* NaN temperature reads as the first point */

@@ -87,36 +87,94 @@ int material_table_push(material_table *t, material_slot *ms, hearth_error *err)
             return -1;
         }
     }
+    ms->wave_per_point = m->state_size > 0 || ms->ncurves > 0;
     t->slot[t->n] = *ms;
     return t->n++;
 }
 
-/* ---- temperature curves ---------------------------------------------- */
+/* ---- temperature and moisture curves --------------------------------- */
 
-hearth_status material_curve_check(const material_table *t, int mat, const char *param, int n, const double *T,
+/* The extremes [lo, hi] of a curve's values. */
+static void curve_range(const double *v, int n, double *lo, double *hi) {
+    *lo = *hi = v[0];
+    for (int i = 1; i < n; i++) {
+        if (v[i] < *lo) *lo = v[i];
+        if (v[i] > *hi) *hi = v[i];
+    }
+}
+
+hearth_status material_curve_check(const material_table *t, int mat, const char *param, int of, int n, const double *T,
                                    const double *v, int *kout, hearth_error *err) {
     if (mat < 0 || mat >= t->n) return err_set(err, HEARTH_ERR_PARAM, "curve: material %d does not exist", mat);
+    if (of != CURVE_OF_TEMPERATURE && of != CURVE_OF_MOISTURE)
+        return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': kind %d; valid: temperature (0) or moisture (1)", param, of);
     const material_slot *ms = &t->slot[mat];
     const int k = params_index(ms->m, param);
     if (k < 0) return err_set(err, HEARTH_ERR_PARAM, "curve: material '%s' has no parameter '%s'", ms->m->name, param);
     const hearth_param *p = &ms->m->params[k];
     if (n < 1 || n > 10000) return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': %d points; valid range [1, 10000]", param, n);
+    const int moist = of == CURVE_OF_MOISTURE;
     for (int i = 0; i < n; i++) {
-        if (!isfinite(T[i]) || (i > 0 && !(T[i] > T[i - 1])))
-            return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': temperatures must be finite and strictly increasing (point %d: %g)",
-                           param, i + 1, T[i]);
-        if (!(v[i] >= p->min && v[i] <= p->max))
+        if (!isfinite(T[i]) || (i > 0 && !(T[i] > T[i - 1])) || (moist && T[i] < 0))
+            return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': %s must be finite%s and strictly increasing (point %d: %g)",
+                           param, moist ? "moisture ratios X/X0" : "temperatures", moist ? ", >= 0" : "", i + 1, T[i]);
+        if (moist ? !(v[i] > 0 && v[i] <= 1e9) : !(v[i] >= p->min && v[i] <= p->max)) {
+            if (moist)
+                return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': factor %g at moisture ratio %g is outside (0, 1e9]",
+                               param, v[i], T[i]);
             return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': value %g at %g degrees C is outside the range [%g, %g] %s",
                            param, v[i], T[i], p->min, p->max, p->unit);
+        }
     }
-    for (int i = 0; i < ms->ncurves; i++)
-        if (ms->curves[i].param == k)
-            return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': the parameter already has a curve", param);
+    /* the parameter's values before and the factors after: base, or its temperature curve's extremes */
+    double vlo = ms->params[k], vhi = vlo, flo = 1, fhi = 1;
+    if (moist) curve_range(v, n, &flo, &fhi);
+    else curve_range(v, n, &vlo, &vhi);
+    for (int i = 0; i < ms->ncurves; i++) {
+        const curve *c = &ms->curves[i];
+        if (c->param != k) continue;
+        if (c->of == of)
+            return err_set(err, HEARTH_ERR_PARAM, "curve for '%s': the parameter already has a %s curve", param,
+                           moist ? "moisture" : "temperature");
+        if (c->of == CURVE_OF_MOISTURE) curve_range(c->v, c->n, &flo, &fhi);
+        else curve_range(c->v, c->n, &vlo, &vhi);
+    }
+    /* factors > 0: the products' extremes are among the corners */
+    const double corner[4] = {vlo * flo, vlo * fhi, vhi * flo, vhi * fhi};
+    for (int i = 0; i < 4; i++)
+        if (!(corner[i] >= p->min && corner[i] <= p->max))
+            return err_set(err, HEARTH_ERR_PARAM,
+                           "curve for '%s': values %g..%g times moisture factors %g..%g reach %g, outside the range [%g, %g] %s",
+                           param, vlo, vhi, flo, fhi, corner[i], p->min, p->max, p->unit);
     *kout = k;
     return HEARTH_OK;
 }
 
-hearth_status material_curve_add(material_table *t, int mat, int k, int n, const double *T, const double *v,
+double material_moisture_factor(const material_slot *ms, const curve *c, const particles *ps, int i) {
+    double r = material_moisture_ratio(ms, ps, i);
+    if (c->irreversible && (ps->enabled & (1u << PC_DRIED))) r = fmin(r, 1.0 - pcold(ps, PC_DRIED)[i]);
+    return curve_eval(c, r);
+}
+
+const double *material_params_resolve(const material_slot *ms, const particles *ps, int i, double *scratch) {
+    if (ms->mix_k) material_blend_at(ms, ps, i, scratch);
+    else memcpy(scratch, ms->params, sizeof(double) * (size_t)ms->m->nparams);
+    const double *T = pcold(ps, PC_TEMPERATURE), *Tmax = pcold(ps, PC_TEMP_MAX);
+    int k = 0;
+    for (; k < ms->ncurves && ms->curves[k].of == CURVE_OF_TEMPERATURE; k++) {
+        const curve *c = &ms->curves[k];
+        scratch[c->param] = curve_eval(c, c->irreversible ? Tmax[i] : T[i]);
+    }
+    /* the moisture factors, after every temperature curve (material_curve_add orders them) */
+    if (k < ms->ncurves) material_moisture_apply(ms, ps, i, k, scratch);
+    return scratch;
+}
+
+void material_moisture_apply(const material_slot *ms, const particles *ps, int i, int k, double *scratch) {
+    for (; k < ms->ncurves; k++) scratch[ms->curves[k].param] *= material_moisture_factor(ms, &ms->curves[k], ps, i);
+}
+
+hearth_status material_curve_add(material_table *t, int mat, int k, int of, int n, const double *T, const double *v,
                                  int irreversible, hearth_error *err) {
     material_slot *ms = &t->slot[mat];
     /* fresh arrays first, so a failure leaves the material as it was */
@@ -128,12 +186,21 @@ hearth_status material_curve_add(material_table *t, int mat, int k, int n, const
         mem_free(vv, sizeof(double) * (size_t)n);
         return err_set(err, HEARTH_ERR_NOMEM, "curve: out of memory");
     }
-    if (ms->ncurves) memcpy(cs, ms->curves, sizeof(curve) * (size_t)ms->ncurves);
+    /* temperature curves first: material_params sets a parameter, then multiplies its moisture factor */
+    int at = ms->ncurves;
+    if (of == CURVE_OF_TEMPERATURE)
+        while (at > 0 && ms->curves[at - 1].of == CURVE_OF_MOISTURE) at--;
+    if (at) memcpy(cs, ms->curves, sizeof(curve) * (size_t)at);
+    if (ms->ncurves > at) memcpy(cs + at + 1, ms->curves + at, sizeof(curve) * (size_t)(ms->ncurves - at));
     mem_free(ms->curves, sizeof(curve) * (size_t)ms->ncurves);
     ms->curves = cs;
     memcpy(tt, T, sizeof(double) * (size_t)n);
     memcpy(vv, v, sizeof(double) * (size_t)n);
-    ms->curves[ms->ncurves++] = (curve){.param = k, .n = n, .T = tt, .v = vv, .irreversible = irreversible != 0};
+    ms->curves[at] = (curve){.param = k, .n = n, .T = tt, .v = vv, .irreversible = irreversible != 0, .of = of};
+    ms->ncurves++;
+    /* the cached wave speed is the base parameters': a stiffer curve point (E x 100 in a dried crust) would
+     * outrun the step limit (seen: an elastic block inverted within a second of drying) */
+    ms->wave_per_point = 1;
     return HEARTH_OK;
 }
 

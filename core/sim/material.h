@@ -39,6 +39,7 @@
 #include "params.h"
 #include "particles.h"
 #include "plugins.h"
+#include "water.h"
 
 /* Plugins may declare at most this many parameters (per-particle resolution
  * uses a stack buffer of this size). */
@@ -51,7 +52,9 @@ typedef struct material_slot {
     const hearth_material *m;
     double *params;     /* resolved, schema order */
     int density_index;  /* schema index of "density" */
-    double wave_speed;  /* cached when the plugin is stateless (state_size 0) */
+    int wave_per_point; /* ask the plugin per particle: it has state, or curves change its parameters (material.c);
+                         * here, in density_index's padding, the slot keeps its size and layout (P2G indexes it) */
+    double wave_speed;  /* cached when the plugin is stateless (state_size 0) and no curve moves its parameters */
     curve *curves;      /* parameters that follow temperature */
     int ncurves;
     double core[CP_COUNT]; /* field properties (params.h CP_*) */
@@ -83,13 +86,18 @@ hearth_status material_table_reserve(material_table *t, hearth_error *err);
 /// -1 with err set and ms freed.
 int material_table_push(material_table *t, material_slot *ms, hearth_error *err);
 
-/// Check a temperature curve for parameter `param` of material mat (n
-/// points, T strictly increasing, values in the parameter's range, no curve
-/// yet); *k gets the parameter's schema index.
-hearth_status material_curve_check(const material_table *t, int mat, const char *param, int n, const double *T,
+/// Check a curve of kind `of` (CURVE_OF_*) for parameter `param` of material
+/// mat (n points, abscissae strictly increasing, no curve of that kind yet).
+/// A temperature curve's values lie in the parameter's range; a moisture
+/// curve's abscissae are >= 0 and its factors > 0; with both kinds on one
+/// parameter every product of their extremes (or of the parameter's value
+/// and the factors) lies in the range. *k gets the parameter's schema index.
+hearth_status material_curve_check(const material_table *t, int mat, const char *param, int of, int n, const double *T,
                                    const double *v, int *k, hearth_error *err);
-/// Add the checked curve (copies T and v); a failure leaves the slot as it was.
-hearth_status material_curve_add(material_table *t, int mat, int k, int n, const double *T, const double *v,
+/// Add the checked curve (copies T and v), temperature curves ahead of
+/// moisture ones (material_params multiplies after it sets); a failure leaves
+/// the slot as it was.
+hearth_status material_curve_add(material_table *t, int mat, int k, int of, int n, const double *T, const double *v,
                                  int irreversible, hearth_error *err);
 
 /// The k parameter sets of a mixture whose first constituent is material id
@@ -106,25 +114,42 @@ void material_mixture_set(material_table *t, int id, int k, double *mp);
 
 /// A mixture's blend of its constituents at particle i's dynamic ratios (PC_MIXD), into out (material.c).
 void material_blend_at(const material_slot *ms, const particles *ps, int i, double *out);
+/// Particle i's moisture ratio X/X_0 = m^w / (s_0 rho_0^w V_0), its water over
+/// the water it was given (curves.h): 1 when the scene has no water or the
+/// body was given none (water.c's floor), so a moisture curve then leaves
+/// the parameter as the raw dough's.
+static inline double material_moisture_ratio(const material_slot *ms, const particles *ps, int i) {
+    if (!(ps->enabled & (1u << PC_WATER))) return 1.0;
+    const double s0 = pcold(ps, PC_SAT0)[i];
+    if (!(s0 > 2 * WATER_SATURATION_FLOOR)) return 1.0;
+    return pcold(ps, PC_WATER)[i] / (s0 * ms->core[CP_WATER_DENSITY] * pcold(ps, PC_VOL0)[i]);
+}
+
+/// A moisture curve's factor at particle i; an irreversible one at the lowest
+/// ratio the particle has reached (PC_DRIED holds 1 - that ratio, 0 when it
+/// never dried), so a crust stays crisp when water diffuses back into it.
+/// Out of line (material.c): inlined, its body grew P2G's particle loop by 1 %
+/// of instructions in `hearth bench --dim 3` for scenes that have no moisture curve.
+double material_moisture_factor(const material_slot *ms, const curve *c, const particles *ps, int i);
+/// Multiply scratch by the factors of ms's curves from index k on (all moisture curves).
+void material_moisture_apply(const material_slot *ms, const particles *ps, int i, int k, double *scratch);
+
+/// The out-of-line half of material_params: a mixture's blend and the curves, into scratch.
+const double *material_params_resolve(const material_slot *ms, const particles *ps, int i, double *scratch);
+
 /// Particle i's parameters (schema order): the slot's own when it has no
 /// curve and is no mixture, otherwise a mixture's blend at the particle's
 /// dynamic ratios (PC_MIXD) and the curves at its temperature (PC_TEMPERATURE,
-/// or PC_TEMP_MAX for an irreversible curve), written into scratch
+/// or PC_TEMP_MAX for an irreversible curve), then times the moisture curves'
+/// factors at its moisture ratio, written into scratch
 /// (MATERIAL_MAX_PARAMS doubles). Calls no plugin but blend. Inline: P2G
 /// resolves every particle's parameters every step, and a call there cost
 /// instructions (the blend, rare and long, stays out of line).
 static inline const double *material_params(const material_table *t, const particles *ps, int mat, int i,
                                             double *scratch) {
     const material_slot *ms = &t->slot[mat];
-    if (ms->mix_k) material_blend_at(ms, ps, i, scratch);
-    else if (ms->ncurves == 0) return ms->params;
-    else memcpy(scratch, ms->params, sizeof(double) * (size_t)ms->m->nparams);
-    const double *T = pcold(ps, PC_TEMPERATURE), *Tmax = pcold(ps, PC_TEMP_MAX);
-    for (int k = 0; k < ms->ncurves; k++) {
-        const curve *c = &ms->curves[k];
-        scratch[c->param] = curve_eval(c, c->irreversible ? Tmax[i] : T[i]);
-    }
-    return scratch;
+    if (__builtin_expect(!ms->mix_k && ms->ncurves == 0, 1)) return ms->params;
+    return material_params_resolve(ms, ps, i, scratch);
 }
 
 #define MATERIAL_INLINE static inline __attribute__((always_inline))

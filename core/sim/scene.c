@@ -375,6 +375,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         if (ps->enabled & (1u << PC_BODY)) pcoli(ps, PC_BODY)[j] = -1;
         if (ps->enabled & (1u << PC_FLAGS)) pcoli(ps, PC_FLAGS)[j] = 0;
         if (ps->enabled & (1u << PC_GAS)) pcold(ps, PC_GAS)[j] = 0;
+        if (ps->enabled & (1u << PC_DRIED)) pcold(ps, PC_DRIED)[j] = 0; /* never dried */
         if (ps->state_stride) {
             double *st = pcold(ps, PC_STATE) + (size_t)j * ps->state_stride;
             memset(st, 0, sizeof(double) * (size_t)ps->state_stride);
@@ -396,9 +397,10 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
     double pscratch[SCENE_MAX_PARAMS];
     for (int j = ps->n; j < ps->n + n; j++) {
         double c = ms->wave_speed;
-        if (ms->m->state_size > 0) {
+        if (ms->wave_per_point) {
             plugin_call_enter(ms->m, "wave_speed");
-            c = ms->m->wave_speed(material_params(&s->mats, &s->ps, material, j, pscratch), pcold(ps, PC_STATE) + (size_t)j * ps->state_stride);
+            c = ms->m->wave_speed(material_params(&s->mats, &s->ps, material, j, pscratch),
+                                  ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)j * ps->state_stride : NULL);
         }
         /* NaN or inf here would stall the step size; the first step's guard names it (mpm.c) */
         if (c > s->c_max && c <= DBL_MAX) s->c_max = c;
@@ -576,9 +578,10 @@ void scene_refresh_wave_speed(hearth_scene *s) {
         const int m = pcoli(ps, PC_MAT)[i];
         const material_slot *ms = &s->mats.slot[m];
         double ci = ms->wave_speed;
-        if (ms->m->state_size > 0) {
+        if (ms->wave_per_point) {
             plugin_call_enter(ms->m, "wave_speed");
-            ci = ms->m->wave_speed(material_params(&s->mats, &s->ps, m, i, pscratch), pcold(ps, PC_STATE) + (size_t)i * ps->state_stride);
+            ci = ms->m->wave_speed(material_params(&s->mats, &s->ps, m, i, pscratch),
+                                   ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
             plugin_call_leave();
         }
         if (ci > c && ci <= DBL_MAX) c = ci;
@@ -618,6 +621,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             if (water_active(s)) water_step_stands(&s->water);
             /* the step stands: the crust's colour integrates its end temperature (a rolled back step never browns) */
             if (s->def.browning) browning_step(s, dt); /* hearth_scene_create made its columns */
+            if (water_active(s) && (s->ps.enabled & (1u << PC_DRIED))) water_dried_step(s); /* a crust stays dry */
             if (thermal_active(s)) thermal_step_stands(&s->heat);
             if (s->dt_scale < 1) s->dt_scale = fmin(1.0, s->dt_scale * 1.25);
             return HEARTH_OK;

@@ -89,7 +89,30 @@
 --    capacities; a scene passes `latent_heat = oven.latent_heat`.
 --  * Table 2's dx and dt are the paper's 3D resolutions; the scenes pick
 --    their own (coarser) dx, and dt follows the CFL limit.
+--  * DRY (issue #18, not in Ding et al.): a crust is its dough dried past the
+--    glass transition. Roos (1995, Phase Transitions in Foods, ch. 5-6):
+--    water plasticises starch and gluten, and through the glass transition
+--    the modulus falls ~3 decades (glassy ~1e9 Pa, rubbery ~1e6 Pa); bread
+--    crust is glassy (crisp) below ~13-15 % water wet basis at room
+--    temperature (van Nieuwenhuijzen, Primo-Martin et al. 2008, J. Agric.
+--    Food Chem. 56, 6432: the crust's water content sets the transition), and
+--    a baked crust holds a few % water against the crumb's ~45 % (Vanin, Lucas
+--    & Trystram 2009, Trends Food Sci. Technol. 20, 333). E and tau_y get a
+--    factor over water content X (kg water / kg solids, dry basis): x100 at
+--    X = 0.05 (a baked crust, 5 % wb), x10 at X = 0.16 (14 % wb, Tg at room
+--    temperature), x1 at X = 0.41 (29 % wb, rubbery), log-linear between
+--    (two more points). 100, not Roos's 1000: E sets the wave speed, so the
+--    step shrinks as sqrt(E) (x10 steps, not x32) where a crust forms. The
+--    core takes the curve over the moisture ratio X/X_0 (h.curve{of =
+--    "moisture"}), X_0 the raw dough's: bread 0.82 (45 % wb), muffin batter
+--    0.67 (40 %), cookie dough 0.25 (20 %), typical recipe values; each
+--    factor is divided by its value at X_0, so a raw dough keeps Table 2's
+--    numbers, and a scene without water (X/X_0 = 1) is unchanged.
+--    Irreversible: a dried crust stays crisp when crumb water returns.
 local ETA_SCALE, GAS_SCALE = 4000, 1 / 600
+local DRY_X = { 0.05, 0.10, 0.16, 0.25, 0.41 }  -- water content, kg/kg dry basis
+local DRY_F = { 100, 37, 10, 4.6, 1 }           -- E and tau_y factor (Roos 1995's glass transition, capped at 100)
+local DRY_X0 = { bread = 0.82, muffin = 0.67, cookie = 0.25 } -- the raw dough's water content (dry basis)
 local THETA = { 5, 20, 35, 70 }            -- Fig. 8: fridge, room, fat melting, gelatinisation (degC)
 local TAU_SHAPE = { 1, 0.8, 0.3, 20 }      -- Fig. 8 left, relative to Table 2's value
 local ETA_SHAPE = { 1, 0.5, 0.1, 0.05 }    -- Fig. 8 right, relative to ETA_SCALE x Table 2's value
@@ -119,7 +142,7 @@ local paper = {
 -- per-good factors on top of the global ones (see the header)
 local TUNE = { bread = { tau = 10 }, muffin = { kappa = 0.005, tau = 10, gas = 2.5, max_porosity = 0.6 }, lava_cake = { gas = 0.1 } }
 
-local D = { paper = paper, TUNE = TUNE, ETA_SCALE = ETA_SCALE, GAS_SCALE = GAS_SCALE, THETA = THETA, TAU_SHAPE = TAU_SHAPE,
+local D = { paper = paper, TUNE = TUNE, DRY_X = DRY_X, DRY_F = DRY_F, DRY_X0 = DRY_X0, ETA_SCALE = ETA_SCALE, GAS_SCALE = GAS_SCALE, THETA = THETA, TAU_SHAPE = TAU_SHAPE,
   ETA_SHAPE = ETA_SHAPE }
 
 local function curve(base, shape)
@@ -144,9 +167,22 @@ function D.preset(name)
   -- eta carries the square of the tau_y factor (header, "Rise"): eta / tau_y^2 is the dough's viscosity
   local tau = tune.tau or 1
   local curves = { tau_y = curve(c.yield * tau, TAU_SHAPE), eta = curve(c.eta * ETA_SCALE * tau * tau, ETA_SHAPE) }
+  local dry -- factor points {X/X0, f(X)/f(X0)} for E and tau_y (DRY above)
+  if DRY_X0[name] then
+    local X0, f0 = DRY_X0[name], 1
+    for i = 2, #DRY_X do -- f at X0, log-linear as the points
+      if X0 <= DRY_X[i] then
+        f0 = DRY_F[i - 1] * (DRY_F[i] / DRY_F[i - 1]) ^ ((X0 - DRY_X[i - 1]) / (DRY_X[i] - DRY_X[i - 1])); break
+      end
+    end
+    local pts = { irreversible = true, of = "moisture" }
+    for i, X in ipairs(DRY_X) do if X < X0 then pts[#pts + 1] = { X / X0, DRY_F[i] / f0 } end end
+    if X0 <= DRY_X[#DRY_X] then pts[#pts + 1] = { 1, 1 } end -- a cookie dough is drier than the last point
+    dry = { E = pts, tau_y = pts }
+  end
   local oven = { temperature = c.ambient_theta, beta = c.ambient_beta, pan_temperature = c.conductive_theta,
     pan_beta = c.conductive_beta, dough_temperature = c.theta0, latent_heat = false }
-  return params, curves, oven
+  return params, curves, oven, dry
 end
 
 return D

@@ -136,32 +136,59 @@ end
 local curve_mt = { __name = "hearth.curve" }
 local material_mt = { __name = "hearth.material" }
 
---- A piecewise-linear function of temperature: h.curve{{T1, v1}, {T2, v2}, ..., irreversible = true}
+--- A piecewise-linear function of temperature: h.curve{{T1, v1}, {T2, v2}, ..., irreversible = true}.
+--- With of = "moisture" the points are {X/X0, factor}: a factor over the moisture ratio (the water a
+--- particle holds over the water it was given) that multiplies a parameter, written as a product:
+---   E = 2e4 * h.curve{{0.1, 30}, {0.5, 1}, of = "moisture", irreversible = true}
+---   tau_y = h.curve{{20, 100}, {70, 2000}} * h.curve{{0.1, 30}, {0.5, 1}, of = "moisture"}
 function h.curve(t)
   if type(t) ~= "table" or #t < 1 then error("h.curve: expected a table of {T, value} points", 2) end
-  check_keys(t, setmetatable({ irreversible = true }, { __index = function(_, k) return math.type(k) == "integer" end }),
+  check_keys(t, setmetatable({ irreversible = true, of = true }, { __index = function(_, k) return math.type(k) == "integer" end }),
     "h.curve")
-  local c = { irreversible = t.irreversible and true or false }
+  check_choice(t.of or "temperature", "h.curve: of", { "temperature", "moisture" })
+  local moist = t.of == "moisture"
+  local what = moist and "{moisture ratio, factor}" or "{temperature, value}"
+  local c = { irreversible = t.irreversible and true or false, moisture = moist }
   for i, p in ipairs(t) do
     if type(p) ~= "table" or type(p[1]) ~= "number" or type(p[2]) ~= "number" then
-      error(("h.curve: point %d must be {temperature, value}"):format(i), 2)
+      error(("h.curve: point %d must be %s"):format(i, what), 2)
     end
     if i > 1 and not (p[1] > t[i - 1][1]) then
-      error(("h.curve: temperatures must increase (point %d: %g after %g)"):format(i, p[1], t[i - 1][1]), 2)
+      error(("h.curve: %s must increase (point %d: %g after %g)"):format(moist and "moisture ratios" or "temperatures",
+        i, p[1], t[i - 1][1]), 2)
     end
     c[i] = { p[1], p[2] }
   end
   return setmetatable(c, curve_mt)
 end
 
+-- A parameter made of a base (a number or a temperature curve) times a moisture curve's factor;
+-- p.base and p.factor read them, and a curve base's points read through (p[1], p.irreversible).
+local product_mt = { __name = "hearth.curve_product" }
+product_mt.__index = function(p, k) local b = rawget(p, "base"); if type(b) == "table" then return b[k] end end
+curve_mt.__mul = function(a, b)
+  if getmetatable(a) == curve_mt and a.moisture then a, b = b, a end
+  if not (getmetatable(b) == curve_mt and b.moisture) then
+    error("h.curve: a product needs one moisture curve (h.curve{..., of = \"moisture\"})", 2)
+  end
+  if not (type(a) == "number" or (getmetatable(a) == curve_mt and not a.moisture)) then
+    error("h.curve: a moisture curve multiplies a number or a temperature curve", 2)
+  end
+  return setmetatable({ base = a, factor = b }, product_mt)
+end
+
 --- A material from a plugin, its parameters checked against the plugin's schema now.
 function h.material(plugin, params)
   if type(plugin) ~= "string" then error("h.material: the first argument is the plugin name, e.g. \"elastic\"", 2) end
   params = params or {}
-  local plain, curves = {}, {}
+  local plain, curves, factors = {}, {}, {}
   for k, v in pairs(params) do
     if type(k) ~= "string" then error("h.material: parameter names must be strings", 2) end
+    if getmetatable(v) == product_mt then v, factors[k] = v.base, v.factor end
     if type(v) == "number" then plain[k] = v
+    elseif getmetatable(v) == curve_mt and v.moisture then
+      error(("h.material: parameter '%s': a moisture curve is a factor; write %s = <value> * h.curve{..., of = \"moisture\"}")
+        :format(k, k), 2)
     elseif getmetatable(v) == curve_mt then curves[k] = v
     else error(("h.material: parameter '%s' must be a number or h.curve{...}, got %s"):format(k, type(v)), 2) end
   end
@@ -176,7 +203,9 @@ function h.material(plugin, params)
       if not ok then error(("%s (curve point %d, at %g degC)"):format(e, i, p[1]), 2) end
     end
   end
-  return setmetatable({ plugin = plugin, params = plain, curves = curves, mix = mix_info(params) }, material_mt)
+  -- a moisture factor's products are checked against the range when the scene registers it (the core's check)
+  return setmetatable({ plugin = plugin, params = plain, curves = curves, factors = factors, mix = mix_info(params) },
+    material_mt)
 end
 
 --- Write a text file (a CSV, a note) atomically; relative paths go under the output folder.
@@ -331,8 +360,10 @@ local function dough_lookup(what, data, pick)
     return pick(data.preset(name)) -- a fresh table each time, so a scene may change its copy
   end })
 end
-local function with_curves(params, curves)
+local function with_curves(params, curves, _, dry)
   for k, pts in pairs(curves) do params[k] = h.curve(pts) end
+  -- a dried crust stiffens (dough.lua's DRY): factors over the moisture ratio on E and tau_y
+  for k, pts in pairs(dry or {}) do params[k] = (params[k] or error("dough: no base for " .. k)) * h.curve(pts) end
   return params
 end
 local function oven_of(_, _, oven) return oven end
@@ -543,10 +574,12 @@ end
 
 local function register(s, m, params)
   local id = s:_material(m.plugin, params)
-  for k, c in pairs(m.curves) do
-    local T, V = {}, {}
-    for i, p in ipairs(c) do T[i], V[i] = p[1], p[2] end
-    s:_curve(id, k, T, V, c.irreversible)
+  for _, set in ipairs { m.curves, m.factors or {} } do
+    for k, c in pairs(set) do
+      local T, V = {}, {}
+      for i, p in ipairs(c) do T[i], V[i] = p[1], p[2] end
+      s:_curve(id, k, T, V, c.irreversible, c.moisture)
+    end
   end
   return id
 end

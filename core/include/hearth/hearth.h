@@ -486,6 +486,21 @@ double hearth_scene_collider_distance(const hearth_scene *s, const double x[3]);
 /// numbers. Makes the temperature field live.
 hearth_status hearth_scene_material_curve(hearth_scene *s, int mat, const char *param, int n, const double *T,
                                           const double *v, int irreversible, hearth_error *err);
+/// What a material curve is a function of (hearth_scene_material_curve_of).
+typedef enum hearth_curve_of {
+    HEARTH_CURVE_TEMPERATURE = 0, ///< degrees C; values are the parameter's (hearth_scene_material_curve)
+    /// The moisture ratio X/X0: a particle's water mass over the water it was given (1 for a raw dough,
+    /// 0 bone dry; 1 in a scene without water). Values are dimensionless factors (> 0) that multiply the
+    /// parameter, or its temperature curve's value: a crust is its dough stiffened by drying (issue #18).
+    HEARTH_CURVE_MOISTURE = 1
+} hearth_curve_of;
+/// A curve of parameter `param` of material `mat` over `of`: n points (x ascending), constant beyond
+/// the ends. A parameter takes at most one curve of each kind; with both, every product of the
+/// temperature values and the factors must lie in the parameter's range. An irreversible moisture
+/// curve is evaluated at the lowest moisture ratio each particle has reached (a dried crust stays
+/// crisp when water diffuses back). HEARTH_CURVE_TEMPERATURE is hearth_scene_material_curve.
+hearth_status hearth_scene_material_curve_of(hearth_scene *s, int mat, const char *param, hearth_curve_of of, int n,
+                                             const double *x, const double *v, int irreversible, hearth_error *err);
 /// Check plugin parameters without a scene (for early, precise errors in scripts).
 hearth_status hearth_material_check(const char *plugin, const char *const *names, const double *values, int n,
                                     hearth_error *err);

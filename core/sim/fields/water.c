@@ -467,3 +467,19 @@ void water_finish(hearth_scene *s) {
     s->water.emax = emax;
     s->water.limits_valid = 1;
 }
+
+/* The driest state each particle reached, for irreversible moisture curves
+ * (material.h): PC_DRIED holds 1 - the lowest X/X_0, so the column's zeros
+ * read "never dried" without a pass at seeding. Stepped once a step stands,
+ * like browning, so a rolled back step leaves no trace. */
+void water_dried_step(hearth_scene *s) {
+    const particles *ps = &s->ps;
+    const int n = ps->n;
+    double *d = pcold(ps, PC_DRIED);
+    const int *mat = pcoli(ps, PC_MAT);
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        const double dry = 1.0 - material_moisture_ratio(&s->mats.slot[mat[i]], ps, i);
+        if (dry > d[i]) d[i] = dry > 1 ? 1 : dry;
+    }
+}

@@ -81,6 +81,9 @@ hearth_status water_enable(struct hearth_scene *s, hearth_error *err);
 void water_init_particles(struct hearth_scene *s, int from, int to, double sat);
 /// Largest explicit water step (s), INFINITY when inactive.
 double water_dt_limit(const struct hearth_scene *s);
+/// Once a step stands: raise each particle's PC_DRIED (1 - the lowest moisture ratio reached) to its
+/// present dryness. The column must exist (an irreversible moisture curve enables it).
+void water_dried_step(struct hearth_scene *s);
 /// Saturation of particle i (from its water mass and current volume).
 double water_saturation(const struct hearth_scene *s, int i);
 /// After P2G (water mass and capacity scattered, eq. 15, 18): node

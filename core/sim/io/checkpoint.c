@@ -261,7 +261,7 @@ static void put_materials(ck_out *o, const hearth_scene *s) {
             const curve *c = &ms->curves[k];
             put_u32(o, (uint32_t)c->param);
             put_u32(o, (uint32_t)c->n);
-            put_u32(o, (uint32_t)c->irreversible);
+            put_u32(o, (uint32_t)c->irreversible | (uint32_t)c->of << 1); /* bit 1: a moisture curve (#18) */
             put(o, c->T, sizeof(double) * (size_t)c->n);
             put(o, c->v, sizeof(double) * (size_t)c->n);
         }
@@ -534,13 +534,13 @@ static int get_materials(ck_cursor *c, hearth_scene *s, const char *name, hearth
         if (mat < 0) return -1;
         const uint32_t nc = get_u32(c);
         if (c->bad) return -1;
-        if (nc > np) return ck_fail(c, "more temperature curves than parameters");
+        if (nc > 2 * np) return ck_fail(c, "more curves than two per parameter");
         for (uint32_t k = 0; k < nc; k++) {
             const uint32_t param = get_u32(c), npts = get_u32(c), irr = get_u32(c);
             if (c->bad) return -1;
             if (param >= np) return ck_fail(c, "a curve of a parameter the material does not have");
             if (npts < 1 || npts > CK_MAX_CURVE_POINTS) return ck_fail(c, "a curve's point count out of range [1, 100000]");
-            if (irr > 1) return ck_fail(c, "a curve's irreversible flag is neither 0 nor 1");
+            if (irr > 3) return ck_fail(c, "a curve's flags hold bits other than irreversible (1) and moisture (2)");
             const size_t bytes = sizeof(double) * npts;
             if (2 * bytes > c->left) return ck_fail(c, "truncated");
             double *T = mem_alloc(bytes), *v = mem_alloc(bytes);
@@ -549,7 +549,8 @@ static int get_materials(ck_cursor *c, hearth_scene *s, const char *name, hearth
             else {
                 get_finite_n(c, T, (int)npts, "a curve's temperature is not finite");
                 get_finite_n(c, v, (int)npts, "a curve's value is not finite");
-                bad = c->bad || hearth_scene_material_curve(s, mat, m->params[param].name, (int)npts, T, v, (int)irr, err);
+                bad = c->bad || hearth_scene_material_curve_of(s, mat, m->params[param].name, (hearth_curve_of)(irr >> 1),
+                                                               (int)npts, T, v, (int)(irr & 1), err);
             }
             mem_free(T, bytes);
             mem_free(v, bytes);
@@ -625,6 +626,9 @@ static int check_column(ck_cursor *c, const hearth_scene *s, int col, int n) {
     const size_t len = (size_t)particles_col_ncomp(ps, col) * (size_t)n;
     for (size_t i = 0; i < len; i++)
         if (!isfinite(a[i])) return ck_fail(c, "a particle value that is not finite");
+    if (col == PC_DRIED) /* 1 - the lowest moisture ratio reached */
+        for (int i = 0; i < n; i++)
+            if (!(a[i] >= 0 && a[i] <= 1)) return ck_fail(c, "a particle's dried value outside [0, 1]");
     if (col == PC_MASS || col == PC_VOL0)
         for (int i = 0; i < n; i++)
             if (!(a[i] > 0)) return ck_fail(c, "a particle mass or volume <= 0");

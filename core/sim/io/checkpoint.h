@@ -20,7 +20,8 @@
  *    "DEF " the scene definition (ck_put_def in checkpoint.c)
  *    "CLK " i32 guard state, then the clocks and the jitter generator
  *    "MATS" u32 count; per material: name, u32 ABI, u64 schema hash,
- *           u32 nparams, f64 params, f64 core params, u32 curves, curves
+ *           u32 nparams, f64 params, f64 core params, u32 curves, curves (each: u32 param,
+ *           u32 points, u32 flags: bit 0 irreversible, bit 1 a moisture curve; f64 x, f64 values)
  *    "COLS" u32 count; per collider: shape tree (shape_read_mem), contact and pose
  *    "PART" u32 n, u32 state stride, u32 enabled columns; per enabled column
  *           its name and n * (bytes per particle)

@@ -104,10 +104,11 @@ static double guard_wave_speed(const hearth_scene *s, int i) {
     const particles *ps = &s->ps;
     const int mat = pcoli(ps, PC_MAT)[i];
     const material_slot *ms = &s->mats.slot[mat];
-    if (ms->m->state_size == 0) return ms->wave_speed;
+    if (!ms->wave_per_point) return ms->wave_speed;
     double pscratch[SCENE_MAX_PARAMS];
     plugin_call_enter(ms->m, "wave_speed");
-    const double c = ms->m->wave_speed(material_params(&s->mats, &s->ps, mat, i, pscratch), pcold(ps, PC_STATE) + (size_t)i * ps->state_stride);
+    const double c = ms->m->wave_speed(material_params(&s->mats, &s->ps, mat, i, pscratch),
+                                       ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
     plugin_call_leave();
     return c;
 }

@@ -460,7 +460,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
              * parameters it used: here both are in cache, and G2P need not
              * evaluate the temperature curves a second time */
             double c = ms->wave_speed;
-            if (ms->m->state_size > 0) {
+            if (ms->wave_per_point) {
                 plugin_call_enter(ms->m, "wave_speed");
                 c = ms->m->wave_speed(pt.p, pt.state);
             }

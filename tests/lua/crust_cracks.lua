@@ -1,0 +1,71 @@
+-- A dry, stiff crust over a crumb that expands (issue #18): does it crack?
+-- A 8 x 3 cm slab of cam_clay_dough (E 5e3 Pa, tau_y 200 Pa, no pore cap)
+-- on a sticky tray, water K theta = 2e-4 m^2/s and evaporation 2
+-- kg/(m^2 s K) (a time lapse: the top ~4 mm dries in 0.3 s). Its E and
+-- tau_y follow a moisture curve, x F at X/X0 <= 0.65, x1 at >= 0.85,
+-- irreversible. At t = 0.3 s the oven goes from 20 to 120 degC (beta 1000
+-- W/(m^2 K), Table 2's fast heat: c 20 J/(kg K), kappa 30 W/(m K)) and the
+-- thermal expansion c lambda = 10 Pa/K swells the soft crumb under the
+-- crust that does not swell as much (pores capped at 0.6, as the muffin's).
+-- Run with F = 30 (a dried crust) and F = 1 (the same dough without dry
+-- stiffening). What it shows (docs/validation.md, "Crust (#18)"): the dried
+-- crust domes and holds, it does not open; without it the unconfined dough
+-- runs away under eq. 10's expansion (the guard stops it).
+-- The crack measure (the same as bread.lua's for the unscored loaf): the top
+-- surface as the highest particle in each column of width dx; a column is
+-- open when it lies at least 0.1 of the body's height below the lower of the
+-- highest columns within 4 cells on either side; a crack is a run of at
+-- least 2 open columns. Prints "crack W cells, depth D" for each run.
+local h = require "hearth"
+local P = h.params { dx = 0.004, F = 30, cl = 10 }
+local dx = P.dx
+local x0, x1, floor, H, s0 = 0.02, 0.10, 0.01, 0.03, 0.4
+local s = h.scene { dim = 2, dx = dx, box = { { 0, 0 }, { 0.12, 0.08 } }, oven = { temperature = 20, beta = 0 }, name = "crust_cracks" }
+local dry = h.curve { { 0.65, P.F }, { 0.85, 1 }, of = "moisture", irreversible = true }
+local m = h.material("cam_clay_dough", { E = 5e3 * dry, nu = 0.3, density = 500, tau_y = 200 * dry, eta = 0,
+  specific_heat = 20, conductivity = 30, expansion = P.cl, reference_temperature = 20, porosity = 0.1, max_porosity = 0.6,
+  water_diffusivity = 2e-4 / 293.15, evaporation = 2 })
+s:collider { shape = h.plane({ 0, floor }, { 0, 1 }), mode = "sticky" }
+s:add { shape = h.box({ x0, floor }, { x1, floor + H }), material = m, temperature = 20, saturation = s0 }
+
+local K = 4 -- cells either side that a crack is measured against
+local function crack()
+  local r = s:particles { fields = { "x" } }
+  local xl, top = x0 - 10 * dx, {}
+  local nc = math.floor((x1 - x0) / dx + 0.5) + 20
+  for c = 1, nc do top[c] = -math.huge end
+  for i = 1, r.n do
+    local c = math.floor((r.x[3 * i - 2] - xl) / dx) + 1
+    if c >= 1 and c <= nc then top[c] = math.max(top[c], r.x[3 * i - 1]) end
+  end
+  local a, b, hmax = nil, nil, 0
+  for c = 1, nc do if top[c] > -math.huge then a = a or c; b = c; hmax = math.max(hmax, top[c] - floor) end end
+  local best, bestd, run, rund = 0, 0, 0, 0
+  for c = a, b do
+    local l, rr = -math.huge, -math.huge
+    for k = math.max(a, c - K), c - 1 do l = math.max(l, top[k]) end
+    for k = c + 1, math.min(b, c + K) do rr = math.max(rr, top[k]) end
+    local depth = math.min(l, rr) - math.max(top[c], floor)
+    if depth >= 0.1 * hmax then run, rund = run + 1, math.max(rund, depth) else run, rund = 0, 0 end
+    if run > best or (run == best and rund > bestd) then best, bestd = run, rund end
+  end
+  return best, bestd, hmax
+end
+
+s:run { until_t = 0.3 }
+local r = s:particles { fields = { "x", "saturation", "J" } }
+local crust, n = 0, 0
+for i = 1, r.n do
+  if r.x[3 * i - 1] > floor + H - 0.004 then crust, n = crust + r.saturation[i] * r.J[i] / s0, n + 1 end
+end
+print(("dx %g mm, F %g: dried 0.3 s, top 4 mm X/X0 %.3f"):format(dx * 1e3, P.F, crust / n))
+s:oven(120, 1000)
+local w, d, hm
+for k = 1, 2 do
+  s:run { until_t = 0.3 + 0.2 * k }
+  w, d, hm = crack()
+  print(("dx %g mm, F %g: t %.1f s height %.2f mm, widest opening %d cells, depth %.2f mm (%.3f of the height)")
+    :format(dx * 1e3, P.F, s:stats().t, hm * 1e3, w, d * 1e3, d / hm))
+end
+if P.F > 1 then s:png("saturation", "crust_cracks.png") end
+print(("crust_cracks result: dx %g F %g height %.2f mm opening %d cells depth %.3f"):format(dx * 1e3, P.F, hm * 1e3, w, d / hm))
