@@ -32,6 +32,18 @@ EOF
 }
 
 case "$case_name" in
+cli_man_covers_subcommands)
+    # every subcommand `hearth --help` lists has a SYNOPSIS line and an entry in docs/hearth.1, and so has --movie
+    man="$HEARTH_SOURCE_ROOT/docs/hearth.1"
+    subs=$("$hearth" --help | sed -n 's/^  hearth \([a-z][a-z]*\).*/\1/p' | sort -u)
+    [ "$(echo "$subs" | wc -l)" -ge 10 ] || fail "too few subcommands read from --help: $subs"
+    for c in $subs; do
+        grep -q "^\.B hearth $c\b" "$man" || fail "docs/hearth.1 SYNOPSIS lacks 'hearth $c'"
+        grep -q "^\.B $c\b" "$man" || fail "docs/hearth.1 COMMANDS lacks an entry for '$c'"
+    done
+    grep -q '^\.BI \\-\\-movie' "$man" || fail "docs/hearth.1 OPTIONS lacks --movie"
+    echo "docs/hearth.1 covers:" $subs
+    ;;
 movie_written_with_ffmpeg)
     # s:run{movie = ...}: the run's PNG frames (odd sizes: padded to even for yuv420p) become an H.264 movie
     if ! command -v ffmpeg >/dev/null || ! command -v ffprobe >/dev/null; then
