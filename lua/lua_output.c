@@ -303,6 +303,7 @@ static int l_movie(lua_State *L) {
     snprintf(count_s, sizeof count_s, "%lld", (long long)count);
     snprintf(fps_s, sizeof fps_s, "%.9g", fps);
     char *argv[] = {"ffmpeg", "-nostdin", "-hide_banner", "-loglevel", "error", "-y", "-framerate", fps_s,
+                    "-f", "image2", "-pattern_type", "sequence", /* never a glob: '*' in a folder name stays literal */
                     "-start_number", first_s, "-i", in_arg, "-frames:v", count_s,
                     /* libx264 with yuv420p needs even sizes: pad one pixel where odd */
                     "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p", out_arg, NULL};
