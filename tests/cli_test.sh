@@ -97,6 +97,10 @@ movie_needs_png_output)
     "$hearth" run "$tmp/q.lua" --out "$tmp/o" --quiet 2>"$tmp/err"; rc=$?
     [ $rc -eq 1 ] && grep -qF 'must number its frames with one %d or %04d' "$tmp/err" || fail "unnumbered frames: exit $rc: $(cat "$tmp/err")"
     echo "refused: $(head -1 "$tmp/err")"
+    # a movie path without an extension: ffmpeg could not pick a container
+    movie_scene 'movie = { path = "clip", fps = 5 }' >"$tmp/r.lua"
+    "$hearth" run "$tmp/r.lua" --out "$tmp/o" --quiet 2>"$tmp/err"; rc=$?
+    [ $rc -eq 1 ] && grep -qF 'movie.path = "clip" needs an extension' "$tmp/err" || fail "no extension: exit $rc: $(cat "$tmp/err")"
     ;;
 cli_did_you_mean_command)
     "$hearth" rn x.lua 2>"$tmp/e"; rc=$?

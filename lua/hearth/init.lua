@@ -1038,6 +1038,9 @@ local function movie_option(o, opts)
   if type(m.path) ~= "string" or m.path == "" then
     error("s:run: movie.path = \"bake.mp4\", the movie file (its extension picks the container)", 3)
   end
+  if not m.path:match("%.%w+$") then -- ffmpeg picks the container from it
+    error(("s:run: movie.path = %q needs an extension naming the container, e.g. \"bake.mp4\""):format(m.path), 3)
+  end
   if m.fps ~= nil then check_number(m.fps, "s:run: movie.fps", 0.01, 1000, "frames/s", 4) end
   if not o.png then
     error(("%s = %q needs the run's PNG frames: add png = {field = ..., path = \"frame_%%04d.png\"} to s:run")
