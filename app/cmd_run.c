@@ -25,12 +25,14 @@ static void run_usage(FILE *f, const char *cmd) {
                    "A plain Lua prompt (no curses) with the scene loaded; its variables are globals.\n"
                    "Lines read from a pipe run too:  echo 'print(s:stats().t)' | hearth repl scene.lua\n");
     else
-        fprintf(f, "usage: hearth run SCENE.lua [--until T] [--frames N] [--vtu DIR] [--out DIR] [--set k=v]... [--threads N] [--quiet]\n"
+        fprintf(f, "usage: hearth run SCENE.lua [--until T] [--frames N] [--vtu DIR] [--movie FILE] [--out DIR] [--set k=v]... [--threads N] [--quiet]\n"
                    "                 [--lua-memory SIZE] [--trust]\n"
                    "Runs a Lua scene headless. Outputs go to DIR (default ./hearth-out/<scene name>/).\n"
                    "  --until T    stop every s:run at sim time T (s)\n"
                    "  --frames N   N frames per run (every = span / N)\n"
                    "  --vtu DIR    every s:run also writes VTU frames and DIR/frame.pvd (DIR under the outputs)\n"
+                   "  --movie FILE every s:run's PNG frames also become the movie FILE (.mp4; 10 fps) through the\n"
+                   "               ffmpeg program; without ffmpeg a notice says so and the frames stay\n"
                    "  --set k=v    override a parameter the scene declares with h.params{...}\n"
                    "  --threads N  OpenMP threads (results do not depend on it)\n"
                    "  --quiet      no progress output\n"
@@ -78,11 +80,15 @@ int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
         if (!strcmp(s, "--quiet")) { a->quiet = 1; continue; }
         if (!strcmp(s, "--trust")) { a->trust = 1; continue; }
         if (s[0] == '-' && s[1] == '-') {
-            static const char *const valued[] = {"--out", "--until", "--frames", "--threads", "--set", "--metric", "--metric-out", "--lua-memory", "--vtu", NULL};
+            static const char *const valued[] = {"--out", "--until", "--frames", "--threads", "--set", "--metric", "--metric-out", "--lua-memory", "--vtu", "--movie", NULL};
             int known = 0;
             for (int k = 0; valued[k]; k++) known |= !strcmp(s, valued[k]);
             if (!known) {
-                fprintf(stderr, "hearth %s: unknown option '%s' (see --help)\n", cmd, s);
+                static const char *const all[] = {"--out", "--until", "--frames", "--threads", "--set", "--metric", "--metric-out",
+                                                  "--lua-memory", "--vtu", "--movie", "--quiet", "--trust", "--help", NULL};
+                const char *near = app_did_you_mean(s, all);
+                if (near) fprintf(stderr, "hearth %s: unknown option '%s'; did you mean '%s'? (see --help)\n", cmd, s, near);
+                else fprintf(stderr, "hearth %s: unknown option '%s' (see --help)\n", cmd, s);
                 return 2;
             }
             if (i + 1 >= argc) {
@@ -92,6 +98,7 @@ int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
             const char *v = argv[++i];
             if (!strcmp(s, "--out")) a->out = v;
             else if (!strcmp(s, "--vtu")) a->vtu = v;
+            else if (!strcmp(s, "--movie")) a->movie = v;
             else if (!strcmp(s, "--metric")) a->metric = v;
             else if (!strcmp(s, "--metric-out")) a->metric_out = v;
             else if (!strcmp(s, "--lua-memory")) {
@@ -217,7 +224,8 @@ static lua_State *start(run_args *a, progress *pr, const char *cmd) {
     hl_options o = {.out_dir = a->out, .scene_dir = a->dir_buf, .until_override = a->until,
                     .frames_override = (int)a->frames, .quiet = a->quiet, .trusted = a->trust,
                     .sets = a->sets, .progress = on_progress, .progress_ud = pr,
-                    .assets_dir = app_assets_dir(), .lua_memory = a->lua_memory, .vtu_dir = a->vtu};
+                    .assets_dir = app_assets_dir(), .lua_memory = a->lua_memory, .vtu_dir = a->vtu,
+                    .movie = a->movie};
     lua_State *L = hl_new_state(&o, &err);
     if (!L) fprintf(stderr, "hearth %s: %s\n", cmd, err.msg);
     return L;

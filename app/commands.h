@@ -29,6 +29,7 @@ typedef struct run_args {
     size_t lua_memory; /* --lua-memory SIZE in bytes; 0 = the default ceiling */
     const char *metric, *metric_out; /* --metric NAME [--metric-out FILE] (used by hearth trade) */
     const char *vtu;                 /* --vtu DIR: VTU frames and a .pvd from every s:run, under the output folder */
+    const char *movie;               /* --movie FILE: every s:run's PNG frames also become this movie (ffmpeg) */
     int argc;                        /* the command line, for the run record (run_log.c) */
     char **argv;
     const char *sets[65];
@@ -50,4 +51,7 @@ const char *app_assets_dir(void);
 
 /// Parse a whole positive integer option value; prints a usage error and returns -1 when bad.
 long app_parse_int(const char *cmd, const char *flag, const char *text, long min, long max);
+/// The name in the NULL-terminated list nearest to word (edit distance at most
+/// a third of its length, at least 1), for "did you mean"; NULL when none is near (main.c).
+const char *app_did_you_mean(const char *word, const char *const *names);
 #endif

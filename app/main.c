@@ -20,6 +20,7 @@ static void usage(FILE *f) {
             "  hearth demo [--out DIR] [--until T] [--frames N] [--threads N] [--quiet]\n"
             "                                the built-in demo headless: progress bar, PNG frames in ./hearth-out/demo/\n"
             "  hearth run SCENE.lua [--until T] [--frames N] [--out DIR] [--set k=v]... [--threads N] [--quiet] [--trust]\n"
+            "                     [--vtu DIR] [--movie FILE]  (hearth run --help lists every option)\n"
             "                                run a Lua scene headless (progress bar, PNG/VTU/CSV outputs)\n"
             "  hearth repl [SCENE.lua]       a plain Lua prompt with the scene loaded (reads pipes too)\n"
             "  hearth plugins                list material plugins and their parameters\n"
@@ -51,6 +52,37 @@ long app_parse_int(const char *cmd, const char *flag, const char *text, long min
         return -1;
     }
     return v;
+}
+
+/* Levenshtein distance of a and b, capped: the names compared are short. */
+static size_t edit_distance(const char *a, const char *b) {
+    size_t la = strlen(a), lb = strlen(b);
+    if (la > 63 || lb > 63) return (size_t)-1;
+    size_t row[64];
+    for (size_t j = 0; j <= lb; j++) row[j] = j;
+    for (size_t i = 1; i <= la; i++) {
+        size_t diag = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= lb; j++) {
+            size_t up = row[j], best = diag + (a[i - 1] != b[j - 1]);
+            if (up + 1 < best) best = up + 1;
+            if (row[j - 1] + 1 < best) best = row[j - 1] + 1;
+            diag = up;
+            row[j] = best;
+        }
+    }
+    return row[lb];
+}
+
+const char *app_did_you_mean(const char *word, const char *const *names) {
+    /* a third of the word's length, at least one edit: "rn" finds "run", "xyz" finds nothing */
+    size_t limit = strlen(word) / 3 > 1 ? strlen(word) / 3 : 1, best = limit + 1;
+    const char *pick = NULL;
+    for (size_t k = 0; names[k]; k++) {
+        size_t d = edit_distance(word, names[k]);
+        if (d < best) best = d, pick = names[k];
+    }
+    return pick;
 }
 
 int main(int argc, char **argv) {
@@ -96,6 +128,13 @@ int main(int argc, char **argv) {
     if (!strcmp(c, "trade")) return cmd_trade(argc - 1, argv + 1);
     if (!strcmp(c, "doc")) return cmd_doc(argc - 1, argv + 1);
     if (strlen(c) > 4 && !strcmp(c + strlen(c) - 4, ".lua")) return cmd_dashboard(argc, argv);
+    static const char *const commands[] = {"demo", "run", "repl", "plugins", "plugin", "rheometer", "fit", "trade",
+                                           "bench", "help", "doc", NULL};
+    const char *near = app_did_you_mean(c, commands);
+    if (near) {
+        fprintf(stderr, "hearth: unknown command '%s'; did you mean '%s'? (hearth --help lists them)\n", c, near);
+        return 2;
+    }
     fprintf(stderr, "hearth: unknown command '%s'\n\n", c);
     usage(stderr);
     return 2;

@@ -110,6 +110,7 @@ static int l_options(lua_State *L) {
     if (o->until_override > 0) lua_pushnumber(L, o->until_override), lua_setfield(L, -2, "until_t");
     if (o->frames_override > 0) lua_pushinteger(L, o->frames_override), lua_setfield(L, -2, "frames");
     if (o->vtu_dir) lua_pushstring(L, o->vtu_dir), lua_setfield(L, -2, "vtu_dir");
+    if (o->movie) lua_pushstring(L, o->movie), lua_setfield(L, -2, "movie");
     lua_pushboolean(L, o->quiet), lua_setfield(L, -2, "quiet");
     lua_pushboolean(L, o->yield_steps), lua_setfield(L, -2, "yield");
     lua_newtable(L);

@@ -38,6 +38,7 @@ typedef struct hl_options {
     /// module's own by the interrupt hook; NULL for none. Returns a signal number or 0.
     int (*interrupted)(void);
     const char *vtu_dir;    ///< every s:run without its own vtu = {...} writes VTU frames and a .pvd here (hearth run --vtu)
+    const char *movie;      ///< every s:run without its own movie = ... encodes its PNG frames into this file (hearth run --movie)
 } hl_options;
 
 /// The one constructor of a Lua state that runs scenes (hearth run, repl, the

@@ -8,12 +8,17 @@
 #define _XOPEN_SOURCE 700 /* realpath, lstat */
 #include <errno.h>
 #include <limits.h>
+#include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "hearth_lua.h"
+
+extern char **environ;
 
 /* Does the path (a "/"-separated tail of folders not yet made) hold a ".."
  * component? Such a tail cannot be resolved before the folders exist. */
@@ -272,6 +277,70 @@ static int l_write_atomic(lua_State *L) {
     return 1;
 }
 
+/* core.movie(pattern, first, count, path, fps): encode the PNG frames
+ * pattern % first .. first+count-1 (a printf pattern with one %d or %0Nd,
+ * relative to the output folder) into the movie path with the ffmpeg program.
+ * ffmpeg runs from an argv, never through a shell, since both paths are the
+ * user's. It writes a temp file beside the movie (same extension, so ffmpeg
+ * picks the same container), renamed over the movie when it is whole.
+ * Returns true, or false and a message when ffmpeg is not installed (the
+ * frames stay; a missing encoder is not a failed run). A failed encode raises. */
+static int l_movie(lua_State *L) {
+    const char *pattern = luaL_checkstring(L, 1);
+    lua_Integer first = luaL_checkinteger(L, 2), count = luaL_checkinteger(L, 3);
+    const char *path = luaL_checkstring(L, 4);
+    double fps = luaL_checknumber(L, 5);
+    char in[4096], out[4096], tmp[4200], in_arg[4200], out_arg[4300], first_s[32], count_s[32], fps_s[32];
+    hl_in_path(L, pattern, in, sizeof in);
+    if (!hl_out_path(L, "movie", path, HL_PATH_MKDIRS, out, sizeof out)) return 0;
+    const char *slash = strrchr(out, '/'), *base = slash ? slash + 1 : out;
+    const char *ext = strrchr(base, '.');
+    snprintf(tmp, sizeof tmp, "%.*s.%s.tmp%ld%s", (int)(base - out), out, base, (long)getpid(), ext ? ext : "");
+    /* a leading "./" keeps a relative path that starts with '-' from reading as an option */
+    snprintf(in_arg, sizeof in_arg, "%s%s", in[0] == '/' ? "" : "./", in);
+    snprintf(out_arg, sizeof out_arg, "file:%s", tmp); /* file: keeps "x:y.mp4" from naming a protocol */
+    snprintf(first_s, sizeof first_s, "%lld", (long long)first);
+    snprintf(count_s, sizeof count_s, "%lld", (long long)count);
+    snprintf(fps_s, sizeof fps_s, "%.9g", fps);
+    char *argv[] = {"ffmpeg", "-nostdin", "-hide_banner", "-loglevel", "error", "-y", "-framerate", fps_s,
+                    "-f", "image2", "-pattern_type", "sequence", /* never a glob: '*' in a folder name stays literal */
+                    "-start_number", first_s, "-i", in_arg, "-frames:v", count_s,
+                    /* libx264 with yuv420p needs even sizes: pad one pixel where odd */
+                    "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p", out_arg, NULL};
+    pid_t pid;
+    int rc = posix_spawnp(&pid, "ffmpeg", NULL, NULL, argv, environ);
+    if (rc == ENOENT || rc == EACCES) {
+        char dir[4096];
+        snprintf(dir, sizeof dir, "%s", in);
+        char *ds = strrchr(dir, '/');
+        if (ds) *ds = '\0';
+        else snprintf(dir, sizeof dir, ".");
+        lua_pushboolean(L, 0);
+        lua_pushfstring(L, "movie %s not written: the ffmpeg program is not installed (Debian package ffmpeg); the frames are in %s",
+                        path, dir);
+        fprintf(stderr, "hearth: %s\n", lua_tostring(L, -1)); /* a notice, not an error: the run goes on */
+        return 2;
+    }
+    if (rc) return luaL_error(L, "movie %s: cannot start ffmpeg: %s", path, strerror(rc));
+    int status;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR) return luaL_error(L, "movie %s: waiting for ffmpeg: %s", path, strerror(errno));
+    if (!WIFEXITED(status) || WEXITSTATUS(status)) {
+        remove(tmp);
+        if (WIFSIGNALED(status))
+            return luaL_error(L, "movie %s not written: ffmpeg was killed by signal %d", path, WTERMSIG(status));
+        return luaL_error(L, "movie %s not written: ffmpeg exited with status %d (its message is above); the frames are "
+                             "%s from number %d", path, WEXITSTATUS(status), in, (int)first);
+    }
+    if (rename(tmp, out)) {
+        int e = errno;
+        remove(tmp);
+        return luaL_error(L, "movie %s: cannot rename the finished file into place: %s", path, strerror(e));
+    }
+    lua_pushboolean(L, 1);
+    return 1;
+}
+
 void hl_open_output(lua_State *L) {
     luaL_getmetatable(L, HL_SCENE);
     lua_getfield(L, -1, "__index");
@@ -282,4 +351,6 @@ void hl_open_output(lua_State *L) {
     lua_setfield(L, -2, "write_atomic");
     lua_pushcfunction(L, l_colormap);
     lua_setfield(L, -2, "colormap");
+    lua_pushcfunction(L, l_movie);
+    lua_setfield(L, -2, "movie");
 }

@@ -44,10 +44,15 @@ hearth_install_deps() {
 # and nothing else depends on them. python3-vtk9: VTK's own readers check the
 # VTU series and PLY files (tests/vtk_check.py). A failed install is only
 # reported. scripts/test installs them; HEARTH_NO_OPTIONAL=1 skips that.
+# ffmpeg (movies: s:run{movie = ...}, hearth run --movie; the test
+# movie_written_with_ffmpeg) is only installed when asked, HEARTH_WITH_FFMPEG=1:
+# it pulls in about 100 packages (measured on Debian 12), too much for every CI
+# run, and without it hearth only says so and keeps the PNG frames.
 hearth_install_optional() {
     [ "${HEARTH_NO_OPTIONAL:-0}" = 1 ] && return 0
     local missing=()
     /usr/bin/python3 -c "import vtk" >/dev/null 2>&1 || python3 -c "import vtk" >/dev/null 2>&1 || missing+=(python3-vtk9)
+    if [ "${HEARTH_WITH_FFMPEG:-0}" = 1 ] && ! command -v ffmpeg >/dev/null 2>&1; then missing+=(ffmpeg); fi
     [ ${#missing[@]} -eq 0 ] && return 0
     echo "hearth: installing optional Debian packages: ${missing[*]}" >&2
     local sudo=""

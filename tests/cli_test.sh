@@ -20,7 +20,108 @@ s:run { until_t = 0.05 }
 EOF
 }
 
+# movie_scene 'RUN OPTIONS': block_scene's block with 6 PNG frames of odd size (161x121) and the options given
+movie_scene() {
+    cat <<EOF
+local h = require "hearth"
+local s = h.scene { dim = 2, dx = 1 / 16, box = { { 0, 0 }, { 1, 1 } } }
+local m = h.material("elastic", { E = 1e4, density = 1000 })
+s:add { shape = h.box({ 0.3, 0.3 }, { 0.6, 0.6 }), material = m, ppc = 4 }
+s:run { until_t = 0.05, every = 0.01, png = { field = "speed", path = "f_%04d.png", width = 161, height = 121 }, $1 }
+EOF
+}
+
 case "$case_name" in
+cli_man_covers_subcommands)
+    # every subcommand `hearth --help` lists has a SYNOPSIS line and an entry in docs/hearth.1, and so has --movie
+    man="$HEARTH_SOURCE_ROOT/docs/hearth.1"
+    subs=$("$hearth" --help | sed -n 's/^  hearth \([a-z][a-z]*\).*/\1/p' | sort -u)
+    [ "$(echo "$subs" | wc -l)" -ge 10 ] || fail "too few subcommands read from --help: $subs"
+    for c in $subs; do
+        grep -q "^\.B hearth $c\b" "$man" || fail "docs/hearth.1 SYNOPSIS lacks 'hearth $c'"
+        grep -q "^\.B $c\b" "$man" || fail "docs/hearth.1 COMMANDS lacks an entry for '$c'"
+    done
+    grep -q '^\.BI \\-\\-movie' "$man" || fail "docs/hearth.1 OPTIONS lacks --movie"
+    echo "docs/hearth.1 covers:" $subs
+    ;;
+movie_written_with_ffmpeg)
+    # s:run{movie = ...}: the run's PNG frames (odd sizes: padded to even for yuv420p) become an H.264 movie
+    if ! command -v ffmpeg >/dev/null || ! command -v ffprobe >/dev/null; then
+        echo "skip: ffmpeg/ffprobe not installed (Debian package ffmpeg)"; exit 77
+    fi
+    movie_scene 'movie = { path = "clip/bake.mp4", fps = 5 }' >"$tmp/m.lua"
+    "$hearth" run "$tmp/m.lua" --out "$tmp/o" --quiet 2>"$tmp/err" || fail "movie run failed: $(cat "$tmp/err")"
+    [ -f "$tmp/o/clip/bake.mp4" ] || fail "no movie: $(ls -R "$tmp/o")"
+    ls -a "$tmp/o/clip" | grep -q tmp && fail "a temp file was left: $(ls -a "$tmp/o/clip")"
+    n_png=$(ls "$tmp/o"/f_*.png | wc -l)
+    probe=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames,width,height,codec_name,pix_fmt \
+        -of default=nw=1 "$tmp/o/clip/bake.mp4") || fail "ffprobe cannot read the movie"
+    echo "$n_png PNG frames; movie: $(echo $probe)"
+    echo "$probe" | grep -qx "nb_read_frames=$n_png" || fail "movie frames != $n_png PNG frames: $probe"
+    [ "$n_png" = 6 ] || fail "expected 6 frames (t = 0 .. 0.05 every 0.01), got $n_png"
+    echo "$probe" | grep -qx "width=162" && echo "$probe" | grep -qx "height=122" || fail "size not padded to 162x122: $probe"
+    echo "$probe" | grep -qx "codec_name=h264" && echo "$probe" | grep -qx "pix_fmt=yuv420p" || fail "codec: $probe"
+    # --movie on the command line: the same, from a scene that names no movie
+    movie_scene '' >"$tmp/p.lua"
+    "$hearth" run "$tmp/p.lua" --out "$tmp/o2" --movie run.mp4 --quiet 2>"$tmp/err" || fail "--movie run failed: $(cat "$tmp/err")"
+    ffprobe -v error -count_frames -show_entries stream=nb_read_frames -of default=nw=1 "$tmp/o2/run.mp4" | grep -qx "nb_read_frames=6" ||
+        fail "--movie: not 6 frames"
+    ;;
+movie_without_ffmpeg_says_so)
+    # no ffmpeg on PATH: the run still succeeds, says why there is no movie, and the frames stay
+    movie_scene 'movie = "bake.mp4"' >"$tmp/m.lua"
+    mkdir "$tmp/empty_bin"
+    PATH="$tmp/empty_bin" "$hearth" run "$tmp/m.lua" --out "$tmp/o" --quiet 2>"$tmp/err"; rc=$?
+    [ $rc -eq 0 ] || fail "exit $rc without ffmpeg, expected 0: $(cat "$tmp/err")"
+    grep -qF "hearth: movie bake.mp4 not written: the ffmpeg program is not installed (Debian package ffmpeg); the frames are in $tmp/o" "$tmp/err" ||
+        fail "message: $(cat "$tmp/err")"
+    n=$(ls "$tmp/o"/f_*.png | wc -l)
+    echo "without ffmpeg: exit $rc, $n PNG frames, message: $(cat "$tmp/err")"
+    [ "$n" = 6 ] || fail "expected the 6 PNG frames, got $n"
+    [ -e "$tmp/o/bake.mp4" ] && fail "a movie appeared without ffmpeg"
+    ls -a "$tmp/o" | grep -q '\.tmp' && fail "a temp file was left: $(ls -a "$tmp/o")"
+    ;;
+movie_needs_png_output)
+    # a movie is made of the PNG frames: a run without them is refused before it starts, naming the option
+    block_scene elastic | sed 's/s:run { until_t = 0.05 }/s:run { until_t = 0.05, movie = "bake.mp4" }/' >"$tmp/m.lua"
+    "$hearth" run "$tmp/m.lua" --out "$tmp/o" --quiet 2>"$tmp/err"; rc=$?
+    [ $rc -eq 1 ] || fail "exit $rc, expected 1 (scene error): $(cat "$tmp/err")"
+    grep -qF 's:run: movie = "bake.mp4" needs the run'"'"'s PNG frames: add png = {' "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    # the same from --movie, naming the flag
+    block_scene elastic | sed 's/s:run { until_t = 0.05 }/s:run { until_t = 0.05, every = 0.01 }/' >"$tmp/p.lua"
+    "$hearth" run "$tmp/p.lua" --out "$tmp/o" --movie x.mp4 --quiet 2>"$tmp/err"; rc=$?
+    [ $rc -eq 1 ] || fail "--movie without png: exit $rc, expected 1"
+    grep -qF -- '--movie = "x.mp4" needs the run'"'"'s PNG frames' "$tmp/err" || fail "--movie message: $(cat "$tmp/err")"
+    # frames that overwrite one file cannot make a movie
+    movie_scene 'movie = "b.mp4"' | sed 's/f_%04d.png/same.png/' >"$tmp/q.lua"
+    "$hearth" run "$tmp/q.lua" --out "$tmp/o" --quiet 2>"$tmp/err"; rc=$?
+    [ $rc -eq 1 ] && grep -qF 'must number its frames with one %d or %04d' "$tmp/err" || fail "unnumbered frames: exit $rc: $(cat "$tmp/err")"
+    echo "refused: $(head -1 "$tmp/err")"
+    # a movie path without an extension: ffmpeg could not pick a container
+    movie_scene 'movie = { path = "clip", fps = 5 }' >"$tmp/r.lua"
+    "$hearth" run "$tmp/r.lua" --out "$tmp/o" --quiet 2>"$tmp/err"; rc=$?
+    [ $rc -eq 1 ] && grep -qF 'movie.path = "clip" needs an extension' "$tmp/err" || fail "no extension: exit $rc: $(cat "$tmp/err")"
+    ;;
+cli_did_you_mean_command)
+    "$hearth" rn x.lua 2>"$tmp/e"; rc=$?
+    [ $rc -eq 2 ] || fail "hearth rn: exit $rc, expected 2"
+    grep -qF "hearth: unknown command 'rn'; did you mean 'run'?" "$tmp/e" || fail "message: $(cat "$tmp/e")"
+    "$hearth" rheomter 2>"$tmp/e"; grep -qF "did you mean 'rheometer'?" "$tmp/e" || fail "rheomter: $(cat "$tmp/e")"
+    # nothing near: no guess, the usage instead
+    "$hearth" frobnicate 2>"$tmp/e"; [ $? -eq 2 ] || fail "frobnicate: exit"
+    grep -q "did you mean" "$tmp/e" && fail "a far word got a guess: $(cat "$tmp/e")"
+    grep -q "usage:" "$tmp/e" || fail "no usage after an unknown command"
+    ;;
+cli_run_did_you_mean_flag)
+    block_scene elastic >"$tmp/s.lua"
+    "$hearth" run "$tmp/s.lua" --frmes 3 2>"$tmp/e"; rc=$?
+    [ $rc -eq 2 ] || fail "--frmes: exit $rc, expected 2"
+    grep -qF "hearth run: unknown option '--frmes'; did you mean '--frames'?" "$tmp/e" || fail "message: $(cat "$tmp/e")"
+    "$hearth" run "$tmp/s.lua" --moive a.mp4 2>"$tmp/e"; grep -qF "did you mean '--movie'?" "$tmp/e" || fail "--moive: $(cat "$tmp/e")"
+    "$hearth" run "$tmp/s.lua" --zzzzzzzz 2>"$tmp/e"; [ $? -eq 2 ] || fail "--zzzzzzzz exit"
+    grep -q "did you mean" "$tmp/e" && fail "a far flag got a guess: $(cat "$tmp/e")"
+    grep -qF "unknown option '--zzzzzzzz'" "$tmp/e" || fail "--zzzzzzzz: $(cat "$tmp/e")"
+    ;;
 cli_help)
     "$hearth" --help | grep -q "hearth plugin check" || fail "--help lacks the subcommands"
     "$hearth" --version | grep -q "material ABI" || fail "--version"

@@ -866,7 +866,7 @@ local function default_field(s)
 end
 
 local run_keys = { until_t = true, every = true, on_frame = true, csv = true, probes = true, png = true, until_rest = true,
-  vtu = true, ply = true }
+  vtu = true, ply = true, movie = true }
 local run_png_keys = { field = true, path = true, kind = true, width = true, height = true, axis = true, at = true,
   range = true, colormap = true }
 local png_keys = { kind = true, width = true, height = true, axis = true, at = true, range = true, colormap = true, grow = true }
@@ -1022,10 +1022,55 @@ local function dumps_write(self, specs, t, force)
   end
 end
 
+-- ---- movies: s:run{movie = "bake.mp4"} or hearth run --movie FILE ----------
+-- The run's PNG frames are encoded by the ffmpeg program (lua_output.c's
+-- core.movie); without ffmpeg a notice says so and the frames stay.
+local movie_keys = { path = true, fps = true }
+local function movie_option(o, opts)
+  local m, from = o.movie, "s:run: movie"
+  if m == nil and opts.movie then m, from = opts.movie, "--movie" end
+  if m == nil then return nil end
+  if type(m) == "string" then m = { path = m } end
+  if type(m) ~= "table" then
+    error(("s:run: movie = \"bake.mp4\" or {path = \"bake.mp4\", fps = 10}, got %s"):format(type(m)), 3)
+  end
+  check_keys(m, movie_keys, "s:run: movie", 4)
+  if type(m.path) ~= "string" or m.path == "" then
+    error("s:run: movie.path = \"bake.mp4\", the movie file (its extension picks the container)", 3)
+  end
+  if not m.path:match("%.%w+$") then -- ffmpeg picks the container from it
+    error(("s:run: movie.path = %q needs an extension naming the container, e.g. \"bake.mp4\""):format(m.path), 3)
+  end
+  if m.fps ~= nil then check_number(m.fps, "s:run: movie.fps", 0.01, 1000, "frames/s", 4) end
+  if not o.png then
+    error(("%s = %q needs the run's PNG frames: add png = {field = ..., path = \"frame_%%04d.png\"} to s:run")
+      :format(from, m.path), 3)
+  end
+  local pattern = o.png.path or "frame_%04d.png"
+  local n = 0
+  for _ in pattern:gmatch("%%0?%d*d") do n = n + 1 end
+  local _, pct = pattern:gsub("%%", "")
+  if n ~= 1 or pct ~= 1 then
+    error(("%s = %q: png.path = %q must number its frames with one %%d or %%04d, so each frame is its own file")
+      :format(from, m.path, pattern), 3)
+  end
+  return { path = m.path, fps = m.fps or 10, pattern = pattern }
+end
+
+local function movie_write(st, mv, first)
+  -- a later s:run with the same movie and frames continues it
+  st.movie_first = st.movie_first or {}
+  local key = mv.path .. "\0" .. mv.pattern
+  st.movie_first[key] = st.movie_first[key] or first
+  local from = st.movie_first[key]
+  if st.frame > from then core.movie(mv.pattern, from, st.frame - from, mv.path, mv.fps) end
+end
+
 --- s:run{until_t = T, every = dt, on_frame = function(frame) ... end, csv = "series.csv",
 ---       probes = {{"speed", {x, y}}, ...}, png = {field = "speed", path = "frame_%04d.png", kind = "particles"},
 ---       vtu = {path = "bake_%04d.vtu", every = dt, pvd = "bake.pvd"},
----       ply = {path = "bake_%04d.ply", every = dt, color = "temperature", range = {20, 200}, colormap = "inferno"}}
+---       ply = {path = "bake_%04d.ply", every = dt, color = "temperature", range = {20, 200}, colormap = "inferno"},
+---       movie = "bake.mp4" or {path = "bake.mp4", fps = 10}}
 function S:run(o)
   o = o or {}
   if type(o) ~= "table" then error("s:run: expected a table", 2) end
@@ -1033,6 +1078,7 @@ function S:run(o)
   check_run_outputs(o)
   check_dump_outputs(o)
   local opts = core.options()
+  local mv = movie_option(o, opts)
   local t0 = self:_time()
   local until_t = opts.until_t or o.until_t
   if until_t == nil then error("s:run: until_t is required (or pass --until to hearth run)", 2) end
@@ -1089,6 +1135,7 @@ function S:run(o)
     st.frame = st.frame + 1
   end
   fire_events(self)
+  local first_frame = st.frame
   frame()
   local dumps = run_dumps(self, o, opts, t0, every)
   dumps_write(self, dumps, t0, false)
@@ -1134,6 +1181,7 @@ function S:run(o)
   end
   local stt = self:stats()
   core.progress(stt.t, until_t, stt.step, true)
+  if mv then movie_write(st, mv, first_frame) end
   st.ran = true
   if rest then stt.at_rest = at_rest end
   return stt
