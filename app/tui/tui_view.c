@@ -173,7 +173,8 @@ static void draw_status(tui_app *a, const tui_rect *r) {
     snprintf(fields, sizeof fields, "%s", hearth_scene_fields(a->s));
     static const char *gs[] = {"ok", "rolled back", "STOPPED"};
     const char *run = a->running ? (a->lua.njobs ? "> running (scene run)" : "> running") : "|| paused";
-    if ((int)strlen(run) + 44 > r->w) run = a->running ? "> running" : "|| paused";
+    /* the long run label only where line 1 still fits beside it */
+    if ((int)(strlen(l1) + strlen(run)) + 2 > r->w) run = a->running ? "> running" : "|| paused";
     snprintf(l2, sizeof l2, " particles %d   %.0f steps/s   guard %s   fields: %s", st.particles, a->sps, gs[st.guard],
              fields);
     int rl = (int)strlen(run);
