@@ -285,9 +285,14 @@ int cmd_run(int argc, char **argv) {
     run_args a;
     int rc = app_run_parse(&a, argc, argv, "run");
     if (rc) return rc == 1 ? 0 : rc;
+    char scratch[4096];
+    if (app_ranks_follow(&a, scratch, sizeof scratch)) return 1; /* mpirun: ranks > 0 write nothing of their own */
     progress pr;
     lua_State *L = start(&a, &pr, "run");
-    if (!L) return 1;
+    if (!L) {
+        app_ranks_cleanup(scratch);
+        return 1;
+    }
     run_log rec;
     run_log_start(&rec, &a);
     int status = 0;
@@ -309,6 +314,7 @@ int cmd_run(int argc, char **argv) {
     run_log_write(&rec, status);
     if (status == 0 && !a.quiet) fprintf(stderr, "hearth run: done; outputs in %s/\n", a.out);
     hl_close_state(L);
+    app_ranks_cleanup(scratch);
     return status;
 }
 

@@ -121,7 +121,21 @@ int main(int argc, char **argv) {
         return 2;
     }
     if (!strcmp(c, "bench")) return cmd_bench(argc - 1, argv + 1);
-    if (!strcmp(c, "run")) return cmd_run(argc - 1, argv + 1);
+    if (!strcmp(c, "run")) { /* the one command that runs over mpirun's ranks (docs/scaling.md) */
+        hearth_ranks_init(&argc, &argv);
+        const int st = cmd_run(argc - 1, argv + 1);
+        if (st && hearth_ranks_size() > 1) {
+            /* A failure on one rank alone (a file rank 0 could not write) would leave the
+             * others waiting in the next exchange: stop them all. A failure every rank
+             * shares (a guard stop) is reported by rank 0; the others give it a moment
+             * to print the diagnosis before the abort that ends them all. */
+            fflush(stdout), fflush(stderr);
+            if (hearth_ranks_rank() > 0) sleep(5);
+            hearth_ranks_abort(st);
+        }
+        hearth_ranks_finalize();
+        return st;
+    }
     if (!strcmp(c, "repl")) return cmd_repl(argc - 1, argv + 1);
     if (!strcmp(c, "rheometer")) return cmd_rheometer(argc - 1, argv + 1);
     if (!strcmp(c, "fit")) return cmd_fit(argc - 1, argv + 1);

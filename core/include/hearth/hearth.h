@@ -702,6 +702,27 @@ hearth_status hearth_atomic_file_commit(hearth_atomic_file *af, hearth_error *er
 /// Give up: remove the temp file and release af (NULL is fine).
 void hearth_atomic_file_abort(hearth_atomic_file *af);
 
+/* ---- MPI ranks (docs/scaling.md) ---------------------------------------- */
+/// Join mpirun's ranks: when hearth was built with MPI (-Dmpi) and this
+/// process was started by mpirun (its environment says so), MPI is started
+/// here; otherwise the process is one rank. Call once from main, before any
+/// scene; returns the rank count. An MPM scene then splits its particle blocks
+/// among the ranks (every rank holds the whole scene: docs/scaling.md says what
+/// that costs); an SPH scene refuses to run on more than one.
+int hearth_ranks_init(int *argc, char ***argv);
+/// This process's rank, 0 .. hearth_ranks_size() - 1 (0 without MPI).
+int hearth_ranks_rank(void);
+/// How many ranks run the scene (1 without MPI or without mpirun).
+int hearth_ranks_size(void);
+/// 1 when this build has MPI (the rank tests skip otherwise).
+int hearth_ranks_built(void);
+/// Leave the ranks (MPI_Finalize) after every scene is freed. Safe without MPI and twice.
+void hearth_ranks_finalize(void);
+/// Stop every rank at once (MPI_Abort) with exit status code: for a rank that
+/// fails alone (a file it could not write), so the others do not wait for it
+/// forever. Without MPI it returns and the caller exits as usual.
+void hearth_ranks_abort(int code);
+
 #ifdef __cplusplus
 }
 #endif
