@@ -125,13 +125,13 @@ int main(int argc, char **argv) {
         hearth_ranks_init(&argc, &argv);
         const int st = cmd_run(argc - 1, argv + 1);
         if (st && hearth_ranks_size() > 1) {
-            /* A failure on one rank alone (a file rank 0 could not write) would leave the
-             * others waiting in the next exchange: stop them all. A failure every rank
-             * shares (a guard stop) is reported by rank 0; the others give it a moment
-             * to print the diagnosis before the abort that ends them all. */
+            /* A failure on one rank alone (a file rank 0 could not write) leaves the
+             * others waiting in the next exchange, where MPI_Finalize would wait for
+             * them too. Leaving without it makes mpirun end every rank, with this
+             * status. (MPI_Abort did the same but crashed OpenMPI 4.1's mpirun when
+             * two ranks called it at once, as a guard stop on every rank does.) */
             fflush(stdout), fflush(stderr);
-            if (hearth_ranks_rank() > 0) sleep(5);
-            hearth_ranks_abort(st);
+            _exit(st);
         }
         hearth_ranks_finalize();
         return st;

@@ -718,10 +718,6 @@ int hearth_ranks_size(void);
 int hearth_ranks_built(void);
 /// Leave the ranks (MPI_Finalize) after every scene is freed. Safe without MPI and twice.
 void hearth_ranks_finalize(void);
-/// Stop every rank at once (MPI_Abort) with exit status code: for a rank that
-/// fails alone (a file it could not write), so the others do not wait for it
-/// forever. Without MPI it returns and the caller exits as usual.
-void hearth_ranks_abort(int code);
 
 #ifdef __cplusplus
 }

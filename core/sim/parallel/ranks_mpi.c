@@ -62,10 +62,6 @@ void hearth_ranks_finalize(void) {
     started = 0;
 }
 
-void hearth_ranks_abort(int code) {
-    if (started && nranks > 1) MPI_Abort(MPI_COMM_WORLD, code);
-}
-
 int ranks_size(void) { return nranks; }
 int ranks_rank(void) { return rank_id; }
 
