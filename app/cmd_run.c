@@ -315,6 +315,7 @@ int cmd_run(int argc, char **argv) {
     if (status == 0 && !a.quiet) fprintf(stderr, "hearth run: done; outputs in %s/\n", a.out);
     hl_close_state(L);
     app_ranks_cleanup(scratch);
+    app_ranks_report(&a);
     return status;
 }
 

@@ -45,3 +45,13 @@ static int remove_entry(const char *path, const struct stat *sb, int flag, struc
 void app_ranks_cleanup(const char *scratch) {
     if (scratch && scratch[0]) nftw(scratch, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
 }
+
+void app_ranks_report(const run_args *a) {
+    if (hearth_ranks_size() == 1 || hearth_ranks_rank() > 0) return;
+    double bytes, seconds;
+    hearth_ranks_traffic(&bytes, &seconds);
+    const char *v = getenv("HEARTH_RANKS_REPORT");
+    if (a->quiet && !(v && v[0] == '1')) return;
+    fprintf(stderr, "hearth run: %d MPI ranks; rank 0 received %.3g MB in the exchanges, %.3g s inside them\n",
+            hearth_ranks_size(), bytes / 1e6, seconds);
+}

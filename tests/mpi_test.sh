@@ -39,6 +39,22 @@ mpi_elastic_matches_one_rank)
     grep -q "^steps 100 " "$tmp/many.txt" || fail "the $ranks-rank run did not take 100 steps"
     python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 || fail "$ranks ranks differ from one process by more than 1e-12"
     ;;
+mpi_dough_matches_one_rank)
+    # every field live (heat with the oven, water, evaporation, latent heat, CO2); heat explicit, then the CG solve
+    for heat in explicit implicit; do
+        "$hearth" run "$here/mpi/dough.lua" --out "$tmp/one" --quiet --set heat=$heat >"$tmp/one.txt" || fail "one-process run failed ($heat)"
+        mp "$ranks" many dough.lua --set heat=$heat >"$tmp/many.txt" || fail "$ranks-rank run failed ($heat)"
+        cat "$tmp/one.txt" "$tmp/many.txt"
+        grep -q "^steps 100 " "$tmp/many.txt" || fail "the $ranks-rank run did not take 100 steps ($heat)"
+        python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 || fail "$ranks ranks differ from one process ($heat heat)"
+    done
+    ;;
+mpi_elastic_3d_matches_one_rank)
+    "$hearth" run "$here/mpi/elastic_block.lua" --out "$tmp/one" --quiet --set dim=3 >"$tmp/one.txt" || fail "one-process run failed"
+    mp "$ranks" many elastic_block.lua --set dim=3 >"$tmp/many.txt" || fail "$ranks-rank run failed (status $?)"
+    cat "$tmp/one.txt" "$tmp/many.txt"
+    python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 || fail "$ranks ranks differ from one process in 3D"
+    ;;
 mpi_elastic_bit_identical)
     # two N-rank runs, the second with two threads per rank: the same bits
     mp "$ranks" a elastic_block.lua >"$tmp/a.txt" || fail "first run failed"

@@ -718,6 +718,11 @@ int hearth_ranks_size(void);
 int hearth_ranks_built(void);
 /// Leave the ranks (MPI_Finalize) after every scene is freed. Safe without MPI and twice.
 void hearth_ranks_finalize(void);
+/// What this rank's exchanges cost since hearth_ranks_init: bytes received
+/// (the grid sums and particle gathers of every MPM step) and wall-clock
+/// seconds spent inside them, waiting for the other ranks included. 0 and 0
+/// on one rank.
+void hearth_ranks_traffic(double *bytes, double *seconds);
 
 #ifdef __cplusplus
 }

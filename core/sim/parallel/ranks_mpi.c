@@ -23,6 +23,7 @@ static int started, rank_id, nranks = 1;
 static int *counts, *displs, *spans; /* nranks, nranks, 2 nranks */
 static double *sumbuf;
 static size_t sumcap; /* doubles in sumbuf */
+static double traffic_bytes, traffic_seconds; /* received by this rank, and the time inside the exchanges */
 
 static int launched_by_mpirun(void) {
     static const char *const vars[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "MPI_LOCALNRANKS", NULL};
@@ -62,11 +63,17 @@ void hearth_ranks_finalize(void) {
     started = 0;
 }
 
+void hearth_ranks_traffic(double *bytes, double *seconds) {
+    *bytes = traffic_bytes;
+    *seconds = traffic_seconds;
+}
+
 int ranks_size(void) { return nranks; }
 int ranks_rank(void) { return rank_id; }
 
 void ranks_allgather(void *base, size_t elem, const int *first) {
     if (nranks == 1 || elem == 0) return;
+    const double t0 = MPI_Wtime();
     MPI_Datatype t;
     MPI_Type_contiguous((int)elem, MPI_BYTE, &t);
     MPI_Type_commit(&t);
@@ -76,11 +83,14 @@ void ranks_allgather(void *base, size_t elem, const int *first) {
     }
     MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, base, counts, displs, t, MPI_COMM_WORLD);
     MPI_Type_free(&t);
+    traffic_bytes += (double)elem * (double)(first[nranks] - first[0] - counts[rank_id]);
+    traffic_seconds += MPI_Wtime() - t0;
 }
 
 hearth_status ranks_sum_grid(grid *g, int slot_lo, int slot_hi, hearth_error *err) {
     if (nranks == 1) return HEARTH_OK;
     if (slot_hi < slot_lo) slot_hi = slot_lo; /* a rank with no particle blocks writes nothing */
+    const double t0 = MPI_Wtime();
     const int span[2] = {slot_lo, slot_hi};
     MPI_Allgather(span, 2, MPI_INT, spans, 2, MPI_INT, MPI_COMM_WORLD);
     const size_t sd = (size_t)g->nch * (size_t)g->nodes_per_block; /* doubles per storage slot */
@@ -103,6 +113,8 @@ hearth_status ranks_sum_grid(grid *g, int slot_lo, int slot_hi, hearth_error *er
     MPI_Type_commit(&t);
     MPI_Allgatherv(g->data + (size_t)slot_lo * sd, slot_hi - slot_lo, t, sumbuf, counts, displs, t, MPI_COMM_WORLD);
     MPI_Type_free(&t);
+    traffic_bytes += (double)(total - (size_t)counts[rank_id]) * (double)sd * sizeof(double) + 2.0 * sizeof(int) * (nranks - 1);
+    traffic_seconds += MPI_Wtime() - t0; /* the sum below is this rank's own work, not traffic */
     memset(g->data, 0, (size_t)g->nactive * sd * sizeof(double));
     for (int r = 0; r < nranks; r++) {
         double *dst = g->data + (size_t)spans[2 * r] * sd;
