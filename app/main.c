@@ -123,6 +123,13 @@ int main(int argc, char **argv) {
     if (!strcmp(c, "bench")) return cmd_bench(argc - 1, argv + 1);
     if (!strcmp(c, "run")) { /* the one command that runs over mpirun's ranks (docs/scaling.md) */
         hearth_ranks_init(&argc, &argv);
+        const char *world = getenv("OMPI_COMM_WORLD_SIZE") ? getenv("OMPI_COMM_WORLD_SIZE") : getenv("PMI_SIZE");
+        if (!hearth_ranks_built() && world && atoi(world) > 1) { /* N copies would each run the whole scene */
+            fprintf(stderr, "hearth run: started as one of %d MPI ranks, but this hearth was built without MPI; "
+                            "rebuild with libopenmpi-dev installed (meson -Dmpi=enabled), or run it without mpirun\n",
+                    atoi(world));
+            return 2;
+        }
         const int st = cmd_run(argc - 1, argv + 1);
         if (st && hearth_ranks_size() > 1) {
             /* A failure on one rank alone (a file rank 0 could not write) leaves the
