@@ -225,7 +225,7 @@ static lua_State *start(run_args *a, progress *pr, const char *cmd) {
                     .frames_override = (int)a->frames, .quiet = a->quiet, .trusted = a->trust,
                     .sets = a->sets, .progress = on_progress, .progress_ud = pr,
                     .assets_dir = app_assets_dir(), .lua_memory = a->lua_memory, .vtu_dir = a->vtu,
-                    .movie = a->movie};
+                    .movie = a->movie, .in_dir = a->out_shared};
     lua_State *L = hl_new_state(&o, &err);
     if (!L) fprintf(stderr, "hearth %s: %s\n", cmd, err.msg);
     return L;

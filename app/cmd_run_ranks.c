@@ -25,6 +25,7 @@ int app_ranks_follow(run_args *a, char *scratch, size_t n) {
         scratch[0] = '\0';
         return 1;
     }
+    a->out_shared = a->out; /* a checkpoint an earlier run left there is still read from it */
     a->out = scratch;
     a->quiet = 1;
     a->metric_out = NULL;

@@ -35,6 +35,7 @@ typedef struct run_args {
     const char *sets[65];
     int nsets;
     char out_buf[4096], dir_buf[4096];
+    const char *out_shared; /* under mpirun, ranks > 0: rank 0's output folder, read from, never written (cmd_run_ranks.c) */
 } run_args;
 /// Parse them; prints usage errors. Returns 0 ok, 1 when --help was printed, 2 bad usage.
 /// The scene file is required for cmd "run"; the output folder defaults to hearth-out/<scene name>.

@@ -55,6 +55,23 @@ mpi_elastic_3d_matches_one_rank)
     cat "$tmp/one.txt" "$tmp/many.txt"
     python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 || fail "$ranks ranks differ from one process in 3D"
     ;;
+mpi_checkpoint_restores_on_other_ranks)
+    # saved by N ranks (N = 2 in the case names); restored on 1 and on 4, as a
+    # later `mpirun -n M` would: the same 50 steps as the saving run's own
+    mp "$ranks" ck checkpoint.lua >"$tmp/save.txt" || fail "the $ranks-rank run that saves failed"
+    cat "$tmp/save.txt"
+    [ -s "$tmp/ck/ck.bin" ] || fail "no checkpoint in rank 0's output folder"
+    ls "$tmp/ck" | grep -q "tmp" && fail "a temporary file was left in the output folder"
+    for m in 1 4; do
+        rm -f "$tmp/ck/state_loaded.csv"
+        if [ $m = 1 ]; then "$hearth" run "$here/mpi/checkpoint.lua" --out "$tmp/ck" --quiet --set mode=load >"$tmp/load.txt"
+        else mp $m ck checkpoint.lua --set mode=load >"$tmp/load.txt"; fi || fail "restoring on $m rank(s) failed"
+        cat "$tmp/load.txt"
+        grep -q "^load steps 100 " "$tmp/load.txt" || fail "the restored run on $m rank(s) is not at step 100"
+        python3 "$here/mpi_compare.py" "$tmp/ck/state.csv" "$tmp/ck/state_loaded.csv" 1e-12 ||
+            fail "restored on $m rank(s), the run differs from the $ranks-rank run that saved"
+    done
+    ;;
 mpi_elastic_bit_identical)
     # two N-rank runs, the second with two threads per rank: the same bits
     mp "$ranks" a elastic_block.lua >"$tmp/a.txt" || fail "first run failed"
