@@ -49,6 +49,14 @@ mpi_dough_matches_one_rank)
         python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 || fail "$ranks ranks differ from one process ($heat heat)"
     done
     ;;
+mpi_collider_matches_one_rank)
+    # a moving sticky plate (a Lua velocity function), a sticky floor and a grip
+    "$hearth" run "$here/mpi/collider.lua" --out "$tmp/one" --quiet >"$tmp/one.txt" || fail "one-process run failed"
+    mp "$ranks" many collider.lua >"$tmp/many.txt" || fail "$ranks-rank run failed (status $?)"
+    cat "$tmp/one.txt" "$tmp/many.txt"
+    grep -q "^steps 150 " "$tmp/many.txt" || fail "the $ranks-rank run did not take 150 steps"
+    python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 || fail "$ranks ranks differ from one process"
+    ;;
 mpi_elastic_3d_matches_one_rank)
     "$hearth" run "$here/mpi/elastic_block.lua" --out "$tmp/one" --quiet --set dim=3 >"$tmp/one.txt" || fail "one-process run failed"
     mp "$ranks" many elastic_block.lua --set dim=3 >"$tmp/many.txt" || fail "$ranks-rank run failed (status $?)"
