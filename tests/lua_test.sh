@@ -705,6 +705,36 @@ output_options_did_you_mean)
     opt csv "s:run: csv = \"series.csv\" (a file name), got table"
     opt run "s:run: unknown field 'evry'" "did you mean 'every'?"
     ;;
+run_option_errors_name_scene_line)
+    # an s:run output that fails while the run goes (after the option checks
+    # passed) names the scene's s:run line and the output, never the line of
+    # the hearth module that wrote the frame (lua/hearth/run.lua); checked for
+    # each output kind, a check before the run (vtu.every) too, with s:run
+    # called from a function of the scene
+    while IFS='|' read -r opt want; do
+        cat >"$tmp/opts.lua" <<EOF
+local h = require "hearth"
+local s = h.scene { dim = 2, dx = 1 / 16, box = { { 0, 0 }, { 1, 1 } } }
+local m = h.material("elastic", { E = 1e4, density = 1000 })
+s:add { shape = h.box({ 0.3, 0.3 }, { 0.6, 0.6 }), material = m, ppc = 4 }
+local function go() s:run { until_t = 0.01, $opt } end
+go()
+EOF
+        "$hearth" run "$tmp/opts.lua" --quiet --out "$tmp/o" >out.txt 2>err.txt
+        rc=$?
+        expect_rc 1 "$opt"
+        has_msg "$tmp/opts.lua:5: s:run: $want" "$opt"
+        grep -q '^hearth run: \[hearth\]' err.txt && fail "$opt: the message starts in the hearth module: $(head -1 err.txt)"
+    done <<'LIST'
+vtu = {every = -1}|vtu.every = -1; valid range
+png = {field = "nope"}|png: unknown field 'nope'
+png = {range = {5, 1}}|png: range = {5.0, 1.0}; the first must be smaller
+png = {width = 5}|png: width = 5 px; valid range [64, 8192]
+ply = {color = "nope"}|ply:
+ply = {colormap = "nope"}|ply:
+probes = {{"nope", {0.5, 0.5}}}, csv = "a.csv"|probes: unknown field 'nope'
+LIST
+    ;;
 stale_tmp_cleaned)
     # temp files of two dead writers (one in a sub-folder) and of a live one
     sh -c 'exit 0' &

@@ -80,6 +80,39 @@ local function check_run_outputs(o)
 end
 
 
+-- ---- errors of outputs during a run -----------------------------------------
+-- An output that fails while the run goes (a field the scene does not have, a
+-- folder that does not exist, a bad range, a colormap) is the scene's mistake:
+-- its message names the scene's s:run line and the output, not the line of
+-- this file that wrote the frame (error(msg, 2) in a method points at its
+-- caller, which during a run is this file). Marked errors (guard stops,
+-- interrupts) are objects and pass unchanged.
+
+-- "scene.lua:12: ": the first caller of s:run outside the hearth module (a
+-- recipe's s:run is the scene's line that called the recipe).
+local function scene_where()
+  local first
+  for level = 4, 16 do -- 1 pcall, 2 this function, 3 s:run, 4 its caller
+    local _, w = pcall(error, "", level)
+    if w == "" then break end
+    first = first or w
+    if not w:find("^%[hearth%]/") then return w end
+  end
+  return first or ""
+end
+
+local function rethrow(where, what, ok, ...)
+  if ok then return ... end
+  local e = ...
+  if type(e) ~= "string" then error(e, 0) end
+  e = e:gsub("^%[hearth%]/[^:]*:%d+: ", "")
+  e = e:gsub("^s:" .. what .. ": ", ""):gsub("^" .. what .. ": ", "")
+  error(("%ss:run: %s: %s"):format(where, what, e), 0)
+end
+
+-- fn(...) for output what ("png", "vtu", ...), its error placed at where
+local function output(where, what, fn, ...) return rethrow(where, what, pcall(fn, ...)) end
+
 -- ---- particle dumps in runs: s:run{vtu = {...}, ply = {...}} ----------------
 -- Each dump keeps its own cadence (every, default the run's) and counter; the
 -- counter and the VTU's .pvd list live in the scene's state, keyed by the path
@@ -170,17 +203,16 @@ local function dumps_next(specs, t)
 end
 
 -- Write the dumps due at time t (all of them when force: the run's end at rest).
-local function dumps_write(self, specs, t, force)
+local function dumps_write(self, specs, t, force, where)
   for _, d in ipairs(specs) do
     if force or t >= d.next - 1e-9 * d.every then
       local path = d.path:format(d.state.count)
       if d.kind == "vtu" then
-        self:vtu(path)
+        output(where, "vtu", self.vtu, self, path)
         d.state.list[#d.state.list + 1] = { t, path:match("([^/]*)$") }
-        core.write_atomic(d.pvd, pvd_text(d.state.list), "s:run{vtu = ...}")
+        output(where, "vtu", core.write_atomic, d.pvd, pvd_text(d.state.list), "s:run{vtu = ...}")
       else
-        local ok, err = pcall(self.ply, self, path, d.opts)
-        if not ok then error(err, 0) end
+        output(where, "ply", self.ply, self, path, d.opts)
       end
       d.state.count, d.state.last_t = d.state.count + 1, t
       repeat d.next = d.next + d.every until d.next > t + 1e-9 * d.every
@@ -223,13 +255,13 @@ local function movie_option(o, opts)
   return { path = m.path, fps = m.fps or 10, pattern = pattern }
 end
 
-local function movie_write(st, mv, first)
+local function movie_write(st, mv, first, where)
   -- a later s:run with the same movie and frames continues it
   st.movie_first = st.movie_first or {}
   local key = mv.path .. "\0" .. mv.pattern
   st.movie_first[key] = st.movie_first[key] or first
   local from = st.movie_first[key]
-  if st.frame > from then core.movie(mv.pattern, from, st.frame - from, mv.path, mv.fps) end
+  if st.frame > from then output(where, "movie", core.movie, mv.pattern, from, st.frame - from, mv.path, mv.fps) end
 end
 
 --- s:run{until_t = T, every = dt, on_frame = function(frame) ... end, csv = "series.csv",
@@ -243,6 +275,7 @@ function S:run(o)
   check_keys(o, run_keys, "s:run")
   check_run_outputs(o)
   check_dump_outputs(o)
+  local where = scene_where()
   local opts = core.options()
   local mv = movie_option(o, opts)
   local t0 = self:_time()
@@ -276,7 +309,7 @@ function S:run(o)
       -- frames compare: a field without a fixed range (and no range given)
       -- keeps the range its frames have drawn so far, widened as needed
       st.png_range = st.png_range or {}
-      local _, info = self:png(field, frame_path(fr, pf.path or "frame_%04d.png"),
+      local _, info = output(where, "png", self.png, self, field, frame_path(fr, pf.path or "frame_%04d.png"),
         { kind = pf.kind or "particles", width = pf.width, height = pf.height, axis = pf.axis, at = pf.at,
           range = pf.range, colormap = pf.colormap, grow = st.png_range[field] })
       if info then st.png_range[field] = info.range end
@@ -285,7 +318,7 @@ function S:run(o)
       local r = { ("%.9g"):format(stt.t), stt.step, ("%.6g"):format(stt.dt), stt.particles,
         ("%.9g"):format(stt.kinetic), ("%.9g"):format(stt.max_speed) }
       for _, p in ipairs(probes) do
-        local v = self:probe(p[1], p[2])
+        local v = output(where, "probes", self.probe, self, p[1], p[2])
         local m = v
         if type(v) == "table" then -- a vector's magnitude, a tensor's Frobenius norm
           m = 0
@@ -295,7 +328,7 @@ function S:run(o)
         r[#r + 1] = ("%.9g"):format(m)
       end
       rows[#rows + 1] = table.concat(r, ",")
-      core.write_atomic(o.csv, table.concat(rows, "\n") .. "\n", "s:run{csv = ...}")
+      output(where, "csv", core.write_atomic, o.csv, table.concat(rows, "\n") .. "\n", "s:run{csv = ...}")
     end
     if o.on_frame then o.on_frame(fr) end
     st.frame = st.frame + 1
@@ -304,7 +337,7 @@ function S:run(o)
   local first_frame = st.frame
   frame()
   local dumps = run_dumps(self, o, opts, t0, every)
-  dumps_write(self, dumps, t0, false)
+  dumps_write(self, dumps, t0, false, where)
   local next_frame = t0 + every
   local yield_steps = opts.yield and coroutine.isyieldable()
   -- until_rest: the largest particle speed is checked after every batch of
@@ -342,12 +375,12 @@ function S:run(o)
       frame() -- a run that stops at rest ends with a frame of the rest state
       next_frame = next_frame + every
     end
-    dumps_write(self, dumps, stt.t, at_rest)
+    dumps_write(self, dumps, stt.t, at_rest, where)
     core.progress(stt.t, until_t, stt.step, false)
   end
   local stt = self:stats()
   core.progress(stt.t, until_t, stt.step, true)
-  if mv then movie_write(st, mv, first_frame) end
+  if mv then movie_write(st, mv, first_frame, where) end
   st.ran = true
   if rest then stt.at_rest = at_rest end
   return stt
