@@ -735,6 +735,22 @@ ply = {colormap = "nope"}|ply:
 probes = {{"nope", {0.5, 0.5}}}, csv = "a.csv"|probes: unknown field 'nope'
 LIST
     ;;
+nozzle_drawn_in_frames)
+    # h.recipes.nozzle's walls are drawn in the PNG frames in the colliders'
+    # fill and edge colours (none without them), and the stream's particles end
+    # where they end without the walls, bit for bit
+    run nozzle_drawn.lua --out w
+    expect_rc 0 "with walls"
+    run nozzle_drawn.lua --out nw --set walls=false
+    expect_rc 0 "without walls"
+    counts() { python3 "$here/png_check.py" "$1" 400 400 --count 150,152,160 --count 70,72,80 | tail -2 | awk '{s += $2} END {print s}'; }
+    with=$(counts w/f_0001.png) without=$(counts nw/f_0001.png)
+    echo "collider pixels: $with with the nozzle's walls, $without without"
+    [ "$without" -eq 0 ] || fail "collider colours in a frame without colliders: $without pixels"
+    [ "$with" -ge 150 ] || fail "the nozzle's walls are not drawn: $with collider pixels"
+    [ -s w/positions.txt ] && cmp -s w/positions.txt nw/positions.txt || fail "the walls changed the stream's particles"
+    echo "stream: $(wc -l <w/positions.txt) coordinates, identical with and without the walls"
+    ;;
 stale_tmp_cleaned)
     # temp files of two dead writers (one in a sub-folder) and of a live one
     sh -c 'exit 0' &
