@@ -475,7 +475,8 @@ sandbox_write_escapes)
     escape png "$tmp/elsewhere/x.png" "s:png"
     escape save "$tmp/elsewhere/x.ck" "s:save"
     escape csv "$tmp/elsewhere/x.csv" "s:run{csv = ...}"
-    escape frame_png "../../elsewhere/x_%04d.png" "s:png" # the path is named as formatted: x_0000.png
+    # a frame of s:run{png = ...}: the scene's s:run line and the option named; the path as formatted (x_0000.png)
+    escape frame_png "../../elsewhere/x_%04d.png" "escape.lua:19: s:run: png: "
     escape write "$tmp/elsewhere/x" "h.write"
     escape write "sub/../../../elsewhere/x" "h.write"
     escape core_write "$tmp/elsewhere/x" "h.write"
