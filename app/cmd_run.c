@@ -294,7 +294,7 @@ int cmd_run(int argc, char **argv) {
         return 1;
     }
     run_log rec;
-    run_log_start(&rec, &a);
+    run_log_start(&rec, "run", a.argc, a.argv, a.scene, a.out, a.sets, a.nsets);
     int status = 0;
     if (luaL_loadfilex(L, a.scene, "t") != LUA_OK) status = report(L, "run", a.out);
     else if (hl_pcall(L, 0, 0) != LUA_OK) status = report(L, "run", a.out);

@@ -1,7 +1,8 @@
 /* cmd_run_demo.c: the built-in demo scene, embedded so `hearth` works with no
  * files: a jelly disc and a blob of syrup fall onto a ramp and into a cup.
- * `hearth demo` runs it headless with a progress bar and writes PNG frames;
- * the dashboard (cmd_dashboard.c) shows it live. */
+ * `hearth demo` runs it headless with a progress bar and writes PNG frames
+ * (with --movie also a movie of them, through the ffmpeg program) and the run
+ * record (run_log.c); the dashboard (cmd_dashboard.c) shows it live. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,7 +11,9 @@
 
 #include "commands.h"
 #include "hearth/hearth.h"
+#include "hearth_lua.h"
 #include "progress.h"
+#include "run_log.h"
 
 
 hearth_scene *app_demo_scene(hearth_error *err) {
@@ -67,16 +70,20 @@ fail:
 }
 
 int cmd_demo(int argc, char **argv) {
-    const char *out = "hearth-out/demo";
+    const char *out = "hearth-out/demo", *movie = NULL;
     double until = 1.5;
     long frames = 30;
     int quiet = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "--help")) {
-            printf("usage: hearth [demo] [--out DIR] [--until T] [--frames N] [--threads N] [--quiet]\n"
+            printf("usage: hearth [demo] [--out DIR] [--until T] [--frames N] [--movie FILE] [--threads N] [--quiet]\n"
                    "Runs the built-in demo scene (a jelly disc and syrup falling into a cup) headless,\n"
-                   "writing PNG frames coloured by speed to DIR (default hearth-out/demo).\n");
+                   "writing PNG frames coloured by speed to DIR (default hearth-out/demo) and the run\n"
+                   "record DIR/run.log and DIR/run.json.\n"
+                   "  --movie FILE the frames also become the movie FILE (under DIR unless absolute; .mp4,\n"
+                   "               10 fps) through the ffmpeg program; without ffmpeg a notice says so and\n"
+                   "               the frames stay\n");
             return 0;
         }
         if (i + 1 >= argc && strcmp(a, "--quiet")) {
@@ -84,6 +91,14 @@ int cmd_demo(int argc, char **argv) {
             return 2;
         }
         if (!strcmp(a, "--out")) out = argv[++i];
+        else if (!strcmp(a, "--movie")) {
+            movie = argv[++i];
+            const char *base = strrchr(movie, '/'), *dot = strrchr(base ? base : movie, '.');
+            if (!dot || !dot[1]) { /* ffmpeg picks the container from it */
+                fprintf(stderr, "hearth demo: --movie %s needs an extension naming the container, e.g. demo.mp4\n", movie);
+                return 2;
+            }
+        }
         else if (!strcmp(a, "--until")) {
             char *end;
             until = strtod(argv[++i], &end);
@@ -114,6 +129,8 @@ int cmd_demo(int argc, char **argv) {
         hearth_scene_destroy(s);
         return 1;
     }
+    run_log rec;
+    run_log_start(&rec, "demo", argc, argv, NULL, out, NULL, 0);
     if (!quiet)
         fprintf(stderr, "hearth demo: %d particles, writing %ld frames to %s/\n", hearth_scene_particle_count(s), frames, out);
     progress pr;
@@ -136,6 +153,7 @@ int cmd_demo(int argc, char **argv) {
         if (rc != HEARTH_OK) {
             progress_finish(&pr, st.t, st.step);
             fprintf(stderr, "hearth demo: %s\n", err.msg);
+            run_log_message(&rec, err.msg);
             status = rc == HEARTH_ERR_GUARD ? 3 : 1;
             break;
         }
@@ -148,6 +166,7 @@ int cmd_demo(int argc, char **argv) {
         hearth_picture_info info;
         if (hearth_render(s, &pd, path, &info, &err)) {
             fprintf(stderr, "hearth demo: %s\n", err.msg);
+            run_log_message(&rec, err.msg);
             status = 1;
             break;
         }
@@ -159,6 +178,31 @@ int cmd_demo(int argc, char **argv) {
             fprintf(stderr, "hearth demo: done: t = %.3g s in %ld steps, %.1f s wall; frames in %s/\n", st.t, st.step,
                     progress_wall() - pr.t0_wall, out);
     }
+    if (status == 0 && movie) { /* as hearth run --movie: 10 frames a second, the frames stay */
+        char in[4200], mpath[8400], msg[9000];
+        snprintf(in, sizeof in, "%s/frame_%%04d.png", out);
+        if (movie[0] == '/') snprintf(mpath, sizeof mpath, "%s", movie);
+        else snprintf(mpath, sizeof mpath, "%s/%s", out, movie);
+        char *slash = strrchr(mpath, '/');
+        if (slash) { /* a movie in a subfolder of the outputs */
+            *slash = '\0';
+            int bad = hearth_mkdir_p(mpath, &err);
+            *slash = '/';
+            if (bad) {
+                fprintf(stderr, "hearth demo: %s\n", err.msg);
+                run_log_message(&rec, err.msg);
+                status = 1;
+            }
+        }
+        int mrc = status ? 0 : hl_movie_encode(in, 0, frames + 1, mpath, 10.0, movie, msg, sizeof msg);
+        if (mrc) {
+            fprintf(stderr, "hearth demo: %s\n", msg);
+            if (mrc < 0) status = 1, run_log_message(&rec, msg);
+        } else if (!status && !quiet) fprintf(stderr, "hearth demo: movie %s\n", mpath);
+    }
+    hearth_scene_stats(s, &st);
+    run_log_stats(&rec, &st);
+    run_log_write(&rec, status);
     hearth_scene_destroy(s);
     return status;
 }

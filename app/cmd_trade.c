@@ -45,6 +45,7 @@
 #include "hearth/hearth.h"
 #include "hearth/plot.h"
 #include "progress.h"
+#include "run_log.h"
 
 #define MAX_KNOBS 12
 #define MAX_VALUES 32
@@ -716,6 +717,27 @@ static void print_table(const trade *T) {
     }
 }
 
+/* The trade's run record (run_log.c): the steps of all its runs, and how many
+ * runs the guard stopped or failed otherwise. */
+static void trade_record(const trade *T, run_log *rec, int status) {
+    int guard = 0, other = 0;
+    rec->have_scene = 1;
+    for (int i = 0; i < T->nr; i++) {
+        if (T->r[i].steps > 0) rec->steps += T->r[i].steps;
+        guard += T->r[i].st == RS_GUARD;
+        other += T->r[i].st != RS_OK && T->r[i].st != RS_GUARD;
+    }
+    snprintf(rec->guard, sizeof rec->guard, guard ? "stopped %d of %d runs" : "ok", guard, T->nr);
+    for (int i = 0; i < T->nr && !rec->nplugins; i++) { /* the plugins the runs loaded, from a run's own record */
+        char dir[4200], path[4300];
+        run_dir(T, i, dir, sizeof dir);
+        snprintf(path, sizeof path, "%s/run.log", dir);
+        run_log_plugins_from(rec, path);
+    }
+    if (other) snprintf(rec->message, sizeof rec->message, "%d of %d runs failed otherwise (see trade.csv)", other, T->nr);
+    run_log_write(rec, status);
+}
+
 int cmd_trade(int argc, char **argv) {
     trade T;
     int rc = parse(&T, argc, argv);
@@ -745,12 +767,17 @@ int cmd_trade(int argc, char **argv) {
         free(T.r);
         return 1;
     }
+    run_log rec;
+    run_log_start(&rec, "trade", argc, argv, T.scene, T.out, T.sets, T.nsets);
+    rec.runs = T.nr, rec.jobs = T.jobs, rec.threads = T.threads;
+    rec.status_1 = "a run did not finish, or the results could not be written";
     if (!T.quiet)
         fprintf(stderr, "trade: %s, %d runs, %d at a time with %d thread%s each; metric %s, reference %s\n", T.scene, T.nr,
                 T.jobs, T.threads, T.threads > 1 ? "s" : "", T.metric, T.reference);
     rc = run_all(&T);
     int arc = analyse(&T);
     if (arc) {
+        trade_record(&T, &rec, arc);
         free(T.r);
         return arc;
     }
@@ -763,6 +790,7 @@ int cmd_trade(int argc, char **argv) {
     for (int i = 0; i < T.nr; i++) failed += T.r[i].st != RS_OK;
     printf("\nwrote %s and %s\n", csv, png);
     if (failed) printf("%d of %d runs did not finish (see the status column and runs/NNN/log.txt)\n", failed, T.nr);
+    trade_record(&T, &rec, rc || failed ? 1 : 0);
     free(T.r);
     return rc || failed ? 1 : 0;
 }

@@ -111,6 +111,11 @@ enum { HL_PATH_MKDIRS = 1, HL_PATH_AS_IS = 2 };
 const char *hl_out_path(lua_State *L, const char *call, const char *path, int flags, char *buf, size_t n);
 /* a path a scene reads: relative paths resolve under the output folder (absolute ones stay) */
 const char *hl_in_path(lua_State *L, const char *path, char *buf, size_t n);
+/* Encode PNG frames (in: a printf pattern, frames first .. first+count-1) into
+ * the movie out with the ffmpeg program (found on PATH). shown names the movie in messages.
+ * 0 written, 1 no ffmpeg (msg: a notice, the frames stay), -1 failed (msg). */
+int hl_movie_encode(const char *in, long first, long count, const char *out, double fps, const char *shown, char *msg,
+                    size_t n);
 /* a marked error object (kind "guard" or "usage") with message msg; see hl_error_message */
 int hl_raise_kind(lua_State *L, const char *kind, const char *msg);
 int hl_raise(lua_State *L, const hearth_error *err);

@@ -280,30 +280,25 @@ static int l_write_atomic(lua_State *L) {
     return 1;
 }
 
-/* core.movie(pattern, first, count, path, fps): encode the PNG frames
- * pattern % first .. first+count-1 (a printf pattern with one %d or %0Nd,
- * relative to the output folder) into the movie path with the ffmpeg program.
+/* Encode the PNG frames in_pattern % first .. first+count-1 (a printf pattern
+ * with one %d or %0Nd) into the movie out_path with the ffmpeg program.
  * ffmpeg runs from an argv, never through a shell, since both paths are the
  * user's. It writes a temp file beside the movie (same extension, so ffmpeg
  * picks the same container), renamed over the movie when it is whole.
- * Returns true, or false and a message when ffmpeg is not installed (the
- * frames stay; a missing encoder is not a failed run). A failed encode raises. */
-static int l_movie(lua_State *L) {
-    const char *pattern = luaL_checkstring(L, 1);
-    lua_Integer first = luaL_checkinteger(L, 2), count = luaL_checkinteger(L, 3);
-    const char *path = luaL_checkstring(L, 4);
-    double fps = luaL_checknumber(L, 5);
-    char in[4096], out[4096], tmp[4200], in_arg[4200], out_arg[4300], first_s[32], count_s[32], fps_s[32];
-    hl_in_path(L, pattern, in, sizeof in);
-    if (!hl_out_path(L, "movie", path, HL_PATH_MKDIRS, out, sizeof out)) return 0;
+ * shown is the movie's name in messages (as the user wrote it). Returns 0
+ * written, 1 ffmpeg is not installed (msg says so and where the frames are:
+ * a missing encoder is not a failed run), -1 a failed encode (msg). */
+int hl_movie_encode(const char *in, long first, long count, const char *out, double fps, const char *shown, char *msg,
+                    size_t n) {
+    char tmp[4200], in_arg[4200], out_arg[4300], first_s[32], count_s[32], fps_s[32];
     const char *slash = strrchr(out, '/'), *base = slash ? slash + 1 : out;
     const char *ext = strrchr(base, '.');
     snprintf(tmp, sizeof tmp, "%.*s.%s.tmp%ld%s", (int)(base - out), out, base, (long)getpid(), ext ? ext : "");
     /* a leading "./" keeps a relative path that starts with '-' from reading as an option */
     snprintf(in_arg, sizeof in_arg, "%s%s", in[0] == '/' ? "" : "./", in);
     snprintf(out_arg, sizeof out_arg, "file:%s", tmp); /* file: keeps "x:y.mp4" from naming a protocol */
-    snprintf(first_s, sizeof first_s, "%lld", (long long)first);
-    snprintf(count_s, sizeof count_s, "%lld", (long long)count);
+    snprintf(first_s, sizeof first_s, "%ld", first);
+    snprintf(count_s, sizeof count_s, "%ld", count);
     snprintf(fps_s, sizeof fps_s, "%.9g", fps);
     char *argv[] = {"ffmpeg", "-nostdin", "-hide_banner", "-loglevel", "error", "-y", "-framerate", fps_s,
                     "-f", "image2", "-pattern_type", "sequence", /* never a glob: '*' in a folder name stays literal */
@@ -318,27 +313,49 @@ static int l_movie(lua_State *L) {
         char *ds = strrchr(dir, '/');
         if (ds) *ds = '\0';
         else snprintf(dir, sizeof dir, ".");
-        lua_pushboolean(L, 0);
-        lua_pushfstring(L, "movie %s not written: the ffmpeg program is not installed (Debian package ffmpeg); the frames are in %s",
-                        path, dir);
-        fprintf(stderr, "hearth: %s\n", lua_tostring(L, -1)); /* a notice, not an error: the run goes on */
-        return 2;
+        snprintf(msg, n, "movie %s not written: the ffmpeg program is not installed (Debian package ffmpeg); the frames are in %s",
+                 shown, dir);
+        return 1;
     }
-    if (rc) return luaL_error(L, "movie %s: cannot start ffmpeg: %s", path, strerror(rc));
+    if (rc) return snprintf(msg, n, "movie %s: cannot start ffmpeg: %s", shown, strerror(rc)), -1;
     int status;
     while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) return luaL_error(L, "movie %s: waiting for ffmpeg: %s", path, strerror(errno));
+        if (errno != EINTR) return snprintf(msg, n, "movie %s: waiting for ffmpeg: %s", shown, strerror(errno)), -1;
     if (!WIFEXITED(status) || WEXITSTATUS(status)) {
         remove(tmp);
         if (WIFSIGNALED(status))
-            return luaL_error(L, "movie %s not written: ffmpeg was killed by signal %d", path, WTERMSIG(status));
-        return luaL_error(L, "movie %s not written: ffmpeg exited with status %d (its message is above); the frames are "
-                             "%s from number %d", path, WEXITSTATUS(status), in, (int)first);
+            return snprintf(msg, n, "movie %s not written: ffmpeg was killed by signal %d", shown, WTERMSIG(status)), -1;
+        snprintf(msg, n, "movie %s not written: ffmpeg exited with status %d (its message is above); the frames are "
+                         "%s from number %ld", shown, WEXITSTATUS(status), in, first);
+        return -1;
     }
     if (rename(tmp, out)) {
         int e = errno;
         remove(tmp);
-        return luaL_error(L, "movie %s: cannot rename the finished file into place: %s", path, strerror(e));
+        return snprintf(msg, n, "movie %s: cannot rename the finished file into place: %s", shown, strerror(e)), -1;
+    }
+    return 0;
+}
+
+/* core.movie(pattern, first, count, path, fps): hl_movie_encode of the
+ * frames (pattern relative to the output folder) into the movie path (through
+ * hl_out_path). Returns true, or false and a message when ffmpeg is not
+ * installed (the frames stay). A failed encode raises. */
+static int l_movie(lua_State *L) {
+    const char *pattern = luaL_checkstring(L, 1);
+    lua_Integer first = luaL_checkinteger(L, 2), count = luaL_checkinteger(L, 3);
+    const char *path = luaL_checkstring(L, 4);
+    double fps = luaL_checknumber(L, 5);
+    char in[4096], out[4096], msg[9000];
+    hl_in_path(L, pattern, in, sizeof in);
+    if (!hl_out_path(L, "movie", path, HL_PATH_MKDIRS, out, sizeof out)) return 0;
+    int rc = hl_movie_encode(in, (long)first, (long)count, out, fps, path, msg, sizeof msg);
+    if (rc < 0) return luaL_error(L, "%s", msg);
+    if (rc == 1) {
+        fprintf(stderr, "hearth: %s\n", msg); /* a notice, not an error: the run goes on */
+        lua_pushboolean(L, 0);
+        lua_pushstring(L, msg);
+        return 2;
     }
     lua_pushboolean(L, 1);
     return 1;

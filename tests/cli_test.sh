@@ -263,6 +263,109 @@ PY
         "$tmp/o/run.json" || fail "run.json of a failed run"
     ls "$tmp/o" | grep -q '\.tmp\.' && fail "a temp file was left: $(ls "$tmp/o")"
     ;;
+run_record_lists_outputs)
+    # run.json lists every file the run wrote under its outputs (PNG frames, CSV,
+    # VTU and .pvd, PLY, the movie, a checkpoint) with its size, and nothing older
+    # (a file left by an earlier run); with version, git revision, peak memory and
+    # the guard's verdict. A guard-stopped run records "stopped" and the diagnosis.
+    cat >"$tmp/all.lua" <<'EOF'
+local h = require "hearth"
+local P = h.params { E = 1e4 }
+local s = h.scene { dim = 2, dx = 1 / 16, box = { { 0, 0 }, { 1, 1 } } }
+local m = h.material("elastic", { E = P.E, density = 1000 })
+s:add { shape = h.box({ 0.3, 0.3 }, { 0.6, 0.6 }), material = m, ppc = 4 }
+s:run { until_t = 0.02, every = 0.01, png = { path = "f_%04d.png", width = 160, height = 120 }, csv = "series.csv",
+        vtu = { path = "vtu/p_%04d.vtu" }, ply = true, movie = "clip.mp4" }
+s:save("end.h5")
+EOF
+    mkdir -p "$tmp/o" && echo old >"$tmp/o/stale.txt" && touch -d '1 hour ago' "$tmp/o/stale.txt"
+    "$hearth" run "$tmp/all.lua" --out "$tmp/o" --quiet --set E=2e4 2>"$tmp/err" || fail "the run failed: $(cat "$tmp/err")"
+    has_ffmpeg=0; command -v ffmpeg >/dev/null && has_ffmpeg=1
+    python3 - "$tmp/o" $has_ffmpeg <<'PY' || fail "run.json: $(cat "$tmp/o/run.json")"
+import json, os, sys
+out, has_ffmpeg = sys.argv[1], sys.argv[2] == "1"
+r = json.load(open(os.path.join(out, "run.json")))
+listed = {f["path"]: f["bytes"] for f in r["files"]}
+on_disk = {}
+for d, _, names in os.walk(out):
+    for n in names:
+        p = os.path.relpath(os.path.join(d, n), out)
+        if p not in ("run.json", "run.log", "stale.txt"):
+            on_disk[p] = os.path.getsize(os.path.join(out, p))
+want = {"f_0000.png", "f_0001.png", "f_0002.png", "series.csv", "vtu/p.pvd", "vtu/p_0000.vtu", "vtu/p_0002.vtu",
+        "particles_0000.ply", "particles_0002.ply", "end.h5"} | ({"clip.mp4"} if has_ffmpeg else set())
+assert want <= set(listed), f"missing from run.json: {sorted(want - set(listed))}"
+assert listed == on_disk, f"run.json lists {sorted(listed.items())}, the folder holds {sorted(on_disk.items())}"
+assert "stale.txt" not in listed, "a file older than the run is listed"
+assert ("clip.mp4" in listed) == has_ffmpeg, "the movie is listed without ffmpeg, or missing with it"
+assert r["command"] == "run" and r["sets"] == {"E": "2e4"}, r
+assert r["hearth_version"] and isinstance(r["git_revision"], str) and r["git_revision"], r
+assert 1 < r["peak_memory_mb"] < 4096, r["peak_memory_mb"]
+assert r["guard"] == {"verdict": "ok", "rollbacks": 0, "diagnosis": ""}, r["guard"]
+assert r["steps"] > 0 and r["status"] == 0, r
+print(f"run.json lists {len(listed)} files ({'with' if has_ffmpeg else 'without'} ffmpeg), revision {r['git_revision']}, "
+      f"peak {r['peak_memory_mb']:.1f} MB")
+PY
+    grep -q "^  f_0001.png ([0-9]* bytes)$" "$tmp/o/run.log" || fail "run.log does not list the frames: $(cat "$tmp/o/run.log")"
+    grep -q "^peak memory: [0-9.]* MB$" "$tmp/o/run.log" || fail "run.log has no peak memory"
+    grep -q "^hearth [0-9.]* (revision [^)]*) run record$" "$tmp/o/run.log" || fail "run.log's first line: $(head -1 "$tmp/o/run.log")"
+    # the guard's verdict of a run it stopped (the soft block of cli_guard_soft_block_jump)
+    cat >"$tmp/g.lua" <<'EOF'
+local h = require "hearth"
+local s = h.scene { dim = 2, dx = 0.2, box = { { 0, 0 }, { 4, 4 } }, dt_max = 0.5 }
+local m = h.material("elastic", { E = 0.01, nu = 0.3, density = 1000 })
+s:add { shape = h.box({ 1.6, 1.0 }, { 2.4, 1.6 }), material = m, ppc = 4 }
+s:collider { shape = h.plane({ 0, 0.6 }, { 0, 1 }), mode = "separate", friction = 0.3 }
+s:run { until_t = 0.5 }
+EOF
+    "$hearth" run "$tmp/g.lua" --out "$tmp/g" --quiet 2>/dev/null; rc=$?
+    [ $rc -eq 3 ] || fail "the guard run exited $rc, expected 3"
+    python3 -c 'import json,sys; g=json.load(open(sys.argv[1]))["guard"]; assert g["verdict"]=="stopped" and "CFL violated" in g["diagnosis"], g' \
+        "$tmp/g/run.json" || fail "guard verdict: $(cat "$tmp/g/run.json")"
+    grep -q "^guard: stopped, 0 rollbacks: .*CFL violated" "$tmp/g/run.log" || fail "run.log guard line: $(cat "$tmp/g/run.log")"
+    ;;
+run_record_for_demo)
+    # hearth demo writes the same record: built-in scene (null), frames listed, steps, peak memory, guard
+    "$hearth" demo --out "$tmp/d" --until 0.02 --frames 2 --threads 1 --quiet || fail "demo exited $?"
+    python3 - "$tmp/d" <<'PY' || fail "demo run.json: $(cat "$tmp/d/run.json")"
+import json, os, sys
+r = json.load(open(os.path.join(sys.argv[1], "run.json")))
+assert r["command"] == "demo" and r["scene"] is None and r["argv"][:2] == ["hearth", "demo"], r
+assert [f["path"] for f in r["files"]] == ["frame_0000.png", "frame_0001.png", "frame_0002.png"], r["files"]
+assert sorted(p["name"] for p in r["plugins"]) == ["elastic", "newtonian"], r["plugins"]
+assert r["threads"] == 1 and r["steps"] > 0 and abs(r["sim_time_s"] - 0.02) < 1e-9 and r["particles"] > 1000, r
+assert r["peak_memory_mb"] > 1 and r["guard"]["verdict"] == "ok" and r["status"] == 0 and r["git_revision"], r
+print(f"demo run.json: {r['steps']} steps, {len(r['files'])} files, peak {r['peak_memory_mb']:.1f} MB")
+PY
+    grep -q "^hearth [0-9.]* (revision .*) demo record$" "$tmp/d/run.log" || fail "demo run.log: $(head -1 "$tmp/d/run.log")"
+    ;;
+demo_movie_written_with_ffmpeg)
+    # hearth demo --movie: its frames become an H.264 movie (as hearth run --movie), listed in run.json
+    if ! command -v ffmpeg >/dev/null || ! command -v ffprobe >/dev/null; then
+        echo "skip: ffmpeg/ffprobe not installed (Debian package ffmpeg)"; exit 77
+    fi
+    "$hearth" demo --out "$tmp/d" --until 0.02 --frames 3 --movie clip/demo.mp4 --quiet 2>"$tmp/err" || fail "demo --movie: $(cat "$tmp/err")"
+    ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames,codec_name -of default=nw=1 \
+        "$tmp/d/clip/demo.mp4" >"$tmp/probe" || fail "ffprobe cannot read the movie"
+    grep -qx "nb_read_frames=4" "$tmp/probe" && grep -qx "codec_name=h264" "$tmp/probe" || fail "movie: $(cat "$tmp/probe")"
+    python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); assert "clip/demo.mp4" in [f["path"] for f in r["files"]], r["files"]' \
+        "$tmp/d/run.json" || fail "the movie is not in run.json"
+    [ "$(ls "$tmp"/d/frame_*.png | wc -l)" -eq 4 ] || fail "the frames did not stay"
+    "$hearth" demo --out "$tmp/d" --movie noext --quiet 2>"$tmp/err"; rc=$?
+    [ $rc -eq 2 ] && grep -q "needs an extension naming the container" "$tmp/err" || fail "--movie noext: exit $rc: $(cat "$tmp/err")"
+    ;;
+demo_movie_without_ffmpeg_says_so)
+    # no ffmpeg on PATH: the demo succeeds, says why there is no movie, and the frames stay
+    mkdir "$tmp/empty_bin"
+    PATH="$tmp/empty_bin" "$hearth" demo --out "$tmp/d" --until 0.02 --frames 2 --movie demo.mp4 --quiet 2>"$tmp/err"; rc=$?
+    [ $rc -eq 0 ] || fail "exit $rc without ffmpeg, expected 0: $(cat "$tmp/err")"
+    grep -qF "hearth demo: movie demo.mp4 not written: the ffmpeg program is not installed (Debian package ffmpeg); the frames are in $tmp/d" "$tmp/err" ||
+        fail "message: $(cat "$tmp/err")"
+    [ "$(ls "$tmp"/d/frame_*.png | wc -l)" -eq 3 ] || fail "expected the 3 PNG frames: $(ls "$tmp/d")"
+    [ -e "$tmp/d/demo.mp4" ] && fail "a movie appeared without ffmpeg"
+    ls -a "$tmp/d" | grep -q '\.tmp' && fail "a temp file was left: $(ls -a "$tmp/d")"
+    echo "without ffmpeg: $(cat "$tmp/err")"
+    ;;
 cli_bad_usage)
     "$hearth" frobnicate 2>/dev/null; [ $? -eq 2 ] || fail "unknown command should exit 2"
     "$hearth" bench --cells x 2>"$tmp/e"; [ $? -eq 2 ] || fail "bad number should exit 2"

@@ -475,7 +475,8 @@ sandbox_write_escapes)
     escape png "$tmp/elsewhere/x.png" "s:png"
     escape save "$tmp/elsewhere/x.ck" "s:save"
     escape csv "$tmp/elsewhere/x.csv" "s:run{csv = ...}"
-    escape frame_png "../../elsewhere/x_%04d.png" "s:png" # the path is named as formatted: x_0000.png
+    # a frame of s:run{png = ...}: the scene's s:run line and the option named; the path as formatted (x_0000.png)
+    escape frame_png "../../elsewhere/x_%04d.png" "escape.lua:19: s:run: png: "
     escape write "$tmp/elsewhere/x" "h.write"
     escape write "sub/../../../elsewhere/x" "h.write"
     escape core_write "$tmp/elsewhere/x" "h.write"
@@ -704,6 +705,52 @@ output_options_did_you_mean)
     opt probes "s:run: probes[1]: unknown field 'pont'" "did you mean 'point'?"
     opt csv "s:run: csv = \"series.csv\" (a file name), got table"
     opt run "s:run: unknown field 'evry'" "did you mean 'every'?"
+    ;;
+run_option_errors_name_scene_line)
+    # an s:run output that fails while the run goes (after the option checks
+    # passed) names the scene's s:run line and the output, never the line of
+    # the hearth module that wrote the frame (lua/hearth/run.lua); checked for
+    # each output kind, a check before the run (vtu.every) too, with s:run
+    # called from a function of the scene
+    while IFS='|' read -r opt want; do
+        cat >"$tmp/opts.lua" <<EOF
+local h = require "hearth"
+local s = h.scene { dim = 2, dx = 1 / 16, box = { { 0, 0 }, { 1, 1 } } }
+local m = h.material("elastic", { E = 1e4, density = 1000 })
+s:add { shape = h.box({ 0.3, 0.3 }, { 0.6, 0.6 }), material = m, ppc = 4 }
+local function go() s:run { until_t = 0.01, $opt } end
+go()
+EOF
+        "$hearth" run "$tmp/opts.lua" --quiet --out "$tmp/o" >out.txt 2>err.txt
+        rc=$?
+        expect_rc 1 "$opt"
+        has_msg "$tmp/opts.lua:5: s:run: $want" "$opt"
+        grep -q '^hearth run: \[hearth\]' err.txt && fail "$opt: the message starts in the hearth module: $(head -1 err.txt)"
+    done <<'LIST'
+vtu = {every = -1}|vtu.every = -1; valid range
+png = {field = "nope"}|png: unknown field 'nope'
+png = {range = {5, 1}}|png: range = {5.0, 1.0}; the first must be smaller
+png = {width = 5}|png: width = 5 px; valid range [64, 8192]
+ply = {color = "nope"}|ply:
+ply = {colormap = "nope"}|ply:
+probes = {{"nope", {0.5, 0.5}}}, csv = "a.csv"|probes: unknown field 'nope'
+LIST
+    ;;
+nozzle_drawn_in_frames)
+    # h.recipes.nozzle's walls are drawn in the PNG frames in the colliders'
+    # fill and edge colours (none without them), and the stream's particles end
+    # where they end without the walls, bit for bit
+    run nozzle_drawn.lua --out w
+    expect_rc 0 "with walls"
+    run nozzle_drawn.lua --out nw --set walls=false
+    expect_rc 0 "without walls"
+    counts() { python3 "$here/png_check.py" "$1" 400 400 --count 150,152,160 --count 70,72,80 | tail -2 | awk '{s += $2} END {print s}'; }
+    with=$(counts w/f_0001.png) without=$(counts nw/f_0001.png)
+    echo "collider pixels: $with with the nozzle's walls, $without without"
+    [ "$without" -eq 0 ] || fail "collider colours in a frame without colliders: $without pixels"
+    [ "$with" -ge 150 ] || fail "the nozzle's walls are not drawn: $with collider pixels"
+    [ -s w/positions.txt ] && cmp -s w/positions.txt nw/positions.txt || fail "the walls changed the stream's particles"
+    echo "stream: $(wc -l <w/positions.txt) coordinates, identical with and without the walls"
     ;;
 stale_tmp_cleaned)
     # temp files of two dead writers (one in a sub-folder) and of a live one

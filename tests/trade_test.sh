@@ -41,6 +41,28 @@ trade_heat_slab_order)
     png_ok o/trade.png
     grep -q "centre_temperature" out.txt || fail "no table printed: $(cat out.txt)"
     ;;
+run_record_for_trade)
+    # hearth trade writes its own run.json beside trade.csv: the command line, --set, the
+    # plugins its runs loaded, threads per run, jobs, all runs' steps, peak memory (its
+    # own and the largest run's), the guard's verdict and the files (trade.csv, trade.png, runs/)
+    "$hearth" trade "$knobs" --metric particles --knob ppc=1,4 --set size=0.125 --jobs 2 --out o --quiet >out.txt 2>err.txt \
+        || fail "exit $?: $(cat err.txt)"
+    python3 - o <<'PY' || fail "trade run.json: $(cat o/run.json)"
+import csv, json, os, sys
+out = sys.argv[1]
+r = json.load(open(os.path.join(out, "run.json")))
+rows = list(csv.DictReader(open(os.path.join(out, "trade.csv"))))
+assert r["command"] == "trade" and r["sets"] == {"size": "0.125"} and "ppc=1,4" in r["argv"], r
+assert r["runs"] == 2 and r["jobs"] == 2 and r["threads"] >= 1, r
+assert "elastic" in [p["name"] for p in r["plugins"]] and all(p["abi"] >= 1 for p in r["plugins"]), r["plugins"]
+assert r["steps"] == sum(int(x["steps"]) for x in rows) > 0, (r["steps"], [x["steps"] for x in rows])
+assert r["peak_memory_mb"] > 1 and r["peak_memory_largest_run_mb"] >= max(float(x["peak_mb"]) for x in rows) - 0.1, r
+assert r["guard"]["verdict"] == "ok" and r["status"] == 0 and r["git_revision"], r
+files = [f["path"] for f in r["files"]]
+assert {"trade.csv", "trade.png", "runs/000/run.json", "runs/001/run.json"} <= set(files), files
+print(f"trade run.json: {r['runs']} runs, {r['steps']} steps, {len(files)} files, plugins {[p['name'] for p in r['plugins']]}")
+PY
+    ;;
 trade_finest_reference)
     # the finest run is the reference: its error is 0; a knob without a
     # refinement measure (a scene parameter) gives no order

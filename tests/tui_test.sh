@@ -59,6 +59,37 @@ tui_colorterm_truecolor)
         wait_for "no -direct terminal"
     fi
     ;;
+tui_probe_panel_scrolls)
+    # a wet dough has more live fields than the probe panel has rows at 80x24:
+    # the panel says which it shows and PgDn / PgUp (and > / <) page through
+    # them, so every field, saturation and water_pressure included, can be read
+    TUI_COLS=80 TUI_ROWS=24 start "'$src/tests/tui/wet.lua'"
+    wait_for "paused"
+    wait_for "fields 1-[0-9]+ of [0-9]+  PgUp/PgDn"
+    total=$(screen | sed -n 's/.*fields 1-[0-9]* of \([0-9]*\) .*/\1/p' | head -1)
+    seen="$tmp/seen.txt"
+    : >"$seen"
+    probe_names() { screen | sed -n '/^probe at /,/^fields [0-9]/p' | sed '1d;$d' | awk '{print $1}' >>"$seen"; }
+    probe_names
+    for _ in 1 2 3 4 5 6; do
+        screen | grep -Eq "fields [0-9]+-$total of $total" && break
+        keys NPage
+        sleep 0.3
+        probe_names
+    done
+    screen | grep -Eq "fields [0-9]+-$total of $total" || fail "PgDn never reached the last of $total fields"
+    n=$(sort -u "$seen" | wc -l)
+    echo "the panel showed $n of $total fields over its pages: $(sort -u "$seen" | tr '\n' ' ')"
+    [ "$n" -eq "$total" ] || fail "the pages showed $n distinct fields, the panel counts $total"
+    for f in temperature saturation water_pressure porosity; do
+        grep -qx "$f" "$seen" || fail "field $f never shown (names cut?)"
+    done
+    keys PPage
+    keys '<'
+    keys '<'
+    sleep 0.3
+    wait_for "fields 1-[0-9]+ of $total"
+    ;;
 tui_80x24_layout)
     # the smallest screen the dashboard supports: the key bar keeps help and
     # quit, the run state does not overwrite the status line, and the floor

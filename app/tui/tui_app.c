@@ -273,6 +273,13 @@ static void key(tui_app *a, int k) {
     case TUI_KEY_UP: move_cursor(a, 0, 1); tui_sample_probes(a); break;
     case TUI_KEY_DOWN: move_cursor(a, 0, -1); tui_sample_probes(a); break;
     case 'p': pin(a); tui_sample_probes(a); break;
+    case TUI_KEY_PAGE_DOWN: case '>': /* the probe panel's next page of fields (tui_view.c clamps it) */
+        a->probe_first += a->probe_page > 0 ? a->probe_page : 1;
+        break;
+    case TUI_KEY_PAGE_UP: case '<':
+        a->probe_first -= a->probe_page > 0 ? a->probe_page : 1;
+        if (a->probe_first < 0) a->probe_first = 0;
+        break;
     case '+': case '=': if (a->zoom < 8) a->zoom *= 2; break;
     case '-': case '_': if (a->zoom > 1) a->zoom /= 2; break;
     case 's': save_views(a); break;

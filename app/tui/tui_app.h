@@ -53,6 +53,8 @@ typedef struct tui_app {
     double cursor[3];  ///< probe cursor (m)
     tui_field_probe fp[TUI_MAX_FIELDS];
     int nfp;
+    int probe_first;   ///< the first field the probe panel shows (PgUp / PgDn scroll it)
+    int probe_page;    ///< fields the panel showed at the last draw (a PgDn's step)
     double pin[TUI_MAX_PINS][3];
     tui_field_probe pin_probe[TUI_MAX_PINS];
     int npins;

@@ -134,6 +134,8 @@ static int map_key(wint_t k, int is_key) {
         case KEY_DOWN: return TUI_KEY_DOWN;
         case KEY_HOME: return TUI_KEY_HOME;
         case KEY_END: return TUI_KEY_END;
+        case KEY_PPAGE: return TUI_KEY_PAGE_UP;
+        case KEY_NPAGE: return TUI_KEY_PAGE_DOWN;
         case KEY_BACKSPACE: return TUI_KEY_BACKSPACE;
         case KEY_DC: return TUI_KEY_DELETE;
         case KEY_ENTER: return TUI_KEY_ENTER;

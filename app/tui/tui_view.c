@@ -315,25 +315,36 @@ static void draw_probes(tui_app *a, const tui_rect *r) {
     attron(A_BOLD);
     put(r->y, r->x, r->w, line);
     attroff(A_BOLD);
-    int row = 1, spark = r->w - 36;
+    int row = 1, spark = r->w - 38;
     if (spark > TUI_HIST) spark = TUI_HIST;
     uint32_t cps[TUI_HIST];
     int pin_rows = a->npins ? a->npins + 1 : 0;
-    int rows_for_fields = r->h - pin_rows - row, shown = a->nfp;
-    if (shown > rows_for_fields) shown = rows_for_fields - 1; /* the last row says how many are hidden */
-    for (int i = 0; i < shown; i++, row++) {
+    /* every live field: when they do not all fit, a page of them and a last
+     * row saying which (PgUp / PgDn, or < / >, turn the pages) */
+    int rows_for_fields = r->h - pin_rows - row, shown = a->nfp, first = 0;
+    if (shown > rows_for_fields) {
+        shown = rows_for_fields - 1 > 0 ? rows_for_fields - 1 : 0;
+        first = a->probe_first;
+        if (first > a->nfp - shown) first = a->nfp - shown;
+        if (first < 0) first = 0;
+    }
+    a->probe_first = first, a->probe_page = shown;
+    for (int i = first; i < first + shown; i++, row++) {
         const tui_field_probe *p = &a->fp[i];
         const char *unit = hearth_field_unit(p->name);
-        if (isnan(p->value)) snprintf(line, sizeof line, "%-13.13s %10s %-7.7s", p->name, "-", unit ? unit : "");
-        else snprintf(line, sizeof line, "%-13.13s %10.4g %-7.7s", p->name, p->value, unit ? unit : "");
+        /* 15 columns: water_pressure, gas_pressure and the like whole */
+        if (isnan(p->value)) snprintf(line, sizeof line, "%-15.15s %10s %-7.7s", p->name, "-", unit ? unit : "");
+        else snprintf(line, sizeof line, "%-15.15s %10.4g %-7.7s", p->name, p->value, unit ? unit : "");
         put(r->y + row, r->x, r->w, line);
         if (spark > 4) {
             tui_sparkline(p->hist, p->n, spark, a->mode < TUI_256, cps);
-            put_codes(r->y + row, r->x + 34, cps, spark);
+            put_codes(r->y + row, r->x + 36, cps, spark);
         }
     }
-    if (shown >= 0 && shown < a->nfp) {
-        snprintf(line, sizeof line, "+%d more fields (f / F puts one in a view)", a->nfp - shown);
+    if (shown < a->nfp && row < r->h - pin_rows) {
+        if (shown > 0)
+            snprintf(line, sizeof line, "fields %d-%d of %d  PgUp/PgDn or </> scroll", first + 1, first + shown, a->nfp);
+        else snprintf(line, sizeof line, "%d fields: the panel is too short to list them", a->nfp);
         put(r->y + row++, r->x, r->w, line);
     }
     if (a->npins) {
@@ -348,7 +359,7 @@ static void draw_probes(tui_app *a, const tui_rect *r) {
         put(r->y + row, r->x, r->w, line);
         if (spark > 4) {
             tui_sparkline(p->hist, p->n, spark, a->mode < TUI_256, cps);
-            put_codes(r->y + row, r->x + 34, cps, spark);
+            put_codes(r->y + row, r->x + 36, cps, spark);
         }
     }
 }
@@ -403,6 +414,7 @@ static void draw_help(int cols, int rows) {
         "f / F      next field, left / right view",
         "[ / ]      move the slice plane   x y z  slice axis (3D)",
         "arrows     move the probe cursor  p      pin a probe (up to 4)",
+        "PgUp/PgDn  scroll the probe list (also < and >)",
         "+ / -      zoom in / out at the cursor",
         "s          save both views as PNG c      write a checkpoint",
         ": or Tab   Lua prompt (Esc leaves it; Tab completes there)",

@@ -40,7 +40,14 @@ end
 --- `speed` from time `from` to `to`. Every spacing / speed seconds one row of
 --- particles (spacing = dx / sqrt(ppc)) leaves the slot; rows sit on the
 --- seeding lattice, so the stream is evenly filled. Returns the number of rows.
---- opts: x, y, width, speed, material, dx (the scene's), from (0), to, ppc (4).
+--- The nozzle's two walls are a collider (separate, no friction), wall thick
+--- and length long, from 2 dx above the exit up: frames and the dashboard draw
+--- it as they draw the other colliders, and material that piles back up to the
+--- nozzle meets it. No grid node the falling stream reaches lies in the walls,
+--- so the stream is the one the nozzle gave without them (the fronts of
+--- nozzle.lua are unchanged to the last digit).
+--- opts: x, y, width, speed, material, dx (the scene's), from (0), to, ppc (4),
+--- walls (true), wall (max(dx, width / 4), m), length (2 width, m).
 function R.nozzle(s, o)
   for _, k in ipairs { "x", "y", "width", "speed", "dx", "to" } do
     if type(o[k]) ~= "number" then error(("recipes.nozzle: %s (a number) is required"):format(k), 2) end
@@ -53,6 +60,12 @@ function R.nozzle(s, o)
   local period, from = hp / o.speed, o.from or 0
   local rows = math.floor((o.to - from) / period)
   local shape = core.box({ o.x - o.width / 2, y }, { o.x + o.width / 2, y + hp })
+  if o.walls ~= false then
+    local t, len = o.wall or math.max(o.dx, o.width / 4), o.length or 2 * o.width
+    local l, r, yb = o.x - o.width / 2, o.x + o.width / 2, y + 2 * o.dx
+    s:collider { shape = core.union(core.box({ l - t, yb }, { l, yb + len }), core.box({ r, yb }, { r + t, yb + len })),
+      mode = "separate", friction = 0 }
+  end
   local function emit(sc)
     sc:add { shape = shape, material = o.material, ppc = ppc, jitter = 0, velocity = { 0, -o.speed } }
   end

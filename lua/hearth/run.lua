@@ -1,0 +1,388 @@
+-- hearth.run: s:run and its outputs: frames (png), CSV series with probes,
+-- particle dumps (vtu with a .pvd collection, ply) and movies. Loaded by
+-- init.lua, which passes the scene methods and the checking helpers it shares:
+--   (require "hearth.run")(S, {check_keys = ..., check_number = ..., ...})
+-- Errors point at the scene's line (level 2 from a method, 3 from a check
+-- called by one), as in init.lua.
+local core = ...
+
+return function(S, u)
+local check_keys, check_number, check_vec, nearest = u.check_keys, u.check_number, u.check_vec, u.nearest
+local fire_events, host_yield = u.fire_events, u.host_yield
+-- ---- runs, frames and series ------------------------------------------------
+
+local frame_mt = {}
+frame_mt.__index = frame_mt
+local function frame_path(fr, path)
+  if type(path) ~= "string" then error("frame: expected a file path", 3) end
+  if path:find("%%") then return path:format(fr.index) end
+  return path
+end
+function frame_mt:png(field, path, opts) return self.scene:png(field, frame_path(self, path), opts) end
+function frame_mt:vtu(path) return self.scene:vtu(frame_path(self, path)) end
+function frame_mt:ply(path, opts) return self.scene:ply(frame_path(self, path), opts) end
+function frame_mt:save(path) return self.scene:save(frame_path(self, path)) end
+function frame_mt:stats() return self.scene:stats() end
+
+local function default_field(s)
+  for _, f in ipairs(s:stats().fields) do
+    if f == "temperature" then return f end
+  end
+  return "speed"
+end
+
+local run_keys = { until_t = true, every = true, on_frame = true, csv = true, probes = true, png = true, until_rest = true,
+  vtu = true, ply = true, movie = true }
+local run_png_keys = { field = true, path = true, kind = true, width = true, height = true, axis = true, at = true,
+  range = true, colormap = true }
+local png_keys = { kind = true, width = true, height = true, axis = true, at = true, range = true, colormap = true, grow = true }
+
+-- s:png checks its options here first, for the "did you mean" (the C method checks again)
+local raw_png = S.png
+function S:png(field, path, opts)
+  if type(opts) == "table" then check_keys(opts, png_keys, "s:png") end
+  local ok, r, info = pcall(raw_png, self, field, path, opts)
+  if not ok then error(r, 2) end -- the scene's line, not this one
+  return r, info
+end
+
+-- s:run's output tables: a misspelt option must fail, not be ignored
+local function check_run_outputs(o)
+  if o.png ~= nil then
+    if type(o.png) ~= "table" then error(("s:run: png = {field = ..., path = ...}, got %s"):format(type(o.png)), 3) end
+    check_keys(o.png, run_png_keys, "s:run: png", 4)
+    if o.png.colormap ~= nil then -- before the run, not at its first frame
+      local ok, err = pcall(core.colormap, o.png.colormap, 0)
+      if not ok then error("s:run: png: " .. tostring(err), 3) end
+    end
+  end
+  if o.csv ~= nil and type(o.csv) ~= "string" then
+    error(("s:run: csv = \"series.csv\" (a file name), got %s"):format(type(o.csv)), 3)
+  end
+  if o.probes ~= nil then
+    if type(o.probes) ~= "table" then error(("s:run: probes = {{field, {x, y}}, ...}, got %s"):format(type(o.probes)), 3) end
+    for k, p in pairs(o.probes) do
+      if math.type(k) ~= "integer" then
+        error(("s:run: probes: unknown field '%s'; probes is a list {{field, {x, y}}, ...}"):format(tostring(k)), 3)
+      end
+      if type(p) ~= "table" or type(p[1]) ~= "string" then
+        error(("s:run: probes[%s] = {field, {x, y}}, e.g. {\"speed\", {0.5, 0.2}}"):format(tostring(k)), 3)
+      end
+      for pk in pairs(p) do
+        if pk ~= 1 and pk ~= 2 then
+          local near = type(pk) == "string" and nearest(pk, { field = true, point = true })
+          error(("s:run: probes[%s]: unknown field '%s'%s (a probe is {field, {x, y}})"):format(tostring(k), tostring(pk),
+            near and ("; did you mean '" .. near .. "'? write it as the first or second entry") or ""), 3)
+        end
+      end
+    end
+  end
+end
+
+
+-- ---- errors of outputs during a run -----------------------------------------
+-- An output that fails while the run goes (a field the scene does not have, a
+-- folder that does not exist, a bad range, a colormap) is the scene's mistake:
+-- its message names the scene's s:run line and the output, not the line of
+-- this file that wrote the frame (error(msg, 2) in a method points at its
+-- caller, which during a run is this file). Marked errors (guard stops,
+-- interrupts) are objects and pass unchanged.
+
+-- "scene.lua:12: ": the first caller of s:run outside the hearth module (a
+-- recipe's s:run is the scene's line that called the recipe).
+local function scene_where()
+  local first
+  for level = 4, 16 do -- 1 pcall, 2 this function, 3 s:run, 4 its caller
+    local _, w = pcall(error, "", level)
+    if w == "" then break end
+    first = first or w
+    if not w:find("^%[hearth%]/") then return w end
+  end
+  return first or ""
+end
+
+local function rethrow(where, what, ok, ...)
+  if ok then return ... end
+  local e = ...
+  if type(e) ~= "string" then error(e, 0) end
+  e = e:gsub("^%[hearth%]/[^:]*:%d+: ", "")
+  e = e:gsub("^s:" .. what .. ": ", ""):gsub("^" .. what .. ": ", "")
+  error(("%ss:run: %s: %s"):format(where, what, e), 0)
+end
+
+-- fn(...) for output what ("png", "vtu", ...), its error placed at where
+local function output(where, what, fn, ...) return rethrow(where, what, pcall(fn, ...)) end
+
+-- ---- particle dumps in runs: s:run{vtu = {...}, ply = {...}} ----------------
+-- Each dump keeps its own cadence (every, default the run's) and counter; the
+-- counter and the VTU's .pvd list live in the scene's state, keyed by the path
+-- pattern, so a second s:run with the same pattern continues the series and
+-- its collection. The .pvd is rewritten whole (atomically) after every frame:
+-- a run opened in ParaView while it goes, or after a kill, has a collection
+-- listing exactly the frames on disk.
+
+local run_dump_keys = {
+  vtu = { path = true, every = true, pvd = true },
+  ply = { path = true, every = true, color = true, range = true, colormap = true },
+}
+local dump_default_path = { vtu = "particles_%04d.vtu", ply = "particles_%04d.ply" }
+
+local function check_dump_outputs(o)
+  for _, kind in ipairs { "vtu", "ply" } do
+    local d = o[kind]
+    if d ~= nil and d ~= true then
+      if type(d) ~= "table" then
+        error(("s:run: %s = {path = \"%s\", every = ...} or true, got %s"):format(kind, dump_default_path[kind], type(d)), 3)
+      end
+      check_keys(d, run_dump_keys[kind], "s:run: " .. kind, 4)
+      if d.path ~= nil and (type(d.path) ~= "string" or not d.path:find("%%0?%d*d")) then
+        error(("s:run: %s.path = %s: a file pattern with the frame number as %%d or %%04d, e.g. \"%s\""):format(
+          kind, tostring(d.path), dump_default_path[kind]), 3)
+      end
+      if d.every ~= nil then check_number(d.every, "s:run: " .. kind .. ".every", 1e-12, 1e12, "s", 4) end
+      if d.pvd ~= nil and (type(d.pvd) ~= "string" or d.pvd:find("/") or not d.pvd:find("%.pvd$")) then
+        error(("s:run: vtu.pvd = %s: a file name ending in .pvd (it is written beside the frames)"):format(tostring(d.pvd)), 3)
+      end
+    end
+  end
+end
+
+-- "out/bake_%04d.vtu" -> "out/bake.pvd"; a pattern that is only the number -> "frames.pvd"
+local function pvd_path(path, name)
+  local dir, base = path:match("^(.*/)([^/]*)$")
+  dir, base = dir or "", base or path
+  if name then return dir .. name end
+  local stem = base:gsub("%%0?%d*d", ""):gsub("%.vtu$", ""):gsub("[_%-%.]+$", "")
+  return dir .. (stem ~= "" and stem or "frames") .. ".pvd"
+end
+
+local function xml_attr(v) return (v:gsub("&", "&amp;"):gsub("<", "&lt;"):gsub(">", "&gt;"):gsub('"', "&quot;")) end
+
+-- VTK's collection format, which ParaView (and vtkXMLCollectionReader) read
+-- as one data set with a time axis: one DataSet per frame, file relative to
+-- the .pvd. %.17g: timestep reads back as the frame's TimeValue, bit for bit.
+local function pvd_text(list)
+  local out = { '<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">\n<Collection>\n' }
+  for _, e in ipairs(list) do
+    out[#out + 1] = ('<DataSet timestep="%.17g" group="" part="0" file="%s"/>\n'):format(e[1], xml_attr(e[2]))
+  end
+  out[#out + 1] = "</Collection>\n</VTKFile>\n"
+  return table.concat(out)
+end
+
+-- The dumps one run writes: {kind, path, every, next, state, opts}.
+local function run_dumps(self, o, opts, t0, every)
+  local specs = {}
+  for _, kind in ipairs { "vtu", "ply" } do
+    local d = o[kind]
+    if d == nil and kind == "vtu" and opts.vtu_dir then d = { path = opts.vtu_dir .. "/frame_%04d.vtu" } end
+    if d ~= nil then
+      if d == true then d = {} end
+      local st = self:_state()
+      st.dumps = st.dumps or {}
+      local path = d.path or dump_default_path[kind]
+      local key = kind .. "\0" .. path
+      st.dumps[key] = st.dumps[key] or { count = 0, list = {} }
+      -- a series continued by another s:run already has this instant (the
+      -- last run's end): a second file at the same time would give the .pvd
+      -- two data sets for one time step
+      local e = d.every or every
+      local first = st.dumps[key].last_t == t0 and t0 + e or t0
+      specs[#specs + 1] = { kind = kind, path = path, every = e, next = first, state = st.dumps[key],
+        pvd = kind == "vtu" and pvd_path(path, d.pvd) or nil,
+        opts = kind == "ply" and { color = d.color, range = d.range, colormap = d.colormap } or nil }
+    end
+  end
+  return specs
+end
+
+-- Earliest time a dump is due (the run steps land on it, as on frames).
+local function dumps_next(specs, t)
+  for _, d in ipairs(specs) do t = math.min(t, d.next) end
+  return t
+end
+
+-- Write the dumps due at time t (all of them when force: the run's end at rest).
+local function dumps_write(self, specs, t, force, where)
+  for _, d in ipairs(specs) do
+    if force or t >= d.next - 1e-9 * d.every then
+      local path = d.path:format(d.state.count)
+      if d.kind == "vtu" then
+        output(where, "vtu", self.vtu, self, path)
+        d.state.list[#d.state.list + 1] = { t, path:match("([^/]*)$") }
+        output(where, "vtu", core.write_atomic, d.pvd, pvd_text(d.state.list), "s:run{vtu = ...}")
+      else
+        output(where, "ply", self.ply, self, path, d.opts)
+      end
+      d.state.count, d.state.last_t = d.state.count + 1, t
+      repeat d.next = d.next + d.every until d.next > t + 1e-9 * d.every
+    end
+  end
+end
+
+-- ---- movies: s:run{movie = "bake.mp4"} or hearth run --movie FILE ----------
+-- The run's PNG frames are encoded by the ffmpeg program (lua_output.c's
+-- core.movie); without ffmpeg a notice says so and the frames stay.
+local movie_keys = { path = true, fps = true }
+local function movie_option(o, opts)
+  local m, from = o.movie, "s:run: movie"
+  if m == nil and opts.movie then m, from = opts.movie, "--movie" end
+  if m == nil then return nil end
+  if type(m) == "string" then m = { path = m } end
+  if type(m) ~= "table" then
+    error(("s:run: movie = \"bake.mp4\" or {path = \"bake.mp4\", fps = 10}, got %s"):format(type(m)), 3)
+  end
+  check_keys(m, movie_keys, "s:run: movie", 4)
+  if type(m.path) ~= "string" or m.path == "" then
+    error("s:run: movie.path = \"bake.mp4\", the movie file (its extension picks the container)", 3)
+  end
+  if not m.path:match("%.%w+$") then -- ffmpeg picks the container from it
+    error(("s:run: movie.path = %q needs an extension naming the container, e.g. \"bake.mp4\""):format(m.path), 3)
+  end
+  if m.fps ~= nil then check_number(m.fps, "s:run: movie.fps", 0.01, 1000, "frames/s", 4) end
+  if not o.png then
+    error(("%s = %q needs the run's PNG frames: add png = {field = ..., path = \"frame_%%04d.png\"} to s:run")
+      :format(from, m.path), 3)
+  end
+  local pattern = o.png.path or "frame_%04d.png"
+  local n = 0
+  for _ in pattern:gmatch("%%0?%d*d") do n = n + 1 end
+  local _, pct = pattern:gsub("%%", "")
+  if n ~= 1 or pct ~= 1 then
+    error(("%s = %q: png.path = %q must number its frames with one %%d or %%04d, so each frame is its own file")
+      :format(from, m.path, pattern), 3)
+  end
+  return { path = m.path, fps = m.fps or 10, pattern = pattern }
+end
+
+local function movie_write(st, mv, first, where)
+  -- a later s:run with the same movie and frames continues it
+  st.movie_first = st.movie_first or {}
+  local key = mv.path .. "\0" .. mv.pattern
+  st.movie_first[key] = st.movie_first[key] or first
+  local from = st.movie_first[key]
+  if st.frame > from then output(where, "movie", core.movie, mv.pattern, from, st.frame - from, mv.path, mv.fps) end
+end
+
+--- s:run{until_t = T, every = dt, on_frame = function(frame) ... end, csv = "series.csv",
+---       probes = {{"speed", {x, y}}, ...}, png = {field = "speed", path = "frame_%04d.png", kind = "particles"},
+---       vtu = {path = "bake_%04d.vtu", every = dt, pvd = "bake.pvd"},
+---       ply = {path = "bake_%04d.ply", every = dt, color = "temperature", range = {20, 200}, colormap = "inferno"},
+---       movie = "bake.mp4" or {path = "bake.mp4", fps = 10}}
+function S:run(o)
+  o = o or {}
+  if type(o) ~= "table" then error("s:run: expected a table", 2) end
+  check_keys(o, run_keys, "s:run")
+  check_run_outputs(o)
+  check_dump_outputs(o)
+  local where = scene_where()
+  local opts = core.options()
+  local mv = movie_option(o, opts)
+  local t0 = self:_time()
+  local until_t = opts.until_t or o.until_t
+  if until_t == nil then error("s:run: until_t is required (or pass --until to hearth run)", 2) end
+  check_number(until_t, "s:run: until_t", 0, 1e12, "s")
+  local rest = o.until_rest
+  if rest ~= nil then check_number(rest, "s:run: until_rest", 0, 1e12, "m/s") end
+  local span = until_t - t0
+  local every = o.every
+  if opts.frames then every = span / opts.frames end
+  if every ~= nil then check_number(every, "s:run: every", 1e-12, 1e12, "s") end
+  every = every or math.max(span, 1e-12)
+  local st = self:_state()
+  local probes = o.probes or {}
+  local rows
+  if o.csv then
+    local head = { "t", "step", "dt", "particles", "kinetic", "max_speed" }
+    for _, p in ipairs(probes) do
+      local v = check_vec(p[2], "s:run: probe point")
+      head[#head + 1] = ("%s@%g:%g:%g"):format(p[1], v[1], v[2], v[3])
+    end
+    rows = { table.concat(head, ",") }
+  end
+  local function frame()
+    local stt = self:stats()
+    local fr = setmetatable({ t = stt.t, index = st.frame, scene = self }, frame_mt)
+    if o.png then
+      local pf = o.png
+      local field = pf.field or default_field(self)
+      -- frames compare: a field without a fixed range (and no range given)
+      -- keeps the range its frames have drawn so far, widened as needed
+      st.png_range = st.png_range or {}
+      local _, info = output(where, "png", self.png, self, field, frame_path(fr, pf.path or "frame_%04d.png"),
+        { kind = pf.kind or "particles", width = pf.width, height = pf.height, axis = pf.axis, at = pf.at,
+          range = pf.range, colormap = pf.colormap, grow = st.png_range[field] })
+      if info then st.png_range[field] = info.range end
+    end
+    if rows then
+      local r = { ("%.9g"):format(stt.t), stt.step, ("%.6g"):format(stt.dt), stt.particles,
+        ("%.9g"):format(stt.kinetic), ("%.9g"):format(stt.max_speed) }
+      for _, p in ipairs(probes) do
+        local v = output(where, "probes", self.probe, self, p[1], p[2])
+        local m = v
+        if type(v) == "table" then -- a vector's magnitude, a tensor's Frobenius norm
+          m = 0
+          for _, c in ipairs(v) do m = m + c * c end
+          m = math.sqrt(m)
+        end
+        r[#r + 1] = ("%.9g"):format(m)
+      end
+      rows[#rows + 1] = table.concat(r, ",")
+      output(where, "csv", core.write_atomic, o.csv, table.concat(rows, "\n") .. "\n", "s:run{csv = ...}")
+    end
+    if o.on_frame then o.on_frame(fr) end
+    st.frame = st.frame + 1
+  end
+  fire_events(self)
+  local first_frame = st.frame
+  frame()
+  local dumps = run_dumps(self, o, opts, t0, every)
+  dumps_write(self, dumps, t0, false, where)
+  local next_frame = t0 + every
+  local yield_steps = opts.yield and coroutine.isyieldable()
+  -- until_rest: the largest particle speed is checked after every batch of
+  -- steps (at most 64) and at frames; the run is at rest when it is below the
+  -- tolerance and not larger than at the check before. The second condition
+  -- keeps a body released from rest (slow in its first steps, but
+  -- accelerating) from counting as settled.
+  local at_rest, last_speed = false, math.huge
+  while self:_time() < until_t - 1e-12 * math.max(1, until_t) and not at_rest do
+    local now = self:_time()
+    local target = dumps_next(dumps, math.min(next_frame, until_t))
+    local ev = st.events[1]
+    if ev and ev.t > now and ev.t < target then target = ev.t end
+    if yield_steps then
+      local t = self:_time()
+      while t < target do -- one step at a time, the host draws in between
+        host_yield()
+        self:_advance(target, 1)
+        local t1 = self:_time()
+        if t1 == t then break end -- no step was possible (dt underflow): as _advance would
+        t = t1
+      end
+    else
+      -- at most 64 steps before the progress bar moves; steps land only on the
+      -- real target (a frame, an event, the end), so progress never shortens dt
+      self:_advance(target, 64)
+    end
+    fire_events(self)
+    local stt = self:stats()
+    if rest then
+      at_rest = stt.max_speed < rest and stt.max_speed <= last_speed
+      last_speed = stt.max_speed
+    end
+    if stt.t >= next_frame - 1e-9 * every or at_rest then
+      frame() -- a run that stops at rest ends with a frame of the rest state
+      next_frame = next_frame + every
+    end
+    dumps_write(self, dumps, stt.t, at_rest, where)
+    core.progress(stt.t, until_t, stt.step, false)
+  end
+  local stt = self:stats()
+  core.progress(stt.t, until_t, stt.step, true)
+  if mv then movie_write(st, mv, first_frame, where) end
+  st.ran = true
+  if rest then stt.at_rest = at_rest end
+  return stt
+end
+end
