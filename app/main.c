@@ -124,7 +124,8 @@ int main(int argc, char **argv) {
     if (!strcmp(c, "run")) { /* the one command that runs over mpirun's ranks (docs/scaling.md) */
         hearth_ranks_init(&argc, &argv);
         const char *world = getenv("OMPI_COMM_WORLD_SIZE") ? getenv("OMPI_COMM_WORLD_SIZE") : getenv("PMI_SIZE");
-        if (!hearth_ranks_built() && world && atoi(world) > 1) { /* N copies would each run the whole scene */
+        const char *no_ranks = getenv("HEARTH_NO_RANKS");
+        if (!hearth_ranks_built() && world && atoi(world) > 1 && !(no_ranks && no_ranks[0] == '1')) { /* N copies would each run the whole scene */
             fprintf(stderr, "hearth run: started as one of %d MPI ranks, but this hearth was built without MPI; "
                             "rebuild with libopenmpi-dev installed (meson -Dmpi=enabled), or run it without mpirun\n",
                     atoi(world));

@@ -26,6 +26,11 @@ static size_t sumcap; /* doubles in sumbuf */
 static double traffic_bytes, traffic_seconds; /* received by this rank, and the time inside the exchanges */
 
 static int launched_by_mpirun(void) {
+    /* a hearth that an MPI job's rank starts as a child process (hearth trade
+     * running its ladder over ranks) inherits the rank's environment: it must
+     * not join that job */
+    const char *no = getenv("HEARTH_NO_RANKS");
+    if (no && no[0] == '1') return 0;
     static const char *const vars[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "MPI_LOCALNRANKS", NULL};
     for (int k = 0; vars[k]; k++)
         if (getenv(vars[k])) return 1;
