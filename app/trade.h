@@ -32,7 +32,7 @@ typedef struct trade_run {
     long steps;
     int series, pareto, is_ref;
     int mine; /* run by this process (a worker runs only its share) */
-    char msg[256];
+    char msg[512];
 } trade_run;
 
 typedef enum trade_launcher { TL_LOCAL, TL_SLURM, TL_MPI } trade_launcher;

@@ -220,8 +220,8 @@ static void explain_missing(trade *T, int i, long job, const char *slurm_state) 
         }
         fclose(f);
     }
-    snprintf(r->msg, sizeof r->msg, "Slurm task %d of job %ld left no record%s%s; see %.120s%s%.60s", i, job,
-             slurm_state ? ", state " : "", slurm_state ? slurm_state : "", path, last[0] ? ": " : "", last);
+    snprintf(r->msg, sizeof r->msg, "Slurm task %d of job %ld left no record%s%s%s%s%.200s; see %.200s", i, job,
+             slurm_state ? " (state " : "", slurm_state ? slurm_state : "", slurm_state ? ")" : "", last[0] ? ": " : "", last, path);
 }
 
 static int gather(trade *T, long job, char (*states)[16]) {
