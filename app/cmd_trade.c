@@ -189,10 +189,6 @@ int trade_parse(trade *T, int argc, char **argv) {
         T->scene_arg = i;
     }
     if (!T->scene) return trade_bad_usage("which scene? %s", "usage: hearth trade SCENE.lua --metric NAME");
-    if (access(T->scene, R_OK) != 0) {
-        fprintf(stderr, "hearth trade: cannot read scene '%s': %s\n", T->scene, strerror(errno));
-        return 2;
-    }
     if (T->no_wait && T->launcher != TL_SLURM) return trade_bad_usage("--no-wait is for --launcher slurm%s", "");
     if (T->nlauncher_args && T->launcher == TL_LOCAL)
         return trade_bad_usage("--launcher-arg is for --launcher slurm or mpi (got '%s')", T->launcher_args[0]);
@@ -639,6 +635,10 @@ int cmd_trade(int argc, char **argv) {
     if (argc >= 2 && !strcmp(argv[1], "--worker")) return trade_worker(argc, argv);
     trade T;
     int rc = trade_setup(&T, argc, argv);
+    if (!rc && access(T.scene, R_OK) != 0) { /* here, not in trade_setup: --collect needs no scene */
+        fprintf(stderr, "hearth trade: cannot read scene '%s': %s\n", T.scene, strerror(errno));
+        rc = 2;
+    }
     if (rc) {
         free(T.r);
         return rc == 1 ? 0 : rc;

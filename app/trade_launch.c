@@ -184,6 +184,8 @@ static int args_load(const char *dir, const char *who, trade *T, char **store, c
     *store = buf, *argvp = argv;
     int rc = trade_setup(T, argc, argv);
     if (rc == 1) rc = 2; /* --help cannot be stored */
+    /* the folder where it is now: results copied off the cluster gather too */
+    if (!rc) snprintf(T->out, sizeof T->out, "%s", dir);
     return rc;
 }
 

@@ -167,16 +167,22 @@ trade_mpi_ranks_match_local)
     ;;
 trade_collect_names_missing_runs)
     # --collect on a ladder where one run left no record: the others are gathered, the
-    # missing one is named with its Slurm task output (a fake job: no Slurm needed)
+    # missing one is named with its Slurm task output (a fake job: no Slurm needed).
+    # The folder has moved since (copied off the cluster) and the scene is gone.
+    cp "$knobs" knobs.lua
+    ladder[0]=knobs.lua
     run_local
-    rm local/runs/002/run.txt
-    echo 77 >local/slurm-job.txt
-    printf 'slurmstepd: error: *** JOB 77 ON hearthnode CANCELLED DUE TO TIME LIMIT ***\n' >local/slurm-77_2.out
-    "$hearth" trade --collect local >collect.txt 2>collect.err
+    rm knobs.lua
+    mv local moved
+    rm moved/runs/002/run.txt
+    echo 77 >moved/slurm-job.txt
+    printf 'slurmstepd: error: *** JOB 77 ON hearthnode CANCELLED DUE TO TIME LIMIT ***\n' >moved/slurm-77_2.out
+    "$hearth" trade --collect moved >collect.txt 2>collect.err
     [ $? -eq 1 ] || fail "--collect with a missing run should exit 1: $(cat collect.err)"
-    grep -q "^2,0.25,0.03125,error,.*Slurm task 2 of job 77 left no record: slurmstepd: .*TIME LIMIT \*\*\*; see $tmp/local/slurm-77_2.out\"$" local/trade.csv ||
-        fail "missing run not named: $(cat local/trade.csv)"
-    [ "$(grep -c ',ok,' local/trade.csv)" -eq 3 ] || fail "the 3 recorded runs: $(cat local/trade.csv)"
+    grep -q "^2,0.25,0.03125,error,.*Slurm task 2 of job 77 left no record: slurmstepd: .*TIME LIMIT \*\*\*; see moved/slurm-77_2.out\"$" moved/trade.csv ||
+        fail "missing run not named: $(cat moved/trade.csv)"
+    [ "$(grep -c ',ok,' moved/trade.csv)" -eq 3 ] || fail "the 3 recorded runs: $(cat moved/trade.csv)"
+    grep -q "^ *2 .* error .*left no record" collect.txt || fail "the table names the missing run: $(cat collect.txt)"
     ;;
 trade_launcher_errors)
     # no sbatch / no mpirun on PATH: said before anything runs
