@@ -20,7 +20,12 @@
  * gives the series and observed orders; the plot is a <hearth/plot.h> plot
  * like the rheometer's: a series per refinement ladder (coarse to fine,
  * joined), the Pareto front as rings behind. scripts/trade/ holds the
- * default ladders, docs/trade/ their results. */
+ * default ladders, docs/trade/ their results.
+ *
+ * --launcher slurm|mpi hands the same runs to a Slurm job array or to mpirun
+ * ranks (trade_launch.c); every run, wherever it ran, leaves runs/NNN/run.txt,
+ * and the ladder's arguments are stored as trade.args, so --collect DIR and
+ * the launchers gather into exactly the table a local ladder gives. */
 #ifndef _DEFAULT_SOURCE
 #define _DEFAULT_SOURCE /* wait4 and struct rusage's ru_maxrss */
 #endif
