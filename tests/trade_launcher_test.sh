@@ -116,11 +116,14 @@ EOF
     pids+=($!)
     slurmd -D -N hearthnode >"$c/slurmd.out" 2>&1 &
     pids+=($!)
+    local why="did not start in 20 s"
     for _ in $(seq 100); do
         sinfo -h -o %t 2>/dev/null | grep -q idle && return 0
+        kill -0 "${pids[1]}" 2>/dev/null && kill -0 "${pids[2]}" 2>/dev/null || { why="refused to start"; break; }
         sleep 0.2
     done
-    skip "Slurm did not start in 20 s: slurmctld: $(tail -2 "$c/slurmctld.log" "$c/slurmctld.out" 2>/dev/null | tr '\n' ' ') slurmd: $(tail -2 "$c/slurmd.log" "$c/slurmd.out" 2>/dev/null | tr '\n' ' ')"
+    skip "Slurm $why: $(for f in "$c"/slurmctld.log "$c"/slurmctld.out "$c"/slurmd.log "$c"/slurmd.out; do
+        [ -f "$f" ] && tail -n 2 "$f"; done | tr '\n' ' ')"
 }
 
 case $case_name in
