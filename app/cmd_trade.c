@@ -20,7 +20,12 @@
  * gives the series and observed orders; the plot is a <hearth/plot.h> plot
  * like the rheometer's: a series per refinement ladder (coarse to fine,
  * joined), the Pareto front as rings behind. scripts/trade/ holds the
- * default ladders, docs/trade/ their results. */
+ * default ladders, docs/trade/ their results.
+ *
+ * --launcher slurm|mpi hands the same runs to a Slurm job array or to mpirun
+ * ranks (trade_launch.c); every run, wherever it ran, leaves runs/NNN/run.txt,
+ * and the ladder's arguments are stored as trade.args, so --collect DIR and
+ * the launchers gather into exactly the table a local ladder gives. */
 #ifndef _DEFAULT_SOURCE
 #define _DEFAULT_SOURCE /* wait4 and struct rusage's ru_maxrss */
 #endif
@@ -46,49 +51,16 @@
 #include "hearth/plot.h"
 #include "progress.h"
 #include "run_log.h"
+#include "trade.h"
 
-#define MAX_KNOBS 12
-#define MAX_VALUES 32
-#define MAX_RUNS 4096
-#define MAX_SETS 32
-
-typedef struct knob {
-    char name[64];
-    int n;
-    char *v[MAX_VALUES];
-    char buf[2048];
-} knob;
-
-typedef enum run_state { RS_WAIT, RS_RUNNING, RS_OK, RS_GUARD, RS_ERROR, RS_CRASH } run_state;
-static const char *const state_name[] = {"waiting", "running", "ok", "guard", "error", "crash"};
-
-typedef struct trade_run {
-    int vi[MAX_KNOBS]; /* value index per knob */
-    run_state st;
-    pid_t pid;
-    double t0, wall, metric, ref, err, rel, order, h, peak_mb;
-    long steps;
-    int series, pareto, is_ref;
-    char msg[256];
-} trade_run;
-
-typedef struct trade {
-    const char *scene, *metric, *reference, *until;
-    char out[4096];
-    knob k[MAX_KNOBS];
-    int nk;
-    const char *sets[MAX_SETS];
-    int nsets, jobs, threads, quiet, trust;
-    trade_run *r;
-    int nr;
-    int refine; /* knob index of the refinement knob, or -1 */
-    char analytic[1024];
-} trade;
+const char *const trade_state_name[] = {"waiting", "running", "ok", "guard", "error", "crash"};
 
 static void usage(FILE *f) {
     fprintf(f,
             "usage: hearth trade SCENE.lua --metric NAME [--knob name=v1,v2,...]... [--reference finest|analytic:EXPR]\n"
-            "                    [--out DIR] [--jobs N] [--until T] [--set k=v]... [--quiet] [--trust]\n"
+            "                    [--out DIR] [--jobs N] [--threads N] [--until T] [--set k=v]... [--quiet] [--trust]\n"
+            "                    [--launcher local|slurm|mpi] [--launcher-arg ARG]... [--no-wait]\n"
+            "       hearth trade --collect DIR [--quiet]\n"
             "Runs the scene once for every combination of knob values, each run a separate\n"
             "`hearth run` process, and measures what each setting costs and buys.\n"
             "  --metric NAME   what to measure at the end of a run: a metric the scene declares with\n"
@@ -119,14 +91,25 @@ static void usage(FILE *f) {
             "                  and runs/NNN/ with each run's log and outputs\n"
             "  --jobs N        runs at a time (default: the number of cores); each run gets\n"
             "                  cores/N OpenMP threads so the machine is not oversubscribed\n"
+            "  --threads N     OpenMP threads per run (default: cores/jobs; 1 with --launcher slurm)\n"
             "  --until T, --set k=v, --trust   passed to every run\n"
+            "  --launcher L    where the runs run: local (default: child processes on this machine),\n"
+            "                  slurm (one Slurm job array, `sbatch --array`, a task per run, each\n"
+            "                  --cpus-per-task=THREADS; --jobs N caps the tasks running at once), or\n"
+            "                  mpi (`mpirun -n JOBS`: each rank takes runs until none is left; no MPI\n"
+            "                  library is linked). The out DIR must be on a filesystem every node sees.\n"
+            "  --launcher-arg A   one more argument for sbatch or mpirun, e.g. --launcher-arg\n"
+            "                  --partition=short --launcher-arg --time=2:00:00, or --oversubscribe\n"
+            "  --no-wait       slurm: submit the job array and return; gather later with --collect\n"
+            "  --collect DIR   gather the runs' records in DIR (runs/NNN/run.txt) into the table,\n"
+            "                  trade.csv and trade.png, e.g. after a Slurm job array finished\n"
             "Per run: wall time, steps, peak memory (the run's own), the metric, its error against\n"
             "the reference, and the observed order p = log(e1/e2) / log(h1/h2) between successive\n"
             "refinements of runs that differ only in the refinement knob.\n"
             "Exit status: 0 when every run finished, 1 when some did not, 2 bad usage.\n");
 }
 
-static int bad(const char *fmt, const char *a) {
+int trade_bad_usage(const char *fmt, const char *a) {
     fprintf(stderr, "hearth trade: ");
     fprintf(stderr, fmt, a);
     fprintf(stderr, " (see --help)\n");
@@ -134,20 +117,20 @@ static int bad(const char *fmt, const char *a) {
 }
 
 static int parse_knob(trade *T, const char *text) {
-    if (T->nk == MAX_KNOBS) return bad("at most %s --knob options", "12");
+    if (T->nk == MAX_KNOBS) return trade_bad_usage("at most %s --knob options", "12");
     const char *eq = strchr(text, '=');
-    if (!eq || eq == text || !eq[1]) return bad("--knob needs name=v1,v2,..., got '%s'", text);
+    if (!eq || eq == text || !eq[1]) return trade_bad_usage("--knob needs name=v1,v2,..., got '%s'", text);
     knob *k = &T->k[T->nk];
     memset(k, 0, sizeof *k);
     snprintf(k->name, sizeof k->name, "%.*s", (int)(eq - text), text);
     for (int j = 0; j < T->nk; j++)
-        if (!strcmp(T->k[j].name, k->name)) return bad("--knob %s given twice; list all its values in one option", k->name);
+        if (!strcmp(T->k[j].name, k->name)) return trade_bad_usage("--knob %s given twice; list all its values in one option", k->name);
     snprintf(k->buf, sizeof k->buf, "%s", eq + 1);
     for (char *p = k->buf; p;) {
         char *c = strchr(p, ',');
         if (c) *c = '\0';
-        if (!*p) return bad("--knob has an empty value in '%s'", text);
-        if (k->n == MAX_VALUES) return bad("--knob: at most 32 values in '%s'", text);
+        if (!*p) return trade_bad_usage("--knob has an empty value in '%s'", text);
+        if (k->n == MAX_VALUES) return trade_bad_usage("--knob: at most 32 values in '%s'", text);
         k->v[k->n++] = p;
         p = c ? c + 1 : NULL;
     }
@@ -155,7 +138,7 @@ static int parse_knob(trade *T, const char *text) {
     return 0;
 }
 
-static int parse(trade *T, int argc, char **argv) {
+int trade_parse(trade *T, int argc, char **argv) {
     memset(T, 0, sizeof *T);
     T->reference = "finest";
     T->jobs = -1;
@@ -167,12 +150,16 @@ static int parse(trade *T, int argc, char **argv) {
         }
         if (!strcmp(s, "--quiet")) { T->quiet = 1; continue; }
         if (!strcmp(s, "--trust")) { T->trust = 1; continue; }
+        if (!strcmp(s, "--no-wait")) { T->no_wait = 1; continue; }
+        if (!strcmp(s, "--collect") || !strcmp(s, "--worker"))
+            return trade_bad_usage("%s is a command of its own: hearth trade --collect DIR", s);
         if (s[0] == '-' && s[1] == '-') {
-            static const char *const valued[] = {"--metric", "--knob", "--reference", "--out", "--jobs", "--until", "--set", NULL};
+            static const char *const valued[] = {"--metric", "--knob", "--reference", "--out", "--jobs", "--until", "--set",
+                                                 "--threads", "--launcher", "--launcher-arg", NULL};
             int known = 0;
             for (int k = 0; valued[k]; k++) known |= !strcmp(s, valued[k]);
-            if (!known) return bad("unknown option '%s'", s);
-            if (i + 1 >= argc) return bad("%s needs a value", s);
+            if (!known) return trade_bad_usage("unknown option '%s'", s);
+            if (i + 1 >= argc) return trade_bad_usage("%s needs a value", s);
             const char *v = argv[++i];
             if (!strcmp(s, "--metric")) T->metric = v;
             else if (!strcmp(s, "--knob")) {
@@ -181,33 +168,43 @@ static int parse(trade *T, int argc, char **argv) {
             else if (!strcmp(s, "--out")) snprintf(T->out, sizeof T->out, "%s", v);
             else if (!strcmp(s, "--jobs")) {
                 if ((T->jobs = (int)app_parse_int("trade", "--jobs", v, 1, 256)) < 0) return 2;
+            } else if (!strcmp(s, "--threads")) {
+                if ((T->threads = (int)app_parse_int("trade", "--threads", v, 1, 1024)) < 0) return 2;
+            } else if (!strcmp(s, "--launcher")) {
+                if (!strcmp(v, "local")) T->launcher = TL_LOCAL;
+                else if (!strcmp(v, "slurm")) T->launcher = TL_SLURM;
+                else if (!strcmp(v, "mpi")) T->launcher = TL_MPI;
+                else return trade_bad_usage("--launcher must be local, slurm or mpi, got '%s'", v);
+            } else if (!strcmp(s, "--launcher-arg")) {
+                if (T->nlauncher_args == MAX_LAUNCHER_ARGS) return trade_bad_usage("at most %s --launcher-arg options", "32");
+                T->launcher_args[T->nlauncher_args++] = v;
             } else if (!strcmp(s, "--until")) {
                 char *end;
                 double u = strtod(v, &end);
-                if (*end || !(u > 0)) return bad("--until needs a time > 0 in seconds, got '%s'", v);
+                if (*end || !(u > 0)) return trade_bad_usage("--until needs a time > 0 in seconds, got '%s'", v);
                 T->until = v;
             } else { /* --set */
-                if (!strchr(v, '=') || v[0] == '=') return bad("--set needs name=value, got '%s'", v);
-                if (T->nsets == MAX_SETS) return bad("at most %s --set options", "32");
+                if (!strchr(v, '=') || v[0] == '=') return trade_bad_usage("--set needs name=value, got '%s'", v);
+                if (T->nsets == MAX_SETS) return trade_bad_usage("at most %s --set options", "32");
                 T->sets[T->nsets++] = v;
             }
             continue;
         }
-        if (T->scene) return bad("one scene file at a time (got a second: '%s')", s);
+        if (T->scene) return trade_bad_usage("one scene file at a time (got a second: '%s')", s);
         T->scene = s;
+        T->scene_arg = i;
     }
-    if (!T->scene) return bad("which scene? %s", "usage: hearth trade SCENE.lua --metric NAME");
-    if (access(T->scene, R_OK) != 0) {
-        fprintf(stderr, "hearth trade: cannot read scene '%s': %s\n", T->scene, strerror(errno));
-        return 2;
-    }
-    if (!T->metric) return bad("--metric NAME is required (e.g. %s)", "--metric height");
+    if (!T->scene) return trade_bad_usage("which scene? %s", "usage: hearth trade SCENE.lua --metric NAME");
+    if (T->no_wait && T->launcher != TL_SLURM) return trade_bad_usage("--no-wait is for --launcher slurm%s", "");
+    if (T->nlauncher_args && T->launcher == TL_LOCAL)
+        return trade_bad_usage("--launcher-arg is for --launcher slurm or mpi (got '%s')", T->launcher_args[0]);
+    if (!T->metric) return trade_bad_usage("--metric NAME is required (e.g. %s)", "--metric height");
     if (strcmp(T->reference, "finest") && strncmp(T->reference, "analytic:", 9))
-        return bad("--reference must be 'finest' or 'analytic:<lua expression>', got '%s'", T->reference);
+        return trade_bad_usage("--reference must be 'finest' or 'analytic:<lua expression>', got '%s'", T->reference);
     for (int j = 0; j < T->nk; j++)
         for (int s = 0; s < T->nsets; s++)
             if (!strncmp(T->sets[s], T->k[j].name, strlen(T->k[j].name)) && T->sets[s][strlen(T->k[j].name)] == '=')
-                return bad("'%s' is both a --knob and a --set", T->k[j].name);
+                return trade_bad_usage("'%s' is both a --knob and a --set", T->k[j].name);
     if (!T->out[0]) {
         const char *base = strrchr(T->scene, '/');
         base = base ? base + 1 : T->scene;
@@ -237,7 +234,7 @@ static double refine_h(const trade *T, const trade_run *r) {
     return strcmp(k->name, "ppc") ? v : 1.0 / sqrt(v);
 }
 
-static int build_ladder(trade *T) {
+int trade_build_ladder(trade *T) {
     long n = 1;
     for (int j = 0; j < T->nk; j++) n *= T->k[j].n;
     if (n > MAX_RUNS) {
@@ -272,6 +269,7 @@ static int build_ladder(trade *T) {
         T->r[i].metric = T->r[i].ref = T->r[i].err = T->r[i].rel = T->r[i].order = NAN;
         T->r[i].steps = -1;
         T->r[i].h = refine_h(T, &T->r[i]);
+        T->r[i].mine = 1;
     }
     /* series: runs equal in every knob but the refinement knob */
     int ns = 0;
@@ -288,7 +286,7 @@ static int build_ladder(trade *T) {
 }
 
 /* "dx=0.01 heat=implicit" (all knobs, or all but the refinement knob) */
-static void run_label(const trade *T, const trade_run *r, int skip_refine, char *buf, size_t n) {
+void trade_run_label(const trade *T, const trade_run *r, int skip_refine, char *buf, size_t n) {
     size_t l = 0;
     buf[0] = '\0';
     for (int j = 0; j < T->nk && l < n; j++) {
@@ -300,12 +298,12 @@ static void run_label(const trade *T, const trade_run *r, int skip_refine, char 
 
 /* ---- running ------------------------------------------------------------- */
 
-static void run_dir(const trade *T, int i, char *buf, size_t n) { snprintf(buf, n, "%s/runs/%03d", T->out, i); }
+void trade_run_dir(const trade *T, int i, char *buf, size_t n) { snprintf(buf, n, "%s/runs/%03d", T->out, i); }
 
 static int start_run(trade *T, int i) {
     trade_run *r = &T->r[i];
     char dir[4200], res[4300], log[4300], thr[16];
-    run_dir(T, i, dir, sizeof dir);
+    trade_run_dir(T, i, dir, sizeof dir);
     hearth_error err;
     if (hearth_mkdir_p(dir, &err)) {
         fprintf(stderr, "hearth trade: %s\n", err.msg);
@@ -354,6 +352,9 @@ static int start_run(trade *T, int i) {
         }
         setenv("OMP_NUM_THREADS", thr, 1);
         setenv("OMP_WAIT_POLICY", "passive", 1);
+        /* a run is one process: under --launcher mpi this child inherits its rank's
+         * environment, and must not join that job as a rank of one scene (docs/scaling.md) */
+        setenv("HEARTH_NO_RANKS", "1", 1);
         execv("/proc/self/exe", (char *const *)av);
         fprintf(stderr, "hearth trade: cannot run /proc/self/exe: %s\n", strerror(errno));
         _exit(127);
@@ -398,7 +399,7 @@ static void finish_run(trade *T, int i, int wstatus, const struct rusage *ru) {
     r->wall = progress_wall() - r->t0;
     r->peak_mb = ru->ru_maxrss / 1024.0; /* Linux: kilobytes */
     char dir[4200], path[4300];
-    run_dir(T, i, dir, sizeof dir);
+    trade_run_dir(T, i, dir, sizeof dir);
     snprintf(path, sizeof path, "%s/result.txt", dir);
     FILE *f = fopen(path, "r");
     if (f) {
@@ -425,11 +426,13 @@ static void finish_run(trade *T, int i, int wstatus, const struct rusage *ru) {
         read_failure(path, r->msg, sizeof r->msg);
         if (WEXITSTATUS(wstatus) == 0) snprintf(r->msg, sizeof r->msg, "the metric is not a finite number");
     }
+    trade_record_write(T, i); /* for --collect, and how a worker reports */
 }
 
 
-static int run_all(trade *T) {
-    int next = 0, running = 0, done = 0, killed = 0;
+int trade_run_all(trade *T) {
+    int next = 0, running = 0, done = 0, killed = 0, nmine = 0;
+    for (int i = 0; i < T->nr; i++) nmine += T->r[i].mine;
     const double t0 = progress_wall();
     double last_beat = t0;
     struct sigaction sa, old_int, old_term;
@@ -437,11 +440,16 @@ static int run_all(trade *T) {
     sa.sa_handler = on_signal;
     sigaction(SIGINT, &sa, &old_int);
     sigaction(SIGTERM, &sa, &old_term);
-    while (done < T->nr) {
+    while (done < nmine) {
         while (!interrupted && running < T->jobs && next < T->nr) {
+            if (!T->r[next].mine) {
+                next++;
+                continue;
+            }
             if (start_run(T, next)) {
                 T->r[next].st = RS_ERROR;
                 snprintf(T->r[next].msg, sizeof T->r[next].msg, "could not start");
+                trade_record_write(T, next);
                 done++;
             } else running++;
             next++;
@@ -462,11 +470,11 @@ static int run_all(trade *T) {
             const double now = progress_wall();
             if (!T->quiet && now - last_beat >= 15) {
                 last_beat = now;
-                fprintf(stderr, "trade: %d/%d done, running:", done, T->nr);
+                fprintf(stderr, "trade: %d/%d done, running:", done, nmine);
                 for (int i = 0; i < T->nr; i++)
                     if (T->r[i].st == RS_RUNNING) {
                         char lab[512];
-                        run_label(T, &T->r[i], 0, lab, sizeof lab);
+                        trade_run_label(T, &T->r[i], 0, lab, sizeof lab);
                         fprintf(stderr, " [%s for %.0f s]", lab, now - T->r[i].t0);
                     }
                 fprintf(stderr, "  (elapsed %.0f s)\n", now - t0);
@@ -481,19 +489,19 @@ static int run_all(trade *T) {
             done++;
             if (!T->quiet) {
                 char lab[512];
-                run_label(T, &T->r[i], 0, lab, sizeof lab);
+                trade_run_label(T, &T->r[i], 0, lab, sizeof lab);
                 const double el = progress_wall() - t0;
-                fprintf(stderr, "trade: [%d/%d] %s: %s, %.2f s", done, T->nr, lab, state_name[T->r[i].st], T->r[i].wall);
+                fprintf(stderr, "trade: [%d/%d] %s: %s, %.2f s", done, nmine, lab, trade_state_name[T->r[i].st], T->r[i].wall);
                 if (T->r[i].st == RS_OK) fprintf(stderr, ", %s = %.6g", T->metric, T->r[i].metric);
                 else fprintf(stderr, ": %s", T->r[i].msg);
-                fprintf(stderr, "  (elapsed %.0f s, ETA %.0f s)\n", el, done ? el * (T->nr - done) / done : 0.0);
+                fprintf(stderr, "  (elapsed %.0f s, ETA %.0f s)\n", el, done ? el * (nmine - done) / done : 0.0);
             }
         }
     }
     sigaction(SIGINT, &old_int, NULL);
     sigaction(SIGTERM, &old_term, NULL);
     if (interrupted) {
-        fprintf(stderr, "hearth trade: interrupted; %d of %d runs done\n", done, T->nr);
+        fprintf(stderr, "hearth trade: interrupted; %d of %d runs done\n", done, nmine);
         return 1;
     }
     return 0;
@@ -592,129 +600,35 @@ static int analyse(trade *T) {
     return 0;
 }
 
-/* ---- outputs -------------------------------------------------------------- */
+int trade_finish(trade *T, int rc) {
+    int arc = analyse(T);
+    if (arc) return arc;
+    char csv[4200], png[4200];
+    snprintf(csv, sizeof csv, "%s/trade.csv", T->out);
+    snprintf(png, sizeof png, "%s/trade.png", T->out);
+    if (trade_write_csv(T, csv) || trade_write_plot(T, png)) rc = 1;
+    trade_print_table(T);
+    int failed = 0;
+    for (int i = 0; i < T->nr; i++) failed += T->r[i].st != RS_OK;
+    printf("\nwrote %s and %s\n", csv, png);
+    if (failed) printf("%d of %d runs did not finish (see the status column and runs/NNN/log.txt)\n", failed, T->nr);
+    return rc || failed ? 1 : 0;
+}
 
-static int write_csv(const trade *T, const char *path) {
-    hearth_error err;
-    hearth_atomic_file *af = hearth_atomic_file_open(path, &err);
-    if (!af) {
-        fprintf(stderr, "hearth trade: %s\n", err.msg);
-        return -1;
-    }
-    hearth_atomic_file_printf(af, "run");
-    for (int j = 0; j < T->nk; j++) hearth_atomic_file_printf(af, ",%s", T->k[j].name);
-    hearth_atomic_file_printf(af, ",status,wall_s,steps,peak_mb,%s,reference,error,rel_error,order,pareto,note\n", T->metric);
-    for (int i = 0; i < T->nr; i++) {
-        const trade_run *r = &T->r[i];
-        hearth_atomic_file_printf(af, "%d", i);
-        for (int j = 0; j < T->nk; j++) hearth_atomic_file_printf(af, ",%s", T->k[j].v[r->vi[j]]);
-        hearth_atomic_file_printf(af, ",%s,%.3f,%ld,%.1f,%.10g,%.10g,%.4g,%.4g,%.3f,%d,", state_name[r->st], r->wall, r->steps, r->peak_mb,
-                r->metric, r->ref, r->err, r->rel, r->order, r->pareto);
-        const char *note = r->is_ref ? "reference (finest run)" : r->msg;
-        hearth_atomic_file_write(af, "\"", 1);
-        for (const char *p = note; *p; p++) hearth_atomic_file_write(af, *p == '"' ? "'" : p, 1);
-        hearth_atomic_file_write(af, "\"\n", 2);
-    }
-    if (hearth_atomic_file_commit(af, &err)) {
-        fprintf(stderr, "hearth trade: %s\n", err.msg);
-        return -1;
+int trade_setup(trade *T, int argc, char **argv) {
+    int rc = trade_parse(T, argc, argv);
+    if (rc) return rc;
+    if (!strncmp(T->reference, "analytic:", 9)) snprintf(T->analytic, sizeof T->analytic, "%s", T->reference + 9);
+    if ((rc = trade_build_ladder(T))) return rc;
+    if (T->analytic[0]) { /* a bad expression is a usage error, found before any run */
+        char msg[1400];
+        double v;
+        if (analytic_value(T, &T->r[0], &v, msg, sizeof msg)) {
+            fprintf(stderr, "hearth trade: %s\n", msg);
+            return 2;
+        }
     }
     return 0;
-}
-
-/* Error against wall time on log-log axes (<hearth/plot.h>): one colour per
- * series, each run joined to its next finer one and labelled with its
- * refinement value, the Pareto front joined and ringed under the runs. */
-static int write_plot(const trade *T, const char *path) {
-    hearth_error err;
-    char title[600];
-    const char *base = strrchr(T->scene, '/');
-    snprintf(title, sizeof title, "%s: error in %s against %s", base ? base + 1 : T->scene, T->metric,
-             T->analytic[0] ? "the analytic value" : "each series' finest run");
-    hearth_plot_def d = hearth_default_plot_def();
-    d.width = 860, d.height = 580;
-    d.title = title, d.x_label = "wall time per run [s]", d.y_label = "relative error";
-    d.legend = HEARTH_LEGEND_BOTTOM_LEFT;
-    hearth_plot *p = hearth_plot_create(&d, &err);
-    double *x = malloc(sizeof(double) * (size_t)T->nr), *y = malloc(sizeof(double) * (size_t)T->nr);
-    const char **labels = malloc(sizeof(char *) * (size_t)T->nr);
-    int *order = malloc(sizeof(int) * (size_t)T->nr), rc = 0;
-    if (!p || !x || !y || !labels || !order) {
-        fprintf(stderr, "hearth trade: %s\n", p ? "out of memory for the plot" : err.msg);
-        rc = -1;
-        goto done;
-    }
-    /* the runs a log-log plot can show */
-#define SHOWN(r) ((r)->st == RS_OK && (r)->rel > 0)
-    int nseries = 0;
-    for (int i = 0; i < T->nr; i++) nseries = T->r[i].series + 1 > nseries ? T->r[i].series + 1 : nseries;
-    for (int s = 0; s < nseries && !rc; s++) {
-        /* the series' runs from coarsest to finest, so the line joins each to its next finer one */
-        int m = 0;
-        for (int i = 0; i < T->nr; i++)
-            if (T->r[i].series == s && SHOWN(&T->r[i])) {
-                int j = m++;
-                for (; j > 0 && T->r[order[j - 1]].h < T->r[i].h; j--) order[j] = order[j - 1];
-                order[j] = i;
-            }
-        for (int j = 0; j < m; j++) {
-            const trade_run *r = &T->r[order[j]];
-            x[j] = r->wall, y[j] = r->rel;
-            labels[j] = T->refine >= 0 ? T->k[T->refine].v[r->vi[T->refine]] : NULL;
-        }
-        char buf[256], lab[300];
-        for (int i = 0; i < T->nr; i++)
-            if (T->r[i].series == s) {
-                run_label(T, &T->r[i], 1, buf, sizeof buf);
-                break;
-            }
-        if (T->refine >= 0) snprintf(lab, sizeof lab, "%s (labels: %s)", buf, T->k[T->refine].name);
-        else snprintf(lab, sizeof lab, "%s", buf);
-        hearth_plot_series_def sd = hearth_default_plot_series_def();
-        sd.n = m, sd.x = x, sd.y = y, sd.point_labels = labels, sd.line_width = T->refine >= 0;
-        sd.label = s < 8 ? lab : NULL; /* the legend lists the first 8 */
-        hearth_plot_color(s, sd.color);
-        if (hearth_plot_add_series(p, &sd, &err) < 0) rc = -1;
-    }
-    /* the Pareto front, in order of wall time, under the runs */
-    int m = 0;
-    for (int i = 0; i < T->nr; i++)
-        if (T->r[i].pareto) {
-            int j = m++;
-            for (; j > 0 && T->r[order[j - 1]].wall > T->r[i].wall; j--) order[j] = order[j - 1];
-            order[j] = i;
-        }
-    for (int j = 0; j < m; j++) x[j] = T->r[order[j]].wall, y[j] = T->r[order[j]].rel;
-    hearth_plot_series_def fd = hearth_default_plot_series_def();
-    fd.n = m, fd.x = x, fd.y = y, fd.marker = HEARTH_MARKER_RING, fd.line_width = 1, fd.behind = 1;
-    fd.label = "Pareto front (nothing else is both faster and more accurate)";
-    memcpy(fd.color, (const unsigned char[3]){40, 40, 40}, 3);
-    if (!rc && hearth_plot_add_series(p, &fd, &err) < 0) rc = -1;
-#undef SHOWN
-    if (!rc && hearth_plot_write_png(p, path, &err)) rc = -1;
-    if (rc) fprintf(stderr, "hearth trade: %s\n", err.msg);
-done:
-    hearth_plot_free(p);
-    free(x);
-    free(y);
-    free(labels);
-    free(order);
-    return rc;
-}
-
-static void print_table(const trade *T) {
-    printf("%4s", "run");
-    for (int j = 0; j < T->nk; j++) printf("  %10s", T->k[j].name);
-    printf("  %6s %9s %8s %8s %14s %10s %7s  %s\n", "status", "wall [s]", "steps", "peak MB", T->metric, "rel error", "order",
-           "");
-    for (int i = 0; i < T->nr; i++) {
-        const trade_run *r = &T->r[i];
-        printf("%4d", i);
-        for (int j = 0; j < T->nk; j++) printf("  %10s", T->k[j].v[r->vi[j]]);
-        printf("  %6s %9.2f %8ld %8.1f %14.7g %10.3g %7.2f  %s%s%s\n", state_name[r->st], r->wall, r->steps, r->peak_mb,
-               r->metric, r->rel, r->order, r->pareto ? "pareto " : "", r->is_ref ? "reference " : "",
-               r->st != RS_OK ? r->msg : "");
-    }
 }
 
 /* The trade's run record (run_log.c): the steps of all its runs, and how many
@@ -730,7 +644,7 @@ static void trade_record(const trade *T, run_log *rec, int status) {
     snprintf(rec->guard, sizeof rec->guard, guard ? "stopped %d of %d runs" : "ok", guard, T->nr);
     for (int i = 0; i < T->nr && !rec->nplugins; i++) { /* the plugins the runs loaded, from a run's own record */
         char dir[4200], path[4300];
-        run_dir(T, i, dir, sizeof dir);
+        trade_run_dir(T, i, dir, sizeof dir);
         snprintf(path, sizeof path, "%s/run.log", dir);
         run_log_plugins_from(rec, path);
     }
@@ -739,31 +653,40 @@ static void trade_record(const trade *T, run_log *rec, int status) {
 }
 
 int cmd_trade(int argc, char **argv) {
-    trade T;
-    int rc = parse(&T, argc, argv);
-    if (rc) return rc == 1 ? 0 : rc;
-    if (!strncmp(T.reference, "analytic:", 9)) snprintf(T.analytic, sizeof T.analytic, "%s", T.reference + 9);
-    if ((rc = build_ladder(&T))) {
-        free(T.r);
-        return rc;
-    }
-    if (T.analytic[0]) { /* a bad expression is a usage error, found before any run */
-        char msg[1400];
-        double v;
-        if (analytic_value(&T, &T.r[0], &v, msg, sizeof msg)) {
-            fprintf(stderr, "hearth trade: %s\n", msg);
-            free(T.r);
-            return 2;
+    if (argc >= 2 && !strcmp(argv[1], "--collect")) {
+        if (argc < 3 || argv[2][0] == '-') return trade_bad_usage("--collect needs the results folder: hearth trade --collect DIR%s", "");
+        int quiet = 0;
+        for (int i = 3; i < argc; i++) {
+            if (strcmp(argv[i], "--quiet")) return trade_bad_usage("--collect DIR takes only --quiet, got '%s'", argv[i]);
+            quiet = 1;
         }
+        return trade_collect(argv[2], quiet);
+    }
+    if (argc >= 2 && !strcmp(argv[1], "--worker")) return trade_worker(argc, argv);
+    trade T;
+    int rc = trade_setup(&T, argc, argv);
+    if (!rc && access(T.scene, R_OK) != 0) { /* here, not in trade_setup: --collect needs no scene */
+        fprintf(stderr, "hearth trade: cannot read scene '%s': %s\n", T.scene, strerror(errno));
+        rc = 2;
+    }
+    if (rc) {
+        free(T.r);
+        return rc == 1 ? 0 : rc;
     }
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     if (cores < 1) cores = 1;
+    const int jobs_given = T.jobs > 0;
     if (T.jobs < 0) T.jobs = (int)cores;
     if (T.jobs > T.nr) T.jobs = T.nr;
-    T.threads = (int)(cores / T.jobs) > 0 ? (int)(cores / T.jobs) : 1;
+    if (!T.threads) T.threads = T.launcher == TL_SLURM ? 1 : (int)(cores / T.jobs) > 0 ? (int)(cores / T.jobs) : 1;
+    if (T.launcher == TL_SLURM && !jobs_given) T.jobs = 0; /* no cap on the array's running tasks */
     hearth_error err;
     if (hearth_mkdir_p(T.out, &err)) {
         fprintf(stderr, "hearth trade: %s\n", err.msg);
+        free(T.r);
+        return 1;
+    }
+    if (trade_args_write(&T, argc, argv)) {
         free(T.r);
         return 1;
     }
@@ -771,26 +694,16 @@ int cmd_trade(int argc, char **argv) {
     run_log_start(&rec, "trade", argc, argv, T.scene, T.out, T.sets, T.nsets);
     rec.runs = T.nr, rec.jobs = T.jobs, rec.threads = T.threads;
     rec.status_1 = "a run did not finish, or the results could not be written";
-    if (!T.quiet)
-        fprintf(stderr, "trade: %s, %d runs, %d at a time with %d thread%s each; metric %s, reference %s\n", T.scene, T.nr,
-                T.jobs, T.threads, T.threads > 1 ? "s" : "", T.metric, T.reference);
-    rc = run_all(&T);
-    int arc = analyse(&T);
-    if (arc) {
-        trade_record(&T, &rec, arc);
-        free(T.r);
-        return arc;
+    if (T.launcher != TL_LOCAL) {
+        rc = trade_launch(&T);
+    } else {
+        if (!T.quiet)
+            fprintf(stderr, "trade: %s, %d runs, %d at a time with %d thread%s each; metric %s, reference %s\n", T.scene, T.nr,
+                    T.jobs, T.threads, T.threads > 1 ? "s" : "", T.metric, T.reference);
+        rc = trade_run_all(&T);
+        rc = trade_finish(&T, rc);
     }
-    char csv[4200], png[4200];
-    snprintf(csv, sizeof csv, "%s/trade.csv", T.out);
-    snprintf(png, sizeof png, "%s/trade.png", T.out);
-    if (write_csv(&T, csv) || write_plot(&T, png)) rc = 1;
-    print_table(&T);
-    int failed = 0;
-    for (int i = 0; i < T.nr; i++) failed += T.r[i].st != RS_OK;
-    printf("\nwrote %s and %s\n", csv, png);
-    if (failed) printf("%d of %d runs did not finish (see the status column and runs/NNN/log.txt)\n", failed, T.nr);
-    trade_record(&T, &rec, rc || failed ? 1 : 0);
+    trade_record(&T, &rec, rc);
     free(T.r);
-    return rc || failed ? 1 : 0;
+    return rc;
 }

@@ -31,6 +31,7 @@ static void usage(FILE *f) {
             "  hearth fit FLOWCURVE.csv [--json] [--out DIR]\n"
             "                                fit sigma = sigma_y + eta rate^h (relative error, Nagasawa et al. eq. 2)\n"
             "  hearth trade SCENE.lua --metric NAME [--knob name=v1,v2,...]... [--reference finest|analytic:EXPR] [--out DIR] [--jobs N]\n"
+            "               [--launcher local|slurm|mpi]   (hearth trade --collect DIR gathers a submitted ladder)\n"
             "                                run a scene over a ladder of settings: cost, error and order of each\n"
             "  hearth bench [--threads N] [--cells N] [--steps N] [--dim 2|3]\n"
             "                                throughput of a standard elastic block, as JSON\n"

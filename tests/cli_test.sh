@@ -31,6 +31,20 @@ s:run { until_t = 0.05, every = 0.01, png = { field = "speed", path = "f_%04d.pn
 EOF
 }
 
+# soft_block_scene: E = 0.01 Pa (in range) with dt_max 0.5 s: gravity moves the
+# block 12 cells in one step onto a floor that zeroes its speed, so the guard
+# stops it (cli_guard_soft_block_jump, and the run record's guard verdict).
+soft_block_scene() {
+    cat <<'EOF'
+local h = require "hearth"
+local s = h.scene { dim = 2, dx = 0.2, box = { { 0, 0 }, { 4, 4 } }, dt_max = 0.5 }
+local m = h.material("elastic", { E = 0.01, nu = 0.3, density = 1000 })
+s:add { shape = h.box({ 1.6, 1.0 }, { 2.4, 1.6 }), material = m, ppc = 4 }
+s:collider { shape = h.plane({ 0, 0.6 }, { 0, 1 }), mode = "separate", friction = 0.3 }
+s:run { until_t = 0.5 }
+EOF
+}
+
 case "$case_name" in
 cli_man_covers_subcommands)
     # every subcommand `hearth --help` lists has a SYNOPSIS line and an entry in docs/hearth.1, and so has --movie
@@ -310,14 +324,7 @@ PY
     grep -q "^peak memory: [0-9.]* MB$" "$tmp/o/run.log" || fail "run.log has no peak memory"
     grep -q "^hearth [0-9.]* (revision [^)]*) run record$" "$tmp/o/run.log" || fail "run.log's first line: $(head -1 "$tmp/o/run.log")"
     # the guard's verdict of a run it stopped (the soft block of cli_guard_soft_block_jump)
-    cat >"$tmp/g.lua" <<'EOF'
-local h = require "hearth"
-local s = h.scene { dim = 2, dx = 0.2, box = { { 0, 0 }, { 4, 4 } }, dt_max = 0.5 }
-local m = h.material("elastic", { E = 0.01, nu = 0.3, density = 1000 })
-s:add { shape = h.box({ 1.6, 1.0 }, { 2.4, 1.6 }), material = m, ppc = 4 }
-s:collider { shape = h.plane({ 0, 0.6 }, { 0, 1 }), mode = "separate", friction = 0.3 }
-s:run { until_t = 0.5 }
-EOF
+    soft_block_scene >"$tmp/g.lua"
     "$hearth" run "$tmp/g.lua" --out "$tmp/g" --quiet 2>/dev/null; rc=$?
     [ $rc -eq 3 ] || fail "the guard run exited $rc, expected 3"
     python3 -c 'import json,sys; g=json.load(open(sys.argv[1]))["guard"]; assert g["verdict"]=="stopped" and "CFL violated" in g["diagnosis"], g' \
@@ -446,14 +453,7 @@ cli_run_wave_inf)
 cli_guard_soft_block_jump)
     # E = 0.01 Pa (in range) with dt_max 0.5 s: gravity moves the block 12 cells in one step onto a floor that
     # zeroes its speed; the guard must judge the motion, not the end speed
-    cat >"$tmp/s.lua" <<'EOF'
-local h = require "hearth"
-local s = h.scene { dim = 2, dx = 0.2, box = { { 0, 0 }, { 4, 4 } }, dt_max = 0.5 }
-local m = h.material("elastic", { E = 0.01, nu = 0.3, density = 1000 })
-s:add { shape = h.box({ 1.6, 1.0 }, { 2.4, 1.6 }), material = m, ppc = 4 }
-s:collider { shape = h.plane({ 0, 0.6 }, { 0, 1 }), mode = "separate", friction = 0.3 }
-s:run { until_t = 0.5 }
-EOF
+    soft_block_scene >"$tmp/s.lua"
     (cd "$tmp" && "$hearth" run s.lua --quiet >out.txt 2>err.txt); rc=$?
     [ $rc -eq 3 ] || fail "exit $rc, expected a guard stop (3): $(cat "$tmp/err.txt")"
     grep -q "step 1, t = 0.5 s: CFL violated: a particle moved 1[0-9].[0-9]* cells in one step of dt = 0.5 s" "$tmp/err.txt" ||

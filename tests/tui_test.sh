@@ -24,9 +24,10 @@ fail() {
 command -v tmux >/dev/null || { echo "FAIL: tmux is not installed (scripts/test installs it)" >&2; exit 1; }
 
 # start ARGS...: hearth in a 120x40 pane; after it exits the pane records the
-# exit status, the terminal modes and stays open for inspection.
+# terminal modes, then its exit status (exit.txt last, renamed into place, so
+# a case that sees exit.txt also sees stty.txt whole) and stays open.
 start() {
-    local cmd="cd '$tmp' && env LANG=C.UTF-8 LC_ALL=C.UTF-8 ${TUI_ENV:-} TERM=${TUI_TERM:-tmux-256color} XDG_STATE_HOME='$tmp/state' '$hearth' $* 2>'$tmp/stderr.txt'; echo \$? > '$tmp/exit.txt'; stty -a > '$tmp/stty.txt'; sleep 60"
+    local cmd="cd '$tmp' && env LANG=C.UTF-8 LC_ALL=C.UTF-8 ${TUI_ENV:-} TERM=${TUI_TERM:-tmux-256color} XDG_STATE_HOME='$tmp/state' '$hearth' $* 2>'$tmp/stderr.txt'; st=\$?; stty -a > '$tmp/stty.txt'; echo \$st > '$tmp/exit.tmp'; mv '$tmp/exit.tmp' '$tmp/exit.txt'; sleep 60"
     tmux -L "$sock" -f /dev/null new-session -d -x "${TUI_COLS:-120}" -y "${TUI_ROWS:-40}" -s t "$cmd" || fail "tmux did not start"
 }
 screen() { tmux -L "$sock" capture-pane -p -t t; }

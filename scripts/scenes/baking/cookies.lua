@@ -20,8 +20,10 @@
 -- a least-squares parabola over the middle 60% of the cookie's width.
 -- What shapes the top (measured, 2D, dx 7.5 mm, 150 degC): the cold dough
 -- (tau_y 20 Pa) cannot carry its own 25 mm (rho g H ~ 120 Pa); with eta the
--- full model slumps slowly and is set while still rounded; its CO2 never
--- inflates it (n^p stays ~0.10). The baseline does not flow at all: its
+-- full model slumps slowly and is set while still rounded; its CO2 swells it
+-- only while it is soft (0.5-0.9 s: +6% area, n^p 0.12-0.25), evenly, and the
+-- rest of the gas is made after it sets at ~35 degC (docs/validation.md, "The
+-- cookie, measured again"). The baseline does not flow at all: its
 -- weight strains it ~0.2%, inside the snow law's clamp, so it keeps the
 -- placed dough's shape (a capsule: flat top, round ends) through the bake,
 -- and its top curvature is the measures' reading of that shape (see
