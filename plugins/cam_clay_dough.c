@@ -104,7 +104,7 @@
 
 #include <hearth/tensor.h>
 
-enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_COUNT };
+enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_COUNT };
 
 /* Defaults: the cookie column of Ding et al. Table 2 (E 4e4, tau_y 20,
  * eta 500, density 500); nu is not in Table 2. */
@@ -122,10 +122,14 @@ static const hearth_param params[P_COUNT] = {
     [P_MAX_POROSITY] = {"max_porosity", "1",
                         "porosity n^p past which the pores grow only elastically (J^P <= 1 + max_porosity - n^p_0); 1 = no cap",
                         1, 1e-3, 1},
+    [P_FRACTURE_STRAIN] = {"fracture_strain", "1",
+                           "tensile strain to fracture (damage D += d eps_1+ / fracture_strain; at D = 1 the point carries no "
+                           "tension); give it temperature and moisture curves for a brittle crust; 0 = never fractures",
+                           0, 0, 100},
 };
 
 enum { S_XX = HEARTH_SYM_XX, S_YY = HEARTH_SYM_YY, S_ZZ = HEARTH_SYM_ZZ, S_XY = HEARTH_SYM_XY, S_YZ = HEARTH_SYM_YZ,
-       S_ZX = HEARTH_SYM_ZX, S_JP, S_COUNT };
+       S_ZX = HEARTH_SYM_ZX, S_JP, S_DAMAGE, S_COUNT };
 
 enum {
     E_INVERTED = 1, /* det F <= 0 or not finite */
@@ -364,11 +368,36 @@ static void exp_near(const double X[9], double E[9]) {
     }
 }
 
+/* The step's distortional stretching: the largest principal rate of
+ * sym(grad_v) in excess of the mean rate of the directions the motion
+ * has (1/s). In plane strain that is half the difference of the in-plane
+ * principal rates; in 3D the largest eigenvalue less tr/3 (the
+ * trigonometric closed form of a symmetric 3x3: no iteration, as this runs
+ * per point per step). A uniform dilation, the pores growing under their
+ * gas (eq. 13), gives 0: it does not crack the skeleton; a skin stretched
+ * along the surface while it thins does. */
+static double tensile_stretching(const double *gv, int plane) {
+    const double d01 = 0.5 * (gv[1] + gv[3]);
+    if (plane) {
+        const double h = 0.5 * (gv[0] - gv[4]);
+        return sqrt(h * h + d01 * d01);
+    }
+    const double d02 = 0.5 * (gv[2] + gv[6]), d12 = 0.5 * (gv[5] + gv[7]);
+    const double q = (gv[0] + gv[4] + gv[8]) / 3, a = gv[0] - q, b = gv[4] - q, c = gv[8] - q;
+    const double p2 = a * a + b * b + c * c + 2 * (d01 * d01 + d02 * d02 + d12 * d12);
+    if (!(p2 > 0)) return 0;
+    const double pp = sqrt(p2 / 6);
+    const double det = a * (b * c - d12 * d12) - d01 * (d01 * c - d12 * d02) + d02 * (d01 * d12 - b * d02);
+    const double r = fmax(-1, fmin(1, det / (2 * pp * pp * pp)));
+    return 2 * pp * cos(acos(r) / 3);
+}
+
 static void init(const double *p, double *state) {
     (void)p;
     state[S_XX] = state[S_YY] = state[S_ZZ] = 1;
     state[S_XY] = state[S_YZ] = state[S_ZX] = 0;
     state[S_JP] = 1;
+    state[S_DAMAGE] = 0;
 }
 
 /* The Kirchhoff stress tau = lambda ev I + 2 mu eps of eps = ev/3 I + ratio e
@@ -443,6 +472,13 @@ static int stress(hearth_point *pt, double tau[9]) {
         }
         if (!(jf > 0) || !isfinite(jf)) return E_STEP;
     }
+    /* Fracture (header, "crust fracture"): damage grows with the step's
+     * tensile stretching over the strain to fracture, which the scene's
+     * curves make small for a set, dried crust and large for a wet crumb. */
+    const double ef = prm[P_FRACTURE_STRAIN];
+    if (ef > 0 && pt->dt > 0 && st[S_DAMAGE] < 1) {
+        st[S_DAMAGE] = fmin(1, st[S_DAMAGE] + pt->dt * tensile_stretching(pt->grad_v, plane) / ef);
+    }
     if (!plane) {
         const double m = (B[0] + B[4] + B[8]) / 3;
         if (m > 0 && norm2_9(B) / (m * m) - 3 <= NEAR * NEAR) /* |B/m - I|^2 = |B/m|^2 - 3, as tr(B/m) = 3 */
@@ -470,7 +506,7 @@ static int stress(hearth_point *pt, double tau[9]) {
             else hearth_sym_from_eigen(Q, d, B);
         }
         hearth_full_to_sym(B, st);
-        st[S_JP] = J / exp(ev); /* J^P = J / J^E */
+        st[S_JP] = J / exp(ev); /* J^P = J / J^E (a crack opens as plastic volume: it reads as pores) */
     }
     double mu, lambda;
     hearth_lame(prm[P_E], prm[P_NU], &mu, &lambda);
@@ -493,6 +529,12 @@ static double wave_speed(const double *p, const double *state) {
 static double plastic_J(const double *p, const double *state) {
     (void)p;
     return state ? state[S_JP] : 1.0;
+}
+
+/* Damage D in [0, 1]; at 1 the core cuts the point's total stress off in tension. */
+static double damage(const double *p, const double *state) {
+    (void)p;
+    return state ? state[S_DAMAGE] : 0.0;
 }
 
 static const char *describe_error(int code) {
@@ -521,6 +563,7 @@ static const hearth_material material = {
     .wave_speed = wave_speed,
     .describe_error = describe_error,
     .plastic_J = plastic_J,
+    .damage = damage,
 };
 
 HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void); /* for -Wmissing-prototypes */

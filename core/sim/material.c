@@ -11,6 +11,7 @@
 
 #include "alloc.h"
 #include "error.h"
+#include "tensor.h"
 
 /* A parameter array is never of size 0, so a plugin without parameters still has a pointer. */
 static size_t params_bytes(const hearth_material *m) { return sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1); }
@@ -292,4 +293,23 @@ hearth_status hearth_material_check(const char *plugin, const char *const *names
         return err_set(err, HEARTH_ERR_PLUGIN, "material '%s' declares %d parameters; hearth supports at most %d", m->name,
                        m->nparams, MATERIAL_MAX_PARAMS);
     return params_resolve(m, names, values, n, tmp, core, err);
+}
+
+/* Rankine's tension cut-off at zero strength on the symmetric part of tau
+ * (an isotropic law's tau is symmetric; the symmetric part guards rounding):
+ * the principal values are clipped at 0 in their own frame. Only cracked
+ * points come here, so the eigen-decomposition is off the hot path. */
+void material_tension_cutoff(double tau[9]) {
+    double S[9], l[3], Q[9];
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) S[3 * r + c] = 0.5 * (tau[3 * r + c] + tau[3 * c + r]);
+    t3_sym_eigen(S, l, Q);
+    if (!(l[0] > 0 || l[1] > 0 || l[2] > 0)) return; /* all compressive (or NaN: the guard reports it) */
+    for (int k = 0; k < 3; k++) l[k] = fmin(l[k], 0);
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) {
+            double v = 0;
+            for (int k = 0; k < 3; k++) v += Q[3 * r + k] * l[k] * Q[3 * c + k];
+            tau[3 * r + c] = v;
+        }
 }

@@ -17,12 +17,17 @@
 -- highest columns within 4 cells on either side; a crack is a run of at
 -- least 2 open columns. Prints "crack W cells, depth D" for each run.
 local h = require "hearth"
-local P = h.params { dx = 0.004, F = 30, cl = 10 }
+local P = h.params { dx = 0.004, F = 30, cl = 10, ef = 1 }
 local dx = P.dx
 local x0, x1, floor, H, s0 = 0.02, 0.10, 0.01, 0.03, 0.4
 local s = h.scene { dim = 2, dx = dx, box = { { 0, 0 }, { 0.12, 0.08 } }, oven = { temperature = 20, beta = 0 }, name = "crust_cracks" }
 local dry = h.curve { { 0.65, P.F }, { 0.85, 1 }, of = "moisture", irreversible = true }
+-- The strain to fracture (the law's damage, plugins/cam_clay_dough.c): 1 wet (a rubbery dough's
+-- cell walls part at Hencky strains ~1 and more), divided by F where the crust dries, so the
+-- dried crust is F times stiffer and F times less ductile; F = 1 leaves it as ductile as the crumb.
+local brittle = h.curve { { 0.65, 1 / P.F }, { 0.85, 1 }, of = "moisture", irreversible = true }
 local m = h.material("cam_clay_dough", { E = 5e3 * dry, nu = 0.3, density = 500, tau_y = 200 * dry, eta = 0,
+  fracture_strain = P.ef * brittle,
   specific_heat = 20, conductivity = 30, expansion = P.cl, reference_temperature = 20, porosity = 0.1, max_porosity = 0.6,
   water_diffusivity = 2e-4 / 293.15, evaporation = 2 })
 s:collider { shape = h.plane({ 0, floor }, { 0, 1 }), mode = "sticky" }

@@ -166,6 +166,12 @@ typedef struct hearth_material {
     /// the stress applies explicitly from the velocity gradient, for the step limit
     /// dt <= rho dx^2 / (2 dim eta). Leave NULL when viscous flow is integrated implicitly.
     double (*viscosity)(const double *p, const double *state);
+    /// Optional (may be NULL, meaning an intact material; read only when struct_size covers it). The
+    /// point's damage in [0, 1] from its state. At 1 the point is cracked: the core cuts the stress
+    /// off in tension (each tensile principal value of tau set to 0, so a crack's faces carry
+    /// compression only) and adds none of its pressures (gas, water, thermal expansion: the crack
+    /// vents the pores and frees the faces). Called concurrently (rule 5).
+    double (*damage)(const double *p, const double *state);
 } hearth_material;
 
 /// The entry point a plugin defines.
