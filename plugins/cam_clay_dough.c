@@ -368,28 +368,23 @@ static void exp_near(const double X[9], double E[9]) {
     }
 }
 
-/* The step's distortional stretching: the largest principal rate of
- * sym(grad_v) in excess of the mean rate of the directions the motion
- * has (1/s). In plane strain that is half the difference of the in-plane
- * principal rates; in 3D the largest eigenvalue less tr/3 (the
- * trigonometric closed form of a symmetric 3x3: no iteration, as this runs
- * per point per step). A uniform dilation, the pores growing under their
- * gas (eq. 13), gives 0: it does not crack the skeleton; a skin stretched
- * along the surface while it thins does. */
-static double tensile_stretching(const double *gv, int plane) {
-    const double d01 = 0.5 * (gv[1] + gv[3]);
-    if (plane) {
-        const double h = 0.5 * (gv[0] - gv[4]);
-        return sqrt(h * h + d01 * d01);
-    }
-    const double d02 = 0.5 * (gv[2] + gv[6]), d12 = 0.5 * (gv[5] + gv[7]);
-    const double q = (gv[0] + gv[4] + gv[8]) / 3, a = gv[0] - q, b = gv[4] - q, c = gv[8] - q;
-    const double p2 = a * a + b * b + c * c + 2 * (d01 * d01 + d02 * d02 + d12 * d12);
+/* The largest eigenvalue of a symmetric deviatoric 3x3 (tr e = 0), by the
+ * trigonometric closed form: no iteration on the near path. */
+static double dev_max_eigen(const double e[9]) {
+    const double p2 = e[0] * e[0] + e[4] * e[4] + e[8] * e[8] + 2 * (e[1] * e[1] + e[2] * e[2] + e[5] * e[5]);
     if (!(p2 > 0)) return 0;
     const double pp = sqrt(p2 / 6);
-    const double det = a * (b * c - d12 * d12) - d01 * (d01 * c - d12 * d02) + d02 * (d01 * d12 - b * d02);
+    const double det = e[0] * (e[4] * e[8] - e[5] * e[5]) - e[1] * (e[1] * e[8] - e[5] * e[2]) + e[2] * (e[1] * e[5] - e[4] * e[2]);
     const double r = fmax(-1, fmin(1, det / (2 * pp * pp * pp)));
     return 2 * pp * cos(acos(r) / 3);
+}
+
+/* Damage (header, "crust fracture"): the largest fraction of its strain to
+ * fracture that the point's largest principal elastic strain e1 has
+ * reached; 1 is cracked, for good. */
+static void fracture_update(const double *prm, double *st, double e1) {
+    const double ef = prm[P_FRACTURE_STRAIN];
+    if (ef > 0 && e1 > 0 && st[S_DAMAGE] < 1) st[S_DAMAGE] = fmax(st[S_DAMAGE], fmin(1, e1 / ef));
 }
 
 static void init(const double *p, double *state) {
@@ -439,6 +434,7 @@ static int stress_near(hearth_point *pt, double m, const double B[9], double J, 
             hearth_full_to_sym(B, st);
         }
         st[S_JP] = J / exp(ev); /* J^P = J / J^E */
+        fracture_update(prm, st, ratio * dev_max_eigen(e));
     }
     hencky_tau(prm, ev, e, ratio, tau);
     return 0;
@@ -472,13 +468,6 @@ static int stress(hearth_point *pt, double tau[9]) {
         }
         if (!(jf > 0) || !isfinite(jf)) return E_STEP;
     }
-    /* Fracture (header, "crust fracture"): damage grows with the step's
-     * tensile stretching over the strain to fracture, which the scene's
-     * curves make small for a set, dried crust and large for a wet crumb. */
-    const double ef = prm[P_FRACTURE_STRAIN];
-    if (ef > 0 && pt->dt > 0 && st[S_DAMAGE] < 1) {
-        st[S_DAMAGE] = fmin(1, st[S_DAMAGE] + pt->dt * tensile_stretching(pt->grad_v, plane) / ef);
-    }
     if (!plane) {
         const double m = (B[0] + B[4] + B[8]) / 3;
         if (m > 0 && norm2_9(B) / (m * m) - 3 <= NEAR * NEAR) /* |B/m - I|^2 = |B/m|^2 - 3, as tr(B/m) = 3 */
@@ -507,6 +496,7 @@ static int stress(hearth_point *pt, double tau[9]) {
         }
         hearth_full_to_sym(B, st);
         st[S_JP] = J / exp(ev); /* J^P = J / J^E (a crack opens as plastic volume: it reads as pores) */
+        fracture_update(prm, st, ratio * fmax(e[0], fmax(e[1], e[2])));
     }
     double mu, lambda;
     hearth_lame(prm[P_E], prm[P_NU], &mu, &lambda);
