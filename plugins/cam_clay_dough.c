@@ -79,8 +79,39 @@
  * volume change is elastic (the gas is then held by elastic tension, p/K,
  * ~2% for 600 Pa at E 4e4). Default 1: no cap, eq. 12 as it stands.
  *
+ * ---- crust fracture (issue #18; not in Ding et al.) ---------------------------
+ * Eq. 12 yields in tension and flows; it never parts, so a dried crust over a
+ * swelling crumb domes and holds (docs/validation.md, "Crust (#18)"). A crust
+ * is brittle because it breaks before it yields: a glassy starch-gluten
+ * matrix fractures at strains of a few per cent, while a rubbery dough's
+ * gas cell walls stretch to Hencky strains of order 1 before they part (van
+ * Vliet, Janssen, Bloksma & Walstra 1992, J. Texture Stud. 23, 439: strain
+ * hardening and rupture of dough in biaxial extension; the glass transition
+ * of bread crust with water content: van Nieuwenhuijzen et al. 2008, cited
+ * in lua/hearth/dough.lua). The criterion here is a critical elastic strain:
+ * the damage D is the largest fraction of the parameter `fracture_strain`
+ * that the point's largest principal deviatoric elastic Hencky strain
+ * (after the return) has reached, D = max over time of min(1, e1 / eps_f),
+ * and D = 1 is a crack, for good. The elastic strain of this law is bounded
+ * by its yield strain (q <= tau_y gives |dev eps| <= tau_y / (sqrt 6 mu)),
+ * so eps_f below ~tau_y / E makes the point brittle (it cracks before it
+ * yields) and eps_f above it ductile (it yields and never cracks): a
+ * moisture curve on eps_f (small where dry) makes the crust brittle and
+ * leaves the crumb ductile. The deviatoric part only: a uniform dilation is
+ * the pores growing under their gas (eq. 13), not a crack. Rejected: (1) a
+ * damage that sums the step's tensile stretching over eps_f (a
+ * Johnson-Cook-like rule): it counts plastic flow, so the wet crumb, which
+ * flows, built up damage everywhere, and the crust's damage rose evenly and
+ * cracked the whole skin at once instead of one crack; (2) the total
+ * principal elastic strain: the crumb's elastic dilation under its gas
+ * counted. The damage is state (the 8th double) and the `damage` callback
+ * reports it; the core then gives a cracked point no tension (each tensile
+ * principal value of tau set to 0) and none of its pressure terms
+ * (<hearth/material.h>, core/sim/material.h). fracture_strain = 0 (the
+ * default) never cracks: Ding et al.'s law as it was, bit for bit.
+ *
  * ---- state ---------------------------------------------------------------------
- * Seven doubles: b^E (xx, yy, zz, xy, yz, zx) and J^P. Why b^E and not F^E:
+ * Eight doubles: b^E (xx, yy, zz, xy, yz, zx), J^P and the damage D. Why b^E and not F^E:
  * the stress and the return depend only on b^E, its update f b f^T is
  * objective as it stands, it is symmetric (6 doubles), and its eigen
  * decomposition (Jacobi, or none near the rest shape) replaces the SVD of
@@ -123,8 +154,8 @@ static const hearth_param params[P_COUNT] = {
                         "porosity n^p past which the pores grow only elastically (J^P <= 1 + max_porosity - n^p_0); 1 = no cap",
                         1, 1e-3, 1},
     [P_FRACTURE_STRAIN] = {"fracture_strain", "1",
-                           "tensile strain to fracture (damage D += d eps_1+ / fracture_strain; at D = 1 the point carries no "
-                           "tension); give it temperature and moisture curves for a brittle crust; 0 = never fractures",
+                           "elastic strain to fracture (damage = largest deviatoric elastic strain / fracture_strain; at 1 the "
+                           "point carries no tension); small where dry (a moisture curve) for a brittle crust; 0 = never",
                            0, 0, 100},
 };
 
@@ -380,8 +411,8 @@ static double dev_max_eigen(const double e[9]) {
 }
 
 /* Damage (header, "crust fracture"): the largest fraction of its strain to
- * fracture that the point's largest principal elastic strain e1 has
- * reached; 1 is cracked, for good. */
+ * fracture that the point's largest principal deviatoric elastic strain e1
+ * has reached; 1 is cracked, for good. */
 static void fracture_update(const double *prm, double *st, double e1) {
     const double ef = prm[P_FRACTURE_STRAIN];
     if (ef > 0 && e1 > 0 && st[S_DAMAGE] < 1) st[S_DAMAGE] = fmax(st[S_DAMAGE], fmin(1, e1 / ef));

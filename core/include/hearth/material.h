@@ -27,7 +27,7 @@
  *
  * 2. Descriptor. name is [a-z0-9_]+ (it is the file's <name> and a Lua
  *    string). init, stress, wave_speed and describe_error are non-NULL;
- *    blend, plastic_J and viscosity may be NULL. nparams <= 256 with params
+ *    blend, plastic_J, viscosity and damage may be NULL. nparams <= 256 with params
  *    non-NULL when nparams > 0; 0 <= state_size <= 4096; needs holds only
  *    known HEARTH_NEEDS_* bits.
  *
