@@ -552,10 +552,11 @@ static double plastic_J(const double *p, const double *state) {
     return state ? state[S_JP] : 1.0;
 }
 
-/* Damage D in [0, 1]; at 1 the core cuts the point's total stress off in tension. */
+/* Damage D in [0, 1]; at 1 the core cuts the point's stress off in tension.
+ * Without a state: whether these parameters may crack (fracture_strain > 0). */
 static double damage(const double *p, const double *state) {
-    (void)p;
-    return state ? state[S_DAMAGE] : 0.0;
+    if (!state) return p[P_FRACTURE_STRAIN] > 0;
+    return state[S_DAMAGE];
 }
 
 static const char *describe_error(int code) {

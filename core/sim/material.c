@@ -89,6 +89,12 @@ int material_table_push(material_table *t, material_slot *ms, hearth_error *err)
         }
     }
     ms->wave_per_point = m->state_size > 0 || ms->ncurves > 0;
+    /* damage(p, NULL) says whether a point with these parameters may crack (<hearth/material.h>) */
+    if (m->damage) {
+        plugin_call_enter(m, "damage");
+        ms->fracture = ms->ncurves > 0 || m->damage(ms->params, NULL) != 0;
+        plugin_call_leave();
+    }
     t->slot[t->n] = *ms;
     return t->n++;
 }
@@ -199,6 +205,7 @@ hearth_status material_curve_add(material_table *t, int mat, int k, int of, int 
     memcpy(vv, v, sizeof(double) * (size_t)n);
     ms->curves[at] = (curve){.param = k, .n = n, .T = tt, .v = vv, .irreversible = irreversible != 0, .of = of};
     ms->ncurves++;
+    ms->fracture |= ms->m->damage != NULL; /* a curve may move the parameters into cracking: ask per point */
     /* the cached wave speed is the base parameters': a stiffer curve point (E x 100 in a dried crust) would
      * outrun the step limit (seen: an elastic block inverted within a second of drying) */
     ms->wave_per_point = 1;
@@ -244,6 +251,7 @@ void material_mixture_set(material_table *t, int id, int k, double *mp) {
     const int np = m->nparams;
     ms->mix_k = k;
     ms->mix_params = mp;
+    ms->fracture |= m->damage != NULL; /* a constituent may crack */
     if (m->state_size == 0) /* any blend's waves are bounded by the fastest constituent's */
         for (int c = 1; c < k; c++) {
             plugin_call_enter(m, "wave_speed");

@@ -57,6 +57,7 @@ typedef struct material_slot {
     double wave_speed;  /* cached when the plugin is stateless (state_size 0) and no curve moves its parameters */
     curve *curves;      /* parameters that follow temperature */
     int ncurves;
+    int fracture;       /* the plugin reports damage and these parameters may crack (material.c); in ncurves' padding */
     double core[CP_COUNT]; /* field properties (params.h CP_*) */
     int mix_k;             /* a mixture (mixing.c): number of constituents, 0 for a plain material */
     double *mix_params;    /* mix_k parameter sets, schema order */
@@ -166,7 +167,10 @@ enum {
     /* The core's thermal expansion, eq. 10: tau -= c lambda J^E^2 (theta - theta_ref) I, when c lambda > 0.
      * The gas (eq. 13) and water (eq. 14) pressures are added when env->gas and env->saturation0 are
      * non-NULL: a bit and two pointers that MPM's instantiations know at compile time or once per block. */
-    MATERIAL_EXPANSION = 1u << 2
+    MATERIAL_EXPANSION = 1u << 2,
+    /* The material may crack (material_slot.fracture): the plugin's damage is asked per point, and a cracked
+     * point is cut off in tension (material_point_couple). Without the bit no damage call is made. */
+    MATERIAL_DAMAGE = 1u << 3
 };
 
 /* The door's result beyond the plugin's own positive codes: tau came back NaN or infinite. */
@@ -284,7 +288,7 @@ void material_tension_cutoff(double tau[9]);
  * run (J^E ~ 400 at 2 s). */
 MATERIAL_INLINE void material_point_couple(const hearth_material *m, const double *core, hearth_point *pt,
                                            const material_env *env, double tau[9]) {
-    if (m->damage) {
+    if ((env->flags & MATERIAL_DAMAGE) && m->damage) {
         plugin_call_enter(m, "damage");
         if (m->damage(pt->p, pt->state) >= 1) {
             material_tension_cutoff(tau);

@@ -25,7 +25,7 @@ typedef enum field_id {
 } field_id;
 
 /* A field is live when its column is enabled (column -1: always live;
- * COLUMN_DAMAGE: when a material's plugin reports damage). */
+ * COLUMN_DAMAGE: when a material may crack, material_slot.fracture). */
 enum { COLUMN_DAMAGE = -2 };
 static const struct {
     const char *name, *unit;
@@ -56,7 +56,7 @@ static const struct {
     [F_STRESS_XY] = {"stress_xy", "Pa", 1, -1, NULL}, /* Cauchy shear stress: what a rheometer measures */
     /* 0 intact .. 1 cracked (<hearth/material.h> damage): the plugin's own state, nothing stored by the core */
     [F_DAMAGE] = {"damage", "1", 1, COLUMN_DAMAGE,
-                  "use a material whose plugin reports damage (cam_clay_dough; it grows only with fracture_strain > 0)"},
+                  "give a material that can crack a strain to fracture (cam_clay_dough's fracture_strain > 0)"},
     /* The whole Cauchy stress, row-major xx xy xz yx yy yz zx zy zz (tension
      * positive): VTK reads 9 components as a tensor, which ParaView's tensor
      * filters (eigenvalues, glyphs) expect. The six scalar components are for
@@ -98,7 +98,7 @@ static const double *solver_values(const hearth_scene *s, const char *which) {
 static int field_live(const hearth_scene *s, int f) {
     if (fields[f].column == COLUMN_DAMAGE) {
         for (int m = 0; m < s->mats.n; m++)
-            if (s->mats.slot[m].m->damage) return 1;
+            if (s->mats.slot[m].fracture) return 1;
         return 0;
     }
     return fields[f].column < 0 || (s->ps.enabled & (1u << fields[f].column));

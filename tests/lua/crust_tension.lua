@@ -29,7 +29,9 @@ s:run { until_t = P.t }
 -- A through-crack: a column of width dx in which every occupied row (height dx) of the strip holds a
 -- cracked particle (damage 1) within one column either side: the strip is cut across its thickness.
 -- Rows are the strip's own (between y0 and y1): a chip thrown off when the crust snaps is not a row.
-local r = s:particles { fields = { "x", "damage" } }
+-- (without a fracture strain the material cannot crack and the scene has no damage field: all 0)
+local r = s:particles { fields = q.fracture_strain > 0 and { "x", "damage" } or { "x" } }
+r.damage = r.damage or setmetatable({}, { __index = function() return 0 end })
 local xl, occupied, cracked, dmax = x0 - 0.01, {}, {}, 0
 for i = 1, r.n do
   local c = math.floor((r.x[3 * i - 2] - xl) / dx)
@@ -48,6 +50,6 @@ for c = math.floor((x0 + grip - xl) / dx), math.floor((x1 - grip - xl) / dx) + 1
   end
   if all then through = xl + (c + 0.5) * dx; break end
 end
-s:png("damage", "crust_tension_" .. P.which .. ".png")
+s:png(q.fracture_strain > 0 and "damage" or "von_mises", "crust_tension_" .. P.which .. ".png")
 print(("crust_tension %s dx %g mm: pulled %.1f mm, largest damage %.3f, through-crack %s"):format(P.which, dx * 1e3,
   P.v * P.t * 1e3, dmax, through and ("at x = %.1f mm"):format(through * 1e3) or "none"))

@@ -170,7 +170,10 @@ typedef struct hearth_material {
     /// point's damage in [0, 1] from its state. At 1 the point is cracked: the core cuts the stress
     /// off in tension (each tensile principal value of tau set to 0, so a crack's faces carry
     /// compression only) and adds none of its pressures (gas, water, thermal expansion: the crack
-    /// vents the pores and frees the faces). Called concurrently (rule 5).
+    /// vents the pores and frees the faces). Called concurrently (rule 5). Called once with state NULL
+    /// when a material is added: return 0 when a point with these parameters can never crack (the
+    /// core then never asks per point and lists no `damage` field), anything else when it may. A
+    /// material whose parameters follow curves or blends is asked per point whatever it returns.
     double (*damage)(const double *p, const double *state);
 } hearth_material;
 
