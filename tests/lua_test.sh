@@ -824,6 +824,11 @@ crust_fracture_brittle_vs_ductile | crust_fracture_brittle_vs_ductile_fine)
         crust) has out.txt "through-crack at x" "the dried crust cut across at dx $dx" ;;
         *) has out.txt "through-crack none" "the $w strip whole at dx $dx" ;;
         esac
+        # the damage field (and the per-point damage call) only for a material that can crack
+        case $w in
+        plastic) has out.txt "damage field off" "no damage field without a fracture strain" ;;
+        *) has out.txt "damage field live" "a damage field with a fracture strain" ;;
+        esac
         if [ $w = crumb ]; then
             d=$(sed -n 's/.*largest damage \([0-9.]*\),.*/\1/p' out.txt)
             awk -v d="$d" 'BEGIN { exit !(d != "" && d < 0.1) }' || fail "the crumb reached $d of its fracture strain (want < 0.1)"

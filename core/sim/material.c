@@ -61,6 +61,15 @@ hearth_status material_slot_init(material_slot *ms, const hearth_plugin *pl, con
     return HEARTH_OK;
 }
 
+/* damage(p, NULL): whether a point with parameters p may crack (<hearth/material.h>). */
+static int may_crack(const hearth_material *m, const double *p) {
+    if (!m->damage) return 0;
+    plugin_call_enter(m, "damage");
+    const int may = m->damage(p, NULL) != 0;
+    plugin_call_leave();
+    return may;
+}
+
 hearth_status material_table_reserve(material_table *t, hearth_error *err) {
     if (t->n < t->cap) return HEARTH_OK;
     const int cap = t->cap ? t->cap * 2 : 4;
@@ -89,12 +98,7 @@ int material_table_push(material_table *t, material_slot *ms, hearth_error *err)
         }
     }
     ms->wave_per_point = m->state_size > 0 || ms->ncurves > 0;
-    /* damage(p, NULL) says whether a point with these parameters may crack (<hearth/material.h>) */
-    if (m->damage) {
-        plugin_call_enter(m, "damage");
-        ms->fracture = ms->ncurves > 0 || m->damage(ms->params, NULL) != 0;
-        plugin_call_leave();
-    }
+    ms->fracture = may_crack(m, ms->params);
     t->slot[t->n] = *ms;
     return t->n++;
 }
@@ -205,7 +209,14 @@ hearth_status material_curve_add(material_table *t, int mat, int k, int of, int 
     memcpy(vv, v, sizeof(double) * (size_t)n);
     ms->curves[at] = (curve){.param = k, .n = n, .T = tt, .v = vv, .irreversible = irreversible != 0, .of = of};
     ms->ncurves++;
-    ms->fracture |= ms->m->damage != NULL; /* a curve may move the parameters into cracking: ask per point */
+    /* a curve may move the parameters into cracking: asked at each of its values (a moisture curve's as
+     * factors on the base), with the other parameters at their base values */
+    for (int j = 0; j < n && !ms->fracture && ms->m->damage; j++) {
+        double q[MATERIAL_MAX_PARAMS];
+        memcpy(q, ms->params, sizeof(double) * (size_t)ms->m->nparams);
+        q[k] = of == CURVE_OF_MOISTURE ? q[k] * v[j] : v[j];
+        ms->fracture = may_crack(ms->m, q);
+    }
     /* the cached wave speed is the base parameters': a stiffer curve point (E x 100 in a dried crust) would
      * outrun the step limit (seen: an elastic block inverted within a second of drying) */
     ms->wave_per_point = 1;
@@ -251,7 +262,7 @@ void material_mixture_set(material_table *t, int id, int k, double *mp) {
     const int np = m->nparams;
     ms->mix_k = k;
     ms->mix_params = mp;
-    ms->fracture |= m->damage != NULL; /* a constituent may crack */
+    for (int c = 0; c < k && !ms->fracture; c++) ms->fracture = may_crack(m, mp + (size_t)c * np); /* a constituent may crack */
     if (m->state_size == 0) /* any blend's waves are bounded by the fastest constituent's */
         for (int c = 1; c < k; c++) {
             plugin_call_enter(m, "wave_speed");

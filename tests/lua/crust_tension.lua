@@ -51,5 +51,8 @@ for c = math.floor((x0 + grip - xl) / dx), math.floor((x1 - grip - xl) / dx) + 1
   if all then through = xl + (c + 0.5) * dx; break end
 end
 s:png(q.fracture_strain > 0 and "damage" or "von_mises", "crust_tension_" .. P.which .. ".png")
+local live = false
+for _, f in ipairs(s:stats().fields) do live = live or f == "damage" end
+print(("crust_tension %s: damage field %s"):format(P.which, live and "live" or "off"))
 print(("crust_tension %s dx %g mm: pulled %.1f mm, largest damage %.3f, through-crack %s"):format(P.which, dx * 1e3,
   P.v * P.t * 1e3, dmax, through and ("at x = %.1f mm"):format(through * 1e3) or "none"))
