@@ -465,7 +465,7 @@ static int stress_near(hearth_point *pt, double m, const double B[9], double J, 
             hearth_full_to_sym(B, st);
         }
         st[S_JP] = J / exp(ev); /* J^P = J / J^E */
-        fracture_update(prm, st, ratio * dev_max_eigen(e));
+        if (prm[P_FRACTURE_STRAIN] > 0) fracture_update(prm, st, ratio * dev_max_eigen(e)); /* its trig only when asked */
     }
     hencky_tau(prm, ev, e, ratio, tau);
     return 0;
