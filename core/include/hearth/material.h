@@ -172,8 +172,8 @@ typedef struct hearth_material {
     /// compression only) and adds none of its pressures (gas, water, thermal expansion: the crack
     /// vents the pores and frees the faces). Called concurrently (rule 5). Called once with state NULL
     /// when a material is added: return 0 when a point with these parameters can never crack (the
-    /// core then never asks per point and lists no `damage` field), anything else when it may. A
-    /// material whose parameters follow curves or blends is asked per point whatever it returns.
+    /// core then never asks per point and lists no `damage` field), anything else when it may; a
+    /// material given curves or a blend is asked again at each curve value and each constituent.
     double (*damage)(const double *p, const double *state);
 } hearth_material;
 
