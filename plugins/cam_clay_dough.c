@@ -79,8 +79,39 @@
  * volume change is elastic (the gas is then held by elastic tension, p/K,
  * ~2% for 600 Pa at E 4e4). Default 1: no cap, eq. 12 as it stands.
  *
+ * ---- crust fracture (issue #18; not in Ding et al.) ---------------------------
+ * Eq. 12 yields in tension and flows; it never parts, so a dried crust over a
+ * swelling crumb domes and holds (docs/validation.md, "Crust (#18)"). A crust
+ * is brittle because it breaks before it yields: a glassy starch-gluten
+ * matrix fractures at strains of a few per cent, while a rubbery dough's
+ * gas cell walls stretch to Hencky strains of order 1 before they part (van
+ * Vliet, Janssen, Bloksma & Walstra 1992, J. Texture Stud. 23, 439: strain
+ * hardening and rupture of dough in biaxial extension; the glass transition
+ * of bread crust with water content: van Nieuwenhuijzen et al. 2008, cited
+ * in lua/hearth/dough.lua). The criterion here is a critical elastic strain:
+ * the damage D is the largest fraction of the parameter `fracture_strain`
+ * that the point's largest principal deviatoric elastic Hencky strain
+ * (after the return) has reached, D = max over time of min(1, e1 / eps_f),
+ * and D = 1 is a crack, for good. The elastic strain of this law is bounded
+ * by its yield strain (q <= tau_y gives |dev eps| <= tau_y / (sqrt 6 mu)),
+ * so eps_f below ~tau_y / E makes the point brittle (it cracks before it
+ * yields) and eps_f above it ductile (it yields and never cracks): a
+ * moisture curve on eps_f (small where dry) makes the crust brittle and
+ * leaves the crumb ductile. The deviatoric part only: a uniform dilation is
+ * the pores growing under their gas (eq. 13), not a crack. Rejected: (1) a
+ * damage that sums the step's tensile stretching over eps_f (a
+ * Johnson-Cook-like rule): it counts plastic flow, so the wet crumb, which
+ * flows, built up damage everywhere, and the crust's damage rose evenly and
+ * cracked the whole skin at once instead of one crack; (2) the total
+ * principal elastic strain: the crumb's elastic dilation under its gas
+ * counted. The damage is state (the 8th double) and the `damage` callback
+ * reports it; the core then gives a cracked point no tension (each tensile
+ * principal value of tau set to 0) and none of its pressure terms
+ * (<hearth/material.h>, core/sim/material.h). fracture_strain = 0 (the
+ * default) never cracks: Ding et al.'s law as it was, bit for bit.
+ *
  * ---- state ---------------------------------------------------------------------
- * Seven doubles: b^E (xx, yy, zz, xy, yz, zx) and J^P. Why b^E and not F^E:
+ * Eight doubles: b^E (xx, yy, zz, xy, yz, zx), J^P and the damage D. Why b^E and not F^E:
  * the stress and the return depend only on b^E, its update f b f^T is
  * objective as it stands, it is symmetric (6 doubles), and its eigen
  * decomposition (Jacobi, or none near the rest shape) replaces the SVD of
@@ -104,7 +135,7 @@
 
 #include <hearth/tensor.h>
 
-enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_COUNT };
+enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_COUNT };
 
 /* Defaults: the cookie column of Ding et al. Table 2 (E 4e4, tau_y 20,
  * eta 500, density 500); nu is not in Table 2. */
@@ -122,10 +153,14 @@ static const hearth_param params[P_COUNT] = {
     [P_MAX_POROSITY] = {"max_porosity", "1",
                         "porosity n^p past which the pores grow only elastically (J^P <= 1 + max_porosity - n^p_0); 1 = no cap",
                         1, 1e-3, 1},
+    [P_FRACTURE_STRAIN] = {"fracture_strain", "1",
+                           "elastic strain to fracture (damage = largest deviatoric elastic strain / fracture_strain; at 1 the "
+                           "point carries no tension); small where dry (a moisture curve) for a brittle crust; 0 = never",
+                           0, 0, 100},
 };
 
 enum { S_XX = HEARTH_SYM_XX, S_YY = HEARTH_SYM_YY, S_ZZ = HEARTH_SYM_ZZ, S_XY = HEARTH_SYM_XY, S_YZ = HEARTH_SYM_YZ,
-       S_ZX = HEARTH_SYM_ZX, S_JP, S_COUNT };
+       S_ZX = HEARTH_SYM_ZX, S_JP, S_DAMAGE, S_COUNT };
 
 enum {
     E_INVERTED = 1, /* det F <= 0 or not finite */
@@ -364,11 +399,31 @@ static void exp_near(const double X[9], double E[9]) {
     }
 }
 
+/* The largest eigenvalue of a symmetric deviatoric 3x3 (tr e = 0), by the
+ * trigonometric closed form: no iteration on the near path. */
+static double dev_max_eigen(const double e[9]) {
+    const double p2 = e[0] * e[0] + e[4] * e[4] + e[8] * e[8] + 2 * (e[1] * e[1] + e[2] * e[2] + e[5] * e[5]);
+    if (!(p2 > 0)) return 0;
+    const double pp = sqrt(p2 / 6);
+    const double det = e[0] * (e[4] * e[8] - e[5] * e[5]) - e[1] * (e[1] * e[8] - e[5] * e[2]) + e[2] * (e[1] * e[5] - e[4] * e[2]);
+    const double r = fmax(-1, fmin(1, det / (2 * pp * pp * pp)));
+    return 2 * pp * cos(acos(r) / 3);
+}
+
+/* Damage (header, "crust fracture"): the largest fraction of its strain to
+ * fracture that the point's largest principal deviatoric elastic strain e1
+ * has reached; 1 is cracked, for good. */
+static void fracture_update(const double *prm, double *st, double e1) {
+    const double ef = prm[P_FRACTURE_STRAIN];
+    if (ef > 0 && e1 > 0 && st[S_DAMAGE] < 1) st[S_DAMAGE] = fmax(st[S_DAMAGE], fmin(1, e1 / ef));
+}
+
 static void init(const double *p, double *state) {
     (void)p;
     state[S_XX] = state[S_YY] = state[S_ZZ] = 1;
     state[S_XY] = state[S_YZ] = state[S_ZX] = 0;
     state[S_JP] = 1;
+    state[S_DAMAGE] = 0;
 }
 
 /* The Kirchhoff stress tau = lambda ev I + 2 mu eps of eps = ev/3 I + ratio e
@@ -410,6 +465,7 @@ static int stress_near(hearth_point *pt, double m, const double B[9], double J, 
             hearth_full_to_sym(B, st);
         }
         st[S_JP] = J / exp(ev); /* J^P = J / J^E */
+        if (prm[P_FRACTURE_STRAIN] > 0) fracture_update(prm, st, ratio * dev_max_eigen(e)); /* its trig only when asked */
     }
     hencky_tau(prm, ev, e, ratio, tau);
     return 0;
@@ -470,7 +526,8 @@ static int stress(hearth_point *pt, double tau[9]) {
             else hearth_sym_from_eigen(Q, d, B);
         }
         hearth_full_to_sym(B, st);
-        st[S_JP] = J / exp(ev); /* J^P = J / J^E */
+        st[S_JP] = J / exp(ev); /* J^P = J / J^E (a crack opens as plastic volume: it reads as pores) */
+        fracture_update(prm, st, ratio * fmax(e[0], fmax(e[1], e[2])));
     }
     double mu, lambda;
     hearth_lame(prm[P_E], prm[P_NU], &mu, &lambda);
@@ -493,6 +550,13 @@ static double wave_speed(const double *p, const double *state) {
 static double plastic_J(const double *p, const double *state) {
     (void)p;
     return state ? state[S_JP] : 1.0;
+}
+
+/* Damage D in [0, 1]; at 1 the core cuts the point's stress off in tension.
+ * Without a state: whether these parameters may crack (fracture_strain > 0). */
+static double damage(const double *p, const double *state) {
+    if (!state) return p[P_FRACTURE_STRAIN] > 0;
+    return state[S_DAMAGE];
 }
 
 static const char *describe_error(int code) {
@@ -521,6 +585,7 @@ static const hearth_material material = {
     .wave_speed = wave_speed,
     .describe_error = describe_error,
     .plastic_J = plastic_J,
+    .damage = damage,
 };
 
 HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void); /* for -Wmissing-prototypes */

@@ -223,8 +223,10 @@ if d >= 0.1 * h and w >= 2 * dx:
     sys.exit(0)
 print("EXPECTED FAILURE: the loaf rises smoothly and its top stays whole. Its rise is mostly elastic: area +40% "
       "while the porosity on its centre line stays ~0.105 (docs/validation.md, Rise (#18)), i.e. eq. 13's pressure "
-      "dilates the soft skeleton (E 2e3 Pa) and the top stretches evenly; nothing in the law lets a set skin fail in "
-      "tension. Needs the crust's stiffening (issue #18, Crust) and a tension failure of the set crust")
+      "dilates the soft skeleton (E 2e3 Pa) and the top stretches evenly. The dough law now fractures (fracture_strain, "
+      "docs/validation.md, Crust (#18)), but h.library.paper.bread carries no water, so no dry crust sets its top apart: "
+      "a fracture strain of 1 raw falling to e once set (70 degC) cracks the whole set loaf into rubble by 2-2.5 s "
+      "(e = 0.1, 0.03) or nothing (e = 0.3: notch 0.36 mm). Needs the drying crust (water) in the bread presets")
 sys.exit(77)
 PY
     exit $?
@@ -297,8 +299,9 @@ print(f"dx {dx * 1e3:.0f} mm, t = {r['t']} s: deepest notch in the top {d * 1e3:
 if d >= 0.1 * height and w >= 2 * dx:
     sys.exit(0)
 print("EXPECTED FAILURE: the muffin domes but its top stays whole: the walls and floor set first and the soft centre "
-      "rises as one smooth cap; nothing in the dough law lets a set skin fail in tension (eq. 12 yields in tension and "
-      "flows, it does not part), so a tear needs the crust's stiffening (issue #18, Crust) and a tension failure")
+      "rises as one smooth cap. The dough law now fractures (fracture_strain, docs/validation.md, Crust (#18)), but "
+      "h.library.paper.muffin carries no water, so no dry, brittle skin sets its top apart from the set crumb "
+      "(as the bread's: claim_bread_unscored_cracks); a tear needs the drying crust in the muffin preset")
 sys.exit(77)
 PY
     exit $?

@@ -856,15 +856,47 @@ crust_dry_is_stiffer)
         has out.txt "crust_stiffer ok" "sags within 1% of the references at dx $dx"
     done
     ;;
+crust_fracture_brittle_vs_ductile | crust_fracture_brittle_vs_ductile_fine)
+    # issue #18, the dough law's fracture (plugins/cam_clay_dough.c "crust fracture"): strips pulled 3 mm (7 % of
+    # their free length) between sticky grips. The dried crust (fracture strain 0.02, below its yield strain 0.04)
+    # is cut across its thickness; the rubbery crumb (fracture strain 1) and the crust without fracture (0, Ding
+    # et al.'s law) yield and stay whole, the crumb below a tenth of its fracture strain. dx 2 mm, _fine 1.5 mm.
+    dx=0.002
+    [ "$case_name" = crust_fracture_brittle_vs_ductile_fine ] && dx=0.0015
+    for w in crust crumb plastic; do
+        run crust_tension.lua --set dx=$dx --set which=$w
+        expect_rc 0 "the $w strip at dx $dx"
+        cat out.txt
+        case $w in
+        crust) has out.txt "through-crack at x" "the dried crust cut across at dx $dx" ;;
+        *) has out.txt "through-crack none" "the $w strip whole at dx $dx" ;;
+        esac
+        # the damage field (and the per-point damage call) only for a material that can crack
+        case $w in
+        plastic) has out.txt "damage field off" "no damage field without a fracture strain" ;;
+        *) has out.txt "damage field live" "a damage field with a fracture strain" ;;
+        esac
+        if [ $w = crumb ]; then
+            d=$(sed -n 's/.*largest damage \([0-9.]*\),.*/\1/p' out.txt)
+            awk -v d="$d" 'BEGIN { exit !(d != "" && d < 0.1) }' || fail "the crumb reached $d of its fracture strain (want < 0.1)"
+        fi
+    done
+    ;;
 crust_cracks_over_expanding_crumb)
     # issue #18: a dried, stiffened crust over a crumb that swells opens a crack (>= 2 cells wide, >= 0.1 of the
     # height deep) at dx 4 and 3 mm, and the same dough without dry stiffening does not. Expected failure: the
-    # crust domes and holds (numbers printed; docs/validation.md "Crust (#18)" has the cause found).
+    # crust cracks, then the crumb runs away through it (numbers printed; docs/validation.md "Crust (#18)").
+    # A run the guard stops (exit 3) has not opened a crack that holds: it counts as not opened, and its
+    # message is printed (since the crust's fracture, the crumb runs away through the cracked crust).
     opened=0
     for dx in 0.004 0.003; do
         run crust_cracks.lua --set dx=$dx --set F=30
-        expect_rc 0 "the dried crust over the swelling crumb at dx $dx"
         cat out.txt
+        if [ "$rc" -ne 0 ]; then
+            [ "$rc" -eq 3 ] || fail "the dried crust over the swelling crumb at dx $dx: exit $rc: $(cat err.txt)"
+            echo "dx $dx: stopped by the guard: $(grep -m1 'guard:' err.txt)"
+            continue
+        fi
         w=$(sed -n 's/^crust_cracks result: .* opening \([0-9]*\) cells.*/\1/p' out.txt)
         [ -n "$w" ] || fail "no result line at dx $dx"
         [ "$w" -ge 2 ] && opened=$((opened + 1))
@@ -877,8 +909,10 @@ crust_cracks_over_expanding_crumb)
         echo "the dried crust cracks at both resolutions; without dry stiffening no crack (exit $rc)"
         exit 0
     fi
-    echo "EXPECTED FAILURE: the dried crust opened at $opened of 2 resolutions (it domes and holds: the Cam-clay" \
-        "law yields and spreads, it has no fracture); the control exited $rc (eq. 10's expansion runaway when $rc = 3)"
+    echo "EXPECTED FAILURE: the dried crust opened at $opened of 2 resolutions. It cracks (the law's fracture:" \
+        "damage 1 at its crown by ~0.5 s, cracked particles counted above), and then the crumb, no longer held, runs" \
+        "away under eq. 10's expansion c lambda J_E^2 (T - T_ref) through the crack as the unconfined F = 1 control" \
+        "does (exit $rc), and the guard stops the run before the opening can be measured at 0.7 s"
     exit 77
     ;;
 lua_body_force_varies_in_space)

@@ -13,13 +13,14 @@
 
 #include "hearth/hearth.h"
 #include "hearth/material.h"
+#include "material.h"
 #include "tensor.h"
 #include "test.h"
 #define PLUGIN_FIXTURE_SEED 0x0d0c0ffee
 #include "plugin_fixture.h"
 
-enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, NP };
-enum { NSTATE = 7 };
+enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, NP };
+enum { NSTATE = 8 };
 
 static const hearth_material *dough(void) { return load_material("cam_clay_dough"); }
 
@@ -513,6 +514,70 @@ TEST(dough_pore_cap) {
     CHECK(jp_end[1] > 1 + cap - n0 + 0.05);         /* the uncapped dough goes on */
 }
 
+/* Damage (the header's "crust fracture"): D is the largest fraction of
+ * fracture_strain that the largest principal deviatoric elastic Hencky strain
+ * has reached. A steady pure-shear stretch L = diag(a, -a, 0) of an elastic
+ * point (tau_y 1e9) has, after k steps, the Hencky strains k log(1 + a dt),
+ * k log(1 - a dt), 0, so D = min(1, e1 / eps_f) with e1 their largest minus
+ * their mean, on the plane path and the general (3D) one. A uniform dilation
+ * and fracture_strain 0 leave D at 0; a ductile point (tau_y 20 Pa, E 2e3 Pa:
+ * yield strain ~0.01 < eps_f = 0.05) yields and never cracks. */
+TEST(dough_fracture_damage) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL && m->damage != NULL);
+    if (!m || !m->damage) return;
+    const double dt = 1e-3, a = 5.0, ef = 0.05;
+    double dmax[5];
+    for (int c = 0; c < 5; c++) { /* 0 plane, 1 general, 2 dilation, 3 fracture off, 4 ductile */
+        const double p[NP] = {2e3, 0.3, c == 4 ? 20 : 1e9, 0, 0.5, 500, 1, c == 3 ? 0 : ef};
+        double st[NSTATE], F[9], tau[9], L[9] = {0};
+        if (c == 2) L[0] = L[4] = L[8] = 0.4;
+        else L[0] = a, L[4] = -a;
+        if (c == 1) L[2] = L[6] = 1e-9; /* off the plane: the general path */
+        m->init(p, st);
+        t3_identity(F);
+        double worst = 0;
+        for (int k = 1; k <= 80; k++) {
+            double f[9], Fn[9];
+            for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
+            t3_mul(f, F, Fn);
+            t3_copy(Fn, F);
+            hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
+            memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
+            CHECK(m->stress(&pt, tau) == 0);
+            const double e0 = k * log1p(a * dt), e1 = k * log1p(-a * dt), e1max = e0 - (e0 + e1) / 3;
+            const double want = c >= 2 ? 0 : fmin(1, e1max / ef);
+            if (c != 4) worst = fmax(worst, fabs(m->damage(p, st) - want)); /* 4: only bounded, below */
+        }
+        dmax[c] = m->damage(p, st);
+        printf("  case %d: damage after 80 steps %.6f, largest error against the closed form %.2e\n", c, dmax[c], worst);
+        CHECK(worst <= (c == 1 ? 1e-6 : 1e-9));
+    }
+    CHECK(dmax[0] == 1 && dmax[1] == 1); /* the elastic point cracked (e1 reaches 0.05 near step 10) */
+    CHECK(dmax[4] > 0 && dmax[4] < 0.5); /* the ductile one yielded first: its elastic strain stays near tau_y / E */
+}
+
+/* The core's cut-off of a cracked point (core/sim/material.h): the tensile
+ * principal values of tau go to 0, the compressive ones and the principal
+ * frame stay. tau = R diag(300, -200, 50) R^T, R a rotation about z. */
+TEST(dough_tension_cutoff) {
+    const double c = cos(0.3), s = sin(0.3), R[9] = {c, -s, 0, s, c, 0, 0, 0, 1}, l[3] = {300, -200, 50}, w[3] = {0, -200, 0};
+    double tau[9], want[9], worst = 0;
+    for (int r = 0; r < 3; r++)
+        for (int k = 0; k < 3; k++) {
+            tau[3 * r + k] = want[3 * r + k] = 0;
+            for (int j = 0; j < 3; j++) tau[3 * r + k] += R[3 * r + j] * l[j] * R[3 * k + j], want[3 * r + k] += R[3 * r + j] * w[j] * R[3 * k + j];
+        }
+    material_tension_cutoff(tau);
+    for (int i = 0; i < 9; i++) worst = fmax(worst, fabs(tau[i] - want[i]));
+    printf("  cut-off error %.2e Pa\n", worst);
+    CHECK(worst <= 1e-9);
+    double cmp[9] = {-5, 1, 0, 1, -3, 0, 0, 0, -1}, orig[9]; /* all compressive: unchanged */
+    memcpy(orig, cmp, sizeof cmp);
+    material_tension_cutoff(cmp);
+    for (int i = 0; i < 9; i++) CHECK(cmp[i] == orig[i]);
+}
+
 /* `hearth plugin check` on the built plugin. */
 TEST(dough_plugin_check) {
     const hearth_material *m = check_built_plugin("cam_clay_dough");
@@ -524,4 +589,4 @@ TEST(dough_plugin_check) {
 
 TEST_MAIN(T(dough_closest_point), T(dough_viscoplastic_optimality), T(dough_inside_unchanged), T(dough_von_mises_limit),
           T(dough_frame_indifference), T(dough_plane_strain_path), T(dough_near_identity_return), T(dough_extremes),
-          T(dough_closed_pores), T(dough_pore_cap), T(dough_plugin_check))
+          T(dough_closed_pores), T(dough_pore_cap), T(dough_fracture_damage), T(dough_tension_cutoff), T(dough_plugin_check))

@@ -11,6 +11,7 @@
 
 #include "alloc.h"
 #include "error.h"
+#include "tensor.h"
 
 /* A parameter array is never of size 0, so a plugin without parameters still has a pointer. */
 static size_t params_bytes(const hearth_material *m) { return sizeof(double) * (size_t)(m->nparams > 0 ? m->nparams : 1); }
@@ -60,6 +61,15 @@ hearth_status material_slot_init(material_slot *ms, const hearth_plugin *pl, con
     return HEARTH_OK;
 }
 
+/* damage(p, NULL): whether a point with parameters p may crack (<hearth/material.h>). */
+static int may_crack(const hearth_material *m, const double *p) {
+    if (!m->damage) return 0;
+    plugin_call_enter(m, "damage");
+    const int may = m->damage(p, NULL) != 0;
+    plugin_call_leave();
+    return may;
+}
+
 hearth_status material_table_reserve(material_table *t, hearth_error *err) {
     if (t->n < t->cap) return HEARTH_OK;
     const int cap = t->cap ? t->cap * 2 : 4;
@@ -88,6 +98,7 @@ int material_table_push(material_table *t, material_slot *ms, hearth_error *err)
         }
     }
     ms->wave_per_point = m->state_size > 0 || ms->ncurves > 0;
+    ms->fracture = may_crack(m, ms->params);
     t->slot[t->n] = *ms;
     return t->n++;
 }
@@ -198,6 +209,14 @@ hearth_status material_curve_add(material_table *t, int mat, int k, int of, int 
     memcpy(vv, v, sizeof(double) * (size_t)n);
     ms->curves[at] = (curve){.param = k, .n = n, .T = tt, .v = vv, .irreversible = irreversible != 0, .of = of};
     ms->ncurves++;
+    /* a curve may move the parameters into cracking: asked at each of its values (a moisture curve's as
+     * factors on the base), with the other parameters at their base values */
+    for (int j = 0; j < n && !ms->fracture && ms->m->damage; j++) {
+        double q[MATERIAL_MAX_PARAMS];
+        memcpy(q, ms->params, sizeof(double) * (size_t)ms->m->nparams);
+        q[k] = of == CURVE_OF_MOISTURE ? q[k] * v[j] : v[j];
+        ms->fracture = may_crack(ms->m, q);
+    }
     /* the cached wave speed is the base parameters': a stiffer curve point (E x 100 in a dried crust) would
      * outrun the step limit (seen: an elastic block inverted within a second of drying) */
     ms->wave_per_point = 1;
@@ -243,6 +262,7 @@ void material_mixture_set(material_table *t, int id, int k, double *mp) {
     const int np = m->nparams;
     ms->mix_k = k;
     ms->mix_params = mp;
+    for (int c = 0; c < k && !ms->fracture; c++) ms->fracture = may_crack(m, mp + (size_t)c * np); /* a constituent may crack */
     if (m->state_size == 0) /* any blend's waves are bounded by the fastest constituent's */
         for (int c = 1; c < k; c++) {
             plugin_call_enter(m, "wave_speed");
@@ -292,4 +312,23 @@ hearth_status hearth_material_check(const char *plugin, const char *const *names
         return err_set(err, HEARTH_ERR_PLUGIN, "material '%s' declares %d parameters; hearth supports at most %d", m->name,
                        m->nparams, MATERIAL_MAX_PARAMS);
     return params_resolve(m, names, values, n, tmp, core, err);
+}
+
+/* Rankine's tension cut-off at zero strength on the symmetric part of tau
+ * (an isotropic law's tau is symmetric; the symmetric part guards rounding):
+ * the principal values are clipped at 0 in their own frame. Only cracked
+ * points come here, so the eigen-decomposition is off the hot path. */
+void material_tension_cutoff(double tau[9]) {
+    double S[9], l[3], Q[9];
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) S[3 * r + c] = 0.5 * (tau[3 * r + c] + tau[3 * c + r]);
+    t3_sym_eigen(S, l, Q);
+    if (!(l[0] > 0 || l[1] > 0 || l[2] > 0)) return; /* all compressive (or NaN: the guard reports it) */
+    for (int k = 0; k < 3; k++) l[k] = fmin(l[k], 0);
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) {
+            double v = 0;
+            for (int k = 0; k < 3; k++) v += Q[3 * r + k] * l[k] * Q[3 * c + k];
+            tau[3 * r + c] = v;
+        }
 }

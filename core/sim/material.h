@@ -57,6 +57,7 @@ typedef struct material_slot {
     double wave_speed;  /* cached when the plugin is stateless (state_size 0) and no curve moves its parameters */
     curve *curves;      /* parameters that follow temperature */
     int ncurves;
+    int fracture;       /* the plugin reports damage and these parameters may crack (material.c); in ncurves' padding */
     double core[CP_COUNT]; /* field properties (params.h CP_*) */
     int mix_k;             /* a mixture (mixing.c): number of constituents, 0 for a plain material */
     double *mix_params;    /* mix_k parameter sets, schema order */
@@ -166,7 +167,10 @@ enum {
     /* The core's thermal expansion, eq. 10: tau -= c lambda J^E^2 (theta - theta_ref) I, when c lambda > 0.
      * The gas (eq. 13) and water (eq. 14) pressures are added when env->gas and env->saturation0 are
      * non-NULL: a bit and two pointers that MPM's instantiations know at compile time or once per block. */
-    MATERIAL_EXPANSION = 1u << 2
+    MATERIAL_EXPANSION = 1u << 2,
+    /* The material may crack (material_slot.fracture): the plugin's damage is asked per point, and a cracked
+     * point is cut off in tension (material_point_couple). Without the bit no damage call is made. */
+    MATERIAL_DAMAGE = 1u << 3
 };
 
 /* The door's result beyond the plugin's own positive codes: tau came back NaN or infinite. */
@@ -221,11 +225,12 @@ MATERIAL_INLINE int material_point_stress(const hearth_material *m, const double
     return code;
 }
 
-/* The second half of material_point_eval: the core's coupling terms, after the
- * plugin's stress. MPM calls the halves apart so it can read the step limits
- * (wave_speed, viscosity) between them while the state is in cache. */
-MATERIAL_INLINE void material_point_couple(const hearth_material *m, const double *core, hearth_point *pt,
-                                           const material_env *env, double tau[9]) {
+/* The core's coupling terms, after the plugin's stress (material_point_couple
+ * below adds a cracked point's cut-off). MPM calls the door's halves apart so
+ * it can read the step limits (wave_speed, viscosity) between them while the
+ * state is in cache. */
+MATERIAL_INLINE void material_point_couple_terms(const hearth_material *m, const double *core, hearth_point *pt,
+                                                 const material_env *env, double tau[9]) {
     const unsigned fl = env->flags;
     const double *gas = env->gas, *s0 = env->saturation0;
     if (!gas && !s0 && !(fl & MATERIAL_EXPANSION)) return;
@@ -266,6 +271,31 @@ MATERIAL_INLINE void material_point_couple(const hearth_material *m, const doubl
         tau[4] -= th;
         tau[8] -= th;
     }
+}
+
+/* A cracked point (the plugin's damage callback at 1): each tensile
+ * principal value of its tau set to 0 (material.c). */
+void material_tension_cutoff(double tau[9]);
+
+/* The second half of material_point_eval: the core's coupling terms or, for
+ * a point its plugin reports cracked (damage 1, <hearth/material.h>), the
+ * tension cut-off of the plugin's stress and no pressure terms. The crack
+ * opens the point's pores to the oven, so its gas vents, and its faces are
+ * free, so it holds no thermal stress. Rejected: the cut-off on the total
+ * stress with the terms kept. A free point's eq. 10 pressure c lambda J^E^2
+ * (theta - theta_ref) grows as it swells; with no tension held against it,
+ * cracked points of a bread's crust inflated until the guard stopped the
+ * run (J^E ~ 400 at 2 s). */
+MATERIAL_INLINE void material_point_couple(const hearth_material *m, const double *core, hearth_point *pt,
+                                           const material_env *env, double tau[9]) {
+    if ((env->flags & MATERIAL_DAMAGE) && m->damage) {
+        plugin_call_enter(m, "damage");
+        if (m->damage(pt->p, pt->state) >= 1) {
+            material_tension_cutoff(tau);
+            return;
+        }
+    }
+    material_point_couple_terms(m, core, pt, env, tau);
 }
 
 /* The door: material_point_stress, then material_point_couple. Returns 0, the

@@ -21,10 +21,12 @@
 typedef enum field_id {
     F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_STRESS_XY, F_TEMPERATURE, F_BOUNDARY,
     F_GAS, F_POROSITY, F_GAS_PRESSURE, F_SATURATION, F_WATER_MASS, F_WATER_PRESSURE, F_BROWNING, F_MIX_RATIO, F_STRESS,
-    F_SXX, F_SYY, F_SZZ, F_SXZ, F_SYZ, F_COUNT
+    F_SXX, F_SYY, F_SZZ, F_SXZ, F_SYZ, F_DAMAGE, F_COUNT
 } field_id;
 
-/* A field is live when its column is enabled (column -1: always live). */
+/* A field is live when its column is enabled (column -1: always live;
+ * COLUMN_DAMAGE: when a material may crack, material_slot.fracture). */
+enum { COLUMN_DAMAGE = -2 };
 static const struct {
     const char *name, *unit;
     int ncomp, column;
@@ -52,6 +54,9 @@ static const struct {
     [F_BROWNING] = {"browning", "1", 1, PC_BROWNING,
                     "set browning = true in the scene (h.scene{browning = true}: Zanoni et al. 1995 kinetics, either solver)"},
     [F_STRESS_XY] = {"stress_xy", "Pa", 1, -1, NULL}, /* Cauchy shear stress: what a rheometer measures */
+    /* 0 intact .. 1 cracked (<hearth/material.h> damage): the plugin's own state, nothing stored by the core */
+    [F_DAMAGE] = {"damage", "1", 1, COLUMN_DAMAGE,
+                  "give a material that can crack a strain to fracture (cam_clay_dough's fracture_strain > 0)"},
     /* The whole Cauchy stress, row-major xx xy xz yx yy yz zx zy zz (tension
      * positive): VTK reads 9 components as a tensor, which ParaView's tensor
      * filters (eigenvalues, glyphs) expect. The six scalar components are for
@@ -91,6 +96,11 @@ static const double *solver_values(const hearth_scene *s, const char *which) {
 }
 
 static int field_live(const hearth_scene *s, int f) {
+    if (fields[f].column == COLUMN_DAMAGE) {
+        for (int m = 0; m < s->mats.n; m++)
+            if (s->mats.slot[m].fracture) return 1;
+        return 0;
+    }
     return fields[f].column < 0 || (s->ps.enabled & (1u << fields[f].column));
 }
 
@@ -185,6 +195,19 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
         out[0] = s->mats.slot[pcoli(ps, PC_MAT)[i]].core[CP_WATER_STIFFNESS] * (water_saturation(s, i) - pcold(ps, PC_SAT0)[i]);
         break;
     case F_BROWNING: out[0] = pcold(ps, PC_BROWNING)[i]; break; /* Delta E / 52 (browning.c) */
+    case F_DAMAGE: {
+        const int m = pcoli(ps, PC_MAT)[i];
+        const material_slot *ms = &s->mats.slot[m];
+        out[0] = 0;
+        if (ms->m->damage) {
+            double pscratch[SCENE_MAX_PARAMS];
+            plugin_call_enter(ms->m, "damage");
+            out[0] = ms->m->damage(material_params(&s->mats, &s->ps, m, i, pscratch),
+                                   ps->state_stride ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
+            plugin_call_leave();
+        }
+        break;
+    }
     case F_POROSITY:
     case F_GAS_PRESSURE: {
         const int m = pcoli(ps, PC_MAT)[i];

@@ -8,21 +8,29 @@
 -- thermal expansion c lambda = 10 Pa/K swells the soft crumb under the
 -- crust that does not swell as much (pores capped at 0.6, as the muffin's).
 -- Run with F = 30 (a dried crust) and F = 1 (the same dough without dry
--- stiffening). What it shows (docs/validation.md, "Crust (#18)"): the dried
--- crust domes and holds, it does not open; without it the unconfined dough
--- runs away under eq. 10's expansion (the guard stops it).
+-- stiffening or embrittlement). What it shows (docs/validation.md, "Crust
+-- (#18)"): the dried crust cracks at its crown (damage 1) by ~0.55 s, and
+-- the crumb, no longer held, runs away under eq. 10's expansion through
+-- the crack until the guard stops it, as the unconfined F = 1 dough does.
 -- The crack measure (the same as bread.lua's for the unscored loaf): the top
 -- surface as the highest particle in each column of width dx; a column is
 -- open when it lies at least 0.1 of the body's height below the lower of the
 -- highest columns within 4 cells on either side; a crack is a run of at
 -- least 2 open columns. Prints "crack W cells, depth D" for each run.
 local h = require "hearth"
-local P = h.params { dx = 0.004, F = 30, cl = 10 }
+local P = h.params { dx = 0.004, F = 30, cl = 10, ef = 1, ef_dry = 0.02 }
 local dx = P.dx
 local x0, x1, floor, H, s0 = 0.02, 0.10, 0.01, 0.03, 0.4
 local s = h.scene { dim = 2, dx = dx, box = { { 0, 0 }, { 0.12, 0.08 } }, oven = { temperature = 20, beta = 0 }, name = "crust_cracks" }
 local dry = h.curve { { 0.65, P.F }, { 0.85, 1 }, of = "moisture", irreversible = true }
+-- The strain to fracture (the law's damage, plugins/cam_clay_dough.c): a wet dough's cell walls part
+-- only at Hencky strains ~1 (P.ef), far past its yield strain tau_y / E ~ 0.04, so it flows and
+-- never cracks; a glassy crust breaks at a few per cent (P.ef_dry, 0.02), before it yields. It
+-- follows the same moisture points as the stiffening; F = 1, the dough without the dry crust's
+-- stiffening, keeps the wet value too.
+local ef = P.F > 1 and P.ef * h.curve { { 0.65, P.ef_dry / P.ef }, { 0.85, 1 }, of = "moisture", irreversible = true } or P.ef
 local m = h.material("cam_clay_dough", { E = 5e3 * dry, nu = 0.3, density = 500, tau_y = 200 * dry, eta = 0,
+  fracture_strain = ef,
   specific_heat = 20, conductivity = 30, expansion = P.cl, reference_temperature = 20, porosity = 0.1, max_porosity = 0.6,
   water_diffusivity = 2e-4 / 293.15, evaporation = 2 })
 s:collider { shape = h.plane({ 0, floor }, { 0, 1 }), mode = "sticky" }
@@ -64,8 +72,10 @@ local w, d, hm
 for k = 1, 2 do
   s:run { until_t = 0.3 + 0.2 * k }
   w, d, hm = crack()
-  print(("dx %g mm, F %g: t %.1f s height %.2f mm, widest opening %d cells, depth %.2f mm (%.3f of the height)")
-    :format(dx * 1e3, P.F, s:stats().t, hm * 1e3, w, d * 1e3, d / hm))
+  local q, nc = s:particles { fields = { "damage" } }, 0
+  for i = 1, q.n do if q.damage[i] >= 1 then nc = nc + 1 end end
+  print(("dx %g mm, F %g: t %.1f s height %.2f mm, widest opening %d cells, depth %.2f mm (%.3f of the height), %d cracked particles")
+    :format(dx * 1e3, P.F, s:stats().t, hm * 1e3, w, d * 1e3, d / hm, nc))
 end
 if P.F > 1 then s:png("saturation", "crust_cracks.png") end
 print(("crust_cracks result: dx %g F %g height %.2f mm opening %d cells depth %.3f"):format(dx * 1e3, P.F, hm * 1e3, w, d / hm))

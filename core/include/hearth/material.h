@@ -27,7 +27,7 @@
  *
  * 2. Descriptor. name is [a-z0-9_]+ (it is the file's <name> and a Lua
  *    string). init, stress, wave_speed and describe_error are non-NULL;
- *    blend, plastic_J and viscosity may be NULL. nparams <= 256 with params
+ *    blend, plastic_J, viscosity and damage may be NULL. nparams <= 256 with params
  *    non-NULL when nparams > 0; 0 <= state_size <= 4096; needs holds only
  *    known HEARTH_NEEDS_* bits.
  *
@@ -166,6 +166,15 @@ typedef struct hearth_material {
     /// the stress applies explicitly from the velocity gradient, for the step limit
     /// dt <= rho dx^2 / (2 dim eta). Leave NULL when viscous flow is integrated implicitly.
     double (*viscosity)(const double *p, const double *state);
+    /// Optional (may be NULL, meaning an intact material; read only when struct_size covers it). The
+    /// point's damage in [0, 1] from its state. At 1 the point is cracked: the core cuts the stress
+    /// off in tension (each tensile principal value of tau set to 0, so a crack's faces carry
+    /// compression only) and adds none of its pressures (gas, water, thermal expansion: the crack
+    /// vents the pores and frees the faces). Called concurrently (rule 5). Called once with state NULL
+    /// when a material is added: return 0 when a point with these parameters can never crack (the
+    /// core then never asks per point and lists no `damage` field), anything else when it may; a
+    /// material given curves or a blend is asked again at each curve value and each constituent.
+    double (*damage)(const double *p, const double *state);
 } hearth_material;
 
 /// The entry point a plugin defines.

@@ -448,7 +448,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
             pt.state = state ? state + (size_t)i * stride : NULL;
             /* the fields this scene carries, and the core's terms on them (material.h) */
             const material_env env = {
-                .flags = env_flags | (ms->m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u),
+                .flags = env_flags | (ms->m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u) |
+                         (ms->fracture ? MATERIAL_DAMAGE : 0u),
                 .J = J,
                 .temperature = Tcol ? Tcol[i] : NAN,
                 .saturation = Wcol ? Wcol[i] / (ms->core[CP_WATER_DENSITY] * J * V0[i]) : NAN,

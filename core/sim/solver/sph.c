@@ -516,7 +516,7 @@ static int phase_stress(hearth_scene *s, double dt, step_report *rep) {
          * refused when added (sph_solver.supplies). None of the core's coupling terms: they are
          * isotropic, and SPH keeps only the deviator (Tait gives the pressure). */
         const material_env env = {
-            .flags = ms->m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u,
+            .flags = (ms->m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u) | (ms->fracture ? MATERIAL_DAMAGE : 0u),
             .temperature = T ? T[i] : NAN,
             .saturation = NAN,
             .porosity = NAN,
