@@ -225,7 +225,7 @@ static lua_State *start(run_args *a, progress *pr, const char *cmd) {
                     .frames_override = (int)a->frames, .quiet = a->quiet, .trusted = a->trust,
                     .sets = a->sets, .progress = on_progress, .progress_ud = pr,
                     .assets_dir = app_assets_dir(), .lua_memory = a->lua_memory, .vtu_dir = a->vtu,
-                    .movie = a->movie};
+                    .movie = a->movie, .in_dir = a->out_shared};
     lua_State *L = hl_new_state(&o, &err);
     if (!L) fprintf(stderr, "hearth %s: %s\n", cmd, err.msg);
     return L;
@@ -285,9 +285,14 @@ int cmd_run(int argc, char **argv) {
     run_args a;
     int rc = app_run_parse(&a, argc, argv, "run");
     if (rc) return rc == 1 ? 0 : rc;
+    char scratch[4096];
+    if (app_ranks_follow(&a, scratch, sizeof scratch)) return 1; /* mpirun: ranks > 0 write nothing of their own */
     progress pr;
     lua_State *L = start(&a, &pr, "run");
-    if (!L) return 1;
+    if (!L) {
+        app_ranks_cleanup(scratch);
+        return 1;
+    }
     run_log rec;
     run_log_start(&rec, "run", a.argc, a.argv, a.scene, a.out, a.sets, a.nsets);
     int status = 0;
@@ -309,6 +314,8 @@ int cmd_run(int argc, char **argv) {
     run_log_write(&rec, status);
     if (status == 0 && !a.quiet) fprintf(stderr, "hearth run: done; outputs in %s/\n", a.out);
     hl_close_state(L);
+    app_ranks_cleanup(scratch);
+    app_ranks_report(&a);
     return status;
 }
 

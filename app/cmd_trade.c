@@ -352,6 +352,9 @@ static int start_run(trade *T, int i) {
         }
         setenv("OMP_NUM_THREADS", thr, 1);
         setenv("OMP_WAIT_POLICY", "passive", 1);
+        /* a run is one process: under --launcher mpi this child inherits its rank's
+         * environment, and must not join that job as a rank of one scene (docs/scaling.md) */
+        setenv("HEARTH_NO_RANKS", "1", 1);
         execv("/proc/self/exe", (char *const *)av);
         fprintf(stderr, "hearth trade: cannot run /proc/self/exe: %s\n", strerror(errno));
         _exit(127);

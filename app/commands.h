@@ -35,10 +35,18 @@ typedef struct run_args {
     const char *sets[65];
     int nsets;
     char out_buf[4096], dir_buf[4096];
+    const char *out_shared; /* under mpirun, ranks > 0: rank 0's output folder, read from, never written (cmd_run_ranks.c) */
 } run_args;
 /// Parse them; prints usage errors. Returns 0 ok, 1 when --help was printed, 2 bad usage.
 /// The scene file is required for cmd "run"; the output folder defaults to hearth-out/<scene name>.
 int app_run_parse(run_args *a, int argc, char **argv, const char *cmd);
+/// Under mpirun, a rank other than 0 writes into a private scratch folder (put
+/// in scratch, n bytes) and prints nothing (cmd_run_ranks.c); 1 when it cannot.
+int app_ranks_follow(run_args *a, char *scratch, size_t n);
+/// Remove that scratch folder (nothing for rank 0).
+void app_ranks_cleanup(const char *scratch);
+/// Rank 0 of several, unless --quiet: the ranks' exchange traffic and its share of the run, on stderr.
+void app_ranks_report(const run_args *a);
 /// The built-in demo scene (cmd_run_demo.c): a jelly disc and syrup falling into a cup.
 hearth_scene *app_demo_scene(hearth_error *err);
 

@@ -122,7 +122,29 @@ int main(int argc, char **argv) {
         return 2;
     }
     if (!strcmp(c, "bench")) return cmd_bench(argc - 1, argv + 1);
-    if (!strcmp(c, "run")) return cmd_run(argc - 1, argv + 1);
+    if (!strcmp(c, "run")) { /* the one command that runs over mpirun's ranks (docs/scaling.md) */
+        hearth_ranks_init(&argc, &argv);
+        const char *world = getenv("OMPI_COMM_WORLD_SIZE") ? getenv("OMPI_COMM_WORLD_SIZE") : getenv("PMI_SIZE");
+        const char *no_ranks = getenv("HEARTH_NO_RANKS");
+        if (!hearth_ranks_built() && world && atoi(world) > 1 && !(no_ranks && no_ranks[0] == '1')) { /* N copies would each run the whole scene */
+            fprintf(stderr, "hearth run: started as one of %d MPI ranks, but this hearth was built without MPI; "
+                            "rebuild with libopenmpi-dev installed (meson -Dmpi=enabled), or run it without mpirun\n",
+                    atoi(world));
+            return 2;
+        }
+        const int st = cmd_run(argc - 1, argv + 1);
+        if (st && hearth_ranks_size() > 1) {
+            /* A failure on one rank alone (a file rank 0 could not write) leaves the
+             * others waiting in the next exchange, where MPI_Finalize would wait for
+             * them too. Leaving without it makes mpirun end every rank, with this
+             * status. (MPI_Abort did the same but crashed OpenMPI 4.1's mpirun when
+             * two ranks called it at once, as a guard stop on every rank does.) */
+            fflush(stdout), fflush(stderr);
+            _exit(st);
+        }
+        hearth_ranks_finalize();
+        return st;
+    }
     if (!strcmp(c, "repl")) return cmd_repl(argc - 1, argv + 1);
     if (!strcmp(c, "rheometer")) return cmd_rheometer(argc - 1, argv + 1);
     if (!strcmp(c, "fit")) return cmd_fit(argc - 1, argv + 1);

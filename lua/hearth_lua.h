@@ -39,6 +39,7 @@ typedef struct hl_options {
     int (*interrupted)(void);
     const char *vtu_dir;    ///< every s:run without its own vtu = {...} writes VTU frames and a .pvd here (hearth run --vtu)
     const char *movie;      ///< every s:run without its own movie = ... encodes its PNG frames into this file (hearth run --movie)
+    const char *in_dir;     ///< or NULL: a file to read that is not in out_dir is looked for here (mpirun ranks > 0: rank 0's output folder)
 } hl_options;
 
 /// The one constructor of a Lua state that runs scenes (hearth run, repl, the

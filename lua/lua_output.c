@@ -107,6 +107,9 @@ const char *hl_in_path(lua_State *L, const char *path, char *buf, size_t n) {
     const hl_options *o = hl_opts(L);
     if (path[0] == '/' || !o->out_dir) snprintf(buf, n, "%s", path);
     else snprintf(buf, n, "%s/%s", o->out_dir, path);
+    /* under mpirun a rank > 0 writes into its own scratch folder, but reads
+     * what an earlier run left in the shared output folder (a checkpoint) */
+    if (o->in_dir && path[0] != '/' && access(buf, F_OK) != 0) snprintf(buf, n, "%s/%s", o->in_dir, path);
     return buf;
 }
 

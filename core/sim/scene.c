@@ -37,6 +37,7 @@
 #include "browning.h"
 #include "water.h"
 #include "mixing.h"
+#include "ranks.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -91,6 +92,12 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
     /* ---- the solver's own options (solver.h) ---- */
     const solver *sv = solver_of(d->solver);
     if (!sv) return err_set(err, HEARTH_ERR_PARAM, "scene: solver = %d; valid: 0 (mpm), 1 (sph)", d->solver);
+    /* MPI ranks: only MPM splits its particle blocks among them (mpm_ranks.c) */
+    if (ranks_size() > 1 && d->solver != HEARTH_SOLVER_MPM)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "scene: solver = \"%s\" runs in one process, and this run has %d MPI ranks; run it without "
+                       "mpirun (or with mpirun -n 1); solver = \"mpm\" runs over ranks",
+                       sv->name, ranks_size());
     for (int k = 0; k < 3; k++) {
         if (!d->periodic[k]) continue;
         if (k >= d->dim)

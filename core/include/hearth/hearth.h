@@ -702,6 +702,28 @@ hearth_status hearth_atomic_file_commit(hearth_atomic_file *af, hearth_error *er
 /// Give up: remove the temp file and release af (NULL is fine).
 void hearth_atomic_file_abort(hearth_atomic_file *af);
 
+/* ---- MPI ranks (docs/scaling.md) ---------------------------------------- */
+/// Join mpirun's ranks: when hearth was built with MPI (-Dmpi) and this
+/// process was started by mpirun (its environment says so), MPI is started
+/// here; otherwise the process is one rank. Call once from main, before any
+/// scene; returns the rank count. An MPM scene then splits its particle blocks
+/// among the ranks (every rank holds the whole scene: docs/scaling.md says what
+/// that costs); an SPH scene refuses to run on more than one.
+int hearth_ranks_init(int *argc, char ***argv);
+/// This process's rank, 0 .. hearth_ranks_size() - 1 (0 without MPI).
+int hearth_ranks_rank(void);
+/// How many ranks run the scene (1 without MPI or without mpirun).
+int hearth_ranks_size(void);
+/// 1 when this build has MPI (the rank tests skip otherwise).
+int hearth_ranks_built(void);
+/// Leave the ranks (MPI_Finalize) after every scene is freed. Safe without MPI and twice.
+void hearth_ranks_finalize(void);
+/// What this rank's exchanges cost since hearth_ranks_init: bytes received
+/// (the grid sums and particle gathers of every MPM step) and wall-clock
+/// seconds spent inside them, waiting for the other ranks included. 0 and 0
+/// on one rank.
+void hearth_ranks_traffic(double *bytes, double *seconds);
+
 #ifdef __cplusplus
 }
 #endif

@@ -86,6 +86,7 @@ static void mpm_free(hearth_scene *s) {
     mem_free(m->partial, sizeof(pb_partial) * (size_t)m->pbcap);
     mem_free(m->counts, sizeof(int) * ((size_t)m->nblocks + 1));
     mem_free(m->mark, (size_t)m->nblocks);
+    mpm_ranks_free(m);
     mem_free(m, sizeof *m);
     s->mpm = NULL;
 }
@@ -99,7 +100,7 @@ static hearth_status mpm_init(hearth_scene *s, hearth_error *err) {
     m->counts = mem_calloc(sizeof(int) * ((size_t)m->nblocks + 1));
     m->mark = mem_calloc((size_t)m->nblocks);
     if (!m->counts || !m->mark) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the grid tables");
-    return HEARTH_OK;
+    return mpm_ranks_init(m, err);
 }
 
 /* Room for n particles' step scratch: grown when the particle count grows, so
@@ -356,7 +357,9 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) periodic_mark(s, m->mark);
     st = grid_set_channels(g, thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
     if (st) return st;
-    return grid_activate(g, m->mark, err);
+    if ((st = grid_activate(g, m->mark, err))) return st;
+    mpm_ranks_partition(s); /* which particle blocks this rank steps */
+    return HEARTH_OK;
 }
 
 /* ---- P2G ------------------------------------------------------------- */
@@ -591,7 +594,8 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
         for (int col = 0; col < 8; col++) {
             const int a = m->colour_start[col], b = m->colour_start[col + 1];
 #pragma omp for schedule(dynamic, 2)
-            for (int q = a; q < b; q++) fn(s, m->colour_pb[q], dt, tile);
+            for (int q = a; q < b; q++)
+                if (m->colour_pb[q] >= m->k_lo && m->colour_pb[q] < m->k_hi) fn(s, m->colour_pb[q], dt, tile); /* this rank's */
             /* the implicit barrier of omp for separates colours */
         }
     }
@@ -893,8 +897,9 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
     {
         double tile[6 * GRID_T * GRID_T * GRID_T];
 #pragma omp for schedule(dynamic, 2)
-        for (int k = 0; k < m->npb; k++) fn(s, k, dt, tile);
+        for (int k = m->k_lo; k < m->k_hi; k++) fn(s, k, dt, tile); /* this rank's blocks (all on one rank) */
     }
+    mpm_ranks_gather(s);
     /* reduce in block order so sums and the first failure do not depend on threads */
     *rep = (step_report){.particle = -1, .fastest = -1, .mover = -1};
     double vmax = -1, mass = 0;
@@ -933,6 +938,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         return err_set(err, HEARTH_ERR_PARAM, "scene: periodic axes (periodic_%c) do not carry %s yet; use a closed box",
                        "xyz"[s->def.periodic[0] ? 0 : s->def.periodic[1] ? 1 : 2], heat ? "heat" : "water");
     mpm_p2g(s, dt, rep);
+    if ((st = mpm_ranks_sum_grid(s, err))) return st;
     if (wrap) periodic_fold(s, 0);
     if (heat || water) {
         if ((st = boundary_find(s, err))) return st;

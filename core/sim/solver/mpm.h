@@ -42,6 +42,10 @@ typedef struct mpm_state {
     int colour_start[9];
     pb_partial *partial;
     int sticky_faces;       /* this step's scene has a sticky collider: P2G adds its faces' reaction (p2g_mirror) */
+    /* MPI ranks (mpm_ranks.c): this rank steps particle blocks [k_lo, k_hi); rank r
+     * owns blocks [kfirst[r], kfirst[r + 1]) and particles [pfirst[r], pfirst[r + 1]) */
+    int nranks, k_lo, k_hi;
+    int *kfirst, *pfirst;   /* nranks + 1 each */
 } mpm_state;
 
 /// The MPM state of s (NULL under another solver), for the field passes an
@@ -53,6 +57,15 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep);
 /// Returns the largest collider speed (m/s) at a node with mass that a collider set.
 double mpm_grid_update(hearth_scene *s, double dt);
 void mpm_g2p(hearth_scene *s, double dt, step_report *rep);
+/* mpm_ranks.c: the MPM step over MPI ranks (a no-op on one rank) */
+hearth_status mpm_ranks_init(mpm_state *m, hearth_error *err);
+void mpm_ranks_free(mpm_state *m);
+/// After the sort: each rank's run of particle blocks, split by particle count.
+void mpm_ranks_partition(hearth_scene *s);
+/// After P2G: the nodes summed over the ranks (and P2G's volumes shared).
+hearth_status mpm_ranks_sum_grid(hearth_scene *s, hearth_error *err);
+/// After G2P's blocks: every rank's particles and block partials to every rank.
+void mpm_ranks_gather(hearth_scene *s);
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err);
 /* The stable step: CFL, the user's maximum, explicit conduction, water and viscosity. */
 double mpm_stable_dt(const hearth_scene *s);

@@ -1,0 +1,58 @@
+/* cmd_run_ranks.c: `mpirun -n N hearth run`: what the ranks other than 0 do
+ * with their outputs. Every rank holds the whole scene (core/sim/solver/
+ * mpm_ranks.c), so rank 0 alone writes the outputs (PNG, CSV, probes,
+ * VTU, the run record) and prints; the others run the same scene file into a
+ * private scratch folder, removed at the end, and print nothing (set
+ * HEARTH_RANKS_VERBOSE=1 to keep their messages). Rejected: a write switch
+ * in the core, which every writer (atomic files, PNG, Lua's io.open) would
+ * have to consult. */
+/* nftw and mkdtemp: the build defines _XOPEN_SOURCE */
+#include <ftw.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include "commands.h"
+#include "hearth/hearth.h"
+
+int app_ranks_follow(run_args *a, char *scratch, size_t n) {
+    scratch[0] = '\0';
+    if (hearth_ranks_rank() == 0) return 0;
+    const char *tmp = getenv("TMPDIR") && getenv("TMPDIR")[0] ? getenv("TMPDIR") : "/tmp";
+    snprintf(scratch, n, "%s/hearth-rank%d-XXXXXX", tmp, hearth_ranks_rank());
+    if (!mkdtemp(scratch)) {
+        fprintf(stderr, "hearth run (rank %d): cannot make a scratch folder under %s\n", hearth_ranks_rank(), tmp);
+        scratch[0] = '\0';
+        return 1;
+    }
+    a->out_shared = a->out; /* a checkpoint an earlier run left there is still read from it */
+    a->out = scratch;
+    a->quiet = 1;
+    a->metric_out = NULL;
+    a->movie = NULL;
+    const char *v = getenv("HEARTH_RANKS_VERBOSE");
+    if (!(v && v[0] == '1')) {
+        if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) return 1;
+    }
+    return 0;
+}
+
+static int remove_entry(const char *path, const struct stat *sb, int flag, struct FTW *ftw) {
+    (void)sb, (void)flag, (void)ftw;
+    remove(path);
+    return 0;
+}
+
+void app_ranks_cleanup(const char *scratch) {
+    if (scratch && scratch[0]) nftw(scratch, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
+}
+
+void app_ranks_report(const run_args *a) {
+    if (hearth_ranks_size() == 1 || hearth_ranks_rank() > 0) return;
+    double bytes, seconds;
+    hearth_ranks_traffic(&bytes, &seconds);
+    const char *v = getenv("HEARTH_RANKS_REPORT");
+    if (a->quiet && !(v && v[0] == '1')) return;
+    fprintf(stderr, "hearth run: %d MPI ranks; rank 0 received %.3g MB in the exchanges, %.3g s inside them\n",
+            hearth_ranks_size(), bytes / 1e6, seconds);
+}

@@ -1,0 +1,132 @@
+/* ranks_mpi.c: ranks.h over MPI (MPI_COMM_WORLD), built when meson finds MPI.
+ *
+ * MPI starts only when mpirun started the process (its environment names a
+ * world size): a plain `hearth run` of an MPI build stays one process and
+ * never touches MPI, so it neither waits for a launcher nor prints MPI's
+ * warnings. Threads: MPI_THREAD_FUNNELED, every call from the main thread
+ * outside OpenMP's parallel regions.
+ *
+ * Determinism: the grid is summed by hand, not by MPI_Allreduce, whose order
+ * of addition is the library's choice (tree or ring by message size): every
+ * rank gathers each rank's written slots (MPI_Allgatherv moves bytes, adds
+ * nothing) and adds them in rank order. The cost is that every rank receives
+ * every rank's written slots (docs/scaling.md models it). */
+#include <mpi.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "alloc.h"
+#include "error.h"
+#include "ranks.h"
+
+static int started, rank_id, nranks = 1;
+static int *counts, *displs, *spans; /* nranks, nranks, 2 nranks */
+static double *sumbuf;
+static size_t sumcap; /* doubles in sumbuf */
+static double traffic_bytes, traffic_seconds; /* received by this rank, and the time inside the exchanges */
+
+static int launched_by_mpirun(void) {
+    /* a hearth that an MPI job's rank starts as a child process (hearth trade
+     * running its ladder over ranks) inherits the rank's environment: it must
+     * not join that job */
+    const char *no = getenv("HEARTH_NO_RANKS");
+    if (no && no[0] == '1') return 0;
+    static const char *const vars[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "MPI_LOCALNRANKS", NULL};
+    for (int k = 0; vars[k]; k++)
+        if (getenv(vars[k])) return 1;
+    return 0;
+}
+
+int hearth_ranks_init(int *argc, char ***argv) {
+    if (started || !launched_by_mpirun()) return nranks;
+    int provided = 0, already = 0;
+    MPI_Initialized(&already);
+    if (!already) MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_id);
+    MPI_Comm_size(MPI_COMM_WORLD, &nranks);
+    counts = calloc((size_t)nranks, sizeof(int));
+    displs = calloc((size_t)nranks, sizeof(int));
+    spans = calloc(2 * (size_t)nranks, sizeof(int));
+    if (!counts || !displs || !spans) MPI_Abort(MPI_COMM_WORLD, 1); /* a few ints per rank at start-up */
+    started = 1;
+    return nranks;
+}
+
+int hearth_ranks_rank(void) { return rank_id; }
+int hearth_ranks_size(void) { return nranks; }
+int hearth_ranks_built(void) { return 1; }
+
+void hearth_ranks_finalize(void) {
+    if (!started) return;
+    mem_free(sumbuf, sumcap * sizeof(double));
+    sumbuf = NULL, sumcap = 0;
+    free(counts), free(displs), free(spans);
+    counts = displs = spans = NULL;
+    int done = 0;
+    MPI_Finalized(&done);
+    if (!done) MPI_Finalize();
+    started = 0;
+}
+
+void hearth_ranks_traffic(double *bytes, double *seconds) {
+    *bytes = traffic_bytes;
+    *seconds = traffic_seconds;
+}
+
+int ranks_size(void) { return nranks; }
+int ranks_rank(void) { return rank_id; }
+
+void ranks_allgather(void *base, size_t elem, const int *first) {
+    if (nranks == 1 || elem == 0) return;
+    const double t0 = MPI_Wtime();
+    MPI_Datatype t;
+    MPI_Type_contiguous((int)elem, MPI_BYTE, &t);
+    MPI_Type_commit(&t);
+    for (int r = 0; r < nranks; r++) {
+        counts[r] = first[r + 1] - first[r];
+        displs[r] = first[r];
+    }
+    MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, base, counts, displs, t, MPI_COMM_WORLD);
+    MPI_Type_free(&t);
+    traffic_bytes += (double)elem * (double)(first[nranks] - first[0] - counts[rank_id]);
+    traffic_seconds += MPI_Wtime() - t0;
+}
+
+hearth_status ranks_sum_grid(grid *g, int slot_lo, int slot_hi, hearth_error *err) {
+    if (nranks == 1) return HEARTH_OK;
+    if (slot_hi < slot_lo) slot_hi = slot_lo; /* a rank with no particle blocks writes nothing */
+    const double t0 = MPI_Wtime();
+    const int span[2] = {slot_lo, slot_hi};
+    MPI_Allgather(span, 2, MPI_INT, spans, 2, MPI_INT, MPI_COMM_WORLD);
+    const size_t sd = (size_t)g->nch * (size_t)g->nodes_per_block; /* doubles per storage slot */
+    size_t total = 0;
+    for (int r = 0; r < nranks; r++) {
+        counts[r] = spans[2 * r + 1] - spans[2 * r];
+        displs[r] = (int)total;
+        total += (size_t)counts[r];
+    }
+    /* every rank sees the same total, so all fail here together or none does */
+    if (total * sd > sumcap) {
+        size_t cap = total * sd + total * sd / 4;
+        double *b = mem_alloc(cap * sizeof(double));
+        if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the ranks' grid sum (%zu bytes)", cap * sizeof(double));
+        mem_free(sumbuf, sumcap * sizeof(double));
+        sumbuf = b, sumcap = cap;
+    }
+    MPI_Datatype t;
+    MPI_Type_contiguous((int)sd, MPI_DOUBLE, &t);
+    MPI_Type_commit(&t);
+    MPI_Allgatherv(g->data + (size_t)slot_lo * sd, slot_hi - slot_lo, t, sumbuf, counts, displs, t, MPI_COMM_WORLD);
+    MPI_Type_free(&t);
+    traffic_bytes += (double)(total - (size_t)counts[rank_id]) * (double)sd * sizeof(double) + 2.0 * sizeof(int) * (nranks - 1);
+    traffic_seconds += MPI_Wtime() - t0; /* the sum below is this rank's own work, not traffic */
+    memset(g->data, 0, (size_t)g->nactive * sd * sizeof(double));
+    for (int r = 0; r < nranks; r++) {
+        double *dst = g->data + (size_t)spans[2 * r] * sd;
+        const double *src = sumbuf + (size_t)displs[r] * sd;
+        const size_t n = (size_t)counts[r] * sd;
+#pragma omp parallel for schedule(static) if (n >= 65536)
+        for (size_t j = 0; j < n; j++) dst[j] += src[j];
+    }
+    return HEARTH_OK;
+}

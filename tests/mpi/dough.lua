@@ -1,0 +1,25 @@
+-- mpi_dough_matches_one_rank: a bread dough with every field live (heat with
+-- the oven's surface, water and evaporation with latent heat, CO2), sagging
+-- on a tray, 100 steps; every particle's id, x, v, temperature, saturation
+-- and J to state.csv (17 digits) for tests/mpi_test.sh.
+local h = require "hearth"
+local P = h.params { steps = 100, heat = "explicit" }
+local s = h.scene { dim = 2, dx = 0.004, box = { { 0, 0 }, { 0.12, 0.08 } },
+  oven = { temperature = 200, beta = 40 }, latent_heat = true, heat = P.heat, dt_max = 2e-3 }
+local d = h.library.dough.bread
+d.specific_heat, d.conductivity = 2800, 0.5
+d.water_diffusivity, d.evaporation = 5e-8 / 373.15, 3e-5
+s:add { shape = h.box({ 0.02, 0.012 }, { 0.10, 0.05 }), material = h.material("cam_clay_dough", d), temperature = 25,
+  saturation = 0.4 }
+s:collider { shape = h.plane({ 0, 0.01 }, { 0, 1 }), mode = "sticky", temperature = 180 }
+s:step(P.steps)
+local r = s:particles { fields = { "id", "x", "v", "temperature", "saturation", "J" } }
+local lines = {}
+for i = 1, r.n do
+  lines[#lines + 1] = ("%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g"):format(r.id[i], r.x[3 * i - 2], r.x[3 * i - 1],
+    r.v[3 * i - 2], r.v[3 * i - 1], r.temperature[i], r.saturation[i], r.J[i])
+end
+h.write("state.csv", table.concat(lines, "\n") .. "\n")
+local st = s:stats()
+print(("steps %d particles %d t %.6g kinetic %.17g heat %.17g hash %s"):format(st.step, st.particles, st.t, st.kinetic,
+  st.heat_energy, s:hash()))
