@@ -68,13 +68,13 @@
 /* ---- state ----------------------------------------------------------- */
 
 static void free_scratch(mpm_state *m) {
-    mem_free(m->keys, sizeof(int) * (size_t)m->scratch_cap);
     mem_free(m->order, sizeof(int) * (size_t)m->scratch_cap);
     mem_free(m->perm_scratch, sizeof(double) * (size_t)m->scratch_cap);
     mem_free(m->vol, sizeof(double) * (size_t)m->scratch_cap);
     m->keys = m->order = NULL;
     m->perm_scratch = m->vol = NULL;
     m->scratch_cap = 0;
+    m->keys_n = -1; /* the keys went with the scratch */
 }
 
 static void mpm_free(hearth_scene *s) {
@@ -86,6 +86,7 @@ static void mpm_free(hearth_scene *s) {
     mem_free(m->partial, sizeof(pb_partial) * (size_t)m->pbcap);
     mem_free(m->counts, sizeof(int) * ((size_t)m->nblocks + 1));
     mem_free(m->mark, (size_t)m->nblocks);
+    mem_free(m->hist, sizeof(int) * m->histcap);
     mem_free(m, sizeof *m);
     s->mpm = NULL;
 }
@@ -96,6 +97,7 @@ static hearth_status mpm_init(hearth_scene *s, hearth_error *err) {
     mpm_state *m = s->mpm = mem_calloc(sizeof *m);
     if (!m) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the MPM solver's state");
     m->nblocks = s->g.nblocks;
+    m->keys_n = -1;
     m->counts = mem_calloc(sizeof(int) * ((size_t)m->nblocks + 1));
     m->mark = mem_calloc((size_t)m->nblocks);
     if (!m->counts || !m->mark) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the grid tables");
@@ -109,10 +111,10 @@ static hearth_status mpm_reserve(hearth_scene *s, int n, hearth_error *err) {
     if (n > m->scratch_cap) {
         int cap = s->ps.cap > n ? s->ps.cap : n;
         free_scratch(m);
-        m->keys = mem_alloc(sizeof(int) * (size_t)cap);
         m->order = mem_alloc(sizeof(int) * (size_t)cap);
         m->perm_scratch = mem_alloc(sizeof(double) * (size_t)cap);
-        if (!m->keys || !m->order || !m->perm_scratch) {
+        m->keys = (int *)m->perm_scratch;
+        if (!m->order || !m->perm_scratch) {
             m->scratch_cap = cap; /* so free_scratch releases them with their true size */
             free_scratch(m);
             return err_set(err, HEARTH_ERR_NOMEM, "out of memory for sorting %d particles", n);
@@ -122,29 +124,31 @@ static hearth_status mpm_reserve(hearth_scene *s, int n, hearth_error *err) {
     /* the field passes read each particle's volume from here rather than F (72 bytes a particle) */
     if (!m->vol && (thermal_active(s) || water_active(s)) && !(m->vol = mem_alloc(sizeof(double) * (size_t)m->scratch_cap)))
         return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle volumes", m->scratch_cap);
-    /* one particle block per grid block at most */
-    int need = m->nblocks < n ? m->nblocks : n;
-    if (need > m->pbcap) {
-        int cap = m->pbcap ? m->pbcap : 64;
-        while (cap < need) cap *= 2;
-        /* contents are rebuilt by every sort, so fresh arrays replace the old ones */
-        pblock *pb = mem_alloc(sizeof(pblock) * (size_t)cap);
-        int *cp = mem_alloc(sizeof(int) * (size_t)cap);
-        pb_partial *pp = mem_alloc(sizeof(pb_partial) * (size_t)cap);
-        if (!pb || !cp || !pp) {
-            mem_free(pb, sizeof(pblock) * (size_t)cap);
-            mem_free(cp, sizeof(int) * (size_t)cap);
-            mem_free(pp, sizeof(pb_partial) * (size_t)cap);
-            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle blocks", need);
-        }
-        mem_free(m->pb, sizeof(pblock) * (size_t)m->pbcap);
-        mem_free(m->colour_pb, sizeof(int) * (size_t)m->pbcap);
-        mem_free(m->partial, sizeof(pb_partial) * (size_t)m->pbcap);
-        m->pb = pb;
-        m->colour_pb = cp;
-        m->partial = pp;
-        m->pbcap = cap;
+    return HEARTH_OK;
+}
+
+/* Room for npb particle blocks, grown by half when short: sized by the
+ * blocks this step's particles fill, not by every block of the box. */
+static hearth_status pb_reserve(mpm_state *m, int need, hearth_error *err) {
+    if (need <= m->pbcap) return HEARTH_OK;
+    const int cap = m->pbcap + m->pbcap / 2 > need ? m->pbcap + m->pbcap / 2 : need;
+    /* contents are rebuilt by every sort, so fresh arrays replace the old ones */
+    pblock *pb = mem_alloc(sizeof(pblock) * (size_t)cap);
+    int *cp = mem_alloc(sizeof(int) * (size_t)cap);
+    pb_partial *pp = mem_alloc(sizeof(pb_partial) * (size_t)cap);
+    if (!pb || !cp || !pp) {
+        mem_free(pb, sizeof(pblock) * (size_t)cap);
+        mem_free(cp, sizeof(int) * (size_t)cap);
+        mem_free(pp, sizeof(pb_partial) * (size_t)cap);
+        return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle blocks", need);
     }
+    mem_free(m->pb, sizeof(pblock) * (size_t)m->pbcap);
+    mem_free(m->colour_pb, sizeof(int) * (size_t)m->pbcap);
+    mem_free(m->partial, sizeof(pb_partial) * (size_t)m->pbcap);
+    m->pb = pb;
+    m->colour_pb = cp;
+    m->partial = pp;
+    m->pbcap = cap;
     return HEARTH_OK;
 }
 
@@ -295,54 +299,139 @@ static int clamp_to_grid(const grid *g, double *x) {
     return moved;
 }
 
-hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
-    grid *g = &s->g;
-    particles *ps = &s->ps;
-    const int n = ps->n;
-    hearth_status st = mpm_reserve(s, n, err);
-    if (st) return st;
-    mpm_state *m = s->mpm;
-    double *X = pcold(ps, PC_X);
-    int *keys = m->keys, *order = m->order, *counts = m->counts;
+/* The chunks the sort's bookkeeping splits into: one per thread when there
+ * is enough to share (at most SORT_CHUNKS_MAX, for the stack arrays below),
+ * else one. Every result is independent of it. */
+#define SORT_CHUNKS_MAX 64
+static int sort_chunks(int n) {
+#ifdef _OPENMP
+    if (n < SCENE_PARALLEL_MIN) return 1;
+    const int t = omp_get_max_threads();
+    return t < 1 ? 1 : t > SORT_CHUNKS_MAX ? SORT_CHUNKS_MAX : t;
+#else
+    (void)n;
+    return 1;
+#endif
+}
 
-    long moved = 0;
-    if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) periodic_wrap_all(s);
-#pragma omp parallel for schedule(static) reduction(+ : moved) if (s->ps.n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        moved += clamp_to_grid(g, X + 3 * i);
-        keys[i] = block_of_position(g, X + 3 * i);
-    }
-    s->out_of_domain += moved;
-    /* counting sort: stable, O(n + blocks), the same for any thread count */
-    int sorted = 1;
-    memset(counts, 0, sizeof(int) * ((size_t)g->nblocks + 1));
-    for (int i = 0; i < n; i++) {
-        counts[keys[i] + 1]++;
-        if (i > 0 && keys[i - 1] > keys[i]) sorted = 0;
-    }
-    for (int b = 0; b < g->nblocks; b++) counts[b + 1] += counts[b];
-    if (!sorted) {
+/* Stable counting sort of the particles by keys: order[j] is the particle
+ * that goes to place j, and counts[b] becomes the first place of block b
+ * (counts[nblocks] = n). Returns 0 when the keys were already in order
+ * (order untouched). With T chunks of particles, chunk c counts its own
+ * particles per block (hist, T x nblocks); a particle's place is its block's
+ * start, plus the block's particles in earlier chunks, plus those before it
+ * in its own chunk: the serial sort's place, so the order is the same bits
+ * for any T (`determinism_threads_*`). */
+static int sort_counting(mpm_state *m, int n, int T) {
+    const int NB = m->nblocks;
+    const int *keys = m->keys;
+    int *order = m->order, *counts = m->counts, unsorted = 0;
+    if (T <= 1) {
+        memset(counts, 0, sizeof(int) * ((size_t)NB + 1));
+        for (int i = 0; i < n; i++) {
+            counts[keys[i] + 1]++;
+            unsorted |= i > 0 && keys[i - 1] > keys[i];
+        }
+        for (int b = 0; b < NB; b++) counts[b + 1] += counts[b];
+        if (!unsorted) return 0;
         for (int i = 0; i < n; i++) order[counts[keys[i]]++] = i;
-        particles_permute(ps, order, m->perm_scratch);
-        /* counts were advanced to block ends; rebuild starts */
-        memset(counts, 0, sizeof(int) * ((size_t)g->nblocks + 1));
-        for (int i = 0; i < n; i++) counts[keys[order[i]] + 1]++;
-        for (int b = 0; b < g->nblocks; b++) counts[b + 1] += counts[b];
+        /* counts[b] advanced to block b's end, the start of b + 1 */
+        memmove(counts + 1, counts, sizeof(int) * (size_t)NB);
+        counts[0] = 0;
+        return 1;
     }
+    int *hist = m->hist;
+#pragma omp parallel num_threads(T)
+    {
+#pragma omp for schedule(static) reduction(| : unsorted)
+        for (int c = 0; c < T; c++) {
+            int *h = hist + (size_t)c * NB;
+            memset(h, 0, sizeof(int) * (size_t)NB);
+            const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
+            for (int i = lo; i < hi; i++) {
+                h[keys[i]]++;
+                unsorted |= i > 0 && keys[i - 1] > keys[i];
+            }
+        }
+        /* per block: its particles in earlier chunks (hist, exclusive) and in all (counts) */
+#pragma omp for schedule(static)
+        for (int b = 0; b < NB; b++) {
+            int sum = 0;
+            for (int c = 0; c < T; c++) {
+                int *h = hist + (size_t)c * NB + b;
+                const int k = *h;
+                *h = sum;
+                sum += k;
+            }
+            counts[b + 1] = sum;
+        }
+#pragma omp single
+        {
+            counts[0] = 0;
+            for (int b = 0; b < NB; b++) counts[b + 1] += counts[b];
+        }
+        if (unsorted) {
+#pragma omp for schedule(static)
+            for (int c = 0; c < T; c++) {
+                int *h = hist + (size_t)c * NB;
+                const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
+                for (int i = lo; i < hi; i++) order[counts[keys[i]] + h[keys[i]]++] = i;
+            }
+        }
+    }
+    return unsorted;
+}
 
-    /* runs of particles per block, and the blocks their tiles touch */
-    m->npb = 0;
-    memset(m->mark, 0, (size_t)g->nblocks);
+/* The particle blocks (runs of one block, in block order) and the blocks
+ * their tiles touch (mark: a block is touched when it or its -1 neighbour
+ * along some axes holds particles). Both are worked out per block from
+ * counts, in parallel, with no write shared between threads. */
+static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
+    const grid *g = &s->g;
+    mpm_state *m = s->mpm;
+    const int NB = m->nblocks, *counts = m->counts;
+    int part[SORT_CHUNKS_MAX + 1] = {0};
+#pragma omp parallel for schedule(static) num_threads(T) if (T > 1)
+    for (int c = 0; c < T; c++) {
+        const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+        int k = 0;
+        for (int b = lo; b < hi; b++) k += counts[b + 1] > counts[b];
+        part[c + 1] = k;
+    }
+    for (int c = 0; c < T; c++) part[c + 1] += part[c];
+    hearth_status st = pb_reserve(m, part[T], err);
+    if (st) return st;
+    m->npb = part[T];
+    const int nz = g->dim == 3, nb1 = g->nb[1], nb2 = g->nb[2];
+#pragma omp parallel num_threads(T) if (T > 1)
+    {
+#pragma omp for schedule(static)
+        for (int c = 0; c < T; c++) {
+            const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+            int k = part[c];
+            for (int b = lo; b < hi; b++)
+                if (counts[b + 1] > counts[b]) m->pb[k++] = (pblock){b, counts[b], counts[b + 1]};
+        }
+#pragma omp for schedule(static)
+        for (int bx = 0; bx < g->nb[0]; bx++)
+            for (int by = 0; by < nb1; by++)
+                for (int bz = 0; bz < nb2; bz++) {
+                    unsigned char hit = 0;
+                    for (int dx = 0; dx <= (bx > 0); dx++)
+                        for (int dy = 0; dy <= (by > 0); dy++)
+                            for (int dz = 0; dz <= (nz && bz > 0); dz++) {
+                                const int id = grid_block_id(g, bx - dx, by - dy, bz - dz);
+                                hit |= counts[id + 1] > counts[id];
+                            }
+                    m->mark[grid_block_id(g, bx, by, bz)] = hit;
+                }
+    }
+    /* the colour lists, in block order within a colour: O(particle blocks), serial */
     int ncolour[8] = {0};
-    for (int b = 0; b < g->nblocks; b++) {
-        if (counts[b + 1] == counts[b]) continue;
-        m->pb[m->npb++] = (pblock){b, counts[b], counts[b + 1]};
+    for (int k = 0; k < m->npb; k++) {
         int c[3];
-        grid_block_coords(g, b, c);
+        grid_block_coords(g, m->pb[k].block, c);
         ncolour[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++;
-        for (int dx = 0; dx <= 1; dx++)
-            for (int dy = 0; dy <= 1; dy++)
-                for (int dz = 0; dz <= (g->dim == 3); dz++) m->mark[grid_block_id(g, c[0] + dx, c[1] + dy, c[2] + dz)] = 1;
     }
     m->colour_start[0] = 0;
     for (int k = 0; k < 8; k++) m->colour_start[k + 1] = m->colour_start[k] + ncolour[k];
@@ -353,7 +442,48 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
         grid_block_coords(g, m->pb[k].block, c);
         m->colour_pb[fill[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++] = k;
     }
-    if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) periodic_mark(s, m->mark);
+    return HEARTH_OK;
+}
+
+/* Sort keys from G2P: G2P files each particle in its block while its new
+ * position is in registers (and clamps it to the grid, as below), so the
+ * sort's own pass over the positions runs only when those keys are stale:
+ * the first step, particles added or removed, a rolled back step, periodic
+ * axes (wrapped after G2P). 3D 32 cells, one thread: the pass cost about 64
+ * instructions per particle-step. */
+hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const int n = ps->n;
+    hearth_status st = mpm_reserve(s, n, err);
+    if (st) return st;
+    mpm_state *m = s->mpm;
+    double *X = pcold(ps, PC_X);
+    int *keys = m->keys;
+    const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
+    if (wrap || m->keys_n != n || m->keys_step != s->step || m->keys_edits != ps->edits) {
+        long moved = 0;
+        if (wrap) periodic_wrap_all(s);
+#pragma omp parallel for schedule(static) reduction(+ : moved) if (n >= SCENE_PARALLEL_MIN)
+        for (int i = 0; i < n; i++) {
+            moved += clamp_to_grid(g, X + 3 * i);
+            keys[i] = block_of_position(g, X + 3 * i);
+        }
+        s->out_of_domain += moved;
+    }
+    m->keys_n = -1; /* the permutation below reuses their room */
+    const int T = sort_chunks(n);
+    const size_t hneed = T > 1 ? (size_t)T * (size_t)m->nblocks : 0;
+    if (hneed > m->histcap) {
+        int *h = mem_alloc(sizeof(int) * hneed);
+        if (!h) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the sort's block counts (%d chunks)", T);
+        mem_free(m->hist, sizeof(int) * m->histcap);
+        m->hist = h;
+        m->histcap = hneed;
+    }
+    if (sort_counting(m, n, T)) particles_permute(ps, m->order, m->perm_scratch);
+    if ((st = sort_blocks(s, T, err))) return st;
+    if (wrap) periodic_mark(s, m->mark);
     st = grid_set_channels(g, thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
     if (st) return st;
     return grid_activate(g, m->mark, err);
@@ -715,6 +845,9 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     const double boil = HEAT && WATER && s->def.latent_heat ? s->def.boiling_point : INFINITY; /* no boiling: never passed */
     const pblock pb = s->mpm->pb[k];
     pb_partial *pp = &s->mpm->partial[k];
+    /* the next sort's keys (mpm_sort); a periodic scene wraps after G2P and files its particles there */
+    int *keys = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2] ? NULL : s->mpm->keys;
+    int clamped = 0;
     const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
     const int NPB = g->nodes_per_block;
     int bc[3];
@@ -817,6 +950,10 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         if (flags && (flags[i] & PF_FIXED)) { /* a pinned particle keeps its place */
             memset(v, 0, 3 * sizeof(double));
             memset(C, 0, 9 * sizeof(double));
+            if (keys) {
+                clamped += clamp_to_grid(g, x);
+                keys[i] = block_of_position(g, x);
+            }
             continue;
         }
         /* A grip carries the particles inside it rigidly (the nodes near its
@@ -853,6 +990,11 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
          * back on its surface (the usual particle-level safeguard). */
         for (int c = 0; c < s->ncol && !carried; c++)
             if (collider_near(&s->cols[c], x)) collider_project_particle(&s->cols[c], D, x, v);
+        /* the sort's clamp and key, here where x is in registers: a collider may have pushed x off the grid */
+        if (keys) {
+            clamped += clamp_to_grid(g, x);
+            keys[i] = block_of_position(g, x);
+        }
         {
             double m2 = 0;
             for (int d = 0; d < D; d++) {
@@ -876,6 +1018,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     pp->move = sqrt(move2);
     pp->mover = mover;
     pp->ood = ood;
+    pp->clamped = clamped;
     pp->water_removed = w_removed;
     pp->water_dmax = w_dmax;
     pp->water_emax = w_emax;
@@ -886,7 +1029,7 @@ BLOCK_FN(g2p, 3, 0, 0) BLOCK_FN(g2p, 3, 0, 1) BLOCK_FN(g2p, 3, 1, 0) BLOCK_FN(g2
 static const block_fn g2p_fns[2][2][2] = {{{g2p_200, g2p_201}, {g2p_210, g2p_211}}, {{g2p_300, g2p_301}, {g2p_310, g2p_311}}};
 
 void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
-    const mpm_state *m = s->mpm;
+    mpm_state *m = s->mpm;
     const block_fn fn = g2p_fns[s->g.dim == 3][thermal_active(s)][water_active(s)];
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
@@ -916,8 +1059,13 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
         }
         if (pp->cmax > rep->c_max) rep->c_max = pp->cmax;
         if (pp->numax > rep->nu_max) rep->nu_max = pp->numax;
-        rep->out_of_domain += pp->ood;
+        rep->out_of_domain += pp->ood + pp->clamped;
     }
+    /* the keys stand for the positions the step leaves, if it stands (s->step is then one more) */
+    const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
+    m->keys_n = wrap ? -1 : s->ps.n;
+    m->keys_step = s->step + 1;
+    m->keys_edits = s->ps.edits;
     rep->max_speed = vmax > 0 ? sqrt(vmax) : 0.0;
     rep->mass = mass;
 }

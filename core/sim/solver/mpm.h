@@ -17,6 +17,7 @@ typedef struct pblock {
 /* Per particle-block partial results, reduced in block order. */
 typedef struct pb_partial {
     int fail_i, fail_kind, fail_code, fastest, mover;
+    int clamped; /* particles G2P put back inside the grid after a collider pushed them out */
     double move; /* largest displacement in the block this step (m) */
     double ke, mass, vmax, cmax, numax; /* numax: largest kinematic viscosity eta / rho (m^2/s) */
     long ood;
@@ -26,9 +27,17 @@ typedef struct pb_partial {
 } pb_partial;
 
 typedef struct mpm_state {
-    /* the sort's per-particle scratch, scratch_cap long */
+    /* the sort's per-particle scratch, scratch_cap long. keys lives in the
+     * first half of perm_scratch: G2P writes them, the sort reads them into
+     * order before the permutation needs the scratch (12 bytes a particle, not 16) */
     int *keys, *order;
     double *perm_scratch;
+    int keys_n;             /* keys hold the blocks of these many particles, written by G2P */
+    long keys_step;         /* for the positions after this step: a rolled back step's keys do not count */
+    unsigned long keys_edits; /* ps.edits when G2P filed them */
+    /* the counting sort's per-chunk block counts, nchunks x nblocks */
+    int *hist;
+    size_t histcap;
     double *vol;            /* with heat or water: each particle's volume J V_0 this step, from P2G (NULL otherwise) */
     int scratch_cap;
     /* per block of the box (nblocks as when made: the grid never changes size) */
