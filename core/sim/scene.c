@@ -37,6 +37,7 @@
 #include "browning.h"
 #include "water.h"
 #include "mixing.h"
+#include "mpm.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -128,6 +129,26 @@ double scene_bytes_per_particle(const hearth_scene *s) {
     b += s->solver->bytes_per_particle(s);
     if (s->def.guard == HEARTH_GUARD_ROLLBACK) b *= 2;
     return b;
+}
+
+size_t hearth_scene_bytes_used(const hearth_scene *s) {
+    double b = 0;
+    for (int c = 0; c < PC_COUNT; c++)
+        if (s->ps.enabled & (1u << c)) b += (double)particles_col_bytes(&s->ps, c) * s->ps.n;
+    if (s->def.guard == HEARTH_GUARD_ROLLBACK) b *= 2; /* the snapshot holds the same columns */
+    const mpm_state *m = mpm_state_of(s);
+    if (m) { /* what the MPM step's scratch holds for these particles, and its particle blocks */
+        b += (double)s->ps.n * (sizeof(int) + sizeof(double) + (m->vol ? sizeof(double) : 0));
+        b += (double)m->npb * (sizeof(pblock) + sizeof(int) + sizeof(pb_partial)) + (double)m->histcap * sizeof(int);
+    } else {
+        b += s->solver->bytes_per_particle(s) * s->ps.n;
+    }
+    if (s->solver->uses_grid) {
+        const grid *g = &s->g;
+        b += (double)g->nblocks * GRID_TABLE_BYTES_PER_BLOCK;
+        b += (double)g->nactive * (sizeof(int) + sizeof(double) * (size_t)g->nch * (size_t)g->nodes_per_block);
+    }
+    return (size_t)b;
 }
 
 hearth_status scene_check_particle_budget(const hearth_scene *s, double more, const char *what, hearth_error *err) {
