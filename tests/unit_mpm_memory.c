@@ -190,5 +190,61 @@ TEST(determinism_threads_2d_bookkeeping) {
     CHECK(h[0] == h[1]);
 }
 
+/* particles_permute gives new[i] = old[order[i]] in every column, whether
+ * the particles moved a little (the window through a ring, whole records)
+ * or anywhere (component by component), at one and two threads. */
+TEST(particles_permute_orders) {
+    hearth_error err;
+    for (int kind = 0; kind < 2; kind++)
+        for (int t = 1; t <= 2; t++) {
+            hearth_set_threads(t);
+            particles ps;
+            particles_init(&ps);
+            const int n = 6000;
+            CHECK(particles_enable(&ps, PC_FLAGS, &err) == HEARTH_OK && particles_set_state_stride(&ps, 5, &err) == HEARTH_OK);
+            CHECK(particles_reserve_exact(&ps, n, &err) == HEARTH_OK);
+            ps.n = n;
+            for (int c = 0; c < PC_COUNT; c++) {
+                if (!(ps.enabled & (1u << c))) continue;
+                const int nc = particles_col_ncomp(&ps, c);
+                for (int i = 0; i < n * nc; i++) {
+                    if (particles_col_is_int(c)) pcoli(&ps, c)[i] = 1000 * c + i;
+                    else pcold(&ps, c)[i] = 1000.0 * c + i + 0.25;
+                }
+            }
+            /* kind 0: runs shifted by a few dozen places (a sort after a step); 1: a scattered order */
+            int *order = malloc(sizeof(int) * n);
+            double *scratch = malloc(sizeof(double) * n);
+            for (int i = 0; i < n; i++) order[i] = i;
+            if (kind == 0)
+                for (int i = 0; i + 40 < n; i += 97) { /* rotate [i, i + 40) by one: place i takes i + 39 */
+                    const int last = order[i + 39];
+                    memmove(order + i + 1, order + i, sizeof(int) * 39);
+                    order[i] = last;
+                }
+            else
+                for (int i = 0; i < n; i++) order[i] = (int)(((long)i * 2713) % n); /* 2713 and 6000 are coprime */
+            particles_permute(&ps, order, scratch);
+            int bad = 0;
+            for (int c = 0; c < PC_COUNT; c++) {
+                if (!(ps.enabled & (1u << c))) continue;
+                const int nc = particles_col_ncomp(&ps, c);
+                for (int i = 0; i < n; i++)
+                    for (int k = 0; k < nc; k++) {
+                        const long want = 1000L * c + (long)order[i] * nc + k;
+                        bad += particles_col_is_int(c) ? pcoli(&ps, c)[i * nc + k] != want
+                                                       : pcold(&ps, c)[i * nc + k] != (double)want + 0.25;
+                    }
+            }
+            printf("  %s order, %d thread(s): %d wrong values\n", kind ? "scattered" : "shifted", t, bad);
+            CHECK(bad == 0);
+            free(order);
+            free(scratch);
+            particles_free(&ps);
+        }
+    hearth_set_threads(0);
+}
+
 TEST_MAIN(T(seed_reserves_exactly), T(particles_grow_by_half), T(growth_peak_bounded), T(sort_keys_from_g2p),
-          T(determinism_threads_2d_bookkeeping))
+          T(determinism_threads_2d_bookkeeping),
+          T(particles_permute_orders))
