@@ -13,3 +13,4 @@ local s = h.scene { dim = P.dim, dx = 1 / P.cells, box = { v(0, 0, 0), v(1, 1, 1
 local el = h.material("elastic", { E = 1e5, nu = 0.3, density = 1000 })
 s:add { shape = h.box(v(0.1, 0.3, 0.3), v(0.5, 0.7, 0.7)), material = el, ppc = d3 and 8 or 4, velocity = v(6, -3, 0), jitter = 1 }
 s:step(P.steps)
+print("particles=" .. s:stats().particles)

@@ -131,7 +131,7 @@ E = os.environ
 full, tmp, out = E["REPORT_FULL"] == "1", E["REPORT_TMP"], E["REPORT_OUT"]
 trees = {"before": E["REPORT_BEFORE_DIR"], "after": E["REPORT_AFTER_DIR"]}
 srcs = {"before": os.path.dirname(os.path.dirname(trees["before"])), "after": E["REPORT_ROOT"]}
-PHASES = ["mpm_sort", "mpm_p2g", "mpm_grid_update", "mpm_g2p"]
+PHASES = ["mpm_sort", "particles_permute", "mpm_p2g", "mpm_grid_update", "mpm_g2p"]
 
 def log(msg):
     print("report.sh: " + msg, file=sys.stderr, flush=True)
@@ -142,20 +142,42 @@ def env(tree, threads):
 def hearth(tree):
     return trees[tree] + "/app/hearth"
 
-def callgrind(cmd, tree=None):
-    """Instructions of cmd at one thread: the total, the inclusive count of each MPM phase, and stdout."""
+def callgrind(cmd, tree=None, threads=1):
+    """Instructions of cmd: the total, the inclusive count of each MPM phase (and, under
+    "omp", of every OpenMP region body: the work threads share), and stdout."""
     f = os.path.join(tmp, "cg.out")
     r = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + f] + cmd, capture_output=True, text=True,
-                       env=env(tree or "after", 1), check=True)
+                       env=env(tree or "after", threads), check=True)
     total = int(re.search(r"Collected : (\d+)", r.stderr).group(1))
     ann = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", f], capture_output=True, text=True,
                          check=True).stdout
-    ph = {}
+    ph = {"omp": 0}
     for line in ann.splitlines():
         m = re.match(r"\s*([\d,]+)\s.*?:(\w+) \[", line)
         if m and m.group(2) in PHASES and m.group(2) not in ph:
             ph[m.group(2)] = int(m.group(1).replace(",", ""))
+        m = re.match(r"\s*([\d,]+)\s.*?:[\w.]+\._omp_fn\.\d+ \[", line)
+        if m:
+            ph["omp"] += int(m.group(1).replace(",", ""))
     return total, ph, r.stdout
+
+FLOW = os.path.join(E["REPORT_ROOT"], "scripts/bench/flow_step.lua")  # public Lua API only: runs on the before tree too
+
+def flow_cg(tree, threads, s1=2, s2=6):
+    """Per particle-step instructions of flow_step.lua (2D, 256 cells): total and phases, and the region bodies."""
+    runs = [callgrind([hearth(tree), "run", FLOW, "--quiet", "--out", tmp, "--set", f"steps={s}"], tree, threads) for s in (s1, s2)]
+    n = int(re.search(r"particles=(\d+)", runs[0][2]).group(1))
+    per = lambda a, b: (b - a) / (n * (s2 - s1))
+    return per(runs[0][0], runs[1][0]), {p: per(runs[0][1].get(p, 0), runs[1][1].get(p, 0)) for p in PHASES + ["omp"]}
+
+def bench_omp(tree, dim, cells, s1, s2):
+    """At two threads: instructions per particle-step in all, and outside every parallel region (serial)."""
+    runs = [callgrind([hearth(tree), "bench", "--threads", "2", "--dim", str(dim), "--cells", str(cells), "--steps", str(s)],
+                      tree, 2) for s in (s1, s2)]
+    n = json.loads(runs[0][2])["particles"]
+    tot = (runs[1][0] - runs[0][0]) / (n * (s2 - s1))
+    par = (runs[1][1]["omp"] - runs[0][1]["omp"]) / (n * (s2 - s1))
+    return tot, tot - par
 
 def bench_cg(tree, dim, cells, s1, s2):
     """Instructions per particle-step of `hearth bench` (total and by phase), from s1 and s2 timed steps."""
@@ -220,6 +242,26 @@ for dim, cl in sizes.items():
                  ", ".join(f"{speed[(dim, c, 'before')]:.2f}" for c in cl) + "x",
                  ", ".join(f"{speed[(dim, c, 'after')]:.2f}" for c in cl) + "x", ">= 1.8x" if dim == 2 else ">= 1.9x"))
 
+# ---- a flowing scene, and the serial share at two threads ----------------------
+log("callgrind: flow_step.lua, 1 and 2 threads")
+flow = {t: flow_cg(t, 1) for t in trees}
+rows.append(("flowing 2D block (flow_step.lua, 256 cells, 41944 particles), 1 thread: instructions per particle-step "
+             "(the sort's share, its permutation's)",
+             "%.0f (%.0f, %.0f)" % (flow["before"][0], flow["before"][1]["mpm_sort"], flow["before"][1]["particles_permute"]),
+             "%.0f (%.0f, %.0f)" % (flow["after"][0], flow["after"][1]["mpm_sort"], flow["after"][1]["particles_permute"]), "-"))
+def bound(tot, ser):
+    return 1.0 / (ser / tot + (1 - ser / tot) / 2)
+amd = {}
+for t in trees:
+    f_tot, f_ph = flow_cg(t, 2)
+    amd[("flow", t)] = (f_tot, f_tot - f_ph["omp"])
+    amd[("bench", t)] = bench_omp(t, 2, 256, 1, 3)
+for k, what in (("bench", "`hearth bench --dim 2 --cells 256`"), ("flow", "flow_step.lua")):
+    rows.append((f"2 threads, {what}: instructions per particle-step outside parallel regions (serial), and the speed-up "
+                 "that leaves at best (Amdahl)",
+                 "%.1f of %.0f: %.3fx" % (amd[(k, 'before')][1], amd[(k, 'before')][0], bound(*amd[(k, 'before')])),
+                 "%.1f of %.0f: %.3fx" % (amd[(k, 'after')][1], amd[(k, 'after')][0], bound(*amd[(k, 'after')])), "-"))
+
 # ---- memory -----------------------------------------------------------------
 mem = {}
 for dim, cells in [(3, 32), (3, 64), (2, 128), (2, 512)]:
@@ -256,12 +298,14 @@ rows.append(("dough step with all fields vs the elastic step (2D, 64 cells, inst
 rows.append(("SPH dam break vs DualSPHysics", "-", "-", "not measured here (the SPH work)"))
 
 # ---- phases ----------------------------------------------------------------
-ph_lines = ["| phase | " + " | ".join(f"{d}D before | {d}D after" for d in (3, 2)) + " |",
-            "|---|" + "---:|" * 4]
+ph_lines = ["| phase | " + " | ".join(f"{d}D before | {d}D after" for d in (3, 2)) + " | flow before | flow after |",
+            "|---|" + "---:|" * 6]
 for p in PHASES:
-    ph_lines.append(f"| {p} | " + " | ".join(f"{cg[d]['before'][2][p]:.0f} | {cg[d]['after'][2][p]:.0f}" for d in (3, 2)) + " |")
-ph_lines.append("| whole step | " + " | ".join(f"{cg[d]['before'][1]:.0f} | {cg[d]['after'][1]:.0f}" for d in (3, 2)) + " |")
-ph_lines.append("| reference | " + " | ".join(f"{cg[d]['ref']:.0f} | {cg[d]['ref']:.0f}" for d in (3, 2)) + " |")
+    ph_lines.append(f"| {p} | " + " | ".join(f"{cg[d]['before'][2][p]:.0f} | {cg[d]['after'][2][p]:.0f}" for d in (3, 2))
+                    + f" | {flow['before'][1][p]:.0f} | {flow['after'][1][p]:.0f} |")
+ph_lines.append("| whole step | " + " | ".join(f"{cg[d]['before'][1]:.0f} | {cg[d]['after'][1]:.0f}" for d in (3, 2))
+                + f" | {flow['before'][0]:.0f} | {flow['after'][0]:.0f} |")
+ph_lines.append("| reference | " + " | ".join(f"{cg[d]['ref']:.0f} | {cg[d]['ref']:.0f}" for d in (3, 2)) + " | - | - |")
 
 # ---- growth ----------------------------------------------------------------
 grow = [23, 36, 57, 88] + ([132] if full else [])
@@ -298,7 +342,10 @@ run (setup cancels). The references are `../shared/bench/mpm_reference.c` and
 
 3D: {cfg[3][0]} cells, {cg[3]['after'][0]} particles; 2D: {cfg[2][0]} cells, {cg[2]['after'][0]} particles.
 The sort's keys now come from G2P (mpm_sort no longer walks the positions;
-G2P carries that work).
+G2P carries that work); particles_permute is part of mpm_sort. `hearth bench`'s
+block starts at rest and its particles hardly change blocks in a few steps, so
+its sort rarely reorders; flow_step.lua throws a block across the box, so the
+sort reorders every step (2D, 256 cells).
 
 """ + "\n".join(ph_lines) + """
 
