@@ -49,7 +49,9 @@ int cmd_bench(int argc, char **argv) {
             printf("usage: hearth bench [--threads N] [--cells N] [--steps N] [--dim 2|3] [--fields none|heat|all]\n"
                    "Steps an elastic block filling [0.2,0.8]^dim of a unit box with N cells per side\n"
                    "(default 64: about 440k particles in 3D) and prints JSON with particles, steps,\n"
-                   "threads, seconds, particle_steps_per_s and bytes_per_particle.\n"
+                   "threads, seconds, particle_steps_per_s, bytes_per_particle (what particles and grid\n"
+                   "fill), capacity_bytes_per_particle (held, spare room included) and\n"
+                   "peak_bytes_per_particle (the most held at once).\n"
                    "--fields heat adds an oven (temperature); all adds leavening CO2 and water too.\n");
             return 0;
         }
