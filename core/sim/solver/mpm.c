@@ -726,6 +726,7 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
         double tile[P2G_NCH * GRID_T * GRID_T * GRID_T];
         for (int col = 0; col < 8; col++) {
             const int a = m->colour_start[col], b = m->colour_start[col + 1];
+            if (a == b) continue; /* 2D fills 4 colours of 8: no barrier for the rest (every thread sees the same a, b) */
 #pragma omp for schedule(dynamic, 2)
             for (int q = a; q < b; q++) fn(s, m->colour_pb[q], dt, tile);
             /* the implicit barrier of omp for separates colours */
@@ -997,10 +998,19 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
          * back on its surface (the usual particle-level safeguard). */
         for (int c = 0; c < s->ncol && !carried; c++)
             if (collider_near(&s->cols[c], x)) collider_project_particle(&s->cols[c], D, x, v);
-        /* the sort's clamp and key, here where x is in registers: a collider may have pushed x off the grid */
+        /* The sort's clamp and key, here where x is in registers: a collider
+         * may have pushed x off the grid, and NaN goes to the low edge, as in
+         * clamp_to_grid (lo and hi are its bounds off a periodic axis, and a
+         * periodic scene files no keys here). */
         if (keys) {
-            clamped += clamp_to_grid(g, x);
-            keys[i] = block_of_position(g, x);
+            int bk[3] = {0, 0, 0}, off = 0;
+            for (int d = 0; d < D; d++) {
+                if (!(x[d] >= lo[d])) x[d] = lo[d], off = 1;
+                else if (x[d] > hi[d]) x[d] = hi[d], off = 1;
+                bk[d] = (int)((unsigned)base_node((x[d] - g->lo[d]) * inv_dx) / GRID_B);
+            }
+            clamped += off;
+            keys[i] = grid_block_id(g, bk[0], bk[1], bk[2]);
         }
         {
             double m2 = 0;
