@@ -204,6 +204,7 @@ def rss_kb(tree, dim, cells):
                     "--cells", str(cells), "--steps", "1"], capture_output=True, env=env(tree, 1), check=True)
     return int(open(f).read().split()[-1])
 
+load0 = os.getloadavg()[0]
 rows = []  # (measure, before, after, note)
 lines = []
 
@@ -326,10 +327,15 @@ for cells in grow:
 # ---- write ----------------------------------------------------------------
 doc = f"""# Performance
 
-Made by `scripts/bench/report.sh{' --full' if full else ''}` ({time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}):
+Made by `scripts/bench/report.sh{' --full' if full else ''}` ({time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())};
+load average {load0:.1f} at the start and {os.getloadavg()[0]:.1f} at the end, on {os.cpu_count()} cores):
 before is {E['REPORT_BEFORE']}, after is this tree. Both built without `-march=native`
 (valgrind does not decode AVX-512), one run on a shared 2-core machine: instruction
-counts repeat exactly; wall-time rows are ratios from interleaved runs, and noisy.
+counts repeat exactly; wall-time rows are ratios from interleaved runs, and
+under a load above the core count they measure the machine more than hearth
+(a 2-thread run that lands on idle cores while its 1-thread twin shared one
+shows 4x and more): read the serial-share rows, which are instruction counts,
+for what the code itself leaves to one thread.
 Instructions are per particle-step, from the difference of a short and a long
 run (setup cancels). The references are `../shared/bench/mpm_reference.c` and
 `mpm_reference2d.c` (`cc -O3`), stepping the problem of `hearth bench`.
