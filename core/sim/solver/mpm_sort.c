@@ -249,15 +249,20 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     }
     m->keys_n = -1; /* the permutation below reuses their room */
     const int T = sort_chunks(n);
-    const size_t hneed = T > 1 ? (size_t)T * (size_t)m->nblocks : 0;
+    /* The chunked count keeps a table of blocks per chunk: only where that
+     * is at most 8 bytes a particle (a big, mostly empty box counts
+     * serially rather than hold tables the size of the box per thread; the
+     * order is the same either way). */
+    const int Tc = T > 1 && (size_t)T * (size_t)m->nblocks <= 2 * (size_t)n ? T : 1;
+    const size_t hneed = Tc > 1 ? (size_t)Tc * (size_t)m->nblocks : 0;
     if (hneed > m->histcap) {
         int *h = mem_alloc(sizeof(int) * hneed);
-        if (!h) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the sort's block counts (%d chunks)", T);
+        if (!h) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the sort's block counts (%d chunks)", Tc);
         mem_free(m->hist, sizeof(int) * m->histcap);
         m->hist = h;
         m->histcap = hneed;
     }
-    if (sort_counting(m, n, T)) particles_permute(ps, m->order, m->perm_scratch);
+    if (sort_counting(m, n, Tc)) particles_permute(ps, m->order, m->perm_scratch);
     if ((st = sort_blocks(s, T, err))) return st;
     if (wrap) mpm_periodic_mark(s, m->mark);
     st = grid_set_channels(g, thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
