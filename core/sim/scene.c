@@ -38,6 +38,7 @@
 #include "water.h"
 #include "mixing.h"
 #include "ranks.h"
+#include "mpm.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -135,6 +136,26 @@ double scene_bytes_per_particle(const hearth_scene *s) {
     b += s->solver->bytes_per_particle(s);
     if (s->def.guard == HEARTH_GUARD_ROLLBACK) b *= 2;
     return b;
+}
+
+size_t hearth_scene_bytes_used(const hearth_scene *s) {
+    double b = 0;
+    for (int c = 0; c < PC_COUNT; c++)
+        if (s->ps.enabled & (1u << c)) b += (double)particles_col_bytes(&s->ps, c) * s->ps.n;
+    if (s->def.guard == HEARTH_GUARD_ROLLBACK) b *= 2; /* the snapshot holds the same columns */
+    const mpm_state *m = mpm_state_of(s);
+    if (m) { /* what the MPM step's scratch holds for these particles, and its particle blocks */
+        b += (double)s->ps.n * (sizeof(int) + sizeof(double) + (m->vol ? sizeof(double) : 0));
+        b += (double)m->npb * (sizeof(pblock) + sizeof(int) + sizeof(pb_partial)) + (double)m->histcap * sizeof(int);
+    } else {
+        b += s->solver->bytes_per_particle(s) * s->ps.n;
+    }
+    if (s->solver->uses_grid) {
+        const grid *g = &s->g;
+        b += (double)g->nblocks * GRID_TABLE_BYTES_PER_BLOCK;
+        b += (double)g->nactive * (sizeof(int) + sizeof(double) * (size_t)g->nch * (size_t)g->nodes_per_block);
+    }
+    return (size_t)b;
 }
 
 hearth_status scene_check_particle_budget(const hearth_scene *s, double more, const char *what, hearth_error *err) {
@@ -421,6 +442,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         plugin_call_leave();
     }
     ps->n += n;
+    ps->edits++;
     if (ps->enabled & (1u << PC_WATER)) water_init_particles(s, ps->n - n, ps->n, NAN);
     return n;
 }
@@ -432,6 +454,26 @@ static double rng_uniform(uint64_t *st) {
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
     z ^= z >> 31;
     return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* Lattice point q of a seeding (jittered, one random number per axis): its
+ * position in x, and 1 when it lies in the shape and the usable region. */
+static int seed_point(hearth_scene *s, const hearth_shape *shape, long q, const long cells[3], const int c0[3], int k,
+                      double h, double jitter, const double lo[3], const double hi[3], double x[3]) {
+    const int D = s->def.dim;
+    const double dx = s->def.dx;
+    long r = q;
+    x[0] = x[1] = x[2] = 0;
+    for (int d = D - 1; d >= 0; d--) {
+        long per = cells[d] * k;
+        long idx = r % per;
+        r /= per;
+        x[d] = s->g.lo[d] + c0[d] * dx + (idx + 0.5) * h;
+    }
+    for (int d = 0; d < D; d++) x[d] += jitter * (rng_uniform(&s->rng) - 0.5) * h;
+    int inside = hearth_shape_sdf(shape, x, NULL) < 0;
+    for (int d = 0; d < D; d++) inside = inside && x[d] >= lo[d] && x[d] <= hi[d];
+    return inside;
 }
 
 int hearth_scene_seed_shape(hearth_scene *s, int material, const hearth_shape *shape, int ppc, double jitter,
@@ -479,19 +521,26 @@ int hearth_scene_seed_shape(hearth_scene *s, int material, const hearth_shape *s
     double xs[3 * CHUNK], vs[3 * CHUNK];
     int nx = 0;
     long total = cells[0] * cells[1] * cells[2] * (long)pow(k, D);
+    /* Count first, replaying the jitter's random numbers, and reserve exactly
+     * that: appending chunk by chunk grew the columns to the next power of
+     * two (up to 2x the particles' own bytes, and old and new columns both
+     * held while they grew). The count pass costs one more shape test per
+     * lattice point, once. */
+    const uint64_t rng0 = s->rng;
+    long count = 0;
     for (long q = 0; q < total; q++) {
-        long r = q;
-        double x[3] = {0, 0, 0};
-        for (int d = D - 1; d >= 0; d--) {
-            long per = cells[d] * k;
-            long idx = r % per;
-            r /= per;
-            x[d] = s->g.lo[d] + c0[d] * dx + (idx + 0.5) * h;
-        }
-        for (int d = 0; d < D; d++) x[d] += jitter * (rng_uniform(&s->rng) - 0.5) * h;
-        int inside = hearth_shape_sdf(shape, x, NULL) < 0;
-        for (int d = 0; d < D; d++) inside = inside && x[d] >= lo[d] && x[d] <= hi[d];
-        if (!inside) continue;
+        double x[3];
+        count += seed_point(s, shape, q, cells, c0, k, h, jitter, lo, hi, x);
+    }
+    s->rng = rng0;
+    if (count > INT_MAX / 2 - s->ps.n) { /* the budget above bounds it; kept for the cast */
+        err_set(err, HEARTH_ERR_PARAM, "seed: %ld particles; at most %d", count, INT_MAX / 2 - s->ps.n);
+        return -1;
+    }
+    if (particles_reserve_exact(&s->ps, s->ps.n + (int)count, err)) return -1;
+    for (long q = 0; q < total; q++) {
+        double x[3];
+        if (!seed_point(s, shape, q, cells, c0, k, h, jitter, lo, hi, x)) continue;
         memcpy(xs + 3 * nx, x, sizeof x);
         memcpy(vs + 3 * nx, vel, sizeof vel);
         if (++nx == CHUNK) {

@@ -536,6 +536,11 @@ double hearth_scene_volume(const hearth_scene *s);
 /// Particle positions, 3 doubles each, valid until the next step.
 const double *hearth_scene_positions(const hearth_scene *s);
 int hearth_scene_particle_count(const hearth_scene *s);
+/// Bytes the scene's live data fills: its particles' columns and the
+/// solver's per-particle step scratch for the particles it holds, a rollback
+/// snapshot, and the grid's tables and active blocks. Spare capacity is not
+/// counted (hearth_bytes_allocated counts what is held, spare included).
+size_t hearth_scene_bytes_used(const hearth_scene *s);
 /// Particle ids, one each, in the order of hearth_scene_positions and
 /// hearth_scene_particle_field; valid until the next step. An id is given at
 /// seeding and never changes or is reused, while the order of particles does

@@ -7,6 +7,10 @@
 #include "alloc.h"
 #include "error.h"
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 hearth_status grid_plan(int dim, double dx, const double lo[3], const double hi[3], int nn[3], int nb[3], long *nblocks,
                         hearth_error *err) {
     /* counts are worked out in double and range-checked before any becomes an
@@ -80,44 +84,87 @@ hearth_status grid_set_channels(grid *g, int nch, hearth_error *err) {
     return HEARTH_OK;
 }
 
+/* grid_activate's chunks: one per thread over a big table, else one */
+#define ACTIVATE_CHUNKS_MAX 64
+static int activate_chunks(int nblocks) {
+#ifdef _OPENMP
+    if (nblocks < 16384) return 1; /* a few microseconds of work: not worth a parallel region */
+    const int t = omp_get_max_threads();
+    return t < 1 ? 1 : t > ACTIVATE_CHUNKS_MAX ? ACTIVATE_CHUNKS_MAX : t;
+#else
+    (void)nblocks;
+    return 1;
+#endif
+}
+
+/* Blocks get slots in ascending order whatever the chunking: chunk c of the
+ * table counts its marks, and its blocks' slots start after the marks of
+ * chunks before it, so the slots are the same for any thread count. */
 hearth_status grid_activate(grid *g, const unsigned char *mark, hearth_error *err) {
-    for (int i = 0; i < g->nactive; i++) g->slot[g->active[i]] = -1;
-    int n = 0;
-    for (int b = 0; b < g->nblocks; b++) n += mark[b] != 0;
+    const int T = activate_chunks(g->nblocks), NB = g->nblocks;
+    int part[ACTIVATE_CHUNKS_MAX + 1] = {0};
+#pragma omp parallel num_threads(T) if (T > 1)
+    {
+#pragma omp for schedule(static)
+        for (int i = 0; i < g->nactive; i++) g->slot[g->active[i]] = -1;
+#pragma omp for schedule(static)
+        for (int c = 0; c < T; c++) {
+            const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+            int k = 0;
+            for (int b = lo; b < hi; b++) k += mark[b] != 0;
+            part[c + 1] = k;
+        }
+    }
+    for (int c = 0; c < T; c++) part[c + 1] += part[c];
+    const int n = part[T];
+    /* 1.5x: the node data is the largest table; doubling left up to half of it spare */
     if (n > g->acap) {
-        int ncap = g->acap ? g->acap : 64;
-        while (ncap < n) ncap *= 2;
+        const int ncap = g->acap + g->acap / 2 > n ? g->acap + g->acap / 2 : n;
         int *a = mem_realloc(g->active, sizeof(int) * (size_t)g->acap, sizeof(int) * (size_t)ncap);
         if (!a) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d grid blocks", n);
         g->active = a;
         g->acap = ncap;
     }
     if (n > g->cap) {
-        int ncap = g->cap ? g->cap : 64;
-        while (ncap < n) ncap *= 2;
+        const int ncap = g->cap + g->cap / 2 > n ? g->cap + g->cap / 2 : n;
         const size_t per = sizeof(double) * (size_t)g->nch * (size_t)g->nodes_per_block;
-        double *d = mem_realloc(g->data, per * (size_t)g->cap, per * (size_t)ncap);
-        if (!d) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d grid blocks", n);
+        /* the contents are zeroed below, so nothing is copied: free, then allocate (no old and new both held) */
+        mem_free(g->data, per * (size_t)g->cap);
+        g->data = NULL;
+        g->cap = 0;
+        double *d = mem_alloc(per * (size_t)ncap);
+        if (!d) {
+            g->nactive = 0; /* the slots were cleared above */
+            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d grid blocks", n);
+        }
         g->data = d;
         g->cap = ncap;
     }
-    n = 0;
-    for (int b = 0; b < g->nblocks; b++)
-        if (mark[b]) {
-            g->slot[b] = n;
-            g->active[n++] = b;
-        }
     g->nactive = n;
     /* The channels the passes accumulate into start at zero, CH_CG_R among them
      * (P2G sums the volume there for boundary.c). CH_T0, CH_R, CH_CG_P and CH_B
      * are written whole before they are read (thermal.c, boundary.c), so they
      * are left as they are: a field scene zeroes 10 of its 14 channels. */
     const size_t NPB = (size_t)g->nodes_per_block, lo = (size_t)(g->nch < CH_T0 ? g->nch : CH_T0);
-    for (int k = 0; k < n; k++) {
-        double *b = g->data + (size_t)k * (size_t)g->nch * NPB;
-        memset(b, 0, sizeof(double) * lo * NPB);
-        if (g->nch > CH_CG_R) memset(b + CH_CG_R * NPB, 0, sizeof(double) * NPB);
-        if (g->nch > CH_MW) memset(b + CH_MW * NPB, 0, sizeof(double) * (size_t)(g->nch - CH_MW) * NPB);
+#pragma omp parallel num_threads(T) if (T > 1)
+    {
+#pragma omp for schedule(static)
+        for (int c = 0; c < T; c++) {
+            const int blo = (int)((long)NB * c / T), bhi = (int)((long)NB * (c + 1) / T);
+            int k = part[c];
+            for (int b = blo; b < bhi; b++)
+                if (mark[b]) {
+                    g->slot[b] = k;
+                    g->active[k++] = b;
+                }
+        }
+#pragma omp for schedule(static)
+        for (int k = 0; k < n; k++) {
+            double *b = g->data + (size_t)k * (size_t)g->nch * NPB;
+            memset(b, 0, sizeof(double) * lo * NPB);
+            if (g->nch > CH_CG_R) memset(b + CH_CG_R * NPB, 0, sizeof(double) * NPB);
+            if (g->nch > CH_MW) memset(b + CH_MW * NPB, 0, sizeof(double) * (size_t)(g->nch - CH_MW) * NPB);
+        }
     }
     return HEARTH_OK;
 }

@@ -39,7 +39,11 @@
  * (23391 particles, one thread, per step), when the plugin call record, the
  * wave-speed check and the move record came in: P2G 37.16M -> 37.54M (+1.0%),
  * G2P 34.68M -> 35.29M (+1.8%), the whole step 75.26M -> 76.24M (+1.3%).
- * The 3D benchmark holds 281 bytes per particle, grid included. */
+ * The 3D benchmark's particles and grid fill 242 bytes per particle at 32
+ * cells (234 at 64), and the library holds no more: seeding reserves exactly
+ * (it held 299 and 282, and 380-460 at its peak, before, issue 20). The cost
+ * of each phase, before and after the sort keys moved into G2P, is in
+ * docs/performance.md (scripts/bench/report.sh). */
 #include <float.h>
 #include <limits.h>
 #include <math.h>
@@ -67,25 +71,16 @@
 
 /* ---- state ----------------------------------------------------------- */
 
-static void free_scratch(mpm_state *m) {
-    mem_free(m->keys, sizeof(int) * (size_t)m->scratch_cap);
-    mem_free(m->order, sizeof(int) * (size_t)m->scratch_cap);
-    mem_free(m->perm_scratch, sizeof(double) * (size_t)m->scratch_cap);
-    mem_free(m->vol, sizeof(double) * (size_t)m->scratch_cap);
-    m->keys = m->order = NULL;
-    m->perm_scratch = m->vol = NULL;
-    m->scratch_cap = 0;
-}
-
 static void mpm_free(hearth_scene *s) {
     mpm_state *m = s->mpm;
     if (!m) return;
-    free_scratch(m);
+    mpm_scratch_free(m);
     mem_free(m->pb, sizeof(pblock) * (size_t)m->pbcap);
     mem_free(m->colour_pb, sizeof(int) * (size_t)m->pbcap);
     mem_free(m->partial, sizeof(pb_partial) * (size_t)m->pbcap);
     mem_free(m->counts, sizeof(int) * ((size_t)m->nblocks + 1));
     mem_free(m->mark, (size_t)m->nblocks);
+    mem_free(m->hist, sizeof(int) * m->histcap);
     mpm_ranks_free(m);
     mem_free(m, sizeof *m);
     s->mpm = NULL;
@@ -97,71 +92,11 @@ static hearth_status mpm_init(hearth_scene *s, hearth_error *err) {
     mpm_state *m = s->mpm = mem_calloc(sizeof *m);
     if (!m) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the MPM solver's state");
     m->nblocks = s->g.nblocks;
+    m->keys_n = -1;
     m->counts = mem_calloc(sizeof(int) * ((size_t)m->nblocks + 1));
     m->mark = mem_calloc((size_t)m->nblocks);
     if (!m->counts || !m->mark) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the grid tables");
     return mpm_ranks_init(m, err);
-}
-
-/* Room for n particles' step scratch: grown when the particle count grows, so
- * the step loop allocates nothing otherwise. */
-static hearth_status mpm_reserve(hearth_scene *s, int n, hearth_error *err) {
-    mpm_state *m = s->mpm;
-    if (n > m->scratch_cap) {
-        int cap = s->ps.cap > n ? s->ps.cap : n;
-        free_scratch(m);
-        m->keys = mem_alloc(sizeof(int) * (size_t)cap);
-        m->order = mem_alloc(sizeof(int) * (size_t)cap);
-        m->perm_scratch = mem_alloc(sizeof(double) * (size_t)cap);
-        if (!m->keys || !m->order || !m->perm_scratch) {
-            m->scratch_cap = cap; /* so free_scratch releases them with their true size */
-            free_scratch(m);
-            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for sorting %d particles", n);
-        }
-        m->scratch_cap = cap;
-    }
-    /* the field passes read each particle's volume from here rather than F (72 bytes a particle) */
-    if (!m->vol && (thermal_active(s) || water_active(s)) && !(m->vol = mem_alloc(sizeof(double) * (size_t)m->scratch_cap)))
-        return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle volumes", m->scratch_cap);
-    /* one particle block per grid block at most */
-    int need = m->nblocks < n ? m->nblocks : n;
-    if (need > m->pbcap) {
-        int cap = m->pbcap ? m->pbcap : 64;
-        while (cap < need) cap *= 2;
-        /* contents are rebuilt by every sort, so fresh arrays replace the old ones */
-        pblock *pb = mem_alloc(sizeof(pblock) * (size_t)cap);
-        int *cp = mem_alloc(sizeof(int) * (size_t)cap);
-        pb_partial *pp = mem_alloc(sizeof(pb_partial) * (size_t)cap);
-        if (!pb || !cp || !pp) {
-            mem_free(pb, sizeof(pblock) * (size_t)cap);
-            mem_free(cp, sizeof(int) * (size_t)cap);
-            mem_free(pp, sizeof(pb_partial) * (size_t)cap);
-            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle blocks", need);
-        }
-        mem_free(m->pb, sizeof(pblock) * (size_t)m->pbcap);
-        mem_free(m->colour_pb, sizeof(int) * (size_t)m->pbcap);
-        mem_free(m->partial, sizeof(pb_partial) * (size_t)m->pbcap);
-        m->pb = pb;
-        m->colour_pb = cp;
-        m->partial = pp;
-        m->pbcap = cap;
-    }
-    return HEARTH_OK;
-}
-
-/* ---- sorting --------------------------------------------------------- */
-
-/* The block of a particle's B-spline base node. P2G and G2P read the
- * particle's stencil from its block's tile, which holds base nodes 0..3 of the
- * block and two more: that is only true when the base node lies in
- * [0, nn - 3], which block_of_position's callers guarantee (mpm_sort). */
-static int block_of_position(const grid *g, const double *x) {
-    int b[3] = {0, 0, 0};
-    for (int d = 0; d < g->dim; d++) {
-        int base = (int)floor((x[d] - g->lo[d]) * g->inv_dx - 0.5);
-        b[d] = base / GRID_B;
-    }
-    return grid_block_id(g, b[0], b[1], b[2]);
 }
 
 /* ---- periodic axes ----------------------------------------------------
@@ -194,7 +129,7 @@ static inline double periodic_wrap(double x, double lo, double hi) {
 /* Every particle into the period along the periodic axes: a pass of its own
  * (the sort's and G2P's loops stay as they were for other scenes), run by the
  * sort and after G2P, so probes and outputs between steps see wrapped positions. */
-static void periodic_wrap_all(hearth_scene *s) {
+void mpm_periodic_wrap_all(hearth_scene *s) {
     const grid *g = &s->g;
     double *X = pcold(&s->ps, PC_X);
     const int n = s->ps.n;
@@ -213,7 +148,7 @@ static inline int periodic_image(int j, int nn) {
 }
 
 /* Mark the blocks holding the nodes that the marked blocks' ghosts stand for. */
-static void periodic_mark(const hearth_scene *s, unsigned char *mark) {
+void mpm_periodic_mark(const hearth_scene *s, unsigned char *mark) {
     const grid *g = &s->g;
     for (int d = 0; d < g->dim; d++) {
         if (!s->def.periodic[d]) continue;
@@ -270,96 +205,6 @@ static void periodic_fold(hearth_scene *s, int unfold) {
             }
         }
     }
-}
-
-/* Put a particle outside the usable domain (one cell inside the box: every
- * node of its stencil on the grid) back on its edge. Returns 1 if it moved.
- * G2P clamps too, but a collider's projection comes after that clamp, and a
- * collider that covers the box projects particles out of the grid: the sort
- * then filed them in a block whose tile did not hold their stencil (a write
- * outside P2G's tile and the block tables). Clamping here, where the block is
- * chosen, makes the invariant hold whatever moved the particle (a collider,
- * a plugin, a restored file). A NaN coordinate goes to the low edge so the
- * cast below stays defined; the guard has already stopped on it. */
-static int clamp_to_grid(const grid *g, double *x) {
-    int moved = 0;
-    for (int d = 0; d < g->dim; d++) {
-        const double lo = g->lo[d] + g->dx, hi = g->lo[d] + (g->nn[d] - 2) * g->dx;
-        if (!(x[d] >= lo)) {
-            x[d] = lo;
-            moved = 1;
-        } else if (x[d] > hi) {
-            x[d] = hi;
-            moved = 1;
-        }
-    }
-    return moved;
-}
-
-hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
-    grid *g = &s->g;
-    particles *ps = &s->ps;
-    const int n = ps->n;
-    hearth_status st = mpm_reserve(s, n, err);
-    if (st) return st;
-    mpm_state *m = s->mpm;
-    double *X = pcold(ps, PC_X);
-    int *keys = m->keys, *order = m->order, *counts = m->counts;
-
-    long moved = 0;
-    if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) periodic_wrap_all(s);
-#pragma omp parallel for schedule(static) reduction(+ : moved) if (s->ps.n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        moved += clamp_to_grid(g, X + 3 * i);
-        keys[i] = block_of_position(g, X + 3 * i);
-    }
-    s->out_of_domain += moved;
-    /* counting sort: stable, O(n + blocks), the same for any thread count */
-    int sorted = 1;
-    memset(counts, 0, sizeof(int) * ((size_t)g->nblocks + 1));
-    for (int i = 0; i < n; i++) {
-        counts[keys[i] + 1]++;
-        if (i > 0 && keys[i - 1] > keys[i]) sorted = 0;
-    }
-    for (int b = 0; b < g->nblocks; b++) counts[b + 1] += counts[b];
-    if (!sorted) {
-        for (int i = 0; i < n; i++) order[counts[keys[i]]++] = i;
-        particles_permute(ps, order, m->perm_scratch);
-        /* counts were advanced to block ends; rebuild starts */
-        memset(counts, 0, sizeof(int) * ((size_t)g->nblocks + 1));
-        for (int i = 0; i < n; i++) counts[keys[order[i]] + 1]++;
-        for (int b = 0; b < g->nblocks; b++) counts[b + 1] += counts[b];
-    }
-
-    /* runs of particles per block, and the blocks their tiles touch */
-    m->npb = 0;
-    memset(m->mark, 0, (size_t)g->nblocks);
-    int ncolour[8] = {0};
-    for (int b = 0; b < g->nblocks; b++) {
-        if (counts[b + 1] == counts[b]) continue;
-        m->pb[m->npb++] = (pblock){b, counts[b], counts[b + 1]};
-        int c[3];
-        grid_block_coords(g, b, c);
-        ncolour[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++;
-        for (int dx = 0; dx <= 1; dx++)
-            for (int dy = 0; dy <= 1; dy++)
-                for (int dz = 0; dz <= (g->dim == 3); dz++) m->mark[grid_block_id(g, c[0] + dx, c[1] + dy, c[2] + dz)] = 1;
-    }
-    m->colour_start[0] = 0;
-    for (int k = 0; k < 8; k++) m->colour_start[k + 1] = m->colour_start[k] + ncolour[k];
-    int fill[8];
-    memcpy(fill, m->colour_start, sizeof fill);
-    for (int k = 0; k < m->npb; k++) {
-        int c[3];
-        grid_block_coords(g, m->pb[k].block, c);
-        m->colour_pb[fill[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++] = k;
-    }
-    if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) periodic_mark(s, m->mark);
-    st = grid_set_channels(g, thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
-    if (st) return st;
-    if ((st = grid_activate(g, m->mark, err))) return st;
-    mpm_ranks_partition(s); /* which particle blocks this rank steps */
-    return HEARTH_OK;
 }
 
 /* ---- P2G ------------------------------------------------------------- */
@@ -489,7 +334,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
         double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
         for (int d = 0; d < D; d++) {
             const double Xd = (x[d] - g->lo[d]) * inv_dx;
-            const int b = (int)floor(Xd - 0.5);
+            const int b = base_node(Xd);
             fx[d] = Xd - b;
             base[d] = b - org[d];
             /* the stencil's 3 nodes must lie in the 6-node tile: mpm_sort's clamp_to_grid */
@@ -593,6 +438,7 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
         double tile[P2G_NCH * GRID_T * GRID_T * GRID_T];
         for (int col = 0; col < 8; col++) {
             const int a = m->colour_start[col], b = m->colour_start[col + 1];
+            if (a == b) continue; /* 2D fills 4 colours of 8: no barrier for the rest (every thread sees the same a, b) */
 #pragma omp for schedule(dynamic, 2)
             for (int q = a; q < b; q++)
                 if (m->colour_pb[q] >= m->k_lo && m->colour_pb[q] < m->k_hi) fn(s, m->colour_pb[q], dt, tile); /* this rank's */
@@ -720,6 +566,9 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     const double boil = HEAT && WATER && s->def.latent_heat ? s->def.boiling_point : INFINITY; /* no boiling: never passed */
     const pblock pb = s->mpm->pb[k];
     pb_partial *pp = &s->mpm->partial[k];
+    /* the next sort's keys (mpm_sort); a periodic scene wraps after G2P and files its particles there */
+    int *keys = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2] ? NULL : s->mpm->keys;
+    int clamped = 0;
     const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
     const int NPB = g->nodes_per_block;
     int bc[3];
@@ -765,7 +614,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
         for (int d = 0; d < D; d++) {
             const double Xd = (x[d] - g->lo[d]) * inv_dx;
-            const int b = (int)floor(Xd - 0.5);
+            const int b = base_node(Xd);
             fx[d] = Xd - b;
             base[d] = b - org[d];
             bspline_weights(fx[d], w[d], dw);
@@ -822,6 +671,10 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         if (flags && (flags[i] & PF_FIXED)) { /* a pinned particle keeps its place */
             memset(v, 0, 3 * sizeof(double));
             memset(C, 0, 9 * sizeof(double));
+            if (keys) {
+                clamped += clamp_to_grid(g, x);
+                keys[i] = block_of_position(g, x);
+            }
             continue;
         }
         /* A grip carries the particles inside it rigidly (the nodes near its
@@ -858,6 +711,20 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
          * back on its surface (the usual particle-level safeguard). */
         for (int c = 0; c < s->ncol && !carried; c++)
             if (collider_near(&s->cols[c], x)) collider_project_particle(&s->cols[c], D, x, v);
+        /* The sort's clamp and key, here where x is in registers: a collider
+         * may have pushed x off the grid, and NaN goes to the low edge, as in
+         * clamp_to_grid (lo and hi are its bounds off a periodic axis, and a
+         * periodic scene files no keys here). */
+        if (keys) {
+            int bk[3] = {0, 0, 0}, off = 0;
+            for (int d = 0; d < D; d++) {
+                if (!(x[d] >= lo[d])) x[d] = lo[d], off = 1;
+                else if (x[d] > hi[d]) x[d] = hi[d], off = 1;
+                bk[d] = (int)((unsigned)base_node((x[d] - g->lo[d]) * inv_dx) / GRID_B);
+            }
+            clamped += off;
+            keys[i] = grid_block_id(g, bk[0], bk[1], bk[2]);
+        }
         {
             double m2 = 0;
             for (int d = 0; d < D; d++) {
@@ -881,6 +748,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     pp->move = sqrt(move2);
     pp->mover = mover;
     pp->ood = ood;
+    pp->clamped = clamped;
     pp->water_removed = w_removed;
     pp->water_dmax = w_dmax;
     pp->water_emax = w_emax;
@@ -891,7 +759,7 @@ BLOCK_FN(g2p, 3, 0, 0) BLOCK_FN(g2p, 3, 0, 1) BLOCK_FN(g2p, 3, 1, 0) BLOCK_FN(g2
 static const block_fn g2p_fns[2][2][2] = {{{g2p_200, g2p_201}, {g2p_210, g2p_211}}, {{g2p_300, g2p_301}, {g2p_310, g2p_311}}};
 
 void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
-    const mpm_state *m = s->mpm;
+    mpm_state *m = s->mpm;
     const block_fn fn = g2p_fns[s->g.dim == 3][thermal_active(s)][water_active(s)];
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
@@ -922,8 +790,13 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
         }
         if (pp->cmax > rep->c_max) rep->c_max = pp->cmax;
         if (pp->numax > rep->nu_max) rep->nu_max = pp->numax;
-        rep->out_of_domain += pp->ood;
+        rep->out_of_domain += pp->ood + pp->clamped;
     }
+    /* the keys stand for the positions the step leaves, if it stands (s->step is then one more) */
+    const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
+    m->keys_n = wrap ? -1 : s->ps.n;
+    m->keys_step = s->step + 1;
+    m->keys_edits = s->ps.edits;
     rep->max_speed = vmax > 0 ? sqrt(vmax) : 0.0;
     rep->mass = mass;
 }
@@ -955,7 +828,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     const double vcol = mpm_grid_update(s, dt);
     if (wrap) periodic_fold(s, 1);
     mpm_g2p(s, dt, rep);
-    if (wrap) periodic_wrap_all(s);
+    if (wrap) mpm_periodic_wrap_all(s);
     if (water) water_finish(s);
     rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;
     return HEARTH_OK;
@@ -985,11 +858,12 @@ static void mpm_region(const hearth_scene *s, double lo[3], double hi[3]) {
     }
 }
 
-/* keys and order; the permutation and P2G's volumes, counted whether or not
- * heat or water is on yet (either may turn on after the particles are seeded) */
+/* order; the permutation's scratch (the keys live in it) and P2G's volumes,
+ * counted whether or not heat or water is on yet (either may turn on after
+ * the particles are seeded) */
 static double mpm_bytes_per_particle(const hearth_scene *s) {
     (void)s;
-    return 2 * sizeof(int) + 2 * sizeof(double);
+    return sizeof(int) + 2 * sizeof(double);
 }
 
 /* The grid is the scene's; the step scratch is MPM's own (mpm_state); its

@@ -7,6 +7,10 @@
  * volumes through mpm_state_of(), read-only. */
 #ifndef HEARTH_SIM_MPM_H
 #define HEARTH_SIM_MPM_H
+#include <math.h>
+
+#include "error.h"
+#include "grid.h"
 #include "scene.h"
 
 /* A run of sorted particles sharing one grid block. */
@@ -17,6 +21,7 @@ typedef struct pblock {
 /* Per particle-block partial results, reduced in block order. */
 typedef struct pb_partial {
     int fail_i, fail_kind, fail_code, fastest, mover;
+    int clamped; /* particles G2P put back inside the grid after a collider pushed them out */
     double move; /* largest displacement in the block this step (m) */
     double ke, mass, vmax, cmax, numax; /* numax: largest kinematic viscosity eta / rho (m^2/s) */
     long ood;
@@ -26,9 +31,17 @@ typedef struct pb_partial {
 } pb_partial;
 
 typedef struct mpm_state {
-    /* the sort's per-particle scratch, scratch_cap long */
+    /* the sort's per-particle scratch, scratch_cap long. keys lives in the
+     * first half of perm_scratch: G2P writes them, the sort reads them into
+     * order before the permutation needs the scratch (12 bytes a particle, not 16) */
     int *keys, *order;
     double *perm_scratch;
+    int keys_n;             /* keys hold the blocks of these many particles, written by G2P */
+    long keys_step;         /* for the positions after this step: a rolled back step's keys do not count */
+    unsigned long keys_edits; /* ps.edits when G2P filed them */
+    /* the counting sort's per-chunk block counts, nchunks x nblocks */
+    int *hist;
+    size_t histcap;
     double *vol;            /* with heat or water: each particle's volume J V_0 this step, from P2G (NULL otherwise) */
     int scratch_cap;
     /* per block of the box (nblocks as when made: the grid never changes size) */
@@ -52,7 +65,61 @@ typedef struct mpm_state {
 /// MPM step runs: the particle blocks of this step's sort and P2G's volumes.
 static inline const mpm_state *mpm_state_of(const hearth_scene *s) { return s->mpm; }
 
+/* ---- the sort (mpm_sort.c) and what G2P shares with it ---------------- */
+
+/* The block of a particle's B-spline base node. P2G and G2P read the
+ * particle's stencil from its block's tile, which holds base nodes 0..3 of the
+ * block and two more: that is only true when the base node lies in
+ * [0, nn - 3], which block_of_position's callers guarantee (mpm_sort). */
+/* The lowest node of a particle's stencil along an axis, from its grid
+ * coordinate X = (x - lo) / dx. Particles stay a node inside the grid
+ * (clamp_to_grid, G2P), so X >= 1 and truncation is floor: floor is a libm
+ * call where the target has no rounding instruction (x86-64 without SSE4.1,
+ * the build callgrind counts), about 20 instructions per axis per pass. */
+static inline int base_node(double X) {
+    HEARTH_ASSERT(X >= 0.5);
+    return (int)(X - 0.5);
+}
+
+static inline int block_of_position(const grid *g, const double *x) {
+    int b[3] = {0, 0, 0};
+    for (int d = 0; d < g->dim; d++) b[d] = base_node((x[d] - g->lo[d]) * g->inv_dx) / GRID_B;
+    return grid_block_id(g, b[0], b[1], b[2]);
+}
+
+/* Put a particle outside the usable domain (one cell inside the box: every
+ * node of its stencil on the grid) back on its edge. Returns 1 if it moved.
+ * G2P clamps too, but a collider's projection comes after that clamp, and a
+ * collider that covers the box projects particles out of the grid: the sort
+ * then filed them in a block whose tile did not hold their stencil (a write
+ * outside P2G's tile and the block tables). Clamping here, where the block is
+ * chosen, makes the invariant hold whatever moved the particle (a collider,
+ * a plugin, a restored file). A NaN coordinate goes to the low edge so the
+ * cast below stays defined; the guard has already stopped on it. */
+static inline int clamp_to_grid(const grid *g, double *x) {
+    int moved = 0;
+    for (int d = 0; d < g->dim; d++) {
+        const double lo = g->lo[d] + g->dx, hi = g->lo[d] + (g->nn[d] - 2) * g->dx;
+        if (!(x[d] >= lo)) {
+            x[d] = lo;
+            moved = 1;
+        } else if (x[d] > hi) {
+            x[d] = hi;
+            moved = 1;
+        }
+    }
+    return moved;
+}
+
+/// Sort the particles into grid blocks, list the particle blocks and
+/// activate the grid blocks their tiles touch (mpm_sort.c).
 hearth_status mpm_sort(hearth_scene *s, hearth_error *err);
+/// Release the sort's per-particle scratch (mpm_sort.c).
+void mpm_scratch_free(mpm_state *m);
+/// Along the periodic axes: every particle into the period; the blocks
+/// holding the nodes the marked blocks' ghosts stand for (mpm.c).
+void mpm_periodic_wrap_all(hearth_scene *s);
+void mpm_periodic_mark(const hearth_scene *s, unsigned char *mark);
 void mpm_p2g(hearth_scene *s, double dt, step_report *rep);
 /// Returns the largest collider speed (m/s) at a node with mass that a collider set.
 double mpm_grid_update(hearth_scene *s, double dt);

@@ -99,6 +99,8 @@ void mpm_ranks_gather(hearth_scene *s) {
     if (m->nranks == 1) return;
     particles *ps = &s->ps;
     ranks_allgather(m->partial, sizeof(pb_partial), m->kfirst);
+    /* G2P filed its own particles' sort keys (mpm_sort.c): the other ranks' come with their particles */
+    ranks_allgather(m->keys, sizeof(int), m->pfirst);
     for (int c = 0; c < PC_COUNT; c++)
         if ((ps->enabled & (1u << c)) && ps->col[c]) ranks_allgather(ps->col[c], particles_col_bytes(ps, c), m->pfirst);
 }

@@ -42,9 +42,12 @@ typedef enum pcol {
 enum { PF_FIXED = 1, PF_BOUNDARY = 2, PF_HOLD_T = 4 }; /* pinned body; boundary particle (Ding et al. §6.6); keeps its temperature (a held body) */
 
 typedef struct particles {
-    int n, cap;
+    int n, cap;            /* cap: particles every enabled column holds room for */
+    int ccap[PC_COUNT];    /* room each column actually holds (>= cap after a failed growth) */
     int state_stride;      /* doubles of plugin state per particle (max over materials) */
     uint32_t enabled;      /* bit c set when column c is allocated */
+    unsigned long edits;   /* bumped when particles are added, removed, reordered or overwritten
+                            * wholesale: the MPM sort trusts the block keys G2P filed only while it stands */
     void *col[PC_COUNT];
 } particles;
 
@@ -59,8 +62,12 @@ static inline int *pcoli(const particles *ps, int c) { return (int *)ps->col[c];
 
 void particles_init(particles *ps);
 void particles_free(particles *ps);
-/// Make room for cap particles in every enabled column.
+/// Make room for cap particles in every enabled column, growing by at least
+/// half the present capacity (amortised appends at a 1.5x spare, not 2x).
 hearth_status particles_reserve(particles *ps, int cap, hearth_error *err);
+/// Make room for exactly cap particles (a caller that knows its final count:
+/// seeding), no spare.
+hearth_status particles_reserve_exact(particles *ps, int cap, hearth_error *err);
 /// Allocate an optional column (zeroed). Enabling twice is a no-op.
 hearth_status particles_enable(particles *ps, int c, hearth_error *err);
 /// Grow the plugin state stride, keeping existing state.

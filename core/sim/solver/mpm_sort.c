@@ -1,0 +1,274 @@
+/* mpm_sort.c: the MPM step's bookkeeping (Jiang et al. 2015's sorted
+ * particles, in grid blocks): the sort's scratch, a stable counting sort of
+ * the particles by block, the runs of particles per block and their colours,
+ * and the grid blocks their tiles touch. Every pass runs in parallel over
+ * chunks whose results do not depend on the chunking, so the particle order,
+ * the block lists and the grid slots are the same bits for any thread count
+ * (`determinism_threads`, `determinism_threads_2d_bookkeeping`). */
+#include <string.h>
+
+#include "alloc.h"
+#include "error.h"
+#include "mpm.h"
+#include "thermal.h"
+#include "water.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+void mpm_scratch_free(mpm_state *m) {
+    mem_free(m->order, sizeof(int) * (size_t)m->scratch_cap);
+    mem_free(m->perm_scratch, sizeof(double) * (size_t)m->scratch_cap);
+    mem_free(m->vol, sizeof(double) * (size_t)m->scratch_cap);
+    m->keys = m->order = NULL;
+    m->perm_scratch = m->vol = NULL;
+    m->scratch_cap = 0;
+    m->keys_n = -1; /* the keys went with the scratch */
+}
+
+/* Room for n particles' step scratch: grown when the particle count grows, so
+ * the step loop allocates nothing otherwise. */
+static hearth_status mpm_reserve(hearth_scene *s, int n, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    if (n > m->scratch_cap) {
+        int cap = s->ps.cap > n ? s->ps.cap : n;
+        mpm_scratch_free(m);
+        m->order = mem_alloc(sizeof(int) * (size_t)cap);
+        m->perm_scratch = mem_alloc(sizeof(double) * (size_t)cap);
+        m->keys = (int *)m->perm_scratch;
+        if (!m->order || !m->perm_scratch) {
+            m->scratch_cap = cap; /* so mpm_scratch_free releases them with their true size */
+            mpm_scratch_free(m);
+            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for sorting %d particles", n);
+        }
+        m->scratch_cap = cap;
+    }
+    /* the field passes read each particle's volume from here rather than F (72 bytes a particle) */
+    if (!m->vol && (thermal_active(s) || water_active(s)) && !(m->vol = mem_alloc(sizeof(double) * (size_t)m->scratch_cap)))
+        return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle volumes", m->scratch_cap);
+    return HEARTH_OK;
+}
+
+/* Room for npb particle blocks, grown by half when short: sized by the
+ * blocks this step's particles fill, not by every block of the box. */
+static hearth_status pb_reserve(mpm_state *m, int need, hearth_error *err) {
+    if (need <= m->pbcap) return HEARTH_OK;
+    const int cap = m->pbcap + m->pbcap / 2 > need ? m->pbcap + m->pbcap / 2 : need;
+    /* contents are rebuilt by every sort, so fresh arrays replace the old ones */
+    pblock *pb = mem_alloc(sizeof(pblock) * (size_t)cap);
+    int *cp = mem_alloc(sizeof(int) * (size_t)cap);
+    pb_partial *pp = mem_alloc(sizeof(pb_partial) * (size_t)cap);
+    if (!pb || !cp || !pp) {
+        mem_free(pb, sizeof(pblock) * (size_t)cap);
+        mem_free(cp, sizeof(int) * (size_t)cap);
+        mem_free(pp, sizeof(pb_partial) * (size_t)cap);
+        return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle blocks", need);
+    }
+    mem_free(m->pb, sizeof(pblock) * (size_t)m->pbcap);
+    mem_free(m->colour_pb, sizeof(int) * (size_t)m->pbcap);
+    mem_free(m->partial, sizeof(pb_partial) * (size_t)m->pbcap);
+    m->pb = pb;
+    m->colour_pb = cp;
+    m->partial = pp;
+    m->pbcap = cap;
+    return HEARTH_OK;
+}
+
+/* The chunks the sort's bookkeeping splits into: one per thread when there
+ * is enough to share (at most SORT_CHUNKS_MAX, for the stack arrays below),
+ * else one. Every result is independent of it. */
+#define SORT_CHUNKS_MAX 64
+static int sort_chunks(int n) {
+#ifdef _OPENMP
+    if (n < SCENE_PARALLEL_MIN) return 1;
+    const int t = omp_get_max_threads();
+    return t < 1 ? 1 : t > SORT_CHUNKS_MAX ? SORT_CHUNKS_MAX : t;
+#else
+    (void)n;
+    return 1;
+#endif
+}
+
+/* Stable counting sort of the particles by keys: order[j] is the particle
+ * that goes to place j, and counts[b] becomes the first place of block b
+ * (counts[nblocks] = n). Returns 0 when the keys were already in order
+ * (order untouched). With T chunks of particles, chunk c counts its own
+ * particles per block (hist, T x nblocks); a particle's place is its block's
+ * start, plus the block's particles in earlier chunks, plus those before it
+ * in its own chunk: the serial sort's place, so the order is the same bits
+ * for any T (`determinism_threads_*`). */
+static int sort_counting(mpm_state *m, int n, int T) {
+    const int NB = m->nblocks;
+    const int *keys = m->keys;
+    int *order = m->order, *counts = m->counts, unsorted = 0;
+    if (T <= 1) {
+        memset(counts, 0, sizeof(int) * ((size_t)NB + 1));
+        for (int i = 0; i < n; i++) {
+            counts[keys[i] + 1]++;
+            unsorted |= i > 0 && keys[i - 1] > keys[i];
+        }
+        for (int b = 0; b < NB; b++) counts[b + 1] += counts[b];
+        if (!unsorted) return 0;
+        for (int i = 0; i < n; i++) order[counts[keys[i]]++] = i;
+        /* counts[b] advanced to block b's end, the start of b + 1 */
+        memmove(counts + 1, counts, sizeof(int) * (size_t)NB);
+        counts[0] = 0;
+        return 1;
+    }
+    int *hist = m->hist;
+#pragma omp parallel num_threads(T)
+    {
+#pragma omp for schedule(static) reduction(| : unsorted)
+        for (int c = 0; c < T; c++) {
+            int *h = hist + (size_t)c * NB;
+            memset(h, 0, sizeof(int) * (size_t)NB);
+            const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
+            for (int i = lo; i < hi; i++) {
+                h[keys[i]]++;
+                unsorted |= i > 0 && keys[i - 1] > keys[i];
+            }
+        }
+        /* per block: its particles in earlier chunks (hist, exclusive) and in all (counts) */
+#pragma omp for schedule(static)
+        for (int b = 0; b < NB; b++) {
+            int sum = 0;
+            for (int c = 0; c < T; c++) {
+                int *h = hist + (size_t)c * NB + b;
+                const int k = *h;
+                *h = sum;
+                sum += k;
+            }
+            counts[b + 1] = sum;
+        }
+#pragma omp single
+        {
+            counts[0] = 0;
+            for (int b = 0; b < NB; b++) counts[b + 1] += counts[b];
+        }
+        if (unsorted) {
+#pragma omp for schedule(static)
+            for (int c = 0; c < T; c++) {
+                int *h = hist + (size_t)c * NB;
+                const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
+                for (int i = lo; i < hi; i++) order[counts[keys[i]] + h[keys[i]]++] = i;
+            }
+        }
+    }
+    return unsorted;
+}
+
+/* The particle blocks (runs of one block, in block order) and the blocks
+ * their tiles touch (mark: a block is touched when it or its -1 neighbour
+ * along some axes holds particles). Both are worked out per block from
+ * counts, in parallel, with no write shared between threads. */
+static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
+    const grid *g = &s->g;
+    mpm_state *m = s->mpm;
+    const int NB = m->nblocks, *counts = m->counts;
+    int part[SORT_CHUNKS_MAX + 1] = {0};
+#pragma omp parallel for schedule(static) num_threads(T) if (T > 1)
+    for (int c = 0; c < T; c++) {
+        const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+        int k = 0;
+        for (int b = lo; b < hi; b++) k += counts[b + 1] > counts[b];
+        part[c + 1] = k;
+    }
+    for (int c = 0; c < T; c++) part[c + 1] += part[c];
+    hearth_status st = pb_reserve(m, part[T], err);
+    if (st) return st;
+    m->npb = part[T];
+    const int nz = g->dim == 3, nb1 = g->nb[1], nb2 = g->nb[2];
+#pragma omp parallel num_threads(T) if (T > 1)
+    {
+#pragma omp for schedule(static)
+        for (int c = 0; c < T; c++) {
+            const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+            int k = part[c];
+            for (int b = lo; b < hi; b++)
+                if (counts[b + 1] > counts[b]) m->pb[k++] = (pblock){b, counts[b], counts[b + 1]};
+        }
+#pragma omp for schedule(static)
+        for (int bx = 0; bx < g->nb[0]; bx++)
+            for (int by = 0; by < nb1; by++)
+                for (int bz = 0; bz < nb2; bz++) {
+                    unsigned char hit = 0;
+                    for (int dx = 0; dx <= (bx > 0); dx++)
+                        for (int dy = 0; dy <= (by > 0); dy++)
+                            for (int dz = 0; dz <= (nz && bz > 0); dz++) {
+                                const int id = grid_block_id(g, bx - dx, by - dy, bz - dz);
+                                hit |= counts[id + 1] > counts[id];
+                            }
+                    m->mark[grid_block_id(g, bx, by, bz)] = hit;
+                }
+    }
+    /* the colour lists, in block order within a colour: O(particle blocks), serial */
+    int ncolour[8] = {0};
+    for (int k = 0; k < m->npb; k++) {
+        int c[3];
+        grid_block_coords(g, m->pb[k].block, c);
+        ncolour[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++;
+    }
+    m->colour_start[0] = 0;
+    for (int k = 0; k < 8; k++) m->colour_start[k + 1] = m->colour_start[k] + ncolour[k];
+    int fill[8];
+    memcpy(fill, m->colour_start, sizeof fill);
+    for (int k = 0; k < m->npb; k++) {
+        int c[3];
+        grid_block_coords(g, m->pb[k].block, c);
+        m->colour_pb[fill[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++] = k;
+    }
+    return HEARTH_OK;
+}
+
+/* Sort keys from G2P: G2P files each particle in its block while its new
+ * position is in registers (and clamps it to the grid, as below), so the
+ * sort's own pass over the positions runs only when those keys are stale:
+ * the first step, particles added or removed, a rolled back step, periodic
+ * axes (wrapped after G2P). 3D 32 cells, one thread: the pass cost about 64
+ * instructions per particle-step. */
+hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    const int n = ps->n;
+    hearth_status st = mpm_reserve(s, n, err);
+    if (st) return st;
+    mpm_state *m = s->mpm;
+    double *X = pcold(ps, PC_X);
+    int *keys = m->keys;
+    const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
+    if (wrap || m->keys_n != n || m->keys_step != s->step || m->keys_edits != ps->edits) {
+        long moved = 0;
+        if (wrap) mpm_periodic_wrap_all(s);
+#pragma omp parallel for schedule(static) reduction(+ : moved) if (n >= SCENE_PARALLEL_MIN)
+        for (int i = 0; i < n; i++) {
+            moved += clamp_to_grid(g, X + 3 * i);
+            keys[i] = block_of_position(g, X + 3 * i);
+        }
+        s->out_of_domain += moved;
+    }
+    m->keys_n = -1; /* the permutation below reuses their room */
+    const int T = sort_chunks(n);
+    /* The chunked count keeps a table of blocks per chunk: only where that
+     * is at most 8 bytes a particle (a big, mostly empty box counts
+     * serially rather than hold tables the size of the box per thread; the
+     * order is the same either way). */
+    const int Tc = T > 1 && (size_t)T * (size_t)m->nblocks <= 2 * (size_t)n ? T : 1;
+    const size_t hneed = Tc > 1 ? (size_t)Tc * (size_t)m->nblocks : 0;
+    if (hneed > m->histcap) {
+        int *h = mem_alloc(sizeof(int) * hneed);
+        if (!h) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the sort's block counts (%d chunks)", Tc);
+        mem_free(m->hist, sizeof(int) * m->histcap);
+        m->hist = h;
+        m->histcap = hneed;
+    }
+    if (sort_counting(m, n, Tc)) particles_permute(ps, m->order, m->perm_scratch);
+    if ((st = sort_blocks(s, T, err))) return st;
+    if (wrap) mpm_periodic_mark(s, m->mark);
+    st = grid_set_channels(g, thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
+    if (st) return st;
+    if ((st = grid_activate(g, m->mark, err))) return st;
+    mpm_ranks_partition(s); /* which particle blocks this rank steps */
+    return HEARTH_OK;
+}
+

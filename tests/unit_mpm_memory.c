@@ -1,0 +1,251 @@
+/* unit_mpm_memory.c: what the MPM particle store and sort hold and how they
+ * grow (issue 20): exact seeding reservations, growth by half, the peak
+ * while columns grow, the sort keys G2P files, and the parallel bookkeeping's
+ * results at one and two threads. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "alloc.h"
+#include "grid.h"
+#include "mpm_fixture.h"
+
+/* A counting allocator: the peak of the bytes held, which hearth_bytes_allocated cannot see. */
+static size_t held_now, held_peak;
+static void *peak_alloc(void *ud, void *ptr, size_t osize, size_t nsize) {
+    (void)ud;
+    if (nsize == 0) {
+        free(ptr);
+        held_now -= osize;
+        return NULL;
+    }
+    void *q = realloc(ptr, nsize);
+    if (q) {
+        held_now += nsize - (ptr ? osize : 0);
+        if (held_now > held_peak) held_peak = held_now;
+    }
+    return q;
+}
+
+static hearth_scene *scene_2d(double dx) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dim = 2;
+    d.dx = dx;
+    d.wall = HEARTH_SLIP;
+    d.seed = 3;
+    return fx_scene_def(&d);
+}
+
+static int seed_disc(hearth_scene *s, int mat, double cx, double cy, double r, double vx) {
+    const double c[3] = {cx, cy, 0}, v[3] = {vx, -0.5, 0};
+    hearth_shape *b = hearth_shape_sphere(c, r);
+    hearth_error err;
+    const int n = hearth_scene_seed_shape(s, mat, b, 4, 0.6, v, &err);
+    hearth_shape_free(b);
+    return n;
+}
+
+/* Seeding reserves exactly the particles it adds: no spare room after one
+ * shape, nor after a second (the power-of-two growth left up to 2x). */
+TEST(seed_reserves_exactly) {
+    hearth_scene *s = scene_2d(1.0 / 128);
+    const int m = fx_elastic(s, 1e5, 0.3, 1000);
+    const int n1 = seed_disc(s, m, 0.4, 0.5, 0.15, 0);
+    printf("  after one disc: n = %d, cap = %d\n", s->ps.n, s->ps.cap);
+    CHECK(n1 > 4096); /* more than one chunk of the seeding loop */
+    CHECK(s->ps.cap == n1);
+    const int n2 = seed_disc(s, m, 0.7, 0.5, 0.1, 0);
+    printf("  after two: n = %d, cap = %d\n", s->ps.n, s->ps.cap);
+    CHECK(n2 > 0 && s->ps.cap == n1 + n2);
+    hearth_scene_destroy(s);
+}
+
+/* Appends grow the store by half its capacity (not double), and a growth
+ * that fails part way leaves the store's capacity, contents and byte count
+ * as they were once it is freed. */
+TEST(particles_grow_by_half) {
+    particles ps;
+    particles_init(&ps);
+    hearth_error err;
+    const size_t base = hearth_bytes_allocated();
+    CHECK(particles_reserve(&ps, 1000, &err) == HEARTH_OK && ps.cap == 1000);
+    ps.n = 1000;
+    for (int i = 0; i < 3000; i++) pcold(&ps, PC_X)[i] = i;
+    CHECK(particles_reserve(&ps, 1001, &err) == HEARTH_OK);
+    printf("  1000 -> %d for 1001\n", ps.cap);
+    CHECK(ps.cap == 1500);
+    CHECK(particles_reserve(&ps, 4000, &err) == HEARTH_OK && ps.cap == 4000); /* a big ask is met exactly */
+    int ok = 1;
+    for (int i = 0; i < 3000; i++) ok &= pcold(&ps, PC_X)[i] == i;
+    for (int i = 3000; i < 12000; i++) ok &= pcold(&ps, PC_X)[i] == 0; /* the new room is zeroed */
+    CHECK(ok);
+    particles_free(&ps);
+    CHECK(hearth_bytes_allocated() == base);
+    for (int k = 0; k < 8; k++) { /* a fresh store each time; its growth fails at column k */
+        particles_init(&ps);
+        CHECK(particles_reserve(&ps, 4000, &err) == HEARTH_OK);
+        ps.n = 1000;
+        for (int i = 0; i < 3000; i++) pcold(&ps, PC_X)[i] = i;
+        mem_fail_after(k);
+        const hearth_status st = particles_reserve(&ps, 9000, &err);
+        mem_fail_after(-1);
+        CHECK(st == HEARTH_ERR_NOMEM && ps.cap == 4000 && ps.n == 1000);
+        CHECK(strstr(err.msg, "particle column") != NULL);
+        ok = 1;
+        for (int i = 0; i < 3000; i++) ok &= pcold(&ps, PC_X)[i] == i;
+        CHECK(ok);
+        CHECK(particles_reserve(&ps, 9000, &err) == HEARTH_OK && ps.cap == 9000); /* the grown columns are kept */
+        particles_free(&ps);
+        CHECK(hearth_bytes_allocated() == base); /* every column freed with its true size */
+    }
+}
+
+/* Particles added in many small batches, with steps between: the most the
+ * library ever holds stays within 1.25x of what it holds at the end (growing
+ * every column at once held old and new copies: about 1.7x). */
+TEST(growth_peak_bounded) {
+    hearth_set_allocator(peak_alloc, NULL);
+    hearth_scene *s = scene_2d(1.0 / 128);
+    const int m = fx_elastic(s, 1e5, 0.3, 1000);
+    hearth_error err;
+    enum { BATCH = 600 };
+    static double x[3 * BATCH];
+    int added = 0;
+    for (int b = 0; b < 40; b++) {
+        for (int i = 0; i < BATCH; i++) {
+            const int q = b * BATCH + i;
+            x[3 * i] = 0.1 + 0.8 * (q % 160) / 160.0;
+            x[3 * i + 1] = 0.1 + 0.8 * (q / 160) / 160.0;
+            x[3 * i + 2] = 0;
+        }
+        CHECK(hearth_scene_add_particles(s, m, BATCH, x, NULL, 1e-5, &err) == BATCH);
+        added += BATCH;
+        CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+    }
+    const double ratio = (double)held_peak / (double)held_now;
+    printf("  %d particles: %zu bytes held at the end, peak %zu (%.3fx); cap %d\n", added, held_now, held_peak, ratio,
+           s->ps.cap);
+    CHECK(s->ps.cap < 1.5 * added + 1);
+    CHECK(ratio <= 1.25);
+    hearth_scene_destroy(s);
+}
+
+/* The block keys G2P files are those of the positions it leaves, and a scene
+ * whose sort recomputes them every step (as it did) runs the same bits. */
+TEST(sort_keys_from_g2p) {
+    hearth_scene *a = scene_2d(1.0 / 96), *b = scene_2d(1.0 / 96);
+    hearth_scene *sc[2] = {a, b};
+    for (int k = 0; k < 2; k++) {
+        const int m = fx_elastic(sc[k], 1e5, 0.3, 1000);
+        CHECK(seed_disc(sc[k], m, 0.3, 0.6, 0.12, 3.0) > 0);
+        fx_box_collider(sc[k], (double[3]){0.7, 0.3, 0}, (double[3]){0.05, 0.2, 0}, HEARTH_SLIP, -0.5);
+    }
+    hearth_error err;
+    long recomputed = 0;
+    for (int step = 0; step < 60; step++) {
+        b->mpm->keys_n = -1; /* b's sort files every particle itself */
+        CHECK(hearth_scene_step(a, 1, &err) == HEARTH_OK && hearth_scene_step(b, 1, &err) == HEARTH_OK);
+        const mpm_state *m = a->mpm;
+        CHECK(m->keys_n == a->ps.n && m->keys_step == a->step);
+        const double *X = pcold(&a->ps, PC_X);
+        for (int i = 0; i < a->ps.n; i++) {
+            int bb[3] = {0, 0, 0};
+            for (int d = 0; d < 2; d++) bb[d] = (int)floor((X[3 * i + d] - a->g.lo[d]) * a->g.inv_dx - 0.5) / GRID_B;
+            recomputed += m->keys[i] != grid_block_id(&a->g, bb[0], bb[1], bb[2]);
+        }
+    }
+    hearth_stats sa, sb;
+    hearth_scene_stats(a, &sa);
+    hearth_scene_stats(b, &sb);
+    printf("  keys that differ from the positions' blocks: %ld; hashes %016llx %016llx; out of domain %ld %ld\n", recomputed,
+           (unsigned long long)hearth_scene_hash(a), (unsigned long long)hearth_scene_hash(b), a->out_of_domain, b->out_of_domain);
+    CHECK(recomputed == 0);
+    CHECK(hearth_scene_hash(a) == hearth_scene_hash(b));
+    CHECK(sa.particles == sb.particles && a->out_of_domain == b->out_of_domain);
+    hearth_scene_destroy(a);
+    hearth_scene_destroy(b);
+}
+
+/* The parallel counting sort, block lists and grid activation (a table of
+ * more than 16384 blocks, so grid_activate splits it too): one and two
+ * threads give the same bits, with particles crossing blocks every step. */
+TEST(determinism_threads_2d_bookkeeping) {
+    uint64_t h[2];
+    for (int t = 1; t <= 2; t++) {
+        hearth_set_threads(t);
+        hearth_scene *s = scene_2d(1.0 / 512);
+        CHECK(s->g.nblocks > 16384);
+        const int m = fx_elastic(s, 1e5, 0.3, 1000);
+        CHECK(seed_disc(s, m, 0.3, 0.6, 0.07, 4.0) > 0);
+        CHECK(seed_disc(s, m, 0.6, 0.5, 0.05, -4.0) > 0);
+        CHECK(s->ps.n >= SCENE_PARALLEL_MIN); /* so the step really runs on two threads */
+        CHECK(s->ps.n >= s->g.nblocks);       /* and the sort counts in chunks (mpm_sort: 2 x blocks <= 2 x particles) */
+        hearth_error err;
+        CHECK(hearth_scene_step(s, 25, &err) == HEARTH_OK); /* about 3 cells of travel: blocks change every step */
+        h[t - 1] = hearth_scene_hash(s);
+        printf("  %d thread(s): %d particles, %d active blocks, hash %016llx\n", t, s->ps.n, s->g.nactive,
+               (unsigned long long)h[t - 1]);
+        hearth_scene_destroy(s);
+    }
+    hearth_set_threads(0);
+    CHECK(h[0] == h[1]);
+}
+
+/* particles_permute gives new[i] = old[order[i]] in every column, whether
+ * the particles moved a little (the window through a ring, whole records)
+ * or anywhere (component by component), at one and two threads. */
+TEST(particles_permute_orders) {
+    hearth_error err;
+    for (int kind = 0; kind < 2; kind++)
+        for (int t = 1; t <= 2; t++) {
+            hearth_set_threads(t);
+            particles ps;
+            particles_init(&ps);
+            const int n = 6000;
+            CHECK(particles_enable(&ps, PC_FLAGS, &err) == HEARTH_OK && particles_set_state_stride(&ps, 5, &err) == HEARTH_OK);
+            CHECK(particles_reserve_exact(&ps, n, &err) == HEARTH_OK);
+            ps.n = n;
+            for (int c = 0; c < PC_COUNT; c++) {
+                if (!(ps.enabled & (1u << c))) continue;
+                const int nc = particles_col_ncomp(&ps, c);
+                for (int i = 0; i < n * nc; i++) {
+                    if (particles_col_is_int(c)) pcoli(&ps, c)[i] = 1000 * c + i;
+                    else pcold(&ps, c)[i] = 1000.0 * c + i + 0.25;
+                }
+            }
+            /* kind 0: runs shifted by a few dozen places (a sort after a step); 1: a scattered order */
+            int *order = malloc(sizeof(int) * n);
+            double *scratch = malloc(sizeof(double) * n);
+            for (int i = 0; i < n; i++) order[i] = i;
+            if (kind == 0)
+                for (int i = 0; i + 40 < n; i += 97) { /* rotate [i, i + 40) by one: place i takes i + 39 */
+                    const int last = order[i + 39];
+                    memmove(order + i + 1, order + i, sizeof(int) * 39);
+                    order[i] = last;
+                }
+            else
+                for (int i = 0; i < n; i++) order[i] = (int)(((long)i * 2713) % n); /* 2713 and 6000 are coprime */
+            particles_permute(&ps, order, scratch);
+            int bad = 0;
+            for (int c = 0; c < PC_COUNT; c++) {
+                if (!(ps.enabled & (1u << c))) continue;
+                const int nc = particles_col_ncomp(&ps, c);
+                for (int i = 0; i < n; i++)
+                    for (int k = 0; k < nc; k++) {
+                        const long want = 1000L * c + (long)order[i] * nc + k;
+                        bad += particles_col_is_int(c) ? pcoli(&ps, c)[i * nc + k] != want
+                                                       : pcold(&ps, c)[i * nc + k] != (double)want + 0.25;
+                    }
+            }
+            printf("  %s order, %d thread(s): %d wrong values\n", kind ? "scattered" : "shifted", t, bad);
+            CHECK(bad == 0);
+            free(order);
+            free(scratch);
+            particles_free(&ps);
+        }
+    hearth_set_threads(0);
+}
+
+TEST_MAIN(T(seed_reserves_exactly), T(particles_grow_by_half), T(growth_peak_bounded), T(sort_keys_from_g2p),
+          T(determinism_threads_2d_bookkeeping),
+          T(particles_permute_orders))
