@@ -214,17 +214,6 @@ static int finite_n(const double *a, int n) {
     return 1;
 }
 
-/* Laplacian of the cubic spline: W'' + (d - 1) W' / r (for the colour field). */
-static double lap_w(int dim, double r, double h) {
-    const double q = 2.0 * r / h;
-    if (q >= 2.0) return 0.0;
-    const double sg = sph_sigma(dim, h), k = 2.0 / h;
-    if (r <= 0) return -3.0 * dim * sg * k * k; /* the limit r -> 0: W''(0) = W'(r)/r = -3 sg k^2 */
-    const double f1 = q < 1.0 ? -3.0 * q + 2.25 * q * q : -0.75 * (2.0 - q) * (2.0 - q);
-    const double f2 = q < 1.0 ? -3.0 + 4.5 * q : 1.5 * (2.0 - q); /* eq. 3.12 (whose printed 1.5 (2 - 1) is (2 - q)) */
-    return sg * (f2 * k * k + (dim - 1) * f1 * k / r);
-}
-
 /* Per-particle material constants: rest density, Tait B, viscosity (eq. 4.1
  * through a curve), sound speed, XSPH tuner (eq. 4.4), smoothing length. */
 static void particle_constants(hearth_scene *s, int i, const double *T, double *pscratch) {
@@ -382,7 +371,7 @@ static void phase_kinematics(hearth_scene *s) {
         /* eq. 3.28 sums over every j including i itself: without the self
          * term the Laplacian is positive everywhere and eq. 3.30 pushes the
          * surface outward (a square drop blew apart) */
-        double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = m[i] / st->rho[i] * lap_w(dim, 0, st->h[i]);
+        double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = m[i] / st->rho[i] * sph_lap_w(dim, 0, st->h[i]);
         for (int k = off[i]; k < off[i + 1]; k++) {
             const int j = nb[k];
             double d[3];
@@ -395,7 +384,7 @@ static void phase_kinematics(hearth_scene *s) {
                 for (int b = 0; b < 3; b++) L[3 * a + b] += Vj * dv * g * d[b];
                 Ni[a] += Vj * g * d[a];
             }
-            lc += Vj * lap_w(dim, r, hij);
+            lc += Vj * sph_lap_w(dim, r, hij);
         }
         memcpy(c.C + 9 * i, L, sizeof L);
         memcpy(st->N + 3 * i, Ni, sizeof Ni);
