@@ -107,7 +107,7 @@ TEST(sph_neighbours_agree) {
     for (int i = 0; i < n; i++) key[i] = sph_cell_of(&c, x + 3 * i);
     sph_cells_sort(&c, key, n, order);
     for (int i = 0; i < n; i++) memcpy(xs + 3 * i, x + 3 * order[i], 3 * sizeof(double));
-    CHECK(sph_nlist_build(&a, &c, xs, n, NULL, hh, &err) == HEARTH_OK);
+    CHECK(sph_nlist_build(&a, &c, xs, n, NULL, hh, NULL, NULL, &err) == HEARTH_OK);
     double t1 = now();
     CHECK(sph_nlist_kdtree(&b, &c, xs, n, hh, &err) == HEARTH_OK);
     double t2 = now();

@@ -5,8 +5,9 @@
  *   sph_walls_begin      fixed particles take their body's prescribed
  *                        velocity, or 0 (sph_walls.c)
  *   phase_predrift       (leapfrog: drift half a step); periodic wrap
- *   phase_neighbours     sort particles by cell, neighbour lists (sph_neighbours.c)
- *   phase_density        density by summation (3.13); Sigalotti adaptive h
+ *   phase_neighbours     sort particles by cell, neighbour lists and with
+ *                        them the density by summation (3.13) (sph_neighbours.c)
+ *   phase_density        per-particle constants; Sigalotti adaptive h
  *                        (3.54-3.56) if asked
  *   phase_kinematics     velocity gradient (3.27), colour field and its
  *                        gradient (3.28-3.29), surface particles
@@ -266,27 +267,9 @@ static hearth_status sort_and_list(hearth_scene *s, double hcell, const double *
             memcpy(st->h, st->perm, sizeof(double) * (size_t)n);
         }
     }
-    return sph_nlist_build(&st->nl, &st->cells, pcold(ps, PC_X), n, h ? st->h : NULL, hcell, err);
-}
-
-/* Density by summation (eq. 3.13) with h_ij (eq. 3.56). */
-static void density(hearth_scene *s) {
-    struct sph_state *st = s->sph;
-    const particles *ps = &s->ps;
-    const int n = ps->n, dim = s->def.dim;
-    const double *x = pcold(ps, PC_X), *m = pcold(ps, PC_MASS);
-    const int *off = st->nl.off, *nb = st->nl.j;
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        double r = m[i] * sph_w(dim, 0, st->h[i]);
-        for (int k = off[i]; k < off[i + 1]; k++) {
-            const int j = nb[k];
-            double d[3];
-            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-            r += m[j] * sph_w(dim, sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 0.5 * (st->h[i] + st->h[j]));
-        }
-        st->rho[i] = r;
-    }
+    /* the density of eq. 3.13 comes with the lists (one walk over the neighbours, not two) */
+    return sph_nlist_build(&st->nl, &st->cells, pcold(ps, PC_X), n, h ? st->h : NULL, hcell, pcold(ps, PC_MASS),
+                           h ? st->rho : NULL, err);
 }
 
 /* ---- the step's phases ----------------------------------------------------------- */
@@ -324,9 +307,10 @@ static hearth_status phase_neighbours(hearth_scene *s, hearth_error *err) {
     return sort_and_list(s, hmax, st->h, err);
 }
 
-/* Per-particle constants, then density by summation (eq. 3.13). With
- * adaptive h, Sigalotti et al.'s pass: eq. 3.54 with the geometric mean of
- * eq. 3.55, the lists again for the new h, and the density again. */
+/* Per-particle constants; the density by summation (eq. 3.13) came with the
+ * lists (sort_and_list). With adaptive h, Sigalotti et al.'s pass: eq. 3.54
+ * with the geometric mean of eq. 3.55, then the lists and the density again
+ * for the new h. */
 static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
@@ -334,7 +318,7 @@ static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
     double pscratch[SCENE_MAX_PARAMS];
     const double *T = sph_cols_of(s).T;
     for (int i = 0; i < n; i++) particle_constants(s, i, T, pscratch);
-    density(s);
+    /* st->rho: summed with the lists (sort_and_list) */
     if (!o->adaptive_h) return HEARTH_OK;
     double lg = 0;
     for (int i = 0; i < n; i++) lg += log(st->rho[i]);
@@ -352,8 +336,7 @@ static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
         particle_constants(s, i, T, pscratch);
         st->h[i] = hkeep;
     }
-    density(s);
-    return HEARTH_OK;
+    return HEARTH_OK; /* st->rho: summed with the new lists */
 }
 
 /* Velocity gradient (eq. 3.27) into the particles' C, the colour field's

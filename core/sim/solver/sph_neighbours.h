@@ -29,12 +29,22 @@ typedef struct sph_cells {
     int cap;
 } sph_cells;
 
+/* One thread's share of a build (sph_nlist_build): its buffer (chunk 0
+ * writes into the list itself), entries used, the next particle to walk. */
+typedef struct sph_nlist_chunk {
+    int *j;
+    size_t cap, used, want;
+    int next;
+} sph_nlist_chunk;
+
 typedef struct sph_nlist {
     int n;
     int *off;   /* n + 1 */
     int *j;     /* off[n] neighbour indices (self excluded) */
     size_t ncap;
     int offcap;
+    sph_nlist_chunk *chunk; /* per thread; with T threads the other T - 1 hold (T - 1) / T of the lists again */
+    int nchunk;
 } sph_nlist;
 
 /// Set up the cell table for box [lo, hi] and cell edge `cell`. Periodic axes
@@ -62,9 +72,11 @@ static inline void sph_disp(const sph_cells *c, const double *xi, const double *
 
 /// Neighbour lists of sorted particles: j is a neighbour of i (j != i) when
 /// |x_i - x_j| < (h_i + h_j) / 2 (symmetric h_ij, eq. 3.56). h may be NULL
-/// for the constant h0. The cell edge must be >= max h.
+/// for the constant h0. The cell edge must be >= max h. One walk per
+/// particle. With rho (and masses m, and h), also each particle's density by
+/// summation (eq. 3.13, h_ij of eq. 3.56) over its list, in list order.
 hearth_status sph_nlist_build(sph_nlist *nl, const sph_cells *c, const double *x, int n, const double *h, double h0,
-                              hearth_error *err);
+                              const double *m, double *rho, hearth_error *err);
 /// The same lists from a kd-tree over unsorted particles (for the comparison).
 hearth_status sph_nlist_kdtree(sph_nlist *nl, const sph_cells *c, const double *x, int n, double h0,
                                hearth_error *err);
