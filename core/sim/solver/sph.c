@@ -10,7 +10,8 @@
  *   phase_density        per-particle constants; Sigalotti adaptive h
  *                        (3.54-3.56) if asked
  *   phase_kinematics     velocity gradient (3.27), colour field and its
- *                        gradient (3.28-3.29), surface particles
+ *                        gradient (3.28-3.29), surface particles; the
+ *                        viscous renormalisation (sph_viscosity.c)
  *   phase_pressure       Tait (3.17); bubble particles (3.48-3.51) while they
  *                        heat, the final-density Tait (3.52) afterwards
  *   phase_stress         F <- (I + dt L) F, the plugin's Kirchhoff stress
@@ -59,7 +60,7 @@
  * (Morris et al. 1997), their drag taken implicitly in the kick, and a fixed
  * body may move rigidly (a lid, a paddle: sph_walls.c); eq. 3.19's
  * Laplacian (the kernel of eq. 3.8) is renormalised per particle by its
- * discrete second moment (sph_viscous_moments). Eq. 3.8 summed over a resting
+ * discrete second moment (sph_viscous_factor). Eq. 3.8 summed over a resting
  * lattice is 5.7% stronger than its integral at h = 2.4 spacings (3.8% with
  * rows sliding), a bias fixed by h over the spacing, so it does not shrink
  * as the spacing does: a creeping channel start-up was 4.6%, 5.2%, 5.4% slow
@@ -341,7 +342,9 @@ static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
 
 /* Velocity gradient (eq. 3.27) into the particles' C, the colour field's
  * gradient (eq. 3.29) and Laplacian (eq. 3.28); surface particles where
- * |grad C| h passes sph.surface_threshold. */
+ * |grad C| h passes sph.surface_threshold; and in the same loop over the
+ * neighbours (it needs only the densities too) the moments of eq. 3.8's
+ * renormalisation into st->vc (sph_viscous_factor, sph_viscosity.c). */
 static void phase_kinematics(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
@@ -349,17 +352,19 @@ static void phase_kinematics(hearth_scene *s) {
     const double *x = c.x, *v = c.v, *m = c.m;
     const int *off = st->nl.off, *nb = st->nl.j;
     const double threshold = s->def.sph.surface_threshold;
+    for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(c.V0[i]) : sqrt(c.V0[i]); /* once, not per pair */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         /* eq. 3.28 sums over every j including i itself: without the self
          * term the Laplacian is positive everywhere and eq. 3.30 pushes the
          * surface outward (a square drop blew apart) */
         double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = m[i] / st->rho[i] * sph_lap_w(dim, 0, st->h[i]);
+        double fill = 0, tr = 0, gm[3] = {0, 0, 0};
         for (int k = off[i]; k < off[i + 1]; k++) {
             const int j = nb[k];
             double d[3];
             sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-            const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), hij = 0.5 * (st->h[i] + st->h[j]);
+            const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], r = sqrt(r2), hij = 0.5 * (st->h[i] + st->h[j]);
             if (r <= 0) continue;
             const double Vj = m[j] / st->rho[j], g = sph_dw(dim, r, hij) / r;
             for (int a = 0; a < 3; a++) {
@@ -368,7 +373,13 @@ static void phase_kinematics(hearth_scene *s) {
                 Ni[a] += Vj * g * d[a];
             }
             lc += Vj * sph_lap_w(dim, r, hij);
+            /* eq. 3.8's moments for the viscous renormalisation (sph_viscous_factor) */
+            const double lr2 = Vj * sph_lap_visc(dim, r, hij) * r2;
+            fill += Vj * sph_w(dim, r, hij);
+            tr += lr2;
+            for (int q = 0; q < 3; q++) gm[q] += lr2 * d[q];
         }
+        st->vc[i] = sph_viscous_factor(s, i, fill, tr, gm);
         memcpy(c.C + 9 * i, L, sizeof L);
         memcpy(st->N + 3 * i, Ni, sizeof Ni);
         st->lapC[i] = lc;
@@ -564,8 +575,6 @@ static void phase_forces(hearth_scene *s, double dt) {
     const double *x = c.x, *v = c.v, *m = c.m;
     const int *off = st->nl.off, *nb = st->nl.j;
     const double eps_as = o->artificial_stress;
-    for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(c.V0[i]) : sqrt(c.V0[i]); /* once, not per pair */
-    sph_viscous_moments(s);
     const double *gvec = s->def.gravity;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN && !s->body_force_serial)
     for (int i = 0; i < n; i++) {
@@ -598,7 +607,7 @@ static void phase_forces(hearth_scene *s, double dt) {
                 Pij += o->av_beta * muij * muij / (0.5 * (ri + rj));
             }
             const double *Sj = st->S + 9 * j, lv = sph_lap_visc(dim, r, hij);
-            /* eq. 3.19 over rho_i; its Laplacian renormalised (sph_viscous_moments), the pair's mean factor so
+            /* eq. 3.19 over rho_i; its Laplacian renormalised (sph_viscous_factor), the pair's mean factor so
              * the pair's forces stay equal and opposite */
             const double visc = 0.5 * (st->mu[i] + st->mu[j]) * m[j] / (rj * ri) * lv * 0.5 * (st->vc[i] + st->vc[j]);
             /* a wall particle's velocity for eq. 3.19: Morris et al. 1997 (sph_wall_frame) */
@@ -636,7 +645,7 @@ static void phase_forces(hearth_scene *s, double dt) {
         for (int q = 0; q < 3; q++) /* a fixed particle keeps its prescribed velocity (sph_walls_begin) */
             st->vnew[3 * i + q] = fixed ? v[3 * i + q] : (v[3 * i + q] + dt * a[q]) / (1.0 + dt * drag);
     }
-    sph_heat_rates(s); /* after sph_viscous_moments and st->sp, which it reads */
+    sph_heat_rates(s); /* reads st->vc and st->sp (phase_kinematics) */
 }
 
 /* XSPH (eq. 3.34, its epsilon the tuner of eq. 4.4) from the kicked

@@ -84,8 +84,11 @@ struct sph_state *sph_state_of(hearth_scene *s, hearth_error *err);
 /* ---- sph_viscosity.c ---- */
 /// sph_solver.material_added: resolve the material's `viscosity` parameter once.
 hearth_status sph_material_added(hearth_scene *s, int mat, hearth_error *err);
-/// eq. 3.8's renormalisation per particle into st->vc (needs st->sp, st->rho, the lists).
-void sph_viscous_moments(hearth_scene *s);
+/// eq. 3.8's renormalisation c_a of particle i (for st->vc) from its neighbour
+/// sums, over neighbours b at d = x_a - x_b, r = |d| > 0, V_b = m_b / rho_b,
+/// L = sph_lap_visc(r, h_ab): fill = sum V_b W(r, h_ab), tr = sum V_b L r^2,
+/// g = sum V_b L r^2 d (phase_kinematics takes them). Needs st->sp, st->rho, st->h.
+double sph_viscous_factor(const hearth_scene *s, int i, double fill, double tr, const double g[3]);
 
 /* ---- sph_walls.c ---- */
 /// The wall normal n and fluid particle i's distance da to the wall surface; 0 without fixed neighbours.
