@@ -575,6 +575,11 @@ static void phase_forces(hearth_scene *s, double dt) {
     const double *x = c.x, *v = c.v, *m = c.m;
     const int *off = st->nl.off, *nb = st->nl.j;
     const double eps_as = o->artificial_stress;
+    /* S / rho^2, as eq. 3.18's pair sum reads it, once per particle instead of twice per pair (the same
+     * division, so the same bits); st->S holds it from here to the step's end */
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++)
+        for (int k = 0; k < 9; k++) st->S[9 * i + k] = st->S[9 * i + k] / (st->rho[i] * st->rho[i]);
     const double *gvec = s->def.gravity;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN && !s->body_force_serial)
     for (int i = 0; i < n; i++) {
@@ -622,7 +627,7 @@ static void phase_forces(hearth_scene *s, double dt) {
             const double *Ri = st->R + 9 * i, *Rj = st->R + 9 * j;
             for (int q = 0; q < dim; q++) {
                 double sd = 0;
-                for (int b = 0; b < 3; b++) sd += (Si[3 * q + b] / (ri * ri) + Sj[3 * q + b] / (rj * rj)) * d[b];
+                for (int b = 0; b < 3; b++) sd += (Si[3 * q + b] + Sj[3 * q + b]) * d[b]; /* S / rho^2 (above) */
                 if (fn > 0)
                     for (int b = 0; b < 3; b++) sd += fn * (Ri[3 * q + b] + Rj[3 * q + b]) * d[b];
                     /* with a wall b: -visc beta (v_a - V_b), V_b the wall's own (prescribed) velocity; the

@@ -18,11 +18,13 @@ hearth_status sph_cells_setup(sph_cells *c, int dim, const double lo[3], const d
     if (!(cell > 0) || !isfinite(cell)) return err_set(err, HEARTH_ERR_PARAM, "sph: cell size must be > 0 m, got %g", cell);
     c->dim = dim;
     c->cell = cell;
+    c->anyper = 0;
     long total = 1;
     for (int a = 0; a < 3; a++) {
         c->lo[a] = lo[a];
         c->len[a] = hi[a] - lo[a];
         c->periodic[a] = a < dim && periodic && periodic[a];
+        c->anyper |= c->periodic[a];
         if (a >= dim) {
             c->nc[a] = 1;
             continue;
@@ -133,14 +135,13 @@ static int walk(const sph_cells *c, const double *x, int i, const double *h, dou
                 const int *lo, const int *hi, int nr, int *out) {
     const double *xi = x + 3 * i;
     const double hi_ = h ? h[i] : h0;
-    const int per = c->periodic[0] || c->periodic[1] || c->periodic[2];
     double r = rho ? m[i] * sph_w(c->dim, 0, hi_) : 0;
     int cnt = 0;
     for (int q = 0; q < nr; q++)
         for (int j = lo[q]; j < hi[q]; j++) {
             if (j == i) continue;
             double d[3];
-            if (per) sph_disp(c, xi, x + 3 * j, d);
+            if (c->anyper) sph_disp(c, xi, x + 3 * j, d);
             else d[0] = xi[0] - x[3 * j], d[1] = xi[1] - x[3 * j + 1], d[2] = xi[2] - x[3 * j + 2];
             const double r2d = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             const double hij = h ? 0.5 * (hi_ + h[j]) : h0;

@@ -24,6 +24,7 @@ typedef struct sph_cells {
     double cell;          /* cell edge (m) */
     int nc[3];            /* cells per axis (1 along z in 2D) */
     int periodic[3];
+    int anyper;           /* any periodic axis (the list's walk skips sph_disp without) */
     int ncell;
     int *start;           /* ncell + 1: particles of cell c are [start[c], start[c+1]) after sorting */
     int cap;

@@ -31,6 +31,8 @@ struct sph_state {
     int valid;      /* per-particle results match the scene's particles */
     int *key, *order;
     double *perm;   /* permutation scratch, cap doubles */
+    /* S: the deviatoric Kirchhoff-over-J stress of phase_stress; divided by
+     * rho^2 in place once phase_forces starts (what eq. 3.18's sum reads) */
     double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *surf, *rhof, *dT, *Tprev;
     double *rho0, *B, *mu, *c0, *xsph;
     double *vc;     /* the viscous Laplacian's renormalisation (viscous_moments), per particle this step */
