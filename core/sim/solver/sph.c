@@ -345,45 +345,52 @@ static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
  * |grad C| h passes sph.surface_threshold; and in the same loop over the
  * neighbours (it needs only the densities too) the moments of eq. 3.8's
  * renormalisation into st->vc (sph_viscous_factor, sph_viscosity.c). */
+static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s, const sph_cols *c, int i,
+                                                                  const int dim) {
+    struct sph_state *st = s->sph;
+    const double *x = c->x, *v = c->v, *m = c->m;
+    const int *off = st->nl.off, *nb = st->nl.j;
+    /* eq. 3.28 sums over every j including i itself: without the self
+     * term the Laplacian is positive everywhere and eq. 3.30 pushes the
+     * surface outward (a square drop blew apart) */
+    double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = m[i] / st->rho[i] * sph_lap_w(dim, 0, st->h[i]);
+    double fill = 0, tr = 0, gm[3] = {0, 0, 0};
+    for (int k = off[i]; k < off[i + 1]; k++) {
+        const int j = nb[k];
+        double d[3];
+        sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
+        const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], r = sqrt(r2), hij = 0.5 * (st->h[i] + st->h[j]);
+        if (r <= 0) continue;
+        const double Vj = m[j] / st->rho[j], g = sph_dw(dim, r, hij) / r;
+        for (int a = 0; a < 3; a++) {
+            const double dv = v[3 * j + a] - v[3 * i + a];
+            for (int b = 0; b < 3; b++) L[3 * a + b] += Vj * dv * g * d[b];
+            Ni[a] += Vj * g * d[a];
+        }
+        lc += Vj * sph_lap_w(dim, r, hij);
+        /* eq. 3.8's moments for the viscous renormalisation (sph_viscous_factor) */
+        const double lr2 = Vj * sph_lap_visc(dim, r, hij) * r2;
+        fill += Vj * sph_w(dim, r, hij);
+        tr += lr2;
+        for (int q = 0; q < 3; q++) gm[q] += lr2 * d[q];
+    }
+    st->vc[i] = sph_viscous_factor(s, i, fill, tr, gm);
+    memcpy(c->C + 9 * i, L, sizeof L);
+    memcpy(st->N + 3 * i, Ni, sizeof Ni);
+    st->lapC[i] = lc;
+    st->surf[i] = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]) * st->h[i] > s->def.sph.surface_threshold;
+}
+
 static void phase_kinematics(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim;
-    const double *x = c.x, *v = c.v, *m = c.m;
-    const int *off = st->nl.off, *nb = st->nl.j;
-    const double threshold = s->def.sph.surface_threshold;
     for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(c.V0[i]) : sqrt(c.V0[i]); /* once, not per pair */
+    /* one copy of the loop per dimension: the kernels' dim is a constant in each */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        /* eq. 3.28 sums over every j including i itself: without the self
-         * term the Laplacian is positive everywhere and eq. 3.30 pushes the
-         * surface outward (a square drop blew apart) */
-        double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = m[i] / st->rho[i] * sph_lap_w(dim, 0, st->h[i]);
-        double fill = 0, tr = 0, gm[3] = {0, 0, 0};
-        for (int k = off[i]; k < off[i + 1]; k++) {
-            const int j = nb[k];
-            double d[3];
-            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-            const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], r = sqrt(r2), hij = 0.5 * (st->h[i] + st->h[j]);
-            if (r <= 0) continue;
-            const double Vj = m[j] / st->rho[j], g = sph_dw(dim, r, hij) / r;
-            for (int a = 0; a < 3; a++) {
-                const double dv = v[3 * j + a] - v[3 * i + a];
-                for (int b = 0; b < 3; b++) L[3 * a + b] += Vj * dv * g * d[b];
-                Ni[a] += Vj * g * d[a];
-            }
-            lc += Vj * sph_lap_w(dim, r, hij);
-            /* eq. 3.8's moments for the viscous renormalisation (sph_viscous_factor) */
-            const double lr2 = Vj * sph_lap_visc(dim, r, hij) * r2;
-            fill += Vj * sph_w(dim, r, hij);
-            tr += lr2;
-            for (int q = 0; q < 3; q++) gm[q] += lr2 * d[q];
-        }
-        st->vc[i] = sph_viscous_factor(s, i, fill, tr, gm);
-        memcpy(c.C + 9 * i, L, sizeof L);
-        memcpy(st->N + 3 * i, Ni, sizeof Ni);
-        st->lapC[i] = lc;
-        st->surf[i] = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]) * st->h[i] > threshold;
+        if (dim == 2) kinematics_one(s, &c, i, 2);
+        else kinematics_one(s, &c, i, 3);
     }
 }
 
