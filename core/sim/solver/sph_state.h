@@ -95,8 +95,14 @@ double sph_viscous_factor(const hearth_scene *s, int i, double fill, double tr, 
 /* ---- sph_walls.c ---- */
 /// The wall normal n and fluid particle i's distance da to the wall surface; 0 without fixed neighbours.
 int sph_wall_frame(const hearth_scene *s, int i, double n[3], double *da);
-/// 1 + d_b / d_a: the factor on v_a in a's viscous interaction with wall particle b.
-double sph_wall_beta(const double d[3], const double n[3], double da, double dah);
+/// 1 + d_b / d_a: the factor on v_a in a's viscous interaction with wall
+/// particle b at d = x_a - x_b (sph_walls.c says why); dah: d_a, at least half
+/// of a's spacing. Inline: an outside call in phase_forces' pair loop made
+/// the compiler reload every state pointer for every pair.
+static inline double sph_wall_beta(const double d[3], const double n[3], double da, double dah) {
+    const double db = d[0] * n[0] + d[1] * n[1] + d[2] * n[2] - da;
+    return db > 0 ? 1.0 + db / dah : 1.0;
+}
 /// At the start of a step (serial: it may call motion callbacks): every fixed
 /// particle's velocity, its body's prescribed motion at time t or 0.
 void sph_walls_begin(hearth_scene *s, double t);
