@@ -107,7 +107,7 @@ TEST(sph_neighbours_agree) {
     for (int i = 0; i < n; i++) key[i] = sph_cell_of(&c, x + 3 * i);
     sph_cells_sort(&c, key, n, order);
     for (int i = 0; i < n; i++) memcpy(xs + 3 * i, x + 3 * order[i], 3 * sizeof(double));
-    CHECK(sph_nlist_build(&a, &c, xs, n, NULL, hh, &err) == HEARTH_OK);
+    CHECK(sph_nlist_build(&a, &c, xs, n, NULL, hh, NULL, NULL, &err) == HEARTH_OK);
     double t1 = now();
     CHECK(sph_nlist_kdtree(&b, &c, xs, n, hh, &err) == HEARTH_OK);
     double t2 = now();
@@ -350,7 +350,7 @@ static double poiseuille(double eta, double tend_viscous, int debug) { return po
 /* The steady profile u(y) = f / (2 nu) y (L - y) within 3% of the peak.
  * Measured 0.58% (0.56% fast on average) with Morris et al.'s no-slip wall
  * velocities (sph_walls.c, sph_wall_frame) and eq. 3.8 renormalised by its second
- * moment (sph_viscous_moments); 2.2% (1.9% slow) before the renormalisation,
+ * moment (sph_viscous_factor); 2.2% (1.9% slow) before the renormalisation,
  * when the moment over rows sliding past each other was 3.8% above the
  * integral at h = 2.4 spacings; 12.6% with wall particles at rest in eq.
  * 3.19 (slip). */

@@ -5,11 +5,13 @@
  *   sph_walls_begin      fixed particles take their body's prescribed
  *                        velocity, or 0 (sph_walls.c)
  *   phase_predrift       (leapfrog: drift half a step); periodic wrap
- *   phase_neighbours     sort particles by cell, neighbour lists (sph_neighbours.c)
- *   phase_density        density by summation (3.13); Sigalotti adaptive h
+ *   phase_neighbours     sort particles by cell, neighbour lists and with
+ *                        them the density by summation (3.13) (sph_neighbours.c)
+ *   phase_density        per-particle constants; Sigalotti adaptive h
  *                        (3.54-3.56) if asked
  *   phase_kinematics     velocity gradient (3.27), colour field and its
- *                        gradient (3.28-3.29), surface particles
+ *                        gradient (3.28-3.29), surface particles; the
+ *                        viscous renormalisation (sph_viscosity.c)
  *   phase_pressure       Tait (3.17); bubble particles (3.48-3.51) while they
  *                        heat, the final-density Tait (3.52) afterwards
  *   phase_stress         F <- (I + dt L) F, the plugin's Kirchhoff stress
@@ -58,7 +60,7 @@
  * (Morris et al. 1997), their drag taken implicitly in the kick, and a fixed
  * body may move rigidly (a lid, a paddle: sph_walls.c); eq. 3.19's
  * Laplacian (the kernel of eq. 3.8) is renormalised per particle by its
- * discrete second moment (sph_viscous_moments). Eq. 3.8 summed over a resting
+ * discrete second moment (sph_viscous_factor). Eq. 3.8 summed over a resting
  * lattice is 5.7% stronger than its integral at h = 2.4 spacings (3.8% with
  * rows sliding), a bias fixed by h over the spacing, so it does not shrink
  * as the spacing does: a creeping channel start-up was 4.6%, 5.2%, 5.4% slow
@@ -214,17 +216,6 @@ static int finite_n(const double *a, int n) {
     return 1;
 }
 
-/* Laplacian of the cubic spline: W'' + (d - 1) W' / r (for the colour field). */
-static double lap_w(int dim, double r, double h) {
-    const double q = 2.0 * r / h;
-    if (q >= 2.0) return 0.0;
-    const double sg = sph_sigma(dim, h), k = 2.0 / h;
-    if (r <= 0) return -3.0 * dim * sg * k * k; /* the limit r -> 0: W''(0) = W'(r)/r = -3 sg k^2 */
-    const double f1 = q < 1.0 ? -3.0 * q + 2.25 * q * q : -0.75 * (2.0 - q) * (2.0 - q);
-    const double f2 = q < 1.0 ? -3.0 + 4.5 * q : 1.5 * (2.0 - q); /* eq. 3.12 (whose printed 1.5 (2 - 1) is (2 - q)) */
-    return sg * (f2 * k * k + (dim - 1) * f1 * k / r);
-}
-
 /* Per-particle material constants: rest density, Tait B, viscosity (eq. 4.1
  * through a curve), sound speed, XSPH tuner (eq. 4.4), smoothing length. */
 static void particle_constants(hearth_scene *s, int i, const double *T, double *pscratch) {
@@ -277,27 +268,9 @@ static hearth_status sort_and_list(hearth_scene *s, double hcell, const double *
             memcpy(st->h, st->perm, sizeof(double) * (size_t)n);
         }
     }
-    return sph_nlist_build(&st->nl, &st->cells, pcold(ps, PC_X), n, h ? st->h : NULL, hcell, err);
-}
-
-/* Density by summation (eq. 3.13) with h_ij (eq. 3.56). */
-static void density(hearth_scene *s) {
-    struct sph_state *st = s->sph;
-    const particles *ps = &s->ps;
-    const int n = ps->n, dim = s->def.dim;
-    const double *x = pcold(ps, PC_X), *m = pcold(ps, PC_MASS);
-    const int *off = st->nl.off, *nb = st->nl.j;
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        double r = m[i] * sph_w(dim, 0, st->h[i]);
-        for (int k = off[i]; k < off[i + 1]; k++) {
-            const int j = nb[k];
-            double d[3];
-            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-            r += m[j] * sph_w(dim, sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 0.5 * (st->h[i] + st->h[j]));
-        }
-        st->rho[i] = r;
-    }
+    /* the density of eq. 3.13 comes with the lists (one walk over the neighbours, not two) */
+    return sph_nlist_build(&st->nl, &st->cells, pcold(ps, PC_X), n, h ? st->h : NULL, hcell, pcold(ps, PC_MASS),
+                           h ? st->rho : NULL, err);
 }
 
 /* ---- the step's phases ----------------------------------------------------------- */
@@ -335,9 +308,10 @@ static hearth_status phase_neighbours(hearth_scene *s, hearth_error *err) {
     return sort_and_list(s, hmax, st->h, err);
 }
 
-/* Per-particle constants, then density by summation (eq. 3.13). With
- * adaptive h, Sigalotti et al.'s pass: eq. 3.54 with the geometric mean of
- * eq. 3.55, the lists again for the new h, and the density again. */
+/* Per-particle constants; the density by summation (eq. 3.13) came with the
+ * lists (sort_and_list). With adaptive h, Sigalotti et al.'s pass: eq. 3.54
+ * with the geometric mean of eq. 3.55, then the lists and the density again
+ * for the new h. */
 static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
@@ -345,7 +319,7 @@ static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
     double pscratch[SCENE_MAX_PARAMS];
     const double *T = sph_cols_of(s).T;
     for (int i = 0; i < n; i++) particle_constants(s, i, T, pscratch);
-    density(s);
+    /* st->rho: summed with the lists (sort_and_list) */
     if (!o->adaptive_h) return HEARTH_OK;
     double lg = 0;
     for (int i = 0; i < n; i++) lg += log(st->rho[i]);
@@ -363,44 +337,60 @@ static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
         particle_constants(s, i, T, pscratch);
         st->h[i] = hkeep;
     }
-    density(s);
-    return HEARTH_OK;
+    return HEARTH_OK; /* st->rho: summed with the new lists */
 }
 
 /* Velocity gradient (eq. 3.27) into the particles' C, the colour field's
  * gradient (eq. 3.29) and Laplacian (eq. 3.28); surface particles where
- * |grad C| h passes sph.surface_threshold. */
+ * |grad C| h passes sph.surface_threshold; and in the same loop over the
+ * neighbours (it needs only the densities too) the moments of eq. 3.8's
+ * renormalisation into st->vc (sph_viscous_factor, sph_viscosity.c). */
+static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s, const sph_cols *c, int i,
+                                                                  const int dim) {
+    struct sph_state *st = s->sph;
+    const double *x = c->x, *v = c->v, *m = c->m;
+    const int *off = st->nl.off, *nb = st->nl.j;
+    /* eq. 3.28 sums over every j including i itself: without the self
+     * term the Laplacian is positive everywhere and eq. 3.30 pushes the
+     * surface outward (a square drop blew apart) */
+    double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = m[i] / st->rho[i] * sph_lap_w(dim, 0, st->h[i]);
+    double fill = 0, tr = 0, gm[3] = {0, 0, 0};
+    for (int k = off[i]; k < off[i + 1]; k++) {
+        const int j = nb[k];
+        double d[3];
+        sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
+        const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], r = sqrt(r2), hij = 0.5 * (st->h[i] + st->h[j]);
+        if (r <= 0) continue;
+        const double Vj = m[j] / st->rho[j], g = sph_dw(dim, r, hij) / r;
+        for (int a = 0; a < 3; a++) {
+            const double dv = v[3 * j + a] - v[3 * i + a];
+            for (int b = 0; b < 3; b++) L[3 * a + b] += Vj * dv * g * d[b];
+            Ni[a] += Vj * g * d[a];
+        }
+        lc += Vj * sph_lap_w(dim, r, hij);
+        /* eq. 3.8's moments for the viscous renormalisation (sph_viscous_factor) */
+        const double lr2 = Vj * sph_lap_visc(dim, r, hij) * r2;
+        fill += Vj * sph_w(dim, r, hij);
+        tr += lr2;
+        for (int q = 0; q < 3; q++) gm[q] += lr2 * d[q];
+    }
+    st->vc[i] = sph_viscous_factor(s, i, fill, tr, gm);
+    memcpy(c->C + 9 * i, L, sizeof L);
+    memcpy(st->N + 3 * i, Ni, sizeof Ni);
+    st->lapC[i] = lc;
+    st->surf[i] = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]) * st->h[i] > s->def.sph.surface_threshold;
+}
+
 static void phase_kinematics(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim;
-    const double *x = c.x, *v = c.v, *m = c.m;
-    const int *off = st->nl.off, *nb = st->nl.j;
-    const double threshold = s->def.sph.surface_threshold;
+    for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(c.V0[i]) : sqrt(c.V0[i]); /* once, not per pair */
+    /* one copy of the loop per dimension: the kernels' dim is a constant in each */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        /* eq. 3.28 sums over every j including i itself: without the self
-         * term the Laplacian is positive everywhere and eq. 3.30 pushes the
-         * surface outward (a square drop blew apart) */
-        double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = m[i] / st->rho[i] * lap_w(dim, 0, st->h[i]);
-        for (int k = off[i]; k < off[i + 1]; k++) {
-            const int j = nb[k];
-            double d[3];
-            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-            const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), hij = 0.5 * (st->h[i] + st->h[j]);
-            if (r <= 0) continue;
-            const double Vj = m[j] / st->rho[j], g = sph_dw(dim, r, hij) / r;
-            for (int a = 0; a < 3; a++) {
-                const double dv = v[3 * j + a] - v[3 * i + a];
-                for (int b = 0; b < 3; b++) L[3 * a + b] += Vj * dv * g * d[b];
-                Ni[a] += Vj * g * d[a];
-            }
-            lc += Vj * lap_w(dim, r, hij);
-        }
-        memcpy(c.C + 9 * i, L, sizeof L);
-        memcpy(st->N + 3 * i, Ni, sizeof Ni);
-        st->lapC[i] = lc;
-        st->surf[i] = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]) * st->h[i] > threshold;
+        if (dim == 2) kinematics_one(s, &c, i, 2);
+        else kinematics_one(s, &c, i, 3);
     }
 }
 
@@ -592,8 +582,11 @@ static void phase_forces(hearth_scene *s, double dt) {
     const double *x = c.x, *v = c.v, *m = c.m;
     const int *off = st->nl.off, *nb = st->nl.j;
     const double eps_as = o->artificial_stress;
-    for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(c.V0[i]) : sqrt(c.V0[i]); /* once, not per pair */
-    sph_viscous_moments(s);
+    /* S / rho^2, as eq. 3.18's pair sum reads it, once per particle instead of twice per pair (the same
+     * division, so the same bits); st->S holds it from here to the step's end */
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++)
+        for (int k = 0; k < 9; k++) st->S[9 * i + k] = st->S[9 * i + k] / (st->rho[i] * st->rho[i]);
     const double *gvec = s->def.gravity;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN && !s->body_force_serial)
     for (int i = 0; i < n; i++) {
@@ -626,7 +619,7 @@ static void phase_forces(hearth_scene *s, double dt) {
                 Pij += o->av_beta * muij * muij / (0.5 * (ri + rj));
             }
             const double *Sj = st->S + 9 * j, lv = sph_lap_visc(dim, r, hij);
-            /* eq. 3.19 over rho_i; its Laplacian renormalised (sph_viscous_moments), the pair's mean factor so
+            /* eq. 3.19 over rho_i; its Laplacian renormalised (sph_viscous_factor), the pair's mean factor so
              * the pair's forces stay equal and opposite */
             const double visc = 0.5 * (st->mu[i] + st->mu[j]) * m[j] / (rj * ri) * lv * 0.5 * (st->vc[i] + st->vc[j]);
             /* a wall particle's velocity for eq. 3.19: Morris et al. 1997 (sph_wall_frame) */
@@ -641,7 +634,7 @@ static void phase_forces(hearth_scene *s, double dt) {
             const double *Ri = st->R + 9 * i, *Rj = st->R + 9 * j;
             for (int q = 0; q < dim; q++) {
                 double sd = 0;
-                for (int b = 0; b < 3; b++) sd += (Si[3 * q + b] / (ri * ri) + Sj[3 * q + b] / (rj * rj)) * d[b];
+                for (int b = 0; b < 3; b++) sd += (Si[3 * q + b] + Sj[3 * q + b]) * d[b]; /* S / rho^2 (above) */
                 if (fn > 0)
                     for (int b = 0; b < 3; b++) sd += fn * (Ri[3 * q + b] + Rj[3 * q + b]) * d[b];
                     /* with a wall b: -visc beta (v_a - V_b), V_b the wall's own (prescribed) velocity; the
@@ -664,7 +657,7 @@ static void phase_forces(hearth_scene *s, double dt) {
         for (int q = 0; q < 3; q++) /* a fixed particle keeps its prescribed velocity (sph_walls_begin) */
             st->vnew[3 * i + q] = fixed ? v[3 * i + q] : (v[3 * i + q] + dt * a[q]) / (1.0 + dt * drag);
     }
-    sph_heat_rates(s); /* after sph_viscous_moments and st->sp, which it reads */
+    sph_heat_rates(s); /* reads st->vc and st->sp (phase_kinematics) */
 }
 
 /* XSPH (eq. 3.34, its epsilon the tuner of eq. 4.4) from the kicked

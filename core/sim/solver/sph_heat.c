@@ -17,7 +17,7 @@
  * whatever the spacing, so slab conduction decayed 1.1%, 4.6%, 5.5% fast at
  * 12, 24, 48 particles along the wave (the kernel's smoothing pulling the
  * other way at coarse spacings) and the error grew with resolution. It now
- * takes the viscous term's per-particle factor (sph_viscous_moments: 2 dim
+ * takes the viscous term's per-particle factor (sph_viscous_factor: 2 dim
  * over the second moment, blended to the lattice's at surfaces): the slab's
  * error falls at order 2 (`sph_heat_conduction_converges`). The factor is
  * the pair's mean, so sum m T is still conserved to round-off. */
@@ -47,7 +47,7 @@ void sph_heat_rates(hearth_scene *s) {
                 const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
                 if (r <= 0) continue;
                 const double hij = 0.5 * (st->h[i] + st->h[j]), rj = st->rho[j];
-                /* eq. 3.8 renormalised as in the viscous term (sph_viscous_moments), the pair's mean factor
+                /* eq. 3.8 renormalised as in the viscous term (sph_viscous_factor), the pair's mean factor
                  * so what i gains j loses */
                 const double lv = sph_lap_visc(dim, r, hij) * 0.5 * (st->vc[i] + st->vc[j]);
                 dTi += o->heat_int * 4 * m[j] / ((ri + rj) * (ri + rj)) * (T[j] - T[i]) * lv; /* eq. 3.45-3.46 */

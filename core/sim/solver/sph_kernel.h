@@ -36,6 +36,17 @@ static inline double sph_dw(int dim, double r, double h) {
     return sph_sigma(dim, h) * f * 2.0 / h;
 }
 
+/* Laplacian of the cubic spline: W'' + (d - 1) W' / r (for the colour field, eq. 3.28). */
+static inline double sph_lap_w(int dim, double r, double h) {
+    const double q = 2.0 * r / h;
+    if (q >= 2.0) return 0.0;
+    const double sg = sph_sigma(dim, h), k = 2.0 / h;
+    if (r <= 0) return -3.0 * dim * sg * k * k; /* the limit r -> 0: W''(0) = W'(r)/r = -3 sg k^2 */
+    const double f1 = q < 1.0 ? -3.0 * q + 2.25 * q * q : -0.75 * (2.0 - q) * (2.0 - q);
+    const double f2 = q < 1.0 ? -3.0 + 4.5 * q : 1.5 * (2.0 - q); /* eq. 3.12 (whose printed 1.5 (2 - 1) is (2 - q)) */
+    return sg * (f2 * k * k + (dim - 1) * f1 * k / r);
+}
+
 /* Laplacian of the viscosity kernel, eq. 3.8 (>= 0 inside the support). */
 static inline double sph_lap_visc(int dim, double r, double h) {
     if (r >= h) return 0.0;

@@ -7,17 +7,24 @@
 
 #include "alloc.h"
 #include "error.h"
+#include "sph_kernel.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 hearth_status sph_cells_setup(sph_cells *c, int dim, const double lo[3], const double hi[3], double cell,
                               const int periodic[3], hearth_error *err) {
     if (!(cell > 0) || !isfinite(cell)) return err_set(err, HEARTH_ERR_PARAM, "sph: cell size must be > 0 m, got %g", cell);
     c->dim = dim;
     c->cell = cell;
+    c->anyper = 0;
     long total = 1;
     for (int a = 0; a < 3; a++) {
         c->lo[a] = lo[a];
         c->len[a] = hi[a] - lo[a];
         c->periodic[a] = a < dim && periodic && periodic[a];
+        c->anyper |= c->periodic[a];
         if (a >= dim) {
             c->nc[a] = 1;
             continue;
@@ -81,36 +88,69 @@ void sph_cells_sort(sph_cells *c, const int *key, int n, int *order) {
     c->start[0] = 0;
 }
 
-/* Visit the neighbours of particle i: fn-like macro body over cells. */
-static int walk(const sph_cells *c, const double *x, int i, const double *h, double h0, int *out) {
+/* The stencil of particle i: the 3 x 3 (x 3 in 3D) cells around its own,
+ * in z, y, x order, as ranges of sorted particles. Along a non-periodic x
+ * axis the cells of one row are adjacent in the sorted order, so a row is
+ * one range; a periodic x wraps, so its rows are three. Returns the number
+ * of ranges; *cand their total length (a bound on the neighbours). */
+static int stencil(const sph_cells *c, const double *xi, int lo[27], int hi[27], int *cand) {
     int ki[3] = {0, 0, 0};
-    for (int a = 0; a < c->dim; a++) ki[a] = axis_cell(c, a, x[3 * i + a]);
-    const double hi = h ? h[i] : h0;
-    int cnt = 0;
-    const int r2 = c->dim == 3 ? 1 : 0;
-    for (int dz = -r2; dz <= r2; dz++)
-        for (int dy = -1; dy <= 1; dy++)
-            for (int dxc = -1; dxc <= 1; dxc++) {
-                int k[3] = {ki[0] + dxc, ki[1] + dy, ki[2] + dz}, ok = 1;
-                for (int a = 0; a < 3; a++) {
-                    if (k[a] >= 0 && k[a] < c->nc[a]) continue;
-                    if (c->periodic[a]) k[a] = (k[a] + c->nc[a]) % c->nc[a];
-                    else ok = 0;
-                }
-                if (!ok) continue;
-                const int cell = (k[2] * c->nc[1] + k[1]) * c->nc[0] + k[0];
-                for (int j = c->start[cell]; j < c->start[cell + 1]; j++) {
-                    if (j == i) continue;
-                    double d[3];
-                    sph_disp(c, x + 3 * i, x + 3 * j, d);
-                    const double r2d = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-                    const double hij = h ? 0.5 * (hi + h[j]) : h0;
-                    if (r2d < hij * hij) {
-                        if (out) out[cnt] = j;
-                        cnt++;
-                    }
-                }
+    for (int a = 0; a < c->dim; a++) ki[a] = axis_cell(c, a, xi[a]);
+    const int rz = c->dim == 3 ? 1 : 0;
+    int nr = 0, tot = 0;
+    for (int dz = -rz; dz <= rz; dz++)
+        for (int dy = -1; dy <= 1; dy++) {
+            int ky = ki[1] + dy, kz = ki[2] + dz;
+            if (ky < 0 || ky >= c->nc[1]) {
+                if (!c->periodic[1]) continue;
+                ky = (ky + c->nc[1]) % c->nc[1];
             }
+            if (kz < 0 || kz >= c->nc[2]) {
+                if (!c->periodic[2]) continue;
+                kz = (kz + c->nc[2]) % c->nc[2];
+            }
+            const int row = (kz * c->nc[1] + ky) * c->nc[0];
+            if (!c->periodic[0]) {
+                const int k0 = ki[0] > 0 ? ki[0] - 1 : 0, k1 = ki[0] + 1 < c->nc[0] ? ki[0] + 1 : c->nc[0] - 1;
+                lo[nr] = c->start[row + k0], hi[nr] = c->start[row + k1 + 1];
+                tot += hi[nr] - lo[nr];
+                nr++;
+                continue;
+            }
+            for (int dx = -1; dx <= 1; dx++) {
+                const int kx = (ki[0] + dx + c->nc[0]) % c->nc[0];
+                lo[nr] = c->start[row + kx], hi[nr] = c->start[row + kx + 1];
+                tot += hi[nr] - lo[nr];
+                nr++;
+            }
+        }
+    *cand = tot;
+    return nr;
+}
+
+/* Particle i's neighbours into out (room for the stencil's candidates), in
+ * stencil order; with rho, its density by summation (eq. 3.13) over them in
+ * that order. Returns their count. */
+static int walk(const sph_cells *c, const double *x, int i, const double *h, double h0, const double *m, double *rho,
+                const int *lo, const int *hi, int nr, int *out) {
+    const double *xi = x + 3 * i;
+    const double hi_ = h ? h[i] : h0;
+    double r = rho ? m[i] * sph_w(c->dim, 0, hi_) : 0;
+    int cnt = 0;
+    for (int q = 0; q < nr; q++)
+        for (int j = lo[q]; j < hi[q]; j++) {
+            if (j == i) continue;
+            double d[3];
+            if (c->anyper) sph_disp(c, xi, x + 3 * j, d);
+            else d[0] = xi[0] - x[3 * j], d[1] = xi[1] - x[3 * j + 1], d[2] = xi[2] - x[3 * j + 2];
+            const double r2d = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            const double hij = h ? 0.5 * (hi_ + h[j]) : h0;
+            if (r2d < hij * hij) {
+                out[cnt++] = j;
+                if (rho) r += m[j] * sph_w(c->dim, sqrt(r2d), hij);
+            }
+        }
+    if (rho) rho[i] = r;
     return cnt;
 }
 
@@ -131,22 +171,101 @@ static hearth_status nlist_reserve(sph_nlist *nl, int n, size_t total, hearth_er
     return HEARTH_OK;
 }
 
+/* Grow chunk t's buffer (chunk 0's is nl->j itself) to hold `need` entries,
+ * keeping the first `keep`. */
+static hearth_status chunk_grow(sph_nlist *nl, int t, size_t keep, size_t need, hearth_error *err) {
+    int **buf = t ? &nl->chunk[t].j : &nl->j;
+    size_t *cap = t ? &nl->chunk[t].cap : &nl->ncap;
+    if (need <= *cap) return HEARTH_OK;
+    const size_t nc = need + need / 4 + 16;
+    int *b = mem_alloc(sizeof(int) * nc);
+    if (!b) return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory for %zu neighbour entries", need);
+    if (keep) memcpy(b, *buf, sizeof(int) * keep);
+    mem_free(*buf, sizeof(int) * *cap);
+    *buf = b;
+    *cap = nc;
+    return HEARTH_OK;
+}
+
+/* One pass over the particles (the lists used to be walked twice, to count
+ * and then to fill). The particles are split into one contiguous chunk per
+ * thread; chunk 0 writes into nl->j, the others into their own buffers,
+ * copied after it once the counts are known. A chunk whose buffer cannot
+ * take the next particle's candidates stops there; its buffer grows (here,
+ * between parallel regions, so allocation failures stay deterministic) and
+ * it resumes. The lists do not depend on the chunks, so neither do they on
+ * the thread count. */
 hearth_status sph_nlist_build(sph_nlist *nl, const sph_cells *c, const double *x, int n, const double *h, double h0,
-                              hearth_error *err) {
+                              const double *m, double *rho, hearth_error *err) {
     hearth_status st = nlist_reserve(nl, n, 0, err);
     if (st) return st;
     nl->n = n;
-#pragma omp parallel for schedule(static) if (n >= 2048)
-    for (int i = 0; i < n; i++) nl->off[i + 1] = walk(c, x, i, h, h0, NULL);
+    int T = 1;
+#ifdef _OPENMP
+    if (n >= 2048) T = omp_get_max_threads();
+#endif
+    if (T > n) T = n > 0 ? n : 1;
+    if (T > nl->nchunk) {
+        sph_nlist_chunk *ch = mem_calloc(sizeof *ch * (size_t)T);
+        if (!ch) return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory for neighbour lists");
+        if (nl->nchunk) memcpy(ch, nl->chunk, sizeof *ch * (size_t)nl->nchunk);
+        mem_free(nl->chunk, sizeof *ch * (size_t)nl->nchunk);
+        nl->chunk = ch;
+        nl->nchunk = T;
+    }
+    for (int t = 0; t < T; t++) {
+        nl->chunk[t].next = (int)((long)n * t / T);
+        nl->chunk[t].used = 0;
+    }
+    for (;;) {
+        int stuck = 0;
+#pragma omp parallel for schedule(static, 1) num_threads(T) reduction(+ : stuck) if (T > 1)
+        for (int t = 0; t < T; t++) {
+            sph_nlist_chunk *ch = &nl->chunk[t];
+            int *buf = t ? ch->j : nl->j;
+            const size_t cap = t ? ch->cap : nl->ncap;
+            const int end = (int)((long)n * (t + 1) / T);
+            int lo[27], hi[27], cand;
+            for (; ch->next < end; ch->next++) {
+                const int i = ch->next, nr = stencil(c, x + 3 * i, lo, hi, &cand);
+                if (ch->used + (size_t)cand > cap) {
+                    ch->want = ch->used + (size_t)cand;
+                    stuck++;
+                    break;
+                }
+                const int k = walk(c, x, i, h, h0, m, rho, lo, hi, nr, buf + ch->used);
+                nl->off[i + 1] = k;
+                ch->used += (size_t)k;
+            }
+        }
+        if (!stuck) break;
+        for (int t = 0; t < T; t++) {
+            sph_nlist_chunk *ch = &nl->chunk[t];
+            const int b = (int)((long)n * t / T), end = (int)((long)n * (t + 1) / T);
+            if (ch->next >= end) continue;
+            /* room for the rest of the chunk at the mean so far, and the stuck particle's candidates */
+            const int done = ch->next - b;
+            const size_t guess = done > 0 ? ch->used / (size_t)done * (size_t)(end - ch->next) : 0;
+            if ((st = chunk_grow(nl, t, ch->used, ch->want > guess + ch->used ? ch->want : guess + ch->used, err)))
+                return st;
+        }
+    }
+    size_t total = 0;
+    for (int t = 0; t < T; t++) total += nl->chunk[t].used;
+    if ((st = chunk_grow(nl, 0, nl->chunk[0].used, total, err))) return st;
+    size_t at = nl->chunk[0].used;
+    for (int t = 1; t < T; t++) {
+        if (nl->chunk[t].used) memcpy(nl->j + at, nl->chunk[t].j, sizeof(int) * nl->chunk[t].used);
+        at += nl->chunk[t].used;
+    }
     nl->off[0] = 0;
     for (int i = 0; i < n; i++) nl->off[i + 1] += nl->off[i];
-    if ((st = nlist_reserve(nl, n, (size_t)nl->off[n], err))) return st;
-#pragma omp parallel for schedule(static) if (n >= 2048)
-    for (int i = 0; i < n; i++) walk(c, x, i, h, h0, nl->j + nl->off[i]);
     return HEARTH_OK;
 }
 
 void sph_nlist_free(sph_nlist *nl) {
+    for (int t = 1; t < nl->nchunk; t++) mem_free(nl->chunk[t].j, sizeof(int) * nl->chunk[t].cap);
+    mem_free(nl->chunk, sizeof(sph_nlist_chunk) * (size_t)nl->nchunk);
     mem_free(nl->off, sizeof(int) * (size_t)nl->offcap);
     mem_free(nl->j, sizeof(int) * nl->ncap);
     memset(nl, 0, sizeof *nl);

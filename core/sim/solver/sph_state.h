@@ -31,6 +31,8 @@ struct sph_state {
     int valid;      /* per-particle results match the scene's particles */
     int *key, *order;
     double *perm;   /* permutation scratch, cap doubles */
+    /* S: the deviatoric Kirchhoff-over-J stress of phase_stress; divided by
+     * rho^2 in place once phase_forces starts (what eq. 3.18's sum reads) */
     double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *surf, *rhof, *dT, *Tprev;
     double *rho0, *B, *mu, *c0, *xsph;
     double *vc;     /* the viscous Laplacian's renormalisation (viscous_moments), per particle this step */
@@ -84,14 +86,23 @@ struct sph_state *sph_state_of(hearth_scene *s, hearth_error *err);
 /* ---- sph_viscosity.c ---- */
 /// sph_solver.material_added: resolve the material's `viscosity` parameter once.
 hearth_status sph_material_added(hearth_scene *s, int mat, hearth_error *err);
-/// eq. 3.8's renormalisation per particle into st->vc (needs st->sp, st->rho, the lists).
-void sph_viscous_moments(hearth_scene *s);
+/// eq. 3.8's renormalisation c_a of particle i (for st->vc) from its neighbour
+/// sums, over neighbours b at d = x_a - x_b, r = |d| > 0, V_b = m_b / rho_b,
+/// L = sph_lap_visc(r, h_ab): fill = sum V_b W(r, h_ab), tr = sum V_b L r^2,
+/// g = sum V_b L r^2 d (phase_kinematics takes them). Needs st->sp, st->rho, st->h.
+double sph_viscous_factor(const hearth_scene *s, int i, double fill, double tr, const double g[3]);
 
 /* ---- sph_walls.c ---- */
 /// The wall normal n and fluid particle i's distance da to the wall surface; 0 without fixed neighbours.
 int sph_wall_frame(const hearth_scene *s, int i, double n[3], double *da);
-/// 1 + d_b / d_a: the factor on v_a in a's viscous interaction with wall particle b.
-double sph_wall_beta(const double d[3], const double n[3], double da, double dah);
+/// 1 + d_b / d_a: the factor on v_a in a's viscous interaction with wall
+/// particle b at d = x_a - x_b (sph_walls.c says why); dah: d_a, at least half
+/// of a's spacing. Inline: an outside call in phase_forces' pair loop made
+/// the compiler reload every state pointer for every pair.
+static inline double sph_wall_beta(const double d[3], const double n[3], double da, double dah) {
+    const double db = d[0] * n[0] + d[1] * n[1] + d[2] * n[2] - da;
+    return db > 0 ? 1.0 + db / dah : 1.0;
+}
 /// At the start of a step (serial: it may call motion callbacks): every fixed
 /// particle's velocity, its body's prescribed motion at time t or 0.
 void sph_walls_begin(hearth_scene *s, double t);

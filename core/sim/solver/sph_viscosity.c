@@ -2,7 +2,7 @@
  * loop (Rodriguez-Arenas 2011 eq. 3.19 with the kernel Laplacian of eq.
  * 3.8): which plugin parameter is the core's viscosity (contract rule 3 of
  * <hearth/material.h>), and the per-particle renormalisation of eq. 3.8 by
- * its discrete second moment (sph_viscous_moments). phase_forces (sph.c)
+ * its discrete second moment (sph_viscous_factor). phase_forces (sph.c)
  * applies both. */
 #include <math.h>
 
@@ -87,36 +87,22 @@ static double lattice_moment(int dim, double h) {
  * factor (pair weights e^T A e, A solved from the fourth moment so every
  * quadratic field is exact), which would remove the 0.2% anisotropy of
  * sliding rows but fits each instant's skewed arrangement of them: steady
- * Poiseuille flow went from 0.58% to 3.4% off at 20 across. */
-void sph_viscous_moments(hearth_scene *s) {
-    struct sph_state *st = s->sph;
-    const particles *ps = &s->ps;
-    const int n = ps->n, dim = s->def.dim;
-    const double *x = pcold(ps, PC_X), *m = pcold(ps, PC_MASS);
-    const int *off = st->nl.off, *nb = st->nl.j;
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        double fill = 0, tr = 0, g[3] = {0, 0, 0};
-        for (int k = off[i]; k < off[i + 1]; k++) {
-            const int j = nb[k];
-            double d[3];
-            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-            const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], r = sqrt(r2);
-            if (r <= 0) continue;
-            const double hij = 0.5 * (st->h[i] + st->h[j]), Vj = m[j] / st->rho[j];
-            const double lr2 = Vj * sph_lap_visc(dim, r, hij) * r2;
-            fill += Vj * sph_w(dim, r, hij);
-            tr += lr2;
-            for (int q = 0; q < 3; q++) g[q] += lr2 * d[q];
-        }
-        const double full = 1.0 - m[i] / st->rho[i] * sph_w(dim, 0, st->h[i]), phi = full > 0 ? fill / full : 0;
-        /* lopsided: the moment's centre off a by more than 2% of h (0 on any symmetric neighbourhood) */
-        const double off_c = tr > 0 ? sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) / (tr * st->h[i]) : 1.0;
-        const double uphi = phi >= 0.95 ? 1.0 : phi <= 0.85 ? 0.0 : (phi - 0.85) / 0.1;
-        const double uoff = off_c <= 0.02 ? 1.0 : off_c >= 0.05 ? 0.0 : (0.05 - off_c) / 0.03;
-        const double u = uphi * uoff;
-        double c = u > 0 ? 2.0 * dim * phi / tr : 1.0;
-        if (u < 1) c = u * c + (1 - u) * 2.0 * dim / lattice_moment(dim, st->h[i] / st->sp[i]);
-        st->vc[i] = c < 0.8 ? 0.8 : c > 1.2 ? 1.2 : c;
-    }
+ * Poiseuille flow went from 0.58% to 3.4% off at 20 across.
+ *
+ * The neighbour sums (fill, tr M and the moment's centre g) are taken in
+ * phase_kinematics' loop over the neighbours (sph.c), which reads the same
+ * pairs; this closes them into c_a. */
+double sph_viscous_factor(const hearth_scene *s, int i, double fill, double tr, const double g[3]) {
+    const struct sph_state *st = s->sph;
+    const int dim = s->def.dim;
+    const double *m = pcold(&s->ps, PC_MASS);
+    const double full = 1.0 - m[i] / st->rho[i] * sph_w(dim, 0, st->h[i]), phi = full > 0 ? fill / full : 0;
+    /* lopsided: the moment's centre off a by more than 2% of h (0 on any symmetric neighbourhood) */
+    const double off_c = tr > 0 ? sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) / (tr * st->h[i]) : 1.0;
+    const double uphi = phi >= 0.95 ? 1.0 : phi <= 0.85 ? 0.0 : (phi - 0.85) / 0.1;
+    const double uoff = off_c <= 0.02 ? 1.0 : off_c >= 0.05 ? 0.0 : (0.05 - off_c) / 0.03;
+    const double u = uphi * uoff;
+    double c = u > 0 ? 2.0 * dim * phi / tr : 1.0;
+    if (u < 1) c = u * c + (1 - u) * 2.0 * dim / lattice_moment(dim, st->h[i] / st->sp[i]);
+    return c < 0.8 ? 0.8 : c > 1.2 ? 1.2 : c;
 }

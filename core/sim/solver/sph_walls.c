@@ -61,13 +61,9 @@ int sph_wall_frame(const hearth_scene *s, int i, double n[3], double *da) {
     return 1;
 }
 
-/* 1 + d_b / d_a for wall particle b at displacement d = x_a - x_b: the
- * factor on v_a in a's viscous interaction with b (v_a - v_b of eq. 3.19
- * with the wall velocity above). dah: d_a, at least half of a's spacing. */
-double sph_wall_beta(const double d[3], const double n[3], double da, double dah) {
-    const double db = d[0] * n[0] + d[1] * n[1] + d[2] * n[2] - da;
-    return db > 0 ? 1.0 + db / dah : 1.0;
-}
+/* sph_wall_beta (sph_state.h, inline: phase_forces calls it per pair) gives
+ * 1 + d_b / d_a, the factor on v_a in a's viscous interaction with wall
+ * particle b (v_a - v_b of eq. 3.19 with the wall velocity above). */
 
 /* ---- moving walls ---------------------------------------------------------------
  *
