@@ -77,8 +77,12 @@ hearth_install_optional() {
     local sudo=""
     [ "$(id -u)" -ne 0 ] && sudo="sudo"
     $sudo apt-get update -qq >&2 || true
-    $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2 ||
-        echo "hearth: optional packages not installed (${missing[*]}); the tests that need them will skip" >&2
+    # one at a time: apt installs nothing of a list when one package of it fails
+    local p
+    for p in "${missing[@]}"; do
+        $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "$p" >&2 ||
+            echo "hearth: optional package $p not installed; the tests that need it will skip" >&2
+    done
     return 0
 }
 
