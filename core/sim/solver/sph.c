@@ -225,6 +225,20 @@ static double lap_w(int dim, double r, double h) {
     return sg * (f2 * k * k + (dim - 1) * f1 * k / r);
 }
 
+/* The particle's rest volume for its smoothing length: V0, or with
+ * sph.gas_law m / rho_f, the volume its rest density gives it (eq. 3.53's
+ * h = h0 (rho0 / rho)^(1/dim) with the rest density for the summed one, which
+ * is low at a free surface for want of neighbours): an expanded bubble keeps
+ * its neighbours within reach, as the thesis asks of eq. 3.53 ("so that they
+ * are connected by a dough medium and do not fall apart as the volume
+ * increases"). rhof and rho0 are the last step's, in the particles' order. */
+static double rest_volume(const hearth_scene *s, int i) {
+    const struct sph_state *st = s->sph;
+    const double V0 = pcold(&s->ps, PC_VOL0)[i];
+    if (!s->def.sph.gas_law || st->n != s->ps.n || !(st->rhof[i] > 0) || !(st->rho0[i] > 0)) return V0;
+    return V0 * fmax(1.0, st->rho0[i] / st->rhof[i]);
+}
+
 /* Per-particle material constants: rest density, Tait B, viscosity (eq. 4.1
  * through a curve), sound speed, XSPH tuner (eq. 4.4), smoothing length. */
 static void particle_constants(hearth_scene *s, int i, const double *T, double *pscratch) {
@@ -250,7 +264,7 @@ static void particle_constants(hearth_scene *s, int i, const double *T, double *
         eps = o->xsph0 + u * (o->xsph_f - o->xsph0);
     }
     st->xsph[i] = eps;
-    const double V0 = pcold(ps, PC_VOL0)[i];
+    const double V0 = rest_volume(s, i);
     st->h[i] = o->h_factor * (s->def.dim == 3 ? cbrt(V0) : sqrt(V0));
 }
 
@@ -327,7 +341,7 @@ static hearth_status phase_neighbours(hearth_scene *s, hearth_error *err) {
     const int n = ps->n, dim = s->def.dim;
     double hmax = 0;
     for (int i = 0; i < n; i++) {
-        const double V0 = pcold(ps, PC_VOL0)[i];
+        const double V0 = rest_volume(s, i);
         const double h0 = s->def.sph.h_factor * (dim == 3 ? cbrt(V0) : sqrt(V0));
         st->h[i] = h0;
         if (h0 > hmax) hmax = h0;
@@ -404,6 +418,61 @@ static void phase_kinematics(hearth_scene *s) {
     }
 }
 
+/* The gas law's rest density of a bubble particle (sph.gas_law): eq. 3.49,
+ * rho_b = rho0 / V_b, with V_b of eq. 3.50 in absolute temperature (an ideal
+ * gas at the oven's constant pressure; eq. 3.50 in degC would make a bubble at
+ * 0 degC vanish) and, when sph.bubble_vapour (the dough's water activity a_w)
+ * is above 0, the water vapour that joins the bubble's gas as the dough heats
+ * (Fan et al.'s bubble of the thesis's eq. 2.42-2.43: P_b = P_c + P_v with
+ * P_v = a_w P_sat(T) by Clausius-Clapeyron through 100 degC at 101325 Pa,
+ * Delta H_v = 40.66 kJ/mol). At the constant outside pressure P_a the CO2's
+ * partial pressure P_a - P_v holds a fixed number of moles, so
+ *   V_b = V_b0 (T / T0) (P_a - P_v(T0)) / (P_a - P_v(T)),
+ * which grows without bound as P_v nears P_a (the dough's boiling point):
+ * there a real crumb's cells open and vent, so V_b / V_b0 stops at
+ * sph.bubble_vmax. A bubble's rest volume m / rho_b follows its temperature
+ * both ways: it grows while it heats and shrinks as it cools, with no history
+ * to keep (and nothing for a rollback to lose). */
+double sph_bubble_volume(const hearth_sph_def *o, double vb0, double T) {
+    double V = (T + KELVIN) / (o->bubble_T0 + KELVIN); /* eq. 3.50, Kelvin */
+    if (o->bubble_vapour > 0) {                         /* eq. 2.42-2.43 */
+        const double pa = 101325.0, hr = 40660.0 / 8.314462618, tb = 100.0 + KELVIN;
+        const double pv0 = o->bubble_vapour * pa * exp(-hr * (1 / (o->bubble_T0 + KELVIN) - 1 / tb));
+        const double pv = o->bubble_vapour * pa * exp(-hr * (1 / (T + KELVIN) - 1 / tb));
+        V = pv < pa && pv0 < pa ? V * (pa - pv0) / (pa - pv) : HUGE_VAL;
+    }
+    if (!(V < o->bubble_vmax)) V = o->bubble_vmax;
+    return vb0 * V;
+}
+
+/* Pressure with sph.gas_law: every particle's Tait (eq. 3.17, 3.52) against
+ * its rest density: the dough's rho0, a bubble's the gas law's rho0 / V_b
+ * (sph_bubble_volume). A bubble compressed below its gas volume answers with
+ * Tait; expanded beyond it, with the ideal gas's linear gauge pressure
+ * B (rho / rho_b - 1) (gamma = 1: an isothermal gas; B plays the outside
+ * pressure), which eq. 3.48 also is up to its offset: B (rho/rho0) (rho0/rho_b
+ * - 1) = B (rho / rho_b - rho / rho0). With eq. 3.48's offset the bubble's
+ * pressure is positive at any density, so it pushes as long as it heats, by
+ * whatever volume it has already gained: the roll's top burst. The gas law's
+ * pressure vanishes at the bubble's own volume, so the rise is bounded by the
+ * temperature reached. */
+static void pressure_gas_law(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    const hearth_sph_def *o = &s->def.sph;
+    const sph_cols c = sph_cols_of(s);
+    const int n = c.n, *mat = c.mat;
+    const double *T = c.T;
+    for (int i = 0; i < n; i++) {
+        const double rho0 = st->rho0[i], bub = s->mats.slot[mat[i]].core[CP_BUBBLE];
+        const double rr = bub > 0 && T ? rho0 / sph_bubble_volume(o, bub, T[i]) : rho0; /* eq. 3.49 */
+        st->rhof[i] = rr;
+        const double q = st->rho[i] / rr;
+        st->prs[i] = bub > 0 && q < 1 ? st->B[i] * (q - 1) : st->B[i] * (pow(q, o->gamma) - 1);
+        if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
+    }
+    if (T) memcpy(st->Tprev, T, sizeof(double) * (size_t)n);
+}
+
 /* Pressure: Tait (eq. 3.17) against the final density (eq. 3.52); bubble
  * particles (eq. 3.48-3.51) while they heat. While any bubble expands, dough
  * and bubbles keep their density as the final density. */
@@ -414,6 +483,10 @@ static void phase_pressure(hearth_scene *s) {
     const int n = c.n, *mat = c.mat;
     const double *T = c.T;
     const int *off = st->nl.off, *nb = st->nl.j;
+    if (o->gas_law) {
+        pressure_gas_law(s);
+        return;
+    }
     for (int i = 0; i < n; i++) {
         const material_slot *ms = &s->mats.slot[mat[i]];
         const double gam = o->gamma, rho0 = st->rho0[i];
