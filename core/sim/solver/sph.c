@@ -11,7 +11,9 @@
  *   phase_kinematics     velocity gradient (3.27), colour field and its
  *                        gradient (3.28-3.29), surface particles
  *   phase_pressure       Tait (3.17); bubble particles (3.48-3.51) while they
- *                        heat, the final-density Tait (3.52) afterwards
+ *                        heat, the final-density Tait (3.52) afterwards; or
+ *                        with sph.gas_law Tait against each particle's rest
+ *                        density, a bubble's the gas law's (pressure_gas_law)
  *   phase_stress         F <- (I + dt L) F, the plugin's Kirchhoff stress
  *                        through the material door; its deviator enters the
  *                        momentum equation (Tait gives the pressure)
@@ -92,9 +94,12 @@
  * Known limits the scenes show (scripts/scenes/sph/): the elastic Maxwell
  * stress alone does not hold a shape against the tensile instability; bread
  * of the dead sets artificial_stress = 0.3 and holds to 2.5 s instead of
- * splitting at 1.9 s. The bread roll keeps both off by default: with
- * `tension` and artificial stress it is one piece to 1.5 s instead of
- * splitting at 1 s, but its top bursts and the guard stops it at 1.64 s. At
+ * splitting at 1.9 s. The bread roll (#18) split by 0.3 s with the pressure
+ * clamped (no cohesion: its stretched base tears as it slumps, before it has
+ * warmed), and with `tension` and artificial stress its top burst at 1.64 s
+ * under eq. 3.51, whose bubble pushes by whatever volume it already gained;
+ * its preset (h.library.sph.bread_roll) now takes tension, artificial stress
+ * and sph.gas_law (docs/validation.md "SPH bread roll (#18)"). At
  * eps 0.3 a block in strong uniform tension still creeps toward pairs over
  * many sound crossings (`sph_artificial_stress_fluid`: 0.68 spacings at 1 s;
  * 0.5 holds). Surface tension above about 0.02 N/m does not settle a 0.06 m
@@ -445,17 +450,19 @@ double sph_bubble_volume(const hearth_sph_def *o, double vb0, double T) {
     return vb0 * V;
 }
 
-/* Pressure with sph.gas_law: every particle's Tait (eq. 3.17, 3.52) against
- * its rest density: the dough's rho0, a bubble's the gas law's rho0 / V_b
- * (sph_bubble_volume). A bubble compressed below its gas volume answers with
- * Tait; expanded beyond it, with the ideal gas's linear gauge pressure
- * B (rho / rho_b - 1) (gamma = 1: an isothermal gas; B plays the outside
- * pressure), which eq. 3.48 also is up to its offset: B (rho/rho0) (rho0/rho_b
- * - 1) = B (rho / rho_b - rho / rho0). With eq. 3.48's offset the bubble's
- * pressure is positive at any density, so it pushes as long as it heats, by
- * whatever volume it has already gained: the roll's top burst. The gas law's
- * pressure vanishes at the bubble's own volume, so the rise is bounded by the
- * temperature reached. */
+/* Pressure with sph.gas_law: the dough's Tait (eq. 3.17) against its rest
+ * density rho0; a bubble's the ideal gas's gauge pressure against the gas
+ * law's rho_b = rho0 / V_b (sph_bubble_volume), B (rho / rho_b - 1) (gamma =
+ * 1, B playing the outside pressure), but never softer than the dough's Tait
+ * against rho0 (a bubble particle holds dough too, which does not compress
+ * below its raw volume). Eq. 3.48 is the same gauge pressure up to its offset:
+ * B (rho/rho0) (rho0/rho_b - 1) = B (rho / rho_b - rho / rho0), positive at
+ * any density, so the bubble pushes as long as it heats, by whatever volume it
+ * has already gained: the roll's top burst. The gas law's pressure vanishes at
+ * the bubble's own volume, so the rise is bounded by the temperature reached.
+ * Tait (gamma 7) against rho_b instead was tried and rejected: a bubble the
+ * dough holds at its raw volume sees B (V_b^7 - 1), 16000 B at V_b = 4, and
+ * blew the crust off the roll. */
 static void pressure_gas_law(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
@@ -466,8 +473,8 @@ static void pressure_gas_law(hearth_scene *s) {
         const double rho0 = st->rho0[i], bub = s->mats.slot[mat[i]].core[CP_BUBBLE];
         const double rr = bub > 0 && T ? rho0 / sph_bubble_volume(o, bub, T[i]) : rho0; /* eq. 3.49 */
         st->rhof[i] = rr;
-        const double q = st->rho[i] / rr;
-        st->prs[i] = bub > 0 && q < 1 ? st->B[i] * (q - 1) : st->B[i] * (pow(q, o->gamma) - 1);
+        const double tait = st->B[i] * (pow(st->rho[i] / rho0, o->gamma) - 1); /* eq. 3.17 */
+        st->prs[i] = bub > 0 ? fmax(st->B[i] * (st->rho[i] / rr - 1), tait) : tait;
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
     }
     if (T) memcpy(st->Tprev, T, sizeof(double) * (size_t)n);
