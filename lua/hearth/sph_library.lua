@@ -14,8 +14,10 @@
 --                tension = true, the thesis's Tait (eq. 3.17) with its negative part:
 --                  clamped, a dough has no cohesion and a slumping roll tears at its
 --                  stretched base before it has warmed;
---                artificial_stress = 0.3 (Monaghan 2000) against the tensile
---                  instability tension brings (tension alone explodes by 0.7 s);
+--                artificial_stress = 0.5 (Monaghan 2000) against the tensile
+--                  instability tension brings (tension alone explodes by 0.7 s; at
+--                  0.3 the dough films between the risen bubbles pair up and tear
+--                  at 1.4 s, docs/validation.md "SPH bread roll (#18)");
 --                gas_law = true: a bubble's rest density rho0 / V_b(T) (eq. 3.49-3.50
 --                  in Kelvin), so the rise follows the temperature and is bounded by
 --                  it (eq. 3.51 pushes by whatever it already gained: the top burst);
@@ -42,7 +44,7 @@ return function(h)
           C_lambda = t.C_lambda, density = 1100, bulk = 2e4,
         },
         -- eps_f: §4.3's text value 0.5, not Table 4.1's 5 (XSPH overshoots above 1; the core refuses it)
-        sph = { xsph0 = t.eps0, xsph_f = 0.5, xsph_T0 = t.T0, xsph_Tf = t.Tf, tension = true, artificial_stress = 0.3,
+        sph = { xsph0 = t.eps0, xsph_f = 0.5, xsph_T0 = t.T0, xsph_Tf = t.Tf, tension = true, artificial_stress = 0.5,
                 gas_law = true, bubble_vapour = 0.95, bubble_T0 = t.T0 },
         table = (function() local c = {} for k, v in pairs(t) do c[k] = v end return c end)(),
       }
