@@ -99,7 +99,8 @@
  * warmed), and with `tension` and artificial stress its top burst at 1.64 s
  * under eq. 3.51, whose bubble pushes by whatever volume it already gained;
  * its preset (h.library.sph.bread_roll) now takes tension, artificial stress
- * and sph.gas_law (docs/validation.md "SPH bread roll (#18)"). At
+ * and sph.gas_law (docs/validation.md "SPH bread roll (#18)"): it rises to
+ * 1.3x in one piece by 1.6 s, and then its one-particle dough films tear. At
  * eps 0.3 a block in strong uniform tension still creeps toward pairs over
  * many sound crossings (`sph_artificial_stress_fluid`: 0.68 spacings at 1 s;
  * 0.5 holds). Surface tension above about 0.02 N/m does not settle a 0.06 m
