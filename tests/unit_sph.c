@@ -696,11 +696,12 @@ TEST(sph_oven_robin) {
 
 /* A dough disc (lattice, no gravity) with every fourth particle a bubble
  * (eq. 3.48-3.51), its temperature raised uniformly step by step. */
-static hearth_scene *bubble_dough(int *nout) {
+static hearth_scene *bubble_dough_def(int *nout, int gas_law) {
     const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.12, 0.12, 0};
     hearth_scene_def d = sph_def(2, dx, lo, hi);
     d.gravity[1] = 0;
     d.sph.tension = 1; /* the thesis's Tait: the dough holds together while the bubbles push */
+    d.sph.gas_law = gas_law;
     hearth_scene *s = hearth_scene_create(&d, NULL);
     if (!s) return NULL;
     const char *n[] = {"density", "bulk", "viscosity", "bubble"};
@@ -736,6 +737,8 @@ static hearth_scene *bubble_dough(int *nout) {
     *nout = cnt;
     return s;
 }
+
+static hearth_scene *bubble_dough(int *nout) { return bubble_dough_def(nout, 0); }
 
 static double sph_volume(const hearth_scene *s) {
     const double *rho = sph_particle_values(s, "density"), *m = pcold(&s->ps, PC_MASS);
@@ -846,6 +849,77 @@ TEST(sph_bubble_cooling_contracts) {
     CHECK(prev > V0);
     (void)nd;
     hearth_scene_destroy(s);
+}
+
+/* sph.gas_law (#18): a bubble's rest density is the gas law's rho0 / V_b(T)
+ * (eq. 3.49-3.50 in Kelvin), so the dough's volume follows its temperature
+ * both ways and settles where the gas law puts it. Heat the bubble dough
+ * from 26 to 100 degC and hold: the bubble particles' volume (sum of m / rho)
+ * grows by V_b(100) / V_b(26) = 373.15 / 299.15, within 3%; the dough
+ * particles keep theirs within 3%; holding keeps the volume (1%). Cool back
+ * to 26 degC: the bubbles return to their start within 3%. */
+TEST(sph_gas_law_follows_temperature) {
+    int nd = 0;
+    hearth_scene *s = bubble_dough_def(&nd, 1);
+    CHECK(s != NULL);
+    if (!s) return;
+    hearth_error err;
+    const int n = s->ps.n;
+    double *T = pcold(&s->ps, PC_TEMPERATURE);
+    for (int i = 0; i < n; i++) T[i] = 26;
+    CHECK(hearth_scene_step(s, 50, &err) == HEARTH_OK);
+    double Vb[3] = {0, 0, 0}, Vd[3] = {0, 0, 0}, Tnow = 26;
+    for (int phase = 0; phase < 3; phase++) {
+        if (phase == 1)
+            for (int k = 0; k < 600; k++) { /* 26 -> 100 degC */
+                Tnow = 26 + 74.0 * (k + 1) / 600;
+                T = pcold(&s->ps, PC_TEMPERATURE);
+                for (int i = 0; i < n; i++) T[i] = Tnow;
+                CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+            }
+        if (phase == 2)
+            for (int k = 0; k < 600; k++) { /* and back */
+                Tnow = 100 - 74.0 * (k + 1) / 600;
+                T = pcold(&s->ps, PC_TEMPERATURE);
+                for (int i = 0; i < n; i++) T[i] = Tnow;
+                CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+            }
+        CHECK(hearth_scene_step(s, 300, &err) == HEARTH_OK);
+        const double *rho = sph_particle_values(s, "density"), *m = pcold(&s->ps, PC_MASS);
+        const int *mat = pcoli(&s->ps, PC_MAT), *flags = pcoli(&s->ps, PC_FLAGS);
+        for (int i = 0; rho && i < n; i++)
+            if (!(flags[i] & PF_FIXED)) *(mat[i] == 1 ? &Vb[phase] : &Vd[phase]) += m[i] / rho[i];
+    }
+    const double want = (100 + 273.15) / (26 + 273.15);
+    printf("bubbles: hot/raw %.4f (gas law %.4f), cooled/raw %.4f; dough: hot/raw %.4f, cooled/raw %.4f\n", Vb[1] / Vb[0],
+           want, Vb[2] / Vb[0], Vd[1] / Vd[0], Vd[2] / Vd[0]);
+    CHECK(Vb[0] > 0 && Vd[0] > 0);
+    CHECK(fabs(Vb[1] / Vb[0] - want) <= 0.03 * want);
+    CHECK(fabs(Vb[2] / Vb[0] - 1) <= 0.03);
+    CHECK(fabs(Vd[1] / Vd[0] - 1) <= 0.03);
+    (void)nd;
+    hearth_scene_destroy(s);
+}
+
+/* The gas law's V_b (sph_bubble_volume) against its closed forms: dry, the
+ * absolute temperature ratio; with water activity a_w, the vapour's
+ * Clausius-Clapeyron pressure (100 degC at 101325 Pa, 40.66 kJ/mol) taken
+ * from the bubble's share of the outside pressure; capped at bubble_vmax. */
+TEST(sph_gas_law_bubble_volume) {
+    hearth_scene_def d = hearth_default_scene_def();
+    hearth_sph_def o = d.sph;
+    o.bubble_T0 = 26;
+    CHECK(fabs(sph_bubble_volume(&o, 1, 26) - 1) < 1e-12);
+    CHECK(fabs(sph_bubble_volume(&o, 2, 100) - 2 * 373.15 / 299.15) < 1e-12);
+    o.bubble_vapour = 0.95;
+    /* P_sat(26 degC) = 3.36 kPa, P_sat(80 degC) = 47.4 kPa (steam tables: 3.36, 47.4) */
+    const double pv0 = 0.95 * 3.36e3, pv = 0.95 * 47.4e3;
+    const double want = 353.15 / 299.15 * (101325 - pv0) / (101325 - pv);
+    printf("V_b(80 degC, a_w 0.95) = %.4f, steam tables %.4f; at 100 degC %.4f (cap %.1f)\n",
+           sph_bubble_volume(&o, 1, 80), want, sph_bubble_volume(&o, 1, 100), o.bubble_vmax);
+    CHECK(fabs(sph_bubble_volume(&o, 1, 80) - want) <= 0.03 * want); /* Clausius-Clapeyron with constant Delta H_v */
+    CHECK(sph_bubble_volume(&o, 1, 100) == o.bubble_vmax);
+    CHECK(sph_bubble_volume(&o, 1, 26) < sph_bubble_volume(&o, 1, 50));
 }
 
 /* Viscosity 1e-3..1e5 Pa s and mu_e 1..1e5 Pa (maxwell_sph) in a falling
@@ -1537,6 +1611,6 @@ TEST(sph_keeps_no_grid_tables) {
 TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_neighbours_agree), T(sph_hydrostatic),
           T(sph_poiseuille), T(sph_wall_drag_stable), T(sph_creeping_startup_converges), T(sph_couette_moving_lid_converges), T(sph_poiseuille_converges), T(sph_viscosity_ladder), T(sph_walls_ladder), T(sph_artificial_stress_fluid), T(sph_artificial_stress_elastic), T(sph_oven_robin), T(sph_bubble_expansion), T(sph_extremes), T(sph_determinism_threads),
           T(sph_integrators_free_fall), T(sph_collider_response), T(sph_moving_lid_holds_fluid), T(sph_wall_motion_rigid), T(sph_heat_internal_conserves), T(sph_heat_conduction_converges), T(sph_adaptive_h),
-          T(sph_surface_tension_rounds_drop), T(sph_bubble_cooling_contracts), T(sph_solver_table),
+          T(sph_surface_tension_rounds_drop), T(sph_bubble_cooling_contracts), T(sph_gas_law_follows_temperature), T(sph_gas_law_bubble_volume), T(sph_solver_table),
           T(sph_viscosity_rule), T(sph_porosity_supplied), T(sph_refuses_saturation), T(sph_alloc_failure_paths),
           T(sph_keeps_no_grid_tables))

@@ -139,6 +139,16 @@ static const hearth_setting settings[] = {
         "Monaghan's epsilon (2000) against the tensile instability; 0.2-0.3 is usual, 0 = off (it also resists a cooling "
         "bubble's contraction)",
         0, 0, 1),
+    SPH_FLAG("gas_law",
+             "Tait against each particle's rest density, a bubble's rho0 / V_b(T) (eq. 3.49-3.50 in Kelvin): the rise "
+             "follows the temperature and is bounded by it; off = eq. 3.51 while heating, then eq. 3.52, as the thesis",
+             gas_law),
+    SPH(bubble_vapour, "1",
+        "with gas_law: the dough's water activity a_w; water vapour a_w P_sat(T) joins the bubble's gas (eq. 2.42-2.43, "
+        "Clausius-Clapeyron); 0 = dry gas",
+        0, 0, 0.99),
+    SPH(bubble_vmax, "1", "with gas_law: the largest V_b / V_b0, where the crumb's cells open and vent (the vapour law "
+        "diverges at the boiling point)", 4, 1, 100),
 };
 
 const hearth_setting *hearth_scene_settings(int *n) {

@@ -7,9 +7,25 @@
 --              mu_e      eq. 4.2 through (T0, mu_e0), (Tc, mu_ec), (Tf, mu_ef)
 --              viscosity eq. 4.1 through (T0, mu0), (Tc, muc), (Tf, muf)
 --              C_lambda  eq. 4.3 (the arctan law is a parameter mode of the plugin)
---   .sph       the XSPH tuner of eq. 4.4 (linear from eps0 at T0 to eps_f at Tf)
---              for h.scene{solver = "sph", sph = ...}; eps_f is 0.5 as in the text of
---              §4.3 (Table 4.1 prints 5; XSPH above 1 overshoots and the core refuses it)
+--   .sph       for h.scene{solver = "sph", sph = ...}: the XSPH tuner of eq. 4.4
+--              (linear from eps0 at T0 to eps_f at Tf; eps_f is 0.5 as in the text of
+--              §4.3: Table 4.1 prints 5, XSPH above 1 overshoots and the core refuses
+--              it), and how the dough holds together and rises (#18):
+--                tension = true, the thesis's Tait (eq. 3.17) with its negative part:
+--                  clamped, a dough has no cohesion and a slumping roll tears at its
+--                  stretched base before it has warmed;
+--                artificial_stress = 0.5 (Monaghan 2000) against the tensile
+--                  instability tension brings (tension alone explodes by 0.7 s; at
+--                  0.3 the dough films between the risen bubbles pair up and tear
+--                  at 1.4 s, docs/validation.md "SPH bread roll (#18)");
+--                gas_law = true: a bubble's rest density rho0 / V_b(T) (eq. 3.49-3.50
+--                  in Kelvin), so the rise follows the temperature and is bounded by
+--                  it (eq. 3.51 pushes by whatever it already gained: the top burst);
+--                bubble_vapour = 0.95: the dough's water activity, the usual figure
+--                  for bread (Czuchajowska, Pomeranz & Jeffers 1989, Cereal Chem. 66,
+--                  128-132, measure a_w of doughs and crumb): the vapour of eq.
+--                  2.42-2.43 joins the bubbles' gas, which is what makes dough rise
+--                  well beyond a dry gas's T/T0 (1.5x at 180 degC).
 --   .table     the raw Table 4.1 numbers.
 -- Difference from the thesis: eq. 4.1 and 4.2 extrapolate linearly beyond T0
 -- and Tf; hearth's curves are constant beyond their end points.
@@ -28,7 +44,8 @@ return function(h)
           C_lambda = t.C_lambda, density = 1100, bulk = 2e4,
         },
         -- eps_f: §4.3's text value 0.5, not Table 4.1's 5 (XSPH overshoots above 1; the core refuses it)
-        sph = { xsph0 = t.eps0, xsph_f = 0.5, xsph_T0 = t.T0, xsph_Tf = t.Tf },
+        sph = { xsph0 = t.eps0, xsph_f = 0.5, xsph_T0 = t.T0, xsph_Tf = t.Tf, tension = true, artificial_stress = 0.5,
+                gas_law = true, bubble_vapour = 0.95, bubble_T0 = t.T0 },
         table = (function() local c = {} for k, v in pairs(t) do c[k] = v end return c end)(),
       }
     end,

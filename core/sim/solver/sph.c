@@ -13,7 +13,9 @@
  *                        gradient (3.28-3.29), surface particles; the
  *                        viscous renormalisation (sph_viscosity.c)
  *   phase_pressure       Tait (3.17); bubble particles (3.48-3.51) while they
- *                        heat, the final-density Tait (3.52) afterwards
+ *                        heat, the final-density Tait (3.52) afterwards; or
+ *                        with sph.gas_law Tait against each particle's rest
+ *                        density, a bubble's the gas law's (sph_gas.c)
  *   phase_stress         F <- (I + dt L) F, the plugin's Kirchhoff stress
  *                        through the material door; its deviator enters the
  *                        momentum equation (Tait gives the pressure)
@@ -94,9 +96,13 @@
  * Known limits the scenes show (scripts/scenes/sph/): the elastic Maxwell
  * stress alone does not hold a shape against the tensile instability; bread
  * of the dead sets artificial_stress = 0.3 and holds to 2.5 s instead of
- * splitting at 1.9 s. The bread roll keeps both off by default: with
- * `tension` and artificial stress it is one piece to 1.5 s instead of
- * splitting at 1 s, but its top bursts and the guard stops it at 1.64 s. At
+ * splitting at 1.9 s. The bread roll (#18) split by 0.3 s with the pressure
+ * clamped (no cohesion: its stretched base tears as it slumps, before it has
+ * warmed), and with `tension` and artificial stress its top burst at 1.64 s
+ * under eq. 3.51, whose bubble pushes by whatever volume it already gained;
+ * its preset (h.library.sph.bread_roll) now takes tension, artificial stress
+ * and sph.gas_law (docs/validation.md "SPH bread roll (#18)"): it rises to
+ * 1.3x in one piece by 1.6 s, and then its one-particle dough films tear. At
  * eps 0.3 a block in strong uniform tension still creeps toward pairs over
  * many sound crossings (`sph_artificial_stress_fluid`: 0.68 spacings at 1 s;
  * 0.5 holds). Surface tension above about 0.02 N/m does not settle a 0.06 m
@@ -216,6 +222,20 @@ static int finite_n(const double *a, int n) {
     return 1;
 }
 
+/* The particle's rest volume for its smoothing length: V0, or with
+ * sph.gas_law m / rho_f, the volume its rest density gives it (eq. 3.53's
+ * h = h0 (rho0 / rho)^(1/dim) with the rest density for the summed one, which
+ * is low at a free surface for want of neighbours): an expanded bubble keeps
+ * its neighbours within reach, as the thesis asks of eq. 3.53 ("so that they
+ * are connected by a dough medium and do not fall apart as the volume
+ * increases"). rhof and rho0 are the last step's, in the particles' order. */
+static double rest_volume(const hearth_scene *s, int i) {
+    const struct sph_state *st = s->sph;
+    const double V0 = pcold(&s->ps, PC_VOL0)[i];
+    if (!s->def.sph.gas_law || st->n != s->ps.n || !(st->rhof[i] > 0) || !(st->rho0[i] > 0)) return V0;
+    return V0 * fmax(1.0, st->rho0[i] / st->rhof[i]);
+}
+
 /* Per-particle material constants: rest density, Tait B, viscosity (eq. 4.1
  * through a curve), sound speed, XSPH tuner (eq. 4.4), smoothing length. */
 static void particle_constants(hearth_scene *s, int i, const double *T, double *pscratch) {
@@ -241,7 +261,7 @@ static void particle_constants(hearth_scene *s, int i, const double *T, double *
         eps = o->xsph0 + u * (o->xsph_f - o->xsph0);
     }
     st->xsph[i] = eps;
-    const double V0 = pcold(ps, PC_VOL0)[i];
+    const double V0 = rest_volume(s, i);
     st->h[i] = o->h_factor * (s->def.dim == 3 ? cbrt(V0) : sqrt(V0));
 }
 
@@ -300,7 +320,7 @@ static hearth_status phase_neighbours(hearth_scene *s, hearth_error *err) {
     const int n = ps->n, dim = s->def.dim;
     double hmax = 0;
     for (int i = 0; i < n; i++) {
-        const double V0 = pcold(ps, PC_VOL0)[i];
+        const double V0 = rest_volume(s, i);
         const double h0 = s->def.sph.h_factor * (dim == 3 ? cbrt(V0) : sqrt(V0));
         st->h[i] = h0;
         if (h0 > hmax) hmax = h0;
@@ -404,6 +424,10 @@ static void phase_pressure(hearth_scene *s) {
     const int n = c.n, *mat = c.mat;
     const double *T = c.T;
     const int *off = st->nl.off, *nb = st->nl.j;
+    if (o->gas_law) { /* sph_gas.c */
+        sph_pressure_gas_law(s);
+        return;
+    }
     for (int i = 0; i < n; i++) {
         const material_slot *ms = &s->mats.slot[mat[i]];
         const double gam = o->gamma, rho0 = st->rho0[i];

@@ -20,4 +20,10 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err);
 /// order; NULL before the first step or after particles were added/removed.
 /// which: "density", "pressure", "h", "surface" (0/1).
 const double *sph_particle_values(const hearth_scene *s, const char *which);
+
+/// A bubble particle's gas volume V_b at temperature T (degC) for its initial
+/// volume vb0 (the material's `bubble`, eq. 3.50): the ideal gas in Kelvin with
+/// the water vapour of sph.bubble_vapour (eq. 2.42-2.43), at most
+/// vb0 sph.bubble_vmax. What sph.gas_law's rest density rho0 / V_b uses.
+double sph_bubble_volume(const hearth_sph_def *o, double vb0, double T);
 #endif

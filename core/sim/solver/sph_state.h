@@ -118,4 +118,9 @@ void sph_walls_free(struct sph_state *st);
 void sph_heat_rates(hearth_scene *s);
 /// The heat limits on dt (INFINITY when none applies); hmin, rhomin over the particles.
 double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin);
+
+/* ---- sph_gas.c ---- */
+/// With sph.gas_law: st->rhof (each particle's rest density: rho0, a bubble's
+/// rho0 / V_b(T)) and st->prs against it; st->Tprev <- T.
+void sph_pressure_gas_law(hearth_scene *s);
 #endif

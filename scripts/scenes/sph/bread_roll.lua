@@ -1,39 +1,44 @@
 -- Bread roll rise with the SPH solver (Rodriguez-Arenas 2011 §4.2, Fig. 4.3-4.4).
 --   hearth run scripts/scenes/sph/bread_roll.lua [--set bubbles=centre] [--until 3]
 -- A 2D roll of Table 4.1 dough (maxwell_sph, h.library.sph.bread_roll) on a hot
--- tray in an oven. A quarter of its particles are bubble particles (eq. 3.48-3.51):
+-- tray in an oven. A quarter of its particles are bubble particles (eq. 3.48-3.50):
 -- spread evenly (bubbles=even, Fig. 4.4a-b) or gathered at the centre
 -- (bubbles=centre, Fig. 4.4c-d). Heat enters at the surface (eq. 3.42) and
--- diffuses (eq. 3.45); bubbles expand while they heat, the dough keeps the volume
--- it reached (eq. 3.52) and stiffens (eq. 4.1-4.3).
--- Writes volume.csv (relative volume over time, from a density slice) and
--- browning frames: the crust's colour from each particle's temperature history
--- (Zanoni et al. 1995, the thesis's [89]; browning_scale = 400 lets the 3 s
--- animation stand for a 20-minute bake).
+-- diffuses (eq. 3.45); the dough stiffens (eq. 4.1-4.3). How it holds together
+-- and rises comes from the preset (#18, docs/validation.md "SPH bread roll"):
+-- the thesis's Tait with its negative part (tension) and Monaghan's artificial
+-- stress keep it one piece, and each bubble's rest density is the gas law's
+-- rho0 / V_b(T) with the dough's water vapour (sph.gas_law, sph.bubble_vapour):
+-- the bubbles grow with their temperature, and only with it. Measured (2D
+-- default, from the particles): one piece and 1.315x the raw area at 1.6 s;
+-- at 1.7 s the dough films between the risen bubbles tear (3 pieces, 5 by 2 s).
+-- Writes volume.csv (relative volume over time, from a density slice, and the
+-- coolest particle's temperature), particles_NNNN.csv (positions, for
+-- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
+-- particle's temperature history (Zanoni et al. 1995, the thesis's [89];
+-- browning_scale = 400 lets the 3 s animation stand for a 20-minute bake).
+-- Heat: heat_ext = 1e9 (it was 3e8, with which the crumb was still ~50 degC at
+-- 2.2 s, a roll a third baked where the 3 s stand for 20 minutes). Eq. 3.42
+-- heats a surface particle at a rate in r^2, so a finer roll heats slower (see
+-- docs/validation.md).
 -- Scaling: Table 4.1's numbers are animation units. Taken as SI, the raw dough
 -- (0.1 Pa s, mu_e 1 Pa) is water and the roll splashes, and the baked end
 -- (5e3 Pa s) needs microsecond steps. So viscosity and mu_e are multiplied by
 -- visc_scale and mue_scale (default 100) and the viscosity is capped at
 -- visc_cap (default 300 Pa s). --set visc_scale=1 --set mue_scale=1 --set
 -- visc_cap=1e9 is the table as printed.
--- Holding together (measured, 2D default, even bubbles): as it stands the
--- slumping roll opens into strings and splits in two by t = 1 s (the halves
--- slide apart; relative volume 1.22 at 1.2 s, 1.33 at 2.2 s). Keeping the
--- Tait pressure's negative part (--set tension=true, the thesis's equation of
--- state) with Monaghan's artificial stress (--set artificial_stress=0.3)
--- keeps it one piece to t = 1.5 s (relative volume 1.25), but then the top
--- bursts and the stability guard stops the run at 1.64 s (0.5: 1.59 s);
--- with --set xsph0=0.3 as well it holds to 2.1 s, then a bubble particle
--- runs away. Tension alone explodes by 0.7 s, artificial stress alone
--- (clamped pressure) breaks up after 1.1 s. So both stay off by default.
+-- Before #18 (clamped pressure, eq. 3.51): the slumping roll tore at its base
+-- by 0.3 s and split in two by 1 s; with tension and artificial stress the
+-- top burst at 1.64 s (eq. 3.51 pushes by whatever volume it already gained).
 local h = require "hearth"
-local P = h.params { bubbles = "even", dx = 0.002, oven = 180, visc_scale = 100, mue_scale = 100, visc_cap = 300,
-  radius = 0.025, artificial_stress = 0, tension = false, xsph0 = 0.05 }
-
 local lib = h.library.sph.bread_roll
 local sph = lib.sph
-sph.heat_ext, sph.heat_int, sph.av_beta = 3e8, 0.2, 1
-sph.bubble_T0 = lib.table.T0
+local P = h.params { bubbles = "even", dx = 0.002, oven = 180, visc_scale = 100, mue_scale = 100, visc_cap = 300,
+  radius = 0.025, xsph0 = 0.05, heat_ext = 1e9, artificial_stress = sph.artificial_stress, tension = sph.tension,
+  gas_law = sph.gas_law, vapour = sph.bubble_vapour, vmax = sph.bubble_vmax or 4 }
+
+sph.heat_ext, sph.heat_int, sph.av_beta = P.heat_ext, 0.2, 1
+sph.gas_law, sph.bubble_vapour, sph.bubble_vmax = P.gas_law, P.vapour, P.vmax
 sph.artificial_stress, sph.tension = P.artificial_stress, P.tension
 sph.xsph0 = P.xsph0 -- eq. 4.4 at the raw end (Table 4.1: 0.05)
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph", sph = sph,
@@ -82,11 +87,22 @@ local function area()
   return n * (0.16 / 160) * (0.12 / 120)
 end
 local A0 = area()
-local csv = { "t,relative_volume" }
+local csv = { "t,relative_volume,coolest_T_degC" }
+-- particle positions (x, y in m) for measures that do not go through the density field
+-- (tests/sph_roll_measure.py: occupied area and connected pieces)
+local function positions(path)
+  local x, rows = s:positions(), { "x,y" }
+  for i = 1, #x // 3 do rows[#rows + 1] = ("%.6g,%.6g"):format(x[3 * i - 2], x[3 * i - 1]) end
+  h.write(path, table.concat(rows, "\n") .. "\n")
+end
+positions("particles_0000.csv")
 s:run { until_t = 3, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png" },
   on_frame = function(f)
-    csv[#csv + 1] = ("%.4f,%.5f"):format(f.t, area() / A0)
+    local T, cool = s:particles { fields = { "temperature" } }.temperature, math.huge
+    for i = 1, #T do cool = math.min(cool, T[i]) end
+    csv[#csv + 1] = ("%.4f,%.5f,%.2f"):format(f.t, area() / A0, cool)
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
     f:png("temperature", "frames/temperature_%04d.png")
+    positions(("particles_%04d.csv"):format(#csv - 1))
   end }
 print(("bread roll (%s bubbles): relative volume %.3f at t = %.2f s"):format(P.bubbles, area() / A0, s:stats().t))

@@ -1,0 +1,71 @@
+/* sph_gas.c: the SPH solver's gas law for bubble particles (sph.gas_law,
+ * #18): each particle's rest density from its contents, a bubble's from the
+ * ideal gas and the dough's water vapour (Rodriguez-Arenas 2011 eq. 3.49-3.50,
+ * and eq. 2.42-2.43, Fan et al.'s bubble in the thesis's review), and the
+ * pressure against it. phase_pressure (sph.c) calls sph_pressure_gas_law in
+ * place of eq. 3.51-3.52 when the scene asks for it; docs/validation.md "SPH
+ * bread roll (#18)" says why. */
+#include <math.h>
+#include <string.h>
+
+#include "material.h"
+#include "params.h"
+#include "sph.h"
+#include "sph_state.h"
+
+/* The gas law's rest density of a bubble particle (sph.gas_law): eq. 3.49,
+ * rho_b = rho0 / V_b, with V_b of eq. 3.50 in absolute temperature (an ideal
+ * gas at the oven's constant pressure; eq. 3.50 in degC would make a bubble at
+ * 0 degC vanish) and, when sph.bubble_vapour (the dough's water activity a_w)
+ * is above 0, the water vapour that joins the bubble's gas as the dough heats
+ * (Fan et al.'s bubble of the thesis's eq. 2.42-2.43: P_b = P_c + P_v with
+ * P_v = a_w P_sat(T) by Clausius-Clapeyron through 100 degC at 101325 Pa,
+ * Delta H_v = 40.66 kJ/mol). At the constant outside pressure P_a the CO2's
+ * partial pressure P_a - P_v holds a fixed number of moles, so
+ *   V_b = V_b0 (T / T0) (P_a - P_v(T0)) / (P_a - P_v(T)),
+ * which grows without bound as P_v nears P_a (the dough's boiling point):
+ * there a real crumb's cells open and vent, so V_b / V_b0 stops at
+ * sph.bubble_vmax. A bubble's rest volume m / rho_b follows its temperature
+ * both ways: it grows while it heats and shrinks as it cools, with no history
+ * to keep (and nothing for a rollback to lose). */
+double sph_bubble_volume(const hearth_sph_def *o, double vb0, double T) {
+    double V = (T + KELVIN) / (o->bubble_T0 + KELVIN); /* eq. 3.50, Kelvin */
+    if (o->bubble_vapour > 0) {                         /* eq. 2.42-2.43 */
+        const double pa = 101325.0, hr = 40660.0 / 8.314462618, tb = 100.0 + KELVIN;
+        const double pv0 = o->bubble_vapour * pa * exp(-hr * (1 / (o->bubble_T0 + KELVIN) - 1 / tb));
+        const double pv = o->bubble_vapour * pa * exp(-hr * (1 / (T + KELVIN) - 1 / tb));
+        V = pv < pa && pv0 < pa ? V * (pa - pv0) / (pa - pv) : HUGE_VAL;
+    }
+    if (!(V < o->bubble_vmax)) V = o->bubble_vmax;
+    return vb0 * V;
+}
+
+/* Pressure with sph.gas_law: the dough's Tait (eq. 3.17) against its rest
+ * density rho0; a bubble's the ideal gas's gauge pressure against the gas
+ * law's rho_b = rho0 / V_b (sph_bubble_volume), B (rho / rho_b - 1) (gamma =
+ * 1, B playing the outside pressure), but never softer than the dough's Tait
+ * against rho0 (a bubble particle holds dough too, which does not compress
+ * below its raw volume). Eq. 3.48 is the same gauge pressure up to its offset:
+ * B (rho/rho0) (rho0/rho_b - 1) = B (rho / rho_b - rho / rho0), positive at
+ * any density, so the bubble pushes as long as it heats, by whatever volume it
+ * has already gained: the roll's top burst. The gas law's pressure vanishes at
+ * the bubble's own volume, so the rise is bounded by the temperature reached.
+ * Tait (gamma 7) against rho_b instead was tried and rejected: a bubble the
+ * dough holds at its raw volume sees B (V_b^7 - 1), 16000 B at V_b = 4, and
+ * blew the crust off the roll. */
+void sph_pressure_gas_law(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    const hearth_sph_def *o = &s->def.sph;
+    const sph_cols c = sph_cols_of(s);
+    const int n = c.n, *mat = c.mat;
+    const double *T = c.T;
+    for (int i = 0; i < n; i++) {
+        const double rho0 = st->rho0[i], bub = s->mats.slot[mat[i]].core[CP_BUBBLE];
+        const double rr = bub > 0 && T ? rho0 / sph_bubble_volume(o, bub, T[i]) : rho0; /* eq. 3.49 */
+        st->rhof[i] = rr;
+        const double tait = st->B[i] * (pow(st->rho[i] / rho0, o->gamma) - 1); /* eq. 3.17 */
+        st->prs[i] = bub > 0 ? fmax(st->B[i] * (st->rho[i] / rr - 1), tait) : tait;
+        if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
+    }
+    if (T) memcpy(st->Tprev, T, sizeof(double) * (size_t)n);
+}

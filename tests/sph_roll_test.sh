@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# sph_roll_test.sh CASE HEARTH SOURCE_ROOT: the SPH bread roll (#18;
+# scripts/scenes/sph/bread_roll.lua, Rodriguez-Arenas 2011 Figs. 4.3-4.4, 4.8)
+# run as a user runs it, measured from its particle positions alone
+# (tests/sph_roll_measure.py: the area of the discs of one raw spacing around
+# the particles, and the pieces linked at two raw spacings).
+#   claim_sph_bread_roll_rises[_fine]      the area's peak over the frames >= 1.3x the raw roll's
+#   claim_sph_bread_roll_one_piece[_fine]  one piece in every frame
+# _fine runs at dx 1.5 mm instead of the scene's 2 mm. Exit 0 pass, 1 fail,
+# 77 expected failure (prints the measured numbers and the cause).
+here=$(cd "$(dirname "$0")" && pwd)
+set -u
+case_name=$1 hearth=$2 root=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp" || exit 1
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+dx=0.002 # the scene's default
+case "$case_name" in *_fine) dx=0.0015 ;; esac
+# 2 s of the 3 s bake: the roll passes 1.3x at 1.6 s (docs/validation.md "SPH bread
+# roll (#18)"), and the hot dough's viscous step makes the last second cost minutes more
+until=2
+"$hearth" run "$root/scripts/scenes/sph/bread_roll.lua" --quiet --set dx=$dx --until $until >out.txt 2>err.txt ||
+    fail "bread_roll dx=$dx: exit $?: $(cat err.txt)"
+cat out.txt
+d=hearth-out/bread_roll
+# every frame (0.1 s apart) against the raw roll: the peak area ratio, and the most pieces
+peak=0 worst=1 at=
+for f in $(ls $d/particles_*.csv | sort); do
+    m=$(python3 "$here/sph_roll_measure.py" $dx $d/particles_0000.csv "$f") || fail "measure $f: $m"
+    read -r _ ratio _ pieces _ share <<<"$m"
+    echo "$(basename "$f"): $m"
+    python3 -c "import sys; sys.exit(0 if $ratio > $peak else 1)" && peak=$ratio
+    [ "$pieces" -gt "$worst" ] && worst=$pieces at="$(basename "$f") (largest piece holds $share of the particles)"
+done
+case "$case_name" in
+claim_sph_bread_roll_rises*)
+    echo "dx $dx: peak area ratio $peak by t = $until s"
+    python3 -c "import sys; sys.exit(0 if $peak >= 1.3 else 1)" && exit 0
+    echo "EXPECTED FAILURE: peak area ratio $peak < 1.3 at dx $dx by t = $until s: the crumb has not got hot enough for its" \
+        "bubbles' gas (sph.gas_law: V_b follows the temperature) to hold 1.3x the raw volume" >&2
+    exit 77
+    ;;
+claim_sph_bread_roll_one_piece*)
+    echo "dx $dx: at most $worst piece(s) over the frames to t = $until s"
+    [ "$worst" = 1 ] && exit 0
+    echo "EXPECTED FAILURE: $worst pieces at dx $dx, the most at $at: the dough films between the expanded bubbles are" \
+        "stretched thinner than a particle spacing and SPH's tensile instability pairs their particles and tears them" >&2
+    exit 77
+    ;;
+*) fail "unknown case $case_name" ;;
+esac
