@@ -30,38 +30,36 @@ mp() {
     timeout 50 mpirun --oversubscribe -n "$n" "$hearth" run "$here/mpi/$scene" --out "$tmp/$out" --quiet "$@"
 }
 
+# against_one SCENE STEPS [--set ...]: the scene on one process and on $ranks
+# ranks; both must take STEPS steps and their states agree to 1e-12 relative.
+against_one() {
+    local scene=$1 steps=$2
+    shift 2
+    "$hearth" run "$here/mpi/$scene" --out "$tmp/one" --quiet "$@" >"$tmp/one.txt" || fail "one-process run failed ($*)"
+    mp "$ranks" many "$scene" "$@" >"$tmp/many.txt" || fail "$ranks-rank run failed (status $?; $*)"
+    cat "$tmp/one.txt" "$tmp/many.txt"
+    grep -q "^steps $steps " "$tmp/many.txt" || fail "the $ranks-rank run did not take $steps steps ($*)"
+    python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 ||
+        fail "$ranks ranks differ from one process by more than 1e-12 ($scene $*)"
+}
+
 case "$base" in
 mpi_elastic_matches_one_rank)
     # the standard elastic block, 100 steps: N ranks against one process
-    "$hearth" run "$here/mpi/elastic_block.lua" --out "$tmp/one" --quiet >"$tmp/one.txt" || fail "one-process run failed"
-    mp "$ranks" many elastic_block.lua >"$tmp/many.txt" || fail "$ranks-rank run failed (status $?)"
-    cat "$tmp/one.txt" "$tmp/many.txt"
-    grep -q "^steps 100 " "$tmp/many.txt" || fail "the $ranks-rank run did not take 100 steps"
-    python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 || fail "$ranks ranks differ from one process by more than 1e-12"
+    against_one elastic_block.lua 100
     ;;
 mpi_dough_matches_one_rank)
     # every field live (heat with the oven, water, evaporation, latent heat, CO2); heat explicit, then the CG solve
     for heat in explicit implicit; do
-        "$hearth" run "$here/mpi/dough.lua" --out "$tmp/one" --quiet --set heat=$heat >"$tmp/one.txt" || fail "one-process run failed ($heat)"
-        mp "$ranks" many dough.lua --set heat=$heat >"$tmp/many.txt" || fail "$ranks-rank run failed ($heat)"
-        cat "$tmp/one.txt" "$tmp/many.txt"
-        grep -q "^steps 100 " "$tmp/many.txt" || fail "the $ranks-rank run did not take 100 steps ($heat)"
-        python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 || fail "$ranks ranks differ from one process ($heat heat)"
+        against_one dough.lua 100 --set heat=$heat
     done
     ;;
 mpi_collider_matches_one_rank)
     # a moving sticky plate (a Lua velocity function), a sticky floor and a grip
-    "$hearth" run "$here/mpi/collider.lua" --out "$tmp/one" --quiet >"$tmp/one.txt" || fail "one-process run failed"
-    mp "$ranks" many collider.lua >"$tmp/many.txt" || fail "$ranks-rank run failed (status $?)"
-    cat "$tmp/one.txt" "$tmp/many.txt"
-    grep -q "^steps 150 " "$tmp/many.txt" || fail "the $ranks-rank run did not take 150 steps"
-    python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 || fail "$ranks ranks differ from one process"
+    against_one collider.lua 150
     ;;
 mpi_elastic_3d_matches_one_rank)
-    "$hearth" run "$here/mpi/elastic_block.lua" --out "$tmp/one" --quiet --set dim=3 >"$tmp/one.txt" || fail "one-process run failed"
-    mp "$ranks" many elastic_block.lua --set dim=3 >"$tmp/many.txt" || fail "$ranks-rank run failed (status $?)"
-    cat "$tmp/one.txt" "$tmp/many.txt"
-    python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 || fail "$ranks ranks differ from one process in 3D"
+    against_one elastic_block.lua 100 --set dim=3
     ;;
 mpi_checkpoint_restores_on_other_ranks)
     # saved by N ranks (N = 2 in the case names); restored on 1 and on 4, as a
