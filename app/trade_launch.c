@@ -75,24 +75,34 @@ int trade_record_read(trade *T, int i) {
     FILE *f = fopen(path, "r");
     if (!f) return -1;
     int have_status = 0;
+    const char *bad = NULL; /* a record comes from a folder someone else may have made: each number in its range */
     while (fgets(line, sizeof line, f)) {
         line[strcspn(line, "\n")] = '\0';
-        char *v = strchr(line, ' ');
+        char *v = strchr(line, ' '), *end;
         if (!v) continue;
         *v++ = '\0';
         if (!strcmp(line, "status")) {
             for (int s = RS_WAIT; s <= RS_CRASH; s++)
                 if (!strcmp(v, trade_state_name[s])) r->st = (run_state)s, have_status = 1;
-        } else if (!strcmp(line, "wall")) r->wall = strtod(v, NULL);
-        else if (!strcmp(line, "steps")) r->steps = strtol(v, NULL, 10);
-        else if (!strcmp(line, "peak_mb")) r->peak_mb = strtod(v, NULL);
-        else if (!strcmp(line, "metric")) r->metric = strtod(v, NULL);
-        else if (!strcmp(line, "note")) snprintf(r->msg, sizeof r->msg, "%s", v);
+        } else if (!strcmp(line, "wall")) {
+            r->wall = strtod(v, &end);
+            if (end == v || !(r->wall >= 0 && r->wall < 1e9)) bad = "wall (0 to 1e9 s)";
+        } else if (!strcmp(line, "steps")) {
+            r->steps = strtol(v, &end, 10);
+            if (end == v || r->steps < -1) bad = "steps (-1 for none, or 0 and up)";
+        } else if (!strcmp(line, "peak_mb")) {
+            r->peak_mb = strtod(v, &end);
+            if (end == v || !(r->peak_mb >= 0 && r->peak_mb < 1e9)) bad = "peak_mb (0 to 1e9 MB)";
+        } else if (!strcmp(line, "metric")) {
+            r->metric = strtod(v, &end);
+            if (end == v || isinf(r->metric)) bad = "metric (a finite number, or nan for none)";
+        } else if (!strcmp(line, "note")) snprintf(r->msg, sizeof r->msg, "%s", v);
     }
     fclose(f);
-    if (!have_status) {
+    if (!have_status || bad) {
         r->st = RS_ERROR;
-        snprintf(r->msg, sizeof r->msg, "unreadable record %.200s", path);
+        r->wall = 0, r->steps = -1, r->peak_mb = 0, r->metric = NAN;
+        snprintf(r->msg, sizeof r->msg, "unreadable record %.200s%s%s", path, bad ? ": bad " : "", bad ? bad : "");
     }
     return 0;
 }

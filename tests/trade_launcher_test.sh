@@ -187,6 +187,19 @@ trade_collect_names_missing_runs)
     [ "$(grep -c ',ok,' moved/trade.csv)" -eq 3 ] || fail "the 3 recorded runs: $(cat moved/trade.csv)"
     grep -q "^ *2 .* error .*left no record" collect.txt || fail "the table names the missing run: $(cat collect.txt)"
     ;;
+trade_collect_refuses_bad_records)
+    # records come from a folder someone else may have made: a number out of its range
+    # or a record of noise makes that run an error naming the file and the field
+    run_local
+    sed -i 's/^wall .*/wall 1e308/' local/runs/001/run.txt
+    head -c 3000 /dev/urandom >local/runs/002/run.txt
+    "$hearth" trade --collect local >collect.txt 2>collect.err
+    [ $? -eq 1 ] || fail "--collect with bad records should exit 1: $(cat collect.err)"
+    grep -q "^ *1 .* error .*unreadable record local/runs/001/run.txt: bad wall (0 to 1e9 s)" collect.txt ||
+        fail "the out-of-range wall time is not named: $(cat collect.txt)"
+    grep -q "^ *2 .* error .*unreadable record local/runs/002/run.txt" collect.txt || fail "the noise record: $(cat collect.txt)"
+    [ "$(grep -c ',ok,' local/trade.csv)" -eq 2 ] || fail "the 2 good runs: $(cat local/trade.csv)"
+    ;;
 trade_launcher_errors)
     # no sbatch / no mpirun on PATH: said before anything runs
     PATH=/nonexistent "$hearth" trade "${ladder[@]}" --launcher slurm --out s >out.txt 2>err.txt
