@@ -49,10 +49,10 @@ hearth_install_deps() {
 # it pulls in about 100 packages (measured on Debian 12), too much for every CI
 # run, and without it hearth only says so and keeps the PNG frames.
 # slurm-wlm and munge (the test trade_slurm_array_matches_local starts its own
-# single-node Slurm) likewise only with HEARTH_WITH_SLURM=1: 7 packages, 3.5 MB,
-# 19 s to install here on Debian 12 (more on an image without Open MPI's hwloc
-# and numa libraries); without them that test skips, as
-# trade_mpi_ranks_match_local does without mpirun (openmpi-bin).
+# single-node Slurm, so a ladder is tested on a real scheduler in CI): 7
+# packages, 3.5 MB, 19 s to install here on Debian 12 (more on an image without
+# Open MPI's hwloc and numa libraries); HEARTH_NO_SLURM=1 skips them, and that
+# test then skips, as trade_mpi_ranks_match_local does without mpirun.
 #
 # MPI (libopenmpi-dev, openmpi-bin: `mpirun -n N hearth run`, the mpi test
 # suite; docs/scaling.md) is installed unless HEARTH_NO_MPI=1: 14 packages,
@@ -68,7 +68,7 @@ hearth_install_optional() {
         command -v mpirun >/dev/null 2>&1 || missing+=(openmpi-bin)
     fi
     if [ "${HEARTH_WITH_FFMPEG:-0}" = 1 ] && ! command -v ffmpeg >/dev/null 2>&1; then missing+=(ffmpeg); fi
-    if [ "${HEARTH_WITH_SLURM:-0}" = 1 ]; then
+    if [ "${HEARTH_NO_SLURM:-0}" != 1 ]; then
         PATH=$PATH:/usr/sbin command -v slurmctld >/dev/null 2>&1 || missing+=(slurm-wlm)
         PATH=$PATH:/usr/sbin command -v munged >/dev/null 2>&1 || missing+=(munge)
     fi

@@ -50,7 +50,7 @@ start_slurm() {
     export PATH=$PATH:/usr/sbin:/sbin # the daemons
     for p in munged slurmctld slurmd sbatch squeue sinfo; do
         command -v "$p" >/dev/null 2>&1 ||
-            skip "no $p: install Debian's slurm-wlm and munge (scripts/setup.sh does with HEARTH_WITH_SLURM=1)"
+            skip "no $p: install Debian's slurm-wlm and munge (scripts/setup.sh does unless HEARTH_NO_SLURM=1)"
     done
     [ "$(id -u)" -eq 0 ] || skip "slurmd must run as root to start job tasks; run as root (as CI does)"
     # munged wants its socket folder and every parent searchable by all
