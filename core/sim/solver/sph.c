@@ -39,9 +39,9 @@
  * order, so a step is deterministic for any thread count. The step's helpers
  * live beside it (sph_state.h shares the state): the viscosity rule and eq.
  * 3.8's renormalisation in sph_viscosity.c, the wall particles in
- * sph_walls.c, the heat rates in sph_heat.c.
+ * sph_walls.c, the heat rates in sph_heat.c, the stable dt in sph_dt.c.
  *
- * dt (sph_stable_dt) is the smallest of CFL (cfl dx / (speed + sound speed),
+ * dt (sph_stable_dt, sph_dt.c) is the smallest of CFL (cfl dx / (speed + sound speed),
  * as MPM, so the guard's checks hold), viscous (dt_viscous rho h^2 / mu),
  * force (dt_force sqrt(h/|a|)) and heat limits.
  *
@@ -832,44 +832,6 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     st->n = n;
     st->valid = 1;
     return HEARTH_OK;
-}
-
-static double sph_stable_dt(const hearth_scene *s) {
-    const hearth_sph_def *o = &s->def.sph;
-    const particles *ps = &s->ps;
-    const int dim = s->def.dim;
-    double c = s->c_max;
-    double dt = INFINITY, pscratch[SCENE_MAX_PARAMS];
-    const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
-    double hmin = INFINITY, numax = 0, rhomin = INFINITY;
-    for (int i = 0; i < ps->n; i++) {
-        const int m = pcoli(ps, PC_MAT)[i];
-        const material_slot *ms = &s->mats.slot[m];
-        const double *p = T ? material_params(&s->mats, &s->ps, m, i, pscratch) : ms->params;
-        const double V0 = pcold(ps, PC_VOL0)[i], h = o->h_factor * (dim == 3 ? cbrt(V0) : sqrt(V0));
-        if (h < hmin) hmin = h;
-        if (p[ms->density_index] < rhomin) rhomin = p[ms->density_index];
-        const int vi = s->sph->visc_index[m]; /* a particle has a material, so the state exists */
-        if (vi >= 0) {
-            const double nu = p[vi] / p[ms->density_index];
-            if (nu > numax) numax = nu;
-        }
-        if (s->step == 0) { /* before the first step the sound speed comes from the materials */
-            plugin_call_enter(ms->m, "wave_speed");
-            const double ci = ms->m->wave_speed(p, ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
-            plugin_call_leave();
-            if (ci > c) c = ci;
-        }
-    }
-    if (!isfinite(hmin)) hmin = s->def.dx;
-    const double sp = s->max_speed + c;
-    if (sp > 0) dt = s->def.cfl * s->def.dx / sp;
-    if (numax > 0) dt = fmin(dt, o->dt_viscous * hmin * hmin / numax);
-    if (s->sph && s->sph->amax > 0) dt = fmin(dt, o->dt_force * sqrt(hmin / s->sph->amax));
-    dt = fmin(dt, sph_heat_stable_dt(s, hmin, rhomin));
-    if (s->def.dt_max > 0 && dt > s->def.dt_max) dt = s->def.dt_max;
-    if (isinf(dt)) dt = s->def.cfl * s->def.dx;
-    return dt * s->dt_scale;
 }
 
 const double *sph_particle_values(const hearth_scene *s, const char *which) {

@@ -113,6 +113,10 @@ void sph_walls_end(hearth_scene *s, double dt);
 /// Release the motion records (with the state).
 void sph_walls_free(struct sph_state *st);
 
+/* ---- sph_dt.c ---- */
+/// The stable dt: CFL, viscous, force and heat limits, dt_max, times dt_scale.
+double sph_stable_dt(const hearth_scene *s);
+
 /* ---- sph_heat.c ---- */
 /// Heat rates dT/dt into st->dT (nothing without the temperature field).
 void sph_heat_rates(hearth_scene *s);
