@@ -46,7 +46,7 @@
 #include "water.h"
 
 double browning_rate(double T, double scale) {
-    const double theta = T + 273.15;
+    const double theta = T + KELVIN;
     if (!(theta > 0)) return 0;
     return scale * BROWNING_K0 * exp(-BROWNING_EA / (BROWNING_R * theta));
 }

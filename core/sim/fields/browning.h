@@ -12,7 +12,8 @@ struct hearth_scene;
 #define BROWNING_DE_INF 52.0
 #define BROWNING_K0 42000.0
 #define BROWNING_EA 64151.0
-#define BROWNING_R 8.314462618
+#include "physics_constants.h"
+#define BROWNING_R R_GAS
 
 /// First-order rate k (1/s) at temperature T (degrees C), times scale
 /// (hearth_scene_def.browning_scale); 0 at or below absolute zero.

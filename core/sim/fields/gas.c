@@ -12,8 +12,7 @@
 
 #include <math.h>
 
-#define R_GAS 8.314462618 /* J/(mol K) */
-#define KELVIN 273.15
+#include "physics_constants.h"
 #define SQRT_PI 1.7724538509055160273
 
 double gas_moles_step(double T0, double T1, double dt, double alpha_g, double R0, double Tr, double dT) {

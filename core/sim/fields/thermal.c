@@ -81,7 +81,7 @@
 #include "mpm.h"
 #include "transport.h"
 
-#define KELVIN 273.15
+#include "physics_constants.h"
 
 /* A heated collider's contact: particles within CONTACT_BAND cells of its face
  * each carry V_p delta(sdf) of its area, delta the hat (2 dx - s) / (2 dx^2) on

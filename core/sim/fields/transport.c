@@ -46,7 +46,7 @@
 #include "scene.h"
 #include "mpm.h"
 
-#define KELVIN 273.15
+#include "physics_constants.h"
 #define FORCE_INLINE static inline __attribute__((always_inline))
 
 FORCE_INLINE int tile_index(const int D, const int base[3], int a, int b, int c) {

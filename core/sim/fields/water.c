@@ -63,7 +63,7 @@
 #include "mpm.h"
 #include "tensor.h"
 
-#define KELVIN 273.15
+#include "physics_constants.h"
 
 void water_init(water_state *w) { *w = (water_state){0}; }
 

@@ -31,7 +31,7 @@
 double sph_bubble_volume(const hearth_sph_def *o, double vb0, double T) {
     double V = (T + KELVIN) / (o->bubble_T0 + KELVIN); /* eq. 3.50, Kelvin */
     if (o->bubble_vapour > 0) {                         /* eq. 2.42-2.43 */
-        const double pa = 101325.0, hr = 40660.0 / 8.314462618, tb = 100.0 + KELVIN;
+        const double pa = 101325.0, hr = 40660.0 / R_GAS, tb = 100.0 + KELVIN;
         const double pv0 = o->bubble_vapour * pa * exp(-hr * (1 / (o->bubble_T0 + KELVIN) - 1 / tb));
         const double pv = o->bubble_vapour * pa * exp(-hr * (1 / (T + KELVIN) - 1 / tb));
         V = pv < pa && pv0 < pa ? V * (pa - pv0) / (pa - pv) : HUGE_VAL;

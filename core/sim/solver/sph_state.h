@@ -9,7 +9,7 @@
 #include "sph.h"
 #include "sph_neighbours.h"
 
-#define KELVIN 273.15
+#include "physics_constants.h"
 
 /* A fixed body's prescribed rigid motion (sph_walls.c): velocity and omega
  * (constants, or motion(t) at the start of each step) about a pivot that
