@@ -390,10 +390,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
             pcold(ps, PC_X)[3 * j + d] = d < s->def.dim ? x[3 * i + d] : 0.0;
             pcold(ps, PC_V)[3 * j + d] = v && d < s->def.dim ? v[3 * i + d] : 0.0;
         }
-        memset(pcold(ps, PC_C) + 9 * j, 0, 9 * sizeof(double));
-        double *F = pcold(ps, PC_F) + 9 * j;
-        memset(F, 0, 9 * sizeof(double));
-        F[0] = F[4] = F[8] = 1.0;
+        particles_tensors_rest(ps, j, 1); /* C = 0, F = I */
         pcold(ps, PC_MASS)[j] = rho * volume;
         pcold(ps, PC_VOL0)[j] = volume;
         pcoli(ps, PC_MAT)[j] = material;
