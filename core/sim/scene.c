@@ -217,6 +217,8 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
     s->rng = d.seed ? d.seed : 1;
     particles_init(&s->ps);
     particles_init(&s->snap);
+    /* 2D MPM keeps C and F as 2x2 blocks (tensor2.h); SPH's 2D step works on 3x3 ones */
+    s->ps.t2 = s->snap.t2 = d.dim == 2 && d.solver == HEARTH_SOLVER_MPM;
     /* a solver that never transfers to the grid still seeds on its lattice */
     if ((sv->uses_grid ? grid_init : grid_init_geometry)(&s->g, d.dim, d.dx, glo, ghi, err)) {
         mem_free(s, sizeof *s);
