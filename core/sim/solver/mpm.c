@@ -218,10 +218,14 @@ static void record_fail(pb_partial *pp, int i, fail_kind kind, int code) {
     }
 }
 
-static int all_finite(const double *a, int n) {
-    for (int k = 0; k < n; k++)
-        if (!isfinite(a[k])) return 0;
-    return 1;
+/* Whether every a[k] is finite, with one test instead of one per value: x - x
+ * is +0 for a finite x and NaN for an infinite or NaN one, so the sum is 0
+ * exactly when all are (the compiler may not fold x - x to 0 without
+ * -ffinite-math-only). 5 instructions a particle-step fewer in 2D (callgrind). */
+FORCE_INLINE int all_finite(const double *a, const int n) {
+    double z = 0.0;
+    for (int k = 0; k < n; k++) z += a[k] - a[k];
+    return z == 0.0;
 }
 
 /* P2G's tile holds only the channels it writes: momentum, then heat, then
@@ -392,42 +396,44 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
         if (HEAT || WATER) vol[i] = vi; /* for transport.c, water_take and the volume channel */
         /* water mass and capacity rho_0^w J V_0 (eq. 15, 18) */
         const double mw = WATER ? Wcol[i] : 0.0, cap = WATER ? s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * J * V0[i] : 0.0;
+        /* the stencil's corner in the tile: the 3^dim nodes then sit at constant offsets from it */
+        double *const tp = tile + (D == 2 ? base[0] * GRID_T + base[1] : (base[0] * GRID_T + base[1]) * GRID_T + base[2]);
         for (int a = 0; a < 3; a++) {
             /* the volume weighs in as (V w_a) w_b w_c, the order of the pass it replaced: the same bits */
             const double d0 = (a - fx[0]) * dx, va = vi * w[0][a];
             for (int b = 0; b < 3; b++) {
                 const double d1 = (b - fx[1]) * dx, wab = w[0][a] * w[1][b], vab = va * w[1][b];
                 if (D == 2) {
-                    const int t = (base[0] + a) * GRID_T + (base[1] + b);
-                    tile[t] += wab * m;
-                    tile[TN + t] += wab * (mv0 + Q[0] * d0 + Q[1] * d1);
-                    tile[2 * TN + t] += wab * (mv1 + Q[3] * d0 + Q[4] * d1);
+                    const int t = a * GRID_T + b;
+                    tp[t] += wab * m;
+                    tp[TN + t] += wab * (mv0 + Q[0] * d0 + Q[1] * d1);
+                    tp[2 * TN + t] += wab * (mv1 + Q[3] * d0 + Q[4] * d1);
                     if (HEAT) {
-                        tile[P2G_HC * TN + t] += wab * hc;
-                        tile[P2G_T * TN + t] += wab * hct;
+                        tp[P2G_HC * TN + t] += wab * hc;
+                        tp[P2G_T * TN + t] += wab * hct;
                     }
                     if (WATER) {
-                        tile[P2G_MW * TN + t] += wab * mw;
-                        tile[P2G_SW * TN + t] += wab * cap;
+                        tp[P2G_MW * TN + t] += wab * mw;
+                        tp[P2G_SW * TN + t] += wab * cap;
                     }
-                    if (HEAT || WATER) tile[P2G_V * TN + t] += vab;
+                    if (HEAT || WATER) tp[P2G_V * TN + t] += vab;
                 } else {
                     for (int c = 0; c < 3; c++) {
                         const double d2 = (c - fx[2]) * dx, wt = wab * w[2][c];
-                        const int t = ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + c);
-                        tile[t] += wt * m;
-                        tile[TN + t] += wt * (mv0 + Q[0] * d0 + Q[1] * d1 + Q[2] * d2);
-                        tile[2 * TN + t] += wt * (mv1 + Q[3] * d0 + Q[4] * d1 + Q[5] * d2);
-                        tile[3 * TN + t] += wt * (mv2 + Q[6] * d0 + Q[7] * d1 + Q[8] * d2);
+                        const int t = (a * GRID_T + b) * GRID_T + c;
+                        tp[t] += wt * m;
+                        tp[TN + t] += wt * (mv0 + Q[0] * d0 + Q[1] * d1 + Q[2] * d2);
+                        tp[2 * TN + t] += wt * (mv1 + Q[3] * d0 + Q[4] * d1 + Q[5] * d2);
+                        tp[3 * TN + t] += wt * (mv2 + Q[6] * d0 + Q[7] * d1 + Q[8] * d2);
                         if (HEAT) {
-                            tile[P2G_HC * TN + t] += wt * hc;
-                            tile[P2G_T * TN + t] += wt * hct;
+                            tp[P2G_HC * TN + t] += wt * hc;
+                            tp[P2G_T * TN + t] += wt * hct;
                         }
                         if (WATER) {
-                            tile[P2G_MW * TN + t] += wt * mw;
-                            tile[P2G_SW * TN + t] += wt * cap;
+                            tp[P2G_MW * TN + t] += wt * mw;
+                            tp[P2G_SW * TN + t] += wt * cap;
                         }
-                        if (HEAT || WATER) tile[P2G_V * TN + t] += vab * w[2][c];
+                        if (HEAT || WATER) tp[P2G_V * TN + t] += vab * w[2][c];
                     }
                 }
             }
@@ -664,15 +670,17 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             bspline_weights(fx[d], w[d], dw);
         }
         double nv[3] = {0, 0, 0}, B[9] = {0}, dT = 0, Tn = 0, ds = 0; /* 2D sums B's in-plane entries 0, 1, 3, 4 */
+        /* the stencil's corner in the tile: the 3^dim nodes then sit at constant offsets from it */
+        const double *const tp = tile + (D == 2 ? base[0] * GRID_T + base[1] : (base[0] * GRID_T + base[1]) * GRID_T + base[2]);
         for (int a = 0; a < 3; a++) {
             const double d0 = (a - fx[0]) * dx;
             for (int b = 0; b < 3; b++) {
                 const double d1 = (b - fx[1]) * dx, wab = w[0][a] * w[1][b];
                 if (D == 2) {
-                    const int t = (base[0] + a) * GRID_T + (base[1] + b);
-                    const double u0 = tile[t], u1 = tile[TN + t];
-                    if (HEAT) dT += wab * tile[3 * TN + t], Tn += wab * tile[4 * TN + t];
-                    if (WATER) ds += wab * tile[5 * TN + t];
+                    const int t = a * GRID_T + b;
+                    const double u0 = tp[t], u1 = tp[TN + t];
+                    if (HEAT) dT += wab * tp[3 * TN + t], Tn += wab * tp[4 * TN + t];
+                    if (WATER) ds += wab * tp[5 * TN + t];
                     nv[0] += wab * u0;
                     nv[1] += wab * u1;
                     B[0] += wab * u0 * d0; B[1] += wab * u0 * d1;
@@ -680,10 +688,10 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                 } else {
                     for (int c = 0; c < 3; c++) {
                         const double d2 = (c - fx[2]) * dx, wt = wab * w[2][c];
-                        const int t = ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + c);
-                        const double u0 = tile[t], u1 = tile[TN + t], u2 = tile[2 * TN + t];
-                        if (HEAT) dT += wt * tile[3 * TN + t], Tn += wt * tile[4 * TN + t];
-                        if (WATER) ds += wt * tile[5 * TN + t];
+                        const int t = (a * GRID_T + b) * GRID_T + c;
+                        const double u0 = tp[t], u1 = tp[TN + t], u2 = tp[2 * TN + t];
+                        if (HEAT) dT += wt * tp[3 * TN + t], Tn += wt * tp[4 * TN + t];
+                        if (WATER) ds += wt * tp[5 * TN + t];
                         nv[0] += wt * u0; nv[1] += wt * u1; nv[2] += wt * u2;
                         B[0] += wt * u0 * d0; B[1] += wt * u0 * d1; B[2] += wt * u0 * d2;
                         B[3] += wt * u1 * d0; B[4] += wt * u1 * d1; B[5] += wt * u1 * d2;
