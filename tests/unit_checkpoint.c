@@ -557,5 +557,5 @@ TEST(checkpoint_alloc_failures) {
 
 TEST_MAIN(T(checkpoint_v4_roundtrip), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
           T(checkpoint_bitflip_campaign), T(checkpoint_resealed_flips), T(checkpoint_crafted_fields),
-          T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_count_before_alloc), T(checkpoint_not_regular_file),
-          T(checkpoint_alloc_failures))
+          T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_count_before_alloc),
+          T(checkpoint_not_regular_file), T(checkpoint_alloc_failures))
