@@ -434,6 +434,45 @@ TEST(checkpoint_old_version) {
     hearth_scene_destroy(s);
 }
 
+/* A 2D MPM store keeps C and F as 2x2 blocks (tensor2.h), saved as "C_xy"
+ * and "F_xy". A 2D checkpoint from before (the 9-component "C" and "F",
+ * rebuilt here from a new save: the same values, embedded) is refused with
+ * a message that says why, not read as misaligned columns. */
+TEST(checkpoint_2d_old_tensors_refused) {
+    hearth_scene *s = small_scene();
+    CHECK(s && s->def.dim == 2 && s->ps.t2);
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    const size_t np = (size_t)hearth_scene_particle_count(s);
+    const size_t at = find(img, n, "\4\0\0\0C_xy", 8);
+    CHECK(at != (size_t)-1 && at + 2 * (8 + 32 * np) <= n);
+    CHECK(memcmp(img + at + 8 + 32 * np, "\4\0\0\0F_xy", 8) == 0);
+    const size_t rest = at + 2 * (8 + 32 * np), m = at + 2 * (5 + 72 * np) + (n - rest);
+    uint8_t *b = malloc(m), *o = b;
+    memcpy(o, img, at), o += at;
+    for (int t = 0; t < 2; t++) {
+        const uint32_t len = 1;
+        memcpy(o, &len, 4), o += 4;
+        *o++ = t ? 'F' : 'C';
+        for (size_t i = 0; i < np; i++) {
+            double a[4], e[9];
+            memcpy(a, img + at + t * (8 + 32 * np) + 8 + 32 * i, sizeof a);
+            t2_embed(a, t ? 1.0 : 0.0, e);
+            memcpy(o, e, sizeof e), o += sizeof e;
+        }
+    }
+    memcpy(o, img + rest, n - rest);
+    ck_reseal(b, m);
+    hearth_error err;
+    CHECK(hearth_scene_load_mem(b, m, "old2d.ck", &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "old2d.ck");
+    CHECK_STR_CONTAINS(err.msg, "before the 2x2 particle store");
+    printf("  refused: %s\n", err.msg);
+    free(b);
+    free(img);
+    hearth_scene_destroy(s);
+}
+
 /* A 2^31 particle count in a small file allocates nothing large: refused
  * before the columns are reserved. An allocator that records the largest
  * request watches the load. */
@@ -518,5 +557,5 @@ TEST(checkpoint_alloc_failures) {
 
 TEST_MAIN(T(checkpoint_v4_roundtrip), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
           T(checkpoint_bitflip_campaign), T(checkpoint_resealed_flips), T(checkpoint_crafted_fields),
-          T(checkpoint_old_version), T(checkpoint_count_before_alloc), T(checkpoint_not_regular_file),
-          T(checkpoint_alloc_failures))
+          T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_count_before_alloc),
+          T(checkpoint_not_regular_file), T(checkpoint_alloc_failures))

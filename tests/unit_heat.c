@@ -374,8 +374,7 @@ TEST(thermal_expansion) {
         if (s->t < 0.5) continue;
         double J = 0;
         for (int i = 0; i < s->ps.n; i++) {
-            const double *F = pcold(&s->ps, PC_F) + 9 * i;
-            J += F[0] * F[4] - F[1] * F[3];
+            J += particles_J(&s->ps, i);
         }
         sum += J / s->ps.n;
         samples++;

@@ -53,8 +53,9 @@ static void momenta(const hearth_scene *s, double mass_mom[4], double L[3], int 
     memset(L, 0, 3 * sizeof(double));
     const double Dk = 0.25 * s->def.dx * s->def.dx;
     for (int i = 0; i < ps->n; i++) {
-        const double m = pcold(ps, PC_MASS)[i], *x = pcold(ps, PC_X) + 3 * i, *v = pcold(ps, PC_V) + 3 * i,
-                     *C = pcold(ps, PC_C) + 9 * i;
+        const double m = pcold(ps, PC_MASS)[i], *x = pcold(ps, PC_X) + 3 * i, *v = pcold(ps, PC_V) + 3 * i;
+        double C[9];
+        particles_C3(ps, i, C); /* a 2D store's 2x2 block, embedded */
         mass_mom[0] += m;
         for (int d = 0; d < 3; d++) mass_mom[1 + d] += m * v[d];
         L[0] += m * (x[1] * v[2] - x[2] * v[1]);
@@ -108,7 +109,8 @@ static void conservation(int dim) {
     hearth_error err;
     CHECK(hearth_scene_add_particles(s, mat, n, x, v, 1e-4, &err) == n);
     for (int i = 0; i < n; i++)
-        for (int a = 0; a < 9; a++) pcold(&s->ps, PC_C)[9 * i + a] = (dim == 3 || (a % 3 < 2 && a < 6)) ? 4 * (urand() - 0.5) : 0;
+        for (int a = 0; a < particles_tn(&s->ps); a++) /* 2D: the in-plane 2x2 only (tensor2.h) */
+            pcold(&s->ps, PC_C)[particles_tn(&s->ps) * i + a] = 4 * (urand() - 0.5);
     double P0[4], L0[3], Pg[4], Lg[3], P1[4], L1[3];
     momenta(s, P0, L0, 1);
     CHECK(mpm_sort(s, &err) == HEARTH_OK);
@@ -144,7 +146,8 @@ TEST(transfer_conservation_3d) { conservation(3); }
 static double neo_hookean_energy(const hearth_scene *s, double mu, double lam) {
     double E = 0;
     for (int i = 0; i < s->ps.n; i++) {
-        const double *F = pcold(&s->ps, PC_F) + 9 * i;
+        double F[9];
+        particles_F3(&s->ps, i, F);
         double tr = 0;
         for (int a = 0; a < 9; a++) tr += F[a] * F[a];
         const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
@@ -176,9 +179,10 @@ TEST(transfer_pic_dissipates) {
         const int n = hearth_scene_seed_shape(s, mat, disc, 4, 0.0, NULL, &err);
         hearth_shape_free(disc);
         for (int i = 0; i < n; i++) {
-            double *x = pcold(&s->ps, PC_X) + 3 * i, *v = pcold(&s->ps, PC_V) + 3 * i, *C = pcold(&s->ps, PC_C) + 9 * i;
+            const int tn = particles_tn(&s->ps); /* C_xy at 1, C_yx at 2 of a 2D store's 2x2 (3 of a 3x3) */
+            double *x = pcold(&s->ps, PC_X) + 3 * i, *v = pcold(&s->ps, PC_V) + 3 * i, *C = pcold(&s->ps, PC_C) + tn * i;
             v[0] = -10 * (x[1] - 0.5), v[1] = 10 * (x[0] - 0.5);
-            C[1] = -10, C[3] = 10;
+            C[1] = -10, C[tn == 4 ? 2 : 3] = 10;
         }
         s->max_speed = 1.5;
         double P[4], L0[3], L[3];
@@ -210,11 +214,12 @@ TEST(rotating_disc) {
     hearth_shape_free(disc);
     CHECK(n > 1000);
     for (int i = 0; i < n; i++) { /* rigid rotation: v = w x r, C = grad v */
-        double *x = pcold(&s->ps, PC_X) + 3 * i, *v = pcold(&s->ps, PC_V) + 3 * i, *C = pcold(&s->ps, PC_C) + 9 * i;
+        const int tn = particles_tn(&s->ps); /* C_xy at 1, C_yx at 2 of a 2D store's 2x2 (3 of a 3x3) */
+        double *x = pcold(&s->ps, PC_X) + 3 * i, *v = pcold(&s->ps, PC_V) + 3 * i, *C = pcold(&s->ps, PC_C) + tn * i;
         v[0] = -w * (x[1] - 0.5);
         v[1] = w * (x[0] - 0.5);
         C[1] = -w;
-        C[3] = w;
+        C[tn == 4 ? 2 : 3] = w;
     }
     s->max_speed = w * 0.15;
     const double mu = E / (2 * (1 + nu)), lam = E * nu / ((1 + nu) * (1 - 2 * nu));
@@ -307,7 +312,7 @@ TEST(vibrating_bar) {
     for (int i = 0; i < n; i++) {
         double x = pcold(&s->ps, PC_X)[3 * i];
         pcold(&s->ps, PC_V)[3 * i] = 0.1 * sin(PI * x / (2 * Lb));
-        pcold(&s->ps, PC_C)[0 + 9 * i] = 0.1 * PI / (2 * Lb) * cos(PI * x / (2 * Lb));
+        pcold(&s->ps, PC_C)[0 + particles_tn(&s->ps) * i] = 0.1 * PI / (2 * Lb) * cos(PI * x / (2 * Lb));
     }
     s->max_speed = 0.1;
     const double p[3] = {0, 0, 0}, nrm[3] = {1, 0, 0};
@@ -602,8 +607,9 @@ TEST(probe_fields) {
     CHECK_NEAR(slice[15 * 40 + 20], 0.3, 1e-12);
     /* compressing the block gives a positive pressure and J < 1 */
     for (int i = 0; i < s->ps.n; i++) {
-        double *F = pcold(&s->ps, PC_F) + 9 * i;
-        F[0] = F[4] = 0.95;
+        const int tn = particles_tn(&s->ps); /* F_yy at 3 of a 2D store's 2x2 (4 of a 3x3) */
+        double *F = pcold(&s->ps, PC_F) + tn * i;
+        F[0] = F[tn == 4 ? 3 : 4] = 0.95;
     }
     CHECK(hearth_probe_point(s, "pressure", c, val, &err) == HEARTH_OK);
     CHECK(val[0] > 0);
@@ -627,7 +633,7 @@ TEST(stress_tensor_components) {
     const double c[3] = {0.5, 0.5, 0}, h[3] = {0.2, 0.2, 0}, v0[3] = {0, 0, 0};
     fx_box(s, m, c, h, 4, v0);
     for (int i = 0; i < s->ps.n; i++) {
-        double *F = pcold(&s->ps, PC_F) + 9 * i;
+        double *F = pcold(&s->ps, PC_F) + particles_tn(&s->ps) * i; /* F_xx, F_xy: 0 and 1 in a 2x2 and a 3x3 */
         F[0] = 1 + e;
         F[1] = g;
     }
@@ -1018,7 +1024,7 @@ static double cantilever_tip(int cells) {
         const double f = exp(-a * (s->t - t0));
         double *V = pcold(&s->ps, PC_V), *C = pcold(&s->ps, PC_C);
         for (int i = 0; i < 3 * s->ps.n; i++) V[i] *= f;
-        for (int i = 0; i < 9 * s->ps.n; i++) C[i] *= f;
+        for (int i = 0; i < particles_tn(&s->ps) * s->ps.n; i++) C[i] *= f;
     }
     double x1, y1;
     tip_mean(s, L, dx, &x1, &y1);
@@ -1084,7 +1090,7 @@ static double column_base(int cells, double *interior, double *row1) {
         const double f = exp(-a * (s->t - t0));
         double *V = pcold(&s->ps, PC_V), *C = pcold(&s->ps, PC_C);
         for (int i = 0; i < 3 * s->ps.n; i++) V[i] *= f;
-        for (int i = 0; i < 9 * s->ps.n; i++) C[i] *= f;
+        for (int i = 0; i < particles_tn(&s->ps) * s->ps.n; i++) C[i] *= f;
     }
     const double ref = rho * g * H / 3;
     double p = NAN, pm = NAN;
@@ -1159,7 +1165,7 @@ static double shear_wave(int cells, int *n_out) {
     double *X = pcold(&s->ps, PC_X), *V = pcold(&s->ps, PC_V), *C = pcold(&s->ps, PC_C);
     for (int i = 0; i < s->ps.n; i++) { /* the wave and its velocity gradient (APIC's C) */
         V[3 * i] = U * sin(k * X[3 * i + 1]);
-        C[9 * i + 1] = U * k * cos(k * X[3 * i + 1]);
+        C[particles_tn(&s->ps) * i + 1] = U * k * cos(k * X[3 * i + 1]); /* C_xy: 1 in a 2x2 and a 3x3 */
     }
     if (hearth_scene_advance(s, T, &err) != HEARTH_OK) {
         fprintf(stderr, "%s\n", err.msg);
@@ -1214,7 +1220,8 @@ TEST(mpm_periodic_conserves_momentum) {
     for (int i = 0; i < s->ps.n; i++) { /* and a spin of 5 rad/s about the centre */
         V[3 * i] -= 5 * (X[3 * i + 1] - c[1]);
         V[3 * i + 1] += 5 * (X[3 * i] - c[0]);
-        C[9 * i + 1] = -5, C[9 * i + 3] = 5;
+        const int tn = particles_tn(&s->ps); /* C_xy at 1, C_yx at 2 of a 2D store's 2x2 (3 of a 3x3) */
+        C[tn * i + 1] = -5, C[tn * i + (tn == 4 ? 2 : 3)] = 5;
     }
     double p0[2] = {0, 0};
     const double *M = pcold(&s->ps, PC_MASS);

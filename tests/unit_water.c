@@ -594,7 +594,7 @@ static int drying_block(int momentum, int nsamples, int every, double *vol, doub
     for (int k = 0; ok && k < nsamples; k++) {
         ok = hearth_scene_step(s, every, &err) == HEARTH_OK;
         double v = 0;
-        for (int i = 0; i < s->ps.n; i++) v += pcold(&s->ps, PC_VOL0)[i] * t3_det(pcold(&s->ps, PC_F) + 9 * i);
+        for (int i = 0; i < s->ps.n; i++) v += pcold(&s->ps, PC_VOL0)[i] * particles_J(&s->ps, i);
         vol[k] = v;
         hearth_stats st;
         hearth_scene_stats(s, &st);

@@ -149,7 +149,7 @@ hearth_status hearth_scene_body_set_velocity(hearth_scene *s, int body, const do
     for (int i = 0; i < s->ps.n; i++) {
         if (pcoli(&s->ps, PC_BODY)[i] != body) continue;
         for (int d = 0; d < s->def.dim; d++) pcold(&s->ps, PC_V)[3 * i + d] = v[d];
-        memset(pcold(&s->ps, PC_C) + 9 * i, 0, 9 * sizeof(double)); /* a push is a uniform motion */
+        particles_tensors_rest(&s->ps, i, 0); /* a push is a uniform motion: C = 0 */
     }
     if (sp > s->max_speed) s->max_speed = sp; /* the next dt must respect the new speed */
     /* the kinetic energy changed by decree, not by a runaway: the guard's reference moves with it */

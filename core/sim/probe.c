@@ -140,8 +140,8 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
     const int m = pcoli(ps, PC_MAT)[i];
     const material_slot *ms = &s->mats.slot[m];
     hearth_point pt;
-    memcpy(pt.grad_v, pcold(ps, PC_C) + 9 * i, sizeof pt.grad_v);
-    memcpy(pt.F, pcold(ps, PC_F) + 9 * i, sizeof pt.F);
+    particles_C3(ps, i, pt.grad_v);
+    particles_F3(ps, i, pt.F);
     pt.dt = 0;
     double pscratch[SCENE_MAX_PARAMS];
     pt.p = material_params(&s->mats, &s->ps, m, i, pscratch);
@@ -167,7 +167,7 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
 
 static void particle_value(const hearth_scene *s, int f, int i, double *out, double *state_copy) {
     const particles *ps = &s->ps;
-    const double *v = pcold(ps, PC_V) + 3 * i, *F = pcold(ps, PC_F) + 9 * i;
+    const double *v = pcold(ps, PC_V) + 3 * i, J = particles_J(ps, i);
     if (f == F_DENSITY || f == F_PRESSURE) { /* SPH: the summed density (eq. 3.13) and the Tait pressure that move it */
         const double *sv = solver_values(s, f == F_DENSITY ? "density" : "pressure");
         if (sv) {
@@ -179,8 +179,8 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_VELOCITY: memcpy(out, v, 3 * sizeof(double)); break;
     case F_VX: case F_VY: case F_VZ: out[0] = v[f - F_VX]; break;
     case F_SPEED: out[0] = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); break;
-    case F_DENSITY: out[0] = pcold(ps, PC_MASS)[i] / (pcold(ps, PC_VOL0)[i] * t3_det(F)); break;
-    case F_J: out[0] = t3_det(F); break;
+    case F_DENSITY: out[0] = pcold(ps, PC_MASS)[i] / (pcold(ps, PC_VOL0)[i] * J); break;
+    case F_J: out[0] = J; break;
     case F_TEMPERATURE: out[0] = pcold(ps, PC_TEMPERATURE)[i]; break;
     case F_BOUNDARY: out[0] = (pcoli(ps, PC_FLAGS)[i] & PF_BOUNDARY) ? 1.0 : 0.0; break;
     case F_GAS: out[0] = pcold(ps, PC_GAS)[i]; break;
@@ -189,7 +189,7 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
         out[0] = pcoli(ps, PC_MAT)[i] == s->mix.mat ? pcold(ps, PC_MIXD)[8 * i] : NAN;
         break;
     case F_WATER_MASS: /* as a density: water mass over the particle's current volume */
-        out[0] = pcold(ps, PC_WATER)[i] / (pcold(ps, PC_VOL0)[i] * t3_det(F));
+        out[0] = pcold(ps, PC_WATER)[i] / (pcold(ps, PC_VOL0)[i] * J);
         break;
     case F_WATER_PRESSURE: /* p^w = c (s - s_0), compression positive (eq. 14) */
         out[0] = s->mats.slot[pcoli(ps, PC_MAT)[i]].core[CP_WATER_STIFFNESS] * (water_saturation(s, i) - pcold(ps, PC_SAT0)[i]);
@@ -221,13 +221,12 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
             plugin_call_leave();
         }
         const double np = gas_porosity(JP, ms->core[CP_POROSITY0]);
-        out[0] = f == F_POROSITY ? np : -gas_tau(pcold(ps, PC_GAS)[i], pcold(ps, PC_TEMPERATURE)[i], np) / t3_det(F);
+        out[0] = f == F_POROSITY ? np : -gas_tau(pcold(ps, PC_GAS)[i], pcold(ps, PC_TEMPERATURE)[i], np) / J;
         break;
     }
     default: {
         double tau[9];
         particle_stress(s, i, tau, state_copy);
-        const double J = t3_det(F);
         double sig[9];
         for (int k = 0; k < 9; k++) sig[k] = tau[k] / J;
         const double p = -(sig[0] + sig[4] + sig[8]) / 3.0;
@@ -305,7 +304,7 @@ static hearth_status splat(const hearth_scene *s, int f, const lattice *L, doubl
         if (a0 > a1 || b0 > b1) continue;
         double val[9];
         int have = 0;
-        const double m = pcold(ps, PC_MASS)[i], V = pcold(ps, PC_VOL0)[i] * t3_det(pcold(ps, PC_F) + 9 * i);
+        const double m = pcold(ps, PC_MASS)[i], V = pcold(ps, PC_VOL0)[i] * particles_J(ps, i);
         for (int a = a0; a <= a1; a++)
             for (int b = b0; b <= b1; b++) {
                 double w = 1;
@@ -383,6 +382,6 @@ hearth_status hearth_probe_slice(const hearth_scene *s, const char *field, int a
 double hearth_scene_volume(const hearth_scene *s) {
     const particles *ps = &s->ps;
     double v = 0;
-    for (int i = 0; i < ps->n; i++) v += pcold(ps, PC_VOL0)[i] * t3_det(pcold(ps, PC_F) + 9 * i);
+    for (int i = 0; i < ps->n; i++) v += pcold(ps, PC_VOL0)[i] * particles_J(ps, i);
     return v;
 }

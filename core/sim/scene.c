@@ -217,6 +217,8 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
     s->rng = d.seed ? d.seed : 1;
     particles_init(&s->ps);
     particles_init(&s->snap);
+    /* 2D MPM keeps C and F as 2x2 blocks (tensor2.h); SPH's 2D step works on 3x3 ones */
+    s->ps.t2 = s->snap.t2 = d.dim == 2 && d.solver == HEARTH_SOLVER_MPM;
     /* a solver that never transfers to the grid still seeds on its lattice */
     if ((sv->uses_grid ? grid_init : grid_init_geometry)(&s->g, d.dim, d.dx, glo, ghi, err)) {
         mem_free(s, sizeof *s);
@@ -390,10 +392,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
             pcold(ps, PC_X)[3 * j + d] = d < s->def.dim ? x[3 * i + d] : 0.0;
             pcold(ps, PC_V)[3 * j + d] = v && d < s->def.dim ? v[3 * i + d] : 0.0;
         }
-        memset(pcold(ps, PC_C) + 9 * j, 0, 9 * sizeof(double));
-        double *F = pcold(ps, PC_F) + 9 * j;
-        memset(F, 0, 9 * sizeof(double));
-        F[0] = F[4] = F[8] = 1.0;
+        particles_tensors_rest(ps, j, 1); /* C = 0, F = I */
         pcold(ps, PC_MASS)[j] = rho * volume;
         pcold(ps, PC_VOL0)[j] = volume;
         pcoli(ps, PC_MAT)[j] = material;

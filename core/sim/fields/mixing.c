@@ -58,7 +58,7 @@ hearth_status mixing_update(hearth_scene *s, hearth_error *err) {
         s->mix.cap = need * 2;
     }
     memset(s->mix.nodes, 0, sizeof(double) * need);
-    const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0), *Fc = pcold(ps, PC_F), *A0 = pcold(ps, PC_MIX);
+    const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0), *A0 = pcold(ps, PC_MIX);
     double *A = pcold(ps, PC_MIXD);
     const int *mat = pcoli(ps, PC_MAT), mm = s->mix.mat;
     const int par = ps->n >= SCENE_PARALLEL_MIN;
@@ -79,7 +79,7 @@ hearth_status mixing_update(hearth_scene *s, hearth_error *err) {
                     if (mat[i] != mm) continue;
                     any = 1;
                     grid_tile_stencil(g, bc, X + 3 * i, &st);
-                    const double Vp = V0[i] * t3_det(Fc + 9 * i);
+                    const double Vp = V0[i] * particles_J(ps, i);
                     for (int j = 0; j < st.n; j++) {
                         const double vw = Vp * st.w[j];
                         tile[k * TN + st.t[j]] += vw;

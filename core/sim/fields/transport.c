@@ -137,7 +137,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
     double *tin = tile + T_IN * TN, *tout = tile + T_OUT * TN, *tsrc = tile + T_SRC * TN;
     double *sat = tile + T_SAT * TN, *dm = tile + T_DM * TN, *dp = tile + T_DP * TN;
 
-    const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0), *Cc = pcold(ps, PC_C);
+    const double *X = pcold(ps, PC_X), *V0 = pcold(ps, PC_VOL0);
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     const double *V = WATER ? pcold(ps, PC_V) : NULL, *W = WATER ? pcold(ps, PC_WATER) : NULL;
     double *Q = mom ? pcold(ps, PC_QW) : NULL; /* kept only for the momentum coupling */
@@ -170,7 +170,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
             if (SRC) {
                 source = bnd ? bcoef * s->heat.bnd_temp[i] : 0.0;
                 const double cl = ms->core[CP_EXPANSION];
-                if (cl > 0) source -= V0[i] * cl * (T[i] + KELVIN) * (Cc[9 * i] + Cc[9 * i + 4] + Cc[9 * i + 8]);
+                if (cl > 0) source -= V0[i] * cl * (T[i] + KELVIN) * particles_trC(ps, i);
             }
         }
         double qn[3] = {0, 0, 0}, evap = 0;

@@ -86,7 +86,7 @@ int water_material_wants(const hearth_scene *s, int mat) {
 static double capacity(const hearth_scene *s, int i) { /* rho_0^w J V_0: water mass at saturation 1 */
     const particles *ps = &s->ps;
     const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
-    return ms->core[CP_WATER_DENSITY] * t3_det(pcold(ps, PC_F) + 9 * i) * pcold(ps, PC_VOL0)[i];
+    return ms->core[CP_WATER_DENSITY] * particles_J(ps, i) * pcold(ps, PC_VOL0)[i];
 }
 
 double water_saturation(const hearth_scene *s, int i) { return pcold(&s->ps, PC_WATER)[i] / capacity(s, i); }

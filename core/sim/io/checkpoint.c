@@ -297,7 +297,7 @@ static void put_particles(ck_out *o, const hearth_scene *s) {
     put_u32(o, ps->enabled);
     for (int c = 0; c < PC_COUNT; c++) {
         if (!(ps->enabled & (1u << c))) continue;
-        put_str(o, particles_col_name(c));
+        put_str(o, particles_col_label(ps, c)); /* a 2x2 store's C and F by their own names */
         if (ps->col[c]) put(o, ps->col[c], particles_col_bytes(ps, c) * (size_t)ps->n);
     }
     put(o, "HASH", 4);
@@ -665,7 +665,12 @@ static int get_particles(ck_cursor *c, hearth_scene *s, hearth_error *err) {
         char cname[CK_MAX_NAME];
         get_str(c, cname, sizeof cname, "a particle column name is too long");
         if (c->bad) return -1;
-        if (strcmp(cname, particles_col_name(k)) != 0) return ck_fail(c, "particle columns out of order");
+        if (strcmp(cname, particles_col_label(ps, k)) != 0) {
+            if (ps->t2 && strcmp(cname, particles_col_name(k)) == 0) /* saved before 2D MPM kept 2x2 tensors */
+                return ck_fail(c, "a 2D checkpoint from before the 2x2 particle store (its C and F hold 9 components, this "
+                                  "hearth keeps the 4 in-plane ones); rerun the scene to save it again");
+            return ck_fail(c, "particle columns out of order");
+        }
         const size_t bytes = particles_col_bytes(ps, k) * (size_t)n;
         if (bytes && ck_get(c, ps->col[k], bytes)) return -1;
         if (check_column(c, s, k, (int)n)) return -1;

@@ -37,7 +37,8 @@ static void guard_measure(const hearth_scene *s, int i, guard_terms *t) {
     const particles *ps = &s->ps;
     const int mat = pcoli(ps, PC_MAT)[i];
     const material_slot *ms = &s->mats.slot[mat];
-    const double *F = pcold(ps, PC_F) + 9 * i;
+    double F[9];
+    particles_F3(ps, i, F);
     const double J = t3_det(F);
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     const double *G = ps->enabled & (1u << PC_GAS) ? pcold(ps, PC_GAS) : NULL;
@@ -53,7 +54,7 @@ static void guard_measure(const hearth_scene *s, int i, guard_terms *t) {
         JP = ms->m->plastic_J(p, state);
     }
     hearth_point pt;
-    memcpy(pt.grad_v, pcold(ps, PC_C) + 9 * i, sizeof pt.grad_v);
+    particles_C3(ps, i, pt.grad_v);
     memcpy(pt.F, F, sizeof pt.F);
     pt.dt = 0;
     pt.p = p;

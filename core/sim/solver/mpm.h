@@ -117,9 +117,12 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err);
 /// Release the sort's per-particle scratch (mpm_sort.c).
 void mpm_scratch_free(mpm_state *m);
 /// Along the periodic axes: every particle into the period; the blocks
-/// holding the nodes the marked blocks' ghosts stand for (mpm.c).
+/// holding the nodes the marked blocks' ghosts stand for; the ghosts' mass
+/// and momentum onto their nodes (unfold 0) and their nodes' velocity back
+/// (unfold 1) (mpm_periodic.c).
 void mpm_periodic_wrap_all(hearth_scene *s);
 void mpm_periodic_mark(const hearth_scene *s, unsigned char *mark);
+void mpm_periodic_fold(hearth_scene *s, int unfold);
 void mpm_p2g(hearth_scene *s, double dt, step_report *rep);
 /// Returns the largest collider speed (m/s) at a node with mass that a collider set.
 double mpm_grid_update(hearth_scene *s, double dt);

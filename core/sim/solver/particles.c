@@ -35,9 +35,16 @@ static const struct {
 };
 
 const char *particles_col_name(int c) { return col_info[c].name; }
+
+const char *particles_col_label(const particles *ps, int c) {
+    if (ps->t2 && c == PC_C) return "C_xy";
+    if (ps->t2 && c == PC_F) return "F_xy";
+    return col_info[c].name;
+}
 int particles_col_is_int(int c) { return col_info[c].is_int; }
 
 int particles_col_ncomp(const particles *ps, int c) {
+    if (ps->t2 && (c == PC_C || c == PC_F)) return 4; /* the in-plane block (tensor2.h) */
     return col_info[c].ncomp ? col_info[c].ncomp : ps->state_stride;
 }
 
@@ -54,8 +61,10 @@ void particles_free(particles *ps) {
     for (int c = 0; c < PC_COUNT; c++)
         if (ps->col[c]) mem_free(ps->col[c], particles_col_bytes(ps, c) * (size_t)ps->ccap[c]);
     uint32_t en = ps->enabled;
+    const int t2 = ps->t2;
     memset(ps, 0, sizeof *ps);
     ps->enabled = en;
+    ps->t2 = t2;
 }
 
 /* Columns grow one at a time with a realloc, so while they grow the store
@@ -188,6 +197,7 @@ static void permute_column(particles *ps, int c, const int *order, int W, char *
     case 4: permute_window(col, order, n, W, ring, R, 4); break;
     case 8: permute_window(col, order, n, W, ring, R, 8); break;
     case 24: permute_window(col, order, n, W, ring, R, 24); break;
+    case 32: permute_window(col, order, n, W, ring, R, 32); break; /* a 2x2 store's C and F */
     case 64: permute_window(col, order, n, W, ring, R, 64); break;
     case 72: permute_window(col, order, n, W, ring, R, 72); break;
     default: permute_window(col, order, n, W, ring, R, B); break;
@@ -246,10 +256,11 @@ void particles_permute(particles *ps, const int *order, double *scratch) {
 
 hearth_status particles_copy(particles *dst, const particles *src, hearth_error *err) {
     const unsigned long edits = dst->edits + 1;
-    if (dst->state_stride != src->state_stride || dst->enabled != src->enabled || dst->cap < src->n) {
+    if (dst->state_stride != src->state_stride || dst->enabled != src->enabled || dst->t2 != src->t2 || dst->cap < src->n) {
         particles_free(dst);
         particles_init(dst);
         dst->enabled = src->enabled;
+        dst->t2 = src->t2;
         dst->state_stride = src->state_stride;
         hearth_status st = particles_reserve_exact(dst, src->n > 0 ? src->n : 1, err);
         if (st) return st;

@@ -10,13 +10,15 @@
 #include <stdint.h>
 
 #include "hearth/hearth.h"
+#include "tensor.h"
+#include "tensor2.h"
 
 typedef enum pcol {
     /* core: always present */
     PC_X,     /* position (m), 3 */
     PC_V,     /* velocity (m/s), 3 */
-    PC_C,     /* APIC affine velocity = velocity gradient (1/s), 9 */
-    PC_F,     /* deformation gradient, 9 */
+    PC_C,     /* APIC affine velocity = velocity gradient (1/s), 9 (4 in a 2x2 store: t2) */
+    PC_F,     /* deformation gradient, 9 (4 in a 2x2 store: t2) */
     PC_MASS,  /* kg, 1 */
     PC_VOL0,  /* initial volume (m^3), 1 */
     PC_MAT,   /* material index (int32) */
@@ -45,6 +47,7 @@ typedef struct particles {
     int n, cap;            /* cap: particles every enabled column holds room for */
     int ccap[PC_COUNT];    /* room each column actually holds (>= cap after a failed growth) */
     int state_stride;      /* doubles of plugin state per particle (max over materials) */
+    int t2;                /* 1: C and F keep their 2x2 in-plane blocks only (a 2D MPM scene; tensor2.h) */
     uint32_t enabled;      /* bit c set when column c is allocated */
     unsigned long edits;   /* bumped when particles are added, removed, reordered or overwritten
                             * wholesale: the MPM sort trusts the block keys G2P filed only while it stands */
@@ -53,12 +56,46 @@ typedef struct particles {
 
 /// Name, components and element size of a column (state uses state_stride).
 const char *particles_col_name(int c);
+/// The name a store writes to a checkpoint: a 2x2 store's C and F are "C_xy" and "F_xy".
+const char *particles_col_label(const particles *ps, int c);
 int particles_col_ncomp(const particles *ps, int c);
 int particles_col_is_int(int c);
 size_t particles_col_bytes(const particles *ps, int c); /* bytes per particle */
 
 static inline double *pcold(const particles *ps, int c) { return (double *)ps->col[c]; }
 static inline int *pcoli(const particles *ps, int c) { return (int *)ps->col[c]; }
+
+/* C and F of particle i whatever the store's width: a 2x2 store's are
+ * embedded in plane strain (F_zz = 1, tensor2.h). */
+static inline int particles_tn(const particles *ps) { return ps->t2 ? 4 : 9; }
+static inline void particles_F3(const particles *ps, int i, double F[9]) {
+    const double *f = pcold(ps, PC_F) + (size_t)particles_tn(ps) * i;
+    if (ps->t2) t2_embed(f, 1.0, F);
+    else for (int k = 0; k < 9; k++) F[k] = f[k];
+}
+static inline void particles_C3(const particles *ps, int i, double C[9]) {
+    const double *c = pcold(ps, PC_C) + (size_t)particles_tn(ps) * i;
+    if (ps->t2) t2_embed(c, 0.0, C);
+    else for (int k = 0; k < 9; k++) C[k] = c[k];
+}
+/// det F of particle i
+static inline double particles_J(const particles *ps, int i) {
+    const double *f = pcold(ps, PC_F) + (size_t)particles_tn(ps) * i;
+    return ps->t2 ? t2_det(f) : t3_det(f);
+}
+/// tr C of particle i (the rate of volume change)
+static inline double particles_trC(const particles *ps, int i) {
+    const double *c = pcold(ps, PC_C) + (size_t)particles_tn(ps) * i;
+    return ps->t2 ? c[0] + c[3] : c[0] + c[4] + c[8];
+}
+/// C = 0 (a uniform motion) for particle i; with rest = 1 also F = I (a particle at rest)
+static inline void particles_tensors_rest(particles *ps, int i, int rest) {
+    const int tn = particles_tn(ps);
+    double *c = pcold(ps, PC_C) + (size_t)tn * i, *f = pcold(ps, PC_F) + (size_t)tn * i;
+    for (int k = 0; k < tn; k++) c[k] = 0.0;
+    if (rest)
+        for (int k = 0; k < tn; k++) f[k] = k % (tn == 4 ? 3 : 4) == 0;
+}
 
 void particles_init(particles *ps);
 void particles_free(particles *ps);
