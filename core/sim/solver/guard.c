@@ -69,8 +69,7 @@ static void guard_measure(const hearth_scene *s, int i, guard_terms *t) {
         t->plugin = sqrt(n2 / 3.0);
     }
     if (ms->core[CP_EXPANSION] > 0 && T && J > 0) {
-        const double JE = J / JP;
-        t->expansion = fabs(ms->core[CP_EXPANSION] * JE * JE * (T[i] - ms->core[CP_REFERENCE_T]));
+        t->expansion = fabs(ms->core[CP_EXPANSION] * (T[i] - ms->core[CP_REFERENCE_T])); /* material.h: eq. 10's thermal strain */
     }
     if (G && T) t->gas = fabs(gas_tau(G[i], T[i], gas_porosity(JP, ms->core[CP_POROSITY0])));
     mem_free(state, sbytes);
