@@ -289,10 +289,11 @@ void material_tension_cutoff(double tau[9]);
  * tension cut-off of the plugin's stress and no pressure terms. The crack
  * opens the point's pores to the oven, so its gas vents, and its faces are
  * free, so it holds no thermal stress. Rejected: the cut-off on the total
- * stress with the terms kept. A free point's eq. 10 pressure c lambda J^E^2
- * (theta - theta_ref) grows as it swells; with no tension held against it,
- * cracked points of a bread's crust inflated until the guard stopped the
- * run (J^E ~ 400 at 2 s). */
+ * stress with the terms kept, when eq. 10's pressure was c lambda J^E^2
+ * (theta - theta_ref) and grew as a point swelled: with no tension held
+ * against it, cracked points of a bread's crust inflated until the guard
+ * stopped the run (J^E ~ 400 at 2 s). Eq. 10 is now a thermal strain (above),
+ * bounded; a cracked point still drops its terms (its faces are free). */
 MATERIAL_INLINE void material_point_couple(const hearth_material *m, const double *core, hearth_point *pt,
                                            const material_env *env, double tau[9]) {
     if ((env->flags & MATERIAL_DAMAGE) && m->damage) {

@@ -161,5 +161,5 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temp
   -- for ParaView (open vtu/bread.pvd: the time axis, temperature, stress, ids) and Blender (ply/)
   vtu = { path = "vtu/bread_%04d.vtu" },
   ply = { path = "ply/bread_%04d.ply", color = "temperature", colormap = "inferno" } }
-s:png("damage", "damage.png")
+s:png("damage", "damage.png", { kind = "particles", range = { 0, 1 } })
 s:png("browning", "browning.png")

@@ -145,5 +145,5 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temp
     h.write("muffins.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
   end }
-s:png("damage", "damage.png")
+s:png("damage", "damage.png", { kind = "particles", range = { 0, 1 } })
 s:png("browning", "browning.png")
