@@ -85,7 +85,7 @@ static void guard_cause(const hearth_scene *s, int i, char *buf, size_t n) {
     guard_measure(s, i, &t);
     if (t.expansion > t.plugin && t.expansion >= t.gas)
         snprintf(buf, n,
-                 "thermal expansion blew the material apart: its pressure c lambda (J^E)^2 (T - T_ref) = %.4g Pa "
+                 "thermal expansion blew the material apart: its pressure c lambda (T - T_ref) = %.4g Pa "
                  "outweighs the plugin's stress (%.4g Pa) and gas pressure (%.4g Pa) at the particle; lower the "
                  "material's `expansion` or heat it more slowly. ",
                  t.expansion, t.plugin, t.gas);
