@@ -6,8 +6,9 @@
  * ---- elasticity (§5.2) ---------------------------------------------------
  *   eps = 1/2 log(b^E),  b^E = F^E F^E^T          (elastic Hencky strain)
  *   Psi = 1/2 lambda (tr eps)^2 + mu eps:eps,  so tau = C eps = lambda tr(eps) I + 2 mu eps.
- * The thermal expansion term of eq. 10 (-c lambda J theta) is added by the
- * core (HEARTH_NEEDS_THERMAL_EXPANSION, core parameter `expansion`), and so
+ * The thermal expansion term of eq. 10 is added by the core as a thermal
+ * strain, tau -= c lambda (theta - theta_ref) I (HEARTH_NEEDS_THERMAL_EXPANSION,
+ * core parameter `expansion`; core/sim/material.h says why not J^2), and so
  * is the gas pressure of eq. 13; this plugin returns the elastic Kirchhoff
  * stress tau^{s,E} only, and the yield condition acts on it (§6.5).
  *

@@ -65,7 +65,7 @@ TEST(door_plugin_only_each_plugin) {
 /* With gas, water and thermal expansion, the door adds exactly
  *   -J c_w (s - s_0)                        (eq. 14, water)
  *   -n^g R (theta + 273.15) / n^p(J^P_1)   (eq. 13, gas, porosity after the step's flow)
- *   -c lambda (J / J^P_1)^2 (theta - theta_ref)  (eq. 10, expansion on the elastic J)
+ *   -c lambda (theta - theta_ref)          (eq. 10 as a thermal strain: the same at every J^E)
  * to the diagonal, and passes the plastic porosity n^p = J^P_0 - 1 + n^p_0 to the plugin. */
 TEST(door_core_terms_each_plugin) {
     for (int k = 0; k < N_IN_TREE; k++) {
@@ -93,7 +93,7 @@ TEST(door_core_terms_each_plugin) {
         np1 = fmin(fmax(np1, 1e-6), 0.999999);
         const double tw = -J * core[CP_WATER_STIFFNESS] * (sat - sat0);
         const double tg = -ng * 8.314462618 * (T + 273.15) / np1;
-        const double th = core[CP_EXPANSION] * (J / JP1) * (J / JP1) * (T - core[CP_REFERENCE_T]);
+        const double th = core[CP_EXPANSION] * (T - core[CP_REFERENCE_T]);
         const double gas_col[2] = {0, ng}, s0_col[2] = {0, sat0};
         const material_env env = {.flags = MATERIAL_POROSITY_PLASTIC | MATERIAL_EXPANSION, .J = J, .temperature = T,
                                   .saturation = sat, .gas = gas_col, .saturation0 = s0_col, .index = 1};

@@ -164,7 +164,7 @@ enum {
     /* n^p = J^P - 1 + n^p_0 (Ding et al. §5.4) from the plugin's plastic_J at the start of the step;
      * without the bit the point gets env->porosity as given. */
     MATERIAL_POROSITY_PLASTIC = 1u << 1,
-    /* The core's thermal expansion, eq. 10: tau -= c lambda J^E^2 (theta - theta_ref) I, when c lambda > 0.
+    /* The core's thermal expansion, eq. 10 as a thermal strain: tau -= c lambda (theta - theta_ref) I, when c lambda > 0.
      * The gas (eq. 13) and water (eq. 14) pressures are added when env->gas and env->saturation0 are
      * non-NULL: a bit and two pointers that MPM's instantiations know at compile time or once per block. */
     MATERIAL_EXPANSION = 1u << 2,
@@ -235,11 +235,11 @@ MATERIAL_INLINE void material_point_couple_terms(const hearth_material *m, const
     const double *gas = env->gas, *s0 = env->saturation0;
     if (!gas && !s0 && !(fl & MATERIAL_EXPANSION)) return;
 
-    /* J^P after this step's plastic flow, for the gas and expansion terms */
+    /* J^P after this step's plastic flow, for the gas term */
     const double cl = core[CP_EXPANSION];
     const int expand = (fl & MATERIAL_EXPANSION) && cl > 0;
     double JP1 = 1.0;
-    if (m->plastic_J && (gas || expand)) {
+    if (m->plastic_J && gas) {
         plugin_call_enter(m, "plastic_J");
         JP1 = m->plastic_J(pt->p, pt->state);
     }
@@ -258,15 +258,22 @@ MATERIAL_INLINE void material_point_couple_terms(const hearth_material *m, const
         tau[4] += tg;
         tau[8] += tg;
     }
-    /* thermal expansion (Ding et al. eq. 10): sigma += -c lambda J (theta - theta_ref) I, so tau = J sigma.
-     * J is the elastic J^E = J / J^P of a plastic material: the potential
-     * penalises F^{s,E} only (§5.2). With the total J, a skeleton that
-     * yields in tension (Cam-clay, eq. 12, M > 0) grows J^P, which raised
-     * the expansion pressure as J^2, which grew J^P further: the batter
-     * of the pancake and the lava cake swelled x4 and blew up. */
+    /* thermal expansion (Ding et al. eq. 10), as the Kirchhoff stress of a thermal strain:
+     * tau_th = -c lambda (theta - theta_ref) I, the same at every J^E. With a Hencky (or any
+     * log-volumetric) skeleton, K ln J^E, a free body then swells to J^E = exp(c lambda dT / K):
+     * a linear expansion alpha dT with alpha = c lambda / (3K), bounded. This is the stress whose
+     * power tau : d per reference volume is the heat equation's coupling term, V0 c lambda theta
+     * tr(grad v) (transport.c, eq. 9), so the pair conserves energy.
+     * Eq. 10 as printed, sigma = -c lambda J theta, i.e. tau = -c lambda J^2 theta, has no free
+     * equilibrium once c lambda dT > K / (2e) (K ln J = A J^2 has no root; ln J / J^2 peaks at
+     * 1 / (2e)): a crumb no longer held by its crust, or a layer past the pore cap, inflated
+     * without bound (crust_cracks.lua: A = 1000 Pa against K / (2e) = 766 Pa; the guard stopped
+     * the unconfined slab at 0.51 s and the cracked one at 0.57 s). Session 27, issue #18.
+     * Rejected before that: the total J in place of J^E (the batter of the pancake and the
+     * lava cake swelled x4: a Cam-clay skeleton that yields in tension grew J^P, which raised
+     * the pressure, which grew J^P further). */
     if (expand) {
-        const double JE = J / JP1;
-        const double th = cl * JE * JE * (env->temperature - core[CP_REFERENCE_T]);
+        const double th = cl * (env->temperature - core[CP_REFERENCE_T]);
         tau[0] -= th;
         tau[4] -= th;
         tau[8] -= th;
@@ -282,10 +289,11 @@ void material_tension_cutoff(double tau[9]);
  * tension cut-off of the plugin's stress and no pressure terms. The crack
  * opens the point's pores to the oven, so its gas vents, and its faces are
  * free, so it holds no thermal stress. Rejected: the cut-off on the total
- * stress with the terms kept. A free point's eq. 10 pressure c lambda J^E^2
- * (theta - theta_ref) grows as it swells; with no tension held against it,
- * cracked points of a bread's crust inflated until the guard stopped the
- * run (J^E ~ 400 at 2 s). */
+ * stress with the terms kept, when eq. 10's pressure was c lambda J^E^2
+ * (theta - theta_ref) and grew as a point swelled: with no tension held
+ * against it, cracked points of a bread's crust inflated until the guard
+ * stopped the run (J^E ~ 400 at 2 s). Eq. 10 is now a thermal strain (above),
+ * bounded; a cracked point still drops its terms (its faces are free). */
 MATERIAL_INLINE void material_point_couple(const hearth_material *m, const double *core, hearth_point *pt,
                                            const material_env *env, double tau[9]) {
     if ((env->flags & MATERIAL_DAMAGE) && m->damage) {

@@ -109,10 +109,55 @@
 --    factor is divided by its value at X_0, so a raw dough keeps Table 2's
 --    numbers, and a scene without water (X/X_0 = 1) is unchanged.
 --    Irreversible: a dried crust stays crisp when crumb water returns.
+--  * WATER (issue #18, not in Table 2; Ding et al. §3.2 model moisture but
+--    Table 2 gives no water numbers): the bread and the muffin carry water, so
+--    their surface dries and stiffens (DRY) and turns brittle over a moist
+--    crumb. Each number below and its source:
+--    - water content: the raw dough's X_0 above (bread 0.82 kg/kg dry basis,
+--      45 % wet basis; muffin batter 0.67, 40 % wb), as the saturation of
+--      eq. 8 at Table 2's density: s_0 = x_w rho / rho_w = 0.45 x 500 / 1000
+--      = 0.225 (bread), 0.40 x 500 / 1000 = 0.20 (muffin).
+--    - time: Table 2's heat has no single real time scale (its kappa / (rho
+--      c) is 2.6e4 times a real crumb's diffusivity, its beta / (rho c) 430
+--      times a real oven's), so water takes the bake's own: bread.lua's 2.5 s
+--      stand for a 25 minute bake and muffins.lua's 1.5-3 s for a 20 minute
+--      one, WATER_S = 600 (water rates x600, as h.library.dough's time_scale).
+--    - diffusivity: 2e-7 m^2/s real (x600: 1.2e-4 m^2/s in the scene), the
+--      effective moisture diffusivity of a baking crumb where evaporation and
+--      condensation of vapour through the pores, not liquid flow, carry the
+--      water out (Thorvaldsson & Janestad 1999, J. Food Eng. 40:167, model
+--      the two apart); 2e-7 is our choice of its order, 100 times
+--      dough_physical's liquid 2e-9, and it stands for the evaporation front
+--      the animation units cannot have (latent heat off below): the dried
+--      layer then spans a cell at dx 4-5 mm. Eq. 22's K = D / (theta s_0),
+--      theta = 373.15 K, as dough_physical.
+--    - evaporation beta^w: 1.2e-3 kg/(m^2 s K) real (x WATER_S), calibrated,
+--      not measured: the value that brings bread.lua's top particle at dx 5
+--      mm to X ~ 0.19 kg/kg by the end of the bake, a baked crust's few %
+--      (Vanin et al. 2009 above) averaged with the crumb over a 5 mm cell,
+--      and past the glass transition's 0.16 within a cell. dough_physical's
+--      1.2e-5 (a wet surface's ~1 g/(m^2 s), the heat-limited rate beta (T_oven
+--      - 100) / L of a real oven) left the top at X/X_0 0.67 here: a real
+--      crust is 2-3 mm, dried by an evaporation front under it, and a cell of
+--      5 mm has to dry through instead; so this is ~100x a real surface's
+--      rate, the price of a crust the grid resolves.
+--    Measured (bread.lua's plain loaf, dx 5 mm, 2.5 s): the top particle ends
+--    at X/X_0 0.23, the centre at 0.92 (docs/validation.md, "Crust (#18)").
+--  * FRACTURE (issue #18): fracture_strain 1 wet (a rubbery dough's cell
+--    walls part at Hencky strains of order 1, van Vliet et al. 1992, J.
+--    Texture Stud. 23:439), x0.02 once dried to X = 0.16 kg/kg (glassy:
+--    van Nieuwenhuijzen et al. 2008 above; 0.02, a few per cent, is our order
+--    of magnitude, not a measured crust value), linear in X/X_0 between 0.41
+--    (rubbery) and 0.16, irreversible: plugins/cam_clay_dough.c's damage.
 local ETA_SCALE, GAS_SCALE = 4000, 1 / 600
 local DRY_X = { 0.05, 0.10, 0.16, 0.25, 0.41 }  -- water content, kg/kg dry basis
 local DRY_F = { 100, 37, 10, 4.6, 1 }           -- E and tau_y factor (Roos 1995's glass transition, capped at 100)
 local DRY_X0 = { bread = 0.82, muffin = 0.67, cookie = 0.25 } -- the raw dough's water content (dry basis)
+-- water of the goods that bake a crust (WATER above): s_0, real diffusivity (m^2/s), beta^w (kg/(m^2 s K))
+local WATER_S = 600
+local WATER = { bread = { saturation = 0.225, diffusivity = 2e-7, evaporation = 1.2e-3 },
+  muffin = { saturation = 0.20, diffusivity = 2e-7, evaporation = 1.2e-3 } }
+local FRACTURE_X, FRACTURE_DRY = { 0.16, 0.41 }, 0.02 -- glassy below, rubbery above (kg/kg dry basis); strain when dry
 local THETA = { 5, 20, 35, 70 }            -- Fig. 8: fridge, room, fat melting, gelatinisation (degC)
 local TAU_SHAPE = { 1, 0.8, 0.3, 20 }      -- Fig. 8 left, relative to Table 2's value
 local ETA_SHAPE = { 1, 0.5, 0.1, 0.05 }    -- Fig. 8 right, relative to ETA_SCALE x Table 2's value
@@ -142,7 +187,7 @@ local paper = {
 -- per-good factors on top of the global ones (see the header)
 local TUNE = { bread = { tau = 10 }, muffin = { kappa = 0.005, tau = 10, gas = 2.5, max_porosity = 0.6 }, lava_cake = { gas = 0.1 } }
 
-local D = { paper = paper, TUNE = TUNE, DRY_X = DRY_X, DRY_F = DRY_F, DRY_X0 = DRY_X0, ETA_SCALE = ETA_SCALE, GAS_SCALE = GAS_SCALE, THETA = THETA, TAU_SHAPE = TAU_SHAPE,
+local D = { paper = paper, TUNE = TUNE, WATER = WATER, WATER_S = WATER_S, DRY_X = DRY_X, DRY_F = DRY_F, DRY_X0 = DRY_X0, ETA_SCALE = ETA_SCALE, GAS_SCALE = GAS_SCALE, THETA = THETA, TAU_SHAPE = TAU_SHAPE,
   ETA_SHAPE = ETA_SHAPE }
 
 local function curve(base, shape)
@@ -180,8 +225,18 @@ function D.preset(name)
     if X0 <= DRY_X[#DRY_X] then pts[#pts + 1] = { 1, 1 } end -- a cookie dough is drier than the last point
     dry = { E = pts, tau_y = pts }
   end
+  local w = WATER[name]
+  if w then -- WATER and FRACTURE above
+    params.saturation = w.saturation
+    params.water_diffusivity = w.diffusivity / (373.15 * w.saturation) * WATER_S
+    params.evaporation = w.evaporation * WATER_S
+    params.fracture_strain = 1
+    local X0 = DRY_X0[name]
+    dry.fracture_strain = { { FRACTURE_X[1] / X0, FRACTURE_DRY }, { FRACTURE_X[2] / X0, 1 }, irreversible = true, of = "moisture" }
+  end
   local oven = { temperature = c.ambient_theta, beta = c.ambient_beta, pan_temperature = c.conductive_theta,
-    pan_beta = c.conductive_beta, dough_temperature = c.theta0, latent_heat = false }
+    pan_beta = c.conductive_beta, dough_temperature = c.theta0, latent_heat = false,
+    saturation = w and w.saturation, water_time_scale = w and WATER_S }
   return params, curves, oven, dry
 end
 

@@ -47,8 +47,8 @@ KNOWN = {
         "the dough collapses on the floor and the guard stops it at step ~123, when the particles jump more than a "
         "cell; the gas pressure is then the largest stress on the strengthless skeleton, and the guard names it",
     ("snow_plastic", "temperature", "400 degC"):
-        "the core's expansion stress (eq. 10: c lambda = 10 Pa/K over 380 K, 3800 Pa) acts on J^E, which the snow law "
-        "clamps (Stomakhin et al. 2013): at its critical stretch the default block holds at most ~600 Pa of tension "
+        "the core's expansion stress (eq. 10: c lambda = 10 Pa/K over 380 K, 3800 Pa) needs an elastic dilation "
+        "the snow law clamps (Stomakhin et al. 2013): at its critical stretch the default block holds at most ~600 Pa of tension "
         "(2D), and plastic dilation softens it further (e^{xi (1 - J^P)}), so it dilates plastically without end under "
         "a pressure that never relaxes; the energy comes from the expansion term, which the bound does not count. "
         "Stomakhin et al. model no expansion, and the Fig. 17 baseline runs with expansion 0",

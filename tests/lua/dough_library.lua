@@ -24,6 +24,20 @@ for name, t in pairs(T2) do
       and math.abs(f[1][2] - dry) < 1e-9 * dry, name .. ": dry factor " .. f[1][2] .. ", expected " .. dry)
     for i = 2, #f do assert(f[i][2] < f[i - 1][2], name .. ": the factor falls as the crust holds more water") end
   end
+  -- issue #18 (dough.lua's WATER, FRACTURE): the bread and the muffin carry water (their raw X_0 as s_0 at
+  -- Table 2's density), and a fracture strain of 1 wet falling to 0.02 once dried to X = 0.16 kg/kg; no other good
+  local wat = ({ bread = 0.45 * 500 / 1000, muffin = 0.40 * 500 / 1000 })[name]
+  if wat then
+    assert(math.abs(d.saturation - wat) < 1e-12 and o.saturation == d.saturation, name .. ": s_0 " .. tostring(d.saturation))
+    assert(d.water_diffusivity > 0 and d.evaporation > 0 and o.water_time_scale == 600, name .. ": water live, x600")
+    local fs = d.fracture_strain
+    assert(fs.base == 1 and fs.factor.moisture and fs.factor.irreversible and fs.factor[1][2] == 0.02
+      and fs.factor[#fs.factor][2] == 1, name .. ": brittle when dry, ductile when wet")
+    local X0 = ({ bread = 0.82, muffin = 0.67 })[name]
+    assert(math.abs(fs.factor[1][1] * X0 - 0.16) < 1e-12, name .. ": glassy at X = 0.16 kg/kg")
+  else
+    assert(d.saturation == nil and d.fracture_strain == nil and o.saturation == nil, name .. ": no water, no fracture")
+  end
   local eta = d.eta
   -- eta carries tau_y's factor squared (lua/hearth/dough.lua, "Rise"): the viscosity eta / tau_y^2 stays Table 2's
   assert(eta.irreversible and eta[1][2] == 4000 * k * k * t[4], name .. ": eta scale")

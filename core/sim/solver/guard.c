@@ -70,8 +70,7 @@ static void guard_measure(const hearth_scene *s, int i, guard_terms *t) {
         t->plugin = sqrt(n2 / 3.0);
     }
     if (ms->core[CP_EXPANSION] > 0 && T && J > 0) {
-        const double JE = J / JP;
-        t->expansion = fabs(ms->core[CP_EXPANSION] * JE * JE * (T[i] - ms->core[CP_REFERENCE_T]));
+        t->expansion = fabs(ms->core[CP_EXPANSION] * (T[i] - ms->core[CP_REFERENCE_T])); /* material.h: eq. 10's thermal strain */
     }
     if (G && T) t->gas = fabs(gas_tau(G[i], T[i], gas_porosity(JP, ms->core[CP_POROSITY0])));
     mem_free(state, sbytes);
@@ -87,7 +86,7 @@ static void guard_cause(const hearth_scene *s, int i, char *buf, size_t n) {
     guard_measure(s, i, &t);
     if (t.expansion > t.plugin && t.expansion >= t.gas)
         snprintf(buf, n,
-                 "thermal expansion blew the material apart: its pressure c lambda (J^E)^2 (T - T_ref) = %.4g Pa "
+                 "thermal expansion blew the material apart: its pressure c lambda (T - T_ref) = %.4g Pa "
                  "outweighs the plugin's stress (%.4g Pa) and gas pressure (%.4g Pa) at the particle; lower the "
                  "material's `expansion` or heat it more slowly. ",
                  t.expansion, t.plugin, t.gas);

@@ -9,7 +9,13 @@
 -- profile (crack_depth_m: how far the top at x lies below the lower of the
 -- highest tops within 15 mm to its left and to its right) and the notch's
 -- width (crack_width_m: the run of x around it where the notch is deeper
--- than half that), sampled every 0.5 mm over the loaf's middle 80%.
+-- than half that), sampled every 0.5 mm over the loaf's middle 80%; and (#18) the plain loaf's
+-- water: X/X0 (its water over the water it was given, saturation x J / s_0) of
+-- its top particle on the loaf's axis and of the particle nearest the crumb's
+-- centre (on the axis, 35 mm above the tray), and its count of cracked
+-- particles (damage 1). The dough carries water (lua/hearth/dough.lua, WATER:
+-- rates x600, so 2.5 s stand for a 25 minute bake); at the end it writes
+-- damage.png and browning.png.
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth = 0.02, slit_width = 0.01, only = 0 }
 local d3 = P.dim == 3
@@ -17,11 +23,13 @@ local dx = d3 and math.max(P.dx, 0.008) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local oven = h.library.paper_oven.bread
-print("bread.lua: h.library.paper.bread, animation units (Ding Table 2): heat runs in seconds, not minutes")
+print(("bread.lua: h.library.paper.bread, animation units (Ding Table 2): heat runs in seconds, not minutes; water %g times fast")
+  :format(oven.water_time_scale))
 local TRAY, WIDTH, BODY, SPACING = 0.02, 0.08, 0.03, 0.14 -- m: tray, loaf width, straight part, loaf spacing
 local zc, ZW = 0.06, 0.06 -- 3D: loaves are extruded along z over +-ZW/2
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(3 * SPACING, 0.14, 0.12) },
-  oven = { temperature = oven.temperature, beta = oven.beta }, name = "bread" }
+  oven = { temperature = oven.temperature, beta = oven.beta }, name = "bread", browning = true,
+  browning_scale = oven.water_time_scale }
 h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta })
 local dough = h.material("cam_clay_dough", h.library.paper.bread)
 
@@ -46,7 +54,8 @@ for i, L in ipairs(loaves) do
     shape = shape - h.box(v(L.x + off - P.slit_width / 2, top0 - P.slit_depth, 0), v(L.x + off + P.slit_width / 2,
       top0 + 0.01, 0.12))
   end
-  s:add { shape = shape, material = dough, temperature = oven.dough_temperature, ppc = d3 and 8 or 4 }
+  s:add { shape = shape, material = dough, temperature = oven.dough_temperature, saturation = oven.saturation,
+    ppc = d3 and 8 or 4 }
   ::next::
 end
 
@@ -108,8 +117,25 @@ local function crack(x0)
   return d, (hi - lo + 1) * step
 end
 
+-- the plain loaf's water (header): X/X0 of its top particle and its crumb's centre, and its cracked particles
+local function water(x0)
+  local p = s:particles { fields = { "x", "saturation", "J", "damage" } }
+  local top, ctr, nc, yc = nil, nil, 0, TRAY + 0.035
+  for k = 1, p.n do
+    local x, y = p.x[3 * k - 2], p.x[3 * k - 1]
+    if math.abs(x - x0) < SPACING / 2 and p.damage[k] >= 1 then nc = nc + 1 end
+    if math.abs(x - x0) < dx / 2 and (not d3 or math.abs(p.x[3 * k] - zc) < dx / 2) then
+      if not top or y > p.x[3 * top - 1] then top = k end
+      if not ctr or math.abs(y - yc) < math.abs(p.x[3 * ctr - 1] - yc) then ctr = k end
+    end
+  end
+  if not top then return 0, 0, nc end
+  local s0 = oven.saturation
+  return p.saturation[top] * p.J[top] / s0, p.saturation[ctr] * p.J[ctr] / s0, nc
+end
+
 local rows = { "t,height_plain_m,height_one_slit_m,height_two_slits_m,gap_one_slit_m,gap_two_slits_left_m,gap_two_slits_right_m," ..
-  "area_plain,area_one_slit,area_two_slits,crack_depth_m,crack_width_m" }
+  "area_plain,area_one_slit,area_two_slits,crack_depth_m,crack_width_m,moisture_top,moisture_centre,cracked" }
 s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png" },
   on_frame = function(f)
     local r = { ("%.3f"):format(f.t) }
@@ -123,6 +149,11 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temp
     local cd, cw = crack(loaves[1].x)
     r[#r + 1] = ("%.5f"):format(cd)
     r[#r + 1] = ("%.5f"):format(cw)
+    local top, ctr, nc = 0, 0, 0
+    if P.only <= 1 then top, ctr, nc = water(loaves[1].x) end
+    r[#r + 1] = ("%.4f"):format(top)
+    r[#r + 1] = ("%.4f"):format(ctr)
+    r[#r + 1] = ("%d"):format(nc)
     rows[#rows + 1] = table.concat(r, ",")
     h.write("bread.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
@@ -130,3 +161,5 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temp
   -- for ParaView (open vtu/bread.pvd: the time axis, temperature, stress, ids) and Blender (ply/)
   vtu = { path = "vtu/bread_%04d.vtu" },
   ply = { path = "ply/bread_%04d.ply", color = "temperature", colormap = "inferno" } }
+s:png("damage", "damage.png", { kind = "particles", range = { 0, 1 } })
+s:png("browning", "browning.png")

@@ -6,7 +6,12 @@
 -- its top (negative = domed), and its deepest tear (#18): over the one-cell
 -- bins of its top across the cup, how far a bin's top lies below the lower of
 -- the highest tops on its left and on its right (tear_depth), and the width
--- of the run of bins around it deeper than half that (tear_width, m).
+-- of the run of bins around it deeper than half that (tear_width, m); and
+-- (#18) the first cup's water: X/X0 (water over the water given, saturation x
+-- J / s_0) of its top particle on the cup's axis and of the particle nearest
+-- the batter's centre (on the axis, fill / 2 above the floor), and its count
+-- of cracked particles (damage 1). The batter carries water (lua/hearth/dough.lua,
+-- WATER: rates x600); at the end it writes damage.png and browning.png.
 -- How it domes: the tin heats the batter from its walls and floor (the
 -- muffin preset's kappa gives a Biot number of ~7, see lua/hearth/dough.lua),
 -- so the batter there passes gelatinisation (tau_y x20, frozen) while the
@@ -23,13 +28,15 @@ local dx = d3 and math.max(P.dx, 0.006) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local oven = h.library.paper_oven.muffin
-print("muffins.lua: h.library.paper.muffin, animation units (Ding Table 2): heat runs in seconds, not minutes")
+print(("muffins.lua: h.library.paper.muffin, animation units (Ding Table 2): heat runs in seconds, not minutes; water %g times fast")
+  :format(oven.water_time_scale))
 -- m: the cups' inner floor, inner radius, wall height above the floor, wall and floor thickness, cup spacing
 local BASE, R, CUP_H, WALL, SPACING = 0.012, 0.025, 0.03, 0.004, 0.08
 local W = SPACING * P.cups
 local zc = 0.04
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.1, 0.08) },
-  oven = { temperature = oven.temperature, beta = oven.beta }, name = "muffins" }
+  oven = { temperature = oven.temperature, beta = oven.beta }, name = "muffins", browning = true,
+  browning_scale = oven.water_time_scale }
 local batter = h.material("cam_clay_dough", h.library.paper.muffin)
 local xs = {}
 for i = 1, P.cups do
@@ -43,7 +50,8 @@ for i = 1, P.cups do
   -- the batter fills the cup to the walls from the floor up
   local inner = d3 and h.cylinder(v(xs[i], BASE + P.fill / 2, zc), { 0, 1, 0 }, R, P.fill / 2)
     or h.box({ xs[i] - R, BASE }, { xs[i] + R, BASE + P.fill })
-  s:add { shape = inner, material = batter, temperature = oven.dough_temperature, ppc = d3 and 8 or 4 }
+  s:add { shape = inner, material = batter, temperature = oven.dough_temperature, saturation = oven.saturation,
+    ppc = d3 and 8 or 4 }
 end
 local RIM = BASE + CUP_H
 
@@ -100,11 +108,28 @@ local function tear(top)
   return dmax, (z - a + 1) * dx
 end
 
+-- the first cup's water (header): X/X0 of its top particle and its centre, and its cracked particles
+local function water()
+  local p = s:particles { fields = { "x", "saturation", "J", "damage" } }
+  local top, ctr, nc, yc = nil, nil, 0, BASE + P.fill / 2
+  for k = 1, p.n do
+    local x, y = p.x[3 * k - 2], p.x[3 * k - 1]
+    if math.abs(x - xs[1]) <= R and p.damage[k] >= 1 then nc = nc + 1 end
+    if math.abs(x - xs[1]) < dx / 2 and (not d3 or math.abs(p.x[3 * k] - zc) < dx / 2) then
+      if not top or y > p.x[3 * top - 1] then top = k end
+      if not ctr or math.abs(y - yc) < math.abs(p.x[3 * ctr - 1] - yc) then ctr = k end
+    end
+  end
+  if not top then return 0, 0, nc end
+  return p.saturation[top] * p.J[top] / oven.saturation, p.saturation[ctr] * p.J[ctr] / oven.saturation, nc
+end
+
 local head = { "t" }
 for i = 1, P.cups do
   head[#head + 1] = ("top_above_rim_%d_m,centre_above_edge_%d_m,top_curvature_%d_1_per_m,tear_depth_%d_m,tear_width_%d_m")
     :format(i, i, i, i, i)
 end
+head[#head + 1] = "moisture_top_1,moisture_centre_1,cracked_1"
 local rows = { table.concat(head, ",") }
 s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png" },
   on_frame = function(f)
@@ -115,7 +140,10 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temp
       local td, tw = tear(t[i])
       r[#r + 1] = ("%.5f,%.5f,%.3f,%.5f,%.5f"):format(c - RIM, ce, k, td, tw)
     end
+    r[#r + 1] = ("%.4f,%.4f,%d"):format(water())
     rows[#rows + 1] = table.concat(r, ",")
     h.write("muffins.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
   end }
+s:png("damage", "damage.png", { kind = "particles", range = { 0, 1 } })
+s:png("browning", "browning.png")
