@@ -258,7 +258,7 @@ print("EXPECTED FAILURE: the soft cookie holds too little gas to grow 1.69x in a
       "Session 27 (docs/validation.md 'The cookie's gas: when, where, and eq. 12'): the time units do not make "
       "the gas late (gas and set both follow temperature: 41% of the CO2 is made before the centre sets at "
       "37 degC, whatever the time scale); all of it before the set (theta_r 10 +- 10 degC) gives only 1.11x, and "
-      "1.30x needs 3x the gas too, with the leavened cookie 1.4x wider and less domed than the unleavened one; "
+      "1.30x needs 3x the gas too, with the leavened cookie 1.3-1.5x wider and less domed than the unleavened one; "
       "no gas is lost (the model has no leak); eq. 12's runaway is the paper's (n / sqrt(M(n)) peaks at 0.45)")
 sys.exit(77)
 PY
