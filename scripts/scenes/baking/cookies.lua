@@ -11,6 +11,10 @@
 --                           viscoplasticity and no thermal expansion (Ding et
 --                           al. §2: neither Stomakhin et al. nor Gao et al.
 --                           model expansion). Heat still flows.
+--   [--set reaction_temperature=10 --set reaction_width=10 --set gas=3]
+--                           the leavener's kinetics moved off Table 2 (theta_r, dtheta
+--                           in degC; gas multiplies alpha^g), for docs/validation.md
+--                           "The cookie's gas: when, where, and eq. 12"; not a preset.
 -- Writes, under hearth-out/cookies/: oven_<T>/heat_%04d.png (the heat
 -- progress, Fig. 3's right column) and cookies.csv (final height, spread and
 -- top curvature per cookie; negative curvature = domed), series.csv (height
@@ -30,7 +34,7 @@
 -- claim_cookie_domed_vs_baseline in tests/baking_test.sh for the numbers).
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 3, frames = 6, ovens = { 190, 150, 110 },
-  leaveners = { 0.015, 0.0075, 0 }, baseline = false }
+  leaveners = { 0.015, 0.0075, 0 }, baseline = false, reaction_temperature = -1, reaction_width = -1, gas = 1 }
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.01) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
@@ -51,7 +55,9 @@ for _, T in ipairs(ovens) do
   local xs = {}
   for i, a in ipairs(leaveners) do
     local d = h.library.paper.cookie
-    d.gas_rate = a * h.library.dough_scale.gas
+    d.gas_rate = a * h.library.dough_scale.gas * P.gas
+    if P.reaction_temperature >= 0 then d.reaction_temperature = P.reaction_temperature end
+    if P.reaction_width > 0 then d.reaction_width = P.reaction_width end
     -- the baseline: the cookie's E, nu, density and heat; the snow law's theta_c, theta_s, xi (plugin defaults)
     local mat = P.baseline and h.material("snow_plastic", { E = d.E, nu = d.nu, density = d.density,
       specific_heat = d.specific_heat, conductivity = d.conductivity, reference_temperature = d.reference_temperature })

@@ -17,9 +17,14 @@
 -- marshmallow has set through (Fig. 8's x20 past 70 degC) and comes out of
 -- the press a little thicker than the raw one: with this preset's curve a
 -- roasted marshmallow is firmer, not softer as in the paper's Fig. 18.
+-- It does not ooze (Fig. 18: "when pressed the crust breaks and the inside
+-- oozes out"): Table 2's s'more heats evenly (Biot number 0.06), the preset
+-- sets past 70 degC and cannot crack; claim_marshmallow_oozes and
+-- docs/validation.md "The marshmallow's ooze (#18)" give the numbers.
 -- Writes, under hearth-out/marshmallow/: heat_%04d.png (temperature) and
 -- marshmallow.csv: over time, the thickness (lowest to highest material on
--- the centre line) and the centre temperature of the raw and the roasted one.
+-- the centre line), the centre temperature and the ooze (below) of the raw
+-- and the roasted one.
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.002, roast = 0.5, press = 1.0, speed = 0.005, frames = 20 }
 local d3 = P.dim == 3
@@ -67,6 +72,48 @@ s:at(P.roast + P.press, function(sc)
   end
 end)
 
+-- The ooze (Ding et al. Fig. 18: "when pressed the crust breaks and the inside oozes out"): the skin is
+-- the material that starts within SKIN of the marshmallow's surface, the inside the rest (by particle
+-- id, so it follows the material). The outline is, in each band of height dx, the outermost particle on
+-- each side of the marshmallow's axis (3D: in each of 8 sectors around it). An intact skin, however it
+-- is squashed, stays the outline (the inside flows with it); the inside reaches the outline only where
+-- it escapes through an opening in the skin. ooze = the fraction of the outline that is inside material.
+local SKIN = 0.004 -- m: two cells at the default dx
+local skin = {}
+do
+  local r = s:particles { fields = { "id", "x" } }
+  for k = 1, r.n do
+    local x, y, z = r.x[3 * k - 2], r.x[3 * k - 1], r.x[3 * k]
+    local i = x < (xs[1] + xs[2]) / 2 and 1 or 2
+    local rad = d3 and math.sqrt((x - xs[i]) ^ 2 + (z - zc) ^ 2) or math.abs(x - xs[i])
+    skin[r.id[k]] = math.min(RM - rad, y - BASE, BASE + HM - y) < SKIN
+  end
+end
+local function ooze()
+  local r = s:particles { fields = { "id", "x" } }
+  local best, who = { {}, {} }, { {}, {} }
+  for k = 1, r.n do
+    local x, y, z = r.x[3 * k - 2], r.x[3 * k - 1], r.x[3 * k]
+    local i = x < (xs[1] + xs[2]) / 2 and 1 or 2
+    local rad, side
+    if d3 then
+      rad = math.sqrt((x - xs[i]) ^ 2 + (z - zc) ^ 2)
+      side = math.floor((math.atan(z - zc, x - xs[i]) + math.pi) / (2 * math.pi) * 8) % 8
+    else
+      rad, side = math.abs(x - xs[i]), x < xs[i] and 0 or 1
+    end
+    local key = math.floor(y / dx) * 8 + side
+    if not best[i][key] or rad > best[i][key] then best[i][key], who[i][key] = rad, r.id[k] end
+  end
+  local out = {}
+  for i = 1, 2 do
+    local n, o = 0, 0
+    for _, id in pairs(who[i]) do n = n + 1; if not skin[id] then o = o + 1 end end
+    out[i] = n > 0 and o / n or 0
+  end
+  return out[1], out[2]
+end
+
 local function measure(x)
   local n = 600
   local d = s:line("density", v(x, BASE - CT, zc), v(x, H, zc), n + 1)
@@ -78,13 +125,15 @@ local function measure(x)
   return yhi - ylo, s:probe("temperature", v(x, (ylo + yhi) / 2, zc))
 end
 
-local rows = { "t_s,thickness_raw_m,thickness_roasted_m,centre_temperature_raw_degC,centre_temperature_roasted_degC" }
+local rows = { "t_s,thickness_raw_m,thickness_roasted_m,centre_temperature_raw_degC,centre_temperature_roasted_degC,"
+  .. "ooze_raw,ooze_roasted" }
 local until_t = P.roast + P.press + 0.1
 s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png" },
   on_frame = function(f)
     local tr, Tr = measure(xs[1])
     local tq, Tq = measure(xs[2])
-    rows[#rows + 1] = ("%.3f,%.5f,%.5f,%.2f,%.2f"):format(f.t, tr, tq, Tr, Tq)
+    local oraw, oroast = ooze()
+    rows[#rows + 1] = ("%.3f,%.5f,%.5f,%.2f,%.2f,%.4f,%.4f"):format(f.t, tr, tq, Tr, Tq, oraw, oroast)
     h.write("marshmallow.csv", table.concat(rows, "\n") .. "\n")
   end }
 local out = {}
@@ -92,4 +141,6 @@ for i, x in ipairs(xs) do
   local th, T = measure(x)
   out[#out + 1] = ("%s %.4f m thick (centre %.1f degC)"):format(names[i], th, T)
 end
-print("after the press: " .. table.concat(out, ", "))
+local oraw, oroast = ooze()
+print("after the press: " .. table.concat(out, ", ") .. (", ooze (inside material on the outline) raw %.3f, roasted %.3f")
+  :format(oraw, oroast))
