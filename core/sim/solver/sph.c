@@ -375,24 +375,29 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
      * surface outward (a square drop blew apart) */
     double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = m[i] / st->rho[i] * sph_lap_w(dim, 0, st->h[i]);
     double fill = 0, tr = 0, gm[3] = {0, 0, 0};
+    /* in 2D the z rows and columns stay +0 (every z is 0; see forces_one) */
+    const double *h = st->h, *rho = st->rho, hi = h[i];
+    const sph_kc kci = sph_kc_of(dim, hi);
     for (int k = off[i]; k < off[i + 1]; k++) {
         const int j = nb[k];
         double d[3];
-        sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-        const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], r = sqrt(r2), hij = 0.5 * (st->h[i] + st->h[j]);
+        sph_disp_dim(&st->cells, dim, x + 3 * i, x + 3 * j, d);
+        const double r2 = dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1];
+        const double r = sqrt(r2);
         if (r <= 0) continue;
-        const double Vj = m[j] / st->rho[j], g = sph_dw(dim, r, hij) / r;
-        for (int a = 0; a < 3; a++) {
+        SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
+        const double Vj = m[j] / rho[j], g = sph_dw_kc(kc, r) / r;
+        for (int a = 0; a < dim; a++) {
             const double dv = v[3 * j + a] - v[3 * i + a];
-            for (int b = 0; b < 3; b++) L[3 * a + b] += Vj * dv * g * d[b];
+            for (int b = 0; b < dim; b++) L[3 * a + b] += Vj * dv * g * d[b];
             Ni[a] += Vj * g * d[a];
         }
-        lc += Vj * sph_lap_w(dim, r, hij);
+        lc += Vj * sph_lap_w_kc(dim, kc, r);
         /* eq. 3.8's moments for the viscous renormalisation (sph_viscous_factor) */
-        const double lr2 = Vj * sph_lap_visc(dim, r, hij) * r2;
-        fill += Vj * sph_w(dim, r, hij);
+        const double lr2 = Vj * sph_lap_visc_kc(kc, r) * r2;
+        fill += Vj * sph_w_kc(kc, r);
         tr += lr2;
-        for (int q = 0; q < 3; q++) gm[q] += lr2 * d[q];
+        for (int q = 0; q < dim; q++) gm[q] += lr2 * d[q];
     }
     st->vc[i] = sph_viscous_factor(s, i, fill, tr, gm);
     memcpy(c->C + 9 * i, L, sizeof L);
@@ -592,6 +597,90 @@ static void phase_artificial_stress(hearth_scene *s) {
     }
 }
 
+/* One particle's accelerations and kick (phase_forces), with dim a constant
+ * in each copy. In 2D the z components are left out: every particle's z and
+ * the z of every velocity are 0 there, so each z term is a zero added to a
+ * sum that started at +0 and a zero changes no such sum (the same bits). */
+static inline __attribute__((always_inline)) void forces_one(hearth_scene *s, const sph_cols *c, int i, const int dim,
+                                                              double dt) {
+    struct sph_state *st = s->sph;
+    const hearth_sph_def *o = &s->def.sph;
+    const int *flags = c->flags;
+    const double *x = c->x, *v = c->v, *m = c->m;
+    const int *off = st->nl.off, *nb = st->nl.j;
+    const double eps_as = o->artificial_stress, av_beta = o->av_beta;
+    const double *h = st->h, *rho = st->rho, *prs = st->prs, *mu = st->mu, *vc = st->vc;
+    const double *gvec = s->def.gravity;
+    double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0};
+    if (s->body_force) {
+        double bf[3] = {0, 0, 0};
+        s->body_force(s->body_force_ud, s->t, x + 3 * i, bf);
+        for (int q = 0; q < dim; q++) a[q] += bf[q];
+    }
+    const double ri = rho[i], Pi = prs[i] / (ri * ri), *Si = st->S + 9 * i, hi = h[i], mui = mu[i], vci = vc[i];
+    double wn[3] = {0, 0, 0}, da = 0, drag = 0;
+    const int wall = flags && !(flags[i] & PF_FIXED) && sph_wall_frame(s, i, wn, &da);
+    const double dah = fmax(da, 0.5 * st->sp[i]);
+    const sph_kc kci = sph_kc_of(dim, hi);
+    for (int k = off[i]; k < off[i + 1]; k++) {
+        const int j = nb[k];
+        double d[3];
+        sph_disp_dim(&st->cells, dim, x + 3 * i, x + 3 * j, d);
+        const double r2 = dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1], r = sqrt(r2);
+        if (r <= 0) continue;
+        SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
+        const double hij = kc->h, rj = rho[j];
+        const double g = sph_dw_kc(kc, r) / r; /* grad_i W = g d */
+        double vij[3], vd = 0;
+        for (int q = 0; q < dim; q++) {
+            vij[q] = v[3 * i + q] - v[3 * j + q];
+            vd += vij[q] * d[q];
+        }
+        double Pij = Pi + prs[j] / (rj * rj); /* eq. 3.18 */
+        if (av_beta > 0 && vd < 0) {          /* eq. 3.41, with mu_ij of eq. 3.37 */
+            const double muij = hij * vd / (r2 + 0.01 * hij * hij);
+            Pij += av_beta * muij * muij / (0.5 * (ri + rj));
+        }
+        const double *Sj = st->S + 9 * j, lv = sph_lap_visc_kc(kc, r);
+        /* eq. 3.19 over rho_i; its Laplacian renormalised (sph_viscous_factor), the pair's mean factor so
+         * the pair's forces stay equal and opposite */
+        const double visc = 0.5 * (mui + mu[j]) * m[j] / (rj * ri) * lv * 0.5 * (vci + vc[j]);
+        /* a wall particle's velocity for eq. 3.19: Morris et al. 1997 (sph_wall_frame) */
+        const int wj = wall && (flags[j] & PF_FIXED);
+        const double beta = wj ? sph_wall_beta(d, wn, da, dah) : 1.0;
+        double fn = 0; /* f_ab^4 of the artificial stress */
+        if (eps_as > 0) {
+            const double dp = 0.5 * (st->sp[i] + st->sp[j]);
+            const double f = sph_w_kc(kc, r) / sph_w_kc(kc, dp);
+            fn = f * f * f * f;
+        }
+        const double *Ri = st->R + 9 * i, *Rj = st->R + 9 * j;
+        for (int q = 0; q < dim; q++) {
+            double sd = 0;
+            for (int b = 0; b < dim; b++) sd += (Si[3 * q + b] + Sj[3 * q + b]) * d[b]; /* S / rho^2 (above) */
+            if (fn > 0)
+                for (int b = 0; b < dim; b++) sd += fn * (Ri[3 * q + b] + Rj[3 * q + b]) * d[b];
+            /* with a wall b: -visc beta (v_a - V_b), V_b the wall's own (prescribed) velocity; the
+             * beta v_a part is the implicit drag below */
+            a[q] += m[j] * (-Pij * g * d[q] + sd * g) - (wj ? -visc * beta * v[3 * j + q] : visc * vij[q]);
+        }
+        drag += wj ? visc * beta : 0.0;
+    }
+    if (o->surface_tension > 0 && st->surf[i]) { /* eq. 3.30 */
+        const double *Ni = st->N + 3 * i, nn = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]);
+        if (nn > 0)
+            for (int q = 0; q < dim; q++) a[q] -= o->surface_tension / ri * st->lapC[i] * Ni[q] / nn;
+    }
+    memcpy(st->acc + 3 * i, a, sizeof a);
+    /* the kick. The wall drag -drag v is linear in v (the wall velocities
+     * above are multiples of v_i), so it is taken implicitly: with beta up
+     * to about 5 it would otherwise break the viscous dt limit, which is
+     * set for fluid-fluid pairs (a channel at 100 Pa s blew up) */
+    const int fixed = flags && (flags[i] & PF_FIXED);
+    for (int q = 0; q < 3; q++) /* a fixed particle keeps its prescribed velocity (sph_walls_begin) */
+        st->vnew[3 * i + q] = fixed ? v[3 * i + q] : (v[3 * i + q] + dt * a[q]) / (1.0 + dt * drag);
+}
+
 /* Accelerations, then the kick into st->vnew; then the heat rates
  * (sph_heat.c). Per particle: gravity and the body force; per neighbour the
  * pressure (eq. 3.18) with the artificial viscosity's beta term (eq. 3.41,
@@ -600,88 +689,45 @@ static void phase_artificial_stress(hearth_scene *s) {
  * surface tension (eq. 3.30). */
 static void phase_forces(hearth_scene *s, double dt) {
     struct sph_state *st = s->sph;
-    const hearth_sph_def *o = &s->def.sph;
     const sph_cols c = sph_cols_of(s);
-    const int n = c.n, dim = c.dim, *flags = c.flags;
-    const double *x = c.x, *v = c.v, *m = c.m;
-    const int *off = st->nl.off, *nb = st->nl.j;
-    const double eps_as = o->artificial_stress;
+    const int n = c.n, dim = c.dim;
     /* S / rho^2, as eq. 3.18's pair sum reads it, once per particle instead of twice per pair (the same
      * division, so the same bits); st->S holds it from here to the step's end */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++)
         for (int k = 0; k < 9; k++) st->S[9 * i + k] = st->S[9 * i + k] / (st->rho[i] * st->rho[i]);
-    const double *gvec = s->def.gravity;
+    /* one copy of the loop per dimension: the kernels' dim is a constant in each */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN && !s->body_force_serial)
     for (int i = 0; i < n; i++) {
-        double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0};
-        if (s->body_force) {
-            double bf[3] = {0, 0, 0};
-            s->body_force(s->body_force_ud, s->t, x + 3 * i, bf);
-            for (int q = 0; q < dim; q++) a[q] += bf[q];
-        }
-        const double ri = st->rho[i], Pi = st->prs[i] / (ri * ri), *Si = st->S + 9 * i;
-        double wn[3] = {0, 0, 0}, da = 0, drag = 0;
-        const int wall = flags && !(flags[i] & PF_FIXED) && sph_wall_frame(s, i, wn, &da);
-        const double dah = fmax(da, 0.5 * st->sp[i]);
+        if (dim == 2) forces_one(s, &c, i, 2, dt);
+        else forces_one(s, &c, i, 3, dt);
+    }
+    sph_heat_rates(s); /* reads st->vc and st->sp (phase_kinematics) */
+}
+
+/* One particle's XSPH velocity (phase_xsph), dim a constant in each copy
+ * (2D leaves z out, as forces_one). */
+static inline __attribute__((always_inline)) void xsph_one(struct sph_state *st, const sph_cols *c, int i, const int dim) {
+    const double *x = c->x, *m = c->m, *h = st->h, *rho = st->rho, *vnew = st->vnew;
+    const int *off = st->nl.off, *nb = st->nl.j;
+    double *vi = c->v + 3 * i;
+    const double *wi = vnew + 3 * i;
+    double corr[3] = {0, 0, 0};
+    if (st->xsph[i] > 0) {
+        const double hi = h[i], ri = rho[i];
+        const sph_kc kci = sph_kc_of(dim, hi);
         for (int k = off[i]; k < off[i + 1]; k++) {
             const int j = nb[k];
             double d[3];
-            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-            const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], r = sqrt(r2);
-            if (r <= 0) continue;
-            const double hij = 0.5 * (st->h[i] + st->h[j]), rj = st->rho[j];
-            const double g = sph_dw(dim, r, hij) / r; /* grad_i W = g d */
-            double vij[3], vd = 0;
-            for (int q = 0; q < 3; q++) {
-                vij[q] = v[3 * i + q] - v[3 * j + q];
-                vd += vij[q] * d[q];
-            }
-            double Pij = Pi + st->prs[j] / (rj * rj); /* eq. 3.18 */
-            if (o->av_beta > 0 && vd < 0) {          /* eq. 3.41, with mu_ij of eq. 3.37 */
-                const double muij = hij * vd / (r2 + 0.01 * hij * hij);
-                Pij += o->av_beta * muij * muij / (0.5 * (ri + rj));
-            }
-            const double *Sj = st->S + 9 * j, lv = sph_lap_visc(dim, r, hij);
-            /* eq. 3.19 over rho_i; its Laplacian renormalised (sph_viscous_factor), the pair's mean factor so
-             * the pair's forces stay equal and opposite */
-            const double visc = 0.5 * (st->mu[i] + st->mu[j]) * m[j] / (rj * ri) * lv * 0.5 * (st->vc[i] + st->vc[j]);
-            /* a wall particle's velocity for eq. 3.19: Morris et al. 1997 (sph_wall_frame) */
-            const int wj = wall && (flags[j] & PF_FIXED);
-            const double beta = wj ? sph_wall_beta(d, wn, da, dah) : 1.0;
-            double fn = 0; /* f_ab^4 of the artificial stress */
-            if (eps_as > 0) {
-                const double dp = 0.5 * (st->sp[i] + st->sp[j]);
-                const double f = sph_w(dim, r, hij) / sph_w(dim, dp, hij);
-                fn = f * f * f * f;
-            }
-            const double *Ri = st->R + 9 * i, *Rj = st->R + 9 * j;
-            for (int q = 0; q < dim; q++) {
-                double sd = 0;
-                for (int b = 0; b < 3; b++) sd += (Si[3 * q + b] + Sj[3 * q + b]) * d[b]; /* S / rho^2 (above) */
-                if (fn > 0)
-                    for (int b = 0; b < 3; b++) sd += fn * (Ri[3 * q + b] + Rj[3 * q + b]) * d[b];
-                    /* with a wall b: -visc beta (v_a - V_b), V_b the wall's own (prescribed) velocity; the
-                 * beta v_a part is the implicit drag below */
-                a[q] += m[j] * (-Pij * g * d[q] + sd * g) - (wj ? -visc * beta * v[3 * j + q] : visc * vij[q]);
-            }
-            drag += wj ? visc * beta : 0.0;
+            sph_disp_dim(&st->cells, dim, x + 3 * i, x + 3 * j, d);
+            const double r = sqrt(dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1]);
+            SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
+            const double w = 2 * m[j] / (ri + rho[j]) * sph_w_kc(kc, r);
+            for (int q = 0; q < dim; q++) corr[q] += w * (vnew[3 * j + q] - wi[q]);
         }
-        if (o->surface_tension > 0 && st->surf[i]) { /* eq. 3.30 */
-            const double *Ni = st->N + 3 * i, nn = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]);
-            if (nn > 0)
-                for (int q = 0; q < dim; q++) a[q] -= o->surface_tension / ri * st->lapC[i] * Ni[q] / nn;
-        }
-        memcpy(st->acc + 3 * i, a, sizeof a);
-        /* the kick. The wall drag -drag v is linear in v (the wall velocities
-         * above are multiples of v_i), so it is taken implicitly: with beta up
-         * to about 5 it would otherwise break the viscous dt limit, which is
-         * set for fluid-fluid pairs (a channel at 100 Pa s blew up) */
-        const int fixed = flags && (flags[i] & PF_FIXED);
-        for (int q = 0; q < 3; q++) /* a fixed particle keeps its prescribed velocity (sph_walls_begin) */
-            st->vnew[3 * i + q] = fixed ? v[3 * i + q] : (v[3 * i + q] + dt * a[q]) / (1.0 + dt * drag);
     }
-    sph_heat_rates(s); /* reads st->vc and st->sp (phase_kinematics) */
+    for (int q = 0; q < 3; q++) vi[q] = wi[q] + st->xsph[i] * corr[q];
+    if (dim == 2) vi[2] = 0;
 }
 
 /* XSPH (eq. 3.34, its epsilon the tuner of eq. 4.4) from the kicked
@@ -690,27 +736,12 @@ static void phase_xsph(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim, *flags = c.flags;
-    const double *x = c.x, *m = c.m;
-    double *v = c.v;
-    const int *off = st->nl.off, *nb = st->nl.j;
     double amax = 0;
 #pragma omp parallel for schedule(static) reduction(max : amax) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        double *vi = v + 3 * i;
-        const double *wi = st->vnew + 3 * i;
         if (flags && (flags[i] & PF_FIXED)) continue; /* its prescribed velocity, 0 unless it moves */
-        double corr[3] = {0, 0, 0};
-        if (st->xsph[i] > 0)
-            for (int k = off[i]; k < off[i + 1]; k++) {
-                const int j = nb[k];
-                double d[3];
-                sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-                const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-                const double w = 2 * m[j] / (st->rho[i] + st->rho[j]) * sph_w(dim, r, 0.5 * (st->h[i] + st->h[j]));
-                for (int q = 0; q < dim; q++) corr[q] += w * (st->vnew[3 * j + q] - wi[q]);
-            }
-        for (int q = 0; q < 3; q++) vi[q] = wi[q] + st->xsph[i] * corr[q];
-        if (dim == 2) vi[2] = 0;
+        if (dim == 2) xsph_one(st, &c, i, 2);
+        else xsph_one(st, &c, i, 3);
         const double an = sqrt(st->acc[3 * i] * st->acc[3 * i] + st->acc[3 * i + 1] * st->acc[3 * i + 1] +
                                st->acc[3 * i + 2] * st->acc[3 * i + 2]);
         if (an > amax) amax = an;
