@@ -386,16 +386,18 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
         const double r = sqrt(r2);
         if (r <= 0) continue;
         SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
-        const double Vj = m[j] / rho[j], g = sph_dw_kc(kc, r) / r;
+        double wk, dwk, lapk;
+        sph_w_dw_lap_kc(dim, kc, r, &wk, &dwk, &lapk);
+        const double Vj = m[j] / rho[j], g = dwk / r;
         for (int a = 0; a < dim; a++) {
             const double dv = v[3 * j + a] - v[3 * i + a];
             for (int b = 0; b < dim; b++) L[3 * a + b] += Vj * dv * g * d[b];
             Ni[a] += Vj * g * d[a];
         }
-        lc += Vj * sph_lap_w_kc(dim, kc, r);
+        lc += Vj * lapk;
         /* eq. 3.8's moments for the viscous renormalisation (sph_viscous_factor) */
         const double lr2 = Vj * sph_lap_visc_kc(kc, r) * r2;
-        fill += Vj * sph_w_kc(kc, r);
+        fill += Vj * wk;
         tr += lr2;
         for (int q = 0; q < dim; q++) gm[q] += lr2 * d[q];
     }
@@ -411,6 +413,7 @@ static void phase_kinematics(hearth_scene *s) {
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim;
     for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(c.V0[i]) : sqrt(c.V0[i]); /* once, not per pair */
+    sph_lattice_moment_prepare(s);
     /* one copy of the loop per dimension: the kernels' dim is a constant in each */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
@@ -597,31 +600,24 @@ static void phase_artificial_stress(hearth_scene *s) {
     }
 }
 
-/* One particle's accelerations and kick (phase_forces), with dim a constant
- * in each copy. In 2D the z components are left out: every particle's z and
- * the z of every velocity are 0 there, so each z term is a zero added to a
- * sum that started at +0 and a zero changes no such sum (the same bits). */
-static inline __attribute__((always_inline)) void forces_one(hearth_scene *s, const sph_cols *c, int i, const int dim,
-                                                              double dt) {
-    struct sph_state *st = s->sph;
-    const hearth_sph_def *o = &s->def.sph;
+/* Particle i's pair sums of phase_forces into a[] and *drag, with dim, wall
+ * (i has a wall frame) and as (artificial stress on) constants in each copy.
+ * In 2D the z components are left out: every particle's z and the z of every
+ * velocity are 0 there, so each z term is a zero added to a sum that started
+ * at +0, and a zero changes no such sum (the same bits). Without a wall frame
+ * no pair is a wall pair, so drag stays 0. Prr holds P_j / rho_j^2 (the same
+ * division as per pair, once per particle). */
+static inline __attribute__((always_inline)) void forces_pairs(const struct sph_state *st, const sph_cols *c, int i,
+                                                                const int dim, const int wall, const int as,
+                                                                double av_beta, double eps_as, const double wn[3],
+                                                                double da, double dah, double a[3], double *drag) {
     const int *flags = c->flags;
     const double *x = c->x, *v = c->v, *m = c->m;
     const int *off = st->nl.off, *nb = st->nl.j;
-    const double eps_as = o->artificial_stress, av_beta = o->av_beta;
-    const double *h = st->h, *rho = st->rho, *prs = st->prs, *mu = st->mu, *vc = st->vc;
-    const double *gvec = s->def.gravity;
-    double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0};
-    if (s->body_force) {
-        double bf[3] = {0, 0, 0};
-        s->body_force(s->body_force_ud, s->t, x + 3 * i, bf);
-        for (int q = 0; q < dim; q++) a[q] += bf[q];
-    }
-    const double ri = rho[i], Pi = prs[i] / (ri * ri), *Si = st->S + 9 * i, hi = h[i], mui = mu[i], vci = vc[i];
-    double wn[3] = {0, 0, 0}, da = 0, drag = 0;
-    const int wall = flags && !(flags[i] & PF_FIXED) && sph_wall_frame(s, i, wn, &da);
-    const double dah = fmax(da, 0.5 * st->sp[i]);
+    const double *h = st->h, *rho = st->rho, *Prr = st->perm, *mu = st->mu, *vc = st->vc;
+    const double ri = rho[i], Pi = Prr[i], *Si = st->S + 9 * i, hi = h[i], mui = mu[i], vci = vc[i];
     const sph_kc kci = sph_kc_of(dim, hi);
+    double dr = 0;
     for (int k = off[i]; k < off[i + 1]; k++) {
         const int j = nb[k];
         double d[3];
@@ -636,8 +632,8 @@ static inline __attribute__((always_inline)) void forces_one(hearth_scene *s, co
             vij[q] = v[3 * i + q] - v[3 * j + q];
             vd += vij[q] * d[q];
         }
-        double Pij = Pi + prs[j] / (rj * rj); /* eq. 3.18 */
-        if (av_beta > 0 && vd < 0) {          /* eq. 3.41, with mu_ij of eq. 3.37 */
+        double Pij = Pi + Prr[j]; /* eq. 3.18 */
+        if (av_beta > 0 && vd < 0) { /* eq. 3.41, with mu_ij of eq. 3.37 */
             const double muij = hij * vd / (r2 + 0.01 * hij * hij);
             Pij += av_beta * muij * muij / (0.5 * (ri + rj));
         }
@@ -649,7 +645,7 @@ static inline __attribute__((always_inline)) void forces_one(hearth_scene *s, co
         const int wj = wall && (flags[j] & PF_FIXED);
         const double beta = wj ? sph_wall_beta(d, wn, da, dah) : 1.0;
         double fn = 0; /* f_ab^4 of the artificial stress */
-        if (eps_as > 0) {
+        if (as) {
             const double dp = 0.5 * (st->sp[i] + st->sp[j]);
             const double f = sph_w_kc(kc, r) / sph_w_kc(kc, dp);
             fn = f * f * f * f;
@@ -658,13 +654,44 @@ static inline __attribute__((always_inline)) void forces_one(hearth_scene *s, co
         for (int q = 0; q < dim; q++) {
             double sd = 0;
             for (int b = 0; b < dim; b++) sd += (Si[3 * q + b] + Sj[3 * q + b]) * d[b]; /* S / rho^2 (above) */
-            if (fn > 0)
+            if (as && fn > 0)
                 for (int b = 0; b < dim; b++) sd += fn * (Ri[3 * q + b] + Rj[3 * q + b]) * d[b];
             /* with a wall b: -visc beta (v_a - V_b), V_b the wall's own (prescribed) velocity; the
              * beta v_a part is the implicit drag below */
             a[q] += m[j] * (-Pij * g * d[q] + sd * g) - (wj ? -visc * beta * v[3 * j + q] : visc * vij[q]);
         }
-        drag += wj ? visc * beta : 0.0;
+        if (wall) dr += wj ? visc * beta : 0.0;
+    }
+    *drag = dr;
+    (void)eps_as;
+}
+
+/* One particle's accelerations and kick (phase_forces), dim a constant in
+ * each copy. */
+static inline __attribute__((always_inline)) void forces_one(hearth_scene *s, const sph_cols *c, int i, const int dim,
+                                                              double dt) {
+    struct sph_state *st = s->sph;
+    const hearth_sph_def *o = &s->def.sph;
+    const int *flags = c->flags;
+    const double *x = c->x, *v = c->v;
+    const double eps_as = o->artificial_stress, av_beta = o->av_beta;
+    const double *gvec = s->def.gravity;
+    double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0};
+    if (s->body_force) {
+        double bf[3] = {0, 0, 0};
+        s->body_force(s->body_force_ud, s->t, x + 3 * i, bf);
+        for (int q = 0; q < dim; q++) a[q] += bf[q];
+    }
+    const double ri = st->rho[i];
+    double wn[3] = {0, 0, 0}, da = 0, drag = 0;
+    const int wall = flags && !(flags[i] & PF_FIXED) && sph_wall_frame(s, i, wn, &da);
+    const double dah = fmax(da, 0.5 * st->sp[i]);
+    if (eps_as > 0) {
+        if (wall) forces_pairs(st, c, i, dim, 1, 1, av_beta, eps_as, wn, da, dah, a, &drag);
+        else forces_pairs(st, c, i, dim, 0, 1, av_beta, eps_as, wn, da, dah, a, &drag);
+    } else {
+        if (wall) forces_pairs(st, c, i, dim, 1, 0, av_beta, eps_as, wn, da, dah, a, &drag);
+        else forces_pairs(st, c, i, dim, 0, 0, av_beta, eps_as, wn, da, dah, a, &drag);
     }
     if (o->surface_tension > 0 && st->surf[i]) { /* eq. 3.30 */
         const double *Ni = st->N + 3 * i, nn = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]);
@@ -694,8 +721,10 @@ static void phase_forces(hearth_scene *s, double dt) {
     /* S / rho^2, as eq. 3.18's pair sum reads it, once per particle instead of twice per pair (the same
      * division, so the same bits); st->S holds it from here to the step's end */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++)
+    for (int i = 0; i < n; i++) {
         for (int k = 0; k < 9; k++) st->S[9 * i + k] = st->S[9 * i + k] / (st->rho[i] * st->rho[i]);
+        st->perm[i] = st->prs[i] / (st->rho[i] * st->rho[i]); /* P / rho^2 of eq. 3.18 (perm is free scratch now) */
+    }
     /* one copy of the loop per dimension: the kernels' dim is a constant in each */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN && !s->body_force_serial)
     for (int i = 0; i < n; i++) {

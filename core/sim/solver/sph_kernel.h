@@ -86,6 +86,30 @@ static inline double sph_lap_w(int dim, double r, double h) {
     return sph_lap_w_kc(dim, &c, r);
 }
 
+/* W, dW/dr and the Laplacian of W at one r > 0, as sph_w_kc, sph_dw_kc and
+ * sph_lap_w_kc give them (the same expressions), with one test of q. */
+static inline void sph_w_dw_lap_kc(int dim, const sph_kc *c, double r, double *w, double *dw, double *lap) {
+    const double q = 2.0 * r / c->h;
+    if (q >= 2.0) {
+        *w = *dw = *lap = 0.0;
+        return;
+    }
+    double fw, f1, f2;
+    if (q < 1.0) {
+        fw = 1.0 - 1.5 * q * q + 0.75 * q * q * q;
+        f1 = -3.0 * q + 2.25 * q * q;
+        f2 = -3.0 + 4.5 * q;
+    } else {
+        fw = 0.25 * (2.0 - q) * (2.0 - q) * (2.0 - q);
+        f1 = -0.75 * (2.0 - q) * (2.0 - q);
+        f2 = 1.5 * (2.0 - q);
+    }
+    const double sg = c->sg, k = c->k;
+    *w = sg * fw;
+    *dw = sg * f1 * 2.0 / c->h;
+    *lap = r <= 0 ? -3.0 * dim * sg * k * k : sg * (f2 * k * k + (dim - 1) * f1 * k / r);
+}
+
 /* Laplacian of the viscosity kernel, eq. 3.8 (>= 0 inside the support). */
 static inline double sph_lap_visc_kc(const sph_kc *c, double r) {
     if (r >= c->h) return 0.0;

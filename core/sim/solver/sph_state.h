@@ -30,7 +30,7 @@ struct sph_state {
     int cap, n;     /* arrays hold cap particles; n = particles of the last step (-1 = stale) */
     int valid;      /* per-particle results match the scene's particles */
     int *key, *order;
-    double *perm;   /* permutation scratch, cap doubles */
+    double *perm;   /* permutation scratch, cap doubles; from phase_forces on, P / rho^2 (eq. 3.18) */
     /* S: the deviatoric Kirchhoff-over-J stress of phase_stress; divided by
      * rho^2 in place once phase_forces starts (what eq. 3.18's sum reads) */
     double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *surf, *rhof, *dT, *Tprev;
@@ -39,6 +39,8 @@ struct sph_state {
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
     double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
     double amax;    /* largest |a| of the last step, for the force limit */
+    /* sph_viscous_factor's resting-lattice moment for h / spacing = lm_ratio (sph_lattice_moment_prepare) */
+    double lm_ratio, lm_val;
     /* Per material: the schema index of the plugin parameter SPH applies
      * itself as viscosity (eq. 3.19), or -1. Resolved once, when the material
      * is added (sph_material_added); see sph_viscosity_index. */
@@ -91,6 +93,10 @@ hearth_status sph_material_added(hearth_scene *s, int mat, hearth_error *err);
 /// L = sph_lap_visc(r, h_ab): fill = sum V_b W(r, h_ab), tr = sum V_b L r^2,
 /// g = sum V_b L r^2 d (phase_kinematics takes them). Needs st->sp, st->rho, st->h.
 double sph_viscous_factor(const hearth_scene *s, int i, double fill, double tr, const double g[3]);
+/// Before phase_kinematics' loop: keep the resting-lattice moment for the
+/// first particle's h / spacing, which most particles share (it is summed
+/// over the lattice, so each call for it would repeat the same sum).
+void sph_lattice_moment_prepare(hearth_scene *s);
 
 /* ---- sph_walls.c ---- */
 /// The wall normal n and fluid particle i's distance da to the wall surface; 0 without fixed neighbours.

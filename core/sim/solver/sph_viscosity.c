@@ -103,6 +103,17 @@ double sph_viscous_factor(const hearth_scene *s, int i, double fill, double tr, 
     const double uoff = off_c <= 0.02 ? 1.0 : off_c >= 0.05 ? 0.0 : (0.05 - off_c) / 0.03;
     const double u = uphi * uoff;
     double c = u > 0 ? 2.0 * dim * phi / tr : 1.0;
-    if (u < 1) c = u * c + (1 - u) * 2.0 * dim / lattice_moment(dim, st->h[i] / st->sp[i]);
+    if (u < 1) {
+        const double ratio = st->h[i] / st->sp[i];
+        c = u * c + (1 - u) * 2.0 * dim / (ratio == st->lm_ratio ? st->lm_val : lattice_moment(dim, ratio));
+    }
     return c < 0.8 ? 0.8 : c > 1.2 ? 1.2 : c;
+}
+
+void sph_lattice_moment_prepare(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    st->lm_ratio = NAN; /* matches no ratio */
+    if (s->ps.n < 1 || !(st->sp[0] > 0)) return;
+    st->lm_ratio = st->h[0] / st->sp[0];
+    st->lm_val = lattice_moment(s->def.dim, st->lm_ratio);
 }
