@@ -376,7 +376,7 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
     double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = m[i] / st->rho[i] * sph_lap_w(dim, 0, st->h[i]);
     double fill = 0, tr = 0, gm[3] = {0, 0, 0};
     /* in 2D the z rows and columns stay +0 (every z is 0; see forces_one) */
-    const double *h = st->h, *rho = st->rho, hi = h[i];
+    const double *h = st->h, *V = st->perm, hi = h[i];
     const sph_kc kci = sph_kc_of(dim, hi);
     for (int k = off[i]; k < off[i + 1]; k++) {
         const int j = nb[k];
@@ -388,7 +388,7 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
         SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
         double wk, dwk, lapk;
         sph_w_dw_lap_kc(dim, kc, r, &wk, &dwk, &lapk);
-        const double Vj = m[j] / rho[j], g = dwk / r;
+        const double Vj = V[j], g = dwk / r;
         for (int a = 0; a < dim; a++) {
             const double dv = v[3 * j + a] - v[3 * i + a];
             for (int b = 0; b < dim; b++) L[3 * a + b] += Vj * dv * g * d[b];
@@ -414,6 +414,8 @@ static void phase_kinematics(hearth_scene *s) {
     const int n = c.n, dim = c.dim;
     for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(c.V0[i]) : sqrt(c.V0[i]); /* once, not per pair */
     sph_lattice_moment_prepare(s);
+    /* V = m / rho once per particle (the same division as per pair); perm is free scratch after the sort */
+    for (int i = 0; i < n; i++) st->perm[i] = c.m[i] / st->rho[i];
     /* one copy of the loop per dimension: the kernels' dim is a constant in each */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {

@@ -30,7 +30,7 @@ struct sph_state {
     int cap, n;     /* arrays hold cap particles; n = particles of the last step (-1 = stale) */
     int valid;      /* per-particle results match the scene's particles */
     int *key, *order;
-    double *perm;   /* permutation scratch, cap doubles; from phase_forces on, P / rho^2 (eq. 3.18) */
+    double *perm;   /* permutation scratch, cap doubles; m / rho in phase_kinematics, P / rho^2 (eq. 3.18) from phase_forces on */
     /* S: the deviatoric Kirchhoff-over-J stress of phase_stress; divided by
      * rho^2 in place once phase_forces starts (what eq. 3.18's sum reads) */
     double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *surf, *rhof, *dT, *Tprev;
