@@ -30,9 +30,9 @@ struct sph_state {
     int cap, n;     /* arrays hold cap particles; n = particles of the last step (-1 = stale) */
     int valid;      /* per-particle results match the scene's particles */
     int *key, *order;
-    double *perm;   /* permutation scratch, cap doubles; m / rho in phase_kinematics, P / rho^2 (eq. 3.18) from phase_forces on */
+    double *perm;   /* permutation scratch, cap doubles; m / rho in phase_kinematics, P / rho^2 (eq. 3.18) from sph_forces on */
     /* S: the deviatoric Kirchhoff-over-J stress of phase_stress; divided by
-     * rho^2 in place once phase_forces starts (what eq. 3.18's sum reads) */
+     * rho^2 in place once sph_forces starts (what eq. 3.18's sum reads) */
     double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *surf, *rhof, *dT, *Tprev;
     double *rho0, *B, *mu, *c0, *xsph;
     double *vc;     /* the viscous Laplacian's renormalisation (viscous_moments), per particle this step */
@@ -98,12 +98,21 @@ double sph_viscous_factor(const hearth_scene *s, int i, double fill, double tr, 
 /// over the lattice, so each call for it would repeat the same sum).
 void sph_lattice_moment_prepare(hearth_scene *s);
 
+/* ---- sph_forces.c ---- */
+/// The step's artificial stress R / rho^2 per particle (Monaghan 2000), when
+/// sph.artificial_stress > 0; needs st->S and st->prs.
+void sph_artificial_stress(hearth_scene *s);
+/// Accelerations (eq. 3.18, 3.19, 3.30, 3.41, the stresses, gravity, the
+/// body force) into st->acc and the kicked velocities into st->vnew; divides
+/// st->S by rho^2 in place and leaves P / rho^2 in st->perm.
+void sph_forces(hearth_scene *s, double dt);
+
 /* ---- sph_walls.c ---- */
 /// The wall normal n and fluid particle i's distance da to the wall surface; 0 without fixed neighbours.
 int sph_wall_frame(const hearth_scene *s, int i, double n[3], double *da);
 /// 1 + d_b / d_a: the factor on v_a in a's viscous interaction with wall
 /// particle b at d = x_a - x_b (sph_walls.c says why); dah: d_a, at least half
-/// of a's spacing. Inline: an outside call in phase_forces' pair loop made
+/// of a's spacing. Inline: an outside call in sph_forces' pair loop made
 /// the compiler reload every state pointer for every pair.
 static inline double sph_wall_beta(const double d[3], const double n[3], double da, double dah) {
     const double db = d[0] * n[0] + d[1] * n[1] + d[2] * n[2] - da;

@@ -2,7 +2,7 @@
  * loop (Rodriguez-Arenas 2011 eq. 3.19 with the kernel Laplacian of eq.
  * 3.8): which plugin parameter is the core's viscosity (contract rule 3 of
  * <hearth/material.h>), and the per-particle renormalisation of eq. 3.8 by
- * its discrete second moment (sph_viscous_factor). phase_forces (sph.c)
+ * its discrete second moment (sph_viscous_factor). sph_forces (sph_forces.c)
  * applies both. */
 #include <math.h>
 
@@ -16,7 +16,7 @@
 
 /* Contract rule 3 of <hearth/material.h>: under SPH a plugin parameter named
  * `viscosity` (Pa s) is the core's. SPH applies it itself, in the viscous
- * term of eq. 3.19 with no-slip walls (phase_forces), limits the step with
+ * term of eq. 3.19 with no-slip walls (sph_forces), limits the step with
  * viscosity / density (sph_stable_dt), and passes 0 for it to the plugin's
  * stress (phase_stress), so the law does not apply it a second time. Under
  * MPM the plugin applies it, like any other parameter. This is the one place
