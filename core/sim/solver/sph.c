@@ -19,12 +19,14 @@
  *   phase_stress         F <- (I + dt L) F, the plugin's Kirchhoff stress
  *                        through the material door; its deviator enters the
  *                        momentum equation (Tait gives the pressure)
- *   phase_artificial_stress  on tensile principal stresses (Monaghan 2000)
- *   phase_forces         pressure (3.18), deviatoric stress, artificial
+ *   sph_artificial_stress  on tensile principal stresses (Monaghan 2000)
+ *                        (sph_forces.c)
+ *   sph_forces           pressure (3.18), deviatoric stress, artificial
  *                        stress, viscosity (3.19) with no-slip walls (Morris
  *                        et al. 1997), artificial viscosity beta term (3.41),
- *                        surface tension (3.30), gravity; the kick; then
- *                        heat (sph_heat.c): internal (3.45-3.46), external
+ *                        surface tension (3.30), gravity; the kick
+ *                        (sph_forces.c)
+ *   sph_heat_rates       heat (sph_heat.c): internal (3.45-3.46), external
  *                        at surface particles (3.42), the oven's Robin flux
  *                        and heated colliders' contact beta (as MPM)
  *   phase_xsph           XSPH (3.34 with the tuner of 4.4)
@@ -38,8 +40,8 @@
  * Every particle writes only its own slots and sums its neighbours in list
  * order, so a step is deterministic for any thread count. The step's helpers
  * live beside it (sph_state.h shares the state): the viscosity rule and eq.
- * 3.8's renormalisation in sph_viscosity.c, the wall particles in
- * sph_walls.c, the heat rates in sph_heat.c, the stable dt in sph_dt.c.
+ * 3.8's renormalisation in sph_viscosity.c, the forces in sph_forces.c, the
+ * wall particles in sph_walls.c, the heat rates in sph_heat.c, the stable dt in sph_dt.c.
  *
  * dt (sph_stable_dt, sph_dt.c) is the smallest of CFL (cfl dx / (speed + sound speed),
  * as MPM, so the guard's checks hold), viscous (dt_viscous rho h^2 / mu),
@@ -375,24 +377,31 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
      * surface outward (a square drop blew apart) */
     double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = m[i] / st->rho[i] * sph_lap_w(dim, 0, st->h[i]);
     double fill = 0, tr = 0, gm[3] = {0, 0, 0};
+    /* in 2D the z rows and columns stay +0 (every z is 0; see forces_pairs in sph_forces.c) */
+    const double *h = st->h, *V = st->perm, hi = h[i];
+    const sph_kc kci = sph_kc_of(dim, hi);
     for (int k = off[i]; k < off[i + 1]; k++) {
         const int j = nb[k];
         double d[3];
-        sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-        const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], r = sqrt(r2), hij = 0.5 * (st->h[i] + st->h[j]);
+        sph_disp_dim(&st->cells, dim, x + 3 * i, x + 3 * j, d);
+        const double r2 = dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1];
+        const double r = sqrt(r2);
         if (r <= 0) continue;
-        const double Vj = m[j] / st->rho[j], g = sph_dw(dim, r, hij) / r;
-        for (int a = 0; a < 3; a++) {
+        SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
+        double wk, dwk, lapk;
+        sph_w_dw_lap_kc(dim, kc, r, &wk, &dwk, &lapk);
+        const double Vj = V[j], g = dwk / r;
+        for (int a = 0; a < dim; a++) {
             const double dv = v[3 * j + a] - v[3 * i + a];
-            for (int b = 0; b < 3; b++) L[3 * a + b] += Vj * dv * g * d[b];
+            for (int b = 0; b < dim; b++) L[3 * a + b] += Vj * dv * g * d[b];
             Ni[a] += Vj * g * d[a];
         }
-        lc += Vj * sph_lap_w(dim, r, hij);
+        lc += Vj * lapk;
         /* eq. 3.8's moments for the viscous renormalisation (sph_viscous_factor) */
-        const double lr2 = Vj * sph_lap_visc(dim, r, hij) * r2;
-        fill += Vj * sph_w(dim, r, hij);
+        const double lr2 = Vj * sph_lap_visc_kc(kc, r) * r2;
+        fill += Vj * wk;
         tr += lr2;
-        for (int q = 0; q < 3; q++) gm[q] += lr2 * d[q];
+        for (int q = 0; q < dim; q++) gm[q] += lr2 * d[q];
     }
     st->vc[i] = sph_viscous_factor(s, i, fill, tr, gm);
     memcpy(c->C + 9 * i, L, sizeof L);
@@ -406,6 +415,9 @@ static void phase_kinematics(hearth_scene *s) {
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim;
     for (int i = 0; i < n; i++) st->sp[i] = dim == 3 ? cbrt(c.V0[i]) : sqrt(c.V0[i]); /* once, not per pair */
+    sph_lattice_moment_prepare(s);
+    /* V = m / rho once per particle (the same division as per pair); perm is free scratch after the sort */
+    for (int i = 0; i < n; i++) st->perm[i] = c.m[i] / st->rho[i];
     /* one copy of the loop per dimension: the kernels' dim is a constant in each */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
@@ -557,131 +569,29 @@ static int phase_stress(hearth_scene *s, double dt, step_report *rep) {
     return 0;
 }
 
-/* Artificial stress against the tensile instability (Monaghan 2000,
- * J. Comput. Phys. 159, 290-311; Gray, Monaghan & Swift 2001, Comput.
- * Methods Appl. Mech. Engrg. 190, 6641-6662, for elastic solids). Under
- * tension, SPH particles attract their neighbours more the closer they
- * are, so they clump in pairs and strings and a stretched body breaks
- * (bread of the dead split along its toppings). In the principal frame
- * of sigma = S - p I each tensile component sigma'_k > 0 gets
- * R'_k = -epsilon sigma'_k / rho^2 (compressive ones 0); rotated back,
- * R_a enters the momentum equation as sum_b m_b f_ab^n (R_a + R_b) .
- * grad_a W with f_ab = W(r_ab) / W(dp), dp the rest spacing, n = 4: a
- * short-range repulsion that is strong exactly where particles clump
- * (r < dp) and negligible at the rest spacing's neighbours beyond.
- * Off by default (sph.artificial_stress = 0): the same repulsion resists
- * a cooling bubble's contraction (at 0.3 it loses 31% less volume than
- * its gas, `sph_bubble_cooling_contracts`); bread of the dead sets 0.3. */
-static void phase_artificial_stress(hearth_scene *s) {
-    struct sph_state *st = s->sph;
-    const int n = s->ps.n;
-    const double eps_as = s->def.sph.artificial_stress;
-    if (!(eps_as > 0)) return;
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        double sig[9], l[3], Q[9], *Ri = st->R + 9 * i;
-        for (int a = 0; a < 9; a++) sig[a] = st->S[9 * i + a] - (a % 4 == 0 ? st->prs[i] : 0.0);
-        t3_sym_eigen(sig, l, Q);
-        double r[3];
-        for (int k = 0; k < 3; k++) r[k] = l[k] > 0 ? -eps_as * l[k] / (st->rho[i] * st->rho[i]) : 0.0;
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++) { /* R = Q diag(r) Q^T */
-                Ri[3 * a + b] = 0;
-                for (int k = 0; k < 3; k++) Ri[3 * a + b] += Q[3 * a + k] * r[k] * Q[3 * b + k];
-            }
-    }
-}
-
-/* Accelerations, then the kick into st->vnew; then the heat rates
- * (sph_heat.c). Per particle: gravity and the body force; per neighbour the
- * pressure (eq. 3.18) with the artificial viscosity's beta term (eq. 3.41,
- * mu_ij of eq. 3.37), the deviatoric and artificial stresses, the viscosity
- * (eq. 3.19) with no-slip walls (Morris et al. 1997, sph_wall_frame); then
- * surface tension (eq. 3.30). */
-static void phase_forces(hearth_scene *s, double dt) {
-    struct sph_state *st = s->sph;
-    const hearth_sph_def *o = &s->def.sph;
-    const sph_cols c = sph_cols_of(s);
-    const int n = c.n, dim = c.dim, *flags = c.flags;
-    const double *x = c.x, *v = c.v, *m = c.m;
+/* One particle's XSPH velocity (phase_xsph), dim a constant in each copy
+ * (2D leaves z out, as forces_pairs in sph_forces.c). */
+static inline __attribute__((always_inline)) void xsph_one(struct sph_state *st, const sph_cols *c, int i, const int dim) {
+    const double *x = c->x, *m = c->m, *h = st->h, *rho = st->rho, *vnew = st->vnew;
     const int *off = st->nl.off, *nb = st->nl.j;
-    const double eps_as = o->artificial_stress;
-    /* S / rho^2, as eq. 3.18's pair sum reads it, once per particle instead of twice per pair (the same
-     * division, so the same bits); st->S holds it from here to the step's end */
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++)
-        for (int k = 0; k < 9; k++) st->S[9 * i + k] = st->S[9 * i + k] / (st->rho[i] * st->rho[i]);
-    const double *gvec = s->def.gravity;
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN && !s->body_force_serial)
-    for (int i = 0; i < n; i++) {
-        double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0};
-        if (s->body_force) {
-            double bf[3] = {0, 0, 0};
-            s->body_force(s->body_force_ud, s->t, x + 3 * i, bf);
-            for (int q = 0; q < dim; q++) a[q] += bf[q];
-        }
-        const double ri = st->rho[i], Pi = st->prs[i] / (ri * ri), *Si = st->S + 9 * i;
-        double wn[3] = {0, 0, 0}, da = 0, drag = 0;
-        const int wall = flags && !(flags[i] & PF_FIXED) && sph_wall_frame(s, i, wn, &da);
-        const double dah = fmax(da, 0.5 * st->sp[i]);
+    double *vi = c->v + 3 * i;
+    const double *wi = vnew + 3 * i;
+    double corr[3] = {0, 0, 0};
+    if (st->xsph[i] > 0) {
+        const double hi = h[i], ri = rho[i];
+        const sph_kc kci = sph_kc_of(dim, hi);
         for (int k = off[i]; k < off[i + 1]; k++) {
             const int j = nb[k];
             double d[3];
-            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-            const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], r = sqrt(r2);
-            if (r <= 0) continue;
-            const double hij = 0.5 * (st->h[i] + st->h[j]), rj = st->rho[j];
-            const double g = sph_dw(dim, r, hij) / r; /* grad_i W = g d */
-            double vij[3], vd = 0;
-            for (int q = 0; q < 3; q++) {
-                vij[q] = v[3 * i + q] - v[3 * j + q];
-                vd += vij[q] * d[q];
-            }
-            double Pij = Pi + st->prs[j] / (rj * rj); /* eq. 3.18 */
-            if (o->av_beta > 0 && vd < 0) {          /* eq. 3.41, with mu_ij of eq. 3.37 */
-                const double muij = hij * vd / (r2 + 0.01 * hij * hij);
-                Pij += o->av_beta * muij * muij / (0.5 * (ri + rj));
-            }
-            const double *Sj = st->S + 9 * j, lv = sph_lap_visc(dim, r, hij);
-            /* eq. 3.19 over rho_i; its Laplacian renormalised (sph_viscous_factor), the pair's mean factor so
-             * the pair's forces stay equal and opposite */
-            const double visc = 0.5 * (st->mu[i] + st->mu[j]) * m[j] / (rj * ri) * lv * 0.5 * (st->vc[i] + st->vc[j]);
-            /* a wall particle's velocity for eq. 3.19: Morris et al. 1997 (sph_wall_frame) */
-            const int wj = wall && (flags[j] & PF_FIXED);
-            const double beta = wj ? sph_wall_beta(d, wn, da, dah) : 1.0;
-            double fn = 0; /* f_ab^4 of the artificial stress */
-            if (eps_as > 0) {
-                const double dp = 0.5 * (st->sp[i] + st->sp[j]);
-                const double f = sph_w(dim, r, hij) / sph_w(dim, dp, hij);
-                fn = f * f * f * f;
-            }
-            const double *Ri = st->R + 9 * i, *Rj = st->R + 9 * j;
-            for (int q = 0; q < dim; q++) {
-                double sd = 0;
-                for (int b = 0; b < 3; b++) sd += (Si[3 * q + b] + Sj[3 * q + b]) * d[b]; /* S / rho^2 (above) */
-                if (fn > 0)
-                    for (int b = 0; b < 3; b++) sd += fn * (Ri[3 * q + b] + Rj[3 * q + b]) * d[b];
-                    /* with a wall b: -visc beta (v_a - V_b), V_b the wall's own (prescribed) velocity; the
-                 * beta v_a part is the implicit drag below */
-                a[q] += m[j] * (-Pij * g * d[q] + sd * g) - (wj ? -visc * beta * v[3 * j + q] : visc * vij[q]);
-            }
-            drag += wj ? visc * beta : 0.0;
+            sph_disp_dim(&st->cells, dim, x + 3 * i, x + 3 * j, d);
+            const double r = sqrt(dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1]);
+            SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
+            const double w = 2 * m[j] / (ri + rho[j]) * sph_w_kc(kc, r);
+            for (int q = 0; q < dim; q++) corr[q] += w * (vnew[3 * j + q] - wi[q]);
         }
-        if (o->surface_tension > 0 && st->surf[i]) { /* eq. 3.30 */
-            const double *Ni = st->N + 3 * i, nn = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]);
-            if (nn > 0)
-                for (int q = 0; q < dim; q++) a[q] -= o->surface_tension / ri * st->lapC[i] * Ni[q] / nn;
-        }
-        memcpy(st->acc + 3 * i, a, sizeof a);
-        /* the kick. The wall drag -drag v is linear in v (the wall velocities
-         * above are multiples of v_i), so it is taken implicitly: with beta up
-         * to about 5 it would otherwise break the viscous dt limit, which is
-         * set for fluid-fluid pairs (a channel at 100 Pa s blew up) */
-        const int fixed = flags && (flags[i] & PF_FIXED);
-        for (int q = 0; q < 3; q++) /* a fixed particle keeps its prescribed velocity (sph_walls_begin) */
-            st->vnew[3 * i + q] = fixed ? v[3 * i + q] : (v[3 * i + q] + dt * a[q]) / (1.0 + dt * drag);
     }
-    sph_heat_rates(s); /* reads st->vc and st->sp (phase_kinematics) */
+    for (int q = 0; q < 3; q++) vi[q] = wi[q] + st->xsph[i] * corr[q];
+    if (dim == 2) vi[2] = 0;
 }
 
 /* XSPH (eq. 3.34, its epsilon the tuner of eq. 4.4) from the kicked
@@ -690,27 +600,12 @@ static void phase_xsph(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim, *flags = c.flags;
-    const double *x = c.x, *m = c.m;
-    double *v = c.v;
-    const int *off = st->nl.off, *nb = st->nl.j;
     double amax = 0;
 #pragma omp parallel for schedule(static) reduction(max : amax) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        double *vi = v + 3 * i;
-        const double *wi = st->vnew + 3 * i;
         if (flags && (flags[i] & PF_FIXED)) continue; /* its prescribed velocity, 0 unless it moves */
-        double corr[3] = {0, 0, 0};
-        if (st->xsph[i] > 0)
-            for (int k = off[i]; k < off[i + 1]; k++) {
-                const int j = nb[k];
-                double d[3];
-                sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-                const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-                const double w = 2 * m[j] / (st->rho[i] + st->rho[j]) * sph_w(dim, r, 0.5 * (st->h[i] + st->h[j]));
-                for (int q = 0; q < dim; q++) corr[q] += w * (st->vnew[3 * j + q] - wi[q]);
-            }
-        for (int q = 0; q < 3; q++) vi[q] = wi[q] + st->xsph[i] * corr[q];
-        if (dim == 2) vi[2] = 0;
+        if (dim == 2) xsph_one(st, &c, i, 2);
+        else xsph_one(st, &c, i, 3);
         const double an = sqrt(st->acc[3 * i] * st->acc[3 * i] + st->acc[3 * i + 1] * st->acc[3 * i + 1] +
                                st->acc[3 * i + 2] * st->acc[3 * i + 2]);
         if (an > amax) amax = an;
@@ -824,8 +719,9 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     phase_kinematics(s);
     phase_pressure(s);
     if (phase_stress(s, dt, rep)) return HEARTH_OK; /* the guard reads rep */
-    phase_artificial_stress(s);
-    phase_forces(s, dt);
+    sph_artificial_stress(s);
+    sph_forces(s, dt);
+    sph_heat_rates(s); /* reads st->vc and st->sp (phase_kinematics) */
     phase_xsph(s);
     phase_drift(s, dt, rep);
     sph_walls_end(s, dt);

@@ -130,28 +130,49 @@ static int stencil(const sph_cells *c, const double *xi, int lo[27], int hi[27],
 
 /* Particle i's neighbours into out (room for the stencil's candidates), in
  * stencil order; with rho, its density by summation (eq. 3.13) over them in
- * that order. Returns their count. */
-static int walk(const sph_cells *c, const double *x, int i, const double *h, double h0, const double *m, double *rho,
-                const int *lo, const int *hi, int nr, int *out) {
+ * that order. Returns their count. dim is a constant in each copy (walk);
+ * in 2D z is left out of r^2 (every z is 0, and + 0 changes no sum of
+ * squares), and pairs with h_j = h_i take i's kernel constants (the same
+ * bits: sph_kernel.h). `fast`, a constant too: no periodic axis, and h, m
+ * and rho given (the step's case); the rest is read as the arguments say. */
+static inline __attribute__((always_inline)) int walk_dim(const sph_cells *c, const int dim, const int fast,
+                                                          const double *x, int i, const double *h, double h0,
+                                                          const double *m, double *rho, const int *lo, const int *hi,
+                                                          int nr, int *out) {
     const double *xi = x + 3 * i;
-    const double hi_ = h ? h[i] : h0;
-    double r = rho ? m[i] * sph_w(c->dim, 0, hi_) : 0;
+    const int withh = fast || h, withrho = fast || rho, anyper = !fast && c->anyper;
+    const double hi_ = withh ? h[i] : h0;
+    const sph_kc kci = sph_kc_of(dim, hi_);
+    double r = withrho ? m[i] * sph_w_kc(&kci, 0) : 0;
     int cnt = 0;
     for (int q = 0; q < nr; q++)
         for (int j = lo[q]; j < hi[q]; j++) {
             if (j == i) continue;
             double d[3];
-            if (c->anyper) sph_disp(c, xi, x + 3 * j, d);
+            if (anyper) sph_disp(c, xi, x + 3 * j, d);
             else d[0] = xi[0] - x[3 * j], d[1] = xi[1] - x[3 * j + 1], d[2] = xi[2] - x[3 * j + 2];
-            const double r2d = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            const double hij = h ? 0.5 * (hi_ + h[j]) : h0;
+            const double r2d = dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1];
+            const double hj = withh ? h[j] : h0;
+            const double hij = withh ? 0.5 * (hi_ + hj) : h0;
             if (r2d < hij * hij) {
                 out[cnt++] = j;
-                if (rho) r += m[j] * sph_w(c->dim, sqrt(r2d), hij);
+                if (withrho) {
+                    SPH_PAIR_KC(kc, dim, kci, hi_, hj);
+                    r += m[j] * sph_w_kc(kc, sqrt(r2d));
+                }
             }
         }
-    if (rho) rho[i] = r;
+    if (withrho) rho[i] = r;
     return cnt;
+}
+
+static int walk(const sph_cells *c, const double *x, int i, const double *h, double h0, const double *m, double *rho,
+                const int *lo, const int *hi, int nr, int *out) {
+    if (!c->anyper && h && m && rho)
+        return c->dim == 2 ? walk_dim(c, 2, 1, x, i, h, h0, m, rho, lo, hi, nr, out)
+                           : walk_dim(c, 3, 1, x, i, h, h0, m, rho, lo, hi, nr, out);
+    return c->dim == 2 ? walk_dim(c, 2, 0, x, i, h, h0, m, rho, lo, hi, nr, out)
+                       : walk_dim(c, 3, 0, x, i, h, h0, m, rho, lo, hi, nr, out);
 }
 
 static hearth_status nlist_reserve(sph_nlist *nl, int n, size_t total, hearth_error *err) {

@@ -72,6 +72,16 @@ static inline void sph_disp(const sph_cells *c, const double *xi, const double *
     }
 }
 
+/// The same displacement with dim a constant: without periodic axes the plain
+/// difference (what sph_disp gives then), and in 2D a z of 0 (every 2D
+/// particle's z is 0, so sph_disp's z is +0 too).
+static inline __attribute__((always_inline)) void sph_disp_dim(const sph_cells *c, const int dim, const double *xi,
+                                                               const double *xj, double d[3]) {
+    if (c->anyper) sph_disp(c, xi, xj, d);
+    else d[0] = xi[0] - xj[0], d[1] = xi[1] - xj[1], d[2] = xi[2] - xj[2];
+    if (dim == 2) d[2] = 0;
+}
+
 /// Neighbour lists of sorted particles: j is a neighbour of i (j != i) when
 /// |x_i - x_j| < (h_i + h_j) / 2 (symmetric h_ij, eq. 3.56). h may be NULL
 /// for the constant h0. The cell edge must be >= max h. One walk per

@@ -30,15 +30,17 @@ struct sph_state {
     int cap, n;     /* arrays hold cap particles; n = particles of the last step (-1 = stale) */
     int valid;      /* per-particle results match the scene's particles */
     int *key, *order;
-    double *perm;   /* permutation scratch, cap doubles */
+    double *perm;   /* permutation scratch, cap doubles; m / rho in phase_kinematics, P / rho^2 (eq. 3.18) from sph_forces on */
     /* S: the deviatoric Kirchhoff-over-J stress of phase_stress; divided by
-     * rho^2 in place once phase_forces starts (what eq. 3.18's sum reads) */
+     * rho^2 in place once sph_forces starts (what eq. 3.18's sum reads) */
     double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *surf, *rhof, *dT, *Tprev;
     double *rho0, *B, *mu, *c0, *xsph;
     double *vc;     /* the viscous Laplacian's renormalisation (viscous_moments), per particle this step */
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
     double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
     double amax;    /* largest |a| of the last step, for the force limit */
+    /* sph_viscous_factor's resting-lattice moment for h / spacing = lm_ratio (sph_lattice_moment_prepare) */
+    double lm_ratio, lm_val;
     /* Per material: the schema index of the plugin parameter SPH applies
      * itself as viscosity (eq. 3.19), or -1. Resolved once, when the material
      * is added (sph_material_added); see sph_viscosity_index. */
@@ -91,13 +93,26 @@ hearth_status sph_material_added(hearth_scene *s, int mat, hearth_error *err);
 /// L = sph_lap_visc(r, h_ab): fill = sum V_b W(r, h_ab), tr = sum V_b L r^2,
 /// g = sum V_b L r^2 d (phase_kinematics takes them). Needs st->sp, st->rho, st->h.
 double sph_viscous_factor(const hearth_scene *s, int i, double fill, double tr, const double g[3]);
+/// Before phase_kinematics' loop: keep the resting-lattice moment for the
+/// first particle's h / spacing, which most particles share (it is summed
+/// over the lattice, so each call for it would repeat the same sum).
+void sph_lattice_moment_prepare(hearth_scene *s);
+
+/* ---- sph_forces.c ---- */
+/// The step's artificial stress R / rho^2 per particle (Monaghan 2000), when
+/// sph.artificial_stress > 0; needs st->S and st->prs.
+void sph_artificial_stress(hearth_scene *s);
+/// Accelerations (eq. 3.18, 3.19, 3.30, 3.41, the stresses, gravity, the
+/// body force) into st->acc and the kicked velocities into st->vnew; divides
+/// st->S by rho^2 in place and leaves P / rho^2 in st->perm.
+void sph_forces(hearth_scene *s, double dt);
 
 /* ---- sph_walls.c ---- */
 /// The wall normal n and fluid particle i's distance da to the wall surface; 0 without fixed neighbours.
 int sph_wall_frame(const hearth_scene *s, int i, double n[3], double *da);
 /// 1 + d_b / d_a: the factor on v_a in a's viscous interaction with wall
 /// particle b at d = x_a - x_b (sph_walls.c says why); dah: d_a, at least half
-/// of a's spacing. Inline: an outside call in phase_forces' pair loop made
+/// of a's spacing. Inline: an outside call in sph_forces' pair loop made
 /// the compiler reload every state pointer for every pair.
 static inline double sph_wall_beta(const double d[3], const double n[3], double da, double dah) {
     const double db = d[0] * n[0] + d[1] * n[1] + d[2] * n[2] - da;

@@ -2,7 +2,7 @@
  * loop (Rodriguez-Arenas 2011 eq. 3.19 with the kernel Laplacian of eq.
  * 3.8): which plugin parameter is the core's viscosity (contract rule 3 of
  * <hearth/material.h>), and the per-particle renormalisation of eq. 3.8 by
- * its discrete second moment (sph_viscous_factor). phase_forces (sph.c)
+ * its discrete second moment (sph_viscous_factor). sph_forces (sph_forces.c)
  * applies both. */
 #include <math.h>
 
@@ -16,7 +16,7 @@
 
 /* Contract rule 3 of <hearth/material.h>: under SPH a plugin parameter named
  * `viscosity` (Pa s) is the core's. SPH applies it itself, in the viscous
- * term of eq. 3.19 with no-slip walls (phase_forces), limits the step with
+ * term of eq. 3.19 with no-slip walls (sph_forces), limits the step with
  * viscosity / density (sph_stable_dt), and passes 0 for it to the plugin's
  * stress (phase_stress), so the law does not apply it a second time. Under
  * MPM the plugin applies it, like any other parameter. This is the one place
@@ -103,6 +103,17 @@ double sph_viscous_factor(const hearth_scene *s, int i, double fill, double tr, 
     const double uoff = off_c <= 0.02 ? 1.0 : off_c >= 0.05 ? 0.0 : (0.05 - off_c) / 0.03;
     const double u = uphi * uoff;
     double c = u > 0 ? 2.0 * dim * phi / tr : 1.0;
-    if (u < 1) c = u * c + (1 - u) * 2.0 * dim / lattice_moment(dim, st->h[i] / st->sp[i]);
+    if (u < 1) {
+        const double ratio = st->h[i] / st->sp[i];
+        c = u * c + (1 - u) * 2.0 * dim / (ratio == st->lm_ratio ? st->lm_val : lattice_moment(dim, ratio));
+    }
     return c < 0.8 ? 0.8 : c > 1.2 ? 1.2 : c;
+}
+
+void sph_lattice_moment_prepare(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    st->lm_ratio = NAN; /* matches no ratio */
+    if (s->ps.n < 1 || !(st->sp[0] > 0)) return;
+    st->lm_ratio = st->h[0] / st->sp[0];
+    st->lm_val = lattice_moment(s->def.dim, st->lm_ratio);
 }

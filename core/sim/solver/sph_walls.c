@@ -1,5 +1,5 @@
 /* sph_walls.c: fixed particles as walls of the SPH solver: the no-slip
- * wall velocities of eq. 3.19 (Morris et al. 1997), which phase_forces
+ * wall velocities of eq. 3.19 (Morris et al. 1997), which sph_forces
  * (sph.c) applies in the viscous term, and the prescribed rigid motion of a
  * fixed body (hearth_scene_body_motion: lids, paddles, pistons). */
 #include <math.h>
@@ -61,7 +61,7 @@ int sph_wall_frame(const hearth_scene *s, int i, double n[3], double *da) {
     return 1;
 }
 
-/* sph_wall_beta (sph_state.h, inline: phase_forces calls it per pair) gives
+/* sph_wall_beta (sph_state.h, inline: sph_forces calls it per pair) gives
  * 1 + d_b / d_a, the factor on v_a in a's viscous interaction with wall
  * particle b (v_a - v_b of eq. 3.19 with the wall velocity above). */
 

@@ -1,0 +1,181 @@
+/* sph_forces.c: the SPH momentum equation's right-hand side and the kick
+ * (Rodriguez-Arenas 2011, equation numbers the thesis's): the artificial
+ * stress against the tensile instability (Monaghan 2000), then per particle
+ * the pair sums of pressure (eq. 3.18), artificial viscosity (eq. 3.41),
+ * deviatoric and artificial stress, viscosity (eq. 3.19) with no-slip walls,
+ * surface tension (eq. 3.30) and gravity, and the kick into st->vnew.
+ * Phases of sph_step (sph.c), moved here to keep sph.c one file's length. */
+#include <math.h>
+#include <string.h>
+
+#include "sph_kernel.h"
+#include "sph_state.h"
+#include "tensor.h"
+
+/* Artificial stress against the tensile instability (Monaghan 2000,
+ * J. Comput. Phys. 159, 290-311; Gray, Monaghan & Swift 2001, Comput.
+ * Methods Appl. Mech. Engrg. 190, 6641-6662, for elastic solids). Under
+ * tension, SPH particles attract their neighbours more the closer they
+ * are, so they clump in pairs and strings and a stretched body breaks
+ * (bread of the dead split along its toppings). In the principal frame
+ * of sigma = S - p I each tensile component sigma'_k > 0 gets
+ * R'_k = -epsilon sigma'_k / rho^2 (compressive ones 0); rotated back,
+ * R_a enters the momentum equation as sum_b m_b f_ab^n (R_a + R_b) .
+ * grad_a W with f_ab = W(r_ab) / W(dp), dp the rest spacing, n = 4: a
+ * short-range repulsion that is strong exactly where particles clump
+ * (r < dp) and negligible at the rest spacing's neighbours beyond.
+ * Off by default (sph.artificial_stress = 0): the same repulsion resists
+ * a cooling bubble's contraction (at 0.3 it loses 31% less volume than
+ * its gas, `sph_bubble_cooling_contracts`); bread of the dead sets 0.3. */
+void sph_artificial_stress(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    const int n = s->ps.n;
+    const double eps_as = s->def.sph.artificial_stress;
+    if (!(eps_as > 0)) return;
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        double sig[9], l[3], Q[9], *Ri = st->R + 9 * i;
+        for (int a = 0; a < 9; a++) sig[a] = st->S[9 * i + a] - (a % 4 == 0 ? st->prs[i] : 0.0);
+        t3_sym_eigen(sig, l, Q);
+        double r[3];
+        for (int k = 0; k < 3; k++) r[k] = l[k] > 0 ? -eps_as * l[k] / (st->rho[i] * st->rho[i]) : 0.0;
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) { /* R = Q diag(r) Q^T */
+                Ri[3 * a + b] = 0;
+                for (int k = 0; k < 3; k++) Ri[3 * a + b] += Q[3 * a + k] * r[k] * Q[3 * b + k];
+            }
+    }
+}
+
+/* Particle i's pair sums of sph_forces into a[] and *drag, with dim, wall
+ * (i has a wall frame) and as (artificial stress on) constants in each copy.
+ * In 2D the z components are left out: every particle's z and the z of every
+ * velocity are 0 there, so each z term is a zero added to a sum that started
+ * at +0, and a zero changes no such sum (the same bits). Without a wall frame
+ * no pair is a wall pair, so drag stays 0. Prr holds P_j / rho_j^2 (the same
+ * division as per pair, once per particle). */
+static inline __attribute__((always_inline)) void forces_pairs(const struct sph_state *st, const sph_cols *c, int i,
+                                                                const int dim, const int wall, const int as,
+                                                                double av_beta, double eps_as, const double wn[3],
+                                                                double da, double dah, double a[3], double *drag) {
+    const int *flags = c->flags;
+    const double *x = c->x, *v = c->v, *m = c->m;
+    const int *off = st->nl.off, *nb = st->nl.j;
+    const double *h = st->h, *rho = st->rho, *Prr = st->perm, *mu = st->mu, *vc = st->vc;
+    const double ri = rho[i], Pi = Prr[i], *Si = st->S + 9 * i, hi = h[i], mui = mu[i], vci = vc[i];
+    const sph_kc kci = sph_kc_of(dim, hi);
+    double dr = 0;
+    for (int k = off[i]; k < off[i + 1]; k++) {
+        const int j = nb[k];
+        double d[3];
+        sph_disp_dim(&st->cells, dim, x + 3 * i, x + 3 * j, d);
+        const double r2 = dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1], r = sqrt(r2);
+        if (r <= 0) continue;
+        SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
+        const double hij = kc->h, rj = rho[j];
+        const double g = sph_dw_kc(kc, r) / r; /* grad_i W = g d */
+        double vij[3], vd = 0;
+        for (int q = 0; q < dim; q++) {
+            vij[q] = v[3 * i + q] - v[3 * j + q];
+            vd += vij[q] * d[q];
+        }
+        double Pij = Pi + Prr[j]; /* eq. 3.18 */
+        if (av_beta > 0 && vd < 0) { /* eq. 3.41, with mu_ij of eq. 3.37 */
+            const double muij = hij * vd / (r2 + 0.01 * hij * hij);
+            Pij += av_beta * muij * muij / (0.5 * (ri + rj));
+        }
+        const double *Sj = st->S + 9 * j, lv = sph_lap_visc_kc(kc, r);
+        /* eq. 3.19 over rho_i; its Laplacian renormalised (sph_viscous_factor), the pair's mean factor so
+         * the pair's forces stay equal and opposite */
+        const double visc = 0.5 * (mui + mu[j]) * m[j] / (rj * ri) * lv * 0.5 * (vci + vc[j]);
+        /* a wall particle's velocity for eq. 3.19: Morris et al. 1997 (sph_wall_frame) */
+        const int wj = wall && (flags[j] & PF_FIXED);
+        const double beta = wj ? sph_wall_beta(d, wn, da, dah) : 1.0;
+        double fn = 0; /* f_ab^4 of the artificial stress */
+        if (as) {
+            const double dp = 0.5 * (st->sp[i] + st->sp[j]);
+            const double f = sph_w_kc(kc, r) / sph_w_kc(kc, dp);
+            fn = f * f * f * f;
+        }
+        const double *Ri = st->R + 9 * i, *Rj = st->R + 9 * j;
+        for (int q = 0; q < dim; q++) {
+            double sd = 0;
+            for (int b = 0; b < dim; b++) sd += (Si[3 * q + b] + Sj[3 * q + b]) * d[b]; /* S / rho^2 (above) */
+            if (as && fn > 0)
+                for (int b = 0; b < dim; b++) sd += fn * (Ri[3 * q + b] + Rj[3 * q + b]) * d[b];
+            /* with a wall b: -visc beta (v_a - V_b), V_b the wall's own (prescribed) velocity; the
+             * beta v_a part is the implicit drag below */
+            a[q] += m[j] * (-Pij * g * d[q] + sd * g) - (wj ? -visc * beta * v[3 * j + q] : visc * vij[q]);
+        }
+        if (wall) dr += wj ? visc * beta : 0.0;
+    }
+    *drag = dr;
+    (void)eps_as;
+}
+
+/* One particle's accelerations and kick (sph_forces), dim a constant in
+ * each copy. */
+static inline __attribute__((always_inline)) void forces_one(hearth_scene *s, const sph_cols *c, int i, const int dim,
+                                                              double dt) {
+    struct sph_state *st = s->sph;
+    const hearth_sph_def *o = &s->def.sph;
+    const int *flags = c->flags;
+    const double *x = c->x, *v = c->v;
+    const double eps_as = o->artificial_stress, av_beta = o->av_beta;
+    const double *gvec = s->def.gravity;
+    double a[3] = {gvec[0], gvec[1], dim == 3 ? gvec[2] : 0.0};
+    if (s->body_force) {
+        double bf[3] = {0, 0, 0};
+        s->body_force(s->body_force_ud, s->t, x + 3 * i, bf);
+        for (int q = 0; q < dim; q++) a[q] += bf[q];
+    }
+    const double ri = st->rho[i];
+    double wn[3] = {0, 0, 0}, da = 0, drag = 0;
+    const int wall = flags && !(flags[i] & PF_FIXED) && sph_wall_frame(s, i, wn, &da);
+    const double dah = fmax(da, 0.5 * st->sp[i]);
+    if (eps_as > 0) {
+        if (wall) forces_pairs(st, c, i, dim, 1, 1, av_beta, eps_as, wn, da, dah, a, &drag);
+        else forces_pairs(st, c, i, dim, 0, 1, av_beta, eps_as, wn, da, dah, a, &drag);
+    } else {
+        if (wall) forces_pairs(st, c, i, dim, 1, 0, av_beta, eps_as, wn, da, dah, a, &drag);
+        else forces_pairs(st, c, i, dim, 0, 0, av_beta, eps_as, wn, da, dah, a, &drag);
+    }
+    if (o->surface_tension > 0 && st->surf[i]) { /* eq. 3.30 */
+        const double *Ni = st->N + 3 * i, nn = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]);
+        if (nn > 0)
+            for (int q = 0; q < dim; q++) a[q] -= o->surface_tension / ri * st->lapC[i] * Ni[q] / nn;
+    }
+    memcpy(st->acc + 3 * i, a, sizeof a);
+    /* the kick. The wall drag -drag v is linear in v (the wall velocities
+     * above are multiples of v_i), so it is taken implicitly: with beta up
+     * to about 5 it would otherwise break the viscous dt limit, which is
+     * set for fluid-fluid pairs (a channel at 100 Pa s blew up) */
+    const int fixed = flags && (flags[i] & PF_FIXED);
+    for (int q = 0; q < 3; q++) /* a fixed particle keeps its prescribed velocity (sph_walls_begin) */
+        st->vnew[3 * i + q] = fixed ? v[3 * i + q] : (v[3 * i + q] + dt * a[q]) / (1.0 + dt * drag);
+}
+
+/* Accelerations, then the kick into st->vnew (sph_step then takes the heat
+ * rates, sph_heat.c). Per particle: gravity and the body force; per neighbour the
+ * pressure (eq. 3.18) with the artificial viscosity's beta term (eq. 3.41,
+ * mu_ij of eq. 3.37), the deviatoric and artificial stresses, the viscosity
+ * (eq. 3.19) with no-slip walls (Morris et al. 1997, sph_wall_frame); then
+ * surface tension (eq. 3.30). */
+void sph_forces(hearth_scene *s, double dt) {
+    struct sph_state *st = s->sph;
+    const sph_cols c = sph_cols_of(s);
+    const int n = c.n, dim = c.dim;
+    /* S / rho^2, as eq. 3.18's pair sum reads it, once per particle instead of twice per pair (the same
+     * division, so the same bits); st->S holds it from here to the step's end */
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        for (int k = 0; k < 9; k++) st->S[9 * i + k] = st->S[9 * i + k] / (st->rho[i] * st->rho[i]);
+        st->perm[i] = st->prs[i] / (st->rho[i] * st->rho[i]); /* P / rho^2 of eq. 3.18 (perm is free scratch now) */
+    }
+    /* one copy of the loop per dimension: the kernels' dim is a constant in each */
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN && !s->body_force_serial)
+    for (int i = 0; i < n; i++) {
+        if (dim == 2) forces_one(s, &c, i, 2, dt);
+        else forces_one(s, &c, i, 3, dt);
+    }
+}
