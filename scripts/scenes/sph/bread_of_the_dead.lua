@@ -20,6 +20,13 @@
 -- 1.14, 1.24 at 2.5 s; part of that volume is the gaps). With the XSPH of
 -- bread_roll.lua (--set xsph0=0.05 --set xsph_f=0.3) it shattered by 1 s
 -- (before artificial stress); --set mu_e=20 slumps (ball top 20 mm).
+-- Heat: eq. 3.42 per unit area of surface (core/sim/solver/sph_heat.c),
+-- k_h,ext = S h / c from a physical oven: h = 30 W/(m^2 K) (Baik et al. 1999,
+-- J. Food Sci. 64:688: 20-48 W/(m^2 K) with radiation), c = 2700 J/(kg K)
+-- (bread dough, Choi & Okos; h.library.dough.bread's) and S = 1500
+-- (browning_scale: 1.2 s for 30 minutes): 1500 x 30 / 2700 = 16.7 kg/(m^2 s).
+-- (The thesis's printed form had 4e8, 1.0 in these units at dx 2 mm: the
+-- numbers measured above were taken with it.)
 -- Writes volume.csv: relative volume (from a density slice), the height of
 -- the top ball and of a bone knuckle above the tray, over time.
 local h = require "hearth"
@@ -28,7 +35,7 @@ local P = h.params { dx = 0.002, oven = 180, mu_e = 2000, viscosity = 5, lambda 
 
 local T0, tray = 26, 0.01
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph",
-  sph = { heat_ext = 4e8, heat_int = 0.5, av_beta = 1, xsph0 = P.xsph0, xsph_f = P.xsph_f, xsph_T0 = T0, xsph_Tf = 120,
+  sph = { heat_ext = 16.7, heat_int = 0.5, av_beta = 1, xsph0 = P.xsph0, xsph_f = P.xsph_f, xsph_T0 = T0, xsph_Tf = 120,
           bubble_T0 = T0, tension = true, artificial_stress = P.artificial_stress },
   oven = { temperature = P.oven, beta = 0 },
   browning = true, browning_scale = 1500 } -- Zanoni et al. 1995 kinetics; 1.2 s stand for a 30-minute bake
