@@ -13,8 +13,11 @@
 -- temperature through h.curve), gives way: the cake loses part of the
 -- volume it gained. The thesis does the same by hand (§4.5: rho_f raised,
 -- mu_e and lambda lowered after baking); turning the pan over is what a baker
--- does to stop it, not modelled. Measured (2D default): relative volume 1.95
--- at the end of baking (t = 1.5 s), 1.72 at t = 3.5 s and still falling.
+-- does to stop it, not modelled. Measured (2D default, the per-area heat
+-- below): relative volume 2.05 at the end of baking (t = 1.5 s), 1.61 at t =
+-- 3.5 s (mean 63 degC) and still falling; one bubble particle is thrown onto
+-- the tube's top by 1.4 s. With the printed form's heat (6e8, 0.3x this) it
+-- was 1.95 and 1.72.
 -- Writes volume.csv (relative volume over time, from a density slice, with
 -- the mean temperature) and browning and temperature frames (the browning
 -- index of Zanoni et al. 1995 from temperature history; browning_scale = 1600
