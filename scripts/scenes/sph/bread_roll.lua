@@ -10,8 +10,10 @@
 -- stress keep it one piece, and each bubble's rest density is the gas law's
 -- rho0 / V_b(T) with the dough's water vapour (sph.gas_law, sph.bubble_vapour):
 -- the bubbles grow with their temperature, and only with it. Measured (2D
--- default, from the particles): one piece and 1.315x the raw area at 1.6 s;
--- at 1.7 s the dough films between the risen bubbles tear (3 pieces, 5 by 2 s).
+-- default, from the particles, the per-area heat below): one piece and 1.30x
+-- the raw area at 1.2 s; at 1.3 s the dough films between the outer, hottest
+-- bubbles tear and the crust comes away (3 pieces, 1.33x). With the printed
+-- form's heat it held to 1.6 s (1.315x).
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature), particles_NNNN.csv (positions, for
 -- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
