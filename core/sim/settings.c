@@ -121,8 +121,13 @@ static const hearth_setting settings[] = {
     SPH(xsph_f, "1", "XSPH tuner epsilon at xsph_Tf (eq. 4.4)", 0, 0, 1),
     SPH(xsph_T0, "degC", "temperature of the XSPH tuner line's start (below xsph_Tf)", 26, -273.15, 5000),
     SPH(xsph_Tf, "degC", "temperature of the XSPH tuner line's end", 120, -273.15, 5000),
-    SPH(heat_ext, "1/(m^2 s)", "k_h,ext of eq. 3.42: surface particles toward the oven temperature (scaled); 0 = off", 0, 0,
-        1e12),
+    /* eq. 3.42 per unit area (sph_heat.c): an oven's h / c is ~0.01 kg/(m^2 s)
+     * in real time, times a scene's time scale; the old form's 1e8-1e9 are
+     * refused so a scene written for it says so rather than boils */
+    SPH(heat_ext, "kg/(m^2 s)",
+        "k_h,ext of eq. 3.42 per unit area of surface: h / c, the surface heat transfer coefficient over the specific "
+        "heat (scaled as a scene's time scale); 0 = off",
+        0, 0, 1e6),
     SPH(heat_int, "m^2/s", "k_h,int of eq. 3.45: diffusivity; 0 = off", 0, 0, 1e6),
     SPH_FLAG("adaptive_h", "Sigalotti adaptive smoothing length (eq. 3.54-3.56)", adaptive_h),
     SPH(k_g, "1", "eq. 3.54 factor k_g", 1, 0.1, 10),

@@ -10,17 +10,26 @@
 -- stress keep it one piece, and each bubble's rest density is the gas law's
 -- rho0 / V_b(T) with the dough's water vapour (sph.gas_law, sph.bubble_vapour):
 -- the bubbles grow with their temperature, and only with it. Measured (2D
--- default, from the particles): one piece and 1.315x the raw area at 1.6 s;
--- at 1.7 s the dough films between the risen bubbles tear (3 pieces, 5 by 2 s).
+-- default, from the particles, the per-area heat below): one piece and 1.30x
+-- the raw area at 1.2 s; at 1.3 s the dough films between the outer, hottest
+-- bubbles tear and the crust comes away (3 pieces, 1.33x). With the printed
+-- form's heat it held to 1.6 s (1.315x).
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature), particles_NNNN.csv (positions, for
 -- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
 -- particle's temperature history (Zanoni et al. 1995, the thesis's [89];
 -- browning_scale = 400 lets the 3 s animation stand for a 20-minute bake).
--- Heat: heat_ext = 1e9 (it was 3e8, with which the crumb was still ~50 degC at
--- 2.2 s, a roll a third baked where the 3 s stand for 20 minutes). Eq. 3.42
--- heats a surface particle at a rate in r^2, so a finer roll heats slower (see
--- docs/validation.md).
+-- Heat: eq. 3.42 per unit area of surface (core/sim/solver/sph_heat.c),
+-- k_h,ext = S h / c from a physical oven: h = 30 W/(m^2 K) (an oven's
+-- effective coefficient, radiation included, 20-48 W/(m^2 K) in Baik et al.
+-- 1999, J. Food Sci. 64:688; h.library.oven.bread's), c = 2700 J/(kg K) (bread
+-- dough, Choi & Okos composition model; h.library.dough.bread's) and the
+-- scene's time scale S = 400 (browning_scale: the 3 s stand for 20 minutes),
+-- so heat_ext = 400 x 30 / 2700 = 4.44 kg/(m^2 s) at any dx. (It was 1e9 in
+-- the thesis's printed form, which at dx 2 mm is 2.55 in these units and went
+-- as dx^3, so the finer roll stayed cool.) The tray heats through the same
+-- coefficient. heat_int (0.2, kappa / c) is not rescaled: the same S on
+-- bread's 0.51 W/(m K) would give 0.076.
 -- Scaling: Table 4.1's numbers are animation units. Taken as SI, the raw dough
 -- (0.1 Pa s, mu_e 1 Pa) is water and the roll splashes, and the baked end
 -- (5e3 Pa s) needs microsecond steps. So viscosity and mu_e are multiplied by
@@ -34,7 +43,7 @@ local h = require "hearth"
 local lib = h.library.sph.bread_roll
 local sph = lib.sph
 local P = h.params { bubbles = "even", dx = 0.002, oven = 180, visc_scale = 100, mue_scale = 100, visc_cap = 300,
-  radius = 0.025, xsph0 = 0.05, heat_ext = 1e9, artificial_stress = sph.artificial_stress, tension = sph.tension,
+  radius = 0.025, xsph0 = 0.05, heat_ext = 4.44, artificial_stress = sph.artificial_stress, tension = sph.tension,
   gas_law = sph.gas_law, vapour = sph.bubble_vapour, vmax = sph.bubble_vmax or 4 }
 
 sph.heat_ext, sph.heat_int, sph.av_beta = P.heat_ext, 0.2, 1

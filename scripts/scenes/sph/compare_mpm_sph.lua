@@ -5,15 +5,17 @@
 -- reports its wall time, steps, particles and final shape (width and height of
 -- the material from density lines), side by side, and compare.csv holds both.
 -- Heat enters differently: MPM through the oven's Robin flux (Ding et al.);
--- SPH through eq. 3.42 at surface particles (the thesis's animation-scaled
--- heat_ext) plus the same Robin flux, which at beta = 20 is about 1/800 of it.
+-- SPH through eq. 3.42 at surface particles (per unit area, heat_ext = h / c
+-- = 6.1 kg/(m^2 s), what the thesis's printed form gave with 3e8 at dx 4 mm:
+-- an animation-scaled h of 6.1 x 2500 = 15000 W/(m^2 K)) plus the same Robin
+-- flux, which at beta = 20 is about 1/800 of it.
 local h = require "hearth"
 local P = h.params { t_end = 0.5, dx = 0.004, oven = 180 }
 
 local function run(solver)
   local opts = { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.3, 0.15 } }, solver = solver,
     oven = { temperature = P.oven, beta = 20 } }
-  if solver == "sph" then opts.sph = { heat_ext = 3e8, heat_int = 0.5, av_beta = 1, xsph0 = 0.05 } end
+  if solver == "sph" then opts.sph = { heat_ext = 6.1, heat_int = 0.5, av_beta = 1, xsph0 = 0.05 } end
   local s = h.scene(opts)
   local dough = h.material("maxwell_sph", { density = 1100, bulk = 3e4, mu_e = 2e3, lambda = 2, viscosity = 20,
     conductivity = 0.5, specific_heat = 2500 })

@@ -1,9 +1,11 @@
 -- Lava-like flow down a slope with a temperature-dependent XSPH tuner, with
 -- the SPH solver (Rodriguez-Arenas 2011 Fig. 3.17).
---   hearth run scripts/scenes/sph/lava_flow.lua [--set xsph_cold=0.05 --set cooling=3e7]
+--   hearth run scripts/scenes/sph/lava_flow.lua [--set xsph_cold=0.05 --set cooling=1.2]
 -- A block of hot lava-like fluid (newtonian, its viscosity rising as it cools
 -- through h.curve) is released at the top of a slope in cold air. Surface
--- particles lose heat to the air (eq. 3.42, the oven here being the air) and
+-- particles lose heat to the air (eq. 3.42 per unit area, the oven here being
+-- the air; cooling = h / c in kg/(m^2 s), animation-scaled: 8 is the thesis's
+-- printed form with 2e8 at dx 5 mm, 2e8 dx^3 / pi) and
 -- the heat diffuses (eq. 3.45). XSPH (eq. 3.34) smooths each particle's
 -- velocity toward its neighbours' with a tuner linear in temperature (eq.
 -- 4.4): small while hot (the lava runs), large once cold (it moves as a
@@ -13,7 +15,7 @@
 -- farthest particle), the mean temperature of the particles' rows in a
 -- temperature slice, over time; and temperature frames.
 local h = require "hearth"
-local P = h.params { dx = 0.005, T_hot = 1100, T_air = 20, xsph_hot = 0.05, xsph_cold = 0.9, cooling = 2e8,
+local P = h.params { dx = 0.005, T_hot = 1100, T_air = 20, xsph_hot = 0.05, xsph_cold = 0.9, cooling = 8,
   until_t = 3.0 }
 
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.8, 0.3 } }, solver = "sph",

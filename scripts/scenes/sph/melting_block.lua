@@ -4,12 +4,14 @@
 -- through h.curve) sits on a heated tray. Heat enters the particles touching
 -- the tray (eq. 3.42) and diffuses (eq. 3.45-3.46); the bottom softens first
 -- and the block slumps into a puddle. Writes height.csv (top of the material
--- above the tray over time).
+-- above the tray over time). heat_ext (eq. 3.42 per unit area, h / c in
+-- kg/(m^2 s), animation-scaled) is 6.1, the heat the thesis's printed form
+-- gave with 3e8 at this dx (3e8 dx^3 / pi in 2D).
 local h = require "hearth"
 local P = h.params { floor = 150, dx = 0.004 }
 
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.3, 0.15 } }, solver = "sph",
-  sph = { heat_ext = 3e8, heat_int = 0.5, av_beta = 1, xsph0 = 0.1, xsph_f = 0.02, xsph_T0 = 20, xsph_Tf = 80 } }
+  sph = { heat_ext = 6.1, heat_int = 0.5, av_beta = 1, xsph0 = 0.1, xsph_f = 0.02, xsph_T0 = 20, xsph_Tf = 80 } }
 local wax = h.material("maxwell_sph", {
   density = 900, bulk = 3e4, lambda = 5,
   viscosity = h.curve { { 20, 100 }, { 45, 20 }, { 70, 0.5 } },

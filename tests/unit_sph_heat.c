@@ -1,0 +1,301 @@
+/* unit_sph_heat.c: the SPH solver's surface heat (Rodriguez-Arenas 2011 eq.
+ * 3.42, taken per unit area of surface: core/sim/solver/sph_heat.c) against
+ * closed forms at several resolutions: the heat a block takes in through its
+ * outline, and a Robin slab's temperature profile and uptake against its
+ * series; and whether the roll's bubble spots reach their gas volume. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "hearth/hearth.h"
+#include "scene.h"
+#include "sph.h"
+#include "sph_state.h"
+#include "test.h"
+
+#define PI 3.14159265358979323846
+
+static hearth_scene_def sph_def(int dim, double dx, const double lo[3], const double hi[3]) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.solver = HEARTH_SOLVER_SPH;
+    d.dim = dim;
+    d.dx = dx;
+    d.gravity[1] = 0;
+    for (int a = 0; a < 3; a++) d.lo[a] = lo[a], d.hi[a] = hi[a];
+    return d;
+}
+
+static int newtonian(hearth_scene *s, double rho) {
+    const char *n[] = {"density", "bulk", "viscosity"};
+    const double v[] = {rho, 1e4, 1.0};
+    hearth_error err;
+    int m = hearth_scene_add_material(s, "newtonian", n, v, 3, &err);
+    if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
+    return m;
+}
+
+static int box_body(hearth_scene *s, int mat, const double lo[3], const double hi[3], int fixed, double T) {
+    double c[3], hh[3];
+    for (int a = 0; a < 3; a++) c[a] = 0.5 * (lo[a] + hi[a]), hh[a] = 0.5 * (hi[a] - lo[a]);
+    if (s->def.dim == 2) c[2] = 0, hh[2] = 0.5;
+    hearth_shape *b = hearth_shape_box(c, hh);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = b;
+    bd.material = mat;
+    bd.ppc = 1;
+    bd.jitter = 0;
+    bd.fixed = fixed;
+    bd.temperature = T;
+    hearth_error err;
+    int id = hearth_scene_add_body(s, &bd, &err);
+    if (id < 0) fprintf(stderr, "body: %s\n", err.msg);
+    hearth_shape_free(b);
+    return id;
+}
+
+static double sum_mT(const hearth_scene *s) {
+    const double *T = pcold(&s->ps, PC_TEMPERATURE), *m = pcold(&s->ps, PC_MASS);
+    double E = 0;
+    for (int i = 0; i < s->ps.n; i++) E += m[i] * T[i];
+    return E;
+}
+
+/* A block at 26 degC in a 180 degC oven, heated by eq. 3.42 alone (k_h,ext =
+ * h / c = 1 kg/(m^2 s), no conduction, no gravity) at three spacings: a 2D
+ * slab 40 x 20 mm periodic along x (two faces, no corners), a 2D 40 x 20 mm
+ * block and a 3D 20 x 20 x 10 mm one. Over 20 steps the temperature barely
+ * moves, so the heat taken, sum m dT (the specific heat divides out of
+ * k_h,ext = h / c), over k (T_ext - T0) t, is the area the surface particles
+ * stand for, one face dx^(d-1) each. For the slab that is its two faces at
+ * any dx (within 0.5%: the outer rows warm a little over the 20 steps). A
+ * block's corner particle (2D) stands for one face where the outline has two,
+ * and in 3D an edge particle for one of two and a corner for one of three:
+ * the closed form is the outline less 4 dx (2D) or less dx^2 (sum over the
+ * 12 edges of (length / dx - 2) + 2 x 8) (3D), within 0.5% again, a
+ * shortfall of first order in dx. The thesis's form as printed (r^2 / rho
+ * per particle) went as dx^3 per unit area: 64x from 2 to 0.5 mm. */
+TEST(sph_heat_ext_flux_per_area) {
+    for (int c = 0; c < 3; c++) {
+        const int dim = c == 2 ? 3 : 2, periodic = c == 0;
+        const double dxs[3] = {0.002, dim == 2 ? 0.001 : 0.00125, dim == 2 ? 0.0005 : 0.001};
+        const double *blo, lo2[3] = {0.02, 0.02, 0}, lo3[3] = {0.02, 0.02, 0.02}, lop[3] = {0, 0.02, 0};
+        const double *bhi, hi2[3] = {0.06, 0.04, 0}, hi3[3] = {0.04, 0.04, 0.03}, hip[3] = {0.04, 0.04, 0};
+        blo = c == 0 ? lop : c == 1 ? lo2 : lo3;
+        bhi = c == 0 ? hip : c == 1 ? hi2 : hi3;
+        const double k = 1.0, Text = 180, T0 = 26;
+        const double outline = c == 0 ? 2 * 0.04 : c == 1 ? 2 * (0.04 + 0.02) : 2 * (0.02 * 0.02 + 2 * 0.02 * 0.01);
+        const char *what = c == 0 ? "2D periodic slab" : c == 1 ? "2D block" : "3D block";
+        double per_area[3];
+        for (int r = 0; r < 3; r++) {
+            const double dx = dxs[r], lo[3] = {0, 0, 0}, hi[3] = {periodic ? 0.04 : 0.08, 0.06, 0.05};
+            hearth_scene_def d = sph_def(dim, dx, lo, hi);
+            d.sph.periodic[0] = periodic;
+            d.oven_temperature = Text;
+            d.oven_beta = 0;
+            d.sph.heat_ext = k;
+            hearth_scene *s = hearth_scene_create(&d, NULL);
+            CHECK(s != NULL);
+            if (!s) return;
+            const int m = newtonian(s, 1000);
+            CHECK(m >= 0 && box_body(s, m, blo, bhi, 0, T0) >= 0);
+            const double E0 = sum_mT(s);
+            hearth_error err;
+            CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+            per_area[r] = (sum_mT(s) - E0) / (s->t * (Text - T0) * outline);
+            double faces = outline; /* the closed form: the faces the surface particles stand for */
+            if (c == 1) faces -= 4 * dx;
+            if (c == 2) faces -= dx * dx * (4 * (0.02 / dx + 0.02 / dx + 0.01 / dx - 6) + 16);
+            printf("%s, dx %.2f mm (%d particles): heat in per unit area %.4f of k (T_ext - T0); the particles' faces "
+                   "%.4f of the outline\n",
+                   what, 1e3 * dx, s->ps.n, per_area[r], faces / outline);
+            CHECK(fabs(per_area[r] / k / (faces / outline) - 1) < 0.005);
+            hearth_scene_destroy(s);
+        }
+        printf("%s: finest over coarsest %.4f\n", what, per_area[2] / per_area[0]);
+        if (periodic) CHECK(fabs(per_area[2] / per_area[0] - 1) < 0.005);
+    }
+}
+
+/* Plane wall with Robin faces on both sides (half-thickness L, centre plane
+ * a symmetry plane: Incropera's slab), theta* = (T - T_ext) / (T0 - T_ext) =
+ * sum C_n exp(-z_n^2 Fo) cos(z_n xi), z tan z = Bi, C_n = 4 sin z / (2 z +
+ * sin 2z), xi = y / L from the centre; the heat taken over its maximum is
+ * 1 - sum C_n sin(z_n) / z_n exp(-z_n^2 Fo). */
+static void slab_series(double Bi, double xi, double Fo, double *theta, double *taken) {
+    double th = 0, q = 0;
+    for (int n = 0; n < 200; n++) {
+        double a = n * PI + 1e-12, b = n * PI + PI / 2 - 1e-12;
+        for (int it = 0; it < 200; it++) { /* z tan z = Bi in (n pi, n pi + pi/2), by bisection */
+            const double mid = 0.5 * (a + b);
+            if (mid * tan(mid) - Bi > 0) b = mid;
+            else a = mid;
+        }
+        const double z = 0.5 * (a + b), C = 4 * sin(z) / (2 * z + sin(2 * z)), e = exp(-z * z * Fo);
+        th += C * e * cos(z * xi);
+        q += C * sin(z) / z * e;
+    }
+    *theta = th, *taken = 1 - q;
+}
+
+/* The slab in SPH: a pinned lattice N particles across 2L = 20 mm, periodic
+ * along x (8 columns), free faces at top and bottom heated by eq. 3.42
+ * (k_h,ext = h / c) and conducting by eq. 3.45 (k_h,int = kappa / c), Bi = h
+ * L / kappa = k_h,ext L / k_h,int = 1, diffusivity D = k_h,int / rho. At Fo
+ * = D t / L^2 = 0.3: err the worst |theta* - series| over the particles, and
+ * the heat taken over its maximum against the series (rel, signed). dt is
+ * held at 0.01 h^2 / D, as sph_heat_conduction_converges does. */
+static int robin_slab(int N, double *err, double *taken, double *taken_exact) {
+    const double L = 0.01, dx = 2 * L / N, rho = 1000, D = 1e-2, Bi = 1, T0 = 26, Text = 180, y0 = 4 * dx;
+    const double lo[3] = {0, 0, 0}, hi[3] = {8 * dx, 2 * L + 8 * dx, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.sph.periodic[0] = 1;
+    d.sph.heat_int = D * rho;
+    d.sph.heat_ext = Bi * d.sph.heat_int / L;
+    d.oven_temperature = Text;
+    d.oven_beta = 0;
+    d.dt_max = 0.01 * (d.sph.h_factor * dx) * (d.sph.h_factor * dx) / D;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    if (!s) return -1;
+    const int m = newtonian(s, rho);
+    const double blo[3] = {0, y0, 0}, bhi[3] = {hi[0], y0 + 2 * L, 0};
+    int rc = m >= 0 && box_body(s, m, blo, bhi, 1, T0) >= 0 ? 0 : -1;
+    const double E0 = sum_mT(s), t = 0.3 * L * L / D;
+    hearth_error e;
+    if (!rc && hearth_scene_advance(s, t, &e)) {
+        fprintf(stderr, "%s\n", e.msg);
+        rc = -1;
+    }
+    const double Fo = D * s->t / (L * L), *x = hearth_scene_positions(s), *T = pcold(&s->ps, PC_TEMPERATURE);
+    const double *mass = pcold(&s->ps, PC_MASS);
+    double worst = 0, M = 0, th, q;
+    for (int i = 0; i < s->ps.n && !rc; i++) {
+        slab_series(Bi, (x[3 * i + 1] - y0 - L) / L, Fo, &th, &q);
+        if (!isfinite(T[i])) rc = -1;
+        worst = fmax(worst, fabs((T[i] - Text) / (T0 - Text) - th));
+        M += mass[i];
+    }
+    slab_series(Bi, 0, Fo, &th, &q);
+    *err = worst;
+    *taken = (sum_mT(s) - E0) / (M * (Text - T0));
+    *taken_exact = q;
+    hearth_scene_destroy(s);
+    return rc;
+}
+
+/* The Robin slab converges to its series at 10, 20 and 40 particles across:
+ * the worst profile error shrinks at an observed order of at least 0.8 at
+ * each step (the surface heat lands in the outer row, a layer dx thick,
+ * rather than at the face: first order), and so does the error of the heat
+ * taken, which comes within 2% of the series at 40 across. */
+TEST(sph_heat_ext_slab_converges) {
+    double th, q;
+    slab_series(1, 0, 0.5, &th, &q); /* the reference itself: Incropera's table, Bi = 1 */
+    CHECK_NEAR(th, 0.77253, 2e-5);
+    const int Ns[] = {10, 20, 40};
+    double E[3], Q[3], Qx[3];
+    for (int r = 0; r < 3; r++) {
+        CHECK(robin_slab(Ns[r], &E[r], &Q[r], &Qx[r]) == 0);
+        printf("Robin slab, %d across: worst profile error %.4f of T0 - T_ext; heat taken %.5f of the most, series "
+               "%.5f (%+.2f%%)\n",
+               Ns[r], E[r], Q[r], Qx[r], 100 * (Q[r] / Qx[r] - 1));
+    }
+    for (int r = 1; r < 3; r++) {
+        const double order = log(E[r - 1] / E[r]) / log(2.0);
+        const double qorder = log(fabs(Q[r - 1] / Qx[r - 1] - 1) / fabs(Q[r] / Qx[r] - 1)) / log(2.0);
+        printf("Robin slab: %d -> %d across, observed order %.2f (profile), %.2f (heat taken)\n", Ns[r - 1], Ns[r],
+               order, qorder);
+        CHECK(order >= 0.8 && qorder >= 0.8);
+    }
+    CHECK(fabs(Q[2] / Qx[2] - 1) < 0.02);
+}
+
+/* ---- the roll's gas: bubble clusters narrower than the kernel ------------- */
+
+/* V_b / V_b0 of the gas law with water vapour (sph_gas.c), from its closed
+ * form: ideal gas in Kelvin, the CO2's moles held in P_a - P_v, P_v = a_w
+ * P_sat(T) by Clausius-Clapeyron through 100 degC at 101325 Pa, 40.66 kJ/mol. */
+static double vb_closed(double aw, double T0, double T) {
+    const double hr = 40660.0 / 8.314462618, tb = 373.15;
+    const double pv0 = aw * exp(-hr * (1 / (T0 + 273.15) - 1 / tb)), pv = aw * exp(-hr * (1 / (T + 273.15) - 1 / tb));
+    return (T + 273.15) / (T0 + 273.15) * (1 - pv0) / (1 - pv);
+}
+
+/* A dough disc 40 mm across (lattice at 2 mm, no gravity, a Newtonian dough
+ * with the thesis's Tait and its tension) whose bubble particles sit in spots
+ * 1.6 spacings in radius at a pitch of 4.5, as the bread roll's: each spot is
+ * narrower than the kernel's support. Heated uniformly 26 -> 80 degC and held,
+ * the gas law with the dough's water vapour (a_w 0.95) wants each bubble at
+ * V_b(80) / V_b(26); the body's volume (sum of m / rho) should grow to
+ * (n_dough + n_bubble V_b) / n. Returns hot / raw volume. */
+static double cluster_dough(double *want) {
+    const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.12, 0.12, 0}, aw = 0.95, Thot = 80;
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.sph.tension = 1;
+    d.sph.gas_law = 1;
+    d.sph.bubble_vapour = aw;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    if (!s) return NAN;
+    const char *n[] = {"density", "bulk", "viscosity", "bubble"};
+    double v[] = {1000, 1e4, 2.0, 0};
+    hearth_error err;
+    const int dough = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
+    v[3] = 1;
+    const int bub = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
+    int nb = 0, nd = 0;
+    for (int j = 0; j < 40 && dough >= 0 && bub >= 0; j++)
+        for (int i = 0; i < 40; i++) {
+            double p[3] = {0.06 + (i - 19.5) * dx, 0.06 + (j - 19.5) * dx, 0};
+            if (hypot(p[0] - 0.06, p[1] - 0.06) > 0.02) continue;
+            /* the nearest spot centre on a pitch-4.5 grid through the centre */
+            const double pitch = 4.5 * dx, sx = 0.06 + pitch * round((p[0] - 0.06) / pitch),
+                         sy = 0.06 + pitch * round((p[1] - 0.06) / pitch);
+            const int b = hypot(p[0] - sx, p[1] - sy) < 1.6 * dx;
+            if (hearth_scene_add_particles(s, b ? bub : dough, 1, p, NULL, dx * dx, &err) != 1)
+                fprintf(stderr, "%s\n", err.msg);
+            *(b ? &nb : &nd) += 1;
+        }
+    hearth_body_def bd = hearth_default_body_def(); /* a far-away pinned speck turns the temperature field on */
+    double c[3] = {0.005, 0.005, 0}, hh[3] = {0.001, 0.001, 0.5};
+    bd.shape = hearth_shape_box(c, hh);
+    bd.material = dough;
+    bd.ppc = 1;
+    bd.jitter = 0;
+    bd.fixed = 1;
+    bd.temperature = 26;
+    if (hearth_scene_add_body(s, &bd, &err) < 0) fprintf(stderr, "%s\n", err.msg);
+    hearth_shape_free((hearth_shape *)bd.shape);
+    double V[2] = {0, 0};
+    for (int phase = 0; phase < 2; phase++) {
+        for (int k = 0; phase == 1 && k < 600; k++) {
+            double *T = pcold(&s->ps, PC_TEMPERATURE);
+            for (int i = 0; i < s->ps.n; i++) T[i] = 26 + (Thot - 26) * (k + 1) / 600;
+            if (hearth_scene_step(s, 1, &err) != HEARTH_OK) break;
+        }
+        if (hearth_scene_step(s, 300, &err) != HEARTH_OK) fprintf(stderr, "%s\n", err.msg);
+        const double *rho = sph_particle_values(s, "density"), *m = pcold(&s->ps, PC_MASS);
+        const int *flags = pcoli(&s->ps, PC_FLAGS);
+        for (int i = 0; rho && i < s->ps.n; i++)
+            if (!(flags[i] & PF_FIXED)) V[phase] += m[i] / rho[i];
+    }
+    *want = (nd + nb * vb_closed(aw, 26, Thot)) / (nd + nb);
+    printf("%d bubble and %d dough particles, 26 -> %g degC: volume hot/raw %.4f, the gas law's %.4f\n", nb, nd, Thot,
+           V[1] / V[0], *want);
+    hearth_scene_destroy(s);
+    return V[1] / V[0];
+}
+
+/* The roll's spots reach their gas volume within 3%: the question was whether
+ * eq. 3.13's density, which counts the dough around a spot narrower than the
+ * kernel, keeps a spot from ever reaching rho0 / V_b (so that it would push
+ * on without bound and stretch the films between spots until they tear). It
+ * does not: a soft dough lets the spots take their volume (measured 1.4910
+ * against 1.4900). In the hot roll the bubbles stand short of V_b because the
+ * set dough's elasticity holds them (docs/validation.md "SPH bread roll"). */
+TEST(sph_gas_law_clusters_reach_gas_volume) {
+    CHECK_NEAR(vb_closed(0.95, 26, 80), 2.1, 0.05); /* docs/validation.md's figure for the closed form */
+    double want;
+    const double got = cluster_dough(&want);
+    CHECK(fabs(got / want - 1) <= 0.03);
+}
+
+TEST_MAIN(T(sph_heat_ext_flux_per_area), T(sph_heat_ext_slab_converges), T(sph_gas_law_clusters_reach_gas_volume))
