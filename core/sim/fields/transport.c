@@ -148,7 +148,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
         double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
         for (int d = 0; d < D; d++) {
             const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
-            const int bb = (int)floor(Xd - 0.5);
+            const int bb = base_node(Xd); /* floor: the sort keeps X >= 1 (mpm.h) */
             bspline_weights(Xd - bb, w[d], dw[d]);
             for (int k = 0; k < 3; k++) dw[d][k] *= g->inv_dx;
             base[d] = bb - bc[d] * GRID_B;
