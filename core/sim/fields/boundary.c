@@ -98,8 +98,7 @@ static hearth_status ensure_area(hearth_scene *s, hearth_error *err) {
  * them, indexed ((a+1) 3 + b+1) 3 + c+1 for the offset (a, b, c) (no c in
  * 2D); NULL past the grid or where a block has no storage. Looked up once a
  * block, so a node's neighbours across the block's faces cost an index. */
-static void block_ring(const grid *g, const int bc[3], const double *ring[27]) {
-    const int D = g->dim;
+FORCE_INLINE void block_ring(const grid *g, const int D, const int bc[3], const double *ring[27]) {
     int r = 0;
     for (int a = -1; a <= 1; a++)
         for (int b = -1; b <= 1; b++)
@@ -318,7 +317,7 @@ FORCE_INLINE void cell_gradient(hearth_scene *s, const int D, int k, int near) {
     memset(node + CH_R * NPB, 0, sizeof(double) * (size_t)NPB);
     if (!near) return;
     const double *ring[27];
-    block_ring(g, bc, ring);
+    block_ring(g, D, bc, ring);
     for (int l = 0; l < NPB; l++) {
         int gi[3];
         node_index(D, bc, l, gi);
@@ -376,7 +375,7 @@ FORCE_INLINE unsigned char cell_area(hearth_scene *s, const int D, int k) {
     grid_block_coords(g, g->active[k], bc);
     unsigned char any = 0;
     const double *ring[27];
-    block_ring(g, bc, ring);
+    block_ring(g, D, bc, ring);
     for (int l = 0; l < NPB; l++) {
         const double msum = node[CH_R * NPB + l];
         if (!(msum > 0)) continue;
@@ -422,7 +421,7 @@ FORCE_INLINE unsigned char node_share(hearth_scene *s, const int D, int k, int n
     grid_block_coords(g, g->active[k], bc);
     unsigned char any = 0;
     const double *ring[27];
-    block_ring(g, bc, ring);
+    block_ring(g, D, bc, ring);
     for (int l = 0; l < NPB; l++) {
         double r = 0;
         if (node[CH_M * NPB + l] > 0) {
