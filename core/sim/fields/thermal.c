@@ -178,6 +178,7 @@ static hearth_status find_boundary(hearth_scene *s) {
     const int oven = !isnan(s->def.oven_temperature) && s->def.oven_beta > 0;
     const int *mat = pcoli(ps, PC_MAT);
     const double beta = s->def.oven_beta, *depth = s->boundary.depth;
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++)
         if (flags[i] & PF_BOUNDARY) { /* flagged by boundary.c: the air boundary */
             /* The grid samples the particle's temperature at depth d below the
