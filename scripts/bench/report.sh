@@ -275,7 +275,7 @@ ph_lines.append("| whole step | " + " | ".join(f"{cg[d]['before'][1]:.0f} | {cg[
                 + f" | {flow['before'][0]:.0f} | {flow['after'][0]:.0f} |")
 ph_lines.append("| reference | " + " | ".join(f"{cg[d]['ref']:.0f} | {cg[d]['ref']:.0f}" for d in (3, 2)) + " | - | - |")
 
-dough_lines = ["| phase (millions of instructions a step) | elastic | dough before | dough after |", "|---|---:|---:|---:|"]
+dough_lines = ["| phase (millions of instructions a step) | elastic (after) | dough before | dough after |", "|---|---:|---:|---:|"]
 for fn, what in DOUGH_PHASES:
     if any(dough[t][fn][1] for t in trees):
         dough_lines.append(f"| {what} (`{fn}`) | {dough['after'][fn][0] / 1e6:.2f} | {dough['before'][fn][1] / 1e6:.2f} | "
