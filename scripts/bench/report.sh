@@ -17,9 +17,12 @@
 #     bench printed only what was held. Peak RSS over the run, less a tiny run's,
 #     per particle, is printed for both;
 #   - the dough step with all fields against the elastic step (instructions);
-#   - how the cost per particle-step grows from about 20k to 1.2M particles
-#     (4M with --full, which takes several minutes more): wall ns per
-#     particle-step at one thread, and bytes per particle.
+#   - the dough step by phase (inclusive instructions of the sort, P2G and its
+#     plugin stress and parameter lookups, the boundary, heat, water, G2P...);
+#   - how the cost per particle-step grows from about 20k to 1.2M particles,
+#     3D and 2D (4M in 3D, 1.5M in 2D with --full: hearth bench takes at most
+#     1024 cells; several minutes more): wall ns
+#     per particle-step at one thread, bytes per particle and peak RSS.
 # Counts are per particle-step from the difference of a short and a long run,
 # so setup cancels. Built without -march=native (valgrind does not decode
 # AVX-512): the before tree in build/bench-before/REF, this one in build/nn.
@@ -31,7 +34,7 @@ while [ $# -gt 0 ]; do
     --full) full=1 ;;
     --before) before=$2; shift ;;
     --out) out=$2; shift ;;
-    -h | --help) sed -n 2,26p "$0"; exit 0 ;;
+    -h | --help) sed -n 2,28p "$0"; exit 0 ;;
     *) echo "report.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
     shift
@@ -223,12 +226,39 @@ for dim in (3, 2):
                      ("<= 240" if dim == 3 else "<= 160") + ", peak <= 1.25x steady"))
 
 # ---- the dough step against the elastic step -------------------------------
+# The dough step by phase: inclusive instructions of these functions a step (the
+# plugin's `stress` with the libm calls it makes; transport_apply is the fields'
+# particle pass, boundary_find the air surface, thermal_* the node updates).
+DOUGH_PHASES = [("mpm_sort", "sort"), ("mpm_p2g", "P2G (all of it)"), ("stress", "  of which the plugin's stress"),
+                ("material_params_resolve", "  of which parameters and curves per point"),
+                ("boundary_find", "boundary (the air surface)"), ("thermal_prepare", "heat: node temperatures, boundary coefficients"),
+                ("transport_apply", "heat (and water) particle pass"), ("thermal_finish", "heat: node update"),
+                ("water_prepare", "water: node saturation"), ("water_face_flux", "water: wet colliders"),
+                ("mpm_grid_update", "grid update"), ("mpm_g2p", "G2P (all of it)"), ("gas_moles_step", "  of which CO2 (gas)"),
+                ("water_finish", "water: particle update"), ("mixing_update", "mixing")]
+
+def fn_counts(f):
+    ann = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", f], capture_output=True, text=True,
+                         check=True).stdout
+    c = {}
+    for line in ann.splitlines():
+        m = re.match(r"\s*([\d,]+)\s.*?:(\w+) \[", line)
+        if m and m.group(2) not in c:
+            c[m.group(2)] = int(m.group(1).replace(",", ""))
+    return c
+
+def dough_cg(t, only, steps):
+    total, _, _ = callgrind([hearth(t), "run", srcs[t] + "/scripts/bench/dough_step.lua", "--quiet", "--out", tmp, "--set",
+                             "only=" + only, "--set", f"steps={steps}", "--set", "dim=2", "--set", "cells=64"], t)
+    return total, fn_counts(os.path.join(tmp, "cg.out"))
+
+dough = {}
 def dough_ratio(t):
-    def count(only, steps):
-        return callgrind([hearth(t), "run", srcs[t] + "/scripts/bench/dough_step.lua", "--quiet", "--out", tmp, "--set",
-                          "only=" + only, "--set", f"steps={steps}", "--set", "dim=2", "--set", "cells=64"], t)[0]
-    e = (count("elastic", 12) - count("elastic", 2)) / 10
-    d = (count("dough", 12) - count("dough", 2)) / 10
+    runs = {(o, k): dough_cg(t, o, k) for o in ("elastic", "dough") for k in (2, 12)}
+    per = lambda o, fn=None: ((runs[(o, 12)][0] - runs[(o, 2)][0]) if fn is None else
+                              (runs[(o, 12)][1].get(fn, 0) - runs[(o, 2)][1].get(fn, 0))) / 10
+    e, d = per("elastic"), per("dough")
+    dough[t] = {"elastic": e, "dough": d, **{fn: (per("elastic", fn), per("dough", fn)) for fn, _ in DOUGH_PHASES + [("mpm_step", "")]}}
     return f"{d / e:.2f}x ({d / 1e6:.2f}M vs {e / 1e6:.2f}M a step)"
 log("dough vs elastic")
 rows.append(("dough step with all fields vs the elastic step (2D, 64 cells, instructions)", dough_ratio("before"),
@@ -245,21 +275,39 @@ ph_lines.append("| whole step | " + " | ".join(f"{cg[d]['before'][1]:.0f} | {cg[
                 + f" | {flow['before'][0]:.0f} | {flow['after'][0]:.0f} |")
 ph_lines.append("| reference | " + " | ".join(f"{cg[d]['ref']:.0f} | {cg[d]['ref']:.0f}" for d in (3, 2)) + " | - | - |")
 
+dough_lines = ["| phase (millions of instructions a step) | elastic (after) | dough before | dough after |", "|---|---:|---:|---:|"]
+for fn, what in DOUGH_PHASES:
+    if any(dough[t][fn][1] for t in trees):
+        dough_lines.append(f"| {what} (`{fn}`) | {dough['after'][fn][0] / 1e6:.2f} | {dough['before'][fn][1] / 1e6:.2f} | "
+                           f"{dough['after'][fn][1] / 1e6:.2f} |")
+rest = {t: [dough[t][k] - sum(dough[t][fn][i] for fn, w in DOUGH_PHASES if not w.startswith(" ")) for i, k in
+            enumerate(("elastic", "dough"))] for t in trees}
+dough_lines.append(f"| the rest (step control, the guard, Lua) | {rest['after'][0] / 1e6:.2f} | {rest['before'][1] / 1e6:.2f} | "
+                   f"{rest['after'][1] / 1e6:.2f} |")
+dough_lines.append(f"| whole step | {dough['after']['elastic'] / 1e6:.2f} | {dough['before']['dough'] / 1e6:.2f} | "
+                   f"{dough['after']['dough'] / 1e6:.2f} |")
+
 # ---- growth ----------------------------------------------------------------
-grow = [23, 36, 57, 88] + ([132] if full else [])
-g_lines = ["| cells (3D) | particles | before ns / particle-step | after ns / particle-step | before bytes / particle | after bytes / particle (used, held) |",
-           "|---:|---:|---:|---:|---:|---:|"]
-for cells in grow:
-    log(f"growth 3D, {cells} cells")
-    res = {}
-    for t in trees:
-        n = bench(t, 3, cells, 1)["particles"]
-        steps = max(2, int(2e6 / n))
-        js = [bench(t, 3, cells, steps) for _ in range(2)]
-        res[t] = (n, min(1e9 / j["particle_steps_per_s"] for j in js), js[0])
-    ja = res["after"][2]
-    g_lines.append(f"| {cells} | {res['after'][0]} | {res['before'][1]:.0f} | {res['after'][1]:.0f} | "
-                   f"{res['before'][2]['bytes_per_particle']:.0f} | {ja['bytes_per_particle']:.0f}, {ja['capacity_bytes_per_particle']:.0f} |")
+# about 20k, 80k, 320k, 1.2M and (--full) 4M particles: 8 a cell over 0.6^3 of the box in 3D, 4 over 0.6^2 in 2D;
+# `hearth bench` takes at most 1024 cells, 1.5M particles in 2D (4M would need 1667)
+grow = {3: [23, 36, 57, 88] + ([132] if full else []), 2: [118, 236, 471, 913] + ([1024] if full else [])}
+g_lines = ["| dim | cells | particles | before ns / particle-step | after ns / particle-step | before bytes / particle | "
+           "after bytes / particle (used, held) | after peak RSS / particle |", "|---:|---:|---:|---:|---:|---:|---:|---:|"]
+for dim, cl in grow.items():
+    for cells in cl:
+        log(f"growth {dim}D, {cells} cells")
+        res = {}
+        for t in trees:
+            n = bench(t, dim, cells, 1)["particles"]
+            steps = max(2, int(2e6 / n))
+            js = [bench(t, dim, cells, steps) for _ in range(2)]
+            res[t] = (n, min(1e9 / j["particle_steps_per_s"] for j in js), js[0])
+        ja = res["after"][2]
+        small = 16 if dim == 3 else 32  # less a tiny run's peak, as in the memory rows
+        rss = (rss_kb("after", dim, cells) - rss_kb("after", dim, small)) * 1024.0 / (res["after"][0] - bench("after", dim, small, 1)["particles"])
+        g_lines.append(f"| {dim}D | {cells} | {res['after'][0]} | {res['before'][1]:.0f} | {res['after'][1]:.0f} | "
+                       f"{res['before'][2]['bytes_per_particle']:.0f} | {ja['bytes_per_particle']:.0f}, "
+                       f"{ja['capacity_bytes_per_particle']:.0f} | {rss:.0f} |")
 
 # ---- write ----------------------------------------------------------------
 doc = f"""# Performance
@@ -302,10 +350,22 @@ holds, spare room included (before this work the bench printed only that);
 bench). RSS is the run's peak resident size less a tiny run's, per particle:
 it includes what the allocator keeps and the page tables.
 
+## The dough step by phase
+
+`scripts/bench/dough_step.lua` (2D, 64 cells, one thread, callgrind): the
+elastic step and the cam_clay_dough step with all its fields (oven, heat, CO2,
+expansion) on the same particles, inclusive instructions of each phase a step
+(the difference of 12 and 2 steps over 10). Rows indented are part of the row
+above; "the rest" is the whole step less the top-level rows.
+
+""" + "\n".join(dough_lines) + """
+
 ## Growth from 20k particles
 
-3D elastic block, one thread, wall ns per particle-step (the faster of two
-runs) and bytes per particle.
+The elastic block of `hearth bench` in 3D and 2D, one thread, wall ns per
+particle-step (the faster of two runs, on a shared machine), bytes per particle
+(`hearth bench`), and the run's peak RSS less a tiny run's, per particle (as in
+the memory rows).
 
 """ + "\n".join(g_lines) + "\n"
 os.makedirs(os.path.dirname(out), exist_ok=True)

@@ -52,6 +52,8 @@
 #include "scene.h"
 #include "mpm.h"
 
+#define FORCE_INLINE static inline __attribute__((always_inline))
+
 void boundary_init(boundary_state *b) { *b = (boundary_state){0}; }
 
 void boundary_free(boundary_state *b) {
@@ -96,8 +98,7 @@ static hearth_status ensure_area(hearth_scene *s, hearth_error *err) {
  * them, indexed ((a+1) 3 + b+1) 3 + c+1 for the offset (a, b, c) (no c in
  * 2D); NULL past the grid or where a block has no storage. Looked up once a
  * block, so a node's neighbours across the block's faces cost an index. */
-static void block_ring(const grid *g, const int bc[3], const double *ring[27]) {
-    const int D = g->dim;
+FORCE_INLINE void block_ring(const grid *g, const int D, const int bc[3], const double *ring[27]) {
     int r = 0;
     for (int a = -1; a <= 1; a++)
         for (int b = -1; b <= 1; b++)
@@ -111,12 +112,14 @@ static void block_ring(const grid *g, const int bc[3], const double *ring[27]) {
 
 /* Node gi + off (each component in -1..1) given node gi at local index l of
  * block storage node, whose blocks around are ring: its storage and local
- * index, or NULL past the grid or in a block without storage (empty air). */
-static inline const double *node_off(const grid *g, const double *node, const double *const ring[27], int l, const int gi[3],
-                                     const int off[3], int *lj) {
+ * index, or NULL past the grid or in a block without storage (empty air).
+ * D is a compile-time constant of each caller's instantiation and node
+ * indices are never negative, so the loops unroll and gi % GRID_B is a mask. */
+FORCE_INLINE const double *node_off(const grid *g, const int D, const double *node, const double *const ring[27], int l,
+                                    const int gi[3], const int off[3], int *lj) {
     int in = 1, step = 0;
-    for (int d = 0; d < g->dim; d++) {
-        const int c = gi[d] % GRID_B + off[d];
+    for (int d = 0; d < D; d++) {
+        const int c = (gi[d] & (GRID_B - 1)) + off[d];
         in &= c >= 0 && c < GRID_B;
         step = step * GRID_B + off[d];
     }
@@ -125,15 +128,28 @@ static inline const double *node_off(const grid *g, const double *node, const do
         return node;
     }
     int r = 0, lo = 0;
-    for (int d = 0; d < g->dim; d++) {
+    for (int d = 0; d < D; d++) {
         const int n = gi[d] + off[d];
         if (n < 0 || n > g->nn[d] - 1) return NULL;
-        const int c = gi[d] % GRID_B + off[d], o = c < 0 ? -1 : c >= GRID_B ? 1 : 0;
+        const int c = (gi[d] & (GRID_B - 1)) + off[d], o = c < 0 ? -1 : c >= GRID_B ? 1 : 0;
         r = r * 3 + o + 1;
         lo = lo * GRID_B + c - o * GRID_B;
     }
     *lj = lo;
     return ring[r];
+}
+
+/* grid_node_index with D a compile-time constant */
+FORCE_INLINE void node_index(const int D, const int bc[3], int l, int gi[3]) {
+    if (D == 2) {
+        gi[0] = bc[0] * GRID_B + l / GRID_B;
+        gi[1] = bc[1] * GRID_B + l % GRID_B;
+        gi[2] = 0;
+    } else {
+        gi[0] = bc[0] * GRID_B + l / (GRID_B * GRID_B);
+        gi[1] = bc[1] * GRID_B + (l / GRID_B) % GRID_B;
+        gi[2] = bc[2] * GRID_B + l % GRID_B;
+    }
 }
 
 /* Channel ch of node gi, 0 where the node has no storage (and past the grid). */
@@ -154,6 +170,14 @@ static int any_flag(const grid *g, const unsigned char *flag, const int bc[3], i
                 if (slot >= 0 && flag[slot]) return 1;
             }
     return 0;
+}
+
+/* fmin(1.0, fmax(0.0, x)) without the two libm calls (without -ffinite-math-only
+ * the compiler keeps them calls): the same value for every x, NaN (0) and -0.0
+ * (kept, as glibc's fmax(0.0, -0.0) keeps it) included. */
+static inline double clamp01(double x) {
+    const double y = x >= 0.0 ? x : 0.0;
+    return y > 1.0 ? 1.0 : y;
 }
 
 /* ---- the depth of a particle's temperature sample (the oven's Robin offset) ----
@@ -198,18 +222,26 @@ static const double D_OF_PHI[65] = { /* d_p (grid units) at phi_p = k / 64 */
 
 /* d_p (grid units) at the particle's interpolated volume fraction phi_p. */
 static inline double sample_depth(double phi) {
-    const double u = fmin(1.0, fmax(0.0, phi)) * 64.0;
+    const double u = clamp01(phi) * 64.0;
     const int k = u >= 64.0 ? 63 : (int)u;
     return D_OF_PHI[k] + (u - k) * (D_OF_PHI[k + 1] - D_OF_PHI[k]);
 }
+
+/* The clipped volume fraction psi = (phi - PHI_LO) / (PHI_HI - PHI_LO) in [0, 1]:
+ * its gradient's integral is the mean perimeter of phi's level sets between
+ * the two, and the clip keeps the noise of a disordered interior (phi within
+ * 1 - PHI_HI of one) from counting as surface. */
+#define PHI_LO 0.2
+#define PHI_HI 0.8
+static inline double clip_psi(double phi) { return clamp01((phi - PHI_LO) / (PHI_HI - PHI_LO)); }
 
 /* Each particle's area m_p sum_i w_ip r_i from CH_CG_P, one particle block at
  * a time, and with an oven or evaporation the depth of its sample from the volume
  * fraction phi in CH_CG_R. Only blocks whose tile holds area are gathered: the
  * interior of a large body is skipped. */
-static void area_gather(hearth_scene *s, int k, int want_depth) {
+FORCE_INLINE void area_gather(hearth_scene *s, const int D, int k, int want_depth) {
     grid *g = &s->g;
-    const int NPB = g->nodes_per_block, TN = grid_tile_count(g), D = g->dim;
+    const int NPB = g->nodes_per_block;
     const pblock pb = mpm_state_of(s)->pb[k];
     int bc[3];
     grid_block_coords(g, pb.block, bc);
@@ -219,12 +251,15 @@ static void area_gather(hearth_scene *s, int k, int want_depth) {
             for (int c = 0; c <= (D == 3) && !any; c++) any = s->boundary.blocks[g->slot[grid_block_id(g, bc[0] + a, bc[1] + b, bc[2] + c)]];
     if (!any) return; /* most particle blocks lie inside the body */
     double r[GRID_T * GRID_T * GRID_T], ph[GRID_T * GRID_T * GRID_T];
-    for (int t = 0; t < TN; t++) {
-        int l;
-        const double *node = grid_block(g, grid_tile_slot(g, bc, t, &l));
-        r[t] = node[CH_CG_P * NPB + l];
-        ph[t] = node[CH_CG_R * NPB + l];
-    }
+    for (int a = 0; a < GRID_T; a++)
+        for (int b = 0; b < GRID_T; b++)
+            for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
+                int l;
+                const double *node = grid_tile_node(g, D, bc, a, b, c, &l);
+                const int t = D == 2 ? a * GRID_T + b : (a * GRID_T + b) * GRID_T + c;
+                r[t] = node[CH_CG_P * NPB + l];
+                ph[t] = node[CH_CG_R * NPB + l];
+            }
     const double *X = pcold(&s->ps, PC_X), *M = pcold(&s->ps, PC_MASS);
     int *flags = s->ps.enabled & (1u << PC_FLAGS) ? pcoli(&s->ps, PC_FLAGS) : NULL;
     for (int i = pb.start; i < pb.end; i++) { /* the weights are a tensor product: one axis at a time */
@@ -232,7 +267,7 @@ static void area_gather(hearth_scene *s, int k, int want_depth) {
         int lb[3] = {0, 0, 0};
         for (int d = 0; d < D; d++) {
             const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
-            const int base = (int)floor(Xd - 0.5);
+            const int base = base_node(Xd); /* floor: the sort keeps X >= 1 (mpm.h) */
             bspline_weights(Xd - base, w[d], dw);
             lb[d] = base - bc[d] * GRID_B;
         }
@@ -266,26 +301,169 @@ static void area_gather(hearth_scene *s, int k, int want_depth) {
     }
 }
 
-/* The clipped volume fraction psi = (phi - PHI_LO) / (PHI_HI - PHI_LO) in [0, 1]:
- * its gradient's integral is the mean perimeter of phi's level sets between
- * the two, and the clip keeps the noise of a disordered interior (phi within
- * 1 - PHI_HI of one) from counting as surface. */
-#define PHI_LO 0.2
-#define PHI_HI 0.8
-static inline double clip_psi(double phi) { return fmin(1.0, fmax(0.0, (phi - PHI_LO) / (PHI_HI - PHI_LO))); }
+/* 2. each cell's gradient of psi (grid units), from the multilinear
+ * interpolant at its centre, in CH_CG_P, CH_B, CH_T0 of its upper corner, and
+ * the mass of its corners in CH_R: a node with mass has its +1 neighbours in
+ * storage (they are in its particles' tiles), so every cell with mass has its
+ * upper corner stored, while a lower corner may be empty air. These channels
+ * are scratch until thermal_prepare fills them. Block k; near: its flag. */
+FORCE_INLINE void cell_gradient(hearth_scene *s, const int D, int k, int near) {
+    grid *g = &s->g;
+    const int NPB = g->nodes_per_block, NC = 1 << D, GCH[3] = {CH_CG_P, CH_B, CH_T0};
+    double *node = grid_block(g, k);
+    int bc[3];
+    grid_block_coords(g, g->active[k], bc);
+    for (int d = 0; d < D; d++) memset(node + GCH[d] * NPB, 0, sizeof(double) * (size_t)NPB);
+    memset(node + CH_R * NPB, 0, sizeof(double) * (size_t)NPB);
+    if (!near) return;
+    const double *ring[27];
+    block_ring(g, D, bc, ring);
+    for (int l = 0; l < NPB; l++) {
+        int gi[3];
+        node_index(D, bc, l, gi);
+        int inside = 1;
+        for (int d = 0; d < D; d++) inside &= gi[d] >= 1;
+        if (!inside) continue; /* no cell below the grid's first node */
+        double psi[8], msum = 0;
+        for (int c = 0; c < NC; c++) {
+            int off[3] = {0, 0, 0}, lj;
+            for (int d = 0; d < D; d++) off[d] = -!((c >> d) & 1);
+            const double *nj = node_off(g, D, node, ring, l, gi, off, &lj);
+            psi[c] = nj ? clip_psi(nj[CH_CG_R * NPB + lj]) : 0.0;
+            msum += nj ? nj[CH_M * NPB + lj] : 0.0;
+        }
+        if (!(msum > 0)) continue;
+        double gr[3] = {0, 0, 0};
+        for (int c = 0; c < NC; c++)
+            for (int d = 0; d < D; d++) gr[d] += ((c >> d) & 1 ? psi[c] : -psi[c]) / (NC / 2);
+        /* a face against the domain wall is no air surface: along an axis whose
+         * end node (on this line) has mass within three nodes, drop that component */
+        for (int d = 0; d < D; d++) {
+            int ej[3] = {gi[0], gi[1], gi[2]};
+            if (gi[d] - 1 <= 2) ej[d] = 0;
+            else if (gi[d] >= g->nn[d] - 3) ej[d] = g->nn[d] - 1;
+            else continue;
+            if (node_value(g, ej, CH_M) > 0) gr[d] = 0;
+        }
+        /* nor is contact with a collider: drop the component along its normal */
+        double xc[3] = {0, 0, 0};
+        for (int d = 0; d < D; d++) xc[d] = g->lo[d] + (gi[d] - 0.5) * g->dx;
+        for (int c = 0; c < s->ncol; c++) {
+            double nrm[3] = {0, 0, 0};
+            if (!collider_near(&s->cols[c], xc) || collider_sdf(&s->cols[c], xc, nrm) >= 2 * g->dx) continue;
+            double gn = 0;
+            for (int d = 0; d < D; d++) gn += gr[d] * nrm[d];
+            for (int d = 0; d < D; d++) gr[d] -= gn * nrm[d];
+        }
+        for (int d = 0; d < D; d++) node[GCH[d] * NPB + l] = gr[d];
+        node[CH_R * NPB + l] = msum;
+    }
+}
+
+/* 3. each cell's area: its gradient along the normal n of the gradient averaged
+ * over the 3^dim cells around it, grad psi . n dx^dim. Taking |grad psi| counts
+ * the staircase a lattice-seeded curve leaves in psi (the tangential ripple adds
+ * to the length in second order, a fixed fraction at every dx: +0.9% on a disc);
+ * along a smoother normal the ripple cancels in first order. Then CH_R holds the
+ * cell's area over the mass of its corners. Returns whether a cell of block k
+ * holds area. */
+FORCE_INLINE unsigned char cell_area(hearth_scene *s, const int D, int k) {
+    grid *g = &s->g;
+    const int NPB = g->nodes_per_block, GCH[3] = {CH_CG_P, CH_B, CH_T0};
+    double *node = grid_block(g, k);
+    int bc[3];
+    grid_block_coords(g, g->active[k], bc);
+    unsigned char any = 0;
+    const double *ring[27];
+    block_ring(g, D, bc, ring);
+    for (int l = 0; l < NPB; l++) {
+        const double msum = node[CH_R * NPB + l];
+        if (!(msum > 0)) continue;
+        double gr[3] = {0, 0, 0}, nv[3] = {0, 0, 0};
+        for (int d = 0; d < D; d++) gr[d] = node[GCH[d] * NPB + l];
+        if (gr[0] == 0 && gr[1] == 0 && gr[2] == 0) {
+            node[CH_R * NPB + l] = 0;
+            continue;
+        }
+        int gi[3];
+        node_index(D, bc, l, gi);
+        for (int a = -1; a <= 1; a++)
+            for (int b = -1; b <= 1; b++)
+                for (int c = -1; c <= (D == 3 ? 1 : -1); c++) {
+                    const int off[3] = {a, b, D == 3 ? c : 0};
+                    int lj;
+                    const double *nj = node_off(g, D, node, ring, l, gi, off, &lj);
+                    if (!nj) continue;
+                    for (int d = 0; d < D; d++) nv[d] += nj[GCH[d] * NPB + lj];
+                }
+        double nn2 = 0, gn = 0;
+        for (int d = 0; d < D; d++) nn2 += nv[d] * nv[d];
+        for (int d = 0; d < D; d++) gn += gr[d] * nv[d];
+        gn = nn2 > 0 ? gn / sqrt(nn2) : 0.0;
+        /* grad psi . n dx^dim = gr . n dx^(dim-1) */
+        node[CH_R * NPB + l] = gn > 0 ? gn * (D == 2 ? g->dx : g->dx * g->dx) / msum : 0.0;
+        any |= gn > 0;
+    }
+    return any;
+}
+
+/* 4. r_i = sum over the node's cells of (area / corner mass), in CH_CG_P, for
+ * block k (near: a block within reach holds area). Returns whether any r_i > 0. */
+FORCE_INLINE unsigned char node_share(hearth_scene *s, const int D, int k, int near) {
+    grid *g = &s->g;
+    const int NPB = g->nodes_per_block, NC = 1 << D;
+    double *node = grid_block(g, k);
+    if (!near) {
+        memset(node + CH_CG_P * NPB, 0, sizeof(double) * (size_t)NPB);
+        return 0;
+    }
+    int bc[3];
+    grid_block_coords(g, g->active[k], bc);
+    unsigned char any = 0;
+    const double *ring[27];
+    block_ring(g, D, bc, ring);
+    for (int l = 0; l < NPB; l++) {
+        double r = 0;
+        if (node[CH_M * NPB + l] > 0) {
+            int gi[3];
+            node_index(D, bc, l, gi);
+            for (int c = 0; c < NC; c++) {
+                int off[3] = {0, 0, 0}, lj;
+                for (int d = 0; d < D; d++) off[d] = (c >> d) & 1;
+                const double *nj = node_off(g, D, node, ring, l, gi, off, &lj);
+                if (nj) r += nj[CH_R * NPB + lj];
+            }
+        }
+        node[CH_CG_P * NPB + l] = r;
+        any |= r > 0;
+    }
+    return any;
+}
+
+/* The passes of each dimension: D a compile-time constant in each (as in
+ * mpm.c and transport.c), so the stencil loops unroll. */
+static void cell_gradient_2(hearth_scene *s, int k, int near) { cell_gradient(s, 2, k, near); }
+static void cell_gradient_3(hearth_scene *s, int k, int near) { cell_gradient(s, 3, k, near); }
+static unsigned char cell_area_2(hearth_scene *s, int k) { return cell_area(s, 2, k); }
+static unsigned char cell_area_3(hearth_scene *s, int k) { return cell_area(s, 3, k); }
+static unsigned char node_share_2(hearth_scene *s, int k, int near) { return node_share(s, 2, k, near); }
+static unsigned char node_share_3(hearth_scene *s, int k, int near) { return node_share(s, 3, k, near); }
+static void area_gather_2(hearth_scene *s, int k, int want_depth) { area_gather(s, 2, k, want_depth); }
+static void area_gather_3(hearth_scene *s, int k, int want_depth) { area_gather(s, 3, k, want_depth); }
 
 hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
     hearth_status st = ensure_area(s, err);
     if (st) return st;
     grid *g = &s->g;
     particles *ps = &s->ps;
-    const int D = g->dim, NPB = g->nodes_per_block, n = ps->n;
-    double *area = s->boundary.area;
-    memset(area, 0, sizeof(double) * (size_t)n);
-    memset(s->boundary.depth, 0, sizeof(double) * (size_t)n);
+    const int D = g->dim, NPB = g->nodes_per_block, n = ps->n, d3 = D == 3;
+    double *area = s->boundary.area, *depth = s->boundary.depth;
     int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
-    if (flags)
-        for (int i = 0; i < n; i++) flags[i] &= ~PF_BOUNDARY;
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) { /* one pass, in parallel: run serially it was most of the fields' serial share */
+        area[i] = depth[i] = 0.0;
+        if (flags) flags[i] &= ~PF_BOUNDARY;
+    }
     if (!boundary_needed(s)) return HEARTH_OK;
     const mpm_state *m = mpm_state_of(s); /* the sort's particle blocks */
     /* the depth of the samples serves the oven's Robin term and evaporation
@@ -319,149 +497,23 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
         grid_block_coords(g, g->active[k], bc);
         near[k] = (unsigned char)any_flag(g, s->boundary.blocks, bc, -1);
     }
-
-    /* 2. each cell's gradient of psi (grid units), from the multilinear
-     * interpolant at its centre, in CH_CG_P, CH_B, CH_T0 of its upper corner, and
-     * the mass of its corners in CH_R: a node with mass has its +1 neighbours in
-     * storage (they are in its particles' tiles), so every cell with mass has its
-     * upper corner stored, while a lower corner may be empty air. These channels
-     * are scratch until thermal_prepare fills them. */
-    const int NC = 1 << D, GCH[3] = {CH_CG_P, CH_B, CH_T0};
+    /* 2. the cells' gradients */
 #pragma omp parallel for schedule(dynamic, 4) if (n >= SCENE_PARALLEL_MIN)
-    for (int k = 0; k < g->nactive; k++) {
-        double *node = grid_block(g, k);
-        int bc[3];
-        grid_block_coords(g, g->active[k], bc);
-        for (int d = 0; d < D; d++) memset(node + GCH[d] * NPB, 0, sizeof(double) * (size_t)NPB);
-        memset(node + CH_R * NPB, 0, sizeof(double) * (size_t)NPB);
-        if (!near[k]) continue;
-        const double *ring[27];
-        block_ring(g, bc, ring);
-        for (int l = 0; l < NPB; l++) {
-            int gi[3];
-            grid_node_index(g, bc, l, gi);
-            int inside = 1;
-            for (int d = 0; d < D; d++) inside &= gi[d] >= 1;
-            if (!inside) continue; /* no cell below the grid's first node */
-            double psi[8], msum = 0;
-            for (int c = 0; c < NC; c++) {
-                int off[3] = {0, 0, 0}, lj;
-                for (int d = 0; d < D; d++) off[d] = -!((c >> d) & 1);
-                const double *nj = node_off(g, node, ring, l, gi, off, &lj);
-                psi[c] = nj ? clip_psi(nj[CH_CG_R * NPB + lj]) : 0.0;
-                msum += nj ? nj[CH_M * NPB + lj] : 0.0;
-            }
-            if (!(msum > 0)) continue;
-            double gr[3] = {0, 0, 0};
-            for (int c = 0; c < NC; c++)
-                for (int d = 0; d < D; d++) gr[d] += ((c >> d) & 1 ? psi[c] : -psi[c]) / (NC / 2);
-            /* a face against the domain wall is no air surface: along an axis whose
-             * end node (on this line) has mass within three nodes, drop that component */
-            for (int d = 0; d < D; d++) {
-                int ej[3] = {gi[0], gi[1], gi[2]};
-                if (gi[d] - 1 <= 2) ej[d] = 0;
-                else if (gi[d] >= g->nn[d] - 3) ej[d] = g->nn[d] - 1;
-                else continue;
-                if (node_value(g, ej, CH_M) > 0) gr[d] = 0;
-            }
-            /* nor is contact with a collider: drop the component along its normal */
-            double xc[3] = {0, 0, 0};
-            for (int d = 0; d < D; d++) xc[d] = g->lo[d] + (gi[d] - 0.5) * g->dx;
-            for (int c = 0; c < s->ncol; c++) {
-                double nrm[3] = {0, 0, 0};
-                if (!collider_near(&s->cols[c], xc) || collider_sdf(&s->cols[c], xc, nrm) >= 2 * g->dx) continue;
-                double gn = 0;
-                for (int d = 0; d < D; d++) gn += gr[d] * nrm[d];
-                for (int d = 0; d < D; d++) gr[d] -= gn * nrm[d];
-            }
-            for (int d = 0; d < D; d++) node[GCH[d] * NPB + l] = gr[d];
-            node[CH_R * NPB + l] = msum;
-        }
-    }
-    /* 3. each cell's area: its gradient along the normal n of the gradient averaged
-     * over the 3^dim cells around it, grad psi . n dx^dim. Taking |grad psi| counts
-     * the staircase a lattice-seeded curve leaves in psi (the tangential ripple adds
-     * to the length in second order, a fixed fraction at every dx: +0.9% on a disc);
-     * along a smoother normal the ripple cancels in first order. Then CH_R holds the
-     * cell's area over the mass of its corners. */
+    for (int k = 0; k < g->nactive; k++) (d3 ? cell_gradient_3 : cell_gradient_2)(s, k, near[k]);
+    /* 3. the cells' areas; a block flags whether a cell of it holds area */
 #pragma omp parallel for schedule(dynamic, 4) if (n >= SCENE_PARALLEL_MIN)
-    for (int k = 0; k < g->nactive; k++) {
-        double *node = grid_block(g, k);
-        int bc[3];
-        grid_block_coords(g, g->active[k], bc);
-        unsigned char any = 0;
-        if (!near[k]) {
-            s->boundary.blocks[k] = 0;
-            continue;
-        }
-        const double *ring[27];
-        block_ring(g, bc, ring);
-        for (int l = 0; l < NPB; l++) {
-            const double msum = node[CH_R * NPB + l];
-            if (!(msum > 0)) continue;
-            double gr[3] = {0, 0, 0}, nv[3] = {0, 0, 0};
-            for (int d = 0; d < D; d++) gr[d] = node[GCH[d] * NPB + l];
-            if (gr[0] == 0 && gr[1] == 0 && gr[2] == 0) {
-                node[CH_R * NPB + l] = 0;
-                continue;
-            }
-            int gi[3];
-            grid_node_index(g, bc, l, gi);
-            for (int a = -1; a <= 1; a++)
-                for (int b = -1; b <= 1; b++)
-                    for (int c = -1; c <= (D == 3 ? 1 : -1); c++) {
-                        const int off[3] = {a, b, D == 3 ? c : 0};
-                        int lj;
-                        const double *nj = node_off(g, node, ring, l, gi, off, &lj);
-                        if (!nj) continue;
-                        for (int d = 0; d < D; d++) nv[d] += nj[GCH[d] * NPB + lj];
-                    }
-            double nn2 = 0, gn = 0;
-            for (int d = 0; d < D; d++) nn2 += nv[d] * nv[d];
-            for (int d = 0; d < D; d++) gn += gr[d] * nv[d];
-            gn = nn2 > 0 ? gn / sqrt(nn2) : 0.0;
-            /* grad psi . n dx^dim = gr . n dx^(dim-1) */
-            node[CH_R * NPB + l] = gn > 0 ? gn * (D == 2 ? g->dx : g->dx * g->dx) / msum : 0.0;
-            any |= gn > 0;
-        }
-        s->boundary.blocks[k] = any; /* a cell of this block holds area */
-    }
+    for (int k = 0; k < g->nactive; k++) s->boundary.blocks[k] = near[k] ? (d3 ? cell_area_3 : cell_area_2)(s, k) : 0;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         int bc[3];
         grid_block_coords(g, g->active[k], bc);
         near[k] = (unsigned char)any_flag(g, s->boundary.blocks, bc, 0); /* its nodes' cells reach +1 blocks */
     }
-    /* 4. r_i = sum over the node's cells of (area / corner mass), in CH_CG_P; the
-     * blocks that hold any */
+    /* 4. the nodes' shares r_i; the blocks that hold any */
 #pragma omp parallel for schedule(dynamic, 4) if (n >= SCENE_PARALLEL_MIN)
-    for (int k = 0; k < g->nactive; k++) {
-        double *node = grid_block(g, k);
-        int bc[3];
-        grid_block_coords(g, g->active[k], bc);
-        unsigned char any = 0;
-        const double *ring[27] = {NULL};
-        if (near[k]) block_ring(g, bc, ring);
-        for (int l = 0; l < NPB && near[k]; l++) {
-            double r = 0;
-            if (node[CH_M * NPB + l] > 0) {
-                int gi[3];
-                grid_node_index(g, bc, l, gi);
-                for (int c = 0; c < NC; c++) {
-                    int off[3] = {0, 0, 0}, lj;
-                    for (int d = 0; d < D; d++) off[d] = (c >> d) & 1;
-                    const double *nj = node_off(g, node, ring, l, gi, off, &lj);
-                    if (nj) r += nj[CH_R * NPB + lj];
-                }
-            }
-            node[CH_CG_P * NPB + l] = r;
-            any |= r > 0;
-        }
-        if (!near[k]) memset(node + CH_CG_P * NPB, 0, sizeof(double) * (size_t)NPB);
-        s->boundary.blocks[k] = any;
-    }
+    for (int k = 0; k < g->nactive; k++) s->boundary.blocks[k] = (d3 ? node_share_3 : node_share_2)(s, k, near[k]);
     /* 5. each particle's share m_p sum_i w_ip r_i: the shares of a cell's area sum to it */
 #pragma omp parallel for schedule(dynamic, 2) if (n >= SCENE_PARALLEL_MIN)
-    for (int k = 0; k < m->npb; k++) area_gather(s, k, want_depth);
+    for (int k = 0; k < m->npb; k++) (d3 ? area_gather_3 : area_gather_2)(s, k, want_depth);
     return HEARTH_OK;
 }

@@ -178,6 +178,7 @@ static hearth_status find_boundary(hearth_scene *s) {
     const int oven = !isnan(s->def.oven_temperature) && s->def.oven_beta > 0;
     const int *mat = pcoli(ps, PC_MAT);
     const double beta = s->def.oven_beta, *depth = s->boundary.depth;
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++)
         if (flags[i] & PF_BOUNDARY) { /* flagged by boundary.c: the air boundary */
             /* The grid samples the particle's temperature at depth d below the
@@ -537,6 +538,17 @@ hearth_status thermal_prepare(hearth_scene *s, hearth_error *err) {
  * forward Euler; the implicit solve has no 1/c amplification. */
 #define SMALL_NODE 0.1
 
+/* grid_node_at with the dimension D a compile-time constant: node gi's block
+ * storage and local index, NULL past the grid or in a block without storage. */
+static inline __attribute__((always_inline)) double *node_at(const grid *g, const int D, const int gi[3], int *l) {
+    for (int d = 0; d < D; d++)
+        if (gi[d] < 0 || gi[d] > g->nn[d] - 1) return NULL;
+    const int slot = g->slot[grid_block_id(g, gi[0] / GRID_B, gi[1] / GRID_B, D == 3 ? gi[2] / GRID_B : 0)];
+    if (slot < 0) return NULL;
+    *l = D == 2 ? (gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B : ((gi[0] % GRID_B) * GRID_B + gi[1] % GRID_B) * GRID_B + gi[2] % GRID_B;
+    return grid_block(g, slot);
+}
+
 /* The node a small node gi (capacity c) merges into: its fullest neighbour
  * (below), when c < SMALL_NODE of it, that neighbour is not small
  * itself and neither is held. NULL otherwise. The axis neighbours come first,
@@ -546,9 +558,10 @@ hearth_status thermal_prepare(hearth_scene *s, hearth_error *err) {
  * face the three inner neighbours of an air node tie, and a tie broken by
  * round-off sent neighbouring air nodes different ways (a ripple of 0.008 along
  * the slab's face). */
-static double *merge_target(const hearth_scene *s, const int gi[3], double c, int *lj) {
+static inline __attribute__((always_inline)) double *merge_target_d(const hearth_scene *s, const int D, const int gi[3],
+                                                                     double c, int *lj) {
     const grid *g = &s->g;
-    const int D = g->dim, NPB = g->nodes_per_block;
+    const int NPB = g->nodes_per_block;
     double *best = NULL, cbest = 0;
     for (int pass = 0; pass < 2 && !(best && c < SMALL_NODE * cbest); pass++) /* diagonals only when no axis neighbour will do */
         for (int a = -1; a <= 1; a++)
@@ -558,7 +571,7 @@ static double *merge_target(const hearth_scene *s, const int gi[3], double c, in
                     if (!nz || (pass == 0) != (nz == 1)) continue;
                     const int gj[3] = {gi[0] + a, gi[1] + b, gi[2] + e};
                     int l;
-                    double *nj = grid_node_at(g, gj, &l);
+                    double *nj = node_at(g, D, gj, &l);
                     if (nj && nj[CH_HC * NPB + l] > cbest * (1.0 + 1e-9)) best = nj, cbest = nj[CH_HC * NPB + l], *lj = l;
                 }
     if (!best || !(c < SMALL_NODE * cbest) || best[CH_CG_R * NPB + *lj] < SMALL_NODE) return NULL;
@@ -567,6 +580,10 @@ static double *merge_target(const hearth_scene *s, const int gi[3], double c, in
         if (!isnan(s->heat.fix[kj])) return NULL;
     }
     return best;
+}
+
+static double *merge_target(const hearth_scene *s, const int gi[3], double c, int *lj) {
+    return s->g.dim == 2 ? merge_target_d(s, 2, gi, c, lj) : merge_target_d(s, 3, gi, c, lj);
 }
 
 /* Forward Euler with the small nodes merged (above). CH_CG_R holds the volume

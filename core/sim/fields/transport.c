@@ -53,10 +53,41 @@ FORCE_INLINE int tile_index(const int D, const int base[3], int a, int b, int c)
     return D == 2 ? (base[0] + a) * GRID_T + base[1] + b : ((base[0] + a) * GRID_T + base[1] + b) * GRID_T + base[2] + c;
 }
 
+/* Two doubles in one register (GCC's vector extension; SSE2 on x86-64): the 2D
+ * passes below do two lanes of the same arithmetic at once. Each lane does the
+ * operations of the scalar code in its order (the build does not contract a
+ * product and a sum into an FMA: -std=c17 sets -ffp-contract=off), so the
+ * results are the scalar code's to the bit. */
+typedef double v2d __attribute__((vector_size(16)));
+FORCE_INLINE v2d v2_load(const double *p) {
+    v2d v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+FORCE_INLINE void v2_store(double *p, v2d v) { memcpy(p, &v, sizeof v); }
+
 /* v and grad v at a particle from tile values, for NC (1 or 2) channels at
  * once so they share the stencil: sum_i v_i w_ip and sum_i v_i grad w_ip. */
 FORCE_INLINE void gather(const int D, const int NC, const double *const v[2], const int base[3], double w[3][3],
                          double dw[3][3], double val[2], double grad[2][3]) {
+    if (D == 2) { /* the pairs (ta, tb) and (val, grad_0) in one register each: the same sums lane by lane */
+        const v2d wd1[3] = {{w[1][0], dw[1][0]}, {w[1][1], dw[1][1]}, {w[1][2], dw[1][2]}};
+        v2d vg[2] = {{val[0], grad[0][0]}, {val[1], grad[1][0]}};
+        for (int a = 0; a < 3; a++) {
+            const v2d wd0 = {w[0][a], dw[0][a]};
+            v2d tab[2] = {{0, 0}, {0, 0}};
+            for (int b = 0; b < 3; b++) {
+                const int t = tile_index(D, base, a, b, 0);
+                for (int k = 0; k < NC; k++) tab[k] += v[k][t] * wd1[b];
+            }
+            for (int k = 0; k < NC; k++) {
+                vg[k] += tab[k][0] * wd0;
+                grad[k][1] += tab[k][1] * w[0][a];
+            }
+        }
+        for (int k = 0; k < NC; k++) val[k] = vg[k][0], grad[k][0] = vg[k][1];
+        return;
+    }
     for (int a = 0; a < 3; a++) {
         /* sum over b of (w1, dw1) x (sum over c of w2) and w1 x (sum over c of dw2) */
         double ta[2] = {0, 0}, tb[2] = {0, 0}, tc[2] = {0, 0};
@@ -88,6 +119,20 @@ FORCE_INLINE void gather(const int D, const int NC, const double *const v[2], co
 /* out_k,i += grad w_ip . f_k + w_ip r_k for NC (1 or 2) outputs sharing the stencil. */
 FORCE_INLINE void scatter(const int D, const int NC, double *const out[2], const int base[3], double w[3][3],
                           double dw[3][3], double f[2][3], const double r[2]) {
+    if (D == 2) { /* nodes b = 0, 1 of each row in one register, b = 2 alone */
+        const v2d w1 = {w[1][0], w[1][1]}, dw1 = {dw[1][0], dw[1][1]};
+        for (int a = 0; a < 3; a++) {
+            const v2d wab = w[0][a] * w1, p0 = dw[0][a] * w1, p1 = w[0][a] * dw1;
+            const double wab2 = w[0][a] * w[1][2], p02 = dw[0][a] * w[1][2], p12 = w[0][a] * dw[1][2];
+            const int t = tile_index(D, base, a, 0, 0);
+            for (int k = 0; k < NC; k++) {
+                const v2d A = wab * r[k] + (p0 * f[k][0] + p1 * f[k][1]);
+                v2_store(out[k] + t, v2_load(out[k] + t) + A);
+                out[k][t + 2] += wab2 * r[k] + (p02 * f[k][0] + p12 * f[k][1]);
+            }
+        }
+        return;
+    }
     for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++) {
             const double wab = w[0][a] * w[1][b], p0 = dw[0][a] * w[1][b], p1 = w[0][a] * dw[1][b];
@@ -148,7 +193,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
         double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
         for (int d = 0; d < D; d++) {
             const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
-            const int bb = (int)floor(Xd - 0.5);
+            const int bb = base_node(Xd); /* floor: the sort keeps X >= 1 (mpm.h) */
             bspline_weights(Xd - bb, w[d], dw[d]);
             for (int k = 0; k < 3; k++) dw[d][k] *= g->inv_dx;
             base[d] = bb - bc[d] * GRID_B;
