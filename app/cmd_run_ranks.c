@@ -53,6 +53,11 @@ void app_ranks_report(const run_args *a) {
     hearth_ranks_traffic(&bytes, &seconds);
     const char *v = getenv("HEARTH_RANKS_REPORT");
     if (a->quiet && !(v && v[0] == '1')) return;
-    fprintf(stderr, "hearth run: %d MPI ranks; rank 0 received %.3g MB in the exchanges, %.3g s inside them\n",
-            hearth_ranks_size(), bytes / 1e6, seconds);
+    long slabs, replicated;
+    hearth_ranks_steps(&slabs, &replicated);
+    const long steps = slabs + replicated;
+    fprintf(stderr,
+            "hearth run: %d MPI ranks, %ld steps in slabs and %ld replicated; rank 0 received %.3g MB in the exchanges "
+            "(%.4g kB a step), %.3g s inside them\n",
+            hearth_ranks_size(), slabs, replicated, bytes / 1e6, steps ? bytes / 1e3 / (double)steps : 0.0, seconds);
 }

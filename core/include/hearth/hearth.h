@@ -385,6 +385,12 @@ void hearth_scene_set_gravity_fn(hearth_scene *s, hearth_gravity_fn fn, void *ud
 /// hearth_stats.diagnosis). With the rollback policy the scene is left at the
 /// last good state; with the stop policy it keeps the failed step for inspection.
 hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err);
+/// Over MPI ranks the steps may leave each rank holding only its slab's
+/// particles: this brings every particle back to every rank before anything
+/// reads them (collective: every rank calls it at the same point; a no-op in
+/// one process). The Lua binding calls it for every scene method but the
+/// stepping ones.
+hearth_status hearth_scene_whole(hearth_scene *s, hearth_error *err);
 /// Advance until sim time t_end (the last step is shortened to land on it).
 hearth_status hearth_scene_advance(hearth_scene *s, double t_end, hearth_error *err);
 /// As hearth_scene_advance, but take at most max_steps steps (< 0: no limit), so
@@ -731,6 +737,11 @@ void hearth_ranks_finalize(void);
 /// seconds spent inside them, waiting for the other ranks included. 0 and 0
 /// on one rank.
 void hearth_ranks_traffic(double *bytes, double *seconds);
+/// MPM steps this process took over MPI ranks in the slab mode (each rank
+/// holds its slab's particles; docs/scaling.md) and in the replicated mode
+/// (every rank holds the whole scene: heat, water, mixing, CO2, periodic
+/// axes and the rollback guard need it).
+void hearth_ranks_steps(long *slabs, long *replicated);
 
 #ifdef __cplusplus
 }

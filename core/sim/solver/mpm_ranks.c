@@ -34,21 +34,65 @@
 
 #include "alloc.h"
 #include "error.h"
+#include "mixing.h"
 #include "mpm.h"
 #include "particles.h"
 #include "ranks.h"
 #include "thermal.h"
 #include "water.h"
 
+/* what each rank tells the others after G2P in the slab mode */
+typedef struct rank_report {
+    step_report rep;
+    int n;
+} rank_report;
+
+/* Slabs (the decomposed mode): while live, this rank holds only the particles
+ * whose base node's block lies in block layers [cut[me], cut[me + 1]) along
+ * axis. */
+struct mpm_slabs {
+    int live, axis, nlayer;
+    int ntotal;             /* particles over all ranks (a step neither adds nor removes any) */
+    int *cut;               /* nranks + 1 */
+    int *count;             /* nlayer: particles per block layer */
+    long balanced;          /* the step at which the cuts were last set */
+    unsigned char *drop;    /* per particle: leaves this rank */
+    size_t dropcap;
+    unsigned char *out[2];  /* packed particles for the lower and the upper neighbour */
+    size_t outcap[2];
+    int *nall;              /* nranks + 1: every rank's particle count, then the prefix */
+    void *reps;             /* nranks rank_report */
+};
+
+/* (a test may give the state a rank count by hand, without the slab tables) */
+static int slabs_live(const mpm_state *m) { return m->slabs && m->slabs->live; }
+
 hearth_status mpm_ranks_init(mpm_state *m, hearth_error *err) {
     m->nranks = ranks_size();
     m->kfirst = mem_calloc(sizeof(int) * ((size_t)m->nranks + 1));
     m->pfirst = mem_calloc(sizeof(int) * ((size_t)m->nranks + 1));
-    if (!m->kfirst || !m->pfirst) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the MPM rank tables");
+    m->slabs = mem_calloc(sizeof(struct mpm_slabs));
+    if (!m->kfirst || !m->pfirst || !m->slabs) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the MPM rank tables");
+    struct mpm_slabs *sl = m->slabs;
+    sl->cut = mem_calloc(sizeof(int) * ((size_t)m->nranks + 1));
+    sl->nall = mem_calloc(sizeof(int) * ((size_t)m->nranks + 1));
+    sl->reps = mem_calloc(sizeof(rank_report) * (size_t)m->nranks);
+    if (!sl->cut || !sl->nall || !sl->reps) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the MPM rank tables");
     return HEARTH_OK;
 }
 
 void mpm_ranks_free(mpm_state *m) {
+    struct mpm_slabs *sl = m->slabs;
+    if (sl) {
+        mem_free(sl->cut, sizeof(int) * ((size_t)m->nranks + 1));
+        mem_free(sl->nall, sizeof(int) * ((size_t)m->nranks + 1));
+        mem_free(sl->reps, sizeof(rank_report) * (size_t)m->nranks);
+        mem_free(sl->count, sizeof(int) * (size_t)sl->nlayer);
+        mem_free(sl->drop, sl->dropcap);
+        for (int k = 0; k < 2; k++) mem_free(sl->out[k], sl->outcap[k]);
+        mem_free(sl, sizeof *sl);
+        m->slabs = NULL;
+    }
     mem_free(m->kfirst, sizeof(int) * ((size_t)m->nranks + 1));
     mem_free(m->pfirst, sizeof(int) * ((size_t)m->nranks + 1));
     m->kfirst = m->pfirst = NULL;
@@ -57,7 +101,7 @@ void mpm_ranks_free(mpm_state *m) {
 void mpm_ranks_partition(hearth_scene *s) {
     mpm_state *m = s->mpm;
     const int N = m->nranks, n = s->ps.n;
-    if (N == 1) {
+    if (N == 1 || slabs_live(m)) { /* slabs: every particle this rank holds is its own */
         m->k_lo = 0, m->k_hi = m->npb;
         return;
     }
@@ -96,11 +140,306 @@ hearth_status mpm_ranks_sum_grid(hearth_scene *s, hearth_error *err) {
 
 void mpm_ranks_gather(hearth_scene *s) {
     mpm_state *m = s->mpm;
-    if (m->nranks == 1) return;
+    if (m->nranks == 1 || slabs_live(m)) return;
     particles *ps = &s->ps;
     ranks_allgather(m->partial, sizeof(pb_partial), m->kfirst);
     /* G2P filed its own particles' sort keys (mpm_sort.c): the other ranks' come with their particles */
     ranks_allgather(m->keys, sizeof(int), m->pfirst);
     for (int c = 0; c < PC_COUNT; c++)
         if ((ps->enabled & (1u << c)) && ps->col[c]) ranks_allgather(ps->col[c], particles_col_bytes(ps, c), m->pfirst);
+}
+
+/* ---- slabs: particles owned by rank --------------------------------- */
+
+/* The slab mode holds, per rank, only the particles of its slab, so anything
+ * that reads every particle inside a step must not run. Those scenes keep the
+ * replicated mode above, chosen here, for the whole step call: heat and water
+ * (their grid passes read every particle's volume, and the implicit heat
+ * solve is global), mixing (a particle pass before the sort), periodic axes
+ * (wrapped on the whole set) and the rollback guard (its snapshot is the
+ * whole scene). */
+static int slabs_fit(const hearth_scene *s) {
+    const mpm_state *m = s->mpm;
+    if (m->nranks == 1 || !m->slabs) return 0;
+    if (thermal_active(s) || water_active(s) || mixing_active(s)) return 0;
+    if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) return 0;
+    if (s->def.guard == HEARTH_GUARD_ROLLBACK) return 0;
+    if (s->ps.enabled & (1u << PC_GAS)) return 0; /* stats() sums the gas over the particles */
+    int axis = 0;
+    for (int d = 1; d < s->g.dim; d++)
+        if (s->g.nb[d] > s->g.nb[axis]) axis = d;
+    return s->g.nb[axis] >= m->nranks; /* every slab at least one block layer thick */
+}
+
+/* The block layer along the slab axis of particle i's base node (clamped to
+ * the grid as the sort does, without moving the particle). */
+static int layer_of(const hearth_scene *s, int axis, const double *x) {
+    const grid *g = &s->g;
+    double xa = x[axis];
+    const double lo = g->lo[axis] + g->dx, hi = g->lo[axis] + (g->nn[axis] - 2) * g->dx;
+    if (!(xa >= lo)) xa = lo;
+    else if (xa > hi) xa = hi;
+    return base_node((xa - g->lo[axis]) * g->inv_dx) / GRID_B;
+}
+
+static int owner_of(const struct mpm_slabs *sl, int N, int layer) {
+    int r = 0;
+    while (r + 1 < N && layer >= sl->cut[r + 1]) r++;
+    return r;
+}
+
+/* The cuts from the whole set (every rank holds the same particles, so every
+ * rank finds the same cuts): rank r starts at the first layer whose particles
+ * before it reach r n / N, and every slab keeps at least one layer. */
+static hearth_status slabs_cut(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    struct mpm_slabs *sl = m->slabs;
+    const int N = m->nranks;
+    int axis = 0;
+    for (int d = 1; d < s->g.dim; d++)
+        if (s->g.nb[d] > s->g.nb[axis]) axis = d;
+    const int L = s->g.nb[axis];
+    if (L != sl->nlayer) {
+        int *c = mem_alloc(sizeof(int) * (size_t)L);
+        if (!c) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the slab counts");
+        mem_free(sl->count, sizeof(int) * (size_t)sl->nlayer);
+        sl->count = c, sl->nlayer = L;
+    }
+    sl->axis = axis;
+    memset(sl->count, 0, sizeof(int) * (size_t)L);
+    const double *X = pcold(&s->ps, PC_X);
+    for (int i = 0; i < s->ps.n; i++) sl->count[layer_of(s, axis, X + 3 * i)]++;
+    const long long n = s->ps.n;
+    long long before = 0;
+    int l = 0;
+    sl->cut[0] = 0;
+    for (int r = 1; r < N; r++) {
+        while (l < L && before * N < (long long)r * n) before += sl->count[l++];
+        int c = l;
+        if (c < sl->cut[r - 1] + 1) c = sl->cut[r - 1] + 1;
+        if (c > L - (N - r)) c = L - (N - r);
+        sl->cut[r] = c;
+    }
+    sl->cut[N] = L;
+    sl->balanced = s->step;
+    return HEARTH_OK;
+}
+
+/* From the whole set to this rank's slab: no message, every rank drops the others'. */
+static hearth_status slabs_scatter(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    struct mpm_slabs *sl = m->slabs;
+    hearth_status st = slabs_cut(s, err);
+    if (st) return st;
+    const int n = s->ps.n, me = ranks_rank();
+    if ((size_t)n > sl->dropcap) {
+        unsigned char *d = mem_alloc((size_t)n);
+        if (!d) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the slab split (%d particles)", n);
+        mem_free(sl->drop, sl->dropcap);
+        sl->drop = d, sl->dropcap = (size_t)n;
+    }
+    const double *X = pcold(&s->ps, PC_X);
+    for (int i = 0; i < n; i++) sl->drop[i] = owner_of(sl, m->nranks, layer_of(s, sl->axis, X + 3 * i)) != me;
+    sl->ntotal = n;
+    particles_compact(&s->ps, sl->drop);
+    sl->live = 1;
+    return HEARTH_OK;
+}
+
+/* From the slabs to the whole set on every rank, in rank order (rank 0's
+ * particles, then rank 1's, ...): the order the step report's particle
+ * indices refer to (mpm_ranks_report). */
+static hearth_status slabs_gather(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    struct mpm_slabs *sl = m->slabs;
+    particles *ps = &s->ps;
+    const int N = m->nranks, me = ranks_rank();
+    int mine = ps->n;
+    ranks_allgather_fixed(&mine, sl->nall, sizeof(int));
+    int *first = m->pfirst;
+    first[0] = 0;
+    for (int r = 0; r < N; r++) first[r + 1] = first[r] + sl->nall[r];
+    /* every rank learns every count before any can fail, so a rank that
+     * cannot grow says so alone: the caller stops (and mpirun ends the job) */
+    hearth_status st = particles_reserve(ps, first[N], err);
+    if (st) return st;
+    for (int c = 0; c < PC_COUNT; c++) {
+        if (!(ps->enabled & (1u << c)) || !ps->col[c]) continue;
+        const size_t b = particles_col_bytes(ps, c);
+        char *col = ps->col[c];
+        if (first[me]) memmove(col + b * (size_t)first[me], col, b * (size_t)mine);
+        ranks_allgather(col, b, first);
+    }
+    ps->n = first[N];
+    ps->edits++;
+    sl->live = 0;
+    return HEARTH_OK;
+}
+
+void mpm_ranks_begin(hearth_scene *s) {
+    mpm_state *m = s->mpm;
+    if (!m || slabs_live(m) || !slabs_fit(s)) return;
+    /* every rank holds the same whole set here: a failure (out of memory for
+     * the drop flags) is the same on every rank, and the run stays replicated */
+    if (slabs_scatter(s, NULL)) m->slabs->live = 0;
+}
+
+hearth_status mpm_ranks_whole(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    if (!m || !slabs_live(m)) return HEARTH_OK;
+    return slabs_gather(s, err);
+}
+
+int mpm_ranks_particles(const hearth_scene *s) {
+    const mpm_state *m = s->mpm;
+    return m && slabs_live(m) ? m->slabs->ntotal : s->ps.n;
+}
+
+/* A particle's bytes, every enabled column in column order. */
+static size_t particle_bytes(const particles *ps) {
+    size_t b = 0;
+    for (int c = 0; c < PC_COUNT; c++)
+        if ((ps->enabled & (1u << c)) && ps->col[c]) b += particles_col_bytes(ps, c);
+    return b;
+}
+
+static void pack(const particles *ps, int i, unsigned char *dst) {
+    for (int c = 0; c < PC_COUNT; c++) {
+        if (!(ps->enabled & (1u << c)) || !ps->col[c]) continue;
+        const size_t b = particles_col_bytes(ps, c);
+        memcpy(dst, (const char *)ps->col[c] + b * (size_t)i, b);
+        dst += b;
+    }
+}
+
+static void unpack(particles *ps, int i, const unsigned char *src) {
+    for (int c = 0; c < PC_COUNT; c++) {
+        if (!(ps->enabled & (1u << c)) || !ps->col[c]) continue;
+        const size_t b = particles_col_bytes(ps, c);
+        memcpy((char *)ps->col[c] + b * (size_t)i, src, b);
+        src += b;
+    }
+}
+
+static hearth_status grow(unsigned char **buf, size_t *cap, size_t need, hearth_error *err) {
+    if (need <= *cap) return HEARTH_OK;
+    const size_t c = need + need / 2;
+    unsigned char *b = mem_alloc(c);
+    if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the particles leaving this rank (%zu bytes)", c);
+    mem_free(*buf, *cap);
+    *buf = b, *cap = c;
+    return HEARTH_OK;
+}
+
+hearth_status mpm_ranks_migrate(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    struct mpm_slabs *sl = m->slabs;
+    if (!slabs_live(m)) return HEARTH_OK;
+    hearth_status st;
+    /* every MPM_RANKS_REBALANCE steps the cuts follow the particles: through
+     * the whole set, so the new cuts are the same on every rank */
+    if (s->step - sl->balanced >= MPM_RANKS_REBALANCE) {
+        if ((st = slabs_gather(s, err)) || (st = slabs_scatter(s, err))) return st;
+        return HEARTH_OK;
+    }
+    particles *ps = &s->ps;
+    const int n = ps->n, N = m->nranks, me = ranks_rank();
+    if ((size_t)n > sl->dropcap) {
+        unsigned char *d = mem_alloc((size_t)n + (size_t)n / 2);
+        if (!d) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the slab crossings (%d particles)", n);
+        mem_free(sl->drop, sl->dropcap);
+        sl->drop = d, sl->dropcap = (size_t)n + (size_t)n / 2;
+    }
+    const double *X = pcold(ps, PC_X);
+    int ndown = 0, nup = 0;
+    unsigned char far = 0;
+    for (int i = 0; i < n; i++) {
+        const int r = owner_of(sl, N, layer_of(s, sl->axis, X + 3 * i));
+        sl->drop[i] = r < me ? 1 : r > me ? 2 : 0;
+        ndown += r < me, nup += r > me;
+        far |= r < me - 1 || r > me + 1;
+    }
+    /* A particle moves less than a cell a step (the guard stops a step that
+     * moves one further) and a slab is at least a block of 4 cells, so it
+     * crosses at most one face. One that crossed more (a collider's push, a
+     * plugin) is not lost: all ranks see it here and go through the whole set. */
+    ranks_max_bytes(&far, 1);
+    if (far) {
+        if ((st = slabs_gather(s, err)) || (st = slabs_scatter(s, err))) return st;
+        return HEARTH_OK;
+    }
+    const size_t pb = particle_bytes(ps);
+    if ((st = grow(&sl->out[0], &sl->outcap[0], pb * (size_t)ndown, err)) ||
+        (st = grow(&sl->out[1], &sl->outcap[1], pb * (size_t)nup, err)))
+        return st;
+    int kd = 0, ku = 0;
+    for (int i = 0; i < n; i++)
+        if (sl->drop[i] == 1) pack(ps, i, sl->out[0] + pb * (size_t)kd++);
+        else if (sl->drop[i] == 2) pack(ps, i, sl->out[1] + pb * (size_t)ku++);
+    const void *lo, *hi;
+    size_t nlo, nhi;
+    if ((st = ranks_neighbours(sl->out[0], pb * (size_t)ndown, sl->out[1], pb * (size_t)nup, &lo, &nlo, &hi, &nhi, err))) return st;
+    if (ndown + nup == 0 && nlo + nhi == 0) return HEARTH_OK; /* G2P's keys still stand */
+    if (ndown + nup) particles_compact(ps, sl->drop);
+    const int arrive = (int)((nlo + nhi) / pb), n0 = ps->n;
+    if ((st = particles_reserve(ps, n0 + arrive, err))) return st;
+    /* residents in their order, then the lower neighbour's, then the upper's: the
+     * same for a given rank count, and the sort that follows is stable */
+    for (int k = 0; k < (int)(nlo / pb); k++) unpack(ps, n0 + k, (const unsigned char *)lo + pb * (size_t)k);
+    for (int k = 0; k < (int)(nhi / pb); k++) unpack(ps, n0 + (int)(nlo / pb) + k, (const unsigned char *)hi + pb * (size_t)k);
+    ps->n = n0 + arrive;
+    ps->edits++;
+    return HEARTH_OK;
+}
+
+void mpm_ranks_mark(hearth_scene *s) {
+    mpm_state *m = s->mpm;
+    /* every rank activates every block any rank's particles touch, so the
+     * slots are the same everywhere and the grid sum can add them */
+    if (slabs_live(m)) ranks_max_bytes(m->mark, (size_t)m->nblocks);
+}
+
+/* The step report over the ranks, combined in rank order so every rank gets
+ * the same one. Particle indices become indices into the whole set in rank
+ * order (slabs_gather's order). Then the guard's verdict: when the guard will
+ * stop (a failed particle, a CFL violation, a runaway), every rank gathers the
+ * whole set so its diagnosis names the particle, the same on every rank. */
+hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_report *rep, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    struct mpm_slabs *sl = m->slabs;
+    if (m->nranks > 1) ranks_count_step(slabs_live(m));
+    if (!slabs_live(m)) return HEARTH_OK;
+    const int N = m->nranks;
+    rank_report mine = {.rep = *rep, .n = s->ps.n}, *all = sl->reps;
+    ranks_allgather_fixed(&mine, all, sizeof mine);
+    step_report t = {.particle = -1, .fastest = -1, .mover = -1};
+    double vmax = -1;
+    int off = 0;
+    for (int r = 0; r < N; r++) {
+        const step_report *q = &all[r].rep;
+        if (q->particle >= 0 && t.particle < 0) t.particle = off + q->particle, t.kind = q->kind, t.code = q->code;
+        if (q->max_speed > vmax && q->fastest >= 0) vmax = q->max_speed, t.max_speed = q->max_speed, t.fastest = off + q->fastest;
+        if (q->max_move > t.max_move) t.max_move = q->max_move, t.mover = q->mover >= 0 ? off + q->mover : -1;
+        t.kinetic += q->kinetic;
+        t.mass += q->mass;
+        t.out_of_domain += q->out_of_domain;
+        if (q->c_max > t.c_max) t.c_max = q->c_max;
+        if (q->nu_max > t.nu_max) t.nu_max = q->nu_max;
+        off += all[r].n;
+    }
+    t.driven_kinetic = 0.5 * t.mass * vcol * vcol;
+    *rep = t;
+    int stop = rep->particle >= 0;
+    if (!stop) {
+        /* the guard's own test, without its particle names (they need the whole set) */
+        step_report dry = *rep;
+        dry.fastest = dry.mover = -1;
+        const double cfl = s->cfl_last;
+        char keep[sizeof s->diagnosis];
+        memcpy(keep, s->diagnosis, sizeof keep);
+        stop = guard_check(s, &dry, dt, s->max_speed);
+        memcpy(s->diagnosis, keep, sizeof keep);
+        s->cfl_last = cfl;
+    }
+    return stop ? slabs_gather(s, err) : HEARTH_OK;
 }
