@@ -771,7 +771,7 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
     st->rollbacks = s->rollbacks;
     st->guard = s->guard;
     snprintf(st->diagnosis, sizeof st->diagnosis, "%s", s->guard == HEARTH_GUARD_OK ? "" : s->diagnosis);
-    st->grid_blocks = s->g.nactive;
+    st->grid_blocks = mpm_ranks_blocks(s);
     st->heat_energy = thermal_energy(s);
     st->cg_iterations = thermal_cg_iterations(s);
     if (s->ps.enabled & (1u << PC_GAS))

@@ -826,6 +826,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         if (heat) thermal_finish(s, dt);
     }
     const double vcol = mpm_grid_update(s, dt);
+    if ((st = mpm_ranks_halo_back(s, err))) return st;
     if (wrap) periodic_fold(s, 1);
     mpm_g2p(s, dt, rep);
     if (wrap) mpm_periodic_wrap_all(s);

@@ -146,10 +146,15 @@ void mpm_ranks_begin(hearth_scene *s);
 hearth_status mpm_ranks_whole(hearth_scene *s, hearth_error *err);
 /// Particles over all ranks.
 int mpm_ranks_particles(const hearth_scene *s);
+/// Active grid blocks over all ranks (each counted once).
+int mpm_ranks_blocks(const hearth_scene *s);
 /// At the start of the sort: particles that left this rank's slab go to the neighbour's.
 hearth_status mpm_ranks_migrate(hearth_scene *s, hearth_error *err);
-/// Before the grid blocks are activated: the union of every rank's touched blocks.
-void mpm_ranks_mark(hearth_scene *s);
+/// Before the grid blocks are activated: the blocks of this rank's first
+/// layer the lower neighbour's particles touch get storage too.
+hearth_status mpm_ranks_mark(hearth_scene *s, hearth_error *err);
+/// After the grid update: the owners' node values of the ghost blocks back to the ranks that touch them.
+hearth_status mpm_ranks_halo_back(hearth_scene *s, hearth_error *err);
 /// At the end of the step: the step report over the ranks (vcol: the fastest collider speed at a node).
 hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_report *rep, hearth_error *err);
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err);

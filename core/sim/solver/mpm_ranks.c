@@ -44,7 +44,8 @@
 /* what each rank tells the others after G2P in the slab mode */
 typedef struct rank_report {
     step_report rep;
-    int n;
+    double vcol; /* the fastest collider speed at a node with mass among this rank's own blocks */
+    int n, blocks; /* particles; active blocks outside the ghost layer */
 } rank_report;
 
 /* Slabs (the decomposed mode): while live, this rank holds only the particles
@@ -53,6 +54,11 @@ typedef struct rank_report {
 struct mpm_slabs {
     int live, axis, nlayer;
     int ntotal;             /* particles over all ranks (a step neither adds nor removes any) */
+    int blocks;             /* active blocks over all ranks, each counted by its owner (the last step's) */
+    unsigned char *lowmark; /* the layer cut[me]'s blocks the lower neighbour's particles touch */
+    size_t lowcap;
+    double *halo;           /* packed node values of ghost blocks */
+    size_t halocap;         /* doubles */
     int *cut;               /* nranks + 1 */
     int *count;             /* nlayer: particles per block layer */
     long balanced;          /* the step at which the cuts were last set */
@@ -89,6 +95,8 @@ void mpm_ranks_free(mpm_state *m) {
         mem_free(sl->reps, sizeof(rank_report) * (size_t)m->nranks);
         mem_free(sl->count, sizeof(int) * (size_t)sl->nlayer);
         mem_free(sl->drop, sl->dropcap);
+        mem_free(sl->lowmark, sl->lowcap);
+        mem_free(sl->halo, sl->halocap * sizeof(double));
         for (int k = 0; k < 2; k++) mem_free(sl->out[k], sl->outcap[k]);
         mem_free(sl, sizeof *sl);
         m->slabs = NULL;
@@ -117,9 +125,12 @@ void mpm_ranks_partition(hearth_scene *s) {
     m->k_lo = m->kfirst[me], m->k_hi = m->kfirst[me + 1];
 }
 
+static hearth_status halo_sum(hearth_scene *s, hearth_error *err);
+
 hearth_status mpm_ranks_sum_grid(hearth_scene *s, hearth_error *err) {
     mpm_state *m = s->mpm;
     if (m->nranks == 1) return HEARTH_OK;
+    if (slabs_live(m)) return halo_sum(s, err);
     const grid *g = &s->g;
     int lo = 0, hi = 0;
     if (m->k_hi > m->k_lo) {
@@ -290,6 +301,11 @@ hearth_status mpm_ranks_whole(hearth_scene *s, hearth_error *err) {
     return slabs_gather(s, err);
 }
 
+int mpm_ranks_blocks(const hearth_scene *s) {
+    const mpm_state *m = s->mpm;
+    return m && slabs_live(m) ? m->slabs->blocks : s->g.nactive;
+}
+
 int mpm_ranks_particles(const hearth_scene *s) {
     const mpm_state *m = s->mpm;
     return m && slabs_live(m) ? m->slabs->ntotal : s->ps.n;
@@ -392,11 +408,146 @@ hearth_status mpm_ranks_migrate(hearth_scene *s, hearth_error *err) {
     return HEARTH_OK;
 }
 
-void mpm_ranks_mark(hearth_scene *s) {
+/* The blocks of block layer l along the slab axis, in one fixed order (the
+ * same on every rank): calls fn(id, k) for the k-th block of the layer. */
+#define FOR_LAYER(g, axis, l, id, k, body)                                                        \
+    do {                                                                                          \
+        const int o1_ = (axis) == 0 ? 1 : 0, o2_ = (axis) == 2 ? 1 : 2;                           \
+        int k = 0;                                                                                \
+        for (int i1_ = 0; i1_ < (g)->nb[o1_]; i1_++)                                              \
+            for (int i2_ = 0; i2_ < (g)->nb[o2_]; i2_++, k++) {                                   \
+                int c_[3];                                                                        \
+                c_[axis] = (l), c_[o1_] = i1_, c_[o2_] = i2_;                                     \
+                const int id = grid_block_id((g), c_[0], c_[1], c_[2]);                           \
+                (void)id, (void)k;                                                                \
+                body                                                                              \
+            }                                                                                     \
+    } while (0)
+
+static int layer_blocks(const grid *g, int axis) { return g->nblocks / g->nb[axis]; }
+
+/* The ghost layer: the first layer of the upper neighbour's slab, which this
+ * rank's particles in its own last layer reach (a block's tile reaches its +1
+ * neighbours only, so the lower face has none). */
+static int ghost_layer(const mpm_state *m) {
+    const int me = ranks_rank();
+    return me + 1 < m->nranks ? m->slabs->cut[me + 1] : -1;
+}
+
+hearth_status mpm_ranks_mark(hearth_scene *s, hearth_error *err) {
     mpm_state *m = s->mpm;
-    /* every rank activates every block any rank's particles touch, so the
-     * slots are the same everywhere and the grid sum can add them */
-    if (slabs_live(m)) ranks_max_bytes(m->mark, (size_t)m->nblocks);
+    if (!slabs_live(m)) return HEARTH_OK;
+    struct mpm_slabs *sl = m->slabs;
+    const grid *g = &s->g;
+    const int S = layer_blocks(g, sl->axis), up = ghost_layer(m), me = ranks_rank();
+    hearth_status st = grow(&sl->out[1], &sl->outcap[1], (size_t)S, err);
+    if (st) return st;
+    if ((size_t)S > sl->lowcap) {
+        unsigned char *b = mem_alloc((size_t)S);
+        if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the ghost layer's marks (%d blocks)", S);
+        mem_free(sl->lowmark, sl->lowcap);
+        sl->lowmark = b, sl->lowcap = (size_t)S;
+    }
+    /* the ghost layer's touched blocks go up; the lower neighbour's come in and
+     * get storage here too, so its sums have somewhere to land */
+    if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { sl->out[1][k] = m->mark[id]; });
+    const void *lo, *hi;
+    size_t nlo, nhi;
+    if ((st = ranks_neighbours(NULL, 0, sl->out[1], up >= 0 ? (size_t)S : 0, &lo, &nlo, &hi, &nhi, err))) return st;
+    memset(sl->lowmark, 0, (size_t)S);
+    if (me > 0) {
+        HEARTH_ASSERT(nlo == (size_t)S);
+        memcpy(sl->lowmark, lo, (size_t)S);
+        FOR_LAYER(g, sl->axis, sl->cut[me], id, k, { m->mark[id] |= sl->lowmark[k]; });
+    }
+    return HEARTH_OK;
+}
+
+static hearth_status halo_reserve(struct mpm_slabs *sl, size_t n, hearth_error *err) {
+    if (n <= sl->halocap) return HEARTH_OK;
+    double *b = mem_alloc((n + n / 4) * sizeof(double));
+    if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the ghost blocks' node values (%zu bytes)", n * sizeof(double));
+    mem_free(sl->halo, sl->halocap * sizeof(double));
+    sl->halo = b, sl->halocap = n + n / 4;
+    return HEARTH_OK;
+}
+
+/* After P2G: this rank's sums on the ghost layer go to their owner, which adds
+ * them after its own (own, then the lower neighbour's: a fixed order); here
+ * they are cleared, so the grid update sees only blocks this rank owns. */
+static hearth_status halo_sum(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    struct mpm_slabs *sl = m->slabs;
+    grid *g = &s->g;
+    const int up = ghost_layer(m), me = ranks_rank();
+    const size_t sd = (size_t)g->nch * (size_t)g->nodes_per_block;
+    size_t nup = 0;
+    if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { nup += m->mark[id] ? sd : 0; });
+    hearth_status st = halo_reserve(sl, nup, err);
+    if (st) return st;
+    size_t w = 0;
+    if (up >= 0)
+        FOR_LAYER(g, sl->axis, up, id, k, {
+            if (m->mark[id]) {
+                double *b = grid_block(g, g->slot[id]);
+                memcpy(sl->halo + w, b, sd * sizeof(double));
+                memset(b, 0, sd * sizeof(double));
+                w += sd;
+            }
+        });
+    const void *lo, *hi;
+    size_t nlo, nhi;
+    if ((st = ranks_neighbours(NULL, 0, sl->halo, nup * sizeof(double), &lo, &nlo, &hi, &nhi, err))) return st;
+    if (me > 0) {
+        const double *src = lo;
+        size_t r = 0;
+        FOR_LAYER(g, sl->axis, sl->cut[me], id, k, {
+            if (sl->lowmark[k]) {
+                double *b = grid_block(g, g->slot[id]);
+                for (size_t j = 0; j < sd; j++) b[j] += src[r + j];
+                r += sd;
+            }
+        });
+        HEARTH_ASSERT(r * sizeof(double) == nlo);
+    }
+    return HEARTH_OK;
+}
+
+hearth_status mpm_ranks_halo_back(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    if (!slabs_live(m)) return HEARTH_OK;
+    struct mpm_slabs *sl = m->slabs;
+    grid *g = &s->g;
+    const int up = ghost_layer(m), me = ranks_rank();
+    const size_t sd = (size_t)g->nch * (size_t)g->nodes_per_block;
+    /* the owner's updated values of the blocks the lower neighbour touched go back down */
+    size_t ndown = 0;
+    if (me > 0) FOR_LAYER(g, sl->axis, sl->cut[me], id, k, { ndown += sl->lowmark[k] ? sd : 0; });
+    hearth_status st = halo_reserve(sl, ndown, err);
+    if (st) return st;
+    size_t w = 0;
+    if (me > 0)
+        FOR_LAYER(g, sl->axis, sl->cut[me], id, k, {
+            if (sl->lowmark[k]) {
+                memcpy(sl->halo + w, grid_block(g, g->slot[id]), sd * sizeof(double));
+                w += sd;
+            }
+        });
+    const void *lo, *hi;
+    size_t nlo, nhi;
+    if ((st = ranks_neighbours(sl->halo, ndown * sizeof(double), NULL, 0, &lo, &nlo, &hi, &nhi, err))) return st;
+    if (up >= 0) {
+        const double *src = hi;
+        size_t r = 0;
+        FOR_LAYER(g, sl->axis, up, id, k, {
+            if (m->mark[id]) {
+                memcpy(grid_block(g, g->slot[id]), src + r, sd * sizeof(double));
+                r += sd;
+            }
+        });
+        HEARTH_ASSERT(r * sizeof(double) == nhi);
+    }
+    return HEARTH_OK;
 }
 
 /* The step report over the ranks, combined in rank order so every rank gets
@@ -410,11 +561,16 @@ hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_rep
     if (m->nranks > 1) ranks_count_step(slabs_live(m));
     if (!slabs_live(m)) return HEARTH_OK;
     const int N = m->nranks;
-    rank_report mine = {.rep = *rep, .n = s->ps.n}, *all = sl->reps;
+    const grid *g = &s->g;
+    const int up = ghost_layer(m);
+    int ghosts = 0;
+    if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { ghosts += m->mark[id] != 0; });
+    rank_report mine = {.rep = *rep, .vcol = vcol, .n = s->ps.n, .blocks = g->nactive - ghosts}, *all = sl->reps;
     ranks_allgather_fixed(&mine, all, sizeof mine);
     step_report t = {.particle = -1, .fastest = -1, .mover = -1};
-    double vmax = -1;
+    double vmax = -1, vc = 0;
     int off = 0;
+    sl->blocks = 0;
     for (int r = 0; r < N; r++) {
         const step_report *q = &all[r].rep;
         if (q->particle >= 0 && t.particle < 0) t.particle = off + q->particle, t.kind = q->kind, t.code = q->code;
@@ -426,8 +582,10 @@ hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_rep
         if (q->c_max > t.c_max) t.c_max = q->c_max;
         if (q->nu_max > t.nu_max) t.nu_max = q->nu_max;
         off += all[r].n;
+        sl->blocks += all[r].blocks;
+        if (all[r].vcol > vc) vc = all[r].vcol;
     }
-    t.driven_kinetic = 0.5 * t.mass * vcol * vcol;
+    t.driven_kinetic = 0.5 * t.mass * vc * vc;
     *rep = t;
     int stop = rep->particle >= 0;
     if (!stop) {

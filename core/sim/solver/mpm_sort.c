@@ -267,7 +267,7 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     if (sort_counting(m, n, Tc)) particles_permute(ps, m->order, m->perm_scratch);
     if ((st = sort_blocks(s, T, err))) return st;
     if (wrap) mpm_periodic_mark(s, m->mark);
-    mpm_ranks_mark(s);
+    if ((st = mpm_ranks_mark(s, err))) return st;
     st = grid_set_channels(g, thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
     if (st) return st;
     if ((st = grid_activate(g, m->mark, err))) return st;
