@@ -742,6 +742,11 @@ void hearth_ranks_traffic(double *bytes, double *seconds);
 /// (every rank holds the whole scene: heat, water, mixing, CO2, periodic
 /// axes and the rollback guard need it).
 void hearth_ranks_steps(long *slabs, long *replicated);
+/// Of hearth_ranks_traffic's bytes, those that came in whole-set gathers
+/// (every step in the replicated mode; in the slab mode only when a reader,
+/// a rebalance or the guard needs the whole scene): the rest is the halo,
+/// the crossings and the step report.
+double hearth_ranks_gathered(void);
 
 #ifdef __cplusplus
 }

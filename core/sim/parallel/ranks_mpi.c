@@ -26,7 +26,8 @@ static unsigned char *nbuf[2]; /* what the lower and the upper neighbour sent (r
 static size_t nbcap[2];
 static size_t sumcap; /* doubles in sumbuf */
 static long steps_slabs, steps_replicated; /* MPM steps in each mode */
-static double traffic_bytes, traffic_seconds; /* received by this rank, and the time inside the exchanges */
+static double traffic_bytes, traffic_seconds;
+static double gathered_bytes; /* of traffic_bytes: whole particle columns (ranks_allgather) */ /* received by this rank, and the time inside the exchanges */
 
 static int launched_by_mpirun(void) {
     /* a hearth that an MPI job's rank starts as a child process (hearth trade
@@ -82,6 +83,8 @@ void ranks_count_step(int slabs) {
     else steps_replicated++;
 }
 
+double hearth_ranks_gathered(void) { return gathered_bytes; }
+
 void hearth_ranks_steps(long *slabs, long *replicated) {
     *slabs = steps_slabs;
     *replicated = steps_replicated;
@@ -103,6 +106,7 @@ void ranks_allgather(void *base, size_t elem, const int *first) {
     MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, base, counts, displs, t, MPI_COMM_WORLD);
     MPI_Type_free(&t);
     traffic_bytes += (double)elem * (double)(first[nranks] - first[0] - counts[rank_id]);
+    gathered_bytes += (double)elem * (double)(first[nranks] - first[0] - counts[rank_id]);
     traffic_seconds += MPI_Wtime() - t0;
 }
 

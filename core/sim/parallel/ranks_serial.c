@@ -26,6 +26,7 @@ void ranks_allgather_fixed(const void *mine, void *all, size_t bytes) {
 }
 void ranks_count_step(int slabs) { (void)slabs; }
 void hearth_ranks_steps(long *slabs, long *replicated) { *slabs = *replicated = 0; }
+double hearth_ranks_gathered(void) { return 0; }
 void ranks_max_bytes(unsigned char *buf, size_t n) { (void)buf, (void)n; }
 hearth_status ranks_neighbours(const void *down, size_t ndown, const void *up, size_t nup, const void **from_lo, size_t *nlo,
                                const void **from_hi, size_t *nhi, hearth_error *err) {

@@ -93,7 +93,7 @@ void mpm_ranks_free(mpm_state *m) {
         mem_free(sl->cut, sizeof(int) * ((size_t)m->nranks + 1));
         mem_free(sl->nall, sizeof(int) * ((size_t)m->nranks + 1));
         mem_free(sl->reps, sizeof(rank_report) * (size_t)m->nranks);
-        mem_free(sl->count, sizeof(int) * (size_t)sl->nlayer);
+        mem_free(sl->count, sizeof(int) * (size_t)sl->nlayer * ((size_t)m->nranks + 2));
         mem_free(sl->drop, sl->dropcap);
         mem_free(sl->lowmark, sl->lowcap);
         mem_free(sl->halo, sl->halocap * sizeof(double));
@@ -202,7 +202,7 @@ static int owner_of(const struct mpm_slabs *sl, int N, int layer) {
 /* The cuts from the whole set (every rank holds the same particles, so every
  * rank finds the same cuts): rank r starts at the first layer whose particles
  * before it reach r n / N, and every slab keeps at least one layer. */
-static hearth_status slabs_cut(hearth_scene *s, hearth_error *err) {
+static hearth_status slabs_cut(hearth_scene *s, int spread, hearth_error *err) {
     mpm_state *m = s->mpm;
     struct mpm_slabs *sl = m->slabs;
     const int N = m->nranks;
@@ -211,16 +211,27 @@ static hearth_status slabs_cut(hearth_scene *s, hearth_error *err) {
         if (s->g.nb[d] > s->g.nb[axis]) axis = d;
     const int L = s->g.nb[axis];
     if (L != sl->nlayer) {
-        int *c = mem_alloc(sizeof(int) * (size_t)L);
+        int *c = mem_alloc(sizeof(int) * (size_t)L * ((size_t)N + 2));
         if (!c) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the slab counts");
-        mem_free(sl->count, sizeof(int) * (size_t)sl->nlayer);
+        mem_free(sl->count, sizeof(int) * (size_t)sl->nlayer * ((size_t)N + 2));
         sl->count = c, sl->nlayer = L;
     }
     sl->axis = axis;
-    memset(sl->count, 0, sizeof(int) * (size_t)L);
+    int *mine = sl->count + L, *all = sl->count + 2 * L;
+    memset(mine, 0, sizeof(int) * (size_t)L);
     const double *X = pcold(&s->ps, PC_X);
-    for (int i = 0; i < s->ps.n; i++) sl->count[layer_of(s, axis, X + 3 * i)]++;
-    const long long n = s->ps.n;
+    for (int i = 0; i < s->ps.n; i++) mine[layer_of(s, axis, X + 3 * i)]++;
+    /* spread over the ranks: every rank's counts (L ints each), added in rank
+     * order (integers: exact); else every rank counted the same whole set */
+    if (spread) ranks_allgather_fixed(mine, all, sizeof(int) * (size_t)L);
+    long long n = 0;
+    for (int l = 0; l < L; l++) {
+        int c = spread ? 0 : mine[l];
+        if (spread)
+            for (int r = 0; r < N; r++) c += all[(size_t)r * L + l];
+        sl->count[l] = c;
+        n += c;
+    }
     long long before = 0;
     int l = 0;
     sl->cut[0] = 0;
@@ -240,7 +251,7 @@ static hearth_status slabs_cut(hearth_scene *s, hearth_error *err) {
 static hearth_status slabs_scatter(hearth_scene *s, hearth_error *err) {
     mpm_state *m = s->mpm;
     struct mpm_slabs *sl = m->slabs;
-    hearth_status st = slabs_cut(s, err);
+    hearth_status st = slabs_cut(s, 0, err);
     if (st) return st;
     const int n = s->ps.n, me = ranks_rank();
     if ((size_t)n > sl->dropcap) {
@@ -347,17 +358,12 @@ static hearth_status grow(unsigned char **buf, size_t *cap, size_t need, hearth_
     return HEARTH_OK;
 }
 
-hearth_status mpm_ranks_migrate(hearth_scene *s, hearth_error *err) {
+/* One pass: every particle whose owner is below this rank goes down, above
+ * goes up. Returns in *far whether any rank sent a particle that is not yet
+ * at its owner (it goes on in the next pass). */
+static hearth_status migrate_pass(hearth_scene *s, unsigned char *far, hearth_error *err) {
     mpm_state *m = s->mpm;
     struct mpm_slabs *sl = m->slabs;
-    if (!slabs_live(m)) return HEARTH_OK;
-    hearth_status st;
-    /* every MPM_RANKS_REBALANCE steps the cuts follow the particles: through
-     * the whole set, so the new cuts are the same on every rank */
-    if (s->step - sl->balanced >= MPM_RANKS_REBALANCE) {
-        if ((st = slabs_gather(s, err)) || (st = slabs_scatter(s, err))) return st;
-        return HEARTH_OK;
-    }
     particles *ps = &s->ps;
     const int n = ps->n, N = m->nranks, me = ranks_rank();
     if ((size_t)n > sl->dropcap) {
@@ -368,23 +374,15 @@ hearth_status mpm_ranks_migrate(hearth_scene *s, hearth_error *err) {
     }
     const double *X = pcold(ps, PC_X);
     int ndown = 0, nup = 0;
-    unsigned char far = 0;
+    *far = 0;
     for (int i = 0; i < n; i++) {
         const int r = owner_of(sl, N, layer_of(s, sl->axis, X + 3 * i));
         sl->drop[i] = r < me ? 1 : r > me ? 2 : 0;
         ndown += r < me, nup += r > me;
-        far |= r < me - 1 || r > me + 1;
-    }
-    /* A particle moves less than a cell a step (the guard stops a step that
-     * moves one further) and a slab is at least a block of 4 cells, so it
-     * crosses at most one face. One that crossed more (a collider's push, a
-     * plugin) is not lost: all ranks see it here and go through the whole set. */
-    ranks_max_bytes(&far, 1);
-    if (far) {
-        if ((st = slabs_gather(s, err)) || (st = slabs_scatter(s, err))) return st;
-        return HEARTH_OK;
+        *far |= r < me - 1 || r > me + 1;
     }
     const size_t pb = particle_bytes(ps);
+    hearth_status st;
     if ((st = grow(&sl->out[0], &sl->outcap[0], pb * (size_t)ndown, err)) ||
         (st = grow(&sl->out[1], &sl->outcap[1], pb * (size_t)nup, err)))
         return st;
@@ -405,6 +403,28 @@ hearth_status mpm_ranks_migrate(hearth_scene *s, hearth_error *err) {
     for (int k = 0; k < (int)(nhi / pb); k++) unpack(ps, n0 + (int)(nlo / pb) + k, (const unsigned char *)hi + pb * (size_t)k);
     ps->n = n0 + arrive;
     ps->edits++;
+    return HEARTH_OK;
+}
+
+hearth_status mpm_ranks_migrate(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    if (!slabs_live(m)) return HEARTH_OK;
+    struct mpm_slabs *sl = m->slabs;
+    hearth_status st;
+    /* every MPM_RANKS_REBALANCE steps the cuts follow the particle count: each
+     * rank counts its particles per layer, the counts are added in rank order,
+     * and every rank finds the same new cuts (slabs_cut) */
+    if (s->step - sl->balanced >= MPM_RANKS_REBALANCE && (st = slabs_cut(s, 1, err))) return st;
+    /* A particle moves less than a cell a step (the guard stops a step that
+     * moves one further) and a slab is at least a block of 4 cells, so after a
+     * step it crosses at most one face: one pass. After a rebalance, or a
+     * particle a collider or a plugin threw further, passes go on (each moves
+     * it one rank closer; at most N - 1) until none is left on the way. */
+    unsigned char far;
+    do {
+        if ((st = migrate_pass(s, &far, err))) return st;
+        ranks_max_bytes(&far, 1);
+    } while (far);
     return HEARTH_OK;
 }
 
