@@ -740,8 +740,9 @@ void hearth_ranks_traffic(double *bytes, double *seconds);
 /// MPM steps this process took over MPI ranks in the slab mode (each rank
 /// holds its slab's particles; docs/scaling.md) and in the replicated mode
 /// (every rank holds the whole scene: heat, water, mixing, CO2, periodic
-/// axes and the rollback guard need it).
-void hearth_ranks_steps(long *slabs, long *replicated);
+/// axes and the rollback guard need it); and the migration passes past the
+/// first of a step (a rebalance that moved a cut by more than a slab).
+void hearth_ranks_steps(long *slabs, long *replicated, long *passes);
 /// Of hearth_ranks_traffic's bytes, those that came in whole-set gathers
 /// (every step in the replicated mode; in the slab mode only when a reader,
 /// a rebalance or the guard needs the whole scene): the rest is the halo,

@@ -24,9 +24,9 @@ void ranks_allgather(void *base, size_t elem, const int *first);
 /// blocks). Afterwards every rank holds, at every node, 0 + c_0 + c_1 + ... in
 /// rank order. NOMEM names the bytes it needed.
 hearth_status ranks_sum_grid(grid *g, int slot_lo, int slot_hi, hearth_error *err);
-/// One MPM step over the ranks, in the slab mode (slabs = 1) or the replicated
-/// one (hearth_ranks_steps).
-void ranks_count_step(int slabs);
+/// One MPM step over the ranks, in the slab mode (what = 1) or the replicated
+/// one (0); or (2) one more migration pass than the first (hearth_ranks_steps).
+void ranks_count_step(int what);
 /// Every rank's `bytes` bytes at mine into all (ranks_size() x bytes), in rank order.
 void ranks_allgather_fixed(const void *mine, void *all, size_t bytes);
 /// The bytewise maximum over the ranks of buf (n bytes), in place (integers:

@@ -25,7 +25,7 @@ static double *sumbuf;
 static unsigned char *nbuf[2]; /* what the lower and the upper neighbour sent (ranks_neighbours) */
 static size_t nbcap[2];
 static size_t sumcap; /* doubles in sumbuf */
-static long steps_slabs, steps_replicated; /* MPM steps in each mode */
+static long steps_slabs, steps_replicated, extra_passes; /* MPM steps in each mode; migration passes past the first */
 static double traffic_bytes, traffic_seconds;
 static double gathered_bytes; /* of traffic_bytes: whole particle columns (ranks_allgather) */ /* received by this rank, and the time inside the exchanges */
 
@@ -78,16 +78,18 @@ void hearth_ranks_traffic(double *bytes, double *seconds) {
     *seconds = traffic_seconds;
 }
 
-void ranks_count_step(int slabs) {
-    if (slabs) steps_slabs++;
+void ranks_count_step(int what) {
+    if (what == 2) extra_passes++;
+    else if (what) steps_slabs++;
     else steps_replicated++;
 }
 
 double hearth_ranks_gathered(void) { return gathered_bytes; }
 
-void hearth_ranks_steps(long *slabs, long *replicated) {
+void hearth_ranks_steps(long *slabs, long *replicated, long *passes) {
     *slabs = steps_slabs;
     *replicated = steps_replicated;
+    *passes = extra_passes;
 }
 
 int ranks_size(void) { return nranks; }

@@ -24,8 +24,8 @@ hearth_status ranks_sum_grid(grid *g, int slot_lo, int slot_hi, hearth_error *er
 void ranks_allgather_fixed(const void *mine, void *all, size_t bytes) {
     if (all != mine) memcpy(all, mine, bytes);
 }
-void ranks_count_step(int slabs) { (void)slabs; }
-void hearth_ranks_steps(long *slabs, long *replicated) { *slabs = *replicated = 0; }
+void ranks_count_step(int what) { (void)what; }
+void hearth_ranks_steps(long *slabs, long *replicated, long *passes) { *slabs = *replicated = *passes = 0; }
 double hearth_ranks_gathered(void) { return 0; }
 void ranks_max_bytes(unsigned char *buf, size_t n) { (void)buf, (void)n; }
 hearth_status ranks_neighbours(const void *down, size_t ndown, const void *up, size_t nup, const void **from_lo, size_t *nlo,

@@ -424,6 +424,7 @@ hearth_status mpm_ranks_migrate(hearth_scene *s, hearth_error *err) {
     do {
         if ((st = migrate_pass(s, &far, err))) return st;
         ranks_max_bytes(&far, 1);
+        if (far) ranks_count_step(2);
     } while (far);
     return HEARTH_OK;
 }
@@ -578,7 +579,7 @@ hearth_status mpm_ranks_halo_back(hearth_scene *s, hearth_error *err) {
 hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_report *rep, hearth_error *err) {
     mpm_state *m = s->mpm;
     struct mpm_slabs *sl = m->slabs;
-    if (m->nranks > 1) ranks_count_step(slabs_live(m));
+    if (m->nranks > 1) ranks_count_step(slabs_live(m) ? 1 : 0);
     if (!slabs_live(m)) return HEARTH_OK;
     const int N = m->nranks;
     const grid *g = &s->g;
