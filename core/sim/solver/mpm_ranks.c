@@ -1,35 +1,47 @@
-/* mpm_ranks.c: one MPM scene over MPI ranks, the first working step (#21).
+/* mpm_ranks.c: one MPM scene over MPI ranks (#21), in two modes chosen per
+ * step call (slabs_fit), never by the user.
  *
- * What this is, plainly: a replicated scene with the particle work split.
- * Every rank holds every particle and the whole grid. After the sort (the
- * same on every rank), the particle blocks are cut into one contiguous run
- * per rank, balanced by particle count; block ids are x-major, so a run is a
- * slab along x (its two end faces ragged by block columns). Each rank runs
- * P2G and G2P for its own run only. After P2G the written node slots are
- * summed over the ranks in rank order (ranks_sum_grid), every rank runs the
- * grid update (and any field pass) on the whole grid, and after G2P every
- * rank's particles and block partials go to every rank (ranks_allgather), so
- * the next sort, the guard, probes, outputs and checkpoints see the whole
- * scene on every rank, exactly the same. A guard stop is therefore the same
- * decision on every rank with the same diagnosis: all ranks stop together.
+ * Slabs (domain decomposition). The box's block layers along its longest
+ * axis are cut into one slab per rank, by particle count. A rank holds only
+ * the particles whose base node's block lies in its slab, and activates only
+ * the blocks they touch: its slab and one ghost layer, the upper neighbour's
+ * first (a block's tile reaches its +1 neighbours only, so there is no ghost
+ * on the lower face). After P2G the ghost blocks' sums go to their owner,
+ * which adds them after its own; the owner runs the grid update and sends
+ * the ghost blocks' values back (halo_sum, mpm_ranks_halo_back). At the next
+ * sort particles that left the slab go to the neighbour (mpm_ranks_migrate).
+ * The step report is combined over the ranks in rank order. Every
+ * MPM_RANKS_REBALANCE steps the cuts follow the particle counts. The slabs
+ * stay across step calls until something reads the particles
+ * (hearth_scene_whole, which every Lua scene method but the stepping ones
+ * calls): then every rank gathers the whole set in rank order. Per step a rank
+ * receives the ghost layer's sums or values and its marks, the particles
+ * crossing its faces and N step reports: constant as the scene grows along
+ * the axis (docs/scaling.md, `mpi_halo_traffic_bounded_4`).
  *
- * This is not domain decomposition: the memory per rank is the whole scene
- * and the messages per step grow with the whole particle count, not with a
- * slab's surface (docs/scaling.md has the model and the measurements). It is
- * the honest first step the issue allows: exact bookkeeping first, the halo
- * and migration of true slabs next, on top of the same partition.
+ * Replicated (scenes whose passes read every particle inside a step: heat,
+ * water, mixing, CO2, periodic axes, the rollback guard). Every rank holds
+ * every particle and the whole grid; after the sort the particle blocks are
+ * cut into one contiguous run per rank; each rank runs P2G and G2P for its
+ * run only; the written node slots are summed over the ranks in rank order
+ * (ranks_sum_grid), every rank runs the grid update and the field passes on
+ * the whole grid, and after G2P every rank's particles go to every rank.
  *
  * Rejected: MPI_Allreduce for the grid (its summation order is the MPI
- * library's choice, so two runs could differ in the last bit); owner by
- * fixed x slabs of equal width (a block of dough on one side of the box would
- * leave ranks idle).
+ * library's choice, so two runs could differ in the last bit); slabs of equal
+ * width (a block of dough on one side of the box would leave ranks idle); a
+ * gather at the end of every step call (s:step(n) and s:run call the core one
+ * step, or 64, at a time: the whole set would move every step); a whole-set
+ * gather to rebalance (each rank's per-layer counts, added in rank order,
+ * give the same cuts everywhere, and neighbour passes move the particles).
  *
- * Determinism: the partition depends only on the sorted particles and the
- * rank count; each rank's P2G sums its blocks in the usual colour order; the
- * ranks' sums are added in rank order. A node touched by one rank only has
- * the bits of the one-process run; a node on a seam between two runs sums
- * the same terms in another grouping (a difference of a few ulps,
- * `mpi_elastic_matches_one_rank`). */
+ * Determinism: the cuts depend only on the particles and the rank count; a
+ * rank's particles are its residents in order, then the lower neighbour's
+ * arrivals, then the upper's, then the stable sort; each rank's P2G sums its
+ * blocks in the usual colour order, and a ghost node adds the neighbour's
+ * sum after the owner's. A node touched by one rank only has the bits of the
+ * one-process run; a node on a seam sums the same terms in another grouping
+ * (a few ulps, `mpi_elastic_matches_one_rank`). */
 #include <string.h>
 
 #include "alloc.h"
