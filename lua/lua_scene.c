@@ -120,6 +120,7 @@ static int l_scene_new(lua_State *L) {
     lua_setiuservalue(L, -2, 1);
     hearth_error err;
     u->s = hearth_scene_create(&d, &err);
+    if (u->s) hearth_scene_keep_slabs(u->s, 1); /* every scene method but the stepping ones calls hearth_scene_whole (hl_checkscene) */
     if (!u->s) return hl_raise(L, &err);
     return 1;
 }
@@ -892,6 +893,7 @@ static int l_load(lua_State *L) {
     hearth_error err;
     hearth_scene *s = hearth_scene_load(path, &err);
     if (!s) return hl_raise(L, &err);
+    hearth_scene_keep_slabs(s, 1); /* as for h.scene */
     hl_scene *u = lua_newuserdatauv(L, sizeof *u, 1);
     u->s = s;
     luaL_setmetatable(L, HL_SCENE);

@@ -716,18 +716,21 @@ static hearth_status step_loop(hearth_scene *s, int n, hearth_error *err) {
 static hearth_status advance_loop(hearth_scene *s, double t_end, long max_steps, hearth_error *err);
 
 /* Over MPI ranks the steps may leave each rank holding its slab's particles
- * only (mpm_ranks.c), until hearth_scene_whole brings the whole scene back. */
+ * only (mpm_ranks.c): the whole scene again at the end of the call, or, for a
+ * host that keeps the slabs, when it calls hearth_scene_whole. */
 hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err) {
     err_clear(err);
     mpm_ranks_begin(s);
-    return step_loop(s, n, err);
+    return mpm_ranks_end(s, step_loop(s, n, err), err);
 }
 
 hearth_status hearth_scene_advance_steps(hearth_scene *s, double t_end, long max_steps, hearth_error *err) {
     err_clear(err);
     mpm_ranks_begin(s);
-    return advance_loop(s, t_end, max_steps, err);
+    return mpm_ranks_end(s, advance_loop(s, t_end, max_steps, err), err);
 }
+
+void hearth_scene_keep_slabs(hearth_scene *s, int on) { mpm_ranks_keep(s, on); }
 
 hearth_status hearth_scene_whole(hearth_scene *s, hearth_error *err) {
     err_clear(err);

@@ -385,11 +385,14 @@ void hearth_scene_set_gravity_fn(hearth_scene *s, hearth_gravity_fn fn, void *ud
 /// hearth_stats.diagnosis). With the rollback policy the scene is left at the
 /// last good state; with the stop policy it keeps the failed step for inspection.
 hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err);
-/// Over MPI ranks the steps may leave each rank holding only its slab's
-/// particles: this brings every particle back to every rank before anything
-/// reads them (collective: every rank calls it at the same point; a no-op in
-/// one process). The Lua binding calls it for every scene method but the
-/// stepping ones.
+/// Over MPI ranks each rank steps only its slab's particles. By default a
+/// step call ends with every particle back on every rank. A host that calls
+/// hearth_scene_whole before it reads or edits particles may keep the slabs
+/// between step calls (on = 1), so stepping one call at a time costs no
+/// whole-scene gather; the Lua binding does.
+void hearth_scene_keep_slabs(hearth_scene *s, int on);
+/// Every particle back on every rank (collective: every rank calls it at the
+/// same point; a no-op in one process or when the slabs are not kept).
 hearth_status hearth_scene_whole(hearth_scene *s, hearth_error *err);
 /// Advance until sim time t_end (the last step is shortened to land on it).
 hearth_status hearth_scene_advance(hearth_scene *s, double t_end, hearth_error *err);

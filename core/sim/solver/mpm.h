@@ -142,6 +142,11 @@ void mpm_ranks_gather(hearth_scene *s);
 /// the whole set is on every rank (else nothing: the replicated mode, or the
 /// slabs of the last call). They stay until hearth_scene_whole (a reader).
 void mpm_ranks_begin(hearth_scene *s);
+/// Whether the slabs stay between step calls (hearth_scene_keep_slabs).
+void mpm_ranks_keep(hearth_scene *s, int on);
+/// At the end of a step call: the whole set again unless the host keeps the
+/// slabs. Returns st, or the gather's error when st is HEARTH_OK.
+hearth_status mpm_ranks_end(hearth_scene *s, hearth_status st, hearth_error *err);
 /// The whole set on every rank again (hearth_scene_whole); collective.
 hearth_status mpm_ranks_whole(hearth_scene *s, hearth_error *err);
 /// Particles over all ranks.

@@ -65,6 +65,7 @@ typedef struct rank_report {
  * axis. */
 struct mpm_slabs {
     int live, axis, nlayer;
+    int keep;               /* the host calls hearth_scene_whole before reading: slabs stay between step calls */
     int ntotal;             /* particles over all ranks (a step neither adds nor removes any) */
     int blocks;             /* active blocks over all ranks, each counted by its owner (the last step's) */
     unsigned char *lowmark; /* the layer cut[me]'s blocks the lower neighbour's particles touch */
@@ -316,6 +317,18 @@ void mpm_ranks_begin(hearth_scene *s) {
     /* every rank holds the same whole set here: a failure (out of memory for
      * the drop flags) is the same on every rank, and the run stays replicated */
     if (slabs_scatter(s, NULL)) m->slabs->live = 0;
+}
+
+void mpm_ranks_keep(hearth_scene *s, int on) {
+    if (s->mpm && s->mpm->slabs) s->mpm->slabs->keep = on != 0;
+}
+
+hearth_status mpm_ranks_end(hearth_scene *s, hearth_status st, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    if (!m || !slabs_live(m) || m->slabs->keep) return st;
+    hearth_error e2;
+    const hearth_status g = slabs_gather(s, st ? &e2 : err); /* a host that reads the scene directly */
+    return st ? st : g;
 }
 
 hearth_status mpm_ranks_whole(hearth_scene *s, hearth_error *err) {
