@@ -57,6 +57,7 @@
 typedef struct rank_report {
     step_report rep;
     double vcol; /* the fastest collider speed at a node with mass among this rank's own blocks */
+    long clamped; /* particles the sort put back inside the grid this step */
     int n, blocks; /* particles; active blocks outside the ghost layer */
 } rank_report;
 
@@ -66,6 +67,7 @@ typedef struct rank_report {
 struct mpm_slabs {
     int live, axis, nlayer;
     int keep;               /* the host calls hearth_scene_whole before reading: slabs stay between step calls */
+    long ood0;              /* s->out_of_domain when this step's sort began (the sort counts its own clamps) */
     int ntotal;             /* particles over all ranks (a step neither adds nor removes any) */
     int blocks;             /* active blocks over all ranks, each counted by its owner (the last step's) */
     unsigned char *lowmark; /* the layer cut[me]'s blocks the lower neighbour's particles touch */
@@ -435,6 +437,7 @@ hearth_status mpm_ranks_migrate(hearth_scene *s, hearth_error *err) {
     mpm_state *m = s->mpm;
     if (!slabs_live(m)) return HEARTH_OK;
     struct mpm_slabs *sl = m->slabs;
+    sl->ood0 = s->out_of_domain;
     hearth_status st;
     /* every MPM_RANKS_REBALANCE steps the cuts follow the particle count: each
      * rank counts its particles per layer, the counts are added in rank order,
@@ -611,10 +614,12 @@ hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_rep
     const int up = ghost_layer(m);
     int ghosts = 0;
     if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { ghosts += m->mark[id] != 0; });
-    rank_report mine = {.rep = *rep, .vcol = vcol, .n = s->ps.n, .blocks = g->nactive - ghosts}, *all = sl->reps;
+    rank_report mine = {.rep = *rep, .vcol = vcol, .clamped = s->out_of_domain - sl->ood0, .n = s->ps.n, .blocks = g->nactive - ghosts},
+                *all = sl->reps;
     ranks_allgather_fixed(&mine, all, sizeof mine);
     step_report t = {.particle = -1, .fastest = -1, .mover = -1};
     double vmax = -1, vc = 0;
+    long clamped = 0;
     int off = 0;
     sl->blocks = 0;
     for (int r = 0; r < N; r++) {
@@ -629,10 +634,12 @@ hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_rep
         if (q->nu_max > t.nu_max) t.nu_max = q->nu_max;
         off += all[r].n;
         sl->blocks += all[r].blocks;
+        clamped += all[r].clamped;
         if (all[r].vcol > vc) vc = all[r].vcol;
     }
     t.driven_kinetic = 0.5 * t.mass * vc * vc;
     *rep = t;
+    s->out_of_domain = sl->ood0 + clamped; /* every rank's clamps, the same count on every rank */
     int stop = rep->particle >= 0;
     if (!stop) {
         /* the guard's own test, without its particle names (they need the whole set) */
