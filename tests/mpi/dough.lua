@@ -6,7 +6,7 @@
 local h = require "hearth"
 local P = h.params { steps = 100, heat = "explicit", dim = 2 }
 local three = P.dim == 3
-local s = h.scene { dim = P.dim, dx = three and 0.005 or 0.004,
+local s = h.scene { dim = P.dim, dx = three and 0.006 or 0.004,
   box = three and { { 0, 0, 0 }, { 0.12, 0.08, 0.04 } } or { { 0, 0 }, { 0.12, 0.08 } },
   oven = { temperature = 200, beta = 40 }, latent_heat = true, heat = P.heat, dt_max = 2e-3 }
 local d = h.library.dough.bread

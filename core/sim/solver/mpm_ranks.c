@@ -214,9 +214,9 @@ static int owner_of(const struct mpm_slabs *sl, int N, int layer) {
     return r;
 }
 
-/* The cuts from the whole set (every rank holds the same particles, so every
- * rank finds the same cuts): rank r starts at the first layer whose particles
- * before it reach r n / N, and every slab keeps at least one layer. */
+/* The cuts from the particle counts per layer (the whole set's, or every
+ * rank's added in rank order: the same cuts on every rank): rank r starts at
+ * the layer boundary nearest r n / N, and every slab keeps at least one layer. */
 static hearth_status slabs_cut(hearth_scene *s, int spread, hearth_error *err) {
     mpm_state *m = s->mpm;
     struct mpm_slabs *sl = m->slabs;
@@ -252,7 +252,11 @@ static hearth_status slabs_cut(hearth_scene *s, int spread, hearth_error *err) {
     sl->cut[0] = 0;
     for (int r = 1; r < N; r++) {
         while (l < L && before * N < (long long)r * n) before += sl->count[l++];
+        /* the layer boundary nearest r n / N: the first one past it can
+         * overshoot by a whole layer (a block of 4 layers on 4 ranks gave
+         * rank 0 more than half its particles) */
         int c = l;
+        if (l > 0 && (long long)r * n - (before - sl->count[l - 1]) * N < before * N - (long long)r * n) c = l - 1;
         if (c < sl->cut[r - 1] + 1) c = sl->cut[r - 1] + 1;
         if (c > L - (N - r)) c = L - (N - r);
         sl->cut[r] = c;
