@@ -47,12 +47,21 @@ void app_ranks_cleanup(const char *scratch) {
     if (scratch && scratch[0]) nftw(scratch, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
 }
 
+/* Rank 0's line; with HEARTH_RANKS_VERBOSE=1 too, every rank's (the others' stderr is kept then). */
 void app_ranks_report(const run_args *a) {
-    if (hearth_ranks_size() == 1 || hearth_ranks_rank() > 0) return;
+    const char *verbose = getenv("HEARTH_RANKS_VERBOSE");
+    if (hearth_ranks_size() == 1 || (hearth_ranks_rank() > 0 && !(verbose && verbose[0] == '1'))) return;
     double bytes, seconds;
     hearth_ranks_traffic(&bytes, &seconds);
     const char *v = getenv("HEARTH_RANKS_REPORT");
     if (a->quiet && !(v && v[0] == '1')) return;
-    fprintf(stderr, "hearth run: %d MPI ranks; rank 0 received %.3g MB in the exchanges, %.3g s inside them\n",
-            hearth_ranks_size(), bytes / 1e6, seconds);
+    long slabs, replicated, passes;
+    hearth_ranks_steps(&slabs, &replicated, &passes);
+    const long steps = slabs + replicated;
+    const double gathered = hearth_ranks_gathered();
+    fprintf(stderr,
+            "hearth run: %d MPI ranks, %ld steps in slabs and %ld replicated, %ld extra migration passes; rank %d received %.3g MB in the exchanges "
+            "(%.4g kB a step), %.3g s inside them; whole-set gathers %.3g MB, the rest %.4g kB a step\n",
+            hearth_ranks_size(), slabs, replicated, passes, hearth_ranks_rank(), bytes / 1e6, steps ? bytes / 1e3 / (double)steps : 0.0,
+            seconds, gathered / 1e6, steps ? (bytes - gathered) / 1e3 / (double)steps : 0.0);
 }

@@ -240,6 +240,16 @@ static void write_text(const run_log *r, int status, const char *path, double wa
     for (int i = 0; i < r->nsets; i++) hearth_atomic_file_printf(f, "set: %s\n", r->sets[i]);
     hearth_atomic_file_printf(f, "threads: %d%s\n", threads_of(r), r->runs ? " per run" : "");
     if (r->runs) hearth_atomic_file_printf(f, "runs: %d, %d at a time\n", r->runs, r->jobs);
+    if (hearth_ranks_size() > 1) {
+        long slabs, replicated, passes;
+        hearth_ranks_steps(&slabs, &replicated, &passes);
+        (void)passes;
+        hearth_atomic_file_printf(f, "MPI ranks: %d; %ld steps with each rank holding its slab, %ld replicated%s\n",
+                                  hearth_ranks_size(), slabs, replicated,
+                                  replicated ? " (every rank holds the whole scene: heat, water, mixing, CO2, periodic axes or "
+                                               "the rollback guard; docs/scaling.md)"
+                                             : "");
+    }
     for (int i = 0; i < plugin_count(r); i++) {
         const char *name, *file;
         int abi;

@@ -7,9 +7,18 @@
 
 #include "hearth_lua.h"
 
-hl_scene *hl_checkscene(lua_State *L, int idx) {
+/* the scene as the steps left it: over MPI ranks, each rank's slab only */
+static hl_scene *checkscene_slabs(lua_State *L, int idx) {
     hl_scene *u = luaL_checkudata(L, idx, HL_SCENE);
     if (!u->s) luaL_argerror(L, idx, "scene was released");
+    return u;
+}
+
+/* every particle: a method that reads or edits them needs the whole scene */
+hl_scene *hl_checkscene(lua_State *L, int idx) {
+    hl_scene *u = checkscene_slabs(L, idx);
+    hearth_error err;
+    if (hearth_scene_whole(u->s, &err)) hl_raise(L, &err);
     return u;
 }
 
@@ -111,6 +120,7 @@ static int l_scene_new(lua_State *L) {
     lua_setiuservalue(L, -2, 1);
     hearth_error err;
     u->s = hearth_scene_create(&d, &err);
+    if (u->s) hearth_scene_keep_slabs(u->s, 1); /* every scene method but the stepping ones calls hearth_scene_whole (hl_checkscene) */
     if (!u->s) return hl_raise(L, &err);
     return 1;
 }
@@ -124,7 +134,7 @@ static int l_gc(lua_State *L) {
 
 /* s:_state() -> the per-scene Lua table */
 static int l_state(lua_State *L) {
-    hl_checkscene(L, 1);
+    checkscene_slabs(L, 1);
     lua_getiuservalue(L, 1, 1);
     return 1;
 }
@@ -568,7 +578,7 @@ static int l_body_force(lua_State *L) {
 
 /* s:_advance(t_end) / s:_step(n): one core call each; raises on guard stops */
 static int l_advance(lua_State *L) {
-    hl_scene *u = hl_checkscene(L, 1);
+    hl_scene *u = checkscene_slabs(L, 1);
     hearth_error err;
     hearth_status st = hearth_scene_advance_steps(u->s, luaL_checknumber(L, 2), (long)luaL_optinteger(L, 3, -1), &err);
     motion_check(L);
@@ -577,7 +587,7 @@ static int l_advance(lua_State *L) {
 }
 
 static int l_step_raw(lua_State *L) {
-    hl_scene *u = hl_checkscene(L, 1);
+    hl_scene *u = checkscene_slabs(L, 1);
     hearth_error err;
     hearth_status st = hearth_scene_step(u->s, (int)luaL_optinteger(L, 2, 1), &err);
     motion_check(L);
@@ -754,7 +764,7 @@ static int l_slice(lua_State *L) {
 }
 
 static int l_stats(lua_State *L) {
-    hl_scene *u = hl_checkscene(L, 1);
+    hl_scene *u = checkscene_slabs(L, 1);
     hearth_stats st;
     hearth_scene_stats(u->s, &st);
     lua_createtable(L, 0, 14);
@@ -865,7 +875,7 @@ static int l_volume(lua_State *L) {
 }
 
 static int l_time(lua_State *L) {
-    lua_pushnumber(L, hearth_scene_time(hl_checkscene(L, 1)->s));
+    lua_pushnumber(L, hearth_scene_time(checkscene_slabs(L, 1)->s));
     return 1;
 }
 
@@ -883,6 +893,7 @@ static int l_load(lua_State *L) {
     hearth_error err;
     hearth_scene *s = hearth_scene_load(path, &err);
     if (!s) return hl_raise(L, &err);
+    hearth_scene_keep_slabs(s, 1); /* as for h.scene */
     hl_scene *u = lua_newuserdatauv(L, sizeof *u, 1);
     u->s = s;
     luaL_setmetatable(L, HL_SCENE);

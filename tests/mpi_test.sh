@@ -61,14 +61,91 @@ mpi_collider_matches_one_rank)
 mpi_elastic_3d_matches_one_rank)
     against_one elastic_block.lua 100 --set dim=3
     ;;
+mpi_dough_3d_matches_one_rank)
+    # the 3D dough with every field live (explicit heat; the CG solve is the 2D
+    # case's): heat and water keep every rank holding the whole scene, and the
+    # run record must say so
+    against_one dough.lua 100 --set dim=3
+    grep -q "MPI ranks: $ranks; 0 steps with each rank holding its slab, 100 replicated (every rank holds the whole scene" \
+        "$tmp/many/run.log" || fail "the run record does not say the dough ran replicated"
+    ;;
+mpi_rebalance_matches_one_rank)
+    # a block thrown across a resting bar: the cuts move at every rebalance, at
+    # 4 ranks by more than a slab (extra migration passes); 250 steps in slabs
+    "$hearth" run "$here/mpi/drift.lua" --out "$tmp/one" --quiet >"$tmp/one.txt" || fail "one-process run failed"
+    HEARTH_RANKS_REPORT=1 mp "$ranks" many drift.lua >"$tmp/many.txt" 2>"$tmp/err.txt" || fail "$ranks-rank run failed (status $?)"
+    cat "$tmp/one.txt" "$tmp/many.txt" "$tmp/err.txt"
+    grep -q "250 steps in slabs and 0 replicated" "$tmp/err.txt" || fail "not every step ran in slabs"
+    passes=$(sed -n 's/.* \([0-9]*\) extra migration passes.*/\1/p' "$tmp/err.txt")
+    [ "$ranks" = 2 ] || [ "${passes:-0}" -ge 1 ] || fail "no cut moved by more than a slab ($passes extra passes): the test lost its point"
+    python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 ||
+        fail "$ranks ranks differ from one process by more than 1e-12 after rebalancing"
+    ;;
+mpi_halo_traffic_bounded)
+    # bytes each rank receives per step, from each rank's own count: bounded by
+    # the halo model (docs/scaling.md), not by the particle count. The bar is
+    # run at two lengths, the second with twice the particles.
+    for len in 0.6 1.2; do
+        HEARTH_RANKS_REPORT=1 HEARTH_RANKS_VERBOSE=1 mp "$ranks" t$len traffic.lua --set len=$len >"$tmp/t$len.txt" 2>&1 ||
+            fail "$ranks-rank run at len $len failed (status $?)"
+        grep "MPI ranks" "$tmp/t$len.txt"
+    done
+    python3 - "$tmp/t0.6.txt" "$tmp/t1.2.txt" "$ranks" <<'PY' || fail "the traffic per rank is not bounded by the halo model"
+import re, sys, math
+def read(path):
+    ranks, n = {}, 0
+    for line in open(path):
+        m = re.search(r"(\d+) steps in slabs and (\d+) replicated.*rank (\d+) received .*whole-set gathers ([0-9.e+-]+) MB, the rest ([0-9.e+-]+) kB a step", line)
+        if m:
+            ranks[int(m.group(3))] = (int(m.group(1)), int(m.group(2)), float(m.group(4)), float(m.group(5)) * 1e3)
+        m = re.match(r"steps \d+ particles (\d+)", line)
+        if m:
+            n = int(m.group(1))
+    return ranks, n
+N = int(sys.argv[3])
+short, n1 = read(sys.argv[1])
+long_, n2 = read(sys.argv[2])
+ok = len(short) == N and len(long_) == N and n2 > 1.9 * n1
+# The model, from the scene's geometry (not from hearth): the slab axis is x
+# (the box is 2 m by 0.5 m); a block layer's cross-section is at most
+# ceil((0.5 / dx + 4) / 4) = 9 blocks of 16 nodes with 4 channels (8 bytes).
+# Per step a rank receives the lower neighbour's marks (1 byte a block) and
+# sums, the upper's values, the particles crossing its two faces (those
+# within a cell of a face: 2 faces x 14 cells x 2 particles a cell
+# (ppc 4 in 2D), 300 bytes each at most), N step reports (200 bytes) and a
+# few counts (256 bytes).
+dx, S = 1 / 64, math.ceil((0.5 * 64 + 4) / 4)
+bound = S + 2 * S * 16 * 4 * 8 + 2 * 14 * 2 * 300 + N * 200 + 256
+print(f"halo model bound {bound / 1e3:.1f} kB a step a rank; replicated particles alone would be {(1 - 1 / N) * n2 * 216 / 1e3:.0f} kB at {n2} particles")
+for r in range(N):
+    if r not in short or r not in long_:
+        print(f"rank {r}: no report line"); ok = False; continue
+    (s1, p1, g1, b1), (s2, p2, g2, b2) = short[r], long_[r]
+    print(f"rank {r}: {b1 / 1e3:.2f} kB a step at {n1} particles, {b2 / 1e3:.2f} kB at {n2}; steps in slabs {s1}, {s2}; gathers {g1}, {g2} MB")
+    if s1 != 100 or s2 != 100 or p1 or p2:
+        print(f"rank {r}: not every step ran in slabs"); ok = False
+    if g1 > 0 or g2 > 0:
+        print(f"rank {r}: a whole-set gather during the steps"); ok = False
+    if b1 > bound or b2 > bound:
+        print(f"rank {r}: over the bound"); ok = False
+    if b2 > 1.25 * b1 + 500:
+        print(f"rank {r}: grows with the particle count ({b1:.0f} -> {b2:.0f} bytes a step)"); ok = False
+sys.exit(0 if ok else 1)
+PY
+    ;;
 mpi_checkpoint_restores_on_other_ranks)
-    # saved by N ranks (N = 2 in the case names); restored on 1 and on 4, as a
-    # later `mpirun -n M` would: the same 50 steps as the saving run's own
+    # saved by N ranks (2 or 4, in slabs); restored on 1 and on 4 (saved by 2)
+    # or 2 (saved by 4), as a later `mpirun -n M` would: the same 50 steps as
+    # the saving run's own
     mp "$ranks" ck checkpoint.lua >"$tmp/save.txt" || fail "the $ranks-rank run that saves failed"
     cat "$tmp/save.txt"
     [ -s "$tmp/ck/ck.bin" ] || fail "no checkpoint in rank 0's output folder"
     ls "$tmp/ck" | grep -q "tmp" && fail "a temporary file was left in the output folder"
-    for m in 1 4; do
+    grep -q "MPI ranks: $ranks; 100 steps with each rank holding its slab, 0 replicated" "$tmp/ck/run.log" ||
+        fail "the saving run did not step in slabs (run.log: $(grep 'MPI ranks' "$tmp/ck/run.log"))"
+    others="1 4"
+    [ "$ranks" = 4 ] && others="1 2"
+    for m in $others; do
         rm -f "$tmp/ck/state_loaded.csv"
         if [ $m = 1 ]; then "$hearth" run "$here/mpi/checkpoint.lua" --out "$tmp/ck" --quiet --set mode=load >"$tmp/load.txt"
         else mp $m ck checkpoint.lua --set mode=load >"$tmp/load.txt"; fi || fail "restoring on $m rank(s) failed"

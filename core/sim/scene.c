@@ -701,8 +701,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
     }
 }
 
-hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err) {
-    err_clear(err);
+static hearth_status step_loop(hearth_scene *s, int n, hearth_error *err) {
     if (s->guard == HEARTH_GUARD_STOPPED) s->guard = HEARTH_GUARD_OK; /* the caller chose to go on */
     for (int k = 0; k < n; k++) {
         const double dt = scene_stable_dt(s);
@@ -713,12 +712,35 @@ hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err) {
     return HEARTH_OK;
 }
 
-hearth_status hearth_scene_advance(hearth_scene *s, double t_end, hearth_error *err) {
-    return hearth_scene_advance_steps(s, t_end, -1, err);
+static hearth_status advance_loop(hearth_scene *s, double t_end, long max_steps, hearth_error *err);
+
+/* Over MPI ranks the steps may leave each rank holding its slab's particles
+ * only (mpm_ranks.c): the whole scene again at the end of the call, or, for a
+ * host that keeps the slabs, when it calls hearth_scene_whole. */
+hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err) {
+    err_clear(err);
+    mpm_ranks_begin(s);
+    return mpm_ranks_end(s, step_loop(s, n, err), err);
 }
 
 hearth_status hearth_scene_advance_steps(hearth_scene *s, double t_end, long max_steps, hearth_error *err) {
     err_clear(err);
+    mpm_ranks_begin(s);
+    return mpm_ranks_end(s, advance_loop(s, t_end, max_steps, err), err);
+}
+
+void hearth_scene_keep_slabs(hearth_scene *s, int on) { mpm_ranks_keep(s, on); }
+
+hearth_status hearth_scene_whole(hearth_scene *s, hearth_error *err) {
+    err_clear(err);
+    return mpm_ranks_whole(s, err);
+}
+
+hearth_status hearth_scene_advance(hearth_scene *s, double t_end, hearth_error *err) {
+    return hearth_scene_advance_steps(s, t_end, -1, err);
+}
+
+static hearth_status advance_loop(hearth_scene *s, double t_end, long max_steps, hearth_error *err) {
     if (s->guard == HEARTH_GUARD_STOPPED) s->guard = HEARTH_GUARD_OK;
     for (long k = 0; s->t < t_end && (max_steps < 0 || k < max_steps); k++) {
         double dt = scene_stable_dt(s);
@@ -742,7 +764,7 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
     st->t = s->t;
     st->dt = s->dt_last;
     st->step = s->step;
-    st->particles = s->ps.n;
+    st->particles = mpm_ranks_particles(s); /* every rank's, between steps over MPI ranks */
     st->kinetic = s->kinetic;
     st->max_speed = s->max_speed;
     st->cfl = s->cfl_last;
@@ -751,7 +773,7 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
     st->rollbacks = s->rollbacks;
     st->guard = s->guard;
     snprintf(st->diagnosis, sizeof st->diagnosis, "%s", s->guard == HEARTH_GUARD_OK ? "" : s->diagnosis);
-    st->grid_blocks = s->g.nactive;
+    st->grid_blocks = mpm_ranks_blocks(s);
     st->heat_energy = thermal_energy(s);
     st->cg_iterations = thermal_cg_iterations(s);
     if (s->ps.enabled & (1u << PC_GAS))

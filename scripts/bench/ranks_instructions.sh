@@ -3,7 +3,8 @@
 # block (ranks_block.lua) on 1, 2 and 4 ranks of one thread, counted by
 # callgrind inside mpm_step (docs/scaling.md). Wall time on a shared machine
 # says more about the machine's load than about hearth; instructions do not.
-# The exchanges are split out: inside MPI (the copies, and the polling while a
+# The exchanges are split out: inside MPI (the collectives, the neighbour
+# messages and their Waitall: the copies, and the polling while a
 # rank waits for the others, which depends on the load: reported, not
 # compared) and the rest of the step (the work, load-independent).
 # Needs valgrind and a build without -march=native (build/nn, made here).
@@ -37,7 +38,7 @@ for n in 1 2 4; do
     k=0
     for f in $(ls "$tmp"/cg.* | sort); do
         total=$(callgrind_annotate --inclusive=yes "$f" 2>/dev/null | awk '/PROGRAM TOTALS/ {gsub(",", "", $1); print $1}')
-        mpi=$(callgrind_annotate --inclusive=yes "$f" 2>/dev/null | awk '/ (PMPI|MPI)_Allgatherv? / || /:(PMPI|MPI)_Allgatherv? / {gsub(",", "", $1); s += $1} END {print s + 0}')
+        mpi=$(callgrind_annotate --inclusive=yes "$f" 2>/dev/null | awk '/[ :](PMPI|MPI)_(Allgatherv|Allgather|Allreduce|Waitall|Isend|Irecv) / {gsub(",", "", $1); s += $1} END {print s + 0}')
         printf "%6s %5s %16s %12.2f %7.2f %16.2f\n" "$n" "$k" "$np" "$(echo "$total / $steps / 1000000" | bc -l)" \
             "$(echo "$mpi / $steps / 1000000" | bc -l)" "$(echo "($total - $mpi) / $steps / 1000000" | bc -l)"
         k=$((k + 1))

@@ -1,23 +1,26 @@
 -- mpi_dough_matches_one_rank: a bread dough with every field live (heat with
 -- the oven's surface, water and evaporation with latent heat, CO2), sagging
 -- on a tray, 100 steps; every particle's id, x, v, temperature, saturation
--- and J to state.csv (17 digits) for tests/mpi_test.sh.
+-- and J to state.csv (17 digits) for tests/mpi_test.sh. dim = 3: the same
+-- dough 0.02 m deep on a tray 0.04 m deep (mpi_dough_3d_matches_one_rank).
 local h = require "hearth"
-local P = h.params { steps = 100, heat = "explicit" }
-local s = h.scene { dim = 2, dx = 0.004, box = { { 0, 0 }, { 0.12, 0.08 } },
+local P = h.params { steps = 100, heat = "explicit", dim = 2 }
+local three = P.dim == 3
+local s = h.scene { dim = P.dim, dx = three and 0.006 or 0.004,
+  box = three and { { 0, 0, 0 }, { 0.12, 0.08, 0.04 } } or { { 0, 0 }, { 0.12, 0.08 } },
   oven = { temperature = 200, beta = 40 }, latent_heat = true, heat = P.heat, dt_max = 2e-3 }
 local d = h.library.dough.bread
 d.specific_heat, d.conductivity = 2800, 0.5
 d.water_diffusivity, d.evaporation = 5e-8 / 373.15, 3e-5
-s:add { shape = h.box({ 0.02, 0.012 }, { 0.10, 0.05 }), material = h.material("cam_clay_dough", d), temperature = 25,
+s:add { shape = three and h.box({ 0.02, 0.012, 0.01 }, { 0.10, 0.05, 0.03 }) or h.box({ 0.02, 0.012 }, { 0.10, 0.05 }), material = h.material("cam_clay_dough", d), temperature = 25,
   saturation = 0.4 }
-s:collider { shape = h.plane({ 0, 0.01 }, { 0, 1 }), mode = "sticky", temperature = 180 }
+s:collider { shape = h.plane({ 0, 0.01, 0 }, { 0, 1, 0 }), mode = "sticky", temperature = 180 }
 s:step(P.steps)
 local r = s:particles { fields = { "id", "x", "v", "temperature", "saturation", "J" } }
 local lines = {}
 for i = 1, r.n do
-  lines[#lines + 1] = ("%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g"):format(r.id[i], r.x[3 * i - 2], r.x[3 * i - 1],
-    r.v[3 * i - 2], r.v[3 * i - 1], r.temperature[i], r.saturation[i], r.J[i])
+  lines[#lines + 1] = ("%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g"):format(r.id[i], r.x[3 * i - 2],
+    r.x[3 * i - 1], r.x[3 * i], r.v[3 * i - 2], r.v[3 * i - 1], r.v[3 * i], r.temperature[i], r.saturation[i], r.J[i])
 end
 h.write("state.csv", table.concat(lines, "\n") .. "\n")
 local st = s:stats()

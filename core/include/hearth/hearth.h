@@ -385,6 +385,15 @@ void hearth_scene_set_gravity_fn(hearth_scene *s, hearth_gravity_fn fn, void *ud
 /// hearth_stats.diagnosis). With the rollback policy the scene is left at the
 /// last good state; with the stop policy it keeps the failed step for inspection.
 hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err);
+/// Over MPI ranks each rank steps only its slab's particles. By default a
+/// step call ends with every particle back on every rank. A host that calls
+/// hearth_scene_whole before it reads or edits particles may keep the slabs
+/// between step calls (on = 1), so stepping one call at a time costs no
+/// whole-scene gather; the Lua binding does.
+void hearth_scene_keep_slabs(hearth_scene *s, int on);
+/// Every particle back on every rank (collective: every rank calls it at the
+/// same point; a no-op in one process or when the slabs are not kept).
+hearth_status hearth_scene_whole(hearth_scene *s, hearth_error *err);
 /// Advance until sim time t_end (the last step is shortened to land on it).
 hearth_status hearth_scene_advance(hearth_scene *s, double t_end, hearth_error *err);
 /// As hearth_scene_advance, but take at most max_steps steps (< 0: no limit), so
@@ -731,6 +740,17 @@ void hearth_ranks_finalize(void);
 /// seconds spent inside them, waiting for the other ranks included. 0 and 0
 /// on one rank.
 void hearth_ranks_traffic(double *bytes, double *seconds);
+/// MPM steps this process took over MPI ranks in the slab mode (each rank
+/// holds its slab's particles; docs/scaling.md) and in the replicated mode
+/// (every rank holds the whole scene: heat, water, mixing, CO2, periodic
+/// axes and the rollback guard need it); and the migration passes past the
+/// first of a step (a rebalance that moved a cut by more than a slab).
+void hearth_ranks_steps(long *slabs, long *replicated, long *passes);
+/// Of hearth_ranks_traffic's bytes, those that came in whole-set gathers
+/// (every step in the replicated mode; in the slab mode only when a reader,
+/// a rebalance or the guard needs the whole scene): the rest is the halo,
+/// the crossings and the step report.
+double hearth_ranks_gathered(void);
 
 #ifdef __cplusplus
 }

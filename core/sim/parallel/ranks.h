@@ -24,4 +24,19 @@ void ranks_allgather(void *base, size_t elem, const int *first);
 /// blocks). Afterwards every rank holds, at every node, 0 + c_0 + c_1 + ... in
 /// rank order. NOMEM names the bytes it needed.
 hearth_status ranks_sum_grid(grid *g, int slot_lo, int slot_hi, hearth_error *err);
+/// One MPM step over the ranks, in the slab mode (what = 1) or the replicated
+/// one (0); or (2) one more migration pass than the first (hearth_ranks_steps).
+void ranks_count_step(int what);
+/// Every rank's `bytes` bytes at mine into all (ranks_size() x bytes), in rank order.
+void ranks_allgather_fixed(const void *mine, void *all, size_t bytes);
+/// The bytewise maximum over the ranks of buf (n bytes), in place (integers:
+/// the result does not depend on the order MPI combines them).
+void ranks_max_bytes(unsigned char *buf, size_t n);
+/// Slabs (mpm_ranks.c): send down[0..ndown) bytes to rank - 1 and up[0..nup)
+/// to rank + 1 (none past the ends); receive what rank - 1 sent up into
+/// *from_lo (*nlo bytes) and what rank + 1 sent down into *from_hi (*nhi).
+/// The receive buffers are this module's, valid until the next call. NOMEM
+/// names the bytes; it is then this rank's alone (the caller must not go on).
+hearth_status ranks_neighbours(const void *down, size_t ndown, const void *up, size_t nup, const void **from_lo, size_t *nlo,
+                               const void **from_hi, size_t *nhi, hearth_error *err);
 #endif

@@ -22,8 +22,12 @@
 static int started, rank_id, nranks = 1;
 static int *counts, *displs, *spans; /* nranks, nranks, 2 nranks */
 static double *sumbuf;
+static unsigned char *nbuf[2]; /* what the lower and the upper neighbour sent (ranks_neighbours) */
+static size_t nbcap[2];
 static size_t sumcap; /* doubles in sumbuf */
-static double traffic_bytes, traffic_seconds; /* received by this rank, and the time inside the exchanges */
+static long steps_slabs, steps_replicated, extra_passes; /* MPM steps in each mode; migration passes past the first */
+static double traffic_bytes, traffic_seconds;
+static double gathered_bytes; /* of traffic_bytes: whole particle columns (ranks_allgather) */ /* received by this rank, and the time inside the exchanges */
 
 static int launched_by_mpirun(void) {
     /* a hearth that an MPI job's rank starts as a child process (hearth trade
@@ -60,6 +64,7 @@ void hearth_ranks_finalize(void) {
     if (!started) return;
     mem_free(sumbuf, sumcap * sizeof(double));
     sumbuf = NULL, sumcap = 0;
+    for (int k = 0; k < 2; k++) mem_free(nbuf[k], nbcap[k]), nbuf[k] = NULL, nbcap[k] = 0;
     free(counts), free(displs), free(spans);
     counts = displs = spans = NULL;
     int done = 0;
@@ -71,6 +76,20 @@ void hearth_ranks_finalize(void) {
 void hearth_ranks_traffic(double *bytes, double *seconds) {
     *bytes = traffic_bytes;
     *seconds = traffic_seconds;
+}
+
+void ranks_count_step(int what) {
+    if (what == 2) extra_passes++;
+    else if (what) steps_slabs++;
+    else steps_replicated++;
+}
+
+double hearth_ranks_gathered(void) { return gathered_bytes; }
+
+void hearth_ranks_steps(long *slabs, long *replicated, long *passes) {
+    *slabs = steps_slabs;
+    *replicated = steps_replicated;
+    *passes = extra_passes;
 }
 
 int ranks_size(void) { return nranks; }
@@ -89,6 +108,7 @@ void ranks_allgather(void *base, size_t elem, const int *first) {
     MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, base, counts, displs, t, MPI_COMM_WORLD);
     MPI_Type_free(&t);
     traffic_bytes += (double)elem * (double)(first[nranks] - first[0] - counts[rank_id]);
+    gathered_bytes += (double)elem * (double)(first[nranks] - first[0] - counts[rank_id]);
     traffic_seconds += MPI_Wtime() - t0;
 }
 
@@ -128,5 +148,65 @@ hearth_status ranks_sum_grid(grid *g, int slot_lo, int slot_hi, hearth_error *er
 #pragma omp parallel for schedule(static) if (n >= 65536)
         for (size_t j = 0; j < n; j++) dst[j] += src[j];
     }
+    return HEARTH_OK;
+}
+
+void ranks_allgather_fixed(const void *mine, void *all, size_t bytes) {
+    if (nranks == 1) {
+        if (all != mine) memcpy(all, mine, bytes);
+        return;
+    }
+    const double t0 = MPI_Wtime();
+    MPI_Allgather(mine, (int)bytes, MPI_BYTE, all, (int)bytes, MPI_BYTE, MPI_COMM_WORLD);
+    traffic_bytes += (double)bytes * (nranks - 1);
+    traffic_seconds += MPI_Wtime() - t0;
+}
+
+void ranks_max_bytes(unsigned char *buf, size_t n) {
+    if (nranks == 1 || n == 0) return;
+    const double t0 = MPI_Wtime();
+    MPI_Allreduce(MPI_IN_PLACE, buf, (int)n, MPI_UNSIGNED_CHAR, MPI_MAX, MPI_COMM_WORLD);
+    traffic_bytes += (double)n; /* a reduction receives about one buffer, whatever its tree */
+    traffic_seconds += MPI_Wtime() - t0;
+}
+
+/* Two phases: the byte counts (so the receiver can size its buffer), then the
+ * bytes. Each phase is a send down and a send up, posted non-blocking so no
+ * rank waits for a neighbour to post its receive first. */
+hearth_status ranks_neighbours(const void *down, size_t ndown, const void *up, size_t nup, const void **from_lo, size_t *nlo,
+                               const void **from_hi, size_t *nhi, hearth_error *err) {
+    *from_lo = *from_hi = NULL;
+    *nlo = *nhi = 0;
+    if (nranks == 1) return HEARTH_OK;
+    const double t0 = MPI_Wtime();
+    const int lo = rank_id > 0 ? rank_id - 1 : MPI_PROC_NULL, hi = rank_id + 1 < nranks ? rank_id + 1 : MPI_PROC_NULL;
+    unsigned long long sent[2] = {ndown, nup}, got[2] = {0, 0};
+    MPI_Request rq[4];
+    MPI_Irecv(&got[0], 1, MPI_UNSIGNED_LONG_LONG, lo, 71, MPI_COMM_WORLD, &rq[0]);
+    MPI_Irecv(&got[1], 1, MPI_UNSIGNED_LONG_LONG, hi, 71, MPI_COMM_WORLD, &rq[1]);
+    MPI_Isend(&sent[0], 1, MPI_UNSIGNED_LONG_LONG, lo, 71, MPI_COMM_WORLD, &rq[2]);
+    MPI_Isend(&sent[1], 1, MPI_UNSIGNED_LONG_LONG, hi, 71, MPI_COMM_WORLD, &rq[3]);
+    MPI_Waitall(4, rq, MPI_STATUSES_IGNORE);
+    int fail = 0;
+    for (int k = 0; k < 2; k++)
+        if (got[k] > nbcap[k]) {
+            unsigned char *b = mem_alloc(got[k] + got[k] / 4);
+            if (!b) fail = 1;
+            else {
+                mem_free(nbuf[k], nbcap[k]);
+                nbuf[k] = b, nbcap[k] = got[k] + got[k] / 4;
+            }
+        }
+    if (fail) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the particles that cross into this rank (%llu bytes)", got[0] + got[1]);
+    /* messages over 2 GB would need a derived type; a slab's crossings are far below */
+    MPI_Irecv(nbuf[0], (int)got[0], MPI_BYTE, lo, 72, MPI_COMM_WORLD, &rq[0]);
+    MPI_Irecv(nbuf[1], (int)got[1], MPI_BYTE, hi, 72, MPI_COMM_WORLD, &rq[1]);
+    MPI_Isend(down, (int)ndown, MPI_BYTE, lo, 72, MPI_COMM_WORLD, &rq[2]);
+    MPI_Isend(up, (int)nup, MPI_BYTE, hi, 72, MPI_COMM_WORLD, &rq[3]);
+    MPI_Waitall(4, rq, MPI_STATUSES_IGNORE);
+    *from_lo = nbuf[0], *nlo = got[0];
+    *from_hi = nbuf[1], *nhi = got[1];
+    traffic_bytes += (double)(got[0] + got[1]) + 2.0 * sizeof(unsigned long long) * ((lo != MPI_PROC_NULL) + (hi != MPI_PROC_NULL));
+    traffic_seconds += MPI_Wtime() - t0;
     return HEARTH_OK;
 }

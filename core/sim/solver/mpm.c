@@ -773,12 +773,13 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         if (heat) thermal_finish(s, dt);
     }
     const double vcol = mpm_grid_update(s, dt);
+    if ((st = mpm_ranks_halo_back(s, err))) return st;
     if (wrap) mpm_periodic_fold(s, 1);
     mpm_g2p(s, dt, rep);
     if (wrap) mpm_periodic_wrap_all(s);
     if (water) water_finish(s);
     rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;
-    return HEARTH_OK;
+    return mpm_ranks_report(s, dt, vcol, rep, err);
 }
 
 double mpm_stable_dt(const hearth_scene *s) {

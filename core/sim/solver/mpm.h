@@ -59,6 +59,7 @@ typedef struct mpm_state {
      * owns blocks [kfirst[r], kfirst[r + 1]) and particles [pfirst[r], pfirst[r + 1]) */
     int nranks, k_lo, k_hi;
     int *kfirst, *pfirst;   /* nranks + 1 each */
+    struct mpm_slabs *slabs; /* the slab mode's state (mpm_ranks.c) */
 } mpm_state;
 
 /// The MPM state of s (NULL under another solver), for the field passes an
@@ -136,6 +137,34 @@ void mpm_ranks_partition(hearth_scene *s);
 hearth_status mpm_ranks_sum_grid(hearth_scene *s, hearth_error *err);
 /// After G2P's blocks: every rank's particles and block partials to every rank.
 void mpm_ranks_gather(hearth_scene *s);
+/* The slab mode (mpm_ranks.c): each rank holds the particles of its slab of
+ * block layers along the box's longest axis for the length of a step call;
+ * the cuts follow the particle count every MPM_RANKS_REBALANCE steps. */
+#define MPM_RANKS_REBALANCE 50
+/// At the start of a step call: the slab mode when the scene allows it and
+/// the whole set is on every rank (else nothing: the replicated mode, or the
+/// slabs of the last call). They stay until hearth_scene_whole (a reader).
+void mpm_ranks_begin(hearth_scene *s);
+/// Whether the slabs stay between step calls (hearth_scene_keep_slabs).
+void mpm_ranks_keep(hearth_scene *s, int on);
+/// At the end of a step call: the whole set again unless the host keeps the
+/// slabs. Returns st, or the gather's error when st is HEARTH_OK.
+hearth_status mpm_ranks_end(hearth_scene *s, hearth_status st, hearth_error *err);
+/// The whole set on every rank again (hearth_scene_whole); collective.
+hearth_status mpm_ranks_whole(hearth_scene *s, hearth_error *err);
+/// Particles over all ranks.
+int mpm_ranks_particles(const hearth_scene *s);
+/// Active grid blocks over all ranks (each counted once).
+int mpm_ranks_blocks(const hearth_scene *s);
+/// At the start of the sort: particles that left this rank's slab go to the neighbour's.
+hearth_status mpm_ranks_migrate(hearth_scene *s, hearth_error *err);
+/// Before the grid blocks are activated: the blocks of this rank's first
+/// layer the lower neighbour's particles touch get storage too.
+hearth_status mpm_ranks_mark(hearth_scene *s, hearth_error *err);
+/// After the grid update: the owners' node values of the ghost blocks back to the ranks that touch them.
+hearth_status mpm_ranks_halo_back(hearth_scene *s, hearth_error *err);
+/// At the end of the step: the step report over the ranks (vcol: the fastest collider speed at a node).
+hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_report *rep, hearth_error *err);
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err);
 /* The stable step: CFL, the user's maximum, explicit conduction, water and viscosity. */
 double mpm_stable_dt(const hearth_scene *s);

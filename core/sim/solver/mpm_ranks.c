@@ -1,54 +1,121 @@
-/* mpm_ranks.c: one MPM scene over MPI ranks, the first working step (#21).
+/* mpm_ranks.c: one MPM scene over MPI ranks (#21), in two modes chosen per
+ * step call (slabs_fit), never by the user.
  *
- * What this is, plainly: a replicated scene with the particle work split.
- * Every rank holds every particle and the whole grid. After the sort (the
- * same on every rank), the particle blocks are cut into one contiguous run
- * per rank, balanced by particle count; block ids are x-major, so a run is a
- * slab along x (its two end faces ragged by block columns). Each rank runs
- * P2G and G2P for its own run only. After P2G the written node slots are
- * summed over the ranks in rank order (ranks_sum_grid), every rank runs the
- * grid update (and any field pass) on the whole grid, and after G2P every
- * rank's particles and block partials go to every rank (ranks_allgather), so
- * the next sort, the guard, probes, outputs and checkpoints see the whole
- * scene on every rank, exactly the same. A guard stop is therefore the same
- * decision on every rank with the same diagnosis: all ranks stop together.
+ * Slabs (domain decomposition). The box's block layers along its longest
+ * axis are cut into one slab per rank, by particle count. A rank holds only
+ * the particles whose base node's block lies in its slab, and activates only
+ * the blocks they touch: its slab and one ghost layer, the upper neighbour's
+ * first (a block's tile reaches its +1 neighbours only, so there is no ghost
+ * on the lower face). After P2G the ghost blocks' sums go to their owner,
+ * which adds them after its own; the owner runs the grid update and sends
+ * the ghost blocks' values back (halo_sum, mpm_ranks_halo_back). At the next
+ * sort particles that left the slab go to the neighbour (mpm_ranks_migrate).
+ * The step report is combined over the ranks in rank order. Every
+ * MPM_RANKS_REBALANCE steps the cuts follow the particle counts. The slabs
+ * stay across step calls until something reads the particles
+ * (hearth_scene_whole, which every Lua scene method but the stepping ones
+ * calls): then every rank gathers the whole set in rank order. Per step a rank
+ * receives the ghost layer's sums or values and its marks, the particles
+ * crossing its faces and N step reports: constant as the scene grows along
+ * the axis (docs/scaling.md, `mpi_halo_traffic_bounded_4`).
  *
- * This is not domain decomposition: the memory per rank is the whole scene
- * and the messages per step grow with the whole particle count, not with a
- * slab's surface (docs/scaling.md has the model and the measurements). It is
- * the honest first step the issue allows: exact bookkeeping first, the halo
- * and migration of true slabs next, on top of the same partition.
+ * Replicated (scenes whose passes read every particle inside a step: heat,
+ * water, mixing, CO2, periodic axes, the rollback guard). Every rank holds
+ * every particle and the whole grid; after the sort the particle blocks are
+ * cut into one contiguous run per rank; each rank runs P2G and G2P for its
+ * run only; the written node slots are summed over the ranks in rank order
+ * (ranks_sum_grid), every rank runs the grid update and the field passes on
+ * the whole grid, and after G2P every rank's particles go to every rank.
  *
  * Rejected: MPI_Allreduce for the grid (its summation order is the MPI
- * library's choice, so two runs could differ in the last bit); owner by
- * fixed x slabs of equal width (a block of dough on one side of the box would
- * leave ranks idle).
+ * library's choice, so two runs could differ in the last bit); slabs of equal
+ * width (a block of dough on one side of the box would leave ranks idle); a
+ * gather at the end of every step call (s:step(n) and s:run call the core one
+ * step, or 64, at a time: the whole set would move every step); a whole-set
+ * gather to rebalance (each rank's per-layer counts, added in rank order,
+ * give the same cuts everywhere, and neighbour passes move the particles).
  *
- * Determinism: the partition depends only on the sorted particles and the
- * rank count; each rank's P2G sums its blocks in the usual colour order; the
- * ranks' sums are added in rank order. A node touched by one rank only has
- * the bits of the one-process run; a node on a seam between two runs sums
- * the same terms in another grouping (a difference of a few ulps,
- * `mpi_elastic_matches_one_rank`). */
+ * Determinism: the cuts depend only on the particles and the rank count; a
+ * rank's particles are its residents in order, then the lower neighbour's
+ * arrivals, then the upper's, then the stable sort; each rank's P2G sums its
+ * blocks in the usual colour order, and a ghost node adds the neighbour's
+ * sum after the owner's. A node touched by one rank only has the bits of the
+ * one-process run; a node on a seam sums the same terms in another grouping
+ * (a few ulps, `mpi_elastic_matches_one_rank`). */
 #include <string.h>
 
 #include "alloc.h"
 #include "error.h"
+#include "mixing.h"
 #include "mpm.h"
 #include "particles.h"
 #include "ranks.h"
 #include "thermal.h"
 #include "water.h"
 
+/* what each rank tells the others after G2P in the slab mode */
+typedef struct rank_report {
+    step_report rep;
+    double vcol; /* the fastest collider speed at a node with mass among this rank's own blocks */
+    long clamped; /* particles the sort put back inside the grid this step */
+    int n, blocks; /* particles; active blocks outside the ghost layer */
+} rank_report;
+
+/* Slabs (the decomposed mode): while live, this rank holds only the particles
+ * whose base node's block lies in block layers [cut[me], cut[me + 1]) along
+ * axis. */
+struct mpm_slabs {
+    int live, axis, nlayer;
+    int keep;               /* the host calls hearth_scene_whole before reading: slabs stay between step calls */
+    long ood0;              /* s->out_of_domain when this step's sort began (the sort counts its own clamps) */
+    int ntotal;             /* particles over all ranks (a step neither adds nor removes any) */
+    int blocks;             /* active blocks over all ranks, each counted by its owner (the last step's) */
+    unsigned char *lowmark; /* the layer cut[me]'s blocks the lower neighbour's particles touch */
+    size_t lowcap;
+    double *halo;           /* packed node values of ghost blocks */
+    size_t halocap;         /* doubles */
+    int *cut;               /* nranks + 1 */
+    int *count;             /* nlayer: particles per block layer */
+    long balanced;          /* the step at which the cuts were last set */
+    unsigned char *drop;    /* per particle: leaves this rank */
+    size_t dropcap;
+    unsigned char *out[2];  /* packed particles for the lower and the upper neighbour */
+    size_t outcap[2];
+    int *nall;              /* nranks + 1: every rank's particle count, then the prefix */
+    void *reps;             /* nranks rank_report */
+};
+
+/* (a test may give the state a rank count by hand, without the slab tables) */
+static int slabs_live(const mpm_state *m) { return m->slabs && m->slabs->live; }
+
 hearth_status mpm_ranks_init(mpm_state *m, hearth_error *err) {
     m->nranks = ranks_size();
     m->kfirst = mem_calloc(sizeof(int) * ((size_t)m->nranks + 1));
     m->pfirst = mem_calloc(sizeof(int) * ((size_t)m->nranks + 1));
-    if (!m->kfirst || !m->pfirst) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the MPM rank tables");
+    m->slabs = mem_calloc(sizeof(struct mpm_slabs));
+    if (!m->kfirst || !m->pfirst || !m->slabs) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the MPM rank tables");
+    struct mpm_slabs *sl = m->slabs;
+    sl->cut = mem_calloc(sizeof(int) * ((size_t)m->nranks + 1));
+    sl->nall = mem_calloc(sizeof(int) * ((size_t)m->nranks + 1));
+    sl->reps = mem_calloc(sizeof(rank_report) * (size_t)m->nranks);
+    if (!sl->cut || !sl->nall || !sl->reps) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the MPM rank tables");
     return HEARTH_OK;
 }
 
 void mpm_ranks_free(mpm_state *m) {
+    struct mpm_slabs *sl = m->slabs;
+    if (sl) {
+        mem_free(sl->cut, sizeof(int) * ((size_t)m->nranks + 1));
+        mem_free(sl->nall, sizeof(int) * ((size_t)m->nranks + 1));
+        mem_free(sl->reps, sizeof(rank_report) * (size_t)m->nranks);
+        mem_free(sl->count, sizeof(int) * (size_t)sl->nlayer * ((size_t)m->nranks + 2));
+        mem_free(sl->drop, sl->dropcap);
+        mem_free(sl->lowmark, sl->lowcap);
+        mem_free(sl->halo, sl->halocap * sizeof(double));
+        for (int k = 0; k < 2; k++) mem_free(sl->out[k], sl->outcap[k]);
+        mem_free(sl, sizeof *sl);
+        m->slabs = NULL;
+    }
     mem_free(m->kfirst, sizeof(int) * ((size_t)m->nranks + 1));
     mem_free(m->pfirst, sizeof(int) * ((size_t)m->nranks + 1));
     m->kfirst = m->pfirst = NULL;
@@ -57,7 +124,7 @@ void mpm_ranks_free(mpm_state *m) {
 void mpm_ranks_partition(hearth_scene *s) {
     mpm_state *m = s->mpm;
     const int N = m->nranks, n = s->ps.n;
-    if (N == 1) {
+    if (N == 1 || slabs_live(m)) { /* slabs: every particle this rank holds is its own */
         m->k_lo = 0, m->k_hi = m->npb;
         return;
     }
@@ -73,9 +140,12 @@ void mpm_ranks_partition(hearth_scene *s) {
     m->k_lo = m->kfirst[me], m->k_hi = m->kfirst[me + 1];
 }
 
+static hearth_status halo_sum(hearth_scene *s, hearth_error *err);
+
 hearth_status mpm_ranks_sum_grid(hearth_scene *s, hearth_error *err) {
     mpm_state *m = s->mpm;
     if (m->nranks == 1) return HEARTH_OK;
+    if (slabs_live(m)) return halo_sum(s, err);
     const grid *g = &s->g;
     int lo = 0, hi = 0;
     if (m->k_hi > m->k_lo) {
@@ -96,11 +166,495 @@ hearth_status mpm_ranks_sum_grid(hearth_scene *s, hearth_error *err) {
 
 void mpm_ranks_gather(hearth_scene *s) {
     mpm_state *m = s->mpm;
-    if (m->nranks == 1) return;
+    if (m->nranks == 1 || slabs_live(m)) return;
     particles *ps = &s->ps;
     ranks_allgather(m->partial, sizeof(pb_partial), m->kfirst);
     /* G2P filed its own particles' sort keys (mpm_sort.c): the other ranks' come with their particles */
     ranks_allgather(m->keys, sizeof(int), m->pfirst);
     for (int c = 0; c < PC_COUNT; c++)
         if ((ps->enabled & (1u << c)) && ps->col[c]) ranks_allgather(ps->col[c], particles_col_bytes(ps, c), m->pfirst);
+}
+
+/* ---- slabs: particles owned by rank --------------------------------- */
+
+/* The slab mode holds, per rank, only the particles of its slab, so anything
+ * that reads every particle inside a step must not run. Those scenes keep the
+ * replicated mode above, chosen here, for the whole step call: heat and water
+ * (their grid passes read every particle's volume, and the implicit heat
+ * solve is global), mixing (a particle pass before the sort), periodic axes
+ * (wrapped on the whole set) and the rollback guard (its snapshot is the
+ * whole scene). */
+static int slabs_fit(const hearth_scene *s) {
+    const mpm_state *m = s->mpm;
+    if (m->nranks == 1 || !m->slabs) return 0;
+    if (thermal_active(s) || water_active(s) || mixing_active(s)) return 0;
+    if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) return 0;
+    if (s->def.guard == HEARTH_GUARD_ROLLBACK) return 0;
+    if (s->ps.enabled & (1u << PC_GAS)) return 0; /* stats() sums the gas over the particles */
+    int axis = 0;
+    for (int d = 1; d < s->g.dim; d++)
+        if (s->g.nb[d] > s->g.nb[axis]) axis = d;
+    return s->g.nb[axis] >= m->nranks; /* every slab at least one block layer thick */
+}
+
+/* The block layer along the slab axis of particle i's base node (clamped to
+ * the grid as the sort does, without moving the particle). */
+static int layer_of(const hearth_scene *s, int axis, const double *x) {
+    const grid *g = &s->g;
+    double xa = x[axis];
+    const double lo = g->lo[axis] + g->dx, hi = g->lo[axis] + (g->nn[axis] - 2) * g->dx;
+    if (!(xa >= lo)) xa = lo;
+    else if (xa > hi) xa = hi;
+    return base_node((xa - g->lo[axis]) * g->inv_dx) / GRID_B;
+}
+
+static int owner_of(const struct mpm_slabs *sl, int N, int layer) {
+    int r = 0;
+    while (r + 1 < N && layer >= sl->cut[r + 1]) r++;
+    return r;
+}
+
+/* The cuts from the particle counts per layer (the whole set's, or every
+ * rank's added in rank order: the same cuts on every rank): rank r starts at
+ * the layer boundary nearest r n / N, and every slab keeps at least one layer. */
+static hearth_status slabs_cut(hearth_scene *s, int spread, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    struct mpm_slabs *sl = m->slabs;
+    const int N = m->nranks;
+    int axis = 0;
+    for (int d = 1; d < s->g.dim; d++)
+        if (s->g.nb[d] > s->g.nb[axis]) axis = d;
+    const int L = s->g.nb[axis];
+    if (L != sl->nlayer) {
+        int *c = mem_alloc(sizeof(int) * (size_t)L * ((size_t)N + 2));
+        if (!c) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the slab counts");
+        mem_free(sl->count, sizeof(int) * (size_t)sl->nlayer * ((size_t)N + 2));
+        sl->count = c, sl->nlayer = L;
+    }
+    sl->axis = axis;
+    int *mine = sl->count + L, *all = sl->count + 2 * L;
+    memset(mine, 0, sizeof(int) * (size_t)L);
+    const double *X = pcold(&s->ps, PC_X);
+    for (int i = 0; i < s->ps.n; i++) mine[layer_of(s, axis, X + 3 * i)]++;
+    /* spread over the ranks: every rank's counts (L ints each), added in rank
+     * order (integers: exact); else every rank counted the same whole set */
+    if (spread) ranks_allgather_fixed(mine, all, sizeof(int) * (size_t)L);
+    long long n = 0;
+    for (int l = 0; l < L; l++) {
+        int c = spread ? 0 : mine[l];
+        if (spread)
+            for (int r = 0; r < N; r++) c += all[(size_t)r * L + l];
+        sl->count[l] = c;
+        n += c;
+    }
+    long long before = 0;
+    int l = 0;
+    sl->cut[0] = 0;
+    for (int r = 1; r < N; r++) {
+        while (l < L && before * N < (long long)r * n) before += sl->count[l++];
+        /* the layer boundary nearest r n / N: the first one past it can
+         * overshoot by a whole layer (a block of 4 layers on 4 ranks gave
+         * rank 0 more than half its particles) */
+        int c = l;
+        if (l > 0 && (long long)r * n - (before - sl->count[l - 1]) * N < before * N - (long long)r * n) c = l - 1;
+        if (c < sl->cut[r - 1] + 1) c = sl->cut[r - 1] + 1;
+        if (c > L - (N - r)) c = L - (N - r);
+        sl->cut[r] = c;
+    }
+    sl->cut[N] = L;
+    sl->balanced = s->step;
+    return HEARTH_OK;
+}
+
+/* From the whole set to this rank's slab: no message, every rank drops the others'. */
+static hearth_status slabs_scatter(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    struct mpm_slabs *sl = m->slabs;
+    hearth_status st = slabs_cut(s, 0, err);
+    if (st) return st;
+    const int n = s->ps.n, me = ranks_rank();
+    if ((size_t)n > sl->dropcap) {
+        unsigned char *d = mem_alloc((size_t)n);
+        if (!d) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the slab split (%d particles)", n);
+        mem_free(sl->drop, sl->dropcap);
+        sl->drop = d, sl->dropcap = (size_t)n;
+    }
+    const double *X = pcold(&s->ps, PC_X);
+    for (int i = 0; i < n; i++) sl->drop[i] = owner_of(sl, m->nranks, layer_of(s, sl->axis, X + 3 * i)) != me;
+    sl->ntotal = n;
+    particles_compact(&s->ps, sl->drop);
+    sl->live = 1;
+    return HEARTH_OK;
+}
+
+/* From the slabs to the whole set on every rank, in rank order (rank 0's
+ * particles, then rank 1's, ...): the order the step report's particle
+ * indices refer to (mpm_ranks_report). */
+static hearth_status slabs_gather(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    struct mpm_slabs *sl = m->slabs;
+    particles *ps = &s->ps;
+    const int N = m->nranks, me = ranks_rank();
+    int mine = ps->n;
+    ranks_allgather_fixed(&mine, sl->nall, sizeof(int));
+    int *first = m->pfirst;
+    first[0] = 0;
+    for (int r = 0; r < N; r++) first[r + 1] = first[r] + sl->nall[r];
+    /* every rank learns every count before any can fail, so a rank that
+     * cannot grow says so alone: the caller stops (and mpirun ends the job) */
+    hearth_status st = particles_reserve(ps, first[N], err);
+    if (st) return st;
+    for (int c = 0; c < PC_COUNT; c++) {
+        if (!(ps->enabled & (1u << c)) || !ps->col[c]) continue;
+        const size_t b = particles_col_bytes(ps, c);
+        char *col = ps->col[c];
+        if (first[me]) memmove(col + b * (size_t)first[me], col, b * (size_t)mine);
+        ranks_allgather(col, b, first);
+    }
+    ps->n = first[N];
+    ps->edits++;
+    sl->live = 0;
+    return HEARTH_OK;
+}
+
+void mpm_ranks_begin(hearth_scene *s) {
+    mpm_state *m = s->mpm;
+    if (!m || slabs_live(m) || !slabs_fit(s)) return;
+    /* every rank holds the same whole set here: a failure (out of memory for
+     * the drop flags) is the same on every rank, and the run stays replicated */
+    if (slabs_scatter(s, NULL)) m->slabs->live = 0;
+}
+
+void mpm_ranks_keep(hearth_scene *s, int on) {
+    if (s->mpm && s->mpm->slabs) s->mpm->slabs->keep = on != 0;
+}
+
+hearth_status mpm_ranks_end(hearth_scene *s, hearth_status st, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    if (!m || !slabs_live(m) || m->slabs->keep) return st;
+    hearth_error e2;
+    const hearth_status g = slabs_gather(s, st ? &e2 : err); /* a host that reads the scene directly */
+    return st ? st : g;
+}
+
+hearth_status mpm_ranks_whole(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    if (!m || !slabs_live(m)) return HEARTH_OK;
+    return slabs_gather(s, err);
+}
+
+int mpm_ranks_blocks(const hearth_scene *s) {
+    const mpm_state *m = s->mpm;
+    return m && slabs_live(m) ? m->slabs->blocks : s->g.nactive;
+}
+
+int mpm_ranks_particles(const hearth_scene *s) {
+    const mpm_state *m = s->mpm;
+    return m && slabs_live(m) ? m->slabs->ntotal : s->ps.n;
+}
+
+/* A particle's bytes, every enabled column in column order. */
+static size_t particle_bytes(const particles *ps) {
+    size_t b = 0;
+    for (int c = 0; c < PC_COUNT; c++)
+        if ((ps->enabled & (1u << c)) && ps->col[c]) b += particles_col_bytes(ps, c);
+    return b;
+}
+
+static void pack(const particles *ps, int i, unsigned char *dst) {
+    for (int c = 0; c < PC_COUNT; c++) {
+        if (!(ps->enabled & (1u << c)) || !ps->col[c]) continue;
+        const size_t b = particles_col_bytes(ps, c);
+        memcpy(dst, (const char *)ps->col[c] + b * (size_t)i, b);
+        dst += b;
+    }
+}
+
+static void unpack(particles *ps, int i, const unsigned char *src) {
+    for (int c = 0; c < PC_COUNT; c++) {
+        if (!(ps->enabled & (1u << c)) || !ps->col[c]) continue;
+        const size_t b = particles_col_bytes(ps, c);
+        memcpy((char *)ps->col[c] + b * (size_t)i, src, b);
+        src += b;
+    }
+}
+
+static hearth_status grow(unsigned char **buf, size_t *cap, size_t need, hearth_error *err) {
+    if (need <= *cap) return HEARTH_OK;
+    const size_t c = need + need / 2;
+    unsigned char *b = mem_alloc(c);
+    if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the particles leaving this rank (%zu bytes)", c);
+    mem_free(*buf, *cap);
+    *buf = b, *cap = c;
+    return HEARTH_OK;
+}
+
+/* One pass: every particle whose owner is below this rank goes down, above
+ * goes up. Returns in *far whether any rank sent a particle that is not yet
+ * at its owner (it goes on in the next pass). */
+static hearth_status migrate_pass(hearth_scene *s, unsigned char *far, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    struct mpm_slabs *sl = m->slabs;
+    particles *ps = &s->ps;
+    const int n = ps->n, N = m->nranks, me = ranks_rank();
+    if ((size_t)n > sl->dropcap) {
+        unsigned char *d = mem_alloc((size_t)n + (size_t)n / 2);
+        if (!d) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the slab crossings (%d particles)", n);
+        mem_free(sl->drop, sl->dropcap);
+        sl->drop = d, sl->dropcap = (size_t)n + (size_t)n / 2;
+    }
+    const double *X = pcold(ps, PC_X);
+    int ndown = 0, nup = 0;
+    *far = 0;
+    for (int i = 0; i < n; i++) {
+        const int r = owner_of(sl, N, layer_of(s, sl->axis, X + 3 * i));
+        sl->drop[i] = r < me ? 1 : r > me ? 2 : 0;
+        ndown += r < me, nup += r > me;
+        *far |= r < me - 1 || r > me + 1;
+    }
+    const size_t pb = particle_bytes(ps);
+    hearth_status st;
+    if ((st = grow(&sl->out[0], &sl->outcap[0], pb * (size_t)ndown, err)) ||
+        (st = grow(&sl->out[1], &sl->outcap[1], pb * (size_t)nup, err)))
+        return st;
+    int kd = 0, ku = 0;
+    for (int i = 0; i < n; i++)
+        if (sl->drop[i] == 1) pack(ps, i, sl->out[0] + pb * (size_t)kd++);
+        else if (sl->drop[i] == 2) pack(ps, i, sl->out[1] + pb * (size_t)ku++);
+    const void *lo, *hi;
+    size_t nlo, nhi;
+    if ((st = ranks_neighbours(sl->out[0], pb * (size_t)ndown, sl->out[1], pb * (size_t)nup, &lo, &nlo, &hi, &nhi, err))) return st;
+    if (ndown + nup == 0 && nlo + nhi == 0) return HEARTH_OK; /* G2P's keys still stand */
+    if (ndown + nup) particles_compact(ps, sl->drop);
+    const int arrive = (int)((nlo + nhi) / pb), n0 = ps->n;
+    if ((st = particles_reserve(ps, n0 + arrive, err))) return st;
+    /* residents in their order, then the lower neighbour's, then the upper's: the
+     * same for a given rank count, and the sort that follows is stable */
+    for (int k = 0; k < (int)(nlo / pb); k++) unpack(ps, n0 + k, (const unsigned char *)lo + pb * (size_t)k);
+    for (int k = 0; k < (int)(nhi / pb); k++) unpack(ps, n0 + (int)(nlo / pb) + k, (const unsigned char *)hi + pb * (size_t)k);
+    ps->n = n0 + arrive;
+    ps->edits++;
+    return HEARTH_OK;
+}
+
+hearth_status mpm_ranks_migrate(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    if (!slabs_live(m)) return HEARTH_OK;
+    struct mpm_slabs *sl = m->slabs;
+    sl->ood0 = s->out_of_domain;
+    hearth_status st;
+    /* every MPM_RANKS_REBALANCE steps the cuts follow the particle count: each
+     * rank counts its particles per layer, the counts are added in rank order,
+     * and every rank finds the same new cuts (slabs_cut) */
+    if (s->step - sl->balanced >= MPM_RANKS_REBALANCE && (st = slabs_cut(s, 1, err))) return st;
+    /* A particle moves less than a cell a step (the guard stops a step that
+     * moves one further) and a slab is at least a block of 4 cells, so after a
+     * step it crosses at most one face: one pass. After a rebalance, or a
+     * particle a collider or a plugin threw further, passes go on (each moves
+     * it one rank closer; at most N - 1) until none is left on the way. */
+    unsigned char far;
+    do {
+        if ((st = migrate_pass(s, &far, err))) return st;
+        ranks_max_bytes(&far, 1);
+        if (far) ranks_count_step(2);
+    } while (far);
+    return HEARTH_OK;
+}
+
+/* The blocks of block layer l along the slab axis, in one fixed order (the
+ * same on every rank): calls fn(id, k) for the k-th block of the layer. */
+#define FOR_LAYER(g, axis, l, id, k, body)                                                        \
+    do {                                                                                          \
+        const int o1_ = (axis) == 0 ? 1 : 0, o2_ = (axis) == 2 ? 1 : 2;                           \
+        int k = 0;                                                                                \
+        for (int i1_ = 0; i1_ < (g)->nb[o1_]; i1_++)                                              \
+            for (int i2_ = 0; i2_ < (g)->nb[o2_]; i2_++, k++) {                                   \
+                int c_[3];                                                                        \
+                c_[axis] = (l), c_[o1_] = i1_, c_[o2_] = i2_;                                     \
+                const int id = grid_block_id((g), c_[0], c_[1], c_[2]);                           \
+                (void)id, (void)k;                                                                \
+                body                                                                              \
+            }                                                                                     \
+    } while (0)
+
+static int layer_blocks(const grid *g, int axis) { return g->nblocks / g->nb[axis]; }
+
+/* The ghost layer: the first layer of the upper neighbour's slab, which this
+ * rank's particles in its own last layer reach (a block's tile reaches its +1
+ * neighbours only, so the lower face has none). */
+static int ghost_layer(const mpm_state *m) {
+    const int me = ranks_rank();
+    return me + 1 < m->nranks ? m->slabs->cut[me + 1] : -1;
+}
+
+hearth_status mpm_ranks_mark(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    if (!slabs_live(m)) return HEARTH_OK;
+    struct mpm_slabs *sl = m->slabs;
+    const grid *g = &s->g;
+    const int S = layer_blocks(g, sl->axis), up = ghost_layer(m), me = ranks_rank();
+    hearth_status st = grow(&sl->out[1], &sl->outcap[1], (size_t)S, err);
+    if (st) return st;
+    if ((size_t)S > sl->lowcap) {
+        unsigned char *b = mem_alloc((size_t)S);
+        if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the ghost layer's marks (%d blocks)", S);
+        mem_free(sl->lowmark, sl->lowcap);
+        sl->lowmark = b, sl->lowcap = (size_t)S;
+    }
+    /* the ghost layer's touched blocks go up; the lower neighbour's come in and
+     * get storage here too, so its sums have somewhere to land */
+    if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { sl->out[1][k] = m->mark[id]; });
+    const void *lo, *hi;
+    size_t nlo, nhi;
+    if ((st = ranks_neighbours(NULL, 0, sl->out[1], up >= 0 ? (size_t)S : 0, &lo, &nlo, &hi, &nhi, err))) return st;
+    memset(sl->lowmark, 0, (size_t)S);
+    if (me > 0) {
+        HEARTH_ASSERT(nlo == (size_t)S);
+        memcpy(sl->lowmark, lo, (size_t)S);
+        FOR_LAYER(g, sl->axis, sl->cut[me], id, k, { m->mark[id] |= sl->lowmark[k]; });
+    }
+    return HEARTH_OK;
+}
+
+static hearth_status halo_reserve(struct mpm_slabs *sl, size_t n, hearth_error *err) {
+    if (n <= sl->halocap) return HEARTH_OK;
+    double *b = mem_alloc((n + n / 4) * sizeof(double));
+    if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the ghost blocks' node values (%zu bytes)", n * sizeof(double));
+    mem_free(sl->halo, sl->halocap * sizeof(double));
+    sl->halo = b, sl->halocap = n + n / 4;
+    return HEARTH_OK;
+}
+
+/* After P2G: this rank's sums on the ghost layer go to their owner, which adds
+ * them after its own (own, then the lower neighbour's: a fixed order); here
+ * they are cleared, so the grid update sees only blocks this rank owns. */
+static hearth_status halo_sum(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    struct mpm_slabs *sl = m->slabs;
+    grid *g = &s->g;
+    const int up = ghost_layer(m), me = ranks_rank();
+    const size_t sd = (size_t)g->nch * (size_t)g->nodes_per_block;
+    size_t nup = 0;
+    if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { nup += m->mark[id] ? sd : 0; });
+    hearth_status st = halo_reserve(sl, nup, err);
+    if (st) return st;
+    size_t w = 0;
+    if (up >= 0)
+        FOR_LAYER(g, sl->axis, up, id, k, {
+            if (m->mark[id]) {
+                double *b = grid_block(g, g->slot[id]);
+                memcpy(sl->halo + w, b, sd * sizeof(double));
+                memset(b, 0, sd * sizeof(double));
+                w += sd;
+            }
+        });
+    const void *lo, *hi;
+    size_t nlo, nhi;
+    if ((st = ranks_neighbours(NULL, 0, sl->halo, nup * sizeof(double), &lo, &nlo, &hi, &nhi, err))) return st;
+    if (me > 0) {
+        const double *src = lo;
+        size_t r = 0;
+        FOR_LAYER(g, sl->axis, sl->cut[me], id, k, {
+            if (sl->lowmark[k]) {
+                double *b = grid_block(g, g->slot[id]);
+                for (size_t j = 0; j < sd; j++) b[j] += src[r + j];
+                r += sd;
+            }
+        });
+        HEARTH_ASSERT(r * sizeof(double) == nlo);
+    }
+    return HEARTH_OK;
+}
+
+hearth_status mpm_ranks_halo_back(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    if (!slabs_live(m)) return HEARTH_OK;
+    struct mpm_slabs *sl = m->slabs;
+    grid *g = &s->g;
+    const int up = ghost_layer(m), me = ranks_rank();
+    const size_t sd = (size_t)g->nch * (size_t)g->nodes_per_block;
+    /* the owner's updated values of the blocks the lower neighbour touched go back down */
+    size_t ndown = 0;
+    if (me > 0) FOR_LAYER(g, sl->axis, sl->cut[me], id, k, { ndown += sl->lowmark[k] ? sd : 0; });
+    hearth_status st = halo_reserve(sl, ndown, err);
+    if (st) return st;
+    size_t w = 0;
+    if (me > 0)
+        FOR_LAYER(g, sl->axis, sl->cut[me], id, k, {
+            if (sl->lowmark[k]) {
+                memcpy(sl->halo + w, grid_block(g, g->slot[id]), sd * sizeof(double));
+                w += sd;
+            }
+        });
+    const void *lo, *hi;
+    size_t nlo, nhi;
+    if ((st = ranks_neighbours(sl->halo, ndown * sizeof(double), NULL, 0, &lo, &nlo, &hi, &nhi, err))) return st;
+    if (up >= 0) {
+        const double *src = hi;
+        size_t r = 0;
+        FOR_LAYER(g, sl->axis, up, id, k, {
+            if (m->mark[id]) {
+                memcpy(grid_block(g, g->slot[id]), src + r, sd * sizeof(double));
+                r += sd;
+            }
+        });
+        HEARTH_ASSERT(r * sizeof(double) == nhi);
+    }
+    return HEARTH_OK;
+}
+
+/* The step report over the ranks, combined in rank order so every rank gets
+ * the same one. Particle indices become indices into the whole set in rank
+ * order (slabs_gather's order). Then the guard's verdict: when the guard will
+ * stop (a failed particle, a CFL violation, a runaway), every rank gathers the
+ * whole set so its diagnosis names the particle, the same on every rank. */
+hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_report *rep, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    struct mpm_slabs *sl = m->slabs;
+    if (m->nranks > 1) ranks_count_step(slabs_live(m) ? 1 : 0);
+    if (!slabs_live(m)) return HEARTH_OK;
+    const int N = m->nranks;
+    const grid *g = &s->g;
+    const int up = ghost_layer(m);
+    int ghosts = 0;
+    if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { ghosts += m->mark[id] != 0; });
+    rank_report mine = {.rep = *rep, .vcol = vcol, .clamped = s->out_of_domain - sl->ood0, .n = s->ps.n, .blocks = g->nactive - ghosts},
+                *all = sl->reps;
+    ranks_allgather_fixed(&mine, all, sizeof mine);
+    step_report t = {.particle = -1, .fastest = -1, .mover = -1};
+    double vmax = -1, vc = 0;
+    long clamped = 0;
+    int off = 0;
+    sl->blocks = 0;
+    for (int r = 0; r < N; r++) {
+        const step_report *q = &all[r].rep;
+        if (q->particle >= 0 && t.particle < 0) t.particle = off + q->particle, t.kind = q->kind, t.code = q->code;
+        if (q->max_speed > vmax && q->fastest >= 0) vmax = q->max_speed, t.max_speed = q->max_speed, t.fastest = off + q->fastest;
+        if (q->max_move > t.max_move) t.max_move = q->max_move, t.mover = q->mover >= 0 ? off + q->mover : -1;
+        t.kinetic += q->kinetic;
+        t.mass += q->mass;
+        t.out_of_domain += q->out_of_domain;
+        if (q->c_max > t.c_max) t.c_max = q->c_max;
+        if (q->nu_max > t.nu_max) t.nu_max = q->nu_max;
+        off += all[r].n;
+        sl->blocks += all[r].blocks;
+        clamped += all[r].clamped;
+        if (all[r].vcol > vc) vc = all[r].vcol;
+    }
+    t.driven_kinetic = 0.5 * t.mass * vc * vc;
+    *rep = t;
+    s->out_of_domain = sl->ood0 + clamped; /* every rank's clamps, the same count on every rank */
+    int stop = rep->particle >= 0;
+    if (!stop) {
+        /* the guard's own test, without its particle names (they need the whole set) */
+        step_report dry = *rep;
+        dry.fastest = dry.mover = -1;
+        const double cfl = s->cfl_last;
+        char keep[sizeof s->diagnosis];
+        memcpy(keep, s->diagnosis, sizeof keep);
+        stop = guard_check(s, &dry, dt, s->max_speed);
+        memcpy(s->diagnosis, keep, sizeof keep);
+        s->cfl_last = cfl;
+    }
+    return stop ? slabs_gather(s, err) : HEARTH_OK;
 }

@@ -230,8 +230,10 @@ static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
 hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     grid *g = &s->g;
     particles *ps = &s->ps;
+    hearth_status st = mpm_ranks_migrate(s, err); /* slabs: crossings to the neighbour ranks first */
+    if (st) return st;
     const int n = ps->n;
-    hearth_status st = mpm_reserve(s, n, err);
+    st = mpm_reserve(s, n, err);
     if (st) return st;
     mpm_state *m = s->mpm;
     double *X = pcold(ps, PC_X);
@@ -265,6 +267,7 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     if (sort_counting(m, n, Tc)) particles_permute(ps, m->order, m->perm_scratch);
     if ((st = sort_blocks(s, T, err))) return st;
     if (wrap) mpm_periodic_mark(s, m->mark);
+    if ((st = mpm_ranks_mark(s, err))) return st;
     st = grid_set_channels(g, thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
     if (st) return st;
     if ((st = grid_activate(g, m->mark, err))) return st;
