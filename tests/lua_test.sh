@@ -117,6 +117,25 @@ lua_error_messages)
     check err_runtime.lua 3 "attempt to call a nil value (field 'missing_function')" "stack traceback" \
         "err_runtime.lua:5: in main chunk"
     ;;
+batch_scene_matches_one_point)
+    # <hearth/material.h> rule 7: scenes of plugins with stress_block (elastic, cam_clay_dough; 2D and 3D;
+    # a temperature curve on E; the dough with every field) give the same particle state bit for bit
+    # with the batched call and with HEARTH_PLUGIN_NO_BATCH=1 (one call per point). The last scene's
+    # plugin (tests/plugins/batch_mismatch.c) reorders one product in its stress_block: its hash must
+    # differ, or the switch did not switch.
+    export HEARTH_PLUGIN_PATH="$HEARTH_PLUGIN_PATH:$HEARTH_TEST_PLUGIN_DIR"
+    run batch_scenes.lua --threads 2 --set mismatch=1
+    expect_rc 0 "batched run"
+    mv out.txt batched.txt
+    HEARTH_PLUGIN_NO_BATCH=1 run batch_scenes.lua --threads 2 --set mismatch=1
+    expect_rc 0 "one-point run"
+    [ "$(grep -c '^[a-z0-9_]* [0-9]* [0-9a-f]\{16\}$' batched.txt)" -eq 6 ] || fail "expected 6 scene hashes: $(cat batched.txt)"
+    grep -v '^mismatch' batched.txt >a.txt
+    grep -v '^mismatch' out.txt >b.txt
+    cmp -s a.txt b.txt || fail "batched and one-point scenes differ: $(diff a.txt b.txt)"
+    [ "$(grep '^mismatch' batched.txt)" != "$(grep '^mismatch' out.txt)" ] ||
+        fail "batch_mismatch gave the same hash both ways: HEARTH_PLUGIN_NO_BATCH did not switch the path"
+    ;;
 lua_determinism)
     hashes=()
     for i in 1 2 3; do
