@@ -54,6 +54,8 @@ static void init(const double *p, double *state) {
  *   pt->dt      step (s); 0 means "evaluate only, do not advance state"
  *   pt->p       the parameters above; pt->state your state_size doubles
  *   pt->temperature etc.: NaN unless `needs` asks for them.
+ *   pt->dim     2 or 3; 2 is plane strain (F[2] = F[5] = F[6] = F[7] = 0),
+ *               which a law may use to skip zero terms (set HEARTH_NEEDS_DIM).
  * Write all nine entries of the Kirchhoff stress tau = J sigma (Pa), which
  * must be symmetric. Return 0, or a positive code that describe_error explains:
  * the core's guard stops the run and shows that text. */
@@ -140,8 +142,8 @@ static const char *describe_error(int code) {
 /* ---- the descriptor -------------------------------------------------------
  * Static, never freed. abi_version, struct_size and real_size let the loader
  * refuse a plugin built against another <hearth/material.h> or another float
- * width before touching anything else. Optional callbacks (blend, plastic_J)
- * left out are NULL. */
+ * width before touching anything else. Optional callbacks (blend, plastic_J,
+ * viscosity, damage, stress_block) left out are NULL. */
 static const hearth_material material = {
     .abi_version = HEARTH_MATERIAL_ABI,
     .struct_size = sizeof(hearth_material),

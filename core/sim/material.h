@@ -11,7 +11,8 @@
  * The door. Every caller that asks a
  * plugin for a stress (MPM's P2G, SPH's stress phase, the probes, the guard's
  * cause attribution, `hearth plugin check` and the rheometer) goes through
- * material_point_eval() or its two halves, so the fields the point carries, the recording of the plugin call (plugins.h) and
+ * material_point_eval() or its two halves (P2G through material_run_eval(),
+ * which calls them, or the plugin's stress_block, for a run of particles), so the fields the point carries, the recording of the plugin call (plugins.h) and
  * the core's coupling stresses are written once.
  *
  * The caller fills the point's kinematics and parameters (grad_v, F, dt, p,
