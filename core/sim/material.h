@@ -329,6 +329,10 @@ typedef struct material_run {
     int dim;
     double dt;
     unsigned flags;              /* MATERIAL_* for every point; the door adds the material's own */
+    /* Each point's 3x3 F (at the end of the step) and velocity gradient, 9 doubles a point, row-major: the
+     * particles' own columns, or a solver's scratch (a 2D store of 2x2 tensors hands over plane-strain 3x3s,
+     * <hearth/material.h> rule 8). */
+    const double *F, *grad_v;
     const double *J;             /* det F of each point (n) */
     const double *temperature;   /* each point's (n), or NULL: NaN */
     const double *saturation;    /* each point's (n), or NULL: NaN */

@@ -60,14 +60,14 @@ static material_env run_env(const material_run *r, int j, unsigned flags) {
 static double run_points(const material_table *t, const particles *ps, const material_run *r, unsigned flags,
                          double (*tau)[9], int *code, double *wave) {
     const material_slot *ms = &t->slot[r->mat];
-    const double *Cc = pcold(ps, PC_C), *Fc = pcold(ps, PC_F);
+    const double *Cc = r->grad_v, *Fc = r->F;
     double *state = pcold(ps, PC_STATE), pscratch[MATERIAL_MAX_PARAMS], numax = 0;
     const int stride = ps->state_stride;
     for (int j = 0; j < r->n; j++) {
         const int i = r->i0 + j;
         hearth_point pt;
-        memcpy(pt.grad_v, Cc + 9 * (size_t)i, sizeof pt.grad_v);
-        memcpy(pt.F, Fc + 9 * (size_t)i, sizeof pt.F);
+        memcpy(pt.grad_v, Cc + 9 * (size_t)j, sizeof pt.grad_v);
+        memcpy(pt.F, Fc + 9 * (size_t)j, sizeof pt.F);
         pt.dt = r->dt;
         pt.p = material_params(t, ps, r->mat, i, pscratch);
         pt.state = state ? state + (size_t)i * stride : NULL;
@@ -97,7 +97,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     if (!m->stress_block || ms->mix_k || nv > RUN_MAX_VARYING) return run_points(t, ps, r, flags, tau, code, wave);
 
     const int n = r->n, i0 = r->i0, np = m->nparams, stride = ps->state_stride;
-    const double *Cc = pcold(ps, PC_C) + 9 * (size_t)i0, *Fc = pcold(ps, PC_F) + 9 * (size_t)i0;
+    const double *Cc = r->grad_v, *Fc = r->F;
     double *state = pcold(ps, PC_STATE);
     if (state) state += (size_t)i0 * stride;
     double L[9][HEARTH_BLOCK_MAX], F[9][HEARTH_BLOCK_MAX], out[9][HEARTH_BLOCK_MAX];
@@ -158,9 +158,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         if (__builtin_expect(!code[j] && !material_finite9(tau[j]), 0)) code[j] = MATERIAL_NONFINITE;
         if (__builtin_expect(code[j] != 0, 0) && (flags & MATERIAL_ZERO_FAILED)) memset(tau[j], 0, sizeof tau[j]);
         for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j];
-        hearth_point pt;
-        memcpy(pt.grad_v, Cc + 9 * (size_t)j, sizeof pt.grad_v);
-        memcpy(pt.F, Fc + 9 * (size_t)j, sizeof pt.F);
+        hearth_point pt; /* for run_after's callbacks, which read p, state and the fields, never F or grad_v */
         pt.dt = r->dt;
         pt.p = q;
         pt.state = state ? state + (size_t)j * stride : NULL;

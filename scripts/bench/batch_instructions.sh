@@ -17,7 +17,7 @@
 set -euo pipefail
 [ $# -eq 2 ] || { echo "usage: $0 BEFORE_BUILD AFTER_BUILD" >&2; exit 2; }
 root=$(cd "$(dirname "$0")/../.." && pwd)
-export BEFORE=$1 AFTER=$2 ROOT=$root
+export BEFORE=$(cd "$1" && pwd) AFTER=$(cd "$2" && pwd) ROOT=$root
 exec python3 - <<'PY'
 import json, os, re, subprocess, tempfile
 E = os.environ
@@ -25,7 +25,7 @@ tmp = tempfile.mkdtemp()
 
 def callgrind(build, cmd):
     f = os.path.join(tmp, "cg.out")
-    env = dict(E, OMP_NUM_THREADS="1", HEARTH_PLUGIN_PATH=build + "/plugins")
+    env = dict(E, OMP_NUM_THREADS="1", OMP_WAIT_POLICY="passive", HEARTH_PLUGIN_PATH=build + "/plugins")  # hearth re-executes itself to set the wait policy otherwise
     r = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + f, build + "/app/hearth"] + cmd,
                        capture_output=True, text=True, env=env, check=True)
     total = int(re.search(r"Collected : (\d+)", r.stderr).group(1))

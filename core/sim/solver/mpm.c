@@ -271,7 +271,7 @@ FORCE_INLINE void p2g_stress(hearth_scene *s, const int D, int i0, int n, double
         int e = j + 1;
         while (e < n && kind[e] == P_LIVE && mat[i0 + e] == mat[i0 + j]) e++;
         const material_run run = {.mat = mat[i0 + j], .i0 = i0 + j, .n = e - j, .dim = D, .dt = dt, .flags = env_flags,
-                                  .J = Js + j, .temperature = Tcol ? Tcol + i0 + j : NULL, .saturation = Wcol ? sat + j : NULL,
+                                  .F = Fc + 9 * (i0 + j), .grad_v = Cc + 9 * (i0 + j), .J = Js + j, .temperature = Tcol ? Tcol + i0 + j : NULL, .saturation = Wcol ? sat + j : NULL,
                                   .gas = Gcol, .saturation0 = S0col};
         const double nu = material_run_eval(&s->mats, ps, &run, tau + j, code + j, wave + j);
         if (nu > *numax) *numax = nu;
