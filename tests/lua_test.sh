@@ -119,7 +119,8 @@ lua_error_messages)
     ;;
 batch_scene_matches_one_point)
     # <hearth/material.h> rule 7: scenes of plugins with stress_block (elastic, cam_clay_dough; 2D and 3D;
-    # a temperature curve on E; the dough with every field) give the same particle state bit for bit
+    # a temperature curve on E; the dough with every field; a drying crust: water, three moisture curves,
+    # damage) give the same particle state bit for bit
     # with the batched call and with HEARTH_PLUGIN_NO_BATCH=1 (one call per point). The last scene's
     # plugin (tests/plugins/batch_mismatch.c) reorders one product in its stress_block: its hash must
     # differ, or the switch did not switch.
@@ -129,7 +130,7 @@ batch_scene_matches_one_point)
     mv out.txt batched.txt
     HEARTH_PLUGIN_NO_BATCH=1 run batch_scenes.lua --threads 2 --set mismatch=1
     expect_rc 0 "one-point run"
-    [ "$(grep -c '^[a-z0-9_]* [0-9]* [0-9a-f]\{16\}$' batched.txt)" -eq 6 ] || fail "expected 6 scene hashes: $(cat batched.txt)"
+    [ "$(grep -c '^[a-z0-9_]* [0-9]* [0-9a-f]\{16\}$' batched.txt)" -eq 7 ] || fail "expected 7 scene hashes: $(cat batched.txt)"
     grep -v '^mismatch' batched.txt >a.txt
     grep -v '^mismatch' out.txt >b.txt
     cmp -s a.txt b.txt || fail "batched and one-point scenes differ: $(diff a.txt b.txt)"
