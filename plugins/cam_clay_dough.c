@@ -554,10 +554,10 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
     for (int j = 0; j < n; j++)
         J[j] = F[0][j] * (F[4][j] * F[8][j] - F[5][j] * F[7][j]) - F[1][j] * (F[3][j] * F[8][j] - F[5][j] * F[6][j]) +
                F[2][j] * (F[3][j] * F[7][j] - F[4][j] * F[6][j]);
-    int varying = 0;
+    int vk[P_COUNT], nv = 0; /* the parameters that vary by point (curves) */
     for (int k = 0; k < P_COUNT; k++) {
         q[k] = b->p[k];
-        varying |= b->p_col[k] != NULL;
+        if (b->p_col[k]) vk[nv++] = k;
     }
     const int lame_uniform = !b->p_col[P_E] && !b->p_col[P_NU];
     double mu = 0, lambda = 0;
@@ -566,9 +566,7 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
     for (int j = 0; j < n; j++) {
         hearth_point pt; /* F is read through J only (stress_law) */
         for (int c = 0; c < 9; c++) pt.grad_v[c] = b->grad_v[c][j];
-        if (varying)
-            for (int k = 0; k < P_COUNT; k++)
-                if (b->p_col[k]) q[k] = b->p_col[k][j];
+        for (int v = 0; v < nv; v++) q[vk[v]] = b->p_col[vk[v]][j];
         pt.p = q;
         pt.dt = b->dt;
         pt.state = b->state + (size_t)j * b->state_stride;

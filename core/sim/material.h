@@ -329,20 +329,20 @@ typedef struct material_run {
     int dim;
     double dt;
     unsigned flags;              /* MATERIAL_* for every point; the door adds the material's own */
-    /* Each point's 3x3 F (at the end of the step) and velocity gradient, 9 doubles a point, row-major: the
-     * particles' own columns, or a solver's scratch (a 2D store of 2x2 tensors hands over plane-strain 3x3s,
-     * <hearth/material.h> rule 8). */
-    const double *F, *grad_v;
+    /* The points' 3x3 F (at the end of the step) and velocity gradient as columns, as a hearth_block
+     * holds them: entry c (row-major) of point j is F[c][j]. The solver's scratch (P2G writes them as it
+     * advances F; a 2D store of 2x2 tensors writes plane-strain 3x3s, <hearth/material.h> rule 8). */
+    const double *F[9], *grad_v[9];
     const double *J;             /* det F of each point (n) */
     const double *temperature;   /* each point's (n), or NULL: NaN */
     const double *saturation;    /* each point's (n), or NULL: NaN */
     const double *gas, *saturation0; /* particle columns, as in material_env */
 } material_run;
 
-/* What the door gives back for each point j < n: tau[j] with the core's terms added (zero for a point
- * whose stress failed, MATERIAL_ZERO_FAILED being set), code[j] (0, the plugin's code or
- * MATERIAL_NONFINITE) and wave[j], the wave speed that limits the next step (unchecked). Returns the
- * largest kinematic viscosity (m^2/s) a point's plugin applies, 0 when none. */
-double material_run_eval(const material_table *t, const particles *ps, const material_run *r, double (*tau)[9], int *code,
-                         double *wave);
+/* What the door gives back for each point j < n: its stress in columns, tau[c][j], with the core's terms
+ * added (zero for a point whose stress failed, MATERIAL_ZERO_FAILED being set), code[j] (0, the plugin's
+ * code or MATERIAL_NONFINITE) and wave[j], the wave speed that limits the next step (unchecked). Returns
+ * the largest kinematic viscosity (m^2/s) a point's plugin applies, 0 when none. */
+double material_run_eval(const material_table *t, const particles *ps, const material_run *r, double *const tau[9],
+                         int *code, double *wave);
 #endif

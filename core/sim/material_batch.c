@@ -14,6 +14,7 @@
  * The block's columns are a transpose of the particles' 3x3 rows: 18 loads
  * and stores a point, against the plugin's stress of 60 (elastic) to a few
  * hundred (cam_clay_dough) instructions, which the plugin may now vectorise. */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -58,30 +59,32 @@ static material_env run_env(const material_run *r, int j, unsigned flags) {
 
 /* Point by point: P2G's own calls, unchanged. */
 static double run_points(const material_table *t, const particles *ps, const material_run *r, unsigned flags,
-                         double (*tau)[9], int *code, double *wave) {
+                         double *const tau[9], int *code, double *wave) {
     const material_slot *ms = &t->slot[r->mat];
-    const double *Cc = r->grad_v, *Fc = r->F;
     double *state = pcold(ps, PC_STATE), pscratch[MATERIAL_MAX_PARAMS], numax = 0;
     const int stride = ps->state_stride;
     for (int j = 0; j < r->n; j++) {
         const int i = r->i0 + j;
         hearth_point pt;
-        memcpy(pt.grad_v, Cc + 9 * (size_t)j, sizeof pt.grad_v);
-        memcpy(pt.F, Fc + 9 * (size_t)j, sizeof pt.F);
+        for (int c = 0; c < 9; c++) {
+            pt.grad_v[c] = r->grad_v[c][j];
+            pt.F[c] = r->F[c][j];
+        }
         pt.dt = r->dt;
         pt.p = material_params(t, ps, r->mat, i, pscratch);
         pt.state = state ? state + (size_t)i * stride : NULL;
         const material_env env = run_env(r, j, flags);
-        memset(tau[j], 0, sizeof tau[j]);
-        code[j] = material_point_stress(ms->m, ms->core, &pt, &env, tau[j]);
-        run_after(ms, &pt, &env, tau[j], &wave[j], &numax);
+        double tj[9] = {0};
+        code[j] = material_point_stress(ms->m, ms->core, &pt, &env, tj);
+        run_after(ms, &pt, &env, tj, &wave[j], &numax);
+        for (int c = 0; c < 9; c++) tau[c][j] = tj[c];
     }
     plugin_call_leave();
     return numax;
 }
 
-double material_run_eval(const material_table *t, const particles *ps, const material_run *r, double (*tau)[9], int *code,
-                         double *wave) {
+double material_run_eval(const material_table *t, const particles *ps, const material_run *r, double *const tau[9],
+                         int *code, double *wave) {
     const material_slot *ms = &t->slot[r->mat];
     const hearth_material *m = ms->m;
     const unsigned flags = r->flags | (m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u) |
@@ -97,77 +100,99 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     if (!m->stress_block || ms->mix_k || nv > RUN_MAX_VARYING) return run_points(t, ps, r, flags, tau, code, wave);
 
     const int n = r->n, i0 = r->i0, np = m->nparams, stride = ps->state_stride;
-    const double *Cc = r->grad_v, *Fc = r->F;
     double *state = pcold(ps, PC_STATE);
     if (state) state += (size_t)i0 * stride;
-    double L[9][HEARTH_BLOCK_MAX], F[9][HEARTH_BLOCK_MAX], out[9][HEARTH_BLOCK_MAX];
-    double T[HEARTH_BLOCK_MAX], P[HEARTH_BLOCK_MAX], S[HEARTH_BLOCK_MAX], vcol[RUN_MAX_VARYING][HEARTH_BLOCK_MAX];
-    for (int j = 0; j < n; j++)
-        for (int c = 0; c < 9; c++) {
-            L[c][j] = Cc[9 * j + c];
-            F[c][j] = Fc[9 * j + c];
-            out[c][j] = 0; /* as P2G's tau = {0}: an entry a plugin leaves unwritten reads the same both ways */
-        }
+    const int porous = (flags & MATERIAL_POROSITY_PLASTIC) != 0;
+    const unsigned needs = m->needs;
+    double nan_col[HEARTH_BLOCK_MAX], P[HEARTH_BLOCK_MAX], vcol[RUN_MAX_VARYING][HEARTH_BLOCK_MAX];
+    const int need_nan = (!r->temperature && (needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION))) ||
+                         (!r->saturation && (needs & HEARTH_NEEDS_SATURATION)) || (!porous && (needs & HEARTH_NEEDS_POROSITY));
+    if (need_nan)
+        for (int j = 0; j < n; j++) nan_col[j] = NAN;
     /* point j's whole parameter set: the uniform ones once, the curves' patched in per point */
     double q[MATERIAL_MAX_PARAMS], scratch[MATERIAL_MAX_PARAMS];
     const double *pcolumn[MATERIAL_MAX_PARAMS];
-    memcpy(q, ms->params, sizeof(double) * (size_t)np);
     for (int k = 0; k < np; k++) pcolumn[k] = NULL;
     for (int v = 0; v < nv; v++) pcolumn[vk[v]] = vcol[v];
-    for (int j = 0; j < n; j++) {
-        if (nv) {
-            const double *pj = material_params_resolve(ms, ps, i0 + j, scratch);
-            for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j] = pj[vk[v]];
-        }
-        T[j] = r->temperature ? r->temperature[j] : NAN;
-        S[j] = r->saturation ? r->saturation[j] : NAN;
-        P[j] = NAN;
-        if (flags & MATERIAL_POROSITY_PLASTIC) { /* as material_point_stress: J^P at the start of the step */
-            double JP = 1.0;
-            if (m->plastic_J) {
-                plugin_call_enter(m, "plastic_J");
-                JP = m->plastic_J(q, state ? state + (size_t)j * stride : NULL);
+    if (nv || porous) {
+        memcpy(q, ms->params, sizeof(double) * (size_t)np);
+        for (int j = 0; j < n; j++) {
+            if (nv) {
+                const double *pj = material_params_resolve(ms, ps, i0 + j, scratch);
+                for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j] = pj[vk[v]];
             }
-            P[j] = gas_porosity(JP, ms->core[CP_POROSITY0]);
+            if (porous) { /* as material_point_stress: J^P at the start of the step */
+                double JP = 1.0;
+                if (m->plastic_J) {
+                    plugin_call_enter(m, "plastic_J");
+                    JP = m->plastic_J(q, state ? state + (size_t)j * stride : NULL);
+                }
+                P[j] = gas_porosity(JP, ms->core[CP_POROSITY0]);
+            }
         }
     }
     hearth_block b = {
         .n = n,
         .dim = r->dim == 2 ? 2 : 3,
         .dt = r->dt,
-        .temperature = m->needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? T : NULL,
-        .porosity = m->needs & HEARTH_NEEDS_POROSITY ? P : NULL,
-        .saturation = m->needs & HEARTH_NEEDS_SATURATION ? S : NULL,
+        .temperature = needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? (r->temperature ? r->temperature : nan_col) : NULL,
+        .porosity = needs & HEARTH_NEEDS_POROSITY ? (porous ? P : nan_col) : NULL,
+        .saturation = needs & HEARTH_NEEDS_SATURATION ? (r->saturation ? r->saturation : nan_col) : NULL,
         .p = ms->params,
         .p_col = pcolumn,
         .state = state,
         .state_stride = stride,
     };
-    double *const tcol[9] = {out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8]};
     for (int c = 0; c < 9; c++) {
-        b.grad_v[c] = L[c];
-        b.F[c] = F[c];
+        b.grad_v[c] = r->grad_v[c];
+        b.F[c] = r->F[c];
+        memset(tau[c], 0, sizeof(double) * (size_t)n); /* as P2G's tau = {0}: an unwritten entry reads the same both ways */
     }
     plugin_call_enter(m, "stress_block");
-    m->stress_block(&b, tcol, code);
+    m->stress_block(&b, tau, code);
 
+    /* non-finite entries, across the block (|x| <= DBL_MAX is isfinite's answer) */
+    unsigned char bad[HEARTH_BLOCK_MAX];
+    for (int j = 0; j < n; j++) bad[j] = 0;
+    for (int c = 0; c < 9; c++)
+        for (int j = 0; j < n; j++) bad[j] |= !(fabs(tau[c][j]) <= DBL_MAX);
+    for (int j = 0; j < n; j++) {
+        if (__builtin_expect(!code[j] && bad[j], 0)) code[j] = MATERIAL_NONFINITE;
+        if (__builtin_expect(code[j] != 0, 0) && (flags & MATERIAL_ZERO_FAILED))
+            for (int c = 0; c < 9; c++) tau[c][j] = 0;
+    }
+    /* nothing per point after the stress (elastic in a scene without fields): the cached wave speed */
+    const int after = ms->wave_per_point || m->viscosity || (flags & (MATERIAL_DAMAGE | MATERIAL_EXPANSION)) || r->gas ||
+                      r->saturation0;
+    if (!after) {
+        for (int j = 0; j < n; j++) wave[j] = ms->wave_speed;
+        plugin_call_leave();
+        return 0;
+    }
     double numax = 0;
     memcpy(q, ms->params, sizeof(double) * (size_t)np);
     for (int j = 0; j < n; j++) {
-        for (int c = 0; c < 9; c++) tau[j][c] = out[c][j];
-        if (__builtin_expect(!code[j] && !material_finite9(tau[j]), 0)) code[j] = MATERIAL_NONFINITE;
-        if (__builtin_expect(code[j] != 0, 0) && (flags & MATERIAL_ZERO_FAILED)) memset(tau[j], 0, sizeof tau[j]);
         for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j];
         hearth_point pt; /* for run_after's callbacks, which read p, state and the fields, never F or grad_v */
         pt.dt = r->dt;
         pt.p = q;
         pt.state = state ? state + (size_t)j * stride : NULL;
-        pt.temperature = T[j];
-        pt.porosity = P[j];
-        pt.saturation = S[j];
+        pt.temperature = r->temperature ? r->temperature[j] : NAN;
+        pt.porosity = porous ? P[j] : NAN;
+        pt.saturation = r->saturation ? r->saturation[j] : NAN;
         pt.dim = b.dim;
         const material_env env = run_env(r, j, flags);
-        run_after(ms, &pt, &env, tau[j], &wave[j], &numax);
+        /* the core's terms are isotropic and touch only the diagonal; a crack's cut-off rewrites all nine */
+        double tj[9];
+        if (flags & MATERIAL_DAMAGE)
+            for (int c = 0; c < 9; c++) tj[c] = tau[c][j];
+        else
+            tj[0] = tau[0][j], tj[4] = tau[4][j], tj[8] = tau[8][j];
+        run_after(ms, &pt, &env, tj, &wave[j], &numax);
+        if (flags & MATERIAL_DAMAGE)
+            for (int c = 0; c < 9; c++) tau[c][j] = tj[c];
+        else
+            tau[0][j] = tj[0], tau[4][j] = tj[4], tau[8][j] = tj[8];
     }
     plugin_call_leave();
     return numax;

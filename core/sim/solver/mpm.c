@@ -230,13 +230,13 @@ enum { P2G_HC = GRID_NCH_MOMENTUM, P2G_T, P2G_MW, P2G_SW, P2G_V, P2G_NCH };
 static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T, CH_MW, CH_SW, CH_CG_R};
 
 /* The material call site: particles i0 .. i0 + n - 1 of a block (n <= HEARTH_BLOCK_MAX) get
- * F <- (I + dt C) F, then their stresses into tau (the core's terms added; zero for a pinned particle,
- * one whose F failed or whose stress failed) and det F into Js. Runs of live particles of one material
+ * F <- (I + dt C) F, then their stresses into the columns tau[c][j] (the core's terms added; zero for
+ * a pinned particle, one whose F failed or whose stress failed) and det F into Js. Runs of live particles of one material
  * go to the batched door (material_run_eval, <hearth/material.h> rule 7); failures are recorded
  * afterwards in particle order, as the one-point loop recorded them. */
 FORCE_INLINE void p2g_stress(hearth_scene *s, const int D, int i0, int n, double dt, unsigned env_flags, const double *Tcol,
-                             const double *Wcol, const double *Gcol, const double *S0col, double (*tau)[9], double *Js,
-                             pb_partial *pp, double *cmax, double *numax) {
+                             const double *Wcol, const double *Gcol, const double *S0col, double (*tau)[HEARTH_BLOCK_MAX],
+                             double *Js, pb_partial *pp, double *cmax, double *numax) {
     particles *ps = &s->ps;
     const double *Cc = pcold(ps, PC_C), *V0 = pcold(ps, PC_VOL0);
     double *Fc = pcold(ps, PC_F);
@@ -246,6 +246,7 @@ FORCE_INLINE void p2g_stress(hearth_scene *s, const int D, int i0, int n, double
     unsigned char kind[HEARTH_BLOCK_MAX];
     int code[HEARTH_BLOCK_MAX];
     double wave[HEARTH_BLOCK_MAX], sat[HEARTH_BLOCK_MAX];
+    double Fs[9][HEARTH_BLOCK_MAX], Ls[9][HEARTH_BLOCK_MAX]; /* F and C as the block's columns */
     for (int j = 0; j < n; j++) {
         const int i = i0 + j;
         const double *C = Cc + 9 * i;
@@ -256,12 +257,14 @@ FORCE_INLINE void p2g_stress(hearth_scene *s, const int D, int i0, int n, double
             for (int c = 0; c < 3; c++)
                 Fn[3 * r + c] = F[3 * r + c] + dt * (C[3 * r] * F[c] + C[3 * r + 1] * F[3 + c] + C[3 * r + 2] * F[6 + c]);
         memcpy(F, Fn, sizeof Fn);
+        for (int c = 0; c < 9; c++) Fs[c][j] = Fn[c], Ls[c][j] = C[c];
         const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
                          F[2] * (F[3] * F[7] - F[4] * F[6]);
         Js[j] = J;
         kind[j] = pflags && (pflags[i] & PF_FIXED) ? P_FIXED : !(J > 0) || !all_finite(F, 9) ? P_BADF : P_LIVE;
-        if (kind[j] != P_LIVE) memset(tau[j], 0, sizeof tau[j]);
-        if (Wcol) sat[j] = Wcol[i] / (s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * J * V0[i]);
+        if (kind[j] != P_LIVE)
+            for (int c = 0; c < 9; c++) tau[c][j] = 0;
+        else if (Wcol) sat[j] = Wcol[i] / (s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * J * V0[i]);
     }
     for (int j = 0; j < n;) { /* runs of live particles of one material */
         if (kind[j] != P_LIVE) {
@@ -270,10 +273,16 @@ FORCE_INLINE void p2g_stress(hearth_scene *s, const int D, int i0, int n, double
         }
         int e = j + 1;
         while (e < n && kind[e] == P_LIVE && mat[i0 + e] == mat[i0 + j]) e++;
-        const material_run run = {.mat = mat[i0 + j], .i0 = i0 + j, .n = e - j, .dim = D, .dt = dt, .flags = env_flags,
-                                  .F = Fc + 9 * (i0 + j), .grad_v = Cc + 9 * (i0 + j), .J = Js + j, .temperature = Tcol ? Tcol + i0 + j : NULL, .saturation = Wcol ? sat + j : NULL,
-                                  .gas = Gcol, .saturation0 = S0col};
-        const double nu = material_run_eval(&s->mats, ps, &run, tau + j, code + j, wave + j);
+        material_run run = {.mat = mat[i0 + j], .i0 = i0 + j, .n = e - j, .dim = D, .dt = dt, .flags = env_flags, .J = Js + j,
+                            .temperature = Tcol ? Tcol + i0 + j : NULL, .saturation = Wcol ? sat + j : NULL,
+                            .gas = Gcol, .saturation0 = S0col};
+        double *tc[9];
+        for (int c = 0; c < 9; c++) {
+            run.F[c] = Fs[c] + j;
+            run.grad_v[c] = Ls[c] + j;
+            tc[c] = tau[c] + j;
+        }
+        const double nu = material_run_eval(&s->mats, ps, &run, tc, code + j, wave + j);
         if (nu > *numax) *numax = nu;
         j = e;
     }
@@ -329,15 +338,15 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
 
     for (int i0 = pb.start; i0 < pb.end; i0 += HEARTH_BLOCK_MAX) {
         const int n = pb.end - i0 < HEARTH_BLOCK_MAX ? pb.end - i0 : HEARTH_BLOCK_MAX;
-        double taus[HEARTH_BLOCK_MAX][9], Js[HEARTH_BLOCK_MAX];
+        double taus[9][HEARTH_BLOCK_MAX], Js[HEARTH_BLOCK_MAX];
         p2g_stress(s, D, i0, n, dt, env_flags, Tcol, Wcol, Gcol, S0col, taus, Js, pp, &cmax, &numax);
         for (int i = i0; i < i0 + n; i++) {
             const double *x = X + 3 * i, *v = V + 3 * i, *C = Cc + 9 * i;
-            const double J = Js[i - i0], *tau = taus[i - i0];
+            const double J = Js[i - i0];
             /* affine momentum with the stress folded in (MLS-MPM): Q = m C - dt V0 D^-1 tau */
             const double m = M[i], k0 = dt * V0[i] * Dinv, mC = apic ? m : 0.0; /* PIC drops the affine momentum */
             double Q[9];
-            for (int a = 0; a < 9; a++) Q[a] = mC * C[a] - k0 * tau[a];
+            for (int a = 0; a < 9; a++) Q[a] = mC * C[a] - k0 * taus[a][i - i0];
 
             int base[3] = {0, 0, 0};
             double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
@@ -397,7 +406,11 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                     }
                 }
             }
-            if (MIRROR && near_face) mpm_p2g_mirror(s, D, x, tau, k0, pb.block, tile);
+            if (MIRROR && near_face) {
+                double tau[9];
+                for (int a = 0; a < 9; a++) tau[a] = taus[a][i - i0];
+                mpm_p2g_mirror(s, D, x, tau, k0, pb.block, tile);
+            }
         }
     }
 
