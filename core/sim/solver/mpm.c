@@ -229,76 +229,6 @@ static int all_finite(const double *a, int n) {
 enum { P2G_HC = GRID_NCH_MOMENTUM, P2G_T, P2G_MW, P2G_SW, P2G_V, P2G_NCH };
 static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T, CH_MW, CH_SW, CH_CG_R};
 
-/* The material call site: particles i0 .. i0 + n - 1 of a block (n <= HEARTH_BLOCK_MAX) get
- * F <- (I + dt C) F, then their stresses into the columns tau[c][j] (the core's terms added; zero for
- * a pinned particle, one whose F failed or whose stress failed) and det F into Js. Runs of live particles of one material
- * go to the batched door (material_run_eval, <hearth/material.h> rule 7); failures are recorded
- * afterwards in particle order, as the one-point loop recorded them. */
-FORCE_INLINE void p2g_stress(hearth_scene *s, const int D, int i0, int n, double dt, unsigned env_flags, const double *Tcol,
-                             const double *Wcol, const double *Gcol, const double *S0col, double (*tau)[HEARTH_BLOCK_MAX],
-                             double *Js, pb_partial *pp, double *cmax, double *numax) {
-    particles *ps = &s->ps;
-    const double *Cc = pcold(ps, PC_C), *V0 = pcold(ps, PC_VOL0);
-    double *Fc = pcold(ps, PC_F);
-    const int *mat = pcoli(ps, PC_MAT);
-    const int *pflags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
-    enum { P_LIVE, P_FIXED, P_BADF };
-    unsigned char kind[HEARTH_BLOCK_MAX];
-    int code[HEARTH_BLOCK_MAX];
-    double wave[HEARTH_BLOCK_MAX], sat[HEARTH_BLOCK_MAX];
-    double Fs[9][HEARTH_BLOCK_MAX], Ls[9][HEARTH_BLOCK_MAX]; /* F and C as the block's columns */
-    for (int j = 0; j < n; j++) {
-        const int i = i0 + j;
-        const double *C = Cc + 9 * i;
-        double *F = Fc + 9 * i;
-        /* F^{n+1} = (I + dt C) F^n: C is the APIC velocity gradient from the last G2P */
-        double Fn[9];
-        for (int r = 0; r < 3; r++)
-            for (int c = 0; c < 3; c++)
-                Fn[3 * r + c] = F[3 * r + c] + dt * (C[3 * r] * F[c] + C[3 * r + 1] * F[3 + c] + C[3 * r + 2] * F[6 + c]);
-        memcpy(F, Fn, sizeof Fn);
-        for (int c = 0; c < 9; c++) Fs[c][j] = Fn[c], Ls[c][j] = C[c];
-        const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
-                         F[2] * (F[3] * F[7] - F[4] * F[6]);
-        Js[j] = J;
-        kind[j] = pflags && (pflags[i] & PF_FIXED) ? P_FIXED : !(J > 0) || !all_finite(F, 9) ? P_BADF : P_LIVE;
-        if (kind[j] != P_LIVE)
-            for (int c = 0; c < 9; c++) tau[c][j] = 0;
-        else if (Wcol) sat[j] = Wcol[i] / (s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * J * V0[i]);
-    }
-    for (int j = 0; j < n;) { /* runs of live particles of one material */
-        if (kind[j] != P_LIVE) {
-            j++;
-            continue;
-        }
-        int e = j + 1;
-        while (e < n && kind[e] == P_LIVE && mat[i0 + e] == mat[i0 + j]) e++;
-        material_run run = {.mat = mat[i0 + j], .i0 = i0 + j, .n = e - j, .dim = D, .dt = dt, .flags = env_flags, .J = Js + j,
-                            .temperature = Tcol ? Tcol + i0 + j : NULL, .saturation = Wcol ? sat + j : NULL,
-                            .gas = Gcol, .saturation0 = S0col};
-        double *tc[9];
-        for (int c = 0; c < 9; c++) {
-            run.F[c] = Fs[c] + j;
-            run.grad_v[c] = Ls[c] + j;
-            tc[c] = tau[c] + j;
-        }
-        const double nu = material_run_eval(&s->mats, ps, &run, tc, code + j, wave + j);
-        if (nu > *numax) *numax = nu;
-        j = e;
-    }
-    for (int j = 0; j < n; j++) {
-        if (kind[j] == P_BADF) record_fail(pp, i0 + j, FAIL_F, 0);
-        if (kind[j] != P_LIVE) continue;
-        if (code[j]) record_fail(pp, i0 + j, code[j] == MATERIAL_NONFINITE ? FAIL_STRESS : FAIL_PLUGIN,
-                                 code[j] == MATERIAL_NONFINITE ? 0 : code[j]);
-        /* NaN, inf or <= 0 would make the next dt NaN or 0 (fmax would also
-         * drop a NaN silently): the guard stops the run naming the plugin */
-        const double c = wave[j];
-        if (!(c > 0 && c <= DBL_MAX)) record_fail(pp, i0 + j, FAIL_WAVE, 0);
-        else if (c > *cmax) *cmax = c;
-    }
-}
-
 /* D (2 or 3), HEAT (temperature live), WATER (water live) and MIRROR (a
  * sticky collider: mpm_p2g_mirror) are compile-time constants in each
  * instantiation below, so a momentum-only scene runs the momentum-only loops
@@ -335,82 +265,82 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     double cmax = 0, numax = 0; /* numax: largest kinematic viscosity a plugin applies (m^2/s) */
     /* what this scene supplies to the material door, the same for every particle; gas needs the porosity */
     const unsigned env_flags = MATERIAL_ZERO_FAILED | (Gcol ? MATERIAL_POROSITY_PLASTIC : 0u) | (HEAT ? MATERIAL_EXPANSION : 0u);
+    double taus[9][HEARTH_BLOCK_MAX], Js[HEARTH_BLOCK_MAX]; /* stresses (columns) and det F of the chunk from mpm_p2g_stress */
 
-    for (int i0 = pb.start; i0 < pb.end; i0 += HEARTH_BLOCK_MAX) {
-        const int n = pb.end - i0 < HEARTH_BLOCK_MAX ? pb.end - i0 : HEARTH_BLOCK_MAX;
-        double taus[9][HEARTH_BLOCK_MAX], Js[HEARTH_BLOCK_MAX];
-        p2g_stress(s, D, i0, n, dt, env_flags, Tcol, Wcol, Gcol, S0col, taus, Js, pp, &cmax, &numax);
-        for (int i = i0; i < i0 + n; i++) {
-            const double *x = X + 3 * i, *v = V + 3 * i, *C = Cc + 9 * i;
-            const double J = Js[i - i0];
-            /* affine momentum with the stress folded in (MLS-MPM): Q = m C - dt V0 D^-1 tau */
-            const double m = M[i], k0 = dt * V0[i] * Dinv, mC = apic ? m : 0.0; /* PIC drops the affine momentum */
-            double Q[9];
-            for (int a = 0; a < 9; a++) Q[a] = mC * C[a] - k0 * taus[a][i - i0];
+    for (int i = pb.start; i < pb.end; i++) {
+        const double *x = X + 3 * i, *v = V + 3 * i, *C = Cc + 9 * i;
+        const int j = (i - pb.start) % HEARTH_BLOCK_MAX;
+        if (j == 0) /* the material call site: F and the stresses of the next HEARTH_BLOCK_MAX particles (mpm_stress.c) */
+            mpm_p2g_stress(s, D, i, pb.end - i < HEARTH_BLOCK_MAX ? pb.end - i : HEARTH_BLOCK_MAX, dt, env_flags, Tcol, Wcol,
+                           Gcol, S0col, taus, Js, pp, &cmax, &numax);
+        const double J = Js[j];
+        /* affine momentum with the stress folded in (MLS-MPM): Q = m C - dt V0 D^-1 tau */
+        const double m = M[i], k0 = dt * V0[i] * Dinv, mC = apic ? m : 0.0; /* PIC drops the affine momentum */
+        double Q[9];
+        for (int a = 0; a < 9; a++) Q[a] = mC * C[a] - k0 * taus[a][j];
 
-            int base[3] = {0, 0, 0};
-            double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
-            for (int d = 0; d < D; d++) {
-                const double Xd = (x[d] - g->lo[d]) * inv_dx;
-                const int b = base_node(Xd);
-                fx[d] = Xd - b;
-                base[d] = b - org[d];
-                /* the stencil's 3 nodes must lie in the 6-node tile: mpm_sort's clamp_to_grid */
-                HEARTH_ASSERT(base[d] >= 0 && base[d] <= GRID_T - 3);
-                bspline_weights(fx[d], w[d], dw);
-            }
-            const double mv0 = m * v[0], mv1 = m * v[1], mv2 = m * v[2];
-            /* heat (eq. 17, weighted by heat capacity m alpha so energy is conserved across materials) */
-            const double hc = HEAT ? m * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = HEAT ? hc * Tcol[i] : 0.0;
-            const double vi = J * V0[i];
-            if (HEAT || WATER) vol[i] = vi; /* for transport.c, water_take and the volume channel */
-            /* water mass and capacity rho_0^w J V_0 (eq. 15, 18) */
-            const double mw = WATER ? Wcol[i] : 0.0, cap = WATER ? s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * J * V0[i] : 0.0;
-            for (int a = 0; a < 3; a++) {
-                /* the volume weighs in as (V w_a) w_b w_c, the order of the pass it replaced: the same bits */
-                const double d0 = (a - fx[0]) * dx, va = vi * w[0][a];
-                for (int b = 0; b < 3; b++) {
-                    const double d1 = (b - fx[1]) * dx, wab = w[0][a] * w[1][b], vab = va * w[1][b];
-                    if (D == 2) {
-                        const int t = (base[0] + a) * GRID_T + (base[1] + b);
-                        tile[t] += wab * m;
-                        tile[TN + t] += wab * (mv0 + Q[0] * d0 + Q[1] * d1);
-                        tile[2 * TN + t] += wab * (mv1 + Q[3] * d0 + Q[4] * d1);
+        int base[3] = {0, 0, 0};
+        double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
+        for (int d = 0; d < D; d++) {
+            const double Xd = (x[d] - g->lo[d]) * inv_dx;
+            const int b = base_node(Xd);
+            fx[d] = Xd - b;
+            base[d] = b - org[d];
+            /* the stencil's 3 nodes must lie in the 6-node tile: mpm_sort's clamp_to_grid */
+            HEARTH_ASSERT(base[d] >= 0 && base[d] <= GRID_T - 3);
+            bspline_weights(fx[d], w[d], dw);
+        }
+        const double mv0 = m * v[0], mv1 = m * v[1], mv2 = m * v[2];
+        /* heat (eq. 17, weighted by heat capacity m alpha so energy is conserved across materials) */
+        const double hc = HEAT ? m * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = HEAT ? hc * Tcol[i] : 0.0;
+        const double vi = J * V0[i];
+        if (HEAT || WATER) vol[i] = vi; /* for transport.c, water_take and the volume channel */
+        /* water mass and capacity rho_0^w J V_0 (eq. 15, 18) */
+        const double mw = WATER ? Wcol[i] : 0.0, cap = WATER ? s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * J * V0[i] : 0.0;
+        for (int a = 0; a < 3; a++) {
+            /* the volume weighs in as (V w_a) w_b w_c, the order of the pass it replaced: the same bits */
+            const double d0 = (a - fx[0]) * dx, va = vi * w[0][a];
+            for (int b = 0; b < 3; b++) {
+                const double d1 = (b - fx[1]) * dx, wab = w[0][a] * w[1][b], vab = va * w[1][b];
+                if (D == 2) {
+                    const int t = (base[0] + a) * GRID_T + (base[1] + b);
+                    tile[t] += wab * m;
+                    tile[TN + t] += wab * (mv0 + Q[0] * d0 + Q[1] * d1);
+                    tile[2 * TN + t] += wab * (mv1 + Q[3] * d0 + Q[4] * d1);
+                    if (HEAT) {
+                        tile[P2G_HC * TN + t] += wab * hc;
+                        tile[P2G_T * TN + t] += wab * hct;
+                    }
+                    if (WATER) {
+                        tile[P2G_MW * TN + t] += wab * mw;
+                        tile[P2G_SW * TN + t] += wab * cap;
+                    }
+                    if (HEAT || WATER) tile[P2G_V * TN + t] += vab;
+                } else {
+                    for (int c = 0; c < 3; c++) {
+                        const double d2 = (c - fx[2]) * dx, wt = wab * w[2][c];
+                        const int t = ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + c);
+                        tile[t] += wt * m;
+                        tile[TN + t] += wt * (mv0 + Q[0] * d0 + Q[1] * d1 + Q[2] * d2);
+                        tile[2 * TN + t] += wt * (mv1 + Q[3] * d0 + Q[4] * d1 + Q[5] * d2);
+                        tile[3 * TN + t] += wt * (mv2 + Q[6] * d0 + Q[7] * d1 + Q[8] * d2);
                         if (HEAT) {
-                            tile[P2G_HC * TN + t] += wab * hc;
-                            tile[P2G_T * TN + t] += wab * hct;
+                            tile[P2G_HC * TN + t] += wt * hc;
+                            tile[P2G_T * TN + t] += wt * hct;
                         }
                         if (WATER) {
-                            tile[P2G_MW * TN + t] += wab * mw;
-                            tile[P2G_SW * TN + t] += wab * cap;
+                            tile[P2G_MW * TN + t] += wt * mw;
+                            tile[P2G_SW * TN + t] += wt * cap;
                         }
-                        if (HEAT || WATER) tile[P2G_V * TN + t] += vab;
-                    } else {
-                        for (int c = 0; c < 3; c++) {
-                            const double d2 = (c - fx[2]) * dx, wt = wab * w[2][c];
-                            const int t = ((base[0] + a) * GRID_T + (base[1] + b)) * GRID_T + (base[2] + c);
-                            tile[t] += wt * m;
-                            tile[TN + t] += wt * (mv0 + Q[0] * d0 + Q[1] * d1 + Q[2] * d2);
-                            tile[2 * TN + t] += wt * (mv1 + Q[3] * d0 + Q[4] * d1 + Q[5] * d2);
-                            tile[3 * TN + t] += wt * (mv2 + Q[6] * d0 + Q[7] * d1 + Q[8] * d2);
-                            if (HEAT) {
-                                tile[P2G_HC * TN + t] += wt * hc;
-                                tile[P2G_T * TN + t] += wt * hct;
-                            }
-                            if (WATER) {
-                                tile[P2G_MW * TN + t] += wt * mw;
-                                tile[P2G_SW * TN + t] += wt * cap;
-                            }
-                            if (HEAT || WATER) tile[P2G_V * TN + t] += vab * w[2][c];
-                        }
+                        if (HEAT || WATER) tile[P2G_V * TN + t] += vab * w[2][c];
                     }
                 }
             }
-            if (MIRROR && near_face) {
-                double tau[9];
-                for (int a = 0; a < 9; a++) tau[a] = taus[a][i - i0];
-                mpm_p2g_mirror(s, D, x, tau, k0, pb.block, tile);
-            }
+        }
+        if (MIRROR && near_face) {
+            double tau[9];
+            for (int a = 0; a < 9; a++) tau[a] = taus[a][j];
+            mpm_p2g_mirror(s, D, x, tau, k0, pb.block, tile);
         }
     }
 
