@@ -562,23 +562,32 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
     const int lame_uniform = !b->p_col[P_E] && !b->p_col[P_NU];
     double mu = 0, lambda = 0;
     if (lame_uniform) hearth_lame(b->p[P_E], b->p[P_NU], &mu, &lambda);
+    /* the column pointers in locals: the call below is opaque, so b's would be loaded again per point */
+    const double *gv[9], *pc[P_COUNT];
+    double *tc[9];
+    for (int c = 0; c < 9; c++) gv[c] = b->grad_v[c], tc[c] = tau[c];
+    for (int v = 0; v < nv; v++) pc[v] = b->p_col[vk[v]];
+    double *const state = b->state;
+    const double *const T = b->temperature, *const P = b->porosity;
+    const int stride = b->state_stride, dim = b->dim;
+    const double dt = b->dt;
     int bad = 0;
     for (int j = 0; j < n; j++) {
         hearth_point pt; /* F is read through J only (stress_law) */
-        for (int c = 0; c < 9; c++) pt.grad_v[c] = b->grad_v[c][j];
-        for (int v = 0; v < nv; v++) q[vk[v]] = b->p_col[vk[v]][j];
+        for (int c = 0; c < 9; c++) pt.grad_v[c] = gv[c][j];
+        for (int v = 0; v < nv; v++) q[vk[v]] = pc[v][j];
         pt.p = q;
-        pt.dt = b->dt;
-        pt.state = b->state + (size_t)j * b->state_stride;
-        pt.temperature = b->temperature ? b->temperature[j] : NAN;
-        pt.porosity = b->porosity ? b->porosity[j] : NAN;
+        pt.dt = dt;
+        pt.state = state + (size_t)j * stride;
+        pt.temperature = T ? T[j] : NAN;
+        pt.porosity = P ? P[j] : NAN;
         pt.saturation = NAN;
-        pt.dim = b->dim;
+        pt.dim = dim;
         if (!lame_uniform) hearth_lame(q[P_E], q[P_NU], &mu, &lambda);
         double t[9];
         code[j] = stress_law(&pt, J[j], mu, lambda, t);
         bad += code[j] != 0;
-        for (int c = 0; c < 9; c++) tau[c][j] = t[c];
+        for (int c = 0; c < 9; c++) tc[c][j] = t[c];
     }
     return bad;
 }
