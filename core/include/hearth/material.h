@@ -86,8 +86,8 @@
  *    operations, but not calls such as log, so leave those in their own
  *    scalar loop. MPM's P2G calls stress_block when the plugin has one, for
  *    runs of up to HEARTH_BLOCK_MAX consecutive particles of one material,
- *    and stress for the rest (a mixture's particles; a point whose F failed
- *    is in no run); everything else (SPH, probes, the guard, the rheometer)
+ *    and stress for the rest (a mixture's particles, a material with more
+ *    than 8 parameters on curves; a point whose F failed is in no run); everything else (SPH, probes, the guard, the rheometer)
  *    calls stress. The environment variable HEARTH_PLUGIN_NO_BATCH=1, set
  *    before a plugin is loaded, makes the core ignore stress_block (the same
  *    results, one call per point), for comparing the two in a scene.
