@@ -137,6 +137,21 @@ batch_scene_matches_one_point)
     [ "$(grep '^mismatch' batched.txt)" != "$(grep '^mismatch' out.txt)" ] ||
         fail "batch_mismatch gave the same hash both ways: HEARTH_PLUGIN_NO_BATCH did not switch the path"
     ;;
+plugin_point_dim_filled)
+    # <hearth/material.h> rule 8: the point's dim is the scene's, on the batched path and the one-point
+    # path (tests/plugins/point_fields.c's point_dim fails with code 3 on another value)
+    export HEARTH_PLUGIN_PATH="$HEARTH_PLUGIN_PATH:$HEARTH_TEST_PLUGIN_DIR"
+    for nb in "" 1; do
+        for d in 2 3; do
+            HEARTH_PLUGIN_NO_BATCH=$nb run point_dim.lua --set dim=$d --set expect=$d
+            expect_rc 0 "dim $d (HEARTH_PLUGIN_NO_BATCH=$nb)"
+            has out.txt "stepped" "dim $d"
+        done
+        HEARTH_PLUGIN_NO_BATCH=$nb run point_dim.lua --set dim=2 --set expect=3
+        expect_rc 3 "a 2D scene's points reporting 3 (HEARTH_PLUGIN_NO_BATCH=$nb)"
+        has err.txt "point's dim is not the parameter dim" "the guard names the plugin's code"
+    done
+    ;;
 lua_determinism)
     hashes=()
     for i in 1 2 3; do
