@@ -25,7 +25,10 @@
 #define RUN_MAX_VARYING 8
 
 /* What P2G did after the plugin's stress, for one point: the next step's
- * wave speed, the viscosity, and the core's terms (the door's second half). */
+ * wave speed, the viscosity, and the core's terms (the door's second half).
+ * The limits come from the state the plugin just wrote and the parameters it
+ * used: here both are in cache, and G2P need not evaluate the temperature
+ * curves a second time. */
 static inline void run_after(const material_slot *ms, hearth_point *pt, const material_env *env, double tau[9],
                              double *wave, double *numax) {
     const hearth_material *m = ms->m;
