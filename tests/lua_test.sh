@@ -151,6 +151,12 @@ plugin_point_dim_filled)
         expect_rc 3 "a 2D scene's points reporting 3 (HEARTH_PLUGIN_NO_BATCH=$nb)"
         has err.txt "point's dim is not the parameter dim" "the guard names the plugin's code"
     done
+    for d in 2 3; do
+        run point_dim.lua --set dim=$d --set expect=$d --set solver=sph
+        expect_rc 0 "SPH, dim $d"
+    done
+    run point_dim.lua --set dim=2 --set expect=3 --set solver=sph
+    expect_rc 3 "an SPH 2D scene's points reporting 3"
     ;;
 lua_determinism)
     hashes=()

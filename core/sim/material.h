@@ -189,9 +189,8 @@ typedef struct material_env {
     const double *gas;         /* n^g (mol/m^3): gas pressure, eq. 13: tau_g = -n^g R theta / n^p I */
     const double *saturation0; /* s_0: water pressure, eq. 14: tau_w = -J c (s - s_0) I, when water_stiffness c > 0 */
     int index;
-    /* The point's hearth_point.dim (<hearth/material.h> rule 8): 2 for MPM's and SPH's 2D scenes; 0 (a
-     * caller that does not say: the probes, the guard, the check, the rheometer) passes 3, which gives a
-     * plane-strain point the same stress (the rule asks the plugin for the 3x3 formula's). */
+    /* The point's hearth_point.dim (<hearth/material.h> rule 8): the scene's (MPM, SPH, the probes, the
+     * guard); 0 (a caller without a scene: the check, the rheometer) passes 3. */
     int dim;
 } material_env;
 
