@@ -305,9 +305,8 @@ static double solve_gamma(double Pm, double a, double qt, double b, double ty2, 
  * *ev = tr eps_tr and the squared norm s2 of its deviator e. Returns 1 on
  * plastic flow, with *ev the returned volume part and *ratio the deviator's
  * scale (eps = ev/3 I + ratio e, header); 0 inside the surface. */
-static int return_map(const double *prm, double M, double dt, double s2, double *ev, double *ratio) {
-    double mu, lambda;
-    hearth_lame(prm[P_E], prm[P_NU], &mu, &lambda);
+static int return_map(const double *prm, double mu, double lambda, double M, double dt, double s2, double *ev,
+                      double *ratio) {
     const double K = lambda + 2.0 / 3.0 * mu;
     const double pt = -K * *ev; /* p = -tr(tau)/3 = -K tr(eps) */
     const double qt = 2 * mu * sqrt(1.5 * s2);
@@ -429,9 +428,7 @@ static void init(const double *p, double *state) {
 
 /* The Kirchhoff stress tau = lambda ev I + 2 mu eps of eps = ev/3 I + ratio e
  * (e the trial deviator as a matrix, the return's scale ratio). */
-static void hencky_tau(const double *prm, double ev, const double e[9], double ratio, double tau[9]) {
-    double mu, lambda;
-    hearth_lame(prm[P_E], prm[P_NU], &mu, &lambda);
+static void hencky_tau(double mu, double lambda, double ev, const double e[9], double ratio, double tau[9]) {
     for (int i = 0; i < 9; i++) tau[i] = 2 * mu * ratio * e[i];
     const double iso = lambda * ev + 2 * mu * ev / 3;
     tau[0] += iso, tau[4] += iso, tau[8] += iso;
@@ -441,7 +438,7 @@ static void hencky_tau(const double *prm, double ev, const double e[9], double r
  * eigenvalue m = tr(B)/3 > 0 and |B/m - I| <= NEAR. log B = log(m) I +
  * log(B/m): B/m is near I whatever the volume change, and this needs no
  * cube root of det B. */
-static int stress_near(hearth_point *pt, double m, const double B[9], double J, double tau[9]) {
+static int stress_near(hearth_point *pt, double mu, double lambda, double m, const double B[9], double J, double tau[9]) {
     const double *prm = pt->p;
     double *st = pt->state;
     double D[9], L[9], e[9];
@@ -453,7 +450,7 @@ static int stress_near(hearth_point *pt, double m, const double B[9], double J, 
     const double ev0 = 1.5 * log(m) + 0.5 * trL;                              /* tr eps = 1/2 tr log B */
     double ev = ev0, ratio = 1;
     if (pt->dt > 0) {
-        if (return_map(prm, porosity_coefficient(pt->porosity), pt->dt, norm2_9(e), &ev, &ratio)) {
+        if (return_map(prm, mu, lambda, porosity_coefficient(pt->porosity), pt->dt, norm2_9(e), &ev, &ratio)) {
             ev = cap_volume(prm, pt->porosity, st[S_JP], J, ev0, ev);
             double X[9], E[9], Bn[9];
             for (int i = 0; i < 9; i++) X[i] = 2 * ratio * e[i];
@@ -468,13 +465,14 @@ static int stress_near(hearth_point *pt, double m, const double B[9], double J, 
         st[S_JP] = J / exp(ev); /* J^P = J / J^E */
         if (prm[P_FRACTURE_STRAIN] > 0) fracture_update(prm, st, ratio * dev_max_eigen(e)); /* its trig only when asked */
     }
-    hencky_tau(prm, ev, e, ratio, tau);
+    hencky_tau(mu, lambda, ev, e, ratio, tau);
     return 0;
 }
 
-static int stress(hearth_point *pt, double tau[9]) {
+/* The law at one point, given J = det F (the only way it reads F) and the
+ * Lame constants of its parameters: stress and stress_block share it. */
+static int stress_law(hearth_point *pt, double J, double mu, double lambda, double tau[9]) {
     const double *prm = pt->p;
-    const double J = hearth_t3_det(pt->F);
     if (!(J > 0) || !isfinite(J)) return E_INVERTED;
     double *st = pt->state;
     for (int i = 0; i < S_COUNT; i++)
@@ -503,7 +501,7 @@ static int stress(hearth_point *pt, double tau[9]) {
     if (!plane) {
         const double m = (B[0] + B[4] + B[8]) / 3;
         if (m > 0 && norm2_9(B) / (m * m) - 3 <= NEAR * NEAR) /* |B/m - I|^2 = |B/m|^2 - 3, as tr(B/m) = 3 */
-            return stress_near(pt, m, B, J, tau);
+            return stress_near(pt, mu, lambda, m, B, J, tau);
     }
     double l[3], Q[9], eps[3];
     if (plane) eigen_plane(B, l, Q);
@@ -518,7 +516,7 @@ static int stress(hearth_point *pt, double tau[9]) {
         s2 += e[i] * e[i];
     }
     if (pt->dt > 0) {
-        if (return_map(prm, porosity_coefficient(n), pt->dt, s2, &ev, &ratio)) {
+        if (return_map(prm, mu, lambda, porosity_coefficient(n), pt->dt, s2, &ev, &ratio)) {
             ev = cap_volume(prm, n, st[S_JP], J, ev0, ev);
             double d[3];
             for (int i = 0; i < 3; i++) d[i] = exp(2 * (ev / 3 + ratio * e[i]));
@@ -530,14 +528,69 @@ static int stress(hearth_point *pt, double tau[9]) {
         st[S_JP] = J / exp(ev); /* J^P = J / J^E (a crack opens as plastic volume: it reads as pores) */
         fracture_update(prm, st, ratio * fmax(e[0], fmax(e[1], e[2])));
     }
-    double mu, lambda;
-    hearth_lame(prm[P_E], prm[P_NU], &mu, &lambda);
     const double tv = lambda * ev;
     double d[3];
     for (int i = 0; i < 3; i++) d[i] = tv + 2 * mu * (ev / 3 + ratio * e[i]);
     if (plane) from_eigen_plane(Q, d, tau);
     else hearth_sym_from_eigen(Q, d, tau);
     return 0;
+}
+
+static int stress(hearth_point *pt, double tau[9]) {
+    double mu, lambda;
+    hearth_lame(pt->p[P_E], pt->p[P_NU], &mu, &lambda);
+    return stress_law(pt, hearth_t3_det(pt->F), mu, lambda, tau);
+}
+
+/* The batched stress (<hearth/material.h> rule 7): the same bits as stress,
+ * point by point. det F runs across the block (the compiler vectorises it,
+ * hearth_t3_det's arithmetic in its order), and the Lame constants of a
+ * block whose E and nu are uniform (no curve on them) are computed once. The
+ * return map itself branches per point (the near path, the eigen path, the
+ * Newton iterations of the multiplier), so it stays a loop over points. */
+static int stress_block(const hearth_block *b, double *const tau[9], int *code) {
+    const int n = b->n;
+    const double *const *F = b->F;
+    double J[HEARTH_BLOCK_MAX], q[P_COUNT];
+    for (int j = 0; j < n; j++)
+        J[j] = F[0][j] * (F[4][j] * F[8][j] - F[5][j] * F[7][j]) - F[1][j] * (F[3][j] * F[8][j] - F[5][j] * F[6][j]) +
+               F[2][j] * (F[3][j] * F[7][j] - F[4][j] * F[6][j]);
+    int vk[P_COUNT], nv = 0; /* the parameters that vary by point (curves) */
+    for (int k = 0; k < P_COUNT; k++) {
+        q[k] = b->p[k];
+        if (b->p_col[k]) vk[nv++] = k;
+    }
+    const int lame_uniform = !b->p_col[P_E] && !b->p_col[P_NU];
+    double mu = 0, lambda = 0;
+    if (lame_uniform) hearth_lame(b->p[P_E], b->p[P_NU], &mu, &lambda);
+    /* the column pointers in locals: the call below is opaque, so b's would be loaded again per point */
+    const double *gv[9], *pc[P_COUNT];
+    double *tc[9];
+    for (int c = 0; c < 9; c++) gv[c] = b->grad_v[c], tc[c] = tau[c];
+    for (int v = 0; v < nv; v++) pc[v] = b->p_col[vk[v]];
+    double *const state = b->state;
+    const double *const T = b->temperature, *const P = b->porosity;
+    const int stride = b->state_stride, dim = b->dim;
+    const double dt = b->dt;
+    int bad = 0;
+    for (int j = 0; j < n; j++) {
+        hearth_point pt; /* F is read through J only (stress_law) */
+        for (int c = 0; c < 9; c++) pt.grad_v[c] = gv[c][j];
+        for (int v = 0; v < nv; v++) q[vk[v]] = pc[v][j];
+        pt.p = q;
+        pt.dt = dt;
+        pt.state = state + (size_t)j * stride;
+        pt.temperature = T ? T[j] : NAN;
+        pt.porosity = P ? P[j] : NAN;
+        pt.saturation = NAN;
+        pt.dim = dim;
+        if (!lame_uniform) hearth_lame(q[P_E], q[P_NU], &mu, &lambda);
+        double t[9];
+        code[j] = stress_law(&pt, J[j], mu, lambda, t);
+        bad += code[j] != 0;
+        for (int c = 0; c < 9; c++) tc[c][j] = t[c];
+    }
+    return bad;
 }
 
 /* Small-strain P-wave speed sqrt((lambda + 2 mu)/rho): the Hencky law's
@@ -587,6 +640,7 @@ static const hearth_material material = {
     .describe_error = describe_error,
     .plastic_J = plastic_J,
     .damage = damage,
+    .stress_block = stress_block,
 };
 
 HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void); /* for -Wmissing-prototypes */

@@ -54,6 +54,8 @@ static void init(const double *p, double *state) {
  *   pt->dt      step (s); 0 means "evaluate only, do not advance state"
  *   pt->p       the parameters above; pt->state your state_size doubles
  *   pt->temperature etc.: NaN unless `needs` asks for them.
+ *   pt->dim     2 or 3; 2 is plane strain (F[2] = F[5] = F[6] = F[7] = 0),
+ *               which a law may use to skip zero terms (set HEARTH_NEEDS_DIM).
  * Write all nine entries of the Kirchhoff stress tau = J sigma (Pa), which
  * must be symmetric. Return 0, or a positive code that describe_error explains:
  * the core's guard stops the run and shows that text. */
@@ -73,6 +75,49 @@ static int stress(hearth_point *pt, double tau[9]) {
             tau[3 * r + c] = mu * (b - (r == c)) + (r == c ? vol : 0.0);
         }
     return 0;
+}
+
+/* Optional: the same stress for a block of points at once (<hearth/material.h>
+ * rule 7), which the core calls instead of stress when it is there. The block
+ * holds columns: entry c of point j's F is b->F[c][j]. It must give the same
+ * bits as stress, point by point (`hearth plugin check` compares them), so
+ * each point's arithmetic below is stress's, in the same order; what changes
+ * is that the loops run across points, which the compiler vectorises (log is
+ * a call, so it has a scalar loop of its own), and that the Lame constants of
+ * parameters the whole block shares are computed once. A plugin that only
+ * wants simplicity leaves this out. */
+static int stress_block(const hearth_block *b, double *const tau[9], int *code) {
+    const int n = b->n;
+    const double *const *F = b->F;
+    double J[HEARTH_BLOCK_MAX], vol[HEARTH_BLOCK_MAX], mu[HEARTH_BLOCK_MAX], lambda[HEARTH_BLOCK_MAX];
+    for (int j = 0; j < n; j++)
+        J[j] = F[0][j] * (F[4][j] * F[8][j] - F[5][j] * F[7][j]) - F[1][j] * (F[3][j] * F[8][j] - F[5][j] * F[6][j]) +
+               F[2][j] * (F[3][j] * F[7][j] - F[4][j] * F[6][j]);
+    if (!b->p_col[P_E] && !b->p_col[P_NU]) { /* uniform: once for the block */
+        double m, l;
+        hearth_lame(b->p[P_E], b->p[P_NU], &m, &l);
+        for (int j = 0; j < n; j++) mu[j] = m, lambda[j] = l;
+    } else {
+        for (int j = 0; j < n; j++) hearth_lame(hearth_block_param(b, P_E, j), hearth_block_param(b, P_NU, j), &mu[j], &lambda[j]);
+    }
+    int bad = 0;
+    for (int j = 0; j < n; j++) { /* scalar: log is a call */
+        code[j] = !(J[j] > 0);
+        bad += code[j];
+        vol[j] = code[j] ? 0.0 : lambda[j] * log(J[j]);
+    }
+    /* tau = mu (F F^T - I) + lambda ln(J) I, as stress writes it (x + 0.0 included: it turns -0 into +0) */
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) {
+            const double *Fr0 = F[3 * r], *Fr1 = F[3 * r + 1], *Fr2 = F[3 * r + 2];
+            const double *Fc0 = F[3 * c], *Fc1 = F[3 * c + 1], *Fc2 = F[3 * c + 2];
+            double *t = tau[3 * r + c];
+            if (r == c)
+                for (int j = 0; j < n; j++) t[j] = mu[j] * ((Fr0[j] * Fc0[j] + Fr1[j] * Fc1[j] + Fr2[j] * Fc2[j]) - 1) + vol[j];
+            else
+                for (int j = 0; j < n; j++) t[j] = mu[j] * ((Fr0[j] * Fc0[j] + Fr1[j] * Fc1[j] + Fr2[j] * Fc2[j]) - 0) + 0.0;
+        }
+    return bad;
 }
 
 /* Upper bound of the wave speed (m/s) for the CFL step limit: here the
@@ -97,8 +142,8 @@ static const char *describe_error(int code) {
 /* ---- the descriptor -------------------------------------------------------
  * Static, never freed. abi_version, struct_size and real_size let the loader
  * refuse a plugin built against another <hearth/material.h> or another float
- * width before touching anything else. Optional callbacks (blend, plastic_J)
- * left out are NULL. */
+ * width before touching anything else. Optional callbacks (blend, plastic_J,
+ * viscosity, damage, stress_block) left out are NULL. */
 static const hearth_material material = {
     .abi_version = HEARTH_MATERIAL_ABI,
     .struct_size = sizeof(hearth_material),
@@ -113,6 +158,7 @@ static const hearth_material material = {
     .stress = stress,
     .wave_speed = wave_speed,
     .describe_error = describe_error,
+    .stress_block = stress_block, /* optional: leave it out and the core calls stress per point */
 };
 
 /* The one exported symbol. Declared before it is defined only to keep

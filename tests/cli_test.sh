@@ -230,7 +230,8 @@ cli_plugins_list)
     ;;
 cli_plugin_check_exit)
     "$hearth" plugin check "$HEARTH_PLUGIN_PATH/hearth_elastic.so" >"$tmp/ok.txt" || fail "elastic should pass: $(cat "$tmp/ok.txt")"
-    [ "$(grep -c PASS "$tmp/ok.txt")" -eq 5 ] || fail "expected 5 PASS lines"
+    [ "$(grep -c PASS "$tmp/ok.txt")" -eq 6 ] || fail "expected 6 PASS lines (elastic has stress_block: the batched check too)"
+    grep -q "^batched *PASS" "$tmp/ok.txt" || fail "elastic: the batched check should pass"
     "$hearth" plugin check "$HEARTH_TEST_PLUGIN_DIR/hearth_asym.so" >"$tmp/bad.txt" && fail "asym should fail"
     grep -q "symmetric *FAIL" "$tmp/bad.txt" || fail "asym: symmetric check should fail"
     "$hearth" plugin check /nonexistent/hearth_x.so 2>"$tmp/err.txt"; [ $? -eq 1 ] || fail "missing file exit"

@@ -117,6 +117,47 @@ lua_error_messages)
     check err_runtime.lua 3 "attempt to call a nil value (field 'missing_function')" "stack traceback" \
         "err_runtime.lua:5: in main chunk"
     ;;
+batch_scene_matches_one_point)
+    # <hearth/material.h> rule 7: scenes of plugins with stress_block (elastic, cam_clay_dough; 2D and 3D;
+    # a temperature curve on E; the dough with every field; a drying crust: water, three moisture curves,
+    # damage) give the same particle state bit for bit
+    # with the batched call and with HEARTH_PLUGIN_NO_BATCH=1 (one call per point). The last scene's
+    # plugin (tests/plugins/batch_mismatch.c) reorders one product in its stress_block: its hash must
+    # differ, or the switch did not switch.
+    export HEARTH_PLUGIN_PATH="$HEARTH_PLUGIN_PATH:$HEARTH_TEST_PLUGIN_DIR"
+    run batch_scenes.lua --threads 2 --set mismatch=1
+    expect_rc 0 "batched run"
+    mv out.txt batched.txt
+    HEARTH_PLUGIN_NO_BATCH=1 run batch_scenes.lua --threads 2 --set mismatch=1
+    expect_rc 0 "one-point run"
+    [ "$(grep -c '^[a-z0-9_]* [0-9]* [0-9a-f]\{16\}$' batched.txt)" -eq 7 ] || fail "expected 7 scene hashes: $(cat batched.txt)"
+    grep -v '^mismatch' batched.txt >a.txt
+    grep -v '^mismatch' out.txt >b.txt
+    cmp -s a.txt b.txt || fail "batched and one-point scenes differ: $(diff a.txt b.txt)"
+    [ "$(grep '^mismatch' batched.txt)" != "$(grep '^mismatch' out.txt)" ] ||
+        fail "batch_mismatch gave the same hash both ways: HEARTH_PLUGIN_NO_BATCH did not switch the path"
+    ;;
+plugin_point_dim_filled)
+    # <hearth/material.h> rule 8: the point's dim is the scene's, on the batched path and the one-point
+    # path (tests/plugins/point_fields.c's point_dim fails with code 3 on another value)
+    export HEARTH_PLUGIN_PATH="$HEARTH_PLUGIN_PATH:$HEARTH_TEST_PLUGIN_DIR"
+    for nb in "" 1; do
+        for d in 2 3; do
+            HEARTH_PLUGIN_NO_BATCH=$nb run point_dim.lua --set dim=$d --set expect=$d
+            expect_rc 0 "dim $d (HEARTH_PLUGIN_NO_BATCH=$nb)"
+            has out.txt "stepped" "dim $d"
+        done
+        HEARTH_PLUGIN_NO_BATCH=$nb run point_dim.lua --set dim=2 --set expect=3
+        expect_rc 3 "a 2D scene's points reporting 3 (HEARTH_PLUGIN_NO_BATCH=$nb)"
+        has err.txt "point's dim is not the parameter dim" "the guard names the plugin's code"
+    done
+    for d in 2 3; do
+        run point_dim.lua --set dim=$d --set expect=$d --set solver=sph
+        expect_rc 0 "SPH, dim $d"
+    done
+    run point_dim.lua --set dim=2 --set expect=3 --set solver=sph
+    expect_rc 3 "an SPH 2D scene's points reporting 3"
+    ;;
 lua_determinism)
     hashes=()
     for i in 1 2 3; do

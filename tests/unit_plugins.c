@@ -155,9 +155,10 @@ TEST(plugin_load_cached) {
     CHECK(s.newtonian == 1);
 }
 
-enum { N_CHECKS = 5 };
+/* "batched" (the last) is reported only for a plugin with stress_block */
+enum { N_CHECKS = 6, N_ALWAYS = 5, C_BATCHED = 5 };
 static const char *const check_names[N_CHECKS] = {"rest", "symmetric", "frame_indifference", "extremes",
-                                                  "wave_speed"};
+                                                  "wave_speed", "batched"};
 
 typedef struct report {
     int seen[N_CHECKS], passed[N_CHECKS], other;
@@ -182,7 +183,8 @@ static int run_check(const char *path, report *r) {
     memset(r, 0, sizeof *r);
     int n = hearth_plugin_check(path, note_check, r, &err);
     if (n < 0) fprintf(stderr, "%s\n", err.msg);
-    for (int i = 0; i < N_CHECKS; i++) CHECK(r->seen[i] == 1);
+    for (int i = 0; i < N_ALWAYS; i++) CHECK(r->seen[i] == 1);
+    CHECK(r->seen[C_BATCHED] <= 1);
     CHECK(r->other == 0);
     return n;
 }
@@ -209,6 +211,36 @@ TEST(plugin_check_catches_asym) {
     CHECK(r.passed[0]);  /* rest: k (F - I) vanishes at F = I */
     CHECK(!r.passed[1]); /* symmetric */
     CHECK_STR_CONTAINS(r.detail[1], "|tau - tau^T|");
+}
+
+/* <hearth/material.h> rule 7: the batched stress of both in-tree plugins that have one agrees with their
+ * one-point stress bit for bit on the check's battery, and a stress_block that reorders one product
+ * (batch_mismatch.c: mu b - mu for mu (b - 1)) fails it, naming the block and the point. */
+TEST(plugin_check_batched_matches) {
+    const char *names[] = {"elastic", "cam_clay_dough"};
+    for (int k = 0; k < 2; k++) {
+        hearth_error err = {0};
+        const hearth_plugin *pl = hearth_plugin_load(names[k], &err);
+        if (!pl) fprintf(stderr, "%s\n", err.msg);
+        CHECK(pl != NULL);
+        if (!pl) continue;
+        CHECK(hearth_plugin_material(pl)->stress_block != NULL);
+        report r;
+        CHECK(run_check(hearth_plugin_file(pl), &r) == 0);
+        CHECK(r.seen[C_BATCHED] == 1);
+        CHECK(r.passed[C_BATCHED]);
+        CHECK_STR_CONTAINS(r.detail[C_BATCHED], "agree bit for bit");
+    }
+    char path[1024];
+    if (!fixture(path, sizeof path, "batch_mismatch")) return;
+    report r;
+    CHECK(run_check(path, &r) == 1);
+    for (int i = 0; i < N_ALWAYS; i++) CHECK(r.passed[i]); /* the one-point law is elastic's and sound */
+    CHECK(r.seen[C_BATCHED] == 1);
+    CHECK(!r.passed[C_BATCHED]);
+    CHECK_STR_CONTAINS(r.detail[C_BATCHED], "block 0 (dim 3, 64 points");
+    CHECK_STR_CONTAINS(r.detail[C_BATCHED], "point ");
+    CHECK_STR_CONTAINS(r.detail[C_BATCHED], "one-point");
 }
 
 /* Not in the required list: the check's own failure paths. A stress code
@@ -281,7 +313,7 @@ static hearth_material good(void) {
     g_params[0] = (hearth_param){"density", "kg/m^3", NULL, 1000, 1, 1e4};
     g_params[1] = (hearth_param){"E", "Pa", "stiffness", 1e4, 1, 1e6};
     return (hearth_material){HEARTH_MATERIAL_ABI, sizeof(hearth_material), sizeof(double), "good", NULL,
-                             g_params, 2, 0, 0, d_init, d_stress, d_wave, NULL, d_describe, d_plastic_J, NULL, NULL};
+                             g_params, 2, 0, 0, d_init, d_stress, d_wave, NULL, d_describe, d_plastic_J, NULL, NULL, NULL};
 }
 
 static void refused(const hearth_material *m, const char *words) {
@@ -419,6 +451,6 @@ TEST(plugin_reserved_names_documented) {
 
 TEST_MAIN(T(plugin_missing_file), T(plugin_not_shared_object), T(plugin_no_entry), T(plugin_wrong_abi),
           T(plugin_null_callback), T(plugin_bad_default), T(plugin_load_cached), T(plugin_check_builtin),
-          T(plugin_check_catches_asym), T(plugin_check_reports_codes), T(plugin_load_nomem),
+          T(plugin_check_catches_asym), T(plugin_check_batched_matches), T(plugin_check_reports_codes), T(plugin_load_nomem),
           T(plugin_descriptor_rules), T(plugin_wave_corners), T(plugin_reserved_name),
           T(plugin_reserved_names_documented))

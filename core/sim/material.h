@@ -11,7 +11,8 @@
  * The door. Every caller that asks a
  * plugin for a stress (MPM's P2G, SPH's stress phase, the probes, the guard's
  * cause attribution, `hearth plugin check` and the rheometer) goes through
- * material_point_eval() or its two halves, so the fields the point carries, the recording of the plugin call (plugins.h) and
+ * material_point_eval() or its two halves (P2G through material_run_eval(),
+ * which calls them, or the plugin's stress_block, for a run of particles), so the fields the point carries, the recording of the plugin call (plugins.h) and
  * the core's coupling stresses are written once.
  *
  * The caller fills the point's kinematics and parameters (grad_v, F, dt, p,
@@ -188,6 +189,9 @@ typedef struct material_env {
     const double *gas;         /* n^g (mol/m^3): gas pressure, eq. 13: tau_g = -n^g R theta / n^p I */
     const double *saturation0; /* s_0: water pressure, eq. 14: tau_w = -J c (s - s_0) I, when water_stiffness c > 0 */
     int index;
+    /* The point's hearth_point.dim (<hearth/material.h> rule 8): the scene's (MPM, SPH, the probes, the
+     * guard); 0 (a caller without a scene: the check, the rheometer) passes 3. */
+    int dim;
 } material_env;
 
 MATERIAL_INLINE int material_finite9(const double *a) {
@@ -208,6 +212,7 @@ MATERIAL_INLINE int material_point_stress(const hearth_material *m, const double
     const unsigned fl = env->flags;
     pt->temperature = env->temperature;
     pt->saturation = env->saturation;
+    pt->dim = env->dim == 2 ? 2 : 3;
     if (fl & MATERIAL_POROSITY_PLASTIC) {
         double JP = 1.0;
         if (m->plastic_J) {
@@ -314,4 +319,37 @@ MATERIAL_INLINE int material_point_eval(const hearth_material *m, const double *
     material_point_couple(m, core, pt, env, tau);
     return code;
 }
+
+/* ---- the batched door (material_batch.c) -----------------------------------
+ * MPM's P2G hands over a run of consecutive particles of one material whose F
+ * it has just advanced; the door gives each its stress, its wave speed and
+ * the core's terms, as material_point_stress and material_point_couple would,
+ * point by point. A plugin with stress_block (<hearth/material.h> rule 7) gets
+ * the run as one hearth_block; its parameters are resolved once when uniform
+ * and only the curves' parameters go in columns. A mixture's run, and any run
+ * of a plugin without stress_block, goes point by point through the same code. */
+
+/* The run: particles i0 .. i0 + n - 1 (n <= HEARTH_BLOCK_MAX), all of material mat, none pinned,
+ * each with a finite F and det F > 0. */
+typedef struct material_run {
+    int mat, i0, n;
+    int dim;
+    double dt;
+    unsigned flags;              /* MATERIAL_* for every point; the door adds the material's own */
+    /* The points' 3x3 F (at the end of the step) and velocity gradient as columns, as a hearth_block
+     * holds them: entry c (row-major) of point j is F[c][j]. The solver's scratch (P2G writes them as it
+     * advances F; a 2D store of 2x2 tensors writes plane-strain 3x3s, <hearth/material.h> rule 8). */
+    const double *F[9], *grad_v[9];
+    const double *J;             /* det F of each point (n) */
+    const double *temperature;   /* each point's (n), or NULL: NaN */
+    const double *saturation;    /* each point's (n), or NULL: NaN */
+    const double *gas, *saturation0; /* particle columns, as in material_env */
+} material_run;
+
+/* What the door gives back for each point j < n: its stress in columns, tau[c][j], with the core's terms
+ * added (zero for a point whose stress failed, MATERIAL_ZERO_FAILED being set), code[j] (0, the plugin's
+ * code or MATERIAL_NONFINITE) and wave[j], the wave speed that limits the next step (unchecked). Returns
+ * the largest kinematic viscosity (m^2/s) a point's plugin applies, 0 when none. */
+double material_run_eval(const material_table *t, const particles *ps, const material_run *r, double *const tau[9],
+                         int *code, double *wave);
 #endif

@@ -19,6 +19,7 @@
 #include "tensor.h"
 
 #define CHECK_TRIALS 20
+#define PLUGIN_CHECK_MAX_PARAMS 256
 #define CHECK_DETAIL 512
 
 typedef struct check_rig {
@@ -337,6 +338,207 @@ static void check_wave(check_rig *r) {
     check_report(r, "wave_speed", ok, detail);
 }
 
+/* ---- batched and one-point agree bit for bit (<hearth/material.h> rule 7) ---- */
+
+/* The battery's blocks: the dimension, the number of points (a full block and
+ * odd counts, for a plugin's remainder loops), dt (0: evaluate only), and
+ * whether every other parameter varies by point (a column) or all are the
+ * block's. */
+static const struct {
+    int dim, n, vary;
+    double dt;
+} batch_blocks[] = {{3, HEARTH_BLOCK_MAX, 0, 1e-3}, {3, 37, 1, 1e-3}, {2, HEARTH_BLOCK_MAX, 0, 1e-3}, {2, 29, 1, 1e-3},
+                    {3, 13, 1, 0.0}};
+enum { BATCH_NBLOCKS = sizeof batch_blocks / sizeof batch_blocks[0] };
+
+/* Point j's deformation: near I (|F - I| ~ 0.05, and a step dt grad_v ~ 0.025)
+ * for even j, far from it (~0.6 and ~0.3: stretch and shear of tens of per
+ * cent, which takes a law such as cam_clay_dough off its near-identity path)
+ * for odd j, inverted (det F < 0) for every 16th; in 2D plane strain (no
+ * out-of-plane shear, F[8] = 1). */
+static void batch_random_F(uint64_t *seed, int dim, int j, double dt, double F[9], double L[9]) {
+    const double a = j % 2 ? 0.6 : 0.05;
+    do {
+        for (int i = 0; i < 9; i++) {
+            F[i] = (i % 4 == 0) + a * (2 * check_uniform(seed) - 1);
+            L[i] = (2 * check_uniform(seed) - 1) * (dt > 0 ? 0.5 * a / dt : 10);
+        }
+        if (dim == 2) F[2] = F[5] = F[6] = F[7] = L[2] = L[5] = L[6] = L[7] = 0, F[8] = 1, L[8] = 0;
+    } while (!(t3_det(F) > 0.05));
+    if (j % 16 == 15)
+        for (int i = 0; i < 3; i++) F[i] = -F[i];
+}
+
+typedef struct batch_pts {
+    int n, dim, stride;
+    double dt;
+    double *F[9], *L[9], *T, *P, *S, *pv, *stA, *stB, *tauA, *tauB[9];
+    int *codeA, *codeB;
+} batch_pts;
+
+/* Why point j differs, into detail; 0 when both calls agree bit for bit. */
+static int batch_compare(const check_rig *r, const batch_pts *b, int blk, int j, char *detail) {
+    const int ss = r->m->state_size;
+    char where[200];
+    snprintf(where, sizeof where, "block %d (dim %d, %d points, dt %g), point %d (F[0..2] = %.17g %.17g %.17g)", blk, b->dim,
+             b->n, b->dt, j, b->F[0][j], b->F[1][j], b->F[2][j]);
+    if (b->codeA[j] != b->codeB[j]) {
+        snprintf(detail, CHECK_DETAIL, "%s: one-point stress returned code %d, stress_block code %d", where, b->codeA[j],
+                 b->codeB[j]);
+        return 1;
+    }
+    if (b->codeA[j]) return 0; /* the tau of a refused point is not read */
+    for (int c = 0; c < 9; c++) {
+        const double x = b->tauA[9 * j + c], y = b->tauB[c][j];
+        if (memcmp(&x, &y, sizeof x) != 0) {
+            snprintf(detail, CHECK_DETAIL, "%s: tau[%d] one-point %.17g, batched %.17g (differ by %.3g)", where, c, x, y, y - x);
+            return 1;
+        }
+    }
+    for (int k = 0; k < ss; k++) {
+        const double x = b->stA[(size_t)j * b->stride + k], y = b->stB[(size_t)j * b->stride + k];
+        if (memcmp(&x, &y, sizeof x) != 0) {
+            snprintf(detail, CHECK_DETAIL, "%s: state[%d] one-point %.17g, batched %.17g afterwards", where, k, x, y);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* One block of the battery: each point's state advanced by j % 4 steps of
+ * its own (one-point calls), its parameters and fields drawn, then one call
+ * of each kind on copies of the same state. Returns 1 when a point differs. */
+static int batch_block(check_rig *r, batch_pts *b, int blk, uint64_t *seed, char *detail) {
+    const hearth_material *m = r->m;
+    const int np = m->nparams, ss = m->state_size, n = b->n;
+    const unsigned needs = m->needs;
+    const double *pcolumn[PLUGIN_CHECK_MAX_PARAMS];
+    for (int k = 0; k < np; k++) pcolumn[k] = batch_blocks[blk].vary && k % 2 ? b->pv + (size_t)k * HEARTH_BLOCK_MAX : NULL;
+    check_defaults(r);
+    for (int j = 0; j < n; j++) {
+        double q[PLUGIN_CHECK_MAX_PARAMS], L[9], F[9], tau[9];
+        for (int k = 0; k < np; k++) {
+            const hearth_param *h = &m->params[k];
+            double v = h->def;
+            if (pcolumn[k]) v = fmin(h->max, fmax(h->min, v * (0.8 + 0.45 * check_uniform(seed))));
+            b->pv[(size_t)k * HEARTH_BLOCK_MAX + j] = q[k] = v;
+        }
+        b->T[j] = needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? 20 + 180 * check_uniform(seed) : NAN;
+        b->P[j] = needs & HEARTH_NEEDS_POROSITY ? 0.5 * check_uniform(seed) : NAN;
+        b->S[j] = needs & HEARTH_NEEDS_SATURATION ? check_uniform(seed) : NAN;
+        double *st = ss ? b->stA + (size_t)j * b->stride : NULL;
+        for (int k = 0; k < b->stride; k++) b->stA[(size_t)j * b->stride + k] = NAN;
+        if (st) {
+            plugin_call_enter(m, "init");
+            m->init(q, st);
+        }
+        double Fw[9];
+        t3_identity(Fw);
+        for (int w = 0; w < j % 4; w++) { /* an advanced state: a few steps of its own */
+            double A[9], Fn[9];
+            check_random_step(seed, 1e-3, L, A);
+            t3_mul(A, Fw, Fn);
+            t3_copy(Fn, Fw);
+            hearth_point pt = {.dt = 1e-3, .p = q, .state = st, .temperature = b->T[j], .porosity = b->P[j],
+                               .saturation = b->S[j], .dim = b->dim};
+            memcpy(pt.F, Fw, sizeof pt.F);
+            memcpy(pt.grad_v, L, sizeof pt.grad_v);
+            plugin_call_enter(m, "stress");
+            if (m->stress(&pt, tau)) break;
+        }
+        batch_random_F(seed, b->dim, j, b->dt, F, L);
+        for (int c = 0; c < 9; c++) b->F[c][j] = F[c], b->L[c][j] = L[c];
+    }
+    memcpy(b->stB, b->stA, sizeof(double) * (size_t)n * b->stride);
+    /* one point at a time */
+    for (int j = 0; j < n; j++) {
+        double q[PLUGIN_CHECK_MAX_PARAMS];
+        for (int k = 0; k < np; k++) q[k] = b->pv[(size_t)k * HEARTH_BLOCK_MAX + j];
+        hearth_point pt = {.dt = b->dt, .p = q, .state = ss ? b->stA + (size_t)j * b->stride : NULL, .temperature = b->T[j],
+                           .porosity = b->P[j], .saturation = b->S[j], .dim = b->dim};
+        for (int c = 0; c < 9; c++) pt.F[c] = b->F[c][j], pt.grad_v[c] = b->L[c][j];
+        for (int c = 0; c < 9; c++) b->tauA[9 * j + c] = NAN;
+        plugin_call_enter(m, "stress");
+        b->codeA[j] = m->stress(&pt, b->tauA + 9 * j);
+    }
+    /* the block */
+    double p0[PLUGIN_CHECK_MAX_PARAMS];
+    for (int k = 0; k < np; k++) p0[k] = pcolumn[k] ? NAN : b->pv[(size_t)k * HEARTH_BLOCK_MAX]; /* a column's p[k] is not read */
+    hearth_block blk_ = {.n = n, .dim = b->dim, .dt = b->dt, .p = p0, .p_col = pcolumn, .state = ss ? b->stB : NULL,
+                         .state_stride = b->stride,
+                         .temperature = needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? b->T : NULL,
+                         .porosity = needs & HEARTH_NEEDS_POROSITY ? b->P : NULL,
+                         .saturation = needs & HEARTH_NEEDS_SATURATION ? b->S : NULL};
+    for (int c = 0; c < 9; c++) {
+        blk_.F[c] = b->F[c];
+        blk_.grad_v[c] = b->L[c];
+        for (int j = 0; j < n; j++) b->tauB[c][j] = NAN;
+    }
+    for (int j = 0; j < n; j++) b->codeB[j] = -12345;
+    plugin_call_enter(m, "stress_block");
+    const int nbad = m->stress_block(&blk_, b->tauB, b->codeB);
+    plugin_call_leave();
+    for (int j = 0; j < n; j++)
+        if (batch_compare(r, b, blk, j, detail)) return 1;
+    int want = 0;
+    for (int j = 0; j < n; j++) want += b->codeB[j] != 0;
+    if (nbad != want) {
+        snprintf(detail, CHECK_DETAIL, "block %d (dim %d, %d points): stress_block returned %d, but %d points have a nonzero code",
+                 blk, b->dim, n, nbad, want);
+        return 1;
+    }
+    return 0;
+}
+
+/* Reported only for a plugin with stress_block. */
+static int check_batched(check_rig *r) {
+    const hearth_material *m = r->m;
+    if (!m->stress_block) return 0;
+    char detail[CHECK_DETAIL];
+    if (m->nparams > PLUGIN_CHECK_MAX_PARAMS) {
+        snprintf(detail, sizeof detail, "%d parameters: the check compares at most %d", m->nparams, PLUGIN_CHECK_MAX_PARAMS);
+        check_report(r, "batched", 0, detail);
+        return 0;
+    }
+    const int N = HEARTH_BLOCK_MAX, stride = m->state_size + 1; /* a stride past the state: a plugin must use it */
+    const size_t dN = sizeof(double) * N;
+    const size_t bytes = dN * (18 + 3 + 9 + 9 + (size_t)m->nparams + 2 * (size_t)stride) + 2 * sizeof(int) * N;
+    char *mem = mem_alloc(bytes);
+    if (!mem) return -1;
+    double *d = (double *)mem;
+    batch_pts b = {.stride = stride};
+    for (int c = 0; c < 9; c++) b.F[c] = d, d += N;
+    for (int c = 0; c < 9; c++) b.L[c] = d, d += N;
+    b.T = d, d += N;
+    b.P = d, d += N;
+    b.S = d, d += N;
+    b.tauA = d, d += 9 * N;
+    for (int c = 0; c < 9; c++) b.tauB[c] = d, d += N;
+    b.pv = d, d += (size_t)m->nparams * N;
+    b.stA = d, d += (size_t)stride * N;
+    b.stB = d, d += (size_t)stride * N;
+    b.codeA = (int *)d;
+    b.codeB = b.codeA + N;
+    uint64_t seed = 0xba7c4001u;
+    int bad = 0, points = 0, refused = 0;
+    for (int k = 0; k < BATCH_NBLOCKS && !bad; k++) {
+        b.n = batch_blocks[k].n;
+        b.dim = batch_blocks[k].dim;
+        b.dt = batch_blocks[k].dt;
+        bad = batch_block(r, &b, k, &seed, detail);
+        points += b.n;
+        for (int j = 0; j < b.n && !bad; j++) refused += b.codeA[j] != 0;
+    }
+    if (!bad)
+        snprintf(detail, sizeof detail,
+                 "stress_block and stress agree bit for bit (tau, state, code) on %d points in %d blocks (dim 2 and 3, F "
+                 "near and far from I, advanced states, parameters varying by point; %d refused alike)",
+                 points, BATCH_NBLOCKS, refused);
+    check_report(r, "batched", !bad, detail);
+    mem_free(mem, bytes);
+    return 0;
+}
+
 int hearth_plugin_check(const char *path, hearth_check_fn fn, void *ud, hearth_error *err) {
     /* "hearth plugin check hearth_foo.so" names a file in the current folder,
      * which the loader would read as a plugin name; make it a path. A bare
@@ -371,7 +573,15 @@ int hearth_plugin_check(const char *path, hearth_check_fn fn, void *ud, hearth_e
     check_extremes(&r);
     plugin_call_set_context(file, "check 'wave_speed'");
     check_wave(&r);
+    plugin_call_set_context(file, "check 'batched'");
+    const int brc = check_batched(&r);
     plugin_call_set_context(NULL, NULL);
+    if (brc < 0) {
+        mem_free(r.p, pbytes);
+        mem_free(r.state, sbytes);
+        err_set(err, HEARTH_ERR_NOMEM, "%s: out of memory for the batched check", hearth_plugin_file(pl));
+        return -1;
+    }
     mem_free(r.p, pbytes);
     mem_free(r.state, sbytes);
     return r.failed;

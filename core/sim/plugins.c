@@ -247,7 +247,7 @@ void plugin_desc_free(plugin_desc *d) {
 #define PLUGIN_MAX_STATE 4096
 #define PLUGIN_KNOWN_NEEDS                                                                         \
     (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_SATURATION |                  \
-     HEARTH_NEEDS_THERMAL_EXPANSION)
+     HEARTH_NEEDS_THERMAL_EXPANSION | HEARTH_NEEDS_DIM)
 
 static hearth_status plugin_check_params(const char *shown, const hearth_material *m, hearth_error *err) {
     const hearth_param *ps = m->params;
@@ -468,6 +468,10 @@ hearth_status plugin_describe(const char *shown, const hearth_material *m, plugi
             if (!out->params[i].help) out->params[i].help = "";
     }
     if (!c.summary) c.summary = "";
+    /* <hearth/material.h> rule 7: HEARTH_PLUGIN_NO_BATCH=1 runs a scene on the one-point stress alone,
+     * to compare the two paths' outputs byte for byte */
+    const char *nb = getenv("HEARTH_PLUGIN_NO_BATCH");
+    if (nb && *nb && strcmp(nb, "0") != 0) c.stress_block = NULL;
     c.params = out->params;
     out->mat = c;
     out->density = plugin_param_index(&c, "density");

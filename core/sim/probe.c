@@ -157,6 +157,7 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
         .flags = MATERIAL_POROSITY_PLASTIC,
         .temperature = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE)[i] : NAN,
         .saturation = ps->enabled & (1u << PC_WATER) ? water_saturation(s, i) : NAN,
+        .dim = s->def.dim, /* <hearth/material.h> rule 8 */
     };
     const int rc = material_point_eval(ms->m, ms->core, &pt, &env, tau);
     plugin_call_leave();

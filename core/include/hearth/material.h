@@ -27,7 +27,7 @@
  *
  * 2. Descriptor. name is [a-z0-9_]+ (it is the file's <name> and a Lua
  *    string). init, stress, wave_speed and describe_error are non-NULL;
- *    blend, plastic_J, viscosity and damage may be NULL. nparams <= 256 with params
+ *    blend, plastic_J, viscosity, damage and stress_block may be NULL. nparams <= 256 with params
  *    non-NULL when nparams > 0; 0 <= state_size <= 4096; needs holds only
  *    known HEARTH_NEEDS_* bits.
  *
@@ -71,6 +71,37 @@
  *    code's describe_error text (or, under the rollback policy, retries the
  *    step smaller).
  *
+ * 7. The batched stress (optional, appended last: a plugin built before it
+ *    reads as NULL). stress_block(b, tau, code) does for each of the b->n
+ *    points of a hearth_block what stress does for one hearth_point with
+ *    the same values, and must give the SAME BITS: tau, the state it writes
+ *    and the code (the tau of a point with a nonzero code is not read).
+ *    `hearth plugin check` compares the two on a battery of points (random F
+ *    near and far from I, advanced states, temperatures, parameters that
+ *    vary by point, dim 2 and 3) and names the first point that differs.
+ *    Bit for bit is easy to keep: do each point's arithmetic in the same
+ *    order as stress does (hoisting a value that is the same for every point,
+ *    such as the Lame constants of uniform parameters, gives the same bits);
+ *    the compiler vectorises across points without reordering a point's
+ *    operations, but not calls such as log, so leave those in their own
+ *    scalar loop. MPM's P2G calls stress_block when the plugin has one, for
+ *    runs of up to HEARTH_BLOCK_MAX consecutive particles of one material,
+ *    and stress for the rest (a mixture's particles, a material with more
+ *    than 8 parameters on curves; a point whose F failed is in no run); everything else (SPH, probes, the guard, the rheometer)
+ *    calls stress. The environment variable HEARTH_PLUGIN_NO_BATCH=1, set
+ *    before a plugin is loaded, makes the core ignore stress_block (the same
+ *    results, one call per point), for comparing the two in a scene.
+ *
+ * 8. Dimension. hearth_point.dim and hearth_block.dim say in which dimension
+ *    the point lives: 3, or 2 for a 2D scene, which is plane strain: F and
+ *    grad_v have F[2] = F[5] = F[6] = F[7] = 0 (no out-of-plane shear; F[8]
+ *    is the out-of-plane stretch, 1 unless the law or the solver keeps one),
+ *    and the solver reads tau's in-plane block (it still counts tau[8] for
+ *    pressure and yield). A plugin may use it to skip the zero terms; the
+ *    stress must be the one the 3x3 formula gives. A plugin that reads dim
+ *    sets HEARTH_NEEDS_DIM (rule 1: an older core, without the field,
+ *    refuses it). The core fills dim for every plugin.
+ *
  * All tensors are 3x3, row-major (a[3*row+col]), in SI units. 2D scenes are
  * plane strain: the solver passes tensors whose z row and column describe no
  * deformation, and ignores the zz stress for motion (it still counts for
@@ -99,8 +130,14 @@ enum {
     /// (Ding et al. eq. 10). The core adds that term to any material whose core parameter `expansion`
     /// (c*lambda) is > 0, flagged or not; the flag states the intent, and `hearth plugin check` and the
     /// rheometer fill the temperature for it.
-    HEARTH_NEEDS_THERMAL_EXPANSION = 1u << 3
+    HEARTH_NEEDS_THERMAL_EXPANSION = 1u << 3,
+    /// hearth_point.dim and hearth_block.dim are read (contract rule 8). Every core that knows the bit
+    /// fills them for every plugin; the bit only makes an older core, whose point has no dim, refuse.
+    HEARTH_NEEDS_DIM = 1u << 4
 };
+
+/// The most points a hearth_block holds (stress_block may keep per-point scratch of this size on its stack).
+#define HEARTH_BLOCK_MAX 64
 
 /// The parameter names the core reserves (contract rule 3): its own per-material parameters, in the
 /// order of hearth_core_params(). The loader refuses a plugin parameter with any of these names.
@@ -132,7 +169,37 @@ typedef struct hearth_point {
     double temperature, porosity, saturation;
     const double *p;  ///< resolved parameters in schema order (curves evaluated, blends applied), nparams doubles
     double *state;    ///< plugin-owned per-point state, state_size doubles (may be NULL when state_size is 0)
+    /// 2 or 3: the dimension of the scene the point lives in (contract rule 8; appended with HEARTH_NEEDS_DIM).
+    int dim;
 } hearth_point;
+
+/// A block of points of one material as columns (structure of arrays), for the optional stress_block
+/// callback (contract rule 7): entry c (row-major, a[3*row+col]) of point j's F is F[c][j]. Everything
+/// a hearth_point carries, with what is the same for every point given once. Valid only for the
+/// duration of one call; the columns do not alias each other or the output.
+typedef struct hearth_block {
+    int n;                   ///< points, 1..HEARTH_BLOCK_MAX
+    int dim;                 ///< 2 or 3, as hearth_point.dim (rule 8)
+    double dt;               ///< as hearth_point.dt, the same for every point
+    const double *grad_v[9]; ///< velocity gradient columns (1/s), n values each
+    const double *F[9];      ///< deformation gradient columns at the END of the step, n values each
+    /// Columns of n values for the fields the plugin declares in `needs` (NaN where the scene does not
+    /// carry the field, as in hearth_point); NULL for a field it does not declare.
+    const double *temperature, *porosity, *saturation;
+    /// The parameters that are the same for every point of the block (schema order, nparams doubles,
+    /// curves already applied). Read parameter k of point j with hearth_block_param().
+    const double *p;
+    /// nparams pointers: NULL where p[k] holds for every point, else a column of the n points' values
+    /// (a temperature or moisture curve makes a parameter vary from point to point).
+    const double *const *p_col;
+    double *state;    ///< point j's state at state + j * state_stride (NULL when state_size is 0)
+    int state_stride; ///< doubles from one point's state to the next, >= state_size
+} hearth_block;
+
+/// Parameter k of point j of block b.
+static inline double hearth_block_param(const hearth_block *b, int k, int j) {
+    return b->p_col[k] ? b->p_col[k][j] : b->p[k];
+}
 
 /// The descriptor a plugin returns. Static storage, never freed by the core.
 typedef struct hearth_material {
@@ -175,6 +242,11 @@ typedef struct hearth_material {
     /// core then never asks per point and lists no `damage` field), anything else when it may; a
     /// material given curves or a blend is asked again at each curve value and each constituent.
     double (*damage)(const double *p, const double *state);
+    /// Optional (may be NULL; read only when struct_size covers it). The batched stress (contract rule 7):
+    /// for each point j < b->n, advance its state and write tau[c][j] (c = 0..8) and code[j] exactly as
+    /// stress would for that point alone, bit for bit. Returns the number of points with a nonzero code.
+    /// Called concurrently, each call on its own block (rule 5).
+    int (*stress_block)(const hearth_block *b, double *const tau[9], int *code);
 } hearth_material;
 
 /// The entry point a plugin defines.

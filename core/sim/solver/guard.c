@@ -60,7 +60,8 @@ static void guard_measure(const hearth_scene *s, int i, guard_terms *t) {
     pt.p = p;
     pt.state = state;
     /* the plugin's stress alone, through the material door: the core's terms are measured apart below */
-    const material_env env = {.temperature = T ? T[i] : NAN, .saturation = NAN, .porosity = gas_porosity(JP, ms->core[CP_POROSITY0])};
+    const material_env env = {.temperature = T ? T[i] : NAN, .saturation = NAN, .porosity = gas_porosity(JP, ms->core[CP_POROSITY0]),
+                              .dim = s->def.dim};
     double tau[9];
     const int rc = material_point_eval(ms->m, ms->core, &pt, &env, tau);
     plugin_call_leave();

@@ -126,70 +126,6 @@ FORCE_INLINE int all_finite(const double *a, const int n) {
 enum { P2G_HC = GRID_NCH_MOMENTUM, P2G_T, P2G_MW, P2G_SW, P2G_V, P2G_NCH };
 static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T, CH_MW, CH_SW, CH_CG_R};
 
-/* The columns and flags P2G hands the material door, the same for every particle of a block. */
-typedef struct p2g_cols {
-    const int *mat;
-    const double *V0, *T, *W, *G, *S0; /* T, W, G, S0: NULL when the scene has no such field */
-    double *state, *pscratch;
-    int stride;
-    unsigned env_flags;
-} p2g_cols;
-
-/* The material door for particle i (material.h): the plugin's stress and the
- * core's terms into tau, and the next step's limits (wave speed, viscosity).
- * The plugin ABI is 3x3: a 2D particle's 2x2 C and F go in as their plane
- * strain embedding (tensor2.h; C's z row and column 0, F_zz = 1) and the
- * whole tau comes back (P2G scatters its in-plane block; tau_zz still counts
- * in the law's pressure and yield). */
-FORCE_INLINE void p2g_stress(hearth_scene *s, const p2g_cols *pc, const int D, int i, const double *C, const double *F,
-                             double J, double dt, pb_partial *pp, double *cmax, double *numax, double tau[9]) {
-    const material_slot *ms = &s->mats.slot[pc->mat[i]];
-    hearth_point pt;
-    if (D == 2) {
-        t2_embed(C, 0.0, pt.grad_v);
-        t2_embed(F, 1.0, pt.F);
-    } else {
-        memcpy(pt.grad_v, C, sizeof pt.grad_v);
-        memcpy(pt.F, F, sizeof pt.F);
-    }
-    pt.dt = dt;
-    pt.p = material_params(&s->mats, &s->ps, pc->mat[i], i, pc->pscratch);
-    pt.state = pc->state ? pc->state + (size_t)i * pc->stride : NULL;
-    /* the fields this scene carries, and the core's terms on them (material.h) */
-    const material_env env = {
-        .flags = pc->env_flags | (ms->m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u) |
-                 (ms->fracture ? MATERIAL_DAMAGE : 0u),
-        .J = J,
-        .temperature = pc->T ? pc->T[i] : NAN,
-        .saturation = pc->W ? pc->W[i] / (ms->core[CP_WATER_DENSITY] * J * pc->V0[i]) : NAN,
-        .porosity = NAN,
-        .gas = pc->G,
-        .saturation0 = pc->S0,
-        .index = i,
-    };
-    const int code = material_point_stress(ms->m, ms->core, &pt, &env, tau);
-    if (code) record_fail(pp, i, code == MATERIAL_NONFINITE ? FAIL_STRESS : FAIL_PLUGIN, code == MATERIAL_NONFINITE ? 0 : code);
-    /* the next step's limits, from the state the plugin just wrote and the
-     * parameters it used: here both are in cache, and G2P need not
-     * evaluate the temperature curves a second time */
-    double c = ms->wave_speed;
-    if (ms->wave_per_point) {
-        plugin_call_enter(ms->m, "wave_speed");
-        c = ms->m->wave_speed(pt.p, pt.state);
-    }
-    /* NaN, inf or <= 0 would make the next dt NaN or 0 (fmax would also
-     * drop a NaN silently): the guard stops the run naming the plugin */
-    if (!(c > 0 && c <= DBL_MAX)) record_fail(pp, i, FAIL_WAVE, 0);
-    else if (c > *cmax) *cmax = c;
-    if (ms->m->viscosity) {
-        plugin_call_enter(ms->m, "viscosity");
-        const double nu = ms->m->viscosity(pt.p, ms->m->state_size > 0 ? pt.state : NULL) / pt.p[ms->density_index];
-        if (nu > *numax) *numax = nu;
-    }
-    material_point_couple(ms->m, ms->core, &pt, &env, tau); /* the door's second half: the core's terms */
-    plugin_call_leave();
-}
-
 /* D (2 or 3), HEAT (temperature live), WATER (water live) and MIRROR (a
  * sticky collider: mpm_p2g_mirror) are compile-time constants in each
  * instantiation below, so a momentum-only scene runs the momentum-only loops
@@ -215,59 +151,35 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     if (HEAT || WATER) memset(tile + P2G_V * TN, 0, sizeof(double) * (size_t)TN);
 
     const double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *M = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
-    double *Cc = pcold(ps, PC_C), *Fc = pcold(ps, PC_F), *state = pcold(ps, PC_STATE);
+    const double *Cc = pcold(ps, PC_C);
     const int *mat = pcoli(ps, PC_MAT);
     const double *Tcol = HEAT ? pcold(ps, PC_TEMPERATURE) : NULL;
-    const int *pflags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     const double *Gcol = ps->enabled & (1u << PC_GAS) ? pcold(ps, PC_GAS) : NULL;
     const double *Wcol = ps->enabled & (1u << PC_WATER) ? pcold(ps, PC_WATER) : NULL;
     const double *S0col = Wcol ? pcold(ps, PC_SAT0) : NULL;
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
-    const int stride = ps->state_stride, apic = s->def.transfer == 0;
-    double pscratch[SCENE_MAX_PARAMS], cmax = 0, numax = 0; /* numax: largest kinematic viscosity a plugin applies (m^2/s) */
+    const int apic = s->def.transfer == 0;
+    double cmax = 0, numax = 0; /* numax: largest kinematic viscosity a plugin applies (m^2/s) */
     /* what this scene supplies to the material door, the same for every particle; gas needs the porosity */
     const unsigned env_flags = MATERIAL_ZERO_FAILED | (Gcol ? MATERIAL_POROSITY_PLASTIC : 0u) | (HEAT ? MATERIAL_EXPANSION : 0u);
-    const p2g_cols cols = {.mat = mat, .V0 = V0, .T = Tcol, .W = Wcol, .G = Gcol, .S0 = S0col, .state = state,
-                           .pscratch = pscratch, .stride = stride, .env_flags = env_flags};
+    double taus[9][HEARTH_BLOCK_MAX], Js[HEARTH_BLOCK_MAX]; /* stresses (columns) and det F of the chunk from mpm_p2g_stress */
 
     for (int i = pb.start; i < pb.end; i++) {
-        const double *x = X + 3 * i, *v = V + 3 * i;
-        /* F^{n+1} = (I + dt C) F^n: C is the APIC velocity gradient from the last G2P.
-         * 2D keeps the in-plane 2x2 blocks (plane strain: F_zz = 1, tensor2.h) */
-        const double *C = Cc + (D == 2 ? 4 : 9) * i;
-        double *F = Fc + (D == 2 ? 4 : 9) * i, J;
-        int fine;
-        if (D == 2) {
-            double Fn[4];
-            t2_advance(C, F, dt, Fn);
-            memcpy(F, Fn, sizeof Fn);
-            J = t2_det(F);
-            fine = J > 0 && all_finite(F, 4);
-        } else {
-            double Fn[9];
-            for (int r = 0; r < 3; r++)
-                for (int c = 0; c < 3; c++)
-                    Fn[3 * r + c] = F[3 * r + c] + dt * (C[3 * r] * F[c] + C[3 * r + 1] * F[3 + c] + C[3 * r + 2] * F[6 + c]);
-            memcpy(F, Fn, sizeof Fn);
-            J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
-            fine = J > 0 && all_finite(F, 9);
-        }
-        double tau[9] = {0};
-        if (pflags && (pflags[i] & PF_FIXED)) {
-            /* a pinned particle has no dynamics: no stress, and its waves do not limit dt */
-        } else if (!fine) {
-            record_fail(pp, i, FAIL_F, 0);
-        } else {
-            p2g_stress(s, &cols, D, i, C, F, J, dt, pp, &cmax, &numax, tau);
-        }
+        /* C: 2D keeps its in-plane 2x2 block (plane strain, tensor2.h) */
+        const double *x = X + 3 * i, *v = V + 3 * i, *C = Cc + (D == 2 ? 4 : 9) * i;
+        const int j = (i - pb.start) % HEARTH_BLOCK_MAX;
+        if (j == 0) /* the material call site: F and the stresses of the next HEARTH_BLOCK_MAX particles (mpm_stress.c) */
+            mpm_p2g_stress(s, D, i, pb.end - i < HEARTH_BLOCK_MAX ? pb.end - i : HEARTH_BLOCK_MAX, dt, env_flags, Tcol, Wcol,
+                           Gcol, S0col, taus, Js, pp, &cmax, &numax);
+        const double J = Js[j];
         /* affine momentum with the stress folded in (MLS-MPM): Q = m C - dt V0 D^-1 tau */
         const double m = M[i], k0 = dt * V0[i] * Dinv, mC = apic ? m : 0.0; /* PIC drops the affine momentum */
         double Q[9]; /* 2D fills and reads its in-plane entries 0, 1, 3, 4 only */
         if (D == 2) {
-            Q[0] = mC * C[0] - k0 * tau[0], Q[1] = mC * C[1] - k0 * tau[1];
-            Q[3] = mC * C[2] - k0 * tau[3], Q[4] = mC * C[3] - k0 * tau[4];
+            Q[0] = mC * C[0] - k0 * taus[0][j], Q[1] = mC * C[1] - k0 * taus[1][j];
+            Q[3] = mC * C[2] - k0 * taus[3][j], Q[4] = mC * C[3] - k0 * taus[4][j];
         } else {
-            for (int a = 0; a < 9; a++) Q[a] = mC * C[a] - k0 * tau[a];
+            for (int a = 0; a < 9; a++) Q[a] = mC * C[a] - k0 * taus[a][j];
         }
 
         int base[3] = {0, 0, 0};
@@ -330,7 +242,11 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 }
             }
         }
-        if (MIRROR && near_face) mpm_p2g_mirror(s, D, x, tau, k0, pb.block, tile);
+        if (MIRROR && near_face) {
+            double tau[9];
+            for (int a = 0; a < 9; a++) tau[a] = taus[a][j];
+            mpm_p2g_mirror(s, D, x, tau, k0, pb.block, tile);
+        }
     }
 
     pp->cmax = cmax;

@@ -168,4 +168,12 @@ hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_rep
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err);
 /* The stable step: CFL, the user's maximum, explicit conduction, water and viscosity. */
 double mpm_stable_dt(const hearth_scene *s);
+/* P2G's material call site (mpm_stress.c): particles i0 .. i0 + n - 1 of a particle block (n <=
+ * HEARTH_BLOCK_MAX) get F <- (I + dt C) F, their stresses into the columns tau[c][j] (the core's terms
+ * added; zero for a pinned particle and one whose F or stress failed), det F into Js; failures go to pp,
+ * the largest wave speed and kinematic viscosity to cmax and numax. The field columns are P2G's (NULL
+ * when the scene does not carry them). */
+void mpm_p2g_stress(hearth_scene *s, int D, int i0, int n, double dt, unsigned env_flags, const double *Tcol,
+                    const double *Wcol, const double *Gcol, const double *S0col, double (*tau)[HEARTH_BLOCK_MAX], double *Js,
+                    pb_partial *pp, double *cmax, double *numax);
 #endif

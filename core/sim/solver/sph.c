@@ -546,6 +546,7 @@ static int phase_stress(hearth_scene *s, double dt, step_report *rep) {
             .temperature = T ? T[i] : NAN,
             .saturation = NAN,
             .porosity = NAN,
+            .dim = s->def.dim, /* <hearth/material.h> rule 8 */
         };
         double tau[9];
         const int code = material_point_eval(ms->m, ms->core, &pt, &env, tau);

@@ -1,0 +1,202 @@
+/* material_batch.c: the batched door (material.h, material_run_eval): a run of
+ * consecutive particles of one material, their stresses from the plugin's
+ * stress_block in one call when it has one (<hearth/material.h> rule 7), else
+ * point by point, then per point what MPM's P2G did after the stress: the wave
+ * speed of the next step's limit, the viscosity, the core's coupling terms.
+ *
+ * Both paths give the same bits: the one-point path is material_point_stress
+ * as P2G called it, and the block carries the same values in columns (the
+ * parameters resolved by the same material_params_resolve, the porosity by
+ * the same gas_porosity of the plugin's plastic_J). `hearth plugin check`
+ * holds the plugin to its half (plugin_check.c), and the test
+ * batch_scene_matches_one_point runs scenes both ways.
+ *
+ * The block's columns are a transpose of the particles' 3x3 rows: 18 loads
+ * and stores a point, against the plugin's stress of 60 (elastic) to a few
+ * hundred (cam_clay_dough) instructions, which the plugin may now vectorise. */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "material.h"
+
+/* More distinct parameters with curves than this and the run goes point by
+ * point (every in-tree use has one or two). */
+#define RUN_MAX_VARYING 8
+
+/* What P2G did after the plugin's stress, for one point: the next step's
+ * wave speed, the viscosity, and the core's terms (the door's second half).
+ * The limits come from the state the plugin just wrote and the parameters it
+ * used: here both are in cache, and G2P need not evaluate the temperature
+ * curves a second time. */
+static inline void run_after(const material_slot *ms, hearth_point *pt, const material_env *env, double tau[9],
+                             double *wave, double *numax) {
+    const hearth_material *m = ms->m;
+    double c = ms->wave_speed;
+    if (ms->wave_per_point) {
+        plugin_call_enter(m, "wave_speed");
+        c = m->wave_speed(pt->p, pt->state);
+    }
+    *wave = c;
+    if (m->viscosity) {
+        plugin_call_enter(m, "viscosity");
+        const double nu = m->viscosity(pt->p, m->state_size > 0 ? pt->state : NULL) / pt->p[ms->density_index];
+        if (nu > *numax) *numax = nu;
+    }
+    material_point_couple(m, ms->core, pt, env, tau);
+}
+
+static material_env run_env(const material_run *r, int j, unsigned flags) {
+    return (material_env){
+        .flags = flags,
+        .J = r->J[j],
+        .temperature = r->temperature ? r->temperature[j] : NAN,
+        .saturation = r->saturation ? r->saturation[j] : NAN,
+        .porosity = NAN,
+        .gas = r->gas,
+        .saturation0 = r->saturation0,
+        .index = r->i0 + j,
+        .dim = r->dim,
+    };
+}
+
+/* Point by point: P2G's own calls, unchanged. */
+static double run_points(const material_table *t, const particles *ps, const material_run *r, unsigned flags,
+                         double *const tau[9], int *code, double *wave) {
+    const material_slot *ms = &t->slot[r->mat];
+    double *state = pcold(ps, PC_STATE), pscratch[MATERIAL_MAX_PARAMS], numax = 0;
+    const int stride = ps->state_stride;
+    for (int j = 0; j < r->n; j++) {
+        const int i = r->i0 + j;
+        hearth_point pt;
+        for (int c = 0; c < 9; c++) {
+            pt.grad_v[c] = r->grad_v[c][j];
+            pt.F[c] = r->F[c][j];
+        }
+        pt.dt = r->dt;
+        pt.p = material_params(t, ps, r->mat, i, pscratch);
+        pt.state = state ? state + (size_t)i * stride : NULL;
+        const material_env env = run_env(r, j, flags);
+        double tj[9] = {0};
+        code[j] = material_point_stress(ms->m, ms->core, &pt, &env, tj);
+        run_after(ms, &pt, &env, tj, &wave[j], &numax);
+        for (int c = 0; c < 9; c++) tau[c][j] = tj[c];
+    }
+    plugin_call_leave();
+    return numax;
+}
+
+double material_run_eval(const material_table *t, const particles *ps, const material_run *r, double *const tau[9],
+                         int *code, double *wave) {
+    const material_slot *ms = &t->slot[r->mat];
+    const hearth_material *m = ms->m;
+    const unsigned flags = r->flags | (m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u) |
+                           (ms->fracture ? MATERIAL_DAMAGE : 0u);
+    /* the parameters that curves move: one column each */
+    int vk[RUN_MAX_VARYING], nv = 0;
+    for (int c = 0; c < ms->ncurves && nv <= RUN_MAX_VARYING; c++) {
+        int seen = 0;
+        for (int k = 0; k < nv; k++) seen |= vk[k] == ms->curves[c].param;
+        if (!seen && nv < RUN_MAX_VARYING) vk[nv] = ms->curves[c].param;
+        nv += !seen;
+    }
+    if (!m->stress_block || ms->mix_k || nv > RUN_MAX_VARYING) return run_points(t, ps, r, flags, tau, code, wave);
+
+    const int n = r->n, i0 = r->i0, np = m->nparams, stride = ps->state_stride;
+    double *state = pcold(ps, PC_STATE);
+    if (state) state += (size_t)i0 * stride;
+    const int porous = (flags & MATERIAL_POROSITY_PLASTIC) != 0;
+    const unsigned needs = m->needs;
+    double nan_col[HEARTH_BLOCK_MAX], P[HEARTH_BLOCK_MAX], vcol[RUN_MAX_VARYING][HEARTH_BLOCK_MAX];
+    const int need_nan = (!r->temperature && (needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION))) ||
+                         (!r->saturation && (needs & HEARTH_NEEDS_SATURATION)) || (!porous && (needs & HEARTH_NEEDS_POROSITY));
+    if (need_nan)
+        for (int j = 0; j < n; j++) nan_col[j] = NAN;
+    /* point j's whole parameter set: the uniform ones once, the curves' patched in per point */
+    double q[MATERIAL_MAX_PARAMS], scratch[MATERIAL_MAX_PARAMS];
+    const double *pcolumn[MATERIAL_MAX_PARAMS];
+    for (int k = 0; k < np; k++) pcolumn[k] = NULL;
+    for (int v = 0; v < nv; v++) pcolumn[vk[v]] = vcol[v];
+    if (nv || porous) {
+        memcpy(q, ms->params, sizeof(double) * (size_t)np);
+        for (int j = 0; j < n; j++) {
+            if (nv) {
+                const double *pj = material_params_resolve(ms, ps, i0 + j, scratch);
+                for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j] = pj[vk[v]];
+            }
+            if (porous) { /* as material_point_stress: J^P at the start of the step */
+                double JP = 1.0;
+                if (m->plastic_J) {
+                    plugin_call_enter(m, "plastic_J");
+                    JP = m->plastic_J(q, state ? state + (size_t)j * stride : NULL);
+                }
+                P[j] = gas_porosity(JP, ms->core[CP_POROSITY0]);
+            }
+        }
+    }
+    hearth_block b = {
+        .n = n,
+        .dim = r->dim == 2 ? 2 : 3,
+        .dt = r->dt,
+        .temperature = needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? (r->temperature ? r->temperature : nan_col) : NULL,
+        .porosity = needs & HEARTH_NEEDS_POROSITY ? (porous ? P : nan_col) : NULL,
+        .saturation = needs & HEARTH_NEEDS_SATURATION ? (r->saturation ? r->saturation : nan_col) : NULL,
+        .p = ms->params,
+        .p_col = pcolumn,
+        .state = state,
+        .state_stride = stride,
+    };
+    for (int c = 0; c < 9; c++) {
+        b.grad_v[c] = r->grad_v[c];
+        b.F[c] = r->F[c];
+        memset(tau[c], 0, sizeof(double) * (size_t)n); /* as P2G's tau = {0}: an unwritten entry reads the same both ways */
+    }
+    plugin_call_enter(m, "stress_block");
+    m->stress_block(&b, tau, code);
+
+    /* non-finite entries, across the block (|x| <= DBL_MAX is isfinite's answer) */
+    unsigned char bad[HEARTH_BLOCK_MAX];
+    for (int j = 0; j < n; j++) bad[j] = 0;
+    for (int c = 0; c < 9; c++)
+        for (int j = 0; j < n; j++) bad[j] |= !(fabs(tau[c][j]) <= DBL_MAX);
+    for (int j = 0; j < n; j++) {
+        if (__builtin_expect(!code[j] && bad[j], 0)) code[j] = MATERIAL_NONFINITE;
+        if (__builtin_expect(code[j] != 0, 0) && (flags & MATERIAL_ZERO_FAILED))
+            for (int c = 0; c < 9; c++) tau[c][j] = 0;
+    }
+    /* nothing per point after the stress (elastic in a scene without fields): the cached wave speed */
+    const int after = ms->wave_per_point || m->viscosity || (flags & (MATERIAL_DAMAGE | MATERIAL_EXPANSION)) || r->gas ||
+                      r->saturation0;
+    if (!after) {
+        for (int j = 0; j < n; j++) wave[j] = ms->wave_speed;
+        plugin_call_leave();
+        return 0;
+    }
+    double numax = 0;
+    memcpy(q, ms->params, sizeof(double) * (size_t)np);
+    for (int j = 0; j < n; j++) {
+        for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j];
+        hearth_point pt; /* for run_after's callbacks, which read p, state and the fields, never F or grad_v */
+        pt.dt = r->dt;
+        pt.p = q;
+        pt.state = state ? state + (size_t)j * stride : NULL;
+        pt.temperature = r->temperature ? r->temperature[j] : NAN;
+        pt.porosity = porous ? P[j] : NAN;
+        pt.saturation = r->saturation ? r->saturation[j] : NAN;
+        pt.dim = b.dim;
+        const material_env env = run_env(r, j, flags);
+        /* the core's terms are isotropic and touch only the diagonal; a crack's cut-off rewrites all nine */
+        double tj[9];
+        if (flags & MATERIAL_DAMAGE)
+            for (int c = 0; c < 9; c++) tj[c] = tau[c][j];
+        else
+            tj[0] = tau[0][j], tj[4] = tau[4][j], tj[8] = tau[8][j];
+        run_after(ms, &pt, &env, tj, &wave[j], &numax);
+        if (flags & MATERIAL_DAMAGE)
+            for (int c = 0; c < 9; c++) tau[c][j] = tj[c];
+        else
+            tau[0][j] = tj[0], tau[4][j] = tj[4], tau[8][j] = tj[8];
+    }
+    plugin_call_leave();
+    return numax;
+}
