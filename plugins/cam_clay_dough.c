@@ -136,6 +136,10 @@
 
 #include <hearth/tensor.h>
 
+#ifndef DOUGH_NAME
+#define DOUGH_NAME "cam_clay_dough" /* the test fixture built from this file has its own */
+#endif
+
 enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_COUNT };
 
 /* Defaults: the cookie column of Ding et al. Table 2 (E 4e4, tau_y 20,
@@ -542,8 +546,18 @@ static int stress(hearth_point *pt, double tau[9]) {
     return stress_law(pt, hearth_t3_det(pt->F), mu, lambda, tau);
 }
 
-/* The batched stress (<hearth/material.h> rule 7): the same bits as stress,
- * point by point. det F runs across the block (the compiler vectorises it,
+#ifdef DOUGH_BATCHED
+/* The batched stress (<hearth/material.h> rule 7), built only into the test
+ * fixture hearth_dough_batched (tests/plugins/meson.build), not into this
+ * plugin: measured, the block costs more than it saves here (the dough step
+ * with all fields, 2D 64 cells, callgrind: 20.86M instructions a step with
+ * it, 20.02M without), because each point's velocity gradient and stress
+ * move between the block's columns and the per-point law, and the return map
+ * below cannot run across points. It stays as the suite's stateful batched
+ * law: state stride, porosity, temperature, damage and per-point parameter
+ * columns through the batched door, bit for bit against `stress`
+ * (plugin_check_batched_matches, batch_scene_matches_one_point).
+ * The same bits as stress, point by point. det F runs across the block (the compiler vectorises it,
  * hearth_t3_det's arithmetic in its order), and the Lame constants of a
  * block whose E and nu are uniform (no curve on them) are computed once. The
  * return map itself branches per point (the near path, the eigen path, the
@@ -592,6 +606,7 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
     }
     return bad;
 }
+#endif
 
 /* Small-strain P-wave speed sqrt((lambda + 2 mu)/rho): the Hencky law's
  * tangent at rest; plastic flow only softens it. */
@@ -628,7 +643,7 @@ static const hearth_material material = {
     .abi_version = HEARTH_MATERIAL_ABI,
     .struct_size = sizeof(hearth_material),
     .real_size = sizeof(double),
-    .name = "cam_clay_dough",
+    .name = DOUGH_NAME,
     .summary = "dough: Hencky elasticity, viscoplastic porous Cam-clay yield (Ding et al. 2019 eq. 12, §6.5)",
     .params = params,
     .nparams = P_COUNT,
@@ -640,7 +655,9 @@ static const hearth_material material = {
     .describe_error = describe_error,
     .plastic_J = plastic_J,
     .damage = damage,
+#ifdef DOUGH_BATCHED
     .stress_block = stress_block,
+#endif
 };
 
 HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void); /* for -Wmissing-prototypes */

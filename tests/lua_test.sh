@@ -118,7 +118,7 @@ lua_error_messages)
         "err_runtime.lua:5: in main chunk"
     ;;
 batch_scene_matches_one_point)
-    # <hearth/material.h> rule 7: scenes of plugins with stress_block (elastic, cam_clay_dough; 2D and 3D;
+    # <hearth/material.h> rule 7: scenes of plugins with stress_block (elastic, dough_batched = cam_clay_dough.c's test build with its batch; 2D and 3D;
     # a temperature curve on E; the dough with every field; a drying crust: water, three moisture curves,
     # damage) give the same particle state bit for bit
     # with the batched call and with HEARTH_PLUGIN_NO_BATCH=1 (one call per point). The last scene's

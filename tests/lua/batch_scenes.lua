@@ -28,7 +28,7 @@ block("elastic_3d", 3, elastic, false, 20)
 local warm = h.material("elastic", { E = h.curve { { 20, 2e4 }, { 150, 5e3 } }, nu = 0.3, density = 1000,
   specific_heat = 20, conductivity = 30, gas_rate = 2.5e-5, expansion = 0.1, reference_temperature = 20 })
 block("elastic_curve_2d", 2, warm, true, 60)
-local dough = h.material("cam_clay_dough", h.library.paper.cookie)
+local dough = h.material("dough_batched", h.library.paper.cookie)
 block("dough_2d", 2, dough, true, 60)
 block("dough_3d", 3, dough, true, 15)
 -- a drying crust (tests/lua/crust_cracks.lua, shorter): water, moisture curves on E, tau_y and
@@ -36,7 +36,7 @@ block("dough_3d", 3, dough, true, 15)
 do
   local dry = h.curve { { 0.65, 30 }, { 0.85, 1 }, of = "moisture", irreversible = true }
   local ef = 1 * h.curve { { 0.65, 0.02 }, { 0.85, 1 }, of = "moisture", irreversible = true }
-  local m = h.material("cam_clay_dough", { E = 5e3 * dry, nu = 0.3, density = 500, tau_y = 200 * dry, eta = 0,
+  local m = h.material("dough_batched", { E = 5e3 * dry, nu = 0.3, density = 500, tau_y = 200 * dry, eta = 0,
     fracture_strain = ef, specific_heat = 20, conductivity = 30, expansion = 10, reference_temperature = 20,
     porosity = 0.1, max_porosity = 0.6, water_diffusivity = 2e-4 / 293.15, evaporation = 2 })
   local s = h.scene { dim = 2, dx = 0.004, box = { { 0, 0 }, { 0.12, 0.08 } }, oven = { temperature = 120, beta = 1000 } }
