@@ -126,7 +126,8 @@ static const hearth_setting settings[] = {
      * refused so a scene written for it says so rather than boils */
     SPH(heat_ext, "kg/(m^2 s)",
         "k_h,ext of eq. 3.42 per unit area of surface: h / c, the surface heat transfer coefficient over the specific "
-        "heat (scaled as a scene's time scale); 0 = off",
+        "heat (scaled as a scene's time scale; a bread oven: 4.4); 0 = off. Scenes written for the printed form's "
+        "1e8-1e9 (before #18) are refused: docs/validation.md, SPH surface heat per unit area",
         0, 0, 1e6),
     SPH(heat_int, "m^2/s", "k_h,int of eq. 3.45: diffusivity; 0 = off", 0, 0, 1e6),
     SPH_FLAG("adaptive_h", "Sigalotti adaptive smoothing length (eq. 3.54-3.56)", adaptive_h),
