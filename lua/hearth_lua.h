@@ -95,6 +95,10 @@ typedef struct hl_scene {
 } hl_scene;
 hearth_shape *hl_checkshape(lua_State *L, int idx);
 hl_scene *hl_checkscene(lua_State *L, int idx);
+/* the scene as the steps left it (over MPI ranks, each rank's slab): for stats and the time */
+hl_scene *hl_checkscene_slabs(lua_State *L, int idx);
+/* the scene's read-only methods (lua_scene_read.c) */
+extern const luaL_Reg hl_scene_readers[];
 void hl_pushshape(lua_State *L, hearth_shape *sh); /* takes ownership; raises on NULL */
 const hl_options *hl_opts(lua_State *L);
 /* a vector of 2 or 3 numbers at idx (z = 0 when absent) */

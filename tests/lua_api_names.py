@@ -2,7 +2,7 @@
 """lua_api_names.py SOURCE_ROOT: every function a scene can call is in docs/lua.md.
 
 The names come from the code, so the reference cannot drift from it:
-  - scene methods registered in C (luaL_Reg tables of lua/lua_scene.c and
+  - scene methods registered in C (luaL_Reg tables of lua/lua_scene.c, lua_scene_read.c and
     lua/lua_output.c that become the scene's methods), written s:NAME;
   - shape constructors registered in lua/lua_shapes.c, written h.NAME;
   - functions the Lua module defines (`function h.NAME`, `function S:NAME`
@@ -30,6 +30,8 @@ def reg_names(path, table):
 want = []  # (how the doc writes it, where it comes from)
 for n in reg_names("lua/lua_scene.c", "methods"):
     want.append((f"s:{n}", "lua_scene.c"))
+for n in reg_names("lua/lua_scene_read.c", "hl_scene_readers"):
+    want.append((f"s:{n}", "lua_scene_read.c"))
 for n in reg_names("lua/lua_output.c", "methods"):
     want.append((f"s:{n}", "lua_output.c"))
 for n in reg_names("lua/lua_shapes.c", "fns"):
