@@ -139,19 +139,6 @@ FORCE_INLINE const double *node_off(const grid *g, const int D, const double *no
     return ring[r];
 }
 
-/* grid_node_index with D a compile-time constant */
-FORCE_INLINE void node_index(const int D, const int bc[3], int l, int gi[3]) {
-    if (D == 2) {
-        gi[0] = bc[0] * GRID_B + l / GRID_B;
-        gi[1] = bc[1] * GRID_B + l % GRID_B;
-        gi[2] = 0;
-    } else {
-        gi[0] = bc[0] * GRID_B + l / (GRID_B * GRID_B);
-        gi[1] = bc[1] * GRID_B + (l / GRID_B) % GRID_B;
-        gi[2] = bc[2] * GRID_B + l % GRID_B;
-    }
-}
-
 /* Channel ch of node gi, 0 where the node has no storage (and past the grid). */
 static double node_value(const grid *g, const int gi[3], int ch) {
     int l;
@@ -320,7 +307,7 @@ FORCE_INLINE void cell_gradient(hearth_scene *s, const int D, int k, int near) {
     block_ring(g, D, bc, ring);
     for (int l = 0; l < NPB; l++) {
         int gi[3];
-        node_index(D, bc, l, gi);
+        grid_node_index_d(D, bc, l, gi);
         int inside = 1;
         for (int d = 0; d < D; d++) inside &= gi[d] >= 1;
         if (!inside) continue; /* no cell below the grid's first node */
@@ -386,7 +373,7 @@ FORCE_INLINE unsigned char cell_area(hearth_scene *s, const int D, int k) {
             continue;
         }
         int gi[3];
-        node_index(D, bc, l, gi);
+        grid_node_index_d(D, bc, l, gi);
         for (int a = -1; a <= 1; a++)
             for (int b = -1; b <= 1; b++)
                 for (int c = -1; c <= (D == 3 ? 1 : -1); c++) {
@@ -426,7 +413,7 @@ FORCE_INLINE unsigned char node_share(hearth_scene *s, const int D, int k, int n
         double r = 0;
         if (node[CH_M * NPB + l] > 0) {
             int gi[3];
-            node_index(D, bc, l, gi);
+            grid_node_index_d(D, bc, l, gi);
             for (int c = 0; c < NC; c++) {
                 int off[3] = {0, 0, 0}, lj;
                 for (int d = 0; d < D; d++) off[d] = (c >> d) & 1;

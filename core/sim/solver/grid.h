@@ -74,10 +74,11 @@ static inline void grid_block_coords(const grid *g, int id, int b[3]) {
     b[0] = id / (g->nb[2] * g->nb[1]);
 }
 
-/// Grid coordinates gi of node l (local index) of the block at block coordinates bc.
-static inline void grid_node_index(const grid *g, const int bc[3], int l, int gi[3]) {
+/// Grid coordinates gi of node l (local index) of the block at block coordinates bc, in dimension D
+/// (a constant where the caller's D is one: the division by B folds).
+static inline void grid_node_index_d(const int D, const int bc[3], int l, int gi[3]) {
     const int B = GRID_B;
-    if (g->dim == 2) {
+    if (D == 2) {
         gi[0] = bc[0] * B + l / B;
         gi[1] = bc[1] * B + l % B;
         gi[2] = 0;
@@ -87,6 +88,9 @@ static inline void grid_node_index(const grid *g, const int bc[3], int l, int gi
         gi[2] = bc[2] * B + l % B;
     }
 }
+
+/// Grid coordinates gi of node l (local index) of the block at block coordinates bc.
+static inline void grid_node_index(const grid *g, const int bc[3], int l, int gi[3]) { grid_node_index_d(g->dim, bc, l, gi); }
 
 /// Node gi (global grid coordinates): its block's storage and, in *l, its local
 /// index; NULL past the grid or in a block without storage (empty air).
