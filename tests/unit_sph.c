@@ -14,6 +14,7 @@
 #include "solver.h"
 #include "sph.h"
 #include "sph_kernel.h"
+#include "sph_fixture.h"
 #include "sph_neighbours.h"
 #include "test.h"
 
@@ -164,39 +165,10 @@ TEST(sph_neighbours_agree) {
 
 /* ---- scenes ------------------------------------------------------------------ */
 
-static hearth_scene_def sph_def(int dim, double dx, const double lo[3], const double hi[3]) {
-    hearth_scene_def d = hearth_default_scene_def();
-    d.solver = HEARTH_SOLVER_SPH;
-    d.dim = dim;
-    d.dx = dx;
-    for (int a = 0; a < 3; a++) d.lo[a] = lo[a], d.hi[a] = hi[a];
-    return d;
-}
-
-static int newtonian(hearth_scene *s, double rho, double bulk, double eta) {
-    const char *n[] = {"density", "bulk", "viscosity"};
-    const double v[] = {rho, bulk, eta};
-    hearth_error err;
-    int m = hearth_scene_add_material(s, "newtonian", n, v, 3, &err);
-    if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
-    return m;
-}
-
+/* a box (x0, y0)-(x1, y1); z in [-0.5, 0.5] (sph_fixture.h's sph_box) */
 static int box_body(hearth_scene *s, int mat, double x0, double y0, double x1, double y1, int fixed, double T) {
-    double c[3] = {0.5 * (x0 + x1), 0.5 * (y0 + y1), 0}, hh[3] = {0.5 * (x1 - x0), 0.5 * (y1 - y0), 0.5};
-    hearth_shape *b = hearth_shape_box(c, hh);
-    hearth_body_def bd = hearth_default_body_def();
-    bd.shape = b;
-    bd.material = mat;
-    bd.ppc = 1;
-    bd.jitter = 0;
-    bd.fixed = fixed;
-    bd.temperature = T;
-    hearth_error err;
-    int id = hearth_scene_add_body(s, &bd, &err);
-    if (id < 0) fprintf(stderr, "body: %s\n", err.msg);
-    hearth_shape_free(b);
-    return id;
+    const double lo[3] = {x0, y0, -0.5}, hi[3] = {x1, y1, 0.5};
+    return sph_box(s, mat, lo, hi, fixed, T);
 }
 
 /* Hydrostatic tank: a 0.1 m water column (10 x 10 particles, c = 10 m/s, three layers of fixed

@@ -10,48 +10,11 @@
 #include "hearth/hearth.h"
 #include "scene.h"
 #include "sph.h"
+#include "sph_fixture.h"
 #include "sph_state.h"
 #include "test.h"
 
 #define PI 3.14159265358979323846
-
-static hearth_scene_def sph_def(int dim, double dx, const double lo[3], const double hi[3]) {
-    hearth_scene_def d = hearth_default_scene_def();
-    d.solver = HEARTH_SOLVER_SPH;
-    d.dim = dim;
-    d.dx = dx;
-    d.gravity[1] = 0;
-    for (int a = 0; a < 3; a++) d.lo[a] = lo[a], d.hi[a] = hi[a];
-    return d;
-}
-
-static int newtonian(hearth_scene *s, double rho) {
-    const char *n[] = {"density", "bulk", "viscosity"};
-    const double v[] = {rho, 1e4, 1.0};
-    hearth_error err;
-    int m = hearth_scene_add_material(s, "newtonian", n, v, 3, &err);
-    if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
-    return m;
-}
-
-static int box_body(hearth_scene *s, int mat, const double lo[3], const double hi[3], int fixed, double T) {
-    double c[3], hh[3];
-    for (int a = 0; a < 3; a++) c[a] = 0.5 * (lo[a] + hi[a]), hh[a] = 0.5 * (hi[a] - lo[a]);
-    if (s->def.dim == 2) c[2] = 0, hh[2] = 0.5;
-    hearth_shape *b = hearth_shape_box(c, hh);
-    hearth_body_def bd = hearth_default_body_def();
-    bd.shape = b;
-    bd.material = mat;
-    bd.ppc = 1;
-    bd.jitter = 0;
-    bd.fixed = fixed;
-    bd.temperature = T;
-    hearth_error err;
-    int id = hearth_scene_add_body(s, &bd, &err);
-    if (id < 0) fprintf(stderr, "body: %s\n", err.msg);
-    hearth_shape_free(b);
-    return id;
-}
 
 static double sum_mT(const hearth_scene *s) {
     const double *T = pcold(&s->ps, PC_TEMPERATURE), *m = pcold(&s->ps, PC_MASS);
@@ -89,6 +52,7 @@ TEST(sph_heat_ext_flux_per_area) {
         for (int r = 0; r < 3; r++) {
             const double dx = dxs[r], lo[3] = {0, 0, 0}, hi[3] = {periodic ? 0.04 : 0.08, 0.06, 0.05};
             hearth_scene_def d = sph_def(dim, dx, lo, hi);
+            d.gravity[1] = 0;
             d.sph.periodic[0] = periodic;
             d.oven_temperature = Text;
             d.oven_beta = 0;
@@ -96,8 +60,8 @@ TEST(sph_heat_ext_flux_per_area) {
             hearth_scene *s = hearth_scene_create(&d, NULL);
             CHECK(s != NULL);
             if (!s) return;
-            const int m = newtonian(s, 1000);
-            CHECK(m >= 0 && box_body(s, m, blo, bhi, 0, T0) >= 0);
+            const int m = newtonian(s, 1000, 1e4, 1.0);
+            CHECK(m >= 0 && sph_box(s, m, blo, bhi, 0, T0) >= 0);
             const double E0 = sum_mT(s);
             hearth_error err;
             CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
@@ -148,6 +112,7 @@ static int robin_slab(int N, double *err, double *taken, double *taken_exact) {
     const double L = 0.01, dx = 2 * L / N, rho = 1000, D = 1e-2, Bi = 1, T0 = 26, Text = 180, y0 = 4 * dx;
     const double lo[3] = {0, 0, 0}, hi[3] = {8 * dx, 2 * L + 8 * dx, 0};
     hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[1] = 0;
     d.sph.periodic[0] = 1;
     d.sph.heat_int = D * rho;
     d.sph.heat_ext = Bi * d.sph.heat_int / L;
@@ -156,9 +121,9 @@ static int robin_slab(int N, double *err, double *taken, double *taken_exact) {
     d.dt_max = 0.01 * (d.sph.h_factor * dx) * (d.sph.h_factor * dx) / D;
     hearth_scene *s = hearth_scene_create(&d, NULL);
     if (!s) return -1;
-    const int m = newtonian(s, rho);
+    const int m = newtonian(s, rho, 1e4, 1.0);
     const double blo[3] = {0, y0, 0}, bhi[3] = {hi[0], y0 + 2 * L, 0};
-    int rc = m >= 0 && box_body(s, m, blo, bhi, 1, T0) >= 0 ? 0 : -1;
+    int rc = m >= 0 && sph_box(s, m, blo, bhi, 1, T0) >= 0 ? 0 : -1;
     const double E0 = sum_mT(s), t = 0.3 * L * L / D;
     hearth_error e;
     if (!rc && hearth_scene_advance(s, t, &e)) {
@@ -230,6 +195,7 @@ static double vb_closed(double aw, double T0, double T) {
 static double cluster_dough(double *want) {
     const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.12, 0.12, 0}, aw = 0.95, Thot = 80;
     hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[1] = 0;
     d.sph.tension = 1;
     d.sph.gas_law = 1;
     d.sph.bubble_vapour = aw;

@@ -1,0 +1,48 @@
+/* sph_fixture.h: small helpers for building scenes in the SPH tests
+ * (unit_sph.c, unit_sph_heat.c): the scene definition, a Newtonian
+ * material, and a box body of one particle per dx^dim. */
+#ifndef HEARTH_SPH_FIXTURE_H
+#define HEARTH_SPH_FIXTURE_H
+#include <stdio.h>
+
+#include "hearth/hearth.h"
+#include "scene.h"
+
+static inline hearth_scene_def sph_def(int dim, double dx, const double lo[3], const double hi[3]) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.solver = HEARTH_SOLVER_SPH;
+    d.dim = dim;
+    d.dx = dx;
+    for (int a = 0; a < 3; a++) d.lo[a] = lo[a], d.hi[a] = hi[a];
+    return d;
+}
+
+static inline int newtonian(hearth_scene *s, double rho, double bulk, double eta) {
+    const char *n[] = {"density", "bulk", "viscosity"};
+    const double v[] = {rho, bulk, eta};
+    hearth_error err;
+    int m = hearth_scene_add_material(s, "newtonian", n, v, 3, &err);
+    if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
+    return m;
+}
+
+/* The box [lo, hi], one particle per cell, no jitter; in 2D the box spans z in [-0.5, 0.5]. */
+static inline int sph_box(hearth_scene *s, int mat, const double lo[3], const double hi[3], int fixed, double T) {
+    double c[3], hh[3];
+    for (int a = 0; a < 3; a++) c[a] = 0.5 * (lo[a] + hi[a]), hh[a] = 0.5 * (hi[a] - lo[a]);
+    if (s->def.dim == 2) c[2] = 0, hh[2] = 0.5;
+    hearth_shape *b = hearth_shape_box(c, hh);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = b;
+    bd.material = mat;
+    bd.ppc = 1;
+    bd.jitter = 0;
+    bd.fixed = fixed;
+    bd.temperature = T;
+    hearth_error err;
+    int id = hearth_scene_add_body(s, &bd, &err);
+    if (id < 0) fprintf(stderr, "body: %s\n", err.msg);
+    hearth_shape_free(b);
+    return id;
+}
+#endif
