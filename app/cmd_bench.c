@@ -14,24 +14,6 @@
 #include "hearth/hearth.h"
 #include "progress.h"
 
-/* The library's allocations through a hook that keeps their peak: the
- * transient of growing arrays (old and new both held) shows only there. */
-static size_t bench_now, bench_peak;
-static void *bench_alloc(void *ud, void *ptr, size_t osize, size_t nsize) {
-    (void)ud;
-    if (nsize == 0) {
-        free(ptr);
-        bench_now -= osize;
-        return NULL;
-    }
-    void *q = realloc(ptr, nsize);
-    if (q) {
-        bench_now += nsize - (ptr ? osize : 0);
-        if (bench_now > bench_peak) bench_peak = bench_now;
-    }
-    return q;
-}
-
 int cmd_bench(int argc, char **argv) {
     long threads = 0, cells = 64, steps = 40, dim = 3;
     const char *fields = "none";
@@ -70,9 +52,6 @@ int cmd_bench(int argc, char **argv) {
         if ((*dst = app_parse_int("bench", a, argv[++i], lo, hi)) < 0) return 2;
     }
     if (threads > 0) hearth_set_threads((int)threads);
-    /* before any scene: the hook sees every block it will free (the library held none before) */
-    const size_t held0 = hearth_bytes_allocated();
-    if (held0 == 0) hearth_set_allocator(bench_alloc, NULL);
 
     hearth_scene_def d = hearth_default_scene_def();
     d.dim = (int)dim;
@@ -121,7 +100,7 @@ int cmd_bench(int argc, char **argv) {
            "\"bytes_per_particle\": %.1f, \"capacity_bytes_per_particle\": %.1f, \"peak_bytes_per_particle\": %.1f, "
            "\"dim\": %ld, \"cells\": %ld, \"fields\": \"%s\"}\n",
            n, steps, hearth_get_threads(), secs, (double)n * steps / secs, (double)hearth_scene_bytes_used(s) / n, held / n,
-           held0 == 0 ? (double)bench_peak / n : held / n, dim, cells, hearth_scene_fields(s));
+           (double)hearth_bytes_peak() / n, dim, cells, hearth_scene_fields(s));
     hearth_scene_destroy(s);
     return 0;
 }

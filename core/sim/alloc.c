@@ -19,7 +19,7 @@ static void *default_alloc(void *ud, void *ptr, size_t osize, size_t nsize) {
 
 static hearth_alloc_fn g_fn = default_alloc;
 static void *g_ud;
-static atomic_size_t g_bytes;
+static atomic_size_t g_bytes, g_peak; /* held now, and the most held at once */
 static atomic_long g_fail_after = -1;
 
 void hearth_set_allocator(hearth_alloc_fn fn, void *ud) {
@@ -28,6 +28,8 @@ void hearth_set_allocator(hearth_alloc_fn fn, void *ud) {
 }
 
 size_t hearth_bytes_allocated(void) { return atomic_load(&g_bytes); }
+
+size_t hearth_bytes_peak(void) { return atomic_load(&g_peak); }
 
 void mem_fail_after(long n) { atomic_store(&g_fail_after, n); }
 
@@ -48,7 +50,10 @@ void *mem_realloc(void *p, size_t osize, size_t nsize) {
     void *q = g_fn(g_ud, p, p ? osize : 0, nsize);
     if (!q) return NULL;
     if (p) atomic_fetch_sub(&g_bytes, osize);
-    atomic_fetch_add(&g_bytes, nsize);
+    const size_t held = atomic_fetch_add(&g_bytes, nsize) + nsize;
+    size_t peak = atomic_load(&g_peak);
+    while (held > peak && !atomic_compare_exchange_weak(&g_peak, &peak, held)) {
+    }
     return q;
 }
 

@@ -50,6 +50,8 @@ typedef void *(*hearth_alloc_fn)(void *ud, void *ptr, size_t osize, size_t nsize
 void hearth_set_allocator(hearth_alloc_fn fn, void *ud);
 /// Bytes currently held by the library (particles, grid, scratch), all scenes together.
 size_t hearth_bytes_allocated(void);
+/// The most bytes the library held at once since the process started (growing arrays hold old and new).
+size_t hearth_bytes_peak(void);
 
 /* ---- threads -------------------------------------------------------- */
 
