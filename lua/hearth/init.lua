@@ -48,6 +48,10 @@ local function nearest(word, valid)
 end
 
 local function check_keys(t, valid, what, level)
+  if type(t) ~= "table" then
+    error(("%s: expected a table of options (valid: %s), got a %s"):format(what, table.concat(sorted_keys(valid), ", "),
+      type(t)), level or 3)
+  end
   for k in pairs(t) do
     if not valid[k] then
       local near = type(k) == "string" and nearest(k, valid)
