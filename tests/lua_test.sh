@@ -953,9 +953,10 @@ crust_cracks_over_expanding_crumb)
     echo "EXPECTED FAILURE: the dried crust opened at $opened of 2 resolutions. It cracks (the law's fracture:" \
         "damage 1 along its crown by 0.7 s, cracked particles counted above), and the crumb beneath, no longer" \
         "held, now stays bounded (eq. 10 as a thermal strain, core/sim/material.h: the F = 1 control ends at 39 mm" \
-        "and stays); the crust parts in a V at its crown, but its cracked particles, free in tension, stretch with" \
-        "the gap and heap in it, and the highest particle per column reads them as the surface (without them: 1 cell" \
-        "wide, 0.15 of the height deep at 3 mm; docs/validation.md, Crust (#18))"
+        "and stays). The measure reads the intact material's top (cracked particles heaped in the V are debris):" \
+        "at 3 mm the crust parts at its crown into a V 1 cell wide at 0.15 of the height (2 needed); at 4 mm the" \
+        "crown's crust cracks as a band over an unbroken crumb, no V (crust_cracks_damage.png; docs/validation.md," \
+        "Crust (#18))"
     exit 77
     ;;
 lua_body_force_varies_in_space)

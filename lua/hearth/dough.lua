@@ -122,6 +122,12 @@
 --      times a real oven's), so water takes the bake's own: bread.lua's 2.5 s
 --      stand for a 25 minute bake and muffins.lua's 1.5-3 s for a 20 minute
 --      one, WATER_S = 600 (water rates x600, as h.library.dough's time_scale).
+--      Checked against the heat's own clock: bread.lua's crumb sets (60-70
+--      degC, where a loaf stops rising) at 1.45-1.8 s, and a real loaf's oven
+--      spring lasts its first 10-15 minutes (P. Reinhart 1991, Brother
+--      Juniper's Bread Book; J. Hamelman 2004, Bread), which gives 330-620:
+--      x600 is at the top of that, so a faster water clock has no footing
+--      (docs/validation.md, "The crack measure and the crust's timing").
 --    - diffusivity: 2e-7 m^2/s real (x600: 1.2e-4 m^2/s in the scene), the
 --      effective moisture diffusivity of a baking crumb where evaporation and
 --      condensation of vapour through the pores, not liquid flow, carry the

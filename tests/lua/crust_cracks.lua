@@ -13,7 +13,10 @@
 -- the crumb, no longer held, runs away under eq. 10's expansion through
 -- the crack until the guard stops it, as the unconfined F = 1 dough does.
 -- The crack measure (the same as bread.lua's for the unscored loaf): the top
--- surface as the highest particle in each column of width dx; a column is
+-- surface of the intact material, the highest particle with damage below 1
+-- in each column of width dx (a fully damaged particle carries no tension:
+-- a band of them is the crack, and cracked crust heaped in the V is debris,
+-- not the surface; crack band model, Bazant & Oh 1983); a column is
 -- open when it lies at least 0.1 of the body's height below the lower of the
 -- highest columns within 4 cells on either side; a crack is a run of at
 -- least 2 open columns. Prints "crack W cells, depth D" for each run.
@@ -38,13 +41,13 @@ s:add { shape = h.box({ x0, floor }, { x1, floor + H }), material = m, temperatu
 
 local K = 4 -- cells either side that a crack is measured against
 local function crack()
-  local r = s:particles { fields = { "x" } }
+  local r = s:particles { fields = { "x", "damage" } }
   local xl, top = x0 - 10 * dx, {}
   local nc = math.floor((x1 - x0) / dx + 0.5) + 20
   for c = 1, nc do top[c] = -math.huge end
   for i = 1, r.n do
     local c = math.floor((r.x[3 * i - 2] - xl) / dx) + 1
-    if c >= 1 and c <= nc then top[c] = math.max(top[c], r.x[3 * i - 1]) end
+    if c >= 1 and c <= nc and r.damage[i] < 1 then top[c] = math.max(top[c], r.x[3 * i - 1]) end
   end
   local a, b, hmax = nil, nil, 0
   for c = 1, nc do if top[c] > -math.huge then a = a or c; b = c; hmax = math.max(hmax, top[c] - floor) end end
@@ -77,5 +80,8 @@ for k = 1, 2 do
   print(("dx %g mm, F %g: t %.1f s height %.2f mm, widest opening %d cells, depth %.2f mm (%.3f of the height), %d cracked particles")
     :format(dx * 1e3, P.F, s:stats().t, hm * 1e3, w, d * 1e3, d / hm, nc))
 end
-if P.F > 1 then s:png("saturation", "crust_cracks.png") end
+if P.F > 1 then
+  s:png("saturation", "crust_cracks.png")
+  s:png("damage", "crust_cracks_damage.png", { kind = "particles", range = { 0, 1 } })
+end
 print(("crust_cracks result: dx %g F %g height %.2f mm opening %d cells depth %.3f"):format(dx * 1e3, P.F, hm * 1e3, w, d / hm))

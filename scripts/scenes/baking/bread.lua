@@ -5,11 +5,16 @@
 -- bread.csv: per frame, each loaf's height and each slit's gap width (the
 -- open width of the cut, measured across it just below the loaf's top), each
 -- loaf's area (2D, m^2) or volume (3D, m^3): the sum of V0 J over its
--- particles; and the plain loaf's top crack: the deepest notch in its top
--- profile (crack_depth_m: how far the top at x lies below the lower of the
--- highest tops within 15 mm to its left and to its right) and the notch's
--- width (crack_width_m: the run of x around it where the notch is deeper
--- than half that), sampled every 0.5 mm over the loaf's middle 80%; and (#18) the plain loaf's
+-- particles; and the plain loaf's top crack: the deepest notch in the top of
+-- its intact material (crack_depth_m: how far the top of a one-cell column
+-- lies below the lower of the highest tops within 15 mm (whole cells) to its left and to
+-- its right) and the notch's width (crack_width_m: the run of columns around
+-- it deeper than half that), over the loaf's middle 80%. A column's top is
+-- its highest particle whose damage is below 1: a fully damaged particle
+-- carries no tension (plugins/cam_clay_dough.c), so a band of them is the
+-- crack itself, as in the crack band model (Bazant & Oh 1983, Mater. Constr.
+-- 16:155), and the cracked crust that heaps in the opening is debris, not
+-- its surface (docs/validation.md, Crust (#18)); and (#18) the plain loaf's
 -- water: X/X0 (its water over the water it was given, saturation x J / s_0) of
 -- its top particle on the loaf's axis and of the particle nearest the crumb's
 -- centre (on the axis, 35 mm above the tray), and its count of cracked
@@ -94,27 +99,33 @@ local function areas()
   end
   return a
 end
--- the plain loaf's top crack (header): notch depth and width on its top profile
+-- the plain loaf's top crack (header): notch depth and width on the top of its intact material
 local function crack(x0)
-  local step, win = 0.0005, 0.015
-  local xs, hs = {}, {}
-  for x = x0 - 0.4 * WIDTH, x0 + 0.4 * WIDTH + 1e-9, step do xs[#xs + 1], hs[#hs + 1] = x, height(x) end
-  local n, w = #hs, math.floor(win / step + 0.5)
+  local p = s:particles { fields = { "x", "damage" } }
+  local lo, n, w = x0 - 0.4 * WIDTH, math.floor(0.8 * WIDTH / dx + 0.5), math.floor(0.015 / dx + 0.5)
+  local top = {} -- per one-cell column: the highest intact particle above the tray; an empty column is open to the tray
+  for k = 1, n do top[k] = 0 end
+  for k = 1, p.n do
+    local c = math.floor((p.x[3 * k - 2] - lo) / dx) + 1
+    if c >= 1 and c <= n and p.damage[k] < 1 and (not d3 or math.abs(p.x[3 * k] - zc) < dx / 2) then
+      top[c] = math.max(top[c], p.x[3 * k - 1] - TRAY)
+    end
+  end
   local depth = {}
   for k = 1, n do
     local l, r = 0, 0
-    for j = math.max(1, k - w), k do l = math.max(l, hs[j]) end
-    for j = k, math.min(n, k + w) do r = math.max(r, hs[j]) end
-    depth[k] = math.min(l, r) - hs[k]
+    for j = math.max(1, k - w), k do l = math.max(l, top[j]) end
+    for j = k, math.min(n, k + w) do r = math.max(r, top[j]) end
+    depth[k] = math.min(l, r) - top[k]
   end
   local kmax = 1
   for k = 2, n do if depth[k] > depth[kmax] then kmax = k end end
   local d = depth[kmax]
   if not (d > 0) then return 0, 0 end
-  local lo, hi = kmax, kmax
-  while lo > 1 and depth[lo - 1] > d / 2 do lo = lo - 1 end
-  while hi < n and depth[hi + 1] > d / 2 do hi = hi + 1 end
-  return d, (hi - lo + 1) * step
+  local a, b = kmax, kmax
+  while a > 1 and depth[a - 1] > d / 2 do a = a - 1 end
+  while b < n and depth[b + 1] > d / 2 do b = b + 1 end
+  return d, (b - a + 1) * dx
 end
 
 -- the plain loaf's water (header): X/X0 of its top particle and its crumb's centre, and its cracked particles

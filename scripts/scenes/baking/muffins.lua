@@ -4,7 +4,8 @@
 -- muffins.csv: per frame and cup, the top of the batter at the cup's centre
 -- above the rim, its centre's height above its edge, the curvature of
 -- its top (negative = domed), and its deepest tear (#18): over the one-cell
--- bins of its top across the cup, how far a bin's top lies below the lower of
+-- bins of the top of its intact material (particles with damage below 1; see
+-- tops) across the cup, how far a bin's top lies below the lower of
 -- the highest tops on its left and on its right (tear_depth), and the width
 -- of the run of bins around it deeper than half that (tear_width, m); and
 -- (#18) the first cup's water: X/X0 (water over the water given, saturation x
@@ -56,14 +57,18 @@ end
 local RIM = BASE + CUP_H
 
 -- The top of each cup's batter from its particles: in bins one cell wide
--- across the cup (in 3D on the slab |z - zc| < dx/2), the highest particle.
-local function tops()
-  local x = s:positions()
+-- across the cup (in 3D on the slab |z - zc| < dx/2), the highest particle;
+-- with `intact`, the highest whose damage is below 1 (the tear's measure, as
+-- bread.lua's crack: a band of fully damaged particles is the tear itself,
+-- and cracked crust heaped in it is debris, not the top).
+local function tops(intact)
+  local q = s:particles { fields = { "x", "damage" } }
+  local x = q.x
   local t = {}
   for i = 1, P.cups do t[i] = {} end
-  for p = 0, #x // 3 - 1 do
+  for p = 0, q.n - 1 do
     local px, py, pz = x[3 * p + 1], x[3 * p + 2], x[3 * p + 3]
-    if not d3 or math.abs(pz - zc) < dx / 2 then
+    if (not d3 or math.abs(pz - zc) < dx / 2) and not (intact and q.damage[p + 1] >= 1) then
       local i = math.floor(px / SPACING) + 1
       if xs[i] and math.abs(px - xs[i]) <= R then
         local b = math.floor((px - xs[i]) / dx + 0.5)
@@ -134,10 +139,10 @@ local rows = { table.concat(head, ",") }
 s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png" },
   on_frame = function(f)
     local r = { ("%.3f"):format(f.t) }
-    local t = tops()
+    local t, ti = tops(false), tops(true)
     for i = 1, P.cups do
       local c, ce, k = measure(t[i])
-      local td, tw = tear(t[i])
+      local td, tw = tear(ti[i])
       r[#r + 1] = ("%.5f,%.5f,%.3f,%.5f,%.5f"):format(c - RIM, ce, k, td, tw)
     end
     r[#r + 1] = ("%.4f,%.4f,%d"):format(water())
