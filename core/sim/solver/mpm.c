@@ -70,7 +70,7 @@
 
 #define FORCE_INLINE static inline __attribute__((always_inline))
 
-/* two doubles, one SSE2 register: G2P's 3D sums run in pairs of lanes */
+/* two doubles, one SSE2 register: 3D P2G's scatter and G2P's sums run in pairs of lanes */
 typedef double v2d __attribute__((vector_size(16)));
 
 /* ---- state ----------------------------------------------------------- */
@@ -123,6 +123,14 @@ FORCE_INLINE int all_finite(const double *a, const int n) {
     return z == 0.0;
 }
 
+/* p[0..1] += x (unaligned: a stencil may start at any node of the tile) */
+FORCE_INLINE void p2g_add2(double *p, v2d x) {
+    v2d y;
+    memcpy(&y, p, sizeof y);
+    y += x;
+    memcpy(p, &y, sizeof y);
+}
+
 /* P2G's tile holds only the channels it writes: momentum, then heat, then
  * water, then the volume sum_p w_ip J V_0 (boundary.c's volume fraction; it
  * goes to CH_CG_R, which grid_activate zeroes in a field scene). */
@@ -134,14 +142,6 @@ static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T,
  * instantiation below, so a momentum-only scene runs the momentum-only loops
  * and a scene without sticky colliders carries no test for them (a runtime
  * test there cost 0.5% of P2G's instructions). */
-/* p[0..1] += x (unaligned: a stencil may start at any node of the tile) */
-FORCE_INLINE void p2g_add2(double *p, v2d x) {
-    v2d y;
-    memcpy(&y, p, sizeof y);
-    y += x;
-    memcpy(p, &y, sizeof y);
-}
-
 FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const int WATER, const int MIRROR, int k, double dt,
                             double *tile) {
     grid *g = &s->g;

@@ -75,7 +75,7 @@ void mpm_p2g_stress(hearth_scene *s, int D, int i0, int n, double dt, unsigned e
             /* Every entry of F is a factor of a product in J, and +, - and * of an inf or NaN give an inf or
              * a NaN: a finite J means a finite F. So finite9 is needed only when J is +inf (finite entries
              * whose products overflow), and the test is the same as J > 0 && finite9(F) for every F. It
-             * saves the nine entry tests of a particle-step (3D, about 30 instructions; callgrind). */
+             * saves the nine entry tests: 23 instructions a particle-step in 3D, 14 in 2D (callgrind). */
             fine = J > 0 && (J <= DBL_MAX || finite9(F));
         }
         Js[j] = J;
