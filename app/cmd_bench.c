@@ -6,6 +6,8 @@
  * neo-Hookean E = 1e5 Pa, nu = 0.3, rho = 1000, gravity, sticky walls,
  * dt = 1e-4 * 64 / cells. With --fields the same particles also carry heat
  * (an oven), or heat, CO2 and water (scripts/bench/fields_overhead.sh). */
+#include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,7 +36,8 @@ int cmd_bench(int argc, char **argv) {
                    "threads, seconds, particle_steps_per_s, bytes_per_particle (what particles and grid\n"
                    "fill), capacity_bytes_per_particle (held, spare room included) and\n"
                    "peak_bytes_per_particle (the most held at once).\n"
-                   "--fields heat adds an oven (temperature); all adds leavening CO2 and water too.\n");
+                   "--fields heat adds an oven (temperature); all adds leavening CO2 and water too.\n"
+                   "A size whose particles cannot fit (count, or this machine's memory) is refused with the numbers.\n");
             return 0;
         }
         if (i + 1 >= argc) {
@@ -48,8 +51,20 @@ int cmd_bench(int argc, char **argv) {
             fprintf(stderr, "hearth bench: unknown option '%s' (see --help)\n", a);
             return 2;
         }
-        long lo = dst == &dim ? 2 : dst == &cells ? 16 : 1, hi = dst == &dim ? 3 : dst == &cells ? 1024 : 1000000;
+        /* --cells up to the grid's own limit per axis (grid.h's GRID_CELLS_MAX); the sizes that cannot fit are
+         * refused below by their particle count, and by the library (grid blocks, memory) with its numbers */
+        long lo = dst == &dim ? 2 : dst == &cells ? 16 : 1, hi = dst == &dim ? 3 : dst == &cells ? 1L << 22 : 1000000;
         if ((*dst = app_parse_int("bench", a, argv[++i], lo, hi)) < 0) return 2;
+    }
+    /* The block is 0.6 of the box per side at 2 particles per cell per axis: about (1.2 cells)^dim particles.
+     * A scene holds at most INT_MAX / 2 (scene.c); refuse here, before the grid is made, with the largest size
+     * that fits. Memory is the library's check at seeding (its bytes per particle against this machine's). */
+    const double per_axis = 1.2 * (double)cells + 1.0, count = dim == 3 ? per_axis * per_axis * per_axis : per_axis * per_axis;
+    if (count > (double)(INT_MAX / 2)) {
+        const long most = (long)((dim == 3 ? cbrt((double)(INT_MAX / 2)) : sqrt((double)(INT_MAX / 2))) - 1.0) * 5 / 6;
+        fprintf(stderr, "hearth bench: --cells %ld in %ldD gives about %.3g particles; a scene holds at most %d, so --cells is "
+                        "at most %ld in %ldD\n", cells, dim, count, INT_MAX / 2, most, dim);
+        return 2;
     }
     if (threads > 0) hearth_set_threads((int)threads);
 

@@ -379,6 +379,23 @@ cli_bad_usage)
     "$hearth" bench --cells x 2>"$tmp/e"; [ $? -eq 2 ] || fail "bad number should exit 2"
     grep -q "\-\-cells needs a whole number" "$tmp/e" || fail "message: $(cat "$tmp/e")"
     ;;
+cli_bench_size_limits)
+    # --cells is no longer held at 1024: past it the bench runs (2D, 1030 cells: 1.5M particles) ...
+    out=$("$hearth" bench --dim 2 --cells 1030 --steps 1 2>"$tmp/e") || fail "1030 cells in 2D exited $?: $(cat "$tmp/e")"
+    echo "$out" | grep -q '"cells": 1030' || fail "bench JSON: $out"
+    # ... a size whose particles a scene cannot hold is refused before anything is made, naming the largest ...
+    "$hearth" bench --dim 3 --cells 900 --steps 1 2>"$tmp/e"; [ $? -eq 2 ] || fail "900 cells in 3D should exit 2"
+    grep -qF "hearth bench: --cells 900 in 3D gives about 1.26e+09 particles; a scene holds at most 1073741823, so --cells is at most 851 in 3D" "$tmp/e" ||
+        fail "message: $(cat "$tmp/e")"
+    # ... and one this machine's memory cannot hold is the library's refusal at seeding, with its numbers
+    mem=$(awk '/^MemTotal/ {print $2 * 1024}' /proc/meminfo)
+    if python3 -c "import sys; sys.exit(0 if $mem < 1.5e11 else 1)"; then
+        "$hearth" bench --dim 2 --cells 27305 --steps 1 2>"$tmp/e"; [ $? -eq 1 ] || fail "27305 cells in 2D should exit 1"
+        grep -q "hearth bench: seed: 1.07.*e+09 particles would need about .* GB (.* bytes each); this machine has .* GB of memory" "$tmp/e" ||
+            fail "message: $(cat "$tmp/e")"
+    fi
+    cat "$tmp/e"
+    ;;
 cli_check_segv_stress)
     # a plugin that segfaults in stress: the battery runs in a child, the parent names plugin and callback
     out=$("$hearth" plugin check "$HEARTH_TEST_PLUGIN_DIR/hearth_segv_stress.so" 2>&1); rc=$?

@@ -70,6 +70,9 @@
 
 #define FORCE_INLINE static inline __attribute__((always_inline))
 
+/* two doubles, one SSE2 register: 3D P2G's scatter and G2P's sums run in pairs of lanes */
+typedef double v2d __attribute__((vector_size(16)));
+
 /* ---- state ----------------------------------------------------------- */
 
 static void mpm_free(hearth_scene *s) {
@@ -118,6 +121,14 @@ FORCE_INLINE int all_finite(const double *a, const int n) {
     double z = 0.0;
     for (int k = 0; k < n; k++) z += a[k] - a[k];
     return z == 0.0;
+}
+
+/* p[0..1] += x (unaligned: a stencil may start at any node of the tile) */
+FORCE_INLINE void p2g_add2(double *p, v2d x) {
+    v2d y;
+    memcpy(&y, p, sizeof y);
+    y += x;
+    memcpy(p, &y, sizeof y);
 }
 
 /* P2G's tile holds only the channels it writes: momentum, then heat, then
@@ -202,6 +213,9 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
         const double mw = WATER ? Wcol[i] : 0.0, cap = WATER ? s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * J * V0[i] : 0.0;
         /* the stencil's corner in the tile: the 3^dim nodes then sit at constant offsets from it */
         double *const tp = tile + (D == 2 ? base[0] * GRID_T + base[1] : (base[0] * GRID_T + base[1]) * GRID_T + base[2]);
+        /* 3D: the c = 0, 1 pair's weights along z and offsets (c - fx) dx, and c = 2's offset */
+        const v2d w2_01 = {w[2][0], w[2][1]}, d2_01 = {(0 - fx[2]) * dx, (1 - fx[2]) * dx};
+        const double d2_2 = (2 - fx[2]) * dx;
         for (int a = 0; a < 3; a++) {
             /* the volume weighs in as (V w_a) w_b w_c, the order of the pass it replaced: the same bits */
             const double d0 = (a - fx[0]) * dx, va = vi * w[0][a];
@@ -222,13 +236,26 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                     }
                     if (HEAT || WATER) tp[P2G_V * TN + t] += vab;
                 } else {
-                    for (int c = 0; c < 3; c++) {
-                        const double d2 = (c - fx[2]) * dx, wt = wab * w[2][c];
-                        const int t = (a * GRID_T + b) * GRID_T + c;
-                        tp[t] += wt * m;
-                        tp[TN + t] += wt * (mv0 + Q[0] * d0 + Q[1] * d1 + Q[2] * d2);
-                        tp[2 * TN + t] += wt * (mv1 + Q[3] * d0 + Q[4] * d1 + Q[5] * d2);
-                        tp[3 * TN + t] += wt * (mv2 + Q[6] * d0 + Q[7] * d1 + Q[8] * d2);
+                    /* Momentum: the nodes c = 0 and 1 are adjacent in the tile, so they go as a pair of lanes
+                     * (c = 2 alone). ((mv + Q d0) + Q d1) is the same for the three c, and each lane does the
+                     * scalar expression's operations in its order: the same bits, 3D P2G's scatter in fewer
+                     * instructions (callgrind). */
+                    const int t0 = (a * GRID_T + b) * GRID_T;
+                    const double s0 = mv0 + Q[0] * d0 + Q[1] * d1, s1 = mv1 + Q[3] * d0 + Q[4] * d1,
+                                 s2 = mv2 + Q[6] * d0 + Q[7] * d1;
+                    const v2d w01 = (v2d){wab, wab} * w2_01;
+                    p2g_add2(tp + t0, w01 * (v2d){m, m});
+                    p2g_add2(tp + TN + t0, w01 * ((v2d){s0, s0} + (v2d){Q[2], Q[2]} * d2_01));
+                    p2g_add2(tp + 2 * TN + t0, w01 * ((v2d){s1, s1} + (v2d){Q[5], Q[5]} * d2_01));
+                    p2g_add2(tp + 3 * TN + t0, w01 * ((v2d){s2, s2} + (v2d){Q[8], Q[8]} * d2_01));
+                    const double wt2 = wab * w[2][2];
+                    tp[t0 + 2] += wt2 * m;
+                    tp[TN + t0 + 2] += wt2 * (s0 + Q[2] * d2_2);
+                    tp[2 * TN + t0 + 2] += wt2 * (s1 + Q[5] * d2_2);
+                    tp[3 * TN + t0 + 2] += wt2 * (s2 + Q[8] * d2_2);
+                    for (int c = 0; c < (HEAT || WATER ? 3 : 0); c++) {
+                        const double wt = wab * w[2][c];
+                        const int t = t0 + c;
                         if (HEAT) {
                             tp[P2G_HC * TN + t] += wt * hc;
                             tp[P2G_T * TN + t] += wt * hct;
@@ -480,6 +507,13 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         double nv[3] = {0, 0, 0}, B[9] = {0}, dT = 0, Tn = 0, ds = 0; /* 2D sums B's in-plane entries 0, 1, 3, 4 */
         /* the stencil's corner in the tile: the 3^dim nodes then sit at constant offsets from it */
         const double *const tp = tile + (D == 2 ? base[0] * GRID_T + base[1] : (base[0] * GRID_T + base[1]) * GRID_T + base[2]);
+        /* 3D sums nv and B in pairs of lanes: Ak = {B[3k], B[3k+1]} += (wt u_k) {d0, d1} and Nk = {nv[k], B[3k+2]}
+         * += (wt u_k) {1, d2}. Each lane does the scalar sum's operations in its order ((wt u_k) 1 is wt u_k
+         * exactly), so the bits are the same; the sums take half the instructions (3D G2P, callgrind). */
+        v2d A0 = {0, 0}, A1 = {0, 0}, A2 = {0, 0}, N0 = {0, 0}, N1 = {0, 0}, N2 = {0, 0};
+        v2d q2[3] = {{1.0, 0.0}, {1.0, 0.0}, {1.0, 0.0}};
+        if (D == 3)
+            for (int c = 0; c < 3; c++) q2[c][1] = (c - fx[2]) * dx;
         for (int a = 0; a < 3; a++) {
             const double d0 = (a - fx[0]) * dx;
             for (int b = 0; b < 3; b++) {
@@ -494,19 +528,26 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                     B[0] += wab * u0 * d0; B[1] += wab * u0 * d1;
                     B[3] += wab * u1 * d0; B[4] += wab * u1 * d1;
                 } else {
+                    const v2d p01 = {d0, d1};
                     for (int c = 0; c < 3; c++) {
-                        const double d2 = (c - fx[2]) * dx, wt = wab * w[2][c];
+                        const double wt = wab * w[2][c];
                         const int t = (a * GRID_T + b) * GRID_T + c;
-                        const double u0 = tp[t], u1 = tp[TN + t], u2 = tp[2 * TN + t];
                         if (HEAT) dT += wt * tp[3 * TN + t], Tn += wt * tp[4 * TN + t];
                         if (WATER) ds += wt * tp[5 * TN + t];
-                        nv[0] += wt * u0; nv[1] += wt * u1; nv[2] += wt * u2;
-                        B[0] += wt * u0 * d0; B[1] += wt * u0 * d1; B[2] += wt * u0 * d2;
-                        B[3] += wt * u1 * d0; B[4] += wt * u1 * d1; B[5] += wt * u1 * d2;
-                        B[6] += wt * u2 * d0; B[7] += wt * u2 * d1; B[8] += wt * u2 * d2;
+                        const double wu0 = wt * tp[t], wu1 = wt * tp[TN + t], wu2 = wt * tp[2 * TN + t];
+                        const v2d g0 = {wu0, wu0}, g1 = {wu1, wu1}, g2 = {wu2, wu2};
+                        A0 += g0 * p01; N0 += g0 * q2[c];
+                        A1 += g1 * p01; N1 += g1 * q2[c];
+                        A2 += g2 * p01; N2 += g2 * q2[c];
                     }
                 }
             }
+        }
+        if (D == 3) {
+            nv[0] = N0[0], nv[1] = N1[0], nv[2] = N2[0];
+            B[0] = A0[0], B[1] = A0[1], B[2] = N0[1];
+            B[3] = A1[0], B[4] = A1[1], B[5] = N1[1];
+            B[6] = A2[0], B[7] = A2[1], B[8] = N2[1];
         }
         if (D == 2) C[0] = Dinv * B[0], C[1] = Dinv * B[1], C[2] = Dinv * B[3], C[3] = Dinv * B[4];
         else

@@ -58,7 +58,8 @@ void mpm_p2g_stress(hearth_scene *s, int D, int i0, int n, double dt, unsigned e
             t2_advance(C, F, dt, Fn);
             memcpy(F, Fn, sizeof Fn);
             J = t2_det(F);
-            fine = J > 0 && isfinite(F[0]) && isfinite(F[1]) && isfinite(F[2]) && isfinite(F[3]);
+            /* a finite J means a finite F (every entry is a factor of J: see the 3D branch) */
+            fine = J > 0 && (J <= DBL_MAX || (isfinite(F[0]) && isfinite(F[1]) && isfinite(F[2]) && isfinite(F[3])));
             t2_embed(F, 1.0, F3);
             t2_embed(C, 0.0, C3);
             for (int c = 0; c < 9; c++) Fs[c][j] = F3[c], Ls[c][j] = C3[c];
@@ -71,7 +72,11 @@ void mpm_p2g_stress(hearth_scene *s, int D, int i0, int n, double dt, unsigned e
             memcpy(F, Fn, sizeof Fn);
             for (int c = 0; c < 9; c++) Fs[c][j] = Fn[c], Ls[c][j] = C[c];
             J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
-            fine = J > 0 && finite9(F);
+            /* Every entry of F is a factor of a product in J, and +, - and * of an inf or NaN give an inf or
+             * a NaN: a finite J means a finite F. So finite9 is needed only when J is +inf (finite entries
+             * whose products overflow), and the test is the same as J > 0 && finite9(F) for every F. It
+             * saves the nine entry tests: 23 instructions a particle-step in 3D, 14 in 2D (callgrind). */
+            fine = J > 0 && (J <= DBL_MAX || finite9(F));
         }
         Js[j] = J;
         kind[j] = pflags && (pflags[i] & PF_FIXED) ? P_FIXED : !fine ? P_BADF : P_LIVE;
