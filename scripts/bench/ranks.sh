@@ -40,11 +40,18 @@ one() {
 echo "# ranks.sh: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg), dim $dim, cells $cells, $steps steps"
 echo "| kind | ranks x threads | particles | per rank | ms a step | comm share (max) | comm s | bytes received a step (max) | slab steps |"
 echo "|---|---|---|---|---|---|---|---|---|"
+# row JSON: the table's line
+row() {
+    python3 - "$1" <<'PY'
+import json, sys
+r = json.loads(sys.argv[1])
+print("| %s | %d x %d | %d | %.0f | %.1f | %.0f%% | %.3f | %.0f | %d |" % (
+    r["scaling"], r["ranks"], r["threads"], r["particles"], r["particles_per_rank"], r["ms_per_step"],
+    100 * r["comm_share"], r["comm_seconds"], r["bytes_received_per_step"], r["slab_steps"]))
+PY
+}
+
 for cfg in "strong 1 1" "strong 1 2" "strong 2 1" "strong 4 1" "weak 1 1" "weak 2 1" "weak 4 1"; do
     set -- $cfg
-    one "$1" "$2" "$3" | python3 -c '
-import json, sys
-r = json.loads(sys.stdin.read())
-print(f"| {r[\"scaling\"]} | {r[\"ranks\"]} x {r[\"threads\"]} | {r[\"particles\"]} | {r[\"particles_per_rank\"]:.0f} | {r[\"ms_per_step\"]:.1f} | "
-      f"{100 * r[\"comm_share\"]:.0f}% | {r[\"comm_seconds\"]:.3f} | {r[\"bytes_received_per_step\"]:.0f} | {r[\"slab_steps\"]} |")'
+    row "$(one "$1" "$2" "$3")"
 done
