@@ -610,7 +610,7 @@ static rank_report report_leaf(const step_report *q, double vcol, long clamped, 
     rank_report l = {.rep = {.particle = -1, .fastest = -1, .mover = -1}, .vcol = vcol > 0 ? vcol : 0, .clamped = clamped, .n = n, .blocks = blocks};
     step_report *t = &l.rep;
     if (q->particle >= 0) t->particle = q->particle, t->kind = q->kind, t->code = q->code;
-    if (q->fastest >= 0) t->max_speed = q->max_speed, t->fastest = q->fastest;
+    if (q->fastest >= 0 && q->max_speed > -1) t->max_speed = q->max_speed, t->fastest = q->fastest; /* the fold never took a NaN */
     if (q->max_move > 0) t->max_move = q->max_move, t->mover = q->mover >= 0 ? q->mover : -1;
     t->kinetic = q->kinetic, t->mass = q->mass, t->out_of_domain = q->out_of_domain;
     t->c_max = q->c_max > 0 ? q->c_max : 0;
