@@ -1,9 +1,11 @@
 /* cmd_run_ranks.c: `mpirun -n N hearth run`: what the ranks other than 0 do
- * with their outputs. Every rank holds the whole scene (core/sim/solver/
- * mpm_ranks.c), so rank 0 alone writes the outputs (PNG, CSV, probes,
- * VTU, the run record) and prints; the others run the same scene file into a
- * private scratch folder, removed at the end, and print nothing (set
- * HEARTH_RANKS_VERBOSE=1 to keep their messages). Rejected: a write switch
+ * with their outputs. Every reader sees the whole scene on every rank
+ * (core/sim/solver/mpm_ranks.c), so rank 0 alone writes the outputs (PNG,
+ * CSV, probes, s:vtu, the run record) and prints; the others run the same
+ * scene file into a private scratch folder, removed at the end, and print
+ * nothing (set HEARTH_RANKS_VERBOSE=1 to keep their messages). The one
+ * exception, s:run's VTU frames, are a piece per rank that every rank
+ * writes into rank 0's folder (out_shared, lua_output.c's l_vtu_frame). Rejected: a write switch
  * in the core, which every writer (atomic files, PNG, Lua's io.open) would
  * have to consult. */
 /* nftw and mkdtemp: the build defines _XOPEN_SOURCE */

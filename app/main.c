@@ -35,6 +35,8 @@ static void usage(FILE *f) {
             "                                run a scene over a ladder of settings: cost, error and order of each\n"
             "  hearth bench [--threads N] [--cells N] [--steps N] [--dim 2|3]\n"
             "                                throughput of a standard elastic block, as JSON\n"
+            "  mpirun -n N hearth bench --ranks [--weak] [--cells N] [--dim 2|3]\n"
+            "                                the block over N MPI ranks: step time, communication share, bytes\n"
             "  hearth help scene             every h.scene{...} setting: unit, default, range, help\n"
             "  hearth doc man|lua            print the generated settings sections of docs/hearth.1, docs/lua.md\n"
             "  hearth --help | --version\n"
@@ -121,18 +123,20 @@ int main(int argc, char **argv) {
         fprintf(stderr, "hearth plugin: unknown action '%s'; try: hearth plugin check FILE.so\n", argc >= 3 ? argv[2] : "");
         return 2;
     }
-    if (!strcmp(c, "bench")) return cmd_bench(argc - 1, argv + 1);
-    if (!strcmp(c, "run")) { /* the one command that runs over mpirun's ranks (docs/scaling.md) */
+    int bench_ranks = 0; /* hearth bench --ranks: the other command that runs over mpirun's ranks */
+    for (int i = 2; !strcmp(c, "bench") && i < argc; i++) bench_ranks |= !strcmp(argv[i], "--ranks");
+    if (!strcmp(c, "bench") && !bench_ranks) return cmd_bench(argc - 1, argv + 1);
+    if (!strcmp(c, "run") || bench_ranks) { /* the commands that run over mpirun's ranks (docs/scaling.md) */
         hearth_ranks_init(&argc, &argv);
         const char *world = getenv("OMPI_COMM_WORLD_SIZE") ? getenv("OMPI_COMM_WORLD_SIZE") : getenv("PMI_SIZE");
         const char *no_ranks = getenv("HEARTH_NO_RANKS");
         if (!hearth_ranks_built() && world && atoi(world) > 1 && !(no_ranks && no_ranks[0] == '1')) { /* N copies would each run the whole scene */
-            fprintf(stderr, "hearth run: started as one of %d MPI ranks, but this hearth was built without MPI; "
+            fprintf(stderr, "hearth %s: started as one of %d MPI ranks, but this hearth was built without MPI; "
                             "rebuild with libopenmpi-dev installed (meson -Dmpi=enabled), or run it without mpirun\n",
-                    atoi(world));
+                    c, atoi(world));
             return 2;
         }
-        const int st = cmd_run(argc - 1, argv + 1);
+        const int st = bench_ranks ? cmd_bench(argc - 1, argv + 1) : cmd_run(argc - 1, argv + 1);
         if (st && hearth_ranks_size() > 1) {
             /* A failure on one rank alone (a file rank 0 could not write) leaves the
              * others waiting in the next exchange, where MPI_Finalize would wait for

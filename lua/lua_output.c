@@ -62,32 +62,36 @@ static const char *resolve_target(const char *path, char *out, size_t n) {
     return NULL;
 }
 
-const char *hl_out_path(lua_State *L, const char *call, const char *path, int flags, char *buf, size_t n) {
+/* path resolved in the folder out_dir (the output folder, or under mpirun
+ * rank 0's output folder for a rank > 0: io_pvtu's pieces), checked as
+ * hl_out_path says */
+static const char *out_path_in(lua_State *L, const char *out_dir, const char *call, const char *path, int flags,
+                               char *buf, size_t n) {
     const hl_options *o = hl_opts(L);
     int w;
-    if (path[0] == '/' || !o->out_dir || (flags & HL_PATH_AS_IS)) w = snprintf(buf, n, "%s", path);
-    else w = snprintf(buf, n, "%s/%s", o->out_dir, path);
+    if (path[0] == '/' || !out_dir || (flags & HL_PATH_AS_IS)) w = snprintf(buf, n, "%s", path);
+    else w = snprintf(buf, n, "%s/%s", out_dir, path);
     if (w < 0 || (size_t)w >= n) /* a cut path would name another file than the one checked and asked for */
         return hl_errorf(L, "%s: the path '%.200s...' is longer than %zu bytes", call, path, n - 1), (const char *)NULL;
     if (!o->trusted) {
         char out_real[PATH_MAX], target[PATH_MAX];
         hearth_error err;
-        if (!o->out_dir || hearth_mkdir_p(o->out_dir, &err) || !realpath(o->out_dir, out_real))
+        if (!out_dir || hearth_mkdir_p(out_dir, &err) || !realpath(out_dir, out_real))
             return luaL_error(L, "%s: '%s': the output folder '%s' cannot be resolved, so a scene without --trust cannot "
-                                 "write (run with --trust to allow it)", call, path, o->out_dir ? o->out_dir : "(none)"),
+                                 "write (run with --trust to allow it)", call, path, out_dir ? out_dir : "(none)"),
                    (const char *)NULL;
         const char *why = resolve_target(buf, target, sizeof target);
         if (why)
             return luaL_error(L, "%s: '%s' is refused: %s, so it may lead outside the output folder '%s'; a scene "
                                  "without --trust writes only inside its output folder (run with --trust to allow it)",
-                              call, path, why, o->out_dir),
+                              call, path, why, out_dir),
                    (const char *)NULL;
         size_t ol = strlen(out_real);
         int inside = !strcmp(out_real, "/") || (!strncmp(target, out_real, ol) && (target[ol] == '/' || target[ol] == '\0'));
         if (!inside)
             return luaL_error(L, "%s: '%s' is outside the output folder '%s' (it resolves to '%s'); a scene without "
                                  "--trust writes only inside its output folder (run with --trust to allow it)",
-                              call, path, o->out_dir, target),
+                              call, path, out_dir, target),
                    (const char *)NULL;
     }
     if (flags & HL_PATH_MKDIRS) { /* make the file's folder, so "frames/t0001.png" just works */
@@ -101,6 +105,10 @@ const char *hl_out_path(lua_State *L, const char *call, const char *path, int fl
         }
     }
     return buf;
+}
+
+const char *hl_out_path(lua_State *L, const char *call, const char *path, int flags, char *buf, size_t n) {
+    return out_path_in(L, hl_opts(L)->out_dir, call, path, flags, buf, n);
 }
 
 const char *hl_in_path(lua_State *L, const char *path, char *buf, size_t n) {
@@ -221,6 +229,30 @@ static int dump(lua_State *L, const char *call, hearth_status (*fn)(const hearth
     return 1;
 }
 static int l_vtu(lua_State *L) { return dump(L, "s:vtu", hearth_write_vtu); }
+
+/* s:_vtu_frame(path) -> the file the .pvd lists: s:run's VTU frame. On one
+ * process path itself (s:vtu). Under mpirun every rank writes its particles
+ * as a piece beside PATH.pvtu (path's .vtu replaced) and rank 0 the index,
+ * without gathering the slabs (io_pvtu.c). A rank > 0 writes into its
+ * scratch folder otherwise, so its piece goes to rank 0's output folder
+ * (in_dir), checked there as rank 0 checks it. */
+static int l_vtu_frame(lua_State *L) {
+    if (hearth_ranks_size() == 1) return dump(L, "s:vtu", hearth_write_vtu);
+    hl_scene *u = hl_checkscene_slabs(L, 1);
+    size_t len;
+    const char *given = luaL_checklstring(L, 2, &len);
+    lua_pushlstring(L, given, len >= 4 && !strcmp(given + len - 4, ".vtu") ? len - 4 : len);
+    lua_pushliteral(L, ".pvtu");
+    lua_concat(L, 2);
+    const char *index = lua_tostring(L, -1);
+    const hl_options *o = hl_opts(L);
+    char buf[4096];
+    const char *path = out_path_in(L, o->in_dir ? o->in_dir : o->out_dir, "s:run{vtu = ...}", index, HL_PATH_MKDIRS, buf, sizeof buf);
+    hearth_error err;
+    if (hearth_write_vtu_pieces(u->s, path, &err)) return hl_raise(L, &err);
+    lua_pushstring(L, path);
+    return 1;
+}
 
 /* s:ply(path [, {color = "temperature" | false, range = {lo, hi}, colormap = "viridis"}]) */
 static int l_ply(lua_State *L) {
@@ -364,7 +396,7 @@ static int l_movie(lua_State *L) {
 void hl_open_output(lua_State *L) {
     luaL_getmetatable(L, HL_SCENE);
     lua_getfield(L, -1, "__index");
-    static const luaL_Reg methods[] = {{"png", l_png}, {"vtu", l_vtu}, {"ply", l_ply}, {"save", l_save}, {NULL, NULL}};
+    static const luaL_Reg methods[] = {{"png", l_png}, {"vtu", l_vtu}, {"_vtu_frame", l_vtu_frame}, {"ply", l_ply}, {"save", l_save}, {NULL, NULL}};
     luaL_setfuncs(L, methods, 0);
     lua_pop(L, 2);
     lua_pushcfunction(L, l_write_atomic);

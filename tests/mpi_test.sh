@@ -133,6 +133,70 @@ for r in range(N):
 sys.exit(0 if ok else 1)
 PY
     ;;
+mpi_vtu_pieces_read_as_one)
+    # s:run's VTU frames over N ranks: a piece per rank and a .pvtu index, no
+    # whole-set gather; VTK reads them as the one-process run's frames
+    "$hearth" run "$here/mpi/pieces.lua" --out "$tmp/one" --quiet >"$tmp/one.txt" || fail "one-process run failed"
+    HEARTH_RANKS_REPORT=1 mp "$ranks" frames pieces.lua >"$tmp/frames.txt" 2>"$tmp/err.txt" || fail "$ranks-rank run failed (status $?)"
+    cat "$tmp/err.txt"
+    grep -q "whole-set gathers 0 MB" "$tmp/err.txt" || fail "the VTU frames gathered the whole scene"
+    mp "$ranks" many pieces.lua --set whole=1 >"$tmp/many.txt" || fail "$ranks-rank run with the gathered file failed (status $?)"
+    py=python3
+    for p in python3 /usr/bin/python3; do command -v $p >/dev/null 2>&1 && $p -c "import vtk" 2>/dev/null && { py=$p; break; }; done
+    $py "$here/vtk_pieces.py" "$tmp/one" "$tmp/many" "$ranks"
+    st=$?
+    [ $st = 77 ] && exit 77
+    [ $st = 0 ] || fail "the pieces do not read as the one-process frames"
+    ;;
+mpi_bench_ranks_prints_keys)
+    # hearth bench --ranks: one JSON row for the rank count, strong and weak,
+    # with its keys; plain (no mpirun) the one-rank row and a note saying so.
+    # Nothing about speed is asserted (docs/scaling.md has the measured tables).
+    "$hearth" bench --ranks --dim 2 --cells 32 --steps 4 >"$tmp/one.json" 2>"$tmp/one.err" || fail "bench --ranks without mpirun failed"
+    grep -q "not started by mpirun" "$tmp/one.err" || fail "no note that the run without mpirun is the one-rank row: $(cat "$tmp/one.err")"
+    "$hearth" bench --weak --dim 2 2>"$tmp/weak.err" && fail "--weak without --ranks was accepted"
+    grep -q "goes with --ranks" "$tmp/weak.err" || fail "no clear message for --weak alone"
+    for kind in strong weak; do
+        flag=""
+        [ $kind = weak ] && flag=--weak
+        timeout 50 mpirun --oversubscribe -n "$ranks" "$hearth" bench --ranks $flag --dim 2 --cells 32 --steps 4 --threads 1 \
+            >"$tmp/$kind.json" || fail "mpirun -n $ranks hearth bench --ranks $flag failed"
+    done
+    cat "$tmp/one.json" "$tmp/strong.json" "$tmp/weak.json"
+    python3 - "$tmp/one.json" "$tmp/strong.json" "$tmp/weak.json" "$ranks" <<'PY' || fail "bench --ranks rows"
+import json, sys
+keys = ["ranks", "threads", "scaling", "dim", "cells", "particles", "particles_per_rank", "steps", "seconds",
+        "ms_per_step", "particle_steps_per_s", "comm_share", "comm_seconds", "bytes_received_per_step",
+        "slab_steps", "replicated_steps"]
+rows = []
+for path in sys.argv[1:4]:
+    lines = [l for l in open(path) if l.strip()]
+    if len(lines) != 1:
+        sys.exit(f"{path}: {len(lines)} lines, want one row (rank 0's)")
+    r = json.loads(lines[0])
+    missing = [k for k in keys if k not in r]
+    if missing:
+        sys.exit(f"{path}: missing keys {missing}")
+    rows.append(r)
+one, strong, weak = rows
+N = int(sys.argv[4])
+ok = True
+def check(cond, what):
+    global ok
+    if not cond:
+        print("FAIL:", what); ok = False
+check(one["ranks"] == 1 and one["comm_share"] == 0 and one["bytes_received_per_step"] == 0, "the one-rank row has no communication")
+check(strong["ranks"] == N and weak["ranks"] == N, "ranks")
+check(strong["scaling"] == "strong" and weak["scaling"] == "weak", "scaling")
+check(strong["particles"] == one["particles"], "strong scaling keeps the one-rank problem")
+check(abs(weak["particles_per_rank"] - one["particles"]) <= 0.05 * one["particles"], "weak scaling keeps the particles per rank")
+for r in (strong, weak):
+    check(r["slab_steps"] == 4 and r["replicated_steps"] == 0, "every timed step in slabs")
+    check(0 < r["comm_share"] <= 1 and r["comm_seconds"] > 0, "a communication share in (0, 1]")
+    check(r["bytes_received_per_step"] > 0, "bytes received")
+sys.exit(0 if ok else 1)
+PY
+    ;;
 mpi_checkpoint_restores_on_other_ranks)
     # saved by N ranks (2 or 4, in slabs); restored on 1 and on 4 (saved by 2)
     # or 2 (saved by 4), as a later `mpirun -n M` would: the same 50 steps as

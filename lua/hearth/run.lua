@@ -208,8 +208,9 @@ local function dumps_write(self, specs, t, force, where)
     if force or t >= d.next - 1e-9 * d.every then
       local path = d.path:format(d.state.count)
       if d.kind == "vtu" then
-        output(where, "vtu", self.vtu, self, path)
-        d.state.list[#d.state.list + 1] = { t, path:match("([^/]*)$") }
+        -- under mpirun a .pvtu index of one piece per rank (docs/outputs.md)
+        local file = output(where, "vtu", self._vtu_frame, self, path)
+        d.state.list[#d.state.list + 1] = { t, file:match("([^/]*)$") }
         output(where, "vtu", core.write_atomic, d.pvd, pvd_text(d.state.list), "s:run{vtu = ...}")
       else
         output(where, "ply", self.ply, self, path, d.opts)

@@ -1,5 +1,5 @@
 -- ranks_block.lua: the 3D elastic block of tests/mpi/elastic_block.lua at a
--- chosen resolution and width, for scripts/bench/ranks.sh. width scales the
+-- chosen resolution and width, for scripts/bench/ranks_instructions.sh. width scales the
 -- block along x (weak scaling: width = ranks keeps particles per rank fixed).
 local h = require "hearth"
 local P = h.params { cells = 32, width = 1, steps = 50 }

@@ -649,6 +649,14 @@ hearth_status hearth_mkdir_p(const char *dir, hearth_error *err);
 /// "stress [Pa]" the 9-component row-major Cauchy stress (the Tensors
 /// attribute) and "velocity [m/s]" the Vectors attribute. Written atomically.
 hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_error *err);
+/// Over MPI ranks (collective: every rank calls it with the same path, in the
+/// shared output folder; path ends in ".pvtu"): each rank writes its own
+/// particles as the piece STEM_pR.vtu beside path (hearth_write_vtu's arrays;
+/// in the slab mode the rank's slab, with no gather; a whole scene is cut
+/// into N runs of particles), and once every piece is on disk rank 0 writes
+/// the .pvtu index naming them. Every file is written atomically. When any
+/// rank fails, every rank returns an error (the failing one with its cause).
+hearth_status hearth_write_vtu_pieces(const hearth_scene *s, const char *path, hearth_error *err);
 
 /// Options of a PLY dump. Start from hearth_default_ply_def().
 typedef struct hearth_ply_def {
@@ -748,6 +756,9 @@ void hearth_ranks_traffic(double *bytes, double *seconds);
 /// axes and the rollback guard need it); and the migration passes past the
 /// first of a step (a rebalance that moved a cut by more than a slab).
 void hearth_ranks_steps(long *slabs, long *replicated, long *passes);
+/// The largest v over the ranks, on every rank (collective; v on one rank):
+/// `hearth bench --ranks` reports its slowest rank's figures.
+double hearth_ranks_max(double v);
 /// Of hearth_ranks_traffic's bytes, those that came in whole-set gathers
 /// (every step in the replicated mode; in the slab mode only when a reader,
 /// a rebalance or the guard needs the whole scene): the rest is the halo,

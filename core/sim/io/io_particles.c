@@ -28,6 +28,7 @@
 #include "colormap.h"
 #include "error.h"
 #include "hearth/hearth.h"
+#include "io_vtu.h"
 
 /* ---- the live fields ------------------------------------------------- */
 
@@ -231,9 +232,50 @@ static void vtu_ramp(dump *d, size_t n, int64_t first) {
     }
 }
 
-hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_error *err) {
+/* The point arrays after Points, in file order: fn(ctx, type, name, nc) for
+ * each. A piece's header and the .pvtu index both list them through this,
+ * so the two cannot disagree. */
+typedef void (*vtu_array_fn)(void *ctx, const char *type, const char *name, int nc);
+static void vtu_point_arrays(const hearth_scene *s, const char *names, vtu_array_fn fn, void *ctx) {
+    char name[NAME_CAP + 16];
+    fn(ctx, "Int32", "id", 1);
+    vtu_name(name, sizeof name, "mass", mass_unit(s));
+    fn(ctx, "Float64", name, 1);
+    vtu_name(name, sizeof name, "volume", volume_unit(s));
+    fn(ctx, "Float64", name, 1);
+    field_walk w = {names, "", 0};
+    while (field_next(&w)) {
+        vtu_name(name, sizeof name, w.name, unit_of(w.name));
+        fn(ctx, "Float64", name, w.nc);
+    }
+}
+
+/* The PointData element's attributes: velocity is ParaView's active vectors,
+ * stress its active tensors (glyphs, eigenvalues), id the GlobalIds. */
+static void vtu_point_data_open(dump *d, const char *element) {
+    char vec[NAME_CAP + 16], ten[NAME_CAP + 16];
+    vtu_name(vec, sizeof vec, "velocity", unit_of("velocity"));
+    vtu_name(ten, sizeof ten, "stress", unit_of("stress"));
+    put_text(d, "<%s Vectors=\"%s\" Tensors=\"%s\" GlobalIds=\"id\">\n", element, vec, ten);
+}
+
+typedef struct piece_tags {
+    dump *d;
+    uint64_t *off;
+    size_t n;
+} piece_tags;
+
+static void piece_tag(void *ctx, const char *type, const char *name, int nc) {
+    piece_tags *p = ctx;
+    const size_t size = !strcmp(type, "Int32") ? sizeof(int32_t) : sizeof(double);
+    vtu_array_tag(p->d, type, name, nc, p->off, size * (size_t)nc * p->n);
+}
+
+hearth_status vtu_write_range(const hearth_scene *s, const char *path, size_t lo, size_t hi, hearth_error *err) {
     err_clear(err);
-    const size_t n = (size_t)hearth_scene_particle_count(s);
+    const size_t all = (size_t)hearth_scene_particle_count(s);
+    HEARTH_ASSERT(lo <= hi && hi <= all);
+    const size_t n = hi - lo; /* particles lo .. hi-1 of this process's set */
     hearth_stats stats;
     hearth_scene_stats(s, &stats);
     scratch sc;
@@ -242,19 +284,15 @@ hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_e
     if (st) return st;
     field_counts(sc.names, &max_nc, &total_nc);
     /* Fields go out one at a time, so the buffer holds the widest one only
-     * (at least one value each: the volumes use it too). */
+     * (at least one value each: the volumes use it too). A field is evaluated
+     * at every particle the process holds, and the range's part written. */
     dump d;
-    if ((st = scratch_buf(&sc, n * (max_nc ? max_nc : 1), path, err)) || (st = dump_open(&d, path, err))) {
+    if ((st = scratch_buf(&sc, all * (max_nc ? max_nc : 1), path, err)) || (st = dump_open(&d, path, err))) {
         scratch_free(&sc);
         return st;
     }
 
-    /* The XML part: every offset follows from n and the component counts.
-     * The attribute names make velocity ParaView's active vectors and stress
-     * its active tensors (glyphs, eigenvalues), and id the GlobalIds. */
-    char name[NAME_CAP + 16], vec[NAME_CAP + 16], ten[NAME_CAP + 16];
-    vtu_name(vec, sizeof vec, "velocity", unit_of("velocity"));
-    vtu_name(ten, sizeof ten, "stress", unit_of("stress"));
+    /* The XML part: every offset follows from n and the component counts. */
     uint64_t off = 0;
     put_text(&d, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
                  "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n<FieldData>\n"
@@ -266,24 +304,16 @@ hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_e
     vtu_array_tag(&d, "Int64", "connectivity", 1, &off, sizeof(int64_t) * n);
     vtu_array_tag(&d, "Int64", "offsets", 1, &off, sizeof(int64_t) * n);
     vtu_array_tag(&d, "UInt8", "types", 1, &off, n);
-    put_text(&d, "</Cells>\n<PointData Vectors=\"%s\" Tensors=\"%s\" GlobalIds=\"id\">\n", vec, ten);
-    vtu_array_tag(&d, "Int32", "id", 1, &off, sizeof(int32_t) * n);
-    vtu_name(name, sizeof name, "mass", mass_unit(s));
-    vtu_array_tag(&d, "Float64", name, 1, &off, sizeof(double) * n);
-    vtu_name(name, sizeof name, "volume", volume_unit(s));
-    vtu_array_tag(&d, "Float64", name, 1, &off, sizeof(double) * n);
-    field_walk w = {sc.names, "", 0};
-    while (field_next(&w)) {
-        vtu_name(name, sizeof name, w.name, unit_of(w.name));
-        vtu_array_tag(&d, "Float64", name, w.nc, &off, sizeof(double) * (size_t)w.nc * n);
-    }
+    put_text(&d, "</Cells>\n");
+    vtu_point_data_open(&d, "PointData");
+    vtu_point_arrays(s, sc.names, piece_tag, &(piece_tags){&d, &off, n});
     put_text(&d, "</PointData>\n</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_");
 
     /* The appended block, in the order of the offsets above. */
     vtu_count(&d, sizeof(double));
     put_le(&d, &stats.t, sizeof(double), 1);
     vtu_count(&d, 3 * sizeof(double) * n);
-    put_le(&d, hearth_scene_positions(s), sizeof(double), 3 * n);
+    put_le(&d, hearth_scene_positions(s) + 3 * lo, sizeof(double), 3 * n);
     vtu_ramp(&d, n, 0);
     vtu_ramp(&d, n, 1);
     vtu_count(&d, n);
@@ -291,18 +321,18 @@ hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_e
     memset(vertex, 1, sizeof vertex); /* VTK_VERTEX */
     for (size_t i = 0; i < n; i += sizeof vertex) put_bytes(&d, vertex, n - i < sizeof vertex ? n - i : sizeof vertex);
     vtu_count(&d, sizeof(int32_t) * n);
-    put_le(&d, hearth_scene_particle_ids(s), sizeof(int32_t), n); /* int is 32 bits on every host hearth builds on */
+    put_le(&d, hearth_scene_particle_ids(s) + lo, sizeof(int32_t), n); /* int is 32 bits on every host hearth builds on */
     vtu_count(&d, sizeof(double) * n);
-    put_le(&d, hearth_scene_particle_masses(s), sizeof(double), n);
+    put_le(&d, hearth_scene_particle_masses(s) + lo, sizeof(double), n);
     if (!(st = particle_volumes(s, sc.buf, path, err))) {
         vtu_count(&d, sizeof(double) * n);
-        put_le(&d, sc.buf, sizeof(double), n);
+        put_le(&d, sc.buf + lo, sizeof(double), n);
     }
-    w = (field_walk){sc.names, "", 0};
+    field_walk w = {sc.names, "", 0};
     while (!st && !d.err_no && field_next(&w)) {
         if ((st = field_values(s, w.name, sc.buf, path, err))) break;
         vtu_count(&d, sizeof(double) * (size_t)w.nc * n);
-        put_le(&d, sc.buf, sizeof(double), (size_t)w.nc * n);
+        put_le(&d, sc.buf + (size_t)w.nc * lo, sizeof(double), (size_t)w.nc * n);
     }
     put_text(&d, "\n</AppendedData>\n</VTKFile>\n");
     scratch_free(&sc);
@@ -310,6 +340,57 @@ hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_e
         atomic_abort(&d.af);
         return st;
     }
+    return dump_finish(&d, path, err);
+}
+
+hearth_status hearth_write_vtu(const hearth_scene *s, const char *path, hearth_error *err) {
+    return vtu_write_range(s, path, 0, (size_t)hearth_scene_particle_count(s), err);
+}
+
+static void index_tag(void *ctx, const char *type, const char *name, int nc) {
+    put_text(ctx, "<PDataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\"/>\n", type, name, nc);
+}
+
+/* A file name in an XML attribute: the five characters XML reserves escaped. */
+static void put_attr(dump *d, const char *v) {
+    for (; *v; v++) {
+        switch (*v) {
+        case '&': put_text(d, "&amp;"); break;
+        case '<': put_text(d, "&lt;"); break;
+        case '>': put_text(d, "&gt;"); break;
+        case '"': put_text(d, "&quot;"); break;
+        case '\'': put_text(d, "&apos;"); break;
+        default: put_bytes(d, v, 1);
+        }
+    }
+}
+
+hearth_status vtu_write_index(const hearth_scene *s, const char *path, const char *stem, int npieces, hearth_error *err) {
+    err_clear(err);
+    scratch sc;
+    hearth_status st = scratch_get(&sc, s, path, err);
+    if (st) return st;
+    dump d;
+    if ((st = dump_open(&d, path, err))) {
+        scratch_free(&sc);
+        return st;
+    }
+    /* The pieces carry the data, their TimeValue too; the index names the
+     * arrays (the same names, types and components as a one-process .vtu)
+     * and the pieces, relative to itself. */
+    put_text(&d, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" "
+                 "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<PUnstructuredGrid GhostLevel=\"0\">\n"
+                 "<PPoints>\n<PDataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\"/>\n</PPoints>\n");
+    vtu_point_data_open(&d, "PPointData");
+    vtu_point_arrays(s, sc.names, index_tag, &d);
+    put_text(&d, "</PPointData>\n");
+    for (int k = 0; k < npieces; k++) {
+        put_text(&d, "<Piece Source=\"");
+        put_attr(&d, stem);
+        put_text(&d, "_p%d.vtu\"/>\n", k);
+    }
+    put_text(&d, "</PUnstructuredGrid>\n</VTKFile>\n");
+    scratch_free(&sc);
     return dump_finish(&d, path, err);
 }
 

@@ -29,6 +29,16 @@ hearth_status ranks_sum_grid(grid *g, int slot_lo, int slot_hi, hearth_error *er
 void ranks_count_step(int what);
 /// Every rank's `bytes` bytes at mine into all (ranks_size() x bytes), in rank order.
 void ranks_allgather_fixed(const void *mine, void *all, size_t bytes);
+/// Every rank's `bytes` bytes at mine (at most RANKS_COMBINE_MAX) combined in
+/// rank order, the result in mine on every rank: fn(acc, next, ctx) puts
+/// acc then next into acc, and must be associative up to rounding. The
+/// grouping is a fixed binary tree (ranks 0-1, 2-3, then 0-3, ...), the
+/// same for a given rank count; a rank receives at most ceil(log2 N) partial
+/// results, rank 0's combination is then broadcast. Rejected: MPI_Reduce with
+/// a user op (MPI may apply it in any grouping, even commuted for a
+/// non-commutative op), and an allgather (every rank receives N of them).
+enum { RANKS_COMBINE_MAX = 512 };
+void ranks_combine(void *mine, size_t bytes, void (*fn)(void *acc, const void *next, void *ctx), void *ctx);
 /// The bytewise maximum over the ranks of buf (n bytes), in place (integers:
 /// the result does not depend on the order MPI combines them).
 void ranks_max_bytes(unsigned char *buf, size_t n);

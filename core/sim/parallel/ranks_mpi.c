@@ -162,6 +162,40 @@ void ranks_allgather_fixed(const void *mine, void *all, size_t bytes) {
     traffic_seconds += MPI_Wtime() - t0;
 }
 
+void ranks_combine(void *mine, size_t bytes, void (*fn)(void *acc, const void *next, void *ctx), void *ctx) {
+    if (nranks == 1 || bytes == 0) return;
+    HEARTH_ASSERT(bytes <= RANKS_COMBINE_MAX);
+    const double t0 = MPI_Wtime();
+    unsigned char next[RANKS_COMBINE_MAX];
+    double got = 0;
+    /* at level `step`, a rank that is a multiple of 2 step holds ranks
+     * [me, me + step) combined and adds [me + step, me + 2 step) from its
+     * partner; a rank that is step past one sends its part up and is done */
+    for (int step = 1; step < nranks; step *= 2) {
+        if (rank_id % (2 * step) == 0) {
+            if (rank_id + step < nranks) {
+                MPI_Recv(next, (int)bytes, MPI_BYTE, rank_id + step, 73, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+                fn(mine, next, ctx);
+                got += (double)bytes;
+            }
+        } else {
+            MPI_Send(mine, (int)bytes, MPI_BYTE, rank_id - step, 73, MPI_COMM_WORLD);
+            break;
+        }
+    }
+    MPI_Bcast(mine, (int)bytes, MPI_BYTE, 0, MPI_COMM_WORLD);
+    if (rank_id > 0) got += (double)bytes;
+    traffic_bytes += got;
+    traffic_seconds += MPI_Wtime() - t0;
+}
+
+double hearth_ranks_max(double v) {
+    if (nranks == 1) return v;
+    double m = v; /* a maximum is exact in any grouping */
+    MPI_Allreduce(&v, &m, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    return m;
+}
+
 void ranks_max_bytes(unsigned char *buf, size_t n) {
     if (nranks == 1 || n == 0) return;
     const double t0 = MPI_Wtime();

@@ -13,6 +13,7 @@ int hearth_ranks_size(void) { return 1; }
 int hearth_ranks_built(void) { return 0; }
 void hearth_ranks_finalize(void) {}
 void hearth_ranks_traffic(double *bytes, double *seconds) { *bytes = *seconds = 0; }
+double hearth_ranks_max(double v) { return v; }
 
 int ranks_size(void) { return 1; }
 int ranks_rank(void) { return 0; }
@@ -28,6 +29,9 @@ void ranks_count_step(int what) { (void)what; }
 void hearth_ranks_steps(long *slabs, long *replicated, long *passes) { *slabs = *replicated = *passes = 0; }
 double hearth_ranks_gathered(void) { return 0; }
 void ranks_max_bytes(unsigned char *buf, size_t n) { (void)buf, (void)n; }
+void ranks_combine(void *mine, size_t bytes, void (*fn)(void *acc, const void *next, void *ctx), void *ctx) {
+    (void)mine, (void)bytes, (void)fn, (void)ctx;
+}
 hearth_status ranks_neighbours(const void *down, size_t ndown, const void *up, size_t nup, const void **from_lo, size_t *nlo,
                                const void **from_hi, size_t *nhi, hearth_error *err) {
     (void)down, (void)ndown, (void)up, (void)nup, (void)err;

@@ -154,6 +154,8 @@ hearth_status mpm_ranks_end(hearth_scene *s, hearth_status st, hearth_error *err
 hearth_status mpm_ranks_whole(hearth_scene *s, hearth_error *err);
 /// Particles over all ranks.
 int mpm_ranks_particles(const hearth_scene *s);
+/// Whether this rank holds only its slab's particles now (else the whole set).
+int mpm_ranks_holds_slab(const hearth_scene *s);
 /// Active grid blocks over all ranks (each counted once).
 int mpm_ranks_blocks(const hearth_scene *s);
 /// At the start of the sort: particles that left this rank's slab go to the neighbour's.

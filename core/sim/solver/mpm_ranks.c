@@ -10,14 +10,14 @@
  * which adds them after its own; the owner runs the grid update and sends
  * the ghost blocks' values back (halo_sum, mpm_ranks_halo_back). At the next
  * sort particles that left the slab go to the neighbour (mpm_ranks_migrate).
- * The step report is combined over the ranks in rank order. Every
+ * The step report is combined over the ranks in rank order, along a tree. Every
  * MPM_RANKS_REBALANCE steps the cuts follow the particle counts. The slabs
  * stay across step calls until something reads the particles
  * (hearth_scene_whole, which every Lua scene method but the stepping ones
  * calls): then every rank gathers the whole set in rank order. Per step a rank
  * receives the ghost layer's sums or values and its marks, the particles
- * crossing its faces and N step reports: constant as the scene grows along
- * the axis (docs/scaling.md, `mpi_halo_traffic_bounded_4`).
+ * crossing its faces and at most log2 N step reports (a tree in rank order):
+ * constant as the scene grows along the axis (docs/scaling.md, `mpi_halo_traffic_bounded_4`).
  *
  * Replicated (scenes whose passes read every particle inside a step: heat,
  * water, mixing, CO2, periodic axes, the rollback guard). Every rank holds
@@ -82,7 +82,6 @@ struct mpm_slabs {
     unsigned char *out[2];  /* packed particles for the lower and the upper neighbour */
     size_t outcap[2];
     int *nall;              /* nranks + 1: every rank's particle count, then the prefix */
-    void *reps;             /* nranks rank_report */
 };
 
 /* (a test may give the state a rank count by hand, without the slab tables) */
@@ -97,8 +96,7 @@ hearth_status mpm_ranks_init(mpm_state *m, hearth_error *err) {
     struct mpm_slabs *sl = m->slabs;
     sl->cut = mem_calloc(sizeof(int) * ((size_t)m->nranks + 1));
     sl->nall = mem_calloc(sizeof(int) * ((size_t)m->nranks + 1));
-    sl->reps = mem_calloc(sizeof(rank_report) * (size_t)m->nranks);
-    if (!sl->cut || !sl->nall || !sl->reps) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the MPM rank tables");
+    if (!sl->cut || !sl->nall) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the MPM rank tables");
     return HEARTH_OK;
 }
 
@@ -107,7 +105,6 @@ void mpm_ranks_free(mpm_state *m) {
     if (sl) {
         mem_free(sl->cut, sizeof(int) * ((size_t)m->nranks + 1));
         mem_free(sl->nall, sizeof(int) * ((size_t)m->nranks + 1));
-        mem_free(sl->reps, sizeof(rank_report) * (size_t)m->nranks);
         mem_free(sl->count, sizeof(int) * (size_t)sl->nlayer * ((size_t)m->nranks + 2));
         mem_free(sl->drop, sl->dropcap);
         mem_free(sl->lowmark, sl->lowcap);
@@ -347,6 +344,8 @@ int mpm_ranks_blocks(const hearth_scene *s) {
     const mpm_state *m = s->mpm;
     return m && slabs_live(m) ? m->slabs->blocks : s->g.nactive;
 }
+
+int mpm_ranks_holds_slab(const hearth_scene *s) { return s->mpm && slabs_live(s->mpm); }
 
 int mpm_ranks_particles(const hearth_scene *s) {
     const mpm_state *m = s->mpm;
@@ -603,7 +602,46 @@ hearth_status mpm_ranks_halo_back(hearth_scene *s, hearth_error *err) {
     return HEARTH_OK;
 }
 
-/* The step report over the ranks, combined in rank order so every rank gets
+/* One rank's part of the step report, holding only what the combination
+ * reads, each at the value a rank-order fold from an empty report would
+ * leave (no particle: -1 and 0; a non-positive maximum: 0), so that
+ * report_combine over the ranks equals that fold. */
+static rank_report report_leaf(const step_report *q, double vcol, long clamped, int n, int blocks) {
+    rank_report l = {.rep = {.particle = -1, .fastest = -1, .mover = -1}, .vcol = vcol > 0 ? vcol : 0, .clamped = clamped, .n = n, .blocks = blocks};
+    step_report *t = &l.rep;
+    if (q->particle >= 0) t->particle = q->particle, t->kind = q->kind, t->code = q->code;
+    if (q->fastest >= 0 && q->max_speed > -1) t->max_speed = q->max_speed, t->fastest = q->fastest; /* the fold never took a NaN */
+    if (q->max_move > 0) t->max_move = q->max_move, t->mover = q->mover >= 0 ? q->mover : -1;
+    t->kinetic = q->kinetic, t->mass = q->mass, t->out_of_domain = q->out_of_domain;
+    t->c_max = q->c_max > 0 ? q->c_max : 0;
+    t->nu_max = q->nu_max > 0 ? q->nu_max : 0;
+    return l;
+}
+
+/* acc, the ranks [a, b) combined, then next, the ranks [b, c): next's
+ * particle indices move past acc's particles; the first failure, the first
+ * of equal maxima, sums (ranks_combine). */
+static void report_combine(void *acc, const void *next, void *ctx) {
+    (void)ctx;
+    rank_report *a = acc;
+    const rank_report *b = next;
+    step_report *t = &a->rep;
+    const step_report *q = &b->rep;
+    const int off = a->n;
+    if (t->particle < 0 && q->particle >= 0) t->particle = off + q->particle, t->kind = q->kind, t->code = q->code;
+    if (q->fastest >= 0 && q->max_speed > (t->fastest >= 0 ? t->max_speed : -1)) t->max_speed = q->max_speed, t->fastest = off + q->fastest;
+    if (q->max_move > t->max_move) t->max_move = q->max_move, t->mover = q->mover >= 0 ? off + q->mover : -1;
+    t->kinetic += q->kinetic;
+    t->mass += q->mass;
+    t->out_of_domain += q->out_of_domain;
+    if (q->c_max > t->c_max) t->c_max = q->c_max;
+    if (q->nu_max > t->nu_max) t->nu_max = q->nu_max;
+    a->n += b->n, a->blocks += b->blocks, a->clamped += b->clamped;
+    if (b->vcol > a->vcol) a->vcol = b->vcol;
+}
+
+/* The step report over the ranks, combined in rank order (a fixed binary
+ * tree: each rank receives at most log2 N reports, not N) so every rank gets
  * the same one. Particle indices become indices into the whole set in rank
  * order (slabs_gather's order). Then the guard's verdict: when the guard will
  * stop (a failed particle, a CFL violation, a runaway), every rank gathers the
@@ -613,36 +651,17 @@ hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_rep
     struct mpm_slabs *sl = m->slabs;
     if (m->nranks > 1) ranks_count_step(slabs_live(m) ? 1 : 0);
     if (!slabs_live(m)) return HEARTH_OK;
-    const int N = m->nranks;
     const grid *g = &s->g;
     const int up = ghost_layer(m);
     int ghosts = 0;
     if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { ghosts += m->mark[id] != 0; });
-    rank_report mine = {.rep = *rep, .vcol = vcol, .clamped = s->out_of_domain - sl->ood0, .n = s->ps.n, .blocks = g->nactive - ghosts},
-                *all = sl->reps;
-    ranks_allgather_fixed(&mine, all, sizeof mine);
-    step_report t = {.particle = -1, .fastest = -1, .mover = -1};
-    double vmax = -1, vc = 0;
-    long clamped = 0;
-    int off = 0;
-    sl->blocks = 0;
-    for (int r = 0; r < N; r++) {
-        const step_report *q = &all[r].rep;
-        if (q->particle >= 0 && t.particle < 0) t.particle = off + q->particle, t.kind = q->kind, t.code = q->code;
-        if (q->max_speed > vmax && q->fastest >= 0) vmax = q->max_speed, t.max_speed = q->max_speed, t.fastest = off + q->fastest;
-        if (q->max_move > t.max_move) t.max_move = q->max_move, t.mover = q->mover >= 0 ? off + q->mover : -1;
-        t.kinetic += q->kinetic;
-        t.mass += q->mass;
-        t.out_of_domain += q->out_of_domain;
-        if (q->c_max > t.c_max) t.c_max = q->c_max;
-        if (q->nu_max > t.nu_max) t.nu_max = q->nu_max;
-        off += all[r].n;
-        sl->blocks += all[r].blocks;
-        clamped += all[r].clamped;
-        if (all[r].vcol > vc) vc = all[r].vcol;
-    }
-    t.driven_kinetic = 0.5 * t.mass * vc * vc;
-    *rep = t;
+    rank_report t = report_leaf(rep, vcol, s->out_of_domain - sl->ood0, s->ps.n, g->nactive - ghosts);
+    ranks_combine(&t, sizeof t, report_combine, NULL);
+    sl->blocks = t.blocks;
+    const long clamped = t.clamped;
+    const double vc = t.vcol;
+    t.rep.driven_kinetic = 0.5 * t.rep.mass * vc * vc;
+    *rep = t.rep;
     s->out_of_domain = sl->ood0 + clamped; /* every rank's clamps, the same count on every rank */
     int stop = rep->particle >= 0;
     if (!stop) {
