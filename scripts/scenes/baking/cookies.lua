@@ -15,6 +15,19 @@
 --                           the leavener's kinetics moved off Table 2 (theta_r, dtheta
 --                           in degC; gas multiplies alpha^g), for docs/validation.md
 --                           "The cookie's gas: when, where, and eq. 12"; not a preset.
+--   [--set tray_mode=sticky --set tray_friction=1 --set conductivity=0.01
+--    --set water=true --set soft_until=60 --set max_porosity=0.6]
+--                           the levers of docs/validation.md "The cookie: tray,
+--                           crust, conduction and 3D" (#18, session 28): the
+--                           tray's contact (h.recipes.tray: separate, 0.4); a
+--                           factor on Table 2's kappa (0.01: a real dough's
+--                           ~0.3 W/(m K), Biot ~1, so top and edges set first);
+--                           water as bread's (dough.lua WATER: s_0 0.10 for a
+--                           20 % wb cookie dough, so the surface dries and
+--                           dough.lua's DRY curve stiffens it); Fig. 8's tau_y
+--                           and eta held at their 35 degC values up to
+--                           soft_until degC (a later set); the plugin's pore
+--                           cap. Not presets: the defaults are Table 2's cookie.
 -- Writes, under hearth-out/cookies/: oven_<T>/heat_%04d.png (the heat
 -- progress, Fig. 3's right column) and cookies.csv (final height, spread and
 -- top curvature per cookie; negative curvature = domed), series.csv (height
@@ -34,8 +47,14 @@
 -- claim_cookie_domed_vs_baseline in tests/baking_test.sh for the numbers).
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 3, frames = 6, ovens = { 190, 150, 110 },
-  leaveners = { 0.015, 0.0075, 0 }, baseline = false, reaction_temperature = -1, reaction_width = -1, gas = 1 }
+  leaveners = { 0.015, 0.0075, 0 }, baseline = false, reaction_temperature = -1, reaction_width = -1, gas = 1,
+  tray_mode = "separate", tray_friction = 0.4, conductivity = 1, water = false, soft_until = -1, max_porosity = -1 }
 local d3 = P.dim == 3
+if P.soft_until ~= -1 and not (P.soft_until > 35 and P.soft_until < 70) then
+  error(("--set soft_until=%g: must lie between Fig. 8's fat-melting and gelatinisation points, (35, 70) degC, "
+    .. "or be -1 (Table 2's curve)"):format(P.soft_until))
+end
+if P.conductivity <= 0 then error(("--set conductivity=%g: a factor on Table 2's kappa, must be > 0"):format(P.conductivity)) end
 local dx = d3 and math.max(P.dx, 0.01) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 local ovens, leaveners = P.ovens, P.leaveners
@@ -51,11 +70,20 @@ local series = { "oven_degC,leavener,t,height_m,spread_m,centre_temperature_degC
 for _, T in ipairs(ovens) do
   local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.09, 0.12) },
     oven = { temperature = T, beta = oven.beta }, name = "cookies" }
-  h.recipes.tray(s, TRAY, { temperature = T, beta = oven.pan_beta })
+  h.recipes.tray(s, TRAY, { temperature = T, beta = oven.pan_beta, mode = P.tray_mode, friction = P.tray_friction })
   local xs = {}
   for i, a in ipairs(leaveners) do
     local d = h.library.paper.cookie
     d.gas_rate = a * h.library.dough_scale.gas * P.gas
+    d.conductivity = d.conductivity * P.conductivity
+    local S0, WATER_S = 0.10, 600 -- the levers above: water as dough.lua's WATER (2e-7 m^2/s, 1.2e-3 kg/(m^2 s K), x600)
+    if P.water then d.saturation, d.water_diffusivity, d.evaporation = S0, 2e-7 / (373.15 * S0) * WATER_S, 1.2e-3 * WATER_S end
+    if P.soft_until ~= -1 then -- Table 2's cookie (tau_y 20 Pa, eta 500 x ETA_SCALE) with Fig. 8's 35 degC point held to soft_until
+      local e = 500 * h.library.dough_scale.eta
+      d.tau_y = h.curve { { 5, 20 }, { 20, 16 }, { 35, 6 }, { P.soft_until, 6 }, { 70, 400 }, irreversible = true }
+      d.eta = h.curve { { 5, e }, { 20, 0.5 * e }, { 35, 0.1 * e }, { P.soft_until, 0.1 * e }, { 70, 0.05 * e }, irreversible = true }
+    end
+    if P.max_porosity > 0 then d.max_porosity = P.max_porosity end
     if P.reaction_temperature >= 0 then d.reaction_temperature = P.reaction_temperature end
     if P.reaction_width > 0 then d.reaction_width = P.reaction_width end
     -- the baseline: the cookie's E, nu, density and heat; the snow law's theta_c, theta_s, xi (plugin defaults)
@@ -64,7 +92,7 @@ for _, T in ipairs(ovens) do
       or h.material("cam_clay_dough", d)
     xs[i] = (i - 0.5) * SPACING
     s:add { shape = h.shapes.cookie(v(xs[i], TRAY + THICK / 2, zc), R, THICK), material = mat,
-      temperature = oven.dough_temperature, ppc = d3 and 8 or 4 }
+      temperature = oven.dough_temperature, saturation = P.water and S0 or nil, ppc = d3 and 8 or 4 }
   end
   local function measure(i)
     local c = d3 and { xs[i], zc } or { xs[i] }
