@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""sph_roll_measure.py DX START.csv END.csv: the SPH bread roll measured from its
+"""sph_roll_measure.py DX START.csv END.csv [--png OUT.png]: the SPH bread roll measured from its
 particles alone (x,y columns, metres), not through the solver's density field.
 
 Dough: the union of discs of radius DX (the raw dough's particle spacing)
@@ -32,7 +32,8 @@ Pieces: particles closer than 2 DX are linked (union-find). At rest the
 nearest neighbours are DX apart, and a bubble particle that grows by V_b
 moves its neighbours out by about sqrt(V_b) DX, under 2 DX for V_b < 4; a
 torn roll leaves a gap with no particle within two raw spacings.
-Prints 'ratio R pieces P largest_share S torn F void V'."""
+Prints 'ratio R pieces P largest_share S torn F void V'; --png draws what was
+counted (dough brown, gas cells blue, torn red, notches grey, particles black)."""
 import csv, math, sys
 
 BIG = 1e18
@@ -130,8 +131,10 @@ def components(mask, nx, ny):
     return comps
 
 
-def measure(pts, dx, rc):
-    """(dough + closed gas cells, envelope, torn area, largest torn void) in m^2."""
+def measure(pts, dx, rc, picture=None):
+    """(dough + closed gas cells, envelope, torn area, largest torn void) in m^2.
+    With picture (a path), also a PNG of what it counted: dough brown, gas cells
+    blue, torn voids red, surface notches grey, particles black."""
     g = dx / 4
     ras = Raster(pts, g, dx + rc + 4 * g)
     nx, ny = ras.nx, ras.ny
@@ -140,18 +143,46 @@ def measure(pts, dx, rc):
     void = bytearray(1 if env[c] and not dough[c] else 0 for c in range(nx * ny))
     cell, cap = g * g, 4 * dx * dx
     gas = torn = biggest = 0.0
+    kind = bytearray(dough)  # 0 outside, 1 dough, 2 gas cell, 3 notch, 4 torn
     for comp in components(void, nx, ny):
         a = len(comp) * cell
         # closed: no cell of it borders a cell outside the envelope
         closed = all(env[c - 1] and env[c + 1] and env[c - nx] and env[c + nx] for c in comp)
         if closed and a <= cap:
-            gas += a
+            gas, k = gas + a, 2
         elif a <= dx * dx:
-            pass  # a notch between two surface particles (under (2 - pi/2) DX^2 at 2 DX apart)
+            k = 3  # a notch between two surface particles (under (2 - pi/2) DX^2 at 2 DX apart)
         else:
-            torn += a
+            torn, k = torn + a, 4
             biggest = max(biggest, a)
+        for c in comp:
+            kind[c] = k
+    if picture:
+        write_png(picture, ras, kind, pts)
     return sum(dough) * cell + gas, sum(env) * cell, torn, biggest
+
+
+def write_png(path, ras, kind, pts, scale=3):
+    """The classified raster as an RGB PNG (zlib only), written atomically."""
+    import os, struct, zlib
+    rgb = [(240, 240, 240), (200, 150, 90), (70, 70, 255), (170, 170, 170), (230, 0, 0)]
+    nx, ny, g = ras.nx, ras.ny, ras.g
+    px = [rgb[k] for k in kind]
+    for x, y in pts:
+        px[int((y - ras.y0) / g) * nx + int((x - ras.x0) / g)] = (0, 0, 0)
+    rows = []
+    for j in range(ny - 1, -1, -1):
+        row = b"\x00" + b"".join(bytes(px[j * nx + i]) * scale for i in range(nx))
+        rows.append(row * scale)
+
+    def chunk(t, d):
+        return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xFFFFFFFF)
+
+    data = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", nx * scale, ny * scale, 8, 2, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(b"".join(rows))) + chunk(b"IEND", b""))
+    with open(path + ".tmp", "wb") as f:
+        f.write(data)
+    os.replace(path + ".tmp", path)
 
 
 def pieces(pts, L):
@@ -183,16 +214,21 @@ def pieces(pts, L):
 
 
 def main():
-    if len(sys.argv) != 4:
+    args = sys.argv[1:]
+    picture = None
+    if len(args) == 5 and args[3] == "--png":
+        picture = args.pop()
+        args.pop()
+    if len(args) != 3:
         sys.exit(__doc__)
-    dx = float(sys.argv[1])
-    p0, p1 = load(sys.argv[2]), load(sys.argv[3])
+    dx = float(args[0])
+    p0, p1 = load(args[1]), load(args[2])
     if not p0 or not p1:
-        sys.exit("sph_roll_measure: %s has %d particles, %s %d" % (sys.argv[2], len(p0), sys.argv[3], len(p1)))
+        sys.exit("sph_roll_measure: %s has %d particles, %s %d" % (args[1], len(p0), args[2], len(p1)))
     ras = Raster(p0, dx / 4, 2 * dx)
     rc = math.sqrt(sum(discs(p0, dx, ras)) * (dx / 4) ** 2 / math.pi) / 4  # the raw roll's equivalent radius / 4
     a0 = measure(p0, dx, rc)[0]
-    a1, env1, torn, biggest = measure(p1, dx, rc)
+    a1, env1, torn, biggest = measure(p1, dx, rc, picture)
     n, share = pieces(p1, 2 * dx)
     print("ratio %.4f pieces %d largest_share %.4f torn %.4f void %.1f" % (a1 / a0, n, share, torn / env1, biggest / (dx * dx)))
 

@@ -37,7 +37,9 @@ for f in $(ls $d/particles_*.csv | sort); do
     echo "$(basename "$f"): $m"
     [ -n "$broken" ] && continue
     if [ "$pieces" != 1 ] || python3 -c "import sys; sys.exit(0 if $torn > $torn_max else 1)"; then
-        broken="$(basename "$f"): $pieces piece(s), the largest holding $share of the particles, $torn of the envelope torn, the largest torn void $void raw particle areas"
+        k=$(basename "$f" .csv) k=$((10#${k#particles_}))
+        # particles_0000 is the raw roll, particles_NNNN (NNNN >= 1) the frame at t = (NNNN - 1) x 0.1 s
+        broken="t = $(python3 -c "print(round(max($k - 1, 0) * 0.1, 1))") s ($(basename "$f")): $pieces piece(s), the largest holding $share of the particles, $torn of the envelope torn, the largest torn void $void raw particle areas"
         continue
     fi
     python3 -c "import sys; sys.exit(0 if $ratio > $peak else 1)" && peak=$ratio
