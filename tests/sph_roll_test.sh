@@ -21,8 +21,8 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 
 dx=0.002 # the scene's default
 case "$case_name" in *_fine) dx=0.0015 ;; esac
-# 2 s of the 3 s bake: the roll passes 1.3x at 1.3 s (docs/validation.md "SPH bread
-# roll (#18)"), and the hot dough's viscous step makes the last second cost minutes more
+# 2 s of the 3 s bake: the roll's disc area passes 1.3x by 1.2 s (docs/validation.md "SPH
+# bread roll (#18)"), and the hot dough's viscous step makes the last second cost minutes more
 until=2
 "$hearth" run "$root/scripts/scenes/sph/bread_roll.lua" --quiet --set dx=$dx --until $until >out.txt 2>err.txt ||
     fail "bread_roll dx=$dx: exit $?: $(cat err.txt)"
