@@ -146,6 +146,10 @@ static int combine(lua_State *L, hearth_shape_op op) {
     for (int k = 3; k <= n; k++) {
         hearth_shape *acc = hl_checkshape(L, -1);
         hl_pushshape(L, hearth_shape_combine(op, acc, hl_checkshape(L, k)));
+        /* drop the last partial result: one slot in use however many shapes
+         * (pushing all n - 2 overran Lua's stack at ~40 shapes and freed a bad
+         * pointer at the next collection: h.union of a roll's 150 bubbles) */
+        lua_remove(L, -2);
     }
     return 1;
 }

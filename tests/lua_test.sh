@@ -464,6 +464,10 @@ lua_helpers)
     out=$("$hearth" run "$scenes/helpers.lua" --quiet 2>&1) || fail "helpers.lua: $out"
     echo "$out" | grep -q "helpers ok" || fail "helpers.lua did not finish: $out"
     ;;
+lua_union_many_shapes)
+    out=$("$hearth" run "$scenes/union_many.lua" --quiet 2>&1) || fail "union_many.lua: $out"
+    echo "$out" | grep -q "union many ok" || fail "union_many.lua did not finish: $out"
+    ;;
 lua_settings_schema)
     out=$("$hearth" run "$scenes/settings_schema.lua" --quiet 2>&1) || fail "settings_schema.lua: $out"
     echo "$out" | grep -q "settings ok" || fail "settings_schema.lua did not finish: $out"
