@@ -19,8 +19,18 @@
  * crossing its faces and N step reports: constant as the scene grows along
  * the axis (docs/scaling.md, `mpi_halo_traffic_bounded_4`).
  *
- * Replicated (scenes whose passes read every particle inside a step: heat,
- * water, mixing, CO2, periodic axes, the rollback guard). Every rank holds
+ * Heat, water and CO2 run on slabs too (mpm_ranks_fields.c): with fields a
+ * rank also holds one complete block layer each side of its slab (mark bit
+ * 2; halo_sum and halo_back keep to bit 1's blocks), filled with the owners'
+ * values after P2G and after each field scatter, so the boundary search, the
+ * explicit update's small-node merge and the CG's vector updates run on
+ * every block a rank holds; the CG's dot products and the field sums are
+ * added in rank order. CO2 is a particle quantity (G2P); stats() adds its
+ * sums over the ranks.
+ *
+ * Replicated (scenes whose passes read every particle inside a step: mixing,
+ * periodic axes, the rollback guard, held bodies, wet colliders,
+ * water_momentum; slabs_fit). Every rank holds
  * every particle and the whole grid; after the sort the particle blocks are
  * cut into one contiguous run per rank; each rank runs P2G and G2P for its
  * run only; the written node slots are summed over the ranks in rank order
