@@ -43,6 +43,35 @@ against_one() {
         fail "$ranks ranks differ from one process by more than 1e-12 ($scene $*)"
 }
 
+# on_slabs STEPS: the N-rank run's record says every step ran on slabs
+on_slabs() {
+    grep -q "MPI ranks: $ranks; $1 steps with each rank holding its slab, 0 replicated" "$tmp/many/run.log" ||
+        fail "the run record does not say the steps ran on slabs (run.log: $(grep 'MPI ranks' "$tmp/many/run.log"))"
+}
+
+# same_sums: stats()'s particle sums (heat, water, water lost, CO2, the oven's
+# ledger) and the CG's iterations agree with one process's (1e-12 relative)
+same_sums() {
+    python3 - "$tmp/one.txt" "$tmp/many.txt" <<'PY' || fail "stats() over $ranks ranks differs from one process"
+import sys
+def read(path):
+    for line in open(path):
+        w = line.split()
+        if w and w[0] == "sums":
+            return dict(zip(w[1::2], w[2::2]))
+    sys.exit(f"no sums line in {path}")
+one, many = read(sys.argv[1]), read(sys.argv[2])
+ok = one["cg"] == many["cg"]
+for k in ("heat", "water", "lost", "gas", "oven"):
+    a, b = float(one[k]), float(many[k])
+    d = abs(a - b) / max(abs(a), 1e-300)
+    print(f"stats {k}: one process {a!r}, ranks {b!r}, relative difference {d:.3e}")
+    ok = ok and d <= 1e-12
+print(f"CG iterations of the last step: one process {one['cg']}, ranks {many['cg']}")
+sys.exit(0 if ok else 1)
+PY
+}
+
 case "$base" in
 mpi_elastic_matches_one_rank)
     # the standard elastic block, 100 steps: N ranks against one process
@@ -62,12 +91,44 @@ mpi_elastic_3d_matches_one_rank)
     against_one elastic_block.lua 100 --set dim=3
     ;;
 mpi_dough_3d_matches_one_rank)
-    # the 3D dough with every field live (explicit heat; the CG solve is the 2D
-    # case's): heat and water keep every rank holding the whole scene, and the
-    # run record must say so
-    against_one dough.lua 100 --set dim=3
-    grep -q "MPI ranks: $ranks; 0 steps with each rank holding its slab, 100 replicated (every rank holds the whole scene" \
-        "$tmp/many/run.log" || fail "the run record does not say the dough ran replicated"
+    # the 3D dough with every field live (explicit heat, the oven's surface,
+    # water, evaporation, latent heat, CO2, a heated tray) on slabs: every step
+    # with each rank holding its slab, the run record must say so. 2 ranks take
+    # half the scene each, so 50 steps there keep the test within its time.
+    n=100
+    [ "$ranks" = 2 ] && n=50
+    against_one dough.lua $n --set dim=3 --set steps=$n
+    on_slabs $n
+    same_sums
+    ;;
+mpi_implicit_heat_matches_one_rank)
+    # the same dough with backward Euler heat: the CG's dot products over the
+    # ranks (rank order), its matrix products through the halo layers
+    n=100
+    [ "$ranks" = 2 ] && n=50
+    against_one dough.lua $n --set dim=3 --set heat=implicit --set steps=$n
+    on_slabs $n
+    same_sums
+    ;;
+mpi_dough_3d_bit_identical|mpi_implicit_heat_bit_identical)
+    # two N-rank runs on slabs, the second with two threads per rank: the same bits
+    heat=explicit
+    [ "$base" = mpi_implicit_heat_bit_identical ] && heat=implicit
+    mp "$ranks" a dough.lua --set dim=3 --set heat=$heat >"$tmp/a.txt" || fail "first run failed"
+    OMP_NUM_THREADS=2 mp "$ranks" b dough.lua --set dim=3 --set heat=$heat >"$tmp/b.txt" || fail "second run failed"
+    cat "$tmp/a.txt"
+    grep -q "MPI ranks: $ranks; 100 steps with each rank holding its slab, 0 replicated" "$tmp/a/run.log" ||
+        fail "the run did not step on slabs (run.log: $(grep 'MPI ranks' "$tmp/a/run.log"))"
+    cmp "$tmp/a.txt" "$tmp/b.txt" || fail "the stats and hash differ between two $ranks-rank runs"
+    cmp "$tmp/a/state.csv" "$tmp/b/state.csv" || fail "the particle states differ between two $ranks-rank runs"
+    ;;
+mpi_heat_matches_one_rank)
+    # an elastic bar thrown through the slab seams onto a floor, warming in the
+    # oven (the air surface meets the floor's contact at the seams)
+    for heat in explicit implicit; do
+        against_one heat_traffic.lua 100 --set heat=$heat --set state=1
+        on_slabs 100
+    done
     ;;
 mpi_rebalance_matches_one_rank)
     # a block thrown across a resting bar: the cuts move at every rebalance, at
@@ -81,16 +142,19 @@ mpi_rebalance_matches_one_rank)
     python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 ||
         fail "$ranks ranks differ from one process by more than 1e-12 after rebalancing"
     ;;
-mpi_halo_traffic_bounded)
+mpi_halo_traffic_bounded|mpi_heat_halo_traffic_bounded)
     # bytes each rank receives per step, from each rank's own count: bounded by
     # the halo model (docs/scaling.md), not by the particle count. The bar is
-    # run at two lengths, the second with twice the particles.
+    # run at two lengths, the second with twice the particles; the heat case's
+    # bar warms in an oven (explicit heat with the air surface).
+    scene=traffic.lua
+    [ "$base" = mpi_heat_halo_traffic_bounded ] && scene=heat_traffic.lua
     for len in 0.6 1.2; do
-        HEARTH_RANKS_REPORT=1 HEARTH_RANKS_VERBOSE=1 mp "$ranks" t$len traffic.lua --set len=$len >"$tmp/t$len.txt" 2>&1 ||
+        HEARTH_RANKS_REPORT=1 HEARTH_RANKS_VERBOSE=1 mp "$ranks" t$len $scene --set len=$len >"$tmp/t$len.txt" 2>&1 ||
             fail "$ranks-rank run at len $len failed (status $?)"
         grep "MPI ranks" "$tmp/t$len.txt"
     done
-    python3 - "$tmp/t0.6.txt" "$tmp/t1.2.txt" "$ranks" <<'PY' || fail "the traffic per rank is not bounded by the halo model"
+    python3 - "$tmp/t0.6.txt" "$tmp/t1.2.txt" "$ranks" "$scene" <<'PY' || fail "the traffic per rank is not bounded by the halo model"
 import re, sys, math
 def read(path):
     ranks, n = {}, 0
@@ -116,6 +180,15 @@ ok = len(short) == N and len(long_) == N and n2 > 1.9 * n1
 # few counts (256 bytes).
 dx, S = 1 / 64, math.ceil((0.5 * 64 + 4) / 4)
 bound = S + 2 * S * 16 * 4 * 8 + 2 * 14 * 2 * 300 + N * 200 + 256
+if sys.argv[4] == "heat_traffic.lua":
+    # With heat every node carries 14 channels. Per step a rank receives the
+    # ghost layer's sums and values (2 x S blocks x 14 channels), the fill of
+    # both halo layers after P2G (2 x S x 14), the transport's two channels
+    # summed and filled on both sides (4 x S x 2), the marks of both halo
+    # layers and their surface flags (5 S bytes), the crossing particles (their
+    # temperature, flags and heat columns: 400 bytes at most), N step reports
+    # and the counts. No CG (explicit heat) and no reductions but stats' last.
+    bound = 5 * S + S * 16 * 8 * (2 * 14 + 2 * 14 + 4 * 2) + 2 * 14 * 2 * 400 + N * 200 + 256
 print(f"halo model bound {bound / 1e3:.1f} kB a step a rank; replicated particles alone would be {(1 - 1 / N) * n2 * 216 / 1e3:.0f} kB at {n2} particles")
 for r in range(N):
     if r not in short or r not in long_:

@@ -779,6 +779,11 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
     if (s->ps.enabled & (1u << PC_GAS))
         for (int i = 0; i < s->ps.n; i++) st->gas_moles += pcold(&s->ps, PC_GAS)[i] * pcold(&s->ps, PC_VOL0)[i];
     st->water_mass = water_total(s);
+    /* MPI slabs kept between step calls (a Lua host): each rank holds its slab's
+     * particles, so their sums are added over the ranks in rank order (collective) */
+    double sums[3] = {st->heat_energy, st->gas_moles, st->water_mass};
+    mpm_ranks_fields_reduce(s, sums, 3, NULL, 0);
+    st->heat_energy = sums[0], st->gas_moles = sums[1], st->water_mass = sums[2];
     st->water_lost = s->water.lost;
     st->oven_heat_in = s->heat.oven_heat_in;
 }

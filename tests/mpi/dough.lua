@@ -26,3 +26,6 @@ h.write("state.csv", table.concat(lines, "\n") .. "\n")
 local st = s:stats()
 print(("steps %d particles %d t %.6g kinetic %.17g heat %.17g hash %s"):format(st.step, st.particles, st.t, st.kinetic,
   st.heat_energy, s:hash()))
+-- the sums stats() adds over the particles (over the ranks on slabs), and the last CG solve's iterations
+print(("sums heat %.17g water %.17g lost %.17g gas %.17g oven %.17g cg %d"):format(st.heat_energy, st.water_mass,
+  st.water_lost, st.gas, st.oven_heat_in, st.cg_iterations))

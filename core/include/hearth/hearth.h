@@ -429,6 +429,9 @@ typedef struct hearth_stats {
     double water_lost;     ///< water that left through the boundary so far (kg, or kg/m in 2D); negative if gained
     double oven_heat_in;   ///< heat in through the oven's air boundary so far (J, or J/m in 2D); tallied only with latent_heat on, else 0
 } hearth_stats;
+/// The scene's figures. Over MPI ranks with the slabs kept between step calls
+/// (hearth_scene_keep_slabs) and heat or water live, the particle sums are added
+/// over the ranks: then every rank must call it, as every rank runs the same script.
 void hearth_scene_stats(const hearth_scene *s, hearth_stats *st);
 /// Simulated time (s): hearth_stats.t without the sums over every particle.
 double hearth_scene_time(const hearth_scene *s);

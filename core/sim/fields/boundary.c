@@ -366,7 +366,7 @@ FORCE_INLINE unsigned char cell_area(hearth_scene *s, const int D, int k) {
     for (int l = 0; l < NPB; l++) {
         const double msum = node[CH_R * NPB + l];
         if (!(msum > 0)) continue;
-        double gr[3] = {0, 0, 0}, nv[3] = {0, 0, 0};
+        double gr[3] = {0, 0, 0}, nv[3] = {0, 0, 0}, na = 0;
         for (int d = 0; d < D; d++) gr[d] = node[GCH[d] * NPB + l];
         if (gr[0] == 0 && gr[1] == 0 && gr[2] == 0) {
             node[CH_R * NPB + l] = 0;
@@ -381,12 +381,18 @@ FORCE_INLINE unsigned char cell_area(hearth_scene *s, const int D, int k) {
                     int lj;
                     const double *nj = node_off(g, D, node, ring, l, gi, off, &lj);
                     if (!nj) continue;
-                    for (int d = 0; d < D; d++) nv[d] += nj[GCH[d] * NPB + lj];
+                    for (int d = 0; d < D; d++) nv[d] += nj[GCH[d] * NPB + lj], na += fabs(nj[GCH[d] * NPB + lj]);
                 }
         double nn2 = 0, gn = 0;
         for (int d = 0; d < D; d++) nn2 += nv[d] * nv[d];
         for (int d = 0; d < D; d++) gn += gr[d] * nv[d];
-        gn = nn2 > 0 ? gn / sqrt(nn2) : 0.0;
+        /* a sum that cancels to round-off has no direction: along a contact face
+         * (the collider took the normal components) the tangential gradients of
+         * the cells around cancel to 1e-16 of their size, and their sign, which
+         * an ulp decides, gave a cell the whole of |grad psi| as area or none
+         * (two MPI slab runs, whose seams sum P2G in another order, differed by
+         * 1e-7 in temperature) */
+        gn = nn2 > 1e-20 * na * na ? gn / sqrt(nn2) : 0.0;
         /* grad psi . n dx^dim = gr . n dx^(dim-1) */
         node[CH_R * NPB + l] = gn > 0 ? gn * (D == 2 ? g->dx : g->dx * g->dx) / msum : 0.0;
         any |= gn > 0;
@@ -499,6 +505,9 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
     /* 4. the nodes' shares r_i; the blocks that hold any */
 #pragma omp parallel for schedule(dynamic, 4) if (n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) s->boundary.blocks[k] = (d3 ? node_share_3 : node_share_2)(s, k, near[k]);
+    /* MPI slabs: a halo layer's flags near its outer face read blocks this rank
+     * does not hold; thermal.c's small-node merge goes by them, so the owners' */
+    if ((st = mpm_ranks_fields_fill_flags(s, s->boundary.blocks, err))) return st;
     /* 5. each particle's share m_p sum_i w_ip r_i: the shares of a cell's area sum to it */
 #pragma omp parallel for schedule(dynamic, 2) if (n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < m->npb; k++) (d3 ? area_gather_3 : area_gather_2)(s, k, want_depth);

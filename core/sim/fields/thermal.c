@@ -439,21 +439,26 @@ static void clear_held(hearth_scene *s, int ch) {
     }
 }
 
-/* Deterministic dot product over nodes with heat capacity: per block, then in block order. */
+/* Deterministic dot product over nodes with heat capacity: per block, then in
+ * block order. On MPI slabs over the blocks this rank owns (the halo layers
+ * hold copies), then over the ranks in rank order (mpm_ranks_fields_reduce):
+ * every rank gets the same bits, so all take the same CG iterations. */
 static double dot(hearth_scene *s, int a, int b) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block;
     double *part = s->heat.cg_partial;
+    const unsigned char *own = mpm_ranks_fields_owned(s);
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         const double *node = grid_block(g, k);
         double acc = 0;
         for (int l = 0; l < NPB; l++)
             if (node[CH_HC * NPB + l] > 0) acc += node[a * NPB + l] * node[b * NPB + l];
-        part[k] = acc;
+        part[k] = own && !own[k] ? 0.0 : acc;
     }
     double sum = 0;
     for (int k = 0; k < g->nactive; k++) sum += part[k];
+    mpm_ranks_fields_reduce(s, &sum, 1, NULL, 0);
     return sum;
 }
 
@@ -665,14 +670,18 @@ static void oven_ledger(hearth_scene *s, double dt) {
         for (int j = 0; j < m; j++) th += w[j] * node[j][ch * NPB + l[j]];
         q += coef[i] * (s->heat.bnd_temp[i] - th);
     }
+    mpm_ranks_fields_reduce(s, &q, 1, NULL, 0); /* MPI slabs: every rank's particles, in rank order */
     s->heat.step_oven_heat = dt * q;
 }
 
-void thermal_finish(hearth_scene *s, double dt) {
-    grid *g = &s->g;
-    const int NPB = g->nodes_per_block;
+void thermal_contact(hearth_scene *s) {
     /* the heated colliders' contact into L theta^n - b (both schemes read CH_B - CH_R) */
     heat_contact_apply(s, CH_T, CH_R, 1);
+}
+
+hearth_status thermal_finish(hearth_scene *s, double dt, hearth_error *err) {
+    grid *g = &s->g;
+    const int NPB = g->nodes_per_block;
     /* held nodes keep their temperature: no update, no unknown */
     clear_held(s, CH_R);
     clear_held(s, CH_B);
@@ -680,7 +689,7 @@ void thermal_finish(hearth_scene *s, double dt) {
         explicit_merged(s, dt); /* forward Euler, the surface's small nodes merged */
         held_settle(s);
         oven_ledger(s, dt);
-        return;
+        return HEARTH_OK;
     }
     if (!s->def.heat_implicit) { /* forward Euler (gamma = 0) */
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
@@ -693,7 +702,7 @@ void thermal_finish(hearth_scene *s, double dt) {
         }
         held_settle(s);
         oven_ledger(s, dt);
-        return;
+        return HEARTH_OK;
     }
     /* backward Euler (gamma = 1): (C/dt + L) x = C/dt theta^n + b, solved by
      * conjugate gradients from x = theta^n; r = b - L theta^n. Preconditioned by
@@ -722,13 +731,16 @@ void thermal_finish(hearth_scene *s, double dt) {
      * residual's sum is all the energy an inexact solve can create, since the
      * conduction operator's columns sum to zero. */
     double scale = 0;
+    const unsigned char *own = mpm_ranks_fields_owned(s); /* MPI slabs: each node once */
     for (int k = 0; k < g->nactive; k++) {
+        if (own && !own[k]) continue;
         const double *node = grid_block(g, k);
         for (int l = 0; l < NPB; l++) {
             const double v = node[CH_HC * NPB + l] * (fabs(node[CH_T * NPB + l]) + 1.0) / dt;
             scale += v * v;
         }
     }
+    mpm_ranks_fields_reduce(s, &scale, 1, NULL, 0);
     scale = sqrt(scale);
     double rz = dot(s, CH_CG_R, CH_B), rr = dot(s, CH_CG_R, CH_CG_R);
     s->heat.cg_iterations = 0;
@@ -736,6 +748,10 @@ void thermal_finish(hearth_scene *s, double dt) {
         clear_channel(s, CH_R);
         apply(s, CH_CG_P, CH_R);
         heat_contact_apply(s, CH_CG_P, CH_R, 0);
+        /* MPI slabs: the halo layers' share of Ap to its owners, and their values back */
+        const int ap = CH_R;
+        hearth_status st = mpm_ranks_fields_sum(s, &ap, 1, err);
+        if (st) return st;
         clear_held(s, CH_R);
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
         for (int k = 0; k < g->nactive; k++) {
@@ -771,4 +787,5 @@ void thermal_finish(hearth_scene *s, double dt) {
     }
     held_settle(s);
     oven_ledger(s, dt);
+    return HEARTH_OK;
 }

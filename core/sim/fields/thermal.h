@@ -53,8 +53,12 @@ double thermal_dt_limit(const struct hearth_scene *s);
 /// transport_apply (transport.h) evaluates L theta^n into CH_R and the sources
 /// into CH_B.
 hearth_status thermal_prepare(struct hearth_scene *s, hearth_error *err);
-/// The forward or backward Euler update of eq. 9 on the nodes (§6.3).
-void thermal_finish(struct hearth_scene *s, double dt);
+/// After transport_apply: the heated colliders' contact terms into CH_R (a
+/// scatter of its own, so MPI slabs sum it with the transport's).
+void thermal_contact(struct hearth_scene *s);
+/// The forward or backward Euler update of eq. 9 on the nodes (§6.3). Fails
+/// only on MPI slabs (the CG's halo exchange out of memory).
+hearth_status thermal_finish(struct hearth_scene *s, double dt, hearth_error *err);
 /// A step stood (the guard kept it): its oven heat joins the ledger.
 void thermal_step_stands(thermal_state *h);
 /// Total heat energy sum m alpha (theta + 273.15) of the particles (J).

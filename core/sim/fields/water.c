@@ -141,6 +141,12 @@ static void scan_limits(const hearth_scene *s, double *dmax, double *emax) {
     *emax = e;
 }
 
+void water_keep_limits(hearth_scene *s) {
+    if (!water_active(s) || s->water.limits_valid) return;
+    scan_limits(s, &s->water.dmax, &s->water.emax);
+    s->water.limits_valid = 1;
+}
+
 double water_dt_limit(const hearth_scene *s) {
     if (!water_active(s)) return INFINITY;
     double d = s->water.dmax, e = s->water.emax;
@@ -462,6 +468,11 @@ void water_finish(hearth_scene *s) {
         emax = fmax(emax, m->partial[k].water_emax);
     }
     if (s->water.hold) removed += held_particles(s, &dmax, &emax);
+    /* on MPI slabs each rank took its own particles': added and maxed in rank
+     * order, so every rank takes the same step next (mpm_stable_dt) */
+    double mx[2] = {dmax, emax};
+    mpm_ranks_fields_reduce(s, &removed, 1, mx, 2);
+    dmax = mx[0], emax = mx[1];
     s->water.step_removed = removed;
     s->water.dmax = dmax;
     s->water.emax = emax;

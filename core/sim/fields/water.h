@@ -79,6 +79,8 @@ int water_material_wants(const struct hearth_scene *s, int mat);
 hearth_status water_enable(struct hearth_scene *s, hearth_error *err);
 /// Give particles [from, to) saturation sat (NaN: their material's), floored.
 void water_init_particles(struct hearth_scene *s, int from, int to, double sat);
+/// The step limits scanned now if stale, and kept (before the set is split over MPI slabs).
+void water_keep_limits(struct hearth_scene *s);
 /// Largest explicit water step (s), INFINITY when inactive.
 double water_dt_limit(const struct hearth_scene *s);
 /// Once a step stands: raise each particle's PC_DRIED (1 - the lowest moisture ratio reached) to its

@@ -727,7 +727,12 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
                                    .water = water, .dt = dt};
         transport_apply(s, &tp);
         if (water) water_face_flux(s, dt);
-        if (heat) thermal_finish(s, dt);
+        if (heat) thermal_contact(s);
+        /* MPI slabs: the scatters' halo shares to their owners and back (mpm_ranks_fields.c) */
+        const int sums[3] = {CH_R, CH_B, CH_DMW};
+        if ((st = mpm_ranks_fields_sum(s, heat ? sums : sums + 2, (heat ? 2 : 0) + (water ? 1 : 0), err))) return st;
+        if (heat && (st = thermal_finish(s, dt, err))) return st;
+        mpm_ranks_fields_clear(s);
     }
     const double vcol = mpm_grid_update(s, dt);
     if ((st = mpm_ranks_halo_back(s, err))) return st;

@@ -60,6 +60,7 @@ typedef struct mpm_state {
     int nranks, k_lo, k_hi;
     int *kfirst, *pfirst;   /* nranks + 1 each */
     struct mpm_slabs *slabs; /* the slab mode's state (mpm_ranks.c) */
+    struct mpm_slab_fields *sfields; /* the slabs' halo layers for heat and water (mpm_ranks_fields.c) */
 } mpm_state;
 
 /// The MPM state of s (NULL under another solver), for the field passes an
@@ -165,6 +166,25 @@ hearth_status mpm_ranks_migrate(hearth_scene *s, hearth_error *err);
 hearth_status mpm_ranks_mark(hearth_scene *s, hearth_error *err);
 /// After the grid update: the owners' node values of the ghost blocks back to the ranks that touch them.
 hearth_status mpm_ranks_halo_back(hearth_scene *s, hearth_error *err);
+/// In the slab mode: 1, this rank's slab's block layers [*lo, *hi) along *axis; else 0.
+int mpm_ranks_slab(const mpm_state *m, int *axis, int *lo, int *hi);
+/* mpm_ranks_fields.c: heat and water on slabs, through one complete block
+ * layer each side of the slab (no-ops outside the slab mode or without fields) */
+void mpm_ranks_fields_free(mpm_state *m);
+/// In mpm_ranks_mark: storage for the halo layers (the neighbours' blocks in them).
+hearth_status mpm_ranks_fields_mark(hearth_scene *s, hearth_error *err);
+/// The owners' values of channels ch[0..nc) (every channel when ch is NULL) into the halo layers.
+hearth_status mpm_ranks_fields_fill(hearth_scene *s, const int *ch, int nc, hearth_error *err);
+/// After a particle scatter into channels ch[0..nc): the halo layers' sums to their owners, then fill.
+hearth_status mpm_ranks_fields_sum(hearth_scene *s, const int *ch, int nc, hearth_error *err);
+/// One byte per active block slot (boundary.c's surface flags): the owners' into the halo layers.
+hearth_status mpm_ranks_fields_fill_flags(hearth_scene *s, unsigned char *flag, hearth_error *err);
+/// Before the grid update: the halo layers cleared (the grid update sees the slab's blocks and the bare ghosts).
+void mpm_ranks_fields_clear(hearth_scene *s);
+/// Per active block slot: whether this rank owns it (sums over nodes count it once); NULL outside the slab mode.
+const unsigned char *mpm_ranks_fields_owned(const hearth_scene *s);
+/// Every rank's sum[0..nsum) added and max[0..nmax) maxed, in rank order, in place (nsum + nmax <= 8).
+void mpm_ranks_fields_reduce(const hearth_scene *s, double *sum, int nsum, double *max, int nmax);
 /// At the end of the step: the step report over the ranks (vcol: the fastest collider speed at a node).
 hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_report *rep, hearth_error *err);
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err);

@@ -19,8 +19,18 @@
  * crossing its faces and at most log2 N step reports (a tree in rank order):
  * constant as the scene grows along the axis (docs/scaling.md, `mpi_halo_traffic_bounded_4`).
  *
- * Replicated (scenes whose passes read every particle inside a step: heat,
- * water, mixing, CO2, periodic axes, the rollback guard). Every rank holds
+ * Heat, water and CO2 run on slabs too (mpm_ranks_fields.c): with fields a
+ * rank also holds one complete block layer each side of its slab (mark bit
+ * 2; halo_sum and halo_back keep to bit 1's blocks), filled with the owners'
+ * values after P2G and after each field scatter, so the boundary search, the
+ * explicit update's small-node merge and the CG's vector updates run on
+ * every block a rank holds; the CG's dot products and the field sums are
+ * added in rank order. CO2 is a particle quantity (G2P); stats() adds its
+ * sums over the ranks.
+ *
+ * Replicated (scenes whose passes read every particle inside a step: mixing,
+ * periodic axes, the rollback guard, held bodies, wet colliders,
+ * water_momentum; slabs_fit). Every rank holds
  * every particle and the whole grid; after the sort the particle blocks are
  * cut into one contiguous run per rank; each rank runs P2G and G2P for its
  * run only; the written node slots are summed over the ranks in rank order
@@ -42,6 +52,7 @@
  * sum after the owner's. A node touched by one rank only has the bits of the
  * one-process run; a node on a seam sums the same terms in another grouping
  * (a few ulps, `mpi_elastic_matches_one_rank`). */
+#include <math.h>
 #include <string.h>
 
 #include "alloc.h"
@@ -101,6 +112,7 @@ hearth_status mpm_ranks_init(mpm_state *m, hearth_error *err) {
 }
 
 void mpm_ranks_free(mpm_state *m) {
+    mpm_ranks_fields_free(m);
     struct mpm_slabs *sl = m->slabs;
     if (sl) {
         mem_free(sl->cut, sizeof(int) * ((size_t)m->nranks + 1));
@@ -142,7 +154,11 @@ static hearth_status halo_sum(hearth_scene *s, hearth_error *err);
 hearth_status mpm_ranks_sum_grid(hearth_scene *s, hearth_error *err) {
     mpm_state *m = s->mpm;
     if (m->nranks == 1) return HEARTH_OK;
-    if (slabs_live(m)) return halo_sum(s, err);
+    if (slabs_live(m)) {
+        hearth_status st = halo_sum(s, err);
+        /* heat and water: the halo layers get every channel of their owners' blocks */
+        return st ? st : mpm_ranks_fields_fill(s, NULL, 0, err);
+    }
     const grid *g = &s->g;
     int lo = 0, hi = 0;
     if (m->k_hi > m->k_lo) {
@@ -175,19 +191,31 @@ void mpm_ranks_gather(hearth_scene *s) {
 /* ---- slabs: particles owned by rank --------------------------------- */
 
 /* The slab mode holds, per rank, only the particles of its slab, so anything
- * that reads every particle inside a step must not run. Those scenes keep the
- * replicated mode above, chosen here, for the whole step call: heat and water
- * (their grid passes read every particle's volume, and the implicit heat
- * solve is global), mixing (a particle pass before the sort), periodic axes
- * (wrapped on the whole set) and the rollback guard (its snapshot is the
- * whole scene). */
+ * that reads every particle inside a step must not run. Heat, water and CO2
+ * run on slabs (mpm_ranks_fields.c); the scenes that keep the replicated mode
+ * above, chosen here for the whole step call, are: mixing (a particle pass
+ * before the sort), periodic axes (wrapped on the whole set), the rollback
+ * guard (its snapshot is the whole scene), bodies with fixed_temperature
+ * (thermal.c's held nodes sum the held particles' capacity outside P2G),
+ * wet colliders (water.c's held saturations read nodes up to three cells
+ * from the face and scatter without a tile) and water_momentum (the
+ * transport adds into the momentum the halo layers already hold). */
 static int slabs_fit(const hearth_scene *s) {
     const mpm_state *m = s->mpm;
     if (m->nranks == 1 || !m->slabs) return 0;
-    if (thermal_active(s) || water_active(s) || mixing_active(s)) return 0;
+    if (mixing_active(s)) return 0;
     if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) return 0;
     if (s->def.guard == HEARTH_GUARD_ROLLBACK) return 0;
-    if (s->ps.enabled & (1u << PC_GAS)) return 0; /* stats() sums the gas over the particles */
+    if (water_active(s)) {
+        if (s->def.water_momentum) return 0;
+        for (int c = 0; c < s->ncol; c++)
+            if (!isnan(s->cols[c].saturation)) return 0;
+    }
+    if (thermal_active(s) && (s->ps.enabled & (1u << PC_FLAGS))) {
+        const int *flags = pcoli(&s->ps, PC_FLAGS);
+        for (int i = 0; i < s->ps.n; i++)
+            if (flags[i] & PF_HOLD_T) return 0;
+    }
     int axis = 0;
     for (int d = 1; d < s->g.dim; d++)
         if (s->g.nb[d] > s->g.nb[axis]) axis = d;
@@ -314,9 +342,18 @@ static hearth_status slabs_gather(hearth_scene *s, hearth_error *err) {
     return HEARTH_OK;
 }
 
+int mpm_ranks_slab(const mpm_state *m, int *axis, int *lo, int *hi) {
+    if (!slabs_live(m)) return 0;
+    const int me = ranks_rank();
+    *axis = m->slabs->axis, *lo = m->slabs->cut[me], *hi = m->slabs->cut[me + 1];
+    return 1;
+}
+
 void mpm_ranks_begin(hearth_scene *s) {
     mpm_state *m = s->mpm;
     if (!m || slabs_live(m) || !slabs_fit(s)) return;
+    /* water's step limits from the whole set, before it is split (water_finish keeps them over the ranks) */
+    water_keep_limits(s);
     /* every rank holds the same whole set here: a failure (out of memory for
      * the drop flags) is the same on every rank, and the run stays replicated */
     if (slabs_scatter(s, NULL)) m->slabs->live = 0;
@@ -502,7 +539,7 @@ hearth_status mpm_ranks_mark(hearth_scene *s, hearth_error *err) {
     }
     /* the ghost layer's touched blocks go up; the lower neighbour's come in and
      * get storage here too, so its sums have somewhere to land */
-    if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { sl->out[1][k] = m->mark[id]; });
+    if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { sl->out[1][k] = m->mark[id] & 1; });
     const void *lo, *hi;
     size_t nlo, nhi;
     if ((st = ranks_neighbours(NULL, 0, sl->out[1], up >= 0 ? (size_t)S : 0, &lo, &nlo, &hi, &nhi, err))) return st;
@@ -512,7 +549,8 @@ hearth_status mpm_ranks_mark(hearth_scene *s, hearth_error *err) {
         memcpy(sl->lowmark, lo, (size_t)S);
         FOR_LAYER(g, sl->axis, sl->cut[me], id, k, { m->mark[id] |= sl->lowmark[k]; });
     }
-    return HEARTH_OK;
+    /* heat and water: a complete layer each side (mark bit 2; halo_sum and halo_back move bit 1's blocks) */
+    return mpm_ranks_fields_mark(s, err);
 }
 
 static hearth_status halo_reserve(struct mpm_slabs *sl, size_t n, hearth_error *err) {
@@ -534,13 +572,13 @@ static hearth_status halo_sum(hearth_scene *s, hearth_error *err) {
     const int up = ghost_layer(m), me = ranks_rank();
     const size_t sd = (size_t)g->nch * (size_t)g->nodes_per_block;
     size_t nup = 0;
-    if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { nup += m->mark[id] ? sd : 0; });
+    if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { nup += m->mark[id] & 1 ? sd : 0; });
     hearth_status st = halo_reserve(sl, nup, err);
     if (st) return st;
     size_t w = 0;
     if (up >= 0)
         FOR_LAYER(g, sl->axis, up, id, k, {
-            if (m->mark[id]) {
+            if (m->mark[id] & 1) {
                 double *b = grid_block(g, g->slot[id]);
                 memcpy(sl->halo + w, b, sd * sizeof(double));
                 memset(b, 0, sd * sizeof(double));
@@ -592,7 +630,7 @@ hearth_status mpm_ranks_halo_back(hearth_scene *s, hearth_error *err) {
         const double *src = hi;
         size_t r = 0;
         FOR_LAYER(g, sl->axis, up, id, k, {
-            if (m->mark[id]) {
+            if (m->mark[id] & 1) {
                 memcpy(grid_block(g, g->slot[id]), src + r, sd * sizeof(double));
                 r += sd;
             }
@@ -652,9 +690,13 @@ hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_rep
     if (m->nranks > 1) ranks_count_step(slabs_live(m) ? 1 : 0);
     if (!slabs_live(m)) return HEARTH_OK;
     const grid *g = &s->g;
-    const int up = ghost_layer(m);
-    int ghosts = 0;
-    if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { ghosts += m->mark[id] != 0; });
+    const int me = ranks_rank();
+    int ghosts = 0; /* the ghost layer's blocks, and with fields the lower halo layer's */
+    for (int k = 0; k < g->nactive; k++) {
+        int c[3];
+        grid_block_coords(g, g->active[k], c);
+        ghosts += c[sl->axis] < sl->cut[me] || c[sl->axis] >= sl->cut[me + 1];
+    }
     rank_report t = report_leaf(rep, vcol, s->out_of_domain - sl->ood0, s->ps.n, g->nactive - ghosts);
     ranks_combine(&t, sizeof t, report_combine, NULL);
     sl->blocks = t.blocks;
