@@ -194,10 +194,12 @@ typedef struct material_env {
     int dim;
 } material_env;
 
+/* x - x is 0 for a finite x and NaN otherwise: one test instead of nine
+ * (the per-point door ran nine, 38 instructions of a dough point's ~3300). */
 MATERIAL_INLINE int material_finite9(const double *a) {
-    for (int k = 0; k < 9; k++)
-        if (!isfinite(a[k])) return 0;
-    return 1;
+    double z = 0;
+    for (int k = 0; k < 9; k++) z += a[k] - a[k];
+    return z == 0;
 }
 
 /* The first half of the door: fill pt's temperature, porosity and saturation
