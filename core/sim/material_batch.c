@@ -60,28 +60,18 @@ static material_env run_env(const material_run *r, int j, unsigned flags) {
     };
 }
 
-/* A run's parameters for run_points: material_params_resolve's values and
- * bits, without its per-point copy of every parameter. The uniform ones are
- * copied once per run and each point rewrites only the parameters its curves
- * move, in material_params_resolve's order (the temperature curve's value,
- * then times its parameter's moisture factor; material_curve_check allows
- * one curve of each kind per parameter). The moisture ratio is computed once
- * per point, not once per moisture curve (material_moisture_factor's
- * arithmetic otherwise), and without a water field it is 1 at every point
- * (material_moisture_ratio), so the factors are evaluated once per run. For
- * the cookie dough's five curves resolving was 1.75M of a 20.0M-instruction
- * step (2D, 64 cells). A mixture resolves per point. */
-typedef struct run_params {
-    double q[MATERIAL_MAX_PARAMS];
-    int nt;                         /* ms->curves[0, nt) are temperature curves, the rest moisture curves */
-    int fold;                       /* no water field: the moisture factors are the same at every point, folded */
-    int tm[MATERIAL_MAX_PARAMS];    /* temperature curve t: the moisture curve on its parameter, or -1 */
-    double tf[MATERIAL_MAX_PARAMS]; /* that curve's folded factor */
-    unsigned char mp[2 * MATERIAL_MAX_PARAMS]; /* moisture curve k: its parameter has a temperature curve */
-    const double *T, *Tmax, *dried;
-} run_params;
-
-static void run_params_init(run_params *rp, const material_slot *ms, const particles *ps, int i0) {
+/* A run's parameters (material.h, material_run_params): material_params_resolve's
+ * values and bits, without its per-point copy of every parameter. The uniform
+ * ones are copied once per run and each point rewrites only the parameters
+ * its curves move, in material_params_resolve's order (the temperature
+ * curve's value, then times its parameter's moisture factor;
+ * material_curve_check allows one curve of each kind per parameter). The
+ * moisture ratio is computed once per point, not once per curve, and the
+ * factors only when the ratios differ from the last point's: without a
+ * water field every ratio is 1 (material_moisture_ratio), so they are
+ * evaluated once per run. For the cookie dough's five curves resolving was
+ * 1.75M of a 20.0M-instruction step (2D, 64 cells). */
+void material_run_params_init(material_run_params *rp, const material_slot *ms, const particles *ps) {
     const int nc = ms->ncurves;
     memcpy(rp->q, ms->params, sizeof(double) * (size_t)ms->m->nparams);
     int nt = 0;
@@ -90,36 +80,29 @@ static void run_params_init(run_params *rp, const material_slot *ms, const parti
     rp->T = pcold(ps, PC_TEMPERATURE);
     rp->Tmax = pcold(ps, PC_TEMP_MAX);
     rp->dried = ps->enabled & (1u << PC_DRIED) ? pcold(ps, PC_DRIED) : NULL;
-    rp->fold = !(ps->enabled & ((1u << PC_WATER) | (1u << PC_DRIED)));
-    for (int k = nt; k < nc; k++) rp->mp[k - nt] = 0;
-    for (int t = 0; t < nt; t++) {
-        rp->tm[t] = -1;
-        for (int k = nt; k < nc; k++)
-            if (ms->curves[k].param == ms->curves[t].param) rp->tm[t] = k, rp->mp[k - nt] = 1;
-    }
-    if (!rp->fold) return;
+    rp->r = rp->rd = NAN; /* no ratio equals it: the first point evaluates */
     for (int k = nt; k < nc; k++) {
-        const double f = material_moisture_factor(ms, &ms->curves[k], ps, i0);
-        for (int t = 0; t < nt; t++)
-            if (rp->tm[t] == k) rp->tf[t] = f;
-        if (!rp->mp[k - nt]) rp->q[ms->curves[k].param] *= f; /* as resolve: the base value times its factor */
+        rp->mp[k - nt] = 0;
+        for (int t = 0; t < nt; t++) rp->mp[k - nt] |= ms->curves[t].param == ms->curves[k].param;
     }
 }
 
-static const double *run_params_at(run_params *rp, const material_slot *ms, const particles *ps, int i) {
+const double *material_run_params_at(material_run_params *rp, const material_slot *ms, const particles *ps, int i) {
     const int nt = rp->nt, nc = ms->ncurves;
     double *q = rp->q;
     for (int t = 0; t < nt; t++) {
         const curve *c = &ms->curves[t];
         q[c->param] = curve_eval(c, c->irreversible ? rp->Tmax[i] : rp->T[i]);
-        if (rp->fold && rp->tm[t] >= 0) q[c->param] *= rp->tf[t];
     }
-    if (!rp->fold && nt < nc) {
+    if (nt < nc) {
         const double r = material_moisture_ratio(ms, ps, i), rd = rp->dried ? fmin(r, 1.0 - rp->dried[i]) : r;
+        const int fresh = !(r == rp->r && rd == rp->rd);
+        rp->r = r, rp->rd = rd;
         for (int k = nt; k < nc; k++) {
             const curve *c = &ms->curves[k];
+            if (fresh) rp->f[k - nt] = curve_eval(c, c->irreversible ? rd : r);
             if (!rp->mp[k - nt]) q[c->param] = ms->params[c->param];
-            q[c->param] *= curve_eval(c, c->irreversible ? rd : r);
+            q[c->param] *= rp->f[k - nt];
         }
     }
     return q;
@@ -132,8 +115,8 @@ static double run_points(const material_table *t, const particles *ps, const mat
     double *state = pcold(ps, PC_STATE), pscratch[MATERIAL_MAX_PARAMS], numax = 0;
     const int stride = ps->state_stride;
     const int by_run = !ms->mix_k && ms->ncurves > 0;
-    run_params rp;
-    if (by_run) run_params_init(&rp, ms, ps, r->i0);
+    material_run_params rp;
+    if (by_run) material_run_params_init(&rp, ms, ps);
     for (int j = 0; j < r->n; j++) {
         const int i = r->i0 + j;
         hearth_point pt;
@@ -142,7 +125,7 @@ static double run_points(const material_table *t, const particles *ps, const mat
             pt.F[c] = r->F[c][j];
         }
         pt.dt = r->dt;
-        pt.p = by_run ? run_params_at(&rp, ms, ps, i) : material_params(t, ps, r->mat, i, pscratch);
+        pt.p = by_run ? material_run_params_at(&rp, ms, ps, i) : material_params(t, ps, r->mat, i, pscratch);
         pt.state = state ? state + (size_t)i * stride : NULL;
         const material_env env = run_env(r, j, flags);
         double tj[9] = {0};
