@@ -12,7 +12,7 @@
 #include "water.h"
 
 /* An elastic block that holds water (evaporation makes the field live), no gravity, one temperature. */
-static hearth_scene *wet_scene(int *mat) {
+static hearth_scene *crust_scene(int *mat, double evaporation) {
     hearth_scene_def d = hearth_default_scene_def();
     d.dim = 2;
     d.dx = 0.01;
@@ -21,12 +21,13 @@ static hearth_scene *wet_scene(int *mat) {
     hearth_scene *s = fx_scene_def(&d);
     if (!s) return NULL;
     const char *n[] = {"E", "nu", "density", "evaporation"};
-    const double v[] = {1e4, 0.3, 500, 1e-6};
+    const double v[] = {1e4, 0.3, 500, evaporation};
     hearth_error err;
     *mat = hearth_scene_add_material(s, "elastic", n, v, 4, &err);
     if (*mat < 0) fprintf(stderr, "material: %s\n", err.msg);
     return s;
 }
+static hearth_scene *wet_scene(int *mat) { return crust_scene(mat, 1e-6); }
 
 static int wet_block(hearth_scene *s, int mat, double sat) {
     hearth_body_def bd = hearth_default_body_def();
@@ -206,5 +207,64 @@ TEST(crust_curve_wave_speed_per_particle) {
     hearth_scene_destroy(s);
 }
 
-TEST_MAIN(T(crust_moisture_curve_factor), T(crust_moisture_curve_refusals), T(crust_moisture_checkpoint_roundtrip),
+/* The door's per-run parameters (material_run_params, material_batch.c)
+ * give material_params' bits at every particle: a parameter with a
+ * temperature and a moisture curve, one with only a moisture curve, one with
+ * only a temperature curve, at temperatures and moisture ratios that differ
+ * per particle; and in a scene without water, where the factors are folded
+ * once per run. */
+static int run_params_match(hearth_scene *s, int m, int *checked) {
+    const material_slot *ms = &s->mats.slot[m];
+    const int np = ms->m->nparams, n = s->ps.n;
+    material_run_params rp;
+    int bad = 0;
+    for (int i0 = 0; i0 < n; i0 += 5) { /* runs of up to 7 points from every fifth particle */
+        material_run_params_init(&rp, ms, &s->ps);
+        for (int i = i0; i < n && i < i0 + 7; i++) {
+            double scratch[MATERIAL_MAX_PARAMS];
+            const double *want = material_params(&s->mats, &s->ps, m, i, scratch);
+            const double *got = material_run_params_at(&rp, ms, &s->ps, i);
+            if (memcmp(want, got, sizeof(double) * (size_t)np)) {
+                if (!bad) fprintf(stderr, "  particle %d (run from %d): parameters differ from material_params\n", i, i0);
+                bad++;
+            }
+            (*checked)++;
+        }
+    }
+    return bad;
+}
+
+TEST(crust_run_params_match_resolve) {
+    for (int wet = 1; wet >= 0; wet--) {
+        int m;
+        hearth_scene *s = crust_scene(&m, wet ? 1e-6 : 0); /* no evaporation: no water field, every ratio 1 */
+        CHECK(s != NULL && m >= 0);
+        hearth_error err;
+        const double x[] = {0.1, 0.5, 1.0}, f[] = {50, 5, 1}, g[] = {0.5, 0.9, 1.2};
+        const double T[] = {20, 70, 120}, ET[] = {1e4, 2e4, 3e4}, rho[] = {500, 450, 400};
+        /* irreversible with water (the driest ratio reached); without, a reversible one keeps PC_DRIED off */
+        CHECK(hearth_scene_material_curve_of(s, m, "E", HEARTH_CURVE_MOISTURE, 3, x, f, wet, &err) == HEARTH_OK);
+        CHECK(hearth_scene_material_curve_of(s, m, "nu", HEARTH_CURVE_MOISTURE, 3, x, g, 0, &err) == HEARTH_OK);
+        CHECK(hearth_scene_material_curve(s, m, "E", 3, T, ET, 1, &err) == HEARTH_OK);
+        CHECK(hearth_scene_material_curve(s, m, "density", 3, T, rho, 0, &err) == HEARTH_OK);
+        CHECK(wet_block(s, m, wet ? 0.4 : NAN) >= 0 && s->ps.n > 20); /* NAN: the body brings no water */
+        CHECK(!(s->ps.enabled & (1u << PC_WATER)) == !wet);
+        double *Tp = pcold(&s->ps, PC_TEMPERATURE), *Tmax = pcold(&s->ps, PC_TEMP_MAX);
+        for (int i = 0; i < s->ps.n; i++) {
+            Tp[i] = 10 + 1.3 * i;
+            Tmax[i] = Tp[i] + (i % 3) * 7;
+            if (wet) set_ratio(s, i, 0.05 + 0.011 * (i % 97));
+        }
+        if (wet) water_dried_step(s);
+        for (int i = 0; wet && i < s->ps.n; i += 2) set_ratio(s, i, 1.0); /* water back at every other particle */
+        int checked = 0;
+        const int bad = run_params_match(s, m, &checked);
+        printf("  %s: %d of %d particle parameter sets differ from material_params\n", wet ? "with water" : "without water",
+               bad, checked);
+        CHECK(bad == 0 && checked >= s->ps.n);
+        hearth_scene_destroy(s);
+    }
+}
+
+TEST_MAIN(T(crust_moisture_curve_factor), T(crust_run_params_match_resolve), T(crust_moisture_curve_refusals), T(crust_moisture_checkpoint_roundtrip),
           T(crust_curve_wave_speed_per_particle))

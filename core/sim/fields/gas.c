@@ -26,12 +26,3 @@ double gas_moles_step(double T0, double T1, double dt, double alpha_g, double R0
     /* dt * mean of exp(-u^2) over u in [a, b] */
     return k * 0.5 * SQRT_PI * (erf(b) - erf(a)) / (b - a);
 }
-
-double gas_porosity(double JP, double n0) {
-    double np = JP - 1 + n0;
-    if (np < 1e-6) np = 1e-6;
-    if (np > 0.999999) np = 0.999999;
-    return np;
-}
-
-double gas_tau(double ng, double T, double np) { return -ng * R_GAS * (T + KELVIN) / np; }

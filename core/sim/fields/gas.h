@@ -2,13 +2,24 @@
 #ifndef HEARTH_GAS_H
 #define HEARTH_GAS_H
 
+#include "physics_constants.h"
+
 /// Moles per unit reference volume produced over one step while the
 /// temperature goes linearly from T0 to T1 (degrees C):
 ///   integral of alpha_g R0 exp(-((T - Tr)/dT)^2) dt.
 /// Exact for constant and for linearly varying temperature (an erf difference).
 double gas_moles_step(double T0, double T1, double dt, double alpha_g, double R0, double Tr, double dT);
 /// Porosity n^p = J^P - 1 + n^p_0, kept inside (1e-6, 1) so the pressure stays finite.
-double gas_porosity(double JP, double n0);
+/// Inline (as gas_tau): the material door calls both for every particle of a
+/// gassy material every step, twice for the porosity (before and after the
+/// return), and the calls cost more than the arithmetic. Neither has a
+/// product to contract into an FMA, so inlining changes no bit.
+static inline double gas_porosity(double JP, double n0) {
+    double np = JP - 1 + n0;
+    if (np < 1e-6) np = 1e-6;
+    if (np > 0.999999) np = 0.999999;
+    return np;
+}
 /// Kirchhoff gas stress coefficient: tau_g = -n^g R theta_abs / n^p I (eq. 13 times J).
-double gas_tau(double ng, double T, double np);
+static inline double gas_tau(double ng, double T, double np) { return -ng * R_GAS * (T + KELVIN) / np; }
 #endif
