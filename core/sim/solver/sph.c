@@ -9,6 +9,9 @@
  *                        them the density by summation (3.13) (sph_neighbours.c)
  *   phase_density        per-particle constants; Sigalotti adaptive h
  *                        (3.54-3.56) if asked
+ *   sph_pairs_prepare    which list slot holds each pair's other half, for
+ *                        sph_forces and phase_xsph, which evaluate each pair
+ *                        once (sph_forces.c)
  *   phase_kinematics     velocity gradient (3.27), colour field and its
  *                        gradient (3.28-3.29), surface particles; the
  *                        viscous renormalisation (sph_viscosity.c)
@@ -154,6 +157,8 @@ static void sph_free(hearth_scene *s) {
     sph_cells_free(&st->cells);
     sph_nlist_free(&st->nl);
     sph_walls_free(st);
+    mem_free(st->pairc, sizeof(double) * st->pairc_cap);
+    mem_free(st->pairm, sizeof(int) * st->pairm_cap);
     size_t c = (size_t)st->cap;
 #define FREE(a, k) mem_free(st->a, sizeof(double) * (k) * c);
     ARRAYS(FREE)
@@ -368,7 +373,7 @@ static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
  * neighbours (it needs only the densities too) the moments of eq. 3.8's
  * renormalisation into st->vc (sph_viscous_factor, sph_viscosity.c). */
 static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s, const sph_cols *c, int i,
-                                                                  const int dim) {
+                                                                  const int dim, double *wb) {
     struct sph_state *st = s->sph;
     const double *x = c->x, *v = c->v, *m = c->m;
     const int *off = st->nl.off, *nb = st->nl.j;
@@ -386,10 +391,14 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
         sph_disp_dim(&st->cells, dim, x + 3 * i, x + 3 * j, d);
         const double r2 = dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1];
         const double r = sqrt(r2);
-        if (r <= 0) continue;
         SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
+        if (r <= 0) {
+            if (wb) wb[k] = sph_w_kc(kc, r); /* XSPH takes the pair, as the walk does */
+            continue;
+        }
         double wk, dwk, lapk;
         sph_w_dw_lap_kc(dim, kc, r, &wk, &dwk, &lapk);
+        if (wb) wb[k] = wk; /* W_ij for xsph_pairs_once: sph_w_kc's bits (sph_kernel_one_pass_same_bits) */
         const double Vj = V[j], g = dwk / r;
         for (int a = 0; a < dim; a++) {
             const double dv = v[3 * j + a] - v[3 * i + a];
@@ -418,11 +427,18 @@ static void phase_kinematics(hearth_scene *s) {
     sph_lattice_moment_prepare(s);
     /* V = m / rho once per particle (the same division as per pair); perm is free scratch after the sort */
     for (int i = 0; i < n; i++) st->perm[i] = c.m[i] / st->rho[i];
+    /* W of each list entry for XSPH, after the forces' terms in st->pairc (sph_pairs_prepare) */
+    double *wb = st->pair_ok ? st->pairc + (size_t)dim * st->nl.off[n] : NULL;
     /* one copy of the loop per dimension: the kernels' dim is a constant in each */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        if (dim == 2) kinematics_one(s, &c, i, 2);
-        else kinematics_one(s, &c, i, 3);
+        if (dim == 2) {
+            if (wb) kinematics_one(s, &c, i, 2, wb);
+            else kinematics_one(s, &c, i, 2, NULL);
+        } else {
+            if (wb) kinematics_one(s, &c, i, 3, wb);
+            else kinematics_one(s, &c, i, 3, NULL);
+        }
     }
 }
 
@@ -570,15 +586,44 @@ static int phase_stress(hearth_scene *s, double dt, step_report *rep) {
     return 0;
 }
 
+/* XSPH's pair weights once per pair, as pairs_once in sph_forces.c does
+ * the forces' terms (its comment says why they are the same bits): i's
+ * w_ij = 2 m_j / (rho_i + rho_j) W_ij into its slot k, j's w_ji into the
+ * slot of j's list that holds i (st->pairm), for every pair whether or not
+ * its particles take XSPH. W_ij is phase_kinematics', kept per entry (wb):
+ * the kernel at the same r and h_ij, so the same bits. The weight and not w (v_j - v_i) is kept: xsph_one
+ * then multiplies and adds as before, which a compiler may fuse into one
+ * rounding (-march=native), so the sums keep their bits in either build. */
+static inline __attribute__((always_inline)) void xsph_pairs_once(const struct sph_state *st, const sph_cols *c, int i,
+                                                                   const double *wb, double *pc) {
+    const double *m = c->m, *rho = st->rho;
+    const int *off = st->nl.off, *nb = st->nl.j, *mir = st->pairm;
+    const double ri = rho[i], mi = m[i];
+    for (int k = off[i + 1] - 1; k >= off[i] && nb[k] > i; k--) {
+        const int j = nb[k], p = mir[k];
+        const double W = wb[k], rs = ri + rho[j]; /* phase_kinematics kept W_ij */
+        pc[k] = 2 * m[j] / rs * W;
+        pc[p] = 2 * mi / rs * W; /* j's, as its own loop has it: rho_j + rho_i is rho_i + rho_j */
+    }
+}
+
 /* One particle's XSPH velocity (phase_xsph), dim a constant in each copy
- * (2D leaves z out, as forces_pairs in sph_forces.c). */
-static inline __attribute__((always_inline)) void xsph_one(struct sph_state *st, const sph_cols *c, int i, const int dim) {
+ * (2D leaves z out, as forces_pairs in sph_forces.c); with pc its pair
+ * weights are the slots xsph_pairs_once wrote. */
+static inline __attribute__((always_inline)) void xsph_one(struct sph_state *st, const sph_cols *c, int i, const int dim,
+                                                            const double *pc) {
     const double *x = c->x, *m = c->m, *h = st->h, *rho = st->rho, *vnew = st->vnew;
     const int *off = st->nl.off, *nb = st->nl.j;
     double *vi = c->v + 3 * i;
     const double *wi = vnew + 3 * i;
     double corr[3] = {0, 0, 0};
-    if (st->xsph[i] > 0) {
+    if (st->xsph[i] > 0 && pc) {
+        for (int k = off[i]; k < off[i + 1]; k++) {
+            const int j = nb[k];
+            const double w = pc[k];
+            for (int q = 0; q < dim; q++) corr[q] += w * (vnew[3 * j + q] - wi[q]);
+        }
+    } else if (st->xsph[i] > 0) {
         const double hi = h[i], ri = rho[i];
         const sph_kc kci = sph_kc_of(dim, hi);
         for (int k = off[i]; k < off[i + 1]; k++) {
@@ -596,17 +641,33 @@ static inline __attribute__((always_inline)) void xsph_one(struct sph_state *st,
 }
 
 /* XSPH (eq. 3.34, its epsilon the tuner of eq. 4.4) from the kicked
- * velocities into the particles' v; the largest |a| for the force limit. */
+ * velocities into the particles' v; the largest |a| for the force limit.
+ * When sph_forces took the symmetric path and some particle takes XSPH,
+ * each pair's weights are made once (xsph_pairs_once) into st->pairc, free
+ * again once the forces are summed. */
 static void phase_xsph(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim, *flags = c.flags;
+    int any = 0;
+    for (int i = 0; i < n && st->pair_ok && !any; i++) any = st->xsph[i] > 0;
+    double *pc = any ? st->pairc : NULL;
+    if (pc) {
+        const double *wb = st->pairc + (size_t)dim * st->nl.off[n];
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+        for (int i = 0; i < n; i++) xsph_pairs_once(st, &c, i, wb, pc);
+    }
     double amax = 0;
 #pragma omp parallel for schedule(static) reduction(max : amax) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         if (flags && (flags[i] & PF_FIXED)) continue; /* its prescribed velocity, 0 unless it moves */
-        if (dim == 2) xsph_one(st, &c, i, 2);
-        else xsph_one(st, &c, i, 3);
+        if (dim == 2) {
+            if (pc) xsph_one(st, &c, i, 2, pc);
+            else xsph_one(st, &c, i, 2, NULL);
+        } else {
+            if (pc) xsph_one(st, &c, i, 3, pc);
+            else xsph_one(st, &c, i, 3, NULL);
+        }
         const double an = sqrt(st->acc[3 * i] * st->acc[3 * i] + st->acc[3 * i + 1] * st->acc[3 * i + 1] +
                                st->acc[3 * i + 2] * st->acc[3 * i + 2]);
         if (an > amax) amax = an;
@@ -717,6 +778,7 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     phase_predrift(s, dt);
     if ((e = phase_neighbours(s, err))) return e;
     if ((e = phase_density(s, err))) return e;
+    if ((e = sph_pairs_prepare(s, err))) return e;
     phase_kinematics(s);
     phase_pressure(s);
     if (phase_stress(s, dt, rep)) return HEARTH_OK; /* the guard reads rep */
@@ -743,9 +805,10 @@ const double *sph_particle_values(const hearth_scene *s, const char *which) {
 
 /* What ensure() and the neighbour lists keep per particle: the ARRAYS
  * doubles and the sort's key and order, each with ensure's 1/4 margin; the
- * lists' offsets, and their entries for the neighbours within the support
+ * lists' offsets, and per entry for the neighbours within the support
  * h = h_factor V0^(1/dim) (the lattice points of a disc or ball of radius h,
- * with nlist_reserve's 1/4 margin). Adaptive h (sph.adaptive_h) may grow the
+ * with the 1/4 margin) its index, its pair slot (an int) and its pair terms
+ * (dim + 1 doubles; sph_pairs_prepare). Adaptive h (sph.adaptive_h) may grow the
  * lists past this. */
 static double sph_bytes_per_particle(const hearth_scene *s) {
 #define COUNT(a, k) +(k)
@@ -753,7 +816,8 @@ static double sph_bytes_per_particle(const hearth_scene *s) {
 #undef COUNT
     const double hf = s->def.sph.h_factor;
     const double nb = s->def.dim == 3 ? 4.0 / 3.0 * SPH_PI * hf * hf * hf : SPH_PI * hf * hf;
-    return 1.25 * (doubles * sizeof(double) + 2 * sizeof(int)) + sizeof(int) + 1.25 * nb * sizeof(int);
+    const double entry = 2 * sizeof(int) + (s->def.dim + 1) * sizeof(double);
+    return 1.25 * (doubles * sizeof(double) + 2 * sizeof(int)) + sizeof(int) + 1.25 * nb * entry;
 }
 
 /* No grid, so no margin: particles may fill the whole box. */

@@ -8,6 +8,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "alloc.h"
+#include "error.h"
 #include "sph_kernel.h"
 #include "sph_state.h"
 #include "tensor.h"
@@ -113,10 +115,125 @@ static inline __attribute__((always_inline)) void forces_pairs(const struct sph_
     (void)eps_as;
 }
 
+/* The symmetric path (sph_forces): without wall frames and artificial
+ * stress, particle j's pair term from i is particle i's from j with d and
+ * v_i - v_j negated and m_i for m_j, so each pair is evaluated once, by
+ * its lower index, into both particles' list slots (st->pairc, dim doubles
+ * per list entry): i's own at k, j's at the slot of its list that holds i.
+ * Each particle then sums its slots in its list order, the order the
+ * per-particle loop adds them in, so the sums are the same. The negations
+ * are exact and every other factor is a sum or product of the pair's two
+ * values (0.5 (mu_i + mu_j), rho_j rho_i, h_ij, ...), which commute, so a
+ * slot holds the bits the per-particle loop adds. Returns the pairs it
+ * wrote, or -1 when one is not as the path needs (coincident particles, or
+ * j's list lacking i): sph_forces then takes the per-particle loop, as it
+ * does when the pairs written do not fill every slot. */
+static inline __attribute__((always_inline)) int pairs_once(const struct sph_state *st, const sph_cols *c, int i,
+                                                             const int dim, double av_beta, const int *mir,
+                                                             double *pc) {
+    const double *x = c->x, *v = c->v, *m = c->m;
+    const int *off = st->nl.off, *nb = st->nl.j;
+    const double *h = st->h, *rho = st->rho, *Prr = st->perm, *mu = st->mu, *vc = st->vc;
+    const double ri = rho[i], Pi = Prr[i], *Si = st->S + 9 * i, hi = h[i], mui = mu[i], vci = vc[i], mi = m[i];
+    const sph_kc kci = sph_kc_of(dim, hi);
+    int np = 0;
+    for (int k = off[i + 1] - 1; k >= off[i] && nb[k] > i; k--, np++) { /* the lists ascend: j > i at the end */
+        const int j = nb[k], p = mir[k]; /* i in j's list (pair_mirror) */
+        double d[3];
+        sph_disp_dim(&st->cells, dim, x + 3 * i, x + 3 * j, d);
+        const double r2 = dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1], r = sqrt(r2);
+        if (!(r > 0)) return -1;
+        SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
+        const double hij = kc->h, rj = rho[j];
+        const double g = sph_dw_kc(kc, r) / r;
+        double vij[3], vd = 0;
+        for (int q = 0; q < dim; q++) {
+            vij[q] = v[3 * i + q] - v[3 * j + q];
+            vd += vij[q] * d[q];
+        }
+        double Pij = Pi + Prr[j]; /* eq. 3.18 */
+        if (av_beta > 0 && vd < 0) { /* eq. 3.41, with mu_ij of eq. 3.37 */
+            const double muij = hij * vd / (r2 + 0.01 * hij * hij);
+            Pij += av_beta * muij * muij / (0.5 * (ri + rj));
+        }
+        const double *Sj = st->S + 9 * j, lv = sph_lap_visc_kc(kc, r);
+        const double mu2 = 0.5 * (mui + mu[j]), rr = rj * ri, vc2 = 0.5 * (vci + vc[j]);
+        const double visc = mu2 * m[j] / rr * lv * vc2, viscj = mu2 * mi / rr * lv * vc2; /* as forces_pairs' */
+        for (int q = 0; q < dim; q++) {
+            double sd = 0;
+            for (int b = 0; b < dim; b++) sd += (Si[3 * q + b] + Sj[3 * q + b]) * d[b];
+            const double t = -Pij * g * d[q] + sd * g, nd = -d[q], nsd = -sd, nv = -vij[q];
+            pc[(size_t)dim * k + q] = m[j] * t - visc * vij[q];
+            pc[(size_t)dim * p + q] = mi * (-Pij * g * nd + nsd * g) - viscj * nv; /* j's, as its own loop has it */
+        }
+    }
+    return np;
+}
+
+/* For each list entry k of particle i with j = nb[k] > i, the slot of j's
+ * list that holds i, into st->pairm[k]. Without a periodic axis the lists
+ * ascend (sph_neighbours.c's stencil: rows of sorted cells in order), so
+ * j's lower neighbours are its first entries, in the order this loop over
+ * ascending i meets them: a counter per particle (st->key, free after the
+ * sort) finds each in a few instructions where a search of j's list cost
+ * about 35 a pair. Each slot is checked to hold i; 0 when one does not
+ * (the lists are then not as this needs, and each pass takes its
+ * per-particle loop). Returns the pairs, each entry j > i one, or -1.
+ * Serial: about 9 instructions an entry (179 a particle at 5k). */
+static long pair_mirror(struct sph_state *st, int n) {
+    const int *off = st->nl.off, *nb = st->nl.j;
+    int *cur = st->key, *mir = st->pairm;
+    long pairs = 0;
+    for (int i = 0; i < n; i++) cur[i] = off[i];
+    for (int i = 0; i < n; i++)
+        for (int k = off[i + 1] - 1; k >= off[i] && nb[k] > i; k--, pairs++) {
+            const int j = nb[k], p = cur[j]++;
+            if (p >= off[j + 1] || nb[p] != i) return -1;
+            mir[k] = p;
+        }
+    return pairs;
+}
+
+/* The step's pair slots, after the lists: st->pairm by pair_mirror, room in
+ * st->pairc for dim + 1 doubles per list entry (the forces' dim terms,
+ * which XSPH's weights reuse, and W_ij from phase_kinematics), and
+ * st->pair_ok when every slot has its pair. Periodic axes wrap the
+ * stencil's rows, so their lists do not ascend: no slots then, and each
+ * pass takes its per-particle loop. */
+hearth_status sph_pairs_prepare(hearth_scene *s, hearth_error *err) {
+    struct sph_state *st = s->sph;
+    const int n = s->ps.n;
+    st->pair_ok = 0;
+    const size_t nent = n > 0 ? (size_t)st->nl.off[n] : 0;
+    if (st->cells.anyper || nent == 0) return HEARTH_OK; /* (no pairs: nothing to share) */
+    if (nent > st->pairm_cap) {
+        mem_free(st->pairm, sizeof(int) * st->pairm_cap);
+        st->pairm_cap = nent + nent / 4 + 16;
+        st->pairm = mem_alloc(sizeof(int) * st->pairm_cap);
+        if (!st->pairm) {
+            st->pairm_cap = 0;
+            return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory for %zu pair slots", nent);
+        }
+    }
+    const size_t need = (size_t)(s->def.dim + 1) * nent; /* the forces' dim terms, then W (phase_kinematics) */
+    if (need > st->pairc_cap) {
+        mem_free(st->pairc, sizeof(double) * st->pairc_cap);
+        st->pairc_cap = need + need / 4 + 16;
+        st->pairc = mem_alloc(sizeof(double) * st->pairc_cap);
+        if (!st->pairc) {
+            st->pairc_cap = 0;
+            return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory for %zu pair terms", need);
+        }
+    }
+    st->pair_ok = 2 * pair_mirror(st, n) == (long)nent; /* each entry one half of a pair */
+    return HEARTH_OK;
+}
+
 /* One particle's accelerations and kick (sph_forces), dim a constant in
- * each copy. */
+ * each copy; with pc (the symmetric path) its pair terms are the slots of
+ * st->pairc, summed in list order, and it has no wall frame. */
 static inline __attribute__((always_inline)) void forces_one(hearth_scene *s, const sph_cols *c, int i, const int dim,
-                                                              double dt) {
+                                                              double dt, const double *pc) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
     const int *flags = c->flags;
@@ -131,9 +248,12 @@ static inline __attribute__((always_inline)) void forces_one(hearth_scene *s, co
     }
     const double ri = st->rho[i];
     double wn[3] = {0, 0, 0}, da = 0, drag = 0;
-    const int wall = flags && !(flags[i] & PF_FIXED) && sph_wall_frame(s, i, wn, &da);
+    const int wall = !pc && flags && !(flags[i] & PF_FIXED) && sph_wall_frame(s, i, wn, &da);
     const double dah = fmax(da, 0.5 * st->sp[i]);
-    if (eps_as > 0) {
+    if (pc) {
+        for (int k = st->nl.off[i]; k < st->nl.off[i + 1]; k++)
+            for (int q = 0; q < dim; q++) a[q] += pc[(size_t)dim * k + q];
+    } else if (eps_as > 0) {
         if (wall) forces_pairs(st, c, i, dim, 1, 1, av_beta, eps_as, wn, da, dah, a, &drag);
         else forces_pairs(st, c, i, dim, 0, 1, av_beta, eps_as, wn, da, dah, a, &drag);
     } else {
@@ -165,6 +285,10 @@ void sph_forces(hearth_scene *s, double dt) {
     struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim;
+    /* the symmetric path needs the pair slots (sph_pairs_prepare), no wall frame (no fixed particle) and no
+     * artificial stress */
+    int sym = st->pair_ok && !(s->def.sph.artificial_stress > 0);
+    for (int i = 0; sym && c.flags && i < n; i++) sym = !(c.flags[i] & PF_FIXED);
     /* S / rho^2, as eq. 3.18's pair sum reads it, once per particle instead of twice per pair (the same
      * division, so the same bits); st->S holds it from here to the step's end */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
@@ -172,10 +296,31 @@ void sph_forces(hearth_scene *s, double dt) {
         for (int k = 0; k < 9; k++) st->S[9 * i + k] = st->S[9 * i + k] / (st->rho[i] * st->rho[i]);
         st->perm[i] = st->prs[i] / (st->rho[i] * st->rho[i]); /* P / rho^2 of eq. 3.18 (perm is free scratch now) */
     }
+    if (sym) { /* each pair once, into both particles' slots (pairs_once) */
+        const double av_beta = s->def.sph.av_beta;
+        double *pc = st->pairc;
+        const int *mir = st->pairm;
+        long pairs = 0;
+        int bad = 0;
+#pragma omp parallel for schedule(static) reduction(+ : pairs, bad) if (n >= SCENE_PARALLEL_MIN)
+        for (int i = 0; i < n; i++) {
+            const int k = dim == 2 ? pairs_once(st, &c, i, 2, av_beta, mir, pc)
+                                  : pairs_once(st, &c, i, 3, av_beta, mir, pc);
+            if (k < 0) bad++;
+            else pairs += k;
+        }
+        sym = !bad && 2 * pairs == (long)st->nl.off[n]; /* every slot written, each once (as pair_mirror checked) */
+    }
+    const double *pc = sym ? st->pairc : NULL;
     /* one copy of the loop per dimension: the kernels' dim is a constant in each */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN && !s->body_force_serial)
     for (int i = 0; i < n; i++) {
-        if (dim == 2) forces_one(s, &c, i, 2, dt);
-        else forces_one(s, &c, i, 3, dt);
+        if (dim == 2) {
+            if (pc) forces_one(s, &c, i, 2, dt, pc);
+            else forces_one(s, &c, i, 2, dt, NULL);
+        } else {
+            if (pc) forces_one(s, &c, i, 3, dt, pc);
+            else forces_one(s, &c, i, 3, dt, NULL);
+        }
     }
 }

@@ -39,6 +39,11 @@ struct sph_state {
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
     double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
     double amax;    /* largest |a| of the last step, for the force limit */
+    double *pairc;  /* each list entry's pair values, dim + 1 doubles (sph_pairs_prepare) */
+    size_t pairc_cap;
+    int *pairm;     /* and for each entry k of i with j > i, the slot of j's list holding i */
+    size_t pairm_cap;
+    int pair_ok;    /* this step's pairm is whole: the pair passes may evaluate each pair once */
     /* sph_viscous_factor's resting-lattice moment for h / spacing = lm_ratio (sph_lattice_moment_prepare) */
     double lm_ratio, lm_val;
     /* Per material: the schema index of the plugin parameter SPH applies
@@ -106,6 +111,10 @@ void sph_artificial_stress(hearth_scene *s);
 /// body force) into st->acc and the kicked velocities into st->vnew; divides
 /// st->S by rho^2 in place and leaves P / rho^2 in st->perm.
 void sph_forces(hearth_scene *s, double dt);
+/// After the lists: which slot of j's list holds i for each entry of i with
+/// j > i (st->pairm), room for the pair terms (st->pairc) and st->pair_ok;
+/// NOMEM when they cannot be kept.
+hearth_status sph_pairs_prepare(hearth_scene *s, hearth_error *err);
 
 /* ---- sph_walls.c ---- */
 /// The wall normal n and fluid particle i's distance da to the wall surface; 0 without fixed neighbours.
