@@ -130,6 +130,16 @@ mpi_heat_matches_one_rank)
         on_slabs 100
     done
     ;;
+mpi_heated_plate_across_slabs_matches_one_rank)
+    # a hot plate across the slab axis, a jelly block seeded three cells into
+    # it just above the ranks' cut: contact points whose stencils reach two
+    # block layers past the slab below (mpm_ranks_fields_contacts); explicit
+    # heat, then the CG solve. Before the contacts moved ranks: 5.7e-7.
+    for heat in explicit implicit; do
+        against_one hot_plate.lua 60 --set heat=$heat
+        on_slabs 60
+    done
+    ;;
 mpi_rebalance_matches_one_rank)
     # a block thrown across a resting bar: the cuts move at every rebalance, at
     # 4 ranks by more than a slab (extra migration passes); 250 steps in slabs
