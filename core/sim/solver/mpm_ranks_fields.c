@@ -11,7 +11,9 @@
  * to that: it lies up to two cells from its particle, or as deep as the
  * particle went into the collider, so each point goes to the rank owning its
  * base node's block (mpm_ranks_fields_contacts), whose slab and upper halo
- * layer hold its whole stencil. So with fields each rank
+ * layer hold its whole stencil. The surface search's domain-wall test reads
+ * the box's end node, which may lie further still: every rank gets the end
+ * planes' mass flags (wall_planes). So with fields each rank
  * keeps one complete block layer on each side of its slab: the upper
  * neighbour's first layer (the momentum mode's ghost layer, now with every
  * block its owner has, not only the ones this rank's particles touch) and
@@ -62,6 +64,8 @@ struct mpm_slab_fields {
     int redn;            /* ranks it was sized for */
     double *cbuf[2];     /* contact points for the lower and the upper neighbour */
     size_t ccap[2];      /* doubles */
+    unsigned char *wall; /* the box's two end planes along the axis: a node's mass > 0 (mpm_ranks_fields_wall) */
+    size_t wallcap;
 };
 
 #define RED_MAX 8 /* doubles one reduction carries */
@@ -71,6 +75,7 @@ void mpm_ranks_fields_free(mpm_state *m) {
     if (!f) return;
     for (int k = 0; k < 2; k++) mem_free(f->buf[k], f->cap[k] * sizeof(double));
     for (int k = 0; k < 2; k++) mem_free(f->cbuf[k], f->ccap[k] * sizeof(double));
+    mem_free(f->wall, f->wallcap);
     mem_free(f->own, (size_t)f->owncap);
     mem_free(f->lay, f->laycap);
     mem_free(f->red, sizeof(double) * RED_MAX * (size_t)f->redn);
@@ -212,6 +217,73 @@ static hearth_status exchange(hearth_scene *s, const int *ch, int nc, int sl_dow
     return HEARTH_OK;
 }
 
+/* Nodes in a plane across the axis (the other axes' node counts). */
+static size_t plane_nodes(const grid *g, int axis) {
+    size_t n = 1;
+    for (int d = 0; d < g->dim; d++)
+        if (d != axis) n *= (size_t)g->nn[d];
+    return n;
+}
+
+/* The domain-wall test of boundary.c's surface search reads the box's end
+ * node along each axis, up to three nodes from a cell; through the chain of
+ * the search (a particle's nodes, their cells, the cells around each) a rank
+ * whose slab ends two layers below the end layer reads it, and holds no copy
+ * (measured: 5.7e-7 in temperature on a column against the far wall). Every
+ * rank gets both end planes' "has mass" flags after P2G instead: the owners
+ * of the end layers set theirs, a bytewise max over the ranks (integers:
+ * any order gives the same bytes). */
+static hearth_status wall_planes(hearth_scene *s, int axis, int lo, int hi, hearth_error *err) {
+    struct mpm_slab_fields *f = s->mpm->sfields;
+    const grid *g = &s->g;
+    const size_t P = plane_nodes(g, axis);
+    if (2 * P > f->wallcap) {
+        unsigned char *b = mem_alloc(2 * P);
+        if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the box's end planes (%zu nodes)", 2 * P);
+        mem_free(f->wall, f->wallcap);
+        f->wall = b, f->wallcap = 2 * P;
+    }
+    memset(f->wall, 0, 2 * P);
+    const int S = g->nblocks / g->nb[axis], NPB = g->nodes_per_block;
+    for (int side = 0; side < 2; side++) {
+        const int end = side ? g->nn[axis] - 1 : 0, l = end / GRID_B;
+        if (l < lo || l >= hi) continue;
+        for (int k = 0; k < S; k++) {
+            const int slot = g->slot[layer_block(g, axis, l, k)];
+            if (slot < 0) continue;
+            const double *node = grid_block(g, slot);
+            int bc[3];
+            grid_block_coords(g, g->active[slot], bc);
+            for (int li = 0; li < NPB; li++) {
+                int gi[3];
+                grid_node_index(g, bc, li, gi);
+                if (gi[axis] != end || !(node[CH_M * NPB + li] > 0)) continue;
+                size_t idx = 0;
+                int in = 1;
+                for (int d = 0; d < g->dim; d++)
+                    if (d != axis) in &= gi[d] < g->nn[d], idx = idx * (size_t)g->nn[d] + (size_t)gi[d];
+                if (in) f->wall[(size_t)side * P + idx] = 1;
+            }
+        }
+    }
+    ranks_max_bytes(f->wall, 2 * P);
+    return HEARTH_OK;
+}
+
+int mpm_ranks_fields_wall(const hearth_scene *s, int d, const int gi[3]) {
+    const mpm_state *m = s->mpm;
+    int axis, lo, hi;
+    if (!m || !m->sfields || !m->sfields->wall || !mpm_ranks_slab(m, &axis, &lo, &hi) || d != axis) return -1;
+    const grid *g = &s->g;
+    size_t idx = 0;
+    for (int e = 0; e < g->dim; e++)
+        if (e != axis) {
+            if (gi[e] >= g->nn[e]) return 0;
+            idx = idx * (size_t)g->nn[e] + (size_t)gi[e];
+        }
+    return m->sfields->wall[(gi[axis] == 0 ? 0 : plane_nodes(g, axis)) + idx];
+}
+
 hearth_status mpm_ranks_fields_fill(hearth_scene *s, const int *ch, int nc, hearth_error *err) {
     mpm_state *m = s->mpm;
     int axis, lo, hi;
@@ -233,6 +305,7 @@ hearth_status mpm_ranks_fields_fill(hearth_scene *s, const int *ch, int nc, hear
             grid_block_coords(g, g->active[k], c);
             f->own[k] = c[axis] >= lo && c[axis] < hi;
         }
+        if ((st = wall_planes(s, axis, lo, hi, err))) return st;
     }
     /* the first layer goes down (the lower neighbour's upper halo), the last up */
     return exchange(s, ch, nc, dn ? lo : -1, up ? hi - 1 : -1, 0, dn ? lo - 1 : -1, up ? hi : -1, 2, err);
