@@ -130,6 +130,27 @@ mpi_heat_matches_one_rank)
         on_slabs 100
     done
     ;;
+mpi_heated_plate_across_slabs_matches_one_rank)
+    # a hot plate across the slab axis, a jelly block seeded three cells into
+    # it just above the ranks' cut: contact points whose stencils reach two
+    # block layers past the slab below (mpm_ranks_fields_contacts); explicit
+    # heat, then the CG solve. Before the contacts moved ranks: 5.7e-7.
+    for heat in explicit implicit; do
+        against_one hot_plate.lua 60 --set heat=$heat
+        on_slabs 60
+    done
+    ;;
+mpi_wall_column_matches_one_rank)
+    # a column against the box's far wall in an oven, the cut two layers
+    # below the end layer: the surface search's domain-wall test reads the end
+    # node (mpm_ranks_fields_wall); explicit heat, then the CG solve.
+    # Before the end planes were shared: 5.7e-7. Only at 2 ranks: at 4 the
+    # scene crashes before its first step (docs/scaling.md, not done yet).
+    for heat in explicit implicit; do
+        against_one wall_column.lua 60 --set heat=$heat
+        on_slabs 60
+    done
+    ;;
 mpi_rebalance_matches_one_rank)
     # a block thrown across a resting bar: the cuts move at every rebalance, at
     # 4 ranks by more than a slab (extra migration passes); 250 steps in slabs

@@ -330,7 +330,8 @@ FORCE_INLINE void cell_gradient(hearth_scene *s, const int D, int k, int near) {
             if (gi[d] - 1 <= 2) ej[d] = 0;
             else if (gi[d] >= g->nn[d] - 3) ej[d] = g->nn[d] - 1;
             else continue;
-            if (node_value(g, ej, CH_M) > 0) gr[d] = 0;
+            const int w = mpm_ranks_fields_wall(s, d, ej); /* MPI slabs: the end layer may lie past the rank's halo */
+            if (w > 0 || (w < 0 && node_value(g, ej, CH_M) > 0)) gr[d] = 0;
         }
         /* nor is contact with a collider: drop the component along its normal */
         double xc[3] = {0, 0, 0};

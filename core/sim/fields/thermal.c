@@ -515,7 +515,8 @@ hearth_status thermal_prepare(hearth_scene *s, hearth_error *err) {
     }
     if (find_boundary(s) || mark_held(s))
         return err_set(err, HEARTH_ERR_NOMEM, "out of memory for held temperatures (%d grid blocks)", g->nactive);
-    return HEARTH_OK;
+    /* MPI slabs: each contact point to the rank that holds its whole stencil */
+    return mpm_ranks_fields_contacts(s, err);
 }
 
 /* ---- small nodes at the air surface (explicit heat with an oven) ----------

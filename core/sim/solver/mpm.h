@@ -183,6 +183,11 @@ hearth_status mpm_ranks_fields_fill_flags(hearth_scene *s, unsigned char *flag, 
 void mpm_ranks_fields_clear(hearth_scene *s);
 /// Per active block slot: whether this rank owns it (sums over nodes count it once); NULL outside the slab mode.
 const unsigned char *mpm_ranks_fields_owned(const hearth_scene *s);
+/// After thermal.c's find_boundary: each heated collider contact point to the rank owning its base node's block.
+hearth_status mpm_ranks_fields_contacts(hearth_scene *s, hearth_error *err);
+/// boundary.c's domain-wall test on slabs: whether the box's end node gi (gi[d] 0 or nn[d] - 1) has mass,
+/// the owner's answer; -1 when d is not the slab axis or outside the slab mode (read the node).
+int mpm_ranks_fields_wall(const hearth_scene *s, int d, const int gi[3]);
 /// Every rank's sum[0..nsum) added and max[0..nmax) maxed, in rank order, in place (nsum + nmax <= 8).
 void mpm_ranks_fields_reduce(const hearth_scene *s, double *sum, int nsum, double *max, int nmax);
 /// At the end of the step: the step report over the ranks (vcol: the fastest collider speed at a node).

@@ -25,8 +25,12 @@
  * values after P2G and after each field scatter, so the boundary search, the
  * explicit update's small-node merge and the CG's vector updates run on
  * every block a rank holds; the CG's dot products and the field sums are
- * added in rank order. CO2 is a particle quantity (G2P); stats() adds its
- * sums over the ranks.
+ * added in rank order. A heated collider's contact points go to the rank
+ * owning their base node's block (their particle's foot on the face can lie
+ * past the halo layer: mpm_ranks_fields_contacts), and every rank gets the
+ * box's end planes' mass flags for the surface search's domain-wall test (the
+ * end layer can lie past its halo: mpm_ranks_fields_wall). CO2 is a particle quantity
+ * (G2P); stats() adds its sums over the ranks.
  *
  * Replicated (scenes whose passes read every particle inside a step: mixing,
  * periodic axes, the rollback guard, held bodies, wet colliders,

@@ -4,11 +4,16 @@
  * The field passes between P2G and the grid update read more than a
  * particle's own tile: boundary.c's surface search takes gradients of the
  * volume fraction one node either side and averages them over the cells
- * around, thermal.c's small-node merge looks at a node's 26 neighbours and
- * scatters into one of them, and a heated collider's contact point (the
- * particle's foot on the face) may lie below the particle's own block. All
- * of these reach at most three nodes from the nodes a rank's particles
- * touch, less than a block layer (GRID_B = 4). So with fields each rank
+ * around, and thermal.c's small-node merge looks at a node's 26 neighbours and
+ * scatters into one of them. These reach at most three nodes from the nodes
+ * a rank's particles touch, less than a block layer (GRID_B = 4). A heated
+ * collider's contact point (the particle's foot on the face) does not keep
+ * to that: it lies up to two cells from its particle, or as deep as the
+ * particle went into the collider, so each point goes to the rank owning its
+ * base node's block (mpm_ranks_fields_contacts), whose slab and upper halo
+ * layer hold its whole stencil. The surface search's domain-wall test reads
+ * the box's end node, which may lie further still: every rank gets the end
+ * planes' mass flags (wall_planes). So with fields each rank
  * keeps one complete block layer on each side of its slab: the upper
  * neighbour's first layer (the momentum mode's ghost layer, now with every
  * block its owner has, not only the ones this rank's particles touch) and
@@ -37,6 +42,8 @@
  * the implicit solve adds one sum and fill of one channel and three
  * allgathers of a double per CG iteration. None of it grows with the
  * particle count along the slab axis (`mpi_heat_halo_traffic_bounded_4`). */
+#include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "alloc.h"
@@ -55,6 +62,10 @@ struct mpm_slab_fields {
     size_t laycap;
     double *red;         /* nranks x RED_MAX: the reductions' allgather */
     int redn;            /* ranks it was sized for */
+    double *cbuf[2];     /* contact points for the lower and the upper neighbour */
+    size_t ccap[2];      /* doubles */
+    unsigned char *wall; /* the box's two end planes along the axis: a node's mass > 0 (mpm_ranks_fields_wall) */
+    size_t wallcap;
 };
 
 #define RED_MAX 8 /* doubles one reduction carries */
@@ -63,6 +74,8 @@ void mpm_ranks_fields_free(mpm_state *m) {
     struct mpm_slab_fields *f = m->sfields;
     if (!f) return;
     for (int k = 0; k < 2; k++) mem_free(f->buf[k], f->cap[k] * sizeof(double));
+    for (int k = 0; k < 2; k++) mem_free(f->cbuf[k], f->ccap[k] * sizeof(double));
+    mem_free(f->wall, f->wallcap);
     mem_free(f->own, (size_t)f->owncap);
     mem_free(f->lay, f->laycap);
     mem_free(f->red, sizeof(double) * RED_MAX * (size_t)f->redn);
@@ -204,6 +217,73 @@ static hearth_status exchange(hearth_scene *s, const int *ch, int nc, int sl_dow
     return HEARTH_OK;
 }
 
+/* Nodes in a plane across the axis (the other axes' node counts). */
+static size_t plane_nodes(const grid *g, int axis) {
+    size_t n = 1;
+    for (int d = 0; d < g->dim; d++)
+        if (d != axis) n *= (size_t)g->nn[d];
+    return n;
+}
+
+/* The domain-wall test of boundary.c's surface search reads the box's end
+ * node along each axis, up to three nodes from a cell; through the chain of
+ * the search (a particle's nodes, their cells, the cells around each) a rank
+ * whose slab ends two layers below the end layer reads it, and holds no copy
+ * (measured: 5.7e-7 in temperature on a column against the far wall). Every
+ * rank gets both end planes' "has mass" flags after P2G instead: the owners
+ * of the end layers set theirs, a bytewise max over the ranks (integers:
+ * any order gives the same bytes). */
+static hearth_status wall_planes(hearth_scene *s, int axis, int lo, int hi, hearth_error *err) {
+    struct mpm_slab_fields *f = s->mpm->sfields;
+    const grid *g = &s->g;
+    const size_t P = plane_nodes(g, axis);
+    if (2 * P > f->wallcap) {
+        unsigned char *b = mem_alloc(2 * P);
+        if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the box's end planes (%zu nodes)", 2 * P);
+        mem_free(f->wall, f->wallcap);
+        f->wall = b, f->wallcap = 2 * P;
+    }
+    memset(f->wall, 0, 2 * P);
+    const int S = g->nblocks / g->nb[axis], NPB = g->nodes_per_block;
+    for (int side = 0; side < 2; side++) {
+        const int end = side ? g->nn[axis] - 1 : 0, l = end / GRID_B;
+        if (l < lo || l >= hi) continue;
+        for (int k = 0; k < S; k++) {
+            const int slot = g->slot[layer_block(g, axis, l, k)];
+            if (slot < 0) continue;
+            const double *node = grid_block(g, slot);
+            int bc[3];
+            grid_block_coords(g, g->active[slot], bc);
+            for (int li = 0; li < NPB; li++) {
+                int gi[3];
+                grid_node_index(g, bc, li, gi);
+                if (gi[axis] != end || !(node[CH_M * NPB + li] > 0)) continue;
+                size_t idx = 0;
+                int in = 1;
+                for (int d = 0; d < g->dim; d++)
+                    if (d != axis) in &= gi[d] < g->nn[d], idx = idx * (size_t)g->nn[d] + (size_t)gi[d];
+                if (in) f->wall[(size_t)side * P + idx] = 1;
+            }
+        }
+    }
+    ranks_max_bytes(f->wall, 2 * P);
+    return HEARTH_OK;
+}
+
+int mpm_ranks_fields_wall(const hearth_scene *s, int d, const int gi[3]) {
+    const mpm_state *m = s->mpm;
+    int axis, lo, hi;
+    if (!m || !m->sfields || !m->sfields->wall || !mpm_ranks_slab(m, &axis, &lo, &hi) || d != axis) return -1;
+    const grid *g = &s->g;
+    size_t idx = 0;
+    for (int e = 0; e < g->dim; e++)
+        if (e != axis) {
+            if (gi[e] >= g->nn[e]) return 0;
+            idx = idx * (size_t)g->nn[e] + (size_t)gi[e];
+        }
+    return m->sfields->wall[(gi[axis] == 0 ? 0 : plane_nodes(g, axis)) + idx];
+}
+
 hearth_status mpm_ranks_fields_fill(hearth_scene *s, const int *ch, int nc, hearth_error *err) {
     mpm_state *m = s->mpm;
     int axis, lo, hi;
@@ -225,6 +305,7 @@ hearth_status mpm_ranks_fields_fill(hearth_scene *s, const int *ch, int nc, hear
             grid_block_coords(g, g->active[k], c);
             f->own[k] = c[axis] >= lo && c[axis] < hi;
         }
+        if ((st = wall_planes(s, axis, lo, hi, err))) return st;
     }
     /* the first layer goes down (the lower neighbour's upper halo), the last up */
     return exchange(s, ch, nc, dn ? lo : -1, up ? hi - 1 : -1, 0, dn ? lo - 1 : -1, up ? hi : -1, 2, err);
@@ -316,5 +397,82 @@ void mpm_ranks_fields_reduce(const hearth_scene *s, double *sum, int nsum, doubl
         for (int r = 1; r < m->nranks; r++)
             if (all[r * w + nsum + k] > t) t = all[r * w + nsum + k];
         max[k] = t;
+    }
+}
+
+/* A contact point's owner: the rank whose slab holds the block of the point's
+ * base node along the axis (grid_point_weights' floor, clamped to the grid). */
+static int contact_layer(const grid *g, int axis, const double *ct) {
+    const int b = (int)floor((ct[axis] - g->lo[axis]) * g->inv_dx - 0.5);
+    const int l = (b < 0 ? b - (GRID_B - 1) : b) / GRID_B;
+    return l < 0 ? 0 : l >= g->nb[axis] ? g->nb[axis] - 1 : l;
+}
+
+/* Why the points move: a point is its particle's foot on the collider's face,
+ * up to CONTACT_BAND cells away from the particle and, for a particle pressed
+ * into the collider, as deep as it went; its B-spline stencil (base node to
+ * base + 2) then reaches past the one halo layer above the slab, into nodes no
+ * copy of which this rank holds, and thermal.c's contact_stencil would drop
+ * them and renormalise (issue #21). Held by the rank owning its base node's
+ * block, the stencil stays within that slab and its upper halo layer, both
+ * filled with the owners' values, and the scatter's halo share goes to its
+ * owner with the transport's (mpm_ranks_fields_sum). Points moving more than
+ * one slab go on in further passes. Order: a rank's own points in particle
+ * order, then the lower neighbour's, then the upper's, per pass: the same on
+ * every run with this rank count. */
+hearth_status mpm_ranks_fields_contacts(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    int axis, lo, hi;
+    if (!m || !mpm_ranks_slab(m, &axis, &lo, &hi) || !thermal_active(s)) return HEARTH_OK;
+    int heated = 0; /* the same colliders on every rank: all ranks return here, or none */
+    for (int c = 0; c < s->ncol; c++) heated += !isnan(s->cols[c].temperature) && s->cols[c].beta > 0;
+    if (!heated) return HEARTH_OK;
+    hearth_status st = state(m, err);
+    if (st) return st;
+    struct mpm_slab_fields *f = m->sfields;
+    thermal_state *h = &s->heat;
+    const grid *g = &s->g;
+    const size_t W = THERMAL_CT;
+    for (;;) {
+        for (int k = 0; k < 2; k++)
+            if ((size_t)h->nct * W > f->ccap[k]) {
+                const size_t c = (size_t)h->nct * W + (size_t)h->nct * W / 4;
+                double *b = mem_alloc(c * sizeof(double));
+                if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for moving %d contact points between ranks", h->nct);
+                mem_free(f->cbuf[k], f->ccap[k] * sizeof(double));
+                f->cbuf[k] = b, f->ccap[k] = c;
+            }
+        size_t nd = 0, nu = 0;
+        int keep = 0;
+        for (int k = 0; k < h->nct; k++) {
+            const double *ct = h->ct + W * (size_t)k;
+            const int l = contact_layer(g, axis, ct);
+            if (l < lo) memcpy(f->cbuf[0] + W * nd++, ct, W * sizeof(double));
+            else if (l >= hi) memcpy(f->cbuf[1] + W * nu++, ct, W * sizeof(double));
+            else memmove(h->ct + W * (size_t)keep++, ct, W * sizeof(double));
+        }
+        unsigned char more = nd || nu;
+        ranks_max_bytes(&more, 1);
+        if (!more) return HEARTH_OK; /* keep == nct */
+        h->nct = keep;
+        const void *from_lo, *from_hi;
+        size_t nlo, nhi;
+        if ((st = ranks_neighbours(f->cbuf[0], nd * W * sizeof(double), f->cbuf[1], nu * W * sizeof(double), &from_lo, &nlo,
+                                   &from_hi, &nhi, err)))
+            return st;
+        const size_t add = (nlo + nhi) / sizeof(double), need = (size_t)keep * W + add;
+        if (need > (size_t)h->ct_cap * W) {
+            if (need / W > (size_t)INT32_MAX / W)
+                return err_set(err, HEARTH_ERR_NOMEM, "too many heated collider contacts (%zu) on one rank", need / W);
+            const int cap = (int)(need / W);
+            double *x = mem_alloc(sizeof(double) * need);
+            if (!x) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d heated collider contacts", cap);
+            memcpy(x, h->ct, sizeof(double) * (size_t)keep * W);
+            mem_free(h->ct, sizeof(double) * W * (size_t)h->ct_cap);
+            h->ct = x, h->ct_cap = cap;
+        }
+        memcpy(h->ct + (size_t)keep * W, from_lo, nlo);
+        memcpy(h->ct + (size_t)keep * W + nlo / sizeof(double), from_hi, nhi);
+        h->nct = keep + (int)(add / W);
     }
 }
