@@ -611,35 +611,12 @@ static inline __attribute__((always_inline)) void xsph_pairs_once(const struct s
  * (2D leaves z out, as forces_pairs in sph_forces.c); with pc its pair
  * weights are the slots xsph_pairs_once wrote. */
 static inline __attribute__((always_inline)) void xsph_one(struct sph_state *st, const sph_cols *c, int i, const int dim,
-                                                            const double *pc, int varied) {
+                                                            const double *pc) {
     const double *x = c->x, *m = c->m, *h = st->h, *rho = st->rho, *vnew = st->vnew;
     const int *off = st->nl.off, *nb = st->nl.j;
     double *vi = c->v + 3 * i;
     const double *wi = vnew + 3 * i;
     double corr[3] = {0, 0, 0};
-    if (varied) { /* each pair's epsilon the mean of its two (phase_xsph says why) */
-        const double ei = st->xsph[i], *e = st->xsph;
-        const double hi = h[i], ri = rho[i];
-        const sph_kc kci = sph_kc_of(dim, hi);
-        for (int k = off[i]; k < off[i + 1]; k++) {
-            const int j = nb[k];
-            double w;
-            if (pc) {
-                w = pc[k];
-            } else {
-                double d[3];
-                sph_disp_dim(&st->cells, dim, x + 3 * i, x + 3 * j, d);
-                const double r = sqrt(dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1]);
-                SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
-                w = 2 * m[j] / (ri + rho[j]) * sph_w_kc(kc, r);
-            }
-            const double we = 0.5 * (ei + e[j]) * w;
-            for (int q = 0; q < dim; q++) corr[q] += we * (vnew[3 * j + q] - wi[q]);
-        }
-        for (int q = 0; q < 3; q++) vi[q] = wi[q] + corr[q];
-        if (dim == 2) vi[2] = 0;
-        return;
-    }
     if (st->xsph[i] > 0 && pc) {
         for (int k = off[i]; k < off[i + 1]; k++) {
             const int j = nb[k];
@@ -665,16 +642,6 @@ static inline __attribute__((always_inline)) void xsph_one(struct sph_state *st,
 
 /* XSPH (eq. 3.34, its epsilon the tuner of eq. 4.4) from the kicked
  * velocities into the particles' v; the largest |a| for the force limit.
- * Eq. 3.34 moves no momentum for one epsilon: m_i w_ij is symmetric and
- * v_j - v_i is not. Eq. 4.4 gives each particle its own epsilon from its
- * temperature, and eps_i m_i w_ij (v_j - v_i) + eps_j m_j w_ji (v_i - v_j)
- * is (eps_i - eps_j) m_i w_ij (v_j - v_i), a net push wherever a hot and a
- * cool particle differ in velocity: the heated bread roll gained horizontal
- * momentum from its first heated step and drifted 2 cm along its slip tray
- * (docs/validation.md "SPH bread roll", `sph_xsph_varied_eps_keeps_momentum`).
- * So when the epsilons differ, each pair takes the mean of its two, which is
- * eq. 3.34 for one epsilon; when they are all the same the sum is the one
- * before, to the bit.
  * When sph_forces took the symmetric path and some particle takes XSPH,
  * each pair's weights are made once (xsph_pairs_once) into st->pairc, free
  * again once the forces are summed. */
@@ -682,12 +649,8 @@ static void phase_xsph(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim, *flags = c.flags;
-    int any = 0, varied = 0;
-    for (int i = 0; i < n && !varied; i++) {
-        any |= st->xsph[i] > 0;
-        varied = st->xsph[i] != st->xsph[0];
-    }
-    any = any && st->pair_ok;
+    int any = 0;
+    for (int i = 0; i < n && st->pair_ok && !any; i++) any = st->xsph[i] > 0;
     double *pc = any ? st->pairc : NULL;
     if (pc) {
         const double *wb = st->pairc + (size_t)dim * st->nl.off[n];
@@ -699,11 +662,11 @@ static void phase_xsph(hearth_scene *s) {
     for (int i = 0; i < n; i++) {
         if (flags && (flags[i] & PF_FIXED)) continue; /* its prescribed velocity, 0 unless it moves */
         if (dim == 2) {
-            if (pc) xsph_one(st, &c, i, 2, pc, varied);
-            else xsph_one(st, &c, i, 2, NULL, varied);
+            if (pc) xsph_one(st, &c, i, 2, pc);
+            else xsph_one(st, &c, i, 2, NULL);
         } else {
-            if (pc) xsph_one(st, &c, i, 3, pc, varied);
-            else xsph_one(st, &c, i, 3, NULL, varied);
+            if (pc) xsph_one(st, &c, i, 3, pc);
+            else xsph_one(st, &c, i, 3, NULL);
         }
         const double an = sqrt(st->acc[3 * i] * st->acc[3 * i] + st->acc[3 * i + 1] * st->acc[3 * i + 1] +
                                st->acc[3 * i + 2] * st->acc[3 * i + 2]);
