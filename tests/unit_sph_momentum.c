@@ -1,0 +1,82 @@
+/* unit_sph_momentum.c: what the SPH solver's pair terms owe Newton's third
+ * law. With no external force (no gravity, no wall or collider reached) the
+ * total momentum stays what it was, to round-off, whatever each particle's
+ * own parameters: here the XSPH tuner of Rodriguez-Arenas 2011 eq. 4.4, which
+ * gives a hot particle a larger epsilon (eq. 3.34) than a cool one. */
+#include <math.h>
+#include <stdio.h>
+
+#include "hearth/hearth.h"
+#include "scene.h"
+#include "sph_fixture.h"
+#include "test.h"
+
+/* sum m v (P) and sum m |v| (its scale) over the particles */
+static void momentum(const hearth_scene *s, double P[3], double *scale) {
+    const double *v = pcold(&s->ps, PC_V), *m = pcold(&s->ps, PC_MASS);
+    P[0] = P[1] = P[2] = 0;
+    *scale = 0;
+    for (int i = 0; i < s->ps.n; i++) {
+        for (int a = 0; a < 3; a++) P[a] += m[i] * v[3 * i + a];
+        *scale += m[i] * sqrt(v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2]);
+    }
+}
+
+/* Two 2D blocks of one Newtonian fluid side by side, 20 x 20 mm each, the
+ * left at 120 degC sliding up at 5 cm/s, the right at 26 degC sliding down
+ * at 5 cm/s: zero momentum, and no force from outside (gravity off, no
+ * conduction, 40 steps that keep them far from the box). XSPH's epsilon runs
+ * from 0.05 at 26 degC to 0.5 at 120 degC (eq. 4.4), so across the seam
+ * every pair joins a hot particle to a cool one moving the other way. Per
+ * particle epsilons push the pair sum off zero by eps_i - eps_j (sph.c,
+ * phase_xsph); |P| must stay within 1e-12 of the momentum in motion (sum m
+ * |v|), round-off over some 800 particles and 40 steps, at dx 2 and 1 mm.
+ * The same blocks at one temperature are the control: eq. 3.34 with one
+ * epsilon conserves. With two temperatures it is an expected failure for
+ * now: measured 0.134 (dx 2 mm) and 0.046 (dx 1 mm); a pair-mean epsilon
+ * passed (8e-18, 1.3e-16) but was not kept (docs/validation.md, "SPH bread
+ * roll", "The sideways drift"). */
+TEST(sph_xsph_varied_eps_keeps_momentum) {
+    for (int r = 0; r < 2; r++) {
+        for (int hot = 0; hot < 2; hot++) {
+            const double dx = r == 0 ? 0.002 : 0.001, lo[3] = {0, 0, 0}, hi[3] = {0.12, 0.1, 0};
+            hearth_scene_def d = sph_def(2, dx, lo, hi);
+            d.gravity[0] = d.gravity[1] = d.gravity[2] = 0;
+            d.sph.xsph0 = 0.05;
+            d.sph.xsph_f = 0.5;
+            d.sph.xsph_T0 = 26;
+            d.sph.xsph_Tf = 120;
+            hearth_scene *s = hearth_scene_create(&d, NULL);
+            CHECK(s != NULL);
+            if (!s) return;
+            const int m = newtonian(s, 1000, 1e4, 1.0);
+            const double llo[3] = {0.04, 0.04, 0}, lhi[3] = {0.06, 0.06, 0};
+            const double rlo[3] = {0.06, 0.04, 0}, rhi[3] = {0.08, 0.06, 0};
+            const int bl = sph_box(s, m, llo, lhi, 0, hot ? 120 : 26), br = sph_box(s, m, rlo, rhi, 0, 26);
+            CHECK(m >= 0 && bl >= 0 && br >= 0);
+            const double up[3] = {0, 0.05, 0}, down[3] = {0, -0.05, 0};
+            hearth_error err;
+            CHECK(hearth_scene_body_set_velocity(s, bl, up, &err) == HEARTH_OK);
+            CHECK(hearth_scene_body_set_velocity(s, br, down, &err) == HEARTH_OK);
+            double P0[3], scale0;
+            momentum(s, P0, &scale0);
+            CHECK(fabs(P0[0]) + fabs(P0[1]) <= 1e-15 * scale0); /* the two blocks' masses are equal */
+            CHECK(hearth_scene_step(s, 40, &err) == HEARTH_OK);
+            double P[3], scale;
+            momentum(s, P, &scale);
+            const double rel = hypot(P[0] - P0[0], P[1] - P0[1]) / scale;
+            printf("dx %.0f mm, left block at %s degC (%d particles, %d steps, t = %.4f s): |P| / sum m|v| = %.3g\n",
+                   1e3 * dx, hot ? "120" : "26", s->ps.n, 40, s->t, rel);
+            if (hot && !(rel < 1e-12))
+                XFAIL("dx %.0f mm: |P| / sum m|v| = %.3g, not within 1e-12: eq. 4.4's per-particle epsilon in eq. "
+                      "3.34 moves (eps_i - eps_j) m_i w_ij (v_j - v_i) per pair (docs/validation.md, \"The sideways "
+                      "drift\": the pair mean conserves, and sends angel_food_cake past its stability guard)",
+                      1e3 * dx, rel);
+            else
+                CHECK(rel < 1e-12);
+            hearth_scene_destroy(s);
+        }
+    }
+}
+
+TEST_MAIN(T(sph_xsph_varied_eps_keeps_momentum))
