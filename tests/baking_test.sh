@@ -313,7 +313,7 @@ print("EXPECTED FAILURE: the soft cookie holds too little gas to grow 1.69x in a
       "eq. 12's runaway; every pore freezes at 0.9-1.0 s when tau_y passes the gas (93 Pa each at the centre); "
       "the CO2 made by then is worth only +7% of volume even as a real gas at oven pressure (~2.7 mol/m^3 SI "
       "of the ~25 that 1.3x needs), and the model's cookie swells +6%; water vapour in the pores (the SPH "
-      "bubble's P_a / (P_a - a_w P_sat), eq. 2.42-2.43) adds 7% to the gas at the 37 degC set: 1.088 at 7.5 mm, "
+      "bubble's P_a / (P_a - a_w P_sat), eq. 2.42-2.43) adds 7% to the gas at the 37 degC set: 1.088 / 1.057 / 1.094 at 7.5 / 5 / 3.75 mm, "
       "and with eq. 13's pore volume taken as J^E n^p (alone 1.071) 1.096 / 1.060 at 7.5 / 5 mm")
 sys.exit(77)
 PY
