@@ -20,7 +20,10 @@
 -- It does not ooze (Fig. 18: "when pressed the crust breaks and the inside
 -- oozes out"): Table 2's s'more heats evenly (Biot number 0.06), the preset
 -- sets past 70 degC and cannot crack; claim_marshmallow_oozes and
--- docs/validation.md "The marshmallow's ooze (#18)" give the numbers.
+-- docs/validation.md "The marshmallow's ooze (#18)" give the numbers. A
+-- melting curve in place of the set (what a sugar-gelatin foam does) was
+-- tried there and not kept: the molten marshmallow slumps over its cracker's
+-- edges, where lone particles blow up (guard stop at 0.81 s).
 -- Writes, under hearth-out/marshmallow/: heat_%04d.png (temperature) and
 -- marshmallow.csv: over time, the thickness (lowest to highest material on
 -- the centre line), the centre temperature and the ooze (below) of the raw
