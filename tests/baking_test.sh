@@ -460,15 +460,17 @@ print(f"dx {float(sys.argv[2]) * 1e3:.1f} mm, t = {r['t_s']} s (end of the press
       f"roasted {float(r['centre_temperature_roasted_degC']):.1f} degC")
 if roast >= 0.1 and raw < 0.02:
     sys.exit(0)
-print("EXPECTED FAILURE: no crust over a molten inside, so nothing breaks and nothing oozes (docs/validation.md, "
-      "'The marshmallow's ooze (#18)'): Table 2's s'more heat (kappa 150, c 200) makes the element's Biot number "
-      "~0.03, so the marshmallow heats evenly (no hot skin over a cooler core); the preset follows the dough's "
-      "Fig. 8, whose starch set (x20 at 70 degC) a sugar-gelatin foam does not have, so the whole marshmallow "
-      "sets during the press; and the preset cannot crack (fracture_strain 0). A dried, brittle skin over a "
-      "molten inside (tried, not kept, scripts/validation/marshmallow_skin.lua) cracks all round under the "
-      "press but stays the outline, in 2D and in 3D (dx 3 mm): it cracks everywhere at once, and a cracked "
-      "point, without tension, still moves with the one grid velocity it shares with the inside, so the "
-      "skin is pushed out ahead of the inside and thins evenly instead of parting; no opening forms")
+print("EXPECTED FAILURE: the inside melts but cannot pass its skin (docs/validation.md, 'The marshmallow's "
+      "ooze (#18)'). The scene's marshmallow now melts (tau_y x0.3 from 35 to 100 degC, a sugar crust only past "
+      "150 degC, not the dough's starch set at 70), so the roasted one is the softer; but Table 2's s'more heat "
+      "(kappa 150, c 200) gives the element a Biot number ~0.06, so it heats evenly (no dry skin over a cooler "
+      "core), and it cannot crack (fracture_strain 0). A dried, brittle skin over a molten inside (tried, "
+      "scripts/validation/marshmallow_skin.lua) cracks all round under the press but stays the outline, in 2D "
+      "and 3D; so it does with sticking crackers (a fountain squeeze flow) and with cracked points that carry "
+      "no stress at all (ooze 0.000 each). The cause: MPM moves every particle with one smooth grid velocity "
+      "field, a one-to-one map of the material, so the outline's material stays the outline unless particles "
+      "part by more than a cell; the inside passing its skin at a crack needs two velocity fields there "
+      "(Homel & Herbold 2017), not built")
 sys.exit(77)
 PY
     exit $?
