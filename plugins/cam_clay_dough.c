@@ -110,6 +110,26 @@
  * principal value of tau set to 0) and none of its pressure terms
  * (<hearth/material.h>, core/sim/material.h). fracture_strain = 0 (the
  * default) never cracks: Ding et al.'s law as it was, bit for bit.
+ * The stretch rule (fracture_stretch = 1; issue #18, session 29): the rule
+ * above cracks a crust as it dries, not as it is stretched. Drying raises E
+ * and tau_y together on a point that keeps its elastic strain, so the dry
+ * skin's yield strain is the wet dough's, and a point cracks the moment its
+ * moisture curve takes eps_f below the strain it already holds: the whole
+ * dry skin at once, as a band (docs/validation.md, Crust (#18)). Under this
+ * rule D sums the stretch the point takes along its deviatoric elastic
+ * strain, dD = sqrt(2/3) (e / |e|) : D dt / eps_f, D = sym grad_v (its
+ * deviator: a dilation is the pores), each step over the fracture strain
+ * the point has then: a Miner-like consumption of its extensibility, as a
+ * ductile damage sums plastic strain over a strain to failure (Johnson &
+ * Cook 1985, Eng. Fract. Mech. 21:31). So drying at rest adds nothing, a skin stretched while it is
+ * brittle spends its small eps_f, and stretch taken back along e is given
+ * back, so a vibration adds nothing. The direction e / |e| and not the
+ * largest stretching: the largest eigenvalue of a deviator is never
+ * negative, and with it an elastic crumb ringing about its rest shape
+ * added up damage until it cracked wholesale (seen: 786 particles of the
+ * bread loaf once it set). Plastic flow is counted as well as elastic
+ * stretch (it is along e, the return being radial), so a raw dough, which
+ * flows, needs a large eps_f (the bread preset's 100).
  *
  * ---- state ---------------------------------------------------------------------
  * Eight doubles: b^E (xx, yy, zz, xy, yz, zx), J^P and the damage D. Why b^E and not F^E:
@@ -140,7 +160,7 @@
 #define DOUGH_NAME "cam_clay_dough" /* the test fixture built from this file has its own */
 #endif
 
-enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_COUNT };
+enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH, P_COUNT };
 
 /* Defaults: the cookie column of Ding et al. Table 2 (E 4e4, tau_y 20,
  * eta 500, density 500); nu is not in Table 2. */
@@ -162,6 +182,11 @@ static const hearth_param params[P_COUNT] = {
                            "elastic strain to fracture (damage = largest deviatoric elastic strain / fracture_strain; at 1 the "
                            "point carries no tension); small where dry (a moisture curve) for a brittle crust; 0 = never",
                            0, 0, 100},
+    [P_FRACTURE_STRETCH] = {"fracture_stretch", "1",
+                            "1: damage sums the stretch the point takes (largest principal deviatoric stretching, elastic "
+                            "and plastic) over its fracture_strain at the time, so drying alone never cracks; 0: the "
+                            "elastic strain rule",
+                            0, 0, 1},
 };
 
 enum { S_XX = HEARTH_SYM_XX, S_YY = HEARTH_SYM_YY, S_ZZ = HEARTH_SYM_ZZ, S_XY = HEARTH_SYM_XY, S_YZ = HEARTH_SYM_YZ,
@@ -433,6 +458,47 @@ static void fracture_update(const double *prm, double *st, double e1) {
     if (ef > 0 && e1 > 0 && st[S_DAMAGE] < 1) st[S_DAMAGE] = fmax(st[S_DAMAGE], fmin(1, e1 / ef));
 }
 
+/* Damage by the stretch taken (header, "crust fracture", fracture_stretch =
+ * 1): the step adds the stretch it takes along the point's elastic strain,
+ * dt sqrt(2/3) N : D, with N = e / |e| the direction of the deviatoric
+ * elastic strain after the return and D the stretching sym grad_v (elastic
+ * and plastic alike; N is traceless, so no uniform dilation), over the
+ * fracture strain the point has now; a step back along N gives it back (a
+ * vibration adds nothing), and D never falls below 0 or rises again from 1.
+ * A point that dries while at rest gains nothing; a skin the rise stretches
+ * while it is brittle spends its small fracture strain. nd = N : D. */
+static void fracture_stretch_update(const double *prm, double *st, double nd, double dt) {
+    const double ef = prm[P_FRACTURE_STRAIN];
+    if (!(ef > 0) || st[S_DAMAGE] >= 1 || !(nd == nd)) return;
+    st[S_DAMAGE] = fmin(1, fmax(0, st[S_DAMAGE] + 0.816496580927726 * nd * dt / ef)); /* sqrt(2/3) */
+}
+
+/* N : D for the deviator e (a symmetric 3x3) and the step's grad_v. */
+static double dir_stretch_full(const double e[9], const double *gv) {
+    const double n2 = norm2_9(e);
+    if (!(n2 > 0)) return 0;
+    const double tr = (gv[0] + gv[4] + gv[8]) / 3; /* dev D: a dilation adds nothing even to a roundoff e */
+    double s = 0;
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) s += e[3 * r + c] * (0.5 * (gv[3 * r + c] + gv[3 * c + r]) - (r == c) * tr);
+    return s / sqrt(n2);
+}
+
+/* N : D for the deviator with principal values e[k] on Q's columns. */
+static double dir_stretch_eigen(const double e[3], const double Q[9], const double *gv) {
+    const double n2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+    if (!(n2 > 0)) return 0;
+    const double tr = (gv[0] + gv[4] + gv[8]) / 3; /* dev D, as dir_stretch_full */
+    double s = 0;
+    for (int k = 0; k < 3; k++) {
+        double dq = -tr; /* q_k . dev D q_k = q_k . grad_v q_k - tr/3 */
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++) dq += Q[3 * r + k] * gv[3 * r + c] * Q[3 * c + k];
+        s += e[k] * dq;
+    }
+    return s / sqrt(n2);
+}
+
 static void init(const double *p, double *state) {
     (void)p;
     state[S_XX] = state[S_YY] = state[S_ZZ] = 1;
@@ -478,7 +544,10 @@ static int stress_near(hearth_point *pt, double mu, double lambda, double m, con
             hearth_full_to_sym(B, st);
         }
         st[S_JP] = J / exp(ev); /* J^P = J / J^E */
-        if (prm[P_FRACTURE_STRAIN] > 0) fracture_update(prm, st, ratio * dev_max_eigen(e)); /* its trig only when asked */
+        if (prm[P_FRACTURE_STRAIN] > 0) { /* its trig only when asked */
+            if (prm[P_FRACTURE_STRETCH] > 0.5) fracture_stretch_update(prm, st, dir_stretch_full(e, pt->grad_v), pt->dt);
+            else fracture_update(prm, st, ratio * dev_max_eigen(e));
+        }
     }
     hencky_tau(mu, lambda, ev, e, ratio, tau);
     return 0;
@@ -542,7 +611,8 @@ static int stress_law(hearth_point *pt, double J, double mu, double lambda, doub
         }
         hearth_full_to_sym(B, st);
         st[S_JP] = J / exp(ev); /* J^P = J / J^E (a crack opens as plastic volume: it reads as pores) */
-        fracture_update(prm, st, ratio * fmax(e[0], fmax(e[1], e[2])));
+        if (prm[P_FRACTURE_STRETCH] > 0.5) fracture_stretch_update(prm, st, dir_stretch_eigen(e, Q, pt->grad_v), pt->dt);
+        else fracture_update(prm, st, ratio * fmax(e[0], fmax(e[1], e[2])));
     }
     const double tv = lambda * ev;
     double d[3];

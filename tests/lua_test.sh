@@ -963,6 +963,38 @@ crust_cracks_over_expanding_crumb)
         "Crust (#18))"
     exit 77
     ;;
+crust_cracks_by_stretch_over_expanding_crumb)
+    # issue #18: the same slab and the same opening (>= 2 cells, >= 0.1 of the height, at dx 4 and 3 mm; none
+    # without dry stiffening) under the stretch rule (cam_clay_dough's fracture_stretch = 1): damage is the
+    # stretch taken along the elastic strain over the fracture strain at the time, so the drying (0-0.3 s)
+    # cracks nothing and the crumb's swelling (from 0.3 s) does; the wet value 100 (never) as the bread preset's.
+    opened=0
+    for dx in 0.004 0.003; do
+        run crust_cracks.lua --set dx=$dx --set F=30 --set rule=1 --set ef=100
+        expect_rc 0 "the stretch rule's slab at dx $dx"
+        cat out.txt
+        w=$(sed -n 's/^crust_cracks result: .* opening \([0-9]*\) cells.*/\1/p' out.txt)
+        [ -n "$w" ] || fail "no result line at dx $dx"
+        n=$(sed -n 's/.*t 0.5 s .*, \([0-9]*\) cracked particles$/\1/p' out.txt)
+        [ "${n:-1}" -eq 0 ] || fail "the stretch rule cracked $n particles by 0.5 s at dx $dx (the drying alone)"
+        [ "$w" -ge 2 ] && opened=$((opened + 1))
+    done
+    run crust_cracks.lua --set dx=0.004 --set F=1 --set rule=1 --set ef=100
+    expect_rc 0 "the stretch rule's control"
+    cat out.txt
+    control=$(sed -n 's/^crust_cracks result: .* opening \([0-9]*\) cells.*/\1/p' out.txt)
+    [ "${control:-9}" -lt 2 ] || fail "without dry stiffening the slab opened $control cells"
+    if [ "$opened" -eq 2 ]; then
+        echo "the dried crust opens over the swelling crumb at both resolutions by the stretch rule; no crack without it"
+        exit 0
+    fi
+    echo "EXPECTED FAILURE: the stretch rule opened the dried crust at $opened of 2 resolutions. Nothing cracks while" \
+        "the top dries (0 cracked particles at 0.5 s), then the crumb's swelling cracks one place, the crown (damage" \
+        "1 in one cluster; the rest of the skin at 0.25-0.75, the crumb near 0), a V 1 cell wide at 0.103 (4 mm) and" \
+        "0.118 (3 mm) of the height: the cracked crown's neighbours stay intact, so the opening is one cell of" \
+        "cracked particles, and the measure asks for two (docs/validation.md, Crust (#18), session 29)"
+    exit 77
+    ;;
 lua_body_force_varies_in_space)
     # s:body_force(function(x, y, z, t) ...): a column under a force growing with height against its closed form
     run body_force_field.lua

@@ -19,7 +19,7 @@
 #define PLUGIN_FIXTURE_SEED 0x0d0c0ffee
 #include "plugin_fixture.h"
 
-enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, NP };
+enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH, NP };
 enum { NSTATE = 8 };
 
 static const hearth_material *dough(void) { return load_material("cam_clay_dough"); }
@@ -557,6 +557,64 @@ TEST(dough_fracture_damage) {
     CHECK(dmax[4] > 0 && dmax[4] < 0.5); /* the ductile one yielded first: its elastic strain stays near tau_y / E */
 }
 
+/* The stretch rule (fracture_stretch = 1, the header's "crust fracture"):
+ * D adds sqrt(2/3) N : D dt / eps_f a step, N the unit deviatoric elastic
+ * strain after the step. An elastic point (tau_y 1e9) in pure shear L =
+ * diag(a, -a, 0) has principal Hencky strains h = (k log(1 + a dt), k log(1 -
+ * a dt), 0) after k steps, so the closed form sums e.L / |e| over the steps,
+ * e = h - mean(h). Cases: 0 stretched while brittle (eps_f 0.2) against that
+ * sum; 1 stretched while wet (eps_f 1), then dried (eps_f 0.02) at rest: the
+ * stretch rule keeps D, the elastic rule cracks it (the band of session 28);
+ * 2 stretched 20 steps and back 20: D returns; 3 uniform dilation: 0. The
+ * closed form is summed here from h, not by the plugin's code. */
+TEST(dough_fracture_stretch_rule) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL && m->damage != NULL);
+    if (!m || !m->damage) return;
+    const double dt = 1e-3, a = 5.0;
+    double dend[5], dpeak[5];
+    for (int c = 0; c < 5; c++) { /* 4: case 1 under the elastic rule */
+        double p[NP] = {2e3, 0.3, 1e9, 0, 0.5, 500, 1, c == 1 || c == 4 ? 1 : 0.2, c == 4 ? 0 : 1};
+        double st[NSTATE], F[9], tau[9];
+        m->init(p, st);
+        t3_identity(F);
+        double worst = 0, want = 0, h0 = 0, h1 = 0;
+        dpeak[c] = 0;
+        for (int k = 1; k <= 60; k++) {
+            double L[9] = {0};
+            const double sg = c == 2 && k > 20 ? -1 : 1;
+            if (c == 3) L[0] = L[4] = L[8] = 0.4;
+            else if (!((c == 1 || c == 4) && k > 20) && !(c == 2 && k > 40)) L[0] = sg * a, L[4] = -sg * a;
+            if ((c == 1 || c == 4) && k > 20) p[P_FRACTURE_STRAIN] = 0.02; /* dried at rest */
+            double f[9], Fn[9];
+            for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
+            t3_mul(f, F, Fn);
+            t3_copy(Fn, F);
+            hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
+            memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
+            CHECK(m->stress(&pt, tau) == 0);
+            h0 += log1p(L[0] * dt), h1 += log1p(L[4] * dt);
+            if (c == 0 || c == 2) { /* the closed form, for a point that never cracks before the end (case 2) or does */
+                const double mean = (h0 + h1) / 3, e0 = h0 - mean, e1 = h1 - mean, e2 = -mean;
+                const double ne = sqrt(e0 * e0 + e1 * e1 + e2 * e2);
+                if (ne > 0 && want < 1) want = fmin(1, fmax(0, want + sqrt(2.0 / 3.0) * (e0 * L[0] + e1 * L[4]) / ne * dt / 0.2));
+                worst = fmax(worst, fabs(m->damage(p, st) - want));
+            }
+            dpeak[c] = fmax(dpeak[c], m->damage(p, st));
+        }
+        dend[c] = m->damage(p, st);
+        printf("  case %d: damage peak %.6f, end %.6f; largest error against the closed form %.2e\n", c, dpeak[c], dend[c],
+               worst);
+        CHECK(worst <= 1e-9);
+    }
+    CHECK(dend[0] == 1);                           /* 0.2 of stretch along the strain: cracked (near step 35) */
+    CHECK(dend[1] < 0.15 && dend[1] == dpeak[1]);  /* wet stretch counted at eps_f 1; drying at rest adds nothing */
+    CHECK(dend[4] == 1);                           /* the elastic rule cracks the same point as it dries */
+    CHECK(dpeak[2] > 0.4 && dend[2] < 0.1 * dpeak[2]); /* stretched and let back: given back (log(1+x) + log(1-x) < 0
+                                                          leaves a small deviator the other way) */
+    CHECK(dend[3] < 1e-12);                        /* a uniform dilation is pores, not a crack (roundoff only) */
+}
+
 /* The core's cut-off of a cracked point (core/sim/material.h): the tensile
  * principal values of tau go to 0, the compressive ones and the principal
  * frame stay. tau = R diag(300, -200, 50) R^T, R a rotation about z. */
@@ -589,4 +647,4 @@ TEST(dough_plugin_check) {
 
 TEST_MAIN(T(dough_closest_point), T(dough_viscoplastic_optimality), T(dough_inside_unchanged), T(dough_von_mises_limit),
           T(dough_frame_indifference), T(dough_plane_strain_path), T(dough_near_identity_return), T(dough_extremes),
-          T(dough_closed_pores), T(dough_pore_cap), T(dough_fracture_damage), T(dough_tension_cutoff), T(dough_plugin_check))
+          T(dough_closed_pores), T(dough_pore_cap), T(dough_fracture_damage), T(dough_fracture_stretch_rule), T(dough_tension_cutoff), T(dough_plugin_check))

@@ -149,12 +149,29 @@
 --      rate, the price of a crust the grid resolves.
 --    Measured (bread.lua's plain loaf, dx 5 mm, 2.5 s): the top particle ends
 --    at X/X_0 0.23, the centre at 0.92 (docs/validation.md, "Crust (#18)").
---  * FRACTURE (issue #18): fracture_strain 1 wet (a rubbery dough's cell
---    walls part at Hencky strains of order 1, van Vliet et al. 1992, J.
---    Texture Stud. 23:439), x0.02 once dried to X = 0.16 kg/kg (glassy:
---    van Nieuwenhuijzen et al. 2008 above; 0.02, a few per cent, is our order
---    of magnitude, not a measured crust value), linear in X/X_0 between 0.41
---    (rubbery) and 0.16, irreversible: plugins/cam_clay_dough.c's damage.
+--  * FRACTURE (issue #18): the stretch rule (fracture_stretch = 1,
+--    plugins/cam_clay_dough.c's "crust fracture"): a point cracks when the
+--    stretch it takes along its elastic strain, each step over its fracture
+--    strain at the time, sums to 1, so the drying itself cracks nothing and
+--    the rise's stretch of a dried skin does. The stretch to fracture over
+--    water content X: 0.02 once dried to X = 0.16 kg/kg (glassy: van
+--    Nieuwenhuijzen et al. 2008 above put the crust's crispness transition at
+--    this water content; 0.02, a few per cent, is our order of magnitude, not
+--    a measured crust value), 1 at X = 0.41 (rubbery: a dough's cell walls
+--    part at Hencky strains of order 1, van Vliet et al. 1992, J. Texture
+--    Stud. 23:439), log-linear between (a glass transition moves a modulus
+--    by decades, Roos 1995 above, and the strain to failure with it), and
+--    100 at the raw dough's X_0, linear above 0.41: the rule counts plastic
+--    flow, and a raw dough flows (its pores grow) without parting; at 1 the
+--    loaf's wet crumb cracked by its own slump (279 particles by 0.5 s).
+--    Irreversible. Measured crusts that fit this: sensory crispness is lost
+--    between water activity 0.55 and 0.70 ("Relations between sensorial
+--    crispness and molecular mobility of model bread crust and its main
+--    components as measured by PTA, DSC and NMR"; from an abstract, authors
+--    and journal not checked), and crusts baked with more steam fail at lower force
+--    (Altamirano-Fortoul, Le-Bail, Chevallier & Rosell 2012, J. Food Eng.
+--    108:128): no source found gives a crust's strain to fracture over its
+--    water, so the numbers between the two ends are ours.
 local ETA_SCALE, GAS_SCALE = 4000, 1 / 600
 local DRY_X = { 0.05, 0.10, 0.16, 0.25, 0.41 }  -- water content, kg/kg dry basis
 local DRY_F = { 100, 37, 10, 4.6, 1 }           -- E and tau_y factor (Roos 1995's glass transition, capped at 100)
@@ -163,7 +180,8 @@ local DRY_X0 = { bread = 0.82, muffin = 0.67, cookie = 0.25 } -- the raw dough's
 local WATER_S = 600
 local WATER = { bread = { saturation = 0.225, diffusivity = 2e-7, evaporation = 1.2e-3 },
   muffin = { saturation = 0.20, diffusivity = 2e-7, evaporation = 1.2e-3 } }
-local FRACTURE_X, FRACTURE_DRY = { 0.16, 0.41 }, 0.02 -- glassy below, rubbery above (kg/kg dry basis); strain when dry
+-- stretch to fracture over water content (FRACTURE): glassy, leathery, rubbery, and the raw dough (never)
+local FRACTURE_X, FRACTURE_DRY, FRACTURE_WET = { 0.16, 0.41 }, 0.02, 100
 local THETA = { 5, 20, 35, 70 }            -- Fig. 8: fridge, room, fat melting, gelatinisation (degC)
 local TAU_SHAPE = { 1, 0.8, 0.3, 20 }      -- Fig. 8 left, relative to Table 2's value
 local ETA_SHAPE = { 1, 0.5, 0.1, 0.05 }    -- Fig. 8 right, relative to ETA_SCALE x Table 2's value
@@ -236,9 +254,16 @@ function D.preset(name)
     params.saturation = w.saturation
     params.water_diffusivity = w.diffusivity / (373.15 * w.saturation) * WATER_S
     params.evaporation = w.evaporation * WATER_S
-    params.fracture_strain = 1
+    params.fracture_strain = FRACTURE_WET
+    params.fracture_stretch = 1
     local X0 = DRY_X0[name]
-    dry.fracture_strain = { { FRACTURE_X[1] / X0, FRACTURE_DRY }, { FRACTURE_X[2] / X0, 1 }, irreversible = true, of = "moisture" }
+    local ef, n = { irreversible = true, of = "moisture" }, 5 -- log-linear from FRACTURE_DRY to 1 over FRACTURE_X, n steps
+    for i = 0, n do
+      local X = FRACTURE_X[1] + (FRACTURE_X[2] - FRACTURE_X[1]) * i / n
+      ef[#ef + 1] = { X / X0, FRACTURE_DRY ^ (1 - i / n) / FRACTURE_WET }
+    end
+    ef[#ef + 1] = { 1, 1 }
+    dry.fracture_strain = ef
   end
   local oven = { temperature = c.ambient_theta, beta = c.ambient_beta, pan_temperature = c.conductive_theta,
     pan_beta = c.conductive_beta, dough_temperature = c.theta0, latent_heat = false,

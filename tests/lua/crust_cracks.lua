@@ -21,7 +21,7 @@
 -- highest columns within 4 cells on either side; a crack is a run of at
 -- least 2 open columns. Prints "crack W cells, depth D" for each run.
 local h = require "hearth"
-local P = h.params { dx = 0.004, F = 30, cl = 10, ef = 1, ef_dry = 0.02 }
+local P = h.params { dx = 0.004, F = 30, cl = 10, ef = 1, ef_dry = 0.02, rule = 0 }
 local dx = P.dx
 local x0, x1, floor, H, s0 = 0.02, 0.10, 0.01, 0.03, 0.4
 local s = h.scene { dim = 2, dx = dx, box = { { 0, 0 }, { 0.12, 0.08 } }, oven = { temperature = 20, beta = 0 }, name = "crust_cracks" }
@@ -33,7 +33,7 @@ local dry = h.curve { { 0.65, P.F }, { 0.85, 1 }, of = "moisture", irreversible 
 -- stiffening, keeps the wet value too.
 local ef = P.F > 1 and P.ef * h.curve { { 0.65, P.ef_dry / P.ef }, { 0.85, 1 }, of = "moisture", irreversible = true } or P.ef
 local m = h.material("cam_clay_dough", { E = 5e3 * dry, nu = 0.3, density = 500, tau_y = 200 * dry, eta = 0,
-  fracture_strain = ef,
+  fracture_strain = ef, fracture_stretch = P.rule,
   specific_heat = 20, conductivity = 30, expansion = P.cl, reference_temperature = 20, porosity = 0.1, max_porosity = 0.6,
   water_diffusivity = 2e-4 / 293.15, evaporation = 2 })
 s:collider { shape = h.plane({ 0, floor }, { 0, 1 }), mode = "sticky" }

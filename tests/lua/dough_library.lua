@@ -25,16 +25,21 @@ for name, t in pairs(T2) do
     for i = 2, #f do assert(f[i][2] < f[i - 1][2], name .. ": the factor falls as the crust holds more water") end
   end
   -- issue #18 (dough.lua's WATER, FRACTURE): the bread and the muffin carry water (their raw X_0 as s_0 at
-  -- Table 2's density), and a fracture strain of 1 wet falling to 0.02 once dried to X = 0.16 kg/kg; no other good
+  -- Table 2's density), and a stretch to fracture (the stretch rule, fracture_stretch 1) of 100 raw, 1 at X = 0.41
+  -- kg/kg (rubbery), falling log-linearly to 0.02 once dried to X = 0.16 kg/kg (glassy); no other good
   local wat = ({ bread = 0.45 * 500 / 1000, muffin = 0.40 * 500 / 1000 })[name]
   if wat then
     assert(math.abs(d.saturation - wat) < 1e-12 and o.saturation == d.saturation, name .. ": s_0 " .. tostring(d.saturation))
     assert(d.water_diffusivity > 0 and d.evaporation > 0 and o.water_time_scale == 600, name .. ": water live, x600")
-    local fs = d.fracture_strain
-    assert(fs.base == 1 and fs.factor.moisture and fs.factor.irreversible and fs.factor[1][2] == 0.02
-      and fs.factor[#fs.factor][2] == 1, name .. ": brittle when dry, ductile when wet")
+    local fs, f = d.fracture_strain, d.fracture_strain.factor
+    assert(fs.base == 100 and d.fracture_stretch == 1 and f.moisture and f.irreversible and
+      math.abs(fs.base * f[1][2] - 0.02) < 1e-12 and f[#f][1] == 1 and f[#f][2] == 1,
+      name .. ": brittle when dry, never cracks raw, by the stretch rule")
+    for i = 2, #f do assert(f[i][2] > f[i - 1][2], name .. ": the stretch to fracture grows with water") end
     local X0 = ({ bread = 0.82, muffin = 0.67 })[name]
-    assert(math.abs(fs.factor[1][1] * X0 - 0.16) < 1e-12, name .. ": glassy at X = 0.16 kg/kg")
+    assert(math.abs(f[1][1] * X0 - 0.16) < 1e-12, name .. ": glassy at X = 0.16 kg/kg")
+    assert(math.abs(f[#f - 1][1] * X0 - 0.41) < 1e-12 and math.abs(fs.base * f[#f - 1][2] - 1) < 1e-12,
+      name .. ": rubbery (1) at X = 0.41 kg/kg")
   else
     assert(d.saturation == nil and d.fracture_strain == nil and o.saturation == nil, name .. ": no water, no fracture")
   end

@@ -18,7 +18,9 @@
 -- water: X/X0 (its water over the water it was given, saturation x J / s_0) of
 -- its top particle on the loaf's axis and of the particle nearest the crumb's
 -- centre (on the axis, 35 mm above the tray), and its count of cracked
--- particles (damage 1). The dough carries water (lua/hearth/dough.lua, WATER:
+-- particles (damage 1); and top_arc_m, the length of the plain loaf's top skin
+-- followed as material (the particles on top of its crown's middle 80% at the
+-- start, by id): its growth is the stretch the rise puts on the crust. The dough carries water (lua/hearth/dough.lua, WATER:
 -- rates x600, so 2.5 s stand for a 25 minute bake); at the end it writes
 -- damage.png and browning.png.
 local h = require "hearth"
@@ -145,8 +147,38 @@ local function water(x0)
   return p.saturation[top] * p.J[top] / s0, p.saturation[ctr] * p.J[ctr] / s0, nc
 end
 
+-- the plain loaf's top skin, followed as material (header, top_arc_m): the highest particle of each one-cell
+-- column over the crown's middle 80% at the start, by id; its length is the polyline through them in their
+-- starting order, so its growth is the tangential stretch the rise puts on the skin
+local skin
+local function top_arc(x0)
+  local p = s:particles { fields = { "id", "x" } }
+  if not skin then
+    local lo, n = x0 - 0.4 * WIDTH, math.floor(0.8 * WIDTH / dx + 0.5)
+    local best = {}
+    for k = 1, p.n do
+      local c = math.floor((p.x[3 * k - 2] - lo) / dx) + 1
+      if c >= 1 and c <= n and (not d3 or math.abs(p.x[3 * k] - zc) < dx / 2) and
+        (not best[c] or p.x[3 * k - 1] > p.x[3 * best[c] - 1]) then best[c] = k end
+    end
+    skin = {}
+    for c = 1, n do if best[c] then skin[#skin + 1] = p.id[best[c]] end end
+  end
+  local at = {}
+  for k = 1, p.n do at[p.id[k]] = k end
+  local len, prev = 0, nil
+  for _, id in ipairs(skin) do
+    local k = at[id]
+    if k then
+      if prev then len = len + math.sqrt((p.x[3 * k - 2] - p.x[3 * prev - 2]) ^ 2 + (p.x[3 * k - 1] - p.x[3 * prev - 1]) ^ 2) end
+      prev = k
+    end
+  end
+  return len
+end
+
 local rows = { "t,height_plain_m,height_one_slit_m,height_two_slits_m,gap_one_slit_m,gap_two_slits_left_m,gap_two_slits_right_m," ..
-  "area_plain,area_one_slit,area_two_slits,crack_depth_m,crack_width_m,moisture_top,moisture_centre,cracked" }
+  "area_plain,area_one_slit,area_two_slits,crack_depth_m,crack_width_m,moisture_top,moisture_centre,cracked,top_arc_m" }
 s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png" },
   on_frame = function(f)
     local r = { ("%.3f"):format(f.t) }
@@ -165,6 +197,7 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temp
     r[#r + 1] = ("%.4f"):format(top)
     r[#r + 1] = ("%.4f"):format(ctr)
     r[#r + 1] = ("%d"):format(nc)
+    r[#r + 1] = ("%.5f"):format(P.only <= 1 and top_arc(loaves[1].x) or 0)
     rows[#rows + 1] = table.concat(r, ",")
     h.write("bread.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
