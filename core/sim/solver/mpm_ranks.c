@@ -693,6 +693,7 @@ hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_rep
     struct mpm_slabs *sl = m->slabs;
     if (m->nranks > 1) ranks_count_step(slabs_live(m) ? 1 : 0);
     if (!slabs_live(m)) return HEARTH_OK;
+    ranks_count_held(s->ps.n);
     const grid *g = &s->g;
     const int me = ranks_rank();
     int ghosts = 0; /* the ghost layer's blocks, and with fields the lower halo layer's */
