@@ -394,6 +394,24 @@ mpi_guard_stops_all_ranks)
     grep -q "nan_after" "$tmp/err.txt" || fail "the diagnosis does not name the material that failed"
     grep -q "Segmentation fault" "$tmp/err.txt" && fail "a process crashed on the way out"
     ;;
+mpi_lone_failure_ends_every_rank)
+    # here $hearth is tests/mpi_alone.c's program: the right end's rank fails a
+    # step alone (an injected allocation failure when the thrown block first
+    # reaches it); the run must end (non-zero, within the timeout), not hang in
+    # the gather after the step call or in stats()' sums (#21)
+    for mode in gather stats; do
+        timeout 50 mpirun --oversubscribe -n "$ranks" "$hearth" "$mode" >"$tmp/$mode.txt" 2>&1
+        st=$?
+        cat "$tmp/$mode.txt"
+        [ $st -ne 124 ] || fail "$mode: the ranks hung after one rank's failed step (killed by the 50 s timeout)"
+        [ $st -ne 0 ] || fail "$mode: the run ended with status 0 after a failed step"
+        grep -q "rank $((ranks - 1)) of $ranks ($mode): step call status [1-9].*out of memory" "$tmp/$mode.txt" ||
+            fail "$mode: the last rank did not fail its step with 'out of memory' (the test lost its point)"
+        grep -q "rank $((ranks - 1)): a further step: status [1-9].*takes part in no exchange" "$tmp/$mode.txt" ||
+            fail "$mode: a further step on the failed rank was not refused"
+        grep -q "Segmentation fault" "$tmp/$mode.txt" && fail "$mode: a process crashed on the way out"
+    done
+    ;;
 mpi_sph_refused)
     mp "$ranks" s sph.lua >"$tmp/out.txt" 2>"$tmp/err.txt" && fail "an SPH scene ran over $ranks ranks"
     cat "$tmp/err.txt"
