@@ -61,9 +61,11 @@ void app_ranks_report(const run_args *a) {
     hearth_ranks_steps(&slabs, &replicated, &passes);
     const long steps = slabs + replicated;
     const double gathered = hearth_ranks_gathered();
+    int least, most;
+    hearth_ranks_held(&least, &most);
     fprintf(stderr,
             "hearth run: %d MPI ranks, %ld steps in slabs and %ld replicated, %ld extra migration passes; rank %d received %.3g MB in the exchanges "
-            "(%.4g kB a step), %.3g s inside them; whole-set gathers %.3g MB, the rest %.4g kB a step\n",
+            "(%.4g kB a step), %.3g s inside them; whole-set gathers %.3g MB, the rest %.4g kB a step; it held %d to %d particles after a slab step\n",
             hearth_ranks_size(), slabs, replicated, passes, hearth_ranks_rank(), bytes / 1e6, steps ? bytes / 1e3 / (double)steps : 0.0,
-            seconds, gathered / 1e6, steps ? (bytes - gathered) / 1e3 / (double)steps : 0.0);
+            seconds, gathered / 1e6, steps ? (bytes - gathered) / 1e3 / (double)steps : 0.0, least, most);
 }

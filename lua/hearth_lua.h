@@ -113,6 +113,12 @@ void hl_checkvec(lua_State *L, int idx, const char *what, double v[3]);
  * folder, as Lua's own io and os functions take it. The result is in buf. */
 enum { HL_PATH_MKDIRS = 1, HL_PATH_AS_IS = 2 };
 const char *hl_out_path(lua_State *L, const char *call, const char *path, int flags, char *buf, size_t n);
+/* A path as an error message quotes it: whole up to HL_QUOTE_MAX bytes, else
+ * its head and tail around "...", with its length. Pushed on L's stack (it
+ * stays until the caller pops it or raises). Every path refusal goes through
+ * it: a 100 kB path once came back whole in the message. */
+enum { HL_QUOTE_MAX = 160 };
+const char *hl_quote_path(lua_State *L, const char *path);
 /* a path a scene reads: relative paths resolve under the output folder (absolute ones stay) */
 const char *hl_in_path(lua_State *L, const char *path, char *buf, size_t n);
 /* Encode PNG frames (in: a printf pattern, frames first .. first+count-1) into

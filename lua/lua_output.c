@@ -62,6 +62,18 @@ static const char *resolve_target(const char *path, char *out, size_t n) {
     return NULL;
 }
 
+const char *hl_quote_path(lua_State *L, const char *path) {
+    const size_t len = strlen(path), head = HL_QUOTE_MAX - 60, tail = 40;
+    if (len <= HL_QUOTE_MAX) return lua_pushstring(L, path);
+    /* Lua's format has no precision: the pieces go in as strings */
+    lua_pushlstring(L, path, head);
+    lua_pushstring(L, path + len - tail);
+    const char *q = lua_pushfstring(L, "%s...%s (%I bytes)", lua_tostring(L, -2), lua_tostring(L, -1), (lua_Integer)len);
+    lua_replace(L, -3);
+    lua_pop(L, 1);
+    return q;
+}
+
 /* path resolved in the folder out_dir (the output folder, or under mpirun
  * rank 0's output folder for a rank > 0: io_pvtu's pieces), checked as
  * hl_out_path says */
@@ -72,26 +84,28 @@ static const char *out_path_in(lua_State *L, const char *out_dir, const char *ca
     if (path[0] == '/' || !out_dir || (flags & HL_PATH_AS_IS)) w = snprintf(buf, n, "%s", path);
     else w = snprintf(buf, n, "%s/%s", out_dir, path);
     if (w < 0 || (size_t)w >= n) /* a cut path would name another file than the one checked and asked for */
-        return hl_errorf(L, "%s: the path '%.200s...' is longer than %zu bytes", call, path, n - 1), (const char *)NULL;
+        return luaL_error(L, "%s: the path '%s' is longer than %d bytes", call, hl_quote_path(L, path), (int)(n - 1)),
+               (const char *)NULL;
     if (!o->trusted) {
         char out_real[PATH_MAX], target[PATH_MAX];
         hearth_error err;
         if (!out_dir || hearth_mkdir_p(out_dir, &err) || !realpath(out_dir, out_real))
             return luaL_error(L, "%s: '%s': the output folder '%s' cannot be resolved, so a scene without --trust cannot "
-                                 "write (run with --trust to allow it)", call, path, out_dir ? out_dir : "(none)"),
+                                 "write (run with --trust to allow it)", call, hl_quote_path(L, path),
+                              hl_quote_path(L, out_dir ? out_dir : "(none)")),
                    (const char *)NULL;
         const char *why = resolve_target(buf, target, sizeof target);
         if (why)
             return luaL_error(L, "%s: '%s' is refused: %s, so it may lead outside the output folder '%s'; a scene "
                                  "without --trust writes only inside its output folder (run with --trust to allow it)",
-                              call, path, why, out_dir),
+                              call, hl_quote_path(L, path), why, hl_quote_path(L, out_dir)),
                    (const char *)NULL;
         size_t ol = strlen(out_real);
         int inside = !strcmp(out_real, "/") || (!strncmp(target, out_real, ol) && (target[ol] == '/' || target[ol] == '\0'));
         if (!inside)
             return luaL_error(L, "%s: '%s' is outside the output folder '%s' (it resolves to '%s'); a scene without "
                                  "--trust writes only inside its output folder (run with --trust to allow it)",
-                              call, path, out_dir, target),
+                              call, hl_quote_path(L, path), hl_quote_path(L, out_dir), hl_quote_path(L, target)),
                    (const char *)NULL;
     }
     if (flags & HL_PATH_MKDIRS) { /* make the file's folder, so "frames/t0001.png" just works */

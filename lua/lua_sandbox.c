@@ -46,7 +46,10 @@ static int safe_open(lua_State *L) {
     const int base = lua_gettop(L);
     char buf[4096];
     if (strpbrk(mode, "wa+")) {
-        lua_pushfstring(L, "io.open('%s', '%s')", path, mode);
+        const char *qp = hl_quote_path(L, path), *qm = hl_quote_path(L, mode);
+        lua_pushfstring(L, "io.open('%s', '%s')", qp, qm); /* the call as messages name it */
+        lua_replace(L, -3);
+        lua_pop(L, 1);
         path = hl_out_path(L, lua_tostring(L, -1), path, HL_PATH_AS_IS, buf, sizeof buf);
         lua_pop(L, 1);
     }
@@ -73,7 +76,8 @@ static int safe_path_op(lua_State *L) {
     for (int i = 1; i <= n; i++) {
         char buf[4096];
         const char *path = luaL_checkstring(L, i);
-        lua_pushfstring(L, "%s('%s')", call, path);
+        lua_pushfstring(L, "%s('%s')", call, hl_quote_path(L, path));
+        lua_remove(L, -2);
         lua_pushstring(L, hl_out_path(L, lua_tostring(L, -1), path, HL_PATH_AS_IS, buf, sizeof buf));
         lua_replace(L, i);
         lua_pop(L, 1);

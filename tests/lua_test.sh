@@ -497,6 +497,18 @@ lua_blend_modes)
     out=$("$hearth" run "$scenes/blend_modes.lua" --quiet 2>&1) || fail "blend_modes.lua: $out"
     echo "$out" | grep -q "blend modes ok" || fail "blend_modes.lua did not finish: $out"
     ;;
+path_refusals_quote_short)
+    # a refused path is quoted by its head, tail and length (lua_output.c's
+    # hl_quote_path), not whole: a 100 kB path once came back in full, and a
+    # 3 kB one outside the folder three times over (6-9 kB messages)
+    run long_paths.lua
+    expect_rc 0 "the scene"
+    cat out.txt | cut -c1-300
+    [ "$(grep -c ' refused ' out.txt)" -eq 10 ] || fail "not every hostile path was refused: $(cut -c1-200 out.txt)"
+    awk '$3 > 1000 { print "  " $1 ": " $3 " bytes"; bad = 1 } END { exit bad }' out.txt || fail "a refusal message is over 1000 bytes"
+    grep -q '(100004 bytes)' out.txt || fail "the long path's length is not named"
+    grep '^vtu_outside' out.txt | grep -q 'outside the output folder' || fail "the outside path's reason is gone"
+    ;;
 sandbox_write_escapes)
     # every writer a scene has, aimed outside the output folder: refused with
     # the call, the path and --trust named, and nothing written

@@ -229,6 +229,36 @@ TEST(particles_permute_orders) {
     hearth_set_threads(0);
 }
 
-TEST_MAIN(T(seed_reserves_exactly), T(particles_grow_by_half), T(growth_peak_bounded), T(sort_keys_from_g2p),
+/* Zero bytes are not out of memory (#21): a rank whose slab holds no
+ * particle sizes its step scratch by 0, and a NULL from mem_alloc(0) was
+ * reported as "out of memory for 0 particle volumes" on that rank alone. The
+ * empty block is non-NULL, costs no bytes, takes no injected failure, frees
+ * and grows like NULL. */
+TEST(alloc_zero_is_not_out_of_memory) {
+    const size_t before = hearth_bytes_allocated();
+    void *a = mem_alloc(0), *c = mem_calloc(0);
+    printf("  mem_alloc(0) = %p, mem_calloc(0) = %p, bytes held %zu -> %zu\n", a, c, before, hearth_bytes_allocated());
+    CHECK(a != NULL && c != NULL);
+    CHECK(hearth_bytes_allocated() == before);
+    mem_fail_after(0); /* the next real allocation fails: a zero-byte one is not one */
+    void *z = mem_alloc(0);
+    void *f = mem_alloc(8);
+    mem_fail_after(-1);
+    printf("  with a failure injected: mem_alloc(0) = %p, mem_alloc(8) = %p\n", z, f);
+    CHECK(z != NULL && f == NULL);
+    double *g = mem_realloc(a, 0, 4 * sizeof(double)); /* grows from the empty block as from NULL */
+    CHECK(g != NULL);
+    for (int i = 0; i < 4; i++) g[i] = i;
+    CHECK(hearth_bytes_allocated() == before + 4 * sizeof(double));
+    void *e = mem_realloc(g, 4 * sizeof(double), 0); /* shrinking to nothing frees it and gives the empty block */
+    printf("  grown to 32 bytes and back to 0: %p, bytes held %zu\n", e, hearth_bytes_allocated());
+    CHECK(e != NULL && hearth_bytes_allocated() == before);
+    mem_free(e, 0);
+    mem_free(c, 0);
+    mem_free(z, 123); /* the empty block never came from the hook: any size frees nothing */
+    CHECK(hearth_bytes_allocated() == before);
+}
+
+TEST_MAIN(T(seed_reserves_exactly), T(alloc_zero_is_not_out_of_memory), T(particles_grow_by_half), T(growth_peak_bounded), T(sort_keys_from_g2p),
           T(determinism_threads_2d_bookkeeping),
           T(particles_permute_orders))

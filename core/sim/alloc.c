@@ -41,10 +41,20 @@ static int should_fail(void) {
     return 0;
 }
 
+/* A zero-byte block: not NULL, so that NULL from these calls always means
+ * out of memory. A count that is legitimately 0 (a rank whose slab holds no
+ * particle sizes its per-particle scratch by 0) was reported as "out of
+ * memory for 0 particle volumes" and failed that rank's step alone (#21).
+ * It is never passed to the hook, counts no bytes, and reading or writing
+ * it is as wrong as past any block's end. */
+static max_align_t g_empty;
+#define EMPTY ((void *)&g_empty)
+
 void *mem_realloc(void *p, size_t osize, size_t nsize) {
+    if (p == EMPTY) p = NULL, osize = 0;
     if (nsize == 0) {
         mem_free(p, osize);
-        return NULL;
+        return EMPTY;
     }
     if (should_fail()) return NULL;
     void *q = g_fn(g_ud, p, p ? osize : 0, nsize);
@@ -57,7 +67,7 @@ void *mem_realloc(void *p, size_t osize, size_t nsize) {
     return q;
 }
 
-void *mem_alloc(size_t n) { return n ? mem_realloc(NULL, 0, n) : NULL; }
+void *mem_alloc(size_t n) { return n ? mem_realloc(NULL, 0, n) : EMPTY; }
 
 void *mem_calloc(size_t n) {
     void *p = mem_alloc(n);
@@ -66,7 +76,7 @@ void *mem_calloc(size_t n) {
 }
 
 void mem_free(void *p, size_t n) {
-    if (!p) return;
+    if (!p || p == EMPTY) return;
     g_fn(g_ud, p, n, 0);
     atomic_fetch_sub(&g_bytes, n);
 }

@@ -5,13 +5,16 @@
 #define HEARTH_SIM_ALLOC_H
 #include <stddef.h>
 
-/// Allocate n bytes (NULL on failure or when n == 0).
+/// Allocate n bytes; NULL only on failure (n == 0 gives a non-NULL empty
+/// block that holds nothing and costs nothing: zero bytes are not out of memory).
 void *mem_alloc(size_t n);
 /// Allocate n zeroed bytes.
 void *mem_calloc(size_t n);
-/// Grow or shrink p from osize to nsize bytes; on failure p is untouched and NULL returned.
+/// Grow or shrink p (NULL or an empty block for none) from osize to nsize
+/// bytes; on failure p is untouched and NULL returned; nsize 0 frees p and
+/// gives an empty block.
 void *mem_realloc(void *p, size_t osize, size_t nsize);
-/// Free p of size n (NULL is fine).
+/// Free p of size n (NULL and the empty block are fine).
 void mem_free(void *p, size_t n);
 /// Duplicate a string (counted).
 char *mem_strdup(const char *s);

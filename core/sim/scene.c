@@ -719,12 +719,16 @@ static hearth_status advance_loop(hearth_scene *s, double t_end, long max_steps,
  * host that keeps the slabs, when it calls hearth_scene_whole. */
 hearth_status hearth_scene_step(hearth_scene *s, int n, hearth_error *err) {
     err_clear(err);
+    hearth_status st = mpm_ranks_usable(s, err);
+    if (st) return st;
     mpm_ranks_begin(s);
     return mpm_ranks_end(s, step_loop(s, n, err), err);
 }
 
 hearth_status hearth_scene_advance_steps(hearth_scene *s, double t_end, long max_steps, hearth_error *err) {
     err_clear(err);
+    hearth_status st = mpm_ranks_usable(s, err);
+    if (st) return st;
     mpm_ranks_begin(s);
     return mpm_ranks_end(s, advance_loop(s, t_end, max_steps, err), err);
 }

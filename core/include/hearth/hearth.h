@@ -767,6 +767,9 @@ double hearth_ranks_max(double v);
 /// a rebalance or the guard needs the whole scene): the rest is the halo,
 /// the crossings and the step report.
 double hearth_ranks_gathered(void);
+/// The fewest and the most particles this rank held at the end of a slab-mode
+/// step (0 and 0 before any): a rank whose slab held none says so (#21).
+void hearth_ranks_held(int *least, int *most);
 
 #ifdef __cplusplus
 }

@@ -26,6 +26,8 @@
 
 hearth_status hearth_write_vtu_pieces(const hearth_scene *s, const char *path, hearth_error *err) {
     err_clear(err);
+    const hearth_status u = mpm_ranks_usable(s, err); /* a failed step on this rank: no exchange (mpm_ranks_end) */
+    if (u) return u;
     const int N = ranks_size(), me = ranks_rank();
     /* the index's folder and file stem; the pieces go beside it */
     char piece[4096], stem[1024];

@@ -27,6 +27,8 @@ hearth_status ranks_sum_grid(grid *g, int slot_lo, int slot_hi, hearth_error *er
 /// One MPM step over the ranks, in the slab mode (what = 1) or the replicated
 /// one (0); or (2) one more migration pass than the first (hearth_ranks_steps).
 void ranks_count_step(int what);
+/// The particles this rank holds after a slab-mode step (hearth_ranks_held).
+void ranks_count_held(int n);
 /// Every rank's `bytes` bytes at mine into all (ranks_size() x bytes), in rank order.
 void ranks_allgather_fixed(const void *mine, void *all, size_t bytes);
 /// Every rank's `bytes` bytes at mine (at most RANKS_COMBINE_MAX) combined in

@@ -86,6 +86,18 @@ void ranks_count_step(int what) {
 
 double hearth_ranks_gathered(void) { return gathered_bytes; }
 
+static int held_least = -1, held_most; /* particles held after a slab-mode step; -1: none yet */
+
+void ranks_count_held(int n) {
+    if (held_least < 0 || n < held_least) held_least = n;
+    if (n > held_most) held_most = n;
+}
+
+void hearth_ranks_held(int *least, int *most) {
+    *least = held_least < 0 ? 0 : held_least;
+    *most = held_most;
+}
+
 void hearth_ranks_steps(long *slabs, long *replicated, long *passes) {
     *slabs = steps_slabs;
     *replicated = steps_replicated;

@@ -59,6 +59,7 @@ typedef struct mpm_state {
      * owns blocks [kfirst[r], kfirst[r + 1]) and particles [pfirst[r], pfirst[r + 1]) */
     int nranks, k_lo, k_hi;
     int *kfirst, *pfirst;   /* nranks + 1 each */
+    int failed_alone;       /* a step call failed here with an error the other ranks may not share: no more exchanges (mpm_ranks_end) */
     struct mpm_slabs *slabs; /* the slab mode's state (mpm_ranks.c) */
     struct mpm_slab_fields *sfields; /* the slabs' halo layers for heat and water (mpm_ranks_fields.c) */
 } mpm_state;
@@ -149,8 +150,13 @@ void mpm_ranks_begin(hearth_scene *s);
 /// Whether the slabs stay between step calls (hearth_scene_keep_slabs).
 void mpm_ranks_keep(hearth_scene *s, int on);
 /// At the end of a step call: the whole set again unless the host keeps the
-/// slabs. Returns st, or the gather's error when st is HEARTH_OK.
+/// slabs. Returns st, or the gather's error when st is HEARTH_OK. A failed
+/// call other than the guard's stop (which every rank reaches together)
+/// may be this rank's alone: the rank then takes part in no exchange again.
 hearth_status mpm_ranks_end(hearth_scene *s, hearth_status st, hearth_error *err);
+/// HEARTH_ERR_STATE (and why) when a step call failed on this rank alone
+/// (mpm_ranks_end): every collective entry point asks before it exchanges.
+hearth_status mpm_ranks_usable(const hearth_scene *s, hearth_error *err);
 /// The whole set on every rank again (hearth_scene_whole); collective.
 hearth_status mpm_ranks_whole(hearth_scene *s, hearth_error *err);
 /// Particles over all ranks.

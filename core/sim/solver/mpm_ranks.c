@@ -176,8 +176,9 @@ hearth_status mpm_ranks_sum_grid(hearth_scene *s, hearth_error *err) {
     }
     hearth_status st = ranks_sum_grid(&s->g, lo, hi, err);
     if (st) return st;
-    /* the field passes between P2G and G2P read every particle's volume */
-    if (m->vol && (thermal_active(s) || water_active(s))) ranks_allgather(m->vol, sizeof(double), m->pfirst);
+    /* the field passes between P2G and G2P read every particle's volume (whether
+     * to gather is the scene's, never this rank's pointer: mpm_reserve made it) */
+    if (thermal_active(s) || water_active(s)) ranks_allgather(m->vol, sizeof(double), m->pfirst);
     return HEARTH_OK;
 }
 
@@ -367,17 +368,40 @@ void mpm_ranks_keep(hearth_scene *s, int on) {
     if (s->mpm && s->mpm->slabs) s->mpm->slabs->keep = on != 0;
 }
 
+/* A failed step call leaves the ranks where each one stopped: a rank that ran
+ * out of memory (or found a halo not matching its owner's) returns at once,
+ * while the others wait for its part of the next exchange. Were it to go on
+ * to the host's next collective (the gather below, stats()' sums, the run
+ * record), every rank would wait for ever (#21: an empty rank's spurious
+ * "out of memory" hung wall_column.lua at 4 ranks). So, but for the guard's
+ * stop, which the combined step report gives every rank at the same point,
+ * a failed call ends this rank's exchanges; the host reports the error and
+ * leaves, and mpirun ends the others. Rejected: agreeing on the failure
+ * over the ranks (the others are inside a neighbour exchange, not at a
+ * point where they could learn it). */
 hearth_status mpm_ranks_end(hearth_scene *s, hearth_status st, hearth_error *err) {
     mpm_state *m = s->mpm;
-    if (!m || !slabs_live(m) || m->slabs->keep) return st;
+    if (m && m->nranks > 1 && st && st != HEARTH_ERR_GUARD) m->failed_alone = 1;
+    if (!m || !slabs_live(m) || m->slabs->keep || m->failed_alone) return st;
     hearth_error e2;
     const hearth_status g = slabs_gather(s, st ? &e2 : err); /* a host that reads the scene directly */
     return st ? st : g;
 }
 
+hearth_status mpm_ranks_usable(const hearth_scene *s, hearth_error *err) {
+    const mpm_state *m = s->mpm;
+    if (!m || !m->failed_alone) return HEARTH_OK;
+    return err_set(err, HEARTH_ERR_STATE,
+                   "MPI rank %d: an earlier step failed on this rank, perhaps on it alone, so it takes part in no exchange with the "
+                   "other ranks again; end the run (mpirun then ends every rank)",
+                   ranks_rank());
+}
+
 hearth_status mpm_ranks_whole(hearth_scene *s, hearth_error *err) {
     mpm_state *m = s->mpm;
     if (!m || !slabs_live(m)) return HEARTH_OK;
+    hearth_status st = mpm_ranks_usable(s, err);
+    if (st) return st;
     return slabs_gather(s, err);
 }
 
@@ -693,6 +717,7 @@ hearth_status mpm_ranks_report(hearth_scene *s, double dt, double vcol, step_rep
     struct mpm_slabs *sl = m->slabs;
     if (m->nranks > 1) ranks_count_step(slabs_live(m) ? 1 : 0);
     if (!slabs_live(m)) return HEARTH_OK;
+    ranks_count_held(s->ps.n);
     const grid *g = &s->g;
     const int me = ranks_rank();
     int ghosts = 0; /* the ghost layer's blocks, and with fields the lower halo layer's */

@@ -380,6 +380,7 @@ void mpm_ranks_fields_reduce(const hearth_scene *s, double *sum, int nsum, doubl
     const mpm_state *m = s->mpm;
     int axis, lo, hi;
     if (!m || !mpm_ranks_slab(m, &axis, &lo, &hi) || !fields_live(s)) return;
+    if (m->failed_alone) return; /* this rank's own sums: it exchanges nothing after a failed step (mpm_ranks_end) */
     /* the step's first fill made the state: every rank got here through it */
     HEARTH_ASSERT(m->sfields && nsum + nmax <= RED_MAX);
     const int w = nsum + nmax;
