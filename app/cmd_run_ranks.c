@@ -3,7 +3,8 @@
  * (core/sim/solver/mpm_ranks.c), so rank 0 alone writes the outputs (PNG,
  * CSV, probes, s:vtu, the run record) and prints; the others run the same
  * scene file into a private scratch folder, removed at the end, and print
- * nothing (set HEARTH_RANKS_VERBOSE=1 to keep their messages). The one
+ * nothing (set HEARTH_RANKS_VERBOSE=1 to keep their messages) but a step
+ * failure that may be theirs alone (app_ranks_report). The one
  * exception, s:run's VTU frames, are a piece per rank that every rank
  * writes into rank 0's folder (out_shared, lua_output.c's l_vtu_frame). Rejected: a write switch
  * in the core, which every writer (atomic files, PNG, Lua's io.open) would
@@ -16,6 +17,8 @@
 
 #include "commands.h"
 #include "hearth/hearth.h"
+
+static int quiet_stderr = -1; /* a quiet rank's own stderr, kept for a failure of its own */
 
 int app_ranks_follow(run_args *a, char *scratch, size_t n) {
     scratch[0] = '\0';
@@ -34,6 +37,7 @@ int app_ranks_follow(run_args *a, char *scratch, size_t n) {
     a->movie = NULL;
     const char *v = getenv("HEARTH_RANKS_VERBOSE");
     if (!(v && v[0] == '1')) {
+        quiet_stderr = dup(STDERR_FILENO);
         if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) return 1;
     }
     return 0;
@@ -49,9 +53,19 @@ void app_ranks_cleanup(const char *scratch) {
     if (scratch && scratch[0]) nftw(scratch, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
 }
 
-/* Rank 0's line; with HEARTH_RANKS_VERBOSE=1 too, every rank's (the others' stderr is kept then). */
+/* Rank 0's line; with HEARTH_RANKS_VERBOSE=1 too, every rank's (the others' stderr is kept then).
+ * A quiet rank whose step failed outside a guard stop says why: that failure
+ * may be its alone (an allocation, say), and without it the user would see
+ * only mpirun's notice that a rank exited non-zero. Failures every rank meets
+ * alike (a Lua error, the guard) stay rank 0's to print, once. */
 void app_ranks_report(const run_args *a) {
     const char *verbose = getenv("HEARTH_RANKS_VERBOSE");
+    const char *failure = hearth_ranks_failure();
+    if (quiet_stderr >= 0) {
+        if (failure) dprintf(quiet_stderr, "hearth run (MPI rank %d): a step failed on this rank: %s\n", hearth_ranks_rank(), failure);
+        close(quiet_stderr);
+        quiet_stderr = -1;
+    }
     if (hearth_ranks_size() == 1 || (hearth_ranks_rank() > 0 && !(verbose && verbose[0] == '1'))) return;
     double bytes, seconds;
     hearth_ranks_traffic(&bytes, &seconds);
