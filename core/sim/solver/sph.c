@@ -419,6 +419,60 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
     st->surf[i] = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]) * st->h[i] > s->def.sph.surface_threshold;
 }
 
+/* kinematics_one in 2D when every h is the same and no axis is periodic
+ * (the step's usual case): the same sums, term for term, with each x, y pair
+ * of d, v_j - v_i and the sums held in one two-lane vector. A lane's
+ * product or sum is the scalar one (no fused multiply-add: the build is
+ * ISO C, which contracts none), so the bits are kinematics_one's; the
+ * kernel constants are i's throughout, as SPH_PAIR_KC gives them when h_j
+ * = h_i. */
+typedef double sph_v2 __attribute__((vector_size(16)));
+static inline sph_v2 ld2(const double *p) {
+    sph_v2 r;
+    memcpy(&r, p, sizeof r);
+    return r;
+}
+static inline __attribute__((always_inline)) void kinematics_one_2d(hearth_scene *s, const sph_cols *c, int i,
+                                                                     double *wb) {
+    struct sph_state *st = s->sph;
+    const double *x = c->x, *v = c->v, *m = c->m, *V = st->perm;
+    const int *off = st->nl.off, *nb = st->nl.j;
+    const double hi = st->h[i];
+    double lc = m[i] / st->rho[i] * sph_lap_w(2, 0, hi), fill = 0, tr = 0;
+    sph_v2 L0 = {0, 0}, L1 = {0, 0}, Nv = {0, 0}, gv = {0, 0}; /* L's x and y rows, grad C, the moment's centre */
+    const sph_v2 xi = ld2(x + 3 * i), vi = ld2(v + 3 * i);
+    const sph_kc kci = sph_kc_of(2, hi);
+    for (int k = off[i]; k < off[i + 1]; k++) {
+        const int j = nb[k];
+        const sph_v2 d = xi - ld2(x + 3 * j), dd = d * d;
+        const double r2 = dd[0] + dd[1], r = sqrt(r2);
+        if (r <= 0) {
+            if (wb) wb[k] = sph_w_kc(&kci, r);
+            continue;
+        }
+        double wk, dwk, lapk;
+        sph_w_dw_lap_kc(2, &kci, r, &wk, &dwk, &lapk);
+        if (wb) wb[k] = wk;
+        const double Vj = V[j], g = dwk / r;
+        const sph_v2 t = Vj * (ld2(v + 3 * j) - vi) * g; /* Vj dv g per row, then times d[b] */
+        L0 += t[0] * d;
+        L1 += t[1] * d;
+        Nv += Vj * g * d;
+        lc += Vj * lapk;
+        const double lr2 = Vj * sph_lap_visc_kc(&kci, r) * r2;
+        fill += Vj * wk;
+        tr += lr2;
+        gv += lr2 * d;
+    }
+    const double L[9] = {L0[0], L0[1], 0, L1[0], L1[1], 0, 0, 0, 0}, Ni[3] = {Nv[0], Nv[1], 0},
+                 gm[3] = {gv[0], gv[1], 0};
+    st->vc[i] = sph_viscous_factor(s, i, fill, tr, gm);
+    memcpy(c->C + 9 * i, L, sizeof L);
+    memcpy(st->N + 3 * i, Ni, sizeof Ni);
+    st->lapC[i] = lc;
+    st->surf[i] = sqrt(Ni[0] * Ni[0] + Ni[1] * Ni[1] + Ni[2] * Ni[2]) * hi > s->def.sph.surface_threshold;
+}
+
 static void phase_kinematics(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
@@ -430,9 +484,15 @@ static void phase_kinematics(hearth_scene *s) {
     /* W of each list entry for XSPH, after the forces' terms in st->pairc (sph_pairs_prepare) */
     double *wb = st->pair_ok ? st->pairc + (size_t)dim * st->nl.off[n] : NULL;
     /* one copy of the loop per dimension: the kernels' dim is a constant in each */
+    /* one h for all and no periodic axis: the 2D loop's vector copy (kinematics_one_2d) */
+    int fast2 = dim == 2 && !st->cells.anyper;
+    for (int i = 1; i < n && fast2; i++) fast2 = st->h[i] == st->h[0];
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        if (dim == 2) {
+        if (fast2) {
+            if (wb) kinematics_one_2d(s, &c, i, wb);
+            else kinematics_one_2d(s, &c, i, NULL);
+        } else if (dim == 2) {
             if (wb) kinematics_one(s, &c, i, 2, wb);
             else kinematics_one(s, &c, i, 2, NULL);
         } else {
