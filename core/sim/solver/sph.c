@@ -421,17 +421,9 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
 
 /* kinematics_one in 2D when every h is the same and no axis is periodic
  * (the step's usual case): the same sums, term for term, with each x, y pair
- * of d, v_j - v_i and the sums held in one two-lane vector. A lane's
- * product or sum is the scalar one (no fused multiply-add: the build is
- * ISO C, which contracts none), so the bits are kinematics_one's; the
- * kernel constants are i's throughout, as SPH_PAIR_KC gives them when h_j
- * = h_i. */
-typedef double sph_v2 __attribute__((vector_size(16)));
-static inline sph_v2 ld2(const double *p) {
-    sph_v2 r;
-    memcpy(&r, p, sizeof r);
-    return r;
-}
+ * of d, v_j - v_i and the sums held in one sph_v2 (sph_state.h), so the
+ * bits are kinematics_one's; the kernel constants are i's throughout, as
+ * SPH_PAIR_KC gives them when h_j = h_i. */
 static inline __attribute__((always_inline)) void kinematics_one_2d(hearth_scene *s, const sph_cols *c, int i,
                                                                      double *wb) {
     struct sph_state *st = s->sph;
@@ -440,11 +432,11 @@ static inline __attribute__((always_inline)) void kinematics_one_2d(hearth_scene
     const double hi = st->h[i];
     double lc = m[i] / st->rho[i] * sph_lap_w(2, 0, hi), fill = 0, tr = 0;
     sph_v2 L0 = {0, 0}, L1 = {0, 0}, Nv = {0, 0}, gv = {0, 0}; /* L's x and y rows, grad C, the moment's centre */
-    const sph_v2 xi = ld2(x + 3 * i), vi = ld2(v + 3 * i);
+    const sph_v2 xi = sph_ld2(x + 3 * i), vi = sph_ld2(v + 3 * i);
     const sph_kc kci = sph_kc_of(2, hi);
     for (int k = off[i]; k < off[i + 1]; k++) {
         const int j = nb[k];
-        const sph_v2 d = xi - ld2(x + 3 * j), dd = d * d;
+        const sph_v2 d = xi - sph_ld2(x + 3 * j), dd = d * d;
         const double r2 = dd[0] + dd[1], r = sqrt(r2);
         if (r <= 0) {
             if (wb) wb[k] = sph_w_kc(&kci, r);
@@ -454,7 +446,7 @@ static inline __attribute__((always_inline)) void kinematics_one_2d(hearth_scene
         sph_w_dw_lap_kc(2, &kci, r, &wk, &dwk, &lapk);
         if (wb) wb[k] = wk;
         const double Vj = V[j], g = dwk / r;
-        const sph_v2 t = Vj * (ld2(v + 3 * j) - vi) * g; /* Vj dv g per row, then times d[b] */
+        const sph_v2 t = Vj * (sph_ld2(v + 3 * j) - vi) * g; /* Vj dv g per row, then times d[b] */
         L0 += t[0] * d;
         L1 += t[1] * d;
         Nv += Vj * g * d;
