@@ -423,14 +423,16 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
  * (the step's usual case): the same sums, term for term, with each x, y pair
  * of d, v_j - v_i and the sums held in one sph_v2 (sph_state.h), so the
  * bits are kinematics_one's; the kernel constants are i's throughout, as
- * SPH_PAIR_KC gives them when h_j = h_i. */
+ * SPH_PAIR_KC gives them when h_j = h_i. The colour field's Laplacian
+ * (st->lapC) is summed only with `lap`: its one reader is eq. 3.30's
+ * surface tension (sph_forces), and without it st->lapC is left 0. */
 static inline __attribute__((always_inline)) void kinematics_one_2d(hearth_scene *s, const sph_cols *c, int i,
-                                                                     double *wb) {
+                                                                     double *wb, const int lap) {
     struct sph_state *st = s->sph;
     const double *x = c->x, *v = c->v, *m = c->m, *V = st->perm;
     const int *off = st->nl.off, *nb = st->nl.j;
     const double hi = st->h[i];
-    double lc = m[i] / st->rho[i] * sph_lap_w(2, 0, hi), fill = 0, tr = 0;
+    double lc = lap ? m[i] / st->rho[i] * sph_lap_w(2, 0, hi) : 0, fill = 0, tr = 0;
     sph_v2 L0 = {0, 0}, L1 = {0, 0}, Nv = {0, 0}, gv = {0, 0}; /* L's x and y rows, grad C, the moment's centre */
     const sph_v2 xi = sph_ld2(x + 3 * i), vi = sph_ld2(v + 3 * i);
     const sph_kc kci = sph_kc_of(2, hi);
@@ -443,14 +445,14 @@ static inline __attribute__((always_inline)) void kinematics_one_2d(hearth_scene
             continue;
         }
         double wk, dwk, lapk;
-        sph_w_dw_lap_kc(2, &kci, r, &wk, &dwk, &lapk);
+        sph_w_dw_lap_kc(2, &kci, r, &wk, &dwk, lap ? &lapk : NULL);
         if (wb) wb[k] = wk;
         const double Vj = V[j], g = dwk / r;
         const sph_v2 t = Vj * (sph_ld2(v + 3 * j) - vi) * g; /* Vj dv g per row, then times d[b] */
         L0 += t[0] * d;
         L1 += t[1] * d;
         Nv += Vj * g * d;
-        lc += Vj * lapk;
+        if (lap) lc += Vj * lapk;
         const double lr2 = Vj * sph_lap_visc_kc(&kci, r) * r2;
         fill += Vj * wk;
         tr += lr2;
@@ -479,11 +481,15 @@ static void phase_kinematics(hearth_scene *s) {
     /* one h for all and no periodic axis: the 2D loop's vector copy (kinematics_one_2d) */
     int fast2 = dim == 2 && !st->cells.anyper;
     for (int i = 1; i < n && fast2; i++) fast2 = st->h[i] == st->h[0];
+    const int lap = s->def.sph.surface_tension > 0; /* st->lapC's one reader (sph_forces) */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        if (fast2) {
-            if (wb) kinematics_one_2d(s, &c, i, wb);
-            else kinematics_one_2d(s, &c, i, NULL);
+        if (fast2 && lap) {
+            if (wb) kinematics_one_2d(s, &c, i, wb, 1);
+            else kinematics_one_2d(s, &c, i, NULL, 1);
+        } else if (fast2) {
+            if (wb) kinematics_one_2d(s, &c, i, wb, 0);
+            else kinematics_one_2d(s, &c, i, NULL, 0);
         } else if (dim == 2) {
             if (wb) kinematics_one(s, &c, i, 2, wb);
             else kinematics_one(s, &c, i, 2, NULL);
