@@ -479,7 +479,7 @@ static void phase_kinematics(hearth_scene *s) {
     double *wb = st->pair_ok ? st->pairc + (size_t)dim * st->nl.off[n] : NULL;
     /* one copy of the loop per dimension: the kernels' dim is a constant in each */
     /* one h for all and no periodic axis: the 2D loop's vector copy (kinematics_one_2d) */
-    int fast2 = dim == 2 && !st->cells.anyper;
+    int fast2 = sph_fast_paths && dim == 2 && !st->cells.anyper;
     for (int i = 1; i < n && fast2; i++) fast2 = st->h[i] == st->h[0];
     const int lap = s->def.sph.surface_tension > 0; /* st->lapC's one reader (sph_forces) */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)

@@ -349,7 +349,7 @@ void sph_forces(hearth_scene *s, double dt) {
         const int *mir = st->pairm;
         long pairs = 0;
         int bad = 0;
-        int uni2 = dim == 2; /* one h for all in 2D: pairs_once_2d */
+        int uni2 = sph_fast_paths && dim == 2; /* one h for all in 2D: pairs_once_2d */
         for (int i = 1; i < n && uni2; i++) uni2 = st->h[i] == st->h[0];
 #pragma omp parallel for schedule(static) reduction(+ : pairs, bad) if (n >= SCENE_PARALLEL_MIN)
         for (int i = 0; i < n; i++) {

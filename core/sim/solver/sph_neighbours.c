@@ -13,6 +13,8 @@
 #include <omp.h>
 #endif
 
+int sph_fast_paths = 1;
+
 hearth_status sph_cells_setup(sph_cells *c, int dim, const double lo[3], const double hi[3], double cell,
                               const int periodic[3], hearth_error *err) {
     if (!(cell > 0) || !isfinite(cell)) return err_set(err, HEARTH_ERR_PARAM, "sph: cell size must be > 0 m, got %g", cell);
@@ -259,7 +261,7 @@ hearth_status sph_nlist_build(sph_nlist *nl, const sph_cells *c, const double *x
         nl->nchunk = T;
     }
     /* one h for all (the step's usual case): the walk reads no h_j */
-    int uni = h != NULL;
+    int uni = h != NULL && sph_fast_paths;
     for (int i = 1; i < n && uni; i++) uni = h[i] == h[0];
     for (int t = 0; t < T; t++) {
         nl->chunk[t].next = (int)((long)n * t / T);
