@@ -373,14 +373,15 @@ static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
  * neighbours (it needs only the densities too) the moments of eq. 3.8's
  * renormalisation into st->vc (sph_viscous_factor, sph_viscosity.c). */
 static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s, const sph_cols *c, int i,
-                                                                  const int dim, double *wb) {
+                                                                  const int dim, double *wb, const int uni,
+                                                                  const int lap) {
     struct sph_state *st = s->sph;
     const double *x = c->x, *v = c->v, *m = c->m;
     const int *off = st->nl.off, *nb = st->nl.j;
     /* eq. 3.28 sums over every j including i itself: without the self
      * term the Laplacian is positive everywhere and eq. 3.30 pushes the
      * surface outward (a square drop blew apart) */
-    double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = m[i] / st->rho[i] * sph_lap_w(dim, 0, st->h[i]);
+    double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = lap ? m[i] / st->rho[i] * sph_lap_w(dim, 0, st->h[i]) : 0;
     double fill = 0, tr = 0, gm[3] = {0, 0, 0};
     /* in 2D the z rows and columns stay +0 (every z is 0; see forces_pairs in sph_forces.c) */
     const double *h = st->h, *V = st->perm, hi = h[i];
@@ -391,13 +392,14 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
         sph_disp_dim(&st->cells, dim, x + 3 * i, x + 3 * j, d);
         const double r2 = dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1];
         const double r = sqrt(r2);
-        SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
+        SPH_PAIR_KC(kcp, dim, kci, hi, uni ? hi : h[j]);
+        const sph_kc *kc = uni ? &kci : kcp; /* uni: every h_j is h_i */
         if (r <= 0) {
             if (wb) wb[k] = sph_w_kc(kc, r); /* XSPH takes the pair, as the walk does */
             continue;
         }
         double wk, dwk, lapk;
-        sph_w_dw_lap_kc(dim, kc, r, &wk, &dwk, &lapk);
+        sph_w_dw_lap_kc(dim, kc, r, &wk, &dwk, lap ? &lapk : NULL);
         if (wb) wb[k] = wk; /* W_ij for xsph_pairs_once: sph_w_kc's bits (sph_kernel_one_pass_same_bits) */
         const double Vj = V[j], g = dwk / r;
         for (int a = 0; a < dim; a++) {
@@ -405,7 +407,7 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
             for (int b = 0; b < dim; b++) L[3 * a + b] += Vj * dv * g * d[b];
             Ni[a] += Vj * g * d[a];
         }
-        lc += Vj * lapk;
+        if (lap) lc += Vj * lapk;
         /* eq. 3.8's moments for the viscous renormalisation (sph_viscous_factor) */
         const double lr2 = Vj * sph_lap_visc_kc(kc, r) * r2;
         fill += Vj * wk;
@@ -477,11 +479,13 @@ static void phase_kinematics(hearth_scene *s) {
     for (int i = 0; i < n; i++) st->perm[i] = c.m[i] / st->rho[i];
     /* W of each list entry for XSPH, after the forces' terms in st->pairc (sph_pairs_prepare) */
     double *wb = st->pair_ok ? st->pairc + (size_t)dim * st->nl.off[n] : NULL;
-    /* one copy of the loop per dimension: the kernels' dim is a constant in each */
-    /* one h for all and no periodic axis: the 2D loop's vector copy (kinematics_one_2d) */
-    int fast2 = sph_fast_paths && dim == 2 && !st->cells.anyper;
-    for (int i = 1; i < n && fast2; i++) fast2 = st->h[i] == st->h[0];
-    const int lap = s->def.sph.surface_tension > 0; /* st->lapC's one reader (sph_forces) */
+    /* one copy of the loop per dimension: the kernels' dim is a constant in each. One h for all: in 2D
+     * without a periodic axis the vector copy (kinematics_one_2d), in 3D the kernel constants i's */
+    int uni = sph_fast_paths;
+    for (int i = 1; i < n && uni; i++) uni = st->h[i] == st->h[0];
+    const int fast2 = uni && dim == 2 && !st->cells.anyper, uni3 = uni && dim == 3;
+    /* the colour field's Laplacian only for st->lapC's one reader, surface tension (sph_forces); else 0 */
+    const int lap = s->def.sph.surface_tension > 0;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         if (fast2 && lap) {
@@ -490,12 +494,15 @@ static void phase_kinematics(hearth_scene *s) {
         } else if (fast2) {
             if (wb) kinematics_one_2d(s, &c, i, wb, 0);
             else kinematics_one_2d(s, &c, i, NULL, 0);
-        } else if (dim == 2) {
-            if (wb) kinematics_one(s, &c, i, 2, wb);
-            else kinematics_one(s, &c, i, 2, NULL);
+        } else if (dim == 2) { /* (the general 2D loop: rare, so one copy, with the Laplacian) */
+            if (wb) kinematics_one(s, &c, i, 2, wb, 0, 1);
+            else kinematics_one(s, &c, i, 2, NULL, 0, 1);
+        } else if (uni3 && !lap) {
+            if (wb) kinematics_one(s, &c, i, 3, wb, 1, 0);
+            else kinematics_one(s, &c, i, 3, NULL, 1, 0);
         } else {
-            if (wb) kinematics_one(s, &c, i, 3, wb);
-            else kinematics_one(s, &c, i, 3, NULL);
+            if (wb) kinematics_one(s, &c, i, 3, wb, 0, 1);
+            else kinematics_one(s, &c, i, 3, NULL, 0, 1);
         }
     }
 }

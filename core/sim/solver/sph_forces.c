@@ -129,8 +129,8 @@ static inline __attribute__((always_inline)) void forces_pairs(const struct sph_
  * j's list lacking i): sph_forces then takes the per-particle loop, as it
  * does when the pairs written do not fill every slot. */
 static inline __attribute__((always_inline)) int pairs_once(const struct sph_state *st, const sph_cols *c, int i,
-                                                             const int dim, double av_beta, const int *mir,
-                                                             double *pc) {
+                                                             const int dim, const int uni, double av_beta,
+                                                             const int *mir, double *pc) {
     const double *x = c->x, *v = c->v, *m = c->m;
     const int *off = st->nl.off, *nb = st->nl.j;
     const double *h = st->h, *rho = st->rho, *Prr = st->perm, *mu = st->mu, *vc = st->vc;
@@ -143,7 +143,8 @@ static inline __attribute__((always_inline)) int pairs_once(const struct sph_sta
         sph_disp_dim(&st->cells, dim, x + 3 * i, x + 3 * j, d);
         const double r2 = dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1], r = sqrt(r2);
         if (!(r > 0)) return -1;
-        SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
+        SPH_PAIR_KC(kcp, dim, kci, hi, uni ? hi : h[j]);
+        const sph_kc *kc = uni ? &kci : kcp; /* uni: every h_j is h_i */
         const double hij = kc->h, rj = rho[j];
         const double g = sph_dw_kc(kc, r) / r;
         double vij[3], vd = 0;
@@ -349,13 +350,15 @@ void sph_forces(hearth_scene *s, double dt) {
         const int *mir = st->pairm;
         long pairs = 0;
         int bad = 0;
-        int uni2 = sph_fast_paths && dim == 2; /* one h for all in 2D: pairs_once_2d */
-        for (int i = 1; i < n && uni2; i++) uni2 = st->h[i] == st->h[0];
+        int uni = sph_fast_paths; /* one h for all: in 2D pairs_once_2d, in 3D i's kernel constants */
+        for (int i = 1; i < n && uni; i++) uni = st->h[i] == st->h[0];
+        const int uni2 = uni && dim == 2;
 #pragma omp parallel for schedule(static) reduction(+ : pairs, bad) if (n >= SCENE_PARALLEL_MIN)
         for (int i = 0; i < n; i++) {
             const int k = uni2 ? pairs_once_2d(st, &c, i, av_beta, mir, pc)
-                          : dim == 2 ? pairs_once(st, &c, i, 2, av_beta, mir, pc)
-                                     : pairs_once(st, &c, i, 3, av_beta, mir, pc);
+                          : dim == 2 ? pairs_once(st, &c, i, 2, 0, av_beta, mir, pc)
+                          : uni      ? pairs_once(st, &c, i, 3, 1, av_beta, mir, pc)
+                                     : pairs_once(st, &c, i, 3, 0, av_beta, mir, pc);
             if (k < 0) bad++;
             else pairs += k;
         }
