@@ -129,8 +129,8 @@ static inline __attribute__((always_inline)) void forces_pairs(const struct sph_
  * j's list lacking i): sph_forces then takes the per-particle loop, as it
  * does when the pairs written do not fill every slot. */
 static inline __attribute__((always_inline)) int pairs_once(const struct sph_state *st, const sph_cols *c, int i,
-                                                             const int dim, double av_beta, const int *mir,
-                                                             double *pc) {
+                                                             const int dim, const int uni, double av_beta,
+                                                             const int *mir, double *pc) {
     const double *x = c->x, *v = c->v, *m = c->m;
     const int *off = st->nl.off, *nb = st->nl.j;
     const double *h = st->h, *rho = st->rho, *Prr = st->perm, *mu = st->mu, *vc = st->vc;
@@ -143,7 +143,8 @@ static inline __attribute__((always_inline)) int pairs_once(const struct sph_sta
         sph_disp_dim(&st->cells, dim, x + 3 * i, x + 3 * j, d);
         const double r2 = dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1], r = sqrt(r2);
         if (!(r > 0)) return -1;
-        SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
+        SPH_PAIR_KC(kcp, dim, kci, hi, uni ? hi : h[j]);
+        const sph_kc *kc = uni ? &kci : kcp; /* uni: every h_j is h_i */
         const double hij = kc->h, rj = rho[j];
         const double g = sph_dw_kc(kc, r) / r;
         double vij[3], vd = 0;
@@ -166,6 +167,49 @@ static inline __attribute__((always_inline)) int pairs_once(const struct sph_sta
             pc[(size_t)dim * k + q] = m[j] * t - visc * vij[q];
             pc[(size_t)dim * p + q] = mi * (-Pij * g * nd + nsd * g) - viscj * nv; /* j's, as its own loop has it */
         }
+    }
+    return np;
+}
+
+/* pairs_once in 2D with one h for all (the dam break's case): the same
+ * expressions, each x, y pair in one sph_v2 (sph_state.h: the same bits
+ * lane for lane), the kernel constants i's (h_ij = h_i). The stress sums
+ * sd_q = (S_q0 d_0) + (S_q1 d_1) of both rows are taken from the rows'
+ * products transposed, each in the scalar loop's order from +0. */
+static inline __attribute__((always_inline)) int pairs_once_2d(const struct sph_state *st, const sph_cols *c, int i,
+                                                                double av_beta, const int *mir, double *pc) {
+    const double *x = c->x, *v = c->v, *m = c->m;
+    const int *off = st->nl.off, *nb = st->nl.j;
+    const double *rho = st->rho, *Prr = st->perm, *mu = st->mu, *vc = st->vc;
+    const double ri = rho[i], Pi = Prr[i], *Si = st->S + 9 * i, mui = mu[i], vci = vc[i], mi = m[i];
+    const sph_kc kci = sph_kc_of(2, st->h[i]);
+    const double hij = kci.h;
+    const sph_v2 xi = sph_ld2(x + 3 * i), vi = sph_ld2(v + 3 * i), S0i = sph_ld2(Si), S1i = sph_ld2(Si + 3);
+    const sph_v2 zero = {0, 0};
+    int np = 0;
+    for (int k = off[i + 1] - 1; k >= off[i] && nb[k] > i; k--, np++) {
+        const int j = nb[k], p = mir[k];
+        const sph_v2 d = xi - sph_ld2(x + 3 * j), dd = d * d;
+        const double r2 = dd[0] + dd[1], r = sqrt(r2);
+        if (!(r > 0)) return -1;
+        const double rj = rho[j];
+        const double g = sph_dw_kc(&kci, r) / r;
+        const sph_v2 vij = vi - sph_ld2(v + 3 * j), vdd = vij * d;
+        const double vd = 0 + vdd[0] + vdd[1];
+        double Pij = Pi + Prr[j]; /* eq. 3.18 */
+        if (av_beta > 0 && vd < 0) { /* eq. 3.41, with mu_ij of eq. 3.37 */
+            const double muij = hij * vd / (r2 + 0.01 * hij * hij);
+            Pij += av_beta * muij * muij / (0.5 * (ri + rj));
+        }
+        const double *Sj = st->S + 9 * j, lv = sph_lap_visc_kc(&kci, r);
+        const double mu2 = 0.5 * (mui + mu[j]), rr = rj * ri, vc2 = 0.5 * (vci + vc[j]);
+        const double visc = mu2 * m[j] / rr * lv * vc2, viscj = mu2 * mi / rr * lv * vc2; /* as forces_pairs' */
+        const sph_v2 a0 = (S0i + sph_ld2(Sj)) * d, a1 = (S1i + sph_ld2(Sj + 3)) * d; /* row q's two products */
+        const sph_v2 sd = (zero + (sph_v2){a0[0], a1[0]}) + (sph_v2){a0[1], a1[1]};
+        const sph_v2 t = -Pij * g * d + sd * g, nd = -d, nsd = -sd, nv = -vij;
+        const sph_v2 ti = m[j] * t - visc * vij, tj = mi * (-Pij * g * nd + nsd * g) - viscj * nv;
+        memcpy(pc + 2 * (size_t)k, &ti, sizeof ti);
+        memcpy(pc + 2 * (size_t)p, &tj, sizeof tj); /* j's, as its own loop has it */
     }
     return np;
 }
@@ -250,7 +294,11 @@ static inline __attribute__((always_inline)) void forces_one(hearth_scene *s, co
     double wn[3] = {0, 0, 0}, da = 0, drag = 0;
     const int wall = !pc && flags && !(flags[i] & PF_FIXED) && sph_wall_frame(s, i, wn, &da);
     const double dah = fmax(da, 0.5 * st->sp[i]);
-    if (pc) {
+    if (pc && dim == 2) { /* the x, y pair of each slot in one sph_v2: the same sums lane for lane */
+        sph_v2 av = {a[0], a[1]};
+        for (int k = st->nl.off[i]; k < st->nl.off[i + 1]; k++) av += sph_ld2(pc + 2 * (size_t)k);
+        a[0] = av[0], a[1] = av[1];
+    } else if (pc) {
         for (int k = st->nl.off[i]; k < st->nl.off[i + 1]; k++)
             for (int q = 0; q < dim; q++) a[q] += pc[(size_t)dim * k + q];
     } else if (eps_as > 0) {
@@ -302,10 +350,15 @@ void sph_forces(hearth_scene *s, double dt) {
         const int *mir = st->pairm;
         long pairs = 0;
         int bad = 0;
+        int uni = sph_fast_paths; /* one h for all: in 2D pairs_once_2d, in 3D i's kernel constants */
+        for (int i = 1; i < n && uni; i++) uni = st->h[i] == st->h[0];
+        const int uni2 = uni && dim == 2;
 #pragma omp parallel for schedule(static) reduction(+ : pairs, bad) if (n >= SCENE_PARALLEL_MIN)
         for (int i = 0; i < n; i++) {
-            const int k = dim == 2 ? pairs_once(st, &c, i, 2, av_beta, mir, pc)
-                                  : pairs_once(st, &c, i, 3, av_beta, mir, pc);
+            const int k = uni2 ? pairs_once_2d(st, &c, i, av_beta, mir, pc)
+                          : dim == 2 ? pairs_once(st, &c, i, 2, 0, av_beta, mir, pc)
+                          : uni      ? pairs_once(st, &c, i, 3, 1, av_beta, mir, pc)
+                                     : pairs_once(st, &c, i, 3, 0, av_beta, mir, pc);
             if (k < 0) bad++;
             else pairs += k;
         }

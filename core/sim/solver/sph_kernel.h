@@ -87,11 +87,13 @@ static inline double sph_lap_w(int dim, double r, double h) {
 }
 
 /* W, dW/dr and the Laplacian of W at one r > 0, as sph_w_kc, sph_dw_kc and
- * sph_lap_w_kc give them (the same expressions), with one test of q. */
+ * sph_lap_w_kc give them (the same expressions), with one test of q; lap
+ * may be NULL (a loop that needs no Laplacian then computes none). */
 static inline void sph_w_dw_lap_kc(int dim, const sph_kc *c, double r, double *w, double *dw, double *lap) {
     const double q = 2.0 * r / c->h;
     if (q >= 2.0) {
-        *w = *dw = *lap = 0.0;
+        *w = *dw = 0.0;
+        if (lap) *lap = 0.0;
         return;
     }
     double fw, f1, f2;
@@ -107,7 +109,7 @@ static inline void sph_w_dw_lap_kc(int dim, const sph_kc *c, double r, double *w
     const double sg = c->sg, k = c->k;
     *w = sg * fw;
     *dw = sg * f1 * 2.0 / c->h;
-    *lap = r <= 0 ? -3.0 * dim * sg * k * k : sg * (f2 * k * k + (dim - 1) * f1 * k / r);
+    if (lap) *lap = r <= 0 ? -3.0 * dim * sg * k * k : sg * (f2 * k * k + (dim - 1) * f1 * k / r);
 }
 
 /* Laplacian of the viscosity kernel, eq. 3.8 (>= 0 inside the support). */

@@ -13,6 +13,8 @@
 #include <omp.h>
 #endif
 
+int sph_fast_paths = 1;
+
 hearth_status sph_cells_setup(sph_cells *c, int dim, const double lo[3], const double hi[3], double cell,
                               const int periodic[3], hearth_error *err) {
     if (!(cell > 0) || !isfinite(cell)) return err_set(err, HEARTH_ERR_PARAM, "sph: cell size must be > 0 m, got %g", cell);
@@ -128,51 +130,75 @@ static int stencil(const sph_cells *c, const double *xi, int lo[27], int hi[27],
     return nr;
 }
 
+/* One candidate j of particle i (walk_dim): into out and, with rho, into
+ * the density sum r when within h_ij. */
+static inline __attribute__((always_inline)) void candidate(const sph_cells *c, const int dim, const int withh,
+                                                             const int withrho, const int anyper, const int uni,
+                                                             const double *x, const double *xi, int j,
+                                                             const double *h, double h0, double hi_, double hi2,
+                                                             const sph_kc *kci, const double *m, double *r, int *out,
+                                                             int *cnt) {
+    double d[3];
+    if (anyper) sph_disp(c, xi, x + 3 * j, d);
+    else d[0] = xi[0] - x[3 * j], d[1] = xi[1] - x[3 * j + 1], d[2] = dim == 3 ? xi[2] - x[3 * j + 2] : 0;
+    const double r2d = dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1];
+    /* uni: every h is h_i, so h_ij = (h_i + h_j) / 2 is h_i exactly and its square is hi2 */
+    const double hj = uni ? hi_ : withh ? h[j] : h0;
+    const double hij = uni ? hi_ : withh ? 0.5 * (hi_ + hj) : h0;
+    if (r2d < (uni ? hi2 : hij * hij)) {
+        out[(*cnt)++] = j;
+        if (withrho) {
+            if (uni) *r += m[j] * sph_w_kc(kci, sqrt(r2d));
+            else {
+                SPH_PAIR_KC(kc, dim, *kci, hi_, hj);
+                *r += m[j] * sph_w_kc(kc, sqrt(r2d));
+            }
+        }
+    }
+}
+
 /* Particle i's neighbours into out (room for the stencil's candidates), in
  * stencil order; with rho, its density by summation (eq. 3.13) over them in
  * that order. Returns their count. dim is a constant in each copy (walk);
  * in 2D z is left out of r^2 (every z is 0, and + 0 changes no sum of
  * squares), and pairs with h_j = h_i take i's kernel constants (the same
  * bits: sph_kernel.h). `fast`, a constant too: no periodic axis, and h, m
- * and rho given (the step's case); the rest is read as the arguments say. */
+ * and rho given (the step's case); the rest is read as the arguments say.
+ * `uni` (with fast): every particle has the same h, so no h_j is read. The
+ * range holding i itself is walked in two parts around it, which skips
+ * the self test per candidate and keeps the order. */
 static inline __attribute__((always_inline)) int walk_dim(const sph_cells *c, const int dim, const int fast,
-                                                          const double *x, int i, const double *h, double h0,
-                                                          const double *m, double *rho, const int *lo, const int *hi,
-                                                          int nr, int *out) {
+                                                          const int uni, const double *x, int i, const double *h,
+                                                          double h0, const double *m, double *rho, const int *lo,
+                                                          const int *hi, int nr, int *out) {
     const double *xi = x + 3 * i;
     const int withh = fast || h, withrho = fast || rho, anyper = !fast && c->anyper;
-    const double hi_ = withh ? h[i] : h0;
+    const double hi_ = withh ? h[i] : h0, hi2 = hi_ * hi_;
     const sph_kc kci = sph_kc_of(dim, hi_);
     double r = withrho ? m[i] * sph_w_kc(&kci, 0) : 0;
     int cnt = 0;
-    for (int q = 0; q < nr; q++)
-        for (int j = lo[q]; j < hi[q]; j++) {
-            if (j == i) continue;
-            double d[3];
-            if (anyper) sph_disp(c, xi, x + 3 * j, d);
-            else d[0] = xi[0] - x[3 * j], d[1] = xi[1] - x[3 * j + 1], d[2] = xi[2] - x[3 * j + 2];
-            const double r2d = dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1];
-            const double hj = withh ? h[j] : h0;
-            const double hij = withh ? 0.5 * (hi_ + hj) : h0;
-            if (r2d < hij * hij) {
-                out[cnt++] = j;
-                if (withrho) {
-                    SPH_PAIR_KC(kc, dim, kci, hi_, hj);
-                    r += m[j] * sph_w_kc(kc, sqrt(r2d));
-                }
-            }
-        }
+    for (int q = 0; q < nr; q++) {
+        const int e = hi[q], self = i >= lo[q] && i < e ? i : e;
+        for (int j = lo[q]; j < self; j++)
+            candidate(c, dim, withh, withrho, anyper, uni, x, xi, j, h, h0, hi_, hi2, &kci, m, &r, out, &cnt);
+        for (int j = self + 1; j < e; j++)
+            candidate(c, dim, withh, withrho, anyper, uni, x, xi, j, h, h0, hi_, hi2, &kci, m, &r, out, &cnt);
+    }
     if (withrho) rho[i] = r;
     return cnt;
 }
 
 static int walk(const sph_cells *c, const double *x, int i, const double *h, double h0, const double *m, double *rho,
-                const int *lo, const int *hi, int nr, int *out) {
-    if (!c->anyper && h && m && rho)
-        return c->dim == 2 ? walk_dim(c, 2, 1, x, i, h, h0, m, rho, lo, hi, nr, out)
-                           : walk_dim(c, 3, 1, x, i, h, h0, m, rho, lo, hi, nr, out);
-    return c->dim == 2 ? walk_dim(c, 2, 0, x, i, h, h0, m, rho, lo, hi, nr, out)
-                       : walk_dim(c, 3, 0, x, i, h, h0, m, rho, lo, hi, nr, out);
+                const int uni, const int *lo, const int *hi, int nr, int *out) {
+    if (!c->anyper && h && m && rho) {
+        if (uni)
+            return c->dim == 2 ? walk_dim(c, 2, 1, 1, x, i, h, h0, m, rho, lo, hi, nr, out)
+                               : walk_dim(c, 3, 1, 1, x, i, h, h0, m, rho, lo, hi, nr, out);
+        return c->dim == 2 ? walk_dim(c, 2, 1, 0, x, i, h, h0, m, rho, lo, hi, nr, out)
+                           : walk_dim(c, 3, 1, 0, x, i, h, h0, m, rho, lo, hi, nr, out);
+    }
+    return c->dim == 2 ? walk_dim(c, 2, 0, 0, x, i, h, h0, m, rho, lo, hi, nr, out)
+                       : walk_dim(c, 3, 0, 0, x, i, h, h0, m, rho, lo, hi, nr, out);
 }
 
 static hearth_status nlist_reserve(sph_nlist *nl, int n, size_t total, hearth_error *err) {
@@ -234,6 +260,9 @@ hearth_status sph_nlist_build(sph_nlist *nl, const sph_cells *c, const double *x
         nl->chunk = ch;
         nl->nchunk = T;
     }
+    /* one h for all (the step's usual case): the walk reads no h_j */
+    int uni = h != NULL && sph_fast_paths;
+    for (int i = 1; i < n && uni; i++) uni = h[i] == h[0];
     for (int t = 0; t < T; t++) {
         nl->chunk[t].next = (int)((long)n * t / T);
         nl->chunk[t].used = 0;
@@ -254,7 +283,7 @@ hearth_status sph_nlist_build(sph_nlist *nl, const sph_cells *c, const double *x
                     stuck++;
                     break;
                 }
-                const int k = walk(c, x, i, h, h0, m, rho, lo, hi, nr, buf + ch->used);
+                const int k = walk(c, x, i, h, h0, m, rho, uni, lo, hi, nr, buf + ch->used);
                 nl->off[i + 1] = k;
                 ch->used += (size_t)k;
             }

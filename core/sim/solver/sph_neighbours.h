@@ -49,6 +49,13 @@ typedef struct sph_nlist {
     int nchunk;
 } sph_nlist;
 
+/// 1 (the default): the loops written for one h (the neighbour walk here;
+/// phase_kinematics in sph.c and the pair terms in sph_forces.c, in 2D as
+/// two-lane vectors) take those copies when every h is the same; 0 sends
+/// every step through the general loops. The copies give the same bits;
+/// `sph_fast_paths_same_bits` switches them off to check it.
+extern int sph_fast_paths;
+
 /// Set up the cell table for box [lo, hi] and cell edge `cell`. Periodic axes
 /// need at least 3 cells. Reuses storage.
 hearth_status sph_cells_setup(sph_cells *c, int dim, const double lo[3], const double hi[3], double cell,

@@ -9,6 +9,8 @@
 #include "sph.h"
 #include "sph_neighbours.h"
 
+#include <string.h>
+
 #include "physics_constants.h"
 
 /* A fixed body's prescribed rigid motion (sph_walls.c): velocity and omega
@@ -84,6 +86,18 @@ static inline sph_cols sph_cols_of(hearth_scene *s) {
         .T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL,
         .Tmax = ps->enabled & (1u << PC_TEMP_MAX) ? pcold(ps, PC_TEMP_MAX) : NULL,
     };
+}
+
+/* Two doubles as one value (GCC and Clang vector extension; plain scalar
+ * code where the target has no such registers): the 2D loops' x, y pairs.
+ * Each lane's product, sum or difference is the scalar operation's, and
+ * the build is ISO C, which fuses no multiply-add, so a loop written with
+ * them gives the scalar loop's bits when its expressions are the same. */
+typedef double sph_v2 __attribute__((vector_size(16)));
+static inline sph_v2 sph_ld2(const double *p) {
+    sph_v2 r;
+    memcpy(&r, p, sizeof r);
+    return r;
 }
 
 /// The scene's SPH state, made on first use (a material added, a wall's
