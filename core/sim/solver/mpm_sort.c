@@ -257,7 +257,7 @@ static int sort_team(hearth_scene *s, int n, int T, hearth_status *st, hearth_er
         }
         /* the totals become block starts, each chunk from its offset; its particle blocks listed */
         if (!*st) {
-#pragma omp for schedule(static)
+#pragma omp for schedule(static) nowait
             for (int c = 0; c < T; c++) {
                 const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
                 int run = cpart[c], k = cblk[c];
@@ -268,8 +268,9 @@ static int sort_team(hearth_scene *s, int n, int T, hearth_status *st, hearth_er
                     if (run > start) m->pb[k++] = (pblock){b, start, run};
                 }
             }
-            if (unsorted) {
-#pragma omp for schedule(static)
+            if (unsorted) { /* every block's start is needed: wait for the other chunks */
+#pragma omp barrier
+#pragma omp for schedule(static) nowait
                 for (int c = 0; c < T; c++) {
                     int *h = hist + (size_t)c * NB;
                     const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
