@@ -195,7 +195,7 @@ static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
  * the serial sort's place, so the order is the same bits for any T
  * (`determinism_threads_*`). The block starts, the particle blocks and the
  * marks are integers from the same counts, so they are the serial sort's too.
- * Three barriers (four when the keys are out of order), where a region for
+ * Two barriers (three when the keys are out of order), where a region for
  * the count and two for the block lists took eleven synchronisations (three
  * starts and ends, five barriers inside): with OMP_WAIT_POLICY=passive
  * (main.c) each wakes a sleeping thread, a futex round trip, and in the 2D
@@ -207,9 +207,11 @@ static int sort_team(hearth_scene *s, int n, int T, hearth_status *st, hearth_er
     mpm_state *m = s->mpm;
     const int NB = m->nblocks, *keys = m->keys, nb1 = g->nb[1], nb2 = g->nb[2];
     int *order = m->order, *counts = m->counts, *hist = m->hist, unsorted = 0;
-    /* per chunk of the block table: its particles, its particle blocks; then their exclusive prefixes */
+    counts[0] = 0;
+    /* per chunk of the block table (at c + 1): its particles and its particle blocks */
     int cpart[SORT_CHUNKS_MAX + 1] = {0}, cblk[SORT_CHUNKS_MAX + 1] = {0};
     *st = HEARTH_OK;
+    const int pbcap = m->pbcap; /* read once: the single below changes m->pbcap while others may test it */
 #pragma omp parallel num_threads(T)
     {
         /* each chunk of particles counts its own per block */
@@ -223,7 +225,8 @@ static int sort_team(hearth_scene *s, int n, int T, hearth_status *st, hearth_er
                 unsorted |= i > 0 && keys[i - 1] > keys[i];
             }
         }
-        /* per block: its particles in earlier chunks (hist, exclusive) and in all (counts[b + 1], for now) */
+        /* per block: its particles in earlier chunks (hist, exclusive) and in all (counts[b + 1]: in
+         * this path counts keeps the blocks' totals, which nothing after the sort reads) */
 #pragma omp for schedule(static)
         for (int c = 0; c < T; c++) {
             const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
@@ -243,42 +246,48 @@ static int sort_team(hearth_scene *s, int n, int T, hearth_status *st, hearth_er
             cpart[c + 1] = np;
             cblk[c + 1] = nk;
         }
-        /* the marks read the block totals (no thread writes counts until the single's barrier) */
-#pragma omp for schedule(static) nowait
-        for (int bx = 0; bx < g->nb[0]; bx++)
-            for (int by = 0; by < nb1; by++)
-                for (int bz = 0; bz < nb2; bz++) m->mark[grid_block_id(g, bx, by, bz)] = touched(g, counts, 1, bx, by, bz);
+        /* Every thread takes the chunks' offsets (T numbers); a step that finds more particle blocks
+         * than ever grows their lists first (every thread sees the same need, so all or none meet the single). */
+        int poff[SORT_CHUNKS_MAX + 1], koff[SORT_CHUNKS_MAX + 1];
+        poff[0] = koff[0] = 0;
+        for (int c = 0; c < T; c++) poff[c + 1] = poff[c] + cpart[c + 1], koff[c + 1] = koff[c] + cblk[c + 1];
+        if (koff[T] > pbcap) {
 #pragma omp single
-        {
-            for (int c = 0; c < T; c++) cpart[c + 1] += cpart[c], cblk[c + 1] += cblk[c];
-            *st = pb_reserve(m, cblk[T], err);
-            if (!*st) m->npb = cblk[T];
-            counts[0] = 0;
+            *st = pb_reserve(m, koff[T], err);
         }
-        /* the totals become block starts, each chunk from its offset; its particle blocks listed */
         if (!*st) {
+            /* The marks and the particle blocks only read the totals, so neither waits for the other. */
+#pragma omp for schedule(static) nowait
+            for (int bx = 0; bx < g->nb[0]; bx++)
+                for (int by = 0; by < nb1; by++)
+                    for (int bz = 0; bz < nb2; bz++) m->mark[grid_block_id(g, bx, by, bz)] = touched(g, counts, 1, bx, by, bz);
+            /* each chunk's blocks from its offset; out of order, each particle chunk's places in a
+             * block (hist) also get the block's start, so the order below needs nothing else */
 #pragma omp for schedule(static) nowait
             for (int c = 0; c < T; c++) {
                 const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
-                int run = cpart[c], k = cblk[c];
+                int run = poff[c], k = koff[c];
                 for (int b = lo; b < hi; b++) {
                     const int start = run;
                     run += counts[b + 1];
-                    counts[b + 1] = run;
                     if (run > start) m->pb[k++] = (pblock){b, start, run};
+                    if (unsorted)
+                        for (int q = 0; q < T; q++) hist[(size_t)q * NB + b] += start;
                 }
             }
-            if (unsorted) { /* every block's start is needed: wait for the other chunks */
+            if (unsorted) { /* every chunk's places: wait for the other threads' blocks */
 #pragma omp barrier
 #pragma omp for schedule(static) nowait
                 for (int c = 0; c < T; c++) {
                     int *h = hist + (size_t)c * NB;
                     const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
-                    for (int i = lo; i < hi; i++) order[counts[keys[i]] + h[keys[i]]++] = i;
+                    for (int i = lo; i < hi; i++) order[h[keys[i]]++] = i;
                 }
             }
         }
     }
+    if (!*st) m->npb = 0;
+    for (int c = 0; c < T && !*st; c++) m->npb += cblk[c + 1];
     return unsorted;
 }
 
