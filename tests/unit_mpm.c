@@ -795,6 +795,40 @@ static void antigravity(void *ud, double t, const double x[3], double acc[3]) {
     acc[1] = *(const double *)ud;
 }
 
+/* The one-region step (mpm.c's step_team) with every part of the grid
+ * update it carries: damping, a thread-safe body force, and a sticky
+ * collider's ghost and mark loops between the update and G2P. 1 vs 2
+ * threads: bit-identical particle states. */
+TEST(determinism_threads_sticky_damped) {
+    uint64_t h[2];
+    for (int t = 1; t <= 2; t++) {
+        hearth_set_threads(t);
+        hearth_scene_def d = hearth_default_scene_def();
+        d.dim = 2;
+        d.dx = 1.0 / 128;
+        d.damping = 3.0;
+        hearth_scene *s = fx_scene_def(&d);
+        const int m = fx_elastic(s, 5e4, 0.3, 1000);
+        const double c[3] = {0.5, 0.45, 0}, hh[3] = {0.15, 0.1, 0}, v[3] = {0.3, -1.5, 0};
+        CHECK(fx_box(s, m, c, hh, 4, v) >= SCENE_PARALLEL_MIN); /* so the step really runs on two threads */
+        const double fc[3] = {0.5, 0.25, 0}, fh[3] = {0.4, 0.1, 0}; /* its top touches the block from the start */
+        CHECK(fx_box_collider(s, fc, fh, HEARTH_STICKY, 0.2) == 0);
+        double up = 3.0; /* a third of gravity off: a body force that runs on every thread */
+        hearth_scene_set_body_force(s, antigravity, &up);
+        hearth_error err;
+        CHECK(hearth_scene_step(s, 80, &err) == HEARTH_OK);
+        CHECK(s->mpm->sticky_faces == 1 && !s->body_force_serial);
+        h[t - 1] = hearth_scene_hash(s);
+        hearth_stats st;
+        hearth_scene_stats(s, &st);
+        printf("  %d thread(s): %d particles, t = %.5g s, fastest %.5g m/s, hash %016llx\n", t, st.particles, st.t,
+               st.max_speed, (unsigned long long)h[t - 1]);
+        hearth_scene_destroy(s);
+    }
+    hearth_set_threads(0);
+    CHECK(h[0] == h[1]);
+}
+
 /* A body force field adds to gravity: one that cancels it leaves a block at rest. */
 TEST(body_force) {
     hearth_scene *s = fx_scene(2, 1.0 / 32, 0, 1);
@@ -1302,6 +1336,6 @@ TEST(mpm_periodic_refusals) {
 TEST_MAIN(T(bspline_weights), T(transfer_conservation_2d), T(transfer_conservation_3d), T(transfer_pic_dissipates), T(rotating_disc), T(free_fall),
           T(vibrating_bar), T(determinism_threads), T(checkpoint_restore), T(guard_nan_plugin), T(guard_plugin_error),
           T(guard_cfl_and_rollback), T(colliders_contact), T(probe_fields), T(stress_tensor_components), T(scene_bad_input), T(alloc_failure_paths),
-          T(particles_optional_columns), T(body_force), T(guard_collider_drive), T(grip_holds_pulled_strip),
+          T(particles_optional_columns), T(body_force), T(determinism_threads_sticky_damped), T(guard_collider_drive), T(grip_holds_pulled_strip),
           T(mpm_state_owned_by_solver), T(couette_lid_on_node_row), T(grip_cantilever_clamped_at_face), T(column_base_stress),
           T(mpm_periodic_shear_wave), T(mpm_periodic_conserves_momentum), T(mpm_periodic_refusals))

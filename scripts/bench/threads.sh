@@ -15,6 +15,12 @@
 # The machine-independent side of the same question, the instructions the
 # step leaves outside parallel regions, is report.sh's serial-share rows.
 # Uses build/release/app/hearth (made when missing) unless --hearth is given.
+# The runs get OMP_WAIT_POLICY=passive, what `hearth` itself sets (main.c):
+# every region start and barrier then wakes a sleeping thread. GOMP_SPINCOUNT
+# from the environment passes through (libgomp spins that many times before it
+# sleeps; it overrides the policy's 0), to compare a bounded spin on a quiet
+# machine; the header line names it. The synchronisations a step makes, which
+# that cost multiplies, are threads_sync.sh's (callgrind: any machine).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 pairs=5 hearth="" quick=0
@@ -23,7 +29,7 @@ while [ $# -gt 0 ]; do
     --pairs) pairs=$2; shift ;;
     --hearth) hearth=$2; shift ;;
     --quick) quick=1 ;;
-    -h | --help) sed -n 2,16p "$0"; exit 0 ;;
+    -h | --help) sed -n 2,23p "$0"; exit 0 ;;
     *) echo "threads.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
     shift
@@ -63,8 +69,9 @@ def cpu_busy():
     ch = resource.getrusage(resource.RUSAGE_CHILDREN)
     return (sum(f) - f[3] - f[4]) / hz, ch.ru_utime + ch.ru_stime
 
-print(f"threads.sh: {hearth}, {os.cpu_count()} cores, {pairs} interleaved pairs a size; load average "
-      f"{os.getloadavg()[0]:.1f} at the start", flush=True)
+spin = f", GOMP_SPINCOUNT={E['GOMP_SPINCOUNT']}" if E.get("GOMP_SPINCOUNT") else ""
+print(f"threads.sh: {hearth}, {os.cpu_count()} cores, {pairs} interleaved pairs a size, OMP_WAIT_POLICY=passive{spin}; "
+      f"load average {os.getloadavg()[0]:.1f} at the start", flush=True)
 print("| dim | cells | particles | steps | 2 threads / 1 (median) | min-max | pairs | other processes' CPU (cores) |")
 print("|---:|---:|---:|---:|---:|---:|---|---:|")
 busy = False

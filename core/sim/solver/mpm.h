@@ -46,7 +46,7 @@ typedef struct mpm_state {
     int scratch_cap;
     /* per block of the box (nblocks as when made: the grid never changes size) */
     int nblocks;
-    int *counts;            /* nblocks + 1 */
+    int *counts;            /* nblocks + 1: the sort's per-block counts (block starts, or totals after sort_team) */
     unsigned char *mark;    /* nblocks */
     /* the particle blocks of this step, pbcap long */
     pblock *pb;

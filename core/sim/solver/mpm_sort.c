@@ -90,72 +90,63 @@ static int sort_chunks(int n) {
 #endif
 }
 
-/* Stable counting sort of the particles by keys: order[j] is the particle
- * that goes to place j, and counts[b] becomes the first place of block b
- * (counts[nblocks] = n). Returns 0 when the keys were already in order
- * (order untouched). With T chunks of particles, chunk c counts its own
- * particles per block (hist, T x nblocks); a particle's place is its block's
- * start, plus the block's particles in earlier chunks, plus those before it
- * in its own chunk: the serial sort's place, so the order is the same bits
- * for any T (`determinism_threads_*`). */
-static int sort_counting(mpm_state *m, int n, int T) {
+/* Stable counting sort of the particles by keys, on one thread: order[j] is
+ * the particle that goes to place j, and counts[b] becomes the first place of
+ * block b (counts[nblocks] = n). Returns 0 when the keys were already in
+ * order (order untouched). sort_team does the same in chunks. */
+static int sort_counting(mpm_state *m, int n) {
     const int NB = m->nblocks;
     const int *keys = m->keys;
     int *order = m->order, *counts = m->counts, unsorted = 0;
-    if (T <= 1) {
-        memset(counts, 0, sizeof(int) * ((size_t)NB + 1));
-        for (int i = 0; i < n; i++) {
-            counts[keys[i] + 1]++;
-            unsorted |= i > 0 && keys[i - 1] > keys[i];
-        }
-        for (int b = 0; b < NB; b++) counts[b + 1] += counts[b];
-        if (!unsorted) return 0;
-        for (int i = 0; i < n; i++) order[counts[keys[i]]++] = i;
-        /* counts[b] advanced to block b's end, the start of b + 1 */
-        memmove(counts + 1, counts, sizeof(int) * (size_t)NB);
-        counts[0] = 0;
-        return 1;
+    memset(counts, 0, sizeof(int) * ((size_t)NB + 1));
+    for (int i = 0; i < n; i++) {
+        counts[keys[i] + 1]++;
+        unsorted |= i > 0 && keys[i - 1] > keys[i];
     }
-    int *hist = m->hist;
-#pragma omp parallel num_threads(T)
-    {
-#pragma omp for schedule(static) reduction(| : unsorted)
-        for (int c = 0; c < T; c++) {
-            int *h = hist + (size_t)c * NB;
-            memset(h, 0, sizeof(int) * (size_t)NB);
-            const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
-            for (int i = lo; i < hi; i++) {
-                h[keys[i]]++;
-                unsorted |= i > 0 && keys[i - 1] > keys[i];
-            }
-        }
-        /* per block: its particles in earlier chunks (hist, exclusive) and in all (counts) */
-#pragma omp for schedule(static)
-        for (int b = 0; b < NB; b++) {
-            int sum = 0;
-            for (int c = 0; c < T; c++) {
-                int *h = hist + (size_t)c * NB + b;
-                const int k = *h;
-                *h = sum;
-                sum += k;
-            }
-            counts[b + 1] = sum;
-        }
-#pragma omp single
-        {
-            counts[0] = 0;
-            for (int b = 0; b < NB; b++) counts[b + 1] += counts[b];
-        }
-        if (unsorted) {
-#pragma omp for schedule(static)
-            for (int c = 0; c < T; c++) {
-                int *h = hist + (size_t)c * NB;
-                const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
-                for (int i = lo; i < hi; i++) order[counts[keys[i]] + h[keys[i]]++] = i;
-            }
-        }
+    for (int b = 0; b < NB; b++) counts[b + 1] += counts[b];
+    if (!unsorted) return 0;
+    for (int i = 0; i < n; i++) order[counts[keys[i]]++] = i;
+    /* counts[b] advanced to block b's end, the start of b + 1 */
+    memmove(counts + 1, counts, sizeof(int) * (size_t)NB);
+    counts[0] = 0;
+    return 1;
+}
+
+/* The colour lists, in block order within a colour: O(particle blocks), serial. */
+static void sort_colours(hearth_scene *s) {
+    const grid *g = &s->g;
+    mpm_state *m = s->mpm;
+    int ncolour[8] = {0};
+    for (int k = 0; k < m->npb; k++) {
+        int c[3];
+        grid_block_coords(g, m->pb[k].block, c);
+        ncolour[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++;
     }
-    return unsorted;
+    m->colour_start[0] = 0;
+    for (int k = 0; k < 8; k++) m->colour_start[k + 1] = m->colour_start[k] + ncolour[k];
+    int fill[8];
+    memcpy(fill, m->colour_start, sizeof fill);
+    for (int k = 0; k < m->npb; k++) {
+        int c[3];
+        grid_block_coords(g, m->pb[k].block, c);
+        m->colour_pb[fill[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++] = k;
+    }
+}
+
+/* Whether block (bx, by, bz) or its -1 neighbour along some axes holds
+ * particles: the blocks a particle block's tile touches. counts holds the
+ * blocks' starts (totals 0: block id holds counts[id + 1] - counts[id]) or,
+ * inside sort_team, their totals at counts[id + 1] (totals 1). */
+static inline unsigned char touched(const grid *g, const int *counts, int totals, int bx, int by, int bz) {
+    const int nz = g->dim == 3;
+    unsigned char hit = 0;
+    for (int dx = 0; dx <= (bx > 0); dx++)
+        for (int dy = 0; dy <= (by > 0); dy++)
+            for (int dz = 0; dz <= (nz && bz > 0); dz++) {
+                const int id = grid_block_id(g, bx - dx, by - dy, bz - dz);
+                hit |= counts[id + 1] > (totals ? 0 : counts[id]);
+            }
+    return hit;
 }
 
 /* The particle blocks (runs of one block, in block order) and the blocks
@@ -178,7 +169,7 @@ static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
     hearth_status st = pb_reserve(m, part[T], err);
     if (st) return st;
     m->npb = part[T];
-    const int nz = g->dim == 3, nb1 = g->nb[1], nb2 = g->nb[2];
+    const int nb1 = g->nb[1], nb2 = g->nb[2];
 #pragma omp parallel num_threads(T) if (T > 1)
     {
 #pragma omp for schedule(static)
@@ -191,34 +182,113 @@ static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
 #pragma omp for schedule(static)
         for (int bx = 0; bx < g->nb[0]; bx++)
             for (int by = 0; by < nb1; by++)
-                for (int bz = 0; bz < nb2; bz++) {
-                    unsigned char hit = 0;
-                    for (int dx = 0; dx <= (bx > 0); dx++)
-                        for (int dy = 0; dy <= (by > 0); dy++)
-                            for (int dz = 0; dz <= (nz && bz > 0); dz++) {
-                                const int id = grid_block_id(g, bx - dx, by - dy, bz - dz);
-                                hit |= counts[id + 1] > counts[id];
-                            }
-                    m->mark[grid_block_id(g, bx, by, bz)] = hit;
-                }
+                for (int bz = 0; bz < nb2; bz++) m->mark[grid_block_id(g, bx, by, bz)] = touched(g, counts, 0, bx, by, bz);
     }
-    /* the colour lists, in block order within a colour: O(particle blocks), serial */
-    int ncolour[8] = {0};
-    for (int k = 0; k < m->npb; k++) {
-        int c[3];
-        grid_block_coords(g, m->pb[k].block, c);
-        ncolour[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++;
-    }
-    m->colour_start[0] = 0;
-    for (int k = 0; k < 8; k++) m->colour_start[k + 1] = m->colour_start[k] + ncolour[k];
-    int fill[8];
-    memcpy(fill, m->colour_start, sizeof fill);
-    for (int k = 0; k < m->npb; k++) {
-        int c[3];
-        grid_block_coords(g, m->pb[k].block, c);
-        m->colour_pb[fill[(c[0] & 1) | (c[1] & 1) << 1 | (c[2] & 1) << 2]++] = k;
-    }
+    sort_colours(s);
     return HEARTH_OK;
+}
+
+/* sort_counting and sort_blocks in one parallel region of T > 1 threads.
+ * With T chunks of particles, chunk c counts its own particles per block
+ * (hist, T x nblocks); a particle's place is its block's start, plus the
+ * block's particles in earlier chunks, plus those before it in its own chunk:
+ * the serial sort's place, so the order is the same bits for any T
+ * (`determinism_threads_*`). The block starts, the particle blocks and the
+ * marks are integers from the same counts, so they are the serial sort's too.
+ * Two barriers (three when the keys are out of order), where a region for
+ * the count and two for the block lists took eleven synchronisations (three
+ * starts and ends, five barriers inside): with OMP_WAIT_POLICY=passive
+ * (main.c) each wakes a sleeping thread, a futex round trip, and in the 2D
+ * 128-cell bench all this bookkeeping is about 10 instructions a particle.
+ * Returns whether the keys were out of order (order then filled); *st gets
+ * pb_reserve's status. */
+static int sort_team(hearth_scene *s, int n, int T, hearth_status *st, hearth_error *err) {
+    const grid *g = &s->g;
+    mpm_state *m = s->mpm;
+    const int NB = m->nblocks, *keys = m->keys, nb1 = g->nb[1], nb2 = g->nb[2];
+    int *order = m->order, *counts = m->counts, *hist = m->hist, unsorted = 0;
+    counts[0] = 0;
+    /* per chunk of the block table (at c + 1): its particles and its particle blocks */
+    int cpart[SORT_CHUNKS_MAX + 1] = {0}, cblk[SORT_CHUNKS_MAX + 1] = {0};
+    *st = HEARTH_OK;
+    const int pbcap = m->pbcap; /* read once: the single below changes m->pbcap while others may test it */
+#pragma omp parallel num_threads(T)
+    {
+        /* each chunk of particles counts its own per block */
+#pragma omp for schedule(static) reduction(| : unsorted)
+        for (int c = 0; c < T; c++) {
+            int *h = hist + (size_t)c * NB;
+            memset(h, 0, sizeof(int) * (size_t)NB);
+            const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
+            for (int i = lo; i < hi; i++) {
+                h[keys[i]]++;
+                unsorted |= i > 0 && keys[i - 1] > keys[i];
+            }
+        }
+        /* per block: its particles in earlier chunks (hist, exclusive) and in all (counts[b + 1]: in
+         * this path counts keeps the blocks' totals, which nothing after the sort reads) */
+#pragma omp for schedule(static)
+        for (int c = 0; c < T; c++) {
+            const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+            int np = 0, nk = 0;
+            for (int b = lo; b < hi; b++) {
+                int sum = 0;
+                for (int q = 0; q < T; q++) {
+                    int *h = hist + (size_t)q * NB + b;
+                    const int k = *h;
+                    *h = sum;
+                    sum += k;
+                }
+                counts[b + 1] = sum;
+                np += sum;
+                nk += sum > 0;
+            }
+            cpart[c + 1] = np;
+            cblk[c + 1] = nk;
+        }
+        /* Every thread takes the chunks' offsets (T numbers); a step that finds more particle blocks
+         * than ever grows their lists first (every thread sees the same need, so all or none meet the single). */
+        int poff[SORT_CHUNKS_MAX + 1], koff[SORT_CHUNKS_MAX + 1];
+        poff[0] = koff[0] = 0;
+        for (int c = 0; c < T; c++) poff[c + 1] = poff[c] + cpart[c + 1], koff[c + 1] = koff[c] + cblk[c + 1];
+        if (koff[T] > pbcap) {
+#pragma omp single
+            *st = pb_reserve(m, koff[T], err);
+        }
+        if (!*st) {
+            /* The marks and the particle blocks only read the totals, so neither waits for the other. */
+#pragma omp for schedule(static) nowait
+            for (int bx = 0; bx < g->nb[0]; bx++)
+                for (int by = 0; by < nb1; by++)
+                    for (int bz = 0; bz < nb2; bz++) m->mark[grid_block_id(g, bx, by, bz)] = touched(g, counts, 1, bx, by, bz);
+            /* each chunk's blocks from its offset; out of order, each particle chunk's places in a
+             * block (hist) also get the block's start, so the order below needs nothing else */
+#pragma omp for schedule(static) nowait
+            for (int c = 0; c < T; c++) {
+                const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+                int run = poff[c], k = koff[c];
+                for (int b = lo; b < hi; b++) {
+                    const int start = run;
+                    run += counts[b + 1];
+                    if (run > start) m->pb[k++] = (pblock){b, start, run};
+                    if (unsorted)
+                        for (int q = 0; q < T; q++) hist[(size_t)q * NB + b] += start;
+                }
+            }
+            if (unsorted) { /* every chunk's places: wait for the other threads' blocks */
+#pragma omp barrier
+#pragma omp for schedule(static) nowait
+                for (int c = 0; c < T; c++) {
+                    int *h = hist + (size_t)c * NB;
+                    const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
+                    for (int i = lo; i < hi; i++) order[h[keys[i]]++] = i;
+                }
+            }
+        }
+    }
+    if (!*st) m->npb = 0;
+    for (int c = 0; c < T && !*st; c++) m->npb += cblk[c + 1];
+    return unsorted;
 }
 
 /* Sort keys from G2P: G2P files each particle in its block while its new
@@ -264,8 +334,15 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
         m->hist = h;
         m->histcap = hneed;
     }
-    if (sort_counting(m, n, Tc)) particles_permute(ps, m->order, m->perm_scratch);
-    if ((st = sort_blocks(s, T, err))) return st;
+    if (Tc > 1) { /* the usual parallel sort: one region */
+        const int unsorted = sort_team(s, n, Tc, &st, err);
+        if (st) return st;
+        if (unsorted) particles_permute(ps, m->order, m->perm_scratch);
+        sort_colours(s);
+    } else {
+        if (sort_counting(m, n)) particles_permute(ps, m->order, m->perm_scratch);
+        if ((st = sort_blocks(s, T, err))) return st;
+    }
     if (wrap) mpm_periodic_mark(s, m->mark);
     if ((st = mpm_ranks_mark(s, err))) return st;
     st = grid_set_channels(g, thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
