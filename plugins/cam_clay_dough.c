@@ -131,7 +131,6 @@
  * dt = 0 evaluates the stress of the stored state without advancing it.
  */
 #include <hearth/material.h>
-#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -625,10 +624,11 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
         const double *g2 = b->grad_v[2], *g5 = b->grad_v[5], *g6 = b->grad_v[6], *g7 = b->grad_v[7];
         for (int j = 0; j < n; j++) { /* stress_law's tests, is_plane, trial_plane and eigen_plane */
             const double *s = st + (size_t)j * stride;
-            double z = 0;
+            double z = 0; /* x - x is 0 for a finite x, else NaN: the state's, J's, det f's and the eigenvalues' tests */
             for (int i = 0; i < S_COUNT; i++) z += s[i] - s[i];
             const double nj = P[j];
-            const int plane = (s[S_YZ] == 0) & (s[S_ZX] == 0) & (g2[j] == 0) & (g5[j] == 0) & (g6[j] == 0) & (g7[j] == 0);
+            /* is_plane: a sum of |x| is 0 only if every x is +-0 (and NaN for a NaN) */
+            const double off = fabs(s[S_YZ]) + fabs(s[S_ZX]) + fabs(g2[j]) + fabs(g5[j]) + fabs(g6[j]) + fabs(g7[j]);
             const double b0 = s[S_XX], b1 = s[S_XY], b4 = s[S_YY];
             const double f0 = 1 + dt * g0[j], f1 = dt * g1[j], f3 = dt * g3[j], f4 = 1 + dt * g4[j], f8 = 1 + dt * g8[j];
             const double h0 = f0 * b0 + f1 * b1, h1 = f0 * b1 + f1 * b4;
@@ -643,8 +643,10 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
             B0[j] = t0, B1[j] = t1, B4[j] = t4, B8[j] = t8;
             L0[j] = l0, L1[j] = l1;
             QC[j] = rot ? c : 1, QS[j] = rot ? sn : 0, QM[j] = rot ? -sn : 0; /* eigen_plane's Q (+0 off a rotation) */
-            fast[j] = (J[j] > 0) & (J[j] <= DBL_MAX) & (z == 0) & (nj > 0) & (nj < 1) & plane & (jf > 0) & (jf <= DBL_MAX) &
-                      (l0 > 0) & (l1 > 0) & (t8 > 0) & (l0 + l1 + t8 <= DBL_MAX); /* & not &&: no branch */
+            const double lsum = l0 + l1 + t8;
+            z += (J[j] - J[j]) + (jf - jf) + (lsum - lsum);
+            fast[j] = (z == 0) & (off == 0) & (J[j] > 0) & (jf > 0) & (nj > 0) & (nj < 1) & (l0 > 0) & (l1 > 0) &
+                      (t8 > 0); /* & not &&: no branch */
         }
         for (int j = 0; j < n; j++) /* the logs: scalar (libm) */
             if (fast[j]) E0[j] = 0.5 * log(L0[j]), E1[j] = 0.5 * log(L1[j]), E2[j] = 0.5 * log(B8[j]);

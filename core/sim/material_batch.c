@@ -210,14 +210,11 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     plugin_call_enter(m, "stress_block");
     m->stress_block(&b, tau, code);
 
-    /* non-finite entries, across the block: x - x is 0 for a finite x and NaN
-     * otherwise (material_finite9's test), a sum the compiler vectorises */
-    double z[HEARTH_BLOCK_MAX];
-    for (int j = 0; j < n; j++) z[j] = 0;
-    for (int c = 0; c < 9; c++)
-        for (int j = 0; j < n; j++) z[j] += tau[c][j] - tau[c][j];
+    /* non-finite entries: x - x is 0 for a finite x and NaN otherwise (material_finite9's test) */
     for (int j = 0; j < n; j++) {
-        if (__builtin_expect(!code[j] && !(z[j] == 0), 0)) code[j] = MATERIAL_NONFINITE;
+        double z = 0;
+        for (int c = 0; c < 9; c++) z += tau[c][j] - tau[c][j];
+        if (__builtin_expect(!code[j] && !(z == 0), 0)) code[j] = MATERIAL_NONFINITE;
         if (__builtin_expect(code[j] != 0, 0) && (flags & MATERIAL_ZERO_FAILED))
             for (int c = 0; c < 9; c++) tau[c][j] = 0;
     }
