@@ -453,8 +453,7 @@ static double dev_max_eigen(const double e[9]) {
 /* Damage (header, "crust fracture"): the largest fraction of its strain to
  * fracture that the point's largest principal deviatoric elastic strain e1
  * has reached; 1 is cracked, for good. */
-static void fracture_update(const double *prm, double *st, double e1) {
-    const double ef = prm[P_FRACTURE_STRAIN];
+static void fracture_update(double ef, double *st, double e1) {
     if (ef > 0 && e1 > 0 && st[S_DAMAGE] < 1) st[S_DAMAGE] = fmax(st[S_DAMAGE], fmin(1, e1 / ef));
 }
 
@@ -546,7 +545,7 @@ static int stress_near(hearth_point *pt, double mu, double lambda, double m, con
         st[S_JP] = J / exp(ev); /* J^P = J / J^E */
         if (prm[P_FRACTURE_STRAIN] > 0) { /* its trig only when asked */
             if (prm[P_FRACTURE_STRETCH] > 0.5) fracture_stretch_update(prm, st, dir_stretch_full(e, pt->grad_v), pt->dt);
-            else fracture_update(prm, st, ratio * dev_max_eigen(e));
+            else fracture_update(prm[P_FRACTURE_STRAIN], st, ratio * dev_max_eigen(e));
         }
     }
     hencky_tau(mu, lambda, ev, e, ratio, tau);
@@ -612,7 +611,7 @@ static int stress_law(hearth_point *pt, double J, double mu, double lambda, doub
         hearth_full_to_sym(B, st);
         st[S_JP] = J / exp(ev); /* J^P = J / J^E (a crack opens as plastic volume: it reads as pores) */
         if (prm[P_FRACTURE_STRETCH] > 0.5) fracture_stretch_update(prm, st, dir_stretch_eigen(e, Q, pt->grad_v), pt->dt);
-        else fracture_update(prm, st, ratio * fmax(e[0], fmax(e[1], e[2])));
+        else fracture_update(prm[P_FRACTURE_STRAIN], st, ratio * fmax(e[0], fmax(e[1], e[2])));
     }
     const double tv = lambda * ev;
     double d[3];
@@ -628,26 +627,43 @@ static int stress(hearth_point *pt, double tau[9]) {
     return stress_law(pt, hearth_t3_det(pt->F), mu, lambda, tau);
 }
 
-#ifdef DOUGH_BATCHED
-/* The batched stress (<hearth/material.h> rule 7), built only into the test
- * fixture hearth_dough_batched (tests/plugins/meson.build), not into this
- * plugin: measured, the block costs more than it saves here (the dough step
- * with all fields, 2D 64 cells, callgrind: 20.86M instructions a step with
- * it, 20.02M without), because each point's velocity gradient and stress
- * move between the block's columns and the per-point law, and the return map
- * below cannot run across points. It stays as the suite's stateful batched
- * law: state stride, porosity, temperature, damage and per-point parameter
- * columns through the batched door, bit for bit against `stress`
- * (plugin_check_batched_matches, batch_scene_matches_one_point).
- * The same bits as stress, point by point. det F runs across the block (the compiler vectorises it,
- * hearth_t3_det's arithmetic in its order), and the Lame constants of a
- * block whose E and nu are uniform (no curve on them) are computed once. The
- * return map itself branches per point (the near path, the eigen path, the
- * Newton iterations of the multiplier), so it stays a loop over points. */
+/* ---- the batched stress (<hearth/material.h> rule 7) ------------------------
+ * A 2D (plane-strain) block's usual point is inside the surface: its step is
+ * the trial, the one-rotation eigen-decomposition, three logs, the log-free
+ * bound of return_map, J^P's exp and the rebuild of tau. That path runs
+ * across the block's columns, each loop with no branch per point, so the
+ * compiler can vectorise the arithmetic; the logs and the exp stay scalar
+ * loops (a vector log would not give stress's bits). Every other point (3D,
+ * a trial the bound does not clear, a porosity of 0 or NaN, any of
+ * stress_law's error tests, out-of-plane shear) goes through stress_law
+ * from its untouched state, as stress would. Each point's arithmetic is
+ * stress_law's, in its order (the build does not contract into FMA), so a
+ * block gives the same bits as stress point by point (`hearth plugin
+ * check`). Before it the dough shipped without a block: a loop through
+ * stress_law cost more than it saved (2D dough step 20.86M against 20.02M
+ * instructions), as each point moved between the columns and the law. */
+
+/* Point j through stress_law, as stress would (F is read through J only). */
+static int block_point(const hearth_block *b, int j, double J, double mu, double lambda, double *q, double *const tau[9]) {
+    hearth_point pt;
+    for (int c = 0; c < 9; c++) pt.grad_v[c] = b->grad_v[c][j];
+    pt.p = q;
+    pt.dt = b->dt;
+    pt.state = b->state + (size_t)j * b->state_stride;
+    pt.temperature = b->temperature ? b->temperature[j] : NAN;
+    pt.porosity = b->porosity ? b->porosity[j] : NAN;
+    pt.saturation = NAN;
+    pt.dim = b->dim;
+    double t[9];
+    const int code = stress_law(&pt, J, mu, lambda, t);
+    for (int c = 0; c < 9; c++) tau[c][j] = t[c];
+    return code;
+}
+
 static int stress_block(const hearth_block *b, double *const tau[9], int *code) {
     const int n = b->n;
     const double *const *F = b->F;
-    double J[HEARTH_BLOCK_MAX], q[P_COUNT];
+    double J[HEARTH_BLOCK_MAX], q[P_COUNT], MU[HEARTH_BLOCK_MAX], LA[HEARTH_BLOCK_MAX];
     for (int j = 0; j < n; j++)
         J[j] = F[0][j] * (F[4][j] * F[8][j] - F[5][j] * F[7][j]) - F[1][j] * (F[3][j] * F[8][j] - F[5][j] * F[6][j]) +
                F[2][j] * (F[3][j] * F[7][j] - F[4][j] * F[6][j]);
@@ -656,39 +672,104 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
         q[k] = b->p[k];
         if (b->p_col[k]) vk[nv++] = k;
     }
-    const int lame_uniform = !b->p_col[P_E] && !b->p_col[P_NU];
-    double mu = 0, lambda = 0;
-    if (lame_uniform) hearth_lame(b->p[P_E], b->p[P_NU], &mu, &lambda);
-    /* the column pointers in locals: the call below is opaque, so b's would be loaded again per point */
-    const double *gv[9], *pc[P_COUNT];
-    double *tc[9];
-    for (int c = 0; c < 9; c++) gv[c] = b->grad_v[c], tc[c] = tau[c];
-    for (int v = 0; v < nv; v++) pc[v] = b->p_col[vk[v]];
-    double *const state = b->state;
-    const double *const T = b->temperature, *const P = b->porosity;
-    const int stride = b->state_stride, dim = b->dim;
+    if (!b->p_col[P_E] && !b->p_col[P_NU]) { /* the Lame constants once for the block */
+        double mu, lambda;
+        hearth_lame(b->p[P_E], b->p[P_NU], &mu, &lambda);
+        for (int j = 0; j < n; j++) MU[j] = mu, LA[j] = lambda;
+    } else {
+        const double *Ec = b->p_col[P_E], *Nc = b->p_col[P_NU];
+        for (int j = 0; j < n; j++) hearth_lame(Ec ? Ec[j] : b->p[P_E], Nc ? Nc[j] : b->p[P_NU], &MU[j], &LA[j]);
+    }
     const double dt = b->dt;
+    const double *P = b->porosity;
+    double *const st = b->state;
+    const int stride = b->state_stride;
+    /* fast[j]: point j takes the elastic plane-strain path below; else stress_law */
+    unsigned char fast[HEARTH_BLOCK_MAX];
+    double B0[HEARTH_BLOCK_MAX], B1[HEARTH_BLOCK_MAX], B4[HEARTH_BLOCK_MAX], B8[HEARTH_BLOCK_MAX];
+    double L0[HEARTH_BLOCK_MAX], L1[HEARTH_BLOCK_MAX], QC[HEARTH_BLOCK_MAX], QS[HEARTH_BLOCK_MAX], QM[HEARTH_BLOCK_MAX];
+    double E0[HEARTH_BLOCK_MAX], E1[HEARTH_BLOCK_MAX], E2[HEARTH_BLOCK_MAX], EV[HEARTH_BLOCK_MAX];
+    if (b->dim == 2 && dt > 0 && P) {
+        const double *g0 = b->grad_v[0], *g1 = b->grad_v[1], *g3 = b->grad_v[3], *g4 = b->grad_v[4], *g8 = b->grad_v[8];
+        const double *g2 = b->grad_v[2], *g5 = b->grad_v[5], *g6 = b->grad_v[6], *g7 = b->grad_v[7];
+        for (int j = 0; j < n; j++) { /* stress_law's tests, is_plane, trial_plane and eigen_plane */
+            const double *s = st + (size_t)j * stride;
+            double z = 0; /* x - x is 0 for a finite x, else NaN: the state's, J's, det f's and the eigenvalues' tests */
+            for (int i = 0; i < S_COUNT; i++) z += s[i] - s[i];
+            const double nj = P[j];
+            /* is_plane: a sum of |x| is 0 only if every x is +-0 (and NaN for a NaN) */
+            const double off = fabs(s[S_YZ]) + fabs(s[S_ZX]) + fabs(g2[j]) + fabs(g5[j]) + fabs(g6[j]) + fabs(g7[j]);
+            const double b0 = s[S_XX], b1 = s[S_XY], b4 = s[S_YY];
+            const double f0 = 1 + dt * g0[j], f1 = dt * g1[j], f3 = dt * g3[j], f4 = 1 + dt * g4[j], f8 = 1 + dt * g8[j];
+            const double h0 = f0 * b0 + f1 * b1, h1 = f0 * b1 + f1 * b4;
+            const double h3 = f3 * b0 + f4 * b1, h4 = f3 * b1 + f4 * b4;
+            const double t0 = h0 * f0 + h1 * f1, t1 = h0 * f3 + h1 * f4, t4 = h3 * f3 + h4 * f4, t8 = s[S_ZZ] * (f8 * f8);
+            const double jf = (f0 * f4 - f1 * f3) * f8;
+            const double h = 0.5 * (t4 - t0), r = sqrt(h * h + t1 * t1), w = fabs(h) + r;
+            const double sb = h >= 0 ? t1 : -t1, tb = sb * t1 / w;
+            const double c = sqrt(w / (2 * r)), sn = sb / sqrt(2 * r * w);
+            const int rot = t1 != 0;
+            const double l0 = rot ? t0 - tb : t0, l1 = rot ? t4 + tb : t4;
+            B0[j] = t0, B1[j] = t1, B4[j] = t4, B8[j] = t8;
+            L0[j] = l0, L1[j] = l1;
+            QC[j] = rot ? c : 1, QS[j] = rot ? sn : 0, QM[j] = rot ? -sn : 0; /* eigen_plane's Q (+0 off a rotation) */
+            const double lsum = l0 + l1 + t8;
+            z += (J[j] - J[j]) + (jf - jf) + (lsum - lsum);
+            fast[j] = (z == 0) & (off == 0) & (J[j] > 0) & (jf > 0) & (nj > 0) & (nj < 1) & (l0 > 0) & (l1 > 0) &
+                      (t8 > 0); /* & not &&: no branch */
+        }
+        for (int j = 0; j < n; j++) /* the logs: scalar (libm) */
+            if (fast[j]) E0[j] = 0.5 * log(L0[j]), E1[j] = 0.5 * log(L1[j]), E2[j] = 0.5 * log(B8[j]);
+            else E0[j] = E1[j] = E2[j] = 0;
+        const double *ty_c = b->p_col[P_TAU_Y];
+        for (int j = 0; j < n; j++) { /* the deviator, return_map's log-free bound, and tau of an elastic step */
+            const double mu = MU[j], lambda = LA[j];
+            const double ev = E0[j] + E1[j] + E2[j];
+            const double e0 = E0[j] - ev / 3, e1 = E1[j] - ev / 3, e2 = E2[j] - ev / 3;
+            double s2 = 0;
+            s2 += e0 * e0;
+            s2 += e1 * e1;
+            s2 += e2 * e2;
+            const double K = lambda + 2.0 / 3.0 * mu;
+            const double pt = -K * ev, qt = 2 * mu * sqrt(1.5 * s2);
+            const double ty = ty_c ? ty_c[j] : b->p[P_TAU_Y], ty2 = ty * ty;
+            const double u = 1 - P[j], Mb = 9.0 * (1 + 1e-7) / (4.0 * u * u * (3.5 * P[j] + 1.0));
+            fast[j] &= !(Mb * pt * pt + qt * qt - ty2 > 0);
+            const double tv = lambda * ev;
+            const double d0 = tv + 2 * mu * (ev / 3 + e0), d1 = tv + 2 * mu * (ev / 3 + e1);
+            const double d2 = tv + 2 * mu * (ev / 3 + e2);
+            const double qc = QC[j], qs = QS[j], qm = QM[j];
+            tau[0][j] = qc * d0 * qc + qs * d1 * qs;
+            tau[1][j] = tau[3][j] = qc * d0 * qm + qs * d1 * qc;
+            tau[4][j] = qm * d0 * qm + qc * d1 * qc;
+            tau[2][j] = tau[6][j] = tau[5][j] = tau[7][j] = 0;
+            tau[8][j] = d2;
+            EV[j] = ev, E0[j] = e0, E1[j] = e1, E2[j] = e2; /* for J^P and the damage */
+        }
+    } else {
+        for (int j = 0; j < n; j++) fast[j] = 0;
+    }
+    const double *ef_c = b->p_col[P_FRACTURE_STRAIN], *fs_c = b->p_col[P_FRACTURE_STRETCH];
     int bad = 0;
     for (int j = 0; j < n; j++) {
-        hearth_point pt; /* F is read through J only (stress_law) */
-        for (int c = 0; c < 9; c++) pt.grad_v[c] = gv[c][j];
-        for (int v = 0; v < nv; v++) q[vk[v]] = pc[v][j];
-        pt.p = q;
-        pt.dt = dt;
-        pt.state = state + (size_t)j * stride;
-        pt.temperature = T ? T[j] : NAN;
-        pt.porosity = P ? P[j] : NAN;
-        pt.saturation = NAN;
-        pt.dim = dim;
-        if (!lame_uniform) hearth_lame(q[P_E], q[P_NU], &mu, &lambda);
-        double t[9];
-        code[j] = stress_law(&pt, J[j], mu, lambda, t);
-        bad += code[j] != 0;
-        for (int c = 0; c < 9; c++) tc[c][j] = t[c];
+        const double ef = ef_c ? ef_c[j] : b->p[P_FRACTURE_STRAIN];
+        /* the stretch rule (fracture_stretch = 1) reads the eigenvectors and grad_v: stress_law's path */
+        const int stretch = ef > 0 && (fs_c ? fs_c[j] : b->p[P_FRACTURE_STRETCH]) > 0.5;
+        if (fast[j] && !stretch) { /* the state of an elastic step: the trial b^E, J^P and the damage */
+            double *s = st + (size_t)j * stride;
+            s[S_XX] = B0[j], s[S_YY] = B4[j], s[S_ZZ] = B8[j];
+            s[S_XY] = 0.5 * (B1[j] + B1[j]); /* hearth_full_to_sym's; S_YZ and S_ZX stay as they were */
+            s[S_JP] = J[j] / exp(EV[j]);
+            if (ef > 0) fracture_update(ef, s, fmax(E0[j], fmax(E1[j], E2[j])));
+            code[j] = 0;
+        } else {
+            for (int v = 0; v < nv; v++) q[vk[v]] = b->p_col[vk[v]][j];
+            code[j] = block_point(b, j, J[j], MU[j], LA[j], q, tau);
+            bad += code[j] != 0;
+        }
     }
     return bad;
 }
-#endif
 
 /* Small-strain P-wave speed sqrt((lambda + 2 mu)/rho): the Hencky law's
  * tangent at rest; plastic flow only softens it. */
@@ -737,9 +818,7 @@ static const hearth_material material = {
     .describe_error = describe_error,
     .plastic_J = plastic_J,
     .damage = damage,
-#ifdef DOUGH_BATCHED
     .stress_block = stress_block,
-#endif
 };
 
 HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void); /* for -Wmissing-prototypes */

@@ -636,6 +636,103 @@ TEST(dough_tension_cutoff) {
     for (int i = 0; i < 9; i++) CHECK(cmp[i] == orig[i]);
 }
 
+/* The shipped plugin's stress_block (<hearth/material.h> rule 7) against its
+ * stress, point by point, bit for bit (tau, the state written, the code), on
+ * 2D blocks built to cross every branch of the block's plane-strain path:
+ * points inside the surface (the path itself), trials past the log-free
+ * bound (the return map), porosity 0, NaN and out of range, out-of-plane
+ * shear in the state or the step, a -0 shear, an inverted F, a non-finite
+ * state, and the damage update; E and tau_y by point (curve columns) in one
+ * block, uniform in the other. Counts how many points the law returned
+ * plastically (the state's b^E is not the trial's), so both kinds are seen. */
+TEST(dough_block_matches_stress_2d) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL && m->stress_block != NULL);
+    if (!m || !m->stress_block) return;
+    enum { N = 64 };
+    int elastic = 0, plastic = 0, refused = 0, differ = 0;
+    for (int blk = 0; blk < 2; blk++) {
+        double p[NP];
+        for (int k = 0; k < NP; k++) p[k] = m->params[k].def;
+        p[P_FRACTURE_STRAIN] = 0.02;
+        double gv[9][N], F[9][N], T[N], n[N], Ec[N], tyc[N], st0[N * NSTATE], st1[N * NSTATE], st2[N * NSTATE];
+        for (int j = 0; j < N; j++) {
+            const double big = j % 4 == 3 ? 40.0 : 0.02; /* 1/s: a quarter of the points far past yield */
+            for (int c = 0; c < 9; c++) gv[c][j] = (c == 2 || c == 5 || c == 6 || c == 7) ? 0 : big * (2 * uni() - 1);
+            for (int c = 0; c < 9; c++) F[c][j] = (c % 4 == 0) + (c == 2 || c == 5 || c == 6 || c == 7 ? 0 : 0.05 * (2 * uni() - 1));
+            double *s = st0 + j * NSTATE;
+            m->init(p, s);
+            /* an advanced state inside the surface: elastic strains of 1e-4 against tau_y / E = 5e-4 */
+            s[0] = 1 + 2e-4 * (2 * uni() - 1), s[1] = 1 + 2e-4 * (2 * uni() - 1), s[2] = 1 + 1e-4 * uni();
+            s[3] = 1e-4 * (2 * uni() - 1), s[6] = 1 + 0.02 * (2 * uni() - 1);
+            n[j] = 0.05 + 0.2 * uni();
+            T[j] = 20 + 100 * uni();
+            Ec[j] = p[P_E] * (0.5 + uni()), tyc[j] = p[P_TAU_Y] * (0.5 + uni());
+        }
+        n[1] = 0, n[2] = NAN, n[5] = 1.5;                 /* von Mises; NaN reads as 0; refused */
+        st0[4 * NSTATE + 4] = 0.001;                      /* point 4: out-of-plane shear in the state */
+        gv[2][8] = 0.5;                                   /* point 8: out-of-plane step */
+        st0[12 * NSTATE + 3] = -0.0, st0[13 * NSTATE + 4] = -0.0; /* -0 shears */
+        gv[1][12] = gv[3][12] = 0;                        /* point 12: no in-plane shear at all (no rotation) */
+        /* point 14: no rotation, tension along x and compression along y, so eigen_plane's +0 off-diagonal
+         * entries of Q give tau_xy = +0 where a -0 in their place gives -0 */
+        for (int c = 0; c < 9; c++) gv[c][14] = 0;
+        st0[14 * NSTATE + 0] = 1 + 2e-4, st0[14 * NSTATE + 1] = 1 - 2e-4, st0[14 * NSTATE + 2] = 1, st0[14 * NSTATE + 3] = 0;
+        F[0][16] = -1;                                    /* inverted */
+        st0[20 * NSTATE + 2] = INFINITY;                  /* not finite */
+        st0[24 * NSTATE + 7] = 0.999;                     /* damage near 1 */
+        const double dt = 1e-3;
+        /* one point at a time */
+        memcpy(st1, st0, sizeof st0);
+        double tau1[N][9];
+        int code1[N];
+        for (int j = 0; j < N; j++) {
+            double q[NP];
+            memcpy(q, p, sizeof q);
+            if (blk == 1) q[P_E] = Ec[j], q[P_TAU_Y] = tyc[j];
+            hearth_point pt = {.dt = dt, .temperature = T[j], .porosity = n[j], .saturation = NAN, .p = q,
+                               .state = st1 + j * NSTATE, .dim = 2};
+            for (int c = 0; c < 9; c++) pt.grad_v[c] = gv[c][j], pt.F[c] = F[c][j];
+            for (int c = 0; c < 9; c++) tau1[j][c] = 0;
+            code1[j] = m->stress(&pt, tau1[j]);
+        }
+        /* the block */
+        memcpy(st2, st0, sizeof st0);
+        double tcol[9][N];
+        double *tau2[9];
+        const double *columns[NP] = {0};
+        if (blk == 1) columns[P_E] = Ec, columns[P_TAU_Y] = tyc;
+        hearth_block b = {.n = N, .dim = 2, .dt = dt, .temperature = T, .porosity = n, .saturation = NULL, .p = p,
+                          .p_col = columns, .state = st2, .state_stride = NSTATE};
+        for (int c = 0; c < 9; c++) b.grad_v[c] = gv[c], b.F[c] = F[c], tau2[c] = tcol[c];
+        int code2[N];
+        m->stress_block(&b, tau2, code2);
+        for (int j = 0; j < N; j++) {
+            int same = code1[j] == code2[j] && memcmp(st1 + j * NSTATE, st2 + j * NSTATE, NSTATE * sizeof(double)) == 0;
+            if (!code1[j])
+                for (int c = 0; c < 9; c++) same &= memcmp(&tau1[j][c], &tcol[c][j], sizeof(double)) == 0;
+            if (!same) {
+                printf("  block %d point %d differs (codes %d, %d)\n", blk, j, code1[j], code2[j]);
+                differ++;
+            }
+            if (code1[j]) {
+                refused++;
+                continue;
+            }
+            /* elastic: the stored b^E is the trial f b f^T (its xx entry, recomputed as the law does) */
+            const double *s = st0 + j * NSTATE;
+            const double f0 = 1 + dt * gv[0][j], f1 = dt * gv[1][j];
+            const double g0 = f0 * s[0] + f1 * s[3], g1 = f0 * s[3] + f1 * s[1];
+            if (st1[j * NSTATE] == g0 * f0 + g1 * f1) elastic++;
+            else plastic++;
+        }
+    }
+    printf("  %d points: %d elastic, %d plastic, %d refused; %d differ between stress and stress_block\n", 2 * N, elastic,
+           plastic, refused, differ);
+    CHECK(differ == 0);
+    CHECK(elastic >= 40 && plastic >= 20 && refused >= 4);
+}
+
 /* `hearth plugin check` on the built plugin. */
 TEST(dough_plugin_check) {
     const hearth_material *m = check_built_plugin("cam_clay_dough");
@@ -647,4 +744,5 @@ TEST(dough_plugin_check) {
 
 TEST_MAIN(T(dough_closest_point), T(dough_viscoplastic_optimality), T(dough_inside_unchanged), T(dough_von_mises_limit),
           T(dough_frame_indifference), T(dough_plane_strain_path), T(dough_near_identity_return), T(dough_extremes),
-          T(dough_closed_pores), T(dough_pore_cap), T(dough_fracture_damage), T(dough_fracture_stretch_rule), T(dough_tension_cutoff), T(dough_plugin_check))
+          T(dough_closed_pores), T(dough_pore_cap), T(dough_fracture_damage), T(dough_fracture_stretch_rule), T(dough_tension_cutoff),
+          T(dough_block_matches_stress_2d), T(dough_plugin_check))

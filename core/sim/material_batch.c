@@ -99,6 +99,9 @@ const double *material_run_params_at(material_run_params *rp, const material_slo
         const int fresh = !(r == rp->r && rd == rp->rd);
         rp->r = r, rp->rd = rd;
         for (int k = nt; k < nc; k++) {
+            /* a parameter with no temperature curve keeps the last point's value when the
+             * factors stand: only this loop writes it (one moisture curve a parameter) */
+            if (!fresh && !rp->mp[k - nt]) continue;
             const curve *c = &ms->curves[k];
             if (fresh) rp->f[k - nt] = curve_eval(c, c->irreversible ? rd : r);
             if (!rp->mp[k - nt]) q[c->param] = ms->params[c->param];
@@ -164,15 +167,17 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     if (need_nan)
         for (int j = 0; j < n; j++) nan_col[j] = NAN;
     /* point j's whole parameter set: the uniform ones once, the curves' patched in per point */
-    double q[MATERIAL_MAX_PARAMS], scratch[MATERIAL_MAX_PARAMS];
+    double q[MATERIAL_MAX_PARAMS];
     const double *pcolumn[MATERIAL_MAX_PARAMS];
     for (int k = 0; k < np; k++) pcolumn[k] = NULL;
     for (int v = 0; v < nv; v++) pcolumn[vk[v]] = vcol[v];
     if (nv || porous) {
         memcpy(q, ms->params, sizeof(double) * (size_t)np);
+        material_run_params rp; /* the curves once per run, as run_points resolves them */
+        if (nv) material_run_params_init(&rp, ms, ps);
         for (int j = 0; j < n; j++) {
             if (nv) {
-                const double *pj = material_params_resolve(ms, ps, i0 + j, scratch);
+                const double *pj = material_run_params_at(&rp, ms, ps, i0 + j);
                 for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j] = pj[vk[v]];
             }
             if (porous) { /* as material_point_stress: J^P at the start of the step */
@@ -205,13 +210,11 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     plugin_call_enter(m, "stress_block");
     m->stress_block(&b, tau, code);
 
-    /* non-finite entries, across the block (|x| <= DBL_MAX is isfinite's answer) */
-    unsigned char bad[HEARTH_BLOCK_MAX];
-    for (int j = 0; j < n; j++) bad[j] = 0;
-    for (int c = 0; c < 9; c++)
-        for (int j = 0; j < n; j++) bad[j] |= !(fabs(tau[c][j]) <= DBL_MAX);
+    /* non-finite entries: x - x is 0 for a finite x and NaN otherwise (material_finite9's test) */
     for (int j = 0; j < n; j++) {
-        if (__builtin_expect(!code[j] && bad[j], 0)) code[j] = MATERIAL_NONFINITE;
+        double z = 0;
+        for (int c = 0; c < 9; c++) z += tau[c][j] - tau[c][j];
+        if (__builtin_expect(!code[j] && !(z == 0), 0)) code[j] = MATERIAL_NONFINITE;
         if (__builtin_expect(code[j] != 0, 0) && (flags & MATERIAL_ZERO_FAILED))
             for (int c = 0; c < 9; c++) tau[c][j] = 0;
     }

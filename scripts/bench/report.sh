@@ -235,9 +235,12 @@ for dim in (3, 2):
 
 # ---- the dough step against the elastic step -------------------------------
 # The dough step by phase: inclusive instructions of these functions a step (the
-# plugin's `stress` with the libm calls it makes; transport_apply is the fields'
+# plugin's `stress` or `stress_block` with the libm calls it makes; transport_apply is the fields'
 # particle pass, boundary_find the air surface, thermal_* the node updates).
-DOUGH_PHASES = [("mpm_sort", "sort"), ("mpm_p2g", "P2G (all of it)"), ("stress", "  of which the plugin's stress"),
+DOUGH_PHASES = [("mpm_sort", "sort"), ("mpm_p2g", "P2G (all of it)"),
+                ("material_run_eval", "  of which the material door (the plugin's stress included)"),
+                ("stress", "  of which the plugin's stress (one point a call)"),
+                ("stress_block", "  of which the plugin's stress (a block a call)"),
                 ("material_params_resolve", "  of which parameters and curves per point"),
                 ("boundary_find", "boundary (the air surface)"), ("thermal_prepare", "heat: node temperatures, boundary coefficients"),
                 ("transport_apply", "heat (and water) particle pass"), ("thermal_finish", "heat: node update"),
