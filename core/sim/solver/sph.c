@@ -675,6 +675,34 @@ static void phase_xsph(hearth_scene *s) {
     st->amax = amax;
 }
 
+/* The sound speed of particle i's pressure law, for the CFL limit (sph_dt.c
+ * reads it as the step report's c_max) and the guard's wave check. Tait
+ * (eq. 3.17) is P = B ((rho / rho_r)^gamma - 1) with B = rho0 c0^2 / gamma
+ * set by the rest density rho0, so
+ *   c^2 = dP/drho = c0^2 (rho0 / rho_r) (rho / rho_r)^(gamma - 1).
+ * Against rho_r = rho0 a weakly compressible flow stays within about 1% of
+ * rho0, and c0 (what DualSPHysics takes for its time step too) is then c
+ * within 3%, which cfl's margin covers: those particles keep c0, as before.
+ * Eq. 3.52 lowers rho_r to the final density rho_f a bubble dough reached,
+ * and that stiffens it: a particle whose rho_f fell to half of rho0 and is
+ * squeezed back to rho0 carries c = 11 c0 at gamma 7. angel_food_cake did
+ * that by its crust (a batter particle at rho_f 347 kg/m^3 of 600, rho/rho_f
+ * 1.4): at c0's dt its waves crossed 1.7, then 3.7 particle spacings a step
+ * and the kinetic energy ran away at step 128, unless eq. 4.4's epsilon of
+ * 0.3 at the hot crust damped it (one epsilon of 0.05, or each pair's mean,
+ * did not). So those particles count Tait's speed at their present density,
+ * never less than c0. With sph.gas_law the dough's Tait is against rho0 and
+ * a bubble's ideal gas (sph_gas.c) is B (rho / rho_b - 1), c^2 = B / rho_b:
+ * faster than c0 only past V_b = gamma. */
+static inline double signal_speed(const struct sph_state *st, const hearth_sph_def *o, int i, double bub) {
+    const double c0 = st->c0[i], rho0 = st->rho0[i], rf = st->rhof[i];
+    if (o->gas_law) return bub > 0 && o->gamma * rf < rho0 ? c0 * sqrt(rho0 / (o->gamma * rf)) : c0;
+    if (!(rf < rho0)) return c0; /* Tait against the rest density (NaN: no reference yet) */
+    const double r = st->rho[i] / rf, r6 = o->gamma == 7 ? (r * r) * (r * r) * (r * r) : pow(r, o->gamma - 1);
+    const double c = c0 * sqrt(rho0 / rf * r6);
+    return c > c0 ? c : c0;
+}
+
 /* Temperatures forward by their rates; then the drift (eq. 3.57-3.58; the
  * second half under leapfrog), colliders and box walls with the thesis's
  * response (eq. 3.31-3.33: v = beta_c v_t - alpha_c v_n), and the report:
@@ -742,7 +770,8 @@ static void phase_drift(hearth_scene *s, double dt, step_report *rep) {
         const double sp = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
         ke += 0.5 * m[i] * sp * sp;
         if (sp > vmax) vmax = sp, fastest = i;
-        if (st->c0[i] > cmax) cmax = st->c0[i];
+        const double ci = signal_speed(st, o, i, s->mats.slot[c.mat[i]].core[CP_BUBBLE]);
+        if (ci > cmax) cmax = ci;
         /* particle_constants keeps 0 for a wave speed that is NaN, inf or <= 0: the guard names the plugin */
         if (!(st->c0[i] > 0) && rep->particle < 0) rep->kind = FAIL_WAVE, rep->particle = i;
     }
@@ -751,6 +780,7 @@ static void phase_drift(hearth_scene *s, double dt, step_report *rep) {
     rep->fastest = fastest;
     rep->c_max = cmax;
 }
+
 
 /* ---- the step ----------------------------------------------------------------- */
 
