@@ -32,10 +32,10 @@ static void momentum(const hearth_scene *s, double P[3], double *scale) {
  * phase_xsph); |P| must stay within 1e-12 of the momentum in motion (sum m
  * |v|), round-off over some 800 particles and 40 steps, at dx 2 and 1 mm.
  * The same blocks at one temperature are the control: eq. 3.34 with one
- * epsilon conserves. With two temperatures it is an expected failure for
- * now: measured 0.134 (dx 2 mm) and 0.046 (dx 1 mm); a pair-mean epsilon
- * passed (8e-18, 1.3e-16) but was not kept (docs/validation.md, "SPH bread
- * roll", "The sideways drift"). */
+ * epsilon conserves. Before each pair shared one epsilon (sph.c,
+ * xsph_pair_eps) the two-temperature case measured 0.134 (dx 2 mm) and 0.046
+ * (dx 1 mm): the heated bread roll's sideways drift (docs/validation.md, "SPH
+ * bread roll", "The sideways drift"). */
 TEST(sph_xsph_varied_eps_keeps_momentum) {
     for (int r = 0; r < 2; r++) {
         for (int hot = 0; hot < 2; hot++) {
@@ -67,13 +67,7 @@ TEST(sph_xsph_varied_eps_keeps_momentum) {
             const double rel = hypot(P[0] - P0[0], P[1] - P0[1]) / scale;
             printf("dx %.0f mm, left block at %s degC (%d particles, %d steps, t = %.4f s): |P| / sum m|v| = %.3g\n",
                    1e3 * dx, hot ? "120" : "26", s->ps.n, 40, s->t, rel);
-            if (hot && !(rel < 1e-12))
-                XFAIL("dx %.0f mm: |P| / sum m|v| = %.3g, not within 1e-12: eq. 4.4's per-particle epsilon in eq. "
-                      "3.34 moves (eps_i - eps_j) m_i w_ij (v_j - v_i) per pair (docs/validation.md, \"The sideways "
-                      "drift\": the pair mean conserves, and sends angel_food_cake past its stability guard)",
-                      1e3 * dx, rel);
-            else
-                CHECK(rel < 1e-12);
+            CHECK(rel < 1e-12);
             hearth_scene_destroy(s);
         }
     }

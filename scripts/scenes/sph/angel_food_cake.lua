@@ -1,6 +1,7 @@
 -- Angel food cake baked, then left in its pan to collapse, with the SPH solver
 -- (Rodriguez-Arenas 2011 Fig. 4.11).
 --   hearth run scripts/scenes/sph/angel_food_cake.lua [--set bake=1.5 --set cool_to=25 --set bubble_share=0.4]
+--     [--set xsph_cool=0.05 --set xsph_hot=0.3]
 -- A 2D section through a tube pan: batter on both sides of the central tube,
 -- between the pan's walls. A share of its particles are bubble particles
 -- (eq. 3.48-3.51; whisked egg white holds many). In the oven (oven, degC)
@@ -31,11 +32,12 @@
 -- Units: viscosity and mu_e are scaled from Table 4.1 (animation units) as in
 -- bread_roll.lua, so the 2D default runs in well under a minute.
 local h = require "hearth"
-local P = h.params { dx = 0.003, oven = 180, cool_to = 25, bake = 1.5, until_t = 3.5, bubble_share = 0.4, foam = 1.0 }
+local P = h.params { dx = 0.003, oven = 180, cool_to = 25, bake = 1.5, until_t = 3.5, bubble_share = 0.4, foam = 1.0,
+  xsph_cool = 0.05, xsph_hot = 0.3 }
 
 local T0 = 26
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.2, 0.12 } }, solver = "sph",
-  sph = { heat_ext = 17.1, heat_int = 0.5, av_beta = 1, xsph0 = 0.05, xsph_f = 0.3, xsph_T0 = T0, xsph_Tf = 120,
+  sph = { heat_ext = 17.1, heat_int = 0.5, av_beta = 1, xsph0 = P.xsph_cool, xsph_f = P.xsph_hot, xsph_T0 = T0, xsph_Tf = 120,
           bubble_T0 = T0, tension = true, alpha_c = 0.1, beta_c = 0.8 },
   oven = { temperature = P.oven, beta = 0 }, browning = true, browning_scale = 1600 }
 
