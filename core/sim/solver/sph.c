@@ -47,8 +47,9 @@
  * wall particles in sph_walls.c, the heat rates in sph_heat.c, the stable dt in sph_dt.c.
  *
  * dt (sph_stable_dt, sph_dt.c) is the smallest of CFL (cfl dx / (speed + sound speed),
- * as MPM, so the guard's checks hold), viscous (dt_viscous rho h^2 / mu),
- * force (dt_force sqrt(h/|a|)) and heat limits.
+ * as MPM, so the guard's checks hold; the sound speed is c0, or Tait's at the
+ * particle's density where eq. 3.52 lowered its reference: signal_speed),
+ * viscous (dt_viscous rho h^2 / mu), force (dt_force sqrt(h/|a|)) and heat limits.
  *
  * Where we differ from the thesis, each with its reason at the code: the
  * cubic spline's factor is 8/(pi h^3) (sph_kernel.h: the printed 1/(pi h^3)
@@ -63,7 +64,8 @@
  * Laplacian includes the particle's own term (without it eq. 3.30 pushes
  * outward); the external heat flows toward the outside temperature (the thesis
  * prints T_i - T_ext); XSPH epsilon is at most 1 (Table 4.1's 5 overshoots;
- * the text of §4.3 uses 0.5); fixed particles are no-slip walls in eq. 3.19
+ * the text of §4.3 uses 0.5) and under eq. 4.4 a pair shares one (phase_xsph:
+ * so eq. 3.34 keeps momentum); fixed particles are no-slip walls in eq. 3.19
  * (Morris et al. 1997), their drag taken implicitly in the kick, and a fixed
  * body may move rigidly (a lid, a paddle: sph_walls.c); eq. 3.19's
  * Laplacian (the kernel of eq. 3.8) is renormalised per particle by its

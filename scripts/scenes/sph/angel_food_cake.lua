@@ -15,10 +15,14 @@
 -- volume it gained. The thesis does the same by hand (§4.5: rho_f raised,
 -- mu_e and lambda lowered after baking); turning the pan over is what a baker
 -- does to stop it, not modelled. Measured (2D default, the per-area heat
--- below): relative volume 2.05 at the end of baking (t = 1.5 s), 1.61 at t =
--- 3.5 s (mean 63 degC) and still falling; one bubble particle is thrown onto
--- the tube's top by 1.4 s. With the printed form's heat (6e8, 0.3x this) it
--- was 1.95 and 1.72.
+-- below): relative volume 2.22 at the end of baking (t = 1.5 s), 1.95 at t =
+-- 3.5 s (mean 78 degC) and still falling; three particles are thrown onto
+-- the tube's top by 1.4 s. Before the time step counted the stiffness eq.
+-- 3.52 gives the batter (sph.c, signal_speed) it was 2.05 and 1.61 (mean 63
+-- degC), the cooled crumb full of holes, and the scene needed the hot crust's
+-- larger XSPH epsilon to stay stable (xsph_hot; with 0.05 everywhere the
+-- guard stopped it at t = 0.03 s). With the printed form's heat (6e8, 0.3x
+-- this) it was 1.95 and 1.72.
 -- Writes volume.csv (relative volume over time, from a density slice, with
 -- the mean temperature) and browning and temperature frames (the browning
 -- index of Zanoni et al. 1995 from temperature history; browning_scale = 1600
