@@ -107,7 +107,9 @@ s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "fr
     if not cooling then peak = math.max(peak, rv) end
     csv[#csv + 1] = ("%.4f,%.5f,%.2f,%s"):format(f.t, rv, mean_T(), cooling and "cooling" or "baking")
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
-    f:png("temperature", "frames/temperature_%04d.png")
+    -- one range for the whole run: the default one follows the oven, which
+    -- the cooling sets to cool_to, and then every frame saturated at 26 degC
+    f:png("temperature", "frames/temperature_%04d.png", { range = { math.min(T0, P.cool_to), P.oven } })
   end }
 print(("angel food cake: relative volume %.3f at the end of baking, %.3f at t = %.2f s (mean %.1f degC)"):format(
   peak, area() / A0, s:stats().t, mean_T()))
