@@ -73,4 +73,56 @@ TEST(sph_xsph_varied_eps_keeps_momentum) {
     }
 }
 
-TEST_MAIN(T(sph_xsph_varied_eps_keeps_momentum))
+/* The left block's mean vertical velocity less the right's after 40 steps
+ * of the two blocks above (left at Tl, right at Tr; they start 0.1 m/s apart). */
+static double shear_left(double dx, double Tl, double Tr, int *ok) {
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.12, 0.1, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[0] = d.gravity[1] = d.gravity[2] = 0;
+    d.sph.xsph0 = 0.05;
+    d.sph.xsph_f = 0.5;
+    d.sph.xsph_T0 = 26;
+    d.sph.xsph_Tf = 120;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    *ok = s != NULL;
+    if (!s) return NAN;
+    const int m = newtonian(s, 1000, 1e4, 1.0);
+    const double llo[3] = {0.04, 0.04, 0}, lhi[3] = {0.06, 0.06, 0};
+    const double rlo[3] = {0.06, 0.04, 0}, rhi[3] = {0.08, 0.06, 0};
+    const int bl = sph_box(s, m, llo, lhi, 0, Tl), br = sph_box(s, m, rlo, rhi, 0, Tr);
+    const double up[3] = {0, 0.05, 0}, down[3] = {0, -0.05, 0};
+    hearth_error err;
+    *ok = m >= 0 && bl >= 0 && br >= 0 && hearth_scene_body_set_velocity(s, bl, up, &err) == HEARTH_OK &&
+          hearth_scene_body_set_velocity(s, br, down, &err) == HEARTH_OK && hearth_scene_step(s, 40, &err) == HEARTH_OK;
+    const double *v = pcold(&s->ps, PC_V), *x = pcold(&s->ps, PC_X);
+    double sum[2] = {0, 0};
+    int cnt[2] = {0, 0};
+    for (int i = 0; i < s->ps.n; i++) {
+        const int right = x[3 * i] > 0.06;
+        sum[right] += v[3 * i + 1];
+        cnt[right]++;
+    }
+    hearth_scene_destroy(s);
+    return cnt[0] && cnt[1] ? sum[0] / cnt[0] - sum[1] / cnt[1] : NAN;
+}
+
+/* The pair epsilon still smooths as eq. 4.4 asks: the two blocks' shear
+ * (0.1 m/s at the start) after 40 steps with a hot block beside a cool one
+ * (epsilons 0.5 and 0.05) lies strictly between the shear with 0.5 on both
+ * sides and with 0.05 on both, at dx 2 and 1 mm (each hot-cool pair of
+ * equal masses shares (0.5 + 0.05) / 2; a pair epsilon of 0, or one that
+ * pushed the blocks, would leave the range). */
+TEST(sph_xsph_pair_eps_damps_between_its_ends) {
+    for (int r = 0; r < 2; r++) {
+        const double dx = r == 0 ? 0.002 : 0.001;
+        int ok[3];
+        const double cool = shear_left(dx, 26, 26, &ok[0]), mixed = shear_left(dx, 120, 26, &ok[1]),
+                     hot = shear_left(dx, 120, 120, &ok[2]);
+        CHECK(ok[0] && ok[1] && ok[2]);
+        printf("dx %.0f mm: shear after 40 steps %.6f m/s at epsilon 0.05 | %.6f hot beside cool | %.6f at 0.5 (0.1 at the start)\n",
+               1e3 * dx, cool, mixed, hot);
+        CHECK(hot < mixed && mixed < cool);
+    }
+}
+
+TEST_MAIN(T(sph_xsph_varied_eps_keeps_momentum), T(sph_xsph_pair_eps_damps_between_its_ends))
