@@ -32,10 +32,10 @@ static void momentum(const hearth_scene *s, double P[3], double *scale) {
  * phase_xsph); |P| must stay within 1e-12 of the momentum in motion (sum m
  * |v|), round-off over some 800 particles and 40 steps, at dx 2 and 1 mm.
  * The same blocks at one temperature are the control: eq. 3.34 with one
- * epsilon conserves. With two temperatures it is an expected failure for
- * now: measured 0.134 (dx 2 mm) and 0.046 (dx 1 mm); a pair-mean epsilon
- * passed (8e-18, 1.3e-16) but was not kept (docs/validation.md, "SPH bread
- * roll", "The sideways drift"). */
+ * epsilon conserves. Before each pair shared one epsilon (sph.c,
+ * xsph_pair_eps) the two-temperature case measured 0.134 (dx 2 mm) and 0.046
+ * (dx 1 mm): the heated bread roll's sideways drift (docs/validation.md, "SPH
+ * bread roll", "The sideways drift"). */
 TEST(sph_xsph_varied_eps_keeps_momentum) {
     for (int r = 0; r < 2; r++) {
         for (int hot = 0; hot < 2; hot++) {
@@ -67,16 +67,62 @@ TEST(sph_xsph_varied_eps_keeps_momentum) {
             const double rel = hypot(P[0] - P0[0], P[1] - P0[1]) / scale;
             printf("dx %.0f mm, left block at %s degC (%d particles, %d steps, t = %.4f s): |P| / sum m|v| = %.3g\n",
                    1e3 * dx, hot ? "120" : "26", s->ps.n, 40, s->t, rel);
-            if (hot && !(rel < 1e-12))
-                XFAIL("dx %.0f mm: |P| / sum m|v| = %.3g, not within 1e-12: eq. 4.4's per-particle epsilon in eq. "
-                      "3.34 moves (eps_i - eps_j) m_i w_ij (v_j - v_i) per pair (docs/validation.md, \"The sideways "
-                      "drift\": the pair mean conserves, and sends angel_food_cake past its stability guard)",
-                      1e3 * dx, rel);
-            else
-                CHECK(rel < 1e-12);
+            CHECK(rel < 1e-12);
             hearth_scene_destroy(s);
         }
     }
 }
 
-TEST_MAIN(T(sph_xsph_varied_eps_keeps_momentum))
+/* The left block's mean vertical velocity less the right's after 40 steps
+ * of the two blocks above (left at Tl, right at Tr; they start 0.1 m/s apart). */
+static double shear_left(double dx, double Tl, double Tr, int *ok) {
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.12, 0.1, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[0] = d.gravity[1] = d.gravity[2] = 0;
+    d.sph.xsph0 = 0.05;
+    d.sph.xsph_f = 0.5;
+    d.sph.xsph_T0 = 26;
+    d.sph.xsph_Tf = 120;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    *ok = s != NULL;
+    if (!s) return NAN;
+    const int m = newtonian(s, 1000, 1e4, 1.0);
+    const double llo[3] = {0.04, 0.04, 0}, lhi[3] = {0.06, 0.06, 0};
+    const double rlo[3] = {0.06, 0.04, 0}, rhi[3] = {0.08, 0.06, 0};
+    const int bl = sph_box(s, m, llo, lhi, 0, Tl), br = sph_box(s, m, rlo, rhi, 0, Tr);
+    const double up[3] = {0, 0.05, 0}, down[3] = {0, -0.05, 0};
+    hearth_error err;
+    *ok = m >= 0 && bl >= 0 && br >= 0 && hearth_scene_body_set_velocity(s, bl, up, &err) == HEARTH_OK &&
+          hearth_scene_body_set_velocity(s, br, down, &err) == HEARTH_OK && hearth_scene_step(s, 40, &err) == HEARTH_OK;
+    const double *v = pcold(&s->ps, PC_V), *x = pcold(&s->ps, PC_X);
+    double sum[2] = {0, 0};
+    int cnt[2] = {0, 0};
+    for (int i = 0; i < s->ps.n; i++) {
+        const int right = x[3 * i] > 0.06;
+        sum[right] += v[3 * i + 1];
+        cnt[right]++;
+    }
+    hearth_scene_destroy(s);
+    return cnt[0] && cnt[1] ? sum[0] / cnt[0] - sum[1] / cnt[1] : NAN;
+}
+
+/* The pair epsilon still smooths as eq. 4.4 asks: the two blocks' shear
+ * (0.1 m/s at the start) after 40 steps with a hot block beside a cool one
+ * (epsilons 0.5 and 0.05) lies strictly between the shear with 0.5 on both
+ * sides and with 0.05 on both, at dx 2 and 1 mm (each hot-cool pair of
+ * equal masses shares (0.5 + 0.05) / 2; a pair epsilon of 0, or one that
+ * pushed the blocks, would leave the range). */
+TEST(sph_xsph_pair_eps_damps_between_its_ends) {
+    for (int r = 0; r < 2; r++) {
+        const double dx = r == 0 ? 0.002 : 0.001;
+        int ok[3];
+        const double cool = shear_left(dx, 26, 26, &ok[0]), mixed = shear_left(dx, 120, 26, &ok[1]),
+                     hot = shear_left(dx, 120, 120, &ok[2]);
+        CHECK(ok[0] && ok[1] && ok[2]);
+        printf("dx %.0f mm: shear after 40 steps %.6f m/s at epsilon 0.05 | %.6f hot beside cool | %.6f at 0.5 (0.1 at the start)\n",
+               1e3 * dx, cool, mixed, hot);
+        CHECK(hot < mixed && mixed < cool);
+    }
+}
+
+TEST_MAIN(T(sph_xsph_varied_eps_keeps_momentum), T(sph_xsph_pair_eps_damps_between_its_ends))

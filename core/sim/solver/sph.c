@@ -47,8 +47,9 @@
  * wall particles in sph_walls.c, the heat rates in sph_heat.c, the stable dt in sph_dt.c.
  *
  * dt (sph_stable_dt, sph_dt.c) is the smallest of CFL (cfl dx / (speed + sound speed),
- * as MPM, so the guard's checks hold), viscous (dt_viscous rho h^2 / mu),
- * force (dt_force sqrt(h/|a|)) and heat limits.
+ * as MPM, so the guard's checks hold; the sound speed is c0, or Tait's at the
+ * particle's density where eq. 3.52 lowered its reference: signal_speed),
+ * viscous (dt_viscous rho h^2 / mu), force (dt_force sqrt(h/|a|)) and heat limits.
  *
  * Where we differ from the thesis, each with its reason at the code: the
  * cubic spline's factor is 8/(pi h^3) (sph_kernel.h: the printed 1/(pi h^3)
@@ -63,7 +64,8 @@
  * Laplacian includes the particle's own term (without it eq. 3.30 pushes
  * outward); the external heat flows toward the outside temperature (the thesis
  * prints T_i - T_ext); XSPH epsilon is at most 1 (Table 4.1's 5 overshoots;
- * the text of §4.3 uses 0.5); fixed particles are no-slip walls in eq. 3.19
+ * the text of §4.3 uses 0.5) and under eq. 4.4 a pair shares one (phase_xsph:
+ * so eq. 3.34 keeps momentum); fixed particles are no-slip walls in eq. 3.19
  * (Morris et al. 1997), their drag taken implicitly in the kick, and a fixed
  * body may move rigidly (a lid, a paddle: sph_walls.c); eq. 3.19's
  * Laplacian (the kernel of eq. 3.8) is renormalised per particle by its
@@ -651,16 +653,25 @@ static int phase_stress(hearth_scene *s, double dt, step_report *rep) {
     return 0;
 }
 
+/* The epsilon a pair (i, j) shares in eq. 3.34 when eq. 4.4 gives its
+ * particles different ones (phase_xsph says why a pair shares one): the
+ * mass-weighted mean (m_j eps_i + m_i eps_j) / (m_i + m_j), the same bits
+ * from either end. */
+static inline double xsph_pair_eps(const double *eps, const double *m, int i, int j) {
+    return (m[j] * eps[i] + m[i] * eps[j]) / (m[i] + m[j]);
+}
+
 /* XSPH's pair weights once per pair, as pairs_once in sph_forces.c does
  * the forces' terms (its comment says why they are the same bits): i's
  * w_ij = 2 m_j / (rho_i + rho_j) W_ij into its slot k, j's w_ji into the
  * slot of j's list that holds i (st->pairm), for every pair whether or not
- * its particles take XSPH. W_ij is phase_kinematics', kept per entry (wb):
+ * its particles take XSPH; with varied epsilons each weight carries the
+ * pair's epsilon (xsph_pair_eps). W_ij is phase_kinematics', kept per entry (wb):
  * the kernel at the same r and h_ij, so the same bits. The weight and not w (v_j - v_i) is kept: xsph_one
  * then multiplies and adds as before, which a compiler may fuse into one
  * rounding (-march=native), so the sums keep their bits in either build. */
 static inline __attribute__((always_inline)) void xsph_pairs_once(const struct sph_state *st, const sph_cols *c, int i,
-                                                                   const double *wb, double *pc) {
+                                                                   const double *wb, double *pc, const int varied) {
     const double *m = c->m, *rho = st->rho;
     const int *off = st->nl.off, *nb = st->nl.j, *mir = st->pairm;
     const double ri = rho[i], mi = m[i];
@@ -669,26 +680,32 @@ static inline __attribute__((always_inline)) void xsph_pairs_once(const struct s
         const double W = wb[k], rs = ri + rho[j]; /* phase_kinematics kept W_ij */
         pc[k] = 2 * m[j] / rs * W;
         pc[p] = 2 * mi / rs * W; /* j's, as its own loop has it: rho_j + rho_i is rho_i + rho_j */
+        if (varied) {
+            const double e = xsph_pair_eps(st->xsph, m, i, j);
+            pc[k] *= e;
+            pc[p] *= e;
+        }
     }
 }
 
 /* One particle's XSPH velocity (phase_xsph), dim a constant in each copy
  * (2D leaves z out, as forces_pairs in sph_forces.c); with pc its pair
- * weights are the slots xsph_pairs_once wrote. */
+ * weights are the slots xsph_pairs_once wrote. With varied, each pair takes
+ * its shared epsilon (in pc's weights already, or xsph_pair_eps here). */
 static inline __attribute__((always_inline)) void xsph_one(struct sph_state *st, const sph_cols *c, int i, const int dim,
-                                                            const double *pc) {
+                                                            const double *pc, const int varied) {
     const double *x = c->x, *m = c->m, *h = st->h, *rho = st->rho, *vnew = st->vnew;
     const int *off = st->nl.off, *nb = st->nl.j;
     double *vi = c->v + 3 * i;
     const double *wi = vnew + 3 * i;
     double corr[3] = {0, 0, 0};
-    if (st->xsph[i] > 0 && pc) {
+    if ((varied || st->xsph[i] > 0) && pc) {
         for (int k = off[i]; k < off[i + 1]; k++) {
             const int j = nb[k];
             const double w = pc[k];
             for (int q = 0; q < dim; q++) corr[q] += w * (vnew[3 * j + q] - wi[q]);
         }
-    } else if (st->xsph[i] > 0) {
+    } else if (varied || st->xsph[i] > 0) {
         const double hi = h[i], ri = rho[i];
         const sph_kc kci = sph_kc_of(dim, hi);
         for (int k = off[i]; k < off[i + 1]; k++) {
@@ -697,16 +714,34 @@ static inline __attribute__((always_inline)) void xsph_one(struct sph_state *st,
             sph_disp_dim(&st->cells, dim, x + 3 * i, x + 3 * j, d);
             const double r = sqrt(dim == 3 ? d[0] * d[0] + d[1] * d[1] + d[2] * d[2] : d[0] * d[0] + d[1] * d[1]);
             SPH_PAIR_KC(kc, dim, kci, hi, h[j]);
-            const double w = 2 * m[j] / (ri + rho[j]) * sph_w_kc(kc, r);
+            double w = 2 * m[j] / (ri + rho[j]) * sph_w_kc(kc, r);
+            if (varied) w *= xsph_pair_eps(st->xsph, m, i, j);
             for (int q = 0; q < dim; q++) corr[q] += w * (vnew[3 * j + q] - wi[q]);
         }
     }
-    for (int q = 0; q < 3; q++) vi[q] = wi[q] + st->xsph[i] * corr[q];
+    if (varied)
+        for (int q = 0; q < 3; q++) vi[q] = wi[q] + corr[q];
+    else
+        for (int q = 0; q < 3; q++) vi[q] = wi[q] + st->xsph[i] * corr[q];
     if (dim == 2) vi[2] = 0;
 }
 
 /* XSPH (eq. 3.34, its epsilon the tuner of eq. 4.4) from the kicked
  * velocities into the particles' v; the largest |a| for the force limit.
+ * Eq. 3.34 moves no momentum for one epsilon: m_i w_ij = m_j w_ji while
+ * v_j - v_i changes sign. Eq. 4.4 gives each particle its own epsilon from
+ * its temperature, and taken per particle a pair then moves
+ * (eps_i - eps_j) m_i w_ij (v_j - v_i) of momentum wherever a hot and a cool
+ * particle differ in velocity: the heated bread roll drifted 2 cm along its
+ * slip tray (docs/validation.md "SPH bread roll", `sph_xsph_varied_eps_keeps_momentum`).
+ * So when the epsilons differ each pair shares one, eps_ij = (m_j eps_i +
+ * m_i eps_j) / (m_i + m_j). That weighting keeps what eq. 4.4 asks of the pair:
+ * its relative velocity is damped at the rate eps_i w_ij + eps_j w_ji, the
+ * per-particle form's (eps_ij (w_ij + w_ji) is that, since m_i w_ij = m_j
+ * w_ji); only the push on the pair's centre of mass is gone. A plain mean
+ * does the same for equal masses; the minimum or a harmonic mean would damp
+ * a hot-cold pair less than eq. 4.4 does. With one epsilon everywhere the
+ * sums are the ones before, to the bit.
  * When sph_forces took the symmetric path and some particle takes XSPH,
  * each pair's weights are made once (xsph_pairs_once) into st->pairc, free
  * again once the forces are summed. */
@@ -714,30 +749,66 @@ static void phase_xsph(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim, *flags = c.flags;
-    int any = 0;
-    for (int i = 0; i < n && st->pair_ok && !any; i++) any = st->xsph[i] > 0;
-    double *pc = any ? st->pairc : NULL;
+    int any = 0, varied = 0;
+    for (int i = 0; i < n && !varied; i++) {
+        any |= st->xsph[i] > 0;
+        varied = st->xsph[i] != st->xsph[0];
+    }
+    double *pc = any && st->pair_ok ? st->pairc : NULL;
     if (pc) {
         const double *wb = st->pairc + (size_t)dim * st->nl.off[n];
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-        for (int i = 0; i < n; i++) xsph_pairs_once(st, &c, i, wb, pc);
+        for (int i = 0; i < n; i++) {
+            if (varied) xsph_pairs_once(st, &c, i, wb, pc, 1);
+            else xsph_pairs_once(st, &c, i, wb, pc, 0);
+        }
     }
     double amax = 0;
 #pragma omp parallel for schedule(static) reduction(max : amax) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         if (flags && (flags[i] & PF_FIXED)) continue; /* its prescribed velocity, 0 unless it moves */
         if (dim == 2) {
-            if (pc) xsph_one(st, &c, i, 2, pc);
-            else xsph_one(st, &c, i, 2, NULL);
+            if (varied) xsph_one(st, &c, i, 2, pc, 1);
+            else if (pc) xsph_one(st, &c, i, 2, pc, 0);
+            else xsph_one(st, &c, i, 2, NULL, 0);
         } else {
-            if (pc) xsph_one(st, &c, i, 3, pc);
-            else xsph_one(st, &c, i, 3, NULL);
+            if (varied) xsph_one(st, &c, i, 3, pc, 1);
+            else if (pc) xsph_one(st, &c, i, 3, pc, 0);
+            else xsph_one(st, &c, i, 3, NULL, 0);
         }
         const double an = sqrt(st->acc[3 * i] * st->acc[3 * i] + st->acc[3 * i + 1] * st->acc[3 * i + 1] +
                                st->acc[3 * i + 2] * st->acc[3 * i + 2]);
         if (an > amax) amax = an;
     }
     st->amax = amax;
+}
+
+/* The sound speed of particle i's pressure law, for the CFL limit (sph_dt.c
+ * reads it as the step report's c_max) and the guard's wave check. Tait
+ * (eq. 3.17) is P = B ((rho / rho_r)^gamma - 1) with B = rho0 c0^2 / gamma
+ * set by the rest density rho0, so
+ *   c^2 = dP/drho = c0^2 (rho0 / rho_r) (rho / rho_r)^(gamma - 1).
+ * Against rho_r = rho0 a weakly compressible flow stays within about 1% of
+ * rho0, and c0 (what DualSPHysics takes for its time step too) is then c
+ * within 3%, which cfl's margin covers: those particles keep c0, as before.
+ * Eq. 3.52 lowers rho_r to the final density rho_f a bubble dough reached,
+ * and that stiffens it: a particle whose rho_f fell to half of rho0 and is
+ * squeezed back to rho0 carries c = 11 c0 at gamma 7. angel_food_cake did
+ * that by its crust (a batter particle at rho_f 347 kg/m^3 of 600, rho/rho_f
+ * 1.4): at c0's dt its waves crossed 1.7, then 3.7 particle spacings a step
+ * and the kinetic energy ran away at step 128, unless eq. 4.4's epsilon of
+ * 0.3 at the hot crust damped it (one epsilon of 0.05, or each pair's mean,
+ * did not). So those particles count Tait's speed at their present density,
+ * never less than c0. With sph.gas_law the dough's Tait is against rho0 and
+ * a bubble's ideal gas (sph_gas.c) is B (rho / rho_b - 1), c^2 = B / rho_b:
+ * faster than c0 only past V_b = gamma. */
+static inline double signal_speed(const struct sph_state *st, const hearth_sph_def *o, int i, double bub) {
+    const double c0 = st->c0[i], rho0 = st->rho0[i], rf = st->rhof[i];
+    if (o->gas_law) return bub > 0 && o->gamma * rf < rho0 ? c0 * sqrt(rho0 / (o->gamma * rf)) : c0;
+    if (!(rf < rho0)) return c0; /* Tait against the rest density (NaN: no reference yet) */
+    const double r = st->rho[i] / rf, r6 = o->gamma == 7 ? (r * r) * (r * r) * (r * r) : pow(r, o->gamma - 1);
+    const double c = c0 * sqrt(rho0 / rf * r6);
+    return c > c0 ? c : c0;
 }
 
 /* Temperatures forward by their rates; then the drift (eq. 3.57-3.58; the
@@ -807,7 +878,8 @@ static void phase_drift(hearth_scene *s, double dt, step_report *rep) {
         const double sp = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
         ke += 0.5 * m[i] * sp * sp;
         if (sp > vmax) vmax = sp, fastest = i;
-        if (st->c0[i] > cmax) cmax = st->c0[i];
+        const double ci = signal_speed(st, o, i, s->mats.slot[c.mat[i]].core[CP_BUBBLE]);
+        if (ci > cmax) cmax = ci;
         /* particle_constants keeps 0 for a wave speed that is NaN, inf or <= 0: the guard names the plugin */
         if (!(st->c0[i] > 0) && rep->particle < 0) rep->kind = FAIL_WAVE, rep->particle = i;
     }
@@ -816,6 +888,7 @@ static void phase_drift(hearth_scene *s, double dt, step_report *rep) {
     rep->fastest = fastest;
     rep->c_max = cmax;
 }
+
 
 /* ---- the step ----------------------------------------------------------------- */
 

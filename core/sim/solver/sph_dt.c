@@ -3,7 +3,9 @@
  * hold), the viscous limit dt_viscous h^2 / nu, the force limit
  * dt_force sqrt(h / |a|) and the heat limits (sph_heat.c), capped by dt_max.
  * Before the first step the sound speed comes from the materials'
- * wave_speed; after it, from the step's report (s->c_max). h is the raw
+ * wave_speed; after it, from the step's report (s->c_max: c0, or Tait's
+ * sound speed at the particle's density where eq. 3.52 lowered the density
+ * it is taken against; sph.c's signal_speed says why). h is the raw
  * particles' (h_factor V0^(1/dim)): a bubble grown by sph.gas_law has a
  * larger h, so hmin stays on the safe side. */
 #include <math.h>

@@ -13,8 +13,10 @@
 -- the bubbles grow with their temperature, and only with it. Measured (2D
 -- default, from the particles, tests/sph_roll_measure.py: the dough with its
 -- closed gas cells, less what is torn): whole to 0.4 s (1.03x); at 0.5 s the
--- crust parts from the crumb along the outer ring of bubble spots (2.7% of
--- the roll torn), and the roll is 1.33x by 1.1 s with 16% of it torn.
+-- crust parts from the crumb along the outer ring of bubble spots (2.6% of
+-- the roll torn), and the roll is 1.31x by 1.1 s in 3 pieces, 15% of it torn.
+-- It stays where it was put (it drifted 2 cm right by 1.2 s before XSPH's
+-- pair epsilon, sph.c phase_xsph).
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature), particles_NNNN.csv (positions, for
 -- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
