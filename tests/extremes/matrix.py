@@ -37,15 +37,18 @@ KNOWN = {
     ("cam_clay_dough", "temperature", "100 degC"):
         "the expansion stress (c lambda = 10 Pa/K over 80 K: 800 Pa) is ~20x the default dough's tensile strength "
         "(tau_y = 20 Pa, eq. 12), so the dough bursts; the step is chosen from its last speed and elastic wave speed, "
-        "and F inverts at step ~131",
+        "and F inverts at step ~131; by the stop a particle's temperature is outside [-273.15, 5000] degC, which "
+        "the guard names first (guard.c)",
     ("cam_clay_dough", "temperature", "400 degC"):
         "the expansion stress (c lambda = 10 Pa/K over 380 K: 3800 Pa) is ~100x the default dough's tensile strength "
         "(tau_y = 20 Pa, eq. 12), so the dough bursts; the step is chosen from its last speed and elastic wave speed, "
-        "and the guard catches the CFL violation at step ~85",
+        "and the guard catches the CFL violation at step ~85; the particles' temperature left [-273.15, 5000] degC "
+        "at step ~84, ahead of the motion (cli_guard_expansion_named), and the guard names that first (guard.c)",
     ("cam_clay_dough", "porosity", "0.99"):
         "n^p_0 = 0.99 leaves eq. 12 almost no strength (its porosity coefficient grows without bound as n^p -> 1): "
         "the dough collapses on the floor and the guard stops it at step ~123, when the particles jump more than a "
-        "cell; the gas pressure is then the largest stress on the strengthless skeleton, and the guard names it",
+        "cell; the gas pressure is then the largest stress on the strengthless skeleton, but a particle's "
+        "temperature is by then outside [-273.15, 5000] degC, which the guard names first (guard.c)",
     ("snow_plastic", "temperature", "400 degC"):
         "the core's expansion stress (eq. 10: c lambda = 10 Pa/K over 380 K, 3800 Pa) needs an elastic dilation "
         "the snow law clamps (Stomakhin et al. 2013): at its critical stretch the default block holds at most ~600 Pa of tension "
@@ -119,8 +122,9 @@ def rollback_cells():
             ("rollback", "guard rollback", "cfl 2, 20 m/s", dict(stiff, guard_="rollback"), "rollback")]
 
 
-# The blow-up causes come first: such a diagnosis also reports the CFL violation they led to.
-CAUSES = [("thermal expansion blew", "thermal expansion"), ("gas pressure blew", "gas pressure"), ("CFL violated", "CFL"), ("kinetic energy ran away", "runaway energy"), ("is NaN or inf", "NaN"),
+# The blow-up causes come first: such a diagnosis also reports the CFL violation they led to. A temperature
+# that ran away comes before the stresses that read it (guard.c).
+CAUSES = [("the temperature ran away", "temperature runaway"), ("thermal expansion blew", "thermal expansion"), ("gas pressure blew", "gas pressure"), ("CFL violated", "CFL"), ("kinetic energy ran away", "runaway energy"), ("is NaN or inf", "NaN"),
           ("not finite or inverted", "inverted F"), ("returned code", "plugin error")]
 
 

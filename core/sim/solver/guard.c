@@ -1,7 +1,8 @@
 /* guard.c: the stability guard. After every step it decides whether the step
  * may stand, and if not, writes a diagnosis a user can act on: step, time,
  * particle, position, material, the quantity that went bad and, for a blow-up,
- * which stress drove it (the plugin's, thermal expansion or gas pressure). */
+ * what drove it: a temperature that ran away, or else the stress that outweighs
+ * the others (the plugin's, thermal expansion or gas pressure). */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -77,13 +78,60 @@ static void guard_measure(const hearth_scene *s, int i, guard_terms *t) {
     mem_free(state, sbytes);
 }
 
-/* "thermal expansion (...)" or "gas pressure (...)" when that term outweighs
- * the plugin's stress at particle i; "" when the plugin's stress (or plain
- * motion) is the larger, so the caller keeps its own wording. */
+/* Every temperature a scene can set, a body's, the oven's, a collider's, the
+ * boiling point, is checked to [-273.15, 5000] degC (bodies.c, colliders.c,
+ * settings.c), and the heat sources between them (the oven's and the tray's
+ * Robin terms, eq. 9's coupling, the latent sink) cannot carry a particle
+ * past that range: one outside it (or NaN) is an unstable heat step. */
+#define GUARD_T_LO (-273.15)
+#define GUARD_T_HI 5000.0
+
+/* The particle whose temperature lies furthest outside [GUARD_T_LO,
+ * GUARD_T_HI] (a NaN first; the lowest index among equals, so the name does
+ * not depend on threads), or -1 when every temperature is in range. */
+static int guard_temperature_runaway(const hearth_scene *s) {
+    const particles *ps = &s->ps;
+    if (!(ps->enabled & (1u << PC_TEMPERATURE))) return -1;
+    const double *T = pcold(ps, PC_TEMPERATURE);
+    int worst = -1;
+    double far = 0;
+    for (int i = 0; i < ps->n; i++) {
+        const double d = isnan(T[i]) ? INFINITY : fmax(GUARD_T_LO - T[i], T[i] - GUARD_T_HI);
+        if (d > far) far = d, worst = i;
+    }
+    return worst;
+}
+
+/* Why the step blew up, for the guard's message ("" when the plugin's stress,
+ * or plain motion, is the larger, so the caller keeps its own wording).
+ * First the temperature: thermal expansion (eq. 10) and gas pressure (eq. 13)
+ * both read it, so a temperature that ran away makes them huge at whatever
+ * particle moved fastest, and measuring them there named a consequence as the
+ * cause (cookies.lua with gas=10: "thermal expansion ... 3.1e5 Pa" at a
+ * particle of the unleavened cookie, whose temperature had been driven to
+ * 3e6 degC; its neighbour in the leavened one was at -4e6 degC, and the
+ * temperature range had grown x4 a step for 7 steps before the motion ran
+ * away). So a temperature out of range is named first, at the particle where
+ * it is furthest out. Otherwise "thermal expansion (...)" or "gas pressure
+ * (...)" when that term outweighs the plugin's stress at particle i, the
+ * culprit the caller picked. */
 static void guard_cause(const hearth_scene *s, int i, char *buf, size_t n) {
     buf[0] = '\0';
-    if (i < 0) return;
     guard_terms t;
+    const int hot = guard_temperature_runaway(s);
+    if (hot >= 0) {
+        const particles *ps = &s->ps;
+        const double *x = pcold(ps, PC_X) + 3 * hot;
+        guard_measure(s, hot, &t);
+        snprintf(buf, n,
+                 "the temperature ran away (an unstable heat step): particle %d (id %d) at (%.4g, %.4g, %.4g) m, "
+                 "material #%d, is at T = %.4g degC, outside the [%g, %g] degC every input temperature is checked "
+                 "to; thermal expansion (%.4g Pa there) and gas pressure (%.4g Pa) read T: its result, not the cause. ",
+                 hot, pcoli(ps, PC_ID)[hot], x[0], x[1], x[2], pcoli(ps, PC_MAT)[hot], pcold(ps, PC_TEMPERATURE)[hot],
+                 GUARD_T_LO, GUARD_T_HI, t.expansion, t.gas);
+        return;
+    }
+    if (i < 0) return;
     guard_measure(s, i, &t);
     if (t.expansion > t.plugin && t.expansion >= t.gas)
         snprintf(buf, n,
