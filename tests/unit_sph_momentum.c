@@ -22,6 +22,32 @@ static void momentum(const hearth_scene *s, double P[3], double *scale) {
     }
 }
 
+/* Two equal blocks of newtonian liquid side by side with no gravity, the
+ * left at Tl and the right at Tr degC, sliding past each other at 0.05 m/s
+ * up and down, under eq. 4.4's epsilon (0.05 at 26 degC, 0.5 at 120); NULL
+ * and *ok = 0 when any part fails. */
+static hearth_scene *sliding_blocks(double dx, double Tl, double Tr, int *ok) {
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.12, 0.1, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[0] = d.gravity[1] = d.gravity[2] = 0;
+    d.sph.xsph0 = 0.05;
+    d.sph.xsph_f = 0.5;
+    d.sph.xsph_T0 = 26;
+    d.sph.xsph_Tf = 120;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    *ok = s != NULL;
+    if (!s) return NULL;
+    const int m = newtonian(s, 1000, 1e4, 1.0);
+    const double llo[3] = {0.04, 0.04, 0}, lhi[3] = {0.06, 0.06, 0};
+    const double rlo[3] = {0.06, 0.04, 0}, rhi[3] = {0.08, 0.06, 0};
+    const int bl = sph_box(s, m, llo, lhi, 0, Tl), br = sph_box(s, m, rlo, rhi, 0, Tr);
+    const double up[3] = {0, 0.05, 0}, down[3] = {0, -0.05, 0};
+    hearth_error err;
+    *ok = m >= 0 && bl >= 0 && br >= 0 && hearth_scene_body_set_velocity(s, bl, up, &err) == HEARTH_OK &&
+          hearth_scene_body_set_velocity(s, br, down, &err) == HEARTH_OK;
+    return s;
+}
+
 /* Two 2D blocks of one Newtonian fluid side by side, 20 x 20 mm each, the
  * left at 120 degC sliding up at 5 cm/s, the right at 26 degC sliding down
  * at 5 cm/s: zero momentum, and no force from outside (gravity off, no
@@ -39,25 +65,12 @@ static void momentum(const hearth_scene *s, double P[3], double *scale) {
 TEST(sph_xsph_varied_eps_keeps_momentum) {
     for (int r = 0; r < 2; r++) {
         for (int hot = 0; hot < 2; hot++) {
-            const double dx = r == 0 ? 0.002 : 0.001, lo[3] = {0, 0, 0}, hi[3] = {0.12, 0.1, 0};
-            hearth_scene_def d = sph_def(2, dx, lo, hi);
-            d.gravity[0] = d.gravity[1] = d.gravity[2] = 0;
-            d.sph.xsph0 = 0.05;
-            d.sph.xsph_f = 0.5;
-            d.sph.xsph_T0 = 26;
-            d.sph.xsph_Tf = 120;
-            hearth_scene *s = hearth_scene_create(&d, NULL);
-            CHECK(s != NULL);
+            const double dx = r == 0 ? 0.002 : 0.001;
+            int ok;
+            hearth_scene *s = sliding_blocks(dx, hot ? 120 : 26, 26, &ok);
+            CHECK(ok);
             if (!s) return;
-            const int m = newtonian(s, 1000, 1e4, 1.0);
-            const double llo[3] = {0.04, 0.04, 0}, lhi[3] = {0.06, 0.06, 0};
-            const double rlo[3] = {0.06, 0.04, 0}, rhi[3] = {0.08, 0.06, 0};
-            const int bl = sph_box(s, m, llo, lhi, 0, hot ? 120 : 26), br = sph_box(s, m, rlo, rhi, 0, 26);
-            CHECK(m >= 0 && bl >= 0 && br >= 0);
-            const double up[3] = {0, 0.05, 0}, down[3] = {0, -0.05, 0};
             hearth_error err;
-            CHECK(hearth_scene_body_set_velocity(s, bl, up, &err) == HEARTH_OK);
-            CHECK(hearth_scene_body_set_velocity(s, br, down, &err) == HEARTH_OK);
             double P0[3], scale0;
             momentum(s, P0, &scale0);
             CHECK(fabs(P0[0]) + fabs(P0[1]) <= 1e-15 * scale0); /* the two blocks' masses are equal */
@@ -76,24 +89,10 @@ TEST(sph_xsph_varied_eps_keeps_momentum) {
 /* The left block's mean vertical velocity less the right's after 40 steps
  * of the two blocks above (left at Tl, right at Tr; they start 0.1 m/s apart). */
 static double shear_left(double dx, double Tl, double Tr, int *ok) {
-    const double lo[3] = {0, 0, 0}, hi[3] = {0.12, 0.1, 0};
-    hearth_scene_def d = sph_def(2, dx, lo, hi);
-    d.gravity[0] = d.gravity[1] = d.gravity[2] = 0;
-    d.sph.xsph0 = 0.05;
-    d.sph.xsph_f = 0.5;
-    d.sph.xsph_T0 = 26;
-    d.sph.xsph_Tf = 120;
-    hearth_scene *s = hearth_scene_create(&d, NULL);
-    *ok = s != NULL;
+    hearth_scene *s = sliding_blocks(dx, Tl, Tr, ok);
     if (!s) return NAN;
-    const int m = newtonian(s, 1000, 1e4, 1.0);
-    const double llo[3] = {0.04, 0.04, 0}, lhi[3] = {0.06, 0.06, 0};
-    const double rlo[3] = {0.06, 0.04, 0}, rhi[3] = {0.08, 0.06, 0};
-    const int bl = sph_box(s, m, llo, lhi, 0, Tl), br = sph_box(s, m, rlo, rhi, 0, Tr);
-    const double up[3] = {0, 0.05, 0}, down[3] = {0, -0.05, 0};
     hearth_error err;
-    *ok = m >= 0 && bl >= 0 && br >= 0 && hearth_scene_body_set_velocity(s, bl, up, &err) == HEARTH_OK &&
-          hearth_scene_body_set_velocity(s, br, down, &err) == HEARTH_OK && hearth_scene_step(s, 40, &err) == HEARTH_OK;
+    *ok = *ok && hearth_scene_step(s, 40, &err) == HEARTH_OK;
     const double *v = pcold(&s->ps, PC_V), *x = pcold(&s->ps, PC_X);
     double sum[2] = {0, 0};
     int cnt[2] = {0, 0};
