@@ -865,6 +865,14 @@ gravity_at_events_and_ramp)
     cat out.txt
     has out.txt "gravity_ramp ok" "step and ramp velocities, bad functions named"
     ;;
+lone_hot_particles_stay_bounded)
+    # explicit heat on a few hot particles that swell alone: no temperature beyond the start's extremes
+    # widened by the expansion's work (the marshmallow's lone particles reached 1e30 degC)
+    run lone_hot_particles.lua
+    expect_rc 0 "lone hot particles"
+    cat out.txt
+    has out.txt "lone_hot_particles ok" "temperatures within the bound"
+    ;;
 held_temperature_lua)
     # s:collider{fixed_temperature} and s:add{fixed_temperature}: refusals, held values, a checkpoint keeps them
     run held_temperature.lua

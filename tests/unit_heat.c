@@ -388,6 +388,44 @@ TEST(thermal_expansion) {
     hearth_scene_destroy(s);
 }
 
+/* The guard names a temperature that left every input's range before the
+ * stresses that read it (guard.c): an unstable heat step makes eq. 10's
+ * expansion and eq. 13's gas pressure huge wherever the motion then runs
+ * away, and naming one of them there blamed a consequence (cookies.lua with
+ * gas = 10 did so before the conduction cap in transport.c). One particle of
+ * a resting block is given the temperature such a step would leave (1e9
+ * degC, as no input can be); the guard must stop the run and name that
+ * particle's temperature, not thermal expansion. */
+TEST(guard_names_temperature_runaway) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 32;
+    d.gravity[1] = 0;
+    hearth_scene *s = fx_scene_def(&d);
+    const char *nm[] = {"E", "nu", "expansion", "conductivity", "reference_temperature"};
+    const double nv[] = {1e4, 0.3, 2, 0, 20};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 5, &err);
+    CHECK(m >= 0);
+    const double c[3] = {0.5, 0.5, 0}, h[3] = {0.1, 0.1, 0};
+    hearth_shape *box = hearth_shape_box(c, h);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = box, bd.material = m, bd.temperature = 20, bd.jitter = 0;
+    CHECK(hearth_scene_add_body(s, &bd, &err) == 0);
+    hearth_shape_free(box);
+    CHECK(hearth_scene_step(s, 5, &err) == HEARTH_OK);
+    const int k = s->ps.n / 2;
+    pcold(&s->ps, PC_TEMPERATURE)[k] = 1e9;
+    char want[64];
+    snprintf(want, sizeof want, "particle %d (id %d)", k, pcoli(&s->ps, PC_ID)[k]);
+    const hearth_status st = hearth_scene_step(s, 20, &err);
+    printf("  %s\n", err.msg);
+    CHECK(st == HEARTH_ERR_GUARD);
+    CHECK_STR_CONTAINS(err.msg, "the temperature ran away (an unstable heat step)");
+    CHECK_STR_CONTAINS(err.msg, want);
+    CHECK(strstr(err.msg, "blew the material apart") == NULL);
+    hearth_scene_destroy(s);
+}
+
 /* Parameters that follow temperature curves are evaluated per particle by the
  * core; an irreversible curve reads the highest temperature the particle reached. */
 TEST(temperature_curves) {
@@ -725,6 +763,7 @@ TEST(boundary_alloc_failures) {
 
 TEST_MAIN(T(slab_series_reference), T(heat_slab_robin_explicit), T(heat_slab_robin_implicit), T(heat_slab_surface_rows_converge),
           T(heat_insulated_conservation_explicit), T(heat_insulated_conservation_implicit), T(heat_pan_contact),
-          T(heat_determinism_threads), T(heat_flip_pic_bounds), T(thermal_expansion), T(temperature_curves),
+          T(heat_determinism_threads), T(heat_flip_pic_bounds), T(thermal_expansion), T(guard_names_temperature_runaway),
+          T(temperature_curves),
           T(thermal_expansion_plastic_sheared), T(robin_square_rotations), T(robin_round_reference),
           T(robin_disc_converges), T(robin_ball_converges), T(boundary_alloc_failures))

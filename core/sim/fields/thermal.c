@@ -134,7 +134,8 @@ double thermal_dt_limit(const hearth_scene *s) {
     for (int m = 0; m < s->mats.n; m++) {
         const material_slot *ms = &s->mats.slot[m];
         const double k = ms->core[CP_CONDUCTIVITY], ra = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
-        /* forward Euler on the B-spline Laplacian: rho alpha dx^2 / (2 dim kappa) */
+        /* forward Euler on the B-spline Laplacian: rho alpha dx^2 / (2 dim kappa), at the reference density;
+         * a particle swollen past what the step covers conducts over less than J V_0 (transport.c, cond_volume_cap) */
         if (k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * s->def.dim * k));
         /* and on the Robin term: a boundary cell's rho alpha dx^dim against beta dx^(dim-1) */
         if (beta > 0) dt = fmin(dt, ra * s->def.dx / (2.0 * beta));

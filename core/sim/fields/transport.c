@@ -19,6 +19,24 @@
  * The conduction and Fick terms use the B-spline gradients, whose columns sum
  * to zero, so neither creates heat or water.
  *
+ * Forward Euler's conduction volume (cond_volume_cap): a particle conducts
+ * over its quadrature volume J V_0 but holds heat m alpha = rho_0 alpha V_0,
+ * so its diffusivity is J kappa / (rho_0 alpha), and thermal_dt_limit's
+ * rho_0 alpha dx^2 / (2 dim kappa) covers J up to that limit over the step
+ * taken. A particle that swells far past it (a lone molten one under its
+ * thermal pressure, eq. 10: J ~ 1e30 in marshmallow.lua at expansion 2 Pa/K)
+ * made the step unstable, and its temperature and its neighbours' went to
+ * 1e30-1e90 degC (`lone_hot_particles_stay_bounded`). So the explicit pass
+ * conducts over at most COND_J_MARGIN V_0 (dt limit / dt), and the heat still
+ * sums to zero over the nodes. The margin 2: thermal_dt_limit is itself
+ * conservative for a full body (quadratic B-splines' stiffness stencil
+ * [-1/6, -1/3, 1, -1/3, -1/6] / dx^2 peaks at 4 / (3 dx^2) against the lumped
+ * capacity, so forward Euler holds to 1.5 rho alpha dx^2 / kappa, 6x the 2D
+ * limit), and swollen doughs are common: at margin 1 the cap acted on 6.2e6
+ * particle-steps of the test suite (J 1-2 at a heat-limited step), moving
+ * their numbers; at 2 only on 1539, all in bodies that swell without end
+ * (J up to 1e50). The implicit solve needs no cap and has none.
+ *
  * Particle blocks go in the 2^dim colours of P2G: deterministic, no atomics.
  * Dimension and the live fields are compile-time constants of each
  * instantiation, as in mpm.c.
@@ -47,6 +65,8 @@
 #include "mpm.h"
 
 #include "physics_constants.h"
+/* cond_volume_cap's margin over forward Euler's limit (header) */
+#define COND_J_MARGIN 2.0
 #define FORCE_INLINE static inline __attribute__((always_inline))
 
 FORCE_INLINE int tile_index(const int D, const int base[3], int a, int b, int c) {
@@ -209,7 +229,13 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
         const double xp = HEAT ? val[0] : 0.0, *gx = grad[0], si = WATER ? val[HEAT] : 0.0, *gs = grad[HEAT];
         double qk[3] = {0, 0, 0}, bcoef = 0, source = 0;
         if (HEAT) {
-            const double kap = Vp * ms->core[CP_CONDUCTIVITY];
+            const double k = ms->core[CP_CONDUCTIVITY];
+            double kv = Vp;
+            if (SRC && !apart && k > 0) { /* forward Euler: at most the volume its step covers (cond_volume_cap, above) */
+                const double jmax = COND_J_MARGIN * ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT] * g->dx * g->dx / (2.0 * D * k * dt);
+                kv = fmin(Vp, V0[i] * jmax);
+            }
+            const double kap = kv * k;
             for (int d = 0; d < 3; d++) qk[d] = kap * gx[d];
             bcoef = bnd ? s->heat.bnd_coef[i] : 0.0; /* thermal.c fills only flagged entries */
             if (SRC) {

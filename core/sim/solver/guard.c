@@ -24,6 +24,9 @@ static void describe_particle(const hearth_scene *s, int i, char *buf, size_t n)
              x[1], x[2], s->mats.slot[m].m->name, m);
 }
 
+/* |det F| past which an inverted or non-finite F counts as a swelling, not a crush (guard_measure) */
+#define GUARD_SWELL 1e3
+
 /* The pressure scale of each stress term at particle i after the step (Pa),
  * measured as mpm.c P2G adds them: the plugin's Kirchhoff stress (evaluated
  * with dt = 0 on a copy of the state, so the scene does not change), thermal
@@ -64,14 +67,19 @@ static void guard_measure(const hearth_scene *s, int i, guard_terms *t) {
     const material_env env = {.temperature = T ? T[i] : NAN, .saturation = NAN, .porosity = gas_porosity(JP, ms->core[CP_POROSITY0]),
                               .dim = s->def.dim};
     double tau[9];
-    const int rc = material_point_eval(ms->m, ms->core, &pt, &env, tau);
+    /* at an F past double range (a particle that swelled without end) no stress is defined: the plugin's
+     * term stays 0 and the pressure terms, which do not need F, still compare */
+    const int finite = isfinite(J);
+    const int rc = finite ? material_point_eval(ms->m, ms->core, &pt, &env, tau) : 1;
     plugin_call_leave();
-    if (rc == 0 || rc == MATERIAL_NONFINITE) { /* the plugin returned no code: its tau, finite or not, as before */
+    if (finite && (rc == 0 || rc == MATERIAL_NONFINITE)) { /* the plugin returned no code: its tau, finite or not, as before */
         double n2 = 0;
         for (int k = 0; k < 9; k++) n2 += tau[k] * tau[k];
         t->plugin = sqrt(n2 / 3.0);
     }
-    if (ms->core[CP_EXPANSION] > 0 && T && J > 0) {
+    /* J <= 0 too when |J| is past GUARD_SWELL or not finite: a particle that swelled until F overflowed or
+     * flipped (a crushed one's |J| is small) */
+    if (ms->core[CP_EXPANSION] > 0 && T && (J > 0 || !(fabs(J) <= GUARD_SWELL))) {
         t->expansion = fabs(ms->core[CP_EXPANSION] * (T[i] - ms->core[CP_REFERENCE_T])); /* material.h: eq. 10's thermal strain */
     }
     if (G && T) t->gas = fabs(gas_tau(G[i], T[i], gas_porosity(JP, ms->core[CP_POROSITY0])));
@@ -114,11 +122,15 @@ static int guard_temperature_runaway(const hearth_scene *s) {
  * away). So a temperature out of range is named first, at the particle where
  * it is furthest out. Otherwise "thermal expansion (...)" or "gas pressure
  * (...)" when that term outweighs the plugin's stress at particle i, the
- * culprit the caller picked. */
-static void guard_cause(const hearth_scene *s, int i, char *buf, size_t n) {
+ * culprit the caller picked. But for a particle that swelled past what F
+ * holds (swollen), the motion came first: a lone molten particle dilates
+ * under a thermal pressure its yielding skeleton never relaxes, and its
+ * temperature follows (docs/validation.md, "A lone hot particle"); so there
+ * the terms are weighed at i whatever the temperatures. */
+static void guard_cause(const hearth_scene *s, int i, int swollen, char *buf, size_t n) {
     buf[0] = '\0';
     guard_terms t;
-    const int hot = guard_temperature_runaway(s);
+    const int hot = swollen ? -1 : guard_temperature_runaway(s);
     if (hot >= 0) {
         const particles *ps = &s->ps;
         const double *x = pcold(ps, PC_X) + 3 * hot;
@@ -194,7 +206,15 @@ int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed
         case FAIL_V: snprintf(what, sizeof what, "velocity is NaN or inf"); break;
         default: snprintf(what, sizeof what, "velocity gradient C is NaN or inf"); break;
         }
-        snprintf(s->diagnosis, sizeof s->diagnosis, "guard: step %ld, t = %.6g s: %s: %s", s->step + 1, s->t + dt, who, what);
+        /* a particle that swelled past what F holds: name the term that drove it (a lone particle under its
+         * thermal pressure, docs/validation.md "A lone hot particle") */
+        cause[0] = '\0';
+        if (rep->kind == FAIL_F) {
+            double F[9];
+            particles_F3(&s->ps, i, F);
+            if (!(fabs(t3_det(F)) <= GUARD_SWELL)) guard_cause(s, i, 1, cause, sizeof cause); /* a crushed F is no swelling */
+        }
+        snprintf(s->diagnosis, sizeof s->diagnosis, "guard: step %ld, t = %.6g s: %s%s: %s", s->step + 1, s->t + dt, cause, who, what);
         return 1;
     }
     /* Two CFL conditions: no particle may cross more than a cell, and elastic
@@ -208,7 +228,7 @@ int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed
         const int culprit = jump > speed_move && rep->mover >= 0 ? rep->mover : rep->fastest;
         if (culprit >= 0) describe_particle(s, culprit, who, sizeof who);
         else snprintf(who, sizeof who, "no particle");
-        guard_cause(s, culprit, cause, sizeof cause);
+        guard_cause(s, culprit, 0, cause, sizeof cause);
         if (jump > speed_move && jump > 1.0 + 1e-9)
             snprintf(s->diagnosis, sizeof s->diagnosis,
                      "guard: step %ld, t = %.6g s: %sCFL violated: a particle moved %.3g cells in one step of dt = "
@@ -238,7 +258,7 @@ int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed
     if (ref > 1e-300 && rep->kinetic > s->def.energy_growth * ref && move > 1e-3) {
         if (rep->fastest >= 0) describe_particle(s, rep->fastest, who, sizeof who);
         else snprintf(who, sizeof who, "no particle");
-        guard_cause(s, rep->fastest, cause, sizeof cause);
+        guard_cause(s, rep->fastest, 0, cause, sizeof cause);
         snprintf(s->diagnosis, sizeof s->diagnosis,
                  "guard: step %ld, t = %.6g s: %skinetic energy ran away: it reached %.4g J, x%.3g the largest so far (%.4g J; limit x%g); "
                  "fastest: %s",
