@@ -309,13 +309,19 @@ int cmd_run(int argc, char **argv) {
         }
     }
     if (a.metric && status < 128) status = metric_report(L, &a, status);
-    run_log_scene(&rec, L);
+    /* Under several ranks stats() is collective while slabs are kept: a rank
+     * whose run failed on its own (a Lua error only it raised, between two
+     * step calls) would wait in it for ranks waiting in their next step. A
+     * guard stop reaches every rank at the same step, so it keeps its
+     * counters; after any other failure the record goes without them, and
+     * main's _exit lets mpirun end the others (#21). */
+    if (!(status && status != 3 && hearth_ranks_size() > 1)) run_log_scene(&rec, L);
     if (status) run_log_message(&rec, g_last_error);
     run_log_write(&rec, status);
     if (status == 0 && !a.quiet) fprintf(stderr, "hearth run: done; outputs in %s/\n", a.out);
     hl_close_state(L);
     app_ranks_cleanup(scratch);
-    app_ranks_report(&a);
+    app_ranks_report(&a, status, g_last_error);
     return status;
 }
 

@@ -3,7 +3,7 @@
  * (core/sim/solver/mpm_ranks.c), so rank 0 alone writes the outputs (PNG,
  * CSV, probes, s:vtu, the run record) and prints; the others run the same
  * scene file into a private scratch folder, removed at the end, and print
- * nothing (set HEARTH_RANKS_VERBOSE=1 to keep their messages) but a step
+ * nothing (set HEARTH_RANKS_VERBOSE=1 to keep their messages) but a
  * failure that may be theirs alone (app_ranks_report). The one
  * exception, s:run's VTU frames, are a piece per rank that every rank
  * writes into rank 0's folder (out_shared, lua_output.c's l_vtu_frame). Rejected: a write switch
@@ -54,15 +54,16 @@ void app_ranks_cleanup(const char *scratch) {
 }
 
 /* Rank 0's line; with HEARTH_RANKS_VERBOSE=1 too, every rank's (the others' stderr is kept then).
- * A quiet rank whose step failed outside a guard stop says why: that failure
- * may be its alone (an allocation, say), and without it the user would see
- * only mpirun's notice that a rank exited non-zero. Failures every rank meets
- * alike (a Lua error, the guard) stay rank 0's to print, once. */
-void app_ranks_report(const run_args *a) {
+ * A quiet rank whose run failed says why (status, message): the failure may
+ * be its alone (an allocation on an empty slab, a Lua error only it raised),
+ * and without it the user would see only mpirun's notice that a rank exited
+ * non-zero. A failure every rank meets alike then prints once per rank, each
+ * line naming its rank; the guard's stop, which reaches every rank at the
+ * same step, stays rank 0's alone to print. */
+void app_ranks_report(const run_args *a, int status, const char *message) {
     const char *verbose = getenv("HEARTH_RANKS_VERBOSE");
-    const char *failure = hearth_ranks_failure();
     if (quiet_stderr >= 0) {
-        if (failure) dprintf(quiet_stderr, "hearth run (MPI rank %d): a step failed on this rank: %s\n", hearth_ranks_rank(), failure);
+        if (status && status != 3) dprintf(quiet_stderr, "hearth run (MPI rank %d): %s\n", hearth_ranks_rank(), message);
         close(quiet_stderr);
         quiet_stderr = -1;
     }

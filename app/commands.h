@@ -45,8 +45,9 @@ int app_run_parse(run_args *a, int argc, char **argv, const char *cmd);
 int app_ranks_follow(run_args *a, char *scratch, size_t n);
 /// Remove that scratch folder (nothing for rank 0).
 void app_ranks_cleanup(const char *scratch);
-/// Rank 0 of several, unless --quiet: the ranks' exchange traffic and its share of the run, on stderr.
-void app_ranks_report(const run_args *a);
+/// Rank 0 of several, unless --quiet: the ranks' exchange traffic and its share of the run, on stderr;
+/// a quiet rank > 0 whose run failed (status, message) other than by the guard: that failure, on its own stderr.
+void app_ranks_report(const run_args *a, int status, const char *message);
 /// The built-in demo scene (cmd_run_demo.c): a jelly disc and syrup falling into a cup.
 hearth_scene *app_demo_scene(hearth_error *err);
 

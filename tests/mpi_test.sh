@@ -412,6 +412,20 @@ mpi_lone_failure_ends_every_rank)
         grep -q "Segmentation fault" "$tmp/$mode.txt" && fail "$mode: a process crashed on the way out"
     done
     ;;
+mpi_lua_error_on_one_rank_ends)
+    # the last rank alone raises a Lua error between two step calls; it must
+    # not wait in its run record's collective stats() while the others wait in
+    # their next step (#21): the run ends non-zero within the timeout, and
+    # that rank's message reaches the user though only rank 0 prints
+    mp "$ranks" s lua_error_one_rank.lua >"$tmp/out.txt" 2>"$tmp/err.txt"
+    st=$?
+    cat "$tmp/err.txt"
+    [ $st -ne 124 ] || fail "the ranks hung after one rank's Lua error (killed by the 50 s timeout)"
+    [ $st -ne 0 ] || fail "the run ended with status 0 after a Lua error"
+    grep -q "hearth run (MPI rank $((ranks - 1))): .*an error raised on rank $((ranks - 1)) alone" "$tmp/err.txt" ||
+        fail "the failed rank's message did not reach stderr"
+    grep -q "Segmentation fault" "$tmp/err.txt" && fail "a process crashed on the way out"
+    ;;
 mpi_sph_refused)
     mp "$ranks" s sph.lua >"$tmp/out.txt" 2>"$tmp/err.txt" && fail "an SPH scene ran over $ranks ranks"
     cat "$tmp/err.txt"

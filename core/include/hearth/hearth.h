@@ -770,11 +770,6 @@ double hearth_ranks_gathered(void);
 /// The fewest and the most particles this rank held at the end of a slab-mode
 /// step (0 and 0 before any): a rank whose slab held none says so (#21).
 void hearth_ranks_held(int *least, int *most);
-/// The message of the first step that failed on this rank outside a guard
-/// stop (which every rank meets together), or NULL: such a failure may be
-/// this rank's alone, and under mpirun only rank 0 prints, so the host prints
-/// this one itself (#21).
-const char *hearth_ranks_failure(void);
 
 #ifdef __cplusplus
 }

@@ -29,8 +29,6 @@ hearth_status ranks_sum_grid(grid *g, int slot_lo, int slot_hi, hearth_error *er
 void ranks_count_step(int what);
 /// The particles this rank holds after a slab-mode step (hearth_ranks_held).
 void ranks_count_held(int n);
-/// A step failed on this rank, perhaps on it alone: keep its message (the first) for hearth_ranks_failure.
-void ranks_note_failure(const char *msg);
 /// Every rank's `bytes` bytes at mine into all (ranks_size() x bytes), in rank order.
 void ranks_allgather_fixed(const void *mine, void *all, size_t bytes);
 /// Every rank's `bytes` bytes at mine (at most RANKS_COMBINE_MAX) combined in

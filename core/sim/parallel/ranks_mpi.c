@@ -12,7 +12,6 @@
  * nothing) and adds them in rank order. The cost is that every rank receives
  * every rank's written slots (docs/scaling.md models it). */
 #include <mpi.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -88,14 +87,6 @@ void ranks_count_step(int what) {
 double hearth_ranks_gathered(void) { return gathered_bytes; }
 
 static int held_least = -1, held_most; /* particles held after a slab-mode step; -1: none yet */
-
-static char failure[1024]; /* the first step failure this rank had alone (ranks_note_failure) */
-
-void ranks_note_failure(const char *msg) {
-    if (!failure[0]) snprintf(failure, sizeof failure, "%s", msg && msg[0] ? msg : "(no message)");
-}
-
-const char *hearth_ranks_failure(void) { return failure[0] ? failure : NULL; }
 
 void ranks_count_held(int n) {
     if (held_least < 0 || n < held_least) held_least = n;

@@ -27,8 +27,6 @@ void ranks_allgather_fixed(const void *mine, void *all, size_t bytes) {
 }
 void ranks_count_step(int what) { (void)what; }
 void ranks_count_held(int n) { (void)n; }
-void ranks_note_failure(const char *msg) { (void)msg; }
-const char *hearth_ranks_failure(void) { return NULL; }
 void hearth_ranks_held(int *least, int *most) { *least = *most = 0; }
 void hearth_ranks_steps(long *slabs, long *replicated, long *passes) { *slabs = *replicated = *passes = 0; }
 double hearth_ranks_gathered(void) { return 0; }

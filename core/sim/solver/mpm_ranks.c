@@ -381,10 +381,7 @@ void mpm_ranks_keep(hearth_scene *s, int on) {
  * point where they could learn it). */
 hearth_status mpm_ranks_end(hearth_scene *s, hearth_status st, hearth_error *err) {
     mpm_state *m = s->mpm;
-    if (m && m->nranks > 1 && st && st != HEARTH_ERR_GUARD && !m->failed_alone) {
-        m->failed_alone = 1;
-        ranks_note_failure(err ? err->msg : NULL);
-    }
+    if (m && m->nranks > 1 && st && st != HEARTH_ERR_GUARD) m->failed_alone = 1;
     if (!m || !slabs_live(m) || m->slabs->keep || m->failed_alone) return st;
     hearth_error e2;
     const hearth_status g = slabs_gather(s, st ? &e2 : err); /* a host that reads the scene directly */
