@@ -185,7 +185,7 @@ static const hearth_param params[P_COUNT] = {
     [P_FRACTURE_STRETCH] = {"fracture_stretch", "1",
                             "1: damage sums the stretch the point takes (largest principal deviatoric stretching, elastic "
                             "and plastic) over its fracture_strain at the time, so drying alone never cracks; 0: the "
-                            "elastic strain rule",
+                            "elastic strain rule (a switch: a blend of the two reads as 1 above 0.5)",
                             0, 0, 1},
 };
 
