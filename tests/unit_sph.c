@@ -997,8 +997,9 @@ TEST(sph_determinism_threads) {
 
 /* The loops written for one h (sph_fast_paths: in 2D the neighbour walk,
  * phase_kinematics and the forces' pair terms and their sums, each in
- * two-lane vectors; in 3D the walk, phase_kinematics and the pair terms
- * with i's kernel constants; without surface tension no colour Laplacian)
+ * two-lane vectors; in 3D the walk with i's kernel constants, and
+ * phase_kinematics and the pair terms with x, y in two lanes and z beside
+ * them; without surface tension no colour Laplacian)
  * against the general loops: a jittered elastic block (deviatoric stress in
  * the pair terms) with artificial viscosity and XSPH, 20 steps (10 in 3D)
  * each way, with and without surface tension; the hashes must agree bit

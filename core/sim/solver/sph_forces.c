@@ -214,6 +214,61 @@ static inline __attribute__((always_inline)) int pairs_once_2d(const struct sph_
     return np;
 }
 
+/* pairs_once in 3D with one h for all: pairs_once_2d's x, y pairs in one
+ * sph_v2 with each z beside them as a scalar, every expression pairs_once's
+ * in its order (r^2 = (dx^2 + dy^2) + dz^2, v_ij . d from +0 over x, y, z,
+ * each row's stress sum from +0 over x, y, z), so a slot holds the same bits
+ * (sph_fast_paths_same_bits). Like pairs_once_2d it takes no periodic
+ * displacement: the slots exist only without a periodic axis (pair_mirror). */
+static inline __attribute__((always_inline)) int pairs_once_3d(const struct sph_state *st, const sph_cols *c, int i,
+                                                                double av_beta, const int *mir, double *pc) {
+    const double *x = c->x, *v = c->v, *m = c->m;
+    const int *off = st->nl.off, *nb = st->nl.j;
+    const double *rho = st->rho, *Prr = st->perm, *mu = st->mu, *vc = st->vc;
+    const double ri = rho[i], Pi = Prr[i], *Si = st->S + 9 * i, mui = mu[i], vci = vc[i], mi = m[i];
+    const sph_kc kci = sph_kc_of(3, st->h[i]);
+    const double hij = kci.h;
+    const sph_v2 xi = sph_ld2(x + 3 * i), vi = sph_ld2(v + 3 * i);
+    const double xiz = x[3 * i + 2], viz = v[3 * i + 2];
+    const sph_v2 S0i = sph_ld2(Si), S1i = sph_ld2(Si + 3), S2i = sph_ld2(Si + 6), Szi = {Si[2], Si[5]};
+    const sph_v2 zero = {0, 0};
+    int np = 0;
+    for (int k = off[i + 1] - 1; k >= off[i] && nb[k] > i; k--, np++) {
+        const int j = nb[k], p = mir[k];
+        const sph_v2 d = xi - sph_ld2(x + 3 * j), dd = d * d;
+        const double dz = xiz - x[3 * j + 2];
+        const double r2 = dd[0] + dd[1] + dz * dz, r = sqrt(r2);
+        if (!(r > 0)) return -1;
+        const double rj = rho[j];
+        const double g = sph_dw_kc(&kci, r) / r;
+        const sph_v2 vij = vi - sph_ld2(v + 3 * j), vdd = vij * d;
+        const double vijz = viz - v[3 * j + 2];
+        const double vd = 0 + vdd[0] + vdd[1] + vijz * dz;
+        double Pij = Pi + Prr[j]; /* eq. 3.18 */
+        if (av_beta > 0 && vd < 0) { /* eq. 3.41, with mu_ij of eq. 3.37 */
+            const double muij = hij * vd / (r2 + 0.01 * hij * hij);
+            Pij += av_beta * muij * muij / (0.5 * (ri + rj));
+        }
+        const double *Sj = st->S + 9 * j, lv = sph_lap_visc_kc(&kci, r);
+        const double mu2 = 0.5 * (mui + mu[j]), rr = rj * ri, vc2 = 0.5 * (vci + vc[j]);
+        const double visc = mu2 * m[j] / rr * lv * vc2, viscj = mu2 * mi / rr * lv * vc2; /* as forces_pairs' */
+        /* row q's sum (S_q0 d_0 + S_q1 d_1) + S_q2 d_2 from +0: rows x, y transposed into lanes as in
+         * pairs_once_2d, their z products as one pair; row z alone */
+        const sph_v2 a0 = (S0i + sph_ld2(Sj)) * d, a1 = (S1i + sph_ld2(Sj + 3)) * d, a2 = (S2i + sph_ld2(Sj + 6)) * d;
+        const sph_v2 az = (Szi + (sph_v2){Sj[2], Sj[5]}) * dz;
+        const sph_v2 sdv = ((zero + (sph_v2){a0[0], a1[0]}) + (sph_v2){a0[1], a1[1]}) + az;
+        const double sdz = ((0 + a2[0]) + a2[1]) + (Si[8] + Sj[8]) * dz;
+        const sph_v2 t = -Pij * g * d + sdv * g, nd = -d, nsd = -sdv, nv = -vij;
+        const sph_v2 ti = m[j] * t - visc * vij, tj = mi * (-Pij * g * nd + nsd * g) - viscj * nv;
+        const double tz = -Pij * g * dz + sdz * g, ndz = -dz, nsdz = -sdz, nvz = -vijz;
+        memcpy(pc + 3 * (size_t)k, &ti, sizeof ti);
+        pc[3 * (size_t)k + 2] = m[j] * tz - visc * vijz;
+        memcpy(pc + 3 * (size_t)p, &tj, sizeof tj); /* j's, as its own loop has it */
+        pc[3 * (size_t)p + 2] = mi * (-Pij * g * ndz + nsdz * g) - viscj * nvz;
+    }
+    return np;
+}
+
 /* For each list entry k of particle i with j = nb[k] > i, the slot of j's
  * list that holds i, into st->pairm[k]. Without a periodic axis the lists
  * ascend (sph_neighbours.c's stencil: rows of sorted cells in order), so
@@ -298,6 +353,14 @@ static inline __attribute__((always_inline)) void forces_one(hearth_scene *s, co
         sph_v2 av = {a[0], a[1]};
         for (int k = st->nl.off[i]; k < st->nl.off[i + 1]; k++) av += sph_ld2(pc + 2 * (size_t)k);
         a[0] = av[0], a[1] = av[1];
+    } else if (pc && sph_fast_paths) { /* in 3D likewise, with z beside */
+        sph_v2 av = {a[0], a[1]};
+        double az = a[2];
+        for (int k = st->nl.off[i]; k < st->nl.off[i + 1]; k++) {
+            av += sph_ld2(pc + 3 * (size_t)k);
+            az += pc[3 * (size_t)k + 2];
+        }
+        a[0] = av[0], a[1] = av[1], a[2] = az;
     } else if (pc) {
         for (int k = st->nl.off[i]; k < st->nl.off[i + 1]; k++)
             for (int q = 0; q < dim; q++) a[q] += pc[(size_t)dim * k + q];
@@ -350,14 +413,14 @@ void sph_forces(hearth_scene *s, double dt) {
         const int *mir = st->pairm;
         long pairs = 0;
         int bad = 0;
-        int uni = sph_fast_paths; /* one h for all: in 2D pairs_once_2d, in 3D i's kernel constants */
+        int uni = sph_fast_paths; /* one h for all: pairs_once_2d, pairs_once_3d */
         for (int i = 1; i < n && uni; i++) uni = st->h[i] == st->h[0];
-        const int uni2 = uni && dim == 2;
+        const int uni2 = uni && dim == 2, uni3 = uni && dim == 3;
 #pragma omp parallel for schedule(static) reduction(+ : pairs, bad) if (n >= SCENE_PARALLEL_MIN)
         for (int i = 0; i < n; i++) {
             const int k = uni2 ? pairs_once_2d(st, &c, i, av_beta, mir, pc)
                           : dim == 2 ? pairs_once(st, &c, i, 2, 0, av_beta, mir, pc)
-                          : uni      ? pairs_once(st, &c, i, 3, 1, av_beta, mir, pc)
+                          : uni3     ? pairs_once_3d(st, &c, i, av_beta, mir, pc)
                                      : pairs_once(st, &c, i, 3, 0, av_beta, mir, pc);
             if (k < 0) bad++;
             else pairs += k;

@@ -50,8 +50,9 @@ typedef struct sph_nlist {
 } sph_nlist;
 
 /// 1 (the default): the loops written for one h (the neighbour walk here;
-/// phase_kinematics in sph.c and the pair terms in sph_forces.c, in 2D as
-/// two-lane vectors) take those copies when every h is the same; 0 sends
+/// phase_kinematics in sph.c and the pair terms in sph_forces.c, as
+/// two-lane vectors, in 3D with z beside them) take those copies when every
+/// h is the same; 0 sends
 /// every step through the general loops. The copies give the same bits;
 /// `sph_fast_paths_same_bits` switches them off to check it.
 extern int sph_fast_paths;
