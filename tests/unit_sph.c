@@ -105,7 +105,7 @@ TEST(sph_kernel_one_pass_same_bits) {
                 sph_w_dw_lap_kc(dim, &kc, r, &w, &dw, &lap);
                 const double w0 = sph_w(dim, r, h), dw0 = sph_dw(dim, r, h), lap0 = sph_lap_w(dim, r, h);
                 const double lv = sph_lap_visc_kc(&kc, r), lv0 = sph_lap_visc(dim, r, h);
-                double w1, dw1; /* without the Laplacian (phase_kinematics without surface tension) */
+                double w1, dw1; /* without the Laplacian (sph_kinematics without surface tension) */
                 sph_w_dw_lap_kc(dim, &kc, r, &w1, &dw1, NULL);
                 differ += memcmp(&w, &w0, sizeof w) || memcmp(&dw, &dw0, sizeof dw) ||
                           memcmp(&lap, &lap0, sizeof lap) || memcmp(&lv, &lv0, sizeof lv) ||
@@ -996,9 +996,9 @@ TEST(sph_determinism_threads) {
 }
 
 /* The loops written for one h (sph_fast_paths: in 2D the neighbour walk,
- * phase_kinematics and the forces' pair terms and their sums, each in
+ * sph_kinematics and the forces' pair terms and their sums, each in
  * two-lane vectors; in 3D the walk with i's kernel constants, and
- * phase_kinematics and the pair terms with x, y in two lanes and z beside
+ * sph_kinematics and the pair terms with x, y in two lanes and z beside
  * them; without surface tension no colour Laplacian)
  * against the general loops: a jittered elastic block (deviatoric stress in
  * the pair terms) with artificial viscosity and XSPH, 20 steps (10 in 3D)

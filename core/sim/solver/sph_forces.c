@@ -295,7 +295,7 @@ static long pair_mirror(struct sph_state *st, int n) {
 
 /* The step's pair slots, after the lists: st->pairm by pair_mirror, room in
  * st->pairc for dim + 1 doubles per list entry (the forces' dim terms,
- * which XSPH's weights reuse, and W_ij from phase_kinematics), and
+ * which XSPH's weights reuse, and W_ij from sph_kinematics), and
  * st->pair_ok when every slot has its pair. Periodic axes wrap the
  * stencil's rows, so their lists do not ascend: no slots then, and each
  * pass takes its per-particle loop. */
@@ -314,7 +314,7 @@ hearth_status sph_pairs_prepare(hearth_scene *s, hearth_error *err) {
             return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory for %zu pair slots", nent);
         }
     }
-    const size_t need = (size_t)(s->def.dim + 1) * nent; /* the forces' dim terms, then W (phase_kinematics) */
+    const size_t need = (size_t)(s->def.dim + 1) * nent; /* the forces' dim terms, then W (sph_kinematics) */
     if (need > st->pairc_cap) {
         mem_free(st->pairc, sizeof(double) * st->pairc_cap);
         st->pairc_cap = need + need / 4 + 16;

@@ -50,7 +50,7 @@ typedef struct sph_nlist {
 } sph_nlist;
 
 /// 1 (the default): the loops written for one h (the neighbour walk here;
-/// phase_kinematics in sph.c and the pair terms in sph_forces.c, as
+/// sph_kinematics (sph_kinematics.c) and the pair terms in sph_forces.c, as
 /// two-lane vectors, in 3D with z beside them) take those copies when every
 /// h is the same; 0 sends
 /// every step through the general loops. The copies give the same bits;

@@ -32,7 +32,7 @@ struct sph_state {
     int cap, n;     /* arrays hold cap particles; n = particles of the last step (-1 = stale) */
     int valid;      /* per-particle results match the scene's particles */
     int *key, *order;
-    double *perm;   /* permutation scratch, cap doubles; m / rho in phase_kinematics, P / rho^2 (eq. 3.18) from sph_forces on */
+    double *perm;   /* permutation scratch, cap doubles; m / rho in sph_kinematics, P / rho^2 (eq. 3.18) from sph_forces on */
     /* S: the deviatoric Kirchhoff-over-J stress of phase_stress; divided by
      * rho^2 in place once sph_forces starts (what eq. 3.18's sum reads) */
     double *rho, *prs, *h, *S, *acc, *vnew, *N, *lapC, *surf, *rhof, *dT, *Tprev;
@@ -110,12 +110,17 @@ hearth_status sph_material_added(hearth_scene *s, int mat, hearth_error *err);
 /// eq. 3.8's renormalisation c_a of particle i (for st->vc) from its neighbour
 /// sums, over neighbours b at d = x_a - x_b, r = |d| > 0, V_b = m_b / rho_b,
 /// L = sph_lap_visc(r, h_ab): fill = sum V_b W(r, h_ab), tr = sum V_b L r^2,
-/// g = sum V_b L r^2 d (phase_kinematics takes them). Needs st->sp, st->rho, st->h.
+/// g = sum V_b L r^2 d (sph_kinematics takes them). Needs st->sp, st->rho, st->h.
 double sph_viscous_factor(const hearth_scene *s, int i, double fill, double tr, const double g[3]);
-/// Before phase_kinematics' loop: keep the resting-lattice moment for the
+/// Before sph_kinematics' loop: keep the resting-lattice moment for the
 /// first particle's h / spacing, which most particles share (it is summed
 /// over the lattice, so each call for it would repeat the same sum).
 void sph_lattice_moment_prepare(hearth_scene *s);
+
+/* ---- sph_kinematics.c ---- */
+/// The velocity gradient (eq. 3.27) into C, the colour field's gradient and
+/// Laplacian (eq. 3.28-3.29), surface particles and eq. 3.8's moments.
+void sph_kinematics(hearth_scene *s);
 
 /* ---- sph_forces.c ---- */
 /// The step's artificial stress R / rho^2 per particle (Monaghan 2000), when

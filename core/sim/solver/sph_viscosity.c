@@ -90,7 +90,7 @@ static double lattice_moment(int dim, double h) {
  * Poiseuille flow went from 0.58% to 3.4% off at 20 across.
  *
  * The neighbour sums (fill, tr M and the moment's centre g) are taken in
- * phase_kinematics' loop over the neighbours (sph.c), which reads the same
+ * sph_kinematics' loop over the neighbours (sph_kinematics.c), which reads the same
  * pairs; this closes them into c_a. */
 double sph_viscous_factor(const hearth_scene *s, int i, double fill, double tr, const double g[3]) {
     const struct sph_state *st = s->sph;
