@@ -95,7 +95,12 @@ int main(int argc, char **argv) {
      * the policy when it is loaded, before main, so set it and start again. */
     if (!getenv("OMP_WAIT_POLICY")) {
         setenv("OMP_WAIT_POLICY", "passive", 1);
-        execv("/proc/self/exe", argv); /* returns only on failure: then carry on as we are */
+        /* Under valgrind /proc/self/exe is valgrind's tool, which refuses to be
+         * started by hand ("You cannot run ... directly"): there carry on with
+         * the default policy. valgrind preloads its vgpreload_*.so. */
+        const char *pre = getenv("LD_PRELOAD");
+        if (!pre || !strstr(pre, "vgpreload"))
+            execv("/proc/self/exe", argv); /* returns only on failure: then carry on as we are */
     }
     /* A plugin that crashes or calls exit() inside a callback is named, and the
      * process ends with status 4 (crash.c); other crashes keep their default. */
