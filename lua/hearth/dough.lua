@@ -19,6 +19,34 @@
 --    theta_4 = 70 degC (starch gelatinises), constant beyond, irreversible
 --    (the core evaluates it at the highest temperature a particle reached,
 --    so a set cookie stays set).
+--  * COOKIE_SET (issue #18; SET below): the cookie's Fig. 8 temperatures are a
+--    sugar-snap dough's, not bread's. Ding et al. give theta_1..theta_4 as
+--    "typical temperature ranges" whose "actual values vary among the
+--    different examples"; read as bread's (x0.3 at 35 degC rising linearly
+--    to x20 at 70 degC) the cookie stiffened from 35 degC (x6.6 by 38 degC)
+--    and every pore froze at ~38 degC, 0.9 s into the bake, with 41% of its
+--    CO2 made (docs/validation.md, "The cookie's CO2 traced"). A real cookie
+--    dough does the opposite: its fat melts between 10 and 50 degC
+--    (Chevallier, Colonna, Della Valle & Lourdin 2000, J. Cereal Sci. 31:241,
+--    DSC and DMTA of biscuit doughs) and it spreads while soft; its diameter
+--    grows linearly and then "suddenly became fixed" about halfway through the
+--    bake (5.1-5.8 min of 10-11: Miller & Hoseney 1997, Cereal Chem. 74:330);
+--    the set is the gluten's glass transition (Doescher, Hoseney & Milliken
+--    1987, Cereal Chem. 64:158), measured in cookie dough at 71 degC (hard
+--    wheat flour) and 78 degC (soft wheat flour, a cookie's) and correlated
+--    with the set time at r = 0.97-0.99 (Miller, Hoseney & Morris 1996, J.
+--    Thermal Anal. 47:1329); sucrose and the low water raise the starch's
+--    gelatinisation so far that "little if any of it gelatinizes" (Pareyt,
+--    Brijs & Delcour 2009, J. Agric. Food Chem. 57:7814, who find the set
+--    in the gluten's cross-linking, delayed by sucrose), so there is no
+--    60-70 degC starch set. So the cookie's curves keep Fig. 8's values and shape (x1,
+--    x0.8, x0.3, x20 on tau_y; x1, x0.5, x0.1, x0.05 on eta) at its own
+--    temperatures: 5, 20, 35 degC as Fig. 8, the melted value held to 71
+--    degC, and set by 78 degC (the two flours' glass transitions, the sudden
+--    set's width). Baked biscuit is ~2/3 gas (bulk density 1.26 -> 0.42
+--    g/cm^3, Chevallier et al. 2000, J. Agric. Food Chem. 48:1322), so no
+--    pore cap is needed below that. Measured: docs/validation.md, "The
+--    cookie's set (#18, session 30)".
 --  * eta: g = f^2/2 with f in Pa^2 (eq. 12, §6.5) makes eta a Pa^3 s
 --    quantity. Table 2's eta taken in those units returns to the surface
 --    within one step at the scenes' steps (rate-independent), so nothing
@@ -185,6 +213,8 @@ local FRACTURE_X, FRACTURE_DRY, FRACTURE_WET = { 0.16, 0.41 }, 0.02, 100
 local THETA = { 5, 20, 35, 70 }            -- Fig. 8: fridge, room, fat melting, gelatinisation (degC)
 local TAU_SHAPE = { 1, 0.8, 0.3, 20 }      -- Fig. 8 left, relative to Table 2's value
 local ETA_SHAPE = { 1, 0.5, 0.1, 0.05 }    -- Fig. 8 right, relative to ETA_SCALE x Table 2's value
+-- a good whose Fig. 8 temperatures differ (COOKIE_SET above): its points and shapes replace THETA, TAU_SHAPE, ETA_SHAPE
+local SET = { cookie = { theta = { 5, 20, 35, 71, 78 }, tau = { 1, 0.8, 0.3, 0.3, 20 }, eta = { 1, 0.5, 0.1, 0.1, 0.05 } } }
 
 -- Table 2, one column per good (N/A as nil).
 local paper = {
@@ -211,12 +241,12 @@ local paper = {
 -- per-good factors on top of the global ones (see the header)
 local TUNE = { bread = { tau = 10 }, muffin = { kappa = 0.005, tau = 10, gas = 2.5, max_porosity = 0.6 }, lava_cake = { gas = 0.1 } }
 
-local D = { paper = paper, TUNE = TUNE, WATER = WATER, WATER_S = WATER_S, DRY_X = DRY_X, DRY_F = DRY_F, DRY_X0 = DRY_X0, ETA_SCALE = ETA_SCALE, GAS_SCALE = GAS_SCALE, THETA = THETA, TAU_SHAPE = TAU_SHAPE,
+local D = { paper = paper, TUNE = TUNE, SET = SET, WATER = WATER, WATER_S = WATER_S, DRY_X = DRY_X, DRY_F = DRY_F, DRY_X0 = DRY_X0, ETA_SCALE = ETA_SCALE, GAS_SCALE = GAS_SCALE, THETA = THETA, TAU_SHAPE = TAU_SHAPE,
   ETA_SHAPE = ETA_SHAPE }
 
-local function curve(base, shape)
+local function curve(base, shape, theta)
   local pts = { irreversible = true }
-  for i, T in ipairs(THETA) do pts[i] = { T, base * shape[i] } end
+  for i, T in ipairs(theta or THETA) do pts[i] = { T, base * shape[i] } end
   return pts
 end
 
@@ -235,7 +265,9 @@ function D.preset(name)
   }
   -- eta carries the square of the tau_y factor (header, "Rise"): eta / tau_y^2 is the dough's viscosity
   local tau = tune.tau or 1
-  local curves = { tau_y = curve(c.yield * tau, TAU_SHAPE), eta = curve(c.eta * ETA_SCALE * tau * tau, ETA_SHAPE) }
+  local set = SET[name] or { theta = THETA, tau = TAU_SHAPE, eta = ETA_SHAPE }
+  local curves = { tau_y = curve(c.yield * tau, set.tau, set.theta),
+    eta = curve(c.eta * ETA_SCALE * tau * tau, set.eta, set.theta) }
   local dry -- factor points {X/X0, f(X)/f(X0)} for E and tau_y (DRY above)
   if DRY_X0[name] then
     local X0, f0 = DRY_X0[name], 1

@@ -94,8 +94,12 @@ D.goods = {
     -- rheology: short doughs are stiffer than bread dough (G' 1e4-1e5 Pa, Dobraszczyk & Morgenstern 2003's range for
     -- doughs); E = 1e5, yield 500 Pa, viscosity 1e5 Pa s; the cookie spreads as the fat melts (Fig. 8's dip)
     E = 1e5, nu = 0.3, tau_y = 500, mu = 1e5,
-    gas_rate = 0.015 / 600 * 3 / 660, reaction_temperature = 40, -- as bread's: the paper cookie's CO2 over cookies.lua's 3 s reaction_width = 20, porosity = 0.1,
+    -- CO2 as bread's: the paper cookie's over cookies.lua's 3 s
+    gas_rate = 0.015 / 600 * 3 / 660, reaction_temperature = 40, reaction_width = 20, porosity = 0.1,
     expansion = 0.1, dough_temperature = 20,
+    -- the set: a sugar-snap dough's gluten glass transition at 71-78 degC, no starch gelatinisation (lua/hearth/dough.lua,
+    -- COOKIE_SET, the same curve as h.library.paper.cookie's)
+    curve = "cookie",
     oven_temperature = 190, oven_beta = 30, pan_temperature = 190, pan_beta = 100,
     time_scale = 50, bake_time_real = 660,
   },
@@ -109,16 +113,17 @@ D.goods = {
     -- a batter flows: E 1e4, yield 20 Pa, viscosity 1e2 Pa s (batters are 1-100 Pa s fluids; chosen at the top, so
     -- it stands in its cup while it heats), setting at 70 degC
     E = 1e4, nu = 0.3, tau_y = 20, mu = 100, max_porosity = 0.6,
-    gas_rate = 0.03 / 600 * 2.5 * 3 / 1320, reaction_temperature = 40, -- as bread's: the paper muffin's over muffins.lua's 3 s reaction_width = 20, porosity = 0.1,
+    -- CO2 as bread's: the paper muffin's over muffins.lua's 3 s
+    gas_rate = 0.03 / 600 * 2.5 * 3 / 1320, reaction_temperature = 40, reaction_width = 20, porosity = 0.1,
     expansion = 0.1, dough_temperature = 20,
     oven_temperature = 180, oven_beta = 30, pan_temperature = 180, pan_beta = 100,
     time_scale = 60, bake_time_real = 1320,
   },
 }
 
-local function curve(points)
+local function curve(points, theta)
   local pts = { irreversible = true }
-  for i, T in ipairs(THETA) do pts[i] = { T, points(i) } end
+  for i, T in ipairs(theta) do pts[i] = { T, points(i) } end
   return pts
 end
 
@@ -137,9 +142,12 @@ function D.preset(name)
     porosity = g.porosity, max_porosity = g.max_porosity, expansion = g.expansion,
     reference_temperature = g.dough_temperature,
   }
+  -- Fig. 8's points, or a good's own (the cookie's set, lua/hearth/dough.lua's SET)
+  local set = g.curve and require("hearth.dough").SET[g.curve]
+  local theta, ts, ms = set and set.theta or THETA, set and set.tau or TAU_SHAPE, set and set.eta or MU_SHAPE
   local curves = {
-    tau_y = curve(function(i) return g.tau_y * TAU_SHAPE[i] end),
-    eta = curve(function(i) local t = g.tau_y * TAU_SHAPE[i]; return 2 * t * t * g.mu * MU_SHAPE[i] / S end),
+    tau_y = curve(function(i) return g.tau_y * ts[i] end, theta),
+    eta = curve(function(i) local t = g.tau_y * ts[i]; return 2 * t * t * g.mu * ms[i] / S end, theta),
   }
   local oven = { temperature = g.oven_temperature, beta = g.oven_beta * S, pan_temperature = g.pan_temperature,
     pan_beta = g.pan_beta * S, dough_temperature = g.dough_temperature, saturation = g.saturation,

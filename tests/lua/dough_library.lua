@@ -13,8 +13,15 @@ for name, t in pairs(T2) do
   -- Fig. 8: tau_y at the fridge point is Table 2's value, dips while fat melts, sets x20 at gelatinisation
   local ty = d.tau_y
   local k = (name == "bread" or name == "muffin") and 10 or 1 -- bread's and muffin's documented tau_y factor
+  local np = #(rawget(ty, "base") or ty) -- the curve's points (under a moisture factor's product)
   assert(ty.irreversible and ty[1][2] == k * t[3] and ty[3][2] < ty[2][2] and ty[2][2] < ty[1][2]
-    and ty[4][2] == 20 * k * t[3], name .. ": tau_y curve shape")
+    and ty[np][2] == 20 * k * t[3], name .. ": tau_y curve shape")
+  if name == "cookie" then -- dough.lua's COOKIE_SET: melted from 35 degC, held soft to 71 degC, set by 78 degC
+    assert(np == 5 and ty[3][1] == 35 and ty[4][1] == 71 and ty[4][2] == ty[3][2] and ty[5][1] == 78,
+      "cookie: soft from 35 to 71 degC, set by 78 degC (Miller et al. 1996's glass transition)")
+  else
+    assert(np == 4 and ty[3][1] == 35 and ty[4][1] == 70, name .. ": Fig. 8's points at 35 and 70 degC")
+  end
   -- issue #18: E and tau_y of the doughs that bake a crust stiffen as they dry (dough.lua's DRY), x1 when raw
   local dry = ({ bread = 100, muffin = 100, cookie = 100 / 4.6 })[name]
   if dry then

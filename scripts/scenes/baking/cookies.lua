@@ -24,9 +24,11 @@
 --                           ~0.3 W/(m K), Biot ~1, so top and edges set first);
 --                           water as bread's (dough.lua WATER: s_0 0.10 for a
 --                           20 % wb cookie dough, so the surface dries and
---                           dough.lua's DRY curve stiffens it); Fig. 8's tau_y
---                           and eta held at their 35 degC values up to
---                           soft_until degC (a later set); the plugin's pore
+--                           dough.lua's DRY curve stiffens it); bread's Fig. 8
+--                           points (set at 70 degC) with tau_y and eta held at
+--                           their 35 degC values up to soft_until degC (the
+--                           levers of sessions 26-28, before the preset took its
+--                           own set, dough.lua's COOKIE_SET); the plugin's pore
 --                           cap. Not presets: the defaults are Table 2's cookie.
 -- Writes, under hearth-out/cookies/: oven_<T>/heat_%04d.png (the heat
 -- progress, Fig. 3's right column) and cookies.csv (final height, spread and
@@ -37,10 +39,11 @@
 -- a least-squares parabola over the middle 60% of the cookie's width.
 -- What shapes the top (measured, 2D, dx 7.5 mm, 150 degC): the cold dough
 -- (tau_y 20 Pa) cannot carry its own 25 mm (rho g H ~ 120 Pa); with eta the
--- full model slumps slowly and is set while still rounded; its CO2 swells it
--- only while it is soft (0.5-0.9 s: +6% area, n^p 0.12-0.25), evenly, and the
--- rest of the gas is made after it sets at ~35 degC (docs/validation.md, "The
--- cookie, measured again"). The baseline does not flow at all: its
+-- full model slumps slowly, and once its fat has melted (35 degC) it spreads
+-- soft until its gluten sets at 71-78 degC (dough.lua, COOKIE_SET), ~1.6 s;
+-- the CO2 (Table 2: 40 +- 20 degC) is made while it is soft and puffs the
+-- leavened cookie (area +73%) while the unleavened one spreads flatter
+-- (docs/validation.md, "The cookie's set"). The baseline does not flow at all: its
 -- weight strains it ~0.2%, inside the snow law's clamp, so it keeps the
 -- placed dough's shape (a capsule: flat top, round ends) through the bake,
 -- and its top curvature is the measures' reading of that shape (see
