@@ -928,7 +928,8 @@ TEST(grip_holds_pulled_strip) {
 
 /* The MPM step's scratch is MPM's (struct mpm_state, mpm.h): made with the
  * scene, grown by the sort, P2G's volumes only once heat or water is live;
- * and the memory estimate's scratch term is still the sort's 24 bytes. */
+ * and the memory estimate's scratch term is the sort's 16 bytes (order and
+ * keys, the permutation working in the keys' room) and the volumes' 8. */
 TEST(mpm_state_owned_by_solver) {
     hearth_scene *s = fx_scene(2, 0.05, 0, 1);
     CHECK(s != NULL);
@@ -950,7 +951,7 @@ TEST(mpm_state_owned_by_solver) {
     double cols = 0;
     for (int k = 0; k < PC_COUNT; k++)
         if (s->ps.enabled & (1u << k)) cols += (double)particles_col_bytes(&s->ps, k);
-    CHECK(scene_bytes_per_particle(s) == cols + sizeof(int) + 2 * sizeof(double)); /* order; scratch holding the keys; volumes */
+    CHECK(scene_bytes_per_particle(s) == cols + 2 * sizeof(int) + sizeof(double)); /* order; keys (the permutation's scratch); volumes */
     CHECK(hearth_scene_set_oven(s, 180, 10, &err) == HEARTH_OK);
     CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
     CHECK(st->vol != NULL);

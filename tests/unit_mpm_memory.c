@@ -176,16 +176,19 @@ TEST(determinism_threads_2d_bookkeeping) {
 
 /* particles_permute gives new[i] = old[order[i]] in every column, whether
  * the particles moved a little (the window through a ring, whole records)
- * or anywhere (component by component), at one and two threads. */
+ * or anywhere (following the cycles), at one and two threads, through n
+ * doubles of scratch (SPH's) or n ints (MPM's keys; there with a plugin
+ * state of 40 doubles, wider than the cycles' 256-byte slice). */
 TEST(particles_permute_orders) {
     hearth_error err;
+    for (int ints = 0; ints < 2; ints++)
     for (int kind = 0; kind < 2; kind++)
         for (int t = 1; t <= 2; t++) {
             hearth_set_threads(t);
             particles ps;
             particles_init(&ps);
-            const int n = 6000;
-            CHECK(particles_enable(&ps, PC_FLAGS, &err) == HEARTH_OK && particles_set_state_stride(&ps, 5, &err) == HEARTH_OK);
+            const int n = 6000, stride = ints ? 40 : 5;
+            CHECK(particles_enable(&ps, PC_FLAGS, &err) == HEARTH_OK && particles_set_state_stride(&ps, stride, &err) == HEARTH_OK);
             CHECK(particles_reserve_exact(&ps, n, &err) == HEARTH_OK);
             ps.n = n;
             for (int c = 0; c < PC_COUNT; c++) {
@@ -198,7 +201,8 @@ TEST(particles_permute_orders) {
             }
             /* kind 0: runs shifted by a few dozen places (a sort after a step); 1: a scattered order */
             int *order = malloc(sizeof(int) * n);
-            double *scratch = malloc(sizeof(double) * n);
+            const size_t room = (ints ? sizeof(int) : sizeof(double)) * (size_t)n;
+            void *scratch = malloc(room);
             for (int i = 0; i < n; i++) order[i] = i;
             if (kind == 0)
                 for (int i = 0; i + 40 < n; i += 97) { /* rotate [i, i + 40) by one: place i takes i + 39 */
@@ -208,7 +212,7 @@ TEST(particles_permute_orders) {
                 }
             else
                 for (int i = 0; i < n; i++) order[i] = (int)(((long)i * 2713) % n); /* 2713 and 6000 are coprime */
-            particles_permute(&ps, order, scratch);
+            particles_permute(&ps, order, scratch, room);
             int bad = 0;
             for (int c = 0; c < PC_COUNT; c++) {
                 if (!(ps.enabled & (1u << c))) continue;
@@ -220,7 +224,8 @@ TEST(particles_permute_orders) {
                                                        : pcold(&ps, c)[i * nc + k] != (double)want + 0.25;
                     }
             }
-            printf("  %s order, %d thread(s): %d wrong values\n", kind ? "scattered" : "shifted", t, bad);
+            printf("  %s order, %d thread(s), n %s of scratch: %d wrong values\n", kind ? "scattered" : "shifted", t,
+                   ints ? "ints" : "doubles", bad);
             CHECK(bad == 0);
             free(order);
             free(scratch);

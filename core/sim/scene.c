@@ -145,7 +145,7 @@ size_t hearth_scene_bytes_used(const hearth_scene *s) {
     if (s->def.guard == HEARTH_GUARD_ROLLBACK) b *= 2; /* the snapshot holds the same columns */
     const mpm_state *m = mpm_state_of(s);
     if (m) { /* what the MPM step's scratch holds for these particles, and its particle blocks */
-        b += (double)s->ps.n * (sizeof(int) + sizeof(double) + (m->vol ? sizeof(double) : 0));
+        b += (double)s->ps.n * (2 * sizeof(int) + (m->vol ? sizeof(double) : 0)); /* order, keys, volumes */
         b += (double)m->npb * (sizeof(pblock) + sizeof(int) + sizeof(pb_partial)) + (double)m->histcap * sizeof(int);
     } else {
         b += s->solver->bytes_per_particle(s) * s->ps.n;

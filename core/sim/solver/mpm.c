@@ -832,12 +832,12 @@ static void mpm_region(const hearth_scene *s, double lo[3], double hi[3]) {
     }
 }
 
-/* order; the permutation's scratch (the keys live in it) and P2G's volumes,
- * counted whether or not heat or water is on yet (either may turn on after
- * the particles are seeded) */
+/* order; the keys (the permutation's scratch) and P2G's volumes, counted
+ * whether or not heat or water is on yet (either may turn on after the
+ * particles are seeded) */
 static double mpm_bytes_per_particle(const hearth_scene *s) {
     (void)s;
-    return sizeof(int) + 2 * sizeof(double);
+    return 2 * sizeof(int) + sizeof(double);
 }
 
 /* The grid is the scene's; the step scratch is MPM's own (mpm_state); its

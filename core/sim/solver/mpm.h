@@ -31,11 +31,11 @@ typedef struct pb_partial {
 } pb_partial;
 
 typedef struct mpm_state {
-    /* the sort's per-particle scratch, scratch_cap long. keys lives in the
-     * first half of perm_scratch: G2P writes them, the sort reads them into
-     * order before the permutation needs the scratch (12 bytes a particle, not 16) */
+    /* the sort's per-particle scratch, scratch_cap long: G2P writes the keys,
+     * the sort reads them into order, and the permutation then takes the
+     * keys' room as its scratch (particles_permute: 8 bytes a particle in
+     * all, where a separate n doubles for the permutation made 12) */
     int *keys, *order;
-    double *perm_scratch;
     int keys_n;             /* keys hold the blocks of these many particles, written by G2P */
     long keys_step;         /* for the positions after this step: a rolled back step's keys do not count */
     unsigned long keys_edits; /* ps.edits when G2P filed them */

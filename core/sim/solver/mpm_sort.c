@@ -19,10 +19,10 @@
 
 void mpm_scratch_free(mpm_state *m) {
     mem_free(m->order, sizeof(int) * (size_t)m->scratch_cap);
-    mem_free(m->perm_scratch, sizeof(double) * (size_t)m->scratch_cap);
+    mem_free(m->keys, sizeof(int) * (size_t)m->scratch_cap);
     mem_free(m->vol, sizeof(double) * (size_t)m->scratch_cap);
     m->keys = m->order = NULL;
-    m->perm_scratch = m->vol = NULL;
+    m->vol = NULL;
     m->scratch_cap = 0;
     m->keys_n = -1; /* the keys went with the scratch */
 }
@@ -35,9 +35,8 @@ static hearth_status mpm_reserve(hearth_scene *s, int n, hearth_error *err) {
         int cap = s->ps.cap > n ? s->ps.cap : n;
         mpm_scratch_free(m);
         m->order = mem_alloc(sizeof(int) * (size_t)cap);
-        m->perm_scratch = mem_alloc(sizeof(double) * (size_t)cap);
-        m->keys = (int *)m->perm_scratch;
-        if (!m->order || !m->perm_scratch) {
+        m->keys = mem_alloc(sizeof(int) * (size_t)cap);
+        if (!m->order || !m->keys) {
             m->scratch_cap = cap; /* so mpm_scratch_free releases them with their true size */
             mpm_scratch_free(m);
             return err_set(err, HEARTH_ERR_NOMEM, "out of memory for sorting %d particles", n);
@@ -319,7 +318,7 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
         }
         s->out_of_domain += moved;
     }
-    m->keys_n = -1; /* the permutation below reuses their room */
+    m->keys_n = -1; /* the permutation below takes their room as its scratch */
     const int T = sort_chunks(n);
     /* The chunked count keeps a table of blocks per chunk: only where that
      * is at most 8 bytes a particle (a big, mostly empty box counts
@@ -337,10 +336,10 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     if (Tc > 1) { /* the usual parallel sort: one region */
         const int unsorted = sort_team(s, n, Tc, &st, err);
         if (st) return st;
-        if (unsorted) particles_permute(ps, m->order, m->perm_scratch);
+        if (unsorted) particles_permute(ps, m->order, m->keys, sizeof(int) * (size_t)m->scratch_cap);
         sort_colours(s);
     } else {
-        if (sort_counting(m, n)) particles_permute(ps, m->order, m->perm_scratch);
+        if (sort_counting(m, n)) particles_permute(ps, m->order, m->keys, sizeof(int) * (size_t)m->scratch_cap);
         if ((st = sort_blocks(s, T, err))) return st;
     }
     if (wrap) mpm_periodic_mark(s, m->mark);

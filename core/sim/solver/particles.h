@@ -109,8 +109,10 @@ hearth_status particles_reserve_exact(particles *ps, int cap, hearth_error *err)
 hearth_status particles_enable(particles *ps, int c, hearth_error *err);
 /// Grow the plugin state stride, keeping existing state.
 hearth_status particles_set_state_stride(particles *ps, int stride, hearth_error *err);
-/// Reorder every column so that new[i] = old[order[i]]; scratch holds n doubles.
-void particles_permute(particles *ps, const int *order, double *scratch);
+/// Reorder every column so that new[i] = old[order[i]], through room bytes of
+/// scratch, at least 4 n (the MPM sort lends its n keys, read by then); more
+/// room lets more columns take the window's ring (particles.c).
+void particles_permute(particles *ps, const int *order, void *scratch, size_t room);
 /// Copy every enabled column of src into dst (same layout); dst grows as needed.
 hearth_status particles_copy(particles *dst, const particles *src, hearth_error *err);
 /// Remove particles whose flag is non-zero, keeping order. Returns the number removed.

@@ -286,7 +286,7 @@ static hearth_status sort_and_list(hearth_scene *s, double hcell, const double *
     int moved = 0;
     for (int i = 0; i < n && !moved; i++) moved = st->order[i] != i;
     if (moved) {
-        particles_permute(ps, st->order, st->perm);
+        particles_permute(ps, st->order, st->perm, sizeof(double) * (size_t)n);
         /* the SPH arrays that carry over: final density (eq. 3.52) and h (for the adaptive pass) */
         for (int i = 0; i < n; i++) st->perm[i] = st->rhof[st->order[i]];
         memcpy(st->rhof, st->perm, sizeof(double) * (size_t)n);
