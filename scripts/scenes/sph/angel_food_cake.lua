@@ -15,18 +15,23 @@
 -- volume it gained. The thesis does the same by hand (§4.5: rho_f raised,
 -- mu_e and lambda lowered after baking); turning the pan over is what a baker
 -- does to stop it, not modelled. Measured (2D default, the per-area heat
--- below): relative volume 2.22 at the end of baking (t = 1.5 s), 1.95 at t =
--- 3.5 s (mean 78 degC) and still falling; three particles are thrown onto
--- the tube's top by 1.4 s. Before the time step counted the stiffness eq.
--- 3.52 gives the batter (sph.c, signal_speed) it was 2.05 and 1.61 (mean 63
--- degC), the cooled crumb full of holes, and the scene needed the hot crust's
--- larger XSPH epsilon to stay stable (xsph_hot; with 0.05 everywhere the
--- guard stopped it at t = 0.03 s). With the printed form's heat (6e8, 0.3x
--- this) it was 1.95 and 1.72.
+-- below, the mirror-symmetric seed below): relative volume 2.25 at the end of
+-- baking (t = 1.5 s), 2.00 at t = 3.5 s (mean 82 degC) and still falling;
+-- four particles, two from each side, are thrown onto the tube's top by 1.4
+-- s; the halves' mean temperatures agree to 4e-13 degC throughout. With the
+-- old asymmetric seed it was 2.22 and 1.95 (mean 78 degC), the right half
+-- 13.7 degC hotter than the left at 1 s. Before the time step counted the
+-- stiffness eq. 3.52 gives the batter (sph.c, signal_speed) it was 2.05 and
+-- 1.61 (mean 63 degC), the cooled crumb full of holes, and the scene needed
+-- the hot crust's larger XSPH epsilon to stay stable (xsph_hot; with 0.05
+-- everywhere the guard stopped it at t = 0.03 s). With the printed form's
+-- heat (6e8, 0.3x this) it was 1.95 and 1.72.
 -- Writes volume.csv (relative volume over time, from a density slice, with
--- the mean temperature) and browning and temperature frames (the browning
--- index of Zanoni et al. 1995 from temperature history; browning_scale = 1600
--- lets the 1.5 s bake stand for 40 minutes).
+-- the mean temperature, and the mean temperatures of the particles left and
+-- right of the tube's axis and their difference) and browning and
+-- temperature frames (the browning index of Zanoni et al. 1995 from
+-- temperature history; browning_scale = 1600 lets the 1.5 s bake stand for
+-- 40 minutes).
 -- Heat: eq. 3.42 per unit area of surface (core/sim/solver/sph_heat.c),
 -- k_h,ext = S h / c from a physical oven: h = 30 W/(m^2 K) (Baik et al. 1999,
 -- J. Food Sci. 64:688: 20-48 W/(m^2 K) with radiation), c = 2800 J/(kg K) (a
@@ -40,7 +45,17 @@ local P = h.params { dx = 0.003, oven = 180, cool_to = 25, bake = 1.5, until_t =
   xsph_cool = 0.05, xsph_hot = 0.3 }
 
 local T0 = 26
-local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.2, 0.12 } }, solver = "sph",
+-- The pan is mirror symmetric about x = 0.1 m, and its particles must be too
+-- or the halves heat differently (#18: the right half ran 13.7 degC hotter
+-- at 1 s, 6.5 degC at 0.1 s). The seeding lattice starts at the box's low
+-- corner, (i + 1/2) dx, so it is its own mirror image about the box's centre
+-- only when the box is a whole number of dx wide: the box is widened to
+-- that about x = 0.1 (0.2 m was 66.7 spacings at dx 3 mm, which put the
+-- left half's particles 1 mm further from the outer wall and 1 mm nearer
+-- the tube than the right half's).
+local cx = 0.1
+local half = math.ceil(0.2 / P.dx - 1e-9) * P.dx / 2
+local s = h.scene { dim = 2, dx = P.dx, box = { { cx - half, 0 }, { cx + half, 0.12 } }, solver = "sph",
   sph = { heat_ext = 17.1, heat_int = 0.5, av_beta = 1, xsph0 = P.xsph_cool, xsph_f = P.xsph_hot, xsph_T0 = T0, xsph_Tf = 120,
           bubble_T0 = T0, tension = true, alpha_c = 0.1, beta_c = 0.8 },
   oven = { temperature = P.oven, beta = 0 }, browning = true, browning_scale = 1600 }
@@ -65,7 +80,11 @@ s:collider { shape = h.plane({ 0.18, 0 }, { -1, 0 }), mode = "slip" }
 s:collider { shape = h.box({ 0.092, 0 }, { 0.108, 0.11 }), mode = "slip" }
 
 -- batter on both sides of the tube; bubble particles in a regular pattern of
--- small discs through it (their share set by bubble_share)
+-- small discs through it (their share set by bubble_share), laid from each
+-- outer wall inward so that the right side's are the left side's mirror
+-- image (one pattern across the pan, 0.16 m = 14.3 pitches, left the right
+-- wall's last column of spots cut and the tube's sides in different places
+-- of the pattern)
 local function side(x0, x1)
   return h.box({ x0, floor_y }, { x1, top0 })
 end
@@ -73,7 +92,10 @@ local cake = h.union(side(0.02, 0.092), side(0.108, 0.18))
 local spots, r = {}, 0.004
 local pitch = r * math.sqrt(math.pi / P.bubble_share)
 for y = floor_y + pitch / 2, top0, pitch do
-  for x = 0.02 + pitch / 2, 0.18, pitch do spots[#spots + 1] = h.disc({ x, y }, r) end
+  for x = 0.02 + pitch / 2, cx, pitch do
+    spots[#spots + 1] = h.disc({ x, y }, r)
+    spots[#spots + 1] = h.disc({ 2 * cx - x, y }, r)
+  end
 end
 local gas = h.union(table.unpack(spots))
 s:add { shape = h.difference(cake, gas), material = batter, ppc = 1, jitter = 0, temperature = T0 }
@@ -85,7 +107,7 @@ local function area()
   local rows = s:slice("density", { res = res })
   local n = 0
   for _, row in ipairs(rows) do for _, v in ipairs(row) do if v == v then n = n + 1 end end end
-  return n * (0.2 / res[1]) * (0.12 / res[2])
+  return n * (2 * half / res[1]) * (0.12 / res[2])
 end
 local function mean_T()
   local T = s:slice("temperature", { res = { 50, 30 } })
@@ -93,9 +115,20 @@ local function mean_T()
   for _, row in ipairs(T) do for _, v in ipairs(row) do if v == v then sum, n = sum + v, n + 1 end end end
   return n > 0 and sum / n or 0 / 0
 end
+-- mean temperature of the particles left and right of the pan's centre: a
+-- symmetric pan heats both alike, to round-off (sph_cake_heats_mirror_symmetric)
+local function halves_T()
+  local p = s:particles { fields = { "x", "temperature" } }
+  local sl, nl, sr, nr = 0, 0, 0, 0
+  for i = 1, p.n do
+    local T = p.temperature[i]
+    if p.x[3 * i - 2] < cx then sl, nl = sl + T, nl + 1 else sr, nr = sr + T, nr + 1 end
+  end
+  return sl / nl, sr / nr
+end
 s:step(1) -- the density slice needs one SPH step (before it the probe has no SPH density)
 local A0 = area()
-local csv = { "t,relative_volume,mean_temperature_C,phase" }
+local csv = { "t,relative_volume,mean_temperature_C,phase,T_left_C,T_right_C,T_right_minus_left_C" }
 local cooling, peak = false, 1
 s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png" },
   on_frame = function(f)
@@ -105,7 +138,9 @@ s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "fr
     end
     local rv = area() / A0
     if not cooling then peak = math.max(peak, rv) end
-    csv[#csv + 1] = ("%.4f,%.5f,%.2f,%s"):format(f.t, rv, mean_T(), cooling and "cooling" or "baking")
+    local TL, TR = halves_T()
+    csv[#csv + 1] = ("%.4f,%.5f,%.2f,%s,%.4f,%.4f,%.3g"):format(f.t, rv, mean_T(), cooling and "cooling" or "baking",
+      TL, TR, TR - TL)
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
     -- one range for the whole run: the default one follows the oven, which
     -- the cooling sets to cool_to, and then every frame saturated at 26 degC
