@@ -130,6 +130,22 @@
  * bread loaf once it set). Plastic flow is counted as well as elastic
  * stretch (it is along e, the return being radial), so a raw dough, which
  * flows, needs a large eps_f (the bread preset's 100).
+ * The set crumb (fracture_strain_set; issue #18, session 30): under the
+ * stretch rule the strain to fracture is the smaller of fracture_strain and
+ * fracture_strain_set (when > 0). Drying is one way a dough turns brittle; the
+ * set is the other: past ~70 degC its starch has gelatinised and its gluten
+ * coagulated, and the viscoelastic dough that flowed is a solid foam that
+ * breaks in tension at finite strain (bread crumb pulled apart breaks at
+ * 4-30 mm of elongation on 83 mm specimens, nominal 0.05-0.36: "Some tensile
+ * characteristics of bread crumb", J. Texture Stud. 25:299, 1994; a set crumb
+ * is a cellular solid, Scanlon & Zghal 2001, Food Res. Int. 34:841).
+ * Under fracture_strain alone only the dried skin was brittle, and a crack
+ * stopped about one particle deep in the wet crumb that flowed under it
+ * (docs/validation.md, Crust (#18)); a set crumb carries it on. A separate
+ * parameter, not a factor on fracture_strain: the two ways to brittleness
+ * do not multiply (a dried crust that also sets is not 100 times more
+ * brittle), the weaker one rules. Its temperature curve is irreversible in
+ * the preset (lua/hearth/dough.lua, SET), so it follows the set's history.
  *
  * ---- state ---------------------------------------------------------------------
  * Eight doubles: b^E (xx, yy, zz, xy, yz, zx), J^P and the damage D. Why b^E and not F^E:
@@ -160,7 +176,8 @@
 #define DOUGH_NAME "cam_clay_dough" /* the test fixture built from this file has its own */
 #endif
 
-enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH, P_COUNT };
+enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH,
+       P_FRACTURE_STRAIN_SET, P_COUNT };
 
 /* Defaults: the cookie column of Ding et al. Table 2 (E 4e4, tau_y 20,
  * eta 500, density 500); nu is not in Table 2. */
@@ -187,6 +204,11 @@ static const hearth_param params[P_COUNT] = {
                             "and plastic) over its fracture_strain at the time, so drying alone never cracks; 0: the "
                             "elastic strain rule (a switch: a blend of the two reads as 1 above 0.5)",
                             0, 0, 1},
+    [P_FRACTURE_STRAIN_SET] = {"fracture_strain_set", "1",
+                               "the stretch rule's strain to fracture of the set crumb (give it a temperature curve, "
+                               "irreversible): under fracture_stretch = 1 a point's strain to fracture is the smaller of "
+                               "fracture_strain and this; 0 = none",
+                               0, 0, 100},
 };
 
 enum { S_XX = HEARTH_SYM_XX, S_YY = HEARTH_SYM_YY, S_ZZ = HEARTH_SYM_ZZ, S_XY = HEARTH_SYM_XY, S_YZ = HEARTH_SYM_YZ,
@@ -467,8 +489,10 @@ static void fracture_update(double ef, double *st, double e1) {
  * A point that dries while at rest gains nothing; a skin the rise stretches
  * while it is brittle spends its small fracture strain. nd = N : D. */
 static void fracture_stretch_update(const double *prm, double *st, double nd, double dt) {
-    const double ef = prm[P_FRACTURE_STRAIN];
+    double ef = prm[P_FRACTURE_STRAIN];
     if (!(ef > 0) || st[S_DAMAGE] >= 1 || !(nd == nd)) return;
+    const double es = prm[P_FRACTURE_STRAIN_SET]; /* the set crumb's (header, "the set crumb") */
+    if (es > 0 && es < ef) ef = es;
     st[S_DAMAGE] = fmin(1, fmax(0, st[S_DAMAGE] + 0.816496580927726 * nd * dt / ef)); /* sqrt(2/3) */
 }
 

@@ -19,7 +19,8 @@
 #define PLUGIN_FIXTURE_SEED 0x0d0c0ffee
 #include "plugin_fixture.h"
 
-enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH, NP };
+enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH,
+       P_FRACTURE_STRAIN_SET, NP };
 enum { NSTATE = 8 };
 
 static const hearth_material *dough(void) { return load_material("cam_clay_dough"); }
@@ -615,6 +616,47 @@ TEST(dough_fracture_stretch_rule) {
     CHECK(dend[3] < 1e-12);                        /* a uniform dilation is pores, not a crack (roundoff only) */
 }
 
+/* The set crumb's strain to fracture (fracture_strain_set, the header's "the
+ * set crumb"): under the stretch rule a point's strain to fracture is the
+ * smaller of fracture_strain and fracture_strain_set (when > 0). The same
+ * elastic point in pure shear as dough_fracture_stretch_rule, against the
+ * closed form summed here with eps_f = 0.2, in three cases: 0 wet (100) but
+ * set (0.2); 1 dried (0.2) and set at 5 (the dry value rules); 2 wet (100)
+ * with no set value (0): D stays at 0.2/100 of the others'. */
+TEST(dough_fracture_set_takes_smaller) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL && m->damage != NULL);
+    if (!m || !m->damage) return;
+    const double dt = 1e-3, a = 5.0;
+    const double efs[3] = {100, 0.2, 100}, sets[3] = {0.2, 5, 0}, want_ef[3] = {0.2, 0.2, 100};
+    for (int c = 0; c < 3; c++) {
+        const double p[NP] = {2e3, 0.3, 1e9, 0, 0.5, 500, 1, efs[c], 1, sets[c]};
+        double st[NSTATE], F[9], tau[9], L[9] = {0};
+        L[0] = a, L[4] = -a;
+        m->init(p, st);
+        t3_identity(F);
+        double worst = 0, want = 0, h0 = 0, h1 = 0;
+        for (int k = 1; k <= 30; k++) {
+            double f[9], Fn[9];
+            for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
+            t3_mul(f, F, Fn);
+            t3_copy(Fn, F);
+            hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
+            memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
+            CHECK(m->stress(&pt, tau) == 0);
+            h0 += log1p(a * dt), h1 += log1p(-a * dt);
+            const double mean = (h0 + h1) / 3, e0 = h0 - mean, e1 = h1 - mean, e2 = -mean;
+            const double ne = sqrt(e0 * e0 + e1 * e1 + e2 * e2);
+            if (ne > 0 && want < 1) want = fmin(1, fmax(0, want + sqrt(2.0 / 3.0) * (e0 * a - e1 * a) / ne * dt / want_ef[c]));
+            worst = fmax(worst, fabs(m->damage(p, st) - want));
+        }
+        printf("  case %d (fracture_strain %g, fracture_strain_set %g): damage %.6f, closed form %.6f, largest error %.2e\n",
+               c, efs[c], sets[c], m->damage(p, st), want, worst);
+        CHECK(worst <= 1e-9);
+        CHECK(c == 2 ? want < 0.01 : want > 0.5); /* the cases tell the two strains apart */
+    }
+}
+
 /* The core's cut-off of a cracked point (core/sim/material.h): the tensile
  * principal values of tau go to 0, the compressive ones and the principal
  * frame stay. tau = R diag(300, -200, 50) R^T, R a rotation about z. */
@@ -744,5 +786,6 @@ TEST(dough_plugin_check) {
 
 TEST_MAIN(T(dough_closest_point), T(dough_viscoplastic_optimality), T(dough_inside_unchanged), T(dough_von_mises_limit),
           T(dough_frame_indifference), T(dough_plane_strain_path), T(dough_near_identity_return), T(dough_extremes),
-          T(dough_closed_pores), T(dough_pore_cap), T(dough_fracture_damage), T(dough_fracture_stretch_rule), T(dough_tension_cutoff),
+          T(dough_closed_pores), T(dough_pore_cap), T(dough_fracture_damage), T(dough_fracture_stretch_rule), T(dough_fracture_set_takes_smaller),
+          T(dough_tension_cutoff),
           T(dough_block_matches_stress_2d), T(dough_plugin_check))

@@ -200,6 +200,25 @@
 --    (Altamirano-Fortoul, Le-Bail, Chevallier & Rosell 2012, J. Food Eng.
 --    108:128): no source found gives a crust's strain to fracture over its
 --    water, so the numbers between the two ends are ours.
+--  * SET (issue #18, session 30): the set crumb breaks too. Past the set
+--    (Fig. 8's 70 degC, where tau_y is x20) a crumb is a solid foam, not a
+--    dough that flows: the plugin's fracture_strain_set (cam_clay_dough.c,
+--    "the set crumb"; the stretch rule takes the smaller of it and the
+--    water's) is 100 (never) up to 35 degC and 0.15 from 70 degC, linear
+--    between, over the highest temperature reached (irreversible), on the
+--    same points as tau_y's set. 0.15 is inside the range measured on baked
+--    crumb pulled apart, 0.05-0.36 (4-30 mm of break elongation on 83 mm
+--    specimens: "Some tensile characteristics of bread crumb", J. Texture
+--    Stud. 25:299, 1994; from its abstract, authors not checked). Without it
+--    the crack in the bread's crust stopped a particle deep, in a crumb that
+--    flowed. Measured (bread.lua's plain loaf, only = 1, 2.5 s): at 4 mm a
+--    crown crack 8.05 mm deep and 8 mm wide (3.27 mm and 4 mm without),
+--    14 cracked particles; the result moves with the value: 0.1 gives 19.7
+--    mm and 4 mm wide, 0.2 8.1 mm and 4 mm, 0.05 cracks the whole set crumb
+--    (hundreds of particles; the guard stops the run), 0.3 changes nothing.
+--    Where the crust does not crack (5 mm) nothing changes, and nor in the
+--    muffin, whose crown stops stretching as it sets (docs/validation.md,
+--    Crust (#18), "The set crumb").
 local ETA_SCALE, GAS_SCALE = 4000, 1 / 600
 local DRY_X = { 0.05, 0.10, 0.16, 0.25, 0.41 }  -- water content, kg/kg dry basis
 local DRY_F = { 100, 37, 10, 4.6, 1 }           -- E and tau_y factor (Roos 1995's glass transition, capped at 100)
@@ -210,6 +229,7 @@ local WATER = { bread = { saturation = 0.225, diffusivity = 2e-7, evaporation = 
   muffin = { saturation = 0.20, diffusivity = 2e-7, evaporation = 1.2e-3 } }
 -- stretch to fracture over water content (FRACTURE): glassy, leathery, rubbery, and the raw dough (never)
 local FRACTURE_X, FRACTURE_DRY, FRACTURE_WET = { 0.16, 0.41 }, 0.02, 100
+local FRACTURE_SET = 0.15 -- the set crumb's stretch to fracture (SET below), from 100 at Fig. 8's 35 degC to this at 70
 local THETA = { 5, 20, 35, 70 }            -- Fig. 8: fridge, room, fat melting, gelatinisation (degC)
 local TAU_SHAPE = { 1, 0.8, 0.3, 20 }      -- Fig. 8 left, relative to Table 2's value
 local ETA_SHAPE = { 1, 0.5, 0.1, 0.05 }    -- Fig. 8 right, relative to ETA_SCALE x Table 2's value
@@ -296,6 +316,8 @@ function D.preset(name)
     end
     ef[#ef + 1] = { 1, 1 }
     dry.fracture_strain = ef
+    -- SET: the set crumb's, over the highest temperature reached, on Fig. 8's set points (as tau_y's)
+    curves.fracture_strain_set = { { THETA[3], FRACTURE_WET }, { THETA[4], FRACTURE_SET }, irreversible = true }
   end
   local oven = { temperature = c.ambient_theta, beta = c.ambient_beta, pan_temperature = c.conductive_theta,
     pan_beta = c.conductive_beta, dough_temperature = c.theta0, latent_heat = false,

@@ -47,8 +47,13 @@ for name, t in pairs(T2) do
     assert(math.abs(f[1][1] * X0 - 0.16) < 1e-12, name .. ": glassy at X = 0.16 kg/kg")
     assert(math.abs(f[#f - 1][1] * X0 - 0.41) < 1e-12 and math.abs(fs.base * f[#f - 1][2] - 1) < 1e-12,
       name .. ": rubbery (1) at X = 0.41 kg/kg")
+    -- dough.lua's SET: the set crumb's stretch to fracture, 100 (never) to Fig. 8's 35 degC, 0.15 from its 70 degC set
+    local st = d.fracture_strain_set
+    assert(st and not st.moisture and st.irreversible and #st == 2 and st[1][1] == 35 and st[1][2] == 100 and
+      st[2][1] == 70 and st[2][2] == 0.15, name .. ": the set crumb breaks at 0.15 from 70 degC")
   else
-    assert(d.saturation == nil and d.fracture_strain == nil and o.saturation == nil, name .. ": no water, no fracture")
+    assert(d.saturation == nil and d.fracture_strain == nil and d.fracture_strain_set == nil and o.saturation == nil,
+      name .. ": no water, no fracture")
   end
   local eta = d.eta
   -- eta carries tau_y's factor squared (lua/hearth/dough.lua, "Rise"): the viscosity eta / tau_y^2 stays Table 2's
