@@ -873,6 +873,17 @@ lone_hot_particles_stay_bounded)
     cat out.txt
     has out.txt "lone_hot_particles ok" "temperatures within the bound"
     ;;
+lone_molten_particle_thermal_strain)
+    # issue #18: eq. 10's thermal term as a thermal strain: a lone molten particle at 2 Pa/K stops at the closed form
+    # ln J_th = c lambda dT / K (3D, quasi-static), within the compaction cap after a sudden strain (3D), and between
+    # the plane-strain elastic and yielded forms (2D, oven-heated); before, each swelled without end (J past 1e13)
+    for m in free3d compact3d oven2d; do
+        run lone_molten_thermal_strain.lua --set mode=$m
+        expect_rc 0 "lone molten particle, $m"
+        cat out.txt
+        has out.txt "lone_molten ok" "J within the thermal strain's bound ($m)"
+    done
+    ;;
 held_temperature_lua)
     # s:collider{fixed_temperature} and s:add{fixed_temperature}: refusals, held values, a checkpoint keeps them
     run held_temperature.lua
