@@ -61,8 +61,8 @@ local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, H, 0.08) }, g
 -- yield stress (60 Pa), made the molten marshmallow flow out for as long as it was hot, and lone particles
 -- swelled without end (guard, t = 0.855 s; docs/validation.md). Eq. 10 is now a thermal strain
 -- (core/sim/material.h), bounded at ln J = 2 x 100 / K = 0.006, and at 2 the scene runs to the end
--- (20.7 mm raw, 18.0 mm roasted after the press, as 20.7 and 18.2 at 0.1;
--- baking_marshmallow_paper_expansion_completes). The default stays 0.1 so the claims' numbers stand.
+-- (20.7 mm raw, 18.0 mm roasted after the press, as at 0.1, which gave 18.2 before the change;
+-- baking_marshmallow_paper_expansion_completes). The default stays 0.1, the claims' value.
 local smore, D = h.library.paper.smore, require "hearth.dough"
 local ty = D.paper.smore.yield
 smore.tau_y = h.curve { { D.THETA[1], ty * D.TAU_SHAPE[1] }, { D.THETA[2], ty * D.TAU_SHAPE[2] },
