@@ -6,11 +6,14 @@
  * ---- elasticity (§5.2) ---------------------------------------------------
  *   eps = 1/2 log(b^E),  b^E = F^E F^E^T          (elastic Hencky strain)
  *   Psi = 1/2 lambda (tr eps)^2 + mu eps:eps,  so tau = C eps = lambda tr(eps) I + 2 mu eps.
- * The thermal expansion term of eq. 10 is added by the core as a thermal
- * strain, tau -= c lambda (theta - theta_ref) I (HEARTH_NEEDS_THERMAL_EXPANSION,
- * core parameter `expansion`; core/sim/material.h says why not J^2), and so
- * is the gas pressure of eq. 13; this plugin returns the elastic Kirchhoff
- * stress tau^{s,E} only, and the yield condition acts on it (§6.5).
+ * The thermal expansion term of eq. 10 is the core's, as a thermal strain
+ * (HEARTH_NEEDS_THERMAL_EXPANSION, core parameter `expansion`): with this
+ * plugin's bulk_modulus K the core takes ln J_th = c lambda (theta -
+ * theta_ref) / K out of F and grad_v before the stress (core/sim/material.h,
+ * material_thermal_split), so b^E here is the mechanical part and the yield
+ * condition acts on the whole elastic stress, thermal part included (§6.5).
+ * The core adds the gas pressure of eq. 13 after the stress; this plugin
+ * returns the elastic Kirchhoff stress tau^{s,E} only.
  *
  * ---- yield surface (eq. 12) -------------------------------------------------
  *   f(tau) = M(n^p) p^2 + q^2 - tau_y^2 <= 0,
@@ -803,6 +806,14 @@ static double wave_speed(const double *p, const double *state) {
     return sqrt(p[P_E] * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * p[P_DENSITY]));
 }
 
+/* K = lambda + 2/3 mu = E / (3 (1 - 2 nu)): the Hencky law's bulk modulus,
+ * with which the core makes eq. 10's thermal term a thermal strain
+ * (<hearth/material.h>, bulk_modulus). */
+static double bulk_modulus(const double *p, const double *state) {
+    (void)state;
+    return p[P_E] / (3 * (1 - 2 * p[P_NU]));
+}
+
 static double plastic_J(const double *p, const double *state) {
     (void)p;
     return state ? state[S_JP] : 1.0;
@@ -843,6 +854,7 @@ static const hearth_material material = {
     .plastic_J = plastic_J,
     .damage = damage,
     .stress_block = stress_block,
+    .bulk_modulus = bulk_modulus,
 };
 
 HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void); /* for -Wmissing-prototypes */

@@ -168,6 +168,18 @@ baking_marshmallow_press_refused)
     grep -q "press <= 0.8 s" err.txt || fail "the message does not give the largest press: $(cat err.txt)"
     ;;
 
+# Issue #18: the marshmallow at its preset's expansion (h.library.paper.smore, c lambda = 2 Pa/K, 20x the scene's
+# default 0.1) bakes and is pressed to the end. Eq. 10's term as a pressure after the yield stopped it (guard, lone
+# molten particles swelling without end, t = 0.855 s); as a thermal strain (core/sim/material.h) it completes.
+# A press of 0.5 s (to t = 1.1 s, past the old stop) keeps it to about half the full scene's cost.
+baking_marshmallow_paper_expansion_completes)
+    "$hearth" run "$scenes/marshmallow.lua" --quiet --set expansion=2 --set press=0.5 --set frames=2 >out.txt 2>err.txt ||
+        fail "marshmallow.lua at expansion 2 stopped: $(tail -3 err.txt)"
+    cat out.txt
+    grep -q "^after the press: raw 0.0[0-9]* m thick .*, roasted 0.0[0-9]* m thick" out.txt ||
+        fail "no thicknesses after the press: $(cat out.txt)"
+    ;;
+
 # §7.4, Fig. 15: a scored loaf's slit opens while the loaf rises: from the
 # loaf's lowest height (after the dough settles) to the end of the bake, the
 # height grows and so does the slit's gap.

@@ -873,6 +873,17 @@ lone_hot_particles_stay_bounded)
     cat out.txt
     has out.txt "lone_hot_particles ok" "temperatures within the bound"
     ;;
+lone_molten_particle_thermal_strain)
+    # issue #18: eq. 10's thermal term as a thermal strain: a lone molten particle at 2 Pa/K stops at the closed form
+    # ln J_th = c lambda dT / K (3D, quasi-static), within the compaction cap after a sudden strain (3D), and between
+    # the plane-strain elastic and yielded forms (2D, oven-heated); before, each swelled without end (J past 1e13)
+    for m in free3d compact3d oven2d; do
+        run lone_molten_thermal_strain.lua --set mode=$m
+        expect_rc 0 "lone molten particle, $m"
+        cat out.txt
+        has out.txt "lone_molten ok" "J within the thermal strain's bound ($m)"
+    done
+    ;;
 held_temperature_lua)
     # s:collider{fixed_temperature} and s:add{fixed_temperature}: refusals, held values, a checkpoint keeps them
     run held_temperature.lua
@@ -976,11 +987,12 @@ crust_cracks_over_expanding_crumb)
     fi
     echo "EXPECTED FAILURE: the dried crust opened at $opened of 2 resolutions. It cracks (the law's fracture:" \
         "damage 1 along its crown by 0.7 s, cracked particles counted above), and the crumb beneath, no longer" \
-        "held, now stays bounded (eq. 10 as a thermal strain, core/sim/material.h: the F = 1 control ends at 39 mm" \
-        "and stays). The measure reads the intact material's top (cracked particles heaped in the V are debris):" \
-        "at 3 mm the crust parts at its crown into a V 1 cell wide at 0.15 of the height (2 needed); at 4 mm the" \
-        "crown's crust cracks as a band over an unbroken crumb, no V (crust_cracks_damage.png; docs/validation.md," \
-        "Crust (#18))"
+        "held, now stays bounded. Since eq. 10 became a thermal strain (core/sim/material.h) the crumb swells only" \
+        "by ln J_th = c lambda dT / K = 0.24, no longer plastically without end: the slab ends at 30.7 mm (dx 4)," \
+        "31.4 mm (dx 3) and 32.0 mm (F = 1 control), where it reached 46.6, 40.2 and 39 mm, and no V opens (at 3" \
+        "mm it had parted at its crown into a V 1 cell wide at 0.15 of the height, 2 needed). A crumb that rises" \
+        "must now rise by its gas (eq. 13). The measure reads the intact material's top (cracked particles heaped" \
+        "in the V are debris; crust_cracks_damage.png; docs/validation.md, Crust (#18), Eq. 10 as a thermal strain)"
     exit 77
     ;;
 crust_cracks_by_stretch_over_expanding_crumb)
@@ -1011,7 +1023,9 @@ crust_cracks_by_stretch_over_expanding_crumb)
     echo "EXPECTED FAILURE: the stretch rule opened the dried crust at $opened of 2 resolutions. Nothing cracks while" \
         "the top dries (0 cracked particles at 0.5 s), then the crumb's swelling cracks one place, the crown (damage" \
         "1 in one cluster; the rest of the skin at 0.25-0.75, the crumb near 0), a V 1 cell wide at 0.103 (4 mm) and" \
-        "0.118 (3 mm) of the height: the cracked crown's neighbours stay intact, so the opening is one cell of" \
+        "0.118 (3 mm) of the height when eq. 10 inflated the crumb plastically; as a thermal strain (ln J_th 0.24," \
+        "core/sim/material.h) the crumb ends at 30.7 and 31.5 mm (33.2 and 34.1 before) and the V is none (4 mm) and" \
+        "1 cell at 0.139 (3 mm): the cracked crown's neighbours stay intact, so the opening is one cell of" \
         "cracked particles, and the measure asks for two (docs/validation.md, Crust (#18), session 29)"
     exit 77
     ;;

@@ -539,6 +539,97 @@ TEST(water_conservation) {
     hearth_scene_destroy(s);
 }
 
+/* Water's flux runs over a particle's quadrature volume J V_0, as heat's
+ * conduction does, but unlike heat (whose capacity m alpha = rho_0 alpha V_0
+ * is fixed, so a swollen particle's diffusivity is J times the material's and
+ * forward Euler needed transport.c's cap, lone_hot_particles_stay_bounded) its
+ * capacity scales with J too: a node's saturation is m_i / (rho_0 V_i) with
+ * V_i = sum_p w_ip J_p V_0,p, and a particle takes rho_0 J_p V_0,p sum_i w_ip
+ * ds_i. So the saturation's diffusivity is K theta s whatever J is, and
+ * water_dt_limit's dx^2 / (2 dim D) holds without a cap. Checked here: the
+ * water_conservation blocks with the wet one swollen to J = 1e6 and 1e30 (a
+ * lone molten particle of marshmallow.lua reached 1e30 before eq. 10 became a
+ * strain) at the same water content s, at the scene's own step. Derived
+ * outside the code: J cancels, so the two runs give the same saturations
+ * (to 0.01: their steps differ by 0.1%, and at 1e6 the dry block still
+ * weighs 1e-6 in the shared nodes), and the water is conserved; a forward Euler runaway (heat's was
+ * x4 a step) would grow without end, so the largest saturation must not grow
+ * from step 500 to step 1000. Not asserted, printed: the dry particles next to
+ * the swollen block overshoot the 0.9 they draw from (1.18 here, 1.03 at
+ * J = 10, none at 2): a bounded plateau of the particle transfer at a sharp
+ * volume contrast, which a cap on the flux volume would not touch (the
+ * capacity V_i is the swollen one's). */
+TEST(water_swollen_particles_no_runaway) {
+    const double Js[2] = {1e6, 1e30};
+    double ends[2][2] = {{0}};
+    for (int k = 0; k < 2; k++) {
+        hearth_scene_def d = hearth_default_scene_def();
+        d.dx = 1.0 / 32;
+        d.gravity[1] = 0;
+        hearth_scene *s = fx_scene_def(&d);
+        const char *nm[] = {"E", "density", "water_diffusivity"};
+        const double nv[] = {1e3, 1000, 1e-5};
+        hearth_error err;
+        const int m = hearth_scene_add_material(s, "elastic", nm, nv, 3, &err);
+        CHECK(m >= 0);
+        const double c1[3] = {0.4, 0.5, 0}, c2[3] = {0.6, 0.5, 0}, h[3] = {0.1, 0.15, 0};
+        hearth_shape *b1 = hearth_shape_box(c1, h), *b2 = hearth_shape_box(c2, h);
+        hearth_body_def bd = hearth_default_body_def();
+        bd.fixed = 1, bd.material = m;
+        bd.shape = b1, bd.saturation = 0.9;
+        CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+        bd.shape = b2, bd.saturation = 0.1;
+        CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+        hearth_shape_free(b1);
+        hearth_shape_free(b2);
+        /* swell the wet block (F = J^(1/2) in the plane) and give it the water of s = 0.9 at that volume */
+        particles *ps = &s->ps;
+        const int tn = particles_tn(ps);
+        double *F = pcold(ps, PC_F), *W = pcold(ps, PC_WATER);
+        int swollen = 0;
+        for (int i = 0; i < ps->n; i++) {
+            if (pcold(ps, PC_X)[3 * i] > 0.5) continue;
+            const double r = sqrt(Js[k]);
+            double *f = F + (size_t)tn * i;
+            for (int c = 0; c < tn; c++) f[c] = 0;
+            f[0] = r, f[tn == 4 ? 3 : 4] = r;
+            if (tn == 9) f[8] = 1;
+            W[i] *= Js[k];
+            swollen++;
+        }
+        hearth_stats st;
+        hearth_scene_stats(s, &st);
+        const double w0 = st.water_mass;
+        double worst = 0, smin = 1, smax = 0, smax500 = 0;
+        int finite = 1;
+        for (int n = 1; n <= 1000; n++) {
+            CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+            hearth_scene_stats(s, &st);
+            worst = fmax(worst, fabs(st.water_mass / w0 - 1));
+            if (n != 500 && n != 1000) continue;
+            smin = 1, smax = 0;
+            for (int i = 0; i < ps->n; i++) {
+                const double si = water_saturation(s, i);
+                finite &= isfinite(si);
+                smin = fmin(smin, si);
+                smax = fmax(smax, si);
+            }
+            if (n == 500) smax500 = smax;
+        }
+        ends[k][0] = smin, ends[k][1] = smax;
+        printf("  J %.0e on %d of %d particles, 1000 steps of %.3g s: saturation in [%.6f, %.6f] (largest %.6f at step "
+               "500; it started in [0.1, 0.9]); max |W/W0 - 1| = %.3g\n",
+               Js[k], swollen, ps->n, st.dt, smin, smax, smax500, worst);
+        CHECK(finite);
+        CHECK(worst < 1e-9);
+        CHECK(smax <= smax500 * (1 + 1e-9));
+        hearth_scene_destroy(s);
+    }
+    printf("  J 1e6 against 1e30: saturation extremes differ by %.3g and %.3g\n", fabs(ends[1][0] - ends[0][0]),
+           fabs(ends[1][1] - ends[0][1]));
+    CHECK(fabs(ends[1][0] - ends[0][0]) < 1e-2 && fabs(ends[1][1] - ends[0][1]) < 1e-2);
+}
+
 /* Fierce evaporation: saturation stops at the documented floor, never at 0 or NaN.
  * The material has no diffusivity, so each surface particle dries at the
  * full beta^w theta s of its own area. With diffusion (K = 1e-6, as this test
@@ -734,6 +825,6 @@ TEST(water_checkpoint_restore) {
 }
 
 TEST_MAIN(T(water_crank_reference), T(water_crank_small_contrast), T(water_sheet_fixed_surface_converges),
-          T(water_sheet_robin_converges), T(water_humid_oven_converges), T(water_sheet_3d_matches_2d), T(water_drying_vs_fd), T(water_drying_fast_vs_fd), T(water_interior_mode_second_order), T(water_conservation),
+          T(water_sheet_robin_converges), T(water_humid_oven_converges), T(water_sheet_3d_matches_2d), T(water_drying_vs_fd), T(water_drying_fast_vs_fd), T(water_interior_mode_second_order), T(water_conservation), T(water_swollen_particles_no_runaway),
           T(water_saturation_floor), T(water_drying_shrinks), T(water_momentum_switch), T(water_probe_fields),
           T(water_bad_input), T(water_checkpoint_restore))

@@ -183,7 +183,9 @@ enum {
     /* n^p = J^P - 1 + n^p_0 (Ding et al. §5.4) from the plugin's plastic_J at the start of the step;
      * without the bit the point gets env->porosity as given. */
     MATERIAL_POROSITY_PLASTIC = 1u << 1,
-    /* The core's thermal expansion, eq. 10 as a thermal strain: tau -= c lambda (theta - theta_ref) I, when c lambda > 0.
+    /* The core's thermal expansion, eq. 10 as a thermal strain: taken out of F and grad_v before the stress for a
+     * plugin with bulk_modulus (material_thermal_split, by the caller), else tau -= c lambda (theta - theta_ref) I
+     * after it, when c lambda > 0.
      * The gas (eq. 13) and water (eq. 14) pressures are added when env->gas and env->saturation0 are
      * non-NULL: a bit and two pointers that MPM's instantiations know at compile time or once per block. */
     MATERIAL_EXPANSION = 1u << 2,
@@ -250,6 +252,47 @@ MATERIAL_INLINE int material_point_stress(const hearth_material *m, const double
     return code;
 }
 
+/* Eq. 10 as a thermal strain, for a plugin that gives its bulk modulus K
+ * (<hearth/material.h>, bulk_modulus): the split F = F_M F_th with
+ * F_th = exp(e / 3) I and e = ln J_th = c lambda (theta - theta_ref) / K.
+ * The plugin gets the mechanical part: F_M = F exp(-e / 3), and over the step
+ * f_M = exp((e_n - e) / 3) (I + dt L), i.e. L_M = exp(r) L + expm1(r) / dt I
+ * with r = (e_n - e) / 3, e_n the strain taken out at the last step (the
+ * particle's PC_THERMAL, written here when dt > 0). So the law's own elastic
+ * strain and its return map see the thermal strain, and its stress vanishes
+ * once the volume has grown by J_th: a free body, molten or not, ends at
+ * J = J_th (a lone molten marshmallow particle at 2 Pa/K swelled without end
+ * when the pressure -c lambda dT I was added after the law's yield; issue
+ * #18, `lone_molten_particle_thermal_strain`). For a Hencky law that holds
+ * (no yield) this is the additive pressure to rounding: K ln(J^E / J_th) =
+ * K ln J^E - c lambda dT, and K from the point's own parameters keeps that
+ * so when a curve moves E (the increments telescope). c lambda / K is
+ * 3 alpha, the volumetric thermal expansion coefficient of linear
+ * thermoelasticity (tau = C:(eps - alpha dT I) gives -3 K alpha dT I;
+ * Gonzalez & Stuart 2008, the derivation Ding et al. cite for eq. 10).
+ * dt = 0 (evaluate only) takes out the stored strain and writes nothing.
+ * Returns 1 when the strain was taken out (the caller then adds no thermal
+ * pressure), 0 when it cannot be (no temperature, no finite K > 0). */
+MATERIAL_INLINE int material_thermal_split(const hearth_material *m, const double *core, const double *p,
+                                           const double *state, double T, double *e_store, double dt, double F[9],
+                                           double L[9]) {
+    plugin_call_enter(m, "bulk_modulus");
+    const double K = m->bulk_modulus(p, state);
+    if (!(K > 0 && K < INFINITY) || !(T == T)) return 0;
+    const double e0 = *e_store, e = dt > 0 ? core[CP_EXPANSION] * (T - core[CP_REFERENCE_T]) / K : e0;
+    const double sF = exp(-e / 3);
+    for (int k = 0; k < 9; k++) F[k] *= sF;
+    if (dt > 0) {
+        const double r = (e0 - e) / 3, sL = exp(r), d = expm1(r) / dt;
+        for (int k = 0; k < 9; k++) L[k] *= sL;
+        L[0] += d;
+        L[4] += d;
+        L[8] += d;
+        *e_store = e;
+    }
+    return 1;
+}
+
 /* The core's coupling terms, after the plugin's stress (material_point_couple
  * below adds a cracked point's cut-off). MPM calls the door's halves apart so
  * it can read the step limits (wave_speed, viscosity) between them while the
@@ -283,7 +326,9 @@ MATERIAL_INLINE void material_point_couple_terms(const hearth_material *m, const
         tau[4] += tg;
         tau[8] += tg;
     }
-    /* thermal expansion (Ding et al. eq. 10), as the Kirchhoff stress of a thermal strain:
+    /* thermal expansion (Ding et al. eq. 10) for a plugin without bulk_modulus (one with it had the
+     * strain taken out of F and grad_v instead, material_thermal_split, and comes here without
+     * MATERIAL_EXPANSION), as the Kirchhoff stress of a thermal strain:
      * tau_th = -c lambda (theta - theta_ref) I, the same at every J^E. With a Hencky (or any
      * log-volumetric) skeleton, K ln J^E, a free body then swells to J^E = exp(c lambda dT / K):
      * a linear expansion alpha dT with alpha = c lambda / (3K), bounded. This is the stress whose
@@ -296,7 +341,10 @@ MATERIAL_INLINE void material_point_couple_terms(const hearth_material *m, const
      * the unconfined slab at 0.51 s and the cracked one at 0.57 s). Session 27, issue #18.
      * Rejected before that: the total J in place of J^E (the batter of the pancake and the
      * lava cake swelled x4: a Cam-clay skeleton that yields in tension grew J^P, which raised
-     * the pressure, which grew J^P further). */
+     * the pressure, which grew J^P further). Left as it is: added after the law's yield, this
+     * pressure is never relaxed by plastic flow, so a skeleton whose yield stress is below it
+     * (a molten marshmallow at 2 Pa/K) swells without end; hence the split for plugins that
+     * give K (session 30). */
     if (expand) {
         const double th = cl * (env->temperature - core[CP_REFERENCE_T]);
         tau[0] -= th;

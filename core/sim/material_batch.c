@@ -60,6 +60,15 @@ static material_env run_env(const material_run *r, int j, unsigned flags) {
     };
 }
 
+/* The particles' thermal strain column when eq. 10 is a strain for this run
+ * (material.h, material_thermal_split), else NULL: the pressure is added. */
+static double *thermal_column(const material_slot *ms, const particles *ps, const material_run *r, unsigned flags) {
+    if (!(flags & MATERIAL_EXPANSION) || !(ms->core[CP_EXPANSION] > 0) || !ms->m->bulk_modulus || !r->temperature ||
+        !(ps->enabled & (1u << PC_THERMAL)))
+        return NULL;
+    return pcold(ps, PC_THERMAL);
+}
+
 /* A run's parameters (material.h, material_run_params): material_params_resolve's
  * values and bits, without its per-point copy of every parameter. The uniform
  * ones are copied once per run and each point rewrites only the parameters
@@ -118,6 +127,7 @@ static double run_points(const material_table *t, const particles *ps, const mat
     double *state = pcold(ps, PC_STATE), pscratch[MATERIAL_MAX_PARAMS], numax = 0;
     const int stride = ps->state_stride;
     const int by_run = !ms->mix_k && ms->ncurves > 0;
+    double *th = thermal_column(ms, ps, r, flags);
     material_run_params rp;
     if (by_run) material_run_params_init(&rp, ms, ps);
     for (int j = 0; j < r->n; j++) {
@@ -130,7 +140,10 @@ static double run_points(const material_table *t, const particles *ps, const mat
         pt.dt = r->dt;
         pt.p = by_run ? material_run_params_at(&rp, ms, ps, i) : material_params(t, ps, r->mat, i, pscratch);
         pt.state = state ? state + (size_t)i * stride : NULL;
-        const material_env env = run_env(r, j, flags);
+        unsigned fl = flags;
+        if (th && material_thermal_split(ms->m, ms->core, pt.p, pt.state, r->temperature[j], th + i, r->dt, pt.F, pt.grad_v))
+            fl &= ~(unsigned)MATERIAL_EXPANSION; /* in F and grad_v, not a pressure */
+        const material_env env = run_env(r, j, fl);
         double tj[9] = {0};
         code[j] = material_point_stress(ms->m, ms->core, &pt, &env, tj);
         run_after(ms, &pt, &env, tj, &wave[j], &numax);
@@ -190,6 +203,20 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
             }
         }
     }
+    /* eq. 10 as a strain: the block gets F_M and L_M, as run_points hands each point */
+    double *th = thermal_column(ms, ps, r, flags), Fm[9][HEARTH_BLOCK_MAX], Lm[9][HEARTH_BLOCK_MAX];
+    unsigned char split[HEARTH_BLOCK_MAX];
+    if (th) {
+        double qs[MATERIAL_MAX_PARAMS], F3[9], L3[9];
+        memcpy(qs, ms->params, sizeof(double) * (size_t)np);
+        for (int j = 0; j < n; j++) {
+            for (int v = 0; v < nv; v++) qs[vk[v]] = vcol[v][j];
+            for (int c = 0; c < 9; c++) F3[c] = r->F[c][j], L3[c] = r->grad_v[c][j];
+            split[j] = (unsigned char)material_thermal_split(m, ms->core, qs, state ? state + (size_t)j * stride : NULL,
+                                                             r->temperature[j], th + i0 + j, r->dt, F3, L3);
+            for (int c = 0; c < 9; c++) Fm[c][j] = F3[c], Lm[c][j] = L3[c];
+        }
+    }
     hearth_block b = {
         .n = n,
         .dim = r->dim == 2 ? 2 : 3,
@@ -203,8 +230,8 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         .state_stride = stride,
     };
     for (int c = 0; c < 9; c++) {
-        b.grad_v[c] = r->grad_v[c];
-        b.F[c] = r->F[c];
+        b.grad_v[c] = th ? Lm[c] : r->grad_v[c];
+        b.F[c] = th ? Fm[c] : r->F[c];
         memset(tau[c], 0, sizeof(double) * (size_t)n); /* as P2G's tau = {0}: an unwritten entry reads the same both ways */
     }
     plugin_call_enter(m, "stress_block");
@@ -238,7 +265,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         pt.porosity = porous ? P[j] : NAN;
         pt.saturation = r->saturation ? r->saturation[j] : NAN;
         pt.dim = b.dim;
-        const material_env env = run_env(r, j, flags);
+        const material_env env = run_env(r, j, th && split[j] ? flags & ~(unsigned)MATERIAL_EXPANSION : flags);
         /* the core's terms are isotropic and touch only the diagonal; a crack's cut-off rewrites all nine */
         double tj[9];
         if (flags & MATERIAL_DAMAGE)

@@ -327,6 +327,8 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
     /* leavening needs the gas column, and the reaction needs temperature */
     if (core[CP_GAS_RATE] > 0 &&
         (particles_enable(&s->ps, PC_GAS, err) || scene_enable_temperature(s, err))) return -1;
+    /* eq. 10 as a thermal strain needs each particle's last one (material.h, material_thermal_split) */
+    if (core[CP_EXPANSION] > 0 && m->bulk_modulus && particles_enable(&s->ps, PC_THERMAL, err)) return -1;
     /* and so does a plugin that reads temperature */
     if ((m->needs & HEARTH_NEEDS_TEMPERATURE) && scene_enable_temperature(s, err)) return -1;
     if (water_material_wants(s, id) && water_enable(s, err)) return -1;
@@ -403,6 +405,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         if (ps->enabled & (1u << PC_FLAGS)) pcoli(ps, PC_FLAGS)[j] = 0;
         if (ps->enabled & (1u << PC_GAS)) pcold(ps, PC_GAS)[j] = 0;
         if (ps->enabled & (1u << PC_DRIED)) pcold(ps, PC_DRIED)[j] = 0; /* never dried */
+        if (ps->enabled & (1u << PC_THERMAL)) pcold(ps, PC_THERMAL)[j] = 0; /* F = I: no thermal strain taken out yet */
         if (ps->state_stride) {
             double *st = pcold(ps, PC_STATE) + (size_t)j * ps->state_stride;
             memset(st, 0, sizeof(double) * (size_t)ps->state_stride);

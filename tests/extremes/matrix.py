@@ -34,11 +34,6 @@ KNOWN = {
     ("newtonian", "cfl", "1"): "at the CFL limit a falling fluid block stops late: F inverted on the floor (step ~136); cfl 0.5 completes",
     ("newtonian", "impact speed", "20 m/s"):
         "a 20 m/s impact is supersonic for the default fluid (sound speed sqrt(K/rho) = 10 m/s): compression inverts F late (step ~113)",
-    ("cam_clay_dough", "temperature", "400 degC"):
-        "the expansion stress (c lambda = 10 Pa/K over 380 K: 3800 Pa) is ~100x the default dough's tensile strength "
-        "(tau_y = 20 Pa, eq. 12), so the dough bursts; the step is chosen from its last speed and elastic wave speed, "
-        "until F, past 1e26, inverts (step ~121; it went to a CFL stop at step ~85 while conduction at J ~ 1e30 still "
-        "heated it without bound: docs/validation.md, \"A lone hot particle\")",
     ("snow_plastic", "temperature", "400 degC"):
         "the core's expansion stress (eq. 10: c lambda = 10 Pa/K over 380 K, 3800 Pa) needs an elastic dilation "
         "the snow law clamps (Stomakhin et al. 2013): at its critical stretch the default block holds at most ~600 Pa of tension "

@@ -9,9 +9,11 @@
 -- crust that does not swell as much (pores capped at 0.6, as the muffin's).
 -- Run with F = 30 (a dried crust) and F = 1 (the same dough without dry
 -- stiffening or embrittlement). What it shows (docs/validation.md, "Crust
--- (#18)"): the dried crust cracks at its crown (damage 1) by ~0.55 s, and
--- the crumb, no longer held, runs away under eq. 10's expansion through
--- the crack until the guard stops it, as the unconfined F = 1 dough does.
+-- (#18)"): the dried crust cracks at its crown (damage 1) by ~0.55 s. The
+-- crumb ran away under eq. 10's expansion through the crack while that was a
+-- pressure after the yield; as a thermal strain (core/sim/material.h) it
+-- swells by ln J_th = 10 x 100 / K = 0.24 and stops ("Eq. 10 as a thermal
+-- strain" in docs/validation.md).
 -- The crack measure (the same as bread.lua's for the unscored loaf): the top
 -- surface of the intact material, the highest particle with damage below 1
 -- in each column of width dx (a fully damaged particle carries no tension:

@@ -27,7 +27,7 @@
  *
  * 2. Descriptor. name is [a-z0-9_]+ (it is the file's <name> and a Lua
  *    string). init, stress, wave_speed and describe_error are non-NULL;
- *    blend, plastic_J, viscosity, damage and stress_block may be NULL. nparams <= 256 with params
+ *    blend, plastic_J, viscosity, damage, stress_block and bulk_modulus may be NULL. nparams <= 256 with params
  *    non-NULL when nparams > 0; 0 <= state_size <= 4096; needs holds only
  *    known HEARTH_NEEDS_* bits.
  *
@@ -126,10 +126,11 @@ enum {
     HEARTH_NEEDS_TEMPERATURE = 1u << 0, ///< hearth_point.temperature is filled (degrees C)
     HEARTH_NEEDS_POROSITY = 1u << 1,    ///< hearth_point.porosity is filled (0..1)
     HEARTH_NEEDS_SATURATION = 1u << 2,  ///< hearth_point.saturation is filled (0..1)
-    /// The law is written to be completed by the core's thermal expansion term -c*lambda*J^E*(T-Tref) I
-    /// (Ding et al. eq. 10). The core adds that term to any material whose core parameter `expansion`
-    /// (c*lambda) is > 0, flagged or not; the flag states the intent, and `hearth plugin check` and the
-    /// rheometer fill the temperature for it.
+    /// The law is written to be completed by the core's thermal expansion (Ding et al. eq. 10): a thermal
+    /// strain taken out of F and grad_v when the plugin gives bulk_modulus, else the pressure
+    /// -c*lambda*(T-Tref) I added after the stress. The core applies it to any material whose core
+    /// parameter `expansion` (c*lambda) is > 0, flagged or not; the flag states the intent, and
+    /// `hearth plugin check` and the rheometer fill the temperature for it.
     HEARTH_NEEDS_THERMAL_EXPANSION = 1u << 3,
     /// hearth_point.dim and hearth_block.dim are read (contract rule 8). Every core that knows the bit
     /// fills them for every plugin; the bit only makes an older core, whose point has no dim, refuse.
@@ -247,6 +248,16 @@ typedef struct hearth_material {
     /// stress would for that point alone, bit for bit. Returns the number of points with a nonzero code.
     /// Called concurrently, each call on its own block (rule 5).
     int (*stress_block)(const hearth_block *b, double *const tau[9], int *code);
+    /// Optional (may be NULL; read only when struct_size covers it). The small-strain bulk modulus K (Pa)
+    /// of the law at these parameters and state: the stiffness against a change of volume at rest
+    /// (lambda + 2/3 mu for an isotropic law). Finite and > 0 when given. With it the core's thermal
+    /// expansion (core parameter `expansion`, c lambda of Ding et al. eq. 10) is a thermal strain,
+    /// ln J_th = c lambda (T - T_ref) / K: the core hands stress a point's F and grad_v with that
+    /// isotropic stretch taken out (F = F_M F_th, F_th = J_th^(1/3) I), so the law's own return map sees
+    /// the whole elastic stress and a free body expands by J_th and no further, whether it yields or not.
+    /// Without it the core adds the thermal pressure -c lambda (T - T_ref) I after the stress, outside the
+    /// law's yield condition (a yielding skeleton then never relaxes it). Called concurrently (rule 5).
+    double (*bulk_modulus)(const double *p, const double *state);
 } hearth_material;
 
 /// The entry point a plugin defines.

@@ -675,6 +675,9 @@ static int get_particles(ck_cursor *c, hearth_scene *s, hearth_error *err) {
         if (bytes && ck_get(c, ps->col[k], bytes)) return -1;
         if (check_column(c, s, k, (int)n)) return -1;
     }
+    /* a file saved before eq. 10 became a strain (material.h) has no thermal strain column: none taken out yet */
+    if ((ps->enabled & (1u << PC_THERMAL)) && !(enabled & (1u << PC_THERMAL)) && n)
+        memset(ps->col[PC_THERMAL], 0, sizeof(double) * (size_t)n);
     ps->n = (int)n;
     return 0;
 }

@@ -33,6 +33,7 @@ static const struct {
     [PC_MIXD] = {"mix_ratios_dynamic", 8, 0},
     [PC_BROWNING] = {"browning", 1, 0},
     [PC_DRIED] = {"dried", 1, 0},
+    [PC_THERMAL] = {"thermal_strain", 1, 0},
 };
 
 const char *particles_col_name(int c) { return col_info[c].name; }

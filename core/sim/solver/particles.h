@@ -38,6 +38,7 @@ typedef enum pcol {
     PC_MIXD,                   /* dynamic mixing ratios (Nagasawa et al. eq. 44), MIX_MAX */
     PC_BROWNING,               /* browning index Delta E / Delta E_inf (Zanoni et al. 1995), 0..1, 1 (browning.c) */
     PC_DRIED,                  /* 1 - the lowest moisture ratio X/X_0 reached, 0..1 (irreversible moisture curves), 1 */
+    PC_THERMAL,                /* thermal volume strain ln J_th at the last stress (eq. 10 as a strain: material.h), 1 */
     PC_COUNT
 } pcol;
 
