@@ -104,7 +104,9 @@ const double *material_run_params_at(material_run_params *rp, const material_slo
         q[c->param] = curve_eval(c, c->irreversible ? rp->Tmax[i] : rp->T[i]);
     }
     if (nt < nc) {
-        const double r = material_moisture_ratio(ms, ps, i), rd = rp->dried ? fmin(r, 1.0 - rp->dried[i]) : r;
+        /* fmin(r, d) without the call where its value is r's bits: r below d, or equal and not a zero */
+        const double r = material_moisture_ratio(ms, ps, i), d = rp->dried ? 1.0 - rp->dried[i] : r;
+        const double rd = r <= d && r != 0 ? r : fmin(r, d);
         const int fresh = !(r == rp->r && rd == rp->rd);
         rp->r = r, rp->rd = rd;
         for (int k = nt; k < nc; k++) {
@@ -118,6 +120,38 @@ const double *material_run_params_at(material_run_params *rp, const material_slo
         }
     }
     return q;
+}
+
+/* The varying parameters of points i0 .. i0 + n - 1 as columns (vcol[v] for
+ * parameter vk[v]): the values material_run_params_at gives point by point, to
+ * the bit, computed curve by curve over the block. A parameter's value is its
+ * temperature curve's (or its uniform value), times its moisture curve's
+ * factor; the factors are evaluated again only where material_run_params_at
+ * would (the ratios differ from the last point's), so they are its values. */
+static void run_params_columns(material_run_params *rp, const material_slot *ms, const particles *ps, int i0, int n,
+                               int nv, const int *vk, double (*vcol)[HEARTH_BLOCK_MAX]) {
+    const int nt = rp->nt, nc = ms->ncurves;
+    int col_of[MATERIAL_MAX_PARAMS];
+    for (int v = 0; v < nv; v++) {
+        col_of[vk[v]] = v;
+        for (int j = 0; j < n; j++) vcol[v][j] = ms->params[vk[v]]; /* rewritten below where a temperature curve is */
+    }
+    for (int t = 0; t < nt; t++) {
+        const curve *c = &ms->curves[t];
+        const double *x = (c->irreversible ? rp->Tmax : rp->T) + i0;
+        double *col = vcol[col_of[c->param]];
+        for (int j = 0; j < n; j++) col[j] = curve_eval(c, x[j]);
+    }
+    if (nt == nc) return;
+    for (int j = 0; j < n; j++) {
+        const int i = i0 + j;
+        const double r = material_moisture_ratio(ms, ps, i), d = rp->dried ? 1.0 - rp->dried[i] : r;
+        const double rd = r <= d && r != 0 ? r : fmin(r, d); /* fmin's bits (material_run_params_at) */
+        if (!(r == rp->r && rd == rp->rd))
+            for (int k = nt; k < nc; k++) rp->f[k - nt] = curve_eval(&ms->curves[k], ms->curves[k].irreversible ? rd : r);
+        rp->r = r, rp->rd = rd;
+        for (int k = nt; k < nc; k++) vcol[col_of[ms->curves[k].param]][j] *= rp->f[k - nt];
+    }
 }
 
 /* Point by point: P2G's own calls, with the parameters resolved per run (above). */
@@ -186,22 +220,21 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     for (int v = 0; v < nv; v++) pcolumn[vk[v]] = vcol[v];
     if (nv || porous) {
         memcpy(q, ms->params, sizeof(double) * (size_t)np);
-        material_run_params rp; /* the curves once per run, as run_points resolves them */
-        if (nv) material_run_params_init(&rp, ms, ps);
-        for (int j = 0; j < n; j++) {
-            if (nv) {
-                const double *pj = material_run_params_at(&rp, ms, ps, i0 + j);
-                for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j] = pj[vk[v]];
-            }
-            if (porous) { /* as material_point_stress: J^P at the start of the step */
+        material_run_params rp; /* the curves once per run, as run_points resolves them, curve by curve */
+        if (nv) {
+            material_run_params_init(&rp, ms, ps);
+            run_params_columns(&rp, ms, ps, i0, n, nv, vk, vcol);
+        }
+        if (porous)
+            for (int j = 0; j < n; j++) { /* as material_point_stress: J^P at the start of the step */
                 double JP = 1.0;
                 if (m->plastic_J) {
+                    for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j];
                     plugin_call_enter(m, "plastic_J");
                     JP = m->plastic_J(q, state ? state + (size_t)j * stride : NULL);
                 }
                 P[j] = gas_porosity(JP, ms->core[CP_POROSITY0]);
             }
-        }
     }
     /* eq. 10 as a strain: the block gets F_M and L_M, as run_points hands each point */
     double *th = thermal_column(ms, ps, r, flags), Fm[9][HEARTH_BLOCK_MAX], Lm[9][HEARTH_BLOCK_MAX];

@@ -208,6 +208,8 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
     double *Q = mom ? pcold(ps, PC_QW) : NULL; /* kept only for the momentum coupling */
     const double *area = s->boundary.area, *depth = s->boundary.depth, dt = tp->dt, s_amb = s->def.oven_saturation;
     const int *mat = pcoli(ps, PC_MAT), *flags = pcoli(ps, PC_FLAGS); /* live with heat and with water */
+    int jmax_mat = -1; /* the material whose conduction cap jmax holds: it depends on the material alone */
+    double jmax = 0;
     for (int i = pb.start; i < pb.end; i++) {
         int base[3] = {0, 0, 0};
         double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3][3] = {{0}};
@@ -232,8 +234,13 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
             const double k = ms->core[CP_CONDUCTIVITY];
             double kv = Vp;
             if (SRC && !apart && k > 0) { /* forward Euler: at most the volume its step covers (cond_volume_cap, above) */
-                const double jmax = COND_J_MARGIN * ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT] * g->dx * g->dx / (2.0 * D * k * dt);
-                kv = fmin(Vp, V0[i] * jmax);
+                if (mat[i] != jmax_mat) { /* once per run of one material: the same expression, so the same bits */
+                    jmax_mat = mat[i];
+                    jmax = COND_J_MARGIN * ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT] * g->dx * g->dx / (2.0 * D * k * dt);
+                }
+                /* fmin's value without the call where the cap does not act (both ordered, Vp below) */
+                const double cap = V0[i] * jmax;
+                kv = Vp < cap ? Vp : fmin(Vp, cap);
             }
             const double kap = kv * k;
             for (int d = 0; d < 3; d++) qk[d] = kap * gx[d];
