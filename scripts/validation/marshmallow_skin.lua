@@ -20,6 +20,10 @@
 -- marshmallow's water activity is about room humidity, so it does not dry).
 -- The crackers' contact is `mode` (slip; sticky holds the material at their
 -- faces, a fountain squeeze flow) with Coulomb `friction` (0.5).
+-- `--set two_field=1` gives the grid two velocity fields at cracks (the scene
+-- setting two_field: damage-field-gradient partitioning, 2D; slip crackers).
+-- Note the ooze below counts particles that fell off the crackers, in their
+-- height bands, as the outline there.
 -- Prints, each frame: the ooze (marshmallow.lua's measure: the fraction of
 -- the outline, the outermost particle on each side in each band of height
 -- dx, that is inside material, i.e. started more than `skin` from the
