@@ -111,6 +111,22 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
                            "scene: periodic_%c: box axis %c spans %g m = %.9g cells of dx = %g m; a periodic axis must "
                            "span a whole number of cells", "xyz"[k], "xyz"[k], d->hi[k] - d->lo[k], cells, d->dx);
     }
+    if (d->two_field) { /* mpm_two_field.c: the second field exists in 2D MPM's passes only */
+        if (d->solver != HEARTH_SOLVER_MPM)
+            return err_set(err, HEARTH_ERR_PARAM, "scene: two_field = true needs solver = \"mpm\"; set two_field = false");
+        if (d->dim != 2)
+            return err_set(err, HEARTH_ERR_PARAM,
+                           "scene: two_field is 2D only (this scene has dim = %d); set two_field = false or dim = 2",
+                           d->dim);
+        if (ranks_size() > 1)
+            return err_set(err, HEARTH_ERR_PARAM,
+                           "scene: two_field runs in one process, and this run has %d MPI ranks; run it without mpirun "
+                           "(or set two_field = false)",
+                           ranks_size());
+        if (d->periodic[0] || d->periodic[1])
+            return err_set(err, HEARTH_ERR_PARAM, "scene: two_field does not carry periodic axes; set two_field = false "
+                                                  "or periodic_x = periodic_y = false");
+    }
     if (d->damping > 0 && d->solver != HEARTH_SOLVER_MPM) /* it acts in mpm.c's grid update */
         return err_set(err, HEARTH_ERR_PARAM, "scene: damping = %g 1/s; only the MPM solver damps (solver = \"mpm\")",
                        d->damping);

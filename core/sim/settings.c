@@ -99,6 +99,13 @@ static const hearth_setting settings[] = {
     REAL("browning_scale", "1",
          "multiplies the browning rate (1 = physical time; a scene whose heat runs N times fast sets N)", 1, 0, 1e9,
          browning_scale, 0),
+    FLAG("two_field",
+         "MPM keeps two velocity fields at the nodes a crack crosses, so the two sides of a crack (a ridge of the "
+         "materials' damage) move apart or slide instead of moving as one (damage-field-gradient partitioning, Homel & "
+         "Herbold 2017; solver/mpm_two_field.c). 2D MPM on one rank, no sticky colliders, no periodic axes",
+         two_field),
+    REAL("two_field_friction", "1", "with two_field: Coulomb friction coefficient between the two sides of a crack where "
+         "they press together (0 = they slide freely)", 0, 0, 10, two_field_friction, 0),
     LUA_CHOICE("blend", "how bodies of h.mix{...} materials are simulated: the blend model, linearly blended parameters, "
                "or random binary labels (Nagasawa et al. Figs. 1, 9, 10)", 0, w_blend, 1),
     LUA_CHOICE("mixing", "dynamic: h.mix bodies share one mixture whose ratios follow the particles (Nagasawa et al. eq. "

@@ -20,6 +20,10 @@
 -- marshmallow's water activity is about room humidity, so it does not dry).
 -- The crackers' contact is `mode` (slip; sticky holds the material at their
 -- faces, a fountain squeeze flow) with Coulomb `friction` (0.5).
+-- `--set two_field=1` gives the grid two velocity fields at cracks (the scene
+-- setting two_field: damage-field-gradient partitioning, 2D; slip crackers).
+-- Note the ooze below counts particles that fell off the crackers, in their
+-- height bands, as the outline there.
 -- Prints, each frame: the ooze (marshmallow.lua's measure: the fraction of
 -- the outline, the outermost particle on each side in each band of height
 -- dx, that is inside material, i.e. started more than `skin` from the
@@ -28,7 +32,7 @@
 local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dim = 2, dx = 0.002, roast = 0.9, press = 0.8, speed = 0.01, frames = 17, F = 10, ef_dry = 1e-3,
-  Kw = 1.5e-5, evap = 2, s0 = 0.5, skin = 0.004, only = "", mode = "slip", friction = 0.5 }
+  Kw = 1.5e-5, evap = 2, s0 = 0.5, skin = 0.004, only = "", mode = "slip", friction = 0.5, two_field = 0 }
 local d3 = P.dim == 3
 local dx = P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
@@ -55,7 +59,7 @@ for _, name in ipairs { "raw", "roasted" } do
     local roast = name == "roasted"
     local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, H, 0.08) }, gravity = v(0, -9.81, 0),
       oven = roast and { temperature = c.ambient_theta, beta = c.ambient_beta, saturation = 0 } or { saturation = P.s0 },
-      name = "marshmallow_skin" }
+      two_field = P.two_field == 1, name = "marshmallow_skin" }
     local lower = s:collider { shape = h.box(v(xc - CW, BASE - CT, zc - CW), v(xc + CW, BASE, zc + CW)), mode = P.mode,
       friction = P.friction }
     local upper = s:collider { shape = h.box(v(xc - CW, BASE + HM + GAP, zc - CW), v(xc + CW, BASE + HM + GAP + CT, zc + CW)),

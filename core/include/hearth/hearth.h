@@ -236,6 +236,8 @@ typedef struct hearth_scene_def {
     double browning_scale;   ///< multiplies the browning rate: 1 for physical time; the time-scale factor of a scene whose heat runs in animation units. Default 1
     int latent_heat;         ///< 1: evaporated water takes HEARTH_LATENT_HEAT J/kg from the particle's heat, and wet particles boil at boiling_point (MPM; beyond Ding et al. eq. 9); default 0
     double boiling_point;    ///< with latent_heat: a particle holding water does not heat past this (degrees C); the excess boils its water away (MPM). Default 100
+    int two_field;           ///< 1: MPM keeps two velocity fields at nodes across a crack (damage-field-gradient partitioning, Homel & Herbold 2017; solver/mpm_two_field.c); 2D, one rank. Default 0
+    double two_field_friction; ///< with two_field: Coulomb coefficient between the two fields where they press together (0 = frictionless). Default 0
 } hearth_scene_def;
 
 /// Latent heat of vaporisation of water near 100 degC (J/kg): 2257 kJ/kg at

@@ -322,6 +322,8 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
     if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) /* not in version 3's DEF section either */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with periodic axes are not supported yet",
                        path);
+    if (s->def.two_field) /* not in version 4's DEF section: a restored scene would step with one field */
+        return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of two_field scenes are not supported yet", path);
     if (s->mix.mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
                        path);

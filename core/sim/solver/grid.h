@@ -28,6 +28,12 @@ enum {
     GRID_NCH_MAX
 };
 #define GRID_NCH_MOMENTUM 4
+/* A two_field scene's channels (mpm_two_field.c), after all the others so no
+ * other scene pays for them: the second field's mass and momentum (velocity
+ * after the grid update), in CH_M..CH_PZ's order so the grid update runs on
+ * either; the node's reference damage gradient (1/m; zero where the node is
+ * not split); the nodal damage (the mass-weighted mean). */
+enum { CH_TF_M = GRID_NCH_MAX, CH_TF_PX, CH_TF_PY, CH_TF_PZ, CH_TF_GX, CH_TF_GY, CH_TF_D, GRID_NCH_TWO };
 
 typedef struct grid {
     int dim;

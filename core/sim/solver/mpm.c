@@ -85,6 +85,7 @@ static void mpm_free(hearth_scene *s) {
     mem_free(m->counts, sizeof(int) * ((size_t)m->nblocks + 1));
     mem_free(m->mark, (size_t)m->nblocks);
     mem_free(m->hist, sizeof(int) * m->histcap);
+    mpm_two_field_free(m);
     mpm_ranks_free(m);
     mem_free(m, sizeof *m);
     s->mpm = NULL;
@@ -135,6 +136,10 @@ FORCE_INLINE void p2g_add2(double *p, v2d x) {
  * water, then the volume sum_p w_ip J V_0 (boundary.c's volume fraction; it
  * goes to CH_CG_R, which grid_activate zeroes in a field scene). */
 enum { P2G_HC = GRID_NCH_MOMENTUM, P2G_T, P2G_MW, P2G_SW, P2G_V, P2G_NCH };
+/* two_field (2D only): the nodes' reference damage gradients, then the second field's mass and momentum, past
+ * the channels above in the same tile (2D uses 36 nodes of its 216) */
+enum { P2G_GX = P2G_NCH, P2G_GY, P2G_BM, P2G_BX, P2G_BY, P2G_NCH_TWO };
+_Static_assert(P2G_NCH_TWO * GRID_T * GRID_T <= P2G_NCH * GRID_T * GRID_T * GRID_T, "2D's two_field tile fits");
 static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T, CH_MW, CH_SW, CH_CG_R};
 
 /* D (2 or 3), HEAT (temperature live), WATER (water live) and MIRROR (a
@@ -142,8 +147,8 @@ static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T,
  * instantiation below, so a momentum-only scene runs the momentum-only loops
  * and a scene without sticky colliders carries no test for them (a runtime
  * test there cost 0.5% of P2G's instructions). */
-FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const int WATER, const int MIRROR, int k, double dt,
-                            double *tile) {
+FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const int WATER, const int MIRROR, const int TWO,
+                            int k, double dt, double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
     mpm_state *st = s->mpm;
@@ -160,6 +165,17 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     if (HEAT) memset(tile + P2G_HC * TN, 0, sizeof(double) * 2 * (size_t)TN);
     if (WATER) memset(tile + P2G_MW * TN, 0, sizeof(double) * 2 * (size_t)TN);
     if (HEAT || WATER) memset(tile + P2G_V * TN, 0, sizeof(double) * (size_t)TN);
+    const double *dgrad = TWO ? st->dgrad : NULL; /* two_field: each particle's damage gradient (mpm_two_field.c) */
+    if (TWO) {
+        memset(tile + P2G_BM * TN, 0, sizeof(double) * 3 * (size_t)TN);
+        for (int a = 0; a < GRID_T; a++)
+            for (int b = 0; b < GRID_T; b++) {
+                int l;
+                const double *node = grid_tile_node(g, D, bc, a, b, 0, &l);
+                tile[P2G_GX * TN + a * GRID_T + b] = node[CH_TF_GX * NPB + l];
+                tile[P2G_GY * TN + a * GRID_T + b] = node[CH_TF_GY * NPB + l];
+            }
+    }
 
     const double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *M = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
     const double *Cc = pcold(ps, PC_C);
@@ -235,6 +251,12 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                         tp[P2G_SW * TN + t] += wab * cap;
                     }
                     if (HEAT || WATER) tp[P2G_V * TN + t] += vab;
+                    /* the second field's particles at this node scatter the same terms into its channels too */
+                    if (TWO && mpm_two_field_second(tp[P2G_GX * TN + t], tp[P2G_GY * TN + t], dgrad[2 * i], dgrad[2 * i + 1])) {
+                        tp[P2G_BM * TN + t] += wab * m;
+                        tp[P2G_BX * TN + t] += wab * (mv0 + Q[0] * d0 + Q[1] * d1);
+                        tp[P2G_BY * TN + t] += wab * (mv1 + Q[3] * d0 + Q[4] * d1);
+                    }
                 } else {
                     /* Momentum: the nodes c = 0 and 1 are adjacent in the tile, so they go as a pair of lanes
                      * (c = 2 alone). ((mv + Q d0) + Q d1) is the same for the three c, and each lane does the
@@ -293,16 +315,23 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 if (WATER)
                     for (int ch = P2G_MW; ch <= P2G_SW; ch++) node[p2g_channel[ch] * NPB + l] += tile[ch * TN + t];
                 if (HEAT || WATER) node[CH_CG_R * NPB + l] += tile[P2G_V * TN + t];
+                if (TWO)
+                    for (int ch = 0; ch < 3; ch++) node[(CH_TF_M + ch) * NPB + l] += tile[(P2G_BM + ch) * TN + t];
             }
 }
 
 typedef void (*block_fn)(hearth_scene *, int, double, double *);
 /* the instantiations, indexed [dim == 3][heat][water] */
 #define BLOCK_FN(kind, D, H, W) \
-    static void kind##_##D##H##W(hearth_scene *s, int k, double dt, double *tile) { kind##_block(s, D, H, W, k, dt, tile); }
+    static void kind##_##D##H##W(hearth_scene *s, int k, double dt, double *tile) { kind##_block(s, D, H, W, 0, k, dt, tile); }
 /* P2G's, indexed [sticky][dim == 3][heat][water] */
 #define P2G_FN(D, H, W, M) \
-    static void p2g_##D##H##W##M(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, D, H, W, M, k, dt, tile); }
+    static void p2g_##D##H##W##M(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, D, H, W, M, 0, k, dt, tile); }
+/* two_field's, 2D without sticky colliders, indexed [heat][water] */
+#define P2G_TWO_FN(H, W) \
+    static void p2g_two_##H##W(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 2, H, W, 0, 1, k, dt, tile); }
+P2G_TWO_FN(0, 0) P2G_TWO_FN(0, 1) P2G_TWO_FN(1, 0) P2G_TWO_FN(1, 1)
+static const block_fn p2g_two_fns[2][2] = {{p2g_two_00, p2g_two_01}, {p2g_two_10, p2g_two_11}};
 P2G_FN(2, 0, 0, 0) P2G_FN(2, 0, 1, 0) P2G_FN(2, 1, 0, 0) P2G_FN(2, 1, 1, 0)
 P2G_FN(3, 0, 0, 0) P2G_FN(3, 0, 1, 0) P2G_FN(3, 1, 0, 0) P2G_FN(3, 1, 1, 0)
 P2G_FN(2, 0, 0, 1) P2G_FN(2, 0, 1, 1) P2G_FN(2, 1, 0, 1) P2G_FN(2, 1, 1, 1)
@@ -317,6 +346,7 @@ static block_fn p2g_prepare(hearth_scene *s) {
     m->sticky_faces = 0;
     for (int c = 0; c < s->ncol; c++) m->sticky_faces |= s->cols[c].mode == HEARTH_STICKY;
     for (int k = 0; k < m->npb; k++) m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
+    if (s->def.two_field) return p2g_two_fns[thermal_active(s)][water_active(s)]; /* 2D, no sticky face (mpm_step) */
     return p2g_fns[m->sticky_faces][s->g.dim == 3][thermal_active(s)][water_active(s)];
 }
 
@@ -354,12 +384,12 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
  * in each of the two loops of mpm_grid_update, so the undamped one carries no
  * damping test: OpenMP outlines a parallel loop before inlining, so the
  * constant must reach the block, not a function holding the pragma. */
-FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double damp, const int DAMP) {
+FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double damp, const int DAMP, const int ch0) {
     grid *g = &s->g;
     const int D = g->dim, NPB = g->nodes_per_block;
     const hearth_scene_def *def = &s->def;
     double vcol2 = 0;
-    double *node = grid_block(g, k);
+    double *node = grid_block(g, k) + (size_t)ch0 * (size_t)NPB; /* ch0: CH_M, or two_field's second field CH_TF_M */
     int bc[3];
     grid_block_coords(g, g->active[k], bc);
     /* domain walls act on the two node layers nearest each face; a periodic axis has none */
@@ -431,6 +461,11 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
 static void grid_update_team(hearth_scene *s, double dt, double *vcol2) {
     const grid *g = &s->g;
     double v2 = 0;
+    if (s->def.two_field) { /* the second field's nodes (mpm_two_field.c) take the same update */
+        const double damp = s->def.damping > 0 ? 1.0 / (1.0 + s->def.damping * dt) : 1.0;
+#pragma omp for schedule(dynamic, 4) nowait
+        for (int k = 0; k < g->nactive; k++) v2 = fmax(v2, grid_update_block(s, k, dt, damp, s->def.damping > 0, CH_TF_M));
+    }
     if (s->def.damping > 0) {
         /* Velocity damping for static problems, implicit in the drag (v' = v + dt (g - c v')) so any c dt
          * is stable; an explicit factor 1 - c dt would reverse velocities past c dt = 1. It acts after
@@ -438,10 +473,10 @@ static void grid_update_team(hearth_scene *s, double dt, double *vcol2) {
          * leave a body in equilibrium a residual velocity dt g c dt / (1 + c dt), and it would sink. */
         const double damp = 1.0 / (1.0 + s->def.damping * dt);
 #pragma omp for schedule(dynamic, 4) nowait
-        for (int k = 0; k < g->nactive; k++) v2 = fmax(v2, grid_update_block(s, k, dt, damp, 1));
+        for (int k = 0; k < g->nactive; k++) v2 = fmax(v2, grid_update_block(s, k, dt, damp, 1, CH_M));
     } else {
 #pragma omp for schedule(dynamic, 4) nowait
-        for (int k = 0; k < g->nactive; k++) v2 = fmax(v2, grid_update_block(s, k, dt, 1.0, 0));
+        for (int k = 0; k < g->nactive; k++) v2 = fmax(v2, grid_update_block(s, k, dt, 1.0, 0, CH_M));
     }
 #pragma omp critical(mpm_vcol2)
     if (v2 > *vcol2) *vcol2 = v2;
@@ -469,7 +504,8 @@ double mpm_grid_update(hearth_scene *s, double dt) {
 
 /* ---- G2P ------------------------------------------------------------- */
 
-FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const int WATER, int k, double dt, double *tile) {
+FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const int WATER, const int TWO, int k, double dt,
+                            double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
     double *Tcol = HEAT ? pcold(ps, PC_TEMPERATURE) : NULL, *Tmax = HEAT ? pcold(ps, PC_TEMP_MAX) : NULL;
@@ -504,7 +540,13 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                     const double cw = node[CH_MW * NPB + l];
                     tile[5 * TN + t] = cw > 0 ? node[CH_DMW * NPB + l] / cw : 0.0;
                 }
+                if (TWO) /* two_field (2D): the second field's velocity and the node's reference gradient */
+                    for (int ch = 0; ch < 2; ch++) {
+                        tile[(6 + ch) * TN + t] = node[(CH_TF_PX + ch) * NPB + l];
+                        tile[(8 + ch) * TN + t] = node[(CH_TF_GX + ch) * NPB + l];
+                    }
             }
+    const double *dgrad = TWO ? s->mpm->dgrad : NULL;
 
     double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *Cc = pcold(ps, PC_C);
     const double *M = pcold(ps, PC_MASS);
@@ -548,7 +590,9 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                 const double d1 = (b - fx[1]) * dx, wab = w[0][a] * w[1][b];
                 if (D == 2) {
                     const int t = a * GRID_T + b;
-                    const double u0 = tp[t], u1 = tp[TN + t];
+                    /* two_field: a particle of the node's second field reads that field's velocity */
+                    const int sec = TWO && mpm_two_field_second(tp[8 * TN + t], tp[9 * TN + t], dgrad[2 * i], dgrad[2 * i + 1]);
+                    const double u0 = sec ? tp[6 * TN + t] : tp[t], u1 = sec ? tp[7 * TN + t] : tp[TN + t];
                     if (HEAT) dT += wab * tp[3 * TN + t], Tn += wab * tp[4 * TN + t];
                     if (WATER) ds += wab * tp[5 * TN + t];
                     nv[0] += wab * u0;
@@ -689,7 +733,16 @@ BLOCK_FN(g2p, 2, 0, 0) BLOCK_FN(g2p, 2, 0, 1) BLOCK_FN(g2p, 2, 1, 0) BLOCK_FN(g2
 BLOCK_FN(g2p, 3, 0, 0) BLOCK_FN(g2p, 3, 0, 1) BLOCK_FN(g2p, 3, 1, 0) BLOCK_FN(g2p, 3, 1, 1)
 static const block_fn g2p_fns[2][2][2] = {{{g2p_200, g2p_201}, {g2p_210, g2p_211}}, {{g2p_300, g2p_301}, {g2p_310, g2p_311}}};
 
-static block_fn g2p_fn(const hearth_scene *s) { return g2p_fns[s->g.dim == 3][thermal_active(s)][water_active(s)]; }
+/* two_field's, 2D, indexed [heat][water] */
+#define G2P_TWO_FN(H, W) \
+    static void g2p_two_##H##W(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 2, H, W, 1, k, dt, tile); }
+G2P_TWO_FN(0, 0) G2P_TWO_FN(0, 1) G2P_TWO_FN(1, 0) G2P_TWO_FN(1, 1)
+static const block_fn g2p_two_fns[2][2] = {{g2p_two_00, g2p_two_01}, {g2p_two_10, g2p_two_11}};
+
+static block_fn g2p_fn(const hearth_scene *s) {
+    if (s->def.two_field) return g2p_two_fns[thermal_active(s)][water_active(s)];
+    return g2p_fns[s->g.dim == 3][thermal_active(s)][water_active(s)];
+}
 
 /* G2P's blocks for the team of the enclosing region (one thread outside one); no barrier at the end. */
 static void g2p_team(hearth_scene *s, block_fn fn, double dt) {
@@ -773,7 +826,14 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     if (wrap && (heat || water))
         return err_set(err, HEARTH_ERR_PARAM, "scene: periodic axes (periodic_%c) do not carry %s yet; use a closed box",
                        "xyz"[s->def.periodic[0] ? 0 : s->def.periodic[1] ? 1 : 2], heat ? "heat" : "water");
-    if (!heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial) { /* the usual step: one region */
+    if (s->def.two_field) { /* 2D, one rank, no periodic axis (scene.c's check) */
+        for (int c = 0; c < s->ncol; c++)
+            if (s->cols[c].mode == HEARTH_STICKY)
+                return err_set(err, HEARTH_ERR_PARAM, "scene: two_field does not carry sticky colliders (collider %d); "
+                                                      "use mode = \"slip\" or \"separate\", or set two_field = false", c);
+        if ((st = mpm_two_field_prepare(s, err))) return st;
+    }
+    if (!heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field) { /* the usual step: one region */
         const double vcol = step_team(s, dt, rep);
         rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;
         return mpm_ranks_report(s, dt, vcol, rep, err);
@@ -798,7 +858,9 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         if (heat && (st = thermal_finish(s, dt, err))) return st;
         mpm_ranks_fields_clear(s);
     }
+    if (s->def.two_field) mpm_two_field_split(s);
     const double vcol = mpm_grid_update(s, dt);
+    if (s->def.two_field) mpm_two_field_contact(s);
     if ((st = mpm_ranks_halo_back(s, err))) return st;
     if (wrap) mpm_periodic_fold(s, 1);
     mpm_g2p(s, dt, rep);

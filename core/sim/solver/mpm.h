@@ -62,7 +62,28 @@ typedef struct mpm_state {
     int failed_alone;       /* a step call failed here with an error the other ranks may not share: no more exchanges (mpm_ranks_end) */
     struct mpm_slabs *slabs; /* the slab mode's state (mpm_ranks.c) */
     struct mpm_slab_fields *sfields; /* the slabs' halo layers for heat and water (mpm_ranks_fields.c) */
+    double *dgrad;          /* two_field: each particle's damage gradient (x, y; 1/m) this step (mpm_two_field.c) */
+    int dgrad_cap;
 } mpm_state;
+
+/* ---- two velocity fields at cracks (mpm_two_field.c; scene setting two_field, 2D) ---- */
+
+/// After the sort, before P2G: each particle's damage gradient (m->dgrad) and
+/// each node's reference gradient (CH_TF_GX, CH_TF_GY; zero where the node is
+/// not split). Fails only for memory.
+hearth_status mpm_two_field_prepare(hearth_scene *s, hearth_error *err);
+/// Whether particle gradient (px, py) puts the particle in the second field of
+/// a node whose reference gradient is (gx, gy): the sign of their dot product
+/// (Homel & Herbold 2017); a node that is not split has (0, 0) and keeps all.
+static inline int mpm_two_field_second(double gx, double gy, double px, double py) { return gx * px + gy * py < 0.0; }
+/// Before the grid update: the first field's mass and momentum are the total
+/// less the second's (P2G scatters every particle into the total, so the
+/// field passes see all the material).
+void mpm_two_field_split(hearth_scene *s);
+/// After both fields' grid updates: where the fields press together, the
+/// contact correction (frictionless or Coulomb, momentum kept).
+void mpm_two_field_contact(hearth_scene *s);
+void mpm_two_field_free(mpm_state *m);
 
 /// The MPM state of s (NULL under another solver), for the field passes an
 /// MPM step runs: the particle blocks of this step's sort and P2G's volumes.

@@ -344,7 +344,8 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     }
     if (wrap) mpm_periodic_mark(s, m->mark);
     if ((st = mpm_ranks_mark(s, err))) return st;
-    st = grid_set_channels(g, thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
+    st = grid_set_channels(g, s->def.two_field ? GRID_NCH_TWO
+                              : thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
     if (st) return st;
     if ((st = grid_activate(g, m->mark, err))) return st;
     mpm_ranks_partition(s); /* which particle blocks this rank steps */

@@ -1,0 +1,273 @@
+/* mpm_two_field.c: two velocity fields at the nodes a crack crosses (scene
+ * setting two_field; 2D MPM, one rank).
+ *
+ * With one velocity field a node moves everything near it together, so a
+ * cracked point is carried along with the material on both sides of it: a
+ * crack can carry no tension (material.h's cut-off) but can never open or
+ * slide (the marshmallow's skin, docs/validation.md "The marshmallow's ooze").
+ * Damage-field-gradient partitioning (Homel & Herbold 2017, "Field-gradient
+ * partitioning for fracture and frictional contact in the material point
+ * method", IJNME 109, 1013-1044, §2-3; as used by Wolper et al. 2019, CD-MPM,
+ * §5) gives such a node two fields:
+ *  - each particle's damage D_p is 1 where its plugin reports it cracked
+ *    (damage >= 1, the core's own threshold for the tension cut-off) and 0
+ *    otherwise: intact but strained material stays one body;
+ *  - the nodes take the mass-weighted damage D_i = sum w m D_p / sum w m, and
+ *    each particle its gradient grad D_p = sum_i D_i grad w_ip (H&H eq. 7-8);
+ *  - each node takes as reference the particle gradient of largest norm in
+ *    its support (H&H §3.1), and is split where that norm is at least
+ *    SPLIT / dx: on a crack (a ridge of D) the particles on either side have
+ *    gradients of opposite sign, so a particle whose gradient points against
+ *    the node's (negative dot product) goes into the second field (H&H eq. 9);
+ *    on a plateau or a step of D every gradient has one sign and nothing is
+ *    split, so a wholly cracked skin stays with what it encloses;
+ *  - P2G scatters every particle into the total (CH_M..: the field passes see
+ *    all the material), and the second field's particles also into CH_TF_M..
+ *    (mpm.c's TWO instantiations); before the grid update the first field
+ *    becomes the total less the second (mpm_two_field_split). Where every
+ *    particle of a node is in the second field the two sums are the same
+ *    operations in the same order, so the first field's mass is exactly 0;
+ *  - the grid update (gravity, walls, colliders) runs on each field; then
+ *    where the two fields approach along the reference normal n (from the
+ *    first field toward the second: the second lies where the gradients point
+ *    against the node's), each takes the centre-of-mass normal velocity, and
+ *    a Coulomb friction two_field_friction limits their tangential slip
+ *    (Bardenhagen et al. 2000, "The material-point method for granular
+ *    materials", CMAME 187, eq. 20-27; H&H §4). The correction keeps the
+ *    node's momentum exactly (m_A dv_A = -m_B dv_B); fields moving apart are
+ *    left alone, so a crack opens freely;
+ *  - G2P reads each particle's velocity at each node from its own field, by
+ *    the same test with the same gradients as P2G.
+ * A scene without a cracked particle splits no node: the second field is
+ * empty, the first is the total to the bit, and the step is the one-field
+ * step's bits (two_field_off_same_bits). A scene with two_field = false
+ * allocates and runs none of this.
+ *
+ * Determinism: the scatters run in mpm.c's colour phases (no two blocks of a
+ * colour share a node), the largest-norm choice keeps the first particle in a
+ * node's fixed order on ties: the same bits for any thread count. */
+#include <math.h>
+#include <string.h>
+
+#include "alloc.h"
+#include "error.h"
+#include "material.h"
+#include "mpm.h"
+#include "plugins.h"
+
+/* A node is split where its reference damage gradient is at least SPLIT / dx:
+ * a lone cracked column of particles gives about 0.5 / dx beside it; a
+ * smooth rounding of 0/1 damage over several cells does not split. */
+#define SPLIT 0.25
+
+void mpm_two_field_free(mpm_state *m) {
+    mem_free(m->dgrad, sizeof(double) * 2 * (size_t)m->dgrad_cap);
+    m->dgrad = NULL;
+    m->dgrad_cap = 0;
+}
+
+/* 1 for a cracked particle (its plugin's damage at 1), else 0 (header) */
+static double cracked(const hearth_scene *s, int i) {
+    const particles *ps = &s->ps;
+    const int m = pcoli(ps, PC_MAT)[i];
+    const material_slot *ms = &s->mats.slot[m];
+    if (!ms->fracture || !ms->m->damage) return 0.0;
+    double pscratch[SCENE_MAX_PARAMS];
+    plugin_call_enter(ms->m, "damage");
+    const double d = ms->m->damage(material_params(&s->mats, ps, m, i, pscratch),
+                                   ps->state_stride ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
+    plugin_call_leave();
+    return d >= 1.0 ? 1.0 : 0.0;
+}
+
+/* a particle's 3x3 stencil: base node, weights and weight derivatives per dx */
+typedef struct stencil2 {
+    int base[2];
+    double w[2][3], dw[2][3];
+} stencil2;
+
+static void stencil_of(const grid *g, const double *x, stencil2 *st) {
+    for (int d = 0; d < 2; d++) {
+        const double X = (x[d] - g->lo[d]) * g->inv_dx;
+        st->base[d] = base_node(X);
+        bspline_weights(X - st->base[d], st->w[d], st->dw[d]);
+    }
+}
+
+/* a stencil node: always in an active block (the sort activated every block a particle's stencil touches) */
+static double *node_of(const grid *g, int i0, int i1, int *l) {
+    const int gi[3] = {i0, i1, 0};
+    double *node = grid_node_at(g, gi, l);
+    HEARTH_ASSERT(node);
+    return node;
+}
+
+/* pass 1, per particle block (colour phases): sum w m and w m D_p at the nodes */
+static void scatter_damage(hearth_scene *s, int k) {
+    const grid *g = &s->g;
+    const particles *ps = &s->ps;
+    const pblock pb = s->mpm->pb[k];
+    const int NPB = g->nodes_per_block;
+    const double *X = pcold(ps, PC_X), *M = pcold(ps, PC_MASS);
+    for (int i = pb.start; i < pb.end; i++) {
+        stencil2 st;
+        stencil_of(g, X + 3 * i, &st);
+        const double m = M[i], md = m * cracked(s, i);
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) {
+                int l = 0;
+                double *node = node_of(g, st.base[0] + a, st.base[1] + b, &l);
+                const double w = st.w[0][a] * st.w[1][b];
+                node[CH_TF_M * NPB + l] += w * m;
+                node[CH_TF_D * NPB + l] += w * md;
+            }
+    }
+}
+
+/* pass 3, per particle block: grad D_p = sum_i D_i grad w_ip (1/m) */
+static void gather_gradient(hearth_scene *s, int k) {
+    const grid *g = &s->g;
+    const pblock pb = s->mpm->pb[k];
+    const int NPB = g->nodes_per_block;
+    const double *X = pcold(&s->ps, PC_X);
+    double *G = s->mpm->dgrad;
+    for (int i = pb.start; i < pb.end; i++) {
+        stencil2 st;
+        stencil_of(g, X + 3 * i, &st);
+        double gx = 0, gy = 0;
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) {
+                int l = 0;
+                const double *node = node_of(g, st.base[0] + a, st.base[1] + b, &l);
+                const double D = node[CH_TF_D * NPB + l];
+                gx += D * st.dw[0][a] * st.w[1][b];
+                gy += D * st.w[0][a] * st.dw[1][b];
+            }
+        G[2 * i] = gx * g->inv_dx;
+        G[2 * i + 1] = gy * g->inv_dx;
+    }
+}
+
+/* pass 4, per particle block (colour phases): each node's reference, the particle gradient of largest norm */
+static void scatter_reference(hearth_scene *s, int k) {
+    const grid *g = &s->g;
+    const pblock pb = s->mpm->pb[k];
+    const int NPB = g->nodes_per_block;
+    const double *X = pcold(&s->ps, PC_X), *G = s->mpm->dgrad;
+    for (int i = pb.start; i < pb.end; i++) {
+        const double px = G[2 * i], py = G[2 * i + 1], n2 = px * px + py * py;
+        if (n2 == 0.0) continue;
+        stencil2 st;
+        stencil_of(g, X + 3 * i, &st);
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) {
+                int l = 0;
+                double *node = node_of(g, st.base[0] + a, st.base[1] + b, &l);
+                double *gx = node + CH_TF_GX * NPB + l, *gy = node + CH_TF_GY * NPB + l;
+                if (n2 > *gx * *gx + *gy * *gy) *gx = px, *gy = py; /* ties keep the first (a fixed order) */
+            }
+    }
+}
+
+/* Runs fn over this step's particle blocks in the colour phases (mpm.c's p2g_team), for the team of the enclosing region. */
+static void colours_team(hearth_scene *s, void (*fn)(hearth_scene *, int)) {
+    const mpm_state *m = s->mpm;
+    for (int col = 0; col < 8; col++) {
+        const int a = m->colour_start[col], b = m->colour_start[col + 1];
+        if (a == b) continue;
+#pragma omp for schedule(dynamic, 1)
+        for (int q = a; q < b; q++) fn(s, m->colour_pb[q]);
+    }
+}
+
+hearth_status mpm_two_field_prepare(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    grid *g = &s->g;
+    HEARTH_ASSERT(g->dim == 2 && g->nch == GRID_NCH_TWO && m->nranks == 1);
+    if (s->ps.n > m->dgrad_cap) {
+        mpm_two_field_free(m);
+        if (!(m->dgrad = mem_alloc(sizeof(double) * 2 * (size_t)s->ps.n)))
+            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particles' damage gradients (two_field)", s->ps.n);
+        m->dgrad_cap = s->ps.n;
+    }
+    const int NPB = g->nodes_per_block;
+    const double split2 = (SPLIT * g->inv_dx) * (SPLIT * g->inv_dx);
+#pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
+    {
+        colours_team(s, scatter_damage);
+#pragma omp for schedule(static)
+        for (int k = 0; k < g->nactive; k++) { /* D_i, and the mass channel back to 0 for P2G */
+            double *node = grid_block(g, k);
+            for (int l = 0; l < NPB; l++) {
+                const double mw = node[CH_TF_M * NPB + l];
+                node[CH_TF_D * NPB + l] = mw > 0 ? node[CH_TF_D * NPB + l] / mw : 0.0;
+                node[CH_TF_M * NPB + l] = 0.0;
+            }
+        }
+#pragma omp for schedule(dynamic, 2)
+        for (int k = 0; k < m->npb; k++) gather_gradient(s, k);
+        colours_team(s, scatter_reference);
+#pragma omp for schedule(static)
+        for (int k = 0; k < g->nactive; k++) { /* a node below the threshold is not split */
+            double *node = grid_block(g, k);
+            for (int l = 0; l < NPB; l++) {
+                double *gx = node + CH_TF_GX * NPB + l, *gy = node + CH_TF_GY * NPB + l;
+                if (*gx * *gx + *gy * *gy < split2) *gx = *gy = 0.0;
+            }
+        }
+    }
+    return HEARTH_OK;
+}
+
+void mpm_two_field_split(hearth_scene *s) {
+    grid *g = &s->g;
+    const int NPB = g->nodes_per_block;
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
+    for (int k = 0; k < g->nactive; k++) {
+        double *node = grid_block(g, k);
+        for (int l = 0; l < NPB; l++) {
+            const double mb = node[CH_TF_M * NPB + l];
+            if (!(mb > 0)) continue;
+            const double ma = node[CH_M * NPB + l] - mb;
+            for (int d = 0; d < 3; d++) {
+                double *p = node + (CH_PX + d) * NPB + l;
+                *p = ma > 0 ? *p - node[(CH_TF_PX + d) * NPB + l] : 0.0;
+            }
+            node[CH_M * NPB + l] = ma > 0 ? ma : 0.0;
+        }
+    }
+}
+
+/* one field's correction at a contact node: r its velocity less the centre of mass's, rn = r . n */
+static void correct(double *v, const double r[2], double rn, const double n[2], double mu) {
+    const double t[2] = {r[0] - rn * n[0], r[1] - rn * n[1]}, tl = sqrt(t[0] * t[0] + t[1] * t[1]);
+    const double slip = tl > 0 ? fmin(mu * fabs(rn), tl) / tl : 0.0; /* Coulomb: at most mu |normal change| */
+    v[0] -= rn * n[0] + slip * t[0];
+    v[1] -= rn * n[1] + slip * t[1];
+}
+
+void mpm_two_field_contact(hearth_scene *s) {
+    grid *g = &s->g;
+    const int NPB = g->nodes_per_block;
+    const double mu = s->def.two_field_friction;
+#pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
+    for (int k = 0; k < g->nactive; k++) {
+        double *node = grid_block(g, k);
+        for (int l = 0; l < NPB; l++) {
+            const double ma = node[CH_M * NPB + l], mb = node[CH_TF_M * NPB + l];
+            if (!(ma > 0 && mb > 0)) continue;
+            const double gx = node[CH_TF_GX * NPB + l], gy = node[CH_TF_GY * NPB + l], gl = sqrt(gx * gx + gy * gy);
+            if (!(gl > 0)) continue;
+            const double n[2] = {gx / gl, gy / gl}; /* from the first field toward the second */
+            double va[2] = {node[CH_PX * NPB + l], node[CH_PY * NPB + l]};
+            double vb[2] = {node[CH_TF_PX * NPB + l], node[CH_TF_PY * NPB + l]};
+            if (!((va[0] - vb[0]) * n[0] + (va[1] - vb[1]) * n[1] > 0)) continue; /* apart or sliding: free */
+            const double vc[2] = {(ma * va[0] + mb * vb[0]) / (ma + mb), (ma * va[1] + mb * vb[1]) / (ma + mb)};
+            const double ra[2] = {va[0] - vc[0], va[1] - vc[1]}, rb[2] = {vb[0] - vc[0], vb[1] - vc[1]};
+            correct(va, ra, ra[0] * n[0] + ra[1] * n[1], n, mu);
+            correct(vb, rb, rb[0] * n[0] + rb[1] * n[1], n, mu);
+            node[CH_PX * NPB + l] = va[0], node[CH_PY * NPB + l] = va[1];
+            node[CH_TF_PX * NPB + l] = vb[0], node[CH_TF_PY * NPB + l] = vb[1];
+        }
+    }
+}
