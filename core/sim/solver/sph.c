@@ -108,8 +108,11 @@
  * warmed), and with `tension` and artificial stress its top burst at 1.64 s
  * under eq. 3.51, whose bubble pushes by whatever volume it already gained;
  * its preset (h.library.sph.bread_roll) now takes tension, artificial stress
- * and sph.gas_law (docs/validation.md "SPH bread roll (#18)"): it rises to
- * 1.3x in one piece by 1.6 s, and then its one-particle dough films tear. At
+ * and sph.gas_law (docs/validation.md "SPH bread roll (#18)"), and with the
+ * gas law the density sums rest volumes (sort_and_list): eq. 3.13's mass sum
+ * read the dough films beside expanded bubbles as stretched, Tait pulled
+ * them into pairs and the roll tore at 0.5 s; it now rises past 1.3x whole
+ * (docs/validation.md "The films' tension"). At
  * eps 0.3 a block in strong uniform tension still creeps toward pairs over
  * many sound crossings (`sph_artificial_stress_fluid`: 0.68 spacings at 1 s;
  * 0.5 holds). Surface tension above about 0.02 N/m does not settle a 0.06 m
@@ -317,8 +320,9 @@ static hearth_status sort_and_list(hearth_scene *s, double hcell, const double *
      * volumes, rho_i = (m_i / V_i) sum_j V_j W_ij with V the rest volume
      * (rest_volume), is 1 x rho_i's rest density wherever each particle holds
      * its own rest volume, whatever its neighbours' are: Hopkins 2013 (MNRAS
-     * 428, 2840, eq. 5-6), the general volume element with x_j = V_j (x = m is
-     * eq. 3.13, x = 1 Hu & Adams 2006's number density). For equal rest
+     * 428, 2840, §2: the volume element x_i / sum_j x_j W_ij, here with x_j =
+     * V_j; x = m is eq. 3.13, x = 1 Hu & Adams 2006's number density, J.
+     * Comput. Phys. 213, 844). For equal rest
      * volumes it is eq. 3.13 again; scenes without gas_law keep eq. 3.13's
      * bits. docs/validation.md "SPH bread roll (#18)", "The films' tension". */
     if (!e && vol)
