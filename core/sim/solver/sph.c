@@ -108,8 +108,11 @@
  * warmed), and with `tension` and artificial stress its top burst at 1.64 s
  * under eq. 3.51, whose bubble pushes by whatever volume it already gained;
  * its preset (h.library.sph.bread_roll) now takes tension, artificial stress
- * and sph.gas_law (docs/validation.md "SPH bread roll (#18)"): it rises to
- * 1.3x in one piece by 1.6 s, and then its one-particle dough films tear. At
+ * and sph.gas_law (docs/validation.md "SPH bread roll (#18)"), and with the
+ * gas law the density sums rest volumes (sort_and_list): eq. 3.13's mass sum
+ * read the dough films beside expanded bubbles as stretched, Tait pulled
+ * them into pairs and the roll tore at 0.5 s; it now rises past 1.3x whole
+ * (docs/validation.md "The films' tension"). At
  * eps 0.3 a block in strong uniform tension still creeps toward pairs over
  * many sound crossings (`sph_artificial_stress_fluid`: 0.68 spacings at 1 s;
  * 0.5 holds). Surface tension above about 0.02 N/m does not settle a 0.06 m
@@ -151,7 +154,8 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
 
 #define ARRAYS(X)                                                                                                      \
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(surf, 1) X(rhof, 1)                  \
-        X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9) X(vc, 1)
+        X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9) X(vc, 1)  \
+        X(vr, 1)
 
 static void sph_free(hearth_scene *s) {
     struct sph_state *st = s->sph;
@@ -298,8 +302,32 @@ static hearth_status sort_and_list(hearth_scene *s, double hcell, const double *
         }
     }
     /* the density of eq. 3.13 comes with the lists (one walk over the neighbours, not two) */
-    return sph_nlist_build(&st->nl, &st->cells, pcold(ps, PC_X), n, h ? st->h : NULL, hcell, pcold(ps, PC_MASS),
-                           h ? st->rho : NULL, err);
+    const int vol = s->def.sph.gas_law && h;
+    if (vol && moved) {
+        for (int i = 0; i < n; i++) st->perm[i] = st->vr[st->order[i]];
+        memcpy(st->vr, st->perm, sizeof(double) * (size_t)n);
+    }
+    const double *m = pcold(ps, PC_MASS);
+    e = sph_nlist_build(&st->nl, &st->cells, pcold(ps, PC_X), n, h ? st->h : NULL, hcell,
+                                      vol ? st->vr : m, h ? st->rho : NULL, err);
+    /* With sph.gas_law the particles' rest volumes differ (a bubble's grows
+     * with its gas, the dough's does not), and eq. 3.13's mass sum smooths
+     * the number of particles across a bubble's edge: a dough particle beside
+     * expanded bubbles has fewer neighbours in its kernel than in dough and
+     * reads a low density, so Tait pulls it (the films between bubbles go into
+     * tension, their particles pair and tear), while the bubble beside dough
+     * reads a high one and pushes on past its gas volume. The sum of rest
+     * volumes, rho_i = (m_i / V_i) sum_j V_j W_ij with V the rest volume
+     * (rest_volume), is 1 x rho_i's rest density wherever each particle holds
+     * its own rest volume, whatever its neighbours' are: Hopkins 2013 (MNRAS
+     * 428, 2840, §2: the volume element x_i / sum_j x_j W_ij, here with x_j =
+     * V_j; x = m is eq. 3.13, x = 1 Hu & Adams 2006's number density, J.
+     * Comput. Phys. 213, 844). For equal rest
+     * volumes it is eq. 3.13 again; scenes without gas_law keep eq. 3.13's
+     * bits. docs/validation.md "SPH bread roll (#18)", "The films' tension". */
+    if (!e && vol)
+        for (int i = 0; i < n; i++) st->rho[i] *= m[i] / st->vr[i];
+    return e;
 }
 
 /* ---- the step's phases ----------------------------------------------------------- */
@@ -332,6 +360,7 @@ static hearth_status phase_neighbours(hearth_scene *s, hearth_error *err) {
         const double V0 = rest_volume(s, i);
         const double h0 = s->def.sph.h_factor * (dim == 3 ? cbrt(V0) : sqrt(V0));
         st->h[i] = h0;
+        st->vr[i] = V0; /* the gas law's density sum (sort_and_list) */
         if (h0 > hmax) hmax = h0;
     }
     return sort_and_list(s, hmax, st->h, err);
