@@ -78,40 +78,65 @@ PY
 # leavener at all yields a flat one." Height rises with alpha^g at one oven,
 # and the unleavened top is flat: over the middle third of the cookie its
 # parabola sags less than a quarter cell (the resolution of the measure) and
-# less than the most leavened cookie's.
-claim_cookie_height_leavener | claim_cookie_flat_without_leavener)
-    lv=0.015,0.0075,0
-    [ "$case_name" = claim_cookie_flat_without_leavener ] && lv=0.015,0 # the flat claim needs only these two
-    run cookies "${COARSE[@]}" --set ovens=150 --set leaveners=$lv
-    python3 - hearth-out/cookies/cookies.csv "$case_name" <<'PY'
+# less than the most leavened cookie's. The flat top at the claims' coarse dx
+# (7.5 mm), the scene's dx (_fine, 5 mm) and one finer level (_finer, 3.75
+# mm, suite campaign), as #18 asks; each cookie must be read alone (cookies.lua's
+# column alone: it touches neither the box's wall nor its neighbour).
+claim_cookie_height_leavener | claim_cookie_flat_without_leavener | claim_cookie_flat_without_leavener_fine | \
+    claim_cookie_flat_without_leavener_finer)
+    lv=0.015,0.0075,0 dx=0.0075
+    case $case_name in claim_cookie_flat_without_leavener*) lv=0.015,0 ;; esac # the flat claim needs only these two
+    [ "$case_name" = claim_cookie_flat_without_leavener_fine ] && dx=0.005
+    [ "$case_name" = claim_cookie_flat_without_leavener_finer ] && dx=0.00375
+    run cookies --set dx=$dx --set until_t=2.5 --set frames=1 --set ovens=150 --set leaveners=$lv
+    python3 - hearth-out/cookies/cookies.csv "$case_name" $dx <<'PY'
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 h = {float(r["leavener"]): float(r["height_m"]) for r in rows}
 k = {float(r["leavener"]): float(r["top_curvature_1_per_m"]) for r in rows}
+kp = {float(r["leavener"]): float(r["top_curvature_particles_1_per_m"]) for r in rows}
 w = {float(r["leavener"]): float(r["spread_m"]) for r in rows}
-print("heights by leavener:", h, "curvatures:", k)
+print("heights by leavener:", h, "curvatures:", k, "spreads:", w)
+if not all(r["alone"] == "1" for r in rows):
+    print("a cookie touches the box's wall or its neighbour (cookies.lua's alone column): its readings are not its own")
+    sys.exit(1)
 if sys.argv[2] == "claim_cookie_height_leavener":
     sys.exit(0 if h[0.015] > h[0.0075] > h[0.0] else 1)
-dx = 0.0075
+dx = float(sys.argv[3])
 sag = abs(k[0.0]) / 2 * (w[0.0] / 6) ** 2
-print(f"unleavened sag over the middle third {sag * 1e3:.3f} mm (flat: < dx/4 = {dx / 4 * 1e3:.3f} mm); "
-      f"|curvature| {abs(k[0.0]):.2f} vs most leavened {abs(k[0.015]):.2f} 1/m")
-sys.exit(0 if sag < dx / 4 and abs(k[0.0]) < abs(k[0.015]) else 1)
+print(f"dx {dx * 1e3:.2f} mm: unleavened sag over the middle third {sag * 1e3:.3f} mm (flat: < dx/4 = {dx / 4 * 1e3:.3f} "
+      f"mm); |curvature| {abs(k[0.0]):.2f} vs most leavened {abs(k[0.015]):.2f} 1/m (particles: {abs(kp[0.0]):.2f} vs "
+      f"{abs(kp[0.015]):.2f})")
+if sag < dx / 4 and abs(k[0.0]) < abs(k[0.015]):
+    sys.exit(0)
+H = h[0.0]
+print(f"EXPECTED FAILURE: the unleavened top is domed, and rounder than the leavened one's. It spreads as a viscous "
+      f"puddle until it sets (60 -> {w[0.0] * 1e3:.0f} mm wide): a 2D viscous gravity current's top is "
+      f"h = H (1 - (x/x_N)^2)^(1/3) (Huppert 1982, J. Fluid Mech. 121:43), whose curvature at the centre is "
+      f"-2H/(3 x_N^2) = {-2 * H / (3 * (w[0.0] / 2) ** 2):.1f} 1/m here and whose sag over the middle third is 3.8% of H "
+      f"= {0.0385 * H * 1e3:.2f} mm, which does not shrink with dx; the leavened cookie's gas lifts its middle and flattens "
+      "its top. Over five particle samplings (docs/validation.md, 'The unleavened cookie's top') the unleavened probe "
+      "curvature is -10.0 +- 1.6 1/m at dx 5 mm (particles -9.1) against the leavened -8.1 (particles -5.8); "
+      "at 7.5 mm the probe reads -3.4 to -15.3 1/m from one sampling to the next")
+sys.exit(77)
 PY
-    [ $? -eq 0 ] || fail "$case_name does not hold (numbers above)"
+    rc=$?
+    [ $rc -eq 77 ] && exit 77
+    [ $rc -eq 0 ] || fail "$case_name does not hold (numbers above)"
     ;;
 
 # §7.2: "With the temperature being too high, the dough gets heated up very
 # quickly, so the cookie does not get enough time to spread": at fixed
-# leavener, the final spread falls as the oven temperature rises.
+# leavener, the final spread falls as the oven temperature rises (each
+# cookie alone in its slot, so the spread is its own: cookies.lua's alone).
 claim_cookie_spread_oven)
     run cookies "${COARSE[@]}" --set ovens=190,150,110 --set leaveners=0.0075
     python3 - hearth-out/cookies/cookies.csv <<'PY' || fail "spread does not fall with oven temperature (numbers above)"
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 w = {float(r["oven_degC"]): float(r["spread_m"]) for r in rows}
-print("spread by oven temperature:", w)
-sys.exit(0 if w[190] < w[150] < w[110] else 1)
+print("spread by oven temperature:", w, "each alone in its slot:", [r["alone"] for r in rows])
+sys.exit(0 if w[190] < w[150] < w[110] and all(r["alone"] == "1" for r in rows) else 1)
 PY
     ;;
 
@@ -147,9 +172,10 @@ if not all(k >= 0 for k in kb):
           "2.5e-2, theta_s 7.5e-3, xi 10, E 4e4 Pa) carries the cookie's weight (rho g H ~ 120 Pa, ~0.2% strain) inside "
           "its clamp, so nothing yields and the placed capsule (flat top, round ends) stays as it was: -4.8 and -8.0 1/m "
           "after one step, within 0.4 1/m of the end. At 7.5 mm cells both measures read the round ends into the top; "
-          "the same baseline reads +2.49 and +0.77 1/m at dx 5 mm and +1.25 and +0.12 at 3.75 mm (the claim holds at "
-          "both: claim_cookie_domed_vs_baseline_fine and _finer) and +0.23 and -0.35 1/m at 2.5 mm: a flat top, "
-          "measured with either sign. The paper's flat or dented tops need the baseline to flow, and "
+          "the same baseline read +2.49 and +0.77 1/m at dx 5 mm, +1.25 and +0.12 at 3.75 mm and +0.23 and -0.35 1/m "
+          "at 2.5 mm with the cookies 120 mm apart, and -1.00 and -0.92 (5 mm), +5.36 and +0.55 (3.75 mm) with them "
+          "180 mm apart (cookies.lua's SPACING: the jittered particles of the placed dough differ, #18 helper flat): "
+          "a flat top, measured with either sign. The paper's flat or dented tops need the baseline to flow, and "
           "the snow paper's parameters do not at this load")
     sys.exit(77)
 PY

@@ -32,7 +32,8 @@
 --                           cap. Not presets: the defaults are Table 2's cookie.
 -- Writes, under hearth-out/cookies/: oven_<T>/heat_%04d.png (the heat
 -- progress, Fig. 3's right column) and cookies.csv (final height, spread and
--- top curvature per cookie; negative curvature = domed), series.csv (height
+-- top curvature per cookie; negative curvature = domed; alone = 1 when no
+-- other cookie reaches its slot, so its readings are its own), series.csv (height
 -- and spread over time). Two curvatures: top_curvature from the density
 -- probe's top over the middle third of the spread (9 samples), and
 -- top_curvature_particles from the highest particle in each one-cell bin,
@@ -64,17 +65,25 @@ local ovens, leaveners = P.ovens, P.leaveners
 
 local oven = h.library.paper_oven.cookie
 print("cookies.lua: h.library.paper.cookie, animation units (Ding Table 2): heat runs in seconds, not minutes")
-local TRAY, SPACING, R, THICK = 0.02, 0.12, 0.03, 0.025 -- m: tray height, cookie spacing, dough radius and height
+-- m: tray height, cookie spacing, dough radius and height. Each cookie is read
+-- in its own slot (SPACING wide, centred on it), so the slot must hold the
+-- cookie's whole spread: at 0.12 m the leavened cookie (60 mm raw, 110-130 mm
+-- baked, plane strain) reached the box's wall (its particles 1.6 cells from
+-- it at dx 5 mm; the walls act on the two node layers nearest each face) and
+-- its neighbour's slot, whose spread then read its rim (the unleavened
+-- cookie: 102 mm for its own 83, #18). 0.18 m keeps each cookie's centre on a
+-- grid node at dx 7.5, 5 and 3.75 mm, as 0.12 m did.
+local TRAY, SPACING, R, THICK = 0.02, 0.18, 0.03, 0.025
 local W = SPACING * #leaveners
 local zc = 0.06
 
-local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_per_m,top_curvature_particles_1_per_m" }
+local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_per_m,top_curvature_particles_1_per_m,alone" }
 local series = { "oven_degC,leavener,t,height_m,spread_m,centre_temperature_degC" }
 for _, T in ipairs(ovens) do
   local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.09, 0.12) },
     oven = { temperature = T, beta = oven.beta }, name = "cookies" }
   h.recipes.tray(s, TRAY, { temperature = T, beta = oven.pan_beta, mode = P.tray_mode, friction = P.tray_friction })
-  local xs = {}
+  local xs, first = {}, {} -- first[i]: cookie i's first particle id (ids run in the order s:add made them)
   for i, a in ipairs(leaveners) do
     local d = h.library.paper.cookie
     d.gas_rate = a * h.library.dough_scale.gas * P.gas
@@ -94,8 +103,25 @@ for _, T in ipairs(ovens) do
       specific_heat = d.specific_heat, conductivity = d.conductivity, reference_temperature = d.reference_temperature })
       or h.material("cam_clay_dough", d)
     xs[i] = (i - 0.5) * SPACING
+    first[i] = s:stats().particles
     s:add { shape = h.shapes.cookie(v(xs[i], TRAY + THICK / 2, zc), R, THICK), material = mat,
       temperature = oven.dough_temperature, saturation = P.water and S0 or nil, ppc = d3 and 8 or 4 }
+  end
+  first[#leaveners + 1] = s:stats().particles
+  local function cookie_of(id) -- which cookie particle id belongs to
+    for i = 1, #leaveners do if id < first[i + 1] then return i end end
+  end
+  -- alone: 1 when every particle of cookie i lies 2.5 cells or more inside
+  -- its slot. A particle's mass reaches the grid nodes up to 1.5 cells away,
+  -- so the cookie then touches neither the box's wall layers (the two nodes
+  -- nearest each face) nor a node its neighbour touches (when that one is
+  -- alone too), and the density line across its slot reads it only.
+  local function alone(i)
+    local r = s:particles { fields = { "id", "x" } }
+    for p = 1, r.n do
+      if cookie_of(r.id[p]) == i and math.abs(r.x[3 * p - 2] - xs[i]) > SPACING / 2 - 2.5 * dx then return 0 end
+    end
+    return 1
   end
   local function measure(i)
     local c = d3 and { xs[i], zc } or { xs[i] }
@@ -122,15 +148,17 @@ for _, T in ipairs(ovens) do
     local a = (S0 * T2 - S2 * T0) / (S0 * S4 - S2 * S2)
     return hgt, spread, 2 * a
   end
-  -- the top from the particles: the highest in each one-cell bin across the
-  -- cookie (in 3D on the slab |z - zc| < dx/2), and 2a of the least-squares
-  -- y = a u^2 + b u + c over the middle 60% of the cookie's width
+  -- the top from the particles: the highest of cookie i's own particles (by
+  -- id) in each one-cell bin across it (in 3D on the slab |z - zc| < dx/2),
+  -- and 2a of the least-squares y = a u^2 + b u + c over the middle 60% of
+  -- the cookie's width
   local function particle_curvature(i)
-    local x = s:positions()
+    local r = s:particles { fields = { "id", "x" } }
+    local x = r.x
     local top, lo, hi = {}, math.huge, -math.huge
-    for p = 0, #x // 3 - 1 do
+    for p = 0, r.n - 1 do
       local px, py, pz = x[3 * p + 1], x[3 * p + 2], x[3 * p + 3]
-      if math.abs(px - xs[i]) < SPACING / 2 and (not d3 or math.abs(pz - zc) < dx / 2) then
+      if cookie_of(r.id[p + 1]) == i and (not d3 or math.abs(pz - zc) < dx / 2) then
         local b = math.floor((px - xs[i]) / dx + 0.5)
         if not top[b] or py > top[b] then top[b] = py end
         lo, hi = math.min(lo, px), math.max(hi, px)
@@ -156,8 +184,13 @@ for _, T in ipairs(ovens) do
   for i, a in ipairs(leaveners) do
     local hgt, spread, curv = measure(i)
     local pcurv = particle_curvature(i)
-    rows[#rows + 1] = ("%g,%g,%.3g,%.5f,%.5f,%.4f,%.4f"):format(T, a, P.baseline and 0 or a * h.library.dough_scale.gas,
-      hgt, spread, curv, pcurv)
+    local one = alone(i)
+    rows[#rows + 1] = ("%g,%g,%.3g,%.5f,%.5f,%.4f,%.4f,%d"):format(T, a, P.baseline and 0 or a * h.library.dough_scale.gas,
+      hgt, spread, curv, pcurv, one)
+    if one == 0 then
+      print(("cookies.lua: warning: oven %g degC, leavener %g: the cookie reaches the edge of its slot (%.0f mm wide): "
+        .. "it touches the box's wall or its neighbour, and its readings are not its own alone"):format(T, a, SPACING * 1e3))
+    end
     print(("oven %g degC, leavener %g: height %.4f m, spread %.4f m, top curvature %.3f 1/m (particles %.3f)"):format(T,
       a, hgt, spread, curv, pcurv))
   end
