@@ -1078,33 +1078,20 @@ PY
 mpm_oven_mirror_symmetric)
     # MPM's oven on a mirror-symmetric loaf (tests/lua/mpm_mirror.lua: bread's
     # unscored loaf on its heated tray, no jitter): mirrored particles' T after
-    # 0.1 s. With the loaf's axis on a cell centre (dx 4 mm) they agree to
-    # round-off (measured 3.5e-14 degC; bound 1e-9). With a node column on the
-    # axis (dx 5 and 2.5 mm) they do not: thermal.c's small-node merge
-    # (merge_target_d) sends an axis node's heat to the first of its tied
-    # neighbours in loop order, the left one (the loop reversed, the gap
-    # changes sign), from the step the top's axis node turns small (t = 0.053
-    # s at 5 mm). An expected failure until the merge shares a tie.
-    run mpm_mirror.lua --set dx=0.004
-    expect_rc 0 "the loaf at dx 4 mm"
-    cat out.txt
-    w=$(sed -n 's/.*worst |T - T_mirror| \([^ ]*\) degC.*/\1/p' out.txt)
-    python3 -c "import sys; sys.exit(0 if float('$w') <= 1e-9 else 1)" ||
-        fail "the loaf with its axis on a cell centre: worst |T - T_mirror| $w degC (bound 1e-9)"
-    bad=0
-    for dx in 0.005 0.0025; do
+    # 0.1 s agree to round-off (bound 1e-9 degC) with the loaf's axis on a cell
+    # centre (dx 4 mm, measured 3.5e-14 degC) and with a node column on the
+    # axis (dx 5 and 2.5 mm). The latter failed while thermal.c's small-node
+    # merge (merge_targets_d) sent an axis node's heat to the first of its
+    # tied neighbours in loop order, the left one (1e-4 and 3e-3 degC; the
+    # loop reversed, the gap changed sign); a tie now shares equally.
+    for dx in 0.004 0.005 0.0025; do
         run mpm_mirror.lua --set dx=$dx
         expect_rc 0 "the loaf at dx $dx"
         cat out.txt
         w=$(sed -n 's/.*worst |T - T_mirror| \([^ ]*\) degC.*/\1/p' out.txt)
-        python3 -c "import sys; sys.exit(0 if float('$w') <= 1e-9 else 1)" || bad=$((bad + 1))
+        python3 -c "import sys; sys.exit(0 if float('$w') <= 1e-9 else 1)" ||
+            fail "the loaf at dx $dx: worst |T - T_mirror| $w degC (bound 1e-9)"
     done
-    [ $bad -eq 0 ] && exit 0
-    echo "EXPECTED FAILURE: with a node column on the loaf's axis (dx 5 and 2.5 mm) mirrored particles differ by" \
-        "1e-4 and 3e-3 degC at 0.1 s (bound 1e-9; the halves' means by 2e-6 and 1e-7): thermal.c's small-node merge" \
-        "breaks the tie between an axis node's left and right neighbours by loop order (docs/validation.md," \
-        "\"Left and right\")"
-    exit 77
     ;;
 *) fail "unknown case $case_name" ;;
 esac

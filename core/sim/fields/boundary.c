@@ -507,7 +507,9 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
 #pragma omp parallel for schedule(dynamic, 4) if (n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) s->boundary.blocks[k] = (d3 ? node_share_3 : node_share_2)(s, k, near[k]);
     /* MPI slabs: a halo layer's flags near its outer face read blocks this rank
-     * does not hold; thermal.c's small-node merge goes by them, so the owners' */
+     * does not hold; the particles' gather (5.) goes by them, so the owners'
+     * (thermal.c's small-node merge no longer does: it finds small nodes by
+     * their own phi) */
     if ((st = mpm_ranks_fields_fill_flags(s, s->boundary.blocks, err))) return st;
     /* 5. each particle's share m_p sum_i w_ip r_i: the shares of a cell's area sum to it */
 #pragma omp parallel for schedule(dynamic, 2) if (n >= SCENE_PARALLEL_MIN)

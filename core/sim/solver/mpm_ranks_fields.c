@@ -5,7 +5,7 @@
  * particle's own tile: boundary.c's surface search takes gradients of the
  * volume fraction one node either side and averages them over the cells
  * around, and thermal.c's small-node merge looks at a node's 26 neighbours and
- * scatters into one of them. These reach at most three nodes from the nodes
+ * scatters into the fullest (shared equally when tied). These reach at most three nodes from the nodes
  * a rank's particles touch, less than a block layer (GRID_B = 4). A heated
  * collider's contact point (the particle's foot on the face) does not keep
  * to that: it lies up to two cells from its particle, or as deep as the
