@@ -496,8 +496,9 @@ TEST(water_interior_mode_second_order) {
     CHECK(e[n - 1] < 1e-3);
 }
 
-/* Diffusion alone moves water and never makes or loses any. */
-TEST(water_conservation) {
+/* Two fixed elastic blocks side by side, no gravity, dx 1/32: the left one
+ * wet (s = 0.9), the right one dry (s = 0.1). */
+static hearth_scene *wet_beside_dry(void) {
     hearth_scene_def d = hearth_default_scene_def();
     d.dx = 1.0 / 32;
     d.gravity[1] = 0;
@@ -517,6 +518,13 @@ TEST(water_conservation) {
     CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
     hearth_shape_free(b1);
     hearth_shape_free(b2);
+    return s;
+}
+
+/* Diffusion alone moves water and never makes or loses any. */
+TEST(water_conservation) {
+    hearth_scene *s = wet_beside_dry();
+    hearth_error err;
     hearth_stats st;
     hearth_scene_stats(s, &st);
     const double w0 = st.water_mass;
@@ -563,25 +571,8 @@ TEST(water_swollen_particles_no_runaway) {
     const double Js[2] = {1e6, 1e30};
     double ends[2][2] = {{0}};
     for (int k = 0; k < 2; k++) {
-        hearth_scene_def d = hearth_default_scene_def();
-        d.dx = 1.0 / 32;
-        d.gravity[1] = 0;
-        hearth_scene *s = fx_scene_def(&d);
-        const char *nm[] = {"E", "density", "water_diffusivity"};
-        const double nv[] = {1e3, 1000, 1e-5};
+        hearth_scene *s = wet_beside_dry();
         hearth_error err;
-        const int m = hearth_scene_add_material(s, "elastic", nm, nv, 3, &err);
-        CHECK(m >= 0);
-        const double c1[3] = {0.4, 0.5, 0}, c2[3] = {0.6, 0.5, 0}, h[3] = {0.1, 0.15, 0};
-        hearth_shape *b1 = hearth_shape_box(c1, h), *b2 = hearth_shape_box(c2, h);
-        hearth_body_def bd = hearth_default_body_def();
-        bd.fixed = 1, bd.material = m;
-        bd.shape = b1, bd.saturation = 0.9;
-        CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
-        bd.shape = b2, bd.saturation = 0.1;
-        CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
-        hearth_shape_free(b1);
-        hearth_shape_free(b2);
         /* swell the wet block (F = J^(1/2) in the plane) and give it the water of s = 0.9 at that volume */
         particles *ps = &s->ps;
         const int tn = particles_tn(ps);
