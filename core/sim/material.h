@@ -252,6 +252,28 @@ MATERIAL_INLINE int material_point_stress(const hearth_material *m, const double
     return code;
 }
 
+/* material_thermal_split's scalars (below), for the caller that applies them itself
+ * (material_batch.c works on a block's columns): s[0] = exp(-e / 3) scales F,
+ * s[1] = exp(r) scales L and s[2] = expm1(r) / dt goes on L's diagonal; with
+ * dt = 0 or when the strain cannot be taken out (returns 0) they are 1, 1 and
+ * -0.0, which leave every F and L entry's bits as they were (x * 1 and
+ * x + -0.0 are x, signed zeros and NaNs included). The caller has entered
+ * "bulk_modulus" (plugin_call_enter). */
+MATERIAL_INLINE int material_thermal_scales(const hearth_material *m, const double *core, const double *p,
+                                            const double *state, double T, double *e_store, double dt, double s[3]) {
+    s[0] = 1, s[1] = 1, s[2] = -0.0;
+    const double K = m->bulk_modulus(p, state);
+    if (!(K > 0 && K < INFINITY) || !(T == T)) return 0;
+    const double e0 = *e_store, e = dt > 0 ? core[CP_EXPANSION] * (T - core[CP_REFERENCE_T]) / K : e0;
+    s[0] = exp(-e / 3);
+    if (dt > 0) {
+        const double r = (e0 - e) / 3;
+        s[1] = exp(r), s[2] = expm1(r) / dt;
+        *e_store = e;
+    }
+    return 1;
+}
+
 /* Eq. 10 as a thermal strain, for a plugin that gives its bulk modulus K
  * (<hearth/material.h>, bulk_modulus): the split F = F_M F_th with
  * F_th = exp(e / 3) I and e = ln J_th = c lambda (theta - theta_ref) / K.
@@ -277,18 +299,14 @@ MATERIAL_INLINE int material_thermal_split(const hearth_material *m, const doubl
                                            const double *state, double T, double *e_store, double dt, double F[9],
                                            double L[9]) {
     plugin_call_enter(m, "bulk_modulus");
-    const double K = m->bulk_modulus(p, state);
-    if (!(K > 0 && K < INFINITY) || !(T == T)) return 0;
-    const double e0 = *e_store, e = dt > 0 ? core[CP_EXPANSION] * (T - core[CP_REFERENCE_T]) / K : e0;
-    const double sF = exp(-e / 3);
-    for (int k = 0; k < 9; k++) F[k] *= sF;
+    double s[3];
+    if (!material_thermal_scales(m, core, p, state, T, e_store, dt, s)) return 0;
+    for (int k = 0; k < 9; k++) F[k] *= s[0];
     if (dt > 0) {
-        const double r = (e0 - e) / 3, sL = exp(r), d = expm1(r) / dt;
-        for (int k = 0; k < 9; k++) L[k] *= sL;
-        L[0] += d;
-        L[4] += d;
-        L[8] += d;
-        *e_store = e;
+        for (int k = 0; k < 9; k++) L[k] *= s[1];
+        L[0] += s[2];
+        L[4] += s[2];
+        L[8] += s[2];
     }
     return 1;
 }

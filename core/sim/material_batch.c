@@ -236,19 +236,35 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
                 P[j] = gas_porosity(JP, ms->core[CP_POROSITY0]);
             }
     }
-    /* eq. 10 as a strain: the block gets F_M and L_M, as run_points hands each point */
+    /* eq. 10 as a strain: the block gets F_M and L_M, as run_points hands each point. Each point's scalars
+     * first (its own bulk_modulus: K may read the state, <hearth/material.h>), then material_thermal_split's
+     * products column by column, straight from the run's columns into the block's: the same operations on
+     * the same values, without two 3x3 copies a point, and a loop the compiler vectorises. A point left
+     * alone gets 1, 1 and -0.0 (material_thermal_scales): its F and L come through bit for bit. */
     double *th = thermal_column(ms, ps, r, flags), Fm[9][HEARTH_BLOCK_MAX], Lm[9][HEARTH_BLOCK_MAX];
     unsigned char split[HEARTH_BLOCK_MAX];
     if (th) {
-        double qs[MATERIAL_MAX_PARAMS], F3[9], L3[9];
-        memcpy(qs, ms->params, sizeof(double) * (size_t)np);
+        double sF[HEARTH_BLOCK_MAX], sL[HEARTH_BLOCK_MAX], dL[HEARTH_BLOCK_MAX], qs[MATERIAL_MAX_PARAMS], s3[3];
+        const double *pj = ms->params; /* no curve: the slot's own parameters, uncopied */
+        if (nv) memcpy(qs, ms->params, sizeof(double) * (size_t)np), pj = qs;
+        plugin_call_enter(m, "bulk_modulus");
         for (int j = 0; j < n; j++) {
             for (int v = 0; v < nv; v++) qs[vk[v]] = vcol[v][j];
-            for (int c = 0; c < 9; c++) F3[c] = r->F[c][j], L3[c] = r->grad_v[c][j];
-            split[j] = (unsigned char)material_thermal_split(m, ms->core, qs, state ? state + (size_t)j * stride : NULL,
-                                                             r->temperature[j], th + i0 + j, r->dt, F3, L3);
-            for (int c = 0; c < 9; c++) Fm[c][j] = F3[c], Lm[c][j] = L3[c];
+            split[j] = (unsigned char)material_thermal_scales(m, ms->core, pj, state ? state + (size_t)j * stride : NULL,
+                                                              r->temperature[j], th + i0 + j, r->dt, s3);
+            sF[j] = s3[0], sL[j] = s3[1], dL[j] = s3[2];
         }
+        for (int c = 0; c < 9; c++)
+            for (int j = 0; j < n; j++) Fm[c][j] = r->F[c][j] * sF[j];
+        if (r->dt > 0)
+            for (int c = 0; c < 9; c++) {
+                if (c % 4 == 0) /* the diagonal: L c * exp(r), then + expm1(r) / dt (-std=c17: never contracted to an fma) */
+                    for (int j = 0; j < n; j++) Lm[c][j] = r->grad_v[c][j] * sL[j] + dL[j];
+                else
+                    for (int j = 0; j < n; j++) Lm[c][j] = r->grad_v[c][j] * sL[j];
+            }
+        else
+            for (int c = 0; c < 9; c++) memcpy(Lm[c], r->grad_v[c], sizeof(double) * (size_t)n);
     }
     hearth_block b = {
         .n = n,
