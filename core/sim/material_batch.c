@@ -96,6 +96,16 @@ void material_run_params_init(material_run_params *rp, const material_slot *ms, 
     }
 }
 
+/* Point i's moisture ratio (*r) and, returned, the ratio its irreversible
+ * curves read: the lower of r and 1 - dried. fmin's value without the call
+ * where it is r's bits: r below, or equal and not a zero. */
+static inline double moisture_ratios(const material_run_params *rp, const material_slot *ms, const particles *ps, int i,
+                                     double *r) {
+    *r = material_moisture_ratio(ms, ps, i);
+    const double d = rp->dried ? 1.0 - rp->dried[i] : *r;
+    return *r <= d && *r != 0 ? *r : fmin(*r, d);
+}
+
 const double *material_run_params_at(material_run_params *rp, const material_slot *ms, const particles *ps, int i) {
     const int nt = rp->nt, nc = ms->ncurves;
     double *q = rp->q;
@@ -104,9 +114,8 @@ const double *material_run_params_at(material_run_params *rp, const material_slo
         q[c->param] = curve_eval(c, c->irreversible ? rp->Tmax[i] : rp->T[i]);
     }
     if (nt < nc) {
-        /* fmin(r, d) without the call where its value is r's bits: r below d, or equal and not a zero */
-        const double r = material_moisture_ratio(ms, ps, i), d = rp->dried ? 1.0 - rp->dried[i] : r;
-        const double rd = r <= d && r != 0 ? r : fmin(r, d);
+        double r;
+        const double rd = moisture_ratios(rp, ms, ps, i, &r);
         const int fresh = !(r == rp->r && rd == rp->rd);
         rp->r = r, rp->rd = rd;
         for (int k = nt; k < nc; k++) {
@@ -145,8 +154,8 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
     if (nt == nc) return;
     for (int j = 0; j < n; j++) {
         const int i = i0 + j;
-        const double r = material_moisture_ratio(ms, ps, i), d = rp->dried ? 1.0 - rp->dried[i] : r;
-        const double rd = r <= d && r != 0 ? r : fmin(r, d); /* fmin's bits (material_run_params_at) */
+        double r;
+        const double rd = moisture_ratios(rp, ms, ps, i, &r);
         if (!(r == rp->r && rd == rp->rd))
             for (int k = nt; k < nc; k++) rp->f[k - nt] = curve_eval(&ms->curves[k], ms->curves[k].irreversible ? rd : r);
         rp->r = r, rp->rd = rd;
