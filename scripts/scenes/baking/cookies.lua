@@ -52,8 +52,9 @@
 -- (docs/validation.md, "The cookie's set"). The baseline does not flow at all: its
 -- weight strains it ~0.2%, inside the snow law's clamp, so it keeps the
 -- placed dough's shape (a capsule: flat top, round ends) through the bake,
--- and its top curvature is the measures' reading of that shape (see
--- claim_cookie_domed_vs_baseline in tests/baking_test.sh for the numbers).
+-- and its top curvature is the measures' reading of that flat top: within
+-- ~2 1/m of 0, either sign, from one particle sampling (--set seed) to the
+-- next (docs/validation.md, "Fig. 17: the top's curvature and its noise").
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 3, frames = 6, ovens = { 190, 150, 110 },
   leaveners = { 0.015, 0.0075, 0 }, baseline = false, reaction_temperature = -1, reaction_width = -1, gas = 1,
