@@ -95,8 +95,12 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 h = {float(r["leavener"]): float(r["height_m"]) for r in rows}
 k = {float(r["leavener"]): float(r["top_curvature_1_per_m"]) for r in rows}
 kp = {float(r["leavener"]): float(r["top_curvature_particles_1_per_m"]) for r in rows}
+se = {float(r["leavener"]): float(r["top_curvature_particles_se_1_per_m"]) for r in rows}
 w = {float(r["leavener"]): float(r["spread_m"]) for r in rows}
 print("heights by leavener:", h, "curvatures:", k, "spreads:", w)
+print("particles' top curvature +- the fit's standard error (h.top_curvature; the sampling noise is ~2 1/m, "
+      "docs/validation.md 'Fig. 17: the top's curvature and its noise'):",
+      ", ".join(f"{a}: {kp[a]:.2f} +- {se[a]:.2f}" for a in sorted(kp, reverse=True)))
 if not all(r["alone"] == "1" for r in rows):
     print("a cookie touches the box's wall or its neighbour (cookies.lua's alone column): its readings are not its own")
     sys.exit(1)
@@ -140,14 +144,20 @@ sys.exit(0 if w[190] < w[150] < w[110] and all(r["alone"] == "1" for r in rows) 
 PY
     ;;
 
-# §7.5, Fig. 17: the full model's cookie is domed (top curvature < 0); the
-# Stomakhin-like baseline (the snow_plastic plugin: Stomakhin et al. 2013's
-# clamped fixed-corotated law with the snow paper's theta_c, theta_s and xi
-# and the cookie's E, nu and density; no gas, no viscoplasticity, no thermal
-# expansion) is flat or dented (curvature >= 0). Both measures of the top
-# (the density probe's and the particles', see cookies.lua) must agree.
-# At the claims' coarse dx (7.5 mm, expected failure below), the scene's own
-# dx (_fine, 5 mm) and one finer level (_finer, 3.75 mm), as #18 asks.
+# §7.5, Fig. 17: the full model's cookie is domed; the Stomakhin-like
+# baseline (the snow_plastic plugin: Stomakhin et al. 2013's clamped
+# fixed-corotated law with the snow paper's theta_c, theta_s and xi and the
+# cookie's E, nu and density; no gas, no viscoplasticity, no thermal
+# expansion) is flat or dented. Both measures of the top (the density probe's
+# and the particles', h.top_curvature; see cookies.lua) must say so, each
+# against the particles' sampling noise sigma: a reading of a top's curvature
+# scatters by about 2 1/m from one jittered sampling of the same dough to the
+# next (five samplings at each dx, docs/validation.md "Fig. 17: the top's
+# curvature and its noise"), so domed is k < -2 sigma and flat or dented is
+# k >= -2 sigma. (Until #18 helper fig17 the limits were k < 0 and k >= 0: a
+# flat top read with either sign.) At the claims' coarse dx (7.5 mm), the
+# scene's own dx (_fine, 5 mm) and one finer level (_finer, 3.75 mm), as #18
+# asks; the paper's three ovens are scripts/validation/fig17_grid.sh.
 claim_cookie_domed_vs_baseline | claim_cookie_domed_vs_baseline_fine | claim_cookie_domed_vs_baseline_finer)
     dx=0.0075
     [ "$case_name" = claim_cookie_domed_vs_baseline_fine ] && dx=0.005
@@ -155,33 +165,28 @@ claim_cookie_domed_vs_baseline | claim_cookie_domed_vs_baseline_fine | claim_coo
     run cookies --set dx=$dx --set until_t=2.5 --set frames=1 --set ovens=150 --set leaveners=0.015 >/dev/null
     cp hearth-out/cookies/cookies.csv full.csv
     run cookies --set dx=$dx --set until_t=2.5 --set frames=1 --set ovens=150 --set leaveners=0.015 --set baseline=true >/dev/null
-    python3 - full.csv hearth-out/cookies/cookies.csv $dx <<'PY'
+    python3 - full.csv hearth-out/cookies/cookies.csv $dx <<'PY' || fail "the full model's cookie is not domed beyond noise, or the baseline's top is not flat within it (numbers above)"
 import csv, sys
 full = list(csv.DictReader(open(sys.argv[1])))[0]
 base = list(csv.DictReader(open(sys.argv[2])))[0]
+dx = float(sys.argv[3])
 cols = ("top_curvature_1_per_m", "top_curvature_particles_1_per_m")
 kf = [float(full[c]) for c in cols]
 kb = [float(base[c]) for c in cols]
-print(f"dx {float(sys.argv[3]) * 1e3:.2f} mm, top curvature (probe, particles): full model {kf[0]:.3f}, {kf[1]:.3f} 1/m; "
-      f"baseline {kb[0]:.3f}, {kb[1]:.3f} 1/m")
-if not all(k < 0 for k in kf):
-    sys.exit(1)
-if not all(k >= 0 for k in kb):
-    print(f"EXPECTED FAILURE: the baseline's top reads domed (curvature {kb[0]:.3f} and {kb[1]:.3f} 1/m < 0), but that "
-          "is the shape the dough was placed in, not one the bake made: the Stomakhin-like law (snow_plastic: theta_c "
-          "2.5e-2, theta_s 7.5e-3, xi 10, E 4e4 Pa) carries the cookie's weight (rho g H ~ 120 Pa, ~0.2% strain) inside "
-          "its clamp, so nothing yields and the placed capsule (flat top, round ends) stays as it was: -4.8 and -8.0 1/m "
-          "after one step, within 0.4 1/m of the end. At 7.5 mm cells both measures read the round ends into the top; "
-          "the same baseline read +2.49 and +0.77 1/m at dx 5 mm, +1.25 and +0.12 at 3.75 mm and +0.23 and -0.35 1/m "
-          "at 2.5 mm with the cookies 120 mm apart, and -1.00 and -0.92 (5 mm), +5.36 and +0.55 (3.75 mm) with them "
-          "180 mm apart (cookies.lua's SPACING: the jittered particles of the placed dough differ, #18 helper flat): "
-          "a flat top, measured with either sign. The paper's flat or dented tops need the baseline to flow, and "
-          "the snow paper's parameters do not at this load")
-    sys.exit(77)
+se = [float(r["top_curvature_particles_se_1_per_m"]) for r in (full, base)]
+# sigma: the standard deviation of each cookie's particle reading (h.top_curvature)
+# over five jitter samplings of this bake (cookies.lua --set seed=1..5; docs/
+# validation.md, "Fig. 17: the top's curvature and its noise"), full model and
+# baseline; the probe's reading is held to the same sigma (its own scatter is
+# larger at 7.5 and 3.75 mm, where its kernel reads the baseline's round ends)
+sf, sb = {0.0075: (2.06, 2.20), 0.005: (1.86, 2.12), 0.00375: (0.43, 1.33)}[dx]
+print(f"dx {dx * 1e3:.2f} mm, top curvature (probe, particles +- the fit's standard error): full model {kf[0]:.3f}, "
+      f"{kf[1]:.3f} +- {se[0]:.3f} 1/m; baseline {kb[0]:.3f}, {kb[1]:.3f} +- {se[1]:.3f} 1/m; sampling noise sigma "
+      f"{sf:.2f} and {sb:.2f} 1/m: domed needs k < {-2 * sf:.2f}, flat or dented k >= {-2 * sb:.2f}")
+domed, flat = all(k < -2 * sf for k in kf), all(k >= -2 * sb for k in kb)
+print(f"full model domed beyond noise: {domed}; baseline flat or dented within noise: {flat}")
+sys.exit(0 if domed and flat else 1)
 PY
-    rc=$?
-    [ $rc -eq 77 ] && exit 77
-    [ $rc -eq 0 ] || fail "the full model's cookie is not domed (numbers above)"
     ;;
 
 # A press that would drive the crackers through each other is refused up
@@ -328,10 +333,11 @@ import csv, sys
 rows = {float(r["leavener"]): r for r in csv.DictReader(open(sys.argv[1]))}
 h = {k: float(r["height_m"]) for k, r in rows.items()}
 k = [float(rows[0.015][c]) for c in ("top_curvature_1_per_m", "top_curvature_particles_1_per_m")]
+se = float(rows[0.015]["top_curvature_particles_se_1_per_m"])
 ratio = h[0.015] / h[0.0]
 print(f"dx {float(sys.argv[2]) * 1e3:.2f} mm: leavened {h[0.015] * 1e3:.1f} mm, unleavened {h[0.0] * 1e3:.1f} mm, "
-      f"ratio {ratio:.3f} (need >= 1.3); leavened top curvature {k[0]:.2f}, {k[1]:.2f} 1/m (probe, particles; "
-      "domed: both < 0)")
+      f"ratio {ratio:.3f} (need >= 1.3); leavened top curvature {k[0]:.2f}, {k[1]:.2f} +- {se:.2f} 1/m (probe, "
+      "particles +- the fit's standard error; domed: both < 0)")
 if ratio < 1.3:
     print("the ratio was 1.068x / 1.049x (dx 7.5 / 5 mm) while the cookie set from 35 degC on bread's Fig. 8 "
           "curve (docs/validation.md, 'The cookie, measured again' to 'The cookie's CO2 traced'): check "

@@ -224,8 +224,10 @@ function h.write(path, text)
 end
 
 --- The leading coefficient a of the least-squares parabola y = a u^2 + b u + c
---- through points {{u, y}, ...} (normal equations, Cramer's rule); NaN with
---- fewer than 3 points. The baking scenes measure a top's curvature as 2a.
+--- through points {{u, y}, ...} (normal equations, Cramer's rule), and its
+--- standard error from the residuals, se(a) = sqrt(RSS / (n - 3) (M^-1)_aa)
+--- (M the normal matrix; NaN with 3 points); NaN with fewer than 3 points. The
+--- baking scenes measure a top's curvature as 2a.
 function h.parabola(points)
   local m = { 0, 0, 0, 0, 0, 0, 0, 0 } -- sums of 1, u, u^2, u^3, u^4, y, yu, yu^2
   for _, p in ipairs(points) do
@@ -233,12 +235,54 @@ function h.parabola(points)
     m[1], m[2], m[3], m[4], m[5] = m[1] + 1, m[2] + u, m[3] + u * u, m[4] + u ^ 3, m[5] + u ^ 4
     m[6], m[7], m[8] = m[6] + y, m[7] + y * u, m[8] + y * u * u
   end
-  if m[1] < 3 then return 0 / 0 end
+  if m[1] < 3 then return 0 / 0, 0 / 0 end
   local function det(a, b, c) -- columns a, b, c of a 3x3 matrix
     return a[1] * (b[2] * c[3] - b[3] * c[2]) - b[1] * (a[2] * c[3] - a[3] * c[2]) + c[1] * (a[2] * b[3] - a[3] * b[2])
   end
   local c1, c2, c3, r = { m[1], m[2], m[3] }, { m[2], m[3], m[4] }, { m[3], m[4], m[5] }, { m[6], m[7], m[8] }
-  return det(c1, c2, r) / det(c1, c2, c3)
+  local D = det(c1, c2, c3)
+  local a, b, c = det(c1, c2, r) / D, det(c1, r, c3) / D, det(r, c2, c3) / D
+  local rss = 0
+  for _, p in ipairs(points) do rss = rss + (p[2] - (a * p[1] ^ 2 + b * p[1] + c)) ^ 2 end
+  return a, math.sqrt(rss / (m[1] - 3) * (m[1] * m[3] - m[2] * m[2]) / D)
+end
+
+--- h.top_curvature(s, {keep = function(id) ..., origin = x0, bin = dx, fraction = 0.6, z = zc})
+--- -> k, se, n: the curvature of a body's top surface read from its particles,
+--- k = 2a of the least-squares parabola y = a u^2 + b u + c (negative: domed),
+--- se its standard error (2 se(a) of h.parabola) and n the points fitted. The top
+--- is the highest particle y of the particles `keep(id)` accepts in each bin of
+--- width `bin` (bins centred on origin + j bin); the fit takes the bins whose
+--- centre lies within the middle `fraction` of the body's width (its particles'
+--- extent in x). In 3D only particles with |z - o.z| < bin/2 count. se says the
+--- reading's own scatter: a flat top read with the particles' jitter gives k
+--- within a few se of 0, either sign; the baking claims compare k with 2 se
+--- (tests/baking_test.sh, claim_cookie_domed_vs_baseline; docs/validation.md,
+--- "Fig. 17: the top's curvature and its noise").
+function h.top_curvature(s, o)
+  if type(o) ~= "table" or type(o.keep) ~= "function" or type(o.origin) ~= "number" or not (type(o.bin) == "number" and o.bin > 0) then
+    error("h.top_curvature(s, {keep = function(id), origin = x, bin = width > 0, fraction = 0.6, z = z}): keep, origin and bin are required", 2)
+  end
+  local frac = o.fraction or 0.6
+  if not (frac > 0 and frac <= 1) then error(("h.top_curvature: fraction = %s; valid range (0, 1]"):format(tostring(frac)), 2) end
+  local r = s:particles { fields = { "id", "x" } }
+  local x, bin, top, lo, hi = r.x, o.bin, {}, math.huge, -math.huge
+  for p = 0, r.n - 1 do
+    local px, py, pz = x[3 * p + 1], x[3 * p + 2], x[3 * p + 3]
+    if o.keep(r.id[p + 1]) and (not o.z or math.abs(pz - o.z) < bin / 2) then
+      local b = math.floor((px - o.origin) / bin + 0.5)
+      if not top[b] or py > top[b] then top[b] = py end
+      lo, hi = math.min(lo, px), math.max(hi, px)
+    end
+  end
+  local mid, half, pts = (lo + hi) / 2, frac / 2 * (hi - lo), {}
+  for b, y in pairs(top) do
+    local u = o.origin + b * bin - mid
+    if math.abs(u) <= half then pts[#pts + 1] = { u, y } end
+  end
+  table.sort(pts, function(p, q) return p[1] < q[1] end) -- the sums in one order, whatever pairs() gives
+  local a, se = h.parabola(pts)
+  return 2 * a, 2 * se, #pts
 end
 
 -- ---- material library ---------------------------------------------------

@@ -36,4 +36,27 @@ for k = -4, 5 do pts[#pts + 1] = { 0.01 * k, 3 * (0.01 * k) ^ 2 - 2 * 0.01 * k +
 assert(math.abs(h.parabola(pts) - 3) < 1e-9, "parabola coefficient: " .. h.parabola(pts)) -- measured 3e-13 off
 local nan = h.parabola({ { 0, 1 }, { 1, 2 } })
 assert(nan ~= nan, "parabola through two points")
+-- h.parabola's standard error: y = e (1, -4, 6, -4, 1) at u = -2..2 is orthogonal to 1, u and u^2 (the
+-- quartic of the five-point orthogonal polynomials), so a = 0, RSS = 70 e^2 over n - 3 = 2 and the u^2
+-- column's orthogonal part u^2 - 2 has sum of squares 14: se(a) = sqrt(35 e^2 / 14) = e sqrt(2.5)
+local e, wig = 0.003, { 1, -4, 6, -4, 1 }
+pts = {}
+for k = -2, 2 do pts[#pts + 1] = { k, e * wig[k + 3] } end
+local a0, se0 = h.parabola(pts)
+assert(math.abs(a0) < 1e-15 and math.abs(se0 - e * math.sqrt(2.5)) < 1e-15,
+  ("parabola se: a %.3g (need 0), se %.6g (need %.6g)"):format(a0, se0, e * math.sqrt(2.5)))
+-- h.top_curvature: a flat-topped lattice (no jitter) reads 0 +- 0; a disc of radius 0.1 m reads its
+-- top's curvature -1/R = -10 1/m to within 5% (the fit takes the middle 60% of the width, where
+-- sqrt(R^2 - u^2) departs from a parabola by its u^4 term: about 1% steeper, measured -10.13 +- 0.23)
+local st = h.scene { dim = 2, dx = 0.005, box = { { 0, 0 }, { 0.6, 0.3 } } }
+st:add { shape = h.box({ 0.05, 0.02 }, { 0.25, 0.06 }), material = m, jitter = 0 }
+local n_box = st:stats().particles
+st:add { shape = h.sphere({ 0.45, 0.15 }, 0.1), material = m, jitter = 0 }
+local kb, seb, nb = h.top_curvature(st, { keep = function(id) return id < n_box end, origin = 0.15, bin = 0.005 })
+local kd, sed, nd = h.top_curvature(st, { keep = function(id) return id >= n_box end, origin = 0.45, bin = 0.005 })
+print(("top_curvature: flat box %.3g +- %.3g 1/m (%d bins), disc %.3f +- %.3f 1/m (%d bins; -1/R = -10)"):format(kb, seb,
+  nb, kd, sed, nd))
+assert(math.abs(kb) < 1e-9 and seb < 1e-9 and nb >= 20, "a flat top reads 0 +- 0")
+assert(math.abs(kd + 10) < 0.5 and nd >= 20, "the disc's top reads -1/R")
+assert(not pcall(h.top_curvature, st, { keep = function() return true end, origin = 0, bin = 0 }), "bin = 0 refused")
 print("helpers ok")

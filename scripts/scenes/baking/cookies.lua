@@ -30,6 +30,10 @@
 --                           levers of sessions 26-28, before the preset took its
 --                           own set, dough.lua's COOKIE_SET); the plugin's pore
 --                           cap. Not presets: the defaults are Table 2's cookie.
+--   [--set seed=2]        the particles' jitter (h.scene's seed, default 1): a
+--                           new sampling of the same dough, to see a reading's
+--                           noise (docs/validation.md, "Fig. 17: the top's
+--                           curvature and its noise").
 -- Writes, under hearth-out/cookies/: oven_<T>/heat_%04d.png (the heat
 -- progress, Fig. 3's right column) and cookies.csv (final height, spread and
 -- top curvature per cookie; negative curvature = domed; alone = 1 when no
@@ -37,7 +41,8 @@
 -- and spread over time). Two curvatures: top_curvature from the density
 -- probe's top over the middle third of the spread (9 samples), and
 -- top_curvature_particles from the highest particle in each one-cell bin,
--- a least-squares parabola over the middle 60% of the cookie's width.
+-- a least-squares parabola over the middle 60% of the cookie's width
+-- (h.top_curvature), and top_curvature_particles_se that fit's standard error.
 -- What shapes the top (measured, 2D, dx 7.5 mm, 150 degC): the cold dough
 -- (tau_y 20 Pa) cannot carry its own 25 mm (rho g H ~ 120 Pa); with eta the
 -- full model slumps slowly, and once its fat has melted (35 degC) it spreads
@@ -47,12 +52,13 @@
 -- (docs/validation.md, "The cookie's set"). The baseline does not flow at all: its
 -- weight strains it ~0.2%, inside the snow law's clamp, so it keeps the
 -- placed dough's shape (a capsule: flat top, round ends) through the bake,
--- and its top curvature is the measures' reading of that shape (see
--- claim_cookie_domed_vs_baseline in tests/baking_test.sh for the numbers).
+-- and its top curvature is the measures' reading of that flat top: within
+-- ~2 1/m of 0, either sign, from one particle sampling (--set seed) to the
+-- next (docs/validation.md, "Fig. 17: the top's curvature and its noise").
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 3, frames = 6, ovens = { 190, 150, 110 },
   leaveners = { 0.015, 0.0075, 0 }, baseline = false, reaction_temperature = -1, reaction_width = -1, gas = 1,
-  tray_mode = "separate", tray_friction = 0.4, conductivity = 1, water = false, soft_until = -1, max_porosity = -1 }
+  tray_mode = "separate", tray_friction = 0.4, conductivity = 1, water = false, soft_until = -1, max_porosity = -1, seed = 1 }
 local d3 = P.dim == 3
 if P.soft_until ~= -1 and not (P.soft_until > 35 and P.soft_until < 70) then
   error(("--set soft_until=%g: must lie between Fig. 8's fat-melting and gelatinisation points, (35, 70) degC, "
@@ -77,11 +83,11 @@ local TRAY, SPACING, R, THICK = 0.02, 0.18, 0.03, 0.025
 local W = SPACING * #leaveners
 local zc = 0.06
 
-local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_per_m,top_curvature_particles_1_per_m,alone" }
+local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_per_m,top_curvature_particles_1_per_m,alone,top_curvature_particles_se_1_per_m" }
 local series = { "oven_degC,leavener,t,height_m,spread_m,centre_temperature_degC" }
 for _, T in ipairs(ovens) do
   local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.09, 0.12) },
-    oven = { temperature = T, beta = oven.beta }, name = "cookies" }
+    oven = { temperature = T, beta = oven.beta }, name = "cookies", seed = P.seed }
   h.recipes.tray(s, TRAY, { temperature = T, beta = oven.pan_beta, mode = P.tray_mode, friction = P.tray_friction })
   local xs, first = {}, {} -- first[i]: cookie i's first particle id (ids run in the order s:add made them)
   for i, a in ipairs(leaveners) do
@@ -148,28 +154,13 @@ for _, T in ipairs(ovens) do
     local a = (S0 * T2 - S2 * T0) / (S0 * S4 - S2 * S2)
     return hgt, spread, 2 * a
   end
-  -- the top from the particles: the highest of cookie i's own particles (by
-  -- id) in each one-cell bin across it (in 3D on the slab |z - zc| < dx/2),
-  -- and 2a of the least-squares y = a u^2 + b u + c over the middle 60% of
-  -- the cookie's width
+  -- the top from the particles (h.top_curvature): the highest of cookie i's
+  -- own particles (by id) in each one-cell bin across it (in 3D on the slab
+  -- |z - zc| < dx/2), and 2a of the least-squares y = a u^2 + b u + c over the
+  -- middle 60% of the cookie's width, with its standard error
   local function particle_curvature(i)
-    local r = s:particles { fields = { "id", "x" } }
-    local x = r.x
-    local top, lo, hi = {}, math.huge, -math.huge
-    for p = 0, r.n - 1 do
-      local px, py, pz = x[3 * p + 1], x[3 * p + 2], x[3 * p + 3]
-      if cookie_of(r.id[p + 1]) == i and (not d3 or math.abs(pz - zc) < dx / 2) then
-        local b = math.floor((px - xs[i]) / dx + 0.5)
-        if not top[b] or py > top[b] then top[b] = py end
-        lo, hi = math.min(lo, px), math.max(hi, px)
-      end
-    end
-    local mid, half, pts = (lo + hi) / 2, 0.3 * (hi - lo), {}
-    for b, y in pairs(top) do
-      local u = xs[i] + b * dx - mid
-      if math.abs(u) <= half then pts[#pts + 1] = { u, y } end
-    end
-    return 2 * h.parabola(pts)
+    return h.top_curvature(s, { keep = function(id) return cookie_of(id) == i end, origin = xs[i], bin = dx,
+      fraction = 0.6, z = d3 and zc or nil })
   end
   s:run { until_t = P.until_t, every = P.until_t / P.frames,
     png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T) },
@@ -183,16 +174,16 @@ for _, T in ipairs(ovens) do
     end }
   for i, a in ipairs(leaveners) do
     local hgt, spread, curv = measure(i)
-    local pcurv = particle_curvature(i)
+    local pcurv, pse = particle_curvature(i)
     local one = alone(i)
-    rows[#rows + 1] = ("%g,%g,%.3g,%.5f,%.5f,%.4f,%.4f,%d"):format(T, a, P.baseline and 0 or a * h.library.dough_scale.gas,
-      hgt, spread, curv, pcurv, one)
+    rows[#rows + 1] = ("%g,%g,%.3g,%.5f,%.5f,%.4f,%.4f,%d,%.4f"):format(T, a, P.baseline and 0 or a * h.library.dough_scale.gas,
+      hgt, spread, curv, pcurv, one, pse)
     if one == 0 then
       print(("cookies.lua: warning: oven %g degC, leavener %g: the cookie reaches the edge of its slot (%.0f mm wide): "
         .. "it touches the box's wall or its neighbour, and its readings are not its own alone"):format(T, a, SPACING * 1e3))
     end
-    print(("oven %g degC, leavener %g: height %.4f m, spread %.4f m, top curvature %.3f 1/m (particles %.3f)"):format(T,
-      a, hgt, spread, curv, pcurv))
+    print(("oven %g degC, leavener %g: height %.4f m, spread %.4f m, top curvature %.3f 1/m (particles %.3f +- %.3f)"):format(T,
+      a, hgt, spread, curv, pcurv, pse))
   end
   h.write("cookies.csv", table.concat(rows, "\n") .. "\n")
 end
