@@ -47,6 +47,23 @@
 --    g/cm^3, Chevallier et al. 2000, J. Agric. Food Chem. 48:1322), so no
 --    pore cap is needed below that. Measured: docs/validation.md, "The
 --    cookie's set (#18, session 30)".
+--  * MUFFIN_SET (issue #18; SET below): a cake batter stays fluid until its
+--    starch gelatinises. Read as bread's (x0.3 at 35 degC rising linearly to
+--    x20 at 70 degC) the muffin's batter stiffened from 35 degC (x29 by 50
+--    degC, where the CO2 rate of eq. 11 peaks at 40): its top skin became a
+--    lid at 45-60 degC and its centre stopped rising at 1.2 s of muffins.lua
+--    at 40-45 degC, half its CO2 still to come, the top 5 mm below the rim
+--    (docs/validation.md, "The muffin's set"). Measured batters do not stiffen
+--    there: a cake batter's viscosity falls as it heats and rises sharply
+--    only when its starch gelatinises, and the sugar sets that onset (Shelke,
+--    Faubion & Hoseney 1990, Cereal Chem. 67:575, batter viscometry in an
+--    oven; sucrose raises starch gelatinisation: Spies & Hoseney 1982,
+--    Cereal Chem. 59:128). Wheat starch in excess water starts to gelatinise
+--    near 55-60 degC (DSC onset; our reading of the common textbook range, not
+--    checked against one paper), and sugar only raises it, so 55 is the low
+--    end. So the muffin's curves keep Fig. 8's values and shape, the melted
+--    value held from 35 to 55 degC, set at Fig. 8's 70 degC (bread's). The
+--    set crumb's stretch to fracture (SET) ramps over the same 55-70 degC.
 --  * eta: g = f^2/2 with f in Pa^2 (eq. 12, §6.5) makes eta a Pa^3 s
 --    quantity. Table 2's eta taken in those units returns to the surface
 --    within one step at the scenes' steps (rate-independent), so nothing
@@ -206,7 +223,7 @@
 --    "the set crumb"; the stretch rule takes the smaller of it and the
 --    water's) is 100 (never) up to 35 degC and 0.15 from 70 degC, linear
 --    between, over the highest temperature reached (irreversible), on the
---    same points as tau_y's set. 0.15 is inside the range measured on baked
+--    same points as tau_y's set (the muffin's: 55 to 70 degC, MUFFIN_SET). 0.15 is inside the range measured on baked
 --    crumb pulled apart, 0.05-0.36 (4-30 mm of break elongation on 83 mm
 --    specimens: "Some tensile characteristics of bread crumb", J. Texture
 --    Stud. 25:299, 1994; from its abstract, authors not checked). Without it
@@ -218,7 +235,7 @@
 --    (hundreds of particles; the guard stops the run), 0.3 changes nothing.
 --    Where the crust does not crack (5 mm) nothing changes, and nor in the
 --    muffin, whose crown stops stretching as it sets (docs/validation.md,
---    Crust (#18), "The set crumb").
+--    Crust (#18), "The set crumb"; before MUFFIN_SET).
 local ETA_SCALE, GAS_SCALE = 4000, 1 / 600
 local DRY_X = { 0.05, 0.10, 0.16, 0.25, 0.41 }  -- water content, kg/kg dry basis
 local DRY_F = { 100, 37, 10, 4.6, 1 }           -- E and tau_y factor (Roos 1995's glass transition, capped at 100)
@@ -233,8 +250,10 @@ local FRACTURE_SET = 0.15 -- the set crumb's stretch to fracture (SET below), fr
 local THETA = { 5, 20, 35, 70 }            -- Fig. 8: fridge, room, fat melting, gelatinisation (degC)
 local TAU_SHAPE = { 1, 0.8, 0.3, 20 }      -- Fig. 8 left, relative to Table 2's value
 local ETA_SHAPE = { 1, 0.5, 0.1, 0.05 }    -- Fig. 8 right, relative to ETA_SCALE x Table 2's value
--- a good whose Fig. 8 temperatures differ (COOKIE_SET above): its points and shapes replace THETA, TAU_SHAPE, ETA_SHAPE
-local SET = { cookie = { theta = { 5, 20, 35, 71, 78 }, tau = { 1, 0.8, 0.3, 0.3, 20 }, eta = { 1, 0.5, 0.1, 0.1, 0.05 } } }
+-- a good whose Fig. 8 temperatures differ (COOKIE_SET, MUFFIN_SET above): its points and shapes replace THETA, TAU_SHAPE,
+-- ETA_SHAPE
+local SET = { cookie = { theta = { 5, 20, 35, 71, 78 }, tau = { 1, 0.8, 0.3, 0.3, 20 }, eta = { 1, 0.5, 0.1, 0.1, 0.05 } },
+  muffin = { theta = { 5, 20, 35, 55, 70 }, tau = { 1, 0.8, 0.3, 0.3, 20 }, eta = { 1, 0.5, 0.1, 0.1, 0.05 } } }
 
 -- Table 2, one column per good (N/A as nil).
 local paper = {
@@ -317,7 +336,8 @@ function D.preset(name)
     ef[#ef + 1] = { 1, 1 }
     dry.fracture_strain = ef
     -- SET: the set crumb's, over the highest temperature reached, on Fig. 8's set points (as tau_y's)
-    curves.fracture_strain_set = { { THETA[3], FRACTURE_WET }, { THETA[4], FRACTURE_SET }, irreversible = true }
+    local nt = #set.theta -- the set's last two points: where tau_y leaves its melted value, and the set
+    curves.fracture_strain_set = { { set.theta[nt - 1], FRACTURE_WET }, { set.theta[nt], FRACTURE_SET }, irreversible = true }
   end
   local oven = { temperature = c.ambient_theta, beta = c.ambient_beta, pan_temperature = c.conductive_theta,
     pan_beta = c.conductive_beta, dough_temperature = c.theta0, latent_heat = false,

@@ -19,6 +19,9 @@ for name, t in pairs(T2) do
   if name == "cookie" then -- dough.lua's COOKIE_SET: melted from 35 degC, held soft to 71 degC, set by 78 degC
     assert(np == 5 and ty[3][1] == 35 and ty[4][1] == 71 and ty[4][2] == ty[3][2] and ty[5][1] == 78,
       "cookie: soft from 35 to 71 degC, set by 78 degC (Miller et al. 1996's glass transition)")
+  elseif name == "muffin" then -- dough.lua's MUFFIN_SET: melted from 35 degC, held soft to 55 degC, set by 70 degC
+    assert(np == 5 and ty[3][1] == 35 and ty[4][1] == 55 and ty[4][2] == ty[3][2] and ty[5][1] == 70,
+      "muffin: soft from 35 to 55 degC (the batter's starch onset), set by 70 degC")
   else
     assert(np == 4 and ty[3][1] == 35 and ty[4][1] == 70, name .. ": Fig. 8's points at 35 and 70 degC")
   end
@@ -47,9 +50,10 @@ for name, t in pairs(T2) do
     assert(math.abs(f[1][1] * X0 - 0.16) < 1e-12, name .. ": glassy at X = 0.16 kg/kg")
     assert(math.abs(f[#f - 1][1] * X0 - 0.41) < 1e-12 and math.abs(fs.base * f[#f - 1][2] - 1) < 1e-12,
       name .. ": rubbery (1) at X = 0.41 kg/kg")
-    -- dough.lua's SET: the set crumb's stretch to fracture, 100 (never) to Fig. 8's 35 degC, 0.15 from its 70 degC set
-    local st = d.fracture_strain_set
-    assert(st and not st.moisture and st.irreversible and #st == 2 and st[1][1] == 35 and st[1][2] == 100 and
+    -- dough.lua's SET: the set crumb's stretch to fracture, 100 (never) where tau_y leaves its melted value (Fig.
+    -- 8's 35 degC; the muffin's 55, MUFFIN_SET), 0.15 from its 70 degC set
+    local st, t0 = d.fracture_strain_set, name == "muffin" and 55 or 35
+    assert(st and not st.moisture and st.irreversible and #st == 2 and st[1][1] == t0 and st[1][2] == 100 and
       st[2][1] == 70 and st[2][2] == 0.15, name .. ": the set crumb breaks at 0.15 from 70 degC")
   else
     assert(d.saturation == nil and d.fracture_strain == nil and d.fracture_strain_set == nil and o.saturation == nil,
