@@ -23,7 +23,9 @@
 -- oozes out"): Table 2's s'more heats evenly (Biot number 0.06), nothing can
 -- crack, and MPM's one velocity field keeps the outline's material on the
 -- outline; claim_marshmallow_oozes and docs/validation.md "The
--- marshmallow's ooze (#18)" give the numbers.
+-- marshmallow's ooze (#18)" give the numbers. The press barely reaches the
+-- roasted one: molten, it slumps under its own weight to ~19 mm before the
+-- crackers, closing to 19 mm apart, come down on it.
 -- Writes, under hearth-out/marshmallow/: heat_%04d.png (temperature) and
 -- marshmallow.csv: over time, the thickness (lowest to highest material on
 -- the centre line), the centre temperature and the ooze (below) of the raw
