@@ -6,7 +6,8 @@
 --   conductivity  factor on Table 2's kappa (100 W/(m K)); 0.0234 is a real
 --                 crumb's diffusivity on the water's clock (see the doc)
 --   oven, pan     air and tray temperature (degC; -1: Table 2's 100)
---   dough         the raw dough's temperature (degC; -1: Table 2's 1)
+--   dough         the raw dough's temperature (degC; -1: Table 2's 1); the thermal strain's
+--                 reference_temperature stays the preset's
 --   set_strain    the set crumb's stretch to fracture at 70 degC (-1: the preset's 0.15)
 --   dry_shift     multiplies the water contents X of FRACTURE's curve (the stretch
 --                 to fracture over X): > 1 makes a wetter crust as brittle as a
