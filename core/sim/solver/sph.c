@@ -144,6 +144,10 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
         return err_set(err, HEARTH_ERR_PARAM,
                        "scene: latent_heat = true needs the water field, which solver = \"sph\" does not carry; use "
                        "solver = \"mpm\" or latent_heat = false");
+    if (o->continuity_density && !o->gas_law)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "scene: sph.continuity_density = true needs sph.gas_law = true (it is the gas law's pressure that "
+                       "reads the particle's own volume); set both or neither");
     if (!(o->xsph_Tf > o->xsph_T0))
         return err_set(err, HEARTH_ERR_PARAM, "scene: sph.xsph_Tf = %g degC must be above sph.xsph_T0 = %g degC",
                        o->xsph_Tf, o->xsph_T0);
