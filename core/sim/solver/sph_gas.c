@@ -54,7 +54,10 @@ double sph_bubble_volume(const hearth_sph_def *o, double vb0, double T) {
  * off its tray to a foot (contact angle 180 degrees: the tray side is a
  * surface too) and tore its flank at the contact line (docs/validation.md
  * "The roll's skin"). J knows no surface: a particle reads stretched only when
- * it is. A non-positive J (phase_stress reports it) keeps the sum. */
+ * it is. A non-positive J (phase_stress reports it) keeps the sum. Off in the
+ * roll's preset: with it the roll sits flat on its tray, but its films, which
+ * the sum read as compressed beside squeezed bubbles, carry their real tension
+ * and tear from 1.6 s (SPH's tensile instability), where the sum held them. */
 static double volume_density(const double *F, double m, double V0, double summed) {
     const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
                      F[2] * (F[3] * F[7] - F[4] * F[6]);
