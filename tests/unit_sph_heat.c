@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "hearth/hearth.h"
 #include "scene.h"
@@ -515,6 +516,15 @@ TEST(sph_continuity_density_reads_no_skin) {
     CHECK(grow[2] > 1.005);                            /* the patch did expand */
     CHECK(fabs((grow[3] - 1) / (grow[2] - 1) - 1) < 0.1); /* and det F says by how much */
     CHECK(grow[1] < 0);                                /* so Tait pulls inside */
+    /* without the gas law there is no pressure to read it: refused, by name */
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.1, 0};
+    hearth_scene_def d = sph_def(2, 0.005, lo, hi);
+    d.sph.continuity_density = 1;
+    hearth_error err;
+    hearth_scene *s = hearth_scene_create(&d, &err);
+    CHECK(s == NULL && strstr(err.msg, "sph.continuity_density") && strstr(err.msg, "sph.gas_law"));
+    if (s) hearth_scene_destroy(s);
+    else printf("refused: %s\n", err.msg);
 }
 
 TEST_MAIN(T(sph_heat_ext_flux_per_area), T(sph_heat_ext_slab_converges), T(sph_gas_law_clusters_reach_gas_volume),
