@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "hearth/hearth.h"
 #include "scene.h"
@@ -425,5 +426,107 @@ TEST(sph_gas_law_films_keep_rest_spacing) {
     CHECK(film[1] > 0.5);
 }
 
+/* ---- the density Tait reads: the sum, or the particle's own volume -------- */
+
+/* A 2D block of dough 40 x 24 mm (lattice at 2 mm, no gravity, Tait with its
+ * tension and the gas law, B = 1.4e4 Pa) at rest for 20 steps; then the same
+ * block with sph.continuity_density, and that one again set expanding, v =
+ * rate (x - c). At rest nothing is stretched, so the right pressure is 0
+ * everywhere: eq. 3.13's sum, which counts the neighbours in the kernel,
+ * reads the outer row (surface particles) short of its rest density and
+ * pulls it with Tait's tension, a skin that squeezes what it holds (the bread
+ * roll's, docs/validation.md "The roll's skin"), while the particle's own
+ * volume m / (V0 det F) reads 0 (20 steps each). Expanding (8 steps, before
+ * the tension's wave from the edges reaches the centre, so the strain there
+ * is still uniform), the own volume must follow the
+ * positions: det F of the particles that start within 5 mm of the centre
+ * against their patch's area grown from the start, sqrt of the ratio of
+ * the determinants of their positions' covariance (a uniform strain scales
+ * it by det F^2). Outputs: [0] the outer row's mean p / B, [1] the
+ * inside's, [2] the centre patch's area ratio from the positions, [3] its
+ * mean det F. */
+static void moments(const double *x, double m[5]) {
+    m[0] += x[0], m[1] += x[1], m[2] += x[0] * x[0], m[3] += x[1] * x[1], m[4] += x[0] * x[1];
+}
+
+static double cov_det(const double m[5], int n) {
+    const double cx = m[0] / n, cy = m[1] / n;
+    return (m[2] / n - cx * cx) * (m[3] / n - cy * cy) - (m[4] / n - cx * cy) * (m[4] / n - cx * cy);
+}
+
+static void skin_case(int continuity, double rate, int steps, double out[4]) {
+    const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.08, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[1] = 0;
+    d.sph.tension = 1;
+    d.sph.gas_law = 1;
+    d.sph.continuity_density = continuity;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    out[0] = out[1] = out[2] = out[3] = NAN;
+    if (!s) return;
+    const int m = newtonian(s, 1100, 1e5, 2.0);
+    const double blo[3] = {0.03, 0.028, 0}, bhi[3] = {0.07, 0.052, 0}, c[2] = {0.05, 0.04};
+    if (m < 0 || sph_box(s, m, blo, bhi, 0, 26) < 0) {
+        hearth_scene_destroy(s);
+        return;
+    }
+    double *v = pcold(&s->ps, PC_V);
+    const double *x = pcold(&s->ps, PC_X);
+    const int *id = pcoli(&s->ps, PC_ID);
+    int patch[64], np = 0;
+    double m0[5] = {0, 0, 0, 0, 0}, m1[5] = {0, 0, 0, 0, 0}; /* sums of x, y, xx, yy, xy */
+    for (int i = 0; i < s->ps.n; i++) {
+        v[3 * i] = rate * (x[3 * i] - c[0]), v[3 * i + 1] = rate * (x[3 * i + 1] - c[1]);
+        if (fabs(x[3 * i] - c[0]) < 0.005 && fabs(x[3 * i + 1] - c[1]) < 0.005 && np < 64) {
+            patch[np++] = id[i];
+            moments(x + 3 * i, m0);
+        }
+    }
+    hearth_error err;
+    if (hearth_scene_step(s, steps, &err) != HEARTH_OK) fprintf(stderr, "%s\n", err.msg);
+    x = pcold(&s->ps, PC_X), id = pcoli(&s->ps, PC_ID);
+    const double *F = pcold(&s->ps, PC_F);
+    const struct sph_state *st = s->sph;
+    double ps = 0, pi = 0, J = 0;
+    int ns = 0, ni = 0;
+    for (int i = 0; i < s->ps.n; i++) {
+        if (st->surf[i]) ps += st->prs[i] / st->B[i], ns++;
+        else pi += st->prs[i] / st->B[i], ni++;
+        for (int k = 0; k < np; k++)
+            if (id[i] == patch[k]) {
+                J += (F[9 * i] * F[9 * i + 4] - F[9 * i + 1] * F[9 * i + 3]) / np;
+                moments(x + 3 * i, m1);
+            }
+    }
+    out[0] = ps / ns, out[1] = pi / ni, out[2] = sqrt(cov_det(m1, np) / cov_det(m0, np)), out[3] = J;
+    printf("%s, %s, %d steps: Tait pressure over B, outer row (%d) %.4f, inside (%d) %.4f; the centre patch (%d) grew %.5f by "
+           "its positions, det F %.5f\n",
+           continuity ? "own volume (continuity_density)" : "eq. 3.13's sum", rate > 0 ? "expanding" : "at rest", steps, ns,
+           out[0], ni, out[1], np, out[2], out[3]);
+    hearth_scene_destroy(s);
+}
+
+TEST(sph_continuity_density_reads_no_skin) {
+    double sum[4], own[4], grow[4];
+    skin_case(0, 0, 20, sum);
+    skin_case(1, 0, 20, own);
+    skin_case(1, 5, 8, grow);
+    CHECK(sum[0] < -0.1);                              /* the skin the sum reads at rest */
+    CHECK(fabs(own[0]) < 1e-3 && fabs(own[1]) < 1e-3); /* at rest nothing is stretched */
+    CHECK(grow[2] > 1.005);                            /* the patch did expand */
+    CHECK(fabs((grow[3] - 1) / (grow[2] - 1) - 1) < 0.1); /* and det F says by how much */
+    CHECK(grow[1] < 0);                                /* so Tait pulls inside */
+    /* without the gas law there is no pressure to read it: refused, by name */
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.1, 0};
+    hearth_scene_def d = sph_def(2, 0.005, lo, hi);
+    d.sph.continuity_density = 1;
+    hearth_error err;
+    hearth_scene *s = hearth_scene_create(&d, &err);
+    CHECK(s == NULL && strstr(err.msg, "sph.continuity_density") && strstr(err.msg, "sph.gas_law"));
+    if (s) hearth_scene_destroy(s);
+    else printf("refused: %s\n", err.msg);
+}
+
 TEST_MAIN(T(sph_heat_ext_flux_per_area), T(sph_heat_ext_slab_converges), T(sph_gas_law_clusters_reach_gas_volume),
-          T(sph_heat_mirror_symmetric), T(sph_gas_law_films_keep_rest_spacing))
+          T(sph_heat_mirror_symmetric), T(sph_gas_law_films_keep_rest_spacing),
+          T(sph_continuity_density_reads_no_skin))

@@ -162,6 +162,11 @@ static const hearth_setting settings[] = {
         0, 0, 0.99),
     SPH(bubble_vmax, "1", "with gas_law: the largest V_b / V_b0, where the crumb's cells open and vent (the vapour law "
         "diverges at the boiling point)", 4, 1, 100),
+    SPH_FLAG("continuity_density",
+             "with gas_law: Tait and the gas law read each particle's density from its own volume, m / (V0 det F) (the "
+             "continuity equation, Gray, Monaghan & Swift 2001), not the summation (eq. 3.13), which reads a free surface "
+             "or a tray as stretched and pulls it into a skin",
+             continuity_density),
 };
 
 const hearth_setting *hearth_scene_settings(int *n) {

@@ -204,6 +204,7 @@ typedef struct hearth_sph_def {
     int gas_law;           ///< 1: each particle's Tait pressure against its rest density, a bubble's rho0 / V_b(T) (eq. 3.49-3.50, ideal gas; rises with T and falls back as it cools); 0: eq. 3.51 while heating and eq. 3.52's kept density, as the thesis; default 0
     double bubble_vapour;  ///< with gas_law: the dough's water activity a_w; the bubble's gas takes water vapour a_w P_sat(T) (eq. 2.42-2.43); 0 = dry gas (default)
     double bubble_vmax;    ///< with gas_law: the largest V_b / V_b0 (where the crumb's cells open and vent); default 4
+    int continuity_density; ///< with gas_law: the pressure reads each particle's density from its own volume, m / (V0 det F) (the continuity equation through eq. 3.27), not eq. 3.13's sum, which reads a free surface as stretched; default 0
 } hearth_sph_def;
 
 /// A scene's settings. Each field is one row of hearth_scene_settings(), which

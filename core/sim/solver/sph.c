@@ -112,7 +112,12 @@
  * gas law the density sums rest volumes (sort_and_list): eq. 3.13's mass sum
  * read the dough films beside expanded bubbles as stretched, Tait pulled
  * them into pairs and the roll tore at 0.5 s; it now rises past 1.3x whole
- * (docs/validation.md "The films' tension"). At
+ * (docs/validation.md "The films' tension"). Eq. 3.13 also reads a free
+ * surface, and a collider's side, as stretched (half the kernel is empty), so
+ * with tension the roll's outline is a skin that lifts it off its tray;
+ * sph.continuity_density reads the particle's own volume instead (sph_gas.c),
+ * off in the roll's preset because its films then tear (docs/validation.md
+ * "The roll's skin"). At
  * eps 0.3 a block in strong uniform tension still creeps toward pairs over
  * many sound crossings (`sph_artificial_stress_fluid`: 0.68 spacings at 1 s;
  * 0.5 holds). Surface tension above about 0.02 N/m does not settle a 0.06 m
@@ -144,6 +149,10 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
         return err_set(err, HEARTH_ERR_PARAM,
                        "scene: latent_heat = true needs the water field, which solver = \"sph\" does not carry; use "
                        "solver = \"mpm\" or latent_heat = false");
+    if (o->continuity_density && !o->gas_law)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "scene: sph.continuity_density = true needs sph.gas_law = true (it is the gas law's pressure that "
+                       "reads the particle's own volume); set both or neither");
     if (!(o->xsph_Tf > o->xsph_T0))
         return err_set(err, HEARTH_ERR_PARAM, "scene: sph.xsph_Tf = %g degC must be above sph.xsph_T0 = %g degC",
                        o->xsph_Tf, o->xsph_T0);

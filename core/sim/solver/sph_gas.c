@@ -40,6 +40,30 @@ double sph_bubble_volume(const hearth_sph_def *o, double vb0, double T) {
     return vb0 * V;
 }
 
+/* The density a particle's own volume gives it, m / (V0 J) with J = det F,
+ * F integrated from eq. 3.27's velocity gradient (phase_stress): the
+ * continuity equation in its Lagrangian form, as Gray, Monaghan & Swift 2001
+ * (Comput. Methods Appl. Mech. Engrg. 190, 6641) take the density of elastic
+ * solids in SPH, whose tension the sum of eq. 3.13 misreads. The sum counts
+ * the neighbours in a particle's kernel, so a particle on a free surface (or
+ * on a collider, which adds none) reads 0.75-0.85 of its rest density at rest
+ * and Tait with tension pulls it into a skin: in the bread roll's dough at
+ * 110 degC (B ~ 4e5 Pa) its outer row holds -100 kPa (median; -270 kPa on the
+ * tray), a surface tension of some 300 N/m, forty times the roll's weight per
+ * length (21 N/m). That skin squeezed the crumb (Laplace), beaded the roll up
+ * off its tray to a foot (contact angle 180 degrees: the tray side is a
+ * surface too) and tore its flank at the contact line (docs/validation.md
+ * "The roll's skin"). J knows no surface: a particle reads stretched only when
+ * it is. A non-positive J (phase_stress reports it) keeps the sum. Off in the
+ * roll's preset: with it the roll sits flat on its tray, but its films, which
+ * the sum read as compressed beside squeezed bubbles, carry their real tension
+ * and tear from 1.6 s (SPH's tensile instability), where the sum held them. */
+static double volume_density(const double *F, double m, double V0, double summed) {
+    const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
+                     F[2] * (F[3] * F[7] - F[4] * F[6]);
+    return J > 0 && V0 > 0 ? m / (V0 * J) : summed;
+}
+
 /* Pressure with sph.gas_law: the dough's Tait (eq. 3.17) against its rest
  * density rho0; a bubble's the ideal gas's gauge pressure against the gas
  * law's rho_b = rho0 / V_b (sph_bubble_volume), B (rho / rho_b - 1) (gamma =
@@ -58,13 +82,14 @@ void sph_pressure_gas_law(hearth_scene *s) {
     const hearth_sph_def *o = &s->def.sph;
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, *mat = c.mat;
-    const double *T = c.T;
+    const double *T = c.T, *F = c.F, *V0 = pcold(&s->ps, PC_VOL0);
     for (int i = 0; i < n; i++) {
         const double rho0 = st->rho0[i], bub = s->mats.slot[mat[i]].core[CP_BUBBLE];
         const double rr = bub > 0 && T ? rho0 / sph_bubble_volume(o, bub, T[i]) : rho0; /* eq. 3.49 */
         st->rhof[i] = rr;
-        const double tait = st->B[i] * (pow(st->rho[i] / rho0, o->gamma) - 1); /* eq. 3.17 */
-        st->prs[i] = bub > 0 ? fmax(st->B[i] * (st->rho[i] / rr - 1), tait) : tait;
+        const double rho = o->continuity_density ? volume_density(F + 9 * i, c.m[i], V0[i], st->rho[i]) : st->rho[i];
+        const double tait = st->B[i] * (pow(rho / rho0, o->gamma) - 1); /* eq. 3.17 */
+        st->prs[i] = bub > 0 ? fmax(st->B[i] * (rho / rr - 1), tait) : tait;
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
     }
     if (T) memcpy(st->Tprev, T, sizeof(double) * (size_t)n);

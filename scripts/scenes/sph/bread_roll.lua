@@ -18,7 +18,11 @@
 -- (1.03x) along the films between bubble spots, which eq. 3.13's mass sum
 -- read as stretched (docs/validation.md "The films' tension").
 -- It stays where it was put (it drifted 2 cm right by 1.2 s before XSPH's
--- pair epsilon, sph.c phase_xsph).
+-- pair epsilon, sph.c phase_xsph). Its underside leaves the tray from 0.9 s
+-- but for a foot: eq. 3.13 reads the roll's outline and tray side as
+-- stretched, and Tait's tension makes them a skin that holds the crumb at
+-- hundreds of kPa (docs/validation.md "The roll's skin"; sph.continuity_density
+-- removes the skin, and the films then tear from 1.6 s, so it is off here).
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature), particles_NNNN.csv (positions, for
 -- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
