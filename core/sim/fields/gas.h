@@ -9,6 +9,11 @@
 ///   integral of alpha_g R0 exp(-((T - Tr)/dT)^2) dt.
 /// Exact for constant and for linearly varying temperature (an erf difference).
 double gas_moles_step(double T0, double T1, double dt, double alpha_g, double R0, double Tr, double dT);
+struct hearth_scene;
+/// Venting (gas.c): the factor on particle i's n^g over a step of dt, exp(-gas_vent S_p dt / V_p) when the
+/// particle holds air surface (boundary.c's area, this step's) and its gas porosity has reached vent_porosity,
+/// else 1. MPM's G2P calls it after the step's production.
+double gas_vent_factor(const struct hearth_scene *s, int i, double dt);
 /// Porosity n^p = 1 - (1 - n^p_0) / J^P: Ding et al.'s gas volume fraction
 /// n^p = V^g / V^s in (0, 1) (§5.4) when the plastic flow changes only the
 /// pores' volume, the rest of the mixture keeping its (1 - n^p_0) V_0. Their
