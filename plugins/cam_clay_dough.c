@@ -20,7 +20,8 @@
  *   M(n)   = 9 / (4 ln^2(1/n) (7/2 n + 1)),
  *   p = -tr(tau)/3,  q = sqrt(3/2) |tau + p I|.
  * n^p is the gas porosity the core passes in pt->porosity
- * (n^p = J^P - 1 + n^p_0, §5.4, from this plugin's plastic_J). M -> 0 as
+ * (n^p = 1 - (1 - n^p_0) / J^P, §5.4's gas volume fraction, from this
+ * plugin's plastic_J; core/sim/fields/gas.h, gas_porosity). M -> 0 as
  * n^p -> 0, so the surface becomes von Mises q <= tau_y; but only like
  * 1/ln^2: M(1e-9) = 5.2e-3 still, so the exact von Mises limit is n^p = 0,
  * which this plugin also accepts. A NaN porosity (the field is off, e.g. a
@@ -57,15 +58,15 @@
  *
  * ---- closed pores --------------------------------------------------------------
  * Eq. 12 is symmetric in p, so a dough under more pressure than
- * tau_y/sqrt(M) compacts plastically, and n^p = J^P - 1 + n^p_0 (§5.4) can
- * fall to zero: the skeleton has closed its pores. Then the gas pressure of
+ * tau_y/sqrt(M) compacts plastically, and n^p = 1 - (1 - n^p_0) / J^P can
+ * fall to zero (at J^P = 1 - n^p_0): the skeleton has closed its pores. Then the gas pressure of
  * eq. 13, n^g R theta / (J n^p), which the core adds explicitly after this
  * return, grows without bound and blows the body apart (seen: a 7 cm loaf
  * under its own weight). A solid cannot compact by more than its pore
  * volume, so plastic compaction is capped: J^P >= 1 - c n^p_0 with c the
  * parameter `compaction` (default 0.5: at most half the pores close, so
  * compaction at most doubles the gas pressure). n^p_0 is recovered from the
- * porosity the core passes, n^p_0 = n^p - (J^P - 1). Past the cap the
+ * porosity the core passes, n^p_0 = 1 - (1 - n^p) J^P. Past the cap the
  * volume change stays elastic (the volumetric strain of the return is
  * shifted back towards the trial's). This is outside eq. 12; it only acts
  * on a return that would take n^p below (1 - c) n^p_0.
@@ -75,11 +76,13 @@
  * at tau_y / sqrt(M(n^p)), which falls to 0 as n^p -> 1, while the gas
  * pressure n^g R theta / n^p falls only like 1/n^p. Past n^p ~ 0.45 (where
  * n / sqrt(M(n)) peaks, ~0.385 tau_y of gas content held) a layer that
- * holds more gas inflates without end, and the core's guard stops the run
+ * holds more gas inflates without end (with the gas volume fraction n^p the
+ * core passes since issue #18's "The cookie's skin", the pore's gas volume
+ * J n^p V_0 grows with J^P and both fall like 1/J^P far out), and the core's guard stops the run
  * (seen: muffin batter, CFL violated by a particle at 300 m/s). The cell
  * walls of a real dough stiffen as they are stretched thin, so a pore does
  * not grow without end; the parameter `max_porosity` says where: past it
- * the plastic dilation stops, J^P <= 1 + max_porosity - n^p_0, and further
+ * the plastic dilation stops, J^P <= (1 - n^p_0) / (1 - max_porosity), and further
  * volume change is elastic (the gas is then held by elastic tension, p/K,
  * ~2% for 600 Pa at E 4e4). Default 1: no cap, eq. 12 as it stands.
  *
@@ -196,7 +199,7 @@ static const hearth_param params[P_COUNT] = {
                       0.5, 0, 1},
     [P_DENSITY] = {"density", "kg/m^3", "mass density at rest (Ding et al. Table 2: 500)", 500, 1e-3, 1e5},
     [P_MAX_POROSITY] = {"max_porosity", "1",
-                        "porosity n^p past which the pores grow only elastically (J^P <= 1 + max_porosity - n^p_0); 1 = no cap",
+                        "porosity n^p past which the pores grow only elastically (J^P <= (1 - n^p_0) / (1 - max_porosity)); 1 = no cap",
                         1, 1e-3, 1},
     [P_FRACTURE_STRAIN] = {"fracture_strain", "1",
                            "elastic strain to fracture (damage = largest deviatoric elastic strain / fracture_strain; at 1 the "
@@ -390,11 +393,11 @@ static int return_map(const double *prm, double mu, double lambda, double n, dou
  * (header, "closed pores" and "stiffening pores"); n the porosity at the
  * step's start, JP the stored J^P, J = det F. */
 static double cap_volume(const double *prm, double n, double JP, double J, double ev0, double ev) {
-    const double n0 = n - (JP - 1); /* n^p_0 = n^p - (J^P - 1) */
+    const double n0 = 1 - (1 - n) * JP; /* n^p = 1 - (1 - n^p_0) / J^P (core/sim/fields/gas.h) */
     const double jmin = 1 - prm[P_COMPACTION] * n0;
     if (ev > ev0 && n0 > 0 && jmin > 0 && J / exp(ev) < jmin) /* ev > ev0: the return compacted */
         ev = fmax(log(J / jmin), ev0);
-    const double jmax = 1 + prm[P_MAX_POROSITY] - n0;
+    const double jmax = (1 - n0) / (1 - prm[P_MAX_POROSITY]); /* +inf at max_porosity 1: no cap */
     if (prm[P_MAX_POROSITY] < 1 && J / exp(ev) > jmax && ev < ev0) /* ev < ev0: the return dilated */
         ev = fmin(log(J / jmax), ev0);
     return ev;

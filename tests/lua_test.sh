@@ -873,6 +873,26 @@ lone_hot_particles_stay_bounded)
     cat out.txt
     has out.txt "lone_hot_particles ok" "temperatures within the bound"
     ;;
+gas_vent_decays_at_closed_form)
+    # gas_vent (fields/gas.c): a surface particle with open pores loses CO2 at dn/dt = -h S_p / V_p n while it makes
+    # it: its n^g follows the geometric closed form (1e-6), the rates sum to the disc's perimeter (1%), and inside, or
+    # with the pores closed (n^p < vent_porosity), n^g = a t (1e-9)
+    for m in false true; do
+        run gas_vent.lua --set closed=$m
+        expect_rc 0 "gas_vent, closed = $m"
+        cat out.txt
+        has out.txt "gas_vent ok" "the vented CO2 on its closed form (closed = $m)"
+    done
+    ;;
+lone_gassy_pore_gas_volume_fraction)
+    # issue #18 (the cookie's skin): the porosity is §5.4's gas volume fraction n^p = 1 - (1 - n^p_0) / J^P. A lone
+    # gassy particle's pore grows past eq. 12's tension tip along the closed form n^g R theta / n = tau_y / sqrt(M(n))
+    # at J^P = (1 - n^p_0) / (1 - n) (within 2e-3); the linear J^P - 1 + n^p_0 put it 8% lower and passed 1 at J^P 1.9
+    run lone_gassy_pore.lua
+    expect_rc 0 "lone gassy particle"
+    cat out.txt
+    has out.txt "lone_gassy ok" "J on the closed form of the gas volume fraction"
+    ;;
 lone_molten_particle_thermal_strain)
     # issue #18: eq. 10's thermal term as a thermal strain: a lone molten particle at 2 Pa/K stops at the closed form
     # ln J_th = c lambda dT / K (3D, quasi-static), within the compaction cap after a sudden strain (3D), and between

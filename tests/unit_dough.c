@@ -449,7 +449,7 @@ TEST(dough_extremes) {
 }
 
 /* Closed pores: squeezed hard for many steps (the porosity passed as the
- * core computes it, n^p = J^P - 1 + n^p_0), the dough compacts plastically
+ * core computes it, n^p = 1 - (1 - n^p_0) / J^P), the dough compacts plastically
  * but never below J^P = 1 - compaction n^p_0, so n^p stays >= n^p_0 / 2 and
  * the gas pressure of eq. 13 stays bounded. */
 TEST(dough_closed_pores) {
@@ -467,7 +467,7 @@ TEST(dough_closed_pores) {
         for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
         t3_mul(f, F, Fn);
         t3_copy(Fn, F);
-        double np = m->plastic_J(p, st) - 1 + n0;
+        double np = 1 - (1 - n0) / m->plastic_J(p, st);
         hearth_point pt = {.dt = dt, .temperature = 20, .porosity = np < 1e-6 ? 1e-6 : np, .saturation = NAN, .p = p,
                            .state = st};
         memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
@@ -482,7 +482,7 @@ TEST(dough_closed_pores) {
 
 /* Stiffening pores: pulled apart hydrostatically for many steps (the gas
  * pressure of an inflating dough does this), the dough dilates plastically
- * up to n^p = max_porosity, J^P = 1 + max_porosity - n^p_0, and no further;
+ * up to n^p = max_porosity, J^P = (1 - n^p_0) / (1 - max_porosity), and no further;
  * without the cap (max_porosity 1) the same pull takes it past. */
 TEST(dough_pore_cap) {
     const hearth_material *m = dough();
@@ -501,7 +501,7 @@ TEST(dough_pore_cap) {
             for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
             t3_mul(f, F, Fn);
             t3_copy(Fn, F);
-            double np = m->plastic_J(p, st) - 1 + n0;
+            double np = 1 - (1 - n0) / m->plastic_J(p, st);
             hearth_point pt = {.dt = dt, .temperature = 20, .porosity = np > 0.999999 ? 0.999999 : np, .saturation = NAN,
                                .p = p, .state = st};
             memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
@@ -509,10 +509,11 @@ TEST(dough_pore_cap) {
         }
         jp_end[c] = m->plastic_J(p, st);
     }
-    printf("  J^P after 300 pulling steps: %.6f with max_porosity %g (cap 1 + %g - n0 = %.6f), %.6f without\n", jp_end[0],
-           cap, cap, 1 + cap - n0, jp_end[1]);
-    CHECK(fabs(jp_end[0] - (1 + cap - n0)) <= 1e-9); /* dilated up to the cap, not past it */
-    CHECK(jp_end[1] > 1 + cap - n0 + 0.05);         /* the uncapped dough goes on */
+    const double jcap = (1 - n0) / (1 - cap);
+    printf("  J^P after 300 pulling steps: %.6f with max_porosity %g (cap (1 - n0) / (1 - %g) = %.6f), %.6f without\n",
+           jp_end[0], cap, cap, jcap, jp_end[1]);
+    CHECK(fabs(jp_end[0] - jcap) <= 1e-9); /* dilated up to the cap, not past it */
+    CHECK(jp_end[1] > jcap + 0.05);        /* the uncapped dough goes on */
 }
 
 /* Damage (the header's "crust fracture"): D is the largest fraction of

@@ -66,7 +66,8 @@ TEST(door_plugin_only_each_plugin) {
  *   -J c_w (s - s_0)                        (eq. 14, water)
  *   -n^g R (theta + 273.15) / n^p(J^P_1)   (eq. 13, gas, porosity after the step's flow)
  *   -c lambda (theta - theta_ref)          (eq. 10 as a thermal strain: the same at every J^E)
- * to the diagonal, and passes the plastic porosity n^p = J^P_0 - 1 + n^p_0 to the plugin. */
+ * to the diagonal, and passes the plastic porosity n^p = 1 - (1 - n^p_0) / J^P_0 (§5.4's gas volume fraction;
+ * gas.h) to the plugin. */
 TEST(door_core_terms_each_plugin) {
     for (int k = 0; k < N_IN_TREE; k++) {
         const hearth_material *m = load_material(in_tree[k]);
@@ -81,7 +82,7 @@ TEST(door_core_terms_each_plugin) {
                          F[2] * (F[3] * F[7] - F[4] * F[6]);
         double *s1 = fresh_state(m, p), *s2 = fresh_state(m, p);
         const double JP0 = m->plastic_J ? m->plastic_J(p, s1) : 1.0;
-        double np0 = JP0 - 1 + core[CP_POROSITY0];
+        double np0 = 1 - (1 - core[CP_POROSITY0]) / JP0;
         np0 = fmin(fmax(np0, 1e-6), 0.999999);
         hearth_point a = {.dt = dt, .temperature = T, .porosity = np0, .saturation = sat, .p = p, .state = s1};
         memcpy(a.grad_v, L, sizeof L), memcpy(a.F, F, sizeof a.F);
@@ -89,7 +90,7 @@ TEST(door_core_terms_each_plugin) {
         b.state = s2;
         const int rd = m->stress(&a, tau_direct);
         const double JP1 = m->plastic_J ? m->plastic_J(p, s1) : 1.0;
-        double np1 = m->plastic_J ? JP1 - 1 + core[CP_POROSITY0] : np0;
+        double np1 = m->plastic_J ? 1 - (1 - core[CP_POROSITY0]) / JP1 : np0;
         np1 = fmin(fmax(np1, 1e-6), 0.999999);
         const double tw = -J * core[CP_WATER_STIFFNESS] * (sat - sat0);
         const double tg = -ng * 8.314462618 * (T + 273.15) / np1;

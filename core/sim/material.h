@@ -180,8 +180,8 @@ enum {
      * before the core's terms are added (MPM). Without the bit tau is left as the plugin wrote it, for
      * callers that report what the plugin returned (the plugin check, the probes). */
     MATERIAL_ZERO_FAILED = 1u << 0,
-    /* n^p = J^P - 1 + n^p_0 (Ding et al. §5.4) from the plugin's plastic_J at the start of the step;
-     * without the bit the point gets env->porosity as given. */
+    /* n^p = 1 - (1 - n^p_0) / J^P (Ding et al. §5.4's gas volume fraction; gas.h) from the plugin's plastic_J at
+     * the start of the step; without the bit the point gets env->porosity as given. */
     MATERIAL_POROSITY_PLASTIC = 1u << 1,
     /* The core's thermal expansion, eq. 10 as a thermal strain: taken out of F and grad_v before the stress for a
      * plugin with bulk_modulus (material_thermal_split, by the caller), else tau -= c lambda (theta - theta_ref) I

@@ -84,6 +84,15 @@ static const hearth_setting settings[] = {
     REAL("boiling_point", "degC",
          "with latent_heat: a particle that holds water does not heat past this; the excess heat boils its water, "
          "m c (T - T_b) / L, and the vapour leaves (MPM; the crumb's plateau)", 100, -273.15, 5000, boiling_point, 0),
+    REAL("gas_vent", "m/s",
+         "CO2 loss through open surface pores: an air-boundary particle whose gas porosity is at least vent_porosity "
+         "loses its CO2 at dn^g/dt = -gas_vent S_p / V_p n^g, S_p its share of the surface (MPM; beyond Ding et al. "
+         "§5.4: a real dough's surface cells open and vent); 0 = none",
+         0, 0, 1e6, gas_vent, 0),
+    REAL_GT("vent_porosity", "1",
+            "with gas_vent: the gas porosity n^p at which a surface particle's pores open to the air (a foam's cells "
+            "touch past ~0.64-0.74, the packing fractions of spheres)",
+            0.7, 0, 1, vent_porosity, 0),
     CHOICE("transfer", "momentum transfer: APIC, or PIC (no affine part: dissipative)", 0, w_transfer, transfer, 1),
     REAL("heat_flip", "1", "temperature to particles: 1 FLIP (eq. 21) .. 0 PIC (the nodes' value)", 1, 0, 1, heat_flip, 1),
     REAL("damping", "1/s", "velocity damping c for static problems: each step the grid velocity is divided by 1 + c dt "

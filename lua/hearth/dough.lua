@@ -123,7 +123,11 @@
 --      more gas than ~0.385 tau_y inflates without end, and without the cap
 --      the rising batter tore (guard: a particle at 300 m/s) at dx 3 mm by
 --      0.83 s and at dx 4 mm with gas x3. Baked muffin crumb is about 60%
---      gas, so pores stop growing plastically there.
+--      gas, so pores stop growing plastically there. Since the porosity is
+--      the gas volume fraction 1 - (1 - n^p_0) / J^P (core/sim/fields/gas.h;
+--      issue #18, helper vent) the cap sits at J^P 2.25, a crumb 60% gas; with
+--      the linear J^P - 1 + n^p_0 it sat at J^P 1.5, 40% gas. Dome 4.14 ->
+--      5.66 mm (claim_muffin_domes).
 --  * nu (not in Table 2) 0.3; initial porosity n^p_0 0.1; thermal expansion
 --    c lambda (not in Table 2) 0.1 Pa/K from the dough's start temperature,
 --    2 Pa/K for the marshmallow (its visible swelling, §7.2).

@@ -152,6 +152,11 @@ function D.preset(name)
   local oven = { temperature = g.oven_temperature, beta = g.oven_beta * S, pan_temperature = g.pan_temperature,
     pan_beta = g.pan_beta * S, dough_temperature = g.dough_temperature, saturation = g.saturation,
     latent_heat = true, boiling_point = 100, browning_scale = S, time_scale = S, bake_time = g.bake_time_real / S,
+    -- open surface pores vent their CO2 (scene settings gas_vent, vent_porosity; core/sim/fields/gas.c): an open
+    -- pore's CO2 diffuses into the air across ~1 mm, D / delta = 1.6e-5 m^2/s (CO2 in air near room temperature;
+    -- ~3e-5 at 200 degC) / 1e-3 m ~ 0.02 m/s in real time, S times fast here; the pores open past a gas fraction of
+    -- 0.7, where a foam's cells press into one another (spheres pack at 0.64-0.74)
+    gas_vent = 0.02 * S, vent_porosity = 0.7,
     units = ("physical, heat and water %g times fast (t_real = %g t)"):format(S, S) }
   return params, curves, oven
 end

@@ -239,6 +239,8 @@ typedef struct hearth_scene_def {
     double boiling_point;    ///< with latent_heat: a particle holding water does not heat past this (degrees C); the excess boils its water away (MPM). Default 100
     int two_field;           ///< 1: MPM keeps two velocity fields at nodes across a crack (damage-field-gradient partitioning, Homel & Herbold 2017; solver/mpm_two_field.c); 2D, one rank. Default 0
     double two_field_friction; ///< with two_field: Coulomb coefficient between the two fields where they press together (0 = frictionless). Default 0
+    double gas_vent;         ///< m/s: CO2 leaves an air-boundary particle whose pores are open (porosity >= vent_porosity) at dn^g/dt = -gas_vent S_p / V_p n^g (MPM; beyond Ding et al.; fields/gas.c). Default 0 = none
+    double vent_porosity;    ///< with gas_vent: the gas porosity at which a surface particle's pores open to the air. Default 0.7
 } hearth_scene_def;
 
 /// Latent heat of vaporisation of water near 100 degC (J/kg): 2257 kJ/kg at

@@ -7,12 +7,40 @@
  * The rate is integrated over each step as if the temperature moved linearly
  * from its value before the step's heat update to its value after, which the
  * erf form does exactly; at constant temperature it reduces to rate * dt.
- * The gas law takes absolute temperature: the user works in degrees C. */
+ * The gas law takes absolute temperature: the user works in degrees C.
+ *
+ * Venting (scene settings gas_vent and vent_porosity; beyond Ding et al.,
+ * who keep every mole where it was made). A dough's gas cells are closed
+ * while their walls are whole, but at the surface a cell whose walls have
+ * thinned out opens to the air and its gas leaves: the crumb turns from a
+ * foam of separate cells into a sponge of communicating pores (McGee 2004,
+ * On Food and Cooking, "From foam to sponge"), and bread-baking models
+ * switch their pores open and let CO2 and vapour flow out through them
+ * (Zhang, Datta & Mukherjee 2005, AIChE J. 51:2569; pore opening at
+ * 71-81 degC measured by Zhang et al. 2025, Foods 14:1649). Here the opening is by
+ * porosity, not temperature: a foam's cells press into one another past the
+ * packing fraction of spheres (0.64 random, 0.74 ordered), so a surface
+ * particle whose gas porosity has reached vent_porosity (default 0.7) is
+ * open, and its CO2 leaves through its share S_p of the air surface
+ * (boundary.c, the one heat and evaporation use) as a first-order loss,
+ *   dn^g/dt = -h S_p / V_p n^g,   V_p = J V_p^0,
+ * h = gas_vent (m/s) a mass-transfer velocity (an open pore's CO2 diffusing
+ * into the air, D / delta ~ 1.6e-5 m^2/s / 1 mm ~ 0.02 m/s in real time).
+ * Integrated exactly over the step (the factor exp(-h S_p dt / V_p)), so any
+ * h is stable; a closed particle, or one inside, keeps its gas. Why: the
+ * leavened cookie's top and rim swelled past the crumb (issue #18,
+ * docs/validation.md "The cookie's skin"); an open skin vents instead, so
+ * its pores stop at J^P ~ (1 - n^p_0) / (1 - vent_porosity).
+ * `gas_vent_decays_at_closed_form` checks it against the exponential. */
 #include "gas.h"
 
 #include <math.h>
 
+#include "material.h"
+#include "mpm.h"
 #include "physics_constants.h"
+#include "plugins.h"
+#include "scene.h"
 #define SQRT_PI 1.7724538509055160273
 
 double gas_moles_step(double T0, double T1, double dt, double alpha_g, double R0, double Tr, double dT) {
@@ -25,4 +53,25 @@ double gas_moles_step(double T0, double T1, double dt, double alpha_g, double R0
     }
     /* dt * mean of exp(-u^2) over u in [a, b] */
     return k * 0.5 * SQRT_PI * (erf(b) - erf(a)) / (b - a);
+}
+
+double gas_vent_factor(const hearth_scene *s, int i, double dt) {
+    const double h = s->def.gas_vent;
+    const particles *ps = &s->ps;
+    if (!(h > 0) || !s->boundary.area || i >= s->boundary.area_cap) return 1.0;
+    const double S = s->boundary.area[i];
+    if (!(S > 0)) return 1.0;
+    const int m = pcoli(ps, PC_MAT)[i];
+    const material_slot *ms = &s->mats.slot[m];
+    double JP = 1.0;
+    if (ms->m->plastic_J) { /* the porosity as the door gives it (material.h, MATERIAL_POROSITY_PLASTIC) */
+        double pscratch[SCENE_MAX_PARAMS];
+        const double *st = ps->state_stride ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL;
+        plugin_call_enter(ms->m, "plastic_J");
+        JP = ms->m->plastic_J(material_params(&s->mats, ps, m, i, pscratch), st);
+        plugin_call_leave();
+    }
+    if (!(gas_porosity(JP, ms->core[CP_POROSITY0]) >= s->def.vent_porosity)) return 1.0; /* closed */
+    const double V = pcold(ps, PC_VOL0)[i] * particles_J(ps, i);
+    return V > 0 ? exp(-h * S * dt / V) : 1.0;
 }

@@ -324,6 +324,11 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
                        path);
     if (s->def.two_field) /* not in version 4's DEF section: a restored scene would step with one field */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of two_field scenes are not supported yet", path);
+    if (s->def.gas_vent > 0) /* not in version 4's DEF section: a restored scene would keep its surface's CO2 */
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "save %s: checkpoints of scenes that vent CO2 (gas_vent = %g m/s) are not supported yet; set "
+                       "gas_vent = 0 to save",
+                       path, s->def.gas_vent);
     if (s->mix.mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
                        path);

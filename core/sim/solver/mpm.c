@@ -513,6 +513,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     const double *hold_h = HEAT && s->heat.nfix > 0 ? s->heat.hold_h : NULL; /* held temperatures (thermal.c) */
     const double boil = HEAT && WATER && s->def.latent_heat ? s->def.boiling_point : INFINITY; /* no boiling: never passed */
+    const int vent = Gcol && s->def.gas_vent > 0 && s->boundary.area; /* boundary.c found the surface this step */
     const pblock pb = s->mpm->pb[k];
     pb_partial *pp = &s->mpm->partial[k];
     /* the next sort's keys (mpm_sort); a periodic scene wraps after G2P and files its particles there */
@@ -641,6 +642,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                 const material_slot *gm = &s->mats.slot[mat[i]];
                 Gcol[i] += gas_moles_step(T0, Tcol[i], dt, gm->core[CP_GAS_RATE], gm->params[gm->density_index],
                                           gm->core[CP_REACTION_T], gm->core[CP_REACTION_WIDTH]);
+                if (vent) Gcol[i] *= gas_vent_factor(s, i, dt); /* open surface pores lose their CO2 (gas.c) */
             }
         }
         if (flags && (flags[i] & PF_FIXED)) { /* a pinned particle keeps its place */

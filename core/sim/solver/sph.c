@@ -517,7 +517,7 @@ static int phase_stress(hearth_scene *s, double dt, step_report *rep) {
         pt.dt = dt;
         pt.p = p;
         pt.state = c.state ? c.state + (size_t)i * stride : NULL;
-        /* The porosity as MPM gives it, n^p = J^P - 1 + n^p_0 from the plugin's plastic_J at the
+        /* The porosity as MPM gives it, n^p = 1 - (1 - n^p_0) / J^P from the plugin's plastic_J at the
          * start of the step, to a material that needs it (cam_clay_dough's yield surface); NaN to
          * the rest, which do not read it. No water: a material that needs the saturation is
          * refused when added (sph_solver.supplies). None of the core's coupling terms: they are
