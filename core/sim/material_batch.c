@@ -60,6 +60,17 @@ static material_env run_env(const material_run *r, int j, unsigned flags) {
     };
 }
 
+/* out = x s (+ d, when d is not NULL), entry by entry: the thermal split's products on a column
+ * (material_thermal_split's x * s, then + d). restrict: the block's scratch columns never overlap the
+ * run's, and without it GCC checks the overlap at run time before each column's vector loop. */
+static inline void scale_column(double *restrict out, const double *restrict x, const double *restrict s,
+                                const double *restrict d, int n) {
+    if (d)
+        for (int j = 0; j < n; j++) out[j] = x[j] * s[j] + d[j];
+    else
+        for (int j = 0; j < n; j++) out[j] = x[j] * s[j];
+}
+
 /* The particles' thermal strain column when eq. 10 is a strain for this run
  * (material.h, material_thermal_split), else NULL: the pressure is added. */
 static double *thermal_column(const material_slot *ms, const particles *ps, const material_run *r, unsigned flags) {
@@ -359,15 +370,9 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
             }
         }
     if (th) {
-        for (int c = 0; c < 9; c++)
-            for (int j = 0; j < n; j++) Fm[c][j] = r->F[c][j] * sF[j];
-        if (r->dt > 0)
-            for (int c = 0; c < 9; c++) {
-                if (c % 4 == 0) /* the diagonal: L c * exp(r), then + expm1(r) / dt (-std=c17: never contracted to an fma) */
-                    for (int j = 0; j < n; j++) Lm[c][j] = r->grad_v[c][j] * sL[j] + dL[j];
-                else
-                    for (int j = 0; j < n; j++) Lm[c][j] = r->grad_v[c][j] * sL[j];
-            }
+        for (int c = 0; c < 9; c++) scale_column(Fm[c], r->F[c], sF, NULL, n);
+        if (r->dt > 0) /* the diagonal: L c * exp(r), then + expm1(r) / dt (-std=c17: never contracted to an fma) */
+            for (int c = 0; c < 9; c++) scale_column(Lm[c], r->grad_v[c], sL, c % 4 == 0 ? dL : NULL, n);
         else
             for (int c = 0; c < 9; c++) memcpy(Lm[c], r->grad_v[c], sizeof(double) * (size_t)n);
     }
@@ -391,12 +396,16 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     plugin_call_enter(m, "stress_block");
     m->stress_block(&b, tau, code);
 
-    /* non-finite entries: x - x is 0 for a finite x and NaN otherwise (material_finite9's test), summed
-     * column by column (a loop the compiler vectorises): a sum of zeros is 0, and any NaN makes it NaN */
+    /* non-finite entries: x - x is 0 for a finite x and NaN otherwise (material_finite9's test), over
+     * the nine columns at once (a loop the compiler vectorises): a sum of zeros is 0, and a NaN makes it NaN */
     double z[HEARTH_BLOCK_MAX];
-    for (int j = 0; j < n; j++) z[j] = tau[0][j] - tau[0][j];
-    for (int c = 1; c < 9; c++)
-        for (int j = 0; j < n; j++) z[j] += tau[c][j] - tau[c][j];
+    {
+        const double *t0 = tau[0], *t1 = tau[1], *t2 = tau[2], *t3 = tau[3], *t4 = tau[4], *t5 = tau[5], *t6 = tau[6],
+                     *t7 = tau[7], *t8 = tau[8];
+        for (int j = 0; j < n; j++)
+            z[j] = (t0[j] - t0[j]) + (t1[j] - t1[j]) + (t2[j] - t2[j]) + (t3[j] - t3[j]) + (t4[j] - t4[j]) +
+                   (t5[j] - t5[j]) + (t6[j] - t6[j]) + (t7[j] - t7[j]) + (t8[j] - t8[j]);
+    }
     for (int j = 0; j < n; j++) {
         if (__builtin_expect(!code[j] && !(z[j] == 0), 0)) code[j] = MATERIAL_NONFINITE;
         if (__builtin_expect(code[j] != 0, 0) && (flags & MATERIAL_ZERO_FAILED))
