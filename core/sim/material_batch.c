@@ -162,22 +162,36 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
         curve_eval_column(c, x, n, vcol[col_of[c->param]]);
     }
     if (nt == nc) return;
-    /* each point's factors into columns, then each parameter's column times its factors: one moisture
-     * curve a parameter (material_curve_check), so one product an entry, in any order; nc - nt <= nv */
+    /* each point's factors, then each parameter's column times them: one moisture curve a parameter
+     * (material_curve_check), so one product an entry, in any order; nc - nt <= nv. Where the factors
+     * stand over the block (no water field: every ratio is 1), the column times one number. */
     double fcol[RUN_MAX_VARYING][HEARTH_BLOCK_MAX];
+    int varies = 0; /* the factors changed after the block's first point: fcol holds them (else rp->f does) */
     for (int j = 0; j < n; j++) {
         const int i = i0 + j;
         double r;
         const double rd = moisture_ratios(rp, ms, ps, i, &r);
-        if (!(r == rp->r && rd == rp->rd))
+        if (!(r == rp->r && rd == rp->rd)) {
+            if (j > 0 && !varies) { /* the points before this one had the factors rp->f still holds */
+                varies = 1;
+                for (int k = nt; k < nc; k++)
+                    for (int jj = 0; jj < j; jj++) fcol[k - nt][jj] = rp->f[k - nt];
+            }
             for (int k = nt; k < nc; k++) rp->f[k - nt] = curve_eval(&ms->curves[k], ms->curves[k].irreversible ? rd : r);
+        }
         rp->r = r, rp->rd = rd;
-        for (int k = nt; k < nc; k++) fcol[k - nt][j] = rp->f[k - nt];
+        if (varies)
+            for (int k = nt; k < nc; k++) fcol[k - nt][j] = rp->f[k - nt];
     }
     for (int k = nt; k < nc; k++) {
         double *col = vcol[col_of[ms->curves[k].param]];
-        const double *f = fcol[k - nt];
-        for (int j = 0; j < n; j++) col[j] *= f[j];
+        if (varies) {
+            const double *f = fcol[k - nt];
+            for (int j = 0; j < n; j++) col[j] *= f[j];
+        } else {
+            const double f = rp->f[k - nt];
+            for (int j = 0; j < n; j++) col[j] *= f;
+        }
     }
 }
 
@@ -350,6 +364,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     unsigned char split[HEARTH_BLOCK_MAX];
     double sF[HEARTH_BLOCK_MAX], sL[HEARTH_BLOCK_MAX], dL[HEARTH_BLOCK_MAX];
     const int porous_J = porous && m->plastic_J;
+    int finite = 1; /* every point's F and L scales finite */
     if (porous && !m->plastic_J)
         for (int j = 0; j < n; j++) P[j] = gas_porosity(1.0, ms->core[CP_POROSITY0]);
     /* per point, one pass with its parameters patched once: J^P at the start of the step (as
@@ -367,14 +382,21 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
                 plugin_call_enter(m, "bulk_modulus");
                 split[j] = (unsigned char)material_thermal_scales(m, ms->core, pj, st, r->temperature[j], th + i0 + j, r->dt, s3);
                 sF[j] = s3[0], sL[j] = s3[1], dL[j] = s3[2];
+                finite &= (s3[0] <= DBL_MAX) & (s3[1] <= DBL_MAX); /* exp's: >= +0, or inf, or NaN */
             }
         }
+    /* the block's F and L: the run's own columns, or the split's products */
+    const double *Fb[9], *Lb[9];
+    for (int c = 0; c < 9; c++) Fb[c] = r->F[c], Lb[c] = r->grad_v[c]; /* dt = 0: L as it is */
     if (th) {
-        for (int c = 0; c < 9; c++) scale_column(Fm[c], r->F[c], sF, NULL, n);
+        /* a plane strain embedding's zeros: +0.0 times a finite scale >= +0 is +0.0, the entry itself */
+        const int skip = r->plane && finite;
+        for (int c = 0; c < 9; c++)
+            if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7))) scale_column(Fm[c], r->F[c], sF, NULL, n), Fb[c] = Fm[c];
         if (r->dt > 0) /* the diagonal: L c * exp(r), then + expm1(r) / dt (-std=c17: never contracted to an fma) */
-            for (int c = 0; c < 9; c++) scale_column(Lm[c], r->grad_v[c], sL, c % 4 == 0 ? dL : NULL, n);
-        else
-            for (int c = 0; c < 9; c++) memcpy(Lm[c], r->grad_v[c], sizeof(double) * (size_t)n);
+            for (int c = 0; c < 9; c++)
+                if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7)))
+                    scale_column(Lm[c], r->grad_v[c], sL, c % 4 == 0 ? dL : NULL, n), Lb[c] = Lm[c];
     }
     hearth_block b = {
         .n = n,
@@ -389,8 +411,8 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         .state_stride = stride,
     };
     for (int c = 0; c < 9; c++) {
-        b.grad_v[c] = th ? Lm[c] : r->grad_v[c];
-        b.F[c] = th ? Fm[c] : r->F[c];
+        b.grad_v[c] = Lb[c];
+        b.F[c] = Fb[c];
         memset(tau[c], 0, sizeof(double) * (size_t)n); /* as P2G's tau = {0}: an unwritten entry reads the same both ways */
     }
     plugin_call_enter(m, "stress_block");
