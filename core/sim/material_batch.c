@@ -152,10 +152,12 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
                                int nv, const int *vk, double (*vcol)[HEARTH_BLOCK_MAX]) {
     const int nt = rp->nt, nc = ms->ncurves;
     int col_of[MATERIAL_MAX_PARAMS];
-    for (int v = 0; v < nv; v++) {
-        col_of[vk[v]] = v;
-        for (int j = 0; j < n; j++) vcol[v][j] = ms->params[vk[v]]; /* rewritten below where a temperature curve is */
-    }
+    unsigned char by_T[RUN_MAX_VARYING] = {0}; /* column v is a temperature curve's (written whole below) */
+    for (int v = 0; v < nv; v++) col_of[vk[v]] = v;
+    for (int t = 0; t < nt; t++) by_T[col_of[ms->curves[t].param]] = 1;
+    for (int v = 0; v < nv; v++)
+        if (!by_T[v])
+            for (int j = 0; j < n; j++) vcol[v][j] = ms->params[vk[v]];
     for (int t = 0; t < nt; t++) {
         const curve *c = &ms->curves[t];
         const double *x = (c->irreversible ? rp->Tmax : rp->T) + i0;
