@@ -164,6 +164,25 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
         curve_eval_column(c, x, n, vcol[col_of[c->param]]);
     }
     if (nt == nc) return;
+    /* without a water field every ratio is 1 (material_moisture_ratio), and a point that never dried
+     * (dried <= 0: 1 - dried >= 1) reads 1 for its irreversible curves too (moisture_ratios): a block of
+     * such points has one set of factors, the ones at 1, without the per-point ratios below */
+    if (!(ps->enabled & (1u << PC_WATER))) {
+        int undried = 1;
+        if (rp->dried)
+            for (int j = 0; j < n; j++) undried &= 1.0 - rp->dried[i0 + j] >= 1.0;
+        if (undried) {
+            if (!(rp->r == 1.0 && rp->rd == 1.0))
+                for (int k = nt; k < nc; k++) rp->f[k - nt] = curve_eval(&ms->curves[k], 1.0);
+            rp->r = rp->rd = 1.0;
+            for (int k = nt; k < nc; k++) {
+                double *col = vcol[col_of[ms->curves[k].param]];
+                const double f = rp->f[k - nt];
+                for (int j = 0; j < n; j++) col[j] *= f;
+            }
+            return;
+        }
+    }
     /* each point's factors, then each parameter's column times them: one moisture curve a parameter
      * (material_curve_check), so one product an entry, in any order; nc - nt <= nv. Where the factors
      * stand over the block (no water field: every ratio is 1), the column times one number. */
