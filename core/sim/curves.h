@@ -46,4 +46,36 @@ static inline double curve_eval(const curve *c, double T) {
     const double a = (T - c->T[lo]) / (c->T[hi] - c->T[lo]);
     return c->v[lo] + a * (c->v[hi] - c->v[lo]);
 }
+
+/// curve_eval at x[0], ..., x[n - 1] into out: the same values, each point's
+/// segment tried first where the last point's was (the particles of a block
+/// lie close together, and so do their temperatures). The curve's abscissae
+/// strictly increase (material.c checks), so T[lo] <= T < T[lo + 1] holds for
+/// one segment only: the one curve_eval's scan finds.
+static inline void curve_eval_column(const curve *c, const double *x, int n, double *out) {
+    if (c->n > 16) {
+        for (int j = 0; j < n; j++) out[j] = curve_eval(c, x[j]);
+        return;
+    }
+    const double *Tc = c->T, *v = c->v, first = Tc[0], last = Tc[c->n - 1];
+    int lo = 0;
+    for (int j = 0; j < n; j++) {
+        const double T = x[j];
+        if (!(T > first)) {
+            out[j] = v[0];
+            continue;
+        }
+        if (T >= last) {
+            out[j] = v[c->n - 1];
+            continue;
+        }
+        if (!(Tc[lo] <= T && T < Tc[lo + 1])) {
+            int hi = 1;
+            while (Tc[hi] <= T) hi++;
+            lo = hi - 1;
+        }
+        const double a = (T - Tc[lo]) / (Tc[lo + 1] - Tc[lo]);
+        out[j] = v[lo] + a * (v[lo + 1] - v[lo]);
+    }
+}
 #endif

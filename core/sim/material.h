@@ -426,6 +426,9 @@ typedef struct material_run {
      * holds them: entry c (row-major) of point j is F[c][j]. The solver's scratch (P2G writes them as it
      * advances F; a 2D store of 2x2 tensors writes plane-strain 3x3s, <hearth/material.h> rule 8). */
     const double *F[9], *grad_v[9];
+    /* 1: the plane strain embedding of a 2D store (tensor2.h, t2_embed): entries 2, 5, 6 and 7 of F and
+     * grad_v, and 8 of grad_v, are +0.0 at every point (the door then passes them through unscaled) */
+    int plane;
     const double *J;             /* det F of each point (n) */
     const double *temperature;   /* each point's (n), or NULL: NaN */
     const double *saturation;    /* each point's (n), or NULL: NaN */

@@ -60,6 +60,17 @@ static material_env run_env(const material_run *r, int j, unsigned flags) {
     };
 }
 
+/* out = x s (+ d, when d is not NULL), entry by entry: the thermal split's products on a column
+ * (material_thermal_split's x * s, then + d). restrict: the block's scratch columns never overlap the
+ * run's, and without it GCC checks the overlap at run time before each column's vector loop. */
+static inline void scale_column(double *restrict out, const double *restrict x, const double *restrict s,
+                                const double *restrict d, int n) {
+    if (d)
+        for (int j = 0; j < n; j++) out[j] = x[j] * s[j] + d[j];
+    else
+        for (int j = 0; j < n; j++) out[j] = x[j] * s[j];
+}
+
 /* The particles' thermal strain column when eq. 10 is a strain for this run
  * (material.h, material_thermal_split), else NULL: the pressure is added. */
 static double *thermal_column(const material_slot *ms, const particles *ps, const material_run *r, unsigned flags) {
@@ -141,25 +152,67 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
                                int nv, const int *vk, double (*vcol)[HEARTH_BLOCK_MAX]) {
     const int nt = rp->nt, nc = ms->ncurves;
     int col_of[MATERIAL_MAX_PARAMS];
-    for (int v = 0; v < nv; v++) {
-        col_of[vk[v]] = v;
-        for (int j = 0; j < n; j++) vcol[v][j] = ms->params[vk[v]]; /* rewritten below where a temperature curve is */
-    }
+    unsigned char by_T[RUN_MAX_VARYING] = {0}; /* column v is a temperature curve's (written whole below) */
+    for (int v = 0; v < nv; v++) col_of[vk[v]] = v;
+    for (int t = 0; t < nt; t++) by_T[col_of[ms->curves[t].param]] = 1;
+    for (int v = 0; v < nv; v++)
+        if (!by_T[v])
+            for (int j = 0; j < n; j++) vcol[v][j] = ms->params[vk[v]];
     for (int t = 0; t < nt; t++) {
         const curve *c = &ms->curves[t];
         const double *x = (c->irreversible ? rp->Tmax : rp->T) + i0;
-        double *col = vcol[col_of[c->param]];
-        for (int j = 0; j < n; j++) col[j] = curve_eval(c, x[j]);
+        curve_eval_column(c, x, n, vcol[col_of[c->param]]);
     }
     if (nt == nc) return;
+    /* without a water field every ratio is 1 (material_moisture_ratio), and a point that never dried
+     * (dried <= 0: 1 - dried >= 1) reads 1 for its irreversible curves too (moisture_ratios): a block of
+     * such points has one set of factors, the ones at 1, without the per-point ratios below */
+    if (!(ps->enabled & (1u << PC_WATER))) {
+        int undried = 1;
+        if (rp->dried)
+            for (int j = 0; j < n; j++) undried &= 1.0 - rp->dried[i0 + j] >= 1.0;
+        if (undried) {
+            if (!(rp->r == 1.0 && rp->rd == 1.0))
+                for (int k = nt; k < nc; k++) rp->f[k - nt] = curve_eval(&ms->curves[k], 1.0);
+            rp->r = rp->rd = 1.0;
+            for (int k = nt; k < nc; k++) {
+                double *col = vcol[col_of[ms->curves[k].param]];
+                const double f = rp->f[k - nt];
+                for (int j = 0; j < n; j++) col[j] *= f;
+            }
+            return;
+        }
+    }
+    /* each point's factors, then each parameter's column times them: one moisture curve a parameter
+     * (material_curve_check), so one product an entry, in any order; nc - nt <= nv. Where the factors
+     * stand over the block (no water field: every ratio is 1), the column times one number. */
+    double fcol[RUN_MAX_VARYING][HEARTH_BLOCK_MAX];
+    int varies = 0; /* the factors changed after the block's first point: fcol holds them (else rp->f does) */
     for (int j = 0; j < n; j++) {
         const int i = i0 + j;
         double r;
         const double rd = moisture_ratios(rp, ms, ps, i, &r);
-        if (!(r == rp->r && rd == rp->rd))
+        if (!(r == rp->r && rd == rp->rd)) {
+            if (j > 0 && !varies) { /* the points before this one had the factors rp->f still holds */
+                varies = 1;
+                for (int k = nt; k < nc; k++)
+                    for (int jj = 0; jj < j; jj++) fcol[k - nt][jj] = rp->f[k - nt];
+            }
             for (int k = nt; k < nc; k++) rp->f[k - nt] = curve_eval(&ms->curves[k], ms->curves[k].irreversible ? rd : r);
+        }
         rp->r = r, rp->rd = rd;
-        for (int k = nt; k < nc; k++) vcol[col_of[ms->curves[k].param]][j] *= rp->f[k - nt];
+        if (varies)
+            for (int k = nt; k < nc; k++) fcol[k - nt][j] = rp->f[k - nt];
+    }
+    for (int k = nt; k < nc; k++) {
+        double *col = vcol[col_of[ms->curves[k].param]];
+        if (varies) {
+            const double *f = fcol[k - nt];
+            for (int j = 0; j < n; j++) col[j] *= f[j];
+        } else {
+            const double f = rp->f[k - nt];
+            for (int j = 0; j < n; j++) col[j] *= f;
+        }
     }
 }
 
@@ -196,6 +249,95 @@ static double run_points(const material_table *t, const particles *ps, const mat
     return numax;
 }
 
+/* run_after for a block, on its columns: per point the plugin's calls (wave_speed,
+ * viscosity, damage, the gas term's plastic_J: the order run_after makes them,
+ * each with the point's parameters q patched from vcol), then the core's terms
+ * (material_point_couple_terms) column by column: the water pressure, the gas
+ * pressure and the thermal pressure added to tau's diagonal in that order, each
+ * entry the same operations on the same values as the point's own tj, so the
+ * same bits. A cracked point (damage >= 1) gets the tension cut-off instead, as
+ * material_point_couple gives it. P: the porosity at the start of the step
+ * (NULL: NaN); split: the points whose thermal strain was taken out of F and L
+ * (NULL: none), which get no thermal pressure. q holds ms->params when nv > 0
+ * (the door copied them). Per point this was 120-odd instructions of copies
+ * and branches (pt, env, tj) around the calls. */
+static double run_after_block(const material_slot *ms, const material_run *r, unsigned flags, double *q, int nv,
+                              const int *vk, double (*vcol)[HEARTH_BLOCK_MAX], double *state, int stride,
+                              const double *P, const unsigned char *split, double *const tau[9], double *wave) {
+    const hearth_material *m = ms->m;
+    const double *core = ms->core;
+    const int n = r->n;
+    const double *gas = r->gas, *s0 = r->saturation0;
+    const int damage = (flags & MATERIAL_DAMAGE) && m->damage;
+    const int terms = gas || s0 || (flags & MATERIAL_EXPANSION);
+    const int gas_JP = m->plastic_J && gas;
+    double numax = 0, JP1[HEARTH_BLOCK_MAX];
+    unsigned char cracked[HEARTH_BLOCK_MAX];
+    int ncracked = 0;
+    const double *p = nv ? q : ms->params;
+    for (int j = 0; j < n; j++) {
+        for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j];
+        const double *st = state ? state + (size_t)j * stride : NULL;
+        double c = ms->wave_speed;
+        if (ms->wave_per_point) {
+            plugin_call_enter(m, "wave_speed");
+            c = m->wave_speed(p, st);
+        }
+        wave[j] = c;
+        if (m->viscosity) {
+            plugin_call_enter(m, "viscosity");
+            const double nu = m->viscosity(p, m->state_size > 0 ? st : NULL) / p[ms->density_index];
+            if (nu > numax) numax = nu;
+        }
+        cracked[j] = 0;
+        if (damage) {
+            plugin_call_enter(m, "damage");
+            cracked[j] = m->damage(p, st) >= 1;
+            ncracked += cracked[j];
+        }
+        if (terms && gas_JP && !cracked[j]) {
+            plugin_call_enter(m, "plastic_J");
+            JP1[j] = m->plastic_J(p, st);
+        }
+    }
+    if (ncracked)
+        for (int j = 0; j < n; j++)
+            if (cracked[j]) {
+                double tj[9];
+                for (int c = 0; c < 9; c++) tj[c] = tau[c][j];
+                material_tension_cutoff(tj);
+                for (int c = 0; c < 9; c++) tau[c][j] = tj[c];
+            }
+    if (!terms) return numax;
+    double *t0 = tau[0], *t4 = tau[4], *t8 = tau[8];
+    const double *T = r->temperature;
+    if (s0 && core[CP_WATER_STIFFNESS] > 0) { /* water pressure (eq. 14) */
+        const double cw = core[CP_WATER_STIFFNESS], *s0j = s0 + r->i0;
+        for (int j = 0; j < n; j++) {
+            if (cracked[j]) continue;
+            const double tw = -r->J[j] * cw * ((r->saturation ? r->saturation[j] : NAN) - s0j[j]);
+            t0[j] += tw, t4[j] += tw, t8[j] += tw;
+        }
+    }
+    if (gas) { /* gas pressure (eq. 13), with the porosity after this step's plastic flow */
+        const double *gj = gas + r->i0, n0 = core[CP_POROSITY0];
+        for (int j = 0; j < n; j++) {
+            if (cracked[j]) continue;
+            const double np = m->plastic_J ? gas_porosity(JP1[j], n0) : P ? P[j] : NAN;
+            const double tg = gas_tau(gj[j], T ? T[j] : NAN, np);
+            t0[j] += tg, t4[j] += tg, t8[j] += tg;
+        }
+    }
+    const double cl = core[CP_EXPANSION];
+    if ((flags & MATERIAL_EXPANSION) && cl > 0) /* the thermal pressure, where the strain was not taken out */
+        for (int j = 0; j < n; j++) {
+            if (cracked[j] || (split && split[j])) continue;
+            const double th = cl * ((T ? T[j] : NAN) - core[CP_REFERENCE_T]);
+            t0[j] -= th, t4[j] -= th, t8[j] -= th;
+        }
+    return numax;
+}
+
 double material_run_eval(const material_table *t, const particles *ps, const material_run *r, double *const tau[9],
                          int *code, double *wave) {
     const material_slot *ms = &t->slot[r->mat];
@@ -227,24 +369,13 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     const double *pcolumn[MATERIAL_MAX_PARAMS];
     for (int k = 0; k < np; k++) pcolumn[k] = NULL;
     for (int v = 0; v < nv; v++) pcolumn[vk[v]] = vcol[v];
-    if (nv || porous) {
+    if (nv) {
         memcpy(q, ms->params, sizeof(double) * (size_t)np);
         material_run_params rp; /* the curves once per run, as run_points resolves them, curve by curve */
-        if (nv) {
-            material_run_params_init(&rp, ms, ps);
-            run_params_columns(&rp, ms, ps, i0, n, nv, vk, vcol);
-        }
-        if (porous)
-            for (int j = 0; j < n; j++) { /* as material_point_stress: J^P at the start of the step */
-                double JP = 1.0;
-                if (m->plastic_J) {
-                    for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j];
-                    plugin_call_enter(m, "plastic_J");
-                    JP = m->plastic_J(q, state ? state + (size_t)j * stride : NULL);
-                }
-                P[j] = gas_porosity(JP, ms->core[CP_POROSITY0]);
-            }
+        material_run_params_init(&rp, ms, ps);
+        run_params_columns(&rp, ms, ps, i0, n, nv, vk, vcol);
     }
+    const double *pj = nv ? q : ms->params; /* no curve: the slot's own parameters, uncopied */
     /* eq. 10 as a strain: the block gets F_M and L_M, as run_points hands each point. Each point's scalars
      * first (its own bulk_modulus: K may read the state, <hearth/material.h>), then material_thermal_split's
      * products column by column, straight from the run's columns into the block's: the same operations on
@@ -252,28 +383,41 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
      * alone gets 1, 1 and -0.0 (material_thermal_scales): its F and L come through bit for bit. */
     double *th = thermal_column(ms, ps, r, flags), Fm[9][HEARTH_BLOCK_MAX], Lm[9][HEARTH_BLOCK_MAX];
     unsigned char split[HEARTH_BLOCK_MAX];
-    if (th) {
-        double sF[HEARTH_BLOCK_MAX], sL[HEARTH_BLOCK_MAX], dL[HEARTH_BLOCK_MAX], qs[MATERIAL_MAX_PARAMS], s3[3];
-        const double *pj = ms->params; /* no curve: the slot's own parameters, uncopied */
-        if (nv) memcpy(qs, ms->params, sizeof(double) * (size_t)np), pj = qs;
-        plugin_call_enter(m, "bulk_modulus");
+    double sF[HEARTH_BLOCK_MAX], sL[HEARTH_BLOCK_MAX], dL[HEARTH_BLOCK_MAX];
+    const int porous_J = porous && m->plastic_J;
+    int finite = 1; /* every point's F and L scales finite */
+    if (porous && !m->plastic_J)
+        for (int j = 0; j < n; j++) P[j] = gas_porosity(1.0, ms->core[CP_POROSITY0]);
+    /* per point, one pass with its parameters patched once: J^P at the start of the step (as
+     * material_point_stress) and the thermal split's scalars. Both callbacks only read p and the state. */
+    if (porous_J || th)
         for (int j = 0; j < n; j++) {
-            for (int v = 0; v < nv; v++) qs[vk[v]] = vcol[v][j];
-            split[j] = (unsigned char)material_thermal_scales(m, ms->core, pj, state ? state + (size_t)j * stride : NULL,
-                                                              r->temperature[j], th + i0 + j, r->dt, s3);
-            sF[j] = s3[0], sL[j] = s3[1], dL[j] = s3[2];
-        }
-        for (int c = 0; c < 9; c++)
-            for (int j = 0; j < n; j++) Fm[c][j] = r->F[c][j] * sF[j];
-        if (r->dt > 0)
-            for (int c = 0; c < 9; c++) {
-                if (c % 4 == 0) /* the diagonal: L c * exp(r), then + expm1(r) / dt (-std=c17: never contracted to an fma) */
-                    for (int j = 0; j < n; j++) Lm[c][j] = r->grad_v[c][j] * sL[j] + dL[j];
-                else
-                    for (int j = 0; j < n; j++) Lm[c][j] = r->grad_v[c][j] * sL[j];
+            for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j];
+            const double *st = state ? state + (size_t)j * stride : NULL;
+            if (porous_J) {
+                plugin_call_enter(m, "plastic_J");
+                P[j] = gas_porosity(m->plastic_J(pj, st), ms->core[CP_POROSITY0]);
             }
-        else
-            for (int c = 0; c < 9; c++) memcpy(Lm[c], r->grad_v[c], sizeof(double) * (size_t)n);
+            if (th) {
+                double s3[3];
+                plugin_call_enter(m, "bulk_modulus");
+                split[j] = (unsigned char)material_thermal_scales(m, ms->core, pj, st, r->temperature[j], th + i0 + j, r->dt, s3);
+                sF[j] = s3[0], sL[j] = s3[1], dL[j] = s3[2];
+                finite &= (s3[0] <= DBL_MAX) & (s3[1] <= DBL_MAX); /* exp's: >= +0, or inf, or NaN */
+            }
+        }
+    /* the block's F and L: the run's own columns, or the split's products */
+    const double *Fb[9], *Lb[9];
+    for (int c = 0; c < 9; c++) Fb[c] = r->F[c], Lb[c] = r->grad_v[c]; /* dt = 0: L as it is */
+    if (th) {
+        /* a plane strain embedding's zeros: +0.0 times a finite scale >= +0 is +0.0, the entry itself */
+        const int skip = r->plane && finite;
+        for (int c = 0; c < 9; c++)
+            if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7))) scale_column(Fm[c], r->F[c], sF, NULL, n), Fb[c] = Fm[c];
+        if (r->dt > 0) /* the diagonal: L c * exp(r), then + expm1(r) / dt (-std=c17: never contracted to an fma) */
+            for (int c = 0; c < 9; c++)
+                if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7)))
+                    scale_column(Lm[c], r->grad_v[c], sL, c % 4 == 0 ? dL : NULL, n), Lb[c] = Lm[c];
     }
     hearth_block b = {
         .n = n,
@@ -288,18 +432,25 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         .state_stride = stride,
     };
     for (int c = 0; c < 9; c++) {
-        b.grad_v[c] = th ? Lm[c] : r->grad_v[c];
-        b.F[c] = th ? Fm[c] : r->F[c];
+        b.grad_v[c] = Lb[c];
+        b.F[c] = Fb[c];
         memset(tau[c], 0, sizeof(double) * (size_t)n); /* as P2G's tau = {0}: an unwritten entry reads the same both ways */
     }
     plugin_call_enter(m, "stress_block");
     m->stress_block(&b, tau, code);
 
-    /* non-finite entries: x - x is 0 for a finite x and NaN otherwise (material_finite9's test) */
+    /* non-finite entries: x - x is 0 for a finite x and NaN otherwise (material_finite9's test), over
+     * the nine columns at once (a loop the compiler vectorises): a sum of zeros is 0, and a NaN makes it NaN */
+    double z[HEARTH_BLOCK_MAX];
+    {
+        const double *t0 = tau[0], *t1 = tau[1], *t2 = tau[2], *t3 = tau[3], *t4 = tau[4], *t5 = tau[5], *t6 = tau[6],
+                     *t7 = tau[7], *t8 = tau[8];
+        for (int j = 0; j < n; j++)
+            z[j] = (t0[j] - t0[j]) + (t1[j] - t1[j]) + (t2[j] - t2[j]) + (t3[j] - t3[j]) + (t4[j] - t4[j]) +
+                   (t5[j] - t5[j]) + (t6[j] - t6[j]) + (t7[j] - t7[j]) + (t8[j] - t8[j]);
+    }
     for (int j = 0; j < n; j++) {
-        double z = 0;
-        for (int c = 0; c < 9; c++) z += tau[c][j] - tau[c][j];
-        if (__builtin_expect(!code[j] && !(z == 0), 0)) code[j] = MATERIAL_NONFINITE;
+        if (__builtin_expect(!code[j] && !(z[j] == 0), 0)) code[j] = MATERIAL_NONFINITE;
         if (__builtin_expect(code[j] != 0, 0) && (flags & MATERIAL_ZERO_FAILED))
             for (int c = 0; c < 9; c++) tau[c][j] = 0;
     }
@@ -311,31 +462,8 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         plugin_call_leave();
         return 0;
     }
-    double numax = 0;
-    memcpy(q, ms->params, sizeof(double) * (size_t)np);
-    for (int j = 0; j < n; j++) {
-        for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j];
-        hearth_point pt; /* for run_after's callbacks, which read p, state and the fields, never F or grad_v */
-        pt.dt = r->dt;
-        pt.p = q;
-        pt.state = state ? state + (size_t)j * stride : NULL;
-        pt.temperature = r->temperature ? r->temperature[j] : NAN;
-        pt.porosity = porous ? P[j] : NAN;
-        pt.saturation = r->saturation ? r->saturation[j] : NAN;
-        pt.dim = b.dim;
-        const material_env env = run_env(r, j, th && split[j] ? flags & ~(unsigned)MATERIAL_EXPANSION : flags);
-        /* the core's terms are isotropic and touch only the diagonal; a crack's cut-off rewrites all nine */
-        double tj[9];
-        if (flags & MATERIAL_DAMAGE)
-            for (int c = 0; c < 9; c++) tj[c] = tau[c][j];
-        else
-            tj[0] = tau[0][j], tj[4] = tau[4][j], tj[8] = tau[8][j];
-        run_after(ms, &pt, &env, tj, &wave[j], &numax);
-        if (flags & MATERIAL_DAMAGE)
-            for (int c = 0; c < 9; c++) tau[c][j] = tj[c];
-        else
-            tau[0][j] = tj[0], tau[4][j] = tj[4], tau[8][j] = tj[8];
-    }
+    const double numax = run_after_block(ms, r, flags, q, nv, vk, vcol, state, stride, porous ? P : NULL,
+                                         th ? split : NULL, tau, wave);
     plugin_call_leave();
     return numax;
 }

@@ -91,7 +91,7 @@ void mpm_p2g_stress(hearth_scene *s, int D, int i0, int n, double dt, unsigned e
         }
         int e = j + 1;
         while (e < n && kind[e] == P_LIVE && mat[i0 + e] == mat[i0 + j]) e++;
-        material_run run = {.mat = mat[i0 + j], .i0 = i0 + j, .n = e - j, .dim = D, .dt = dt, .flags = env_flags, .J = Js + j,
+        material_run run = {.mat = mat[i0 + j], .i0 = i0 + j, .n = e - j, .dim = D, .plane = D == 2, .dt = dt, .flags = env_flags, .J = Js + j,
                             .temperature = Tcol ? Tcol + i0 + j : NULL, .saturation = Wcol ? sat + j : NULL,
                             .gas = Gcol, .saturation0 = S0col};
         double *tc[9];
