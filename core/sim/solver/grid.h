@@ -53,8 +53,9 @@ typedef struct grid {
 #define GRID_CELLS_MAX (1 << 22)
 #define GRID_BLOCKS_MAX (1L << 28)
 /// Bytes per block of the tables kept for the whole box (slot table, the
-/// sort's counts, the activity marks); the node data is only for active blocks.
-#define GRID_TABLE_BYTES_PER_BLOCK (2 * sizeof(int) + 1)
+/// sort's counts, the activity marks, MPM's particle block of each block);
+/// the node data is only for active blocks.
+#define GRID_TABLE_BYTES_PER_BLOCK (3 * sizeof(int) + 1)
 /// Node and block counts of the grid over lo..hi, checked (every count within
 /// its limit before it becomes an int) without allocating. dim, dx, lo and hi
 /// must be finite with hi > lo (check_def in scene.c).
