@@ -47,6 +47,7 @@
 #include <float.h>
 #include <limits.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "alloc.h"
@@ -105,6 +106,9 @@ static hearth_status mpm_init(hearth_scene *s, hearth_error *err) {
     m->pbof = mem_alloc(sizeof(int) * (size_t)m->nblocks);
     if (!m->counts || !m->mark || !m->pbof) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the grid tables");
     for (int b = 0; b < m->nblocks; b++) m->pbof[b] = -1; /* step_team's gather: no particle block anywhere yet */
+    /* the colour phases at any thread count: for measuring the gather against them on one build (the same bits) */
+    const char *cp = getenv("HEARTH_MPM_COLOUR_PHASES");
+    m->colour_phases = cp && strcmp(cp, "1") == 0;
     return mpm_ranks_init(m, err);
 }
 
@@ -136,8 +140,49 @@ FORCE_INLINE void p2g_add2(double *p, v2d x) {
     memcpy(p, &y, sizeof y);
 }
 
-/* the channels of a stored tile (step_team's gather path, momentum only): 2D writes no z momentum */
+/* step_team's gather path (momentum only) keeps each particle block's tile
+ * until every block has scattered: the part over its own block (GRID_B^dim
+ * nodes) in that block's nodes, which nothing else writes before the gather,
+ * and the halo over its +1 neighbours in the store, as one box for each set
+ * of axes o (bit d: +1 along axis d) of GRID_T - GRID_B nodes along those
+ * axes and GRID_B along the others, in o's order, channel by channel: 20
+ * nodes a block in 2D, 152 in 3D (of 36 and 216). 2D writes no z momentum. */
 #define P2G_STORE_NCH(D) ((D) == 2 ? 3 : GRID_NCH_MOMENTUM)
+#define P2G_HALO(D) ((D) == 2 ? GRID_T * GRID_T - GRID_B * GRID_B : GRID_T * GRID_T * GRID_T - GRID_B * GRID_B * GRID_B)
+/* the nodes of halo box o, and where it starts in a block's store (channel 0) */
+FORCE_INLINE int halo_nodes(const int D, int o) {
+    int n = 1;
+    for (int d = 0; d < D; d++) n *= o >> d & 1 ? GRID_T - GRID_B : GRID_B;
+    return n;
+}
+FORCE_INLINE int halo_start(const int D, int o) {
+    int n = 0;
+    for (int q = 1; q < o; q++) n += halo_nodes(D, q);
+    return P2G_STORE_NCH(D) * n;
+}
+
+/* the tile's part over block bc's own nodes into them, and its halo into the store at halo (p2g_block's STORE) */
+FORCE_INLINE void p2g_keep_tile(const grid *g, const int D, const int bc[3], const double *tile, double *halo) {
+    const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T, NPB = g->nodes_per_block, NCH = P2G_STORE_NCH(D);
+    for (int o = 0; o < (1 << D); o++) {
+        const int o0 = o & 1 ? GRID_B : 0, o1 = o & 2 ? GRID_B : 0, o2 = o & 4 ? GRID_B : 0;
+        const int n0 = o0 ? GRID_T - GRID_B : GRID_B, n1 = o1 ? GRID_T - GRID_B : GRID_B,
+                  n2 = D == 3 ? (o2 ? GRID_T - GRID_B : GRID_B) : 1, nn = n0 * n1 * n2;
+        int l;
+        double *node = o ? NULL : grid_tile_node(g, D, bc, 0, 0, 0, &l);
+        double *box = o ? halo + halo_start(D, o) : NULL;
+        for (int a = 0; a < n0; a++)
+            for (int b = 0; b < n1; b++)
+                for (int e = 0; e < n2; e++) {
+                    const int t = D == 2 ? (a + o0) * GRID_T + b + o1 : ((a + o0) * GRID_T + b + o1) * GRID_T + e + o2;
+                    const int i = (a * n1 + b) * n2 + e; /* o = 0: the node's index in its block */
+                    for (int ch = 0; ch < NCH; ch++) {
+                        if (o) box[ch * nn + i] = tile[ch * TN + t];
+                        else node[ch * NPB + i] = tile[ch * TN + t];
+                    }
+                }
+    }
+}
 
 /* P2G's tile holds only the channels it writes: momentum, then heat, then
  * water, then the volume sum_p w_ip J V_0 (boundary.c's volume fraction; it
@@ -168,11 +213,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     grid_block_coords(g, pb.block, bc);
     const int org[3] = {bc[0] * GRID_B, bc[1] * GRID_B, bc[2] * GRID_B};
     const int near_face = MIRROR ? mpm_block_near_sticky(s, D, org) : 0;
-    if (STORE) { /* the block's own tile in the store, kept for the gather (p2g_gather_block); no flush below */
-        tile = st->tiles + (size_t)k * (size_t)(P2G_STORE_NCH(D) * TN);
-        st->pbof[pb.block] = k;
-    }
-    memset(tile, 0, sizeof(double) * (STORE ? P2G_STORE_NCH(D) : GRID_NCH_MOMENTUM) * (size_t)TN);
+    if (STORE) st->pbof[pb.block] = k; /* for the gather (p2g_gather_block) */
+    memset(tile, 0, sizeof(double) * GRID_NCH_MOMENTUM * (size_t)TN);
     if (HEAT) memset(tile + P2G_HC * TN, 0, sizeof(double) * 2 * (size_t)TN);
     if (WATER) memset(tile + P2G_MW * TN, 0, sizeof(double) * 2 * (size_t)TN);
     if (HEAT || WATER) memset(tile + P2G_V * TN, 0, sizeof(double) * (size_t)TN);
@@ -311,7 +353,10 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
 
     pp->cmax = cmax;
     pp->numax = numax;
-    if (STORE) return;
+    if (STORE) { /* kept for the gather instead of the flush below */
+        p2g_keep_tile(g, D, bc, tile, st->tiles + (size_t)k * (size_t)(P2G_STORE_NCH(D) * P2G_HALO(D)));
+        return;
+    }
 
     /* flush the tile into the block and its +1 neighbours */
     for (int a = 0; a < GRID_T; a++)
@@ -394,20 +439,22 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
     p2g_team(s, fn, dt);
 }
 
-/* step_team's gather: active block k takes the stored tiles (p2g_block's
- * STORE) of the particle blocks that reach it, itself and its -1 neighbours
- * along each axis (a tile covers its block and the +1 neighbours), in the
- * order of their colours, which is the order in which p2g_team's colour
- * phases flush them into its nodes, and with the flush's test (a node the
- * tile's mass missed takes nothing from it): the same sums in the same order
- * on the same zeroed nodes, so the same bits, after one barrier where the
- * colour phases have 2^dim (4 in 2D, 8 in 3D), and the grid update runs on
- * the block right after, while its nodes are in cache. */
+/* step_team's gather: active block k takes the kept tiles (p2g_keep_tile)
+ * of the particle blocks that reach it, itself and its -1 neighbours along
+ * each axis (a tile covers its block and the +1 neighbours), in the order of
+ * their colours, which is the order in which p2g_team's colour phases flush
+ * them into its nodes, and with the flush's test (a node the tile's mass
+ * missed takes nothing from it): the same sums from zero in the same order,
+ * so the same bits, after one barrier where the colour phases have 2^dim (4
+ * in 2D, 8 in 3D); and the grid update runs on the block right after, while
+ * its nodes are in cache. */
 FORCE_INLINE void p2g_gather_block(hearth_scene *s, const int D, int k) {
     const grid *g = &s->g;
     const mpm_state *m = s->mpm;
-    const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T, NPB = g->nodes_per_block, NCH = P2G_STORE_NCH(D);
+    const int NPB = g->nodes_per_block, NCH = P2G_STORE_NCH(D);
     double *node = grid_block(g, k);
+    double acc[P2G_STORE_NCH(3) * GRID_B * GRID_B * GRID_B]; /* the sums, from +0 like the zeroed nodes */
+    for (int i = 0; i < NCH * NPB; i++) acc[i] = 0.0;
     int bc[3];
     grid_block_coords(g, g->active[k], bc);
     const int cb = (bc[0] & 1) | (bc[1] & 1) << 1 | (bc[2] & 1) << 2;
@@ -420,18 +467,21 @@ FORCE_INLINE void p2g_gather_block(hearth_scene *s, const int D, int k) {
         if (!inside) continue;
         const int q = m->pbof[grid_block_id(g, sc[0], sc[1], sc[2])];
         if (q < 0) continue; /* no particles there */
-        const double *tile = m->tiles + (size_t)q * (size_t)(NCH * TN);
-        /* this block's nodes in the source's tile: from GRID_B on along an offset axis (GRID_T - GRID_B of them) */
-        const int o0 = o & 1 ? GRID_B : 0, o1 = o & 2 ? GRID_B : 0, o2 = o & 4 ? GRID_B : 0;
-        for (int a = 0; a < (o0 ? GRID_T - GRID_B : GRID_B); a++)
-            for (int b = 0; b < (o1 ? GRID_T - GRID_B : GRID_B); b++)
-                for (int e = 0; e < (D == 3 ? (o2 ? GRID_T - GRID_B : GRID_B) : 1); e++) {
-                    const int t = D == 2 ? (a + o0) * GRID_T + b + o1 : ((a + o0) * GRID_T + b + o1) * GRID_T + e + o2;
-                    const int l = D == 2 ? a * GRID_B + b : (a * GRID_B + b) * GRID_B + e;
-                    if (tile[t] == 0.0) continue;
-                    for (int ch = 0; ch < NCH; ch++) node[ch * NPB + l] += tile[ch * TN + t];
+        /* o = 0: this block's own part, in its nodes; else halo box o of the source's store, which holds
+         * this block's nodes from GRID_B on along the offset axes */
+        const double *src = o ? m->tiles + (size_t)q * (size_t)(NCH * P2G_HALO(D)) + halo_start(D, o) : node;
+        const int stride = o ? halo_nodes(D, o) : NPB;
+        const int n0 = o & 1 ? GRID_T - GRID_B : GRID_B, n1 = o & 2 ? GRID_T - GRID_B : GRID_B,
+                  n2 = D == 3 ? (o & 4 ? GRID_T - GRID_B : GRID_B) : 1;
+        for (int a = 0; a < n0; a++)
+            for (int b = 0; b < n1; b++)
+                for (int e = 0; e < n2; e++) {
+                    const int i = (a * n1 + b) * n2 + e, l = D == 2 ? a * GRID_B + b : (a * GRID_B + b) * GRID_B + e;
+                    if (src[i] == 0.0) continue;
+                    for (int ch = 0; ch < NCH; ch++) acc[ch * NPB + l] += src[ch * stride + i];
                 }
     }
+    for (int i = 0; i < NCH * NPB; i++) node[i] = acc[i];
 }
 
 static void p2g_gather(hearth_scene *s, int k) {
@@ -871,10 +921,10 @@ static hearth_status p2g_store_reserve(hearth_scene *s, int *gather, hearth_erro
     mpm_state *m = s->mpm;
     *gather = 0;
 #ifdef _OPENMP
-    *gather = s->ps.n >= SCENE_PARALLEL_MIN && omp_get_max_threads() > 1;
+    *gather = s->ps.n >= SCENE_PARALLEL_MIN && omp_get_max_threads() > 1 && !m->colour_phases;
 #endif
     if (!*gather) return HEARTH_OK;
-    const size_t per = (size_t)P2G_STORE_NCH(s->g.dim) * (size_t)grid_tile_count(&s->g), need = per * (size_t)m->npb;
+    const size_t per = s->g.dim == 2 ? P2G_STORE_NCH(2) * P2G_HALO(2) : P2G_STORE_NCH(3) * P2G_HALO(3), need = per * (size_t)m->npb;
     if (need > m->tiles_cap) {
         const size_t cap = m->tiles_cap + m->tiles_cap / 2 > need ? m->tiles_cap + m->tiles_cap / 2 : need;
         mem_free(m->tiles, sizeof(double) * m->tiles_cap);
@@ -907,9 +957,10 @@ static double step_team(hearth_scene *s, double dt, step_report *rep, const int 
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
         if (gather) {
-            /* every block's tile, in any order: no two share one; the loop's barrier before the gather */
+            /* every block's tile, in any order: each keeps its own; the loop's barrier before the gather */
+            double tile[GRID_NCH_MOMENTUM * GRID_T * GRID_T * GRID_T];
 #pragma omp for schedule(dynamic, 1)
-            for (int k = m->k_lo; k < m->k_hi; k++) store(s, k, dt, NULL);
+            for (int k = m->k_lo; k < m->k_hi; k++) store(s, k, dt, tile);
         } else {
             p2g_team(s, p2g, dt);
         }

@@ -58,6 +58,7 @@ typedef struct mpm_state {
     double *tiles;
     size_t tiles_cap;
     int *pbof;
+    int colour_phases;      /* HEARTH_MPM_COLOUR_PHASES=1 at init: step_team keeps the colour phases at any thread count */
     int colour_start[9];
     pb_partial *partial;
     int sticky_faces;       /* this step's scene has a sticky collider: P2G adds its faces' reaction (p2g_mirror) */
