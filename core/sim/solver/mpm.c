@@ -16,7 +16,10 @@
  * colour are two blocks apart, and a block's particles touch only itself and
  * the next block on each axis, so no two threads ever write the same node and
  * every node sums its contributions in the same order whatever the thread
- * count. No atomics.
+ * count. No atomics. With more than one thread, the usual step (step_team)
+ * keeps every block's tile instead and the grid update gathers each node's
+ * sum from the tiles in the same colour order (p2g_gather_block): the same
+ * bits, with one barrier where the colour phases take 2^dim.
  *
  * P2G scatters each particle into a dense 6^dim tile, then adds the tile into
  * its block and the block's +1 neighbours. The fields ride these passes when
@@ -584,13 +587,13 @@ static void grid_update_team(hearth_scene *s, double dt, double *vcol2, const in
          * gravity and before walls and colliders: damping the momentum before gravity instead would
          * leave a body in equilibrium a residual velocity dt g c dt / (1 + c dt), and it would sink. */
         const double damp = 1.0 / (1.0 + s->def.damping * dt);
-#pragma omp for schedule(dynamic, 4) nowait
+#pragma omp for schedule(guided, 4) nowait
         for (int k = 0; k < g->nactive; k++) {
             if (gather) p2g_gather(s, k);
             v2 = fmax(v2, grid_update_block(s, k, dt, damp, 1, CH_M));
         }
     } else {
-#pragma omp for schedule(dynamic, 4) nowait
+#pragma omp for schedule(guided, 4) nowait
         for (int k = 0; k < g->nactive; k++) {
             if (gather) p2g_gather(s, k); /* step_team's stored tiles into this block's nodes first */
             v2 = fmax(v2, grid_update_block(s, k, dt, 1.0, 0, CH_M));
@@ -862,11 +865,21 @@ static block_fn g2p_fn(const hearth_scene *s) {
     return g2p_fns[s->g.dim == 3][thermal_active(s)][water_active(s)];
 }
 
-/* G2P's blocks for the team of the enclosing region (one thread outside one); no barrier at the end. */
+/* G2P's blocks for the team of the enclosing region (one thread outside one);
+ * no barrier at the end. Guided, not dynamic chunks of 2: neighbouring
+ * particle blocks share a cache line of each column they write at their
+ * border (x, v, C, the keys, F in P2G) and their partials' lines, so blocks
+ * handed out two at a time to alternating threads had both cores write the
+ * same lines at about every other border in every pass, a cost that grows
+ * with the number of blocks (2D's blocks hold 64 particles where 3D's hold
+ * 512: 8 times the borders a particle). Guided hands each thread long runs
+ * of neighbouring blocks (half of what is left, then less), so a pass has
+ * about 2 log2(blocks) borders between threads instead of blocks / 2, and it
+ * still ends in single blocks where a late thread catches up. */
 static void g2p_team(hearth_scene *s, block_fn fn, double dt) {
     const mpm_state *m = s->mpm;
     double tile[6 * GRID_T * GRID_T * GRID_T];
-#pragma omp for schedule(dynamic, 2) nowait
+#pragma omp for schedule(guided) nowait
     for (int k = m->k_lo; k < m->k_hi; k++) fn(s, k, dt, tile); /* this rank's blocks (all on one rank) */
 }
 
@@ -957,9 +970,10 @@ static double step_team(hearth_scene *s, double dt, step_report *rep, const int 
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
         if (gather) {
-            /* every block's tile, in any order: each keeps its own; the loop's barrier before the gather */
+            /* every block's tile, in any order: each keeps its own; the loop's barrier before the gather.
+             * Guided: long runs of neighbouring blocks per thread (g2p_team says why) */
             double tile[GRID_NCH_MOMENTUM * GRID_T * GRID_T * GRID_T];
-#pragma omp for schedule(dynamic, 1)
+#pragma omp for schedule(guided)
             for (int k = m->k_lo; k < m->k_hi; k++) store(s, k, dt, tile);
         } else {
             p2g_team(s, p2g, dt);
