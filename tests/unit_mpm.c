@@ -829,6 +829,42 @@ TEST(determinism_threads_sticky_damped) {
     CHECK(h[0] == h[1]);
 }
 
+/* At more than one thread, step_team's P2G keeps each particle block's tile
+ * and the grid update gathers the nodes' sums from them in colour order (one
+ * barrier where the colour phases took 2^dim); HEARTH_MPM_COLOUR_PHASES=1
+ * (colour_phases) keeps the colour phases. Both at two threads, in 2D and 3D,
+ * with a sticky face (its mirror terms go into the tile's halo too) and
+ * damping: the same bits, and the gather path really taken. */
+TEST(p2g_gather_matches_colour_phases) {
+    hearth_set_threads(2);
+    for (int dim = 2; dim <= 3; dim++) {
+        uint64_t h[2];
+        for (int phases = 0; phases < 2; phases++) {
+            hearth_scene_def d = hearth_default_scene_def();
+            d.dim = dim;
+            d.dx = dim == 2 ? 1.0 / 128 : 1.0 / 40;
+            d.damping = 3.0;
+            hearth_scene *s = fx_scene_def(&d);
+            s->mpm->colour_phases = phases;
+            const int m = fx_elastic(s, 5e4, 0.3, 1000);
+            const double z = dim == 3, c[3] = {0.5, 0.45, 0.5 * z}, hh[3] = {0.15, 0.1, 0.1 * z}, v[3] = {0.3, -1.5, 0.2 * z};
+            CHECK(fx_box(s, m, c, hh, 4, v) >= SCENE_PARALLEL_MIN); /* so the step really runs on two threads */
+            const double fc[3] = {0.5, 0.25, 0.5 * z}, fh[3] = {0.4, 0.1, 0.4 * z}; /* its top touches the block from the start */
+            CHECK(fx_box_collider(s, fc, fh, HEARTH_STICKY, 0.2) == 0);
+            hearth_error err;
+            CHECK(hearth_scene_step(s, dim == 2 ? 60 : 20, &err) == HEARTH_OK);
+            CHECK(s->mpm->sticky_faces == 1);
+            CHECK((s->mpm->tiles_cap > 0) == !phases); /* the gather ran (its store exists) only without the switch */
+            h[phases] = hearth_scene_hash(s);
+            printf("  %dD, %s: %d particles, %d particle blocks, store %zu doubles, hash %016llx\n", dim,
+                   phases ? "colour phases" : "gather", s->ps.n, s->mpm->npb, s->mpm->tiles_cap, (unsigned long long)h[phases]);
+            hearth_scene_destroy(s);
+        }
+        CHECK(h[0] == h[1]);
+    }
+    hearth_set_threads(0);
+}
+
 /* A body force field adds to gravity: one that cancels it leaves a block at rest. */
 TEST(body_force) {
     hearth_scene *s = fx_scene(2, 1.0 / 32, 0, 1);
@@ -1337,6 +1373,6 @@ TEST(mpm_periodic_refusals) {
 TEST_MAIN(T(bspline_weights), T(transfer_conservation_2d), T(transfer_conservation_3d), T(transfer_pic_dissipates), T(rotating_disc), T(free_fall),
           T(vibrating_bar), T(determinism_threads), T(checkpoint_restore), T(guard_nan_plugin), T(guard_plugin_error),
           T(guard_cfl_and_rollback), T(colliders_contact), T(probe_fields), T(stress_tensor_components), T(scene_bad_input), T(alloc_failure_paths),
-          T(particles_optional_columns), T(body_force), T(determinism_threads_sticky_damped), T(guard_collider_drive), T(grip_holds_pulled_strip),
+          T(particles_optional_columns), T(body_force), T(determinism_threads_sticky_damped), T(p2g_gather_matches_colour_phases), T(guard_collider_drive), T(grip_holds_pulled_strip),
           T(mpm_state_owned_by_solver), T(couette_lid_on_node_row), T(grip_cantilever_clamped_at_face), T(column_base_stress),
           T(mpm_periodic_shear_wave), T(mpm_periodic_conserves_momentum), T(mpm_periodic_refusals))

@@ -163,6 +163,7 @@ size_t hearth_scene_bytes_used(const hearth_scene *s) {
     if (m) { /* what the MPM step's scratch holds for these particles, and its particle blocks */
         b += (double)s->ps.n * (2 * sizeof(int) + (m->vol ? sizeof(double) : 0)); /* order, keys, volumes */
         b += (double)m->npb * (sizeof(pblock) + sizeof(int) + sizeof(pb_partial)) + (double)m->histcap * sizeof(int);
+        b += (double)m->tiles_cap * sizeof(double); /* P2G's stored tiles (step_team's gather, more than one thread) */
     } else {
         b += s->solver->bytes_per_particle(s) * s->ps.n;
     }

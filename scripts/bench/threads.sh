@@ -19,7 +19,9 @@
 # every region start and barrier then wakes a sleeping thread. GOMP_SPINCOUNT
 # from the environment passes through (libgomp spins that many times before it
 # sleeps; it overrides the policy's 0), to compare a bounded spin on a quiet
-# machine; the header line names it. The synchronisations a step makes, which
+# machine; the header line names it. HEARTH_MPM_COLOUR_PHASES=1 passes through
+# too (the step's P2G colour phases at 2 threads instead of the gather: the
+# same bits, more barriers; named in the header). The synchronisations a step makes, which
 # that cost multiplies, are threads_sync.sh's (callgrind: any machine).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -70,6 +72,8 @@ def cpu_busy():
     return (sum(f) - f[3] - f[4]) / hz, ch.ru_utime + ch.ru_stime
 
 spin = f", GOMP_SPINCOUNT={E['GOMP_SPINCOUNT']}" if E.get("GOMP_SPINCOUNT") else ""
+if E.get("HEARTH_MPM_COLOUR_PHASES"):
+    spin += f", HEARTH_MPM_COLOUR_PHASES={E['HEARTH_MPM_COLOUR_PHASES']}"
 print(f"threads.sh: {hearth}, {os.cpu_count()} cores, {pairs} interleaved pairs a size, OMP_WAIT_POLICY=passive{spin}; "
       f"load average {os.getloadavg()[0]:.1f} at the start", flush=True)
 print("| dim | cells | particles | steps | 2 threads / 1 (median) | min-max | pairs | other processes' CPU (cores) |")

@@ -88,7 +88,7 @@ hearth_status grid_set_channels(grid *g, int nch, hearth_error *err) {
 #define ACTIVATE_CHUNKS_MAX 64
 static int activate_chunks(int nblocks) {
 #ifdef _OPENMP
-    if (nblocks < 16384) return 1; /* a few microseconds of work: not worth a parallel region */
+    if (nblocks < GRID_ACTIVATE_PARALLEL_MIN) return 1; /* a few microseconds of work: not worth a parallel region */
     const int t = omp_get_max_threads();
     return t < 1 ? 1 : t > ACTIVATE_CHUNKS_MAX ? ACTIVATE_CHUNKS_MAX : t;
 #else
@@ -97,26 +97,11 @@ static int activate_chunks(int nblocks) {
 #endif
 }
 
-/* Blocks get slots in ascending order whatever the chunking: chunk c of the
- * table counts its marks, and its blocks' slots start after the marks of
- * chunks before it, so the slots are the same for any thread count. */
-hearth_status grid_activate(grid *g, const unsigned char *mark, hearth_error *err) {
-    const int T = activate_chunks(g->nblocks), NB = g->nblocks;
-    int part[ACTIVATE_CHUNKS_MAX + 1] = {0};
-#pragma omp parallel num_threads(T) if (T > 1)
-    {
-#pragma omp for schedule(static)
-        for (int i = 0; i < g->nactive; i++) g->slot[g->active[i]] = -1;
-#pragma omp for schedule(static)
-        for (int c = 0; c < T; c++) {
-            const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
-            int k = 0;
-            for (int b = lo; b < hi; b++) k += mark[b] != 0;
-            part[c + 1] = k;
-        }
-    }
-    for (int c = 0; c < T; c++) part[c + 1] += part[c];
-    const int n = part[T];
+hearth_status grid_activate_reserve(grid *g, int n, hearth_error *err) {
+    if (n <= g->acap && n <= g->cap) return HEARTH_OK;
+    /* the old blocks lose their slots first, so a failure below leaves no slot pointing into freed storage */
+    for (int i = 0; i < g->nactive; i++) g->slot[g->active[i]] = -1;
+    g->nactive = 0;
     /* 1.5x: the node data is the largest table; doubling left up to half of it spare */
     if (n > g->acap) {
         const int ncap = g->acap + g->acap / 2 > n ? g->acap + g->acap / 2 : n;
@@ -128,44 +113,62 @@ hearth_status grid_activate(grid *g, const unsigned char *mark, hearth_error *er
     if (n > g->cap) {
         const int ncap = g->cap + g->cap / 2 > n ? g->cap + g->cap / 2 : n;
         const size_t per = sizeof(double) * (size_t)g->nch * (size_t)g->nodes_per_block;
-        /* the contents are zeroed below, so nothing is copied: free, then allocate (no old and new both held) */
+        /* the contents are zeroed on activation, so nothing is copied: free, then allocate (no old and new both held) */
         mem_free(g->data, per * (size_t)g->cap);
         g->data = NULL;
         g->cap = 0;
         double *d = mem_alloc(per * (size_t)ncap);
-        if (!d) {
-            g->nactive = 0; /* the slots were cleared above */
-            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d grid blocks", n);
-        }
+        if (!d) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d grid blocks", n);
         g->data = d;
         g->cap = ncap;
     }
-    g->nactive = n;
+    return HEARTH_OK;
+}
+
+void grid_activate_chunk(grid *g, const unsigned char *mark, int lo, int hi, int k) {
     /* The channels the passes accumulate into start at zero, CH_CG_R among them
      * (P2G sums the volume there for boundary.c). CH_T0, CH_R, CH_CG_P and CH_B
      * are written whole before they are read (thermal.c, boundary.c), so they
      * are left as they are: a field scene zeroes 10 of its 14 channels. */
-    const size_t NPB = (size_t)g->nodes_per_block, lo = (size_t)(g->nch < CH_T0 ? g->nch : CH_T0);
-#pragma omp parallel num_threads(T) if (T > 1)
-    {
-#pragma omp for schedule(static)
-        for (int c = 0; c < T; c++) {
-            const int blo = (int)((long)NB * c / T), bhi = (int)((long)NB * (c + 1) / T);
-            int k = part[c];
-            for (int b = blo; b < bhi; b++)
-                if (mark[b]) {
-                    g->slot[b] = k;
-                    g->active[k++] = b;
-                }
+    const size_t NPB = (size_t)g->nodes_per_block, z = (size_t)(g->nch < CH_T0 ? g->nch : CH_T0);
+    for (int b = lo; b < hi; b++) {
+        if (!mark[b]) {
+            g->slot[b] = -1;
+            continue;
         }
-#pragma omp for schedule(static)
-        for (int k = 0; k < n; k++) {
-            double *b = g->data + (size_t)k * (size_t)g->nch * NPB;
-            memset(b, 0, sizeof(double) * lo * NPB);
-            if (g->nch > CH_CG_R) memset(b + CH_CG_R * NPB, 0, sizeof(double) * NPB);
-            if (g->nch > CH_MW) memset(b + CH_MW * NPB, 0, sizeof(double) * (size_t)(g->nch - CH_MW) * NPB);
-        }
+        g->slot[b] = k;
+        g->active[k] = b;
+        double *d = g->data + (size_t)k * (size_t)g->nch * NPB;
+        memset(d, 0, sizeof(double) * z * NPB);
+        if (g->nch > CH_CG_R) memset(d + CH_CG_R * NPB, 0, sizeof(double) * NPB);
+        if (g->nch > CH_MW) memset(d + CH_MW * NPB, 0, sizeof(double) * (size_t)(g->nch - CH_MW) * NPB);
+        k++;
     }
+}
+
+/* Blocks get slots in ascending order whatever the chunking: chunk c of the
+ * table counts its marks, and its blocks' slots start after the marks of
+ * chunks before it, so the slots are the same for any thread count. (The
+ * MPM sort does the same inside its own parallel region when it can:
+ * mpm_sort.c's sort_team.) */
+hearth_status grid_activate(grid *g, const unsigned char *mark, hearth_error *err) {
+    const int T = activate_chunks(g->nblocks), NB = g->nblocks;
+    int part[ACTIVATE_CHUNKS_MAX + 1] = {0};
+#pragma omp parallel for schedule(static) num_threads(T) if (T > 1)
+    for (int c = 0; c < T; c++) {
+        const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+        int k = 0;
+        for (int b = lo; b < hi; b++) k += mark[b] != 0;
+        part[c + 1] = k;
+    }
+    for (int c = 0; c < T; c++) part[c + 1] += part[c];
+    const int n = part[T];
+    hearth_status st = grid_activate_reserve(g, n, err);
+    if (st) return st;
+    g->nactive = n;
+#pragma omp parallel for schedule(static) num_threads(T) if (T > 1)
+    for (int c = 0; c < T; c++)
+        grid_activate_chunk(g, mark, (int)((long)NB * c / T), (int)((long)NB * (c + 1) / T), part[c]);
     return HEARTH_OK;
 }
 

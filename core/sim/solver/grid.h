@@ -53,8 +53,9 @@ typedef struct grid {
 #define GRID_CELLS_MAX (1 << 22)
 #define GRID_BLOCKS_MAX (1L << 28)
 /// Bytes per block of the tables kept for the whole box (slot table, the
-/// sort's counts, the activity marks); the node data is only for active blocks.
-#define GRID_TABLE_BYTES_PER_BLOCK (2 * sizeof(int) + 1)
+/// sort's counts, the activity marks, MPM's particle block of each block);
+/// the node data is only for active blocks.
+#define GRID_TABLE_BYTES_PER_BLOCK (3 * sizeof(int) + 1)
 /// Node and block counts of the grid over lo..hi, checked (every count within
 /// its limit before it becomes an int) without allocating. dim, dx, lo and hi
 /// must be finite with hi > lo (check_def in scene.c).
@@ -70,6 +71,14 @@ void grid_free(grid *g);
 hearth_status grid_set_channels(grid *g, int nch, hearth_error *err);
 /// Give storage (zeroed) to exactly the blocks flagged in mark (nblocks bytes). Keeps capacity.
 hearth_status grid_activate(grid *g, const unsigned char *mark, hearth_error *err);
+/// grid_activate in parts, for a caller that runs them in its own parallel region:
+/// room for n active blocks (on growth, the old blocks lose their slots first), then
+/// each chunk [lo, hi) of the block table: its marked blocks get slots k, k + 1, ...
+/// (k: the marks before lo) and zeroed storage, the others slot -1; the caller sets nactive.
+/// Tables of at least GRID_ACTIVATE_PARALLEL_MIN blocks are worth a parallel activation.
+#define GRID_ACTIVATE_PARALLEL_MIN 16384
+hearth_status grid_activate_reserve(grid *g, int n, hearth_error *err);
+void grid_activate_chunk(grid *g, const unsigned char *mark, int lo, int hi, int k);
 static inline double *grid_block(const grid *g, int slot) {
     return g->data + (size_t)slot * (size_t)g->nch * (size_t)g->nodes_per_block;
 }

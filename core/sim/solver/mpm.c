@@ -16,7 +16,10 @@
  * colour are two blocks apart, and a block's particles touch only itself and
  * the next block on each axis, so no two threads ever write the same node and
  * every node sums its contributions in the same order whatever the thread
- * count. No atomics.
+ * count. No atomics. With more than one thread, the usual step (step_team)
+ * keeps every block's tile instead and the grid update gathers each node's
+ * sum from the tiles in the same colour order (p2g_gather_block): the same
+ * bits, with one barrier where the colour phases take 2^dim.
  *
  * P2G scatters each particle into a dense 6^dim tile, then adds the tile into
  * its block and the block's +1 neighbours. The fields ride these passes when
@@ -47,6 +50,7 @@
 #include <float.h>
 #include <limits.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "alloc.h"
@@ -85,6 +89,8 @@ static void mpm_free(hearth_scene *s) {
     mem_free(m->counts, sizeof(int) * ((size_t)m->nblocks + 1));
     mem_free(m->mark, (size_t)m->nblocks);
     mem_free(m->hist, sizeof(int) * m->histcap);
+    mem_free(m->pbof, sizeof(int) * (size_t)m->nblocks);
+    mem_free(m->tiles, sizeof(double) * m->tiles_cap);
     mpm_two_field_free(m);
     mpm_ranks_free(m);
     mem_free(m, sizeof *m);
@@ -100,7 +106,12 @@ static hearth_status mpm_init(hearth_scene *s, hearth_error *err) {
     m->keys_n = -1;
     m->counts = mem_calloc(sizeof(int) * ((size_t)m->nblocks + 1));
     m->mark = mem_calloc((size_t)m->nblocks);
-    if (!m->counts || !m->mark) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the grid tables");
+    m->pbof = mem_alloc(sizeof(int) * (size_t)m->nblocks);
+    if (!m->counts || !m->mark || !m->pbof) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the grid tables");
+    for (int b = 0; b < m->nblocks; b++) m->pbof[b] = -1; /* step_team's gather: no particle block anywhere yet */
+    /* the colour phases at any thread count: for measuring the gather against them on one build (the same bits) */
+    const char *cp = getenv("HEARTH_MPM_COLOUR_PHASES");
+    m->colour_phases = cp && strcmp(cp, "1") == 0;
     return mpm_ranks_init(m, err);
 }
 
@@ -132,6 +143,50 @@ FORCE_INLINE void p2g_add2(double *p, v2d x) {
     memcpy(p, &y, sizeof y);
 }
 
+/* step_team's gather path (momentum only) keeps each particle block's tile
+ * until every block has scattered: the part over its own block (GRID_B^dim
+ * nodes) in that block's nodes, which nothing else writes before the gather,
+ * and the halo over its +1 neighbours in the store, as one box for each set
+ * of axes o (bit d: +1 along axis d) of GRID_T - GRID_B nodes along those
+ * axes and GRID_B along the others, in o's order, channel by channel: 20
+ * nodes a block in 2D, 152 in 3D (of 36 and 216). 2D writes no z momentum. */
+#define P2G_STORE_NCH(D) ((D) == 2 ? 3 : GRID_NCH_MOMENTUM)
+#define P2G_HALO(D) ((D) == 2 ? GRID_T * GRID_T - GRID_B * GRID_B : GRID_T * GRID_T * GRID_T - GRID_B * GRID_B * GRID_B)
+/* the nodes of halo box o, and where it starts in a block's store (channel 0) */
+FORCE_INLINE int halo_nodes(const int D, int o) {
+    int n = 1;
+    for (int d = 0; d < D; d++) n *= o >> d & 1 ? GRID_T - GRID_B : GRID_B;
+    return n;
+}
+FORCE_INLINE int halo_start(const int D, int o) {
+    int n = 0;
+    for (int q = 1; q < o; q++) n += halo_nodes(D, q);
+    return P2G_STORE_NCH(D) * n;
+}
+
+/* the tile's part over block bc's own nodes into them, and its halo into the store at halo (p2g_block's STORE) */
+FORCE_INLINE void p2g_keep_tile(const grid *g, const int D, const int bc[3], const double *tile, double *halo) {
+    const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T, NPB = g->nodes_per_block, NCH = P2G_STORE_NCH(D);
+    for (int o = 0; o < (1 << D); o++) {
+        const int o0 = o & 1 ? GRID_B : 0, o1 = o & 2 ? GRID_B : 0, o2 = o & 4 ? GRID_B : 0;
+        const int n0 = o0 ? GRID_T - GRID_B : GRID_B, n1 = o1 ? GRID_T - GRID_B : GRID_B,
+                  n2 = D == 3 ? (o2 ? GRID_T - GRID_B : GRID_B) : 1, nn = n0 * n1 * n2;
+        int l;
+        double *node = o ? NULL : grid_tile_node(g, D, bc, 0, 0, 0, &l);
+        double *box = o ? halo + halo_start(D, o) : NULL;
+        for (int a = 0; a < n0; a++)
+            for (int b = 0; b < n1; b++)
+                for (int e = 0; e < n2; e++) {
+                    const int t = D == 2 ? (a + o0) * GRID_T + b + o1 : ((a + o0) * GRID_T + b + o1) * GRID_T + e + o2;
+                    const int i = (a * n1 + b) * n2 + e; /* o = 0: the node's index in its block */
+                    for (int ch = 0; ch < NCH; ch++) {
+                        if (o) box[ch * nn + i] = tile[ch * TN + t];
+                        else node[ch * NPB + i] = tile[ch * TN + t];
+                    }
+                }
+    }
+}
+
 /* P2G's tile holds only the channels it writes: momentum, then heat, then
  * water, then the volume sum_p w_ip J V_0 (boundary.c's volume fraction; it
  * goes to CH_CG_R, which grid_activate zeroes in a field scene). */
@@ -148,7 +203,7 @@ static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T,
  * and a scene without sticky colliders carries no test for them (a runtime
  * test there cost 0.5% of P2G's instructions). */
 FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const int WATER, const int MIRROR, const int TWO,
-                            int k, double dt, double *tile) {
+                            const int STORE, int k, double dt, double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
     mpm_state *st = s->mpm;
@@ -161,6 +216,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     grid_block_coords(g, pb.block, bc);
     const int org[3] = {bc[0] * GRID_B, bc[1] * GRID_B, bc[2] * GRID_B};
     const int near_face = MIRROR ? mpm_block_near_sticky(s, D, org) : 0;
+    if (STORE) st->pbof[pb.block] = k; /* for the gather (p2g_gather_block) */
     memset(tile, 0, sizeof(double) * GRID_NCH_MOMENTUM * (size_t)TN);
     if (HEAT) memset(tile + P2G_HC * TN, 0, sizeof(double) * 2 * (size_t)TN);
     if (WATER) memset(tile + P2G_MW * TN, 0, sizeof(double) * 2 * (size_t)TN);
@@ -300,6 +356,10 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
 
     pp->cmax = cmax;
     pp->numax = numax;
+    if (STORE) { /* kept for the gather instead of the flush below */
+        p2g_keep_tile(g, D, bc, tile, st->tiles + (size_t)k * (size_t)(P2G_STORE_NCH(D) * P2G_HALO(D)));
+        return;
+    }
 
     /* flush the tile into the block and its +1 neighbours */
     for (int a = 0; a < GRID_T; a++)
@@ -324,12 +384,17 @@ typedef void (*block_fn)(hearth_scene *, int, double, double *);
 /* the instantiations, indexed [dim == 3][heat][water] */
 #define BLOCK_FN(kind, D, H, W) \
     static void kind##_##D##H##W(hearth_scene *s, int k, double dt, double *tile) { kind##_block(s, D, H, W, 0, k, dt, tile); }
+/* the stored-tile P2G of step_team's gather path (momentum only), indexed [sticky][dim == 3] */
+#define P2G_STORE_FN(D, M) \
+    static void p2g_store_##D##M(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, D, 0, 0, M, 0, 1, k, dt, tile); }
+P2G_STORE_FN(2, 0) P2G_STORE_FN(3, 0) P2G_STORE_FN(2, 1) P2G_STORE_FN(3, 1)
+static const block_fn p2g_store_fns[2][2] = {{p2g_store_20, p2g_store_30}, {p2g_store_21, p2g_store_31}};
 /* P2G's, indexed [sticky][dim == 3][heat][water] */
 #define P2G_FN(D, H, W, M) \
-    static void p2g_##D##H##W##M(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, D, H, W, M, 0, k, dt, tile); }
+    static void p2g_##D##H##W##M(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, D, H, W, M, 0, 0, k, dt, tile); }
 /* two_field's, 2D without sticky colliders, indexed [heat][water] */
 #define P2G_TWO_FN(H, W) \
-    static void p2g_two_##H##W(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 2, H, W, 0, 1, k, dt, tile); }
+    static void p2g_two_##H##W(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 2, H, W, 0, 1, 0, k, dt, tile); }
 P2G_TWO_FN(0, 0) P2G_TWO_FN(0, 1) P2G_TWO_FN(1, 0) P2G_TWO_FN(1, 1)
 static const block_fn p2g_two_fns[2][2] = {{p2g_two_00, p2g_two_01}, {p2g_two_10, p2g_two_11}};
 P2G_FN(2, 0, 0, 0) P2G_FN(2, 0, 1, 0) P2G_FN(2, 1, 0, 0) P2G_FN(2, 1, 1, 0)
@@ -375,6 +440,56 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
     const block_fn fn = p2g_prepare(s);
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     p2g_team(s, fn, dt);
+}
+
+/* step_team's gather: active block k takes the kept tiles (p2g_keep_tile)
+ * of the particle blocks that reach it, itself and its -1 neighbours along
+ * each axis (a tile covers its block and the +1 neighbours), in the order of
+ * their colours, which is the order in which p2g_team's colour phases flush
+ * them into its nodes, and with the flush's test (a node the tile's mass
+ * missed takes nothing from it): the same sums from zero in the same order,
+ * so the same bits, after one barrier where the colour phases have 2^dim (4
+ * in 2D, 8 in 3D); and the grid update runs on the block right after, while
+ * its nodes are in cache. */
+FORCE_INLINE void p2g_gather_block(hearth_scene *s, const int D, int k) {
+    const grid *g = &s->g;
+    const mpm_state *m = s->mpm;
+    const int NPB = g->nodes_per_block, NCH = P2G_STORE_NCH(D);
+    double *node = grid_block(g, k);
+    double acc[P2G_STORE_NCH(3) * GRID_B * GRID_B * GRID_B]; /* the sums, from +0 like the zeroed nodes */
+    for (int i = 0; i < NCH * NPB; i++) acc[i] = 0.0;
+    int bc[3];
+    grid_block_coords(g, g->active[k], bc);
+    const int cb = (bc[0] & 1) | (bc[1] & 1) << 1 | (bc[2] & 1) << 2;
+    for (int c = 0; c < (1 << D); c++) {
+        /* the source block of colour c lies at -1 along the axes where its parity differs from this block's */
+        const int o = c ^ cb;
+        int sc[3] = {bc[0], bc[1], bc[2]}, inside = 1;
+        for (int d = 0; d < D; d++)
+            if (o >> d & 1) inside &= sc[d]-- > 0;
+        if (!inside) continue;
+        const int q = m->pbof[grid_block_id(g, sc[0], sc[1], sc[2])];
+        if (q < 0) continue; /* no particles there */
+        /* o = 0: this block's own part, in its nodes; else halo box o of the source's store, which holds
+         * this block's nodes from GRID_B on along the offset axes */
+        const double *src = o ? m->tiles + (size_t)q * (size_t)(NCH * P2G_HALO(D)) + halo_start(D, o) : node;
+        const int stride = o ? halo_nodes(D, o) : NPB;
+        const int n0 = o & 1 ? GRID_T - GRID_B : GRID_B, n1 = o & 2 ? GRID_T - GRID_B : GRID_B,
+                  n2 = D == 3 ? (o & 4 ? GRID_T - GRID_B : GRID_B) : 1;
+        for (int a = 0; a < n0; a++)
+            for (int b = 0; b < n1; b++)
+                for (int e = 0; e < n2; e++) {
+                    const int i = (a * n1 + b) * n2 + e, l = D == 2 ? a * GRID_B + b : (a * GRID_B + b) * GRID_B + e;
+                    if (src[i] == 0.0) continue;
+                    for (int ch = 0; ch < NCH; ch++) acc[ch * NPB + l] += src[ch * stride + i];
+                }
+    }
+    for (int i = 0; i < NCH * NPB; i++) node[i] = acc[i];
+}
+
+static void p2g_gather(hearth_scene *s, int k) {
+    if (s->g.dim == 2) p2g_gather_block(s, 2, k);
+    else p2g_gather_block(s, 3, k);
 }
 
 /* ---- grid update ----------------------------------------------------- */
@@ -458,7 +573,7 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
  * one); ends with a barrier, so G2P may read any node. The fastest collider
  * speed squared goes into *vcol2 (shared), the largest of the threads' own:
  * a maximum, the same whatever the threads. */
-static void grid_update_team(hearth_scene *s, double dt, double *vcol2) {
+static void grid_update_team(hearth_scene *s, double dt, double *vcol2, const int gather) {
     const grid *g = &s->g;
     double v2 = 0;
     if (s->def.two_field) { /* the second field's nodes (mpm_two_field.c) take the same update */
@@ -472,11 +587,17 @@ static void grid_update_team(hearth_scene *s, double dt, double *vcol2) {
          * gravity and before walls and colliders: damping the momentum before gravity instead would
          * leave a body in equilibrium a residual velocity dt g c dt / (1 + c dt), and it would sink. */
         const double damp = 1.0 / (1.0 + s->def.damping * dt);
-#pragma omp for schedule(dynamic, 4) nowait
-        for (int k = 0; k < g->nactive; k++) v2 = fmax(v2, grid_update_block(s, k, dt, damp, 1, CH_M));
+#pragma omp for schedule(guided, 4) nowait
+        for (int k = 0; k < g->nactive; k++) {
+            if (gather) p2g_gather(s, k);
+            v2 = fmax(v2, grid_update_block(s, k, dt, damp, 1, CH_M));
+        }
     } else {
-#pragma omp for schedule(dynamic, 4) nowait
-        for (int k = 0; k < g->nactive; k++) v2 = fmax(v2, grid_update_block(s, k, dt, 1.0, 0, CH_M));
+#pragma omp for schedule(guided, 4) nowait
+        for (int k = 0; k < g->nactive; k++) {
+            if (gather) p2g_gather(s, k); /* step_team's stored tiles into this block's nodes first */
+            v2 = fmax(v2, grid_update_block(s, k, dt, 1.0, 0, CH_M));
+        }
     }
 #pragma omp critical(mpm_vcol2)
     if (v2 > *vcol2) *vcol2 = v2;
@@ -498,7 +619,7 @@ double mpm_grid_update(hearth_scene *s, double dt) {
     /* a body force that is not thread-safe (a Lua function) keeps the update on one thread */
     const int par = s->ps.n >= SCENE_PARALLEL_MIN && !s->body_force_serial;
 #pragma omp parallel if (par)
-    grid_update_team(s, dt, &vcol2);
+    grid_update_team(s, dt, &vcol2, 0);
     return sqrt(vcol2);
 }
 
@@ -746,11 +867,21 @@ static block_fn g2p_fn(const hearth_scene *s) {
     return g2p_fns[s->g.dim == 3][thermal_active(s)][water_active(s)];
 }
 
-/* G2P's blocks for the team of the enclosing region (one thread outside one); no barrier at the end. */
+/* G2P's blocks for the team of the enclosing region (one thread outside one);
+ * no barrier at the end. Guided, not dynamic chunks of 2: neighbouring
+ * particle blocks share a cache line of each column they write at their
+ * border (x, v, C, the keys, F in P2G) and their partials' lines, so blocks
+ * handed out two at a time to alternating threads had both cores write the
+ * same lines at about every other border in every pass, a cost that grows
+ * with the number of blocks (2D's blocks hold 64 particles where 3D's hold
+ * 512: 8 times the borders a particle). Guided hands each thread long runs
+ * of neighbouring blocks (half of what is left, then less), so a pass has
+ * about 2 log2(blocks) borders between threads instead of blocks / 2, and it
+ * still ends in single blocks where a late thread catches up. */
 static void g2p_team(hearth_scene *s, block_fn fn, double dt) {
     const mpm_state *m = s->mpm;
     double tile[6 * GRID_T * GRID_T * GRID_T];
-#pragma omp for schedule(dynamic, 2) nowait
+#pragma omp for schedule(guided) nowait
     for (int k = m->k_lo; k < m->k_hi; k++) fn(s, k, dt, tile); /* this rank's blocks (all on one rank) */
 }
 
@@ -797,22 +928,64 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
     g2p_reduce(s, rep);
 }
 
+/* Whether step_team gathers (a team of more than one thread), and room in
+ * the tile store for this step's particle blocks when it does (grown by half
+ * when short; the contents are rewritten by every step). One thread keeps
+ * the colour phases' flush: the same bits, without the store's traffic. */
+static hearth_status p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    *gather = 0;
+#ifdef _OPENMP
+    *gather = s->ps.n >= SCENE_PARALLEL_MIN && omp_get_max_threads() > 1 && !m->colour_phases;
+#endif
+    if (!*gather) return HEARTH_OK;
+    const size_t per = s->g.dim == 2 ? P2G_STORE_NCH(2) * P2G_HALO(2) : P2G_STORE_NCH(3) * P2G_HALO(3), need = per * (size_t)m->npb;
+    if (need > m->tiles_cap) {
+        const size_t cap = m->tiles_cap + m->tiles_cap / 2 > need ? m->tiles_cap + m->tiles_cap / 2 : need;
+        mem_free(m->tiles, sizeof(double) * m->tiles_cap);
+        m->tiles_cap = 0;
+        if (!(m->tiles = mem_alloc(sizeof(double) * cap)))
+            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for P2G's tiles of %d particle blocks", m->npb);
+        m->tiles_cap = cap;
+    }
+    return HEARTH_OK;
+}
+
 /* P2G, the grid update and G2P in one parallel region, for a step with
  * nothing between them that needs one thread or opens regions of its own (no
  * heat or water, no periodic axis, one rank, a thread-safe body force). With
- * OMP_WAIT_POLICY=passive (main.c) each region's start and end wakes a
- * sleeping thread (a futex round trip): one region instead of three keeps two
- * of those a step, and the grid update's loop needs no barrier of its own
- * before the colour phases' last. The same blocks run the same code: the same
- * bits. Returns the fastest collider speed (mpm_grid_update's). */
-static double step_team(hearth_scene *s, double dt, step_report *rep) {
+ * OMP_WAIT_POLICY=passive (main.c) each synchronisation wakes a sleeping
+ * thread (a futex round trip). One region instead of three keeps two of
+ * those a step. With more than one thread (gather), P2G scatters every
+ * particle block into its own stored tile in one loop, and the grid update
+ * gathers each block's node sums from those tiles in colour order
+ * (p2g_gather_block) before updating it: one barrier between them where the
+ * colour phases took 2^dim and the grid update's loop one more (2D 11 -> 8
+ * synchronisations a step, 3D 15 -> 8; threads_sync.sh). The same sums in
+ * the same order: the same bits. Returns the fastest collider speed
+ * (mpm_grid_update's). */
+static double step_team(hearth_scene *s, double dt, step_report *rep, const int gather) {
     const block_fn p2g = p2g_prepare(s), g2p = g2p_fn(s);
+    mpm_state *m = s->mpm;
+    const block_fn store = p2g_store_fns[m->sticky_faces][s->g.dim == 3];
     double vcol2 = 0;
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
-        p2g_team(s, p2g, dt);
-        grid_update_team(s, dt, &vcol2);
+        if (gather) {
+            /* every block's tile, in any order: each keeps its own; the loop's barrier before the gather.
+             * Guided: long runs of neighbouring blocks per thread (g2p_team says why) */
+            double tile[GRID_NCH_MOMENTUM * GRID_T * GRID_T * GRID_T];
+#pragma omp for schedule(guided)
+            for (int k = m->k_lo; k < m->k_hi; k++) store(s, k, dt, tile);
+        } else {
+            p2g_team(s, p2g, dt);
+        }
+        grid_update_team(s, dt, &vcol2, gather);
         g2p_team(s, g2p, dt);
+        if (gather) { /* the block table back to no particle block anywhere, for the next step's scatter */
+#pragma omp for schedule(static) nowait
+            for (int k = m->k_lo; k < m->k_hi; k++) m->pbof[m->pb[k].block] = -1;
+        }
     }
     g2p_reduce(s, rep);
     return sqrt(vcol2);
@@ -836,7 +1009,9 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         if ((st = mpm_two_field_prepare(s, err))) return st;
     }
     if (!heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field) { /* the usual step: one region */
-        const double vcol = step_team(s, dt, rep);
+        int gather;
+        if ((st = p2g_store_reserve(s, &gather, err))) return st;
+        const double vcol = step_team(s, dt, rep, gather);
         rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;
         return mpm_ranks_report(s, dt, vcol, rep, err);
     }

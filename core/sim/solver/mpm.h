@@ -52,6 +52,13 @@ typedef struct mpm_state {
     pblock *pb;
     int npb, pbcap;
     int *colour_pb;         /* pb indices grouped by colour */
+    /* step_team's gather path (more than one thread): each particle block's P2G tile (momentum channels,
+     * P2G_STORE_NCH x GRID_T^dim doubles each), and per block of the box the particle block there
+     * (nblocks; -1 where none, and everywhere between steps) */
+    double *tiles;
+    size_t tiles_cap;
+    int *pbof;
+    int colour_phases;      /* HEARTH_MPM_COLOUR_PHASES=1 at init: step_team keeps the colour phases at any thread count */
     int colour_start[9];
     pb_partial *partial;
     int sticky_faces;       /* this step's scene has a sticky collider: P2G adds its faces' reaction (p2g_mirror) */

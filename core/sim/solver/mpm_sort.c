@@ -201,16 +201,19 @@ static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
  * 128-cell bench all this bookkeeping is about 10 instructions a particle.
  * Returns whether the keys were out of order (order then filled); *st gets
  * pb_reserve's status. */
-static int sort_team(hearth_scene *s, int n, int T, hearth_status *st, hearth_error *err) {
-    const grid *g = &s->g;
+static int sort_team(hearth_scene *s, int n, int T, const int activate, int *W, hearth_status *st, hearth_error *err) {
+    grid *g = &s->g;
     mpm_state *m = s->mpm;
     const int NB = m->nblocks, *keys = m->keys, nb1 = g->nb[1], nb2 = g->nb[2];
     int *order = m->order, *counts = m->counts, *hist = m->hist, unsorted = 0;
     counts[0] = 0;
     /* per chunk of the block table (at c + 1): its particles and its particle blocks */
     int cpart[SORT_CHUNKS_MAX + 1] = {0}, cblk[SORT_CHUNKS_MAX + 1] = {0};
+    int amark[SORT_CHUNKS_MAX + 1] = {0}; /* per chunk of the block table (at c + 1): its marked blocks */
     *st = HEARTH_OK;
-    const int pbcap = m->pbcap; /* read once: the single below changes m->pbcap while others may test it */
+    int far = 0; /* the farthest a particle moves in the order (particles_permute_within's W) */
+    /* read once: the singles below change them while others may test them */
+    const int pbcap = m->pbcap, gcap = g->cap < g->acap ? g->cap : g->acap;
 #pragma omp parallel num_threads(T)
     {
         /* each chunk of particles counts its own per block */
@@ -255,11 +258,24 @@ static int sort_team(hearth_scene *s, int n, int T, hearth_status *st, hearth_er
             *st = pb_reserve(m, koff[T], err);
         }
         if (!*st) {
-            /* The marks and the particle blocks only read the totals, so neither waits for the other. */
+            /* The marks and the particle blocks only read the totals, so neither waits for the other.
+             * The marks go by chunks of the block table, each counting its own for the activation. */
 #pragma omp for schedule(static) nowait
-            for (int bx = 0; bx < g->nb[0]; bx++)
-                for (int by = 0; by < nb1; by++)
-                    for (int bz = 0; bz < nb2; bz++) m->mark[grid_block_id(g, bx, by, bz)] = touched(g, counts, 1, bx, by, bz);
+            for (int c = 0; c < T; c++) {
+                const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+                int bc[3], na = 0;
+                grid_block_coords(g, lo < NB ? lo : 0, bc);
+                for (int b = lo; b < hi; b++) { /* b = grid_block_id(bc): z fastest */
+                    const unsigned char mk = touched(g, counts, 1, bc[0], bc[1], bc[2]);
+                    m->mark[b] = mk;
+                    na += mk != 0;
+                    if (++bc[2] == nb2) {
+                        bc[2] = 0;
+                        if (++bc[1] == nb1) bc[1] = 0, bc[0]++;
+                    }
+                }
+                amark[c + 1] = na;
+            }
             /* each chunk's blocks from its offset; out of order, each particle chunk's places in a
              * block (hist) also get the block's start, so the order below needs nothing else */
 #pragma omp for schedule(static) nowait
@@ -274,19 +290,45 @@ static int sort_team(hearth_scene *s, int n, int T, hearth_status *st, hearth_er
                         for (int q = 0; q < T; q++) hist[(size_t)q * NB + b] += start;
                 }
             }
-            if (unsorted) { /* every chunk's places: wait for the other threads' blocks */
+            /* the places wait for the other threads' blocks, the activation for every chunk's marks */
+            if (unsorted || activate) {
 #pragma omp barrier
+            }
+            if (activate) { /* grid_activate, here in the same region: the slots of each chunk of the table */
+                int aoff[SORT_CHUNKS_MAX + 1];
+                aoff[0] = 0;
+                for (int c = 0; c < T; c++) aoff[c + 1] = aoff[c] + amark[c + 1];
+                if (aoff[T] > gcap) {
+#pragma omp single
+                    *st = grid_activate_reserve(g, aoff[T], err);
+                }
+                if (!*st) {
 #pragma omp for schedule(static) nowait
+                    for (int c = 0; c < T; c++)
+                        grid_activate_chunk(g, m->mark, (int)((long)NB * c / T), (int)((long)NB * (c + 1) / T), aoff[c]);
+                }
+            }
+            if (unsorted) {
+#pragma omp for schedule(static) nowait reduction(max : far)
                 for (int c = 0; c < T; c++) {
                     int *h = hist + (size_t)c * NB;
                     const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
-                    for (int i = lo; i < hi; i++) order[h[keys[i]]++] = i;
+                    for (int i = lo; i < hi; i++) {
+                        const int p = h[keys[i]]++;
+                        order[p] = i;
+                        if ((p > i ? p - i : i - p) > far) far = p > i ? p - i : i - p;
+                    }
                 }
             }
         }
     }
     if (!*st) m->npb = 0;
     for (int c = 0; c < T && !*st; c++) m->npb += cblk[c + 1];
+    if (activate && !*st) {
+        g->nactive = 0;
+        for (int c = 0; c < T; c++) g->nactive += amark[c + 1];
+    }
+    *W = far;
     return unsorted;
 }
 
@@ -333,10 +375,17 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
         m->hist = h;
         m->histcap = hneed;
     }
+    st = grid_set_channels(g, s->def.two_field ? GRID_NCH_TWO
+                              : thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
+    if (st) return st;
+    /* A big table's activation runs in the sort's region (its own two regions took six synchronisations
+     * a step), unless the marks wait for a periodic axis's ghosts or a rank's halo. */
+    const int act = Tc > 1 && !wrap && m->nranks == 1 && m->nblocks >= GRID_ACTIVATE_PARALLEL_MIN;
     if (Tc > 1) { /* the usual parallel sort: one region */
-        const int unsorted = sort_team(s, n, Tc, &st, err);
+        int W = 0;
+        const int unsorted = sort_team(s, n, Tc, act, &W, &st, err);
         if (st) return st;
-        if (unsorted) particles_permute(ps, m->order, m->keys, sizeof(int) * (size_t)m->scratch_cap);
+        if (unsorted) particles_permute_within(ps, m->order, W, m->keys, sizeof(int) * (size_t)m->scratch_cap);
         sort_colours(s);
     } else {
         if (sort_counting(m, n)) particles_permute(ps, m->order, m->keys, sizeof(int) * (size_t)m->scratch_cap);
@@ -344,10 +393,7 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     }
     if (wrap) mpm_periodic_mark(s, m->mark);
     if ((st = mpm_ranks_mark(s, err))) return st;
-    st = grid_set_channels(g, s->def.two_field ? GRID_NCH_TWO
-                              : thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
-    if (st) return st;
-    if ((st = grid_activate(g, m->mark, err))) return st;
+    if (!act && (st = grid_activate(g, m->mark, err))) return st;
     mpm_ranks_partition(s); /* which particle blocks this rank steps */
     return HEARTH_OK;
 }

@@ -227,7 +227,6 @@ static void permute_column(particles *ps, int c, const int *order, int W, char *
 
 void particles_permute(particles *ps, const int *order, void *scratch, size_t room) {
     const int n = ps->n;
-    ps->edits++;
     /* the farthest any particle moves: a sort of particles that moved a
      * little moves each by about the particles of the blocks it passed */
     int W = 0;
@@ -236,6 +235,12 @@ void particles_permute(particles *ps, const int *order, void *scratch, size_t ro
         const int d = order[j] > j ? order[j] - j : j - order[j];
         if (d > W) W = d;
     }
+    particles_permute_within(ps, order, W, scratch, room);
+}
+
+void particles_permute_within(particles *ps, const int *order, int W, void *scratch, size_t room) {
+    const int n = ps->n;
+    ps->edits++;
     if (W == 0) return; /* nothing moves */
     /* Columns are independent: with T threads each takes whole columns
      * (largest first) through its own 1/T of the scratch, 8-byte aligned,

@@ -114,6 +114,9 @@ hearth_status particles_set_state_stride(particles *ps, int stride, hearth_error
 /// scratch, at least 4 n (the MPM sort lends its n keys, read by then); more
 /// room lets more columns take the window's ring (particles.c).
 void particles_permute(particles *ps, const int *order, void *scratch, size_t room);
+/// The same when the caller knows W, the largest |order[i] - i| (the MPM sort finds it while it
+/// fills order, which spares this a parallel region of its own).
+void particles_permute_within(particles *ps, const int *order, int W, void *scratch, size_t room);
 /// Copy every enabled column of src into dst (same layout); dst grows as needed.
 hearth_status particles_copy(particles *dst, const particles *src, hearth_error *err);
 /// Remove particles whose flag is non-zero, keeping order. Returns the number removed.
