@@ -184,11 +184,17 @@ static double run_points(const material_table *t, const particles *ps, const mat
         pt.p = by_run ? material_run_params_at(&rp, ms, ps, i) : material_params(t, ps, r->mat, i, pscratch);
         pt.state = state ? state + (size_t)i * stride : NULL;
         unsigned fl = flags;
-        if (th && material_thermal_split(ms->m, ms->core, pt.p, pt.state, r->temperature[j], th + i, r->dt, pt.F, pt.grad_v))
-            fl &= ~(unsigned)MATERIAL_EXPANSION; /* in F and grad_v, not a pressure */
+        const int split = th ? material_thermal_split(ms->m, ms->core, pt.p, pt.state, r->temperature[j], th + i, r->dt,
+                                                      pt.F, pt.grad_v)
+                             : 0;
+        if (split) fl &= ~(unsigned)MATERIAL_EXPANSION; /* in F and grad_v, not a pressure (nor one in a bad K's place) */
         const material_env env = run_env(r, j, fl);
         double tj[9] = {0};
         code[j] = material_point_stress(ms->m, ms->core, &pt, &env, tj);
+        if (__builtin_expect(split < 0, 0)) { /* bulk_modulus not finite > 0: the point fails (material.h) */
+            code[j] = MATERIAL_BAD_BULK;
+            if (flags & MATERIAL_ZERO_FAILED) memset(tj, 0, sizeof tj);
+        }
         run_after(ms, &pt, &env, tj, &wave[j], &numax);
         for (int c = 0; c < 9; c++) tau[c][j] = tj[c];
     }
@@ -251,7 +257,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
      * the same values, without two 3x3 copies a point, and a loop the compiler vectorises. A point left
      * alone gets 1, 1 and -0.0 (material_thermal_scales): its F and L come through bit for bit. */
     double *th = thermal_column(ms, ps, r, flags), Fm[9][HEARTH_BLOCK_MAX], Lm[9][HEARTH_BLOCK_MAX];
-    unsigned char split[HEARTH_BLOCK_MAX];
+    signed char split[HEARTH_BLOCK_MAX]; /* material_thermal_scales: 1, 0 or -1 (bad K) */
     if (th) {
         double sF[HEARTH_BLOCK_MAX], sL[HEARTH_BLOCK_MAX], dL[HEARTH_BLOCK_MAX], qs[MATERIAL_MAX_PARAMS], s3[3];
         const double *pj = ms->params; /* no curve: the slot's own parameters, uncopied */
@@ -259,7 +265,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         plugin_call_enter(m, "bulk_modulus");
         for (int j = 0; j < n; j++) {
             for (int v = 0; v < nv; v++) qs[vk[v]] = vcol[v][j];
-            split[j] = (unsigned char)material_thermal_scales(m, ms->core, pj, state ? state + (size_t)j * stride : NULL,
+            split[j] = (signed char)material_thermal_scales(m, ms->core, pj, state ? state + (size_t)j * stride : NULL,
                                                               r->temperature[j], th + i0 + j, r->dt, s3);
             sF[j] = s3[0], sL[j] = s3[1], dL[j] = s3[2];
         }
@@ -300,6 +306,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         double z = 0;
         for (int c = 0; c < 9; c++) z += tau[c][j] - tau[c][j];
         if (__builtin_expect(!code[j] && !(z == 0), 0)) code[j] = MATERIAL_NONFINITE;
+        if (__builtin_expect(th && split[j] < 0, 0)) code[j] = MATERIAL_BAD_BULK; /* as run_points */
         if (__builtin_expect(code[j] != 0, 0) && (flags & MATERIAL_ZERO_FAILED))
             for (int c = 0; c < 9; c++) tau[c][j] = 0;
     }
@@ -324,6 +331,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         pt.saturation = r->saturation ? r->saturation[j] : NAN;
         pt.dim = b.dim;
         const material_env env = run_env(r, j, th && split[j] ? flags & ~(unsigned)MATERIAL_EXPANSION : flags);
+        /* (a bad K's point, split -1, failed above: no pressure in its place) */
         /* the core's terms are isotropic and touch only the diagonal; a crack's cut-off rewrites all nine */
         double tj[9];
         if (flags & MATERIAL_DAMAGE)
