@@ -93,7 +93,7 @@ static void child_result(void *ud, const char *check, int passed, const char *de
     snprintf(d, sizeof d, "%s", detail ? detail : "");
     for (char *q = d; *q; q++)
         if (*q == '\t' || *q == '\n') *q = ' ';
-    child_send(*(int *)ud, 'R', check, passed ? "1" : "0", d);
+    child_send(*(int *)ud, 'R', check, passed == 2 ? "2" : passed ? "1" : "0", d);
 }
 
 static void check_child(int fd, const char *path) {
@@ -137,7 +137,8 @@ static void parent_line(check_parent *cp, char *line) {
     if (n < 1 || strlen(f[0]) != 1) return;
     switch (f[0][0]) {
     case 'R':
-        if (n >= 4) printf("%-20s %s  %s\n", f[1], strcmp(f[2], "1") == 0 ? "PASS" : "FAIL", f[3]);
+        if (n >= 4)
+            printf("%-20s %s  %s\n", f[1], strcmp(f[2], "1") == 0 ? "PASS" : strcmp(f[2], "2") == 0 ? "WARN" : "FAIL", f[3]);
         fflush(stdout);
         break;
     case 'D':

@@ -443,6 +443,64 @@ cli_check_wave_corners)
             fail "wave_$mode message: $out"
     done
     ;;
+cli_check_bulk_modulus_nan | cli_check_bulk_modulus_negative)
+    # an optional bulk_modulus that is NaN or -1 Pa (tests/plugins/misbehave.c): refused, naming the file, the
+    # callback and the value (core/sim/plugin_check.c, check_bulk)
+    case $case_name in *nan) mode=nan v=nan ;; *) mode=neg v=-1 ;; esac
+    so="$HEARTH_TEST_PLUGIN_DIR/hearth_bulk_$mode.so"
+    out=$("$hearth" plugin check "$so" 2>&1) && fail "bulk_$mode passed: $out"
+    echo "$out"
+    echo "$out" | grep -qF "bulk_modulus         FAIL  $so: bulk_modulus returned $v Pa at the defaults (fresh state from init); it must be finite and > 0" ||
+        fail "bulk_$mode message: $out"
+    [ "$(echo "$out" | grep -c "^[a-z_]* *FAIL  ")" -eq 1 ] || fail "only bulk_modulus should fail: $out"
+    ;;
+cli_check_bulk_modulus_off)
+    # a bulk_modulus twice the law's (a neo-Hookean, E 1e4 Pa, nu 0.3: K = E / (3 (1 - 2 nu)) = 8333.33 Pa, which
+    # never yields): the law's own mean stress under ln J = -3e-6 disagrees, and it is refused
+    so="$HEARTH_TEST_PLUGIN_DIR/hearth_bulk_off.so"
+    out=$("$hearth" plugin check "$so" 2>&1) && fail "bulk_off passed: $out"
+    echo "$out"
+    echo "$out" | grep -qF "bulk_modulus         FAIL  $so: bulk_modulus returned 16666.7 Pa at the defaults, but the law's mean stress under isotropic compression ln J = -3e-06 gives K = 8333.3" ||
+        fail "bulk_off message: $out"
+    ;;
+cli_check_bulk_modulus_plastic_warns)
+    # the right K (8333.33 Pa) on a law with no tensile strength (misbehave.c, bulk_plastic): compression agrees,
+    # expansion flows (plastic_J = J) with mean stress 0 (to rounding); a warning, not a failure, and the check exits 0
+    so="$HEARTH_TEST_PLUGIN_DIR/hearth_bulk_plastic.so"
+    out=$("$hearth" plugin check "$so" 2>&1) || fail "bulk_plastic failed: $out"
+    echo "$out"
+    echo "$out" | grep -qF "bulk_modulus         WARN  K = 8333.33 Pa at the defaults;" || fail "no WARN line: $out"
+    echo "$out" | grep -q "warning: under expansion the law flowed plastically (plastic_J moved) and its mean stress gives [-0-9.e]* Pa (off by 100%), so K could not be checked there" ||
+        fail "warning text: $out"
+    ;;
+cli_run_bulk_modulus_nan | cli_run_bulk_modulus_negative)
+    # a heated run with expansion > 0 asks bulk_modulus for eq. 10's thermal strain: NaN or -1 Pa stops it with
+    # the guard naming the plugin, its file and the value (exit 3), not a silent fall back to the pressure;
+    # with expansion 0 K is never asked and the same block completes
+    export HEARTH_PLUGIN_PATH="$HEARTH_PLUGIN_PATH:$HEARTH_TEST_PLUGIN_DIR"
+    case $case_name in *nan) mode=nan v=nan ;; *) mode=neg v=-1 ;; esac
+    for cl in 1 0; do
+        cat >"$tmp/s.lua" <<EOF
+local h = require "hearth"
+local s = h.scene { dim = 2, dx = 1 / 16, box = { { 0, 0 }, { 1, 1 } } }
+local m = h.material("bulk_$mode", { E = 1e4, density = 1000, expansion = $cl })
+s:add { shape = h.box({ 0.3, 0.3 }, { 0.6, 0.6 }), material = m, ppc = 4, temperature = 60 }
+s:run { until_t = 0.05 }
+EOF
+        (cd "$tmp" && timeout 60 "$hearth" run s.lua --out o --quiet >out.txt 2>err.txt); rc=$?
+        cat "$tmp/err.txt"
+        if [ $cl = 0 ]; then
+            [ $rc -eq 0 ] || fail "expansion 0: exit $rc, expected the run to complete: $(cat "$tmp/err.txt")"
+            continue
+        fi
+        [ $rc -eq 3 ] || fail "exit $rc, expected a guard stop (3): $(cat "$tmp/err.txt")"
+        grep -q "guard: step 1, .*material 'bulk_$mode' (#0): plugin 'bulk_$mode' (.*hearth_bulk_$mode.so): bulk_modulus returned $v Pa; it must be finite and > 0" "$tmp/err.txt" ||
+            fail "message: $(cat "$tmp/err.txt")"
+        [ "$(grep -c "bulk_modulus returned" "$tmp/err.txt")" -eq 1 ] || fail "said more than once: $(cat "$tmp/err.txt")"
+        grep -q "^guard: stopped, .*plugin 'bulk_$mode' (.*hearth_bulk_$mode.so): bulk_modulus returned $v Pa" "$tmp/o/run.log" ||
+            fail "run.log: $(cat "$tmp/o/run.log")"
+    done
+    ;;
 cli_run_plugin_segv)
     # hearth run: a segfault inside stress names plugin and callback and exits 4
     export HEARTH_PLUGIN_PATH="$HEARTH_PLUGIN_PATH:$HEARTH_TEST_PLUGIN_DIR"

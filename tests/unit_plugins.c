@@ -155,10 +155,11 @@ TEST(plugin_load_cached) {
     CHECK(s.newtonian == 1);
 }
 
-/* "batched" (the last) is reported only for a plugin with stress_block */
-enum { N_CHECKS = 6, N_ALWAYS = 5, C_BATCHED = 5 };
+/* "bulk_modulus" and "batched" (the last two) are reported only for a plugin with bulk_modulus and
+ * with stress_block */
+enum { N_CHECKS = 7, N_ALWAYS = 5, C_BULK = 5, C_BATCHED = 6 };
 static const char *const check_names[N_CHECKS] = {"rest", "symmetric", "frame_indifference", "extremes",
-                                                  "wave_speed", "batched"};
+                                                  "wave_speed", "bulk_modulus", "batched"};
 
 typedef struct report {
     int seen[N_CHECKS], passed[N_CHECKS], other;
@@ -184,6 +185,7 @@ static int run_check(const char *path, report *r) {
     int n = hearth_plugin_check(path, note_check, r, &err);
     if (n < 0) fprintf(stderr, "%s\n", err.msg);
     for (int i = 0; i < N_ALWAYS; i++) CHECK(r->seen[i] == 1);
+    CHECK(r->seen[C_BULK] <= 1);
     CHECK(r->seen[C_BATCHED] <= 1);
     CHECK(r->other == 0);
     return n;

@@ -194,8 +194,11 @@ enum {
     MATERIAL_DAMAGE = 1u << 3
 };
 
-/* The door's result beyond the plugin's own positive codes: tau came back NaN or infinite. */
+/* The door's results beyond the plugin's own positive codes: tau came back NaN or infinite; the
+ * plugin's bulk_modulus was not finite and > 0 where eq. 10's thermal strain needed it (the point
+ * fails: no pressure is put in its place, material_thermal_scales). */
 #define MATERIAL_NONFINITE (-1)
+#define MATERIAL_BAD_BULK (-2)
 
 /* What the solver supplies at this point. */
 typedef struct material_env {
@@ -257,13 +260,19 @@ MATERIAL_INLINE int material_point_stress(const hearth_material *m, const double
  * s[1] = exp(r) scales L and s[2] = expm1(r) / dt goes on L's diagonal; with
  * dt = 0 or when the strain cannot be taken out (returns 0) they are 1, 1 and
  * -0.0, which leave every F and L entry's bits as they were (x * 1 and
- * x + -0.0 are x, signed zeros and NaNs included). The caller has entered
- * "bulk_modulus" (plugin_call_enter). */
+ * x + -0.0 are x, signed zeros and NaNs included). Returns 1 when the strain
+ * is taken out, 0 without a temperature, and -1 when K is NaN, infinite or
+ * <= 0: a plugin from elsewhere may return anything, and the caller fails the
+ * point with MATERIAL_BAD_BULK (the guard stops the run naming the plugin and
+ * the value) rather than fall back to the pressure, which swells a yielding
+ * law without end (the reason for the split) and would do so silently. The
+ * caller has entered "bulk_modulus" (plugin_call_enter). */
 MATERIAL_INLINE int material_thermal_scales(const hearth_material *m, const double *core, const double *p,
                                             const double *state, double T, double *e_store, double dt, double s[3]) {
     s[0] = 1, s[1] = 1, s[2] = -0.0;
     const double K = m->bulk_modulus(p, state);
-    if (!(K > 0 && K < INFINITY) || !(T == T)) return 0;
+    if (!(T == T)) return 0;
+    if (!(K > 0 && K < INFINITY)) return -1; /* MATERIAL_BAD_BULK: F and L as they were */
     const double e0 = *e_store, e = dt > 0 ? core[CP_EXPANSION] * (T - core[CP_REFERENCE_T]) / K : e0;
     s[0] = exp(-e / 3);
     if (dt > 0) {
@@ -294,13 +303,15 @@ MATERIAL_INLINE int material_thermal_scales(const hearth_material *m, const doub
  * Gonzalez & Stuart 2008, the derivation Ding et al. cite for eq. 10).
  * dt = 0 (evaluate only) takes out the stored strain and writes nothing.
  * Returns 1 when the strain was taken out (the caller then adds no thermal
- * pressure), 0 when it cannot be (no temperature, no finite K > 0). */
+ * pressure), 0 when there is no temperature, -1 when K is not finite and > 0
+ * (material_thermal_scales: the caller fails the point, MATERIAL_BAD_BULK). */
 MATERIAL_INLINE int material_thermal_split(const hearth_material *m, const double *core, const double *p,
                                            const double *state, double T, double *e_store, double dt, double F[9],
                                            double L[9]) {
     plugin_call_enter(m, "bulk_modulus");
     double s[3];
-    if (!material_thermal_scales(m, core, p, state, T, e_store, dt, s)) return 0;
+    const int split = material_thermal_scales(m, core, p, state, T, e_store, dt, s);
+    if (split <= 0) return split;
     for (int k = 0; k < 9; k++) F[k] *= s[0];
     if (dt > 0) {
         for (int k = 0; k < 9; k++) L[k] *= s[1];
@@ -437,7 +448,7 @@ typedef struct material_run {
 
 /* What the door gives back for each point j < n: its stress in columns, tau[c][j], with the core's terms
  * added (zero for a point whose stress failed, MATERIAL_ZERO_FAILED being set), code[j] (0, the plugin's
- * code or MATERIAL_NONFINITE) and wave[j], the wave speed that limits the next step (unchecked). Returns
+ * code, MATERIAL_NONFINITE or MATERIAL_BAD_BULK) and wave[j], the wave speed that limits the next step (unchecked). Returns
  * the largest kinematic viscosity (m^2/s) a point's plugin applies, 0 when none. */
 double material_run_eval(const material_table *t, const particles *ps, const material_run *r, double *const tau[9],
                          int *code, double *wave);

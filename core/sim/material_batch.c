@@ -237,11 +237,17 @@ static double run_points(const material_table *t, const particles *ps, const mat
         pt.p = by_run ? material_run_params_at(&rp, ms, ps, i) : material_params(t, ps, r->mat, i, pscratch);
         pt.state = state ? state + (size_t)i * stride : NULL;
         unsigned fl = flags;
-        if (th && material_thermal_split(ms->m, ms->core, pt.p, pt.state, r->temperature[j], th + i, r->dt, pt.F, pt.grad_v))
-            fl &= ~(unsigned)MATERIAL_EXPANSION; /* in F and grad_v, not a pressure */
+        const int split = th ? material_thermal_split(ms->m, ms->core, pt.p, pt.state, r->temperature[j], th + i, r->dt,
+                                                      pt.F, pt.grad_v)
+                             : 0;
+        if (split) fl &= ~(unsigned)MATERIAL_EXPANSION; /* in F and grad_v, not a pressure (nor one in a bad K's place) */
         const material_env env = run_env(r, j, fl);
         double tj[9] = {0};
         code[j] = material_point_stress(ms->m, ms->core, &pt, &env, tj);
+        if (__builtin_expect(split < 0, 0)) { /* bulk_modulus not finite > 0: the point fails (material.h) */
+            code[j] = MATERIAL_BAD_BULK;
+            if (flags & MATERIAL_ZERO_FAILED) memset(tj, 0, sizeof tj);
+        }
         run_after(ms, &pt, &env, tj, &wave[j], &numax);
         for (int c = 0; c < 9; c++) tau[c][j] = tj[c];
     }
@@ -263,7 +269,7 @@ static double run_points(const material_table *t, const particles *ps, const mat
  * and branches (pt, env, tj) around the calls. */
 static double run_after_block(const material_slot *ms, const material_run *r, unsigned flags, double *q, int nv,
                               const int *vk, double (*vcol)[HEARTH_BLOCK_MAX], double *state, int stride,
-                              const double *P, const unsigned char *split, double *const tau[9], double *wave) {
+                              const double *P, const signed char *split, double *const tau[9], double *wave) {
     const hearth_material *m = ms->m;
     const double *core = ms->core;
     const int n = r->n;
@@ -382,7 +388,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
      * the same values, without two 3x3 copies a point, and a loop the compiler vectorises. A point left
      * alone gets 1, 1 and -0.0 (material_thermal_scales): its F and L come through bit for bit. */
     double *th = thermal_column(ms, ps, r, flags), Fm[9][HEARTH_BLOCK_MAX], Lm[9][HEARTH_BLOCK_MAX];
-    unsigned char split[HEARTH_BLOCK_MAX];
+    signed char split[HEARTH_BLOCK_MAX]; /* material_thermal_scales: 1, 0 or -1 (bad K) */
     double sF[HEARTH_BLOCK_MAX], sL[HEARTH_BLOCK_MAX], dL[HEARTH_BLOCK_MAX];
     const int porous_J = porous && m->plastic_J;
     int finite = 1; /* every point's F and L scales finite */
@@ -401,7 +407,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
             if (th) {
                 double s3[3];
                 plugin_call_enter(m, "bulk_modulus");
-                split[j] = (unsigned char)material_thermal_scales(m, ms->core, pj, st, r->temperature[j], th + i0 + j, r->dt, s3);
+                split[j] = (signed char)material_thermal_scales(m, ms->core, pj, st, r->temperature[j], th + i0 + j, r->dt, s3);
                 sF[j] = s3[0], sL[j] = s3[1], dL[j] = s3[2];
                 finite &= (s3[0] <= DBL_MAX) & (s3[1] <= DBL_MAX); /* exp's: >= +0, or inf, or NaN */
             }
@@ -451,6 +457,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     }
     for (int j = 0; j < n; j++) {
         if (__builtin_expect(!code[j] && !(z[j] == 0), 0)) code[j] = MATERIAL_NONFINITE;
+        if (__builtin_expect(th && split[j] < 0, 0)) code[j] = MATERIAL_BAD_BULK; /* as run_points */
         if (__builtin_expect(code[j] != 0, 0) && (flags & MATERIAL_ZERO_FAILED))
             for (int c = 0; c < 9; c++) tau[c][j] = 0;
     }

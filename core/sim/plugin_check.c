@@ -20,7 +20,7 @@
 
 #define CHECK_TRIALS 20
 #define PLUGIN_CHECK_MAX_PARAMS 256
-#define CHECK_DETAIL 512
+#define CHECK_DETAIL 1024
 
 typedef struct check_rig {
     const hearth_material *m;
@@ -30,8 +30,10 @@ typedef struct check_rig {
     hearth_check_fn fn;
     void *ud;
     int failed;
+    const char *file; /* the plugin's file, for the checks that name it */
 } check_rig;
 
+/* passed: 1 pass, 0 fail, 2 pass with a warning (hearth_check_fn) */
 static void check_report(check_rig *r, const char *name, int passed, const char *detail) {
     if (!passed) r->failed++;
     if (r->fn) r->fn(r->ud, name, passed, detail);
@@ -338,6 +340,167 @@ static void check_wave(check_rig *r) {
     check_report(r, "wave_speed", ok, detail);
 }
 
+/* ---- bulk_modulus (optional) ---------------------------------------------- */
+
+/* K at the rig's parameters and state (NULL when the plugin has none). */
+static double check_bulk_value(const check_rig *r) {
+    plugin_call_enter(r->m, "bulk_modulus");
+    const double K = r->m->bulk_modulus(r->p, r->m->state_size > 0 ? r->state : NULL);
+    plugin_call_leave();
+    return K;
+}
+
+static int check_bulk_ok(double K) { return K > 0 && K < INFINITY; }
+
+/* The mean Kirchhoff stress of a small isotropic volume change ln J = 3 ln(1 + a) from a fresh state at
+ * the defaults, with the rate part cancelled as check_wave does (tau = K ln J + V ln J / dt at two dt).
+ * Returns the plugin's code (0: *Kmeas = mean stress / ln J); *plastic is 1 when the plugin's plastic_J
+ * left 1, i.e. the law flowed plastically under that change (its mean stress then need not be K ln J). */
+static int check_bulk_measure(check_rig *r, double a, double *Kmeas, int *plastic) {
+    const double dts[2] = {1e-6, 2e-6}, lnJ = 3 * log1p(a);
+    double pm[2];
+    *plastic = 0;
+    for (int k = 0; k < 2; k++) {
+        double F[9], L[9] = {0}, tau[9];
+        t3_identity(F);
+        for (int d = 0; d < 3; d++) F[4 * d] += a, L[4 * d] = a / dts[k];
+        check_defaults(r);
+        check_init(r);
+        const int rc = check_stress(r, F, L, dts[k], tau);
+        if (rc) return rc;
+        pm[k] = (tau[0] + tau[4] + tau[8]) / 3;
+        if (r->m->plastic_J) {
+            plugin_call_enter(r->m, "plastic_J");
+            const double JP = r->m->plastic_J(r->p, r->m->state_size > 0 ? r->state : NULL);
+            plugin_call_leave();
+            if (!(JP == 1)) *plastic = 1;
+        }
+    }
+    *Kmeas = (2 * pm[1] - pm[0]) / lnJ;
+    return 0;
+}
+
+/* Tolerance on the measured K: the strain is 1e-6, so a law whose K is right agrees to ~1e-6 (a
+ * neo-Hookean's mean stress is K ln J + O(ln J^2)); 1% leaves room for a law whose small-strain
+ * stiffness is a secant, and still catches a K given in the wrong units or off by a factor. */
+#define CHECK_BULK_TOL 0.01
+
+/* The optional bulk_modulus, which the core divides by for eq. 10's thermal strain
+ * (<hearth/material.h>; core/sim/material.h, material_thermal_scales): finite and > 0 at the defaults, at
+ * every parameter corner the extremes check uses (fresh states) and at advanced states (the defaults,
+ * 1..4 random steps of stress, CHECK_TRIALS times); then K against the law's own mean stress under a
+ * small isotropic compression and expansion. A mismatch where the law flowed plastically (plastic_J
+ * moved) is a warning: there the mean stress is not K ln J, and K is still the elastic stiffness.
+ * Reported only for a plugin with bulk_modulus. */
+static void check_bulk(check_rig *r) {
+    if (!r->m->bulk_modulus) return;
+    char detail[CHECK_DETAIL];
+    const hearth_material *m = r->m;
+    /* the defaults */
+    check_defaults(r);
+    check_init(r);
+    const double K0 = check_bulk_value(r);
+    if (!check_bulk_ok(K0)) {
+        snprintf(detail, sizeof detail,
+                 "%.400s: bulk_modulus returned %g Pa at the defaults (fresh state from init); it must be finite and > 0 "
+                 "(the core divides eq. 10's thermal strain by it)",
+                 r->file, K0);
+        check_report(r, "bulk_modulus", 0, detail);
+        return;
+    }
+    double Klo = K0, Khi = K0;
+    /* the parameter corners: each at its min and max, then all at min and all at max */
+    for (int i = -1; i < m->nparams; i++)
+        for (int side = 0; side < 2; side++) {
+            check_defaults(r);
+            char at[160];
+            if (i >= 0) {
+                const hearth_param *q = &m->params[i];
+                r->p[i] = side ? q->max : q->min;
+                snprintf(at, sizeof at, "%s = %g %s (%s)", q->name, r->p[i], q->unit, side ? "max" : "min");
+            } else {
+                for (int j = 0; j < m->nparams; j++) r->p[j] = side ? m->params[j].max : m->params[j].min;
+                snprintf(at, sizeof at, "every parameter at its %s", side ? "max" : "min");
+            }
+            check_init(r);
+            const double K = check_bulk_value(r);
+            if (!check_bulk_ok(K)) {
+                snprintf(detail, sizeof detail,
+                         "%.400s: bulk_modulus returned %g Pa with %s (fresh state); it must be finite and > 0 over the "
+                         "whole schema",
+                         r->file, K, at);
+                check_report(r, "bulk_modulus", 0, detail);
+                return;
+            }
+        }
+    /* advanced states at the defaults */
+    uint64_t seed = 0xb01c4001u;
+    int states = 0;
+    for (int k = 0; k < CHECK_TRIALS; k++) {
+        double L[9], A[9], F[9], Fn[9], tau[9];
+        check_defaults(r);
+        check_init(r);
+        t3_identity(F);
+        int s = 0, rc = 0;
+        for (; s < k % 4 + 1 && !rc; s++) {
+            check_random_step(&seed, 1e-4, L, A);
+            t3_mul(A, F, Fn);
+            t3_copy(Fn, F);
+            rc = check_stress(r, F, L, 1e-4, tau);
+        }
+        if (rc) continue; /* a state the law refused is not one a scene keeps */
+        const double K = check_bulk_value(r);
+        if (!check_bulk_ok(K)) {
+            snprintf(detail, sizeof detail,
+                     "%.400s: bulk_modulus returned %g Pa at the defaults after %d random steps of stress (trial %d); it "
+                     "must be finite and > 0 in every state",
+                     r->file, K, s, k);
+            check_report(r, "bulk_modulus", 0, detail);
+            return;
+        }
+        Klo = fmin(Klo, K), Khi = fmax(Khi, K);
+        states++;
+    }
+    /* K against the law's own stress, compressed and stretched by ln J = 3 ln(1 -+ 1e-6) */
+    const double as[2] = {-1e-6, 1e-6};
+    const char *const way[2] = {"compression", "expansion"};
+    double Km[2];
+    int plastic[2], bad = -1, warn = -1;
+    for (int k = 0; k < 2; k++) {
+        const int rc = check_bulk_measure(r, as[k], &Km[k], &plastic[k]);
+        if (rc) {
+            snprintf(detail, sizeof detail, "%.400s: isotropic %s ln J = %.3g at the defaults: stress returned code %d: %s",
+                     r->file, way[k], 3 * log1p(as[k]), rc, check_code_text(r, rc));
+            check_report(r, "bulk_modulus", 0, detail);
+            return;
+        }
+        if (!(fabs(Km[k] - K0) <= CHECK_BULK_TOL * K0)) {
+            if (plastic[k] && warn < 0) warn = k;
+            if (!plastic[k] && bad < 0) bad = k;
+        }
+    }
+    if (bad >= 0) {
+        snprintf(detail, sizeof detail,
+                 "%.400s: bulk_modulus returned %.6g Pa at the defaults, but the law's mean stress under isotropic %s "
+                 "ln J = %.3g gives K = %.6g Pa (off by %.3g%%; tolerance %g%%) and its plastic_J stayed 1: K must be "
+                 "the stiffness against a change of volume (lambda + 2/3 mu), or eq. 10's thermal strain is wrong",
+                 r->file, K0, way[bad], 3 * log1p(as[bad]), Km[bad], 100 * fabs(Km[bad] / K0 - 1), 100 * CHECK_BULK_TOL);
+        check_report(r, "bulk_modulus", 0, detail);
+        return;
+    }
+    char tail[200] = "";
+    if (warn >= 0)
+        snprintf(tail, sizeof tail,
+                 "; warning: under %s the law flowed plastically (plastic_J moved) and its mean stress gives %.6g Pa "
+                 "(off by %.3g%%), so K could not be checked there",
+                 way[warn], Km[warn], 100 * fabs(Km[warn] / K0 - 1));
+    snprintf(detail, sizeof detail,
+             "K = %.6g Pa at the defaults; finite and > 0 at %d parameter corners and %d advanced states (%.6g .. "
+             "%.6g Pa); the law's mean stress / ln J: %.6g Pa (compression), %.6g Pa (expansion), tolerance %g%%%s",
+             K0, 2 * (m->nparams + 1), states, Klo, Khi, Km[0], Km[1], 100 * CHECK_BULK_TOL, tail);
+    check_report(r, "bulk_modulus", warn >= 0 ? 2 : 1, detail);
+}
+
 /* ---- batched and one-point agree bit for bit (<hearth/material.h> rule 7) ---- */
 
 /* The battery's blocks: the dimension, the number of points (a full block and
@@ -551,7 +714,8 @@ int hearth_plugin_check(const char *path, hearth_check_fn fn, void *ud, hearth_e
     }
     const hearth_plugin *pl = hearth_plugin_load(path, err);
     if (!pl) return -1;
-    check_rig r = {.m = hearth_plugin_material(pl), .density = plugin_density_index(pl), .fn = fn, .ud = ud};
+    check_rig r = {.m = hearth_plugin_material(pl), .density = plugin_density_index(pl), .fn = fn, .ud = ud,
+                   .file = hearth_plugin_file(pl) ? hearth_plugin_file(pl) : path};
     size_t pbytes = (size_t)r.m->nparams * sizeof(double), sbytes = (size_t)r.m->state_size * sizeof(double);
     r.p = mem_alloc(pbytes);
     r.state = mem_alloc(sbytes);
@@ -573,6 +737,8 @@ int hearth_plugin_check(const char *path, hearth_check_fn fn, void *ud, hearth_e
     check_extremes(&r);
     plugin_call_set_context(file, "check 'wave_speed'");
     check_wave(&r);
+    plugin_call_set_context(file, "check 'bulk_modulus'");
+    check_bulk(&r);
     plugin_call_set_context(file, "check 'batched'");
     const int brc = check_batched(&r);
     plugin_call_set_context(NULL, NULL);

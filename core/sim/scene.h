@@ -39,6 +39,7 @@ typedef enum fail_kind {
     FAIL_F,            /* F non-finite or det F <= 0 */
     FAIL_X, FAIL_V, FAIL_C,
     FAIL_WAVE,         /* wave_speed() returned NaN, inf or <= 0 */
+    FAIL_BULK,         /* bulk_modulus() returned NaN, inf or <= 0 where eq. 10's thermal strain needed it */
 } fail_kind;
 
 typedef struct step_report {

@@ -10,7 +10,16 @@
  *                 (a corner of the schema; fine at the defaults)
  *   wave_inf_after
  *                 wave_speed turns inf once stress has advanced `after` times
- *                 (the loader's corners are fine; only the run sees it) */
+ *                 (the loader's corners are fine; only the run sees it)
+ *   bulk_nan, bulk_neg, bulk_off
+ *                 give the optional bulk_modulus (MISBEHAVE_BULK, set by
+ *                 tests/plugins/meson.build): NaN, -1 Pa, or twice the law's
+ *                 K = lambda + 2/3 mu, everywhere (a neo-Hookean never yields,
+ *                 so `plugin check` must refuse all three)
+ *   bulk_plastic  the right K, but no tensile strength: once J > 1 the mean
+ *                 stress flows to 0 (only the deviatoric part stays) and
+ *                 plastic_J reports J^P = J, so `plugin check` can only warn
+ *                 that K was not checked under expansion */
 #include <hearth/material.h>
 #include <math.h>
 #include <stdlib.h>
@@ -57,6 +66,11 @@ static int stress(hearth_point *pt, double tau[9]) {
     hearth_lame(pt->p[P_E], pt->p[P_NU], &mu, &lambda);
     hearth_t3_mul_abt(pt->F, pt->F, b);
     for (int i = 0; i < 9; i++) tau[i] = mu * (b[i] - (i % 4 == 0)) + (i % 4 == 0 ? lambda * log(J) : 0.0);
+    if (MODE_IS("bulk_plastic") && J > 1) { /* flowed: the mean stress is gone, J^P = J kept as -J */
+        const double mean = (tau[0] + tau[4] + tau[8]) / 3;
+        tau[0] -= mean, tau[4] -= mean, tau[8] -= mean;
+        pt->state[0] = -J;
+    }
     return 0;
 }
 
@@ -73,6 +87,23 @@ static double wave_speed(const double *p, const double *state) {
     if (MODE_IS("wave_inf_after") && state && state[0] > p[P_AFTER]) return INFINITY;
     return c;
 }
+
+#ifdef MISBEHAVE_BULK
+static double bulk_modulus(const double *p, const double *state) {
+    (void)state;
+    double mu, lambda;
+    hearth_lame(p[P_E], p[P_NU], &mu, &lambda);
+    if (MODE_IS("bulk_nan")) return NAN;
+    if (MODE_IS("bulk_neg")) return -1;
+    if (MODE_IS("bulk_plastic")) return lambda + 2 * mu / 3;
+    return 2 * (lambda + 2 * mu / 3); /* bulk_off */
+}
+
+static double plastic_J(const double *p, const double *state) {
+    (void)p;
+    return MODE_IS("bulk_plastic") && state && state[0] < 0 ? -state[0] : 1.0;
+}
+#endif
 
 static const char *describe_error(int code) {
     return code == 1 ? "inverted element (det F <= 0)" : "unknown error";
@@ -91,6 +122,10 @@ static const hearth_material material = {
     .stress = stress,
     .wave_speed = wave_speed,
     .describe_error = describe_error,
+#ifdef MISBEHAVE_BULK
+    .bulk_modulus = bulk_modulus,
+    .plastic_J = plastic_J,
+#endif
 };
 
 HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void);

@@ -91,7 +91,9 @@ const char *hearth_plugin_file(const hearth_plugin *pl);
 /// Returns the number of files visited.
 int hearth_plugin_each(void (*fn)(void *ud, const char *name, const char *path), void *ud);
 
-/// One line of the conformance report.
+/// One line of the conformance report. passed: 1 the check passed, 0 it failed,
+/// 2 it passed with a warning the detail explains (a property that could not be
+/// checked where the law flowed plastically; not counted as a failure).
 typedef void (*hearth_check_fn)(void *ud, const char *check, int passed, const char *detail);
 /// Run the conformance battery on a plugin file. Returns the number of failed
 /// checks (0 = all pass), or -1 when the plugin cannot be loaded (err says why).

@@ -257,6 +257,11 @@ typedef struct hearth_material {
     /// the whole elastic stress and a free body expands by J_th and no further, whether it yields or not.
     /// Without it the core adds the thermal pressure -c lambda (T - T_ref) I after the stress, outside the
     /// law's yield condition (a yielding skeleton then never relaxes it). Called concurrently (rule 5).
+    /// Asked only when a material has `expansion` > 0 and a temperature. A value that is NaN, infinite
+    /// or <= 0 fails that point (no pressure is put in its place): the stability guard stops the run,
+    /// naming the plugin, its file and the value. `hearth plugin check` asks it at the defaults, at the
+    /// parameter corners and in advanced states, and compares it with the law's own mean stress under a
+    /// small isotropic volume change (a warning where the law flows plastically there).
     double (*bulk_modulus)(const double *p, const double *state);
 } hearth_material;
 

@@ -183,10 +183,34 @@ static void guard_wave_text(const hearth_scene *s, int i, char *what, size_t n) 
              guard_wave_speed(s, i));
 }
 
+/* A bulk modulus that was not finite and > 0 (material.h, material_thermal_scales): the point failed
+ * rather than fall back to the thermal pressure. The value is asked again at the particle's parameters
+ * and state after the step (the step does not keep it; a K that reads the state may have moved). */
+static void guard_bulk_text(const hearth_scene *s, int i, char *what, size_t n) {
+    const particles *ps = &s->ps;
+    const int mat = pcoli(ps, PC_MAT)[i];
+    const material_slot *ms = &s->mats.slot[mat];
+    double pscratch[SCENE_MAX_PARAMS];
+    plugin_call_enter(ms->m, "bulk_modulus");
+    const double K = ms->m->bulk_modulus(material_params(&s->mats, ps, mat, i, pscratch),
+                                         ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
+    plugin_call_leave();
+    char val[96];
+    if (K > 0 && K < INFINITY)
+        snprintf(val, sizeof val, "a value not finite and > 0 (%g Pa when asked again after the step)", K);
+    else
+        snprintf(val, sizeof val, "%g Pa", K);
+    snprintf(what, n,
+             "plugin '%s' (%s): bulk_modulus returned %s; it must be finite and > 0, since eq. 10's thermal strain "
+             "ln J_th = c lambda (T - T_ref) / K divides by it (the core does not fall back to the thermal pressure; "
+             "run hearth plugin check on it)",
+             ms->m->name, hearth_plugin_file(ms->plugin) ? hearth_plugin_file(ms->plugin) : "built in", val);
+}
+
 int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed_before) {
     const double dx = s->def.dx;
     s->cfl_last = (fmax(speed_before, rep->max_speed) + s->c_max) * dt / dx;
-    char who[200], what[400], cause[400];
+    char who[200], what[640], cause[400];
     if (rep->particle >= 0) {
         const int i = rep->particle;
         describe_particle(s, i, who, sizeof who);
@@ -201,6 +225,7 @@ int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed
         }
         case FAIL_STRESS: snprintf(what, sizeof what, "stress is NaN or inf (returned by plugin '%s')", ms->m->name); break;
         case FAIL_WAVE: guard_wave_text(s, i, what, sizeof what); break;
+        case FAIL_BULK: guard_bulk_text(s, i, what, sizeof what); break;
         case FAIL_F: snprintf(what, sizeof what, "deformation gradient F is not finite or inverted (det F <= 0)"); break;
         case FAIL_X: snprintf(what, sizeof what, "position is NaN or inf"); break;
         case FAIL_V: snprintf(what, sizeof what, "velocity is NaN or inf"); break;

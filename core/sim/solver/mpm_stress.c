@@ -107,8 +107,9 @@ void mpm_p2g_stress(hearth_scene *s, int D, int i0, int n, double dt, unsigned e
     for (int j = 0; j < n; j++) {
         if (kind[j] == P_BADF) stress_fail(pp, i0 + j, FAIL_F, 0);
         if (kind[j] != P_LIVE) continue;
-        if (code[j]) stress_fail(pp, i0 + j, code[j] == MATERIAL_NONFINITE ? FAIL_STRESS : FAIL_PLUGIN,
-                                 code[j] == MATERIAL_NONFINITE ? 0 : code[j]);
+        if (code[j]) stress_fail(pp, i0 + j,
+                                 code[j] == MATERIAL_NONFINITE ? FAIL_STRESS : code[j] == MATERIAL_BAD_BULK ? FAIL_BULK : FAIL_PLUGIN,
+                                 code[j] < 0 ? 0 : code[j]);
         /* NaN, inf or <= 0 would make the next dt NaN or 0 (fmax would also
          * drop a NaN silently): the guard stops the run naming the plugin */
         const double c = wave[j];
