@@ -42,7 +42,6 @@
 #include "crc32.h"
 #include "error.h"
 #include "scene.h"
-#include "settings.h"
 #include "solver.h"
 #include "shapes.h"
 
@@ -836,7 +835,8 @@ hearth_scene *hearth_scene_load(const char *path, hearth_error *err) {
         fclose(f);
         uint32_t version;
         memcpy(&version, head + 8, 4);
-        if (memcmp(head, CK_MAGIC, 8) == 0 && (version < CK_VERSION_MIN || version > CK_VERSION)) return hearth_scene_load_mem(head, sizeof head, path, err);
+        if (memcmp(head, CK_MAGIC, 8) == 0 && (version < CK_VERSION_MIN || version > CK_VERSION))
+            return hearth_scene_load_mem(head, sizeof head, path, err);
         if (n > CK_FILE_MAX)
             err_set(err, HEARTH_ERR_FORMAT, "%s: checkpoint of %llu bytes; hearth reads at most %llu", path,
                     (unsigned long long)n, (unsigned long long)CK_FILE_MAX);
