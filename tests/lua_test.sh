@@ -849,7 +849,7 @@ damping_settles_column)
 damping_refusals)
     run damping_errors.lua
     expect_rc 0 "damping's and until_rest's errors"
-    has out.txt "damping_errors ok" "bad damping, SPH damping, a damped checkpoint and a bad until_rest are refused"
+    has out.txt "damping_errors ok" "bad damping, SPH damping and a bad until_rest are refused; a damped checkpoint keeps its damping"
     ;;
 wet_colliders_and_humid_oven)
     # s:collider{saturation, beta_water} and h.scene{oven = {saturation}}: errors, and water moving their way

@@ -107,7 +107,7 @@ TEST(checkpoint_v4_roundtrip) {
     memcpy(&version, img + 8, 4);
     memcpy(&size, img + CK_OFF_SIZE, 8);
     memcpy(&crc, img + CK_OFF_CRC, 4);
-    CHECK(version == 4);
+    CHECK(version == CK_VERSION);
     CHECK(size == n);
     CHECK(crc == ck_crc(img, n));
     CHECK(find(img, n, "elastic", 7) != (size_t)-1);
@@ -555,7 +555,157 @@ TEST(checkpoint_alloc_failures) {
     free(img);
 }
 
+/* The DEF fields version 5 appended sit last in the section, just before the
+ * clocks' tag: offsets from "CLK " back (checkpoint.h's layout). */
+#define V5_DEF_BYTES (8 + 8 + 3 * 4 + 4 + 8 + 8 + 8)
+static size_t clk_at(const uint8_t *b, size_t n) {
+    const size_t at = find(b, n, "CLK ", 4);
+    CHECK(at != (size_t)-1 && at >= CK_HEADER_SIZE + V5_DEF_BYTES);
+    return at;
+}
+static void set_before_clk(uint8_t *b, size_t n, size_t back, const void *v, size_t len) {
+    memcpy(b + clk_at(b, n) - back, v, len);
+}
+static void damping_nan(uint8_t *b, size_t n) { set_before_clk(b, n, V5_DEF_BYTES, &(double){NAN}, 8); }
+static void boiling_cold(uint8_t *b, size_t n) { set_before_clk(b, n, V5_DEF_BYTES - 8, &(double){-300}, 8); }
+static void periodic_y_2(uint8_t *b, size_t n) { set_before_clk(b, n, 8 + 8 + 8 + 4 + 8, &(int32_t){2}, 4); }
+static void two_field_neg(uint8_t *b, size_t n) { set_before_clk(b, n, 8 + 8 + 8 + 4, &(int32_t){-1}, 4); }
+static void gas_vent_neg(uint8_t *b, size_t n) { set_before_clk(b, n, 16, &(double){-0.02}, 8); }
+static void vent_porosity_15(uint8_t *b, size_t n) { set_before_clk(b, n, 8, &(double){1.5}, 8); }
+static void vent_porosity_0(uint8_t *b, size_t n) { set_before_clk(b, n, 8, &(double){0}, 8); }
+static void vent_porosity_inf(uint8_t *b, size_t n) { set_before_clk(b, n, 8, &(double){INFINITY}, 8); }
+
+/* A hostile version 5 file: each DEF field version 5 added is checked on its
+ * own, the message naming the field, the value read and the valid range. */
+TEST(checkpoint_v5_def_fields_refused) {
+    hearth_scene *s = small_scene();
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    if (!img) return;
+    expect_refused(img, n, damping_nan, "scene: damping = nan 1/s is outside its valid range [0, 1e+09]");
+    expect_refused(img, n, boiling_cold, "boiling_point = -300 degC is outside its valid range [-273.15, 5000]");
+    expect_refused(img, n, periodic_y_2, "periodic_y = 2 is neither 0 nor 1");
+    expect_refused(img, n, two_field_neg, "two_field = -1 is neither 0 nor 1");
+    expect_refused(img, n, gas_vent_neg, "gas_vent = -0.02 m/s is outside its valid range [0, 1e+06]");
+    expect_refused(img, n, vent_porosity_15, "vent_porosity = 1.5 is outside its valid range (0, 1]");
+    expect_refused(img, n, vent_porosity_0, "vent_porosity = 0 is outside its valid range (0, 1]");
+    expect_refused(img, n, vent_porosity_inf, "vent_porosity = inf is outside its valid range (0, 1]");
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+/* A version 4 file (version 5's layout without the DEF fields 5 appended,
+ * rebuilt here from a new save) still loads, those fields at their defaults,
+ * and continues as the scene it was saved from; version 3 is refused by
+ * version (docs/checkpoints.md). */
+TEST(checkpoint_v4_reads_at_defaults) {
+    hearth_scene *s = small_scene();
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    if (!img || !s) return;
+    const size_t clk = clk_at(img, n), m = n - V5_DEF_BYTES;
+    uint8_t *b = malloc(m);
+    memcpy(b, img, clk - V5_DEF_BYTES);
+    memcpy(b + clk - V5_DEF_BYTES, img + clk, n - clk);
+    const uint32_t v4 = 4;
+    memcpy(b + 8, &v4, 4);
+    ck_reseal(b, m);
+    hearth_error err;
+    hearth_scene *r = hearth_scene_load_mem(b, m, "v4.ck", &err);
+    if (!r) printf("  v4 refused: %s\n", err.msg);
+    CHECK(r != NULL);
+    if (r) {
+        const hearth_scene_def d0 = hearth_default_scene_def();
+        printf("  v4 file of %zu bytes (v5: %zu): damping %g, boiling_point %g, periodic %d %d %d, two_field %d (%g), "
+               "gas_vent %g, vent_porosity %g\n", m, n, r->def.damping, r->def.boiling_point, r->def.periodic[0],
+               r->def.periodic[1], r->def.periodic[2], r->def.two_field, r->def.two_field_friction, r->def.gas_vent,
+               r->def.vent_porosity);
+        CHECK(r->def.damping == d0.damping && r->def.boiling_point == d0.boiling_point);
+        CHECK(!r->def.periodic[0] && !r->def.periodic[1] && !r->def.periodic[2] && !r->def.two_field);
+        CHECK(r->def.two_field_friction == d0.two_field_friction && r->def.gas_vent == d0.gas_vent &&
+              r->def.vent_porosity == d0.vent_porosity);
+        CHECK(hearth_scene_step(s, 10, &err) == HEARTH_OK);
+        CHECK(hearth_scene_step(r, 10, &err) == HEARTH_OK);
+        printf("  after 10 more steps: hash %016llx saved scene, %016llx v4 copy\n",
+               (unsigned long long)hearth_scene_hash(s), (unsigned long long)hearth_scene_hash(r));
+        CHECK(hearth_scene_hash(r) == hearth_scene_hash(s));
+        hearth_scene_destroy(r);
+    }
+    const uint32_t v3 = 3;
+    memcpy(b + 8, &v3, 4);
+    ck_reseal(b, m);
+    CHECK(hearth_scene_load_mem(b, m, "v3.ck", &err) == NULL);
+    printf("  %s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 5 only");
+    free(b);
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+/* A venting scene (gas_vent > 0, open pores: porosity 0.8 >= vent_porosity
+ * 0.7; as tests/lua/gas_vent.lua, coarser) saved mid-run and restored
+ * continues bit-identically to the unbroken run; an otherwise equal scene
+ * without venting ends elsewhere, so the equality says the restored scene
+ * vents. */
+static hearth_scene *vent_scene(double gas_vent) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.02;
+    d.hi[0] = d.hi[1] = 0.3;
+    d.gravity[1] = 0;
+    d.dt_max = 2e-4;
+    d.oven_temperature = 40;
+    d.oven_beta = 10;
+    d.gas_vent = gas_vent;
+    d.vent_porosity = 0.7;
+    hearth_scene *s = fx_scene_def(&d);
+    if (!s) return NULL;
+    const char *nm[] = {"E", "nu", "tau_y", "eta", "density", "porosity", "gas_rate", "reaction_temperature",
+                        "reaction_width", "expansion"};
+    const double nv[] = {1e5, 0.3, 1e6, 0, 500, 0.8, 1e-8, 40, 20, 0};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "cam_clay_dough", nm, nv, 10, &err);
+    if (m < 0) printf("  material: %s\n", err.msg);
+    CHECK(m >= 0);
+    hearth_shape *disc = hearth_shape_sphere((const double[3]){0.15, 0.15, 0}, 0.08);
+    hearth_body_def b = hearth_default_body_def();
+    b.shape = disc, b.material = m, b.jitter = 0, b.temperature = 40;
+    CHECK(hearth_scene_add_body(s, &b, &err) >= 0);
+    hearth_shape_free(disc);
+    CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+    return s;
+}
+TEST(checkpoint_venting_continues_same_bits) {
+    hearth_scene *s = vent_scene(0.02), *still = vent_scene(0);
+    CHECK(s && still);
+    if (!s || !still) return;
+    const char *path = "vent_roundtrip.ck";
+    hearth_error err;
+    CHECK(hearth_scene_save(s, path, &err) == HEARTH_OK);
+    if (err.code) printf("  save: %s\n", err.msg);
+    hearth_scene *r = hearth_scene_load(path, &err);
+    if (!r) printf("  load: %s\n", err.msg);
+    CHECK(r != NULL);
+    remove(path);
+    if (r) {
+        CHECK(r->def.gas_vent == 0.02 && r->def.vent_porosity == 0.7);
+        CHECK(hearth_scene_step(s, 40, &err) == HEARTH_OK);
+        CHECK(hearth_scene_step(r, 40, &err) == HEARTH_OK);
+        CHECK(hearth_scene_step(still, 40, &err) == HEARTH_OK);
+        const uint64_t hs = hearth_scene_hash(s), hr = hearth_scene_hash(r), h0 = hearth_scene_hash(still);
+        printf("  %d particles, 20 + 40 steps: hash unbroken %016llx, restored %016llx, not venting %016llx\n",
+               hearth_scene_particle_count(s), (unsigned long long)hs, (unsigned long long)hr, (unsigned long long)h0);
+        CHECK(hr == hs);
+        CHECK(h0 != hs);
+        hearth_scene_destroy(r);
+    }
+    hearth_scene_destroy(s);
+    hearth_scene_destroy(still);
+}
+
 TEST_MAIN(T(checkpoint_v4_roundtrip), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
           T(checkpoint_bitflip_campaign), T(checkpoint_resealed_flips), T(checkpoint_crafted_fields),
           T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_count_before_alloc),
-          T(checkpoint_not_regular_file), T(checkpoint_alloc_failures))
+          T(checkpoint_not_regular_file), T(checkpoint_alloc_failures),
+          T(checkpoint_v5_def_fields_refused), T(checkpoint_v4_reads_at_defaults), T(checkpoint_venting_continues_same_bits))

@@ -712,7 +712,7 @@ hearth_shape *shape_read(FILE *f, int depth) {
     if (!buf) return NULL;
     hearth_shape *s = NULL;
     if (fread(buf, 1, n, f) == n) {
-        ck_cursor cur = {buf, n, 0, NULL};
+        ck_cursor cur = {buf, n, 0, NULL, {0}};
         s = shape_read_mem(&cur, depth);
         if (s) fseek(f, start + (long)(n - cur.left), SEEK_SET);
     }

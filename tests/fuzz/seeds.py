@@ -314,6 +314,24 @@ s:add{shape = h.box({0.1, 0.5}, {0.2, 0.6}), material = m, ppc = 2, temperature 
 s:step(2)
 s:save("OUT")
 """,
+    # version 5's DEF additions: damping, a boiling point, two fields with friction, venting pores
+    "fields_v5_2d.ck": """local h = require "hearth"
+local s = h.scene{dim = 2, dx = 1 / 16, box = {{0, 0}, {1, 1}}, seed = 8, oven = {temperature = 180, beta = 20},
+  latent_heat = true, boiling_point = 95, damping = 2, two_field = true, two_field_friction = 0.3, gas_vent = 0.5,
+  vent_porosity = 0.6}
+local m = h.material("cam_clay_dough", {E = 1e5, density = 500, porosity = 0.7, gas_rate = 1e-6})
+s:add{shape = h.box({0.3, 0.1}, {0.7, 0.3}), material = m, ppc = 2, saturation = 0.5}
+s:step(2)
+s:save("OUT")
+""",
+    # version 5: periodic axes (MPM, no heat or water across them)
+    "periodic_v5_2d.ck": """local h = require "hearth"
+local s = h.scene{dim = 2, dx = 1 / 16, box = {{0, 0}, {1, 1}}, seed = 9, periodic_x = true}
+local jelly = h.material("elastic", {E = 2e4, nu = 0.3, density = 1000})
+s:add{shape = h.box({0.8, 0.3}, {1.0, 0.5}), material = jelly, ppc = 2, velocity = {0.5, 0}}
+s:step(2)
+s:save("OUT")
+""",
 }
 
 

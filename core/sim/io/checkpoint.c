@@ -23,7 +23,9 @@
  *
  * The writer builds the whole image in memory (open_memstream) so the header
  * can carry the size and CRC, then writes it atomically. Version 2 files (a
- * checksum over the particles only, plugins by path) are refused by version. */
+ * checksum over the particles only, plugins by path) and version 3 are refused
+ * by version; version 4 is read with the DEF fields version 5 appended at their
+ * defaults (its writer refused scenes with any other value). */
 #include "checkpoint.h"
 
 #include <errno.h>
@@ -223,6 +225,14 @@ static void put_def(ck_out *o, const hearth_scene_def *d) {
     put_i32(o, d->latent_heat);
     put_i32(o, d->browning);
     put_f64(o, d->browning_scale);
+    /* version 5: the settings version 4 could not hold (its writer refused them) */
+    put_f64(o, d->damping);
+    put_f64(o, d->boiling_point);
+    for (int a = 0; a < 3; a++) put_i32(o, d->periodic[a]);
+    put_i32(o, d->two_field);
+    put_f64(o, d->two_field_friction);
+    put_f64(o, d->gas_vent);
+    put_f64(o, d->vent_porosity);
 }
 
 static void put_clocks(ck_out *o, const hearth_scene *s) {
@@ -309,27 +319,10 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
     if (!s->solver->can_checkpoint) /* the solver's own state is not in the format (solver.h) */
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of %s scenes (solver = \"%s\") are not supported yet",
                        path, s->solver->name, s->solver->name);
-    if (s->def.damping > 0) /* not in format version 3's DEF section; resuming undamped would be silently wrong */
-        return err_set(err, HEARTH_ERR_PARAM,
-                       "save %s: checkpoints of damped scenes (damping = %g 1/s) are not supported yet; save with "
-                       "damping = 0",
-                       path, s->def.damping);
-    if (s->def.boiling_point != 100.0) /* not in version 4's DEF section: a restored scene would boil at 100 degC */
-        return err_set(err, HEARTH_ERR_PARAM,
-                       "save %s: checkpoints of scenes whose boiling_point is not 100 degC (it is %g) are not supported "
-                       "yet",
-                       path, s->def.boiling_point);
-    if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) /* not in version 3's DEF section either */
-        return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with periodic axes are not supported yet",
-                       path);
-    if (s->def.two_field) /* not in version 4's DEF section: a restored scene would step with one field */
-        return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of two_field scenes are not supported yet", path);
-    if (s->def.gas_vent > 0) /* not in version 4's DEF section: a restored scene would keep its surface's CO2 */
-        return err_set(err, HEARTH_ERR_PARAM,
-                       "save %s: checkpoints of scenes that vent CO2 (gas_vent = %g m/s) are not supported yet; set "
-                       "gas_vent = 0 to save",
-                       path, s->def.gas_vent);
-    if (s->mix.mat >= 0) /* mixing.c: the constituents' parameter sets are not in the format yet */
+    /* mixing.c: the constituents' parameter sets and the mixture's per-particle
+     * ratios are state beyond the DEF section (and the Lua binding's h.mix), not
+     * in the format yet; every other scene setting is in the DEF section */
+    if (s->mix.mat >= 0)
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
                        path);
     char *img = NULL;
@@ -373,8 +366,39 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
 
 /* ---- reading ---------------------------------------------------------- */
 
-/* The scene definition, every field checked here or by hearth_scene_create. */
-static void get_def(ck_cursor *c, hearth_scene_def *d) {
+/* A real setting of the DEF section, read into its field of d and checked
+ * against its row of the settings table (settings.c), so the message names
+ * the setting, the value and the range the file broke. */
+static void get_real_setting(ck_cursor *c, hearth_scene_def *d, const char *name) {
+    const hearth_setting *e = hearth_scene_setting(name);
+    if (!e || e->kind != HEARTH_SETTING_REAL || e->offset < 0) {
+        ck_fail(c, "scene: a setting the format names is not in the settings table");
+        return;
+    }
+    double *v = (double *)((char *)d + e->offset);
+    *v = get_f64(c);
+    if (c->bad) return;
+    if (!(isfinite(*v) && (e->min_open ? *v > e->min : *v >= e->min) && *v <= e->max)) {
+        const int unit = strcmp(e->unit, "1") != 0; /* "1": dimensionless, no unit to print */
+        snprintf(c->msg, sizeof c->msg, "scene: %s = %g%s%s is outside its valid range %c%g, %g]", name, *v,
+                 unit ? " " : "", unit ? e->unit : "", e->min_open ? '(' : '[', e->min, e->max);
+        ck_fail(c, c->msg);
+    }
+}
+/* A 0/1 setting of the DEF section, named as the settings table names it. */
+static void get_flag_setting(ck_cursor *c, int *v, const char *name) {
+    const int32_t x = get_i32(c);
+    *v = x;
+    if (!c->bad && x != 0 && x != 1) {
+        snprintf(c->msg, sizeof c->msg, "scene: %s = %d is neither 0 nor 1", name, (int)x);
+        ck_fail(c, c->msg);
+    }
+}
+
+/* The scene definition, every field checked here or by hearth_scene_create.
+ * A version 4 file ends the section before the fields version 5 appended;
+ * they keep the defaults d holds (the caller's hearth_default_scene_def). */
+static void get_def(ck_cursor *c, hearth_scene_def *d, uint32_t version) {
     get_tag(c, "DEF ", "the scene definition section is missing");
     d->dim = get_i32(c);
     d->dx = get_finite(c, "scene: dx is not finite");
@@ -406,6 +430,16 @@ static void get_def(ck_cursor *c, hearth_scene_def *d) {
     d->browning = get_i32(c);
     if (d->browning != 0 && d->browning != 1) ck_fail(c, "scene: browning is neither 0 nor 1");
     d->browning_scale = get_finite(c, "scene: browning_scale is not finite"); /* hearth_scene_create checks its range */
+    if (version >= 5) {
+        get_real_setting(c, d, "damping");
+        get_real_setting(c, d, "boiling_point");
+        static const char *const periodic[3] = {"periodic_x", "periodic_y", "periodic_z"};
+        for (int a = 0; a < 3; a++) get_flag_setting(c, &d->periodic[a], periodic[a]);
+        get_flag_setting(c, &d->two_field, "two_field");
+        get_real_setting(c, d, "two_field_friction");
+        get_real_setting(c, d, "gas_vent");
+        get_real_setting(c, d, "vent_porosity");
+    }
     d->solver = HEARTH_SOLVER_MPM; /* the only solver whose table says can_checkpoint (solver.h) */
 }
 
@@ -725,9 +759,10 @@ hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name
     memcpy(&size, b + CK_OFF_SIZE, 8);
     if (bom != CK_BOM || dsize != sizeof(double))
         return refuse(NULL, err, name, "written on a machine with another byte order or double size");
-    if (version != CK_VERSION) {
-        err_set(err, HEARTH_ERR_FORMAT, "%s: checkpoint version %u; this hearth reads version %u only (save it again "
-                "with the hearth that wrote it is not possible: rerun the scene)", name, version, CK_VERSION);
+    if (version < CK_VERSION_MIN || version > CK_VERSION) {
+        err_set(err, HEARTH_ERR_FORMAT, "%s: checkpoint version %u; this hearth reads versions %u to %u only (save it "
+                "again with the hearth that wrote it is not possible: rerun the scene)", name, version, CK_VERSION_MIN,
+                CK_VERSION);
         return NULL;
     }
     if (hsize != CK_HEADER_SIZE) return refuse(NULL, err, name, "header size is not 40");
@@ -743,9 +778,9 @@ hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name
     memcpy(&reserved, b + 36, 4);
     if (reserved != 0) return refuse(NULL, err, name, "reserved header field is not 0");
 
-    ck_cursor c = {b + CK_HEADER_SIZE, n - CK_HEADER_SIZE, 0, NULL};
+    ck_cursor c = {b + CK_HEADER_SIZE, n - CK_HEADER_SIZE, 0, NULL, {0}};
     hearth_scene_def d = hearth_default_scene_def();
-    get_def(&c, &d);
+    get_def(&c, &d, version);
     if (c.bad) return refuse_at(NULL, err, name, &c, "scene definition");
     hearth_scene *s = hearth_scene_create(&d, err); /* checks every value and the memory it needs */
     if (!s) return refuse_at(NULL, err, name, &c, "scene definition");
@@ -800,7 +835,8 @@ hearth_scene *hearth_scene_load(const char *path, hearth_error *err) {
         fclose(f);
         uint32_t version;
         memcpy(&version, head + 8, 4);
-        if (memcmp(head, CK_MAGIC, 8) == 0 && version != CK_VERSION) return hearth_scene_load_mem(head, sizeof head, path, err);
+        if (memcmp(head, CK_MAGIC, 8) == 0 && (version < CK_VERSION_MIN || version > CK_VERSION))
+            return hearth_scene_load_mem(head, sizeof head, path, err);
         if (n > CK_FILE_MAX)
             err_set(err, HEARTH_ERR_FORMAT, "%s: checkpoint of %llu bytes; hearth reads at most %llu", path,
                     (unsigned long long)n, (unsigned long long)CK_FILE_MAX);

@@ -2,14 +2,17 @@
  * shapes.c, the unit tests and the fuzz target need: the bounds-checked read
  * cursor, the header layout, and ck_reseal.
  *
- * Layout of version 4 (native byte order and double width, both recorded and
+ * Layout of version 5 (native byte order and double width, both recorded and
  * checked; every count is unsigned 32-bit, every string a u32 length then its
  * bytes without a terminator):
  *
  *   header, 40 bytes:
  *     0  "HEARTHCK"
- *     8  u32 version (4; 4 added the humid oven, wet colliders' beta_water, held temperatures,
- *        latent_heat, browning and its scale)
+ *     8  u32 version (5; 4 added the humid oven, wet colliders' beta_water, held temperatures,
+ *        latent_heat, browning and its scale; 5 appended damping, boiling_point, periodic,
+ *        two_field, two_field_friction, gas_vent and vent_porosity to the DEF section.
+ *        Version 4 files are read with those at their defaults, the values every
+ *        version 4 file had: its writer refused any other)
  *    12  u32 byte-order mark 0x01020304
  *    16  u32 sizeof(double) (8)
  *    20  u32 header size (40)
@@ -17,7 +20,9 @@
  *    32  u32 CRC-32 of the whole file, computed with these 4 bytes taken as 0
  *    36  u32 reserved, 0
  *   sections, each opened by a 4-byte tag:
- *    "DEF " the scene definition (ck_put_def in checkpoint.c)
+ *    "DEF " the scene definition (put_def in checkpoint.c); version 5 appends
+ *           f64 damping, f64 boiling_point, i32 periodic[3], i32 two_field,
+ *           f64 two_field_friction, f64 gas_vent, f64 vent_porosity
  *    "CLK " i32 guard state, then the clocks and the jitter generator
  *    "MATS" u32 count; per material: name, u32 ABI, u64 schema hash,
  *           u32 nparams, f64 params, f64 core params, u32 curves, curves (each: u32 param,
@@ -34,7 +39,10 @@
 #include <stdint.h>
 
 #define CK_MAGIC "HEARTHCK"
-#define CK_VERSION 4u
+#define CK_VERSION 5u
+/// Oldest version read: a version 4 file is version 5's layout without the
+/// DEF fields version 5 appended.
+#define CK_VERSION_MIN 4u
 #define CK_BOM 0x01020304u
 #define CK_HEADER_SIZE 40u
 #define CK_OFF_SIZE 24u
@@ -46,12 +54,13 @@
 
 /// A read cursor over a checkpoint image in memory. Every read checks the
 /// bytes left first; after the first failure bad stays set, every read returns
-/// zeros, and what names the failure (a static string) for the message.
+/// zeros, and what names the failure (a static string, or msg) for the message.
 typedef struct ck_cursor {
     const uint8_t *p; ///< next byte
     size_t left;      ///< bytes from p to the end of the image
     int bad;
-    const char *what; ///< why the cursor went bad (static), NULL while good
+    const char *what; ///< why the cursor went bad (static or msg), NULL while good
+    char msg[192];    ///< a failure's text built from the value read (a setting out of its range)
 } ck_cursor;
 
 /// Copy n bytes to out and advance; on too few bytes zero out, set bad and
