@@ -928,15 +928,20 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
     g2p_reduce(s, rep);
 }
 
-/* Whether step_team gathers (a team of more than one thread), and room in
+/* Whether step_team gathers (a 2D team of more than one thread), and room in
  * the tile store for this step's particle blocks when it does (grown by half
  * when short; the contents are rewritten by every step). One thread keeps
- * the colour phases' flush: the same bits, without the store's traffic. */
+ * the colour phases' flush: the same bits, without the store's traffic. 3D
+ * keeps them too: on a quiet machine the gather gave 3D at 32 cells nothing
+ * (2 threads / 1: 1.78x against 1.79x with the colour phases, threads.sh)
+ * for 19 bytes a particle of store (237.6 -> 256.8, over issue 20's 240),
+ * where 2D at 128 cells went 1.40x -> 1.51x for 8 bytes
+ * (docs/performance.md, "Fewer synchronisations a step"). */
 static hearth_status p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *err) {
     mpm_state *m = s->mpm;
     *gather = 0;
 #ifdef _OPENMP
-    *gather = s->ps.n >= SCENE_PARALLEL_MIN && omp_get_max_threads() > 1 && !m->colour_phases;
+    *gather = s->g.dim == 2 && s->ps.n >= SCENE_PARALLEL_MIN && omp_get_max_threads() > 1 && !m->colour_phases;
 #endif
     if (!*gather) return HEARTH_OK;
     const size_t per = s->g.dim == 2 ? P2G_STORE_NCH(2) * P2G_HALO(2) : P2G_STORE_NCH(3) * P2G_HALO(3), need = per * (size_t)m->npb;
