@@ -966,8 +966,48 @@ TEST(grip_holds_pulled_strip) {
 /* The MPM step's scratch is MPM's (struct mpm_state, mpm.h): made with the
  * scene, grown by the sort, P2G's volumes only once heat or water is live;
  * and the memory estimate's scratch term is the sort's 16 bytes (order and
- * keys, the permutation working in the keys' room) and the volumes' 8. */
+ * keys, the permutation working in the keys' room) and the volumes' 8, at
+ * one thread. At two threads in 2D P2G's tile store is held too (mpm.c,
+ * p2g_store_reserve): per particle block the halo of its 6x6 node tile
+ * around its 4x4 block, 20 nodes, of mass and two momenta, 3 x 20 doubles
+ * = 480 bytes, for 16 cells x 4 particles (s:add's default ppc): 7.5 bytes a
+ * particle, the limit of a large body; a square of L cells at ppc 4 spans
+ * L / 4 + 1 particle blocks a side (a particle's block is its B-spline base
+ * node's, half a cell back), so its store holds 480 (L / 4 + 1)^2 bytes for
+ * 4 L^2 particles: 9.49 a particle at L = 32, 8.14 at L = 96, counted here
+ * from tiles_cap after a step at two threads. */
+TEST(mpm_store_in_estimate) {
+    for (int run = 0; run < 3; run++) {
+        const int threads = run == 0 ? 1 : 2, L = run < 2 ? 32 : 96;
+        hearth_set_threads(threads);
+        hearth_scene *s = fx_scene(2, 0.5 / L, 0, 1);
+        CHECK(s != NULL);
+        if (!s) break;
+        const int m = fx_elastic(s, 1e4, 0.3, 1000);
+        const double c[3] = {0.5, 0.5, 0}, h[3] = {0.25, 0.25, 0}, v[3] = {0, 0, 0};
+        const int n = fx_box(s, m, c, h, 4, v);
+        CHECK(n == 4 * L * L && n >= SCENE_PARALLEL_MIN);
+        hearth_error err;
+        CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+        double cols = 0;
+        for (int k = 0; k < PC_COUNT; k++)
+            if (s->ps.enabled & (1u << k)) cols += (double)particles_col_bytes(&s->ps, k);
+        const double store = threads > 1 ? 480.0 / 64 : 0; /* bytes a particle, as derived above */
+        const double est = scene_bytes_per_particle(s), held = (double)s->mpm->tiles_cap * sizeof(double) / n;
+        const double span = L / 4 + 1, counted = threads > 1 ? 480 * span * span / n : 0;
+        printf("  %d thread(s), %d cells a side: %d particles, %d particle blocks, estimate %.2f bytes a particle "
+               "(columns %.0f), store held %.2f bytes a particle (counted %.2f)\n",
+               threads, L, n, s->mpm->npb, est, cols, held, counted);
+        CHECK(est == cols + 2 * sizeof(int) + sizeof(double) + store);
+        CHECK(held == counted);
+        CHECK(held >= store);
+        hearth_scene_destroy(s);
+    }
+    hearth_set_threads(0);
+}
+
 TEST(mpm_state_owned_by_solver) {
+    hearth_set_threads(1); /* no tile store: its term is mpm_store_in_estimate's */
     hearth_scene *s = fx_scene(2, 0.05, 0, 1);
     CHECK(s != NULL);
     if (!s) return;
@@ -993,6 +1033,7 @@ TEST(mpm_state_owned_by_solver) {
     CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
     CHECK(st->vol != NULL);
     hearth_scene_destroy(s);
+    hearth_set_threads(0);
 }
 
 /* Plane Couette flow between a resting floor and a lid sliding at U, both
@@ -1389,5 +1430,5 @@ TEST_MAIN(T(bspline_weights), T(transfer_conservation_2d), T(transfer_conservati
           T(vibrating_bar), T(determinism_threads), T(checkpoint_restore), T(guard_nan_plugin), T(guard_plugin_error),
           T(guard_cfl_and_rollback), T(colliders_contact), T(probe_fields), T(stress_tensor_components), T(scene_bad_input), T(alloc_failure_paths),
           T(particles_optional_columns), T(body_force), T(determinism_threads_sticky_damped), T(p2g_gather_matches_colour_phases), T(guard_collider_drive), T(grip_holds_pulled_strip),
-          T(mpm_state_owned_by_solver), T(couette_lid_on_node_row), T(grip_cantilever_clamped_at_face), T(column_base_stress),
+          T(mpm_state_owned_by_solver), T(mpm_store_in_estimate), T(couette_lid_on_node_row), T(grip_cantilever_clamped_at_face), T(column_base_stress),
           T(mpm_periodic_shear_wave), T(mpm_periodic_conserves_momentum), T(mpm_periodic_refusals))

@@ -7,6 +7,7 @@
 #include "material.h"
 
 #include <float.h>
+#include <math.h>
 #include <stdio.h>
 
 #include "alloc.h"
@@ -80,9 +81,43 @@ hearth_status material_table_reserve(material_table *t, hearth_error *err) {
     return HEARTH_OK;
 }
 
+/* Eq. 10's thermal strain divides by the plugin's bulk_modulus (material.h,
+ * material_thermal_scales), asked only when the material expands (c lambda > 0).
+ * A K that is NaN, infinite or <= 0 at the material's own parameters would stop
+ * the run at its first heated step (the guard, FAIL_BULK); ask once here, with a
+ * fresh state from init (poisoned with NaN first, as plugin_check.c does), so
+ * the scene line that adds the material is the one that fails. A K that goes bad
+ * only later (state, curves) is still the guard's. Returns 0 when K is fine. */
+static hearth_status check_bulk_at_params(const material_slot *ms, hearth_error *err) {
+    const hearth_material *m = ms->m;
+    if (!m->bulk_modulus || !(ms->core[CP_EXPANSION] > 0)) return HEARTH_OK;
+    const size_t bytes = sizeof(double) * (size_t)(m->state_size > 0 ? m->state_size : 1);
+    double *state = mem_alloc(bytes);
+    if (!state) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for material '%s'", m->name);
+    for (int i = 0; i < m->state_size; i++) state[i] = NAN;
+    if (m->state_size > 0) {
+        plugin_call_enter(m, "init");
+        m->init(ms->params, state);
+        plugin_call_leave();
+    }
+    plugin_call_enter(m, "bulk_modulus");
+    const double K = m->bulk_modulus(ms->params, m->state_size > 0 ? state : NULL);
+    plugin_call_leave();
+    mem_free(state, bytes);
+    if (K > 0 && K < INFINITY) return HEARTH_OK;
+    return err_set(err, HEARTH_ERR_PARAM,
+                   "material '%s' (%s): bulk_modulus is %g Pa at these parameters (fresh state from init); it must "
+                   "be finite and > 0 for eq. 10's thermal expansion (expansion = %g Pa/K; with 0 K is never asked)",
+                   m->name, hearth_plugin_file(ms->plugin), K, ms->core[CP_EXPANSION]);
+}
+
 int material_table_push(material_table *t, material_slot *ms, hearth_error *err) {
     HEARTH_ASSERT(t->n < t->cap);
     const hearth_material *m = ms->m;
+    if (check_bulk_at_params(ms, err)) {
+        material_slot_free(ms);
+        return -1;
+    }
     if (m->state_size == 0) {
         plugin_call_enter(m, "wave_speed");
         ms->wave_speed = m->wave_speed(ms->params, NULL);

@@ -334,7 +334,7 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
         material_slot_free(&ms);
         return -1;
     }
-    const int id = material_table_push(&s->mats, &ms, err); /* checks a stateless plugin's wave speed */
+    const int id = material_table_push(&s->mats, &ms, err); /* checks a stateless plugin's wave speed, and K when it expands */
     if (id < 0) return -1;
     if (s->solver->material_added && s->solver->material_added(s, id, err)) { /* the solver's per-material data */
         material_slot_free(&s->mats.slot[--s->mats.n]);

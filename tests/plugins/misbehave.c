@@ -16,6 +16,10 @@
  *                 tests/plugins/meson.build): NaN, -1 Pa, or twice the law's
  *                 K = lambda + 2/3 mu, everywhere (a neo-Hookean never yields,
  *                 so `plugin check` must refuse all three)
+ *   bulk_nan_after, bulk_neg_after
+ *                 the law's K at a fresh state, NaN or -1 Pa once stress has
+ *                 advanced `after` times: adding the material passes its
+ *                 early K check (material.c), and only the run's guard sees it
  *   bulk_plastic  the right K, but no tensile strength: once J > 1 the mean
  *                 stress flows to 0 (only the deviatoric part stays) and
  *                 plastic_J reports J^P = J, so `plugin check` can only warn
@@ -95,6 +99,9 @@ static double bulk_modulus(const double *p, const double *state) {
     hearth_lame(p[P_E], p[P_NU], &mu, &lambda);
     if (MODE_IS("bulk_nan")) return NAN;
     if (MODE_IS("bulk_neg")) return -1;
+    const int late = state && state[0] > p[P_AFTER]; /* fine at a fresh state, so the material is added */
+    if (MODE_IS("bulk_nan_after")) return late ? NAN : lambda + 2 * mu / 3;
+    if (MODE_IS("bulk_neg_after")) return late ? -1 : lambda + 2 * mu / 3;
     if (MODE_IS("bulk_plastic")) return lambda + 2 * mu / 3;
     return 2 * (lambda + 2 * mu / 3); /* bulk_off */
 }

@@ -936,13 +936,21 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
  * (2 threads / 1: 1.78x against 1.79x with the colour phases, threads.sh)
  * for 19 bytes a particle of store (237.6 -> 256.8, over issue 20's 240),
  * where 2D at 128 cells went 1.40x -> 1.51x for 8 bytes
- * (docs/performance.md, "Fewer synchronisations a step"). */
+ * (docs/performance.md, "Fewer synchronisations a step"). p2g_store_held
+ * leaves out the particle count: mpm_bytes_per_particle's estimate asks it
+ * for scenes large enough to hold the store. */
+static int p2g_store_held(const hearth_scene *s) {
+#ifdef _OPENMP
+    return s->g.dim == 2 && omp_get_max_threads() > 1 && s->mpm && !s->mpm->colour_phases;
+#else
+    (void)s;
+    return 0;
+#endif
+}
+
 static hearth_status p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *err) {
     mpm_state *m = s->mpm;
-    *gather = 0;
-#ifdef _OPENMP
-    *gather = s->g.dim == 2 && s->ps.n >= SCENE_PARALLEL_MIN && omp_get_max_threads() > 1 && !m->colour_phases;
-#endif
+    *gather = s->ps.n >= SCENE_PARALLEL_MIN && p2g_store_held(s);
     if (!*gather) return HEARTH_OK;
     const size_t per = s->g.dim == 2 ? P2G_STORE_NCH(2) * P2G_HALO(2) : P2G_STORE_NCH(3) * P2G_HALO(3), need = per * (size_t)m->npb;
     if (need > m->tiles_cap) {
@@ -1078,10 +1086,16 @@ static void mpm_region(const hearth_scene *s, double lo[3], double hi[3]) {
 
 /* order; the keys (the permutation's scratch) and P2G's volumes, counted
  * whether or not heat or water is on yet (either may turn on after the
- * particles are seeded) */
+ * particles are seeded); and where the tile store will be held (2D, more
+ * than one thread: p2g_store_reserve) a particle's share of it: one tile
+ * (P2G_STORE_NCH x P2G_HALO doubles) per particle block, a block's 16 cells
+ * full at s:add's default ppc 4, 64 particles (3 x 20 x 8 / 64 = 7.5 bytes;
+ * `hearth bench --threads 2 --dim 2 --cells 128` measured 8.3, its edge
+ * blocks part full). A sparser seeding holds more per particle. */
 static double mpm_bytes_per_particle(const hearth_scene *s) {
-    (void)s;
-    return 2 * sizeof(int) + sizeof(double);
+    double b = 2 * sizeof(int) + sizeof(double);
+    if (p2g_store_held(s)) b += (double)(sizeof(double) * P2G_STORE_NCH(2) * P2G_HALO(2)) / (4 * GRID_B * GRID_B);
+    return b;
 }
 
 /* The grid is the scene's; the step scratch is MPM's own (mpm_state); its
