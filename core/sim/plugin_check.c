@@ -233,6 +233,21 @@ static void check_frame(check_rig *r) {
     check_report(r, "frame_indifference", bad < 0, detail);
 }
 
+/* The parameters at one corner of the schema: the defaults with parameter i
+ * pinned at its min (side 0) or max (side 1), or with i = -1 every parameter
+ * there (the loader's all-min and all-max corners); at names the corner. */
+static void check_corner(check_rig *r, int i, int side, char at[160]) {
+    check_defaults(r);
+    if (i >= 0) {
+        const hearth_param *q = &r->m->params[i];
+        r->p[i] = side ? q->max : q->min;
+        snprintf(at, 160, "%s = %g %s (%s)", q->name, r->p[i], q->unit, side ? "max" : "min");
+    } else {
+        for (int j = 0; j < r->m->nparams; j++) r->p[j] = side ? r->m->params[j].max : r->m->params[j].min;
+        snprintf(at, 160, "every parameter at its %s", side ? "max" : "min");
+    }
+}
+
 /* One parameter pinned at a bound (i >= 0), or every parameter at its min or
  * max (i = -1: the loader's all-min and all-max corners), then 5 steps of
  * shear and stretch. Returns 1 on pass; on failure writes why into detail.
@@ -244,15 +259,7 @@ static int check_extreme_case(check_rig *r, int i, int side, char *detail, char 
     const double L[9] = {0.05 / dt, 0.1 / dt, 0, 0, -0.03 / dt, 0, 0, 0, 0.02 / dt};
     double F[9], A[9], Fn[9], tau[9];
     char at[160];
-    check_defaults(r);
-    if (i >= 0) {
-        const hearth_param *q = &r->m->params[i];
-        r->p[i] = side ? q->max : q->min;
-        snprintf(at, sizeof at, "%s = %g %s (%s)", q->name, r->p[i], q->unit, side ? "max" : "min");
-    } else {
-        for (int j = 0; j < r->m->nparams; j++) r->p[j] = side ? r->m->params[j].max : r->m->params[j].min;
-        snprintf(at, sizeof at, "every parameter at its %s", side ? "max" : "min");
-    }
+    check_corner(r, i, side, at);
     check_init(r);
     t3_identity(F);
     for (int s = 0; s < 5; s++) {
@@ -412,16 +419,8 @@ static void check_bulk(check_rig *r) {
     /* the parameter corners: each at its min and max, then all at min and all at max */
     for (int i = -1; i < m->nparams; i++)
         for (int side = 0; side < 2; side++) {
-            check_defaults(r);
             char at[160];
-            if (i >= 0) {
-                const hearth_param *q = &m->params[i];
-                r->p[i] = side ? q->max : q->min;
-                snprintf(at, sizeof at, "%s = %g %s (%s)", q->name, r->p[i], q->unit, side ? "max" : "min");
-            } else {
-                for (int j = 0; j < m->nparams; j++) r->p[j] = side ? m->params[j].max : m->params[j].min;
-                snprintf(at, sizeof at, "every parameter at its %s", side ? "max" : "min");
-            }
+            check_corner(r, i, side, at);
             check_init(r);
             const double K = check_bulk_value(r);
             if (!check_bulk_ok(K)) {
