@@ -309,11 +309,12 @@ hearth_status vtu_write_range(const hearth_scene *s, const char *path, size_t lo
     vtu_point_arrays(s, sc.names, piece_tag, &(piece_tags){&d, &off, n});
     put_text(&d, "</PointData>\n</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_");
 
-    /* The appended block, in the order of the offsets above. */
+    /* The appended block, in the order of the offsets above. An empty piece
+     * (no particles yet) writes its counts alone: its columns may be NULL. */
     vtu_count(&d, sizeof(double));
     put_le(&d, &stats.t, sizeof(double), 1);
     vtu_count(&d, 3 * sizeof(double) * n);
-    put_le(&d, hearth_scene_positions(s) + 3 * lo, sizeof(double), 3 * n);
+    if (n) put_le(&d, hearth_scene_positions(s) + 3 * lo, sizeof(double), 3 * n);
     vtu_ramp(&d, n, 0);
     vtu_ramp(&d, n, 1);
     vtu_count(&d, n);
@@ -321,9 +322,9 @@ hearth_status vtu_write_range(const hearth_scene *s, const char *path, size_t lo
     memset(vertex, 1, sizeof vertex); /* VTK_VERTEX */
     for (size_t i = 0; i < n; i += sizeof vertex) put_bytes(&d, vertex, n - i < sizeof vertex ? n - i : sizeof vertex);
     vtu_count(&d, sizeof(int32_t) * n);
-    put_le(&d, hearth_scene_particle_ids(s) + lo, sizeof(int32_t), n); /* int is 32 bits on every host hearth builds on */
+    if (n) put_le(&d, hearth_scene_particle_ids(s) + lo, sizeof(int32_t), n); /* int is 32 bits on every host hearth builds on */
     vtu_count(&d, sizeof(double) * n);
-    put_le(&d, hearth_scene_particle_masses(s) + lo, sizeof(double), n);
+    if (n) put_le(&d, hearth_scene_particle_masses(s) + lo, sizeof(double), n);
     if (!(st = particle_volumes(s, sc.buf, path, err))) {
         vtu_count(&d, sizeof(double) * n);
         put_le(&d, sc.buf + lo, sizeof(double), n);
