@@ -26,7 +26,15 @@ hl_scene *hl_checkscene(lua_State *L, int idx) {
 int hl_raise(lua_State *L, const hearth_error *err) {
     /* a marked object, so `hearth run` can tell a guard stop (exit 3) from a script error */
     if (err->code == HEARTH_ERR_GUARD) return hl_raise_kind(L, "guard", err->msg);
-    return luaL_error(L, "%s", err->msg);
+    /* luaL_error's position is the caller's line: the scene's when scene code
+     * calls the core directly, but a line of hearth's own Lua modules when a
+     * wrapper does, and the wrapper re-raises at the scene's line anyway
+     * (error(msg, 2)); so an internal position is left out */
+    luaL_where(L, 1);
+    const char *where = lua_tostring(L, -1);
+    if (!strncmp(where, "[hearth]/", 9)) lua_pushstring(L, err->msg);
+    else lua_pushfstring(L, "%s%s", where, err->msg);
+    return lua_error(L);
 }
 
 /* core.scene_settings() -> the schema (hearth_scene_settings) as a list of
