@@ -111,8 +111,9 @@ D.goods = {
     saturation = 0.304,                        -- 0.38 x 800 / 1000
     water_diffusivity_m2s = 2e-9, evaporation = 1.2e-5,
     -- a batter flows: E 1e4, yield 20 Pa, viscosity 1e2 Pa s (batters are 1-100 Pa s fluids; chosen at the top, so
-    -- it stands in its cup while it heats), setting at 70 degC
-    E = 1e4, nu = 0.3, tau_y = 20, mu = 100, max_porosity = 0.6,
+    -- it stands in its cup while it heats), soft to 55 degC and set by 70 degC (lua/hearth/dough.lua, MUFFIN_SET,
+    -- the same curve as h.library.paper.muffin's: a batter thickens only at starch gelatinisation)
+    E = 1e4, nu = 0.3, tau_y = 20, mu = 100, max_porosity = 0.6, curve = "muffin",
     -- CO2 as bread's: the paper muffin's over muffins.lua's 3 s
     gas_rate = 0.03 / 600 * 2.5 * 3 / 1320, reaction_temperature = 40, reaction_width = 20, porosity = 0.1,
     expansion = 0.1, dough_temperature = 20,

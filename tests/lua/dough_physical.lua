@@ -18,9 +18,14 @@ for _, name in ipairs { "bread", "cookie", "muffin" } do
   assert(xw > 0.15 and xw < 0.46, name .. ": water mass fraction " .. xw)
   -- eta = 2 tau_y^2 mu / S at each point of Fig. 8
   local ty, eta = d.tau_y, d.eta
-  local np = name == "cookie" and 5 or 4 -- the cookie's set at 71-78 degC (lua/hearth/dough.lua, COOKIE_SET)
+  -- the cookie's set at 71-78 degC, the muffin batter's at 55-70 (lua/hearth/dough.lua, COOKIE_SET, MUFFIN_SET):
+  -- both hold the melted value to their set's start; bread keeps Fig. 8's four points
+  local np = name == "bread" and 4 or 5
   assert(ty.irreversible and eta.irreversible and #ty == np and #eta == np, name .. ": Fig. 8's curves")
   assert(ty[np][1] == (name == "cookie" and 78 or 70) and ty[np][2] == 20 * ty[1][2], name .. ": sets x20")
+  if np == 5 then
+    assert(ty[4][1] == (name == "cookie" and 71 or 55) and ty[4][2] == ty[3][2], name .. ": soft until its set starts")
+  end
   local mu1 = eta[1][2] * S / (2 * ty[1][2] ^ 2)
   assert(mu1 >= 100 and mu1 <= 1e6, name .. ": the viscosity behind eta, Pa s: " .. mu1)
   h.material("cam_clay_dough", d) -- passes the plugin's schema
