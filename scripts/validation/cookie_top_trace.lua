@@ -18,20 +18,23 @@
 --     (cookies.lua's measure, 9 samples over the middle third);
 --   * which parts have set: the temperature (tau_y follows the largest reached,
 --     irreversible; in the oven a particle's temperature only rises) at the top
---     centre, the bottom centre and the rim, and the share of the cookie past 71
+--     centre, the bottom centre, the rim and the centre (last column), and the share of the cookie past 71
 --     and 78 degC (COOKIE_SET's set points);
 --   * the rim's speed (m/s): how fast it still spreads.
 --   hearth run scripts/validation/cookie_top_trace.lua --quiet [--set dx=0.005]
 --   [--set gas=1] (the leavened twin, leavener 0.015) [--set frames=25] [--set seed=2]
 --   [--set eta=0.1] [--set tau=0.5]  factors on the preset's eta and tau_y curves (what spreading longer does)
 --   [--set friction=0] [--set tray_mode=sticky]  the tray's contact (h.recipes.tray; cookies.lua's: separate, 0.4)
+--   [--set conductivity=0.01 --set until_t=8]  a factor on Table 2's kappa (0.01: a real dough's, Biot ~1.5, so the
+--                   top, rim and base heat first; cookies.lua's lever of the same name), with a bake long enough to set it
 local h = require "hearth"
 local P = h.params { dx = 0.005, until_t = 2.5, frames = 25, gas = 0, seed = 1, vent = 5, eta = 1, tau = 1, friction = 0.4,
-  tray_mode = "separate", png = true }
+  tray_mode = "separate", png = true, conductivity = 1 }
 local TRAY, SLOT, R, THICK = 0.02, 0.18, 0.03, 0.025
 local X = SLOT / 2
 local d = h.library.paper.cookie
 d.gas_rate = 0.015 * h.library.dough_scale.gas * P.gas
+d.conductivity = d.conductivity * P.conductivity
 if P.eta ~= 1 or P.tau ~= 1 then -- scale the curves (point lists of h.curve)
   local function scaled(c, f)
     local pts = { irreversible = true }
@@ -50,8 +53,9 @@ s:add { shape = h.shapes.cookie({ X, TRAY + THICK / 2 }, R, THICK), material = h
   temperature = oven.dough_temperature, ppc = 4 }
 -- frames (--set png=false: none): hearth-out/cookie_top_trace/top_%04d.png, coloured by temperature
 
--- marked particles: nearest to the top centre, the bottom centre and the left rim at mid-height
-local marks = { { "top", X, TRAY + THICK }, { "bottom", X, TRAY }, { "rim", X - R - THICK / 2, TRAY + THICK / 2 } }
+-- marked particles: nearest to the top centre, the bottom centre, the left rim at mid-height and the centre
+local marks = { { "top", X, TRAY + THICK }, { "bottom", X, TRAY }, { "rim", X - R - THICK / 2, TRAY + THICK / 2 },
+  { "centre", X, TRAY + THICK / 2 } }
 local r0 = s:particles { fields = { "id", "x" } }
 for _, m in ipairs(marks) do
   local best = math.huge
@@ -78,7 +82,7 @@ local function probe_curvature(w) -- cookies.lua's measure: the density line's t
 end
 
 print("t_s,H_mm,w_mm,sag_third_mm,h_third,h_half,h_two_thirds,k_particles,k_probe,k_huppert,"
-  .. "T_top,T_bottom,T_rim,set71,set78,rim_speed_m_s")
+  .. "T_top,T_bottom,T_rim,set71,set78,rim_speed_m_s,T_centre")
 s:run { until_t = P.until_t, every = P.until_t / P.frames,
   png = P.png and { field = "temperature", path = "top_%04d.png" } or nil, on_frame = function(f)
   local r = s:particles { fields = { "id", "x", "v", "temperature" } }
@@ -109,7 +113,7 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames,
   local function rel(xi) return (top_at(xi * xN) + top_at(-xi * xN)) / (2 * H) end
   local sag = H - (top_at(w / 6) + top_at(-w / 6)) / 2
   local kp = h.top_curvature(s, { keep = function() return true end, origin = X, bin = P.dx, fraction = 0.6 })
-  print(("%.2f,%.2f,%.1f,%.3f,%.3f,%.3f,%.3f,%.2f,%.2f,%.2f,%.1f,%.1f,%.1f,%.2f,%.2f,%.4f"):format(f.t, H * 1e3, w * 1e3,
+  print(("%.2f,%.2f,%.1f,%.3f,%.3f,%.3f,%.3f,%.2f,%.2f,%.2f,%.1f,%.1f,%.1f,%.2f,%.2f,%.4f,%.1f"):format(f.t, H * 1e3, w * 1e3,
     sag * 1e3, rel(1 / 3), rel(0.5), rel(2 / 3), kp, probe_curvature(w), -2 * H / (3 * xN * xN), T.top or -1,
-    T.bottom or -1, T.rim or -1, n71 / r.n, n78 / r.n, rim_v))
+    T.bottom or -1, T.rim or -1, n71 / r.n, n78 / r.n, rim_v, T.centre or -1))
 end }
