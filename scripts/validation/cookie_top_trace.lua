@@ -36,9 +36,9 @@ local d = h.library.paper.cookie
 d.gas_rate = 0.015 * h.library.dough_scale.gas * P.gas
 d.conductivity = d.conductivity * P.conductivity
 if P.eta ~= 1 or P.tau ~= 1 then -- scale the curves (point lists of h.curve)
-  local function scaled(c, f)
+  local function scaled(c, f) -- c: D.preset's point list
     local pts = { irreversible = true }
-    for i, p in ipairs(c.points or c) do pts[i] = { p[1], p[2] * f } end
+    for i, p in ipairs(c) do pts[i] = { p[1], p[2] * f } end
     return h.curve(pts)
   end
   local D = require "hearth.dough"
