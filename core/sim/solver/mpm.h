@@ -154,6 +154,18 @@ void mpm_scratch_free(mpm_state *m);
 void mpm_periodic_wrap_all(hearth_scene *s);
 void mpm_periodic_mark(const hearth_scene *s, unsigned char *mark);
 void mpm_periodic_fold(hearth_scene *s, int unfold);
+/* mpm_p2g_gather.c: the usual step's P2G at more than one thread in 2D keeps each particle block's tile (own
+ * part in its block's nodes, halo in the store) and the grid update gathers them in colour order */
+/// Whether the store is held (2D, more than one thread, not HEARTH_MPM_COLOUR_PHASES); leaves out the particle count.
+int mpm_p2g_store_held(const hearth_scene *s);
+/// After the sort: *gather, whether this step gathers, and room in the store for its particle blocks when it does.
+hearth_status mpm_p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *err);
+/// Particle block k (block coordinates bc) keeps its P2G tile: own part into its nodes, halo into the store.
+void mpm_p2g_keep_tile(hearth_scene *s, int D, int k, const int bc[3], const double *tile);
+/// Active block k's node sums from the kept tiles that reach it, in colour order (the colour phases' bits).
+void mpm_p2g_gather(hearth_scene *s, int k);
+/// The store's bytes a particle for the memory estimate (0 where it is not held).
+double mpm_p2g_store_bytes_per_particle(const hearth_scene *s);
 void mpm_p2g(hearth_scene *s, double dt, step_report *rep);
 /// Returns the largest collider speed (m/s) at a node with mass that a collider set.
 double mpm_grid_update(hearth_scene *s, double dt);
