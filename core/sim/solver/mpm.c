@@ -90,7 +90,6 @@ static void mpm_free(hearth_scene *s) {
     mem_free(m->mark, (size_t)m->nblocks);
     mem_free(m->hist, sizeof(int) * m->histcap);
     mem_free(m->pbof, sizeof(int) * (size_t)m->nblocks);
-    mem_free(m->tiles, sizeof(double) * m->tiles_cap);
     mpm_two_field_free(m);
     mpm_ranks_free(m);
     mem_free(m, sizeof *m);
@@ -957,9 +956,10 @@ static void mpm_region(const hearth_scene *s, double lo[3], double hi[3]) {
 /* order; the keys (the permutation's scratch) and P2G's volumes, counted
  * whether or not heat or water is on yet (either may turn on after the
  * particles are seeded); and the gather's tile store where it will be held
- * (mpm_p2g_gather.c). */
+ * (mpm_p2g_gather.c), which shares order and keys' room. */
 static double mpm_bytes_per_particle(const hearth_scene *s) {
-    return 2 * sizeof(int) + sizeof(double) + mpm_p2g_store_bytes_per_particle(s);
+    const double keys = 2 * sizeof(int), tiles = mpm_p2g_store_bytes_per_particle(s); /* the tiles in the keys' room */
+    return (keys > tiles ? keys : tiles) + sizeof(double);
 }
 
 /* The grid is the scene's; the step scratch is MPM's own (mpm_state); its

@@ -34,8 +34,11 @@ typedef struct mpm_state {
     /* the sort's per-particle scratch, scratch_cap long: G2P writes the keys,
      * the sort reads them into order, and the permutation then takes the
      * keys' room as its scratch (particles_permute: 8 bytes a particle in
-     * all, where a separate n doubles for the permutation made 12) */
+     * all, where a separate n doubles for the permutation made 12). One
+     * block of scratch_bytes (at least 8 scratch_cap): keys, then order, then
+     * any room the gather's tile store asked for (tiles below) */
     int *keys, *order;
+    size_t scratch_bytes;
     int keys_n;             /* keys hold the blocks of these many particles, written by G2P */
     long keys_step;         /* for the positions after this step: a rolled back step's keys do not count */
     unsigned long keys_edits; /* ps.edits when G2P filed them */
@@ -52,9 +55,10 @@ typedef struct mpm_state {
     pblock *pb;
     int npb, pbcap;
     int *colour_pb;         /* pb indices grouped by colour */
-    /* step_team's gather path (more than one thread): each particle block's P2G tile (momentum channels,
-     * P2G_STORE_NCH x GRID_T^dim doubles each), and per block of the box the particle block there
-     * (nblocks; -1 where none, and everywhere between steps) */
+    /* step_team's gather path (mpm_p2g_gather.c): each particle block's kept halo (P2G_STORE_NCH x P2G_HALO
+     * doubles each), tiles_cap doubles in all this step (0 when it does not gather), in the sort's scratch
+     * (keys and order are dead from the end of the sort until G2P files the next keys, after the gather);
+     * and per block of the box the particle block there (nblocks; -1 where none, and everywhere between steps) */
     double *tiles;
     size_t tiles_cap;
     int *pbof;
@@ -147,6 +151,10 @@ static inline int clamp_to_grid(const grid *g, double *x) {
 hearth_status mpm_sort(hearth_scene *s, hearth_error *err);
 /// Release the sort's per-particle scratch (mpm_sort.c).
 void mpm_scratch_free(mpm_state *m);
+/// The sort's scratch at least bytes long, between the sort and G2P (its
+/// keys and order are dead then; the keys stay invalid, keys_n -1): the
+/// gather's tile store (mpm_p2g_gather.c). Fails only for memory.
+hearth_status mpm_scratch_room(hearth_scene *s, size_t bytes, hearth_error *err);
 /// Along the periodic axes: every particle into the period; the blocks
 /// holding the nodes the marked blocks' ghosts stand for; the ghosts' mass
 /// and momentum onto their nodes (unfold 0) and their nodes' velocity back

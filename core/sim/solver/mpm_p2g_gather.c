@@ -122,8 +122,7 @@ void mpm_p2g_gather(hearth_scene *s, int k) {
 }
 
 /* Whether step_team gathers (a 2D team of more than one thread), and room in
- * the tile store for this step's particle blocks when it does (grown by half
- * when short; the contents are rewritten by every step). One thread keeps
+ * the tile store for this step's particle blocks when it does. One thread keeps
  * the colour phases' flush: the same bits, without the store's traffic. 3D
  * keeps them too: on a quiet machine the gather gave 3D at 32 cells nothing
  * (2 threads / 1: 1.78x against 1.79x with the colour phases, threads.sh)
@@ -141,19 +140,24 @@ int mpm_p2g_store_held(const hearth_scene *s) {
 #endif
 }
 
+/* The store lives in the sort's scratch (mpm_scratch_room): from the end of
+ * the sort to G2P, which files the next step's keys after the grid update's
+ * barrier (every gather done), keys and order hold nothing, and their 8 bytes
+ * a particle hold the store of full blocks (7.5); the block grows, exactly,
+ * only where the store needs more (blocks part full at a body's edges). Its
+ * own array, grown by half when short, held 8.3 bytes a particle more at 2D
+ * 128 cells (164.7 bytes a particle at 2 threads against 156.3 at one). */
 hearth_status mpm_p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *err) {
     mpm_state *m = s->mpm;
     *gather = s->ps.n >= SCENE_PARALLEL_MIN && mpm_p2g_store_held(s);
+    m->tiles_cap = 0;
+    m->tiles = NULL;
     if (!*gather) return HEARTH_OK;
     const size_t per = s->g.dim == 2 ? P2G_STORE_NCH(2) * P2G_HALO(2) : P2G_STORE_NCH(3) * P2G_HALO(3), need = per * (size_t)m->npb;
-    if (need > m->tiles_cap) {
-        const size_t cap = m->tiles_cap + m->tiles_cap / 2 > need ? m->tiles_cap + m->tiles_cap / 2 : need;
-        mem_free(m->tiles, sizeof(double) * m->tiles_cap);
-        m->tiles_cap = 0;
-        if (!(m->tiles = mem_alloc(sizeof(double) * cap)))
-            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for P2G's tiles of %d particle blocks", m->npb);
-        m->tiles_cap = cap;
-    }
+    if (mpm_scratch_room(s, sizeof(double) * need, err))
+        return err_set(err, HEARTH_ERR_NOMEM, "out of memory for P2G's tiles of %d particle blocks", m->npb);
+    m->tiles = (double *)(void *)m->keys; /* the allocator's alignment, as for any block of doubles */
+    m->tiles_cap = need;
     return HEARTH_OK;
 }
 
@@ -162,7 +166,9 @@ hearth_status mpm_p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *
  * P2G_HALO doubles) per particle block, a block's 16 cells full at s:add's
  * default ppc 4, 64 particles (3 x 20 x 8 / 64 = 7.5 bytes; `hearth bench
  * --threads 2 --dim 2 --cells 128` measured 8.3, its edge blocks part full).
- * A sparser seeding holds more per particle. */
+ * A sparser seeding holds more per particle. It shares the room of the
+ * sort's order and keys (mpm_p2g_store_reserve): the estimate counts the
+ * larger of the two. */
 double mpm_p2g_store_bytes_per_particle(const hearth_scene *s) {
     if (!mpm_p2g_store_held(s)) return 0;
     return (double)(sizeof(double) * P2G_STORE_NCH(2) * P2G_HALO(2)) / (4 * GRID_B * GRID_B);
