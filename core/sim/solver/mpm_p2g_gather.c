@@ -5,8 +5,9 @@
  * (mpm_p2g_keep_tile); after one barrier the grid update gathers each
  * block's node sums from the tiles that reach it, in colour order, with the
  * flush's test (mpm_p2g_gather): the same sums in the same order as the
- * colour phases, so the same bits. The store is sized here
- * (mpm_p2g_store_reserve) and counted in the memory estimate
+ * colour phases, so the same bits. The store lives in the room of the
+ * sort's order and keys, dead while it is live (mpm_p2g_store_reserve), and
+ * the memory estimate counts the larger of the two
  * (mpm_p2g_store_bytes_per_particle). Why 2D only, and what the gather and its
  * store cost: docs/performance.md, "Fewer synchronisations a step". */
 #include <stddef.h>
