@@ -975,7 +975,10 @@ TEST(grip_holds_pulled_strip) {
  * L / 4 + 1 particle blocks a side (a particle's block is its B-spline base
  * node's, half a cell back), so its store holds 480 (L / 4 + 1)^2 bytes for
  * 4 L^2 particles: 9.49 a particle at L = 32, 8.14 at L = 96, counted here
- * from tiles_cap after a step at two threads. */
+ * from tiles_cap after a step at two threads. The store lives in the room of
+ * the sort's order and keys (8 bytes a particle, dead between the sort and
+ * G2P; mpm_p2g_store_reserve): the scratch block holds the larger of the
+ * two, and the estimate counts the larger of 8 and 7.5. */
 TEST(mpm_store_in_estimate) {
     for (int run = 0; run < 3; run++) {
         const int threads = run == 0 ? 1 : 2, L = run < 2 ? 32 : 96;
@@ -995,12 +998,17 @@ TEST(mpm_store_in_estimate) {
         const double store = threads > 1 ? 480.0 / 64 : 0; /* bytes a particle, as derived above */
         const double est = scene_bytes_per_particle(s), held = (double)s->mpm->tiles_cap * sizeof(double) / n;
         const double span = L / 4 + 1, counted = threads > 1 ? 480 * span * span / n : 0;
+        const double keys = 2.0 * sizeof(int) * s->mpm->scratch_cap, scratch = (double)s->mpm->scratch_bytes;
         printf("  %d thread(s), %d cells a side: %d particles, %d particle blocks, estimate %.2f bytes a particle "
-               "(columns %.0f), store held %.2f bytes a particle (counted %.2f)\n",
-               threads, L, n, s->mpm->npb, est, cols, held, counted);
-        CHECK(est == cols + 2 * sizeof(int) + sizeof(double) + store);
+               "(columns %.0f), store held %.2f bytes a particle (counted %.2f), the sort's scratch %.2f "
+               "(order and keys %.2f)\n",
+               threads, L, n, s->mpm->npb, est, cols, held, counted, scratch / n, keys / n);
+        CHECK(est == cols + (2 * sizeof(int) > store ? 2 * sizeof(int) : store) + sizeof(double));
         CHECK(held == counted);
         CHECK(held >= store);
+        /* the store in order and keys' block, which grew only by what it lacked */
+        CHECK(threads == 1 || s->mpm->tiles == (double *)(void *)s->mpm->keys);
+        CHECK(scratch == (keys > held * n ? keys : held * n));
         hearth_scene_destroy(s);
     }
     hearth_set_threads(0);

@@ -234,6 +234,70 @@ TEST(particles_permute_orders) {
     hearth_set_threads(0);
 }
 
+/* At two threads a 2D step keeps each particle block's P2G tile, and the
+ * tiles' halo store lives in the room of the sort's order and keys (dead from
+ * the end of the sort until G2P files the next keys, after the gather:
+ * mpm_p2g_gather.c). A square of 32 cells at ppc 4 needs 9.49 bytes a
+ * particle of store against their 8, so the scratch block grows, exactly, in
+ * the step. With every allocation of the first step made to fail in turn,
+ * each failure is reported (one of them the store's, by name), the scene
+ * steps on after it to the same bits as a run that never failed (the sort's
+ * scratch made again), and every byte is freed with its size. */
+static hearth_scene *store_scene(int *n) {
+    hearth_scene *s = scene_2d(0.5 / 32);
+    const int m = fx_elastic(s, 1e4, 0.3, 1000);
+    const double c[3] = {0.5, 0.5, 0}, h[3] = {0.25, 0.25, 0}, v[3] = {0.2, -0.3, 0};
+    *n = fx_box(s, m, c, h, 4, v);
+    return s;
+}
+
+TEST(gather_store_in_sort_scratch) {
+    hearth_set_threads(2);
+    const size_t before = hearth_bytes_allocated();
+    int n;
+    hearth_error err;
+    hearth_scene *s = store_scene(&n);
+    CHECK(n >= SCENE_PARALLEL_MIN);
+    CHECK(hearth_scene_step(s, 3, &err) == HEARTH_OK);
+    const uint64_t h0 = hearth_scene_hash(s);
+    const mpm_state *m = mpm_state_of(s);
+    const double store = (double)m->tiles_cap * sizeof(double);
+    printf("  %d particles, %d particle blocks: store %.2f bytes a particle, the sort's scratch %.2f (order and keys "
+           "%.2f), hash %016llx\n",
+           n, m->npb, store / n, (double)m->scratch_bytes / n, 8.0 * m->scratch_cap / n, (unsigned long long)h0);
+    CHECK(store > 8.0 * m->scratch_cap); /* the case that grows the block */
+    CHECK(m->tiles == (const double *)(const void *)m->keys && (double)m->scratch_bytes == store);
+    hearth_scene_destroy(s);
+    const size_t base = hearth_bytes_allocated(); /* the plugin cache keeps its first entry */
+    printf("  held after the first scene: %zu bytes more than before it\n", base - before);
+    CHECK(base - before <= 4096);
+    int failures = 0, store_failures = 0;
+    for (long k = 0; k < 100; k++) {
+        s = store_scene(&n);
+        mem_fail_after(k);
+        const hearth_status st = hearth_scene_step(s, 1, &err);
+        mem_fail_after(-1);
+        if (st == HEARTH_OK) {
+            hearth_scene_destroy(s);
+            break;
+        }
+        failures++;
+        CHECK(st == HEARTH_ERR_NOMEM);
+        const int named = strstr(err.msg, "P2G's tiles") != NULL;
+        store_failures += named;
+        if (named) printf("  injected failure %ld: %s\n", k, err.msg);
+        CHECK(hearth_scene_step(s, 3, &err) == HEARTH_OK); /* on after the failure, all of it again */
+        const uint64_t h = hearth_scene_hash(s);
+        if (h != h0) printf("  injected failure %ld (%s): hash %016llx after 3 steps\n", k, err.msg, (unsigned long long)h);
+        CHECK(h == h0);
+        hearth_scene_destroy(s);
+        CHECK(hearth_bytes_allocated() == base);
+    }
+    printf("  %d allocations of the first step failed in turn, %d of them the store's\n", failures, store_failures);
+    CHECK(failures > 0 && store_failures == 1);
+    hearth_set_threads(0);
+}
+
 /* Zero bytes are not out of memory (#21): a rank whose slab holds no
  * particle sizes its step scratch by 0, and a NULL from mem_alloc(0) was
  * reported as "out of memory for 0 particle volumes" on that rank alone. The
@@ -266,4 +330,4 @@ TEST(alloc_zero_is_not_out_of_memory) {
 
 TEST_MAIN(T(seed_reserves_exactly), T(alloc_zero_is_not_out_of_memory), T(particles_grow_by_half), T(growth_peak_bounded), T(sort_keys_from_g2p),
           T(determinism_threads_2d_bookkeeping),
-          T(particles_permute_orders))
+          T(particles_permute_orders), T(gather_store_in_sort_scratch))

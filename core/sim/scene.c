@@ -161,9 +161,10 @@ size_t hearth_scene_bytes_used(const hearth_scene *s) {
     if (s->def.guard == HEARTH_GUARD_ROLLBACK) b *= 2; /* the snapshot holds the same columns */
     const mpm_state *m = mpm_state_of(s);
     if (m) { /* what the MPM step's scratch holds for these particles, and its particle blocks */
-        b += (double)s->ps.n * (2 * sizeof(int) + (m->vol ? sizeof(double) : 0)); /* order, keys, volumes */
+        /* order and keys; P2G's stored tiles (the gather, 2D at more than one thread) in their room; volumes */
+        const double keys = (double)s->ps.n * 2 * sizeof(int), tiles = (double)m->tiles_cap * sizeof(double);
+        b += (keys > tiles ? keys : tiles) + (double)s->ps.n * (m->vol ? sizeof(double) : 0);
         b += (double)m->npb * (sizeof(pblock) + sizeof(int) + sizeof(pb_partial)) + (double)m->histcap * sizeof(int);
-        b += (double)m->tiles_cap * sizeof(double); /* P2G's stored tiles (step_team's gather, more than one thread) */
     } else {
         b += s->solver->bytes_per_particle(s) * s->ps.n;
     }

@@ -18,7 +18,7 @@
  * every node sums its contributions in the same order whatever the thread
  * count. No atomics. With more than one thread, the usual step (step_team)
  * keeps every block's tile instead and the grid update gathers each node's
- * sum from the tiles in the same colour order (p2g_gather_block): the same
+ * sum from the tiles in the same colour order (mpm_p2g_gather.c): the same
  * bits, with one barrier where the colour phases take 2^dim.
  *
  * P2G scatters each particle into a dense 6^dim tile, then adds the tile into
@@ -90,7 +90,6 @@ static void mpm_free(hearth_scene *s) {
     mem_free(m->mark, (size_t)m->nblocks);
     mem_free(m->hist, sizeof(int) * m->histcap);
     mem_free(m->pbof, sizeof(int) * (size_t)m->nblocks);
-    mem_free(m->tiles, sizeof(double) * m->tiles_cap);
     mpm_two_field_free(m);
     mpm_ranks_free(m);
     mem_free(m, sizeof *m);
@@ -143,50 +142,6 @@ FORCE_INLINE void p2g_add2(double *p, v2d x) {
     memcpy(p, &y, sizeof y);
 }
 
-/* step_team's gather path (momentum only) keeps each particle block's tile
- * until every block has scattered: the part over its own block (GRID_B^dim
- * nodes) in that block's nodes, which nothing else writes before the gather,
- * and the halo over its +1 neighbours in the store, as one box for each set
- * of axes o (bit d: +1 along axis d) of GRID_T - GRID_B nodes along those
- * axes and GRID_B along the others, in o's order, channel by channel: 20
- * nodes a block in 2D, 152 in 3D (of 36 and 216). 2D writes no z momentum. */
-#define P2G_STORE_NCH(D) ((D) == 2 ? 3 : GRID_NCH_MOMENTUM)
-#define P2G_HALO(D) ((D) == 2 ? GRID_T * GRID_T - GRID_B * GRID_B : GRID_T * GRID_T * GRID_T - GRID_B * GRID_B * GRID_B)
-/* the nodes of halo box o, and where it starts in a block's store (channel 0) */
-FORCE_INLINE int halo_nodes(const int D, int o) {
-    int n = 1;
-    for (int d = 0; d < D; d++) n *= o >> d & 1 ? GRID_T - GRID_B : GRID_B;
-    return n;
-}
-FORCE_INLINE int halo_start(const int D, int o) {
-    int n = 0;
-    for (int q = 1; q < o; q++) n += halo_nodes(D, q);
-    return P2G_STORE_NCH(D) * n;
-}
-
-/* the tile's part over block bc's own nodes into them, and its halo into the store at halo (p2g_block's STORE) */
-FORCE_INLINE void p2g_keep_tile(const grid *g, const int D, const int bc[3], const double *tile, double *halo) {
-    const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T, NPB = g->nodes_per_block, NCH = P2G_STORE_NCH(D);
-    for (int o = 0; o < (1 << D); o++) {
-        const int o0 = o & 1 ? GRID_B : 0, o1 = o & 2 ? GRID_B : 0, o2 = o & 4 ? GRID_B : 0;
-        const int n0 = o0 ? GRID_T - GRID_B : GRID_B, n1 = o1 ? GRID_T - GRID_B : GRID_B,
-                  n2 = D == 3 ? (o2 ? GRID_T - GRID_B : GRID_B) : 1, nn = n0 * n1 * n2;
-        int l;
-        double *node = o ? NULL : grid_tile_node(g, D, bc, 0, 0, 0, &l);
-        double *box = o ? halo + halo_start(D, o) : NULL;
-        for (int a = 0; a < n0; a++)
-            for (int b = 0; b < n1; b++)
-                for (int e = 0; e < n2; e++) {
-                    const int t = D == 2 ? (a + o0) * GRID_T + b + o1 : ((a + o0) * GRID_T + b + o1) * GRID_T + e + o2;
-                    const int i = (a * n1 + b) * n2 + e; /* o = 0: the node's index in its block */
-                    for (int ch = 0; ch < NCH; ch++) {
-                        if (o) box[ch * nn + i] = tile[ch * TN + t];
-                        else node[ch * NPB + i] = tile[ch * TN + t];
-                    }
-                }
-    }
-}
-
 /* P2G's tile holds only the channels it writes: momentum, then heat, then
  * water, then the volume sum_p w_ip J V_0 (boundary.c's volume fraction; it
  * goes to CH_CG_R, which grid_activate zeroes in a field scene). */
@@ -216,7 +171,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     grid_block_coords(g, pb.block, bc);
     const int org[3] = {bc[0] * GRID_B, bc[1] * GRID_B, bc[2] * GRID_B};
     const int near_face = MIRROR ? mpm_block_near_sticky(s, D, org) : 0;
-    if (STORE) st->pbof[pb.block] = k; /* for the gather (p2g_gather_block) */
+    if (STORE) st->pbof[pb.block] = k; /* for the gather (mpm_p2g_gather) */
     memset(tile, 0, sizeof(double) * GRID_NCH_MOMENTUM * (size_t)TN);
     if (HEAT) memset(tile + P2G_HC * TN, 0, sizeof(double) * 2 * (size_t)TN);
     if (WATER) memset(tile + P2G_MW * TN, 0, sizeof(double) * 2 * (size_t)TN);
@@ -357,7 +312,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     pp->cmax = cmax;
     pp->numax = numax;
     if (STORE) { /* kept for the gather instead of the flush below */
-        p2g_keep_tile(g, D, bc, tile, st->tiles + (size_t)k * (size_t)(P2G_STORE_NCH(D) * P2G_HALO(D)));
+        mpm_p2g_keep_tile(s, D, k, bc, tile);
         return;
     }
 
@@ -440,56 +395,6 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
     const block_fn fn = p2g_prepare(s);
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     p2g_team(s, fn, dt);
-}
-
-/* step_team's gather: active block k takes the kept tiles (p2g_keep_tile)
- * of the particle blocks that reach it, itself and its -1 neighbours along
- * each axis (a tile covers its block and the +1 neighbours), in the order of
- * their colours, which is the order in which p2g_team's colour phases flush
- * them into its nodes, and with the flush's test (a node the tile's mass
- * missed takes nothing from it): the same sums from zero in the same order,
- * so the same bits, after one barrier where the colour phases have 2^dim (4
- * in 2D, 8 in 3D); and the grid update runs on the block right after, while
- * its nodes are in cache. */
-FORCE_INLINE void p2g_gather_block(hearth_scene *s, const int D, int k) {
-    const grid *g = &s->g;
-    const mpm_state *m = s->mpm;
-    const int NPB = g->nodes_per_block, NCH = P2G_STORE_NCH(D);
-    double *node = grid_block(g, k);
-    double acc[P2G_STORE_NCH(3) * GRID_B * GRID_B * GRID_B]; /* the sums, from +0 like the zeroed nodes */
-    for (int i = 0; i < NCH * NPB; i++) acc[i] = 0.0;
-    int bc[3];
-    grid_block_coords(g, g->active[k], bc);
-    const int cb = (bc[0] & 1) | (bc[1] & 1) << 1 | (bc[2] & 1) << 2;
-    for (int c = 0; c < (1 << D); c++) {
-        /* the source block of colour c lies at -1 along the axes where its parity differs from this block's */
-        const int o = c ^ cb;
-        int sc[3] = {bc[0], bc[1], bc[2]}, inside = 1;
-        for (int d = 0; d < D; d++)
-            if (o >> d & 1) inside &= sc[d]-- > 0;
-        if (!inside) continue;
-        const int q = m->pbof[grid_block_id(g, sc[0], sc[1], sc[2])];
-        if (q < 0) continue; /* no particles there */
-        /* o = 0: this block's own part, in its nodes; else halo box o of the source's store, which holds
-         * this block's nodes from GRID_B on along the offset axes */
-        const double *src = o ? m->tiles + (size_t)q * (size_t)(NCH * P2G_HALO(D)) + halo_start(D, o) : node;
-        const int stride = o ? halo_nodes(D, o) : NPB;
-        const int n0 = o & 1 ? GRID_T - GRID_B : GRID_B, n1 = o & 2 ? GRID_T - GRID_B : GRID_B,
-                  n2 = D == 3 ? (o & 4 ? GRID_T - GRID_B : GRID_B) : 1;
-        for (int a = 0; a < n0; a++)
-            for (int b = 0; b < n1; b++)
-                for (int e = 0; e < n2; e++) {
-                    const int i = (a * n1 + b) * n2 + e, l = D == 2 ? a * GRID_B + b : (a * GRID_B + b) * GRID_B + e;
-                    if (src[i] == 0.0) continue;
-                    for (int ch = 0; ch < NCH; ch++) acc[ch * NPB + l] += src[ch * stride + i];
-                }
-    }
-    for (int i = 0; i < NCH * NPB; i++) node[i] = acc[i];
-}
-
-static void p2g_gather(hearth_scene *s, int k) {
-    if (s->g.dim == 2) p2g_gather_block(s, 2, k);
-    else p2g_gather_block(s, 3, k);
 }
 
 /* ---- grid update ----------------------------------------------------- */
@@ -589,13 +494,13 @@ static void grid_update_team(hearth_scene *s, double dt, double *vcol2, const in
         const double damp = 1.0 / (1.0 + s->def.damping * dt);
 #pragma omp for schedule(guided, 4) nowait
         for (int k = 0; k < g->nactive; k++) {
-            if (gather) p2g_gather(s, k);
+            if (gather) mpm_p2g_gather(s, k);
             v2 = fmax(v2, grid_update_block(s, k, dt, damp, 1, CH_M));
         }
     } else {
 #pragma omp for schedule(guided, 4) nowait
         for (int k = 0; k < g->nactive; k++) {
-            if (gather) p2g_gather(s, k); /* step_team's stored tiles into this block's nodes first */
+            if (gather) mpm_p2g_gather(s, k); /* step_team's stored tiles into this block's nodes first */
             v2 = fmax(v2, grid_update_block(s, k, dt, 1.0, 0, CH_M));
         }
     }
@@ -928,42 +833,6 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
     g2p_reduce(s, rep);
 }
 
-/* Whether step_team gathers (a 2D team of more than one thread), and room in
- * the tile store for this step's particle blocks when it does (grown by half
- * when short; the contents are rewritten by every step). One thread keeps
- * the colour phases' flush: the same bits, without the store's traffic. 3D
- * keeps them too: on a quiet machine the gather gave 3D at 32 cells nothing
- * (2 threads / 1: 1.78x against 1.79x with the colour phases, threads.sh)
- * for 19 bytes a particle of store (237.6 -> 256.8, over issue 20's 240),
- * where 2D at 128 cells went 1.40x -> 1.51x for 8 bytes
- * (docs/performance.md, "Fewer synchronisations a step"). p2g_store_held
- * leaves out the particle count: mpm_bytes_per_particle's estimate asks it
- * for scenes large enough to hold the store. */
-static int p2g_store_held(const hearth_scene *s) {
-#ifdef _OPENMP
-    return s->g.dim == 2 && omp_get_max_threads() > 1 && s->mpm && !s->mpm->colour_phases;
-#else
-    (void)s;
-    return 0;
-#endif
-}
-
-static hearth_status p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *err) {
-    mpm_state *m = s->mpm;
-    *gather = s->ps.n >= SCENE_PARALLEL_MIN && p2g_store_held(s);
-    if (!*gather) return HEARTH_OK;
-    const size_t per = s->g.dim == 2 ? P2G_STORE_NCH(2) * P2G_HALO(2) : P2G_STORE_NCH(3) * P2G_HALO(3), need = per * (size_t)m->npb;
-    if (need > m->tiles_cap) {
-        const size_t cap = m->tiles_cap + m->tiles_cap / 2 > need ? m->tiles_cap + m->tiles_cap / 2 : need;
-        mem_free(m->tiles, sizeof(double) * m->tiles_cap);
-        m->tiles_cap = 0;
-        if (!(m->tiles = mem_alloc(sizeof(double) * cap)))
-            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for P2G's tiles of %d particle blocks", m->npb);
-        m->tiles_cap = cap;
-    }
-    return HEARTH_OK;
-}
-
 /* P2G, the grid update and G2P in one parallel region, for a step with
  * nothing between them that needs one thread or opens regions of its own (no
  * heat or water, no periodic axis, one rank, a thread-safe body force). With
@@ -972,7 +841,7 @@ static hearth_status p2g_store_reserve(hearth_scene *s, int *gather, hearth_erro
  * those a step. With more than one thread (gather), P2G scatters every
  * particle block into its own stored tile in one loop, and the grid update
  * gathers each block's node sums from those tiles in colour order
- * (p2g_gather_block) before updating it: one barrier between them where the
+ * (mpm_p2g_gather) before updating it: one barrier between them where the
  * colour phases took 2^dim and the grid update's loop one more (2D 11 -> 8
  * synchronisations a step, 3D 15 -> 8; threads_sync.sh). The same sums in
  * the same order: the same bits. Returns the fastest collider speed
@@ -1023,7 +892,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     }
     if (!heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field) { /* the usual step: one region */
         int gather;
-        if ((st = p2g_store_reserve(s, &gather, err))) return st;
+        if ((st = mpm_p2g_store_reserve(s, &gather, err))) return st;
         const double vcol = step_team(s, dt, rep, gather);
         rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;
         return mpm_ranks_report(s, dt, vcol, rep, err);
@@ -1086,16 +955,11 @@ static void mpm_region(const hearth_scene *s, double lo[3], double hi[3]) {
 
 /* order; the keys (the permutation's scratch) and P2G's volumes, counted
  * whether or not heat or water is on yet (either may turn on after the
- * particles are seeded); and where the tile store will be held (2D, more
- * than one thread: p2g_store_reserve) a particle's share of it: one tile
- * (P2G_STORE_NCH x P2G_HALO doubles) per particle block, a block's 16 cells
- * full at s:add's default ppc 4, 64 particles (3 x 20 x 8 / 64 = 7.5 bytes;
- * `hearth bench --threads 2 --dim 2 --cells 128` measured 8.3, its edge
- * blocks part full). A sparser seeding holds more per particle. */
+ * particles are seeded); and the gather's tile store where it will be held
+ * (mpm_p2g_gather.c), which shares order and keys' room. */
 static double mpm_bytes_per_particle(const hearth_scene *s) {
-    double b = 2 * sizeof(int) + sizeof(double);
-    if (p2g_store_held(s)) b += (double)(sizeof(double) * P2G_STORE_NCH(2) * P2G_HALO(2)) / (4 * GRID_B * GRID_B);
-    return b;
+    const double keys = 2 * sizeof(int), tiles = mpm_p2g_store_bytes_per_particle(s); /* the tiles in the keys' room */
+    return (keys > tiles ? keys : tiles) + sizeof(double);
 }
 
 /* The grid is the scene's; the step scratch is MPM's own (mpm_state); its

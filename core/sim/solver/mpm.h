@@ -34,8 +34,11 @@ typedef struct mpm_state {
     /* the sort's per-particle scratch, scratch_cap long: G2P writes the keys,
      * the sort reads them into order, and the permutation then takes the
      * keys' room as its scratch (particles_permute: 8 bytes a particle in
-     * all, where a separate n doubles for the permutation made 12) */
+     * all, where a separate n doubles for the permutation made 12). One
+     * block of scratch_bytes (at least 8 scratch_cap): keys, then order, then
+     * any room the gather's tile store asked for (tiles below) */
     int *keys, *order;
+    size_t scratch_bytes;
     int keys_n;             /* keys hold the blocks of these many particles, written by G2P */
     long keys_step;         /* for the positions after this step: a rolled back step's keys do not count */
     unsigned long keys_edits; /* ps.edits when G2P filed them */
@@ -52,9 +55,10 @@ typedef struct mpm_state {
     pblock *pb;
     int npb, pbcap;
     int *colour_pb;         /* pb indices grouped by colour */
-    /* step_team's gather path (more than one thread): each particle block's P2G tile (momentum channels,
-     * P2G_STORE_NCH x GRID_T^dim doubles each), and per block of the box the particle block there
-     * (nblocks; -1 where none, and everywhere between steps) */
+    /* step_team's gather path (mpm_p2g_gather.c): each particle block's kept halo (P2G_STORE_NCH x P2G_HALO
+     * doubles each), tiles_cap doubles in all this step (0 when it does not gather), in the sort's scratch
+     * (keys and order are dead from the end of the sort until G2P files the next keys, after the gather);
+     * and per block of the box the particle block there (nblocks; -1 where none, and everywhere between steps) */
     double *tiles;
     size_t tiles_cap;
     int *pbof;
@@ -147,6 +151,10 @@ static inline int clamp_to_grid(const grid *g, double *x) {
 hearth_status mpm_sort(hearth_scene *s, hearth_error *err);
 /// Release the sort's per-particle scratch (mpm_sort.c).
 void mpm_scratch_free(mpm_state *m);
+/// The sort's scratch at least bytes long, between the sort and G2P (its
+/// keys and order are dead then; the keys stay invalid, keys_n -1): the
+/// gather's tile store (mpm_p2g_gather.c). Fails only for memory.
+hearth_status mpm_scratch_room(hearth_scene *s, size_t bytes, hearth_error *err);
 /// Along the periodic axes: every particle into the period; the blocks
 /// holding the nodes the marked blocks' ghosts stand for; the ghosts' mass
 /// and momentum onto their nodes (unfold 0) and their nodes' velocity back
@@ -154,6 +162,18 @@ void mpm_scratch_free(mpm_state *m);
 void mpm_periodic_wrap_all(hearth_scene *s);
 void mpm_periodic_mark(const hearth_scene *s, unsigned char *mark);
 void mpm_periodic_fold(hearth_scene *s, int unfold);
+/* mpm_p2g_gather.c: the usual step's P2G at more than one thread in 2D keeps each particle block's tile (own
+ * part in its block's nodes, halo in the store) and the grid update gathers them in colour order */
+/// Whether the store is held (2D, more than one thread, not HEARTH_MPM_COLOUR_PHASES); leaves out the particle count.
+int mpm_p2g_store_held(const hearth_scene *s);
+/// After the sort: *gather, whether this step gathers, and room in the store for its particle blocks when it does.
+hearth_status mpm_p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *err);
+/// Particle block k (block coordinates bc) keeps its P2G tile: own part into its nodes, halo into the store.
+void mpm_p2g_keep_tile(hearth_scene *s, int D, int k, const int bc[3], const double *tile);
+/// Active block k's node sums from the kept tiles that reach it, in colour order (the colour phases' bits).
+void mpm_p2g_gather(hearth_scene *s, int k);
+/// The store's bytes a particle for the memory estimate (0 where it is not held).
+double mpm_p2g_store_bytes_per_particle(const hearth_scene *s);
 void mpm_p2g(hearth_scene *s, double dt, step_report *rep);
 /// Returns the largest collider speed (m/s) at a node with mass that a collider set.
 double mpm_grid_update(hearth_scene *s, double dt);

@@ -17,36 +17,55 @@
 #include <omp.h>
 #endif
 
-void mpm_scratch_free(mpm_state *m) {
-    mem_free(m->order, sizeof(int) * (size_t)m->scratch_cap);
-    mem_free(m->keys, sizeof(int) * (size_t)m->scratch_cap);
-    mem_free(m->vol, sizeof(double) * (size_t)m->scratch_cap);
+/* the keys and order's block (keys first, order after scratch_cap ints) */
+static void keys_free(mpm_state *m) {
+    mem_free(m->keys, m->scratch_bytes);
     m->keys = m->order = NULL;
+    m->scratch_bytes = 0;
+    m->keys_n = -1; /* the keys went with the scratch */
+}
+
+/* keys and order for cap particles in one block of bytes (>= 8 cap) */
+static int keys_alloc(mpm_state *m, int cap, size_t bytes) {
+    if (!(m->keys = mem_alloc(bytes))) return 0;
+    m->order = m->keys + cap;
+    m->scratch_bytes = bytes;
+    return 1;
+}
+
+void mpm_scratch_free(mpm_state *m) {
+    keys_free(m);
+    mem_free(m->vol, sizeof(double) * (size_t)m->scratch_cap);
     m->vol = NULL;
     m->scratch_cap = 0;
-    m->keys_n = -1; /* the keys went with the scratch */
 }
 
 /* Room for n particles' step scratch: grown when the particle count grows, so
  * the step loop allocates nothing otherwise. */
 static hearth_status mpm_reserve(hearth_scene *s, int n, hearth_error *err) {
     mpm_state *m = s->mpm;
-    if (n > m->scratch_cap) {
+    if (n > m->scratch_cap || (m->scratch_cap > 0 && !m->keys)) { /* no keys: mpm_scratch_room failed */
         int cap = s->ps.cap > n ? s->ps.cap : n;
         mpm_scratch_free(m);
-        m->order = mem_alloc(sizeof(int) * (size_t)cap);
-        m->keys = mem_alloc(sizeof(int) * (size_t)cap);
-        if (!m->order || !m->keys) {
-            m->scratch_cap = cap; /* so mpm_scratch_free releases them with their true size */
-            mpm_scratch_free(m);
+        if (!keys_alloc(m, cap, 2 * sizeof(int) * (size_t)cap))
             return err_set(err, HEARTH_ERR_NOMEM, "out of memory for sorting %d particles", n);
-        }
         m->scratch_cap = cap;
     }
     /* the field passes read each particle's volume from here rather than F (72 bytes a particle) */
     if (!m->vol && (thermal_active(s) || water_active(s)) && !(m->vol = mem_alloc(sizeof(double) * (size_t)m->scratch_cap)))
         return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particle volumes", m->scratch_cap);
     return HEARTH_OK;
+}
+
+hearth_status mpm_scratch_room(hearth_scene *s, size_t bytes, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    HEARTH_ASSERT(m->keys_n < 0); /* nothing in the block is live: the sort took the keys */
+    if (bytes <= m->scratch_bytes) return HEARTH_OK;
+    /* exactly what is asked: the store's need moves with the particle blocks, which grow slowly */
+    keys_free(m);
+    if (keys_alloc(m, m->scratch_cap, bytes)) return HEARTH_OK;
+    /* no keys or order now: the next sort allocates them again (mpm_reserve) */
+    return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %zu bytes of the sort's scratch", bytes);
 }
 
 /* Room for npb particle blocks, grown by half when short: sized by the
