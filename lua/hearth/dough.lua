@@ -250,6 +250,7 @@ local WATER = { bread = { saturation = 0.225, diffusivity = 2e-7, evaporation = 
   muffin = { saturation = 0.20, diffusivity = 2e-7, evaporation = 1.2e-3 } }
 -- stretch to fracture over water content (FRACTURE): glassy, leathery, rubbery, and the raw dough (never)
 local FRACTURE_X, FRACTURE_DRY, FRACTURE_WET = { 0.16, 0.41 }, 0.02, 100
+local CRACK_OPENING = 6e-5 -- the crack band's opening w_c = 2 G_f / f_t, m (BAND above): a crisp food foam's
 local FRACTURE_SET = 0.15 -- the set crumb's stretch to fracture (SET below), from 100 at Fig. 8's 35 degC to this at 70
 local THETA = { 5, 20, 35, 70 }            -- Fig. 8: fridge, room, fat melting, gelatinisation (degC)
 local TAU_SHAPE = { 1, 0.8, 0.3, 20 }      -- Fig. 8 left, relative to Table 2's value
@@ -331,6 +332,7 @@ function D.preset(name)
     params.evaporation = w.evaporation * WATER_S
     params.fracture_strain = FRACTURE_WET
     params.fracture_stretch = 1
+    params.crack_opening, params.crack_band = CRACK_OPENING, 0 -- BAND: 0 = the scene's cell (lua/hearth/init.lua)
     local X0 = DRY_X0[name]
     local ef, n = { irreversible = true, of = "moisture" }, 5 -- log-linear from FRACTURE_DRY to 1 over FRACTURE_X, n steps
     for i = 0, n do
