@@ -153,6 +153,31 @@
  * brittle), the weaker one rules. Its temperature curve is irreversible in
  * the preset (lua/hearth/dough.lua, SET), so it follows the set's history.
  *
+ * The crack band (crack_opening, crack_band; issue #18, helper tear): under
+ * the stretch rule alone a point keeps its whole tension until D = 1 and
+ * then has none, so nothing cracked first takes the load off its
+ * neighbours, and a skin the rise stretches evenly cracked as a band one
+ * particle thick (the muffin: 26 particles at 4 mm). A crack band (Bazant &
+ * Oh 1983, Materiaux et Constructions 16:155) softens instead: past its
+ * fracture strain (the Miner sum at 1, D = D_ON = 0.5) the point's tensile
+ * principal stresses fall linearly to 0 (D = 1) over a further stretch
+ * w_c / h along N, w_c = crack_opening the opening at which the crack
+ * carries nothing (Hillerborg, Modeer & Petersson 1976, Cem. Concr. Res.
+ * 6:773: the fictitious crack, G_f = f_t w_c / 2 for linear softening) and
+ * h = crack_band the band's width, the point's size. The energy a crack
+ * takes per unit area, h times f_t (w_c / h) / 2, is then G_f whatever the
+ * cell, which is what makes a softening result converge with dx (exact for
+ * a point at its yield surface; an elastic one's undamaged tension keeps
+ * growing over the softening and its crack takes f_t w_c / 2 (1 + (w_c /
+ * h) / (3 eps_f)): tests/unit_dough.c, dough_crack_band_softening). w_c,
+ * not G_f, is the parameter: the presets' stresses are animation-scaled
+ * (lua/hearth/dough.lua), and an opening is a length the scaling leaves
+ * alone. Past the peak D only grows (a crack that has started does not
+ * heal), and compression is carried whole, as the core's cut-off at D = 1.
+ * The core knows nothing of it: the plugin scales its own tau (the gas,
+ * water and thermal terms stay until D = 1). crack_opening = 0 (default):
+ * no band, the stretch rule as it was, bit for bit.
+ *
  * ---- state ---------------------------------------------------------------------
  * Eight doubles: b^E (xx, yy, zz, xy, yz, zx), J^P and the damage D. Why b^E and not F^E:
  * the stress and the return depend only on b^E, its update f b f^T is
@@ -183,7 +208,7 @@
 #endif
 
 enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH,
-       P_FRACTURE_STRAIN_SET, P_COUNT };
+       P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, P_COUNT };
 
 /* Defaults: the cookie column of Ding et al. Table 2 (E 4e4, tau_y 20,
  * eta 500, density 500); nu is not in Table 2. */
@@ -215,6 +240,15 @@ static const hearth_param params[P_COUNT] = {
                                "irreversible): under fracture_stretch = 1 a point's strain to fracture is the smaller of "
                                "fracture_strain and this; 0 = none",
                                0, 0, 100},
+    [P_CRACK_OPENING] = {"crack_opening", "m",
+                         "the stretch rule's crack band (Bazant & Oh 1983): the opening w_c at which a crack carries no "
+                         "more tension (G_f = f_t w_c / 2); past its fracture strain a point softens over the strain "
+                         "w_c / crack_band; 0 = no softening (the point cracks at once)",
+                         0, 0, 1},
+    [P_CRACK_BAND] = {"crack_band", "m",
+                      "the crack band's width h, the point's size (a scene's h.material gets its cell size when the "
+                      "preset gives 0); softening needs both crack_opening and crack_band > 0",
+                      0, 0, 10},
 };
 
 enum { S_XX = HEARTH_SYM_XX, S_YY = HEARTH_SYM_YY, S_ZZ = HEARTH_SYM_ZZ, S_XY = HEARTH_SYM_XY, S_YZ = HEARTH_SYM_YZ,
@@ -493,13 +527,53 @@ static void fracture_update(double ef, double *st, double e1) {
  * fracture strain the point has now; a step back along N gives it back (a
  * vibration adds nothing), and D never falls below 0 or rises again from 1.
  * A point that dries while at rest gains nothing; a skin the rise stretches
- * while it is brittle spends its small fracture strain. nd = N : D. */
+ * while it is brittle spends its small fracture strain. nd = N : D.
+ * With a crack band (header, "the crack band") the same sum fills D up to
+ * D_ON, the peak; past it D counts the stretch over the band's softening
+ * strain w_c / h, only forward: a crack that has started does not heal. */
+#define D_ON 0.5
+static double band_strain(const double *prm) { /* w_c / h, 0 without a crack band */
+    const double wc = prm[P_CRACK_OPENING], h = prm[P_CRACK_BAND];
+    return wc > 0 && h > 0 ? wc / h : 0;
+}
+
 static void fracture_stretch_update(const double *prm, double *st, double nd, double dt) {
     double ef = prm[P_FRACTURE_STRAIN];
     if (!(ef > 0) || st[S_DAMAGE] >= 1 || !(nd == nd)) return;
     const double es = prm[P_FRACTURE_STRAIN_SET]; /* the set crumb's (header, "the set crumb") */
     if (es > 0 && es < ef) ef = es;
-    st[S_DAMAGE] = fmin(1, fmax(0, st[S_DAMAGE] + 0.816496580927726 * nd * dt / ef)); /* sqrt(2/3) */
+    const double de = 0.816496580927726 * nd * dt; /* sqrt(2/3) N : D dt, the stretch along N */
+    const double eb = band_strain(prm);
+    if (!(eb > 0)) {
+        st[S_DAMAGE] = fmin(1, fmax(0, st[S_DAMAGE] + de / ef));
+        return;
+    }
+    double d = st[S_DAMAGE];
+    if (d < D_ON) {
+        d = fmax(0, d + D_ON * de / ef);
+        if (d > D_ON) d = D_ON + (1 - D_ON) * ((d - D_ON) / D_ON * ef) / eb; /* the stretch past the peak, into the band */
+    } else if (de > 0) {
+        d += (1 - D_ON) * de / eb;
+    }
+    st[S_DAMAGE] = fmin(1, d);
+}
+
+/* The band's remaining strength 1 - w, w = (D - D_ON) / (1 - D_ON): the
+ * linear softening of the crack band (header), 1 before the peak or without
+ * a band. */
+static double band_strength(const double *prm, const double *st) {
+    if (!(prm[P_FRACTURE_STRETCH] > 0.5) || !(band_strain(prm) > 0) || !(st[S_DAMAGE] > D_ON)) return 1;
+    return fmax(0, 1 - (st[S_DAMAGE] - D_ON) / (1 - D_ON));
+}
+
+/* tau with each tensile principal value times r (the band's strength): a
+ * softening crack carries compression whole, as the core's cut-off at D = 1. */
+static void band_soften(double tau[9], double r) {
+    double l[3], Q[9];
+    hearth_t3_sym_eigen(tau, l, Q);
+    for (int k = 0; k < 3; k++)
+        if (l[k] > 0) l[k] *= r;
+    hearth_sym_from_eigen(Q, l, tau);
 }
 
 /* N : D for the deviator e (a symmetric 3x3) and the step's grad_v. */
@@ -579,6 +653,8 @@ static int stress_near(hearth_point *pt, double mu, double lambda, double m, con
         }
     }
     hencky_tau(mu, lambda, ev, e, ratio, tau);
+    const double r = band_strength(prm, st);
+    if (r < 1) band_soften(tau, r);
     return 0;
 }
 
@@ -643,9 +719,12 @@ static int stress_law(hearth_point *pt, double J, double mu, double lambda, doub
         if (prm[P_FRACTURE_STRETCH] > 0.5) fracture_stretch_update(prm, st, dir_stretch_eigen(e, Q, pt->grad_v), pt->dt);
         else fracture_update(prm[P_FRACTURE_STRAIN], st, ratio * fmax(e[0], fmax(e[1], e[2])));
     }
-    const double tv = lambda * ev;
+    const double tv = lambda * ev, r = band_strength(prm, st);
     double d[3];
-    for (int i = 0; i < 3; i++) d[i] = tv + 2 * mu * (ev / 3 + ratio * e[i]);
+    for (int i = 0; i < 3; i++) {
+        d[i] = tv + 2 * mu * (ev / 3 + ratio * e[i]);
+        if (r < 1 && d[i] > 0) d[i] *= r; /* the crack band's softening (band_soften) */
+    }
     if (plane) from_eigen_plane(Q, d, tau);
     else hearth_sym_from_eigen(Q, d, tau);
     return 0;

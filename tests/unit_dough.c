@@ -20,7 +20,7 @@
 #include "plugin_fixture.h"
 
 enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH,
-       P_FRACTURE_STRAIN_SET, NP };
+       P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, NP };
 enum { NSTATE = 8 };
 
 static const hearth_material *dough(void) { return load_material("cam_clay_dough"); }
@@ -658,6 +658,75 @@ TEST(dough_fracture_set_takes_smaller) {
     }
 }
 
+/* The crack band (crack_opening w_c, crack_band h; the header's "the crack
+ * band", Bazant & Oh 1983): past its fracture strain a point's tension
+ * falls linearly to 0 over the stretch w_c / h, so the energy a crack takes
+ * per unit area, h times the work per volume on the softening branch, is
+ * f_t w_c / 2 whatever h. A point in pure shear (dough_fracture_stretch_rule's
+ * L, eps_f 0.05), w_c 0.1 mm, at h = 2, 4 and 8 mm, next to a twin without
+ * the band (w_c 0) that keeps the law's own stress; two points: one that
+ * yields (tau_y 20 Pa, its tension flat at the yield surface past ~0.01 of
+ * strain) and an elastic one (tau_y 1e9), whose undamaged tension keeps
+ * growing with the strain, f_t (1 + x / eps_f) at x past the peak, so its
+ * crack takes f_t w_c / 2 (1 + (w_c / h) / (3 eps_f)): the band is exact for
+ * a crust that yields and overcounts an elastic one by that factor (1.08 at
+ * w_c / h = eps_f / 4). Measured here from the stress the plugin returns:
+ * the stretch sqrt(2/3) N : L dt summed from damage 0.5 (the peak) to 1
+ * against w_c / h (to two steps' stretch); the tension against the twin's
+ * times 1 - (stretch past the peak) / (w_c / h) (to two steps' share); and h
+ * times the trapezoid sum of the tension over the stretch against the closed
+ * forms above (2%), f_t the twin's tension at the peak. */
+TEST(dough_crack_band_softening) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL && m->damage != NULL);
+    if (!m || !m->damage) return;
+    const double dt = 2e-5, a = 5.0, ef = 0.05, wc = 1e-4, hs[3] = {2e-3, 4e-3, 8e-3};
+    for (int y = 0; y < 2; y++) { /* 0 yields, 1 elastic */
+        double G[3];
+        for (int c = 0; c < 3; c++) {
+            const double eb = wc / hs[c], step = sqrt(2.0 / 3.0) * 2 * a * dt / sqrt(2.0); /* the stretch a step takes */
+            double p[NP] = {2e3, 0.3, y ? 1e9 : 20, 0, 0.5, 500, 1, ef, 1, 0, wc, hs[c]}, q[NP];
+            memcpy(q, p, sizeof p);
+            q[P_CRACK_OPENING] = 0;
+            double st[NSTATE], sq[NSTATE], F[9], tau[9], tq[9], L[9] = {0};
+            L[0] = a, L[4] = -a;
+            m->init(p, st), m->init(q, sq);
+            t3_identity(F);
+            double past = -1, ft = 0, work = 0, prev = 0, worst = 0;
+            int k = 0;
+            for (; k < 200000 && m->damage(p, st) < 1; k++) {
+                double f[9], Fn[9];
+                for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
+                t3_mul(f, F, Fn);
+                t3_copy(Fn, F);
+                hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
+                memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
+                CHECK(m->stress(&pt, tau) == 0);
+                hearth_point pq = pt;
+                pq.p = q, pq.state = sq;
+                CHECK(m->stress(&pq, tq) == 0);
+                const double d = m->damage(p, st), t = tau[0], tw = tq[0]; /* x is the tensile principal direction */
+                if (past < 0 && d >= 0.5) past = 0, ft = tw, prev = t; /* the peak: D_ON */
+                else if (past >= 0) {
+                    past += step;
+                    work += 0.5 * (prev + t) * step;
+                    prev = t;
+                    if (d < 1) worst = fmax(worst, fabs(t - tw * fmax(0, 1 - past / eb)) / tw);
+                }
+            }
+            G[c] = hs[c] * work;
+            const double want = ft * wc / 2 * (y ? 1 + eb / (3 * ef) : 1);
+            printf("  %s, h %.0f mm: softening stretch %.5f (w_c / h %.5f, a step %.1e), tension off the line by %.2e "
+                   "of the twin's, G_f = h W %.6f J/m^2 against %.6f (f_t %.2f Pa), %d steps\n",
+                   y ? "elastic" : "yielding", hs[c] * 1e3, past, eb, step, worst, G[c], want, ft, k);
+            CHECK(m->damage(p, st) >= 1 && fabs(past - eb) <= 2 * step);
+            CHECK(worst <= 2 * step / eb);
+            CHECK(fabs(G[c] - want) <= 0.02 * want);
+        }
+        if (!y) CHECK(fabs(G[0] - G[2]) <= 0.02 * G[2]); /* yielding: the same energy per crack area at 2 and 8 mm */
+    }
+}
+
 /* The core's cut-off of a cracked point (core/sim/material.h): the tensile
  * principal values of tau go to 0, the compressive ones and the principal
  * frame stay. tau = R diag(300, -200, 50) R^T, R a rotation about z. */
@@ -787,6 +856,6 @@ TEST(dough_plugin_check) {
 
 TEST_MAIN(T(dough_closest_point), T(dough_viscoplastic_optimality), T(dough_inside_unchanged), T(dough_von_mises_limit),
           T(dough_frame_indifference), T(dough_plane_strain_path), T(dough_near_identity_return), T(dough_extremes),
-          T(dough_closed_pores), T(dough_pore_cap), T(dough_fracture_damage), T(dough_fracture_stretch_rule), T(dough_fracture_set_takes_smaller),
+          T(dough_closed_pores), T(dough_pore_cap), T(dough_fracture_damage), T(dough_fracture_stretch_rule), T(dough_fracture_set_takes_smaller), T(dough_crack_band_softening),
           T(dough_tension_cutoff),
           T(dough_block_matches_stress_2d), T(dough_plugin_check))

@@ -240,6 +240,28 @@
 --    Where the crust does not crack (5 mm) nothing changes, and nor in the
 --    muffin, whose crown stops stretching as it sets (docs/validation.md,
 --    Crust (#18), "The set crumb"; before MUFFIN_SET).
+--  * BAND (issue #18, helper tear): the crack band of cam_clay_dough.c ("the
+--    crack band", Bazant & Oh 1983): past its stretch to fracture a point
+--    softens over the further stretch crack_opening / crack_band, so a crack
+--    that starts takes the load off its neighbours and the energy it takes
+--    per area does not depend on dx. crack_band = 0 here: h.material's
+--    register gives it the scene's cell size (lua/hearth/init.lua). The
+--    opening w_c = 2 G_f / f_t = 0.06 mm from the only brittle food foam we
+--    found measured for both: potato crisps, work of fracture ~45 J/m^2 and
+--    strength ~1.5 MPa ("Fracture properties of potato crisps", Int. J. Food
+--    Sci. Technol. 2007, doi 10.1111/j.1365-2621.2007.01531.x; from its
+--    abstract, authors not checked). Vincent 2004 (Eng. Fail. Anal. 11:695)
+--    puts crisp foods' work of fracture near 1 J/m^2 and other foods' at
+--    1-500, so this is an estimate for bread crust, not a measurement of it.
+--    An opening, not G_f, because the presets' stresses are animation-scaled
+--    and a length is not. Measured (helper tear): the bread's 4 mm crack 9.96
+--    -> 8.05 mm deep (still >= 0.1 of the loaf's height); the muffin's top
+--    still cracks as a band (39 particles at 4 mm, tear notch 0.04 mm): its
+--    skin, at X/X0 0.5-0.6, is only ~2x as stiff as the batter it is fixed
+--    to (DRY), so a crack relieves the skin only within about its own
+--    thickness (a film cracking on a compliant substrate cracks at a spacing
+--    of a few thicknesses: Hutchinson & Suo 1992, Adv. Appl. Mech. 29:63),
+--    one particle here.
 local ETA_SCALE, GAS_SCALE = 4000, 1 / 600
 local DRY_X = { 0.05, 0.10, 0.16, 0.25, 0.41 }  -- water content, kg/kg dry basis
 local DRY_F = { 100, 37, 10, 4.6, 1 }           -- E and tau_y factor (Roos 1995's glass transition, capped at 100)
@@ -250,6 +272,7 @@ local WATER = { bread = { saturation = 0.225, diffusivity = 2e-7, evaporation = 
   muffin = { saturation = 0.20, diffusivity = 2e-7, evaporation = 1.2e-3 } }
 -- stretch to fracture over water content (FRACTURE): glassy, leathery, rubbery, and the raw dough (never)
 local FRACTURE_X, FRACTURE_DRY, FRACTURE_WET = { 0.16, 0.41 }, 0.02, 100
+local CRACK_OPENING = 6e-5 -- the crack band's opening w_c = 2 G_f / f_t, m (BAND above): a crisp food foam's
 local FRACTURE_SET = 0.15 -- the set crumb's stretch to fracture (SET below), from 100 at Fig. 8's 35 degC to this at 70
 local THETA = { 5, 20, 35, 70 }            -- Fig. 8: fridge, room, fat melting, gelatinisation (degC)
 local TAU_SHAPE = { 1, 0.8, 0.3, 20 }      -- Fig. 8 left, relative to Table 2's value
@@ -331,6 +354,7 @@ function D.preset(name)
     params.evaporation = w.evaporation * WATER_S
     params.fracture_strain = FRACTURE_WET
     params.fracture_stretch = 1
+    params.crack_opening, params.crack_band = CRACK_OPENING, 0 -- BAND: 0 = the scene's cell (lua/hearth/init.lua)
     local X0 = DRY_X0[name]
     local ef, n = { irreversible = true, of = "moisture" }, 5 -- log-linear from FRACTURE_DRY to 1 over FRACTURE_X, n steps
     for i = 0, n do

@@ -542,7 +542,16 @@ local function host_yield()
   if host_yields and coroutine.isyieldable() then coroutine.yield("step") end
 end
 
+-- A crack band (Bazant & Oh 1983) is as wide as the point that cracks: a material given crack_band = 0
+-- (lua/hearth/dough.lua's presets) registers with the scene's cell size dx, so its softening strain w_c / h and
+-- the energy a crack takes (G_f per area) do not change with the resolution.
 local function register(s, m, params)
+  if params.crack_band == 0 then
+    local p = {}
+    for k, v in pairs(params) do p[k] = v end
+    p.crack_band = s:settings().dx
+    params = p
+  end
   local id = s:_material(m.plugin, params)
   for _, set in ipairs { m.curves, m.factors or {} } do
     for k, c in pairs(set) do
