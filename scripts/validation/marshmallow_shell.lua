@@ -8,12 +8,13 @@
 -- tau_y 60 Pa, E 4e4 Pa). No heat: this asks only whether a crust over goo,
 -- pressed, lets the goo out. For docs/validation.md "The marshmallow's ooze
 -- (#18)":
---   hearth run scripts/validation/marshmallow_shell.lua --quiet                 (the scene's press)
+--   hearth run scripts/validation/marshmallow_shell.lua --quiet                 (the scene's press before ooze4)
 --   hearth run scripts/validation/marshmallow_shell.lua --quiet --set speed=0.01 (20 mm closure)
 -- `--set tf=1` gives the grid two velocity fields at cracks (two_field).
 -- The crackers start `gap` above the marshmallow and close at `speed` each
--- from t = 0.05 s for `press` s: the defaults are marshmallow.lua's (4 mm,
--- 5 mm/s, 1 s: 10 mm of closure, 6 mm of it on the marshmallow).
+-- from t = 0.05 s for `press` s: the defaults are marshmallow.lua's before
+-- helper ooze4 (4 mm, 5 mm/s, 1 s: 10 mm of closure, 6 mm of it on the
+-- marshmallow; the scene now presses 20 mm between sticking crackers).
 -- Prints each frame marshmallow.lua's ooze (the fraction of the outline, the
 -- outermost particle on each side in each band of height dx, that started
 -- more than `skin` from the surface) and the skin particles cracked; writes
