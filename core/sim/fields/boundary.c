@@ -238,6 +238,9 @@ FORCE_INLINE void area_gather(hearth_scene *s, const int D, int k, int want_dept
             for (int c = 0; c <= (D == 3) && !any; c++) any = s->boundary.blocks[g->slot[grid_block_id(g, bc[0] + a, bc[1] + b, bc[2] + c)]];
     if (!any) return; /* most particle blocks lie inside the body */
     double r[GRID_T * GRID_T * GRID_T], ph[GRID_T * GRID_T * GRID_T];
+    /* the box of the tile's nodes with r != 0 (NaN counts): most particles of a
+     * surface block sit inside, where r is 0 on their whole stencil */
+    int rlo[3] = {GRID_T, GRID_T, D == 3 ? GRID_T : 0}, rhi[3] = {-1, -1, 0};
     for (int a = 0; a < GRID_T; a++)
         for (int b = 0; b < GRID_T; b++)
             for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
@@ -246,18 +249,30 @@ FORCE_INLINE void area_gather(hearth_scene *s, const int D, int k, int want_dept
                 const int t = D == 2 ? a * GRID_T + b : (a * GRID_T + b) * GRID_T + c;
                 r[t] = node[CH_CG_P * NPB + l];
                 ph[t] = node[CH_CG_R * NPB + l];
+                if (r[t] != 0.0) {
+                    const int at[3] = {a, b, c};
+                    for (int d = 0; d < D; d++) {
+                        rlo[d] = at[d] < rlo[d] ? at[d] : rlo[d];
+                        rhi[d] = at[d] > rhi[d] ? at[d] : rhi[d];
+                    }
+                }
             }
+    if (rhi[0] < 0) return; /* r is 0 over the whole tile */
     const double *X = pcold(&s->ps, PC_X), *M = pcold(&s->ps, PC_MASS);
     int *flags = s->ps.enabled & (1u << PC_FLAGS) ? pcoli(&s->ps, PC_FLAGS) : NULL;
     for (int i = pb.start; i < pb.end; i++) { /* the weights are a tensor product: one axis at a time */
-        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
-        int lb[3] = {0, 0, 0};
+        int lb[3] = {0, 0, 0}, miss = 0;
+        double Xd[3];
         for (int d = 0; d < D; d++) {
-            const double Xd = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
-            const int base = base_node(Xd); /* floor: the sort keeps X >= 1 (mpm.h) */
-            bspline_weights(Xd - base, w[d], dw);
-            lb[d] = base - bc[d] * GRID_B;
+            Xd[d] = (X[3 * i + d] - g->lo[d]) * g->inv_dx;
+            lb[d] = base_node(Xd[d]) - bc[d] * GRID_B; /* floor: the sort keeps X >= 1 (mpm.h) */
+            miss |= lb[d] + 2 < rlo[d] || lb[d] > rhi[d];
         }
+        /* r is 0 on the whole stencil: the sum below would be 0 (r >= 0 and
+         * finite where it is not 0), and the particle holds no area */
+        if (miss) continue;
+        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
+        for (int d = 0; d < D; d++) bspline_weights(Xd[d] - (lb[d] + bc[d] * GRID_B), w[d], dw);
         double a = 0;
         for (int x = 0; x < 3; x++)
             for (int y = 0; y < 3; y++) {
