@@ -189,7 +189,12 @@ FORCE_INLINE void p2g_keep_tile(const grid *g, const int D, const int bc[3], con
 
 /* P2G's tile holds only the channels it writes: momentum, then heat, then
  * water, then the volume sum_p w_ip J V_0 (boundary.c's volume fraction; it
- * goes to CH_CG_R, which grid_activate zeroes in a field scene). */
+ * goes to CH_CG_R, which grid_activate zeroes in a field scene). The heat
+ * pair (capacity, capacity x temperature) and the water pair (mass,
+ * capacity) each sit interleaved, node by node, in their two channels' room,
+ * so a node takes each pair in one two-lane add (the same operations lane by
+ * lane, so the same bits; 0.15M of the 2D dough's 18.2M instructions a
+ * step fewer, callgrind). */
 enum { P2G_HC = GRID_NCH_MOMENTUM, P2G_T, P2G_MW, P2G_SW, P2G_V, P2G_NCH };
 /* two_field (2D only): the nodes' reference damage gradients, then the second field's mass and momentum, past
  * the channels above in the same tile (2D uses 36 nodes of its 216) */
@@ -284,7 +289,10 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
         /* water mass and capacity rho_0^w J V_0 (eq. 15, 18) */
         const double mw = WATER ? Wcol[i] : 0.0, cap = WATER ? s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * J * V0[i] : 0.0;
         /* the stencil's corner in the tile: the 3^dim nodes then sit at constant offsets from it */
-        double *const tp = tile + (D == 2 ? base[0] * GRID_T + base[1] : (base[0] * GRID_T + base[1]) * GRID_T + base[2]);
+        const int toff = D == 2 ? base[0] * GRID_T + base[1] : (base[0] * GRID_T + base[1]) * GRID_T + base[2];
+        double *const tp = tile + toff;
+        double *const th = tile + P2G_HC * TN + 2 * toff, *const tw = tile + P2G_MW * TN + 2 * toff; /* the pairs */
+        const v2d hp = {hc, hct}, wp = {mw, cap};
         /* 3D: the c = 0, 1 pair's weights along z and offsets (c - fx) dx, and c = 2's offset */
         const v2d w2_01 = {w[2][0], w[2][1]}, d2_01 = {(0 - fx[2]) * dx, (1 - fx[2]) * dx};
         const double d2_2 = (2 - fx[2]) * dx;
@@ -298,14 +306,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                     tp[t] += wab * m;
                     tp[TN + t] += wab * (mv0 + Q[0] * d0 + Q[1] * d1);
                     tp[2 * TN + t] += wab * (mv1 + Q[3] * d0 + Q[4] * d1);
-                    if (HEAT) {
-                        tp[P2G_HC * TN + t] += wab * hc;
-                        tp[P2G_T * TN + t] += wab * hct;
-                    }
-                    if (WATER) {
-                        tp[P2G_MW * TN + t] += wab * mw;
-                        tp[P2G_SW * TN + t] += wab * cap;
-                    }
+                    if (HEAT) p2g_add2(th + 2 * t, (v2d){wab, wab} * hp);
+                    if (WATER) p2g_add2(tw + 2 * t, (v2d){wab, wab} * wp);
                     if (HEAT || WATER) tp[P2G_V * TN + t] += vab;
                     /* the second field's particles at this node scatter the same terms into its channels too */
                     if (TWO && mpm_two_field_second(tp[P2G_GX * TN + t], tp[P2G_GY * TN + t], dgrad[2 * i], dgrad[2 * i + 1])) {
@@ -334,14 +336,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                     for (int c = 0; c < (HEAT || WATER ? 3 : 0); c++) {
                         const double wt = wab * w[2][c];
                         const int t = t0 + c;
-                        if (HEAT) {
-                            tp[P2G_HC * TN + t] += wt * hc;
-                            tp[P2G_T * TN + t] += wt * hct;
-                        }
-                        if (WATER) {
-                            tp[P2G_MW * TN + t] += wt * mw;
-                            tp[P2G_SW * TN + t] += wt * cap;
-                        }
+                        if (HEAT) p2g_add2(th + 2 * t, (v2d){wt, wt} * hp);
+                        if (WATER) p2g_add2(tw + 2 * t, (v2d){wt, wt} * wp);
                         if (HEAT || WATER) tp[P2G_V * TN + t] += vab * w[2][c];
                     }
                 }
@@ -370,10 +366,10 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 int l;
                 double *node = grid_tile_node(g, D, bc, a, b, c, &l);
                 for (int ch = 0; ch < GRID_NCH_MOMENTUM; ch++) node[ch * NPB + l] += tile[ch * TN + t];
-                if (HEAT)
-                    for (int ch = P2G_HC; ch <= P2G_T; ch++) node[p2g_channel[ch] * NPB + l] += tile[ch * TN + t];
+                if (HEAT) /* the interleaved pairs */
+                    for (int ch = 0; ch < 2; ch++) node[p2g_channel[P2G_HC + ch] * NPB + l] += tile[P2G_HC * TN + 2 * t + ch];
                 if (WATER)
-                    for (int ch = P2G_MW; ch <= P2G_SW; ch++) node[p2g_channel[ch] * NPB + l] += tile[ch * TN + t];
+                    for (int ch = 0; ch < 2; ch++) node[p2g_channel[P2G_MW + ch] * NPB + l] += tile[P2G_MW * TN + 2 * t + ch];
                 if (HEAT || WATER) node[CH_CG_R * NPB + l] += tile[P2G_V * TN + t];
                 if (TWO)
                     for (int ch = 0; ch < 3; ch++) node[(CH_TF_M + ch) * NPB + l] += tile[(P2G_BM + ch) * TN + t];
