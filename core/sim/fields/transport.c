@@ -55,7 +55,8 @@
  * Cost against the momentum step (3D bench; scripts/bench/fields_instructions.sh
  * counts instructions, fields_overhead.sh times): heat 1.57x and all fields
  * 1.92x in instructions, against 2.3x and 3.7x when each field had passes of
- * its own. */
+ * its own (at 24 cells, with the boundary since measured: 1.76x and 2.18x,
+ * docs/performance.md "The fields' passes"). */
 #include "transport.h"
 
 #include <math.h>
@@ -136,39 +137,47 @@ FORCE_INLINE void gather(const int D, const int NC, const double *const v[2], co
     }
 }
 
-/* out_k,i += grad w_ip . f_k + w_ip r_k for NC (1 or 2) outputs sharing the stencil. */
+/* out_k,i += grad w_ip . f_k + w_ip r_k for NC (1 or 2) outputs sharing the stencil,
+ * one axis at a time as the gather: with w_ip = w0_a w1_b w2_c, the node's term
+ * is w1_b u_a + dw1_b q_a (2D), u_a = w0_a r + dw0_a f_0 and q_a = w0_a f_1 once
+ * a row; 3D takes (w1_b u_a + dw1_b q_a) w2_c + (w1_b z_a) dw2_c, z_a = w0_a f_2.
+ * About half the products of the node-by-node form, (w0_a w1_b) r + ((dw0_a
+ * w1_b) f_0 + (w0_a dw1_b) f_1), that it replaced: the same sums in another
+ * order, so the nodes' values moved by round-off (0.26M of the 2D dough's 18.0M
+ * instructions a step; docs/performance.md "The fields' passes"). */
 FORCE_INLINE void scatter(const int D, const int NC, double *const out[2], const int base[3], double w[3][3],
                           double dw[3][3], double f[2][3], const double r[2]) {
     if (D == 2) { /* nodes b = 0, 1 of each row in one register, b = 2 alone */
         const v2d w1 = {w[1][0], w[1][1]}, dw1 = {dw[1][0], dw[1][1]};
         for (int a = 0; a < 3; a++) {
-            const v2d wab = w[0][a] * w1, p0 = dw[0][a] * w1, p1 = w[0][a] * dw1;
-            const double wab2 = w[0][a] * w[1][2], p02 = dw[0][a] * w[1][2], p12 = w[0][a] * dw[1][2];
             const int t = tile_index(D, base, a, 0, 0);
             for (int k = 0; k < NC; k++) {
-                const v2d A = wab * r[k] + (p0 * f[k][0] + p1 * f[k][1]);
+                const double u = w[0][a] * r[k] + dw[0][a] * f[k][0], q = w[0][a] * f[k][1];
+                const v2d A = w1 * u + dw1 * q;
                 v2_store(out[k] + t, v2_load(out[k] + t) + A);
-                out[k][t + 2] += wab2 * r[k] + (p02 * f[k][0] + p12 * f[k][1]);
+                out[k][t + 2] += w[1][2] * u + dw[1][2] * q;
             }
         }
         return;
     }
-    for (int a = 0; a < 3; a++)
+    const v2d w2 = {w[2][0], w[2][1]}, dw2 = {dw[2][0], dw[2][1]}; /* nodes c = 0, 1 in one register, c = 2 alone */
+    for (int a = 0; a < 3; a++) {
+        double u[2], q[2], z[2];
+        for (int k = 0; k < NC; k++) {
+            u[k] = w[0][a] * r[k] + dw[0][a] * f[k][0];
+            q[k] = w[0][a] * f[k][1];
+            z[k] = w[0][a] * f[k][2];
+        }
         for (int b = 0; b < 3; b++) {
-            const double wab = w[0][a] * w[1][b], p0 = dw[0][a] * w[1][b], p1 = w[0][a] * dw[1][b];
             const int t = tile_index(D, base, a, b, 0);
             for (int k = 0; k < NC; k++) {
-                /* the node's term is A w2_c + B dw2_c */
-                const double A = wab * r[k] + (p0 * f[k][0] + p1 * f[k][1]);
-                if (D == 3) {
-                    const double B = wab * f[k][2];
-                    double *oc = out[k] + t;
-                    for (int c = 0; c < 3; c++) oc[c] += A * w[2][c] + B * dw[2][c];
-                } else {
-                    out[k][t] += A;
-                }
+                const double A = w[1][b] * u[k] + dw[1][b] * q[k], B = w[1][b] * z[k];
+                double *oc = out[k] + t;
+                v2_store(oc, v2_load(oc) + (w2 * A + dw2 * B));
+                oc[2] += A * w[2][2] + B * dw[2][2];
             }
         }
+    }
 }
 
 /* tile layout: [0] heat input, [1] heat out, [2] heat sources, [3] saturation,
