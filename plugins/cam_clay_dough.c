@@ -813,10 +813,15 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
     }
     const double *ef_c = b->p_col[P_FRACTURE_STRAIN], *fs_c = b->p_col[P_FRACTURE_STRETCH];
     int bad = 0;
+    const int cracks = ef_c || b->p[P_FRACTURE_STRAIN] > 0; /* else no point's fracture_strain is > 0 */
     for (int j = 0; j < n; j++) {
-        const double ef = ef_c ? ef_c[j] : b->p[P_FRACTURE_STRAIN];
-        /* the stretch rule (fracture_stretch = 1) reads the eigenvectors and grad_v: stress_law's path */
-        const int stretch = ef > 0 && (fs_c ? fs_c[j] : b->p[P_FRACTURE_STRETCH]) > 0.5;
+        double ef = 0;
+        int stretch = 0;
+        if (cracks) {
+            ef = ef_c ? ef_c[j] : b->p[P_FRACTURE_STRAIN];
+            /* the stretch rule (fracture_stretch = 1) reads the eigenvectors and grad_v: stress_law's path */
+            stretch = ef > 0 && (fs_c ? fs_c[j] : b->p[P_FRACTURE_STRETCH]) > 0.5;
+        }
         if (fast[j] != 0 && !stretch) { /* the state of an elastic step: the trial b^E, J^P and the damage */
             double *s = st + (size_t)j * stride;
             s[S_XX] = B0[j], s[S_YY] = B4[j], s[S_ZZ] = B8[j];
