@@ -82,6 +82,7 @@ static inline void scale_column(double *restrict out, const double *restrict x, 
  * (2D, 64 cells). glibc's early return there is cheap already, so this saves about 9 instructions a
  * point over the per-point scalars (material_thermal_scales). A point the split leaves alone gets x = 0
  * and r = -0.0: 1, 1 and -0.0, as material_thermal_scales gives it. */
+__attribute__((noinline)) /* inlined, its arrays and loops cost the elastic step's door 2 instructions a point */
 static void thermal_scales_block(const double *core, int n, const double *restrict K, const double *restrict T,
                                  double *restrict e_store, double dt, signed char *restrict split, double *restrict sF,
                                  double *restrict sL, double *restrict dL) {
