@@ -256,7 +256,8 @@ MATERIAL_INLINE int material_point_stress(const hearth_material *m, const double
 }
 
 /* material_thermal_split's scalars (below), for the caller that applies them itself
- * (material_batch.c works on a block's columns): s[0] = exp(-e / 3) scales F,
+ * (material_batch.c's thermal_scales_block gives a block's points these values, bit for bit, on
+ * columns: a change here is a change there): s[0] = exp(-e / 3) scales F,
  * s[1] = exp(r) scales L and s[2] = expm1(r) / dt goes on L's diagonal; with
  * dt = 0 or when the strain cannot be taken out (returns 0) they are 1, 1 and
  * -0.0, which leave every F and L entry's bits as they were (x * 1 and

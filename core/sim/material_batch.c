@@ -71,6 +71,44 @@ static inline void scale_column(double *restrict out, const double *restrict x, 
         for (int j = 0; j < n; j++) out[j] = x[j] * s[j];
 }
 
+/* material_thermal_scales (material.h) over a block, given each point's K (its bulk_modulus, which the
+ * caller asked point by point: K may read the state): split[j], the scales sF[j], sL[j] and dL[j], and
+ * the strain stored in e_store[j] when dt > 0, each the value material_thermal_scales gives the point
+ * alone, bit for bit (batch_scene_matches_one_point runs the one against the other). The arithmetic runs
+ * over the columns, and libm only where its value is not known already: below |x| = 2^-54, exp(x) is
+ * 1.0 and expm1(x) is x, correctly rounded, and glibc returns exactly these (1.0 + x, and x). r, the
+ * step's change of the strain, is that small wherever the temperature did not move over the step (a
+ * body's inside early in a bake): 44-57% of the points a step of scripts/bench/dough_step.lua's cookie
+ * (2D, 64 cells). glibc's early return there is cheap already, so this saves about 9 instructions a
+ * point over the per-point scalars (material_thermal_scales). A point the split leaves alone gets x = 0
+ * and r = -0.0: 1, 1 and -0.0, as material_thermal_scales gives it. */
+__attribute__((noinline)) /* inlined, its arrays and loops cost the elastic step's door 2 instructions a point */
+static void thermal_scales_block(const double *core, int n, const double *restrict K, const double *restrict T,
+                                 double *restrict e_store, double dt, signed char *restrict split, double *restrict sF,
+                                 double *restrict sL, double *restrict dL) {
+    const double cl = core[CP_EXPANSION], Tr = core[CP_REFERENCE_T];
+    double X[HEARTH_BLOCK_MAX], R[HEARTH_BLOCK_MAX];
+    for (int j = 0; j < n; j++) {
+        const double k = K[j], t = T[j], e0 = e_store[j];
+        const int sp = !(t == t) ? 0 : (k > 0) & (k < INFINITY) ? 1 : -1; /* material_thermal_scales' returns */
+        split[j] = (signed char)sp;
+        const double e = dt > 0 ? cl * (t - Tr) / k : e0;
+        X[j] = sp == 1 ? -e / 3 : 0.0;
+        R[j] = sp == 1 && dt > 0 ? (e0 - e) / 3 : -0.0;
+        e_store[j] = sp == 1 && dt > 0 ? e : e0;
+    }
+    for (int j = 0; j < n; j++) sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp(X[j]);
+    if (dt > 0) {
+        for (int j = 0; j < n; j++) {
+            const double r = R[j];
+            if (fabs(r) < 0x1p-54) sL[j] = 1.0, dL[j] = r / dt;
+            else sL[j] = exp(r), dL[j] = expm1(r) / dt;
+        }
+    } else {
+        for (int j = 0; j < n; j++) sL[j] = 1.0, dL[j] = -0.0;
+    }
+}
+
 /* The particles' thermal strain column when eq. 10 is a strain for this run
  * (material.h, material_thermal_split), else NULL: the pressure is added. */
 static double *thermal_column(const material_slot *ms, const particles *ps, const material_run *r, unsigned flags) {
@@ -395,7 +433,9 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     if (porous && !m->plastic_J)
         for (int j = 0; j < n; j++) P[j] = gas_porosity(1.0, ms->core[CP_POROSITY0]);
     /* per point, one pass with its parameters patched once: J^P at the start of the step (as
-     * material_point_stress) and the thermal split's scalars. Both callbacks only read p and the state. */
+     * material_point_stress) and K for the thermal split's scalars (thermal_scales_block, after). Both
+     * callbacks only read p and the state. */
+    double K[HEARTH_BLOCK_MAX];
     if (porous_J || th)
         for (int j = 0; j < n; j++) {
             for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j];
@@ -405,13 +445,14 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
                 P[j] = gas_porosity(m->plastic_J(pj, st), ms->core[CP_POROSITY0]);
             }
             if (th) {
-                double s3[3];
                 plugin_call_enter(m, "bulk_modulus");
-                split[j] = (signed char)material_thermal_scales(m, ms->core, pj, st, r->temperature[j], th + i0 + j, r->dt, s3);
-                sF[j] = s3[0], sL[j] = s3[1], dL[j] = s3[2];
-                finite &= (s3[0] <= DBL_MAX) & (s3[1] <= DBL_MAX); /* exp's: >= +0, or inf, or NaN */
+                K[j] = m->bulk_modulus(pj, st);
             }
         }
+    if (th) { /* the split's scalars, then whether every point's are finite */
+        thermal_scales_block(ms->core, n, K, r->temperature, th + i0, r->dt, split, sF, sL, dL);
+        for (int j = 0; j < n; j++) finite &= (sF[j] <= DBL_MAX) & (sL[j] <= DBL_MAX); /* exp's: >= +0, or inf, or NaN */
+    }
     /* the block's F and L: the run's own columns, or the split's products */
     const double *Fb[9], *Lb[9];
     for (int c = 0; c < 9; c++) Fb[c] = r->F[c], Lb[c] = r->grad_v[c]; /* dt = 0: L as it is */
