@@ -132,19 +132,25 @@ static void sort_colours(hearth_scene *s) {
     }
 }
 
+/* Block id's particles: counts holds the blocks' starts (hist NULL), or
+ * inside sort_team hist holds each chunk's count of them (T rows of NB). */
+static inline int block_total(const int *counts, const int *hist, int NB, int T, int id) {
+    if (!hist) return counts[id + 1] - counts[id];
+    int sum = 0;
+    for (int q = 0; q < T; q++) sum += hist[(size_t)q * NB + id];
+    return sum;
+}
+
 /* Whether block (bx, by, bz) or its -1 neighbour along some axes holds
- * particles: the blocks a particle block's tile touches. counts holds the
- * blocks' starts (totals 0: block id holds counts[id + 1] - counts[id]) or,
- * inside sort_team, their totals at counts[id + 1] (totals 1). */
-static inline unsigned char touched(const grid *g, const int *counts, int totals, int bx, int by, int bz) {
+ * particles: the blocks a particle block's tile touches (block_total's
+ * counts or hist). */
+static inline unsigned char touched(const grid *g, const int *counts, const int *hist, int NB, int T, int bx, int by, int bz) {
     const int nz = g->dim == 3;
     unsigned char hit = 0;
     for (int dx = 0; dx <= (bx > 0); dx++)
         for (int dy = 0; dy <= (by > 0); dy++)
-            for (int dz = 0; dz <= (nz && bz > 0); dz++) {
-                const int id = grid_block_id(g, bx - dx, by - dy, bz - dz);
-                hit |= counts[id + 1] > (totals ? 0 : counts[id]);
-            }
+            for (int dz = 0; dz <= (nz && bz > 0); dz++)
+                hit |= block_total(counts, hist, NB, T, grid_block_id(g, bx - dx, by - dy, bz - dz)) > 0;
     return hit;
 }
 
@@ -181,7 +187,7 @@ static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
 #pragma omp for schedule(static)
         for (int bx = 0; bx < g->nb[0]; bx++)
             for (int by = 0; by < nb1; by++)
-                for (int bz = 0; bz < nb2; bz++) m->mark[grid_block_id(g, bx, by, bz)] = touched(g, counts, 0, bx, by, bz);
+                for (int bz = 0; bz < nb2; bz++) m->mark[grid_block_id(g, bx, by, bz)] = touched(g, counts, NULL, NB, 1, bx, by, bz);
     }
     sort_colours(s);
     return HEARTH_OK;
@@ -194,22 +200,24 @@ static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
  * the serial sort's place, so the order is the same bits for any T
  * (`determinism_threads_*`). The block starts, the particle blocks and the
  * marks are integers from the same counts, so they are the serial sort's too.
- * Two barriers (three when the keys are out of order), where a region for
- * the count and two for the block lists took eleven synchronisations (three
- * starts and ends, five barriers inside): with OMP_WAIT_POLICY=passive
- * (main.c) each wakes a sleeping thread, a futex round trip, and in the 2D
- * 128-cell bench all this bookkeeping is about 10 instructions a particle.
- * Returns whether the keys were out of order (order then filled); *st gets
- * pb_reserve's status. */
+ * After the count's barrier hist is only read until every thread is past the
+ * marks: each thread adds up the table itself for the chunks' offsets (T
+ * numbers, O(T nblocks) reads, which the chunked count is only chosen for
+ * when T nblocks <= 2 n), and the marks read a neighbour's total from hist,
+ * so the keys in order need one barrier in the region (two with the
+ * activation) where a pass writing the totals and the exclusive counts took
+ * two: with OMP_WAIT_POLICY=passive (main.c) each synchronisation wakes a
+ * sleeping thread, a futex round trip, and in the 2D 128-cell bench all this
+ * bookkeeping is about 10 instructions a particle. Out of order, hist turns
+ * into places after a barrier (two then, as before). Returns whether the
+ * keys were out of order (order then filled); *st gets pb_reserve's status. */
 static int sort_team(hearth_scene *s, int n, int T, const int activate, int *W, hearth_status *st, hearth_error *err) {
     grid *g = &s->g;
     mpm_state *m = s->mpm;
     const int NB = m->nblocks, *keys = m->keys, nb1 = g->nb[1], nb2 = g->nb[2];
-    int *order = m->order, *counts = m->counts, *hist = m->hist, unsorted = 0;
-    counts[0] = 0;
-    /* per chunk of the block table (at c + 1): its particles and its particle blocks */
-    int cpart[SORT_CHUNKS_MAX + 1] = {0}, cblk[SORT_CHUNKS_MAX + 1] = {0};
+    int *order = m->order, *hist = m->hist, unsorted = 0;
     int amark[SORT_CHUNKS_MAX + 1] = {0}; /* per chunk of the block table (at c + 1): its marked blocks */
+    int npb = 0;                          /* the particle blocks (every thread finds the same) */
     *st = HEARTH_OK;
     int far = 0; /* the farthest a particle moves in the order (particles_permute_within's W) */
     /* read once: the singles below change them while others may test them */
@@ -227,38 +235,30 @@ static int sort_team(hearth_scene *s, int n, int T, const int activate, int *W, 
                 unsorted |= i > 0 && keys[i - 1] > keys[i];
             }
         }
-        /* per block: its particles in earlier chunks (hist, exclusive) and in all (counts[b + 1]: in
-         * this path counts keeps the blocks' totals, which nothing after the sort reads) */
-#pragma omp for schedule(static)
+        /* Every thread adds up the table for each chunk of it: the particles and the particle blocks
+         * before it (poff, koff). A step that finds more particle blocks than ever grows their lists
+         * first (every thread sees the same need, so all or none meet the single). */
+        int poff[SORT_CHUNKS_MAX + 1], koff[SORT_CHUNKS_MAX + 1];
+        poff[0] = koff[0] = 0;
         for (int c = 0; c < T; c++) {
             const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
             int np = 0, nk = 0;
             for (int b = lo; b < hi; b++) {
-                int sum = 0;
-                for (int q = 0; q < T; q++) {
-                    int *h = hist + (size_t)q * NB + b;
-                    const int k = *h;
-                    *h = sum;
-                    sum += k;
-                }
-                counts[b + 1] = sum;
+                const int sum = block_total(NULL, hist, NB, T, b);
                 np += sum;
                 nk += sum > 0;
             }
-            cpart[c + 1] = np;
-            cblk[c + 1] = nk;
+            poff[c + 1] = poff[c] + np;
+            koff[c + 1] = koff[c] + nk;
         }
-        /* Every thread takes the chunks' offsets (T numbers); a step that finds more particle blocks
-         * than ever grows their lists first (every thread sees the same need, so all or none meet the single). */
-        int poff[SORT_CHUNKS_MAX + 1], koff[SORT_CHUNKS_MAX + 1];
-        poff[0] = koff[0] = 0;
-        for (int c = 0; c < T; c++) poff[c + 1] = poff[c] + cpart[c + 1], koff[c + 1] = koff[c] + cblk[c + 1];
+#pragma omp master
+        npb = koff[T];
         if (koff[T] > pbcap) {
 #pragma omp single
             *st = pb_reserve(m, koff[T], err);
         }
         if (!*st) {
-            /* The marks and the particle blocks only read the totals, so neither waits for the other.
+            /* The marks and the particle blocks only read hist, so neither waits for the other.
              * The marks go by chunks of the block table, each counting its own for the activation. */
 #pragma omp for schedule(static) nowait
             for (int c = 0; c < T; c++) {
@@ -266,7 +266,7 @@ static int sort_team(hearth_scene *s, int n, int T, const int activate, int *W, 
                 int bc[3], na = 0;
                 grid_block_coords(g, lo < NB ? lo : 0, bc);
                 for (int b = lo; b < hi; b++) { /* b = grid_block_id(bc): z fastest */
-                    const unsigned char mk = touched(g, counts, 1, bc[0], bc[1], bc[2]);
+                    const unsigned char mk = touched(g, NULL, hist, NB, T, bc[0], bc[1], bc[2]);
                     m->mark[b] = mk;
                     na += mk != 0;
                     if (++bc[2] == nb2) {
@@ -276,21 +276,18 @@ static int sort_team(hearth_scene *s, int n, int T, const int activate, int *W, 
                 }
                 amark[c + 1] = na;
             }
-            /* each chunk's blocks from its offset; out of order, each particle chunk's places in a
-             * block (hist) also get the block's start, so the order below needs nothing else */
+            /* each chunk's blocks from its offsets */
 #pragma omp for schedule(static) nowait
             for (int c = 0; c < T; c++) {
                 const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
                 int run = poff[c], k = koff[c];
                 for (int b = lo; b < hi; b++) {
                     const int start = run;
-                    run += counts[b + 1];
+                    run += block_total(NULL, hist, NB, T, b);
                     if (run > start) m->pb[k++] = (pblock){b, start, run};
-                    if (unsorted)
-                        for (int q = 0; q < T; q++) hist[(size_t)q * NB + b] += start;
                 }
             }
-            /* the places wait for the other threads' blocks, the activation for every chunk's marks */
+            /* the activation waits for every chunk's marks, the places for every thread's reads of hist */
             if (unsorted || activate) {
 #pragma omp barrier
             }
@@ -309,6 +306,20 @@ static int sort_team(hearth_scene *s, int n, int T, const int activate, int *W, 
                 }
             }
             if (unsorted) {
+                /* each chunk of particles' first place in each block: the block's start and the
+                 * block's particles in earlier chunks; then the order, once every block has its places */
+#pragma omp for schedule(static)
+                for (int c = 0; c < T; c++) {
+                    const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+                    int run = poff[c];
+                    for (int b = lo; b < hi; b++)
+                        for (int q = 0; q < T; q++) {
+                            int *h = hist + (size_t)q * NB + b;
+                            const int k = *h;
+                            *h = run;
+                            run += k;
+                        }
+                }
 #pragma omp for schedule(static) nowait reduction(max : far)
                 for (int c = 0; c < T; c++) {
                     int *h = hist + (size_t)c * NB;
@@ -322,8 +333,7 @@ static int sort_team(hearth_scene *s, int n, int T, const int activate, int *W, 
             }
         }
     }
-    if (!*st) m->npb = 0;
-    for (int c = 0; c < T && !*st; c++) m->npb += cblk[c + 1];
+    if (!*st) m->npb = npb;
     if (activate && !*st) {
         g->nactive = 0;
         for (int c = 0; c < T; c++) g->nactive += amark[c + 1];
