@@ -948,20 +948,29 @@ static int p2g_store_held(const hearth_scene *s) {
 #endif
 }
 
-static hearth_status p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *err) {
+/* room in the tile store for npb particle blocks (its contents are rewritten by every step) */
+static size_t p2g_store_need(const hearth_scene *s, int npb) {
+    const size_t per = s->g.dim == 2 ? P2G_STORE_NCH(2) * P2G_HALO(2) : P2G_STORE_NCH(3) * P2G_HALO(3);
+    return per * (size_t)npb;
+}
+
+static hearth_status p2g_store_grow(hearth_scene *s, int npb, hearth_error *err) {
     mpm_state *m = s->mpm;
-    *gather = s->ps.n >= SCENE_PARALLEL_MIN && p2g_store_held(s);
-    if (!*gather) return HEARTH_OK;
-    const size_t per = s->g.dim == 2 ? P2G_STORE_NCH(2) * P2G_HALO(2) : P2G_STORE_NCH(3) * P2G_HALO(3), need = per * (size_t)m->npb;
+    const size_t need = p2g_store_need(s, npb);
     if (need > m->tiles_cap) {
         const size_t cap = m->tiles_cap + m->tiles_cap / 2 > need ? m->tiles_cap + m->tiles_cap / 2 : need;
         mem_free(m->tiles, sizeof(double) * m->tiles_cap);
         m->tiles_cap = 0;
         if (!(m->tiles = mem_alloc(sizeof(double) * cap)))
-            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for P2G's tiles of %d particle blocks", m->npb);
+            return err_set(err, HEARTH_ERR_NOMEM, "out of memory for P2G's tiles of %d particle blocks", npb);
         m->tiles_cap = cap;
     }
     return HEARTH_OK;
+}
+
+static hearth_status p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *err) {
+    *gather = s->ps.n >= SCENE_PARALLEL_MIN && p2g_store_held(s);
+    return *gather ? p2g_store_grow(s, s->mpm->npb, err) : HEARTH_OK;
 }
 
 /* P2G, the grid update and G2P in one parallel region, for a step with
@@ -977,40 +986,103 @@ static hearth_status p2g_store_reserve(hearth_scene *s, int *gather, hearth_erro
  * synchronisations a step, 3D 15 -> 8; threads_sync.sh). The same sums in
  * the same order: the same bits. Returns the fastest collider speed
  * (mpm_grid_update's). */
+/* step_team's phases, for every thread of its region (P2G's blocks' partials reset already, or in the
+ * gather's loop) */
+static void step_team_body(hearth_scene *s, double dt, const int gather, block_fn p2g, block_fn g2p, block_fn store,
+                           double *vcol2) {
+    mpm_state *m = s->mpm;
+    if (gather) {
+        /* every block's tile, in any order: each keeps its own; the loop's barrier before the gather.
+         * Guided: long runs of neighbouring blocks per thread (g2p_team says why) */
+        double tile[GRID_NCH_MOMENTUM * GRID_T * GRID_T * GRID_T];
+#pragma omp for schedule(guided)
+        for (int k = m->k_lo; k < m->k_hi; k++) {
+            m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
+            store(s, k, dt, tile);
+        }
+    } else {
+        p2g_team(s, p2g, dt);
+    }
+    grid_update_team(s, dt, vcol2, gather);
+    g2p_team(s, g2p, dt);
+    if (gather) { /* the block table back to no particle block anywhere, for the next step's scatter */
+#pragma omp for schedule(static) nowait
+        for (int k = m->k_lo; k < m->k_hi; k++) m->pbof[m->pb[k].block] = -1;
+    }
+}
+
 static double step_team(hearth_scene *s, double dt, step_report *rep, const int gather) {
     const block_fn p2g = p2g_prepare(s), g2p = g2p_fn(s);
-    mpm_state *m = s->mpm;
-    const block_fn store = p2g_store_fns[m->sticky_faces][s->g.dim == 3];
+    const block_fn store = p2g_store_fns[s->mpm->sticky_faces][s->g.dim == 3];
     double vcol2 = 0;
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
-    {
-        if (gather) {
-            /* every block's tile, in any order: each keeps its own; the loop's barrier before the gather.
-             * Guided: long runs of neighbouring blocks per thread (g2p_team says why) */
-            double tile[GRID_NCH_MOMENTUM * GRID_T * GRID_T * GRID_T];
-#pragma omp for schedule(guided)
-            for (int k = m->k_lo; k < m->k_hi; k++) store(s, k, dt, tile);
-        } else {
-            p2g_team(s, p2g, dt);
-        }
-        grid_update_team(s, dt, &vcol2, gather);
-        g2p_team(s, g2p, dt);
-        if (gather) { /* the block table back to no particle block anywhere, for the next step's scatter */
-#pragma omp for schedule(static) nowait
-            for (int k = m->k_lo; k < m->k_hi; k++) m->pbof[m->pb[k].block] = -1;
-        }
-    }
+    step_team_body(s, dt, gather, p2g, g2p, store, &vcol2);
     g2p_reduce(s, rep);
     return sqrt(vcol2);
 }
 
+/* The gather's step (2D, more than one thread, one rank, nothing between
+ * the phases) with the sort's count and lists at the start of its one
+ * region (mpm_sort_begin): the sort's region ended and the step's began at
+ * two synchronisations where this has the barrier before P2G, or the
+ * permutation's, and the permutation's own region goes too. The grid's
+ * activation, the particle blocks' range, their partials and the tile store
+ * are done in the region (the store's growth, when a step finds more blocks
+ * than ever, in a single). Bits: mpm_sort's and step_team's. */
+static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *rep, mpm_sort_team *t, double *vcol,
+                                      hearth_error *err) {
+    mpm_state *m = s->mpm;
+    particles *ps = &s->ps;
+    m->sticky_faces = 0;
+    for (int c = 0; c < s->ncol; c++) m->sticky_faces |= s->cols[c].mode == HEARTH_STICKY;
+    const block_fn g2p = g2p_fn(s), store = p2g_store_fns[m->sticky_faces][s->g.dim == 3];
+    const size_t cap0 = m->tiles_cap, room = sizeof(int) * (size_t)m->scratch_cap;
+    hearth_status gst = HEARTH_OK;
+    double vcol2 = 0;
+#pragma omp parallel
+    {
+        int npb;
+        const int W = mpm_sort_team_run(s, t, &npb);
+        if (!t->st) {
+            if (W >= 0) particles_permute_team(ps, m->order, W, m->keys, room);
+            if (p2g_store_need(s, npb) > cap0) {
+#pragma omp single
+                gst = p2g_store_grow(s, npb, err);
+            } else if (W < 0) { /* the particle blocks, marks and slots for P2G (a permutation ends past one) */
+#pragma omp barrier
+            }
+            if (!gst) step_team_body(s, dt, 1, NULL, g2p, store, &vcol2);
+        }
+    }
+    if (t->st) return t->st;
+    if (gst) return gst;
+    g2p_reduce(s, rep);
+    *vcol = sqrt(vcol2);
+    return HEARTH_OK;
+}
+
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err) {
     HEARTH_ASSERT(s->ps.t2 == (s->g.dim == 2)); /* P2G and G2P read 2D's C and F as 2x2 blocks (scene.c sets it) */
-    hearth_status st = mpm_sort(s, err);
-    if (st) return st;
-    if (mixing_active(s) && (st = mixing_update(s, err))) return st;
-    const int heat = thermal_active(s), water = water_active(s);
+    int heat = thermal_active(s), water = water_active(s);
     const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
+    int usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
+    hearth_status st;
+    int sorted = 0;
+    if (usual && !mixing_active(s) && s->ps.n >= SCENE_PARALLEL_MIN && p2g_store_held(s)) { /* the gather's step */
+        mpm_sort_team t;
+        if ((st = mpm_sort_begin(s, &t, err))) return st;
+        if (t.T > 1) { /* the sort's count and lists in the step's region */
+            double vcol;
+            if ((st = step_team_sorted(s, dt, rep, &t, &vcol, err))) return st;
+            rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;
+            return mpm_ranks_report(s, dt, vcol, rep, err);
+        }
+        sorted = 1; /* mpm_sort_begin sorted as mpm_sort does */
+    }
+    if (!sorted && (st = mpm_sort(s, err))) return st;
+    if (mixing_active(s) && (st = mixing_update(s, err))) return st;
+    heat = thermal_active(s), water = water_active(s); /* as the mixing left them */
+    usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
     if (wrap && (heat || water))
         return err_set(err, HEARTH_ERR_PARAM, "scene: periodic axes (periodic_%c) do not carry %s yet; use a closed box",
                        "xyz"[s->def.periodic[0] ? 0 : s->def.periodic[1] ? 1 : 2], heat ? "heat" : "water");
@@ -1021,7 +1093,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
                                                       "use mode = \"slip\" or \"separate\", or set two_field = false", c);
         if ((st = mpm_two_field_prepare(s, err))) return st;
     }
-    if (!heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field) { /* the usual step: one region */
+    if (usual) { /* the usual step: one region */
         int gather;
         if ((st = p2g_store_reserve(s, &gather, err))) return st;
         const double vcol = step_team(s, dt, rep, gather);

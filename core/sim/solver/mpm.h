@@ -145,6 +145,30 @@ static inline int clamp_to_grid(const grid *g, double *x) {
 /// Sort the particles into grid blocks, list the particle blocks and
 /// activate the grid blocks their tiles touch (mpm_sort.c).
 hearth_status mpm_sort(hearth_scene *s, hearth_error *err);
+/// mpm_sort inside the caller's parallel region (mpm.c's one-region step),
+/// for one rank and no periodic axis. mpm_sort_begin does the serial part
+/// before it; when t->T > 1 every thread of the region then calls
+/// mpm_sort_team_run, which lists the particle blocks (m->npb, this rank's
+/// range), marks and activates the grid, fills the order and returns the
+/// farthest move in it when the keys were out of order (the caller then runs
+/// particles_permute_team with it; -1 when in order; *npb the particle
+/// blocks, every thread's own copy), and t->st says whether a reservation
+/// failed (every thread sees the same). The lists and the grid are complete
+/// after the team's next barrier. t->T == 0: mpm_sort_begin sorted as
+/// mpm_sort does (no colour lists are made in the region: the gather does not
+/// read them). Bits: mpm_sort's.
+#define MPM_SORT_CHUNKS_MAX 64
+typedef struct mpm_sort_team {
+    int T;             /* the count's chunks (more than one), or 0 */
+    int activate;      /* the grid's activation in the region too */
+    int set_range;     /* and this rank's particle blocks (one rank: all of them) */
+    int pbcap, gcap;   /* the lists' room when the region began (the singles grow them) */
+    hearth_status st;
+    hearth_error *err;
+    int unsorted[MPM_SORT_CHUNKS_MAX], far[MPM_SORT_CHUNKS_MAX], amark[MPM_SORT_CHUNKS_MAX]; /* per chunk */
+} mpm_sort_team;
+hearth_status mpm_sort_begin(hearth_scene *s, mpm_sort_team *t, hearth_error *err);
+int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int *npb);
 /// Release the sort's per-particle scratch (mpm_sort.c).
 void mpm_scratch_free(mpm_state *m);
 /// Along the periodic axes: every particle into the period; the blocks

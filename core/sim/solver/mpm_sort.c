@@ -77,7 +77,7 @@ static hearth_status pb_reserve(mpm_state *m, int need, hearth_error *err) {
 /* The chunks the sort's bookkeeping splits into: one per thread when there
  * is enough to share (at most SORT_CHUNKS_MAX, for the stack arrays below),
  * else one. Every result is independent of it. */
-#define SORT_CHUNKS_MAX 64
+#define SORT_CHUNKS_MAX MPM_SORT_CHUNKS_MAX
 static int sort_chunks(int n) {
 #ifdef _OPENMP
     if (n < SCENE_PARALLEL_MIN) return 1;
@@ -193,153 +193,165 @@ static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
     return HEARTH_OK;
 }
 
-/* sort_counting and sort_blocks in one parallel region of T > 1 threads.
- * With T chunks of particles, chunk c counts its own particles per block
- * (hist, T x nblocks); a particle's place is its block's start, plus the
- * block's particles in earlier chunks, plus those before it in its own chunk:
- * the serial sort's place, so the order is the same bits for any T
- * (`determinism_threads_*`). The block starts, the particle blocks and the
- * marks are integers from the same counts, so they are the serial sort's too.
+/* The sort's count and lists for the threads of a parallel region: its own
+ * in mpm_sort, or mpm.c's one-region step (mpm_sort_begin). With T chunks of
+ * particles, chunk c counts its own particles per block (hist, T x nblocks);
+ * a particle's place is its block's start, plus the block's particles in
+ * earlier chunks, plus those before it in its own chunk: the serial sort's
+ * place, so the order is the same bits for any T (`determinism_threads_*`).
+ * The block starts, the particle blocks, the marks and the grid's slots are
+ * integers from the same counts, so they are the serial sort's too.
+ *
  * After the count's barrier hist is only read until every thread is past the
- * marks: each thread adds up the table itself for the chunks' offsets (T
- * numbers, O(T nblocks) reads, which the chunked count is only chosen for
- * when T nblocks <= 2 n), and the marks read a neighbour's total from hist,
- * so the keys in order need one barrier in the region (two with the
- * activation) where a pass writing the totals and the exclusive counts took
- * two: with OMP_WAIT_POLICY=passive (main.c) each synchronisation wakes a
- * sleeping thread, a futex round trip, and in the 2D 128-cell bench all this
- * bookkeeping is about 10 instructions a particle. Out of order, hist turns
- * into places after a barrier (two then, as before). Returns whether the
- * keys were out of order (order then filled); *st gets pb_reserve's status. */
-static int sort_team(hearth_scene *s, int n, int T, const int activate, int *W, hearth_status *st, hearth_error *err) {
+ * marks: each thread adds up the whole table itself for the chunks' offsets
+ * (O(T nblocks) reads, and the chunked count is only chosen where
+ * T nblocks <= 2 n), and in 2D it counts each chunk's marks on the way (a row
+ * of blocks behind), so each chunk activates its own blocks of the grid right
+ * after marking them. The marks read a neighbour's total from hist. So with
+ * the keys in order the sort needs one barrier (3D's activation one more),
+ * where a pass writing the totals and the exclusive counts, and the marks'
+ * count, took three: with OMP_WAIT_POLICY=passive (main.c) each
+ * synchronisation wakes a sleeping thread, a futex round trip, and in the 2D
+ * 128-cell bench all this bookkeeping is about 10 instructions a particle.
+ * Out of order, hist turns into places after a barrier, the order is filled
+ * after another, and the caller permutes (particles_permute_team). Returns
+ * the farthest a particle moves in the order (particles_permute_within's W)
+ * when the keys were out of order, else -1; *npb gets the particle blocks
+ * (every thread's own copy); t->st gets a reservation's status. */
+#define MARK_ROW_MAX 4096 /* 2D's marks are counted on the way where a row of blocks fits on the stack */
+int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int *npb) {
     grid *g = &s->g;
     mpm_state *m = s->mpm;
-    const int NB = m->nblocks, *keys = m->keys, nb1 = g->nb[1], nb2 = g->nb[2];
-    int *order = m->order, *hist = m->hist, unsorted = 0;
-    int amark[SORT_CHUNKS_MAX + 1] = {0}; /* per chunk of the block table (at c + 1): its marked blocks */
-    int npb = 0;                          /* the particle blocks (every thread finds the same) */
-    *st = HEARTH_OK;
-    int far = 0; /* the farthest a particle moves in the order (particles_permute_within's W) */
-    /* read once: the singles below change them while others may test them */
-    const int pbcap = m->pbcap, gcap = g->cap < g->acap ? g->cap : g->acap;
-#pragma omp parallel num_threads(T)
-    {
-        /* each chunk of particles counts its own per block */
-#pragma omp for schedule(static) reduction(| : unsorted)
-        for (int c = 0; c < T; c++) {
-            int *h = hist + (size_t)c * NB;
-            memset(h, 0, sizeof(int) * (size_t)NB);
-            const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
-            for (int i = lo; i < hi; i++) {
-                h[keys[i]]++;
-                unsorted |= i > 0 && keys[i - 1] > keys[i];
-            }
-        }
-        /* Every thread adds up the table for each chunk of it: the particles and the particle blocks
-         * before it (poff, koff). A step that finds more particle blocks than ever grows their lists
-         * first (every thread sees the same need, so all or none meet the single). */
-        int poff[SORT_CHUNKS_MAX + 1], koff[SORT_CHUNKS_MAX + 1];
-        poff[0] = koff[0] = 0;
-        for (int c = 0; c < T; c++) {
-            const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
-            int np = 0, nk = 0;
-            for (int b = lo; b < hi; b++) {
-                const int sum = block_total(NULL, hist, NB, T, b);
-                np += sum;
-                nk += sum > 0;
-            }
-            poff[c + 1] = poff[c] + np;
-            koff[c + 1] = koff[c] + nk;
-        }
-#pragma omp master
-        npb = koff[T];
-        if (koff[T] > pbcap) {
-#pragma omp single
-            *st = pb_reserve(m, koff[T], err);
-        }
-        if (!*st) {
-            /* The marks and the particle blocks only read hist, so neither waits for the other.
-             * The marks go by chunks of the block table, each counting its own for the activation. */
-#pragma omp for schedule(static) nowait
-            for (int c = 0; c < T; c++) {
-                const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
-                int bc[3], na = 0;
-                grid_block_coords(g, lo < NB ? lo : 0, bc);
-                for (int b = lo; b < hi; b++) { /* b = grid_block_id(bc): z fastest */
-                    const unsigned char mk = touched(g, NULL, hist, NB, T, bc[0], bc[1], bc[2]);
-                    m->mark[b] = mk;
-                    na += mk != 0;
-                    if (++bc[2] == nb2) {
-                        bc[2] = 0;
-                        if (++bc[1] == nb1) bc[1] = 0, bc[0]++;
-                    }
-                }
-                amark[c + 1] = na;
-            }
-            /* each chunk's blocks from its offsets */
-#pragma omp for schedule(static) nowait
-            for (int c = 0; c < T; c++) {
-                const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
-                int run = poff[c], k = koff[c];
-                for (int b = lo; b < hi; b++) {
-                    const int start = run;
-                    run += block_total(NULL, hist, NB, T, b);
-                    if (run > start) m->pb[k++] = (pblock){b, start, run};
-                }
-            }
-            /* the activation waits for every chunk's marks, the places for every thread's reads of hist */
-            if (unsorted || activate) {
-#pragma omp barrier
-            }
-            if (activate) { /* grid_activate, here in the same region: the slots of each chunk of the table */
-                int aoff[SORT_CHUNKS_MAX + 1];
-                aoff[0] = 0;
-                for (int c = 0; c < T; c++) aoff[c + 1] = aoff[c] + amark[c + 1];
-                if (aoff[T] > gcap) {
-#pragma omp single
-                    *st = grid_activate_reserve(g, aoff[T], err);
-                }
-                if (!*st) {
-#pragma omp for schedule(static) nowait
-                    for (int c = 0; c < T; c++)
-                        grid_activate_chunk(g, m->mark, (int)((long)NB * c / T), (int)((long)NB * (c + 1) / T), aoff[c]);
-                }
-            }
-            if (unsorted) {
-                /* each chunk of particles' first place in each block: the block's start and the
-                 * block's particles in earlier chunks; then the order, once every block has its places */
+    const int NB = m->nblocks, T = t->T, n = s->ps.n, *keys = m->keys, nb1 = g->nb[1], nb2 = g->nb[2];
+    int *order = m->order, *hist = m->hist;
+    /* each chunk of particles counts its own per block */
 #pragma omp for schedule(static)
-                for (int c = 0; c < T; c++) {
-                    const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
-                    int run = poff[c];
-                    for (int b = lo; b < hi; b++)
-                        for (int q = 0; q < T; q++) {
-                            int *h = hist + (size_t)q * NB + b;
-                            const int k = *h;
-                            *h = run;
-                            run += k;
-                        }
-                }
-#pragma omp for schedule(static) nowait reduction(max : far)
-                for (int c = 0; c < T; c++) {
-                    int *h = hist + (size_t)c * NB;
-                    const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
-                    for (int i = lo; i < hi; i++) {
-                        const int p = h[keys[i]]++;
-                        order[p] = i;
-                        if ((p > i ? p - i : i - p) > far) far = p > i ? p - i : i - p;
-                    }
-                }
+    for (int c = 0; c < T; c++) {
+        int *h = hist + (size_t)c * NB, u = 0;
+        memset(h, 0, sizeof(int) * (size_t)NB);
+        const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
+        for (int i = lo; i < hi; i++) {
+            h[keys[i]]++;
+            u |= i > 0 && keys[i - 1] > keys[i];
+        }
+        t->unsorted[c] = u;
+    }
+    int unsorted = 0;
+    for (int c = 0; c < T; c++) unsorted |= t->unsorted[c];
+    /* Every thread adds up the table for each chunk of it: the particles, the particle blocks and (2D)
+     * the marks before it (poff, koff, aoff). A block is marked when it or its -1 neighbours hold particles. */
+    const int early = t->activate && g->dim == 2 && nb1 <= MARK_ROW_MAX;
+    int poff[SORT_CHUNKS_MAX + 1] = {0}, koff[SORT_CHUNKS_MAX + 1] = {0}, aoff[SORT_CHUNKS_MAX + 1] = {0};
+    {
+        unsigned char rows[2][MARK_ROW_MAX]; /* which blocks of this row and the one before hold particles */
+        int c = 0, chi = (int)((long)NB / T);
+        for (int b = 0; b < NB; b++) {
+            while (b >= chi) chi = (int)((long)NB * (++c + 1) / T);
+            const int sum = block_total(NULL, hist, NB, T, b);
+            poff[c + 1] += sum;
+            koff[c + 1] += sum > 0;
+            if (early) { /* 2D: b = bx nb1 + by */
+                const int bx = b / nb1, by = b - bx * nb1;
+                unsigned char *cur = rows[bx & 1], *prev = rows[~bx & 1];
+                cur[by] = sum > 0;
+                aoff[c + 1] += cur[by] | (by > 0 && cur[by - 1]) | (bx > 0 && (prev[by] | (by > 0 && prev[by - 1])));
             }
         }
+        for (c = 0; c < T; c++) poff[c + 1] += poff[c], koff[c + 1] += koff[c], aoff[c + 1] += aoff[c];
     }
-    if (!*st) m->npb = npb;
-    if (activate && !*st) {
-        g->nactive = 0;
-        for (int c = 0; c < T; c++) g->nactive += amark[c + 1];
+    /* A step that finds more particle blocks or marks than ever grows the lists first (every thread
+     * sees the same need, so all or none meet the single). */
+    if (koff[T] > t->pbcap || (early && aoff[T] > t->gcap)) {
+#pragma omp single
+        {
+            if (koff[T] > t->pbcap) t->st = pb_reserve(m, koff[T], t->err);
+            if (!t->st && early && aoff[T] > t->gcap) t->st = grid_activate_reserve(g, aoff[T], t->err);
+        }
     }
-    *W = far;
-    return unsorted;
+    *npb = koff[T];
+    if (t->st) return -1;
+    /* The marks and the particle blocks only read hist, so neither waits for the other. The marks go
+     * by chunks of the block table, each counting its own for a later activation (3D). */
+#pragma omp for schedule(static) nowait
+    for (int c = 0; c < T; c++) {
+        const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+        int bc[3], na = 0;
+        grid_block_coords(g, lo < NB ? lo : 0, bc);
+        for (int b = lo; b < hi; b++) { /* b = grid_block_id(bc): z fastest */
+            const unsigned char mk = touched(g, NULL, hist, NB, T, bc[0], bc[1], bc[2]);
+            m->mark[b] = mk;
+            na += mk != 0;
+            if (++bc[2] == nb2) {
+                bc[2] = 0;
+                if (++bc[1] == nb1) bc[1] = 0, bc[0]++;
+            }
+        }
+        t->amark[c] = na;
+        if (early) grid_activate_chunk(g, m->mark, lo, hi, aoff[c]);
+    }
+    /* each chunk's blocks from its offsets */
+#pragma omp for schedule(static) nowait
+    for (int c = 0; c < T; c++) {
+        const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+        int run = poff[c], k = koff[c];
+        for (int b = lo; b < hi; b++) {
+            const int start = run;
+            run += block_total(NULL, hist, NB, T, b);
+            if (run > start) m->pb[k++] = (pblock){b, start, run};
+        }
+    }
+#pragma omp single nowait
+    {
+        m->npb = koff[T];
+        if (t->set_range) m->k_lo = 0, m->k_hi = koff[T]; /* one rank: every particle block (mpm_ranks_partition) */
+        if (early) g->nactive = aoff[T];
+    }
+    /* 3D's activation waits for every chunk's marks, the places for every thread's reads of hist */
+    const int late = t->activate && !early;
+    if (unsorted || late) {
+#pragma omp barrier
+    }
+    if (late) { /* grid_activate, here in the same region: the slots of each chunk of the table */
+        for (int c = 0; c < T; c++) aoff[c + 1] = aoff[c] + t->amark[c];
+        if (aoff[T] > t->gcap) {
+#pragma omp single
+            t->st = grid_activate_reserve(g, aoff[T], t->err);
+        }
+        if (t->st) return -1;
+#pragma omp for schedule(static) nowait
+        for (int c = 0; c < T; c++) grid_activate_chunk(g, m->mark, (int)((long)NB * c / T), (int)((long)NB * (c + 1) / T), aoff[c]);
+#pragma omp single nowait
+        g->nactive = aoff[T];
+    }
+    if (!unsorted) return -1;
+    /* each chunk of particles' first place in each block: the block's start and the block's particles
+     * in earlier chunks; then the order, once every block has its places */
+#pragma omp for schedule(static)
+    for (int c = 0; c < T; c++) {
+        const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+        int run = poff[c];
+        for (int b = lo; b < hi; b++)
+            for (int q = 0; q < T; q++) {
+                int *h = hist + (size_t)q * NB + b;
+                const int k = *h;
+                *h = run;
+                run += k;
+            }
+    }
+#pragma omp for schedule(static)
+    for (int c = 0; c < T; c++) {
+        int *h = hist + (size_t)c * NB, far = 0;
+        const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
+        for (int i = lo; i < hi; i++) {
+            const int p = h[keys[i]]++;
+            order[p] = i;
+            if ((p > i ? p - i : i - p) > far) far = p > i ? p - i : i - p;
+        }
+        t->far[c] = far;
+    }
+    int W = 0;
+    for (int c = 0; c < T; c++) W = t->far[c] > W ? t->far[c] : W;
+    return W;
 }
 
 /* Sort keys from G2P: G2P files each particle in its block while its new
@@ -347,8 +359,9 @@ static int sort_team(hearth_scene *s, int n, int T, const int activate, int *W, 
  * sort's own pass over the positions runs only when those keys are stale:
  * the first step, particles added or removed, a rolled back step, periodic
  * axes (wrapped after G2P). 3D 32 cells, one thread: the pass cost about 64
- * instructions per particle-step. */
-hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
+ * instructions per particle-step. The serial part before the count; *Tc
+ * gets the count's chunks. */
+static hearth_status sort_begin(hearth_scene *s, int *Tc, hearth_error *err) {
     grid *g = &s->g;
     particles *ps = &s->ps;
     hearth_status st = mpm_ranks_migrate(s, err); /* slabs: crossings to the neighbour ranks first */
@@ -376,35 +389,83 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
      * is at most 8 bytes a particle (a big, mostly empty box counts
      * serially rather than hold tables the size of the box per thread; the
      * order is the same either way). */
-    const int Tc = T > 1 && (size_t)T * (size_t)m->nblocks <= 2 * (size_t)n ? T : 1;
-    const size_t hneed = Tc > 1 ? (size_t)Tc * (size_t)m->nblocks : 0;
+    *Tc = T > 1 && (size_t)T * (size_t)m->nblocks <= 2 * (size_t)n ? T : 1;
+    const size_t hneed = *Tc > 1 ? (size_t)*Tc * (size_t)m->nblocks : 0;
     if (hneed > m->histcap) {
         int *h = mem_alloc(sizeof(int) * hneed);
-        if (!h) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the sort's block counts (%d chunks)", Tc);
+        if (!h) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the sort's block counts (%d chunks)", *Tc);
         mem_free(m->hist, sizeof(int) * m->histcap);
         m->hist = h;
         m->histcap = hneed;
     }
-    st = grid_set_channels(g, s->def.two_field ? GRID_NCH_TWO
-                              : thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
-    if (st) return st;
-    /* A big table's activation runs in the sort's region (its own two regions took six synchronisations
-     * a step), unless the marks wait for a periodic axis's ghosts or a rank's halo. */
-    const int act = Tc > 1 && !wrap && m->nranks == 1 && m->nblocks >= GRID_ACTIVATE_PARALLEL_MIN;
-    if (Tc > 1) { /* the usual parallel sort: one region */
-        int W = 0;
-        const int unsorted = sort_team(s, n, Tc, act, &W, &st, err);
-        if (st) return st;
-        if (unsorted) particles_permute_within(ps, m->order, W, m->keys, sizeof(int) * (size_t)m->scratch_cap);
-        sort_colours(s);
-    } else {
-        if (sort_counting(m, n)) particles_permute(ps, m->order, m->keys, sizeof(int) * (size_t)m->scratch_cap);
-        if ((st = sort_blocks(s, T, err))) return st;
-    }
-    if (wrap) mpm_periodic_mark(s, m->mark);
+    return grid_set_channels(g, s->def.two_field ? GRID_NCH_TWO
+                                : thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
+}
+
+/* The team's shared part, for a region of Tc threads. The grid's activation
+ * goes in the region when nothing changes the marks after it (a periodic
+ * axis's ghosts, a rank's halo) and it costs no barrier there (2D) or the
+ * box is big (its own two regions took six synchronisations a step). */
+static void team_setup(hearth_scene *s, int Tc, mpm_sort_team *t, hearth_error *err) {
+    const mpm_state *m = s->mpm;
+    const grid *g = &s->g;
+    const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
+    *t = (mpm_sort_team){.T = Tc, .pbcap = m->pbcap, .gcap = g->cap < g->acap ? g->cap : g->acap, .err = err};
+    t->activate = Tc > 1 && !wrap && m->nranks == 1 && (g->dim == 2 || m->nblocks >= GRID_ACTIVATE_PARALLEL_MIN);
+}
+
+/* After the count and lists, one way or the other: the colour lists, the marks' extra blocks, the grid. */
+static hearth_status sort_end(hearth_scene *s, int activated, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    hearth_status st;
+    if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) mpm_periodic_mark(s, m->mark);
     if ((st = mpm_ranks_mark(s, err))) return st;
-    if (!act && (st = grid_activate(g, m->mark, err))) return st;
+    if (!activated && (st = grid_activate(&s->g, m->mark, err))) return st;
     mpm_ranks_partition(s); /* which particle blocks this rank steps */
     return HEARTH_OK;
 }
 
+/* The count and lists after sort_begin, in their own region when Tc > 1, and the rest. */
+static hearth_status sort_rest(hearth_scene *s, int Tc, mpm_sort_team *t, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    particles *ps = &s->ps;
+    hearth_status st;
+    if (Tc == 1) {
+        if (sort_counting(m, ps->n)) particles_permute(ps, m->order, m->keys, sizeof(int) * (size_t)m->scratch_cap);
+        if ((st = sort_blocks(s, sort_chunks(ps->n), err))) return st;
+        return sort_end(s, 0, err);
+    }
+    /* the usual parallel sort: one region, the permutation in it */
+#pragma omp parallel num_threads(Tc)
+    {
+        int npb;
+        const int W = mpm_sort_team_run(s, t, &npb);
+        if (W >= 0) particles_permute_team(ps, m->order, W, m->keys, sizeof(int) * (size_t)m->scratch_cap);
+    }
+    if (t->st) return t->st;
+    sort_colours(s);
+    return sort_end(s, t->activate, err);
+}
+
+hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
+    int Tc;
+    hearth_status st = sort_begin(s, &Tc, err);
+    if (st) return st;
+    mpm_sort_team t;
+    team_setup(s, Tc, &t, err);
+    return sort_rest(s, Tc, &t, err);
+}
+
+hearth_status mpm_sort_begin(hearth_scene *s, mpm_sort_team *t, hearth_error *err) {
+    int Tc;
+    hearth_status st = sort_begin(s, &Tc, err);
+    if (st) return st;
+    team_setup(s, Tc, t, err);
+    if (Tc > 1 && t->activate) { /* the step's region runs the count and lists (mpm_sort_team_run) */
+        t->set_range = 1;
+        return HEARTH_OK;
+    }
+    st = sort_rest(s, Tc, t, err);
+    t->T = 0;
+    return st;
+}
