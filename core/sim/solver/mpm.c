@@ -973,6 +973,17 @@ static hearth_status p2g_store_reserve(hearth_scene *s, int *gather, hearth_erro
     return *gather ? p2g_store_grow(s, s->mpm->npb, err) : HEARTH_OK;
 }
 
+/* step_team's phases after P2G, for every thread of its region */
+static void step_team_rest(hearth_scene *s, double dt, const int gather, block_fn g2p, double *vcol2) {
+    mpm_state *m = s->mpm;
+    grid_update_team(s, dt, vcol2, gather);
+    g2p_team(s, g2p, dt);
+    if (gather) { /* the block table back to no particle block anywhere, for the next step's scatter */
+#pragma omp for schedule(static) nowait
+        for (int k = m->k_lo; k < m->k_hi; k++) m->pbof[m->pb[k].block] = -1;
+    }
+}
+
 /* P2G, the grid update and G2P in one parallel region, for a step with
  * nothing between them that needs one thread or opens regions of its own (no
  * heat or water, no periodic axis, one rank, a thread-safe body force). With
@@ -986,46 +997,72 @@ static hearth_status p2g_store_reserve(hearth_scene *s, int *gather, hearth_erro
  * synchronisations a step, 3D 15 -> 8; threads_sync.sh). The same sums in
  * the same order: the same bits. Returns the fastest collider speed
  * (mpm_grid_update's). */
-/* step_team's phases, for every thread of its region (P2G's blocks' partials reset already, or in the
- * gather's loop) */
-static void step_team_body(hearth_scene *s, double dt, const int gather, block_fn p2g, block_fn g2p, block_fn store,
-                           double *vcol2) {
-    mpm_state *m = s->mpm;
-    if (gather) {
-        /* every block's tile, in any order: each keeps its own; the loop's barrier before the gather.
-         * Guided: long runs of neighbouring blocks per thread (g2p_team says why) */
-        double tile[GRID_NCH_MOMENTUM * GRID_T * GRID_T * GRID_T];
-#pragma omp for schedule(guided)
-        for (int k = m->k_lo; k < m->k_hi; k++) {
-            m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
-            store(s, k, dt, tile);
-        }
-    } else {
-        p2g_team(s, p2g, dt);
-    }
-    grid_update_team(s, dt, vcol2, gather);
-    g2p_team(s, g2p, dt);
-    if (gather) { /* the block table back to no particle block anywhere, for the next step's scatter */
-#pragma omp for schedule(static) nowait
-        for (int k = m->k_lo; k < m->k_hi; k++) m->pbof[m->pb[k].block] = -1;
-    }
-}
-
 static double step_team(hearth_scene *s, double dt, step_report *rep, const int gather) {
     const block_fn p2g = p2g_prepare(s), g2p = g2p_fn(s);
-    const block_fn store = p2g_store_fns[s->mpm->sticky_faces][s->g.dim == 3];
+    mpm_state *m = s->mpm;
+    const block_fn store = p2g_store_fns[m->sticky_faces][s->g.dim == 3];
     double vcol2 = 0;
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
-    step_team_body(s, dt, gather, p2g, g2p, store, &vcol2);
+    {
+        if (gather) {
+            /* every block's tile, in any order: each keeps its own; the loop's barrier before the gather.
+             * Guided: long runs of neighbouring blocks per thread (g2p_team says why) */
+            double tile[GRID_NCH_MOMENTUM * GRID_T * GRID_T * GRID_T];
+#pragma omp for schedule(guided)
+            for (int k = m->k_lo; k < m->k_hi; k++) store(s, k, dt, tile);
+        } else {
+            p2g_team(s, p2g, dt);
+        }
+        step_team_rest(s, dt, gather, g2p, &vcol2);
+    }
     g2p_reduce(s, rep);
     return sqrt(vcol2);
+}
+
+/* The gather's scatter in the one-region step: each chunk of the sort's
+ * particle blocks as soon as the sort has published it (t->ready; all of
+ * them when all_ready), with no barrier between the sort and P2G. Each
+ * thread starts with the chunk it sorted and then helps with the others that
+ * are ready, taking blocks from a chunk's counter (t->next) in runs of a
+ * share of what is left, down to single blocks (long runs of neighbouring
+ * blocks: g2p_team says why); a chunk whose owner is still sorting is left to
+ * it (it reaches its own chunk first). Every block once, whichever thread
+ * takes it: the same bits. Ends with the barrier before the gather. */
+static void p2g_store_chunks(hearth_scene *s, mpm_sort_team *t, const int *kof, const int all_ready, block_fn store,
+                             double dt) {
+    mpm_state *m = s->mpm;
+    const int T = t->T;
+    int me = 0, P = 1;
+#ifdef _OPENMP
+    me = omp_get_thread_num();
+    P = omp_get_num_threads();
+#endif
+    double tile[GRID_NCH_MOMENTUM * GRID_T * GRID_T * GRID_T];
+    const int c0 = (int)((long)me * T / P); /* the sort's static split: thread me sorted chunk me when P = T */
+    for (int j = 0; j < T; j++) {
+        const int c = (c0 + j) % T, end = kof[c + 1];
+        if (!all_ready && !__atomic_load_n(&t->ready[c], __ATOMIC_ACQUIRE)) continue;
+        for (;;) {
+            const int left = end - __atomic_load_n(&t->next[c], __ATOMIC_RELAXED);
+            if (left <= 0) break;
+            const int run = left / (2 * P) > 1 ? left / (2 * P) : 1;
+            const int k0 = __atomic_fetch_add(&t->next[c], run, __ATOMIC_RELAXED);
+            for (int k = k0; k < k0 + run && k < end; k++) {
+                m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
+                store(s, k, dt, tile);
+            }
+        }
+    }
+#pragma omp barrier
 }
 
 /* The gather's step (2D, more than one thread, one rank, nothing between
  * the phases) with the sort's count and lists at the start of its one
  * region (mpm_sort_begin): the sort's region ended and the step's began at
- * two synchronisations where this has the barrier before P2G, or the
- * permutation's, and the permutation's own region goes too. The grid's
+ * two synchronisations, and with the keys in order P2G starts on each chunk
+ * of particle blocks as the sort publishes it (p2g_store_chunks), so the
+ * step has the count's barrier, P2G's and the grid update's; out of order
+ * the permutation (its region gone too) ends past a barrier. The grid's
  * activation, the particle blocks' range, their partials and the tile store
  * are done in the region (the store's growth, when a step finds more blocks
  * than ever, in a single). Bits: mpm_sort's and step_team's. */
@@ -1041,17 +1078,19 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
     double vcol2 = 0;
 #pragma omp parallel
     {
-        int npb;
-        const int W = mpm_sort_team_run(s, t, &npb);
+        int kof[MPM_SORT_CHUNKS_MAX + 1];
+        const int W = mpm_sort_team_run(s, t, kof);
         if (!t->st) {
-            if (W >= 0) particles_permute_team(ps, m->order, W, m->keys, room);
-            if (p2g_store_need(s, npb) > cap0) {
+            if (W >= 0) particles_permute_team(ps, m->order, W, m->keys, room); /* ends past a barrier */
+            const int grow = p2g_store_need(s, kof[t->T]) > cap0;
+            if (grow) {
 #pragma omp single
-                gst = p2g_store_grow(s, npb, err);
-            } else if (W < 0) { /* the particle blocks, marks and slots for P2G (a permutation ends past one) */
-#pragma omp barrier
+                gst = p2g_store_grow(s, kof[t->T], err);
             }
-            if (!gst) step_team_body(s, dt, 1, NULL, g2p, store, &vcol2);
+            if (!gst) {
+                p2g_store_chunks(s, t, kof, W >= 0 || grow, store, dt);
+                step_team_rest(s, dt, 1, g2p, &vcol2);
+            }
         }
     }
     if (t->st) return t->st;

@@ -151,12 +151,15 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err);
 /// mpm_sort_team_run, which lists the particle blocks (m->npb, this rank's
 /// range), marks and activates the grid, fills the order and returns the
 /// farthest move in it when the keys were out of order (the caller then runs
-/// particles_permute_team with it; -1 when in order; *npb the particle
-/// blocks, every thread's own copy), and t->st says whether a reservation
-/// failed (every thread sees the same). The lists and the grid are complete
-/// after the team's next barrier. t->T == 0: mpm_sort_begin sorted as
-/// mpm_sort does (no colour lists are made in the region: the gather does not
-/// read them). Bits: mpm_sort's.
+/// particles_permute_team with it; -1 when in order), and t->st says whether
+/// a reservation failed (every thread sees the same). kof gets each chunk's
+/// first particle block (kof[T]: all of them; every thread its own copy).
+/// The lists and the grid are complete after the team's next barrier; before
+/// it, a chunk c with t->ready[c] set (acquire order) has its particle blocks
+/// [kof[c], kof[c + 1]) and their grid blocks ready (2D, keys in order; its
+/// blocks are handed out through t->next[c]). t->T == 0: mpm_sort_begin
+/// sorted as mpm_sort does (no colour lists are made in the region: the
+/// gather does not read them). Bits: mpm_sort's.
 #define MPM_SORT_CHUNKS_MAX 64
 typedef struct mpm_sort_team {
     int T;             /* the count's chunks (more than one), or 0 */
@@ -166,9 +169,10 @@ typedef struct mpm_sort_team {
     hearth_status st;
     hearth_error *err;
     int unsorted[MPM_SORT_CHUNKS_MAX], far[MPM_SORT_CHUNKS_MAX], amark[MPM_SORT_CHUNKS_MAX]; /* per chunk */
+    int ready[MPM_SORT_CHUNKS_MAX], next[MPM_SORT_CHUNKS_MAX]; /* per chunk, atomics (__atomic builtins) */
 } mpm_sort_team;
 hearth_status mpm_sort_begin(hearth_scene *s, mpm_sort_team *t, hearth_error *err);
-int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int *npb);
+int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS_MAX + 1]);
 /// Release the sort's per-particle scratch (mpm_sort.c).
 void mpm_scratch_free(mpm_state *m);
 /// Along the periodic axes: every particle into the period; the blocks

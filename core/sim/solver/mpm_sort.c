@@ -216,10 +216,11 @@ static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
  * Out of order, hist turns into places after a barrier, the order is filled
  * after another, and the caller permutes (particles_permute_team). Returns
  * the farthest a particle moves in the order (particles_permute_within's W)
- * when the keys were out of order, else -1; *npb gets the particle blocks
- * (every thread's own copy); t->st gets a reservation's status. */
+ * when the keys were out of order, else -1; kof gets the chunks' first
+ * particle blocks (kof[T]: all of them; every thread's own copy); t->st gets
+ * a reservation's status. */
 #define MARK_ROW_MAX 4096 /* 2D's marks are counted on the way where a row of blocks fits on the stack */
-int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int *npb) {
+int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS_MAX + 1]) {
     grid *g = &s->g;
     mpm_state *m = s->mpm;
     const int NB = m->nblocks, T = t->T, n = s->ps.n, *keys = m->keys, nb1 = g->nb[1], nb2 = g->nb[2];
@@ -268,10 +269,13 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int *npb) {
             if (!t->st && early && aoff[T] > t->gcap) t->st = grid_activate_reserve(g, aoff[T], t->err);
         }
     }
-    *npb = koff[T];
+    memcpy(kof, koff, sizeof(int) * (size_t)(T + 1));
     if (t->st) return -1;
-    /* The marks and the particle blocks only read hist, so neither waits for the other. The marks go
-     * by chunks of the block table, each counting its own for a later activation (3D). */
+    const int late = t->activate && !early; /* the activation after a barrier (3D, or 2D rows too long for the stack) */
+    /* The marks and the particle blocks only read hist, so no chunk waits for another. The marks count
+     * each chunk's own for a later activation (3D); 2D activates the chunk's blocks here. A chunk done
+     * is published (t->ready, with release order: its particle blocks and their grid blocks are written)
+     * for the step's P2G (mpm.c's p2g_store_chunks), which then needs no barrier. */
 #pragma omp for schedule(static) nowait
     for (int c = 0; c < T; c++) {
         const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
@@ -288,17 +292,15 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int *npb) {
         }
         t->amark[c] = na;
         if (early) grid_activate_chunk(g, m->mark, lo, hi, aoff[c]);
-    }
-    /* each chunk's blocks from its offsets */
-#pragma omp for schedule(static) nowait
-    for (int c = 0; c < T; c++) {
-        const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+        /* the chunk's particle blocks from its offsets */
         int run = poff[c], k = koff[c];
         for (int b = lo; b < hi; b++) {
             const int start = run;
             run += block_total(NULL, hist, NB, T, b);
             if (run > start) m->pb[k++] = (pblock){b, start, run};
         }
+        t->next[c] = koff[c];
+        if (!late && !unsorted) __atomic_store_n(&t->ready[c], 1, __ATOMIC_RELEASE);
     }
 #pragma omp single nowait
     {
@@ -307,7 +309,6 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int *npb) {
         if (early) g->nactive = aoff[T];
     }
     /* 3D's activation waits for every chunk's marks, the places for every thread's reads of hist */
-    const int late = t->activate && !early;
     if (unsorted || late) {
 #pragma omp barrier
     }
@@ -319,7 +320,10 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int *npb) {
         }
         if (t->st) return -1;
 #pragma omp for schedule(static) nowait
-        for (int c = 0; c < T; c++) grid_activate_chunk(g, m->mark, (int)((long)NB * c / T), (int)((long)NB * (c + 1) / T), aoff[c]);
+        for (int c = 0; c < T; c++) { /* the same thread as the chunk's marks and particle blocks (static, T chunks) */
+            grid_activate_chunk(g, m->mark, (int)((long)NB * c / T), (int)((long)NB * (c + 1) / T), aoff[c]);
+            if (!unsorted) __atomic_store_n(&t->ready[c], 1, __ATOMIC_RELEASE);
+        }
 #pragma omp single nowait
         g->nactive = aoff[T];
     }
@@ -438,8 +442,8 @@ static hearth_status sort_rest(hearth_scene *s, int Tc, mpm_sort_team *t, hearth
     /* the usual parallel sort: one region, the permutation in it */
 #pragma omp parallel num_threads(Tc)
     {
-        int npb;
-        const int W = mpm_sort_team_run(s, t, &npb);
+        int kof[MPM_SORT_CHUNKS_MAX + 1];
+        const int W = mpm_sort_team_run(s, t, kof);
         if (W >= 0) particles_permute_team(ps, m->order, W, m->keys, sizeof(int) * (size_t)m->scratch_cap);
     }
     if (t->st) return t->st;
