@@ -169,7 +169,8 @@ typedef struct mpm_sort_team {
     hearth_status st;
     hearth_error *err;
     int unsorted[MPM_SORT_CHUNKS_MAX], far[MPM_SORT_CHUNKS_MAX], amark[MPM_SORT_CHUNKS_MAX]; /* per chunk */
-    int ready[MPM_SORT_CHUNKS_MAX], next[MPM_SORT_CHUNKS_MAX]; /* per chunk, atomics (__atomic builtins) */
+    /* per chunk, atomics (__atomic builtins): the count's and the lists' claims, the lists published, P2G's next block */
+    int claim[2][MPM_SORT_CHUNKS_MAX], ready[MPM_SORT_CHUNKS_MAX], next[MPM_SORT_CHUNKS_MAX];
 } mpm_sort_team;
 hearth_status mpm_sort_begin(hearth_scene *s, mpm_sort_team *t, hearth_error *err);
 int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS_MAX + 1]);

@@ -193,6 +193,30 @@ static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
     return HEARTH_OK;
 }
 
+/* The chunks of the sort's first passes go to whichever thread comes first:
+ * each thread starts at the chunk a static split would give it and then
+ * takes every chunk no thread has claimed yet (claim: zero at the step's
+ * start). Under OMP_WAIT_POLICY=passive a thread woken late (the region's
+ * start, a barrier) then finds its chunks done rather than the others
+ * waiting for it; what a chunk computes does not depend on who does it.
+ * Returns the next chunk claimed, or -1. */
+static int first_chunk(int T) {
+#ifdef _OPENMP
+    return (int)((long)omp_get_thread_num() * T / omp_get_num_threads());
+#else
+    (void)T;
+    return 0;
+#endif
+}
+
+static int claim_chunk(int *claim, int T, int c0, int *j) {
+    while (*j < T) {
+        const int c = (c0 + (*j)++) % T;
+        if (!__atomic_exchange_n(&claim[c], 1, __ATOMIC_ACQ_REL)) return c;
+    }
+    return -1;
+}
+
 /* The sort's count and lists for the threads of a parallel region: its own
  * in mpm_sort, or mpm.c's one-region step (mpm_sort_begin). With T chunks of
  * particles, chunk c counts its own particles per block (hist, T x nblocks);
@@ -213,6 +237,7 @@ static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
  * count, took three: with OMP_WAIT_POLICY=passive (main.c) each
  * synchronisation wakes a sleeping thread, a futex round trip, and in the 2D
  * 128-cell bench all this bookkeeping is about 10 instructions a particle.
+ * The count's and the lists' chunks are claimed (claim_chunk).
  * Out of order, hist turns into places after a barrier, the order is filled
  * after another, and the caller permutes (particles_permute_team). Returns
  * the farthest a particle moves in the order (particles_permute_within's W)
@@ -225,9 +250,9 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
     mpm_state *m = s->mpm;
     const int NB = m->nblocks, T = t->T, n = s->ps.n, *keys = m->keys, nb1 = g->nb[1], nb2 = g->nb[2];
     int *order = m->order, *hist = m->hist;
-    /* each chunk of particles counts its own per block */
-#pragma omp for schedule(static)
-    for (int c = 0; c < T; c++) {
+    /* each chunk of particles counts its own per block; then the barrier every count waits for */
+    const int c0 = first_chunk(T);
+    for (int j = 0, c; (c = claim_chunk(t->claim[0], T, c0, &j)) >= 0;) {
         int *h = hist + (size_t)c * NB, u = 0;
         memset(h, 0, sizeof(int) * (size_t)NB);
         const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
@@ -237,6 +262,7 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
         }
         t->unsorted[c] = u;
     }
+#pragma omp barrier
     int unsorted = 0;
     for (int c = 0; c < T; c++) unsorted |= t->unsorted[c];
     /* Every thread adds up the table for each chunk of it: the particles, the particle blocks and (2D)
@@ -276,8 +302,7 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
      * each chunk's own for a later activation (3D); 2D activates the chunk's blocks here. A chunk done
      * is published (t->ready, with release order: its particle blocks and their grid blocks are written)
      * for the step's P2G (mpm.c's p2g_store_chunks), which then needs no barrier. */
-#pragma omp for schedule(static) nowait
-    for (int c = 0; c < T; c++) {
+    for (int j = 0, c; (c = claim_chunk(t->claim[1], T, c0, &j)) >= 0;) {
         const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
         int bc[3], na = 0;
         grid_block_coords(g, lo < NB ? lo : 0, bc);
@@ -320,9 +345,9 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
         }
         if (t->st) return -1;
 #pragma omp for schedule(static) nowait
-        for (int c = 0; c < T; c++) { /* the same thread as the chunk's marks and particle blocks (static, T chunks) */
+        for (int c = 0; c < T; c++) {
             grid_activate_chunk(g, m->mark, (int)((long)NB * c / T), (int)((long)NB * (c + 1) / T), aoff[c]);
-            if (!unsorted) __atomic_store_n(&t->ready[c], 1, __ATOMIC_RELEASE);
+            if (!unsorted) __atomic_store_n(&t->ready[c], 1, __ATOMIC_RELEASE); /* its blocks were listed before the barrier */
         }
 #pragma omp single nowait
         g->nactive = aoff[T];
