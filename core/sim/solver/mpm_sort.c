@@ -270,19 +270,41 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
     const int early = t->activate && g->dim == 2 && nb1 <= MARK_ROW_MAX;
     int poff[SORT_CHUNKS_MAX + 1] = {0}, koff[SORT_CHUNKS_MAX + 1] = {0}, aoff[SORT_CHUNKS_MAX + 1] = {0};
     {
-        unsigned char rows[2][MARK_ROW_MAX]; /* which blocks of this row and the one before hold particles */
+        /* By runs of blocks within one chunk (and in 2D one row of the table), each run's totals first
+         * (tot, row by row of hist), so the loops are simple enough to vectorise: every thread reads
+         * the whole table, about 3 instructions a block where a block at a time took 20 (callgrind). */
+        unsigned char rows[2][MARK_ROW_MAX]; /* 2D: which blocks of this row and the one before hold particles */
+        int tot[MARK_ROW_MAX];
+        if (early) memset(rows[1], 0, (size_t)nb1); /* the row before the first */
         int c = 0, chi = (int)((long)NB / T);
-        for (int b = 0; b < NB; b++) {
+        for (int b = 0; b < NB;) {
             while (b >= chi) chi = (int)((long)NB * (++c + 1) / T);
-            const int sum = block_total(NULL, hist, NB, T, b);
-            poff[c + 1] += sum;
-            koff[c + 1] += sum > 0;
-            if (early) { /* 2D: b = bx nb1 + by */
-                const int bx = b / nb1, by = b - bx * nb1;
-                unsigned char *cur = rows[bx & 1], *prev = rows[~bx & 1];
-                cur[by] = sum > 0;
-                aoff[c + 1] += cur[by] | (by > 0 && cur[by - 1]) | (bx > 0 && (prev[by] | (by > 0 && prev[by - 1])));
+            int e = chi, bx = 0, by0 = 0;
+            if (early) { /* b = bx nb1 + by */
+                bx = b / nb1, by0 = b - bx * nb1;
+                if (e > (bx + 1) * nb1) e = (bx + 1) * nb1;
+            } else if (e - b > MARK_ROW_MAX) {
+                e = b + MARK_ROW_MAX;
             }
+            const int len = e - b;
+            memcpy(tot, hist + b, sizeof(int) * (size_t)len);
+            for (int q = 1; q < T; q++) {
+                const int *h = hist + (size_t)q * NB + b;
+                for (int y = 0; y < len; y++) tot[y] += h[y];
+            }
+            int np = 0, nk = 0;
+            for (int y = 0; y < len; y++) np += tot[y], nk += tot[y] > 0;
+            poff[c + 1] += np;
+            koff[c + 1] += nk;
+            if (early) { /* a block is marked when it or its -1 neighbours hold particles */
+                unsigned char *cur = rows[bx & 1], *prev = rows[~bx & 1];
+                for (int y = 0; y < len; y++) cur[by0 + y] = tot[y] > 0;
+                int na = 0, y = by0;
+                if (y == 0) na += cur[0] | prev[0], y = 1;
+                for (; y < by0 + len; y++) na += cur[y] | cur[y - 1] | prev[y] | prev[y - 1];
+                aoff[c + 1] += na;
+            }
+            b = e;
         }
         for (c = 0; c < T; c++) poff[c + 1] += poff[c], koff[c + 1] += koff[c], aoff[c + 1] += aoff[c];
     }
