@@ -174,6 +174,75 @@ TEST(determinism_threads_2d_bookkeeping) {
     CHECK(h[0] == h[1]);
 }
 
+/* The gather's one-region step (2D, two threads, a table of fewer than
+ * 16384 blocks: the sort's count, lists and grid activation run in the
+ * step's region, mpm_sort_begin): the same bits as one thread and as the
+ * separate regions of the colour phases (HEARTH_MPM_COLOUR_PHASES=1), with
+ * particles crossing blocks (permutations in the region) and a disc added
+ * mid-run (the particle blocks, the grid and the tile store grow in the
+ * region's singles). */
+static uint64_t one_region_run(int threads, int phases, long *permuted, int *nblocks) {
+    if (phases) setenv("HEARTH_MPM_COLOUR_PHASES", "1", 1);
+    hearth_set_threads(threads);
+    hearth_scene *s = scene_2d(1.0 / 160);
+    unsetenv("HEARTH_MPM_COLOUR_PHASES");
+    const int m = fx_elastic(s, 1e5, 0.3, 1000);
+    hearth_error err;
+    uint64_t h = 0;
+    if (seed_disc(s, m, 0.3, 0.6, 0.12, 3.0) <= 0 || hearth_scene_step(s, 10, &err) != HEARTH_OK) goto out;
+    const unsigned long e0 = s->ps.edits;
+    if (seed_disc(s, m, 0.7, 0.4, 0.08, -3.0) <= 0 || hearth_scene_step(s, 20, &err) != HEARTH_OK) goto out;
+    *permuted = (long)(s->ps.edits - e0) - 1; /* the seeding's edit aside: the sorts that moved particles */
+    *nblocks = s->g.nblocks;
+    h = hearth_scene_hash(s);
+    printf("  %d thread(s)%s: %d particles, %d blocks of the box, %d particle blocks, %ld permuting sorts, hash %016llx\n",
+           threads, phases ? ", colour phases" : "", s->ps.n, s->g.nblocks, s->mpm->npb, *permuted, (unsigned long long)h);
+    CHECK(s->ps.n >= SCENE_PARALLEL_MIN && 2 * s->g.nblocks <= 2 * s->ps.n); /* two threads, the chunked count */
+out:
+    hearth_scene_destroy(s);
+    return h;
+}
+
+TEST(determinism_threads_one_region_sort) {
+    long perm[3] = {0, 0, 0};
+    int nb = 0;
+    const uint64_t h1 = one_region_run(1, 0, &perm[0], &nb), h2 = one_region_run(2, 0, &perm[1], &nb),
+                   hp = one_region_run(2, 1, &perm[2], &nb);
+    hearth_set_threads(0);
+    CHECK(nb < GRID_ACTIVATE_PARALLEL_MIN); /* the activation in the region is the sort's own (not the big box's) */
+    CHECK(perm[1] > 0);                     /* keys out of order: the permutation ran in the step's region */
+    CHECK(h1 != 0 && h1 == h2 && h1 == hp);
+}
+
+/* An allocation failing inside the one-region step (the sort's singles, the
+ * tile store) comes back as an error from the step, on every thread alike
+ * (no thread left at a barrier): each of the step's allocations after a disc
+ * is added, failed in turn. */
+TEST(one_region_sort_out_of_memory) {
+    hearth_set_threads(2);
+    int failed = 0, k;
+    for (k = 0; k < 40; k++) {
+        hearth_scene *s = scene_2d(1.0 / 160);
+        const int m = fx_elastic(s, 1e5, 0.3, 1000);
+        hearth_error err;
+        CHECK(seed_disc(s, m, 0.3, 0.6, 0.12, 3.0) > 0 && hearth_scene_step(s, 2, &err) == HEARTH_OK);
+        CHECK(seed_disc(s, m, 0.7, 0.4, 0.08, -3.0) > 0);
+        mem_fail_after(k);
+        const hearth_status st = hearth_scene_step(s, 1, &err);
+        mem_fail_after(-1);
+        if (st != HEARTH_OK) {
+            CHECK(st == HEARTH_ERR_NOMEM);
+            printf("  allocation %d failed: %s\n", k, err.msg);
+            failed++;
+        }
+        hearth_scene_destroy(s);
+        if (st == HEARTH_OK) break; /* the step makes fewer allocations than k */
+    }
+    hearth_set_threads(0);
+    printf("  %d of the step's allocations failed in turn, each an error from the step; allocation %d is past them\n", failed, k);
+    CHECK(failed > 0 && k < 40);
+}
+
 /* particles_permute gives new[i] = old[order[i]] in every column, whether
  * the particles moved a little (the window through a ring, whole records)
  * or anywhere (following the cycles), at one and two threads, through n
@@ -329,5 +398,5 @@ TEST(alloc_zero_is_not_out_of_memory) {
 }
 
 TEST_MAIN(T(seed_reserves_exactly), T(alloc_zero_is_not_out_of_memory), T(particles_grow_by_half), T(growth_peak_bounded), T(sort_keys_from_g2p),
-          T(determinism_threads_2d_bookkeeping),
+          T(determinism_threads_2d_bookkeeping), T(determinism_threads_one_region_sort), T(one_region_sort_out_of_memory),
           T(particles_permute_orders), T(gather_store_in_sort_scratch))

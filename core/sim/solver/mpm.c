@@ -846,6 +846,17 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
     g2p_reduce(s, rep);
 }
 
+/* step_team's phases after P2G, for every thread of its region */
+static void step_team_rest(hearth_scene *s, double dt, const int gather, block_fn g2p, double *vcol2) {
+    mpm_state *m = s->mpm;
+    grid_update_team(s, dt, vcol2, gather);
+    g2p_team(s, g2p, dt);
+    if (gather) { /* the block table back to no particle block anywhere, for the next step's scatter */
+#pragma omp for schedule(static) nowait
+        for (int k = m->k_lo; k < m->k_hi; k++) m->pbof[m->pb[k].block] = -1;
+    }
+}
+
 /* P2G, the grid update and G2P in one parallel region, for a step with
  * nothing between them that needs one thread or opens regions of its own (no
  * heat or water, no periodic axis, one rank, a thread-safe body force). With
@@ -875,24 +886,120 @@ static double step_team(hearth_scene *s, double dt, step_report *rep, const int 
         } else {
             p2g_team(s, p2g, dt);
         }
-        grid_update_team(s, dt, &vcol2, gather);
-        g2p_team(s, g2p, dt);
-        if (gather) { /* the block table back to no particle block anywhere, for the next step's scatter */
-#pragma omp for schedule(static) nowait
-            for (int k = m->k_lo; k < m->k_hi; k++) m->pbof[m->pb[k].block] = -1;
-        }
+        step_team_rest(s, dt, gather, g2p, &vcol2);
     }
     g2p_reduce(s, rep);
     return sqrt(vcol2);
 }
 
+/* The gather's scatter in the one-region step: each chunk of the sort's
+ * particle blocks as soon as the sort has published it (t->ready; all of
+ * them when all_ready), with no barrier between the sort and P2G. Each
+ * thread starts with the chunk it sorted and then helps with the others that
+ * are ready, taking blocks from a chunk's counter (t->next) in runs of a
+ * share of what is left, down to single blocks (long runs of neighbouring
+ * blocks: g2p_team says why); a chunk whose owner is still sorting is left to
+ * it (it reaches its own chunk first). Every block once, whichever thread
+ * takes it: the same bits. Ends with the barrier before the gather. */
+static void p2g_store_chunks(hearth_scene *s, mpm_sort_team *t, const int *kof, const int all_ready, block_fn store,
+                             double dt) {
+    mpm_state *m = s->mpm;
+    const int T = t->T;
+    int me = 0, P = 1;
+#ifdef _OPENMP
+    me = omp_get_thread_num();
+    P = omp_get_num_threads();
+#endif
+    double tile[GRID_NCH_MOMENTUM * GRID_T * GRID_T * GRID_T];
+    const int c0 = (int)((long)me * T / P); /* the sort's static split: thread me sorted chunk me when P = T */
+    for (int j = 0; j < T; j++) {
+        const int c = (c0 + j) % T, end = kof[c + 1];
+        if (!all_ready && !__atomic_load_n(&t->ready[c], __ATOMIC_ACQUIRE)) continue;
+        for (;;) {
+            const int left = end - __atomic_load_n(&t->next[c], __ATOMIC_RELAXED);
+            if (left <= 0) break;
+            const int run = left / (2 * P) > 1 ? left / (2 * P) : 1;
+            const int k0 = __atomic_fetch_add(&t->next[c], run, __ATOMIC_RELAXED);
+            for (int k = k0; k < k0 + run && k < end; k++) {
+                m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
+                store(s, k, dt, tile);
+            }
+        }
+    }
+#pragma omp barrier
+}
+
+/* The gather's step (2D, more than one thread, one rank, nothing between
+ * the phases) with the sort's count and lists at the start of its one
+ * region (mpm_sort_begin): the sort's region ended and the step's began at
+ * two synchronisations, and with the keys in order P2G starts on each chunk
+ * of particle blocks as the sort publishes it (p2g_store_chunks), so the
+ * step has the count's barrier, P2G's and the grid update's; out of order
+ * the permutation (its region gone too) ends past a barrier. The grid's
+ * activation, the particle blocks' range, their partials and the tile store
+ * are done in the region (the store's growth, when a step finds more blocks
+ * than ever, in a single). Bits: mpm_sort's and step_team's. */
+static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *rep, mpm_sort_team *t, double *vcol,
+                                      hearth_error *err) {
+    mpm_state *m = s->mpm;
+    particles *ps = &s->ps;
+    m->sticky_faces = 0;
+    for (int c = 0; c < s->ncol; c++) m->sticky_faces |= s->cols[c].mode == HEARTH_STICKY;
+    const block_fn g2p = g2p_fn(s), store = p2g_store_fns[m->sticky_faces][s->g.dim == 3];
+    /* the tile store in the sort's scratch (mpm_p2g_gather.c), dead once the count (keys in order) or the
+     * permutation (out of order) is done, before any tile is kept */
+    const size_t room = sizeof(int) * (size_t)m->scratch_cap, have = m->scratch_bytes / sizeof(double);
+    m->tiles = (double *)(void *)m->keys;
+    m->tiles_cap = 0;
+    hearth_status gst = HEARTH_OK;
+    double vcol2 = 0;
+#pragma omp parallel
+    {
+        int kof[MPM_SORT_CHUNKS_MAX + 1];
+        const int W = mpm_sort_team_run(s, t, kof);
+        if (!t->st) {
+            if (W >= 0) particles_permute_team(ps, m->order, W, m->keys, room); /* ends past a barrier */
+            const int grow = mpm_p2g_store_need(s, kof[t->T]) > have;
+            if (grow) { /* every thread is past the sort's reads of keys and order */
+#pragma omp single
+                gst = mpm_p2g_store_room(s, kof[t->T], err);
+            }
+            if (!gst) {
+                p2g_store_chunks(s, t, kof, W >= 0 || grow, store, dt);
+                step_team_rest(s, dt, 1, g2p, &vcol2);
+            }
+        }
+    }
+    if (t->st) return t->st;
+    if (gst) return gst;
+    m->tiles_cap = mpm_p2g_store_need(s, m->npb); /* what hearth_scene_bytes_used counts */
+    g2p_reduce(s, rep);
+    *vcol = sqrt(vcol2);
+    return HEARTH_OK;
+}
+
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err) {
     HEARTH_ASSERT(s->ps.t2 == (s->g.dim == 2)); /* P2G and G2P read 2D's C and F as 2x2 blocks (scene.c sets it) */
-    hearth_status st = mpm_sort(s, err);
-    if (st) return st;
-    if (mixing_active(s) && (st = mixing_update(s, err))) return st;
-    const int heat = thermal_active(s), water = water_active(s);
+    int heat = thermal_active(s), water = water_active(s);
     const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
+    int usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
+    hearth_status st;
+    int sorted = 0;
+    if (usual && !mixing_active(s) && s->ps.n >= SCENE_PARALLEL_MIN && mpm_p2g_store_held(s)) { /* the gather's step */
+        mpm_sort_team t;
+        if ((st = mpm_sort_begin(s, &t, err))) return st;
+        if (t.T > 1) { /* the sort's count and lists in the step's region */
+            double vcol;
+            if ((st = step_team_sorted(s, dt, rep, &t, &vcol, err))) return st;
+            rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;
+            return mpm_ranks_report(s, dt, vcol, rep, err);
+        }
+        sorted = 1; /* mpm_sort_begin sorted as mpm_sort does */
+    }
+    if (!sorted && (st = mpm_sort(s, err))) return st;
+    if (mixing_active(s) && (st = mixing_update(s, err))) return st;
+    heat = thermal_active(s), water = water_active(s); /* as the mixing left them */
+    usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
     if (wrap && (heat || water))
         return err_set(err, HEARTH_ERR_PARAM, "scene: periodic axes (periodic_%c) do not carry %s yet; use a closed box",
                        "xyz"[s->def.periodic[0] ? 0 : s->def.periodic[1] ? 1 : 2], heat ? "heat" : "water");
@@ -903,7 +1010,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
                                                       "use mode = \"slip\" or \"separate\", or set two_field = false", c);
         if ((st = mpm_two_field_prepare(s, err))) return st;
     }
-    if (!heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field) { /* the usual step: one region */
+    if (usual) { /* the usual step: one region */
         int gather;
         if ((st = mpm_p2g_store_reserve(s, &gather, err))) return st;
         const double vcol = step_team(s, dt, rep, gather);

@@ -149,6 +149,35 @@ static inline int clamp_to_grid(const grid *g, double *x) {
 /// Sort the particles into grid blocks, list the particle blocks and
 /// activate the grid blocks their tiles touch (mpm_sort.c).
 hearth_status mpm_sort(hearth_scene *s, hearth_error *err);
+/// mpm_sort inside the caller's parallel region (mpm.c's one-region step),
+/// for one rank and no periodic axis. mpm_sort_begin does the serial part
+/// before it; when t->T > 1 every thread of the region then calls
+/// mpm_sort_team_run, which lists the particle blocks (m->npb, this rank's
+/// range), marks and activates the grid, fills the order and returns the
+/// farthest move in it when the keys were out of order (the caller then runs
+/// particles_permute_team with it; -1 when in order), and t->st says whether
+/// a reservation failed (every thread sees the same). kof gets each chunk's
+/// first particle block (kof[T]: all of them; every thread its own copy).
+/// The lists and the grid are complete after the team's next barrier; before
+/// it, a chunk c with t->ready[c] set (acquire order) has its particle blocks
+/// [kof[c], kof[c + 1]) and their grid blocks ready (2D, keys in order; its
+/// blocks are handed out through t->next[c]). t->T == 0: mpm_sort_begin
+/// sorted as mpm_sort does (no colour lists are made in the region: the
+/// gather does not read them). Bits: mpm_sort's.
+#define MPM_SORT_CHUNKS_MAX 64
+typedef struct mpm_sort_team {
+    int T;             /* the count's chunks (more than one), or 0 */
+    int activate;      /* the grid's activation in the region too */
+    int set_range;     /* and this rank's particle blocks (one rank: all of them) */
+    int pbcap, gcap;   /* the lists' room when the region began (the singles grow them) */
+    hearth_status st;
+    hearth_error *err;
+    int unsorted[MPM_SORT_CHUNKS_MAX], far[MPM_SORT_CHUNKS_MAX], amark[MPM_SORT_CHUNKS_MAX]; /* per chunk */
+    /* per chunk, atomics (__atomic builtins): the count's and the lists' claims, the lists published, P2G's next block */
+    int claim[2][MPM_SORT_CHUNKS_MAX], ready[MPM_SORT_CHUNKS_MAX], next[MPM_SORT_CHUNKS_MAX];
+} mpm_sort_team;
+hearth_status mpm_sort_begin(hearth_scene *s, mpm_sort_team *t, hearth_error *err);
+int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS_MAX + 1]);
 /// Release the sort's per-particle scratch (mpm_sort.c).
 void mpm_scratch_free(mpm_state *m);
 /// The sort's scratch at least bytes long, between the sort and G2P (its
@@ -168,6 +197,10 @@ void mpm_periodic_fold(hearth_scene *s, int unfold);
 int mpm_p2g_store_held(const hearth_scene *s);
 /// After the sort: *gather, whether this step gathers, and room in the store for its particle blocks when it does.
 hearth_status mpm_p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *err);
+/// The store's doubles for npb particle blocks, and room for them in the sort's scratch (m->tiles, tiles_cap):
+/// once the sort no longer reads its keys and order (the one-region step's store grows there). Fails only for memory.
+size_t mpm_p2g_store_need(const hearth_scene *s, int npb);
+hearth_status mpm_p2g_store_room(hearth_scene *s, int npb, hearth_error *err);
 /// Particle block k (block coordinates bc) keeps its P2G tile: own part into its nodes, halo into the store.
 void mpm_p2g_keep_tile(hearth_scene *s, int D, int k, const int bc[3], const double *tile);
 /// Active block k's node sums from the kept tiles that reach it, in colour order (the colour phases' bits).

@@ -148,18 +148,29 @@ int mpm_p2g_store_held(const hearth_scene *s) {
  * only where the store needs more (blocks part full at a body's edges). Its
  * own array, grown by half when short, held 8.3 bytes a particle more at 2D
  * 128 cells (164.7 bytes a particle at 2 threads against 156.3 at one). */
+size_t mpm_p2g_store_need(const hearth_scene *s, int npb) {
+    const size_t per = s->g.dim == 2 ? P2G_STORE_NCH(2) * P2G_HALO(2) : P2G_STORE_NCH(3) * P2G_HALO(3);
+    return per * (size_t)npb;
+}
+
+hearth_status mpm_p2g_store_room(hearth_scene *s, int npb, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    const size_t need = mpm_p2g_store_need(s, npb);
+    m->tiles_cap = 0;
+    m->tiles = NULL;
+    if (mpm_scratch_room(s, sizeof(double) * need, err))
+        return err_set(err, HEARTH_ERR_NOMEM, "out of memory for P2G's tiles of %d particle blocks", npb);
+    m->tiles = (double *)(void *)m->keys; /* the allocator's alignment, as for any block of doubles */
+    m->tiles_cap = need;
+    return HEARTH_OK;
+}
+
 hearth_status mpm_p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *err) {
     mpm_state *m = s->mpm;
     *gather = s->ps.n >= SCENE_PARALLEL_MIN && mpm_p2g_store_held(s);
     m->tiles_cap = 0;
     m->tiles = NULL;
-    if (!*gather) return HEARTH_OK;
-    const size_t per = s->g.dim == 2 ? P2G_STORE_NCH(2) * P2G_HALO(2) : P2G_STORE_NCH(3) * P2G_HALO(3), need = per * (size_t)m->npb;
-    if (mpm_scratch_room(s, sizeof(double) * need, err))
-        return err_set(err, HEARTH_ERR_NOMEM, "out of memory for P2G's tiles of %d particle blocks", m->npb);
-    m->tiles = (double *)(void *)m->keys; /* the allocator's alignment, as for any block of doubles */
-    m->tiles_cap = need;
-    return HEARTH_OK;
+    return *gather ? mpm_p2g_store_room(s, m->npb, err) : HEARTH_OK;
 }
 
 /* mpm_bytes_per_particle's share of the store where it will be held (2D,

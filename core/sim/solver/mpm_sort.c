@@ -96,7 +96,7 @@ static hearth_status pb_reserve(mpm_state *m, int need, hearth_error *err) {
 /* The chunks the sort's bookkeeping splits into: one per thread when there
  * is enough to share (at most SORT_CHUNKS_MAX, for the stack arrays below),
  * else one. Every result is independent of it. */
-#define SORT_CHUNKS_MAX 64
+#define SORT_CHUNKS_MAX MPM_SORT_CHUNKS_MAX
 static int sort_chunks(int n) {
 #ifdef _OPENMP
     if (n < SCENE_PARALLEL_MIN) return 1;
@@ -151,19 +151,25 @@ static void sort_colours(hearth_scene *s) {
     }
 }
 
+/* Block id's particles: counts holds the blocks' starts (hist NULL), or
+ * inside sort_team hist holds each chunk's count of them (T rows of NB). */
+static inline int block_total(const int *counts, const int *hist, int NB, int T, int id) {
+    if (!hist) return counts[id + 1] - counts[id];
+    int sum = 0;
+    for (int q = 0; q < T; q++) sum += hist[(size_t)q * NB + id];
+    return sum;
+}
+
 /* Whether block (bx, by, bz) or its -1 neighbour along some axes holds
- * particles: the blocks a particle block's tile touches. counts holds the
- * blocks' starts (totals 0: block id holds counts[id + 1] - counts[id]) or,
- * inside sort_team, their totals at counts[id + 1] (totals 1). */
-static inline unsigned char touched(const grid *g, const int *counts, int totals, int bx, int by, int bz) {
+ * particles: the blocks a particle block's tile touches (block_total's
+ * counts or hist). */
+static inline unsigned char touched(const grid *g, const int *counts, const int *hist, int NB, int T, int bx, int by, int bz) {
     const int nz = g->dim == 3;
     unsigned char hit = 0;
     for (int dx = 0; dx <= (bx > 0); dx++)
         for (int dy = 0; dy <= (by > 0); dy++)
-            for (int dz = 0; dz <= (nz && bz > 0); dz++) {
-                const int id = grid_block_id(g, bx - dx, by - dy, bz - dz);
-                hit |= counts[id + 1] > (totals ? 0 : counts[id]);
-            }
+            for (int dz = 0; dz <= (nz && bz > 0); dz++)
+                hit |= block_total(counts, hist, NB, T, grid_block_id(g, bx - dx, by - dy, bz - dz)) > 0;
     return hit;
 }
 
@@ -200,155 +206,222 @@ static hearth_status sort_blocks(hearth_scene *s, int T, hearth_error *err) {
 #pragma omp for schedule(static)
         for (int bx = 0; bx < g->nb[0]; bx++)
             for (int by = 0; by < nb1; by++)
-                for (int bz = 0; bz < nb2; bz++) m->mark[grid_block_id(g, bx, by, bz)] = touched(g, counts, 0, bx, by, bz);
+                for (int bz = 0; bz < nb2; bz++) m->mark[grid_block_id(g, bx, by, bz)] = touched(g, counts, NULL, NB, 1, bx, by, bz);
     }
     sort_colours(s);
     return HEARTH_OK;
 }
 
-/* sort_counting and sort_blocks in one parallel region of T > 1 threads.
- * With T chunks of particles, chunk c counts its own particles per block
- * (hist, T x nblocks); a particle's place is its block's start, plus the
- * block's particles in earlier chunks, plus those before it in its own chunk:
- * the serial sort's place, so the order is the same bits for any T
- * (`determinism_threads_*`). The block starts, the particle blocks and the
- * marks are integers from the same counts, so they are the serial sort's too.
- * Two barriers (three when the keys are out of order), where a region for
- * the count and two for the block lists took eleven synchronisations (three
- * starts and ends, five barriers inside): with OMP_WAIT_POLICY=passive
- * (main.c) each wakes a sleeping thread, a futex round trip, and in the 2D
+/* The chunks of the sort's first passes go to whichever thread comes first:
+ * each thread starts at the chunk a static split would give it and then
+ * takes every chunk no thread has claimed yet (claim: zero at the step's
+ * start). Under OMP_WAIT_POLICY=passive a thread woken late (the region's
+ * start, a barrier) then finds its chunks done rather than the others
+ * waiting for it; what a chunk computes does not depend on who does it.
+ * Returns the next chunk claimed, or -1. */
+static int first_chunk(int T) {
+#ifdef _OPENMP
+    return (int)((long)omp_get_thread_num() * T / omp_get_num_threads());
+#else
+    (void)T;
+    return 0;
+#endif
+}
+
+static int claim_chunk(int *claim, int T, int c0, int *j) {
+    while (*j < T) {
+        const int c = (c0 + (*j)++) % T;
+        if (!__atomic_exchange_n(&claim[c], 1, __ATOMIC_ACQ_REL)) return c;
+    }
+    return -1;
+}
+
+/* The sort's count and lists for the threads of a parallel region: its own
+ * in mpm_sort, or mpm.c's one-region step (mpm_sort_begin). With T chunks of
+ * particles, chunk c counts its own particles per block (hist, T x nblocks);
+ * a particle's place is its block's start, plus the block's particles in
+ * earlier chunks, plus those before it in its own chunk: the serial sort's
+ * place, so the order is the same bits for any T (`determinism_threads_*`).
+ * The block starts, the particle blocks, the marks and the grid's slots are
+ * integers from the same counts, so they are the serial sort's too.
+ *
+ * After the count's barrier hist is only read until every thread is past the
+ * marks: each thread adds up the whole table itself for the chunks' offsets
+ * (O(T nblocks) reads, and the chunked count is only chosen where
+ * T nblocks <= 2 n), and in 2D it counts each chunk's marks on the way (a row
+ * of blocks behind), so each chunk activates its own blocks of the grid right
+ * after marking them. The marks read a neighbour's total from hist. So with
+ * the keys in order the sort needs one barrier (3D's activation one more),
+ * where a pass writing the totals and the exclusive counts, and the marks'
+ * count, took three: with OMP_WAIT_POLICY=passive (main.c) each
+ * synchronisation wakes a sleeping thread, a futex round trip, and in the 2D
  * 128-cell bench all this bookkeeping is about 10 instructions a particle.
- * Returns whether the keys were out of order (order then filled); *st gets
- * pb_reserve's status. */
-static int sort_team(hearth_scene *s, int n, int T, const int activate, int *W, hearth_status *st, hearth_error *err) {
+ * The count's and the lists' chunks are claimed (claim_chunk).
+ * Out of order, hist turns into places after a barrier, the order is filled
+ * after another, and the caller permutes (particles_permute_team). Returns
+ * the farthest a particle moves in the order (particles_permute_within's W)
+ * when the keys were out of order, else -1; kof gets the chunks' first
+ * particle blocks (kof[T]: all of them; every thread's own copy); t->st gets
+ * a reservation's status. */
+#define MARK_ROW_MAX 4096 /* 2D's marks are counted on the way where a row of blocks fits on the stack */
+int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS_MAX + 1]) {
     grid *g = &s->g;
     mpm_state *m = s->mpm;
-    const int NB = m->nblocks, *keys = m->keys, nb1 = g->nb[1], nb2 = g->nb[2];
-    int *order = m->order, *counts = m->counts, *hist = m->hist, unsorted = 0;
-    counts[0] = 0;
-    /* per chunk of the block table (at c + 1): its particles and its particle blocks */
-    int cpart[SORT_CHUNKS_MAX + 1] = {0}, cblk[SORT_CHUNKS_MAX + 1] = {0};
-    int amark[SORT_CHUNKS_MAX + 1] = {0}; /* per chunk of the block table (at c + 1): its marked blocks */
-    *st = HEARTH_OK;
-    int far = 0; /* the farthest a particle moves in the order (particles_permute_within's W) */
-    /* read once: the singles below change them while others may test them */
-    const int pbcap = m->pbcap, gcap = g->cap < g->acap ? g->cap : g->acap;
-#pragma omp parallel num_threads(T)
-    {
-        /* each chunk of particles counts its own per block */
-#pragma omp for schedule(static) reduction(| : unsorted)
-        for (int c = 0; c < T; c++) {
-            int *h = hist + (size_t)c * NB;
-            memset(h, 0, sizeof(int) * (size_t)NB);
-            const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
-            for (int i = lo; i < hi; i++) {
-                h[keys[i]]++;
-                unsorted |= i > 0 && keys[i - 1] > keys[i];
-            }
+    const int NB = m->nblocks, T = t->T, n = s->ps.n, *keys = m->keys, nb1 = g->nb[1], nb2 = g->nb[2];
+    int *order = m->order, *hist = m->hist;
+    /* each chunk of particles counts its own per block; then the barrier every count waits for */
+    const int c0 = first_chunk(T);
+    for (int j = 0, c; (c = claim_chunk(t->claim[0], T, c0, &j)) >= 0;) {
+        int *h = hist + (size_t)c * NB, u = 0;
+        memset(h, 0, sizeof(int) * (size_t)NB);
+        const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
+        for (int i = lo; i < hi; i++) {
+            h[keys[i]]++;
+            u |= i > 0 && keys[i - 1] > keys[i];
         }
-        /* per block: its particles in earlier chunks (hist, exclusive) and in all (counts[b + 1]: in
-         * this path counts keeps the blocks' totals, which nothing after the sort reads) */
-#pragma omp for schedule(static)
-        for (int c = 0; c < T; c++) {
-            const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
-            int np = 0, nk = 0;
-            for (int b = lo; b < hi; b++) {
-                int sum = 0;
-                for (int q = 0; q < T; q++) {
-                    int *h = hist + (size_t)q * NB + b;
-                    const int k = *h;
-                    *h = sum;
-                    sum += k;
-                }
-                counts[b + 1] = sum;
-                np += sum;
-                nk += sum > 0;
-            }
-            cpart[c + 1] = np;
-            cblk[c + 1] = nk;
-        }
-        /* Every thread takes the chunks' offsets (T numbers); a step that finds more particle blocks
-         * than ever grows their lists first (every thread sees the same need, so all or none meet the single). */
-        int poff[SORT_CHUNKS_MAX + 1], koff[SORT_CHUNKS_MAX + 1];
-        poff[0] = koff[0] = 0;
-        for (int c = 0; c < T; c++) poff[c + 1] = poff[c] + cpart[c + 1], koff[c + 1] = koff[c] + cblk[c + 1];
-        if (koff[T] > pbcap) {
-#pragma omp single
-            *st = pb_reserve(m, koff[T], err);
-        }
-        if (!*st) {
-            /* The marks and the particle blocks only read the totals, so neither waits for the other.
-             * The marks go by chunks of the block table, each counting its own for the activation. */
-#pragma omp for schedule(static) nowait
-            for (int c = 0; c < T; c++) {
-                const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
-                int bc[3], na = 0;
-                grid_block_coords(g, lo < NB ? lo : 0, bc);
-                for (int b = lo; b < hi; b++) { /* b = grid_block_id(bc): z fastest */
-                    const unsigned char mk = touched(g, counts, 1, bc[0], bc[1], bc[2]);
-                    m->mark[b] = mk;
-                    na += mk != 0;
-                    if (++bc[2] == nb2) {
-                        bc[2] = 0;
-                        if (++bc[1] == nb1) bc[1] = 0, bc[0]++;
-                    }
-                }
-                amark[c + 1] = na;
-            }
-            /* each chunk's blocks from its offset; out of order, each particle chunk's places in a
-             * block (hist) also get the block's start, so the order below needs nothing else */
-#pragma omp for schedule(static) nowait
-            for (int c = 0; c < T; c++) {
-                const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
-                int run = poff[c], k = koff[c];
-                for (int b = lo; b < hi; b++) {
-                    const int start = run;
-                    run += counts[b + 1];
-                    if (run > start) m->pb[k++] = (pblock){b, start, run};
-                    if (unsorted)
-                        for (int q = 0; q < T; q++) hist[(size_t)q * NB + b] += start;
-                }
-            }
-            /* the places wait for the other threads' blocks, the activation for every chunk's marks */
-            if (unsorted || activate) {
+        t->unsorted[c] = u;
+    }
 #pragma omp barrier
+    int unsorted = 0;
+    for (int c = 0; c < T; c++) unsorted |= t->unsorted[c];
+    /* Every thread adds up the table for each chunk of it: the particles, the particle blocks and (2D)
+     * the marks before it (poff, koff, aoff). A block is marked when it or its -1 neighbours hold particles. */
+    const int early = t->activate && g->dim == 2 && nb1 <= MARK_ROW_MAX;
+    int poff[SORT_CHUNKS_MAX + 1] = {0}, koff[SORT_CHUNKS_MAX + 1] = {0}, aoff[SORT_CHUNKS_MAX + 1] = {0};
+    {
+        /* By runs of blocks within one chunk (and in 2D one row of the table), each run's totals first
+         * (tot, row by row of hist), so the loops are simple enough to vectorise: every thread reads
+         * the whole table, about 3 instructions a block where a block at a time took 20 (callgrind). */
+        unsigned char rows[2][MARK_ROW_MAX]; /* 2D: which blocks of this row and the one before hold particles */
+        int tot[MARK_ROW_MAX];
+        if (early) memset(rows[1], 0, (size_t)nb1); /* the row before the first */
+        int c = 0, chi = (int)((long)NB / T);
+        for (int b = 0; b < NB;) {
+            while (b >= chi) chi = (int)((long)NB * (++c + 1) / T);
+            int e = chi, bx = 0, by0 = 0;
+            if (early) { /* b = bx nb1 + by */
+                bx = b / nb1, by0 = b - bx * nb1;
+                if (e > (bx + 1) * nb1) e = (bx + 1) * nb1;
+            } else if (e - b > MARK_ROW_MAX) {
+                e = b + MARK_ROW_MAX;
             }
-            if (activate) { /* grid_activate, here in the same region: the slots of each chunk of the table */
-                int aoff[SORT_CHUNKS_MAX + 1];
-                aoff[0] = 0;
-                for (int c = 0; c < T; c++) aoff[c + 1] = aoff[c] + amark[c + 1];
-                if (aoff[T] > gcap) {
+            const int len = e - b;
+            memcpy(tot, hist + b, sizeof(int) * (size_t)len);
+            for (int q = 1; q < T; q++) {
+                const int *h = hist + (size_t)q * NB + b;
+                for (int y = 0; y < len; y++) tot[y] += h[y];
+            }
+            int np = 0, nk = 0;
+            for (int y = 0; y < len; y++) np += tot[y], nk += tot[y] > 0;
+            poff[c + 1] += np;
+            koff[c + 1] += nk;
+            if (early) { /* a block is marked when it or its -1 neighbours hold particles */
+                unsigned char *cur = rows[bx & 1], *prev = rows[~bx & 1];
+                for (int y = 0; y < len; y++) cur[by0 + y] = tot[y] > 0;
+                int na = 0, y = by0;
+                if (y == 0) na += cur[0] | prev[0], y = 1;
+                for (; y < by0 + len; y++) na += cur[y] | cur[y - 1] | prev[y] | prev[y - 1];
+                aoff[c + 1] += na;
+            }
+            b = e;
+        }
+        for (c = 0; c < T; c++) poff[c + 1] += poff[c], koff[c + 1] += koff[c], aoff[c + 1] += aoff[c];
+    }
+    /* A step that finds more particle blocks or marks than ever grows the lists first (every thread
+     * sees the same need, so all or none meet the single). */
+    if (koff[T] > t->pbcap || (early && aoff[T] > t->gcap)) {
 #pragma omp single
-                    *st = grid_activate_reserve(g, aoff[T], err);
-                }
-                if (!*st) {
-#pragma omp for schedule(static) nowait
-                    for (int c = 0; c < T; c++)
-                        grid_activate_chunk(g, m->mark, (int)((long)NB * c / T), (int)((long)NB * (c + 1) / T), aoff[c]);
-                }
-            }
-            if (unsorted) {
-#pragma omp for schedule(static) nowait reduction(max : far)
-                for (int c = 0; c < T; c++) {
-                    int *h = hist + (size_t)c * NB;
-                    const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
-                    for (int i = lo; i < hi; i++) {
-                        const int p = h[keys[i]]++;
-                        order[p] = i;
-                        if ((p > i ? p - i : i - p) > far) far = p > i ? p - i : i - p;
-                    }
-                }
-            }
+        {
+            if (koff[T] > t->pbcap) t->st = pb_reserve(m, koff[T], t->err);
+            if (!t->st && early && aoff[T] > t->gcap) t->st = grid_activate_reserve(g, aoff[T], t->err);
         }
     }
-    if (!*st) m->npb = 0;
-    for (int c = 0; c < T && !*st; c++) m->npb += cblk[c + 1];
-    if (activate && !*st) {
-        g->nactive = 0;
-        for (int c = 0; c < T; c++) g->nactive += amark[c + 1];
+    memcpy(kof, koff, sizeof(int) * (size_t)(T + 1));
+    if (t->st) return -1;
+    const int late = t->activate && !early; /* the activation after a barrier (3D, or 2D rows too long for the stack) */
+    /* The marks and the particle blocks only read hist, so no chunk waits for another. The marks count
+     * each chunk's own for a later activation (3D); 2D activates the chunk's blocks here. A chunk done
+     * is published (t->ready, with release order: its particle blocks and their grid blocks are written)
+     * for the step's P2G (mpm.c's p2g_store_chunks), which then needs no barrier. */
+    for (int j = 0, c; (c = claim_chunk(t->claim[1], T, c0, &j)) >= 0;) {
+        const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+        int bc[3], na = 0;
+        grid_block_coords(g, lo < NB ? lo : 0, bc);
+        for (int b = lo; b < hi; b++) { /* b = grid_block_id(bc): z fastest */
+            const unsigned char mk = touched(g, NULL, hist, NB, T, bc[0], bc[1], bc[2]);
+            m->mark[b] = mk;
+            na += mk != 0;
+            if (++bc[2] == nb2) {
+                bc[2] = 0;
+                if (++bc[1] == nb1) bc[1] = 0, bc[0]++;
+            }
+        }
+        t->amark[c] = na;
+        if (early) grid_activate_chunk(g, m->mark, lo, hi, aoff[c]);
+        /* the chunk's particle blocks from its offsets */
+        int run = poff[c], k = koff[c];
+        for (int b = lo; b < hi; b++) {
+            const int start = run;
+            run += block_total(NULL, hist, NB, T, b);
+            if (run > start) m->pb[k++] = (pblock){b, start, run};
+        }
+        t->next[c] = koff[c];
+        if (!late && !unsorted) __atomic_store_n(&t->ready[c], 1, __ATOMIC_RELEASE);
     }
-    *W = far;
-    return unsorted;
+#pragma omp single nowait
+    {
+        m->npb = koff[T];
+        if (t->set_range) m->k_lo = 0, m->k_hi = koff[T]; /* one rank: every particle block (mpm_ranks_partition) */
+        if (early) g->nactive = aoff[T];
+    }
+    /* 3D's activation waits for every chunk's marks, the places for every thread's reads of hist */
+    if (unsorted || late) {
+#pragma omp barrier
+    }
+    if (late) { /* grid_activate, here in the same region: the slots of each chunk of the table */
+        for (int c = 0; c < T; c++) aoff[c + 1] = aoff[c] + t->amark[c];
+        if (aoff[T] > t->gcap) {
+#pragma omp single
+            t->st = grid_activate_reserve(g, aoff[T], t->err);
+        }
+        if (t->st) return -1;
+#pragma omp for schedule(static) nowait
+        for (int c = 0; c < T; c++) {
+            grid_activate_chunk(g, m->mark, (int)((long)NB * c / T), (int)((long)NB * (c + 1) / T), aoff[c]);
+            if (!unsorted) __atomic_store_n(&t->ready[c], 1, __ATOMIC_RELEASE); /* its blocks were listed before the barrier */
+        }
+#pragma omp single nowait
+        g->nactive = aoff[T];
+    }
+    if (!unsorted) return -1;
+    /* each chunk of particles' first place in each block: the block's start and the block's particles
+     * in earlier chunks; then the order, once every block has its places */
+#pragma omp for schedule(static)
+    for (int c = 0; c < T; c++) {
+        const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+        int run = poff[c];
+        for (int b = lo; b < hi; b++)
+            for (int q = 0; q < T; q++) {
+                int *h = hist + (size_t)q * NB + b;
+                const int k = *h;
+                *h = run;
+                run += k;
+            }
+    }
+#pragma omp for schedule(static)
+    for (int c = 0; c < T; c++) {
+        int *h = hist + (size_t)c * NB, far = 0;
+        const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
+        for (int i = lo; i < hi; i++) {
+            const int p = h[keys[i]]++;
+            order[p] = i;
+            if ((p > i ? p - i : i - p) > far) far = p > i ? p - i : i - p;
+        }
+        t->far[c] = far;
+    }
+    int W = 0;
+    for (int c = 0; c < T; c++) W = t->far[c] > W ? t->far[c] : W;
+    return W;
 }
 
 /* Sort keys from G2P: G2P files each particle in its block while its new
@@ -356,8 +429,9 @@ static int sort_team(hearth_scene *s, int n, int T, const int activate, int *W, 
  * sort's own pass over the positions runs only when those keys are stale:
  * the first step, particles added or removed, a rolled back step, periodic
  * axes (wrapped after G2P). 3D 32 cells, one thread: the pass cost about 64
- * instructions per particle-step. */
-hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
+ * instructions per particle-step. The serial part before the count; *Tc
+ * gets the count's chunks. */
+static hearth_status sort_begin(hearth_scene *s, int *Tc, hearth_error *err) {
     grid *g = &s->g;
     particles *ps = &s->ps;
     hearth_status st = mpm_ranks_migrate(s, err); /* slabs: crossings to the neighbour ranks first */
@@ -385,35 +459,83 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
      * is at most 8 bytes a particle (a big, mostly empty box counts
      * serially rather than hold tables the size of the box per thread; the
      * order is the same either way). */
-    const int Tc = T > 1 && (size_t)T * (size_t)m->nblocks <= 2 * (size_t)n ? T : 1;
-    const size_t hneed = Tc > 1 ? (size_t)Tc * (size_t)m->nblocks : 0;
+    *Tc = T > 1 && (size_t)T * (size_t)m->nblocks <= 2 * (size_t)n ? T : 1;
+    const size_t hneed = *Tc > 1 ? (size_t)*Tc * (size_t)m->nblocks : 0;
     if (hneed > m->histcap) {
         int *h = mem_alloc(sizeof(int) * hneed);
-        if (!h) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the sort's block counts (%d chunks)", Tc);
+        if (!h) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the sort's block counts (%d chunks)", *Tc);
         mem_free(m->hist, sizeof(int) * m->histcap);
         m->hist = h;
         m->histcap = hneed;
     }
-    st = grid_set_channels(g, s->def.two_field ? GRID_NCH_TWO
-                              : thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
-    if (st) return st;
-    /* A big table's activation runs in the sort's region (its own two regions took six synchronisations
-     * a step), unless the marks wait for a periodic axis's ghosts or a rank's halo. */
-    const int act = Tc > 1 && !wrap && m->nranks == 1 && m->nblocks >= GRID_ACTIVATE_PARALLEL_MIN;
-    if (Tc > 1) { /* the usual parallel sort: one region */
-        int W = 0;
-        const int unsorted = sort_team(s, n, Tc, act, &W, &st, err);
-        if (st) return st;
-        if (unsorted) particles_permute_within(ps, m->order, W, m->keys, sizeof(int) * (size_t)m->scratch_cap);
-        sort_colours(s);
-    } else {
-        if (sort_counting(m, n)) particles_permute(ps, m->order, m->keys, sizeof(int) * (size_t)m->scratch_cap);
-        if ((st = sort_blocks(s, T, err))) return st;
-    }
-    if (wrap) mpm_periodic_mark(s, m->mark);
+    return grid_set_channels(g, s->def.two_field ? GRID_NCH_TWO
+                                : thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
+}
+
+/* The team's shared part, for a region of Tc threads. The grid's activation
+ * goes in the region when nothing changes the marks after it (a periodic
+ * axis's ghosts, a rank's halo) and it costs no barrier there (2D) or the
+ * box is big (its own two regions took six synchronisations a step). */
+static void team_setup(hearth_scene *s, int Tc, mpm_sort_team *t, hearth_error *err) {
+    const mpm_state *m = s->mpm;
+    const grid *g = &s->g;
+    const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
+    *t = (mpm_sort_team){.T = Tc, .pbcap = m->pbcap, .gcap = g->cap < g->acap ? g->cap : g->acap, .err = err};
+    t->activate = Tc > 1 && !wrap && m->nranks == 1 && (g->dim == 2 || m->nblocks >= GRID_ACTIVATE_PARALLEL_MIN);
+}
+
+/* After the count and lists, one way or the other: the colour lists, the marks' extra blocks, the grid. */
+static hearth_status sort_end(hearth_scene *s, int activated, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    hearth_status st;
+    if (s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2]) mpm_periodic_mark(s, m->mark);
     if ((st = mpm_ranks_mark(s, err))) return st;
-    if (!act && (st = grid_activate(g, m->mark, err))) return st;
+    if (!activated && (st = grid_activate(&s->g, m->mark, err))) return st;
     mpm_ranks_partition(s); /* which particle blocks this rank steps */
     return HEARTH_OK;
 }
 
+/* The count and lists after sort_begin, in their own region when Tc > 1, and the rest. */
+static hearth_status sort_rest(hearth_scene *s, int Tc, mpm_sort_team *t, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    particles *ps = &s->ps;
+    hearth_status st;
+    if (Tc == 1) {
+        if (sort_counting(m, ps->n)) particles_permute(ps, m->order, m->keys, sizeof(int) * (size_t)m->scratch_cap);
+        if ((st = sort_blocks(s, sort_chunks(ps->n), err))) return st;
+        return sort_end(s, 0, err);
+    }
+    /* the usual parallel sort: one region, the permutation in it */
+#pragma omp parallel num_threads(Tc)
+    {
+        int kof[MPM_SORT_CHUNKS_MAX + 1];
+        const int W = mpm_sort_team_run(s, t, kof);
+        if (W >= 0) particles_permute_team(ps, m->order, W, m->keys, sizeof(int) * (size_t)m->scratch_cap);
+    }
+    if (t->st) return t->st;
+    sort_colours(s);
+    return sort_end(s, t->activate, err);
+}
+
+hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
+    int Tc;
+    hearth_status st = sort_begin(s, &Tc, err);
+    if (st) return st;
+    mpm_sort_team t;
+    team_setup(s, Tc, &t, err);
+    return sort_rest(s, Tc, &t, err);
+}
+
+hearth_status mpm_sort_begin(hearth_scene *s, mpm_sort_team *t, hearth_error *err) {
+    int Tc;
+    hearth_status st = sort_begin(s, &Tc, err);
+    if (st) return st;
+    team_setup(s, Tc, t, err);
+    if (Tc > 1 && t->activate) { /* the step's region runs the count and lists (mpm_sort_team_run) */
+        t->set_range = 1;
+        return HEARTH_OK;
+    }
+    st = sort_rest(s, Tc, t, err);
+    t->T = 0;
+    return st;
+}

@@ -238,6 +238,19 @@ void particles_permute(particles *ps, const int *order, void *scratch, size_t ro
     particles_permute_within(ps, order, W, scratch, room);
 }
 
+/* The columns to move, widest first (the longest copies start first). */
+static int permute_columns(const particles *ps, int par[PC_COUNT]) {
+    int npar = 0;
+    for (int c = 0; c < PC_COUNT; c++) {
+        if (!(ps->enabled & (1u << c)) || !ps->col[c] || particles_col_bytes(ps, c) == 0) continue;
+        const size_t B = particles_col_bytes(ps, c);
+        int q = npar++; /* insertion by width, widest first */
+        while (q > 0 && particles_col_bytes(ps, par[q - 1]) < B) par[q] = par[q - 1], q--;
+        par[q] = c;
+    }
+    return npar;
+}
+
 void particles_permute_within(particles *ps, const int *order, int W, void *scratch, size_t room) {
     const int n = ps->n;
     ps->edits++;
@@ -255,14 +268,8 @@ void particles_permute_within(particles *ps, const int *order, int W, void *scra
     while (T > 1 && (room / (size_t)T & ~(size_t)7) < bits) T--;
     const size_t share = room / (size_t)T & ~(size_t)7;
     HEARTH_ASSERT(share >= bits);
-    int par[PC_COUNT], npar = 0;
-    for (int c = 0; c < PC_COUNT; c++) {
-        if (!(ps->enabled & (1u << c)) || !ps->col[c] || particles_col_bytes(ps, c) == 0) continue;
-        const size_t B = particles_col_bytes(ps, c);
-        int q = npar++; /* insertion by width, widest first */
-        while (q > 0 && particles_col_bytes(ps, par[q - 1]) < B) par[q] = par[q - 1], q--;
-        par[q] = c;
-    }
+    int par[PC_COUNT];
+    const int npar = permute_columns(ps, par);
 #pragma omp parallel num_threads(T) if (T > 1)
     {
         int me = 0;
@@ -273,6 +280,29 @@ void particles_permute_within(particles *ps, const int *order, int W, void *scra
 #pragma omp for schedule(dynamic, 1)
         for (int q = 0; q < npar; q++) permute_column(ps, par[q], order, W, mine, share);
     }
+}
+
+void particles_permute_team(particles *ps, const int *order, int W, void *scratch, size_t room) {
+    int T = 1, me = 0;
+#ifdef _OPENMP
+    T = omp_get_num_threads();
+    me = omp_get_thread_num();
+#endif
+    const size_t bits = sizeof(uint64_t) * (((size_t)ps->n + 63) / 64), share = room / (size_t)T & ~(size_t)7;
+#pragma omp barrier
+    /* every thread is past its reads of edits and order's filling; one of them counts the edit */
+#pragma omp single nowait
+    ps->edits++;
+    if (W == 0) return; /* nothing moves (every thread sees the same W) */
+    int par[PC_COUNT];
+    const int npar = permute_columns(ps, par);
+    if (share < bits) { /* more threads than the scratch has shares for: one thread, all of it */
+#pragma omp single
+        for (int q = 0; q < npar; q++) permute_column(ps, par[q], order, W, scratch, room);
+        return;
+    }
+#pragma omp for schedule(dynamic, 1)
+    for (int q = 0; q < npar; q++) permute_column(ps, par[q], order, W, (char *)scratch + share * (size_t)me, share);
 }
 
 hearth_status particles_copy(particles *dst, const particles *src, hearth_error *err) {

@@ -117,6 +117,11 @@ void particles_permute(particles *ps, const int *order, void *scratch, size_t ro
 /// The same when the caller knows W, the largest |order[i] - i| (the MPM sort finds it while it
 /// fills order, which spares this a parallel region of its own).
 void particles_permute_within(particles *ps, const int *order, int W, void *scratch, size_t room);
+/// particles_permute_within for every thread of the caller's parallel region (all must call it with the
+/// same W): it waits for the team (order filled), each thread takes whole columns through its 1 / T of
+/// the scratch, and it returns past a barrier of the team that follows the moves (and so every
+/// thread's work before the call).
+void particles_permute_team(particles *ps, const int *order, int W, void *scratch, size_t room);
 /// Copy every enabled column of src into dst (same layout); dst grows as needed.
 hearth_status particles_copy(particles *dst, const particles *src, hearth_error *err);
 /// Remove particles whose flag is non-zero, keeping order. Returns the number removed.
