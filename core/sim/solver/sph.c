@@ -117,7 +117,10 @@
  * with tension the roll's outline is a skin that lifts it off its tray;
  * sph.continuity_density reads the particle's own volume instead (sph_gas.c),
  * off in the roll's preset because its films then tear (docs/validation.md
- * "The roll's skin"). At
+ * "The roll's skin"); the preset takes sph.renormalised_density, the sum
+ * divided by the part of the kernel the body fills, which removes the skin
+ * and keeps the sum inside (docs/validation.md "The roll's skin,
+ * renormalised"). At
  * eps 0.3 a block in strong uniform tension still creeps toward pairs over
  * many sound crossings (`sph_artificial_stress_fluid`: 0.68 spacings at 1 s;
  * 0.5 holds). Surface tension above about 0.02 N/m does not settle a 0.06 m
