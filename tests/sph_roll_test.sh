@@ -58,8 +58,8 @@ claim_sph_bread_roll_one_piece*)
     [ -z "$broken" ] && exit 0
     echo "EXPECTED FAILURE: at dx $dx, ${broken}: the films between bubbles hold since the gas law's density sums" \
         "rest volumes, and the outline and tray side read no false skin since the preset renormalises that sum by" \
-        "the kernel's filled part (sph.renormalised_density: whole and on its tray to 2 s at 2 mm, and the 1.5 mm" \
-        "roll's central slit of 0.5 s gone); what tears now is not known (docs/validation.md \"The films' tension\"," \
+        "the kernel's filled part (sph.renormalised_density: whole to 2 s at 2 mm and at 1.5 mm, where the sum's" \
+        "skin had slit it from 0.5 s); what tears now was not seen (docs/validation.md \"The films' tension\"," \
         "\"The roll's skin, renormalised\")" >&2
     exit 77
     ;;
