@@ -91,10 +91,12 @@ static double volume_density(const double *F, double m, double V0, double summed
  * surface particle at rest reads its rest density, not 0.76 of it, and Tait's
  * tension pulls no false skin (docs/validation.md "The roll's skin"). It is
  * Ferrand et al.'s density renormalised by the kernel's integral over the
- * fluid, rho_a = (1 / gamma_a) sum_b m_b w_ab (2013, Int. J. Numer. Meth.
- * Fluids 71, 446, their eq. for gamma_a), with gamma from the particles
- * themselves, Shepard's sum, in place of their wall's boundary integral. V
- * in st->perm (free scratch between sph_kinematics and sph_forces). */
+ * fluid, rho_a = (1 / gamma_a) sum_b m_b w_ab (Ferrand, Laurence, Rogers,
+ * Violeau & Kassiotis 2013, Int. J. Numer. Meth. Fluids 71, 446-472), with
+ * gamma from the particles themselves, Shepard's sum, in place of their
+ * wall's boundary integral. V in st->perm (free scratch between
+ * sph_kinematics and sph_forces); a non-positive det F (phase_stress reports
+ * it) counts the raw volume. */
 static void renormalise(hearth_scene *s, const sph_cols *c, double *rho_out) {
     struct sph_state *st = s->sph;
     const int n = c->n, dim = c->dim, *off = st->nl.off, *nb = st->nl.j;
