@@ -176,6 +176,17 @@ static const hearth_setting settings[] = {
              "continuity equation, Gray, Monaghan & Swift 2001), not the summation (eq. 3.13), which reads a free surface "
              "or a tray as stretched and pulls it into a skin",
              continuity_density),
+    SPH_FLAG("renormalised_density",
+             "with gas_law: Tait and the gas law read the summed density (eq. 3.13 over rest volumes) divided by the part "
+             "of the kernel the body fills, sum_j V0_j det F_j W_ij, at most 1 (Ferrand et al. 2013's gamma): a free "
+             "surface or a tray side reads no stretch, the inside keeps the sum",
+             renormalised_density),
+    /* an ideal gas's isothermal bulk modulus is its pressure: a bubble at the
+     * oven's 101325 Pa is that stiff, where the set dough's Tait B is 4-8e5 Pa */
+    SPH(gas_pressure, "Pa",
+        "with gas_law: the outside pressure P_a of a bubble's ideal gas: its gauge pressure is P_a (rho / rho_b - 1) "
+        "(bulk modulus P_a) where that is softer than the dough's Tait B (an oven: 101325); 0 = the dough's B",
+        0, 0, 1e7),
 };
 
 const hearth_setting *hearth_scene_settings(int *n) {

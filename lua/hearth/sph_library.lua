@@ -25,7 +25,13 @@
 --                  for bread (Czuchajowska, Pomeranz & Jeffers 1989, Cereal Chem. 66,
 --                  128-132, measure a_w of doughs and crumb): the vapour of eq.
 --                  2.42-2.43 joins the bubbles' gas, which is what makes dough rise
---                  well beyond a dry gas's T/T0 (1.5x at 180 degC).
+--                  well beyond a dry gas's T/T0 (1.5x at 180 degC);
+--                renormalised_density = true: Tait reads the summed density over the
+--                  part of the kernel the dough fills (Ferrand et al. 2013's gamma),
+--                  so the outline and the tray side read no false stretch: without
+--                  it their tension was a skin that beaded the roll off its tray and
+--                  slit the finer roll (docs/validation.md "The roll's skin,
+--                  renormalised").
 --   .table     the raw Table 4.1 numbers.
 -- Difference from the thesis: eq. 4.1 and 4.2 extrapolate linearly beyond T0
 -- and Tf; hearth's curves are constant beyond their end points.
@@ -45,7 +51,7 @@ return function(h)
         },
         -- eps_f: §4.3's text value 0.5, not Table 4.1's 5 (XSPH overshoots above 1; the core refuses it)
         sph = { xsph0 = t.eps0, xsph_f = 0.5, xsph_T0 = t.T0, xsph_Tf = t.Tf, tension = true, artificial_stress = 0.5,
-                gas_law = true, bubble_vapour = 0.95, bubble_T0 = t.T0 },
+                gas_law = true, bubble_vapour = 0.95, bubble_T0 = t.T0, renormalised_density = true },
         table = (function() local c = {} for k, v in pairs(t) do c[k] = v end return c end)(),
       }
     end,

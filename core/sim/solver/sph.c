@@ -117,7 +117,10 @@
  * with tension the roll's outline is a skin that lifts it off its tray;
  * sph.continuity_density reads the particle's own volume instead (sph_gas.c),
  * off in the roll's preset because its films then tear (docs/validation.md
- * "The roll's skin"). At
+ * "The roll's skin"); the preset takes sph.renormalised_density, the sum
+ * divided by the part of the kernel the body fills, which removes the skin
+ * and keeps the sum inside (docs/validation.md "The roll's skin,
+ * renormalised"). At
  * eps 0.3 a block in strong uniform tension still creeps toward pairs over
  * many sound crossings (`sph_artificial_stress_fluid`: 0.68 spacings at 1 s;
  * 0.5 holds). Surface tension above about 0.02 N/m does not settle a 0.06 m
@@ -153,6 +156,19 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
         return err_set(err, HEARTH_ERR_PARAM,
                        "scene: sph.continuity_density = true needs sph.gas_law = true (it is the gas law's pressure that "
                        "reads the particle's own volume); set both or neither");
+    if (o->renormalised_density && !o->gas_law)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "scene: sph.renormalised_density = true needs sph.gas_law = true (it is the gas law's pressure that "
+                       "reads it); set both or neither");
+    if (o->renormalised_density && o->continuity_density)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "scene: sph.renormalised_density and sph.continuity_density are two densities for the same "
+                       "pressure; set one of them");
+    if (o->gas_pressure > 0 && !o->gas_law)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "scene: sph.gas_pressure = %g Pa needs sph.gas_law = true (it is the gas law's bubble that holds "
+                       "the gas); set sph.gas_law = true or sph.gas_pressure = 0",
+                       o->gas_pressure);
     if (!(o->xsph_Tf > o->xsph_T0))
         return err_set(err, HEARTH_ERR_PARAM, "scene: sph.xsph_Tf = %g degC must be above sph.xsph_T0 = %g degC",
                        o->xsph_Tf, o->xsph_T0);

@@ -2,15 +2,21 @@
  * #18): each particle's rest density from its contents, a bubble's from the
  * ideal gas and the dough's water vapour (Rodriguez-Arenas 2011 eq. 3.49-3.50,
  * and eq. 2.42-2.43, Fan et al.'s bubble in the thesis's review), and the
- * pressure against it. phase_pressure (sph.c) calls sph_pressure_gas_law in
- * place of eq. 3.51-3.52 when the scene asks for it; docs/validation.md "SPH
- * bread roll (#18)" says why. */
+ * pressure against it, with the density it reads: eq. 3.13's sum, the
+ * particle's own volume (sph.continuity_density) or the sum renormalised by
+ * the kernel's filled part (sph.renormalised_density), and the gas's own
+ * stiffness (sph.gas_pressure). phase_pressure (sph.c) calls
+ * sph_pressure_gas_law in place of eq. 3.51-3.52 when the scene asks for it;
+ * docs/validation.md "SPH bread roll (#18)" says why. */
 #include <math.h>
 #include <string.h>
 
 #include "material.h"
 #include "params.h"
+#include "scene.h"
 #include "sph.h"
+#include "sph_kernel.h"
+#include "sph_neighbours.h"
 #include "sph_state.h"
 
 /* The gas law's rest density of a bubble particle (sph.gas_law): eq. 3.49,
@@ -28,12 +34,21 @@
  * sph.bubble_vmax. A bubble's rest volume m / rho_b follows its temperature
  * both ways: it grows while it heats and shrinks as it cools, with no history
  * to keep (and nothing for a rollback to lose). */
+/* The vapour's partial pressure in a bubble, a_w P_sat(T) (eq. 2.43 through
+ * 100 degC at 101325 Pa, Delta H_v = 40.66 kJ/mol); 0 for a dry gas. */
+static double vapour_pressure(const hearth_sph_def *o, double T) {
+    if (!(o->bubble_vapour > 0)) return 0;
+    const double hr = 40660.0 / R_GAS, tb = 100.0 + KELVIN;
+    return o->bubble_vapour * 101325.0 * exp(-hr * (1 / (T + KELVIN) - 1 / tb));
+}
+
+/* The outside pressure P_a: sph.gas_pressure, or an oven's 101325 Pa. */
+static double outside_pressure(const hearth_sph_def *o) { return o->gas_pressure > 0 ? o->gas_pressure : 101325.0; }
+
 double sph_bubble_volume(const hearth_sph_def *o, double vb0, double T) {
     double V = (T + KELVIN) / (o->bubble_T0 + KELVIN); /* eq. 3.50, Kelvin */
     if (o->bubble_vapour > 0) {                         /* eq. 2.42-2.43 */
-        const double pa = 101325.0, hr = 40660.0 / R_GAS, tb = 100.0 + KELVIN;
-        const double pv0 = o->bubble_vapour * pa * exp(-hr * (1 / (o->bubble_T0 + KELVIN) - 1 / tb));
-        const double pv = o->bubble_vapour * pa * exp(-hr * (1 / (T + KELVIN) - 1 / tb));
+        const double pa = outside_pressure(o), pv0 = vapour_pressure(o, o->bubble_T0), pv = vapour_pressure(o, T);
         V = pv < pa && pv0 < pa ? V * (pa - pv0) / (pa - pv) : HUGE_VAL;
     }
     if (!(V < o->bubble_vmax)) V = o->bubble_vmax;
@@ -64,6 +79,49 @@ static double volume_density(const double *F, double m, double V0, double summed
     return J > 0 && V0 > 0 ? m / (V0 * J) : summed;
 }
 
+/* sph.renormalised_density: the summed density (eq. 3.13 over rest volumes,
+ * sort_and_list) divided by gamma_i = sum_j V_j W_ij (i itself included),
+ * the part of i's kernel its body fills, with V_j = V0_j det F_j each
+ * particle's own volume (F from eq. 3.27, phase_stress), capped at 1. Where
+ * the kernel is full gamma is 1 up to the sums' error (the particles' own
+ * volumes tile the plane they occupy), and the density is the sum's: the
+ * films between bubbles keep what held them (docs/validation.md "The films'
+ * tension"). Where part of it hangs over a free surface or a collider, which
+ * adds no neighbours, the sum lacks that part and gamma says how much: a
+ * surface particle at rest reads its rest density, not 0.76 of it, and Tait's
+ * tension pulls no false skin (docs/validation.md "The roll's skin"). It is
+ * Ferrand et al.'s density renormalised by the kernel's integral over the
+ * fluid, rho_a = (1 / gamma_a) sum_b m_b w_ab (Ferrand, Laurence, Rogers,
+ * Violeau & Kassiotis 2013, Int. J. Numer. Meth. Fluids 71, 446-472), with
+ * gamma from the particles themselves, Shepard's sum, in place of their
+ * wall's boundary integral. V in st->perm (free scratch between
+ * sph_kinematics and sph_forces); a non-positive det F (phase_stress reports
+ * it) counts the raw volume. */
+static void renormalise(hearth_scene *s, const sph_cols *c, double *rho_out) {
+    struct sph_state *st = s->sph;
+    const int n = c->n, dim = c->dim, *off = st->nl.off, *nb = st->nl.j;
+    double *V = st->perm;
+    for (int i = 0; i < n; i++) {
+        const double *F = c->F + 9 * i;
+        const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
+                         F[2] * (F[3] * F[7] - F[4] * F[6]);
+        V[i] = c->V0[i] * (J > 0 ? J : 1);
+    }
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        const double hi = st->h[i];
+        double g = V[i] * sph_w(dim, 0, hi);
+        for (int k = off[i]; k < off[i + 1]; k++) {
+            const int j = nb[k];
+            double d[3];
+            sph_disp(&st->cells, c->x + 3 * i, c->x + 3 * j, d);
+            const double r = sqrt(d[0] * d[0] + d[1] * d[1] + (dim == 3 ? d[2] * d[2] : 0));
+            g += V[j] * sph_w(dim, r, 0.5 * (hi + st->h[j]));
+        }
+        rho_out[i] = g < 1 && g > 0 ? st->rho[i] / g : st->rho[i];
+    }
+}
+
 /* Pressure with sph.gas_law: the dough's Tait (eq. 3.17) against its rest
  * density rho0; a bubble's the ideal gas's gauge pressure against the gas
  * law's rho_b = rho0 / V_b (sph_bubble_volume), B (rho / rho_b - 1) (gamma =
@@ -76,20 +134,39 @@ static double volume_density(const double *F, double m, double V0, double summed
  * the bubble's own volume, so the rise is bounded by the temperature reached.
  * Tait (gamma 7) against rho_b instead was tried and rejected: a bubble the
  * dough holds at its raw volume sees B (V_b^7 - 1), 16000 B at V_b = 4, and
- * blew the crust off the roll. */
+ * blew the crust off the roll.
+ * With sph.gas_pressure = P_a the bubble's stiffness is its gas's own: the
+ * CO2 keeps its moles and the vapour its partial pressure P_v = a_w
+ * P_sat(T), so at volume V the gauge pressure is exactly (P_a - P_v)(V_b / V
+ * - 1) = (P_a - P_v)(rho / rho_b - 1) (eq. 2.42 with the ideal gas of eq.
+ * 3.49-3.50), an isothermal bulk modulus of P_a - P_v, which falls to 0 as
+ * the dough nears its boiling point. The dough's B, which carries the set
+ * dough's mu_e (4-8e5 Pa hot in the bread roll), still caps it where it is
+ * softer (a cool raw dough: the time step is the dough's). Measured on the
+ * roll (docs/validation.md "The roll's skin, renormalised"): with the
+ * animation-scaled dough the gas alone cannot stretch the set crumb, which
+ * then rises 1.11x by 1.5 s, so the roll's preset leaves it off. */
 void sph_pressure_gas_law(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, *mat = c.mat;
     const double *T = c.T, *F = c.F, *V0 = pcold(&s->ps, PC_VOL0);
+    if (o->renormalised_density) renormalise(s, &c, st->vr); /* vr: free once the sum stands (sort_and_list) */
     for (int i = 0; i < n; i++) {
         const double rho0 = st->rho0[i], bub = s->mats.slot[mat[i]].core[CP_BUBBLE];
         const double rr = bub > 0 && T ? rho0 / sph_bubble_volume(o, bub, T[i]) : rho0; /* eq. 3.49 */
         st->rhof[i] = rr;
-        const double rho = o->continuity_density ? volume_density(F + 9 * i, c.m[i], V0[i], st->rho[i]) : st->rho[i];
+        const double rho = o->continuity_density     ? volume_density(F + 9 * i, c.m[i], V0[i], st->rho[i])
+                           : o->renormalised_density ? st->vr[i]
+                                                     : st->rho[i];
         const double tait = st->B[i] * (pow(rho / rho0, o->gamma) - 1); /* eq. 3.17 */
-        st->prs[i] = bub > 0 ? fmax(st->B[i] * (rho / rr - 1), tait) : tait;
+        double Bg = st->B[i];
+        if (o->gas_pressure > 0 && bub > 0 && T) { /* the gas's own stiffness, P_a - P_v (gas_modulus) */
+            const double K = fmax(0.0, o->gas_pressure - vapour_pressure(o, T[i]));
+            if (K < Bg) Bg = K;
+        }
+        st->prs[i] = bub > 0 ? fmax(Bg * (rho / rr - 1), tait) : tait;
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
     }
     if (T) memcpy(st->Tprev, T, sizeof(double) * (size_t)n);
