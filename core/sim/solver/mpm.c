@@ -937,8 +937,9 @@ static void p2g_store_chunks(hearth_scene *s, mpm_sort_team *t, const int *kof, 
  * step has the count's barrier, P2G's and the grid update's; out of order
  * the permutation (its region gone too) ends past a barrier. The grid's
  * activation, the particle blocks' range, their partials and the tile store
- * are done in the region (the store's growth, when a step finds more blocks
- * than ever, in a single). Bits: mpm_sort's and step_team's. */
+ * are done in the region (the store lives in the sort's scratch; it grows,
+ * in a single, only when the scratch is short). Bits: mpm_sort's and
+ * step_team's. */
 static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *rep, mpm_sort_team *t, double *vcol,
                                       hearth_error *err) {
     mpm_state *m = s->mpm;
