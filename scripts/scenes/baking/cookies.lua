@@ -59,7 +59,7 @@
 -- next (docs/validation.md, "Fig. 17: the top's curvature and its noise").
 -- The oven (issue #18, docs/validation.md "The unleavened cookie's top: a real
 -- dough's heat"): Table 2's cookie conducts 30 W/(m K) with c 20 J/(kg K), so it
--- bakes evenly (Biot beta L / kappa = 25 x 0.009 / 30 ~ 0.008) and spreads as a
+-- bakes evenly (Biot beta L / kappa = 25 x 0.00875 / 30 ~ 0.007) and spreads as a
 -- puddle held by the tray, which domes (Huppert 1982). A real cookie dough
 -- conducts 0.29-0.5 W/(m K) (0.35 from its composition by Choi & Okos, as
 -- h.library.dough.cookie; 0.29-0.45 measured in unleavened doughs, Budzaki &
@@ -69,8 +69,8 @@
 -- dough sets flat on its set base and the leavened centre still rises inside a
 -- set rim (Ding Fig. 17). conductivity = 0.01 (x Table 2's kappa: 0.3 W/(m K))
 -- gives that Biot number; the heat then runs ~220x a real dough's (diffusivity
--- 1.5e-5 against 1.4e-7 m^2/s: a 15-minute bake in 4 s), and every cookie has set
--- (71-78 degC, COOKIE_SET) by 3.5 s at 150 degC.
+-- 3e-5 against 1.4e-7 m^2/s: a 15-minute bake in 4 s), and every cookie has set
+-- (71-78 degC, COOKIE_SET) by ~3.5 s at 150 degC (centre 76-78 degC at 3 s, 95 at 4 s).
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 5, frames = 5, ovens = { 190, 150, 110 },
   leaveners = { 0.015, 0.0075, 0 }, baseline = false, reaction_temperature = -1, reaction_width = -1, gas = 1,
