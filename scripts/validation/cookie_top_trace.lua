@@ -1,7 +1,9 @@
 -- cookie_top_trace.lua: how the unleavened cookie's top takes its shape (#18,
 -- "no leavener at all yields a flat one"; docs/validation.md "The unleavened
--- cookie's top: traced"). cookies.lua's dough (h.library.paper.cookie, a 60 x 25
--- mm capsule at 150 degC, vent 5 m/s) alone in one 180 mm slot, read each frame:
+-- cookie's top: traced"). cookies.lua's dough as it was until helper flat3
+-- (h.library.paper.cookie at Table 2's kappa, a 60 x 25 mm capsule at 150 degC,
+-- vent 5 m/s; cookies.lua now bakes a real dough's conductivity and a 17.5 mm
+-- dough) alone in one 180 mm slot, read each frame:
 --   * the top from the particles: the highest particle in each one-cell bin;
 --     H (the centre bin), the width w (particles' extent), the top at the
 --     middle third's ends (x = +-w/6) and the sag there, H - mean of the two;

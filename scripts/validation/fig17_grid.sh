@@ -2,7 +2,8 @@
 # fig17_grid.sh: Ding et al. 2019 Fig. 17 as hearth bakes it (#18): the
 # Stomakhin-like baseline (top row, cookies.lua --set baseline=true) against
 # the full model (bottom row), ovens 190, 150 and 110 degC from left to right,
-# the leavened cookie (0.015) alone on its tray, 2.5 s, coloured by
+# the leavened cookie (0.015) alone on its tray, 4 s (cookies.lua's real
+# dough conductivity sets every cookie by 3.5 s at 150 degC), coloured by
 # temperature. Prints each cookie's height and top curvature (probe;
 # particles +- the fit's standard error, h.top_curvature) and writes the six
 # last frames side by side as OUT (default docs/gallery/fig17_baseline_vs_dough.png).
@@ -21,7 +22,7 @@ for base in true false; do
         d="$tmp/${base}_$T"
         mkdir -p "$d"
         (cd "$d" && "$b/app/hearth" run "$root/scripts/scenes/baking/cookies.lua" --quiet --set dx="$dx" \
-            --set until_t=2.5 --set frames=1 --set ovens="$T" --set leaveners=0.015 --set baseline=$base |
+            --set until_t=4 --set frames=1 --set ovens="$T" --set leaveners=0.015 --set baseline=$base |
             sed -n "s/^oven/baseline=$base: oven/p")
     done
 done

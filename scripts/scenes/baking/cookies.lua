@@ -15,13 +15,13 @@
 --                           the leavener's kinetics moved off Table 2 (theta_r, dtheta
 --                           in degC; gas multiplies alpha^g), for docs/validation.md
 --                           "The cookie's gas: when, where, and eq. 12"; not a preset.
---   [--set tray_mode=sticky --set tray_friction=1 --set conductivity=0.01
+--   [--set conductivity=1]  Table 2's kappa (30 W/(m K)); the scene's default
+--                           0.01 is a real dough's (below, "The oven").
+--   [--set tray_mode=sticky --set tray_friction=1
 --    --set water=true --set soft_until=60 --set max_porosity=0.6]
 --                           the levers of docs/validation.md "The cookie: tray,
 --                           crust, conduction and 3D" (#18, session 28): the
---                           tray's contact (h.recipes.tray: separate, 0.4); a
---                           factor on Table 2's kappa (0.01: a real dough's
---                           ~0.3 W/(m K), Biot ~1, so top and edges set first);
+--                           tray's contact (h.recipes.tray: separate, 0.4);
 --                           water as bread's (dough.lua WATER: s_0 0.10 for a
 --                           20 % wb cookie dough, so the surface dries and
 --                           dough.lua's DRY curve stiffens it); bread's Fig. 8
@@ -29,7 +29,8 @@
 --                           their 35 degC values up to soft_until degC (the
 --                           levers of sessions 26-28, before the preset took its
 --                           own set, dough.lua's COOKIE_SET); the plugin's pore
---                           cap. Not presets: the defaults are Table 2's cookie.
+--                           cap. Not presets: the defaults are Table 2's cookie
+--                           with a real dough's conductivity.
 --   [--set seed=2]        the particles' jitter (h.scene's seed, default 1): a
 --                           new sampling of the same dough, to see a reading's
 --                           noise (docs/validation.md, "Fig. 17: the top's
@@ -43,7 +44,8 @@
 -- top_curvature_particles from the highest particle in each one-cell bin,
 -- a least-squares parabola over the middle 60% of the cookie's width
 -- (h.top_curvature), and top_curvature_particles_se that fit's standard error.
--- What shapes the top (measured, 2D, dx 7.5 mm, 150 degC): the cold dough
+-- What shaped the top with Table 2's heat and the 25 mm dough (measured, 2D, dx
+-- 7.5 mm, 150 degC, before helper flat3; "The oven" below for now): the cold dough
 -- (tau_y 20 Pa) cannot carry its own 25 mm (rho g H ~ 120 Pa); with eta the
 -- full model slumps slowly, and once its fat has melted (35 degC) it spreads
 -- soft until its gluten sets at 71-78 degC (dough.lua, COOKIE_SET), ~1.6 s;
@@ -55,10 +57,24 @@
 -- and its top curvature is the measures' reading of that flat top: within
 -- ~2 1/m of 0, either sign, from one particle sampling (--set seed) to the
 -- next (docs/validation.md, "Fig. 17: the top's curvature and its noise").
+-- The oven (issue #18, docs/validation.md "The unleavened cookie's top: a real
+-- dough's heat"): Table 2's cookie conducts 30 W/(m K) with c 20 J/(kg K), so it
+-- bakes evenly (Biot beta L / kappa = 25 x 0.00875 / 30 ~ 0.007) and spreads as a
+-- puddle held by the tray, which domes (Huppert 1982). A real cookie dough
+-- conducts 0.29-0.5 W/(m K) (0.35 from its composition by Choi & Okos, as
+-- h.library.dough.cookie; 0.29-0.45 measured in unleavened doughs, Budzaki &
+-- Seruga 2015, Int. J. Food Prop. 18:2300), so in a real oven (beta 20-48
+-- W/(m^2 K), Baik et al. 1999, J. Food Sci. 64:688; Table 2's 25 and the tray's 35)
+-- its Biot number is ~1: the base and rim set before the centre, the unleavened
+-- dough sets flat on its set base and the leavened centre still rises inside a
+-- set rim (Ding Fig. 17). conductivity = 0.01 (x Table 2's kappa: 0.3 W/(m K))
+-- gives that Biot number; the heat then runs ~220x a real dough's (diffusivity
+-- 3e-5 against 1.4e-7 m^2/s: a 15-minute bake in 4 s), and every cookie has set
+-- (71-78 degC, COOKIE_SET) by ~3.5 s at 150 degC (centre 76-78 degC at 3 s, 95 at 4 s).
 local h = require "hearth"
-local P = h.params { dim = 2, dx = 0.005, until_t = 3, frames = 6, ovens = { 190, 150, 110 },
+local P = h.params { dim = 2, dx = 0.005, until_t = 5, frames = 5, ovens = { 190, 150, 110 },
   leaveners = { 0.015, 0.0075, 0 }, baseline = false, reaction_temperature = -1, reaction_width = -1, gas = 1,
-  tray_mode = "separate", tray_friction = 0.4, conductivity = 1, water = false, soft_until = -1, max_porosity = -1,
+  tray_mode = "separate", tray_friction = 0.4, conductivity = 0.01, water = false, soft_until = -1, max_porosity = -1,
   seed = 1, vent = 5 }
 -- vent (m/s, the scene setting gas_vent; 0 = Ding et al.'s closed skin): a surface particle whose pores have
 -- opened (gas porosity >= 0.7, vent_porosity) loses its CO2 to the oven air (core/sim/fields/gas.c). 5 m/s is
@@ -78,8 +94,9 @@ local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 local ovens, leaveners = P.ovens, P.leaveners
 
 local oven = h.library.paper_oven.cookie
-print(("cookies.lua: h.library.paper.cookie, animation units (Ding Table 2): heat runs in seconds, not minutes; "
-  .. "open surface pores vent CO2 at %g m/s (--set vent=0: none)"):format(P.vent))
+print(("cookies.lua: h.library.paper.cookie, animation units (Ding Table 2) with its conductivity x%g (1: Table 2's; "
+  .. "0.01: a real dough's): heat runs in seconds, not minutes; open surface pores vent CO2 at %g m/s (--set vent=0: "
+  .. "none)"):format(P.conductivity, P.vent))
 -- m: tray height, cookie spacing, dough radius and height. Each cookie is read
 -- in its own slot (SPACING wide, centred on it), so the slot must hold the
 -- cookie's whole spread: at 0.12 m the leavened cookie (60 mm raw, 110-130 mm
@@ -88,7 +105,18 @@ print(("cookies.lua: h.library.paper.cookie, animation units (Ding Table 2): hea
 -- its neighbour's slot, whose spread then read its rim (the unleavened
 -- cookie: 102 mm for its own 83, #18). 0.18 m keeps each cookie's centre on a
 -- grid node at dx 7.5, 5 and 3.75 mm, as 0.12 m did.
-local TRAY, SPACING, R, THICK = 0.02, 0.18, 0.03, 0.025
+-- The dough: 60 mm wide and 17.5 mm thick (25 mm until #18 helper flat3). A real
+-- cookie is a thin disc: AACC Method 10-50.05 rates sugar-snap cookies by their
+-- spread factor W/T, ~8-10 baked, from dough sheeted and cut several times wider
+-- than thick (a ~7 mm sheet cut 60 mm wide, as we recall the method; not checked
+-- against its text). A 7 mm sheet is one cell at the claims' coarse dx 7.5 mm;
+-- 17.5 mm is the thinnest of 15, 17.5 and 20 mm that every cookie claim reads at
+-- 7.5 mm (at 15 mm, two cells, the measures read the baseline capsule's round ends
+-- into its top: -45 1/m; at 20 mm the coarse probe read the unleavened top rounder
+-- than the leavened in its one sampling; docs/validation.md "The unleavened
+-- cookie's top: a real dough's heat"). With a real conductivity the 25 mm dough
+-- baked to W/T 3.1 (73 / 23.5 mm at dx 5 mm), this one to 3.6 (66 / 18 mm).
+local TRAY, SPACING, R, THICK = 0.02, 0.18, 0.03, 0.0175
 local W = SPACING * #leaveners
 local zc = 0.06
 
