@@ -359,7 +359,15 @@ print("EXPECTED FAILURE: no crack starts in the crust at this dx. Under the stre
       "scripts/validation/crack_heat.lua). Not the crack band (it acts only past the fracture strain). Not fixed by "
       "reading the brittleness at the face's water (the evaporation's surface saturation): the calibrated "
       "evaporation dries every face at once and the whole skin cracked (580 particles by 0.5 s; 4 mm stopped by "
-      "the guard), so it was taken out (docs/validation.md, 'The crack band, and the face's water')")
+      "the guard), so it was taken out (docs/validation.md, 'The crack band, and the face's water'). Nor by reading "
+      "the skin's water below its cell on the drying profile the evaporation assumes (s^2 linear from the face to the "
+      "particle's sample, 0.57 dx deep) at a fixed crust depth of 1.75-2.5 mm: that dries the 5 mm top's reading by "
+      "sqrt(z / d) = 0.78-0.94; brittle enough, the 5 mm skin cracks at its flanks and base (up to 9 particles, notch "
+      "<= 1.35 mm) and the crown stays whole, and the 4 mm crown crack is lost (0.4-2.0 mm deep): as with a uniform "
+      "dry shift, the crown is not where a brittle 5 mm skin cracks first; the 5 mm skin stretches as much as the 4 "
+      "mm one but most at a shoulder (1.22 against the crown's 1.13 at 1.8 s; 4 mm: the crown 1.15, then it "
+      "cracks) (docs/validation.md, 'The crust's water "
+      "below the cell (#18, loaf5)'; taken out)")
 sys.exit(77)
 PY
     exit $?
