@@ -122,6 +122,42 @@ static void renormalise(hearth_scene *s, const sph_cols *c, double *rho_out) {
     }
 }
 
+/* sph.foam_pressure: a dough particle (no bubble volume) whose kernel holds
+ * bubble particles keeps its Tait pressure only up to the highest pressure
+ * among those bubbles (never below 0). The sum over rest volumes
+ * (sort_and_list) smooths a squeezed bubble's excess rest volume over its
+ * kernel, so the dough beside it reads a squeeze it does not have (its own
+ * volume, V0 det F, says it is not squeezed at all), and Tait charges that
+ * squeeze at gamma 7 with the set dough's B: on the bread roll (2 mm, 1.6 s)
+ * the dough rows just above the hot tray held +250-270 kPa (median) beside
+ * bubbles at +50-75 kPa, and that layer, with the set crust round it, lifted
+ * the base off the tray (docs/validation.md "The roll's base"). A dough wall
+ * between a closed-cell foam's cells is thin and (nearly) incompressible: the
+ * normal stress across it is its cells' gas pressure, and the foam's
+ * resistance to a squeeze is its gas's (Gibson & Ashby 1997, Cellular Solids,
+ * 2nd ed., Cambridge, §5.3: a closed-cell foam's gas adds its pressure to
+ * the walls' membrane stresses). Dough with no bubble within reach (a crust,
+ * a thick wall) keeps its Tait; a bubble keeps its gas law. Bubbles' pressures
+ * are read, never written, so the pass does not depend on the order. */
+static void foam_cap(hearth_scene *s, const sph_cols *c) {
+    struct sph_state *st = s->sph;
+    const int n = c->n, *mat = c->mat, *off = st->nl.off, *nb = st->nl.j;
+    double *cap = st->perm; /* free scratch, as renormalise's */
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        cap[i] = HUGE_VAL;
+        if (s->mats.slot[mat[i]].core[CP_BUBBLE] > 0 || !(st->prs[i] > 0)) continue;
+        double hi = -HUGE_VAL;
+        for (int k = off[i]; k < off[i + 1]; k++) {
+            const int j = nb[k];
+            if (s->mats.slot[mat[j]].core[CP_BUBBLE] > 0 && st->prs[j] > hi) hi = st->prs[j];
+        }
+        if (hi > -HUGE_VAL) cap[i] = fmax(hi, 0.0);
+    }
+    for (int i = 0; i < n; i++)
+        if (cap[i] < st->prs[i]) st->prs[i] = cap[i];
+}
+
 /* Pressure with sph.gas_law: the dough's Tait (eq. 3.17) against its rest
  * density rho0; a bubble's the ideal gas's gauge pressure against the gas
  * law's rho_b = rho0 / V_b (sph_bubble_volume), B (rho / rho_b - 1) (gamma =
@@ -169,5 +205,6 @@ void sph_pressure_gas_law(hearth_scene *s) {
         st->prs[i] = bub > 0 ? fmax(Bg * (rho / rr - 1), tait) : tait;
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
     }
+    if (o->foam_pressure) foam_cap(s, &c);
     if (T) memcpy(st->Tprev, T, sizeof(double) * (size_t)n);
 }
