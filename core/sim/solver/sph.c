@@ -164,6 +164,10 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
         return err_set(err, HEARTH_ERR_PARAM,
                        "scene: sph.renormalised_density and sph.continuity_density are two densities for the same "
                        "pressure; set one of them");
+    if (o->bubble_vent && !o->gas_law)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "scene: sph.bubble_vent = true needs sph.gas_law = true (it opens the gas law's bubbles); set both or "
+                       "neither");
     if (o->foam_pressure && !o->gas_law)
         return err_set(err, HEARTH_ERR_PARAM,
                        "scene: sph.foam_pressure = true needs sph.gas_law = true (it caps the dough's pressure by the gas "

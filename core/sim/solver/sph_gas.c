@@ -202,7 +202,15 @@ void sph_pressure_gas_law(hearth_scene *s) {
             const double K = fmax(0.0, o->gas_pressure - vapour_pressure(o, T[i]));
             if (K < Bg) Bg = K;
         }
-        st->prs[i] = bub > 0 ? fmax(Bg * (rho / rr - 1), tait) : tait;
+        double gas = Bg * (rho / rr - 1);
+        /* sph.bubble_vent: sph_bubble_volume stops V_b at bubble_vmax because there the crumb's cells
+         * open and vent (the vapour law diverges at the boiling point); an open cell's gas escapes, so it
+         * holds the oven's pressure and pushes no further, where without the vent the capped bubble
+         * still pushes B (rho / rho_b - 1) toward 4x its raw volume: on the bread roll those are the
+         * hottest, the crust's and the tray side's, squeezed 2x by the set dough round them
+         * (docs/validation.md "The roll's base"). Its dough's Tait against rho0 still holds it. */
+        if (o->bubble_vent && bub > 0 && T && gas > 0 && !(rr * bub * o->bubble_vmax > rho0 * (1 + 1e-12))) gas = 0;
+        st->prs[i] = bub > 0 ? fmax(gas, tait) : tait;
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
     }
     if (o->foam_pressure) foam_cap(s, &c);
