@@ -130,12 +130,14 @@ static void renormalise(hearth_scene *s, const sph_cols *c, double *rho_out) {
  * volume, V0 det F, says it is not squeezed at all), and Tait charges that
  * squeeze at gamma 7 with the set dough's B: on the bread roll (2 mm, 1.6 s)
  * the dough rows just above the hot tray held +250-270 kPa (median) beside
- * bubbles at +50-75 kPa, and that layer, with the set crust round it, lifted
- * the base off the tray (docs/validation.md "The roll's base"). A dough wall
+ * bubbles at +50-75 kPa, and the set crust holding that pressure rocks on a
+ * convex base. Capped, the roll stays on its tray to 1.6 s, then rocks all
+ * the same (its bubbles, squeezed harder, push as the dough did), so the
+ * roll's preset leaves it off (docs/validation.md "The roll's base"). A dough wall
  * between a closed-cell foam's cells is thin and (nearly) incompressible: the
  * normal stress across it is its cells' gas pressure, and the foam's
  * resistance to a squeeze is its gas's (Gibson & Ashby 1997, Cellular Solids,
- * 2nd ed., Cambridge, §5.3: a closed-cell foam's gas adds its pressure to
+ * 2nd ed., Cambridge, ch. 5: a closed-cell foam's gas adds its pressure to
  * the walls' membrane stresses). Dough with no bubble within reach (a crust,
  * a thick wall) keeps its Tait; a bubble keeps its gas law. Bubbles' pressures
  * are read, never written, so the pass does not depend on the order. */
@@ -207,8 +209,10 @@ void sph_pressure_gas_law(hearth_scene *s) {
          * open and vent (the vapour law diverges at the boiling point); an open cell's gas escapes, so it
          * holds the oven's pressure and pushes no further, where without the vent the capped bubble
          * still pushes B (rho / rho_b - 1) toward 4x its raw volume: on the bread roll those are the
-         * hottest, the crust's and the tray side's, squeezed 2x by the set dough round them
-         * (docs/validation.md "The roll's base"). Its dough's Tait against rho0 still holds it. */
+         * hottest, the crust's and the tray side's, held at 1.6-1.7x by the set dough round them.
+         * Opened, they stop stretching the crust and the roll's rise stalls at 1.28x, so its preset
+         * leaves it off (docs/validation.md "The roll's base"). Its dough's Tait against rho0 still
+         * holds it. */
         if (o->bubble_vent && bub > 0 && T && gas > 0 && !(rr * bub * o->bubble_vmax > rho0 * (1 + 1e-12))) gas = 0;
         st->prs[i] = bub > 0 ? fmax(gas, tait) : tait;
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
