@@ -120,7 +120,10 @@
  * "The roll's skin"); the preset takes sph.renormalised_density, the sum
  * divided by the part of the kernel the body fills, which removes the skin
  * and keeps the sum inside (docs/validation.md "The roll's skin,
- * renormalised"). At
+ * renormalised"). From 1.6 s that roll rocks on a convex base: the sum's
+ * squeeze of the dough beside squeezed bubbles (sph.foam_pressure caps it)
+ * and the bubbles at the vapour's cap that still push (sph.bubble_vent opens
+ * them) pressurise its set shell (docs/validation.md "The roll's base"). At
  * eps 0.3 a block in strong uniform tension still creeps toward pairs over
  * many sound crossings (`sph_artificial_stress_fluid`: 0.68 spacings at 1 s;
  * 0.5 holds). Surface tension above about 0.02 N/m does not settle a 0.06 m
@@ -164,6 +167,14 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
         return err_set(err, HEARTH_ERR_PARAM,
                        "scene: sph.renormalised_density and sph.continuity_density are two densities for the same "
                        "pressure; set one of them");
+    if (o->bubble_vent && !o->gas_law)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "scene: sph.bubble_vent = true needs sph.gas_law = true (it opens the gas law's bubbles); set both or "
+                       "neither");
+    if (o->foam_pressure && !o->gas_law)
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "scene: sph.foam_pressure = true needs sph.gas_law = true (it caps the dough's pressure by the gas "
+                       "law's bubbles); set both or neither");
     if (o->gas_pressure > 0 && !o->gas_law)
         return err_set(err, HEARTH_ERR_PARAM,
                        "scene: sph.gas_pressure = %g Pa needs sph.gas_law = true (it is the gas law's bubble that holds "

@@ -122,6 +122,44 @@ static void renormalise(hearth_scene *s, const sph_cols *c, double *rho_out) {
     }
 }
 
+/* sph.foam_pressure: a dough particle (no bubble volume) whose kernel holds
+ * bubble particles keeps its Tait pressure only up to the highest pressure
+ * among those bubbles (never below 0). The sum over rest volumes
+ * (sort_and_list) smooths a squeezed bubble's excess rest volume over its
+ * kernel, so the dough beside it reads a squeeze it does not have (its own
+ * volume, V0 det F, says it is not squeezed at all), and Tait charges that
+ * squeeze at gamma 7 with the set dough's B: on the bread roll (2 mm, 1.6 s)
+ * the dough rows just above the hot tray held +250-270 kPa (median) beside
+ * bubbles at +50-75 kPa, and the set crust holding that pressure rocks on a
+ * convex base. Capped, the roll stays on its tray to 1.6 s, then rocks all
+ * the same (its bubbles, squeezed harder, push as the dough did), so the
+ * roll's preset leaves it off (docs/validation.md "The roll's base"). A dough wall
+ * between a closed-cell foam's cells is thin and (nearly) incompressible: the
+ * normal stress across it is its cells' gas pressure, and the foam's
+ * resistance to a squeeze is its gas's (Gibson & Ashby 1997, Cellular Solids,
+ * 2nd ed., Cambridge, ch. 5: a closed-cell foam's gas adds its pressure to
+ * the walls' membrane stresses). Dough with no bubble within reach (a crust,
+ * a thick wall) keeps its Tait; a bubble keeps its gas law. Bubbles' pressures
+ * are read, never written, so the pass does not depend on the order. */
+static void foam_cap(hearth_scene *s, const sph_cols *c) {
+    struct sph_state *st = s->sph;
+    const int n = c->n, *mat = c->mat, *off = st->nl.off, *nb = st->nl.j;
+    double *cap = st->perm; /* free scratch, as renormalise's */
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        cap[i] = HUGE_VAL;
+        if (s->mats.slot[mat[i]].core[CP_BUBBLE] > 0 || !(st->prs[i] > 0)) continue;
+        double hi = -HUGE_VAL;
+        for (int k = off[i]; k < off[i + 1]; k++) {
+            const int j = nb[k];
+            if (s->mats.slot[mat[j]].core[CP_BUBBLE] > 0 && st->prs[j] > hi) hi = st->prs[j];
+        }
+        if (hi > -HUGE_VAL) cap[i] = fmax(hi, 0.0);
+    }
+    for (int i = 0; i < n; i++)
+        if (cap[i] < st->prs[i]) st->prs[i] = cap[i];
+}
+
 /* Pressure with sph.gas_law: the dough's Tait (eq. 3.17) against its rest
  * density rho0; a bubble's the ideal gas's gauge pressure against the gas
  * law's rho_b = rho0 / V_b (sph_bubble_volume), B (rho / rho_b - 1) (gamma =
@@ -166,8 +204,19 @@ void sph_pressure_gas_law(hearth_scene *s) {
             const double K = fmax(0.0, o->gas_pressure - vapour_pressure(o, T[i]));
             if (K < Bg) Bg = K;
         }
-        st->prs[i] = bub > 0 ? fmax(Bg * (rho / rr - 1), tait) : tait;
+        double gas = Bg * (rho / rr - 1);
+        /* sph.bubble_vent: sph_bubble_volume stops V_b at bubble_vmax because there the crumb's cells
+         * open and vent (the vapour law diverges at the boiling point); an open cell's gas escapes, so it
+         * holds the oven's pressure and pushes no further, where without the vent the capped bubble
+         * still pushes B (rho / rho_b - 1) toward 4x its raw volume: on the bread roll those are the
+         * hottest, the crust's and the tray side's, held at 1.6-1.7x by the set dough round them.
+         * Opened, they stop stretching the crust and the roll's rise stalls at 1.28x, so its preset
+         * leaves it off (docs/validation.md "The roll's base"). Its dough's Tait against rho0 still
+         * holds it. */
+        if (o->bubble_vent && bub > 0 && T && gas > 0 && !(rr * bub * o->bubble_vmax > rho0 * (1 + 1e-12))) gas = 0;
+        st->prs[i] = bub > 0 ? fmax(gas, tait) : tait;
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
     }
+    if (o->foam_pressure) foam_cap(s, &c);
     if (T) memcpy(st->Tprev, T, sizeof(double) * (size_t)n);
 }
