@@ -74,6 +74,13 @@
 
 #define FORCE_INLINE static inline __attribute__((always_inline))
 
+/* Whether this step updates heat and water on the grid, and over what time:
+ * the fields' clock (fields/field_clock.c) skips them on most steps of a
+ * multirate cycle; the particles' temperature, water and CO2 still ride along. */
+static inline int heat_now(const hearth_scene *s) { return thermal_active(s) && !s->field_skip; }
+static inline int water_now(const hearth_scene *s) { return water_active(s) && !s->field_skip; }
+static inline double field_dt(const hearth_scene *s, double dt) { return s->field_dt > 0 ? s->field_dt : dt; }
+
 /* two doubles, one SSE2 register: 3D P2G's scatter and G2P's sums run in pairs of lanes */
 typedef double v2d __attribute__((vector_size(16)));
 
@@ -196,7 +203,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     const double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *M = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
     const double *Cc = pcold(ps, PC_C);
     const int *mat = pcoli(ps, PC_MAT);
-    const double *Tcol = HEAT ? pcold(ps, PC_TEMPERATURE) : NULL;
+    /* the material reads the temperature every step, the heat channels scatter only on a field step (HEAT) */
+    const double *Tcol = thermal_active(s) ? pcold(ps, PC_TEMPERATURE) : NULL;
     const double *Gcol = ps->enabled & (1u << PC_GAS) ? pcold(ps, PC_GAS) : NULL;
     const double *Wcol = ps->enabled & (1u << PC_WATER) ? pcold(ps, PC_WATER) : NULL;
     const double *S0col = Wcol ? pcold(ps, PC_SAT0) : NULL;
@@ -204,7 +212,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     const int apic = s->def.transfer == 0;
     double cmax = 0, numax = 0; /* numax: largest kinematic viscosity a plugin applies (m^2/s) */
     /* what this scene supplies to the material door, the same for every particle; gas needs the porosity */
-    const unsigned env_flags = MATERIAL_ZERO_FAILED | (Gcol ? MATERIAL_POROSITY_PLASTIC : 0u) | (HEAT ? MATERIAL_EXPANSION : 0u);
+    const unsigned env_flags = MATERIAL_ZERO_FAILED | (Gcol ? MATERIAL_POROSITY_PLASTIC : 0u) | (Tcol ? MATERIAL_EXPANSION : 0u);
     double taus[9][HEARTH_BLOCK_MAX], Js[HEARTH_BLOCK_MAX]; /* stresses (columns) and det F of the chunk from mpm_p2g_stress */
 
     for (int i = pb.start; i < pb.end; i++) {
@@ -362,8 +370,8 @@ static block_fn p2g_prepare(hearth_scene *s) {
     m->sticky_faces = 0;
     for (int c = 0; c < s->ncol; c++) m->sticky_faces |= s->cols[c].mode == HEARTH_STICKY;
     for (int k = 0; k < m->npb; k++) m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
-    if (s->def.two_field) return p2g_two_fns[thermal_active(s)][water_active(s)]; /* 2D, no sticky face (mpm_step) */
-    return p2g_fns[m->sticky_faces][s->g.dim == 3][thermal_active(s)][water_active(s)];
+    if (s->def.two_field) return p2g_two_fns[heat_now(s)][water_now(s)]; /* 2D, no sticky face (mpm_step) */
+    return p2g_fns[m->sticky_faces][s->g.dim == 3][heat_now(s)][water_now(s)];
 }
 
 /* P2G's colour phases, for the team of the enclosing parallel region (one
@@ -539,6 +547,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     const double *hold_h = HEAT && s->heat.nfix > 0 ? s->heat.hold_h : NULL; /* held temperatures (thermal.c) */
     const double boil = HEAT && WATER && s->def.latent_heat ? s->def.boiling_point : INFINITY; /* no boiling: never passed */
     const int vent = Gcol && s->def.gas_vent > 0 && s->boundary.area; /* boundary.c found the surface this step */
+    const double fdt = field_dt(s, dt); /* the CO2's time: the fields' cycle (HEAT runs on its field steps only) */
     const pblock pb = s->mpm->pb[k];
     pb_partial *pp = &s->mpm->partial[k];
     /* the next sort's keys (mpm_sort); a periodic scene wraps after G2P and files its particles there */
@@ -667,9 +676,9 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             if (Tcol[i] > Tmax[i]) Tmax[i] = Tcol[i];
             if (Gcol) { /* CO2 over the step, temperature moving linearly from T0 to T1 (§5.4) */
                 const material_slot *gm = &s->mats.slot[mat[i]];
-                Gcol[i] += gas_moles_step(T0, Tcol[i], dt, gm->core[CP_GAS_RATE], gm->params[gm->density_index],
+                Gcol[i] += gas_moles_step(T0, Tcol[i], fdt, gm->core[CP_GAS_RATE], gm->params[gm->density_index],
                                           gm->core[CP_REACTION_T], gm->core[CP_REACTION_WIDTH]);
-                if (vent) Gcol[i] *= gas_vent_factor(s, i, dt); /* open surface pores lose their CO2 (gas.c) */
+                if (vent) Gcol[i] *= gas_vent_factor(s, i, fdt); /* open surface pores lose their CO2 (gas.c) */
             }
         }
         if (flags && (flags[i] & PF_FIXED)) { /* a pinned particle keeps its place */
@@ -776,13 +785,13 @@ static const block_fn g2p_two_fns[3][2] = {{g2p_two_00, g2p_two_01}, {g2p_two_10
  * is one more channel gathered per node (0.15M of the 2D dough's 18.4M
  * instructions a step, callgrind). */
 static int g2p_heat(const hearth_scene *s) {
-    if (!thermal_active(s)) return 0;
+    if (!heat_now(s)) return 0;
     return s->def.heat_flip != 1.0 || s->heat.nfix > 0 ? 2 : 1;
 }
 
 static block_fn g2p_fn(const hearth_scene *s) {
-    if (s->def.two_field) return g2p_two_fns[g2p_heat(s)][water_active(s)];
-    return g2p_fns[s->g.dim == 3][g2p_heat(s)][water_active(s)];
+    if (s->def.two_field) return g2p_two_fns[g2p_heat(s)][water_now(s)];
+    return g2p_fns[s->g.dim == 3][g2p_heat(s)][water_now(s)];
 }
 
 /* G2P's blocks for the team of the enclosing region (one thread outside one);
@@ -981,7 +990,7 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
 
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err) {
     HEARTH_ASSERT(s->ps.t2 == (s->g.dim == 2)); /* P2G and G2P read 2D's C and F as 2x2 blocks (scene.c sets it) */
-    int heat = thermal_active(s), water = water_active(s);
+    int heat = heat_now(s), water = water_now(s);
     const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
     int usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
     hearth_status st;
@@ -999,11 +1008,11 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     }
     if (!sorted && (st = mpm_sort(s, err))) return st;
     if (mixing_active(s) && (st = mixing_update(s, err))) return st;
-    heat = thermal_active(s), water = water_active(s); /* as the mixing left them */
+    heat = heat_now(s), water = water_now(s); /* as the mixing left them */
     usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
-    if (wrap && (heat || water))
+    if (wrap && (thermal_active(s) || water_active(s)))
         return err_set(err, HEARTH_ERR_PARAM, "scene: periodic axes (periodic_%c) do not carry %s yet; use a closed box",
-                       "xyz"[s->def.periodic[0] ? 0 : s->def.periodic[1] ? 1 : 2], heat ? "heat" : "water");
+                       "xyz"[s->def.periodic[0] ? 0 : s->def.periodic[1] ? 1 : 2], thermal_active(s) ? "heat" : "water");
     if (s->def.two_field) { /* 2D, one rank, no periodic axis (scene.c's check) */
         for (int c = 0; c < s->ncol; c++)
             if (s->cols[c].mode == HEARTH_STICKY)
@@ -1022,20 +1031,21 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     if ((st = mpm_ranks_sum_grid(s, err))) return st;
     if (wrap) mpm_periodic_fold(s, 0);
     if (heat || water) {
+        const double fdt = field_dt(s, dt); /* the fields' time: their cycle's steps together (field_clock.c) */
         if ((st = boundary_find(s, err))) return st;
         if (heat && (st = thermal_prepare(s, err))) return st;
         if (water) water_prepare(s);
         /* L theta^n and the heat sources, the water flux and evaporation: one pass */
         /* forward Euler needs only L theta^n - b, so the sources go into CH_R too (CH_B stays 0) */
         const transport_pass tp = {.heat_in = heat ? CH_T : -1, .heat_out = CH_R, .heat_src = s->def.heat_implicit ? CH_B : CH_R,
-                                   .water = water, .dt = dt};
+                                   .water = water, .dt = fdt};
         transport_apply(s, &tp);
-        if (water) water_face_flux(s, dt);
+        if (water) water_face_flux(s, fdt);
         if (heat) thermal_contact(s);
         /* MPI slabs: the scatters' halo shares to their owners and back (mpm_ranks_fields.c) */
         const int sums[3] = {CH_R, CH_B, CH_DMW};
         if ((st = mpm_ranks_fields_sum(s, heat ? sums : sums + 2, (heat ? 2 : 0) + (water ? 1 : 0), err))) return st;
-        if (heat && (st = thermal_finish(s, dt, err))) return st;
+        if (heat && (st = thermal_finish(s, fdt, err))) return st;
         mpm_ranks_fields_clear(s);
     }
     if (s->def.two_field) mpm_two_field_split(s);
