@@ -30,7 +30,7 @@
  * with no finite limit (no conduction, boundary or water: nothing sets a cycle).
  * Safety: dt can grow between the steps of a cycle (dt_scale recovers x1.25 a
  * step); the closing rule looks one step ahead at the current dt, and the
- * factor 2 of FIELD_SAFETY covers growth up to half the limit in one step. */
+ * factor 10 of FIELD_SAFETY covers growth up to 0.9 of the limit in one step. */
 #include "field_clock.h"
 
 #include <math.h>
