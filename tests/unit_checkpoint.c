@@ -667,7 +667,6 @@ static hearth_scene *vent_scene(double gas_vent) {
     d.oven_beta = 10;
     d.gas_vent = gas_vent;
     d.vent_porosity = 0.7;
-    d.field_steps = 1; /* the fields every step: an automatic cycle would not close (and vent) within these 60 steps */
     hearth_scene *s = fx_scene_def(&d);
     if (!s) return NULL;
     const char *nm[] = {"E", "nu", "tau_y", "eta", "density", "porosity", "gas_rate", "reaction_temperature",

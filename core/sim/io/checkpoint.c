@@ -26,7 +26,7 @@
  * checksum over the particles only, plugins by path) and version 3 are refused
  * by version; version 4 is read with the DEF fields version 5 appended at their
  * defaults (its writer refused scenes with any other value); versions 4 and 5
- * without version 6's field_steps (automatic) and fields' cycle (a new one). */
+ * without version 6's field_steps (1, every step: their bits) and fields' cycle (a new one). */
 #include "checkpoint.h"
 
 #include <errno.h>

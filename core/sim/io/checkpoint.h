@@ -13,7 +13,7 @@
  *        two_field, two_field_friction, gas_vent and vent_porosity to the DEF section.
  *        Version 4 files are read with those at their defaults, the values every
  *        version 4 file had: its writer refused any other; 6 appended field_steps to DEF and
- *        the fields' cycle to CLK, read from 4 and 5 as automatic and a new cycle)
+ *        the fields' cycle to CLK, read from 4 and 5 as 1, every step, and a new cycle)
  *    12  u32 byte-order mark 0x01020304
  *    16  u32 sizeof(double) (8)
  *    20  u32 header size (40)
