@@ -97,6 +97,9 @@ static int l_stats(lua_State *L) {
     lua_pushnumber(L, st.water_mass); lua_setfield(L, -2, "water_mass");
     lua_pushnumber(L, st.water_lost); lua_setfield(L, -2, "water_lost");
     lua_pushnumber(L, st.oven_heat_in); lua_setfield(L, -2, "oven_heat_in");
+    lua_pushnumber(L, st.field_limit); lua_setfield(L, -2, "field_limit");
+    lua_pushnumber(L, st.field_dt); lua_setfield(L, -2, "field_dt");
+    lua_pushinteger(L, st.field_cycle); lua_setfield(L, -2, "field_cycle");
     /* the live fields as a list */
     lua_newtable(L);
     const char *f = hearth_scene_fields(u->s);

@@ -555,16 +555,21 @@ TEST(checkpoint_alloc_failures) {
     free(img);
 }
 
-/* The DEF fields version 5 appended sit last in the section, just before the
- * clocks' tag: offsets from "CLK " back (checkpoint.h's layout). */
+/* The DEF fields version 5 appended sit last in the section but for version
+ * 6's field_steps, just before the clocks' tag: offsets from "CLK " back, the
+ * field_steps beyond them (checkpoint.h's layout). Version 6 also appended the
+ * fields' cycle to the clocks (V6_CLK_BYTES after their V5_CLK_BYTES). */
 #define V5_DEF_BYTES (8 + 8 + 3 * 4 + 4 + 8 + 8 + 8)
+#define V6_DEF_BYTES 4
+#define V5_CLK_BYTES (4 + 3 * 8 + 8 + 4 + 5 * 8 + 8 + 8 + 4 + 4 + 8)
+#define V6_CLK_BYTES (8 + 4 + 8 + 4)
 static size_t clk_at(const uint8_t *b, size_t n) {
     const size_t at = find(b, n, "CLK ", 4);
-    CHECK(at != (size_t)-1 && at >= CK_HEADER_SIZE + V5_DEF_BYTES);
+    CHECK(at != (size_t)-1 && at >= CK_HEADER_SIZE + V5_DEF_BYTES + V6_DEF_BYTES);
     return at;
 }
 static void set_before_clk(uint8_t *b, size_t n, size_t back, const void *v, size_t len) {
-    memcpy(b + clk_at(b, n) - back, v, len);
+    memcpy(b + clk_at(b, n) - V6_DEF_BYTES - back, v, len);
 }
 static void damping_nan(uint8_t *b, size_t n) { set_before_clk(b, n, V5_DEF_BYTES, &(double){NAN}, 8); }
 static void boiling_cold(uint8_t *b, size_t n) { set_before_clk(b, n, V5_DEF_BYTES - 8, &(double){-300}, 8); }
@@ -596,7 +601,7 @@ TEST(checkpoint_v5_def_fields_refused) {
 }
 
 /* A version 4 file (version 5's layout without the DEF fields 5 appended,
- * rebuilt here from a new save) still loads, those fields at their defaults,
+ * rebuilt here from a new save without version 6's fields) still loads, those fields at their defaults,
  * and continues as the scene it was saved from; version 3 is refused by
  * version (docs/checkpoints.md). */
 TEST(checkpoint_v4_reads_at_defaults) {
@@ -605,10 +610,13 @@ TEST(checkpoint_v4_reads_at_defaults) {
     uint8_t *img = save_image(s, &n);
     CHECK(img != NULL);
     if (!img || !s) return;
-    const size_t clk = clk_at(img, n), m = n - V5_DEF_BYTES;
+    /* the DEF fields 5 and 6 appended and the clocks' version 6 tail cut out */
+    const size_t clk = clk_at(img, n), cut = V5_DEF_BYTES + V6_DEF_BYTES, tail = clk + 4 + V5_CLK_BYTES;
+    const size_t m = n - cut - V6_CLK_BYTES;
     uint8_t *b = malloc(m);
-    memcpy(b, img, clk - V5_DEF_BYTES);
-    memcpy(b + clk - V5_DEF_BYTES, img + clk, n - clk);
+    memcpy(b, img, clk - cut);
+    memcpy(b + clk - cut, img + clk, tail - clk);
+    memcpy(b + tail - cut, img + tail + V6_CLK_BYTES, n - tail - V6_CLK_BYTES);
     const uint32_t v4 = 4;
     memcpy(b + 8, &v4, 4);
     ck_reseal(b, m);
@@ -638,7 +646,7 @@ TEST(checkpoint_v4_reads_at_defaults) {
     ck_reseal(b, m);
     CHECK(hearth_scene_load_mem(b, m, "v3.ck", &err) == NULL);
     printf("  %s\n", err.msg);
-    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 5 only");
+    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 6 only");
     free(b);
     free(img);
     hearth_scene_destroy(s);

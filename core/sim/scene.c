@@ -39,6 +39,7 @@
 #include "mixing.h"
 #include "ranks.h"
 #include "mpm.h"
+#include "field_clock.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -681,6 +682,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             collider_update_bounds(&s->cols[c], 2.0 * s->def.dx);
         }
         step_report rep;
+        field_clock_plan(s, dt); /* whether this step carries the fields, and over what time */
         hearth_status st = s->solver->step(s, dt, &rep, err);
         if (st) return st;
         if (!guard_check(s, &rep, dt, speed_before)) {
@@ -699,6 +701,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             if (s->def.browning) browning_step(s, dt); /* hearth_scene_create made its columns */
             if (water_active(s) && (s->ps.enabled & (1u << PC_DRIED))) water_dried_step(s); /* a crust stays dry */
             if (thermal_active(s)) thermal_step_stands(&s->heat);
+            field_clock_stands(s, dt);
             if (s->dt_scale < 1) s->dt_scale = fmin(1.0, s->dt_scale * 1.25);
             return HEARTH_OK;
         }
@@ -796,6 +799,9 @@ void hearth_scene_stats(const hearth_scene *s, hearth_stats *st) {
     st->wave_speed = s->c_max;
     st->out_of_domain = s->out_of_domain;
     st->rollbacks = s->rollbacks;
+    st->field_limit = field_clock_limit(s);
+    st->field_dt = s->field_dt_last;
+    st->field_cycle = s->field_cycle_last;
     st->guard = s->guard;
     snprintf(st->diagnosis, sizeof st->diagnosis, "%s", s->guard == HEARTH_GUARD_OK ? "" : s->diagnosis);
     st->grid_blocks = mpm_ranks_blocks(s);

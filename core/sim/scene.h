@@ -76,6 +76,10 @@ struct hearth_scene {
     uint64_t rng;
     int next_id;
     int nbodies;
+    /* the fields' clock (fields/field_clock.c): the time and steps since the last field update; this
+     * step's plan (field_skip: no field update; else over field_dt, 0 meaning dt); the last update's (stats) */
+    double field_acc, field_dt, field_dt_last;
+    int field_phase, field_cycle_last, field_skip;
 
     particles ps;
     grid g;

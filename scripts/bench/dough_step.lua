@@ -8,7 +8,7 @@
 -- fields, and the ratios: the median over the rounds of each round's ratio,
 -- and their range. Timings are CPU seconds (os.clock).
 local h = require "hearth"
-local P = h.params { dim = 2, cells = 64, steps = 200, rounds = 5, only = "" }
+local P = h.params { dim = 2, cells = 64, steps = 200, rounds = 5, only = "", cycle = false }
 local d3 = P.dim == 3
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
@@ -36,7 +36,13 @@ local dough = h.material("cam_clay_dough", h.library.paper.cookie)
 if P.only ~= "" then
   local pick = { elastic = { elastic, false }, fields = { elastic_fields, true }, dough = { dough, true } }
   local m = pick[P.only] or error("only: elastic, fields or dough, not '" .. P.only .. "'")
-  timed(scene(m[1], m[2]))
+  local s = scene(m[1], m[2])
+  if P.cycle then -- the steps between the fields' updates (core/sim/fields/field_clock.c), for the average
+    repeat s:step(1) until s:stats().field_cycle > 0 or s:stats().step > 100000
+    print(("field cycle %d steps"):format(s:stats().field_cycle))
+    return
+  end
+  timed(s)
   return
 end
 

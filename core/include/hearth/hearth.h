@@ -247,6 +247,7 @@ typedef struct hearth_scene_def {
     double two_field_friction; ///< with two_field: Coulomb coefficient between the two fields where they press together (0 = frictionless). Default 0
     double gas_vent;         ///< m/s: CO2 leaves an air-boundary particle whose pores are open (porosity >= vent_porosity) at dn^g/dt = -gas_vent S_p / V_p n^g (MPM; beyond Ding et al.; fields/gas.c). Default 0 = none
     double vent_porosity;    ///< with gas_vent: the gas porosity at which a surface particle's pores open to the air. Default 0.7
+    int field_steps;         ///< MPM heat, water and CO2 update on the grid every k-th step over the k steps' time (fields/field_clock.c): 1 = every step (single rate, default), 0 = k automatic from the fields' explicit limit, k = every k-th
 } hearth_scene_def;
 
 /// Latent heat of vaporisation of water near 100 degC (J/kg): 2257 kJ/kg at
@@ -439,6 +440,9 @@ typedef struct hearth_stats {
     double water_mass;     ///< water in the particles (kg, or kg/m in 2D); 0 without water
     double water_lost;     ///< water that left through the boundary so far (kg, or kg/m in 2D); negative if gained
     double oven_heat_in;   ///< heat in through the oven's air boundary so far (J, or J/m in 2D); tallied only with latent_heat on, else 0
+    double field_limit;    ///< the fields' own explicit step limit (s: conduction, boundary, latent sink, water); infinite without them or with implicit heat
+    double field_dt;       ///< the time the last field update covered (s); 0 before the first
+    int field_cycle;       ///< the steps the last field update covered (1 = single rate)
 } hearth_stats;
 /// The scene's figures. Over MPI ranks with the slabs kept between step calls
 /// (hearth_scene_keep_slabs) and heat or water live, the particle sums are added

@@ -25,7 +25,8 @@
  * can carry the size and CRC, then writes it atomically. Version 2 files (a
  * checksum over the particles only, plugins by path) and version 3 are refused
  * by version; version 4 is read with the DEF fields version 5 appended at their
- * defaults (its writer refused scenes with any other value). */
+ * defaults (its writer refused scenes with any other value); versions 4 and 5
+ * without version 6's field_steps (1, every step: their bits) and fields' cycle (a new one). */
 #include "checkpoint.h"
 
 #include <errno.h>
@@ -44,6 +45,7 @@
 #include "scene.h"
 #include "solver.h"
 #include "shapes.h"
+#include "field_clock.h"
 
 /* Limits a valid checkpoint stays far inside; a count above one is refused
  * before anything is allocated for it. */
@@ -233,6 +235,8 @@ static void put_def(ck_out *o, const hearth_scene_def *d) {
     put_f64(o, d->two_field_friction);
     put_f64(o, d->gas_vent);
     put_f64(o, d->vent_porosity);
+    /* version 6: the fields' clock (fields/field_clock.c) */
+    put_i32(o, d->field_steps);
 }
 
 static void put_clocks(ck_out *o, const hearth_scene *s) {
@@ -253,6 +257,11 @@ static void put_clocks(ck_out *o, const hearth_scene *s) {
     put_i32(o, s->next_id);
     put_i32(o, s->nbodies);
     put_f64(o, s->water.lost);
+    /* version 6: the fields' cycle, so a restore mid-cycle closes it on the same step over the same time */
+    put_f64(o, s->field_acc);
+    put_i32(o, s->field_phase);
+    put_f64(o, s->field_dt_last);
+    put_i32(o, s->field_cycle_last);
 }
 
 static void put_materials(ck_out *o, const hearth_scene *s) {
@@ -440,17 +449,27 @@ static void get_def(ck_cursor *c, hearth_scene_def *d, uint32_t version) {
         get_real_setting(c, d, "gas_vent");
         get_real_setting(c, d, "vent_porosity");
     }
+    if (version >= 6) {
+        d->field_steps = get_i32(c);
+        if (!c->bad && (d->field_steps < 0 || d->field_steps > FIELD_MAX_CYCLE)) {
+            snprintf(c->msg, sizeof c->msg, "scene: field_steps = %d is outside its valid range [0, %d]", (int)d->field_steps,
+                     FIELD_MAX_CYCLE);
+            ck_fail(c, c->msg);
+        }
+    }
     d->solver = HEARTH_SOLVER_MPM; /* the only solver whose table says can_checkpoint (solver.h) */
 }
 
 typedef struct ck_clocks {
     int32_t guard, rollbacks, next_id, nbodies;
     double t, dt_last, dt_scale, max_speed, c_max, kinetic, kinetic_peak, cfl_last, water_lost;
+    double field_acc, field_dt_last; /* version 6; 0 before: a cycle that starts at the restore */
+    int32_t field_phase, field_cycle_last;
     int64_t step, ood;
     uint64_t rng;
 } ck_clocks;
 
-static void get_clocks(ck_cursor *c, ck_clocks *k) {
+static void get_clocks(ck_cursor *c, ck_clocks *k, uint32_t version) {
     get_tag(c, "CLK ", "the clocks section is missing");
     k->guard = get_i32(c);
     if (k->guard < HEARTH_GUARD_OK || k->guard > HEARTH_GUARD_STOPPED) ck_fail(c, "guard state out of range [0, 2]");
@@ -479,6 +498,18 @@ static void get_clocks(ck_cursor *c, ck_clocks *k) {
     k->nbodies = get_i32(c);
     if (k->next_id < 0 || k->nbodies < 0) ck_fail(c, "clock: negative particle id or body count");
     k->water_lost = get_finite(c, "clock: water lost is not finite");
+    k->field_acc = k->field_dt_last = 0;
+    k->field_phase = k->field_cycle_last = 0;
+    if (version >= 6) {
+        k->field_acc = get_finite(c, "clock: the fields' cycle time is not finite");
+        k->field_phase = get_i32(c);
+        k->field_dt_last = get_finite(c, "clock: the last field step is not finite");
+        k->field_cycle_last = get_i32(c);
+        /* a negative time or phase would never close the cycle */
+        if (!(k->field_acc >= 0 && k->field_dt_last >= 0) || k->field_phase < 0 || k->field_phase >= FIELD_MAX_CYCLE ||
+            k->field_cycle_last < 0 || k->field_cycle_last > FIELD_MAX_CYCLE)
+            ck_fail(c, "clock: the fields' cycle is out of range (time >= 0, steps in [0, 4096])");
+    }
 }
 
 /* A refusal: the file named, then what is wrong. Frees s. */
@@ -740,6 +771,10 @@ static void set_clocks(hearth_scene *s, const ck_clocks *k) {
     s->next_id = k->next_id;
     s->nbodies = k->nbodies;
     water_restore_lost(&s->water, k->water_lost);
+    s->field_acc = k->field_acc;
+    s->field_phase = k->field_phase;
+    s->field_dt_last = k->field_dt_last;
+    s->field_cycle_last = k->field_cycle_last;
 }
 
 hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name, hearth_error *err) {
@@ -785,7 +820,7 @@ hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name
     hearth_scene *s = hearth_scene_create(&d, err); /* checks every value and the memory it needs */
     if (!s) return refuse_at(NULL, err, name, &c, "scene definition");
     ck_clocks k;
-    get_clocks(&c, &k);
+    get_clocks(&c, &k, version);
     if (c.bad) return refuse_at(s, err, name, &c, "clocks");
     s->nbodies = k.nbodies; /* particle body ids are checked against it */
     if (get_materials(&c, s, name, err)) return refuse_at(s, err, name, &c, "materials");

@@ -2,17 +2,18 @@
  * shapes.c, the unit tests and the fuzz target need: the bounds-checked read
  * cursor, the header layout, and ck_reseal.
  *
- * Layout of version 5 (native byte order and double width, both recorded and
+ * Layout of version 6 (native byte order and double width, both recorded and
  * checked; every count is unsigned 32-bit, every string a u32 length then its
  * bytes without a terminator):
  *
  *   header, 40 bytes:
  *     0  "HEARTHCK"
- *     8  u32 version (5; 4 added the humid oven, wet colliders' beta_water, held temperatures,
+ *     8  u32 version (6; 4 added the humid oven, wet colliders' beta_water, held temperatures,
  *        latent_heat, browning and its scale; 5 appended damping, boiling_point, periodic,
  *        two_field, two_field_friction, gas_vent and vent_porosity to the DEF section.
  *        Version 4 files are read with those at their defaults, the values every
- *        version 4 file had: its writer refused any other)
+ *        version 4 file had: its writer refused any other; 6 appended field_steps to DEF and
+ *        the fields' cycle to CLK, read from 4 and 5 as 1, every step, and a new cycle)
  *    12  u32 byte-order mark 0x01020304
  *    16  u32 sizeof(double) (8)
  *    20  u32 header size (40)
@@ -22,8 +23,10 @@
  *   sections, each opened by a 4-byte tag:
  *    "DEF " the scene definition (put_def in checkpoint.c); version 5 appends
  *           f64 damping, f64 boiling_point, i32 periodic[3], i32 two_field,
- *           f64 two_field_friction, f64 gas_vent, f64 vent_porosity
- *    "CLK " i32 guard state, then the clocks and the jitter generator
+ *           f64 two_field_friction, f64 gas_vent, f64 vent_porosity; version 6
+ *           i32 field_steps
+ *    "CLK " i32 guard state, then the clocks and the jitter generator; version 6 appends
+ *           f64 the fields' cycle time, i32 its steps, f64 and i32 the last field step's
  *    "MATS" u32 count; per material: name, u32 ABI, u64 schema hash,
  *           u32 nparams, f64 params, f64 core params, u32 curves, curves (each: u32 param,
  *           u32 points, u32 flags: bit 0 irreversible, bit 1 a moisture curve; f64 x, f64 values)
@@ -39,7 +42,7 @@
 #include <stdint.h>
 
 #define CK_MAGIC "HEARTHCK"
-#define CK_VERSION 5u
+#define CK_VERSION 6u
 /// Oldest version read: a version 4 file is version 5's layout without the
 /// DEF fields version 5 appended.
 #define CK_VERSION_MIN 4u

@@ -74,6 +74,13 @@
 
 #define FORCE_INLINE static inline __attribute__((always_inline))
 
+/* Whether this step updates heat and water on the grid, and over what time:
+ * the fields' clock (fields/field_clock.c) skips them on most steps of a
+ * multirate cycle; the particles' temperature, water and CO2 still ride along. */
+static inline int heat_now(const hearth_scene *s) { return thermal_active(s) && !s->field_skip; }
+static inline int water_now(const hearth_scene *s) { return water_active(s) && !s->field_skip; }
+static inline double field_dt(const hearth_scene *s, double dt) { return s->field_dt > 0 ? s->field_dt : dt; }
+
 /* two doubles, one SSE2 register: 3D P2G's scatter and G2P's sums run in pairs of lanes */
 typedef double v2d __attribute__((vector_size(16)));
 
@@ -157,7 +164,8 @@ enum { P2G_GX = P2G_NCH, P2G_GY, P2G_BM, P2G_BX, P2G_BY, P2G_NCH_TWO };
 _Static_assert(P2G_NCH_TWO * GRID_T * GRID_T <= P2G_NCH * GRID_T * GRID_T * GRID_T, "2D's two_field tile fits");
 static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T, CH_MW, CH_SW, CH_CG_R};
 
-/* D (2 or 3), HEAT (temperature live), WATER (water live) and MIRROR (a
+/* D (2 or 3), HEAT (0: no temperature; 1: the material reads it; 2: and the heat channels scatter, a field
+ * step of field_clock.c), WATER (water live and a field step) and MIRROR (a
  * sticky collider: mpm_p2g_mirror) are compile-time constants in each
  * instantiation below, so a momentum-only scene runs the momentum-only loops
  * and a scene without sticky colliders carries no test for them (a runtime
@@ -167,6 +175,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     grid *g = &s->g;
     particles *ps = &s->ps;
     mpm_state *st = s->mpm;
+    const int HS = HEAT == 2; /* the heat channels scatter (a field step) */
     const pblock pb = st->pb[k];
     pb_partial *pp = &st->partial[k];
     double *vol = st->vol; /* loaded once: the plugin call in the loop would otherwise reload it */
@@ -178,9 +187,9 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     const int near_face = MIRROR ? mpm_block_near_sticky(s, D, org) : 0;
     if (STORE) st->pbof[pb.block] = k; /* for the gather (mpm_p2g_gather) */
     memset(tile, 0, sizeof(double) * GRID_NCH_MOMENTUM * (size_t)TN);
-    if (HEAT) memset(tile + P2G_HC * TN, 0, sizeof(double) * 2 * (size_t)TN);
+    if (HS) memset(tile + P2G_HC * TN, 0, sizeof(double) * 2 * (size_t)TN);
     if (WATER) memset(tile + P2G_MW * TN, 0, sizeof(double) * 2 * (size_t)TN);
-    if (HEAT || WATER) memset(tile + P2G_V * TN, 0, sizeof(double) * (size_t)TN);
+    if (HS || WATER) memset(tile + P2G_V * TN, 0, sizeof(double) * (size_t)TN);
     const double *dgrad = TWO ? st->dgrad : NULL; /* two_field: each particle's damage gradient (mpm_two_field.c) */
     if (TWO) {
         memset(tile + P2G_BM * TN, 0, sizeof(double) * 3 * (size_t)TN);
@@ -196,6 +205,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     const double *X = pcold(ps, PC_X), *V = pcold(ps, PC_V), *M = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
     const double *Cc = pcold(ps, PC_C);
     const int *mat = pcoli(ps, PC_MAT);
+    /* the material reads the temperature every step (HEAT 1 or 2), the heat channels scatter only on a field step
+     * (HEAT 2, HS): the fields' clock, field_clock.c */
     const double *Tcol = HEAT ? pcold(ps, PC_TEMPERATURE) : NULL;
     const double *Gcol = ps->enabled & (1u << PC_GAS) ? pcold(ps, PC_GAS) : NULL;
     const double *Wcol = ps->enabled & (1u << PC_WATER) ? pcold(ps, PC_WATER) : NULL;
@@ -238,9 +249,9 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
         }
         const double mv0 = m * v[0], mv1 = m * v[1], mv2 = m * v[2];
         /* heat (eq. 17, weighted by heat capacity m alpha so energy is conserved across materials) */
-        const double hc = HEAT ? m * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = HEAT ? hc * Tcol[i] : 0.0;
+        const double hc = HS ? m * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = HS ? hc * Tcol[i] : 0.0;
         const double vi = J * V0[i];
-        if (HEAT || WATER) vol[i] = vi; /* for transport.c, water_take and the volume channel */
+        if (HS || WATER) vol[i] = vi; /* for transport.c, water_take and the volume channel */
         /* water mass and capacity rho_0^w J V_0 (eq. 15, 18) */
         const double mw = WATER ? Wcol[i] : 0.0, cap = WATER ? s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * J * V0[i] : 0.0;
         /* the stencil's corner in the tile: the 3^dim nodes then sit at constant offsets from it */
@@ -261,9 +272,9 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                     tp[t] += wab * m;
                     tp[TN + t] += wab * (mv0 + Q[0] * d0 + Q[1] * d1);
                     tp[2 * TN + t] += wab * (mv1 + Q[3] * d0 + Q[4] * d1);
-                    if (HEAT) p2g_add2(th + 2 * t, (v2d){wab, wab} * hp);
+                    if (HS) p2g_add2(th + 2 * t, (v2d){wab, wab} * hp);
                     if (WATER) p2g_add2(tw + 2 * t, (v2d){wab, wab} * wp);
-                    if (HEAT || WATER) tp[P2G_V * TN + t] += vab;
+                    if (HS || WATER) tp[P2G_V * TN + t] += vab;
                     /* the second field's particles at this node scatter the same terms into its channels too */
                     if (TWO && mpm_two_field_second(tp[P2G_GX * TN + t], tp[P2G_GY * TN + t], dgrad[2 * i], dgrad[2 * i + 1])) {
                         tp[P2G_BM * TN + t] += wab * m;
@@ -288,12 +299,12 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                     tp[TN + t0 + 2] += wt2 * (s0 + Q[2] * d2_2);
                     tp[2 * TN + t0 + 2] += wt2 * (s1 + Q[5] * d2_2);
                     tp[3 * TN + t0 + 2] += wt2 * (s2 + Q[8] * d2_2);
-                    for (int c = 0; c < (HEAT || WATER ? 3 : 0); c++) {
+                    for (int c = 0; c < (HS || WATER ? 3 : 0); c++) {
                         const double wt = wab * w[2][c];
                         const int t = t0 + c;
-                        if (HEAT) p2g_add2(th + 2 * t, (v2d){wt, wt} * hp);
+                        if (HS) p2g_add2(th + 2 * t, (v2d){wt, wt} * hp);
                         if (WATER) p2g_add2(tw + 2 * t, (v2d){wt, wt} * wp);
-                        if (HEAT || WATER) tp[P2G_V * TN + t] += vab * w[2][c];
+                        if (HS || WATER) tp[P2G_V * TN + t] += vab * w[2][c];
                     }
                 }
             }
@@ -321,11 +332,11 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 int l;
                 double *node = grid_tile_node(g, D, bc, a, b, c, &l);
                 for (int ch = 0; ch < GRID_NCH_MOMENTUM; ch++) node[ch * NPB + l] += tile[ch * TN + t];
-                if (HEAT) /* the interleaved pairs */
+                if (HS) /* the interleaved pairs */
                     for (int ch = 0; ch < 2; ch++) node[p2g_channel[P2G_HC + ch] * NPB + l] += tile[P2G_HC * TN + 2 * t + ch];
                 if (WATER)
                     for (int ch = 0; ch < 2; ch++) node[p2g_channel[P2G_MW + ch] * NPB + l] += tile[P2G_MW * TN + 2 * t + ch];
-                if (HEAT || WATER) node[CH_CG_R * NPB + l] += tile[P2G_V * TN + t];
+                if (HS || WATER) node[CH_CG_R * NPB + l] += tile[P2G_V * TN + t];
                 if (TWO)
                     for (int ch = 0; ch < 3; ch++) node[(CH_TF_M + ch) * NPB + l] += tile[(P2G_BM + ch) * TN + t];
             }
@@ -336,25 +347,35 @@ typedef void (*block_fn)(hearth_scene *, int, double, double *);
 #define BLOCK_FN(kind, D, H, W) \
     static void kind##_##D##H##W(hearth_scene *s, int k, double dt, double *tile) { kind##_block(s, D, H, W, 0, k, dt, tile); }
 /* the stored-tile P2G of step_team's gather path (momentum only), indexed [sticky][dim == 3] */
-#define P2G_STORE_FN(D, M) \
-    static void p2g_store_##D##M(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, D, 0, 0, M, 0, 1, k, dt, tile); }
-P2G_STORE_FN(2, 0) P2G_STORE_FN(3, 0) P2G_STORE_FN(2, 1) P2G_STORE_FN(3, 1)
-static const block_fn p2g_store_fns[2][2] = {{p2g_store_20, p2g_store_30}, {p2g_store_21, p2g_store_31}};
+#define P2G_STORE_FN(D, M, H) \
+    static void p2g_store_##D##M##H(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, D, H, 0, M, 0, 1, k, dt, tile); }
+/* [temperature: a heat scene's step between its field steps][sticky][dim == 3] */
+P2G_STORE_FN(2, 0, 0) P2G_STORE_FN(3, 0, 0) P2G_STORE_FN(2, 1, 0) P2G_STORE_FN(3, 1, 0)
+P2G_STORE_FN(2, 0, 1) P2G_STORE_FN(3, 0, 1) P2G_STORE_FN(2, 1, 1) P2G_STORE_FN(3, 1, 1)
+static const block_fn p2g_store_fns[2][2][2] = {{{p2g_store_200, p2g_store_300}, {p2g_store_210, p2g_store_310}},
+                                                {{p2g_store_201, p2g_store_301}, {p2g_store_211, p2g_store_311}}};
 /* P2G's, indexed [sticky][dim == 3][heat][water] */
 #define P2G_FN(D, H, W, M) \
     static void p2g_##D##H##W##M(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, D, H, W, M, 0, 0, k, dt, tile); }
 /* two_field's, 2D without sticky colliders, indexed [heat][water] */
 #define P2G_TWO_FN(H, W) \
     static void p2g_two_##H##W(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 2, H, W, 0, 1, 0, k, dt, tile); }
-P2G_TWO_FN(0, 0) P2G_TWO_FN(0, 1) P2G_TWO_FN(1, 0) P2G_TWO_FN(1, 1)
-static const block_fn p2g_two_fns[2][2] = {{p2g_two_00, p2g_two_01}, {p2g_two_10, p2g_two_11}};
-P2G_FN(2, 0, 0, 0) P2G_FN(2, 0, 1, 0) P2G_FN(2, 1, 0, 0) P2G_FN(2, 1, 1, 0)
-P2G_FN(3, 0, 0, 0) P2G_FN(3, 0, 1, 0) P2G_FN(3, 1, 0, 0) P2G_FN(3, 1, 1, 0)
-P2G_FN(2, 0, 0, 1) P2G_FN(2, 0, 1, 1) P2G_FN(2, 1, 0, 1) P2G_FN(2, 1, 1, 1)
-P2G_FN(3, 0, 0, 1) P2G_FN(3, 0, 1, 1) P2G_FN(3, 1, 0, 1) P2G_FN(3, 1, 1, 1)
-static const block_fn p2g_fns[2][2][2][2] = {
-    {{{p2g_2000, p2g_2010}, {p2g_2100, p2g_2110}}, {{p2g_3000, p2g_3010}, {p2g_3100, p2g_3110}}},
-    {{{p2g_2001, p2g_2011}, {p2g_2101, p2g_2111}}, {{p2g_3001, p2g_3011}, {p2g_3101, p2g_3111}}}};
+P2G_TWO_FN(0, 0) P2G_TWO_FN(0, 1) P2G_TWO_FN(1, 0) P2G_TWO_FN(1, 1) P2G_TWO_FN(2, 0) P2G_TWO_FN(2, 1)
+static const block_fn p2g_two_fns[3][2] = {{p2g_two_00, p2g_two_01}, {p2g_two_10, p2g_two_11}, {p2g_two_20, p2g_two_21}};
+P2G_FN(2, 0, 0, 0) P2G_FN(2, 0, 1, 0) P2G_FN(2, 1, 0, 0) P2G_FN(2, 1, 1, 0) P2G_FN(2, 2, 0, 0) P2G_FN(2, 2, 1, 0)
+P2G_FN(3, 0, 0, 0) P2G_FN(3, 0, 1, 0) P2G_FN(3, 1, 0, 0) P2G_FN(3, 1, 1, 0) P2G_FN(3, 2, 0, 0) P2G_FN(3, 2, 1, 0)
+P2G_FN(2, 0, 0, 1) P2G_FN(2, 0, 1, 1) P2G_FN(2, 1, 0, 1) P2G_FN(2, 1, 1, 1) P2G_FN(2, 2, 0, 1) P2G_FN(2, 2, 1, 1)
+P2G_FN(3, 0, 0, 1) P2G_FN(3, 0, 1, 1) P2G_FN(3, 1, 0, 1) P2G_FN(3, 1, 1, 1) P2G_FN(3, 2, 0, 1) P2G_FN(3, 2, 1, 1)
+/* [sticky][dim == 3][heat: p2g_heat][water] */
+static const block_fn p2g_fns[2][2][3][2] = {
+    {{{p2g_2000, p2g_2010}, {p2g_2100, p2g_2110}, {p2g_2200, p2g_2210}},
+     {{p2g_3000, p2g_3010}, {p2g_3100, p2g_3110}, {p2g_3200, p2g_3210}}},
+    {{{p2g_2001, p2g_2011}, {p2g_2101, p2g_2111}, {p2g_2201, p2g_2211}},
+     {{p2g_3001, p2g_3011}, {p2g_3101, p2g_3111}, {p2g_3201, p2g_3211}}}};
+
+/* P2G's heat instantiation: 0 without temperature, 1 when the material reads it but the fields rest this
+ * step (field_clock.c), 2 on a field step: the heat channels scatter too. */
+static int p2g_heat(const hearth_scene *s) { return !thermal_active(s) ? 0 : s->field_skip ? 1 : 2; }
 
 /* P2G's instantiation for this step's scene, and its blocks' partials reset (serial: O(particle blocks)). */
 static block_fn p2g_prepare(hearth_scene *s) {
@@ -362,8 +383,8 @@ static block_fn p2g_prepare(hearth_scene *s) {
     m->sticky_faces = 0;
     for (int c = 0; c < s->ncol; c++) m->sticky_faces |= s->cols[c].mode == HEARTH_STICKY;
     for (int k = 0; k < m->npb; k++) m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
-    if (s->def.two_field) return p2g_two_fns[thermal_active(s)][water_active(s)]; /* 2D, no sticky face (mpm_step) */
-    return p2g_fns[m->sticky_faces][s->g.dim == 3][thermal_active(s)][water_active(s)];
+    if (s->def.two_field) return p2g_two_fns[p2g_heat(s)][water_now(s)]; /* 2D, no sticky face (mpm_step) */
+    return p2g_fns[m->sticky_faces][s->g.dim == 3][p2g_heat(s)][water_now(s)];
 }
 
 /* P2G's colour phases, for the team of the enclosing parallel region (one
@@ -539,6 +560,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     const double *hold_h = HEAT && s->heat.nfix > 0 ? s->heat.hold_h : NULL; /* held temperatures (thermal.c) */
     const double boil = HEAT && WATER && s->def.latent_heat ? s->def.boiling_point : INFINITY; /* no boiling: never passed */
     const int vent = Gcol && s->def.gas_vent > 0 && s->boundary.area; /* boundary.c found the surface this step */
+    const double fdt = field_dt(s, dt); /* the CO2's time: the fields' cycle (HEAT runs on its field steps only) */
     const pblock pb = s->mpm->pb[k];
     pb_partial *pp = &s->mpm->partial[k];
     /* the next sort's keys (mpm_sort); a periodic scene wraps after G2P and files its particles there */
@@ -667,9 +689,9 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             if (Tcol[i] > Tmax[i]) Tmax[i] = Tcol[i];
             if (Gcol) { /* CO2 over the step, temperature moving linearly from T0 to T1 (§5.4) */
                 const material_slot *gm = &s->mats.slot[mat[i]];
-                Gcol[i] += gas_moles_step(T0, Tcol[i], dt, gm->core[CP_GAS_RATE], gm->params[gm->density_index],
+                Gcol[i] += gas_moles_step(T0, Tcol[i], fdt, gm->core[CP_GAS_RATE], gm->params[gm->density_index],
                                           gm->core[CP_REACTION_T], gm->core[CP_REACTION_WIDTH]);
-                if (vent) Gcol[i] *= gas_vent_factor(s, i, dt); /* open surface pores lose their CO2 (gas.c) */
+                if (vent) Gcol[i] *= gas_vent_factor(s, i, fdt); /* open surface pores lose their CO2 (gas.c) */
             }
         }
         if (flags && (flags[i] & PF_FIXED)) { /* a pinned particle keeps its place */
@@ -776,13 +798,13 @@ static const block_fn g2p_two_fns[3][2] = {{g2p_two_00, g2p_two_01}, {g2p_two_10
  * is one more channel gathered per node (0.15M of the 2D dough's 18.4M
  * instructions a step, callgrind). */
 static int g2p_heat(const hearth_scene *s) {
-    if (!thermal_active(s)) return 0;
+    if (!heat_now(s)) return 0;
     return s->def.heat_flip != 1.0 || s->heat.nfix > 0 ? 2 : 1;
 }
 
 static block_fn g2p_fn(const hearth_scene *s) {
-    if (s->def.two_field) return g2p_two_fns[g2p_heat(s)][water_active(s)];
-    return g2p_fns[s->g.dim == 3][g2p_heat(s)][water_active(s)];
+    if (s->def.two_field) return g2p_two_fns[g2p_heat(s)][water_now(s)];
+    return g2p_fns[s->g.dim == 3][g2p_heat(s)][water_now(s)];
 }
 
 /* G2P's blocks for the team of the enclosing region (one thread outside one);
@@ -873,7 +895,7 @@ static void step_team_rest(hearth_scene *s, double dt, const int gather, block_f
 static double step_team(hearth_scene *s, double dt, step_report *rep, const int gather) {
     const block_fn p2g = p2g_prepare(s), g2p = g2p_fn(s);
     mpm_state *m = s->mpm;
-    const block_fn store = p2g_store_fns[m->sticky_faces][s->g.dim == 3];
+    const block_fn store = p2g_store_fns[thermal_active(s)][m->sticky_faces][s->g.dim == 3];
     double vcol2 = 0;
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
@@ -946,7 +968,7 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
     particles *ps = &s->ps;
     m->sticky_faces = 0;
     for (int c = 0; c < s->ncol; c++) m->sticky_faces |= s->cols[c].mode == HEARTH_STICKY;
-    const block_fn g2p = g2p_fn(s), store = p2g_store_fns[m->sticky_faces][s->g.dim == 3];
+    const block_fn g2p = g2p_fn(s), store = p2g_store_fns[thermal_active(s)][m->sticky_faces][s->g.dim == 3];
     /* the tile store in the sort's scratch (mpm_p2g_gather.c), dead once the count (keys in order) or the
      * permutation (out of order) is done, before any tile is kept */
     const size_t room = sizeof(int) * (size_t)m->scratch_cap, have = m->scratch_bytes / sizeof(double);
@@ -981,7 +1003,7 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
 
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err) {
     HEARTH_ASSERT(s->ps.t2 == (s->g.dim == 2)); /* P2G and G2P read 2D's C and F as 2x2 blocks (scene.c sets it) */
-    int heat = thermal_active(s), water = water_active(s);
+    int heat = heat_now(s), water = water_now(s);
     const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
     int usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
     hearth_status st;
@@ -999,11 +1021,11 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     }
     if (!sorted && (st = mpm_sort(s, err))) return st;
     if (mixing_active(s) && (st = mixing_update(s, err))) return st;
-    heat = thermal_active(s), water = water_active(s); /* as the mixing left them */
+    heat = heat_now(s), water = water_now(s); /* as the mixing left them */
     usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
-    if (wrap && (heat || water))
+    if (wrap && (thermal_active(s) || water_active(s)))
         return err_set(err, HEARTH_ERR_PARAM, "scene: periodic axes (periodic_%c) do not carry %s yet; use a closed box",
-                       "xyz"[s->def.periodic[0] ? 0 : s->def.periodic[1] ? 1 : 2], heat ? "heat" : "water");
+                       "xyz"[s->def.periodic[0] ? 0 : s->def.periodic[1] ? 1 : 2], thermal_active(s) ? "heat" : "water");
     if (s->def.two_field) { /* 2D, one rank, no periodic axis (scene.c's check) */
         for (int c = 0; c < s->ncol; c++)
             if (s->cols[c].mode == HEARTH_STICKY)
@@ -1022,20 +1044,21 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     if ((st = mpm_ranks_sum_grid(s, err))) return st;
     if (wrap) mpm_periodic_fold(s, 0);
     if (heat || water) {
+        const double fdt = field_dt(s, dt); /* the fields' time: their cycle's steps together (field_clock.c) */
         if ((st = boundary_find(s, err))) return st;
         if (heat && (st = thermal_prepare(s, err))) return st;
         if (water) water_prepare(s);
         /* L theta^n and the heat sources, the water flux and evaporation: one pass */
         /* forward Euler needs only L theta^n - b, so the sources go into CH_R too (CH_B stays 0) */
         const transport_pass tp = {.heat_in = heat ? CH_T : -1, .heat_out = CH_R, .heat_src = s->def.heat_implicit ? CH_B : CH_R,
-                                   .water = water, .dt = dt};
+                                   .water = water, .dt = fdt};
         transport_apply(s, &tp);
-        if (water) water_face_flux(s, dt);
+        if (water) water_face_flux(s, fdt);
         if (heat) thermal_contact(s);
         /* MPI slabs: the scatters' halo shares to their owners and back (mpm_ranks_fields.c) */
         const int sums[3] = {CH_R, CH_B, CH_DMW};
         if ((st = mpm_ranks_fields_sum(s, heat ? sums : sums + 2, (heat ? 2 : 0) + (water ? 1 : 0), err))) return st;
-        if (heat && (st = thermal_finish(s, dt, err))) return st;
+        if (heat && (st = thermal_finish(s, fdt, err))) return st;
         mpm_ranks_fields_clear(s);
     }
     if (s->def.two_field) mpm_two_field_split(s);

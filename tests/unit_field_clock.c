@@ -1,0 +1,174 @@
+/* unit_field_clock.c: the fields' own clock (fields/field_clock.c, issue 20).
+ * A block in an oven with conduction and leavening: its fields' explicit
+ * limit is about 1600 of its mechanical steps, so the automatic cycle spans
+ * many steps. Each test prints what it measured. */
+#include <math.h>
+#include <string.h>
+
+#include "field_clock.h"
+#include "mpm_fixture.h"
+
+/* 2D, dx 1/32 m; an elastic block 0.3 m square, rho c = 2e4 J/(m^3 K), kappa 30 W/(m K): conduction's limit
+ * rho c dx^2 / (4 kappa) = 0.163 s, the oven's (beta 25) 12.5 s; steps of dt_max 1e-4 s. CO2 from eq. 11. */
+static hearth_scene *oven_block(int field_steps) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 32;
+    d.dt_max = 1e-4;
+    d.oven_temperature = 150;
+    d.oven_beta = 25;
+    d.field_steps = field_steps;
+    hearth_scene *s = fx_scene_def(&d);
+    if (!s) return NULL;
+    const char *nm[] = {"E", "density", "specific_heat", "conductivity", "gas_rate", "reaction_temperature",
+                        "reaction_width", "expansion", "reference_temperature"};
+    const double nv[] = {1e5, 1000, 20, 30, 2.5e-5, 40, 20, 0.1, 20};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 9, &err);
+    if (m < 0) printf("  material: %s\n", err.msg);
+    CHECK(m >= 0);
+    hearth_shape *box = hearth_shape_box((const double[3]){0.5, 0.25, 0}, (const double[3]){0.15, 0.15, 0});
+    hearth_body_def b = hearth_default_body_def();
+    b.shape = box, b.material = m, b.temperature = 20;
+    CHECK(hearth_scene_add_body(s, &b, &err) >= 0);
+    hearth_shape_free(box);
+    return s;
+}
+
+/* Steps until the k-th field update has closed its cycle (at most max steps); returns the steps taken. */
+static long step_to_update(hearth_scene *s, int updates, long max) {
+    hearth_error err;
+    long n = 0;
+    for (int u = 0; u < updates && n < max; n++) {
+        CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+        u += s->field_phase == 0;
+    }
+    return n;
+}
+
+/* The automatic cycle covers at most FIELD_SAFETY of the limit, the time its own steps took, and
+ * more than one step here; a pinned field_steps is obeyed; field_steps = 1 updates every step. */
+TEST(field_clock_cycle_within_limit) {
+    hearth_scene *a = oven_block(0), *p = oven_block(7), *one = oven_block(1);
+    CHECK(a && p && one);
+    if (!a || !p || !one) return;
+    const long n = step_to_update(a, 2, 100000);
+    hearth_stats st;
+    hearth_scene_stats(a, &st);
+    printf("  automatic: %ld steps to the second update; limit %.6g s, dt %.3g s, last update %.6g s over %d steps "
+           "(%.4f of the limit)\n", n, st.field_limit, st.dt, st.field_dt, st.field_cycle, st.field_dt / st.field_limit);
+    CHECK(st.field_cycle > 100);
+    CHECK(n == 2L * st.field_cycle);
+    CHECK(st.field_dt <= FIELD_SAFETY * st.field_limit);
+    CHECK(fabs(st.field_dt - st.field_cycle * st.dt) <= 1e-12 * st.field_dt); /* the cycle's own steps' time */
+    hearth_error err;
+    CHECK(hearth_scene_step(p, 30, &err) == HEARTH_OK && hearth_scene_step(one, 30, &err) == HEARTH_OK);
+    hearth_scene_stats(p, &st);
+    printf("  field_steps = 7: last update over %d steps (%.3g s); phase after 30 steps %d\n", st.field_cycle,
+           st.field_dt, p->field_phase);
+    CHECK(st.field_cycle == 7 && p->field_phase == 30 % 7);
+    hearth_scene_stats(one, &st);
+    printf("  field_steps = 1: last update over %d step (%.3g s)\n", st.field_cycle, st.field_dt);
+    CHECK(st.field_cycle == 1 && st.field_dt == st.dt);
+    hearth_scene_destroy(a);
+    hearth_scene_destroy(p);
+    hearth_scene_destroy(one);
+}
+
+/* Heat taken in, hottest particle and CO2 after three automatic cycles against single rate over the same
+ * steps. The measures: the heat gained relative to itself, the hottest particle's rise, the CO2 made. */
+TEST(field_clock_matches_single_rate) {
+    hearth_scene *a = oven_block(0), *one = oven_block(1);
+    CHECK(a && one);
+    if (!a || !one) return;
+    hearth_stats s0;
+    hearth_scene_stats(a, &s0);
+    const long n = step_to_update(a, 3, 100000);
+    hearth_error err;
+    CHECK(hearth_scene_step(one, (int)n, &err) == HEARTH_OK);
+    hearth_stats sa, s1;
+    hearth_scene_stats(a, &sa);
+    hearth_scene_stats(one, &s1);
+    double ta = -INFINITY, t1 = -INFINITY;
+    for (int i = 0; i < a->ps.n; i++) ta = fmax(ta, pcold(&a->ps, PC_TEMPERATURE)[i]);
+    for (int i = 0; i < one->ps.n; i++) t1 = fmax(t1, pcold(&one->ps, PC_TEMPERATURE)[i]);
+    const double qa = sa.heat_energy - s0.heat_energy, q1 = s1.heat_energy - s0.heat_energy;
+    const double dq = qa / q1 - 1, dT = (ta - t1) / (t1 - 20), dg = sa.gas_moles / s1.gas_moles - 1;
+    printf("  %ld steps (3 cycles of %d), t = %.4g s: heat in %.8g (cycle) vs %.8g J/m (every step), %+.2e; hottest %.6f vs "
+           "%.6f degC (%+.2e of its rise); CO2 %.8g vs %.8g mol/m (%+.2e)\n", n, sa.field_cycle, sa.t, qa, q1, dq, ta, t1,
+           dT, sa.gas_moles, s1.gas_moles, dg);
+    CHECK(sa.t == s1.t && sa.field_cycle > 100 && s1.field_cycle == 1);
+    CHECK(q1 > 0 && t1 > 20 && s1.gas_moles > 0);
+    CHECK(fabs(dq) < 1e-2);
+    CHECK(fabs(dT) < 5e-2); /* the corner particle's FLIP jumps: first order in the update's time */
+    CHECK(fabs(dg) < 1e-3);
+    hearth_scene_destroy(a);
+    hearth_scene_destroy(one);
+}
+
+/* Saved mid-cycle (a checkpoint in memory) and restored, the scene closes its cycle on the same step over the
+ * same time: the same bits as the unbroken run, past the next update. */
+TEST(field_clock_checkpoint_mid_cycle) {
+    hearth_scene *s = oven_block(0);
+    CHECK(s != NULL);
+    if (!s) return;
+    hearth_error err;
+    CHECK(hearth_scene_step(s, 250, &err) == HEARTH_OK);
+    const int phase = s->field_phase;
+    const double acc = s->field_acc;
+    char path[] = "field_clock_mid_cycle.ck";
+    CHECK(hearth_scene_save(s, path, &err) == HEARTH_OK);
+    hearth_scene *r = hearth_scene_load(path, &err);
+    remove(path);
+    if (!r) printf("  load: %s\n", err.msg);
+    CHECK(r != NULL);
+    if (!r) return;
+    CHECK(r->field_phase == phase && r->field_acc == acc);
+    CHECK(hearth_scene_step(s, 200, &err) == HEARTH_OK && hearth_scene_step(r, 200, &err) == HEARTH_OK);
+    hearth_stats st;
+    hearth_scene_stats(r, &st);
+    printf("  saved at step 250, %d steps (%.4g s) into a cycle; 200 steps on: updates every %d steps, hash %016llx "
+           "unbroken, %016llx restored\n", phase, acc, st.field_cycle, (unsigned long long)hearth_scene_hash(s),
+           (unsigned long long)hearth_scene_hash(r));
+    /* an update came between: the cycle closed after st.field_cycle - phase steps and restarted */
+    CHECK(phase > 0 && phase + 200 >= st.field_cycle && r->field_phase == phase + 200 - st.field_cycle);
+    CHECK(hearth_scene_hash(s) == hearth_scene_hash(r));
+    hearth_scene_destroy(s);
+    hearth_scene_destroy(r);
+}
+
+/* The cycle and its updates give the same bits at 1 and 2 threads. */
+TEST(field_clock_threads_same_bits) {
+    unsigned long long h[2];
+    for (int t = 1; t <= 2; t++) {
+        hearth_set_threads(t);
+        hearth_scene *s = oven_block(0);
+        CHECK(s != NULL);
+        if (!s) return;
+        step_to_update(s, 2, 100000);
+        hearth_error err;
+        CHECK(hearth_scene_step(s, 37, &err) == HEARTH_OK);
+        h[t - 1] = (unsigned long long)hearth_scene_hash(s);
+        hearth_scene_destroy(s);
+    }
+    hearth_set_threads(0);
+    printf("  two updates and 37 steps: hash %016llx at 1 thread, %016llx at 2\n", h[0], h[1]);
+    CHECK(h[0] == h[1]);
+}
+
+/* field_steps outside [0, 4096] is refused, naming the setting and its range. */
+TEST(field_clock_bad_setting) {
+    hearth_scene_def d = hearth_default_scene_def();
+    hearth_error err;
+    for (int k = 0; k < 2; k++) {
+        d.field_steps = k ? 5000 : -1;
+        hearth_scene *s = hearth_scene_create(&d, &err);
+        CHECK(s == NULL);
+        if (s) hearth_scene_destroy(s);
+        printf("  field_steps = %d: %s\n", d.field_steps, err.msg);
+        CHECK_STR_CONTAINS(err.msg, "field_steps");
+        CHECK_STR_CONTAINS(err.msg, "4096");
+    }
+}
+
+TEST_MAIN(T(field_clock_cycle_within_limit), T(field_clock_matches_single_rate), T(field_clock_checkpoint_mid_cycle),
+          T(field_clock_threads_same_bits), T(field_clock_bad_setting))
