@@ -214,6 +214,47 @@ TEST(determinism_threads_one_region_sort) {
     CHECK(h1 != 0 && h1 == h2 && h1 == hp);
 }
 
+/* The one-region step's share-out (mpm.c's span_next): P2G, the grid update
+ * and G2P each hand a chunk's blocks first to the thread that owns it, from
+ * the front, and a thread done with its own takes from the back of the
+ * others'. 1, 2, 3 and 4 threads (more threads than this machine's cores, so
+ * threads come late and the others take from their chunks), with damping (the
+ * grid update's other branch) and particles crossing blocks: the same bits. */
+static uint64_t share_out_run(int threads, long blocks[3], long back[3]) {
+    hearth_set_threads(threads);
+    hearth_scene *s = scene_2d(1.0 / 160);
+    s->def.damping = 2.0;
+    const int m = fx_elastic(s, 1e5, 0.3, 1000);
+    hearth_error err;
+    uint64_t h = 0;
+    if (seed_disc(s, m, 0.3, 0.6, 0.12, 3.0) <= 0 || seed_disc(s, m, 0.7, 0.4, 0.1, -3.0) <= 0 ||
+        hearth_scene_step(s, 30, &err) != HEARTH_OK)
+        goto out;
+    h = hearth_scene_hash(s);
+    for (int p = 0; p < 3; p++) blocks[p] = s->mpm->span_blocks[p], back[p] = s->mpm->span_back[p];
+    printf("  %d thread(s): %d particles, hash %016llx; blocks taken from another thread's chunk: P2G %ld of %ld, "
+           "grid %ld of %ld, G2P %ld of %ld\n", threads, s->ps.n, (unsigned long long)h, back[MPM_SPAN_P2G],
+           blocks[MPM_SPAN_P2G], back[MPM_SPAN_GRID], blocks[MPM_SPAN_GRID], back[MPM_SPAN_G2P], blocks[MPM_SPAN_G2P]);
+    CHECK(s->ps.n >= SCENE_PARALLEL_MIN && s->g.nblocks <= s->ps.n); /* the chunked count: the one-region step */
+out:
+    hearth_scene_destroy(s);
+    return h;
+}
+
+TEST(determinism_threads_one_region_share_out) {
+    uint64_t h[4];
+    long blocks[4][3], back[4][3];
+    for (int t = 1; t <= 4; t++) h[t - 1] = share_out_run(t, blocks[t - 1], back[t - 1]);
+    hearth_set_threads(0);
+    CHECK(h[0] != 0 && h[0] == h[1] && h[0] == h[2] && h[0] == h[3]);
+    CHECK(blocks[0][MPM_SPAN_P2G] == 0); /* one thread: the colour phases, no share-out */
+    for (int t = 2; t <= 4; t++)
+        for (int p = 0; p < 3; p++) { /* every step went the one-region way, and no block was taken twice */
+            CHECK(blocks[t - 1][p] > 0 && blocks[t - 1][p] == blocks[1][p]);
+            CHECK(back[t - 1][p] >= 0 && back[t - 1][p] <= blocks[t - 1][p]);
+        }
+}
+
 /* An allocation failing inside the one-region step (the sort's singles, the
  * tile store) comes back as an error from the step, on every thread alike
  * (no thread left at a barrier): each of the step's allocations after a disc
@@ -398,5 +439,5 @@ TEST(alloc_zero_is_not_out_of_memory) {
 }
 
 TEST_MAIN(T(seed_reserves_exactly), T(alloc_zero_is_not_out_of_memory), T(particles_grow_by_half), T(growth_peak_bounded), T(sort_keys_from_g2p),
-          T(determinism_threads_2d_bookkeeping), T(determinism_threads_one_region_sort), T(one_region_sort_out_of_memory),
+          T(determinism_threads_2d_bookkeeping), T(determinism_threads_one_region_sort), T(determinism_threads_one_region_share_out), T(one_region_sort_out_of_memory),
           T(particles_permute_orders), T(gather_store_in_sort_scratch))

@@ -411,6 +411,7 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
  * own (the same instructions, callgrind). */
 typedef struct span_walk {
     int me, P, c0, c1, T, j; /* this thread of P; its own chunks [c0, c1) of T; the chunk being taken from */
+    long back;               /* the blocks it took from other threads' chunks */
 } span_walk;
 
 static span_walk span_walk_start(int T) {
@@ -447,9 +448,17 @@ static int span_next(mpm_span *sp, span_walk *w, const int *ready, int *lo, int 
     for (; w->j < w->T; w->j++) {
         const int own = w->j < w->c1 - w->c0, c = (w->c0 + w->j) % w->T;
         if (ready && !__atomic_load_n(&ready[c], __ATOMIC_ACQUIRE)) continue;
-        if (span_take(&sp[c], own, w->P, lo, hi)) return 1;
+        if (span_take(&sp[c], own, w->P, lo, hi)) {
+            if (!own) w->back += *hi - *lo;
+            return 1;
+        }
     }
     return 0;
+}
+
+/* a phase's blocks taken from other threads' chunks into m->span_back (once a phase per thread) */
+static void span_count(mpm_state *m, int phase, const span_walk *w) {
+    if (w->back) __atomic_fetch_add(&m->span_back[phase], w->back, __ATOMIC_RELAXED);
 }
 
 /* ---- grid update ----------------------------------------------------- */
@@ -550,6 +559,7 @@ static void grid_update_team(hearth_scene *s, double dt, double *vcol2, const in
                 mpm_p2g_gather(s, k);
                 v2 = fmax(v2, s->def.damping > 0 ? grid_update_block(s, k, dt, damp, 1, CH_M) : grid_update_block(s, k, dt, 1.0, 0, CH_M));
             }
+        span_count(s->mpm, MPM_SPAN_GRID, &w);
     } else if (s->def.damping > 0) {
         /* Velocity damping for static problems, implicit in the drag (v' = v + dt (g - c v')) so any c dt
          * is stable; an explicit factor 1 - c dt would reverse velocities past c dt = 1. It acts after
@@ -921,6 +931,7 @@ static void g2p_chunks(hearth_scene *s, mpm_sort_team *t, block_fn fn, double dt
     int lo, hi;
     while (span_next(t->span[MPM_SPAN_G2P], &w, NULL, &lo, &hi))
         for (int k = lo; k < hi; k++) fn(s, k, dt, tile);
+    span_count(s->mpm, MPM_SPAN_G2P, &w);
 }
 
 /* step_team's phases after P2G, for every thread of its region; t: the one-region step's (NULL otherwise) */
@@ -989,6 +1000,7 @@ static void p2g_store_chunks(hearth_scene *s, mpm_sort_team *t, const int all_re
             m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
             store(s, k, dt, tile);
         }
+    span_count(m, MPM_SPAN_P2G, &w);
 #pragma omp barrier
 }
 
@@ -1037,6 +1049,8 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
     if (t->st) return t->st;
     if (gst) return gst;
     m->tiles_cap = mpm_p2g_store_need(s, m->npb); /* what hearth_scene_bytes_used counts */
+    m->span_blocks[MPM_SPAN_P2G] += m->npb, m->span_blocks[MPM_SPAN_G2P] += m->npb;
+    m->span_blocks[MPM_SPAN_GRID] += s->g.nactive;
     g2p_reduce(s, rep);
     *vcol = sqrt(vcol2);
     return HEARTH_OK;

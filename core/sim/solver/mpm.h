@@ -66,6 +66,10 @@ typedef struct mpm_state {
     int colour_start[9];
     pb_partial *partial;
     int sticky_faces;       /* this step's scene has a sticky collider: P2G adds its faces' reaction (p2g_mirror) */
+    /* the one-region step's share-out (mpm.c's span_next), summed over its steps, per phase (MPM_SPAN_*: P2G's
+     * and G2P's particle blocks, the grid update's active blocks): the blocks run, and those a thread took from
+     * the back of another thread's chunk, which changed core between the phases (the tests print them) */
+    long span_blocks[3], span_back[3];
     /* MPI ranks (mpm_ranks.c): this rank steps particle blocks [k_lo, k_hi); rank r
      * owns blocks [kfirst[r], kfirst[r + 1]) and particles [pfirst[r], pfirst[r + 1]) */
     int nranks, k_lo, k_hi;
@@ -179,6 +183,7 @@ static inline void mpm_span_set(mpm_span *sp, int lo, int hi) {
 }
 /// the one-region step's phases that hand out a chunk's blocks: P2G's and G2P's particle blocks, the grid update's
 enum { MPM_SPAN_P2G, MPM_SPAN_GRID, MPM_SPAN_G2P, MPM_SPANS };
+_Static_assert(MPM_SPANS == 3, "mpm_state's span_blocks and span_back hold one count per phase");
 typedef struct mpm_sort_team {
     int T;             /* the count's chunks (more than one), or 0 */
     int activate;      /* the grid's activation in the region too */
