@@ -10,6 +10,10 @@
 #include "grid.h"
 #include "mpm_fixture.h"
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 static hearth_scene *scene_2d(double dx) {
     hearth_scene_def d = hearth_default_scene_def();
     d.dim = 2;
@@ -344,6 +348,76 @@ TEST(particles_permute_orders) {
     hearth_set_threads(0);
 }
 
+/* particles_permute_team_range: each thread of a team moves its own places
+ * of every column, with the records within W outside them saved before the
+ * team's barrier. Ranges of 1-4 threads, uneven, one empty and two shorter
+ * than W; a shifted order (W 39: by places) and a scattered one (W near n:
+ * by columns, particles_permute_team): every value where the order sends it. */
+TEST(particles_permute_team_range_orders) {
+    static const int split[5][5] = {{0}, {0, 40000}, {0, 24713, 40000}, {0, 7000, 7000, 40000}, {0, 20, 16000, 16030, 40000}};
+    hearth_error err;
+    for (int kind = 0; kind < 2; kind++)
+        for (int P = 1; P <= 4; P++) {
+            particles ps;
+            particles_init(&ps);
+            const int n = 40000; /* the keys' 4 n bytes hold each of 4 threads' saved records at W 39 */
+            CHECK(particles_enable(&ps, PC_FLAGS, &err) == HEARTH_OK && particles_set_state_stride(&ps, 5, &err) == HEARTH_OK);
+            CHECK(particles_reserve_exact(&ps, n, &err) == HEARTH_OK);
+            ps.n = n;
+            for (int c = 0; c < PC_COUNT; c++) {
+                if (!(ps.enabled & (1u << c))) continue;
+                const int nc = particles_col_ncomp(&ps, c);
+                for (int i = 0; i < n * nc; i++) {
+                    if (particles_col_is_int(c)) pcoli(&ps, c)[i] = 1000 * c + i;
+                    else pcold(&ps, c)[i] = 1000.0 * c + i + 0.25;
+                }
+            }
+            int *order = malloc(sizeof(int) * n);
+            const size_t room = sizeof(int) * (size_t)n; /* the MPM sort's keys */
+            void *scratch = malloc(room);
+            for (int i = 0; i < n; i++) order[i] = i;
+            int W = 0;
+            if (kind == 0)
+                for (int i = 0; i + 40 < n; i += 97) { /* rotate [i, i + 40) by one: place i takes i + 39 */
+                    const int last = order[i + 39];
+                    memmove(order + i + 1, order + i, sizeof(int) * 39);
+                    order[i] = last;
+                }
+            else
+                for (int i = 0; i < n; i++) order[i] = (int)(((long)i * 2713) % n); /* 2713 and 40000 are coprime */
+            for (int i = 0; i < n; i++) W = abs(order[i] - i) > W ? abs(order[i] - i) : W;
+            const unsigned long e0 = ps.edits;
+            int ranges[4] = {-1, -1, -1, -1};
+#pragma omp parallel num_threads(P)
+            {
+                int me = 0;
+#ifdef _OPENMP
+                me = omp_get_thread_num();
+#endif
+                if (omp_get_num_threads() == P)
+                    ranges[me] = particles_permute_team_range(&ps, order, W, scratch, room, split[P][me], split[P][me + 1]);
+            }
+            int bad = 0;
+            for (int c = 0; c < PC_COUNT; c++) {
+                if (!(ps.enabled & (1u << c))) continue;
+                const int nc = particles_col_ncomp(&ps, c);
+                for (int i = 0; i < n; i++)
+                    for (int k = 0; k < nc; k++) {
+                        const long want = 1000L * c + (long)order[i] * nc + k;
+                        bad += particles_col_is_int(c) ? pcoli(&ps, c)[i * nc + k] != want
+                                                       : pcold(&ps, c)[i * nc + k] != (double)want + 0.25;
+                    }
+            }
+            printf("  %s order (W %d), %d thread(s), by %s: %d wrong values\n", kind ? "scattered" : "shifted", W, P,
+                   ranges[0] == 1 ? "places" : ranges[0] == 0 ? "columns" : "?", bad);
+            CHECK(bad == 0 && ps.edits == e0 + 1);
+            for (int t = 0; t < P; t++) CHECK(ranges[t] == (kind == 0)); /* every thread alike: W 39 fits, W ~n does not */
+            free(order);
+            free(scratch);
+            particles_free(&ps);
+        }
+}
+
 /* At two threads a 2D step keeps each particle block's P2G tile, and the
  * tiles' halo store lives in the room of the sort's order and keys (dead from
  * the end of the sort until G2P files the next keys, after the gather:
@@ -440,4 +514,4 @@ TEST(alloc_zero_is_not_out_of_memory) {
 
 TEST_MAIN(T(seed_reserves_exactly), T(alloc_zero_is_not_out_of_memory), T(particles_grow_by_half), T(growth_peak_bounded), T(sort_keys_from_g2p),
           T(determinism_threads_2d_bookkeeping), T(determinism_threads_one_region_sort), T(determinism_threads_one_region_share_out), T(one_region_sort_out_of_memory),
-          T(particles_permute_orders), T(gather_store_in_sort_scratch))
+          T(particles_permute_orders), T(particles_permute_team_range_orders), T(gather_store_in_sort_scratch))

@@ -1034,7 +1034,12 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
         int kof[MPM_SORT_CHUNKS_MAX + 1];
         const int W = mpm_sort_team_run(s, t, kof);
         if (!t->st) {
-            if (W >= 0) particles_permute_team(ps, m->order, W, m->keys, room); /* ends past a barrier */
+            if (W >= 0) { /* this thread moves the places of its own chunks' particle blocks (span_walk); past a barrier */
+                const span_walk w = span_walk_start(t->T);
+                const int lo = kof[w.c0] < kof[t->T] ? m->pb[kof[w.c0]].start : ps->n,
+                          hi = kof[w.c1] < kof[t->T] ? m->pb[kof[w.c1]].start : ps->n;
+                particles_permute_team_range(ps, m->order, W, m->keys, room, lo, hi);
+            }
             const int grow = mpm_p2g_store_need(s, kof[t->T]) > have;
             if (grow) { /* every thread is past the sort's reads of keys and order */
 #pragma omp single
