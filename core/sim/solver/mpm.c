@@ -1072,6 +1072,8 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         mpm_sort_team t;
         if ((st = mpm_sort_begin(s, &t, err))) return st;
         if (t.T > 1) { /* the sort's count and lists in the step's region */
+            mpm_span spans[MPM_SPANS][MPM_SORT_CHUNKS_MAX]; /* the sort sets chunk c's before it publishes it */
+            t.span = spans;
             double vcol;
             if ((st = step_team_sorted(s, dt, rep, &t, &vcol, err))) return st;
             rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;

@@ -195,7 +195,9 @@ typedef struct mpm_sort_team {
     /* per chunk, atomics (__atomic builtins): the count's and the lists' claims, the lists published, and the
      * blocks each phase of the step hands out (mpm_span) */
     int claim[2][MPM_SORT_CHUNKS_MAX], ready[MPM_SORT_CHUNKS_MAX];
-    mpm_span span[MPM_SPANS][MPM_SORT_CHUNKS_MAX];
+    /* the caller's MPM_SPANS rows of spans (mpm.c's one-region step; NULL: none kept), apart from the struct,
+     * which is zeroed every step (12 KB) */
+    mpm_span (*span)[MPM_SORT_CHUNKS_MAX];
 } mpm_sort_team;
 hearth_status mpm_sort_begin(hearth_scene *s, mpm_sort_team *t, hearth_error *err);
 int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS_MAX + 1]);
