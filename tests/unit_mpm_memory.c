@@ -10,6 +10,10 @@
 #include "grid.h"
 #include "mpm_fixture.h"
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 static hearth_scene *scene_2d(double dx) {
     hearth_scene_def d = hearth_default_scene_def();
     d.dim = 2;
@@ -214,6 +218,47 @@ TEST(determinism_threads_one_region_sort) {
     CHECK(h1 != 0 && h1 == h2 && h1 == hp);
 }
 
+/* The one-region step's share-out (mpm.c's span_next): P2G, the grid update
+ * and G2P each hand a chunk's blocks first to the thread that owns it, from
+ * the front, and a thread done with its own takes from the back of the
+ * others'. 1, 2, 3 and 4 threads (more threads than this machine's cores, so
+ * threads come late and the others take from their chunks), with damping (the
+ * grid update's other branch) and particles crossing blocks: the same bits. */
+static uint64_t share_out_run(int threads, long blocks[3], long back[3]) {
+    hearth_set_threads(threads);
+    hearth_scene *s = scene_2d(1.0 / 160);
+    s->def.damping = 2.0;
+    const int m = fx_elastic(s, 1e5, 0.3, 1000);
+    hearth_error err;
+    uint64_t h = 0;
+    if (seed_disc(s, m, 0.3, 0.6, 0.12, 3.0) <= 0 || seed_disc(s, m, 0.7, 0.4, 0.1, -3.0) <= 0 ||
+        hearth_scene_step(s, 30, &err) != HEARTH_OK)
+        goto out;
+    h = hearth_scene_hash(s);
+    for (int p = 0; p < 3; p++) blocks[p] = s->mpm->span_blocks[p], back[p] = s->mpm->span_back[p];
+    printf("  %d thread(s): %d particles, hash %016llx; blocks taken from another thread's chunk: P2G %ld of %ld, "
+           "grid %ld of %ld, G2P %ld of %ld\n", threads, s->ps.n, (unsigned long long)h, back[MPM_SPAN_P2G],
+           blocks[MPM_SPAN_P2G], back[MPM_SPAN_GRID], blocks[MPM_SPAN_GRID], back[MPM_SPAN_G2P], blocks[MPM_SPAN_G2P]);
+    CHECK(s->ps.n >= SCENE_PARALLEL_MIN && s->g.nblocks <= s->ps.n); /* the chunked count: the one-region step */
+out:
+    hearth_scene_destroy(s);
+    return h;
+}
+
+TEST(determinism_threads_one_region_share_out) {
+    uint64_t h[4];
+    long blocks[4][3], back[4][3];
+    for (int t = 1; t <= 4; t++) h[t - 1] = share_out_run(t, blocks[t - 1], back[t - 1]);
+    hearth_set_threads(0);
+    CHECK(h[0] != 0 && h[0] == h[1] && h[0] == h[2] && h[0] == h[3]);
+    CHECK(blocks[0][MPM_SPAN_P2G] == 0); /* one thread: the colour phases, no share-out */
+    for (int t = 2; t <= 4; t++)
+        for (int p = 0; p < 3; p++) { /* every step went the one-region way, and no block was taken twice */
+            CHECK(blocks[t - 1][p] > 0 && blocks[t - 1][p] == blocks[1][p]);
+            CHECK(back[t - 1][p] >= 0 && back[t - 1][p] <= blocks[t - 1][p]);
+        }
+}
+
 /* An allocation failing inside the one-region step (the sort's singles, the
  * tile store) comes back as an error from the step, on every thread alike
  * (no thread left at a barrier): each of the step's allocations after a disc
@@ -301,6 +346,76 @@ TEST(particles_permute_orders) {
             particles_free(&ps);
         }
     hearth_set_threads(0);
+}
+
+/* particles_permute_team_range: each thread of a team moves its own places
+ * of every column, with the records within W outside them saved before the
+ * team's barrier. Ranges of 1-4 threads, uneven, one empty and two shorter
+ * than W; a shifted order (W 39: by places) and a scattered one (W near n:
+ * by columns, particles_permute_team): every value where the order sends it. */
+TEST(particles_permute_team_range_orders) {
+    static const int split[5][5] = {{0}, {0, 40000}, {0, 24713, 40000}, {0, 7000, 7000, 40000}, {0, 20, 16000, 16030, 40000}};
+    hearth_error err;
+    for (int kind = 0; kind < 2; kind++)
+        for (int P = 1; P <= 4; P++) {
+            particles ps;
+            particles_init(&ps);
+            const int n = 40000; /* the keys' 4 n bytes hold each of 4 threads' saved records at W 39 */
+            CHECK(particles_enable(&ps, PC_FLAGS, &err) == HEARTH_OK && particles_set_state_stride(&ps, 5, &err) == HEARTH_OK);
+            CHECK(particles_reserve_exact(&ps, n, &err) == HEARTH_OK);
+            ps.n = n;
+            for (int c = 0; c < PC_COUNT; c++) {
+                if (!(ps.enabled & (1u << c))) continue;
+                const int nc = particles_col_ncomp(&ps, c);
+                for (int i = 0; i < n * nc; i++) {
+                    if (particles_col_is_int(c)) pcoli(&ps, c)[i] = 1000 * c + i;
+                    else pcold(&ps, c)[i] = 1000.0 * c + i + 0.25;
+                }
+            }
+            int *order = malloc(sizeof(int) * n);
+            const size_t room = sizeof(int) * (size_t)n; /* the MPM sort's keys */
+            void *scratch = malloc(room);
+            for (int i = 0; i < n; i++) order[i] = i;
+            int W = 0;
+            if (kind == 0)
+                for (int i = 0; i + 40 < n; i += 97) { /* rotate [i, i + 40) by one: place i takes i + 39 */
+                    const int last = order[i + 39];
+                    memmove(order + i + 1, order + i, sizeof(int) * 39);
+                    order[i] = last;
+                }
+            else
+                for (int i = 0; i < n; i++) order[i] = (int)(((long)i * 2713) % n); /* 2713 and 40000 are coprime */
+            for (int i = 0; i < n; i++) W = abs(order[i] - i) > W ? abs(order[i] - i) : W;
+            const unsigned long e0 = ps.edits;
+            int ranges[4] = {-1, -1, -1, -1};
+#pragma omp parallel num_threads(P)
+            {
+                int me = 0;
+#ifdef _OPENMP
+                me = omp_get_thread_num();
+#endif
+                if (omp_get_num_threads() == P)
+                    ranges[me] = particles_permute_team_range(&ps, order, W, scratch, room, split[P][me], split[P][me + 1]);
+            }
+            int bad = 0;
+            for (int c = 0; c < PC_COUNT; c++) {
+                if (!(ps.enabled & (1u << c))) continue;
+                const int nc = particles_col_ncomp(&ps, c);
+                for (int i = 0; i < n; i++)
+                    for (int k = 0; k < nc; k++) {
+                        const long want = 1000L * c + (long)order[i] * nc + k;
+                        bad += particles_col_is_int(c) ? pcoli(&ps, c)[i * nc + k] != want
+                                                       : pcold(&ps, c)[i * nc + k] != (double)want + 0.25;
+                    }
+            }
+            printf("  %s order (W %d), %d thread(s), by %s: %d wrong values\n", kind ? "scattered" : "shifted", W, P,
+                   ranges[0] == 1 ? "places" : ranges[0] == 0 ? "columns" : "?", bad);
+            CHECK(bad == 0 && ps.edits == e0 + 1);
+            for (int t = 0; t < P; t++) CHECK(ranges[t] == (kind == 0)); /* every thread alike: W 39 fits, W ~n does not */
+            free(order);
+            free(scratch);
+            particles_free(&ps);
+        }
 }
 
 /* At two threads a 2D step keeps each particle block's P2G tile, and the
@@ -398,5 +513,5 @@ TEST(alloc_zero_is_not_out_of_memory) {
 }
 
 TEST_MAIN(T(seed_reserves_exactly), T(alloc_zero_is_not_out_of_memory), T(particles_grow_by_half), T(growth_peak_bounded), T(sort_keys_from_g2p),
-          T(determinism_threads_2d_bookkeeping), T(determinism_threads_one_region_sort), T(one_region_sort_out_of_memory),
-          T(particles_permute_orders), T(gather_store_in_sort_scratch))
+          T(determinism_threads_2d_bookkeeping), T(determinism_threads_one_region_sort), T(determinism_threads_one_region_share_out), T(one_region_sort_out_of_memory),
+          T(particles_permute_orders), T(particles_permute_team_range_orders), T(gather_store_in_sort_scratch))

@@ -414,6 +414,74 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
     p2g_team(s, fn, dt);
 }
 
+/* ---- the one-region step's share-out ---------------------------------- */
+
+/* In the one-region step (step_team_sorted) a chunk's particle blocks and its
+ * grid blocks go, in P2G, the grid update and G2P alike, first to the thread
+ * that owns the chunk (the sort's static split: the chunk it counts and lists
+ * first), which takes them from the front of the chunk's span; a thread done
+ * with its own chunks takes from the back of the others'. So a particle's
+ * columns are read and written by one core from phase to phase and step to
+ * step, save where a late thread's share is taken from its tail. Before, P2G
+ * went by chunk too but G2P and the grid update by `schedule(guided)`, whose
+ * first half went to whichever thread came first: about every other step,
+ * G2P ran each particle block on the other core from its P2G, and the x, v,
+ * C, F and key lines (about 150 bytes a particle, 3.7 MB at 2D 128 cells,
+ * each core's half near its 2 MiB L2) crossed between the cores twice a
+ * step. Which thread takes a block moves no bits: each block's work is its
+ * own (the same instructions, callgrind). */
+typedef struct span_walk {
+    int me, P, c0, c1, T, j; /* this thread of P; its own chunks [c0, c1) of T; the chunk being taken from */
+    long back;               /* the blocks it took from other threads' chunks */
+} span_walk;
+
+static span_walk span_walk_start(int T) {
+    span_walk w = {.P = 1, .T = T};
+#ifdef _OPENMP
+    w.me = omp_get_thread_num();
+    w.P = omp_get_num_threads();
+#endif
+    w.c0 = (int)((long)w.me * T / w.P), w.c1 = (int)((long)(w.me + 1) * T / w.P);
+    return w;
+}
+
+/* A run from one end of *sp (the front: own), a share of what is left, down to single blocks; 0 when it is empty. */
+static int span_take(mpm_span *sp, const int own, const int P, int *lo, int *hi) {
+    unsigned long long v = __atomic_load_n(&sp->lohi, __ATOMIC_RELAXED);
+    for (;;) {
+        const int a = (int)(unsigned)v, b = (int)(v >> 32), left = b - a;
+        if (left <= 0) return 0;
+        const int run = left / (2 * P) > 1 ? left / (2 * P) : 1;
+        const int na = own ? a + run : a, nb = own ? b : b - run;
+        const unsigned long long nv = (unsigned long long)(unsigned)na | (unsigned long long)(unsigned)nb << 32;
+        if (__atomic_compare_exchange_n(&sp->lohi, &v, nv, 1, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
+            *lo = own ? a : nb;
+            *hi = *lo + run;
+            return 1;
+        }
+    }
+}
+
+/* The next run [*lo, *hi) of phase sp's blocks for this thread: its own chunks' from the front, then the others'
+ * from the back, from chunk c1 on; 0 when none is left. ready (P2G's, NULL when every chunk is): a chunk not yet
+ * published is passed over (its owner or the thread listing it takes it all). */
+static int span_next(mpm_span *sp, span_walk *w, const int *ready, int *lo, int *hi) {
+    for (; w->j < w->T; w->j++) {
+        const int own = w->j < w->c1 - w->c0, c = (w->c0 + w->j) % w->T;
+        if (ready && !__atomic_load_n(&ready[c], __ATOMIC_ACQUIRE)) continue;
+        if (span_take(&sp[c], own, w->P, lo, hi)) {
+            if (!own) w->back += *hi - *lo;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* a phase's blocks taken from other threads' chunks into m->span_back (once a phase per thread) */
+static void span_count(mpm_state *m, int phase, const span_walk *w) {
+    if (w->back) __atomic_fetch_add(&m->span_back[phase], w->back, __ATOMIC_RELAXED);
+}
+
 /* ---- grid update ----------------------------------------------------- */
 
 /* One active block's nodes; returns the fastest collider speed squared at a
@@ -495,7 +563,7 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
  * one); ends with a barrier, so G2P may read any node. The fastest collider
  * speed squared goes into *vcol2 (shared), the largest of the threads' own:
  * a maximum, the same whatever the threads. */
-static void grid_update_team(hearth_scene *s, double dt, double *vcol2, const int gather) {
+static void grid_update_team(hearth_scene *s, double dt, double *vcol2, const int gather, mpm_sort_team *t) {
     const grid *g = &s->g;
     double v2 = 0;
     if (s->def.two_field) { /* the second field's nodes (mpm_two_field.c) take the same update */
@@ -503,7 +571,17 @@ static void grid_update_team(hearth_scene *s, double dt, double *vcol2, const in
 #pragma omp for schedule(dynamic, 4) nowait
         for (int k = 0; k < g->nactive; k++) v2 = fmax(v2, grid_update_block(s, k, dt, damp, s->def.damping > 0, CH_TF_M));
     }
-    if (s->def.damping > 0) {
+    if (t) { /* the one-region step: chunk by chunk, each first to its P2G's thread (span_next) */
+        const double damp = s->def.damping > 0 ? 1.0 / (1.0 + s->def.damping * dt) : 1.0;
+        span_walk w = span_walk_start(t->T);
+        int lo, hi;
+        while (span_next(t->span[MPM_SPAN_GRID], &w, NULL, &lo, &hi))
+            for (int k = lo; k < hi; k++) {
+                mpm_p2g_gather(s, k);
+                v2 = fmax(v2, s->def.damping > 0 ? grid_update_block(s, k, dt, damp, 1, CH_M) : grid_update_block(s, k, dt, 1.0, 0, CH_M));
+            }
+        span_count(s->mpm, MPM_SPAN_GRID, &w);
+    } else if (s->def.damping > 0) {
         /* Velocity damping for static problems, implicit in the drag (v' = v + dt (g - c v')) so any c dt
          * is stable; an explicit factor 1 - c dt would reverse velocities past c dt = 1. It acts after
          * gravity and before walls and colliders: damping the momentum before gravity instead would
@@ -541,7 +619,7 @@ double mpm_grid_update(hearth_scene *s, double dt) {
     /* a body force that is not thread-safe (a Lua function) keeps the update on one thread */
     const int par = s->ps.n >= SCENE_PARALLEL_MIN && !s->body_force_serial;
 #pragma omp parallel if (par)
-    grid_update_team(s, dt, &vcol2, 0);
+    grid_update_team(s, dt, &vcol2, 0, NULL);
     return sqrt(vcol2);
 }
 
@@ -868,11 +946,22 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
     g2p_reduce(s, rep);
 }
 
-/* step_team's phases after P2G, for every thread of its region */
-static void step_team_rest(hearth_scene *s, double dt, const int gather, block_fn g2p, double *vcol2) {
+/* G2P's blocks in the one-region step, chunk by chunk, each first to its P2G's thread (span_next); no barrier */
+static void g2p_chunks(hearth_scene *s, mpm_sort_team *t, block_fn fn, double dt) {
+    double tile[6 * GRID_T * GRID_T * GRID_T];
+    span_walk w = span_walk_start(t->T);
+    int lo, hi;
+    while (span_next(t->span[MPM_SPAN_G2P], &w, NULL, &lo, &hi))
+        for (int k = lo; k < hi; k++) fn(s, k, dt, tile);
+    span_count(s->mpm, MPM_SPAN_G2P, &w);
+}
+
+/* step_team's phases after P2G, for every thread of its region; t: the one-region step's (NULL otherwise) */
+static void step_team_rest(hearth_scene *s, double dt, const int gather, block_fn g2p, double *vcol2, mpm_sort_team *t) {
     mpm_state *m = s->mpm;
-    grid_update_team(s, dt, vcol2, gather);
-    g2p_team(s, g2p, dt);
+    grid_update_team(s, dt, vcol2, gather, t);
+    if (t) g2p_chunks(s, t, g2p, dt);
+    else g2p_team(s, g2p, dt);
     if (gather) { /* the block table back to no particle block anywhere, for the next step's scatter */
 #pragma omp for schedule(static) nowait
         for (int k = m->k_lo; k < m->k_hi; k++) m->pbof[m->pb[k].block] = -1;
@@ -908,7 +997,7 @@ static double step_team(hearth_scene *s, double dt, step_report *rep, const int 
         } else {
             p2g_team(s, p2g, dt);
         }
-        step_team_rest(s, dt, gather, g2p, &vcol2);
+        step_team_rest(s, dt, gather, g2p, &vcol2, NULL);
     }
     g2p_reduce(s, rep);
     return sqrt(vcol2);
@@ -917,37 +1006,23 @@ static double step_team(hearth_scene *s, double dt, step_report *rep, const int 
 /* The gather's scatter in the one-region step: each chunk of the sort's
  * particle blocks as soon as the sort has published it (t->ready; all of
  * them when all_ready), with no barrier between the sort and P2G. Each
- * thread starts with the chunk it sorted and then helps with the others that
- * are ready, taking blocks from a chunk's counter (t->next) in runs of a
- * share of what is left, down to single blocks (long runs of neighbouring
- * blocks: g2p_team says why); a chunk whose owner is still sorting is left to
- * it (it reaches its own chunk first). Every block once, whichever thread
- * takes it: the same bits. Ends with the barrier before the gather. */
-static void p2g_store_chunks(hearth_scene *s, mpm_sort_team *t, const int *kof, const int all_ready, block_fn store,
-                             double dt) {
+ * thread starts with its own chunks (the ones it sorted, unless it came
+ * late) and then helps with the others that are ready, from their backs
+ * (span_next: the grid update and G2P share out the same way, so a block
+ * stays on its thread); a chunk whose owner is still sorting is left to it.
+ * Every block once, whichever thread takes it: the same bits. Ends with the
+ * barrier before the gather. */
+static void p2g_store_chunks(hearth_scene *s, mpm_sort_team *t, const int all_ready, block_fn store, double dt) {
     mpm_state *m = s->mpm;
-    const int T = t->T;
-    int me = 0, P = 1;
-#ifdef _OPENMP
-    me = omp_get_thread_num();
-    P = omp_get_num_threads();
-#endif
     double tile[GRID_NCH_MOMENTUM * GRID_T * GRID_T * GRID_T];
-    const int c0 = (int)((long)me * T / P); /* the sort's static split: thread me sorted chunk me when P = T */
-    for (int j = 0; j < T; j++) {
-        const int c = (c0 + j) % T, end = kof[c + 1];
-        if (!all_ready && !__atomic_load_n(&t->ready[c], __ATOMIC_ACQUIRE)) continue;
-        for (;;) {
-            const int left = end - __atomic_load_n(&t->next[c], __ATOMIC_RELAXED);
-            if (left <= 0) break;
-            const int run = left / (2 * P) > 1 ? left / (2 * P) : 1;
-            const int k0 = __atomic_fetch_add(&t->next[c], run, __ATOMIC_RELAXED);
-            for (int k = k0; k < k0 + run && k < end; k++) {
-                m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
-                store(s, k, dt, tile);
-            }
+    span_walk w = span_walk_start(t->T);
+    int lo, hi;
+    while (span_next(t->span[MPM_SPAN_P2G], &w, all_ready ? NULL : t->ready, &lo, &hi))
+        for (int k = lo; k < hi; k++) {
+            m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
+            store(s, k, dt, tile);
         }
-    }
+    span_count(m, MPM_SPAN_P2G, &w);
 #pragma omp barrier
 }
 
@@ -981,21 +1056,28 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
         int kof[MPM_SORT_CHUNKS_MAX + 1];
         const int W = mpm_sort_team_run(s, t, kof);
         if (!t->st) {
-            if (W >= 0) particles_permute_team(ps, m->order, W, m->keys, room); /* ends past a barrier */
+            if (W >= 0) { /* this thread moves the places of its own chunks' particle blocks (span_walk); past a barrier */
+                const span_walk w = span_walk_start(t->T);
+                const int lo = kof[w.c0] < kof[t->T] ? m->pb[kof[w.c0]].start : ps->n,
+                          hi = kof[w.c1] < kof[t->T] ? m->pb[kof[w.c1]].start : ps->n;
+                particles_permute_team_range(ps, m->order, W, m->keys, room, lo, hi);
+            }
             const int grow = mpm_p2g_store_need(s, kof[t->T]) > have;
             if (grow) { /* every thread is past the sort's reads of keys and order */
 #pragma omp single
                 gst = mpm_p2g_store_room(s, kof[t->T], err);
             }
             if (!gst) {
-                p2g_store_chunks(s, t, kof, W >= 0 || grow, store, dt);
-                step_team_rest(s, dt, 1, g2p, &vcol2);
+                p2g_store_chunks(s, t, W >= 0 || grow, store, dt);
+                step_team_rest(s, dt, 1, g2p, &vcol2, t);
             }
         }
     }
     if (t->st) return t->st;
     if (gst) return gst;
     m->tiles_cap = mpm_p2g_store_need(s, m->npb); /* what hearth_scene_bytes_used counts */
+    m->span_blocks[MPM_SPAN_P2G] += m->npb, m->span_blocks[MPM_SPAN_G2P] += m->npb;
+    m->span_blocks[MPM_SPAN_GRID] += s->g.nactive;
     g2p_reduce(s, rep);
     *vcol = sqrt(vcol2);
     return HEARTH_OK;
@@ -1012,6 +1094,8 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         mpm_sort_team t;
         if ((st = mpm_sort_begin(s, &t, err))) return st;
         if (t.T > 1) { /* the sort's count and lists in the step's region */
+            mpm_span spans[MPM_SPANS][MPM_SORT_CHUNKS_MAX]; /* the sort sets chunk c's before it publishes it */
+            t.span = spans;
             double vcol;
             if ((st = step_team_sorted(s, dt, rep, &t, &vcol, err))) return st;
             rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;

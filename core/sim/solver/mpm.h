@@ -66,6 +66,10 @@ typedef struct mpm_state {
     int colour_start[9];
     pb_partial *partial;
     int sticky_faces;       /* this step's scene has a sticky collider: P2G adds its faces' reaction (p2g_mirror) */
+    /* the one-region step's share-out (mpm.c's span_next), summed over its steps, per phase (MPM_SPAN_*: P2G's
+     * and G2P's particle blocks, the grid update's active blocks): the blocks run, and those a thread took from
+     * the back of another thread's chunk, which changed core between the phases (the tests print them) */
+    long span_blocks[3], span_back[3];
     /* MPI ranks (mpm_ranks.c): this rank steps particle blocks [k_lo, k_hi); rank r
      * owns blocks [kfirst[r], kfirst[r + 1]) and particles [pfirst[r], pfirst[r + 1]) */
     int nranks, k_lo, k_hi;
@@ -161,10 +165,25 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err);
 /// The lists and the grid are complete after the team's next barrier; before
 /// it, a chunk c with t->ready[c] set (acquire order) has its particle blocks
 /// [kof[c], kof[c + 1]) and their grid blocks ready (2D, keys in order; its
-/// blocks are handed out through t->next[c]). t->T == 0: mpm_sort_begin
+/// blocks are handed out through t->span[MPM_SPAN_P2G][c]). The spans of the
+/// grid update (chunk c's active blocks) and of G2P (its particle blocks
+/// again) are set before the team's next barrier. t->T == 0: mpm_sort_begin
 /// sorted as mpm_sort does (no colour lists are made in the region: the
 /// gather does not read them). Bits: mpm_sort's.
 #define MPM_SORT_CHUNKS_MAX 64
+/// A range of indices [lo, hi) that the threads take runs from at both ends at
+/// once (mpm.c's span_take): lo in the low 32 bits, hi in the high. Each on its
+/// own cache line: two threads taking from neighbouring spans would otherwise
+/// pass one line back and forth.
+typedef struct mpm_span {
+    _Alignas(64) unsigned long long lohi;
+} mpm_span;
+static inline void mpm_span_set(mpm_span *sp, int lo, int hi) {
+    sp->lohi = (unsigned long long)(unsigned)lo | (unsigned long long)(unsigned)hi << 32;
+}
+/// the one-region step's phases that hand out a chunk's blocks: P2G's and G2P's particle blocks, the grid update's
+enum { MPM_SPAN_P2G, MPM_SPAN_GRID, MPM_SPAN_G2P, MPM_SPANS };
+_Static_assert(MPM_SPANS == 3, "mpm_state's span_blocks and span_back hold one count per phase");
 typedef struct mpm_sort_team {
     int T;             /* the count's chunks (more than one), or 0 */
     int activate;      /* the grid's activation in the region too */
@@ -173,8 +192,12 @@ typedef struct mpm_sort_team {
     hearth_status st;
     hearth_error *err;
     int unsorted[MPM_SORT_CHUNKS_MAX], far[MPM_SORT_CHUNKS_MAX], amark[MPM_SORT_CHUNKS_MAX]; /* per chunk */
-    /* per chunk, atomics (__atomic builtins): the count's and the lists' claims, the lists published, P2G's next block */
-    int claim[2][MPM_SORT_CHUNKS_MAX], ready[MPM_SORT_CHUNKS_MAX], next[MPM_SORT_CHUNKS_MAX];
+    /* per chunk, atomics (__atomic builtins): the count's and the lists' claims, the lists published, and the
+     * blocks each phase of the step hands out (mpm_span) */
+    int claim[2][MPM_SORT_CHUNKS_MAX], ready[MPM_SORT_CHUNKS_MAX];
+    /* the caller's MPM_SPANS rows of spans (mpm.c's one-region step; NULL: none kept), apart from the struct,
+     * which is zeroed every step (12 KB) */
+    mpm_span (*span)[MPM_SORT_CHUNKS_MAX];
 } mpm_sort_team;
 hearth_status mpm_sort_begin(hearth_scene *s, mpm_sort_team *t, hearth_error *err);
 int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS_MAX + 1]);

@@ -365,7 +365,13 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
             run += block_total(NULL, hist, NB, T, b);
             if (run > start) m->pb[k++] = (pblock){b, start, run};
         }
-        t->next[c] = koff[c];
+        /* the step hands the chunk's particle blocks out from these (P2G's and G2P's) and, activated here, its
+         * grid blocks (mpm.c's span_next) */
+        if (t->span) {
+            mpm_span_set(&t->span[MPM_SPAN_P2G][c], koff[c], k);
+            mpm_span_set(&t->span[MPM_SPAN_G2P][c], koff[c], k);
+            if (early) mpm_span_set(&t->span[MPM_SPAN_GRID][c], aoff[c], aoff[c + 1]);
+        }
         if (!late && !unsorted) __atomic_store_n(&t->ready[c], 1, __ATOMIC_RELEASE);
     }
 #pragma omp single nowait
@@ -388,6 +394,7 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
 #pragma omp for schedule(static) nowait
         for (int c = 0; c < T; c++) {
             grid_activate_chunk(g, m->mark, (int)((long)NB * c / T), (int)((long)NB * (c + 1) / T), aoff[c]);
+            if (t->span) mpm_span_set(&t->span[MPM_SPAN_GRID][c], aoff[c], aoff[c + 1]);
             if (!unsorted) __atomic_store_n(&t->ready[c], 1, __ATOMIC_RELEASE); /* its blocks were listed before the barrier */
         }
 #pragma omp single nowait

@@ -305,6 +305,85 @@ void particles_permute_team(particles *ps, const int *order, int W, void *scratc
     for (int q = 0; q < npar; q++) permute_column(ps, par[q], order, W, (char *)scratch + share * (size_t)me, share);
 }
 
+/* One column's places [lo, hi) in place through a ring of W + 1 records, as
+ * permute_window does the whole column; a source outside [lo, hi) (within W
+ * of it) comes from the records saved before the team's barrier: zlo holds
+ * the old places [zl, lo), zhi [hi, hi + W), since the threads that own them
+ * may have moved them by now. */
+static inline __attribute__((always_inline)) void permute_range(char *col, const int *order, int lo, int hi, int W,
+                                                                  int zl, const char *zlo, const char *zhi, char *ring,
+                                                                  const size_t B) {
+    const int R = W + 1;
+    int slot = 0, back = 0;
+    for (int j = lo; j < hi; j++) {
+        const int src = order[j];
+        const char *from = src < lo ? zlo + (size_t)(src - zl) * B : src >= hi ? zhi + (size_t)(src - hi) * B : col + (size_t)src * B;
+        memcpy(ring + (size_t)slot * B, from, B);
+        if (++slot == R) slot = 0;
+        if (j - lo >= W) {
+            memcpy(col + (size_t)(j - W) * B, ring + (size_t)back * B, B);
+            if (++back == R) back = 0;
+        }
+    }
+    for (int t = hi - W > lo ? hi - W : lo; t < hi; t++) {
+        memcpy(col + (size_t)t * B, ring + (size_t)back * B, B);
+        if (++back == R) back = 0;
+    }
+}
+
+int particles_permute_team_range(particles *ps, const int *order, int W, void *scratch, size_t room, int lo, int hi) {
+    int T = 1, me = 0;
+#ifdef _OPENMP
+    T = omp_get_num_threads();
+    me = omp_get_thread_num();
+#endif
+    int par[PC_COUNT];
+    const int npar = permute_columns(ps, par), n = ps->n;
+    size_t sum = 0, wide = 0;
+    for (int q = 0; q < npar; q++) {
+        const size_t B = particles_col_bytes(ps, par[q]);
+        sum += B, wide = B > wide ? B : wide;
+    }
+    /* every thread decides alike (the same W, team, room and columns) */
+    const size_t share = room / (size_t)T & ~(size_t)7, need = (2 * sum + wide) * (size_t)W + wide;
+    if (W <= 0 || need > share) {
+        particles_permute_team(ps, order, W, scratch, room);
+        return 0;
+    }
+    /* the old records within W outside this thread's places, every column's, before anyone moves any */
+    char *mine = (char *)scratch + share * (size_t)me, *ring = mine + 2 * sum * (size_t)W;
+    const int zl = lo - W > 0 ? lo - W : 0, zh = hi + W < n ? hi + W : n;
+    size_t off = 0;
+    for (int q = 0; q < npar; q++) {
+        const size_t B = particles_col_bytes(ps, par[q]);
+        const char *col = ps->col[par[q]];
+        memcpy(mine + off, col + (size_t)zl * B, (size_t)(lo - zl) * B);
+        memcpy(mine + off + (size_t)W * B, col + (size_t)hi * B, (size_t)(zh - hi) * B);
+        off += 2 * (size_t)W * B;
+    }
+#pragma omp barrier
+    /* every thread is past its reads of edits and order's filling, and every zone is saved */
+#pragma omp single nowait
+    ps->edits++;
+    off = 0;
+    for (int q = 0; q < npar; q++) {
+        const size_t B = particles_col_bytes(ps, par[q]);
+        char *col = ps->col[par[q]];
+        const char *zlo = mine + off, *zhi = mine + off + (size_t)W * B;
+        switch (B) { /* the common widths as constants, so each copy is a few moves */
+        case 4: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 4); break;
+        case 8: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 8); break;
+        case 24: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 24); break;
+        case 32: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 32); break;
+        case 72: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 72); break;
+        default: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, B); break;
+        }
+        off += 2 * (size_t)W * B;
+    }
+#pragma omp barrier
+    return 1;
+}
+
 hearth_status particles_copy(particles *dst, const particles *src, hearth_error *err) {
     const unsigned long edits = dst->edits + 1;
     if (dst->state_stride != src->state_stride || dst->enabled != src->enabled || dst->t2 != src->t2 || dst->cap < src->n) {

@@ -122,6 +122,13 @@ void particles_permute_within(particles *ps, const int *order, int W, void *scra
 /// the scratch, and it returns past a barrier of the team that follows the moves (and so every
 /// thread's work before the call).
 void particles_permute_team(particles *ps, const int *order, int W, void *scratch, size_t room);
+/// particles_permute_team by places instead of columns: this thread moves places [lo, hi) of every column (the
+/// team's ranges tile [0, n)), so the records a thread owns stay in its core's cache (mpm.c's one-region step
+/// gives each thread the places of the particle blocks it runs). The records within W outside [lo, hi) are saved
+/// in this thread's 1 / T of the scratch before the team's barrier; when they and a ring of W + 1 records do not
+/// fit there (a permutation that moves particles far), it is particles_permute_team. Returns past a barrier:
+/// 1 when it went by places, 0 by columns (the same on every thread).
+int particles_permute_team_range(particles *ps, const int *order, int W, void *scratch, size_t room, int lo, int hi);
 /// Copy every enabled column of src into dst (same layout); dst grows as needed.
 hearth_status particles_copy(particles *dst, const particles *src, hearth_error *err);
 /// Remove particles whose flag is non-zero, keeping order. Returns the number removed.
