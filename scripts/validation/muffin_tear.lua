@@ -1,0 +1,90 @@
+-- muffin_tear.lua: muffins.lua's cup with the muffin's crust switchable, for
+-- docs/validation.md ("The muffin's tear: a skin spent before it is a crust",
+-- #18, helper tear2). It runs scripts/scenes/baking/muffins.lua itself (same
+-- cup, same measures, same muffins.csv and damage.png), with
+-- h.library.paper.muffin / paper_oven.muffin changed by:
+--   dry_fracture  1: the preset's stretch to fracture over water (FRACTURE in
+--                 lua/hearth/dough.lua); 0: none (fracture_strain 100, raw
+--                 dough's), so only the set crumb's (fracture_strain_set) is left
+--   glass         an extra factor on E and tau_y below X/X0 = glass_at - 0.2,
+--                 1 above glass_at, log-linear between, times DRY's own factor
+--                 (1: the preset): a skin that much stiffer than its batter
+--   glass_at      see glass (0.65: the marshmallow's glass edge)
+--   set_strain    the set crumb's stretch to fracture at 70 degC (-1: the preset's 0.15)
+--   air_beta      factor on the oven air's heat transfer (Table 2's 75 W/(m^2 K))
+--   damage_frames 1: the run's PNG frames show damage (particles) instead of temperature
+--   hearth run scripts/validation/muffin_tear.lua --quiet --set cups=1 --set until_t=1.5 [--set dry_fracture=0] ...
+-- from the source root (or --set muffins=PATH to muffins.lua).
+local h = require "hearth"
+local D = require "hearth.dough"
+local P = h.params { dim = 2, dx = 0.004, until_t = 3, frames = 6, cups = 3, fill = 0.022, wall_mode = "slip",
+  dry_fracture = 1, glass = 1, glass_at = 0.65, set_strain = -1, air_beta = 1, damage_frames = 0,
+  muffins = "scripts/scenes/baking/muffins.lua" }
+
+-- muffins.lua's own h.params sees the values parsed here (it declares a subset of these names)
+h.params = function(defaults)
+  local Q = {}
+  for k in pairs(defaults) do Q[k] = P[k] end
+  return Q
+end
+
+-- DRY's factor at X/X0 = r (log-linear over its points, flat past its ends)
+local function dry_factor(pts, r)
+  if r <= pts[1][1] then return pts[1][2] end
+  for i = 2, #pts do
+    if r <= pts[i][1] then
+      return pts[i - 1][2] * (pts[i][2] / pts[i - 1][2]) ^ ((r - pts[i - 1][1]) / (pts[i][1] - pts[i - 1][1]))
+    end
+  end
+  return pts[#pts][2]
+end
+
+local paper, paper_oven = h.library.paper, h.library.paper_oven
+h.library.paper = setmetatable({}, { __index = function(_, name)
+  local p = paper[name]
+  if name ~= "muffin" then return p end
+  local base, curves, _, dry = D.preset("muffin")
+  if P.glass ~= 1 then -- one moisture curve (the core takes one a parameter): DRY's points times the glass
+    local lo, hi = P.glass_at - 0.2, P.glass_at
+    local rs = { lo, hi }
+    for _, pt in ipairs(dry.E) do rs[#rs + 1] = pt[1] end
+    table.sort(rs)
+    local pts = { irreversible = true, of = "moisture" }
+    for _, r in ipairs(rs) do
+      if r > 0 and r <= 1 and (#pts == 0 or r > pts[#pts][1]) then
+        local g = r <= lo and P.glass or r >= hi and 1 or P.glass ^ ((hi - r) / 0.2)
+        pts[#pts + 1] = { r, dry_factor(dry.E, r) * g }
+      end
+    end
+    p.E = base.E * h.curve(pts)
+    p.tau_y = h.curve(curves.tau_y) * h.curve(pts)
+  end
+  if P.dry_fracture == 0 then p.fracture_strain = base.fracture_strain end
+  if P.set_strain > 0 then
+    local st = curves.fracture_strain_set
+    p.fracture_strain_set = h.curve { { st[1][1], st[1][2] }, { st[2][1], P.set_strain }, irreversible = true }
+  end
+  return p
+end })
+h.library.paper_oven = setmetatable({}, { __index = function(_, name)
+  local o = paper_oven[name]
+  if name == "muffin" then o.beta = o.beta * P.air_beta end
+  return o
+end })
+
+-- the frames: damage instead of temperature
+if P.damage_frames == 1 then
+  local scene = h.scene
+  h.scene = function(o)
+    local s = scene(o)
+    local methods = getmetatable(s).__index
+    local run = methods.run
+    methods.run = function(self, r)
+      r.png = { field = "damage", path = "damage_%04d.png", kind = "particles", range = { 0, 1 } }
+      return run(self, r)
+    end
+    return s
+  end
+end
+
+dofile(P.muffins)
