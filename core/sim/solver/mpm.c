@@ -16,10 +16,13 @@
  * colour are two blocks apart, and a block's particles touch only itself and
  * the next block on each axis, so no two threads ever write the same node and
  * every node sums its contributions in the same order whatever the thread
- * count. No atomics. With more than one thread, the usual step (step_team)
- * keeps every block's tile instead and the grid update gathers each node's
- * sum from the tiles in the same colour order (mpm_p2g_gather.c): the same
- * bits, with one barrier where the colour phases take 2^dim.
+ * count. No atomics. With more than one thread, the usual 2D step
+ * (step_team) keeps every block's tile instead and the grid update gathers
+ * each node's sum from the tiles in the same colour order (mpm_p2g_gather.c):
+ * the same bits, with one barrier where the colour phases take 2^dim. 3D at
+ * more than one thread flushes each block after its neighbours of lower
+ * colour instead of a barrier per colour (p2g_wait_lower), and every phase
+ * hands out blocks from both ends (claim_take): the same bits.
  *
  * P2G scatters each particle into a dense 6^dim tile, then adds the tile into
  * its block and the block's +1 neighbours. The fields ride these passes when
@@ -1010,9 +1013,11 @@ static void step_team_rest(hearth_scene *s, double dt, const int gather, block_f
  * gathers each block's node sums from those tiles in colour order
  * (mpm_p2g_gather) before updating it: one barrier between them where the
  * colour phases took 2^dim and the grid update's loop one more (2D 11 -> 8
- * synchronisations a step, 3D 15 -> 8; threads_sync.sh). The same sums in
- * the same order: the same bits. Returns the fastest collider speed
- * (mpm_grid_update's). */
+ * synchronisations a step; threads_sync.sh). The same sums in the same
+ * order: the same bits. 3D at more than one thread keeps P2G's flush and
+ * orders it per block instead (claims_begin): with the sort's region, 14 -> 8
+ * synchronisations a step at the 32-cell bench. Returns the fastest collider
+ * speed (mpm_grid_update's). */
 static double step_team(hearth_scene *s, double dt, step_report *rep, const int gather) {
     mpm_claims cl;
     if (!gather) claims_begin(s, &cl); /* 3D at more than one thread (the gather is 2D's) */
