@@ -866,6 +866,73 @@ TEST(p2g_gather_matches_colour_phases) {
     hearth_set_threads(0);
 }
 
+/* 3D at more than one thread (mpm.c's claims): each phase hands out blocks
+ * from both ends of its range, and P2G orders each block's flush after its
+ * lower-coloured neighbours' instead of a barrier per colour. Three scenes
+ * that take every path of it: busy_scene (the one-region step, a slip
+ * collider, two materials), a block on a sticky plate with damping (the
+ * mirror terms in the tile, the damped update, the sticky ghost loops) and a
+ * ball in an oven (heat: P2G, the grid update and G2P in regions of their
+ * own). One thread, two and three (an odd thread takes from the front too),
+ * and two with HEARTH_MPM_COLOUR_PHASES's barriers: one hash per scene, and
+ * the claims really taken at two and three threads. */
+static hearth_scene *claims_scene(int kind) {
+    if (kind == 0) return busy_scene();
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dim = 3;
+    d.dx = 1.0 / 40;
+    hearth_error err;
+    if (kind == 1) {
+        d.damping = 3.0;
+        hearth_scene *s = fx_scene_def(&d);
+        const int m = fx_elastic(s, 5e4, 0.3, 1000);
+        const double c[3] = {0.5, 0.45, 0.5}, hh[3] = {0.15, 0.1, 0.1}, v[3] = {0.3, -1.5, 0.2};
+        fx_box(s, m, c, hh, 8, v);
+        const double fc[3] = {0.5, 0.25, 0.5}, fh[3] = {0.4, 0.1, 0.4}; /* its top touches the block from the start */
+        fx_box_collider(s, fc, fh, HEARTH_STICKY, 0.2);
+        return s;
+    }
+    d.oven_temperature = 180;
+    d.oven_beta = 30;
+    hearth_scene *s = fx_scene_def(&d);
+    const char *nm[] = {"E", "conductivity", "expansion"};
+    const double nv[] = {2e4, 0.4, 50};
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 3, &err);
+    const double c[3] = {0.5, 0.3, 0.5};
+    hearth_shape *ball = hearth_shape_sphere(c, 0.15);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = ball, bd.material = m, bd.temperature = 20;
+    hearth_scene_add_body(s, &bd, &err);
+    hearth_shape_free(ball);
+    return s;
+}
+
+TEST(determinism_threads_3d_claims) {
+    static const char *kinds[] = {"busy scene", "sticky plate, damped", "oven (heat)"};
+    static const int threads[] = {1, 2, 3, 2}, phases[] = {0, 0, 0, 1};
+    for (int kind = 0; kind < 3; kind++) {
+        uint64_t h[4];
+        for (int r = 0; r < 4; r++) {
+            hearth_set_threads(threads[r]);
+            hearth_scene *s = claims_scene(kind);
+            s->mpm->colour_phases = phases[r];
+            hearth_error err;
+            CHECK(s->ps.n >= SCENE_PARALLEL_MIN); /* so the step really runs on the threads */
+            CHECK(hearth_scene_step(s, 30, &err) == HEARTH_OK);
+            CHECK((s->mpm->claims_regions > 0) == (threads[r] > 1 && !phases[r]));
+            if (kind == 2) CHECK(s->ps.enabled & (1u << PC_TEMPERATURE));
+            for (int b = 0; b < s->mpm->nblocks; b++) CHECK(s->mpm->pbof[b] == -1); /* back to none between steps */
+            h[r] = hearth_scene_hash(s);
+            printf("  %s, %d thread(s)%s: %d particles, %d particle blocks, %ld regions with claims, hash %016llx\n", kinds[kind],
+                   threads[r], phases[r] ? ", colour phases" : "", s->ps.n, s->mpm->npb, s->mpm->claims_regions,
+                   (unsigned long long)h[r]);
+            hearth_scene_destroy(s);
+        }
+        CHECK(h[1] == h[0] && h[2] == h[0] && h[3] == h[0]);
+    }
+    hearth_set_threads(0);
+}
+
 /* A body force field adds to gravity: one that cancels it leaves a block at rest. */
 TEST(body_force) {
     hearth_scene *s = fx_scene(2, 1.0 / 32, 0, 1);
@@ -1437,6 +1504,6 @@ TEST(mpm_periodic_refusals) {
 TEST_MAIN(T(bspline_weights), T(transfer_conservation_2d), T(transfer_conservation_3d), T(transfer_pic_dissipates), T(rotating_disc), T(free_fall),
           T(vibrating_bar), T(determinism_threads), T(checkpoint_restore), T(guard_nan_plugin), T(guard_plugin_error),
           T(guard_cfl_and_rollback), T(colliders_contact), T(probe_fields), T(stress_tensor_components), T(scene_bad_input), T(alloc_failure_paths),
-          T(particles_optional_columns), T(body_force), T(determinism_threads_sticky_damped), T(p2g_gather_matches_colour_phases), T(guard_collider_drive), T(grip_holds_pulled_strip),
+          T(particles_optional_columns), T(body_force), T(determinism_threads_sticky_damped), T(p2g_gather_matches_colour_phases), T(determinism_threads_3d_claims), T(guard_collider_drive), T(grip_holds_pulled_strip),
           T(mpm_state_owned_by_solver), T(mpm_store_in_estimate), T(couette_lid_on_node_row), T(grip_cantilever_clamped_at_face), T(column_base_stress),
           T(mpm_periodic_shear_wave), T(mpm_periodic_conserves_momentum), T(mpm_periodic_refusals))

@@ -16,10 +16,13 @@
  * colour are two blocks apart, and a block's particles touch only itself and
  * the next block on each axis, so no two threads ever write the same node and
  * every node sums its contributions in the same order whatever the thread
- * count. No atomics. With more than one thread, the usual step (step_team)
- * keeps every block's tile instead and the grid update gathers each node's
- * sum from the tiles in the same colour order (mpm_p2g_gather.c): the same
- * bits, with one barrier where the colour phases take 2^dim.
+ * count. No atomics. With more than one thread, the usual 2D step
+ * (step_team) keeps every block's tile instead and the grid update gathers
+ * each node's sum from the tiles in the same colour order (mpm_p2g_gather.c):
+ * the same bits, with one barrier where the colour phases take 2^dim. 3D at
+ * more than one thread flushes each block after its neighbours of lower
+ * colour instead of a barrier per colour (p2g_wait_lower), and every phase
+ * hands out blocks from both ends (claim_take): the same bits.
  *
  * P2G scatters each particle into a dense 6^dim tile, then adds the tile into
  * its block and the block's +1 neighbours. The fields ride these passes when
@@ -50,6 +53,7 @@
 #include <float.h>
 #include <limits.h>
 #include <math.h>
+#include <sched.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -147,6 +151,112 @@ FORCE_INLINE void p2g_add2(double *p, v2d x) {
     memcpy(&y, p, sizeof y);
     y += x;
     memcpy(p, &y, sizeof y);
+}
+
+/* ---- 3D at more than one thread: claims from both ends, P2G's flushes in order ---- */
+
+/* Each phase's range of blocks [lo, hi) in one word, handed out one block at
+ * a time, even threads taking from the front and odd ones from the back: at
+ * two threads, thread 0 works the low-x end of every phase (the particle
+ * blocks, each colour's list and the active grid blocks are all in block
+ * order, x slowest) and thread 1 the high-x end, and they meet wherever the
+ * work splits, a block apart at most. So each grid node is written (P2G's
+ * eight colours, the grid update) and read (G2P) by the same core through
+ * the step, but at the seam between the two ends, where `dynamic` and
+ * `guided` handed blocks to either thread at random and about half of each
+ * node's cache lines went from core to core at each of its nine writes; the
+ * 32-cell bench's grid (about 0.7 MB) fits a core's L2, where one thread
+ * keeps it (issue 20, docs/performance.md "3D at 32 cells"). Which thread
+ * steps a block moves no bits. On the stack of the region's caller (its own
+ * cache lines: every claim writes one). */
+typedef struct mpm_claims {
+    unsigned long long colour[8], grid, g2p;
+} __attribute__((aligned(64))) mpm_claims;
+
+static unsigned long long claim_range(int lo, int hi) { return (unsigned)lo | (unsigned long long)(unsigned)hi << 32; }
+
+/* the next block of range *c from its front (back = 0) or back, or -1 once none is left */
+static int claim_take(unsigned long long *c, const int back) {
+    unsigned long long v = __atomic_load_n(c, __ATOMIC_RELAXED);
+    for (;;) {
+        const int lo = (int)(unsigned)v, hi = (int)(unsigned)(v >> 32);
+        if (lo >= hi) return -1;
+        const unsigned long long nv = back ? claim_range(lo, hi - 1) : claim_range(lo + 1, hi);
+        if (__atomic_compare_exchange_n(c, &v, nv, 0, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) return back ? hi - 1 : lo;
+    }
+}
+
+/* This thread's end of every range: odd threads take from the back. */
+static int claim_end(void) {
+#ifdef _OPENMP
+    return omp_get_thread_num() & 1;
+#else
+    return 0;
+#endif
+}
+
+/* The claims for a step's phases (3D, a team of more than one thread, the
+ * colour phases not asked for), or NULL: the phases then keep their
+ * schedules and P2G its colour barriers. */
+static mpm_claims *claims_begin(hearth_scene *s, mpm_claims *cl) {
+    mpm_state *m = s->mpm;
+    m->claims = NULL;
+    m->p2g_ordered = 0;
+#ifdef _OPENMP
+    if (s->g.dim != 3 || m->colour_phases || s->ps.n < SCENE_PARALLEL_MIN || omp_get_max_threads() < 2) return NULL;
+    for (int c = 0; c < 8; c++) cl->colour[c] = claim_range(m->colour_start[c], m->colour_start[c + 1]);
+    cl->grid = claim_range(0, s->g.nactive);
+    cl->g2p = claim_range(m->k_lo, m->k_hi);
+    m->claims = cl;
+    m->p2g_ordered = 1;
+    m->claims_regions++;
+    return cl;
+#else
+    (void)cl;
+    return NULL;
+#endif
+}
+
+static void claims_end(mpm_state *m) {
+    m->claims = NULL;
+    m->p2g_ordered = 0;
+}
+
+/* P2G's flushes in order without a barrier per colour (p2g_ordered): a
+ * block's tile reaches its own block and the +1 neighbours, so the blocks
+ * whose tiles share a node with it are its 26 neighbours, and each node sums
+ * from its (at most 8) source blocks in the order of their colours, as the
+ * colour phases did, when each block flushes only after its neighbours of
+ * lower colour have (flushed, release / acquire): the same sums in the same
+ * order, the same bits. Claims go colour by colour (a thread moves to the
+ * next colour once every block of this one is claimed), so a block waits
+ * only on blocks already claimed, which wait only on lower colours: no
+ * cycle. The tile, most of a block's work, is made before the wait, and a
+ * neighbour of lower colour was claimed earlier, so a wait is rare and
+ * short: it needs the other thread to be finishing a neighbour at the seam.
+ * Spins (pause), then yields the core to whoever holds the block. */
+static void p2g_wait_lower(const hearth_scene *s, const int bc[3]) {
+    const grid *g = &s->g;
+    const mpm_state *m = s->mpm;
+    const int cb = (bc[0] & 1) | (bc[1] & 1) << 1 | (bc[2] & 1) << 2;
+    for (int dx = -1; dx <= 1; dx++)
+        for (int dy = -1; dy <= 1; dy++)
+            for (int dz = -1; dz <= 1; dz++) {
+                const int c = cb ^ ((dx != 0) | (dy != 0) << 1 | (dz != 0) << 2);
+                const int x = bc[0] + dx, y = bc[1] + dy, z = bc[2] + dz;
+                if (c >= cb || x < 0 || y < 0 || z < 0 || x >= g->nb[0] || y >= g->nb[1] || z >= g->nb[2]) continue;
+                const int b = grid_block_id(g, x, y, z), q = m->pbof[b];
+                if (q < m->k_lo || q >= m->k_hi || m->pb[q].block != b) continue; /* no particles there (or not this rank's) */
+                for (int spin = 0; !__atomic_load_n(&m->partial[q].flushed, __ATOMIC_ACQUIRE); spin++) {
+                    if (spin < 4096) {
+#if defined(__x86_64__) || defined(__i386__)
+                        __builtin_ia32_pause();
+#endif
+                    } else {
+                        sched_yield();
+                    }
+                }
+            }
 }
 
 /* P2G's tile holds only the channels it writes: momentum, then heat, then
@@ -323,7 +433,8 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
         return;
     }
 
-    /* flush the tile into the block and its +1 neighbours */
+    /* flush the tile into the block and its +1 neighbours (after the lower colours' flushes there when ordered) */
+    if (st->p2g_ordered) p2g_wait_lower(s, bc);
     for (int a = 0; a < GRID_T; a++)
         for (int b = 0; b < GRID_T; b++)
             for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
@@ -340,6 +451,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 if (TWO)
                     for (int ch = 0; ch < 3; ch++) node[(CH_TF_M + ch) * NPB + l] += tile[(P2G_BM + ch) * TN + t];
             }
+    if (st->p2g_ordered) __atomic_store_n(&pp->flushed, 1, __ATOMIC_RELEASE);
 }
 
 typedef void (*block_fn)(hearth_scene *, int, double, double *);
@@ -383,6 +495,8 @@ static block_fn p2g_prepare(hearth_scene *s) {
     m->sticky_faces = 0;
     for (int c = 0; c < s->ncol; c++) m->sticky_faces |= s->cols[c].mode == HEARTH_STICKY;
     for (int k = 0; k < m->npb; k++) m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
+    if (m->p2g_ordered) /* where each block's neighbours are (p2g_wait_lower); back to -1 after P2G (p2g_team) */
+        for (int k = 0; k < m->npb; k++) m->pbof[m->pb[k].block] = k;
     if (s->def.two_field) return p2g_two_fns[p2g_heat(s)][water_now(s)]; /* 2D, no sticky face (mpm_step) */
     return p2g_fns[m->sticky_faces][s->g.dim == 3][p2g_heat(s)][water_now(s)];
 }
@@ -397,6 +511,16 @@ static block_fn p2g_prepare(hearth_scene *s) {
 static void p2g_team(hearth_scene *s, block_fn fn, double dt) {
     mpm_state *m = s->mpm;
     double tile[P2G_NCH * GRID_T * GRID_T * GRID_T];
+    if (m->claims) { /* 3D at more than one thread: the colours in order, one barrier at the end (p2g_wait_lower) */
+        const int back = claim_end();
+        for (int col = 0; col < 8; col++)
+            for (int q; (q = claim_take(&m->claims->colour[col], back)) >= 0;)
+                if (m->colour_pb[q] >= m->k_lo && m->colour_pb[q] < m->k_hi) fn(s, m->colour_pb[q], dt, tile); /* this rank's */
+#pragma omp barrier
+#pragma omp for schedule(static) nowait
+        for (int k = 0; k < m->npb; k++) m->pbof[m->pb[k].block] = -1;
+        return;
+    }
     for (int col = 0; col < 8; col++) {
         const int a = m->colour_start[col], b = m->colour_start[col + 1];
         if (a == b) continue; /* 2D fills 4 colours of 8: no barrier for the rest (every thread sees the same a, b) */
@@ -409,9 +533,12 @@ static void p2g_team(hearth_scene *s, block_fn fn, double dt) {
 
 void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
     (void)rep;
+    mpm_claims cl;
+    claims_begin(s, &cl);
     const block_fn fn = p2g_prepare(s);
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     p2g_team(s, fn, dt);
+    claims_end(s->mpm);
 }
 
 /* ---- the one-region step's share-out ---------------------------------- */
@@ -571,6 +698,7 @@ static void grid_update_team(hearth_scene *s, double dt, double *vcol2, const in
 #pragma omp for schedule(dynamic, 4) nowait
         for (int k = 0; k < g->nactive; k++) v2 = fmax(v2, grid_update_block(s, k, dt, damp, s->def.damping > 0, CH_TF_M));
     }
+    mpm_claims *cl = s->mpm->claims; /* 3D at more than one thread: from both ends (claim_take), never gathering */
     if (t) { /* the one-region step: chunk by chunk, each first to its P2G's thread (span_next) */
         const double damp = s->def.damping > 0 ? 1.0 / (1.0 + s->def.damping * dt) : 1.0;
         span_walk w = span_walk_start(t->T);
@@ -581,6 +709,13 @@ static void grid_update_team(hearth_scene *s, double dt, double *vcol2, const in
                 v2 = fmax(v2, s->def.damping > 0 ? grid_update_block(s, k, dt, damp, 1, CH_M) : grid_update_block(s, k, dt, 1.0, 0, CH_M));
             }
         span_count(s->mpm, MPM_SPAN_GRID, &w);
+    } else if (cl) {
+        const int back = claim_end(), DAMP = s->def.damping > 0;
+        const double damp = DAMP ? 1.0 / (1.0 + s->def.damping * dt) : 1.0; /* as below */
+        if (DAMP)
+            for (int k; (k = claim_take(&cl->grid, back)) >= 0;) v2 = fmax(v2, grid_update_block(s, k, dt, damp, 1, CH_M));
+        else
+            for (int k; (k = claim_take(&cl->grid, back)) >= 0;) v2 = fmax(v2, grid_update_block(s, k, dt, 1.0, 0, CH_M));
     } else if (s->def.damping > 0) {
         /* Velocity damping for static problems, implicit in the drag (v' = v + dt (g - c v')) so any c dt
          * is stable; an explicit factor 1 - c dt would reverse velocities past c dt = 1. It acts after
@@ -618,8 +753,11 @@ double mpm_grid_update(hearth_scene *s, double dt) {
     double vcol2 = 0; /* the fastest collider at a node with mass (the guard's driven energy) */
     /* a body force that is not thread-safe (a Lua function) keeps the update on one thread */
     const int par = s->ps.n >= SCENE_PARALLEL_MIN && !s->body_force_serial;
+    mpm_claims cl;
+    if (par) claims_begin(s, &cl);
 #pragma omp parallel if (par)
     grid_update_team(s, dt, &vcol2, 0, NULL);
+    claims_end(s->mpm);
     return sqrt(vcol2);
 }
 
@@ -899,6 +1037,11 @@ static block_fn g2p_fn(const hearth_scene *s) {
 static void g2p_team(hearth_scene *s, block_fn fn, double dt) {
     const mpm_state *m = s->mpm;
     double tile[6 * GRID_T * GRID_T * GRID_T];
+    if (m->claims) { /* 3D at more than one thread: from both ends, the same thread on the same end as P2G (claim_take) */
+        const int back = claim_end();
+        for (int k; (k = claim_take(&m->claims->g2p, back)) >= 0;) fn(s, k, dt, tile);
+        return;
+    }
 #pragma omp for schedule(guided) nowait
     for (int k = m->k_lo; k < m->k_hi; k++) fn(s, k, dt, tile); /* this rank's blocks (all on one rank) */
 }
@@ -941,8 +1084,11 @@ static void g2p_reduce(hearth_scene *s, step_report *rep) {
 
 void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
     const block_fn fn = g2p_fn(s);
+    mpm_claims cl;
+    claims_begin(s, &cl);
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     g2p_team(s, fn, dt);
+    claims_end(s->mpm);
     g2p_reduce(s, rep);
 }
 
@@ -978,10 +1124,14 @@ static void step_team_rest(hearth_scene *s, double dt, const int gather, block_f
  * gathers each block's node sums from those tiles in colour order
  * (mpm_p2g_gather) before updating it: one barrier between them where the
  * colour phases took 2^dim and the grid update's loop one more (2D 11 -> 8
- * synchronisations a step, 3D 15 -> 8; threads_sync.sh). The same sums in
- * the same order: the same bits. Returns the fastest collider speed
- * (mpm_grid_update's). */
+ * synchronisations a step; threads_sync.sh). The same sums in the same
+ * order: the same bits. 3D at more than one thread keeps P2G's flush and
+ * orders it per block instead (claims_begin): with the sort's region, 14 -> 8
+ * synchronisations a step at the 32-cell bench. Returns the fastest collider
+ * speed (mpm_grid_update's). */
 static double step_team(hearth_scene *s, double dt, step_report *rep, const int gather) {
+    mpm_claims cl;
+    if (!gather) claims_begin(s, &cl); /* 3D at more than one thread (the gather is 2D's) */
     const block_fn p2g = p2g_prepare(s), g2p = g2p_fn(s);
     mpm_state *m = s->mpm;
     const block_fn store = p2g_store_fns[thermal_active(s)][m->sticky_faces][s->g.dim == 3];
@@ -999,6 +1149,7 @@ static double step_team(hearth_scene *s, double dt, step_report *rep, const int 
         }
         step_team_rest(s, dt, gather, g2p, &vcol2, NULL);
     }
+    claims_end(m);
     g2p_reduce(s, rep);
     return sqrt(vcol2);
 }

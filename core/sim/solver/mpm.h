@@ -28,6 +28,7 @@ typedef struct pb_partial {
     /* water.c's per-block sums, written by G2P's block loop and reduced by water_finish: they stay
      * here with the other partials so a step's reduction is one array in block order */
     double water_removed, water_dmax, water_emax;
+    int flushed; /* 3D's ordered P2G (mpm.c's p2g_team): the block's tile is in the nodes (release / acquire) */
 } pb_partial;
 
 typedef struct mpm_state {
@@ -63,6 +64,12 @@ typedef struct mpm_state {
     size_t tiles_cap;
     int *pbof;
     int colour_phases;      /* HEARTH_MPM_COLOUR_PHASES=1 at init: step_team keeps the colour phases at any thread count */
+    /* 3D, more than one thread (mpm.c): the blocks each phase hands out from both ends of its range, and whether
+     * P2G orders each block's flush after its lower-coloured neighbours' instead of a barrier per colour (both
+     * set by the caller of a region for its span, NULL and 0 otherwise) */
+    struct mpm_claims *claims;
+    int p2g_ordered;
+    long claims_regions;    /* regions that ran with them (for the tests) */
     int colour_start[9];
     pb_partial *partial;
     int sticky_faces;       /* this step's scene has a sticky collider: P2G adds its faces' reaction (p2g_mirror) */

@@ -125,7 +125,8 @@ void mpm_p2g_gather(hearth_scene *s, int k) {
 /* Whether step_team gathers (a 2D team of more than one thread), and room in
  * the tile store for this step's particle blocks when it does. One thread keeps
  * the colour phases' flush: the same bits, without the store's traffic. 3D
- * keeps them too: on a quiet machine the gather gave 3D at 32 cells nothing
+ * keeps the flush too, ordered per block at more than one thread (mpm.c's
+ * p2g_wait_lower): on a quiet machine the gather gave 3D at 32 cells nothing
  * (2 threads / 1: 1.78x against 1.79x with the colour phases, threads.sh)
  * for 19 bytes a particle of store (237.6 -> 256.8, over issue 20's 240),
  * where 2D at 128 cells went 1.40x -> 1.51x for 8 bytes

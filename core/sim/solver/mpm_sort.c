@@ -482,13 +482,19 @@ static hearth_status sort_begin(hearth_scene *s, int *Tc, hearth_error *err) {
 /* The team's shared part, for a region of Tc threads. The grid's activation
  * goes in the region when nothing changes the marks after it (a periodic
  * axis's ghosts, a rank's halo) and it costs no barrier there (2D) or the
- * box is big (its own two regions took six synchronisations a step). */
+ * box is big (its own two regions took six synchronisations a step), or in
+ * 3D, where it costs one barrier: serially it zeroed every active block
+ * (about 0.7 MB at the 32-cell bench) on one thread while the other slept,
+ * and the high-x half's lines then moved to the core that writes them in
+ * P2G (mpm.c's claims: thread c zeroes chunk c of the block table, the end
+ * of the box it works through the step). HEARTH_MPM_COLOUR_PHASES=1 keeps the
+ * serial activation of small boxes with the rest of the old 3D step. */
 static void team_setup(hearth_scene *s, int Tc, mpm_sort_team *t, hearth_error *err) {
     const mpm_state *m = s->mpm;
     const grid *g = &s->g;
     const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
     *t = (mpm_sort_team){.T = Tc, .pbcap = m->pbcap, .gcap = g->cap < g->acap ? g->cap : g->acap, .err = err};
-    t->activate = Tc > 1 && !wrap && m->nranks == 1 && (g->dim == 2 || m->nblocks >= GRID_ACTIVATE_PARALLEL_MIN);
+    t->activate = Tc > 1 && !wrap && m->nranks == 1 && (g->dim == 2 || m->nblocks >= GRID_ACTIVATE_PARALLEL_MIN || !m->colour_phases);
 }
 
 /* After the count and lists, one way or the other: the colour lists, the marks' extra blocks, the grid. */
