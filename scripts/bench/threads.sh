@@ -12,6 +12,13 @@
 # CPU time from /proc/stat less this script's runs', in cores: above 0.2,
 # read the ratios with care, and the script says so). --quick runs the
 # smallest size of each dimension only.
+# Each pair also runs two one-thread benches at once, in separate processes
+# that share nothing (the "twins"): how much slower each runs than one alone
+# is what the machine itself takes from a second busy core (two virtual
+# CPUs on one physical core, a shared cache or memory bus, clocks), and
+# 2 / that slowdown is the two-thread ratio the machine allows (the ceiling
+# column). A two-thread ratio near its ceiling has nothing left to win in
+# hearth; one well below it has.
 # The machine-independent side of the same question, the instructions the
 # step leaves outside parallel regions, is report.sh's serial-share rows.
 # Uses build/release/app/hearth (made when missing) unless --hearth is given.
@@ -31,7 +38,7 @@ while [ $# -gt 0 ]; do
     --pairs) pairs=$2; shift ;;
     --hearth) hearth=$2; shift ;;
     --quick) quick=1 ;;
-    -h | --help) sed -n 2,23p "$0"; exit 0 ;;
+    -h | --help) sed -n 2,32p "$0"; exit 0 ;;
     *) echo "threads.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
     shift
@@ -64,6 +71,19 @@ def bench(dim, cells, steps, threads):
         sys.exit(f"threads.sh: asked for {threads} threads, the bench ran {j['threads']} (an OpenMP build is needed)")
     return j
 
+def twins(dim, cells, steps):
+    """Two one-thread benches started together, as separate processes: the slower one's rate."""
+    cmd = [hearth, "bench", "--threads", "1", "--dim", str(dim), "--cells", str(cells), "--steps", str(steps)]
+    ps = [subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=dict(E, OMP_WAIT_POLICY="passive"))
+          for _ in range(2)]
+    rates = []
+    for p in ps:
+        out, err = p.communicate()
+        if p.returncode:
+            sys.exit(f"threads.sh: hearth bench --dim {dim} --cells {cells} (twins) failed: {err.strip()}")
+        rates.append(json.loads(out)["particle_steps_per_s"])
+    return min(rates)
+
 def cpu_busy():
     """Seconds of CPU time the whole machine has spent busy (not idle or waiting on I/O), and this script's children's."""
     f = [int(x) for x in open("/proc/stat").readline().split()[1:]]
@@ -76,23 +96,26 @@ if E.get("HEARTH_MPM_COLOUR_PHASES"):
     spin += f", HEARTH_MPM_COLOUR_PHASES={E['HEARTH_MPM_COLOUR_PHASES']}"
 print(f"threads.sh: {hearth}, {os.cpu_count()} cores, {pairs} interleaved pairs a size, OMP_WAIT_POLICY=passive{spin}; "
       f"load average {os.getloadavg()[0]:.1f} at the start", flush=True)
-print("| dim | cells | particles | steps | 2 threads / 1 (median) | min-max | pairs | other processes' CPU (cores) |")
-print("|---:|---:|---:|---:|---:|---:|---|---:|")
+print("| dim | cells | particles | steps | 2 threads / 1 (median) | min-max | pairs | twins' slowdown (median) | ceiling | other processes' CPU (cores) |")
+print("|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|")
 busy = False
 for dim, cells in sizes:
     n = bench(dim, cells, 1, 1)["particles"]
     steps = max(5, int((3e6 if dim == 2 else 1.5e6) / n * 4))  # about a second a run at one thread
     m0, c0, t0 = *cpu_busy(), time.monotonic()
-    ratios = []
+    ratios, slow = [], []
     for _ in range(pairs):
         a = bench(dim, cells, steps, 1)["particle_steps_per_s"]
         b = bench(dim, cells, steps, 2)["particle_steps_per_s"]
         ratios.append(b / a)
+        slow.append(a / twins(dim, cells, steps))
     m1, c1, t1 = *cpu_busy(), time.monotonic()
+    # the twins' own CPU is this script's children's too, so it is not counted as other processes'
     other = max(0.0, (m1 - m0) - (c1 - c0)) / (t1 - t0)
     busy |= other > 0.2
+    sd = statistics.median(slow)
     print(f"| {dim}D | {cells} | {n} | {steps} | {statistics.median(ratios):.2f}x | {min(ratios):.2f}-{max(ratios):.2f} | "
-          + " ".join(f"{r:.2f}" for r in ratios) + f" | {other:.2f} |", flush=True)
+          + " ".join(f"{r:.2f}" for r in ratios) + f" | {sd:.2f}x | {2 / sd:.2f}x | {other:.2f} |", flush=True)
 if busy:
     print("threads.sh: other processes used more than 0.2 of a core while it ran: they shared the cores, so these "
           "ratios measure the machine as much as hearth")
