@@ -94,7 +94,8 @@ D.goods = {
     -- rheology: short doughs are stiffer than bread dough (G' 1e4-1e5 Pa, Dobraszczyk & Morgenstern 2003's range for
     -- doughs); E = 1e5, yield 500 Pa, viscosity 1e5 Pa s; the cookie spreads as the fat melts (Fig. 8's dip)
     E = 1e5, nu = 0.3, tau_y = 500, mu = 1e5,
-    -- CO2 as bread's: the paper cookie's over cookies.lua's 3 s
+    -- CO2 as bread's: the gas the paper cookie's rate makes in 3 s (cookies.lua's bake when this was chosen; it
+    -- bakes 5 s since session 33 and the amount here stays as chosen), spread over the real bake
     gas_rate = 0.015 / 600 * 3 / 660, reaction_temperature = 40, reaction_width = 20, porosity = 0.1,
     expansion = 0.1, dough_temperature = 20,
     -- the set: a sugar-snap dough's gluten glass transition at 71-78 degC, no starch gelatinisation (lua/hearth/dough.lua,
@@ -114,7 +115,7 @@ D.goods = {
     -- it stands in its cup while it heats), soft to 55 degC and set by 70 degC (lua/hearth/dough.lua, MUFFIN_SET,
     -- the same curve as h.library.paper.muffin's: a batter thickens only at starch gelatinisation)
     E = 1e4, nu = 0.3, tau_y = 20, mu = 100, max_porosity = 0.6, curve = "muffin",
-    -- CO2 as bread's: the paper muffin's over muffins.lua's 3 s
+    -- CO2 as bread's: the gas the paper muffin's rate makes in muffins.lua's 3 s, spread over the real bake
     gas_rate = 0.03 / 600 * 2.5 * 3 / 1320, reaction_temperature = 40, reaction_width = 20, porosity = 0.1,
     expansion = 0.1, dough_temperature = 20,
     oven_temperature = 180, oven_beta = 30, pan_temperature = 180, pan_beta = 100,
