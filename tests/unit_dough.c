@@ -617,6 +617,35 @@ TEST(dough_fracture_stretch_rule) {
     CHECK(dend[3] < 1e-12);                        /* a uniform dilation is pores, not a crack (roundoff only) */
 }
 
+/* An elastic point (tau_y 1e9) in pure shear at rate a (L = diag(a, -a, 0)),
+ * 30 steps of dt 1e-3 under the stretch rule, against the closed form of the
+ * damage summed here with strain to fracture want_ef: returns the largest
+ * difference over the steps, and the final damage in *d_end. */
+static double shear_damage_error(const hearth_material *m, const double *p, double want_ef, double *d_end) {
+    const double dt = 1e-3, a = 5.0;
+    double st[NSTATE], F[9], tau[9], L[9] = {0};
+    L[0] = a, L[4] = -a;
+    m->init(p, st);
+    t3_identity(F);
+    double worst = 0, want = 0, h0 = 0, h1 = 0;
+    for (int k = 1; k <= 30; k++) {
+        double f[9], Fn[9];
+        for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
+        t3_mul(f, F, Fn);
+        t3_copy(Fn, F);
+        hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
+        memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
+        CHECK(m->stress(&pt, tau) == 0);
+        h0 += log1p(a * dt), h1 += log1p(-a * dt);
+        const double mean = (h0 + h1) / 3, e0 = h0 - mean, e1 = h1 - mean, e2 = -mean;
+        const double ne = sqrt(e0 * e0 + e1 * e1 + e2 * e2);
+        if (ne > 0 && want < 1) want = fmin(1, fmax(0, want + sqrt(2.0 / 3.0) * (e0 * a - e1 * a) / ne * dt / want_ef));
+        worst = fmax(worst, fabs(m->damage(p, st) - want));
+    }
+    *d_end = m->damage(p, st);
+    return worst;
+}
+
 /* The set crumb's strain to fracture (fracture_strain_set, the header's "the
  * set crumb"): under the stretch rule a point's strain to fracture is the
  * smaller of fracture_strain and fracture_strain_set (when > 0). The same
@@ -628,33 +657,15 @@ TEST(dough_fracture_set_takes_smaller) {
     const hearth_material *m = dough();
     CHECK(m != NULL && m->damage != NULL);
     if (!m || !m->damage) return;
-    const double dt = 1e-3, a = 5.0;
     const double efs[3] = {100, 0.2, 100}, sets[3] = {0.2, 5, 0}, want_ef[3] = {0.2, 0.2, 100};
     for (int c = 0; c < 3; c++) {
         const double p[NP] = {2e3, 0.3, 1e9, 0, 0.5, 500, 1, efs[c], 1, sets[c]};
-        double st[NSTATE], F[9], tau[9], L[9] = {0};
-        L[0] = a, L[4] = -a;
-        m->init(p, st);
-        t3_identity(F);
-        double worst = 0, want = 0, h0 = 0, h1 = 0;
-        for (int k = 1; k <= 30; k++) {
-            double f[9], Fn[9];
-            for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
-            t3_mul(f, F, Fn);
-            t3_copy(Fn, F);
-            hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
-            memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
-            CHECK(m->stress(&pt, tau) == 0);
-            h0 += log1p(a * dt), h1 += log1p(-a * dt);
-            const double mean = (h0 + h1) / 3, e0 = h0 - mean, e1 = h1 - mean, e2 = -mean;
-            const double ne = sqrt(e0 * e0 + e1 * e1 + e2 * e2);
-            if (ne > 0 && want < 1) want = fmin(1, fmax(0, want + sqrt(2.0 / 3.0) * (e0 * a - e1 * a) / ne * dt / want_ef[c]));
-            worst = fmax(worst, fabs(m->damage(p, st) - want));
-        }
-        printf("  case %d (fracture_strain %g, fracture_strain_set %g): damage %.6f, closed form %.6f, largest error %.2e\n",
-               c, efs[c], sets[c], m->damage(p, st), want, worst);
+        double d;
+        const double worst = shear_damage_error(m, p, want_ef[c], &d);
+        printf("  case %d (fracture_strain %g, fracture_strain_set %g): damage %.6f, largest error against the closed "
+               "form %.2e\n", c, efs[c], sets[c], d, worst);
         CHECK(worst <= 1e-9);
-        CHECK(c == 2 ? want < 0.01 : want > 0.5); /* the cases tell the two strains apart */
+        CHECK(c == 2 ? d < 0.01 : d > 0.5); /* the cases tell the two strains apart */
     }
 }
 
@@ -670,39 +681,19 @@ TEST(dough_fracture_unset_gates_water_brittleness) {
     const hearth_material *m = dough();
     CHECK(m != NULL && m->damage != NULL);
     if (!m || !m->damage) return;
-    const double dt = 1e-3, a = 5.0;
     const double unset[4] = {0, 0.5, 1, 1}, sets[4] = {0, 0, 0, 0.2}, want_ef[4] = {0.2, 0.4, INFINITY, 0.2};
     double dend[4];
     for (int c = 0; c < 4; c++) {
         const double p[NP] = {2e3, 0.3, 1e9, 0, 0.5, 500, 1, 0.2, 1, sets[c], 0, 0, unset[c]};
-        double st[NSTATE], F[9], tau[9], L[9] = {0};
-        L[0] = a, L[4] = -a;
-        m->init(p, st);
-        t3_identity(F);
-        double worst = 0, want = 0, h0 = 0, h1 = 0;
-        for (int k = 1; k <= 30; k++) {
-            double f[9], Fn[9];
-            for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
-            t3_mul(f, F, Fn);
-            t3_copy(Fn, F);
-            hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
-            memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
-            CHECK(m->stress(&pt, tau) == 0);
-            h0 += log1p(a * dt), h1 += log1p(-a * dt);
-            const double mean = (h0 + h1) / 3, e0 = h0 - mean, e1 = h1 - mean, e2 = -mean;
-            const double ne = sqrt(e0 * e0 + e1 * e1 + e2 * e2);
-            if (ne > 0 && want < 1) want = fmin(1, fmax(0, want + sqrt(2.0 / 3.0) * (e0 * a - e1 * a) / ne * dt / want_ef[c]));
-            worst = fmax(worst, fabs(m->damage(p, st) - want));
-        }
-        dend[c] = m->damage(p, st);
-        printf("  case %d (fracture_unset %g, fracture_strain_set %g): damage %.6f, closed form %.6f, largest error %.2e\n",
-               c, unset[c], sets[c], dend[c], want, worst);
+        const double worst = shear_damage_error(m, p, want_ef[c], &dend[c]);
+        printf("  case %d (fracture_unset %g, fracture_strain_set %g): damage %.6f, largest error against the closed "
+               "form %.2e\n", c, unset[c], sets[c], dend[c], worst);
         CHECK(worst <= 1e-9);
     }
-    CHECK(dend[0] > 0.5);                               /* dried and set: the skin spends its stretch */
-    CHECK(fabs(dend[1] - 0.5 * dend[0]) <= 1e-9);       /* half set: half the brittleness */
-    CHECK(dend[2] == 0);                                /* dried but raw: leathery, nothing */
-    CHECK(fabs(dend[3] - dend[0]) <= 1e-9);             /* the set crumb's strain is not gated */
+    CHECK(dend[0] > 0.5);                         /* dried and set: the skin spends its stretch */
+    CHECK(fabs(dend[1] - 0.5 * dend[0]) <= 1e-9); /* half set: half the brittleness */
+    CHECK(dend[2] == 0);                          /* dried but raw: leathery, nothing */
+    CHECK(fabs(dend[3] - dend[0]) <= 1e-9);       /* the set crumb's strain is not gated */
 }
 
 /* The crack band (crack_opening w_c, crack_band h; the header's "the crack
