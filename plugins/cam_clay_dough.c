@@ -152,6 +152,31 @@
  * do not multiply (a dried crust that also sets is not 100 times more
  * brittle), the weaker one rules. Its temperature curve is irreversible in
  * the preset (lua/hearth/dough.lua, SET), so it follows the set's history.
+ * The heat-set (fracture_unset; issue #18, helper crisp): drying alone does
+ * not make a crust brittle. A batter or dough film that dries before the heat
+ * has gelatinised its starch and set its gluten is a leathery film that
+ * stretches; a crust is crisp when that heat-set starch-protein network is
+ * dried below its glass transition (state diagrams over water: Roos & Karel
+ * 1991, Food Technol. 45(12):66; a crust forms, sets and dries under the
+ * heat: Vanin, Lucas & Trystram 2009, Trends Food Sci. Technol. 20:333; the
+ * steam of the bake changes the surface's starch gelatinisation and
+ * protein-starch network and with them the crust's failure force:
+ * Altamirano-Fortoul, Le-Bail, Chevallier & Rosell 2012, J. Food Eng.
+ * 108:128, from its abstract). A caveat: a crust's starch gelatinises only
+ * in part for want of water (granular starch remains: Primo-Martin, van
+ * Nieuwenhuijzen, Hamer & van Vliet 2007, J. Cereal Sci. 45:219, from its
+ * abstract), so "set" is the heat's history, not a full gelatinisation.
+ * Under the stretch rule the water's brittleness 1 / fracture_strain counts
+ * times the point's set fraction 1 - fracture_unset: its strain to fracture
+ * is fracture_strain / (1 - fracture_unset), none while raw (fracture_unset
+ * = 1). Given a temperature curve, irreversible (the core evaluates it at the
+ * highest temperature reached), it falls over the set's temperatures (the
+ * preset's: the points of fracture_strain_set). It does not touch
+ * fracture_strain_set, which is the set itself. A plugin parameter and not a
+ * product of the core's temperature curve and moisture factor: those
+ * multiply the value, and a point raw and dry would need fracture_strain
+ * above its range (100 over the glassy 0.02). fracture_unset = 0 (the
+ * default): the rule as it was, bit for bit.
  *
  * The crack band (crack_opening, crack_band; issue #18, helper tear): under
  * the stretch rule alone a point keeps its whole tension until D = 1 and
@@ -208,7 +233,7 @@
 #endif
 
 enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH,
-       P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, P_COUNT };
+       P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, P_FRACTURE_UNSET, P_COUNT };
 
 /* Defaults: the cookie column of Ding et al. Table 2 (E 4e4, tau_y 20,
  * eta 500, density 500); nu is not in Table 2. */
@@ -249,6 +274,11 @@ static const hearth_param params[P_COUNT] = {
                       "the crack band's width h, the point's size (a scene's h.material gets its cell size when the "
                       "preset gives 0); softening needs both crack_opening and crack_band > 0",
                       0, 0, 10},
+    [P_FRACTURE_UNSET] = {"fracture_unset", "1",
+                          "how far the point is from its heat-set, 1 raw to 0 set (give it a temperature curve, "
+                          "irreversible): under fracture_stretch = 1 its fracture_strain counts as fracture_strain / "
+                          "(1 - fracture_unset), so a skin that dries before it sets stretches as leather; 0 = set",
+                          0, 0, 1},
 };
 
 enum { S_XX = HEARTH_SYM_XX, S_YY = HEARTH_SYM_YY, S_ZZ = HEARTH_SYM_ZZ, S_XY = HEARTH_SYM_XY, S_YZ = HEARTH_SYM_YZ,
@@ -540,6 +570,8 @@ static double band_strain(const double *prm) { /* w_c / h, 0 without a crack ban
 static void fracture_stretch_update(const double *prm, double *st, double nd, double dt) {
     double ef = prm[P_FRACTURE_STRAIN];
     if (!(ef > 0) || st[S_DAMAGE] >= 1 || !(nd == nd)) return;
+    const double un = prm[P_FRACTURE_UNSET]; /* the heat-set's share of the water's brittleness (header) */
+    if (un > 0) ef = un < 1 ? ef / (1 - un) : HUGE_VAL;
     const double es = prm[P_FRACTURE_STRAIN_SET]; /* the set crumb's (header, "the set crumb") */
     if (es > 0 && es < ef) ef = es;
     const double de = 0.816496580927726 * nd * dt; /* sqrt(2/3) N : D dt, the stretch along N */

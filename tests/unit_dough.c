@@ -20,7 +20,7 @@
 #include "plugin_fixture.h"
 
 enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH,
-       P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, NP };
+       P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, P_FRACTURE_UNSET, NP };
 enum { NSTATE = 8 };
 
 static const hearth_material *dough(void) { return load_material("cam_clay_dough"); }
@@ -617,6 +617,35 @@ TEST(dough_fracture_stretch_rule) {
     CHECK(dend[3] < 1e-12);                        /* a uniform dilation is pores, not a crack (roundoff only) */
 }
 
+/* An elastic point (tau_y 1e9) in pure shear at rate a (L = diag(a, -a, 0)),
+ * 30 steps of dt 1e-3 under the stretch rule, against the closed form of the
+ * damage summed here with strain to fracture want_ef: returns the largest
+ * difference over the steps, and the final damage in *d_end. */
+static double shear_damage_error(const hearth_material *m, const double *p, double want_ef, double *d_end) {
+    const double dt = 1e-3, a = 5.0;
+    double st[NSTATE], F[9], tau[9], L[9] = {0};
+    L[0] = a, L[4] = -a;
+    m->init(p, st);
+    t3_identity(F);
+    double worst = 0, want = 0, h0 = 0, h1 = 0;
+    for (int k = 1; k <= 30; k++) {
+        double f[9], Fn[9];
+        for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
+        t3_mul(f, F, Fn);
+        t3_copy(Fn, F);
+        hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
+        memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
+        CHECK(m->stress(&pt, tau) == 0);
+        h0 += log1p(a * dt), h1 += log1p(-a * dt);
+        const double mean = (h0 + h1) / 3, e0 = h0 - mean, e1 = h1 - mean, e2 = -mean;
+        const double ne = sqrt(e0 * e0 + e1 * e1 + e2 * e2);
+        if (ne > 0 && want < 1) want = fmin(1, fmax(0, want + sqrt(2.0 / 3.0) * (e0 * a - e1 * a) / ne * dt / want_ef));
+        worst = fmax(worst, fabs(m->damage(p, st) - want));
+    }
+    *d_end = m->damage(p, st);
+    return worst;
+}
+
 /* The set crumb's strain to fracture (fracture_strain_set, the header's "the
  * set crumb"): under the stretch rule a point's strain to fracture is the
  * smaller of fracture_strain and fracture_strain_set (when > 0). The same
@@ -628,34 +657,43 @@ TEST(dough_fracture_set_takes_smaller) {
     const hearth_material *m = dough();
     CHECK(m != NULL && m->damage != NULL);
     if (!m || !m->damage) return;
-    const double dt = 1e-3, a = 5.0;
     const double efs[3] = {100, 0.2, 100}, sets[3] = {0.2, 5, 0}, want_ef[3] = {0.2, 0.2, 100};
     for (int c = 0; c < 3; c++) {
         const double p[NP] = {2e3, 0.3, 1e9, 0, 0.5, 500, 1, efs[c], 1, sets[c]};
-        double st[NSTATE], F[9], tau[9], L[9] = {0};
-        L[0] = a, L[4] = -a;
-        m->init(p, st);
-        t3_identity(F);
-        double worst = 0, want = 0, h0 = 0, h1 = 0;
-        for (int k = 1; k <= 30; k++) {
-            double f[9], Fn[9];
-            for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
-            t3_mul(f, F, Fn);
-            t3_copy(Fn, F);
-            hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
-            memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
-            CHECK(m->stress(&pt, tau) == 0);
-            h0 += log1p(a * dt), h1 += log1p(-a * dt);
-            const double mean = (h0 + h1) / 3, e0 = h0 - mean, e1 = h1 - mean, e2 = -mean;
-            const double ne = sqrt(e0 * e0 + e1 * e1 + e2 * e2);
-            if (ne > 0 && want < 1) want = fmin(1, fmax(0, want + sqrt(2.0 / 3.0) * (e0 * a - e1 * a) / ne * dt / want_ef[c]));
-            worst = fmax(worst, fabs(m->damage(p, st) - want));
-        }
-        printf("  case %d (fracture_strain %g, fracture_strain_set %g): damage %.6f, closed form %.6f, largest error %.2e\n",
-               c, efs[c], sets[c], m->damage(p, st), want, worst);
+        double d;
+        const double worst = shear_damage_error(m, p, want_ef[c], &d);
+        printf("  case %d (fracture_strain %g, fracture_strain_set %g): damage %.6f, largest error against the closed "
+               "form %.2e\n", c, efs[c], sets[c], d, worst);
         CHECK(worst <= 1e-9);
-        CHECK(c == 2 ? want < 0.01 : want > 0.5); /* the cases tell the two strains apart */
+        CHECK(c == 2 ? d < 0.01 : d > 0.5); /* the cases tell the two strains apart */
     }
+}
+
+/* The heat-set (fracture_unset, the header's "the heat-set"): under the
+ * stretch rule the water's strain to fracture counts as fracture_strain /
+ * (1 - fracture_unset), and the set crumb's (fracture_strain_set) as it is.
+ * The same elastic point in pure shear as dough_fracture_set_takes_smaller,
+ * fracture_strain 0.2 (a dried skin), against the closed form summed with
+ * the strain to fracture each case should have: 0 set (unset 0): 0.2, the
+ * rule as before; 1 half set: 0.4, half the damage; 2 raw (unset 1): none;
+ * 3 raw but with a set crumb's 0.2: 0.2 (the set itself is not gated). */
+TEST(dough_fracture_unset_gates_water_brittleness) {
+    const hearth_material *m = dough();
+    CHECK(m != NULL && m->damage != NULL);
+    if (!m || !m->damage) return;
+    const double unset[4] = {0, 0.5, 1, 1}, sets[4] = {0, 0, 0, 0.2}, want_ef[4] = {0.2, 0.4, INFINITY, 0.2};
+    double dend[4];
+    for (int c = 0; c < 4; c++) {
+        const double p[NP] = {2e3, 0.3, 1e9, 0, 0.5, 500, 1, 0.2, 1, sets[c], 0, 0, unset[c]};
+        const double worst = shear_damage_error(m, p, want_ef[c], &dend[c]);
+        printf("  case %d (fracture_unset %g, fracture_strain_set %g): damage %.6f, largest error against the closed "
+               "form %.2e\n", c, unset[c], sets[c], dend[c], worst);
+        CHECK(worst <= 1e-9);
+    }
+    CHECK(dend[0] > 0.5);                         /* dried and set: the skin spends its stretch */
+    CHECK(fabs(dend[1] - 0.5 * dend[0]) <= 1e-9); /* half set: half the brittleness */
+    CHECK(dend[2] == 0);                          /* dried but raw: leathery, nothing */
+    CHECK(fabs(dend[3] - dend[0]) <= 1e-9);       /* the set crumb's strain is not gated */
 }
 
 /* The crack band (crack_opening w_c, crack_band h; the header's "the crack
@@ -856,6 +894,7 @@ TEST(dough_plugin_check) {
 
 TEST_MAIN(T(dough_closest_point), T(dough_viscoplastic_optimality), T(dough_inside_unchanged), T(dough_von_mises_limit),
           T(dough_frame_indifference), T(dough_plane_strain_path), T(dough_near_identity_return), T(dough_extremes),
-          T(dough_closed_pores), T(dough_pore_cap), T(dough_fracture_damage), T(dough_fracture_stretch_rule), T(dough_fracture_set_takes_smaller), T(dough_crack_band_softening),
+          T(dough_closed_pores), T(dough_pore_cap), T(dough_fracture_damage), T(dough_fracture_stretch_rule), T(dough_fracture_set_takes_smaller),
+          T(dough_fracture_unset_gates_water_brittleness), T(dough_crack_band_softening),
           T(dough_tension_cutoff),
           T(dough_block_matches_stress_2d), T(dough_plugin_check))

@@ -262,6 +262,26 @@
 --    thickness (a film cracking on a compliant substrate cracks at a spacing
 --    of a few thicknesses: Hutchinson & Suo 1992, Adv. Appl. Mech. 29:63),
 --    one particle here.
+--  * HEAT_SET (issue #18, helper crisp): drying alone does not make a crust
+--    brittle; a film that dries before the heat has set its starch and
+--    gluten is leathery (cam_clay_dough.c's "the heat-set", with its
+--    sources). The muffin's fracture_unset (the plugin's parameter) falls
+--    from 1 to 0 over its set (MUFFIN_SET's 55 to 70 degC, the points of
+--    fracture_strain_set), irreversible: its water's brittleness counts in
+--    proportion to the set. Why: the preset's evaporation (WATER, ~100x a real
+--    surface's) dries the top to X/X0 0.5 by 0.5 s while it is at 30-40 degC
+--    and the rise is still to come (0.5-1.3 s), and the rise then stretched
+--    every particle of that brittle skin alike: it crackled as a band (39
+--    particles at 4 mm, no tear). With the heat-set the skin stretches
+--    unharmed until its crown passes 55-70 degC at 1.0-1.25 s, and the crown
+--    then tears (claim_muffin_top_tears: 4.70 mm deep and 8 mm wide at 4 mm;
+--    docs/validation.md "The muffin's tear: the heat-set").
+--    Not the bread's: Table 2's bread heats evenly (Biot 0.04), so its crust
+--    passes 35-70 degC with the crumb, at the end of the rise, and a crust
+--    that waits for the set has no rise left to crack it: the 4 mm crown crack
+--    went from 8.05 to 0.38 mm deep with it (5 mm: 0.25 mm, unchanged), and
+--    with a real Biot number (crack_heat.lua conductivity 0.0234) it still
+--    did not crack the 5 mm top (0.29 mm; 25 particles cracked elsewhere).
 local ETA_SCALE, GAS_SCALE = 4000, 1 / 600
 local DRY_X = { 0.05, 0.10, 0.16, 0.25, 0.41 }  -- water content, kg/kg dry basis
 local DRY_F = { 100, 37, 10, 4.6, 1 }           -- E and tau_y factor (Roos 1995's glass transition, capped at 100)
@@ -273,6 +293,7 @@ local WATER = { bread = { saturation = 0.225, diffusivity = 2e-7, evaporation = 
 -- stretch to fracture over water content (FRACTURE): glassy, leathery, rubbery, and the raw dough (never)
 local FRACTURE_X, FRACTURE_DRY, FRACTURE_WET = { 0.16, 0.41 }, 0.02, 100
 local CRACK_OPENING = 6e-5 -- the crack band's opening w_c = 2 G_f / f_t, m (BAND above): a crisp food foam's
+local HEAT_SET = { muffin = true } -- the goods whose water's brittleness waits for the set (HEAT_SET above)
 local FRACTURE_SET = 0.15 -- the set crumb's stretch to fracture (SET below), from 100 at Fig. 8's 35 degC to this at 70
 local THETA = { 5, 20, 35, 70 }            -- Fig. 8: fridge, room, fat melting, gelatinisation (degC)
 local TAU_SHAPE = { 1, 0.8, 0.3, 20 }      -- Fig. 8 left, relative to Table 2's value
@@ -366,6 +387,8 @@ function D.preset(name)
     -- SET: the set crumb's, over the highest temperature reached, on Fig. 8's set points (as tau_y's)
     local nt = #set.theta -- the set's last two points: where tau_y leaves its melted value, and the set
     curves.fracture_strain_set = { { set.theta[nt - 1], FRACTURE_WET }, { set.theta[nt], FRACTURE_SET }, irreversible = true }
+    -- HEAT_SET: the water's brittleness in proportion to the set, over the same points
+    if HEAT_SET[name] then curves.fracture_unset = { { set.theta[nt - 1], 1 }, { set.theta[nt], 0 }, irreversible = true } end
   end
   local oven = { temperature = c.ambient_theta, beta = c.ambient_beta, pan_temperature = c.conductive_theta,
     pan_beta = c.conductive_beta, dough_temperature = c.theta0, latent_heat = false,

@@ -12,13 +12,15 @@
 --   glass_at      see glass (0.65: the marshmallow's glass edge)
 --   set_strain    the set crumb's stretch to fracture at 70 degC (-1: the preset's 0.15)
 --   air_beta      factor on the oven air's heat transfer (Table 2's 75 W/(m^2 K))
+--   heat_set      1: the preset's heat-set (fracture_unset, HEAT_SET in lua/hearth/dough.lua: the
+--                 water's brittleness waits for the set); 0: none, the skin brittle by its water alone
 --   damage_frames 1: the run's PNG frames show damage (particles) instead of temperature
 --   hearth run scripts/validation/muffin_tear.lua --quiet --set cups=1 --set until_t=1.5 [--set dry_fracture=0] ...
 -- from the source root (or --set muffins=PATH to muffins.lua).
 local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dim = 2, dx = 0.004, until_t = 3, frames = 6, cups = 3, fill = 0.022, wall_mode = "slip",
-  dry_fracture = 1, glass = 1, glass_at = 0.65, set_strain = -1, air_beta = 1, damage_frames = 0,
+  dry_fracture = 1, heat_set = 1, glass = 1, glass_at = 0.65, set_strain = -1, air_beta = 1, damage_frames = 0,
   muffins = "scripts/scenes/baking/muffins.lua" }
 
 -- muffins.lua's own h.params sees the values parsed here (it declares a subset of these names)
@@ -60,6 +62,7 @@ h.library.paper = setmetatable({}, { __index = function(_, name)
     p.tau_y = h.curve(curves.tau_y) * h.curve(pts)
   end
   if P.dry_fracture == 0 then p.fracture_strain = base.fracture_strain end
+  if P.heat_set == 0 then p.fracture_unset = nil end
   if P.set_strain > 0 then
     local st = curves.fracture_strain_set
     p.fracture_strain_set = h.curve { { st[1][1], st[1][2] }, { st[2][1], P.set_strain }, irreversible = true }

@@ -55,6 +55,15 @@ for name, t in pairs(T2) do
     local st, t0 = d.fracture_strain_set, name == "muffin" and 55 or 35
     assert(st and not st.moisture and st.irreversible and #st == 2 and st[1][1] == t0 and st[1][2] == 100 and
       st[2][1] == 70 and st[2][2] == 0.15, name .. ": the set crumb breaks at 0.15 from 70 degC")
+    -- dough.lua's HEAT_SET: the muffin's water brittleness waits for its set (1 raw at 55 degC, 0 set at 70,
+    -- irreversible); the bread's does not (its crust sets with its crumb: dough.lua says why)
+    local un = d.fracture_unset
+    if name == "muffin" then
+      assert(un and not un.moisture and un.irreversible and #un == 2 and un[1][1] == 55 and un[1][2] == 1 and
+        un[2][1] == 70 and un[2][2] == 0, name .. ": the skin is leathery until it sets (55 to 70 degC)")
+    else
+      assert(un == nil, name .. ": no heat-set gate")
+    end
   else
     assert(d.saturation == nil and d.fracture_strain == nil and d.fracture_strain_set == nil and o.saturation == nil,
       name .. ": no water, no fracture")

@@ -18,11 +18,13 @@
 -- so the batter there passes gelatinisation (tau_y x20, frozen) while the
 -- centre is still soft and making CO2; the centre rises, the set rim stays.
 -- The batter stays soft up to 55 degC (lua/hearth/dough.lua, MUFFIN_SET).
--- Measured (2D, one cup, 1.5 s; the rise is over by ~1.3 s): dx 4 mm, centre
--- 8.78 mm above the edge, top curvature -35 1/m, the centre's top from 9.2 mm
--- below the rim to 1.4 mm above it (claim_muffin_domes); dx 3 mm 9.82 mm.
--- Its dried top cracks as a band over the whole dome, not one tear
--- (claim_muffin_top_tears, docs/validation.md "The muffin's set"). With
+-- Measured (2D, one cup, 1.5 s): dx 4 mm, centre 12.34 mm above the edge, top
+-- curvature -5.8 1/m (the crown's tear flattens the fit), the centre's top from
+-- 9.2 mm below the rim to 7.3 mm above it (claim_muffin_domes); dx 3 mm 17.70
+-- mm. Its top dries before the rise but stays leathery until it sets (the
+-- preset's heat-set, lua/hearth/dough.lua HEAT_SET), and its crown then tears:
+-- 4.70 mm deep and 8 mm wide at 4 mm (claim_muffin_top_tears); at 3 mm 3.85 mm,
+-- short of the claim (docs/validation.md "The muffin's tear: the heat-set"). With
 -- bread's set (stiffening from 35 degC) the top stayed 4.4 mm below the rim
 -- (dome 4.14 mm); with Table 2's kappa (an isothermal batter; gas x0.1) the
 -- same cup ended dished: centre 1.2 mm below the edge, curvature +5 1/m.
