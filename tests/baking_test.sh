@@ -102,8 +102,9 @@ kp = {float(r["leavener"]): float(r["top_curvature_particles_1_per_m"]) for r in
 se = {float(r["leavener"]): float(r["top_curvature_particles_se_1_per_m"]) for r in rows}
 w = {float(r["leavener"]): float(r["spread_m"]) for r in rows}
 print("heights by leavener:", h, "curvatures:", k, "spreads:", w)
-print("particles' top curvature +- the fit's standard error (h.top_curvature; the sampling noise is ~2 1/m, "
-      "docs/validation.md 'Fig. 17: the top's curvature and its noise'):",
+print("particles' top curvature +- the fit's standard error (h.top_curvature of the displacements since placing; "
+      "a static flat top reads its settling, under 0.12 1/m, docs/validation.md 'Fig. 17 at 3.75 mm: the jitter, "
+      "read and removed'):",
       ", ".join(f"{a}: {kp[a]:.2f} +- {se[a]:.2f}" for a in sorted(kp, reverse=True)))
 if not all(r["alone"] == "1" for r in rows):
     print("a cookie touches the box's wall or its neighbour (cookies.lua's alone column): its readings are not its own")
