@@ -192,9 +192,9 @@ PY
 # 17.5 mm) to helper fig17c: the baseline's static capsule read -3.21 1/m by
 # the probe (five samplings: -3.21 .. +2.46), and 0 with the seeding's jitter
 # off. Since fig17c both measures read the top's change since the dough was
-# placed (the probe less the raw dough's height at each x; the particles by
-# their displacements, h.top_curvature's rest), so the jitter the static
-# capsule keeps cancels; the bands below are unchanged (docs/validation.md
+# placed (the probe less the raw dough's height where the material on top
+# was placed; the particles by their displacements, h.top_curvature's rest),
+# so the jitter the static capsule keeps cancels; the bands below are unchanged (docs/validation.md
 # "Fig. 17 at 3.75 mm: the jitter, read and removed").
 claim_cookie_domed_vs_baseline | claim_cookie_domed_vs_baseline_fine | claim_cookie_domed_vs_baseline_finer)
     dx=0.0075

@@ -45,8 +45,8 @@
 -- a least-squares parabola over the middle 60% of the cookie's width
 -- (h.top_curvature), and top_curvature_particles_se that fit's standard error.
 -- Both read the top's change since the dough was placed (flat-topped, so its
--- curvature): the probe's heights less the raw dough's at the same x, the
--- particles' displacements since placing. Read from heights alone a static
+-- curvature): the probe's heights less the raw dough's where the material
+-- on top was placed, the particles' displacements since placing. Read from heights alone a static
 -- flat top reads the seeding's jitter, +-3 1/m at dx 3.75 mm (#18 helper
 -- fig17c, docs/validation.md "Fig. 17 at 3.75 mm: the jitter, read and removed").
 -- What shaped the top with Table 2's heat and the 25 mm dough (measured, 2D, dx
@@ -195,13 +195,14 @@ for _, T in ipairs(ovens) do
   -- The raw dough's reading, the measures' zero (docs/validation.md "Fig. 17 at 3.75 mm: the jitter, read and
   -- removed"): the placed top is flat, so whatever curvature a measure reads on it is the seeding's jitter
   -- (s:add's particles sit up to a quarter of their spacing off the lattice), which a static cookie keeps
-  -- through the bake. rest_y: every particle's placed height, by id (h.top_curvature's rest); raw_h[i]: the
-  -- probe's height across cookie i's slot (every dx/8 over the middle third of the widest spread the slot
-  -- holds), which the probe's curvature fit subtracts at its own sample points (linear between these).
-  local rest_y, raw_h, RAW_STEP, RAW_HALF = {}, {}, dx / 8, SPACING / 6
+  -- through the bake. rest_x, rest_y: every particle's placed position, by id (rest_y is h.top_curvature's
+  -- rest); raw_h[i]: the probe's height across cookie i's slot (every dx/8 over the middle third of the
+  -- widest spread the slot holds, linear between), which the probe's curvature fit subtracts where the top
+  -- material at each of its sample points was placed (measure below).
+  local rest_y, rest_x, raw_h, RAW_STEP, RAW_HALF = {}, {}, {}, dx / 8, SPACING / 6
   do
     local r = s:particles { fields = { "id", "x" } }
-    for p = 1, r.n do rest_y[r.id[p]] = r.x[3 * p - 1] end
+    for p = 1, r.n do rest_x[r.id[p]], rest_y[r.id[p]] = r.x[3 * p - 2], r.x[3 * p - 1] end
     for i = 1, #leaveners do
       raw_h[i] = {}
       for j = -math.ceil(RAW_HALF / RAW_STEP) - 1, math.ceil(RAW_HALF / RAW_STEP) + 1 do raw_h[i][j] = line_h(xs[i] + j * RAW_STEP) end
@@ -223,12 +224,25 @@ for _, T in ipairs(ovens) do
     for k, val in ipairs(dd) do if val == val then lo = lo or k; hi = k end end
     local spread = lo and (hi - lo) * SPACING / 240 or 0
     -- top curvature: a parabola through heights over the middle third of the spread, each less the raw
-    -- dough's at that x (its change since the placed, flat top: the raw reading is the jitter's)
+    -- dough's where the material on top there was placed (its change since the placed, flat top: the raw
+    -- reading is the jitter's). Where it was placed, not the same x: the jitter moves with the particles, and
+    -- at dx 7.5 mm the raw reading at the same x (an edge the spread cookie has left) scattered the
+    -- unleavened against the leavened reading (docs/validation.md "Fig. 17 at 3.75 mm: ...")
     local n, S2, S4, T0, T2 = 9, 0, 0, 0, 0
     local S0 = n
+    local r = s:particles { fields = { "id", "x" } }
     for k = 1, n do
       local u = (k - 5) / 4 * spread / 6
-      local y = line_h(xs[i] + u) - raw_at(i, u)
+      -- where the top material at xs[i] + u was placed: the highest of the cookie's particles within dx/2 of it
+      local top, x0 = -math.huge, xs[i] + u
+      for p = 1, r.n do
+        local px, py, pz = r.x[3 * p - 2], r.x[3 * p - 1], r.x[3 * p]
+        if py > top and math.abs(px - xs[i] - u) < dx / 2 and (not d3 or math.abs(pz - zc) < dx / 2)
+          and cookie_of(r.id[p]) == i then
+          top, x0 = py, rest_x[r.id[p]] + (xs[i] + u - px)
+        end
+      end
+      local y = line_h(xs[i] + u) - raw_at(i, x0 - xs[i])
       S2, S4, T0, T2 = S2 + u * u, S4 + u ^ 4, T0 + y, T2 + y * u * u
     end
     local a = (S0 * T2 - S2 * T0) / (S0 * S4 - S2 * S2)
