@@ -102,8 +102,9 @@ kp = {float(r["leavener"]): float(r["top_curvature_particles_1_per_m"]) for r in
 se = {float(r["leavener"]): float(r["top_curvature_particles_se_1_per_m"]) for r in rows}
 w = {float(r["leavener"]): float(r["spread_m"]) for r in rows}
 print("heights by leavener:", h, "curvatures:", k, "spreads:", w)
-print("particles' top curvature +- the fit's standard error (h.top_curvature; the sampling noise is ~2 1/m, "
-      "docs/validation.md 'Fig. 17: the top's curvature and its noise'):",
+print("particles' top curvature +- the fit's standard error (h.top_curvature of the displacements since placing; "
+      "a static flat top reads its settling, under 0.12 1/m, docs/validation.md 'Fig. 17 at 3.75 mm: the jitter, "
+      "read and removed'):",
       ", ".join(f"{a}: {kp[a]:.2f} +- {se[a]:.2f}" for a in sorted(kp, reverse=True)))
 if not all(r["alone"] == "1" for r in rows):
     print("a cookie touches the box's wall or its neighbour (cookies.lua's alone column): its readings are not its own")
@@ -187,10 +188,14 @@ PY
 # flat top read with either sign.) At the claims' coarse dx (7.5 mm), the
 # scene's own dx (_fine, 5 mm) and one finer level (_finer, 3.75 mm), as #18
 # asks; the paper's three ovens are scripts/validation/fig17_grid.sh. _finer
-# is an expected failure since helper flat3 thinned cookies.lua's dough to
-# 17.5 mm: the baseline's static capsule then reads -3.21 1/m by the probe in
-# the default sampling (five samplings: -3.21 .. +2.46), below -2 sigma of the
-# 25 mm capsule's noise; sigma is not re-fitted.
+# was an expected failure from helper flat3 (cookies.lua's dough thinned to
+# 17.5 mm) to helper fig17c: the baseline's static capsule read -3.21 1/m by
+# the probe (five samplings: -3.21 .. +2.46), and 0 with the seeding's jitter
+# off. Since fig17c both measures read the top's change since the dough was
+# placed (the probe less the raw dough's height where the material on top
+# was placed; the particles by their displacements, h.top_curvature's rest),
+# so the jitter the static capsule keeps cancels; the bands below are unchanged (docs/validation.md
+# "Fig. 17 at 3.75 mm: the jitter, read and removed").
 claim_cookie_domed_vs_baseline | claim_cookie_domed_vs_baseline_fine | claim_cookie_domed_vs_baseline_finer)
     dx=0.0075
     [ "$case_name" = claim_cookie_domed_vs_baseline_fine ] && dx=0.005
@@ -207,31 +212,26 @@ cols = ("top_curvature_1_per_m", "top_curvature_particles_1_per_m")
 kf = [float(full[c]) for c in cols]
 kb = [float(base[c]) for c in cols]
 se = [float(r["top_curvature_particles_se_1_per_m"]) for r in (full, base)]
-# sigma: the standard deviation of each cookie's particle reading (h.top_curvature)
-# over five jitter samplings of this bake (cookies.lua --set seed=1..5; docs/
-# validation.md, "Fig. 17: the top's curvature and its noise"), full model and
-# baseline; the probe's reading is held to the same sigma (its own scatter is
-# larger at 7.5 and 3.75 mm, where its kernel reads the baseline's round ends)
+# sigma: the standard deviation of each cookie's particle reading (h.top_curvature
+# from heights) over five jitter samplings of the 25 mm dough's bake (cookies.lua
+# --set seed=1..5; docs/validation.md, "Fig. 17: the top's curvature and its
+# noise"), full model and baseline; the probe's reading is held to the same
+# sigma. Kept as the bands since helper fig17c changed both measures to read
+# the top's change since placing: their scatter over five samplings of today's
+# 17.5 mm bake is then 0.01-0.03 1/m for the baseline (its elastic settling,
+# -0.003 to -0.11 1/m, is what remains) and 1.5-7 1/m for the full model (the
+# coarse bake's own, probe and particles alike); docs/validation.md "Fig. 17 at
+# 3.75 mm: the jitter, read and removed"
 sf, sb = {0.0075: (2.06, 2.20), 0.005: (1.86, 2.12), 0.00375: (0.43, 1.33)}[dx]
 print(f"dx {dx * 1e3:.2f} mm, top curvature (probe, particles +- the fit's standard error): full model {kf[0]:.3f}, "
-      f"{kf[1]:.3f} +- {se[0]:.3f} 1/m; baseline {kb[0]:.3f}, {kb[1]:.3f} +- {se[1]:.3f} 1/m; sampling noise sigma "
+      f"{kf[1]:.3f} +- {se[0]:.3f} 1/m; baseline {kb[0]:.3f}, {kb[1]:.3f} +- {se[1]:.3f} 1/m (each the change since "
+      f"placing); sigma (the 25 mm dough's sampling noise of the heights' reading, kept as the bands) "
       f"{sf:.2f} and {sb:.2f} 1/m: domed needs k < {-2 * sf:.2f}, flat or dented k >= {-2 * sb:.2f}")
 domed, flat = all(k < -2 * sf for k in kf), all(k >= -2 * sb for k in kb)
 print(f"full model domed beyond noise: {domed}; baseline flat or dented within noise: {flat}")
-if domed and not flat and dx == 0.00375:
-    # since helper flat3 (cookies.lua's 17.5 mm dough, 4 s): the baseline is the snow law's placed capsule, which
-    # neither heat nor gas moves; its reading is the sampling's
-    print("EXPECTED FAILURE: the full model is domed, but the baseline's static capsule reads below -2 sigma. Since "
-          "cookies.lua's dough is 17.5 mm thick (25 mm before helper flat3) the capsule's top scatters more than sigma "
-          "1.33 1/m, measured on the 25 mm one: five samplings at dx 3.75 mm (seed 1..5) read probe -3.21, -1.42, "
-          "+1.83, +2.46, +0.54 and particles -0.08, -3.71, +0.38, -1.33, -2.94 1/m (sd 2.3 and 1.7): a flat top read "
-          "with either sign (docs/validation.md 'The unleavened cookie's top: a real dough's heat'); sigma not re-fitted")
-    sys.exit(77)
 sys.exit(0 if domed and flat else 1)
 PY
-    rc=$?
-    [ $rc -eq 77 ] && exit 77
-    [ $rc -eq 0 ] || fail "the full model's cookie is not domed beyond noise, or the baseline's top is not flat within it (numbers above)"
+    [ $? -eq 0 ] || fail "the full model's cookie is not domed beyond noise, or the baseline's top is not flat within it (numbers above)"
     ;;
 
 # A press that would drive the crackers through each other is refused up

@@ -247,7 +247,7 @@ function h.parabola(points)
   return a, math.sqrt(rss / (m[1] - 3) * (m[1] * m[3] - m[2] * m[2]) / D)
 end
 
---- h.top_curvature(s, {keep = function(id) ..., origin = x0, bin = dx, fraction = 0.6, z = zc})
+--- h.top_curvature(s, {keep = function(id) ..., origin = x0, bin = dx, fraction = 0.6, z = zc, rest = y0s})
 --- -> k, se, n: the curvature of a body's top surface read from its particles,
 --- k = 2a of the least-squares parabola y = a u^2 + b u + c (negative: domed),
 --- se its standard error (2 se(a) of h.parabola) and n the points fitted. The top
@@ -259,26 +259,48 @@ end
 --- within a few se of 0, either sign; the baking claims compare k with 2 se
 --- (tests/baking_test.sh, claim_cookie_domed_vs_baseline; docs/validation.md,
 --- "Fig. 17: the top's curvature and its noise").
+--- rest = {[id] = y, ...} (optional): the particles' heights when the body was
+--- placed. Each bin's top is then its highest particle's displacement y - rest[id]
+--- rather than its y, so k is the curvature the top gained since (its curvature,
+--- when the placed top was flat). Why: a placed particle sits up to jitter/2 of a
+--- lattice spacing off its lattice point, and a static flat top read from those
+--- heights reads that jitter (cookies.lua's capsule at dx 3.75 mm: -3.7 to +0.4
+--- 1/m over five seeds; 0 without jitter); each particle carries its own offset,
+--- so its displacement does not (docs/validation.md, "Fig. 17 at 3.75 mm: the
+--- jitter, read and removed").
 function h.top_curvature(s, o)
   if type(o) ~= "table" or type(o.keep) ~= "function" or type(o.origin) ~= "number" or not (type(o.bin) == "number" and o.bin > 0) then
     error("h.top_curvature(s, {keep = function(id), origin = x, bin = width > 0, fraction = 0.6, z = z}): keep, origin and bin are required", 2)
   end
   local frac = o.fraction or 0.6
   if not (frac > 0 and frac <= 1) then error(("h.top_curvature: fraction = %s; valid range (0, 1]"):format(tostring(frac)), 2) end
+  if o.rest ~= nil and type(o.rest) ~= "table" then
+    error("h.top_curvature: rest must be a table {[particle id] = its height at rest}", 2)
+  end
   local r = s:particles { fields = { "id", "x" } }
-  local x, bin, top, lo, hi = r.x, o.bin, {}, math.huge, -math.huge
+  local x, bin, top, who, lo, hi = r.x, o.bin, {}, {}, math.huge, -math.huge
   for p = 0, r.n - 1 do
     local px, py, pz = x[3 * p + 1], x[3 * p + 2], x[3 * p + 3]
     if o.keep(r.id[p + 1]) and (not o.z or math.abs(pz - o.z) < bin / 2) then
       local b = math.floor((px - o.origin) / bin + 0.5)
-      if not top[b] or py > top[b] then top[b] = py end
+      if not top[b] or py > top[b] then top[b], who[b] = py, r.id[p + 1] end
       lo, hi = math.min(lo, px), math.max(hi, px)
     end
   end
   local mid, half, pts = (lo + hi) / 2, frac / 2 * (hi - lo), {}
   for b, y in pairs(top) do
     local u = o.origin + b * bin - mid
-    if math.abs(u) <= half then pts[#pts + 1] = { u, y } end
+    if math.abs(u) <= half then
+      if o.rest then
+        local y0 = o.rest[who[b]]
+        if type(y0) ~= "number" then
+          error(("h.top_curvature: rest has no height for particle %d (the top of the bin at %g)"):format(who[b],
+            o.origin + b * bin), 2)
+        end
+        y = y - y0
+      end
+      pts[#pts + 1] = { u, y }
+    end
   end
   table.sort(pts, function(p, q) return p[1] < q[1] end) -- the sums in one order, whatever pairs() gives
   local a, se = h.parabola(pts)

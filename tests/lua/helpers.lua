@@ -59,4 +59,27 @@ print(("top_curvature: flat box %.3g +- %.3g 1/m (%d bins), disc %.3f +- %.3f 1/
 assert(math.abs(kb) < 1e-9 and seb < 1e-9 and nb >= 20, "a flat top reads 0 +- 0")
 assert(math.abs(kd + 10) < 0.5 and nd >= 20, "the disc's top reads -1/R")
 assert(not pcall(h.top_curvature, st, { keep = function() return true end, origin = 0, bin = 0 }), "bin = 0 refused")
+-- h.top_curvature's rest (#18 helper fig17c): a flat box seeded with full jitter reads the jitter by its
+-- particles' heights, and exactly 0 +- 0 by their displacements from where they were placed; a displacement
+-- of c (x - x0)^2 given through rest (rest = y - c (x - x0)^2) reads 2c (to 2%, measured -8.08: each bin's top particle sits up
+-- to half a bin from the bin's centre, where the fit places it)
+local sj = h.scene { dim = 2, dx = 0.005, box = { { 0, 0 }, { 0.6, 0.3 } } }
+sj:add { shape = h.box({ 0.05, 0.02 }, { 0.25, 0.06 }), material = m, jitter = 1 }
+local rj = sj:particles { fields = { "id", "x" } }
+local placed, bent, c = {}, {}, -4
+for p = 1, rj.n do
+  local x, y = rj.x[3 * p - 2], rj.x[3 * p - 1]
+  placed[rj.id[p]], bent[rj.id[p]] = y, y - c * (x - 0.15) ^ 2
+end
+local all = function() return true end
+local kj = h.top_curvature(sj, { keep = all, origin = 0.15, bin = 0.005 })
+local kr, ser = h.top_curvature(sj, { keep = all, origin = 0.15, bin = 0.005, rest = placed })
+local kc = h.top_curvature(sj, { keep = all, origin = 0.15, bin = 0.005, rest = bent })
+print(("top_curvature, jittered flat box: heights %.3f 1/m, displacements %.3g +- %.3g; displacement 2c = %g: %.3f"):format(
+  kj, kr, ser, 2 * c, kc))
+assert(math.abs(kj) > 0.01, "the jittered box's heights read its jitter") -- measured +0.25 (a 0.2 m wide top, 40 bins)
+assert(kr == 0 and ser == 0, "the jittered flat box's displacements read 0 +- 0")
+assert(math.abs(kc - 2 * c) < 0.02 * math.abs(2 * c), "a parabolic displacement reads its curvature")
+assert(not pcall(h.top_curvature, sj, { keep = all, origin = 0.15, bin = 0.005, rest = {} }), "an id without rest refused")
+assert(not pcall(h.top_curvature, sj, { keep = all, origin = 0.15, bin = 0.005, rest = 1 }), "rest not a table refused")
 print("helpers ok")

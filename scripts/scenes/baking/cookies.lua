@@ -44,6 +44,11 @@
 -- top_curvature_particles from the highest particle in each one-cell bin,
 -- a least-squares parabola over the middle 60% of the cookie's width
 -- (h.top_curvature), and top_curvature_particles_se that fit's standard error.
+-- Both read the top's change since the dough was placed (flat-topped, so its
+-- curvature): the probe's heights less the raw dough's where the material
+-- on top was placed, the particles' displacements since placing. Read from heights alone a static
+-- flat top reads the seeding's jitter, +-3 1/m at dx 3.75 mm (#18 helper
+-- fig17c, docs/validation.md "Fig. 17 at 3.75 mm: the jitter, read and removed").
 -- What shaped the top with Table 2's heat and the 25 mm dough (measured, 2D, dx
 -- 7.5 mm, 150 degC, before helper flat3; "The oven" below for now): the cold dough
 -- (tau_y 20 Pa) cannot carry its own 25 mm (rho g H ~ 120 Pa); with eta the
@@ -53,10 +58,11 @@
 -- leavened cookie (area +73%) while the unleavened one spreads flatter
 -- (docs/validation.md, "The cookie's set"). The baseline does not flow at all: its
 -- weight strains it ~0.2%, inside the snow law's clamp, so it keeps the
--- placed dough's shape (a capsule: flat top, round ends) through the bake,
--- and its top curvature is the measures' reading of that flat top: within
--- ~2 1/m of 0, either sign, from one particle sampling (--set seed) to the
--- next (docs/validation.md, "Fig. 17: the top's curvature and its noise").
+-- placed dough's shape (a capsule: flat top, round ends) through the bake;
+-- read from heights alone its top scattered within ~2 1/m of 0, either sign,
+-- from one particle sampling (--set seed) to the next (docs/validation.md,
+-- "Fig. 17: the top's curvature and its noise"); read as its change since
+-- placing it is its elastic settling, -0.003 to -0.11 1/m.
 -- The oven (issue #18, docs/validation.md "The unleavened cookie's top: a real
 -- dough's heat"): Table 2's cookie conducts 30 W/(m K) with c 20 J/(kg K), so it
 -- bakes evenly (Biot beta L / kappa = 25 x 0.00875 / 30 ~ 0.007) and spreads as a
@@ -166,26 +172,77 @@ for _, T in ipairs(ovens) do
     end
     return 1
   end
+  -- line_h(x): the probe's height above the tray at x (in 3D on the plane z = zc): the highest of 1401
+  -- samples up the line where the probe reads material, then bisected between it and the sample above to
+  -- 12 halvings (0.05 mm / 4096). Why: the samples alone step by 0.05 mm, which scatters the nine-point
+  -- curvature below by ~0.25 1/m whatever the top (docs/validation.md "Fig. 17 at 3.75 mm: the jitter, read
+  -- and removed").
+  local LINE_STEP = (0.09 - TRAY) / 1400
+  local function line_h(x)
+    local dd = s:line("density", v(x, TRAY, zc), v(x, 0.09, zc), 1401)
+    local k0
+    for k, val in ipairs(dd) do if val == val then k0 = k end end
+    if not k0 then return 0 end
+    local a, b = (k0 - 1) * LINE_STEP, k0 * LINE_STEP -- material at a, none at b
+    if k0 == #dd then return a end
+    for _ = 1, 12 do
+      local m = (a + b) / 2
+      local val = s:probe("density", v(x, TRAY + m, zc))
+      if val == val then a = m else b = m end
+    end
+    return a
+  end
+  -- The raw dough's reading, the measures' zero (docs/validation.md "Fig. 17 at 3.75 mm: the jitter, read and
+  -- removed"): the placed top is flat, so whatever curvature a measure reads on it is the seeding's jitter
+  -- (s:add's particles sit up to a quarter of their spacing off the lattice), which a static cookie keeps
+  -- through the bake. rest_x, rest_y: every particle's placed position, by id (rest_y is h.top_curvature's
+  -- rest); raw_h[i]: the probe's height across cookie i's slot (every dx/8 over the middle third of the
+  -- widest spread the slot holds, linear between), which the probe's curvature fit subtracts where the top
+  -- material at each of its sample points was placed (measure below).
+  local rest_y, rest_x, raw_h, RAW_STEP, RAW_HALF = {}, {}, {}, dx / 8, SPACING / 6
+  do
+    local r = s:particles { fields = { "id", "x" } }
+    for p = 1, r.n do rest_x[r.id[p]], rest_y[r.id[p]] = r.x[3 * p - 2], r.x[3 * p - 1] end
+    for i = 1, #leaveners do
+      raw_h[i] = {}
+      for j = -math.ceil(RAW_HALF / RAW_STEP) - 1, math.ceil(RAW_HALF / RAW_STEP) + 1 do raw_h[i][j] = line_h(xs[i] + j * RAW_STEP) end
+    end
+  end
+  local function raw_at(i, u) -- the raw dough's probe height at xs[i] + u
+    local f = u / RAW_STEP
+    local j = math.floor(f)
+    local a, b = raw_h[i][j], raw_h[i][j + 1]
+    if not (a and b) then error(("cookies.lua: the raw profile ends at %g m from the centre; asked %g"):format(RAW_HALF, u)) end
+    return a + (b - a) * (f - j)
+  end
   local function measure(i)
     local c = d3 and { xs[i], zc } or { xs[i] }
-    local function line_h(x) -- the height above the tray at x (in 3D on the plane z = zc)
-      local dd = s:line("density", v(x, TRAY, zc), v(x, 0.09, zc), 1401)
-      local top = 0
-      for k, val in ipairs(dd) do if val == val then top = (k - 1) * (0.09 - TRAY) / 1400 end end
-      return top
-    end
     local hgt = line_h(c[1])
     local yb = TRAY + 1.5 * dx
     local dd = s:line("density", v(xs[i] - SPACING / 2, yb, zc), v(xs[i] + SPACING / 2, yb, zc), 241)
     local lo, hi
     for k, val in ipairs(dd) do if val == val then lo = lo or k; hi = k end end
     local spread = lo and (hi - lo) * SPACING / 240 or 0
-    -- top curvature: a parabola through heights over the middle third of the spread
+    -- top curvature: a parabola through heights over the middle third of the spread, each less the raw
+    -- dough's where the material on top there was placed (its change since the placed, flat top: the raw
+    -- reading is the jitter's). Where it was placed, not the same x: the jitter moves with the particles, and
+    -- at dx 7.5 mm the raw reading at the same x (an edge the spread cookie has left) scattered the
+    -- unleavened against the leavened reading (docs/validation.md "Fig. 17 at 3.75 mm: ...")
     local n, S2, S4, T0, T2 = 9, 0, 0, 0, 0
     local S0 = n
+    local r = s:particles { fields = { "id", "x" } }
     for k = 1, n do
       local u = (k - 5) / 4 * spread / 6
-      local y = line_h(xs[i] + u)
+      -- where the top material at xs[i] + u was placed: the highest of the cookie's particles within dx/2 of it
+      local top, x0 = -math.huge, xs[i] + u
+      for p = 1, r.n do
+        local px, py, pz = r.x[3 * p - 2], r.x[3 * p - 1], r.x[3 * p]
+        if py > top and math.abs(px - xs[i] - u) < dx / 2 and (not d3 or math.abs(pz - zc) < dx / 2)
+          and cookie_of(r.id[p]) == i then
+          top, x0 = py, rest_x[r.id[p]] + (xs[i] + u - px)
+        end
+      end
+      local y = line_h(xs[i] + u) - raw_at(i, x0 - xs[i])
       S2, S4, T0, T2 = S2 + u * u, S4 + u ^ 4, T0 + y, T2 + y * u * u
     end
     local a = (S0 * T2 - S2 * T0) / (S0 * S4 - S2 * S2)
@@ -194,10 +251,11 @@ for _, T in ipairs(ovens) do
   -- the top from the particles (h.top_curvature): the highest of cookie i's
   -- own particles (by id) in each one-cell bin across it (in 3D on the slab
   -- |z - zc| < dx/2), and 2a of the least-squares y = a u^2 + b u + c over the
-  -- middle 60% of the cookie's width, with its standard error
+  -- middle 60% of the cookie's width, with its standard error; each bin's top read as that particle's rise
+  -- since it was placed (rest_y above), so the seeding's jitter cancels
   local function particle_curvature(i)
     return h.top_curvature(s, { keep = function(id) return cookie_of(id) == i end, origin = xs[i], bin = dx,
-      fraction = 0.6, z = d3 and zc or nil })
+      fraction = 0.6, z = d3 and zc or nil, rest = rest_y })
   end
   s:run { until_t = P.until_t, every = P.until_t / P.frames,
     png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T) },
