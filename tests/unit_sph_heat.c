@@ -762,8 +762,43 @@ TEST(sph_bubble_vent_open_cell_pushes_nothing) {
     else printf("refused: %s\n", err.msg);
 }
 
+/* The five options that act through sph.gas_law's pressure are refused
+ * without it, each by one table (sph.c sph_check_def): the messages word for
+ * word as they were when each had its own check (scripts and users grep
+ * them), and none of them once sph.gas_law is on. */
+TEST(sph_gas_law_refusals_word_for_word) {
+    static const char *want[] = {
+        "scene: sph.continuity_density = true needs sph.gas_law = true (it is the gas law's pressure that reads the "
+        "particle's own volume); set both or neither",
+        "scene: sph.renormalised_density = true needs sph.gas_law = true (it is the gas law's pressure that reads it); "
+        "set both or neither",
+        "scene: sph.bubble_vent = true needs sph.gas_law = true (it opens the gas law's bubbles); set both or neither",
+        "scene: sph.foam_pressure = true needs sph.gas_law = true (it caps the dough's pressure by the gas law's "
+        "bubbles); set both or neither",
+        "scene: sph.gas_pressure = 25000 Pa needs sph.gas_law = true (it is the gas law's bubble that holds the gas); "
+        "set sph.gas_law = true or sph.gas_pressure = 0",
+    };
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.1, 0};
+    for (int k = 0; k < 5; k++)
+        for (int law = 0; law < 2; law++) {
+            hearth_scene_def d = sph_def(2, 0.005, lo, hi);
+            d.sph.gas_law = law;
+            d.sph.continuity_density = k == 0;
+            d.sph.renormalised_density = k == 1;
+            d.sph.bubble_vent = k == 2;
+            d.sph.foam_pressure = k == 3;
+            d.sph.gas_pressure = k == 4 ? 2.5e4 : 0;
+            hearth_error err;
+            err.msg[0] = 0;
+            hearth_scene *s = hearth_scene_create(&d, &err);
+            printf("option %d, gas_law %d: %s\n", k, law, s ? "accepted" : err.msg);
+            CHECK(law ? s != NULL : s == NULL && strcmp(err.msg, want[k]) == 0);
+            if (s) hearth_scene_destroy(s);
+        }
+}
+
 TEST_MAIN(T(sph_heat_ext_flux_per_area), T(sph_heat_ext_slab_converges), T(sph_gas_law_clusters_reach_gas_volume),
           T(sph_heat_mirror_symmetric), T(sph_gas_law_films_keep_rest_spacing),
           T(sph_continuity_density_reads_no_skin), T(sph_bubble_gas_pressure_is_the_gas),
           T(sph_renormalised_density_reads_no_skin), T(sph_foam_pressure_walls_hold_the_gas),
-          T(sph_bubble_vent_open_cell_pushes_nothing))
+          T(sph_bubble_vent_open_cell_pushes_nothing), T(sph_gas_law_refusals_word_for_word))
