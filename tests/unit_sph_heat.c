@@ -797,8 +797,44 @@ TEST(sph_gas_law_refusals_word_for_word) {
         }
 }
 
+/* What tears the roll with both switches on (docs/validation.md "Both
+ * switches on"): the gas law's bubble pushes B (V_b / J - 1), the dough's
+ * stiffness B for the gas's P_a - P_v, and V_b grows without bound toward
+ * the dough's boiling point, so near the cap a bubble pushes many times its
+ * gas, and the crust's last closed cells burst its top just before they
+ * open. The block's bubbles at their raw volume (J = 1, one step, the
+ * density by their own volume, B-stiff: sph.gas_pressure 0) at 70 and 91
+ * degC (V_b 1.58 and 3.75, both closed) against their ideal gas at that
+ * volume, (P_a - P_v0)(T / T0) + P_v(T) - P_a (eq. 2.42-2.43, 3.49-3.50,
+ * computed here). A gas law whose stiffness is its gas's, scaled (an
+ * animation's stiffer gas), keeps one ratio at every temperature; asked:
+ * the ratio at 91 degC within 1.5x of the one at 70. Expected failure. */
+TEST(sph_gas_law_bubble_near_cap_within_its_gas) {
+    const double aw = 0.95, T0 = 26, pa = 101325, Ts[2] = {70, 91};
+    double ratio[2];
+    for (int k = 0; k < 2; k++) {
+        const double T = Ts[k], hr = 40660.0 / 8.314462618;
+        const double pv0 = aw * pa * exp(-hr * (1 / (T0 + 273.15) - 1 / 373.15));
+        const double pv = aw * pa * exp(-hr * (1 / (T + 273.15) - 1 / 373.15));
+        const double ideal = (pa - pv0) * (T + 273.15) / (T0 + 273.15) + pv - pa;
+        double B, spread;
+        const double p = bubble_push(1e6, 0, T, &B, &spread);
+        ratio[k] = p / ideal;
+        printf("%.0f degC: V_b %.4f, bubble pushes %.1f Pa (B %.4g), its ideal gas %.1f Pa: %.3fx\n", T,
+               vb_closed(aw, T0, T), p, B, ideal, ratio[k]);
+        CHECK(ideal > 0 && p > 0);
+    }
+    printf("the ratio at 91 degC is %.3fx the one at 70 degC\n", ratio[1] / ratio[0]);
+    if (!(ratio[1] / ratio[0] < 1.5))
+        XFAIL("at 91 degC a bubble pushes %.2fx its ideal gas, %.2fx the ratio at 70 degC (asked: within 1.5x): the gas "
+              "law's pressure B (V_b / J - 1) takes the dough's stiffness for the gas's P_a - P_v, and V_b diverges at "
+              "the boiling point; the bread roll's crust cells push up to 4.7x their gas just before they open",
+              ratio[1], ratio[1] / ratio[0]);
+}
+
 TEST_MAIN(T(sph_heat_ext_flux_per_area), T(sph_heat_ext_slab_converges), T(sph_gas_law_clusters_reach_gas_volume),
           T(sph_heat_mirror_symmetric), T(sph_gas_law_films_keep_rest_spacing),
           T(sph_continuity_density_reads_no_skin), T(sph_bubble_gas_pressure_is_the_gas),
           T(sph_renormalised_density_reads_no_skin), T(sph_foam_pressure_walls_hold_the_gas),
-          T(sph_bubble_vent_open_cell_pushes_nothing), T(sph_gas_law_refusals_word_for_word))
+          T(sph_bubble_vent_open_cell_pushes_nothing), T(sph_gas_law_refusals_word_for_word),
+          T(sph_gas_law_bubble_near_cap_within_its_gas))

@@ -212,7 +212,10 @@ void sph_pressure_gas_law(hearth_scene *s) {
          * hottest, the crust's and the tray side's, held at 1.6-1.7x by the set dough round them.
          * Opened, they stop stretching the crust and the roll's rise stalls at 1.28x, so its preset
          * leaves it off (docs/validation.md "The roll's base"). Its dough's Tait against rho0 still
-         * holds it. */
+         * holds it. The open cells keep their volume (1.32-1.39 V0 to 2 s); what tears the vented roll
+         * at 2 s is the crust's last closed cells, which push B (V_b / J - 1) with V_b nearing the
+         * cap, up to 4.7x their ideal gas, just before they open (docs/validation.md "Both switches
+         * on"). */
         if (o->bubble_vent && bub > 0 && T && gas > 0 && !(rr * bub * o->bubble_vmax > rho0 * (1 + 1e-12))) gas = 0;
         st->prs[i] = bub > 0 ? fmax(gas, tait) : tait;
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */

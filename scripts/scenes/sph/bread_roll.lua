@@ -35,8 +35,10 @@
 -- squeeze beside squeezed bubbles and the push of the bubbles at the vapour's
 -- cap. --set foam=true caps the dough at its bubbles' pressure (on the tray to
 -- 1.6 s, then it rocks; a crumb comes off at 2 s), --set vent=true (with it)
--- opens the capped bubbles (the rise stalls at 1.28x and it tears at 2 s);
--- neither is the preset's.
+-- opens the capped bubbles (the rise stalls at 1.28x and it tears at 2 s:
+-- the open crust pushes nothing, and its last closed cells push up to 4.7x
+-- their gas just before they open and burst its top; docs/validation.md
+-- "Both switches on"); neither is the preset's.
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature), particles_NNNN.csv (positions, for
 -- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
