@@ -168,6 +168,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
         {"renormalised_density", "true", "it is the gas law's pressure that reads it", both, o->renormalised_density},
         {"bubble_vent", "true", "it opens the gas law's bubbles", both, o->bubble_vent},
         {"foam_pressure", "true", "it caps the dough's pressure by the gas law's bubbles", both, o->foam_pressure},
+        {"scaled_gas", "true", "it scales the gas law's bubble stiffness", both, o->scaled_gas},
         {"gas_pressure", gp, "it is the gas law's bubble that holds the gas",
          "set sph.gas_law = true or sph.gas_pressure = 0", o->gas_pressure > 0},
     };
