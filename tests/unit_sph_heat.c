@@ -553,6 +553,7 @@ TEST(sph_continuity_density_reads_no_skin) {
  * renormalised_density; mode 2 with sph.foam_pressure too; mode 3 the own
  * volume with sph.bubble_vent). NULL on a
  * failure (printed); *bub the bubbles' material. */
+static int block_scaled_gas; /* sph.scaled_gas for the blocks below */
 static hearth_scene *bubble_block(double bulk, double pa, double T, int mode, int steps, int *bub) {
     const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.04, 0.04, 0};
     hearth_scene_def d = sph_def(2, dx, lo, hi);
@@ -565,6 +566,7 @@ static hearth_scene *bubble_block(double bulk, double pa, double T, int mode, in
     d.sph.foam_pressure = mode == 2;
     d.sph.bubble_vent = mode == 3;
     d.sph.gas_pressure = pa;
+    d.sph.scaled_gas = block_scaled_gas;
     hearth_scene *s = hearth_scene_create(&d, NULL);
     if (!s) return NULL;
     const char *n[] = {"density", "bulk", "viscosity", "bubble"};
@@ -762,8 +764,102 @@ TEST(sph_bubble_vent_open_cell_pushes_nothing) {
     else printf("refused: %s\n", err.msg);
 }
 
+/* The five options that act through sph.gas_law's pressure are refused
+ * without it, each by one table (sph.c sph_check_def): the messages word for
+ * word as they were when each had its own check (scripts and users grep
+ * them), and none of them once sph.gas_law is on. */
+TEST(sph_gas_law_refusals_word_for_word) {
+    static const char *want[] = {
+        "scene: sph.continuity_density = true needs sph.gas_law = true (it is the gas law's pressure that reads the "
+        "particle's own volume); set both or neither",
+        "scene: sph.renormalised_density = true needs sph.gas_law = true (it is the gas law's pressure that reads it); "
+        "set both or neither",
+        "scene: sph.bubble_vent = true needs sph.gas_law = true (it opens the gas law's bubbles); set both or neither",
+        "scene: sph.foam_pressure = true needs sph.gas_law = true (it caps the dough's pressure by the gas law's "
+        "bubbles); set both or neither",
+        "scene: sph.gas_pressure = 25000 Pa needs sph.gas_law = true (it is the gas law's bubble that holds the gas); "
+        "set sph.gas_law = true or sph.gas_pressure = 0",
+        "scene: sph.scaled_gas = true needs sph.gas_law = true (it scales the gas law's bubble stiffness); set both or "
+        "neither",
+    };
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.1, 0};
+    for (int k = 0; k < 6; k++)
+        for (int law = 0; law < 2; law++) {
+            hearth_scene_def d = sph_def(2, 0.005, lo, hi);
+            d.sph.gas_law = law;
+            d.sph.continuity_density = k == 0;
+            d.sph.renormalised_density = k == 1;
+            d.sph.bubble_vent = k == 2;
+            d.sph.foam_pressure = k == 3;
+            d.sph.gas_pressure = k == 4 ? 2.5e4 : 0;
+            d.sph.scaled_gas = k == 5;
+            hearth_error err;
+            err.msg[0] = 0;
+            hearth_scene *s = hearth_scene_create(&d, &err);
+            printf("option %d, gas_law %d: %s\n", k, law, s ? "accepted" : err.msg);
+            CHECK(law ? s != NULL : s == NULL && strcmp(err.msg, want[k]) == 0);
+            if (s) hearth_scene_destroy(s);
+        }
+}
+
+/* What tears the roll with both switches on (docs/validation.md "Both
+ * switches on"): the gas law's bubble pushes B (V_b / J - 1), the dough's
+ * stiffness B for the gas's P_a - P_v, and V_b grows without bound toward
+ * the dough's boiling point, so near the cap a bubble pushes many times its
+ * gas, and the crust's last closed cells burst its top just before they
+ * open. The block's bubbles at their raw volume (J = 1, one step, the
+ * density by their own volume, B-stiff: sph.gas_pressure 0) at 70 and 91
+ * degC (V_b 1.58 and 3.75, both closed) against their ideal gas at that
+ * volume, (P_a - P_v0)(T / T0) + P_v(T) - P_a (eq. 2.42-2.43, 3.49-3.50,
+ * computed here). A gas law whose stiffness is its gas's, scaled (an
+ * animation's stiffer gas), keeps one ratio at every temperature; asked:
+ * the ratio at 91 degC within 1.5x of the one at 70. Expected failure. */
+static void near_cap_ratios(double ratio[2], double *B) {
+    const double aw = 0.95, T0 = 26, pa = 101325, Ts[2] = {70, 91};
+    for (int k = 0; k < 2; k++) {
+        const double T = Ts[k], hr = 40660.0 / 8.314462618;
+        const double pv0 = aw * pa * exp(-hr * (1 / (T0 + 273.15) - 1 / 373.15));
+        const double pv = aw * pa * exp(-hr * (1 / (T + 273.15) - 1 / 373.15));
+        const double ideal = (pa - pv0) * (T + 273.15) / (T0 + 273.15) + pv - pa;
+        double spread;
+        const double p = bubble_push(1e6, 0, T, B, &spread);
+        ratio[k] = p / ideal;
+        printf("%.0f degC: V_b %.4f, bubble pushes %.1f Pa (B %.4g), its ideal gas %.1f Pa: %.4fx\n", T,
+               vb_closed(aw, T0, T), p, *B, ideal, ratio[k]);
+        CHECK(ideal > 0 && p > 0);
+    }
+    printf("the ratio at 91 degC is %.4fx the one at 70 degC\n", ratio[1] / ratio[0]);
+}
+
+TEST(sph_gas_law_bubble_near_cap_within_its_gas) {
+    double ratio[2], B;
+    near_cap_ratios(ratio, &B);
+    if (!(ratio[1] / ratio[0] < 1.5))
+        XFAIL("at 91 degC a bubble pushes %.2fx its ideal gas, %.2fx the ratio at 70 degC (asked: within 1.5x): the gas "
+              "law's pressure B (V_b / J - 1) takes the dough's stiffness for the gas's P_a - P_v, and V_b diverges at "
+              "the boiling point; the bread roll's crust cells push up to 4.7x their gas just before they open (sph.scaled_gas "
+              "keeps one ratio: sph_gas_law_scaled_gas_one_ratio)",
+              ratio[1], ratio[1] / ratio[0]);
+}
+
+/* sph.scaled_gas: the same bubbles with the bubble's stiffness B (P_a -
+ * P_v(T)) / (P_a - P_v(T0)) push their ideal gas's pressure times one
+ * factor, B / (P_a - P_v(T0)) (computed here), at 70 as at 91 degC. */
+TEST(sph_gas_law_scaled_gas_one_ratio) {
+    double ratio[2], B;
+    block_scaled_gas = 1;
+    near_cap_ratios(ratio, &B);
+    block_scaled_gas = 0;
+    const double pv0 = 0.95 * 101325 * exp(-40660.0 / 8.314462618 * (1 / (26 + 273.15) - 1 / 373.15));
+    const double want = B / (101325 - pv0);
+    printf("scaled_gas: %.4fx and %.4fx their ideal gas at 70 and 91 degC, B / (P_a - P_v0) = %.4f\n", ratio[0], ratio[1],
+           want);
+    CHECK(fabs(ratio[0] / want - 1) < 1e-3 && fabs(ratio[1] / want - 1) < 1e-3);
+}
+
 TEST_MAIN(T(sph_heat_ext_flux_per_area), T(sph_heat_ext_slab_converges), T(sph_gas_law_clusters_reach_gas_volume),
           T(sph_heat_mirror_symmetric), T(sph_gas_law_films_keep_rest_spacing),
           T(sph_continuity_density_reads_no_skin), T(sph_bubble_gas_pressure_is_the_gas),
           T(sph_renormalised_density_reads_no_skin), T(sph_foam_pressure_walls_hold_the_gas),
-          T(sph_bubble_vent_open_cell_pushes_nothing))
+          T(sph_bubble_vent_open_cell_pushes_nothing), T(sph_gas_law_refusals_word_for_word),
+          T(sph_gas_law_bubble_near_cap_within_its_gas), T(sph_gas_law_scaled_gas_one_ratio))

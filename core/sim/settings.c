@@ -194,6 +194,11 @@ static const hearth_setting settings[] = {
              "them: the walls of a closed-cell foam carry their cells' gas pressure, so the sum's squeeze of a wall beside "
              "squeezed bubbles is the gas's, not the dough's Tait",
              foam_pressure),
+    SPH_FLAG("scaled_gas",
+             "with gas_law: a bubble's stiffness is the dough's B times its gas's own relative to the raw bubble's, "
+             "(P_a - P_v(T)) / (P_a - P_v(T0)): its pressure is its ideal gas's (eq. 2.42-2.43) times one constant at every "
+             "temperature, where B alone pushed without bound toward the boiling point as V_b grows",
+             scaled_gas),
     /* an ideal gas's isothermal bulk modulus is its pressure: a bubble at the
      * oven's 101325 Pa is that stiff, where the set dough's Tait B is 4-8e5 Pa */
     SPH(gas_pressure, "Pa",

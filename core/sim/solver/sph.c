@@ -155,31 +155,31 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
         return err_set(err, HEARTH_ERR_PARAM,
                        "scene: latent_heat = true needs the water field, which solver = \"sph\" does not carry; use "
                        "solver = \"mpm\" or latent_heat = false");
-    if (o->continuity_density && !o->gas_law)
-        return err_set(err, HEARTH_ERR_PARAM,
-                       "scene: sph.continuity_density = true needs sph.gas_law = true (it is the gas law's pressure that "
-                       "reads the particle's own volume); set both or neither");
-    if (o->renormalised_density && !o->gas_law)
-        return err_set(err, HEARTH_ERR_PARAM,
-                       "scene: sph.renormalised_density = true needs sph.gas_law = true (it is the gas law's pressure that "
-                       "reads it); set both or neither");
+    /* the options that act through sph.gas_law's pressure: each refused without it, saying what it does there */
+    char gp[48];
+    snprintf(gp, sizeof gp, "%g Pa", o->gas_pressure);
+    const char *both = "set both or neither";
+    const struct {
+        const char *name, *val, *why, *fix;
+        int on;
+    } needs[] = {
+        {"continuity_density", "true", "it is the gas law's pressure that reads the particle's own volume", both,
+         o->continuity_density},
+        {"renormalised_density", "true", "it is the gas law's pressure that reads it", both, o->renormalised_density},
+        {"bubble_vent", "true", "it opens the gas law's bubbles", both, o->bubble_vent},
+        {"foam_pressure", "true", "it caps the dough's pressure by the gas law's bubbles", both, o->foam_pressure},
+        {"scaled_gas", "true", "it scales the gas law's bubble stiffness", both, o->scaled_gas},
+        {"gas_pressure", gp, "it is the gas law's bubble that holds the gas",
+         "set sph.gas_law = true or sph.gas_pressure = 0", o->gas_pressure > 0},
+    };
+    for (size_t k = 0; k < sizeof needs / sizeof needs[0]; k++)
+        if (needs[k].on && !o->gas_law)
+            return err_set(err, HEARTH_ERR_PARAM, "scene: sph.%s = %s needs sph.gas_law = true (%s); %s", needs[k].name,
+                           needs[k].val, needs[k].why, needs[k].fix);
     if (o->renormalised_density && o->continuity_density)
         return err_set(err, HEARTH_ERR_PARAM,
                        "scene: sph.renormalised_density and sph.continuity_density are two densities for the same "
                        "pressure; set one of them");
-    if (o->bubble_vent && !o->gas_law)
-        return err_set(err, HEARTH_ERR_PARAM,
-                       "scene: sph.bubble_vent = true needs sph.gas_law = true (it opens the gas law's bubbles); set both or "
-                       "neither");
-    if (o->foam_pressure && !o->gas_law)
-        return err_set(err, HEARTH_ERR_PARAM,
-                       "scene: sph.foam_pressure = true needs sph.gas_law = true (it caps the dough's pressure by the gas "
-                       "law's bubbles); set both or neither");
-    if (o->gas_pressure > 0 && !o->gas_law)
-        return err_set(err, HEARTH_ERR_PARAM,
-                       "scene: sph.gas_pressure = %g Pa needs sph.gas_law = true (it is the gas law's bubble that holds "
-                       "the gas); set sph.gas_law = true or sph.gas_pressure = 0",
-                       o->gas_pressure);
     if (!(o->xsph_Tf > o->xsph_T0))
         return err_set(err, HEARTH_ERR_PARAM, "scene: sph.xsph_Tf = %g degC must be above sph.xsph_T0 = %g degC",
                        o->xsph_Tf, o->xsph_T0);
