@@ -215,17 +215,11 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
             for (int a = 0; a < 9; a++) Q[a] = mC * C[a] - k0 * taus[a][j];
         }
 
-        int base[3] = {0, 0, 0};
-        double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
-        for (int d = 0; d < D; d++) {
-            const double Xd = (x[d] - g->lo[d]) * inv_dx;
-            const int b = base_node(Xd);
-            fx[d] = Xd - b;
-            base[d] = b - org[d];
-            /* the stencil's 3 nodes must lie in the 6-node tile: mpm_sort's clamp_to_grid */
-            HEARTH_ASSERT(base[d] >= 0 && base[d] <= GRID_T - 3);
-            bspline_weights(fx[d], w[d], dw);
-        }
+        int base[3];
+        double fx[3], w[3][3];
+        tile_stencil(g, D, x, org, inv_dx, base, fx, w);
+        /* the stencil's 3 nodes must lie in the 6-node tile: mpm_sort's clamp_to_grid */
+        for (int d = 0; d < D; d++) HEARTH_ASSERT(base[d] >= 0 && base[d] <= GRID_T - 3);
         const double mv0 = m * v[0], mv1 = m * v[1], mv2 = m * v[2];
         /* heat (eq. 17, weighted by heat capacity m alpha so energy is conserved across materials) */
         const double hc = HS ? m * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = HS ? hc * Tcol[i] : 0.0;

@@ -34,6 +34,23 @@ static inline void record_fail(pb_partial *pp, int i, fail_kind kind, int code) 
     }
 }
 
+/* A particle's stencil in its block's tile (org: the block's first node): per
+ * axis the tile index of the stencil's first node, the particle's offset from
+ * it in cells, and its quadratic B-spline weights; a 2D particle's third axis
+ * is one node of weight 1. P2G and G2P both read it. */
+FORCE_INLINE void tile_stencil(const grid *g, const int D, const double *x, const int org[3], const double inv_dx, int base[3],
+                               double fx[3], double w[3][3]) {
+    double dw[3];
+    base[2] = 0, fx[2] = 0, w[2][0] = 1, w[2][1] = 0, w[2][2] = 0;
+    for (int d = 0; d < D; d++) {
+        const double Xd = (x[d] - g->lo[d]) * inv_dx;
+        const int b = base_node(Xd);
+        fx[d] = Xd - b;
+        base[d] = b - org[d];
+        bspline_weights(fx[d], w[d], dw);
+    }
+}
+
 /* Whether every a[k] is finite, with one test instead of one per value: x - x
  * is +0 for a finite x and NaN for an infinite or NaN one, so the sum is 0
  * exactly when all are (the compiler may not fold x - x to 0 without

@@ -80,15 +80,9 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     long ood = 0;
     for (int i = pb.start; i < pb.end; i++) {
         double *x = X + 3 * i, *v = V + 3 * i, *C = Cc + (D == 2 ? 4 : 9) * i; /* 2D: the in-plane 2x2 (tensor2.h) */
-        int base[3] = {0, 0, 0};
-        double fx[3] = {0, 0, 0}, w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
-        for (int d = 0; d < D; d++) {
-            const double Xd = (x[d] - g->lo[d]) * inv_dx;
-            const int b = base_node(Xd);
-            fx[d] = Xd - b;
-            base[d] = b - org[d];
-            bspline_weights(fx[d], w[d], dw);
-        }
+        int base[3];
+        double fx[3], w[3][3];
+        tile_stencil(g, D, x, org, inv_dx, base, fx, w);
         double nv[3] = {0, 0, 0}, B[9] = {0}, dT = 0, Tn = 0, ds = 0; /* 2D sums B's in-plane entries 0, 1, 3, 4 */
         /* the stencil's corner in the tile: the 3^dim nodes then sit at constant offsets from it */
         const double *const tp = tile + (D == 2 ? base[0] * GRID_T + base[1] : (base[0] * GRID_T + base[1]) * GRID_T + base[2]);
