@@ -85,6 +85,9 @@ void field_clock_plan(hearth_scene *s, double dt) {
         due = !(acc + dt <= lim) || !isfinite(lim);
     }
     if (s->field_phase + 1 >= FIELD_MAX_CYCLE) due = 1;
+    /* a scene's first step carries the fields, as at single rate: the surface, the oven's coupling and the
+     * gas vents' open pores (gas.c) are known from the start, and the cycles follow */
+    if (s->field_cycle_last == 0) due = 1;
     s->field_skip = !due;
     s->field_dt = due ? acc : 0.0;
 }

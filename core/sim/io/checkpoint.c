@@ -750,6 +750,9 @@ static int get_particles(ck_cursor *c, hearth_scene *s, hearth_error *err) {
     /* a file saved before eq. 10 became a strain (material.h) has no thermal strain column: none taken out yet */
     if ((ps->enabled & (1u << PC_THERMAL)) && !(enabled & (1u << PC_THERMAL)) && n)
         memset(ps->col[PC_THERMAL], 0, sizeof(double) * (size_t)n);
+    /* nor one saved before the gas vented between the fields' updates: nothing vents until the next (gas.c) */
+    if ((ps->enabled & (1u << PC_VENT)) && !(enabled & (1u << PC_VENT)) && n)
+        memset(ps->col[PC_VENT], 0, sizeof(double) * (size_t)n);
     ps->n = (int)n;
     return 0;
 }
