@@ -54,6 +54,7 @@
 #include <math.h>
 
 #include "mpm.h"
+#include "ranks.h"
 #include "scene.h"
 #include "thermal.h"
 #include "water.h"
@@ -64,9 +65,22 @@ double field_clock_limit(const hearth_scene *s) { return fmin(thermal_dt_limit(s
 static int multirate(const hearth_scene *s) {
     if (s->def.field_steps == 1 || s->def.solver != HEARTH_SOLVER_MPM || s->def.heat_implicit) return 0;
     if (s->def.water_momentum) return 0; /* the water's flux is a momentum impulse (eq. 26-27): the mechanics' every step */
-    if (!thermal_active(s) && !water_active(s)) return 0;
+    return thermal_active(s) || water_active(s);
+}
+
+/* The safe limit, the same on every MPI rank: each rank's water limit is its own particles' until a field
+ * step's water_finish has agreed on it, so the ranks take the smallest (a minimum is exact in any order).
+ * Every rank plans every step, so the cycles close on the same steps and the field halos move on those only
+ * (mpm_ranks_fields.c). */
+static double agreed_limit(const hearth_scene *s) {
+    double lim = FIELD_SAFETY * field_clock_limit(s);
     const mpm_state *m = mpm_state_of(s);
-    return !(m && m->nranks > 1);
+    if (m && m->nranks > 1) {
+        double all[m->nranks];
+        ranks_allgather_fixed(&lim, all, sizeof lim);
+        for (int r = 0; r < m->nranks; r++) lim = fmin(lim, all[r]);
+    }
+    return lim;
 }
 
 void field_clock_plan(hearth_scene *s, double dt) {
@@ -81,7 +95,7 @@ void field_clock_plan(hearth_scene *s, double dt) {
     else {
         /* no finite limit (no conduction, boundary or water: CO2 alone at each particle's temperature) has no
          * time scale to pick a cycle from: every step, as before */
-        const double lim = FIELD_SAFETY * field_clock_limit(s);
+        const double lim = agreed_limit(s);
         due = !(acc + dt <= lim) || !isfinite(lim);
     }
     if (s->field_phase + 1 >= FIELD_MAX_CYCLE) due = 1;

@@ -105,7 +105,8 @@ static int layer_block(const grid *g, int axis, int l, int k) {
     return grid_block_id(g, c[0], c[1], c[2]);
 }
 
-static int fields_live(const hearth_scene *s) { return thermal_active(s) || water_active(s); }
+/* a step of the fields' clock without an update (field_clock.c: the same steps on every rank) moves no field halo */
+static int fields_live(const hearth_scene *s) { return (thermal_active(s) || water_active(s)) && !s->field_skip; }
 
 hearth_status mpm_ranks_fields_mark(hearth_scene *s, hearth_error *err) {
     mpm_state *m = s->mpm;
