@@ -456,7 +456,8 @@ static void get_def(ck_cursor *c, hearth_scene_def *d, uint32_t version) {
                      FIELD_MAX_CYCLE);
             ck_fail(c, c->msg);
         }
-    }
+    } else
+        d->field_steps = 1; /* written single rate (every step), whatever today's default: their bits */
     d->solver = HEARTH_SOLVER_MPM; /* the only solver whose table says can_checkpoint (solver.h) */
 }
 
