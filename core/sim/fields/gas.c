@@ -115,14 +115,24 @@ void gas_between(hearth_scene *s, double dt) {
     const double *T = pcold(ps, PC_TEMPERATURE);
     const double *vent = s->def.gas_vent > 0 && (ps->enabled & (1u << PC_VENT)) ? pcold(ps, PC_VENT) : NULL;
     const int *mat = pcoli(ps, PC_MAT);
-    const int n = ps->n;
+    const int n = ps->n, nm = s->mats.n;
+    /* each material's alpha^g R0 dt, theta_r and dtheta, once a step: the loop is the exp and little else (it
+     * runs every step of the dough bench, docs/performance.md). At constant temperature gas_moles_step is
+     * k exp(-m^2) (1 + 0), k = alpha^g R0 dt, m = (theta - theta_r) / dtheta: these are its bits. */
+    double k[nm], Tr[nm], wT[nm];
+    for (int m = 0; m < nm; m++) {
+        const material_slot *gm = &s->mats.slot[m];
+        const double a = gm->core[CP_GAS_RATE];
+        k[m] = a > 0 && dt > 0 ? a * gm->params[gm->density_index] * dt : 0.0;
+        Tr[m] = gm->core[CP_REACTION_T], wT[m] = gm->core[CP_REACTION_WIDTH];
+    }
     /* per particle, nothing shared: the same bits on any thread count */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        const material_slot *gm = &s->mats.slot[mat[i]];
-        if (!(gm->core[CP_GAS_RATE] > 0)) continue;
-        G[i] += gas_moles_step(T[i], T[i], dt, gm->core[CP_GAS_RATE], gm->params[gm->density_index], gm->core[CP_REACTION_T],
-                               gm->core[CP_REACTION_WIDTH]);
+        const int m = mat[i];
+        if (!(k[m] > 0)) continue;
+        const double u = (T[i] - Tr[m]) / wT[m];
+        G[i] += k[m] * exp(-u * u);
         if (vent) G[i] *= vent_decay(ps, i, vent[i], dt);
     }
 }
