@@ -83,14 +83,14 @@ static int multirate(const hearth_scene *s) {
  * step's water_finish has agreed on it, so the ranks take the smallest (a minimum is exact in any order).
  * Every rank plans every step, so the cycles close on the same steps and the field halos move on those only
  * (mpm_ranks_fields.c). */
+static void take_min(void *acc, const void *next, void *ctx) {
+    (void)ctx;
+    *(double *)acc = fmin(*(double *)acc, *(const double *)next);
+}
 static double agreed_limit(const hearth_scene *s) {
     double lim = FIELD_SAFETY * field_clock_limit(s);
     const mpm_state *m = mpm_state_of(s);
-    if (m && m->nranks > 1) {
-        double all[m->nranks];
-        ranks_allgather_fixed(&lim, all, sizeof lim);
-        for (int r = 0; r < m->nranks; r++) lim = fmin(lim, all[r]);
-    }
+    if (m && m->nranks > 1) ranks_combine(&lim, sizeof lim, take_min, NULL);
     return lim;
 }
 

@@ -110,29 +110,24 @@ double gas_vent_factor(const hearth_scene *s, int i, double dt) {
 
 void gas_between(hearth_scene *s, double dt) {
     particles *ps = &s->ps;
-    if (!(ps->enabled & (1u << PC_GAS)) || !(ps->enabled & (1u << PC_TEMPERATURE))) return;
+    if (!(ps->enabled & (1u << PC_GAS)) || !(ps->enabled & (1u << PC_TEMPERATURE)) || !(dt > 0)) return;
     double *G = pcold(ps, PC_GAS);
     const double *T = pcold(ps, PC_TEMPERATURE);
     const double *vent = s->def.gas_vent > 0 && (ps->enabled & (1u << PC_VENT)) ? pcold(ps, PC_VENT) : NULL;
     const int *mat = pcoli(ps, PC_MAT);
-    const int n = ps->n, nm = s->mats.n;
-    /* each material's alpha^g R0 dt, theta_r and dtheta, once a step: the loop is the exp and little else (it
-     * runs every step of the dough bench, docs/performance.md). At constant temperature gas_moles_step is
-     * k exp(-m^2) (1 + 0), k = alpha^g R0 dt, m = (theta - theta_r) / dtheta: these are its bits. */
-    double k[nm], Tr[nm], wT[nm];
-    for (int m = 0; m < nm; m++) {
-        const material_slot *gm = &s->mats.slot[m];
-        const double a = gm->core[CP_GAS_RATE];
-        k[m] = a > 0 && dt > 0 ? a * gm->params[gm->density_index] * dt : 0.0;
-        Tr[m] = gm->core[CP_REACTION_T], wT[m] = gm->core[CP_REACTION_WIDTH];
-    }
-    /* per particle, nothing shared: the same bits on any thread count */
+    const material_slot *slot = s->mats.slot;
+    const int n = ps->n;
+    /* At constant temperature gas_moles_step is k exp(-m^2) (1 + 0), k = alpha^g R0 dt, m = (theta - theta_r) /
+     * dtheta: these are its bits, without its call and its linear-path terms (the loop runs every step of the
+     * dough bench: the exp is most of it, docs/performance.md). Per particle, nothing shared: the same bits on
+     * any thread count. */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        const int m = mat[i];
-        if (!(k[m] > 0)) continue;
-        const double u = (T[i] - Tr[m]) / wT[m];
-        G[i] += k[m] * exp(-u * u);
+        const material_slot *gm = &slot[mat[i]];
+        const double a = gm->core[CP_GAS_RATE];
+        if (!(a > 0)) continue;
+        const double u = (T[i] - gm->core[CP_REACTION_T]) / gm->core[CP_REACTION_WIDTH];
+        G[i] += a * gm->params[gm->density_index] * dt * exp(-u * u);
         if (vent) G[i] *= vent_decay(ps, i, vent[i], dt);
     }
 }
