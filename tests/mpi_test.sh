@@ -101,6 +101,23 @@ mpi_dough_3d_matches_one_rank)
     on_slabs $n
     same_sums
     ;;
+mpi_dough_3d_cycle_matches_one_rank)
+    # the fields' clock on slabs (core/sim/fields/field_clock.c): at the default
+    # (automatic) the 3D dough above takes no field update in its steps, so here
+    # its cycle is pinned: every step (field_steps=1: the halo layers every step)
+    # and every 7th (field and plain steps interleaved: the halos move on the
+    # field steps only); each must match one process and have taken the oven's
+    # heat (a field update ran)
+    n=70
+    [ "$ranks" = 2 ] && n=35
+    for k in 1 7; do
+        against_one dough.lua $n --set dim=3 --set steps=$n --set field_steps=$k
+        on_slabs $n
+        same_sums
+        awk '$1 == "sums" && $11 + 0 > 0 {ok = 1} END {exit !ok}' "$tmp/many.txt" ||
+            fail "field_steps=$k: no oven heat over $ranks ranks, so no field update ran: $(grep '^sums' "$tmp/many.txt")"
+    done
+    ;;
 mpi_implicit_heat_matches_one_rank)
     # the same dough with backward Euler heat: the CG's dot products over the
     # ranks (rank order), its matrix products through the halo layers

@@ -894,6 +894,9 @@ static hearth_scene *claims_scene(int kind) {
     }
     d.oven_temperature = 180;
     d.oven_beta = 30;
+    /* the heat channels in every grid update: at the automatic field clock (field_clock.c) these 30 steps would
+     * take no field update (the limit is seconds) */
+    d.field_steps = 1;
     hearth_scene *s = fx_scene_def(&d);
     const char *nm[] = {"E", "conductivity", "expansion"};
     const double nv[] = {2e4, 0.4, 50};

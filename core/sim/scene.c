@@ -40,6 +40,7 @@
 #include "ranks.h"
 #include "mpm.h"
 #include "field_clock.h"
+#include "gas.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -346,6 +347,9 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
     /* leavening needs the gas column, and the reaction needs temperature */
     if (core[CP_GAS_RATE] > 0 &&
         (particles_enable(&s->ps, PC_GAS, err) || scene_enable_temperature(s, err))) return -1;
+    /* venting between the fields' updates needs each particle's open surface from the last (gas.c, gas_between) */
+    if (core[CP_GAS_RATE] > 0 && s->def.gas_vent > 0 && s->def.solver == HEARTH_SOLVER_MPM &&
+        particles_enable(&s->ps, PC_VENT, err)) return -1;
     /* eq. 10 as a thermal strain needs each particle's last one (material.h, material_thermal_split) */
     if (core[CP_EXPANSION] > 0 && m->bulk_modulus && particles_enable(&s->ps, PC_THERMAL, err)) return -1;
     /* and so does a plugin that reads temperature */
@@ -425,6 +429,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         if (ps->enabled & (1u << PC_GAS)) pcold(ps, PC_GAS)[j] = 0;
         if (ps->enabled & (1u << PC_DRIED)) pcold(ps, PC_DRIED)[j] = 0; /* never dried */
         if (ps->enabled & (1u << PC_THERMAL)) pcold(ps, PC_THERMAL)[j] = 0; /* F = I: no thermal strain taken out yet */
+        if (ps->enabled & (1u << PC_VENT)) pcold(ps, PC_VENT)[j] = 0; /* no surface until a field step finds it (gas.c) */
         if (ps->state_stride) {
             double *st = pcold(ps, PC_STATE) + (size_t)j * ps->state_stride;
             memset(st, 0, sizeof(double) * (size_t)ps->state_stride);
@@ -698,6 +703,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             s->out_of_domain += rep.out_of_domain;
             if (water_active(s)) water_step_stands(&s->water);
             /* the step stands: the crust's colour integrates its end temperature (a rolled back step never browns) */
+            if (s->field_skip) gas_between(s, dt); /* the CO2 moves every step, the fields' clock or not (gas.c) */
             if (s->def.browning) browning_step(s, dt); /* hearth_scene_create made its columns */
             if (water_active(s) && (s->ps.enabled & (1u << PC_DRIED))) water_dried_step(s); /* a crust stays dry */
             if (thermal_active(s)) thermal_step_stands(&s->heat);

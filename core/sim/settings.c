@@ -116,9 +116,9 @@ static const hearth_setting settings[] = {
     REAL("two_field_friction", "1", "with two_field: Coulomb friction coefficient between the two sides of a crack where "
          "they press together (0 = they slide freely)", 0, 0, 10, two_field_friction, 0),
     INT("field_steps", "MPM heat, water and CO2 update on the grid every k-th step, over the k steps' time (the "
-        "particles carry them every step): 0 = k automatic, each update within a tenth of the fields' explicit limit; 1 = "
-        "every step (single rate, the default: two closed-form tests fail with the automatic k); k = every k-th "
-        "(fields/field_clock.c)", 1, 0, 4096, field_steps, 1),
+        "particles carry them, and make and vent their CO2, every step): 0 = k automatic (the default), each update "
+        "within a tenth of the fields' explicit limit; 1 = every step (single rate, the old scheme to the bit); k = every "
+        "k-th (fields/field_clock.c)", 0, 0, 4096, field_steps, 1),
     LUA_CHOICE("blend", "how bodies of h.mix{...} materials are simulated: the blend model, linearly blended parameters, "
                "or random binary labels (Nagasawa et al. Figs. 1, 9, 10)", 0, w_blend, 1),
     LUA_CHOICE("mixing", "dynamic: h.mix bodies share one mixture whose ratios follow the particles (Nagasawa et al. eq. "

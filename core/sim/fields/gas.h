@@ -12,8 +12,17 @@ double gas_moles_step(double T0, double T1, double dt, double alpha_g, double R0
 struct hearth_scene;
 /// Venting (gas.c): the factor on particle i's n^g over a step of dt, exp(-gas_vent S_p dt / V_p) when the
 /// particle holds air surface (boundary.c's area, this step's) and its gas porosity has reached vent_porosity,
-/// else 1. MPM's G2P calls it after the step's production.
+/// else 1. MPM's G2P calls it on a field step after the step's production; it keeps gas_vent S_p (0 when
+/// closed or inside) in the particle's PC_VENT for the steps until the next field step (gas_between).
 double gas_vent_factor(const struct hearth_scene *s, int i, double dt);
+/// The CO2 of a step that carries no field update (field_clock.c), per particle after the step stood: each
+/// particle makes its gas at the temperature it holds since the last field step and vents through the
+/// surface it held then (PC_VENT), n <- (n + a dt) e^{-h S_p dt / V_p}, as a single-rate step would.
+void gas_between(struct hearth_scene *s, double dt);
+/// The moles a field step's G2P adds over its cycle of fdt: the production for the temperature moving
+/// linearly from T0 to T1 over fdt (gas_moles_step), less what the cycle's earlier steps (acc of it) made at
+/// T0 (gas_between), so a cycle makes the linear law's exact total. Single rate (acc = 0) is gas_moles_step.
+double gas_moles_field_step(double T0, double T1, double fdt, double acc, double alpha_g, double R0, double Tr, double dT);
 /// Porosity n^p = 1 - (1 - n^p_0) / J^P: Ding et al.'s gas volume fraction
 /// n^p = V^g / V^s in (0, 1) (§5.4) when the plastic flow changes only the
 /// pores' volume, the rest of the mixture keeping its (1 - n^p_0) V_0. Their

@@ -456,7 +456,8 @@ static void get_def(ck_cursor *c, hearth_scene_def *d, uint32_t version) {
                      FIELD_MAX_CYCLE);
             ck_fail(c, c->msg);
         }
-    }
+    } else
+        d->field_steps = 1; /* written single rate (every step), whatever today's default: their bits */
     d->solver = HEARTH_SOLVER_MPM; /* the only solver whose table says can_checkpoint (solver.h) */
 }
 
@@ -750,6 +751,9 @@ static int get_particles(ck_cursor *c, hearth_scene *s, hearth_error *err) {
     /* a file saved before eq. 10 became a strain (material.h) has no thermal strain column: none taken out yet */
     if ((ps->enabled & (1u << PC_THERMAL)) && !(enabled & (1u << PC_THERMAL)) && n)
         memset(ps->col[PC_THERMAL], 0, sizeof(double) * (size_t)n);
+    /* nor one saved before the gas vented between the fields' updates: nothing vents until the next (gas.c) */
+    if ((ps->enabled & (1u << PC_VENT)) && !(enabled & (1u << PC_VENT)) && n)
+        memset(ps->col[PC_VENT], 0, sizeof(double) * (size_t)n);
     ps->n = (int)n;
     return 0;
 }

@@ -148,11 +148,13 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                 if (WATER && T1 > boil) w_removed += water_boil(s, i, &Tcol[i], boil);
             }
             if (Tcol[i] > Tmax[i]) Tmax[i] = Tcol[i];
-            if (Gcol) { /* CO2 over the step, temperature moving linearly from T0 to T1 (§5.4) */
+            if (Gcol) { /* CO2 over the cycle, temperature moving linearly from T0 to T1 (§5.4), less what its
+                         * earlier steps made (gas.c's gas_between: the gas moves every step) */
                 const material_slot *gm = &s->mats.slot[mat[i]];
-                Gcol[i] += gas_moles_step(T0, Tcol[i], fdt, gm->core[CP_GAS_RATE], gm->params[gm->density_index],
-                                          gm->core[CP_REACTION_T], gm->core[CP_REACTION_WIDTH]);
-                if (vent) Gcol[i] *= gas_vent_factor(s, i, fdt); /* open surface pores lose their CO2 (gas.c) */
+                Gcol[i] += gas_moles_field_step(T0, Tcol[i], fdt, s->field_acc, gm->core[CP_GAS_RATE],
+                                                gm->params[gm->density_index], gm->core[CP_REACTION_T],
+                                                gm->core[CP_REACTION_WIDTH]);
+                if (vent) Gcol[i] *= gas_vent_factor(s, i, dt); /* open surface pores lose their CO2 (gas.c) */
             }
         }
         if (flags && (flags[i] & PF_FIXED)) { /* a pinned particle keeps its place */

@@ -105,14 +105,18 @@ static int layer_block(const grid *g, int axis, int l, int k) {
     return grid_block_id(g, c[0], c[1], c[2]);
 }
 
-static int fields_live(const hearth_scene *s) { return thermal_active(s) || water_active(s); }
+/* fields_on: the scene has heat or water (the reductions, stats() among them between steps, and the tables);
+ * fields_live: and this step updates them. A step of the fields' clock without an update (field_clock.c: the
+ * same steps on every rank) moves no field halo and marks no halo layer. */
+static int fields_on(const hearth_scene *s) { return thermal_active(s) || water_active(s); }
+static int fields_live(const hearth_scene *s) { return fields_on(s) && !s->field_skip; }
 
 hearth_status mpm_ranks_fields_mark(hearth_scene *s, hearth_error *err) {
     mpm_state *m = s->mpm;
     int axis, lo, hi;
-    if (!mpm_ranks_slab(m, &axis, &lo, &hi) || !fields_live(s)) return HEARTH_OK;
-    hearth_status st = state(m, err);
-    if (st) return st;
+    if (!mpm_ranks_slab(m, &axis, &lo, &hi) || !fields_on(s)) return HEARTH_OK;
+    hearth_status st = state(m, err); /* at every sort: the reductions between field steps use its buffer */
+    if (st || s->field_skip) return st;
     struct mpm_slab_fields *f = m->sfields;
     const grid *g = &s->g;
     const int S = g->nblocks / g->nb[axis], me = ranks_rank(), N = m->nranks;
@@ -379,9 +383,9 @@ const unsigned char *mpm_ranks_fields_owned(const hearth_scene *s) {
 void mpm_ranks_fields_reduce(const hearth_scene *s, double *sum, int nsum, double *max, int nmax) {
     const mpm_state *m = s->mpm;
     int axis, lo, hi;
-    if (!m || !mpm_ranks_slab(m, &axis, &lo, &hi) || !fields_live(s)) return;
+    if (!m || !mpm_ranks_slab(m, &axis, &lo, &hi) || !fields_on(s)) return;
     if (m->failed_alone) return; /* this rank's own sums: it exchanges nothing after a failed step (mpm_ranks_end) */
-    /* the step's first fill made the state: every rank got here through it */
+    /* the step's sort made the state (mpm_ranks_fields_mark): every rank got here through it */
     HEARTH_ASSERT(m->sfields && nsum + nmax <= RED_MAX);
     const int w = nsum + nmax;
     double mine[RED_MAX] = {0}, *all = m->sfields->red;

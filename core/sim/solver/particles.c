@@ -34,6 +34,7 @@ static const struct {
     [PC_BROWNING] = {"browning", 1, 0},
     [PC_DRIED] = {"dried", 1, 0},
     [PC_THERMAL] = {"thermal_strain", 1, 0},
+    [PC_VENT] = {"vent_rate", 1, 0},
 };
 
 const char *particles_col_name(int c) { return col_info[c].name; }

@@ -39,6 +39,7 @@ typedef enum pcol {
     PC_BROWNING,               /* browning index Delta E / Delta E_inf (Zanoni et al. 1995), 0..1, 1 (browning.c) */
     PC_DRIED,                  /* 1 - the lowest moisture ratio X/X_0 reached, 0..1 (irreversible moisture curves), 1 */
     PC_THERMAL,                /* thermal volume strain ln J_th at the last stress (eq. 10 as a strain: material.h), 1 */
+    PC_VENT,                   /* gas_vent: h S_p at the last field step, 0 where closed or inside (gas.c's gas_between), 1 */
     PC_COUNT
 } pcol;
 
