@@ -495,7 +495,7 @@ PY
 # one-cell bins of the highest particle with damage below 1) at least two
 # cells wide and a tenth of the muffin's height (its centre top above the
 # cup's floor) deep, at the end of claim_muffin_domes' bake (2D, one cup,
-# 1.5 s): at dx 4 mm, and at 3 mm (_fine, release_only).
+# 1.5 s): at dx 4 mm, and at 3 mm (_fine, in suite campaign for its cost: tests/meson.build).
 claim_muffin_top_tears | claim_muffin_top_tears_fine)
     dx=0.004
     [ "$case_name" = claim_muffin_top_tears_fine ] && dx=0.003
