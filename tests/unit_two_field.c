@@ -179,6 +179,7 @@ TEST(two_field_off_same_bits) {
         d.hi[0] = d.hi[1] = 0.2;
         d.oven_temperature = 180;
         d.oven_beta = 30;
+        d.field_steps = 1; /* heat every step: at the automatic default these 200 steps hold no heat update */
         d.two_field = on;
         hearth_scene *s = fx_scene_def(&d);
         CHECK(s != NULL);
