@@ -288,6 +288,50 @@ TEST(one_region_sort_out_of_memory) {
     CHECK(failed > 0 && k < 40);
 }
 
+/* The permutation tests' columns: every value tells its column and place
+ * (1000 c + i; doubles + 0.25). */
+static void permute_fill(particles *ps, const int n) {
+    for (int c = 0; c < PC_COUNT; c++) {
+        if (!(ps->enabled & (1u << c))) continue;
+        const int nc = particles_col_ncomp(ps, c);
+        for (int i = 0; i < n * nc; i++) {
+            if (particles_col_is_int(c)) pcoli(ps, c)[i] = 1000 * c + i;
+            else pcold(ps, c)[i] = 1000.0 * c + i + 0.25;
+        }
+    }
+}
+
+/* kind 0: runs shifted by a few dozen places, as a sort after a step makes
+ * (each rotated run's place i takes i + 39); 1: a scattered order, i 2713 mod
+ * n (2713 is prime and divides neither test's n) */
+static void permute_order(int *order, const int n, const int kind) {
+    for (int i = 0; i < n; i++) order[i] = i;
+    if (kind == 0)
+        for (int i = 0; i + 40 < n; i += 97) {
+            const int last = order[i + 39];
+            memmove(order + i + 1, order + i, sizeof(int) * 39);
+            order[i] = last;
+        }
+    else
+        for (int i = 0; i < n; i++) order[i] = (int)(((long)i * 2713) % n);
+}
+
+/* The values not where order sends them (place i holds what place order[i] held). */
+static int permute_wrong(const particles *ps, const int *order, const int n) {
+    int bad = 0;
+    for (int c = 0; c < PC_COUNT; c++) {
+        if (!(ps->enabled & (1u << c))) continue;
+        const int nc = particles_col_ncomp(ps, c);
+        for (int i = 0; i < n; i++)
+            for (int k = 0; k < nc; k++) {
+                const long want = 1000L * c + (long)order[i] * nc + k;
+                bad += particles_col_is_int(c) ? pcoli(ps, c)[i * nc + k] != want
+                                               : pcold(ps, c)[i * nc + k] != (double)want + 0.25;
+            }
+    }
+    return bad;
+}
+
 /* particles_permute gives new[i] = old[order[i]] in every column, whether
  * the particles moved a little (the window through a ring, whole records)
  * or anywhere (following the cycles), at one and two threads, through n
@@ -305,39 +349,13 @@ TEST(particles_permute_orders) {
             CHECK(particles_enable(&ps, PC_FLAGS, &err) == HEARTH_OK && particles_set_state_stride(&ps, stride, &err) == HEARTH_OK);
             CHECK(particles_reserve_exact(&ps, n, &err) == HEARTH_OK);
             ps.n = n;
-            for (int c = 0; c < PC_COUNT; c++) {
-                if (!(ps.enabled & (1u << c))) continue;
-                const int nc = particles_col_ncomp(&ps, c);
-                for (int i = 0; i < n * nc; i++) {
-                    if (particles_col_is_int(c)) pcoli(&ps, c)[i] = 1000 * c + i;
-                    else pcold(&ps, c)[i] = 1000.0 * c + i + 0.25;
-                }
-            }
-            /* kind 0: runs shifted by a few dozen places (a sort after a step); 1: a scattered order */
+            permute_fill(&ps, n);
             int *order = malloc(sizeof(int) * n);
             const size_t room = (ints ? sizeof(int) : sizeof(double)) * (size_t)n;
             void *scratch = malloc(room);
-            for (int i = 0; i < n; i++) order[i] = i;
-            if (kind == 0)
-                for (int i = 0; i + 40 < n; i += 97) { /* rotate [i, i + 40) by one: place i takes i + 39 */
-                    const int last = order[i + 39];
-                    memmove(order + i + 1, order + i, sizeof(int) * 39);
-                    order[i] = last;
-                }
-            else
-                for (int i = 0; i < n; i++) order[i] = (int)(((long)i * 2713) % n); /* 2713 and 6000 are coprime */
+            permute_order(order, n, kind);
             particles_permute(&ps, order, scratch, room);
-            int bad = 0;
-            for (int c = 0; c < PC_COUNT; c++) {
-                if (!(ps.enabled & (1u << c))) continue;
-                const int nc = particles_col_ncomp(&ps, c);
-                for (int i = 0; i < n; i++)
-                    for (int k = 0; k < nc; k++) {
-                        const long want = 1000L * c + (long)order[i] * nc + k;
-                        bad += particles_col_is_int(c) ? pcoli(&ps, c)[i * nc + k] != want
-                                                       : pcold(&ps, c)[i * nc + k] != (double)want + 0.25;
-                    }
-            }
+            const int bad = permute_wrong(&ps, order, n);
             printf("  %s order, %d thread(s), n %s of scratch: %d wrong values\n", kind ? "scattered" : "shifted", t,
                    ints ? "ints" : "doubles", bad);
             CHECK(bad == 0);
@@ -364,27 +382,12 @@ TEST(particles_permute_team_range_orders) {
             CHECK(particles_enable(&ps, PC_FLAGS, &err) == HEARTH_OK && particles_set_state_stride(&ps, 5, &err) == HEARTH_OK);
             CHECK(particles_reserve_exact(&ps, n, &err) == HEARTH_OK);
             ps.n = n;
-            for (int c = 0; c < PC_COUNT; c++) {
-                if (!(ps.enabled & (1u << c))) continue;
-                const int nc = particles_col_ncomp(&ps, c);
-                for (int i = 0; i < n * nc; i++) {
-                    if (particles_col_is_int(c)) pcoli(&ps, c)[i] = 1000 * c + i;
-                    else pcold(&ps, c)[i] = 1000.0 * c + i + 0.25;
-                }
-            }
+            permute_fill(&ps, n);
             int *order = malloc(sizeof(int) * n);
             const size_t room = sizeof(int) * (size_t)n; /* the MPM sort's keys */
             void *scratch = malloc(room);
-            for (int i = 0; i < n; i++) order[i] = i;
+            permute_order(order, n, kind);
             int W = 0;
-            if (kind == 0)
-                for (int i = 0; i + 40 < n; i += 97) { /* rotate [i, i + 40) by one: place i takes i + 39 */
-                    const int last = order[i + 39];
-                    memmove(order + i + 1, order + i, sizeof(int) * 39);
-                    order[i] = last;
-                }
-            else
-                for (int i = 0; i < n; i++) order[i] = (int)(((long)i * 2713) % n); /* 2713 and 40000 are coprime */
             for (int i = 0; i < n; i++) W = abs(order[i] - i) > W ? abs(order[i] - i) : W;
             const unsigned long e0 = ps.edits;
             int ranges[4] = {-1, -1, -1, -1};
@@ -397,17 +400,7 @@ TEST(particles_permute_team_range_orders) {
                 if (omp_get_num_threads() == P)
                     ranges[me] = particles_permute_team_range(&ps, order, W, scratch, room, split[P][me], split[P][me + 1]);
             }
-            int bad = 0;
-            for (int c = 0; c < PC_COUNT; c++) {
-                if (!(ps.enabled & (1u << c))) continue;
-                const int nc = particles_col_ncomp(&ps, c);
-                for (int i = 0; i < n; i++)
-                    for (int k = 0; k < nc; k++) {
-                        const long want = 1000L * c + (long)order[i] * nc + k;
-                        bad += particles_col_is_int(c) ? pcoli(&ps, c)[i * nc + k] != want
-                                                       : pcold(&ps, c)[i * nc + k] != (double)want + 0.25;
-                    }
-            }
+            const int bad = permute_wrong(&ps, order, n);
             printf("  %s order (W %d), %d thread(s), by %s: %d wrong values\n", kind ? "scattered" : "shifted", W, P,
                    ranges[0] == 1 ? "places" : ranges[0] == 0 ? "columns" : "?", bad);
             CHECK(bad == 0 && ps.edits == e0 + 1);
