@@ -68,4 +68,10 @@ static inline int fx_box_collider(hearth_scene *s, const double c[3], const doub
     hearth_shape_free(b);
     return id;
 }
+/* A body force (hearth_scene_set_body_force) of *ud m/s^2 along +y: 9.81 cancels gravity. */
+static inline void fx_antigravity(void *ud, double t, const double x[3], double acc[3]) {
+    (void)t;
+    (void)x;
+    acc[1] = *(const double *)ud;
+}
 #endif

@@ -8,7 +8,7 @@ set -eu
 b=${1:-build/release}
 export HEARTH_PLUGIN_PATH="$b/plugins" OMP_NUM_THREADS=1
 for t in mpm_periodic_shear_wave mpm_periodic_conserves_momentum; do
-    HEARTH_LONG_LADDER=1 "$b/tests/unit_mpm" "$t"
+    HEARTH_LONG_LADDER=1 "$b/tests/unit_mpm_boundaries" "$t"
 done
 root=$(cd "$(dirname "$0")/../.." && pwd)
 "$b/app/hearth" run "$root/tests/lua/body_force_field.lua" --quiet

@@ -7,5 +7,5 @@ set -eu
 b=${1:-build/release}
 export HEARTH_PLUGIN_PATH="$b/plugins" OMP_NUM_THREADS=1
 for t in couette_lid_on_node_row grip_cantilever_clamped_at_face column_base_stress; do
-    HEARTH_LONG_LADDER=1 "$b/tests/unit_mpm" "$t" || [ $? -eq 77 ]
+    HEARTH_LONG_LADDER=1 "$b/tests/unit_mpm_boundaries" "$t" || [ $? -eq 77 ]
 done
