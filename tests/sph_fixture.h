@@ -45,4 +45,10 @@ static inline int sph_box(hearth_scene *s, int mat, const double lo[3], const do
     hearth_shape_free(b);
     return id;
 }
+/* A 2D block of particles filling [x0, x1] x [y0, y1] (sph_box in the plane). */
+static inline int box_body(hearth_scene *s, int mat, double x0, double y0, double x1, double y1, int fixed, double T) {
+    const double lo[3] = {x0, y0, -0.5}, hi[3] = {x1, y1, 0.5};
+    return sph_box(s, mat, lo, hi, fixed, T);
+}
+
 #endif

@@ -30,10 +30,13 @@ for t in 1 2 3 4; do
     OMP_NUM_THREADS=$t "$hearth" run "$root/scripts/bench/sph_dam_break.lua" --quiet --set dim=3 --set dx=0.01 \
         --set steps=4 --set hash=1 | sed "s|^|3D dam break, $t threads: |" >> "$out.part"
 done
-# every unit_sph test's printed numbers (the test names from tests/meson.build)
-for t in $(sed -n "/'unit_sph' :/,/\]/p" "$root/tests/meson.build" | grep -o "'sph_[a-z_0-9]*'" | tr -d "'"); do
-    # (wall times, which vary, left out)
-    (cd "$tmp" && { OMP_NUM_THREADS=2 "$build/tests/unit_sph" "$t" 2>&1 && echo "exit 0" || echo "exit $?"; } |
-        sed -E 's/[0-9.]+ ms/(ms)/g' | sed "s|^|$t: |") >> "$out.part"
+# every SPH core test's printed numbers (the test names from tests/meson.build;
+# unit_sph.c was split by topic into these three)
+for exe in unit_sph unit_sph_transport unit_sph_bubble; do
+    for t in $(sed -n "/'$exe' :/,/\]/p" "$root/tests/meson.build" | grep -o "'sph_[a-z_0-9]*'" | tr -d "'"); do
+        # (wall times, which vary, left out)
+        (cd "$tmp" && { OMP_NUM_THREADS=2 "$build/tests/$exe" "$t" 2>&1 && echo "exit 0" || echo "exit $?"; } |
+            sed -E 's/[0-9.]+ ms/(ms)/g' | sed "s|^|$t: |") >> "$out.part"
+    done
 done
 mv "$out.part" "$out"

@@ -14,6 +14,6 @@ set -eu
 build=${1:-build/release}
 shift || true
 ladder=${*:-10 20 40 80}
-exe="$build/tests/unit_sph"
+exe="$build/tests/unit_sph_transport"
 [ -x "$exe" ] || { echo "no $exe: build first (ninja -C $build)" >&2; exit 2; }
 SPH_LADDER="$ladder" OMP_NUM_THREADS=1 "$exe" sph_viscosity_ladder

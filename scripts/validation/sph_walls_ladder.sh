@@ -15,7 +15,7 @@
 # section "SPH moving walls and conduction". A few minutes on one core.
 set -eu
 build=${1:-build/release}
-exe="$build/tests/unit_sph"
+exe="$build/tests/unit_sph_transport"
 [ -x "$exe" ] || { echo "no $exe: build first (ninja -C $build)" >&2; exit 2; }
 SPH_LADDER="${SPH_LADDER:-10 20 40 80}" SPH_HEAT_LADDER="${SPH_HEAT_LADDER:-12 24 48 96}" OMP_NUM_THREADS=1 \
     "$exe" sph_walls_ladder
