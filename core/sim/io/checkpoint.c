@@ -1,4 +1,5 @@
-/* checkpoint.c: save and restore the full scene state (layout: checkpoint.h).
+/* checkpoint.c: restore the full scene state from a checkpoint (layout:
+ * checkpoint.h; the writer is checkpoint_save.c).
  *
  * A restored scene continues bit-identically: particle order, clocks, dt
  * scale, the jitter generator and collider poses are all in the file. Motion
@@ -21,8 +22,7 @@
  * The checksum alone would refuse random damage; the checks of 3-5 are for
  * a file crafted to pass it.
  *
- * The writer builds the whole image in memory (open_memstream) so the header
- * can carry the size and CRC, then writes it atomically. Version 2 files (a
+ * The writer is checkpoint_save.c. Version 2 files (a
  * checksum over the particles only, plugins by path) and version 3 are refused
  * by version; version 4 is read with the DEF fields version 5 appended at their
  * defaults (its writer refused scenes with any other value); versions 4 and 5
@@ -159,7 +159,7 @@ static uint64_t fnv_str(uint64_t h, const char *s) { return fnv(h, s ? s : "", (
  * ranges and defaults (the meaning of the saved numbers), the state size and
  * the needs (the meaning of the saved state columns). The help text is left
  * out: rewording it changes nothing saved. */
-static uint64_t schema_hash(const hearth_material *m) {
+uint64_t ck_schema_hash(const hearth_material *m) {
     uint64_t h = 1469598103934665603ULL;
     h = fnv_str(h, m->name);
     const int32_t head[4] = {m->real_size, m->nparams, m->state_size, (int32_t)m->needs};
@@ -179,198 +179,6 @@ static int is_plugin_name(const char *s) {
     for (; *s; s++)
         if (!((*s >= 'a' && *s <= 'z') || (*s >= '0' && *s <= '9') || *s == '_')) return 0;
     return 1;
-}
-
-/* ---- writing ---------------------------------------------------------- */
-
-typedef struct ck_out {
-    FILE *f;
-    int bad;
-} ck_out;
-
-static void put(ck_out *o, const void *p, size_t n) {
-    if (!o->bad && n && fwrite(p, n, 1, o->f) != 1) o->bad = 1;
-}
-static void put_i32(ck_out *o, int32_t v) { put(o, &v, sizeof v); }
-static void put_u32(ck_out *o, uint32_t v) { put(o, &v, sizeof v); }
-static void put_u64(ck_out *o, uint64_t v) { put(o, &v, sizeof v); }
-static void put_i64(ck_out *o, int64_t v) { put(o, &v, sizeof v); }
-static void put_f64(ck_out *o, double v) { put(o, &v, sizeof v); }
-static void put_str(ck_out *o, const char *s) {
-    const uint32_t n = (uint32_t)strlen(s);
-    put_u32(o, n);
-    put(o, s, n);
-}
-
-static void put_def(ck_out *o, const hearth_scene_def *d) {
-    put(o, "DEF ", 4);
-    put_i32(o, d->dim);
-    put_f64(o, d->dx);
-    put(o, d->lo, sizeof d->lo);
-    put(o, d->hi, sizeof d->hi);
-    put(o, d->gravity, sizeof d->gravity);
-    put_f64(o, d->cfl);
-    put_f64(o, d->dt_max);
-    put_i32(o, (int32_t)d->wall);
-    put_f64(o, d->wall_friction);
-    put_i32(o, (int32_t)d->guard);
-    put_i32(o, d->max_rollbacks);
-    put_f64(o, d->energy_growth);
-    put_u64(o, d->seed);
-    put_f64(o, d->oven_temperature);
-    put_f64(o, d->oven_beta);
-    put_i32(o, d->heat_implicit);
-    put_i32(o, d->water_momentum);
-    put_i32(o, d->transfer);
-    put_f64(o, d->heat_flip);
-    put_f64(o, d->oven_saturation);
-    put_i32(o, d->latent_heat);
-    put_i32(o, d->browning);
-    put_f64(o, d->browning_scale);
-    /* version 5: the settings version 4 could not hold (its writer refused them) */
-    put_f64(o, d->damping);
-    put_f64(o, d->boiling_point);
-    for (int a = 0; a < 3; a++) put_i32(o, d->periodic[a]);
-    put_i32(o, d->two_field);
-    put_f64(o, d->two_field_friction);
-    put_f64(o, d->gas_vent);
-    put_f64(o, d->vent_porosity);
-    /* version 6: the fields' clock (fields/field_clock.c) */
-    put_i32(o, d->field_steps);
-}
-
-static void put_clocks(ck_out *o, const hearth_scene *s) {
-    put(o, "CLK ", 4);
-    put_i32(o, (int32_t)s->guard); /* first: its offset is fixed (tests craft it) */
-    put_f64(o, s->t);
-    put_f64(o, s->dt_last);
-    put_f64(o, s->dt_scale);
-    put_i64(o, s->step);
-    put_i32(o, s->rollbacks);
-    put_f64(o, s->max_speed);
-    put_f64(o, s->c_max);
-    put_f64(o, s->kinetic);
-    put_f64(o, s->kinetic_peak);
-    put_f64(o, s->cfl_last);
-    put_i64(o, s->out_of_domain);
-    put_u64(o, s->rng);
-    put_i32(o, s->next_id);
-    put_i32(o, s->nbodies);
-    put_f64(o, s->water.lost);
-    /* version 6: the fields' cycle, so a restore mid-cycle closes it on the same step over the same time */
-    put_f64(o, s->field_acc);
-    put_i32(o, s->field_phase);
-    put_f64(o, s->field_dt_last);
-    put_i32(o, s->field_cycle_last);
-}
-
-static void put_materials(ck_out *o, const hearth_scene *s) {
-    put(o, "MATS", 4);
-    put_u32(o, (uint32_t)s->mats.n);
-    for (int i = 0; i < s->mats.n; i++) {
-        const material_slot *ms = &s->mats.slot[i];
-        put_str(o, ms->m->name); /* the name only: never the path it was loaded from */
-        put_u32(o, (uint32_t)ms->m->abi_version);
-        put_u64(o, schema_hash(ms->m));
-        put_u32(o, (uint32_t)ms->m->nparams);
-        put(o, ms->params, sizeof(double) * (size_t)ms->m->nparams);
-        put(o, ms->core, sizeof(double) * CP_COUNT);
-        put_u32(o, (uint32_t)ms->ncurves);
-        for (int k = 0; k < ms->ncurves; k++) {
-            const curve *c = &ms->curves[k];
-            put_u32(o, (uint32_t)c->param);
-            put_u32(o, (uint32_t)c->n);
-            put_u32(o, (uint32_t)c->irreversible | (uint32_t)c->of << 1); /* bit 1: a moisture curve (#18) */
-            put(o, c->T, sizeof(double) * (size_t)c->n);
-            put(o, c->v, sizeof(double) * (size_t)c->n);
-        }
-    }
-}
-
-static void put_colliders(ck_out *o, const hearth_scene *s) {
-    put(o, "COLS", 4);
-    put_u32(o, (uint32_t)s->ncol);
-    for (int i = 0; i < s->ncol; i++) {
-        const collider *c = &s->cols[i];
-        if (!o->bad && shape_write(o->f, c->shape)) o->bad = 1;
-        put_i32(o, (int32_t)c->mode);
-        put_f64(o, c->friction);
-        put(o, c->vel, sizeof c->vel);
-        put(o, c->omega, sizeof c->omega);
-        put(o, c->pivot0, sizeof c->pivot0);
-        put(o, c->offset, sizeof c->offset);
-        put(o, c->R, sizeof c->R);
-        put_i32(o, c->motion != NULL);
-        put_f64(o, c->temperature);
-        put_f64(o, c->beta);
-        put_f64(o, c->saturation);
-        put_f64(o, c->beta_water);
-    }
-}
-
-static void put_particles(ck_out *o, const hearth_scene *s) {
-    const particles *ps = &s->ps;
-    put(o, "PART", 4);
-    put_u32(o, (uint32_t)ps->n);
-    put_u32(o, (uint32_t)ps->state_stride);
-    put_u32(o, ps->enabled);
-    for (int c = 0; c < PC_COUNT; c++) {
-        if (!(ps->enabled & (1u << c))) continue;
-        put_str(o, particles_col_label(ps, c)); /* a 2x2 store's C and F by their own names */
-        if (ps->col[c]) put(o, ps->col[c], particles_col_bytes(ps, c) * (size_t)ps->n);
-    }
-    put(o, "HASH", 4);
-    put_u64(o, hearth_scene_hash(s));
-}
-
-hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_error *err) {
-    err_clear(err);
-    if (!s->solver->can_checkpoint) /* the solver's own state is not in the format (solver.h) */
-        return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of %s scenes (solver = \"%s\") are not supported yet",
-                       path, s->solver->name, s->solver->name);
-    /* mixing.c: the constituents' parameter sets and the mixture's per-particle
-     * ratios are state beyond the DEF section (and the Lua binding's h.mix), not
-     * in the format yet; every other scene setting is in the DEF section */
-    if (s->mix.mat >= 0)
-        return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
-                       path);
-    char *img = NULL;
-    size_t n = 0;
-    FILE *mf = open_memstream(&img, &n);
-    if (!mf) return err_set(err, HEARTH_ERR_NOMEM, "save %s: out of memory for the checkpoint image", path);
-    ck_out o = {mf, 0};
-    put(&o, CK_MAGIC, 8);
-    put_u32(&o, CK_VERSION);
-    put_u32(&o, CK_BOM);
-    put_u32(&o, (uint32_t)sizeof(double));
-    put_u32(&o, CK_HEADER_SIZE);
-    put_u64(&o, 0); /* size and CRC: ck_reseal below */
-    put_u32(&o, 0);
-    put_u32(&o, 0);
-    put_def(&o, &s->def);
-    put_clocks(&o, s);
-    put_materials(&o, s);
-    put_colliders(&o, s);
-    put_particles(&o, s);
-    if (fclose(mf) != 0) o.bad = 1;
-    if (o.bad || n < CK_HEADER_SIZE) {
-        free(img);
-        return err_set(err, HEARTH_ERR_NOMEM, "save %s: out of memory building the checkpoint image", path);
-    }
-    ck_reseal((uint8_t *)img, n);
-    atomic_file af;
-    hearth_status st = atomic_open(&af, path, err);
-    if (st) {
-        free(img);
-        return st;
-    }
-    const int bad = fwrite(img, n, 1, af.f) != 1;
-    free(img);
-    if (bad) {
-        atomic_abort(&af);
-        return err_set(err, HEARTH_ERR_IO, "%s: write failed", path);
-    }
-    return atomic_commit(&af, err);
 }
 
 /* ---- reading ---------------------------------------------------------- */
@@ -592,11 +400,11 @@ static int get_materials(ck_cursor *c, hearth_scene *s, const char *name, hearth
                     name, pname, np, hearth_plugin_file(pl), m->nparams);
             return -1;
         }
-        if (schema_hash(m) != hash) {
+        if (ck_schema_hash(m) != hash) {
             err_set(err, HEARTH_ERR_FORMAT,
                     "%s: material '%s' was saved with another parameter schema (hash %016llx; the plugin '%s' now has "
                     "%016llx): its parameter names, units, ranges, defaults, state size or needs changed since the save",
-                    name, pname, (unsigned long long)hash, hearth_plugin_file(pl), (unsigned long long)schema_hash(m));
+                    name, pname, (unsigned long long)hash, hearth_plugin_file(pl), (unsigned long long)ck_schema_hash(m));
             return -1;
         }
         const char *names[SCENE_MAX_PARAMS + CP_COUNT];

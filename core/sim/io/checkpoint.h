@@ -1,6 +1,7 @@
-/* checkpoint.h: private parts of the checkpoint format (checkpoint.c) that
- * shapes.c, the unit tests and the fuzz target need: the bounds-checked read
- * cursor, the header layout, and ck_reseal.
+/* checkpoint.h: private parts of the checkpoint format (checkpoint.c reads,
+ * checkpoint_save.c writes) that shapes.c, the unit tests and the fuzz target
+ * need: the bounds-checked read cursor, the header layout, ck_reseal, and the
+ * plugin schema's hash both halves use.
  *
  * Layout of version 6 (native byte order and double width, both recorded and
  * checked; every count is unsigned 32-bit, every string a u32 length then its
@@ -81,4 +82,10 @@ uint32_t ck_crc(const uint8_t *buf, size_t n);
 /// the body reach the parser instead of stopping at the checksum. Does nothing
 /// when n is smaller than the header.
 void ck_reseal(uint8_t *buf, size_t n);
+
+struct hearth_material;
+/// FNV-1a over what a saved material depends on (checkpoint.c): written with
+/// each material (checkpoint_save.c) and compared on load, so a plugin whose
+/// parameters or state changed meaning is refused rather than misread.
+uint64_t ck_schema_hash(const struct hearth_material *m);
 #endif
