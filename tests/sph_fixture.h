@@ -1,6 +1,6 @@
 /* sph_fixture.h: small helpers for building scenes in the SPH tests
- * (unit_sph.c, unit_sph_heat.c): the scene definition, a Newtonian
- * material, and a box body of one particle per dx^dim. */
+ * (unit_sph*.c): the scene definition, a Newtonian material, a box body of
+ * one particle per dx^dim, and a pinned speck that turns heat on. */
 #ifndef HEARTH_SPH_FIXTURE_H
 #define HEARTH_SPH_FIXTURE_H
 #include <stdio.h>
@@ -49,6 +49,23 @@ static inline int sph_box(hearth_scene *s, int mat, const double lo[3], const do
 static inline int box_body(hearth_scene *s, int mat, double x0, double y0, double x1, double y1, int fixed, double T) {
     const double lo[3] = {x0, y0, -0.5}, hi[3] = {x1, y1, 0.5};
     return sph_box(s, mat, lo, hi, fixed, T);
+}
+
+/* A pinned 2 mm speck of material mat at (x, y) and temperature T, one
+ * particle, far from what a test watches: a fixed body with a temperature is
+ * what turns the scene's temperature field on. */
+static inline void sph_heat_speck(hearth_scene *s, int mat, double x, double y, double T) {
+    hearth_error err;
+    hearth_body_def bd = hearth_default_body_def();
+    const double c[3] = {x, y, 0}, hh[3] = {0.001, 0.001, 0.5};
+    bd.shape = hearth_shape_box(c, hh);
+    bd.material = mat;
+    bd.ppc = 1;
+    bd.jitter = 0;
+    bd.fixed = 1;
+    bd.temperature = T;
+    if (hearth_scene_add_body(s, &bd, &err) < 0) fprintf(stderr, "%s\n", err.msg);
+    hearth_shape_free((hearth_shape *)bd.shape);
 }
 
 #endif

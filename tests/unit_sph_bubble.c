@@ -47,16 +47,7 @@ static hearth_scene *bubble_dough_def(int *nout, int gas_law) {
                 fprintf(stderr, "%s\n", err.msg);
             cnt++;
         }
-    hearth_body_def bd = hearth_default_body_def(); /* a far-away pinned speck turns the temperature field on */
-    double c[3] = {0.005, 0.005, 0}, hh[3] = {0.001, 0.001, 0.5};
-    bd.shape = hearth_shape_box(c, hh);
-    bd.material = dough;
-    bd.ppc = 1;
-    bd.jitter = 0;
-    bd.fixed = 1;
-    bd.temperature = 26;
-    if (hearth_scene_add_body(s, &bd, &err) < 0) fprintf(stderr, "%s\n", err.msg);
-    hearth_shape_free((hearth_shape *)bd.shape);
+    sph_heat_speck(s, dough, 0.005, 0.005, 26); /* turns the temperature field on */
     *nout = cnt;
     return s;
 }

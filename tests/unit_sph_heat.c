@@ -226,16 +226,7 @@ static double cluster_dough(double Thot, double *want, double *film) {
                 fprintf(stderr, "%s\n", err.msg);
             *(b ? &nb : &nd) += 1;
         }
-    hearth_body_def bd = hearth_default_body_def(); /* a far-away pinned speck turns the temperature field on */
-    double c[3] = {0.005, 0.005, 0}, hh[3] = {0.001, 0.001, 0.5};
-    bd.shape = hearth_shape_box(c, hh);
-    bd.material = dough;
-    bd.ppc = 1;
-    bd.jitter = 0;
-    bd.fixed = 1;
-    bd.temperature = 26;
-    if (hearth_scene_add_body(s, &bd, &err) < 0) fprintf(stderr, "%s\n", err.msg);
-    hearth_shape_free((hearth_shape *)bd.shape);
+    sph_heat_speck(s, dough, 0.005, 0.005, 26); /* turns the temperature field on */
     double V[2] = {0, 0};
     for (int phase = 0; phase < 2; phase++) {
         for (int k = 0; phase == 1 && k < 600; k++) {
@@ -582,16 +573,7 @@ static hearth_scene *bubble_block(double bulk, double pa, double T, int mode, in
             if (hearth_scene_add_particles(s, b ? *bub : dough, 1, p, NULL, dx * dx, &err) != 1)
                 fprintf(stderr, "%s\n", err.msg);
         }
-    hearth_body_def bd = hearth_default_body_def(); /* a far-away pinned speck turns the temperature field on */
-    double c[3] = {0.035, 0.035, 0}, hh[3] = {0.001, 0.001, 0.5};
-    bd.shape = hearth_shape_box(c, hh);
-    bd.material = dough;
-    bd.ppc = 1;
-    bd.jitter = 0;
-    bd.fixed = 1;
-    bd.temperature = T;
-    if (hearth_scene_add_body(s, &bd, &err) < 0) fprintf(stderr, "%s\n", err.msg);
-    hearth_shape_free((hearth_shape *)bd.shape);
+    sph_heat_speck(s, dough, 0.035, 0.035, T); /* turns the temperature field on */
     double *Tp = pcold(&s->ps, PC_TEMPERATURE);
     for (int i = 0; Tp && i < s->ps.n; i++) Tp[i] = T;
     if (Tp && hearth_scene_step(s, steps, &err) == HEARTH_OK) return s;
