@@ -542,7 +542,7 @@ print("EXPECTED FAILURE: the notch in the crown is short of a tenth of the heigh
       "dx'): not a per-cell length in the fracture law (the crack band's opening x0 or x10 moves the notch by "
       "<= 0.25 mm at 3.5-4 mm); the 4 mm pass is a V the coarse crown opens by flow (4.69 mm with nothing able to "
       "crack), which finer grids do not open (3.16 / 1.63 / 0.89 mm at 3.5 / 3 / 2.5 mm). From 3.5 mm down the "
-      "top dries, rises and cracks alike and the notch is 3.33 / 3.85 / 2.92 mm at 1.5 s (deepest 3.3-5.3 mm "
+      "top dries, rises and cracks alike and the notch is 3.33 / 3.85 / 2.92 mm at 1.5 s (deepest 3.2-5.3 mm "
       "during the rise), short of the tenth: the crumb under the cracked crown is not yet set (40-55 degC 3-5 mm "
       "under it at 1.25 s) and rises into the crack")
 sys.exit(77)
