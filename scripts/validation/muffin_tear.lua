@@ -1,6 +1,6 @@
 -- muffin_tear.lua: muffins.lua's cup with the muffin's crust switchable, for
 -- docs/validation.md ("The muffin's tear: a skin spent before it is a crust",
--- #18, helper tear2). It runs scripts/scenes/baking/muffins.lua itself (same
+-- #18, helper tear2; "The muffin's tear over dx", helper muffin3). It runs scripts/scenes/baking/muffins.lua itself (same
 -- cup, same measures, same muffins.csv and damage.png), with
 -- h.library.paper.muffin / paper_oven.muffin changed by:
 --   dry_fracture  1: the preset's stretch to fracture over water (FRACTURE in
@@ -14,6 +14,17 @@
 --   air_beta      factor on the oven air's heat transfer (Table 2's 75 W/(m^2 K))
 --   heat_set      1: the preset's heat-set (fracture_unset, HEAT_SET in lua/hearth/dough.lua: the
 --                 water's brittleness waits for the set); 0: none, the skin brittle by its water alone
+--   fracture      1: the preset's crust fracture; 0: nothing cracks (fracture_strain 100, the raw
+--                 dough's, and no set crumb's): what the top does by flow alone
+--   band          factor on the crack band's opening crack_opening (1: the preset's 0.06 mm; 0: no band)
+--   skin_dry      1: DRY's stiffening of a dried skin (E and tau_y over X/X0, lua/hearth/dough.lua);
+--                 0: none, E and tau_y the batter's at any water (overrides glass)
+--   crust_depth   m, 0: off. DRY's factor read as the in-plane (Voigt, parallel) average of a cell of
+--                 size dx that holds a crust layer this deep which lost all of the cell's water, the
+--                 crumb below it wet: at X/X0 = r the layer is at 1 - (1 - r) dx / depth and the cell's
+--                 factor is 1 + (depth / dx) (f(layer) - 1), so the skin's stiffness per unit area
+--                 follows the water lost per unit area, not the cell's size (a crack band for the
+--                 crust's stiffness). Only where dx > crust_depth (a cell finer reads its own water)
 --   damage_frames 1: the run's PNG frames show damage (particles) instead of temperature
 --   hearth run scripts/validation/muffin_tear.lua --quiet --set cups=1 --set until_t=1.5 [--set dry_fracture=0] ...
 -- from the source root (or --set muffins=PATH to muffins.lua).
@@ -21,6 +32,7 @@ local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dim = 2, dx = 0.004, until_t = 3, frames = 6, cups = 3, fill = 0.022, wall_mode = "slip",
   dry_fracture = 1, heat_set = 1, glass = 1, glass_at = 0.65, set_strain = -1, air_beta = 1, damage_frames = 0,
+  fracture = 1, band = 1, skin_dry = 1, crust_depth = 0,
   muffins = "scripts/scenes/baking/muffins.lua" }
 
 -- muffins.lua's own h.params sees the values parsed here (it declares a subset of these names)
@@ -61,7 +73,20 @@ h.library.paper = setmetatable({}, { __index = function(_, name)
     p.E = base.E * h.curve(pts)
     p.tau_y = h.curve(curves.tau_y) * h.curve(pts)
   end
+  if P.skin_dry == 0 then
+    p.E = base.E
+    p.tau_y = h.curve(curves.tau_y)
+  end
+  if P.crust_depth > 0 and P.dx > P.crust_depth then -- the knots of DRY's curve mapped (header)
+    local a = P.crust_depth / P.dx
+    local pts = { irreversible = true, of = "moisture" }
+    for i, pt in ipairs(dry.E) do pts[i] = { 1 - (1 - pt[1]) * a, 1 + a * (pt[2] - 1) } end
+    p.E = base.E * h.curve(pts)
+    p.tau_y = h.curve(curves.tau_y) * h.curve(pts)
+  end
   if P.dry_fracture == 0 then p.fracture_strain = base.fracture_strain end
+  if P.fracture == 0 then p.fracture_strain, p.fracture_strain_set = base.fracture_strain, 0 end
+  if P.band ~= 1 then p.crack_opening = base.crack_opening * P.band end
   if P.heat_set == 0 then p.fracture_unset = nil end
   if P.set_strain > 0 then
     local st = curves.fracture_strain_set

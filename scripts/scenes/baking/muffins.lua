@@ -24,7 +24,9 @@
 -- mm. Its top dries before the rise but stays leathery until it sets (the
 -- preset's heat-set, lua/hearth/dough.lua HEAT_SET), and its crown then tears:
 -- 4.70 mm deep and 8 mm wide at 4 mm (claim_muffin_top_tears); at 3 mm 3.85 mm,
--- short of the claim (docs/validation.md "The muffin's tear: the heat-set"). With
+-- short of the claim (docs/validation.md "The muffin's tear: the heat-set"); the
+-- 4 mm notch is a V the crown opens by flow, which finer grids do not open, and
+-- from 3.5 mm down the notch is 2.9-3.9 mm ("The muffin's tear over dx"). With
 -- bread's set (stiffening from 35 degC) the top stayed 4.4 mm below the rim
 -- (dome 4.14 mm); with Table 2's kappa (an isothermal batter; gas x0.1) the
 -- same cup ended dished: centre 1.2 mm below the edge, curvature +5 1/m.
