@@ -398,7 +398,7 @@ TEST(particles_permute_team_range_orders) {
                 me = omp_get_thread_num();
 #endif
                 if (omp_get_num_threads() == P)
-                    ranges[me] = particles_permute_team_range(&ps, order, W, scratch, room, split[P][me], split[P][me + 1]);
+                    ranges[me] = particles_permute_team_range(&ps, order, W, scratch, room, split[P][me], split[P][me + 1], NULL);
             }
             const int bad = permute_wrong(&ps, order, n);
             printf("  %s order (W %d), %d thread(s), by %s: %d wrong values\n", kind ? "scattered" : "shifted", W, P,
