@@ -159,16 +159,6 @@ void team_wait_barrier(team_wait *tw) {
     wait_change(tw, &tw->gen, &tw->sleepers, g);
 }
 
-void team_wait_end(team_wait *tw) {
-    if (team_wait_is_omp(tw) || team_size() <= 1) return;
-    team_wait_barrier(tw);
-#ifdef _OPENMP
-    if (omp_get_thread_num() != 0) return;
-#endif
-    const long t0 = now_ns();
-    while (now_ns() - t0 < TEAM_END_GRACE_NS) cpu_pause();
-}
-
 void team_count_add(team_count *c, unsigned k) {
     if (!k) return;
     __atomic_add_fetch(&c->done, k, __ATOMIC_SEQ_CST); /* before the read of sleepers (wait_change) */

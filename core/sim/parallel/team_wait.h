@@ -21,7 +21,6 @@
 
 #define TEAM_SPIN_DEFAULT_US 200
 #define TEAM_SPIN_MAX_US 100000
-#define TEAM_END_GRACE_NS 3000
 
 /* Padded rather than _Alignas(64): the states that hold these come from
  * mem_calloc, whose alignment is malloc's, and an over-aligned member would
@@ -63,13 +62,6 @@ static inline int team_wait_is_omp(const team_wait *tw) { return tw->max_ns < 0;
 /// A barrier over the enclosing team: no thread returns before every thread
 /// has called it, and every write before it is visible after it.
 void team_wait_barrier(team_wait *tw);
-
-/// The last thing in a parallel region's body: a barrier, after which thread
-/// 0 lets the others reach libgomp's join first (TEAM_END_GRACE_NS), since
-/// whoever comes first to the join sleeps on a futex there, and the thread
-/// that goes on from the region should not be the one woken. Nothing with
-/// the OpenMP barrier chosen.
-void team_wait_end(team_wait *tw);
 
 /// Adds k finished items to c (release: the work's writes go with them).
 void team_count_add(team_count *c, unsigned k);

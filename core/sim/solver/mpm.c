@@ -707,7 +707,6 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
                 step_team_rest(s, dt, 1, g2p, &vcol2, t, nactive);
             }
         }
-        team_wait_end(&m->team);
     }
     if (t->st) return t->st;
     if (gst) return gst;
