@@ -597,7 +597,8 @@ static void step_team_rest(hearth_scene *s, double dt, const int gather, block_f
  * heat or water, no periodic axis, one rank, a thread-safe body force). With
  * OMP_WAIT_POLICY=passive (main.c) each synchronisation wakes a sleeping
  * thread (a futex round trip). One region instead of three keeps two of
- * those a step. With more than one thread (gather), P2G scatters every
+ * those a step (a region's start and end still sleep; the waits inside it
+ * spin first, team_wait.c). With more than one thread (gather), P2G scatters every
  * particle block into its own stored tile in one loop, and the grid update
  * gathers each block's node sums from those tiles in colour order
  * (mpm_p2g_gather) before updating it: one barrier between them where the

@@ -256,7 +256,9 @@ static int claim_chunk(int *claim, int T, int c0, int *j) {
  * count, took three: with OMP_WAIT_POLICY=passive (main.c) each
  * synchronisation wakes a sleeping thread, a futex round trip, and in the 2D
  * 128-cell bench all this bookkeeping is about 10 instructions a particle.
- * The count's and the lists' chunks are claimed (claim_chunk).
+ * (The waits in the region now spin before they sleep, team_wait.c.)
+ * The count's and the lists' chunks are claimed (claim_chunk), and the
+ * count's wait is for every chunk counted, not for every thread.
  * Out of order, hist turns into places after a barrier, the order is filled
  * after another, and the caller permutes (particles_permute_team). Returns
  * the farthest a particle moves in the order (particles_permute_within's W)
