@@ -259,6 +259,56 @@ TEST(determinism_threads_one_region_share_out) {
         }
 }
 
+/* The team waits (team_wait.c) against the OpenMP barrier (HEARTH_TEAM_SPIN=0)
+ * and a 1 us spin (mostly sleeps; at 3 threads on this machine's 2 cores a
+ * thread is often late, so the counts of finished work let the others on
+ * without it): 2D's one-region step (sort, P2G, grid update, permutations)
+ * and 3D's claimed step and separate sort, the same bits at 1, 2 and 3
+ * threads. The waits counter says which path ran: none with the OpenMP
+ * barrier, some with the spin. */
+static uint64_t team_run(int dim, int threads, const char *spin, long *waits) {
+    if (spin) setenv("HEARTH_TEAM_SPIN", spin, 1);
+    hearth_set_threads(threads);
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dim = dim;
+    d.dx = dim == 2 ? 1.0 / 160 : 1.0 / 40;
+    d.wall = HEARTH_SLIP;
+    d.seed = 3;
+    hearth_scene *s = fx_scene_def(&d);
+    unsetenv("HEARTH_TEAM_SPIN");
+    const int m = fx_elastic(s, 1e5, 0.3, 1000);
+    hearth_error err;
+    uint64_t h = 0;
+    const int n = dim == 2 ? seed_disc(s, m, 0.3, 0.6, 0.12, 3.0) + seed_disc(s, m, 0.7, 0.4, 0.1, -3.0)
+                           : seed_disc(s, m, 0.4, 0.5, 0.2, 3.0);
+    if (n <= 0 || hearth_scene_step(s, 20, &err) != HEARTH_OK) goto out;
+    h = hearth_scene_hash(s);
+    *waits = s->mpm->team.waits;
+    printf("  %dD, %d thread(s), HEARTH_TEAM_SPIN=%s: %d particles, hash %016llx, late-partner waits %ld, slept %ld\n", dim,
+           threads, spin ? spin : "(unset)", s->ps.n, (unsigned long long)h, s->mpm->team.waits, s->mpm->team.sleeps);
+    CHECK(s->ps.n >= SCENE_PARALLEL_MIN);
+out:
+    hearth_scene_destroy(s);
+    return h;
+}
+
+TEST(team_waits_same_bits) {
+    for (int dim = 2; dim <= 3; dim++) {
+        long w = 0;
+        const uint64_t h1 = team_run(dim, 1, NULL, &w);
+        CHECK(h1 != 0 && w == 0); /* one thread waits for no one */
+        for (int t = 2; t <= 3; t++) {
+            long wo = -1, ws = 0, w1 = 0;
+            CHECK(team_run(dim, t, "0", &wo) == h1);
+            CHECK(wo == 0); /* the OpenMP barrier: the team waits never ran */
+            CHECK(team_run(dim, t, NULL, &ws) == h1);
+            CHECK(team_run(dim, t, "1", &w1) == h1);
+            CHECK(ws + w1 > 0); /* the team waits ran and found a partner late */
+        }
+    }
+    hearth_set_threads(0);
+}
+
 /* An allocation failing inside the one-region step (the sort's singles, the
  * tile store) comes back as an error from the step, on every thread alike
  * (no thread left at a barrier): each of the step's allocations after a disc
@@ -398,7 +448,7 @@ TEST(particles_permute_team_range_orders) {
                 me = omp_get_thread_num();
 #endif
                 if (omp_get_num_threads() == P)
-                    ranges[me] = particles_permute_team_range(&ps, order, W, scratch, room, split[P][me], split[P][me + 1]);
+                    ranges[me] = particles_permute_team_range(&ps, order, W, scratch, room, split[P][me], split[P][me + 1], NULL);
             }
             const int bad = permute_wrong(&ps, order, n);
             printf("  %s order (W %d), %d thread(s), by %s: %d wrong values\n", kind ? "scattered" : "shifted", W, P,
@@ -507,4 +557,5 @@ TEST(alloc_zero_is_not_out_of_memory) {
 
 TEST_MAIN(T(seed_reserves_exactly), T(alloc_zero_is_not_out_of_memory), T(particles_grow_by_half), T(growth_peak_bounded), T(sort_keys_from_g2p),
           T(determinism_threads_2d_bookkeeping), T(determinism_threads_one_region_sort), T(determinism_threads_one_region_share_out), T(one_region_sort_out_of_memory),
-          T(particles_permute_orders), T(particles_permute_team_range_orders), T(gather_store_in_sort_scratch))
+          T(particles_permute_orders), T(particles_permute_team_range_orders), T(gather_store_in_sort_scratch),
+          T(team_waits_same_bits))

@@ -115,6 +115,8 @@ static hearth_status mpm_init(hearth_scene *s, hearth_error *err) {
     /* the colour phases at any thread count: for measuring the gather against them on one build (the same bits) */
     const char *cp = getenv("HEARTH_MPM_COLOUR_PHASES");
     m->colour_phases = cp && strcmp(cp, "1") == 0;
+    hearth_status st = team_wait_init(&m->team, err);
+    if (st) return st;
     return mpm_ranks_init(m, err);
 }
 
@@ -375,7 +377,7 @@ static void p2g_team(hearth_scene *s, block_fn fn, double dt) {
         for (int col = 0; col < 8; col++)
             for (int q; (q = claim_take(&m->claims->colour[col], back)) >= 0;)
                 if (m->colour_pb[q] >= m->k_lo && m->colour_pb[q] < m->k_hi) fn(s, m->colour_pb[q], dt, tile); /* this rank's */
-#pragma omp barrier
+        team_wait_barrier(&m->team);
 #pragma omp for schedule(static) nowait
         for (int k = 0; k < m->npb; k++) m->pbof[m->pb[k].block] = -1;
         return;
@@ -477,11 +479,24 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
     return vcol2;
 }
 
+/* The sticky colliders' ghost nodes, after the grid update's wait. */
+static void grid_sticky_team(hearth_scene *s) {
+    const grid *g = &s->g;
+#pragma omp for schedule(dynamic, 4)
+    for (int k = 0; k < g->nactive; k++) mpm_sticky_ghosts_block(s, k);
+    const int NPB = g->nodes_per_block; /* the marks off again, once every ghost has been read */
+#pragma omp for schedule(static)
+    for (int k = 0; k < g->nactive; k++) {
+        double *node = grid_block(g, k);
+        for (int l = 0; l < NPB; l++) node[l] = fabs(node[l]);
+    }
+}
+
 /* The grid update for the team of the enclosing region (one thread outside
  * one); ends with a barrier, so G2P may read any node. The fastest collider
  * speed squared goes into *vcol2 (shared), the largest of the threads' own:
  * a maximum, the same whatever the threads. */
-static void grid_update_team(hearth_scene *s, double dt, double *vcol2, const int gather, mpm_sort_team *t) {
+static void grid_update_team(hearth_scene *s, double dt, double *vcol2, const int gather, mpm_sort_team *t, const int nactive) {
     const grid *g = &s->g;
     double v2 = 0;
     if (s->def.two_field) { /* the second field's nodes (mpm_two_field.c) take the same update */
@@ -494,12 +509,29 @@ static void grid_update_team(hearth_scene *s, double dt, double *vcol2, const in
         const double damp = s->def.damping > 0 ? 1.0 / (1.0 + s->def.damping * dt) : 1.0;
         span_walk w = span_walk_start(t->T);
         int lo, hi;
-        while (span_next(t->span[MPM_SPAN_GRID], &w, NULL, &lo, &hi))
+        unsigned done = 0;
+        while (span_next(t->span[MPM_SPAN_GRID], &w, NULL, &lo, &hi)) {
             for (int k = lo; k < hi; k++) {
                 mpm_p2g_gather(s, k);
                 v2 = fmax(v2, s->def.damping > 0 ? grid_update_block(s, k, dt, damp, 1, CH_M) : grid_update_block(s, k, dt, 1.0, 0, CH_M));
             }
+            done += (unsigned)(hi - lo);
+        }
         span_count(s->mpm, MPM_SPAN_GRID, &w);
+        /* G2P may read any node once every block is updated, whoever updated it: a thread still on its way
+         * from the sort finds no block left and need not be waited for (a maximum of the threads' own, as
+         * below; a thread with no block adds 0) */
+        if (v2 > 0) {
+#pragma omp critical(mpm_vcol2)
+            if (v2 > *vcol2) *vcol2 = v2;
+        }
+        team_count_add(&t->updated, done);
+        team_count_wait(&s->mpm->team, &t->updated, (unsigned)nactive); /* this thread's count: the sort's single sets g's */
+        if (s->mpm->sticky_faces) { /* every thread past the sort's single (g->nactive) */
+            team_wait_barrier(&s->mpm->team);
+            grid_sticky_team(s);
+        }
+        return;
     } else if (cl) {
         const int back = claim_end(), DAMP = s->def.damping > 0;
         const double damp = DAMP ? 1.0 / (1.0 + s->def.damping * dt) : 1.0; /* as below */
@@ -527,17 +559,8 @@ static void grid_update_team(hearth_scene *s, double dt, double *vcol2, const in
     }
 #pragma omp critical(mpm_vcol2)
     if (v2 > *vcol2) *vcol2 = v2;
-#pragma omp barrier
-    if (s->mpm->sticky_faces) {
-#pragma omp for schedule(dynamic, 4)
-        for (int k = 0; k < g->nactive; k++) mpm_sticky_ghosts_block(s, k);
-        const int NPB = g->nodes_per_block; /* the marks off again, once every ghost has been read */
-#pragma omp for schedule(static)
-        for (int k = 0; k < g->nactive; k++) {
-            double *node = grid_block(g, k);
-            for (int l = 0; l < NPB; l++) node[l] = fabs(node[l]);
-        }
-    }
+    team_wait_barrier(&s->mpm->team);
+    if (s->mpm->sticky_faces) grid_sticky_team(s);
 }
 
 double mpm_grid_update(hearth_scene *s, double dt) {
@@ -547,17 +570,22 @@ double mpm_grid_update(hearth_scene *s, double dt) {
     mpm_claims cl;
     if (par) claims_begin(s, &cl);
 #pragma omp parallel if (par)
-    grid_update_team(s, dt, &vcol2, 0, NULL);
+    grid_update_team(s, dt, &vcol2, 0, NULL, 0);
     claims_end(s->mpm);
     return sqrt(vcol2);
 }
 
-/* step_team's phases after P2G, for every thread of its region; t: the one-region step's (NULL otherwise) */
-static void step_team_rest(hearth_scene *s, double dt, const int gather, block_fn g2p, double *vcol2, mpm_sort_team *t) {
+/* step_team's phases after P2G, for every thread of its region; t: the one-region step's (NULL otherwise),
+ * with this thread's count of active blocks (the sort's; g->nactive is set in a single without a barrier) */
+static void step_team_rest(hearth_scene *s, double dt, const int gather, block_fn g2p, double *vcol2, mpm_sort_team *t,
+                           const int nactive) {
     mpm_state *m = s->mpm;
-    grid_update_team(s, dt, vcol2, gather, t);
-    if (t) g2p_chunks(s, t, g2p, dt);
-    else g2p_team(s, g2p, dt);
+    grid_update_team(s, dt, vcol2, gather, t, nactive);
+    if (t) {
+        g2p_chunks(s, t, g2p, dt); /* resets each block's pbof: k_lo and k_hi come from a single without a barrier */
+        return;
+    }
+    g2p_team(s, g2p, dt);
     if (gather) { /* the block table back to no particle block anywhere, for the next step's scatter */
 #pragma omp for schedule(static) nowait
         for (int k = m->k_lo; k < m->k_hi; k++) m->pbof[m->pb[k].block] = -1;
@@ -569,7 +597,8 @@ static void step_team_rest(hearth_scene *s, double dt, const int gather, block_f
  * heat or water, no periodic axis, one rank, a thread-safe body force). With
  * OMP_WAIT_POLICY=passive (main.c) each synchronisation wakes a sleeping
  * thread (a futex round trip). One region instead of three keeps two of
- * those a step. With more than one thread (gather), P2G scatters every
+ * those a step (a region's start and end still sleep; the waits inside it
+ * spin first, team_wait.c). With more than one thread (gather), P2G scatters every
  * particle block into its own stored tile in one loop, and the grid update
  * gathers each block's node sums from those tiles in colour order
  * (mpm_p2g_gather) before updating it: one barrier between them where the
@@ -592,12 +621,13 @@ static double step_team(hearth_scene *s, double dt, step_report *rep, const int 
             /* every block's tile, in any order: each keeps its own; the loop's barrier before the gather.
              * Guided: long runs of neighbouring blocks per thread (g2p_team says why) */
             double tile[GRID_NCH_MOMENTUM * GRID_T * GRID_T * GRID_T];
-#pragma omp for schedule(guided)
+#pragma omp for schedule(guided) nowait
             for (int k = m->k_lo; k < m->k_hi; k++) store(s, k, dt, tile);
+            team_wait_barrier(&m->team);
         } else {
             p2g_team(s, p2g, dt);
         }
-        step_team_rest(s, dt, gather, g2p, &vcol2, NULL);
+        step_team_rest(s, dt, gather, g2p, &vcol2, NULL, 0);
     }
     claims_end(m);
     g2p_reduce(s, rep);
@@ -613,18 +643,23 @@ static double step_team(hearth_scene *s, double dt, step_report *rep, const int 
  * stays on its thread); a chunk whose owner is still sorting is left to it.
  * Every block once, whichever thread takes it: the same bits. Ends with the
  * barrier before the gather. */
-static void p2g_store_chunks(hearth_scene *s, mpm_sort_team *t, const int all_ready, block_fn store, double dt) {
+static void p2g_store_chunks(hearth_scene *s, mpm_sort_team *t, const int all_ready, block_fn store, double dt, const int npb) {
     mpm_state *m = s->mpm;
     double tile[GRID_NCH_MOMENTUM * GRID_T * GRID_T * GRID_T];
     span_walk w = span_walk_start(t->T);
     int lo, hi;
-    while (span_next(t->span[MPM_SPAN_P2G], &w, all_ready ? NULL : t->ready, &lo, &hi))
+    unsigned done = 0;
+    while (span_next(t->span[MPM_SPAN_P2G], &w, all_ready ? NULL : t->ready, &lo, &hi)) {
         for (int k = lo; k < hi; k++) {
             m->partial[k] = (pb_partial){.fail_i = -1, .fastest = -1};
             store(s, k, dt, tile);
         }
+        done += (unsigned)(hi - lo);
+    }
     span_count(m, MPM_SPAN_P2G, &w);
-#pragma omp barrier
+    /* the gather once every tile is kept, whoever kept it (the grid update's wait says why) */
+    team_count_add(&t->stored, done);
+    team_count_wait(&m->team, &t->stored, (unsigned)npb); /* this thread's count: the sort's single sets m->npb */
 }
 
 /* The gather's step (2D, more than one thread, one rank, nothing between
@@ -654,14 +689,14 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
     double vcol2 = 0;
 #pragma omp parallel
     {
-        int kof[MPM_SORT_CHUNKS_MAX + 1];
-        const int W = mpm_sort_team_run(s, t, kof);
+        int kof[MPM_SORT_CHUNKS_MAX + 1], nactive = 0;
+        const int W = mpm_sort_team_run(s, t, kof, &nactive);
         if (!t->st) {
             if (W >= 0) { /* this thread moves the places of its own chunks' particle blocks (span_walk); past a barrier */
                 const span_walk w = span_walk_start(t->T);
                 const int lo = kof[w.c0] < kof[t->T] ? m->pb[kof[w.c0]].start : ps->n,
                           hi = kof[w.c1] < kof[t->T] ? m->pb[kof[w.c1]].start : ps->n;
-                particles_permute_team_range(ps, m->order, W, m->keys, room, lo, hi);
+                particles_permute_team_range(ps, m->order, W, m->keys, room, lo, hi, &m->team);
             }
             const int grow = mpm_p2g_store_need(s, kof[t->T]) > have;
             if (grow) { /* every thread is past the sort's reads of keys and order */
@@ -669,8 +704,8 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
                 gst = mpm_p2g_store_room(s, kof[t->T], err);
             }
             if (!gst) {
-                p2g_store_chunks(s, t, W >= 0 || grow, store, dt);
-                step_team_rest(s, dt, 1, g2p, &vcol2, t);
+                p2g_store_chunks(s, t, W >= 0 || grow, store, dt, kof[t->T]);
+                step_team_rest(s, dt, 1, g2p, &vcol2, t, nactive);
             }
         }
     }

@@ -12,6 +12,7 @@
 #include "error.h"
 #include "grid.h"
 #include "scene.h"
+#include "team_wait.h"
 
 /* A run of sorted particles sharing one grid block. */
 typedef struct pblock {
@@ -86,6 +87,9 @@ typedef struct mpm_state {
     struct mpm_slab_fields *sfields; /* the slabs' halo layers for heat and water (mpm_ranks_fields.c) */
     double *dgrad;          /* two_field: each particle's damage gradient (x, y; 1/m) this step (mpm_two_field.c) */
     int dgrad_cap;
+    /* the waits of the step's teams (team_wait.h; HEARTH_TEAM_SPIN at init): the sort's, the one-region
+     * step's and 3D's claimed step's barriers spin a while before they sleep */
+    team_wait team;
 } mpm_state;
 
 /* ---- two velocity fields at cracks (mpm_two_field.c; scene setting two_field, 2D) ---- */
@@ -205,9 +209,13 @@ typedef struct mpm_sort_team {
     /* the caller's MPM_SPANS rows of spans (mpm.c's one-region step; NULL: none kept), apart from the struct,
      * which is zeroed every step (12 KB) */
     mpm_span (*span)[MPM_SORT_CHUNKS_MAX];
+    /* the count's chunks done, P2G's particle blocks stored and the grid update's blocks done (the
+     * one-region step): a thread moves on once the work is done, whoever did it (team_count_wait) */
+    team_count counted, stored, updated;
 } mpm_sort_team;
 hearth_status mpm_sort_begin(hearth_scene *s, mpm_sort_team *t, hearth_error *err);
-int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS_MAX + 1]);
+/// nactive (NULL: not wanted): this thread's copy of the active grid blocks' count when the region activates.
+int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS_MAX + 1], int *nactive);
 /// Release the sort's per-particle scratch (mpm_sort.c).
 void mpm_scratch_free(mpm_state *m);
 /// The sort's scratch at least bytes long, between the sort and G2P (its

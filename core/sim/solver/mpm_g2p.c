@@ -339,13 +339,19 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
     g2p_reduce(s, rep);
 }
 
-/* G2P's blocks in the one-region step, chunk by chunk, each first to its P2G's thread (span_next); no barrier */
+/* G2P's blocks in the one-region step, chunk by chunk, each first to its P2G's thread (span_next); no barrier.
+ * Each block's place in the block table back to none as it goes (every gather is done: the grid update's wait),
+ * for the next step's scatter. */
 void g2p_chunks(hearth_scene *s, mpm_sort_team *t, block_fn fn, double dt) {
+    mpm_state *m = s->mpm;
     double tile[6 * GRID_T * GRID_T * GRID_T];
     span_walk w = span_walk_start(t->T);
     int lo, hi;
     while (span_next(t->span[MPM_SPAN_G2P], &w, NULL, &lo, &hi))
-        for (int k = lo; k < hi; k++) fn(s, k, dt, tile);
+        for (int k = lo; k < hi; k++) {
+            fn(s, k, dt, tile);
+            m->pbof[m->pb[k].block] = -1;
+        }
     span_count(s->mpm, MPM_SPAN_G2P, &w);
 }
 

@@ -256,7 +256,9 @@ static int claim_chunk(int *claim, int T, int c0, int *j) {
  * count, took three: with OMP_WAIT_POLICY=passive (main.c) each
  * synchronisation wakes a sleeping thread, a futex round trip, and in the 2D
  * 128-cell bench all this bookkeeping is about 10 instructions a particle.
- * The count's and the lists' chunks are claimed (claim_chunk).
+ * (The waits in the region now spin before they sleep, team_wait.c.)
+ * The count's and the lists' chunks are claimed (claim_chunk), and the
+ * count's wait is for every chunk counted, not for every thread.
  * Out of order, hist turns into places after a barrier, the order is filled
  * after another, and the caller permutes (particles_permute_team). Returns
  * the farthest a particle moves in the order (particles_permute_within's W)
@@ -264,7 +266,7 @@ static int claim_chunk(int *claim, int T, int c0, int *j) {
  * particle blocks (kof[T]: all of them; every thread's own copy); t->st gets
  * a reservation's status. */
 #define MARK_ROW_MAX 4096 /* 2D's marks are counted on the way where a row of blocks fits on the stack */
-int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS_MAX + 1]) {
+int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS_MAX + 1], int *nactive) {
     grid *g = &s->g;
     mpm_state *m = s->mpm;
     const int NB = m->nblocks, T = t->T, n = s->ps.n, *keys = m->keys, nb1 = g->nb[1], nb2 = g->nb[2];
@@ -280,8 +282,11 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
             u |= i > 0 && keys[i - 1] > keys[i];
         }
         t->unsorted[c] = u;
+        team_count_add(&t->counted, 1);
     }
-#pragma omp barrier
+    /* on once every chunk is counted, whoever counted it: a thread woken late finds them all done and the
+     * others need not wait for it (nothing writes hist before the next barrier, past every thread's reads) */
+    team_count_wait(&m->team, &t->counted, (unsigned)T);
     int unsorted = 0;
     for (int c = 0; c < T; c++) unsorted |= t->unsorted[c];
     /* Every thread adds up the table for each chunk of it: the particles, the particle blocks and (2D)
@@ -337,6 +342,7 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
         }
     }
     memcpy(kof, koff, sizeof(int) * (size_t)(T + 1));
+    if (nactive) *nactive = aoff[T];
     if (t->st) return -1;
     const int late = t->activate && !early; /* the activation after a barrier (3D, or 2D rows too long for the stack) */
     /* The marks and the particle blocks only read hist, so no chunk waits for another. The marks count
@@ -381,11 +387,10 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
         if (early) g->nactive = aoff[T];
     }
     /* 3D's activation waits for every chunk's marks, the places for every thread's reads of hist */
-    if (unsorted || late) {
-#pragma omp barrier
-    }
+    if (unsorted || late) team_wait_barrier(&m->team);
     if (late) { /* grid_activate, here in the same region: the slots of each chunk of the table */
         for (int c = 0; c < T; c++) aoff[c + 1] = aoff[c] + t->amark[c];
+        if (nactive) *nactive = aoff[T];
         if (aoff[T] > t->gcap) {
 #pragma omp single
             t->st = grid_activate_reserve(g, aoff[T], t->err);
@@ -403,7 +408,7 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
     if (!unsorted) return -1;
     /* each chunk of particles' first place in each block: the block's start and the block's particles
      * in earlier chunks; then the order, once every block has its places */
-#pragma omp for schedule(static)
+#pragma omp for schedule(static) nowait
     for (int c = 0; c < T; c++) {
         const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
         int run = poff[c];
@@ -415,7 +420,8 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
                 run += k;
             }
     }
-#pragma omp for schedule(static)
+    team_wait_barrier(&m->team);
+#pragma omp for schedule(static) nowait
     for (int c = 0; c < T; c++) {
         int *h = hist + (size_t)c * NB, far = 0;
         const int lo = (int)((long)n * c / T), hi = (int)((long)n * (c + 1) / T);
@@ -426,6 +432,7 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
         }
         t->far[c] = far;
     }
+    team_wait_barrier(&m->team);
     int W = 0;
     for (int c = 0; c < T; c++) W = t->far[c] > W ? t->far[c] : W;
     return W;
@@ -522,8 +529,8 @@ static hearth_status sort_rest(hearth_scene *s, int Tc, mpm_sort_team *t, hearth
 #pragma omp parallel num_threads(Tc)
     {
         int kof[MPM_SORT_CHUNKS_MAX + 1];
-        const int W = mpm_sort_team_run(s, t, kof);
-        if (W >= 0) particles_permute_team(ps, m->order, W, m->keys, sizeof(int) * (size_t)m->scratch_cap);
+        const int W = mpm_sort_team_run(s, t, kof, NULL);
+        if (W >= 0) particles_permute_team(ps, m->order, W, m->keys, sizeof(int) * (size_t)m->scratch_cap, &m->team);
     }
     if (t->st) return t->st;
     sort_colours(s);

@@ -7,6 +7,7 @@
 
 #include "alloc.h"
 #include "error.h"
+#include "team_wait.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -283,14 +284,23 @@ void particles_permute_within(particles *ps, const int *order, int W, void *scra
     }
 }
 
-void particles_permute_team(particles *ps, const int *order, int W, void *scratch, size_t room) {
+/* A barrier of the team: the caller's spin-then-sleep one, or OpenMP's. */
+static void team_barrier(team_wait *tw) {
+    if (tw) {
+        team_wait_barrier(tw);
+    } else {
+#pragma omp barrier
+    }
+}
+
+void particles_permute_team(particles *ps, const int *order, int W, void *scratch, size_t room, team_wait *tw) {
     int T = 1, me = 0;
 #ifdef _OPENMP
     T = omp_get_num_threads();
     me = omp_get_thread_num();
 #endif
     const size_t bits = sizeof(uint64_t) * (((size_t)ps->n + 63) / 64), share = room / (size_t)T & ~(size_t)7;
-#pragma omp barrier
+    team_barrier(tw);
     /* every thread is past its reads of edits and order's filling; one of them counts the edit */
 #pragma omp single nowait
     ps->edits++;
@@ -302,8 +312,9 @@ void particles_permute_team(particles *ps, const int *order, int W, void *scratc
         for (int q = 0; q < npar; q++) permute_column(ps, par[q], order, W, scratch, room);
         return;
     }
-#pragma omp for schedule(dynamic, 1)
+#pragma omp for schedule(dynamic, 1) nowait
     for (int q = 0; q < npar; q++) permute_column(ps, par[q], order, W, (char *)scratch + share * (size_t)me, share);
+    team_barrier(tw);
 }
 
 /* One column's places [lo, hi) in place through a ring of W + 1 records, as
@@ -332,7 +343,8 @@ static inline __attribute__((always_inline)) void permute_range(char *col, const
     }
 }
 
-int particles_permute_team_range(particles *ps, const int *order, int W, void *scratch, size_t room, int lo, int hi) {
+int particles_permute_team_range(particles *ps, const int *order, int W, void *scratch, size_t room, int lo, int hi,
+                                 team_wait *tw) {
     int T = 1, me = 0;
 #ifdef _OPENMP
     T = omp_get_num_threads();
@@ -348,7 +360,7 @@ int particles_permute_team_range(particles *ps, const int *order, int W, void *s
     /* every thread decides alike (the same W, team, room and columns) */
     const size_t share = room / (size_t)T & ~(size_t)7, need = (2 * sum + wide) * (size_t)W + wide;
     if (W <= 0 || need > share) {
-        particles_permute_team(ps, order, W, scratch, room);
+        particles_permute_team(ps, order, W, scratch, room, tw);
         return 0;
     }
     /* the old records within W outside this thread's places, every column's, before anyone moves any */
@@ -362,7 +374,7 @@ int particles_permute_team_range(particles *ps, const int *order, int W, void *s
         memcpy(mine + off + (size_t)W * B, col + (size_t)hi * B, (size_t)(zh - hi) * B);
         off += 2 * (size_t)W * B;
     }
-#pragma omp barrier
+    team_barrier(tw);
     /* every thread is past its reads of edits and order's filling, and every zone is saved */
 #pragma omp single nowait
     ps->edits++;
@@ -381,7 +393,7 @@ int particles_permute_team_range(particles *ps, const int *order, int W, void *s
         }
         off += 2 * (size_t)W * B;
     }
-#pragma omp barrier
+    team_barrier(tw);
     return 1;
 }
 

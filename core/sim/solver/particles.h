@@ -13,6 +13,8 @@
 #include "tensor.h"
 #include "tensor2.h"
 
+struct team_wait; /* team_wait.h */
+
 typedef enum pcol {
     /* core: always present */
     PC_X,     /* position (m), 3 */
@@ -121,15 +123,16 @@ void particles_permute_within(particles *ps, const int *order, int W, void *scra
 /// particles_permute_within for every thread of the caller's parallel region (all must call it with the
 /// same W): it waits for the team (order filled), each thread takes whole columns through its 1 / T of
 /// the scratch, and it returns past a barrier of the team that follows the moves (and so every
-/// thread's work before the call).
-void particles_permute_team(particles *ps, const int *order, int W, void *scratch, size_t room);
+/// thread's work before the call). tw: the team's waits (team_wait.h), or NULL for OpenMP barriers.
+void particles_permute_team(particles *ps, const int *order, int W, void *scratch, size_t room, struct team_wait *tw);
 /// particles_permute_team by places instead of columns: this thread moves places [lo, hi) of every column (the
 /// team's ranges tile [0, n)), so the records a thread owns stay in its core's cache (mpm.c's one-region step
 /// gives each thread the places of the particle blocks it runs). The records within W outside [lo, hi) are saved
 /// in this thread's 1 / T of the scratch before the team's barrier; when they and a ring of W + 1 records do not
 /// fit there (a permutation that moves particles far), it is particles_permute_team. Returns past a barrier:
 /// 1 when it went by places, 0 by columns (the same on every thread).
-int particles_permute_team_range(particles *ps, const int *order, int W, void *scratch, size_t room, int lo, int hi);
+int particles_permute_team_range(particles *ps, const int *order, int W, void *scratch, size_t room, int lo, int hi,
+                                 struct team_wait *tw);
 /// Copy every enabled column of src into dst (same layout); dst grows as needed.
 hearth_status particles_copy(particles *dst, const particles *src, hearth_error *err);
 /// Remove particles whose flag is non-zero, keeping order. Returns the number removed.
