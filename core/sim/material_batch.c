@@ -18,6 +18,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "exp_memo.h"
 #include "material.h"
 
 /* More distinct parameters with curves than this and the run goes point by
@@ -84,8 +85,8 @@ static inline void scale_column(double *restrict out, const double *restrict x, 
  * and r = -0.0: 1, 1 and -0.0, as material_thermal_scales gives it. */
 __attribute__((noinline)) /* inlined, its arrays and loops cost the elastic step's door 2 instructions a point */
 static void thermal_scales_block(const double *core, int n, const double *restrict K, const double *restrict T,
-                                 double *restrict e_store, double dt, signed char *restrict split, double *restrict sF,
-                                 double *restrict sL, double *restrict dL) {
+                                 double *restrict e_store, double *restrict memo, double dt, signed char *restrict split,
+                                 double *restrict sF, double *restrict sL, double *restrict dL) {
     const double cl = core[CP_EXPANSION], Tr = core[CP_REFERENCE_T];
     double X[HEARTH_BLOCK_MAX], R[HEARTH_BLOCK_MAX];
     for (int j = 0; j < n; j++) {
@@ -97,7 +98,11 @@ static void thermal_scales_block(const double *core, int n, const double *restri
         R[j] = sp == 1 && dt > 0 ? (e0 - e) / 3 : -0.0;
         e_store[j] = sp == 1 && dt > 0 ? e : e0;
     }
-    for (int j = 0; j < n; j++) sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp(X[j]);
+    /* x holds between the fields' updates (the temperature does, and K with it): its exp once a cycle (exp_memo.h) */
+    if (memo)
+        for (int j = 0; j < n; j++) sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp_memo(memo + 2 * j, X[j]);
+    else
+        for (int j = 0; j < n; j++) sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp(X[j]);
     if (dt > 0) {
         for (int j = 0; j < n; j++) {
             const double r = R[j];
@@ -450,7 +455,8 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
             }
         }
     if (th) { /* the split's scalars, then whether every point's are finite */
-        thermal_scales_block(ms->core, n, K, r->temperature, th + i0, r->dt, split, sF, sL, dL);
+        double *memo = ps->enabled & (1u << PC_THERMAL_MEMO) ? pcold(ps, PC_THERMAL_MEMO) + 2 * (size_t)i0 : NULL;
+        thermal_scales_block(ms->core, n, K, r->temperature, th + i0, memo, r->dt, split, sF, sL, dL);
         for (int j = 0; j < n; j++) finite &= (sF[j] <= DBL_MAX) & (sL[j] <= DBL_MAX); /* exp's: >= +0, or inf, or NaN */
     }
     /* the block's F and L: the run's own columns, or the split's products */
