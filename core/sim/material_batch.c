@@ -311,8 +311,10 @@ static double run_points(const material_table *t, const particles *ps, const mat
  * (the door copied them). Per point this was 120-odd instructions of copies
  * and branches (pt, env, tj) around the calls. */
 static double run_after_block(const material_slot *ms, const material_run *r, unsigned flags, double *q, int nv,
-                              const int *vk, double (*vcol)[HEARTH_BLOCK_MAX], double *state, int stride,
+                              const int *vk, double (*vcol)[HEARTH_BLOCK_MAX], const hearth_block *b,
                               const double *P, const signed char *split, double *const tau[9], double *wave) {
+    double *state = b->state;
+    const int stride = b->state_stride;
     const hearth_material *m = ms->m;
     const double *core = ms->core;
     const int n = r->n;
@@ -324,6 +326,27 @@ static double run_after_block(const material_slot *ms, const material_run *r, un
     unsigned char cracked[HEARTH_BLOCK_MAX];
     int ncracked = 0;
     const double *p = nv ? q : ms->params;
+    if (m->scalars_block) { /* rule 9: the same values in one call, as columns (no parameters patched per point) */
+        double V[HEARTH_BLOCK_MAX], D[HEARTH_BLOCK_MAX];
+        double *out[HEARTH_SCALAR_COUNT] = {0};
+        if (ms->wave_per_point) out[HEARTH_SCALAR_WAVE_SPEED] = wave;
+        if (m->viscosity) out[HEARTH_SCALAR_VISCOSITY] = V;
+        if (damage) out[HEARTH_SCALAR_DAMAGE] = D;
+        if (terms && gas_JP) out[HEARTH_SCALAR_PLASTIC_J] = JP1; /* a cracked point's is not read */
+        if (ms->wave_per_point || m->viscosity || damage || (terms && gas_JP)) {
+            plugin_call_enter(m, "scalars_block");
+            m->scalars_block(b, out);
+        }
+        for (int j = 0; j < n; j++) {
+            if (!ms->wave_per_point) wave[j] = ms->wave_speed;
+            if (m->viscosity) {
+                const double nu = V[j] / hearth_block_param(b, ms->density_index, j);
+                if (nu > numax) numax = nu;
+            }
+            cracked[j] = damage && D[j] >= 1;
+            ncracked += cracked[j];
+        }
+    } else
     for (int j = 0; j < n; j++) {
         for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j];
         const double *st = state ? state + (size_t)j * stride : NULL;
@@ -441,7 +464,27 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
      * material_point_stress) and K for the thermal split's scalars (thermal_scales_block, after). Both
      * callbacks only read p and the state. */
     double K[HEARTH_BLOCK_MAX];
-    if (porous_J || th)
+    /* the block as the plugin's batched callbacks see it: its scalars (rule 9) read these fields only; the
+     * stress's fields are filled below */
+    hearth_block b = {
+        .n = n,
+        .dim = r->dim == 2 ? 2 : 3,
+        .dt = r->dt,
+        .p = ms->params,
+        .p_col = pcolumn,
+        .state = state,
+        .state_stride = stride,
+    };
+    if ((porous_J || th) && m->scalars_block) { /* rule 9: J^P and K in one call */
+        double JP0[HEARTH_BLOCK_MAX];
+        double *out[HEARTH_SCALAR_COUNT] = {0};
+        if (porous_J) out[HEARTH_SCALAR_PLASTIC_J] = JP0;
+        if (th) out[HEARTH_SCALAR_BULK_MODULUS] = K;
+        plugin_call_enter(m, "scalars_block");
+        m->scalars_block(&b, out);
+        if (porous_J)
+            for (int j = 0; j < n; j++) P[j] = gas_porosity(JP0[j], ms->core[CP_POROSITY0]);
+    } else if (porous_J || th)
         for (int j = 0; j < n; j++) {
             for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j];
             const double *st = state ? state + (size_t)j * stride : NULL;
@@ -472,18 +515,9 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
                 if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7)))
                     scale_column(Lm[c], r->grad_v[c], sL, c % 4 == 0 ? dL : NULL, n), Lb[c] = Lm[c];
     }
-    hearth_block b = {
-        .n = n,
-        .dim = r->dim == 2 ? 2 : 3,
-        .dt = r->dt,
-        .temperature = needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? (r->temperature ? r->temperature : nan_col) : NULL,
-        .porosity = needs & HEARTH_NEEDS_POROSITY ? (porous ? P : nan_col) : NULL,
-        .saturation = needs & HEARTH_NEEDS_SATURATION ? (r->saturation ? r->saturation : nan_col) : NULL,
-        .p = ms->params,
-        .p_col = pcolumn,
-        .state = state,
-        .state_stride = stride,
-    };
+    b.temperature = needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? (r->temperature ? r->temperature : nan_col) : NULL;
+    b.porosity = needs & HEARTH_NEEDS_POROSITY ? (porous ? P : nan_col) : NULL;
+    b.saturation = needs & HEARTH_NEEDS_SATURATION ? (r->saturation ? r->saturation : nan_col) : NULL;
     for (int c = 0; c < 9; c++) {
         b.grad_v[c] = Lb[c];
         b.F[c] = Fb[c];
@@ -516,8 +550,8 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         plugin_call_leave();
         return 0;
     }
-    const double numax = run_after_block(ms, r, flags, q, nv, vk, vcol, state, stride, porous ? P : NULL,
-                                         th ? split : NULL, tau, wave);
+    const double numax = run_after_block(ms, r, flags, q, nv, vk, vcol, &b, porous ? P : NULL, th ? split : NULL, tau,
+                                         wave);
     plugin_call_leave();
     return numax;
 }
