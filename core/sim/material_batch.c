@@ -104,10 +104,12 @@ static void thermal_scales_block(const double *core, int n, const double *restri
     else
         for (int j = 0; j < n; j++) sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp(X[j]);
     if (dt > 0) {
+        /* every point's small-r values first, in a loop with no branch (one vector division), then libm where
+         * r is not small: the values the branch per point gave, which was 11 instructions a point */
+        for (int j = 0; j < n; j++) sL[j] = 1.0, dL[j] = R[j] / dt;
         for (int j = 0; j < n; j++) {
             const double r = R[j];
-            if (fabs(r) < 0x1p-54) sL[j] = 1.0, dL[j] = r / dt;
-            else sL[j] = exp(r), dL[j] = expm1(r) / dt;
+            if (!(fabs(r) < 0x1p-54)) sL[j] = exp(r), dL[j] = expm1(r) / dt;
         }
     } else {
         for (int j = 0; j < n; j++) sL[j] = 1.0, dL[j] = -0.0;
@@ -212,8 +214,12 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
      * such points has one set of factors, the ones at 1, without the per-point ratios below */
     if (!(ps->enabled & (1u << PC_WATER))) {
         int undried = 1;
-        if (rp->dried)
-            for (int j = 0; j < n; j++) undried &= 1.0 - rp->dried[i0 + j] >= 1.0;
+        if (rp->dried) {
+            long wet = 0; /* the points that dried, counted in a loop the compiler vectorises (an &= did not) */
+            const double *dr = rp->dried + i0;
+            for (int j = 0; j < n; j++) wet += !(1.0 - dr[j] >= 1.0);
+            undried = wet == 0;
+        }
         if (undried) {
             if (!(rp->r == 1.0 && rp->rd == 1.0))
                 for (int k = nt; k < nc; k++) rp->f[k - nt] = curve_eval(&ms->curves[k], 1.0);
@@ -500,7 +506,9 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     if (th) { /* the split's scalars, then whether every point's are finite */
         double *memo = ps->enabled & (1u << PC_THERMAL_MEMO) ? pcold(ps, PC_THERMAL_MEMO) + 2 * (size_t)i0 : NULL;
         thermal_scales_block(ms->core, n, K, r->temperature, th + i0, memo, r->dt, split, sF, sL, dL);
-        for (int j = 0; j < n; j++) finite &= (sF[j] <= DBL_MAX) & (sL[j] <= DBL_MAX); /* exp's: >= +0, or inf, or NaN */
+        long inf = 0; /* exp's: >= +0, or inf, or NaN; counted, which the compiler vectorises */
+        for (int j = 0; j < n; j++) inf += !(sF[j] <= DBL_MAX) | !(sL[j] <= DBL_MAX);
+        finite = inf == 0;
     }
     /* the block's F and L: the run's own columns, or the split's products */
     const double *Fb[9], *Lb[9];
@@ -536,7 +544,12 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
             z[j] = (t0[j] - t0[j]) + (t1[j] - t1[j]) + (t2[j] - t2[j]) + (t3[j] - t3[j]) + (t4[j] - t4[j]) +
                    (t5[j] - t5[j]) + (t6[j] - t6[j]) + (t7[j] - t7[j]) + (t8[j] - t8[j]);
     }
-    for (int j = 0; j < n; j++) {
+    /* whether any point needs the fix-up below, in loops with no branch per point: almost never */
+    long trouble = 0;
+    for (int j = 0; j < n; j++) trouble += (code[j] != 0) | !(z[j] == 0);
+    if (th)
+        for (int j = 0; j < n; j++) trouble += split[j] < 0;
+    for (int j = 0; j < n && trouble; j++) {
         if (__builtin_expect(!code[j] && !(z[j] == 0), 0)) code[j] = MATERIAL_NONFINITE;
         if (__builtin_expect(th && split[j] < 0, 0)) code[j] = MATERIAL_BAD_BULK; /* as run_points */
         if (__builtin_expect(code[j] != 0, 0) && (flags & MATERIAL_ZERO_FAILED))
