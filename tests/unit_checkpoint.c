@@ -716,8 +716,35 @@ TEST(checkpoint_venting_continues_same_bits) {
     hearth_scene_destroy(still);
 }
 
+/* The memos (exp_memo.h) are a cache: a venting dough's save holds no memo column, its restore refills them
+ * (checkpoint_venting_continues_same_bits: the same bits), and a file that claims one, as no hearth writes
+ * it, is refused by name rather than read into the cache. */
+static void memo_bit(uint8_t *b, size_t n) {
+    const size_t at = find(b, n, "PART", 4);
+    uint32_t v;
+    memcpy(&v, b + at + 12, 4);
+    set_u32_after(b, n, "PART", 8, v | (1u << PC_GAS_MEMO));
+}
+TEST(checkpoint_memo_columns_refused) {
+    hearth_scene *s = vent_scene(0.02);
+    CHECK(s != NULL);
+    if (!s) return;
+    CHECK(s->ps.enabled & (1u << PC_GAS_MEMO));
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    if (img) {
+        CHECK(find(img, n, "gas_memo", 8) == (size_t)-1);
+        CHECK(find(img, n, "vent_rate", 9) != (size_t)-1); /* the columns beside it are there */
+        expect_refused(img, n, memo_bit, "a memo column");
+        free(img);
+    }
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(checkpoint_v4_roundtrip), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
           T(checkpoint_bitflip_campaign), T(checkpoint_resealed_flips), T(checkpoint_crafted_fields),
           T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_count_before_alloc),
           T(checkpoint_not_regular_file), T(checkpoint_alloc_failures),
-          T(checkpoint_v5_def_fields_refused), T(checkpoint_v4_reads_at_defaults), T(checkpoint_venting_continues_same_bits))
+          T(checkpoint_v5_def_fields_refused), T(checkpoint_v4_reads_at_defaults), T(checkpoint_venting_continues_same_bits),
+          T(checkpoint_memo_columns_refused))

@@ -155,6 +155,89 @@ TEST(field_clock_threads_same_bits) {
     CHECK(h[0] == h[1]);
 }
 
+/* The oven block in cam_clay_dough, which gives bulk_modulus and stress_block: eq. 10 as a thermal strain
+ * through the batched door, so both memos (exp_memo.h) are live, the thermal split's and the CO2's. */
+static hearth_scene *dough_block(void) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 32;
+    d.dt_max = 1e-4;
+    d.oven_temperature = 150;
+    d.oven_beta = 25;
+    hearth_scene *s = fx_scene_def(&d);
+    if (!s) return NULL;
+    const char *nm[] = {"density", "specific_heat", "conductivity", "gas_rate", "reaction_temperature",
+                        "reaction_width", "expansion", "reference_temperature"};
+    const double nv[] = {1000, 20, 30, 2.5e-5, 40, 20, 0.1, 20};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "cam_clay_dough", nm, nv, 8, &err);
+    if (m < 0) printf("  material: %s\n", err.msg);
+    CHECK(m >= 0);
+    hearth_shape *box = hearth_shape_box((const double[3]){0.5, 0.25, 0}, (const double[3]){0.15, 0.15, 0});
+    hearth_body_def b = hearth_default_body_def();
+    b.shape = box, b.material = m, b.temperature = 20;
+    CHECK(hearth_scene_add_body(s, &b, &err) >= 0);
+    hearth_shape_free(box);
+    return s;
+}
+
+/* The memos are read between the fields' updates, and give the bits of the exp they stand for: a dough
+ * block through two updates and 37 steps hashes the same whether its memos work or are emptied before every
+ * step (every exp computed, as before the memos), and differently once a memo's value is falsified one step
+ * after the update (the steps after read it). Each filled memo holds exp of its argument. */
+TEST(field_clock_memos_read_for_same_bits) {
+    hearth_scene *s[3] = {dough_block(), dough_block(), dough_block()}; /* memos; emptied each step; falsified once */
+    CHECK(s[0] && s[1] && s[2]);
+    if (!s[0] || !s[1] || !s[2]) goto done;
+    const int memo[2] = {PC_THERMAL_MEMO, PC_GAS_MEMO};
+    for (int k = 0; k < 2; k++) CHECK(s[0]->ps.enabled & (1u << memo[k]));
+    hearth_error err;
+    int hits[2] = {0, 0};
+    for (int v = 0; v < 3; v++) {
+        particles *ps = &s[v]->ps;
+        long steps = 0;
+        for (int u = 0; u < 2 && steps < 100000; steps++) {
+            if (v == 1)
+                for (int k = 0; k < 2; k++) memset(ps->col[memo[k]], 0, sizeof(double) * 2 * (size_t)ps->n);
+            CHECK(hearth_scene_step(s[v], 1, &err) == HEARTH_OK);
+            u += s[v]->field_phase == 0;
+        }
+        if (v == 0)
+            for (int k = 0; k < 2; k++) {
+                const double *m = pcold(ps, memo[k]);
+                for (int i = 0; i < ps->n; i++) {
+                    hits[k] += m[2 * i + 1] != 0;
+                    if (m[2 * i + 1] != 0) CHECK(m[2 * i + 1] == exp(m[2 * i]));
+                }
+            }
+        for (int j = 0; j < 37; j++) {
+            /* the step after an update fills the memos at the new temperatures; then every filled memo's value
+             * off by a factor: the next steps read it where the argument holds */
+            if (v == 2 && j == 1)
+                for (int k = 0; k < 2; k++) {
+                    double *m = pcold(ps, memo[k]);
+                    for (int i = 0; i < ps->n; i++) m[2 * i + 1] *= 1.5;
+                }
+            if (v == 1)
+                for (int k = 0; k < 2; k++) memset(ps->col[memo[k]], 0, sizeof(double) * 2 * (size_t)ps->n);
+            CHECK(hearth_scene_step(s[v], 1, &err) == HEARTH_OK);
+        }
+        printf("  %s: %ld steps to the second update, 37 more: hash %016llx\n",
+               v == 0 ? "memos" : v == 1 ? "memos emptied each step" : "memos falsified after the update", steps,
+               (unsigned long long)hearth_scene_hash(s[v]));
+    }
+    hearth_stats st;
+    hearth_scene_stats(s[0], &st);
+    printf("  %d particles, updates every %d steps; filled memos after the second update: thermal split %d, CO2 %d\n",
+           s[0]->ps.n, st.field_cycle, hits[0], hits[1]);
+    CHECK(st.field_cycle > 37); /* the 37 steps after the update are all between updates */
+    CHECK(hits[0] > 0 && hits[1] > 0);
+    CHECK(hearth_scene_hash(s[0]) == hearth_scene_hash(s[1]));
+    CHECK(hearth_scene_hash(s[0]) != hearth_scene_hash(s[2]));
+done:
+    for (int v = 0; v < 3; v++)
+        if (s[v]) hearth_scene_destroy(s[v]);
+}
+
 /* field_steps outside [0, 4096] is refused, naming the setting and its range. */
 TEST(field_clock_bad_setting) {
     hearth_scene_def d = hearth_default_scene_def();
@@ -171,4 +254,4 @@ TEST(field_clock_bad_setting) {
 }
 
 TEST_MAIN(T(field_clock_cycle_within_limit), T(field_clock_matches_single_rate), T(field_clock_checkpoint_mid_cycle),
-          T(field_clock_threads_same_bits), T(field_clock_bad_setting))
+          T(field_clock_threads_same_bits), T(field_clock_bad_setting), T(field_clock_memos_read_for_same_bits))

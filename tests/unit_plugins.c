@@ -155,11 +155,11 @@ TEST(plugin_load_cached) {
     CHECK(s.newtonian == 1);
 }
 
-/* "bulk_modulus" and "batched" (the last two) are reported only for a plugin with bulk_modulus and
- * with stress_block */
-enum { N_CHECKS = 7, N_ALWAYS = 5, C_BULK = 5, C_BATCHED = 6 };
+/* "bulk_modulus", "batched" and "scalars" (the last three) are reported only for a plugin with bulk_modulus,
+ * with stress_block and with scalars_block */
+enum { N_CHECKS = 8, N_ALWAYS = 5, C_BULK = 5, C_BATCHED = 6, C_SCALARS = 7 };
 static const char *const check_names[N_CHECKS] = {"rest", "symmetric", "frame_indifference", "extremes",
-                                                  "wave_speed", "bulk_modulus", "batched"};
+                                                  "wave_speed", "bulk_modulus", "batched", "scalars"};
 
 typedef struct report {
     int seen[N_CHECKS], passed[N_CHECKS], other;
@@ -187,6 +187,7 @@ static int run_check(const char *path, report *r) {
     for (int i = 0; i < N_ALWAYS; i++) CHECK(r->seen[i] == 1);
     CHECK(r->seen[C_BULK] <= 1);
     CHECK(r->seen[C_BATCHED] <= 1);
+    CHECK(r->seen[C_SCALARS] <= 1);
     CHECK(r->other == 0);
     return n;
 }
@@ -246,6 +247,28 @@ TEST(plugin_check_batched_matches) {
     CHECK_STR_CONTAINS(r.detail[C_BATCHED], "block 0 (dim 3, 64 points");
     CHECK_STR_CONTAINS(r.detail[C_BATCHED], "point ");
     CHECK_STR_CONTAINS(r.detail[C_BATCHED], "one-point");
+}
+
+/* <hearth/material.h> rule 9: the dough law's scalars_block (the test build of cam_clay_dough.c) agrees with
+ * its one-point wave_speed, plastic_J, bulk_modulus and damage bit for bit on the batched battery, and a
+ * scalars_block whose wave speed is sqrt(lambda / rho + 2 mu / rho) (scalars_mismatch.c) fails, naming the
+ * block, the point and the scalar, while its stress and batched stress pass. */
+TEST(plugin_check_scalars_matches) {
+    char path[1024];
+    report r;
+    if (!fixture(path, sizeof path, "dough_batched")) return;
+    CHECK(run_check(path, &r) == 0);
+    CHECK(r.seen[C_SCALARS] == 1);
+    CHECK(r.passed[C_SCALARS]);
+    CHECK_STR_CONTAINS(r.detail[C_SCALARS], "agree bit for bit");
+    if (!fixture(path, sizeof path, "scalars_mismatch")) return;
+    CHECK(run_check(path, &r) == 1);
+    for (int i = 0; i < N_ALWAYS; i++) CHECK(r.passed[i]);
+    CHECK(r.seen[C_BATCHED] == 1 && r.passed[C_BATCHED]);
+    CHECK(r.seen[C_SCALARS] == 1);
+    CHECK(!r.passed[C_SCALARS]);
+    CHECK_STR_CONTAINS(r.detail[C_SCALARS], "block 0 (dim 3, 64 points), point ");
+    CHECK_STR_CONTAINS(r.detail[C_SCALARS], "wave_speed one-point");
 }
 
 /* Not in the required list: the check's own failure paths. A stress code
@@ -318,7 +341,7 @@ static hearth_material good(void) {
     g_params[0] = (hearth_param){"density", "kg/m^3", NULL, 1000, 1, 1e4};
     g_params[1] = (hearth_param){"E", "Pa", "stiffness", 1e4, 1, 1e6};
     return (hearth_material){HEARTH_MATERIAL_ABI, sizeof(hearth_material), sizeof(double), "good", NULL,
-                             g_params, 2, 0, 0, d_init, d_stress, d_wave, NULL, d_describe, d_plastic_J, NULL, NULL, NULL, NULL};
+                             g_params, 2, 0, 0, d_init, d_stress, d_wave, NULL, d_describe, d_plastic_J, NULL, NULL, NULL, NULL, NULL};
 }
 
 static void refused(const hearth_material *m, const char *words) {
@@ -456,6 +479,6 @@ TEST(plugin_reserved_names_documented) {
 
 TEST_MAIN(T(plugin_missing_file), T(plugin_not_shared_object), T(plugin_no_entry), T(plugin_wrong_abi),
           T(plugin_null_callback), T(plugin_bad_default), T(plugin_load_cached), T(plugin_check_builtin),
-          T(plugin_check_catches_asym), T(plugin_check_batched_matches), T(plugin_check_reports_codes), T(plugin_load_nomem),
+          T(plugin_check_catches_asym), T(plugin_check_batched_matches), T(plugin_check_scalars_matches), T(plugin_check_reports_codes), T(plugin_load_nomem),
           T(plugin_descriptor_rules), T(plugin_wave_corners), T(plugin_reserved_name),
           T(plugin_reserved_names_documented))

@@ -18,6 +18,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "exp_memo.h"
 #include "material.h"
 
 /* More distinct parameters with curves than this and the run goes point by
@@ -84,8 +85,8 @@ static inline void scale_column(double *restrict out, const double *restrict x, 
  * and r = -0.0: 1, 1 and -0.0, as material_thermal_scales gives it. */
 __attribute__((noinline)) /* inlined, its arrays and loops cost the elastic step's door 2 instructions a point */
 static void thermal_scales_block(const double *core, int n, const double *restrict K, const double *restrict T,
-                                 double *restrict e_store, double dt, signed char *restrict split, double *restrict sF,
-                                 double *restrict sL, double *restrict dL) {
+                                 double *restrict e_store, double *restrict memo, double dt, signed char *restrict split,
+                                 double *restrict sF, double *restrict sL, double *restrict dL) {
     const double cl = core[CP_EXPANSION], Tr = core[CP_REFERENCE_T];
     double X[HEARTH_BLOCK_MAX], R[HEARTH_BLOCK_MAX];
     for (int j = 0; j < n; j++) {
@@ -97,12 +98,18 @@ static void thermal_scales_block(const double *core, int n, const double *restri
         R[j] = sp == 1 && dt > 0 ? (e0 - e) / 3 : -0.0;
         e_store[j] = sp == 1 && dt > 0 ? e : e0;
     }
-    for (int j = 0; j < n; j++) sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp(X[j]);
+    /* x holds between the fields' updates (the temperature does, and K with it): its exp once a cycle (exp_memo.h) */
+    if (memo)
+        for (int j = 0; j < n; j++) sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp_memo(memo + 2 * j, X[j]);
+    else
+        for (int j = 0; j < n; j++) sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp(X[j]);
     if (dt > 0) {
+        /* every point's small-r values first, in a loop with no branch (one vector division), then libm where
+         * r is not small: the values the branch per point gave, which was 11 instructions a point */
+        for (int j = 0; j < n; j++) sL[j] = 1.0, dL[j] = R[j] / dt;
         for (int j = 0; j < n; j++) {
             const double r = R[j];
-            if (fabs(r) < 0x1p-54) sL[j] = 1.0, dL[j] = r / dt;
-            else sL[j] = exp(r), dL[j] = expm1(r) / dt;
+            if (!(fabs(r) < 0x1p-54)) sL[j] = exp(r), dL[j] = expm1(r) / dt;
         }
     } else {
         for (int j = 0; j < n; j++) sL[j] = 1.0, dL[j] = -0.0;
@@ -207,8 +214,12 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
      * such points has one set of factors, the ones at 1, without the per-point ratios below */
     if (!(ps->enabled & (1u << PC_WATER))) {
         int undried = 1;
-        if (rp->dried)
-            for (int j = 0; j < n; j++) undried &= 1.0 - rp->dried[i0 + j] >= 1.0;
+        if (rp->dried) {
+            long wet = 0; /* the points that dried, counted in a loop the compiler vectorises (an &= did not) */
+            const double *dr = rp->dried + i0;
+            for (int j = 0; j < n; j++) wet += !(1.0 - dr[j] >= 1.0);
+            undried = wet == 0;
+        }
         if (undried) {
             if (!(rp->r == 1.0 && rp->rd == 1.0))
                 for (int k = nt; k < nc; k++) rp->f[k - nt] = curve_eval(&ms->curves[k], 1.0);
@@ -306,8 +317,10 @@ static double run_points(const material_table *t, const particles *ps, const mat
  * (the door copied them). Per point this was 120-odd instructions of copies
  * and branches (pt, env, tj) around the calls. */
 static double run_after_block(const material_slot *ms, const material_run *r, unsigned flags, double *q, int nv,
-                              const int *vk, double (*vcol)[HEARTH_BLOCK_MAX], double *state, int stride,
+                              const int *vk, double (*vcol)[HEARTH_BLOCK_MAX], const hearth_block *b,
                               const double *P, const signed char *split, double *const tau[9], double *wave) {
+    double *state = b->state;
+    const int stride = b->state_stride;
     const hearth_material *m = ms->m;
     const double *core = ms->core;
     const int n = r->n;
@@ -319,6 +332,27 @@ static double run_after_block(const material_slot *ms, const material_run *r, un
     unsigned char cracked[HEARTH_BLOCK_MAX];
     int ncracked = 0;
     const double *p = nv ? q : ms->params;
+    if (m->scalars_block) { /* rule 9: the same values in one call, as columns (no parameters patched per point) */
+        double V[HEARTH_BLOCK_MAX], D[HEARTH_BLOCK_MAX];
+        double *out[HEARTH_SCALAR_COUNT] = {0};
+        if (ms->wave_per_point) out[HEARTH_SCALAR_WAVE_SPEED] = wave;
+        if (m->viscosity) out[HEARTH_SCALAR_VISCOSITY] = V;
+        if (damage) out[HEARTH_SCALAR_DAMAGE] = D;
+        if (terms && gas_JP) out[HEARTH_SCALAR_PLASTIC_J] = JP1; /* a cracked point's is not read */
+        if (ms->wave_per_point || m->viscosity || damage || (terms && gas_JP)) {
+            plugin_call_enter(m, "scalars_block");
+            m->scalars_block(b, out);
+        }
+        for (int j = 0; j < n; j++) {
+            if (!ms->wave_per_point) wave[j] = ms->wave_speed;
+            if (m->viscosity) {
+                const double nu = V[j] / hearth_block_param(b, ms->density_index, j);
+                if (nu > numax) numax = nu;
+            }
+            cracked[j] = damage && D[j] >= 1;
+            ncracked += cracked[j];
+        }
+    } else
     for (int j = 0; j < n; j++) {
         for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j];
         const double *st = state ? state + (size_t)j * stride : NULL;
@@ -436,7 +470,27 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
      * material_point_stress) and K for the thermal split's scalars (thermal_scales_block, after). Both
      * callbacks only read p and the state. */
     double K[HEARTH_BLOCK_MAX];
-    if (porous_J || th)
+    /* the block as the plugin's batched callbacks see it: its scalars (rule 9) read these fields only; the
+     * stress's fields are filled below */
+    hearth_block b = {
+        .n = n,
+        .dim = r->dim == 2 ? 2 : 3,
+        .dt = r->dt,
+        .p = ms->params,
+        .p_col = pcolumn,
+        .state = state,
+        .state_stride = stride,
+    };
+    if ((porous_J || th) && m->scalars_block) { /* rule 9: J^P and K in one call */
+        double JP0[HEARTH_BLOCK_MAX];
+        double *out[HEARTH_SCALAR_COUNT] = {0};
+        if (porous_J) out[HEARTH_SCALAR_PLASTIC_J] = JP0;
+        if (th) out[HEARTH_SCALAR_BULK_MODULUS] = K;
+        plugin_call_enter(m, "scalars_block");
+        m->scalars_block(&b, out);
+        if (porous_J)
+            for (int j = 0; j < n; j++) P[j] = gas_porosity(JP0[j], ms->core[CP_POROSITY0]);
+    } else if (porous_J || th)
         for (int j = 0; j < n; j++) {
             for (int v = 0; v < nv; v++) q[vk[v]] = vcol[v][j];
             const double *st = state ? state + (size_t)j * stride : NULL;
@@ -450,8 +504,11 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
             }
         }
     if (th) { /* the split's scalars, then whether every point's are finite */
-        thermal_scales_block(ms->core, n, K, r->temperature, th + i0, r->dt, split, sF, sL, dL);
-        for (int j = 0; j < n; j++) finite &= (sF[j] <= DBL_MAX) & (sL[j] <= DBL_MAX); /* exp's: >= +0, or inf, or NaN */
+        double *memo = ps->enabled & (1u << PC_THERMAL_MEMO) ? pcold(ps, PC_THERMAL_MEMO) + 2 * (size_t)i0 : NULL;
+        thermal_scales_block(ms->core, n, K, r->temperature, th + i0, memo, r->dt, split, sF, sL, dL);
+        long inf = 0; /* exp's: >= +0, or inf, or NaN; counted, which the compiler vectorises */
+        for (int j = 0; j < n; j++) inf += !(sF[j] <= DBL_MAX) | !(sL[j] <= DBL_MAX);
+        finite = inf == 0;
     }
     /* the block's F and L: the run's own columns, or the split's products */
     const double *Fb[9], *Lb[9];
@@ -466,18 +523,9 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
                 if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7)))
                     scale_column(Lm[c], r->grad_v[c], sL, c % 4 == 0 ? dL : NULL, n), Lb[c] = Lm[c];
     }
-    hearth_block b = {
-        .n = n,
-        .dim = r->dim == 2 ? 2 : 3,
-        .dt = r->dt,
-        .temperature = needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? (r->temperature ? r->temperature : nan_col) : NULL,
-        .porosity = needs & HEARTH_NEEDS_POROSITY ? (porous ? P : nan_col) : NULL,
-        .saturation = needs & HEARTH_NEEDS_SATURATION ? (r->saturation ? r->saturation : nan_col) : NULL,
-        .p = ms->params,
-        .p_col = pcolumn,
-        .state = state,
-        .state_stride = stride,
-    };
+    b.temperature = needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? (r->temperature ? r->temperature : nan_col) : NULL;
+    b.porosity = needs & HEARTH_NEEDS_POROSITY ? (porous ? P : nan_col) : NULL;
+    b.saturation = needs & HEARTH_NEEDS_SATURATION ? (r->saturation ? r->saturation : nan_col) : NULL;
     for (int c = 0; c < 9; c++) {
         b.grad_v[c] = Lb[c];
         b.F[c] = Fb[c];
@@ -496,7 +544,12 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
             z[j] = (t0[j] - t0[j]) + (t1[j] - t1[j]) + (t2[j] - t2[j]) + (t3[j] - t3[j]) + (t4[j] - t4[j]) +
                    (t5[j] - t5[j]) + (t6[j] - t6[j]) + (t7[j] - t7[j]) + (t8[j] - t8[j]);
     }
-    for (int j = 0; j < n; j++) {
+    /* whether any point needs the fix-up below, in loops with no branch per point: almost never */
+    long trouble = 0;
+    for (int j = 0; j < n; j++) trouble += (code[j] != 0) | !(z[j] == 0);
+    if (th)
+        for (int j = 0; j < n; j++) trouble += split[j] < 0;
+    for (int j = 0; j < n && trouble; j++) {
         if (__builtin_expect(!code[j] && !(z[j] == 0), 0)) code[j] = MATERIAL_NONFINITE;
         if (__builtin_expect(th && split[j] < 0, 0)) code[j] = MATERIAL_BAD_BULK; /* as run_points */
         if (__builtin_expect(code[j] != 0, 0) && (flags & MATERIAL_ZERO_FAILED))
@@ -510,8 +563,8 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         plugin_call_leave();
         return 0;
     }
-    const double numax = run_after_block(ms, r, flags, q, nv, vk, vcol, state, stride, porous ? P : NULL,
-                                         th ? split : NULL, tau, wave);
+    const double numax = run_after_block(ms, r, flags, q, nv, vk, vcol, &b, porous ? P : NULL, th ? split : NULL, tau,
+                                         wave);
     plugin_call_leave();
     return numax;
 }

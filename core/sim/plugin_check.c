@@ -536,7 +536,47 @@ typedef struct batch_pts {
     double dt;
     double *F[9], *L[9], *T, *P, *S, *pv, *stA, *stB, *tauA, *tauB[9];
     int *codeA, *codeB;
+    int scalars_bad, scalars_points; /* rule 9: a point whose scalars differ; points compared */
+    char scalars_detail[CHECK_DETAIL];
 } batch_pts;
+
+/* rule 9: scalars_block against the one-point callbacks on the block's points (their parameters and the
+ * states the stress left), bit for bit; the first point that differs into b->scalars_detail. */
+static void batch_scalars(const check_rig *r, batch_pts *b, int blk, const hearth_block *blk_) {
+    const hearth_material *m = r->m;
+    const int n = b->n, np = m->nparams, ss = m->state_size;
+    double col[HEARTH_SCALAR_COUNT][HEARTH_BLOCK_MAX];
+    double *out[HEARTH_SCALAR_COUNT] = {0};
+    double (*one[HEARTH_SCALAR_COUNT])(const double *, const double *) = {
+        [HEARTH_SCALAR_WAVE_SPEED] = m->wave_speed, [HEARTH_SCALAR_PLASTIC_J] = m->plastic_J,
+        [HEARTH_SCALAR_BULK_MODULUS] = m->bulk_modulus, [HEARTH_SCALAR_VISCOSITY] = m->viscosity,
+        [HEARTH_SCALAR_DAMAGE] = m->damage};
+    static const char *const name[HEARTH_SCALAR_COUNT] = {"wave_speed", "plastic_J", "bulk_modulus", "viscosity", "damage"};
+    for (int k = 0; k < HEARTH_SCALAR_COUNT; k++) {
+        out[k] = one[k] ? col[k] : NULL; /* the core asks only what the plugin has a one-point callback for */
+        for (int j = 0; j < n; j++) col[k][j] = NAN;
+    }
+    plugin_call_enter(m, "scalars_block");
+    m->scalars_block(blk_, out);
+    for (int j = 0; j < n && !b->scalars_bad; j++) {
+        double q[PLUGIN_CHECK_MAX_PARAMS];
+        for (int k = 0; k < np; k++) q[k] = b->pv[(size_t)k * HEARTH_BLOCK_MAX + j];
+        const double *st = ss ? b->stB + (size_t)j * b->stride : NULL;
+        for (int k = 0; k < HEARTH_SCALAR_COUNT && !b->scalars_bad; k++) {
+            if (!one[k]) continue;
+            plugin_call_enter(m, name[k]);
+            const double x = one[k](q, st), y = col[k][j];
+            if (memcmp(&x, &y, sizeof x) != 0) {
+                b->scalars_bad = 1;
+                snprintf(b->scalars_detail, CHECK_DETAIL,
+                         "block %d (dim %d, %d points), point %d: %s one-point %.17g, scalars_block %.17g (differ by %.3g)",
+                         blk, b->dim, n, j, name[k], x, y, y - x);
+            }
+        }
+    }
+    plugin_call_leave();
+    b->scalars_points += n;
+}
 
 /* Why point j differs, into detail; 0 when both calls agree bit for bit. */
 static int batch_compare(const check_rig *r, const batch_pts *b, int blk, int j, char *detail) {
@@ -640,6 +680,7 @@ static int batch_block(check_rig *r, batch_pts *b, int blk, uint64_t *seed, char
     plugin_call_enter(m, "stress_block");
     const int nbad = m->stress_block(&blk_, b->tauB, b->codeB);
     plugin_call_leave();
+    if (m->scalars_block && !b->scalars_bad) batch_scalars(r, b, blk, &blk_);
     for (int j = 0; j < n; j++)
         if (batch_compare(r, b, blk, j, detail)) return 1;
     int want = 0;
@@ -655,7 +696,12 @@ static int batch_block(check_rig *r, batch_pts *b, int blk, uint64_t *seed, char
 /* Reported only for a plugin with stress_block. */
 static int check_batched(check_rig *r) {
     const hearth_material *m = r->m;
-    if (!m->stress_block) return 0;
+    if (!m->stress_block) {
+        if (m->scalars_block)
+            check_report(r, "scalars", 2, "scalars_block without stress_block: the core calls it only beside stress_block "
+                                          "(<hearth/material.h> rule 9), so it is never called");
+        return 0;
+    }
     char detail[CHECK_DETAIL];
     if (m->nparams > PLUGIN_CHECK_MAX_PARAMS) {
         snprintf(detail, sizeof detail, "%d parameters: the check compares at most %d", m->nparams, PLUGIN_CHECK_MAX_PARAMS);
@@ -697,6 +743,13 @@ static int check_batched(check_rig *r) {
                  "near and far from I, advanced states, parameters varying by point; %d refused alike)",
                  points, BATCH_NBLOCKS, refused);
     check_report(r, "batched", !bad, detail);
+    if (m->scalars_block) {
+        if (!b.scalars_bad)
+            snprintf(b.scalars_detail, sizeof b.scalars_detail,
+                     "scalars_block and the one-point scalars agree bit for bit on %d points (the batched battery's "
+                     "parameters and states)", b.scalars_points);
+        check_report(r, "scalars", !b.scalars_bad, b.scalars_detail);
+    }
     mem_free(mem, bytes);
     return 0;
 }

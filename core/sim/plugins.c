@@ -471,7 +471,7 @@ hearth_status plugin_describe(const char *shown, const hearth_material *m, plugi
     /* <hearth/material.h> rule 7: HEARTH_PLUGIN_NO_BATCH=1 runs a scene on the one-point stress alone,
      * to compare the two paths' outputs byte for byte */
     const char *nb = getenv("HEARTH_PLUGIN_NO_BATCH");
-    if (nb && *nb && strcmp(nb, "0") != 0) c.stress_block = NULL;
+    if (nb && *nb && strcmp(nb, "0") != 0) c.stress_block = NULL, c.scalars_block = NULL; /* rule 9: with stress_block only */
     c.params = out->params;
     out->mat = c;
     out->density = plugin_param_index(&c, "density");

@@ -350,8 +350,12 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
     /* venting between the fields' updates needs each particle's open surface from the last (gas.c, gas_between) */
     if (core[CP_GAS_RATE] > 0 && s->def.gas_vent > 0 && s->def.solver == HEARTH_SOLVER_MPM &&
         particles_enable(&s->ps, PC_VENT, err)) return -1;
-    /* eq. 10 as a thermal strain needs each particle's last one (material.h, material_thermal_split) */
-    if (core[CP_EXPANSION] > 0 && m->bulk_modulus && particles_enable(&s->ps, PC_THERMAL, err)) return -1;
+    /* and its exp between the fields' updates, once a cycle (exp_memo.h) */
+    if (core[CP_GAS_RATE] > 0 && s->def.solver == HEARTH_SOLVER_MPM && particles_enable(&s->ps, PC_GAS_MEMO, err)) return -1;
+    /* eq. 10 as a thermal strain needs each particle's last one (material.h, material_thermal_split), and the
+     * split's exp of it between the fields' updates a memo (exp_memo.h) */
+    if (core[CP_EXPANSION] > 0 && m->bulk_modulus &&
+        (particles_enable(&s->ps, PC_THERMAL, err) || particles_enable(&s->ps, PC_THERMAL_MEMO, err))) return -1;
     /* and so does a plugin that reads temperature */
     if ((m->needs & HEARTH_NEEDS_TEMPERATURE) && scene_enable_temperature(s, err)) return -1;
     if (water_material_wants(s, id) && water_enable(s, err)) return -1;
@@ -831,9 +835,9 @@ const int *hearth_scene_particle_ids(const hearth_scene *s) { return pcoli(&s->p
 const double *hearth_scene_particle_masses(const hearth_scene *s) { return pcold(&s->ps, PC_MASS); }
 
 uint64_t hearth_scene_hash(const hearth_scene *s) {
-    uint64_t h = 1469598103934665603ULL; /* FNV-1a over every enabled column */
+    uint64_t h = 1469598103934665603ULL; /* FNV-1a over every enabled column but the memos (a cache: exp_memo.h) */
     for (int c = 0; c < PC_COUNT; c++) {
-        if (!(s->ps.enabled & (1u << c)) || !s->ps.col[c]) continue;
+        if (!(s->ps.enabled & (1u << c)) || !s->ps.col[c] || particles_col_is_memo(c)) continue;
         const unsigned char *b = s->ps.col[c];
         size_t len = particles_col_bytes(&s->ps, c) * (size_t)s->ps.n;
         for (size_t i = 0; i < len; i++) h = (h ^ b[i]) * 1099511628211ULL;

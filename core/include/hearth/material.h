@@ -27,7 +27,7 @@
  *
  * 2. Descriptor. name is [a-z0-9_]+ (it is the file's <name> and a Lua
  *    string). init, stress, wave_speed and describe_error are non-NULL;
- *    blend, plastic_J, viscosity, damage, stress_block and bulk_modulus may be NULL. nparams <= 256 with params
+ *    blend, plastic_J, viscosity, damage, stress_block, bulk_modulus and scalars_block may be NULL. nparams <= 256 with params
  *    non-NULL when nparams > 0; 0 <= state_size <= 4096; needs holds only
  *    known HEARTH_NEEDS_* bits.
  *
@@ -102,6 +102,19 @@
  *    sets HEARTH_NEEDS_DIM (rule 1: an older core, without the field,
  *    refuses it). The core fills dim for every plugin.
  *
+ * 9. The batched scalars (optional, appended after bulk_modulus: a plugin built before it reads as
+ *    NULL). scalars_block(b, out) gives, for each of the b->n points of a block, the per-point scalars
+ *    the core otherwise asks one call at a time: out[HEARTH_SCALAR_k][j] is what the one-point callback
+ *    (wave_speed, plastic_J, bulk_modulus, viscosity, damage) returns for point j's parameters
+ *    (hearth_block_param) and state, with the SAME BITS. out[k] is NULL for a scalar the core does not
+ *    want this call (it asks only for scalars whose one-point callback the plugin has); the other
+ *    columns hold b->n values to write. It reads only n, dim, p, p_col, state and state_stride, and
+ *    writes nothing but out (the state is read-only here). MPM's P2G calls it only with stress_block,
+ *    on the blocks it hands stress_block: before the stress (J^P and K at the start of the step) and
+ *    after it (the wave speed, viscosity, damage and J^P of the state the stress wrote).
+ *    HEARTH_PLUGIN_NO_BATCH=1 makes the core ignore it too. `hearth plugin check` compares it with the
+ *    one-point callbacks on the batched battery's blocks and names the first point that differs.
+ *
  * All tensors are 3x3, row-major (a[3*row+col]), in SI units. 2D scenes are
  * plane strain: the solver passes tensors whose z row and column describe no
  * deformation, and ignores the zz stress for motion (it still counts for
@@ -139,6 +152,16 @@ enum {
 
 /// The most points a hearth_block holds (stress_block may keep per-point scratch of this size on its stack).
 #define HEARTH_BLOCK_MAX 64
+
+/// Columns of scalars_block's out (contract rule 9): the one-point callback each column stands for.
+enum {
+    HEARTH_SCALAR_WAVE_SPEED,   ///< wave_speed (m/s)
+    HEARTH_SCALAR_PLASTIC_J,    ///< plastic_J (1)
+    HEARTH_SCALAR_BULK_MODULUS, ///< bulk_modulus (Pa)
+    HEARTH_SCALAR_VISCOSITY,    ///< viscosity (Pa s)
+    HEARTH_SCALAR_DAMAGE,       ///< damage (1)
+    HEARTH_SCALAR_COUNT
+};
 
 /// The parameter names the core reserves (contract rule 3): its own per-material parameters, in the
 /// order of hearth_core_params(). The loader refuses a plugin parameter with any of these names.
@@ -263,6 +286,11 @@ typedef struct hearth_material {
     /// parameter corners and in advanced states, and compares it with the law's own mean stress under a
     /// small isotropic volume change (a warning where the law flows plastically there).
     double (*bulk_modulus)(const double *p, const double *state);
+    /// Optional (may be NULL; read only when struct_size covers it). The batched scalars (contract rule 9):
+    /// for each point j < b->n and each k with out[k] non-NULL, out[k][j] = the one-point callback k's value
+    /// (HEARTH_SCALAR_*) for point j's parameters and state, bit for bit. Reads the state, never writes it.
+    /// Called concurrently, each call on its own block (rule 5).
+    void (*scalars_block)(const hearth_block *b, double *const out[HEARTH_SCALAR_COUNT]);
 } hearth_material;
 
 /// The entry point a plugin defines.

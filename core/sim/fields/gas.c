@@ -50,6 +50,7 @@
 
 #include <math.h>
 
+#include "exp_memo.h"
 #include "material.h"
 #include "mpm.h"
 #include "physics_constants.h"
@@ -115,19 +116,21 @@ void gas_between(hearth_scene *s, double dt) {
     const double *T = pcold(ps, PC_TEMPERATURE);
     const double *vent = s->def.gas_vent > 0 && (ps->enabled & (1u << PC_VENT)) ? pcold(ps, PC_VENT) : NULL;
     const int *mat = pcoli(ps, PC_MAT);
+    double *memo = ps->enabled & (1u << PC_GAS_MEMO) ? pcold(ps, PC_GAS_MEMO) : NULL;
     const material_slot *slot = s->mats.slot;
     const int n = ps->n;
     /* At constant temperature gas_moles_step is k exp(-m^2) (1 + 0), k = alpha^g R0 dt, m = (theta - theta_r) /
      * dtheta: these are its bits, without its call and its linear-path terms (the loop runs every step of the
      * dough bench: the exp is most of it, docs/performance.md). Per particle, nothing shared: the same bits on
-     * any thread count. */
+     * any thread count. The temperature holds between the fields' updates, and so does the exp: the memo
+     * (exp_memo.h) calls it once a cycle. */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         const material_slot *gm = &slot[mat[i]];
         const double a = gm->core[CP_GAS_RATE];
         if (!(a > 0)) continue;
         const double u = (T[i] - gm->core[CP_REACTION_T]) / gm->core[CP_REACTION_WIDTH];
-        G[i] += a * gm->params[gm->density_index] * dt * exp(-u * u);
+        G[i] += a * gm->params[gm->density_index] * dt * (memo ? exp_memo(memo + 2 * (size_t)i, -u * u) : exp(-u * u));
         if (vent) G[i] *= vent_decay(ps, i, vent[i], dt);
     }
 }

@@ -522,6 +522,9 @@ static int get_particles(ck_cursor *c, hearth_scene *s, hearth_error *err) {
     if (c->bad) return -1;
     const uint32_t core = (1u << PC_NCORE) - 1;
     if ((enabled & core) != core || enabled >= (1u << PC_COUNT)) return ck_fail(c, "unknown or missing particle columns");
+    for (int k = 0; k < PC_COUNT; k++) /* never saved (checkpoint_save.c): a file that has one was not written by hearth */
+        if ((enabled & (1u << k)) && particles_col_is_memo(k))
+            return ck_fail(c, "a memo column (a cache the scene recomputes, never saved) in the particles section");
     if (!(enabled & (1u << PC_BROWNING)) != !s->def.browning) /* the column lives exactly when the scene browns */
         return ck_fail(c, s->def.browning ? "no browning column in a scene with browning = true"
                                           : "a browning column in a scene with browning = false");

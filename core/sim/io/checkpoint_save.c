@@ -147,9 +147,12 @@ static void put_particles(ck_out *o, const hearth_scene *s) {
     put(o, "PART", 4);
     put_u32(o, (uint32_t)ps->n);
     put_u32(o, (uint32_t)ps->state_stride);
-    put_u32(o, ps->enabled);
+    uint32_t saved = ps->enabled; /* the memos are a cache (exp_memo.h): a restore starts them empty */
+    for (int c = 0; c < PC_COUNT; c++)
+        if (particles_col_is_memo(c)) saved &= ~(1u << c);
+    put_u32(o, saved);
     for (int c = 0; c < PC_COUNT; c++) {
-        if (!(ps->enabled & (1u << c))) continue;
+        if (!(saved & (1u << c))) continue;
         put_str(o, particles_col_label(ps, c)); /* a 2x2 store's C and F by their own names */
         if (ps->col[c]) put(o, ps->col[c], particles_col_bytes(ps, c) * (size_t)ps->n);
     }

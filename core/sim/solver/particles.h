@@ -42,8 +42,15 @@ typedef enum pcol {
     PC_DRIED,                  /* 1 - the lowest moisture ratio X/X_0 reached, 0..1 (irreversible moisture curves), 1 */
     PC_THERMAL,                /* thermal volume strain ln J_th at the last stress (eq. 10 as a strain: material.h), 1 */
     PC_VENT,                   /* gas_vent: h S_p at the last field step, 0 where closed or inside (gas.c's gas_between), 1 */
+    /* memos (exp_memo.h): a cache of exp at the particle's last argument, 2 (the argument, its exp); never
+     * hashed nor saved: a zeroed entry misses, so any value computes the same bits */
+    PC_THERMAL_MEMO,           /* the thermal split's exp(-ln J_th / 3) (material_batch.c's thermal_scales_block) */
+    PC_GAS_MEMO,               /* the CO2 rate's exp(-u^2), u = (theta - theta_r) / dtheta (gas.c's gas_between) */
     PC_COUNT
 } pcol;
+
+/// Whether column c is a memo (a cache, not state: hearth_scene_hash and checkpoints leave it out).
+static inline int particles_col_is_memo(int c) { return c == PC_THERMAL_MEMO || c == PC_GAS_MEMO; }
 
 enum { PF_FIXED = 1, PF_BOUNDARY = 2, PF_HOLD_T = 4 }; /* pinned body; boundary particle (Ding et al. §6.6); keeps its temperature (a held body) */
 
