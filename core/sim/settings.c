@@ -194,16 +194,12 @@ static const hearth_setting settings[] = {
              "them: the walls of a closed-cell foam carry their cells' gas pressure, so the sum's squeeze of a wall beside "
              "squeezed bubbles is the gas's, not the dough's Tait",
              foam_pressure),
-    SPH_FLAG("scaled_gas",
-             "with gas_law: a bubble's stiffness is the dough's B times its gas's own relative to the raw bubble's, "
-             "(P_a - P_v(T)) / (P_a - P_v(T0)): its pressure is its ideal gas's (eq. 2.42-2.43) times one constant at every "
-             "temperature, where B alone pushed without bound toward the boiling point as V_b grows",
-             scaled_gas),
     /* an ideal gas's isothermal bulk modulus is its pressure: a bubble at the
-     * oven's 101325 Pa is that stiff, where the set dough's Tait B is 4-8e5 Pa */
+     * oven's 101325 Pa less its vapour is that stiff, whatever its dough's Tait B */
     SPH(gas_pressure, "Pa",
-        "with gas_law: the outside pressure P_a of a bubble's ideal gas: its gauge pressure is P_a (rho / rho_b - 1) "
-        "(bulk modulus P_a) where that is softer than the dough's Tait B (an oven: 101325); 0 = the dough's B",
+        "with gas_law: the outside pressure P_a of a bubble's ideal gas: its stiffness is its gas's own, P_a - P_v(T) "
+        "(eq. 2.42-2.43), at any dough stiffness, so it pushes (P_a - P_v) (rho / rho_b - 1) (an oven: 101325); "
+        "0 = the dough's Tait B",
         0, 0, 1e7),
 };
 

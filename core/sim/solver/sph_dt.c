@@ -5,7 +5,8 @@
  * Before the first step the sound speed comes from the materials'
  * wave_speed; after it, from the step's report (s->c_max: c0, or Tait's
  * sound speed at the particle's density where eq. 3.52 lowered the density
- * it is taken against; sph.c's signal_speed says why). h is the raw
+ * it is taken against, or a bubble's gas's own with sph.gas_pressure:
+ * sph_gas.c sph_gas_sound_speed; sph.c's signal_speed says why). h is the raw
  * particles' (h_factor V0^(1/dim)): a bubble grown by sph.gas_law has a
  * larger h, so hmin stays on the safe side. */
 #include <math.h>
@@ -39,6 +40,9 @@ double sph_stable_dt(const hearth_scene *s) {
             const double ci = ms->m->wave_speed(p, ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
             plugin_call_leave();
             if (ci > c) c = ci;
+            /* a bubble whose stiffness is its gas's (sph.gas_pressure) outruns the raw dough's waves */
+            const double cg = T ? sph_gas_sound_speed(o, ms->core[CP_BUBBLE], p[ms->density_index], T[i]) : 0;
+            if (cg > c) c = cg;
         }
     }
     if (!isfinite(hmin)) hmin = s->def.dx;

@@ -160,18 +160,31 @@ static void foam_cap(hearth_scene *s, const sph_cols *c) {
         if (cap[i] < st->prs[i]) st->prs[i] = cap[i];
 }
 
-/* sph.scaled_gas: the bubble's stiffness B (P_a - P_v(T)) / (P_a - P_v(T0)). An ideal gas held at
- * volume V has the gauge pressure (P_a - P_v)(V_b / V - 1) (eq. 2.42-2.43 with eq. 3.49-3.50: the CO2
- * keeps its moles, the vapour its partial pressure), so with this stiffness the bubble pushes its gas's
- * pressure times B / (P_a - P_v(T0)) at every temperature: the animation's stiffer gas, one factor
- * throughout. With B alone the factor is B / (P_a - P_v(T)) and grows without bound toward the
- * dough's boiling point, as V_b does: on the bread roll with foam_pressure and bubble_vent the crust's
- * last closed cells pushed up to 4.7x their gas just before they opened and burst its top at 2 s;
- * with it the roll stays whole and on its tray to 2 s but rises 1.21x (docs/validation.md "Both
- * switches on"). */
-static double scaled_gas_modulus(const hearth_sph_def *o, double B, double T) {
-    const double pa = outside_pressure(o), ref = pa - vapour_pressure(o, o->bubble_T0);
-    return ref > 0 ? B * fmax(0.0, pa - vapour_pressure(o, T)) / ref : B;
+/* A bubble's stiffness under the gas law. With sph.gas_pressure = P_a it is
+ * its gas's own, whatever dough holds it: the CO2 keeps its moles and the
+ * vapour its partial pressure P_v = a_w P_sat(T) (eq. 2.42-2.43 with the
+ * ideal gas of eq. 3.49-3.50), so at volume V its gauge pressure is exactly
+ * (P_a - P_v)(V_b / V - 1), an isothermal bulk modulus P_a - P_v that falls
+ * to 0 at the dough's boiling point. It used to be capped by the dough's
+ * Tait B where that was softer, which on the bread roll is everywhere that
+ * matters: the raw dough's B is 2.9 kPa, a 34th of its gas's 97.6 kPa, so
+ * the raw crumb's bubbles pushed 3% of their gas and the roll rose only once
+ * mu_e set B past the gas (4-5e5 Pa hot), when each bubble pushed up to 4.5x
+ * its gas near the cap (docs/validation.md "The bubble's own gas"). Without
+ * gas_pressure it is the dough's B (the roll's preset). */
+double sph_gas_modulus(const hearth_sph_def *o, double B, double T) {
+    return o->gas_pressure > 0 ? fmax(0.0, o->gas_pressure - vapour_pressure(o, T)) : B;
+}
+
+/* The sound speed of a bubble whose stiffness is its gas's: p = K (rho / rho_b
+ * - 1) gives c^2 = dp/drho = K / rho_b, with rho_b = rho0 / V_b(T). On the raw
+ * roll that is 9.4 m/s against the dough's c0 of 4.3 (hot: 55), so the CFL limit
+ * (sph_dt.c, and sph.c's signal_speed from the first step) must count it or
+ * the bubbles' waves cross more than a spacing a step. 0 where the gas's
+ * stiffness is not the bubble's (no gas_pressure, no bubble, no temperature). */
+double sph_gas_sound_speed(const hearth_sph_def *o, double bub, double rho0, double T) {
+    if (!(o->gas_law && o->gas_pressure > 0 && bub > 0 && rho0 > 0) || isnan(T)) return 0;
+    return sqrt(sph_gas_modulus(o, 0, T) * sph_bubble_volume(o, bub, T) / rho0);
 }
 
 /* Pressure with sph.gas_law: the dough's Tait (eq. 3.17) against its rest
@@ -187,17 +200,10 @@ static double scaled_gas_modulus(const hearth_sph_def *o, double B, double T) {
  * Tait (gamma 7) against rho_b instead was tried and rejected: a bubble the
  * dough holds at its raw volume sees B (V_b^7 - 1), 16000 B at V_b = 4, and
  * blew the crust off the roll.
- * With sph.gas_pressure = P_a the bubble's stiffness is its gas's own: the
- * CO2 keeps its moles and the vapour its partial pressure P_v = a_w
- * P_sat(T), so at volume V the gauge pressure is exactly (P_a - P_v)(V_b / V
- * - 1) = (P_a - P_v)(rho / rho_b - 1) (eq. 2.42 with the ideal gas of eq.
- * 3.49-3.50), an isothermal bulk modulus of P_a - P_v, which falls to 0 as
- * the dough nears its boiling point. The dough's B, which carries the set
- * dough's mu_e (4-8e5 Pa hot in the bread roll), still caps it where it is
- * softer (a cool raw dough: the time step is the dough's). Measured on the
- * roll (docs/validation.md "The roll's skin, renormalised"): with the
- * animation-scaled dough the gas alone cannot stretch the set crumb, which
- * then rises 1.11x by 1.5 s, so the roll's preset leaves it off. */
+ * With sph.gas_pressure = P_a the bubble's stiffness is its gas's own,
+ * P_a - P_v(T) (sph_gas_modulus), at any dough stiffness: p = (P_a -
+ * P_v)(rho / rho_b - 1) is the bubble's ideal gas exactly (eq. 2.42-2.43,
+ * 3.49-3.50). */
 void sph_pressure_gas_law(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
@@ -213,12 +219,7 @@ void sph_pressure_gas_law(hearth_scene *s) {
                            : o->renormalised_density ? st->vr[i]
                                                      : st->rho[i];
         const double tait = st->B[i] * (pow(rho / rho0, o->gamma) - 1); /* eq. 3.17 */
-        double Bg = st->B[i];
-        if (o->gas_pressure > 0 && bub > 0 && T) { /* the gas's own stiffness, P_a - P_v (gas_modulus) */
-            const double K = fmax(0.0, o->gas_pressure - vapour_pressure(o, T[i]));
-            if (K < Bg) Bg = K;
-        }
-        if (o->scaled_gas && bub > 0 && T) Bg = fmin(Bg, scaled_gas_modulus(o, st->B[i], T[i]));
+        const double Bg = bub > 0 && T ? sph_gas_modulus(o, st->B[i], T[i]) : st->B[i];
         double gas = Bg * (rho / rr - 1);
         /* sph.bubble_vent: sph_bubble_volume stops V_b at bubble_vmax because there the crumb's cells
          * open and vent (the vapour law diverges at the boiling point); an open cell's gas escapes, so it

@@ -171,4 +171,11 @@ double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin);
 /// With sph.gas_law: st->rhof (each particle's rest density: rho0, a bubble's
 /// rho0 / V_b(T)) and st->prs against it; st->Tprev <- T.
 void sph_pressure_gas_law(hearth_scene *s);
+/// A bubble's stiffness (Pa) at T (degC): its gas's own P_a - P_v(T) with
+/// sph.gas_pressure = P_a, else the dough's Tait B.
+double sph_gas_modulus(const hearth_sph_def *o, double B, double T);
+/// The sound speed (m/s) of a bubble (raw gas volume bub) of rest density
+/// rho0 whose stiffness is its gas's, sqrt((P_a - P_v) V_b(T) / rho0); 0
+/// where it is not (no sph.gas_pressure, not a bubble, T NaN).
+double sph_gas_sound_speed(const hearth_sph_def *o, double bub, double rho0, double T);
 #endif
