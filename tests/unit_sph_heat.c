@@ -746,8 +746,8 @@ TEST(sph_bubble_vent_open_cell_pushes_nothing) {
     else printf("refused: %s\n", err.msg);
 }
 
-/* The five options that act through sph.gas_law's pressure are refused
- * without it, each by one table (sph.c sph_check_def): the messages word for
+/* The six options that act through sph.gas_law's pressure are refused
+ * without it, each by one table (sph_gas.c sph_gas_check_def): the messages word for
  * word as they were when each had its own check (scripts and users grep
  * them), and none of them once sph.gas_law is on. */
 TEST(sph_gas_law_refusals_word_for_word) {
@@ -761,9 +761,11 @@ TEST(sph_gas_law_refusals_word_for_word) {
         "bubbles); set both or neither",
         "scene: sph.gas_pressure = 25000 Pa needs sph.gas_law = true (it is the gas law's bubble that holds the gas); "
         "set sph.gas_law = true or sph.gas_pressure = 0",
+        "scene: sph.dough_water = 0.43 needs sph.gas_law = true (its CO2 comes out into the gas law's bubbles); set "
+        "sph.gas_law = true or sph.dough_water = 0",
     };
     const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.1, 0};
-    for (int k = 0; k < 5; k++)
+    for (int k = 0; k < 6; k++)
         for (int law = 0; law < 2; law++) {
             hearth_scene_def d = sph_def(2, 0.005, lo, hi);
             d.sph.gas_law = law;
@@ -772,6 +774,7 @@ TEST(sph_gas_law_refusals_word_for_word) {
             d.sph.bubble_vent = k == 2;
             d.sph.foam_pressure = k == 3;
             d.sph.gas_pressure = k == 4 ? 2.5e4 : 0;
+            d.sph.dough_water = k == 5 ? 0.43 : 0;
             hearth_error err;
             err.msg[0] = 0;
             hearth_scene *s = hearth_scene_create(&d, &err);

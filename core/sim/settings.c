@@ -201,6 +201,13 @@ static const hearth_setting settings[] = {
         "(eq. 2.42-2.43), at any dough stiffness, so it pushes (P_a - P_v) (rho / rho_b - 1) (an oven: 101325); "
         "0 = the dough's Tait B",
         0, 0, 1e7),
+    /* bread dough holds 0.41-0.45 kg of water per kg (a flour's 60-65% water
+     * on its own weight); the dissolved CO2 it holds is as much as the gas */
+    SPH(dough_water, "kg/kg",
+        "with gas_law: the dough's water mass fraction; CO2 dissolves in it by Henry's law (Sander 2015; thesis eq. "
+        "2.44) and comes out into the bubbles as the dough heats (each bubble draws on an even share of the "
+        "particles' water per raw gas volume); 0 = none",
+        0, 0, 0.9),
 };
 
 const hearth_setting *hearth_scene_settings(int *n) {

@@ -23,6 +23,7 @@ double sph_stable_dt(const hearth_scene *s) {
     double dt = INFINITY, pscratch[SCENE_MAX_PARAMS];
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     double hmin = INFINITY, numax = 0, rhomin = INFINITY;
+    const double w = s->step == 0 ? sph_dough_water_share(s) : 0; /* sph.dough_water's share, for the first step */
     for (int i = 0; i < ps->n; i++) {
         const int m = pcoli(ps, PC_MAT)[i];
         const material_slot *ms = &s->mats.slot[m];
@@ -41,7 +42,7 @@ double sph_stable_dt(const hearth_scene *s) {
             plugin_call_leave();
             if (ci > c) c = ci;
             /* a bubble whose stiffness is its gas's (sph.gas_pressure) outruns the raw dough's waves */
-            const double cg = T ? sph_gas_sound_speed(o, ms->core[CP_BUBBLE], p[ms->density_index], T[i]) : 0;
+            const double cg = T ? sph_gas_sound_speed(o, ms->core[CP_BUBBLE], p[ms->density_index], T[i], w) : 0;
             if (cg > c) c = cg;
         }
     }
