@@ -29,7 +29,11 @@
 -- set crust holds the inside's pressure. --set continuity=true (with
 -- --set renormalised=false) reads each particle's own volume instead (its films
 -- then tear from 1.6 s); --set gas_pressure=101325 gives a bubble its gas's own
--- stiffness (the set dough then holds it: 1.11x at 1.5 s).
+-- stiffness, P_a - P_v, where the preset's is the dough's Tait B (2.9 kPa raw,
+-- 4.8e5 hot): whole to 2 s, 1.45x, base at most 4.2 mm off the tray
+-- (docs/validation.md "The bubble's own gas"). --set dough_water=0.43 (with
+-- it) dissolves CO2 in the dough's water by Henry's law, which the heat
+-- drives into the bubbles.
 -- From 1.6 s the roll rocks on a convex base, 2-6 mm off the tray at one end
 -- (docs/validation.md "The roll's base"): its set shell holds the dough's
 -- squeeze beside squeezed bubbles and the push of the bubbles at the vapour's
