@@ -85,8 +85,9 @@ claim_sph_bread_roll_sits_on_tray)
         "bubbles reads their squeeze at Tait's gamma 7 (sph.foam_pressure caps it: on the tray to 1.6 s, then it rocks)" \
         "and the bubbles at the vapour's cap still push (sph.bubble_vent opens them: the rise then stalls at 1.27-1.30x, the open" \
         "crust pushing nothing, and it tears at 2 s, where the crust's last closed cells, at the set dough's B, pushed up to 4.7x" \
-        "their ideal gas just before they opened; with sph.scaled_gas too it stays whole and on the tray but rises 1.21x)" \
-        "(docs/validation.md \"The roll's base\", \"Both switches on\")" >&2
+        "their ideal gas just before they opened; with each bubble as stiff as its own gas, sph.gas_pressure = 101325," \
+        "whole to 2 s, 1.45x, and the base lifts at most 4.2 mm)" \
+        "(docs/validation.md \"The roll's base\", \"Both switches on\", \"The bubble's own gas\")" >&2
     exit 77
     ;;
 *) fail "unknown case $case_name" ;;

@@ -532,11 +532,13 @@ TEST(sph_continuity_density_reads_no_skin) {
  * its middle 6 x 6 mm bubble particles, all at 85 degC and at their raw
  * volume, one step: each bubble's pressure against the closed form computed
  * here, for a dough of bulk 1e6 Pa and one of 1e7 Pa (Tait B 1.4e5 and 1.4e6:
- * both stiffer than the gas), and for a soft one (bulk 1e4 Pa, B 1.4e3),
- * where the dough's B still caps it (the time step is the dough's). Before
- * sph.gas_pressure the bubble pushed B (V_b - 1), ten times harder in the
- * 1e7 dough than in the 1e6. Returns the bubbles' mean pressure; *B their Tait
- * B; *spread the largest difference between bubbles. */
+ * both stiffer than the gas), and for a soft one (bulk 1e4 Pa, B 1.4e3, as
+ * soft as the raw bread roll's), which the dough's B used to cap at B (V_b -
+ * 1), a fortieth of its gas (the time step now counts the gas's sound speed,
+ * sph_gas.c sph_gas_sound_speed). Without sph.gas_pressure the bubble pushes
+ * B (V_b - 1), ten times harder in the 1e7 dough than in the 1e6. Returns the
+ * bubbles' mean pressure; *B their Tait B; *spread the largest difference
+ * between bubbles. */
 /* The block of dough with its middle 3 x 3 bubbles, at T everywhere, after one
  * `steps` steps (the sum takes the gas law's rest volumes from the second,
  * sph.c rest_volume): dough of bulk `bulk`, sph.gas_pressure pa, the density by the own
@@ -544,7 +546,6 @@ TEST(sph_continuity_density_reads_no_skin) {
  * renormalised_density; mode 2 with sph.foam_pressure too; mode 3 the own
  * volume with sph.bubble_vent). NULL on a
  * failure (printed); *bub the bubbles' material. */
-static int block_scaled_gas; /* sph.scaled_gas for the blocks below */
 static hearth_scene *bubble_block(double bulk, double pa, double T, int mode, int steps, int *bub) {
     const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.04, 0.04, 0};
     hearth_scene_def d = sph_def(2, dx, lo, hi);
@@ -557,7 +558,6 @@ static hearth_scene *bubble_block(double bulk, double pa, double T, int mode, in
     d.sph.foam_pressure = mode == 2;
     d.sph.bubble_vent = mode == 3;
     d.sph.gas_pressure = pa;
-    d.sph.scaled_gas = block_scaled_gas;
     hearth_scene *s = hearth_scene_create(&d, NULL);
     if (!s) return NULL;
     const char *n[] = {"density", "bulk", "viscosity", "bubble"};
@@ -610,14 +610,14 @@ TEST(sph_bubble_gas_pressure_is_the_gas) {
     printf("85 degC, V_b %.4f, P_a - P_v %.1f Pa: gas pressure %.1f Pa (closed form)\n", vb, pa - pv, want);
     printf("dough bulk 1e6 (B %.4g): %.1f Pa (spread %.3g); bulk 1e7 (B %.4g): %.1f Pa (spread %.3g)\n", B1, p1, sp1, B2,
            p2, sp2);
-    printf("soft dough bulk 1e4 (B %.4g): %.2f Pa, B (V_b - 1) %.2f; without gas_pressure, bulk 1e7: %.1f Pa, B (V_b - 1) "
-           "%.1f\n",
-           B3, p3, B3 * (vb - 1), p4, B4 * (vb - 1));
+    printf("soft dough bulk 1e4 (B %.4g): %.1f Pa (spread %.3g), B (V_b - 1) %.2f; without gas_pressure, bulk 1e7: %.1f "
+           "Pa, B (V_b - 1) %.1f\n",
+           B3, p3, sp3, B3 * (vb - 1), p4, B4 * (vb - 1));
     CHECK(B1 > pa && B2 > pa);            /* both doughs are stiffer than the gas */
     CHECK(fabs(p1 / want - 1) < 1e-3);    /* the gas's own pressure */
     CHECK(fabs(p2 / want - 1) < 1e-3);    /* whatever dough holds it */
     CHECK(sp1 < 1e-6 * want && sp2 < 1e-6 * want);
-    CHECK(B3 < pa - pv && fabs(p3 / (B3 * (vb - 1)) - 1) < 1e-3); /* a softer dough's B caps it */
+    CHECK(B3 < 0.1 * (pa - pv) && fabs(p3 / want - 1) < 1e-3 && sp3 < 1e-6 * want); /* a soft dough's B no longer caps it */
     CHECK(fabs(p4 / (B4 * (vb - 1)) - 1) < 1e-3);                 /* off: the dough's B, as before */
 }
 
@@ -746,8 +746,8 @@ TEST(sph_bubble_vent_open_cell_pushes_nothing) {
     else printf("refused: %s\n", err.msg);
 }
 
-/* The five options that act through sph.gas_law's pressure are refused
- * without it, each by one table (sph.c sph_check_def): the messages word for
+/* The six options that act through sph.gas_law's pressure are refused
+ * without it, each by one table (sph_gas.c sph_gas_check_def): the messages word for
  * word as they were when each had its own check (scripts and users grep
  * them), and none of them once sph.gas_law is on. */
 TEST(sph_gas_law_refusals_word_for_word) {
@@ -761,8 +761,8 @@ TEST(sph_gas_law_refusals_word_for_word) {
         "bubbles); set both or neither",
         "scene: sph.gas_pressure = 25000 Pa needs sph.gas_law = true (it is the gas law's bubble that holds the gas); "
         "set sph.gas_law = true or sph.gas_pressure = 0",
-        "scene: sph.scaled_gas = true needs sph.gas_law = true (it scales the gas law's bubble stiffness); set both or "
-        "neither",
+        "scene: sph.dough_water = 0.43 needs sph.gas_law = true (its CO2 comes out into the gas law's bubbles); set "
+        "sph.gas_law = true or sph.dough_water = 0",
     };
     const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.1, 0};
     for (int k = 0; k < 6; k++)
@@ -774,7 +774,7 @@ TEST(sph_gas_law_refusals_word_for_word) {
             d.sph.bubble_vent = k == 2;
             d.sph.foam_pressure = k == 3;
             d.sph.gas_pressure = k == 4 ? 2.5e4 : 0;
-            d.sph.scaled_gas = k == 5;
+            d.sph.dough_water = k == 5 ? 0.43 : 0;
             hearth_error err;
             err.msg[0] = 0;
             hearth_scene *s = hearth_scene_create(&d, &err);
@@ -790,13 +790,11 @@ TEST(sph_gas_law_refusals_word_for_word) {
  * the dough's boiling point, so near the cap a bubble pushes many times its
  * gas, and the crust's last closed cells burst its top just before they
  * open. The block's bubbles at their raw volume (J = 1, one step, the
- * density by their own volume, B-stiff: sph.gas_pressure 0) at 70 and 91
- * degC (V_b 1.58 and 3.75, both closed) against their ideal gas at that
- * volume, (P_a - P_v0)(T / T0) + P_v(T) - P_a (eq. 2.42-2.43, 3.49-3.50,
- * computed here). A gas law whose stiffness is its gas's, scaled (an
- * animation's stiffer gas), keeps one ratio at every temperature; asked:
- * the ratio at 91 degC within 1.5x of the one at 70. Expected failure. */
-static void near_cap_ratios(double ratio[2], double *B) {
+ * density by their own volume) at 70 and 91 degC (V_b 1.58 and 3.75, both
+ * closed) against their ideal gas at that volume, (P_a - P_v0)(T / T0) +
+ * P_v(T) - P_a (eq. 2.42-2.43, 3.49-3.50, computed here), with sph.gas_pressure
+ * pa (0: B-stiff, the roll's preset). */
+static void near_cap_ratios(double pa_set, double ratio[2], double *B) {
     const double aw = 0.95, T0 = 26, pa = 101325, Ts[2] = {70, 91};
     for (int k = 0; k < 2; k++) {
         const double T = Ts[k], hr = 40660.0 / 8.314462618;
@@ -804,7 +802,7 @@ static void near_cap_ratios(double ratio[2], double *B) {
         const double pv = aw * pa * exp(-hr * (1 / (T + 273.15) - 1 / 373.15));
         const double ideal = (pa - pv0) * (T + 273.15) / (T0 + 273.15) + pv - pa;
         double spread;
-        const double p = bubble_push(1e6, 0, T, B, &spread);
+        const double p = bubble_push(1e6, pa_set, T, B, &spread);
         ratio[k] = p / ideal;
         printf("%.0f degC: V_b %.4f, bubble pushes %.1f Pa (B %.4g), its ideal gas %.1f Pa: %.4fx\n", T,
                vb_closed(aw, T0, T), p, *B, ideal, ratio[k]);
@@ -813,30 +811,62 @@ static void near_cap_ratios(double ratio[2], double *B) {
     printf("the ratio at 91 degC is %.4fx the one at 70 degC\n", ratio[1] / ratio[0]);
 }
 
+/* The roll's preset (B-stiff): a gas law whose stiffness is its gas's keeps
+ * one ratio at every temperature; asked: the ratio at 91 degC within 1.5x of
+ * the one at 70. Expected failure while the preset's bubbles are B-stiff. */
 TEST(sph_gas_law_bubble_near_cap_within_its_gas) {
     double ratio[2], B;
-    near_cap_ratios(ratio, &B);
+    near_cap_ratios(0, ratio, &B);
     if (!(ratio[1] / ratio[0] < 1.5))
         XFAIL("at 91 degC a bubble pushes %.2fx its ideal gas, %.2fx the ratio at 70 degC (asked: within 1.5x): the gas "
               "law's pressure B (V_b / J - 1) takes the dough's stiffness for the gas's P_a - P_v, and V_b diverges at "
-              "the boiling point; the bread roll's crust cells push up to 4.7x their gas just before they open (sph.scaled_gas "
-              "keeps one ratio: sph_gas_law_scaled_gas_one_ratio)",
+              "the boiling point; the bread roll's crust cells push up to 4.7x their gas just before they open "
+              "(sph.gas_pressure = 101325 pushes the gas itself: sph_gas_law_own_gas_one_ratio; not the roll's preset)",
               ratio[1], ratio[1] / ratio[0]);
 }
 
-/* sph.scaled_gas: the same bubbles with the bubble's stiffness B (P_a -
- * P_v(T)) / (P_a - P_v(T0)) push their ideal gas's pressure times one
- * factor, B / (P_a - P_v(T0)) (computed here), at 70 as at 91 degC. */
-TEST(sph_gas_law_scaled_gas_one_ratio) {
+/* sph.gas_pressure = 101325: the same bubbles, each stiff as its own gas,
+ * push their ideal gas exactly (the closed form above, ratio 1) at 70 as at
+ * 91 degC, in a dough of Tait B 1.4e5 Pa, stiffer than that gas. */
+TEST(sph_gas_law_own_gas_one_ratio) {
     double ratio[2], B;
-    block_scaled_gas = 1;
-    near_cap_ratios(ratio, &B);
-    block_scaled_gas = 0;
-    const double pv0 = 0.95 * 101325 * exp(-40660.0 / 8.314462618 * (1 / (26 + 273.15) - 1 / 373.15));
-    const double want = B / (101325 - pv0);
-    printf("scaled_gas: %.4fx and %.4fx their ideal gas at 70 and 91 degC, B / (P_a - P_v0) = %.4f\n", ratio[0], ratio[1],
-           want);
-    CHECK(fabs(ratio[0] / want - 1) < 1e-3 && fabs(ratio[1] / want - 1) < 1e-3);
+    near_cap_ratios(101325, ratio, &B);
+    printf("own gas: %.6fx and %.6fx their ideal gas at 70 and 91 degC (dough B %.4g)\n", ratio[0], ratio[1], B);
+    CHECK(B > 101325);
+    CHECK(fabs(ratio[0] - 1) < 1e-3 && fabs(ratio[1] - 1) < 1e-3);
+}
+
+/* The time step counts the bubble's gas. A gas-stiff bubble, p = K (rho /
+ * rho_b - 1) with K = P_a - P_v, carries c^2 = K / rho_b = K V_b / rho0:
+ * in the soft dough of sph_bubble_gas_pressure_is_the_gas (bulk 1e4 Pa, its
+ * own wave 3.0 m/s) at 85 degC that is 10.3 m/s (computed here), so the CFL
+ * step must be cfl dx / c_gas or shorter, before the first step (sph_dt.c,
+ * from the materials and the gas) and after it (the step's c_max, sph.c
+ * signal_speed); without sph.gas_pressure the dough's own wave sets it. */
+static void gas_dt_case(double pa, double *dt0, double *dt1, double *cmax) {
+    int bub;
+    hearth_scene *s = bubble_block(1e4, pa, 85, 0, 0, &bub);
+    *dt0 = *dt1 = *cmax = NAN;
+    if (!s) return;
+    *dt0 = sph_stable_dt(s);
+    hearth_error err;
+    if (hearth_scene_step(s, 1, &err) == HEARTH_OK) *dt1 = sph_stable_dt(s), *cmax = s->c_max;
+    hearth_scene_destroy(s);
+}
+
+TEST(sph_gas_sound_speed_limits_dt) {
+    const double T = 85, aw = 0.95, pa = 101325, rho0 = 1100, dx = 0.002, cfl = 0.5;
+    const double pv = aw * 101325 * exp(-40660.0 / 8.314462618 * (1 / (T + 273.15) - 1 / 373.15));
+    const double cg = sqrt((pa - pv) * vb_closed(aw, 26, T) / rho0), limit = cfl * dx / cg;
+    double g0, g1, gc, d0, d1, dc;
+    gas_dt_case(pa, &g0, &g1, &gc);
+    gas_dt_case(0, &d0, &d1, &dc);
+    printf("gas sound speed %.4f m/s (closed form), CFL step %.4g s: with gas_pressure dt %.4g before the first step, "
+           "%.4g after (c_max %.4f); without, %.4g and %.4g (c_max %.4f)\n",
+           cg, limit, g0, g1, gc, d0, d1, dc);
+    CHECK(g0 <= limit * (1 + 1e-9) && g1 <= limit * (1 + 1e-9));
+    CHECK(fabs(gc / cg - 1) < 0.02); /* the step's report: the gas's speed (T moved one step) */
+    CHECK(d0 > 2 * limit && dc < 0.5 * cg); /* the soft dough alone: its own, slower wave */
 }
 
 TEST_MAIN(T(sph_heat_ext_flux_per_area), T(sph_heat_ext_slab_converges), T(sph_gas_law_clusters_reach_gas_volume),
@@ -844,4 +874,4 @@ TEST_MAIN(T(sph_heat_ext_flux_per_area), T(sph_heat_ext_slab_converges), T(sph_g
           T(sph_continuity_density_reads_no_skin), T(sph_bubble_gas_pressure_is_the_gas),
           T(sph_renormalised_density_reads_no_skin), T(sph_foam_pressure_walls_hold_the_gas),
           T(sph_bubble_vent_open_cell_pushes_nothing), T(sph_gas_law_refusals_word_for_word),
-          T(sph_gas_law_bubble_near_cap_within_its_gas), T(sph_gas_law_scaled_gas_one_ratio))
+          T(sph_gas_law_bubble_near_cap_within_its_gas), T(sph_gas_law_own_gas_one_ratio), T(sph_gas_sound_speed_limits_dt))

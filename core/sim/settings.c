@@ -194,17 +194,20 @@ static const hearth_setting settings[] = {
              "them: the walls of a closed-cell foam carry their cells' gas pressure, so the sum's squeeze of a wall beside "
              "squeezed bubbles is the gas's, not the dough's Tait",
              foam_pressure),
-    SPH_FLAG("scaled_gas",
-             "with gas_law: a bubble's stiffness is the dough's B times its gas's own relative to the raw bubble's, "
-             "(P_a - P_v(T)) / (P_a - P_v(T0)): its pressure is its ideal gas's (eq. 2.42-2.43) times one constant at every "
-             "temperature, where B alone pushed without bound toward the boiling point as V_b grows",
-             scaled_gas),
     /* an ideal gas's isothermal bulk modulus is its pressure: a bubble at the
-     * oven's 101325 Pa is that stiff, where the set dough's Tait B is 4-8e5 Pa */
+     * oven's 101325 Pa less its vapour is that stiff, whatever its dough's Tait B */
     SPH(gas_pressure, "Pa",
-        "with gas_law: the outside pressure P_a of a bubble's ideal gas: its gauge pressure is P_a (rho / rho_b - 1) "
-        "(bulk modulus P_a) where that is softer than the dough's Tait B (an oven: 101325); 0 = the dough's B",
+        "with gas_law: the outside pressure P_a of a bubble's ideal gas: its stiffness is its gas's own, P_a - P_v(T) "
+        "(eq. 2.42-2.43), at any dough stiffness, so it pushes (P_a - P_v) (rho / rho_b - 1) (an oven: 101325); "
+        "0 = the dough's Tait B",
         0, 0, 1e7),
+    /* bread dough holds 0.41-0.45 kg of water per kg (a flour's 60-65% water
+     * on its own weight); the dissolved CO2 it holds is as much as the gas */
+    SPH(dough_water, "kg/kg",
+        "with gas_law: the dough's water mass fraction; CO2 dissolves in it by Henry's law (Sander 2015; thesis eq. "
+        "2.44) and comes out into the bubbles as the dough heats (each bubble draws on an even share of the "
+        "particles' water per raw gas volume); 0 = none",
+        0, 0, 0.9),
 };
 
 const hearth_setting *hearth_scene_settings(int *n) {

@@ -210,8 +210,8 @@ typedef struct hearth_sph_def {
     int renormalised_density; ///< with gas_law: the summed density over the part of the kernel the body fills, sum_j V0_j det F_j W_ij (at most 1; Ferrand et al. 2013's gamma), so a free surface or a collider's side reads no stretch and the inside keeps the sum; default 0
     int bubble_vent;       ///< with gas_law: a bubble whose gas law reaches bubble_vmax is open (vented): it pushes no further (gauge pressure at most 0, its dough's Tait still holds it); default 0
     int foam_pressure;     ///< with gas_law: a dough particle with bubble particles in its kernel holds at most their highest pressure (the walls of a closed-cell foam carry their cells' gas pressure, not a squeeze of their own); default 0
-    int scaled_gas;        ///< with gas_law: a bubble's stiffness is the dough's B times its gas's own, (P_a - P_v(T)) / (P_a - P_v(T0)): its pressure is its ideal gas's times one constant at every temperature, bounded at the boiling point (B alone grows without bound there as V_b does); default 0
-    double gas_pressure;   ///< with gas_law: the outside pressure P_a (Pa) whose ideal gas a bubble holds: its gauge pressure P_a (rho / rho_b - 1), the gas's isothermal bulk modulus being P_a, where it is softer than the dough's Tait B; 0 = the dough's B (default)
+    double gas_pressure;   ///< with gas_law: the outside pressure P_a (Pa) whose ideal gas a bubble holds: its stiffness is its gas's own, P_a - P_v(T) (the vapour's partial pressure, eq. 2.42-2.43), at any dough stiffness, so it pushes (P_a - P_v)(rho / rho_b - 1), its ideal gas exactly; 0 = the dough's Tait B (default)
+    double dough_water;    ///< with gas_law: the dough's water as a mass fraction (kg/kg, bread dough ~0.43); CO2 dissolves in it by Henry's law (Sander 2015; thesis eq. 2.44, Fan et al.) and comes out of solution into the bubbles as it heats, each bubble drawing on an even share of all the particles' water per unit raw gas volume; 0 = no dissolved CO2 (default)
 } hearth_sph_def;
 
 /// A scene's settings. Each field is one row of hearth_scene_settings(), which

@@ -155,27 +155,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
         return err_set(err, HEARTH_ERR_PARAM,
                        "scene: latent_heat = true needs the water field, which solver = \"sph\" does not carry; use "
                        "solver = \"mpm\" or latent_heat = false");
-    /* the options that act through sph.gas_law's pressure: each refused without it, saying what it does there */
-    char gp[48];
-    snprintf(gp, sizeof gp, "%g Pa", o->gas_pressure);
-    const char *both = "set both or neither";
-    const struct {
-        const char *name, *val, *why, *fix;
-        int on;
-    } needs[] = {
-        {"continuity_density", "true", "it is the gas law's pressure that reads the particle's own volume", both,
-         o->continuity_density},
-        {"renormalised_density", "true", "it is the gas law's pressure that reads it", both, o->renormalised_density},
-        {"bubble_vent", "true", "it opens the gas law's bubbles", both, o->bubble_vent},
-        {"foam_pressure", "true", "it caps the dough's pressure by the gas law's bubbles", both, o->foam_pressure},
-        {"scaled_gas", "true", "it scales the gas law's bubble stiffness", both, o->scaled_gas},
-        {"gas_pressure", gp, "it is the gas law's bubble that holds the gas",
-         "set sph.gas_law = true or sph.gas_pressure = 0", o->gas_pressure > 0},
-    };
-    for (size_t k = 0; k < sizeof needs / sizeof needs[0]; k++)
-        if (needs[k].on && !o->gas_law)
-            return err_set(err, HEARTH_ERR_PARAM, "scene: sph.%s = %s needs sph.gas_law = true (%s); %s", needs[k].name,
-                           needs[k].val, needs[k].why, needs[k].fix);
+    if ((st = sph_gas_check_def(o, err))) return st; /* the gas law's options, refused without it (sph_gas.c) */
     if (o->renormalised_density && o->continuity_density)
         return err_set(err, HEARTH_ERR_PARAM,
                        "scene: sph.renormalised_density and sph.continuity_density are two densities for the same "
@@ -724,11 +704,12 @@ static void phase_xsph(hearth_scene *s) {
  * and the kinetic energy ran away at step 128, unless eq. 4.4's epsilon of
  * 0.3 at the hot crust damped it (one epsilon of 0.05, or each pair's mean,
  * did not). So those particles count Tait's speed at their present density,
- * never less than c0. With sph.gas_law the dough's Tait is against rho0 and
- * a bubble's ideal gas (sph_gas.c) is B (rho / rho_b - 1), c^2 = B / rho_b:
- * faster than c0 only past V_b = gamma. */
-static inline double signal_speed(const struct sph_state *st, const hearth_sph_def *o, int i, double bub) {
+ * never less than c0. With sph.gas_law the dough's Tait is against rho0, a
+ * bubble's gas (sph_gas.c) K (rho / rho_b - 1), c^2 = K / rho_b: with K = B
+ * faster than c0 only past V_b = gamma; its gas's own K: sph_gas_sound_speed. */
+static inline double signal_speed(const struct sph_state *st, const hearth_sph_def *o, int i, double bub, double T) {
     const double c0 = st->c0[i], rho0 = st->rho0[i], rf = st->rhof[i];
+    if (o->gas_law && o->gas_pressure > 0) return fmax(c0, sph_gas_sound_speed(o, bub, rho0, T, st->water_per_gas));
     if (o->gas_law) return bub > 0 && o->gamma * rf < rho0 ? c0 * sqrt(rho0 / (o->gamma * rf)) : c0;
     if (!(rf < rho0)) return c0; /* Tait against the rest density (NaN: no reference yet) */
     const double r = st->rho[i] / rf, r6 = o->gamma == 7 ? (r * r) * (r * r) * (r * r) : pow(r, o->gamma - 1);
@@ -803,7 +784,7 @@ static void phase_drift(hearth_scene *s, double dt, step_report *rep) {
         const double sp = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
         ke += 0.5 * m[i] * sp * sp;
         if (sp > vmax) vmax = sp, fastest = i;
-        const double ci = signal_speed(st, o, i, s->mats.slot[c.mat[i]].core[CP_BUBBLE]);
+        const double ci = signal_speed(st, o, i, s->mats.slot[c.mat[i]].core[CP_BUBBLE], T ? T[i] : NAN);
         if (ci > cmax) cmax = ci;
         /* particle_constants keeps 0 for a wave speed that is NaN, inf or <= 0: the guard names the plugin */
         if (!(st->c0[i] > 0) && rep->particle < 0) rep->kind = FAIL_WAVE, rep->particle = i;

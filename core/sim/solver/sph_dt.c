@@ -5,7 +5,8 @@
  * Before the first step the sound speed comes from the materials'
  * wave_speed; after it, from the step's report (s->c_max: c0, or Tait's
  * sound speed at the particle's density where eq. 3.52 lowered the density
- * it is taken against; sph.c's signal_speed says why). h is the raw
+ * it is taken against, or a bubble's gas's own with sph.gas_pressure:
+ * sph_gas.c sph_gas_sound_speed; sph.c's signal_speed says why). h is the raw
  * particles' (h_factor V0^(1/dim)): a bubble grown by sph.gas_law has a
  * larger h, so hmin stays on the safe side. */
 #include <math.h>
@@ -22,6 +23,7 @@ double sph_stable_dt(const hearth_scene *s) {
     double dt = INFINITY, pscratch[SCENE_MAX_PARAMS];
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     double hmin = INFINITY, numax = 0, rhomin = INFINITY;
+    const double w = s->step == 0 ? sph_dough_water_share(s) : 0; /* sph.dough_water's share, for the first step */
     for (int i = 0; i < ps->n; i++) {
         const int m = pcoli(ps, PC_MAT)[i];
         const material_slot *ms = &s->mats.slot[m];
@@ -39,6 +41,9 @@ double sph_stable_dt(const hearth_scene *s) {
             const double ci = ms->m->wave_speed(p, ms->m->state_size > 0 ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
             plugin_call_leave();
             if (ci > c) c = ci;
+            /* a bubble whose stiffness is its gas's (sph.gas_pressure) outruns the raw dough's waves */
+            const double cg = T ? sph_gas_sound_speed(o, ms->core[CP_BUBBLE], p[ms->density_index], T[i], w) : 0;
+            if (cg > c) c = cg;
         }
     }
     if (!isfinite(hmin)) hmin = s->def.dx;

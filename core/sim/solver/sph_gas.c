@@ -9,8 +9,10 @@
  * sph_pressure_gas_law in place of eq. 3.51-3.52 when the scene asks for it;
  * docs/validation.md "SPH bread roll (#18)" says why. */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
+#include "error.h"
 #include "material.h"
 #include "params.h"
 #include "scene.h"
@@ -45,14 +47,56 @@ static double vapour_pressure(const hearth_sph_def *o, double T) {
 /* The outside pressure P_a: sph.gas_pressure, or an oven's 101325 Pa. */
 static double outside_pressure(const hearth_sph_def *o) { return o->gas_pressure > 0 ? o->gas_pressure : 101325.0; }
 
-double sph_bubble_volume(const hearth_sph_def *o, double vb0, double T) {
+/* CO2's Henry solubility in water, H^cp (mol / (m^3 Pa)) at T (degC):
+ * 3.3e-4 at 298.15 K with d ln H / d(1/T) = 2400 K (Sander 2015, Atmos. Chem.
+ * Phys. 15, 4399-4981, Table 6, carbon dioxide). Pure water's: a dough's
+ * salt and sugar lower it by some percent, which its water fraction absorbs. */
+static double henry_co2(double T) { return 3.3e-4 * exp(2400.0 * (1 / (T + KELVIN) - 1 / 298.15)); }
+
+double sph_bubble_volume_dissolved(const hearth_sph_def *o, double vb0, double T, double w) {
     double V = (T + KELVIN) / (o->bubble_T0 + KELVIN); /* eq. 3.50, Kelvin */
-    if (o->bubble_vapour > 0) {                         /* eq. 2.42-2.43 */
-        const double pa = outside_pressure(o), pv0 = vapour_pressure(o, o->bubble_T0), pv = vapour_pressure(o, T);
+    const double pa = outside_pressure(o), pv0 = vapour_pressure(o, o->bubble_T0), pv = vapour_pressure(o, T);
+    if (o->bubble_vapour > 0) /* eq. 2.42-2.43 */
         V = pv < pa && pv0 < pa ? V * (pa - pv0) / (pa - pv) : HUGE_VAL;
+    /* sph.dough_water, thesis eq. 2.44 (Fan et al.'s CO2 shared between the
+     * cell's water by Henry's law and its gas): the CO2 a bubble of raw gas
+     * volume V0 holds at T0 under P_c0 = P_a - P_v(T0) and the CO2 dissolved in
+     * its w V0 of water, n = P_c0 V0 (1 / (R T0) + H(T0) w), keeps its moles;
+     * at T the gas stands at P_c = P_a - P_v(T) with H(T) P_c w V0 dissolved, so
+     *   V_b / V0 = (T / T0)(P_c0 / P_c)(1 + H(T0) R T0 w) - H(T) R T w.
+     * CO2 is less soluble hot (H falls 4x from 26 to 90 degC), so it leaves
+     * the water for the bubbles as the dough heats. */
+    if (w > 0 && V < HUGE_VAL) {
+        const double T0k = o->bubble_T0 + KELVIN, Tk = T + KELVIN;
+        V = V * (1 + henry_co2(o->bubble_T0) * R_GAS * T0k * w) - henry_co2(T) * R_GAS * Tk * w;
     }
     if (!(V < o->bubble_vmax)) V = o->bubble_vmax;
     return vb0 * V;
+}
+
+double sph_bubble_volume(const hearth_sph_def *o, double vb0, double T) { return sph_bubble_volume_dissolved(o, vb0, T, 0); }
+
+/* The water each bubble draws its dissolved CO2 from. The thesis's review of
+ * Fan et al. takes the CO2's concentration uniform through the dough, so the
+ * water is shared evenly: every particle (a bubble particle holds dough too)
+ * holds dough_water of its mass as water (of density 1000 kg/m^3), and each
+ * bubble draws on that water in proportion to its raw gas volume bubble x V0.
+ * Fixed particles are walls, not dough. A sum over the particles in their
+ * order, so any thread count reads it alike. */
+double sph_dough_water_share(const hearth_scene *s) {
+    const hearth_sph_def *o = &s->def.sph;
+    if (!(o->gas_law && o->dough_water > 0)) return 0;
+    const particles *ps = &s->ps;
+    const int *mat = pcoli(ps, PC_MAT), *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
+    const double *m = pcold(ps, PC_MASS), *V0 = pcold(ps, PC_VOL0);
+    double water = 0, gas = 0;
+    for (int i = 0; i < ps->n; i++) {
+        if (flags && (flags[i] & PF_FIXED)) continue;
+        const double bub = s->mats.slot[mat[i]].core[CP_BUBBLE];
+        water += o->dough_water * m[i] / 1000.0;
+        if (bub > 0) gas += bub * V0[i];
+    }
+    return gas > 0 ? water / gas : 0;
 }
 
 /* The density a particle's own volume gives it, m / (V0 J) with J = det F,
@@ -160,18 +204,60 @@ static void foam_cap(hearth_scene *s, const sph_cols *c) {
         if (cap[i] < st->prs[i]) st->prs[i] = cap[i];
 }
 
-/* sph.scaled_gas: the bubble's stiffness B (P_a - P_v(T)) / (P_a - P_v(T0)). An ideal gas held at
- * volume V has the gauge pressure (P_a - P_v)(V_b / V - 1) (eq. 2.42-2.43 with eq. 3.49-3.50: the CO2
- * keeps its moles, the vapour its partial pressure), so with this stiffness the bubble pushes its gas's
- * pressure times B / (P_a - P_v(T0)) at every temperature: the animation's stiffer gas, one factor
- * throughout. With B alone the factor is B / (P_a - P_v(T)) and grows without bound toward the
- * dough's boiling point, as V_b does: on the bread roll with foam_pressure and bubble_vent the crust's
- * last closed cells pushed up to 4.7x their gas just before they opened and burst its top at 2 s;
- * with it the roll stays whole and on its tray to 2 s but rises 1.21x (docs/validation.md "Both
- * switches on"). */
-static double scaled_gas_modulus(const hearth_sph_def *o, double B, double T) {
-    const double pa = outside_pressure(o), ref = pa - vapour_pressure(o, o->bubble_T0);
-    return ref > 0 ? B * fmax(0.0, pa - vapour_pressure(o, T)) / ref : B;
+/* A bubble's stiffness under the gas law. With sph.gas_pressure = P_a it is
+ * its gas's own, whatever dough holds it: the CO2 keeps its moles and the
+ * vapour its partial pressure P_v = a_w P_sat(T) (eq. 2.42-2.43 with the
+ * ideal gas of eq. 3.49-3.50), so at volume V its gauge pressure is exactly
+ * (P_a - P_v)(V_b / V - 1), an isothermal bulk modulus P_a - P_v that falls
+ * to 0 at the dough's boiling point. It used to be capped by the dough's
+ * Tait B where that was softer, which on the bread roll is everywhere that
+ * matters: the raw dough's B is 2.9 kPa, a 34th of its gas's 97.6 kPa, so
+ * the raw crumb's bubbles pushed 3% of their gas and the roll rose only once
+ * mu_e set B past the gas (4-5e5 Pa hot), when each bubble pushed up to 4.5x
+ * its gas near the cap (docs/validation.md "The bubble's own gas"). Without
+ * gas_pressure it is the dough's B (the roll's preset). */
+double sph_gas_modulus(const hearth_sph_def *o, double B, double T) {
+    return o->gas_pressure > 0 ? fmax(0.0, o->gas_pressure - vapour_pressure(o, T)) : B;
+}
+
+/* The sound speed of a bubble whose stiffness is its gas's: p = K (rho / rho_b
+ * - 1) gives c^2 = dp/drho = K / rho_b, with rho_b = rho0 / V_b(T). On the raw
+ * roll that is 9.4 m/s against the dough's c0 of 4.3 (hot: 55), so the CFL limit
+ * (sph_dt.c, and sph.c's signal_speed from the first step) must count it or
+ * the bubbles' waves cross more than a spacing a step. 0 where the gas's
+ * stiffness is not the bubble's (no gas_pressure, no bubble, no temperature). */
+double sph_gas_sound_speed(const hearth_sph_def *o, double bub, double rho0, double T, double w) {
+    if (!(o->gas_law && o->gas_pressure > 0 && bub > 0 && rho0 > 0) || isnan(T)) return 0;
+    return sqrt(sph_gas_modulus(o, 0, T) * sph_bubble_volume_dissolved(o, bub, T, w) / rho0);
+}
+
+/* The options that act through sph.gas_law's pressure: each refused without
+ * it, saying what it does there (the messages word for word as when each had
+ * its own check in sph.c: scripts and users grep them). */
+hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
+    char gp[48], dw[48];
+    snprintf(gp, sizeof gp, "%g Pa", o->gas_pressure);
+    snprintf(dw, sizeof dw, "%g", o->dough_water);
+    const char *both = "set both or neither";
+    const struct {
+        const char *name, *val, *why, *fix;
+        int on;
+    } needs[] = {
+        {"continuity_density", "true", "it is the gas law's pressure that reads the particle's own volume", both,
+         o->continuity_density},
+        {"renormalised_density", "true", "it is the gas law's pressure that reads it", both, o->renormalised_density},
+        {"bubble_vent", "true", "it opens the gas law's bubbles", both, o->bubble_vent},
+        {"foam_pressure", "true", "it caps the dough's pressure by the gas law's bubbles", both, o->foam_pressure},
+        {"gas_pressure", gp, "it is the gas law's bubble that holds the gas",
+         "set sph.gas_law = true or sph.gas_pressure = 0", o->gas_pressure > 0},
+        {"dough_water", dw, "its CO2 comes out into the gas law's bubbles",
+         "set sph.gas_law = true or sph.dough_water = 0", o->dough_water > 0},
+    };
+    for (size_t k = 0; k < sizeof needs / sizeof needs[0]; k++)
+        if (needs[k].on && !o->gas_law)
+            return err_set(err, HEARTH_ERR_PARAM, "scene: sph.%s = %s needs sph.gas_law = true (%s); %s", needs[k].name,
+                           needs[k].val, needs[k].why, needs[k].fix);
+    return HEARTH_OK;
 }
 
 /* Pressure with sph.gas_law: the dough's Tait (eq. 3.17) against its rest
@@ -187,17 +273,10 @@ static double scaled_gas_modulus(const hearth_sph_def *o, double B, double T) {
  * Tait (gamma 7) against rho_b instead was tried and rejected: a bubble the
  * dough holds at its raw volume sees B (V_b^7 - 1), 16000 B at V_b = 4, and
  * blew the crust off the roll.
- * With sph.gas_pressure = P_a the bubble's stiffness is its gas's own: the
- * CO2 keeps its moles and the vapour its partial pressure P_v = a_w
- * P_sat(T), so at volume V the gauge pressure is exactly (P_a - P_v)(V_b / V
- * - 1) = (P_a - P_v)(rho / rho_b - 1) (eq. 2.42 with the ideal gas of eq.
- * 3.49-3.50), an isothermal bulk modulus of P_a - P_v, which falls to 0 as
- * the dough nears its boiling point. The dough's B, which carries the set
- * dough's mu_e (4-8e5 Pa hot in the bread roll), still caps it where it is
- * softer (a cool raw dough: the time step is the dough's). Measured on the
- * roll (docs/validation.md "The roll's skin, renormalised"): with the
- * animation-scaled dough the gas alone cannot stretch the set crumb, which
- * then rises 1.11x by 1.5 s, so the roll's preset leaves it off. */
+ * With sph.gas_pressure = P_a the bubble's stiffness is its gas's own,
+ * P_a - P_v(T) (sph_gas_modulus), at any dough stiffness: p = (P_a -
+ * P_v)(rho / rho_b - 1) is the bubble's ideal gas exactly (eq. 2.42-2.43,
+ * 3.49-3.50). */
 void sph_pressure_gas_law(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
@@ -205,20 +284,16 @@ void sph_pressure_gas_law(hearth_scene *s) {
     const int n = c.n, *mat = c.mat;
     const double *T = c.T, *F = c.F, *V0 = pcold(&s->ps, PC_VOL0);
     if (o->renormalised_density) renormalise(s, &c, st->vr); /* vr: free once the sum stands (sort_and_list) */
+    const double w = st->water_per_gas = sph_dough_water_share(s);
     for (int i = 0; i < n; i++) {
         const double rho0 = st->rho0[i], bub = s->mats.slot[mat[i]].core[CP_BUBBLE];
-        const double rr = bub > 0 && T ? rho0 / sph_bubble_volume(o, bub, T[i]) : rho0; /* eq. 3.49 */
+        const double rr = bub > 0 && T ? rho0 / sph_bubble_volume_dissolved(o, bub, T[i], w) : rho0; /* eq. 3.49 */
         st->rhof[i] = rr;
         const double rho = o->continuity_density     ? volume_density(F + 9 * i, c.m[i], V0[i], st->rho[i])
                            : o->renormalised_density ? st->vr[i]
                                                      : st->rho[i];
         const double tait = st->B[i] * (pow(rho / rho0, o->gamma) - 1); /* eq. 3.17 */
-        double Bg = st->B[i];
-        if (o->gas_pressure > 0 && bub > 0 && T) { /* the gas's own stiffness, P_a - P_v (gas_modulus) */
-            const double K = fmax(0.0, o->gas_pressure - vapour_pressure(o, T[i]));
-            if (K < Bg) Bg = K;
-        }
-        if (o->scaled_gas && bub > 0 && T) Bg = fmin(Bg, scaled_gas_modulus(o, st->B[i], T[i]));
+        const double Bg = bub > 0 && T ? sph_gas_modulus(o, st->B[i], T[i]) : st->B[i];
         double gas = Bg * (rho / rr - 1);
         /* sph.bubble_vent: sph_bubble_volume stops V_b at bubble_vmax because there the crumb's cells
          * open and vent (the vapour law diverges at the boiling point); an open cell's gas escapes, so it

@@ -42,6 +42,7 @@ struct sph_state {
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
     double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
     double amax;    /* largest |a| of the last step, for the force limit */
+    double water_per_gas; /* sph.dough_water: the particles' water per raw gas volume this step (sph_gas.c) */
     double *pairc;  /* each list entry's pair values, dim + 1 doubles (sph_pairs_prepare) */
     size_t pairc_cap;
     int *pairm;     /* and for each entry k of i with j > i, the slot of j's list holding i */
@@ -171,4 +172,21 @@ double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin);
 /// With sph.gas_law: st->rhof (each particle's rest density: rho0, a bubble's
 /// rho0 / V_b(T)) and st->prs against it; st->Tprev <- T.
 void sph_pressure_gas_law(hearth_scene *s);
+/// A bubble's stiffness (Pa) at T (degC): its gas's own P_a - P_v(T) with
+/// sph.gas_pressure = P_a, else the dough's Tait B.
+double sph_gas_modulus(const hearth_sph_def *o, double B, double T);
+/// The sound speed (m/s) of a bubble (raw gas volume bub) of rest density
+/// rho0 whose stiffness is its gas's, sqrt((P_a - P_v) V_b(T) / rho0); 0
+/// where it is not (no sph.gas_pressure, not a bubble, T NaN).
+double sph_gas_sound_speed(const hearth_sph_def *o, double bub, double rho0, double T, double w);
+/// sph.dough_water: the water the particles hold (dough_water x their mass
+/// over water's density) per unit of the bubbles' raw gas volume (sum of
+/// bubble x V0); 0 without dough_water or bubbles.
+double sph_dough_water_share(const hearth_scene *s);
+/// With sph.dough_water: a bubble's V_b (raw gas volume vb0) at T whose gas
+/// shares its moles with CO2 dissolved in w m^3 of water per m^3 of raw gas
+/// (Henry's law); w = 0 is sph_bubble_volume.
+double sph_bubble_volume_dissolved(const hearth_sph_def *o, double vb0, double T, double w);
+/// The gas-law options' refusals without sph.gas_law (sph_check_def).
+hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err);
 #endif
