@@ -8,6 +8,21 @@
 #include "field_clock.h"
 #include "mpm_fixture.h"
 
+/* The block both scenes bake, 0.3 m square at 20 degC, in `law` with parameters nm = nv (n of them). */
+static hearth_scene *add_block(hearth_scene *s, const char *law, const char *const *nm, const double *nv, int n) {
+    if (!s) return NULL;
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, law, nm, nv, n, &err);
+    if (m < 0) printf("  material: %s\n", err.msg);
+    CHECK(m >= 0);
+    hearth_shape *box = hearth_shape_box((const double[3]){0.5, 0.25, 0}, (const double[3]){0.15, 0.15, 0});
+    hearth_body_def b = hearth_default_body_def();
+    b.shape = box, b.material = m, b.temperature = 20;
+    CHECK(hearth_scene_add_body(s, &b, &err) >= 0);
+    hearth_shape_free(box);
+    return s;
+}
+
 /* 2D, dx 1/32 m; an elastic block 0.3 m square, rho c = 2e4 J/(m^3 K), kappa 30 W/(m K): conduction's limit
  * rho c dx^2 / (4 kappa) = 0.163 s, the oven's (beta 25) 12.5 s; steps of dt_max 1e-4 s. CO2 from eq. 11. */
 static hearth_scene *oven_block(int field_steps) {
@@ -17,21 +32,10 @@ static hearth_scene *oven_block(int field_steps) {
     d.oven_temperature = 150;
     d.oven_beta = 25;
     d.field_steps = field_steps;
-    hearth_scene *s = fx_scene_def(&d);
-    if (!s) return NULL;
     const char *nm[] = {"E", "density", "specific_heat", "conductivity", "gas_rate", "reaction_temperature",
                         "reaction_width", "expansion", "reference_temperature"};
     const double nv[] = {1e5, 1000, 20, 30, 2.5e-5, 40, 20, 0.1, 20};
-    hearth_error err;
-    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 9, &err);
-    if (m < 0) printf("  material: %s\n", err.msg);
-    CHECK(m >= 0);
-    hearth_shape *box = hearth_shape_box((const double[3]){0.5, 0.25, 0}, (const double[3]){0.15, 0.15, 0});
-    hearth_body_def b = hearth_default_body_def();
-    b.shape = box, b.material = m, b.temperature = 20;
-    CHECK(hearth_scene_add_body(s, &b, &err) >= 0);
-    hearth_shape_free(box);
-    return s;
+    return add_block(fx_scene_def(&d), "elastic", nm, nv, 9);
 }
 
 /* Steps until the k-th field update has closed its cycle (at most max steps); returns the steps taken. */
@@ -163,21 +167,10 @@ static hearth_scene *dough_block(void) {
     d.dt_max = 1e-4;
     d.oven_temperature = 150;
     d.oven_beta = 25;
-    hearth_scene *s = fx_scene_def(&d);
-    if (!s) return NULL;
     const char *nm[] = {"density", "specific_heat", "conductivity", "gas_rate", "reaction_temperature",
                         "reaction_width", "expansion", "reference_temperature"};
     const double nv[] = {1000, 20, 30, 2.5e-5, 40, 20, 0.1, 20};
-    hearth_error err;
-    const int m = hearth_scene_add_material(s, "cam_clay_dough", nm, nv, 8, &err);
-    if (m < 0) printf("  material: %s\n", err.msg);
-    CHECK(m >= 0);
-    hearth_shape *box = hearth_shape_box((const double[3]){0.5, 0.25, 0}, (const double[3]){0.15, 0.15, 0});
-    hearth_body_def b = hearth_default_body_def();
-    b.shape = box, b.material = m, b.temperature = 20;
-    CHECK(hearth_scene_add_body(s, &b, &err) >= 0);
-    hearth_shape_free(box);
-    return s;
+    return add_block(fx_scene_def(&d), "cam_clay_dough", nm, nv, 8);
 }
 
 /* The memos are read between the fields' updates, and give the bits of the exp they stand for: a dough
