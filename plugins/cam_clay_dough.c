@@ -770,18 +770,24 @@ static int stress(hearth_point *pt, double tau[9]) {
 
 /* Small-strain P-wave speed sqrt((lambda + 2 mu)/rho): the Hencky law's
  * tangent at rest; plastic flow only softens it. */
+static inline double p_wave_speed(double E, double nu, double rho) {
+    /* lambda + 2 mu = E (1 - nu) / ((1 + nu)(1 - 2 nu)): one division, per particle per step */
+    return sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * rho));
+}
+
 static double wave_speed(const double *p, const double *state) {
     (void)state;
-    const double nu = p[P_NU]; /* lambda + 2 mu = E (1 - nu) / ((1 + nu)(1 - 2 nu)): one division, per particle per step */
-    return sqrt(p[P_E] * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * p[P_DENSITY]));
+    return p_wave_speed(p[P_E], p[P_NU], p[P_DENSITY]);
 }
 
 /* K = lambda + 2/3 mu = E / (3 (1 - 2 nu)): the Hencky law's bulk modulus,
  * with which the core makes eq. 10's thermal term a thermal strain
  * (<hearth/material.h>, bulk_modulus). */
+static inline double p_bulk_modulus(double E, double nu) { return E / (3 * (1 - 2 * nu)); }
+
 static double bulk_modulus(const double *p, const double *state) {
     (void)state;
-    return p[P_E] / (3 * (1 - 2 * p[P_NU]));
+    return p_bulk_modulus(p[P_E], p[P_NU]);
 }
 
 static double plastic_J(const double *p, const double *state) {

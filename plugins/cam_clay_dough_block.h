@@ -190,8 +190,9 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
 /* ---- the batched scalars (<hearth/material.h> rule 9) ------------------------
  * What the core asks per point around the stress (J^P and K before it; the
  * wave speed, J^P and the damage after), for the block in one call: each
- * column the one-point function's arithmetic in its order, so the same bits
- * (`hearth plugin check`). The wave speed's sqrt and divisions vectorise
+ * column through the one-point function's own arithmetic (p_wave_speed,
+ * p_bulk_modulus), so the same bits by construction (`hearth plugin check`
+ * compares them). The wave speed's sqrt and divisions vectorise
  * (-fno-math-errno, plugins/meson.build); per point one-at-a-time they were
  * four indirect calls and the parameters patched in twice (the door,
  * core/sim/material_batch.c). */
@@ -203,15 +204,9 @@ static void scalars_block(const hearth_block *b, double *const out[HEARTH_SCALAR
     const double *Ec = b->p_col[P_E], *Nc = b->p_col[P_NU], *Rc = b->p_col[P_DENSITY];
     const double E0 = b->p[P_E], N0 = b->p[P_NU], R0 = b->p[P_DENSITY];
     if (w)
-        for (int j = 0; j < n; j++) { /* wave_speed */
-            const double E = Ec ? Ec[j] : E0, nu = Nc ? Nc[j] : N0, rho = Rc ? Rc[j] : R0;
-            w[j] = sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * rho));
-        }
+        for (int j = 0; j < n; j++) w[j] = p_wave_speed(Ec ? Ec[j] : E0, Nc ? Nc[j] : N0, Rc ? Rc[j] : R0);
     if (k)
-        for (int j = 0; j < n; j++) { /* bulk_modulus */
-            const double E = Ec ? Ec[j] : E0, nu = Nc ? Nc[j] : N0;
-            k[j] = E / (3 * (1 - 2 * nu));
-        }
+        for (int j = 0; j < n; j++) k[j] = p_bulk_modulus(Ec ? Ec[j] : E0, Nc ? Nc[j] : N0);
     if (jp)
         for (int j = 0; j < n; j++) jp[j] = st ? st[(size_t)j * ss + S_JP] : 1.0; /* plastic_J */
     if (d)
