@@ -153,7 +153,7 @@ static int team_size(void) {
 void team_wait_barrier(team_wait *tw) {
     const int T = team_size();
     if (T <= 1) return;
-    if (team_wait_is_omp(tw)) {
+    if (!tw || team_wait_is_omp(tw)) {
 #pragma omp barrier
         return;
     }

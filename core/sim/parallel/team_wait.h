@@ -60,7 +60,8 @@ void team_wait_init_spin(team_wait *tw, int max_us);
 static inline int team_wait_is_omp(const team_wait *tw) { return tw->max_ns < 0; }
 
 /// A barrier over the enclosing team: no thread returns before every thread
-/// has called it, and every write before it is visible after it.
+/// has called it, and every write before it is visible after it. tw NULL:
+/// the OpenMP barrier (for callers outside the MPM step, and tests).
 void team_wait_barrier(team_wait *tw);
 
 /// Adds k finished items to c (release: the work's writes go with them).

@@ -286,15 +286,6 @@ void particles_permute_within(particles *ps, const int *order, int W, void *scra
     }
 }
 
-/* A barrier of the team: the caller's spin-then-sleep one, or OpenMP's. */
-static void team_barrier(team_wait *tw) {
-    if (tw) {
-        team_wait_barrier(tw);
-    } else {
-#pragma omp barrier
-    }
-}
-
 void particles_permute_team(particles *ps, const int *order, int W, void *scratch, size_t room, team_wait *tw) {
     int T = 1, me = 0;
 #ifdef _OPENMP
@@ -302,7 +293,7 @@ void particles_permute_team(particles *ps, const int *order, int W, void *scratc
     me = omp_get_thread_num();
 #endif
     const size_t bits = sizeof(uint64_t) * (((size_t)ps->n + 63) / 64), share = room / (size_t)T & ~(size_t)7;
-    team_barrier(tw);
+    team_wait_barrier(tw);
     /* every thread is past its reads of edits and order's filling; one of them counts the edit */
 #pragma omp single nowait
     ps->edits++;
@@ -316,7 +307,7 @@ void particles_permute_team(particles *ps, const int *order, int W, void *scratc
     }
 #pragma omp for schedule(dynamic, 1) nowait
     for (int q = 0; q < npar; q++) permute_column(ps, par[q], order, W, (char *)scratch + share * (size_t)me, share);
-    team_barrier(tw);
+    team_wait_barrier(tw);
 }
 
 /* One column's places [lo, hi) in place through a ring of W + 1 records, as
@@ -376,7 +367,7 @@ int particles_permute_team_range(particles *ps, const int *order, int W, void *s
         memcpy(mine + off + (size_t)W * B, col + (size_t)hi * B, (size_t)(zh - hi) * B);
         off += 2 * (size_t)W * B;
     }
-    team_barrier(tw);
+    team_wait_barrier(tw);
     /* every thread is past its reads of edits and order's filling, and every zone is saved */
 #pragma omp single nowait
     ps->edits++;
@@ -395,7 +386,7 @@ int particles_permute_team_range(particles *ps, const int *order, int W, void *s
         }
         off += 2 * (size_t)W * B;
     }
-    team_barrier(tw);
+    team_wait_barrier(tw);
     return 1;
 }
 
