@@ -18,21 +18,24 @@
 # wait columns do not (--chrt runs the benches under `chrt -f 10`, a
 # quiet-machine proxy that preempts other jobs; say so when quoting it).
 #
-#   scripts/bench/phase_clock.sh [--pairs N] [--steps S] [--chrt] [--json DIR] [DIM:CELLS ...]
+#   scripts/bench/phase_clock.sh [--pairs N] [--steps S] [--chrt] [--json DIR] [--hearth PATH] [DIM:CELLS ...]
 #
-# Default sizes 2:128 3:32, 5 pairs, steps sized to about a second a run.
+# Default sizes 2:128 3:32, 5 pairs, steps sized to about a second a run
+# (threads.sh's). --hearth: another measuring build's hearth (a before and
+# after; the plugins are build/phase's).
 # The bench's OMP_WAIT_POLICY=passive is hearth's own (app/main.c);
 # HEARTH_TEAM_SPIN and GOMP_SPINCOUNT pass through.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-pairs=5 steps=0 chrt="" json="" sizes=()
+pairs=5 steps=0 chrt="" json="" hearth="" sizes=()
 while [ $# -gt 0 ]; do
     case $1 in
     --pairs) pairs=$2; shift ;;
     --steps) steps=$2; shift ;;
     --chrt) chrt="chrt -f 10" ;;
     --json) json=$2; shift ;;
-    -h | --help) sed -n 2,24p "$0"; exit 0 ;;
+    --hearth) hearth=$2; shift ;;
+    -h | --help) sed -n 2,27p "$0"; exit 0 ;;
     [23]:[0-9]*) sizes+=("$1") ;;
     *) echo "phase_clock.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
@@ -47,7 +50,9 @@ ninja -C "$b" app/hearth plugins/hearth_elastic.so >/dev/null
 export HEARTH_PLUGIN_PATH="$b/plugins"
 dir=${json:-$(mktemp -d)}
 mkdir -p "$dir"
-export PC_HEARTH=$b/app/hearth PC_PAIRS=$pairs PC_STEPS=$steps PC_CHRT=$chrt PC_DIR=$dir PC_SIZES="${sizes[*]}"
+[ -n "$hearth" ] || hearth=$b/app/hearth
+[ -x "$hearth" ] || { echo "phase_clock.sh: $hearth is not an executable" >&2; exit 2; }
+export PC_HEARTH=$hearth PC_PAIRS=$pairs PC_STEPS=$steps PC_CHRT=$chrt PC_DIR=$dir PC_SIZES="${sizes[*]}"
 exec python3 - <<'PY'
 import json, os, statistics, subprocess, sys
 

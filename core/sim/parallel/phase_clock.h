@@ -19,13 +19,13 @@ enum {
     PH_SORT_PRE, /* the sort's serial part before any region (keys, tables) */
     PH_FORK,     /* from the master's fork mark to this thread's first mark in the region */
     PH_COUNT,    /* the sort's count (2 threads: per chunk, with its wait) */
-    PH_LISTS,    /* the block lists, marks and grid activation */
+    PH_LISTS,    /* the block lists, marks and grid activation (3D: with the colour lists after the sort's region) */
     PH_ORDER,    /* keys out of order: the places and the order (2 threads; 1 thread's are in PH_COUNT) */
     PH_PERMUTE,  /* the particles' permutation (keys out of order) */
     PH_P2G,      /* P2G (2 threads: the tile store, with its wait) */
     PH_GRID,     /* the grid update (2 threads: with the gather, and its wait) */
     PH_G2P,      /* G2P */
-    PH_JOIN,     /* the master: from its last mark in the region to after the region (the join) */
+    PH_JOIN,     /* the master: from its last mark in a region to after the region (the join; 3D: the sort's and the step's) */
     PH_REDUCE,   /* the master: the step report's reduction and the rest of mpm_step */
     PH_N
 };

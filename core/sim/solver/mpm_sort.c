@@ -535,20 +535,27 @@ static hearth_status sort_rest(hearth_scene *s, int Tc, mpm_sort_team *t, hearth
         return st;
     }
     /* the usual parallel sort: one region, the permutation in it */
+    PHASE_FORK();
 #pragma omp parallel num_threads(Tc)
     {
+        PHASE_MARK(PH_FORK);
         int kof[MPM_SORT_CHUNKS_MAX + 1];
         const int W = mpm_sort_team_run(s, t, kof, NULL);
         if (W >= 0) particles_permute_team(ps, m->order, W, m->keys, sizeof(int) * (size_t)m->scratch_cap, &m->team);
+        PHASE_MARK(PH_PERMUTE);
     }
+    PHASE_MARK(PH_JOIN);
     if (t->st) return t->st;
     sort_colours(s);
-    return sort_end(s, t->activate, err);
+    st = sort_end(s, t->activate, err);
+    PHASE_MARK(PH_LISTS);
+    return st;
 }
 
 hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     int Tc;
     hearth_status st = sort_begin(s, &Tc, err);
+    PHASE_MARK(PH_SORT_PRE);
     if (st) return st;
     mpm_sort_team t;
     team_setup(s, Tc, &t, err);

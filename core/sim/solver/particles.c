@@ -141,58 +141,100 @@ hearth_status particles_set_state_stride(particles *ps, int stride, hearth_error
  * region costs more than it saves (scene.h's SCENE_PARALLEL_MIN). */
 #define PERMUTE_PARALLEL_MIN 2048
 
-/* The first place in [j, hi) whose record moves (order[j] != j), or hi.
- * After a step most places keep their particle (the 2D 128-cell bench: 1-3%
- * of places move when any do, in a few runs), so the permutation's passes
- * skip the rest eight places at a time, in a loop the compiler vectorises. */
-static inline int next_moved(const int *order, int j, const int hi) {
-    for (; j + 8 <= hi; j += 8) {
-        int d = 0;
-        for (int k = 0; k < 8; k++) d |= order[j + k] ^ (j + k);
-        if (d) break;
+/* One column in place through a ring of R records, when no particle moves
+ * more than W places (R > W): place j is gathered into the ring, and place
+ * j - W written back from it, once every place that could read the old
+ * record there (within W of it) has been gathered. Records move whole and in
+ * order: for C and F one pass of 72-byte records instead of nine strided
+ * passes (the sort of a flowing 2D scene: 406 instructions per particle-step
+ * for the component form, callgrind). B is the record's bytes, a
+ * compile-time constant in the common widths so the copies inline. */
+static inline __attribute__((always_inline)) void permute_window(char *col, const int *order, int n, int W, char *ring,
+                                                                   int R, const size_t B) {
+    int slot = 0, back = 0; /* ring slots of place j and of place j - W */
+    for (int j = 0; j < n; j++) {
+        memcpy(ring + (size_t)slot * B, col + (size_t)order[j] * B, B);
+        if (++slot == R) slot = 0;
+        if (j >= W) {
+            memcpy(col + (size_t)(j - W) * B, ring + (size_t)back * B, B);
+            if (++back == R) back = 0;
+        }
     }
-    while (j < hi && order[j] == j) j++;
-    return j;
+    for (int t = n - W > 0 ? n - W : 0; t < n; t++) {
+        memcpy(col + (size_t)t * B, ring + (size_t)back * B, B);
+        if (++back == R) back = 0;
+    }
 }
 
-/* One column's places [lo, hi) in place through a ring of W + 1 records,
- * when no particle moves more than W places: each moved place j (order[j] !=
- * j) is gathered into the ring, and written back from it once every moved
- * place within W after it has been gathered (the only places that can read
- * its old record). A place that keeps its record is neither read nor
- * written: no other place reads it (order is a permutation), so it holds its
- * value throughout. Before, every place went through the ring: a step whose
- * sort moved 2% of the places copied every record of every column twice, a
- * memory-bound pass that two threads did not do faster than one (2D 128
- * cells: about 600 us a step at 1 thread and at 2, docs/performance.md "Two
- * threads, phase by phase"). qp holds the ring's places. A source outside
- * [lo, hi) (within W of it; never, when lo is 0 and hi n) comes from the
- * records saved before the team's barrier: zlo holds the old places [zl, lo),
- * zhi [hi, hi + W), since the threads that own them may have moved them by
- * now. Records move whole: for C and F one copy of 72 bytes instead of nine
- * strided ones (the sort of a flowing 2D scene: 406 instructions per
- * particle-step for the component form, callgrind). B is the record's bytes,
- * a compile-time constant in the common widths so the copies inline. */
-static inline __attribute__((always_inline)) void permute_range(char *col, const int *order, int lo, int hi, int W,
-                                                                  int zl, const char *zlo, const char *zhi, char *ring,
-                                                                  int *qp, const size_t B) {
-    const int R = W + 1;
-    int head = 0, nq = 0; /* the ring's oldest slot, and the places waiting in it */
-    for (int j = next_moved(order, lo, hi); j < hi; j = next_moved(order, j + 1, hi)) {
-        /* the places more than W before j: every place that could read them is gathered (at most W stay) */
-        for (; nq && qp[head] + W < j; nq--) {
-            memcpy(col + (size_t)qp[head] * B, ring + (size_t)head * B, B);
-            if (++head == R) head = 0;
+/* Places in [lo, hi) whose record moves (order[j] != j), in a loop the compiler vectorises. */
+static int moved_places(const int *order, const int lo, const int hi) {
+    int k = 0;
+    for (int j = lo; j < hi; j++) k += order[j] != j;
+    return k;
+}
+
+/* A team's range of places that moves under a quarter of them goes by
+ * permute_sparse (particles_permute_team_range): after a step of the 2D
+ * 128-cell bench 1-3% of the places move when any do, and the window copied
+ * every record of every column twice, a memory-bound pass that two threads
+ * did no faster than one (about 590 us a step at 1 thread and at 2;
+ * docs/performance.md "Two threads, phase by phase"). A flowing scene moves
+ * most places, where permute_sparse's branch per copy lost to the window's
+ * plain copies (flow_step.lua, 2D, one thread: the permutation 1.55 -> 2.28 ms
+ * a step, as the sole path).
+ * One thread keeps the window: there its full pass paid for itself in the
+ * P2G that follows (the permuting steps' P2G 2255 us after it, 2674 after
+ * permute_sparse, where two threads' took 1122 and 1094). */
+static int permute_is_sparse(const int *order, const int lo, const int hi) { return 4 * moved_places(order, lo, hi) < hi - lo; }
+
+/* Whether places [j, j + 8) all keep their records, vectorised. */
+static inline int kept8(const int *order, const int j) {
+    int d = 0;
+    for (int k = 0; k < 8; k++) d |= order[j + k] ^ (j + k);
+    return d == 0;
+}
+
+/* a ring slot moved on by k places */
+static inline int slot_add(int slot, const int k, const int R) {
+    slot += k;
+    if (slot >= R) slot -= R;
+    return slot < R ? slot : slot % R;
+}
+
+/* permute_range for a permutation that keeps most places: a place that keeps its record
+ * (order[j] == j) is neither gathered nor written back, since no other place
+ * reads it (order is a permutation) and so it holds its value throughout;
+ * eight such places on both sides of the window are passed at once. A
+ * place's ring slot is its distance from lo, mod R. */
+static inline __attribute__((always_inline)) void permute_sparse(char *col, const int *order, int lo, int hi, int W, int R,
+                                                                   int zl, const char *zlo, const char *zhi, char *ring,
+                                                                   const size_t B) {
+    int gs = 0, ws = 0; /* the ring slots of place j and of place j - W */
+    for (int j0 = lo; j0 < hi; j0 += 8) {
+        const int m = hi - j0 < 8 ? hi - j0 : 8;
+        /* eight kept places, with none to write back (all before lo) or eight kept ones there too */
+        if (m == 8 && kept8(order, j0) && (j0 + 8 - lo <= W || (j0 - W >= lo && kept8(order, j0 - W)))) {
+            gs = slot_add(gs, 8, R);
+            if (j0 - W >= lo) ws = slot_add(ws, 8, R);
+            continue;
         }
-        const int src = order[j], slot = head + nq < R ? head + nq : head + nq - R;
-        const char *from = src < lo ? zlo + (size_t)(src - zl) * B : src >= hi ? zhi + (size_t)(src - hi) * B : col + (size_t)src * B;
-        memcpy(ring + (size_t)slot * B, from, B);
-        qp[slot] = j;
-        nq++;
+        for (int j = j0; j < j0 + m; j++) {
+            const int src = order[j];
+            if (src != j) {
+                const char *from = src < lo ? zlo + (size_t)(src - zl) * B : src >= hi ? zhi + (size_t)(src - hi) * B : col + (size_t)src * B;
+                memcpy(ring + (size_t)gs * B, from, B);
+            }
+            if (++gs == R) gs = 0;
+            const int p = j - W;
+            if (p >= lo) {
+                if (order[p] != p) memcpy(col + (size_t)p * B, ring + (size_t)ws * B, B);
+                if (++ws == R) ws = 0;
+            }
+        }
     }
-    for (; nq; nq--) {
-        memcpy(col + (size_t)qp[head] * B, ring + (size_t)head * B, B);
-        if (++head == R) head = 0;
+    for (int p = hi - W > lo ? hi - W : lo; p < hi; p++) {
+        if (order[p] != p) memcpy(col + (size_t)p * B, ring + (size_t)ws * B, B);
+        if (++ws == R) ws = 0;
     }
 }
 
@@ -234,18 +276,16 @@ static void permute_column(particles *ps, int c, const int *order, int W, char *
     const size_t B = particles_col_bytes(ps, c);
     char *col = ps->col[c];
     const int n = ps->n;
-    const size_t per = B + sizeof(int); /* a ring slot: the record and its place */
-    const int R = room / per > (size_t)n ? n + 1 : (int)(room / per);
+    const int R = room / B > (size_t)n ? n + 1 : (int)(room / B);
     if (W < R) {
-        int *qp = (int *)(void *)(scratch + (size_t)(W + 1) * B); /* B is a multiple of 4 (ints and doubles) */
         switch (B) { /* the common widths as constants, so each copy is a few moves */
-        case 4: permute_range(col, order, 0, n, W, 0, NULL, NULL, scratch, qp, 4); break;
-        case 8: permute_range(col, order, 0, n, W, 0, NULL, NULL, scratch, qp, 8); break;
-        case 24: permute_range(col, order, 0, n, W, 0, NULL, NULL, scratch, qp, 24); break;
-        case 32: permute_range(col, order, 0, n, W, 0, NULL, NULL, scratch, qp, 32); break; /* a 2x2 store's C and F */
-        case 64: permute_range(col, order, 0, n, W, 0, NULL, NULL, scratch, qp, 64); break;
-        case 72: permute_range(col, order, 0, n, W, 0, NULL, NULL, scratch, qp, 72); break;
-        default: permute_range(col, order, 0, n, W, 0, NULL, NULL, scratch, qp, B); break;
+        case 4: permute_window(col, order, n, W, scratch, R, 4); break;
+        case 8: permute_window(col, order, n, W, scratch, R, 8); break;
+        case 24: permute_window(col, order, n, W, scratch, R, 24); break;
+        case 32: permute_window(col, order, n, W, scratch, R, 32); break; /* a 2x2 store's C and F */
+        case 64: permute_window(col, order, n, W, scratch, R, 64); break;
+        case 72: permute_window(col, order, n, W, scratch, R, 72); break;
+        default: permute_window(col, order, n, W, scratch, R, B); break;
         }
         return;
     }
@@ -342,6 +382,32 @@ void particles_permute_team(particles *ps, const int *order, int W, void *scratc
     team_wait_barrier(tw);
 }
 
+/* One column's places [lo, hi) in place through a ring of W + 1 records, as
+ * permute_window does the whole column; a source outside [lo, hi) (within W
+ * of it) comes from the records saved before the team's barrier: zlo holds
+ * the old places [zl, lo), zhi [hi, hi + W), since the threads that own them
+ * may have moved them by now. */
+static inline __attribute__((always_inline)) void permute_range(char *col, const int *order, int lo, int hi, int W,
+                                                                  int zl, const char *zlo, const char *zhi, char *ring,
+                                                                  const size_t B) {
+    const int R = W + 1;
+    int slot = 0, back = 0;
+    for (int j = lo; j < hi; j++) {
+        const int src = order[j];
+        const char *from = src < lo ? zlo + (size_t)(src - zl) * B : src >= hi ? zhi + (size_t)(src - hi) * B : col + (size_t)src * B;
+        memcpy(ring + (size_t)slot * B, from, B);
+        if (++slot == R) slot = 0;
+        if (j - lo >= W) {
+            memcpy(col + (size_t)(j - W) * B, ring + (size_t)back * B, B);
+            if (++back == R) back = 0;
+        }
+    }
+    for (int t = hi - W > lo ? hi - W : lo; t < hi; t++) {
+        memcpy(col + (size_t)t * B, ring + (size_t)back * B, B);
+        if (++back == R) back = 0;
+    }
+}
+
 int particles_permute_team_range(particles *ps, const int *order, int W, void *scratch, size_t room, int lo, int hi,
                                  team_wait *tw) {
     int T = 1, me = 0;
@@ -357,14 +423,13 @@ int particles_permute_team_range(particles *ps, const int *order, int W, void *s
         sum += B, wide = B > wide ? B : wide;
     }
     /* every thread decides alike (the same W, team, room and columns) */
-    const size_t share = room / (size_t)T & ~(size_t)7, need = 2 * sum * (size_t)W + (wide + sizeof(int)) * ((size_t)W + 1);
+    const size_t share = room / (size_t)T & ~(size_t)7, need = (2 * sum + wide) * (size_t)W + wide;
     if (W <= 0 || need > share) {
         particles_permute_team(ps, order, W, scratch, room, tw);
         return 0;
     }
     /* the old records within W outside this thread's places, every column's, before anyone moves any */
     char *mine = (char *)scratch + share * (size_t)me, *ring = mine + 2 * sum * (size_t)W;
-    int *qp = (int *)(void *)(ring + wide * ((size_t)W + 1)); /* the ring's places (widths are multiples of 4) */
     const int zl = lo - W > 0 ? lo - W : 0, zh = hi + W < n ? hi + W : n;
     size_t off = 0;
     for (int q = 0; q < npar; q++) {
@@ -379,17 +444,35 @@ int particles_permute_team_range(particles *ps, const int *order, int W, void *s
 #pragma omp single nowait
     ps->edits++;
     off = 0;
+    if (permute_is_sparse(order, lo, hi)) { /* this thread's places keep most records (permute_is_sparse) */
+        for (int q = 0; q < npar; q++) {
+            const size_t B = particles_col_bytes(ps, par[q]);
+            char *col = ps->col[par[q]];
+            const char *zlo = mine + off, *zhi = mine + off + (size_t)W * B;
+            switch (B) {
+            case 4: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 4); break;
+            case 8: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 8); break;
+            case 24: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 24); break;
+            case 32: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 32); break;
+            case 72: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 72); break;
+            default: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, B); break;
+            }
+            off += 2 * (size_t)W * B;
+        }
+        team_wait_barrier(tw);
+        return 1;
+    }
     for (int q = 0; q < npar; q++) {
         const size_t B = particles_col_bytes(ps, par[q]);
         char *col = ps->col[par[q]];
         const char *zlo = mine + off, *zhi = mine + off + (size_t)W * B;
         switch (B) { /* the common widths as constants, so each copy is a few moves */
-        case 4: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, qp, 4); break;
-        case 8: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, qp, 8); break;
-        case 24: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, qp, 24); break;
-        case 32: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, qp, 32); break;
-        case 72: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, qp, 72); break;
-        default: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, qp, B); break;
+        case 4: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 4); break;
+        case 8: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 8); break;
+        case 24: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 24); break;
+        case 32: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 32); break;
+        case 72: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 72); break;
+        default: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, B); break;
         }
         off += 2 * (size_t)W * B;
     }
