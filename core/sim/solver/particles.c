@@ -182,9 +182,9 @@ static int moved_places(const int *order, const int lo, const int hi) {
  * most places, where permute_sparse's branch per copy lost to the window's
  * plain copies (flow_step.lua, 2D, one thread: the permutation 1.55 -> 2.28 ms
  * a step, as the sole path).
- * One thread keeps the window: there its full pass paid for itself in the
- * P2G that follows (the permuting steps' P2G 2255 us after it, 2674 after
- * permute_sparse, where two threads' took 1122 and 1094). */
+ * One thread keeps the window: there permute_sparse showed no gain (the
+ * permuting steps 4442 -> 4734 us, the P2G after it slower, within the
+ * run-to-run spread this shared machine gave the same code: 3857 and 4266). */
 static int permute_is_sparse(const int *order, const int lo, const int hi) { return 4 * moved_places(order, lo, hi) < hi - lo; }
 
 /* Whether places [j, j + 8) all keep their records, vectorised. */
