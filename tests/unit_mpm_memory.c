@@ -353,7 +353,11 @@ static void permute_fill(particles *ps, const int n) {
 
 /* kind 0: runs shifted by a few dozen places, as a sort after a step makes
  * (each rotated run's place i takes i + 39); 1: a scattered order, i 2713 mod
- * n (2713 is prime and divides neither test's n) */
+ * n (2713 is prime and divides neither test's n); 2: a few places moved, over
+ * places that keep theirs (every 500 places, i and i + 30 swapped and a
+ * three-cycle of i + 7, i + 9, i + 12; the first and last places among them):
+ * the passes skip the kept places, and a moved place's source lies across
+ * some of them */
 static void permute_order(int *order, const int n, const int kind) {
     for (int i = 0; i < n; i++) order[i] = i;
     if (kind == 0)
@@ -362,8 +366,15 @@ static void permute_order(int *order, const int n, const int kind) {
             memmove(order + i + 1, order + i, sizeof(int) * 39);
             order[i] = last;
         }
-    else
+    else if (kind == 1)
         for (int i = 0; i < n; i++) order[i] = (int)(((long)i * 2713) % n);
+    else {
+        for (int i = 0; i + 30 < n; i += 500) {
+            order[i] = i + 30, order[i + 30] = i;
+            order[i + 7] = i + 9, order[i + 9] = i + 12, order[i + 12] = i + 7;
+        }
+        order[n - 1] = n - 2, order[n - 2] = n - 1;
+    }
 }
 
 /* The values not where order sends them (place i holds what place order[i] held). */
@@ -382,6 +393,8 @@ static int permute_wrong(const particles *ps, const int *order, const int n) {
     return bad;
 }
 
+static const char *const kind_name[3] = {"shifted", "scattered", "sparse"};
+
 /* particles_permute gives new[i] = old[order[i]] in every column, whether
  * the particles moved a little (the window through a ring, whole records)
  * or anywhere (following the cycles), at one and two threads, through n
@@ -390,7 +403,7 @@ static int permute_wrong(const particles *ps, const int *order, const int n) {
 TEST(particles_permute_orders) {
     hearth_error err;
     for (int ints = 0; ints < 2; ints++)
-    for (int kind = 0; kind < 2; kind++)
+    for (int kind = 0; kind < 3; kind++)
         for (int t = 1; t <= 2; t++) {
             hearth_set_threads(t);
             particles ps;
@@ -406,7 +419,7 @@ TEST(particles_permute_orders) {
             permute_order(order, n, kind);
             particles_permute(&ps, order, scratch, room);
             const int bad = permute_wrong(&ps, order, n);
-            printf("  %s order, %d thread(s), n %s of scratch: %d wrong values\n", kind ? "scattered" : "shifted", t,
+            printf("  %s order, %d thread(s), n %s of scratch: %d wrong values\n", kind_name[kind], t,
                    ints ? "ints" : "doubles", bad);
             CHECK(bad == 0);
             free(order);
@@ -419,12 +432,13 @@ TEST(particles_permute_orders) {
 /* particles_permute_team_range: each thread of a team moves its own places
  * of every column, with the records within W outside them saved before the
  * team's barrier. Ranges of 1-4 threads, uneven, one empty and two shorter
- * than W; a shifted order (W 39: by places) and a scattered one (W near n:
- * by columns, particles_permute_team): every value where the order sends it. */
+ * than W; a shifted order (W 39: by places), a sparse one (W 30: by places,
+ * some sources across a range's edge) and a scattered one (W near n: by
+ * columns, particles_permute_team): every value where the order sends it. */
 TEST(particles_permute_team_range_orders) {
     static const int split[5][5] = {{0}, {0, 40000}, {0, 24713, 40000}, {0, 7000, 7000, 40000}, {0, 20, 16000, 16030, 40000}};
     hearth_error err;
-    for (int kind = 0; kind < 2; kind++)
+    for (int kind = 0; kind < 3; kind++)
         for (int P = 1; P <= 4; P++) {
             particles ps;
             particles_init(&ps);
@@ -451,10 +465,10 @@ TEST(particles_permute_team_range_orders) {
                     ranges[me] = particles_permute_team_range(&ps, order, W, scratch, room, split[P][me], split[P][me + 1], NULL);
             }
             const int bad = permute_wrong(&ps, order, n);
-            printf("  %s order (W %d), %d thread(s), by %s: %d wrong values\n", kind ? "scattered" : "shifted", W, P,
+            printf("  %s order (W %d), %d thread(s), by %s: %d wrong values\n", kind_name[kind], W, P,
                    ranges[0] == 1 ? "places" : ranges[0] == 0 ? "columns" : "?", bad);
             CHECK(bad == 0 && ps.edits == e0 + 1);
-            for (int t = 0; t < P; t++) CHECK(ranges[t] == (kind == 0)); /* every thread alike: W 39 fits, W ~n does not */
+            for (int t = 0; t < P; t++) CHECK(ranges[t] == (kind != 1)); /* every thread alike: W 39 and 30 fit, W ~n does not */
             free(order);
             free(scratch);
             particles_free(&ps);

@@ -10,6 +10,7 @@
 #define _DEFAULT_SOURCE /* syscall(), which the build's _POSIX_C_SOURCE leaves out */
 #endif
 #include "team_wait.h"
+#include "phase_clock.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -153,8 +154,10 @@ static int team_size(void) {
 void team_wait_barrier(team_wait *tw) {
     const int T = team_size();
     if (T <= 1) return;
+    PHASE_WAIT_BEGIN();
     if (!tw || team_wait_is_omp(tw)) {
 #pragma omp barrier
+        PHASE_WAIT_END();
         return;
     }
     /* the round cannot move before this thread arrives, and this thread saw the last round's end */
@@ -162,9 +165,11 @@ void team_wait_barrier(team_wait *tw) {
     if (__atomic_add_fetch(&tw->count, 1, __ATOMIC_ACQ_REL) == (unsigned)T) {
         __atomic_store_n(&tw->count, 0, __ATOMIC_RELAXED); /* ordered before the new round by publish */
         publish(&tw->gen, &tw->sleepers, g + 1);
+        PHASE_WAIT_END();
         return;
     }
     wait_change(tw, &tw->gen, &tw->sleepers, g);
+    PHASE_WAIT_END();
 }
 
 void team_count_add(team_count *c, unsigned k) {
@@ -175,15 +180,18 @@ void team_count_add(team_count *c, unsigned k) {
 }
 
 void team_count_wait(team_wait *tw, team_count *c, unsigned target) {
+    PHASE_WAIT_BEGIN();
     if (team_wait_is_omp(tw)) {
         if (team_size() > 1) {
 #pragma omp barrier
         }
+        PHASE_WAIT_END();
         return;
     }
     for (;;) {
         const unsigned v = __atomic_load_n(&c->done, __ATOMIC_ACQUIRE);
-        if (v >= target) return;
+        if (v >= target) break;
         wait_change(tw, &c->done, &c->sleepers, v);
     }
+    PHASE_WAIT_END();
 }

@@ -74,6 +74,7 @@
 #include "mixing.h"
 #include "transport.h"
 #include "tensor2.h"
+#include "phase_clock.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -581,11 +582,14 @@ static void step_team_rest(hearth_scene *s, double dt, const int gather, block_f
                            const int nactive) {
     mpm_state *m = s->mpm;
     grid_update_team(s, dt, vcol2, gather, t, nactive);
+    PHASE_MARK(PH_GRID);
     if (t) {
         g2p_chunks(s, t, g2p, dt); /* resets each block's pbof: k_lo and k_hi come from a single without a barrier */
+        PHASE_MARK(PH_G2P);
         return;
     }
     g2p_team(s, g2p, dt);
+    PHASE_MARK(PH_G2P);
     if (gather) { /* the block table back to no particle block anywhere, for the next step's scatter */
 #pragma omp for schedule(static) nowait
         for (int k = m->k_lo; k < m->k_hi; k++) m->pbof[m->pb[k].block] = -1;
@@ -615,8 +619,10 @@ static double step_team(hearth_scene *s, double dt, step_report *rep, const int 
     mpm_state *m = s->mpm;
     const block_fn store = p2g_store_fns[thermal_active(s)][m->sticky_faces][s->g.dim == 3];
     double vcol2 = 0;
+    PHASE_FORK();
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
+        PHASE_MARK(PH_FORK);
         if (gather) {
             /* every block's tile, in any order: each keeps its own; the loop's barrier before the gather.
              * Guided: long runs of neighbouring blocks per thread (g2p_team says why) */
@@ -627,8 +633,10 @@ static double step_team(hearth_scene *s, double dt, step_report *rep, const int 
         } else {
             p2g_team(s, p2g, dt);
         }
+        PHASE_MARK(PH_P2G);
         step_team_rest(s, dt, gather, g2p, &vcol2, NULL, 0);
     }
+    PHASE_MARK(PH_JOIN);
     claims_end(m);
     g2p_reduce(s, rep);
     return sqrt(vcol2);
@@ -687,8 +695,10 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
     m->tiles_cap = 0;
     hearth_status gst = HEARTH_OK;
     double vcol2 = 0;
+    PHASE_FORK();
 #pragma omp parallel
     {
+        PHASE_MARK(PH_FORK);
         int kof[MPM_SORT_CHUNKS_MAX + 1], nactive = 0;
         const int W = mpm_sort_team_run(s, t, kof, &nactive);
         if (!t->st) {
@@ -697,6 +707,7 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
                 const int lo = kof[w.c0] < kof[t->T] ? m->pb[kof[w.c0]].start : ps->n,
                           hi = kof[w.c1] < kof[t->T] ? m->pb[kof[w.c1]].start : ps->n;
                 particles_permute_team_range(ps, m->order, W, m->keys, room, lo, hi, &m->team);
+                PHASE_MARK(PH_PERMUTE);
             }
             const int grow = mpm_p2g_store_need(s, kof[t->T]) > have;
             if (grow) { /* every thread is past the sort's reads of keys and order */
@@ -705,10 +716,12 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
             }
             if (!gst) {
                 p2g_store_chunks(s, t, W >= 0 || grow, store, dt, kof[t->T]);
+                PHASE_MARK(PH_P2G);
                 step_team_rest(s, dt, 1, g2p, &vcol2, t, nactive);
             }
         }
     }
+    PHASE_MARK(PH_JOIN);
     if (t->st) return t->st;
     if (gst) return gst;
     m->tiles_cap = mpm_p2g_store_need(s, m->npb); /* what hearth_scene_bytes_used counts */
@@ -726,6 +739,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     int usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
     hearth_status st;
     int sorted = 0;
+    PHASE_STEP();
     if (usual && !mixing_active(s) && s->ps.n >= SCENE_PARALLEL_MIN && mpm_p2g_store_held(s)) { /* the gather's step */
         mpm_sort_team t;
         if ((st = mpm_sort_begin(s, &t, err))) return st;
@@ -735,7 +749,9 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
             double vcol;
             if ((st = step_team_sorted(s, dt, rep, &t, &vcol, err))) return st;
             rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;
-            return mpm_ranks_report(s, dt, vcol, rep, err);
+            st = mpm_ranks_report(s, dt, vcol, rep, err);
+            PHASE_MARK(PH_REDUCE);
+            return st;
         }
         sorted = 1; /* mpm_sort_begin sorted as mpm_sort does */
     }
@@ -758,7 +774,9 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         if ((st = mpm_p2g_store_reserve(s, &gather, err))) return st;
         const double vcol = step_team(s, dt, rep, gather);
         rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;
-        return mpm_ranks_report(s, dt, vcol, rep, err);
+        st = mpm_ranks_report(s, dt, vcol, rep, err);
+        PHASE_MARK(PH_REDUCE);
+        return st;
     }
     mpm_p2g(s, dt, rep);
     if ((st = mpm_ranks_sum_grid(s, err))) return st;

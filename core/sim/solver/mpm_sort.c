@@ -12,6 +12,7 @@
 #include "mpm.h"
 #include "thermal.h"
 #include "water.h"
+#include "phase_clock.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -287,6 +288,7 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
     /* on once every chunk is counted, whoever counted it: a thread woken late finds them all done and the
      * others need not wait for it (nothing writes hist before the next barrier, past every thread's reads) */
     team_count_wait(&m->team, &t->counted, (unsigned)T);
+    PHASE_MARK(PH_COUNT);
     int unsorted = 0;
     for (int c = 0; c < T; c++) unsorted |= t->unsorted[c];
     /* Every thread adds up the table for each chunk of it: the particles, the particle blocks and (2D)
@@ -405,6 +407,7 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
 #pragma omp single nowait
         g->nactive = aoff[T];
     }
+    PHASE_MARK(PH_LISTS);
     if (!unsorted) return -1;
     /* each chunk of particles' first place in each block: the block's start and the block's particles
      * in earlier chunks; then the order, once every block has its places */
@@ -435,6 +438,7 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
     team_wait_barrier(&m->team);
     int W = 0;
     for (int c = 0; c < T; c++) W = t->far[c] > W ? t->far[c] : W;
+    PHASE_MARK(PH_ORDER);
     return W;
 }
 
@@ -521,25 +525,37 @@ static hearth_status sort_rest(hearth_scene *s, int Tc, mpm_sort_team *t, hearth
     particles *ps = &s->ps;
     hearth_status st;
     if (Tc == 1) {
-        if (sort_counting(m, ps->n)) particles_permute(ps, m->order, m->keys, sizeof(int) * (size_t)m->scratch_cap);
+        const int unsorted = sort_counting(m, ps->n);
+        PHASE_MARK(PH_COUNT);
+        if (unsorted) particles_permute(ps, m->order, m->keys, sizeof(int) * (size_t)m->scratch_cap);
+        PHASE_MARK(PH_PERMUTE);
         if ((st = sort_blocks(s, sort_chunks(ps->n), err))) return st;
-        return sort_end(s, 0, err);
+        st = sort_end(s, 0, err);
+        PHASE_MARK(PH_LISTS);
+        return st;
     }
     /* the usual parallel sort: one region, the permutation in it */
+    PHASE_FORK();
 #pragma omp parallel num_threads(Tc)
     {
+        PHASE_MARK(PH_FORK);
         int kof[MPM_SORT_CHUNKS_MAX + 1];
         const int W = mpm_sort_team_run(s, t, kof, NULL);
         if (W >= 0) particles_permute_team(ps, m->order, W, m->keys, sizeof(int) * (size_t)m->scratch_cap, &m->team);
+        PHASE_MARK(PH_PERMUTE);
     }
+    PHASE_MARK(PH_JOIN);
     if (t->st) return t->st;
     sort_colours(s);
-    return sort_end(s, t->activate, err);
+    st = sort_end(s, t->activate, err);
+    PHASE_MARK(PH_LISTS);
+    return st;
 }
 
 hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
     int Tc;
     hearth_status st = sort_begin(s, &Tc, err);
+    PHASE_MARK(PH_SORT_PRE);
     if (st) return st;
     mpm_sort_team t;
     team_setup(s, Tc, &t, err);
@@ -549,6 +565,7 @@ hearth_status mpm_sort(hearth_scene *s, hearth_error *err) {
 hearth_status mpm_sort_begin(hearth_scene *s, mpm_sort_team *t, hearth_error *err) {
     int Tc;
     hearth_status st = sort_begin(s, &Tc, err);
+    PHASE_MARK(PH_SORT_PRE);
     if (st) return st;
     team_setup(s, Tc, t, err);
     if (Tc > 1 && t->activate) { /* the step's region runs the count and lists (mpm_sort_team_run) */

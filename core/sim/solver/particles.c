@@ -166,6 +166,78 @@ static inline __attribute__((always_inline)) void permute_window(char *col, cons
     }
 }
 
+/* Places in [lo, hi) whose record moves (order[j] != j), in a loop the compiler vectorises. */
+static int moved_places(const int *order, const int lo, const int hi) {
+    int k = 0;
+    for (int j = lo; j < hi; j++) k += order[j] != j;
+    return k;
+}
+
+/* A team's range of places that moves under a quarter of them goes by
+ * permute_sparse (particles_permute_team_range): after a step of the 2D
+ * 128-cell bench 1-3% of the places move when any do, and the window copied
+ * every record of every column twice, a memory-bound pass that two threads
+ * did no faster than one (about 590 us a step at 1 thread and at 2;
+ * docs/performance.md "Two threads, phase by phase"). A flowing scene moves
+ * most places, where permute_sparse's branch per copy lost to the window's
+ * plain copies (flow_step.lua, 2D, one thread: the permutation 1.55 -> 2.28 ms
+ * a step, as the sole path).
+ * One thread keeps the window: there permute_sparse showed no gain (the
+ * permuting steps 4442 -> 4734 us, the P2G after it slower, within the
+ * run-to-run spread this shared machine gave the same code: 3857 and 4266). */
+static int permute_is_sparse(const int *order, const int lo, const int hi) { return 4 * moved_places(order, lo, hi) < hi - lo; }
+
+/* Whether places [j, j + 8) all keep their records, vectorised. */
+static inline int kept8(const int *order, const int j) {
+    int d = 0;
+    for (int k = 0; k < 8; k++) d |= order[j + k] ^ (j + k);
+    return d == 0;
+}
+
+/* a ring slot moved on by k places */
+static inline int slot_add(int slot, const int k, const int R) {
+    slot += k;
+    if (slot >= R) slot -= R;
+    return slot < R ? slot : slot % R;
+}
+
+/* permute_range for a permutation that keeps most places: a place that keeps its record
+ * (order[j] == j) is neither gathered nor written back, since no other place
+ * reads it (order is a permutation) and so it holds its value throughout;
+ * eight such places on both sides of the window are passed at once. A
+ * place's ring slot is its distance from lo, mod R. */
+static inline __attribute__((always_inline)) void permute_sparse(char *col, const int *order, int lo, int hi, int W, int R,
+                                                                   int zl, const char *zlo, const char *zhi, char *ring,
+                                                                   const size_t B) {
+    int gs = 0, ws = 0; /* the ring slots of place j and of place j - W */
+    for (int j0 = lo; j0 < hi; j0 += 8) {
+        const int m = hi - j0 < 8 ? hi - j0 : 8;
+        /* eight kept places, with none to write back (all before lo) or eight kept ones there too */
+        if (m == 8 && kept8(order, j0) && (j0 + 8 - lo <= W || (j0 - W >= lo && kept8(order, j0 - W)))) {
+            gs = slot_add(gs, 8, R);
+            if (j0 - W >= lo) ws = slot_add(ws, 8, R);
+            continue;
+        }
+        for (int j = j0; j < j0 + m; j++) {
+            const int src = order[j];
+            if (src != j) {
+                const char *from = src < lo ? zlo + (size_t)(src - zl) * B : src >= hi ? zhi + (size_t)(src - hi) * B : col + (size_t)src * B;
+                memcpy(ring + (size_t)gs * B, from, B);
+            }
+            if (++gs == R) gs = 0;
+            const int p = j - W;
+            if (p >= lo) {
+                if (order[p] != p) memcpy(col + (size_t)p * B, ring + (size_t)ws * B, B);
+                if (++ws == R) ws = 0;
+            }
+        }
+    }
+    for (int p = hi - W > lo ? hi - W : lo; p < hi; p++) {
+        if (order[p] != p) memcpy(col + (size_t)p * B, ring + (size_t)ws * B, B);
+        if (++ws == R) ws = 0;
+    }
+}
+
 /* One column in place by following the permutation's cycles, for a
  * permutation that moves particles too far for the window's ring: place j
  * takes the record at order[j], then order[j] takes the one at its order,
@@ -372,6 +444,24 @@ int particles_permute_team_range(particles *ps, const int *order, int W, void *s
 #pragma omp single nowait
     ps->edits++;
     off = 0;
+    if (permute_is_sparse(order, lo, hi)) { /* this thread's places keep most records (permute_is_sparse) */
+        for (int q = 0; q < npar; q++) {
+            const size_t B = particles_col_bytes(ps, par[q]);
+            char *col = ps->col[par[q]];
+            const char *zlo = mine + off, *zhi = mine + off + (size_t)W * B;
+            switch (B) {
+            case 4: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 4); break;
+            case 8: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 8); break;
+            case 24: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 24); break;
+            case 32: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 32); break;
+            case 72: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 72); break;
+            default: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, B); break;
+            }
+            off += 2 * (size_t)W * B;
+        }
+        team_wait_barrier(tw);
+        return 1;
+    }
     for (int q = 0; q < npar; q++) {
         const size_t B = particles_col_bytes(ps, par[q]);
         char *col = ps->col[par[q]];

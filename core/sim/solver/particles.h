@@ -136,7 +136,8 @@ void particles_permute_team(particles *ps, const int *order, int W, void *scratc
 /// team's ranges tile [0, n)), so the records a thread owns stay in its core's cache (mpm.c's one-region step
 /// gives each thread the places of the particle blocks it runs). The records within W outside [lo, hi) are saved
 /// in this thread's 1 / T of the scratch before the team's barrier; when they and a ring of W + 1 records do not
-/// fit there (a permutation that moves particles far), it is particles_permute_team. Returns past a barrier:
+/// fit there (a permutation that moves particles far), it is particles_permute_team. A range that moves under a
+/// quarter of its places copies only the moved ones (particles.c's permute_sparse). Returns past a barrier:
 /// 1 when it went by places, 0 by columns (the same on every thread).
 int particles_permute_team_range(particles *ps, const int *order, int W, void *scratch, size_t room, int lo, int hi,
                                  struct team_wait *tw);
