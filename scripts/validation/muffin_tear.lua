@@ -25,6 +25,7 @@
 --                 factor is 1 + (depth / dx) (f(layer) - 1), so the skin's stiffness per unit area
 --                 follows the water lost per unit area, not the cell's size (a crack band for the
 --                 crust's stiffness). Only where dx > crust_depth (a cell finer reads its own water)
+--   ppc           particles a cell, passed to muffins.lua (0: its default, 4 in 2D)
 --   damage_frames 1: the run's PNG frames show damage (particles) instead of temperature
 --   axis_probe    1: each frame also prints a line "axis t=... top=..." (stdout; the CSV is unchanged): the
 --                 particles within 2 mm of the first cup's axis in 1 mm bins of depth below the highest of
@@ -36,7 +37,7 @@ local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dim = 2, dx = 0.004, until_t = 3, frames = 6, cups = 3, fill = 0.022, wall_mode = "slip",
   dry_fracture = 1, heat_set = 1, glass = 1, glass_at = 0.65, set_strain = -1, air_beta = 1, damage_frames = 0,
-  fracture = 1, band = 1, skin_dry = 1, crust_depth = 0, axis_probe = 0,
+  fracture = 1, band = 1, skin_dry = 1, crust_depth = 0, axis_probe = 0, ppc = 0,
   muffins = "scripts/scenes/baking/muffins.lua" }
 
 -- muffins.lua's own h.params sees the values parsed here (it declares a subset of these names)
