@@ -447,6 +447,31 @@ print(f"at 0.75 s: centre above the edge {ce(p):.2f} mm, skin_dry = 0 {ce(s):.2f
 sys.exit(0 if ce(s) < ce(p) and top(c) < top(p) else 1)
 PY
     ;;
+# scripts/validation/muffin_heat_slab.lua (docs/validation.md, "The muffin's
+# tear: the heat under the crown"): the muffin preset's heat through an oven
+# top against the half-space's closed form (Carslaw & Jaeger §2.7). Is the
+# heat per area the same over dx? At 4, 3 and 2 mm, from 0.5 s (at 0.25 s the
+# thermal layer, 3.5 mm, is thinner than a 4 mm cell: 0.87 there), each
+# frame's heat taken in per area is within 10% of the closed form, and the
+# 2 mm slab has taken in at least as much as the 4 mm one: a finer grid does
+# not bring the heat to the crumb later (helper muffin4: 0.93-1.05).
+validation_muffin_heat_slab_per_area)
+    for dx in 0.004 0.003 0.002; do
+        "$hearth" run "$root/scripts/validation/muffin_heat_slab.lua" --quiet --set dx=$dx --set until_t=1 \
+            --set frames=4 >"slab_$dx.txt" 2>err.txt || fail "muffin_heat_slab.lua dx=$dx: exit $?: $(cat err.txt)"
+    done
+    python3 - slab_0.004.txt slab_0.003.txt slab_0.002.txt <<'PY' || fail "the oven top's heat per area is off the closed form (numbers above)"
+import re, sys
+ok, last = True, []
+for f in sys.argv[1:]:
+    rows = [(float(t), float(q)) for t, q in re.findall(r"t ([\d.]+) s: heat in per area ([\d.]+)", open(f).read())]
+    print(f"{f}: " + ", ".join(f"{t:.2f} s {q:.4f}" for t, q in rows))
+    ok &= len(rows) == 4 and all(abs(q - 1) <= 0.1 for t, q in rows if t >= 0.5)
+    last.append(rows[-1][1] if rows else 0)
+print(f"heat in at 1 s over the closed form: 4 mm {last[0]:.4f}, 2 mm {last[2]:.4f} (need 2 mm >= 4 mm)")
+sys.exit(0 if ok and last[2] >= last[0] else 1)
+PY
+    ;;
 # #18, Ding §7.3 ("too much leavening agent would produce a very tall cookie,
 # while no leavener at all yields a flat one"): in cookies.lua's 150 degC oven
 # the most leavened cookie (0.015) ends at least 1.3x as tall as the
