@@ -341,7 +341,7 @@ import csv, sys
 r = list(csv.DictReader(open(sys.argv[1])))[-1]
 dx = float(sys.argv[2])
 d, w, h = float(r["crack_depth_m"]), float(r["crack_width_m"]), float(r["height_plain_m"])
-print(f"dx {dx * 1e3:.0f} mm, {ppc or 4} particles a cell, t = {r['t']} s: deepest notch in the top of the intact crust {d * 1e3:.2f} mm deep "
+print(f"dx {dx * 1e3:.0f} mm, t = {r['t']} s: deepest notch in the top of the intact crust {d * 1e3:.2f} mm deep "
       f"(need >= {0.1 * h * 1e3:.2f} mm), {w * 1e3:.1f} mm wide (need >= {2 * dx * 1e3:.0f} mm); "
       f"{r['cracked']} cracked particles, top X/X0 {float(r['moisture_top']):.3f}")
 if d >= 0.1 * h and w >= 2 * dx:
