@@ -25,14 +25,19 @@
 --                 factor is 1 + (depth / dx) (f(layer) - 1), so the skin's stiffness per unit area
 --                 follows the water lost per unit area, not the cell's size (a crack band for the
 --                 crust's stiffness). Only where dx > crust_depth (a cell finer reads its own water)
+--   ppc           particles a cell, passed to muffins.lua (0: its default, 4 in 2D)
 --   damage_frames 1: the run's PNG frames show damage (particles) instead of temperature
+--   axis_probe    1: each frame also prints a line "axis t=... top=..." (stdout; the CSV is unchanged): the
+--                 particles within 2 mm of the first cup's axis in 1 mm bins of depth below the highest of
+--                 them, each bin's mean temperature (degC) / damage / X/X0 (helper muffin4: is the crumb's
+--                 heat under the crown the same over dx?)
 --   hearth run scripts/validation/muffin_tear.lua --quiet --set cups=1 --set until_t=1.5 [--set dry_fracture=0] ...
 -- from the source root (or --set muffins=PATH to muffins.lua).
 local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dim = 2, dx = 0.004, until_t = 3, frames = 6, cups = 3, fill = 0.022, wall_mode = "slip",
   dry_fracture = 1, heat_set = 1, glass = 1, glass_at = 0.65, set_strain = -1, air_beta = 1, damage_frames = 0,
-  fracture = 1, band = 1, skin_dry = 1, crust_depth = 0,
+  fracture = 1, band = 1, skin_dry = 1, crust_depth = 0, axis_probe = 0, ppc = 0,
   muffins = "scripts/scenes/baking/muffins.lua" }
 
 -- muffins.lua's own h.params sees the values parsed here (it declares a subset of these names)
@@ -109,6 +114,45 @@ if P.damage_frames == 1 then
     local run = methods.run
     methods.run = function(self, r)
       r.png = { field = "damage", path = "damage_%04d.png", kind = "particles", range = { 0, 1 } }
+      return run(self, r)
+    end
+    return s
+  end
+end
+
+-- the axis probe (header): wraps the run's on_frame; the cup's centre as muffins.lua puts it (on a node)
+if P.axis_probe == 1 then
+  local scene = h.scene
+  h.scene = function(o)
+    local s = scene(o)
+    local methods = getmetatable(s).__index
+    local run = methods.run
+    methods.run = function(self, r)
+      local f0, s0 = r.on_frame, h.library.paper_oven.muffin.saturation
+      r.on_frame = function(f)
+        local q = self:particles { fields = { "x", "temperature", "damage", "saturation", "J" } }
+        local xc = math.floor(0.5 * 0.08 / P.dx + 0.5) * P.dx -- muffins.lua's xs[1] (SPACING 0.08)
+        local top, bins = -math.huge, {}
+        for k = 1, q.n do
+          if math.abs(q.x[3 * k - 2] - xc) < 0.002 then top = math.max(top, q.x[3 * k - 1]) end
+        end
+        for k = 1, q.n do
+          if math.abs(q.x[3 * k - 2] - xc) < 0.002 then
+            local b = math.floor((top - q.x[3 * k - 1]) / 0.001)
+            local B = bins[b] or { 0, 0, 0, 0 }
+            B[1], B[2], B[3], B[4] = B[1] + 1, B[2] + q.temperature[k], B[3] + q.damage[k],
+              B[4] + q.saturation[k] * q.J[k] / s0
+            bins[b] = B
+          end
+        end
+        local cols = {}
+        for b = 0, 12 do
+          local B = bins[b]
+          cols[#cols + 1] = B and ("%d:%.0f/%.2f/%.2f"):format(b, B[2] / B[1], B[3] / B[1], B[4] / B[1]) or ("%d:-"):format(b)
+        end
+        print(("axis t=%.3f top=%.2fmm above the rim %s"):format(f.t, (top - 0.042) * 1e3, table.concat(cols, " ")))
+        if f0 then return f0(f) end
+      end
       return run(self, r)
     end
     return s
