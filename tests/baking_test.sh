@@ -542,7 +542,7 @@ PY
 # that V is the risen crumb parting along one column of particles at 4 a cell
 # (none at 9 a cell, nor at dx 3.8 or 4.2 mm: helper muffin4, "The muffin's
 # tear: the heat under the crown, and particles a cell"), so _ppc9 asks the
-# claim of the same 4 mm bake with 9 particles a cell (release_only: 36 s).
+# claim of the same 4 mm bake with 9 particles a cell (suite campaign: 36 s, a finding rather than a regression check).
 claim_muffin_top_tears | claim_muffin_top_tears_fine | claim_muffin_top_tears_ppc9)
     dx=0.004 ppc=0
     [ "$case_name" = claim_muffin_top_tears_fine ] && dx=0.003
