@@ -205,13 +205,10 @@ static inline int same_bits(double x, double y) {
  * neither hashed nor saved. Returns how many curves it gave (0: the material has no temperature curve).
  * In the 2D dough bench (scripts/bench/dough_step.lua) the cookie's two curves cost 55 instructions a point
  * a step through curve_eval_column. */
-static int curve_memo_columns(const material_slot *ms, const material_run_params *rp, double *memo, int i0, int n,
-                              const int *col_of, double (*vcol)[HEARTH_BLOCK_MAX]) {
-    enum { NM = CURVE_MEMO_WIDTH - 3 };
-    const int nm = rp->nt < NM ? rp->nt : NM;
-    if (nm == 0) return 0;
-    double *col[NM];
-    for (int t = 0; t < nm; t++) col[t] = vcol[col_of[ms->curves[t].param]];
+enum { CURVE_MEMO_VALUES = CURVE_MEMO_WIDTH - 3 };
+static inline __attribute__((always_inline)) void curve_memo_loop(const material_slot *ms, const material_run_params *rp,
+                                                                  double *memo, int i0, int n, int nm,
+                                                                  double *const col[CURVE_MEMO_VALUES]) {
     const double stamp = ms->curve_stamp, *T = rp->T + i0, *Tmax = rp->Tmax + i0;
     double *m = memo + (size_t)i0 * CURVE_MEMO_WIDTH;
     for (int j = 0; j < n; j++, m += CURVE_MEMO_WIDTH) {
@@ -226,6 +223,17 @@ static int curve_memo_columns(const material_slot *ms, const material_run_params
             col[k][j] = m[3 + k] = curve_eval(c, c->irreversible ? tm : t);
         }
     }
+}
+
+static int curve_memo_columns(const material_slot *ms, const material_run_params *rp, double *memo, int i0, int n,
+                              const int *col_of, double (*vcol)[HEARTH_BLOCK_MAX]) {
+    const int nm = rp->nt < CURVE_MEMO_VALUES ? rp->nt : CURVE_MEMO_VALUES;
+    double *col[CURVE_MEMO_VALUES] = {0};
+    for (int t = 0; t < nm; t++) col[t] = vcol[col_of[ms->curves[t].param]];
+    /* the loop for the usual count, the memo's full two, with its copies unrolled (22 instructions a point
+     * through the general loop) */
+    if (nm == CURVE_MEMO_VALUES) curve_memo_loop(ms, rp, memo, i0, n, CURVE_MEMO_VALUES, col);
+    else if (nm > 0) curve_memo_loop(ms, rp, memo, i0, n, nm, col);
     return nm;
 }
 
@@ -270,7 +278,8 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
             for (int k = nt; k < nc; k++) {
                 double *col = vcol[col_of[ms->curves[k].param]];
                 const double f = rp->f[k - nt];
-                for (int j = 0; j < n; j++) col[j] *= f;
+                if (f != 1.0) /* x * 1.0 is x: a dry curve's factor at the raw dough's ratio 1 leaves the column */
+                    for (int j = 0; j < n; j++) col[j] *= f;
             }
             return;
         }
@@ -303,7 +312,8 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
             for (int j = 0; j < n; j++) col[j] *= f[j];
         } else {
             const double f = rp->f[k - nt];
-            for (int j = 0; j < n; j++) col[j] *= f;
+            if (f != 1.0) /* x * 1.0 is x (the columns are finite parameters) */
+                for (int j = 0; j < n; j++) col[j] *= f;
         }
     }
 }
@@ -356,12 +366,14 @@ static double run_points(const material_table *t, const particles *ps, const mat
  * same bits. A cracked point (damage >= 1) gets the tension cut-off instead, as
  * material_point_couple gives it. P: the porosity at the start of the step
  * (NULL: NaN); split: the points whose thermal strain was taken out of F and L
- * (NULL: none), which get no thermal pressure. q holds ms->params when nv > 0
+ * (NULL: none), which get no thermal pressure; all_split: every point was (the
+ * usual block of a plugin with bulk_modulus: no thermal pressure loop). q holds ms->params when nv > 0
  * (the door copied them). Per point this was 120-odd instructions of copies
  * and branches (pt, env, tj) around the calls. */
 static double run_after_block(const material_slot *ms, const material_run *r, unsigned flags, double *q, int nv,
                               const int *vk, double (*vcol)[HEARTH_BLOCK_MAX], const hearth_block *b,
-                              const double *P, const signed char *split, double *const tau[9], double *wave) {
+                              const double *P, const signed char *split, int all_split, double *const tau[9],
+                              double *wave) {
     double *state = b->state;
     const int stride = b->state_stride;
     const hearth_material *m = ms->m;
@@ -450,7 +462,7 @@ static double run_after_block(const material_slot *ms, const material_run *r, un
         }
     }
     const double cl = core[CP_EXPANSION];
-    if ((flags & MATERIAL_EXPANSION) && cl > 0) /* the thermal pressure, where the strain was not taken out */
+    if ((flags & MATERIAL_EXPANSION) && cl > 0 && !all_split) /* the thermal pressure, where the strain was not taken out */
         for (int j = 0; j < n; j++) {
             if (cracked[j] || (split && split[j])) continue;
             const double th = cl * ((T ? T[j] : NAN) - core[CP_REFERENCE_T]);
@@ -588,10 +600,11 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
                    (t5[j] - t5[j]) + (t6[j] - t6[j]) + (t7[j] - t7[j]) + (t8[j] - t8[j]);
     }
     /* whether any point needs the fix-up below, in loops with no branch per point: almost never */
-    long trouble = 0;
+    long trouble = 0, unsplit = 0; /* unsplit: the points whose strain was not taken out (no temperature, bad K) */
     for (int j = 0; j < n; j++) trouble += (code[j] != 0) | !(z[j] == 0);
     if (th)
-        for (int j = 0; j < n; j++) trouble += split[j] < 0;
+        for (int j = 0; j < n; j++) unsplit += split[j] != 1;
+    trouble += unsplit;
     for (int j = 0; j < n && trouble; j++) {
         if (__builtin_expect(!code[j] && !(z[j] == 0), 0)) code[j] = MATERIAL_NONFINITE;
         if (__builtin_expect(th && split[j] < 0, 0)) code[j] = MATERIAL_BAD_BULK; /* as run_points */
@@ -606,8 +619,8 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         plugin_call_leave();
         return 0;
     }
-    const double numax = run_after_block(ms, r, flags, q, nv, vk, vcol, &b, porous ? P : NULL, th ? split : NULL, tau,
-                                         wave);
+    const double numax = run_after_block(ms, r, flags, q, nv, vk, vcol, &b, porous ? P : NULL, th ? split : NULL,
+                                         th && !unsplit, tau, wave);
     plugin_call_leave();
     return numax;
 }
