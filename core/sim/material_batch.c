@@ -84,8 +84,12 @@ static inline void scale_column(double *restrict out, const double *restrict x, 
  * (2D, 64 cells). glibc's early return there is cheap already, so this saves about 9 instructions a
  * point over the per-point scalars (material_thermal_scales). A point the split leaves alone gets x = 0
  * and r = -0.0: 1, 1 and -0.0, as material_thermal_scales gives it. */
+/* Returns THERMAL_NONFINITE when a scale is not finite (exp's: >= +0, inf or NaN), and THERMAL_STILL when
+ * every sL is 1.0 (no point's r took libm: the temperatures held over the step, as between the fields'
+ * updates), where L's off-diagonal entries come through the split as they are (x * 1.0 is x). */
+enum { THERMAL_NONFINITE = 1, THERMAL_STILL = 2 };
 __attribute__((noinline)) /* inlined, its arrays and loops cost the elastic step's door 2 instructions a point */
-static void thermal_scales_block(const double *core, int n, const double *restrict K, const double *restrict T,
+static int thermal_scales_block(const double *core, int n, const double *restrict K, const double *restrict T,
                                  double *restrict e_store, double *restrict memo, double dt, signed char *restrict split,
                                  double *restrict sF, double *restrict sL, double *restrict dL) {
     const double cl = core[CP_EXPANSION], Tr = core[CP_REFERENCE_T];
@@ -99,22 +103,36 @@ static void thermal_scales_block(const double *core, int n, const double *restri
         R[j] = sp == 1 && dt > 0 ? (e0 - e) / 3 : -0.0;
         e_store[j] = sp == 1 && dt > 0 ? e : e0;
     }
-    /* x holds between the fields' updates (the temperature does, and K with it): its exp once a cycle (exp_memo.h) */
+    /* x holds between the fields' updates (the temperature does, and K with it): its exp once a cycle (exp_memo.h);
+     * the scales' finiteness counted in the loops that make them (a loop of its own over sF and sL cost 10
+     * instructions a point) */
+    long inf = 0, moved = 0;
     if (memo)
-        for (int j = 0; j < n; j++) sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp_memo(memo + 2 * j, X[j]);
+        for (int j = 0; j < n; j++) {
+            sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp_memo(memo + 2 * j, X[j]);
+            inf += !(sF[j] <= DBL_MAX);
+        }
     else
-        for (int j = 0; j < n; j++) sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp(X[j]);
+        for (int j = 0; j < n; j++) {
+            sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp(X[j]);
+            inf += !(sF[j] <= DBL_MAX);
+        }
     if (dt > 0) {
         /* every point's small-r values first, in a loop with no branch (one vector division), then libm where
          * r is not small: the values the branch per point gave, which was 11 instructions a point */
         for (int j = 0; j < n; j++) sL[j] = 1.0, dL[j] = R[j] / dt;
         for (int j = 0; j < n; j++) {
             const double r = R[j];
-            if (!(fabs(r) < 0x1p-54)) sL[j] = exp(r), dL[j] = expm1(r) / dt;
+            if (!(fabs(r) < 0x1p-54)) {
+                sL[j] = exp(r), dL[j] = expm1(r) / dt;
+                inf += !(sL[j] <= DBL_MAX);
+                moved++;
+            }
         }
     } else {
         for (int j = 0; j < n; j++) sL[j] = 1.0, dL[j] = -0.0;
     }
+    return (inf ? THERMAL_NONFINITE : 0) | (moved ? 0 : THERMAL_STILL);
 }
 
 /* The particles' thermal strain column when eq. 10 is a strain for this run
@@ -519,6 +537,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     double sF[HEARTH_BLOCK_MAX], sL[HEARTH_BLOCK_MAX], dL[HEARTH_BLOCK_MAX];
     const int porous_J = porous && m->plastic_J;
     int finite = 1; /* every point's F and L scales finite */
+    int still = 0;  /* every point's L scale 1.0 (thermal_scales_block) */
     if (porous && !m->plastic_J)
         for (int j = 0; j < n; j++) P[j] = gas_porosity(1.0, ms->core[CP_POROSITY0]);
     /* per point, one pass with its parameters patched once: J^P at the start of the step (as
@@ -560,10 +579,9 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         }
     if (th) { /* the split's scalars, then whether every point's are finite */
         double *memo = ps->enabled & (1u << PC_THERMAL_MEMO) ? pcold(ps, PC_THERMAL_MEMO) + 2 * (size_t)i0 : NULL;
-        thermal_scales_block(ms->core, n, K, r->temperature, th + i0, memo, r->dt, split, sF, sL, dL);
-        long inf = 0; /* exp's: >= +0, or inf, or NaN; counted, which the compiler vectorises */
-        for (int j = 0; j < n; j++) inf += !(sF[j] <= DBL_MAX) | !(sL[j] <= DBL_MAX);
-        finite = inf == 0;
+        const int how = thermal_scales_block(ms->core, n, K, r->temperature, th + i0, memo, r->dt, split, sF, sL, dL);
+        finite = !(how & THERMAL_NONFINITE);
+        still = (how & THERMAL_STILL) != 0;
     }
     /* the block's F and L: the run's own columns, or the split's products */
     const double *Fb[9], *Lb[9];
@@ -575,7 +593,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
             if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7))) scale_column(Fm[c], r->F[c], sF, NULL, n), Fb[c] = Fm[c];
         if (r->dt > 0) /* the diagonal: L c * exp(r), then + expm1(r) / dt (-std=c17: never contracted to an fma) */
             for (int c = 0; c < 9; c++)
-                if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7)))
+                if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7)) && !(still && c % 4 != 0)) /* still: x * 1.0 */
                     scale_column(Lm[c], r->grad_v[c], sL, c % 4 == 0 ? dL : NULL, n), Lb[c] = Lm[c];
     }
     b.temperature = needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? (r->temperature ? r->temperature : nan_col) : NULL;
