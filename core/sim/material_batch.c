@@ -609,17 +609,18 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
 
     /* non-finite entries: x - x is 0 for a finite x and NaN otherwise (material_finite9's test), over
      * the nine columns at once (a loop the compiler vectorises): a sum of zeros is 0, and a NaN makes it NaN */
+    /* and whether any point needs the fix-up below, in the same loop, with no branch per point: almost never */
     double z[HEARTH_BLOCK_MAX];
+    long trouble = 0, unsplit = 0; /* unsplit: the points whose strain was not taken out (no temperature, bad K) */
     {
         const double *t0 = tau[0], *t1 = tau[1], *t2 = tau[2], *t3 = tau[3], *t4 = tau[4], *t5 = tau[5], *t6 = tau[6],
                      *t7 = tau[7], *t8 = tau[8];
-        for (int j = 0; j < n; j++)
+        for (int j = 0; j < n; j++) {
             z[j] = (t0[j] - t0[j]) + (t1[j] - t1[j]) + (t2[j] - t2[j]) + (t3[j] - t3[j]) + (t4[j] - t4[j]) +
                    (t5[j] - t5[j]) + (t6[j] - t6[j]) + (t7[j] - t7[j]) + (t8[j] - t8[j]);
+            trouble += (code[j] != 0) | !(z[j] == 0);
+        }
     }
-    /* whether any point needs the fix-up below, in loops with no branch per point: almost never */
-    long trouble = 0, unsplit = 0; /* unsplit: the points whose strain was not taken out (no temperature, bad K) */
-    for (int j = 0; j < n; j++) trouble += (code[j] != 0) | !(z[j] == 0);
     if (th)
         for (int j = 0; j < n; j++) unsplit += split[j] != 1;
     trouble += unsplit;
