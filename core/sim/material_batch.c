@@ -226,12 +226,14 @@ static inline int same_bits(double x, double y) {
 enum { CURVE_MEMO_VALUES = CURVE_MEMO_WIDTH - 3 };
 static inline __attribute__((always_inline)) void curve_memo_loop(const material_slot *ms, const material_run_params *rp,
                                                                   double *memo, int i0, int n, int nm,
-                                                                  double *const col[CURVE_MEMO_VALUES]) {
+                                                                  double *const col[CURVE_MEMO_VALUES], int byT,
+                                                                  int byTmax) {
     const double stamp = ms->curve_stamp, *T = rp->T + i0, *Tmax = rp->Tmax + i0;
     double *m = memo + (size_t)i0 * CURVE_MEMO_WIDTH;
     for (int j = 0; j < n; j++, m += CURVE_MEMO_WIDTH) {
         const double t = T[j], tm = Tmax[j];
-        if (__builtin_expect(m[0] == stamp && same_bits(m[1], t) && same_bits(m[2], tm), 1)) {
+        /* a key the memo's curves do not read need not match: their values do not depend on it */
+        if (__builtin_expect(m[0] == stamp && (!byT || same_bits(m[1], t)) && (!byTmax || same_bits(m[2], tm)), 1)) {
             for (int k = 0; k < nm; k++) col[k][j] = m[3 + k];
             continue;
         }
@@ -250,8 +252,11 @@ static int curve_memo_columns(const material_slot *ms, const material_run_params
     for (int t = 0; t < nm; t++) col[t] = vcol[col_of[ms->curves[t].param]];
     /* the loop for the usual count, the memo's full two, with its copies unrolled (22 instructions a point
      * through the general loop) */
-    if (nm == CURVE_MEMO_VALUES) curve_memo_loop(ms, rp, memo, i0, n, CURVE_MEMO_VALUES, col);
-    else if (nm > 0) curve_memo_loop(ms, rp, memo, i0, n, nm, col);
+    int byT = 0, byTmax = 0; /* which of the key's temperatures the memo's curves read */
+    for (int t = 0; t < nm; t++) byTmax |= ms->curves[t].irreversible, byT |= !ms->curves[t].irreversible;
+    if (nm == CURVE_MEMO_VALUES && !byT) curve_memo_loop(ms, rp, memo, i0, n, CURVE_MEMO_VALUES, col, 0, 1); /* Fig. 8's */
+    else if (nm == CURVE_MEMO_VALUES) curve_memo_loop(ms, rp, memo, i0, n, CURVE_MEMO_VALUES, col, byT, byTmax);
+    else if (nm > 0) curve_memo_loop(ms, rp, memo, i0, n, nm, col, byT, byTmax);
     return nm;
 }
 
