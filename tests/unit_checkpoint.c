@@ -742,9 +742,61 @@ TEST(checkpoint_memo_columns_refused) {
     hearth_scene_destroy(s);
 }
 
+/* The temperature curves' memo (PC_CURVE_MEMO, material_batch.c) is a cache too: a dough with a curve on
+ * tau_y saves no memo column after 20 steps that filled it, its restore starts it empty and continues with the
+ * same bits as the unbroken run, and a file that claims it is refused by name. */
+static void curve_memo_bit(uint8_t *b, size_t n) {
+    const size_t at = find(b, n, "PART", 4);
+    uint32_t v;
+    memcpy(&v, b + at + 12, 4);
+    set_u32_after(b, n, "PART", 8, v | (1u << PC_CURVE_MEMO));
+}
+TEST(checkpoint_curve_memo_refused_and_refilled) {
+    hearth_scene *s = vent_scene(0.02);
+    CHECK(s != NULL);
+    if (!s) return;
+    hearth_error err;
+    const double T[2] = {20, 60}, ty[2] = {1e6, 5e5};
+    CHECK(hearth_scene_material_curve(s, 0, "tau_y", 2, T, ty, 1, &err) == HEARTH_OK);
+    CHECK(s->ps.enabled & (1u << PC_CURVE_MEMO));
+    CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+    int filled = 0;
+    for (int i = 0; i < s->ps.n; i++) filled += pcold(&s->ps, PC_CURVE_MEMO)[CURVE_MEMO_WIDTH * i] > 0;
+    CHECK(filled == s->ps.n);
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    if (img) {
+        CHECK(find(img, n, "curve_memo", 10) == (size_t)-1);
+        expect_refused(img, n, curve_memo_bit, "a memo column");
+        free(img);
+    }
+    const char *path = "curve_memo_roundtrip.ck";
+    CHECK(hearth_scene_save(s, path, &err) == HEARTH_OK);
+    hearth_scene *r = hearth_scene_load(path, &err);
+    if (!r) printf("  load: %s\n", err.msg);
+    CHECK(r != NULL);
+    remove(path);
+    if (r) {
+        int empty = 0;
+        CHECK(r->ps.enabled & (1u << PC_CURVE_MEMO));
+        for (int i = 0; i < r->ps.n; i++) empty += pcold(&r->ps, PC_CURVE_MEMO)[CURVE_MEMO_WIDTH * i] == 0;
+        CHECK(empty == r->ps.n);
+        CHECK(hearth_scene_step(s, 40, &err) == HEARTH_OK);
+        CHECK(hearth_scene_step(r, 40, &err) == HEARTH_OK);
+        printf("  %d particles, %d memo entries filled at the save, %d empty after the restore; 20 + 40 steps: hash "
+               "unbroken %016llx, restored %016llx\n", s->ps.n, filled, empty,
+               (unsigned long long)hearth_scene_hash(s), (unsigned long long)hearth_scene_hash(r));
+        CHECK(hearth_scene_hash(r) == hearth_scene_hash(s));
+        hearth_scene_destroy(r);
+    }
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(checkpoint_v4_roundtrip), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
           T(checkpoint_bitflip_campaign), T(checkpoint_resealed_flips), T(checkpoint_crafted_fields),
           T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_count_before_alloc),
           T(checkpoint_not_regular_file), T(checkpoint_alloc_failures),
           T(checkpoint_v5_def_fields_refused), T(checkpoint_v4_reads_at_defaults), T(checkpoint_venting_continues_same_bits),
-          T(checkpoint_memo_columns_refused))
+          T(checkpoint_memo_columns_refused),
+          T(checkpoint_curve_memo_refused_and_refilled))

@@ -231,6 +231,65 @@ done:
         if (s[v]) hearth_scene_destroy(s[v]);
 }
 
+/* The temperature curves' memo (PC_CURVE_MEMO, material_batch.c) gives the curves' bits: the dough block with
+ * an irreversible curve on tau_y through an update and 20 steps, then a reversible one on E added (a new stamp:
+ * entries written for tau_y alone hold no E) and 20 more steps, then a third, on eta (beyond the memo's two
+ * values: evaluated every step), through the next update and 37 steps; it hashes the same whether its memo works
+ * or is emptied before every step, and differently once the memo's values are falsified one step after the
+ * update (the steps after read them). */
+TEST(field_clock_curve_memo_same_bits) {
+    hearth_scene *s[3] = {dough_block(), dough_block(), dough_block()}; /* memo; emptied each step; falsified once */
+    CHECK(s[0] && s[1] && s[2]);
+    if (!s[0] || !s[1] || !s[2]) goto done;
+    hearth_error err;
+    const double T[2] = {20, 60}, ty[2] = {200, 2000}, E[2] = {1e5, 5e4}, eta[2] = {500, 100};
+    int hits = 0, updates = 0;
+    for (int v = 0; v < 3; v++) {
+        particles *ps = &s[v]->ps;
+        const size_t bytes = sizeof(double) * CURVE_MEMO_WIDTH * (size_t)ps->n;
+        CHECK(hearth_scene_material_curve(s[v], 0, "tau_y", 2, T, ty, 1, &err) == HEARTH_OK);
+        CHECK(ps->enabled & (1u << PC_CURVE_MEMO));
+        long steps = 0;
+        for (int u = 0, j = 0; u < 2 && steps < 100000; steps++) {
+            if (u == 1 && j == 20) CHECK(hearth_scene_material_curve(s[v], 0, "E", 2, T, E, 0, &err) == HEARTH_OK);
+            if (u == 1 && j == 40) CHECK(hearth_scene_material_curve(s[v], 0, "eta", 2, T, eta, 0, &err) == HEARTH_OK);
+            j += u == 1;
+            if (v == 1) memset(ps->col[PC_CURVE_MEMO], 0, bytes);
+            CHECK(hearth_scene_step(s[v], 1, &err) == HEARTH_OK);
+            u += s[v]->field_phase == 0;
+        }
+        if (v == 0) {
+            const material_slot *ms = &s[v]->mats.slot[0];
+            const double *m = pcold(ps, PC_CURVE_MEMO);
+            for (int i = 0; i < ps->n; i++, m += CURVE_MEMO_WIDTH) {
+                hits += m[0] == ms->curve_stamp;
+                if (m[0] == ms->curve_stamp) /* tau_y at T_max, E at T: the first two temperature curves */
+                    CHECK(m[3] == curve_eval(&ms->curves[0], m[2]) && m[4] == curve_eval(&ms->curves[1], m[1]));
+            }
+            updates = (int)steps;
+        }
+        for (int j = 0; j < 37; j++) {
+            if (v == 2 && j == 1)
+                for (int i = 0; i < ps->n; i++) /* E's (an elastic block: tau_y's bound is not reached) */
+                    pcold(ps, PC_CURVE_MEMO)[CURVE_MEMO_WIDTH * i + 4] *= 1.5;
+            if (v == 1) memset(ps->col[PC_CURVE_MEMO], 0, bytes);
+            CHECK(hearth_scene_step(s[v], 1, &err) == HEARTH_OK);
+        }
+        printf("  %s: %ld steps to the second update, 37 more: hash %016llx\n",
+               v == 0 ? "memo" : v == 1 ? "memo emptied each step" : "memo falsified after the update", steps,
+               (unsigned long long)hearth_scene_hash(s[v]));
+    }
+    printf("  %d particles; %d steps to the second update; filled entries after it %d; curves %d, stamp %d\n",
+           s[0]->ps.n, updates, hits, s[0]->mats.slot[0].ncurves, s[0]->mats.slot[0].curve_stamp);
+    CHECK(updates > 60); /* the curves were added between the updates */
+    CHECK(hits > 0);
+    CHECK(hearth_scene_hash(s[0]) == hearth_scene_hash(s[1]));
+    CHECK(hearth_scene_hash(s[0]) != hearth_scene_hash(s[2]));
+done:
+    for (int v = 0; v < 3; v++)
+        if (s[v]) hearth_scene_destroy(s[v]);
+}
+
 /* field_steps outside [0, 4096] is refused, naming the setting and its range. */
 TEST(field_clock_bad_setting) {
     hearth_scene_def d = hearth_default_scene_def();
@@ -247,4 +306,5 @@ TEST(field_clock_bad_setting) {
 }
 
 TEST_MAIN(T(field_clock_cycle_within_limit), T(field_clock_matches_single_rate), T(field_clock_checkpoint_mid_cycle),
-          T(field_clock_threads_same_bits), T(field_clock_bad_setting), T(field_clock_memos_read_for_same_bits))
+          T(field_clock_threads_same_bits), T(field_clock_bad_setting), T(field_clock_memos_read_for_same_bits),
+          T(field_clock_curve_memo_same_bits))

@@ -238,5 +238,9 @@ hearth_status hearth_scene_material_curve_of(hearth_scene *s, int mat, const cha
     if (!st && of == HEARTH_CURVE_TEMPERATURE) st = scene_enable_temperature(s, err);
     if (!st && of == HEARTH_CURVE_MOISTURE && irreversible) st = particles_enable(&s->ps, PC_DRIED, err);
     if (!st) st = material_curve_add(&s->mats, mat, k, (int)of, n, x, v, irreversible, err);
+    /* the MPM batched door keeps the temperature curves' values between the fields' updates (material_batch.c,
+     * PC_CURVE_MEMO: CURVE_MEMO_WIDTH doubles a particle), the only reader: a scene pays for it only there */
+    if (!st && of == HEARTH_CURVE_TEMPERATURE && s->def.solver == HEARTH_SOLVER_MPM && s->mats.slot[mat].m->stress_block)
+        st = particles_enable(&s->ps, PC_CURVE_MEMO, err);
     return st;
 }

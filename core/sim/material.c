@@ -244,6 +244,9 @@ hearth_status material_curve_add(material_table *t, int mat, int k, int of, int 
     memcpy(vv, v, sizeof(double) * (size_t)n);
     ms->curves[at] = (curve){.param = k, .n = n, .T = tt, .v = vv, .irreversible = irreversible != 0, .of = of};
     ms->ncurves++;
+    /* a new identity for the slot's curves: a particle's PC_CURVE_MEMO entry (material_batch.c) written for the
+     * old set, whose curve indices this insertion may have shifted, no longer matches */
+    ms->curve_stamp = ++t->curve_epoch;
     /* a curve may move the parameters into cracking: asked at each of its values (a moisture curve's as
      * factors on the base), with the other parameters at their base values */
     for (int j = 0; j < n && !ms->fracture && ms->m->damage; j++) {

@@ -61,6 +61,8 @@ typedef struct material_slot {
     int fracture;       /* the plugin reports damage and these parameters may crack (material.c); in ncurves' padding */
     double core[CP_COUNT]; /* field properties (params.h CP_*) */
     int mix_k;             /* a mixture (mixing.c): number of constituents, 0 for a plain material */
+    int curve_stamp;       /* its curves' identity in the table (> 0 once it has one; each curve added gives a new
+                            * one): the key of PC_CURVE_MEMO's entries, so no entry outlives the curves it holds */
     double *mix_params;    /* mix_k parameter sets, schema order */
 } material_slot;
 
@@ -68,6 +70,7 @@ typedef struct material_slot {
 typedef struct material_table {
     material_slot *slot;
     int n, cap;
+    int curve_epoch; /* the last curve stamp handed out (material_curve_add) */
 } material_table;
 
 /// An empty table (allocates nothing).

@@ -16,6 +16,7 @@
  * hundred (cam_clay_dough) instructions, which the plugin may now vectorise. */
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "exp_memo.h"
@@ -83,8 +84,12 @@ static inline void scale_column(double *restrict out, const double *restrict x, 
  * (2D, 64 cells). glibc's early return there is cheap already, so this saves about 9 instructions a
  * point over the per-point scalars (material_thermal_scales). A point the split leaves alone gets x = 0
  * and r = -0.0: 1, 1 and -0.0, as material_thermal_scales gives it. */
+/* Returns THERMAL_NONFINITE when a scale is not finite (exp's: >= +0, inf or NaN), and THERMAL_STILL when
+ * every sL is 1.0 (no point's r took libm: the temperatures held over the step, as between the fields'
+ * updates), where L's off-diagonal entries come through the split as they are (x * 1.0 is x). */
+enum { THERMAL_NONFINITE = 1, THERMAL_STILL = 2 };
 __attribute__((noinline)) /* inlined, its arrays and loops cost the elastic step's door 2 instructions a point */
-static void thermal_scales_block(const double *core, int n, const double *restrict K, const double *restrict T,
+static int thermal_scales_block(const double *core, int n, const double *restrict K, const double *restrict T,
                                  double *restrict e_store, double *restrict memo, double dt, signed char *restrict split,
                                  double *restrict sF, double *restrict sL, double *restrict dL) {
     const double cl = core[CP_EXPANSION], Tr = core[CP_REFERENCE_T];
@@ -98,22 +103,36 @@ static void thermal_scales_block(const double *core, int n, const double *restri
         R[j] = sp == 1 && dt > 0 ? (e0 - e) / 3 : -0.0;
         e_store[j] = sp == 1 && dt > 0 ? e : e0;
     }
-    /* x holds between the fields' updates (the temperature does, and K with it): its exp once a cycle (exp_memo.h) */
+    /* x holds between the fields' updates (the temperature does, and K with it): its exp once a cycle (exp_memo.h);
+     * the scales' finiteness counted in the loops that make them (a loop of its own over sF and sL cost 10
+     * instructions a point) */
+    long inf = 0, moved = 0;
     if (memo)
-        for (int j = 0; j < n; j++) sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp_memo(memo + 2 * j, X[j]);
+        for (int j = 0; j < n; j++) {
+            sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp_memo(memo + 2 * j, X[j]);
+            inf += !(sF[j] <= DBL_MAX);
+        }
     else
-        for (int j = 0; j < n; j++) sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp(X[j]);
+        for (int j = 0; j < n; j++) {
+            sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp(X[j]);
+            inf += !(sF[j] <= DBL_MAX);
+        }
     if (dt > 0) {
         /* every point's small-r values first, in a loop with no branch (one vector division), then libm where
          * r is not small: the values the branch per point gave, which was 11 instructions a point */
         for (int j = 0; j < n; j++) sL[j] = 1.0, dL[j] = R[j] / dt;
         for (int j = 0; j < n; j++) {
             const double r = R[j];
-            if (!(fabs(r) < 0x1p-54)) sL[j] = exp(r), dL[j] = expm1(r) / dt;
+            if (!(fabs(r) < 0x1p-54)) {
+                sL[j] = exp(r), dL[j] = expm1(r) / dt;
+                inf += !(sL[j] <= DBL_MAX);
+                moved++;
+            }
         }
     } else {
         for (int j = 0; j < n; j++) sL[j] = 1.0, dL[j] = -0.0;
     }
+    return (inf ? THERMAL_NONFINITE : 0) | (moved ? 0 : THERMAL_STILL);
 }
 
 /* The particles' thermal strain column when eq. 10 is a strain for this run
@@ -187,6 +206,60 @@ const double *material_run_params_at(material_run_params *rp, const material_slo
     return q;
 }
 
+/* Same bits: x and y are one double (curve_eval is a function of its argument's bits, -0.0 and NaNs included). */
+static inline int same_bits(double x, double y) {
+    uint64_t a, b;
+    memcpy(&a, &x, sizeof a);
+    memcpy(&b, &y, sizeof b);
+    return a == b;
+}
+
+/* The first temperature curves' columns (up to CURVE_MEMO_WIDTH - 3 of them) through the particles' curve memo
+ * (PC_CURVE_MEMO): between the fields' updates a particle's T and T_max hold (field_clock.c), so its curves
+ * give the values of the step before, which the memo keeps with their key (the slot's curve stamp, T and
+ * T_max, bit for bit); a point whose key differs evaluates the curves (curve_eval: curve_eval_column's values)
+ * and writes its entry. A cache keyed on everything the values are a function of, as exp_memo.h's: nothing
+ * invalidates it (a field step, a held body, a restore, the sort, a curve added: a new stamp), and it is
+ * neither hashed nor saved. Returns how many curves it gave (0: the material has no temperature curve).
+ * In the 2D dough bench (scripts/bench/dough_step.lua) the cookie's two curves cost 55 instructions a point
+ * a step through curve_eval_column. */
+enum { CURVE_MEMO_VALUES = CURVE_MEMO_WIDTH - 3 };
+static inline __attribute__((always_inline)) void curve_memo_loop(const material_slot *ms, const material_run_params *rp,
+                                                                  double *memo, int i0, int n, int nm,
+                                                                  double *const col[CURVE_MEMO_VALUES], int byT,
+                                                                  int byTmax) {
+    const double stamp = ms->curve_stamp, *T = rp->T + i0, *Tmax = rp->Tmax + i0;
+    double *m = memo + (size_t)i0 * CURVE_MEMO_WIDTH;
+    for (int j = 0; j < n; j++, m += CURVE_MEMO_WIDTH) {
+        const double t = T[j], tm = Tmax[j];
+        /* a key the memo's curves do not read need not match: their values do not depend on it */
+        if (__builtin_expect(m[0] == stamp && (!byT || same_bits(m[1], t)) && (!byTmax || same_bits(m[2], tm)), 1)) {
+            for (int k = 0; k < nm; k++) col[k][j] = m[3 + k];
+            continue;
+        }
+        m[0] = stamp, m[1] = t, m[2] = tm;
+        for (int k = 0; k < nm; k++) {
+            const curve *c = &ms->curves[k];
+            col[k][j] = m[3 + k] = curve_eval(c, c->irreversible ? tm : t);
+        }
+    }
+}
+
+static int curve_memo_columns(const material_slot *ms, const material_run_params *rp, double *memo, int i0, int n,
+                              const int *col_of, double (*vcol)[HEARTH_BLOCK_MAX]) {
+    const int nm = rp->nt < CURVE_MEMO_VALUES ? rp->nt : CURVE_MEMO_VALUES;
+    double *col[CURVE_MEMO_VALUES] = {0};
+    for (int t = 0; t < nm; t++) col[t] = vcol[col_of[ms->curves[t].param]];
+    /* the loop for the usual count, the memo's full two, with its copies unrolled (22 instructions a point
+     * through the general loop) */
+    int byT = 0, byTmax = 0; /* which of the key's temperatures the memo's curves read */
+    for (int t = 0; t < nm; t++) byTmax |= ms->curves[t].irreversible, byT |= !ms->curves[t].irreversible;
+    if (nm == CURVE_MEMO_VALUES && !byT) curve_memo_loop(ms, rp, memo, i0, n, CURVE_MEMO_VALUES, col, 0, 1); /* Fig. 8's */
+    else if (nm == CURVE_MEMO_VALUES) curve_memo_loop(ms, rp, memo, i0, n, CURVE_MEMO_VALUES, col, byT, byTmax);
+    else if (nm > 0) curve_memo_loop(ms, rp, memo, i0, n, nm, col, byT, byTmax);
+    return nm;
+}
+
 /* The varying parameters of points i0 .. i0 + n - 1 as columns (vcol[v] for
  * parameter vk[v]): the values material_run_params_at gives point by point, to
  * the bit, computed curve by curve over the block. A parameter's value is its
@@ -203,7 +276,8 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
     for (int v = 0; v < nv; v++)
         if (!by_T[v])
             for (int j = 0; j < n; j++) vcol[v][j] = ms->params[vk[v]];
-    for (int t = 0; t < nt; t++) {
+    const int nm = ps->enabled & (1u << PC_CURVE_MEMO) ? curve_memo_columns(ms, rp, pcold(ps, PC_CURVE_MEMO), i0, n, col_of, vcol) : 0;
+    for (int t = nm; t < nt; t++) {
         const curve *c = &ms->curves[t];
         const double *x = (c->irreversible ? rp->Tmax : rp->T) + i0;
         curve_eval_column(c, x, n, vcol[col_of[c->param]]);
@@ -215,10 +289,10 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
     if (!(ps->enabled & (1u << PC_WATER))) {
         int undried = 1;
         if (rp->dried) {
-            long wet = 0; /* the points that dried, counted in a loop the compiler vectorises (an &= did not) */
+            /* whether a point dried: the first one found ends the scan (a count over every point, vectorised, cost
+             * 7 instructions a point in a block that never dried) */
             const double *dr = rp->dried + i0;
-            for (int j = 0; j < n; j++) wet += !(1.0 - dr[j] >= 1.0);
-            undried = wet == 0;
+            for (int j = 0; j < n && undried; j++) undried = 1.0 - dr[j] >= 1.0;
         }
         if (undried) {
             if (!(rp->r == 1.0 && rp->rd == 1.0))
@@ -227,7 +301,8 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
             for (int k = nt; k < nc; k++) {
                 double *col = vcol[col_of[ms->curves[k].param]];
                 const double f = rp->f[k - nt];
-                for (int j = 0; j < n; j++) col[j] *= f;
+                if (f != 1.0) /* x * 1.0 is x: a dry curve's factor at the raw dough's ratio 1 leaves the column */
+                    for (int j = 0; j < n; j++) col[j] *= f;
             }
             return;
         }
@@ -260,7 +335,8 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
             for (int j = 0; j < n; j++) col[j] *= f[j];
         } else {
             const double f = rp->f[k - nt];
-            for (int j = 0; j < n; j++) col[j] *= f;
+            if (f != 1.0) /* x * 1.0 is x (the columns are finite parameters) */
+                for (int j = 0; j < n; j++) col[j] *= f;
         }
     }
 }
@@ -313,12 +389,14 @@ static double run_points(const material_table *t, const particles *ps, const mat
  * same bits. A cracked point (damage >= 1) gets the tension cut-off instead, as
  * material_point_couple gives it. P: the porosity at the start of the step
  * (NULL: NaN); split: the points whose thermal strain was taken out of F and L
- * (NULL: none), which get no thermal pressure. q holds ms->params when nv > 0
+ * (NULL: none), which get no thermal pressure; all_split: every point was (the
+ * usual block of a plugin with bulk_modulus: no thermal pressure loop). q holds ms->params when nv > 0
  * (the door copied them). Per point this was 120-odd instructions of copies
  * and branches (pt, env, tj) around the calls. */
 static double run_after_block(const material_slot *ms, const material_run *r, unsigned flags, double *q, int nv,
                               const int *vk, double (*vcol)[HEARTH_BLOCK_MAX], const hearth_block *b,
-                              const double *P, const signed char *split, double *const tau[9], double *wave) {
+                              const double *P, const signed char *split, int all_split, double *const tau[9],
+                              double *wave) {
     double *state = b->state;
     const int stride = b->state_stride;
     const hearth_material *m = ms->m;
@@ -399,15 +477,21 @@ static double run_after_block(const material_slot *ms, const material_run *r, un
     }
     if (gas) { /* gas pressure (eq. 13), with the porosity after this step's plastic flow */
         const double *gj = gas + r->i0, n0 = core[CP_POROSITY0];
-        for (int j = 0; j < n; j++) {
-            if (cracked[j]) continue;
-            const double np = m->plastic_J ? gas_porosity(JP1[j], n0) : P ? P[j] : NAN;
-            const double tg = gas_tau(gj[j], T ? T[j] : NAN, np);
-            t0[j] += tg, t4[j] += tg, t8[j] += tg;
-        }
+        if (!ncracked && m->plastic_J && T) /* the usual block: the same arithmetic without a test per point */
+            for (int j = 0; j < n; j++) {
+                const double tg = gas_tau(gj[j], T[j], gas_porosity(JP1[j], n0));
+                t0[j] += tg, t4[j] += tg, t8[j] += tg;
+            }
+        else
+            for (int j = 0; j < n; j++) {
+                if (cracked[j]) continue;
+                const double np = m->plastic_J ? gas_porosity(JP1[j], n0) : P ? P[j] : NAN;
+                const double tg = gas_tau(gj[j], T ? T[j] : NAN, np);
+                t0[j] += tg, t4[j] += tg, t8[j] += tg;
+            }
     }
     const double cl = core[CP_EXPANSION];
-    if ((flags & MATERIAL_EXPANSION) && cl > 0) /* the thermal pressure, where the strain was not taken out */
+    if ((flags & MATERIAL_EXPANSION) && cl > 0 && !all_split) /* the thermal pressure, where the strain was not taken out */
         for (int j = 0; j < n; j++) {
             if (cracked[j] || (split && split[j])) continue;
             const double th = cl * ((T ? T[j] : NAN) - core[CP_REFERENCE_T]);
@@ -464,6 +548,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     double sF[HEARTH_BLOCK_MAX], sL[HEARTH_BLOCK_MAX], dL[HEARTH_BLOCK_MAX];
     const int porous_J = porous && m->plastic_J;
     int finite = 1; /* every point's F and L scales finite */
+    int still = 0;  /* every point's L scale 1.0 (thermal_scales_block) */
     if (porous && !m->plastic_J)
         for (int j = 0; j < n; j++) P[j] = gas_porosity(1.0, ms->core[CP_POROSITY0]);
     /* per point, one pass with its parameters patched once: J^P at the start of the step (as
@@ -505,10 +590,9 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         }
     if (th) { /* the split's scalars, then whether every point's are finite */
         double *memo = ps->enabled & (1u << PC_THERMAL_MEMO) ? pcold(ps, PC_THERMAL_MEMO) + 2 * (size_t)i0 : NULL;
-        thermal_scales_block(ms->core, n, K, r->temperature, th + i0, memo, r->dt, split, sF, sL, dL);
-        long inf = 0; /* exp's: >= +0, or inf, or NaN; counted, which the compiler vectorises */
-        for (int j = 0; j < n; j++) inf += !(sF[j] <= DBL_MAX) | !(sL[j] <= DBL_MAX);
-        finite = inf == 0;
+        const int how = thermal_scales_block(ms->core, n, K, r->temperature, th + i0, memo, r->dt, split, sF, sL, dL);
+        finite = !(how & THERMAL_NONFINITE);
+        still = (how & THERMAL_STILL) != 0;
     }
     /* the block's F and L: the run's own columns, or the split's products */
     const double *Fb[9], *Lb[9];
@@ -520,7 +604,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
             if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7))) scale_column(Fm[c], r->F[c], sF, NULL, n), Fb[c] = Fm[c];
         if (r->dt > 0) /* the diagonal: L c * exp(r), then + expm1(r) / dt (-std=c17: never contracted to an fma) */
             for (int c = 0; c < 9; c++)
-                if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7)))
+                if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7)) && !(still && c % 4 != 0)) /* still: x * 1.0 */
                     scale_column(Lm[c], r->grad_v[c], sL, c % 4 == 0 ? dL : NULL, n), Lb[c] = Lm[c];
     }
     b.temperature = needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? (r->temperature ? r->temperature : nan_col) : NULL;
@@ -536,19 +620,21 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
 
     /* non-finite entries: x - x is 0 for a finite x and NaN otherwise (material_finite9's test), over
      * the nine columns at once (a loop the compiler vectorises): a sum of zeros is 0, and a NaN makes it NaN */
+    /* and whether any point needs the fix-up below, in the same loop, with no branch per point: almost never */
     double z[HEARTH_BLOCK_MAX];
+    long trouble = 0, unsplit = 0; /* unsplit: the points whose strain was not taken out (no temperature, bad K) */
     {
         const double *t0 = tau[0], *t1 = tau[1], *t2 = tau[2], *t3 = tau[3], *t4 = tau[4], *t5 = tau[5], *t6 = tau[6],
                      *t7 = tau[7], *t8 = tau[8];
-        for (int j = 0; j < n; j++)
+        for (int j = 0; j < n; j++) {
             z[j] = (t0[j] - t0[j]) + (t1[j] - t1[j]) + (t2[j] - t2[j]) + (t3[j] - t3[j]) + (t4[j] - t4[j]) +
                    (t5[j] - t5[j]) + (t6[j] - t6[j]) + (t7[j] - t7[j]) + (t8[j] - t8[j]);
+            trouble += (code[j] != 0) | !(z[j] == 0);
+        }
     }
-    /* whether any point needs the fix-up below, in loops with no branch per point: almost never */
-    long trouble = 0;
-    for (int j = 0; j < n; j++) trouble += (code[j] != 0) | !(z[j] == 0);
     if (th)
-        for (int j = 0; j < n; j++) trouble += split[j] < 0;
+        for (int j = 0; j < n; j++) unsplit += split[j] != 1;
+    trouble += unsplit;
     for (int j = 0; j < n && trouble; j++) {
         if (__builtin_expect(!code[j] && !(z[j] == 0), 0)) code[j] = MATERIAL_NONFINITE;
         if (__builtin_expect(th && split[j] < 0, 0)) code[j] = MATERIAL_BAD_BULK; /* as run_points */
@@ -563,8 +649,8 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         plugin_call_leave();
         return 0;
     }
-    const double numax = run_after_block(ms, r, flags, q, nv, vk, vcol, &b, porous ? P : NULL, th ? split : NULL, tau,
-                                         wave);
+    const double numax = run_after_block(ms, r, flags, q, nv, vk, vcol, &b, porous ? P : NULL, th ? split : NULL,
+                                         th && !unsplit, tau, wave);
     plugin_call_leave();
     return numax;
 }

@@ -46,11 +46,19 @@ typedef enum pcol {
      * hashed nor saved: a zeroed entry misses, so any value computes the same bits */
     PC_THERMAL_MEMO,           /* the thermal split's exp(-ln J_th / 3) (material_batch.c's thermal_scales_block) */
     PC_GAS_MEMO,               /* the CO2 rate's exp(-u^2), u = (theta - theta_r) / dtheta (gas.c's gas_between) */
+    /* a cache of the temperature curves' values at the particle's last temperatures, CURVE_MEMO_WIDTH: its
+     * material's curve stamp, T and T_max (the key, compared bit for bit), then the values of the material's
+     * first CURVE_MEMO_WIDTH - 3 temperature curves (material_batch.c's run_params_columns); a zeroed entry
+     * misses (stamps start at 1). Never hashed nor saved, as the exp memos */
+    PC_CURVE_MEMO,
     PC_COUNT
 } pcol;
 
 /// Whether column c is a memo (a cache, not state: hearth_scene_hash and checkpoints leave it out).
-static inline int particles_col_is_memo(int c) { return c == PC_THERMAL_MEMO || c == PC_GAS_MEMO; }
+static inline int particles_col_is_memo(int c) { return c == PC_THERMAL_MEMO || c == PC_GAS_MEMO || c == PC_CURVE_MEMO; }
+/* PC_CURVE_MEMO's doubles a particle: the key (stamp, T, T_max) and two curves' values, the cookie's and
+ * muffin's (tau_y and eta); a material with more temperature curves evaluates the rest every step */
+enum { CURVE_MEMO_WIDTH = 5 };
 
 enum { PF_FIXED = 1, PF_BOUNDARY = 2, PF_HOLD_T = 4 }; /* pinned body; boundary particle (Ding et al. §6.6); keeps its temperature (a held body) */
 
