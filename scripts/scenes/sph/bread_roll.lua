@@ -35,14 +35,9 @@
 -- it) dissolves CO2 in the dough's water by Henry's law, which the heat
 -- drives into the bubbles.
 -- From 1.6 s the roll rocks on a convex base, 2-6 mm off the tray at one end
--- (docs/validation.md "The roll's base"): its set shell holds the dough's
--- squeeze beside squeezed bubbles and the push of the bubbles at the vapour's
--- cap. --set foam=true caps the dough at its bubbles' pressure (on the tray to
--- 1.6 s, then it rocks; a crumb comes off at 2 s), --set vent=true (with it)
--- opens the capped bubbles (the rise stalls at 1.28x and it tears at 2 s:
--- the open crust pushes nothing, and its last closed cells push up to 4.7x
--- their gas just before they open and burst its top; docs/validation.md
--- "Both switches on"). Neither is the preset's.
+-- (docs/validation.md "The roll's base"): its set shell holds the inside's
+-- pressure. (Two switches tried for it, a cap on the dough beside bubbles and
+-- vented open cells, are deleted: "Both switches on".)
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature), particles_NNNN.csv (positions, for
 -- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
@@ -75,14 +70,13 @@ local P = h.params { bubbles = "even", dx = 0.002, oven = 180, visc_scale = 100,
   radius = 0.025, xsph0 = 0.05, heat_ext = 4.44, artificial_stress = sph.artificial_stress, tension = sph.tension,
   gas_law = sph.gas_law, vapour = sph.bubble_vapour, vmax = sph.bubble_vmax or 4,
   continuity = sph.continuity_density or false, renormalised = sph.renormalised_density or false,
-  gas_pressure = sph.gas_pressure or 0, foam = sph.foam_pressure or false, vent = sph.bubble_vent or false,
-  dough_water = sph.dough_water or 0 }
+  gas_pressure = sph.gas_pressure or 0, dough_water = sph.dough_water or 0 }
 
 sph.heat_ext, sph.heat_int, sph.av_beta = P.heat_ext, 0.2, 1
 sph.gas_law, sph.bubble_vapour, sph.bubble_vmax = P.gas_law, P.vapour, P.vmax
 sph.artificial_stress, sph.tension = P.artificial_stress, P.tension
 sph.continuity_density, sph.renormalised_density, sph.gas_pressure = P.continuity, P.renormalised, P.gas_pressure
-sph.foam_pressure, sph.bubble_vent, sph.dough_water = P.foam, P.vent, P.dough_water
+sph.dough_water = P.dough_water
 sph.xsph0 = P.xsph0 -- eq. 4.4 at the raw end (Table 4.1: 0.05)
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph", sph = sph,
   oven = { temperature = P.oven, beta = 0 }, browning = true, browning_scale = 400 }
