@@ -539,24 +539,19 @@ TEST(sph_continuity_density_reads_no_skin) {
  * B (V_b - 1), ten times harder in the 1e7 dough than in the 1e6. Returns the
  * bubbles' mean pressure; *B their Tait B; *spread the largest difference
  * between bubbles. */
-/* The block of dough with its middle 3 x 3 bubbles, at T everywhere, after one
+/* The block of dough with its middle 3 x 3 bubbles, at T everywhere, after
  * `steps` steps (the sum takes the gas law's rest volumes from the second,
- * sph.c rest_volume): dough of bulk `bulk`, sph.gas_pressure pa, the density by the own
- * volume (mode 0, continuity_density) or by the renormalised sum (mode 1,
- * renormalised_density; mode 2 with sph.foam_pressure too; mode 3 the own
- * volume with sph.bubble_vent). NULL on a
- * failure (printed); *bub the bubbles' material. */
-static hearth_scene *bubble_block(double bulk, double pa, double T, int mode, int steps, int *bub) {
+ * sph.c rest_volume): dough of bulk `bulk`, sph.gas_pressure pa, the density
+ * by the particle's own volume (continuity_density). NULL on a failure
+ * (printed); *bub the bubbles' material. */
+static hearth_scene *bubble_block(double bulk, double pa, double T, int steps, int *bub) {
     const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.04, 0.04, 0};
     hearth_scene_def d = sph_def(2, dx, lo, hi);
     d.gravity[1] = 0;
     d.sph.tension = 1;
     d.sph.gas_law = 1;
     d.sph.bubble_vapour = 0.95;
-    d.sph.continuity_density = mode == 0 || mode == 3;
-    d.sph.renormalised_density = mode == 1 || mode == 2;
-    d.sph.foam_pressure = mode == 2;
-    d.sph.bubble_vent = mode == 3;
+    d.sph.continuity_density = 1;
     d.sph.gas_pressure = pa;
     hearth_scene *s = hearth_scene_create(&d, NULL);
     if (!s) return NULL;
@@ -584,7 +579,7 @@ static hearth_scene *bubble_block(double bulk, double pa, double T, int mode, in
 
 static double bubble_push(double bulk, double pa, double T, double *B, double *spread) {
     int bub;
-    hearth_scene *s = bubble_block(bulk, pa, T, 0, 1, &bub);
+    hearth_scene *s = bubble_block(bulk, pa, T, 1, &bub);
     double mean = NAN;
     *spread = NAN, *B = NAN;
     if (s) {
@@ -644,109 +639,7 @@ TEST(sph_renormalised_density_reads_no_skin) {
     else printf("refused: %s\n", err.msg);
 }
 
-/* sph.foam_pressure: the walls between a foam's cells hold their gas's
- * pressure. The block above at 70 degC (two steps), its 3 x 3 bubbles at
- * their raw volume where their gas stands at V_b = 1.58 (squeezed 1.58x), the
- * density by the renormalised sum (the bread roll's preset), dough of bulk
- * 1e6 Pa (B 1.4e5). The sum smooths the bubbles' excess rest volume into the dough
- * round them, which reads a squeeze of its own and, by Tait at gamma 7,
- * holds more than the bubbles push (the over-count that lifted the roll's
- * base, docs/validation.md "The roll's base"). With foam_pressure each dough
- * particle with a bubble in its kernel holds at most the highest pressure
- * among those bubbles, exactly; the bubbles' own pressures and the dough
- * beyond their reach keep their bits. Outputs: the largest dough pressure
- * beside the bubbles over the bubbles' largest, off and on. */
-static void foam_case(int mode, double *wall_max, double *bub_max, double *over, double prs[], int *n) {
-    int bub;
-    hearth_scene *s = bubble_block(1e6, 0, 70, mode, 2, &bub);
-    *wall_max = *bub_max = *over = NAN, *n = 0;
-    if (!s) return;
-    const struct sph_state *st = s->sph;
-    const int *mat = pcoli(&s->ps, PC_MAT), *id = pcoli(&s->ps, PC_ID), *off = st->nl.off, *nb = st->nl.j;
-    *wall_max = *bub_max = -HUGE_VAL, *over = -HUGE_VAL;
-    for (int i = 0; i < s->ps.n; i++) {
-        if (id[i] < 128) prs[id[i]] = st->prs[i], *n = *n > id[i] + 1 ? *n : id[i] + 1;
-        if (mat[i] == bub) {
-            *bub_max = fmax(*bub_max, st->prs[i]);
-            continue;
-        }
-        double hi = -HUGE_VAL; /* the highest bubble pressure in i's kernel */
-        for (int k = off[i]; k < off[i + 1]; k++)
-            if (mat[nb[k]] == bub) hi = fmax(hi, st->prs[nb[k]]);
-        if (hi == -HUGE_VAL) continue;
-        *wall_max = fmax(*wall_max, st->prs[i]);
-        *over = fmax(*over, st->prs[i] - fmax(hi, 0.0)); /* above what its bubbles hold */
-    }
-    hearth_scene_destroy(s);
-}
-
-TEST(sph_foam_pressure_walls_hold_the_gas) {
-    double w0, b0, o0, w1, b1, o1, p0[128], p1[128];
-    int n0, n1;
-    foam_case(1, &w0, &b0, &o0, p0, &n0);
-    foam_case(2, &w1, &b1, &o1, p1, &n1);
-    printf("renormalised sum: dough beside the bubbles up to %.1f Pa, bubbles up to %.1f Pa (%.2fx), above its own "
-           "bubbles by up to %.1f Pa\n",
-           w0, b0, w0 / b0, o0);
-    printf("with foam_pressure: dough beside the bubbles up to %.1f Pa, bubbles up to %.1f Pa, above its own bubbles by "
-           "up to %.3g Pa\n",
-           w1, b1, o1);
-    CHECK(o0 > 0.1 * b0); /* the over-count: the walls read more than their gas */
-    CHECK(o1 <= 0);       /* capped: never above what its bubbles hold */
-    CHECK(b1 == b0);      /* the gas itself is untouched */
-    int same = n0 == n1 && n0 > 0, far = 0;
-    for (int i = 0; i < n0 && same; i++) same = p1[i] <= p0[i], far += p1[i] == p0[i];
-    printf("%d particles, %d keep their pressure bit for bit (the bubbles and the dough beyond their reach)\n", n0, far);
-    CHECK(same && far > 0);
-    const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.1, 0};
-    hearth_scene_def d = sph_def(2, 0.005, lo, hi);
-    d.sph.foam_pressure = 1;
-    hearth_error err;
-    hearth_scene *s = hearth_scene_create(&d, &err); /* without the gas law: refused, by name */
-    CHECK(s == NULL && strstr(err.msg, "sph.foam_pressure") && strstr(err.msg, "sph.gas_law"));
-    if (s) hearth_scene_destroy(s);
-    else printf("refused: %s\n", err.msg);
-}
-
-/* sph.bubble_vent: at bubble_vmax (4) a bubble's cell is open and its gas
- * escapes, so it pushes no further. The block above, one step, each bubble
- * at its raw volume: at 99 degC the gas law's volume is past the cap (the
- * vapour alone nears the oven's pressure), so without the vent each bubble
- * pushes B (4 - 1) and with it nothing (0: its dough's Tait against the raw
- * density reads no squeeze); at 70 degC (V_b 1.58, closed) the vent changes
- * no bit. */
-static double bubble_mean(double T, int mode) {
-    int bub;
-    hearth_scene *s = bubble_block(1e6, 0, T, mode, 1, &bub);
-    double sum = 0;
-    int nb = 0;
-    if (!s) return NAN;
-    const int *mat = pcoli(&s->ps, PC_MAT);
-    for (int i = 0; i < s->ps.n; i++)
-        if (mat[i] == bub) sum += s->sph->prs[i], nb++;
-    hearth_scene_destroy(s);
-    return sum / nb;
-}
-
-TEST(sph_bubble_vent_open_cell_pushes_nothing) {
-    const double shut = bubble_mean(99, 0), vent = bubble_mean(99, 3);
-    const double warm = bubble_mean(70, 0), warm_vent = bubble_mean(70, 3);
-    printf("99 degC (past the cap): bubbles push %.1f Pa closed, %.3g Pa vented; 70 degC: %.6f Pa closed, %.6f vented\n",
-           shut, vent, warm, warm_vent);
-    CHECK(shut > 1e5);         /* closed at the cap: B (4 - 1) */
-    CHECK(vent == 0);          /* open: nothing */
-    CHECK(warm > 0 && warm_vent == warm); /* below the cap the vent is not there */
-    const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.1, 0};
-    hearth_scene_def d = sph_def(2, 0.005, lo, hi);
-    d.sph.bubble_vent = 1;
-    hearth_error err;
-    hearth_scene *s = hearth_scene_create(&d, &err); /* without the gas law: refused, by name */
-    CHECK(s == NULL && strstr(err.msg, "sph.bubble_vent") && strstr(err.msg, "sph.gas_law"));
-    if (s) hearth_scene_destroy(s);
-    else printf("refused: %s\n", err.msg);
-}
-
-/* The six options that act through sph.gas_law's pressure are refused
+/* The four options that act through sph.gas_law's pressure are refused
  * without it, each by one table (sph_gas.c sph_gas_check_def): the messages word for
  * word as they were when each had its own check (scripts and users grep
  * them), and none of them once sph.gas_law is on. */
@@ -756,25 +649,20 @@ TEST(sph_gas_law_refusals_word_for_word) {
         "particle's own volume); set both or neither",
         "scene: sph.renormalised_density = true needs sph.gas_law = true (it is the gas law's pressure that reads it); "
         "set both or neither",
-        "scene: sph.bubble_vent = true needs sph.gas_law = true (it opens the gas law's bubbles); set both or neither",
-        "scene: sph.foam_pressure = true needs sph.gas_law = true (it caps the dough's pressure by the gas law's "
-        "bubbles); set both or neither",
         "scene: sph.gas_pressure = 25000 Pa needs sph.gas_law = true (it is the gas law's bubble that holds the gas); "
         "set sph.gas_law = true or sph.gas_pressure = 0",
         "scene: sph.dough_water = 0.43 needs sph.gas_law = true (its CO2 comes out into the gas law's bubbles); set "
         "sph.gas_law = true or sph.dough_water = 0",
     };
     const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.1, 0};
-    for (int k = 0; k < 6; k++)
+    for (int k = 0; k < 4; k++)
         for (int law = 0; law < 2; law++) {
             hearth_scene_def d = sph_def(2, 0.005, lo, hi);
             d.sph.gas_law = law;
             d.sph.continuity_density = k == 0;
             d.sph.renormalised_density = k == 1;
-            d.sph.bubble_vent = k == 2;
-            d.sph.foam_pressure = k == 3;
-            d.sph.gas_pressure = k == 4 ? 2.5e4 : 0;
-            d.sph.dough_water = k == 5 ? 0.43 : 0;
+            d.sph.gas_pressure = k == 2 ? 2.5e4 : 0;
+            d.sph.dough_water = k == 3 ? 0.43 : 0;
             hearth_error err;
             err.msg[0] = 0;
             hearth_scene *s = hearth_scene_create(&d, &err);
@@ -793,7 +681,7 @@ TEST(sph_gas_law_refusals_word_for_word) {
  * density by their own volume) at 70 and 91 degC (V_b 1.58 and 3.75, both
  * closed) against their ideal gas at that volume, (P_a - P_v0)(T / T0) +
  * P_v(T) - P_a (eq. 2.42-2.43, 3.49-3.50, computed here), with sph.gas_pressure
- * pa (0: B-stiff, the roll's preset). */
+ * pa (0: B-stiff, the default; 101325 the roll's preset). */
 static void near_cap_ratios(double pa_set, double ratio[2], double *B) {
     const double aw = 0.95, T0 = 26, pa = 101325, Ts[2] = {70, 91};
     for (int k = 0; k < 2; k++) {
@@ -811,17 +699,20 @@ static void near_cap_ratios(double pa_set, double ratio[2], double *B) {
     printf("the ratio at 91 degC is %.4fx the one at 70 degC\n", ratio[1] / ratio[0]);
 }
 
-/* The roll's preset (B-stiff): a gas law whose stiffness is its gas's keeps
- * one ratio at every temperature; asked: the ratio at 91 degC within 1.5x of
- * the one at 70. Expected failure while the preset's bubbles are B-stiff. */
+/* The gas law's default (sph.gas_pressure = 0: B-stiff bubbles; the bread
+ * roll's preset sets the own gas since rolltray): a gas law whose stiffness is
+ * its gas's keeps one ratio at every temperature; asked: the ratio at 91 degC
+ * within 1.5x of the one at 70. Expected failure while the default's bubbles
+ * are B-stiff. */
 TEST(sph_gas_law_bubble_near_cap_within_its_gas) {
     double ratio[2], B;
     near_cap_ratios(0, ratio, &B);
     if (!(ratio[1] / ratio[0] < 1.5))
         XFAIL("at 91 degC a bubble pushes %.2fx its ideal gas, %.2fx the ratio at 70 degC (asked: within 1.5x): the gas "
               "law's pressure B (V_b / J - 1) takes the dough's stiffness for the gas's P_a - P_v, and V_b diverges at "
-              "the boiling point; the bread roll's crust cells push up to 4.7x their gas just before they open "
-              "(sph.gas_pressure = 101325 pushes the gas itself: sph_gas_law_own_gas_one_ratio; not the roll's preset)",
+              "the boiling point; the bread roll's crust cells pushed up to 4.7x their gas near it while its preset "
+              "left sph.gas_pressure at 0 (sph.gas_pressure = 101325 pushes the gas itself, "
+              "sph_gas_law_own_gas_one_ratio, and is the roll's preset now)",
               ratio[1], ratio[1] / ratio[0]);
 }
 
@@ -845,7 +736,7 @@ TEST(sph_gas_law_own_gas_one_ratio) {
  * signal_speed); without sph.gas_pressure the dough's own wave sets it. */
 static void gas_dt_case(double pa, double *dt0, double *dt1, double *cmax) {
     int bub;
-    hearth_scene *s = bubble_block(1e4, pa, 85, 0, 0, &bub);
+    hearth_scene *s = bubble_block(1e4, pa, 85, 0, &bub);
     *dt0 = *dt1 = *cmax = NAN;
     if (!s) return;
     *dt0 = sph_stable_dt(s);
@@ -872,6 +763,5 @@ TEST(sph_gas_sound_speed_limits_dt) {
 TEST_MAIN(T(sph_heat_ext_flux_per_area), T(sph_heat_ext_slab_converges), T(sph_gas_law_clusters_reach_gas_volume),
           T(sph_heat_mirror_symmetric), T(sph_gas_law_films_keep_rest_spacing),
           T(sph_continuity_density_reads_no_skin), T(sph_bubble_gas_pressure_is_the_gas),
-          T(sph_renormalised_density_reads_no_skin), T(sph_foam_pressure_walls_hold_the_gas),
-          T(sph_bubble_vent_open_cell_pushes_nothing), T(sph_gas_law_refusals_word_for_word),
+          T(sph_renormalised_density_reads_no_skin), T(sph_gas_law_refusals_word_for_word),
           T(sph_gas_law_bubble_near_cap_within_its_gas), T(sph_gas_law_own_gas_one_ratio), T(sph_gas_sound_speed_limits_dt))

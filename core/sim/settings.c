@@ -185,15 +185,6 @@ static const hearth_setting settings[] = {
              "of the kernel the body fills, sum_j V0_j det F_j W_ij, at most 1 (Ferrand et al. 2013's gamma): a free "
              "surface or a tray side reads no stretch, the inside keeps the sum",
              renormalised_density),
-    SPH_FLAG("bubble_vent",
-             "with gas_law: a bubble whose gas volume reaches bubble_vmax is an open cell: its gas escapes, so it pushes no "
-             "further (gauge pressure at most 0; its dough's Tait against the raw density still holds it)",
-             bubble_vent),
-    SPH_FLAG("foam_pressure",
-             "with gas_law: a dough particle with bubble particles in its kernel holds at most the highest pressure among "
-             "them: the walls of a closed-cell foam carry their cells' gas pressure, so the sum's squeeze of a wall beside "
-             "squeezed bubbles is the gas's, not the dough's Tait",
-             foam_pressure),
     /* an ideal gas's isothermal bulk modulus is its pressure: a bubble at the
      * oven's 101325 Pa less its vapour is that stiff, whatever its dough's Tait B */
     SPH(gas_pressure, "Pa",

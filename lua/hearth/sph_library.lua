@@ -31,7 +31,12 @@
 --                  so the outline and the tray side read no false stretch: without
 --                  it their tension was a skin that beaded the roll off its tray and
 --                  slit the finer roll (docs/validation.md "The roll's skin,
---                  renormalised").
+--                  renormalised");
+--                gas_pressure = 101325: each bubble is as stiff as its own gas,
+--                  P_a - P_v(T) (eq. 2.42-2.43 with 3.49-3.50 exactly), not the
+--                  dough's Tait B, which is a 34th of it raw and 5x it hot: with B the
+--                  crust's bubbles pushed up to 4.7x their gas near the boiling point
+--                  (docs/validation.md "The bubble's own gas").
 --   .table     the raw Table 4.1 numbers.
 -- Difference from the thesis: eq. 4.1 and 4.2 extrapolate linearly beyond T0
 -- and Tf; hearth's curves are constant beyond their end points.
@@ -51,7 +56,8 @@ return function(h)
         },
         -- eps_f: §4.3's text value 0.5, not Table 4.1's 5 (XSPH overshoots above 1; the core refuses it)
         sph = { xsph0 = t.eps0, xsph_f = 0.5, xsph_T0 = t.T0, xsph_Tf = t.Tf, tension = true, artificial_stress = 0.5,
-                gas_law = true, bubble_vapour = 0.95, bubble_T0 = t.T0, renormalised_density = true },
+                gas_law = true, bubble_vapour = 0.95, bubble_T0 = t.T0, renormalised_density = true,
+                gas_pressure = 101325 },
         table = (function() local c = {} for k, v in pairs(t) do c[k] = v end return c end)(),
       }
     end,

@@ -120,10 +120,9 @@
  * "The roll's skin"); the preset takes sph.renormalised_density, the sum
  * divided by the part of the kernel the body fills, which removes the skin
  * and keeps the sum inside (docs/validation.md "The roll's skin,
- * renormalised"). From 1.6 s that roll rocks on a convex base: the sum's
- * squeeze of the dough beside squeezed bubbles (sph.foam_pressure caps it)
- * and the bubbles at the vapour's cap that still push (sph.bubble_vent opens
- * them) pressurise its set shell (docs/validation.md "The roll's base"). At
+ * renormalised"). From 1.5 s that roll's base arches off its tray: the sum
+ * reads the dough beside hot bubbles the set dough holds back as squeezed
+ * (docs/validation.md "Why the roll's base leaves its tray"). At
  * eps 0.3 a block in strong uniform tension still creeps toward pairs over
  * many sound crossings (`sph_artificial_stress_fluid`: 0.68 spacings at 1 s;
  * 0.5 holds). Surface tension above about 0.02 N/m does not settle a 0.06 m

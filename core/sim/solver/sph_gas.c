@@ -166,44 +166,6 @@ static void renormalise(hearth_scene *s, const sph_cols *c, double *rho_out) {
     }
 }
 
-/* sph.foam_pressure: a dough particle (no bubble volume) whose kernel holds
- * bubble particles keeps its Tait pressure only up to the highest pressure
- * among those bubbles (never below 0). The sum over rest volumes
- * (sort_and_list) smooths a squeezed bubble's excess rest volume over its
- * kernel, so the dough beside it reads a squeeze it does not have (its own
- * volume, V0 det F, says it is not squeezed at all), and Tait charges that
- * squeeze at gamma 7 with the set dough's B: on the bread roll (2 mm, 1.6 s)
- * the dough rows just above the hot tray held +250-270 kPa (median) beside
- * bubbles at +50-75 kPa, and the set crust holding that pressure rocks on a
- * convex base. Capped, the roll stays on its tray to 1.6 s, then rocks all
- * the same (its bubbles, squeezed harder, push as the dough did), so the
- * roll's preset leaves it off (docs/validation.md "The roll's base"). A dough wall
- * between a closed-cell foam's cells is thin and (nearly) incompressible: the
- * normal stress across it is its cells' gas pressure, and the foam's
- * resistance to a squeeze is its gas's (Gibson & Ashby 1997, Cellular Solids,
- * 2nd ed., Cambridge, ch. 5: a closed-cell foam's gas adds its pressure to
- * the walls' membrane stresses). Dough with no bubble within reach (a crust,
- * a thick wall) keeps its Tait; a bubble keeps its gas law. Bubbles' pressures
- * are read, never written, so the pass does not depend on the order. */
-static void foam_cap(hearth_scene *s, const sph_cols *c) {
-    struct sph_state *st = s->sph;
-    const int n = c->n, *mat = c->mat, *off = st->nl.off, *nb = st->nl.j;
-    double *cap = st->perm; /* free scratch, as renormalise's */
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        cap[i] = HUGE_VAL;
-        if (s->mats.slot[mat[i]].core[CP_BUBBLE] > 0 || !(st->prs[i] > 0)) continue;
-        double hi = -HUGE_VAL;
-        for (int k = off[i]; k < off[i + 1]; k++) {
-            const int j = nb[k];
-            if (s->mats.slot[mat[j]].core[CP_BUBBLE] > 0 && st->prs[j] > hi) hi = st->prs[j];
-        }
-        if (hi > -HUGE_VAL) cap[i] = fmax(hi, 0.0);
-    }
-    for (int i = 0; i < n; i++)
-        if (cap[i] < st->prs[i]) st->prs[i] = cap[i];
-}
-
 /* A bubble's stiffness under the gas law. With sph.gas_pressure = P_a it is
  * its gas's own, whatever dough holds it: the CO2 keeps its moles and the
  * vapour its partial pressure P_v = a_w P_sat(T) (eq. 2.42-2.43 with the
@@ -246,8 +208,6 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
         {"continuity_density", "true", "it is the gas law's pressure that reads the particle's own volume", both,
          o->continuity_density},
         {"renormalised_density", "true", "it is the gas law's pressure that reads it", both, o->renormalised_density},
-        {"bubble_vent", "true", "it opens the gas law's bubbles", both, o->bubble_vent},
-        {"foam_pressure", "true", "it caps the dough's pressure by the gas law's bubbles", both, o->foam_pressure},
         {"gas_pressure", gp, "it is the gas law's bubble that holds the gas",
          "set sph.gas_law = true or sph.gas_pressure = 0", o->gas_pressure > 0},
         {"dough_water", dw, "its CO2 comes out into the gas law's bubbles",
@@ -273,6 +233,11 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
  * Tait (gamma 7) against rho_b instead was tried and rejected: a bubble the
  * dough holds at its raw volume sees B (V_b^7 - 1), 16000 B at V_b = 4, and
  * blew the crust off the roll.
+ * Two switches for the roll's rocking base were tried and deleted: a cap on
+ * the dough beside bubbles at its bubbles' pressure (sph.foam_pressure) and an
+ * open cell at bubble_vmax that pushes nothing (sph.bubble_vent); neither kept
+ * the roll on its tray and rising (docs/validation.md "The roll's base",
+ * "Both switches on").
  * With sph.gas_pressure = P_a the bubble's stiffness is its gas's own,
  * P_a - P_v(T) (sph_gas_modulus), at any dough stiffness: p = (P_a -
  * P_v)(rho / rho_b - 1) is the bubble's ideal gas exactly (eq. 2.42-2.43,
@@ -294,22 +259,9 @@ void sph_pressure_gas_law(hearth_scene *s) {
                                                      : st->rho[i];
         const double tait = st->B[i] * (pow(rho / rho0, o->gamma) - 1); /* eq. 3.17 */
         const double Bg = bub > 0 && T ? sph_gas_modulus(o, st->B[i], T[i]) : st->B[i];
-        double gas = Bg * (rho / rr - 1);
-        /* sph.bubble_vent: sph_bubble_volume stops V_b at bubble_vmax because there the crumb's cells
-         * open and vent (the vapour law diverges at the boiling point); an open cell's gas escapes, so it
-         * holds the oven's pressure and pushes no further, where without the vent the capped bubble
-         * still pushes B (rho / rho_b - 1) toward 4x its raw volume: on the bread roll those are the
-         * hottest, the crust's and the tray side's, held at 1.6-1.7x by the set dough round them.
-         * Opened, they stop stretching the crust and the roll's rise stalls at 1.28x, so its preset
-         * leaves it off (docs/validation.md "The roll's base"). Its dough's Tait against rho0 still
-         * holds it. The open cells keep their volume (1.32-1.39 V0 to 2 s); what tears the vented roll
-         * at 2 s is the crust's last closed cells, which push B (V_b / J - 1) with V_b nearing the
-         * cap, up to 4.7x their ideal gas, just before they open (docs/validation.md "Both switches
-         * on"). */
-        if (o->bubble_vent && bub > 0 && T && gas > 0 && !(rr * bub * o->bubble_vmax > rho0 * (1 + 1e-12))) gas = 0;
+        const double gas = Bg * (rho / rr - 1);
         st->prs[i] = bub > 0 ? fmax(gas, tait) : tait;
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
     }
-    if (o->foam_pressure) foam_cap(s, &c);
     if (T) memcpy(st->Tprev, T, sizeof(double) * (size_t)n);
 }
