@@ -167,6 +167,40 @@ TEST(p2g_gather_matches_colour_phases) {
     hearth_set_threads(0);
 }
 
+/* One thread gathers too in 2D (mpm_p2g_gather.c, mpm_p2g_store_held: the
+ * colour phases' strided sweeps cost it 15% more CPU at 512 cells). The same
+ * scene as p2g_gather_matches_colour_phases' 2D one at one thread: the store
+ * held (the gather ran) without the switch, none with it, and the same bits
+ * both ways and as at two threads. */
+TEST(p2g_gather_one_thread_matches_colour_phases) {
+    uint64_t h[3];
+    for (int run = 0; run < 3; run++) {
+        const int phases = run == 1, threads = run == 2 ? 2 : 1;
+        hearth_set_threads(threads);
+        hearth_scene_def d = hearth_default_scene_def();
+        d.dim = 2;
+        d.dx = 1.0 / 128;
+        d.damping = 3.0;
+        hearth_scene *s = fx_scene_def(&d);
+        s->mpm->colour_phases = phases;
+        const int m = fx_elastic(s, 5e4, 0.3, 1000);
+        const double c[3] = {0.5, 0.45, 0}, hh[3] = {0.15, 0.1, 0}, v[3] = {0.3, -1.5, 0};
+        CHECK(fx_box(s, m, c, hh, 4, v) >= SCENE_PARALLEL_MIN); /* large enough for the gather */
+        const double fc[3] = {0.5, 0.25, 0}, fh[3] = {0.4, 0.1, 0};
+        CHECK(fx_box_collider(s, fc, fh, HEARTH_STICKY, 0.2) == 0);
+        hearth_error err;
+        CHECK(hearth_scene_step(s, 60, &err) == HEARTH_OK);
+        CHECK((s->mpm->tiles_cap > 0) == !phases); /* the gather ran at one thread unless switched off */
+        h[run] = hearth_scene_hash(s);
+        printf("  %d thread(s), %s: %d particles, store %zu doubles, hash %016llx\n", threads,
+               phases ? "colour phases (the switch)" : "the default path", s->ps.n, s->mpm->tiles_cap, (unsigned long long)h[run]);
+        hearth_scene_destroy(s);
+    }
+    hearth_set_threads(0);
+    CHECK(h[0] == h[1]);
+    CHECK(h[0] == h[2]);
+}
+
 /* 3D at more than one thread (mpm.c's claims): each phase hands out blocks
  * from both ends of its range, and P2G orders each block's flush after its
  * lower-coloured neighbours' instead of a barrier per colour. Three scenes
@@ -241,15 +275,15 @@ TEST(determinism_threads_3d_claims) {
  * scene, grown by the sort, P2G's volumes only once heat or water is live;
  * and the memory estimate's scratch term is the sort's 16 bytes (order and
  * keys, the permutation working in the keys' room) and the volumes' 8, at
- * one thread. At two threads in 2D P2G's tile store is held too (mpm.c,
- * p2g_store_reserve): per particle block the halo of its 6x6 node tile
+ * one thread. In 2D P2G's tile store is held too, at any thread count since
+ * one thread gathers as well (mpm_p2g_gather.c, mpm_p2g_store_held): per particle block the halo of its 6x6 node tile
  * around its 4x4 block, 20 nodes, of mass and two momenta, 3 x 20 doubles
  * = 480 bytes, for 16 cells x 4 particles (s:add's default ppc): 7.5 bytes a
  * particle, the limit of a large body; a square of L cells at ppc 4 spans
  * L / 4 + 1 particle blocks a side (a particle's block is its B-spline base
  * node's, half a cell back), so its store holds 480 (L / 4 + 1)^2 bytes for
  * 4 L^2 particles: 9.49 a particle at L = 32, 8.14 at L = 96, counted here
- * from tiles_cap after a step at two threads. The store lives in the room of
+ * from tiles_cap after a step at one thread and at two. The store lives in the room of
  * the sort's order and keys (8 bytes a particle, dead between the sort and
  * G2P; mpm_p2g_store_reserve): the scratch block holds the larger of the
  * two, and the estimate counts the larger of 8 and 7.5. */
@@ -269,9 +303,9 @@ TEST(mpm_store_in_estimate) {
         double cols = 0;
         for (int k = 0; k < PC_COUNT; k++)
             if (s->ps.enabled & (1u << k)) cols += (double)particles_col_bytes(&s->ps, k);
-        const double store = threads > 1 ? 480.0 / 64 : 0; /* bytes a particle, as derived above */
+        const double store = 480.0 / 64; /* bytes a particle, as derived above, at 1 thread as at 2 */
         const double est = scene_bytes_per_particle(s), held = (double)s->mpm->tiles_cap * sizeof(double) / n;
-        const double span = L / 4 + 1, counted = threads > 1 ? 480 * span * span / n : 0;
+        const double span = L / 4 + 1, counted = 480 * span * span / n;
         const double keys = 2.0 * sizeof(int) * s->mpm->scratch_cap, scratch = (double)s->mpm->scratch_bytes;
         printf("  %d thread(s), %d cells a side: %d particles, %d particle blocks, estimate %.2f bytes a particle "
                "(columns %.0f), store held %.2f bytes a particle (counted %.2f), the sort's scratch %.2f "
@@ -281,7 +315,7 @@ TEST(mpm_store_in_estimate) {
         CHECK(held == counted);
         CHECK(held >= store);
         /* the store in order and keys' block, which grew only by what it lacked */
-        CHECK(threads == 1 || s->mpm->tiles == (double *)(void *)s->mpm->keys);
+        CHECK(s->mpm->tiles == (double *)(void *)s->mpm->keys);
         CHECK(scratch == (keys > held * n ? keys : held * n));
         hearth_scene_destroy(s);
     }
@@ -289,7 +323,7 @@ TEST(mpm_store_in_estimate) {
 }
 
 TEST(mpm_state_owned_by_solver) {
-    hearth_set_threads(1); /* no tile store: its term is mpm_store_in_estimate's */
+    hearth_set_threads(1); /* the tile store's term is mpm_store_in_estimate's */
     hearth_scene *s = fx_scene(2, 0.05, 0, 1);
     CHECK(s != NULL);
     if (!s) return;
@@ -318,4 +352,4 @@ TEST(mpm_state_owned_by_solver) {
     hearth_set_threads(0);
 }
 
-TEST_MAIN(T(determinism_threads), T(checkpoint_restore), T(determinism_threads_sticky_damped), T(p2g_gather_matches_colour_phases), T(determinism_threads_3d_claims), T(mpm_store_in_estimate), T(mpm_state_owned_by_solver))
+TEST_MAIN(T(determinism_threads), T(checkpoint_restore), T(determinism_threads_sticky_damped), T(p2g_gather_matches_colour_phases), T(p2g_gather_one_thread_matches_colour_phases), T(determinism_threads_3d_claims), T(mpm_store_in_estimate), T(mpm_state_owned_by_solver))

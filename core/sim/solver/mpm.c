@@ -16,7 +16,7 @@
  * colour are two blocks apart, and a block's particles touch only itself and
  * the next block on each axis, so no two threads ever write the same node and
  * every node sums its contributions in the same order whatever the thread
- * count. No atomics. With more than one thread, the usual 2D step
+ * count. No atomics. At any thread count, the usual 2D step
  * (step_team) keeps every block's tile instead and the grid update gathers
  * each node's sum from the tiles in the same colour order (mpm_p2g_gather.c):
  * the same bits, with one barrier where the colour phases take 2^dim. 3D at
@@ -602,7 +602,7 @@ static void step_team_rest(hearth_scene *s, double dt, const int gather, block_f
  * OMP_WAIT_POLICY=passive (main.c) each synchronisation wakes a sleeping
  * thread (a futex round trip). One region instead of three keeps two of
  * those a step (a region's start and end still sleep; the waits inside it
- * spin first, team_wait.c). With more than one thread (gather), P2G scatters every
+ * spin first, team_wait.c). In 2D (gather, one thread too), P2G scatters every
  * particle block into its own stored tile in one loop, and the grid update
  * gathers each block's node sums from those tiles in colour order
  * (mpm_p2g_gather) before updating it: one barrier between them where the

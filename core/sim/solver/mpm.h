@@ -229,7 +229,7 @@ hearth_status mpm_scratch_room(hearth_scene *s, size_t bytes, hearth_error *err)
 void mpm_periodic_wrap_all(hearth_scene *s);
 void mpm_periodic_mark(const hearth_scene *s, unsigned char *mark);
 void mpm_periodic_fold(hearth_scene *s, int unfold);
-/* mpm_p2g_gather.c: the usual step's P2G at more than one thread in 2D keeps each particle block's tile (own
+/* mpm_p2g_gather.c: the usual step's P2G in 2D (any thread count) keeps each particle block's tile (own
  * part in its block's nodes, halo in the store) and the grid update gathers them in colour order */
 /// Whether the store is held (2D, more than one thread, not HEARTH_MPM_COLOUR_PHASES); leaves out the particle count.
 int mpm_p2g_store_held(const hearth_scene *s);

@@ -1,5 +1,5 @@
-/* mpm_p2g_gather.c: P2G's gather path, the usual step's P2G at more than one
- * thread in 2D (mpm.c's step_team). Each particle block's P2G keeps its tile
+/* mpm_p2g_gather.c: P2G's gather path, the usual step's P2G in 2D at any
+ * thread count (mpm.c's step_team). Each particle block's P2G keeps its tile
  * instead of flushing it in 2^dim colour phases: the part over its own block
  * in that block's nodes, the halo over its +1 neighbours in a store
  * (mpm_p2g_keep_tile); after one barrier the grid update gathers each
@@ -15,10 +15,6 @@
 #include "alloc.h"
 #include "error.h"
 #include "mpm.h"
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #define FORCE_INLINE static inline __attribute__((always_inline))
 
@@ -122,9 +118,14 @@ void mpm_p2g_gather(hearth_scene *s, int k) {
     else p2g_gather_block(s, 3, k);
 }
 
-/* Whether step_team gathers (a 2D team of more than one thread), and room in
- * the tile store for this step's particle blocks when it does. One thread keeps
- * the colour phases' flush: the same bits, without the store's traffic. 3D
+/* Whether step_team gathers (2D, at any thread count), and room in the tile
+ * store for this step's particle blocks when it does. One thread gathers too:
+ * the colour phases visit the particle blocks colour by colour, four strided
+ * sweeps over the sorted particles and the grid, where the gather walks them
+ * once in memory order; at one thread 2D 512 cells took 15% more CPU with the
+ * flush for 4% fewer instructions in P2G, which made 2 threads look 2.4x
+ * faster than 1 (issue 20; docs/performance.md, "One thread's P2G in colour
+ * order"). The same bits either way (the gather sums in colour order). 3D
  * keeps the flush too, ordered per block at more than one thread (mpm.c's
  * p2g_wait_lower): on a quiet machine the gather gave 3D at 32 cells nothing
  * (2 threads / 1: 1.78x against 1.79x with the colour phases, threads.sh)
@@ -134,12 +135,7 @@ void mpm_p2g_gather(hearth_scene *s, int k) {
  * leaves out the particle count: mpm_bytes_per_particle's estimate asks it
  * for scenes large enough to hold the store. */
 int mpm_p2g_store_held(const hearth_scene *s) {
-#ifdef _OPENMP
-    return s->g.dim == 2 && omp_get_max_threads() > 1 && s->mpm && !s->mpm->colour_phases;
-#else
-    (void)s;
-    return 0;
-#endif
+    return s->g.dim == 2 && s->mpm && !s->mpm->colour_phases;
 }
 
 /* The store lives in the sort's scratch (mpm_scratch_room): from the end of
