@@ -719,12 +719,14 @@ TEST(checkpoint_venting_continues_same_bits) {
 /* The memos (exp_memo.h) are a cache: a venting dough's save holds no memo column, its restore refills them
  * (checkpoint_venting_continues_same_bits: the same bits), and a file that claims one, as no hearth writes
  * it, is refused by name rather than read into the cache. */
-static void memo_bit(uint8_t *b, size_t n) {
+/* claim_column: the file's PART chunk claims column c among its saved columns */
+static void claim_column(uint8_t *b, size_t n, int c) {
     const size_t at = find(b, n, "PART", 4);
     uint32_t v;
     memcpy(&v, b + at + 12, 4);
-    set_u32_after(b, n, "PART", 8, v | (1u << PC_GAS_MEMO));
+    set_u32_after(b, n, "PART", 8, v | (1u << c));
 }
+static void memo_bit(uint8_t *b, size_t n) { claim_column(b, n, PC_GAS_MEMO); }
 TEST(checkpoint_memo_columns_refused) {
     hearth_scene *s = vent_scene(0.02);
     CHECK(s != NULL);
@@ -745,12 +747,7 @@ TEST(checkpoint_memo_columns_refused) {
 /* The temperature curves' memo (PC_CURVE_MEMO, material_batch.c) is a cache too: a dough with a curve on
  * tau_y saves no memo column after 20 steps that filled it, its restore starts it empty and continues with the
  * same bits as the unbroken run, and a file that claims it is refused by name. */
-static void curve_memo_bit(uint8_t *b, size_t n) {
-    const size_t at = find(b, n, "PART", 4);
-    uint32_t v;
-    memcpy(&v, b + at + 12, 4);
-    set_u32_after(b, n, "PART", 8, v | (1u << PC_CURVE_MEMO));
-}
+static void curve_memo_bit(uint8_t *b, size_t n) { claim_column(b, n, PC_CURVE_MEMO); }
 TEST(checkpoint_curve_memo_refused_and_refilled) {
     hearth_scene *s = vent_scene(0.02);
     CHECK(s != NULL);

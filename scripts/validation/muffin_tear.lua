@@ -105,58 +105,57 @@ h.library.paper_oven = setmetatable({}, { __index = function(_, name)
   return o
 end })
 
--- the frames: damage instead of temperature
-if P.damage_frames == 1 then
+-- around_run(fn): every scene's s:run first lets fn(self, r) change the run's table
+local function around_run(fn)
   local scene = h.scene
   h.scene = function(o)
     local s = scene(o)
     local methods = getmetatable(s).__index
     local run = methods.run
     methods.run = function(self, r)
-      r.png = { field = "damage", path = "damage_%04d.png", kind = "particles", range = { 0, 1 } }
+      fn(self, r)
       return run(self, r)
     end
     return s
   end
 end
 
+-- the frames: damage instead of temperature
+if P.damage_frames == 1 then
+  around_run(function(_, r)
+    r.png = { field = "damage", path = "damage_%04d.png", kind = "particles", range = { 0, 1 } }
+  end)
+end
+
 -- the axis probe (header): wraps the run's on_frame; the cup's centre as muffins.lua puts it (on a node)
 if P.axis_probe == 1 then
-  local scene = h.scene
-  h.scene = function(o)
-    local s = scene(o)
-    local methods = getmetatable(s).__index
-    local run = methods.run
-    methods.run = function(self, r)
-      local f0, s0 = r.on_frame, h.library.paper_oven.muffin.saturation
-      r.on_frame = function(f)
-        local q = self:particles { fields = { "x", "temperature", "damage", "saturation", "J" } }
-        local xc = math.floor(0.5 * 0.08 / P.dx + 0.5) * P.dx -- muffins.lua's xs[1] (SPACING 0.08)
-        local top, bins = -math.huge, {}
-        for k = 1, q.n do
-          if math.abs(q.x[3 * k - 2] - xc) < 0.002 then top = math.max(top, q.x[3 * k - 1]) end
-        end
-        for k = 1, q.n do
-          if math.abs(q.x[3 * k - 2] - xc) < 0.002 then
-            local b = math.floor((top - q.x[3 * k - 1]) / 0.001)
-            local B = bins[b] or { 0, 0, 0, 0 }
-            B[1], B[2], B[3], B[4] = B[1] + 1, B[2] + q.temperature[k], B[3] + q.damage[k],
-              B[4] + q.saturation[k] * q.J[k] / s0
-            bins[b] = B
-          end
-        end
-        local cols = {}
-        for b = 0, 12 do
-          local B = bins[b]
-          cols[#cols + 1] = B and ("%d:%.0f/%.2f/%.2f"):format(b, B[2] / B[1], B[3] / B[1], B[4] / B[1]) or ("%d:-"):format(b)
-        end
-        print(("axis t=%.3f top=%.2fmm above the rim %s"):format(f.t, (top - 0.042) * 1e3, table.concat(cols, " ")))
-        if f0 then return f0(f) end
+  around_run(function(self, r)
+    local f0, s0 = r.on_frame, h.library.paper_oven.muffin.saturation
+    r.on_frame = function(f)
+      local q = self:particles { fields = { "x", "temperature", "damage", "saturation", "J" } }
+      local xc = math.floor(0.5 * 0.08 / P.dx + 0.5) * P.dx -- muffins.lua's xs[1] (SPACING 0.08)
+      local top, bins = -math.huge, {}
+      for k = 1, q.n do
+        if math.abs(q.x[3 * k - 2] - xc) < 0.002 then top = math.max(top, q.x[3 * k - 1]) end
       end
-      return run(self, r)
+      for k = 1, q.n do
+        if math.abs(q.x[3 * k - 2] - xc) < 0.002 then
+          local b = math.floor((top - q.x[3 * k - 1]) / 0.001)
+          local B = bins[b] or { 0, 0, 0, 0 }
+          B[1], B[2], B[3], B[4] = B[1] + 1, B[2] + q.temperature[k], B[3] + q.damage[k],
+            B[4] + q.saturation[k] * q.J[k] / s0
+          bins[b] = B
+        end
+      end
+      local cols = {}
+      for b = 0, 12 do
+        local B = bins[b]
+        cols[#cols + 1] = B and ("%d:%.0f/%.2f/%.2f"):format(b, B[2] / B[1], B[3] / B[1], B[4] / B[1]) or ("%d:-"):format(b)
+      end
+      print(("axis t=%.3f top=%.2fmm above the rim %s"):format(f.t, (top - 0.042) * 1e3, table.concat(cols, " ")))
+      if f0 then return f0(f) end
     end
-    return s
-  end
+  end)
 end
 
 dofile(P.muffins)
