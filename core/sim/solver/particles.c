@@ -445,38 +445,26 @@ int particles_permute_team_range(particles *ps, const int *order, int W, void *s
 #pragma omp single nowait
     ps->edits++;
     off = 0;
-    if (permute_is_sparse(order, lo, hi)) { /* this thread's places keep most records (permute_is_sparse) */
-        for (int q = 0; q < npar; q++) {
-            const size_t B = particles_col_bytes(ps, par[q]);
-            char *col = ps->col[par[q]];
-            const char *zlo = mine + off, *zhi = mine + off + (size_t)W * B;
-            switch (B) {
-            case 4: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 4); break;
-            case 8: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 8); break;
-            case 24: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 24); break;
-            case 32: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 32); break;
-            case 72: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, 72); break;
-            default: permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, B); break;
-            }
-            off += 2 * (size_t)W * B;
-        }
-        team_wait_barrier(tw);
-        return 1;
-    }
+    /* this thread's places keep most records (permute_is_sparse), or the window's every copy */
+    const int sparse = permute_is_sparse(order, lo, hi);
+#define PERMUTE_AS(width)                                                                                    \
+    (sparse ? permute_sparse(col, order, lo, hi, W, W + 1, zl, zlo, zhi, ring, width)                        \
+            : permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, width))
     for (int q = 0; q < npar; q++) {
         const size_t B = particles_col_bytes(ps, par[q]);
         char *col = ps->col[par[q]];
         const char *zlo = mine + off, *zhi = mine + off + (size_t)W * B;
         switch (B) { /* the common widths as constants, so each copy is a few moves */
-        case 4: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 4); break;
-        case 8: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 8); break;
-        case 24: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 24); break;
-        case 32: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 32); break;
-        case 72: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, 72); break;
-        default: permute_range(col, order, lo, hi, W, zl, zlo, zhi, ring, B); break;
+        case 4: PERMUTE_AS(4); break;
+        case 8: PERMUTE_AS(8); break;
+        case 24: PERMUTE_AS(24); break;
+        case 32: PERMUTE_AS(32); break;
+        case 72: PERMUTE_AS(72); break;
+        default: PERMUTE_AS(B); break;
         }
         off += 2 * (size_t)W * B;
     }
+#undef PERMUTE_AS
     team_wait_barrier(tw);
     return 1;
 }
