@@ -231,7 +231,7 @@ void mpm_periodic_mark(const hearth_scene *s, unsigned char *mark);
 void mpm_periodic_fold(hearth_scene *s, int unfold);
 /* mpm_p2g_gather.c: the usual step's P2G in 2D (any thread count) keeps each particle block's tile (own
  * part in its block's nodes, halo in the store) and the grid update gathers them in colour order */
-/// Whether the store is held (2D, more than one thread, not HEARTH_MPM_COLOUR_PHASES); leaves out the particle count.
+/// Whether the store is held (2D at any thread count, not HEARTH_MPM_COLOUR_PHASES); leaves out the particle count.
 int mpm_p2g_store_held(const hearth_scene *s);
 /// After the sort: *gather, whether this step gathers, and room in the store for its particle blocks when it does.
 hearth_status mpm_p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *err);

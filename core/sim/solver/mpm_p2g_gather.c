@@ -171,7 +171,7 @@ hearth_status mpm_p2g_store_reserve(hearth_scene *s, int *gather, hearth_error *
 }
 
 /* mpm_bytes_per_particle's share of the store where it will be held (2D,
- * more than one thread: mpm_p2g_store_reserve): one tile (P2G_STORE_NCH x
+ * at any thread count: mpm_p2g_store_reserve): one tile (P2G_STORE_NCH x
  * P2G_HALO doubles) per particle block, a block's 16 cells full at s:add's
  * default ppc 4, 64 particles (3 x 20 x 8 / 64 = 7.5 bytes; `hearth bench
  * --threads 2 --dim 2 --cells 128` measured 8.3, its edge blocks part full).
