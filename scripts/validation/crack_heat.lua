@@ -9,6 +9,10 @@
 --   dough         the raw dough's temperature (degC; -1: Table 2's 1); the thermal strain's
 --                 reference_temperature stays the preset's
 --   set_strain    the set crumb's stretch to fracture at 70 degC (-1: the preset's 0.15)
+--   set_prop      1: the set crumb's stretch to fracture in proportion to its set (its brittleness
+--                 times the set fraction s, linear 0 -> 1 over 35-70 degC: set_strain / s, 10
+--                 points, capped at 100), as muffin_tear.lua's set_prop (helper crownband); 0: the
+--                 preset's value ramp 100 -> 0.15
 --   dry_shift     multiplies the water contents X of FRACTURE's curve (the stretch
 --                 to fracture over X): > 1 makes a wetter crust as brittle as a
 --                 drier one (1: the preset)
@@ -21,7 +25,7 @@
 local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 10, slit_depth = 0.02, slit_width = 0.01, only = 1,
-  conductivity = 1, oven = -1, pan = -1, set_strain = -1, dry_shift = 1, dough = -1, bread = "scripts/scenes/baking/bread.lua" }
+  conductivity = 1, oven = -1, pan = -1, set_strain = -1, set_prop = 0, dry_shift = 1, dough = -1, bread = "scripts/scenes/baking/bread.lua" }
 
 -- bread.lua's own h.params sees the values parsed here (it declares a subset of these names)
 h.params = function(defaults)
@@ -37,6 +41,12 @@ h.library.paper = setmetatable({}, { __index = function(_, name)
   p.conductivity = p.conductivity * P.conductivity
   if P.set_strain > 0 then
     p.fracture_strain_set = h.curve { { D.THETA[3], 100 }, { D.THETA[4], P.set_strain }, irreversible = true }
+  end
+  if P.set_prop == 1 then
+    local ta, tb, ef = D.THETA[3], D.THETA[4], P.set_strain > 0 and P.set_strain or 0.15
+    local pts = { { ta, 100 }, irreversible = true }
+    for i = 1, 10 do pts[#pts + 1] = { ta + (tb - ta) * i / 10, math.min(100, ef * 10 / i) } end
+    p.fracture_strain_set = h.curve(pts)
   end
   if P.dry_shift ~= 1 then -- FRACTURE's curve (lua/hearth/dough.lua) with its water contents scaled
     local _, _, _, dry = D.preset("bread")
