@@ -203,15 +203,17 @@ typedef struct mpm_sort_team {
     hearth_status st;
     hearth_error *err;
     int unsorted[MPM_SORT_CHUNKS_MAX], far[MPM_SORT_CHUNKS_MAX], amark[MPM_SORT_CHUNKS_MAX]; /* per chunk */
-    /* per chunk, atomics (__atomic builtins): the count's and the lists' claims, the lists published, and the
+    int chunk_tot[MPM_SORT_CHUNKS_MAX][3]; /* per chunk of the block table: its particles, particle blocks, 2D marks */
+    /* per chunk, atomics (__atomic builtins): the count's, the lists' and the table's claims, the lists published, and the
      * blocks each phase of the step hands out (mpm_span) */
-    int claim[2][MPM_SORT_CHUNKS_MAX], ready[MPM_SORT_CHUNKS_MAX];
+    int claim[3][MPM_SORT_CHUNKS_MAX], ready[MPM_SORT_CHUNKS_MAX];
     /* the caller's MPM_SPANS rows of spans (mpm.c's one-region step; NULL: none kept), apart from the struct,
      * which is zeroed every step (12 KB) */
     mpm_span (*span)[MPM_SORT_CHUNKS_MAX];
-    /* the count's chunks done, P2G's particle blocks stored and the grid update's blocks done (the
-     * one-region step): a thread moves on once the work is done, whoever did it (team_count_wait) */
-    team_count counted, stored, updated;
+    /* the count's chunks done, the table's chunks added up, P2G's particle blocks stored and the grid
+     * update's blocks done (the one-region step): a thread moves on once the work is done, whoever did it
+     * (team_count_wait) */
+    team_count counted, totalled, stored, updated;
 } mpm_sort_team;
 hearth_status mpm_sort_begin(hearth_scene *s, mpm_sort_team *t, hearth_error *err);
 /// nactive (NULL: not wanted): this thread's copy of the active grid blocks' count when the region activates.

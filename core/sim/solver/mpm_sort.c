@@ -246,27 +246,87 @@ static int claim_chunk(int *claim, int T, int c0, int *j) {
  * The block starts, the particle blocks, the marks and the grid's slots are
  * integers from the same counts, so they are the serial sort's too.
  *
- * After the count's barrier hist is only read until every thread is past the
- * marks: each thread adds up the whole table itself for the chunks' offsets
- * (O(T nblocks) reads, and the chunked count is only chosen where
- * T nblocks <= 2 n), and in 2D it counts each chunk's marks on the way (a row
- * of blocks behind), so each chunk activates its own blocks of the grid right
- * after marking them. The marks read a neighbour's total from hist. So with
- * the keys in order the sort needs one barrier (3D's activation one more),
- * where a pass writing the totals and the exclusive counts, and the marks'
- * count, took three: with OMP_WAIT_POLICY=passive (main.c) each
- * synchronisation wakes a sleeping thread, a futex round trip, and in the 2D
- * 128-cell bench all this bookkeeping is about 10 instructions a particle.
- * (The waits in the region now spin before they sleep, team_wait.c.)
- * The count's and the lists' chunks are claimed (claim_chunk), and the
- * count's wait is for every chunk counted, not for every thread.
+ * After the count's wait hist is only read until every thread is past the
+ * marks. Each chunk of the block table is added up once (table_chunk: its
+ * blocks' totals into counts, its particles, particle blocks and, in 2D, its
+ * marks, a row of blocks behind), and once every chunk is added up each
+ * thread's exclusive scan over the T chunks' totals gives the chunks'
+ * offsets, so each chunk activates its own blocks of the grid and lists its
+ * particle blocks from counts. Until the sortscan branch every thread added up
+ * the whole table itself to spare that wait (O(T nblocks) reads each, and 2D's
+ * marks made twice, the second time from hist): at 2D 128 cells the lists
+ * then took each of 2 threads about as long as 1 thread (docs/performance.md,
+ * "The sort's table split between threads"). With the keys in order the sort
+ * waits twice (the count, the table; 3D's activation once more); with
+ * OMP_WAIT_POLICY=passive (main.c) a wait that sleeps costs a futex round
+ * trip, which is why the waits spin first (team_wait.c) and why work handed
+ * out by claims is waited for by count, not by thread.
+ * The count's, the table's and the lists' chunks are claimed (claim_chunk).
  * Out of order, hist turns into places after a barrier, the order is filled
  * after another, and the caller permutes (particles_permute_team). Returns
  * the farthest a particle moves in the order (particles_permute_within's W)
  * when the keys were out of order, else -1; kof gets the chunks' first
  * particle blocks (kof[T]: all of them; every thread's own copy); t->st gets
  * a reservation's status. */
-#define MARK_ROW_MAX 4096 /* 2D's marks are counted on the way where a row of blocks fits on the stack */
+#define MARK_ROW_MAX 4096 /* 2D's marks are made with the table's totals where a row of blocks fits on the stack */
+/* out[y]: whether block b0 + y holds particles, y < len (its T rows of hist summed) */
+static void occupied(const int *hist, int NB, int T, int b0, int len, unsigned char *out) {
+    for (int y = 0; y < len; y++) {
+        int sum = 0;
+        for (int q = 0; q < T; q++) sum += hist[(size_t)q * NB + b0 + y];
+        out[y] = sum > 0;
+    }
+}
+
+/* Chunk c of the block table, [NB c / T, NB (c + 1) / T): each block's particles, its T rows of hist
+ * summed, go to counts (here a total per block, where sort_counting leaves its start), and out gets the
+ * chunk's particles, particle blocks and (early: 2D with the activation in the region) marks, which it
+ * writes to m->mark. A block is marked when it or its -1 neighbours hold particles; a chunk that starts
+ * past the first row reads the row before it (and its own row's first blocks) from hist itself, so no
+ * chunk waits for another. By runs of blocks within one row (2D) or the chunk (3D), so the sums
+ * vectorise (a block at a time took 20 instructions a block, runs about 3, callgrind). */
+static void table_chunk(const grid *g, mpm_state *m, const int *hist, int T, int c, int early, int out[3]) {
+    const int NB = m->nblocks, nb1 = g->nb[1];
+    const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
+    unsigned char rows[2][MARK_ROW_MAX]; /* 2D: which blocks of this row and the one before hold particles */
+    int np = 0, nk = 0, na = 0;
+    if (early && lo < hi) {
+        const int bx = lo / nb1, by0 = lo - bx * nb1;
+        if (bx > 0)
+            occupied(hist, NB, T, (bx - 1) * nb1, nb1, rows[~bx & 1]);
+        else
+            memset(rows[~bx & 1], 0, (size_t)nb1);
+        occupied(hist, NB, T, bx * nb1, by0, rows[bx & 1]);
+    }
+    for (int b = lo; b < hi;) {
+        int e = hi, bx = 0, by0 = 0;
+        if (early) { /* b = bx nb1 + by */
+            bx = b / nb1, by0 = b - bx * nb1;
+            if (e > (bx + 1) * nb1) e = (bx + 1) * nb1;
+        }
+        const int len = e - b;
+        int *tot = m->counts + b;
+        memcpy(tot, hist + b, sizeof(int) * (size_t)len);
+        for (int q = 1; q < T; q++) {
+            const int *h = hist + (size_t)q * NB + b;
+            for (int y = 0; y < len; y++) tot[y] += h[y];
+        }
+        for (int y = 0; y < len; y++) np += tot[y], nk += tot[y] > 0;
+        if (early) {
+            unsigned char *cur = rows[bx & 1], *prev = rows[~bx & 1], *mk = m->mark + (b - by0);
+            for (int y = 0; y < len; y++) cur[by0 + y] = tot[y] > 0;
+            int y = by0;
+            if (y == 0) mk[0] = cur[0] | prev[0], na += mk[0], y = 1;
+            for (; y < by0 + len; y++) {
+                mk[y] = cur[y] | cur[y - 1] | prev[y] | prev[y - 1];
+                na += mk[y];
+            }
+        }
+        b = e;
+    }
+    out[0] = np, out[1] = nk, out[2] = na;
+}
+
 int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS_MAX + 1], int *nactive) {
     grid *g = &s->g;
     mpm_state *m = s->mpm;
@@ -291,48 +351,20 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
     PHASE_MARK(PH_COUNT);
     int unsorted = 0;
     for (int c = 0; c < T; c++) unsorted |= t->unsorted[c];
-    /* Every thread adds up the table for each chunk of it: the particles, the particle blocks and (2D)
-     * the marks before it (poff, koff, aoff). A block is marked when it or its -1 neighbours hold particles. */
+    /* Each chunk of the table is added up once, by whoever claims it (table_chunk): its blocks' totals go to
+     * counts, its particles, particle blocks and (2D) marks to t->chunk_tot; once every chunk is done each
+     * thread's exclusive scan over the T chunks' totals gives the chunks' offsets (poff, koff, aoff). */
     const int early = t->activate && g->dim == 2 && nb1 <= MARK_ROW_MAX;
+    for (int j = 0, c; (c = claim_chunk(t->claim[2], T, c0, &j)) >= 0;) {
+        table_chunk(g, m, hist, T, c, early, t->chunk_tot[c]);
+        team_count_add(&t->totalled, 1);
+    }
+    team_count_wait(&m->team, &t->totalled, (unsigned)T);
     int poff[SORT_CHUNKS_MAX + 1] = {0}, koff[SORT_CHUNKS_MAX + 1] = {0}, aoff[SORT_CHUNKS_MAX + 1] = {0};
-    {
-        /* By runs of blocks within one chunk (and in 2D one row of the table), each run's totals first
-         * (tot, row by row of hist), so the loops are simple enough to vectorise: every thread reads
-         * the whole table, about 3 instructions a block where a block at a time took 20 (callgrind). */
-        unsigned char rows[2][MARK_ROW_MAX]; /* 2D: which blocks of this row and the one before hold particles */
-        int tot[MARK_ROW_MAX];
-        if (early) memset(rows[1], 0, (size_t)nb1); /* the row before the first */
-        int c = 0, chi = (int)((long)NB / T);
-        for (int b = 0; b < NB;) {
-            while (b >= chi) chi = (int)((long)NB * (++c + 1) / T);
-            int e = chi, bx = 0, by0 = 0;
-            if (early) { /* b = bx nb1 + by */
-                bx = b / nb1, by0 = b - bx * nb1;
-                if (e > (bx + 1) * nb1) e = (bx + 1) * nb1;
-            } else if (e - b > MARK_ROW_MAX) {
-                e = b + MARK_ROW_MAX;
-            }
-            const int len = e - b;
-            memcpy(tot, hist + b, sizeof(int) * (size_t)len);
-            for (int q = 1; q < T; q++) {
-                const int *h = hist + (size_t)q * NB + b;
-                for (int y = 0; y < len; y++) tot[y] += h[y];
-            }
-            int np = 0, nk = 0;
-            for (int y = 0; y < len; y++) np += tot[y], nk += tot[y] > 0;
-            poff[c + 1] += np;
-            koff[c + 1] += nk;
-            if (early) { /* a block is marked when it or its -1 neighbours hold particles */
-                unsigned char *cur = rows[bx & 1], *prev = rows[~bx & 1];
-                for (int y = 0; y < len; y++) cur[by0 + y] = tot[y] > 0;
-                int na = 0, y = by0;
-                if (y == 0) na += cur[0] | prev[0], y = 1;
-                for (; y < by0 + len; y++) na += cur[y] | cur[y - 1] | prev[y] | prev[y - 1];
-                aoff[c + 1] += na;
-            }
-            b = e;
-        }
-        for (c = 0; c < T; c++) poff[c + 1] += poff[c], koff[c + 1] += koff[c], aoff[c + 1] += aoff[c];
+    for (int c = 0; c < T; c++) {
+        poff[c + 1] = poff[c] + t->chunk_tot[c][0];
+        koff[c + 1] = koff[c] + t->chunk_tot[c][1];
+        aoff[c + 1] = aoff[c] + t->chunk_tot[c][2];
     }
     /* A step that finds more particle blocks or marks than ever grows the lists first (every thread
      * sees the same need, so all or none meet the single). */
@@ -347,30 +379,34 @@ int mpm_sort_team_run(hearth_scene *s, mpm_sort_team *t, int kof[MPM_SORT_CHUNKS
     if (nactive) *nactive = aoff[T];
     if (t->st) return -1;
     const int late = t->activate && !early; /* the activation after a barrier (3D, or 2D rows too long for the stack) */
-    /* The marks and the particle blocks only read hist, so no chunk waits for another. The marks count
-     * each chunk's own for a later activation (3D); 2D activates the chunk's blocks here. A chunk done
-     * is published (t->ready, with release order: its particle blocks and their grid blocks are written)
-     * for the step's P2G (mpm.c's p2g_store_chunks), which then needs no barrier. */
+    /* 2D's marks are made; 3D's read hist (no chunk waits for another) and are counted for a later
+     * activation; 2D activates the chunk's blocks here. A chunk done is published (t->ready, with release
+     * order: its particle blocks and their grid blocks are written) for the step's P2G (mpm.c's
+     * p2g_store_chunks), which then needs no barrier. */
+    const int *counts = m->counts;
     for (int j = 0, c; (c = claim_chunk(t->claim[1], T, c0, &j)) >= 0;) {
         const int lo = (int)((long)NB * c / T), hi = (int)((long)NB * (c + 1) / T);
-        int bc[3], na = 0;
-        grid_block_coords(g, lo < NB ? lo : 0, bc);
-        for (int b = lo; b < hi; b++) { /* b = grid_block_id(bc): z fastest */
-            const unsigned char mk = touched(g, NULL, hist, NB, T, bc[0], bc[1], bc[2]);
-            m->mark[b] = mk;
-            na += mk != 0;
-            if (++bc[2] == nb2) {
-                bc[2] = 0;
-                if (++bc[1] == nb1) bc[1] = 0, bc[0]++;
+        if (!early) {
+            int bc[3], na = 0;
+            grid_block_coords(g, lo < NB ? lo : 0, bc);
+            for (int b = lo; b < hi; b++) { /* b = grid_block_id(bc): z fastest */
+                const unsigned char mk = touched(g, NULL, hist, NB, T, bc[0], bc[1], bc[2]);
+                m->mark[b] = mk;
+                na += mk != 0;
+                if (++bc[2] == nb2) {
+                    bc[2] = 0;
+                    if (++bc[1] == nb1) bc[1] = 0, bc[0]++;
+                }
             }
+            t->amark[c] = na;
+        } else {
+            grid_activate_chunk(g, m->mark, lo, hi, aoff[c]);
         }
-        t->amark[c] = na;
-        if (early) grid_activate_chunk(g, m->mark, lo, hi, aoff[c]);
-        /* the chunk's particle blocks from its offsets */
+        /* the chunk's particle blocks from its offsets and its blocks' totals */
         int run = poff[c], k = koff[c];
         for (int b = lo; b < hi; b++) {
             const int start = run;
-            run += block_total(NULL, hist, NB, T, b);
+            run += counts[b];
             if (run > start) m->pb[k++] = (pblock){b, start, run};
         }
         /* the step hands the chunk's particle blocks out from these (P2G's and G2P's) and, activated here, its
