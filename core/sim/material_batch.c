@@ -566,6 +566,8 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         .state = state,
         .state_stride = stride,
     };
+    if (m->memo_size > 0 && (ps->enabled & (1u << PC_PLUGIN_MEMO))) /* rule 10: the plugin's cache, never state */
+        b.memo = pcold(ps, PC_PLUGIN_MEMO) + (size_t)i0 * ps->memo_stride, b.memo_stride = ps->memo_stride;
     if ((porous_J || th) && m->scalars_block) { /* rule 9: J^P and K in one call */
         double JP0[HEARTH_BLOCK_MAX];
         double *out[HEARTH_SCALAR_COUNT] = {0};
