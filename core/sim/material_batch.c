@@ -94,15 +94,36 @@ static int thermal_scales_block(const double *core, int n, const double *restric
                                  double *restrict sF, double *restrict sL, double *restrict dL) {
     const double cl = core[CP_EXPANSION], Tr = core[CP_REFERENCE_T];
     double X[HEARTH_BLOCK_MAX], R[HEARTH_BLOCK_MAX];
-    for (int j = 0; j < n; j++) {
-        const double k = K[j], t = T[j], e0 = e_store[j];
-        const int sp = !(t == t) ? 0 : (k > 0) & (k < INFINITY) ? 1 : -1; /* material_thermal_scales' returns */
-        split[j] = (signed char)sp;
-        const double e = dt > 0 ? cl * (t - Tr) / k : e0;
-        X[j] = sp == 1 ? -e / 3 : 0.0;
-        R[j] = sp == 1 && dt > 0 ? (e0 - e) / 3 : -0.0;
-        e_store[j] = sp == 1 && dt > 0 ? e : e0;
-    }
+    if (dt > 0) {
+        /* the step's usual case in loops of doubles alone, every quotient taken and the values picked by selects,
+         * so that they vectorise (split's bytes in the same loop, and the quotients under the tests, kept it
+         * scalar: 25 instructions a point); split's bytes after, from the doubles */
+        double SP[HEARTH_BLOCK_MAX], EQ[HEARTH_BLOCK_MAX], XQ[HEARTH_BLOCK_MAX], RQ[HEARTH_BLOCK_MAX], E0[HEARTH_BLOCK_MAX];
+        for (int j = 0; j < n; j++) {
+            const double k = K[j], t = T[j], e0 = e_store[j];
+            /* material_thermal_scales' returns; one compare a select: two under one select became branches */
+            const double k0 = k > 0 ? 1.0 : -1.0, k1 = k < INFINITY ? k0 : -1.0;
+            const double e = cl * (t - Tr) / k;
+            SP[j] = t == t ? k1 : 0.0;
+            EQ[j] = e, XQ[j] = -e / 3, RQ[j] = (e0 - e) / 3, E0[j] = e0;
+        }
+        /* the picks, apart: with the quotients in the same loop GCC sinks them under the selects, and a select
+         * that may keep an entry as it was is a conditional store, either of which keeps a loop scalar */
+        for (int j = 0; j < n; j++) {
+            const double sp = SP[j];
+            X[j] = sp == 1.0 ? XQ[j] : 0.0;
+            R[j] = sp == 1.0 ? RQ[j] : -0.0;
+            e_store[j] = sp == 1.0 ? EQ[j] : E0[j];
+        }
+        for (int j = 0; j < n; j++) split[j] = (signed char)SP[j];
+    } else
+        for (int j = 0; j < n; j++) {
+            const double k = K[j], t = T[j], e0 = e_store[j];
+            const int sp = !(t == t) ? 0 : (k > 0) & (k < INFINITY) ? 1 : -1; /* material_thermal_scales' returns */
+            split[j] = (signed char)sp;
+            X[j] = sp == 1 ? -e0 / 3 : 0.0; /* dt = 0: the stored strain, nothing written */
+            R[j] = -0.0;
+        }
     /* x holds between the fields' updates (the temperature does, and K with it): its exp once a cycle (exp_memo.h);
      * the scales' finiteness counted in the loops that make them (a loop of its own over sF and sL cost 10
      * instructions a point) */
@@ -120,8 +141,14 @@ static int thermal_scales_block(const double *core, int n, const double *restric
     if (dt > 0) {
         /* every point's small-r values first, in a loop with no branch (one vector division), then libm where
          * r is not small: the values the branch per point gave, which was 11 instructions a point */
-        for (int j = 0; j < n; j++) sL[j] = 1.0, dL[j] = R[j] / dt;
+        /* big: the points whose r is not small, none between the fields' updates, where the scan below is
+         * skipped; counted in a double (a long beside the doubles kept the loop scalar), exact for 64 points */
+        double big = 0;
         for (int j = 0; j < n; j++) {
+            sL[j] = 1.0, dL[j] = R[j] / dt;
+            big += fabs(R[j]) < 0x1p-54 ? 0.0 : 1.0;
+        }
+        for (int j = 0; j < n && big > 0; j++) {
             const double r = R[j];
             if (!(fabs(r) < 0x1p-54)) {
                 sL[j] = exp(r), dL[j] = expm1(r) / dt;
@@ -477,12 +504,14 @@ static double run_after_block(const material_slot *ms, const material_run *r, un
     }
     if (gas) { /* gas pressure (eq. 13), with the porosity after this step's plastic flow */
         const double *gj = gas + r->i0, n0 = core[CP_POROSITY0];
-        if (!ncracked && m->plastic_J && T) /* the usual block: the same arithmetic without a test per point */
-            for (int j = 0; j < n; j++) {
-                const double tg = gas_tau(gj[j], T[j], gas_porosity(JP1[j], n0));
-                t0[j] += tg, t4[j] += tg, t8[j] += tg;
-            }
-        else
+        if (!ncracked && m->plastic_J && T) { /* the usual block: the same arithmetic without a test per point */
+            /* into a local column first: the compiler cannot know tau's columns do not alias gas, T or JP1, and
+             * with the sums in the same loop it kept the two divisions and the clamps scalar (26 instructions a
+             * point in the 2D dough bench) */
+            double TG[HEARTH_BLOCK_MAX];
+            for (int j = 0; j < n; j++) TG[j] = gas_tau(gj[j], T[j], gas_porosity(JP1[j], n0));
+            for (int j = 0; j < n; j++) t0[j] += TG[j], t4[j] += TG[j], t8[j] += TG[j];
+        } else
             for (int j = 0; j < n; j++) {
                 if (cracked[j]) continue;
                 const double np = m->plastic_J ? gas_porosity(JP1[j], n0) : P ? P[j] : NAN;
