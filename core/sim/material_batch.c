@@ -73,6 +73,20 @@ static inline void scale_column(double *restrict out, const double *restrict x, 
         for (int j = 0; j < n; j++) out[j] = x[j] * s[j];
 }
 
+/* scale_column on four columns at once (x * s), and on three with + d (the diagonal of L): the plane strain
+ * block's products, each entry the same operation on the same values, in one pass over s (and d) */
+static inline void scale_columns4(double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
+                                  const double *restrict x0, const double *restrict x1, const double *restrict x2,
+                                  const double *restrict x3, const double *restrict s, const double *restrict unused, int n) {
+    (void)unused;
+    for (int j = 0; j < n; j++) o0[j] = x0[j] * s[j], o1[j] = x1[j] * s[j], o2[j] = x2[j] * s[j], o3[j] = x3[j] * s[j];
+}
+static inline void scale_columns3(double *restrict o0, double *restrict o1, double *restrict o2, const double *restrict x0,
+                                  const double *restrict x1, const double *restrict x2, const double *restrict s,
+                                  const double *restrict d, int n) {
+    for (int j = 0; j < n; j++) o0[j] = x0[j] * s[j] + d[j], o1[j] = x1[j] * s[j] + d[j], o2[j] = x2[j] * s[j] + d[j];
+}
+
 /* material_thermal_scales (material.h) over a block, given each point's K (its bulk_modulus, which the
  * caller asked point by point: K may read the state): split[j], the scales sF[j], sL[j] and dL[j], and
  * the strain stored in e_store[j] when dt > 0, each the value material_thermal_scales gives the point
@@ -316,10 +330,12 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
     if (!(ps->enabled & (1u << PC_WATER))) {
         int undried = 1;
         if (rp->dried) {
-            /* whether a point dried: the first one found ends the scan (a count over every point, vectorised, cost
-             * 7 instructions a point in a block that never dried) */
+            /* whether a point dried (a count over every point in an int, vectorised, cost 7 instructions a point in
+             * a block that never dried; a scan ending at the first, 9) */
             const double *dr = rp->dried + i0;
-            for (int j = 0; j < n && undried; j++) undried = 1.0 - dr[j] >= 1.0;
+            double dried = 0; /* counted in a double, in a loop that vectorises: 9 instructions a point as a scan */
+            for (int j = 0; j < n; j++) dried += 1.0 - dr[j] >= 1.0 ? 0.0 : 1.0;
+            undried = dried == 0;
         }
         if (undried) {
             if (!(rp->r == 1.0 && rp->rd == 1.0))
@@ -631,9 +647,17 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     if (th) {
         /* a plane strain embedding's zeros: +0.0 times a finite scale >= +0 is +0.0, the entry itself */
         const int skip = r->plane && finite;
-        for (int c = 0; c < 9; c++)
-            if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7))) scale_column(Fm[c], r->F[c], sF, NULL, n), Fb[c] = Fm[c];
-        if (r->dt > 0) /* the diagonal: L c * exp(r), then + expm1(r) / dt (-std=c17: never contracted to an fma) */
+        if (skip) {
+            /* the in-plane four in one loop (one load of the scale for four products), and F_zz, which the
+             * embedding makes 1.0 at every point: 1.0 * s is s, so its column is sF itself */
+            scale_columns4(Fm[0], Fm[1], Fm[3], Fm[4], r->F[0], r->F[1], r->F[3], r->F[4], sF, NULL, n);
+            Fb[0] = Fm[0], Fb[1] = Fm[1], Fb[3] = Fm[3], Fb[4] = Fm[4], Fb[8] = sF;
+        } else
+            for (int c = 0; c < 9; c++) scale_column(Fm[c], r->F[c], sF, NULL, n), Fb[c] = Fm[c];
+        if (r->dt > 0 && skip && still) { /* the diagonal alone (x * 1.0 is x off it), in one loop */
+            scale_columns3(Lm[0], Lm[4], Lm[8], r->grad_v[0], r->grad_v[4], r->grad_v[8], sL, dL, n);
+            Lb[0] = Lm[0], Lb[4] = Lm[4], Lb[8] = Lm[8];
+        } else if (r->dt > 0) /* the diagonal: L c * exp(r), then + expm1(r) / dt (-std=c17: never contracted to an fma) */
             for (int c = 0; c < 9; c++)
                 if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7)) && !(still && c % 4 != 0)) /* still: x * 1.0 */
                     scale_column(Lm[c], r->grad_v[c], sL, c % 4 == 0 ? dL : NULL, n), Lb[c] = Lm[c];
