@@ -322,12 +322,15 @@ static int curve_memo_columns(const material_slot *ms, const material_run_params
  * factor; the factors are evaluated again only where material_run_params_at
  * would (the ratios differ from the last point's), so they are its values. */
 static void run_params_columns(material_run_params *rp, const material_slot *ms, const particles *ps, int i0, int n,
-                               int nv, const int *vk, double (*vcol)[HEARTH_BLOCK_MAX]) {
+                               int nv, const int *vk, double (*vcol)[HEARTH_BLOCK_MAX], unsigned char *uniform) {
     const int nt = rp->nt, nc = ms->ncurves;
     int col_of[MATERIAL_MAX_PARAMS];
     unsigned char by_T[RUN_MAX_VARYING] = {0}; /* column v is a temperature curve's (written whole below) */
     for (int v = 0; v < nv; v++) col_of[vk[v]] = v;
     for (int t = 0; t < nt; t++) by_T[col_of[ms->curves[t].param]] = 1;
+    /* uniform[v]: column v holds ms->params[vk[v]] at every point (no temperature curve, and its moisture
+     * factors left it unmultiplied) */
+    for (int v = 0; v < nv; v++) uniform[v] = !by_T[v];
     for (int v = 0; v < nv; v++)
         if (!by_T[v])
             for (int j = 0; j < n; j++) vcol[v][j] = ms->params[vk[v]];
@@ -358,8 +361,10 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
             for (int k = nt; k < nc; k++) {
                 double *col = vcol[col_of[ms->curves[k].param]];
                 const double f = rp->f[k - nt];
-                if (f != 1.0) /* x * 1.0 is x: a dry curve's factor at the raw dough's ratio 1 leaves the column */
+                if (f != 1.0) { /* x * 1.0 is x: a dry curve's factor at the raw dough's ratio 1 leaves the column */
+                    uniform[col_of[ms->curves[k].param]] = 0;
                     for (int j = 0; j < n; j++) col[j] *= f;
+                }
             }
             return;
         }
@@ -389,11 +394,14 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
         double *col = vcol[col_of[ms->curves[k].param]];
         if (varies) {
             const double *f = fcol[k - nt];
+            uniform[col_of[ms->curves[k].param]] = 0;
             for (int j = 0; j < n; j++) col[j] *= f[j];
         } else {
             const double f = rp->f[k - nt];
-            if (f != 1.0) /* x * 1.0 is x (the columns are finite parameters) */
+            if (f != 1.0) { /* x * 1.0 is x (the columns are finite parameters) */
+                uniform[col_of[ms->curves[k].param]] = 0;
                 for (int j = 0; j < n; j++) col[j] *= f;
+            }
         }
     }
 }
@@ -594,7 +602,13 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         memcpy(q, ms->params, sizeof(double) * (size_t)np);
         material_run_params rp; /* the curves once per run, as run_points resolves them, curve by curve */
         material_run_params_init(&rp, ms, ps);
-        run_params_columns(&rp, ms, ps, i0, n, nv, vk, vcol);
+        unsigned char uniform[RUN_MAX_VARYING];
+        run_params_columns(&rp, ms, ps, i0, n, nv, vk, vcol, uniform);
+        /* a column that holds the slot's own value at every point goes to the plugin as that value (b.p is
+         * ms->params): the same values, and the plugin hoists what it computes from them (the cookie's E, whose
+         * dry curve is 1 at the raw dough's ratio: its Lame constants, wave speed and K once a block) */
+        for (int v = 0; v < nv; v++)
+            if (uniform[v]) pcolumn[vk[v]] = NULL;
     }
     const double *pj = nv ? q : ms->params; /* no curve: the slot's own parameters, uncopied */
     /* eq. 10 as a strain: the block gets F_M and L_M, as run_points hands each point. Each point's scalars
