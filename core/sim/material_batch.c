@@ -486,14 +486,24 @@ static double run_after_block(const material_slot *ms, const material_run *r, un
             plugin_call_enter(m, "scalars_block");
             m->scalars_block(b, out);
         }
-        for (int j = 0; j < n; j++) {
-            if (!ms->wave_per_point) wave[j] = ms->wave_speed;
-            if (m->viscosity) {
+        /* each of the three in its own loop, none when not asked (the cookie: its wave speed came per point, it
+         * has no viscosity, and a block without a crack counts none in one loop that vectorises) */
+        if (!ms->wave_per_point)
+            for (int j = 0; j < n; j++) wave[j] = ms->wave_speed;
+        if (m->viscosity)
+            for (int j = 0; j < n; j++) {
                 const double nu = V[j] / hearth_block_param(b, ms->density_index, j);
                 if (nu > numax) numax = nu;
             }
-            cracked[j] = damage && D[j] >= 1;
-            ncracked += cracked[j];
+        memset(cracked, 0, sizeof cracked);
+        if (damage) {
+            double dmax = 0; /* the largest damage, in a loop of selects (NaN is not >= 1: not cracked, as below) */
+            for (int j = 0; j < n; j++) dmax = D[j] >= 1 ? 1.0 : dmax;
+            if (dmax != 0)
+                for (int j = 0; j < n; j++) {
+                    cracked[j] = D[j] >= 1;
+                    ncracked += cracked[j];
+                }
         }
     } else
     for (int j = 0; j < n; j++) {
