@@ -152,8 +152,8 @@ static int thermal_scales_block(const double *core, int n, const double *restric
             const double small = fabs(x) < 0x1p-54 ? 1.0 : 0.0, hit = k == x && v != 0 ? 1.0 : 0.0;
             const double f = small == 1.0 ? 1.0 : hit == 1.0 ? v : 0.0;
             sF[j] = f;
-            miss += small == 1.0 || hit == 1.0 ? 0.0 : 1.0;
-            infd += f <= DBL_MAX ? 0.0 : 1.0;
+            miss = small == 1.0 || hit == 1.0 ? miss : 1.0; /* flags picked, not summed: a sum of doubles */
+            infd = f <= DBL_MAX ? infd : 1.0;                /* stays in order, one scalar add a point */
         }
         inf += infd > 0;
         for (int j = 0; j < n && miss > 0; j++)
@@ -170,11 +170,12 @@ static int thermal_scales_block(const double *core, int n, const double *restric
         /* every point's small-r values first, in a loop with no branch (one vector division), then libm where
          * r is not small: the values the branch per point gave, which was 11 instructions a point */
         /* big: the points whose r is not small, none between the fields' updates, where the scan below is
-         * skipped; counted in a double (a long beside the doubles kept the loop scalar), exact for 64 points */
+         * skipped; a flag in a double, picked (a long counted beside the doubles kept the loop scalar, and a
+         * double summed stays in order) */
         double big = 0;
         for (int j = 0; j < n; j++) {
             sL[j] = 1.0, dL[j] = R[j] / dt;
-            big += fabs(R[j]) < 0x1p-54 ? 0.0 : 1.0;
+            big = fabs(R[j]) < 0x1p-54 ? big : 1.0;
         }
         for (int j = 0; j < n && big > 0; j++) {
             const double r = R[j];
@@ -350,8 +351,8 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
             /* whether a point dried (a count over every point in an int, vectorised, cost 7 instructions a point in
              * a block that never dried; a scan ending at the first, 9) */
             const double *dr = rp->dried + i0;
-            double dried = 0; /* counted in a double, in a loop that vectorises: 9 instructions a point as a scan */
-            for (int j = 0; j < n; j++) dried += 1.0 - dr[j] >= 1.0 ? 0.0 : 1.0;
+            double dried = 0; /* a flag picked in a loop that vectorises: 9 instructions a point as a scan */
+            for (int j = 0; j < n; j++) dried = 1.0 - dr[j] >= 1.0 ? dried : 1.0;
             undried = dried == 0;
         }
         if (undried) {

@@ -130,7 +130,7 @@ static void gas_between_one(double *restrict G, const double *restrict T, double
             const double hit = k == x && v != 0 ? 1.0 : 0.0;
             X[j] = x;
             E[j] = hit == 1.0 ? v : 0.0;
-            miss += hit == 1.0 ? 0.0 : 1.0;
+            miss = hit == 1.0 ? miss : 1.0; /* a flag picked, not summed (a sum of doubles stays in order) */
         }
         for (int j = 0; j < m && miss > 0; j++)
             if (!(mm[2 * j] == X[j] && mm[2 * j + 1] != 0)) E[j] = exp_memo(mm + 2 * j, X[j]);
