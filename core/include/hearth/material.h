@@ -27,10 +27,10 @@
  *
  * 2. Descriptor. name is [a-z0-9_]+ (it is the file's <name> and a Lua
  *    string). init, stress, wave_speed and describe_error are non-NULL;
- *    blend, plastic_J, viscosity, damage, stress_block, bulk_modulus and scalars_block may be NULL
- *    (memo_size 0). nparams <= 256 with params
- *    non-NULL when nparams > 0; 0 <= state_size <= 4096; needs holds only
- *    known HEARTH_NEEDS_* bits.
+ *    blend, plastic_J, viscosity, damage, stress_block, bulk_modulus and scalars_block may be NULL,
+ *    and memo_size 0. nparams <= 256 with params
+ *    non-NULL when nparams > 0; 0 <= state_size <= 4096; 0 <= memo_size <= HEARTH_MEMO_MAX (rule 10);
+ *    needs holds only known HEARTH_NEEDS_* bits.
  *
  * 3. Parameters. Each name is a Lua identifier [A-Za-z_][A-Za-z0-9_]*, unique
  *    in the schema; unit is non-NULL (SI, "1" when dimensionless); min and max
