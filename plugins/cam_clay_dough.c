@@ -826,7 +826,7 @@ static const hearth_material material = {
     .params = params,
     .nparams = P_COUNT,
     .state_size = S_COUNT,
-    .needs = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_THERMAL_EXPANSION,
+    .needs = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_THERMAL_EXPANSION | HEARTH_NEEDS_MEMO,
     .init = init,
     .stress = stress,
     .wave_speed = wave_speed,
@@ -836,6 +836,7 @@ static const hearth_material material = {
     .stress_block = stress_block,
     .bulk_modulus = bulk_modulus,
     .scalars_block = scalars_block,
+    .memo_size = 2, /* log b_zz's argument and value (log_memo, cam_clay_dough_block.h) */
 };
 
 HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void); /* for -Wmissing-prototypes */

@@ -28,6 +28,20 @@
  * stress_law cost more than it saved (2D dough step 20.86M against 20.02M
  * instructions), as each point moved between the columns and the law. */
 
+/* log(x) through a point's memo (<hearth/material.h> rule 10): m[0] the last argument, m[1] its log. Between
+ * the fields' updates a plane-strain point's b_zz does not move (f_zz = 1 + dt grad_v_zz, and the core's
+ * thermal split leaves grad_v_zz at +0 while the temperature holds), so one of the block's three logs a
+ * point has the argument of the step before: 47 instructions of libm's log, and the call, for a compare.
+ * A cache keyed on the argument: called only with x > 0 finite (the fast path's test), where x == m[0]
+ * holds only for the same bits, and a zeroed entry (m[0] = 0) misses; the value is log's own, whoever
+ * wrote it. So any memo this function wrote, or zeros, gives log(x)'s bits. */
+static inline double log_memo(double *m, double x) {
+    if (m[0] == x) return m[1];
+    const double l = log(x);
+    m[0] = x, m[1] = l;
+    return l;
+}
+
 /* Point j through stress_law, as stress would (F is read through J only). */
 static int block_point(const hearth_block *b, int j, double J, double mu, double lambda, double *q, double *const tau[9]) {
     hearth_point pt;
@@ -115,9 +129,17 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
             const double z = BAD[j] + off + (J[j] - J[j]) + (jf - jf) + (lsum - lsum);
             fast[j] = (z == 0) & (J[j] > 0) & (jf > 0) & (nj > 0) & (nj < 1) & (l0 > 0) & (l1 > 0) & (t8 > 0) ? 1.0 : 0.0;
         }
-        for (int j = 0; j < n; j++) /* the logs: scalar (libm) */
-            if (fast[j] != 0) E0[j] = 0.5 * log(L0[j]), E1[j] = 0.5 * log(L1[j]), E2[j] = 0.5 * log(B8[j]);
-            else E0[j] = E1[j] = E2[j] = 0;
+        double *const memo = b->memo;
+        if (memo) { /* log b_zz through the point's memo (log_memo: rule 10) */
+            const int ms = b->memo_stride;
+            for (int j = 0; j < n; j++) /* the logs: scalar (libm) */
+                if (fast[j] != 0)
+                    E0[j] = 0.5 * log(L0[j]), E1[j] = 0.5 * log(L1[j]), E2[j] = 0.5 * log_memo(memo + (size_t)j * ms, B8[j]);
+                else E0[j] = E1[j] = E2[j] = 0;
+        } else
+            for (int j = 0; j < n; j++) /* the logs: scalar (libm) */
+                if (fast[j] != 0) E0[j] = 0.5 * log(L0[j]), E1[j] = 0.5 * log(L1[j]), E2[j] = 0.5 * log(B8[j]);
+                else E0[j] = E1[j] = E2[j] = 0;
         double TY[HEARTH_BLOCK_MAX];
         const double *ty_c = b->p_col[P_TAU_Y];
         if (!ty_c) {

@@ -790,10 +790,55 @@ TEST(checkpoint_curve_memo_refused_and_refilled) {
     hearth_scene_destroy(s);
 }
 
+/* The plugin's memo (PC_PLUGIN_MEMO, <hearth/material.h> rule 10: cam_clay_dough's log b_zz) is a cache as
+ * well: the 2D dough of vent_scene fills it (16 B a particle: memo_size 2), its save holds no such column and a
+ * file that claims one is refused by name; the restore starts it zeroed and continues with the unbroken run's
+ * bits. */
+static void plugin_memo_bit(uint8_t *b, size_t n) { claim_column(b, n, PC_PLUGIN_MEMO); }
+TEST(checkpoint_plugin_memo_refused_and_refilled) {
+    hearth_scene *s = vent_scene(0.02);
+    CHECK(s != NULL);
+    if (!s) return;
+    hearth_error err;
+    CHECK(s->ps.enabled & (1u << PC_PLUGIN_MEMO));
+    CHECK(s->ps.memo_stride == 2 && particles_col_bytes(&s->ps, PC_PLUGIN_MEMO) == 16);
+    int filled = 0;
+    for (int i = 0; i < s->ps.n; i++) filled += pcold(&s->ps, PC_PLUGIN_MEMO)[2 * i] > 0; /* a key b_zz > 0 */
+    CHECK(filled > 0);
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    if (img) {
+        CHECK(find(img, n, "plugin_memo", 11) == (size_t)-1);
+        expect_refused(img, n, plugin_memo_bit, "a memo column");
+        free(img);
+    }
+    const char *path = "plugin_memo_roundtrip.ck";
+    CHECK(hearth_scene_save(s, path, &err) == HEARTH_OK);
+    hearth_scene *r = hearth_scene_load(path, &err);
+    if (!r) printf("  load: %s\n", err.msg);
+    CHECK(r != NULL);
+    remove(path);
+    if (r) {
+        int empty = 0;
+        CHECK(r->ps.enabled & (1u << PC_PLUGIN_MEMO));
+        for (int i = 0; i < r->ps.n; i++) empty += pcold(&r->ps, PC_PLUGIN_MEMO)[2 * i] == 0;
+        CHECK(empty == r->ps.n);
+        CHECK(hearth_scene_step(s, 40, &err) == HEARTH_OK);
+        CHECK(hearth_scene_step(r, 40, &err) == HEARTH_OK);
+        printf("  %d particles, %d memo entries filled at the save, %d empty after the restore; 20 + 40 steps: hash "
+               "unbroken %016llx, restored %016llx\n", s->ps.n, filled, empty,
+               (unsigned long long)hearth_scene_hash(s), (unsigned long long)hearth_scene_hash(r));
+        CHECK(hearth_scene_hash(r) == hearth_scene_hash(s));
+        hearth_scene_destroy(r);
+    }
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(checkpoint_v4_roundtrip), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
           T(checkpoint_bitflip_campaign), T(checkpoint_resealed_flips), T(checkpoint_crafted_fields),
           T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_count_before_alloc),
           T(checkpoint_not_regular_file), T(checkpoint_alloc_failures),
           T(checkpoint_v5_def_fields_refused), T(checkpoint_v4_reads_at_defaults), T(checkpoint_venting_continues_same_bits),
           T(checkpoint_memo_columns_refused),
-          T(checkpoint_curve_memo_refused_and_refilled))
+          T(checkpoint_curve_memo_refused_and_refilled), T(checkpoint_plugin_memo_refused_and_refilled))

@@ -231,6 +231,64 @@ done:
         if (s[v]) hearth_scene_destroy(s[v]);
 }
 
+/* The plugin's memo (PC_PLUGIN_MEMO, <hearth/material.h> rule 10: cam_clay_dough's log b_zz) gives log's bits
+ * and is read between the fields' updates, where a point that does not flow keeps its b_zz (a plastic step
+ * rebuilds it): the 2D dough block through an update and 37 steps hashes the same
+ * with the memo working and emptied before every step (every log computed, as before it), and differently
+ * when every filled entry's value is moved by 1e-12 one step after the update (the steps after read it). Each
+ * filled entry holds log of its key. */
+TEST(field_clock_plugin_memo_same_bits) {
+    hearth_scene *s[3] = {dough_block(), dough_block(), dough_block()}; /* memo; emptied each step; falsified once */
+    CHECK(s[0] && s[1] && s[2]);
+    if (!s[0] || !s[1] || !s[2]) goto done;
+    CHECK(s[0]->ps.enabled & (1u << PC_PLUGIN_MEMO));
+    hearth_error err;
+    int filled = 0;
+    for (int v = 0; v < 3; v++) {
+        particles *ps = &s[v]->ps;
+        const int w = ps->memo_stride;
+        const size_t bytes = sizeof(double) * (size_t)w * (size_t)ps->n;
+        long steps = 0;
+        for (int u = 0; u < 1 && steps < 100000; steps++) {
+            if (v == 1) memset(ps->col[PC_PLUGIN_MEMO], 0, bytes);
+            if (hearth_scene_step(s[v], 1, &err) != HEARTH_OK) {
+                printf("  step: %s\n", err.msg);
+                CHECK(0);
+                goto done;
+            }
+            u += s[v]->field_phase == 0;
+        }
+        for (int j = 0; j < 37; j++) {
+            if (v == 2 && j == 1) /* filled at the step after the update; read by the steps after */
+                for (int i = 0; i < ps->n; i++) pcold(ps, PC_PLUGIN_MEMO)[(size_t)w * i + 1] += 1e-12;
+            if (v == 1) memset(ps->col[PC_PLUGIN_MEMO], 0, bytes);
+            if (hearth_scene_step(s[v], 1, &err) != HEARTH_OK) {
+                printf("  step: %s\n", err.msg);
+                CHECK(0);
+                goto done;
+            }
+        }
+        if (v == 0) {
+            const double *m = pcold(ps, PC_PLUGIN_MEMO);
+            for (int i = 0; i < ps->n; i++, m += w)
+                if (m[0] != 0) {
+                    filled++;
+                    CHECK(m[1] == log(m[0]));
+                }
+        }
+        printf("  %s: %ld steps to the update, 37 more: hash %016llx\n",
+               v == 0 ? "memo" : v == 1 ? "memo emptied each step" : "memo falsified after the update", steps,
+               (unsigned long long)hearth_scene_hash(s[v]));
+    }
+    printf("  %d particles, %d filled memo entries\n", s[0]->ps.n, filled);
+    CHECK(filled > 0);
+    CHECK(hearth_scene_hash(s[0]) == hearth_scene_hash(s[1]));
+    CHECK(hearth_scene_hash(s[0]) != hearth_scene_hash(s[2]));
+done:
+    for (int v = 0; v < 3; v++)
+        if (s[v]) hearth_scene_destroy(s[v]);
+}
+
 /* The temperature curves' memo (PC_CURVE_MEMO, material_batch.c) gives the curves' bits: the dough block with
  * an irreversible curve on tau_y through an update and 20 steps, then a reversible one on E added (a new stamp:
  * entries written for tau_y alone hold no E) and 20 more steps, then a third, on eta (beyond the memo's two
@@ -306,5 +364,5 @@ TEST(field_clock_bad_setting) {
 }
 
 TEST_MAIN(T(field_clock_cycle_within_limit), T(field_clock_matches_single_rate), T(field_clock_checkpoint_mid_cycle),
-          T(field_clock_threads_same_bits), T(field_clock_bad_setting), T(field_clock_memos_read_for_same_bits),
+          T(field_clock_threads_same_bits), T(field_clock_bad_setting), T(field_clock_memos_read_for_same_bits), T(field_clock_plugin_memo_same_bits),
           T(field_clock_curve_memo_same_bits))

@@ -271,6 +271,26 @@ TEST(plugin_check_scalars_matches) {
     CHECK_STR_CONTAINS(r.detail[C_SCALARS], "wave_speed one-point");
 }
 
+/* <hearth/material.h> rule 10: the dough law (the test build of cam_clay_dough.c, whose block keeps log b_zz in
+ * its memo) gives stress's bits with the memo NULL, zeroed, warm and swapped between points; a stress_block
+ * whose memo is keyed on nothing (memo_mismatch.c: once written, read for any J) passes the first three and
+ * fails the swap, naming the memo and the point, while its one-point law passes. */
+TEST(plugin_check_memo_keyed) {
+    char path[1024];
+    report r;
+    if (!fixture(path, sizeof path, "dough_batched")) return;
+    CHECK(run_check(path, &r) == 0);
+    CHECK(r.seen[C_BATCHED] == 1 && r.passed[C_BATCHED]);
+    CHECK_STR_CONTAINS(r.detail[C_BATCHED], "with the memo NULL, zeroed, warm and swapped between points");
+    if (!fixture(path, sizeof path, "memo_mismatch")) return;
+    CHECK(run_check(path, &r) == 1);
+    for (int i = 0; i < N_ALWAYS; i++) CHECK(r.passed[i]);
+    CHECK(r.seen[C_BATCHED] == 1);
+    CHECK(!r.passed[C_BATCHED]);
+    CHECK_STR_CONTAINS(r.detail[C_BATCHED], "with the memo swapped between points (rule 10): block 0 (dim 3, 64 points");
+    CHECK_STR_CONTAINS(r.detail[C_BATCHED], "tau[0] one-point");
+}
+
 /* Not in the required list: the check's own failure paths. A stress code
  * that describe_error explains is accepted at extremes (a law may refuse an
  * extreme state), while silent NaN is not. */
@@ -341,7 +361,7 @@ static hearth_material good(void) {
     g_params[0] = (hearth_param){"density", "kg/m^3", NULL, 1000, 1, 1e4};
     g_params[1] = (hearth_param){"E", "Pa", "stiffness", 1e4, 1, 1e6};
     return (hearth_material){HEARTH_MATERIAL_ABI, sizeof(hearth_material), sizeof(double), "good", NULL,
-                             g_params, 2, 0, 0, d_init, d_stress, d_wave, NULL, d_describe, d_plastic_J, NULL, NULL, NULL, NULL, NULL};
+                             g_params, 2, 0, 0, d_init, d_stress, d_wave, NULL, d_describe, d_plastic_J, NULL, NULL, NULL, NULL, NULL, 0};
 }
 
 static void refused(const hearth_material *m, const char *words) {
@@ -388,6 +408,42 @@ TEST(plugin_descriptor_rules) {
     m = good(), g_params[0].name = "rho", refused(&m, "no parameter named \"density\" (unit kg/m^3)");
     m = good(), g_params[0].unit = "g/cm^3", refused(&m, "it must be \"kg/m^3\"");
     m = good(), g_params[0].min = 0, refused(&m, "must be > 0");
+}
+
+static int d_stress_block(const hearth_block *b, double *const tau[9], int *code) {
+    (void)tau;
+    for (int j = 0; j < b->n; j++) code[j] = 0;
+    return 0;
+}
+
+/* <hearth/material.h> rule 10: memo_size within 0..HEARTH_MEMO_MAX, and only with stress_block and
+ * HEARTH_NEEDS_MEMO, each with the other; a plugin built before memo_size does not have it read; and
+ * HEARTH_PLUGIN_NO_BATCH drops the memo with stress_block. */
+TEST(plugin_memo_rules) {
+    hearth_error err = {0};
+    plugin_desc d;
+    hearth_material m = good();
+    m.stress_block = d_stress_block, m.needs = HEARTH_NEEDS_MEMO, m.memo_size = 2;
+    CHECK(plugin_describe("x.so", &m, &d, &err) == HEARTH_OK);
+    CHECK(d.mat.memo_size == 2 && d.mat.stress_block == d_stress_block);
+    plugin_desc_free(&d);
+    m.struct_size = (int)offsetof(hearth_material, memo_size); /* built before rule 10: memo_size reads 0 */
+    m.needs = 0;
+    CHECK(plugin_describe("x.so", &m, &d, &err) == HEARTH_OK);
+    CHECK(d.mat.memo_size == 0);
+    plugin_desc_free(&d);
+    m = good(), m.stress_block = d_stress_block, m.needs = HEARTH_NEEDS_MEMO, m.memo_size = HEARTH_MEMO_MAX + 1;
+    refused(&m, "memo_size 9 doubles per point; valid range 0..8");
+    m.memo_size = -1, refused(&m, "memo_size -1 doubles per point; valid range 0..8");
+    m = good(), m.needs = HEARTH_NEEDS_MEMO, m.memo_size = 2, refused(&m, "memo_size 2 but no stress_block");
+    m = good(), m.stress_block = d_stress_block, m.memo_size = 2, refused(&m, "memo_size 2 but not HEARTH_NEEDS_MEMO");
+    m = good(), m.stress_block = d_stress_block, m.needs = HEARTH_NEEDS_MEMO, refused(&m, "HEARTH_NEEDS_MEMO with memo_size 0");
+    setenv("HEARTH_PLUGIN_NO_BATCH", "1", 1);
+    m = good(), m.stress_block = d_stress_block, m.needs = HEARTH_NEEDS_MEMO, m.memo_size = 2;
+    CHECK(plugin_describe("x.so", &m, &d, &err) == HEARTH_OK);
+    CHECK(d.mat.memo_size == 0 && d.mat.stress_block == NULL);
+    plugin_desc_free(&d);
+    unsetenv("HEARTH_PLUGIN_NO_BATCH");
 }
 
 /* ---- wave speeds at the schema's corners, and the call record ------------ */
@@ -479,6 +535,6 @@ TEST(plugin_reserved_names_documented) {
 
 TEST_MAIN(T(plugin_missing_file), T(plugin_not_shared_object), T(plugin_no_entry), T(plugin_wrong_abi),
           T(plugin_null_callback), T(plugin_bad_default), T(plugin_load_cached), T(plugin_check_builtin),
-          T(plugin_check_catches_asym), T(plugin_check_batched_matches), T(plugin_check_scalars_matches), T(plugin_check_reports_codes), T(plugin_load_nomem),
-          T(plugin_descriptor_rules), T(plugin_wave_corners), T(plugin_reserved_name),
+          T(plugin_check_catches_asym), T(plugin_check_batched_matches), T(plugin_check_scalars_matches), T(plugin_check_memo_keyed), T(plugin_check_reports_codes), T(plugin_load_nomem),
+          T(plugin_descriptor_rules), T(plugin_memo_rules), T(plugin_wave_corners), T(plugin_reserved_name),
           T(plugin_reserved_names_documented))

@@ -442,7 +442,8 @@ typedef struct material_run {
      * advances F; a 2D store of 2x2 tensors writes plane-strain 3x3s, <hearth/material.h> rule 8). */
     const double *F[9], *grad_v[9];
     /* 1: the plane strain embedding of a 2D store (tensor2.h, t2_embed): entries 2, 5, 6 and 7 of F and
-     * grad_v, and 8 of grad_v, are +0.0 at every point (the door then passes them through unscaled) */
+     * grad_v, and 8 of grad_v, are +0.0 at every point (the door then passes them through unscaled), and F's
+     * entry 8 is 1.0 (its thermal split is the scale itself) */
     int plane;
     const double *J;             /* det F of each point (n) */
     const double *temperature;   /* each point's (n), or NULL: NaN */

@@ -73,6 +73,20 @@ static inline void scale_column(double *restrict out, const double *restrict x, 
         for (int j = 0; j < n; j++) out[j] = x[j] * s[j];
 }
 
+/* scale_column on four columns at once (x * s), and on three with + d (the diagonal of L): the plane strain
+ * block's products, each entry the same operation on the same values, in one pass over s (and d) */
+static inline void scale_columns4(double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
+                                  const double *restrict x0, const double *restrict x1, const double *restrict x2,
+                                  const double *restrict x3, const double *restrict s, const double *restrict unused, int n) {
+    (void)unused;
+    for (int j = 0; j < n; j++) o0[j] = x0[j] * s[j], o1[j] = x1[j] * s[j], o2[j] = x2[j] * s[j], o3[j] = x3[j] * s[j];
+}
+static inline void scale_columns3(double *restrict o0, double *restrict o1, double *restrict o2, const double *restrict x0,
+                                  const double *restrict x1, const double *restrict x2, const double *restrict s,
+                                  const double *restrict d, int n) {
+    for (int j = 0; j < n; j++) o0[j] = x0[j] * s[j] + d[j], o1[j] = x1[j] * s[j] + d[j], o2[j] = x2[j] * s[j] + d[j];
+}
+
 /* material_thermal_scales (material.h) over a block, given each point's K (its bulk_modulus, which the
  * caller asked point by point: K may read the state): split[j], the scales sF[j], sL[j] and dL[j], and
  * the strain stored in e_store[j] when dt > 0, each the value material_thermal_scales gives the point
@@ -94,25 +108,60 @@ static int thermal_scales_block(const double *core, int n, const double *restric
                                  double *restrict sF, double *restrict sL, double *restrict dL) {
     const double cl = core[CP_EXPANSION], Tr = core[CP_REFERENCE_T];
     double X[HEARTH_BLOCK_MAX], R[HEARTH_BLOCK_MAX];
-    for (int j = 0; j < n; j++) {
-        const double k = K[j], t = T[j], e0 = e_store[j];
-        const int sp = !(t == t) ? 0 : (k > 0) & (k < INFINITY) ? 1 : -1; /* material_thermal_scales' returns */
-        split[j] = (signed char)sp;
-        const double e = dt > 0 ? cl * (t - Tr) / k : e0;
-        X[j] = sp == 1 ? -e / 3 : 0.0;
-        R[j] = sp == 1 && dt > 0 ? (e0 - e) / 3 : -0.0;
-        e_store[j] = sp == 1 && dt > 0 ? e : e0;
-    }
+    if (dt > 0) {
+        /* the step's usual case in loops of doubles alone, every quotient taken and the values picked by selects,
+         * so that they vectorise (split's bytes in the same loop, and the quotients under the tests, kept it
+         * scalar: 25 instructions a point); split's bytes after, from the doubles */
+        double SP[HEARTH_BLOCK_MAX], EQ[HEARTH_BLOCK_MAX], XQ[HEARTH_BLOCK_MAX], RQ[HEARTH_BLOCK_MAX], E0[HEARTH_BLOCK_MAX];
+        for (int j = 0; j < n; j++) {
+            const double k = K[j], t = T[j], e0 = e_store[j];
+            /* material_thermal_scales' returns; one compare a select: two under one select became branches */
+            const double k0 = k > 0 ? 1.0 : -1.0, k1 = k < INFINITY ? k0 : -1.0;
+            const double e = cl * (t - Tr) / k;
+            SP[j] = t == t ? k1 : 0.0;
+            EQ[j] = e, XQ[j] = -e / 3, RQ[j] = (e0 - e) / 3, E0[j] = e0;
+        }
+        /* the picks, apart: with the quotients in the same loop GCC sinks them under the selects, and a select
+         * that may keep an entry as it was is a conditional store, either of which keeps a loop scalar */
+        for (int j = 0; j < n; j++) {
+            const double sp = SP[j];
+            X[j] = sp == 1.0 ? XQ[j] : 0.0;
+            R[j] = sp == 1.0 ? RQ[j] : -0.0;
+            e_store[j] = sp == 1.0 ? EQ[j] : E0[j];
+        }
+        for (int j = 0; j < n; j++) split[j] = (signed char)SP[j];
+    } else
+        for (int j = 0; j < n; j++) {
+            const double k = K[j], t = T[j], e0 = e_store[j];
+            const int sp = !(t == t) ? 0 : (k > 0) & (k < INFINITY) ? 1 : -1; /* material_thermal_scales' returns */
+            split[j] = (signed char)sp;
+            X[j] = sp == 1 ? -e0 / 3 : 0.0; /* dt = 0: the stored strain, nothing written */
+            R[j] = -0.0;
+        }
     /* x holds between the fields' updates (the temperature does, and K with it): its exp once a cycle (exp_memo.h);
      * the scales' finiteness counted in the loops that make them (a loop of its own over sF and sL cost 10
      * instructions a point) */
     long inf = 0, moved = 0;
-    if (memo)
+    if (memo) {
+        /* the memo's hits (exp_memo's test, m[0] == x and m[1] != 0) read in a loop of selects that vectorises,
+         * every point between the fields' updates; then exp_memo itself only where one missed (7 instructions a
+         * point as a loop of calls) */
+        double miss = 0, infd = 0;
         for (int j = 0; j < n; j++) {
-            sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp_memo(memo + 2 * j, X[j]);
-            inf += !(sF[j] <= DBL_MAX);
+            const double x = X[j], k = memo[2 * j], v = memo[2 * j + 1];
+            const double small = fabs(x) < 0x1p-54 ? 1.0 : 0.0, hit = k == x && v != 0 ? 1.0 : 0.0;
+            const double f = small == 1.0 ? 1.0 : hit == 1.0 ? v : 0.0;
+            sF[j] = f;
+            miss = small == 1.0 || hit == 1.0 ? miss : 1.0; /* flags picked, not summed: a sum of doubles */
+            infd = f <= DBL_MAX ? infd : 1.0;                /* stays in order, one scalar add a point */
         }
-    else
+        inf += infd > 0;
+        for (int j = 0; j < n && miss > 0; j++)
+            if (!(fabs(X[j]) < 0x1p-54) && !(memo[2 * j] == X[j] && memo[2 * j + 1] != 0)) {
+                sF[j] = exp_memo(memo + 2 * j, X[j]);
+                inf += !(sF[j] <= DBL_MAX);
+            }
+    } else
         for (int j = 0; j < n; j++) {
             sF[j] = fabs(X[j]) < 0x1p-54 ? 1.0 : exp(X[j]);
             inf += !(sF[j] <= DBL_MAX);
@@ -120,8 +169,15 @@ static int thermal_scales_block(const double *core, int n, const double *restric
     if (dt > 0) {
         /* every point's small-r values first, in a loop with no branch (one vector division), then libm where
          * r is not small: the values the branch per point gave, which was 11 instructions a point */
-        for (int j = 0; j < n; j++) sL[j] = 1.0, dL[j] = R[j] / dt;
+        /* big: the points whose r is not small, none between the fields' updates, where the scan below is
+         * skipped; a flag in a double, picked (a long counted beside the doubles kept the loop scalar, and a
+         * double summed stays in order) */
+        double big = 0;
         for (int j = 0; j < n; j++) {
+            sL[j] = 1.0, dL[j] = R[j] / dt;
+            big = fabs(R[j]) < 0x1p-54 ? big : 1.0;
+        }
+        for (int j = 0; j < n && big > 0; j++) {
             const double r = R[j];
             if (!(fabs(r) < 0x1p-54)) {
                 sL[j] = exp(r), dL[j] = expm1(r) / dt;
@@ -267,12 +323,15 @@ static int curve_memo_columns(const material_slot *ms, const material_run_params
  * factor; the factors are evaluated again only where material_run_params_at
  * would (the ratios differ from the last point's), so they are its values. */
 static void run_params_columns(material_run_params *rp, const material_slot *ms, const particles *ps, int i0, int n,
-                               int nv, const int *vk, double (*vcol)[HEARTH_BLOCK_MAX]) {
+                               int nv, const int *vk, double (*vcol)[HEARTH_BLOCK_MAX], unsigned char *uniform) {
     const int nt = rp->nt, nc = ms->ncurves;
     int col_of[MATERIAL_MAX_PARAMS];
     unsigned char by_T[RUN_MAX_VARYING] = {0}; /* column v is a temperature curve's (written whole below) */
     for (int v = 0; v < nv; v++) col_of[vk[v]] = v;
     for (int t = 0; t < nt; t++) by_T[col_of[ms->curves[t].param]] = 1;
+    /* uniform[v]: column v holds ms->params[vk[v]] at every point (no temperature curve, and its moisture
+     * factors left it unmultiplied) */
+    for (int v = 0; v < nv; v++) uniform[v] = !by_T[v];
     for (int v = 0; v < nv; v++)
         if (!by_T[v])
             for (int j = 0; j < n; j++) vcol[v][j] = ms->params[vk[v]];
@@ -289,10 +348,12 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
     if (!(ps->enabled & (1u << PC_WATER))) {
         int undried = 1;
         if (rp->dried) {
-            /* whether a point dried: the first one found ends the scan (a count over every point, vectorised, cost
-             * 7 instructions a point in a block that never dried) */
+            /* whether a point dried (a count over every point in an int, vectorised, cost 7 instructions a point in
+             * a block that never dried; a scan ending at the first, 9) */
             const double *dr = rp->dried + i0;
-            for (int j = 0; j < n && undried; j++) undried = 1.0 - dr[j] >= 1.0;
+            double dried = 0; /* a flag picked in a loop that vectorises: 9 instructions a point as a scan */
+            for (int j = 0; j < n; j++) dried = 1.0 - dr[j] >= 1.0 ? dried : 1.0;
+            undried = dried == 0;
         }
         if (undried) {
             if (!(rp->r == 1.0 && rp->rd == 1.0))
@@ -301,8 +362,10 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
             for (int k = nt; k < nc; k++) {
                 double *col = vcol[col_of[ms->curves[k].param]];
                 const double f = rp->f[k - nt];
-                if (f != 1.0) /* x * 1.0 is x: a dry curve's factor at the raw dough's ratio 1 leaves the column */
+                if (f != 1.0) { /* x * 1.0 is x: a dry curve's factor at the raw dough's ratio 1 leaves the column */
+                    uniform[col_of[ms->curves[k].param]] = 0;
                     for (int j = 0; j < n; j++) col[j] *= f;
+                }
             }
             return;
         }
@@ -332,11 +395,14 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
         double *col = vcol[col_of[ms->curves[k].param]];
         if (varies) {
             const double *f = fcol[k - nt];
+            uniform[col_of[ms->curves[k].param]] = 0;
             for (int j = 0; j < n; j++) col[j] *= f[j];
         } else {
             const double f = rp->f[k - nt];
-            if (f != 1.0) /* x * 1.0 is x (the columns are finite parameters) */
+            if (f != 1.0) { /* x * 1.0 is x (the columns are finite parameters) */
+                uniform[col_of[ms->curves[k].param]] = 0;
                 for (int j = 0; j < n; j++) col[j] *= f;
+            }
         }
     }
 }
@@ -421,14 +487,24 @@ static double run_after_block(const material_slot *ms, const material_run *r, un
             plugin_call_enter(m, "scalars_block");
             m->scalars_block(b, out);
         }
-        for (int j = 0; j < n; j++) {
-            if (!ms->wave_per_point) wave[j] = ms->wave_speed;
-            if (m->viscosity) {
+        /* each of the three in its own loop, none when not asked (the cookie: its wave speed came per point, it
+         * has no viscosity, and a block without a crack counts none in one loop that vectorises) */
+        if (!ms->wave_per_point)
+            for (int j = 0; j < n; j++) wave[j] = ms->wave_speed;
+        if (m->viscosity)
+            for (int j = 0; j < n; j++) {
                 const double nu = V[j] / hearth_block_param(b, ms->density_index, j);
                 if (nu > numax) numax = nu;
             }
-            cracked[j] = damage && D[j] >= 1;
-            ncracked += cracked[j];
+        memset(cracked, 0, sizeof cracked);
+        if (damage) {
+            double dmax = 0; /* the largest damage, in a loop of selects (NaN is not >= 1: not cracked, as below) */
+            for (int j = 0; j < n; j++) dmax = D[j] >= 1 ? 1.0 : dmax;
+            if (dmax != 0)
+                for (int j = 0; j < n; j++) {
+                    cracked[j] = D[j] >= 1;
+                    ncracked += cracked[j];
+                }
         }
     } else
     for (int j = 0; j < n; j++) {
@@ -477,12 +553,14 @@ static double run_after_block(const material_slot *ms, const material_run *r, un
     }
     if (gas) { /* gas pressure (eq. 13), with the porosity after this step's plastic flow */
         const double *gj = gas + r->i0, n0 = core[CP_POROSITY0];
-        if (!ncracked && m->plastic_J && T) /* the usual block: the same arithmetic without a test per point */
-            for (int j = 0; j < n; j++) {
-                const double tg = gas_tau(gj[j], T[j], gas_porosity(JP1[j], n0));
-                t0[j] += tg, t4[j] += tg, t8[j] += tg;
-            }
-        else
+        if (!ncracked && m->plastic_J && T) { /* the usual block: the same arithmetic without a test per point */
+            /* into a local column first: the compiler cannot know tau's columns do not alias gas, T or JP1, and
+             * with the sums in the same loop it kept the two divisions and the clamps scalar (26 instructions a
+             * point in the 2D dough bench) */
+            double TG[HEARTH_BLOCK_MAX];
+            for (int j = 0; j < n; j++) TG[j] = gas_tau(gj[j], T[j], gas_porosity(JP1[j], n0));
+            for (int j = 0; j < n; j++) t0[j] += TG[j], t4[j] += TG[j], t8[j] += TG[j];
+        } else
             for (int j = 0; j < n; j++) {
                 if (cracked[j]) continue;
                 const double np = m->plastic_J ? gas_porosity(JP1[j], n0) : P ? P[j] : NAN;
@@ -535,7 +613,13 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         memcpy(q, ms->params, sizeof(double) * (size_t)np);
         material_run_params rp; /* the curves once per run, as run_points resolves them, curve by curve */
         material_run_params_init(&rp, ms, ps);
-        run_params_columns(&rp, ms, ps, i0, n, nv, vk, vcol);
+        unsigned char uniform[RUN_MAX_VARYING];
+        run_params_columns(&rp, ms, ps, i0, n, nv, vk, vcol, uniform);
+        /* a column that holds the slot's own value at every point goes to the plugin as that value (b.p is
+         * ms->params): the same values, and the plugin hoists what it computes from them (the cookie's E, whose
+         * dry curve is 1 at the raw dough's ratio: its Lame constants, wave speed and K once a block) */
+        for (int v = 0; v < nv; v++)
+            if (uniform[v]) pcolumn[vk[v]] = NULL;
     }
     const double *pj = nv ? q : ms->params; /* no curve: the slot's own parameters, uncopied */
     /* eq. 10 as a strain: the block gets F_M and L_M, as run_points hands each point. Each point's scalars
@@ -566,6 +650,8 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         .state = state,
         .state_stride = stride,
     };
+    if (m->memo_size > 0 && (ps->enabled & (1u << PC_PLUGIN_MEMO))) /* rule 10: the plugin's cache, never state */
+        b.memo = pcold(ps, PC_PLUGIN_MEMO) + (size_t)i0 * ps->memo_stride, b.memo_stride = ps->memo_stride;
     if ((porous_J || th) && m->scalars_block) { /* rule 9: J^P and K in one call */
         double JP0[HEARTH_BLOCK_MAX];
         double *out[HEARTH_SCALAR_COUNT] = {0};
@@ -600,9 +686,17 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     if (th) {
         /* a plane strain embedding's zeros: +0.0 times a finite scale >= +0 is +0.0, the entry itself */
         const int skip = r->plane && finite;
-        for (int c = 0; c < 9; c++)
-            if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7))) scale_column(Fm[c], r->F[c], sF, NULL, n), Fb[c] = Fm[c];
-        if (r->dt > 0) /* the diagonal: L c * exp(r), then + expm1(r) / dt (-std=c17: never contracted to an fma) */
+        if (skip) {
+            /* the in-plane four in one loop (one load of the scale for four products), and F_zz, which the
+             * embedding makes 1.0 at every point: 1.0 * s is s, so its column is sF itself */
+            scale_columns4(Fm[0], Fm[1], Fm[3], Fm[4], r->F[0], r->F[1], r->F[3], r->F[4], sF, NULL, n);
+            Fb[0] = Fm[0], Fb[1] = Fm[1], Fb[3] = Fm[3], Fb[4] = Fm[4], Fb[8] = sF;
+        } else
+            for (int c = 0; c < 9; c++) scale_column(Fm[c], r->F[c], sF, NULL, n), Fb[c] = Fm[c];
+        if (r->dt > 0 && skip && still) { /* the diagonal alone (x * 1.0 is x off it), in one loop */
+            scale_columns3(Lm[0], Lm[4], Lm[8], r->grad_v[0], r->grad_v[4], r->grad_v[8], sL, dL, n);
+            Lb[0] = Lm[0], Lb[4] = Lm[4], Lb[8] = Lm[8];
+        } else if (r->dt > 0) /* the diagonal: L c * exp(r), then + expm1(r) / dt (-std=c17: never contracted to an fma) */
             for (int c = 0; c < 9; c++)
                 if (!(skip && (c == 2 || c == 5 || c == 6 || c == 7)) && !(still && c % 4 != 0)) /* still: x * 1.0 */
                     scale_column(Lm[c], r->grad_v[c], sL, c % 4 == 0 ? dL : NULL, n), Lb[c] = Lm[c];

@@ -535,6 +535,7 @@ typedef struct batch_pts {
     int n, dim, stride;
     double dt;
     double *F[9], *L[9], *T, *P, *S, *pv, *stA, *stB, *tauA, *tauB[9];
+    double *st0, *memo; /* rule 10: the block's starting states, and its memo (memo_size + 1 doubles a point) */
     int *codeA, *codeB;
     int scalars_bad, scalars_points; /* rule 9: a point whose scalars differ; points compared */
     char scalars_detail[CHECK_DETAIL];
@@ -607,6 +608,42 @@ static int batch_compare(const check_rig *r, const batch_pts *b, int blk, int j,
     return 0;
 }
 
+/* rule 10: the block again from its starting states with a memo, zeroed, then warm (as the zeroed run left
+ * it: every key met), then with point j's entry swapped for point n-1-j's; each run's tau, state and code
+ * against the one-point stress, bit for bit. Returns 1 (detail says which memo) when a point differs. */
+static int batch_memo(const check_rig *r, batch_pts *b, int blk, hearth_block *blk_, char *detail) {
+    static const char *const how[3] = {"zeroed", "warm (the same block again)", "swapped between points"};
+    const hearth_material *m = r->m;
+    const int n = b->n, w = m->memo_size + 1; /* a stride past memo_size: a plugin must use it */
+    memset(b->memo, 0, sizeof(double) * (size_t)n * w);
+    blk_->memo = b->memo, blk_->memo_stride = w;
+    for (int pass = 0; pass < 3; pass++) {
+        if (pass == 2)
+            for (int j = 0; j < n / 2; j++)
+                for (int k = 0; k < w; k++) {
+                    double *x = b->memo + (size_t)j * w + k, *y = b->memo + (size_t)(n - 1 - j) * w + k;
+                    const double t = *x;
+                    *x = *y, *y = t;
+                }
+        memcpy(b->stB, b->st0, sizeof(double) * (size_t)n * b->stride);
+        for (int c = 0; c < 9; c++)
+            for (int j = 0; j < n; j++) b->tauB[c][j] = NAN;
+        for (int j = 0; j < n; j++) b->codeB[j] = -12345;
+        plugin_call_enter(m, "stress_block");
+        m->stress_block(blk_, b->tauB, b->codeB);
+        plugin_call_leave();
+        for (int j = 0; j < n; j++) {
+            char why[CHECK_DETAIL];
+            if (batch_compare(r, b, blk, j, why)) {
+                snprintf(detail, CHECK_DETAIL, "with the memo %s (rule 10): %.*s", how[pass], CHECK_DETAIL - 64, why);
+                return 1;
+            }
+        }
+    }
+    blk_->memo = NULL;
+    return 0;
+}
+
 /* One block of the battery: each point's state advanced by j % 4 steps of
  * its own (one-point calls), its parameters and fields drawn, then one call
  * of each kind on copies of the same state. Returns 1 when a point differs. */
@@ -652,6 +689,7 @@ static int batch_block(check_rig *r, batch_pts *b, int blk, uint64_t *seed, char
         for (int c = 0; c < 9; c++) b->F[c][j] = F[c], b->L[c][j] = L[c];
     }
     memcpy(b->stB, b->stA, sizeof(double) * (size_t)n * b->stride);
+    if (m->memo_size > 0) memcpy(b->st0, b->stA, sizeof(double) * (size_t)n * b->stride);
     /* one point at a time */
     for (int j = 0; j < n; j++) {
         double q[PLUGIN_CHECK_MAX_PARAMS];
@@ -683,6 +721,7 @@ static int batch_block(check_rig *r, batch_pts *b, int blk, uint64_t *seed, char
     if (m->scalars_block && !b->scalars_bad) batch_scalars(r, b, blk, &blk_);
     for (int j = 0; j < n; j++)
         if (batch_compare(r, b, blk, j, detail)) return 1;
+    if (m->memo_size > 0 && batch_memo(r, b, blk, &blk_, detail)) return 1;
     int want = 0;
     for (int j = 0; j < n; j++) want += b->codeB[j] != 0;
     if (nbad != want) {
@@ -710,7 +749,8 @@ static int check_batched(check_rig *r) {
     }
     const int N = HEARTH_BLOCK_MAX, stride = m->state_size + 1; /* a stride past the state: a plugin must use it */
     const size_t dN = sizeof(double) * N;
-    const size_t bytes = dN * (18 + 3 + 9 + 9 + (size_t)m->nparams + 2 * (size_t)stride) + 2 * sizeof(int) * N;
+    const int memo_w = m->memo_size > 0 ? m->memo_size + 1 : 0; /* batch_memo's stride */
+    const size_t bytes = dN * (18 + 3 + 9 + 9 + (size_t)m->nparams + 3 * (size_t)stride + (size_t)memo_w) + 2 * sizeof(int) * N;
     char *mem = mem_alloc(bytes);
     if (!mem) return -1;
     double *d = (double *)mem;
@@ -725,6 +765,8 @@ static int check_batched(check_rig *r) {
     b.pv = d, d += (size_t)m->nparams * N;
     b.stA = d, d += (size_t)stride * N;
     b.stB = d, d += (size_t)stride * N;
+    b.st0 = d, d += (size_t)stride * N;
+    b.memo = d, d += (size_t)memo_w * N;
     b.codeA = (int *)d;
     b.codeB = b.codeA + N;
     uint64_t seed = 0xba7c4001u;
@@ -740,8 +782,9 @@ static int check_batched(check_rig *r) {
     if (!bad)
         snprintf(detail, sizeof detail,
                  "stress_block and stress agree bit for bit (tau, state, code) on %d points in %d blocks (dim 2 and 3, F "
-                 "near and far from I, advanced states, parameters varying by point; %d refused alike)",
-                 points, BATCH_NBLOCKS, refused);
+                 "near and far from I, advanced states, parameters varying by point; %d refused alike)%s",
+                 points, BATCH_NBLOCKS, refused,
+                 m->memo_size > 0 ? "; with the memo NULL, zeroed, warm and swapped between points (rule 10)" : "");
     check_report(r, "batched", !bad, detail);
     if (m->scalars_block) {
         if (!b.scalars_bad)

@@ -247,7 +247,7 @@ void plugin_desc_free(plugin_desc *d) {
 #define PLUGIN_MAX_STATE 4096
 #define PLUGIN_KNOWN_NEEDS                                                                         \
     (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_SATURATION |                  \
-     HEARTH_NEEDS_THERMAL_EXPANSION | HEARTH_NEEDS_DIM)
+     HEARTH_NEEDS_THERMAL_EXPANSION | HEARTH_NEEDS_DIM | HEARTH_NEEDS_MEMO)
 
 static hearth_status plugin_check_params(const char *shown, const hearth_material *m, hearth_error *err) {
     const hearth_param *ps = m->params;
@@ -454,6 +454,19 @@ hearth_status plugin_describe(const char *shown, const hearth_material *m, plugi
     if (c.nparams > PLUGIN_MAX_PARAMS)
         return err_set(err, HEARTH_ERR_PLUGIN, "%s: material '%s' has %d parameters; at most %d are allowed",
                        shown, c.name, c.nparams, PLUGIN_MAX_PARAMS);
+    /* rule 10: the memo comes with stress_block and its needs bit, each with the other */
+    if (c.memo_size < 0 || c.memo_size > HEARTH_MEMO_MAX)
+        return err_set(err, HEARTH_ERR_PLUGIN, "%s: material '%s' has memo_size %d doubles per point; valid range 0..%d",
+                       shown, c.name, c.memo_size, HEARTH_MEMO_MAX);
+    if (c.memo_size > 0 && (!c.stress_block || !(c.needs & HEARTH_NEEDS_MEMO)))
+        return err_set(err, HEARTH_ERR_PLUGIN,
+                       "%s: material '%s' has memo_size %d but %s; the memo is stress_block's and read under "
+                       "HEARTH_NEEDS_MEMO (<hearth/material.h> rule 10)",
+                       shown, c.name, c.memo_size, !c.stress_block ? "no stress_block" : "not HEARTH_NEEDS_MEMO");
+    if (c.memo_size == 0 && (c.needs & HEARTH_NEEDS_MEMO))
+        return err_set(err, HEARTH_ERR_PLUGIN,
+                       "%s: material '%s' sets HEARTH_NEEDS_MEMO with memo_size 0; give memo_size 1..%d or drop the bit",
+                       shown, c.name, HEARTH_MEMO_MAX);
     hearth_status st = plugin_check_params(shown, &c, err);
     if (st != HEARTH_OK) return st;
     if ((st = plugin_check_wave_corners(shown, m, &c, err)) != HEARTH_OK) return st;
@@ -471,7 +484,7 @@ hearth_status plugin_describe(const char *shown, const hearth_material *m, plugi
     /* <hearth/material.h> rule 7: HEARTH_PLUGIN_NO_BATCH=1 runs a scene on the one-point stress alone,
      * to compare the two paths' outputs byte for byte */
     const char *nb = getenv("HEARTH_PLUGIN_NO_BATCH");
-    if (nb && *nb && strcmp(nb, "0") != 0) c.stress_block = NULL, c.scalars_block = NULL; /* rule 9: with stress_block only */
+    if (nb && *nb && strcmp(nb, "0") != 0) c.stress_block = NULL, c.scalars_block = NULL, c.memo_size = 0; /* rules 9, 10: with stress_block only */
     c.params = out->params;
     out->mat = c;
     out->density = plugin_param_index(&c, "density");

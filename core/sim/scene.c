@@ -356,6 +356,9 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
      * split's exp of it between the fields' updates a memo (exp_memo.h) */
     if (core[CP_EXPANSION] > 0 && m->bulk_modulus &&
         (particles_enable(&s->ps, PC_THERMAL, err) || particles_enable(&s->ps, PC_THERMAL_MEMO, err))) return -1;
+    /* the plugin's memo (<hearth/material.h> rule 10): MPM's batched door is its only reader */
+    if (m->memo_size > 0 && m->stress_block && s->def.solver == HEARTH_SOLVER_MPM &&
+        particles_set_memo_stride(&s->ps, m->memo_size, err)) return -1;
     /* and so does a plugin that reads temperature */
     if ((m->needs & HEARTH_NEEDS_TEMPERATURE) && scene_enable_temperature(s, err)) return -1;
     if (water_material_wants(s, id) && water_enable(s, err)) return -1;
@@ -434,6 +437,8 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         if (ps->enabled & (1u << PC_DRIED)) pcold(ps, PC_DRIED)[j] = 0; /* never dried */
         if (ps->enabled & (1u << PC_THERMAL)) pcold(ps, PC_THERMAL)[j] = 0; /* F = I: no thermal strain taken out yet */
         if (ps->enabled & (1u << PC_VENT)) pcold(ps, PC_VENT)[j] = 0; /* no surface until a field step finds it (gas.c) */
+        if (ps->enabled & (1u << PC_PLUGIN_MEMO)) /* zeros (they miss): a plugin's memo holds only what it wrote (rule 10) */
+            memset(pcold(ps, PC_PLUGIN_MEMO) + (size_t)j * ps->memo_stride, 0, sizeof(double) * (size_t)ps->memo_stride);
         if (ps->state_stride) {
             double *st = pcold(ps, PC_STATE) + (size_t)j * ps->state_stride;
             memset(st, 0, sizeof(double) * (size_t)ps->state_stride);

@@ -27,9 +27,10 @@
  *
  * 2. Descriptor. name is [a-z0-9_]+ (it is the file's <name> and a Lua
  *    string). init, stress, wave_speed and describe_error are non-NULL;
- *    blend, plastic_J, viscosity, damage, stress_block, bulk_modulus and scalars_block may be NULL. nparams <= 256 with params
- *    non-NULL when nparams > 0; 0 <= state_size <= 4096; needs holds only
- *    known HEARTH_NEEDS_* bits.
+ *    blend, plastic_J, viscosity, damage, stress_block, bulk_modulus and scalars_block may be NULL,
+ *    and memo_size 0. nparams <= 256 with params
+ *    non-NULL when nparams > 0; 0 <= state_size <= 4096; 0 <= memo_size <= HEARTH_MEMO_MAX (rule 10);
+ *    needs holds only known HEARTH_NEEDS_* bits.
  *
  * 3. Parameters. Each name is a Lua identifier [A-Za-z_][A-Za-z0-9_]*, unique
  *    in the schema; unit is non-NULL (SI, "1" when dimensionless); min and max
@@ -115,6 +116,24 @@
  *    HEARTH_PLUGIN_NO_BATCH=1 makes the core ignore it too. `hearth plugin check` compares it with the
  *    one-point callbacks on the batched battery's blocks and names the first point that differs.
  *
+ * 10. The block's memo (optional: memo_size, appended after scalars_block, with HEARTH_NEEDS_MEMO). A
+ *    plugin with stress_block may ask for memo_size doubles per point (1..HEARTH_MEMO_MAX) that the core
+ *    keeps for it and hands to stress_block as hearth_block.memo: point j's at memo + j * memo_stride.
+ *    It is a cache, not state: between the fields' updates a point's temperature holds, and a law may
+ *    meet an argument it met the step before (cam_clay_dough's log of the out-of-plane stretch b_zz),
+ *    whose value the memo can keep. An entry holds zeros or what this plugin's stress_block last wrote
+ *    into some point's memo, of some block, in some earlier call: not necessarily this point's (the core
+ *    moves memos with their particles, but a restored or grown scene starts from zeros), not
+ *    necessarily for this material's parameters. So stress_block must give the SAME BITS whatever the
+ *    memo holds of that kind, or when memo is NULL (the core passes none): key every cached value on
+ *    every input it is a function of, compared bit for bit, and make a zeroed entry miss. The core
+ *    neither hashes nor saves the memo (a checkpoint that claims one is refused), so a hit cannot move
+ *    a scene's bits. `hearth plugin check` runs each batched block with the memo NULL, zeroed, warm
+ *    (the same block again, every key met) and swapped between points (point j's memo is point n-1-j's),
+ *    and names the first point whose results differ from the one-point stress. HEARTH_NEEDS_MEMO makes
+ *    a core that does not know the field refuse the plugin; memo_size > 0 needs the bit and the bit
+ *    needs memo_size > 0 and stress_block. HEARTH_PLUGIN_NO_BATCH=1 drops the memo with stress_block.
+ *
  * All tensors are 3x3, row-major (a[3*row+col]), in SI units. 2D scenes are
  * plane strain: the solver passes tensors whose z row and column describe no
  * deformation, and ignores the zz stress for motion (it still counts for
@@ -147,8 +166,14 @@ enum {
     HEARTH_NEEDS_THERMAL_EXPANSION = 1u << 3,
     /// hearth_point.dim and hearth_block.dim are read (contract rule 8). Every core that knows the bit
     /// fills them for every plugin; the bit only makes an older core, whose point has no dim, refuse.
-    HEARTH_NEEDS_DIM = 1u << 4
+    HEARTH_NEEDS_DIM = 1u << 4,
+    /// hearth_block.memo and memo_stride are read (contract rule 10; memo_size > 0). A core that does not
+    /// know the bit refuses the plugin, so stress_block never reads past an older core's block.
+    HEARTH_NEEDS_MEMO = 1u << 5
 };
+
+/// The most doubles of memo a point may have (hearth_material.memo_size, contract rule 10).
+#define HEARTH_MEMO_MAX 8
 
 /// The most points a hearth_block holds (stress_block may keep per-point scratch of this size on its stack).
 #define HEARTH_BLOCK_MAX 64
@@ -218,6 +243,10 @@ typedef struct hearth_block {
     const double *const *p_col;
     double *state;    ///< point j's state at state + j * state_stride (NULL when state_size is 0)
     int state_stride; ///< doubles from one point's state to the next, >= state_size
+    /// Appended with HEARTH_NEEDS_MEMO (contract rule 10): point j's memo_size doubles of cache at
+    /// memo + j * memo_stride, or NULL (no memo this call). Read only by a plugin that sets the bit.
+    double *memo;
+    int memo_stride; ///< doubles from one point's memo to the next, >= memo_size
 } hearth_block;
 
 /// Parameter k of point j of block b.
@@ -291,6 +320,9 @@ typedef struct hearth_material {
     /// (HEARTH_SCALAR_*) for point j's parameters and state, bit for bit. Reads the state, never writes it.
     /// Called concurrently, each call on its own block (rule 5).
     void (*scalars_block)(const hearth_block *b, double *const out[HEARTH_SCALAR_COUNT]);
+    /// Optional (0 when struct_size does not cover it). Doubles of per-point memo stress_block keeps
+    /// (contract rule 10), 0..HEARTH_MEMO_MAX; > 0 only with stress_block and HEARTH_NEEDS_MEMO.
+    int memo_size;
 } hearth_material;
 
 /// The entry point a plugin defines.

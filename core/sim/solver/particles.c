@@ -39,6 +39,7 @@ static const struct {
     [PC_THERMAL_MEMO] = {"thermal_memo", 2, 0},
     [PC_GAS_MEMO] = {"gas_memo", 2, 0},
     [PC_CURVE_MEMO] = {"curve_memo", CURVE_MEMO_WIDTH, 0},
+    [PC_PLUGIN_MEMO] = {"plugin_memo", 0, 0}, /* memo_stride doubles */
 };
 
 const char *particles_col_name(int c) { return col_info[c].name; }
@@ -52,7 +53,7 @@ int particles_col_is_int(int c) { return col_info[c].is_int; }
 
 int particles_col_ncomp(const particles *ps, int c) {
     if (ps->t2 && (c == PC_C || c == PC_F)) return 4; /* the in-plane block (tensor2.h) */
-    return col_info[c].ncomp ? col_info[c].ncomp : ps->state_stride;
+    return col_info[c].ncomp ? col_info[c].ncomp : c == PC_PLUGIN_MEMO ? ps->memo_stride : ps->state_stride;
 }
 
 size_t particles_col_bytes(const particles *ps, int c) {
@@ -134,6 +135,19 @@ hearth_status particles_set_state_stride(particles *ps, int stride, hearth_error
     ps->ccap[PC_STATE] = ps->cap;
     ps->state_stride = stride;
     return HEARTH_OK;
+}
+
+hearth_status particles_set_memo_stride(particles *ps, int stride, hearth_error *err) {
+    const uint32_t bit = 1u << PC_PLUGIN_MEMO;
+    if ((ps->enabled & bit) && stride <= ps->memo_stride) return HEARTH_OK;
+    /* a cache (<hearth/material.h> rule 10): a wider column starts from zeros, which miss, rather than copy */
+    if (ps->col[PC_PLUGIN_MEMO])
+        mem_free(ps->col[PC_PLUGIN_MEMO], particles_col_bytes(ps, PC_PLUGIN_MEMO) * (size_t)ps->ccap[PC_PLUGIN_MEMO]);
+    ps->col[PC_PLUGIN_MEMO] = NULL;
+    ps->ccap[PC_PLUGIN_MEMO] = 0;
+    ps->enabled &= ~bit;
+    if (stride > ps->memo_stride) ps->memo_stride = stride;
+    return particles_enable(ps, PC_PLUGIN_MEMO, err);
 }
 
 /* Gathers and copies run in parallel: each output element is written by one
@@ -471,12 +485,14 @@ int particles_permute_team_range(particles *ps, const int *order, int W, void *s
 
 hearth_status particles_copy(particles *dst, const particles *src, hearth_error *err) {
     const unsigned long edits = dst->edits + 1;
-    if (dst->state_stride != src->state_stride || dst->enabled != src->enabled || dst->t2 != src->t2 || dst->cap < src->n) {
+    if (dst->state_stride != src->state_stride || dst->memo_stride != src->memo_stride || dst->enabled != src->enabled ||
+        dst->t2 != src->t2 || dst->cap < src->n) {
         particles_free(dst);
         particles_init(dst);
         dst->enabled = src->enabled;
         dst->t2 = src->t2;
         dst->state_stride = src->state_stride;
+        dst->memo_stride = src->memo_stride;
         hearth_status st = particles_reserve_exact(dst, src->n > 0 ? src->n : 1, err);
         if (st) return st;
     }

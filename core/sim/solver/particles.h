@@ -51,11 +51,17 @@ typedef enum pcol {
      * first CURVE_MEMO_WIDTH - 3 temperature curves (material_batch.c's run_params_columns); a zeroed entry
      * misses (stamps start at 1). Never hashed nor saved, as the exp memos */
     PC_CURVE_MEMO,
+    /* a plugin's memo (<hearth/material.h> rule 10), memo_stride doubles: a cache its stress_block keys on the
+     * arguments it holds; allocated only in an MPM scene with a material whose plugin asks for one (memo_size),
+     * never hashed nor saved, as the memos above */
+    PC_PLUGIN_MEMO,
     PC_COUNT
 } pcol;
 
 /// Whether column c is a memo (a cache, not state: hearth_scene_hash and checkpoints leave it out).
-static inline int particles_col_is_memo(int c) { return c == PC_THERMAL_MEMO || c == PC_GAS_MEMO || c == PC_CURVE_MEMO; }
+static inline int particles_col_is_memo(int c) {
+    return c == PC_THERMAL_MEMO || c == PC_GAS_MEMO || c == PC_CURVE_MEMO || c == PC_PLUGIN_MEMO;
+}
 /* PC_CURVE_MEMO's doubles a particle: the key (stamp, T, T_max) and two curves' values, the cookie's and
  * muffin's (tau_y and eta); a material with more temperature curves evaluates the rest every step */
 enum { CURVE_MEMO_WIDTH = 5 };
@@ -66,6 +72,7 @@ typedef struct particles {
     int n, cap;            /* cap: particles every enabled column holds room for */
     int ccap[PC_COUNT];    /* room each column actually holds (>= cap after a failed growth) */
     int state_stride;      /* doubles of plugin state per particle (max over materials) */
+    int memo_stride;       /* doubles of PC_PLUGIN_MEMO per particle (max memo_size over the scene's plugins) */
     int t2;                /* 1: C and F keep their 2x2 in-plane blocks only (a 2D MPM scene; tensor2.h) */
     uint32_t enabled;      /* bit c set when column c is allocated */
     unsigned long edits;   /* bumped when particles are added, removed, reordered or overwritten
@@ -128,6 +135,8 @@ hearth_status particles_reserve_exact(particles *ps, int cap, hearth_error *err)
 hearth_status particles_enable(particles *ps, int c, hearth_error *err);
 /// Grow the plugin state stride, keeping existing state.
 hearth_status particles_set_state_stride(particles *ps, int stride, hearth_error *err);
+/// PC_PLUGIN_MEMO enabled with room for stride doubles a particle (at least); a wider one starts zeroed (a cache).
+hearth_status particles_set_memo_stride(particles *ps, int stride, hearth_error *err);
 /// Reorder every column so that new[i] = old[order[i]], through room bytes of
 /// scratch, at least 4 n (the MPM sort lends its n keys, read by then); more
 /// room lets more columns take the window's ring (particles.c).
