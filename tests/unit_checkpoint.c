@@ -744,6 +744,39 @@ TEST(checkpoint_memo_columns_refused) {
     hearth_scene_destroy(s);
 }
 
+/* A cache column c (name, width doubles a particle, its first the key) after steps that filled
+ * `filled` of s's entries: the save holds no such column and a file that claims one (bit) is refused by
+ * name; the restore starts it zeroed and, 40 steps on, has the unbroken run's bits. */
+static void memo_roundtrip(hearth_scene *s, int c, const char *name, int width, int filled,
+                           void (*bit)(uint8_t *, size_t), const char *path) {
+    hearth_error err;
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    if (img) {
+        CHECK(find(img, n, name, strlen(name)) == (size_t)-1);
+        expect_refused(img, n, bit, "a memo column");
+        free(img);
+    }
+    CHECK(hearth_scene_save(s, path, &err) == HEARTH_OK);
+    hearth_scene *r = hearth_scene_load(path, &err);
+    if (!r) printf("  load: %s\n", err.msg);
+    CHECK(r != NULL);
+    remove(path);
+    if (!r) return;
+    int empty = 0;
+    CHECK(r->ps.enabled & (1u << c));
+    for (int i = 0; i < r->ps.n; i++) empty += pcold(&r->ps, c)[(size_t)width * i] == 0;
+    CHECK(empty == r->ps.n);
+    CHECK(hearth_scene_step(s, 40, &err) == HEARTH_OK);
+    CHECK(hearth_scene_step(r, 40, &err) == HEARTH_OK);
+    printf("  %s: %d particles, %d memo entries filled at the save, %d empty after the restore; 40 steps on: hash "
+           "unbroken %016llx, restored %016llx\n", name, s->ps.n, filled, empty,
+           (unsigned long long)hearth_scene_hash(s), (unsigned long long)hearth_scene_hash(r));
+    CHECK(hearth_scene_hash(r) == hearth_scene_hash(s));
+    hearth_scene_destroy(r);
+}
+
 /* The temperature curves' memo (PC_CURVE_MEMO, material_batch.c) is a cache too: a dough with a curve on
  * tau_y saves no memo column after 20 steps that filled it, its restore starts it empty and continues with the
  * same bits as the unbroken run, and a file that claims it is refused by name. */
@@ -760,33 +793,7 @@ TEST(checkpoint_curve_memo_refused_and_refilled) {
     int filled = 0;
     for (int i = 0; i < s->ps.n; i++) filled += pcold(&s->ps, PC_CURVE_MEMO)[CURVE_MEMO_WIDTH * i] > 0;
     CHECK(filled == s->ps.n);
-    size_t n;
-    uint8_t *img = save_image(s, &n);
-    CHECK(img != NULL);
-    if (img) {
-        CHECK(find(img, n, "curve_memo", 10) == (size_t)-1);
-        expect_refused(img, n, curve_memo_bit, "a memo column");
-        free(img);
-    }
-    const char *path = "curve_memo_roundtrip.ck";
-    CHECK(hearth_scene_save(s, path, &err) == HEARTH_OK);
-    hearth_scene *r = hearth_scene_load(path, &err);
-    if (!r) printf("  load: %s\n", err.msg);
-    CHECK(r != NULL);
-    remove(path);
-    if (r) {
-        int empty = 0;
-        CHECK(r->ps.enabled & (1u << PC_CURVE_MEMO));
-        for (int i = 0; i < r->ps.n; i++) empty += pcold(&r->ps, PC_CURVE_MEMO)[CURVE_MEMO_WIDTH * i] == 0;
-        CHECK(empty == r->ps.n);
-        CHECK(hearth_scene_step(s, 40, &err) == HEARTH_OK);
-        CHECK(hearth_scene_step(r, 40, &err) == HEARTH_OK);
-        printf("  %d particles, %d memo entries filled at the save, %d empty after the restore; 20 + 40 steps: hash "
-               "unbroken %016llx, restored %016llx\n", s->ps.n, filled, empty,
-               (unsigned long long)hearth_scene_hash(s), (unsigned long long)hearth_scene_hash(r));
-        CHECK(hearth_scene_hash(r) == hearth_scene_hash(s));
-        hearth_scene_destroy(r);
-    }
+    memo_roundtrip(s, PC_CURVE_MEMO, "curve_memo", CURVE_MEMO_WIDTH, filled, curve_memo_bit, "curve_memo_roundtrip.ck");
     hearth_scene_destroy(s);
 }
 
@@ -799,39 +806,12 @@ TEST(checkpoint_plugin_memo_refused_and_refilled) {
     hearth_scene *s = vent_scene(0.02);
     CHECK(s != NULL);
     if (!s) return;
-    hearth_error err;
     CHECK(s->ps.enabled & (1u << PC_PLUGIN_MEMO));
     CHECK(s->ps.memo_stride == 2 && particles_col_bytes(&s->ps, PC_PLUGIN_MEMO) == 16);
     int filled = 0;
     for (int i = 0; i < s->ps.n; i++) filled += pcold(&s->ps, PC_PLUGIN_MEMO)[2 * i] > 0; /* a key b_zz > 0 */
     CHECK(filled > 0);
-    size_t n;
-    uint8_t *img = save_image(s, &n);
-    CHECK(img != NULL);
-    if (img) {
-        CHECK(find(img, n, "plugin_memo", 11) == (size_t)-1);
-        expect_refused(img, n, plugin_memo_bit, "a memo column");
-        free(img);
-    }
-    const char *path = "plugin_memo_roundtrip.ck";
-    CHECK(hearth_scene_save(s, path, &err) == HEARTH_OK);
-    hearth_scene *r = hearth_scene_load(path, &err);
-    if (!r) printf("  load: %s\n", err.msg);
-    CHECK(r != NULL);
-    remove(path);
-    if (r) {
-        int empty = 0;
-        CHECK(r->ps.enabled & (1u << PC_PLUGIN_MEMO));
-        for (int i = 0; i < r->ps.n; i++) empty += pcold(&r->ps, PC_PLUGIN_MEMO)[2 * i] == 0;
-        CHECK(empty == r->ps.n);
-        CHECK(hearth_scene_step(s, 40, &err) == HEARTH_OK);
-        CHECK(hearth_scene_step(r, 40, &err) == HEARTH_OK);
-        printf("  %d particles, %d memo entries filled at the save, %d empty after the restore; 20 + 40 steps: hash "
-               "unbroken %016llx, restored %016llx\n", s->ps.n, filled, empty,
-               (unsigned long long)hearth_scene_hash(s), (unsigned long long)hearth_scene_hash(r));
-        CHECK(hearth_scene_hash(r) == hearth_scene_hash(s));
-        hearth_scene_destroy(r);
-    }
+    memo_roundtrip(s, PC_PLUGIN_MEMO, "plugin_memo", 2, filled, plugin_memo_bit, "plugin_memo_roundtrip.ck");
     hearth_scene_destroy(s);
 }
 
