@@ -4,8 +4,9 @@
  * and eq. 2.42-2.43, Fan et al.'s bubble in the thesis's review), and the
  * pressure against it, with the density it reads: eq. 3.13's sum, the
  * particle's own volume (sph.continuity_density) or the sum renormalised by
- * the kernel's filled part (sph.renormalised_density), and the gas's own
- * stiffness (sph.gas_pressure). phase_pressure (sph.c) calls
+ * the kernel's filled part (sph.renormalised_density), a squeeze only as far
+ * as the particle's own volume confirms it (sph.own_squeeze), and the gas's
+ * own stiffness (sph.gas_pressure). phase_pressure (sph.c) calls
  * sph_pressure_gas_law in place of eq. 3.51-3.52 when the scene asks for it;
  * docs/validation.md "SPH bread roll (#18)" says why. */
 #include <math.h>
