@@ -11,10 +11,13 @@
 -- stress keep it one piece, and each bubble's rest density is the gas law's
 -- rho0 / V_b(T) with the dough's water vapour (sph.gas_law, sph.bubble_vapour),
 -- each bubble as stiff as its own gas, P_a - P_v (sph.gas_pressure = 101325):
--- the bubbles grow with their temperature, and only with it. Measured (2D
--- default, from the particles, tests/sph_roll_measure.py: the dough with its
--- closed gas cells, less what is torn): whole in every frame to 2 s, 1.30x
--- at 1.7 s and 1.45x at 2 s (at most 0.15% torn, pinholes). Before the gas
+-- the bubbles grow with their temperature, and only with it; the dough reads
+-- a squeeze only as far as its own det F confirms it (sph.own_squeeze).
+-- Measured (2D default, from the particles, tests/sph_roll_measure.py: the
+-- dough with its closed gas cells, less what is torn): whole and untorn in
+-- every frame to 2 s, on its tray (largest gap 1.30 mm), 1.14x at 2 s: the
+-- bubbles follow their gas only until the crumb sets near 65 degC
+-- (docs/validation.md "The roll's base: its own squeeze"). Before the gas
 -- law's density summed rest volumes (sph.c sort_and_list) it tore at 0.5 s
 -- (1.03x) along the films between bubble spots, which eq. 3.13's mass sum
 -- read as stretched (docs/validation.md "The films' tension").
@@ -35,11 +38,12 @@
 -- bubble's own gas", "The own gas as the preset"). --set dough_water=0.43
 -- dissolves CO2 in the dough's water by Henry's law, which the heat drives
 -- into the bubbles.
--- From 1.5 s the base arches off the tray between two feet, 2-4 mm
--- (docs/validation.md "Why the roll's base leaves its tray"): the dough of its
--- bottom rows reads the hot bubbles beside it as a squeeze (the rest-volume
--- sum) and holds 0.06-1.1 MPa, and the tray, a clip with no adhesion, can then
--- carry the roll's weight only over a contact W / p wide. (Two switches tried
+-- --set own_squeeze=false gives the rest-volume sum its squeeze back: from
+-- 1.5 s the base arches off the tray between two feet, 2-4 mm, and the roll
+-- rises 1.45x (docs/validation.md "Why the roll's base leaves its tray"): the
+-- dough of its bottom rows reads the hot bubbles beside it as a squeeze and
+-- holds 0.06-1.1 MPa, and the tray, a clip with no adhesion, can then carry
+-- the roll's weight only over a contact W / p wide. (Two switches tried
 -- for the base, a cap on the dough beside bubbles and vented open cells, are
 -- deleted: "Both switches on".)
 -- Writes volume.csv (relative volume over time, from a density slice, and the
