@@ -125,12 +125,12 @@ TEST(sph_dough_water_share_from_particles) {
 /* ---- sph.own_squeeze: the dough's squeeze from its own volume ------------ */
 
 /* A 2D block of dough 20 x 12 mm at 2 mm (bulk 1e6 Pa, Tait B 1.4e5, no
- * gravity), its middle 3 x 3 bubble particles, all at 85 degC and at their
+ * gravity), its middle 3 x 3 bubble particles, all at 60 degC and at their
  * raw volume, read as the bread roll's preset reads it (the gas law with
  * vapour 0.95 and the gas's own stiffness, tension, the renormalised sum),
  * after `steps` steps (the sum takes the gas law's rest volumes from the
- * second). The bubbles stand far below their gas volume (V_b ~ 2.9), as the
- * set crust holds the roll's. Outputs over the dough particles within 1.5
+ * second). The bubbles stand below their gas volume (V_b 1.33), as the set
+ * crust holds the roll's (hotter: 1.3-1.7 against 3-4). Outputs over the dough particles within 1.5
  * spacings of a bubble: [0] their mean Tait pressure over B, [1] the largest
  * excess of a pressure over what its own volume gives, B ((1 / J)^7 - 1)
  * clamped at 0 from below, over B, [2] their mean det F - 1; [3] the bubbles'
