@@ -129,7 +129,7 @@ TEST(sph_dough_water_share_from_particles) {
  * raw volume, read as the bread roll's preset reads it (the gas law with
  * vapour 0.95 and the gas's own stiffness, tension, the renormalised sum),
  * after `steps` steps (the sum takes the gas law's rest volumes from the
- * second). The bubbles stand below their gas volume (V_b 1.33), as the set
+ * second). The bubbles stand below their gas volume (V_b 1.34), as the set
  * crust holds the roll's (hotter: 1.3-1.7 against 3-4). Outputs over the dough particles within 1.5
  * spacings of a bubble: [0] their mean Tait pressure over B, [1] the largest
  * excess of a pressure over what its own volume gives, B ((1 / J)^7 - 1)
