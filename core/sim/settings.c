@@ -185,6 +185,13 @@ static const hearth_setting settings[] = {
              "of the kernel the body fills, sum_j V0_j det F_j W_ij, at most 1 (Ferrand et al. 2013's gamma): a free "
              "surface or a tray side reads no stretch, the inside keeps the sum",
              renormalised_density),
+    /* the sum spreads a held-back bubble's missing volume into its dough
+     * (docs/validation.md "Why the roll's base leaves its tray") */
+    SPH_FLAG("own_squeeze",
+             "with gas_law: Tait reads the summed density only as far as the particle's own volume m / (V0 det F) "
+             "confirms a squeeze, min(rho_sum, max(rho0, rho_own)): the sum's tension between films stays, a hot "
+             "bubble's missing volume no longer squeezes its dough neighbours",
+             own_squeeze),
     /* an ideal gas's isothermal bulk modulus is its pressure: a bubble at the
      * oven's 101325 Pa less its vapour is that stiff, whatever its dough's Tait B */
     SPH(gas_pressure, "Pa",

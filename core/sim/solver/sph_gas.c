@@ -4,8 +4,9 @@
  * and eq. 2.42-2.43, Fan et al.'s bubble in the thesis's review), and the
  * pressure against it, with the density it reads: eq. 3.13's sum, the
  * particle's own volume (sph.continuity_density) or the sum renormalised by
- * the kernel's filled part (sph.renormalised_density), and the gas's own
- * stiffness (sph.gas_pressure). phase_pressure (sph.c) calls
+ * the kernel's filled part (sph.renormalised_density), a squeeze only as far
+ * as the particle's own volume confirms it (sph.own_squeeze), and the gas's
+ * own stiffness (sph.gas_pressure). phase_pressure (sph.c) calls
  * sph_pressure_gas_law in place of eq. 3.51-3.52 when the scene asks for it;
  * docs/validation.md "SPH bread roll (#18)" says why. */
 #include <math.h>
@@ -166,6 +167,28 @@ static void renormalise(hearth_scene *s, const sph_cols *c, double *rho_out) {
     }
 }
 
+/* sph.own_squeeze: the density Tait (eq. 3.17) reads, the summed one
+ * (eq. 3.13 over rest volumes, or renormalised) where it reads a stretch, and
+ * a squeeze only as far as the particle's own volume confirms it:
+ *   rho_t = min(rho_sum, max(rho0, m / (V0 det F))).
+ * Why: the sum over rest volumes counts each neighbour's rest volume, and a
+ * hot bubble the set dough holds below its gas volume (det F 1.3-1.7 against
+ * V_b 3-4) lends its missing volume to every dough particle beside it, which
+ * reads squeezed while its own det F says it is 13-43% expanded; Tait charges
+ * that at gamma 7 with the hot dough's B (1.1 MPa in the bread roll's base at
+ * 2 s), and a tray that pushes only with the roll's weight then holds the
+ * base over W / p, a contact that shrinks to nothing: the base arches off
+ * (docs/validation.md "Why the roll's base leaves its tray"). Whether a piece
+ * of dough is squeezed is its own volume's to say. Its stretch is the sum's:
+ * the sum sees films between bubbles open (the particles' positions), which
+ * det F, integrated from the smoothed velocity gradient of eq. 3.27, does not,
+ * and that tension is what holds the films (docs/validation.md "The films'
+ * tension"; the own volume alone lets them tear). Where both read a squeeze
+ * the smaller counts. A non-positive det F keeps the sum. */
+static double own_squeeze(const double *F, double m, double V0, double rho0, double summed) {
+    return fmin(summed, fmax(rho0, volume_density(F, m, V0, summed)));
+}
+
 /* A bubble's stiffness under the gas law. With sph.gas_pressure = P_a it is
  * its gas's own, whatever dough holds it: the CO2 keeps its moles and the
  * vapour its partial pressure P_v = a_w P_sat(T) (eq. 2.42-2.43 with the
@@ -208,6 +231,8 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
         {"continuity_density", "true", "it is the gas law's pressure that reads the particle's own volume", both,
          o->continuity_density},
         {"renormalised_density", "true", "it is the gas law's pressure that reads it", both, o->renormalised_density},
+        {"own_squeeze", "true", "it is the gas law's dough that reads its squeeze from its own volume", both,
+         o->own_squeeze},
         {"gas_pressure", gp, "it is the gas law's bubble that holds the gas",
          "set sph.gas_law = true or sph.gas_pressure = 0", o->gas_pressure > 0},
         {"dough_water", dw, "its CO2 comes out into the gas law's bubbles",
@@ -257,7 +282,8 @@ void sph_pressure_gas_law(hearth_scene *s) {
         const double rho = o->continuity_density     ? volume_density(F + 9 * i, c.m[i], V0[i], st->rho[i])
                            : o->renormalised_density ? st->vr[i]
                                                      : st->rho[i];
-        const double tait = st->B[i] * (pow(rho / rho0, o->gamma) - 1); /* eq. 3.17 */
+        const double rt = o->own_squeeze ? own_squeeze(F + 9 * i, c.m[i], V0[i], rho0, rho) : rho;
+        const double tait = st->B[i] * (pow(rt / rho0, o->gamma) - 1); /* eq. 3.17 */
         const double Bg = bub > 0 && T ? sph_gas_modulus(o, st->B[i], T[i]) : st->B[i];
         const double gas = Bg * (rho / rr - 1);
         st->prs[i] = bub > 0 ? fmax(gas, tait) : tait;
