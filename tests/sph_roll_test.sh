@@ -9,7 +9,7 @@
 # excludes tears").
 #   claim_sph_bread_roll_rises[_fine]      the rise's peak over the frames while the roll is whole >= 1.3x the raw roll's
 #   claim_sph_bread_roll_one_piece[_fine]  every frame whole
-#   claim_sph_bread_roll_sits_on_tray      from 0.5 s (settled) to 2 s, the largest gap under the middle 60% of
+#   claim_sph_bread_roll_sits_on_tray[_fine] from 0.5 s (settled) to 2 s, the largest gap under the middle 60% of
 #                                          the roll's width (tests/sph_roll_base.py) under one raw spacing DX
 # _fine runs at dx 1.5 mm instead of the scene's 2 mm. Exit 0 pass, 1 fail,
 # 77 expected failure (prints the measured numbers and the cause).
@@ -84,9 +84,17 @@ claim_sph_bread_roll_one_piece*)
         "\"The roll's skin, renormalised\")" >&2
     exit 77
     ;;
-claim_sph_bread_roll_sits_on_tray)
+claim_sph_bread_roll_sits_on_tray | claim_sph_bread_roll_sits_on_tray_fine)
     echo "dx $dx: largest gap under the base $gap_max m (at t = $gap_at s) from 0.5 to $until s; one spacing is $dx m"
     python3 -c "import sys; sys.exit(0 if $gap_max < $dx else 1)" && exit 0
+    if [ "$case_name" = claim_sph_bread_roll_sits_on_tray_fine ]; then
+        echo "EXPECTED FAILURE: at dx $dx the roll's base lifts $gap_max m off the tray at t = $gap_at s, more than one" \
+            "spacing: with sph.own_squeeze (the preset's) its middle stays down (within 1.16 mm to 1.7 s, helper" \
+            "rollbase), then its left end tilts up, where 43 dough particles of the outer thirds hold 0.18-1.4 MPa at" \
+            "det F 0.79-0.95, about twice the squeeze their positions show: det F drifting at the surface is the lead," \
+            "not traced (docs/validation.md \"The roll's base: its own squeeze\")" >&2
+        exit 77
+    fi
     fail "the roll's base lifts $gap_max m off the tray at t = $gap_at s, more than one spacing ($dx m); with" \
         "sph.own_squeeze (the preset's) it stayed within 1.30 mm to 2 s at 2 mm (at 1.5 mm within 1.16 mm to 1.7 s," \
         "then its left end tilts up, 2.43 mm at 2 s; docs/validation.md" \
