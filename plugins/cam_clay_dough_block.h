@@ -229,8 +229,18 @@ static void scalars_block(const hearth_block *b, double *const out[HEARTH_SCALAR
         for (int j = 0; j < n; j++) w[j] = p_wave_speed(Ec ? Ec[j] : E0, Nc ? Nc[j] : N0, Rc ? Rc[j] : R0);
     if (k)
         for (int j = 0; j < n; j++) k[j] = p_bulk_modulus(Ec ? Ec[j] : E0, Nc ? Nc[j] : N0);
-    if (jp)
-        for (int j = 0; j < n; j++) jp[j] = st ? st[(size_t)j * ss + S_JP] : 1.0; /* plastic_J */
+    if (jp && st) { /* plastic_J: a strided gather, four points a turn (one load and one store each, the index
+                     * and the test shared: 7 instructions a point as a loop of one) */
+        const double *sj = st + S_JP;
+        int j = 0;
+        for (; j + 4 <= n; j += 4) {
+            const double a0 = sj[(size_t)j * ss], a1 = sj[(size_t)(j + 1) * ss], a2 = sj[(size_t)(j + 2) * ss],
+                         a3 = sj[(size_t)(j + 3) * ss];
+            jp[j] = a0, jp[j + 1] = a1, jp[j + 2] = a2, jp[j + 3] = a3;
+        }
+        for (; j < n; j++) jp[j] = sj[(size_t)j * ss];
+    } else if (jp)
+        for (int j = 0; j < n; j++) jp[j] = 1.0;
     if (d)
         for (int j = 0; j < n; j++) /* damage */
             d[j] = st ? st[(size_t)j * ss + S_DAMAGE] : hearth_block_param(b, P_FRACTURE_STRAIN, j) > 0;
