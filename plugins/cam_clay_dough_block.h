@@ -127,7 +127,10 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
             const double lsum = l0 + l1 + t8;
             /* x - x is 0 for a finite x, else NaN: J's, det f's and the eigenvalues' tests */
             const double z = BAD[j] + off + (J[j] - J[j]) + (jf - jf) + (lsum - lsum);
-            fast[j] = (z == 0) & (J[j] > 0) & (jf > 0) & (nj > 0) & (nj < 1) & (l0 > 0) & (l1 > 0) & (t8 > 0) ? 1.0 : 0.0;
+            /* J, det f, l0, l1 and t8 all > 0 as their least > 0: where one is NaN, z is NaN already (a select
+             * that drops a NaN changes nothing), and a < b ? a : b is one vector min (two compares fewer a point) */
+            const double m0 = J[j] < jf ? J[j] : jf, m1 = l0 < l1 ? l0 : l1, m2 = m0 < m1 ? m0 : m1, lo = m2 < t8 ? m2 : t8;
+            fast[j] = (z == 0) & (lo > 0) & (nj > 0) & (nj < 1) ? 1.0 : 0.0;
         }
         double *const memo = b->memo;
         if (memo) { /* log b_zz through the point's memo (log_memo: rule 10) */
