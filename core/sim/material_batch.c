@@ -98,16 +98,19 @@ static inline void scale_columns3(double *restrict o0, double *restrict o1, doub
  * (2D, 64 cells). glibc's early return there is cheap already, so this saves about 9 instructions a
  * point over the per-point scalars (material_thermal_scales). A point the split leaves alone gets x = 0
  * and r = -0.0: 1, 1 and -0.0, as material_thermal_scales gives it. */
-/* Returns THERMAL_NONFINITE when a scale is not finite (exp's: >= +0, inf or NaN), and THERMAL_STILL when
+/* Returns THERMAL_NONFINITE when a scale is not finite (exp's: >= +0, inf or NaN), THERMAL_STILL when
  * every sL is 1.0 (no point's r took libm: the temperatures held over the step, as between the fields'
- * updates), where L's off-diagonal entries come through the split as they are (x * 1.0 is x). */
-enum { THERMAL_NONFINITE = 1, THERMAL_STILL = 2 };
+ * updates), where L's off-diagonal entries come through the split as they are (x * 1.0 is x), and
+ * THERMAL_ALL_SPLIT when every split[j] is 1 (the caller's count of the others, 3 instructions a point over
+ * split's bytes, is then 0 without it: the flag is picked from the compare the picks loop makes anyway). */
+enum { THERMAL_NONFINITE = 1, THERMAL_STILL = 2, THERMAL_ALL_SPLIT = 4 };
 __attribute__((noinline)) /* inlined, its arrays and loops cost the elastic step's door 2 instructions a point */
 static int thermal_scales_block(const double *core, int n, const double *restrict K, const double *restrict T,
                                  double *restrict e_store, double *restrict memo, double dt, signed char *restrict split,
                                  double *restrict sF, double *restrict sL, double *restrict dL) {
     const double cl = core[CP_EXPANSION], Tr = core[CP_REFERENCE_T];
     double X[HEARTH_BLOCK_MAX], R[HEARTH_BLOCK_MAX];
+    double all = 1.0; /* every split[j] 1: a flag picked, as the others below (a sum of doubles stays in order) */
     if (dt > 0) {
         /* the step's usual case in loops of doubles alone, every quotient taken and the values picked by selects,
          * so that they vectorise (split's bytes in the same loop, and the quotients under the tests, kept it
@@ -128,6 +131,7 @@ static int thermal_scales_block(const double *core, int n, const double *restric
             X[j] = sp == 1.0 ? XQ[j] : 0.0;
             R[j] = sp == 1.0 ? RQ[j] : -0.0;
             e_store[j] = sp == 1.0 ? EQ[j] : E0[j];
+            all = sp == 1.0 ? all : 0.0;
         }
         for (int j = 0; j < n; j++) split[j] = (signed char)SP[j];
     } else
@@ -187,8 +191,9 @@ static int thermal_scales_block(const double *core, int n, const double *restric
         }
     } else {
         for (int j = 0; j < n; j++) sL[j] = 1.0, dL[j] = -0.0;
+        all = 0.0; /* dt = 0 (no step's strain: a rare call): the caller counts */
     }
-    return (inf ? THERMAL_NONFINITE : 0) | (moved ? 0 : THERMAL_STILL);
+    return (inf ? THERMAL_NONFINITE : 0) | (moved ? 0 : THERMAL_STILL) | (all == 1.0 ? THERMAL_ALL_SPLIT : 0);
 }
 
 /* The particles' thermal strain column when eq. 10 is a strain for this run
@@ -633,6 +638,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     const int porous_J = porous && m->plastic_J;
     int finite = 1; /* every point's F and L scales finite */
     int still = 0;  /* every point's L scale 1.0 (thermal_scales_block) */
+    int all_split = 0; /* every point's split 1 (thermal_scales_block) */
     if (porous && !m->plastic_J)
         for (int j = 0; j < n; j++) P[j] = gas_porosity(1.0, ms->core[CP_POROSITY0]);
     /* per point, one pass with its parameters patched once: J^P at the start of the step (as
@@ -679,6 +685,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         const int how = thermal_scales_block(ms->core, n, K, r->temperature, th + i0, memo, r->dt, split, sF, sL, dL);
         finite = !(how & THERMAL_NONFINITE);
         still = (how & THERMAL_STILL) != 0;
+        all_split = (how & THERMAL_ALL_SPLIT) != 0;
     }
     /* the block's F and L: the run's own columns, or the split's products */
     const double *Fb[9], *Lb[9];
@@ -726,7 +733,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
             trouble += (code[j] != 0) | !(z[j] == 0);
         }
     }
-    if (th)
+    if (th && !all_split)
         for (int j = 0; j < n; j++) unsplit += split[j] != 1;
     trouble += unsplit;
     for (int j = 0; j < n && trouble; j++) {
