@@ -357,7 +357,9 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
              * a block that never dried; a scan ending at the first, 9) */
             const double *dr = rp->dried + i0;
             double dried = 0; /* a flag picked in a loop that vectorises: 9 instructions a point as a scan */
-            for (int j = 0; j < n; j++) dried = 1.0 - dr[j] >= 1.0 ? dried : 1.0;
+            /* 1 - d >= 1 as d <= 2^-54, the same at every d (round to nearest: 1 - 2^-54 is a tie that goes to
+             * 1.0, anything above it rounds below 1; NaN fails both): one operation a point fewer */
+            for (int j = 0; j < n; j++) dried = dr[j] <= 0x1p-54 ? dried : 1.0;
             undried = dried == 0;
         }
         if (undried) {
