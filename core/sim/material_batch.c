@@ -327,6 +327,12 @@ static int curve_memo_columns(const material_slot *ms, const material_run_params
  * temperature curve's (or its uniform value), times its moisture curve's
  * factor; the factors are evaluated again only where material_run_params_at
  * would (the ratios differ from the last point's), so they are its values. */
+/* Column v as the uniform value it stands for (run_params_columns), where it is still uniform and so unwritten. */
+static inline void uniform_fill(double (*vcol)[HEARTH_BLOCK_MAX], const unsigned char *uniform, int v, const material_slot *ms,
+                                const int *vk, int n) {
+    if (uniform[v])
+        for (int j = 0; j < n; j++) vcol[v][j] = ms->params[vk[v]];
+}
 static void run_params_columns(material_run_params *rp, const material_slot *ms, const particles *ps, int i0, int n,
                                int nv, const int *vk, double (*vcol)[HEARTH_BLOCK_MAX], unsigned char *uniform) {
     const int nt = rp->nt, nc = ms->ncurves;
@@ -334,12 +340,11 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
     unsigned char by_T[RUN_MAX_VARYING] = {0}; /* column v is a temperature curve's (written whole below) */
     for (int v = 0; v < nv; v++) col_of[vk[v]] = v;
     for (int t = 0; t < nt; t++) by_T[col_of[ms->curves[t].param]] = 1;
-    /* uniform[v]: column v holds ms->params[vk[v]] at every point (no temperature curve, and its moisture
-     * factors left it unmultiplied) */
+    /* uniform[v]: column v stands for ms->params[vk[v]] at every point (no temperature curve, and its moisture
+     * factors left it unmultiplied). Such a column is left unwritten (the caller hands the value itself to the
+     * plugin, and fills it with uniform_fill where a per-point path reads it): written by uniform_fill just
+     * before a factor multiplies it (3 instructions a point for every uniform column, the cookie's E) */
     for (int v = 0; v < nv; v++) uniform[v] = !by_T[v];
-    for (int v = 0; v < nv; v++)
-        if (!by_T[v])
-            for (int j = 0; j < n; j++) vcol[v][j] = ms->params[vk[v]];
     const int nm = ps->enabled & (1u << PC_CURVE_MEMO) ? curve_memo_columns(ms, rp, pcold(ps, PC_CURVE_MEMO), i0, n, col_of, vcol) : 0;
     for (int t = nm; t < nt; t++) {
         const curve *c = &ms->curves[t];
@@ -370,6 +375,7 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
                 double *col = vcol[col_of[ms->curves[k].param]];
                 const double f = rp->f[k - nt];
                 if (f != 1.0) { /* x * 1.0 is x: a dry curve's factor at the raw dough's ratio 1 leaves the column */
+                    uniform_fill(vcol, uniform, col_of[ms->curves[k].param], ms, vk, n);
                     uniform[col_of[ms->curves[k].param]] = 0;
                     for (int j = 0; j < n; j++) col[j] *= f;
                 }
@@ -402,11 +408,13 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
         double *col = vcol[col_of[ms->curves[k].param]];
         if (varies) {
             const double *f = fcol[k - nt];
+            uniform_fill(vcol, uniform, col_of[ms->curves[k].param], ms, vk, n);
             uniform[col_of[ms->curves[k].param]] = 0;
             for (int j = 0; j < n; j++) col[j] *= f[j];
         } else {
             const double f = rp->f[k - nt];
             if (f != 1.0) { /* x * 1.0 is x (the columns are finite parameters) */
+                uniform_fill(vcol, uniform, col_of[ms->curves[k].param], ms, vk, n);
                 uniform[col_of[ms->curves[k].param]] = 0;
                 for (int j = 0; j < n; j++) col[j] *= f;
             }
@@ -627,6 +635,9 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
          * dry curve is 1 at the raw dough's ratio: its Lame constants, wave speed and K once a block) */
         for (int v = 0; v < nv; v++)
             if (uniform[v]) pcolumn[vk[v]] = NULL;
+        /* without scalars_block, the per-point paths below (and run_after_block's) patch q from every column */
+        if (!m->scalars_block)
+            for (int v = 0; v < nv; v++) uniform_fill(vcol, uniform, v, ms, vk, n);
     }
     const double *pj = nv ? q : ms->params; /* no curve: the slot's own parameters, uncopied */
     /* eq. 10 as a strain: the block gets F_M and L_M, as run_points hands each point. Each point's scalars
