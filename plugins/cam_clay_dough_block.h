@@ -152,9 +152,6 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
         /* tau's in-plane entries into local columns, copied out after: the loop cannot know that the
          * block's columns do not alias (<hearth/material.h>), and would not vectorise */
         double T0[HEARTH_BLOCK_MAX], T1[HEARTH_BLOCK_MAX], T4[HEARTH_BLOCK_MAX], T8[HEARTH_BLOCK_MAX];
-        if (ty_c != TY) { /* a column of the block's: a local copy, for the same reason */
-            for (int j = 0; j < n; j++) TY[j] = ty_c[j];
-        }
         for (int j = 0; j < n; j++) { /* the deviator, return_map's log-free bound, and tau of an elastic step */
             const double mu = MU[j], lambda = LA[j];
             const double ev = E0[j] + E1[j] + E2[j];
@@ -165,7 +162,7 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
             s2 += e2 * e2;
             const double K = lambda + 2.0 / 3.0 * mu;
             const double pt = -K * ev, qt = 2 * mu * sqrt(1.5 * s2);
-            const double ty = TY[j], ty2 = ty * ty;
+            const double ty = ty_c[j], ty2 = ty * ty;
             const double u = 1 - P[j], Mb = 9.0 * (1 + 1e-7) / (4.0 * u * u * (3.5 * P[j] + 1.0));
             fast[j] = Mb * pt * pt + qt * qt - ty2 > 0 ? 0.0 : fast[j];
             const double tv = lambda * ev;
