@@ -127,7 +127,10 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
             const double lsum = l0 + l1 + t8;
             /* x - x is 0 for a finite x, else NaN: J's, det f's and the eigenvalues' tests */
             const double z = BAD[j] + off + (J[j] - J[j]) + (jf - jf) + (lsum - lsum);
-            fast[j] = (z == 0) & (J[j] > 0) & (jf > 0) & (nj > 0) & (nj < 1) & (l0 > 0) & (l1 > 0) & (t8 > 0) ? 1.0 : 0.0;
+            /* J, det f, l0, l1 and t8 all > 0 as their least > 0: where one is NaN, z is NaN already (a select
+             * that drops a NaN changes nothing), and a < b ? a : b is one vector min (two compares fewer a point) */
+            const double m0 = J[j] < jf ? J[j] : jf, m1 = l0 < l1 ? l0 : l1, m2 = m0 < m1 ? m0 : m1, lo = m2 < t8 ? m2 : t8;
+            fast[j] = (z == 0) & (lo > 0) & (nj > 0) & (nj < 1) ? 1.0 : 0.0;
         }
         double *const memo = b->memo;
         if (memo) { /* log b_zz through the point's memo (log_memo: rule 10) */
@@ -149,9 +152,6 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
         /* tau's in-plane entries into local columns, copied out after: the loop cannot know that the
          * block's columns do not alias (<hearth/material.h>), and would not vectorise */
         double T0[HEARTH_BLOCK_MAX], T1[HEARTH_BLOCK_MAX], T4[HEARTH_BLOCK_MAX], T8[HEARTH_BLOCK_MAX];
-        if (ty_c != TY) { /* a column of the block's: a local copy, for the same reason */
-            for (int j = 0; j < n; j++) TY[j] = ty_c[j];
-        }
         for (int j = 0; j < n; j++) { /* the deviator, return_map's log-free bound, and tau of an elastic step */
             const double mu = MU[j], lambda = LA[j];
             const double ev = E0[j] + E1[j] + E2[j];
@@ -162,7 +162,7 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
             s2 += e2 * e2;
             const double K = lambda + 2.0 / 3.0 * mu;
             const double pt = -K * ev, qt = 2 * mu * sqrt(1.5 * s2);
-            const double ty = TY[j], ty2 = ty * ty;
+            const double ty = ty_c[j], ty2 = ty * ty;
             const double u = 1 - P[j], Mb = 9.0 * (1 + 1e-7) / (4.0 * u * u * (3.5 * P[j] + 1.0));
             fast[j] = Mb * pt * pt + qt * qt - ty2 > 0 ? 0.0 : fast[j];
             const double tv = lambda * ev;
@@ -185,6 +185,24 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
     const double *ef_c = b->p_col[P_FRACTURE_STRAIN], *fs_c = b->p_col[P_FRACTURE_STRETCH];
     int bad = 0;
     const int cracks = ef_c || b->p[P_FRACTURE_STRAIN] > 0; /* else no point's fracture_strain is > 0 */
+    if (!cracks) {
+        /* the loop below where no point's fracture_strain is > 0 (ef = 0, no stretch rule, no fracture_update):
+         * the same stores without its two tests a point, which GCC left in the loop (9 instructions a point) */
+        for (int j = 0; j < n; j++) {
+            if (fast[j] != 0) {
+                double *s = st + (size_t)j * stride;
+                s[S_XX] = B0[j], s[S_YY] = B4[j], s[S_ZZ] = B8[j];
+                s[S_XY] = 0.5 * (B1[j] + B1[j]);
+                s[S_JP] = J[j] / exp(EV[j]);
+                code[j] = 0;
+            } else {
+                for (int v = 0; v < nv; v++) q[vk[v]] = b->p_col[vk[v]][j];
+                code[j] = block_point(b, j, J[j], MU[j], LA[j], q, tau);
+                bad += code[j] != 0;
+            }
+        }
+        return bad;
+    }
     for (int j = 0; j < n; j++) {
         double ef = 0;
         int stretch = 0;
@@ -229,8 +247,18 @@ static void scalars_block(const hearth_block *b, double *const out[HEARTH_SCALAR
         for (int j = 0; j < n; j++) w[j] = p_wave_speed(Ec ? Ec[j] : E0, Nc ? Nc[j] : N0, Rc ? Rc[j] : R0);
     if (k)
         for (int j = 0; j < n; j++) k[j] = p_bulk_modulus(Ec ? Ec[j] : E0, Nc ? Nc[j] : N0);
-    if (jp)
-        for (int j = 0; j < n; j++) jp[j] = st ? st[(size_t)j * ss + S_JP] : 1.0; /* plastic_J */
+    if (jp && st) { /* plastic_J: a strided gather, four points a turn (one load and one store each, the index
+                     * and the test shared: 7 instructions a point as a loop of one) */
+        const double *sj = st + S_JP;
+        int j = 0;
+        for (; j + 4 <= n; j += 4) {
+            const double a0 = sj[(size_t)j * ss], a1 = sj[(size_t)(j + 1) * ss], a2 = sj[(size_t)(j + 2) * ss],
+                         a3 = sj[(size_t)(j + 3) * ss];
+            jp[j] = a0, jp[j + 1] = a1, jp[j + 2] = a2, jp[j + 3] = a3;
+        }
+        for (; j < n; j++) jp[j] = sj[(size_t)j * ss];
+    } else if (jp)
+        for (int j = 0; j < n; j++) jp[j] = 1.0;
     if (d)
         for (int j = 0; j < n; j++) /* damage */
             d[j] = st ? st[(size_t)j * ss + S_DAMAGE] : hearth_block_param(b, P_FRACTURE_STRAIN, j) > 0;

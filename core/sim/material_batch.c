@@ -98,16 +98,19 @@ static inline void scale_columns3(double *restrict o0, double *restrict o1, doub
  * (2D, 64 cells). glibc's early return there is cheap already, so this saves about 9 instructions a
  * point over the per-point scalars (material_thermal_scales). A point the split leaves alone gets x = 0
  * and r = -0.0: 1, 1 and -0.0, as material_thermal_scales gives it. */
-/* Returns THERMAL_NONFINITE when a scale is not finite (exp's: >= +0, inf or NaN), and THERMAL_STILL when
+/* Returns THERMAL_NONFINITE when a scale is not finite (exp's: >= +0, inf or NaN), THERMAL_STILL when
  * every sL is 1.0 (no point's r took libm: the temperatures held over the step, as between the fields'
- * updates), where L's off-diagonal entries come through the split as they are (x * 1.0 is x). */
-enum { THERMAL_NONFINITE = 1, THERMAL_STILL = 2 };
+ * updates), where L's off-diagonal entries come through the split as they are (x * 1.0 is x), and
+ * THERMAL_ALL_SPLIT when every split[j] is 1 (the caller's count of the others, 3 instructions a point over
+ * split's bytes, is then 0 without it: the flag is picked from the compare the picks loop makes anyway). */
+enum { THERMAL_NONFINITE = 1, THERMAL_STILL = 2, THERMAL_ALL_SPLIT = 4 };
 __attribute__((noinline)) /* inlined, its arrays and loops cost the elastic step's door 2 instructions a point */
 static int thermal_scales_block(const double *core, int n, const double *restrict K, const double *restrict T,
                                  double *restrict e_store, double *restrict memo, double dt, signed char *restrict split,
                                  double *restrict sF, double *restrict sL, double *restrict dL) {
     const double cl = core[CP_EXPANSION], Tr = core[CP_REFERENCE_T];
     double X[HEARTH_BLOCK_MAX], R[HEARTH_BLOCK_MAX];
+    double all = 1.0; /* every split[j] 1: a flag picked, as the others below (a sum of doubles stays in order) */
     if (dt > 0) {
         /* the step's usual case in loops of doubles alone, every quotient taken and the values picked by selects,
          * so that they vectorise (split's bytes in the same loop, and the quotients under the tests, kept it
@@ -128,6 +131,7 @@ static int thermal_scales_block(const double *core, int n, const double *restric
             X[j] = sp == 1.0 ? XQ[j] : 0.0;
             R[j] = sp == 1.0 ? RQ[j] : -0.0;
             e_store[j] = sp == 1.0 ? EQ[j] : E0[j];
+            all = sp == 1.0 ? all : 0.0;
         }
         for (int j = 0; j < n; j++) split[j] = (signed char)SP[j];
     } else
@@ -187,8 +191,9 @@ static int thermal_scales_block(const double *core, int n, const double *restric
         }
     } else {
         for (int j = 0; j < n; j++) sL[j] = 1.0, dL[j] = -0.0;
+        all = 0.0; /* dt = 0 (no step's strain: a rare call): the caller counts */
     }
-    return (inf ? THERMAL_NONFINITE : 0) | (moved ? 0 : THERMAL_STILL);
+    return (inf ? THERMAL_NONFINITE : 0) | (moved ? 0 : THERMAL_STILL) | (all == 1.0 ? THERMAL_ALL_SPLIT : 0);
 }
 
 /* The particles' thermal strain column when eq. 10 is a strain for this run
@@ -322,6 +327,12 @@ static int curve_memo_columns(const material_slot *ms, const material_run_params
  * temperature curve's (or its uniform value), times its moisture curve's
  * factor; the factors are evaluated again only where material_run_params_at
  * would (the ratios differ from the last point's), so they are its values. */
+/* Column v as the uniform value it stands for (run_params_columns), where it is still uniform and so unwritten. */
+static inline void uniform_fill(double (*vcol)[HEARTH_BLOCK_MAX], const unsigned char *uniform, int v, const material_slot *ms,
+                                const int *vk, int n) {
+    if (uniform[v])
+        for (int j = 0; j < n; j++) vcol[v][j] = ms->params[vk[v]];
+}
 static void run_params_columns(material_run_params *rp, const material_slot *ms, const particles *ps, int i0, int n,
                                int nv, const int *vk, double (*vcol)[HEARTH_BLOCK_MAX], unsigned char *uniform) {
     const int nt = rp->nt, nc = ms->ncurves;
@@ -329,12 +340,11 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
     unsigned char by_T[RUN_MAX_VARYING] = {0}; /* column v is a temperature curve's (written whole below) */
     for (int v = 0; v < nv; v++) col_of[vk[v]] = v;
     for (int t = 0; t < nt; t++) by_T[col_of[ms->curves[t].param]] = 1;
-    /* uniform[v]: column v holds ms->params[vk[v]] at every point (no temperature curve, and its moisture
-     * factors left it unmultiplied) */
+    /* uniform[v]: column v stands for ms->params[vk[v]] at every point (no temperature curve, and its moisture
+     * factors left it unmultiplied). Such a column is left unwritten (the caller hands the value itself to the
+     * plugin, and fills it with uniform_fill where a per-point path reads it): written by uniform_fill just
+     * before a factor multiplies it (3 instructions a point for every uniform column, the cookie's E) */
     for (int v = 0; v < nv; v++) uniform[v] = !by_T[v];
-    for (int v = 0; v < nv; v++)
-        if (!by_T[v])
-            for (int j = 0; j < n; j++) vcol[v][j] = ms->params[vk[v]];
     const int nm = ps->enabled & (1u << PC_CURVE_MEMO) ? curve_memo_columns(ms, rp, pcold(ps, PC_CURVE_MEMO), i0, n, col_of, vcol) : 0;
     for (int t = nm; t < nt; t++) {
         const curve *c = &ms->curves[t];
@@ -352,7 +362,9 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
              * a block that never dried; a scan ending at the first, 9) */
             const double *dr = rp->dried + i0;
             double dried = 0; /* a flag picked in a loop that vectorises: 9 instructions a point as a scan */
-            for (int j = 0; j < n; j++) dried = 1.0 - dr[j] >= 1.0 ? dried : 1.0;
+            /* 1 - d >= 1 as d <= 2^-54, the same at every d (round to nearest: 1 - 2^-54 is a tie that goes to
+             * 1.0, anything above it rounds below 1; NaN fails both): one operation a point fewer */
+            for (int j = 0; j < n; j++) dried = dr[j] <= 0x1p-54 ? dried : 1.0;
             undried = dried == 0;
         }
         if (undried) {
@@ -363,6 +375,7 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
                 double *col = vcol[col_of[ms->curves[k].param]];
                 const double f = rp->f[k - nt];
                 if (f != 1.0) { /* x * 1.0 is x: a dry curve's factor at the raw dough's ratio 1 leaves the column */
+                    uniform_fill(vcol, uniform, col_of[ms->curves[k].param], ms, vk, n);
                     uniform[col_of[ms->curves[k].param]] = 0;
                     for (int j = 0; j < n; j++) col[j] *= f;
                 }
@@ -395,11 +408,13 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
         double *col = vcol[col_of[ms->curves[k].param]];
         if (varies) {
             const double *f = fcol[k - nt];
+            uniform_fill(vcol, uniform, col_of[ms->curves[k].param], ms, vk, n);
             uniform[col_of[ms->curves[k].param]] = 0;
             for (int j = 0; j < n; j++) col[j] *= f[j];
         } else {
             const double f = rp->f[k - nt];
             if (f != 1.0) { /* x * 1.0 is x (the columns are finite parameters) */
+                uniform_fill(vcol, uniform, col_of[ms->curves[k].param], ms, vk, n);
                 uniform[col_of[ms->curves[k].param]] = 0;
                 for (int j = 0; j < n; j++) col[j] *= f;
             }
@@ -620,6 +635,9 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
          * dry curve is 1 at the raw dough's ratio: its Lame constants, wave speed and K once a block) */
         for (int v = 0; v < nv; v++)
             if (uniform[v]) pcolumn[vk[v]] = NULL;
+        /* without scalars_block, the per-point paths below (and run_after_block's) patch q from every column */
+        if (!m->scalars_block)
+            for (int v = 0; v < nv; v++) uniform_fill(vcol, uniform, v, ms, vk, n);
     }
     const double *pj = nv ? q : ms->params; /* no curve: the slot's own parameters, uncopied */
     /* eq. 10 as a strain: the block gets F_M and L_M, as run_points hands each point. Each point's scalars
@@ -633,6 +651,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     const int porous_J = porous && m->plastic_J;
     int finite = 1; /* every point's F and L scales finite */
     int still = 0;  /* every point's L scale 1.0 (thermal_scales_block) */
+    int all_split = 0; /* every point's split 1 (thermal_scales_block) */
     if (porous && !m->plastic_J)
         for (int j = 0; j < n; j++) P[j] = gas_porosity(1.0, ms->core[CP_POROSITY0]);
     /* per point, one pass with its parameters patched once: J^P at the start of the step (as
@@ -679,6 +698,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         const int how = thermal_scales_block(ms->core, n, K, r->temperature, th + i0, memo, r->dt, split, sF, sL, dL);
         finite = !(how & THERMAL_NONFINITE);
         still = (how & THERMAL_STILL) != 0;
+        all_split = (how & THERMAL_ALL_SPLIT) != 0;
     }
     /* the block's F and L: the run's own columns, or the split's products */
     const double *Fb[9], *Lb[9];
@@ -726,7 +746,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
             trouble += (code[j] != 0) | !(z[j] == 0);
         }
     }
-    if (th)
+    if (th && !all_split)
         for (int j = 0; j < n; j++) unsplit += split[j] != 1;
     trouble += unsplit;
     for (int j = 0; j < n && trouble; j++) {
