@@ -19,9 +19,10 @@
  * Why: eq. 3.27 reads a linear velocity field v = A x as L = A K, and K is
  * the identity only where the kernel's support is full. At a free surface it
  * is about half of it, so a surface particle's F (F <- (I + dt L) F) follows
- * about half of the area change its positions make, and where the set crust
- * turns, squeezes and stretches by turns the errors do not cancel
- * (docs/validation.md "The roll's det F at its surface"). A K with det below
+ * only part of the area change its positions make (unit_sph_gradient: the
+ * plain sum's L is off by up to 0.81 |A| at a block's surface; the bread
+ * roll's surface dough, docs/validation.md "The roll's det F at its
+ * surface"). A K with det below
  * 1e-3 (a particle with its neighbours nearly in a line, or none) keeps the
  * plain sum. The thesis's eq. 3.27 is unchanged where the switch is off. */
 static inline void grad_correct(const int dim, double *L, const double *Kr) {
