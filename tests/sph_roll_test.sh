@@ -92,7 +92,7 @@ claim_sph_bread_roll_sits_on_tray | claim_sph_bread_roll_sits_on_tray_fine)
             "spacing: with sph.own_squeeze (the preset's) its middle stays down (within 1.16 mm to 1.7 s, helper" \
             "rollbase), then its left end tilts up, where 43 dough particles of the outer thirds hold 0.18-1.4 MPa at" \
             "det F 0.79-0.95. det F does drift behind the positions at the surface (eq. 3.27's plain sum over a" \
-            "half-empty kernel), but with Bonet & Lok's correction (--set corrected_gradient=true) the base still tilts," \
+            "half-empty kernel), but with Bonet & Lok's correction (tried, commit c295566, not kept) the base still tilts," \
             "its right end up 2.88 mm at 2 s (within 1.12 mm to 1.9 s), on a squeeze its positions mostly confirm: the" \
             "drift is not the tilt's cause (docs/validation.md \"The roll's base: its own squeeze\", \"The roll's det F" \
             "at its surface\")" >&2

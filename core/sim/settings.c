@@ -192,13 +192,6 @@ static const hearth_setting settings[] = {
              "confirms a squeeze, min(rho_sum, max(rho0, rho_own)): the sum's tension between films stays, a hot "
              "bubble's missing volume no longer squeezes its dough neighbours",
              own_squeeze),
-    /* eq. 3.27 over a surface particle's half-empty support reads about half
-     * its velocity gradient (docs/validation.md "The roll's det F at its surface") */
-    SPH_FLAG("corrected_gradient",
-             "the velocity gradient of eq. 3.27, which integrates F and feeds the stress, with Bonet & Lok's (1999) "
-             "kernel-gradient correction L K^-1, K = sum_j V_j (x_j - x_i) (x) grad W_ij: exact for a linear velocity "
-             "field, at a free surface too, where the plain sum misses the empty half of the kernel",
-             corrected_gradient),
     /* an ideal gas's isothermal bulk modulus is its pressure: a bubble at the
      * oven's 101325 Pa less its vapour is that stiff, whatever its dough's Tait B */
     SPH(gas_pressure, "Pa",

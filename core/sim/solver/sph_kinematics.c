@@ -13,41 +13,6 @@
 #include "sph_neighbours.h"
 #include "sph_state.h"
 
-/* sph.corrected_gradient (Bonet & Lok 1999, their corrected kernel gradient,
- * grad~W = K^-T grad W): L <- L K^-1 with K = sum_j V_j (x_j - x_i) (x)
- * grad_i W_ij, from Kr = sum_j (V_j W'/r d_a) d_b (d = x_i - x_j), K = -Kr.
- * Why: eq. 3.27 reads a linear velocity field v = A x as L = A K, and K is
- * the identity only where the kernel's support is full. At a free surface it
- * is about half of it, so a surface particle's F (F <- (I + dt L) F) follows
- * only part of the area change its positions make (unit_sph_gradient: the
- * plain sum's L is off by up to 0.81 |A| at a block's surface; the bread
- * roll's surface dough, docs/validation.md "The roll's det F at its
- * surface"). A K with det below
- * 1e-3 (a particle with its neighbours nearly in a line, or none) keeps the
- * plain sum. The thesis's eq. 3.27 is unchanged where the switch is off. */
-static inline void grad_correct(const int dim, double *L, const double *Kr) {
-    double Ki[9] = {0};
-    if (dim == 2) {
-        const double det = Kr[0] * Kr[4] - Kr[1] * Kr[3];
-        if (!(det > 1e-3)) return;
-        Ki[0] = -Kr[4] / det, Ki[1] = Kr[1] / det, Ki[3] = Kr[3] / det, Ki[4] = -Kr[0] / det;
-    } else {
-        /* K = -Kr: det K = -det Kr, and adj K = adj Kr (a cofactor is of degree 2), K^-1 = adj Kr / det K */
-        const double c0 = Kr[4] * Kr[8] - Kr[5] * Kr[7], c1 = Kr[5] * Kr[6] - Kr[3] * Kr[8], c2 = Kr[3] * Kr[7] - Kr[4] * Kr[6];
-        const double det = -(Kr[0] * c0 + Kr[1] * c1 + Kr[2] * c2);
-        if (!(det > 1e-3)) return;
-        Ki[0] = c0 / det, Ki[3] = c1 / det, Ki[6] = c2 / det;
-        Ki[1] = (Kr[2] * Kr[7] - Kr[1] * Kr[8]) / det, Ki[4] = (Kr[0] * Kr[8] - Kr[2] * Kr[6]) / det,
-        Ki[7] = (Kr[1] * Kr[6] - Kr[0] * Kr[7]) / det;
-        Ki[2] = (Kr[1] * Kr[5] - Kr[2] * Kr[4]) / det, Ki[5] = (Kr[2] * Kr[3] - Kr[0] * Kr[5]) / det,
-        Ki[8] = (Kr[0] * Kr[4] - Kr[1] * Kr[3]) / det;
-    }
-    double Lc[9] = {0};
-    for (int a = 0; a < dim; a++)
-        for (int b = 0; b < dim; b++) Lc[3 * a + b] = L[3 * a] * Ki[b] + L[3 * a + 1] * Ki[3 + b] + L[3 * a + 2] * Ki[6 + b];
-    memcpy(L, Lc, sizeof Lc);
-}
-
 /* Velocity gradient (eq. 3.27) into the particles' C, the colour field's
  * gradient (eq. 3.29) and Laplacian (eq. 3.28); surface particles where
  * |grad C| h passes sph.surface_threshold; and in the same loop over the
@@ -63,7 +28,7 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
      * term the Laplacian is positive everywhere and eq. 3.30 pushes the
      * surface outward (a square drop blew apart) */
     double L[9] = {0}, Ni[3] = {0, 0, 0}, lc = lap ? m[i] / st->rho[i] * sph_lap_w(dim, 0, st->h[i]) : 0;
-    double fill = 0, tr = 0, gm[3] = {0, 0, 0}, Kr[9] = {0};
+    double fill = 0, tr = 0, gm[3] = {0, 0, 0};
     /* in 2D the z rows and columns stay +0 (every z is 0; see forces_pairs in sph_forces.c) */
     const double *h = st->h, *V = st->perm, hi = h[i];
     const sph_kc kci = sph_kc_of(dim, hi);
@@ -87,7 +52,6 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
             const double dv = v[3 * j + a] - v[3 * i + a];
             for (int b = 0; b < dim; b++) L[3 * a + b] += Vj * dv * g * d[b];
             Ni[a] += Vj * g * d[a];
-            for (int b = 0; b < dim; b++) Kr[3 * a + b] += Vj * g * d[a] * d[b]; /* grad_correct's K */
         }
         if (lap) lc += Vj * lapk;
         /* eq. 3.8's moments for the viscous renormalisation (sph_viscous_factor) */
@@ -97,7 +61,6 @@ static inline __attribute__((always_inline)) void kinematics_one(hearth_scene *s
         for (int q = 0; q < dim; q++) gm[q] += lr2 * d[q];
     }
     st->vc[i] = sph_viscous_factor(s, i, fill, tr, gm);
-    if (s->def.sph.corrected_gradient) grad_correct(dim, L, Kr);
     memcpy(c->C + 9 * i, L, sizeof L);
     memcpy(st->N + 3 * i, Ni, sizeof Ni);
     st->lapC[i] = lc;
@@ -119,7 +82,6 @@ static inline __attribute__((always_inline)) void kinematics_one_2d(hearth_scene
     const double hi = st->h[i];
     double lc = lap ? m[i] / st->rho[i] * sph_lap_w(2, 0, hi) : 0, fill = 0, tr = 0;
     sph_v2 L0 = {0, 0}, L1 = {0, 0}, Nv = {0, 0}, gv = {0, 0}; /* L's x and y rows, grad C, the moment's centre */
-    sph_v2 K0 = {0, 0}, K1 = {0, 0};                            /* grad_correct's K, its x and y rows */
     const sph_v2 xi = sph_ld2(x + 3 * i), vi = sph_ld2(v + 3 * i);
     const sph_kc kci = sph_kc_of(2, hi);
     for (int k = off[i]; k < off[i + 1]; k++) {
@@ -137,20 +99,16 @@ static inline __attribute__((always_inline)) void kinematics_one_2d(hearth_scene
         const sph_v2 t = Vj * (sph_ld2(v + 3 * j) - vi) * g; /* Vj dv g per row, then times d[b] */
         L0 += t[0] * d;
         L1 += t[1] * d;
-        const sph_v2 qd = Vj * g * d;
-        Nv += qd;
-        K0 += qd[0] * d;
-        K1 += qd[1] * d;
+        Nv += Vj * g * d;
         if (lap) lc += Vj * lapk;
         const double lr2 = Vj * sph_lap_visc_kc(&kci, r) * r2;
         fill += Vj * wk;
         tr += lr2;
         gv += lr2 * d;
     }
-    double L[9] = {L0[0], L0[1], 0, L1[0], L1[1], 0, 0, 0, 0};
-    const double Ni[3] = {Nv[0], Nv[1], 0}, gm[3] = {gv[0], gv[1], 0}, Kr[9] = {K0[0], K0[1], 0, K1[0], K1[1], 0, 0, 0, 0};
+    const double L[9] = {L0[0], L0[1], 0, L1[0], L1[1], 0, 0, 0, 0}, Ni[3] = {Nv[0], Nv[1], 0},
+                 gm[3] = {gv[0], gv[1], 0};
     st->vc[i] = sph_viscous_factor(s, i, fill, tr, gm);
-    if (s->def.sph.corrected_gradient) grad_correct(2, L, Kr);
     memcpy(c->C + 9 * i, L, sizeof L);
     memcpy(st->N + 3 * i, Ni, sizeof Ni);
     st->lapC[i] = lc;
@@ -173,8 +131,6 @@ static inline __attribute__((always_inline)) void kinematics_one_3d(hearth_scene
     /* L's rows a = x, y, z: columns x, y in La, column z in Laz; grad C and the moment's centre likewise */
     sph_v2 L0 = {0, 0}, L1 = {0, 0}, L2 = {0, 0}, Nv = {0, 0}, gv = {0, 0};
     double L0z = 0, L1z = 0, L2z = 0, Nz = 0, gz = 0;
-    sph_v2 K0 = {0, 0}, K1 = {0, 0}, K2 = {0, 0}; /* grad_correct's K: rows x, y, z, columns x, y; column z beside */
-    double K0z = 0, K1z = 0, K2z = 0;
     const sph_v2 xi = sph_ld2(x + 3 * i), vi = sph_ld2(v + 3 * i);
     const double xiz = x[3 * i + 2], viz = v[3 * i + 2];
     const sph_kc kci = sph_kc_of(3, hi);
@@ -199,16 +155,8 @@ static inline __attribute__((always_inline)) void kinematics_one_3d(hearth_scene
         L1z += t[1] * dz;
         L2 += tz * d;
         L2z += tz * dz;
-        const sph_v2 qd = Vj * g * d;
-        const double qz = Vj * g * dz;
-        Nv += qd;
-        Nz += qz;
-        K0 += qd[0] * d;
-        K0z += qd[0] * dz;
-        K1 += qd[1] * d;
-        K1z += qd[1] * dz;
-        K2 += qz * d;
-        K2z += qz * dz;
+        Nv += Vj * g * d;
+        Nz += Vj * g * dz;
         if (lap) lc += Vj * lapk;
         const double lr2 = Vj * sph_lap_visc_kc(&kci, r) * r2;
         fill += Vj * wk;
@@ -216,11 +164,9 @@ static inline __attribute__((always_inline)) void kinematics_one_3d(hearth_scene
         gv += lr2 * d;
         gz += lr2 * dz;
     }
-    double L[9] = {L0[0], L0[1], L0z, L1[0], L1[1], L1z, L2[0], L2[1], L2z};
-    const double Ni[3] = {Nv[0], Nv[1], Nz}, gm[3] = {gv[0], gv[1], gz},
-                 Kr[9] = {K0[0], K0[1], K0z, K1[0], K1[1], K1z, K2[0], K2[1], K2z};
+    const double L[9] = {L0[0], L0[1], L0z, L1[0], L1[1], L1z, L2[0], L2[1], L2z}, Ni[3] = {Nv[0], Nv[1], Nz},
+                 gm[3] = {gv[0], gv[1], gz};
     st->vc[i] = sph_viscous_factor(s, i, fill, tr, gm);
-    if (s->def.sph.corrected_gradient) grad_correct(3, L, Kr);
     memcpy(c->C + 9 * i, L, sizeof L);
     memcpy(st->N + 3 * i, Ni, sizeof Ni);
     st->lapC[i] = lc;
