@@ -732,52 +732,11 @@ static hearth_status step_team_sorted(hearth_scene *s, double dt, step_report *r
     return HEARTH_OK;
 }
 
-
-/* PROBE (cracktrack, not to keep): crack-tracking exclusion, env HEARTH_TRACK_R (cells). */
-#include <stdlib.h>
-static double *trk_old; static unsigned char *trk_sh; static int trk_cap;
-static void track_before(hearth_scene *s) {
-    const char *e = getenv("HEARTH_TRACK_R");
-    if (!e) return;
-    const double r = atof(e) * s->g.dx, r2 = r * r;
-    particles *ps = &s->ps;
-    const int n = ps->n;
-    if (n > trk_cap) { free(trk_old); free(trk_sh); trk_old = malloc(sizeof(double) * n); trk_sh = malloc(n); trk_cap = n; }
-    if (!ps->state_stride) return;
-    double *S = pcold(ps, PC_STATE);
-    const double *X = pcold(ps, PC_X);
-    const int *mat = pcoli(ps, PC_MAT);
-    int *pk = malloc(sizeof(int) * n), np = 0;
-    for (int i = 0; i < n; i++) {
-        const double d = s->mats.slot[mat[i]].fracture ? S[(size_t)i * ps->state_stride + 7] : 0;
-        trk_old[i] = d;
-        if (d >= 0.5) pk[np++] = i;
-    }
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; i++) {
-        trk_sh[i] = 0;
-        if (trk_old[i] >= 0.5 || !s->mats.slot[mat[i]].fracture) continue;
-        for (int q = 0; q < np; q++) {
-            const int j = pk[q];
-            const double dx = fabs(X[3 * i] - X[3 * j]), dy = fabs(X[3 * i + 1] - X[3 * j + 1]);
-            if (dx >= dy && dx * dx + dy * dy < r2) { trk_sh[i] = 1; break; }
-        }
-    }
-    free(pk);
-}
-static void track_after(hearth_scene *s) {
-    if (!getenv("HEARTH_TRACK_R") || !s->ps.state_stride) return;
-    particles *ps = &s->ps;
-    double *S = pcold(ps, PC_STATE);
-    for (int i = 0; i < ps->n; i++)
-        if (trk_sh[i] && S[(size_t)i * ps->state_stride + 7] > trk_old[i]) S[(size_t)i * ps->state_stride + 7] = trk_old[i];
-}
-
 hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_error *err) {
     HEARTH_ASSERT(s->ps.t2 == (s->g.dim == 2)); /* P2G and G2P read 2D's C and F as 2x2 blocks (scene.c sets it) */
     int heat = heat_now(s), water = water_now(s);
     const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
-    int usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field && !getenv("HEARTH_TRACK_R");
+    int usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
     hearth_status st;
     int sorted = 0;
     PHASE_STEP();
@@ -799,7 +758,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     if (!sorted && (st = mpm_sort(s, err))) return st;
     if (mixing_active(s) && (st = mixing_update(s, err))) return st;
     heat = heat_now(s), water = water_now(s); /* as the mixing left them */
-    usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field && !getenv("HEARTH_TRACK_R");
+    usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
     if (wrap && (thermal_active(s) || water_active(s)))
         return err_set(err, HEARTH_ERR_PARAM, "scene: periodic axes (periodic_%c) do not carry %s yet; use a closed box",
                        "xyz"[s->def.periodic[0] ? 0 : s->def.periodic[1] ? 1 : 2], thermal_active(s) ? "heat" : "water");
@@ -819,9 +778,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         PHASE_MARK(PH_REDUCE);
         return st;
     }
-    track_before(s);
     mpm_p2g(s, dt, rep);
-    track_after(s);
     if ((st = mpm_ranks_sum_grid(s, err))) return st;
     if (wrap) mpm_periodic_fold(s, 0);
     if (heat || water) {

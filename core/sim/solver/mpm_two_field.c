@@ -48,8 +48,6 @@
  * node's fixed order on ties: the same bits for any thread count. */
 #include <math.h>
 #include <string.h>
-#include <stdio.h>
-#include <stdlib.h>
 
 #include "alloc.h"
 #include "error.h"
@@ -79,9 +77,7 @@ static double cracked(const hearth_scene *s, int i) {
     const double d = ms->m->damage(material_params(&s->mats, ps, m, i, pscratch),
                                    ps->state_stride ? pcold(ps, PC_STATE) + (size_t)i * ps->state_stride : NULL);
     plugin_call_leave();
-    static double thr = -1; /* PROBE: HEARTH_TF_CRACK, the damage that counts as cracked for the split */
-    if (thr < 0) { const char *e = getenv("HEARTH_TF_CRACK"); thr = e ? atof(e) : 1.0; }
-    return d >= thr ? 1.0 : 0.0;
+    return d >= 1.0 ? 1.0 : 0.0;
 }
 
 /* a particle's 3x3 stencil: base node, weights and weight derivatives per dx */
@@ -218,24 +214,6 @@ hearth_status mpm_two_field_prepare(hearth_scene *s, hearth_error *err) {
                 double *gx = node + CH_TF_GX * NPB + l, *gy = node + CH_TF_GY * NPB + l;
                 if (*gx * *gx + *gy * *gy < split2) *gx = *gy = 0.0;
             }
-        }
-    }
-    if (getenv("HEARTH_TF_DEBUG")) { /* PROBE: split nodes, cracked particles */
-        static long calls;
-        if (calls++ % 1000 == 0) {
-            int ns = 0, nc = 0, nm = 0;
-            double gmax = 0;
-            for (int k = 0; k < g->nactive; k++) {
-                double *node = grid_block(g, k);
-                for (int l = 0; l < NPB; l++) if (node[CH_TF_GX * NPB + l] != 0 || node[CH_TF_GY * NPB + l] != 0) ns++;
-            }
-            for (int i = 0; i < s->ps.n; i++) {
-                const double gx = m->dgrad[2 * i], gy = m->dgrad[2 * i + 1], gl = sqrt(gx * gx + gy * gy) * g->dx;
-                if (gl > gmax) gmax = gl;
-                if (gl > 0) nm++;
-                nc += cracked(s, i) > 0;
-            }
-            fprintf(stderr, "tf t=%g cracked %d split nodes %d particles with grad %d max |grad D| dx %.3f\n", s->t, nc, ns, nm, gmax);
         }
     }
     return HEARTH_OK;
