@@ -668,7 +668,9 @@ crust_cracks_over_expanding_crumb)
         "31.4 mm (dx 3) and 32.0 mm (F = 1 control), where it reached 46.6, 40.2 and 39 mm, and no V opens (at 3" \
         "mm it had parted at its crown into a V 1 cell wide at 0.15 of the height, 2 needed). A crumb that rises" \
         "must now rise by its gas (eq. 13). The measure reads the intact material's top (cracked particles heaped" \
-        "in the V are debris; crust_cracks_damage.png; docs/validation.md, Crust (#18), Eq. 10 as a thermal strain)"
+        "in the V are debris; crust_cracks_damage.png; docs/validation.md, Crust (#18), Eq. 10 as a thermal strain)." \
+        "Crack tracking with two velocity fields (a core probe, the tray made slip) opens none either (2 cracked" \
+        "particles at 4 and at 3 mm; docs/validation.md, 'The crown's crack: tracked, with two fields')"
     exit 77
     ;;
 crust_cracks_by_stretch_over_expanding_crumb)
@@ -702,7 +704,9 @@ crust_cracks_by_stretch_over_expanding_crumb)
         "0.118 (3 mm) of the height when eq. 10 inflated the crumb plastically; as a thermal strain (ln J_th 0.24," \
         "core/sim/material.h) the crumb ends at 30.7 and 31.5 mm (33.2 and 34.1 before) and the V is none (4 mm) and" \
         "1 cell at 0.139 (3 mm): the cracked crown's neighbours stay intact, so the opening is one cell of" \
-        "cracked particles, and the measure asks for two (docs/validation.md, Crust (#18), session 29)"
+        "cracked particles, and the measure asks for two (docs/validation.md, Crust (#18), session 29). Holding the" \
+        "neighbours (crack tracking) and giving the crack two velocity fields opens none either (0 and 1 cracked" \
+        "particles; a core probe, the tray made slip: 'The crown's crack: tracked, with two fields')"
     exit 77
     ;;
 lua_body_force_varies_in_space)
