@@ -542,7 +542,9 @@ if dx == 0.004:
 print("EXPECTED FAILURE: at 3 mm the muffin domes by 1.0 s (the rows above: curvature -45 1/m, centre 10.5 mm above "
       "the edge) and then its crown tears at both shoulders (cracked one-cell bins -4..-2 and +2..+4 from the axis at "
       "1.5 s: docs/validation.md, 'The crown's crack: a bulge three cells wide'), the crumb between them bulging up "
-      "into a flat top, so the fit over 0.6 R turns positive though the centre stands 17.7 mm above the edge. The "
+      "into a flat top, so the fit over 0.6 R turns positive though the centre stands 17.7 mm above the edge; with "
+      "nothing able to crack (scripts/validation/muffin_tear.lua --set fracture=0) the same bake reads -40.0 1/m at "
+      "1.5 s, so the tear, not the rise, flattens it. The "
       "same missing piece as claim_muffin_top_tears_fine: a crack that localises and opens, not a zone that spreads.")
 sys.exit(77)
 PY
