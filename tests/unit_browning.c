@@ -147,6 +147,52 @@ TEST(browning_surface_not_crumb) {
     printf("surface index change with refinement: %.3f\n", surf[1] - surf[0]);
 }
 
+/* The same bake in SPH: the 10 cm square of bread dough at 250 degC, its
+ * heat through the oven's Robin flux (beta = 40 W/(m^2 K) on the surface
+ * particles' faces, as MPM's boundary nodes) and inside by eq. 3.45 with
+ * k_h,int = kappa / c on the same clock (S kappa / c = 600 x 0.4 / 2800).
+ * Only its surface browns: the outer particle layer's mean index above
+ * 0.3, the centre particle below 0.05, at dx = 5 mm and 2.5 mm (#18:
+ * browning in both solvers). */
+TEST(browning_surface_not_crumb_sph) {
+    const double S = 600, L = 0.1, cp = 2800, beta = 40, kappa = 0.4;
+    double surf[2], centre[2];
+    for (int r = 0; r < 2; r++) {
+        const double dx = r ? 0.0025 : 0.005;
+        hearth_scene *s = brown_scene(HEARTH_SOLVER_SPH, dx, 0.2, S, 250);
+        CHECK(s != NULL);
+        if (!s) return;
+        s->def.oven_beta = beta;
+        s->def.sph.heat_int = S * kappa / cp;
+        const int m = brown_material(s, HEARTH_SOLVER_SPH, cp / S, kappa);
+        const double c[3] = {0.1, 0.1, 0}, h[3] = {L / 2, L / 2, 0.5};
+        CHECK(m >= 0 && brown_block(s, m, c, h, 1, 0, 20) >= 0);
+        hearth_error err;
+        const hearth_status st = hearth_scene_advance(s, 1200 / S, &err);
+        CHECK(st == HEARTH_OK);
+        if (st != HEARTH_OK) fprintf(stderr, "advance: %s\n", err.msg);
+        const double *x = pcold(&s->ps, PC_X), *T = pcold(&s->ps, PC_TEMPERATURE), *b = pcold(&s->ps, PC_BROWNING);
+        double sb = 0, sT = 0, dmin = INFINITY;
+        int ns = 0, ic = -1;
+        for (int i = 0; i < s->ps.n; i++) {
+            const double ex = L / 2 - fabs(x[3 * i] - c[0]), ey = L / 2 - fabs(x[3 * i + 1] - c[1]);
+            if (fmin(ex, ey) < dx) sb += b[i], sT += T[i], ns++; /* the outer particle layer (one spacing) */
+            const double dc = hypot(x[3 * i] - c[0], x[3 * i + 1] - c[1]);
+            if (dc < dmin) dmin = dc, ic = i;
+        }
+        CHECK(ns > 0 && ic >= 0);
+        if (ns == 0 || ic < 0) return;
+        surf[r] = sb / ns, centre[r] = b[ic];
+        printf("sph, dx %.4g m: %d particles, bake %.0f s (simulated %.3g s, %ld steps): surface layer (%d) index %.3f "
+               "(Delta E %.1f) at %.1f degC; centre index %.2e at %.1f degC\n",
+               dx, s->ps.n, s->t * S, s->t, (long)s->step, ns, surf[r], surf[r] * BROWNING_DE_INF, sT / ns, centre[r], T[ic]);
+        CHECK(surf[r] > 0.3);
+        CHECK(centre[r] < 0.05);
+        hearth_scene_destroy(s);
+    }
+    printf("surface index change with refinement: %.3f\n", surf[1] - surf[0]);
+}
+
 /* A block browned at 200 degC, then cooled to 20 degC (its temperatures set
  * directly), keeps its colour: the index moves by less than 1e-4 over the
  * next half second, and stays above 0.5, in both solvers. A law of the
@@ -264,5 +310,5 @@ TEST(browning_checkpoint_roundtrip) {
     hearth_scene_destroy(s);
 }
 
-TEST_MAIN(T(browning_closed_form), T(browning_checkpoint_roundtrip), T(browning_surface_not_crumb), T(browning_history_not_current),
+TEST_MAIN(T(browning_closed_form), T(browning_checkpoint_roundtrip), T(browning_surface_not_crumb), T(browning_surface_not_crumb_sph), T(browning_history_not_current),
           T(browning_wet_does_not_brown))

@@ -149,7 +149,12 @@ static const hearth_setting settings[] = {
         "heat (scaled as a scene's time scale; a bread oven: 4.4); 0 = off. Scenes written for the printed form's "
         "1e8-1e9 (before #18) are refused: docs/validation.md, SPH surface heat per unit area",
         0, 0, 1e6),
-    SPH(heat_int, "m^2/s", "k_h,int of eq. 3.45: diffusivity; 0 = off", 0, 0, 1e6),
+    /* eq. 3.45's k_h,int multiplies m_j / rho^2 and the kernel's Laplacian,
+     * so it is kappa / c (kg/(m s)); k_h,int / rho is the diffusivity */
+    SPH(heat_int, "kg/(m s)",
+        "k_h,int of eq. 3.45: the conductivity over the specific heat, kappa / c (the diffusivity times the density; "
+        "scaled as a scene's time scale); 0 = off",
+        0, 0, 1e6),
     SPH_FLAG("adaptive_h", "Sigalotti adaptive smoothing length (eq. 3.54-3.56)", adaptive_h),
     SPH(k_g, "1", "eq. 3.54 factor k_g", 1, 0.1, 10),
     SPH(eps_g, "1", "eq. 3.54 factor epsilon_g", 0.5, 0, 1),

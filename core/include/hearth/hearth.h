@@ -194,7 +194,7 @@ typedef struct hearth_sph_def {
     double xsph0, xsph_f;  ///< XSPH tuner epsilon (eq. 3.34, 0..1) at xsph_T0 and xsph_Tf (eq. 4.4); default 0, 0
     double xsph_T0, xsph_Tf; ///< temperatures of the XSPH tuner's line (degrees C); default 26, 120
     double heat_ext;       ///< k_h,ext of eq. 3.42 per unit area of surface: h / c, kg/(m^2 s) (time-scaled); 0 = off
-    double heat_int;       ///< k_h,int of eq. 3.45 (diffusivity, m^2/s); 0 = off
+    double heat_int;       ///< k_h,int of eq. 3.45: kappa / c, kg/(m s) (k_h,int / rho is the diffusivity; time-scaled); 0 = off
     int adaptive_h;        ///< 1: Sigalotti adaptive smoothing length (eq. 3.54-3.56)
     double k_g, eps_g;     ///< eq. 3.54 factors; default 1 and 0.5
     double bubble_T0;      ///< temperature where bubbles have their initial volume (degrees C, eq. 3.50); default 26

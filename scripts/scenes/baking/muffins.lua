@@ -25,7 +25,8 @@
 -- Measured (2D, one cup, 1.5 s): dx 4 mm, centre 12.34 mm above the edge, top
 -- curvature -5.8 1/m (the crown's tear flattens the fit), the centre's top from
 -- 9.2 mm below the rim to 7.3 mm above it (claim_muffin_domes); dx 3 mm 17.70
--- mm. Its top dries before the rise but stays leathery until it sets (the
+-- mm, domed at 1 s (-45 1/m) but +6.3 1/m at 1.5 s, its crown torn flat at both
+-- shoulders (claim_muffin_domes_fine, an expected failure). Its top dries before the rise but stays leathery until it sets (the
 -- preset's heat-set, lua/hearth/dough.lua HEAT_SET), and its crown then tears:
 -- 4.70 mm deep and 8 mm wide at 4 mm (claim_muffin_top_tears); at 3 mm 3.85 mm,
 -- short of the claim (docs/validation.md "The muffin's tear: the heat-set"); the
