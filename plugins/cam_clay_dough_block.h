@@ -59,6 +59,50 @@ static int block_point(const hearth_block *b, int j, double J, double mu, double
     return code;
 }
 
+/* stress_block's last loop: the state of each fast point's elastic step (the trial b^E, J^P and the
+ * damage), every other point through stress_law; returns the count of points whose code is not 0.
+ * Always inlined with cracks and fast's nullness constants, so stress_block holds it three times:
+ * with cracks 0 (no point's fracture_strain is > 0) the fracture tests and fracture_update fold
+ * away, which GCC left in the loop as a run-time test (9 instructions a point); with fast NULL (no
+ * point took the plane-strain path: 3D, among others) every point goes to stress_law without a
+ * test, where a column of zeros cost its stores and a test a point. vk comes as a pointer to its
+ * array, not to its first entry: its bound P_COUNT lets GCC unroll the copy of the varying
+ * parameters, as it did while the loop was stress_block's own (through an int *, 3D 24 cells
+ * 90.62M -> 90.76M a step). */
+static inline __attribute__((always_inline)) int write_back(const hearth_block *b, int n, double *const tau[9], int *code,
+                                                            const int cracks, const double *fast, const double *J,
+                                                            const double *B0, const double *B1, const double *B4,
+                                                            const double *B8, const double *EV, const double *E0,
+                                                            const double *E1, const double *E2, const double *MU,
+                                                            const double *LA, double *q, int (*vk)[P_COUNT], int nv) {
+    const double *ef_c = b->p_col[P_FRACTURE_STRAIN], *fs_c = b->p_col[P_FRACTURE_STRETCH];
+    double *const st = b->state;
+    const int stride = b->state_stride;
+    int bad = 0;
+    for (int j = 0; j < n; j++) {
+        double ef = 0;
+        int stretch = 0;
+        if (cracks) {
+            ef = ef_c ? ef_c[j] : b->p[P_FRACTURE_STRAIN];
+            /* the stretch rule (fracture_stretch = 1) reads the eigenvectors and grad_v: stress_law's path */
+            stretch = ef > 0 && (fs_c ? fs_c[j] : b->p[P_FRACTURE_STRETCH]) > 0.5;
+        }
+        if (fast && fast[j] != 0 && !stretch) {
+            double *s = st + (size_t)j * stride;
+            s[S_XX] = B0[j], s[S_YY] = B4[j], s[S_ZZ] = B8[j];
+            s[S_XY] = 0.5 * (B1[j] + B1[j]); /* hearth_full_to_sym's; S_YZ and S_ZX stay as they were */
+            s[S_JP] = J[j] / exp(EV[j]);
+            if (ef > 0) fracture_update(ef, s, fmax(E0[j], fmax(E1[j], E2[j])));
+            code[j] = 0;
+        } else {
+            for (int v = 0; v < nv; v++) q[(*vk)[v]] = b->p_col[(*vk)[v]][j];
+            code[j] = block_point(b, j, J[j], MU[j], LA[j], q, tau);
+            bad += code[j] != 0;
+        }
+    }
+    return bad;
+}
+
 static int stress_block(const hearth_block *b, double *const tau[9], int *code) {
     const int n = b->n;
     const double *const *F = b->F;
@@ -179,52 +223,12 @@ static int stress_block(const hearth_block *b, double *const tau[9], int *code) 
         memcpy(tau[0], T0, bytes), memcpy(tau[1], T1, bytes), memcpy(tau[3], T1, bytes);
         memcpy(tau[4], T4, bytes), memcpy(tau[8], T8, bytes);
         for (int c = 2; c < 8; c += c == 2 ? 3 : 1) memset(tau[c], 0, bytes); /* 2, 5, 6, 7 */
-    } else {
-        for (int j = 0; j < n; j++) fast[j] = 0;
-    }
-    const double *ef_c = b->p_col[P_FRACTURE_STRAIN], *fs_c = b->p_col[P_FRACTURE_STRETCH];
-    int bad = 0;
-    const int cracks = ef_c || b->p[P_FRACTURE_STRAIN] > 0; /* else no point's fracture_strain is > 0 */
-    if (!cracks) {
-        /* the loop below where no point's fracture_strain is > 0 (ef = 0, no stretch rule, no fracture_update):
-         * the same stores without its two tests a point, which GCC left in the loop (9 instructions a point) */
-        for (int j = 0; j < n; j++) {
-            if (fast[j] != 0) {
-                double *s = st + (size_t)j * stride;
-                s[S_XX] = B0[j], s[S_YY] = B4[j], s[S_ZZ] = B8[j];
-                s[S_XY] = 0.5 * (B1[j] + B1[j]);
-                s[S_JP] = J[j] / exp(EV[j]);
-                code[j] = 0;
-            } else {
-                for (int v = 0; v < nv; v++) q[vk[v]] = b->p_col[vk[v]][j];
-                code[j] = block_point(b, j, J[j], MU[j], LA[j], q, tau);
-                bad += code[j] != 0;
-            }
-        }
-        return bad;
-    }
-    for (int j = 0; j < n; j++) {
-        double ef = 0;
-        int stretch = 0;
-        if (cracks) {
-            ef = ef_c ? ef_c[j] : b->p[P_FRACTURE_STRAIN];
-            /* the stretch rule (fracture_stretch = 1) reads the eigenvectors and grad_v: stress_law's path */
-            stretch = ef > 0 && (fs_c ? fs_c[j] : b->p[P_FRACTURE_STRETCH]) > 0.5;
-        }
-        if (fast[j] != 0 && !stretch) { /* the state of an elastic step: the trial b^E, J^P and the damage */
-            double *s = st + (size_t)j * stride;
-            s[S_XX] = B0[j], s[S_YY] = B4[j], s[S_ZZ] = B8[j];
-            s[S_XY] = 0.5 * (B1[j] + B1[j]); /* hearth_full_to_sym's; S_YZ and S_ZX stay as they were */
-            s[S_JP] = J[j] / exp(EV[j]);
-            if (ef > 0) fracture_update(ef, s, fmax(E0[j], fmax(E1[j], E2[j])));
-            code[j] = 0;
-        } else {
-            for (int v = 0; v < nv; v++) q[vk[v]] = b->p_col[vk[v]][j];
-            code[j] = block_point(b, j, J[j], MU[j], LA[j], q, tau);
-            bad += code[j] != 0;
-        }
-    }
-    return bad;
+    } else /* no point takes the plane-strain path: every one goes through stress_law */
+        return write_back(b, n, tau, code, 0, NULL, J, B0, B1, B4, B8, EV, E0, E1, E2, MU, LA, q, &vk, nv);
+    /* where no point's fracture_strain is > 0, ef is 0 and the stretch rule off at every point */
+    if (b->p_col[P_FRACTURE_STRAIN] || b->p[P_FRACTURE_STRAIN] > 0)
+        return write_back(b, n, tau, code, 1, fast, J, B0, B1, B4, B8, EV, E0, E1, E2, MU, LA, q, &vk, nv);
+    return write_back(b, n, tau, code, 0, fast, J, B0, B1, B4, B8, EV, E0, E1, E2, MU, LA, q, &vk, nv);
 }
 
 /* ---- the batched scalars (<hearth/material.h> rule 9) ------------------------

@@ -252,6 +252,26 @@ static inline double sample_depth(double phi) {
 #define PHI_HI 0.8
 static inline double clip_psi(double phi) { return clamp01((phi - PHI_LO) / (PHI_HI - PHI_LO)); }
 
+/* sum_i w_ip f_i over a particle's 3^D stencil, f a tile's nodes copied out
+ * (GRID_T to a side, lb the stencil's lowest node in the tile): the weights a
+ * tensor product, one axis at a time. area_gather's, for r and for phi. The
+ * stencil's nodes stand at fixed offsets from its lowest one (o). */
+FORCE_INLINE double tile_interp(const int D, const double *f, const int lb[3], double w[3][3]) {
+    const double *o = D == 2 ? f + lb[0] * GRID_T + lb[1] : f + (lb[0] * GRID_T + lb[1]) * GRID_T + lb[2];
+    double sum = 0;
+    for (int x = 0; x < 3; x++)
+        for (int y = 0; y < 3; y++) {
+            const double wxy = w[0][x] * w[1][y];
+            if (D == 2) {
+                sum += wxy * o[x * GRID_T + y];
+            } else {
+                const double *row = o + (x * GRID_T + y) * GRID_T;
+                sum += wxy * (w[2][0] * row[0] + w[2][1] * row[1] + w[2][2] * row[2]);
+            }
+        }
+    return sum;
+}
+
 /* Each particle's area m_p sum_i w_ip r_i from CH_CG_P, one particle block at
  * a time, and with an oven or evaporation the depth of its sample from the volume
  * fraction phi in CH_CG_R. Only blocks whose tile holds area are gathered: the
@@ -303,32 +323,12 @@ FORCE_INLINE void area_gather(hearth_scene *s, const int D, int k, int want_dept
         if (miss) continue;
         double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
         for (int d = 0; d < D; d++) bspline_weights(Xd[d] - (lb[d] + bc[d] * GRID_B), w[d], dw);
-        double a = 0;
-        for (int x = 0; x < 3; x++)
-            for (int y = 0; y < 3; y++) {
-                const double wxy = w[0][x] * w[1][y];
-                if (D == 2) {
-                    a += wxy * r[(lb[0] + x) * GRID_T + lb[1] + y];
-                } else {
-                    const double *row = r + ((lb[0] + x) * GRID_T + lb[1] + y) * GRID_T + lb[2];
-                    a += wxy * (w[2][0] * row[0] + w[2][1] * row[1] + w[2][2] * row[2]);
-                }
-            }
+        const double a = tile_interp(D, r, lb, w);
         if (!(a > 0)) continue;
         s->boundary.area[i] = M[i] * a;
         if (flags) flags[i] |= PF_BOUNDARY;
         if (!want_depth) continue;
-        double phi = 0; /* the interpolated volume fraction */
-        for (int x = 0; x < 3; x++)
-            for (int y = 0; y < 3; y++) {
-                const double wxy = w[0][x] * w[1][y];
-                if (D == 2) {
-                    phi += wxy * ph[(lb[0] + x) * GRID_T + lb[1] + y];
-                } else {
-                    const double *row = ph + ((lb[0] + x) * GRID_T + lb[1] + y) * GRID_T + lb[2];
-                    phi += wxy * (w[2][0] * row[0] + w[2][1] * row[1] + w[2][2] * row[2]);
-                }
-            }
+        const double phi = tile_interp(D, ph, lb, w); /* the interpolated volume fraction */
         s->boundary.depth[i] = sample_depth(phi) * g->dx;
     }
 }

@@ -176,6 +176,18 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
         X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9) X(vc, 1)  \
         X(vr, 1)
 
+/* Frees the per-particle columns (ARRAYS, key, order) of a set sized for cap
+ * particles: sph_free's set, and ensure's old set or the new one it could not
+ * complete (mem_free passes over the columns left NULL). */
+static void arrays_free(struct sph_state *a, int cap) {
+    const size_t c = (size_t)cap;
+#define FREE(x, k) mem_free(a->x, sizeof(double) * (k) * c);
+    ARRAYS(FREE)
+#undef FREE
+    mem_free(a->key, sizeof(int) * c);
+    mem_free(a->order, sizeof(int) * c);
+}
+
 static void sph_free(hearth_scene *s) {
     struct sph_state *st = s->sph;
     if (!st) return;
@@ -184,12 +196,7 @@ static void sph_free(hearth_scene *s) {
     sph_walls_free(st);
     mem_free(st->pairc, sizeof(double) * st->pairc_cap);
     mem_free(st->pairm, sizeof(int) * st->pairm_cap);
-    size_t c = (size_t)st->cap;
-#define FREE(a, k) mem_free(st->a, sizeof(double) * (k) * c);
-    ARRAYS(FREE)
-#undef FREE
-    mem_free(st->key, sizeof(int) * c);
-    mem_free(st->order, sizeof(int) * c);
+    arrays_free(st, st->cap);
     mem_free(st->visc_index, sizeof(int) * (size_t)st->visc_cap);
     mem_free(st, sizeof *st);
     s->sph = NULL;
@@ -228,19 +235,10 @@ static hearth_status ensure(hearth_scene *s, int n, hearth_error *err) {
         memcpy(nw.Tprev, st->Tprev, sizeof(double) * (size_t)st->n);
     }
     if (!ok) {
-#define FREE(a, k) mem_free(nw.a, sizeof(double) * (k) * (size_t)cap);
-        ARRAYS(FREE)
-#undef FREE
-        mem_free(nw.key, sizeof(int) * (size_t)cap);
-        mem_free(nw.order, sizeof(int) * (size_t)cap);
+        arrays_free(&nw, cap);
         return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory for %d particles", n);
     }
-    size_t c = (size_t)st->cap;
-#define FREE(a, k) mem_free(st->a, sizeof(double) * (k) * c);
-    ARRAYS(FREE)
-#undef FREE
-    mem_free(st->key, sizeof(int) * c);
-    mem_free(st->order, sizeof(int) * c);
+    arrays_free(st, st->cap);
     nw.cap = cap;
     *st = nw;
     return HEARTH_OK;
