@@ -72,8 +72,8 @@
 -- modulus is ~50 kPa at small strain (7-8 kPa in tension; the review of Scanlon &
 -- Zghal 2001, Food Res. Int. 34:841, as its text reads online), and an open-cell
 -- foam's modulus is its wall's times the squared relative density (Gibson &
--- Ashby): at 75-85% porosity (crumb) the wall's E is 0.6-2.2 MPa, mu_e = 2 G =
--- 2 E / 3 = 0.4-1.5 MPa; 1 MPa taken. Measured: docs/validation.md "The roll's
+-- Ashby 1988): at 75-85% porosity (crumb) the wall's E is 0.8-2.2 MPa, mu_e =
+-- 2 G = 2 E / 3 = 0.5-1.5 MPa; 1 MPa taken. Measured: docs/validation.md "The roll's
 -- set: the crumb sets where bread does (#18, helper rollset)".
 -- Difference from the thesis: eq. 4.1 and 4.2 extrapolate linearly beyond T0
 -- and Tf; hearth's curves are constant beyond their end points.

@@ -21,7 +21,7 @@ local gas = 20e3 -- the bubbles' largest gauge pressure on the roll, 6-22 kPa (d
 assert(at(mu, 26) == 100 and at(mu, 45) == 1e3, ("raw end Table 4.1 x 100: %g, %g"):format(at(mu, 26), at(mu, 45)))
 -- soft to 68 degC, McGee's start of the set: no stiffer than 1 kPa anywhere below it
 for T = 26, 68, 0.5 do assert(at(mu, T) <= 1e3, ("soft to 68 degC: mu_e(%g) = %g Pa"):format(T, at(mu, T))) end
--- set at 80 degC, McGee's end: the crumb's cell wall, 1 MPa (0.4-1.5 MPa by Gibson & Ashby from crumb moduli)
+-- set at 80 degC, McGee's end: the crumb's cell wall, 1 MPa (0.5-1.5 MPa by Gibson & Ashby from crumb moduli)
 assert(at(mu, 80) == 1e6, "set at 80 degC: " .. at(mu, 80))
 -- log-linear over 68-80 degC: every 3 degC a factor 1000^(1/4) = 5.623 (the points rounded to three figures)
 for T = 68, 77, 3 do
