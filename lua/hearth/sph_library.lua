@@ -43,9 +43,10 @@
 --                  rest volumes read the dough beside hot bubbles the set crumb holds
 --                  back as squeezed (to 1.1 MPa at 2 s), which arched the base off
 --                  its tray and pushed the roll past 1.3x; without it the base stays
---                  on the tray and the roll rises 1.14x, the gas volume reached before
---                  the crumb sets (docs/validation.md "The roll's base: its own
---                  squeeze").
+--                  on the tray (with eq. 4.2's early set the roll rose 1.14x, the gas
+--                  volume reached before the crumb set; with MU_E_SET 1.43x, and the
+--                  base's ends lift from 1.6 s: docs/validation.md "The roll's base:
+--                  its own squeeze", "The roll's set").
 --   .paper     eq. 4.2 as printed, mu_e through (T0, mu_e0), (Tc, mu_ec), (Tf, mu_ef) of
 --              Table 4.1 (animation units; the scene scales it by 100 with --set
 --              mu_e_curve=table).
