@@ -360,6 +360,11 @@ lua_sph_library)
     out=$("$hearth" run "$scenes/sph_library.lua" --quiet 2>&1) || fail "sph_library.lua: $out"
     echo "$out" | grep -q "sph library ok" || fail "sph_library.lua did not finish: $out"
     ;;
+lua_sph_bread_roll_set)
+    out=$("$hearth" run "$scenes/sph_bread_roll_set.lua" --quiet 2>&1) || fail "sph_bread_roll_set.lua: $out"
+    echo "$out"
+    echo "$out" | grep -q "sph bread roll set ok" || fail "sph_bread_roll_set.lua did not finish: $out"
+    ;;
 lua_sph_moving_lid)
     out=$("$hearth" run "$scenes/sph_moving_lid.lua" --quiet 2>&1) || fail "sph_moving_lid.lua: $out"
     echo "$out" | grep -q "sph moving lid ok" || fail "sph_moving_lid.lua did not finish: $out"
