@@ -2,8 +2,7 @@
  * dissolved in the dough's water (sph.dough_water): Henry's law shares each
  * bubble's CO2 between its gas and an even share of the particles' water
  * (thesis eq. 2.44, Fan et al.), checked against closed forms computed here;
- * the dough's squeeze read from its own volume (sph.own_squeeze); and the
- * crumb's cells opening where it sets (sph.open_cell_T). */
+ * and the dough's squeeze read from its own volume (sph.own_squeeze). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -277,90 +276,5 @@ TEST(sph_own_squeeze_keeps_stretch_and_true_squeeze) {
     CHECK(c_sum > 0 && c_own > 0.8 * c_sum && c_own <= c_sum * (1 + 1e-12)); /* a true squeeze both read */
 }
 
-/* ---- sph.open_cell_T: the crumb's cells open where it sets --------------- */
-
-/* The held-bubble block of held_bubbles (10 x 6 at 2 mm, its middle 3 x 3
- * bubble particles at their raw volume, the roll's preset's reading: gas law
- * with vapour 0.95, the gas's own stiffness, tension, the renormalised sum,
- * own_squeeze), all at T, with sph.open_cell_T = open_T, one step: each
- * bubble's pressure into pb[9] (in the particles' order), the dough's
- * pressures summed by order into *dough. The bubbles are below their gas
- * volume (V_b 1.34 at 60 degC, 3.0 at 95), so closed they push. 0 on success. */
-static int open_block(double T, double open_T, double pb[9], double *dough) {
-    const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.04, 0.04, 0};
-    hearth_scene_def d = sph_def(2, dx, lo, hi);
-    d.gravity[1] = 0;
-    d.sph.tension = 1;
-    d.sph.gas_law = 1;
-    d.sph.bubble_vapour = AW;
-    d.sph.bubble_T0 = T0;
-    d.sph.renormalised_density = 1;
-    d.sph.gas_pressure = PA;
-    d.sph.own_squeeze = 1;
-    d.sph.open_cell_T = open_T;
-    hearth_error err;
-    hearth_scene *s = hearth_scene_create(&d, &err);
-    if (!s) return fprintf(stderr, "%s\n", err.msg), 1;
-    const char *n[] = {"density", "bulk", "viscosity", "bubble"};
-    double v[] = {1100, 1e6, 2.0, 0};
-    const int dough_m = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
-    v[3] = 1;
-    const int bub = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
-    for (int j = 0; j < 6 && dough_m >= 0 && bub >= 0; j++)
-        for (int i = 0; i < 10; i++) {
-            double p[3] = {0.01 + (i + 0.5) * dx, 0.014 + (j + 0.5) * dx, 0};
-            const int b = i >= 3 && i < 6 && j >= 1 && j < 4;
-            if (hearth_scene_add_particles(s, b ? bub : dough_m, 1, p, NULL, dx * dx, &err) != 1)
-                fprintf(stderr, "%s\n", err.msg);
-        }
-    sph_heat_speck(s, dough_m, 0.035, 0.035, T);
-    double *Tp = pcold(&s->ps, PC_TEMPERATURE);
-    for (int i = 0; Tp && i < s->ps.n; i++) Tp[i] = T;
-    int rc = !Tp || hearth_scene_step(s, 1, &err) != HEARTH_OK, nb = 0;
-    if (rc) fprintf(stderr, "%s\n", Tp ? err.msg : "no temperature field");
-    const int *mat = pcoli(&s->ps, PC_MAT), *flags = pcoli(&s->ps, PC_FLAGS);
-    *dough = 0;
-    for (int i = 0; !rc && i < s->ps.n; i++) {
-        if (flags[i] & PF_FIXED) continue;
-        if (mat[i] == bub && nb < 9) pb[nb++] = s->sph->prs[i];
-        else if (mat[i] == dough_m) *dough += s->sph->prs[i] * (i + 1);
-    }
-    hearth_scene_destroy(s);
-    return rc || nb != 9;
-}
-
-/* A bubble whose crumb has set (95 degC, open_cell_T 80, the preset's set
- * end) is an open cell: it pushes nothing (the step reads it at its raw
- * volume, det F 1, so its dough's Tait is 0 and its gauge pressure exactly
- * 0), where closed it pushes its gas (> 30 kPa, V_b 3). One whose crumb has
- * not (60 degC) pushes its gas bit for bit as without the option, and so does
- * every dough particle. Refused without the gas law, word for word. */
-TEST(sph_open_cell_set_bubble_pushes_nothing) {
-    double closed[9], open[9], soft[9], soft0[9], dc, dopen, ds, ds0;
-    CHECK(open_block(95, 0, closed, &dc) == 0 && open_block(95, 80, open, &dopen) == 0);
-    CHECK(open_block(60, 80, soft, &ds) == 0 && open_block(60, 0, soft0, &ds0) == 0);
-    double cmin = INFINITY, omax = -INFINITY;
-    int same = 1;
-    for (int k = 0; k < 9; k++) {
-        cmin = fmin(cmin, closed[k]), omax = fmax(omax, fabs(open[k]));
-        same &= memcmp(&soft[k], &soft0[k], sizeof(double)) == 0;
-    }
-    printf("95 degC: closed bubbles push at least %.1f Pa, open ones at most |%.3g| Pa; 60 degC with open_cell_T 80: "
-           "bubbles %s (first %.6f Pa), dough's weighted sum %.17g against %.17g\n",
-           cmin, omax, same ? "bit for bit" : "DIFFER", soft[0], ds, ds0);
-    CHECK(cmin > 3e4 && omax == 0);
-    CHECK(same && soft[0] > 1e4 && memcmp(&ds, &ds0, sizeof ds) == 0);
-    const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.1, 0};
-    hearth_scene_def d = sph_def(2, 0.005, lo, hi);
-    d.sph.open_cell_T = 80;
-    hearth_error err;
-    hearth_scene *s = hearth_scene_create(&d, &err);
-    CHECK(s == NULL && strcmp(err.msg, "scene: sph.open_cell_T = 80 degC needs sph.gas_law = true (it opens the gas "
-                                       "law's bubbles); set sph.gas_law = true or sph.open_cell_T = 0") == 0);
-    if (s) hearth_scene_destroy(s);
-    else printf("refused: %s\n", err.msg);
-}
-
 TEST_MAIN(T(sph_dissolved_co2_mole_balance), T(sph_dough_water_share_from_particles),
-          T(sph_own_squeeze_dough_beside_held_bubble), T(sph_own_squeeze_keeps_stretch_and_true_squeeze),
-          T(sph_open_cell_set_bubble_pushes_nothing))
+          T(sph_own_squeeze_dough_beside_held_bubble), T(sph_own_squeeze_keeps_stretch_and_true_squeeze))

@@ -206,12 +206,6 @@ static const hearth_setting settings[] = {
         "2.44) and comes out into the bubbles as the dough heats (each bubble draws on an even share of the "
         "particles' water per raw gas volume); 0 = none",
         0, 0, 0.9),
-    /* bread's cells open as its crumb sets (McGee 2004, "from foam to
-     * sponge"); the preset takes it from the set curve's end */
-    SPH(open_cell_T, "degC",
-        "with gas_law: the temperature at which the crumb has set and its gas cells open (foam to sponge): a bubble "
-        "at or above it pushes no gauge pressure (its gas vents; a stretch still pulls it); 0 = cells never open",
-        0, 0, 300),
 };
 
 const hearth_setting *hearth_scene_settings(int *n) {

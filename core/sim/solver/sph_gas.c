@@ -220,10 +220,9 @@ double sph_gas_sound_speed(const hearth_sph_def *o, double bub, double rho0, dou
  * it, saying what it does there (the messages word for word as when each had
  * its own check in sph.c: scripts and users grep them). */
 hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
-    char gp[48], dw[48], ot[48];
+    char gp[48], dw[48];
     snprintf(gp, sizeof gp, "%g Pa", o->gas_pressure);
     snprintf(dw, sizeof dw, "%g", o->dough_water);
-    snprintf(ot, sizeof ot, "%g degC", o->open_cell_T);
     const char *both = "set both or neither";
     const struct {
         const char *name, *val, *why, *fix;
@@ -238,8 +237,6 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
          "set sph.gas_law = true or sph.gas_pressure = 0", o->gas_pressure > 0},
         {"dough_water", dw, "its CO2 comes out into the gas law's bubbles",
          "set sph.gas_law = true or sph.dough_water = 0", o->dough_water > 0},
-        {"open_cell_T", ot, "it opens the gas law's bubbles", "set sph.gas_law = true or sph.open_cell_T = 0",
-         o->open_cell_T > 0},
     };
     for (size_t k = 0; k < sizeof needs / sizeof needs[0]; k++)
         if (needs[k].on && !o->gas_law)
@@ -265,26 +262,10 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
  * the dough beside bubbles at its bubbles' pressure (sph.foam_pressure) and an
  * open cell at bubble_vmax that pushes nothing (sph.bubble_vent); neither kept
  * the roll on its tray and rising (docs/validation.md "The roll's base",
- * "Both switches on").
- * sph.open_cell_T: the crumb's cells open where it sets. Eq. 3.49-3.50 (and
- * Fan et al.'s eq. 2.42-2.43) keep a bubble's moles of CO2 for the whole bake:
- * a closed cell. Bread's cells do not stay closed: as the crumb sets its
- * foam of separate gas cells becomes a sponge of connected ones, the cell
- * walls rupturing where the gluten has cross-linked and the starch
- * gelatinised, so the gas vents and the set walls, not the gas, hold the
- * risen shape (H. McGee 2004, On Food and Cooking, "mid-baking: from foam to
- * sponge"; the thesis's own cap, bubble_vmax, stands for the same opening).
- * A bubble particle at or above open_cell_T, the temperature at which the
- * dough's mu_e has reached its set value (the preset takes it from its set
- * curve's end, sph_library.lua MU_E_SET), holds the oven's pressure: its gas
- * term is at most 0 gauge, so it pushes nothing past what its dough's Tait
- * gives for a squeeze below the raw density; a stretch past its gas volume
- * still pulls (the films' tension). No history is kept: the roll only heats
- * past the set, and a crumb that cooled back below it would close again,
- * which real crumb does not (a cooling bake is not what this models). With
- * the roll's closed cells the set crust rounded over bubbles still pushing,
- * lifting the base's ends (docs/validation.md "The roll's set"; the deleted
- * sph.bubble_vent opened them only at bubble_vmax, whatever the crumb did).
+ * "Both switches on"). So was an open cell from the crumb's set on (sph.open_cell_T,
+ * McGee 2004's foam to sponge): opened where the set curve reaches its set
+ * value the roll still lifted its base, opened earlier it rose less than 1.3x
+ * (docs/validation.md "The roll's cells open at the set").
  * With sph.gas_pressure = P_a the bubble's stiffness is its gas's own,
  * P_a - P_v(T) (sph_gas_modulus), at any dough stiffness: p = (P_a -
  * P_v)(rho / rho_b - 1) is the bubble's ideal gas exactly (eq. 2.42-2.43,
@@ -307,8 +288,7 @@ void sph_pressure_gas_law(hearth_scene *s) {
         const double rt = o->own_squeeze ? own_squeeze(F + 9 * i, c.m[i], V0[i], rho0, rho) : rho;
         const double tait = st->B[i] * (pow(rt / rho0, o->gamma) - 1); /* eq. 3.17 */
         const double Bg = bub > 0 && T ? sph_gas_modulus(o, st->B[i], T[i]) : st->B[i];
-        double gas = Bg * (rho / rr - 1);
-        if (bub > 0 && T && o->open_cell_T > 0 && T[i] >= o->open_cell_T) gas = fmin(gas, 0); /* open_cell below */
+        const double gas = Bg * (rho / rr - 1);
         st->prs[i] = bub > 0 ? fmax(gas, tait) : tait;
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
     }
