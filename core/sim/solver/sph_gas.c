@@ -262,7 +262,10 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
  * the dough beside bubbles at its bubbles' pressure (sph.foam_pressure) and an
  * open cell at bubble_vmax that pushes nothing (sph.bubble_vent); neither kept
  * the roll on its tray and rising (docs/validation.md "The roll's base",
- * "Both switches on").
+ * "Both switches on"). So was an open cell from the crumb's set on (sph.open_cell_T,
+ * McGee 2004's foam to sponge): opened where the set curve reaches its set
+ * value the roll still lifted its base, opened earlier it rose less than 1.3x
+ * (docs/validation.md "The roll's cells open at the set").
  * With sph.gas_pressure = P_a the bubble's stiffness is its gas's own,
  * P_a - P_v(T) (sph_gas_modulus), at any dough stiffness: p = (P_a -
  * P_v)(rho / rho_b - 1) is the bubble's ideal gas exactly (eq. 2.42-2.43,

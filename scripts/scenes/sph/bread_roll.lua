@@ -49,7 +49,8 @@
 -- holds 0.06-1.1 MPa, and the tray, a clip with no adhesion, can then carry
 -- the roll's weight only over a contact W / p wide. (Two switches tried
 -- for the base, a cap on the dough beside bubbles and vented open cells, are
--- deleted: "Both switches on".)
+-- deleted: "Both switches on"; so is a bubble that opens as its crumb sets:
+-- "The roll's cells open at the set".)
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature), particles_NNNN.csv (positions, for
 -- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
