@@ -321,18 +321,19 @@ static int curve_memo_columns(const material_slot *ms, const material_run_params
     return nm;
 }
 
-/* The varying parameters of points i0 .. i0 + n - 1 as columns (vcol[v] for
- * parameter vk[v]): the values material_run_params_at gives point by point, to
- * the bit, computed curve by curve over the block. A parameter's value is its
- * temperature curve's (or its uniform value), times its moisture curve's
- * factor; the factors are evaluated again only where material_run_params_at
- * would (the ratios differ from the last point's), so they are its values. */
 /* Column v as the uniform value it stands for (run_params_columns), where it is still uniform and so unwritten. */
 static inline void uniform_fill(double (*vcol)[HEARTH_BLOCK_MAX], const unsigned char *uniform, int v, const material_slot *ms,
                                 const int *vk, int n) {
     if (uniform[v])
         for (int j = 0; j < n; j++) vcol[v][j] = ms->params[vk[v]];
 }
+
+/* The varying parameters of points i0 .. i0 + n - 1 as columns (vcol[v] for
+ * parameter vk[v]): the values material_run_params_at gives point by point, to
+ * the bit, computed curve by curve over the block. A parameter's value is its
+ * temperature curve's (or its uniform value), times its moisture curve's
+ * factor; the factors are evaluated again only where material_run_params_at
+ * would (the ratios differ from the last point's), so they are its values. */
 static void run_params_columns(material_run_params *rp, const material_slot *ms, const particles *ps, int i0, int n,
                                int nv, const int *vk, double (*vcol)[HEARTH_BLOCK_MAX], unsigned char *uniform) {
     const int nt = rp->nt, nc = ms->ncurves;

@@ -124,9 +124,9 @@
  * reads the dough beside hot bubbles the set dough holds back as squeezed
  * (docs/validation.md "Why the roll's base leaves its tray"); the preset's
  * sph.own_squeeze (sph_gas.c) takes the squeeze from each particle's own det
- * F and keeps the base on its tray, and the roll then rises 1.14x, the gas
- * its bubbles reach before the crumb sets ("The roll's base: its own
- * squeeze"). At
+ * F ("The roll's base: its own squeeze"); with the preset's crumb setting
+ * where bread sets the roll rises 1.43x and its base's ends lift from 1.6 s
+ * as the set crust rounds over closed bubbles ("The roll's set"). At
  * eps 0.3 a block in strong uniform tension still creeps toward pairs over
  * many sound crossings (`sph_artificial_stress_fluid`: 0.68 spacings at 1 s;
  * 0.5 holds). Surface tension above about 0.02 N/m does not settle a 0.06 m

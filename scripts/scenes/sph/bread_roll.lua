@@ -35,8 +35,8 @@
 -- (1.22x at 1.5 s at 2 mm), whole (docs/validation.md "The roll's skin,
 -- renormalised"). --set continuity=true (with --set renormalised=false) reads
 -- each particle's own volume instead (with the B-stiff bubbles its films tore
--- from 1.6 s; with the own gas it stays whole and flat on its tray but rises
--- 1.14x); --set gas_pressure=0 gives the bubbles the dough's Tait B instead of
+-- from 1.6 s; with the own gas and eq. 4.2's early set it stayed whole and
+-- flat on its tray but rose 1.14x); --set gas_pressure=0 gives the bubbles the dough's Tait B instead of
 -- their gas's stiffness (2.9 kPa raw, 4.8e5 hot; the preset before rolltray:
 -- 1.50x at 2 s, its base up to 6.07 mm off the tray; docs/validation.md "The
 -- bubble's own gas", "The own gas as the preset"). --set dough_water=0.43
