@@ -89,13 +89,13 @@ local P = h.params { bubbles = "even", dx = 0.002, oven = 180, visc_scale = 100,
   gas_law = sph.gas_law, vapour = sph.bubble_vapour, vmax = sph.bubble_vmax or 4,
   continuity = sph.continuity_density or false, renormalised = sph.renormalised_density or false,
   gas_pressure = sph.gas_pressure or 0, dough_water = sph.dough_water or 0, own_squeeze = sph.own_squeeze or false,
-  mu_e_curve = "sourced" }
+  open_cell_mu_e = sph.open_cell_mu_e or 0, mu_e_curve = "sourced" }
 
 sph.heat_ext, sph.heat_int, sph.av_beta = P.heat_ext, 0.2, 1
 sph.gas_law, sph.bubble_vapour, sph.bubble_vmax = P.gas_law, P.vapour, P.vmax
 sph.artificial_stress, sph.tension = P.artificial_stress, P.tension
 sph.continuity_density, sph.renormalised_density, sph.gas_pressure = P.continuity, P.renormalised, P.gas_pressure
-sph.dough_water, sph.own_squeeze = P.dough_water, P.own_squeeze
+sph.dough_water, sph.own_squeeze, sph.open_cell_mu_e = P.dough_water, P.own_squeeze, P.open_cell_mu_e
 sph.xsph0 = P.xsph0 -- eq. 4.4 at the raw end (Table 4.1: 0.05)
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph", sph = sph,
   oven = { temperature = P.oven, beta = 0 }, browning = true, browning_scale = 400 }
