@@ -2,8 +2,7 @@
  * dissolved in the dough's water (sph.dough_water): Henry's law shares each
  * bubble's CO2 between its gas and an even share of the particles' water
  * (thesis eq. 2.44, Fan et al.), checked against closed forms computed here;
- * the dough's squeeze read from its own volume (sph.own_squeeze); and the
- * cells that open as the dough round them sets (sph.open_cell_mu_e). */
+ * and the dough's squeeze read from its own volume (sph.own_squeeze). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -274,83 +273,5 @@ TEST(sph_own_squeeze_keeps_stretch_and_true_squeeze) {
     CHECK(c_sum > 0 && c_own > 0.8 * c_sum && c_own <= c_sum * (1 + 1e-12)); /* a true squeeze both read */
 }
 
-/* ---- sph.open_cell_mu_e: a cell opens as the dough round it sets -------- */
-
-/* The held-bubble block of held_bubbles (10 x 6 at 2 mm, its middle 3 x 3
- * bubble particles at their raw volume; the roll's preset's reading: gas law
- * with vapour 0.95, the gas's own stiffness, tension, the renormalised sum,
- * own_squeeze), all at 95 degC (V_b 3.0: closed, the bubbles push), in
- * maxwell_sph with mu_e (Pa) mud for the dough and mub for the bubbles, with
- * sph.open_cell_mu_e = set, `steps` steps: each bubble's pressure into pb[9] (in
- * the particles' order), the dough's pressures summed by order into *dough.
- * 0 on success. */
-static int vent_block(double mud, double mub, double set, int steps, double pb[9], double *dough) {
-    const double dx = 0.002, T = 95;
-    hearth_scene_def d = bubbly_def(dx);
-    d.sph.renormalised_density = 1;
-    d.sph.gas_pressure = PA;
-    d.sph.own_squeeze = 1;
-    d.sph.open_cell_mu_e = set;
-    hearth_error err;
-    hearth_scene *s = hearth_scene_create(&d, &err);
-    if (!s) return fprintf(stderr, "%s\n", err.msg), 1;
-    const char *n[] = {"density", "bulk", "viscosity", "mu_e", "bubble"};
-    double v[] = {1100, 1e6, 2.0, mud, 0};
-    const int dm = hearth_scene_add_material(s, "maxwell_sph", n, v, 5, &err);
-    v[3] = mub, v[4] = 1;
-    const int bm = hearth_scene_add_material(s, "maxwell_sph", n, v, 5, &err);
-    for (int j = 0; j < 6 && dm >= 0 && bm >= 0; j++)
-        for (int i = 0; i < 10; i++) {
-            double p[3] = {0.01 + (i + 0.5) * dx, 0.014 + (j + 0.5) * dx, 0};
-            const int b = i >= 3 && i < 6 && j >= 1 && j < 4;
-            if (hearth_scene_add_particles(s, b ? bm : dm, 1, p, NULL, dx * dx, &err) != 1) fprintf(stderr, "%s\n", err.msg);
-        }
-    sph_heat_speck(s, dm, 0.035, 0.035, T); /* the temperature field; fixed: a wall, not a cell's wall */
-    double *Tp = pcold(&s->ps, PC_TEMPERATURE);
-    for (int i = 0; Tp && i < s->ps.n; i++) Tp[i] = T;
-    int rc = dm < 0 || bm < 0 || !Tp || hearth_scene_step(s, steps, &err) != HEARTH_OK, nb = 0;
-    if (rc) fprintf(stderr, "%s\n", err.msg);
-    const int *mat = pcoli(&s->ps, PC_MAT), *flags = pcoli(&s->ps, PC_FLAGS);
-    *dough = 0;
-    for (int i = 0; !rc && i < s->ps.n; i++) {
-        if (flags[i] & PF_FIXED) continue;
-        if (mat[i] == bm && nb < 9) pb[nb++] = s->sph->prs[i];
-        else if (mat[i] == dm) *dough += s->sph->prs[i] * (i + 1);
-    }
-    hearth_scene_destroy(s);
-    return rc || nb != 9;
-}
-
-/* A bubble among set dough (mu_e 2 MPa, past the set value 1 MPa) is an open
- * cell: it pushes nothing (the first step reads it at its raw volume, det F
- * 1, so its dough's Tait is 0 and its gauge pressure exactly 0), where closed
- * (the option off) it pushes its gas, > 30 kPa. Among soft dough (1 kPa)
- * every pressure after three steps (the bubbles' still > 20 kPa, the dough's
- * no longer 0) is bit for bit the option's off, and so it is when only the
- * bubble's own mu_e is past the set value: what opens a cell is the dough
- * round it. Refused without the gas law, word for word
- * (sph_gas_law_refusals_word_for_word, unit_sph_heat.c). */
-TEST(sph_open_cell_set_walls_vent) {
-    double closed[9], open[9], soft[9], soft0[9], self[9], self0[9], dc, dopen, ds, ds0, dself, dself0;
-    CHECK(vent_block(2e6, 1e3, 0, 1, closed, &dc) == 0 && vent_block(2e6, 1e3, 1e6, 1, open, &dopen) == 0);
-    CHECK(vent_block(1e3, 1e3, 1e6, 3, soft, &ds) == 0 && vent_block(1e3, 1e3, 0, 3, soft0, &ds0) == 0);
-    CHECK(vent_block(1e3, 2e6, 1e6, 3, self, &dself) == 0 && vent_block(1e3, 2e6, 0, 3, self0, &dself0) == 0);
-    double cmin = INFINITY, omax = 0;
-    int same = 1, same_self = 1;
-    for (int k = 0; k < 9; k++) {
-        cmin = fmin(cmin, closed[k]), omax = fmax(omax, fabs(open[k]));
-        same &= memcmp(&soft[k], &soft0[k], sizeof(double)) == 0;
-        same_self &= memcmp(&self[k], &self0[k], sizeof(double)) == 0;
-    }
-    printf("set dough (2 MPa): closed bubbles push at least %.1f Pa, open ones at most |%.3g| Pa; soft dough (1 kPa): "
-           "bubbles %s (first %.6f Pa), the dough's weighted sum %.17g against %.17g; the bubble alone set: %s "
-           "(first %.6f Pa)\n",
-           cmin, omax, same ? "bit for bit" : "DIFFER", soft[0], ds, ds0, same_self ? "bit for bit" : "DIFFER", self[0]);
-    CHECK(cmin > 3e4 && omax == 0);
-    CHECK(same && soft[0] > 2e4 && ds != 0 && memcmp(&ds, &ds0, sizeof ds) == 0);
-    CHECK(same_self && self[0] > 2e4 && memcmp(&dself, &dself0, sizeof ds) == 0);
-}
-
 TEST_MAIN(T(sph_dissolved_co2_mole_balance), T(sph_dough_water_share_from_particles),
-          T(sph_own_squeeze_dough_beside_held_bubble), T(sph_own_squeeze_keeps_stretch_and_true_squeeze),
-          T(sph_open_cell_set_walls_vent))
+          T(sph_own_squeeze_dough_beside_held_bubble), T(sph_own_squeeze_keeps_stretch_and_true_squeeze))

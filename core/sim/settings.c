@@ -211,13 +211,6 @@ static const hearth_setting settings[] = {
         "2.44) and comes out into the bubbles as the dough heats (each bubble draws on an even share of the "
         "particles' water per raw gas volume); 0 = none",
         0, 0, 0.9),
-    /* bread's cells open as the crumb round them sets (McGee 2004, "from foam
-     * to sponge"); the walls' set, not the bubble's own temperature, decides */
-    SPH(open_cell_mu_e, "Pa",
-        "with gas_law: a bubble's cell opens (foam to sponge) once the kernel-weighted mean mu_e (eq. 3.20's elasticity "
-        "constant, the material's mu_e) of its dough neighbours reaches this set value; it then pushes no gauge "
-        "pressure for the rest of the run (its gas vents; a stretch still pulls it); 0 = cells never open",
-        0, 0, 1e10),
 };
 
 const hearth_setting *hearth_scene_settings(int *n) {

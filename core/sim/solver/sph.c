@@ -174,7 +174,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
 #define ARRAYS(X)                                                                                                      \
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(surf, 1) X(rhof, 1)                  \
         X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9) X(vc, 1)  \
-        X(vr, 1) X(open, 1)
+        X(vr, 1)
 
 /* Frees the per-particle columns (ARRAYS, key, order) of a set sized for cap
  * particles: sph_free's set, and ensure's old set or the new one it could not
@@ -233,7 +233,6 @@ static hearth_status ensure(hearth_scene *s, int n, hearth_error *err) {
     if (ok && st->n > 0) { /* the arrays kept across steps */
         memcpy(nw.rhof, st->rhof, sizeof(double) * (size_t)st->n);
         memcpy(nw.Tprev, st->Tprev, sizeof(double) * (size_t)st->n);
-        memcpy(nw.open, st->open, sizeof(double) * (size_t)st->n);
     }
     if (!ok) {
         arrays_free(&nw, cap);
@@ -309,14 +308,11 @@ static hearth_status sort_and_list(hearth_scene *s, double hcell, const double *
     for (int i = 0; i < n && !moved; i++) moved = st->order[i] != i;
     if (moved) {
         particles_permute(ps, st->order, st->perm, sizeof(double) * (size_t)n);
-        /* the SPH arrays that carry over: final density (eq. 3.52), the last temperature, the cells
-         * sph.open_cell_mu_e has opened (sph_gas.c) and h (for the adaptive pass) */
+        /* the SPH arrays that carry over: final density (eq. 3.52) and h (for the adaptive pass) */
         for (int i = 0; i < n; i++) st->perm[i] = st->rhof[st->order[i]];
         memcpy(st->rhof, st->perm, sizeof(double) * (size_t)n);
         for (int i = 0; i < n; i++) st->perm[i] = st->Tprev[st->order[i]];
         memcpy(st->Tprev, st->perm, sizeof(double) * (size_t)n);
-        for (int i = 0; i < n && s->def.sph.open_cell_mu_e > 0; i++) st->perm[i] = st->open[st->order[i]];
-        if (s->def.sph.open_cell_mu_e > 0) memcpy(st->open, st->perm, sizeof(double) * (size_t)n);
         if (h) {
             for (int i = 0; i < n; i++) st->perm[i] = h[st->order[i]];
             memcpy(st->h, st->perm, sizeof(double) * (size_t)n);
@@ -816,8 +812,8 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     hearth_status e = ensure(s, n > 0 ? n : 1, err);
     if (e) return e;
     struct sph_state *st = s->sph;
-    if (st->n != n) /* particles added or removed since the last step: final densities start over, cells close */
-        for (int i = 0; i < n; i++) st->rhof[i] = st->Tprev[i] = NAN, st->open[i] = 0;
+    if (st->n != n) /* particles added or removed since the last step: final densities start over */
+        for (int i = 0; i < n; i++) st->rhof[i] = st->Tprev[i] = NAN;
     st->valid = 0;
     if (n == 0) {
         st->n = 0;

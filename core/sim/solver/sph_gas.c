@@ -6,8 +6,7 @@
  * particle's own volume (sph.continuity_density) or the sum renormalised by
  * the kernel's filled part (sph.renormalised_density), a squeeze only as far
  * as the particle's own volume confirms it (sph.own_squeeze), and the gas's
- * own stiffness (sph.gas_pressure), and the cells that open as the dough
- * round them sets (sph.open_cell_mu_e). phase_pressure (sph.c) calls
+ * own stiffness (sph.gas_pressure). phase_pressure (sph.c) calls
  * sph_pressure_gas_law in place of eq. 3.51-3.52 when the scene asks for it;
  * docs/validation.md "SPH bread roll (#18)" says why. */
 #include <math.h>
@@ -221,10 +220,9 @@ double sph_gas_sound_speed(const hearth_sph_def *o, double bub, double rho0, dou
  * it, saying what it does there (the messages word for word as when each had
  * its own check in sph.c: scripts and users grep them). */
 hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
-    char gp[48], dw[48], om[48];
+    char gp[48], dw[48];
     snprintf(gp, sizeof gp, "%g Pa", o->gas_pressure);
     snprintf(dw, sizeof dw, "%g", o->dough_water);
-    snprintf(om, sizeof om, "%g Pa", o->open_cell_mu_e);
     const char *both = "set both or neither";
     const struct {
         const char *name, *val, *why, *fix;
@@ -239,72 +237,12 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
          "set sph.gas_law = true or sph.gas_pressure = 0", o->gas_pressure > 0},
         {"dough_water", dw, "its CO2 comes out into the gas law's bubbles",
          "set sph.gas_law = true or sph.dough_water = 0", o->dough_water > 0},
-        {"open_cell_mu_e", om, "it opens the gas law's bubbles", "set sph.gas_law = true or sph.open_cell_mu_e = 0",
-         o->open_cell_mu_e > 0},
     };
     for (size_t k = 0; k < sizeof needs / sizeof needs[0]; k++)
         if (needs[k].on && !o->gas_law)
             return err_set(err, HEARTH_ERR_PARAM, "scene: sph.%s = %s needs sph.gas_law = true (%s); %s", needs[k].name,
                            needs[k].val, needs[k].why, needs[k].fix);
     return HEARTH_OK;
-}
-
-/* sph.open_cell_mu_e: a bubble's cell opens when the dough round it has set.
- * Eq. 3.49-3.50 (and Fan et al.'s eq. 2.42-2.43) keep a bubble's moles of
- * CO2 for the whole bake: a closed cell. Bread's cells open: once the crumb
- * reaches 68-80 degC "the walls of the gas cells can no longer stretch to
- * accommodate the rising pressure inside, so the pressure builds and
- * eventually ruptures the walls", and the foam of separate cells becomes a
- * sponge the gas leaves through (H. McGee 2004, On Food and Cooking,
- * "mid-baking: from foam to sponge"). What ruptures is the wall, so what opens
- * a cell here is its wall's set, read from the dough particles round the
- * bubble, not the bubble's own temperature (sph.open_cell_T, which opened
- * every cell of the roll at one temperature, is in the history: commit
- * da21267). The wall's stiffness is eq. 3.20's elasticity constant mu_e (the
- * material's `mu_e`, eq. 4.2 or a preset's set curve, at each neighbour's
- * temperature); the cell opens once the kernel-weighted mean
- *   sum_j W_ij mu_e,j / sum_j W_ij
- * over its dough neighbours j (not bubbles, not fixed, with a `mu_e`) reaches
- * the set value open_cell_mu_e. A mean, so a cell whose walls have set on
- * one side only (the crust's hot side, the tray's) opens when the stiff side
- * outweighs the soft. Once open it stays open (st->open, carried across
- * steps and the sort): a ruptured wall does not close again. An open cell's
- * gas term is at most 0 gauge, so it pushes nothing past what its dough's
- * Tait gives for a squeeze below the raw density; a stretch past its gas
- * volume still pulls (the films' tension), as sph.open_cell_T had it. Each
- * bubble reads its neighbours' mu_e from the temperatures this phase does not
- * write, into scratch first, and writes only its own flag: the same bits for
- * any thread count. st->perm is free scratch here (after renormalise). */
-static void open_cells(hearth_scene *s, const sph_cols *c) {
-    struct sph_state *st = s->sph;
-    const hearth_sph_def *o = &s->def.sph;
-    const int n = c->n, dim = c->dim, *mat = c->mat, *off = st->nl.off, *nb = st->nl.j;
-    const int *flags = s->ps.enabled & (1u << PC_FLAGS) ? pcoli(&s->ps, PC_FLAGS) : NULL;
-    double *mue = st->perm;
-    int last = -1, k = -1;
-    for (int i = 0; i < n; i++) {
-        const material_slot *ms = &s->mats.slot[mat[i]];
-        if (mat[i] != last) last = mat[i], k = params_index(ms->m, "mu_e");
-        mue[i] = NAN; /* not a wall: a bubble, a fixed particle, a material without mu_e */
-        if (k < 0 || ms->core[CP_BUBBLE] > 0 || (flags && (flags[i] & PF_FIXED))) continue;
-        double pscratch[SCENE_MAX_PARAMS];
-        mue[i] = material_params(&s->mats, &s->ps, mat[i], i, pscratch)[k];
-    }
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        if (st->open[i] != 0 || !(s->mats.slot[mat[i]].core[CP_BUBBLE] > 0)) continue;
-        double wsum = 0, msum = 0;
-        for (int q = off[i]; q < off[i + 1]; q++) {
-            const int j = nb[q];
-            if (isnan(mue[j])) continue;
-            double d[3];
-            sph_disp(&st->cells, c->x + 3 * i, c->x + 3 * j, d);
-            const double r = sqrt(d[0] * d[0] + d[1] * d[1] + (dim == 3 ? d[2] * d[2] : 0));
-            const double w = sph_w(dim, r, 0.5 * (st->h[i] + st->h[j]));
-            wsum += w, msum += w * mue[j];
-        }
-        if (wsum > 0 && msum >= o->open_cell_mu_e * wsum) st->open[i] = 1;
-    }
 }
 
 /* Pressure with sph.gas_law: the dough's Tait (eq. 3.17) against its rest
@@ -327,7 +265,12 @@ static void open_cells(hearth_scene *s, const sph_cols *c) {
  * "Both switches on"). So was an open cell from the crumb's set on (sph.open_cell_T,
  * McGee 2004's foam to sponge): opened where the set curve reaches its set
  * value the roll still lifted its base, opened earlier it rose less than 1.3x
- * (docs/validation.md "The roll's cells open at the set").
+ * (docs/validation.md "The roll's cells open at the set"). And so was a cell
+ * that opens as the dough round it sets (sph.open_cell_mu_e, commit 2d8dd4b:
+ * its neighbours' kernel-weighted mean mu_e at the set value): the tray side's
+ * and crust's cells vented first, yet the core's closed cells pushed the set
+ * shell and its base tilted 2.44 mm (docs/validation.md "The roll's cells open
+ * as their walls set").
  * With sph.gas_pressure = P_a the bubble's stiffness is its gas's own,
  * P_a - P_v(T) (sph_gas_modulus), at any dough stiffness: p = (P_a -
  * P_v)(rho / rho_b - 1) is the bubble's ideal gas exactly (eq. 2.42-2.43,
@@ -339,7 +282,6 @@ void sph_pressure_gas_law(hearth_scene *s) {
     const int n = c.n, *mat = c.mat;
     const double *T = c.T, *F = c.F, *V0 = pcold(&s->ps, PC_VOL0);
     if (o->renormalised_density) renormalise(s, &c, st->vr); /* vr: free once the sum stands (sort_and_list) */
-    if (o->open_cell_mu_e > 0) open_cells(s, &c);
     const double w = st->water_per_gas = sph_dough_water_share(s);
     for (int i = 0; i < n; i++) {
         const double rho0 = st->rho0[i], bub = s->mats.slot[mat[i]].core[CP_BUBBLE];
@@ -351,8 +293,7 @@ void sph_pressure_gas_law(hearth_scene *s) {
         const double rt = o->own_squeeze ? own_squeeze(F + 9 * i, c.m[i], V0[i], rho0, rho) : rho;
         const double tait = st->B[i] * (pow(rt / rho0, o->gamma) - 1); /* eq. 3.17 */
         const double Bg = bub > 0 && T ? sph_gas_modulus(o, st->B[i], T[i]) : st->B[i];
-        double gas = Bg * (rho / rr - 1);
-        if (bub > 0 && o->open_cell_mu_e > 0 && st->open[i] != 0) gas = fmin(gas, 0); /* open_cells */
+        const double gas = Bg * (rho / rr - 1);
         st->prs[i] = bub > 0 ? fmax(gas, tait) : tait;
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
     }

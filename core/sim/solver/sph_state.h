@@ -39,7 +39,6 @@ struct sph_state {
     double *rho0, *B, *mu, *c0, *xsph;
     double *vc;     /* the viscous Laplacian's renormalisation (viscous_moments), per particle this step */
     double *vr;     /* rest volume (rest_volume) per particle this step, for sph.gas_law's density sum */
-    double *open;   /* sph.open_cell_mu_e: 1 once a bubble's cell has opened (sph_gas.c open_cells), kept across steps */
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
     double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
     double amax;    /* largest |a| of the last step, for the force limit */

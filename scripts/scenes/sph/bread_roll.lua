@@ -50,7 +50,8 @@
 -- the roll's weight only over a contact W / p wide. (Two switches tried
 -- for the base, a cap on the dough beside bubbles and vented open cells, are
 -- deleted: "Both switches on"; so is a bubble that opens as its crumb sets:
--- "The roll's cells open at the set".)
+-- "The roll's cells open at the set", and one that opens as the dough round
+-- it sets: "The roll's cells open as their walls set".)
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature), particles_NNNN.csv (positions, for
 -- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
@@ -89,13 +90,13 @@ local P = h.params { bubbles = "even", dx = 0.002, oven = 180, visc_scale = 100,
   gas_law = sph.gas_law, vapour = sph.bubble_vapour, vmax = sph.bubble_vmax or 4,
   continuity = sph.continuity_density or false, renormalised = sph.renormalised_density or false,
   gas_pressure = sph.gas_pressure or 0, dough_water = sph.dough_water or 0, own_squeeze = sph.own_squeeze or false,
-  open_cell_mu_e = sph.open_cell_mu_e or 0, mu_e_curve = "sourced" }
+  mu_e_curve = "sourced" }
 
 sph.heat_ext, sph.heat_int, sph.av_beta = P.heat_ext, 0.2, 1
 sph.gas_law, sph.bubble_vapour, sph.bubble_vmax = P.gas_law, P.vapour, P.vmax
 sph.artificial_stress, sph.tension = P.artificial_stress, P.tension
 sph.continuity_density, sph.renormalised_density, sph.gas_pressure = P.continuity, P.renormalised, P.gas_pressure
-sph.dough_water, sph.own_squeeze, sph.open_cell_mu_e = P.dough_water, P.own_squeeze, P.open_cell_mu_e
+sph.dough_water, sph.own_squeeze = P.dough_water, P.own_squeeze
 sph.xsph0 = P.xsph0 -- eq. 4.4 at the raw end (Table 4.1: 0.05)
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph", sph = sph,
   oven = { temperature = P.oven, beta = 0 }, browning = true, browning_scale = 400 }
