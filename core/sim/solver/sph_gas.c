@@ -265,7 +265,12 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
  * "Both switches on"). So was an open cell from the crumb's set on (sph.open_cell_T,
  * McGee 2004's foam to sponge): opened where the set curve reaches its set
  * value the roll still lifted its base, opened earlier it rose less than 1.3x
- * (docs/validation.md "The roll's cells open at the set").
+ * (docs/validation.md "The roll's cells open at the set"). And so was a cell
+ * that opens as the dough round it sets (sph.open_cell_mu_e, commit 2d8dd4b:
+ * its neighbours' kernel-weighted mean mu_e at the set value): the tray side's
+ * and crust's cells vented first, yet the core's closed cells pushed the set
+ * shell and its base tilted 2.44 mm (docs/validation.md "The roll's cells open
+ * as their walls set").
  * With sph.gas_pressure = P_a the bubble's stiffness is its gas's own,
  * P_a - P_v(T) (sph_gas_modulus), at any dough stiffness: p = (P_a -
  * P_v)(rho / rho_b - 1) is the bubble's ideal gas exactly (eq. 2.42-2.43,

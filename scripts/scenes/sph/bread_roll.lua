@@ -50,7 +50,8 @@
 -- the roll's weight only over a contact W / p wide. (Two switches tried
 -- for the base, a cap on the dough beside bubbles and vented open cells, are
 -- deleted: "Both switches on"; so is a bubble that opens as its crumb sets:
--- "The roll's cells open at the set".)
+-- "The roll's cells open at the set", and one that opens as the dough round
+-- it sets: "The roll's cells open as their walls set".)
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature), particles_NNNN.csv (positions, for
 -- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
