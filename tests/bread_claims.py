@@ -97,8 +97,9 @@ def cracks(path, dx):
           "point (helper cracktrack, 'The crown's crack: tracked, with two fields'). Nor by a finer default: the crack "
           "converges at no dx from 5 to 2 mm (scripts/validation/bread_grid.sh): the crown cracks at 4 and 3 mm "
           "(8.05, 14.31 mm deep) and not at 4.5, 3.5 or 2.5 mm (0.26, 0.15, 2.29 mm), where nothing or a shoulder "
-          "cracks, and at 2 mm, or 4 mm with 9 particles a cell, a shoulder does; the top particle's X/X0 falls "
-          "with dx (0.231 at 5 mm, 0.100 at 2 mm: ~0.047 per mm of dx) while the profile below it converges, so "
+          "cracks, and at 2 mm, or 4 mm with 9 particles a cell, a shoulder does; at 4 mm with bread.lua's three "
+          "loaves in one run (one time step) the crown does not crack (0.16 mm); the top particle's X/X0 falls "
+          "with dx (0.231 at 5 mm, 0.100 at 2 mm: 0.045-0.054 per mm of dx) while the profile below it converges, so "
           "the skin the rise stretches is as brittle as its cell is thin, and where it breaks first is the grid's "
           "(cracked particles 0, 1, 14, 14, 34, 75, 131 from 5 to 2 mm; docs/validation.md, 'bread.lua over dx')")
     return 77
