@@ -15,6 +15,7 @@ check that stopped reading a column or a limit would fail here.
 Exit 0 pass, 1 fail (prints which file gave what)."""
 import contextlib, io, os, sys, tempfile
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree the tests run from
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bread_claims  # noqa: E402
 
