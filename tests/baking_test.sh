@@ -261,15 +261,8 @@ baking_marshmallow_paper_expansion_completes)
 # height grows and so does the slit's gap.
 claim_bread_slit_widens)
     run bread --set only=2 --set dx=0.006 --set until_t=2.5 --set frames=10 >/dev/null
-    python3 - hearth-out/bread/bread.csv <<'PY' || fail "the slit does not widen while the loaf rises (numbers above)"
-import csv, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
-hs = [float(r["height_one_slit_m"]) for r in rows]
-gs = [float(r["gap_one_slit_m"]) for r in rows]
-i = min(range(len(hs)), key=lambda k: hs[k])
-print(f"lowest height {hs[i]:.5f} m at t = {rows[i]['t']} s with gap {gs[i]:.5f} m; end: height {hs[-1]:.5f} m, gap {gs[-1]:.5f} m")
-sys.exit(0 if i < len(hs) - 1 and hs[-1] > hs[i] and gs[-1] > gs[i] else 1)
-PY
+    python3 "$root/tests/bread_claims.py" slit_widens hearth-out/bread/bread.csv ||
+        fail "the slit does not widen while the loaf rises (numbers above)"
     ;;
 # #18, Ding §7.4 ("breads expand in size and the slits open up"): a loaf of
 # bread.lua rises: its area (2D: V0 J summed over its particles) grows by at
@@ -285,22 +278,7 @@ claim_bread_loaf_rises | claim_bread_loaf_rises_fine | claim_bread_scored_loaf_r
     case $case_name in *_fine) dx=0.004 ;; esac
     case $case_name in *scored*) only=2 col=one_slit ;; esac
     run bread --set only=$only --set dx=$dx --set frames=5 >/dev/null
-    python3 - hearth-out/bread/bread.csv $dx $col <<'PY' || fail "the loaf does not rise (numbers above)"
-import csv, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
-dx, col = float(sys.argv[2]), sys.argv[3]
-a = [float(r["area_" + col]) for r in rows]
-h = [float(r["height_" + col + "_m"]) for r in rows]
-peak, end = max(a) / a[0] - 1, a[-1] / a[0] - 1
-print(f"{col} loaf, dx {dx * 1e3:.1f} mm: area {a[0]:.5g} -> peak {max(a):.5g} m^2 ({peak:+.1%}, need >= +15%), "
-      f"end {a[-1]:.5g} ({end:+.1%}, need >= +10%); height {h[0] * 1e3:.1f} -> {h[-1] * 1e3:.1f} mm (need >= raw)")
-ok = peak >= 0.15 and end >= 0.10 and h[-1] >= h[0]
-if col == "one_slit":
-    g = [float(r["gap_one_slit_m"]) for r in rows]
-    print(f"slit gap {g[0] * 1e3:.2f} -> {g[-1] * 1e3:.2f} mm (need > {dx * 1e3:.1f} mm and wider than at the start)")
-    ok = ok and g[-1] > dx and g[-1] > g[0]
-sys.exit(0 if ok else 1)
-PY
+    python3 "$root/tests/bread_claims.py" rises hearth-out/bread/bread.csv $dx $col || fail "the loaf does not rise (numbers above)"
     ;;
 # #18, "the surface dries faster than the crumb": bread.lua's plain loaf, whose
 # dough carries water (lua/hearth/dough.lua, WATER), at the scene's dx 5 mm and
@@ -313,71 +291,25 @@ claim_bread_surface_dries_first | claim_bread_surface_dries_first_fine)
     dx=0.005
     [ "$case_name" = claim_bread_surface_dries_first_fine ] && dx=0.004
     run bread --set only=1 --set dx=$dx --set frames=5 >/dev/null
-    python3 - hearth-out/bread/bread.csv $dx <<'PY' || fail "the loaf's surface does not dry before its crumb (numbers above)"
-import csv, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
-dx = float(sys.argv[2])
-for r in rows:
-    print(f"dx {dx * 1e3:.0f} mm, t = {r['t']} s: X/X0 top {float(r['moisture_top']):.4f}, centre {float(r['moisture_centre']):.4f}")
-top = [float(r["moisture_top"]) for r in rows]
-ctr = [float(r["moisture_centre"]) for r in rows]
-ok = len(rows) >= 4 and all(t < c for t, c in zip(top[1:], ctr[1:]))
-ok = ok and 1 - top[-1] > 5 * (1 - ctr[-1]) and top[-1] < 0.5 and ctr[-1] >= 0.85
-sys.exit(0 if ok else 1)
-PY
+    python3 "$root/tests/bread_claims.py" dries hearth-out/bread/bread.csv $dx ||
+        fail "the loaf's surface does not dry before its crumb (numbers above)"
     ;;
 # #18, Ding Fig. 16 ("the bread without an initial slit also cracked on the top
 # surface"): at the end of the bake the plain loaf's top has a crack: a notch
 # in the top of its intact material (bread.lua's crack_depth_m, crack_width_m:
 # particles with damage 1 are the crack, not its surface) at least two cells
 # wide and a tenth of the loaf's height deep. At the scene's dx (5 mm) and one
-# finer (4 mm, release_only).
+# finer (4 mm, release_only). The 4 mm pass is one of two rungs, 4 and 3 mm,
+# where the crown cracks; at 4.5, 3.5 and 2.5 mm it does not, and at 2 mm (or 4
+# mm with 9 particles a cell) a shoulder cracks instead, and at 4 mm with the
+# other two loaves in the run (sharing its time step) the crown does not crack
+# (0.16 mm): the crack is not converged in dx (scripts/validation/bread_grid.sh,
+# docs/validation.md "bread.lua over dx"), so the default stays 5 mm.
 claim_bread_unscored_cracks | claim_bread_unscored_cracks_fine)
     dx=0.005
     [ "$case_name" = claim_bread_unscored_cracks_fine ] && dx=0.004
     run bread --set only=1 --set dx=$dx --set frames=5 >/dev/null
-    python3 - hearth-out/bread/bread.csv $dx <<'PY'
-import csv, sys
-r = list(csv.DictReader(open(sys.argv[1])))[-1]
-dx = float(sys.argv[2])
-d, w, h = float(r["crack_depth_m"]), float(r["crack_width_m"]), float(r["height_plain_m"])
-print(f"dx {dx * 1e3:.0f} mm, t = {r['t']} s: deepest notch in the top of the intact crust {d * 1e3:.2f} mm deep "
-      f"(need >= {0.1 * h * 1e3:.2f} mm), {w * 1e3:.1f} mm wide (need >= {2 * dx * 1e3:.0f} mm); "
-      f"{r['cracked']} cracked particles, top X/X0 {float(r['moisture_top']):.3f}")
-if d >= 0.1 * h and w >= 2 * dx:
-    sys.exit(0)
-print("EXPECTED FAILURE: no crack starts in the crust at this dx. Under the stretch rule (cam_clay_dough's "
-      "fracture_stretch = 1) the rise stretches the top (top_arc_m +12% between 0.5 and 1.3 s) while its one cell "
-      "of crust is still wet: the top particle stands for the top cell, whose water leaves through the next cell "
-      "at a rate ~D/dx^2, so at 5 mm its X is 0.28-0.31 kg/kg during the rise (stretch to fracture 0.13-0.21) "
-      "against 0.22-0.25 (0.05-0.08) at 4 mm; the top's damage peaks at 0.29 here and 0.80 at 4 mm, where the "
-      "crown cracks and the set crumb (fracture_strain_set 0.15) carries it 8 mm down. Not the heat: Table 2's "
-      "heat is isothermal (Biot 0.04), but a real Biot number (kappa x0.0234, Bi 1.7) keeps 5 mm uncracked and "
-      "loses the 4 mm crack, and a real 200 degC oven sets the crust first but the set shell holds the gas (the "
-      "loaf no longer rises) and its base cracks. Not particles per cell: ppc 9 and 16 at 5 mm crack 1 and 7 "
-      "particles, no notch (docs/validation.md, 'The unscored crack at 5 mm: heat or resolution?', "
-      "scripts/validation/crack_heat.lua). Not the crack band (it acts only past the fracture strain). Not fixed by "
-      "reading the brittleness at the face's water (the evaporation's surface saturation): the calibrated "
-      "evaporation dries every face at once and the whole skin cracked (580 particles by 0.5 s; 4 mm stopped by "
-      "the guard), so it was taken out (docs/validation.md, 'The crack band, and the face's water'). Nor by reading "
-      "the skin's water below its cell on the drying profile the evaporation assumes (s^2 linear from the face to the "
-      "particle's sample, 0.57 dx deep) at a fixed crust depth of 1.75-2.5 mm: that dries the 5 mm top's reading by "
-      "sqrt(z / d) = 0.78-0.94; brittle enough, the 5 mm skin cracks at its flanks and base (up to 9 particles, notch "
-      "<= 1.35 mm) and the crown stays whole, and the 4 mm crown crack is lost (0.4-2.0 mm deep): as with a uniform "
-      "dry shift, the crown is not where a brittle 5 mm skin cracks first; the 5 mm skin stretches as much as the 4 "
-      "mm one but most at a shoulder (1.22 against the crown's 1.13 at 1.8 s; 4 mm: the crown 1.15, then it "
-      "cracks) (docs/validation.md, 'The crust's water "
-      "below the cell (#18, loaf5)'; taken out). Nor by the muffin's heat-set (cam_clay_dough's fracture_unset: the "
-      "water's brittleness in proportion to the set, 35-70 degC for the bread): Table 2's bread heats evenly, so its "
-      "crust sets with its crumb at the rise's end; 5 mm stays at 0.25 mm and the 4 mm crack is lost (0.38 mm), so "
-      "the bread preset does not take it; with a real Biot number as well (crack_heat.lua conductivity 0.0234) 5 mm "
-      "reads 0.29 mm and 4 mm 3.94 mm (lua/hearth/dough.lua, HEAT_SET). Nor by a set crumb brittle in proportion "
-      "to its set (crack_heat.lua set_prop: 5 mm 0.25 mm, 0 cracked; 4 mm 9.92 mm; helper crownband, 'The crown's "
-      "crack'). Nor by crack tracking with two velocity fields: the top's damage never reaches the peak 0.5 beside "
-      "which the exclusion acts (at most 0.15 at crack_heat.lua's frames), and the fields split only at a cracked "
-      "point (helper cracktrack, 'The crown's crack: tracked, with two fields')")
-sys.exit(77)
-PY
+    python3 "$root/tests/bread_claims.py" cracks hearth-out/bread/bread.csv $dx
     exit $?
     ;;
 # scripts/validation/crack_heat.lua (docs/validation.md, "The unscored crack at
