@@ -52,7 +52,9 @@
 local h = require "hearth"
 local P = h.params { dim = 2, food = "muffin", raw = false, dx = 0, bake = 0, speed = 0.05, pull = 0.4, frames = 20,
   ppc = 0, two_field = false }
-if P.dim ~= 2 then error(("--set dim=%d: tear_open.lua measures its tear over the plane's columns; only dim=2"):format(P.dim)) end
+if P.dim ~= 2 then
+  error(("--set dim=%d: tear_open.lua measures its tear over the plane's columns; only dim=2"):format(P.dim))
+end
 if P.food ~= "muffin" and P.food ~= "bread" then
   error(("--set food=%s: expected muffin or bread"):format(P.food))
 end
@@ -61,7 +63,8 @@ local dx = P.dx > 0 and P.dx or muffin and 0.004 or 0.005 -- the food's own scen
 local bake = P.raw and 0 or P.bake > 0 and P.bake or muffin and 3 or 2.5
 local oven = h.library.paper_oven[P.food]
 print(("tear_open.lua: h.library.paper.%s, animation units (Ding Table 2): heat runs in seconds, not minutes; water %g "
-  .. "times fast; %s"):format(P.food, oven.water_time_scale, P.raw and "raw (not baked)" or ("baked %g s"):format(bake)))
+  .. "times fast; %s"):format(P.food, oven.water_time_scale,
+  P.raw and "raw (not baked)" or ("baked %g s"):format(bake)))
 
 -- the food: muffins.lua's cup (its inner floor, radius, wall height, wall; 22 mm of batter), bread.lua's loaf
 local W, H = muffin and 0.14 or 0.24, muffin and 0.1 or 0.14
@@ -89,7 +92,10 @@ local function key(x, y) return math.floor(x / dx) * 1048576 + math.floor(y / dx
 local function occupancy(p, intact)
   local occ = {}
   for k = 1, p.n do
-    if not intact or p.damage[k] < 1 then occ[key(p.x[3 * k - 2], p.x[3 * k - 1])] = (occ[key(p.x[3 * k - 2], p.x[3 * k - 1])] or 0) + 1 end
+    if not intact or p.damage[k] < 1 then
+      local c = key(p.x[3 * k - 2], p.x[3 * k - 1])
+      occ[c] = (occ[c] or 0) + 1
+    end
   end
   return occ
 end
@@ -172,7 +178,8 @@ local function take_out(sc)
 end
 s:at(bake, take_out)
 
-local rows = { "t,separation_m,neck_m,pieces,face_particles,face_peak_min_degC,face_peak_max_degC,cracked,force_mid_N_per_m" }
+local rows = { "t,separation_m,neck_m,pieces,face_particles,face_peak_min_degC,face_peak_max_degC,cracked,"
+  .. "force_mid_N_per_m" }
 local every = P.pull / P.frames
 local frame = 0
 local parted -- the separation at the first frame torn through (neck 0, two pieces or more)
