@@ -651,6 +651,95 @@ sys.exit(1)
 PY
     exit $?
     ;;
+# #18, Ding Figs. 2 and 16 (helper tearopen): a muffin and a loaf torn open after baking. tear_open.lua bakes one
+# muffin (3 s, muffins.lua's whole bake) or one plain loaf (2.5 s, bread.lua's), takes it out (oven off, cup or tray
+# away) and pulls its outer thirds straight apart at 0.05 m/s each for 0.4 s (40 mm). Torn through: the intact
+# material (damage below 1) in two pieces or more (its `pieces`), by the end of the pull. The torn interior is
+# cooked: every particle the pull exposed (face_particles) reached the food's set temperature at some frame (the
+# lowest face_peak_min_degC over the pull, a lower bound since frames sample the peak): the muffin's 55 degC, where
+# its batter leaves its melted value and starts to set (lua/hearth/dough.lua MUFFIN_SET, wheat starch's
+# gelatinisation onset), the bread's 70 degC, Fig. 8's theta_4, where its tau_y reaches the set x20 and its crumb's
+# stretch to fracture 0.15 (dough.lua THETA, SET). At the scene's dx and one finer (muffin 4 / 3 mm, bread 5 / 4).
+claim_muffin_tears_open | claim_muffin_tears_open_fine | claim_bread_tears_open | claim_bread_tears_open_fine | \
+claim_muffin_torn_interior_cooked | claim_muffin_torn_interior_cooked_fine | claim_bread_torn_interior_cooked | \
+claim_bread_torn_interior_cooked_fine)
+    food=muffin dx=0.004 set=55
+    case $case_name in *bread*) food=bread dx=0.005 set=70 ;; esac
+    case $case_name in *muffin*_fine) dx=0.003 ;; *bread*_fine) dx=0.004 ;; esac
+    what=tears
+    case $case_name in *cooked*) what=cooked ;; esac
+    run tear_open --set food=$food --set dx=$dx >/dev/null
+    python3 - hearth-out/tear_open/tear_open.csv $food $dx $set $what <<'PY'
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+food, dx, theta, what = sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), sys.argv[5]
+pull = [r for r in rows if float(r["separation_m"]) > 0]
+torn = [r for r in pull if int(r["pieces"]) >= 2]
+first = f"{float(torn[0]['separation_m']) * 1e3:.1f} mm" if torn else "never"
+end = rows[-1]
+print(f"baked {food}, dx {dx * 1e3:.0f} mm: torn through (two pieces) first at {first} of separation; at the end "
+      f"({float(end['separation_m']) * 1e3:.0f} mm) {end['pieces']} pieces, neck {float(end['neck_m']) * 1e3:.1f} mm, "
+      f"{end['cracked']} cracked; peak force through the middle {max(float(r['force_mid_N_per_m']) for r in pull):.1f} N/m")
+if what == "tears":
+    sys.exit(0 if int(end["pieces"]) >= 2 else 1)
+faces = [r for r in pull if int(r["face_particles"]) > 0]
+low = min((float(r["face_peak_min_degC"]) for r in faces), default=math.nan)
+print(f"the torn faces: up to {max((int(r['face_particles']) for r in faces), default=0)} particles a frame, the "
+      f"coolest's peak {low:.2f} degC (need >= {theta:g} degC, the {food}'s set)")
+sys.exit(0 if torn and faces and low >= theta else 1)
+PY
+    [ $? -eq 0 ] || fail "the baked $food does not tear open cooked ($what; numbers above)"
+    ;;
+# #18 (helper tearopen): the baker's contrast, raw dough is extensible and baked crumb tears. The same pull of the
+# same shape unbaked (tear_open.lua --set raw=true: into the grips at its own temperature, at t = 0) parts only at
+# twice the separation the baked one parts at, or not within the pull (40 mm). Twice, from the two laws: the set
+# crumb cracks where its stretch reaches 0.15 (dough.lua SET), so across the free third (27 mm of loaf, 17 of
+# muffin) it parts within a few mm; the raw dough never cracks (its stretch to fracture is 100) and parts only by
+# flowing thin (Cam-clay's porous yield in tension, pull_twist.lua). The bread is the baker's dough; the muffin's
+# raw batter (20 Pa) cannot carry its own free third (rho g L / 2 ~ 40 Pa on each face) and flows down as it is
+# pulled, so _batter_ is the same contrast in a batter.
+claim_raw_dough_stretches_before_tearing | claim_raw_dough_stretches_before_tearing_fine | \
+claim_raw_batter_stretches_before_tearing | claim_raw_batter_stretches_before_tearing_fine)
+    food=bread dx=0.005
+    case $case_name in *batter*) food=muffin dx=0.004 ;; esac
+    case $case_name in *batter*_fine) dx=0.003 ;; *dough*_fine) dx=0.004 ;; esac
+    run tear_open --set food=$food --set dx=$dx --out baked >/dev/null
+    run tear_open --set food=$food --set dx=$dx --set raw=true --out raw >/dev/null
+    python3 - baked/tear_open.csv raw/tear_open.csv $food $dx <<'PY'
+import csv, sys
+def parted(path):
+    rows = [r for r in csv.DictReader(open(path)) if float(r["separation_m"]) > 0]
+    torn = [float(r["separation_m"]) for r in rows if int(r["pieces"]) >= 2]
+    return (torn[0] if torn else None), float(rows[-1]["separation_m"]), max(float(r["force_mid_N_per_m"]) for r in rows)
+(b, _, fb), (r, rmax, fr) = parted(sys.argv[1]), parted(sys.argv[2])
+food, dx = sys.argv[3], float(sys.argv[4])
+text = lambda v: "never" if v is None else f"{v * 1e3:.1f} mm"
+print(f"{food}, dx {dx * 1e3:.0f} mm: the baked one parts at {text(b)} of separation (peak force {fb:.1f} N/m), the raw "
+      f"one at {text(r)} (peak force {fr:.1f} N/m; need >= twice the baked, or not within {rmax * 1e3:.0f} mm)")
+sys.exit(0 if b is not None and (r is None or r >= 2 * b) else 1)
+PY
+    [ $? -eq 0 ] || fail "the raw $food does not stretch further than the baked one before it parts (numbers above)"
+    ;;
+# tear_open.lua as a user runs it, shortly: its CSV's cells are numbers (the faces' columns nan before the pull),
+# its frames written, and a scene it cannot build (dim=3, an unknown food) refused with the parameter and its range.
+baking_scene_tear_open)
+    run tear_open --set raw=true --set pull=0.1 --set frames=5 >/dev/null
+    n=$(find hearth-out/tear_open -name '*.png' | wc -l)
+    [ "$n" -ge 4 ] || fail "tear_open wrote $n PNG frames, expected at least 4"
+    python3 - hearth-out/tear_open/tear_open.csv <<'PY' || fail "tear_open.csv has non-numeric cells or too few rows"
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 6, len(rows)
+for r in rows:
+    for k, c in r.items():
+        v = float(c)
+        assert math.isfinite(v) or k.startswith("face_peak"), (k, c)
+PY
+    for bad in "dim=3:only dim=2" "food=cake:expected muffin or bread"; do
+        "$hearth" run "$scenes/tear_open.lua" --quiet --set "${bad%%:*}" >out.txt 2>err.txt && fail "--set ${bad%%:*} ran"
+        grep -q "${bad#*:}" err.txt || fail "--set ${bad%%:*}: the message does not say '${bad#*:}': $(cat err.txt)"
+    done
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo ok

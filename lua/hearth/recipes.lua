@@ -11,6 +11,34 @@ function R.tray(s, y, opts)
     friction = opts.friction or 0.4, temperature = opts.temperature, beta = opts.beta }
 end
 
+--- A muffin cup and its batter (scripts/scenes/baking/muffins.lua, Ding Fig. 2; tear_open.lua bakes one
+--- the same way): a heated cup open at the top (h.cup: its base the inside of the floor, the floor below it;
+--- in 2D its section is a U) and the batter filling it to the walls from the floor up.
+--- o: dim, x (the cup's axis), base (the inner floor's y), radius, height (the wall above the floor), wall (wall and
+--- floor thickness), fill (the batter's depth), zc (3D: the axis' z), material, oven (a preset's oven: pan
+--- temperature and beta, dough temperature, saturation), mode (the cup's contact), ppc. Returns the cup's collider.
+function R.muffin_cup(s, o)
+  local d3 = o.dim == 3
+  local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
+  local cup = s:collider { shape = core.cup(v(o.x, o.base, o.zc), { 0, 1, 0 }, o.radius, o.height, o.wall, o.wall),
+    mode = o.mode, friction = 0.3, temperature = o.oven.pan_temperature, beta = o.oven.pan_beta }
+  local inner = d3 and core.cylinder(v(o.x, o.base + o.fill / 2, o.zc), { 0, 1, 0 }, o.radius, o.fill / 2)
+    or core.box({ o.x - o.radius, o.base }, { o.x + o.radius, o.base + o.fill })
+  s:add { shape = inner, material = o.material, temperature = o.oven.dough_temperature, saturation = o.oven.saturation,
+    ppc = o.ppc }
+  return cup
+end
+
+--- A loaf's shape (scripts/scenes/baking/bread.lua, Ding Fig. 15; tear_open.lua bakes one the same way): a box of
+--- width w standing `body` high on y = tray with a round top of radius w/2 (2D: h.shapes.loaf), in 3D extruded
+--- along z over zc +- zw/2.
+function R.loaf_shape(dim, x, tray, w, body, zc, zw)
+  if dim ~= 3 then return require("hearth.shapes").loaf({ x, tray }, w, body) end
+  return core.box({ x - w / 2, tray, zc - zw / 2 }, { x + w / 2, tray + body, zc + zw / 2 }) +
+    core.cylinder({ x, tray + body, zc }, { 0, 0, 1 }, w / 2, zw / 2) -
+    core.box({ x - w, tray - w, 0 }, { x + w, tray, 2 * zc })
+end
+
 --- Centres of an n x m arrangement filling lo..hi (row-major, x fastest):
 --- for the 3 x 3 grids of samples the papers show.
 function R.grid(n, m, lo, hi)

@@ -49,14 +49,7 @@ local loaves = {
 local top0 = TRAY + BODY + WIDTH / 2
 for i, L in ipairs(loaves) do
   if P.only > 0 and i ~= P.only then goto next end -- --set only=2: bake just that loaf (the tests do)
-  local shape
-  if d3 then
-    shape = h.box(v(L.x - WIDTH / 2, TRAY, zc - ZW / 2), v(L.x + WIDTH / 2, TRAY + BODY, zc + ZW / 2)) +
-      h.cylinder(v(L.x, TRAY + BODY, zc), { 0, 0, 1 }, WIDTH / 2, ZW / 2) -
-      h.box(v(L.x - WIDTH, TRAY - WIDTH, 0), v(L.x + WIDTH, TRAY, 0.12))
-  else
-    shape = h.shapes.loaf({ L.x, TRAY }, WIDTH, BODY)
-  end
+  local shape = h.recipes.loaf_shape(P.dim, L.x, TRAY, WIDTH, BODY, zc, ZW) -- shared with tear_open.lua
   for _, off in ipairs(L.slits) do
     shape = shape - h.box(v(L.x + off - P.slit_width / 2, top0 - P.slit_depth, 0), v(L.x + off + P.slit_width / 2,
       top0 + 0.01, 0.12))

@@ -59,15 +59,9 @@ for i = 1, P.cups do
   -- cup centres on grid nodes: both walls then sit alike on the grid and the
   -- batter's top is symmetric (off-node, one side's top climbed its wall)
   xs[i] = math.floor((i - 0.5) * SPACING / dx + 0.5) * dx
-  -- the cup: a heated container open at the top, its inner floor at BASE (h.cup's
-  -- base is the inside of the floor; the floor is below it); in 2D its section is a U
-  s:collider { shape = h.cup(v(xs[i], BASE, zc), { 0, 1, 0 }, R, CUP_H, WALL, WALL), mode = P.wall_mode,
-    friction = 0.3, temperature = oven.pan_temperature, beta = oven.pan_beta }
-  -- the batter fills the cup to the walls from the floor up
-  local inner = d3 and h.cylinder(v(xs[i], BASE + P.fill / 2, zc), { 0, 1, 0 }, R, P.fill / 2)
-    or h.box({ xs[i] - R, BASE }, { xs[i] + R, BASE + P.fill })
-  s:add { shape = inner, material = batter, temperature = oven.dough_temperature, saturation = oven.saturation,
-    ppc = P.ppc > 0 and P.ppc or d3 and 8 or 4 }
+  -- the cup, its inner floor at BASE, and the batter filling it (h.recipes.muffin_cup, shared with tear_open.lua)
+  h.recipes.muffin_cup(s, { dim = P.dim, x = xs[i], base = BASE, radius = R, height = CUP_H, wall = WALL, fill = P.fill,
+    zc = zc, material = batter, oven = oven, mode = P.wall_mode, ppc = P.ppc > 0 and P.ppc or d3 and 8 or 4 })
 end
 local RIM = BASE + CUP_H
 

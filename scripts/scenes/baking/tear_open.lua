@@ -1,0 +1,205 @@
+-- Torn open after baking (Ding et al. 2019, Fig. 2 right: "a muffin torn open to reveal a fully cooked
+-- interior"; Fig. 16: "tearing of the bread after baking"): one muffin (muffins.lua's cup and preset) or one
+-- loaf (bread.lua's plain loaf and preset) is baked as those scenes bake it, taken out (the oven off, its cup or
+-- tray taken away) and held by its outer quarters, which are pulled straight apart until it parts.
+--   hearth run scripts/scenes/baking/tear_open.lua [--set food=muffin|bread] [--set raw=true] [--set dx=...]
+--   [--set bake=...] (s; 0 = the food's own: muffin 3, muffins.lua's whole bake; bread 2.5, bread.lua's)
+--   [--set speed=0.05] (m/s, each grip) [--set pull=0.4] (s) [--set frames=20] (frames over the pull)
+--   [--set two_field=true] (the scene's two velocity fields where a crack runs: the crack's sides part cleanly;
+--   off by default, as in muffins.lua and bread.lua, whose bakes these are)
+-- raw = true pulls the same shape unbaked: the dough as it goes into the oven, at its own temperature, gripped
+-- and pulled at t = 0 alike.
+-- The pull: both grips move straight apart (x), not up or about a hinge. A hand tearing a muffin also bends the
+-- halves open from the top, but a hinge stretches the top most and the base least, so what parts first depends
+-- on the bending arm as much as on the crumb; a straight pull loads the whole section alike, the way pull_twist.lua
+-- (Fig. 6) loads its strips, so the baked and the raw dough are compared at the same stretch.
+-- The grips (colliders of mode "grip": they carry the particles inside them) hold everything outside the middle
+-- half of the food's raw width (x < xc - w/4 and x > xc + w/4, the full height): the free span between them is
+-- 25 mm (muffin, w = 50 mm) or 40 mm (loaf, w = 80 mm).
+-- Writes, under hearth-out/tear_open/: heat_%04d.png (temperature) and damage_%04d.png at the end of the bake
+-- and every fifth frame of the pull, browning.png at the end, and tear_open.csv, per frame:
+--   separation_m: how far the grips have moved apart (0 through the bake);
+--   neck_m: the thinnest section between the grips: over one-cell columns from a cell inside each grip's face,
+--     the height of the one-cell rows that hold an intact particle (damage below 1: a fully cracked particle
+--     carries no tension, plugins/cam_clay_dough.c); 0 = a column with no intact particle, torn through;
+--   pieces: the pieces of intact material: one-cell bins holding an intact particle joined to their eight
+--     neighbours, counting the components that hold at least 5% of the intact particles (smaller ones are crumbs);
+--   face_particles, face_peak_min_degC, face_peak_max_degC: the particles on the faces the pull opened (in the
+--     free span, with an empty bin among their eight neighbours now, and none at the start of the pull: they were
+--     inside), and the lowest and highest peak temperature they reached (each particle's highest temperature over
+--     the frames, a lower bound on its true peak, since the frames sample it);
+--   cracked: particles with damage 1;
+--   force_mid_N_per_m: the pull's tension through the middle: sigma_xx V summed over the particles in the
+--     one-cell column at the food's centre, over dx (N per metre of depth, 2D).
+-- 2D only: the measures are over columns and bins of the plane.
+-- Measured (frames every 2 mm of separation; docs/validation.md "Torn open after baking"):
+--   baked muffin (3 s), dx 4 / 3 mm: two pieces by 4 / 4 mm of separation (neck 0 by 6 / 6 mm; 2 / 9 particles
+--     cracked at the end of the bake, 68 / 130 at 40 mm); the faces' particles (up to 26 / 50 a frame) all reached
+--     81.2 / 80.2 degC and more (the batter sets from 55 degC); raw (raw = true): two pieces at 32 mm / not within 40;
+--   baked loaf (2.5 s), dx 5 / 4 mm: two pieces by 8 / 8 mm (neck 0 by 14 / 10 mm), 109 / 247 cracked at 40 mm; its
+--     faces all reached 81.2 degC (the crumb sets at 70; the loaf heats evenly, Biot 0.04, its crumb 81.2-81.7
+--     degC); tension through the middle at most 57 / 51 N/m; raw: two pieces at 24 / 26 mm, at most 39 / 37 N/m.
+--   The baked food tears as a band: the set crumb's stretch to fracture is 0.15 (lua/hearth/dough.lua SET) and a
+--   crack in this law is a band of cracked particles about three cells wide (docs/validation.md, "The crown's
+--   crack: a bulge three cells wide"), so across the muffin's 17 mm free third (4-6 cells) the whole free crumb
+--   cracks and falls as crumbs; the loaf's 27 mm third cracks by its grips' faces, its middle strip held by the
+--   left piece at 5 mm and falling free at 4 mm (three pieces).
+--   With two_field = true the crack's sides move apart instead of as one (dx 4 / 5 mm): the muffin parts by
+--   10 mm into two halves with a clean gap between them (49 cracked at 40 mm, not 68), the loaf by 12 mm, its
+--   middle strip falling free (three pieces, 94 cracked); the faces as hot (81.7 / 81.2 degC).
+-- Cost (one core of a loaded 2-core machine): muffin 24 s at 4 mm, 50 s of CPU at 3 mm; loaf 13 s at 5 mm, 25 s at
+-- 4 mm; a raw pull 2-8 s.
+local h = require "hearth"
+local P = h.params { dim = 2, food = "muffin", raw = false, dx = 0, bake = 0, speed = 0.05, pull = 0.4, frames = 20,
+  ppc = 0, two_field = false }
+if P.dim ~= 2 then
+  error(("--set dim=%d: tear_open.lua measures its tear over the plane's columns; only dim=2"):format(P.dim))
+end
+if P.food ~= "muffin" and P.food ~= "bread" then
+  error(("--set food=%s: expected muffin or bread"):format(P.food))
+end
+local muffin = P.food == "muffin"
+local dx = P.dx > 0 and P.dx or muffin and 0.004 or 0.005 -- the food's own scene's dx
+local bake = P.raw and 0 or P.bake > 0 and P.bake or muffin and 3 or 2.5
+local oven = h.library.paper_oven[P.food]
+print(("tear_open.lua: h.library.paper.%s, animation units (Ding Table 2): heat runs in seconds, not minutes; water %g "
+  .. "times fast; %s"):format(P.food, oven.water_time_scale,
+  P.raw and "raw (not baked)" or ("baked %g s"):format(bake)))
+
+-- the food: muffins.lua's cup (its inner floor, radius, wall height, wall; 22 mm of batter), bread.lua's loaf
+local W, H = muffin and 0.14 or 0.24, muffin and 0.1 or 0.14
+local s = h.scene { dim = 2, dx = dx, box = { { 0, 0 }, { W, H } },
+  oven = not P.raw and { temperature = oven.temperature, beta = oven.beta } or nil, name = "tear_open",
+  browning = true, browning_scale = oven.water_time_scale, two_field = P.two_field }
+local material = h.material("cam_clay_dough", h.library.paper[P.food])
+local xc = math.floor(W / 2 / dx + 0.5) * dx -- on a grid node, as muffins.lua's cups
+local BASE, R, FLOOR -- m: the food's floor, half its raw width, how far below BASE its support reaches
+local support
+if muffin then
+  BASE, R, FLOOR = 0.012, 0.025, 0.004
+  support = h.recipes.muffin_cup(s, { dim = 2, x = xc, base = BASE, radius = R, height = 0.03, wall = FLOOR,
+    fill = 0.022, material = material, oven = oven, mode = "slip", ppc = P.ppc > 0 and P.ppc or 4 })
+else
+  BASE, R, FLOOR = 0.02, 0.04, 0.01
+  support = h.recipes.tray(s, BASE, { temperature = oven.pan_temperature, beta = oven.pan_beta })
+  s:add { shape = h.recipes.loaf_shape(2, xc, BASE, 2 * R, 0.03), material = material,
+    temperature = oven.dough_temperature, saturation = oven.saturation, ppc = P.ppc > 0 and P.ppc or 4 }
+end
+local FACE = R / 3 -- the grips' inner faces at xc -+ FACE: each holds its side's outer third of the raw width
+
+-- one-cell bins of the particles (damage below 1 with `intact`), keyed i * 2^20 + j
+local function key(x, y) return math.floor(x / dx) * 1048576 + math.floor(y / dx) end
+local function occupancy(p, intact)
+  local occ = {}
+  for k = 1, p.n do
+    if not intact or p.damage[k] < 1 then
+      local c = key(p.x[3 * k - 2], p.x[3 * k - 1])
+      occ[c] = (occ[c] or 0) + 1
+    end
+  end
+  return occ
+end
+local function inside(occ, x, y) -- all eight neighbours of the bin at x, y hold a particle
+  local c = key(x, y)
+  for di = -1, 1 do
+    for dj = -1, 1 do if not occ[c + di * 1048576 + dj] then return false end end
+  end
+  return true
+end
+
+local t0, peak, was_inside, v0 = nil, {}, nil, nil
+local function separation(t) return t0 and 2 * P.speed * math.max(0, t - t0) or 0 end
+
+local function measure(t)
+  local p = s:particles { fields = { "id", "x", "temperature", "damage", "stress", "J" } }
+  v0 = v0 or s:volume() / p.n -- every particle starts with the same volume (one dx, one ppc)
+  for k = 1, p.n do
+    local id, T = p.id[k], p.temperature[k]
+    if not peak[id] or T > peak[id] then peak[id] = T end
+  end
+  local all, intact = occupancy(p, false), occupancy(p, true)
+  local a, b = xc - FACE - separation(t) / 2 + dx, xc + FACE + separation(t) / 2 - dx -- the free span, a cell in
+  -- the neck: per one-cell column over [a, b], the intact rows
+  local rows, c0, c1 = {}, math.floor(a / dx), math.floor(b / dx)
+  for c = c0, c1 do rows[c] = 0 end
+  for kk in pairs(intact) do
+    local c = kk // 1048576
+    if rows[c] then rows[c] = rows[c] + 1 end
+  end
+  local neck = math.huge
+  for c = c0, c1 do neck = math.min(neck, rows[c] * dx) end
+  -- pieces: components of the intact bins (eight neighbours), those with >= 5% of the intact particles
+  local seen, sizes, total = {}, {}, 0
+  for _, n in pairs(intact) do total = total + n end
+  for start in pairs(intact) do
+    if not seen[start] then
+      local stack, size = { start }, 0
+      seen[start] = true
+      while #stack > 0 do
+        local q = table.remove(stack)
+        size = size + intact[q]
+        for di = -1, 1 do
+          for dj = -1, 1 do
+            local r = q + di * 1048576 + dj
+            if intact[r] and not seen[r] then seen[r] = true; stack[#stack + 1] = r end
+          end
+        end
+      end
+      sizes[#sizes + 1] = size
+    end
+  end
+  local pieces = 0
+  for _, n in ipairs(sizes) do if n >= 0.05 * total then pieces = pieces + 1 end end
+  -- the faces the pull opened, their particles' peak temperatures; the cracked; the force through the middle
+  local nf, tlo, thi, cracked, force = 0, math.huge, -math.huge, 0, 0
+  for k = 1, p.n do
+    local x, y, id = p.x[3 * k - 2], p.x[3 * k - 1], p.id[k]
+    if p.damage[k] >= 1 then cracked = cracked + 1 end
+    if was_inside and was_inside[id] and x > a and x < b and not inside(all, x, y) then
+      nf, tlo, thi = nf + 1, math.min(tlo, peak[id]), math.max(thi, peak[id])
+    end
+    if math.abs(x - xc) < dx / 2 then force = force + p.stress[9 * k - 8] * v0 * p.J[k] / dx end
+  end
+  return p, all, neck, pieces, nf, tlo, thi, cracked, force
+end
+
+-- out of the oven: the oven off (no air exchange: the food keeps its heat through the tear), the cup or tray
+-- taken away, the grips on the outer quarters, moving apart
+local function take_out(sc)
+  local p, all = measure(sc:stats().t)
+  was_inside = {}
+  for k = 1, p.n do was_inside[p.id[k]] = inside(all, p.x[3 * k - 2], p.x[3 * k - 1]) end
+  t0 = sc:stats().t
+  if not P.raw then sc:oven(nil) end
+  sc:move(support, { 0, -1 }) -- out of the scene
+  local lo, hi = BASE - FLOOR - dx, H + 1
+  sc:collider { shape = h.box({ xc - 3 * R, lo }, { xc - FACE, hi }), mode = "grip", velocity = { -P.speed, 0 } }
+  sc:collider { shape = h.box({ xc + FACE, lo }, { xc + 3 * R, hi }), mode = "grip", velocity = { P.speed, 0 } }
+end
+s:at(bake, take_out)
+
+local rows = { "t,separation_m,neck_m,pieces,face_particles,face_peak_min_degC,face_peak_max_degC,cracked,"
+  .. "force_mid_N_per_m" }
+local every = P.pull / P.frames
+local frame = 0
+local parted -- the separation at the first frame torn through (neck 0, two pieces or more)
+s:run { until_t = bake + P.pull, every = every, on_frame = function(f)
+  local _, _, neck, pieces, nf, tlo, thi, cracked, force = measure(f.t)
+  local sep = separation(f.t)
+  if t0 and not parted and pieces >= 2 then parted = sep end
+  rows[#rows + 1] = ("%.4f,%.5f,%.5f,%d,%d,%.2f,%.2f,%d,%.4g"):format(f.t, sep, neck, pieces, nf,
+    nf > 0 and tlo or 0 / 0, nf > 0 and thi or 0 / 0, cracked, force):gsub("%-nan", "nan")
+  h.write("tear_open.csv", table.concat(rows, "\n") .. "\n")
+  if t0 and f.t >= t0 - 1e-9 then
+    if frame % 5 == 0 then
+      f:png("temperature", "heat_%04d.png", { kind = "particles" })
+      f:png("damage", "damage_%04d.png", { kind = "particles", range = { 0, 1 } })
+    end
+    frame = frame + 1
+  end
+end }
+s:png("browning", "browning.png")
+s:png("temperature", "heat_torn.png", { kind = "particles" })
+print(("%s%s: %s"):format(P.raw and "raw " or "baked ", P.food, parted and
+  ("torn through at %.1f mm of separation"):format(parted * 1e3) or
+  ("not torn through after %.1f mm of separation"):format(separation(bake + P.pull) * 1e3)))
