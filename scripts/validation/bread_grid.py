@@ -16,7 +16,8 @@ import math
 import re
 import struct
 import sys
-import zlib
+
+from png_rgb import read_png, write_png
 
 TRAY, WIDTH, X0 = 0.02, 0.08, 0.07  # bread.lua: tray top, loaf width, the plain loaf's axis (m)
 
@@ -75,43 +76,6 @@ def where(dx, path):
           f"cracked, upper half: crown (|x| < 20 mm) {crown}, by x (mm) {spread or '-'}; lower half {low}")
 
 
-def read_png(path):
-    """(width, height, rows of RGB bytes) of an 8-bit RGB or RGBA PNG (hearth's writer)"""
-    b = open(path, "rb").read()
-    pos, idat, hdr = 8, b"", None
-    while pos < len(b):
-        n, kind = struct.unpack(">I4s", b[pos:pos + 8])
-        data = b[pos + 8:pos + 8 + n]
-        if kind == b"IHDR":
-            hdr = struct.unpack(">IIBBBBB", data)
-        if kind == b"IDAT":
-            idat += data
-        pos += 12 + n
-    w, h, depth, ctype = hdr[0], hdr[1], hdr[2], hdr[3]
-    if depth != 8 or ctype not in (2, 6):
-        sys.exit(f"bread_grid.py: {path}: only 8-bit RGB(A) PNGs (depth {depth}, colour type {ctype})")
-    bpp = 3 if ctype == 2 else 4
-    raw, stride, rows, prev = zlib.decompress(idat), w * bpp, [], bytearray(w * bpp)
-    for y in range(h):
-        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):  # PNG's five row filters
-            a = line[i - bpp] if i >= bpp else 0
-            c = prev[i - bpp] if i >= bpp else 0
-            if f == 1:
-                line[i] = (line[i] + a) & 255
-            elif f == 2:
-                line[i] = (line[i] + prev[i]) & 255
-            elif f == 3:
-                line[i] = (line[i] + (a + prev[i]) // 2) & 255
-            elif f == 4:
-                p = a + prev[i] - c
-                pa, pb, pc = abs(p - a), abs(p - prev[i]), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else prev[i] if pb <= pc else c)) & 255
-        rows.append(bytes(line[k] for k in range(stride) if k % bpp < 3))
-        prev = line
-    return w, h, rows
-
-
 def strip(out, paths):
     crops = []
     for p in paths:
@@ -124,13 +88,7 @@ def strip(out, paths):
     rows = []
     for i in range(0, len(crops), per_row):
         rows += [b"".join(c[y][:cw] for c in crops[i:i + per_row]) for y in range(h)]
-    w, h = len(rows[0]) // 3, len(rows)
-
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
-    png = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
-    png += chunk(b"IDAT", zlib.compress(b"".join(b"\x00" + r for r in rows), 9)) + chunk(b"IEND", b"")
-    open(out, "wb").write(png)
+    w, h = write_png(out, rows)
     print(f"wrote {out} ({w} x {h}: {len(paths)} frames)")
 
 

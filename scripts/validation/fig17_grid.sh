@@ -27,40 +27,13 @@ for base in true false; do
     done
 done
 # The last frame of each bake (heat_0001.png), baseline above, full model below.
-python3 - "$tmp" "$out" <<'PY'
-import os, struct, sys, zlib
-
-def read(path):
-    b = open(path, "rb").read()
-    pos, idat, hdr = 8, b"", None
-    while pos < len(b):
-        n, kind = struct.unpack(">I4s", b[pos:pos + 8])
-        data = b[pos + 8:pos + 8 + n]
-        if kind == b"IHDR": hdr = struct.unpack(">IIBBBBB", data)
-        if kind == b"IDAT": idat += data
-        pos += 12 + n
-    w, h, depth, ctype = hdr[:4]
-    assert depth == 8 and ctype == 2, f"{path}: expected 8-bit RGB"
-    raw, stride, rows, prev = zlib.decompress(idat), 3 * w, [], bytearray(3 * w)
-    for y in range(h):
-        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - 3] if i >= 3 else 0
-            c = prev[i - 3] if i >= 3 else 0
-            up = prev[i]
-            if f == 1: line[i] = (line[i] + a) & 255
-            elif f == 2: line[i] = (line[i] + up) & 255
-            elif f == 3: line[i] = (line[i] + (a + up) // 2) & 255
-            elif f == 4:
-                p = a + up - c
-                pa, pb, pc = abs(p - a), abs(p - up), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else up if pb <= pc else c)) & 255
-        rows.append(bytes(line))
-        prev = line
-    return w, h, rows
+python3 - "$tmp" "$out" "$root/scripts/validation" <<'PY'
+import os, sys
+sys.path.insert(0, sys.argv[3])
+from png_rgb import read_png, write_png
 
 tmp, out = sys.argv[1], sys.argv[2]
-grid = [[read(os.path.join(tmp, f"{base}_{T}", "hearth-out", "cookies", f"oven_{T}", "heat_0001.png"))
+grid = [[read_png(os.path.join(tmp, f"{base}_{T}", "hearth-out", "cookies", f"oven_{T}", "heat_0001.png"))
          for T in (190, 150, 110)] for base in ("true", "false")]
 gap = 6  # white pixels between pictures
 w, h = grid[0][0][0], grid[0][0][1]
@@ -70,9 +43,6 @@ for r, row in enumerate(grid):
     if r: rows += [b"\xff" * (3 * W)] * gap
     for y in range(h):
         rows.append((b"\xff" * (3 * gap)).join(pic[2][y] for pic in row))
-ihdr = struct.pack(">IIBBBBB", W, H, 8, 2, 0, 0, 0)
-data = zlib.compress(b"".join(b"\x00" + r for r in rows), 9)
-chunk = lambda k, d: struct.pack(">I", len(d)) + k + d + struct.pack(">I", zlib.crc32(k + d))
-open(out, "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", data) + chunk(b"IEND", b""))
+write_png(out, rows)
 print(f"wrote {out} ({W} x {H})")
 PY
