@@ -720,8 +720,10 @@ sys.exit(0 if b is not None and (r is None or r >= 2 * b) else 1)
 PY
     [ $? -eq 0 ] || fail "the raw $food does not stretch further than the baked one before it parts (numbers above)"
     ;;
-# tear_open.lua as a user runs it, shortly: its CSV's cells are numbers (the faces' columns nan before the pull),
-# its frames written, and a scene it cannot build (dim=3, an unknown food) refused with the parameter and its range.
+# tear_open.lua as a user runs it, shortly: its CSV's cells are numbers (the faces' columns nan before the pull, and
+# crack_from_face_m while the pull has cracked nothing: the raw batter never cracks),
+# its frames written, and a scene it cannot build (dim=3, an unknown food, two_field neither auto, true nor false)
+# refused with the parameter and its range.
 baking_scene_tear_open)
     run tear_open --set raw=true --set pull=0.1 --set frames=5 >/dev/null
     n=$(find hearth-out/tear_open -name '*.png' | wc -l)
@@ -733,9 +735,9 @@ assert len(rows) == 6, len(rows)
 for r in rows:
     for k, c in r.items():
         v = float(c)
-        assert math.isfinite(v) or k.startswith("face_peak"), (k, c)
+        assert math.isfinite(v) or k.startswith("face_peak") or k == "crack_from_face_m", (k, c)
 PY
-    for bad in "dim=3:only dim=2" "food=cake:expected muffin or bread"; do
+    for bad in "dim=3:only dim=2" "food=cake:expected muffin or bread" "two_field=yes:expected auto"; do
         "$hearth" run "$scenes/tear_open.lua" --quiet --set "${bad%%:*}" >out.txt 2>err.txt && fail "--set ${bad%%:*} ran"
         grep -q "${bad#*:}" err.txt || fail "--set ${bad%%:*}: the message does not say '${bad#*:}': $(cat err.txt)"
     done
