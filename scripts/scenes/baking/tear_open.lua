@@ -34,7 +34,7 @@
 --   force_mid_N_per_m: the pull's tension through the middle: sigma_xx V summed over the particles in the
 --     one-cell column at the food's centre, over dx (N per metre of depth, 2D);
 --   free_cracked_fraction: of the particles in the free span at the take-out, the share cracked now (a crumbling
---     band cracks most of it, two faces a couple of cells each);
+--     band cracks most of it, two faces a few cells each);
 --   largest_piece_share: the largest component of intact bins' particles over all the particles (two clean halves
 --     near 0.5 less their cracked faces; crumbs and a fallen strip lower it);
 --   crack_from_face_m: where the pull cracks: the median, over the free span's particles it has cracked (not those
@@ -45,16 +45,16 @@
 --     4 / 4), 49 / 100 cracked at 40 mm (one field 68 / 130), 52 / 58% of the free span cracked (71 / 74%), the
 --     largest piece 42 / 40% of the particles (38 / 38%); the faces' particles all reached 81.7 / 81.1 degC and more
 --     (one field 81.2 / 80.2; the batter sets from 55 degC); raw (raw = true, nothing cracks, the same either way):
---     two pieces at 32 mm / not within 40. The tear starts at the top of the middle and runs down it: two halves
---     each with a rough cracked face two or three cells deep and a clean gap between them; with one field the
---     cracked band's sides share their nodes, so the free crumb between the halves falls as crumbs instead.
+--     two pieces at 32 mm / not within 40. The tear starts at the top of the middle (4 mm) and runs down it: two
+--     halves each with a rough cracked face 2-4 cells deep and a clean gap between them; with one field the cracked
+--     band's sides share their nodes, so the free crumb between the halves falls as crumbs instead.
 --   baked loaf (2.5 s), dx 5 / 4 mm, one field (the default): two pieces by 8 / 8 mm (neck 0 by 14 / 10 mm), 109 /
 --     247 cracked at 40 mm; its faces all reached 81.2 degC (the crumb sets at 70; the loaf heats evenly, Biot 0.04);
 --     tension through the middle at most 57 / 51 N/m; raw: two pieces at 24 / 26 mm, at most 39 / 37 N/m. It tears
---     at both grips' faces (a grip's edge is a stress raiser, as a hand's fingers are), starting at their feet,
---     and its middle strip falls free (three pieces at 4 mm) with either field. Two fields clean its faces (94 /
---     173 cracked) but part it only by 12 / 20 mm, which the raw dough's 24 / 26 mm no longer doubles at 4 mm
---     (claim_raw_dough_stretches_before_tearing_fine), so the loaf keeps one field.
+--     at both grips' faces (a grip's edge is a stress raiser, as a hand's fingers are), starting at their feet (5 mm),
+--     and its middle strip hangs on one half (one field, 5 mm) or falls free (three pieces). Two fields clean its
+--     faces (94 / 173 cracked) but part it only by 12 / 20 mm, which the raw dough's 24 / 26 mm no longer doubles
+--     at 4 mm (claim_raw_dough_stretches_before_tearing_fine), so the loaf keeps one field.
 -- Cost (CPU, --threads 1, a shared 2-core machine): muffin 13 / 17 s at 4 mm, 50 / 65 s at 3 mm (one field / two);
 -- loaf 7 / 8 s at 5 mm, 13 / 17 s at 4 mm; a raw pull 1-3 s.
 local h = require "hearth"
