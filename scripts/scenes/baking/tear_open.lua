@@ -38,7 +38,10 @@
 --   largest_piece_share: the largest component of intact bins' particles over all the particles (two clean halves
 --     near 0.5 less their cracked faces; crumbs and a fallen strip lower it);
 --   crack_from_face_m: where the pull cracks: the median, over the free span's particles it has cracked (not those
---     the bake cracked), of their distance now to the nearer grip face (nan until it cracks one).
+--     the bake cracked), of their distance now to the nearer grip face (nan until it cracks one);
+--   bodies, loose_share: pieces, over every particle's bins (cracked or not): two halves with their torn faces on
+--     them and a clean gap are two bodies, crumbs between the halves bridge them into one; loose_share: the
+--     particles outside the bodies (crumbs fallen clear).
 -- 2D only: the measures are over columns and bins of the plane.
 -- Measured (frames every 2 mm of separation; one field / two; docs/validation.md "Torn open after baking"):
 --   baked muffin (3 s), dx 4 / 3 mm, two fields (the default): two pieces by 10 / 4 mm of separation (one field:
@@ -143,34 +146,42 @@ local function measure(t)
   end
   local neck = math.huge
   for c = c0, c1 do neck = math.min(neck, rows[c] * dx) end
-  -- pieces: components of the intact bins (eight neighbours), those with >= 5% of the intact particles
-  local seen, sizes, total = {}, {}, 0
-  for _, n in pairs(intact) do total = total + n end
-  for start in pairs(intact) do
-    if not seen[start] then
-      local stack, size = { start }, 0
-      seen[start] = true
-      while #stack > 0 do
-        local q = table.remove(stack)
-        size = size + intact[q]
-        for di = -1, 1 do
-          for dj = -1, 1 do
-            local r = q + di * 1048576 + dj
-            if intact[r] and not seen[r] then seen[r] = true; stack[#stack + 1] = r end
+  -- pieces: components of the intact bins (eight neighbours), those with >= 5% of the intact particles; bodies:
+  -- the same over every particle's bins (cracked or not), those with >= 5% of all: a cracked face still on its
+  -- half is part of that half's body, crumbs between the halves bridge them into one, and loose: the share of the
+  -- particles outside the bodies (crumbs fallen away)
+  local function components(occ)
+    local seen, sizes, total = {}, {}, 0
+    for _, n in pairs(occ) do total = total + n end
+    for start in pairs(occ) do
+      if not seen[start] then
+        local stack, size = { start }, 0
+        seen[start] = true
+        while #stack > 0 do
+          local q = table.remove(stack)
+          size = size + occ[q]
+          for di = -1, 1 do
+            for dj = -1, 1 do
+              local r = q + di * 1048576 + dj
+              if occ[r] and not seen[r] then seen[r] = true; stack[#stack + 1] = r end
+            end
           end
         end
+        sizes[#sizes + 1] = size
       end
-      sizes[#sizes + 1] = size
     end
+    local count, largest, held = 0, 0, 0
+    for _, n in ipairs(sizes) do
+      if n >= 0.05 * total then count, held = count + 1, held + n end
+      largest = math.max(largest, n)
+    end
+    return count, largest, total > 0 and 1 - held / total or 0
   end
-  local pieces, largest = 0, 0
-  for _, n in ipairs(sizes) do
-    if n >= 0.05 * total then pieces = pieces + 1 end
-    largest = math.max(largest, n)
-  end
+  local pieces, largest = components(intact)
+  local bodies, _, loose = components(all)
   -- the faces the pull opened, their particles' peak temperatures; the cracked; the force through the middle
   -- and where the pull cracks the free span: the share of its particles cracked now (a crumbling band cracks most
-  -- of it, two faces a cell or two each), and how far from the nearer grip face the particles it cracked lie now
+  -- of it, two faces a few cells each), and how far from the nearer grip face the particles it cracked lie now
   -- (the median; those the bake had cracked left out: the pull's tear, not the crust's)
   local nf, tlo, thi, cracked, force = 0, math.huge, -math.huge, 0, 0
   local free_cracked, from_face = 0, {}
@@ -192,7 +203,7 @@ local function measure(t)
   table.sort(from_face)
   local median = #from_face > 0 and (from_face[(#from_face + 1) // 2] + from_face[#from_face // 2 + 1]) / 2 or 0 / 0
   return p, all, neck, pieces, nf, tlo, thi, cracked, force, nfree and free_cracked / nfree or 0,
-    largest / p.n, median
+    largest / p.n, median, bodies, loose
 end
 
 -- out of the oven: the oven off (no air exchange: the food keeps its heat through the tear), the cup or tray
@@ -217,16 +228,17 @@ end
 s:at(bake, take_out)
 
 local rows = { "t,separation_m,neck_m,pieces,face_particles,face_peak_min_degC,face_peak_max_degC,cracked,"
-  .. "force_mid_N_per_m,free_cracked_fraction,largest_piece_share,crack_from_face_m" }
+  .. "force_mid_N_per_m,free_cracked_fraction,largest_piece_share,crack_from_face_m,bodies,loose_share" }
 local every = P.pull / P.frames
 local frame = 0
 local parted -- the separation at the first frame torn through (neck 0, two pieces or more)
 s:run { until_t = bake + P.pull, every = every, on_frame = function(f)
-  local _, _, neck, pieces, nf, tlo, thi, cracked, force, free_cracked, largest, from_face = measure(f.t)
+  local _, _, neck, pieces, nf, tlo, thi, cracked, force, free_cracked, largest, from_face, bodies, loose =
+    measure(f.t)
   local sep = separation(f.t)
   if t0 and not parted and pieces >= 2 then parted = sep end
-  rows[#rows + 1] = ("%.4f,%.5f,%.5f,%d,%d,%.2f,%.2f,%d,%.4g,%.4f,%.4f,%.5f"):format(f.t, sep, neck, pieces, nf,
-    nf > 0 and tlo or 0 / 0, nf > 0 and thi or 0 / 0, cracked, force, free_cracked, largest, from_face)
+  rows[#rows + 1] = ("%.4f,%.5f,%.5f,%d,%d,%.2f,%.2f,%d,%.4g,%.4f,%.4f,%.5f,%d,%.4f"):format(f.t, sep, neck, pieces, nf,
+    nf > 0 and tlo or 0 / 0, nf > 0 and thi or 0 / 0, cracked, force, free_cracked, largest, from_face, bodies, loose)
     :gsub("%-nan", "nan")
   h.write("tear_open.csv", table.concat(rows, "\n") .. "\n")
   if t0 and f.t >= t0 - 1e-9 then
