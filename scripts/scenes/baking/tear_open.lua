@@ -49,8 +49,9 @@
 --     largest piece 42 / 40% of the particles (38 / 38%); the faces' particles all reached 81.7 / 81.1 degC and more
 --     (one field 81.2 / 80.2; the batter sets from 55 degC); raw (raw = true, nothing cracks, the same either way):
 --     two pieces at 32 mm / not within 40. The tear starts at the top of the middle (4 mm) and runs down it: two
---     halves each with a rough cracked face 2-4 cells deep and a clean gap between them; with one field the cracked
---     band's sides share their nodes, so the free crumb between the halves falls as crumbs instead.
+--     halves each with a rough cracked face 2-4 cells deep and a clean gap between them (two bodies from 20 mm on,
+--     0.4 / 0.2% loose); with one field the cracked band's sides share their nodes, so the free crumb between the
+--     halves falls as crumbs instead (bridging the halves into one body at 3 of 11 frames at 4 mm; 4.0% loose at 3).
 --   baked loaf (2.5 s), dx 5 / 4 mm, one field (the default): two pieces by 8 / 8 mm (neck 0 by 14 / 10 mm), 109 /
 --     247 cracked at 40 mm; its faces all reached 81.2 degC (the crumb sets at 70; the loaf heats evenly, Biot 0.04);
 --     tension through the middle at most 57 / 51 N/m; raw: two pieces at 24 / 26 mm, at most 39 / 37 N/m. It tears
