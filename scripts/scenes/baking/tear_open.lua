@@ -5,8 +5,10 @@
 --   hearth run scripts/scenes/baking/tear_open.lua [--set food=muffin|bread] [--set raw=true] [--set dx=...]
 --   [--set bake=...] (s; 0 = the food's own: muffin 3, muffins.lua's whole bake; bread 2.5, bread.lua's)
 --   [--set speed=0.05] (m/s, each grip) [--set pull=0.4] (s) [--set frames=20] (frames over the pull)
---   [--set two_field=true] (the scene's two velocity fields where a crack runs: the crack's sides part cleanly;
---   off by default, as in muffins.lua and bread.lua, whose bakes these are)
+--   [--set two_field=auto|true|false] (the scene's two velocity fields where a crack runs, Homel & Herbold 2017,
+--   core/sim/solver/mpm_two_field.c: a crack's sides part instead of moving as one; auto, the default, is true for
+--   the muffin and false for the loaf, as measured below; muffins.lua and bread.lua bake with one field, so the
+--   muffin's bake here is theirs but for its cracks' nodes)
 -- raw = true pulls the same shape unbaked: the dough as it goes into the oven, at its own temperature, gripped
 -- and pulled at t = 0 alike.
 -- The pull: both grips move straight apart (x), not up or about a hinge. A hand tearing a muffin also bends the
@@ -30,28 +32,38 @@
 --     the frames, a lower bound on its true peak, since the frames sample it);
 --   cracked: particles with damage 1;
 --   force_mid_N_per_m: the pull's tension through the middle: sigma_xx V summed over the particles in the
---     one-cell column at the food's centre, over dx (N per metre of depth, 2D).
+--     one-cell column at the food's centre, over dx (N per metre of depth, 2D);
+--   free_cracked_fraction: of the particles in the free span at the take-out, the share cracked now (a crumbling
+--     band cracks most of it, two faces a few cells each);
+--   largest_piece_share: the largest component of intact bins' particles over all the particles (two clean halves
+--     near 0.5 less their cracked faces; crumbs and a fallen strip lower it);
+--   crack_from_face_m: where the pull cracks: the median, over the free span's particles it has cracked (not those
+--     the bake cracked), of their distance now to the nearer grip face (nan until it cracks one);
+--   bodies, loose_share: pieces, over every particle's bins (cracked or not): two halves with their torn faces on
+--     them and a clean gap are two bodies, crumbs between the halves bridge them into one; loose_share: the
+--     particles outside the bodies (crumbs fallen clear).
 -- 2D only: the measures are over columns and bins of the plane.
--- Measured (frames every 2 mm of separation; docs/validation.md "Torn open after baking"):
---   baked muffin (3 s), dx 4 / 3 mm: two pieces by 4 / 4 mm of separation (neck 0 by 6 / 6 mm; 2 / 9 particles
---     cracked at the end of the bake, 68 / 130 at 40 mm); the faces' particles (up to 26 / 50 a frame) all reached
---     81.2 / 80.2 degC and more (the batter sets from 55 degC); raw (raw = true): two pieces at 32 mm / not within 40;
---   baked loaf (2.5 s), dx 5 / 4 mm: two pieces by 8 / 8 mm (neck 0 by 14 / 10 mm), 109 / 247 cracked at 40 mm; its
---     faces all reached 81.2 degC (the crumb sets at 70; the loaf heats evenly, Biot 0.04, its crumb 81.2-81.7
---     degC); tension through the middle at most 57 / 51 N/m; raw: two pieces at 24 / 26 mm, at most 39 / 37 N/m.
---   The baked food tears as a band: the set crumb's stretch to fracture is 0.15 (lua/hearth/dough.lua SET) and a
---   crack in this law is a band of cracked particles about three cells wide (docs/validation.md, "The crown's
---   crack: a bulge three cells wide"), so across the muffin's 17 mm free third (4-6 cells) the whole free crumb
---   cracks and falls as crumbs; the loaf's 27 mm third cracks by its grips' faces, its middle strip held by the
---   left piece at 5 mm and falling free at 4 mm (three pieces).
---   With two_field = true the crack's sides move apart instead of as one (dx 4 / 5 mm): the muffin parts by
---   10 mm into two halves with a clean gap between them (49 cracked at 40 mm, not 68), the loaf by 12 mm, its
---   middle strip falling free (three pieces, 94 cracked); the faces as hot (81.7 / 81.2 degC).
--- Cost (one core of a loaded 2-core machine): muffin 24 s at 4 mm, 50 s of CPU at 3 mm; loaf 13 s at 5 mm, 25 s at
--- 4 mm; a raw pull 2-8 s.
+-- Measured (frames every 2 mm of separation; one field / two; docs/validation.md "Torn open after baking"):
+--   baked muffin (3 s), dx 4 / 3 mm, two fields (the default): two pieces by 10 / 4 mm of separation (one field:
+--     4 / 4), 49 / 100 cracked at 40 mm (one field 68 / 130), 52 / 58% of the free span cracked (71 / 74%), the
+--     largest piece 42 / 40% of the particles (38 / 38%); the faces' particles all reached 81.7 / 81.1 degC and more
+--     (one field 81.2 / 80.2; the batter sets from 55 degC); raw (raw = true, nothing cracks, the same either way):
+--     two pieces at 32 mm / not within 40. The tear starts at the top of the middle (4 mm) and runs down it: two
+--     halves each with a rough cracked face 2-4 cells deep and a clean gap between them (two bodies from 20 mm on,
+--     0.4 / 0.2% loose); with one field the cracked band's sides share their nodes, so the free crumb between the
+--     halves falls as crumbs instead (bridging the halves into one body at 3 of 11 frames at 4 mm; 4.0% loose at 3).
+--   baked loaf (2.5 s), dx 5 / 4 mm, one field (the default): two pieces by 8 / 8 mm (neck 0 by 14 / 10 mm), 109 /
+--     247 cracked at 40 mm; its faces all reached 81.2 degC (the crumb sets at 70; the loaf heats evenly, Biot 0.04);
+--     tension through the middle at most 57 / 51 N/m; raw: two pieces at 24 / 26 mm, at most 39 / 37 N/m. It tears
+--     at both grips' faces (a grip's edge is a stress raiser, as a hand's fingers are), starting at their feet (5 mm),
+--     and its middle strip hangs on one half (one field, 5 mm) or falls free (three pieces). Two fields clean its
+--     faces (94 / 173 cracked) but part it only by 12 / 20 mm, which the raw dough's 24 / 26 mm no longer doubles
+--     at 4 mm (claim_raw_dough_stretches_before_tearing_fine), so the loaf keeps one field.
+-- Cost (CPU, --threads 1, a shared 2-core machine): muffin 13 / 17 s at 4 mm, 50 / 65 s at 3 mm (one field / two);
+-- loaf 7 / 8 s at 5 mm, 13 / 17 s at 4 mm; a raw pull 1-3 s.
 local h = require "hearth"
 local P = h.params { dim = 2, food = "muffin", raw = false, dx = 0, bake = 0, speed = 0.05, pull = 0.4, frames = 20,
-  ppc = 0, two_field = false }
+  ppc = 0, two_field = "auto" }
 if P.dim ~= 2 then
   error(("--set dim=%d: tear_open.lua measures its tear over the plane's columns; only dim=2"):format(P.dim))
 end
@@ -59,6 +71,12 @@ if P.food ~= "muffin" and P.food ~= "bread" then
   error(("--set food=%s: expected muffin or bread"):format(P.food))
 end
 local muffin = P.food == "muffin"
+if P.two_field ~= "auto" and P.two_field ~= "true" and P.two_field ~= "false" then
+  error(("--set two_field=%s: expected auto (the muffin's two fields, the loaf's one), true or false")
+    :format(P.two_field))
+end
+-- the muffin tears with two velocity fields where a crack runs, the loaf with one (measured: the header's end)
+local two_field = P.two_field == "true" or P.two_field == "auto" and muffin
 local dx = P.dx > 0 and P.dx or muffin and 0.004 or 0.005 -- the food's own scene's dx
 local bake = P.raw and 0 or P.bake > 0 and P.bake or muffin and 3 or 2.5
 local oven = h.library.paper_oven[P.food]
@@ -70,7 +88,7 @@ print(("tear_open.lua: h.library.paper.%s, animation units (Ding Table 2): heat 
 local W, H = muffin and 0.14 or 0.24, muffin and 0.1 or 0.14
 local s = h.scene { dim = 2, dx = dx, box = { { 0, 0 }, { W, H } },
   oven = not P.raw and { temperature = oven.temperature, beta = oven.beta } or nil, name = "tear_open",
-  browning = true, browning_scale = oven.water_time_scale, two_field = P.two_field }
+  browning = true, browning_scale = oven.water_time_scale, two_field = two_field }
 local material = h.material("cam_clay_dough", h.library.paper[P.food])
 local xc = math.floor(W / 2 / dx + 0.5) * dx -- on a grid node, as muffins.lua's cups
 local BASE, R, FLOOR -- m: the food's floor, half its raw width, how far below BASE its support reaches
@@ -108,6 +126,7 @@ local function inside(occ, x, y) -- all eight neighbours of the bin at x, y hold
 end
 
 local t0, peak, was_inside, v0 = nil, {}, nil, nil
+local was_free, was_cracked, nfree -- by id at the take-out: in the free span; cracked already (by the bake)
 local function separation(t) return t0 and 2 * P.speed * math.max(0, t - t0) or 0 end
 
 local function measure(t)
@@ -128,39 +147,64 @@ local function measure(t)
   end
   local neck = math.huge
   for c = c0, c1 do neck = math.min(neck, rows[c] * dx) end
-  -- pieces: components of the intact bins (eight neighbours), those with >= 5% of the intact particles
-  local seen, sizes, total = {}, {}, 0
-  for _, n in pairs(intact) do total = total + n end
-  for start in pairs(intact) do
-    if not seen[start] then
-      local stack, size = { start }, 0
-      seen[start] = true
-      while #stack > 0 do
-        local q = table.remove(stack)
-        size = size + intact[q]
-        for di = -1, 1 do
-          for dj = -1, 1 do
-            local r = q + di * 1048576 + dj
-            if intact[r] and not seen[r] then seen[r] = true; stack[#stack + 1] = r end
+  -- pieces: components of the intact bins (eight neighbours), those with >= 5% of the intact particles; bodies:
+  -- the same over every particle's bins (cracked or not), those with >= 5% of all: a cracked face still on its
+  -- half is part of that half's body, crumbs between the halves bridge them into one, and loose: the share of the
+  -- particles outside the bodies (crumbs fallen away)
+  local function components(occ)
+    local seen, sizes, total = {}, {}, 0
+    for _, n in pairs(occ) do total = total + n end
+    for start in pairs(occ) do
+      if not seen[start] then
+        local stack, size = { start }, 0
+        seen[start] = true
+        while #stack > 0 do
+          local q = table.remove(stack)
+          size = size + occ[q]
+          for di = -1, 1 do
+            for dj = -1, 1 do
+              local r = q + di * 1048576 + dj
+              if occ[r] and not seen[r] then seen[r] = true; stack[#stack + 1] = r end
+            end
           end
         end
+        sizes[#sizes + 1] = size
       end
-      sizes[#sizes + 1] = size
     end
+    local count, largest, held = 0, 0, 0
+    for _, n in ipairs(sizes) do
+      if n >= 0.05 * total then count, held = count + 1, held + n end
+      largest = math.max(largest, n)
+    end
+    return count, largest, total > 0 and 1 - held / total or 0
   end
-  local pieces = 0
-  for _, n in ipairs(sizes) do if n >= 0.05 * total then pieces = pieces + 1 end end
+  local pieces, largest = components(intact)
+  local bodies, _, loose = components(all)
   -- the faces the pull opened, their particles' peak temperatures; the cracked; the force through the middle
+  -- and where the pull cracks the free span: the share of its particles cracked now (a crumbling band cracks most
+  -- of it, two faces a few cells each), and how far from the nearer grip face the particles it cracked lie now
+  -- (the median; those the bake had cracked left out: the pull's tear, not the crust's)
   local nf, tlo, thi, cracked, force = 0, math.huge, -math.huge, 0, 0
+  local free_cracked, from_face = 0, {}
+  local left, right = xc - FACE - separation(t) / 2, xc + FACE + separation(t) / 2 -- the grips' faces now
   for k = 1, p.n do
     local x, y, id = p.x[3 * k - 2], p.x[3 * k - 1], p.id[k]
-    if p.damage[k] >= 1 then cracked = cracked + 1 end
+    if p.damage[k] >= 1 then
+      cracked = cracked + 1
+      if was_free and was_free[id] then
+        free_cracked = free_cracked + 1
+        if not was_cracked[id] then from_face[#from_face + 1] = math.min(x - left, right - x) end
+      end
+    end
     if was_inside and was_inside[id] and x > a and x < b and not inside(all, x, y) then
       nf, tlo, thi = nf + 1, math.min(tlo, peak[id]), math.max(thi, peak[id])
     end
     if math.abs(x - xc) < dx / 2 then force = force + p.stress[9 * k - 8] * v0 * p.J[k] / dx end
   end
-  return p, all, neck, pieces, nf, tlo, thi, cracked, force
+  table.sort(from_face)
+  local median = #from_face > 0 and (from_face[(#from_face + 1) // 2] + from_face[#from_face // 2 + 1]) / 2 or 0 / 0
+  return p, all, neck, pieces, nf, tlo, thi, cracked, force, nfree and free_cracked / nfree or 0,
+    largest / p.n, median, bodies, loose
 end
 
 -- out of the oven: the oven off (no air exchange: the food keeps its heat through the tear), the cup or tray
@@ -168,7 +212,13 @@ end
 local function take_out(sc)
   local p, all = measure(sc:stats().t)
   was_inside = {}
-  for k = 1, p.n do was_inside[p.id[k]] = inside(all, p.x[3 * k - 2], p.x[3 * k - 1]) end
+  was_free, was_cracked, nfree = {}, {}, 0
+  for k = 1, p.n do
+    local x, id = p.x[3 * k - 2], p.id[k]
+    was_inside[id] = inside(all, x, p.x[3 * k - 1])
+    if math.abs(x - xc) < FACE then was_free[id], nfree = true, nfree + 1 end
+    was_cracked[id] = p.damage[k] >= 1
+  end
   t0 = sc:stats().t
   if not P.raw then sc:oven(nil) end
   sc:move(support, { 0, -1 }) -- out of the scene
@@ -179,16 +229,18 @@ end
 s:at(bake, take_out)
 
 local rows = { "t,separation_m,neck_m,pieces,face_particles,face_peak_min_degC,face_peak_max_degC,cracked,"
-  .. "force_mid_N_per_m" }
+  .. "force_mid_N_per_m,free_cracked_fraction,largest_piece_share,crack_from_face_m,bodies,loose_share" }
 local every = P.pull / P.frames
 local frame = 0
 local parted -- the separation at the first frame torn through (neck 0, two pieces or more)
 s:run { until_t = bake + P.pull, every = every, on_frame = function(f)
-  local _, _, neck, pieces, nf, tlo, thi, cracked, force = measure(f.t)
+  local _, _, neck, pieces, nf, tlo, thi, cracked, force, free_cracked, largest, from_face, bodies, loose =
+    measure(f.t)
   local sep = separation(f.t)
   if t0 and not parted and pieces >= 2 then parted = sep end
-  rows[#rows + 1] = ("%.4f,%.5f,%.5f,%d,%d,%.2f,%.2f,%d,%.4g"):format(f.t, sep, neck, pieces, nf,
-    nf > 0 and tlo or 0 / 0, nf > 0 and thi or 0 / 0, cracked, force):gsub("%-nan", "nan")
+  rows[#rows + 1] = ("%.4f,%.5f,%.5f,%d,%d,%.2f,%.2f,%d,%.4g,%.4f,%.4f,%.5f,%d,%.4f"):format(f.t, sep, neck, pieces, nf,
+    nf > 0 and tlo or 0 / 0, nf > 0 and thi or 0 / 0, cracked, force, free_cracked, largest, from_face, bodies, loose)
+    :gsub("%-nan", "nan")
   h.write("tear_open.csv", table.concat(rows, "\n") .. "\n")
   if t0 and f.t >= t0 - 1e-9 then
     if frame % 5 == 0 then
