@@ -721,17 +721,17 @@ PY
     [ $? -eq 0 ] || fail "the raw $food does not stretch further than the baked one before it parts (numbers above)"
     ;;
 # #18 (helper tearclean): a torn muffin is two halves with rough faces (Ding Fig. 2), not a heap of crumbs. With
-# the muffin's two velocity fields (tear_open.lua's default for it) the cracked faces stay on their halves and the
+# the muffin's two velocity fields (--set two_field=true) the cracked faces stay on their halves and the
 # gap between them is clear: from 20 mm of separation to the end (40 mm), every frame's particles, cracked or not,
 # form exactly two bodies (one-cell bins joined to their eight neighbours, each with 5% of the particles or more:
 # crumbs left between the halves would bridge them into one) and at most 5% of the particles lie outside them
-# (crumbs fallen clear). Limits set before the runs. With one field (--set two_field=false) it fails at 4 mm (the
+# (crumbs fallen clear). Limits set before the runs. With one field (the scene's default) it fails at 4 mm (the
 # crumbs bridge the halves at 3 of the 11 frames) but passes at 3 mm, where the crumbs fall clear (4.0% loose at
 # most, under the 5%; two fields 0.4 / 0.2%): docs/validation.md, "Torn open after baking". At 4 / 3 mm.
 claim_muffin_tears_into_two_halves | claim_muffin_tears_into_two_halves_fine)
     dx=0.004
     case $case_name in *_fine) dx=0.003 ;; esac
-    run tear_open --set dx=$dx >/dev/null
+    run tear_open --set dx=$dx --set two_field=true >/dev/null
     python3 - hearth-out/tear_open/tear_open.csv $dx <<'PY'
 import csv, sys
 rows = [r for r in csv.DictReader(open(sys.argv[1])) if float(r["separation_m"]) >= 0.02 - 1e-9]
@@ -745,7 +745,8 @@ PY
     ;;
 # tear_open.lua as a user runs it, shortly: its CSV's cells are numbers (the faces' columns nan before the pull, and
 # crack_from_face_m while the pull has cracked nothing: the raw batter never cracks),
-# its frames written, and a scene it cannot build (dim=3, an unknown food, two_field neither auto, true nor false)
+# its frames written, and a scene it cannot build (dim=3, an unknown food, two_field neither true nor false, a pull
+# of no frames)
 # refused with the parameter and its range.
 baking_scene_tear_open)
     run tear_open --set raw=true --set pull=0.1 --set frames=5 >/dev/null
@@ -760,7 +761,8 @@ for r in rows:
         v = float(c)
         assert math.isfinite(v) or k.startswith("face_peak") or k == "crack_from_face_m", (k, c)
 PY
-    for bad in "dim=3:only dim=2" "food=cake:expected muffin or bread" "two_field=yes:expected auto"; do
+    for bad in "dim=3:only dim=2" "food=cake:expected muffin or bread" "two_field=yes:expected true or false" \
+               "frames=0:a whole number of frames"; do
         "$hearth" run "$scenes/tear_open.lua" --quiet --set "${bad%%:*}" >out.txt 2>err.txt && fail "--set ${bad%%:*} ran"
         grep -q "${bad#*:}" err.txt || fail "--set ${bad%%:*}: the message does not say '${bad#*:}': $(cat err.txt)"
     done

@@ -1,14 +1,14 @@
 -- Torn open after baking (Ding et al. 2019, Fig. 2 right: "a muffin torn open to reveal a fully cooked
 -- interior"; Fig. 16: "tearing of the bread after baking"): one muffin (muffins.lua's cup and preset) or one
 -- loaf (bread.lua's plain loaf and preset) is baked as those scenes bake it, taken out (the oven off, its cup or
--- tray taken away) and held by its outer quarters, which are pulled straight apart until it parts.
+-- tray taken away) and held by its outer thirds, which are pulled straight apart until it parts.
 --   hearth run scripts/scenes/baking/tear_open.lua [--set food=muffin|bread] [--set raw=true] [--set dx=...]
 --   [--set bake=...] (s; 0 = the food's own: muffin 3, muffins.lua's whole bake; bread 2.5, bread.lua's)
 --   [--set speed=0.05] (m/s, each grip) [--set pull=0.4] (s) [--set frames=20] (frames over the pull)
---   [--set two_field=auto|true|false] (the scene's two velocity fields where a crack runs, Homel & Herbold 2017,
---   core/sim/solver/mpm_two_field.c: a crack's sides part instead of moving as one; auto, the default, is true for
---   the muffin and false for the loaf, as measured below; muffins.lua and bread.lua bake with one field, so the
---   muffin's bake here is theirs but for its cracks' nodes)
+--   [--set two_field=true] (the scene's two velocity fields where a crack runs, Homel & Herbold 2017,
+--   core/sim/solver/mpm_two_field.c: a crack's sides part instead of moving as one; off by default for both
+--   foods, as muffins.lua and bread.lua bake, so the bake here is theirs; with it the muffin parts into two clean
+--   halves, the loaf parts later, measured below)
 -- raw = true pulls the same shape unbaked: the dough as it goes into the oven, at its own temperature, gripped
 -- and pulled at t = 0 alike.
 -- The pull: both grips move straight apart (x), not up or about a hinge. A hand tearing a muffin also bends the
@@ -16,8 +16,9 @@
 -- on the bending arm as much as on the crumb; a straight pull loads the whole section alike, the way pull_twist.lua
 -- (Fig. 6) loads its strips, so the baked and the raw dough are compared at the same stretch.
 -- The grips (colliders of mode "grip": they carry the particles inside them) hold everything outside the middle
--- half of the food's raw width (x < xc - w/4 and x > xc + w/4, the full height): the free span between them is
--- 25 mm (muffin, w = 50 mm) or 40 mm (loaf, w = 80 mm).
+-- third of the food's raw width (x < xc - w/6 and x > xc + w/6, the full height): the free span between them is
+-- 17 mm (muffin, w = 50 mm) or 27 mm (loaf, w = 80 mm). (With the middle half free, 25 and 40 mm, the loaf's
+-- whole middle sheared off at the grips and fell under its own weight.)
 -- Writes, under hearth-out/tear_open/: heat_%04d.png (temperature) and damage_%04d.png at the end of the bake
 -- and every fifth frame of the pull, browning.png at the end, and tear_open.csv, per frame:
 --   separation_m: how far the grips have moved apart (0 through the bake);
@@ -44,7 +45,7 @@
 --     particles outside the bodies (crumbs fallen clear).
 -- 2D only: the measures are over columns and bins of the plane.
 -- Measured (frames every 2 mm of separation; one field / two; docs/validation.md "Torn open after baking"):
---   baked muffin (3 s), dx 4 / 3 mm, two fields (the default): two pieces by 10 / 4 mm of separation (one field:
+--   baked muffin (3 s), dx 4 / 3 mm, two fields (--set two_field=true): two pieces by 10 / 4 mm of separation (one field:
 --     4 / 4), 49 / 100 cracked at 40 mm (one field 68 / 130), 52 / 58% of the free span cracked (71 / 74%), the
 --     largest piece 42 / 40% of the particles (38 / 38%); the faces' particles all reached 81.7 / 81.1 degC and more
 --     (one field 81.2 / 80.2; the batter sets from 55 degC); raw (raw = true, nothing cracks, the same either way):
@@ -52,18 +53,18 @@
 --     halves each with a rough cracked face 2-4 cells deep and a clean gap between them (two bodies from 20 mm on,
 --     0.4 / 0.2% loose); with one field the cracked band's sides share their nodes, so the free crumb between the
 --     halves falls as crumbs instead (bridging the halves into one body at 3 of 11 frames at 4 mm; 4.0% loose at 3).
---   baked loaf (2.5 s), dx 5 / 4 mm, one field (the default): two pieces by 8 / 8 mm (neck 0 by 14 / 10 mm), 109 /
+--   baked loaf (2.5 s), dx 5 / 4 mm, one field: two pieces by 8 / 8 mm (neck 0 by 14 / 10 mm), 109 /
 --     247 cracked at 40 mm; its faces all reached 81.2 degC (the crumb sets at 70; the loaf heats evenly, Biot 0.04);
 --     tension through the middle at most 57 / 51 N/m; raw: two pieces at 24 / 26 mm, at most 39 / 37 N/m. It tears
 --     at both grips' faces (a grip's edge is a stress raiser, as a hand's fingers are), starting at their feet (5 mm),
 --     and its middle strip hangs on one half (one field, 5 mm) or falls free (three pieces). Two fields clean its
 --     faces (94 / 173 cracked) but part it only by 12 / 20 mm, which the raw dough's 24 / 26 mm no longer doubles
---     at 4 mm (claim_raw_dough_stretches_before_tearing_fine), so the loaf keeps one field.
+--     at 4 mm (the contrast claim_raw_dough_stretches_before_tearing_fine asks, with one field).
 -- Cost (CPU, --threads 1, a shared 2-core machine): muffin 13 / 17 s at 4 mm, 50 / 65 s at 3 mm (one field / two);
 -- loaf 7 / 8 s at 5 mm, 13 / 17 s at 4 mm; a raw pull 1-3 s.
 local h = require "hearth"
 local P = h.params { dim = 2, food = "muffin", raw = false, dx = 0, bake = 0, speed = 0.05, pull = 0.4, frames = 20,
-  ppc = 0, two_field = "auto" }
+  ppc = 0, two_field = false }
 if P.dim ~= 2 then
   error(("--set dim=%d: tear_open.lua measures its tear over the plane's columns; only dim=2"):format(P.dim))
 end
@@ -71,12 +72,16 @@ if P.food ~= "muffin" and P.food ~= "bread" then
   error(("--set food=%s: expected muffin or bread"):format(P.food))
 end
 local muffin = P.food == "muffin"
-if P.two_field ~= "auto" and P.two_field ~= "true" and P.two_field ~= "false" then
-  error(("--set two_field=%s: expected auto (the muffin's two fields, the loaf's one), true or false")
-    :format(P.two_field))
+-- the pull's and the run's numbers, each with its valid range (0 for dx, bake and ppc: the food's own)
+local function check(name, ok, range)
+  if not ok then error(("--set %s=%s: expected %s"):format(name, tostring(P[name]), range), 2) end
 end
--- the muffin tears with two velocity fields where a crack runs, the loaf with one (measured: the header's end)
-local two_field = P.two_field == "true" or P.two_field == "auto" and muffin
+check("speed", P.speed > 0 and P.speed <= 10, "a grip speed in (0, 10] m/s")
+check("pull", P.pull > 0 and P.pull <= 100, "a pull of (0, 100] s")
+check("frames", P.frames >= 1 and P.frames <= 10000 and P.frames == math.floor(P.frames), "a whole number of frames, 1 to 10000")
+check("dx", P.dx == 0 or (P.dx >= 1e-4 and P.dx <= 0.02), "0 (the food's own) or a cell of 0.0001 to 0.02 m")
+check("bake", P.bake >= 0 and P.bake <= 100, "0 (the food's own) or a bake of up to 100 s")
+check("ppc", P.ppc >= 0 and P.ppc <= 64 and P.ppc == math.floor(P.ppc), "0 (4 a cell) or a whole number up to 64")
 local dx = P.dx > 0 and P.dx or muffin and 0.004 or 0.005 -- the food's own scene's dx
 local bake = P.raw and 0 or P.bake > 0 and P.bake or muffin and 3 or 2.5
 local oven = h.library.paper_oven[P.food]
@@ -88,7 +93,7 @@ print(("tear_open.lua: h.library.paper.%s, animation units (Ding Table 2): heat 
 local W, H = muffin and 0.14 or 0.24, muffin and 0.1 or 0.14
 local s = h.scene { dim = 2, dx = dx, box = { { 0, 0 }, { W, H } },
   oven = not P.raw and { temperature = oven.temperature, beta = oven.beta } or nil, name = "tear_open",
-  browning = true, browning_scale = oven.water_time_scale, two_field = two_field }
+  browning = true, browning_scale = oven.water_time_scale, two_field = P.two_field }
 local material = h.material("cam_clay_dough", h.library.paper[P.food])
 local xc = math.floor(W / 2 / dx + 0.5) * dx -- on a grid node, as muffins.lua's cups
 local BASE, R, FLOOR -- m: the food's floor, half its raw width, how far below BASE its support reaches
@@ -208,7 +213,7 @@ local function measure(t)
 end
 
 -- out of the oven: the oven off (no air exchange: the food keeps its heat through the tear), the cup or tray
--- taken away, the grips on the outer quarters, moving apart
+-- taken away, the grips on the outer thirds, moving apart
 local function take_out(sc)
   local p, all = measure(sc:stats().t)
   was_inside = {}
