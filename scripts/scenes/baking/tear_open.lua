@@ -20,7 +20,7 @@
 -- 17 mm (muffin, w = 50 mm) or 27 mm (loaf, w = 80 mm). (With the middle half free, 25 and 40 mm, the loaf's
 -- whole middle sheared off at the grips and fell under its own weight.)
 -- Writes, under hearth-out/tear_open/: heat_%04d.png (temperature) and damage_%04d.png at the end of the bake
--- and every fifth frame of the pull, browning.png at the end, and tear_open.csv, per frame:
+-- and every fifth frame of the pull and its last, browning.png at the end, and tear_open.csv, per frame:
 --   separation_m: how far the grips have moved apart (0 through the bake);
 --   neck_m: the thinnest section between the grips: over one-cell columns from a cell inside each grip's face,
 --     the height of the one-cell rows that hold an intact particle (damage below 1: a fully cracked particle
@@ -237,7 +237,7 @@ local rows = { "t,separation_m,neck_m,pieces,face_particles,face_peak_min_degC,f
   .. "force_mid_N_per_m,free_cracked_fraction,largest_piece_share,crack_from_face_m,bodies,loose_share" }
 local every = P.pull / P.frames
 local frame = 0
-local parted -- the separation at the first frame torn through (neck 0, two pieces or more)
+local parted -- the separation at the first frame torn through (two pieces or more)
 s:run { until_t = bake + P.pull, every = every, on_frame = function(f)
   local _, _, neck, pieces, nf, tlo, thi, cracked, force, free_cracked, largest, from_face, bodies, loose =
     measure(f.t)
@@ -248,7 +248,7 @@ s:run { until_t = bake + P.pull, every = every, on_frame = function(f)
     :gsub("%-nan", "nan")
   h.write("tear_open.csv", table.concat(rows, "\n") .. "\n")
   if t0 and f.t >= t0 - 1e-9 then
-    if frame % 5 == 0 then
+    if frame % 5 == 0 or f.t >= bake + P.pull - 1e-9 then -- and the pull's last frame, the food torn
       f:png("temperature", "heat_%04d.png", { kind = "particles" })
       f:png("damage", "damage_%04d.png", { kind = "particles", range = { 0, 1 } })
     end
@@ -256,7 +256,6 @@ s:run { until_t = bake + P.pull, every = every, on_frame = function(f)
   end
 end }
 s:png("browning", "browning.png")
-s:png("temperature", "heat_torn.png", { kind = "particles" })
 print(("%s%s: %s"):format(P.raw and "raw " or "baked ", P.food, parted and
   ("torn through at %.1f mm of separation"):format(parted * 1e3) or
   ("not torn through after %.1f mm of separation"):format(separation(bake + P.pull) * 1e3)))
