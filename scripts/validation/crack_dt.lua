@@ -13,6 +13,10 @@
 --   transfer  the scene's transfer ("apic", the default, or "pic": the affine
 --           part dropped, a dissipative transfer, to see how the answer moves
 --           with the transfer's own loss per step)
+--   field_steps  the fields' clock (core/sim/fields/field_clock.c: 0, the
+--           default, lets heat and water skip steps while the cycle stays
+--           within 0.1 of their explicit limit, which happens only at the
+--           smallest steps; 1 carries them every step, single rate)
 --   hearth run scripts/validation/crack_dt.lua --quiet [--set dx=0.004] [--set dt_max=2e-5] [--set only=0] ...
 -- from the source root (or --set bread=PATH to bread.lua).
 -- Besides bread.csv's row, every frame prints the steps so far, the step's dt,
@@ -23,7 +27,7 @@
 -- seen at the frames (smallest, largest) and the mean step.
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth = 0.02, slit_width = 0.01, only = 1,
-  cfl = 0.5, dt_max = 0, transfer = "apic", bread = "scripts/scenes/baking/bread.lua" }
+  cfl = 0.5, dt_max = 0, transfer = "apic", field_steps = 0, bread = "scripts/scenes/baking/bread.lua" }
 
 -- bread.lua's own h.params sees the values parsed here (it declares a subset of these names)
 h.params = function(defaults)
@@ -34,7 +38,7 @@ end
 
 local scene = h.scene
 h.scene = function(o)
-  o.cfl, o.dt_max, o.transfer = P.cfl, P.dt_max, P.transfer
+  o.cfl, o.dt_max, o.transfer, o.field_steps = P.cfl, P.dt_max, P.transfer, P.field_steps
   local s = scene(o)
   local methods = getmetatable(s).__index
   local run = methods.run

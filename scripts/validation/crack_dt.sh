@@ -6,7 +6,8 @@
 # (tests/bread_claims.py: rises, dries, cracks) and where the crack is
 # (scripts/validation/bread_grid.py where, last frame). A STEP is cfl=C (the CFL
 # number; the heat and water limits still cap dt) or dt_max=T (a fixed largest
-# step: uniform when below every limit). ONLY is bread.lua's only (1: the plain
+# step: uniform when below every limit), or several joined by + (dt_max=2.5e-5+field_steps=1:
+# crack_dt.lua's other switches, transfer and field_steps). ONLY is bread.lua's only (1: the plain
 # loaf alone, as the claims' tests run it; 0: the three loaves, as a user runs it).
 # KEEP (a directory) keeps each run's printout, bread.csv and CPU time under KEEP/DX/STEP.
 # Usage: scripts/validation/crack_dt.sh [BUILD_DIR] [DXS] [STEPS] [ONLY] [KEEP]
@@ -27,9 +28,11 @@ for dx in $dxs; do
     for st in $steps; do
         d=$tmp/$dx/$st
         mkdir -p "$d"
+        sets=$(echo "$st" | sed 's/+/ --set /g')
         t0=$(date +%s)
+        # shellcheck disable=SC2086 # $sets: one --set per switch
         (cd "$d" && /usr/bin/time -o time.txt -f %U "$b/app/hearth" run "$root/scripts/validation/crack_dt.lua" --quiet --set bread="$root/scripts/scenes/baking/bread.lua" \
-            --set dx="$dx" --set "$st" --set only="$only" >out.txt)
+            --set dx="$dx" --set $sets --set only="$only" >out.txt)
         echo "dx $dx, $st, only $only: $(($(date +%s) - t0)) s wall, $(tail -1 "$d/time.txt") s CPU; $(grep '^crack_dt:' "$d/out.txt")"
         csv=$d/hearth-out/crack_dt/bread.csv
         # shellcheck disable=SC2086 # each claim and its arguments, split
@@ -41,7 +44,8 @@ for dx in $dxs; do
             mkdir -p "$keep/$dx/$st"
             cp "$d/out.txt" "$d/time.txt" "$csv" "$keep/$dx/$st/"
         fi
-        last=$(ls "$d"/hearth-out/crack_dt/vtu/bread_*.vtu | tail -1)
+        last=
+        for f in "$d"/hearth-out/crack_dt/vtu/bread_*.vtu; do last=$f; done # the last frame (names sort by frame)
         python3 "$root/scripts/validation/bread_grid.py" where "$dx" "$last" | sed "s/^/dx $dx, $st, /"
     done
 done
