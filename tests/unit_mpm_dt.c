@@ -79,27 +79,38 @@ static double energy_lost(double dt, int pic) {
     return lost;
 }
 
-/* The energy APIC steps lose on a free elastic body over a fixed time at four uniform steps (dt about the
- * wave's CFL 0.28, and three halvings): measured 35, 41, 48, 57 % of it, so the loss grows as dt falls (observed
- * order in dt -0.23 .. -0.25), where an integration error of order p > 0 would shrink by 2^p; PIC, which keeps
- * no affine part, loses x2.9 of APIC's at the coarsest dt (all of the mode's energy). Checked: every loss
- * positive (the transfer never makes energy); each halving raises the loss by a factor in [1.1, 1.5]; PIC's loss
- * above APIC's. A transfer whose loss converged in dt would fail the factor (and should: this test and
- * docs/validation.md's section would then say something no longer true). */
-TEST(apic_loss_counts_steps) {
+/* A free elastic body's energy over a fixed time, at four uniform steps (dt about the wave's CFL 0.28, and three
+ * halvings), should converge as dt falls: nothing in the continuum takes energy, so what an integration of
+ * order p > 0 loses should settle, its change shrinking at each halving. Asked: each change at most 3/4 of the
+ * one before (an observed order in the changes of 0.4 or more). Measured (docs/validation.md, 'The crack over
+ * the time step'): 34.7, 40.7, 48.0, 57.2 % lost at 2.4e-4 .. 3e-5 s, the loss growing by x1.17-1.19 at each
+ * halving and its changes growing too: every P2G/G2P round trip keeps a particle's velocity up to the affine
+ * part of its neighbourhood (APIC, Jiang et al. 2015) and loses part of the rest, so the damping counts steps
+ * as well as time. Until the transfer stops doing that this is an expected failure that prints the numbers.
+ * Checked as plain claims: every loss positive (the transfer never makes energy) and PIC, which keeps no affine
+ * part, losing more than APIC. */
+TEST(apic_energy_converges_in_dt) {
     const double dts[4] = {2.4e-4, 1.2e-4, 6e-5, 3e-5};
     double lost[4];
     for (int k = 0; k < 4; k++) lost[k] = energy_lost(dts[k], 0);
     for (int k = 0; k < 4; k++) CHECK(lost[k] > 0);
-    for (int k = 0; k < 3; k++) {
-        const double order = log(lost[k] / lost[k + 1]) / log(2.0);
+    for (int k = 0; k < 3; k++)
         printf("  APIC, dt %.3g -> %.3g: energy lost x%.3f, observed order in dt %.3f\n", dts[k], dts[k + 1],
-               lost[k + 1] / lost[k], order);
-        CHECK(lost[k + 1] / lost[k] >= 1.1 && lost[k + 1] / lost[k] <= 1.5);
-    }
+               lost[k + 1] / lost[k], log(lost[k] / lost[k + 1]) / log(2.0));
     const double pic = energy_lost(dts[0], 1);
     printf("  PIC at dt %.3g loses x%.1f of APIC's\n", dts[0], pic / lost[0]);
     CHECK(pic > lost[0]);
+    int settles = 1;
+    for (int k = 0; k < 2; k++) {
+        const double ratio = fabs(lost[k + 2] - lost[k + 1]) / fabs(lost[k + 1] - lost[k]);
+        printf("  change at halving %d over the one before: %.3f (asked <= 0.75)\n", k + 2, ratio);
+        if (!(ratio <= 0.75)) settles = 0;
+    }
+    if (!settles)
+        XFAIL("the energy lost over 0.1 s does not settle as dt halves (%.1f, %.1f, %.1f, %.1f %%): APIC's "
+              "round trip damps the non-affine motion every step, so the loss counts steps as well as time "
+              "(docs/validation.md, 'The crack over the time step')",
+              100 * lost[0], 100 * lost[1], 100 * lost[2], 100 * lost[3]);
 }
 
-TEST_MAIN(T(apic_loss_counts_steps))
+TEST_MAIN(T(apic_energy_converges_in_dt))
