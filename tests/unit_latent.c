@@ -196,18 +196,32 @@ TEST(latent_heat_wet_plateau) {
     }
 }
 
-/* Where the switch cannot act it says so: SPH carries no water, and the
- * checkpoint format does not carry the switch. */
+/* SPH carries water and takes the switch (sph_water.c), but not the water's
+ * momentum nor wet colliders, and says so. */
 TEST(latent_heat_refusals) {
     hearth_scene_def d = hearth_default_scene_def();
     d.solver = HEARTH_SOLVER_SPH;
     d.latent_heat = 1;
     hearth_error err;
     hearth_scene *s = hearth_scene_create(&d, &err);
+    CHECK(s != NULL);
+    if (s) {
+        const double p[3] = {0, 0, 0}, nrm[3] = {0, 1, 0};
+        hearth_collider_def cd = hearth_default_collider_def();
+        cd.shape = hearth_shape_plane(p, nrm);
+        cd.saturation = 0.5;
+        CHECK(hearth_scene_add_collider(s, &cd, &err) < 0);
+        hearth_shape_free((hearth_shape *)cd.shape);
+        printf("  sph wet collider: %s\n", err.msg);
+        CHECK_STR_CONTAINS(err.msg, "a wet collider) needs the MPM solver");
+        hearth_scene_destroy(s);
+    }
+    d.water_momentum = 1;
+    s = hearth_scene_create(&d, &err);
     CHECK(s == NULL);
     if (s) hearth_scene_destroy(s);
     printf("  sph: %s\n", err.msg);
-    CHECK_STR_CONTAINS(err.msg, "latent_heat = true needs the water field");
+    CHECK_STR_CONTAINS(err.msg, "water_momentum = true is not carried by solver = \"sph\"");
     block b = make_block(0.004, 1, 0, WET_K);
     CHECK(hearth_scene_step(b.s, 2, &err) == HEARTH_OK);
     hearth_scene_destroy(b.s);

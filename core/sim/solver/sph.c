@@ -146,6 +146,7 @@
 #include "sph_kernel.h"
 #include "sph_state.h"
 #include "tensor.h"
+#include "water.h"
 
 /* ---- options ---------------------------------------------------------------- */
 
@@ -154,10 +155,10 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
     /* each option's range (flags 0 or 1), unit and help: settings.c's table; here the rules between options */
     hearth_status st = settings_check(d, "sph.", NULL, err);
     if (st) return st;
-    if (d->latent_heat) /* the sink is on evaporated water, and the SPH solver carries no water */
+    if (d->water_momentum) /* sph_water.c carries the water's mass, not its momentum (eq. 26-27) */
         return err_set(err, HEARTH_ERR_PARAM,
-                       "scene: latent_heat = true needs the water field, which solver = \"sph\" does not carry; use "
-                       "solver = \"mpm\" or latent_heat = false");
+                       "scene: water_momentum = true is not carried by solver = \"sph\" (its water moves no momentum); use "
+                       "solver = \"mpm\" or water_momentum = false");
     if ((st = sph_gas_check_def(o, err))) return st; /* the gas law's options, refused without it (sph_gas.c) */
     if (o->renormalised_density && o->continuity_density)
         return err_set(err, HEARTH_ERR_PARAM,
@@ -174,7 +175,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
 #define ARRAYS(X)                                                                                                      \
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(surf, 1) X(rhof, 1)                  \
         X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9) X(vc, 1)  \
-        X(vr, 1)
+        X(vr, 1) X(dW, 1) X(sw, 1) X(wd, 1) X(qo, 1)
 
 /* Frees the per-particle columns (ARRAYS, key, order) of a set sized for cap
  * particles: sph_free's set, and ensure's old set or the new one it could not
@@ -718,7 +719,23 @@ static inline double signal_speed(const struct sph_state *st, const hearth_sph_d
     return c > c0 ? c : c0;
 }
 
-/* Temperatures forward by their rates; then the drift (eq. 3.57-3.58; the
+/* Temperatures forward by their rates, the water by its (sph_water.c: with
+ * latent_heat a wet particle past the boiling point boils), then each
+ * particle's highest temperature. */
+static void phase_fields(hearth_scene *s, double dt) {
+    const struct sph_state *st = s->sph;
+    const sph_cols c = sph_cols_of(s);
+    double *T = c.T, *Tmax = c.Tmax;
+    if (T)
+        for (int i = 0; i < c.n; i++) T[i] += dt * st->dT[i];
+    sph_heat_ledger(s, dt); /* with latent_heat: the oven's heat in, for the books */
+    if (water_active(s)) sph_water_advance(s, dt);
+    if (T && Tmax)
+        for (int i = 0; i < c.n; i++)
+            if (T[i] > Tmax[i]) Tmax[i] = T[i];
+}
+
+/* The drift (eq. 3.57-3.58; the
  * second half under leapfrog), colliders and box walls with the thesis's
  * response (eq. 3.31-3.33: v = beta_c v_t - alpha_c v_n), and the report:
  * kinetic energy, the fastest particle, the largest sound speed, and the
@@ -729,15 +746,11 @@ static void phase_drift(hearth_scene *s, double dt, step_report *rep) {
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim, *flags = c.flags;
     const double *m = c.m;
-    double *x = c.x, *v = c.v, *T = c.T, *Tmax = c.Tmax;
+    double *x = c.x, *v = c.v, *T = c.T;
     const double drift = o->leapfrog ? 0.5 * dt : dt;
     double ke = 0, vmax = 0, cmax = 0;
     int fastest = -1;
     for (int i = 0; i < n; i++) {
-        if (T) {
-            T[i] += dt * st->dT[i];
-            if (Tmax && T[i] > Tmax[i]) Tmax[i] = T[i];
-        }
         double *xi = x + 3 * i, *vi = v + 3 * i;
         if (flags && (flags[i] & PF_FIXED)) { /* moved by sph_walls_end; a moving wall's speed limits dt */
             const double sp = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
@@ -830,7 +843,9 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     sph_artificial_stress(s);
     sph_forces(s, dt);
     sph_heat_rates(s); /* reads st->vc and st->sp (sph_kinematics) */
+    if (water_active(s)) sph_water_rates(s); /* after the heat: the latent sink takes from st->dT */
     phase_xsph(s);
+    phase_fields(s, dt);
     phase_drift(s, dt, rep);
     sph_walls_end(s, dt);
     st->n = n;

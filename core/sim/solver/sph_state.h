@@ -39,6 +39,8 @@ struct sph_state {
     double *rho0, *B, *mu, *c0, *xsph;
     double *vc;     /* the viscous Laplacian's renormalisation (viscous_moments), per particle this step */
     double *vr;     /* rest volume (rest_volume) per particle this step, for sph.gas_law's density sum */
+    double *dW, *sw, *wd; /* water (sph_water.c): its rate (kg/s), saturation and K theta s this step */
+    double *qo;     /* the oven's Robin heat per particle this step (W), with latent_heat (sph_heat_ledger) */
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
     double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
     double amax;    /* largest |a| of the last step, for the force limit */
@@ -165,8 +167,21 @@ double sph_stable_dt(const hearth_scene *s);
 /* ---- sph_heat.c ---- */
 /// Heat rates dT/dt into st->dT (nothing without the temperature field).
 void sph_heat_rates(hearth_scene *s);
+/// With latent_heat: the oven's Robin heat over the step into s->heat.step_oven_heat (after sph_heat_rates).
+void sph_heat_ledger(hearth_scene *s, double dt);
 /// The heat limits on dt (INFINITY when none applies); hmin, rhomin over the particles.
 double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin);
+
+/* ---- sph_water.c ---- */
+/// The water's rates into st->dW (Fick's flux through the heat's Laplacian,
+/// evaporation at surface particles) and, with latent_heat, L x evaporation
+/// out of st->dT. Only while the water field is live; after sph_heat_rates.
+void sph_water_rates(hearth_scene *s);
+/// After the temperatures moved: the water by dt st->dW, floored; with
+/// latent_heat water_boil past the boiling point; the step's removed water.
+void sph_water_advance(hearth_scene *s, double dt);
+/// The water's limits on dt (INFINITY without the water field); hmin, rhomin as the heat's.
+double sph_water_stable_dt(const hearth_scene *s, double hmin, double rhomin);
 
 /* ---- sph_gas.c ---- */
 /// With sph.gas_law: st->rhof (each particle's rest density: rho0, a bubble's
