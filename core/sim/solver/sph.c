@@ -32,7 +32,9 @@
  *   sph_heat_rates       heat (sph_heat.c): internal (3.45-3.46), external
  *                        at surface particles (3.42), the oven's Robin flux
  *                        and heated colliders' contact beta (as MPM)
+ *   sph_water_rates      water as MPM's (Ding eq. 8, 22; sph_water.c)
  *   phase_xsph           XSPH (3.34 with the tuner of 4.4)
+ *   phase_fields         temperatures and water forward; boiling
  *   phase_drift          drift (3.57-3.58), colliders and walls with the
  *                        thesis's response (3.31-3.33)
  *   sph_walls_end        moving fixed bodies move rigidly (sph_walls.c)
@@ -86,12 +88,13 @@
  *
  * Shared with MPM: particles, plugins through the material door (porosity from
  * plastic_J for a material that needs it; no saturation: a material that needs
- * it is refused when added), colliders, probes, outputs, the oven's Robin flux
+ * it is refused when added), water (sph_water.c: MPM's law and column, its
+ * evaporation and latent sink), colliders, probes, outputs, the oven's Robin flux
  * and heated colliders' contact beta (each surface particle carries its face
  * V^((d-1)/d) of oven surface, a particle within its spacing of a heated
  * collider the same face of contact; `sph_oven_robin`). Not shared: conduction
  * parameters (eq. 3.45 uses `sph.heat_int`), thermal expansion and CO2 (not
- * applied), water, collider friction and the slip/separate distinction (both
+ * applied), wet colliders and the water's momentum (refused), collider friction and the slip/separate distinction (both
  * take the thesis response; beta_c plays friction's part; sticky is sticky,
  * and so is a grip, which carries no particles here). A rollback restores the
  * particles but not the final densities of eq. 3.52.
@@ -719,9 +722,8 @@ static inline double signal_speed(const struct sph_state *st, const hearth_sph_d
     return c > c0 ? c : c0;
 }
 
-/* Temperatures forward by their rates, the water by its (sph_water.c: with
- * latent_heat a wet particle past the boiling point boils), then each
- * particle's highest temperature. */
+/* Temperatures and water forward (sph_water.c: with latent_heat a wet
+ * particle past the boiling point boils), then the highest temperatures. */
 static void phase_fields(hearth_scene *s, double dt) {
     const struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
@@ -895,7 +897,8 @@ const solver sph_solver = {
     .region = sph_region,
     .bytes_per_particle = sph_bytes_per_particle,
     .particle_values = sph_particle_values,
-    /* temperature from the heat field, porosity from plastic_J (phase_stress); no water */
+    /* temperature from the heat field, porosity from plastic_J (phase_stress); the water field
+     * (sph_water.c) is not handed to plugins as their point's saturation */
     .supplies = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY,
     .can_checkpoint = 0, /* its options and final densities (eq. 3.52) are not in the format yet */
     .uses_grid = 0,      /* neighbours come from its own cell list (sph_neighbours.c) */
