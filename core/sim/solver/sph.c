@@ -178,7 +178,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
 #define ARRAYS(X)                                                                                                      \
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(surf, 1) X(rhof, 1)                  \
         X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9) X(vc, 1)  \
-        X(vr, 1) X(dW, 1) X(sw, 1) X(wd, 1) X(qo, 1)
+        X(vr, 1)
 
 /* Frees the per-particle columns (ARRAYS, key, order) of a set sized for cap
  * particles: sph_free's set, and ensure's old set or the new one it could not
@@ -202,6 +202,7 @@ static void sph_free(hearth_scene *s) {
     mem_free(st->pairm, sizeof(int) * st->pairm_cap);
     arrays_free(st, st->cap);
     mem_free(st->visc_index, sizeof(int) * (size_t)st->visc_cap);
+    sph_water_free(st);
     mem_free(st, sizeof *st);
     s->sph = NULL;
 }
@@ -825,6 +826,7 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     rep->fastest = -1;
     rep->mover = -1;
     hearth_status e = ensure(s, n > 0 ? n : 1, err);
+    if (!e) e = sph_water_ensure(s, n > 0 ? n : 1, err); /* only with water or latent_heat */
     if (e) return e;
     struct sph_state *st = s->sph;
     if (st->n != n) /* particles added or removed since the last step: final densities start over */
@@ -867,7 +869,7 @@ const double *sph_particle_values(const hearth_scene *s, const char *which) {
 
 /* What ensure() and the neighbour lists keep per particle: the ARRAYS
  * doubles and the sort's key and order, each with ensure's 1/4 margin; the
- * lists' offsets, and per entry for the neighbours within the support
+ * lists' offsets, the water's doubles when it is live, and per entry for the neighbours within the support
  * h = h_factor V0^(1/dim) (the lattice points of a disc or ball of radius h,
  * with the 1/4 margin) its index, its pair slot (an int) and its pair terms
  * (dim + 1 doubles; sph_pairs_prepare). Adaptive h (sph.adaptive_h) may grow the
@@ -879,7 +881,8 @@ static double sph_bytes_per_particle(const hearth_scene *s) {
     const double hf = s->def.sph.h_factor;
     const double nb = s->def.dim == 3 ? 4.0 / 3.0 * SPH_PI * hf * hf * hf : SPH_PI * hf * hf;
     const double entry = 2 * sizeof(int) + (s->def.dim + 1) * sizeof(double);
-    return 1.25 * (doubles * sizeof(double) + 2 * sizeof(int)) + sizeof(int) + 1.25 * nb * entry;
+    const double water = sph_water_live(s) ? SPH_WATER_ARRAYS : 0; /* sph_water_ensure's, with the same margin */
+    return 1.25 * ((doubles + water) * sizeof(double) + 2 * sizeof(int)) + sizeof(int) + 1.25 * nb * entry;
 }
 
 /* No grid, so no margin: particles may fill the whole box. */

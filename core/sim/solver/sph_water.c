@@ -47,12 +47,44 @@
  * sph_check_def and solver_accepts refuse them. */
 #include <math.h>
 
+#include "alloc.h"
+#include "error.h"
 #include "material.h"
 #include "physics_constants.h"
 #include "sph_kernel.h"
 #include "sph_neighbours.h"
 #include "sph_state.h"
 #include "water.h"
+
+int sph_water_live(const hearth_scene *s) { return water_active(s) || s->def.latent_heat; }
+
+void sph_water_free(struct sph_state *st) {
+    const size_t c = (size_t)st->wcap;
+    mem_free(st->dW, sizeof(double) * c);
+    mem_free(st->sw, sizeof(double) * c);
+    mem_free(st->wd, sizeof(double) * c);
+    mem_free(st->qo, sizeof(double) * c);
+    st->dW = st->sw = st->wd = st->qo = NULL;
+    st->wcap = 0;
+}
+
+/* Recomputed every step, so a larger set starts empty: nothing is carried
+ * over, and a scene without water or latent_heat keeps none (it pays only
+ * for the physics it uses). */
+hearth_status sph_water_ensure(hearth_scene *s, int n, hearth_error *err) {
+    struct sph_state *st = s->sph;
+    if (!sph_water_live(s) || n <= st->wcap) return HEARTH_OK;
+    sph_water_free(st);
+    const int cap = n + n / 4 + 16;
+    const size_t b = sizeof(double) * (size_t)cap;
+    st->dW = mem_calloc(b), st->sw = mem_calloc(b), st->wd = mem_calloc(b), st->qo = mem_calloc(b);
+    st->wcap = cap;
+    if (!st->dW || !st->sw || !st->wd || !st->qo) {
+        sph_water_free(st);
+        return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory for the water of %d particles", n);
+    }
+    return HEARTH_OK;
+}
 
 /* Fills st->sw with each particle's saturation and st->dW with its water's
  * rate (kg/s); with latent_heat takes L e_i from st->dT (sph_heat_rates ran). */
