@@ -532,8 +532,8 @@ static int phase_stress(hearth_scene *s, double dt, step_report *rep) {
         pt.state = c.state ? c.state + (size_t)i * stride : NULL;
         /* The porosity as MPM gives it, n^p = 1 - (1 - n^p_0) / J^P from the plugin's plastic_J at the
          * start of the step, to a material that needs it (cam_clay_dough's yield surface); NaN to
-         * the rest, which do not read it. No water: a material that needs the saturation is
-         * refused when added (sph_solver.supplies). None of the core's coupling terms: they are
+         * the rest, which do not read it. No saturation: sph_water.c's water is not handed to a
+         * plugin; a material that needs it is refused when added (sph_solver.supplies). None of the core's coupling terms: they are
          * isotropic, and SPH keeps only the deviator (Tait gives the pressure). */
         const material_env env = {
             .flags = (ms->m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u) | (ms->fracture ? MATERIAL_DAMAGE : 0u),
