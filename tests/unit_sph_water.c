@@ -6,8 +6,10 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "alloc.h"
 #include "browning.h"
 #include "sph_fixture.h"
+#include "sph_state.h"
 #include "test.h"
 #include "water.h"
 #include "water_reference.h"
@@ -350,5 +352,54 @@ TEST(sph_browning_reads_water) {
     CHECK(t1 > 0.01 && t1 < t0);
 }
 
+/* ---- out of memory ------------------------------------------------------- */
+
+/* Every allocation of a wet SPH scene with latent_heat fails in turn (the
+ * water's arrays among them, sph_water_ensure): each failure is reported as
+ * NOMEM, the scene is freed whole, and the first k that succeeds steps. */
+TEST(sph_water_alloc_failures) {
+    const size_t base = hearth_bytes_allocated();
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.2, 0.2, 0};
+    int failures = 0, ok = 0;
+    for (long k = 0; k < 400 && !ok; k++) {
+        hearth_scene_def d = sph_def(2, 0.01, lo, hi);
+        d.oven_temperature = 180;
+        d.latent_heat = 1;
+        mem_fail_after(k);
+        hearth_error err = {0};
+        hearth_scene *s = hearth_scene_create(&d, &err);
+        ok = s != NULL;
+        int m = -1;
+        if (ok) {
+            const char *n[] = {"density", "bulk", "viscosity", "water_diffusivity", "evaporation"};
+            const double v[] = {1000, 1e4, 0.1, 1e-9, 1e-5};
+            m = hearth_scene_add_material(s, "newtonian", n, v, 5, &err);
+        }
+        ok = ok && m >= 0;
+        const double c[3] = {0.1, 0.1, 0}, h[3] = {0.05, 0.05, 0.5};
+        hearth_shape *b = hearth_shape_box(c, h);
+        hearth_body_def bd = hearth_default_body_def();
+        bd.shape = b, bd.material = m, bd.ppc = 1, bd.jitter = 0, bd.temperature = 20, bd.saturation = 0.5;
+        ok = ok && b && hearth_scene_add_body(s, &bd, &err) >= 0;
+        const int shape_nomem = !b; /* a shape's allocation has no error to report */
+        hearth_shape_free(b);
+        ok = ok && hearth_scene_step(s, 2, &err) == HEARTH_OK;
+        mem_fail_after(-1);
+        if (!ok) {
+            failures++;
+            if (!(err.code == HEARTH_ERR_NOMEM || shape_nomem)) fprintf(stderr, "  failure %ld: %s\n", k, err.msg);
+            CHECK(err.code == HEARTH_ERR_NOMEM || shape_nomem);
+        } else {
+            CHECK(s->sph->wcap >= s->ps.n && s->sph->dW != NULL);
+        }
+        hearth_scene_destroy(s);
+        CHECK(hearth_bytes_allocated() <= base + 4096); /* the plugin cache may keep its first entry */
+    }
+    printf("  %d injected failures reported cleanly before a run succeeded\n", failures);
+    CHECK(ok);
+    CHECK(failures > 10);
+}
+
 TEST_MAIN(T(sph_water_sheet_robin_converges), T(sph_water_sheet_3d_converges), T(sph_water_drying_vs_fd), T(sph_water_conserves),
-          T(sph_latent_heat_energy_balance), T(sph_browning_reads_water))
+          T(sph_latent_heat_energy_balance), T(sph_browning_reads_water),
+          T(sph_water_alloc_failures))

@@ -93,7 +93,7 @@
  * and heated colliders' contact beta (each surface particle carries its face
  * V^((d-1)/d) of oven surface, a particle within its spacing of a heated
  * collider the same face of contact; `sph_oven_robin`). Not shared: conduction
- * parameters (eq. 3.45 uses `sph.heat_int`), thermal expansion and CO2 (not
+ * parameters (eq. 3.45 uses `sph.heat_int`), thermal expansion, CO2 and water pressure (eq. 14) (not
  * applied), wet colliders and the water's momentum (refused), collider friction and the slip/separate distinction (both
  * take the thesis response; beta_c plays friction's part; sticky is sticky,
  * and so is a grip, which carries no particles here). A rollback restores the
