@@ -30,7 +30,10 @@
  *   Robin heat gives it, V^((d-1)/d) of its rest volume V = m / rho_0, and
  *   its sample lies half a spacing inside that face (the lattice's surface
  *   is half a spacing past its last row), toward the oven's ambient
- *   saturation s_amb.
+ *   saturation s_amb. The flag does not tell air from a tray: a face
+ *   resting on a collider evaporates too, as it takes the oven's Robin heat
+ *   (sph_heat.c); MPM's boundary.c takes contact faces out of the air
+ *   surface, which SPH has no measure for yet.
  * - with the scene's latent_heat, e_i takes L e_i / (m_i c_i) from dT_i
  *   (MPM takes L e_p from the nodes around particle p, transport.c); once the
  *   temperatures moved, a wet particle past the boiling point boils its
