@@ -296,6 +296,103 @@ TEST(sph_latent_heat_energy_balance) {
     CHECK(share[0] > 0.2 && share[1] > 0.2);
 }
 
+/* ---- the crumb's plateau ---------------------------------------------------
+ * unit_latent.c's latent_heat_crumb_plateau on SPH: a wet slab of bread dough
+ * (rho 484, c 2700, kappa 0.51, water 218 kg/m^3) 2H = 20 mm thick, pinned,
+ * periodic along x (a 1D problem), both faces in a 200 degC oven of beta 40,
+ * latent_heat on, no surface evaporation (water leaves by boiling alone, so
+ * the 1D enthalpy reference boil_front_fd applies). SPH's conduction is
+ * eq. 3.45 with k_h,int = kappa / c. */
+#define PL_RHO 484.0
+#define PL_C 2700.0
+#define PL_K 0.51
+#define PL_S 0.218
+#define PL_H 0.01
+#define PL_OVEN 200.0
+#define PL_BETA 40.0
+
+static void plateau_run(int across, int latent, double until, double every, double *t_hot, double *t_dry, double *lo_T,
+                        double *hi_T, double *top_at_dry, double *centre_end) {
+    const double dx = 2 * PL_H / across, y0 = 4 * dx;
+    const double lo[3] = {0, 0, 0}, hi[3] = {8 * dx, 2 * PL_H + 8 * dx, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[1] = 0;
+    d.sph.periodic[0] = 1;
+    d.sph.heat_ext = 0;
+    d.sph.heat_int = PL_K / PL_C;
+    d.oven_temperature = PL_OVEN;
+    d.oven_beta = PL_BETA;
+    d.latent_heat = latent;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    CHECK(s != NULL);
+    if (!s) return;
+    const char *n[] = {"density", "bulk", "viscosity", "specific_heat", "water_diffusivity"};
+    const double v[] = {PL_RHO, 1, 1e-3, PL_C, 1e-15}; /* pinned: soft and thin; next to no water diffusion */
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "newtonian", n, v, 5, &err);
+    CHECK(m >= 0);
+    const double c[3] = {4 * dx, y0 + PL_H, 0}, hh[3] = {4 * dx, PL_H, 0.5};
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = hearth_shape_box(c, hh);
+    bd.material = m, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1, bd.temperature = 20, bd.saturation = PL_S;
+    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    hearth_shape_free((hearth_shape *)bd.shape);
+    *t_hot = *t_dry = *top_at_dry = NAN, *lo_T = INFINITY, *hi_T = -INFINITY;
+    for (int k = 1; k * every <= until + 1e-9; k++) {
+        CHECK(hearth_scene_advance(s, k * every, &err) == HEARTH_OK);
+        const double *X = pcold(&s->ps, PC_X), *T = pcold(&s->ps, PC_TEMPERATURE), t = hearth_scene_time(s);
+        /* the centre: the row nearest the middle plane (two rows share it when across is even: their mean) */
+        double Tc = 0, sc = 0, Tt = -INFINITY;
+        int nc = 0;
+        for (int i = 0; i < s->ps.n; i++) {
+            const double y = X[3 * i + 1] - (y0 + PL_H);
+            if (fabs(y) < 0.6 * dx) Tc += T[i], sc += water_saturation(s, i), nc++;
+            if (y > PL_H - dx) Tt = fmax(Tt, T[i]);
+        }
+        Tc /= nc, sc /= nc;
+        if (isnan(*t_dry) && sc < 0.5 * PL_S) *t_dry = t, *top_at_dry = Tt;
+        if (isnan(*t_hot) && Tc > 99) *t_hot = t;
+        if (!isnan(*t_hot) && isnan(*t_dry)) *lo_T = fmin(*lo_T, Tc), *hi_T = fmax(*hi_T, Tc);
+        *centre_end = Tc;
+    }
+    hearth_scene_destroy(s);
+}
+
+/* The centre climbs to 100 degC and holds there while it holds water (never
+ * above), until the front reaches it when the 1D reference says (closer at
+ * the finer spacing); the dried top has climbed past 130 (the reference's
+ * 143 degC then); without the switch
+ * the centre passes 100 degC with no plateau. At 10 and 20 particles
+ * through the slab. */
+TEST(sph_latent_heat_crumb_plateau) {
+    double surf_fd;
+    const double t_fd = boil_front_fd(200, PL_H, PL_RHO, PL_C, PL_K, PL_S * 1000, PL_OVEN, PL_BETA, &surf_fd);
+    printf("  the centre dries at %.0f s by the 1D reference (top %.1f degC then)\n", t_fd, surf_fd);
+    double err[2];
+    for (int r = 0; r < 2; r++) {
+        const int across = r ? 20 : 10;
+        double t_hot, t_dry, lo_T, hi_T, top, end, o_hot, o_dry, o_lo, o_hi, o_top, o_end;
+        plateau_run(across, 1, 2400, 20, &t_hot, &t_dry, &lo_T, &hi_T, &top, &end);
+        plateau_run(across, 0, 800, 20, &o_hot, &o_dry, &o_lo, &o_hi, &o_top, &o_end);
+        err[r] = (t_dry - t_fd) / t_fd;
+        printf("  %d across: centre above 99 degC at %.0f s, half dry at %.0f s (%+.1f%% off the reference); plateau %.3f .. "
+               "%.6f degC; top %.1f degC then; without latent heat the centre passed 99 degC at %.0f s and is %.1f degC "
+               "at 800 s\n",
+               across, t_hot, t_dry, 100 * err[r], lo_T, hi_T, top, o_hot, o_end);
+        CHECK(!isnan(t_hot) && !isnan(t_dry));
+        CHECK(t_dry - t_hot > 600);             /* a plateau of minutes */
+        CHECK(lo_T > 99 && hi_T <= 100 + 1e-9); /* at the boiling point, never above */
+        /* the front reaches the centre when the reference says: MPM's bars (latent_heat_crumb_plateau)
+         * at 20 across; at 10 the kernel's support, 2.4 spacings = 4.8 mm, is half the half-thickness,
+         * and the boiling is smeared over it (-15.2% measured, MPM's 12% not met): 20% there */
+        CHECK(fabs(err[r]) < (r ? 0.08 : 0.20));
+        CHECK(top > 130);                       /* the dried crust climbs (reference: surf_fd) */
+        CHECK(!isnan(o_hot) && o_hot < t_hot && o_end > 150); /* without the switch: no plateau */
+    }
+    printf("  drying time error %.1f%% -> %.1f%%\n", 100 * err[0], 100 * err[1]);
+    CHECK(fabs(err[1]) < fabs(err[0]));
+}
+
 /* ---- browning reads SPH's saturation ------------------------------------- */
 
 /* Pinned blocks held at 180 degC (no oven, no conduction: nothing moves their
@@ -405,5 +502,5 @@ TEST(sph_water_alloc_failures) {
 }
 
 TEST_MAIN(T(sph_water_sheet_robin_converges), T(sph_water_sheet_3d_converges), T(sph_water_drying_vs_fd), T(sph_water_conserves),
-          T(sph_latent_heat_energy_balance), T(sph_browning_reads_water),
+          T(sph_latent_heat_energy_balance), T(sph_latent_heat_crumb_plateau), T(sph_browning_reads_water),
           T(sph_water_alloc_failures))

@@ -1,9 +1,11 @@
 /* water_reference.h: closed forms and a 1D reference for the water tests of
- * both solvers (unit_water.c: MPM; unit_sph_water.c: SPH). */
+ * both solvers (unit_water.c, unit_latent.c: MPM; unit_sph_water.c: SPH). */
 #ifndef HEARTH_WATER_REFERENCE_H
 #define HEARTH_WATER_REFERENCE_H
 #include <math.h>
 #include <stdlib.h>
+
+#include "hearth/hearth.h" /* HEARTH_LATENT_HEAT */
 
 #ifndef PI
 #define PI 3.14159265358979323846
@@ -67,6 +69,36 @@ static inline void drying_fd(int N, double a, double Kth, double bth, double rho
         frac[k] = w / (N * s0);
     }
     free(s), free(sn), free(lo), free(di), free(up), free(rhs);
+}
+
+/* A wet slab's boiling front by a 1D enthalpy-method reference (unit_latent.c,
+ * unit_sph_water.c): n cells across the half thickness H, Robin (beta, oven
+ * Tov) at the outer face through half a cell, symmetry at the centre,
+ * density rho, heat capacity c, conductivity k, water w0 kg/m^3, from 20
+ * degC; forward Euler, each cell boiling at 100 degC as water.c's water_boil
+ * does. Returns when the innermost cell is half dry; *surf the outer face's
+ * temperature then. */
+static inline double boil_front_fd(int n, double H, double rho, double c, double k, double w0, double Tov, double beta,
+                                   double *surf) {
+    const double dx = H / n, dt = 0.2 * rho * c * dx * dx / k;
+    double T[400], W[400], q[401] = {0}, t = 0;
+    for (int i = 0; i < n; i++) T[i] = 20, W[i] = w0;
+    while (W[n - 1] > 0.5 * w0 && t < 1e5) {
+        q[0] = (Tov - T[0]) / (1.0 / beta + 0.5 * dx / k);
+        for (int i = 1; i < n; i++) q[i] = k * (T[i - 1] - T[i]) / dx;
+        q[n] = 0;
+        for (int i = 0; i < n; i++) {
+            T[i] += dt * (q[i] - q[i + 1]) / (rho * c * dx);
+            if (T[i] > 100 && W[i] > 0) {
+                const double e = rho * c * (T[i] - 100) / HEARTH_LATENT_HEAT;
+                if (e < W[i]) W[i] -= e, T[i] = 100;
+                else T[i] -= W[i] * HEARTH_LATENT_HEAT / (rho * c), W[i] = 0;
+            }
+        }
+        t += dt;
+    }
+    *surf = T[0] + 0.5 * dx * q[0] / k;
+    return t;
 }
 
 #endif
