@@ -83,10 +83,13 @@ int water_material_wants(const hearth_scene *s, int mat) {
            (ms->m->needs & HEARTH_NEEDS_SATURATION);
 }
 
-static double capacity(const hearth_scene *s, int i) { /* rho_0^w J V_0: water mass at saturation 1 */
+/* rho_0^w J V_0: water mass at saturation 1. On SPH J is 1 (sph_water_volume,
+ * water.h says why). */
+static double capacity(const hearth_scene *s, int i) {
     const particles *ps = &s->ps;
     const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
-    return ms->core[CP_WATER_DENSITY] * particles_J(ps, i) * pcold(ps, PC_VOL0)[i];
+    const double J = s->def.solver == HEARTH_SOLVER_SPH ? 1.0 : particles_J(ps, i);
+    return ms->core[CP_WATER_DENSITY] * J * pcold(ps, PC_VOL0)[i];
 }
 
 double water_saturation(const hearth_scene *s, int i) { return pcold(&s->ps, PC_WATER)[i] / capacity(s, i); }

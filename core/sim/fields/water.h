@@ -99,7 +99,13 @@ double water_dt_limit(const struct hearth_scene *s);
 /// Once a step stands: raise each particle's PC_DRIED (1 - the lowest moisture ratio reached) to its
 /// present dryness. The column must exist (an irreversible moisture curve enables it).
 void water_dried_step(struct hearth_scene *s);
-/// Saturation of particle i (from its water mass and current volume).
+/// Saturation of particle i (from its water mass and current volume, J V_0).
+/// On SPH the volume is the rest volume V_0: its dough is weakly compressible
+/// (Tait holds its density near rho_0), and the det of the F that SPH
+/// integrates from eq. 3.27's velocity gradient drifts where the kernel is cut
+/// by the free surface (a block slumping on a tray: J 1.15 along its top row,
+/// 0.84 at its bottom corners after 0.5 s, 1.00 inside), which read as
+/// drying (s 0.70 of 0.8, no water lost) and wetting (0.95).
 double water_saturation(const struct hearth_scene *s, int i);
 /// After P2G (water mass and capacity scattered, eq. 15, 18): node
 /// saturations, and the wet colliders' held values. transport_apply then

@@ -5,8 +5,9 @@
  *
  * Live only when a material asks for water (water_material_wants, as in
  * MPM): each particle carries its water mass in PC_WATER, MPM's column, and
- * its saturation is water_saturation's, m^w / (rho_0^w J V_0), J = det F of
- * the F that phase_stress keeps. Per step:
+ * its saturation is water_saturation's, m^w / (rho_0^w V_0) on SPH: the rest
+ * volume, not J V_0 (water.h says why: SPH's det F drifts at the surface).
+ * Per step:
  *
  *   dm^w_i/dt = sum_j rho_0^w D_ij 4 m_i m_j / (rho_i + rho_j)^2 c_ij L_ij (s_j - s_i)
  *               - [i on the surface] e_i,
@@ -149,7 +150,7 @@ void sph_water_advance(hearth_scene *s, double dt) {
     const double boil = s->def.latent_heat && T ? s->def.boiling_point : INFINITY;
     for (int i = 0; i < c.n; i++) {
         const material_slot *ms = &s->mats.slot[c.mat[i]];
-        const double vol = particles_J(&s->ps, i) * c.V0[i], cap = ms->core[CP_WATER_DENSITY] * vol, before = W[i];
+        const double vol = c.V0[i], cap = ms->core[CP_WATER_DENSITY] * vol, before = W[i]; /* V_0: water_saturation's */
         double w = before + dt * st->dW[i];
         if (w < WATER_SATURATION_FLOOR * cap) w = WATER_SATURATION_FLOOR * cap;
         W[i] = w;
