@@ -453,6 +453,46 @@ TEST(sph_browning_reads_water) {
     CHECK(t1 > 0.01 && t1 < t0);
 }
 
+/* ---- saturation over the rest volume -------------------------------------- */
+
+/* A wet block (s 0.8, evaporation off, diffusion next to none) slumping on a
+ * tray for 0.5 s: SPH's det F drifts where the kernel is cut by the free
+ * surface (checked: by more than 5% somewhere), but no water moved, so every
+ * particle's saturation is still 0.8 (water.h: SPH's saturation is over V_0). */
+TEST(sph_water_saturation_ignores_surface_J) {
+    const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.06, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    CHECK(s != NULL);
+    if (!s) return;
+    const char *n[] = {"density", "bulk", "viscosity", "water_diffusivity"};
+    const double v[] = {500, 1e4, 5.0, 1e-15};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
+    CHECK(m >= 0);
+    double pt[3] = {0, 0.01, 0}, nrm[3] = {0, 1, 0};
+    hearth_collider_def cd = hearth_default_collider_def();
+    cd.shape = hearth_shape_plane(pt, nrm);
+    CHECK(hearth_scene_add_collider(s, &cd, &err) >= 0);
+    hearth_shape_free((hearth_shape *)cd.shape);
+    const double c[3] = {0.05, 0.021, 0}, hh[3] = {0.02, 0.01, 0.5};
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = hearth_shape_box(c, hh);
+    bd.material = m, bd.ppc = 1, bd.jitter = 0, bd.saturation = 0.8;
+    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    hearth_shape_free((hearth_shape *)bd.shape);
+    CHECK(hearth_scene_advance(s, 0.5, &err) == HEARTH_OK);
+    double jdev = 0, sdev = 0;
+    for (int i = 0; i < s->ps.n; i++) {
+        jdev = fmax(jdev, fabs(particles_J(&s->ps, i) - 1));
+        sdev = fmax(sdev, fabs(water_saturation(s, i) - 0.8));
+    }
+    printf("  after %.2f s: largest |J - 1| %.3f, largest |s - 0.8| %.3g\n", hearth_scene_time(s), jdev, sdev);
+    CHECK(jdev > 0.05);
+    CHECK(sdev < 1e-12);
+    hearth_scene_destroy(s);
+}
+
 /* ---- out of memory ------------------------------------------------------- */
 
 /* Every allocation of a wet SPH scene with latent_heat fails in turn (the
@@ -503,4 +543,4 @@ TEST(sph_water_alloc_failures) {
 
 TEST_MAIN(T(sph_water_sheet_robin_converges), T(sph_water_sheet_3d_converges), T(sph_water_drying_vs_fd), T(sph_water_conserves),
           T(sph_latent_heat_energy_balance), T(sph_latent_heat_crumb_plateau), T(sph_browning_reads_water),
-          T(sph_water_alloc_failures))
+          T(sph_water_saturation_ignores_surface_J), T(sph_water_alloc_failures))
