@@ -19,6 +19,7 @@
 
 #include "mpm_fixture.h"
 #include "water.h"
+#include "water_reference.h"
 
 #define KELVIN 273.15
 #define OVEN_T 200.0
@@ -196,18 +197,32 @@ TEST(latent_heat_wet_plateau) {
     }
 }
 
-/* Where the switch cannot act it says so: SPH carries no water, and the
- * checkpoint format does not carry the switch. */
+/* SPH carries water and takes the switch (sph_water.c), but not the water's
+ * momentum nor wet colliders, and says so. */
 TEST(latent_heat_refusals) {
     hearth_scene_def d = hearth_default_scene_def();
     d.solver = HEARTH_SOLVER_SPH;
     d.latent_heat = 1;
     hearth_error err;
     hearth_scene *s = hearth_scene_create(&d, &err);
+    CHECK(s != NULL);
+    if (s) {
+        const double p[3] = {0, 0, 0}, nrm[3] = {0, 1, 0};
+        hearth_collider_def cd = hearth_default_collider_def();
+        cd.shape = hearth_shape_plane(p, nrm);
+        cd.saturation = 0.5;
+        CHECK(hearth_scene_add_collider(s, &cd, &err) < 0);
+        hearth_shape_free((hearth_shape *)cd.shape);
+        printf("  sph wet collider: %s\n", err.msg);
+        CHECK_STR_CONTAINS(err.msg, "a wet collider) needs the MPM solver");
+        hearth_scene_destroy(s);
+    }
+    d.water_momentum = 1;
+    s = hearth_scene_create(&d, &err);
     CHECK(s == NULL);
     if (s) hearth_scene_destroy(s);
     printf("  sph: %s\n", err.msg);
-    CHECK_STR_CONTAINS(err.msg, "latent_heat = true needs the water field");
+    CHECK_STR_CONTAINS(err.msg, "water_momentum = true is not carried by solver = \"sph\"");
     block b = make_block(0.004, 1, 0, WET_K);
     CHECK(hearth_scene_step(b.s, 2, &err) == HEARTH_OK);
     hearth_scene_destroy(b.s);
@@ -364,30 +379,10 @@ static double front_time(double X) {
     return t * X / (3.0 * n);
 }
 
-/* The same front by a 1D enthalpy-method reference: n cells across the half
- * thickness, Robin at the outer face (through half a cell), symmetry at the
- * centre, forward Euler, each cell boiling as water_boil does. Returns when
- * the innermost cell is half dry; *surf the outer face's temperature then. */
+/* The same front by the 1D enthalpy-method reference (water_reference.h,
+ * boil_front_fd) with this slab's numbers. */
 static double front_fd(int n, double *surf) {
-    const double dx = SLAB_H / n, dt = 0.2 * SLAB_RHO * SLAB_C * dx * dx / SLAB_K, w0 = SLAB_S * 1000.0;
-    double T[400], W[400], q[401] = {0}, t = 0;
-    for (int i = 0; i < n; i++) T[i] = 20, W[i] = w0;
-    while (W[n - 1] > 0.5 * w0 && t < 1e5) {
-        q[0] = (OVEN_T - T[0]) / (1.0 / OVEN_BETA + 0.5 * dx / SLAB_K);
-        for (int i = 1; i < n; i++) q[i] = SLAB_K * (T[i - 1] - T[i]) / dx;
-        q[n] = 0;
-        for (int i = 0; i < n; i++) {
-            T[i] += dt * (q[i] - q[i + 1]) / (SLAB_RHO * SLAB_C * dx);
-            if (T[i] > 100 && W[i] > 0) {
-                const double e = SLAB_RHO * SLAB_C * (T[i] - 100) / HEARTH_LATENT_HEAT;
-                if (e < W[i]) W[i] -= e, T[i] = 100;
-                else T[i] -= W[i] * HEARTH_LATENT_HEAT / (SLAB_RHO * SLAB_C), W[i] = 0;
-            }
-        }
-        t += dt;
-    }
-    *surf = T[0] + 0.5 * dx * q[0] / SLAB_K;
-    return t;
+    return boil_front_fd(n, SLAB_H, SLAB_RHO, SLAB_C, SLAB_K, SLAB_S * 1000.0, OVEN_T, OVEN_BETA, surf);
 }
 
 /* A wet slab of bread dough in a 200 degC oven: with latent heat (and its

@@ -608,6 +608,13 @@ int hearth_scene_add_collider(hearth_scene *s, const hearth_collider_def *def, h
         err_set(err, HEARTH_ERR_PARAM, "collider: beta = inf (held temperature) needs the MPM solver; this scene's solver is SPH");
         return -1;
     }
+    if (!isnan(def->saturation) && s->def.solver != HEARTH_SOLVER_MPM) { /* water.c holds it on the MPM grid */
+        collider_free(&s->cols[s->ncol]);
+        err_set(err, HEARTH_ERR_PARAM,
+                "collider: saturation = %g (a wet collider) needs the MPM solver; this scene's solver is SPH, whose water "
+                "leaves only through its free surface", def->saturation);
+        return -1;
+    }
     if (!isnan(def->saturation) && water_enable(s, err)) { /* a wet collider makes water live */
         collider_free(&s->cols[s->ncol]);
         return -1;

@@ -78,12 +78,12 @@ static const hearth_setting settings[] = {
     FLAG("water_momentum", "the water's motion relative to the solid carries momentum (Ding et al. eq. 26-27)",
          water_momentum),
     FLAG("latent_heat", "evaporated water takes 2.26 MJ/kg (water's latent heat near 100 degC) from the heat of the particle "
-         "it leaves, and a wet particle does not heat past boiling_point but boils its water (MPM; beyond Ding et al. eq. 9): "
+         "it leaves, and a wet particle does not heat past boiling_point but boils its water (both solvers; beyond Ding et al. eq. 9): "
          "a wet crumb holds at the boiling point, a dry crust heats on. "
          "Off by default and for the animation-unit presets h.library.paper_oven.*", latent_heat),
     REAL("boiling_point", "degC",
          "with latent_heat: a particle that holds water does not heat past this; the excess heat boils its water, "
-         "m c (T - T_b) / L, and the vapour leaves (MPM; the crumb's plateau)", 100, -273.15, 5000, boiling_point, 0),
+         "m c (T - T_b) / L, and the vapour leaves (the crumb's plateau)", 100, -273.15, 5000, boiling_point, 0),
     REAL("gas_vent", "m/s",
          "CO2 loss through open surface pores: an air-boundary particle whose gas porosity is at least vent_porosity "
          "loses its CO2 at dn^g/dt = -gas_vent S_p / V_p n^g, S_p its share of the surface (MPM; beyond Ding et al. "

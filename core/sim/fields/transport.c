@@ -272,9 +272,8 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
              * through the layer between the sample's depth and the surface
              * (water_surface_excess, water.h) */
             if (bnd && area && area[i] > 0) {
-                const double bw = ms->core[CP_EVAPORATION], K = ms->core[CP_WATER_DIFFUSIVITY];
-                const double lay = K > 0 ? bw * depth[i] / (rho0 * K) : 0.0; /* d beta^w / (rho_0^w K) */
-                evap = bw * th * water_surface_excess(si, s_amb, lay) * area[i]; /* kg/s */
+                evap = water_evaporation(ms->core[CP_EVAPORATION], ms->core[CP_WATER_DIFFUSIVITY], rho0, th, si, s_amb,
+                                         depth[i], area[i]); /* kg/s */
                 /* latent heat (the scene's latent_heat; beyond Ding et al. eq. 9): the
                  * evaporated water leaves with L per kg from this particle's heat, on
                  * the same weights w_ip as the water, so the heat the nodes lose is L

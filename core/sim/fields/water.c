@@ -83,10 +83,13 @@ int water_material_wants(const hearth_scene *s, int mat) {
            (ms->m->needs & HEARTH_NEEDS_SATURATION);
 }
 
-static double capacity(const hearth_scene *s, int i) { /* rho_0^w J V_0: water mass at saturation 1 */
+/* rho_0^w J V_0: water mass at saturation 1. On SPH J is 1 (sph_water_volume,
+ * water.h says why). */
+static double capacity(const hearth_scene *s, int i) {
     const particles *ps = &s->ps;
     const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
-    return ms->core[CP_WATER_DENSITY] * particles_J(ps, i) * pcold(ps, PC_VOL0)[i];
+    const double J = s->def.solver == HEARTH_SOLVER_SPH ? 1.0 : particles_J(ps, i);
+    return ms->core[CP_WATER_DENSITY] * J * pcold(ps, PC_VOL0)[i];
 }
 
 double water_saturation(const hearth_scene *s, int i) { return pcold(&s->ps, PC_WATER)[i] / capacity(s, i); }
@@ -378,7 +381,8 @@ double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) 
 
 /* Interior boiling (the scene's latent_heat with its boiling_point T_b; issue
  * #18, beyond Ding et al., whose eq. 9 has no latent term and whose eq. 8
- * evaporates through the surface only). In G2P, after the particle took its
+ * evaporates through the surface only). MPM calls it in G2P (SPH in
+ * sph_water.c, once its temperatures moved), after the particle took its
  * nodes' temperature change: a particle holding water above the saturation
  * floor whose temperature passed T_b turns the excess sensible heat into
  * vapour, dm = m c (T - T_b) / L, capped by that water, and T falls by
@@ -396,12 +400,12 @@ double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) 
  * No step limit: it is a projection onto T <= T_b, which never amplifies. A
  * pinned body's held particles (PF_HOLD_T) keep their temperature: mpm.c
  * does not call this for them. Returns the water boiled (kg). */
-double water_boil(hearth_scene *s, int i, double *T, double Tb) {
+double water_boil(hearth_scene *s, int i, double *T, double Tb, double vol) {
     particles *ps = &s->ps;
     double *W = pcold(ps, PC_WATER);
     const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
     const double mc = pcold(ps, PC_MASS)[i] * ms->core[CP_SPECIFIC_HEAT];
-    const double spare = W[i] - WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * mpm_state_of(s)->vol[i];
+    const double spare = W[i] - WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * vol;
     if (!(spare > 0) || !(mc > 0)) return 0.0;
     double dm = mc * (*T - Tb) / HEARTH_LATENT_HEAT;
     if (dm < spare) {

@@ -71,6 +71,19 @@ static inline double water_surface_excess(double s_d, double s_amb, double a) {
     return den > 0 ? (s_d - s_amb) * (s_d + s_amb) / den : 0.0;
 }
 
+/* Evaporation (kg/s) through a surface of area `area` whose sample saturation
+ * s_d lies `depth` below it (Ding et al. §3.2: beta^w theta (s - s_amb) per
+ * unit area, through water_surface_excess's layer), for a material of
+ * evaporation bw, water diffusivity K and water density rho0, at absolute
+ * temperature th. Both solvers call it: MPM per boundary particle
+ * (transport.c, boundary.c's area and depth), SPH per surface particle
+ * (sph_water.c). */
+static inline double water_evaporation(double bw, double K, double rho0, double th, double s_d, double s_amb,
+                                       double depth, double area) {
+    const double lay = K > 0 ? bw * depth / (rho0 * K) : 0.0; /* d beta^w / (rho_0^w K) */
+    return bw * th * water_surface_excess(s_d, s_amb, lay) * area;
+}
+
 /// Is the water field live?
 int water_active(const struct hearth_scene *s);
 /// Does a material ask for water (diffusivity, evaporation, water pressure, or a plugin that needs saturation)?
@@ -86,7 +99,13 @@ double water_dt_limit(const struct hearth_scene *s);
 /// Once a step stands: raise each particle's PC_DRIED (1 - the lowest moisture ratio reached) to its
 /// present dryness. The column must exist (an irreversible moisture curve enables it).
 void water_dried_step(struct hearth_scene *s);
-/// Saturation of particle i (from its water mass and current volume).
+/// Saturation of particle i (from its water mass and current volume, J V_0).
+/// On SPH the volume is the rest volume V_0: its dough is weakly compressible
+/// (Tait holds its density near rho_0), and the det of the F that SPH
+/// integrates from eq. 3.27's velocity gradient drifts where the kernel is cut
+/// by the free surface (a block slumping on a tray: J 1.15 along its top row,
+/// 0.84 at its bottom corners after 0.5 s, 1.00 inside), which read as
+/// drying (s 0.70 of 0.8, no water lost) and wetting (0.95).
 double water_saturation(const struct hearth_scene *s, int i);
 /// After P2G (water mass and capacity scattered, eq. 15, 18): node
 /// saturations, and the wet colliders' held values. transport_apply then
@@ -97,11 +116,12 @@ void water_prepare(struct hearth_scene *s);
 /// its nodes' saturation (eq. 19-20, FLIP), floored. Returns the water it
 /// lost (kg); raises *dmax and *emax, the explicit-step limits.
 double water_take(struct hearth_scene *s, int i, double r, double *dmax, double *emax);
-/// In G2P, with the scene's latent_heat, for particle i whose new temperature
-/// *T passed Tb (degrees C): the excess heat boils its water above the floor,
-/// m c (*T - Tb) / L, and *T falls by L / (m c) per kg boiled (to Tb unless the
-/// water ran out). Returns the water boiled (kg); the vapour leaves the body.
-double water_boil(struct hearth_scene *s, int i, double *T, double Tb);
+/// With the scene's latent_heat, for particle i (of volume vol, m^3: MPM's
+/// P2G volume, SPH's J V_0) whose new temperature *T passed Tb (degrees C):
+/// the excess heat boils its water above the floor, m c (*T - Tb) / L, and *T
+/// falls by L / (m c) per kg boiled (to Tb unless the water ran out). Returns
+/// the water boiled (kg); the vapour leaves the body. Both solvers call it.
+double water_boil(struct hearth_scene *s, int i, double *T, double Tb, double vol);
 /// After transport_apply: the water crossing wet colliders' faces over dt,
 /// into CH_DMW around each contact particle's foot on the face (the boundary
 /// term of holding faces, the exchange of Robin ones).

@@ -145,7 +145,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             if (!(flags && (flags[i] & PF_HOLD_T))) {
                 Tcol[i] = T1;
                 /* interior boiling (latent_heat): wet matter stays at the boiling point (water.c) */
-                if (WATER && T1 > boil) w_removed += water_boil(s, i, &Tcol[i], boil);
+                if (WATER && T1 > boil) w_removed += water_boil(s, i, &Tcol[i], boil, mpm_state_of(s)->vol[i]);
             }
             if (Tcol[i] > Tmax[i]) Tmax[i] = Tcol[i];
             if (Gcol) { /* CO2 over the cycle, temperature moving linearly from T0 to T1 (§5.4), less what its

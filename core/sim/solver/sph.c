@@ -32,7 +32,9 @@
  *   sph_heat_rates       heat (sph_heat.c): internal (3.45-3.46), external
  *                        at surface particles (3.42), the oven's Robin flux
  *                        and heated colliders' contact beta (as MPM)
+ *   sph_water_rates      water as MPM's (Ding eq. 8, 22; sph_water.c)
  *   phase_xsph           XSPH (3.34 with the tuner of 4.4)
+ *   phase_fields         temperatures and water forward; boiling
  *   phase_drift          drift (3.57-3.58), colliders and walls with the
  *                        thesis's response (3.31-3.33)
  *   sph_walls_end        moving fixed bodies move rigidly (sph_walls.c)
@@ -86,12 +88,13 @@
  *
  * Shared with MPM: particles, plugins through the material door (porosity from
  * plastic_J for a material that needs it; no saturation: a material that needs
- * it is refused when added), colliders, probes, outputs, the oven's Robin flux
+ * it is refused when added), water (sph_water.c: MPM's law and column, its
+ * evaporation and latent sink), colliders, probes, outputs, the oven's Robin flux
  * and heated colliders' contact beta (each surface particle carries its face
  * V^((d-1)/d) of oven surface, a particle within its spacing of a heated
  * collider the same face of contact; `sph_oven_robin`). Not shared: conduction
- * parameters (eq. 3.45 uses `sph.heat_int`), thermal expansion and CO2 (not
- * applied), water, collider friction and the slip/separate distinction (both
+ * parameters (eq. 3.45 uses `sph.heat_int`), thermal expansion, CO2 and water pressure (eq. 14) (not
+ * applied), wet colliders and the water's momentum (refused), collider friction and the slip/separate distinction (both
  * take the thesis response; beta_c plays friction's part; sticky is sticky,
  * and so is a grip, which carries no particles here). A rollback restores the
  * particles but not the final densities of eq. 3.52.
@@ -146,6 +149,7 @@
 #include "sph_kernel.h"
 #include "sph_state.h"
 #include "tensor.h"
+#include "water.h"
 
 /* ---- options ---------------------------------------------------------------- */
 
@@ -154,10 +158,10 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
     /* each option's range (flags 0 or 1), unit and help: settings.c's table; here the rules between options */
     hearth_status st = settings_check(d, "sph.", NULL, err);
     if (st) return st;
-    if (d->latent_heat) /* the sink is on evaporated water, and the SPH solver carries no water */
+    if (d->water_momentum) /* sph_water.c carries the water's mass, not its momentum (eq. 26-27) */
         return err_set(err, HEARTH_ERR_PARAM,
-                       "scene: latent_heat = true needs the water field, which solver = \"sph\" does not carry; use "
-                       "solver = \"mpm\" or latent_heat = false");
+                       "scene: water_momentum = true is not carried by solver = \"sph\" (its water moves no momentum); use "
+                       "solver = \"mpm\" or water_momentum = false");
     if ((st = sph_gas_check_def(o, err))) return st; /* the gas law's options, refused without it (sph_gas.c) */
     if (o->renormalised_density && o->continuity_density)
         return err_set(err, HEARTH_ERR_PARAM,
@@ -198,6 +202,7 @@ static void sph_free(hearth_scene *s) {
     mem_free(st->pairm, sizeof(int) * st->pairm_cap);
     arrays_free(st, st->cap);
     mem_free(st->visc_index, sizeof(int) * (size_t)st->visc_cap);
+    sph_water_free(st);
     mem_free(st, sizeof *st);
     s->sph = NULL;
 }
@@ -527,8 +532,8 @@ static int phase_stress(hearth_scene *s, double dt, step_report *rep) {
         pt.state = c.state ? c.state + (size_t)i * stride : NULL;
         /* The porosity as MPM gives it, n^p = 1 - (1 - n^p_0) / J^P from the plugin's plastic_J at the
          * start of the step, to a material that needs it (cam_clay_dough's yield surface); NaN to
-         * the rest, which do not read it. No water: a material that needs the saturation is
-         * refused when added (sph_solver.supplies). None of the core's coupling terms: they are
+         * the rest, which do not read it. No saturation: sph_water.c's water is not handed to a
+         * plugin; a material that needs it is refused when added (sph_solver.supplies). None of the core's coupling terms: they are
          * isotropic, and SPH keeps only the deviator (Tait gives the pressure). */
         const material_env env = {
             .flags = (ms->m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u) | (ms->fracture ? MATERIAL_DAMAGE : 0u),
@@ -718,7 +723,22 @@ static inline double signal_speed(const struct sph_state *st, const hearth_sph_d
     return c > c0 ? c : c0;
 }
 
-/* Temperatures forward by their rates; then the drift (eq. 3.57-3.58; the
+/* Temperatures and water forward (sph_water.c: with latent_heat a wet
+ * particle past the boiling point boils), then the highest temperatures. */
+static void phase_fields(hearth_scene *s, double dt) {
+    const struct sph_state *st = s->sph;
+    const sph_cols c = sph_cols_of(s);
+    double *T = c.T, *Tmax = c.Tmax;
+    if (T)
+        for (int i = 0; i < c.n; i++) T[i] += dt * st->dT[i];
+    sph_heat_ledger(s, dt); /* with latent_heat: the oven's heat in, for the books */
+    if (water_active(s)) sph_water_advance(s, dt);
+    if (T && Tmax)
+        for (int i = 0; i < c.n; i++)
+            if (T[i] > Tmax[i]) Tmax[i] = T[i];
+}
+
+/* The drift (eq. 3.57-3.58; the
  * second half under leapfrog), colliders and box walls with the thesis's
  * response (eq. 3.31-3.33: v = beta_c v_t - alpha_c v_n), and the report:
  * kinetic energy, the fastest particle, the largest sound speed, and the
@@ -729,15 +749,11 @@ static void phase_drift(hearth_scene *s, double dt, step_report *rep) {
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, dim = c.dim, *flags = c.flags;
     const double *m = c.m;
-    double *x = c.x, *v = c.v, *T = c.T, *Tmax = c.Tmax;
+    double *x = c.x, *v = c.v, *T = c.T;
     const double drift = o->leapfrog ? 0.5 * dt : dt;
     double ke = 0, vmax = 0, cmax = 0;
     int fastest = -1;
     for (int i = 0; i < n; i++) {
-        if (T) {
-            T[i] += dt * st->dT[i];
-            if (Tmax && T[i] > Tmax[i]) Tmax[i] = T[i];
-        }
         double *xi = x + 3 * i, *vi = v + 3 * i;
         if (flags && (flags[i] & PF_FIXED)) { /* moved by sph_walls_end; a moving wall's speed limits dt */
             const double sp = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
@@ -810,6 +826,7 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     rep->fastest = -1;
     rep->mover = -1;
     hearth_status e = ensure(s, n > 0 ? n : 1, err);
+    if (!e) e = sph_water_ensure(s, n > 0 ? n : 1, err); /* only with water or latent_heat */
     if (e) return e;
     struct sph_state *st = s->sph;
     if (st->n != n) /* particles added or removed since the last step: final densities start over */
@@ -830,7 +847,9 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     sph_artificial_stress(s);
     sph_forces(s, dt);
     sph_heat_rates(s); /* reads st->vc and st->sp (sph_kinematics) */
+    if (water_active(s)) sph_water_rates(s); /* after the heat: the latent sink takes from st->dT */
     phase_xsph(s);
+    phase_fields(s, dt);
     phase_drift(s, dt, rep);
     sph_walls_end(s, dt);
     st->n = n;
@@ -850,7 +869,7 @@ const double *sph_particle_values(const hearth_scene *s, const char *which) {
 
 /* What ensure() and the neighbour lists keep per particle: the ARRAYS
  * doubles and the sort's key and order, each with ensure's 1/4 margin; the
- * lists' offsets, and per entry for the neighbours within the support
+ * lists' offsets, the water's doubles when it is live, and per entry for the neighbours within the support
  * h = h_factor V0^(1/dim) (the lattice points of a disc or ball of radius h,
  * with the 1/4 margin) its index, its pair slot (an int) and its pair terms
  * (dim + 1 doubles; sph_pairs_prepare). Adaptive h (sph.adaptive_h) may grow the
@@ -862,7 +881,8 @@ static double sph_bytes_per_particle(const hearth_scene *s) {
     const double hf = s->def.sph.h_factor;
     const double nb = s->def.dim == 3 ? 4.0 / 3.0 * SPH_PI * hf * hf * hf : SPH_PI * hf * hf;
     const double entry = 2 * sizeof(int) + (s->def.dim + 1) * sizeof(double);
-    return 1.25 * (doubles * sizeof(double) + 2 * sizeof(int)) + sizeof(int) + 1.25 * nb * entry;
+    const double water = sph_water_live(s) ? SPH_WATER_ARRAYS : 0; /* sph_water_ensure's, with the same margin */
+    return 1.25 * ((doubles + water) * sizeof(double) + 2 * sizeof(int)) + sizeof(int) + 1.25 * nb * entry;
 }
 
 /* No grid, so no margin: particles may fill the whole box. */
@@ -880,7 +900,8 @@ const solver sph_solver = {
     .region = sph_region,
     .bytes_per_particle = sph_bytes_per_particle,
     .particle_values = sph_particle_values,
-    /* temperature from the heat field, porosity from plastic_J (phase_stress); no water */
+    /* temperature from the heat field, porosity from plastic_J (phase_stress); the water field
+     * (sph_water.c) is not handed to plugins as their point's saturation */
     .supplies = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY,
     .can_checkpoint = 0, /* its options and final densities (eq. 3.52) are not in the format yet */
     .uses_grid = 0,      /* neighbours come from its own cell list (sph_neighbours.c) */

@@ -1,7 +1,8 @@
 /* sph_dt.c: the SPH solver's stable time step, the smallest of the CFL
  * limit cfl dx / (speed + sound speed) (as MPM's, so the guard's checks
  * hold), the viscous limit dt_viscous h^2 / nu, the force limit
- * dt_force sqrt(h / |a|) and the heat limits (sph_heat.c), capped by dt_max.
+ * dt_force sqrt(h / |a|), the heat limits (sph_heat.c) and the water's
+ * (sph_water.c), capped by dt_max.
  * Before the first step the sound speed comes from the materials'
  * wave_speed; after it, from the step's report (s->c_max: c0, or Tait's
  * sound speed at the particle's density where eq. 3.52 lowered the density
@@ -52,6 +53,7 @@ double sph_stable_dt(const hearth_scene *s) {
     if (numax > 0) dt = fmin(dt, o->dt_viscous * hmin * hmin / numax);
     if (s->sph && s->sph->amax > 0) dt = fmin(dt, o->dt_force * sqrt(hmin / s->sph->amax));
     dt = fmin(dt, sph_heat_stable_dt(s, hmin, rhomin));
+    dt = fmin(dt, sph_water_stable_dt(s, hmin, rhomin));
     if (s->def.dt_max > 0 && dt > s->def.dt_max) dt = s->def.dt_max;
     if (isinf(dt)) dt = s->def.cfl * s->def.dx;
     return dt * s->dt_scale;

@@ -36,6 +36,10 @@ void sph_heat_rates(hearth_scene *s) {
     const double beta_oven = isfinite(Text) ? s->def.oven_beta : 0.0;
     int robin = beta_oven > 0;
     for (int q = 0; q < s->ncol; q++) robin |= !isnan(s->cols[q].temperature) && s->cols[q].beta > 0;
+    /* with latent_heat the oven's Robin heat is tallied (sph_heat_ledger), as MPM's (thermal.c's oven_ledger) */
+    const int ledger = s->def.latent_heat && robin;
+    if (s->def.latent_heat && !robin)
+        for (int i = 0; i < n; i++) st->qo[i] = 0;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         const double ri = st->rho[i];
@@ -103,6 +107,8 @@ void sph_heat_rates(hearth_scene *s) {
                 coef += cS;
             }
             if (coef > 0 && ci > 0) dTi += coef * (Tr - T[i]) / (m[i] * ci);
+            /* the oven's part (W), for latent_heat's ledger: coef (Tr - T) is the sum of its parts */
+            if (ledger) st->qo[i] = beta_oven > 0 && st->surf[i] ? face * beta_oven * (Text - T[i]) : 0.0;
         }
         st->dT[i] = dTi;
     }
@@ -129,4 +135,18 @@ double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin) {
         }
     }
     return dt;
+}
+
+/* The oven's Robin heat over the step (J, or J/m in 2D), summed in particle
+ * order (the same bits on any thread count) from what sph_heat_rates kept:
+ * only with latent_heat, for the books heat in = sensible heat + L x water
+ * lost (`sph_latent_heat_energy_balance`). thermal_step_stands counts it once
+ * the step stands. */
+void sph_heat_ledger(hearth_scene *s, double dt) {
+    s->heat.step_oven_heat = 0;
+    if (!s->def.latent_heat || isnan(s->def.oven_temperature) || !(s->ps.enabled & (1u << PC_TEMPERATURE))) return;
+    const double *qo = s->sph->qo;
+    double q = 0;
+    for (int i = 0; i < s->ps.n; i++) q += qo[i];
+    s->heat.step_oven_heat = dt * q;
 }

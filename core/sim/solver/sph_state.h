@@ -39,6 +39,11 @@ struct sph_state {
     double *rho0, *B, *mu, *c0, *xsph;
     double *vc;     /* the viscous Laplacian's renormalisation (viscous_moments), per particle this step */
     double *vr;     /* rest volume (rest_volume) per particle this step, for sph.gas_law's density sum */
+    /* sph_water.c's, made only with water or latent_heat (sph_water_ensure; wcap particles): the
+     * water's rate (kg/s), saturation and K theta s this step, and the oven's Robin heat per
+     * particle (W) for latent_heat's ledger (sph_heat_ledger) */
+    double *dW, *sw, *wd, *qo;
+    int wcap;
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
     double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
     double amax;    /* largest |a| of the last step, for the force limit */
@@ -165,8 +170,29 @@ double sph_stable_dt(const hearth_scene *s);
 /* ---- sph_heat.c ---- */
 /// Heat rates dT/dt into st->dT (nothing without the temperature field).
 void sph_heat_rates(hearth_scene *s);
+/// With latent_heat: the oven's Robin heat over the step into s->heat.step_oven_heat (after sph_heat_rates).
+void sph_heat_ledger(hearth_scene *s, double dt);
 /// The heat limits on dt (INFINITY when none applies); hmin, rhomin over the particles.
 double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin);
+
+/* ---- sph_water.c ---- */
+/// The water's rates into st->dW (Fick's flux through the heat's Laplacian,
+/// evaporation at surface particles) and, with latent_heat, L x evaporation
+/// out of st->dT. Only while the water field is live; after sph_heat_rates.
+void sph_water_rates(hearth_scene *s);
+/// After the temperatures moved: the water by dt st->dW, floored; with
+/// latent_heat water_boil past the boiling point; the step's removed water.
+void sph_water_advance(hearth_scene *s, double dt);
+/// Does the step need sph_water.c's arrays (the water field live, or latent_heat's ledger)?
+int sph_water_live(const hearth_scene *s);
+/// The doubles per particle sph_water_ensure keeps.
+#define SPH_WATER_ARRAYS 4
+/// Before a step of n particles: the water's arrays, when sph_water_live; NOMEM when they cannot be had.
+hearth_status sph_water_ensure(hearth_scene *s, int n, hearth_error *err);
+/// Release them (with the state).
+void sph_water_free(struct sph_state *st);
+/// The water's limits on dt (INFINITY without the water field); hmin, rhomin as the heat's.
+double sph_water_stable_dt(const hearth_scene *s, double hmin, double rhomin);
 
 /* ---- sph_gas.c ---- */
 /// With sph.gas_law: st->rhof (each particle's rest density: rho0, a bubble's
