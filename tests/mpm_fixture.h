@@ -1,6 +1,7 @@
 /* mpm_fixture.h: small helpers for building scenes in the MPM tests. */
 #ifndef HEARTH_MPM_FIXTURE_H
 #define HEARTH_MPM_FIXTURE_H
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -27,6 +28,22 @@ static inline hearth_scene *fx_scene_def(const hearth_scene_def *d) {
     hearth_scene *s = hearth_scene_create(d, &err);
     if (!s) fprintf(stderr, "scene: %s\n", err.msg);
     return s;
+}
+
+/* The elastic material's stored energy over the scene, compressible neo-Hookean (plugins/elastic.c's law):
+ * rotating_disc and the transfer's loss over dt read it. */
+static inline double neo_hookean_energy(const hearth_scene *s, double mu, double lam) {
+    double E = 0;
+    for (int i = 0; i < s->ps.n; i++) {
+        double F[9];
+        particles_F3(&s->ps, i, F);
+        double tr = 0;
+        for (int a = 0; a < 9; a++) tr += F[a] * F[a];
+        const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
+        const double lj = log(J);
+        E += pcold(&s->ps, PC_VOL0)[i] * (0.5 * mu * (tr - 3) - mu * lj + 0.5 * lam * lj * lj);
+    }
+    return E;
 }
 
 static inline int fx_elastic(hearth_scene *s, double E, double nu, double rho) {

@@ -143,20 +143,6 @@ static void conservation(int dim) {
 TEST(transfer_conservation_2d) { conservation(2); }
 TEST(transfer_conservation_3d) { conservation(3); }
 
-static double neo_hookean_energy(const hearth_scene *s, double mu, double lam) {
-    double E = 0;
-    for (int i = 0; i < s->ps.n; i++) {
-        double F[9];
-        particles_F3(&s->ps, i, F);
-        double tr = 0;
-        for (int a = 0; a < 9; a++) tr += F[a] * F[a];
-        const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
-        const double lj = log(J);
-        E += pcold(&s->ps, PC_VOL0)[i] * (0.5 * mu * (tr - 3) - mu * lj + 0.5 * lam * lj * lj);
-    }
-    return E;
-}
-
 /* A spinning elastic disc keeps its angular momentum to round-off and never
  * gains energy (the issue's setup: rho 1, E 1e3, nu 0.2, R 0.15, dx 1/64, 4 ppc,
  * omega 10 rad/s, dt 2e-4, one revolution). */

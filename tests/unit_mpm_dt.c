@@ -22,21 +22,6 @@
 #include "tensor.h"
 #define PI 3.14159265358979323846
 
-/* the elastic material's stored energy, compressible neo-Hookean (as unit_mpm.c's rotating_disc reads it) */
-static double neo_hookean_energy(const hearth_scene *s, double mu, double lam) {
-    double E = 0;
-    for (int i = 0; i < s->ps.n; i++) {
-        double F[9];
-        particles_F3(&s->ps, i, F);
-        double tr = 0;
-        for (int a = 0; a < 9; a++) tr += F[a] * F[a];
-        const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
-        const double lj = log(J);
-        E += pcold(&s->ps, PC_VOL0)[i] * (0.5 * mu * (tr - 3) - mu * lj + 0.5 * lam * lj * lj);
-    }
-    return E;
-}
-
 /* A free elastic square (no gravity, no walls near: E 1e3, nu 0.3, rho 1, 0.4 m, dx 1/32, 4 ppc) started in
  * a shear wave of one wavelength across it, v_x = A sin(2 pi (y - y0) / 0.4), A 0.05 m/s (C its gradient, so
  * the first P2G carries the field as APIC would), stepped at a uniform dt to T = 0.1 s (about 4 periods of the
