@@ -233,7 +233,7 @@
 #endif
 
 enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH,
-       P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, P_FRACTURE_UNSET, P_VISCOSITY, P_COUNT };
+       P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, P_FRACTURE_UNSET, P_COUNT };
 
 /* Defaults: the cookie column of Ding et al. Table 2 (E 4e4, tau_y 20,
  * eta 500, density 500); nu is not in Table 2. */
@@ -279,10 +279,6 @@ static const hearth_param params[P_COUNT] = {
                           "irreversible): under fracture_stretch = 1 its fracture_strain counts as fracture_strain / "
                           "(1 - fracture_unset), so a skin that dries before it sets stretches as leather; 0 = set",
                           0, 0, 1},
-    [P_VISCOSITY] = {"viscosity", "Pa s",
-                     "Kelvin-Voigt viscosity eta_v inside and outside the yield surface: tau += J 2 eta_v dev(D), "
-                     "explicit (the core's step limit rho dx^2 / (2 dim eta_v)); 0 = the law as it is",
-                     0, 0, 1e6},
 };
 
 enum { S_XX = HEARTH_SYM_XX, S_YY = HEARTH_SYM_YY, S_ZZ = HEARTH_SYM_ZZ, S_XY = HEARTH_SYM_XY, S_YZ = HEARTH_SYM_YZ,
@@ -766,29 +762,10 @@ static int stress_law(hearth_point *pt, double J, double mu, double lambda, doub
     return 0;
 }
 
-/* The Kelvin-Voigt term (issue #18, helper doughdamp): tau += J 2 eta_v
- * dev(D), D = sym grad_v, added to the law's stress after its return, so
- * it damps elastic ringing inside the yield surface, where eq. 12 has no
- * rate term. Only over a step (dt > 0): an evaluation has no rate. */
-static void add_viscous(double eta, double J, const double *gv, double tau[9]) {
-    const double tr = (gv[0] + gv[4] + gv[8]) / 3, c = 2 * eta * J;
-    for (int r = 0; r < 3; r++)
-        for (int k = 0; k < 3; k++) tau[3 * r + k] += c * (0.5 * (gv[3 * r + k] + gv[3 * k + r]) - (r == k) * tr);
-}
-
 static int stress(hearth_point *pt, double tau[9]) {
     double mu, lambda;
     hearth_lame(pt->p[P_E], pt->p[P_NU], &mu, &lambda);
-    const double J = hearth_t3_det(pt->F);
-    const int code = stress_law(pt, J, mu, lambda, tau);
-    if (code == 0 && pt->p[P_VISCOSITY] > 0 && pt->dt > 0) add_viscous(pt->p[P_VISCOSITY], J, pt->grad_v, tau);
-    return code;
-}
-
-/* The Kelvin-Voigt viscosity, for the core's explicit step limit. */
-static double viscosity(const double *p, const double *state) {
-    (void)state;
-    return p[P_VISCOSITY];
+    return stress_law(pt, hearth_t3_det(pt->F), mu, lambda, tau);
 }
 
 /* Small-strain P-wave speed sqrt((lambda + 2 mu)/rho): the Hencky law's
@@ -859,7 +836,6 @@ static const hearth_material material = {
     .stress_block = stress_block,
     .bulk_modulus = bulk_modulus,
     .scalars_block = scalars_block,
-    .viscosity = viscosity,
     .memo_size = 2, /* log b_zz's argument and value (log_memo, cam_clay_dough_block.h) */
 };
 

@@ -103,7 +103,7 @@ static inline __attribute__((always_inline)) int write_back(const hearth_block *
     return bad;
 }
 
-static int stress_block_law(const hearth_block *b, double *const tau[9], int *code) {
+static int stress_block(const hearth_block *b, double *const tau[9], int *code) {
     const int n = b->n;
     const double *const *F = b->F;
     double J[HEARTH_BLOCK_MAX], q[P_COUNT], MU[HEARTH_BLOCK_MAX], LA[HEARTH_BLOCK_MAX];
@@ -231,21 +231,6 @@ static int stress_block_law(const hearth_block *b, double *const tau[9], int *co
     return write_back(b, n, tau, code, 0, fast, J, B0, B1, B4, B8, EV, E0, E1, E2, MU, LA, q, &vk, nv);
 }
 
-/* The block's law, then the Kelvin-Voigt term where a point has one (add_viscous, as stress). */
-static int stress_block(const hearth_block *b, double *const tau[9], int *code) {
-    const int bad = stress_block_law(b, tau, code);
-    if (!(b->dt > 0) || (!b->p_col[P_VISCOSITY] && !(b->p[P_VISCOSITY] > 0))) return bad;
-    for (int j = 0; j < b->n; j++) {
-        const double eta = hearth_block_param(b, P_VISCOSITY, j);
-        if (code[j] != 0 || !(eta > 0)) continue;
-        double gv[9], F[9], t[9];
-        for (int c = 0; c < 9; c++) gv[c] = b->grad_v[c][j], F[c] = b->F[c][j], t[c] = tau[c][j];
-        add_viscous(eta, hearth_t3_det(F), gv, t);
-        for (int c = 0; c < 9; c++) tau[c][j] = t[c];
-    }
-    return bad;
-}
-
 /* ---- the batched scalars (<hearth/material.h> rule 9) ------------------------
  * What the core asks per point around the stress (J^P and K before it; the
  * wave speed, J^P and the damage after), for the block in one call: each
@@ -278,8 +263,6 @@ static void scalars_block(const hearth_block *b, double *const out[HEARTH_SCALAR
         for (; j < n; j++) jp[j] = sj[(size_t)j * ss];
     } else if (jp)
         for (int j = 0; j < n; j++) jp[j] = 1.0;
-    if (out[HEARTH_SCALAR_VISCOSITY]) /* the Kelvin-Voigt viscosity, as viscosity() */
-        for (int j = 0; j < n; j++) out[HEARTH_SCALAR_VISCOSITY][j] = hearth_block_param(b, P_VISCOSITY, j);
     if (d)
         for (int j = 0; j < n; j++) /* damage */
             d[j] = st ? st[(size_t)j * ss + S_DAMAGE] : hearth_block_param(b, P_FRACTURE_STRAIN, j) > 0;

@@ -20,7 +20,7 @@
 #include "plugin_fixture.h"
 
 enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH,
-       P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, P_FRACTURE_UNSET, P_VISCOSITY, NP };
+       P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, P_FRACTURE_UNSET, NP };
 enum { NSTATE = 8 };
 
 static const hearth_material *dough(void) { return load_material("cam_clay_dough"); }
@@ -801,13 +801,12 @@ TEST(dough_block_matches_stress_2d) {
     if (!m || !m->stress_block) return;
     enum { N = 64 };
     int elastic = 0, plastic = 0, refused = 0, differ = 0;
-    for (int blk = 0; blk < 3; blk++) { /* 2: the Kelvin-Voigt viscosity too, by point (a column), some 0 */
+    for (int blk = 0; blk < 2; blk++) {
         double p[NP];
         for (int k = 0; k < NP; k++) p[k] = m->params[k].def;
         p[P_FRACTURE_STRAIN] = 0.02;
-        double gv[9][N], F[9][N], T[N], n[N], Ec[N], tyc[N], Vc[N], st0[N * NSTATE], st1[N * NSTATE], st2[N * NSTATE];
+        double gv[9][N], F[9][N], T[N], n[N], Ec[N], tyc[N], st0[N * NSTATE], st1[N * NSTATE], st2[N * NSTATE];
         for (int j = 0; j < N; j++) {
-            Vc[j] = j % 3 ? 50 * uni() : 0;
             const double big = j % 4 == 3 ? 40.0 : 0.02; /* 1/s: a quarter of the points far past yield */
             for (int c = 0; c < 9; c++) gv[c][j] = (c == 2 || c == 5 || c == 6 || c == 7) ? 0 : big * (2 * uni() - 1);
             for (int c = 0; c < 9; c++) F[c][j] = (c % 4 == 0) + (c == 2 || c == 5 || c == 6 || c == 7 ? 0 : 0.05 * (2 * uni() - 1));
@@ -840,8 +839,7 @@ TEST(dough_block_matches_stress_2d) {
         for (int j = 0; j < N; j++) {
             double q[NP];
             memcpy(q, p, sizeof q);
-            if (blk >= 1) q[P_E] = Ec[j], q[P_TAU_Y] = tyc[j];
-            if (blk == 2) q[P_VISCOSITY] = Vc[j];
+            if (blk == 1) q[P_E] = Ec[j], q[P_TAU_Y] = tyc[j];
             hearth_point pt = {.dt = dt, .temperature = T[j], .porosity = n[j], .saturation = NAN, .p = q,
                                .state = st1 + j * NSTATE, .dim = 2};
             for (int c = 0; c < 9; c++) pt.grad_v[c] = gv[c][j], pt.F[c] = F[c][j];
@@ -853,8 +851,7 @@ TEST(dough_block_matches_stress_2d) {
         double tcol[9][N];
         double *tau2[9];
         const double *columns[NP] = {0};
-        if (blk >= 1) columns[P_E] = Ec, columns[P_TAU_Y] = tyc;
-        if (blk == 2) columns[P_VISCOSITY] = Vc;
+        if (blk == 1) columns[P_E] = Ec, columns[P_TAU_Y] = tyc;
         hearth_block b = {.n = N, .dim = 2, .dt = dt, .temperature = T, .porosity = n, .saturation = NULL, .p = p,
                           .p_col = columns, .state = st2, .state_stride = NSTATE};
         for (int c = 0; c < 9; c++) b.grad_v[c] = gv[c], b.F[c] = F[c], tau2[c] = tcol[c];
@@ -880,50 +877,10 @@ TEST(dough_block_matches_stress_2d) {
             else plastic++;
         }
     }
-    printf("  %d points: %d elastic, %d plastic, %d refused; %d differ between stress and stress_block\n", 3 * N, elastic,
+    printf("  %d points: %d elastic, %d plastic, %d refused; %d differ between stress and stress_block\n", 2 * N, elastic,
            plastic, refused, differ);
     CHECK(differ == 0);
     CHECK(elastic >= 40 && plastic >= 20 && refused >= 4);
-}
-
-/* The Kelvin-Voigt viscosity (issue #18, helper doughdamp): over a step it
- * adds J 2 eta_v dev(D), D = sym grad_v, to the law's stress and nothing to
- * its state, inside the surface and past it; a rate-free evaluation (dt = 0)
- * adds nothing. Checked against the same point with eta_v = 0. */
-TEST(dough_kelvin_voigt_stress) {
-    const hearth_material *m = dough();
-    CHECK(m != NULL && m->viscosity != NULL);
-    if (!m || !m->viscosity) return;
-    double worst = 0;
-    int n = 0;
-    for (int k = 0; k < 40; k++) {
-        double p[NP], q[NP];
-        for (int i = 0; i < NP; i++) p[i] = m->params[i].def;
-        p[P_TAU_Y] = k % 2 ? 1e9 : 20; /* elastic, or past yield */
-        memcpy(q, p, sizeof q);
-        q[P_VISCOSITY] = 1 + 300 * uni();
-        CHECK(m->viscosity(q, NULL) == q[P_VISCOSITY]);
-        double L[9], F[9], sp[NSTATE], sq[NSTATE], tp[9], tq[9];
-        for (int i = 0; i < 9; i++) L[i] = 20 * (2 * uni() - 1);
-        const double dt = k % 4 < 2 ? 1e-4 : 0;
-        for (int i = 0; i < 9; i++) F[i] = (i % 4 == 0) + 1e-4 * L[i];
-        m->init(p, sp), m->init(q, sq);
-        hearth_point a = {.dt = dt, .temperature = 20, .porosity = 0.2, .saturation = NAN, .p = p, .state = sp, .dim = 3};
-        memcpy(a.grad_v, L, sizeof L), memcpy(a.F, F, sizeof F);
-        hearth_point b = a;
-        b.p = q, b.state = sq;
-        CHECK(m->stress(&a, tp) == 0 && m->stress(&b, tq) == 0);
-        CHECK(memcmp(sp, sq, sizeof sp) == 0);
-        const double J = t3_det(F), tr = (L[0] + L[4] + L[8]) / 3;
-        for (int r = 0; r < 3; r++)
-            for (int c = 0; c < 3; c++) {
-                const double want = dt > 0 ? 2 * q[P_VISCOSITY] * J * (0.5 * (L[3 * r + c] + L[3 * c + r]) - (r == c) * tr) : 0;
-                worst = fmax(worst, fabs(tq[3 * r + c] - tp[3 * r + c] - want) / (1 + fabs(want)));
-            }
-        n++;
-    }
-    printf("  %d points: viscous stress off 2 eta_v J dev(D) by at most %.2e (relative)\n", n, worst);
-    CHECK(worst < 1e-12);
 }
 
 /* `hearth plugin check` on the built plugin. */
@@ -940,4 +897,4 @@ TEST_MAIN(T(dough_closest_point), T(dough_viscoplastic_optimality), T(dough_insi
           T(dough_closed_pores), T(dough_pore_cap), T(dough_fracture_damage), T(dough_fracture_stretch_rule), T(dough_fracture_set_takes_smaller),
           T(dough_fracture_unset_gates_water_brittleness), T(dough_crack_band_softening),
           T(dough_tension_cutoff),
-          T(dough_block_matches_stress_2d), T(dough_kelvin_voigt_stress), T(dough_plugin_check))
+          T(dough_block_matches_stress_2d), T(dough_plugin_check))

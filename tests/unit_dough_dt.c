@@ -28,7 +28,7 @@
 
 /* the plugin's parameters in its schema's order (as tests/unit_dough.c) */
 enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH,
-       P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, P_FRACTURE_UNSET, P_VISCOSITY, NP };
+       P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, P_FRACTURE_UNSET, NP };
 enum { NSTATE = 8 };
 
 /* The damage at T after n uniform steps. ring 0: a stretch that never turns back, pure shear at the rate

@@ -11,9 +11,6 @@
 --             the transfer's own loss per step, larger)
 --   material  "dough" (the preset) or "elastic" (the preset's E, nu and
 --             density, no yield: is the transfer alone dt-convergent?)
---   eta_v     the dough's Kelvin-Voigt viscosity (Pa s, the plugin's
---             `viscosity`; 0, the preset's, is the law as it is): does a
---             physical damping make the slump converge? (helper doughdamp)
 --   damping   the core's grid velocity damping c (1/s, core/sim/settings.c;
 --             0 = off): a drag on the absolute velocity, not a material's
 --   field_steps  the fields' clock (0, the default: heat and water may skip
@@ -27,19 +24,17 @@
 -- Prints per frame the top of the loaf on its axis (mm above the tray), the
 -- highest particle, the centroid's height and the kinetic energy.
 local h = require "hearth"
-local P = h.params { dx = 0.005, dt_max = 1e-4, until_t = 0.5, frames = 4, transfer = "apic", material = "dough", eta_v = 0,
-  damping = 0, field_steps = 0, sealed = 0 }
+local P = h.params { dx = 0.005, dt_max = 1e-4, until_t = 0.5, frames = 4, transfer = "apic", material = "dough", damping = 0,
+  field_steps = 0, sealed = 0 }
 local TRAY, WIDTH, BODY, X0 = 0.02, 0.08, 0.03, 0.07 -- bread.lua's plain loaf
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name = "slump", dt_max = P.dt_max,
   transfer = P.transfer, damping = P.damping, field_steps = P.field_steps }
 h.recipes.tray(s, TRAY)
 local prm = h.library.paper.bread
-if P.eta_v > 0 or P.sealed == 1 then -- a copy: the library's preset stays as it is
+if P.sealed == 1 then -- a copy: the library's preset stays as it is
   local q = {}
   for k, v in pairs(prm) do q[k] = v end
-  if P.eta_v > 0 then q.viscosity = P.eta_v end
-  if P.sealed == 1 then q.evaporation, q.gas_rate = 0, 0 end
-  prm = q
+  q.evaporation, q.gas_rate, prm = 0, 0, q
 end
 local mat = P.material == "elastic" and h.material("elastic", { E = prm.E, nu = prm.nu, density = prm.density })
   or h.material("cam_clay_dough", prm)
@@ -51,8 +46,8 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames, on_frame = function(f
     yc = yc + p.x[3 * k - 1]
   end
   local st = s:stats()
-  print(("slump_dt %s %s eta_v %g damping %g sealed %d dx %g dt_max %g: t %.3f  steps %d  axis top %.4f mm  "
-    .. "highest %.4f mm  centroid %.5f mm  kinetic %.6g J"):format(P.material, P.transfer, P.eta_v, P.damping, P.sealed,
+  print(("slump_dt %s %s damping %g sealed %d dx %g dt_max %g: t %.3f  steps %d  axis top %.4f mm  "
+    .. "highest %.4f mm  centroid %.5f mm  kinetic %.6g J"):format(P.material, P.transfer, P.damping, P.sealed,
     P.dx, P.dt_max, f.t, st.step, 1e3 * h.recipes.height(s, X0, TRAY, 0.14, 2000), 1e3 * (top - TRAY),
     1e3 * (yc / p.n - TRAY), st.kinetic))
   print(("slump_dt   water %.6g kg, lost %.6g kg, gas %.4g"):format(st.water_mass, st.water_lost, st.gas))
