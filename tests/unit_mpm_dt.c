@@ -59,7 +59,6 @@ static double energy_lost(double dt, int pic) {
     const double lost = 1 - (st.kinetic + neo_hookean_energy(s, mu, lam)) / E0;
     printf("  %s dt %.3g s, %d particles: %ld steps to t = %.4f s, energy lost %.4e of %.4e J (%.3e per step)\n", pic ? "PIC " : "APIC", dt,
            n, s->step, st.t, lost, E0, lost / (double)s->step);
-    printf("  aflip: residual share of the kinetic energy at T %.4e\n", mpm_aflip_residual_share(s));
     CHECK(labs(s->step - lround(T / dt)) <= 1); /* uniform: the last step lands on T */
     hearth_scene_destroy(s);
     return lost;

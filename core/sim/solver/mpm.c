@@ -96,7 +96,6 @@ static void mpm_free(hearth_scene *s) {
     mem_free(m->hist, sizeof(int) * m->histcap);
     mem_free(m->pbof, sizeof(int) * (size_t)m->nblocks);
     mpm_two_field_free(m);
-    mpm_aflip_free(m);
     mpm_ranks_free(m);
     mem_free(m, sizeof *m);
     s->mpm = NULL;
@@ -117,7 +116,6 @@ static hearth_status mpm_init(hearth_scene *s, hearth_error *err) {
     /* the colour phases at any thread count: for measuring the gather against them on one build (the same bits) */
     const char *cp = getenv("HEARTH_MPM_COLOUR_PHASES");
     m->colour_phases = cp && strcmp(cp, "1") == 0;
-    mpm_aflip_init(m);
     hearth_status st = team_wait_init(&m->team, err);
     if (st) return st;
     return mpm_ranks_init(m, err);
@@ -742,7 +740,6 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     hearth_status st;
     int sorted = 0;
     PHASE_STEP();
-    if (s->mpm->aflip_on && (st = mpm_aflip_scatter(s, dt, err))) return st;
     if (usual && !mixing_active(s) && s->ps.n >= SCENE_PARALLEL_MIN && mpm_p2g_store_held(s)) { /* the gather's step */
         mpm_sort_team t;
         if ((st = mpm_sort_begin(s, &t, err))) return st;

@@ -90,19 +90,7 @@ typedef struct mpm_state {
     /* the waits of the step's teams (team_wait.h; HEARTH_TEAM_SPIN at init): the sort's, the one-region
      * step's and 3D's claimed step's barriers spin a while before they sleep */
     team_wait team;
-    /* aflip (measurement only, #18): HEARTH_AFLIP_ALPHA / HEARTH_AFLIP_TAU at init turn on an APIC-FLIP blend
-     * in G2P (mpm_aflip.c); aflip_v holds each node's P2G velocity before the update (x, y, z, mass) */
-    int aflip_on;
-    double aflip_alpha0, aflip_tau, aflip_alpha;
-    double *aflip_v;
-    size_t aflip_cap;
 } mpm_state;
-
-/* aflip (mpm_aflip.c) */
-void mpm_aflip_init(mpm_state *m);
-hearth_status mpm_aflip_scatter(hearth_scene *s, double dt, hearth_error *err);
-void mpm_aflip_free(mpm_state *m);
-double mpm_aflip_residual_share(hearth_scene *s);
 
 /* ---- two velocity fields at cracks (mpm_two_field.c; scene setting two_field, 2D) ---- */
 

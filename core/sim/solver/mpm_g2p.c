@@ -73,7 +73,6 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         hi[d] = g->lo[d] + (g->nn[d] - 2) * dx;
         if (s->def.periodic[d]) lo[d] = -INFINITY, hi[d] = INFINITY; /* wrapped after G2P instead */
     }
-    const double *AV = s->mpm->aflip_on ? s->mpm->aflip_v : NULL, aflip_alpha = s->mpm->aflip_alpha;
     double ke = 0, mass = 0, vmax = -1, move2 = 0;
     int mover = -1;
     double w_removed = 0, w_dmax = 0, w_emax = 0;
@@ -186,21 +185,9 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
          * moves with its grip. */
         const double xo[3] = {x[0], x[1], x[2]};
         int out = 0;
-        if (AV && !carried) { /* aflip (mpm_aflip.c): keep alpha of the residual against the P2G velocity */
-            double vo[3] = {0, 0, 0};
-            for (int a = 0; a < 3; a++)
-                for (int b = 0; b < 3; b++)
-                    for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                        const size_t l = ((size_t)(base[0] + org[0] + a) * (size_t)g->nn[1] + (size_t)(base[1] + org[1] + b)) *
-                                             (size_t)(D == 3 ? g->nn[2] : 1) + (size_t)(D == 3 ? base[2] + org[2] + c : 0);
-                        const double wt = w[0][a] * w[1][b] * (D == 3 ? w[2][c] : 1.0);
-                        for (int d = 0; d < D; d++) vo[d] += wt * AV[4 * l + d];
-                    }
-            for (int d = 0; d < D; d++) v[d] = nv[d] + aflip_alpha * (v[d] - vo[d]);
-        }
         for (int d = 0; d < D; d++) {
             if (!carried) {
-                if (!AV) v[d] = nv[d];
+                v[d] = nv[d];
                 x[d] += dt * nv[d];
             }
             /* a particle that left the domain is put back on its edge and counted, never dropped */
