@@ -239,7 +239,7 @@ TEST(sph_water_conserves) {
 
 /* A pinned wet block (40 x 20 mm, 2D) in an oven at 200 degC with a Robin
  * beta, evaporating into dry air with latent_heat on: heat in through the
- * Robin boundary (the ledger sph_heat_ledger keeps) = sensible heat gained
+ * Robin boundary (the ledger sph_fields_advance keeps) = sensible heat gained
  * + L x water lost. Returns the relative imbalance; *share the latent part's
  * share of the heat in. */
 static double latent_balance(double dx, double until, double *share) {

@@ -117,7 +117,7 @@ void water_prepare(struct hearth_scene *s);
 /// lost (kg); raises *dmax and *emax, the explicit-step limits.
 double water_take(struct hearth_scene *s, int i, double r, double *dmax, double *emax);
 /// With the scene's latent_heat, for particle i (of volume vol, m^3: MPM's
-/// P2G volume, SPH's J V_0) whose new temperature *T passed Tb (degrees C):
+/// P2G volume, SPH's rest volume V_0, as its saturation) whose new temperature *T passed Tb (degrees C):
 /// the excess heat boils its water above the floor, m c (*T - Tb) / L, and *T
 /// falls by L / (m c) per kg boiled (to Tb unless the water ran out). Returns
 /// the water boiled (kg); the vapour leaves the body. Both solvers call it.

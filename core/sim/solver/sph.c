@@ -34,7 +34,7 @@
  *                        and heated colliders' contact beta (as MPM)
  *   sph_water_rates      water as MPM's (Ding eq. 8, 22; sph_water.c)
  *   phase_xsph           XSPH (3.34 with the tuner of 4.4)
- *   phase_fields         temperatures and water forward; boiling
+ *   sph_fields_advance   temperatures and water forward; boiling (sph_heat.c)
  *   phase_drift          drift (3.57-3.58), colliders and walls with the
  *                        thesis's response (3.31-3.33)
  *   sph_walls_end        moving fixed bodies move rigidly (sph_walls.c)
@@ -723,21 +723,6 @@ static inline double signal_speed(const struct sph_state *st, const hearth_sph_d
     return c > c0 ? c : c0;
 }
 
-/* Temperatures and water forward (sph_water.c: with latent_heat a wet
- * particle past the boiling point boils), then the highest temperatures. */
-static void phase_fields(hearth_scene *s, double dt) {
-    const struct sph_state *st = s->sph;
-    const sph_cols c = sph_cols_of(s);
-    double *T = c.T, *Tmax = c.Tmax;
-    if (T)
-        for (int i = 0; i < c.n; i++) T[i] += dt * st->dT[i];
-    sph_heat_ledger(s, dt); /* with latent_heat: the oven's heat in, for the books */
-    if (water_active(s)) sph_water_advance(s, dt);
-    if (T && Tmax)
-        for (int i = 0; i < c.n; i++)
-            if (T[i] > Tmax[i]) Tmax[i] = T[i];
-}
-
 /* The drift (eq. 3.57-3.58; the
  * second half under leapfrog), colliders and box walls with the thesis's
  * response (eq. 3.31-3.33: v = beta_c v_t - alpha_c v_n), and the report:
@@ -849,7 +834,7 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     sph_heat_rates(s); /* reads st->vc and st->sp (sph_kinematics) */
     if (water_active(s)) sph_water_rates(s); /* after the heat: the latent sink takes from st->dT */
     phase_xsph(s);
-    phase_fields(s, dt);
+    sph_fields_advance(s, dt); /* sph_heat.c */
     phase_drift(s, dt, rep);
     sph_walls_end(s, dt);
     st->n = n;

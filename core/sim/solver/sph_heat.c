@@ -2,12 +2,14 @@
  * 3.45-3.46) and the oven's Robin flux with heated colliders' contact beta
  * (as MPM's, Ding et al. 2019 §6.6), and the limits they put on dt.
  * phase_forces (sph.c) calls sph_heat_rates after the viscous moments;
- * phase_drift moves the temperatures by st->dT. */
+ * sph_fields_advance moves the temperatures by st->dT, and the water with
+ * them (sph_water.c). */
 #include <math.h>
 
 #include "material.h"
 #include "sph_kernel.h"
 #include "sph_state.h"
+#include "water.h"
 
 /* Per particle: internal heat (eq. 3.45-3.46) over the neighbours, external
  * heat at surface particles (eq. 3.42 per unit area of surface, not as printed:
@@ -36,7 +38,7 @@ void sph_heat_rates(hearth_scene *s) {
     const double beta_oven = isfinite(Text) ? s->def.oven_beta : 0.0;
     int robin = beta_oven > 0;
     for (int q = 0; q < s->ncol; q++) robin |= !isnan(s->cols[q].temperature) && s->cols[q].beta > 0;
-    /* with latent_heat the oven's Robin heat is tallied (sph_heat_ledger), as MPM's (thermal.c's oven_ledger) */
+    /* with latent_heat the oven's Robin heat is tallied (heat_ledger), as MPM's (thermal.c's oven_ledger) */
     const int ledger = s->def.latent_heat && robin;
     if (s->def.latent_heat && !robin)
         for (int i = 0; i < n; i++) st->qo[i] = 0;
@@ -142,11 +144,27 @@ double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin) {
  * only with latent_heat, for the books heat in = sensible heat + L x water
  * lost (`sph_latent_heat_energy_balance`). thermal_step_stands counts it once
  * the step stands. */
-void sph_heat_ledger(hearth_scene *s, double dt) {
+static void heat_ledger(hearth_scene *s, double dt) {
     s->heat.step_oven_heat = 0;
     if (!s->def.latent_heat || isnan(s->def.oven_temperature) || !(s->ps.enabled & (1u << PC_TEMPERATURE))) return;
     const double *qo = s->sph->qo;
     double q = 0;
     for (int i = 0; i < s->ps.n; i++) q += qo[i];
     s->heat.step_oven_heat = dt * q;
+}
+
+/* Temperatures and water forward by their rates (sph_water.c: with
+ * latent_heat a wet particle past the boiling point boils), then the highest
+ * temperatures. */
+void sph_fields_advance(hearth_scene *s, double dt) {
+    const struct sph_state *st = s->sph;
+    const sph_cols c = sph_cols_of(s);
+    double *T = c.T, *Tmax = c.Tmax;
+    if (T)
+        for (int i = 0; i < c.n; i++) T[i] += dt * st->dT[i];
+    heat_ledger(s, dt); /* with latent_heat: the oven's heat in, for the books */
+    if (water_active(s)) sph_water_advance(s, dt);
+    if (T && Tmax)
+        for (int i = 0; i < c.n; i++)
+            if (T[i] > Tmax[i]) Tmax[i] = T[i];
 }

@@ -41,7 +41,7 @@ struct sph_state {
     double *vr;     /* rest volume (rest_volume) per particle this step, for sph.gas_law's density sum */
     /* sph_water.c's, made only with water or latent_heat (sph_water_ensure; wcap particles): the
      * water's rate (kg/s), saturation and K theta s this step, and the oven's Robin heat per
-     * particle (W) for latent_heat's ledger (sph_heat_ledger) */
+     * particle (W) for latent_heat's ledger (sph_fields_advance's ledger) */
     double *dW, *sw, *wd, *qo;
     int wcap;
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
@@ -170,8 +170,9 @@ double sph_stable_dt(const hearth_scene *s);
 /* ---- sph_heat.c ---- */
 /// Heat rates dT/dt into st->dT (nothing without the temperature field).
 void sph_heat_rates(hearth_scene *s);
-/// With latent_heat: the oven's Robin heat over the step into s->heat.step_oven_heat (after sph_heat_rates).
-void sph_heat_ledger(hearth_scene *s, double dt);
+/// After the rates: temperatures and water forward by dt (with latent_heat the oven's heat in into
+/// s->heat.step_oven_heat, and boiling), then the highest temperatures.
+void sph_fields_advance(hearth_scene *s, double dt);
 /// The heat limits on dt (INFINITY when none applies); hmin, rhomin over the particles.
 double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin);
 
