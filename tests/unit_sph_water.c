@@ -55,6 +55,18 @@ static hearth_scene *sph_slab(int across, double a, double K, double bw, double 
     return sph_slab_dim(2, across, a, K, bw, s_amb, s0, dtmax);
 }
 
+/* A tray: a plane collider at height y, facing up (the thesis's response, no heat). */
+static int add_tray(hearth_scene *s, double y) {
+    const double pt[3] = {0, y, 0}, nrm[3] = {0, 1, 0};
+    hearth_error err;
+    hearth_collider_def cd = hearth_default_collider_def();
+    cd.shape = hearth_shape_plane(pt, nrm);
+    const int ok = hearth_scene_add_collider(s, &cd, &err) >= 0;
+    if (!ok) fprintf(stderr, "tray: %s\n", err.msg);
+    hearth_shape_free((hearth_shape *)cd.shape);
+    return ok;
+}
+
 /* ---- Crank's sheet with a Robin face (eq. 4.54) ----------------------------
  * The slab at s0 = 0.5 exchanges with a humid oven at S = 0.5001 through its
  * evaporation (beta^w theta (s - S), Ding §3.2 with our ambient): D = K theta s
@@ -183,11 +195,7 @@ static void wet_dry_run(int threads, double *W0, double *W1, double *lost, uint6
     hearth_error err;
     const int m = hearth_scene_add_material(s, "newtonian", n, v, 6, &err);
     CHECK(m >= 0);
-    double pt[3] = {0, 0.01, 0}, nrm[3] = {0, 1, 0};
-    hearth_collider_def cd = hearth_default_collider_def();
-    cd.shape = hearth_shape_plane(pt, nrm);
-    CHECK(hearth_scene_add_collider(s, &cd, &err) >= 0);
-    hearth_shape_free((hearth_shape *)cd.shape);
+    CHECK(add_tray(s, 0.01));
     for (int k = 0; k < 2; k++) {
         const double c[3] = {0.05 + 0.04 * k, 0.0255, 0}, hh[3] = {0.02, 0.015, 0.5};
         hearth_body_def bd = hearth_default_body_def();
@@ -471,11 +479,7 @@ TEST(sph_water_saturation_ignores_surface_J) {
     hearth_error err;
     const int m = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
     CHECK(m >= 0);
-    double pt[3] = {0, 0.01, 0}, nrm[3] = {0, 1, 0};
-    hearth_collider_def cd = hearth_default_collider_def();
-    cd.shape = hearth_shape_plane(pt, nrm);
-    CHECK(hearth_scene_add_collider(s, &cd, &err) >= 0);
-    hearth_shape_free((hearth_shape *)cd.shape);
+    CHECK(add_tray(s, 0.01));
     const double c[3] = {0.05, 0.021, 0}, hh[3] = {0.02, 0.01, 0.5};
     hearth_body_def bd = hearth_default_body_def();
     bd.shape = hearth_shape_box(c, hh);
