@@ -536,9 +536,9 @@ static hearth_scene *wet_bulb_block(void) {
  * surface layer only lowers the excess, water_surface_excess; evaporation
  * and Fick's flux never raise a saturation past its start). The sink rises
  * with T, so below the wet bulb of s0 the heat in exceeds the sink at any
- * saturation and the coldest particle warms. (A bound, not the plateau: the
- * layer's excess is a twelfth of s0 here and the conduction is strong, so
- * the block stays far above it.) The sink must act (the block cools more
+ * saturation and the coldest particle warms. (A bound, not the plateau: with K
+ * this small the surface layer's excess is a small part of s0 - s_amb, and
+ * the conduction is strong, so the block stays far above it.) The sink must act (the block cools more
  * than 10 K below its start, where the 200 degC oven alone would warm it),
  * and the latent books hold to latent_heat_energy_balance's 1%. Main's eq. 8
  * alone fails it: -268.4 degC. */
