@@ -574,6 +574,36 @@ TEST(latent_heat_stops_at_wet_bulb) {
     hearth_scene_destroy(s);
 }
 
+/* The vapour factor keeps the calibration point: at the boiling point (and
+ * past it) the rate is Ding's eq. 8 exactly, so h.library.dough's beta^w,
+ * chosen for a wet surface at 373 K, means what it meant; below it the rate
+ * is eq. 8's times P_sat(theta) / P_sat(theta_b) by this test's own
+ * Clausius-Clapeyron (40.66 kJ/mol; 0.476 at 80 degC), and without
+ * latent_heat (psat_b = 0) it is eq. 8 verbatim. The scene hands the solvers
+ * P_sat(100 degC) = 101325 Pa with the switch and 0 without. */
+TEST(latent_evaporation_is_dings_at_boiling) {
+    const double hr = 40660.0 / 8.314462618, thb = 100 + KELVIN, pb = 101325.0;
+    const double bw = 1.2e-5, K = 2e-9 / (373.15 * 0.218), rho0 = 1000, s_d = 0.218, d = 1e-3, A = 1e-4;
+    const double th[4] = {thb, thb + 50, thb - 20, 25 + KELVIN};
+    for (int k = 0; k < 4; k++) {
+        const double ding = water_evaporation(bw, K, rho0, th[k], s_d, 0.0, d, A, 0.0);
+        const double vap = water_evaporation(bw, K, rho0, th[k], s_d, 0.0, d, A, pb);
+        const double want = fmin(1.0, exp(-hr * (1 / th[k] - 1 / thb)));
+        printf("  theta %.2f K: eq. 8 %.6e kg/s, with the vapour factor %.6e (ratio %.6f, Clausius-Clapeyron %.6f)\n", th[k],
+               ding, vap, vap / ding, want);
+        CHECK(ding > 0);
+        CHECK(fabs(vap / ding - want) < 1e-9);
+        if (k < 2) CHECK(vap == ding); /* at and past the boiling point: eq. 8 itself */
+    }
+    block b = make_block(0.004, 1, 0, WET_K);
+    const double p1 = water_psat_boiling(b.s);
+    b.s->def.latent_heat = 0;
+    const double p0 = water_psat_boiling(b.s);
+    printf("  P_sat(boiling_point) handed to the solvers: %.6f Pa with latent_heat, %g without\n", p1, p0);
+    CHECK(fabs(p1 - pb) < 1e-6 && p0 == 0);
+    hearth_scene_destroy(b.s);
+}
+
 TEST_MAIN(T(latent_heat_energy_balance), T(latent_heat_wet_plateau), T(latent_heat_refusals), T(latent_heat_checkpoint_roundtrip),
           T(latent_heat_boiling_energy_balance), T(latent_heat_crumb_plateau), T(latent_heat_boiling_point_checkpoint_roundtrip),
-          T(latent_heat_stops_at_wet_bulb))
+          T(latent_heat_stops_at_wet_bulb), T(latent_evaporation_is_dings_at_boiling))
