@@ -87,9 +87,9 @@ static inline double water_surface_excess(double s_d, double s_amb, double a) {
  * P_sat(T_s) - p_v,air) with h_m in kg/(m^2 s Pa) and the water activity a_w
  * falling as the surface dries (Zanoni, Pierucci & Peri 1994, J. Food Eng.
  * 23:321; Zhang & Datta 2006, J. Food Eng. 75:78), with Ding's s for a_w and
- * beta^w theta / P_sat(theta_b) for h_m, so the rate at theta_b is eq. 8's and the physical presets keep
- * their calibration point (h.library.dough's 1.2e-5 at a wet 373 K surface,
- * lua/hearth/dough_physical.lua). The air's term stays s_amb P_sat(theta),
+ * beta^w theta / P_sat(theta_b) for h_m, so the rate at theta_b is eq. 8's
+ * and the physical presets keep their calibration point (h.library.dough's
+ * 1.2e-5 at a wet 373 K surface, lua/hearth/dough_physical.lua). The air's term stays s_amb P_sat(theta),
  * at the surface's temperature, not the oven air's pressure: s_amb keeps its
  * meaning (the saturation toward which exchange goes, water.c), which the
  * humid oven's tests calibrate; a real oven's vapour pressure would make a
