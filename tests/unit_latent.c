@@ -11,8 +11,10 @@
  *     beta (theta_oven - theta_s) = L beta^w (theta_s + 273.15) s_s      (1)
  * (heat in through the Robin boundary = heat out with the vapour, once the
  * interior no longer draws heat) puts a surface at s_s = 0.8 at 99 degC: the
- * wet-bulb temperature of this model, whose evaporation (eq. 8, §3.2) does not
- * know the boiling point. */
+ * wet-bulb temperature of eq. 8's evaporation (§3.2), linear in theta. Since
+ * #18 the scene's latent_heat also drives evaporation by the vapour pressure,
+ * the right side of (1) times min(1, P_sat(theta) / P_sat(100 degC)) (water.h):
+ * 99.7 degC at s_s = 0.8, and (1) unchanged above 100 degC. */
 #include <math.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -113,11 +115,12 @@ TEST(latent_heat_energy_balance) {
     for (int k = 0; k < 3; k++) CHECK(share[k] > 0.2);
 }
 
-/* The surface temperature that (1) gives at surface saturation s. */
-static double wet_bulb(double s) {
-    const double k = HEARTH_LATENT_HEAT * BETA_W * s;
-    return (OVEN_BETA * OVEN_T - k * KELVIN) / (OVEN_BETA + k);
-}
+/* The surface temperature that (1) gives at surface saturation s, with the
+ * vapour's factor f = min(1, P_sat(theta) / P_sat(100 degC)) on its right side
+ * since #18 (water.h): water_reference.h's closed form. f < 1 only below
+ * 100 degC, so it moves (1) only where (1) was below 100 degC: 99.0 ->
+ * 99.7 degC at s = 0.8; 120 degC at s = 0.6 as before. */
+static double wet_bulb(double s) { return wet_bulb_vapour(OVEN_BETA, OVEN_T, BETA_W, s, 100.0); }
 
 typedef struct history {
     double t[64], top_T[64], top_s[64], surf_s[64], centre_T[64], centre_s[64];
@@ -157,7 +160,7 @@ static void bake(double dx, int latent, double every, int n, history *hst) {
  * without latent heat the same surface is past 150 degC by then and far above
  * (1). At two resolutions. Ding et al.'s evaporation is beta^w theta s (eq. 8),
  * which weakens as the surface dries, so this is a rising wet-bulb curve, not
- * boiling: (1) gives 99 degC at s = 0.8 and 120 degC at s = 0.6. */
+ * boiling: (1) gives 99.7 degC at s = 0.8 and 120 degC at s = 0.6. */
 TEST(latent_heat_wet_plateau) {
     enum { N = 24 };
     const double every = 250;
@@ -481,5 +484,126 @@ TEST(latent_heat_boiling_point_checkpoint_roundtrip) {
     hearth_scene_destroy(b.s);
 }
 
+/* ---- the wet-bulb floor (#18) ------------------------------------------------
+ * The defect: evaporation by eq. 8 alone, beta^w theta (s - s_amb), is linear
+ * in the absolute temperature and knows no vapour pressure, so a material
+ * whose L beta^w is large against its heat capacity (in range, if extreme)
+ * cooled until theta reached 0: -268.4 degC within 1 s on MPM. With the
+ * vapour's factor P_sat(theta) / P_sat(theta_b) (water.h) it stops at a
+ * wet-bulb temperature. The reproducer: a pinned 40 x 20 mm block at 25 degC
+ * and saturation 0.8 in a 200 degC oven of beta 40, a Newtonian material of
+ * density 500, specific heat 270, conductivity 5, K 1e-8, beta^w 0.05,
+ * latent_heat on, 1 s at dx 2 mm (unit_sph_water.c runs it on SPH). */
+#define WB_S0 0.8
+#define WB_BW 0.05
+#define WB_T0 25.0
+
+static hearth_scene *wet_bulb_block(void) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.002;
+    d.gravity[1] = 0;
+    d.lo[0] = d.lo[1] = 0;
+    d.hi[0] = 0.1;
+    d.hi[1] = 0.06;
+    d.oven_temperature = OVEN_T;
+    d.oven_beta = OVEN_BETA;
+    d.latent_heat = 1;
+    hearth_scene *s = fx_scene_def(&d);
+    CHECK(s != NULL);
+    if (!s) return NULL;
+    const char *nm[] = {"density", "bulk", "viscosity", "specific_heat", "conductivity", "water_diffusivity", "evaporation"};
+    const double nv[] = {500, 1e3, 5, 270, 5, 1e-8, WB_BW};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "newtonian", nm, nv, 7, &err);
+    if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
+    CHECK(m >= 0);
+    const double c[3] = {0.05, 0.03, 0}, h[3] = {0.02, 0.01, 0};
+    hearth_shape *box = hearth_shape_box(c, h);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = box, bd.material = m, bd.jitter = 0, bd.fixed = 1;
+    bd.temperature = WB_T0, bd.saturation = WB_S0;
+    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    hearth_shape_free(box);
+    return s;
+}
+
+/* The reproducer's coldest particle, every step, stays above the wet-bulb
+ * temperature of its initial saturation (water_reference.h's closed form,
+ * -38.2 degC here). Why the minimum cannot go below it: the coldest
+ * particle gains heat from conduction (it is the coldest), from the oven
+ * beta (T_oven - T) per unit area, and loses L beta^w theta f(theta) (s_surf -
+ * s_amb) per unit area, where s_surf - s_amb <= s - s_amb <= s0 - s_amb (the
+ * surface layer only lowers the excess, water_surface_excess; evaporation
+ * and Fick's flux never raise a saturation past its start). The sink rises
+ * with T, so below the wet bulb of s0 the heat in exceeds the sink at any
+ * saturation and the coldest particle warms. (A bound, not the plateau: with K
+ * this small the surface layer's excess is a small part of s0 - s_amb, and
+ * the conduction is strong, so the block stays far above it.) The sink must act (the block cools more
+ * than 10 K below its start, where the 200 degC oven alone would warm it),
+ * and the latent books hold to latent_heat_energy_balance's 1%. Main's eq. 8
+ * alone fails it: -268.4 degC. */
+TEST(latent_heat_stops_at_wet_bulb) {
+    const double T_wb = wet_bulb_vapour(OVEN_BETA, OVEN_T, WB_BW, WB_S0, 100.0);
+    hearth_scene *s = wet_bulb_block();
+    if (!s) return;
+    hearth_stats st;
+    hearth_scene_stats(s, &st);
+    const double E0 = st.heat_energy, W0 = st.water_mass;
+    hearth_error err;
+    double lo = INFINITY, t_lo = 0;
+    int finite = 1;
+    while (hearth_scene_time(s) < 1.0 - 1e-12) {
+        CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+        const double *T = pcold(&s->ps, PC_TEMPERATURE);
+        for (int i = 0; i < s->ps.n; i++) {
+            finite &= isfinite(T[i]);
+            if (T[i] < lo) lo = T[i], t_lo = hearth_scene_time(s);
+        }
+    }
+    hearth_scene_stats(s, &st);
+    const double dE = st.heat_energy - E0, dW = W0 - st.water_mass, Q = st.oven_heat_in;
+    const double miss = (dE + HEARTH_LATENT_HEAT * dW - Q) / Q;
+    printf("  %ld steps, t = %.3f s: coldest particle %.2f degC (at %.3f s) against the wet bulb %.2f degC of s = %.2f; "
+           "heat in %.6g J/m = sensible %.6g + L x water %.6g; imbalance %.3g\n",
+           st.step, st.t, lo, t_lo, T_wb, WB_S0, Q, dE, HEARTH_LATENT_HEAT * dW, miss);
+    CHECK(isfinite(T_wb) && T_wb > -273.15 && T_wb < WB_T0); /* the closed form itself */
+    CHECK(finite);
+    CHECK(lo > T_wb);
+    CHECK(lo < WB_T0 - 10); /* the sink acts */
+    CHECK(fabs(miss) < 0.01);
+    hearth_scene_destroy(s);
+}
+
+/* The vapour factor keeps the calibration point: at the boiling point (and
+ * past it) the rate is Ding's eq. 8 exactly, so h.library.dough's beta^w,
+ * chosen for a wet surface at 373 K, means what it meant; below it the rate
+ * is eq. 8's times P_sat(theta) / P_sat(theta_b) by this test's own
+ * Clausius-Clapeyron (40.66 kJ/mol; 0.476 at 80 degC), and without
+ * latent_heat (psat_b = 0) it is eq. 8 verbatim. The scene hands the solvers
+ * P_sat(100 degC) = 101325 Pa with the switch and 0 without. */
+TEST(latent_evaporation_is_dings_at_boiling) {
+    const double hr = 40660.0 / 8.314462618, thb = 100 + KELVIN, pb = 101325.0;
+    const double bw = 1.2e-5, K = 2e-9 / (373.15 * 0.218), rho0 = 1000, s_d = 0.218, d = 1e-3, A = 1e-4;
+    const double th[4] = {thb, thb + 50, thb - 20, 25 + KELVIN};
+    for (int k = 0; k < 4; k++) {
+        const double ding = water_evaporation(bw, K, rho0, th[k], s_d, 0.0, d, A, 0.0);
+        const double vap = water_evaporation(bw, K, rho0, th[k], s_d, 0.0, d, A, pb);
+        const double want = fmin(1.0, exp(-hr * (1 / th[k] - 1 / thb)));
+        printf("  theta %.2f K: eq. 8 %.6e kg/s, with the vapour factor %.6e (ratio %.6f, Clausius-Clapeyron %.6f)\n", th[k],
+               ding, vap, vap / ding, want);
+        CHECK(ding > 0);
+        CHECK(fabs(vap / ding - want) < 1e-9);
+        if (k < 2) CHECK(vap == ding); /* at and past the boiling point: eq. 8 itself */
+    }
+    block b = make_block(0.004, 1, 0, WET_K);
+    const double p1 = water_psat_boiling(b.s);
+    b.s->def.latent_heat = 0;
+    const double p0 = water_psat_boiling(b.s);
+    printf("  P_sat(boiling_point) handed to the solvers: %.6f Pa with latent_heat, %g without\n", p1, p0);
+    CHECK(fabs(p1 - pb) < 1e-6 && p0 == 0);
+    hearth_scene_destroy(b.s);
+}
+
 TEST_MAIN(T(latent_heat_energy_balance), T(latent_heat_wet_plateau), T(latent_heat_refusals), T(latent_heat_checkpoint_roundtrip),
-          T(latent_heat_boiling_energy_balance), T(latent_heat_crumb_plateau), T(latent_heat_boiling_point_checkpoint_roundtrip))
+          T(latent_heat_boiling_energy_balance), T(latent_heat_crumb_plateau), T(latent_heat_boiling_point_checkpoint_roundtrip),
+          T(latent_heat_stops_at_wet_bulb), T(latent_evaporation_is_dings_at_boiling))

@@ -546,6 +546,71 @@ TEST(sph_water_alloc_failures) {
     CHECK(failures > 10);
 }
 
+/* ---- the wet-bulb floor (#18) ------------------------------------------------
+ * unit_latent.c's latent_heat_stops_at_wet_bulb on SPH, the reproducer as the
+ * issue gives it (h.scene{solver = "sph", ...}): a pinned 40 x 20 mm block at
+ * 25 degC and saturation 0.8, a Newtonian material of density 500, bulk 1e3,
+ * viscosity 5, specific heat 270, K 1e-8, beta^w 0.05 (its conductivity 5
+ * is MPM's: SPH conducts by sph.heat_int, 0 here as in the scene), a 200 degC
+ * oven of beta 40, latent_heat on, 1 s at dx 2 mm. With eq. 8 alone its top
+ * corner went to -271.8 degC. Each surface particle is on its own here (no
+ * conduction): forward Euler moves it toward the balance of the oven's
+ * h (T_oven - T) face against L beta^w theta f(theta) (s_surf - s_amb) face,
+ * and s_surf - s_amb <= s0 - s_amb (the layer only lowers the excess;
+ * evaporation only lowers s), so it cannot pass the wet bulb of s0, whose
+ * sink is the largest; the step limit (sph_water_stable_dt, the sink's
+ * stiffness with the vapour's factor) keeps a step from jumping past it. */
+TEST(sph_latent_heat_stops_at_wet_bulb) {
+    const double bw = 0.05, s0 = 0.8, T0 = 25, T_wb = wet_bulb_vapour(40, 200, bw, s0, 100);
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.06, 0};
+    hearth_scene_def d = sph_def(2, 0.002, lo, hi);
+    d.gravity[1] = 0;
+    d.oven_temperature = 200;
+    d.oven_beta = 40;
+    d.latent_heat = 1;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    CHECK(s != NULL);
+    if (!s) return;
+    const char *n[] = {"density", "bulk", "viscosity", "specific_heat", "conductivity", "water_diffusivity", "evaporation"};
+    const double v[] = {500, 1e3, 5, 270, 5, 1e-8, bw};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "newtonian", n, v, 7, &err);
+    if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
+    CHECK(m >= 0);
+    const double c[3] = {0.05, 0.03, 0}, hh[3] = {0.02, 0.01, 0.5};
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = hearth_shape_box(c, hh);
+    bd.material = m, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1, bd.temperature = T0, bd.saturation = s0;
+    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    hearth_shape_free((hearth_shape *)bd.shape);
+    hearth_stats st;
+    hearth_scene_stats(s, &st);
+    const double E0 = st.heat_energy, W0 = st.water_mass;
+    double Tlo = INFINITY, t_lo = 0;
+    int finite = 1;
+    while (hearth_scene_time(s) < 1.0 - 1e-12) {
+        CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+        const double *T = pcold(&s->ps, PC_TEMPERATURE);
+        for (int i = 0; i < s->ps.n; i++) {
+            finite &= isfinite(T[i]);
+            if (T[i] < Tlo) Tlo = T[i], t_lo = hearth_scene_time(s);
+        }
+    }
+    hearth_scene_stats(s, &st);
+    const double dE = st.heat_energy - E0, dW = W0 - st.water_mass, Q = st.oven_heat_in;
+    const double miss = (dE + HEARTH_LATENT_HEAT * dW - Q) / Q;
+    printf("  %ld steps, t = %.3f s: coldest particle %.2f degC (at %.3f s) against the wet bulb %.2f degC of s = %.2f; "
+           "heat in %.6g J/m = sensible %.6g + L x water %.6g; imbalance %.3g\n",
+           st.step, st.t, Tlo, t_lo, T_wb, s0, Q, dE, HEARTH_LATENT_HEAT * dW, miss);
+    CHECK(isfinite(T_wb) && T_wb > -273.15 && T_wb < T0); /* the closed form itself */
+    CHECK(finite);
+    CHECK(Tlo > T_wb);
+    CHECK(Tlo < T0 - 10); /* the sink acts */
+    CHECK(fabs(miss) < 0.01);
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(sph_water_sheet_robin_converges), T(sph_water_sheet_3d_converges), T(sph_water_drying_vs_fd), T(sph_water_conserves),
           T(sph_latent_heat_energy_balance), T(sph_latent_heat_crumb_plateau), T(sph_browning_reads_water),
-          T(sph_water_saturation_ignores_surface_J), T(sph_water_alloc_failures))
+          T(sph_water_saturation_ignores_surface_J), T(sph_water_alloc_failures),
+          T(sph_latent_heat_stops_at_wet_bulb))

@@ -101,4 +101,25 @@ static inline double boil_front_fd(int n, double H, double rho, double c, double
     return t;
 }
 
+/* The wet-bulb temperature (degC) of a wet surface with latent heat and the
+ * vapour-driven evaporation of issue #18 (water.h, water_vapour_factor): the
+ * surface temperature T where the oven's Robin heat equals what the vapour
+ * carries away at surface saturation excess ds = s - s_amb,
+ *     beta (T_oven - T) = L beta^w theta ds P_sat(theta) / P_sat(theta_b)   (theta = T + 273.15),
+ * the ratio capped at 1. P_sat by Clausius-Clapeyron through 101325 Pa at
+ * 100 degC with Delta H_v = 40.66 kJ/mol (Rodriguez-Arenas 2011 eq. 2.43),
+ * written out here, not read from the core. The right side rises with T and
+ * the left falls, so bisection on [-273.15, T_oven] finds the one root. */
+static inline double wet_bulb_vapour(double beta, double T_oven, double bw, double ds, double Tb) {
+    const double hr = 40660.0 / 8.314462618, thb = Tb + 273.15;
+    double lo = -273.15, hi = T_oven;
+    for (int it = 0; it < 200; it++) {
+        const double T = 0.5 * (lo + hi), th = T + 273.15;
+        const double f = th > 0 ? fmin(1.0, exp(-hr * (1.0 / th - 1.0 / thb))) : 0.0;
+        if (beta * (T_oven - T) > HEARTH_LATENT_HEAT * bw * th * ds * f) lo = T;
+        else hi = T;
+    }
+    return 0.5 * (lo + hi);
+}
+
 #endif

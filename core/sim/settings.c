@@ -79,7 +79,9 @@ static const hearth_setting settings[] = {
          water_momentum),
     FLAG("latent_heat", "evaporated water takes 2.26 MJ/kg (water's latent heat near 100 degC) from the heat of the particle "
          "it leaves, and a wet particle does not heat past boiling_point but boils its water (both solvers; beyond Ding et al. eq. 9): "
-         "a wet crumb holds at the boiling point, a dry crust heats on. "
+         "a wet crumb holds at the boiling point, a dry crust heats on. With it, evaporation is driven by the vapour "
+         "pressure: Ding's beta^w theta (s - s_amb) times P_sat(T) / P_sat(boiling_point) (Clausius-Clapeyron, at most 1), "
+         "so a wet surface stops cooling at its wet-bulb temperature. "
          "Off by default and for the animation-unit presets h.library.paper_oven.*", latent_heat),
     REAL("boiling_point", "degC",
          "with latent_heat: a particle that holds water does not heat past this; the excess heat boils its water, "

@@ -63,7 +63,8 @@ D.goods = {
     -- (e.g. Zanoni, Pierucci & Peri 1994, J. Food Eng. 23:321); eq. 22's D = K theta s gives K = D / (373 s)
     water_diffusivity_m2s = 2e-9,
     -- surface evaporation: chosen so a wet surface (s = 0.218, 373 K) loses ~1 g/(m^2 s) before it boils;
-    -- the boiling front (core, boiling_point) carries most of the water
+    -- the boiling front (core, boiling_point) carries most of the water. With latent_heat (these ovens') the rate
+    -- is this at 373 K and falls with the vapour pressure below it (core/sim/fields/water.h, #18's wet bulb)
     evaporation = 1.2e-5,
     -- rheology: E = 3 G' with G' ~ 1e4 Pa (small-strain moduli 1e3-1e4 Pa, Dobraszczyk & Morgenstern 2003, J. Cereal
     -- Sci. 38:229); creep (overstress) viscosity 1e5 Pa s (the 1e4-1e6 Pa s of the same review); yield stress 200 Pa

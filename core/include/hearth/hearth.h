@@ -241,7 +241,7 @@ typedef struct hearth_scene_def {
     int periodic[3];         ///< 1: the box wraps along that axis (no walls there); the box length must be a whole number of dx. SPH: as sph.periodic
     int browning;            ///< 1: integrate the per-particle browning index from temperature and water history (Zanoni et al. 1995; fields/browning.c); makes the temperature field live. Default 0
     double browning_scale;   ///< multiplies the browning rate: 1 for physical time; the time-scale factor of a scene whose heat runs in animation units. Default 1
-    int latent_heat;         ///< 1: evaporated water takes HEARTH_LATENT_HEAT J/kg from the particle's heat, and wet particles boil at boiling_point (MPM; beyond Ding et al. eq. 9); default 0
+    int latent_heat;         ///< 1: evaporated water takes HEARTH_LATENT_HEAT J/kg from the particle's heat, its evaporation is scaled by the vapour pressure P_sat(T) / P_sat(boiling_point) (at most 1), and wet particles boil at boiling_point (both solvers; beyond Ding et al. eq. 8-9); default 0
     double boiling_point;    ///< with latent_heat: a particle holding water does not heat past this (degrees C); the excess boils its water away (MPM). Default 100
     int two_field;           ///< 1: MPM keeps two velocity fields at nodes across a crack (damage-field-gradient partitioning, Homel & Herbold 2017; solver/mpm_two_field.c); 2D, one rank. Default 0
     double two_field_friction; ///< with two_field: Coulomb coefficient between the two fields where they press together (0 = frictionless). Default 0

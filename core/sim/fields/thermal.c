@@ -49,17 +49,20 @@
  * weights w_ip as the water it removes, so the nodes lose L times the water
  * they lose; forward Euler folds it into the sources, backward Euler takes it
  * on the right-hand side, lagged (the evaporation is the step start's). Its
- * rate of change with the particle's own temperature is L e (s - s_amb) S, so
- * the explicit step is limited as for a Robin coefficient L e
- * (thermal_dt_limit). With the switch on, oven_ledger tallies the oven's Robin
+ * rate of change with the particle's own temperature is at most L e g
+ * (s - s_amb) S, g the vapour factor's bound (water_latent_stiffness, 14.1 at
+ * a 100 degC boiling point), so the explicit step is limited as for a Robin
+ * coefficient L e g (thermal_dt_limit). With the switch on, oven_ledger tallies the oven's Robin
  * heat so that heat in = sensible heat + L x water lost can be checked
  * (`latent_heat_energy_balance`: to 1e-13; a particle that reaches water.c's
  * saturation floor keeps water whose heat was taken, so the books then differ
  * by L times what the floor kept). Rejected: a sink on the particle's
  * temperature after G2P, which would take heat that the nodes never lost
- * from the FLIP update. Ding et al.'s evaporation beta^w theta s does not know
- * the boiling point: a wet surface sits at its wet-bulb balance
- * (`latent_heat_wet_plateau`, docs/validation.md). Interior boiling is the
+ * from the FLIP update. With the switch, evaporation is driven by the vapour
+ * pressure (water.h's water_vapour_factor: Ding et al.'s beta^w theta s alone,
+ * linear in theta, let a strong sink cool a surface toward 0 K): a wet
+ * surface sits at its wet-bulb balance (`latent_heat_wet_plateau`,
+ * `latent_heat_stops_at_wet_bulb`, docs/validation.md). Interior boiling is the
  * other half of the same switch, and it acts on the particles after G2P,
  * where their heat lives: a wet particle past the scene's boiling_point
  * turns the excess into vapour (water.c's water_boil), so a crumb plateaus
@@ -131,6 +134,7 @@ double thermal_dt_limit(const hearth_scene *s) {
     int held = 0; /* a held collider's Nitsche penalty acts as beta = gamma kappa / dx */
     for (int c = 0; c < s->ncol; c++) held |= !isnan(s->cols[c].temperature) && isinf(s->cols[c].beta);
     const int latent = s->def.latent_heat && (s->ps.enabled & (1u << PC_WATER));
+    const double stiff = water_latent_stiffness(water_psat_boiling(s), s->def.boiling_point + KELVIN);
     double dt = INFINITY;
     for (int m = 0; m < s->mats.n; m++) {
         const material_slot *ms = &s->mats.slot[m];
@@ -140,10 +144,12 @@ double thermal_dt_limit(const hearth_scene *s) {
         if (k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * s->def.dim * k));
         /* and on the Robin term: a boundary cell's rho alpha dx^dim against beta dx^(dim-1) */
         if (beta > 0) dt = fmin(dt, ra * s->def.dx / (2.0 * beta));
-        /* the latent sink L e theta_abs (s - s_amb) S falls with the particle's own
-         * temperature at the rate L e (s - s_amb) S <= L e S: a Robin term of
-         * coefficient L e, limited as the oven's */
-        const double le = latent ? HEARTH_LATENT_HEAT * ms->core[CP_EVAPORATION] : 0.0;
+        /* the latent sink L e theta_abs f(theta_abs) (s - s_amb) S falls with the
+         * particle's own temperature at the rate L e g (s - s_amb) S <= L e g S,
+         * g = d(theta f) / d theta <= water_latent_stiffness (the vapour's factor f,
+         * water.h; 14.1 at a 100 degC boiling point): a Robin term of coefficient
+         * L e g, limited as the oven's */
+        const double le = latent ? HEARTH_LATENT_HEAT * ms->core[CP_EVAPORATION] * stiff : 0.0;
         if (le > 0) dt = fmin(dt, ra * s->def.dx / (2.0 * le));
         if (held && k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * NITSCHE_GAMMA * k));
     }

@@ -216,6 +216,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
     const double *V = WATER ? pcold(ps, PC_V) : NULL, *W = WATER ? pcold(ps, PC_WATER) : NULL;
     double *Q = mom ? pcold(ps, PC_QW) : NULL; /* kept only for the momentum coupling */
     const double *area = s->boundary.area, *depth = s->boundary.depth, dt = tp->dt, s_amb = s->def.oven_saturation;
+    const double psat_b = WATER ? water_psat_boiling(s) : 0.0; /* with latent_heat: the vapour's factor (water.h) */
     const int *mat = pcoli(ps, PC_MAT), *flags = pcoli(ps, PC_FLAGS); /* live with heat and with water */
     int jmax_mat = -1; /* the material whose conduction cap jmax holds: it depends on the material alone */
     double jmax = 0;
@@ -273,7 +274,7 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
              * (water_surface_excess, water.h) */
             if (bnd && area && area[i] > 0) {
                 evap = water_evaporation(ms->core[CP_EVAPORATION], ms->core[CP_WATER_DIFFUSIVITY], rho0, th, si, s_amb,
-                                         depth[i], area[i]); /* kg/s */
+                                         depth[i], area[i], psat_b); /* kg/s */
                 /* latent heat (the scene's latent_heat; beyond Ding et al. eq. 9): the
                  * evaporated water leaves with L per kg from this particle's heat, on
                  * the same weights w_ip as the water, so the heat the nodes lose is L

@@ -77,6 +77,10 @@ void water_restore_lost(water_state *w, double lost) { w->lost = lost; }
 
 int water_active(const hearth_scene *s) { return (s->ps.enabled & (1u << PC_WATER)) != 0; }
 
+double water_psat_boiling(const hearth_scene *s) {
+    return s->def.latent_heat && (s->ps.enabled & (1u << PC_TEMPERATURE)) ? vapour_psat(s->def.boiling_point + KELVIN) : 0.0;
+}
+
 int water_material_wants(const hearth_scene *s, int mat) {
     const material_slot *ms = &s->mats.slot[mat];
     return ms->core[CP_WATER_DIFFUSIVITY] > 0 || ms->core[CP_EVAPORATION] > 0 || ms->core[CP_WATER_STIFFNESS] > 0 ||

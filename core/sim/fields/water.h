@@ -5,6 +5,7 @@
 #include <math.h>
 
 #include "hearth/hearth.h"
+#include "vapour.h"
 
 struct hearth_scene;
 
@@ -71,18 +72,67 @@ static inline double water_surface_excess(double s_d, double s_amb, double a) {
     return den > 0 ? (s_d - s_amb) * (s_d + s_amb) / den : 0.0;
 }
 
+/* With the scene's latent_heat, evaporation is driven by the vapour
+ * pressure (issue #18): Ding et al.'s boundary flux beta^w theta (s - s_amb)
+ * (§3.2, the condition beside eq. 8) times
+ *   f(theta) = min(1, P_sat(theta) / P_sat(theta_b)),
+ * P_sat by Clausius-Clapeyron (vapour.h, Rodriguez-Arenas 2011 eq. 2.43) and
+ * theta_b the scene's boiling_point in kelvin. Why: eq. 8's flux is linear in
+ * the absolute temperature, so a wet surface whose vapour takes L per kg
+ * cools on until theta is 0 (a material with L beta^w large against rho c
+ * went to -272 degC within 1 s); a real wet surface stops cooling at its
+ * wet-bulb temperature, where the vapour's pressure, which halves every
+ * ~20 K below boiling, no longer carries away the heat the oven brings.
+ * That is the surface mass-transfer form of baking models, a flux h_m (a_w
+ * P_sat(T_s) - p_v,air) with h_m in kg/(m^2 s Pa) and the water activity a_w
+ * falling as the surface dries (Zanoni, Pierucci & Peri 1994, J. Food Eng.
+ * 23:321; Zhang & Datta 2006, J. Food Eng. 75:78), with Ding's s for a_w and
+ * beta^w theta / P_sat(theta_b) for h_m, so the rate at theta_b is eq. 8's
+ * and the physical presets keep their calibration point (h.library.dough's
+ * 1.2e-5 at a wet 373 K surface, lua/hearth/dough_physical.lua). The air's term stays s_amb P_sat(theta),
+ * at the surface's temperature, not the oven air's pressure: s_amb keeps its
+ * meaning (the saturation toward which exchange goes, water.c), which the
+ * humid oven's tests calibrate; a real oven's vapour pressure would make a
+ * cold wet surface condense, which hearth does not model. Past theta_b the
+ * factor stays 1 (eq. 8 again): there water_boil takes a wet particle's
+ * excess heat, so a surface above theta_b holds little water; the exponential
+ * would make the sink's rate of change with theta, L beta^w S (s - s_amb)
+ * (1 + Delta H_v / (R theta)) f below theta_b, grow without bound above it,
+ * while capped it peaks at theta_b, which the step limits take
+ * (water_latent_stiffness). psat_b is P_sat(theta_b) (Pa); 0 (latent_heat off,
+ * or a boiling point at 0 K) keeps eq. 8 verbatim, bit for bit. */
+static inline double water_vapour_factor(double th, double psat_b) {
+    if (!(psat_b > 0)) return 1.0;
+    const double f = vapour_psat(th) / psat_b;
+    return f < 1.0 ? f : 1.0;
+}
+
+/* The bound the explicit step limits take for the latent sink's rate of
+ * change with the particle's temperature, in units of L beta^w S (s - s_amb):
+ * d(theta f) / d theta = f (1 + Delta H_v / (R theta)) rises with theta up to
+ * theta_b (its derivative is f (Delta H_v / R)^2 / theta^3 > 0), where it is
+ * 1 + Delta H_v / (R theta_b) (14.1 at 100 degC), and is 1 past it. */
+static inline double water_latent_stiffness(double psat_b, double th_b) {
+    return psat_b > 0 ? 1.0 + VAPOUR_DH / (R_GAS * th_b) : 1.0;
+}
+
 /* Evaporation (kg/s) through a surface of area `area` whose sample saturation
  * s_d lies `depth` below it (Ding et al. §3.2: beta^w theta (s - s_amb) per
- * unit area, through water_surface_excess's layer), for a material of
- * evaporation bw, water diffusivity K and water density rho0, at absolute
- * temperature th. Both solvers call it: MPM per boundary particle
- * (transport.c, boundary.c's area and depth), SPH per surface particle
- * (sph_water.c). */
+ * unit area, through water_surface_excess's layer, times the vapour factor
+ * above when psat_b > 0), for a material of evaporation bw, water diffusivity
+ * K and water density rho0, at absolute temperature th. Both solvers call
+ * it: MPM per boundary particle (transport.c, boundary.c's area and depth),
+ * SPH per surface particle (sph_water.c). */
 static inline double water_evaporation(double bw, double K, double rho0, double th, double s_d, double s_amb,
-                                       double depth, double area) {
+                                       double depth, double area, double psat_b) {
     const double lay = K > 0 ? bw * depth / (rho0 * K) : 0.0; /* d beta^w / (rho_0^w K) */
-    return bw * th * water_surface_excess(s_d, s_amb, lay) * area;
+    const double e = bw * th * water_surface_excess(s_d, s_amb, lay) * area;
+    return psat_b > 0 ? e * water_vapour_factor(th, psat_b) : e;
 }
+
+/* P_sat at the scene's boiling point (Pa) when its latent_heat is on and it
+ * has temperatures, else 0: water_evaporation's psat_b. */
+double water_psat_boiling(const struct hearth_scene *s);
 
 /// Is the water field live?
 int water_active(const struct hearth_scene *s);

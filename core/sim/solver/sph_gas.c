@@ -21,6 +21,7 @@
 #include "sph_kernel.h"
 #include "sph_neighbours.h"
 #include "sph_state.h"
+#include "vapour.h"
 
 /* The gas law's rest density of a bubble particle (sph.gas_law): eq. 3.49,
  * rho_b = rho0 / V_b, with V_b of eq. 3.50 in absolute temperature (an ideal
@@ -38,11 +39,10 @@
  * both ways: it grows while it heats and shrinks as it cools, with no history
  * to keep (and nothing for a rollback to lose). */
 /* The vapour's partial pressure in a bubble, a_w P_sat(T) (eq. 2.43 through
- * 100 degC at 101325 Pa, Delta H_v = 40.66 kJ/mol); 0 for a dry gas. */
+ * 100 degC at 101325 Pa, Delta H_v = 40.66 kJ/mol: vapour.h); 0 for a dry gas. */
 static double vapour_pressure(const hearth_sph_def *o, double T) {
     if (!(o->bubble_vapour > 0)) return 0;
-    const double hr = 40660.0 / R_GAS, tb = 100.0 + KELVIN;
-    return o->bubble_vapour * 101325.0 * exp(-hr * (1 / (T + KELVIN) - 1 / tb));
+    return o->bubble_vapour * VAPOUR_P1 * vapour_clausius(T + KELVIN); /* vapour.h, shared with water.h's evaporation */
 }
 
 /* The outside pressure P_a: sph.gas_pressure, or an oven's 101325 Pa. */

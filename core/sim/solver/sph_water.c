@@ -100,6 +100,7 @@ void sph_water_rates(hearth_scene *s) {
     const int *off = st->nl.off, *nb = st->nl.j;
     const double s_amb = s->def.oven_saturation;
     const int latent = s->def.latent_heat && T;
+    const double psat_b = water_psat_boiling(s); /* with latent_heat: the vapour's factor (water.h), MPM's */
     double *sw = st->sw, *D = st->wd;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
@@ -130,7 +131,7 @@ void sph_water_rates(hearth_scene *s) {
             const double Vr = m[i] / st->rho0[i], sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
             const double th = (T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN;
             e = water_evaporation(ms->core[CP_EVAPORATION], ms->core[CP_WATER_DIFFUSIVITY], rwi, th, sw[i], s_amb, 0.5 * sp,
-                                  face);
+                                  face, psat_b);
             const double mc = m[i] * ms->core[CP_SPECIFIC_HEAT];
             if (latent && mc > 0) st->dT[i] -= HEARTH_LATENT_HEAT * e / mc;
         }
@@ -163,9 +164,11 @@ void sph_water_advance(hearth_scene *s, double dt) {
 /* The water's limits on forward Euler: the pair Laplacian's, as the heat's
  * (0.1 h^2 / D, sph_heat_stable_dt); a surface particle's water rho_0 s V
  * against its loss beta theta s V / spacing (a quarter of that time, as the
- * Robin heat); and with latent_heat the sink's rate of change with the
- * particle's temperature, L beta (s - s_amb) face <= L beta face against
- * rho c V, a Robin coefficient L beta. */
+ * Robin heat; the vapour's factor, at most 1, only slows the loss); and with
+ * latent_heat the sink's rate of change with the particle's temperature,
+ * L beta g (s - s_amb) face <= L beta g face against rho c V, a Robin
+ * coefficient L beta g, g the vapour's factor's bound (water_latent_stiffness,
+ * water.h: 14.1 at a 100 degC boiling point). */
 double sph_water_stable_dt(const hearth_scene *s, double hmin, double rhomin) {
     (void)rhomin;
     if (!water_active(s)) return INFINITY;
@@ -181,11 +184,13 @@ double sph_water_stable_dt(const hearth_scene *s, double hmin, double rhomin) {
     }
     if (dmax > 0) dt = fmin(dt, 0.1 * hmin * hmin / dmax);
     if (emax > 0) dt = fmin(dt, 0.25 * spmin / emax);
-    if (s->def.latent_heat && T)
+    if (s->def.latent_heat && T) {
+        const double g = water_latent_stiffness(water_psat_boiling(s), s->def.boiling_point + KELVIN);
         for (int k = 0; k < s->mats.n; k++) {
             const material_slot *ms = &s->mats.slot[k];
-            const double rc = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT], b = ms->core[CP_EVAPORATION];
+            const double rc = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT], b = ms->core[CP_EVAPORATION] * g;
             if (rc > 0 && b > 0) dt = fmin(dt, 0.25 * rc * spmin / (HEARTH_LATENT_HEAT * b));
         }
+    }
     return dt;
 }
