@@ -24,7 +24,7 @@ _Static_assert(sizeof(hearth_guard_policy) == sizeof(int), "guard is stored as a
 static const char *const w_wall[] = {"sticky", "slip", "separate", NULL};
 static const char *const w_guard[] = {"stop", "rollback", NULL};
 static const char *const w_heat[] = {"explicit", "implicit", NULL};
-static const char *const w_transfer[] = {"apic", "pic", NULL};
+static const char *const w_transfer[] = {"apic", "pic", "flip", NULL};
 static const char *const w_solver[] = {"mpm", "sph", NULL};
 static const char *const w_blend[] = {"nonlinear", "linear", "labels", NULL};
 static const char *const w_mixing[] = {"fixed", "dynamic", NULL};
@@ -93,7 +93,12 @@ static const hearth_setting settings[] = {
             "with gas_vent: the gas porosity n^p at which a surface particle's pores open to the air (a foam's cells "
             "touch past ~0.64-0.74, the packing fractions of spheres)",
             0.7, 0, 1, vent_porosity, 0),
-    CHOICE("transfer", "momentum transfer: APIC, or PIC (no affine part: dissipative)", 0, w_transfer, transfer, 1),
+    CHOICE("transfer", "momentum transfer: APIC, PIC (no affine part: dissipative), or FLIP (APIC-FLIP: APIC keeping "
+           "a share of each particle's own residual that decays over flip_tau, not per step; Fei et al. 2021; MPM, one "
+           "rank)", 0, w_transfer, transfer, 1),
+    REAL_GT("flip_tau", "s", "with transfer = \"flip\": the time over which a particle's residual against its nodes' "
+            "velocity decays, exp(-t / flip_tau) at any dt (each step keeps alpha = max(0, 1 - dt / flip_tau) of it)",
+            0.1, 0, HUGE_VAL, flip_tau, 1),
     REAL("heat_flip", "1", "temperature to particles: 1 FLIP (eq. 21) .. 0 PIC (the nodes' value)", 1, 0, 1, heat_flip, 1),
     REAL("damping", "1/s", "velocity damping c for static problems: each step the grid velocity is divided by 1 + c dt "
          "(MPM); 0 = off", 0, 0, 1e9, damping, 1),

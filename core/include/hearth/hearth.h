@@ -180,6 +180,13 @@ typedef enum hearth_solver {
     HEARTH_SOLVER_SPH = 1  ///< smoothed particle hydrodynamics (Rodriguez-Arenas 2011, ch. 3-4)
 } hearth_solver;
 
+/// MPM's momentum transfer (hearth_scene_def.transfer, stored as int).
+typedef enum hearth_transfer {
+    HEARTH_TRANSFER_APIC = 0, ///< affine particle-in-cell (Jiang et al. 2015), the default
+    HEARTH_TRANSFER_PIC = 1,  ///< no affine part: dissipative, for comparison
+    HEARTH_TRANSFER_FLIP = 2  ///< APIC-FLIP (Fei et al. 2021): APIC plus a share of each particle's residual, decaying over flip_tau
+} hearth_transfer;
+
 /// Options of the SPH solver (used when solver = HEARTH_SOLVER_SPH). Equation
 /// numbers are Rodriguez-Arenas 2011. Start from hearth_default_scene_def();
 /// ranges and defaults are the sph.* rows of hearth_scene_settings().
@@ -233,7 +240,7 @@ typedef struct hearth_scene_def {
     double oven_saturation;  ///< ambient saturation s_amb (0..1) that evaporation goes toward: q.n = beta^w theta (s - s_amb)
     int heat_implicit;       ///< 0: forward Euler heat (dt limited by conduction); 1: backward Euler (CG solve)
     int water_momentum;      ///< 1: the water's motion relative to the solid carries momentum (Ding et al. eq. 26-27)
-    int transfer;            ///< momentum transfer: 0 APIC (default), 1 PIC (no affine part: dissipative)
+    int transfer;            ///< momentum transfer: 0 APIC (default), 1 PIC (no affine part: dissipative), 2 FLIP (APIC-FLIP: APIC plus a share alpha = max(0, 1 - dt / flip_tau) of each particle's own residual kept; MPM, one rank)
     double heat_flip;        ///< temperature to particles: 1 FLIP (default, eq. 21) .. 0 PIC (the nodes' value)
     int solver;              ///< hearth_solver; default MPM
     hearth_sph_def sph;      ///< SPH options (solver = HEARTH_SOLVER_SPH)
@@ -248,6 +255,7 @@ typedef struct hearth_scene_def {
     double gas_vent;         ///< m/s: CO2 leaves an air-boundary particle whose pores are open (porosity >= vent_porosity) at dn^g/dt = -gas_vent S_p / V_p n^g (MPM; beyond Ding et al.; fields/gas.c). Default 0 = none
     double vent_porosity;    ///< with gas_vent: the gas porosity at which a surface particle's pores open to the air. Default 0.7
     int field_steps;         ///< MPM heat, water and CO2 update on the grid every k-th step over the k steps' time (fields/field_clock.c): 0 = k automatic from the fields' explicit limit (default), 1 = every step (single rate, the old scheme to the bit), k = every k-th
+    double flip_tau;         ///< with transfer = FLIP (2): the time (s) over which a particle's residual against its nodes' velocity decays, exp(-t / flip_tau) whatever dt (alpha = max(0, 1 - dt / flip_tau) a step). Default 0.1, > 0
 } hearth_scene_def;
 
 /// Latent heat of vaporisation of water near 100 degC (J/kg): 2257 kJ/kg at

@@ -171,6 +171,11 @@ hearth_status hearth_scene_save(const hearth_scene *s, const char *path, hearth_
     if (s->mix.mat >= 0)
         return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoints of scenes with a dynamic mixture are not supported yet",
                        path);
+    /* flip_tau came after version 6: a scene that moved it from its default is refused rather than restored
+     * with another (transfer itself is in the DEF section) */
+    if (s->def.transfer == HEARTH_TRANSFER_FLIP && s->def.flip_tau != 0.1)
+        return err_set(err, HEARTH_ERR_PARAM, "save %s: checkpoint format %u does not keep flip_tau (%g s); only the "
+                                              "default 0.1 s can be saved yet", path, CK_VERSION, s->def.flip_tau);
     char *img = NULL;
     size_t n = 0;
     FILE *mf = open_memstream(&img, &n);

@@ -51,7 +51,7 @@ hearth_status grid_init_geometry(grid *g, int dim, double dx, const double lo[3]
     for (int d = 0; d < 3; d++) g->lo[d] = d < dim ? lo[d] : 0.0;
     g->nblocks = (int)nb;
     g->nodes_per_block = dim == 2 ? GRID_B * GRID_B : GRID_B * GRID_B * GRID_B;
-    g->nch = GRID_NCH_MOMENTUM;
+    g->nch = g->zero_from = GRID_NCH_MOMENTUM;
     return HEARTH_OK;
 }
 
@@ -72,7 +72,8 @@ void grid_free(grid *g) {
     memset(g, 0, sizeof *g);
 }
 
-hearth_status grid_set_channels(grid *g, int nch, hearth_error *err) {
+hearth_status grid_set_channels(grid *g, int nch, int extra, hearth_error *err) {
+    g->zero_from = extra > 0 ? nch - extra : nch;
     if (nch == g->nch) return HEARTH_OK;
     /* keep the byte capacity honest: convert it to blocks of the new width */
     const size_t bytes = sizeof(double) * (size_t)g->nch * (size_t)g->nodes_per_block * (size_t)g->cap;
@@ -142,6 +143,8 @@ void grid_activate_chunk(grid *g, const unsigned char *mark, int lo, int hi, int
         memset(d, 0, sizeof(double) * z * NPB);
         if (g->nch > CH_CG_R) memset(d + CH_CG_R * NPB, 0, sizeof(double) * NPB);
         if (g->nch > CH_MW) memset(d + CH_MW * NPB, 0, sizeof(double) * (size_t)(g->nch - CH_MW) * NPB);
+        else if (g->zero_from < g->nch) /* a solver's own channels past the momentum's (grid_set_channels' extra) */
+            memset(d + (size_t)g->zero_from * NPB, 0, sizeof(double) * (size_t)(g->nch - g->zero_from) * NPB);
         k++;
     }
 }

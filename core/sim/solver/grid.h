@@ -44,7 +44,8 @@ typedef struct grid {
     int nodes_per_block;/* GRID_B^dim */
     int *slot;          /* per block of the box: storage slot or -1 */
     int nactive, cap, acap; /* active blocks; capacity of data and of active */
-    int nch;                /* channels per node in use (GRID_NCH_MOMENTUM or GRID_NCH_MAX) */
+    int nch;                /* channels per node in use (GRID_NCH_MOMENTUM or GRID_NCH_MAX, and a solver's extra) */
+    int zero_from;          /* channels from here to nch start at zero too (grid_set_channels' extra) */
     int *active;        /* block ids with storage, ascending */
     double *data;       /* cap * nch * nodes_per_block, channel-major within a block */
 } grid;
@@ -67,8 +68,9 @@ hearth_status grid_init(grid *g, int dim, double dx, const double lo[3], const d
 /// transfers to it (solver.uses_grid = 0). grid_free accepts it.
 hearth_status grid_init_geometry(grid *g, int dim, double dx, const double lo[3], const double hi[3], hearth_error *err);
 void grid_free(grid *g);
-/// Use nch channels per node from the next activation on (storage is rebuilt every step).
-hearth_status grid_set_channels(grid *g, int nch, hearth_error *err);
+/// Use nch channels per node from the next activation on (storage is rebuilt every step);
+/// the last extra of them are a solver's own sums and start at zero like the momentum.
+hearth_status grid_set_channels(grid *g, int nch, int extra, hearth_error *err);
 /// Give storage (zeroed) to exactly the blocks flagged in mark (nblocks bytes). Keeps capacity.
 hearth_status grid_activate(grid *g, const unsigned char *mark, hearth_error *err);
 /// grid_activate in parts, for a caller that runs them in its own parallel region:

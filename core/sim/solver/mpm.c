@@ -41,7 +41,11 @@
  * it), so the guard sees a jump of many cells onto a floor as a CFL stop.
  *
  * `transfer = "pic"` drops the affine momentum in P2G (C still advances F):
- * dissipative, for comparison (`transfer_pic_dissipates`). `heat_flip` blends
+ * dissipative, for comparison (`transfer_pic_dissipates`). `transfer =
+ * "flip"` keeps APIC's and also scatters sum w m (v + C (x_i - x_p)), the
+ * nodes' momentum before the stress impulse, into D channels of its own
+ * (m->flip_ch) for G2P's APIC-FLIP blend (mpm_g2p.c); its step takes the
+ * colour phases (no one-region step), so an APIC scene runs as before. `heat_flip` blends
  * the particles' temperature from FLIP (1, eq. 21, exact in heat) toward PIC
  * (0, the nodes' value, which keeps a maximum principle: `heat_flip_pic_bounds`).
  * Both are knobs of `hearth trade`.
@@ -143,6 +147,8 @@ enum { P2G_HC = GRID_NCH_MOMENTUM, P2G_T, P2G_MW, P2G_SW, P2G_V, P2G_NCH };
 /* two_field (2D only): the nodes' reference damage gradients, then the second field's mass and momentum, past
  * the channels above in the same tile (2D uses 36 nodes of its 216) */
 enum { P2G_GX = P2G_NCH, P2G_GY, P2G_BM, P2G_BX, P2G_BY, P2G_NCH_TWO };
+/* FLIP's momentum before the stress impulse: past two_field's channels in 2D, past the fields' in 3D */
+#define P2G_FL (D == 2 ? P2G_NCH_TWO : P2G_NCH)
 _Static_assert(P2G_NCH_TWO * GRID_T * GRID_T <= P2G_NCH * GRID_T * GRID_T * GRID_T, "2D's two_field tile fits");
 static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T, CH_MW, CH_SW, CH_CG_R};
 
@@ -153,7 +159,7 @@ static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T,
  * and a scene without sticky colliders carries no test for them (a runtime
  * test there cost 0.5% of P2G's instructions). */
 FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const int WATER, const int MIRROR, const int TWO,
-                            const int STORE, int k, double dt, double *tile) {
+                            const int FLIP, const int STORE, int k, double dt, double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
     mpm_state *st = s->mpm;
@@ -172,6 +178,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     if (HS) memset(tile + P2G_HC * TN, 0, sizeof(double) * 2 * (size_t)TN);
     if (WATER) memset(tile + P2G_MW * TN, 0, sizeof(double) * 2 * (size_t)TN);
     if (HS || WATER) memset(tile + P2G_V * TN, 0, sizeof(double) * (size_t)TN);
+    if (FLIP) memset(tile + P2G_FL * TN, 0, sizeof(double) * (size_t)D * (size_t)TN);
     const double *dgrad = TWO ? st->dgrad : NULL; /* two_field: each particle's damage gradient (mpm_two_field.c) */
     if (TWO) {
         memset(tile + P2G_BM * TN, 0, sizeof(double) * 3 * (size_t)TN);
@@ -194,7 +201,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
     const double *Wcol = ps->enabled & (1u << PC_WATER) ? pcold(ps, PC_WATER) : NULL;
     const double *S0col = Wcol ? pcold(ps, PC_SAT0) : NULL;
     const double dx = g->dx, inv_dx = g->inv_dx, Dinv = 4.0 * inv_dx * inv_dx;
-    const int apic = s->def.transfer == 0;
+    const int apic = s->def.transfer != HEARTH_TRANSFER_PIC; /* FLIP keeps APIC's affine part */
     double cmax = 0, numax = 0; /* numax: largest kinematic viscosity a plugin applies (m^2/s) */
     /* what this scene supplies to the material door, the same for every particle; gas needs the porosity */
     const unsigned env_flags = MATERIAL_ZERO_FAILED | (Gcol ? MATERIAL_POROSITY_PLASTIC : 0u) | (HEAT ? MATERIAL_EXPANSION : 0u);
@@ -224,6 +231,9 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
         /* the stencil's 3 nodes must lie in the 6-node tile: mpm_sort's clamp_to_grid */
         for (int d = 0; d < D; d++) HEARTH_ASSERT(base[d] >= 0 && base[d] <= GRID_T - 3);
         const double mv0 = m * v[0], mv1 = m * v[1], mv2 = m * v[2];
+        double mCf[9]; /* FLIP: m C, the affine momentum without the stress (2D: its in-plane 2x2) */
+        if (FLIP)
+            for (int a = 0; a < (D == 2 ? 4 : 9); a++) mCf[a] = mC * C[a];
         /* heat (eq. 17, weighted by heat capacity m alpha so energy is conserved across materials) */
         const double hc = HS ? m * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = HS ? hc * Tcol[i] : 0.0;
         const double vi = J * V0[i];
@@ -251,6 +261,10 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                     if (HS) p2g_add2(th + 2 * t, (v2d){wab, wab} * hp);
                     if (WATER) p2g_add2(tw + 2 * t, (v2d){wab, wab} * wp);
                     if (HS || WATER) tp[P2G_V * TN + t] += vab;
+                    if (FLIP) {
+                        tp[P2G_FL * TN + t] += wab * (mv0 + mCf[0] * d0 + mCf[1] * d1);
+                        tp[(P2G_FL + 1) * TN + t] += wab * (mv1 + mCf[2] * d0 + mCf[3] * d1);
+                    }
                     /* the second field's particles at this node scatter the same terms into its channels too */
                     if (TWO && mpm_two_field_second(tp[P2G_GX * TN + t], tp[P2G_GY * TN + t], dgrad[2 * i], dgrad[2 * i + 1])) {
                         tp[P2G_BM * TN + t] += wab * m;
@@ -281,6 +295,11 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                         if (HS) p2g_add2(th + 2 * t, (v2d){wt, wt} * hp);
                         if (WATER) p2g_add2(tw + 2 * t, (v2d){wt, wt} * wp);
                         if (HS || WATER) tp[P2G_V * TN + t] += vab * w[2][c];
+                    }
+                    for (int c = 0; c < (FLIP ? 3 : 0); c++) {
+                        const double wt = wab * w[2][c], d2 = (c - fx[2]) * dx;
+                        for (int r = 0; r < 3; r++)
+                            tp[(P2G_FL + r) * TN + t0 + c] += wt * (m * v[r] + mCf[3 * r] * d0 + mCf[3 * r + 1] * d1 + mCf[3 * r + 2] * d2);
                     }
                 }
             }
@@ -316,13 +335,15 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                 if (HS || WATER) node[CH_CG_R * NPB + l] += tile[P2G_V * TN + t];
                 if (TWO)
                     for (int ch = 0; ch < 3; ch++) node[(CH_TF_M + ch) * NPB + l] += tile[(P2G_BM + ch) * TN + t];
+                if (FLIP)
+                    for (int ch = 0; ch < D; ch++) node[(st->flip_ch + ch) * NPB + l] += tile[(P2G_FL + ch) * TN + t];
             }
     if (st->p2g_ordered) __atomic_store_n(&pp->flushed, 1, __ATOMIC_RELEASE);
 }
 
 /* the stored-tile P2G of step_team's gather path (momentum only), indexed [sticky][dim == 3] */
 #define P2G_STORE_FN(D, M, H) \
-    static void p2g_store_##D##M##H(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, D, H, 0, M, 0, 1, k, dt, tile); }
+    static void p2g_store_##D##M##H(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, D, H, 0, M, 0, 0, 1, k, dt, tile); }
 /* [temperature: a heat scene's step between its field steps][sticky][dim == 3] */
 P2G_STORE_FN(2, 0, 0) P2G_STORE_FN(3, 0, 0) P2G_STORE_FN(2, 1, 0) P2G_STORE_FN(3, 1, 0)
 P2G_STORE_FN(2, 0, 1) P2G_STORE_FN(3, 0, 1) P2G_STORE_FN(2, 1, 1) P2G_STORE_FN(3, 1, 1)
@@ -330,10 +351,10 @@ static const block_fn p2g_store_fns[2][2][2] = {{{p2g_store_200, p2g_store_300},
                                                 {{p2g_store_201, p2g_store_301}, {p2g_store_211, p2g_store_311}}};
 /* P2G's, indexed [sticky][dim == 3][heat][water] */
 #define P2G_FN(D, H, W, M) \
-    static void p2g_##D##H##W##M(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, D, H, W, M, 0, 0, k, dt, tile); }
+    static void p2g_##D##H##W##M(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, D, H, W, M, 0, 0, 0, k, dt, tile); }
 /* two_field's, 2D without sticky colliders, indexed [heat][water] */
 #define P2G_TWO_FN(H, W) \
-    static void p2g_two_##H##W(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 2, H, W, 0, 1, 0, k, dt, tile); }
+    static void p2g_two_##H##W(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, 2, H, W, 0, 1, 0, 0, k, dt, tile); }
 P2G_TWO_FN(0, 0) P2G_TWO_FN(0, 1) P2G_TWO_FN(1, 0) P2G_TWO_FN(1, 1) P2G_TWO_FN(2, 0) P2G_TWO_FN(2, 1)
 static const block_fn p2g_two_fns[3][2] = {{p2g_two_00, p2g_two_01}, {p2g_two_10, p2g_two_11}, {p2g_two_20, p2g_two_21}};
 P2G_FN(2, 0, 0, 0) P2G_FN(2, 0, 1, 0) P2G_FN(2, 1, 0, 0) P2G_FN(2, 1, 1, 0) P2G_FN(2, 2, 0, 0) P2G_FN(2, 2, 1, 0)
@@ -346,6 +367,19 @@ static const block_fn p2g_fns[2][2][3][2] = {
      {{p2g_3000, p2g_3010}, {p2g_3100, p2g_3110}, {p2g_3200, p2g_3210}}},
     {{{p2g_2001, p2g_2011}, {p2g_2101, p2g_2111}, {p2g_2201, p2g_2211}},
      {{p2g_3001, p2g_3011}, {p2g_3101, p2g_3111}, {p2g_3201, p2g_3211}}}};
+
+/* transfer = "flip"'s, indexed as p2g_fns (never with two_field: scene.c refuses it) */
+#define P2G_FLIP_FN(D, H, W, M) \
+    static void p2g_flip_##D##H##W##M(hearth_scene *s, int k, double dt, double *tile) { p2g_block(s, D, H, W, M, 0, 1, 0, k, dt, tile); }
+P2G_FLIP_FN(2, 0, 0, 0) P2G_FLIP_FN(2, 0, 1, 0) P2G_FLIP_FN(2, 1, 0, 0) P2G_FLIP_FN(2, 1, 1, 0) P2G_FLIP_FN(2, 2, 0, 0) P2G_FLIP_FN(2, 2, 1, 0)
+P2G_FLIP_FN(3, 0, 0, 0) P2G_FLIP_FN(3, 0, 1, 0) P2G_FLIP_FN(3, 1, 0, 0) P2G_FLIP_FN(3, 1, 1, 0) P2G_FLIP_FN(3, 2, 0, 0) P2G_FLIP_FN(3, 2, 1, 0)
+P2G_FLIP_FN(2, 0, 0, 1) P2G_FLIP_FN(2, 0, 1, 1) P2G_FLIP_FN(2, 1, 0, 1) P2G_FLIP_FN(2, 1, 1, 1) P2G_FLIP_FN(2, 2, 0, 1) P2G_FLIP_FN(2, 2, 1, 1)
+P2G_FLIP_FN(3, 0, 0, 1) P2G_FLIP_FN(3, 0, 1, 1) P2G_FLIP_FN(3, 1, 0, 1) P2G_FLIP_FN(3, 1, 1, 1) P2G_FLIP_FN(3, 2, 0, 1) P2G_FLIP_FN(3, 2, 1, 1)
+static const block_fn p2g_flip_fns[2][2][3][2] = {
+    {{{p2g_flip_2000, p2g_flip_2010}, {p2g_flip_2100, p2g_flip_2110}, {p2g_flip_2200, p2g_flip_2210}},
+     {{p2g_flip_3000, p2g_flip_3010}, {p2g_flip_3100, p2g_flip_3110}, {p2g_flip_3200, p2g_flip_3210}}},
+    {{{p2g_flip_2001, p2g_flip_2011}, {p2g_flip_2101, p2g_flip_2111}, {p2g_flip_2201, p2g_flip_2211}},
+     {{p2g_flip_3001, p2g_flip_3011}, {p2g_flip_3101, p2g_flip_3111}, {p2g_flip_3201, p2g_flip_3211}}}};
 
 /* P2G's heat instantiation: 0 without temperature, 1 when the material reads it but the fields rest this
  * step (field_clock.c), 2 on a field step: the heat channels scatter too. */
@@ -360,6 +394,7 @@ static block_fn p2g_prepare(hearth_scene *s) {
     if (m->p2g_ordered) /* where each block's neighbours are (p2g_wait_lower); back to -1 after P2G (p2g_team) */
         for (int k = 0; k < m->npb; k++) m->pbof[m->pb[k].block] = k;
     if (s->def.two_field) return p2g_two_fns[p2g_heat(s)][water_now(s)]; /* 2D, no sticky face (mpm_step) */
+    if (s->def.transfer == HEARTH_TRANSFER_FLIP) return p2g_flip_fns[m->sticky_faces][s->g.dim == 3][p2g_heat(s)][water_now(s)];
     return p2g_fns[m->sticky_faces][s->g.dim == 3][p2g_heat(s)][water_now(s)];
 }
 
@@ -372,7 +407,7 @@ static block_fn p2g_prepare(hearth_scene *s) {
  * colour's blocks run moves no bits: no two of them share a node. */
 static void p2g_team(hearth_scene *s, block_fn fn, double dt) {
     mpm_state *m = s->mpm;
-    double tile[P2G_NCH * GRID_T * GRID_T * GRID_T];
+    double tile[(P2G_NCH + 3) * GRID_T * GRID_T * GRID_T]; /* 3D: FLIP's 3 channels past the fields' */
     if (m->claims) { /* 3D at more than one thread: the colours in order, one barrier at the end (p2g_wait_lower) */
         const int back = claim_end();
         for (int col = 0; col < 8; col++)
@@ -736,7 +771,9 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     HEARTH_ASSERT(s->ps.t2 == (s->g.dim == 2)); /* P2G and G2P read 2D's C and F as 2x2 blocks (scene.c sets it) */
     int heat = heat_now(s), water = water_now(s);
     const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
-    int usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
+    /* transfer = "flip" takes the colour phases: the gather's tiles and the one-region step carry momentum only */
+    const int flip = s->def.transfer == HEARTH_TRANSFER_FLIP;
+    int usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field && !flip;
     hearth_status st;
     int sorted = 0;
     PHASE_STEP();
@@ -758,7 +795,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     if (!sorted && (st = mpm_sort(s, err))) return st;
     if (mixing_active(s) && (st = mixing_update(s, err))) return st;
     heat = heat_now(s), water = water_now(s); /* as the mixing left them */
-    usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
+    usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field && !flip;
     if (wrap && (thermal_active(s) || water_active(s)))
         return err_set(err, HEARTH_ERR_PARAM, "scene: periodic axes (periodic_%c) do not carry %s yet; use a closed box",
                        "xyz"[s->def.periodic[0] ? 0 : s->def.periodic[1] ? 1 : 2], thermal_active(s) ? "heat" : "water");

@@ -90,6 +90,8 @@ typedef struct mpm_state {
     /* the waits of the step's teams (team_wait.h; HEARTH_TEAM_SPIN at init): the sort's, the one-region
      * step's and 3D's claimed step's barriers spin a while before they sleep */
     team_wait team;
+    int flip_ch;            /* transfer = "flip": the first of the D node channels of P2G's velocity before the grid update
+                             * (sum w m (v + C (x_i - x_p)), divided by the mass in G2P); 0 otherwise (mpm_sort.c) */
 } mpm_state;
 
 /* ---- two velocity fields at cracks (mpm_two_field.c; scene setting two_field, 2D) ---- */

@@ -22,9 +22,9 @@ static inline double field_dt(const hearth_scene *s, double dt) { return s->fiel
 typedef double v2d __attribute__((vector_size(16)));
 
 typedef void (*block_fn)(hearth_scene *, int, double, double *);
-/* the instantiations, indexed [dim == 3][heat][water] */
+/* the instantiations, indexed [dim == 3][heat][water] (two_field and transfer = "flip" off) */
 #define BLOCK_FN(kind, D, H, W) \
-    static void kind##_##D##H##W(hearth_scene *s, int k, double dt, double *tile) { kind##_block(s, D, H, W, 0, k, dt, tile); }
+    static void kind##_##D##H##W(hearth_scene *s, int k, double dt, double *tile) { kind##_block(s, D, H, W, 0, 0, k, dt, tile); }
 
 static inline void record_fail(pb_partial *pp, int i, fail_kind kind, int code) {
     if (pp->fail_i < 0) {

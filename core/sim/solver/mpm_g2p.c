@@ -1,7 +1,22 @@
 /* mpm_g2p.c: G2P, the grid's velocities back to the particles (APIC, Jiang
  * et al. 2015), F advanced by C (Ding et al. 2019 eq. 15-16), positions
  * moved, the fields' changes handed out, and each block's partials reduced
- * into the step report in block order. mpm.c says how the step is ordered. */
+ * into the step report in block order. mpm.c says how the step is ordered.
+ *
+ * transfer = "flip" (#18; docs/validation.md "A mergeable APIC-FLIP
+ * transfer"): APIC's round trip keeps a particle's velocity only up to the
+ * affine part of its neighbourhood and loses the rest every step, so its
+ * damping counts steps as well as time (`apic_energy_converges_in_dt`). The
+ * APIC-FLIP blend of Fei et al. 2021 ("Revisiting integration in the material
+ * point method", ACM TOG 40(4), §4: v_p^{n+1} = v^{n+1}(x_p) + alpha (v_p^n -
+ * v^n(x_p))) keeps a share alpha of that residual, where v^n(x_p) interpolates
+ * the nodes' velocity as P2G left it before the stress impulse, gravity and
+ * the walls (mpm.c scatters it into the channels at m->flip_ch). alpha = 1 -
+ * dt / flip_tau (at least 0) keeps exp(-t / flip_tau) of a residual over a
+ * time t whatever dt: a loss per unit time; a fixed alpha below 1 was a loss
+ * per step again (aflip's measurement, 16f1520). C, F and x stay APIC's (x
+ * moves with v^{n+1}(x_p), not the blended velocity, so the particles do not
+ * drift apart on their own noise). */
 #include <math.h>
 #include <string.h>
 
@@ -14,8 +29,15 @@
 #include <omp.h>
 #endif
 
-FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const int WATER, const int TWO, int k, double dt,
-                            double *tile) {
+/* G2P's tile channels: the velocity (0-2), the heat's change (3) and the nodes' temperature (4), the water's
+ * change (5); 2D's two_field takes 6-9 of its 36-node tiles, so FLIP's pre-update velocity sits at 10-11 there
+ * and at 6-8 in 3D */
+#define G2P_FL (D == 2 ? 10 : 6)
+#define G2P_NCH 9
+_Static_assert(14 * GRID_T * GRID_T <= G2P_NCH * GRID_T * GRID_T * GRID_T, "2D's FLIP channels fit the tile");
+
+FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const int WATER, const int TWO, const int FLIP,
+                            int k, double dt, double *tile) {
     grid *g = &s->g;
     particles *ps = &s->ps;
     /* HEAT 2: the update also needs the nodes' temperature at the particle (a FLIP-PIC blend or held
@@ -39,6 +61,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     grid_block_coords(g, pb.block, bc);
     const int org[3] = {bc[0] * GRID_B, bc[1] * GRID_B, bc[2] * GRID_B};
 
+    const int fc = s->mpm->flip_ch; /* FLIP: the first of the pre-update velocity's channels (mpm_sort.c) */
+    const double alpha = FLIP ? fmax(0.0, 1.0 - dt / s->def.flip_tau) : 0.0;
     /* gather the tile's velocities once; particles then read a small dense array */
     for (int a = 0; a < GRID_T; a++)
         for (int b = 0; b < GRID_T; b++)
@@ -54,6 +78,10 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                 if (WATER) { /* the change of node saturation, ds_i = dm_i / (rho_0 V_i) (water.c) */
                     const double cw = node[CH_MW * NPB + l];
                     tile[5 * TN + t] = cw > 0 ? node[CH_DMW * NPB + l] / cw : 0.0;
+                }
+                if (FLIP) { /* the nodes' velocity before the grid update, from P2G's sums (sum w m v over sum w m) */
+                    const double nm = node[CH_M * NPB + l];
+                    for (int d = 0; d < D; d++) tile[(G2P_FL + d) * TN + t] = nm > 0 ? node[(fc + d) * NPB + l] / nm : 0.0;
                 }
                 if (TWO) /* two_field (2D): the second field's velocity and the node's reference gradient */
                     for (int ch = 0; ch < 2; ch++) {
@@ -84,6 +112,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         double fx[3], w[3][3];
         tile_stencil(g, D, x, org, inv_dx, base, fx, w);
         double nv[3] = {0, 0, 0}, B[9] = {0}, dT = 0, Tn = 0, ds = 0; /* 2D sums B's in-plane entries 0, 1, 3, 4 */
+        double vo[3] = {0, 0, 0}; /* FLIP: v^n(x_p) */
         /* the stencil's corner in the tile: the 3^dim nodes then sit at constant offsets from it */
         const double *const tp = tile + (D == 2 ? base[0] * GRID_T + base[1] : (base[0] * GRID_T + base[1]) * GRID_T + base[2]);
         /* 3D sums nv and B in pairs of lanes: Ak = {B[3k], B[3k+1]} += (wt u_k) {d0, d1} and Nk = {nv[k], B[3k+2]}
@@ -105,6 +134,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                     if (HEAT) dT += wab * tp[3 * TN + t];
                     if (PIC) Tn += wab * tp[4 * TN + t];
                     if (WATER) ds += wab * tp[5 * TN + t];
+                    if (FLIP) vo[0] += wab * tp[G2P_FL * TN + t], vo[1] += wab * tp[(G2P_FL + 1) * TN + t];
                     nv[0] += wab * u0;
                     nv[1] += wab * u1;
                     B[0] += wab * u0 * d0; B[1] += wab * u0 * d1;
@@ -117,6 +147,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                         if (HEAT) dT += wt * tp[3 * TN + t];
                         if (PIC) Tn += wt * tp[4 * TN + t];
                         if (WATER) ds += wt * tp[5 * TN + t];
+                        if (FLIP)
+                            for (int d = 0; d < 3; d++) vo[d] += wt * tp[(G2P_FL + d) * TN + t];
                         const double wu0 = wt * tp[t], wu1 = wt * tp[TN + t], wu2 = wt * tp[2 * TN + t];
                         const v2d g0 = {wu0, wu0}, g1 = {wu1, wu1}, g2 = {wu2, wu2};
                         A0 += g0 * p01; N0 += g0 * q2[c];
@@ -187,7 +219,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         int out = 0;
         for (int d = 0; d < D; d++) {
             if (!carried) {
-                v[d] = nv[d];
+                v[d] = FLIP ? nv[d] + alpha * (v[d] - vo[d]) : nv[d]; /* Fei et al. 2021's blend (the header) */
                 x[d] += dt * nv[d];
             }
             /* a particle that left the domain is put back on its edge and counted, never dropped */
@@ -251,9 +283,18 @@ static const block_fn g2p_fns[2][3][2] = {{{g2p_200, g2p_201}, {g2p_210, g2p_211
 
 /* two_field's, 2D, indexed [heat][water] as above */
 #define G2P_TWO_FN(H, W) \
-    static void g2p_two_##H##W(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 2, H, W, 1, k, dt, tile); }
+    static void g2p_two_##H##W(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, 2, H, W, 1, 0, k, dt, tile); }
 G2P_TWO_FN(0, 0) G2P_TWO_FN(0, 1) G2P_TWO_FN(1, 0) G2P_TWO_FN(1, 1) G2P_TWO_FN(2, 0) G2P_TWO_FN(2, 1)
 static const block_fn g2p_two_fns[3][2] = {{g2p_two_00, g2p_two_01}, {g2p_two_10, g2p_two_11}, {g2p_two_20, g2p_two_21}};
+
+/* transfer = "flip"'s, indexed [dim == 3][heat][water] as g2p_fns (never with two_field: scene.c refuses it) */
+#define G2P_FLIP_FN(D, H, W) \
+    static void g2p_flip_##D##H##W(hearth_scene *s, int k, double dt, double *tile) { g2p_block(s, D, H, W, 0, 1, k, dt, tile); }
+G2P_FLIP_FN(2, 0, 0) G2P_FLIP_FN(2, 0, 1) G2P_FLIP_FN(2, 1, 0) G2P_FLIP_FN(2, 1, 1) G2P_FLIP_FN(2, 2, 0) G2P_FLIP_FN(2, 2, 1)
+G2P_FLIP_FN(3, 0, 0) G2P_FLIP_FN(3, 0, 1) G2P_FLIP_FN(3, 1, 0) G2P_FLIP_FN(3, 1, 1) G2P_FLIP_FN(3, 2, 0) G2P_FLIP_FN(3, 2, 1)
+static const block_fn g2p_flip_fns[2][3][2] = {
+    {{g2p_flip_200, g2p_flip_201}, {g2p_flip_210, g2p_flip_211}, {g2p_flip_220, g2p_flip_221}},
+    {{g2p_flip_300, g2p_flip_301}, {g2p_flip_310, g2p_flip_311}, {g2p_flip_320, g2p_flip_321}}};
 
 /* G2P's heat instantiation: 0 without heat; 1 for pure FLIP, whose update
  * needs only the nodes' temperature change; 2 where it also reads their
@@ -267,6 +308,7 @@ static int g2p_heat(const hearth_scene *s) {
 
 block_fn g2p_fn(const hearth_scene *s) {
     if (s->def.two_field) return g2p_two_fns[g2p_heat(s)][water_now(s)];
+    if (s->def.transfer == HEARTH_TRANSFER_FLIP) return g2p_flip_fns[s->g.dim == 3][g2p_heat(s)][water_now(s)];
     return g2p_fns[s->g.dim == 3][g2p_heat(s)][water_now(s)];
 }
 
@@ -283,7 +325,7 @@ block_fn g2p_fn(const hearth_scene *s) {
  * still ends in single blocks where a late thread catches up. */
 void g2p_team(hearth_scene *s, block_fn fn, double dt) {
     const mpm_state *m = s->mpm;
-    double tile[6 * GRID_T * GRID_T * GRID_T];
+    double tile[G2P_NCH * GRID_T * GRID_T * GRID_T];
     if (m->claims) { /* 3D at more than one thread: from both ends, the same thread on the same end as P2G (claim_take) */
         const int back = claim_end();
         for (int k; (k = claim_take(&m->claims->g2p, back)) >= 0;) fn(s, k, dt, tile);
@@ -344,7 +386,7 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
  * for the next step's scatter. */
 void g2p_chunks(hearth_scene *s, mpm_sort_team *t, block_fn fn, double dt) {
     mpm_state *m = s->mpm;
-    double tile[6 * GRID_T * GRID_T * GRID_T];
+    double tile[G2P_NCH * GRID_T * GRID_T * GRID_T];
     span_walk w = span_walk_start(t->T);
     int lo, hi;
     while (span_next(t->span[MPM_SPAN_G2P], &w, NULL, &lo, &hi))

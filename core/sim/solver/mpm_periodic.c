@@ -79,7 +79,7 @@ void mpm_periodic_mark(const hearth_scene *s, unsigned char *mark) {
  * ghost its node's mass and velocity. Serial and in block order: deterministic. */
 void mpm_periodic_fold(hearth_scene *s, int unfold) {
     grid *g = &s->g;
-    const int D = g->dim, NPB = g->nodes_per_block;
+    const int D = g->dim, NPB = g->nodes_per_block, fc = s->mpm->flip_ch;
     for (int q = 0; q < D; q++) {
         const int d = unfold ? D - 1 - q : q;
         if (!s->def.periodic[d]) continue;
@@ -102,6 +102,10 @@ void mpm_periodic_fold(hearth_scene *s, int unfold) {
                                       : ((idx[0] % GRID_B) * GRID_B + idx[1] % GRID_B) * GRID_B + idx[2] % GRID_B;
                 double *tn = grid_block(g, slot);
                 for (int ch = 0; ch < GRID_NCH_MOMENTUM; ch++) {
+                    if (unfold) node[ch * NPB + l] = tn[ch * NPB + lt];
+                    else tn[ch * NPB + lt] += node[ch * NPB + l];
+                }
+                for (int ch = fc; ch < (fc ? fc + D : 0); ch++) { /* transfer = "flip": the momentum before the update */
                     if (unfold) node[ch * NPB + l] = tn[ch * NPB + lt];
                     else tn[ch * NPB + lt] += node[ch * NPB + l];
                 }

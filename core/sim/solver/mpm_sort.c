@@ -522,8 +522,11 @@ static hearth_status sort_begin(hearth_scene *s, int *Tc, hearth_error *err) {
         m->hist = h;
         m->histcap = hneed;
     }
-    return grid_set_channels(g, s->def.two_field ? GRID_NCH_TWO
-                                : thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM, err);
+    const int base = s->def.two_field ? GRID_NCH_TWO : thermal_active(s) || water_active(s) ? GRID_NCH_MAX : GRID_NCH_MOMENTUM;
+    /* transfer = "flip": the nodes' velocity before the grid update, D channels past the scene's own (mpm.c's P2G) */
+    const int flip = s->def.transfer == HEARTH_TRANSFER_FLIP ? g->dim : 0;
+    m->flip_ch = flip ? base : 0;
+    return grid_set_channels(g, base + flip, flip, err);
 }
 
 /* The team's shared part, for a region of Tc threads. The grid's activation
