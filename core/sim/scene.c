@@ -129,8 +129,10 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
             return err_set(err, HEARTH_ERR_PARAM, "scene: two_field does not carry periodic axes; set two_field = false "
                                                   "or periodic_x = periodic_y = false");
     }
-    if (d->transfer == HEARTH_TRANSFER_FLIP && d->solver == HEARTH_SOLVER_MPM) { /* mpm.c's P2G and mpm_g2p.c's blend */
-        /* EXPERIMENT (the default): SPH ignores transfer, as it ignores "pic" */
+    if (d->transfer == HEARTH_TRANSFER_FLIP) { /* mpm.c's P2G and mpm_g2p.c's blend */
+        if (d->solver != HEARTH_SOLVER_MPM)
+            return err_set(err, HEARTH_ERR_PARAM, "scene: transfer = \"flip\" needs solver = \"mpm\" (SPH has no grid "
+                                                  "transfer); set transfer = \"apic\"");
         if (d->two_field)
             return err_set(err, HEARTH_ERR_PARAM, "scene: transfer = \"flip\" does not carry two_field yet (the second "
                                                   "field's velocity before the update is not kept); set two_field = false "

@@ -95,7 +95,7 @@ static const hearth_setting settings[] = {
             0.7, 0, 1, vent_porosity, 0),
     CHOICE("transfer", "momentum transfer: APIC, PIC (no affine part: dissipative), or FLIP (APIC-FLIP: APIC keeping "
            "a share of each particle's own residual that decays over flip_tau, not per step; Fei et al. 2021; MPM, one "
-           "rank)", 2, w_transfer, transfer, 1),
+           "rank)", 0, w_transfer, transfer, 1),
     REAL_GT("flip_tau", "s", "with transfer = \"flip\": the time over which a particle's residual against its nodes' "
             "velocity decays, exp(-t / flip_tau) at any dt (each step keeps alpha = max(0, 1 - dt / flip_tau) of it)",
             0.1, 0, HUGE_VAL, flip_tau, 1),
