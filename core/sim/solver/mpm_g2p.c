@@ -8,10 +8,11 @@
  * affine part of its neighbourhood and loses the rest every step, so its
  * damping counts steps as well as time (`apic_energy_converges_in_dt`). The
  * APIC-FLIP blend of Fei et al. 2021 ("Revisiting integration in the material
- * point method", ACM TOG 40(4), §4: v_p^{n+1} = v^{n+1}(x_p) + alpha (v_p^n -
- * v^n(x_p))) keeps a share alpha of that residual, where v^n(x_p) interpolates
- * the nodes' velocity as P2G left it before the stress impulse, gravity and
- * the walls (mpm.c scatters it into the channels at m->flip_ch). alpha = 1 -
+ * point method", ACM TOG 40(4); not among the seeds, so no equation number),
+ * v_p^{n+1} = v^{n+1}(x_p) + alpha (v_p^n - v^n(x_p)), keeps a share alpha
+ * of that residual, where v^n(x_p) interpolates the nodes' velocity as P2G
+ * left it before the stress impulse, gravity and the walls (mpm.c scatters
+ * it into the channels at m->flip_ch). alpha = 1 -
  * dt / flip_tau (at least 0) keeps exp(-t / flip_tau) of a residual over a
  * time t whatever dt: a loss per unit time; a fixed alpha below 1 was a loss
  * per step again (aflip's measurement, 16f1520). C, F and x stay APIC's (x
