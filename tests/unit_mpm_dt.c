@@ -148,9 +148,10 @@ TEST(flip_energy_converges_in_dt_dx32) {
 
 /* The shear-wave square (2D, dx 1/64: 2704 particles, past SCENE_PARALLEL_MIN) or a 3D cube in the same wave,
  * stepped n steps with transfer, flip_tau tau, at threads; its hash. */
-static uint64_t wave_hash(int dim, int transfer, double tau, int threads, int n) {
+static uint64_t wave_hash_oven(int dim, int transfer, double tau, int threads, int n, double oven) {
     hearth_set_threads(threads);
     hearth_scene_def d = hearth_default_scene_def();
+    d.oven_temperature = oven; /* NaN: none; else heat scatters through P2G's field channels too */
     d.dim = dim;
     d.dx = dim == 2 ? 1.0 / 64 : 1.0 / 32;
     d.gravity[1] = -9.81;
@@ -169,11 +170,14 @@ static uint64_t wave_hash(int dim, int transfer, double tau, int threads, int n)
     hearth_error err;
     CHECK(hearth_scene_step(s, n, &err) == HEARTH_OK);
     const uint64_t hash = hearth_scene_hash(s);
-    printf("  %dD transfer %d tau %g, %d thread(s), %d particles, %d steps: %016llx\n", dim, transfer, tau, threads, np, n,
-           (unsigned long long)hash);
+    printf("  %dD transfer %d tau %g, oven %g degC, %d thread(s), %d particles, %d steps: %016llx\n", dim, transfer, tau, oven,
+           threads, np, n, (unsigned long long)hash);
     hearth_scene_destroy(s);
     hearth_set_threads(0);
     return hash;
+}
+static uint64_t wave_hash(int dim, int transfer, double tau, int threads, int n) {
+    return wave_hash_oven(dim, transfer, tau, threads, n, NAN);
 }
 
 /* The blend's P2G runs in the colour phases and its G2P per particle: the same bits at one and two threads, in
@@ -181,6 +185,10 @@ static uint64_t wave_hash(int dim, int transfer, double tau, int threads, int n)
 TEST(flip_same_bits_threads) {
     CHECK(wave_hash(2, HEARTH_TRANSFER_FLIP, 0.1, 1, 40) == wave_hash(2, HEARTH_TRANSFER_FLIP, 0.1, 2, 40));
     CHECK(wave_hash(3, HEARTH_TRANSFER_FLIP, 0.1, 1, 10) == wave_hash(3, HEARTH_TRANSFER_FLIP, 0.1, 2, 10));
+    /* an oven: the heat's channels in P2G's tile and the grid before FLIP's (3D: all nine tile channels in use) */
+    CHECK(wave_hash_oven(2, HEARTH_TRANSFER_FLIP, 0.1, 1, 20, 200) == wave_hash_oven(2, HEARTH_TRANSFER_FLIP, 0.1, 2, 20, 200));
+    CHECK(wave_hash_oven(3, HEARTH_TRANSFER_FLIP, 0.1, 1, 5, 200) == wave_hash_oven(3, HEARTH_TRANSFER_FLIP, 0.1, 2, 5, 200));
+    CHECK(wave_hash_oven(3, HEARTH_TRANSFER_FLIP, 1e-9, 1, 5, 200) == wave_hash_oven(3, HEARTH_TRANSFER_APIC, 0.1, 1, 5, 200));
 }
 
 /* flip_tau at or below dt makes alpha 0: v_p = v^{n+1}(x_p) + 0 (v_p - v^n(x_p)), APIC's velocity to the bit, and
