@@ -5,6 +5,8 @@
 # and dt_max are scene knobs every scene takes (`--set cfl=0.25`), so the scene
 # runs as it is; each frame's notch is read as the claim's check reads its last
 # (the same formula: a tenth of the height deep, two cells wide).
+# A STEP may join several switches with + (cfl=0.5+transfer=flip: the scene's
+# transfer too, as crack_dt.sh's STEPs do).
 # Usage: scripts/validation/muffin_dt.sh [BUILD_DIR] [DX] [STEPS]
 #   defaults build/release, 0.004, "cfl=0.5 cfl=0.25 cfl=0.125 cfl=0.4 cfl=0.6 cfl=0.75 dt_max=5e-5 dt_max=2.5e-5"
 # One run at a time, single-threaded (the same bits at any thread count).
@@ -19,8 +21,10 @@ trap 'rm -rf "$tmp"' EXIT
 for st in $steps; do
     d=$tmp/$st
     mkdir -p "$d"
+    sets=$(echo "$st" | sed 's/+/ --set /g')
+    # shellcheck disable=SC2086 # $sets: one --set per switch
     (cd "$d" && /usr/bin/time -o time.txt -f %U "$b/app/hearth" run "$root/scripts/scenes/baking/muffins.lua" --quiet \
-        --set cups=1 --set dx="$dx" --set ppc=0 --set until_t=1.5 --set frames=3 --set "$st" >out.txt)
+        --set cups=1 --set dx="$dx" --set ppc=0 --set until_t=1.5 --set frames=3 --set $sets >out.txt)
     python3 - "$d/hearth-out/muffins/muffins.csv" "$dx" "$st" "$(cat "$d/time.txt")" <<'PY'
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
