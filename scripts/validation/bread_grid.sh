@@ -53,5 +53,5 @@ for dx in $dxs; do
     python3 "$root/scripts/validation/bread_grid.py" where "$dx" "$tmp/$dx"/plain/hearth-out/bread/vtu/bread_*.vtu | sed "s/^/dx $dx, /"
     [ ! -f "$tmp/$dx/plain/hearth-out/bread/damage.png" ] || pngs="$pngs $tmp/$dx/plain/hearth-out/bread/damage.png"
 done
-# shellcheck disable=SC2086 # one PNG per dx
-python3 "$root/scripts/validation/bread_grid.py" strip "$out" $pngs
+# shellcheck disable=SC2086 # one PNG per dx (none when every plain loaf was stopped)
+[ -z "$pngs" ] || python3 "$root/scripts/validation/bread_grid.py" strip "$out" $pngs
