@@ -5,7 +5,7 @@
 # and dt_max are scene knobs every scene takes (`--set cfl=0.25`), so the scene
 # runs as it is; each frame's notch is read as the claim's check reads its last
 # (the same formula: a tenth of the height deep, two cells wide).
-# A STEP may join several switches with + (cfl=0.5+transfer=flip: the scene's
+# A STEP may join several switches with + (cfl=0.5+transfer=pic: the scene's
 # transfer too, as crack_dt.sh's STEPs do).
 # Usage: scripts/validation/muffin_dt.sh [BUILD_DIR] [DX] [STEPS]
 #   defaults build/release, 0.004, "cfl=0.5 cfl=0.25 cfl=0.125 cfl=0.4 cfl=0.6 cfl=0.75 dt_max=5e-5 dt_max=2.5e-5"
