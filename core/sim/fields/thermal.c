@@ -149,7 +149,8 @@ double thermal_dt_limit(const hearth_scene *s) {
      * rate L e g (s - s_amb) S, g = d(theta f) / d theta <= water_latent_stiffness (the vapour's factor f,
      * water.h; 14.1 at a 100 degC boiling point): a Robin term of coefficient L e g (s - s_amb), limited as the
      * oven's, rho alpha dx / (2 L e g (s - s_amb)), with the largest e (s - s_amb) / (rho alpha) the particles
-     * hold (water_latent_rate: G2P's scan of the saturations the next field step starts from). Rejected: the
+     * hold (water_latent_rate: G2P's scan of the saturations the next field step starts from; a scene with a
+     * holding wet collider keeps s - s_amb <= 1, water.c says why). Rejected: the
      * bound s - s_amb <= 1 for every material, which set the physical loaf's (s = 0.218) latent limit 4.6x
      * shorter than its saturations need (docs/validation.md, "Evaporation stops at the wet-bulb"). */
     if (s->def.latent_heat && (s->ps.enabled & (1u << PC_WATER))) {

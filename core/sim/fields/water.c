@@ -200,11 +200,27 @@ double water_dt_limit(const hearth_scene *s) {
     return dt;
 }
 
+/* A holding wet collider sets its nodes to the profile continued through its
+ * face (held_value), which may pass every particle's saturation, and a
+ * surface particle beside it samples them: there the scan bounds nothing, so
+ * such a scene keeps the bound it had, s - s_amb <= 1 (or the collider's
+ * saturation, if higher), for every material. */
+static double held_latent_rate(const hearth_scene *s) {
+    double top = -INFINITY;
+    for (int c = 0; c < s->ncol; c++)
+        if (!isnan(s->cols[c].saturation) && !(s->cols[c].beta_water > 0)) top = fmax(top, fmax(1.0, s->cols[c].saturation));
+    if (!(top > -INFINITY)) return 0.0;
+    const limit_scan ls = limit_scan_of(s);
+    double d = 0, e = 0, l = 0;
+    for (int m = 0; m < s->mats.n; m++) particle_limits(&ls, &s->mats.slot[m], 0.0, top + s->def.oven_saturation, &d, &e, &l);
+    return l;
+}
+
 double water_latent_rate(const hearth_scene *s) {
     if (!water_active(s) || !s->def.latent_heat) return 0.0;
     double d, e, l = s->water.lmax;
     if (!s->water.limits_valid) scan_limits(s, &d, &e, &l);
-    return l;
+    return fmax(l, held_latent_rate(s));
 }
 
 double water_total(const hearth_scene *s) {
