@@ -75,6 +75,11 @@ void water_forget_limits(water_state *w) { w->limits_valid = 0; }
 
 void water_restore_lost(water_state *w, double lost) { w->lost = lost; }
 
+void water_restore_limits(water_state *w, double dmax, double emax, double lmax) {
+    w->dmax = dmax, w->emax = emax, w->lmax = lmax;
+    w->limits_valid = 1;
+}
+
 int water_active(const hearth_scene *s) { return (s->ps.enabled & (1u << PC_WATER)) != 0; }
 
 double water_psat_boiling(const hearth_scene *s) {

@@ -34,6 +34,8 @@ void water_step_stands(water_state *w);
 void water_forget_limits(water_state *w);
 /// A restored checkpoint's water lost so far (kg).
 void water_restore_lost(water_state *w, double lost);
+/// A restored checkpoint's step limits (dmax, emax, lmax as water_state holds them), kept as the saved run kept them.
+void water_restore_limits(water_state *w, double dmax, double emax, double lmax);
 
 /* Saturation never reaches zero (Ding et al. §3: "our mixture will never be
  * completely dry"): particles keep at least this much. */
