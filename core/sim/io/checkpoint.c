@@ -324,8 +324,9 @@ static void get_clocks(ck_cursor *c, ck_clocks *k, uint32_t version) {
     }
     /* Version 7: the water's explicit-step limits (water.h's water_state), which G2P scanned at P2G's volumes
      * (and the latent one of the saturations the next field step starts from): a restore that scanned the
-     * particles again would read a det F a step or a cycle later (and its s = m^w / (rho_0^w J V_0) rounded
-     * otherwise), and a scene whose latent limit binds took another step and went on to other bits. Before
+     * particles again would read, in a cycle, a det F moved on since the field step, and at every step
+     * s = m^w / (rho_0^w J V_0) rounded otherwise, and a scene whose latent limit binds took another step
+     * and went on to other bits (latent_limit_checkpoint_roundtrip). Before
      * version 7 (0): scanned again, as then. */
     k->water_limits = 0;
     k->water_dmax = k->water_emax = k->water_lmax = 0;
