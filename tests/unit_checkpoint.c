@@ -560,11 +560,13 @@ TEST(checkpoint_alloc_failures) {
 /* The DEF fields version 5 appended sit last in the section but for version
  * 6's field_steps, just before the clocks' tag: offsets from "CLK " back, the
  * field_steps beyond them (checkpoint.h's layout). Version 6 also appended the
- * fields' cycle to the clocks (V6_CLK_BYTES after their V5_CLK_BYTES). */
+ * fields' cycle to the clocks (V6_CLK_BYTES after their V5_CLK_BYTES), version 7
+ * the water's step limits after those (V7_CLK_BYTES). */
 #define V5_DEF_BYTES (8 + 8 + 3 * 4 + 4 + 8 + 8 + 8)
 #define V6_DEF_BYTES 4
 #define V5_CLK_BYTES (4 + 3 * 8 + 8 + 4 + 5 * 8 + 8 + 8 + 4 + 4 + 8)
 #define V6_CLK_BYTES (8 + 4 + 8 + 4)
+#define V7_CLK_BYTES (4 + 3 * 8)
 static size_t clk_at(const uint8_t *b, size_t n) {
     const size_t at = find(b, n, "CLK ", 4);
     CHECK(at != (size_t)-1 && at >= CK_HEADER_SIZE + V5_DEF_BYTES + V6_DEF_BYTES);
@@ -614,13 +616,13 @@ TEST(checkpoint_v4_reads_at_defaults) {
     uint8_t *img = save_image(s, &n);
     CHECK(img != NULL);
     if (!img || !s) return;
-    /* the DEF fields 5 and 6 appended and the clocks' version 6 tail cut out */
+    /* the DEF fields 5 and 6 appended and the clocks' version 6 and 7 tails cut out */
     const size_t clk = clk_at(img, n), cut = V5_DEF_BYTES + V6_DEF_BYTES, tail = clk + 4 + V5_CLK_BYTES;
-    const size_t m = n - cut - V6_CLK_BYTES;
+    const size_t vt = V6_CLK_BYTES + V7_CLK_BYTES, m = n - cut - vt;
     uint8_t *b = malloc(m);
     memcpy(b, img, clk - cut);
     memcpy(b + clk - cut, img + clk, tail - clk);
-    memcpy(b + tail - cut, img + tail + V6_CLK_BYTES, n - tail - V6_CLK_BYTES);
+    memcpy(b + tail - cut, img + tail + vt, n - tail - vt);
     const uint32_t v4 = 4;
     memcpy(b + 8, &v4, 4);
     ck_reseal(b, m);
@@ -650,7 +652,7 @@ TEST(checkpoint_v4_reads_at_defaults) {
     ck_reseal(b, m);
     CHECK(hearth_scene_load_mem(b, m, "v3.ck", &err) == NULL);
     printf("  %s\n", err.msg);
-    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 6 only");
+    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 7 only");
     free(b);
     free(img);
     hearth_scene_destroy(s);

@@ -498,8 +498,9 @@ TEST(latent_heat_boiling_point_checkpoint_roundtrip) {
 #define WB_BW 0.05
 #define WB_T0 25.0
 
-static hearth_scene *wet_bulb_block(void) {
+static hearth_scene *wet_bulb_block_at(double T0, double K, int field_steps) {
     hearth_scene_def d = hearth_default_scene_def();
+    d.field_steps = field_steps;
     d.dx = 0.002;
     d.gravity[1] = 0;
     d.lo[0] = d.lo[1] = 0;
@@ -512,7 +513,7 @@ static hearth_scene *wet_bulb_block(void) {
     CHECK(s != NULL);
     if (!s) return NULL;
     const char *nm[] = {"density", "bulk", "viscosity", "specific_heat", "conductivity", "water_diffusivity", "evaporation"};
-    const double nv[] = {500, 1e3, 5, 270, 5, 1e-8, WB_BW};
+    const double nv[] = {500, 1e3, 5, 270, 5, K, WB_BW};
     hearth_error err;
     const int m = hearth_scene_add_material(s, "newtonian", nm, nv, 7, &err);
     if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
@@ -521,11 +522,13 @@ static hearth_scene *wet_bulb_block(void) {
     hearth_shape *box = hearth_shape_box(c, h);
     hearth_body_def bd = hearth_default_body_def();
     bd.shape = box, bd.material = m, bd.jitter = 0, bd.fixed = 1;
-    bd.temperature = WB_T0, bd.saturation = WB_S0;
+    bd.temperature = T0, bd.saturation = WB_S0;
     CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
     hearth_shape_free(box);
     return s;
 }
+
+static hearth_scene *wet_bulb_block(void) { return wet_bulb_block_at(WB_T0, 1e-8, 0); }
 
 /* The reproducer's coldest particle, every step, stays above the wet-bulb
  * temperature of its initial saturation (water_reference.h's closed form,
@@ -604,6 +607,133 @@ TEST(latent_evaporation_is_dings_at_boiling) {
     hearth_scene_destroy(b.s);
 }
 
+
+/* The latent limit takes the saturation present and still holds where the
+ * sink is stiffest. The reproducer's block with K = 1e-6 (its surface layer,
+ * water_surface_excess, then passes 0.99994 of s: at K = 1e-8 the layer's
+ * excess is a twelfth of s and no step is stiff) starts at the boiling
+ * point, where the vapour's factor is 1 and the sink's slope with
+ * temperature, L beta^w g (s - s_amb) S with g = 1 + Delta H_v / (R theta_b),
+ * is the largest it can be (water.h). The step must be the test's own closed
+ * form rho c dx / (2 L beta^w g s0) at s0 = 0.8, the only limit that binds
+ * here from the second step on (conduction's is 2.7e-2 s, the water's
+ * 3.3e-3 s; the first step takes the materials' wave speed, 1e-4 s);
+ * before the scan it was that at s = 1, 0.8 times as long. At that step, over
+ * 0.02 s (189 steps), the coldest particle falls monotonically, stays finite
+ * and above the wet bulb of s0 (the floor of latent_heat_stops_at_wet_bulb),
+ * as forward Euler does below its step bound. The control: the same block
+ * with its fields stepped every 16th step (field_steps = 16: 16 times the
+ * limit) overshoots, below the floor or rising back, so the checks can see
+ * an unstable step: a limit without the vapour's g (14.1x longer) would fail.
+ * Measured: monotone to 8x (coldest -1.58 degC at 1x, -17.4 at 8x), past the
+ * floor at 12x (-67.2): the limit keeps a margin of 8-12x at its stiffest. */
+typedef struct stiff_run {
+    long steps;
+    double dt0, lo;   /* the first step; the coldest temperature reached */
+    int mono, finite; /* the coldest particle never rose; every temperature finite */
+} stiff_run;
+
+static stiff_run run_stiff(int field_steps) {
+    stiff_run r = {0, 0, INFINITY, 1, 1};
+    hearth_scene *s = wet_bulb_block_at(100.0, 1e-6, field_steps);
+    if (!s) return r;
+    hearth_error err;
+    double prev = INFINITY;
+    while (hearth_scene_time(s) < 0.02 - 1e-12) {
+        CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+        hearth_stats st;
+        hearth_scene_stats(s, &st);
+        if (st.step == 2) r.dt0 = st.dt; /* the first takes the materials' wave speed (1e-4 s), before a report has one */
+        const double *T = pcold(&s->ps, PC_TEMPERATURE);
+        double m = INFINITY;
+        for (int i = 0; i < s->ps.n; i++) {
+            r.finite &= isfinite(T[i]);
+            if (T[i] < m) m = T[i];
+        }
+        if (m > prev) r.mono = 0;
+        prev = m;
+        if (m < r.lo) r.lo = m;
+        r.steps = st.step;
+    }
+    hearth_scene_destroy(s);
+    return r;
+}
+
+TEST(latent_limit_takes_saturation_present) {
+    const double T_wb = wet_bulb_vapour(OVEN_BETA, OVEN_T, WB_BW, WB_S0, 100.0);
+    const double g = 1.0 + 40660.0 / (8.314462618 * (100.0 + KELVIN)); /* d(theta f)/d theta at theta_b */
+    const double want = 500.0 * 270.0 * 0.002 / (2.0 * HEARTH_LATENT_HEAT * WB_BW * g * WB_S0);
+    const stiff_run a = run_stiff(1), b = run_stiff(16);
+    printf("  latent limit at s0 = %.2f: closed form %.6g s, second step %.6g s (ratio %.9f)\n", WB_S0, want, a.dt0, a.dt0 / want);
+    printf("  at the limit: %ld steps, coldest %.3f degC, monotone %d, finite %d (wet bulb of s0 %.3f degC)\n", a.steps, a.lo,
+           a.mono, a.finite, T_wb);
+    printf("  fields every 16th step: coldest %.3f degC, monotone %d, finite %d\n", b.lo, b.mono, b.finite);
+    CHECK(fabs(a.dt0 / want - 1.0) < 1e-6);
+    CHECK(a.finite && a.mono && a.lo > T_wb);
+    CHECK(a.lo < 100.0 - 50.0); /* the sink acts: the surface leaves the boiling point */
+    CHECK(!(b.finite && b.mono && b.lo > T_wb)); /* the control: 16x the limit is caught */
+}
+
+/* A scene whose latent limit binds and whose particles change volume (the
+ * stiff block, free, falling on the domain's floor and sloshing) saved and
+ * restored at six points continues with the same bits each time: the limit
+ * is scanned in G2P at P2G's volumes, which a restore cannot scan again from
+ * the particles (their det F and its rounding differ), so checkpoint version
+ * 7 keeps it. Without that, 2 of the 6 restores took another step (rounds 0
+ * and 4). The latent limit sets the step (the fields' limit, whose
+ * conduction and water parts are 2.7e-2 and 3.3e-3 s, within 1% of it), at
+ * 9.8e-5 s against 1.06e-4 at s0: the block is squeezed, so its s is past s0. */
+TEST(latent_limit_checkpoint_roundtrip) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.002;
+    d.lo[0] = d.lo[1] = 0;
+    d.hi[0] = 0.1;
+    d.hi[1] = 0.06;
+    d.oven_temperature = OVEN_T;
+    d.oven_beta = OVEN_BETA;
+    d.latent_heat = 1;
+    d.field_steps = 1;
+    hearth_scene *s = fx_scene_def(&d);
+    CHECK(s != NULL);
+    if (!s) return;
+    const char *nm[] = {"density", "bulk", "viscosity", "specific_heat", "conductivity", "water_diffusivity", "evaporation"};
+    const double nv[] = {500, 1e3, 5, 270, 5, 1e-6, WB_BW};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "newtonian", nm, nv, 7, &err);
+    CHECK(m >= 0);
+    const double c[3] = {0.05, 0.012, 0}, h[3] = {0.02, 0.01, 0};
+    hearth_shape *box = hearth_shape_box(c, h);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = box, bd.material = m, bd.jitter = 0;
+    bd.temperature = 100.0, bd.saturation = WB_S0;
+    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    hearth_shape_free(box);
+    int same = 0, binds = 0;
+    for (int round = 0; round < 6; round++) {
+        CHECK(hearth_scene_step(s, 150, &err) == HEARTH_OK);
+        CHECK(hearth_scene_save(s, "latent_limit.ckpt", &err) == HEARTH_OK);
+        hearth_scene *r = hearth_scene_load("latent_limit.ckpt", &err);
+        CHECK(r != NULL);
+        if (!r) break;
+        hearth_stats st;
+        hearth_scene_stats(s, &st);
+        binds += fabs(st.dt / st.field_limit - 1.0) < 0.01; /* the fields' limit, here the latent one, sets the step */
+        CHECK(hearth_scene_step(s, 30, &err) == HEARTH_OK);
+        CHECK(hearth_scene_step(r, 30, &err) == HEARTH_OK);
+        const uint64_t ha = hearth_scene_hash(s), hb = hearth_scene_hash(r);
+        printf("  round %d, step %ld, dt %.9g s (the fields' limit %.9g s): %016llx %016llx\n", round, st.step, st.dt, st.field_limit,
+               (unsigned long long)ha, (unsigned long long)hb);
+        same += ha == hb;
+        hearth_scene_destroy(r);
+    }
+    printf("  %d of 6 restores went on with the same bits; the latent limit bound at %d\n", same, binds);
+    CHECK(same == 6);
+    CHECK(binds == 6);
+    remove("latent_limit.ckpt");
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(latent_heat_energy_balance), T(latent_heat_wet_plateau), T(latent_heat_refusals), T(latent_heat_checkpoint_roundtrip),
           T(latent_heat_boiling_energy_balance), T(latent_heat_crumb_plateau), T(latent_heat_boiling_point_checkpoint_roundtrip),
-          T(latent_heat_stops_at_wet_bulb), T(latent_evaporation_is_dings_at_boiling))
+          T(latent_heat_stops_at_wet_bulb), T(latent_evaporation_is_dings_at_boiling), T(latent_limit_takes_saturation_present),
+          T(latent_limit_checkpoint_roundtrip))

@@ -52,7 +52,8 @@
  * rate of change with the particle's own temperature is at most L e g
  * (s - s_amb) S, g the vapour factor's bound (water_latent_stiffness, 14.1 at
  * a 100 degC boiling point), so the explicit step is limited as for a Robin
- * coefficient L e g (thermal_dt_limit). With the switch on, oven_ledger tallies the oven's Robin
+ * coefficient L e g (s - s_amb), with the largest excess the particles hold
+ * when the step starts (thermal_dt_limit). With the switch on, oven_ledger tallies the oven's Robin
  * heat so that heat in = sensible heat + L x water lost can be checked
  * (`latent_heat_energy_balance`: to 1e-13; a particle that reaches water.c's
  * saturation floor keeps water whose heat was taken, so the books then differ
@@ -133,8 +134,6 @@ double thermal_dt_limit(const hearth_scene *s) {
         if (!isnan(s->cols[c].temperature) && isfinite(s->cols[c].beta) && s->cols[c].beta > beta) beta = s->cols[c].beta; /* held nodes are not integrated */
     int held = 0; /* a held collider's Nitsche penalty acts as beta = gamma kappa / dx */
     for (int c = 0; c < s->ncol; c++) held |= !isnan(s->cols[c].temperature) && isinf(s->cols[c].beta);
-    const int latent = s->def.latent_heat && (s->ps.enabled & (1u << PC_WATER));
-    const double stiff = water_latent_stiffness(water_psat_boiling(s), s->def.boiling_point + KELVIN);
     double dt = INFINITY;
     for (int m = 0; m < s->mats.n; m++) {
         const material_slot *ms = &s->mats.slot[m];
@@ -144,14 +143,20 @@ double thermal_dt_limit(const hearth_scene *s) {
         if (k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * s->def.dim * k));
         /* and on the Robin term: a boundary cell's rho alpha dx^dim against beta dx^(dim-1) */
         if (beta > 0) dt = fmin(dt, ra * s->def.dx / (2.0 * beta));
-        /* the latent sink L e theta_abs f(theta_abs) (s - s_amb) S falls with the
-         * particle's own temperature at the rate L e g (s - s_amb) S <= L e g S,
-         * g = d(theta f) / d theta <= water_latent_stiffness (the vapour's factor f,
-         * water.h; 14.1 at a 100 degC boiling point): a Robin term of coefficient
-         * L e g, limited as the oven's */
-        const double le = latent ? HEARTH_LATENT_HEAT * ms->core[CP_EVAPORATION] * stiff : 0.0;
-        if (le > 0) dt = fmin(dt, ra * s->def.dx / (2.0 * le));
         if (held && k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * NITSCHE_GAMMA * k));
+    }
+    /* the latent sink L e theta_abs f(theta_abs) (s - s_amb) S falls with the particle's own temperature at the
+     * rate L e g (s - s_amb) S, g = d(theta f) / d theta <= water_latent_stiffness (the vapour's factor f,
+     * water.h; 14.1 at a 100 degC boiling point): a Robin term of coefficient L e g (s - s_amb), limited as the
+     * oven's, rho alpha dx / (2 L e g (s - s_amb)), with the largest e (s - s_amb) / (rho alpha) the particles
+     * hold (water_latent_rate: G2P's scan of the saturations the next field step starts from; a scene with a
+     * holding wet collider keeps s - s_amb <= 1, water.c says why). Rejected: the
+     * bound s - s_amb <= 1 for every material, which set the physical loaf's (s = 0.218) latent limit 4.6x
+     * shorter than its saturations need (docs/validation.md, "Evaporation stops at the wet-bulb"). */
+    if (s->def.latent_heat && (s->ps.enabled & (1u << PC_WATER))) {
+        const double q = water_latent_rate(s);
+        const double stiff = water_latent_stiffness(water_psat_boiling(s), s->def.boiling_point + KELVIN);
+        if (q > 0) dt = fmin(dt, s->def.dx / (2.0 * HEARTH_LATENT_HEAT * stiff * q));
     }
     return dt;
 }

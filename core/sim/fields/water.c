@@ -75,6 +75,11 @@ void water_forget_limits(water_state *w) { w->limits_valid = 0; }
 
 void water_restore_lost(water_state *w, double lost) { w->lost = lost; }
 
+void water_restore_limits(water_state *w, double dmax, double emax, double lmax) {
+    w->dmax = dmax, w->emax = emax, w->lmax = lmax;
+    w->limits_valid = 1;
+}
+
 int water_active(const hearth_scene *s) { return (s->ps.enabled & (1u << PC_WATER)) != 0; }
 
 double water_psat_boiling(const hearth_scene *s) {
@@ -129,35 +134,64 @@ static double theta_abs(const double *T, int i, const material_slot *ms) {
 }
 
 /* What limits the explicit step at one particle of saturation sat: its
- * diffusivity K theta s and its evaporation rate beta theta / rho_0. */
-static void particle_limits(const material_slot *ms, double th, double sat, double *d, double *e) {
-    *d = fmax(*d, ms->core[CP_WATER_DIFFUSIVITY] * th * sat);
-    *e = fmax(*e, ms->core[CP_EVAPORATION] * th / ms->core[CP_WATER_DENSITY]);
+ * diffusivity K theta s, its evaporation rate beta theta / rho_0 and, with
+ * latent_heat, its latent sink's Robin coefficient per unit heat capacity
+ * beta (s - s_amb) / (rho c), before L and the vapour's factor's bound
+ * (thermal.c's thermal_dt_limit adds them). The sink's temperature slope
+ * L beta g (s_surface - s_amb) S acts on the grid's sample at a surface
+ * particle, an average of its neighbours' saturations weighted by capacity
+ * (rho_0^w V w_ip >= 0), so it lies within them, and the surface layer only
+ * lowers the excess (water_surface_excess); every particle's own excess thus
+ * bounds it, surface or not (an interior neighbour, wetter in a drying body,
+ * enters the sample). Only a positive excess stiffens: below s_amb the sink
+ * is a source that grows with theta, which forward Euler does not make
+ * oscillate. A material with no heat capacity and evaporation gets an
+ * infinite rate, the zero step the per-material bound gave it before. */
+typedef struct limit_scan {
+    int latent;   /* the scene's latent_heat: the latent rate is scanned */
+    double s_amb; /* the oven's ambient saturation */
+} limit_scan;
+
+static limit_scan limit_scan_of(const hearth_scene *s) {
+    return (limit_scan){.latent = s->def.latent_heat != 0, .s_amb = s->def.oven_saturation};
 }
 
-/* The largest diffusivity K theta s and evaporation rate beta theta / rho_0 over the particles. */
-static void scan_limits(const hearth_scene *s, double *dmax, double *emax) {
+static void particle_limits(const limit_scan *ls, const material_slot *ms, double th, double sat, double *d, double *e,
+                            double *l) {
+    *d = fmax(*d, ms->core[CP_WATER_DIFFUSIVITY] * th * sat);
+    *e = fmax(*e, ms->core[CP_EVAPORATION] * th / ms->core[CP_WATER_DENSITY]);
+    const double ex = sat - ls->s_amb, bw = ms->core[CP_EVAPORATION];
+    if (ls->latent && ex > 0 && bw > 0) {
+        const double rc = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
+        *l = fmax(*l, rc > 0 ? bw * ex / rc : INFINITY);
+    }
+}
+
+/* The largest diffusivity K theta s, evaporation rate beta theta / rho_0 and latent rate over the particles. */
+static void scan_limits(const hearth_scene *s, double *dmax, double *emax, double *lmax) {
     const particles *ps = &s->ps;
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
-    double d = 0, e = 0;
+    const limit_scan ls = limit_scan_of(s);
+    double d = 0, e = 0, l = 0;
     for (int i = 0; i < ps->n; i++) {
         const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
-        particle_limits(ms, theta_abs(T, i, ms), water_saturation(s, i), &d, &e);
+        particle_limits(&ls, ms, theta_abs(T, i, ms), water_saturation(s, i), &d, &e, &l);
     }
     *dmax = d;
     *emax = e;
+    *lmax = l;
 }
 
 void water_keep_limits(hearth_scene *s) {
     if (!water_active(s) || s->water.limits_valid) return;
-    scan_limits(s, &s->water.dmax, &s->water.emax);
+    scan_limits(s, &s->water.dmax, &s->water.emax, &s->water.lmax);
     s->water.limits_valid = 1;
 }
 
 double water_dt_limit(const hearth_scene *s) {
     if (!water_active(s)) return INFINITY;
-    double d = s->water.dmax, e = s->water.emax;
-    if (!s->water.limits_valid) scan_limits(s, &d, &e);
+    double d = s->water.dmax, e = s->water.emax, l = 0;
+    if (!s->water.limits_valid) scan_limits(s, &d, &e, &l);
     const double dx = s->def.dx;
     double dt = INFINITY;
     /* forward Euler on the B-spline Laplacian, as for heat: dx^2 / (2 dim D) */
@@ -169,6 +203,29 @@ double water_dt_limit(const hearth_scene *s) {
     /* a boundary cell's water rho_0 s dx^dim against its loss beta theta s dx^(dim-1) */
     if (e > 0) dt = fmin(dt, dx / (2.0 * e));
     return dt;
+}
+
+/* A holding wet collider sets its nodes to the profile continued through its
+ * face (held_value), which may pass every particle's saturation, and a
+ * surface particle beside it samples them: there the scan bounds nothing, so
+ * such a scene keeps the bound it had, s - s_amb <= 1 (or the collider's
+ * saturation, if higher), for every material. */
+static double held_latent_rate(const hearth_scene *s) {
+    double top = -INFINITY;
+    for (int c = 0; c < s->ncol; c++)
+        if (!isnan(s->cols[c].saturation) && !(s->cols[c].beta_water > 0)) top = fmax(top, fmax(1.0, s->cols[c].saturation));
+    if (!(top > -INFINITY)) return 0.0;
+    const limit_scan ls = limit_scan_of(s);
+    double d = 0, e = 0, l = 0;
+    for (int m = 0; m < s->mats.n; m++) particle_limits(&ls, &s->mats.slot[m], 0.0, top + s->def.oven_saturation, &d, &e, &l);
+    return l;
+}
+
+double water_latent_rate(const hearth_scene *s) {
+    if (!water_active(s) || !s->def.latent_heat) return 0.0;
+    double d, e, l = s->water.lmax;
+    if (!s->water.limits_valid) scan_limits(s, &d, &e, &l);
+    return fmax(l, held_latent_rate(s));
 }
 
 double water_total(const hearth_scene *s) {
@@ -370,7 +427,7 @@ void water_face_flux(hearth_scene *s, double dt) {
  * the particles' water instead; next to a dry region that multiplies a wet
  * particle's gain by s_p / s_i and pushed saturation past its largest initial
  * value (0.94 from 0.9 in water_conservation). Then the floor applies. */
-double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) {
+double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax, double *lmax) {
     particles *ps = &s->ps;
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     double *W = pcold(ps, PC_WATER);
@@ -379,7 +436,8 @@ double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax) 
     double m = before + cap * r;
     if (m < WATER_SATURATION_FLOOR * cap) m = WATER_SATURATION_FLOOR * cap;
     W[i] = m;
-    particle_limits(ms, theta_abs(T, i, ms), m / cap, dmax, emax);
+    const limit_scan ls = limit_scan_of(s);
+    particle_limits(&ls, ms, theta_abs(T, i, ms), m / cap, dmax, emax, lmax);
     return before - m;
 }
 
@@ -431,13 +489,14 @@ double water_boil(hearth_scene *s, int i, double *T, double Tb, double vol) {
  * of its own, so that G2P costs what it did in scenes without such a
  * collider; it sees the positions G2P moved the particles to, which differ
  * from P2G's by v dt, far below dx. Returns the water the particles lost. */
-static double held_particles(hearth_scene *s, double *dmax, double *emax) {
+static double held_particles(hearth_scene *s, double *dmax, double *emax, double *lmax) {
     grid *g = &s->g;
     particles *ps = &s->ps;
     const int D = g->dim, NPB = g->nodes_per_block;
     const double *X = pcold(ps, PC_X), *vol = mpm_state_of(s)->vol;
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
     double *W = pcold(ps, PC_WATER), removed = 0;
+    const limit_scan ls = limit_scan_of(s);
     for (int i = 0; i < ps->n; i++) {
         double phi, n[3];
         if (!holder_at(s, X + 3 * i, 0.5, &phi, n)) continue;
@@ -460,30 +519,32 @@ static double held_particles(hearth_scene *s, double *dmax, double *emax) {
         double m = sat * cap;
         if (m < WATER_SATURATION_FLOOR * cap) m = WATER_SATURATION_FLOOR * cap;
         W[i] = m;
-        particle_limits(ms, theta_abs(T, i, ms), m / cap, dmax, emax);
+        particle_limits(&ls, ms, theta_abs(T, i, ms), m / cap, dmax, emax, lmax);
         removed += before - m;
     }
     return removed;
 }
 
 void water_finish(hearth_scene *s) {
-    /* reduce in block order: the same sums on any thread count */
-    double removed = 0, dmax = 0, emax = 0;
+    /* reduce in block order: the same sums on any thread count (a maximum is exact in any order anyway) */
+    double removed = 0, dmax = 0, emax = 0, lmax = 0;
     const mpm_state *m = mpm_state_of(s);
     for (int k = 0; k < m->npb; k++) {
         removed += m->partial[k].water_removed;
         dmax = fmax(dmax, m->partial[k].water_dmax);
         emax = fmax(emax, m->partial[k].water_emax);
+        lmax = fmax(lmax, m->partial[k].water_lmax);
     }
-    if (s->water.hold) removed += held_particles(s, &dmax, &emax);
+    if (s->water.hold) removed += held_particles(s, &dmax, &emax, &lmax);
     /* on MPI slabs each rank took its own particles': added and maxed in rank
      * order, so every rank takes the same step next (mpm_stable_dt) */
-    double mx[2] = {dmax, emax};
-    mpm_ranks_fields_reduce(s, &removed, 1, mx, 2);
-    dmax = mx[0], emax = mx[1];
+    double mx[3] = {dmax, emax, lmax};
+    mpm_ranks_fields_reduce(s, &removed, 1, mx, 3);
+    dmax = mx[0], emax = mx[1], lmax = mx[2];
     s->water.step_removed = removed;
     s->water.dmax = dmax;
     s->water.emax = emax;
+    s->water.lmax = lmax;
     s->water.limits_valid = 1;
 }
 

@@ -18,6 +18,7 @@ typedef struct water_state {
     double lost;           /* through the boundary so far (kg) */
     double step_removed;   /* by the step being taken; counted when it stands (water_step_stands) */
     double dmax, emax;     /* largest K theta s and beta theta / rho_0 after the last step */
+    double lmax;           /* with latent_heat: largest beta^w (s - s_amb)^+ / (rho c) after it (water_latent_rate) */
     int limits_valid;      /* 0: particles or materials changed since, scan again */
     int exchange;          /* this step has wet colliders with beta_water > 0 (Robin): water_prepare sets it */
     int hold;              /* this step has wet colliders that hold their saturation: water_prepare sets it */
@@ -33,6 +34,8 @@ void water_step_stands(water_state *w);
 void water_forget_limits(water_state *w);
 /// A restored checkpoint's water lost so far (kg).
 void water_restore_lost(water_state *w, double lost);
+/// A restored checkpoint's step limits (dmax, emax, lmax as water_state holds them), kept as the saved run kept them.
+void water_restore_limits(water_state *w, double dmax, double emax, double lmax);
 
 /* Saturation never reaches zero (Ding et al. §3: "our mixture will never be
  * completely dry"): particles keep at least this much. */
@@ -146,6 +149,11 @@ void water_init_particles(struct hearth_scene *s, int from, int to, double sat);
 void water_keep_limits(struct hearth_scene *s);
 /// Largest explicit water step (s), INFINITY when inactive.
 double water_dt_limit(const struct hearth_scene *s);
+/// With latent_heat: the largest beta^w (s - s_amb) / (rho c) over the particles (m/s per J/kg: times L it is
+/// the latent sink's Robin coefficient per unit heat capacity, before the vapour's factor's bound), from the
+/// saturations the next step's sink starts from; 0 without latent_heat or water, or where no particle is
+/// wetter than s_amb. thermal_dt_limit takes it.
+double water_latent_rate(const struct hearth_scene *s);
 /// Once a step stands: raise each particle's PC_DRIED (1 - the lowest moisture ratio reached) to its
 /// present dryness. The column must exist (an irreversible moisture curve enables it).
 void water_dried_step(struct hearth_scene *s);
@@ -164,8 +172,8 @@ double water_saturation(const struct hearth_scene *s, int i);
 void water_prepare(struct hearth_scene *s);
 /// In G2P, at P2G's positions: particle i takes r, the interpolated change of
 /// its nodes' saturation (eq. 19-20, FLIP), floored. Returns the water it
-/// lost (kg); raises *dmax and *emax, the explicit-step limits.
-double water_take(struct hearth_scene *s, int i, double r, double *dmax, double *emax);
+/// lost (kg); raises *dmax, *emax and *lmax, the explicit-step limits (water_state's).
+double water_take(struct hearth_scene *s, int i, double r, double *dmax, double *emax, double *lmax);
 /// With the scene's latent_heat, for particle i (of volume vol, m^3: MPM's
 /// P2G volume, SPH's rest volume V_0, as its saturation) whose new temperature *T passed Tb (degrees C):
 /// the excess heat boils its water above the floor, m c (*T - Tb) / L, and *T

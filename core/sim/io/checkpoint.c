@@ -26,7 +26,8 @@
  * checksum over the particles only, plugins by path) and version 3 are refused
  * by version; version 4 is read with the DEF fields version 5 appended at their
  * defaults (its writer refused scenes with any other value); versions 4 and 5
- * without version 6's field_steps (1, every step: their bits) and fields' cycle (a new one). */
+ * without version 6's field_steps (1, every step: their bits) and fields' cycle (a new one); versions 4
+ * to 6 without version 7's water step limits (scanned again from the particles, as their readers did). */
 #include "checkpoint.h"
 
 #include <errno.h>
@@ -274,6 +275,8 @@ typedef struct ck_clocks {
     double t, dt_last, dt_scale, max_speed, c_max, kinetic, kinetic_peak, cfl_last, water_lost;
     double field_acc, field_dt_last; /* version 6; 0 before: a cycle that starts at the restore */
     int32_t field_phase, field_cycle_last;
+    int32_t water_limits; /* version 7: the water's explicit-step limits as the last step left them (1), or none (0) */
+    double water_dmax, water_emax, water_lmax;
     int64_t step, ood;
     uint64_t rng;
 } ck_clocks;
@@ -318,6 +321,23 @@ static void get_clocks(ck_cursor *c, ck_clocks *k, uint32_t version) {
         if (!(k->field_acc >= 0 && k->field_dt_last >= 0) || k->field_phase < 0 || k->field_phase >= FIELD_MAX_CYCLE ||
             k->field_cycle_last < 0 || k->field_cycle_last > FIELD_MAX_CYCLE)
             ck_fail(c, "clock: the fields' cycle is out of range (time >= 0, steps in [0, 4096])");
+    }
+    /* Version 7: the water's explicit-step limits (water.h's water_state), which G2P scanned at P2G's volumes
+     * (and the latent one of the saturations the next field step starts from): a restore that scanned the
+     * particles again would read, in a cycle, a det F moved on since the field step, and at every step
+     * s = m^w / (rho_0^w J V_0) rounded otherwise, and a scene whose latent limit binds took another step
+     * and went on to other bits (latent_limit_checkpoint_roundtrip). Before
+     * version 7 (0): scanned again, as then. */
+    k->water_limits = 0;
+    k->water_dmax = k->water_emax = k->water_lmax = 0;
+    if (version >= 7) {
+        k->water_limits = get_i32(c);
+        k->water_dmax = get_f64(c);
+        k->water_emax = get_f64(c);
+        k->water_lmax = get_f64(c); /* infinite for a material that evaporates with no heat capacity */
+        if ((k->water_limits != 0 && k->water_limits != 1) || !(k->water_dmax >= 0) || !(k->water_emax >= 0) ||
+            !(k->water_lmax >= 0))
+            ck_fail(c, "clock: the water's step limits are out of range (a flag 0 or 1, limits >= 0)");
     }
 }
 
@@ -590,6 +610,7 @@ static void set_clocks(hearth_scene *s, const ck_clocks *k) {
     s->field_phase = k->field_phase;
     s->field_dt_last = k->field_dt_last;
     s->field_cycle_last = k->field_cycle_last;
+    if (k->water_limits && water_active(s)) water_restore_limits(&s->water, k->water_dmax, k->water_emax, k->water_lmax);
 }
 
 hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name, hearth_error *err) {

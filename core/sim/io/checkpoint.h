@@ -28,6 +28,8 @@
  *           i32 field_steps
  *    "CLK " i32 guard state, then the clocks and the jitter generator; version 6 appends
  *           f64 the fields' cycle time, i32 its steps, f64 and i32 the last field step's
+ *           version 7 appends i32 whether the water's step limits are kept (1) and f64 their
+ *           dmax, emax and lmax (water.h's water_state)
  *    "MATS" u32 count; per material: name, u32 ABI, u64 schema hash,
  *           u32 nparams, f64 params, f64 core params, u32 curves, curves (each: u32 param,
  *           u32 points, u32 flags: bit 0 irreversible, bit 1 a moisture curve; f64 x, f64 values)
@@ -43,7 +45,7 @@
 #include <stdint.h>
 
 #define CK_MAGIC "HEARTHCK"
-#define CK_VERSION 6u
+#define CK_VERSION 7u
 /// Oldest version read: a version 4 file is version 5's layout without the
 /// DEF fields version 5 appended.
 #define CK_VERSION_MIN 4u

@@ -96,6 +96,11 @@ static void put_clocks(ck_out *o, const hearth_scene *s) {
     put_i32(o, s->field_phase);
     put_f64(o, s->field_dt_last);
     put_i32(o, s->field_cycle_last);
+    /* version 7: the water's step limits as the last step left them, so a restore takes the step the run takes */
+    put_i32(o, s->water.limits_valid ? 1 : 0);
+    put_f64(o, s->water.dmax);
+    put_f64(o, s->water.emax);
+    put_f64(o, s->water.lmax);
 }
 
 static void put_materials(ck_out *o, const hearth_scene *s) {

@@ -28,7 +28,7 @@ typedef struct pb_partial {
     long ood;
     /* water.c's per-block sums, written by G2P's block loop and reduced by water_finish: they stay
      * here with the other partials so a step's reduction is one array in block order */
-    double water_removed, water_dmax, water_emax;
+    double water_removed, water_dmax, water_emax, water_lmax;
     int flushed; /* 3D's ordered P2G (mpm.c's p2g_team): the block's tile is in the nodes (release / acquire) */
 } pb_partial;
 

@@ -75,7 +75,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     }
     double ke = 0, mass = 0, vmax = -1, move2 = 0;
     int mover = -1;
-    double w_removed = 0, w_dmax = 0, w_emax = 0;
+    double w_removed = 0, w_dmax = 0, w_emax = 0, w_lmax = 0;
     int fastest = -1;
     long ood = 0;
     for (int i = pb.start; i < pb.end; i++) {
@@ -136,7 +136,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         else
             for (int a = 0; a < 9; a++) C[a] = Dinv * B[a];
         /* water first: its step limits use the temperature the flux was evaluated at */
-        if (WATER) w_removed += water_take(s, i, ds, &w_dmax, &w_emax);
+        if (WATER) w_removed += water_take(s, i, ds, &w_dmax, &w_emax, &w_lmax);
         if (HEAT) { /* FLIP (eq. 21): the particle takes its nodes' temperature change */
             const double T0 = Tcol[i], flip = s->def.heat_flip;
             double T1 = !PIC || flip == 1.0 ? T0 + dT : flip * (T0 + dT) + (1.0 - flip) * Tn; /* FLIP-PIC blend */
@@ -241,6 +241,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     pp->water_removed = w_removed;
     pp->water_dmax = w_dmax;
     pp->water_emax = w_emax;
+    pp->water_lmax = w_lmax;
 }
 
 /* G2P's, indexed [dim == 3][heat][water], heat 0 (none), 1 (FLIP) or 2 (with the PIC part: g2p_heat) */

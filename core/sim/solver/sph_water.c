@@ -166,31 +166,40 @@ void sph_water_advance(hearth_scene *s, double dt) {
  * against its loss beta theta s V / spacing (a quarter of that time, as the
  * Robin heat; the vapour's factor, at most 1, only slows the loss); and with
  * latent_heat the sink's rate of change with the particle's temperature,
- * L beta g (s - s_amb) face <= L beta g face against rho c V, a Robin
- * coefficient L beta g, g the vapour's factor's bound (water_latent_stiffness,
- * water.h: 14.1 at a 100 degC boiling point). */
+ * L beta g (s - s_amb) face against rho c V, a Robin coefficient
+ * L beta g (s - s_amb), g the vapour's factor's bound (water_latent_stiffness,
+ * water.h: 14.1 at a 100 degC boiling point). The step's sink acts on these
+ * very saturations (sph_water_rates reads water_saturation at the step's
+ * start), and the surface layer only lowers the excess (water_surface_excess),
+ * so the largest positive beta (s - s_amb) / (rho c) over the particles bounds
+ * it exactly; the surface flags are not known before the step, so every
+ * particle counts. Below s_amb the sink is a source growing with theta, which
+ * forward Euler does not make oscillate. Rejected: s - s_amb <= 1 for every
+ * material (4.6x too tight at the physical bread's s = 0.218). */
 double sph_water_stable_dt(const hearth_scene *s, double hmin, double rhomin) {
     (void)rhomin;
     if (!water_active(s)) return INFINITY;
     const particles *ps = &s->ps;
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
-    const double spmin = hmin / s->def.sph.h_factor;
-    double dmax = 0, emax = 0, dt = INFINITY;
+    const double spmin = hmin / s->def.sph.h_factor, s_amb = s->def.oven_saturation;
+    const int latent = s->def.latent_heat && T;
+    double dmax = 0, emax = 0, lmax = 0, dt = INFINITY;
     for (int i = 0; i < ps->n; i++) {
         const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
-        const double th = (T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN;
-        dmax = fmax(dmax, ms->core[CP_WATER_DIFFUSIVITY] * th * water_saturation(s, i));
+        const double th = (T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN, sat = water_saturation(s, i);
+        dmax = fmax(dmax, ms->core[CP_WATER_DIFFUSIVITY] * th * sat);
         emax = fmax(emax, ms->core[CP_EVAPORATION] * th / ms->core[CP_WATER_DENSITY]);
+        const double ex = sat - s_amb, b = ms->core[CP_EVAPORATION];
+        if (latent && ex > 0 && b > 0) {
+            const double rc = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
+            lmax = fmax(lmax, rc > 0 ? b * ex / rc : INFINITY);
+        }
     }
     if (dmax > 0) dt = fmin(dt, 0.1 * hmin * hmin / dmax);
     if (emax > 0) dt = fmin(dt, 0.25 * spmin / emax);
-    if (s->def.latent_heat && T) {
+    if (lmax > 0) {
         const double g = water_latent_stiffness(water_psat_boiling(s), s->def.boiling_point + KELVIN);
-        for (int k = 0; k < s->mats.n; k++) {
-            const material_slot *ms = &s->mats.slot[k];
-            const double rc = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT], b = ms->core[CP_EVAPORATION] * g;
-            if (rc > 0 && b > 0) dt = fmin(dt, 0.25 * rc * spmin / (HEARTH_LATENT_HEAT * b));
-        }
+        dt = fmin(dt, 0.25 * spmin / (HEARTH_LATENT_HEAT * g * lmax));
     }
     return dt;
 }
