@@ -605,7 +605,8 @@ TEST(checkpoint_v5_def_fields_refused) {
 }
 
 /* A version 4 file (version 5's layout without the DEF fields 5 appended,
- * rebuilt here from a new save without version 6's fields) still loads, those fields at their defaults,
+ * rebuilt here from a new save without version 6's fields and version 7's dry_conductivity) still loads,
+ * those fields at their defaults,
  * and continues as the scene it was saved from; version 3 is refused by
  * version (docs/checkpoints.md). */
 TEST(checkpoint_v4_reads_at_defaults) {
@@ -618,11 +619,25 @@ TEST(checkpoint_v4_reads_at_defaults) {
     if (!img || !s) return;
     /* the DEF fields 5 and 6 appended and the clocks' version 6 and 7 tails cut out */
     const size_t clk = clk_at(img, n), cut = V5_DEF_BYTES + V6_DEF_BYTES, tail = clk + 4 + V5_CLK_BYTES;
-    const size_t vt = V6_CLK_BYTES + V7_CLK_BYTES, m = n - cut - vt;
+    const size_t vt = V6_CLK_BYTES + V7_CLK_BYTES;
+    size_t m = n - cut - vt;
     uint8_t *b = malloc(m);
     memcpy(b, img, clk - cut);
     memcpy(b + clk - cut, img + clk, tail - clk);
     memcpy(b + tail - cut, img + tail + vt, n - tail - vt);
+    /* and version 7's last core material parameter (dry_conductivity, before the curve count): files before 7
+     * hold CP_COUNT - 1 of them */
+    const size_t el = find(b, m, "elastic", 7);
+    CHECK(el != (size_t)-1);
+    if (el == (size_t)-1) {
+        free(b);
+        free(img);
+        hearth_scene_destroy(s);
+        return;
+    }
+    const size_t dry = el + 7 + 4 + 8 + 4 + 8 * 3 + 8 * (CP_COUNT - 1); /* elastic has 3 parameters */
+    memmove(b + dry, b + dry + 8, m - dry - 8);
+    m -= 8;
     const uint32_t v4 = 4;
     memcpy(b + 8, &v4, 4);
     ck_reseal(b, m);

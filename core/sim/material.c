@@ -57,6 +57,13 @@ hearth_status material_slot_init(material_slot *ms, const hearth_plugin *pl, con
         mem_free(p, params_bytes(m));
         return st;
     }
+    if (core[CP_DRY_CONDUCTIVITY] > core[CP_CONDUCTIVITY]) { /* the step limits use conductivity (material.h) */
+        mem_free(p, params_bytes(m));
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "material '%s': dry_conductivity = %g W/(m K) exceeds its conductivity = %g W/(m K); valid range "
+                       "[0, conductivity] (a dried material conducts at most as the wet one; 0 = as wet)",
+                       m->name, core[CP_DRY_CONDUCTIVITY], core[CP_CONDUCTIVITY]);
+    }
     *ms = (material_slot){.plugin = pl, .m = m, .params = p, .density_index = params_index(m, "density")};
     memcpy(ms->core, core, sizeof core);
     return HEARTH_OK;

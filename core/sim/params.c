@@ -25,6 +25,11 @@ static const hearth_param core_schema[CP_COUNT] = {
     [CP_WATER_DENSITY] = {"water_density", "kg/m^3", "density of pure water rho_0^w (Ding et al. eq. 8)", 1000, 1, 1e5},
     /* Rodriguez-Arenas 2011 eq. 3.50: V_b0 of bubble particles; the SPH solver only */
     [CP_BUBBLE] = {"bubble", "1", "SPH: initial bubble volume V_b0 (eq. 3.50) marks bubble particles; 0 = dough", 0, 0, 100},
+    /* a dried crust conducts less than wet crumb (issue #18); material_conductivity, material.h */
+    [CP_DRY_CONDUCTIVITY] = {"dry_conductivity", "W/(m K)",
+                             "kappa of the dried material: linear in the water left m^w/m^w_0 from it (dry) to conductivity "
+                             "(as mixed); at most conductivity; 0 = as wet",
+                             0, 0, 1e4},
 };
 
 const hearth_param *hearth_core_params(int *n) {

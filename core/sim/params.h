@@ -9,6 +9,8 @@ enum {
     CP_GAS_RATE, CP_REACTION_T, CP_REACTION_WIDTH, CP_POROSITY0,
     CP_SATURATION0, CP_WATER_DIFFUSIVITY, CP_EVAPORATION, CP_WATER_STIFFNESS, CP_WATER_DENSITY,
     CP_BUBBLE, /* SPH bubble particles (Rodriguez-Arenas §3.3.3) */
+    CP_DRY_CONDUCTIVITY, /* conduction of the dried material (material_conductivity, material.h); last, so
+                          * checkpoints before version 7 read the others in place */
     CP_COUNT
 };
 

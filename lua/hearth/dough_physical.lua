@@ -56,6 +56,13 @@ D.goods = {
     -- conductivity: kappa = alpha rho c with Zanoni et al. 1995's measured crumb diffusivity
     -- alpha = exp(0.01 eps - 15.25) = 3.9e-7 m^2/s at eps = 50%: 0.51 W/(m K)
     conductivity = 0.51,
+    -- dried, the crust conducts less (issue #18; core parameter dry_conductivity, kappa linear in the water left):
+    -- kappa = alpha rho c with Zanoni et al. 1995's measured crust correlations at the same eps = 50%,
+    -- alpha = exp(0.0062 eps - 15.30) = 3.09e-7 m^2/s and rho = 895 - 9.0 eps = 445 kg/m^3, and c = 1.65 kJ/(kg K)
+    -- (Choi & Okos, ASHRAE, for the dry solids: 85% carbohydrate, 12% protein, 2% fat, 1% ash, at 25 degC):
+    -- 0.23 W/(m K), 0.44 of the wet crumb's. (A bread model's dry and wet values, 0.18 and 0.37 W/(m K), have
+    -- about the same ratio: techMathGroup/breadBakingFoam, compEffProps.H.)
+    dry_conductivity = 0.23,
     -- water: 45% wet basis (a lean bread dough's; Zanoni, Peri & Pierucci 1993, J. Food Eng. 19:383, bake doughs of
     -- about this), s = 0.45 x 484 / 1000
     saturation = 0.218,
@@ -137,7 +144,7 @@ function D.preset(name)
   local S = g.time_scale
   local params = {
     E = g.E, nu = g.nu, density = g.density, specific_heat = g.specific_heat,
-    conductivity = g.conductivity * S,
+    conductivity = g.conductivity * S, dry_conductivity = g.dry_conductivity and g.dry_conductivity * S,
     -- eq. 22: D = K theta s at the boiling point and the dough's saturation
     water_diffusivity = g.water_diffusivity_m2s / (373.15 * g.saturation) * S,
     evaporation = g.evaporation * S, saturation = g.saturation,

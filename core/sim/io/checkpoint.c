@@ -27,7 +27,8 @@
  * by version; version 4 is read with the DEF fields version 5 appended at their
  * defaults (its writer refused scenes with any other value); versions 4 and 5
  * without version 6's field_steps (1, every step: their bits) and fields' cycle (a new one); versions 4
- * to 6 without version 7's water step limits (scanned again from the particles, as their readers did). */
+ * to 6 without version 7's water step limits (scanned again from the particles, as their readers did) and
+ * its last core material parameter, dry_conductivity (0, as wet: their bits). */
 #include "checkpoint.h"
 
 #include <errno.h>
@@ -368,7 +369,9 @@ static hearth_scene *refuse_at(hearth_scene *s, hearth_error *err, const char *n
     return NULL;
 }
 
-static int get_materials(ck_cursor *c, hearth_scene *s, const char *name, hearth_error *err) {
+static int get_materials(ck_cursor *c, hearth_scene *s, const char *name, uint32_t version, hearth_error *err) {
+    /* the core parameters the file holds: before version 7, all but dry_conductivity (the last), left at 0 */
+    const int ncore = version >= 7 ? CP_COUNT : CP_DRY_CONDUCTIVITY;
     get_tag(c, "MATS", "the materials section is missing");
     const uint32_t nmat = get_u32(c);
     if (c->bad) return -1;
@@ -389,9 +392,9 @@ static int get_materials(ck_cursor *c, hearth_scene *s, const char *name, hearth
             return -1;
         }
         if (np > SCENE_MAX_PARAMS) return ck_fail(c, "a material with more than 256 parameters");
-        if ((size_t)(np + CP_COUNT) * sizeof(double) > c->left) return ck_fail(c, "truncated");
+        if ((size_t)(np + (uint32_t)ncore) * sizeof(double) > c->left) return ck_fail(c, "truncated");
         double vals[SCENE_MAX_PARAMS + CP_COUNT];
-        get_finite_n(c, vals, (int)np + CP_COUNT, "a material parameter is not finite");
+        get_finite_n(c, vals, (int)np + ncore, "a material parameter is not finite");
         if (c->bad) return -1;
         if (abi != HEARTH_MATERIAL_ABI) {
             err_set(err, HEARTH_ERR_FORMAT,
@@ -430,8 +433,8 @@ static int get_materials(ck_cursor *c, hearth_scene *s, const char *name, hearth
         const char *names[SCENE_MAX_PARAMS + CP_COUNT];
         for (uint32_t k = 0; k < np; k++) names[k] = m->params[k].name;
         const hearth_param *cp = hearth_core_params(NULL);
-        for (int k = 0; k < CP_COUNT; k++) names[np + k] = cp[k].name;
-        const int mat = hearth_scene_add_material(s, pname, names, vals, (int)np + CP_COUNT, err);
+        for (int k = 0; k < ncore; k++) names[np + k] = cp[k].name;
+        const int mat = hearth_scene_add_material(s, pname, names, vals, (int)np + ncore, err);
         if (mat < 0) return -1;
         const uint32_t nc = get_u32(c);
         if (c->bad) return -1;
@@ -659,7 +662,7 @@ hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name
     get_clocks(&c, &k, version);
     if (c.bad) return refuse_at(s, err, name, &c, "clocks");
     s->nbodies = k.nbodies; /* particle body ids are checked against it */
-    if (get_materials(&c, s, name, err)) return refuse_at(s, err, name, &c, "materials");
+    if (get_materials(&c, s, name, version, err)) return refuse_at(s, err, name, &c, "materials");
     if (get_colliders(&c, s, err)) return refuse_at(s, err, name, &c, "colliders");
     s->next_id = k.next_id;
     if (get_particles(&c, s, err)) return refuse_at(s, err, name, &c, "particles");

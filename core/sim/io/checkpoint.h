@@ -45,7 +45,7 @@
 #include <stdint.h>
 
 #define CK_MAGIC "HEARTHCK"
-#define CK_VERSION 7u
+#define CK_VERSION 7u /* 7: the water's step limits in the clocks, the materials' dry_conductivity (params.h) */
 /// Oldest version read: a version 4 file is version 5's layout without the
 /// DEF fields version 5 appended.
 #define CK_VERSION_MIN 4u
