@@ -22,6 +22,7 @@
 #include "mpm_fixture.h"
 #include "water.h"
 #include "water_reference.h"
+#include "wet_bulb_fixture.h"
 
 #define KELVIN 273.15
 #define OVEN_T 200.0
@@ -549,32 +550,7 @@ TEST(latent_heat_stops_at_wet_bulb) {
     const double T_wb = wet_bulb_vapour(OVEN_BETA, OVEN_T, WB_BW, WB_S0, 100.0);
     hearth_scene *s = wet_bulb_block();
     if (!s) return;
-    hearth_stats st;
-    hearth_scene_stats(s, &st);
-    const double E0 = st.heat_energy, W0 = st.water_mass;
-    hearth_error err;
-    double lo = INFINITY, t_lo = 0;
-    int finite = 1;
-    while (hearth_scene_time(s) < 1.0 - 1e-12) {
-        CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
-        const double *T = pcold(&s->ps, PC_TEMPERATURE);
-        for (int i = 0; i < s->ps.n; i++) {
-            finite &= isfinite(T[i]);
-            if (T[i] < lo) lo = T[i], t_lo = hearth_scene_time(s);
-        }
-    }
-    hearth_scene_stats(s, &st);
-    const double dE = st.heat_energy - E0, dW = W0 - st.water_mass, Q = st.oven_heat_in;
-    const double miss = (dE + HEARTH_LATENT_HEAT * dW - Q) / Q;
-    printf("  %ld steps, t = %.3f s: coldest particle %.2f degC (at %.3f s) against the wet bulb %.2f degC of s = %.2f; "
-           "heat in %.6g J/m = sensible %.6g + L x water %.6g; imbalance %.3g\n",
-           st.step, st.t, lo, t_lo, T_wb, WB_S0, Q, dE, HEARTH_LATENT_HEAT * dW, miss);
-    CHECK(isfinite(T_wb) && T_wb > -273.15 && T_wb < WB_T0); /* the closed form itself */
-    CHECK(finite);
-    CHECK(lo > T_wb);
-    CHECK(lo < WB_T0 - 10); /* the sink acts */
-    CHECK(fabs(miss) < 0.01);
-    hearth_scene_destroy(s);
+    wet_bulb_run_checks(s, T_wb, WB_T0, WB_S0);
 }
 
 /* The vapour factor keeps the calibration point: at the boiling point (and

@@ -13,6 +13,7 @@
 #include "test.h"
 #include "water.h"
 #include "water_reference.h"
+#include "wet_bulb_fixture.h"
 
 #define KELVIN 273.15
 
@@ -583,31 +584,7 @@ TEST(sph_latent_heat_stops_at_wet_bulb) {
     bd.material = m, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1, bd.temperature = T0, bd.saturation = s0;
     CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
     hearth_shape_free((hearth_shape *)bd.shape);
-    hearth_stats st;
-    hearth_scene_stats(s, &st);
-    const double E0 = st.heat_energy, W0 = st.water_mass;
-    double Tlo = INFINITY, t_lo = 0;
-    int finite = 1;
-    while (hearth_scene_time(s) < 1.0 - 1e-12) {
-        CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
-        const double *T = pcold(&s->ps, PC_TEMPERATURE);
-        for (int i = 0; i < s->ps.n; i++) {
-            finite &= isfinite(T[i]);
-            if (T[i] < Tlo) Tlo = T[i], t_lo = hearth_scene_time(s);
-        }
-    }
-    hearth_scene_stats(s, &st);
-    const double dE = st.heat_energy - E0, dW = W0 - st.water_mass, Q = st.oven_heat_in;
-    const double miss = (dE + HEARTH_LATENT_HEAT * dW - Q) / Q;
-    printf("  %ld steps, t = %.3f s: coldest particle %.2f degC (at %.3f s) against the wet bulb %.2f degC of s = %.2f; "
-           "heat in %.6g J/m = sensible %.6g + L x water %.6g; imbalance %.3g\n",
-           st.step, st.t, Tlo, t_lo, T_wb, s0, Q, dE, HEARTH_LATENT_HEAT * dW, miss);
-    CHECK(isfinite(T_wb) && T_wb > -273.15 && T_wb < T0); /* the closed form itself */
-    CHECK(finite);
-    CHECK(Tlo > T_wb);
-    CHECK(Tlo < T0 - 10); /* the sink acts */
-    CHECK(fabs(miss) < 0.01);
-    hearth_scene_destroy(s);
+    wet_bulb_run_checks(s, T_wb, T0, s0);
 }
 
 TEST_MAIN(T(sph_water_sheet_robin_converges), T(sph_water_sheet_3d_converges), T(sph_water_drying_vs_fd), T(sph_water_conserves),
