@@ -66,27 +66,6 @@ typedef struct material_slot {
     double *mix_params;    /* mix_k parameter sets, schema order */
 } material_slot;
 
-/* A particle's heat conductivity kappa (W/(m K)) with water mass w (kg) left of
- * the w0 it started with (PC_SAT0 rho_0^w V_0). A dried crust is a porous solid
- * with air where the water was, and conducts less than the wet crumb it was
- * (issue #18), so with dry_conductivity > 0 kappa goes linearly in the water
- * ratio w / w0 (clamped to [0, 1]) from dry_conductivity at w = 0 to
- * conductivity at w0: the form a bread model's effective conductivity takes
- * (techMathGroup/breadBakingFoam, compEffProps.H, interpolates between 0.18 W/(m K)
- * dry and 0.37 W/(m K) wet by the moisture ratio; docs/validation.md "A dried
- * crust conducts less"). The ratio, not the saturation, so a crumb that swells
- * (J > 1) keeps its conductivity. dry_conductivity <= conductivity
- * (material_slot_init), so the explicit step limit on conductivity stays safe.
- * dry_conductivity 0 returns conductivity itself: a scene without it computes
- * the bits it did before. */
-static inline double material_conductivity(const material_slot *ms, double w, double w0) {
-    const double k = ms->core[CP_CONDUCTIVITY], kd = ms->core[CP_DRY_CONDUCTIVITY];
-    if (!(kd > 0)) return k;
-    double r = w / w0;
-    r = r > 0 ? (r < 1 ? r : 1) : 0;
-    return kd + (k - kd) * r;
-}
-
 /* The scene's materials, indexed by material id. Held by value in the scene. */
 typedef struct material_table {
     material_slot *slot;
@@ -149,6 +128,28 @@ static inline double material_moisture_ratio(const material_slot *ms, const part
     const double s0 = pcold(ps, PC_SAT0)[i];
     if (!(s0 > 2 * WATER_SATURATION_FLOOR)) return 1.0;
     return pcold(ps, PC_WATER)[i] / (s0 * ms->core[CP_WATER_DENSITY] * pcold(ps, PC_VOL0)[i]);
+}
+
+/* Particle i's heat conductivity kappa (W/(m K)). A dried crust is a porous
+ * solid with air where the water was, and conducts less than the wet crumb it
+ * was (issue #18), so with dry_conductivity > 0 kappa goes linearly in the
+ * moisture ratio X/X_0 (material_moisture_ratio, above; clamped to [0, 1]) from
+ * dry_conductivity when dry to conductivity with all its water: the form a
+ * bread model's effective conductivity takes (techMathGroup/breadBakingFoam,
+ * compEffProps.H, interpolates between 0.18 W/(m K) dry and 0.37 W/(m K) wet
+ * by the moisture ratio; docs/validation.md "A dried crust conducts less").
+ * The ratio, not the saturation, so a crumb that swells (J > 1) keeps its
+ * conductivity; a body given no water reads 1, as its moisture curves do.
+ * dry_conductivity <= conductivity (material_slot_init), so the explicit step
+ * limit on conductivity stays safe. dry_conductivity 0 returns conductivity
+ * itself without reading the particle: a scene without it computes the bits
+ * it did before. */
+static inline double material_conductivity(const material_slot *ms, const particles *ps, int i) {
+    const double k = ms->core[CP_CONDUCTIVITY], kd = ms->core[CP_DRY_CONDUCTIVITY];
+    if (!(kd > 0)) return k;
+    double r = material_moisture_ratio(ms, ps, i);
+    r = r > 0 ? (r < 1 ? r : 1) : 0;
+    return kd + (k - kd) * r;
 }
 
 /// A moisture curve's factor at particle i; an irreversible one at the lowest

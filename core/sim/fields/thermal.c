@@ -191,8 +191,6 @@ static hearth_status find_boundary(hearth_scene *s) {
     const int oven = !isnan(s->def.oven_temperature) && s->def.oven_beta > 0;
     const int *mat = pcoli(ps, PC_MAT);
     const double beta = s->def.oven_beta, *depth = s->boundary.depth;
-    const int wet = (ps->enabled & (1u << PC_WATER)) != 0;
-    const double *W = wet ? pcold(ps, PC_WATER) : NULL, *S0 = wet ? pcold(ps, PC_SAT0) : NULL, *V0 = pcold(ps, PC_VOL0);
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++)
         if (flags[i] & PF_BOUNDARY) { /* flagged by boundary.c: the air boundary */
@@ -206,9 +204,7 @@ static hearth_status find_boundary(hearth_scene *s) {
              * from the surface to the sample: the flux acts on the particle directly. */
             double b = 0.0;
             if (oven) { /* the layer above the sample conducts as the particle does, dried or not */
-                const material_slot *ms = &s->mats.slot[mat[i]];
-                const double kap = W ? material_conductivity(ms, W[i], S0[i] * ms->core[CP_WATER_DENSITY] * V0[i])
-                                     : ms->core[CP_CONDUCTIVITY];
+                const double kap = material_conductivity(&s->mats.slot[mat[i]], ps, i);
                 b = kap > 0 ? beta / (1.0 + beta * depth[i] / kap) : beta;
             }
             coef[i] = s->boundary.area[i] * b;

@@ -218,9 +218,6 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
     const double *area = s->boundary.area, *depth = s->boundary.depth, dt = tp->dt, s_amb = s->def.oven_saturation;
     const double psat_b = WATER ? water_psat_boiling(s) : 0.0; /* with latent_heat: the vapour's factor (water.h) */
     const int *mat = pcoli(ps, PC_MAT), *flags = pcoli(ps, PC_FLAGS); /* live with heat and with water */
-    /* a dried particle's conductivity (material_conductivity) reads its water, whichever fields this pass runs */
-    const int wet = HEAT && (ps->enabled & (1u << PC_WATER));
-    const double *Wk = wet ? pcold(ps, PC_WATER) : NULL, *S0k = wet ? pcold(ps, PC_SAT0) : NULL;
     int jmax_mat = -1; /* the material whose conduction cap jmax holds: it depends on the material alone */
     double jmax = 0;
     for (int i = pb.start; i < pb.end; i++) {
@@ -244,8 +241,8 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
         const double xp = HEAT ? val[0] : 0.0, *gx = grad[0], si = WATER ? val[HEAT] : 0.0, *gs = grad[HEAT];
         double qk[3] = {0, 0, 0}, bcoef = 0, source = 0;
         if (HEAT) {
-            const double k = Wk ? material_conductivity(ms, Wk[i], S0k[i] * ms->core[CP_WATER_DENSITY] * V0[i])
-                                : ms->core[CP_CONDUCTIVITY];
+            /* a dried particle conducts less (material_conductivity), whichever fields this pass runs */
+            const double k = material_conductivity(ms, ps, i);
             double kv = Vp;
             if (SRC && !apart && k > 0) { /* forward Euler: at most the volume its step covers (cond_volume_cap, above) */
                 if (mat[i] != jmax_mat) { /* once per run of one material: the same expression, so the same bits */
