@@ -203,18 +203,8 @@
  * water and thermal terms stay until D = 1). crack_opening = 0 (default):
  * no band, the stretch rule as it was, bit for bit.
  *
- * A damage with a length (the scene's damage_length; <hearth/material.h> rule 11; issue #18, helper
- * nonlocal): the stretch rule's sum is local, and a softening sum localises in one cell, so a crack's
- * width and place follow dx. Each step stores the point's stretch rate sqrt(2/3) N : D (the 9th
- * double, S_RATE, whatever the scene); damage_driver hands it to the core, which averages it over
- * the length (core/sim/solver/mpm_nonlocal.c) and hands the average back in pt->nonlocal at the next
- * step, which the sum then spends in place of the point's own rate. NaN there (no damage_length, the
- * default) is the local rule as it was, bit for bit. Measured (docs/validation.md, "A damage with a
- * length"): it does not make bread.lua's crack converge.
- *
  * ---- state ---------------------------------------------------------------------
- * Nine doubles: b^E (xx, yy, zz, xy, yz, zx), J^P, the damage D and the stretch rate the last step
- * took (for the nonlocal average). Why b^E and not F^E:
+ * Eight doubles: b^E (xx, yy, zz, xy, yz, zx), J^P and the damage D. Why b^E and not F^E:
  * the stress and the return depend only on b^E, its update f b f^T is
  * objective as it stands, it is symmetric (6 doubles), and its eigen
  * decomposition (Jacobi, or none near the rest shape) replaces the SVD of
@@ -234,7 +224,6 @@
  */
 #include <hearth/material.h>
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include <hearth/tensor.h>
@@ -590,9 +579,7 @@ static void fracture_stretch_update(const double *prm, double *st, double nd, do
     if (un > 0) ef = un < 1 ? ef / (1 - un) : HUGE_VAL;
     const double es = prm[P_FRACTURE_STRAIN_SET]; /* the set crumb's (header, "the set crumb") */
     if (es > 0 && es < ef) ef = es;
-    const char *pk = getenv("HEARTH_NL_PEAK_ONLY"); /* a measurement switch (mpm_nonlocal.c's header), not a contract */
-    const int peak_only = pk && *pk == '1';
-    const double de = (nonlocal == nonlocal && !(peak_only && st[S_DAMAGE] >= D_ON) ? nonlocal : rate) * dt; /* sqrt(2/3) N : D dt, the stretch along N */
+    const double de = (nonlocal == nonlocal ? nonlocal : rate) * dt; /* sqrt(2/3) N : D dt, the stretch along N */
     const double eb = band_strain(prm);
     if (!(eb > 0)) {
         st[S_DAMAGE] = fmin(1, fmax(0, st[S_DAMAGE] + de / ef));

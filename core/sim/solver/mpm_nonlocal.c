@@ -36,15 +36,8 @@
  * The passes are serial, in particle order, over dense node arrays of the
  * box: the same bits at any thread count. Not for MPI ranks or periodic axes
  * (scene.c refuses both with damage_length > 0).
- *
- * Measurement switches (environment, read each step; docs/validation.md, "A damage with a length", variants
- * B and C): HEARTH_NL_V0=1 weighs by the reference volume V_0 instead of J V_0 (a cracked particle swells,
- * and its weight with it); HEARTH_NL_SKIP_CRACKED=1 leaves out the points whose damage is 1 (a crack's
- * opening no longer drives its neighbours); plugins/cam_clay_dough.c reads HEARTH_NL_PEAK_ONLY=1 (the
- * average only up to the crack band's peak, the softening local). Prototype switches, not a contract.
  */
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "alloc.h"
@@ -100,8 +93,6 @@ hearth_status mpm_nonlocal(hearth_scene *s, hearth_error *err) {
     const int *pflags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     double *out = pcold(ps, PC_NONLOCAL);
     const int stride = ps->state_stride;
-    const char *ev = getenv("HEARTH_NL_V0"), *ek = getenv("HEARTH_NL_SKIP_CRACKED");
-    const int use_v0 = ev && *ev == '1', skip_cracked = ek && *ek == '1';
     /* the drivers to the nodes */
     for (int i = 0; i < ps->n; i++) {
         out[i] = NAN;
@@ -109,8 +100,7 @@ hearth_status mpm_nonlocal(hearth_scene *s, hearth_error *err) {
         if (!ms->m->damage_driver || (pflags && (pflags[i] & PF_FIXED))) continue;
         const double d = ms->m->damage_driver(state + (size_t)i * stride);
         if (!isfinite(d)) continue;
-        if (skip_cracked && ms->m->damage && ms->m->damage(ms->params, state + (size_t)i * stride) >= 1) continue;
-        const double V = use_v0 ? V0[i] : particles_J(ps, i) * V0[i];
+        const double V = particles_J(ps, i) * V0[i];
         int base[3];
         double w[3][3], dw[3][3];
         grid_point_weights(g, X + 3 * (size_t)i, base, w, dw);
