@@ -282,7 +282,7 @@ static const hearth_param params[P_COUNT] = {
 };
 
 enum { S_XX = HEARTH_SYM_XX, S_YY = HEARTH_SYM_YY, S_ZZ = HEARTH_SYM_ZZ, S_XY = HEARTH_SYM_XY, S_YZ = HEARTH_SYM_YZ,
-       S_ZX = HEARTH_SYM_ZX, S_JP, S_DAMAGE, S_RATE, S_COUNT };
+       S_ZX = HEARTH_SYM_ZX, S_JP, S_DAMAGE, S_COUNT };
 
 enum {
     E_INVERTED = 1, /* det F <= 0 or not finite */
@@ -567,19 +567,14 @@ static double band_strain(const double *prm) { /* w_c / h, 0 without a crack ban
     return wc > 0 && h > 0 ? wc / h : 0;
 }
 
-static void fracture_stretch_update(const double *prm, double *st, double nd, double dt, double nonlocal) {
+static void fracture_stretch_update(const double *prm, double *st, double nd, double dt) {
     double ef = prm[P_FRACTURE_STRAIN];
-    if (!(ef > 0) || !(nd == nd)) return;
-    /* the local driver, the stretch rate along N, for the core's average (header, "a damage with a length");
-     * with that average (a number: the scene's damage_length > 0) the point is damaged by it instead */
-    const double rate = 0.816496580927726 * nd; /* sqrt(2/3) N : D */
-    st[S_RATE] = rate;
-    if (st[S_DAMAGE] >= 1) return;
+    if (!(ef > 0) || st[S_DAMAGE] >= 1 || !(nd == nd)) return;
     const double un = prm[P_FRACTURE_UNSET]; /* the heat-set's share of the water's brittleness (header) */
     if (un > 0) ef = un < 1 ? ef / (1 - un) : HUGE_VAL;
     const double es = prm[P_FRACTURE_STRAIN_SET]; /* the set crumb's (header, "the set crumb") */
     if (es > 0 && es < ef) ef = es;
-    const double de = (nonlocal == nonlocal ? nonlocal : rate) * dt; /* sqrt(2/3) N : D dt, the stretch along N */
+    const double de = 0.816496580927726 * nd * dt; /* sqrt(2/3) N : D dt, the stretch along N */
     const double eb = band_strain(prm);
     if (!(eb > 0)) {
         st[S_DAMAGE] = fmin(1, fmax(0, st[S_DAMAGE] + de / ef));
@@ -645,7 +640,6 @@ static void init(const double *p, double *state) {
     state[S_XY] = state[S_YZ] = state[S_ZX] = 0;
     state[S_JP] = 1;
     state[S_DAMAGE] = 0;
-    state[S_RATE] = 0;
 }
 
 /* The Kirchhoff stress tau = lambda ev I + 2 mu eps of eps = ev/3 I + ratio e
@@ -686,7 +680,7 @@ static int stress_near(hearth_point *pt, double mu, double lambda, double m, con
         }
         st[S_JP] = J / exp(ev); /* J^P = J / J^E */
         if (prm[P_FRACTURE_STRAIN] > 0) { /* its trig only when asked */
-            if (prm[P_FRACTURE_STRETCH] > 0.5) fracture_stretch_update(prm, st, dir_stretch_full(e, pt->grad_v), pt->dt, pt->nonlocal);
+            if (prm[P_FRACTURE_STRETCH] > 0.5) fracture_stretch_update(prm, st, dir_stretch_full(e, pt->grad_v), pt->dt);
             else fracture_update(prm[P_FRACTURE_STRAIN], st, ratio * dev_max_eigen(e));
         }
     }
@@ -754,7 +748,7 @@ static int stress_law(hearth_point *pt, double J, double mu, double lambda, doub
         }
         hearth_full_to_sym(B, st);
         st[S_JP] = J / exp(ev); /* J^P = J / J^E (a crack opens as plastic volume: it reads as pores) */
-        if (prm[P_FRACTURE_STRETCH] > 0.5) fracture_stretch_update(prm, st, dir_stretch_eigen(e, Q, pt->grad_v), pt->dt, pt->nonlocal);
+        if (prm[P_FRACTURE_STRETCH] > 0.5) fracture_stretch_update(prm, st, dir_stretch_eigen(e, Q, pt->grad_v), pt->dt);
         else fracture_update(prm[P_FRACTURE_STRAIN], st, ratio * fmax(e[0], fmax(e[1], e[2])));
     }
     const double tv = lambda * ev, r = band_strength(prm, st);
@@ -808,10 +802,6 @@ static double damage(const double *p, const double *state) {
     return state[S_DAMAGE];
 }
 
-/* The local damage driver (<hearth/material.h> rule 11): the stretch rate along N the last step took
- * (fracture_stretch_update), which the core averages over the scene's damage_length. */
-static double damage_driver(const double *state) { return state[S_RATE]; }
-
 /* the batched stress and scalars (rules 7 and 9): one translation unit, so an outside author still builds the
  * plugin with one cc command (tests/plugin_sdk_test.sh) */
 #include "cam_clay_dough_block.h"
@@ -836,8 +826,7 @@ static const hearth_material material = {
     .params = params,
     .nparams = P_COUNT,
     .state_size = S_COUNT,
-    .needs = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_THERMAL_EXPANSION | HEARTH_NEEDS_MEMO |
-             HEARTH_NEEDS_NONLOCAL,
+    .needs = HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_THERMAL_EXPANSION | HEARTH_NEEDS_MEMO,
     .init = init,
     .stress = stress,
     .wave_speed = wave_speed,
@@ -848,7 +837,6 @@ static const hearth_material material = {
     .bulk_modulus = bulk_modulus,
     .scalars_block = scalars_block,
     .memo_size = 2, /* log b_zz's argument and value (log_memo, cam_clay_dough_block.h) */
-    .damage_driver = damage_driver,
 };
 
 HEARTH_PLUGIN_EXPORT const hearth_material *hearth_material_v1(void); /* for -Wmissing-prototypes */

@@ -53,7 +53,6 @@ static int block_point(const hearth_block *b, int j, double J, double mu, double
     pt.porosity = b->porosity ? b->porosity[j] : NAN;
     pt.saturation = NAN;
     pt.dim = b->dim;
-    pt.nonlocal = b->nonlocal ? b->nonlocal[j] : NAN;
     double t[9];
     const int code = stress_law(&pt, J, mu, lambda, t);
     for (int c = 0; c < 9; c++) tau[c][j] = t[c];

@@ -61,8 +61,6 @@ static inline int step_from_rest(const hearth_material *m, const double *p, cons
     pt.temperature = T;
     pt.porosity = n;
     pt.saturation = NAN;
-    pt.nonlocal = NAN; /* no average: the law's own driver (<hearth/material.h> rule 11) */
-    pt.dim = 3;
     pt.p = p;
     pt.state = state;
     for (int i = 0; i < 9; i++) tau[i] = NAN;

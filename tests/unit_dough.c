@@ -21,7 +21,7 @@
 
 enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH,
        P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, P_FRACTURE_UNSET, NP };
-enum { NSTATE = 9 }; /* b^E (6), J^P, D and the stretch rate the nonlocal average reads */
+enum { NSTATE = 8 };
 
 static const hearth_material *dough(void) { return load_material("cam_clay_dough"); }
 
@@ -338,7 +338,7 @@ static double frame_error(const hearth_material *m, int plane) {
             t3_mul(Q, L, QL);
             t3_mul_abt(QL, Q, Lr);
             t3_mul(Q, F, Fr);
-            hearth_point a = {.dt = dt, .temperature = 50, .porosity = 0.2, .saturation = NAN, .nonlocal = NAN, .p = p, .state = st};
+            hearth_point a = {.dt = dt, .temperature = 50, .porosity = 0.2, .saturation = NAN, .p = p, .state = st};
             hearth_point b = a;
             b.state = str;
             memcpy(a.grad_v, L, sizeof L), memcpy(a.F, F, sizeof F);
@@ -405,7 +405,7 @@ TEST(dough_extremes) {
                             int rc = step_from_rest(m, p, f, 1e-4, nps[c], Ts[t], st, tau);
                             for (int s = 0; s < 2 && rc == 0; s++) { /* two more steps at rest: evaluate the stored state */
                                 hearth_point pt = {.dt = 1e-4, .temperature = Ts[t], .porosity = nps[c],
-                                                   .saturation = NAN, .nonlocal = NAN, .p = p, .state = st};
+                                                   .saturation = NAN, .p = p, .state = st};
                                 memcpy(pt.F, f, sizeof f);
                                 memset(pt.grad_v, 0, sizeof pt.grad_v);
                                 rc = m->stress(&pt, tau);
@@ -468,7 +468,7 @@ TEST(dough_closed_pores) {
         t3_mul(f, F, Fn);
         t3_copy(Fn, F);
         double np = 1 - (1 - n0) / m->plastic_J(p, st);
-        hearth_point pt = {.dt = dt, .temperature = 20, .porosity = np < 1e-6 ? 1e-6 : np, .saturation = NAN, .nonlocal = NAN, .p = p,
+        hearth_point pt = {.dt = dt, .temperature = 20, .porosity = np < 1e-6 ? 1e-6 : np, .saturation = NAN, .p = p,
                            .state = st};
         memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
         CHECK(m->stress(&pt, tau) == 0);
@@ -502,7 +502,7 @@ TEST(dough_pore_cap) {
             t3_mul(f, F, Fn);
             t3_copy(Fn, F);
             double np = 1 - (1 - n0) / m->plastic_J(p, st);
-            hearth_point pt = {.dt = dt, .temperature = 20, .porosity = np > 0.999999 ? 0.999999 : np, .saturation = NAN, .nonlocal = NAN,
+            hearth_point pt = {.dt = dt, .temperature = 20, .porosity = np > 0.999999 ? 0.999999 : np, .saturation = NAN,
                                .p = p, .state = st};
             memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
             CHECK(m->stress(&pt, tau) == 0);
@@ -544,7 +544,7 @@ TEST(dough_fracture_damage) {
             for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
             t3_mul(f, F, Fn);
             t3_copy(Fn, F);
-            hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .nonlocal = NAN, .p = p, .state = st};
+            hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
             memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
             CHECK(m->stress(&pt, tau) == 0);
             const double e0 = k * log1p(a * dt), e1 = k * log1p(-a * dt), e1max = e0 - (e0 + e1) / 3;
@@ -592,7 +592,7 @@ TEST(dough_fracture_stretch_rule) {
             for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
             t3_mul(f, F, Fn);
             t3_copy(Fn, F);
-            hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .nonlocal = NAN, .p = p, .state = st};
+            hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
             memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
             CHECK(m->stress(&pt, tau) == 0);
             h0 += log1p(L[0] * dt), h1 += log1p(L[4] * dt);
@@ -633,7 +633,7 @@ static double shear_damage_error(const hearth_material *m, const double *p, doub
         for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
         t3_mul(f, F, Fn);
         t3_copy(Fn, F);
-        hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .nonlocal = NAN, .p = p, .state = st};
+        hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
         memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
         CHECK(m->stress(&pt, tau) == 0);
         h0 += log1p(a * dt), h1 += log1p(-a * dt);
@@ -737,7 +737,7 @@ TEST(dough_crack_band_softening) {
                 for (int i = 0; i < 9; i++) f[i] = (i % 4 == 0) + dt * L[i];
                 t3_mul(f, F, Fn);
                 t3_copy(Fn, F);
-                hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .nonlocal = NAN, .p = p, .state = st};
+                hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
                 memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
                 CHECK(m->stress(&pt, tau) == 0);
                 hearth_point pq = pt;
@@ -840,7 +840,7 @@ TEST(dough_block_matches_stress_2d) {
             double q[NP];
             memcpy(q, p, sizeof q);
             if (blk == 1) q[P_E] = Ec[j], q[P_TAU_Y] = tyc[j];
-            hearth_point pt = {.dt = dt, .temperature = T[j], .porosity = n[j], .saturation = NAN, .nonlocal = NAN, .p = q,
+            hearth_point pt = {.dt = dt, .temperature = T[j], .porosity = n[j], .saturation = NAN, .p = q,
                                .state = st1 + j * NSTATE, .dim = 2};
             for (int c = 0; c < 9; c++) pt.grad_v[c] = gv[c][j], pt.F[c] = F[c][j];
             for (int c = 0; c < 9; c++) tau1[j][c] = 0;

@@ -29,7 +29,7 @@
 /* the plugin's parameters in its schema's order (as tests/unit_dough.c) */
 enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH,
        P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, P_FRACTURE_UNSET, NP };
-enum { NSTATE = 9 }; /* b^E (6), J^P, D and the stretch rate the nonlocal average reads */
+enum { NSTATE = 8 };
 
 /* The damage at T after n uniform steps. ring 0: a stretch that never turns back, pure shear at the rate
  * a (1 + 0.5 sin(2 pi t / T)); ring 1: the same mean stretch with a ringing on it, a (0.3 + 2 sin(10 pi t / T)),
@@ -51,7 +51,7 @@ static double damage_at_T(const hearth_material *m, int n, int ring) {
         t3_mul(f, F, Fn);
         t3_copy(Fn, F);
         p[P_FRACTURE_STRAIN] = 0.5 - 0.4 * (t + dt) / T; /* drying: the skin's extensibility falls */
-        hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .nonlocal = NAN, .p = p, .state = st};
+        hearth_point pt = {.dt = dt, .temperature = 20, .porosity = 0.1, .saturation = NAN, .p = p, .state = st};
         memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof F);
         CHECK(m->stress(&pt, tau) == 0);
     }

@@ -44,7 +44,7 @@ TEST(door_plugin_only_each_plugin) {
         defaults(m, p);
         deformation(F, L, dt);
         double *s1 = fresh_state(m, p), *s2 = fresh_state(m, p);
-        hearth_point a = {.dt = dt, .temperature = 35, .porosity = 0.1, .saturation = 0.4, .nonlocal = NAN, .p = p, .state = s1};
+        hearth_point a = {.dt = dt, .temperature = 35, .porosity = 0.1, .saturation = 0.4, .p = p, .state = s1};
         memcpy(a.grad_v, L, sizeof L), memcpy(a.F, F, sizeof a.F);
         hearth_point b = a;
         b.state = s2;
@@ -84,7 +84,7 @@ TEST(door_core_terms_each_plugin) {
         const double JP0 = m->plastic_J ? m->plastic_J(p, s1) : 1.0;
         double np0 = 1 - (1 - core[CP_POROSITY0]) / JP0;
         np0 = fmin(fmax(np0, 1e-6), 0.999999);
-        hearth_point a = {.dt = dt, .temperature = T, .porosity = np0, .saturation = sat, .nonlocal = NAN, .p = p, .state = s1};
+        hearth_point a = {.dt = dt, .temperature = T, .porosity = np0, .saturation = sat, .p = p, .state = s1};
         memcpy(a.grad_v, L, sizeof L), memcpy(a.F, F, sizeof a.F);
         hearth_point b = a;
         b.state = s2;
@@ -129,7 +129,7 @@ TEST(door_failure_codes) {
     core[CP_EXPANSION] = 1e3, core[CP_REFERENCE_T] = 20;
     defaults(m, p);
     deformation(F, L, 1e-3);
-    hearth_point pt = {.dt = 1e-3, .p = p, .nonlocal = NAN};
+    hearth_point pt = {.dt = 1e-3, .p = p};
     memcpy(pt.grad_v, L, sizeof L), memcpy(pt.F, F, sizeof pt.F);
     for (int i = 0; i < 9; i++) tau[i] = 42;
     material_env env = {.flags = MATERIAL_ZERO_FAILED | MATERIAL_EXPANSION, .J = 1, .temperature = 30, .saturation = NAN, .porosity = NAN};

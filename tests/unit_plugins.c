@@ -361,7 +361,7 @@ static hearth_material good(void) {
     g_params[0] = (hearth_param){"density", "kg/m^3", NULL, 1000, 1, 1e4};
     g_params[1] = (hearth_param){"E", "Pa", "stiffness", 1e4, 1, 1e6};
     return (hearth_material){HEARTH_MATERIAL_ABI, sizeof(hearth_material), sizeof(double), "good", NULL,
-                             g_params, 2, 0, 0, d_init, d_stress, d_wave, NULL, d_describe, d_plastic_J, NULL, NULL, NULL, NULL, NULL, 0, NULL};
+                             g_params, 2, 0, 0, d_init, d_stress, d_wave, NULL, d_describe, d_plastic_J, NULL, NULL, NULL, NULL, NULL, 0};
 }
 
 static void refused(const hearth_material *m, const char *words) {

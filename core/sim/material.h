@@ -236,7 +236,6 @@ typedef struct material_env {
      * over its columns without loading a value it may not use. NULL: the scene has no such field. */
     const double *gas;         /* n^g (mol/m^3): gas pressure, eq. 13: tau_g = -n^g R theta / n^p I */
     const double *saturation0; /* s_0: water pressure, eq. 14: tau_w = -J c (s - s_0) I, when water_stiffness c > 0 */
-    const double *nonlocal;    /* the damage driver's average (PC_NONLOCAL, <hearth/material.h> rule 11); NULL: NaN */
     int index;
     /* The point's hearth_point.dim (<hearth/material.h> rule 8): the scene's (MPM, SPH, the probes, the
      * guard); 0 (a caller without a scene: the check, the rheometer) passes 3. */
@@ -264,7 +263,6 @@ MATERIAL_INLINE int material_point_stress(const hearth_material *m, const double
     pt->temperature = env->temperature;
     pt->saturation = env->saturation;
     pt->dim = env->dim == 2 ? 2 : 3;
-    pt->nonlocal = env->nonlocal ? env->nonlocal[env->index] : NAN;
     if (fl & MATERIAL_POROSITY_PLASTIC) {
         double JP = 1.0;
         if (m->plastic_J) {
@@ -473,7 +471,6 @@ typedef struct material_run {
     const double *temperature;   /* each point's (n), or NULL: NaN */
     const double *saturation;    /* each point's (n), or NULL: NaN */
     const double *gas, *saturation0; /* particle columns, as in material_env */
-    const double *nonlocal;          /* a particle column, as in material_env (NULL: NaN) */
 } material_run;
 
 /* What the door gives back for each point j < n: its stress in columns, tau[c][j], with the core's terms

@@ -57,7 +57,6 @@ static material_env run_env(const material_run *r, int j, unsigned flags) {
         .porosity = NAN,
         .gas = r->gas,
         .saturation0 = r->saturation0,
-        .nonlocal = r->nonlocal,
         .index = r->i0 + j,
         .dim = r->dim,
     };
@@ -618,8 +617,7 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     const unsigned needs = m->needs;
     double nan_col[HEARTH_BLOCK_MAX], P[HEARTH_BLOCK_MAX], vcol[RUN_MAX_VARYING][HEARTH_BLOCK_MAX];
     const int need_nan = (!r->temperature && (needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION))) ||
-                         (!r->saturation && (needs & HEARTH_NEEDS_SATURATION)) || (!porous && (needs & HEARTH_NEEDS_POROSITY)) ||
-                         (!r->nonlocal && (needs & HEARTH_NEEDS_NONLOCAL));
+                         (!r->saturation && (needs & HEARTH_NEEDS_SATURATION)) || (!porous && (needs & HEARTH_NEEDS_POROSITY));
     if (need_nan)
         for (int j = 0; j < n; j++) nan_col[j] = NAN;
     /* point j's whole parameter set: the uniform ones once, the curves' patched in per point */
@@ -727,7 +725,6 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     b.temperature = needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? (r->temperature ? r->temperature : nan_col) : NULL;
     b.porosity = needs & HEARTH_NEEDS_POROSITY ? (porous ? P : nan_col) : NULL;
     b.saturation = needs & HEARTH_NEEDS_SATURATION ? (r->saturation ? r->saturation : nan_col) : NULL;
-    b.nonlocal = needs & HEARTH_NEEDS_NONLOCAL ? (r->nonlocal ? r->nonlocal + i0 : nan_col) : NULL;
     for (int c = 0; c < 9; c++) {
         b.grad_v[c] = Lb[c];
         b.F[c] = Fb[c];

@@ -536,7 +536,6 @@ typedef struct batch_pts {
     double dt;
     double *F[9], *L[9], *T, *P, *S, *pv, *stA, *stB, *tauA, *tauB[9];
     double *st0, *memo; /* rule 10: the block's starting states, and its memo (memo_size + 1 doubles a point) */
-    double NL[HEARTH_BLOCK_MAX]; /* rule 11: each point's nonlocal driver, NaN (none) at every third point */
     int *codeA, *codeB;
     int scalars_bad, scalars_points; /* rule 9: a point whose scalars differ; points compared */
     char scalars_detail[CHECK_DETAIL];
@@ -666,8 +665,6 @@ static int batch_block(check_rig *r, batch_pts *b, int blk, uint64_t *seed, char
         b->T[j] = needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? 20 + 180 * check_uniform(seed) : NAN;
         b->P[j] = needs & HEARTH_NEEDS_POROSITY ? 0.5 * check_uniform(seed) : NAN;
         b->S[j] = needs & HEARTH_NEEDS_SATURATION ? check_uniform(seed) : NAN;
-        /* rule 11: an average of the drivers as a rate about the size of the battery's steps' (1/s), or none */
-        b->NL[j] = needs & HEARTH_NEEDS_NONLOCAL && j % 3 ? 20 * (check_uniform(seed) - 0.3) : NAN;
         double *st = ss ? b->stA + (size_t)j * b->stride : NULL;
         for (int k = 0; k < b->stride; k++) b->stA[(size_t)j * b->stride + k] = NAN;
         if (st) {
@@ -682,7 +679,7 @@ static int batch_block(check_rig *r, batch_pts *b, int blk, uint64_t *seed, char
             t3_mul(A, Fw, Fn);
             t3_copy(Fn, Fw);
             hearth_point pt = {.dt = 1e-3, .p = q, .state = st, .temperature = b->T[j], .porosity = b->P[j],
-                               .saturation = b->S[j], .dim = b->dim, .nonlocal = b->NL[j]};
+                               .saturation = b->S[j], .dim = b->dim};
             memcpy(pt.F, Fw, sizeof pt.F);
             memcpy(pt.grad_v, L, sizeof pt.grad_v);
             plugin_call_enter(m, "stress");
@@ -698,7 +695,7 @@ static int batch_block(check_rig *r, batch_pts *b, int blk, uint64_t *seed, char
         double q[PLUGIN_CHECK_MAX_PARAMS];
         for (int k = 0; k < np; k++) q[k] = b->pv[(size_t)k * HEARTH_BLOCK_MAX + j];
         hearth_point pt = {.dt = b->dt, .p = q, .state = ss ? b->stA + (size_t)j * b->stride : NULL, .temperature = b->T[j],
-                           .porosity = b->P[j], .saturation = b->S[j], .dim = b->dim, .nonlocal = b->NL[j]};
+                           .porosity = b->P[j], .saturation = b->S[j], .dim = b->dim};
         for (int c = 0; c < 9; c++) pt.F[c] = b->F[c][j], pt.grad_v[c] = b->L[c][j];
         for (int c = 0; c < 9; c++) b->tauA[9 * j + c] = NAN;
         plugin_call_enter(m, "stress");
@@ -711,8 +708,7 @@ static int batch_block(check_rig *r, batch_pts *b, int blk, uint64_t *seed, char
                          .state_stride = b->stride,
                          .temperature = needs & (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_THERMAL_EXPANSION) ? b->T : NULL,
                          .porosity = needs & HEARTH_NEEDS_POROSITY ? b->P : NULL,
-                         .saturation = needs & HEARTH_NEEDS_SATURATION ? b->S : NULL,
-                         .nonlocal = needs & HEARTH_NEEDS_NONLOCAL ? b->NL : NULL};
+                         .saturation = needs & HEARTH_NEEDS_SATURATION ? b->S : NULL};
     for (int c = 0; c < 9; c++) {
         blk_.F[c] = b->F[c];
         blk_.grad_v[c] = b->L[c];

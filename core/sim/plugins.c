@@ -247,7 +247,7 @@ void plugin_desc_free(plugin_desc *d) {
 #define PLUGIN_MAX_STATE 4096
 #define PLUGIN_KNOWN_NEEDS                                                                         \
     (HEARTH_NEEDS_TEMPERATURE | HEARTH_NEEDS_POROSITY | HEARTH_NEEDS_SATURATION |                  \
-     HEARTH_NEEDS_THERMAL_EXPANSION | HEARTH_NEEDS_DIM | HEARTH_NEEDS_MEMO | HEARTH_NEEDS_NONLOCAL)
+     HEARTH_NEEDS_THERMAL_EXPANSION | HEARTH_NEEDS_DIM | HEARTH_NEEDS_MEMO)
 
 static hearth_status plugin_check_params(const char *shown, const hearth_material *m, hearth_error *err) {
     const hearth_param *ps = m->params;
@@ -467,13 +467,6 @@ hearth_status plugin_describe(const char *shown, const hearth_material *m, plugi
         return err_set(err, HEARTH_ERR_PLUGIN,
                        "%s: material '%s' sets HEARTH_NEEDS_MEMO with memo_size 0; give memo_size 1..%d or drop the bit",
                        shown, c.name, HEARTH_MEMO_MAX);
-    /* rule 11: the driver and the field that brings its average back go together */
-    if (!c.damage_driver != !(c.needs & HEARTH_NEEDS_NONLOCAL))
-        return err_set(err, HEARTH_ERR_PLUGIN,
-                       "%s: material '%s' %s; the nonlocal damage's driver is read under HEARTH_NEEDS_NONLOCAL "
-                       "(<hearth/material.h> rule 11): give both or neither",
-                       shown, c.name, c.damage_driver ? "has damage_driver without HEARTH_NEEDS_NONLOCAL"
-                                                      : "sets HEARTH_NEEDS_NONLOCAL without damage_driver");
     hearth_status st = plugin_check_params(shown, &c, err);
     if (st != HEARTH_OK) return st;
     if ((st = plugin_check_wave_corners(shown, m, &c, err)) != HEARTH_OK) return st;

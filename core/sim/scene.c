@@ -129,18 +129,6 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
             return err_set(err, HEARTH_ERR_PARAM, "scene: two_field does not carry periodic axes; set two_field = false "
                                                   "or periodic_x = periodic_y = false");
     }
-    if (d->damage_length > 0) { /* mpm_nonlocal.c: dense node fields of one process's box, no wrap */
-        if (d->solver != HEARTH_SOLVER_MPM)
-            return err_set(err, HEARTH_ERR_PARAM, "scene: damage_length = %g m needs solver = \"mpm\"; set damage_length = 0",
-                           d->damage_length);
-        if (ranks_size() > 1)
-            return err_set(err, HEARTH_ERR_PARAM,
-                           "scene: damage_length = %g m averages in one process, and this run has %d MPI ranks; run it "
-                           "without mpirun (or set damage_length = 0)", d->damage_length, ranks_size());
-        if (d->periodic[0] || d->periodic[1] || d->periodic[2])
-            return err_set(err, HEARTH_ERR_PARAM, "scene: damage_length does not carry periodic axes; set damage_length = 0 "
-                                                  "or the periodic_* settings false");
-    }
     if (d->damping > 0 && d->solver != HEARTH_SOLVER_MPM) /* it acts in mpm.c's grid update */
         return err_set(err, HEARTH_ERR_PARAM, "scene: damping = %g 1/s; only the MPM solver damps (solver = \"mpm\")",
                        d->damping);

@@ -117,11 +117,6 @@ static const hearth_setting settings[] = {
          two_field),
     REAL("two_field_friction", "1", "with two_field: Coulomb friction coefficient between the two sides of a crack where "
          "they press together (0 = they slide freely)", 0, 0, 10, two_field_friction, 0),
-    REAL("damage_length", "m",
-         "MPM: a material whose plugin gives a damage driver (cam_clay_dough's stretch rule) is damaged by its average "
-         "over this length, a Gaussian of standard deviation damage_length / 2 (nonlocal damage, Pijaudier-Cabot & "
-         "Bazant 1987), so a crack's width does not follow dx; one rank, no periodic axes; 0 = local (each point its "
-         "own)", 0, 0, 10, damage_length, 1),
     INT("field_steps", "MPM heat, water and CO2 update on the grid every k-th step, over the k steps' time (the "
         "particles carry them, and make and vent their CO2, every step): 0 = k automatic (the default), each update "
         "within a tenth of the fields' explicit limit; 1 = every step (single rate, the old scheme to the bit); k = every "

@@ -566,14 +566,12 @@ end
 
 -- A crack band (Bazant & Oh 1983) is as wide as the point that cracks: a material given crack_band = 0
 -- (lua/hearth/dough.lua's presets) registers with the scene's cell size dx, so its softening strain w_c / h and
--- the energy a crack takes (G_f per area) do not change with the resolution. With the scene's damage_length the
--- damage spreads over that length, not over a cell (solver/mpm_nonlocal.c), and the band is that wide.
+-- the energy a crack takes (G_f per area) do not change with the resolution.
 local function register(s, m, params)
   if params.crack_band == 0 then
     local p = {}
     for k, v in pairs(params) do p[k] = v end
-    local set = s:settings()
-    p.crack_band = set.damage_length > 0 and set.damage_length or set.dx
+    p.crack_band = s:settings().dx
     params = p
   end
   local id = s:_material(m.plugin, params)

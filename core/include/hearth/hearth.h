@@ -247,7 +247,6 @@ typedef struct hearth_scene_def {
     double two_field_friction; ///< with two_field: Coulomb coefficient between the two fields where they press together (0 = frictionless). Default 0
     double gas_vent;         ///< m/s: CO2 leaves an air-boundary particle whose pores are open (porosity >= vent_porosity) at dn^g/dt = -gas_vent S_p / V_p n^g (MPM; beyond Ding et al.; fields/gas.c). Default 0 = none
     double vent_porosity;    ///< with gas_vent: the gas porosity at which a surface particle's pores open to the air. Default 0.7
-    double damage_length;    ///< MPM: the materials' damage drivers are averaged over this length (m; a Gaussian of sigma = damage_length / 2; solver/mpm_nonlocal.c, <hearth/material.h> rule 11). Default 0 = local
     int field_steps;         ///< MPM heat, water and CO2 update on the grid every k-th step over the k steps' time (fields/field_clock.c): 0 = k automatic from the fields' explicit limit (default), 1 = every step (single rate, the old scheme to the bit), k = every k-th
 } hearth_scene_def;
 

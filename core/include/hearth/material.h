@@ -134,16 +134,6 @@
  *    a core that does not know the field refuse the plugin; memo_size > 0 needs the bit and the bit
  *    needs memo_size > 0 and stress_block. HEARTH_PLUGIN_NO_BATCH=1 drops the memo with stress_block.
  *
- * 11. A damage with a length (optional: damage_driver, appended after memo_size, with
- *    HEARTH_NEEDS_NONLOCAL; issue #18). A local softening damage localises into one cell, so a crack's width
- *    and place follow dx; a nonlocal damage drives it by an average over a fixed length (Pijaudier-Cabot &
- *    Bazant 1987, J. Eng. Mech. 113:1512). The law keeps its local driver (a rate, say) in its state;
- *    damage_driver reads it; in an MPM scene with damage_length > 0 the core averages the drivers of
- *    the points of every material that has the callback, weighted by volume over a Gaussian of that length
- *    (core/sim/solver/mpm_nonlocal.c), at the start of each step (a lag of one step), and hands the average
- *    to the next stress in hearth_point.nonlocal (hearth_block.nonlocal). NaN there means no average: the
- *    law must then use its local driver, as it did before, bit for bit. The bit and the callback go together.
- *
  * All tensors are 3x3, row-major (a[3*row+col]), in SI units. 2D scenes are
  * plane strain: the solver passes tensors whose z row and column describe no
  * deformation, and ignores the zz stress for motion (it still counts for
@@ -179,10 +169,7 @@ enum {
     HEARTH_NEEDS_DIM = 1u << 4,
     /// hearth_block.memo and memo_stride are read (contract rule 10; memo_size > 0). A core that does not
     /// know the bit refuses the plugin, so stress_block never reads past an older core's block.
-    HEARTH_NEEDS_MEMO = 1u << 5,
-    /// hearth_point.nonlocal and hearth_block.nonlocal are read (contract rule 11; with damage_driver). A core
-    /// that does not know the bit refuses the plugin, so the law never reads past an older core's point.
-    HEARTH_NEEDS_NONLOCAL = 1u << 6
+    HEARTH_NEEDS_MEMO = 1u << 5
 };
 
 /// The most doubles of memo a point may have (hearth_material.memo_size, contract rule 10).
@@ -233,10 +220,6 @@ typedef struct hearth_point {
     double *state;    ///< plugin-owned per-point state, state_size doubles (may be NULL when state_size is 0)
     /// 2 or 3: the dimension of the scene the point lives in (contract rule 8; appended with HEARTH_NEEDS_DIM).
     int dim;
-    /// Appended with HEARTH_NEEDS_NONLOCAL (contract rule 11): the average over the scene's damage_length of the
-    /// damage_driver values the points' states held at the start of the step; NaN when the scene averages none
-    /// (damage_length 0, a solver or caller that does not average): the law then uses its own local driver.
-    double nonlocal;
 } hearth_point;
 
 /// A block of points of one material as columns (structure of arrays), for the optional stress_block
@@ -264,9 +247,6 @@ typedef struct hearth_block {
     /// memo + j * memo_stride, or NULL (no memo this call). Read only by a plugin that sets the bit.
     double *memo;
     int memo_stride; ///< doubles from one point's memo to the next, >= memo_size
-    /// Appended with HEARTH_NEEDS_NONLOCAL (contract rule 11): a column of n values, hearth_point.nonlocal's
-    /// (NaN where the scene averages none), or NULL for a plugin that does not set the bit.
-    const double *nonlocal;
 } hearth_block;
 
 /// Parameter k of point j of block b.
@@ -343,12 +323,6 @@ typedef struct hearth_material {
     /// Optional (0 when struct_size does not cover it). Doubles of per-point memo stress_block keeps
     /// (contract rule 10), 0..HEARTH_MEMO_MAX; > 0 only with stress_block and HEARTH_NEEDS_MEMO.
     int memo_size;
-    /// Optional (may be NULL; read only when struct_size covers it; with HEARTH_NEEDS_NONLOCAL). The point's
-    /// local damage driver as its last stress call stored it in the state (contract rule 11): the quantity
-    /// whose average over a physical length the core hands back in hearth_point.nonlocal. Reads the state
-    /// only. Called from one thread, once per particle at the start of an MPM step of a scene with
-    /// damage_length > 0.
-    double (*damage_driver)(const double *state);
 } hearth_material;
 
 /// The entry point a plugin defines.

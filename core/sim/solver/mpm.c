@@ -96,7 +96,6 @@ static void mpm_free(hearth_scene *s) {
     mem_free(m->hist, sizeof(int) * m->histcap);
     mem_free(m->pbof, sizeof(int) * (size_t)m->nblocks);
     mpm_two_field_free(m);
-    mem_free(m->nl_node, sizeof(double) * m->nl_cap);
     mpm_ranks_free(m);
     mem_free(m, sizeof *m);
     s->mpm = NULL;
@@ -741,7 +740,6 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     hearth_status st;
     int sorted = 0;
     PHASE_STEP();
-    if (s->def.damage_length > 0 && (st = mpm_nonlocal(s, err))) return st; /* before the sort, which carries it */
     if (usual && !mixing_active(s) && s->ps.n >= SCENE_PARALLEL_MIN && mpm_p2g_store_held(s)) { /* the gather's step */
         mpm_sort_team t;
         if ((st = mpm_sort_begin(s, &t, err))) return st;

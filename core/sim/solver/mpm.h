@@ -85,21 +85,12 @@ typedef struct mpm_state {
     int failed_alone;       /* a step call failed here with an error the other ranks may not share: no more exchanges (mpm_ranks_end) */
     struct mpm_slabs *slabs; /* the slab mode's state (mpm_ranks.c) */
     struct mpm_slab_fields *sfields; /* the slabs' halo layers for heat and water (mpm_ranks_fields.c) */
-    double *nl_node;        /* damage_length: the average's node fields, nl_cap doubles (mpm_nonlocal.c) */
-    size_t nl_cap;
     double *dgrad;          /* two_field: each particle's damage gradient (x, y; 1/m) this step (mpm_two_field.c) */
     int dgrad_cap;
     /* the waits of the step's teams (team_wait.h; HEARTH_TEAM_SPIN at init): the sort's, the one-region
      * step's and 3D's claimed step's barriers spin a while before they sleep */
     team_wait team;
 } mpm_state;
-
-/* ---- a damage with a length (mpm_nonlocal.c; scene setting damage_length) ---- */
-
-/// Before the sort: PC_NONLOCAL, each damage-driven particle's average of its
-/// neighbours' damage_driver over damage_length (<hearth/material.h> rule 11).
-/// Nothing when damage_length is 0. Fails only for memory.
-hearth_status mpm_nonlocal(hearth_scene *s, hearth_error *err);
 
 /* ---- two velocity fields at cracks (mpm_two_field.c; scene setting two_field, 2D) ---- */
 

@@ -39,7 +39,6 @@ void mpm_p2g_stress(hearth_scene *s, int D, int i0, int n, double dt, unsigned e
     double *Fc = pcold(ps, PC_F);
     const int *mat = pcoli(ps, PC_MAT);
     const int *pflags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
-    const double *NL = ps->enabled & (1u << PC_NONLOCAL) ? pcold(ps, PC_NONLOCAL) : NULL; /* mpm_nonlocal.c's */
     enum { P_LIVE, P_FIXED, P_BADF };
     unsigned char kind[HEARTH_BLOCK_MAX];
     int code[HEARTH_BLOCK_MAX];
@@ -94,7 +93,7 @@ void mpm_p2g_stress(hearth_scene *s, int D, int i0, int n, double dt, unsigned e
         while (e < n && kind[e] == P_LIVE && mat[i0 + e] == mat[i0 + j]) e++;
         material_run run = {.mat = mat[i0 + j], .i0 = i0 + j, .n = e - j, .dim = D, .plane = D == 2, .dt = dt, .flags = env_flags, .J = Js + j,
                             .temperature = Tcol ? Tcol + i0 + j : NULL, .saturation = Wcol ? sat + j : NULL,
-                            .gas = Gcol, .saturation0 = S0col, .nonlocal = NL};
+                            .gas = Gcol, .saturation0 = S0col};
         double *tc[9];
         for (int c = 0; c < 9; c++) {
             run.F[c] = Fs[c] + j;

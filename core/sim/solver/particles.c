@@ -40,7 +40,6 @@ static const struct {
     [PC_GAS_MEMO] = {"gas_memo", 2, 0},
     [PC_CURVE_MEMO] = {"curve_memo", CURVE_MEMO_WIDTH, 0},
     [PC_PLUGIN_MEMO] = {"plugin_memo", 0, 0}, /* memo_stride doubles */
-    [PC_NONLOCAL] = {"nonlocal", 1, 0},
 };
 
 const char *particles_col_name(int c) { return col_info[c].name; }

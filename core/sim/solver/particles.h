@@ -55,16 +55,12 @@ typedef enum pcol {
      * arguments it holds; allocated only in an MPM scene with a material whose plugin asks for one (memo_size),
      * never hashed nor saved, as the memos above */
     PC_PLUGIN_MEMO,
-    /* the nonlocal damage driver's average over the scene's damage_length (<hearth/material.h> rule 11), 1:
-     * recomputed from the plugins' states and the positions at the start of every MPM step that reads it
-     * (solver/mpm_nonlocal.c), so, as the memos, never hashed nor saved */
-    PC_NONLOCAL,
     PC_COUNT
 } pcol;
 
 /// Whether column c is a memo (a cache, not state: hearth_scene_hash and checkpoints leave it out).
 static inline int particles_col_is_memo(int c) {
-    return c == PC_THERMAL_MEMO || c == PC_GAS_MEMO || c == PC_CURVE_MEMO || c == PC_PLUGIN_MEMO || c == PC_NONLOCAL;
+    return c == PC_THERMAL_MEMO || c == PC_GAS_MEMO || c == PC_CURVE_MEMO || c == PC_PLUGIN_MEMO;
 }
 /* PC_CURVE_MEMO's doubles a particle: the key (stamp, T, T_max) and two curves' values, the cookie's and
  * muffin's (tau_y and eta); a material with more temperature curves evaluates the rest every step */
