@@ -107,9 +107,9 @@ print("EXPECTED FAILURE: the top stays pale (golden needs ~180 degC over the las
       "which no heat capacity enters (2.5 mm: top 131.8 -> 132.2 degC, browning 0.085 -> 0.085). The crust is one "
       "particle row: the row under it keeps ~1% of its water and water_boil holds every particle with water above "
       "the floor at 100 degC. At 5 mm the top particle never dries (its stencil spans the front). Measured, none "
-      "golden: oven beta x1.6 top 0.23, x2 0.32; dx 1.25 mm 0.09; water diffusivity x0.1 0.09. Next: bound water "
-      "(a drying crust heats past 100 degC before its last water goes). docs/validation.md 'A dried crust holds "
-      "less heat'.")
+      "golden: oven beta x1.6 top 0.23, x2 0.32; dx 1.25 mm 0.09; water diffusivity x0.1 0.09; the last 10% of the "
+      "water bound (an experiment) 0.08. What moves the top is the oven's flux. docs/validation.md 'A dried crust "
+      "holds less heat'.")
 sys.exit(77)
 PY
     rc=$?
