@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "mpm_fixture.h"
+#include "thermal.h"
 #include "water.h"
 
 #define KELVIN 273.15
@@ -224,6 +225,50 @@ TEST(dry_heat_same_bits) {
     CHECK(h1 == h2 && h1 != hw);
 }
 
+/* Forward Euler's step limits with a dried end (thermal_dt_limit): conduction's rho alpha dx^2 / (2 dim kappa)
+ * at the end, dried (dry_specific_heat, dry_conductivity) or wet, of the smaller alpha / kappa, since alpha and
+ * kappa are both linear in the water ratio r and alpha(r) / kappa(r) is then monotone in r, its least value at
+ * r = 0 or 1; the Robin term's rho alpha dx / (2 beta) at the smallest alpha, the dried one (a node may hold a
+ * dried particle's capacity alone). The test derives both from the parameters, for the bread's numbers in real
+ * units (907.5 / 0.23 = 3946 dried against 2700 / 0.51 = 5294 wet: the dried end the smaller), with one
+ * dry parameter or both, under a weak oven (conduction binds) and a strong one (the Robin term binds). */
+static double limit_of(double cd, double kd, double beta) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.004;
+    d.gravity[1] = 0;
+    d.oven_temperature = OVEN_T;
+    d.oven_beta = beta;
+    hearth_scene *s = fx_scene_def(&d);
+    if (!s) return NAN;
+    const char *nm[] = {"E", "density", "specific_heat", "conductivity", "dry_specific_heat", "dry_conductivity"};
+    const double nv[] = {1e4, RHO, C_WET, 0.51, cd, kd};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 6, &err);
+    CHECK(m >= 0);
+    const double c[3] = {0.5, 0.5, 0}, h[3] = {0.02, 0.02, 0};
+    CHECK(fx_box(s, m, c, h, 2, NULL) > 0);
+    const double dt = thermal_dt_limit(s);
+    hearth_scene_destroy(s);
+    return dt;
+}
+
+TEST(dry_heat_step_limits_take_the_dried_end) {
+    const double dx = 0.004, kw = 0.51, kd = 0.23, betas[2] = {30, 300};
+    const struct {
+        double cd, kd;
+    } c[3] = {{C_DRY, kd}, {0, kd}, {C_DRY, 0}};
+    for (int b = 0; b < 2; b++)
+        for (int k = 0; k < 3; k++) {
+            const double ce = c[k].cd > 0 ? c[k].cd : C_WET, ke = c[k].kd > 0 ? c[k].kd : kw; /* the dried end */
+            const double ratio = fmin(C_WET / kw, ce / ke), cond = RHO * ratio * dx * dx / (2 * 2);
+            const double robin = RHO * ce * dx / (2 * betas[b]), want = fmin(cond, robin);
+            const double got = limit_of(c[k].cd, c[k].kd, betas[b]);
+            printf("  beta %3.0f, dry_specific_heat %6.1f, dry_conductivity %.2f: conduction %.4f s, Robin %.4f s; "
+                   "limit %.6f s, derived %.6f s\n", betas[b], c[k].cd, c[k].kd, cond, robin, got, want);
+            CHECK(fabs(got - want) <= 1e-12 * want);
+        }
+}
+
 /* dry_specific_heat above specific_heat is refused, naming both and the range; below 0 by the schema. */
 TEST(dry_heat_refusals) {
     hearth_scene *s = fx_scene(2, 0.01, -0.1, 0.1);
@@ -242,4 +287,4 @@ TEST(dry_heat_refusals) {
     hearth_scene_destroy(s);
 }
 
-TEST_MAIN(T(dry_heat_block_heats_at_its_capacity), T(dry_heat_energy_balance), T(dry_heat_same_bits), T(dry_heat_refusals))
+TEST_MAIN(T(dry_heat_block_heats_at_its_capacity), T(dry_heat_step_limits_take_the_dried_end), T(dry_heat_energy_balance), T(dry_heat_same_bits), T(dry_heat_refusals))
