@@ -119,15 +119,19 @@ void material_mixture_set(material_table *t, int id, int k, double *mp);
 
 /// A mixture's blend of its constituents at particle i's dynamic ratios (PC_MIXD), into out (material.c).
 void material_blend_at(const material_slot *ms, const particles *ps, int i, double *out);
-/// Particle i's moisture ratio X/X_0 = m^w / (s_0 rho_0^w V_0), its water over
+/// Particle i's moisture ratio X/X_0 = m^w / (s_0 rho_0^w V_0), its water w = m^w over
 /// the water it was given (curves.h): 1 when the scene has no water or the
 /// body was given none (water.c's floor), so a moisture curve then leaves
 /// the parameter as the raw dough's.
-static inline double material_moisture_ratio(const material_slot *ms, const particles *ps, int i) {
+static inline double material_moisture_ratio_of(const material_slot *ms, const particles *ps, int i, double w) {
     if (!(ps->enabled & (1u << PC_WATER))) return 1.0;
     const double s0 = pcold(ps, PC_SAT0)[i];
     if (!(s0 > 2 * WATER_SATURATION_FLOOR)) return 1.0;
-    return pcold(ps, PC_WATER)[i] / (s0 * ms->core[CP_WATER_DENSITY] * pcold(ps, PC_VOL0)[i]);
+    return w / (s0 * ms->core[CP_WATER_DENSITY] * pcold(ps, PC_VOL0)[i]);
+}
+/// The same with the water it holds now (PC_WATER).
+static inline double material_moisture_ratio(const material_slot *ms, const particles *ps, int i) {
+    return material_moisture_ratio_of(ms, ps, i, ps->enabled & (1u << PC_WATER) ? pcold(ps, PC_WATER)[i] : 0.0);
 }
 
 /* Particle i's heat conductivity kappa (W/(m K)). A dried crust is a porous
@@ -152,7 +156,7 @@ static inline double material_conductivity(const material_slot *ms, const partic
     return kd + (k - kd) * r;
 }
 
-/* Particle i's specific heat alpha (J/(kg K)) per kg of its mass m, which
+/* Particle i's specific heat alpha (J/(kg K)) per kg of its mass m, holding water w, which
  * stays the wet dough's (PC_MASS; water.c: the particle mass is the dough's,
  * water included). The water a dried crust lost took its heat capacity with
  * it (issue #18). The mixture rule for a particle of solids m_s and water w,
@@ -176,11 +180,15 @@ static inline double material_conductivity(const material_slot *ms, const partic
  * (docs/validation.md, "A dried crust holds less heat"). dry_specific_heat 0
  * returns specific_heat itself without reading the particle: a scene without
  * it computes the bits it did before. */
-static inline double material_specific_heat(const material_slot *ms, const particles *ps, int i) {
+static inline double material_specific_heat_of(const material_slot *ms, const particles *ps, int i, double w) {
     const double c = ms->core[CP_SPECIFIC_HEAT], cd = ms->core[CP_DRY_SPECIFIC_HEAT];
     if (!(cd > 0)) return c;
-    const double r = material_moisture_ratio(ms, ps, i);
+    const double r = material_moisture_ratio_of(ms, ps, i, w);
     return cd + (c - cd) * (r > 0 ? r : 0.0);
+}
+/* The same at the water it holds now (PC_WATER). */
+static inline double material_specific_heat(const material_slot *ms, const particles *ps, int i) {
+    return material_specific_heat_of(ms, ps, i, ps->enabled & (1u << PC_WATER) ? pcold(ps, PC_WATER)[i] : 0.0);
 }
 
 /* The smallest specific heat a particle of ms can have: the dried one
