@@ -156,9 +156,9 @@ static inline double material_conductivity(const material_slot *ms, const partic
     return kd + (k - kd) * r;
 }
 
-/* Particle i's specific heat alpha (J/(kg K)) per kg of its mass m, holding water w, which
- * stays the wet dough's (PC_MASS; water.c: the particle mass is the dough's,
- * water included). The water a dried crust lost took its heat capacity with
+/* Particle i's specific heat alpha (J/(kg K)) when it holds water w (kg),
+ * per kg of its mass m, which stays the wet dough's (PC_MASS; water.c: the
+ * particle mass is the dough's, water included). The water a dried crust lost took its heat capacity with
  * it (issue #18). The mixture rule for a particle of solids m_s and water w,
  *   m alpha = m_s c_s + w c_w,
  * is linear in the water it holds; at w = w0 (PC_SAT0 rho_0^w V_0, what it was
