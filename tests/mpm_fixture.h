@@ -30,6 +30,34 @@ static inline hearth_scene *fx_scene_def(const hearth_scene_def *d) {
     return s;
 }
 
+/* The oven the heat and water tests bake pinned blocks in: a 100 x 60 mm box from the origin, no gravity, the
+ * oven's air at oven_T (degC) through beta (W/(m^2 K)); the caller sets the rest (latent_heat, heat_implicit, ...). */
+static inline hearth_scene_def fx_oven_def(double dx, double oven_T, double beta) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = dx;
+    d.gravity[1] = 0;
+    d.lo[0] = d.lo[1] = 0;
+    d.hi[0] = 0.1;
+    d.hi[1] = 0.06;
+    d.oven_temperature = oven_T;
+    d.oven_beta = beta;
+    return d;
+}
+
+/* A pinned box of material m centred at c with half sizes h, unjittered, at T0 (degC) and saturation sat (NaN:
+ * the material's). Returns the body id, or -1 after printing why. */
+static inline int fx_pinned_box(hearth_scene *s, int m, const double c[3], const double h[3], double T0, double sat) {
+    hearth_shape *box = hearth_shape_box(c, h);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = box, bd.material = m, bd.jitter = 0, bd.fixed = 1;
+    bd.temperature = T0, bd.saturation = sat;
+    hearth_error err;
+    const int id = hearth_scene_add_body(s, &bd, &err);
+    if (id < 0) fprintf(stderr, "body: %s\n", err.msg);
+    hearth_shape_free(box);
+    return id;
+}
+
 /* The elastic material's stored energy over the scene, compressible neo-Hookean (plugins/elastic.c's law):
  * rotating_disc and the transfer's loss over dt read it. */
 static inline double neo_hookean_energy(const hearth_scene *s, double mu, double lam) {

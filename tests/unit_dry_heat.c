@@ -41,14 +41,7 @@ static double alpha_of(const hearth_scene *s, int i, double cd) {
 /* A pinned 40 x 20 mm block of the bread at 25 degC in its 200 degC oven, with latent_heat (the oven's books);
  * water diffusivity and evaporation as given, dry_specific_heat cd. */
 static hearth_scene *block(double dx, double cd, double water_k, double evap, int implicit) {
-    hearth_scene_def d = hearth_default_scene_def();
-    d.dx = dx;
-    d.gravity[1] = 0;
-    d.lo[0] = d.lo[1] = 0;
-    d.hi[0] = 0.1;
-    d.hi[1] = 0.06;
-    d.oven_temperature = OVEN_T;
-    d.oven_beta = OVEN_BETA;
+    hearth_scene_def d = fx_oven_def(dx, OVEN_T, OVEN_BETA);
     d.latent_heat = 1;
     d.heat_implicit = implicit;
     if (implicit) d.dt_max = 0.02; /* a pinned block has no CFL limit: without it the implicit heat takes a few steps */
@@ -62,12 +55,7 @@ static hearth_scene *block(double dx, double cd, double water_k, double evap, in
     if (m < 0) printf("  material: %s\n", err.msg);
     CHECK(m >= 0);
     const double c[3] = {0.05, 0.03, 0}, h[3] = {0.02, 0.01, 0};
-    hearth_shape *box = hearth_shape_box(c, h);
-    hearth_body_def bd = hearth_default_body_def();
-    bd.shape = box, bd.material = m, bd.jitter = 0, bd.fixed = 1;
-    bd.temperature = 25;
-    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
-    hearth_shape_free(box);
+    CHECK(fx_pinned_box(s, m, c, h, 25, NAN) >= 0);
     return s;
 }
 

@@ -38,14 +38,7 @@ typedef struct block {
 /* A 40 x 20 mm block centred at (50, 30) mm, at 20 degC and saturation 0.8. */
 static block make_block(double dx, int latent, int implicit, double water_diffusivity) {
     block b = {NULL, -1, -1};
-    hearth_scene_def d = hearth_default_scene_def();
-    d.dx = dx;
-    d.gravity[1] = 0;
-    d.lo[0] = d.lo[1] = 0;
-    d.hi[0] = 0.1;
-    d.hi[1] = 0.06;
-    d.oven_temperature = OVEN_T;
-    d.oven_beta = OVEN_BETA;
+    hearth_scene_def d = fx_oven_def(dx, OVEN_T, OVEN_BETA);
     d.latent_heat = latent;
     d.heat_implicit = implicit;
     b.s = fx_scene_def(&d);
@@ -57,12 +50,7 @@ static block make_block(double dx, int latent, int implicit, double water_diffus
     if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
     CHECK(m >= 0);
     const double c[3] = {0.05, 0.03, 0}, h[3] = {0.02, 0.01, 0};
-    hearth_shape *box = hearth_shape_box(c, h);
-    hearth_body_def bd = hearth_default_body_def();
-    bd.shape = box, bd.material = m, bd.jitter = 0, bd.fixed = 1;
-    bd.temperature = 20, bd.saturation = 0.8;
-    CHECK(hearth_scene_add_body(b.s, &bd, &err) >= 0);
-    hearth_shape_free(box);
+    CHECK(fx_pinned_box(b.s, m, c, h, 20, 0.8) >= 0);
     return b;
 }
 
@@ -273,14 +261,7 @@ TEST(latent_heat_checkpoint_roundtrip) {
 
 static block make_slab(double dx, int latent, int implicit, double evaporation, double water_k) {
     block b = {NULL, -1, -1};
-    hearth_scene_def d = hearth_default_scene_def();
-    d.dx = dx;
-    d.gravity[1] = 0;
-    d.lo[0] = d.lo[1] = 0;
-    d.hi[0] = 0.1;
-    d.hi[1] = 0.06;
-    d.oven_temperature = OVEN_T;
-    d.oven_beta = OVEN_BETA;
+    hearth_scene_def d = fx_oven_def(dx, OVEN_T, OVEN_BETA);
     d.latent_heat = latent;
     d.heat_implicit = implicit;
     if (implicit) d.dt_max = 4; /* a pinned slab has no CFL limit: without it the implicit heat takes one step */
@@ -293,12 +274,7 @@ static block make_slab(double dx, int latent, int implicit, double evaporation, 
     if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
     CHECK(m >= 0);
     const double c[3] = {0.05, 0.03, 0}, h[3] = {0.03, SLAB_H, 0};
-    hearth_shape *box = hearth_shape_box(c, h);
-    hearth_body_def bd = hearth_default_body_def();
-    bd.shape = box, bd.material = m, bd.jitter = 0, bd.fixed = 1;
-    bd.temperature = 20, bd.saturation = SLAB_S;
-    CHECK(hearth_scene_add_body(b.s, &bd, &err) >= 0);
-    hearth_shape_free(box);
+    CHECK(fx_pinned_box(b.s, m, c, h, 20, SLAB_S) >= 0);
     return b;
 }
 
@@ -500,15 +476,8 @@ TEST(latent_heat_boiling_point_checkpoint_roundtrip) {
 #define WB_T0 25.0
 
 static hearth_scene *wet_bulb_block_at(double T0, double K, int field_steps) {
-    hearth_scene_def d = hearth_default_scene_def();
+    hearth_scene_def d = fx_oven_def(0.002, OVEN_T, OVEN_BETA);
     d.field_steps = field_steps;
-    d.dx = 0.002;
-    d.gravity[1] = 0;
-    d.lo[0] = d.lo[1] = 0;
-    d.hi[0] = 0.1;
-    d.hi[1] = 0.06;
-    d.oven_temperature = OVEN_T;
-    d.oven_beta = OVEN_BETA;
     d.latent_heat = 1;
     hearth_scene *s = fx_scene_def(&d);
     CHECK(s != NULL);
@@ -520,12 +489,7 @@ static hearth_scene *wet_bulb_block_at(double T0, double K, int field_steps) {
     if (m < 0) fprintf(stderr, "material: %s\n", err.msg);
     CHECK(m >= 0);
     const double c[3] = {0.05, 0.03, 0}, h[3] = {0.02, 0.01, 0};
-    hearth_shape *box = hearth_shape_box(c, h);
-    hearth_body_def bd = hearth_default_body_def();
-    bd.shape = box, bd.material = m, bd.jitter = 0, bd.fixed = 1;
-    bd.temperature = T0, bd.saturation = WB_S0;
-    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
-    hearth_shape_free(box);
+    CHECK(fx_pinned_box(s, m, c, h, T0, WB_S0) >= 0);
     return s;
 }
 
