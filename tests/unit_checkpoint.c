@@ -605,7 +605,8 @@ TEST(checkpoint_v5_def_fields_refused) {
 }
 
 /* A version 4 file (version 5's layout without the DEF fields 5 appended,
- * rebuilt here from a new save without version 6's fields and version 7's dry_conductivity) still loads,
+ * rebuilt here from a new save without version 6's fields, version 7's dry_conductivity and version 8's
+ * dry_specific_heat) still loads,
  * those fields at their defaults,
  * and continues as the scene it was saved from; version 3 is refused by
  * version (docs/checkpoints.md). */
@@ -625,8 +626,8 @@ TEST(checkpoint_v4_reads_at_defaults) {
     memcpy(b, img, clk - cut);
     memcpy(b + clk - cut, img + clk, tail - clk);
     memcpy(b + tail - cut, img + tail + vt, n - tail - vt);
-    /* and version 7's last core material parameter (dry_conductivity, before the curve count): files before 7
-     * hold CP_COUNT - 1 of them */
+    /* and the last two core material parameters (version 7's dry_conductivity, version 8's dry_specific_heat,
+     * before the curve count): files before 7 hold CP_COUNT - 2 of them */
     const size_t el = find(b, m, "elastic", 7);
     CHECK(el != (size_t)-1);
     if (el == (size_t)-1) {
@@ -635,9 +636,9 @@ TEST(checkpoint_v4_reads_at_defaults) {
         hearth_scene_destroy(s);
         return;
     }
-    const size_t dry = el + 7 + 4 + 8 + 4 + 8 * 3 + 8 * (CP_COUNT - 1); /* elastic has 3 parameters */
-    memmove(b + dry, b + dry + 8, m - dry - 8);
-    m -= 8;
+    const size_t dry = el + 7 + 4 + 8 + 4 + 8 * 3 + 8 * (CP_COUNT - 2); /* elastic has 3 parameters */
+    memmove(b + dry, b + dry + 16, m - dry - 16);
+    m -= 16;
     const uint32_t v4 = 4;
     memcpy(b + 8, &v4, 4);
     ck_reseal(b, m);
@@ -667,8 +668,80 @@ TEST(checkpoint_v4_reads_at_defaults) {
     ck_reseal(b, m);
     CHECK(hearth_scene_load_mem(b, m, "v3.ck", &err) == NULL);
     printf("  %s\n", err.msg);
-    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 7 only");
+    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 8 only");
     free(b);
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+/* A wet block in an oven whose material sets dry_specific_heat, to 300 s. */
+static hearth_scene *dry_heat_scene(double dry_c) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.1;
+    d.gravity[1] = 0;
+    d.oven_temperature = 180;
+    d.oven_beta = 10;
+    d.latent_heat = 1;
+    hearth_scene *s = fx_scene_def(&d);
+    if (!s) return NULL;
+    const char *nm[] = {"E", "density", "specific_heat", "conductivity", "saturation", "evaporation", "dry_specific_heat"};
+    const double nv[] = {1e4, 500, 2700, 0.5, 0.3, 1e-5, dry_c};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 7, &err);
+    CHECK(m >= 0);
+    const double c[3] = {0.5, 0.4, 0}, h[3] = {0.1, 0.1, 0};
+    CHECK(fx_box(s, m, c, h, 1, NULL) > 0);
+    CHECK(hearth_scene_step(s, 3, &err) == HEARTH_OK);
+    return s;
+}
+
+/* Version 8 carries a material's dry_specific_heat through a save; a version
+ * 7 file (a version 8 image without it, before the curve count) loads with 0,
+ * as wet, and continues as the scene it was saved from, which had 0. */
+TEST(checkpoint_v7_reads_dry_specific_heat_as_wet) {
+    hearth_scene *s = dry_heat_scene(900);
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    hearth_error err;
+    hearth_scene *r = img ? hearth_scene_load_mem(img, n, "v8.ck", &err) : NULL;
+    CHECK(r != NULL);
+    if (r) {
+        printf("  v8: dry_specific_heat %g saved, %g restored\n", s->mats.slot[0].core[CP_DRY_SPECIFIC_HEAT],
+               r->mats.slot[0].core[CP_DRY_SPECIFIC_HEAT]);
+        CHECK(r->mats.slot[0].core[CP_DRY_SPECIFIC_HEAT] == 900);
+        hearth_scene_destroy(r);
+    }
+    free(img);
+    hearth_scene_destroy(s);
+    s = dry_heat_scene(0);
+    img = save_image(s, &n);
+    CHECK(img != NULL);
+    const size_t el = img ? find(img, n, "elastic", 7) : (size_t)-1;
+    CHECK(el != (size_t)-1);
+    if (el == (size_t)-1) {
+        free(img);
+        hearth_scene_destroy(s);
+        return;
+    }
+    const size_t dry = el + 7 + 4 + 8 + 4 + 8 * 3 + 8 * (CP_COUNT - 1); /* elastic has 3 parameters */
+    memmove(img + dry, img + dry + 8, n - dry - 8);
+    const size_t m = n - 8;
+    const uint32_t v7 = 7;
+    memcpy(img + 8, &v7, 4);
+    ck_reseal(img, m);
+    r = hearth_scene_load_mem(img, m, "v7.ck", &err);
+    if (!r) printf("  v7 refused: %s\n", err.msg);
+    CHECK(r != NULL);
+    if (r) {
+        CHECK(r->mats.slot[0].core[CP_DRY_SPECIFIC_HEAT] == 0);
+        CHECK(hearth_scene_step(s, 10, &err) == HEARTH_OK);
+        CHECK(hearth_scene_step(r, 10, &err) == HEARTH_OK);
+        printf("  v7 file of %zu bytes (v8: %zu); after 10 more steps: hash %016llx saved scene, %016llx v7 copy\n", m, n,
+               (unsigned long long)hearth_scene_hash(s), (unsigned long long)hearth_scene_hash(r));
+        CHECK(hearth_scene_hash(r) == hearth_scene_hash(s));
+        hearth_scene_destroy(r);
+    }
     free(img);
     hearth_scene_destroy(s);
 }
@@ -832,7 +905,7 @@ TEST(checkpoint_plugin_memo_refused_and_refilled) {
     hearth_scene_destroy(s);
 }
 
-TEST_MAIN(T(checkpoint_v4_roundtrip), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
+TEST_MAIN(T(checkpoint_v4_roundtrip), T(checkpoint_v7_reads_dry_specific_heat_as_wet), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
           T(checkpoint_bitflip_campaign), T(checkpoint_resealed_flips), T(checkpoint_crafted_fields),
           T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_count_before_alloc),
           T(checkpoint_not_regular_file), T(checkpoint_alloc_failures),

@@ -64,6 +64,13 @@ hearth_status material_slot_init(material_slot *ms, const hearth_plugin *pl, con
                        "[0, conductivity] (a dried material conducts at most as the wet one; 0 = as wet)",
                        m->name, core[CP_DRY_CONDUCTIVITY], core[CP_CONDUCTIVITY]);
     }
+    if (core[CP_DRY_SPECIFIC_HEAT] > core[CP_SPECIFIC_HEAT]) { /* losing water loses heat capacity (material.h) */
+        mem_free(p, params_bytes(m));
+        return err_set(err, HEARTH_ERR_PARAM,
+                       "material '%s': dry_specific_heat = %g J/(kg K) exceeds its specific_heat = %g J/(kg K); valid "
+                       "range [0, specific_heat] (the water a material loses takes its heat capacity with it; 0 = as wet)",
+                       m->name, core[CP_DRY_SPECIFIC_HEAT], core[CP_SPECIFIC_HEAT]);
+    }
     *ms = (material_slot){.plugin = pl, .m = m, .params = p, .density_index = params_index(m, "density")};
     memcpy(ms->core, core, sizeof core);
     return HEARTH_OK;

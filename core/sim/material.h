@@ -119,15 +119,19 @@ void material_mixture_set(material_table *t, int id, int k, double *mp);
 
 /// A mixture's blend of its constituents at particle i's dynamic ratios (PC_MIXD), into out (material.c).
 void material_blend_at(const material_slot *ms, const particles *ps, int i, double *out);
-/// Particle i's moisture ratio X/X_0 = m^w / (s_0 rho_0^w V_0), its water over
+/// Particle i's moisture ratio X/X_0 = m^w / (s_0 rho_0^w V_0), its water w = m^w over
 /// the water it was given (curves.h): 1 when the scene has no water or the
 /// body was given none (water.c's floor), so a moisture curve then leaves
 /// the parameter as the raw dough's.
-static inline double material_moisture_ratio(const material_slot *ms, const particles *ps, int i) {
+static inline double material_moisture_ratio_of(const material_slot *ms, const particles *ps, int i, double w) {
     if (!(ps->enabled & (1u << PC_WATER))) return 1.0;
     const double s0 = pcold(ps, PC_SAT0)[i];
     if (!(s0 > 2 * WATER_SATURATION_FLOOR)) return 1.0;
-    return pcold(ps, PC_WATER)[i] / (s0 * ms->core[CP_WATER_DENSITY] * pcold(ps, PC_VOL0)[i]);
+    return w / (s0 * ms->core[CP_WATER_DENSITY] * pcold(ps, PC_VOL0)[i]);
+}
+/// The same with the water it holds now (PC_WATER).
+static inline double material_moisture_ratio(const material_slot *ms, const particles *ps, int i) {
+    return material_moisture_ratio_of(ms, ps, i, ps->enabled & (1u << PC_WATER) ? pcold(ps, PC_WATER)[i] : 0.0);
 }
 
 /* Particle i's heat conductivity kappa (W/(m K)). A dried crust is a porous
@@ -150,6 +154,66 @@ static inline double material_conductivity(const material_slot *ms, const partic
     double r = material_moisture_ratio(ms, ps, i);
     r = r > 0 ? (r < 1 ? r : 1) : 0;
     return kd + (k - kd) * r;
+}
+
+/* Particle i's specific heat alpha (J/(kg K)) when it holds water w (kg),
+ * per kg of its mass m, which stays the wet dough's (PC_MASS; water.c: the
+ * particle mass is the dough's, water included). The water a dried crust lost took its heat capacity with
+ * it (issue #18). The mixture rule for a particle of solids m_s and water w,
+ *   m alpha = m_s c_s + w c_w,
+ * is linear in the water it holds; at w = w0 (PC_SAT0 rho_0^w V_0, what it was
+ * made with) it is the dough's specific_heat, at w = 0 it is m_s c_s / m =
+ * dry_specific_heat, so
+ *   alpha = dry_specific_heat + (specific_heat - dry_specific_heat) w / w0,
+ * w / w0 the moisture ratio (material_moisture_ratio, above), and the slope
+ * (specific_heat - dry_specific_heat) m / w0 is the water's c_w. Not clamped
+ * at 1: a particle wetter than it was made holds that water's heat capacity
+ * too (the rule holds for any w); floored at 0. dry_specific_heat
+ * <= specific_heat (material_slot_init), so alpha is smallest dry, where the
+ * step limits take it (material_heat_stiffest, below). The temperature
+ * equation with it, alpha(w) m dtheta/dt = heat in - L x water evaporated, is
+ * the enthalpy balance d(m alpha theta)/dt = heat in - (L + c_w theta) x water
+ * evaporated: water leaves at the particle's temperature and carries its own
+ * sensible heat, so a particle's temperature does not jump as it dries. The
+ * term the rule adds to conduction when water moves inside the body,
+ * -c_w q^w . grad theta, is left out, as it was with a constant alpha
+ * (docs/validation.md, "A dried crust holds less heat"). dry_specific_heat 0
+ * returns specific_heat itself without reading the particle: a scene without
+ * it computes the bits it did before. */
+static inline double material_specific_heat_of(const material_slot *ms, const particles *ps, int i, double w) {
+    const double c = ms->core[CP_SPECIFIC_HEAT], cd = ms->core[CP_DRY_SPECIFIC_HEAT];
+    if (!(cd > 0)) return c;
+    const double r = material_moisture_ratio_of(ms, ps, i, w);
+    return cd + (c - cd) * (r > 0 ? r : 0.0);
+}
+/* The same at the water it holds now (PC_WATER). */
+static inline double material_specific_heat(const material_slot *ms, const particles *ps, int i) {
+    return material_specific_heat_of(ms, ps, i, ps->enabled & (1u << PC_WATER) ? pcold(ps, PC_WATER)[i] : 0.0);
+}
+
+/* The smallest specific heat a particle of ms can have: the dried one
+ * (dry_specific_heat when set, else specific_heat). The Robin and latent step
+ * limits act on a node's heat capacity, which the driest particle on it may
+ * hold alone. */
+static inline double material_specific_heat_min(const material_slot *ms) {
+    const double cd = ms->core[CP_DRY_SPECIFIC_HEAT];
+    return cd > 0 ? cd : ms->core[CP_SPECIFIC_HEAT];
+}
+
+/* The (alpha, kappa) end of ms, dried or with all its water, whose
+ * alpha / kappa is the smaller: conduction's explicit step limit
+ * rho alpha dx^2 / (2 dim kappa) is shortest there. Both are linear in the
+ * moisture ratio r (kappa clamped to [0, 1], alpha floored at 0), so their
+ * ratio is a quotient of linear functions of r with a positive denominator,
+ * monotone on [0, 1] and at least as large past 1 (kappa stops, alpha grows):
+ * its smallest value is at r = 0 or r = 1. The wet pair when neither dry
+ * parameter is set, or when only dry_conductivity is (a dried particle that
+ * conducts less has the longer step): the expressions and bits as before. */
+static inline void material_heat_stiffest(const material_slot *ms, double *alpha, double *kappa) {
+    const double cw = ms->core[CP_SPECIFIC_HEAT], kw = ms->core[CP_CONDUCTIVITY];
+    const double cd = material_specific_heat_min(ms), kd = ms->core[CP_DRY_CONDUCTIVITY] > 0 ? ms->core[CP_DRY_CONDUCTIVITY] : kw;
+    *alpha = cw, *kappa = kw;
+    if (cd * kw < cw * kd) *alpha = cd, *kappa = kd; /* cd / kd < cw / kw, without dividing by a kappa that may be 0 */
 }
 
 /// A moisture curve's factor at particle i; an irreversible one at the lowest

@@ -11,6 +11,8 @@ enum {
     CP_BUBBLE, /* SPH bubble particles (Rodriguez-Arenas §3.3.3) */
     CP_DRY_CONDUCTIVITY, /* conduction of the dried material (material_conductivity, material.h); last, so
                           * checkpoints before version 7 read the others in place */
+    CP_DRY_SPECIFIC_HEAT, /* heat capacity of the dried material (material_specific_heat, material.h); last, so
+                           * checkpoints before version 8 read the others in place */
     CP_COUNT
 };
 

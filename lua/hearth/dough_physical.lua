@@ -63,6 +63,12 @@ D.goods = {
     -- 0.23 W/(m K), 0.44 of the wet crumb's. (A bread model's dry and wet values, 0.18 and 0.37 W/(m K), have
     -- about the same ratio: techMathGroup/breadBakingFoam, compEffProps.H.)
     dry_conductivity = 0.23,
+    -- dried, the crust holds less heat (issue #18; core parameter dry_specific_heat, per kg of the dough's mass, linear
+    -- in the water left): the water it lost took its heat capacity with it. A particle's mass stays the dough's, and
+    -- the mixture rule m c = m_s c_s + m_w c_w with no water left gives c = (m_s / m) c_s = 0.55 x 1.65 kJ/(kg K) (45%
+    -- water, the solids' c_s from Choi & Okos as above): 907.5 J/(kg K), a third of the dough's. (The same rule with
+    -- c_w = 4.18 kJ/(kg K) gives the wet dough 2.79 kJ/(kg K), 3% above the 2.7 taken.)
+    dry_specific_heat = 0.55 * 1650,
     -- water: 45% wet basis (a lean bread dough's; Zanoni, Peri & Pierucci 1993, J. Food Eng. 19:383, bake doughs of
     -- about this), s = 0.45 x 484 / 1000
     saturation = 0.218,
@@ -143,7 +149,7 @@ function D.preset(name)
   if not g then return nil end
   local S = g.time_scale
   local params = {
-    E = g.E, nu = g.nu, density = g.density, specific_heat = g.specific_heat,
+    E = g.E, nu = g.nu, density = g.density, specific_heat = g.specific_heat, dry_specific_heat = g.dry_specific_heat,
     conductivity = g.conductivity * S, dry_conductivity = g.dry_conductivity and g.dry_conductivity * S,
     -- eq. 22: D = K theta s at the boiling point and the dough's saturation
     water_diffusivity = g.water_diffusivity_m2s / (373.15 * g.saturation) * S,

@@ -14,7 +14,8 @@ local s = h.scene { dim = 2, dx = dx, box = { { 0, 0 }, { 0.12, 0.08 } }, gravit
   oven = { temperature = 200, beta = 40 }, latent_heat = true }
 local d = h.library.dough.bread
 d.specific_heat, d.conductivity = 2800, 0.5
-d.dry_conductivity = 0 -- its own real-unit conductivity, one for wet and dry, as when this was written
+d.dry_conductivity, d.dry_specific_heat = 0, 0 -- its own real-unit conductivity and specific heat, one for wet
+-- and dry, as when this was written
 d.water_diffusivity, d.evaporation = 5e-8 / 373.15, 3e-5
 local y1, s0 = 0.06, 0.4
 s:add { shape = h.box({ 0.02, 0.02 }, { 0.10, y1 }), material = h.material("cam_clay_dough", d), temperature = 25,

@@ -137,13 +137,20 @@ double thermal_dt_limit(const hearth_scene *s) {
     double dt = INFINITY;
     for (int m = 0; m < s->mats.n; m++) {
         const material_slot *ms = &s->mats.slot[m];
-        const double k = ms->core[CP_CONDUCTIVITY], ra = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
+        /* a particle's alpha and kappa follow its water (material.h): conduction at the end, dried or wet, of the
+         * smaller alpha / kappa; the Robin terms against the smallest alpha, the dried one (without the dry
+         * parameters both are the wet ones, the expressions as before) */
+        double ck, k;
+        material_heat_stiffest(ms, &ck, &k);
+        const double rho = ms->params[ms->density_index], rak = rho * ck, ra = rho * material_specific_heat_min(ms);
         /* forward Euler on the B-spline Laplacian: rho alpha dx^2 / (2 dim kappa), at the reference density;
          * a particle swollen past what the step covers conducts over less than J V_0 (transport.c, cond_volume_cap) */
-        if (k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * s->def.dim * k));
+        if (k > 0) dt = fmin(dt, rak * s->def.dx * s->def.dx / (2.0 * s->def.dim * k));
         /* and on the Robin term: a boundary cell's rho alpha dx^dim against beta dx^(dim-1) */
         if (beta > 0) dt = fmin(dt, ra * s->def.dx / (2.0 * beta));
-        if (held && k > 0) dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * NITSCHE_GAMMA * k));
+        /* the Nitsche face conducts at the wet kappa (find_boundary) */
+        if (held && ms->core[CP_CONDUCTIVITY] > 0)
+            dt = fmin(dt, ra * s->def.dx * s->def.dx / (2.0 * NITSCHE_GAMMA * ms->core[CP_CONDUCTIVITY]));
     }
     /* the latent sink L e theta_abs f(theta_abs) (s - s_amb) S falls with the particle's own temperature at the
      * rate L e g (s - s_amb) S, g = d(theta f) / d theta <= water_latent_stiffness (the vapour's factor f,
@@ -171,7 +178,15 @@ double thermal_energy(const hearth_scene *s) {
     double e = 0;
     const double *T = pcold(&s->ps, PC_TEMPERATURE), *m = pcold(&s->ps, PC_MASS);
     const int *mat = pcoli(&s->ps, PC_MAT);
-    for (int i = 0; i < s->ps.n; i++) e += m[i] * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT] * (T[i] + KELVIN);
+    /* m alpha(w) (theta + 273.15): with dry_specific_heat the heat capacity left after the water that went took
+     * its own (material_specific_heat); heat in = the integral of m alpha(w) dtheta + L x water lost, which a
+     * difference of this sum does not give when alpha moved (tests/unit_dry_heat.c keeps those books). SPH's heat
+     * reads the wet alpha (sph_heat.c: its conduction is the scene's kappa / c), so its sum does too */
+    const int sph = s->def.solver == HEARTH_SOLVER_SPH;
+    for (int i = 0; i < s->ps.n; i++) {
+        const material_slot *ms = &s->mats.slot[mat[i]];
+        e += m[i] * (sph ? ms->core[CP_SPECIFIC_HEAT] : material_specific_heat(ms, &s->ps, i)) * (T[i] + KELVIN);
+    }
     return e;
 }
 
@@ -364,7 +379,7 @@ static hearth_status mark_held(hearth_scene *s) {
             int l[27];
             /* the particle's own stencil: its nodes all carry its heat capacity, so none is dropped */
             const int m = contact_stencil(g, X + 3 * i, node, l, w, NULL);
-            const double hc = M[i] * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT];
+            const double hc = M[i] * material_specific_heat(&s->mats.slot[mat[i]], ps, i); /* as P2G's */
             for (int j = 0; j < m; j++) {
                 const int k = (int)((node[j] - g->data) / ((ptrdiff_t)g->nch * NPB)) * NPB + l[j];
                 fw[k] += w[j] * hc;

@@ -247,9 +247,11 @@ FORCE_INLINE void pass_block(hearth_scene *s, const int D, const int HEAT, const
             if (SRC && !apart && k > 0) { /* forward Euler: at most the volume its step covers (cond_volume_cap, above) */
                 if (mat[i] != jmax_mat) { /* once per run of one material: the same expression, so the same bits */
                     jmax_mat = mat[i];
-                    /* on the wet conductivity, as thermal_dt_limit: a dried particle's cap is then the safer */
-                    jmax = COND_J_MARGIN * ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT] * g->dx * g->dx /
-                           (2.0 * D * ms->core[CP_CONDUCTIVITY] * dt);
+                    /* at thermal_dt_limit's alpha / kappa, the smaller of the dried and the wet end's
+                     * (material_heat_stiffest): every particle's own cap is then at least this one */
+                    double ck, kk;
+                    material_heat_stiffest(ms, &ck, &kk);
+                    jmax = COND_J_MARGIN * ms->params[ms->density_index] * ck * g->dx * g->dx / (2.0 * D * kk * dt);
                 }
                 /* fmin's value without the call where the cap does not act (both ordered, Vp below) */
                 const double cap = V0[i] * jmax;

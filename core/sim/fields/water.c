@@ -162,7 +162,9 @@ static void particle_limits(const limit_scan *ls, const material_slot *ms, doubl
     *e = fmax(*e, ms->core[CP_EVAPORATION] * th / ms->core[CP_WATER_DENSITY]);
     const double ex = sat - ls->s_amb, bw = ms->core[CP_EVAPORATION];
     if (ls->latent && ex > 0 && bw > 0) {
-        const double rc = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
+        /* the smallest alpha, the dried one (material_specific_heat_min): the node the sink acts on may hold a
+         * dried particle's capacity beside a wet neighbour's excess */
+        const double rc = ms->params[ms->density_index] * material_specific_heat_min(ms);
         *l = fmax(*l, rc > 0 ? bw * ex / rc : INFINITY);
     }
 }
@@ -448,8 +450,10 @@ double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax, 
  * nodes' temperature change: a particle holding water above the saturation
  * floor whose temperature passed T_b turns the excess sensible heat into
  * vapour, dm = m c (T - T_b) / L, capped by that water, and T falls by
- * L dm / (m c) (to T_b unless the cap bit). Its heat is sum m c T (thermal.c's
- * thermal_energy), so heat lost = L x water lost to round-off, in both heat
+ * L dm / (m c) (to T_b unless the cap bit). m c is mc, the heat capacity the
+ * step heated the particle with (P2G's, at the water it held when the step
+ * began: material_specific_heat), so the sensible heat it gives up is the one
+ * the step's update put in; heat lost = L x water lost to round-off, in both heat
  * schemes: the implicit one solved for T first, and the clamp acts on the
  * solution (operator splitting; the CG never sees the sink).
  * Where the vapour goes: in a real crumb it moves through the pores to the
@@ -462,11 +466,10 @@ double water_take(hearth_scene *s, int i, double r, double *dmax, double *emax, 
  * No step limit: it is a projection onto T <= T_b, which never amplifies. A
  * pinned body's held particles (PF_HOLD_T) keep their temperature: mpm.c
  * does not call this for them. Returns the water boiled (kg). */
-double water_boil(hearth_scene *s, int i, double *T, double Tb, double vol) {
+double water_boil(hearth_scene *s, int i, double *T, double Tb, double vol, double mc) {
     particles *ps = &s->ps;
     double *W = pcold(ps, PC_WATER);
     const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
-    const double mc = pcold(ps, PC_MASS)[i] * ms->core[CP_SPECIFIC_HEAT];
     const double spare = W[i] - WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * vol;
     if (!(spare > 0) || !(mc > 0)) return 0.0;
     double dm = mc * (*T - Tb) / HEARTH_LATENT_HEAT;

@@ -177,9 +177,10 @@ double water_take(struct hearth_scene *s, int i, double r, double *dmax, double 
 /// With the scene's latent_heat, for particle i (of volume vol, m^3: MPM's
 /// P2G volume, SPH's rest volume V_0, as its saturation) whose new temperature *T passed Tb (degrees C):
 /// the excess heat boils its water above the floor, m c (*T - Tb) / L, and *T
-/// falls by L / (m c) per kg boiled (to Tb unless the water ran out). Returns
+/// falls by L / (m c) per kg boiled (to Tb unless the water ran out), mc = m c
+/// the heat capacity (J/K) the step heated it with. Returns
 /// the water boiled (kg); the vapour leaves the body. Both solvers call it.
-double water_boil(struct hearth_scene *s, int i, double *T, double Tb, double vol);
+double water_boil(struct hearth_scene *s, int i, double *T, double Tb, double vol, double mc);
 /// After transport_apply: the water crossing wet colliders' faces over dt,
 /// into CH_DMW around each contact particle's foot on the face (the boundary
 /// term of holding faces, the exchange of Robin ones).

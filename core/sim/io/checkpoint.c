@@ -28,7 +28,8 @@
  * defaults (its writer refused scenes with any other value); versions 4 and 5
  * without version 6's field_steps (1, every step: their bits) and fields' cycle (a new one); versions 4
  * to 6 without version 7's water step limits (scanned again from the particles, as their readers did) and
- * its last core material parameter, dry_conductivity (0, as wet: their bits). */
+ * its last core material parameter, dry_conductivity (0, as wet: their bits); versions 4 to 7 without
+ * version 8's last core material parameter, dry_specific_heat (0, as wet: their bits). */
 #include "checkpoint.h"
 
 #include <errno.h>
@@ -370,8 +371,9 @@ static hearth_scene *refuse_at(hearth_scene *s, hearth_error *err, const char *n
 }
 
 static int get_materials(ck_cursor *c, hearth_scene *s, const char *name, uint32_t version, hearth_error *err) {
-    /* the core parameters the file holds: before version 7, all but dry_conductivity (the last), left at 0 */
-    const int ncore = version >= 7 ? CP_COUNT : CP_DRY_CONDUCTIVITY;
+    /* the core parameters the file holds: before version 7, all but dry_conductivity and dry_specific_heat (the
+     * last two), before version 8 all but dry_specific_heat; those left at 0 (as wet) */
+    const int ncore = version >= 8 ? CP_COUNT : version >= 7 ? CP_DRY_SPECIFIC_HEAT : CP_DRY_CONDUCTIVITY;
     get_tag(c, "MATS", "the materials section is missing");
     const uint32_t nmat = get_u32(c);
     if (c->bad) return -1;

@@ -31,7 +31,8 @@
  *           version 7 appends i32 whether the water's step limits are kept (1) and f64 their
  *           dmax, emax and lmax (water.h's water_state)
  *    "MATS" u32 count; per material: name, u32 ABI, u64 schema hash,
- *           u32 nparams, f64 params, f64 core params, u32 curves, curves (each: u32 param,
+ *           u32 nparams, f64 params, f64 core params (params.h's order: version 7 appended
+ *           dry_conductivity, version 8 dry_specific_heat), u32 curves, curves (each: u32 param,
  *           u32 points, u32 flags: bit 0 irreversible, bit 1 a moisture curve; f64 x, f64 values)
  *    "COLS" u32 count; per collider: shape tree (shape_read_mem), contact and pose
  *    "PART" u32 n, u32 state stride, u32 enabled columns; per enabled column
@@ -45,7 +46,8 @@
 #include <stdint.h>
 
 #define CK_MAGIC "HEARTHCK"
-#define CK_VERSION 7u /* 7: the water's step limits in the clocks, the materials' dry_conductivity (params.h) */
+/* 7: the water's step limits in the clocks, the materials' dry_conductivity (params.h); 8: their dry_specific_heat */
+#define CK_VERSION 8u
 /// Oldest version read: a version 4 file is version 5's layout without the
 /// DEF fields version 5 appended.
 #define CK_VERSION_MIN 4u

@@ -224,8 +224,9 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
         /* the stencil's 3 nodes must lie in the 6-node tile: mpm_sort's clamp_to_grid */
         for (int d = 0; d < D; d++) HEARTH_ASSERT(base[d] >= 0 && base[d] <= GRID_T - 3);
         const double mv0 = m * v[0], mv1 = m * v[1], mv2 = m * v[2];
-        /* heat (eq. 17, weighted by heat capacity m alpha so energy is conserved across materials) */
-        const double hc = HS ? m * s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT] : 0.0, hct = HS ? hc * Tcol[i] : 0.0;
+        /* heat (eq. 17, weighted by heat capacity m alpha so energy is conserved across materials; alpha the
+         * particle's, at the water it holds: material_specific_heat) */
+        const double hc = HS ? m * material_specific_heat(&s->mats.slot[mat[i]], ps, i) : 0.0, hct = HS ? hc * Tcol[i] : 0.0;
         const double vi = J * V0[i];
         if (HS || WATER) vol[i] = vi; /* for transport.c, water_take and the volume channel */
         /* water mass and capacity rho_0^w J V_0 (eq. 15, 18) */

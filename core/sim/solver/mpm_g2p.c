@@ -135,6 +135,9 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         if (D == 2) C[0] = Dinv * B[0], C[1] = Dinv * B[1], C[2] = Dinv * B[3], C[3] = Dinv * B[4];
         else
             for (int a = 0; a < 9; a++) C[a] = Dinv * B[a];
+        /* the water the particle held when the step began, for boiling's heat capacity below (P2G's; water_take
+         * changes the water first) */
+        const double w_step = WATER ? pcold(ps, PC_WATER)[i] : 0.0;
         /* water first: its step limits use the temperature the flux was evaluated at */
         if (WATER) w_removed += water_take(s, i, ds, &w_dmax, &w_emax, &w_lmax);
         if (HEAT) { /* FLIP (eq. 21): the particle takes its nodes' temperature change */
@@ -145,7 +148,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             if (!(flags && (flags[i] & PF_HOLD_T))) {
                 Tcol[i] = T1;
                 /* interior boiling (latent_heat): wet matter stays at the boiling point (water.c) */
-                if (WATER && T1 > boil) w_removed += water_boil(s, i, &Tcol[i], boil, mpm_state_of(s)->vol[i]);
+                if (WATER && T1 > boil) w_removed += water_boil(s, i, &Tcol[i], boil, mpm_state_of(s)->vol[i],
+                                                        pcold(ps, PC_MASS)[i] * material_specific_heat_of(&s->mats.slot[mat[i]], ps, i, w_step));
             }
             if (Tcol[i] > Tmax[i]) Tmax[i] = Tcol[i];
             if (Gcol) { /* CO2 over the cycle, temperature moving linearly from T0 to T1 (§5.4), less what its

@@ -155,7 +155,8 @@ void sph_water_advance(hearth_scene *s, double dt) {
         double w = before + dt * st->dW[i];
         if (w < WATER_SATURATION_FLOOR * cap) w = WATER_SATURATION_FLOOR * cap;
         W[i] = w;
-        if (T && T[i] > boil) water_boil(s, i, &T[i], boil, vol); /* W[i] falls by what boiled */
+        /* W[i] falls by what boiled; SPH's heat reads the wet specific heat (sph_heat.c) */
+        if (T && T[i] > boil) water_boil(s, i, &T[i], boil, vol, c.m[i] * ms->core[CP_SPECIFIC_HEAT]);
         removed += before - W[i];
     }
     s->water.step_removed = removed;

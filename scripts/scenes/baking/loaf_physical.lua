@@ -11,8 +11,9 @@
 -- water (the boiling plateau), while the crust dries and heats on toward the
 -- oven. Writes, under hearth-out/loaf_physical/: loaf.csv (per frame, in real
 -- minutes: the crumb's and the crust's temperature and saturation, particle
--- values (crust_and_crumb), the loaf's height and the water left), temperature_%04d.png, and at the end temperature.png,
--- saturation.png and browning.png.
+-- values (crust_and_crumb), the loaf's height and the water left; the top's, the base's and the crumb's browning
+-- index, fields/browning.c's 0..1), temperature_%04d.png, and at the end temperature.png, saturation.png and
+-- browning.png.
 local h = require "hearth"
 local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0 }
 local oven = h.library.oven.bread
@@ -32,30 +33,34 @@ s:add { shape = h.shapes.loaf({ X0, TRAY }, WIDTH, BODY), material = h.material(
 local function height() return h.recipes.height(s, X0, TRAY, 0.14, 280) end
 -- particle values, as the unit tests read them (a probe is the grid's B-spline
 -- average over three cells, which blurs a crust a few mm thick): the crust is
--- the topmost particle within dx/2 of the loaf's vertical axis, the crumb
--- the particle nearest the axis at 45% of the loaf's height
+-- the topmost particle within dx/2 of the loaf's vertical axis, the base the
+-- lowest one there (on the tray), the crumb the particle nearest the axis at
+-- 45% of the loaf's height
 local function crust_and_crumb(H)
-  local r = s:particles { fields = { "x", "temperature", "saturation" } }
-  local top, ctr, dc = nil, nil, math.huge
+  local r = s:particles { fields = { "x", "temperature", "saturation", "browning" } }
+  local top, base, ctr, dc = nil, nil, nil, math.huge
   for i = 1, r.n do
     local x, y = r.x[3 * i - 2], r.x[3 * i - 1]
     if y > TRAY then
       if math.abs(x - X0) < P.dx / 2 and (not top or y > r.x[3 * top - 1]) then top = i end
+      if math.abs(x - X0) < P.dx / 2 and (not base or y < r.x[3 * base - 1]) then base = i end
       local d = math.abs(x - X0) + math.abs(y - (TRAY + 0.45 * H))
       if d < dc then ctr, dc = i, d end
     end
   end
-  return r.temperature[ctr], r.saturation[ctr], r.temperature[top], r.saturation[top]
+  return r.temperature[ctr], r.saturation[ctr], r.temperature[top], r.saturation[top], r.browning[top],
+    r.browning[base], r.browning[ctr]
 end
 local w0 = s:stats().water_mass
-local rows = { "t_real_min,centre_T_degC,centre_s,top_T_degC,top_s,height_m,water_left" }
+local rows = { "t_real_min,centre_T_degC,centre_s,top_T_degC,top_s,height_m,water_left,top_browning,base_browning,"
+  .. "centre_browning" }
 local last
 s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperature", path = "temperature_%04d.png" },
   on_frame = function(f)
     local H = height()
-    local Tc, sc, Tt, st = crust_and_crumb(H)
-    last = { f.t * S / 60, Tc, sc, Tt, st, H, s:stats().water_mass / w0 }
-    rows[#rows + 1] = ("%.2f,%.2f,%.4f,%.2f,%.4f,%.5f,%.4f"):format(table.unpack(last))
+    local Tc, sc, Tt, st, bt, bb, bc = crust_and_crumb(H)
+    last = { f.t * S / 60, Tc, sc, Tt, st, H, s:stats().water_mass / w0, bt, bb, bc }
+    rows[#rows + 1] = ("%.2f,%.2f,%.4f,%.2f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f"):format(table.unpack(last))
     h.write("loaf.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
   end }
@@ -63,5 +68,5 @@ s:png("temperature", "temperature.png")
 s:png("saturation", "saturation.png")
 s:png("browning", "browning.png")
 print(("after %.0f min: centre %.1f degC at saturation %.3f, top %.1f degC at saturation %.3f; height %.1f mm; "
-  .. "%.1f%% of the water left (latent_heat = %s)"):format(last[1], last[2], last[3], last[4], last[5], 1000 * last[6],
-  100 * last[7], tostring(P.latent)))
+  .. "%.1f%% of the water left (latent_heat = %s); browning: top %.3f, base %.3f, centre %.3f"):format(last[1], last[2],
+  last[3], last[4], last[5], 1000 * last[6], 100 * last[7], tostring(P.latent), last[8], last[9], last[10]))
