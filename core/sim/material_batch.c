@@ -21,7 +21,6 @@
 
 #include "exp_memo.h"
 #include "material.h"
-#include "flaws.h"
 
 /* More distinct parameters with curves than this and the run goes point by
  * point (every in-tree use has one or two). */
@@ -428,10 +427,7 @@ static void run_params_columns(material_run_params *rp, const material_slot *ms,
 static double run_points(const material_table *t, const particles *ps, const material_run *r, unsigned flags,
                          double *const tau[9], int *code, double *wave) {
     const material_slot *ms = &t->slot[r->mat];
-    double *state = pcold(ps, PC_STATE), pscratch[MATERIAL_MAX_PARAMS], pflaw[MATERIAL_MAX_PARAMS], numax = 0;
-    int fk[2];
-    const double *flaw = ps->enabled & (1u << PC_FLAW) ? pcold(ps, PC_FLAW) : NULL;
-    const int nf = flaw ? flaw_params(ms->m, fk) : 0;
+    double *state = pcold(ps, PC_STATE), pscratch[MATERIAL_MAX_PARAMS], numax = 0;
     const int stride = ps->state_stride;
     const int by_run = !ms->mix_k && ms->ncurves > 0;
     double *th = thermal_column(ms, ps, r, flags);
@@ -446,11 +442,6 @@ static double run_points(const material_table *t, const particles *ps, const mat
         }
         pt.dt = r->dt;
         pt.p = by_run ? material_run_params_at(&rp, ms, ps, i) : material_params(t, ps, r->mat, i, pscratch);
-        if (nf) { /* the flaws' factor (flaws.c) on a copy */
-            memcpy(pflaw, pt.p, sizeof(double) * (size_t)ms->m->nparams);
-            for (int f = 0; f < nf; f++) pflaw[fk[f]] *= flaw[i];
-            pt.p = pflaw;
-        }
         pt.state = state ? state + (size_t)i * stride : NULL;
         unsigned fl = flags;
         const int split = th ? material_thermal_split(ms->m, ms->core, pt.p, pt.state, r->temperature[j], th + i, r->dt,
@@ -609,15 +600,12 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
     const hearth_material *m = ms->m;
     const unsigned flags = r->flags | (m->needs & HEARTH_NEEDS_POROSITY ? MATERIAL_POROSITY_PLASTIC : 0u) |
                            (ms->fracture ? MATERIAL_DAMAGE : 0u);
-    /* the parameters that curves move: one column each; and the ones the flaws multiply (flaws.c) */
-    int vk[RUN_MAX_VARYING], nv = 0, fk[2];
-    const double *flaw = ps->enabled & (1u << PC_FLAW) ? pcold(ps, PC_FLAW) + r->i0 : NULL;
-    const int nf = flaw ? flaw_params(m, fk) : 0;
-    for (int c = 0; c < ms->ncurves + nf && nv <= RUN_MAX_VARYING; c++) {
-        const int pk = c < ms->ncurves ? ms->curves[c].param : fk[c - ms->ncurves];
+    /* the parameters that curves move: one column each */
+    int vk[RUN_MAX_VARYING], nv = 0;
+    for (int c = 0; c < ms->ncurves && nv <= RUN_MAX_VARYING; c++) {
         int seen = 0;
-        for (int k = 0; k < nv; k++) seen |= vk[k] == pk;
-        if (!seen && nv < RUN_MAX_VARYING) vk[nv] = pk;
+        for (int k = 0; k < nv; k++) seen |= vk[k] == ms->curves[c].param;
+        if (!seen && nv < RUN_MAX_VARYING) vk[nv] = ms->curves[c].param;
         nv += !seen;
     }
     if (!m->stress_block || ms->mix_k || nv > RUN_MAX_VARYING) return run_points(t, ps, r, flags, tau, code, wave);
@@ -643,13 +631,6 @@ double material_run_eval(const material_table *t, const particles *ps, const mat
         material_run_params_init(&rp, ms, ps);
         unsigned char uniform[RUN_MAX_VARYING];
         run_params_columns(&rp, ms, ps, i0, n, nv, vk, vcol, uniform);
-        for (int f = 0; f < nf; f++) /* the flaws' factor on the fracture strains, after the curves */
-            for (int v = 0; v < nv; v++)
-                if (vk[v] == fk[f]) {
-                    uniform_fill(vcol, uniform, v, ms, vk, n);
-                    uniform[v] = 0;
-                    for (int j = 0; j < n; j++) vcol[v][j] *= flaw[j];
-                }
         /* a column that holds the slot's own value at every point goes to the plugin as that value (b.p is
          * ms->params): the same values, and the plugin hoists what it computes from them (the cookie's E, whose
          * dry curve is 1 at the raw dough's ratio: its Lame constants, wave speed and K once a block) */

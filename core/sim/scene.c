@@ -27,7 +27,6 @@
 #include <unistd.h>
 
 #include "plugins.h"
-#include "flaws.h"
 #include "alloc.h"
 #include "error.h"
 #include "params.h"
@@ -417,18 +416,6 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         }
     particles *ps = &s->ps;
     if (particles_reserve(ps, ps->n + n, err)) return -1;
-    /* flaws (flaws.c, a prototype): each new particle's factor on its fracture strains, from where it is seeded */
-    const flaw_def fd = flaws_from_env(s->def.seed ? s->def.seed : 1);
-    if (fd.length > 0 && !(ps->enabled & (1u << PC_FLAW))) {
-        if (particles_enable(ps, PC_FLAW, err)) return -1;
-        for (int j = 0; j < ps->n; j++) pcold(ps, PC_FLAW)[j] = flaw_factor(&fd, pcold(ps, PC_X) + 3 * j, s->def.dim);
-    }
-    if (ps->enabled & (1u << PC_FLAW))
-        for (int i = 0; i < n; i++) {
-            double xi[3] = {0, 0, 0};
-            for (int d = 0; d < s->def.dim; d++) xi[d] = x[3 * i + d];
-            pcold(ps, PC_FLAW)[ps->n + i] = flaw_factor(&fd, xi, s->def.dim);
-        }
     const material_slot *ms = &s->mats.slot[material];
     const double rho = ms->params[ms->density_index];
     for (int i = 0; i < n; i++) {
