@@ -1,0 +1,221 @@
+/* unit_drying_front.c: does the dried crust grow as a drying front should, and
+ * converge in dx? (issue #18, helper stefan)
+ *
+ * The closed form. A wet slab (saturation s: water 1000 s kg/m^3, the rho_0^w
+ * s of Ding et al. eq. 8) whose wet part is held at the boiling point T_b
+ * (water.c's water_boil), its top in the oven (T_o, beta). Once the top is at
+ * T_b a dried layer of depth d grows over a crumb at T_b; its conductivity
+ * is k (dry_conductivity), its heat capacity rho c. Quasi-steady, the profile
+ * in the layer is linear and the flux through air film and layer in series is
+ *   q(d) = (T_o - T_b) / (a + b d),   a = 1 / beta, b = 1 / k,           (1)
+ * the surface at T_s = T_b + q b d. All the heat that enters either boils
+ * water at the front or warms the layer, whose sensible heat (linear profile)
+ * is rho c (T_s - T_b) d / 2 = rho c q b d^2 / 2. So with W = 1000 s L
+ * (latent heat per volume):
+ *   d/dt [W d + rho c b q(d) d^2 / 2] = q(d).                           (2)
+ * Without the sensible term, W dd/dt = q:
+ *   t(d) = W (a d + b d^2 / 2) / (T_o - T_b)                            (3)
+ * (the brief's d / beta + d^2 / (2 k) = (T_o - T_b) t / W). With it, since
+ * d/dd [q d^2] = (T_o - T_b) (2 a d + b d^2) / (a + b d)^2 and
+ * (2 a u + b u^2) / (a + b u) = u + a / b - (a^2 / b) / (a + b u):
+ *   t(d) = (3) + (rho c b / 2) [d^2 / 2 + (a / b) d - (a / b)^2 ln(1 + b d / a)].   (4)
+ * (4) - (3) is the Stefan number's correction, St = rho c (T_s - T_b) / W;
+ * what (4) still leaves out (the layer's profile is not quite linear while it
+ * grows) is of order St^2 (the heat-balance integral's error, Goodman 1958).
+ *
+ * The model's details, and how this case keeps them out: evaporation through
+ * the surface (eq. 8, with the wet-bulb factor) and the water's diffusion back
+ * toward the front (eq. 22) are 0 here, so water leaves only by water_boil, as
+ * (1)-(4) assume; the conductivity is linear in the water ratio
+ * (material_conductivity), so a dry particle conducts with dry_conductivity
+ * and the one at the front in between; the physical presets' time scale S
+ * multiplies every rate (conductivity, beta, ...) and divides the time, which
+ * leaves (1)-(4) in real time unchanged, so this runs in real units (S = 1).
+ *
+ * The scene: a slab spanning the box in x (the box walls are no air surface,
+ * boundary.c, so only its top meets the oven: 1D), deep enough that the front
+ * never nears the insulated bottom, everything starting wet at T_b, so the
+ * front starts at t = 0. Pinned (no mechanics), implicit heat. Bread's
+ * numbers (lua/hearth/dough_physical.lua): rho 484 kg/m^3, c 2700 J/(kg K),
+ * conductivity 0.51 wet, 0.23 dry, s = 0.218, the oven 200 degC at 30 W/(m^2 K).
+ * Measured: the dried depth as an integral, the water boiled per unit area
+ * over 1000 s (d_int), and the top particle's temperature. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mpm_fixture.h"
+
+static const double RHO = 484, CP = 2700, KW = 0.51, KD = 0.23, SAT = 0.218, TO = 200, TB = 100, BETA = 30;
+static const double DEPTH = 0.024, WIDTH = 0.024; /* the slab; the front reaches ~6.5 mm in 25 min */
+#define NT 10 /* samples, every 150 s to 25 min */
+static const double EVERY = 150;
+
+/* (3) and (4): the time at which the front reaches d. */
+static double t_of_d(double d, int sensible) {
+    const double a = 1 / BETA, b = 1 / KD, W = 1000 * SAT * HEARTH_LATENT_HEAT;
+    double t = W * (a * d + 0.5 * b * d * d) / (TO - TB);
+    if (sensible) t += 0.5 * RHO * CP * b * (0.5 * d * d + a / b * d - (a / b) * (a / b) * log1p(b * d / a));
+    return t;
+}
+
+/* Inverts t_of_d by bisection (t_of_d rises with d). */
+static double d_of_t(double t, int sensible) {
+    double lo = 0, hi = 1;
+    for (int k = 0; k < 200; k++) {
+        const double m = 0.5 * (lo + hi);
+        if (t_of_d(m, sensible) < t) lo = m;
+        else hi = m;
+    }
+    return 0.5 * (lo + hi);
+}
+
+typedef struct front {
+    double d[NT];    /* water boiled / (1000 s) per unit area (m) */
+    double half[NT]; /* the middle column's depth where the moisture ratio crosses 0.5 (m) */
+    double top[NT];  /* the top particle's temperature in the middle column (degC) */
+    double ytop;     /* its depth below the surface (m) */
+    double t_half;   /* when the top particle's moisture ratio fell below 0.5 (s) */
+    double width;    /* the front's width at the end: depth of ratio 0.1 to depth of ratio 0.9 (m) */
+    double spread;   /* the columns' dried depth at the end: (largest - smallest) / largest */
+} front;
+
+/* The middle column's particles (within dx/2 of the slab's middle): their
+ * depths and moisture ratios, top first. Returns how many. */
+static int column(const hearth_scene *s, double dx, double *depth, double *ratio, double *temp, int cap) {
+    const double *X = pcold(&s->ps, PC_X), *Wp = pcold(&s->ps, PC_WATER), *S0 = pcold(&s->ps, PC_SAT0);
+    const double *V0 = pcold(&s->ps, PC_VOL0), *T = pcold(&s->ps, PC_TEMPERATURE);
+    int n = 0;
+    for (int i = 0; i < s->ps.n && n < cap; i++) {
+        if (fabs(X[3 * i] - 0.5 * WIDTH) >= 0.5 * dx) continue;
+        double y = DEPTH - X[3 * i + 1], r = Wp[i] / (1000 * S0[i] * V0[i]), Ti = T[i];
+        int k = n++;
+        for (; k > 0 && depth[k - 1] > y; k--) depth[k] = depth[k - 1], ratio[k] = ratio[k - 1], temp[k] = temp[k - 1];
+        depth[k] = y, ratio[k] = r, temp[k] = Ti;
+    }
+    return n;
+}
+
+/* The depth where the ratio first rises past level, top down, linear between particles. */
+static double crossing(const double *depth, const double *ratio, int n, double level) {
+    if (n == 0 || ratio[0] >= level) return 0;
+    for (int k = 1; k < n; k++)
+        if (ratio[k] >= level)
+            return depth[k - 1] + (depth[k] - depth[k - 1]) * (level - ratio[k - 1]) / (ratio[k] - ratio[k - 1]);
+    return depth[n - 1];
+}
+
+/* The slab at dx, stepped at dt_max; fills f. flip: the scene's heat_flip. */
+static int run(double dx, double dt_max, double flip, front *f) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = dx;
+    d.gravity[1] = 0;
+    /* particles are seeded at least a cell from the box walls: the box starts a cell before the slab */
+    d.lo[0] = d.lo[1] = -dx;
+    d.hi[0] = WIDTH + dx;
+    d.hi[1] = DEPTH + 0.008;
+    d.oven_temperature = TO;
+    d.oven_beta = BETA;
+    d.latent_heat = 1;
+    d.boiling_point = TB;
+    d.heat_implicit = 1;
+    d.heat_flip = flip;
+    hearth_scene *s = fx_scene_def(&d);
+    if (!s) return 0;
+    hearth_error err;
+    const char *nm[] = {"E", "density", "conductivity", "specific_heat", "water_diffusivity", "evaporation", "dry_conductivity"};
+    const double v[] = {1e-2, RHO, KW, CP, 0.0, 0.0, KD};
+    const int m = hearth_scene_add_material(s, "elastic", nm, v, 7, &err);
+    if (m < 0) printf("    material: %s\n", err.msg);
+    CHECK(m >= 0);
+    const double c[3] = {0.5 * WIDTH, 0.5 * DEPTH, 0}, h[3] = {0.5 * WIDTH, 0.5 * DEPTH, 0};
+    hearth_shape *box = hearth_shape_box(c, h);
+    hearth_body_def b = hearth_default_body_def();
+    b.shape = box, b.material = m, b.jitter = 0, b.fixed = 1, b.temperature = TB, b.saturation = SAT;
+    CHECK(hearth_scene_add_body(s, &b, &err) == 0);
+    hearth_shape_free(box);
+    CHECK(hearth_scene_set_dt_limits(s, 0.5, dt_max, &err) == HEARTH_OK);
+    hearth_stats st;
+    hearth_scene_stats(s, &st);
+    const double W0 = st.water_mass;
+    enum { CAP = 512 };
+    double depth[CAP], ratio[CAP], temp[CAP];
+    f->t_half = INFINITY;
+    const int sub = 15; /* the top's drying time to EVERY / sub */
+    for (int k = 0; k < NT; k++) {
+        for (int j = 1; j <= sub; j++) {
+            if (hearth_scene_advance(s, k * EVERY + j * EVERY / sub, &err) != HEARTH_OK) {
+                printf("    advance: %s\n", err.msg);
+                CHECK(0);
+                hearth_scene_destroy(s);
+                return 0;
+            }
+            const int n = column(s, dx, depth, ratio, temp, CAP);
+            if (n > 0 && ratio[0] < 0.5 && !isfinite(f->t_half)) f->t_half = hearth_scene_time(s);
+        }
+        hearth_scene_stats(s, &st);
+        f->d[k] = (W0 - st.water_mass) / (1000 * SAT * WIDTH);
+        const int n = column(s, dx, depth, ratio, temp, CAP);
+        f->half[k] = crossing(depth, ratio, n, 0.5);
+        f->top[k] = temp[0];
+        f->ytop = depth[0];
+        if (k == NT - 1) {
+            f->width = crossing(depth, ratio, n, 0.9) - crossing(depth, ratio, n, 0.1);
+            if (getenv("FRONT_DEBUG"))
+                for (int i = 0; i < n && depth[i] < 0.012; i++)
+                    printf("      depth %.3f mm: ratio %.4f, T %.2f degC\n", 1e3 * depth[i], ratio[i], temp[i]);
+        }
+    }
+    /* each column's dried depth (particles binned by x cell): a 1D slab dries alike across */
+    const int nc = (int)lround(WIDTH / dx);
+    double *col = calloc((size_t)nc, sizeof(double));
+    const double *X = pcold(&s->ps, PC_X), *Wp = pcold(&s->ps, PC_WATER), *S0 = pcold(&s->ps, PC_SAT0);
+    const double *V0 = pcold(&s->ps, PC_VOL0);
+    for (int i = 0; i < s->ps.n; i++) {
+        int j = (int)(X[3 * i] / dx);
+        j = j < 0 ? 0 : j >= nc ? nc - 1 : j;
+        col[j] += (1000 * S0[i] * V0[i] - Wp[i]) / (1000 * SAT * dx);
+    }
+    double lo = INFINITY, hi = 0;
+    for (int j = 0; j < nc; j++) lo = fmin(lo, col[j]), hi = fmax(hi, col[j]);
+    f->spread = (hi - lo) / hi;
+    free(col);
+    printf("    dx %.4g mm, dt_max %.3g s, heat_flip %.0f: %d particles, %ld steps; columns' dried depth %.3f .. %.3f mm\n",
+           1e3 * dx, dt_max, flip, s->ps.n, s->step, 1e3 * lo, 1e3 * hi);
+    hearth_scene_destroy(s);
+    return 1;
+}
+
+static void table(const front *f, int n, const double *dxs) {
+    printf("    t (min) | d (3) | d (4) mm | d_int at dx");
+    for (int r = 0; r < n; r++) printf(" %g", 1e3 * dxs[r]);
+    printf(" mm | ratio-0.5 depth | T_s (4) | T_top (T of (4) at its depth)\n");
+    for (int k = 0; k < NT; k++) {
+        const double t = (k + 1) * EVERY, d3 = d_of_t(t, 0), d4 = d_of_t(t, 1);
+        const double q = (TO - TB) / (1 / BETA + d4 / KD);
+        printf("    %5.1f | %.3f | %.3f |", t / 60, 1e3 * d3, 1e3 * d4);
+        for (int r = 0; r < n; r++) printf(" %.3f", 1e3 * f[r].d[k]);
+        printf(" |");
+        for (int r = 0; r < n; r++) printf(" %.3f", 1e3 * f[r].half[k]);
+        printf(" | %.2f |", TB + q * d4 / KD);
+        for (int r = 0; r < n; r++) printf(" %.2f (%.2f)", f[r].top[k], TB + fmax(0, q * (d4 - f[r].ytop) / KD));
+        printf("\n");
+    }
+    for (int r = 0; r < n; r++)
+        printf("    dx %g mm: the top particle (depth %.3f mm) half dry at %.1f min, (4) puts the front there at %.1f min; "
+               "front width (ratio 0.1 to 0.9) %.3f mm = %.2f dx; columns' spread %.4f\n",
+               1e3 * dxs[r], 1e3 * f[r].ytop, f[r].t_half / 60, t_of_d(f[r].ytop, 1) / 60, 1e3 * f[r].width, f[r].width / dxs[r],
+               f[r].spread);
+}
+
+TEST(drying_front_measure) {
+    const double dxs[3] = {0.004, 0.002, 0.001};
+    front f[3];
+    const double flip = getenv("FRONT_FLIP") ? atof(getenv("FRONT_FLIP")) : 1.0, dtm = getenv("FRONT_DT") ? atof(getenv("FRONT_DT")) : 1.0;
+    for (int r = 0; r < 3; r++) run(dxs[r], dtm, flip, &f[r]);
+    table(f, 3, dxs);
+    const double t = NT * EVERY, d4 = d_of_t(t, 1), q = (TO - TB) / (1 / BETA + d4 / KD);
+    printf("    St at the end: rho c (T_s - T_b) / (1000 s L) = %.4f\n", RHO * CP * q * d4 / KD / (1000 * SAT * HEARTH_LATENT_HEAT));
+}
+
+TEST_MAIN(T(drying_front_measure))
