@@ -39,7 +39,12 @@
  * numbers (lua/hearth/dough_physical.lua): rho 484 kg/m^3, c 2700 J/(kg K),
  * conductivity 0.51 wet, 0.23 dry, s = 0.218, the oven 200 degC at 30 W/(m^2 K).
  * Measured: the dried depth as an integral, the water boiled per unit area
- * over 1000 s (d_int), and the top particle's temperature. */
+ * over 1000 s (d_int, the better-defined measure: energy is conserved, so it
+ * is the heat in less the crust's sensible heat), the middle column's depth
+ * where the moisture ratio crosses 0.5, the front's width, when the top
+ * particle is half dry, and the dried crust's temperatures, the field's (the
+ * B-spline probe) and the particles' own, at dx 4, 2, 1 mm (the table each
+ * test prints; docs/validation.md, "The drying front against Stefan"). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -78,6 +83,9 @@ typedef struct front {
     double t_half;   /* when the top particle's moisture ratio fell below 0.5 (s) */
     double width;    /* the front's width at the end: depth of ratio 0.1 to depth of ratio 0.9 (m) */
     double spread;   /* the columns' dried depth at the end: (largest - smallest) / largest */
+    double crust_probe, crust_part; /* at the end, over the middle column's dried particles (ratio < 0.01), the
+                                     * largest |T - T_(4)(depth)| / (T_s - T_b) of the probe (the B-spline average
+                                     * at the particle's place) and of the particle's own temperature */
 } front;
 
 /* The middle column's particles (within dx/2 of the slab's middle): their
@@ -161,9 +169,19 @@ static int run(double dx, double dt_max, double flip, front *f) {
         f->ytop = depth[0];
         if (k == NT - 1) {
             f->width = crossing(depth, ratio, n, 0.9) - crossing(depth, ratio, n, 0.1);
-            if (getenv("FRONT_DEBUG"))
-                for (int i = 0; i < n && depth[i] < 0.012; i++)
-                    printf("      depth %.3f mm: ratio %.4f, T %.2f degC\n", 1e3 * depth[i], ratio[i], temp[i]);
+            const double t = (k + 1) * EVERY, d4 = d_of_t(t, 1), q = (TO - TB) / (1 / BETA + d4 / KD), dT = q * d4 / KD;
+            f->crust_probe = f->crust_part = 0;
+            for (int i = 0; i < n; i++) {
+                if (ratio[i] >= 0.01) continue;
+                const double at[3] = {0.5 * WIDTH, DEPTH - depth[i], 0}, lin = TB + fmax(0, q * (d4 - depth[i]) / KD);
+                double pT = NAN;
+                CHECK(hearth_probe_point(s, "temperature", at, &pT, &err) == HEARTH_OK);
+                f->crust_probe = fmax(f->crust_probe, fabs(pT - lin) / dT);
+                f->crust_part = fmax(f->crust_part, fabs(temp[i] - lin) / dT);
+                if (getenv("FRONT_DEBUG"))
+                    printf("      depth %.3f mm: ratio %.4f, T %.2f degC, probe %.2f, (4) %.2f\n", 1e3 * depth[i], ratio[i],
+                           temp[i], pT, lin);
+            }
         }
     }
     /* each column's dried depth (particles binned by x cell): a 1D slab dries alike across */
@@ -203,19 +221,94 @@ static void table(const front *f, int n, const double *dxs) {
     }
     for (int r = 0; r < n; r++)
         printf("    dx %g mm: the top particle (depth %.3f mm) half dry at %.1f min, (4) puts the front there at %.1f min; "
-               "front width (ratio 0.1 to 0.9) %.3f mm = %.2f dx; columns' spread %.4f\n",
+               "front width (ratio 0.1 to 0.9) %.3f mm = %.2f dx; columns' spread %.4f; dried crust's worst |T - T_(4)| / (T_s - T_b): "
+               "probe %.3f, particles %.3f\n",
                1e3 * dxs[r], 1e3 * f[r].ytop, f[r].t_half / 60, t_of_d(f[r].ytop, 1) / 60, 1e3 * f[r].width, f[r].width / dxs[r],
-               f[r].spread);
+               f[r].spread, f[r].crust_probe, f[r].crust_part);
 }
 
-TEST(drying_front_measure) {
-    const double dxs[3] = {0.004, 0.002, 0.001};
+static const double DXS[3] = {0.004, 0.002, 0.001};
+
+/* The three runs at 4, 2, 1 mm, stepped at 1 s (0.25 s moves the front by
+ * under 0.02 mm and the top's drying time by under 0.3 min), FLIP heat (the
+ * scenes' default); prints the table. */
+static void three(front f[3]) {
+    for (int r = 0; r < 3; r++) CHECK(run(DXS[r], 1.0, 1.0, &f[r]));
+    table(f, 3, DXS);
+}
+
+/* The front follows (4) and converges in dx, each bar a priori:
+ * - the integral front at 25 min: successive differences d(4 mm) - d(2 mm)
+ *   over d(2 mm) - d(1 mm) above 1.6 (first order gives 2: the boiling zone is
+ *   a stencil wide, so it places the front to within O(dx)); their Richardson
+ *   limit 2 d(1 mm) - d(2 mm) within St^2 of (4) (what (4) leaves out), and
+ *   nearer (4) than half the distance (3)-(4), so the crust's sensible heat is
+ *   resolved (the test tells (3) from (4));
+ * - the top particle's moisture ratio falls below 0.5 when (4)'s front passes
+ *   its centre plus a delay that halves with dx (ratio above 1.5 each halving):
+ *   the boiling zone's width in time;
+ * - the front's width (ratio 0.1 to 0.9) under 3 dx, the B-spline stencil,
+ *   at every dx: a front, not a zone of fixed width;
+ * - the dried crust's temperature field (the B-spline probe at the middle
+ *   column's dried particles) against (4)'s linear profile: under 0.1 of
+ *   T_s - T_b at 1 mm (the steady dried slab's bar, unit_dry_crust) and
+ *   falling at first order (ratio above 1.6) from 2 to 1 mm;
+ * - the columns dry alike to 1% at 1 mm (the slab is 1D; its top corners at
+ *   the box walls are the only 2D place). */
+TEST(drying_front_follows_stefan) {
     front f[3];
-    const double flip = getenv("FRONT_FLIP") ? atof(getenv("FRONT_FLIP")) : 1.0, dtm = getenv("FRONT_DT") ? atof(getenv("FRONT_DT")) : 1.0;
-    for (int r = 0; r < 3; r++) run(dxs[r], dtm, flip, &f[r]);
-    table(f, 3, dxs);
-    const double t = NT * EVERY, d4 = d_of_t(t, 1), q = (TO - TB) / (1 / BETA + d4 / KD);
-    printf("    St at the end: rho c (T_s - T_b) / (1000 s L) = %.4f\n", RHO * CP * q * d4 / KD / (1000 * SAT * HEARTH_LATENT_HEAT));
+    three(f);
+    const int e = NT - 1;
+    const double t = NT * EVERY, d3 = d_of_t(t, 0), d4 = d_of_t(t, 1), q = (TO - TB) / (1 / BETA + d4 / KD);
+    const double st = RHO * CP * q * d4 / KD / (1000 * SAT * HEARTH_LATENT_HEAT);
+    const double ratio = (f[0].d[e] - f[1].d[e]) / (f[1].d[e] - f[2].d[e]), rich = 2 * f[2].d[e] - f[1].d[e];
+    printf("    25 min: d_int %.3f, %.3f, %.3f mm; differences' ratio %.2f (asked > 1.6); Richardson %.3f mm against (4) %.3f, "
+           "(3) %.3f mm: %.2f%% off (4) (asked < St^2 = %.2f%%, St %.4f)\n",
+           1e3 * f[0].d[e], 1e3 * f[1].d[e], 1e3 * f[2].d[e], ratio, 1e3 * rich, 1e3 * d4, 1e3 * d3, 100 * fabs(rich - d4) / d4,
+           100 * st * st, st);
+    CHECK(ratio > 1.6);
+    CHECK(fabs(rich - d4) / d4 < st * st);
+    CHECK(fabs(rich - d4) < 0.5 * fabs(d3 - d4));
+    double delay[3];
+    for (int r = 0; r < 3; r++) delay[r] = f[r].t_half - t_of_d(f[r].ytop, 1);
+    printf("    the top's drying delay: %.2f, %.2f, %.2f min (ratios %.2f, %.2f, asked > 1.5)\n", delay[0] / 60, delay[1] / 60,
+           delay[2] / 60, delay[0] / delay[1], delay[1] / delay[2]);
+    CHECK(delay[0] / delay[1] > 1.5 && delay[1] / delay[2] > 1.5);
+    for (int r = 0; r < 3; r++) CHECK(f[r].width < 3 * DXS[r]);
+    printf("    dried crust's field against (4): %.3f, %.3f, %.3f of T_s - T_b (asked < 0.1 at 1 mm, ratio %.2f > 1.6)\n",
+           f[0].crust_probe, f[1].crust_probe, f[2].crust_probe, f[1].crust_probe / f[2].crust_probe);
+    CHECK(f[2].crust_probe < 0.1);
+    CHECK(f[1].crust_probe / f[2].crust_probe > 1.6);
+    CHECK(f[2].spread < 0.01);
 }
 
-TEST_MAIN(T(drying_front_measure))
+/* What loaf_physical.lua's CSV reads (the top particle's own temperature), the
+ * dried particles' temperatures, against (4)'s profile: asked, as of the
+ * field, under 0.1 of T_s - T_b at 1 mm and falling from 2 to 1 mm. An
+ * expected failure: they scatter about the field by more, and more as dx
+ * shrinks. The cause: FLIP (eq. 21) hands a particle its nodes' change, never
+ * their value, and water_boil holds a wet particle at T_b until its water is
+ * gone, so each particle starts its dry life at 100 degC at its own moment
+ * (the rows under a node dry at different times) and carries that offset on;
+ * the finer the grid, the more rows and moments. The field (the probe) is
+ * right; heat_flip 0 (PIC) reads the nodes but the top particles then read
+ * the wet rows' 100 degC, and the front ran 17% ahead at 1 mm (7.16 against
+ * 6.14 mm, not converging: 7.30, 7.48, 7.16 at 4, 2, 1 mm). */
+TEST(drying_front_crust_particles_follow_profile) {
+    front f[3];
+    three(f);
+    const double e1 = f[2].crust_part, e2 = f[1].crust_part;
+    printf("    dried particles' own temperatures against (4): %.3f, %.3f, %.3f of T_s - T_b at 4, 2, 1 mm "
+           "(the field's: %.3f, %.3f, %.3f)\n",
+           f[0].crust_part, e2, e1, f[0].crust_probe, f[1].crust_probe, f[2].crust_probe);
+    if (e1 < 0.1 && e1 < e2) {
+        CHECK(e1 < 0.1 && e1 < e2);
+    } else {
+        XFAIL("the dried particles' temperatures miss (4)'s profile by %.3f of T_s - T_b at 1 mm, %.3f at 2 mm (asked < 0.1 "
+              "and falling), while the field there misses by %.3f: FLIP carries each particle's 100 degC start of its dry "
+              "life from the moment water_boil let it go",
+              e1, e2, f[2].crust_probe);
+    }
+}
+
+TEST_MAIN(T(drying_front_follows_stefan), T(drying_front_crust_particles_follow_profile))
