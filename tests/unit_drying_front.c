@@ -244,7 +244,7 @@ static void table(const front *f, int n, const double *dxs) {
 static double DXS[3] = {0.004, 0.002, 0.001};
 
 /* The three runs at 4, 2, 1 mm, stepped at 1 s (0.25 s moves the front by
- * under 0.02 mm and the top's drying time by under 0.3 min), FLIP heat (the
+ * under 0.02 mm and the top's half-dry time by 0.3 min at most), FLIP heat (the
  * scenes' default); prints the table. */
 static void three(front f[3]) {
     if (getenv("FRONT_DX")) DXS[0] = DXS[1] = DXS[2] = knob("FRONT_DX", 0);
