@@ -149,8 +149,8 @@ static void range_pair(lua_State *L, int idx, const char *opt, double r[2]) {
 }
 
 /* s:png(field, path, {kind = "slice"|"particles", width, height, axis, at,
- * range = {lo, hi} | "frame", colormap, grow = {lo, hi}}) -> path, info
- * (info: range, data, ticks, colormap, unit, width, height: what it drew with) */
+ * range = {lo, hi} | "frame", colormap, grow = {lo, hi}, time_scale}) -> path, info
+ * (info: range, data, ticks, colormap, unit, width, height, title: what it drew with) */
 static int l_png(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     hearth_picture_def d = hearth_default_picture_def();
@@ -159,13 +159,13 @@ static int l_png(lua_State *L) {
     const char *path = hl_out_path(L, "s:png", luaL_checkstring(L, 3), HL_PATH_MKDIRS, buf, sizeof buf);
     const char *kind = "slice";
     if (lua_istable(L, 4)) {
-        static const char *const keys[] = {"kind", "width", "height", "axis", "at", "range", "colormap", "grow", NULL};
+        static const char *const keys[] = {"kind", "width", "height", "axis", "at", "range", "colormap", "grow", "time_scale", NULL};
         lua_pushnil(L);
         while (lua_next(L, 4)) { /* a misspelt option must not be silently ignored */
             int ok = 0;
             for (int k = 0; keys[k]; k++) ok |= lua_type(L, -2) == LUA_TSTRING && !strcmp(lua_tostring(L, -2), keys[k]);
             if (!ok)
-                return luaL_error(L, "png: unknown option '%s' (valid: kind, width, height, axis, at, range, colormap, grow)",
+                return luaL_error(L, "png: unknown option '%s' (valid: kind, width, height, axis, at, range, colormap, grow, time_scale)",
                                   luaL_tolstring(L, -2, NULL));
             lua_pop(L, 1);
         }
@@ -178,6 +178,12 @@ static int l_png(lua_State *L) {
         }
         if (lua_getfield(L, 4, "at") == LUA_TNUMBER) d.at = lua_tonumber(L, -1);
         lua_pop(L, 5);
+        int ts = lua_getfield(L, 4, "time_scale");
+        if (ts == LUA_TNUMBER) d.time_scale = lua_tonumber(L, -1); /* hearth_render checks its range */
+        else if (ts != LUA_TNIL)
+            return luaL_error(L, "png: time_scale = the real seconds one simulated second stands for (a number), got %s",
+                              luaL_typename(L, -1));
+        lua_pop(L, 1);
         int t = lua_getfield(L, 4, "range");
         if (t == LUA_TSTRING && !strcmp(lua_tostring(L, -1), "frame")) d.range_mode = HEARTH_RANGE_FRAME;
         else if (t == LUA_TTABLE) range_pair(L, -1, "range", d.range), d.range_mode = HEARTH_RANGE_FIXED;
@@ -201,7 +207,7 @@ static int l_png(lua_State *L) {
     hearth_picture_info info;
     if (hearth_render(u->s, &d, path, &info, &err)) return hl_raise(L, &err);
     lua_pushstring(L, path);
-    lua_createtable(L, 0, 7);
+    lua_createtable(L, 0, 8);
     lua_createtable(L, 2, 0);
     for (int k = 0; k < 2; k++) lua_pushnumber(L, info.range[k]), lua_rawseti(L, -2, k + 1);
     lua_setfield(L, -2, "range");
@@ -219,6 +225,8 @@ static int l_png(lua_State *L) {
     lua_setfield(L, -2, "width");
     lua_pushinteger(L, info.height);
     lua_setfield(L, -2, "height");
+    lua_pushstring(L, info.title);
+    lua_setfield(L, -2, "title");
     return 2;
 }
 

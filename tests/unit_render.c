@@ -231,6 +231,48 @@ TEST(png_options_checked) {
     rm_dir(dir);
 }
 
+/* A scene whose rates run S times fast (the physical presets: a 25 minute
+ * bake in 5 simulated seconds) titles its pictures with the real time, in
+ * minutes past two of them, beside the simulated seconds and the factor;
+ * time_scale 1 titles with the simulated seconds alone; a factor out of
+ * (0, 1e9] is refused naming it and the range. */
+TEST(png_title_gives_real_time) {
+    char dir[64], path[128];
+    make_dir(dir, sizeof dir);
+    snprintf(path, sizeof path, "%s/t.png", dir);
+    hearth_scene *s = heated_scene();
+    CHECK(s != NULL);
+    hearth_error err;
+    CHECK(hearth_scene_step(s, 400, &err) == HEARTH_OK);
+    const double t = hearth_scene_time(s);
+    hearth_picture_def d = hearth_default_picture_def();
+    d.field = "temperature";
+    hearth_picture_info in;
+    const double scales[3] = {1, 300 * 60 / t, 30 / t}; /* simulated, 300 real minutes, 30 real seconds */
+    for (int k = 0; k < 3; k++) {
+        d.time_scale = scales[k];
+        CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
+        printf("time_scale %g at t = %g s: \"%s\"\n", scales[k], t, in.title);
+        double shown = NAN;
+        char unit[8] = "";
+        CHECK(sscanf(in.title, "t = %lf %7s", &shown, unit) == 2);
+        const double want = k == 1 ? 300 : k == 2 ? 30 : t;
+        CHECK(fabs(shown - want) <= 5e-4 * want); /* 4 significant digits */
+        CHECK(!strcmp(unit, k == 1 ? "min" : "s"));
+        CHECK((strstr(in.title, "simulated") != NULL) == (k > 0));
+        CHECK(strstr(in.title, "step 400") != NULL);
+    }
+    const double bad[4] = {0, -1, NAN, 2e9};
+    for (int k = 0; k < 4; k++) {
+        d.time_scale = bad[k];
+        CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_ERR_PARAM);
+        printf("%s\n", err.msg);
+        CHECK(strstr(err.msg, "time_scale") && strstr(err.msg, "(0, 1e9]"));
+    }
+    hearth_scene_destroy(s);
+    rm_dir(dir);
+}
+
 /* Every allocation a picture makes may fail: each failure is HEARTH_ERR_NOMEM
  * with nothing leaked, for both kinds (the colliders' map included). */
 TEST(png_alloc_failures) {
@@ -263,4 +305,4 @@ TEST(png_alloc_failures) {
 }
 
 TEST_MAIN(T(png_fixed_range_across_frames), T(png_colliders_drawn), T(png_colorbar_ticks), T(png_options_checked),
-          T(png_alloc_failures))
+          T(png_title_gives_real_time), T(png_alloc_failures))

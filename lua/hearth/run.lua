@@ -34,8 +34,9 @@ end
 local run_keys = { until_t = true, every = true, on_frame = true, csv = true, probes = true, png = true, until_rest = true,
   vtu = true, ply = true, movie = true }
 local run_png_keys = { field = true, path = true, kind = true, width = true, height = true, axis = true, at = true,
-  range = true, colormap = true }
-local png_keys = { kind = true, width = true, height = true, axis = true, at = true, range = true, colormap = true, grow = true }
+  range = true, colormap = true, time_scale = true }
+local png_keys = { kind = true, width = true, height = true, axis = true, at = true, range = true, colormap = true, grow = true,
+  time_scale = true }
 
 -- s:png checks its options here first, for the "did you mean" (the C method checks again)
 local raw_png = S.png
@@ -54,6 +55,11 @@ local function check_run_outputs(o)
     if o.png.colormap ~= nil then -- before the run, not at its first frame
       local ok, err = pcall(core.colormap, o.png.colormap, 0)
       if not ok then error("s:run: png: " .. tostring(err), 3) end
+    end
+    local ts = o.png.time_scale -- likewise
+    if ts ~= nil and not (type(ts) == "number" and ts > 0 and ts <= 1e9) then
+      error(("s:run: png: time_scale = %s; valid range (0, 1e9], the real seconds one simulated second stands for")
+        :format(tostring(ts)), 3)
     end
   end
   if o.csv ~= nil and type(o.csv) ~= "string" then
@@ -312,7 +318,7 @@ function S:run(o)
       st.png_range = st.png_range or {}
       local _, info = output(where, "png", self.png, self, field, frame_path(fr, pf.path or "frame_%04d.png"),
         { kind = pf.kind or "particles", width = pf.width, height = pf.height, axis = pf.axis, at = pf.at,
-          range = pf.range, colormap = pf.colormap, grow = st.png_range[field] })
+          range = pf.range, colormap = pf.colormap, grow = st.png_range[field], time_scale = pf.time_scale })
       if info then st.png_range[field] = info.range end
     end
     if rows then

@@ -609,6 +609,10 @@ typedef struct hearth_picture_def {
     hearth_picture_range_mode range_mode; ///< default HEARTH_RANGE_DEFAULT
     double range[2];              ///< field units, range[0] < range[1]; read by FIXED and GROW
     const char *colormap;         ///< a name of hearth_colormap_names(); NULL (default) = the field's own
+    /// The real seconds one simulated second stands for, in a scene whose rates run time_scale times fast (the
+    /// physical presets' oven.time_scale): the title then gives the real time beside the simulated one.
+    /// (0, 1e9]; 1 (default) = the title gives the simulated time alone.
+    double time_scale;
 } hearth_picture_def;
 
 hearth_picture_def hearth_default_picture_def(void);
@@ -625,14 +629,15 @@ typedef struct hearth_picture_info {
     double area[4];      ///< the plot area: left, top, width, height (pixels)
     double view_lo[2], view_hi[2]; ///< the domain it shows (m), horizontal then vertical axis
     double bar[4];       ///< the colour bar: left, top, width, height (pixels); range[1] at the top
+    char title[128];     ///< the title as drawn: the time (real and simulated with a time_scale) and the step
 } hearth_picture_info;
 
 /// Draw a picture of the scene as an RGB PNG, written atomically: the field in
 /// its colour map, a colour bar with 4-6 ticks and the field's name and unit,
-/// axes in metres, the simulated time, colliders as filled grey shapes with an
+/// axes in metres, the time (the real time too with a time_scale), colliders as filled grey shapes with an
 /// outline. info may be NULL. Errors: HEARTH_ERR_PARAM (an unknown field or
-/// colour map, naming the valid ones; a tensor field; a size, axis or range
-/// out of range), HEARTH_ERR_IO naming the path, HEARTH_ERR_NOMEM.
+/// colour map, naming the valid ones; a tensor field; a size, axis, range or
+/// time_scale out of range), HEARTH_ERR_IO naming the path, HEARTH_ERR_NOMEM.
 hearth_status hearth_render(const hearth_scene *s, const hearth_picture_def *def, const char *path,
                             hearth_picture_info *info, hearth_error *err);
 /// The field's fixed colour range, which frames of a run share: temperature

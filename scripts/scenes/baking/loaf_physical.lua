@@ -55,7 +55,9 @@ local w0 = s:stats().water_mass
 local rows = { "t_real_min,centre_T_degC,centre_s,top_T_degC,top_s,height_m,water_left,top_browning,base_browning,"
   .. "centre_browning" }
 local last
-s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperature", path = "temperature_%04d.png" },
+-- the pictures' titles give the real time (the oven's rates run S times fast) beside the simulated seconds
+s:run { until_t = until_t, every = until_t / P.frames,
+  png = { field = "temperature", path = "temperature_%04d.png", time_scale = S },
   on_frame = function(f)
     local H = height()
     local Tc, sc, Tt, st, bt, bb, bc = crust_and_crumb(H)
@@ -64,9 +66,9 @@ s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperat
     h.write("loaf.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
   end }
-s:png("temperature", "temperature.png")
-s:png("saturation", "saturation.png")
-s:png("browning", "browning.png")
+s:png("temperature", "temperature.png", { time_scale = S })
+s:png("saturation", "saturation.png", { time_scale = S })
+s:png("browning", "browning.png", { time_scale = S })
 print(("after %.0f min: centre %.1f degC at saturation %.3f, top %.1f degC at saturation %.3f; height %.1f mm; "
   .. "%.1f%% of the water left (latent_heat = %s); browning: top %.3f, base %.3f, centre %.3f"):format(last[1], last[2],
   last[3], last[4], last[5], 1000 * last[6], 100 * last[7], tostring(P.latent), last[8], last[9], last[10]))
