@@ -1,0 +1,196 @@
+/* unit_checkpoint_versions.c: files from older versions of the format. A
+ * version this hearth still reads (4 to 7) loads with the fields added since
+ * at their defaults and continues as the scene it was saved from; an older
+ * one is refused by its version, and an old layout this one cannot read
+ * (2D's 3x3 tensors) with a message that says why. Old files are rebuilt from
+ * a new save by cutting what later versions appended (checkpoint_fixture.h). */
+#include "checkpoint_fixture.h"
+#include "tensor2.h"
+
+static void version_2(uint8_t *b, size_t n) {
+    (void)n;
+    const uint32_t v = 2;
+    memcpy(b + 8, &v, 4);
+}
+
+/* Version 2 files are refused by their version, not parsed. */
+TEST(checkpoint_old_version) {
+    hearth_scene *s = small_scene();
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    version_2(img, n);
+    hearth_error err;
+    CHECK(hearth_scene_load_mem(img, n, "old.ck", &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "old.ck");
+    CHECK_STR_CONTAINS(err.msg, "version 2");
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+/* A 2D MPM store keeps C and F as 2x2 blocks (tensor2.h), saved as "C_xy"
+ * and "F_xy". A 2D checkpoint from before (the 9-component "C" and "F",
+ * rebuilt here from a new save: the same values, embedded) is refused with
+ * a message that says why, not read as misaligned columns. */
+TEST(checkpoint_2d_old_tensors_refused) {
+    hearth_scene *s = small_scene();
+    CHECK(s && s->def.dim == 2 && s->ps.t2);
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    const size_t np = (size_t)hearth_scene_particle_count(s);
+    const size_t at = find(img, n, "\4\0\0\0C_xy", 8);
+    CHECK(at != (size_t)-1 && at + 2 * (8 + 32 * np) <= n);
+    CHECK(memcmp(img + at + 8 + 32 * np, "\4\0\0\0F_xy", 8) == 0);
+    const size_t rest = at + 2 * (8 + 32 * np), m = at + 2 * (5 + 72 * np) + (n - rest);
+    uint8_t *b = malloc(m), *o = b;
+    memcpy(o, img, at), o += at;
+    for (int t = 0; t < 2; t++) {
+        const uint32_t len = 1;
+        memcpy(o, &len, 4), o += 4;
+        *o++ = t ? 'F' : 'C';
+        for (size_t i = 0; i < np; i++) {
+            double a[4], e[9];
+            memcpy(a, img + at + t * (8 + 32 * np) + 8 + 32 * i, sizeof a);
+            t2_embed(a, t ? 1.0 : 0.0, e);
+            memcpy(o, e, sizeof e), o += sizeof e;
+        }
+    }
+    memcpy(o, img + rest, n - rest);
+    ck_reseal(b, m);
+    hearth_error err;
+    CHECK(hearth_scene_load_mem(b, m, "old2d.ck", &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "old2d.ck");
+    CHECK_STR_CONTAINS(err.msg, "before the 2x2 particle store");
+    printf("  refused: %s\n", err.msg);
+    free(b);
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+/* A version 4 file (version 5's layout without the DEF fields 5 appended,
+ * rebuilt here from a new save without version 6's fields, version 7's dry_conductivity and version 8's
+ * dry_specific_heat) still loads,
+ * those fields at their defaults,
+ * and continues as the scene it was saved from; version 3 is refused by
+ * version (docs/checkpoints.md). */
+TEST(checkpoint_v4_reads_at_defaults) {
+    /* a version 4 file has no field_steps and reads as 1, the single-rate scheme that wrote it (checkpoint.c),
+     * not as today's default (0, automatic): the saved scene runs single rate too, so the copy continues it */
+    hearth_scene *s = small_scene_k(1);
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    if (!img || !s) return;
+    /* the DEF fields 5 and 6 appended and the clocks' version 6 and 7 tails cut out */
+    const size_t clk = clk_at(img, n), cut = V5_DEF_BYTES + V6_DEF_BYTES, tail = clk + 4 + V5_CLK_BYTES;
+    const size_t vt = V6_CLK_BYTES + V7_CLK_BYTES;
+    size_t m = n - cut - vt;
+    uint8_t *b = malloc(m);
+    memcpy(b, img, clk - cut);
+    memcpy(b + clk - cut, img + clk, tail - clk);
+    memcpy(b + tail - cut, img + tail + vt, n - tail - vt);
+    /* and the last two core material parameters (version 7's dry_conductivity, version 8's dry_specific_heat):
+     * files before 7 hold CP_COUNT - 2 of them */
+    if (!cut_core_params(b, &m, 2)) {
+        free(b);
+        free(img);
+        hearth_scene_destroy(s);
+        return;
+    }
+    const uint32_t v4 = 4;
+    memcpy(b + 8, &v4, 4);
+    ck_reseal(b, m);
+    hearth_error err;
+    hearth_scene *r = hearth_scene_load_mem(b, m, "v4.ck", &err);
+    if (!r) printf("  v4 refused: %s\n", err.msg);
+    CHECK(r != NULL);
+    if (r) {
+        const hearth_scene_def d0 = hearth_default_scene_def();
+        printf("  v4 file of %zu bytes (v5: %zu): damping %g, boiling_point %g, periodic %d %d %d, two_field %d (%g), "
+               "gas_vent %g, vent_porosity %g\n", m, n, r->def.damping, r->def.boiling_point, r->def.periodic[0],
+               r->def.periodic[1], r->def.periodic[2], r->def.two_field, r->def.two_field_friction, r->def.gas_vent,
+               r->def.vent_porosity);
+        CHECK(r->def.damping == d0.damping && r->def.boiling_point == d0.boiling_point);
+        CHECK(!r->def.periodic[0] && !r->def.periodic[1] && !r->def.periodic[2] && !r->def.two_field);
+        CHECK(r->def.two_field_friction == d0.two_field_friction && r->def.gas_vent == d0.gas_vent &&
+              r->def.vent_porosity == d0.vent_porosity);
+        continues_as(s, r, "v4 copy");
+        hearth_scene_destroy(r);
+    }
+    const uint32_t v3 = 3;
+    memcpy(b + 8, &v3, 4);
+    ck_reseal(b, m);
+    CHECK(hearth_scene_load_mem(b, m, "v3.ck", &err) == NULL);
+    printf("  %s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 8 only");
+    free(b);
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+/* A wet block in an oven whose material sets dry_specific_heat, to 300 s. */
+static hearth_scene *dry_heat_scene(double dry_c) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.1;
+    d.gravity[1] = 0;
+    d.oven_temperature = 180;
+    d.oven_beta = 10;
+    d.latent_heat = 1;
+    hearth_scene *s = fx_scene_def(&d);
+    if (!s) return NULL;
+    const char *nm[] = {"E", "density", "specific_heat", "conductivity", "saturation", "evaporation", "dry_specific_heat"};
+    const double nv[] = {1e4, 500, 2700, 0.5, 0.3, 1e-5, dry_c};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 7, &err);
+    CHECK(m >= 0);
+    const double c[3] = {0.5, 0.4, 0}, h[3] = {0.1, 0.1, 0};
+    CHECK(fx_box(s, m, c, h, 1, NULL) > 0);
+    CHECK(hearth_scene_step(s, 3, &err) == HEARTH_OK);
+    return s;
+}
+
+/* Version 8 carries a material's dry_specific_heat through a save; a version
+ * 7 file (a version 8 image without it, before the curve count) loads with 0,
+ * as wet, and continues as the scene it was saved from, which had 0. */
+TEST(checkpoint_v7_reads_dry_specific_heat_as_wet) {
+    hearth_scene *s = dry_heat_scene(900);
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    hearth_error err;
+    hearth_scene *r = img ? hearth_scene_load_mem(img, n, "v8.ck", &err) : NULL;
+    CHECK(r != NULL);
+    if (r) {
+        printf("  v8: dry_specific_heat %g saved, %g restored\n", s->mats.slot[0].core[CP_DRY_SPECIFIC_HEAT],
+               r->mats.slot[0].core[CP_DRY_SPECIFIC_HEAT]);
+        CHECK(r->mats.slot[0].core[CP_DRY_SPECIFIC_HEAT] == 900);
+        hearth_scene_destroy(r);
+    }
+    free(img);
+    hearth_scene_destroy(s);
+    s = dry_heat_scene(0);
+    img = save_image(s, &n);
+    CHECK(img != NULL);
+    size_t m = n;
+    if (!img || !cut_core_params(img, &m, 1)) {
+        free(img);
+        hearth_scene_destroy(s);
+        return;
+    }
+    const uint32_t v7 = 7;
+    memcpy(img + 8, &v7, 4);
+    ck_reseal(img, m);
+    r = hearth_scene_load_mem(img, m, "v7.ck", &err);
+    if (!r) printf("  v7 refused: %s\n", err.msg);
+    CHECK(r != NULL);
+    if (r) {
+        CHECK(r->mats.slot[0].core[CP_DRY_SPECIFIC_HEAT] == 0);
+        printf("  v7 file of %zu bytes (v8: %zu)\n", m, n);
+        continues_as(s, r, "v7 copy");
+        hearth_scene_destroy(r);
+    }
+    free(img);
+    hearth_scene_destroy(s);
+}
+
+TEST_MAIN(T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_v4_reads_at_defaults),
+          T(checkpoint_v7_reads_dry_specific_heat_as_wet))
