@@ -284,8 +284,9 @@ static const hearth_param params[P_COUNT] = {
                                0, 0, 100},
     [P_CRACK_OPENING] = {"crack_opening", "m",
                          "the stretch rule's crack band (Bazant & Oh 1983): the opening w_c at which a crack carries no "
-                         "more tension (G_f = f_t w_c / 2); past its fracture strain a point softens over the strain "
-                         "w_c / crack_band; 0 = no softening (the point cracks at once)",
+                         "more tension (G_f = f_t w_c / 2); past its fracture strain a point softens from its peak over the "
+                         "crack strain w_c / crack_band - fracture_strain (<= 0: it cracks at its peak); 0 = no "
+                         "softening (the point cracks at once)",
                          0, 0, 1},
     [P_CRACK_BAND] = {"crack_band", "m",
                       "the crack band's width h, the point's size (a scene's h.material gets its cell size when the "
