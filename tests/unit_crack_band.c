@@ -104,7 +104,16 @@ static band_run pull_bar(double dx, double wc) {
     const int n = s->ps.n;
     double *W = calloc((size_t)n, sizeof *W), *sig = malloc((size_t)n * 9 * sizeof *sig), *Cn = malloc((size_t)n * 4 * sizeof *Cn);
     double *x0 = malloc((size_t)n * sizeof *x0); /* each particle's x at rest, by id */
-    for (int i = 0; i < n; i++) x0[hearth_scene_particle_ids(s)[i]] = pcold(&s->ps, PC_X)[3 * i];
+    for (int i = 0; i < n; i++) { /* ids are given from 0 at seeding: the test's arrays are indexed by them */
+        const int k = hearth_scene_particle_ids(s)[i];
+        CHECK(k >= 0 && k < n);
+        if (k < 0 || k >= n) {
+            hearth_scene_destroy(s);
+            free(W), free(sig), free(Cn), free(x0);
+            return R;
+        }
+        x0[k] = pcold(&s->ps, PC_X)[3 * i];
+    }
     const int stride = s->ps.state_stride;
     hearth_error err;
     if (hearth_scene_particle_field(s, "stress", sig, &err) != HEARTH_OK) CHECK(0);
