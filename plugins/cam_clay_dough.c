@@ -185,23 +185,40 @@
  * particle thick (the muffin: 26 particles at 4 mm). A crack band (Bazant &
  * Oh 1983, Materiaux et Constructions 16:155) softens instead: past its
  * fracture strain (the Miner sum at 1, D = D_ON = 0.5) the point's tensile
- * principal stresses fall linearly to 0 (D = 1) over a further stretch
- * w_c / h along N, w_c = crack_opening the opening at which the crack
- * carries nothing (Hillerborg, Modeer & Petersson 1976, Cem. Concr. Res.
- * 6:773: the fictitious crack, G_f = f_t w_c / 2 for linear softening) and
- * h = crack_band the band's width, the point's size. The energy a crack
- * takes per unit area, h times f_t (w_c / h) / 2, is then G_f whatever the
- * cell, which is what makes a softening result converge with dx (exact for
- * a point at its yield surface; an elastic one's undamaged tension keeps
- * growing over the softening and its crack takes f_t w_c / 2 (1 + (w_c /
- * h) / (3 eps_f)): tests/unit_dough.c, dough_crack_band_softening). w_c,
- * not G_f, is the parameter: the presets' stresses are animation-scaled
- * (lua/hearth/dough.lua), and an opening is a length the scaling leaves
- * alone. Past the peak D only grows (a crack that has started does not
- * heal), and compression is carried whole, as the core's cut-off at D = 1.
- * The core knows nothing of it: the plugin scales its own tau (the gas,
- * water and thermal terms stay until D = 1). crack_opening = 0 (default):
- * no band, the stretch rule as it was, bit for bit.
+ * principal stresses fall linearly from the peak's to 0 (D = 1) over a
+ * further crack strain w_c / h - eps_f along N, w_c = crack_opening the
+ * opening at which the crack carries nothing (Hillerborg, Modeer & Petersson
+ * 1976, Cem. Concr. Res. 6:773: the fictitious crack, G_f = f_t w_c / 2 for
+ * linear softening) and h = crack_band the band's width, the point's size.
+ * The band's work per volume to separation, its elastic energy at the peak
+ * f_t eps_f / 2 and the softening's f_t (w_c / h - eps_f) / 2, is then
+ * f_t w_c / (2 h), and a crack takes G_f per unit area whatever the cell
+ * (Bazant & Oh's crack strain: the softening is on the stretch past the
+ * elastic one). Two choices make it so for a point that stays elastic
+ * (issue #18, helper crackband; tests/unit_crack_band.c pulls a bar apart in
+ * the MPM solver at three dx): the softening stretch is w_c / h - eps_f, not
+ * w_c / h, and the tension falls from the peak's: an elastic point's
+ * undamaged tension keeps growing past the peak, so it is taken at most at
+ * the elastic strain of eps_f (band_strength). Before, the tension was the
+ * undamaged one times 1 - x / (w_c / h): the elastic energy at the peak came
+ * on top (h f_t eps_f / 2 per area, growing with the cell), the growing
+ * tension added f_t (w_c / h)^2 h / (6 eps_f), and where w_c / h > eps_f the
+ * band hardened past its peak and the softening ran into its neighbours
+ * (the bar's band 4 cells wide at 1 mm, 8 at 0.5 mm; 2.4-4.6 G_f per area).
+ * A point at its yield surface (its tension flat) takes h f_t (w_c / h -
+ * eps_f) / 2 by softening, its pre-peak share spent as plastic work. A cell
+ * too large for the band, w_c / h <= eps_f (h >= w_c / eps_f, Bazant & Oh's
+ * limit on the element size, h < 2 E G_f / f_t^2), cannot take G_f at f_t:
+ * there the point drops at its peak (D to 1), as without a band, and its
+ * crack takes h f_t eps_f / 2 > G_f (the standard remedy, a strength
+ * lowered to sqrt(2 E G_f / h), was not taken: it changes where a crust
+ * cracks). w_c, not G_f, is the parameter: the presets' stresses are
+ * animation-scaled (lua/hearth/dough.lua), and an opening is a length the
+ * scaling leaves alone. Past the peak D only grows (a crack that has
+ * started does not heal), and compression is carried whole, as the core's
+ * cut-off at D = 1. The core knows nothing of it: the plugin scales its own
+ * tau (the gas, water and thermal terms stay until D = 1). crack_opening = 0
+ * (default): no band, the stretch rule as it was, bit for bit.
  *
  * ---- state ---------------------------------------------------------------------
  * Eight doubles: b^E (xx, yy, zz, xy, yz, zx), J^P and the damage D. Why b^E and not F^E:
@@ -267,8 +284,9 @@ static const hearth_param params[P_COUNT] = {
                                0, 0, 100},
     [P_CRACK_OPENING] = {"crack_opening", "m",
                          "the stretch rule's crack band (Bazant & Oh 1983): the opening w_c at which a crack carries no "
-                         "more tension (G_f = f_t w_c / 2); past its fracture strain a point softens over the strain "
-                         "w_c / crack_band; 0 = no softening (the point cracks at once)",
+                         "more tension (G_f = f_t w_c / 2); past its fracture strain a point softens from its peak over the "
+                         "crack strain w_c / crack_band - fracture_strain (<= 0: it cracks at its peak); 0 = no "
+                         "softening (the point cracks at once)",
                          0, 0, 1},
     [P_CRACK_BAND] = {"crack_band", "m",
                       "the crack band's width h, the point's size (a scene's h.material gets its cell size when the "
@@ -559,43 +577,59 @@ static void fracture_update(double ef, double *st, double e1) {
  * A point that dries while at rest gains nothing; a skin the rise stretches
  * while it is brittle spends its small fracture strain. nd = N : D.
  * With a crack band (header, "the crack band") the same sum fills D up to
- * D_ON, the peak; past it D counts the stretch over the band's softening
- * strain w_c / h, only forward: a crack that has started does not heal. */
+ * D_ON, the peak; past it D counts the stretch over the band's crack strain
+ * w_c / h - eps_f, only forward: a crack that has started does not heal. */
 #define D_ON 0.5
 static double band_strain(const double *prm) { /* w_c / h, 0 without a crack band */
     const double wc = prm[P_CRACK_OPENING], h = prm[P_CRACK_BAND];
     return wc > 0 && h > 0 ? wc / h : 0;
 }
 
-static void fracture_stretch_update(const double *prm, double *st, double nd, double dt) {
+/* The point's strain to fracture now: fracture_strain over the heat-set's
+ * share (fracture_unset), or the set crumb's when smaller; HUGE_VAL raw. */
+static double fracture_strain_now(const double *prm) {
     double ef = prm[P_FRACTURE_STRAIN];
-    if (!(ef > 0) || st[S_DAMAGE] >= 1 || !(nd == nd)) return;
     const double un = prm[P_FRACTURE_UNSET]; /* the heat-set's share of the water's brittleness (header) */
     if (un > 0) ef = un < 1 ? ef / (1 - un) : HUGE_VAL;
     const double es = prm[P_FRACTURE_STRAIN_SET]; /* the set crumb's (header, "the set crumb") */
     if (es > 0 && es < ef) ef = es;
+    return ef;
+}
+
+static void fracture_stretch_update(const double *prm, double *st, double nd, double dt) {
+    if (!(prm[P_FRACTURE_STRAIN] > 0) || st[S_DAMAGE] >= 1 || !(nd == nd)) return;
+    const double ef = fracture_strain_now(prm);
     const double de = 0.816496580927726 * nd * dt; /* sqrt(2/3) N : D dt, the stretch along N */
     const double eb = band_strain(prm);
     if (!(eb > 0)) {
         st[S_DAMAGE] = fmin(1, fmax(0, st[S_DAMAGE] + de / ef));
         return;
     }
+    const double u = eb - ef; /* the crack strain to separation (header); none: the band drops at its peak */
     double d = st[S_DAMAGE];
     if (d < D_ON) {
         d = fmax(0, d + D_ON * de / ef);
-        if (d > D_ON) d = D_ON + (1 - D_ON) * ((d - D_ON) / D_ON * ef) / eb; /* the stretch past the peak, into the band */
+        if (d > D_ON) d = u > 0 ? D_ON + (1 - D_ON) * ((d - D_ON) / D_ON * ef) / u : 1; /* the stretch past the peak */
     } else if (de > 0) {
-        d += (1 - D_ON) * de / eb;
+        d = u > 0 ? d + (1 - D_ON) * de / u : 1;
     }
     st[S_DAMAGE] = fmin(1, d);
 }
 
-/* The band's remaining strength 1 - w, w = (D - D_ON) / (1 - D_ON): the
- * linear softening of the crack band (header), 1 before the peak or without
- * a band. */
-static double band_strength(const double *prm, const double *st) {
+/* The band's strength past its peak (header, "the crack band"): with
+ * w = (D - D_ON) / (1 - D_ON), the tension falls linearly from the peak's,
+ * (1 - w) times the tension of the elastic strain at fracture. The
+ * undamaged tension of a point that stays elastic keeps growing past the
+ * peak (its deviatoric elastic strain el, the return's, grows as sqrt(3/2)
+ * times the stretch), so it is taken at most at that of the point's
+ * fracture strain, el_f = sqrt(3/2) eps_f: the factor el_f / el. A point at
+ * its yield surface (el <= el_f) keeps its tension. 1 before the peak or
+ * without a band. */
+static double band_strength(const double *prm, const double *st, double el) {
     if (!(prm[P_FRACTURE_STRETCH] > 0.5) || !(band_strain(prm) > 0) || !(st[S_DAMAGE] > D_ON)) return 1;
-    return fmax(0, 1 - (st[S_DAMAGE] - D_ON) / (1 - D_ON));
+    const double w = fmin(1, (st[S_DAMAGE] - D_ON) / (1 - D_ON));
+    const double ef = 1.224744871391589 * fracture_strain_now(prm); /* sqrt(3/2) eps_f */
+    return el > ef ? (1 - w) * (ef / el) : 1 - w;
 }
 
 /* tau with each tensile principal value times r (the band's strength): a
@@ -685,7 +719,7 @@ static int stress_near(hearth_point *pt, double mu, double lambda, double m, con
         }
     }
     hencky_tau(mu, lambda, ev, e, ratio, tau);
-    const double r = band_strength(prm, st);
+    const double r = band_strength(prm, st, ratio * sqrt(norm2_9(e)));
     if (r < 1) band_soften(tau, r);
     return 0;
 }
@@ -751,7 +785,7 @@ static int stress_law(hearth_point *pt, double J, double mu, double lambda, doub
         if (prm[P_FRACTURE_STRETCH] > 0.5) fracture_stretch_update(prm, st, dir_stretch_eigen(e, Q, pt->grad_v), pt->dt);
         else fracture_update(prm[P_FRACTURE_STRAIN], st, ratio * fmax(e[0], fmax(e[1], e[2])));
     }
-    const double tv = lambda * ev, r = band_strength(prm, st);
+    const double tv = lambda * ev, r = band_strength(prm, st, ratio * sqrt(s2));
     double d[3];
     for (int i = 0; i < 3; i++) {
         d[i] = tv + 2 * mu * (ev / 3 + ratio * e[i]);

@@ -261,7 +261,12 @@
 --    to (DRY), so a crack relieves the skin only within about its own
 --    thickness (a film cracking on a compliant substrate cracks at a spacing
 --    of a few thicknesses: Hutchinson & Suo 1992, Adv. Appl. Mech. 29:63),
---    one particle here.
+--    one particle here. Since helper crackband the band softens from its
+--    peak over w_c / h - eps_f, so a crack takes G_f per area only in a cell
+--    h < w_c / eps_f: 3 mm for the driest skin (eps_f 0.02), 0.4 mm for the
+--    set crumb (SET's 0.15). In a larger cell the point drops at its peak as
+--    without a band: the plain loaf at 4 mm is back to 9.96 mm
+--    (docs/validation.md, "Is the crack band mesh-objective?").
 --  * HEAT_SET (issue #18, helper crisp): drying alone does not make a crust
 --    brittle; a film that dries before the heat has set its starch and
 --    gluten is leathery (cam_clay_dough.c's "the heat-set", with its

@@ -565,8 +565,8 @@ local function host_yield()
 end
 
 -- A crack band (Bazant & Oh 1983) is as wide as the point that cracks: a material given crack_band = 0
--- (lua/hearth/dough.lua's presets) registers with the scene's cell size dx, so its softening strain w_c / h and
--- the energy a crack takes (G_f per area) do not change with the resolution.
+-- (lua/hearth/dough.lua's presets) registers with the scene's cell size dx, so the energy a crack takes (G_f per
+-- area) does not change with the resolution while dx < w_c / fracture_strain (cam_clay_dough.c, "the crack band").
 local function register(s, m, params)
   if params.crack_band == 0 then
     local p = {}
