@@ -1,0 +1,213 @@
+/* subcell.c: heat exchanged inside a cell among dried particles (issue #18).
+ *
+ * Why. FLIP (Ding et al. 2019 eq. 21) hands a particle its nodes' temperature
+ * change, never their value, so a difference between particles that share
+ * nodes is never damped: the B-spline field averages it away and the
+ * particles keep it. Under latent_heat it grows: water_boil holds a wet
+ * particle at the boiling point while a dried neighbour on the same nodes
+ * keeps its full share of the heat the nodes take. The dried crust's own
+ * temperatures (what browning integrates) then scatter about the right field
+ * by more as dx falls (docs/validation.md, "Dried particles take the field's
+ * temperature" and "Sub-cell exchange among dried particles").
+ *
+ * What. Real conduction damps a mode of wavelength dx at the rate
+ *   r = kappa (2 pi / dx)^2 / (rho alpha) = pi^2 kappa / (rho alpha (dx/2)^2)
+ * (the sub-cell mode's decay, taken at the dried material's kappa and alpha,
+ * the crust this acts on). Each dried particle p (weight phi_p, its dryness)
+ * relaxes, over the fields' time dt, by
+ *   dT_p = k_p phi_p sum_i w_ip (Tbar_i - T0_p),  k_p = 1 - exp(-r_p dt),
+ *   Tbar_i = S_i / W_i,  S_i = sum_p w_ip a_p T0_p,  W_i = sum_p w_ip a_p,
+ *   a_p = k_p phi_p C_p,  C_p = m_p alpha_p(w_p)  (material_specific_heat_of),
+ * T0 the particles' step-start temperatures (P2G's), nodes with W_i = 0
+ * skipped. Summed with weights C_p this is sum_i (Tbar_i W_i - S_i) = 0:
+ * exactly conserving, node by node, for any mix of materials (k_p is folded
+ * into the weight for that). Wet particles (phi = 0) take no part, so no heat
+ * is moved into the boiling front and the kink between the dried profile and
+ * the wet rows at the boiling point stays: the exchange acts on a particle's
+ * difference from the dried particles' own field, not from the B-spline
+ * average over wet and dried (helper boilflip's relaxations toward that
+ * average moved heat into the front or lost it). On a linear profile it does
+ * nothing in the interior (the quadratic B-spline reproduces linears).
+ *
+ * Rejected: a relaxation toward CH_T or CH_T0 (the average over every
+ * particle; docs/validation.md lists the five that broke the front or the
+ * books); a source deposited on the grid for the next solve (a step's lag).
+ *
+ * Order. Serial over the particles in their sorted order (the same at any
+ * thread count); on MPI slabs the node sums go through the halo exchange
+ * (mpm_ranks_fields_sum), in the replicated mode every rank holds every
+ * particle and computes the same. */
+#include "subcell.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "scene.h"
+#include "mpm.h"
+#include "material.h"
+#include "grid.h"
+
+#define SUBCELL_PI 3.14159265358979323846
+
+/* Which particles are dried: SUBCELL_PHI 0, the dryness 1 - X/X0 clamped to
+ * [0, 1]; 1, only particles that are dry (X/X0 < 0.01, past water_boil's
+ * hold) with weight 1. */
+#ifndef SUBCELL_LINEAR
+#define SUBCELL_LINEAR 1
+#endif
+#ifndef SUBCELL_PHI
+#define SUBCELL_PHI 1
+#endif
+
+static double dryness(const material_slot *ms, const particles *ps, int i) {
+    const double r = material_moisture_ratio(ms, ps, i);
+#if SUBCELL_PHI == 0
+    return r >= 1 ? 0.0 : r <= 0 ? 1.0 : 1.0 - r;
+#else
+    return r < 0.01 ? 1.0 : 0.0;
+#endif
+}
+
+/* The sub-cell rate of a dried particle of material ms (1/s). */
+static double subcell_rate(const material_slot *ms, double dx) {
+    const double kd = ms->core[CP_DRY_CONDUCTIVITY] > 0 ? ms->core[CP_DRY_CONDUCTIVITY] : ms->core[CP_CONDUCTIVITY];
+    const double rho = ms->params[ms->density_index], ad = material_specific_heat_min(ms), h = 0.5 * dx;
+    return rho > 0 && ad > 0 ? SUBCELL_PI * SUBCELL_PI * kd / (rho * ad * h * h) : 0.0;
+}
+
+/* The scratch channels, dead after thermal_finish until the next step's P2G
+ * (grid.c: written whole before read): W_i, S_i, and the first moments
+ * sum_p w_ip a_p (x_p - x_i) along each axis. */
+enum { SC_W = CH_R, SC_S = CH_B };
+static const int SC_M[3] = {CH_CG_P, CH_CG_R, CH_HC};
+
+/* Node gi's dried mean Tbar, the dried particles' centroid xbar, and the
+ * gradient G of the dried particles' field there: the least-squares fit of
+ * Tbar_j - Tbar_i = G . (xbar_j - xbar_i) over its neighbours j that hold
+ * dried particles (weighted by W_j), exact for a linear profile whatever the
+ * particles' places. G = 0 where the neighbours do not span the dimensions.
+ * Returns 0 where the node holds no dried particle. */
+static int node_fit(const grid *g, const int gi[3], double *Tbar, double xbar[3], double G[3]) {
+    const int D = g->dim, NPB = g->nodes_per_block;
+    int l;
+    const double *node = grid_node_at(g, gi, &l);
+    if (!node || !(node[SC_W * NPB + l] > 0)) return 0;
+    const double Wi = node[SC_W * NPB + l];
+    *Tbar = node[SC_S * NPB + l] / Wi;
+    for (int d = 0; d < 3; d++) xbar[d] = d < D ? g->lo[d] + gi[d] * g->dx + node[SC_M[d] * NPB + l] / Wi : 0.0, G[d] = 0;
+    double A[3][3] = {{0}}, b[3] = {0};
+    for (int a = -1; a <= 1; a++)
+        for (int c = -1; c <= 1; c++)
+            for (int e = (D == 3 ? -1 : 0); e <= (D == 3 ? 1 : 0); e++) {
+                if (!a && !c && !e) continue;
+                const int gj[3] = {gi[0] + a, gi[1] + c, gi[2] + e};
+                int lj;
+                const double *nj = grid_node_at(g, gj, &lj);
+                if (!nj || !(nj[SC_W * NPB + lj] > 0)) continue;
+                const double Wj = nj[SC_W * NPB + lj], dT = nj[SC_S * NPB + lj] / Wj - *Tbar;
+                double r[3];
+                for (int d = 0; d < D; d++) r[d] = g->lo[d] + gj[d] * g->dx + nj[SC_M[d] * NPB + lj] / Wj - xbar[d];
+                for (int p = 0; p < D; p++) {
+                    b[p] += Wj * r[p] * dT;
+                    for (int q = 0; q < D; q++) A[p][q] += Wj * r[p] * r[q];
+                }
+            }
+    /* solve A G = b (Cramer's rule); a near-singular A (the neighbours on a line) leaves G = 0 */
+    const double tr = A[0][0] + A[1][1] + A[2][2];
+    if (D == 2) {
+        const double det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+        if (!(det > 1e-6 * tr * tr)) return 1;
+        G[0] = (b[0] * A[1][1] - b[1] * A[0][1]) / det;
+        G[1] = (A[0][0] * b[1] - A[1][0] * b[0]) / det;
+    } else {
+        const double c00 = A[1][1] * A[2][2] - A[1][2] * A[2][1], c01 = A[1][2] * A[2][0] - A[1][0] * A[2][2],
+                     c02 = A[1][0] * A[2][1] - A[1][1] * A[2][0];
+        const double det = A[0][0] * c00 + A[0][1] * c01 + A[0][2] * c02;
+        if (!(det > 1e-9 * tr * tr * tr)) return 1;
+        const double c11 = A[0][0] * A[2][2] - A[0][2] * A[2][0], c12 = A[0][1] * A[2][0] - A[0][0] * A[2][1],
+                     c22 = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+        /* A is symmetric: its inverse is its cofactor matrix over det */
+        G[0] = (c00 * b[0] + c01 * b[1] + c02 * b[2]) / det;
+        G[1] = (c01 * b[0] + c11 * b[1] + c12 * b[2]) / det;
+        G[2] = (c02 * b[0] + c12 * b[1] + c22 * b[2]) / det;
+    }
+    return 1;
+}
+
+hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
+    particles *ps = &s->ps;
+    grid *g = &s->g;
+    if (!(s->def.latent_heat && (ps->enabled & (1u << PC_WATER)) && (ps->enabled & (1u << PC_TEMPERATURE)))) return HEARTH_OK;
+    const int D = g->dim, NPB = g->nodes_per_block, n = ps->n;
+    const double *X = pcold(ps, PC_X), *M = pcold(ps, PC_MASS), *Wc = pcold(ps, PC_WATER);
+    const int *mat = pcoli(ps, PC_MAT);
+    const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
+    double *T = pcold(ps, PC_TEMPERATURE);
+    int any = 0;
+    for (int i = 0; i < n && !any; i++)
+        any = !(flags && (flags[i] & PF_HOLD_T)) && dryness(&s->mats.slot[mat[i]], ps, i) > 0;
+    /* every rank must take part in the slab exchange below, so only a scene of one rank may stop here */
+    if (!any && s->mpm->nranks == 1) return HEARTH_OK;
+    const int nch = 2 + D, chs[5] = {SC_W, SC_S, SC_M[0], SC_M[1], SC_M[2]};
+    for (int k = 0; k < g->nactive; k++) {
+        double *d = grid_block(g, k);
+        for (int c = 0; c < nch; c++) memset(d + chs[c] * NPB, 0, sizeof(double) * (size_t)NPB);
+    }
+    /* W_i, S_i and the first moments */
+    for (int i = 0; i < n; i++) {
+        if (flags && (flags[i] & PF_HOLD_T)) continue;
+        const material_slot *ms = &s->mats.slot[mat[i]];
+        const double phi = dryness(ms, ps, i);
+        if (!(phi > 0)) continue;
+        const double kp = -expm1(-subcell_rate(ms, g->dx) * fdt);
+        const double a = kp * phi * M[i] * material_specific_heat_of(ms, ps, i, Wc[i]);
+        if (!(a > 0)) continue;
+        int base[3];
+        double w[3][3], dw[3][3];
+        grid_point_weights(g, X + 3 * i, base, w, dw);
+        for (int ax = 0; ax < 3; ax++)
+            for (int b = 0; b < 3; b++)
+                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                    const double wt = w[0][ax] * w[1][b] * w[2][c];
+                    const int gi[3] = {base[0] + ax, base[1] + b, D == 3 ? base[2] + c : 0};
+                    int l;
+                    double *node = grid_node_at(g, gi, &l);
+                    if (!node || !(wt > 0)) continue;
+                    node[SC_W * NPB + l] += wt * a;
+                    node[SC_S * NPB + l] += wt * a * T[i];
+                    for (int d = 0; d < D; d++) node[SC_M[d] * NPB + l] += wt * a * (X[3 * i + d] - (g->lo[d] + gi[d] * g->dx));
+                }
+    }
+    hearth_status st = mpm_ranks_fields_sum(s, chs, nch, err);
+    if (st) return st;
+    /* each dried particle toward its nodes' dried fits, from the same step-start values: the sums above read T
+     * before any particle changes. Summed with weights C_p the change is sum_i [W_i Tbar_i - S_i + G_i .
+     * (sum_p w_ip a_p x_p - W_i xbar_i)] = 0 for any G_i: xbar_i is that centroid. */
+    for (int i = 0; i < n; i++) {
+        if (flags && (flags[i] & PF_HOLD_T)) continue;
+        const material_slot *ms = &s->mats.slot[mat[i]];
+        const double phi = dryness(ms, ps, i);
+        if (!(phi > 0)) continue;
+        const double kp = -expm1(-subcell_rate(ms, g->dx) * fdt);
+        if (!(kp * phi * M[i] * material_specific_heat_of(ms, ps, i, Wc[i]) > 0)) continue;
+        int base[3];
+        double w[3][3], dw[3][3];
+        grid_point_weights(g, X + 3 * i, base, w, dw);
+        double sum = 0;
+        for (int ax = 0; ax < 3; ax++)
+            for (int b = 0; b < 3; b++)
+                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                    const double wt = w[0][ax] * w[1][b] * w[2][c];
+                    const int gi[3] = {base[0] + ax, base[1] + b, D == 3 ? base[2] + c : 0};
+                    double Tb, xb[3], G[3];
+                    if (!(wt > 0) || !node_fit(g, gi, &Tb, xb, G)) continue;
+                    double fit = Tb;
+#if SUBCELL_LINEAR
+                    for (int d = 0; d < D; d++) fit += G[d] * (X[3 * i + d] - xb[d]);
+#endif
+                    sum += wt * (fit - T[i]);
+                }
+        T[i] += kp * phi * sum;
+    }
+    return HEARTH_OK;
+}
