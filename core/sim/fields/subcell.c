@@ -46,12 +46,16 @@
 #include "mpm.h"
 #include "material.h"
 #include "grid.h"
+#include "hearth/tensor.h"
 
 #define SUBCELL_PI 3.14159265358979323846
 
 /* Which particles are dried: SUBCELL_PHI 0, the dryness 1 - X/X0 clamped to
  * [0, 1]; 1, only particles that are dry (X/X0 < 0.01, past water_boil's
  * hold) with weight 1. */
+#ifndef SUBCELL_SPAN
+#define SUBCELL_SPAN 0.005
+#endif
 #ifndef SUBCELL_LINEAR
 #define SUBCELL_LINEAR 1
 #endif
@@ -112,24 +116,34 @@ static int node_fit(const grid *g, const int gi[3], double *Tbar, double xbar[3]
                     for (int q = 0; q < D; q++) A[p][q] += Wj * r[p] * r[q];
                 }
             }
-    /* solve A G = b (Cramer's rule); a near-singular A (the neighbours on a line) leaves G = 0 */
-    const double tr = A[0][0] + A[1][1] + A[2][2];
-    if (D == 2) {
-        const double det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
-        if (!(det > 1e-6 * tr * tr)) return 1;
-        G[0] = (b[0] * A[1][1] - b[1] * A[0][1]) / det;
-        G[1] = (A[0][0] * b[1] - A[1][0] * b[0]) / det;
-    } else {
-        const double c00 = A[1][1] * A[2][2] - A[1][2] * A[2][1], c01 = A[1][2] * A[2][0] - A[1][0] * A[2][2],
-                     c02 = A[1][0] * A[2][1] - A[1][1] * A[2][0];
-        const double det = A[0][0] * c00 + A[0][1] * c01 + A[0][2] * c02;
-        if (!(det > 1e-9 * tr * tr * tr)) return 1;
-        const double c11 = A[0][0] * A[2][2] - A[0][2] * A[2][0], c12 = A[0][1] * A[2][0] - A[0][0] * A[2][1],
-                     c22 = A[0][0] * A[1][1] - A[0][1] * A[1][0];
-        /* A is symmetric: its inverse is its cofactor matrix over det */
-        G[0] = (c00 * b[0] + c01 * b[1] + c02 * b[2]) / det;
-        G[1] = (c01 * b[0] + c11 * b[1] + c12 * b[2]) / det;
-        G[2] = (c02 * b[0] + c12 * b[1] + c22 * b[2]) / det;
+    /* G = A^+ b over the directions the neighbours span well: the eigenvalues of A / sum W_j are the
+     * neighbours' spread squared (3/4 dx^2 along each axis for a full 3^dim neighbourhood); a direction with
+     * under SUBCELL_SPAN dx^2 (a single row of dried particles, a corner) is left out, G's component there 0.
+     * Without this a row whose centroids lie almost on a line got gradients of 5e6 K/m across it, and the
+     * fit's extrapolation ran away (the loaf's base, dx 2.5 mm). */
+    double Wn = 0;
+    for (int p = 0; p < 3; p++) Wn += A[p][p];
+    if (!(Wn > 0)) return 1;
+    double S[9], lam[3], Q[9];
+    for (int p = 0; p < 3; p++)
+        for (int q = 0; q < 3; q++) S[3 * p + q] = p < D && q < D ? A[p][q] : 0.0;
+    hearth_t3_sym_eigen(S, lam, Q);
+    double wsum = 0;
+    for (int a = -1; a <= 1; a++) /* the neighbours' weight, for the spread's normalisation */
+        for (int c = -1; c <= 1; c++)
+            for (int e = (D == 3 ? -1 : 0); e <= (D == 3 ? 1 : 0); e++) {
+                if (!a && !c && !e) continue;
+                const int gj[3] = {gi[0] + a, gi[1] + c, gi[2] + e};
+                int lj;
+                const double *nj = grid_node_at(g, gj, &lj);
+                if (nj && nj[SC_W * NPB + lj] > 0) wsum += nj[SC_W * NPB + lj];
+            }
+    const double floor_ = SUBCELL_SPAN * g->dx * g->dx * wsum;
+    for (int k = 0; k < 3; k++) {
+        if (!(lam[k] > floor_)) continue;
+        double vb = 0; /* column k of Q is the eigenvector */
+        for (int p = 0; p < D; p++) vb += Q[3 * p + k] * b[p];
+        for (int p = 0; p < D; p++) G[p] += Q[3 * p + k] * vb / lam[k];
     }
     return 1;
 }
