@@ -46,6 +46,9 @@
 #include "mpm.h"
 #include "material.h"
 #include "grid.h"
+#include "alloc.h"
+#include "error.h"
+#include <stddef.h>
 #include "hearth/tensor.h"
 
 #define SUBCELL_PI 3.14159265358979323846
@@ -194,9 +197,37 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
     }
     hearth_status st = mpm_ranks_fields_sum(s, chs, nch, err);
     if (st) return st;
-    /* each dried particle toward its nodes' dried fits, from the same step-start values: the sums above read T
-     * before any particle changes. Summed with weights C_p the change is sum_i [W_i Tbar_i - S_i + G_i .
-     * (sum_p w_ip a_p x_p - W_i xbar_i)] = 0 for any G_i: xbar_i is that centroid. */
+    /* each node's fit once: fit(x) = f_i + G_i . (x - x_i), f_i = Tbar_i + G_i . (x_i - xbar_i), the value at
+     * the node (NaN where it holds no dried particle) */
+    const size_t nf = (size_t)(1 + D), need = (size_t)g->nactive * (size_t)NPB * nf;
+    if (need > s->heat.sub_cap) {
+        double *f = mem_alloc(sizeof(double) * need);
+        if (!f) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the dried particles' node fits (%zu nodes)",
+                               (size_t)g->nactive * (size_t)NPB);
+        mem_free(s->heat.sub_fit, sizeof(double) * s->heat.sub_cap);
+        s->heat.sub_fit = f, s->heat.sub_cap = need;
+    }
+    double *fit = s->heat.sub_fit;
+    for (int k = 0; k < g->nactive; k++) {
+        int bc[3];
+        grid_block_coords(g, g->active[k], bc);
+        for (int l = 0; l < NPB; l++) {
+            int gi[3];
+            grid_node_index(g, bc, l, gi);
+            double *f = fit + ((size_t)k * (size_t)NPB + (size_t)l) * nf, Tb, xb[3], G[3];
+            if (!node_fit(g, gi, &Tb, xb, G)) {
+                f[0] = NAN;
+                continue;
+            }
+            f[0] = Tb;
+            for (int d = 0; d < D; d++) f[0] += G[d] * (g->lo[d] + gi[d] * g->dx - xb[d]), f[1 + d] = G[d];
+        }
+    }
+    /* each dried particle toward its nodes' fits, from the same step-start values (the sums above read T
+     * before any particle changes). Summed with weights C_p the change is sum_i [W_i f_i + G_i . M_i - S_i]
+     * = sum_i [W_i Tbar_i - S_i + G_i . (M_i - W_i (xbar_i - x_i))] = 0 for any G_i, M_i the first moments
+     * (xbar_i - x_i = M_i / W_i). */
+    const size_t stride = (size_t)g->nch * (size_t)NPB;
     for (int i = 0; i < n; i++) {
         if (flags && (flags[i] & PF_HOLD_T)) continue;
         const material_slot *ms = &s->mats.slot[mat[i]];
@@ -213,13 +244,16 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
                 for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
                     const double wt = w[0][ax] * w[1][b] * w[2][c];
                     const int gi[3] = {base[0] + ax, base[1] + b, D == 3 ? base[2] + c : 0};
-                    double Tb, xb[3], G[3];
-                    if (!(wt > 0) || !node_fit(g, gi, &Tb, xb, G)) continue;
-                    double fit = Tb;
+                    int l;
+                    const double *node = grid_node_at(g, gi, &l);
+                    if (!node || !(wt > 0)) continue;
+                    const double *f = fit + ((size_t)((node - g->data) / (ptrdiff_t)stride) * (size_t)NPB + (size_t)l) * nf;
+                    if (isnan(f[0])) continue;
+                    double v = f[0];
 #if SUBCELL_LINEAR
-                    for (int d = 0; d < D; d++) fit += G[d] * (X[3 * i + d] - xb[d]);
+                    for (int d = 0; d < D; d++) v += f[1 + d] * (X[3 * i + d] - (g->lo[d] + gi[d] * g->dx));
 #endif
-                    sum += wt * (fit - T[i]);
+                    sum += wt * (v - T[i]);
                 }
         T[i] += kp * phi * sum;
     }
