@@ -156,6 +156,16 @@ static int node_fit(const grid *g, const int gi[3], double *Tbar, double xbar[3]
     return 1;
 }
 
+/* k = 1 - exp(-r dt) of material m, memoised on the last material asked (the sorted particles come in runs) */
+typedef struct k_memo {
+    int mat;
+    double k;
+} k_memo;
+static double k_of(const hearth_scene *s, k_memo *km, int m, double fdt) {
+    if (m != km->mat) km->mat = m, km->k = -expm1(-subcell_rate(&s->mats.slot[m], s->g.dx) * fdt);
+    return km->k;
+}
+
 hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
     particles *ps = &s->ps;
     grid *g = &s->g;
@@ -170,6 +180,7 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
         any = !(flags && (flags[i] & PF_HOLD_T)) && dryness(&s->mats.slot[mat[i]], ps, i) > 0;
     /* every rank must take part in the slab exchange below, so only a scene of one rank may stop here */
     if (!any && s->mpm->nranks == 1) return HEARTH_OK;
+    k_memo km = {-1, 0.0};
     const int nch = 2 + D, chs[5] = {SC_W, SC_S, SC_M[0], SC_M[1], SC_M[2]};
     for (int k = 0; k < g->nactive; k++) {
         double *d = grid_block(g, k);
@@ -181,7 +192,7 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
         const material_slot *ms = &s->mats.slot[mat[i]];
         const double phi = dryness(ms, ps, i);
         if (!(phi > 0)) continue;
-        const double kp = -expm1(-subcell_rate(ms, g->dx) * fdt);
+        const double kp = k_of(s, &km, mat[i], fdt);
         const double a = kp * phi * M[i] * material_specific_heat_of(ms, ps, i, Wc[i]);
         if (!(a > 0)) continue;
         int base[3];
@@ -238,8 +249,8 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
         const material_slot *ms = &s->mats.slot[mat[i]];
         const double phi = dryness(ms, ps, i);
         if (!(phi > 0)) continue;
-        const double kp = -expm1(-subcell_rate(ms, g->dx) * fdt);
-        if (!(kp * phi * M[i] * material_specific_heat_of(ms, ps, i, Wc[i]) > 0)) continue;
+        const double kp = k_of(s, &km, mat[i], fdt);
+        if (!(kp * phi > 0)) continue; /* C_p = 0 would add nothing to the books either way */
         int base[3];
         double w[3][3], dw[3][3];
         grid_point_weights(g, X + 3 * i, base, w, dw);
