@@ -227,10 +227,15 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
     for (int k = 0; k < g->nactive; k++) {
         int bc[3];
         grid_block_coords(g, g->active[k], bc);
+        const double *blk = grid_block(g, k);
         for (int l = 0; l < NPB; l++) {
             int gi[3];
-            grid_node_index(g, bc, l, gi);
             double *f = fit + ((size_t)k * (size_t)NPB + (size_t)l) * nf, Tb, xb[3], G[3];
+            if (!(blk[SC_W * NPB + l] > 0)) { /* most nodes of a bake hold no dried particle */
+                f[0] = NAN;
+                continue;
+            }
+            grid_node_index(g, bc, l, gi);
             if (!node_fit(g, gi, &Tb, xb, G)) {
                 f[0] = NAN;
                 continue;
