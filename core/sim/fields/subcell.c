@@ -13,21 +13,30 @@
  * What. Real conduction damps a mode of wavelength dx at the rate
  *   r = kappa (2 pi / dx)^2 / (rho alpha) = pi^2 kappa / (rho alpha (dx/2)^2)
  * (the sub-cell mode's decay, taken at the dried material's kappa and alpha,
- * the crust this acts on). Each dried particle p (weight phi_p, its dryness)
- * relaxes, over the fields' time dt, by
- *   dT_p = k_p phi_p sum_i w_ip (Tbar_i - T0_p),  k_p = 1 - exp(-r_p dt),
+ * the crust this acts on). Each dried particle p (moisture ratio under 0.01,
+ * past water_boil's hold) relaxes, over the fields' time dt, by
+ *   dT_p = k_p sum_i w_ip (fit_i(x_p) - T0_p),  k_p = 1 - exp(-r_p dt),
+ *   fit_i(x) = Tbar_i + G_i . (x - xbar_i),
  *   Tbar_i = S_i / W_i,  S_i = sum_p w_ip a_p T0_p,  W_i = sum_p w_ip a_p,
- *   a_p = k_p phi_p C_p,  C_p = m_p alpha_p(w_p)  (material_specific_heat_of),
+ *   xbar_i = x_i + M_i / W_i,  M_i = sum_p w_ip a_p (x_p - x_i),
+ *   a_p = k_p C_p,  C_p = m_p alpha_p(w_p)  (material_specific_heat_of),
  * T0 the particles' step-start temperatures (P2G's), nodes with W_i = 0
- * skipped. Summed with weights C_p this is sum_i (Tbar_i W_i - S_i) = 0:
- * exactly conserving, node by node, for any mix of materials (k_p is folded
- * into the weight for that). Wet particles (phi = 0) take no part, so no heat
- * is moved into the boiling front and the kink between the dried profile and
- * the wet rows at the boiling point stays: the exchange acts on a particle's
- * difference from the dried particles' own field, not from the B-spline
- * average over wet and dried (helper boilflip's relaxations toward that
- * average moved heat into the front or lost it). On a linear profile it does
- * nothing in the interior (the quadratic B-spline reproduces linears).
+ * skipped, G_i the dried particles' gradient at node i fitted to its
+ * neighbours (node_fit). Summed with weights C_p this is
+ *   sum_i [W_i Tbar_i - S_i + G_i . (M_i - W_i (xbar_i - x_i))] = 0
+ * for any G_i: exactly conserving, node by node, for any mix of materials
+ * (k_p is folded into the weight for that). Wet particles take no part, so
+ * no heat is moved into the boiling front and the kink between the dried
+ * profile and the wet rows at the boiling point stays: the exchange acts on
+ * a particle's difference from the dried particles' own field, not from the
+ * B-spline average over wet and dried (helper boilflip's relaxations toward
+ * that average moved heat into the front or lost it). The fit's gradient
+ * makes it exact on a linear profile everywhere, at the surface and beside
+ * the wet rows too: toward Tbar_i alone the one-sided nodes at the dried
+ * set's edges pulled the hot top down and pushed heat into the front (the
+ * drying slab's 1 mm top 129.9 against 142.7 degC; docs/validation.md).
+ * Part-dried particles weighted by their dryness 1 - X/X0 took heat into the
+ * boiling zone and cooled the coarse crust: only dried ones take part.
  *
  * Rejected: a relaxation toward CH_T or CH_T0 (the average over every
  * particle; docs/validation.md lists the five that broke the front or the
@@ -40,6 +49,7 @@
 #include "subcell.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 #include "scene.h"
@@ -48,14 +58,14 @@
 #include "grid.h"
 #include "alloc.h"
 #include "error.h"
-#include <stddef.h>
 #include "hearth/tensor.h"
 
 #define SUBCELL_PI 3.14159265358979323846
 
-/* Which particles are dried: SUBCELL_PHI 0, the dryness 1 - X/X0 clamped to
- * [0, 1]; 1, only particles that are dry (X/X0 < 0.01, past water_boil's
- * hold) with weight 1. */
+/* Compile-time switches for measuring the alternatives (docs/validation.md's table; the defaults are the
+ * model): SUBCELL_SPAN, the neighbours' smallest spread (in dx^2) a fitted gradient direction needs
+ * (node_fit); SUBCELL_LINEAR 0 relaxes toward Tbar_i alone; SUBCELL_PHI 0 weights every particle by its
+ * dryness 1 - X/X0 instead of taking the dried ones (X/X0 < 0.01) with weight 1. */
 #ifndef SUBCELL_SPAN
 #define SUBCELL_SPAN 0.005
 #endif
