@@ -119,6 +119,7 @@ void thermal_free(thermal_state *h) {
     mem_free(h->fix, sizeof(double) * (size_t)h->fix_cap);
     mem_free(h->fix_w, sizeof(double) * (size_t)h->fix_cap);
     mem_free(h->hold_h, sizeof(double) * (size_t)h->hold_cap);
+    mem_free(h->sub_fit, sizeof(double) * h->sub_cap);
     thermal_init(h);
 }
 
