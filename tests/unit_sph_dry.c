@@ -367,5 +367,53 @@ TEST(sph_dry_defaults_same_bits) {
     CHECK(h1 == h2 && h1 != hw);
 }
 
+/* ---- the step limits --------------------------------------------------------
+ * sph_heat_stable_dt with the dry parameters: conduction's 0.1 h^2 rho / k_h,int
+ * over R = min(2 k/alpha at the stiffest end, K / alpha_dried) (sph_heat.c: a
+ * harmonic pair mean is at most twice either end and at most the largest k),
+ * with k = c kappa / kappa_wet; the Robin term's 0.25 rho alpha_dried sp / beta.
+ * Derived here from the parameters for the bread (k / alpha: wet 1, dried
+ * (2700 x 0.23 / 0.51) / 907.5 = 1.342): both parameters R = 2.684, only
+ * dry_conductivity R = 1 (the limit as before: the dried end conducts less),
+ * only dry_specific_heat R = 2.975; at beta 30 (conduction binds) and 3e5
+ * W/(m^2 K) (the Robin term binds), hmin 4.8 mm, rhomin 484. Bar 1e-12. */
+static double limit_of(double kd, double cd, double beta) {
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.06, 0};
+    hearth_scene_def d = sph_def(2, 0.002, lo, hi);
+    d.gravity[1] = 0;
+    d.oven_temperature = OVEN_T;
+    d.oven_beta = beta;
+    d.sph.heat_ext = 0;
+    d.sph.heat_int = K_WET * S_FAST / C_WET;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    CHECK(s != NULL);
+    if (!s) return NAN;
+    const int m = dough(s, kd, cd, 1e-18, 0);
+    const double c[3] = {0.05, 0.03, 0}, hh[3] = {0.01, 0.01, 0.5};
+    CHECK(pinned_box(s, m, c, hh, 25, SAT) >= 0);
+    const double dt = sph_heat_stable_dt(s, 0.0048, RHO);
+    hearth_scene_destroy(s);
+    return dt;
+}
+
+TEST(sph_dry_step_limits_take_the_stiffest_end) {
+    const double hmin = 0.0048, hf = 2.4, kint = K_WET * S_FAST / C_WET, betas[2] = {30, 3e5};
+    const struct {
+        double kd, cd;
+    } c[3] = {{K_DRY, C_DRY}, {K_DRY, 0}, {0, C_DRY}};
+    for (int b = 0; b < 2; b++)
+        for (int k = 0; k < 3; k++) {
+            const double kw_end = C_WET, ad = c[k].cd > 0 ? c[k].cd : C_WET;
+            const double kd_end = c[k].kd > 0 ? C_WET * c[k].kd / K_WET : C_WET; /* k = c kappa / kappa_wet */
+            const double stiff = fmax(kw_end / C_WET, kd_end / ad), R = fmin(2 * stiff, C_WET / ad);
+            const double cond = 0.1 * hmin * hmin * RHO / kint / R, robin = 0.25 * RHO * ad * hmin / hf / betas[b];
+            const double want = fmin(cond, robin), got = limit_of(c[k].kd, c[k].cd, betas[b]);
+            printf("  beta %6.0f, dry_conductivity %.2f, dry_specific_heat %6.1f: R %.4f, conduction %.6f s, Robin "
+                   "%.6f s; limit %.6f s, derived %.6f s\n",
+                   betas[b], c[k].kd, c[k].cd, R, cond, robin, got, want);
+            CHECK(fabs(got - want) <= 1e-12 * want);
+        }
+}
+
 TEST_MAIN(T(sph_dry_slab_slopes_in_series), T(sph_dry_block_heats_at_its_capacity), T(sph_dry_energy_balance),
-          T(sph_dry_defaults_same_bits))
+          T(sph_dry_defaults_same_bits), T(sph_dry_step_limits_take_the_stiffest_end))
