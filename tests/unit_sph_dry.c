@@ -342,27 +342,33 @@ TEST(sph_dry_energy_balance) {
  * bits: the drying bake's hash after 1 s equals the one the solver gave before
  * the dry parameters reached SPH (pinned from commit f004263, whose SPH read
  * the wet specific heat everywhere). With both set, the same bits on 1 and 2
- * threads (3200 particles at 1 mm, above SCENE_PARALLEL_MIN), and other bits
- * than the wet bake's. */
+ * threads (3200 particles at 0.5 mm, above SCENE_PARALLEL_MIN: the pair loops
+ * run on both), and other bits than the wet bake's. */
 static unsigned long long bake_hash(double dx, double kd, double cd, int threads, double until) {
     hearth_set_threads(threads);
     hearth_scene *s = bake(dx, kd, cd);
     hearth_error err;
+    if (s && threads > 1) CHECK(s->ps.n > SCENE_PARALLEL_MIN); /* the loops run on both threads */
     CHECK(s && hearth_scene_advance(s, until, &err) == HEARTH_OK);
+    if (s) {
+        hearth_stats st;
+        hearth_scene_stats(s, &st);
+        printf("  %d particles, %ld steps to %.3g s, %d thread(s)\n", st.particles, st.step, until, threads);
+    }
     const unsigned long long h = s ? (unsigned long long)hearth_scene_hash(s) : 0;
     hearth_scene_destroy(s);
     hearth_set_threads(0);
     return h;
 }
 
-#define WET_BAKE_HASH 0xb3cf2339d9d2dba2ULL
+#define WET_BAKE_HASH 0x3115e7196d9355b5ULL
 TEST(sph_dry_defaults_same_bits) {
-    const unsigned long long h0 = bake_hash(0.004, 0, 0, 1, 1.0);
+    const unsigned long long h0 = bake_hash(0.002, 0, 0, 1, 1.0);
     printf("  wet bake (no dry parameter), 1 s: %016llx, pinned %016llx\n", h0, WET_BAKE_HASH);
     CHECK(h0 == WET_BAKE_HASH);
-    const unsigned long long h1 = bake_hash(0.001, K_DRY, C_DRY, 1, 0.05);
-    const unsigned long long h2 = bake_hash(0.001, K_DRY, C_DRY, 2, 0.05);
-    const unsigned long long hw = bake_hash(0.001, 0, 0, 1, 0.05);
+    const unsigned long long h1 = bake_hash(0.0005, K_DRY, C_DRY, 1, 0.01);
+    const unsigned long long h2 = bake_hash(0.0005, K_DRY, C_DRY, 2, 0.01);
+    const unsigned long long hw = bake_hash(0.0005, 0, 0, 1, 0.01);
     printf("  dried bake, 1 thread %016llx, 2 threads %016llx (wet %016llx)\n", h1, h2, hw);
     CHECK(h1 == h2 && h1 != hw);
 }
