@@ -734,6 +734,19 @@ sph_cake_stable_with_one_xsph_epsilon)
         has out.txt "at t = 0.30 s" "the cake at one XSPH epsilon baked to 0.3 s at dx $dx"
     done
     ;;
+sph_bread_roll_crust_runs)
+    # bread_roll.lua --set crust=true (the bread's water, latent heat and dried
+    # crust on SPH, docs/validation.md "SPH's dried crust") runs, with and
+    # without the two dry parameters, and prints the rim and the centre
+    # (0.02 s at 3 mm: about 0.5 s each in release).
+    for dry in true false; do
+        run ../../scripts/scenes/sph/bread_roll.lua --set crust=true --set dry=$dry --set dx=0.003 --until 0.02
+        cat out.txt
+        expect_rc 0 "the roll with its crust, dry=$dry"
+        has out.txt "crust (dry $dry): rim" "the rim's line, dry=$dry"
+        has out.txt "crust (dry $dry): centre" "the centre's line, dry=$dry"
+    done
+    ;;
 sph_cake_heats_mirror_symmetric)
     # The shipped angel food cake is a mirror-symmetric pan, so its two halves
     # must heat alike: the scene's volume.csv gives the mean temperature of

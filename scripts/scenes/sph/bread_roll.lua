@@ -79,6 +79,15 @@
 -- passes the gas's 20 kPa at 45.3 degC and held the roll at 1.14x. --set
 -- visc_scale=1 --set mue_scale=1 --set visc_cap=1e9 --set mu_e_curve=table is
 -- the table as printed.
+-- --set crust=true gives the dough h.library.dough.bread's water (saturation
+-- 0.218, its diffusivity and surface evaporation on the scene's S = 400),
+-- latent_heat with boiling at 100 degC, and its dried crust's conductivity and
+-- heat capacity (dry_conductivity 0.23 of 0.51 W/(m K): sph.heat_int x 0.45
+-- where dried; dry_specific_heat 907.5 of 2700 J/(kg K); core/sim/solver/
+-- sph_heat.c); --set dry=false keeps the water and drops the dried crust's two
+-- parameters, for comparison. It prints the browning and saturation of the
+-- outer rim (within 3 mm of the roll's outline) and of the centre (within a
+-- fifth of the radius) at the end (docs/validation.md "SPH's dried crust").
 -- Before #18 (clamped pressure, eq. 3.51): the slumping roll tore at its base
 -- by 0.3 s and split in two by 1 s; with tension and artificial stress the
 -- top burst at 1.64 s (eq. 3.51 pushes by whatever volume it already gained).
@@ -90,7 +99,7 @@ local P = h.params { bubbles = "even", dx = 0.002, oven = 180, visc_scale = 100,
   gas_law = sph.gas_law, vapour = sph.bubble_vapour, vmax = sph.bubble_vmax or 4,
   continuity = sph.continuity_density or false, renormalised = sph.renormalised_density or false,
   gas_pressure = sph.gas_pressure or 0, dough_water = sph.dough_water or 0, own_squeeze = sph.own_squeeze or false,
-  mu_e_curve = "sourced" }
+  mu_e_curve = "sourced", crust = false, dry = true }
 
 sph.heat_ext, sph.heat_int, sph.av_beta = P.heat_ext, 0.2, 1
 sph.gas_law, sph.bubble_vapour, sph.bubble_vmax = P.gas_law, P.vapour, P.vmax
@@ -99,7 +108,8 @@ sph.continuity_density, sph.renormalised_density, sph.gas_pressure = P.continuit
 sph.dough_water, sph.own_squeeze = P.dough_water, P.own_squeeze
 sph.xsph0 = P.xsph0 -- eq. 4.4 at the raw end (Table 4.1: 0.05)
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph", sph = sph,
-  oven = { temperature = P.oven, beta = 0 }, browning = true, browning_scale = 400 }
+  oven = { temperature = P.oven, beta = 0 }, browning = true, browning_scale = 400,
+  latent_heat = P.crust or nil, boiling_point = P.crust and 100 or nil }
 
 local function scaled(c, k, cap)
   local pts = {}
@@ -113,9 +123,17 @@ if P.mu_e_curve == "table" then
 elseif P.mu_e_curve ~= "sourced" then
   error("mu_e_curve must be sourced or table, got " .. tostring(P.mu_e_curve))
 end
+local bubble_m = {}
+for k, v in pairs(m) do bubble_m[k] = v end
+if P.crust then -- the bread's water and dried crust (lua/hearth/dough_physical.lua), on the scene's time scale
+  local g, k = h.library.dough.bread, 400 / h.library.oven.bread.time_scale -- its rates on S = 400 instead
+  m.specific_heat, m.conductivity = g.specific_heat, g.conductivity -- SPH reads only dry_conductivity / conductivity
+  m.water_diffusivity, m.evaporation = g.water_diffusivity * k, g.evaporation * k
+  if P.dry then m.dry_conductivity, m.dry_specific_heat = g.dry_conductivity, g.dry_specific_heat end
+end
 local dough = h.material("maxwell_sph", m)
-m.bubble = 1
-local bubble = h.material("maxwell_sph", m)
+bubble_m.bubble = 1
+local bubble = h.material("maxwell_sph", bubble_m)
 
 local c = { 0.08, 0.01 + P.radius }
 local roll = h.disc(c, P.radius)
@@ -149,7 +167,8 @@ elseif P.bubbles == "dispersed" then
 else
   error("bubbles must be even, centre or dispersed, got " .. tostring(P.bubbles))
 end
-s:add { shape = h.difference(roll, gas), material = dough, ppc = 1, jitter = 0, temperature = lib.table.T0 }
+s:add { shape = h.difference(roll, gas), material = dough, ppc = 1, jitter = 0, temperature = lib.table.T0,
+  saturation = P.crust and h.library.dough.bread.saturation or nil }
 s:add { shape = h.intersection(roll, gas), material = bubble, ppc = 1, jitter = 0, temperature = lib.table.T0 }
 s:collider { shape = h.plane({ 0, 0.01 }, { 0, 1 }), mode = "slip", temperature = P.oven, beta = 0 }
 
@@ -180,3 +199,22 @@ s:run { until_t = 3, every = 0.1, png = { field = "browning", path = "frames/bro
     positions(("particles_%04d.csv"):format(#csv - 1))
   end }
 print(("bread roll (%s bubbles): relative volume %.3f at t = %.2f s"):format(P.bubbles, area() / A0, s:stats().t))
+if P.crust then -- the rim against the centre: browning, saturation, temperature
+  local r = s:particles { fields = { "x", "browning", "saturation", "temperature" } }
+  local n, cx, cy = #r.browning, 0, 0
+  local x = r.x
+  for i = 1, n do cx, cy = cx + x[3 * i - 2] / n, cy + x[3 * i - 1] / n end
+  local far = 0
+  for i = 1, n do far = math.max(far, math.sqrt((x[3 * i - 2] - cx) ^ 2 + (x[3 * i - 1] - cy) ^ 2)) end
+  local acc = { rim = { 0, 0, 0, 0 }, centre = { 0, 0, 0, 0 } }
+  for i = 1, n do
+    local d = math.sqrt((x[3 * i - 2] - cx) ^ 2 + (x[3 * i - 1] - cy) ^ 2)
+    local a = d > far - 0.003 and acc.rim or d < 0.2 * P.radius and acc.centre or nil
+    if a then a[1], a[2], a[3], a[4] = a[1] + 1, a[2] + r.browning[i], a[3] + r.saturation[i], a[4] + r.temperature[i] end
+  end
+  for _, k in ipairs { "rim", "centre" } do
+    local a = acc[k]
+    print(("crust (dry %s): %s %d particles, browning %.4f, saturation %.4f, temperature %.1f degC"):format(
+      tostring(P.dry), k, a[1], a[2] / a[1], a[3] / a[1], a[4] / a[1]))
+  end
+end
