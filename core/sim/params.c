@@ -28,13 +28,12 @@ static const hearth_param core_schema[CP_COUNT] = {
     /* a dried crust conducts less than wet crumb (issue #18); material_conductivity, material.h */
     [CP_DRY_CONDUCTIVITY] = {"dry_conductivity", "W/(m K)",
                              "kappa of the dried material: linear in the water left m^w/m^w_0 from it (dry) to conductivity "
-                             "(as mixed); at most conductivity; 0 = as wet",
+                             "(as mixed); at most conductivity; 0 = as wet; SPH scales sph.heat_int by kappa / conductivity",
                              0, 0, 1e4},
     /* the water a dried crust lost took its heat capacity with it (issue #18); material_specific_heat, material.h */
     [CP_DRY_SPECIFIC_HEAT] = {"dry_specific_heat", "J/(kg K)",
                               "alpha of the dried material per kg of the particle's initial mass: linear in the water "
-                              "left m^w/m^w_0 from it (dry) to specific_heat (as mixed); at most specific_heat; 0 = as wet; "
-                              "MPM (SPH reads specific_heat)",
+                              "left m^w/m^w_0 from it (dry) to specific_heat (as mixed); at most specific_heat; 0 = as wet",
                               0, 0, 1e7},
 };
 

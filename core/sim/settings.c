@@ -155,7 +155,8 @@ static const hearth_setting settings[] = {
      * so it is kappa / c (kg/(m s)); k_h,int / rho is the diffusivity */
     SPH(heat_int, "kg/(m s)",
         "k_h,int of eq. 3.45: the conductivity over the specific heat, kappa / c (the diffusivity times the density; "
-        "scaled as a scene's time scale); 0 = off",
+        "scaled as a scene's time scale); the wet value where a material sets dry_conductivity or dry_specific_heat "
+        "(each particle's kappa(w) / conductivity scales it, its heat over m alpha(w)); 0 = off",
         0, 0, 1e6),
     SPH_FLAG("adaptive_h", "Sigalotti adaptive smoothing length (eq. 3.54-3.56)", adaptive_h),
     SPH(k_g, "1", "eq. 3.54 factor k_g", 1, 0.1, 10),

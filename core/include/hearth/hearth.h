@@ -434,8 +434,8 @@ typedef struct hearth_stats {
     hearth_guard_state guard;
     char diagnosis[1024];  ///< empty unless the guard acted
     int grid_blocks;       ///< active grid blocks
-    double heat_energy;    ///< sum m alpha (theta + 273.15) over particles (J), alpha each MPM particle's at the water it
-                           ///< holds (a material's dry_specific_heat); 0 without temperature
+    double heat_energy;    ///< sum m alpha (theta + 273.15) over particles (J), alpha each particle's at the water it
+                           ///< holds (a material's dry_specific_heat; MPM and SPH); 0 without temperature
     int cg_iterations;     ///< conjugate-gradient iterations of the last implicit heat solve
     double gas_moles;      ///< CO2 in the particles (mol, or mol/m in 2D); 0 without leavening
     double water_mass;     ///< water in the particles (kg, or kg/m in 2D); 0 without water

@@ -119,6 +119,7 @@ void thermal_free(thermal_state *h) {
     mem_free(h->fix, sizeof(double) * (size_t)h->fix_cap);
     mem_free(h->fix_w, sizeof(double) * (size_t)h->fix_cap);
     mem_free(h->hold_h, sizeof(double) * (size_t)h->hold_cap);
+    mem_free(h->sub_fit, sizeof(double) * h->sub_cap);
     thermal_init(h);
 }
 
@@ -180,12 +181,11 @@ double thermal_energy(const hearth_scene *s) {
     const int *mat = pcoli(&s->ps, PC_MAT);
     /* m alpha(w) (theta + 273.15): with dry_specific_heat the heat capacity left after the water that went took
      * its own (material_specific_heat); heat in = the integral of m alpha(w) dtheta + L x water lost, which a
-     * difference of this sum does not give when alpha moved (tests/unit_dry_heat.c keeps those books). SPH's heat
-     * reads the wet alpha (sph_heat.c: its conduction is the scene's kappa / c), so its sum does too */
-    const int sph = s->def.solver == HEARTH_SOLVER_SPH;
+     * difference of this sum does not give when alpha moved (tests/unit_dry_heat.c keeps those books); SPH's heat
+     * reads alpha(w) too (sph_heat.c) */
     for (int i = 0; i < s->ps.n; i++) {
         const material_slot *ms = &s->mats.slot[mat[i]];
-        e += m[i] * (sph ? ms->core[CP_SPECIFIC_HEAT] : material_specific_heat(ms, &s->ps, i)) * (T[i] + KELVIN);
+        e += m[i] * material_specific_heat(ms, &s->ps, i) * (T[i] + KELVIN);
     }
     return e;
 }

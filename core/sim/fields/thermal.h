@@ -35,6 +35,10 @@ typedef struct thermal_state {
      * balance that checks the latent sink): heat in through the oven's Robin
      * boundary this step and over the steps that stood (J, J/m in 2D) */
     double step_oven_heat, oven_heat_in;
+    /* subcell.c's per-node fits (1 + dim doubles a node with storage: the dried particles' value at the node
+     * and their gradient), grown when a latent_heat scene first has a dried particle; scratch within a step */
+    double *sub_fit;
+    size_t sub_cap;
 } thermal_state;
 
 /// Empty state (allocates nothing).

@@ -27,6 +27,8 @@ enum {
     CH_DMW,                         /* water mass change over the step (eq. 25) */
     GRID_NCH_MAX
 };
+/* After thermal_finish, fields/subcell.c (latent_heat) takes CH_R, CH_B, CH_CG_P, CH_CG_R and CH_HC as its
+ * scratch: nothing reads them again before the next step's P2G or thermal_prepare writes them. */
 #define GRID_NCH_MOMENTUM 4
 /* A two_field scene's channels (mpm_two_field.c), after all the others so no
  * other scene pays for them: the second field's mass and momentum (velocity

@@ -73,6 +73,7 @@
 #include "boundary.h"
 #include "mixing.h"
 #include "transport.h"
+#include "subcell.h"
 #include "tensor2.h"
 #include "phase_clock.h"
 
@@ -798,6 +799,8 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         const int sums[3] = {CH_R, CH_B, CH_DMW};
         if ((st = mpm_ranks_fields_sum(s, heat ? sums : sums + 2, (heat ? 2 : 0) + (water ? 1 : 0), err))) return st;
         if (heat && (st = thermal_finish(s, fdt, err))) return st;
+        /* latent_heat: the dried particles' sub-cell exchange, from the step-start temperatures G2P adds to */
+        if (heat && water && (st = subcell_exchange(s, fdt, err))) return st;
         mpm_ranks_fields_clear(s);
     }
     if (s->def.two_field) mpm_two_field_split(s);
@@ -805,11 +808,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     if (s->def.two_field) mpm_two_field_contact(s);
     if ((st = mpm_ranks_halo_back(s, err))) return st;
     if (wrap) mpm_periodic_fold(s, 1);
-    const int front = heat && water && s->def.latent_heat;
-    if (front && (st = water_boil_front_prepare(s, err))) return st;
     mpm_g2p(s, dt, rep);
-    /* before the wrap: the positions and nodes G2P left (water.c) */
-    if (front && (st = water_boil_front(s, err))) return st;
     if (wrap) mpm_periodic_wrap_all(s);
     if (water) water_finish(s);
     rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;

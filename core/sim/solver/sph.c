@@ -92,8 +92,10 @@
  * evaporation and latent sink), colliders, probes, outputs, the oven's Robin flux
  * and heated colliders' contact beta (each surface particle carries its face
  * V^((d-1)/d) of oven surface, a particle within its spacing of a heated
- * collider the same face of contact; `sph_oven_robin`). Not shared: conduction
- * parameters (eq. 3.45 uses `sph.heat_int`), thermal expansion, CO2 and water pressure (eq. 14) (not
+ * collider the same face of contact; `sph_oven_robin`), a dried crust's
+ * dry_conductivity and dry_specific_heat (sph_heat.c: they scale `sph.heat_int`
+ * and the heat capacity per particle). Not shared: the conduction
+ * parameter itself (eq. 3.45 uses `sph.heat_int`), thermal expansion, CO2 and water pressure (eq. 14) (not
  * applied), wet colliders and the water's momentum (refused), collider friction and the slip/separate distinction (both
  * take the thesis response; beta_c plays friction's part; sticky is sticky,
  * and so is a grip, which carries no particles here). A rollback restores the

@@ -23,7 +23,44 @@
  * takes the viscous term's per-particle factor (sph_viscous_factor: 2 dim
  * over the second moment, blended to the lattice's at surfaces): the slab's
  * error falls at order 2 (`sph_heat_conduction_converges`). The factor is
- * the pair's mean, so sum m T is still conserved to round-off. */
+ * the pair's mean, so sum m T is still conserved to round-off.
+ *
+ * A dried crust (issue #18): with a material's dry_conductivity or
+ * dry_specific_heat set (sph_heat_dry), each particle has its own conductivity
+ * and heat capacity, MPM's (material.h): kappa_i = kappa(w_i), alpha_i =
+ * alpha(w_i), linear in the moisture ratio. The scene's k_h,int = kappa / c
+ * stays the wet value, so particle i conducts as
+ *   k_i = c_i kappa(w_i) / kappa_i,wet  (J/(kg K); k_h,int k_i is its kappa),
+ * c_i its material's specific_heat; a pair conducts through the harmonic mean
+ *   k_ij = 2 k_i k_j / (k_i + k_j)
+ * (Cleary & Monaghan 1999, J. Comput. Phys. 148:227, eq. 9 with its
+ * harmonic pair conductivity: the series conductance of the two halves of
+ * the pair, so a dried row next to a wet one carries the flux two layers in
+ * series do, `sph_dry_slab_slopes_in_series`); the heat i takes from j,
+ *   m_i k_h,int 4 m_j k_ij / (rho_i + rho_j)^2 (T_j - T_i) L_ij,
+ * is symmetric in the pair, so sum m alpha T is conserved to round-off,
+ * and i's temperature moves by its heat over m_i alpha_i. Eq. 3.42's
+ * k_h,ext = h / c and the Robin flux act on m_i alpha_i the same way. The
+ * arithmetic mean (the water's, sph_water.c) was rejected here: across a
+ * jump in kappa it lets the better conductor set the flux, which the series
+ * closed form does not. Without either parameter in any material the rates
+ * are the thesis's form above, in its bits (a scene of two materials of
+ * different specific_heat keeps conserving sum m T, as before). */
+static int sph_heat_dry(const hearth_scene *s) {
+    for (int m = 0; m < s->mats.n; m++)
+        if (s->mats.slot[m].core[CP_DRY_CONDUCTIVITY] > 0 || s->mats.slot[m].core[CP_DRY_SPECIFIC_HEAT] > 0) return 1;
+    return 0;
+}
+
+/* k_i above: the material's specific_heat times its kappa(w_i) / kappa_wet (1 when it has no dry_conductivity, or
+ * no conductivity to scale: SPH's conduction is k_h,int's, and dry_conductivity <= conductivity). */
+static double sph_dry_k(const hearth_scene *s, int i, int mat) {
+    const material_slot *ms = &s->mats.slot[mat];
+    const double cw = ms->core[CP_SPECIFIC_HEAT], kw = ms->core[CP_CONDUCTIVITY];
+    if (!(ms->core[CP_DRY_CONDUCTIVITY] > 0) || !(kw > 0)) return cw;
+    return cw * (material_conductivity(ms, &s->ps, i) / kw);
+}
+
 void sph_heat_rates(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
@@ -42,11 +79,28 @@ void sph_heat_rates(hearth_scene *s) {
     const int ledger = s->def.latent_heat && robin;
     if (s->def.latent_heat && !robin)
         for (int i = 0; i < n; i++) st->qo[i] = 0;
+    const int dry = sph_heat_dry(s);
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         const double ri = st->rho[i];
+        const material_slot *msi = &s->mats.slot[mat[i]];
+        /* with a dry parameter: i's k_i and alpha(w_i), and the sums below are heat per m_i until divided by it */
+        const double ki = dry ? sph_dry_k(s, i, mat[i]) : 0.0, ai = dry ? material_specific_heat(msi, &s->ps, i) : 0.0;
         double dTi = 0;
-        if (o->heat_int > 0)
+        if (o->heat_int > 0 && dry)
+            for (int k = off[i]; k < off[i + 1]; k++) {
+                const int j = nb[k];
+                double d[3];
+                sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
+                const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+                if (r <= 0) continue;
+                const double hij = 0.5 * (st->h[i] + st->h[j]), rj = st->rho[j], kj = sph_dry_k(s, j, mat[j]);
+                const double lv = sph_lap_visc(dim, r, hij) * 0.5 * (st->vc[i] + st->vc[j]);
+                /* the harmonic mean, each factor the pair's own (Cleary & Monaghan 1999, eq. 9) */
+                const double kij = ki + kj > 0 ? 2 * (ki * kj) / (ki + kj) : 0.0;
+                dTi += o->heat_int * 4 * m[j] / ((ri + rj) * (ri + rj)) * (T[j] - T[i]) * lv * kij;
+            }
+        else if (o->heat_int > 0)
             for (int k = off[i]; k < off[i + 1]; k++) {
                 const int j = nb[k];
                 double d[3];
@@ -86,9 +140,10 @@ void sph_heat_rates(hearth_scene *s) {
                  * (sph_heat_ext_flux_per_area). The thesis's sign is
                  * reversed: heat flows from the hotter side. */
                 const double Vr = m[i] / st->rho0[i], face = dim == 3 ? cbrt(Vr) * cbrt(Vr) : sqrt(Vr);
-                dTi += o->heat_ext * (Tout - T[i]) * face / m[i];
+                dTi += o->heat_ext * (Tout - T[i]) * face / m[i] * (dry ? msi->core[CP_SPECIFIC_HEAT] : 1.0);
             }
         }
+        if (dry) dTi = ai > 0 ? dTi / ai : 0.0; /* heat per m_i over alpha(w_i) */
         if (robin) { /* the oven's Robin flux and heated colliders' contact beta, as MPM sees them */
             /* Each surface particle (the ones eq. 3.42 heats) carries its
              * face, V^((d-1)/d) of its rest volume, as a boundary node does in
@@ -97,7 +152,7 @@ void sph_heat_rates(hearth_scene *s) {
              * colour gradient as a surface delta (V |grad C|) would need no
              * flag, but with particles on one side only it sums to 0.69 of a
              * block's outline. */
-            const double ci = s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT], Vr = m[i] / st->rho0[i];
+            const double ci = dry ? ai : msi->core[CP_SPECIFIC_HEAT], Vr = m[i] / st->rho0[i];
             const double sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
             double coef = beta_oven > 0 && st->surf[i] ? face * beta_oven : 0.0, Tr = Text;
             for (int q = 0; q < s->ncol; q++) {
@@ -116,15 +171,43 @@ void sph_heat_rates(hearth_scene *s) {
     }
 }
 
+/* With a dry parameter (sph_heat_dry) particle i's conduction runs at k_h,int sum_j k_ij (...) / alpha_i, k_ij
+ * the harmonic mean of k_i and k_j: at most 2 k_i (the mean of k_i with anything) and at most K, the largest
+ * specific_heat of the scene's materials (k_j <= c_j). So its rate is at most
+ *   R = min(2 k_i / alpha_i, K / alpha_i)
+ * times the thesis's, and the limit 0.1 h^2 rho / k_h,int shrinks by the largest R: k_i / alpha_i at the
+ * stiffest end of its material (material_heat_stiffest: alpha and kappa linear in the moisture ratio, so the
+ * ratio is extreme dried or wet; k = c kappa / kappa_wet), 1 / alpha_i at the dried alpha (the smallest).
+ * Only dry_conductivity: R = 1, the limit as before; the bread's pair (907.5 J/(kg K), 0.23 of 0.51 W/(m K))
+ * gives R = 2.68, where a pair of a dried and a wet particle reaches 1.85: the bound holds for any pair, across
+ * materials too. *ext the factor eq. 3.42's and the Robin limits take, the smallest alpha_dried / c over
+ * the materials (1 without dry_specific_heat). */
+static double sph_dry_rate_bound(const hearth_scene *s, double *ext) {
+    double K = 0, R = 0;
+    *ext = 1.0;
+    for (int m = 0; m < s->mats.n; m++) K = fmax(K, s->mats.slot[m].core[CP_SPECIFIC_HEAT]);
+    for (int m = 0; m < s->mats.n; m++) {
+        const material_slot *ms = &s->mats.slot[m];
+        const double cw = ms->core[CP_SPECIFIC_HEAT], kw = ms->core[CP_CONDUCTIVITY], amin = material_specific_heat_min(ms);
+        double as, ks;
+        material_heat_stiffest(ms, &as, &ks);
+        const double kr = kw > 0 ? cw * (ks / kw) : cw; /* k at that end */
+        if (as > 0 && amin > 0) R = fmax(R, fmin(2 * kr / as, K / amin));
+        if (cw > 0) *ext = fmin(*ext, amin / cw);
+    }
+    return R;
+}
+
 double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin) {
     const hearth_sph_def *o = &s->def.sph;
     const particles *ps = &s->ps;
     const double *T = ps->enabled & (1u << PC_TEMPERATURE) ? pcold(ps, PC_TEMPERATURE) : NULL;
-    double dt = INFINITY;
-    if (o->heat_int > 0 && T) dt = fmin(dt, 0.1 * hmin * hmin * rhomin / o->heat_int); /* eq. 3.45 has 1/rho */
+    double dt = INFINITY, ext = 1.0;
+    const double R = sph_heat_dry(s) ? sph_dry_rate_bound(s, &ext) : 1.0;
+    if (o->heat_int > 0 && T) dt = fmin(dt, 0.1 * hmin * hmin * rhomin / o->heat_int / R); /* eq. 3.45 has 1/rho */
     /* eq. 3.42 per unit area: a surface particle relaxes at k A / m = k / (rho sp);
-     * a quarter of that time, as the Robin limit below */
-    if (o->heat_ext > 0 && T) dt = fmin(dt, 0.25 * rhomin * hmin / o->h_factor / o->heat_ext);
+     * a quarter of that time, as the Robin limit below (faster by c / alpha_dried with dry_specific_heat) */
+    if (o->heat_ext > 0 && T) dt = fmin(dt, 0.25 * rhomin * hmin / o->h_factor / o->heat_ext * ext);
     if (T) { /* Robin: a face of V / spacing against the heat capacity rho c V */
         double beta = isnan(s->def.oven_temperature) ? 0 : s->def.oven_beta, bc = 0;
         for (int k = 0; k < s->ncol; k++)
@@ -132,7 +215,8 @@ double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin) {
         beta += bc;
         for (int m = 0; m < s->mats.n && beta > 0; m++) {
             const material_slot *ms = &s->mats.slot[m];
-            const double rc = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
+            /* the dried alpha, the smallest (material_specific_heat_min; specific_heat without dry_specific_heat) */
+            const double rc = ms->params[ms->density_index] * material_specific_heat_min(ms);
             if (rc > 0) dt = fmin(dt, 0.25 * rc * hmin / o->h_factor / beta);
         }
     }

@@ -35,7 +35,8 @@
  *   resting on a collider evaporates too, as it takes the oven's Robin heat
  *   (sph_heat.c); MPM's boundary.c takes contact faces out of the air
  *   surface, which SPH has no measure for yet.
- * - with the scene's latent_heat, e_i takes L e_i / (m_i c_i) from dT_i
+ * - with the scene's latent_heat, e_i takes L e_i / (m_i alpha_i) from dT_i,
+ *   alpha_i = alpha(w_i) (material_specific_heat; the wet c without dry_specific_heat)
  *   (MPM takes L e_p from the nodes around particle p, transport.c); once the
  *   temperatures moved, a wet particle past the boiling point boils its
  *   excess heat away through water.c's water_boil, MPM's own.
@@ -132,7 +133,7 @@ void sph_water_rates(hearth_scene *s) {
             const double th = (T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN;
             e = water_evaporation(ms->core[CP_EVAPORATION], ms->core[CP_WATER_DIFFUSIVITY], rwi, th, sw[i], s_amb, 0.5 * sp,
                                   face, psat_b);
-            const double mc = m[i] * ms->core[CP_SPECIFIC_HEAT];
+            const double mc = m[i] * material_specific_heat(ms, &s->ps, i); /* alpha(w) at the step's start, as sph_heat_rates */
             if (latent && mc > 0) st->dT[i] -= HEARTH_LATENT_HEAT * e / mc;
         }
         st->dW[i] = dw - e;
@@ -155,8 +156,9 @@ void sph_water_advance(hearth_scene *s, double dt) {
         double w = before + dt * st->dW[i];
         if (w < WATER_SATURATION_FLOOR * cap) w = WATER_SATURATION_FLOOR * cap;
         W[i] = w;
-        /* W[i] falls by what boiled; SPH's heat reads the wet specific heat (sph_heat.c) */
-        if (T && T[i] > boil) water_boil(s, i, &T[i], boil, vol, c.m[i] * ms->core[CP_SPECIFIC_HEAT]);
+        /* W[i] falls by what boiled; m alpha(w) at the water the step began with, the capacity sph_heat_rates
+         * heated it with (MPM's P2G likewise) */
+        if (T && T[i] > boil) water_boil(s, i, &T[i], boil, vol, c.m[i] * material_specific_heat_of(ms, &s->ps, i, before));
         removed += before - W[i];
     }
     s->water.step_removed = removed;
@@ -192,7 +194,7 @@ double sph_water_stable_dt(const hearth_scene *s, double hmin, double rhomin) {
         emax = fmax(emax, ms->core[CP_EVAPORATION] * th / ms->core[CP_WATER_DENSITY]);
         const double ex = sat - s_amb, b = ms->core[CP_EVAPORATION];
         if (latent && ex > 0 && b > 0) {
-            const double rc = ms->params[ms->density_index] * ms->core[CP_SPECIFIC_HEAT];
+            const double rc = ms->params[ms->density_index] * material_specific_heat_min(ms); /* the dried alpha */
             lmax = fmax(lmax, rc > 0 ? b * ex / rc : INFINITY);
         }
     }
