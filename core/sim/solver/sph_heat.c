@@ -87,20 +87,7 @@ void sph_heat_rates(hearth_scene *s) {
         /* with a dry parameter: i's k_i and alpha(w_i), and the sums below are heat per m_i until divided by it */
         const double ki = dry ? sph_dry_k(s, i, mat[i]) : 0.0, ai = dry ? material_specific_heat(msi, &s->ps, i) : 0.0;
         double dTi = 0;
-        if (o->heat_int > 0 && dry)
-            for (int k = off[i]; k < off[i + 1]; k++) {
-                const int j = nb[k];
-                double d[3];
-                sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-                const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-                if (r <= 0) continue;
-                const double hij = 0.5 * (st->h[i] + st->h[j]), rj = st->rho[j], kj = sph_dry_k(s, j, mat[j]);
-                const double lv = sph_lap_visc(dim, r, hij) * 0.5 * (st->vc[i] + st->vc[j]);
-                /* the harmonic mean, each factor the pair's own (Cleary & Monaghan 1999, eq. 9) */
-                const double kij = ki + kj > 0 ? 2 * (ki * kj) / (ki + kj) : 0.0;
-                dTi += o->heat_int * 4 * m[j] / ((ri + rj) * (ri + rj)) * (T[j] - T[i]) * lv * kij;
-            }
-        else if (o->heat_int > 0)
+        if (o->heat_int > 0)
             for (int k = off[i]; k < off[i + 1]; k++) {
                 const int j = nb[k];
                 double d[3];
@@ -111,7 +98,14 @@ void sph_heat_rates(hearth_scene *s) {
                 /* eq. 3.8 renormalised as in the viscous term (sph_viscous_factor), the pair's mean factor
                  * so what i gains j loses */
                 const double lv = sph_lap_visc(dim, r, hij) * 0.5 * (st->vc[i] + st->vc[j]);
-                dTi += o->heat_int * 4 * m[j] / ((ri + rj) * (ri + rj)) * (T[j] - T[i]) * lv; /* eq. 3.45-3.46 */
+                /* with a dry parameter the pair's conductivity factor, the harmonic mean of the two (Cleary &
+                 * Monaghan 1999, eq. 9); without, 1 (a product by 1 is exact: the thesis's bits) */
+                double kij = 1.0;
+                if (dry) {
+                    const double kj = sph_dry_k(s, j, mat[j]);
+                    kij = ki + kj > 0 ? 2 * (ki * kj) / (ki + kj) : 0.0;
+                }
+                dTi += o->heat_int * 4 * m[j] / ((ri + rj) * (ri + rj)) * (T[j] - T[i]) * lv * kij; /* eq. 3.45-3.46 */
             }
         if (o->heat_ext > 0 && st->surf[i]) { /* eq. 3.42 at surface particles, per unit area (below) */
             double Tout = Text;
