@@ -26,10 +26,7 @@
 #include "plugin_fixture.h"
 #define PI 3.14159265358979323846
 
-/* the plugin's parameters in its schema's order (as tests/unit_dough.c) */
-enum { P_E, P_NU, P_TAU_Y, P_ETA, P_COMPACTION, P_DENSITY, P_MAX_POROSITY, P_FRACTURE_STRAIN, P_FRACTURE_STRETCH,
-       P_FRACTURE_STRAIN_SET, P_CRACK_OPENING, P_CRACK_BAND, P_FRACTURE_UNSET, NP };
-enum { NSTATE = 8 };
+#include "dough_params.h"
 
 /* The damage at T after n uniform steps. ring 0: a stretch that never turns back, pure shear at the rate
  * a (1 + 0.5 sin(2 pi t / T)); ring 1: the same mean stretch with a ringing on it, a (0.3 + 2 sin(10 pi t / T)),
