@@ -169,6 +169,7 @@ else
 end
 s:add { shape = h.difference(roll, gas), material = dough, ppc = 1, jitter = 0, temperature = lib.table.T0,
   saturation = P.crust and h.library.dough.bread.saturation or nil }
+local n_dough = #s:positions() // 3 -- ids 0 .. n_dough - 1: the dough's; the bubbles' follow (gas: no water)
 s:add { shape = h.intersection(roll, gas), material = bubble, ppc = 1, jitter = 0, temperature = lib.table.T0 }
 s:collider { shape = h.plane({ 0, 0.01 }, { 0, 1 }), mode = "slip", temperature = P.oven, beta = 0 }
 
@@ -199,8 +200,8 @@ s:run { until_t = 3, every = 0.1, png = { field = "browning", path = "frames/bro
     positions(("particles_%04d.csv"):format(#csv - 1))
   end }
 print(("bread roll (%s bubbles): relative volume %.3f at t = %.2f s"):format(P.bubbles, area() / A0, s:stats().t))
-if P.crust then -- the rim against the centre: browning, saturation, temperature
-  local r = s:particles { fields = { "x", "browning", "saturation", "temperature" } }
+if P.crust then -- the rim against the centre: browning, saturation (the dough's), temperature
+  local r = s:particles { fields = { "x", "browning", "saturation", "temperature", "id" } }
   local n, cx, cy = #r.browning, 0, 0
   local x = r.x
   for i = 1, n do cx, cy = cx + x[3 * i - 2] / n, cy + x[3 * i - 1] / n end
@@ -210,11 +211,14 @@ if P.crust then -- the rim against the centre: browning, saturation, temperature
   for i = 1, n do
     local d = math.sqrt((x[3 * i - 2] - cx) ^ 2 + (x[3 * i - 1] - cy) ^ 2)
     local a = d > far - 0.003 and acc.rim or d < 0.2 * P.radius and acc.centre or nil
-    if a then a[1], a[2], a[3], a[4] = a[1] + 1, a[2] + r.browning[i], a[3] + r.saturation[i], a[4] + r.temperature[i] end
+    if a then
+      a[1], a[2], a[4] = a[1] + 1, a[2] + r.browning[i], a[4] + r.temperature[i]
+      if r.id[i] < n_dough then a[3], a[5] = a[3] + r.saturation[i], (a[5] or 0) + 1 end -- bubbles hold no water
+    end
   end
   for _, k in ipairs { "rim", "centre" } do
     local a = acc[k]
-    print(("crust (dry %s): %s %d particles, browning %.4f, saturation %.4f, temperature %.1f degC"):format(
-      tostring(P.dry), k, a[1], a[2] / a[1], a[3] / a[1], a[4] / a[1]))
+    print(("crust (dry %s): %s %d particles, browning %.4f, saturation %.4f (%d dough), temperature %.1f degC"):format(
+      tostring(P.dry), k, a[1], a[2] / a[1], a[3] / (a[5] or 0), a[5] or 0, a[4] / a[1]))
   end
 end
