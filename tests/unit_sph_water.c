@@ -499,6 +499,81 @@ TEST(sph_water_saturation_ignores_surface_J) {
     hearth_scene_destroy(s);
 }
 
+/* ---- bubbles hold no water ----------------------------------------------- */
+
+/* A resting wet dough block (pinned, 20 x 12 mm at dx = 2 mm, 2D) seeded at
+ * the bread's saturation 0.218, with a 3 x 3 particle bubble (a material with
+ * bubble = 1, the thesis's gas particles, eq. 3.48-3.50) inside it added
+ * without a saturation, as the bread roll scene adds its bubbles. No
+ * evaporation, no temperature. Each dough particle must read the 0.218 it was
+ * seeded with after 0.02 s (its Fick exchange has no gradient to act on: the
+ * bar is round-off, 1e-12); each bubble the floor (1e-4, water.h: gas holds no
+ * liquid water); the scene's water (held + lost) the dough's seeded
+ * 0.218 rho_0^w V_0 plus the bubbles' floor, to 1e-12 relative. Before the
+ * fix the bubbles took their material's default saturation 0.5 and fed it to
+ * the dough beside them (the roll's centre read 0.31 at 0.02 s). A bubble body
+ * given a saturation is refused, naming it. */
+TEST(sph_water_bubbles_hold_no_water) {
+    const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.04, 0.03, 0}, s0 = 0.218;
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[1] = 0;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    CHECK(s != NULL);
+    if (!s) return;
+    const char *n[] = {"density", "bulk", "viscosity", "water_diffusivity", "bubble"};
+    const double v[] = {1000, 1e4, 5.0, 1e-9, 1};
+    hearth_error err;
+    const int dough = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
+    const int gas = hearth_scene_add_material(s, "newtonian", n, v, 5, &err);
+    CHECK(dough >= 0 && gas >= 0);
+    /* the dough: a 10 x 6 block less its middle 3 x 3 (particles at cell centres) */
+    const double dough_boxes[4][4] = {{0.010, 0.008, 0.030, 0.014}, {0.010, 0.020, 0.030, 0.026},
+                                      {0.010, 0.014, 0.016, 0.020}, {0.022, 0.014, 0.030, 0.020}};
+    for (int k = 0; k < 4; k++) {
+        const double *b = dough_boxes[k];
+        const double c[3] = {0.5 * (b[0] + b[2]), 0.5 * (b[1] + b[3]), 0}, hh[3] = {0.5 * (b[2] - b[0]), 0.5 * (b[3] - b[1]), 0.5};
+        hearth_body_def bd = hearth_default_body_def();
+        bd.shape = hearth_shape_box(c, hh);
+        bd.material = dough, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1, bd.saturation = s0;
+        CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+        hearth_shape_free((hearth_shape *)bd.shape);
+    }
+    const int nd = s->ps.n;
+    const double c[3] = {0.019, 0.017, 0}, hh[3] = {0.003, 0.003, 0.5};
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = hearth_shape_box(c, hh);
+    bd.material = gas, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1, bd.saturation = 0.3;
+    CHECK(hearth_scene_add_body(s, &bd, &err) < 0); /* refused: a bubble holds no liquid water */
+    printf("  refused: %s\n", err.msg);
+    CHECK(err.code == HEARTH_ERR_PARAM && strstr(err.msg, "saturation") && strstr(err.msg, "bubble"));
+    bd.saturation = NAN; /* as the roll adds its bubbles */
+    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    hearth_shape_free((hearth_shape *)bd.shape);
+    const int nb = s->ps.n - nd;
+    double want = 0;
+    const int *id = pcoli(&s->ps, PC_ID);
+    for (int i = 0; i < s->ps.n; i++)
+        want += (id[i] < nd ? s0 : WATER_SATURATION_FLOOR) * 1000 * pcold(&s->ps, PC_VOL0)[i];
+    CHECK(hearth_scene_advance(s, 0.02, &err) == HEARTH_OK);
+    id = pcoli(&s->ps, PC_ID); /* the sort permutes the columns */
+    double ddev = 0, bdev = 0;
+    for (int i = 0; i < s->ps.n; i++) {
+        const double sat = water_saturation(s, i);
+        if (id[i] < nd) ddev = fmax(ddev, fabs(sat - s0));
+        else bdev = fmax(bdev, fabs(sat - WATER_SATURATION_FLOOR));
+    }
+    hearth_stats st;
+    hearth_scene_stats(s, &st);
+    const double books = (st.water_mass + st.water_lost - want) / want;
+    printf("  %d dough, %d bubble particles, %ld steps: largest |s - 0.218| (dough) %.3g, |s - floor| (bubbles) %.3g, "
+           "(water + lost - seeded) / seeded %.3g\n", nd, nb, st.step, ddev, bdev, books);
+    CHECK(nb == 9 && nd == 81);
+    CHECK(ddev < 1e-12);
+    CHECK(bdev < 1e-12);
+    CHECK(fabs(books) < 1e-12);
+    hearth_scene_destroy(s);
+}
+
 /* ---- out of memory ------------------------------------------------------- */
 
 /* Every allocation of a wet SPH scene with latent_heat fails in turn (the
@@ -590,4 +665,4 @@ TEST(sph_latent_heat_stops_at_wet_bulb) {
 TEST_MAIN(T(sph_water_sheet_robin_converges), T(sph_water_sheet_3d_converges), T(sph_water_drying_vs_fd), T(sph_water_conserves),
           T(sph_latent_heat_energy_balance), T(sph_latent_heat_crumb_plateau), T(sph_browning_reads_water),
           T(sph_water_saturation_ignores_surface_J), T(sph_water_alloc_failures),
-          T(sph_latent_heat_stops_at_wet_bulb))
+          T(sph_latent_heat_stops_at_wet_bulb), T(sph_water_bubbles_hold_no_water))

@@ -33,6 +33,12 @@ int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_er
         err_set(err, HEARTH_ERR_PARAM, "body: saturation = %g; valid range [0, 1] (water volume over volume)", def->saturation);
         return -1;
     }
+    if (def->saturation > 0 && water_sph_gas(s, &s->mats.slot[def->material])) {
+        err_set(err, HEARTH_ERR_PARAM,
+                "body: saturation = %g on a bubble material (bubble = %g, SPH's gas); valid: 0 or unset (a bubble holds no "
+                "liquid water)", def->saturation, s->mats.slot[def->material].core[CP_BUBBLE]);
+        return -1;
+    }
     if (def->fixed_temperature && isnan(def->temperature)) {
         err_set(err, HEARTH_ERR_PARAM, "body: fixed_temperature needs a temperature (degrees C) to hold");
         return -1;

@@ -103,11 +103,16 @@ static double capacity(const hearth_scene *s, int i) {
 
 double water_saturation(const hearth_scene *s, int i) { return pcold(&s->ps, PC_WATER)[i] / capacity(s, i); }
 
+int water_sph_gas(const hearth_scene *s, const material_slot *ms) {
+    return s->def.solver == HEARTH_SOLVER_SPH && ms->core[CP_BUBBLE] > 0;
+}
+
 void water_init_particles(hearth_scene *s, int from, int to, double sat) {
     particles *ps = &s->ps;
     for (int i = from; i < to; i++) {
         const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
         double s0 = isnan(sat) ? ms->core[CP_SATURATION0] : sat;
+        if (water_sph_gas(s, ms)) s0 = 0; /* a bubble is gas: it holds no liquid water (bodies.c refuses more) */
         if (s0 < WATER_SATURATION_FLOOR) s0 = WATER_SATURATION_FLOOR;
         pcold(ps, PC_SAT0)[i] = s0;
         pcold(ps, PC_WATER)[i] = s0 * capacity(s, i);

@@ -143,7 +143,15 @@ int water_active(const struct hearth_scene *s);
 int water_material_wants(const struct hearth_scene *s, int mat);
 /// Turn the water field on; particles that have none get their material's initial saturation.
 hearth_status water_enable(struct hearth_scene *s, hearth_error *err);
-/// Give particles [from, to) saturation sat (NaN: their material's), floored.
+/// Is material slot ms an SPH bubble (CP_BUBBLE > 0 on the SPH solver: the
+/// thesis's gas particles, Rodriguez-Arenas 2011 eq. 3.48-3.50)? A bubble is
+/// gas and holds no liquid water: it is seeded at the floor whatever its
+/// material's saturation says, takes no part in SPH's water exchange and does
+/// not evaporate (sph_water.c).
+struct material_slot;
+int water_sph_gas(const struct hearth_scene *s, const struct material_slot *ms);
+/// Give particles [from, to) saturation sat (NaN: their material's), floored;
+/// SPH bubbles (water_sph_gas) the floor.
 void water_init_particles(struct hearth_scene *s, int from, int to, double sat);
 /// The step limits scanned now if stale, and kept (before the set is split over MPI slabs).
 void water_keep_limits(struct hearth_scene *s);

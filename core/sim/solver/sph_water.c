@@ -45,6 +45,14 @@
  * what the saturation floor hands back) goes into s->water.step_removed and
  * counts once the step stands (water_step_stands, scene.c), as in MPM, so
  * water_total + water.lost stays the starting water (`sph_water_conserves`).
+ * Bubble particles (CP_BUBBLE > 0, the thesis's gas, eq. 3.48-3.50) hold
+ * no liquid water: water_init_particles seeds them at the floor whatever
+ * their material's saturation (its default 0.5 had made the bread roll's
+ * bubbles a water source: its centre read 0.31 of the dough's 0.218 at
+ * 0.02 s, docs/validation.md "SPH's saturation at rest"), and here they
+ * neither trade water with their neighbours nor evaporate: the water goes
+ * round a bubble through the dough's films (our choice; the vapour that
+ * joins a bubble's gas is sph.bubble_vapour's, sph_gas.c).
  * Every particle writes only its own slots and sums its neighbours in list
  * order; the removed water is summed serially in particle order: the same
  * bits on any thread count. Not carried on SPH: wet colliders, the water's
@@ -108,15 +116,19 @@ void sph_water_rates(hearth_scene *s) {
         const material_slot *ms = &s->mats.slot[mat[i]];
         sw[i] = water_saturation(s, i);
         D[i] = ms->core[CP_WATER_DIFFUSIVITY] * ((T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN) * sw[i]; /* K theta s */
+        if (water_sph_gas(s, ms)) D[i] = -1; /* a bubble: no exchange (below) */
     }
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         const material_slot *ms = &s->mats.slot[mat[i]];
         const double ri = st->rho[i], rwi = ms->core[CP_WATER_DENSITY];
         double dw = 0;
+        st->dW[i] = 0;
+        if (D[i] < 0) continue; /* a bubble holds no water and trades none */
         for (int k = off[i]; k < off[i + 1]; k++) {
             const int j = nb[k];
             if (!(D[i] > 0) && !(D[j] > 0)) continue;
+            if (D[j] < 0) continue; /* water goes round a bubble, through its films */
             double d[3];
             sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
             const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
@@ -189,6 +201,7 @@ double sph_water_stable_dt(const hearth_scene *s, double hmin, double rhomin) {
     double dmax = 0, emax = 0, lmax = 0, dt = INFINITY;
     for (int i = 0; i < ps->n; i++) {
         const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
+        if (water_sph_gas(s, ms)) continue; /* a bubble trades no water (sph_water_rates) */
         const double th = (T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN, sat = water_saturation(s, i);
         dmax = fmax(dmax, ms->core[CP_WATER_DIFFUSIVITY] * th * sat);
         emax = fmax(emax, ms->core[CP_EVAPORATION] * th / ms->core[CP_WATER_DENSITY]);

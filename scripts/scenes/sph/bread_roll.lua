@@ -87,7 +87,10 @@
 -- sph_heat.c); --set dry=false keeps the water and drops the dried crust's two
 -- parameters, for comparison. It prints the browning and saturation of the
 -- outer rim (within 3 mm of the roll's outline) and of the centre (within a
--- fifth of the radius) at the end (docs/validation.md "SPH's dried crust").
+-- fifth of the radius) at the end (docs/validation.md "SPH's dried crust"),
+-- the dough's only: the bubbles are gas and hold no water (sph_water.c; their
+-- material's default saturation 0.5 had read as 0.31 at the centre at 0.02 s,
+-- "SPH's saturation at rest: the bubbles held water").
 -- Before #18 (clamped pressure, eq. 3.51): the slumping roll tore at its base
 -- by 0.3 s and split in two by 1 s; with tension and artificial stress the
 -- top burst at 1.64 s (eq. 3.51 pushes by whatever volume it already gained).
@@ -169,6 +172,7 @@ else
 end
 s:add { shape = h.difference(roll, gas), material = dough, ppc = 1, jitter = 0, temperature = lib.table.T0,
   saturation = P.crust and h.library.dough.bread.saturation or nil }
+local n_dough = #s:positions() // 3 -- ids 0 .. n_dough - 1: the dough's; the bubbles' follow (gas: no water)
 s:add { shape = h.intersection(roll, gas), material = bubble, ppc = 1, jitter = 0, temperature = lib.table.T0 }
 s:collider { shape = h.plane({ 0, 0.01 }, { 0, 1 }), mode = "slip", temperature = P.oven, beta = 0 }
 
@@ -199,8 +203,8 @@ s:run { until_t = 3, every = 0.1, png = { field = "browning", path = "frames/bro
     positions(("particles_%04d.csv"):format(#csv - 1))
   end }
 print(("bread roll (%s bubbles): relative volume %.3f at t = %.2f s"):format(P.bubbles, area() / A0, s:stats().t))
-if P.crust then -- the rim against the centre: browning, saturation, temperature
-  local r = s:particles { fields = { "x", "browning", "saturation", "temperature" } }
+if P.crust then -- the rim against the centre: browning, saturation (the dough's), temperature
+  local r = s:particles { fields = { "x", "browning", "saturation", "temperature", "id" } }
   local n, cx, cy = #r.browning, 0, 0
   local x = r.x
   for i = 1, n do cx, cy = cx + x[3 * i - 2] / n, cy + x[3 * i - 1] / n end
@@ -210,11 +214,16 @@ if P.crust then -- the rim against the centre: browning, saturation, temperature
   for i = 1, n do
     local d = math.sqrt((x[3 * i - 2] - cx) ^ 2 + (x[3 * i - 1] - cy) ^ 2)
     local a = d > far - 0.003 and acc.rim or d < 0.2 * P.radius and acc.centre or nil
-    if a then a[1], a[2], a[3], a[4] = a[1] + 1, a[2] + r.browning[i], a[3] + r.saturation[i], a[4] + r.temperature[i] end
+    if a then
+      a[1], a[4] = a[1] + 1, a[4] + r.temperature[i]
+      if r.id[i] < n_dough then -- the dough's: bubbles are gas, with no water and no crust of their own
+        a[2], a[3], a[5] = a[2] + r.browning[i], a[3] + r.saturation[i], (a[5] or 0) + 1
+      end
+    end
   end
   for _, k in ipairs { "rim", "centre" } do
     local a = acc[k]
-    print(("crust (dry %s): %s %d particles, browning %.4f, saturation %.4f, temperature %.1f degC"):format(
-      tostring(P.dry), k, a[1], a[2] / a[1], a[3] / a[1], a[4] / a[1]))
+    print(("crust (dry %s): %s %d particles (%d dough), dough's browning %.4f and saturation %.4f, temperature %.1f degC"):format(
+      tostring(P.dry), k, a[1], a[5] or 0, a[2] / (a[5] or 0), a[3] / (a[5] or 0), a[4] / a[1]))
   end
 end
