@@ -518,7 +518,7 @@ double water_boil(hearth_scene *s, int i, double *T, double Tb, double vol, doub
  * any thread count). Rejected: a sort per node, driest taking all
  * (discontinuous in the dryness; a weight does the same within e^-K). */
 #ifndef WATER_FRONT_K
-#define WATER_FRONT_K 8.0
+#define WATER_FRONT_K 3.0
 #endif
 #ifndef WATER_FRONT_PASSES
 #define WATER_FRONT_PASSES 8
@@ -591,8 +591,9 @@ static double front_pair(const grid *g, const double *node, int l, const double 
 /* One pass of the hand-out: each particle's r_p (J) to the nodes, H_i = sum_p w_ip r_p, and back to the
  * receivers with room left (cap_p > 0), q_p = g_p sum_i w_ip H_i / G_i, G_i = sum_p w_ip g_p over them. A
  * receiver takes up to its room; what it cannot take is its r_p for the next pass. A node without receivers
- * hands its H_i back to the particles that sent it (w_ip r_p each), which keep it as sensible heat (kept_p),
- * as does the weight of a node without storage. Sum_p (q_p + kept_p) = sum_p r_p. Returns the heat still to
+ * hands its H_i back to the particles that sent it (w_ip r_p each) to send again (front_return hands out what
+ * is left at the end: kept by the overflowing particle, the heat of a block's nodes ran into its last wet
+ * particles); the weight of a node without storage stays with the sender (kept_p). Sum_p (q_p + kept_p) = sum_p r_p. Returns the heat still to
  * hand out. */
 static double front_pass(hearth_scene *s, const int chs[2], double *r, double *cap, double *Q, double *kept,
                          hearth_error *err, hearth_status *st) {
@@ -644,15 +645,69 @@ static double front_pass(hearth_scene *s, const int chs[2], double *r, double *c
                         back += wt;
                     }
                 }
-        kept[i] += (back + none) * (r[i] > 0 ? r[i] : 0.0);
+        const double r0 = r[i] > 0 ? r[i] : 0.0;
+        kept[i] += none * r0;
         q = cap[i] > 0 ? q : 0.0;
         const double take = q < cap[i] ? q : cap[i] > 0 ? cap[i] : 0.0;
         Q[i] += take;
         cap[i] -= take;
-        r[i] = q - take;
+        r[i] = q - take + back * r0;
         left += r[i];
     }
     return left;
+}
+
+/* The rest r_p back to the particles that boiled (E_p > 0), by w_ip E_p / sum_q w_iq E_q on each node,
+ * into kept; a sender's weight on a node without storage stays with it. r ends at 0. */
+static hearth_status front_return(hearth_scene *s, const int chs[2], double *r, double *kept, const double *E,
+                                  hearth_error *err) {
+    grid *g = &s->g;
+    const int D = g->dim, NPB = g->nodes_per_block, n = s->ps.n;
+    const double *X = pcold(&s->ps, PC_X);
+    for (int k = 0; k < g->nactive; k++) {
+        double *d = grid_block(g, k);
+        for (int c = 0; c < 2; c++) memset(d + chs[c] * NPB, 0, sizeof(double) * (size_t)NPB);
+    }
+    for (int i = 0; i < n; i++) {
+        if (!(E[2 * i] > 0)) continue;
+        int base[3];
+        double w[3][3], dw[3][3];
+        grid_point_weights(g, X + 3 * i, base, w, dw);
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++)
+                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                    const double wt = w[0][a] * w[1][b] * w[2][c];
+                    const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
+                    int l;
+                    double *node = grid_node_at(g, gi, &l);
+                    if (!node || !(wt > 0)) continue;
+                    if (r[i] > 0) node[chs[0] * NPB + l] += wt * r[i];
+                    node[chs[1] * NPB + l] += wt * E[2 * i];
+                }
+    }
+    hearth_status st = mpm_ranks_fields_sum(s, chs, 2, err);
+    if (st) return st;
+    for (int i = 0; i < n; i++) {
+        if (!(E[2 * i] > 0)) continue;
+        int base[3];
+        double w[3][3], dw[3][3];
+        grid_point_weights(g, X + 3 * i, base, w, dw);
+        double q = 0, none = 1;
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++)
+                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
+                    const double wt = w[0][a] * w[1][b] * w[2][c];
+                    const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
+                    int l;
+                    const double *node = grid_node_at(g, gi, &l);
+                    if (!node || !(wt > 0)) continue;
+                    none -= wt;
+                    q += wt * node[chs[0] * NPB + l] / node[chs[1] * NPB + l];
+                }
+        kept[i] += E[2 * i] * q + none * (r[i] > 0 ? r[i] : 0.0);
+    }
+    for (int i = 0; i < n; i++) r[i] = 0;
+    return HEARTH_OK;
 }
 
 hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
@@ -683,9 +738,17 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
         if (st) return st;
         if (!(left > 0) && s->mpm->nranks == 1) break; /* every rank takes part in each pass's exchange */
     }
+    /* what is still to hand out after the passes goes back over the nodes to every particle that boiled, in
+     * proportion to w_ip E_p, as sensible heat: left with the receiver that last overflowed, the heat of a
+     * whole block's nodes ran into its last wet particles (247 degC in a 200 degC oven, latent_heat_wet_plateau) */
+    if ((st = front_return(s, chs, r, kept, E, err))) return st;
     double removed = 0;
     for (int i = 0; i < n; i++) {
-        if (!(E[2 * i] > 0) && !(kept[i] > 0) && !(r[i] > 0)) continue;
+        if (!(E[2 * i] > 0) && !(kept[i] > 0)) continue;
+        if (kept[i] > 0 && cap[i] > 0) { /* heat kept or handed back boils what water is left first: wet stays at T_b */
+            const double take = kept[i] < cap[i] ? kept[i] : cap[i];
+            Q[i] += take, cap[i] -= take, kept[i] -= take;
+        }
         const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
         const double floor_w = WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * vol[i];
         /* within its room; a particle that filled it is at the floor exactly, so that it boils no more (a
@@ -696,7 +759,7 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
         removed += dm;
         /* what it could not boil, its own or passed on and back; a particle that never boiled has no m c here,
          * but it only keeps heat it sent (r and kept start at 0 without E) */
-        if (kept[i] + r[i] > 0) T[i] += (kept[i] + r[i]) / E[2 * i + 1];
+        if (kept[i] > 0) T[i] += kept[i] / E[2 * i + 1];
         if (T[i] > Tmax[i]) Tmax[i] = T[i];
     }
     s->water.front_removed = removed;
