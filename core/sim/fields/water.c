@@ -523,9 +523,6 @@ double water_boil(hearth_scene *s, int i, double *T, double Tb, double vol, doub
 #ifndef WATER_FRONT_PASSES
 #define WATER_FRONT_PASSES 8
 #endif
-#ifndef WATER_FRONT_ONLY
-#define WATER_FRONT_ONLY 1 /* 0: the hot-side ordering at every node (helper sharpfront's) */
-#endif
 #define FRONT_NS 7 /* scratch doubles a particle */
 enum { FRONT_H = CH_R, FRONT_G = CH_B }; /* dead after thermal_finish until the next P2G (grid.c) */
 
@@ -545,37 +542,6 @@ hearth_status water_boil_front_prepare(hearth_scene *s, hearth_error *err) {
  * mass, one-sided where one does; into FRONT_A (dead after G2P, as CH_R). */
 static const int FRONT_A[3] = {CH_CG_R, CH_CG_P, CH_HC};
 
-/* The front's nodes: each node gets the B-spline weight of the dried particles (moisture ratio under 0.01,
- * subcell.c's test) in FRONT_H and of the others in FRONT_G; a node holding both is on the front. Only
- * there does the hot-side ordering act (front_gradient leaves a = 0 elsewhere: plain pooling). */
-static hearth_status front_nodes(hearth_scene *s, const int chs[2], hearth_error *err) {
-    grid *g = &s->g;
-    particles *ps = &s->ps;
-    const int D = g->dim, NPB = g->nodes_per_block, n = ps->n;
-    const double *X = pcold(ps, PC_X);
-    for (int k = 0; k < g->nactive; k++) {
-        double *d = grid_block(g, k);
-        for (int c = 0; c < 2; c++) memset(d + chs[c] * NPB, 0, sizeof(double) * (size_t)NPB);
-    }
-    for (int i = 0; i < n; i++) {
-        const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
-        const int ch = chs[material_moisture_ratio(ms, ps, i) < 0.01 ? 0 : 1];
-        int base[3];
-        double w[3][3], dw[3][3];
-        grid_point_weights(g, X + 3 * i, base, w, dw);
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++)
-                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                    const double wt = w[0][a] * w[1][b] * w[2][c];
-                    const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
-                    int l;
-                    double *node = grid_node_at(g, gi, &l);
-                    if (node && wt > 0) node[ch * NPB + l] += wt;
-                }
-    }
-    return mpm_ranks_fields_sum(s, chs, 2, err);
-}
-
 static void front_gradient(hearth_scene *s) {
     grid *g = &s->g;
     const int D = g->dim, NPB = g->nodes_per_block;
@@ -588,7 +554,7 @@ static void front_gradient(hearth_scene *s) {
             grid_node_index(g, bc, l, gi);
             for (int ax = 0; ax < D; ax++) {
                 double a = 0;
-                if (d[CH_M * NPB + l] > 0 && (!WATER_FRONT_ONLY || (d[FRONT_H * NPB + l] > 0 && d[FRONT_G * NPB + l] > 0))) {
+                if (d[CH_M * NPB + l] > 0) {
                     double Tn[2];
                     int ok[2];
                     for (int sgn = 0; sgn < 2; sgn++) {
@@ -765,9 +731,8 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
         r[i] = E[2 * i] < cap[i] ? E[2 * i] : cap[i];
         kept[i] = E[2 * i] - r[i];
     }
-    hearth_status st = front_nodes(s, chs, err);
-    if (st) return st;
     front_gradient(s);
+    hearth_status st = HEARTH_OK;
     for (int pass = 0; pass < WATER_FRONT_PASSES; pass++) {
         const double left = front_pass(s, chs, r, cap, Q, kept, err, &st);
         if (st) return st;
