@@ -110,9 +110,9 @@ print("EXPECTED FAILURE: the top stays pale (golden needs ~180 degC over the las
       "needs beta >= 48 W/(m^2 K) or walls at 250 degC (docs/validation.md, ovenflux). The dried particles now take "
       "their field's temperature (fields/subcell.c; drying_front_crust_particles_follow_profile passes), which moved "
       "the 2.5 mm top only from browning 0.085 to 0.094-0.095 (top 132.2 -> 132.0 degC): their scatter was not what held it "
-      "pale. The top waits out a boiling zone two cells wide, so at 5 mm it never dries (handing the "
-      "boiling heat to the hot side first dried it 3 minutes sooner, 0.111, but overheated a wet block: sharpfront, "
-      "not merged). Measured, none "
+      "pale. The top waits out a boiling zone two cells wide; handing each node's boiling heat to its hot side first "
+      "(water_boil_front, sharpfront2) dries it sooner (5 mm: by minute 25, not never; 2.5 mm: minute 15, not 18) and "
+      "browns it 0.027 and 0.117 (main 0.017, 0.094). Measured, none "
       "golden: oven beta x1.6 top 0.23, x2 0.32; dx 1.25 mm 0.09; water diffusivity x0.1 0.09; the last 10% of the "
       "water bound (an experiment) 0.08. What moves the top is the oven's flux. docs/validation.md 'A dried crust "
       "holds less heat'.")

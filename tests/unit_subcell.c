@@ -150,4 +150,42 @@ TEST(subcell_threads_same_bits) {
     CHECK(h[0] == h[1]);
 }
 
-TEST_MAIN(T(subcell_conserves_heat_and_keeps_linear_profiles), T(subcell_threads_same_bits))
+/* The boiling front's pass (water_boil_front, water.c) on the same block: its wet
+ * particles start at the boiling point under the 130 degC dried top, so heat
+ * reaches them and they boil in each of the 20 steps. The pass is serial over
+ * the sorted particles, so the hash must be the same at 1 and 2 threads; and
+ * the pass must have had boiling heat to hand out in the last step (some
+ * wet particle's E_p > 0 in its scratch), else this checks nothing. */
+TEST(boil_front_threads_same_bits) {
+    uint64_t h[2] = {0, 1};
+    int boiling[2] = {0, 0};
+    for (int t = 1; t <= 2; t++) {
+        hearth_set_threads(t);
+        hearth_scene *s = block(0.001, 0.024, 0.024);
+        CHECK(s != NULL);
+        if (!s) break;
+        particles *ps = &s->ps;
+        const double *X = pcold(ps, PC_X);
+        double *T = pcold(ps, PC_TEMPERATURE), *W = pcold(ps, PC_WATER);
+        for (int i = 0; i < ps->n; i++)
+            if (X[3 * i + 1] > 0.042 - 0.003) W[i] = 0, T[i] = 130;
+        CHECK(ps->n >= SCENE_PARALLEL_MIN);
+        hearth_error err;
+        CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+        h[t - 1] = hearth_scene_hash(s);
+        int any = 0; /* E_p > 0 also on dried particles a rounding above the water floor (water.c keeps theirs) */
+        for (int i = 0; i < ps->n && s->water.front; i++) {
+            any += s->water.front[2 * i] > 0;
+            boiling[t - 1] += s->water.front[2 * i] > 0 && material_moisture_ratio(&s->mats.slot[pcoli(ps, PC_MAT)[i]], ps, i) > 0.01;
+        }
+        printf("  %d thread(s): %d particles, %d wet ones boiling in the last step (%d with E_p > 0), hash %016llx\n", t, ps->n,
+               boiling[t - 1], any,
+               (unsigned long long)h[t - 1]);
+        hearth_scene_destroy(s);
+    }
+    hearth_set_threads(0);
+    CHECK(boiling[0] > 0 && boiling[0] == boiling[1]);
+    CHECK(h[0] == h[1]);
+}
+
+TEST_MAIN(T(subcell_conserves_heat_and_keeps_linear_profiles), T(subcell_threads_same_bits), T(boil_front_threads_same_bits))

@@ -22,11 +22,16 @@ typedef struct water_state {
     int limits_valid;      /* 0: particles or materials changed since, scan again */
     int exchange;          /* this step has wet colliders with beta_water > 0 (Robin): water_prepare sets it */
     int hold;              /* this step has wet colliders that hold their saturation: water_prepare sets it */
+    /* latent_heat in MPM (water_boil_front): per particle, the step's boiling heat E_p (J) and its heat
+     * capacity m c (J/K), 2 doubles each; scratch within a step, grown by water_boil_front_prepare */
+    double *front;
+    size_t front_cap;      /* doubles held */
+    double front_removed;  /* the water water_boil_front boiled this step (kg), added by water_finish */
 } water_state;
 
 /// Empty state: nothing lost, limits to be scanned.
 void water_init(water_state *w);
-/// Water holds no memory; this resets w to water_init's state, so every field has the same lifetime calls.
+/// Frees the boiling front's scratch and resets w to water_init's state.
 void water_free(water_state *w);
 /// The step stands: its water loss counts.
 void water_step_stands(water_state *w);
@@ -189,6 +194,14 @@ double water_take(struct hearth_scene *s, int i, double r, double *dmax, double 
 /// the heat capacity (J/K) the step heated it with. Returns
 /// the water boiled (kg); the vapour leaves the body. Both solvers call it.
 double water_boil(struct hearth_scene *s, int i, double *T, double Tb, double vol, double mc);
+/// MPM with latent_heat, before G2P: the boiling front's scratch holds every
+/// particle (an error status, naming the count, when memory runs out).
+hearth_status water_boil_front_prepare(struct hearth_scene *s, hearth_error *err);
+/// MPM with latent_heat, after G2P (which left each boiling particle at Tb
+/// and its excess heat in the scratch): the heat each node took for boiling
+/// goes to the driest wet particles on it first (water.c says how); the water
+/// boiled goes into the step's removed (water_finish).
+hearth_status water_boil_front(struct hearth_scene *s, hearth_error *err);
 /// After transport_apply: the water crossing wet colliders' faces over dt,
 /// into CH_DMW around each contact particle's foot on the face (the boundary
 /// term of holding faces, the exchange of Robin ones).

@@ -808,7 +808,11 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     if (s->def.two_field) mpm_two_field_contact(s);
     if ((st = mpm_ranks_halo_back(s, err))) return st;
     if (wrap) mpm_periodic_fold(s, 1);
+    const int front = heat && water && s->def.latent_heat;
+    if (front && (st = water_boil_front_prepare(s, err))) return st;
     mpm_g2p(s, dt, rep);
+    /* before the wrap: the positions and nodes G2P left (water.c) */
+    if (front && (st = water_boil_front(s, err))) return st;
     if (wrap) mpm_periodic_wrap_all(s);
     if (water) water_finish(s);
     rep->driven_kinetic = 0.5 * rep->mass * vcol * vcol;

@@ -26,6 +26,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     const double *hold_h = HEAT && s->heat.nfix > 0 ? s->heat.hold_h : NULL; /* held temperatures (thermal.c) */
     const double boil = HEAT && WATER && s->def.latent_heat ? s->def.boiling_point : INFINITY; /* no boiling: never passed */
+    /* latent_heat: the boiling heat goes to water_boil_front's scratch, which hands it to the driest (water.c) */
+    double *front = boil < INFINITY ? s->water.front : NULL;
     const int vent = Gcol && s->def.gas_vent > 0 && s->boundary.area; /* boundary.c found the surface this step */
     const double fdt = field_dt(s, dt); /* the CO2's time: the fields' cycle (HEAT runs on its field steps only) */
     const pblock pb = s->mpm->pb[k];
@@ -145,11 +147,21 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             double T1 = !PIC || flip == 1.0 ? T0 + dT : flip * (T0 + dT) + (1.0 - flip) * Tn; /* FLIP-PIC blend */
             if (PIC && hold_h && hold_h[i] > 0) T1 += hold_h[i] * (Tn - T1); /* toward held nodes (thermal.c's held_settle) */
             /* a held body's particle keeps its temperature (thermal.c holds its nodes) */
+            if (front) front[2 * i] = 0.0;
             if (!(flags && (flags[i] & PF_HOLD_T))) {
                 Tcol[i] = T1;
                 /* interior boiling (latent_heat): wet matter stays at the boiling point (water.c) */
-                if (WATER && T1 > boil) w_removed += water_boil(s, i, &Tcol[i], boil, mpm_state_of(s)->vol[i],
-                                                        pcold(ps, PC_MASS)[i] * material_specific_heat_of(&s->mats.slot[mat[i]], ps, i, w_step));
+                if (WATER && T1 > boil) {
+                    const double mc = pcold(ps, PC_MASS)[i] * material_specific_heat_of(&s->mats.slot[mat[i]], ps, i, w_step);
+                    const double vol = mpm_state_of(s)->vol[i];
+                    const double spare = pcold(ps, PC_WATER)[i] - WATER_SATURATION_FLOOR * s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * vol;
+                    if (front && spare > 0 && mc > 0) { /* water_boil's test; the heat to water_boil_front */
+                        front[2 * i] = mc * (T1 - boil), front[2 * i + 1] = mc;
+                        Tcol[i] = boil;
+                    } else if (!front) {
+                        w_removed += water_boil(s, i, &Tcol[i], boil, vol, mc);
+                    }
+                }
             }
             if (Tcol[i] > Tmax[i]) Tmax[i] = Tcol[i];
             if (Gcol) { /* CO2 over the cycle, temperature moving linearly from T0 to T1 (§5.4), less what its
