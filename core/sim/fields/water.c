@@ -503,26 +503,28 @@ double water_boil(hearth_scene *s, int i, double *T, double Tb, double vol, doub
  * gradient and the heat is taken at its outer edge. So G2P leaves each wet
  * particle that passed T_b at T_b and its excess E_p = m_p c_p (T_p - T_b)
  * here (the heat water_boil would have boiled), and this pass hands each
- * node's share of it back to the node's boiling particles, driest first:
+ * node's share of it back to the node's boiling particles, the side the
+ * heat comes from first:
  *   H_i = sum_p w_ip E_p,  G_i = sum_p w_ip g_p,
- *   Q_p = g_p sum_i w_ip H_i / G_i,  g_p = exp(K phi_p),
- * phi_p = 1 - X/X_0 the particle's dryness (material_moisture_ratio), over
- * the particles with E_p > 0 only (a particle below T_b takes none: it is
- * not boiling). Sum_p Q_p = sum_i H_i = sum_p E_p: exact, node by node; the
- * weight a particle has on a node without storage (it moved in G2P) keeps
- * its own heat. Q_p boils water down to the floor (water_boil's
- * dm = Q / L) and what the water cannot take warms the particle, now dry.
- * K = 40: a row with dryness 0.1 more than its neighbour on the node takes
- * e^4 = 55 times its share, so the outer row boils off before the next
- * starts. Serial over nodes and particles in their order (the same bits at
- * any thread count). Rejected: a sort per node, driest taking all
- * (discontinuous in the dryness; a weight does the same within e^-K). */
-#ifndef WATER_FRONT_K
+ *   Q_p = g_p sum_i w_ip H_i / G_i,  g_p = exp(K e_p),
+ * e_p the particle's offset from node i along the node's temperature
+ * gradient (front_pair), over the particles with water to boil. Sum_p Q_p =
+ * sum_i H_i = sum_p E_p: exact, node by node. Q_p boils water down to the
+ * floor (water_boil's dm = Q / L); what a particle's water cannot take goes
+ * round again (front_pass, up to WATER_FRONT_PASSES passes) and what is left at
+ * the end goes back to the particles that boiled it. K = 3: K 8 and 20 made
+ * the front sharper but broke the slab's first order and its columns'
+ * symmetry. Serial over nodes and particles in their order (the same bits
+ * at any thread count; boil_front_threads_same_bits); MPI slabs sum the node
+ * channels. Rejected (docs/validation.md, "A sharper boiling front" and its
+ * sequel): ordering by dryness (exp(40 (1 - X/X_0))), which let one column
+ * run ahead of its neighbours; the ordering only at nodes holding both a
+ * dried and a wet particle, which dried the crumb slab 14.2% early. On its
+ * own this pass overheated a wet block's last dried particles (a FLIP
+ * sub-cell offset, +40 K, that G2P never damps); subcell.c's exchange
+ * relaxes it, and the two run together. */
 #define WATER_FRONT_K 3.0
-#endif
-#ifndef WATER_FRONT_PASSES
 #define WATER_FRONT_PASSES 8
-#endif
 #define FRONT_NS 7 /* scratch doubles a particle */
 enum { FRONT_H = CH_R, FRONT_G = CH_B }; /* dead after thermal_finish until the next P2G (grid.c) */
 
