@@ -194,21 +194,16 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
         const double kp = k_of(s, &km, mat[i], fdt);
         const double a = kp * phi * M[i] * material_specific_heat_of(ms, ps, i, Wc[i]);
         if (!(a > 0)) continue;
-        int base[3];
-        double w[3][3], dw[3][3];
-        grid_point_weights(g, X + 3 * i, base, w, dw);
-        for (int ax = 0; ax < 3; ax++)
-            for (int b = 0; b < 3; b++)
-                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                    const double wt = w[0][ax] * w[1][b] * w[2][c];
-                    const int gi[3] = {base[0] + ax, base[1] + b, D == 3 ? base[2] + c : 0};
-                    int l;
-                    double *node = grid_node_at(g, gi, &l);
-                    if (!node || !(wt > 0)) continue;
-                    node[SC_W * NPB + l] += wt * a;
-                    node[SC_S * NPB + l] += wt * a * T[i];
-                    for (int d = 0; d < D; d++) node[SC_M[d] * NPB + l] += wt * a * (X[3 * i + d] - (g->lo[d] + gi[d] * g->dx));
-                }
+        grid_point_nodes pn;
+        grid_point_nodes_of(g, X + 3 * i, &pn);
+        for (int j = 0; j < pn.n; j++) {
+            double *node = pn.node[j];
+            const int l = pn.l[j], *gi = pn.gi[j];
+            const double wt = pn.w[j];
+            node[SC_W * NPB + l] += wt * a;
+            node[SC_S * NPB + l] += wt * a * T[i];
+            for (int d = 0; d < D; d++) node[SC_M[d] * NPB + l] += wt * a * (X[3 * i + d] - (g->lo[d] + gi[d] * g->dx));
+        }
     }
     hearth_status st = mpm_ranks_fields_sum(s, chs, nch, err);
     if (st) return st;
@@ -255,24 +250,19 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
         if (!(phi > 0)) continue;
         const double kp = k_of(s, &km, mat[i], fdt);
         if (!(kp * phi > 0)) continue; /* C_p = 0 would add nothing to the books either way */
-        int base[3];
-        double w[3][3], dw[3][3];
-        grid_point_weights(g, X + 3 * i, base, w, dw);
+        grid_point_nodes pn;
+        grid_point_nodes_of(g, X + 3 * i, &pn);
         double sum = 0;
-        for (int ax = 0; ax < 3; ax++)
-            for (int b = 0; b < 3; b++)
-                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                    const double wt = w[0][ax] * w[1][b] * w[2][c];
-                    const int gi[3] = {base[0] + ax, base[1] + b, D == 3 ? base[2] + c : 0};
-                    int l;
-                    const double *node = grid_node_at(g, gi, &l);
-                    if (!node || !(wt > 0)) continue;
-                    const double *f = fit + ((size_t)((node - g->data) / (ptrdiff_t)stride) * (size_t)NPB + (size_t)l) * nf;
-                    if (isnan(f[0])) continue;
-                    double v = f[0];
-                    for (int d = 0; d < D; d++) v += f[1 + d] * (X[3 * i + d] - (g->lo[d] + gi[d] * g->dx));
-                    sum += wt * (v - T[i]);
-                }
+        for (int j = 0; j < pn.n; j++) {
+            const double *node = pn.node[j];
+            const int l = pn.l[j], *gi = pn.gi[j];
+            const double wt = pn.w[j];
+            const double *f = fit + ((size_t)((node - g->data) / (ptrdiff_t)stride) * (size_t)NPB + (size_t)l) * nf;
+            if (isnan(f[0])) continue;
+            double v = f[0];
+            for (int d = 0; d < D; d++) v += f[1 + d] * (X[3 * i + d] - (g->lo[d] + gi[d] * g->dx));
+            sum += wt * (v - T[i]);
+        }
         T[i] += kp * phi * sum;
     }
     return HEARTH_OK;

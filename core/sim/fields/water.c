@@ -600,7 +600,7 @@ static double front_pair(const grid *g, const double *node, int l, const double 
 static double front_pass(hearth_scene *s, const int chs[2], double *r, double *cap, double *Q, double *kept,
                          hearth_error *err, hearth_status *st) {
     grid *g = &s->g;
-    const int D = g->dim, NPB = g->nodes_per_block, n = s->ps.n;
+    const int NPB = g->nodes_per_block, n = s->ps.n;
     const double *X = pcold(&s->ps, PC_X);
     for (int k = 0; k < g->nactive; k++) {
         double *d = grid_block(g, k);
@@ -608,45 +608,35 @@ static double front_pass(hearth_scene *s, const int chs[2], double *r, double *c
     }
     for (int i = 0; i < n; i++) {
         if (!(r[i] > 0) && !(cap[i] > 0)) continue;
-        int base[3];
-        double w[3][3], dw[3][3];
-        grid_point_weights(g, X + 3 * i, base, w, dw);
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++)
-                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                    const double wt = w[0][a] * w[1][b] * w[2][c];
-                    const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
-                    int l;
-                    double *node = grid_node_at(g, gi, &l);
-                    if (!node || !(wt > 0)) continue;
-                    if (r[i] > 0) node[chs[0] * NPB + l] += wt * r[i];
-                    if (cap[i] > 0) node[chs[1] * NPB + l] += wt * front_pair(g, node, l, X + 3 * i, gi);
-                }
+        grid_point_nodes pn;
+        grid_point_nodes_of(g, X + 3 * i, &pn);
+        for (int j = 0; j < pn.n; j++) {
+            double *node = pn.node[j];
+            const int l = pn.l[j], *gi = pn.gi[j];
+            const double wt = pn.w[j];
+            if (r[i] > 0) node[chs[0] * NPB + l] += wt * r[i];
+            if (cap[i] > 0) node[chs[1] * NPB + l] += wt * front_pair(g, node, l, X + 3 * i, gi);
+        }
     }
     if ((*st = mpm_ranks_fields_sum(s, chs, 2, err))) return 0;
     double left = 0;
     for (int i = 0; i < n; i++) {
         if (!(r[i] > 0) && !(cap[i] > 0)) continue;
-        int base[3];
-        double w[3][3], dw[3][3];
-        grid_point_weights(g, X + 3 * i, base, w, dw);
+        grid_point_nodes pn;
+        grid_point_nodes_of(g, X + 3 * i, &pn);
         double q = 0, back = 0, none = 1; /* none: the weight on nodes without storage */
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++)
-                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                    const double wt = w[0][a] * w[1][b] * w[2][c];
-                    const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
-                    int l;
-                    const double *node = grid_node_at(g, gi, &l);
-                    if (!node || !(wt > 0)) continue;
-                    none -= wt;
-                    const double G = node[chs[1] * NPB + l];
-                    if (G > 0) {
-                        if (cap[i] > 0) q += wt * front_pair(g, node, l, X + 3 * i, gi) * node[chs[0] * NPB + l] / G;
-                    } else {
-                        back += wt;
-                    }
-                }
+        for (int j = 0; j < pn.n; j++) {
+            const double *node = pn.node[j];
+            const int l = pn.l[j], *gi = pn.gi[j];
+            const double wt = pn.w[j];
+            none -= wt;
+            const double G = node[chs[1] * NPB + l];
+            if (G > 0) {
+                if (cap[i] > 0) q += wt * front_pair(g, node, l, X + 3 * i, gi) * node[chs[0] * NPB + l] / G;
+            } else {
+                back += wt;
+            }
+        }
         const double r0 = r[i] > 0 ? r[i] : 0.0;
         kept[i] += none * r0;
         q = cap[i] > 0 ? q : 0.0;
@@ -664,7 +654,7 @@ static double front_pass(hearth_scene *s, const int chs[2], double *r, double *c
 static hearth_status front_return(hearth_scene *s, const int chs[2], double *r, double *kept, const double *E,
                                   hearth_error *err) {
     grid *g = &s->g;
-    const int D = g->dim, NPB = g->nodes_per_block, n = s->ps.n;
+    const int NPB = g->nodes_per_block, n = s->ps.n;
     const double *X = pcold(&s->ps, PC_X);
     for (int k = 0; k < g->nactive; k++) {
         double *d = grid_block(g, k);
@@ -672,40 +662,30 @@ static hearth_status front_return(hearth_scene *s, const int chs[2], double *r, 
     }
     for (int i = 0; i < n; i++) {
         if (!(E[2 * i] > 0)) continue;
-        int base[3];
-        double w[3][3], dw[3][3];
-        grid_point_weights(g, X + 3 * i, base, w, dw);
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++)
-                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                    const double wt = w[0][a] * w[1][b] * w[2][c];
-                    const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
-                    int l;
-                    double *node = grid_node_at(g, gi, &l);
-                    if (!node || !(wt > 0)) continue;
-                    if (r[i] > 0) node[chs[0] * NPB + l] += wt * r[i];
-                    node[chs[1] * NPB + l] += wt * E[2 * i];
-                }
+        grid_point_nodes pn;
+        grid_point_nodes_of(g, X + 3 * i, &pn);
+        for (int j = 0; j < pn.n; j++) {
+            double *node = pn.node[j];
+            const int l = pn.l[j];
+            const double wt = pn.w[j];
+            if (r[i] > 0) node[chs[0] * NPB + l] += wt * r[i];
+            node[chs[1] * NPB + l] += wt * E[2 * i];
+        }
     }
     hearth_status st = mpm_ranks_fields_sum(s, chs, 2, err);
     if (st) return st;
     for (int i = 0; i < n; i++) {
         if (!(E[2 * i] > 0)) continue;
-        int base[3];
-        double w[3][3], dw[3][3];
-        grid_point_weights(g, X + 3 * i, base, w, dw);
+        grid_point_nodes pn;
+        grid_point_nodes_of(g, X + 3 * i, &pn);
         double q = 0, none = 1;
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++)
-                for (int c = 0; c < (D == 3 ? 3 : 1); c++) {
-                    const double wt = w[0][a] * w[1][b] * w[2][c];
-                    const int gi[3] = {base[0] + a, base[1] + b, D == 3 ? base[2] + c : 0};
-                    int l;
-                    const double *node = grid_node_at(g, gi, &l);
-                    if (!node || !(wt > 0)) continue;
-                    none -= wt;
-                    q += wt * node[chs[0] * NPB + l] / node[chs[1] * NPB + l];
-                }
+        for (int j = 0; j < pn.n; j++) {
+            const double *node = pn.node[j];
+            const int l = pn.l[j];
+            const double wt = pn.w[j];
+            none -= wt;
+            q += wt * node[chs[0] * NPB + l] / node[chs[1] * NPB + l];
+        }
         kept[i] += E[2 * i] * q + none * (r[i] > 0 ? r[i] : 0.0);
     }
     for (int i = 0; i < n; i++) r[i] = 0;

@@ -177,4 +177,33 @@ static inline void grid_point_weights(const grid *g, const double x[3], int base
         bspline_weights(Xd - base[d], w[d], dw[d]);
     }
 }
+/// The nodes of a point's stencil that hold storage and weight, in
+/// grid_point_weights' order (axis 0 outermost): each one's storage, local
+/// index, weight and grid coordinates. For the passes outside P2G and G2P
+/// that walk a particle's nodes one by one (fields/water.c's boiling front,
+/// fields/subcell.c).
+typedef struct grid_point_nodes {
+    double *node[27];
+    int l[27], gi[27][3];
+    double w[27];
+    int n;
+} grid_point_nodes;
+static inline void grid_point_nodes_of(const grid *g, const double x[3], grid_point_nodes *pn) {
+    int base[3];
+    double w[3][3], dw[3][3];
+    grid_point_weights(g, x, base, w, dw);
+    pn->n = 0;
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+            for (int c = 0; c < (g->dim == 3 ? 3 : 1); c++) {
+                const double wt = w[0][a] * w[1][b] * w[2][c];
+                const int gi[3] = {base[0] + a, base[1] + b, g->dim == 3 ? base[2] + c : 0};
+                int l;
+                double *node = grid_node_at(g, gi, &l);
+                if (!node || !(wt > 0)) continue;
+                const int k = pn->n++;
+                pn->node[k] = node, pn->l[k] = l, pn->w[k] = wt;
+                pn->gi[k][0] = gi[0], pn->gi[k][1] = gi[1], pn->gi[k][2] = gi[2];
+            }
+}
 #endif
