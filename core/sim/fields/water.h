@@ -199,7 +199,7 @@ double water_boil(struct hearth_scene *s, int i, double *T, double Tb, double vo
 hearth_status water_boil_front_prepare(struct hearth_scene *s, hearth_error *err);
 /// MPM with latent_heat, after G2P (which left each boiling particle at Tb
 /// and its excess heat in the scratch): the heat each node took for boiling
-/// goes to the driest wet particles on it first (water.c says how); the water
+/// goes to the wet particles on the side the heat comes from first (water.c says how); the water
 /// boiled goes into the step's removed (water_finish).
 hearth_status water_boil_front(struct hearth_scene *s, hearth_error *err);
 /// After transport_apply: the water crossing wet colliders' faces over dt,

@@ -26,7 +26,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     const double *hold_h = HEAT && s->heat.nfix > 0 ? s->heat.hold_h : NULL; /* held temperatures (thermal.c) */
     const double boil = HEAT && WATER && s->def.latent_heat ? s->def.boiling_point : INFINITY; /* no boiling: never passed */
-    /* latent_heat: the boiling heat goes to water_boil_front's scratch, which hands it to the driest (water.c) */
+    /* latent_heat: the boiling heat goes to water_boil_front's scratch, which hands each node's share to its
+     * hot side first (water.c) */
     double *front = boil < INFINITY ? s->water.front : NULL;
     const int vent = Gcol && s->def.gas_vent > 0 && s->boundary.area; /* boundary.c found the surface this step */
     const double fdt = field_dt(s, dt); /* the CO2's time: the fields' cycle (HEAT runs on its field steps only) */
