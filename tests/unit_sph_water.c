@@ -513,19 +513,25 @@ TEST(sph_water_saturation_ignores_surface_J) {
  * fix the bubbles took their material's default saturation 0.5 and fed it to
  * the dough beside them (the roll's centre read 0.31 at 0.02 s). A bubble body
  * given a saturation is refused, naming it. */
-TEST(sph_water_bubbles_hold_no_water) {
-    const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.04, 0.03, 0}, s0 = 0.218;
+/* A pinned 10 x 6 block of dough (1000 kg/m^3, saturation s0, one particle a
+ * cell at the cell centres, dx 2 mm) less its middle 3 x 3, which the caller
+ * fills with bubbles (bubble_body); no gravity. `browning` turns browning on
+ * and starts both at temperature T (degC; NaN: no temperature). *gas is the
+ * bubble material. */
+static hearth_scene *dough_around_a_hole(double s0, int browning, double T, int *gas) {
+    const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.04, 0.03, 0};
     hearth_scene_def d = sph_def(2, dx, lo, hi);
     d.gravity[1] = 0;
+    d.browning = browning;
     hearth_scene *s = hearth_scene_create(&d, NULL);
     CHECK(s != NULL);
-    if (!s) return;
+    if (!s) return NULL;
     const char *n[] = {"density", "bulk", "viscosity", "water_diffusivity", "bubble"};
     const double v[] = {1000, 1e4, 5.0, 1e-9, 1};
     hearth_error err;
     const int dough = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
-    const int gas = hearth_scene_add_material(s, "newtonian", n, v, 5, &err);
-    CHECK(dough >= 0 && gas >= 0);
+    *gas = hearth_scene_add_material(s, "newtonian", n, v, 5, &err);
+    CHECK(dough >= 0 && *gas >= 0);
     /* the dough: a 10 x 6 block less its middle 3 x 3 (particles at cell centres) */
     const double dough_boxes[4][4] = {{0.010, 0.008, 0.030, 0.014}, {0.010, 0.020, 0.030, 0.026},
                                       {0.010, 0.014, 0.016, 0.020}, {0.022, 0.014, 0.030, 0.020}};
@@ -534,21 +540,35 @@ TEST(sph_water_bubbles_hold_no_water) {
         const double c[3] = {0.5 * (b[0] + b[2]), 0.5 * (b[1] + b[3]), 0}, hh[3] = {0.5 * (b[2] - b[0]), 0.5 * (b[3] - b[1]), 0.5};
         hearth_body_def bd = hearth_default_body_def();
         bd.shape = hearth_shape_box(c, hh);
-        bd.material = dough, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1, bd.saturation = s0;
+        bd.material = dough, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1, bd.saturation = s0, bd.temperature = T;
         CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
         hearth_shape_free((hearth_shape *)bd.shape);
     }
-    const int nd = s->ps.n;
+    return s;
+}
+
+/* The hole's bubbles (3 x 3 particles), given saturation `sat` (NaN: none, as the roll adds them). */
+static int bubble_body(hearth_scene *s, int gas, double sat, double T, hearth_error *err) {
     const double c[3] = {0.019, 0.017, 0}, hh[3] = {0.003, 0.003, 0.5};
     hearth_body_def bd = hearth_default_body_def();
     bd.shape = hearth_shape_box(c, hh);
-    bd.material = gas, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1, bd.saturation = 0.3;
-    CHECK(hearth_scene_add_body(s, &bd, &err) < 0); /* refused: a bubble holds no liquid water */
+    bd.material = gas, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1, bd.saturation = sat, bd.temperature = T;
+    const int b = hearth_scene_add_body(s, &bd, err);
+    hearth_shape_free((hearth_shape *)bd.shape);
+    return b;
+}
+
+TEST(sph_water_bubbles_hold_no_water) {
+    const double s0 = 0.218;
+    int gas = -1;
+    hearth_scene *s = dough_around_a_hole(s0, 0, NAN, &gas);
+    if (!s) return;
+    hearth_error err;
+    const int nd = s->ps.n;
+    CHECK(bubble_body(s, gas, 0.3, NAN, &err) < 0); /* refused: a bubble holds no liquid water */
     printf("  refused: %s\n", err.msg);
     CHECK(err.code == HEARTH_ERR_PARAM && strstr(err.msg, "saturation") && strstr(err.msg, "bubble"));
-    bd.saturation = NAN; /* as the roll adds its bubbles */
-    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
-    hearth_shape_free((hearth_shape *)bd.shape);
+    CHECK(bubble_body(s, gas, NAN, NAN, &err) >= 0); /* as the roll adds its bubbles */
     const int nb = s->ps.n - nd;
     double want = 0;
     const int *id = pcoli(&s->ps, PC_ID);
@@ -662,7 +682,49 @@ TEST(sph_latent_heat_stops_at_wet_bulb) {
     wet_bulb_run_checks(s, T_wb, T0, s0);
 }
 
+/* Probes read the dough, not its bubbles: an SPH bubble is gas, with no water
+ * and no crust, so it neither browns nor counts in a saturation or browning
+ * probe (probe.c `carries`); it still counts as material (the volume
+ * fraction), and in the temperature. The block of sph_water_bubbles_hold_no_water at 180 degC
+ * with browning on for 0.02 s: the bubbles' browning stays 0 (before: the
+ * floor's water factor 1 browned them as dried crust, 3.39e-5 here); with the dough's browning set
+ * to 0.6 and the bubbles' to 0.9, a probe beside the hole reads 0.6 and the
+ * dough's saturation 0.218, to 1e-12 (before: 0.684 and 0.157, the bubbles
+ * averaged in), and the hole's centre, bubbles only, reads NaN for both (before: 0.9 and the floor's
+ * 1e-4) and a temperature. */
+TEST(sph_probes_leave_bubbles_out) {
+    const double s0 = 0.218, T = 180;
+    int gas = -1;
+    hearth_scene *s = dough_around_a_hole(s0, 1, T, &gas);
+    if (!s) return;
+    hearth_error err;
+    const int nd = s->ps.n;
+    CHECK(bubble_body(s, gas, NAN, T, &err) >= 0);
+    CHECK(hearth_scene_advance(s, 0.02, &err) == HEARTH_OK);
+    const int *id = pcoli(&s->ps, PC_ID);
+    double *b = pcold(&s->ps, PC_BROWNING), bubble_b = 0;
+    for (int i = 0; i < s->ps.n; i++)
+        if (id[i] >= nd) bubble_b = fmax(bubble_b, b[i]);
+    for (int i = 0; i < s->ps.n; i++) b[i] = id[i] < nd ? 0.6 : 0.9;
+    const double beside[3] = {0.0155, 0.017, 0}, hole[3] = {0.019, 0.017, 0};
+    double bb = NAN, sb = NAN, bh = 0, sh = 0, th = NAN;
+    CHECK(hearth_probe_point(s, "browning", beside, &bb, &err) == HEARTH_OK);
+    CHECK(hearth_probe_point(s, "saturation", beside, &sb, &err) == HEARTH_OK);
+    CHECK(hearth_probe_point(s, "browning", hole, &bh, &err) == HEARTH_OK);
+    CHECK(hearth_probe_point(s, "saturation", hole, &sh, &err) == HEARTH_OK);
+    CHECK(hearth_probe_point(s, "temperature", hole, &th, &err) == HEARTH_OK);
+    printf("  bubbles' browning after 0.02 s at %.0f degC: %.3g (want 0); beside the hole: browning %.15g (want 0.6), "
+           "saturation %.15g (want %.3f); the hole's centre: browning %g, saturation %g (want NaN), temperature %.2f degC\n",
+           T, bubble_b, bb, sb, s0, bh, sh, th);
+    CHECK(bubble_b == 0);
+    CHECK(fabs(bb - 0.6) < 1e-12);
+    CHECK(fabs(sb - s0) < 1e-12);
+    CHECK(isnan(bh) && isnan(sh));
+    CHECK(fabs(th - T) < 1.0);
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(sph_water_sheet_robin_converges), T(sph_water_sheet_3d_converges), T(sph_water_drying_vs_fd), T(sph_water_conserves),
           T(sph_latent_heat_energy_balance), T(sph_latent_heat_crumb_plateau), T(sph_browning_reads_water),
           T(sph_water_saturation_ignores_surface_J), T(sph_water_alloc_failures),
-          T(sph_latent_heat_stops_at_wet_bulb), T(sph_water_bubbles_hold_no_water))
+          T(sph_latent_heat_stops_at_wet_bulb), T(sph_water_bubbles_hold_no_water), T(sph_probes_leave_bubbles_out))

@@ -4,7 +4,13 @@
  * A probe value is the mass-weighted B-spline average of nearby particles'
  * values (kernel radius 1.5 dx, as the transfers). Where the particles' volume
  * fraction under the kernel is below 1/4 the point is outside the material and
- * the probe returns NaN, which displays as background. */
+ * the probe returns NaN, which displays as background. A particle that does
+ * not carry the quantity (another material's mixing ratio; an SPH bubble's
+ * saturation or browning: gas, not dough; `carries`) counts in the volume
+ * fraction but not in the average, which is over the particles that carry it
+ * (NaN where none does). Averaged in, bubbles at the water floor read a
+ * dough's 0.218 as 0.157 beside them (sph_probes_leave_bubbles_out) and
+ * browned as dried crust; a mixture's border read NaN. */
 #include <math.h>
 #include <string.h>
 
@@ -166,6 +172,22 @@ static void particle_stress(const hearth_scene *s, int i, double tau[9], double 
     }
 }
 
+/* Whether particle i carries field f. An SPH bubble is gas: it holds no
+ * liquid water and has no crust to brown (fields/water.c water_sph_gas); a
+ * mixing ratio is its mixture's. A particle that does not carry a field has
+ * the value NaN, and probes leave it out of their average (the header). A NaN
+ * from a particle that does carry it (a plugin that failed to evaluate its
+ * stress) stays in, and shows. */
+static int gas_particle(const hearth_scene *s, int i) {
+    return water_sph_gas(s, &s->mats.slot[pcoli(&s->ps, PC_MAT)[i]]);
+}
+
+static int carries(const hearth_scene *s, int f, int i) {
+    if (f == F_SATURATION || f == F_BROWNING) return !gas_particle(s, i);
+    if (f == F_MIX_RATIO) return pcoli(&s->ps, PC_MAT)[i] == s->mix.mat;
+    return 1;
+}
+
 static void particle_value(const hearth_scene *s, int f, int i, double *out, double *state_copy) {
     const particles *ps = &s->ps;
     const double *v = pcold(ps, PC_V) + 3 * i, J = particles_J(ps, i);
@@ -185,9 +207,9 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_TEMPERATURE: out[0] = pcold(ps, PC_TEMPERATURE)[i]; break;
     case F_BOUNDARY: out[0] = (pcoli(ps, PC_FLAGS)[i] & PF_BOUNDARY) ? 1.0 : 0.0; break;
     case F_GAS: out[0] = pcold(ps, PC_GAS)[i]; break;
-    case F_SATURATION: out[0] = water_saturation(s, i); break;
+    case F_SATURATION: out[0] = carries(s, f, i) ? water_saturation(s, i) : NAN; break;
     case F_MIX_RATIO: /* NaN on other materials' particles: they are not part of the mixture */
-        out[0] = pcoli(ps, PC_MAT)[i] == s->mix.mat ? pcold(ps, PC_MIXD)[8 * i] : NAN;
+        out[0] = carries(s, f, i) ? pcold(ps, PC_MIXD)[8 * i] : NAN;
         break;
     case F_WATER_MASS: /* as a density: water mass over the particle's current volume */
         out[0] = pcold(ps, PC_WATER)[i] / (pcold(ps, PC_VOL0)[i] * J);
@@ -195,7 +217,7 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_WATER_PRESSURE: /* p^w = c (s - s_0), compression positive (eq. 14) */
         out[0] = s->mats.slot[pcoli(ps, PC_MAT)[i]].core[CP_WATER_STIFFNESS] * (water_saturation(s, i) - pcold(ps, PC_SAT0)[i]);
         break;
-    case F_BROWNING: out[0] = pcold(ps, PC_BROWNING)[i]; break; /* Delta E / 52 (browning.c) */
+    case F_BROWNING: out[0] = carries(s, f, i) ? pcold(ps, PC_BROWNING)[i] : NAN; break; /* Delta E / 52 (browning.c) */
     case F_DAMAGE: {
         const int m = pcoli(ps, PC_MAT)[i];
         const material_slot *ms = &s->mats.slot[m];
@@ -305,6 +327,7 @@ static hearth_status splat(const hearth_scene *s, int f, const lattice *L, doubl
         if (a0 > a1 || b0 > b1) continue;
         double val[9];
         int have = 0;
+        const int carried = carries(s, f, i);
         const double m = pcold(ps, PC_MASS)[i], V = pcold(ps, PC_VOL0)[i] * particles_J(ps, i);
         for (int a = a0; a <= a1; a++)
             for (int b = b0; b <= b1; b++) {
@@ -315,12 +338,13 @@ static hearth_status splat(const hearth_scene *s, int f, const lattice *L, doubl
                     w *= q < 0.5 ? 0.75 - q * q : (q < 1.5 ? 0.5 * (1.5 - q) * (1.5 - q) : 0.0);
                 }
                 if (w <= 0) continue;
-                if (!have) {
+                if (!have && carried) {
                     particle_value(s, f, i, val, copy);
                     have = 1;
                 }
                 double *A = acc + (size_t)(a * L->nb + b) * (nc + 2);
                 A[0] += w * V / cellv;
+                if (!carried) continue; /* present, but without the quantity (the header) */
                 A[1] += w * m;
                 for (int k = 0; k < nc; k++) A[2 + k] += w * m * val[k];
             }

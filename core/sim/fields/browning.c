@@ -21,7 +21,9 @@
  * saturation, s_0 its initial one): the full rate for a dry particle, none
  * for one as wet as the raw dough. The linear map is our choice, the
  * simplest that has those two ends; it is not a measured law. Without the
- * water field the factor is 1.
+ * water field the factor is 1. An SPH bubble is gas, with no crust of its
+ * own: it does not brown (its index stays 0, and probes leave it out), where
+ * its water at the floor had browned it as dried crust.
  *
  * Integration. Over a step the temperature is taken as constant (its value
  * at the end of the step) and b advances exactly: b <- 1 - (1 - b)
@@ -71,8 +73,10 @@ void browning_step(hearth_scene *s, double dt) {
     const int wet = (ps->enabled & (1u << PC_WATER)) != 0;
     const double *sat0 = wet ? pcold(ps, PC_SAT0) : NULL;
     const double scale = s->def.browning_scale;
+    const int *mat = pcoli(ps, PC_MAT);
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
+        if (water_sph_gas(s, &s->mats.slot[mat[i]])) continue; /* an SPH bubble is gas: no crust of its own */
         const double f = wet ? browning_water_factor(water_saturation(s, i), sat0[i]) : 1.0;
         b[i] = browning_advance(b[i], browning_rate(T[i], scale) * f, dt);
     }
