@@ -52,7 +52,8 @@
 #include "browning.h"
 #include "mpm_fixture.h"
 
-static const double RHO = 484, CW = 2700, CD = 0.55 * 1650, KW = 0.51, KD = 0.23, SAT = 0.218, TP = 200, TB = 100,
+static double CD = 0.55 * 1650; /* BASE_CD (below) */
+static const double RHO = 484, CW = 2700, KW = 0.51, KD = 0.23, SAT = 0.218, TP = 200, TB = 100,
                     BETA = 100;
 static const double DEPTH = 0.016, WIDTH = 0.02, TEND = 1500;
 static double DXS[3] = {0.005, 0.0025, 0.00125};
@@ -99,7 +100,8 @@ static double b_form(double y, double t) {
  * (1: backward Euler heat), BASE_FLIP (the scene's heat_flip), BASE_OVEN (an
  * oven at this temperature, beta 30: at T_b it leaves the wet top at T_b and
  * runs the loaf's explicit path with the small nodes merged), BASE_DT (the
- * largest step, s), BASE_REFINE (the three dx divided by it), BASE_TRACE (the
+ * largest step, s), BASE_REFINE (the three dx divided by it), BASE_CD (the
+ * dried heat capacity, J/(kg K), the form's too), BASE_TRACE (the
  * bottom particle's history every 100 s). */
 static double knob(const char *name, double dflt) {
     const char *v = getenv(name);
@@ -113,6 +115,7 @@ typedef struct base {
     double face;     /* the field at the face (the B-spline probe at the tray's top, the column's middle), degC */
     double t_dry;    /* when the bottom particle's moisture ratio fell below 0.01 (s) */
     double ratio;    /* its moisture ratio at TEND */
+    double over, t_over, Tmax; /* its largest T - T_(4)(y, t) (K) over the samples, when (s), and its largest T (degC) */
 } base;
 
 static int run(double dx, base *r) {
@@ -152,7 +155,7 @@ static int run(double dx, base *r) {
     hearth_scene_stats(s, &st);
     const double W0 = st.water_mass;
     r->t_dry = INFINITY;
-    const int nsub = 150;
+    const int nsub = knob("BASE_TRACE", 0) == 2 ? 1500 : 150;
     int ib = -1;
     for (int k = 1; k <= nsub; k++) {
         if (hearth_scene_advance(s, k * TEND / nsub, &err) != HEARTH_OK) {
@@ -169,7 +172,11 @@ static int run(double dx, base *r) {
             if (fabs(X[3 * i] - 0.5 * WIDTH) < 0.5 * dx && (ib < 0 || X[3 * i + 1] < X[3 * ib + 1])) ib = i;
         r->ratio = Wp[ib] / (1000 * S0[ib] * V0[ib]);
         if (r->ratio < 0.01 && !isfinite(r->t_dry)) r->t_dry = hearth_scene_time(s);
-        if (getenv("BASE_TRACE") && k % 10 == 0) { /* a measurement switch: the bottom particle's history */
+        const double Tb_ = pcold(&s->ps, PC_TEMPERATURE)[ib], ex = Tb_ - t_form(X[3 * ib + 1], hearth_scene_time(s));
+        if (k == 1 || ex > r->over) r->over = ex, r->t_over = hearth_scene_time(s);
+        if (k == 1 || Tb_ > r->Tmax) r->Tmax = Tb_;
+        const double tnow = hearth_scene_time(s);
+        if (getenv("BASE_TRACE") && (nsub == 150 ? k % 10 == 0 : tnow > knob("BASE_T0", 60) && tnow < knob("BASE_T1", 140))) { /* a measurement switch: the bottom particle's history */
             const double at[3] = {0.5 * WIDTH, 0, 0}, t = hearth_scene_time(s), yb = X[3 * ib + 1];
             double fT = NAN;
             CHECK(hearth_probe_point(s, "temperature", at, &fT, &err) == HEARTH_OK);
@@ -187,15 +194,16 @@ static int run(double dx, base *r) {
     CHECK(hearth_probe_point(s, "temperature", at, &r->face, &err) == HEARTH_OK);
     printf("    dx %.4g mm: %d particles, %ld steps; water boiled %.3f mm; bottom particle (%.3f mm up) dry at %.1f s "
            "((4): %.1f s), ratio %.4f, T %.2f degC ((4) %.2f), browning %.4f ((4) %.4f); the field at the face %.2f degC "
-           "((4) %.2f)\n",
+           "((4) %.2f); its largest excess over (4) %.1f K at %.0f s, its largest T %.2f degC (every 10 s)\n",
            1e3 * dx, s->ps.n, s->step, 1e3 * r->d, 1e3 * r->y, r->t_dry, t_of_d(r->y, 1), r->ratio, r->T,
-           t_form(r->y, TEND), r->b, b_form(r->y, TEND), r->face, t_form(0, TEND));
+           t_form(r->y, TEND), r->b, b_form(r->y, TEND), r->face, t_form(0, TEND), r->over, r->t_over, r->Tmax);
     hearth_scene_destroy(s);
     return 1;
 }
 
 static void three(base r[3]) {
-    const double f = knob("BASE_REFINE", 1.0); /* a measurement switch, unset in the tests: the ladder divided by it */
+    const double f = knob("BASE_REFINE", 1.0);
+    CD = knob("BASE_CD", CD);
     for (int k = 0; k < 3; k++) DXS[k] /= f;
     for (int k = 0; k < 3; k++) CHECK(run(DXS[k], &r[k]));
 }

@@ -52,6 +52,10 @@ int main(int argc, char **argv) {
             b[j] -= (1 - b[j]) * expm1(-kbr(Ty) * (1 - Xy) * dt);
         }
         bf -= (1 - bf) * expm1(-kbr(Tf) * (1 - X[0]) * dt);
+        const long every = (long)lround(300 / dt); /* the loaf's CSV rows at 4, 9, 14, 19, 24 min */
+        if ((s + 1 + (long)lround(60 / dt)) % every == 0)
+            printf("  %.1f min: face %.2f degC, b %.4f; b at y %.4g / %.4g / %.4g / %.4g mm: %.4f / %.4f / %.4f / %.4f\n",
+                   (s + 1) * dt / 60, Tf, bf, ys[0] * 1e3, ys[1] * 1e3, ys[2] * 1e3, ys[3] * 1e3, b[0], b[1], b[2], b[3]);
     }
     printf("T0 %g degC, h %g mm: boiled %.4f mm; face %.2f degC, browning %.4f (first cell dry at %.1f s)", T0, h * 1e3, boiled * 1e3,
            Tf, bf, tface);
