@@ -43,6 +43,7 @@
 #include <math.h>
 
 #include "scene.h"
+#include "thermal.h"
 #include "water.h"
 
 double browning_rate(double T, double scale) {
@@ -63,6 +64,33 @@ double browning_advance(double b, double kf, double dt) {
     return b - (1 - b) * expm1(-kf * dt);
 }
 
+/* On a step that carried the fields, each particle's surface offsets (PC_SURFACE): the air surface's
+ * temperature and saturation above its own, by the oven's and the evaporation's closures (thermal.c's
+ * thermal_surface_temperature, water.c's water_surface_saturation: the depth boundary.c found this step, the
+ * particle's kappa(w) and material), 0 for a particle off the oven's air surface. Kept for the steps until the
+ * next field step, when the boundary arrays no longer follow the particles' order (the sort). */
+static void surface_offsets(hearth_scene *s) {
+    const particles *ps = &s->ps;
+    const int n = ps->n, wet = (ps->enabled & (1u << PC_WATER)) != 0;
+    const double *T = pcold(ps, PC_TEMPERATURE);
+    double *o = pcold(ps, PC_SURFACE);
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        const double Ts = thermal_surface_temperature(s, i);
+        if (isnan(Ts)) {
+            o[2 * i] = o[2 * i + 1] = 0.0;
+            continue;
+        }
+        o[2 * i] = Ts - T[i];
+        if (wet) {
+            const double sp = water_saturation(s, i);
+            o[2 * i + 1] = water_surface_saturation(s, i, sp) - sp;
+        } else {
+            o[2 * i + 1] = 0.0;
+        }
+    }
+}
+
 void browning_step(hearth_scene *s, double dt) {
     const particles *ps = &s->ps;
     const int n = ps->n;
@@ -71,8 +99,16 @@ void browning_step(hearth_scene *s, double dt) {
     const int wet = (ps->enabled & (1u << PC_WATER)) != 0;
     const double *sat0 = wet ? pcold(ps, PC_SAT0) : NULL;
     const double scale = s->def.browning_scale;
+    const int surf = (ps->enabled & (1u << PC_SURFACE)) != 0; /* MPM with an oven (scene.c) */
+    if (surf && !s->field_skip) surface_offsets(s);
+    const double *o = surf ? pcold(ps, PC_SURFACE) : NULL;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
+        if (o && (o[2 * i] != 0.0 || o[2 * i + 1] != 0.0)) { /* on the oven's air surface: its surface's colour */
+            const double f = wet ? browning_water_factor(water_saturation(s, i) + o[2 * i + 1], sat0[i]) : 1.0;
+            b[i] = browning_advance(b[i], browning_rate(T[i] + o[2 * i], scale) * f, dt);
+            continue;
+        }
         const double f = wet ? browning_water_factor(water_saturation(s, i), sat0[i]) : 1.0;
         b[i] = browning_advance(b[i], browning_rate(T[i], scale) * f, dt);
     }

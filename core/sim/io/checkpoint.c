@@ -590,6 +590,9 @@ static int get_particles(ck_cursor *c, hearth_scene *s, hearth_error *err) {
     /* nor one saved before the gas vented between the fields' updates: nothing vents until the next (gas.c) */
     if ((ps->enabled & (1u << PC_VENT)) && !(enabled & (1u << PC_VENT)) && n)
         memset(ps->col[PC_VENT], 0, sizeof(double) * (size_t)n);
+    /* nor one saved before browning read the air surface: each particle its own until the next field step */
+    if ((ps->enabled & (1u << PC_SURFACE)) && !(enabled & (1u << PC_SURFACE)) && n)
+        memset(ps->col[PC_SURFACE], 0, sizeof(double) * 2 * (size_t)n);
     ps->n = (int)n;
     return 0;
 }
