@@ -379,7 +379,8 @@ static double b_closed(double t_end) {
  * from the reasons above, not fitted to it. Measured (25 min, 4 / 2 / 1 mm): before (the particle's own
  * temperature) 0.183 / 0.206 / 0.241; the surface from the particle's own temperature (rejected) 0.325 / 0.296 /
  * 0.290 with T_s 153.6 / 146.5 / 145.6 degC; the surface from the nodes' sample (this) 0.224 / 0.255 with T_s
- * 144.3 / 143.2 degC; with the surface taken dry (water factor 1, not done) 0.252 / 0.264. ~1 s in release. */
+ * 144.3 / 143.2 degC (1 mm: 0.265, 143.3); with the surface taken dry (water factor 1, not done) 0.252 / 0.264.
+ * 2.6 s CPU in release: release_only. */
 TEST(drying_front_surface_browns) {
     BROWN = 1;
     const int nr = getenv("FRONT_NR") ? atoi(getenv("FRONT_NR")) : 2;

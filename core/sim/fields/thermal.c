@@ -307,7 +307,7 @@ double thermal_surface_temperature(const hearth_scene *s, int i) {
     /* the sample the flux read: the nodes' temperature at the particle (this step's solution), not the particle's
      * own, which FLIP and subcell.c keep nearer its own, shallower place (docs/validation.md, "The surface's
      * colour": with the particle's own the drying slab's surface read 9.2, 2.0, 1.1 K hot at 4, 2, 1 mm, with
-     * the nodes' 1.1, 0.4, 0.6 K off the closed form) */
+     * the nodes' 0.1, 1.2, 1.1 K cool of the closed form's) */
     double *node[27], w[27];
     int l[27];
     const int NPB = s->g.nodes_per_block, m = contact_stencil(&s->g, pcold(ps, PC_X) + 3 * i, node, l, w, NULL);
