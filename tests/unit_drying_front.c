@@ -369,7 +369,7 @@ static double b_closed(double t_end) {
  * evaporation and no diffusivity, the particle's own). The same slab, browning on, 25 min at 4 and 2 mm: the
  * middle column's top particle's index against b_closed (0.2818), the surface's temperature against (4)'s
  * T_s (144.46 degC). Bars, each with its reason:
- * - the index's error at 2 mm under 15% of the closed form: the front itself is 1.2% off (4) at 2 mm, but the
+ * - the index's error at 2 mm under 15% of the closed form: the front itself (d_int) is 6.1% off (4) at 2 mm, and the
  *   top particle dries 2.7 min late there (drying_front_follows_stefan: the boiling zone's width), and its
  *   water factor holds it back meanwhile (a first-order delay we do not remove here);
  * - the error falling with dx: |b(2) - b_c| under 0.7 |b(4) - b_c| (first order gives 0.5);
