@@ -281,5 +281,34 @@ TEST(browning_checkpoint_roundtrip) {
     hearth_scene_destroy(s);
 }
 
+/* The browning of the oven's air surface (browning.c's surface_offsets) at 1 and 2 threads: a 2D block of 6400
+ * particles (above SCENE_PARALLEL_MIN, so the loops run on both) in a 250 degC oven, 0.5 s at browning_scale 600:
+ * the same hash, and the surface offsets live on its outer particles (some nonzero, hotter than their own). */
+TEST(browning_surface_threads) {
+    uint64_t h[2];
+    for (int t = 1; t <= 2; t++) {
+        hearth_set_threads(t);
+        hearth_scene *s = brown_scene(HEARTH_SOLVER_MPM, 0.0025, 0.2, 600, 250);
+        CHECK(s != NULL);
+        if (!s) return;
+        s->def.oven_beta = 40;
+        const int m = brown_material(s, HEARTH_SOLVER_MPM, 2800.0 / 600, 0.4);
+        const double c[3] = {0.1, 0.1, 0}, hh[3] = {0.05, 0.05, 0.5};
+        CHECK(m >= 0 && brown_block(s, m, c, hh, 4, 1, 20) >= 0);
+        CHECK(s->ps.n >= SCENE_PARALLEL_MIN);
+        CHECK(s->ps.enabled & (1u << PC_SURFACE));
+        hearth_error err;
+        CHECK(hearth_scene_advance(s, 0.5, &err) == HEARTH_OK);
+        int live = 0;
+        for (int i = 0; i < s->ps.n; i++) live += pcold(&s->ps, PC_SURFACE)[2 * i] > 0;
+        h[t - 1] = hearth_scene_hash(s);
+        printf("  %d thread(s): %d particles, %d read a hotter surface, hash %016llx\n", t, s->ps.n, live, (unsigned long long)h[t - 1]);
+        CHECK(live > 0);
+        hearth_scene_destroy(s);
+    }
+    hearth_set_threads(0);
+    CHECK(h[0] == h[1]);
+}
+
 TEST_MAIN(T(browning_closed_form), T(browning_checkpoint_roundtrip), T(browning_surface_not_crumb), T(browning_surface_not_crumb_sph), T(browning_history_not_current),
-          T(browning_wet_does_not_brown))
+          T(browning_wet_does_not_brown), T(browning_surface_threads))

@@ -50,6 +50,7 @@
 #include <string.h>
 
 #include "mpm_fixture.h"
+#include "browning.h"
 
 static const double RHO = 484, CP = 2700, KW = 0.51, KD = 0.23, SAT = 0.218, TO = 200, TB = 100, BETA = 30;
 static const double DEPTH = 0.024, WIDTH = 0.024; /* the slab; the front reaches ~6.5 mm in 25 min */
@@ -96,6 +97,8 @@ typedef struct front {
     double t_dry;    /* when it fell below 0.01, so that water_boil lets it heat past T_b (s) */
     double width;    /* the front's width at the end: depth of ratio 0.1 to depth of ratio 0.9 (m) */
     double spread;   /* the columns' dried depth at the end: (largest - smallest) / largest */
+    double b_top[NT], Ts_top[NT], probe_top[NT]; /* with BROWN: the top particle's browning, the air surface's
+                                                  * temperature browning.c gave it, the field at its place */
     double crust_probe, crust_part; /* at the end, over the middle column's dried particles (ratio < 0.01), the
                                      * largest |T - T_(4)(depth)| / (T_s - T_b) of the probe (the B-spline average
                                      * at the particle's place) and of the particle's own temperature */
@@ -126,6 +129,17 @@ static double crossing(const double *depth, const double *ratio, int n, double l
     return depth[n - 1];
 }
 
+/* The middle column's top particle (the shallowest within dx/2 of the middle), or -1. */
+static int top_particle(const hearth_scene *s, double dx) {
+    const double *X = pcold(&s->ps, PC_X);
+    int best = -1;
+    for (int i = 0; i < s->ps.n; i++)
+        if (fabs(X[3 * i] - 0.5 * WIDTH) < 0.5 * dx && (best < 0 || X[3 * i + 1] > X[3 * best + 1])) best = i;
+    return best;
+}
+
+static int BROWN; /* the run bakes with browning on (drying_front_surface_browns) */
+
 /* The slab at dx, stepped at dt_max; fills f. flip: the scene's heat_flip. */
 static int run(double dx, double dt_max, double flip, front *f) {
     hearth_scene_def d = hearth_default_scene_def();
@@ -141,6 +155,7 @@ static int run(double dx, double dt_max, double flip, front *f) {
     d.boiling_point = TB;
     d.heat_implicit = 1;
     d.heat_flip = flip;
+    d.browning = BROWN;
     hearth_scene *s = fx_scene_def(&d);
     if (!s) return 0;
     hearth_error err;
@@ -181,6 +196,20 @@ static int run(double dx, double dt_max, double flip, front *f) {
         f->half[k] = crossing(depth, ratio, n, 0.5);
         f->top[k] = temp[0];
         f->ytop = depth[0];
+        if (BROWN && k == NT - 1 && getenv("FRONT_DEBUG")) { /* the middle column's rows: depth, index, surface offset */
+            const double *X = pcold(&s->ps, PC_X), *o = pcold(&s->ps, PC_SURFACE), *bb = pcold(&s->ps, PC_BROWNING);
+            for (int i = 0; i < s->ps.n; i++)
+                if (fabs(X[3 * i] - 0.5 * WIDTH) < 0.5 * dx && DEPTH - X[3 * i + 1] < 4 * dx)
+                    printf("      row at %.3f mm: b %.4f, surface offset %.2f K, depth %.3f mm, area %.3g\n", 1e3 * (DEPTH - X[3 * i + 1]), bb[i],
+                           o[2 * i], 1e3 * s->boundary.depth[i], s->boundary.area[i]);
+        }
+        if (BROWN) {
+            const int it = top_particle(s, dx);
+            const double *o = pcold(&s->ps, PC_SURFACE), *X = pcold(&s->ps, PC_X);
+            f->b_top[k] = pcold(&s->ps, PC_BROWNING)[it];
+            f->Ts_top[k] = pcold(&s->ps, PC_TEMPERATURE)[it] + o[2 * it];
+            CHECK(hearth_probe_point(s, "temperature", X + 3 * it, &f->probe_top[k], &err) == HEARTH_OK);
+        }
         if (k == NT - 1) {
             f->width = crossing(depth, ratio, n, 0.9) - crossing(depth, ratio, n, 0.1);
             const double t = (k + 1) * EVERY, d4 = d_of_t(t, 1), q = (TO - TB) / (1 / BETA + d4 / KD), dT = q * d4 / KD;
@@ -320,4 +349,60 @@ TEST(drying_front_crust_particles_follow_profile) {
     CHECK(e1 < e2);
 }
 
-TEST_MAIN(T(drying_front_follows_stefan), T(drying_front_crust_particles_follow_profile))
+/* The closed form's surface browning: browning.c's kinetics (Zanoni et al. 1995) at full rate (the surface is
+ * dry from t = 0, when the front starts) integrated over (4)'s surface temperature T_s(t) = T_b + q d / k,
+ * by the midpoint rule in steps of 1 s (rounding below 1e-6 of b). */
+static double b_closed(double t_end) {
+    double I = 0;
+    const int n = (int)lround(t_end);
+    for (int j = 0; j < n; j++) {
+        const double t = j + 0.5, d4 = d_of_t(t, 1), q = (TO - TB) / (1 / BETA + d4 / KD);
+        I += browning_rate(TB + q * d4 / KD, 1.0);
+    }
+    return -expm1(-I);
+}
+
+/* The top's colour against the closed form's surface (issue #18, helper surfacecolour). Colour is the surface's,
+ * and browning.c reads, for a particle on the oven's air surface, the surface temperature the oven's flux defines
+ * (thermal.c's thermal_surface_temperature: T_o - (T_o - th) / (1 + beta d / kappa), th the nodes' value at the
+ * particle, d its sample's depth) and the surface's saturation by the evaporation's closure (here, with no
+ * evaporation and no diffusivity, the particle's own). The same slab, browning on, 25 min at 4 and 2 mm: the
+ * middle column's top particle's index against b_closed (0.2818), the surface's temperature against (4)'s
+ * T_s (144.46 degC). Bars, each with its reason:
+ * - the index's error at 2 mm under 15% of the closed form: the front itself (d_int) is 6.1% off (4) at 2 mm, and the
+ *   top particle dries 2.7 min late there (drying_front_follows_stefan: the boiling zone's width), and its
+ *   water factor holds it back meanwhile (a first-order delay we do not remove here);
+ * - the error falling with dx: |b(2) - b_c| under 0.7 |b(4) - b_c| (first order gives 0.5);
+ * - the surface temperature within 0.05 (T_s - T_b) of (4)'s at both dx (the closure exact on a linear profile:
+ *   what is left is the field's own error, 0.14 at 2 mm in the crust, smaller at the surface).
+ * Honesty about the bars: they were fixed after a first measurement of this case at 4 and 2 mm during the work,
+ * from the reasons above, not fitted to it. Measured (25 min, 4 / 2 / 1 mm): before (the particle's own
+ * temperature) 0.183 / 0.206 / 0.241; the surface from the particle's own temperature (rejected) 0.325 / 0.296 /
+ * 0.290 with T_s 153.6 / 146.5 / 145.6 degC; the surface from the nodes' sample (this) 0.224 / 0.255 with T_s
+ * 144.3 / 143.2 degC (1 mm: 0.265, 143.3); with the surface taken dry (water factor 1, not done) 0.252 / 0.264.
+ * 2.6 s CPU in release: release_only. */
+TEST(drying_front_surface_browns) {
+    BROWN = 1;
+    const int nr = getenv("FRONT_NR") ? atoi(getenv("FRONT_NR")) : 2;
+    front f[3];
+    for (int r = 0; r < nr; r++) CHECK(run(DXS[r], knob("FRONT_DT", 1.0), 1.0, &f[r]));
+    for (int k = 0; k < NT; k++) {
+        const double t = (k + 1) * EVERY, d4 = d_of_t(t, 1), q = (TO - TB) / (1 / BETA + d4 / KD);
+        printf("    %5.1f min: (4) T_s %.2f b %.4f |", t / 60, TB + q * d4 / KD, b_closed(t));
+        for (int r = 0; r < nr; r++)
+            printf(" dx %g: b %.4f T_s %.2f T_p %.2f probe %.2f |", 1e3 * DXS[r], f[r].b_top[k], f[r].Ts_top[k], f[r].top[k], f[r].probe_top[k]);
+        printf("\n");
+    }
+    const int e = NT - 1;
+    const double t = NT * EVERY, d4 = d_of_t(t, 1), q = (TO - TB) / (1 / BETA + d4 / KD), Ts = TB + q * d4 / KD, bc = b_closed(t);
+    const double e4 = fabs(f[0].b_top[e] - bc), e2 = fabs(f[1].b_top[e] - bc);
+    printf("    25 min: top index %.4f, %.4f at 4, 2 mm against %.4f (errors %.1f%%, %.1f%%: asked < 15%% at 2 mm, ratio %.2f "
+           "< 0.7); surface %.2f, %.2f degC against %.2f (asked within %.2f K)\n",
+           f[0].b_top[e], f[1].b_top[e], bc, 100 * e4 / bc, 100 * e2 / bc, e2 / e4, f[0].Ts_top[e], f[1].Ts_top[e], Ts,
+           0.05 * (Ts - TB));
+    CHECK(e2 < 0.15 * bc);
+    CHECK(e2 < 0.7 * e4);
+    for (int r = 0; r < 2; r++) CHECK(fabs(f[r].Ts_top[e] - Ts) < 0.05 * (Ts - TB));
+}
+
+TEST_MAIN(T(drying_front_follows_stefan), T(drying_front_crust_particles_follow_profile), T(drying_front_surface_browns))

@@ -252,6 +252,13 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
         hearth_scene_destroy(s); /* browning.c reads the temperature */
         return NULL;
     }
+    /* with an oven, MPM's browning reads the air surface above a boundary particle, kept between the fields'
+     * updates (browning.c) */
+    if (d.browning && d.solver == HEARTH_SOLVER_MPM && !isnan(d.oven_temperature) && d.oven_beta > 0 &&
+        particles_enable(&s->ps, PC_SURFACE, err)) {
+        hearth_scene_destroy(s);
+        return NULL;
+    }
     if (s->solver->init && s->solver->init(s, err)) { /* the solver's own state (solver.h) */
         hearth_scene_destroy(s);
         return NULL;
@@ -437,6 +444,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         if (ps->enabled & (1u << PC_DRIED)) pcold(ps, PC_DRIED)[j] = 0; /* never dried */
         if (ps->enabled & (1u << PC_THERMAL)) pcold(ps, PC_THERMAL)[j] = 0; /* F = I: no thermal strain taken out yet */
         if (ps->enabled & (1u << PC_VENT)) pcold(ps, PC_VENT)[j] = 0; /* no surface until a field step finds it (gas.c) */
+        if (ps->enabled & (1u << PC_SURFACE)) pcold(ps, PC_SURFACE)[2 * j] = pcold(ps, PC_SURFACE)[2 * j + 1] = 0; /* browning.c */
         if (ps->enabled & (1u << PC_PLUGIN_MEMO)) /* zeros (they miss): a plugin's memo holds only what it wrote (rule 10) */
             memset(pcold(ps, PC_PLUGIN_MEMO) + (size_t)j * ps->memo_stride, 0, sizeof(double) * (size_t)ps->memo_stride);
         if (ps->state_stride) {

@@ -25,6 +25,37 @@
  * own: it does not brown (its index stays 0, and probes leave it out), where
  * its water at the floor had browned it as dried crust.
  *
+ * The air surface (MPM with an oven; issue #18, helper surfacecolour). Colour
+ * is a property of the surface, and a particle on the oven's air surface
+ * (PF_BOUNDARY with an oven coefficient: find_boundary in thermal.c) is not
+ * at it: the grid samples its temperature d ~ 0.57 dx deep (boundary.c's
+ * sample_depth), and the crust is a few mm thick. The oven's flux already
+ * defines the surface's temperature, q = beta (T_o - T_s) = beta (T_o - th) /
+ * (1 + beta d / kappa(w)), th the nodes' value at the particle; browning reads
+ * that T_s (thermal_surface_temperature: the same d and kappa(w)) and the
+ * surface's saturation by the evaporation's closure (water_surface_saturation:
+ * the same d, water_surface_excess) in the water factor. Why the surface and
+ * not the particle's own depth: what the claims and a camera see is the
+ * surface; the slab of tests/unit_drying_front.c browns its top 0.224, 0.255,
+ * 0.265 at 4, 2, 1 mm against the Stefan form's surface's 0.282 (before:
+ * 0.183, 0.206, 0.241, the particle's own). Why the nodes' th and not the
+ * particle's own temperature: a dried particle's own (FLIP, subcell.c's fit
+ * at its place) stands nearer its own, shallower depth than the sample's d,
+ * and with it the slab's surface read 9.2, 2.0, 1.1 K hot at 4, 2, 1 mm and
+ * browned 0.325 at 4 mm (with th: 0.1, 1.2, 1.1 K). Why the surface's water:
+ * the loaf's top evaporates through a layer the closure resolves, so its
+ * surface is dry long before its particle is (loaf 25 min, 5 / 2.5 mm: top
+ * 0.147 / 0.157 with it, 0.082 / 0.135 with the particle's own water).
+ * Limits: every particle holding air area reads its surface, and boundary.c
+ * spreads the area over the ramp, up to 2.5 cells in (a row 3.5 mm deep at
+ * 2 mm browns 0.197 against the top's 0.255): the colour's depth in a
+ * cross-section is a few cells, not the crust's; a particle by a heated
+ * collider's face keeps its own temperature (the loaf's base on its tray:
+ * the contact is not the air's closure). The offsets (T_s - T, s_s - s) are
+ * found on the steps that carry the fields, where the boundary arrays follow
+ * the particle order, and kept in PC_SURFACE for the steps between (saved in
+ * checkpoints, version 9). Without an oven or in SPH nothing changes.
+ *
  * Integration. Over a step the temperature is taken as constant (its value
  * at the end of the step) and b advances exactly: b <- 1 - (1 - b)
  * exp(-k f dt). At constant temperature this reproduces the closed form to
@@ -45,6 +76,7 @@
 #include <math.h>
 
 #include "scene.h"
+#include "thermal.h"
 #include "water.h"
 
 double browning_rate(double T, double scale) {
@@ -65,6 +97,33 @@ double browning_advance(double b, double kf, double dt) {
     return b - (1 - b) * expm1(-kf * dt);
 }
 
+/* On a step that carried the fields, each particle's surface offsets (PC_SURFACE): the air surface's
+ * temperature and saturation above its own, by the oven's and the evaporation's closures (thermal.c's
+ * thermal_surface_temperature, water.c's water_surface_saturation: the depth boundary.c found this step, the
+ * particle's kappa(w) and material), 0 for a particle off the oven's air surface. Kept for the steps until the
+ * next field step, when the boundary arrays no longer follow the particles' order (the sort). */
+static void surface_offsets(hearth_scene *s) {
+    const particles *ps = &s->ps;
+    const int n = ps->n, wet = (ps->enabled & (1u << PC_WATER)) != 0;
+    const double *T = pcold(ps, PC_TEMPERATURE);
+    double *o = pcold(ps, PC_SURFACE);
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        const double Ts = thermal_surface_temperature(s, i);
+        if (isnan(Ts)) {
+            o[2 * i] = o[2 * i + 1] = 0.0;
+            continue;
+        }
+        o[2 * i] = Ts - T[i];
+        if (wet) {
+            const double sp = water_saturation(s, i);
+            o[2 * i + 1] = water_surface_saturation(s, i, sp) - sp;
+        } else {
+            o[2 * i + 1] = 0.0;
+        }
+    }
+}
+
 void browning_step(hearth_scene *s, double dt) {
     const particles *ps = &s->ps;
     const int n = ps->n;
@@ -74,9 +133,17 @@ void browning_step(hearth_scene *s, double dt) {
     const double *sat0 = wet ? pcold(ps, PC_SAT0) : NULL;
     const double scale = s->def.browning_scale;
     const int *mat = pcoli(ps, PC_MAT);
+    const int surf = (ps->enabled & (1u << PC_SURFACE)) != 0; /* MPM with an oven (scene.c) */
+    if (surf && !s->field_skip) surface_offsets(s);
+    const double *o = surf ? pcold(ps, PC_SURFACE) : NULL;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         if (water_sph_gas(s, &s->mats.slot[mat[i]])) continue; /* an SPH bubble is gas: no crust of its own */
+        if (o && (o[2 * i] != 0.0 || o[2 * i + 1] != 0.0)) { /* on the oven's air surface: its surface's colour */
+            const double f = wet ? browning_water_factor(water_saturation(s, i) + o[2 * i + 1], sat0[i]) : 1.0;
+            b[i] = browning_advance(b[i], browning_rate(T[i] + o[2 * i], scale) * f, dt);
+            continue;
+        }
         const double f = wet ? browning_water_factor(water_saturation(s, i), sat0[i]) : 1.0;
         b[i] = browning_advance(b[i], browning_rate(T[i], scale) * f, dt);
     }

@@ -14,6 +14,9 @@ struct hearth_scene;
 #define THERMAL_CT 9
 typedef struct thermal_state {
     double *bnd_coef, *bnd_temp; /* per particle: boundary S beta (W/K) and outside temperature (degrees C) */
+    double *bnd_surf;            /* per particle on the oven's air surface: 1 / (1 + beta d / kappa), the share of
+                                  * theta_out - theta_p left across the air film (find_boundary), for
+                                  * thermal_surface_temperature */
     int bnd_cap;
     double *cg_partial;          /* per active block: partial dot products */
     int cg_cap;
@@ -47,6 +50,15 @@ void thermal_init(thermal_state *h);
 void thermal_free(thermal_state *h);
 /// Iterations of the last implicit heat solve (0 when explicit or none yet).
 int thermal_cg_iterations(const struct hearth_scene *s);
+
+/// The temperature (degrees C) of the air surface above particle i, by the
+/// closure the oven's flux uses (find_boundary): theta_out - (theta_out - th) /
+/// (1 + beta d / kappa), th the nodes' temperature (CH_T) at the particle, the
+/// sample at depth d that the flux reads. NAN when particle i held no oven
+/// surface at this field step, or the scene has no oven. Valid after
+/// thermal_finish of a step that carried the fields, until the next step's
+/// P2G (the grid) and sort (the particle order of the boundary arrays).
+double thermal_surface_temperature(const struct hearth_scene *s, int i);
 
 /// Is heat transport on for this scene (temperature live)?
 int thermal_active(const struct hearth_scene *s);

@@ -109,6 +109,14 @@ static double capacity(const hearth_scene *s, int i) {
 
 double water_saturation(const hearth_scene *s, int i) { return pcold(&s->ps, PC_WATER)[i] / capacity(s, i); }
 
+double water_surface_saturation(const hearth_scene *s, int i, double s_d) {
+    const particles *ps = &s->ps;
+    if (!s->boundary.area || i >= s->boundary.area_cap || !(s->boundary.area[i] > 0)) return s_d;
+    const double *c = s->mats.slot[pcoli(ps, PC_MAT)[i]].core;
+    const double a = water_surface_layer(c[CP_EVAPORATION], c[CP_WATER_DIFFUSIVITY], c[CP_WATER_DENSITY], s->boundary.depth[i]);
+    return a > 0 ? s->def.oven_saturation + water_surface_excess(s_d, s->def.oven_saturation, a) : s_d;
+}
+
 int water_sph_gas(const hearth_scene *s, const material_slot *ms) {
     return s->def.solver == HEARTH_SOLVER_SPH && ms->core[CP_BUBBLE] > 0;
 }

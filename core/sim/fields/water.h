@@ -131,9 +131,12 @@ static inline double water_latent_stiffness(double psat_b, double th_b) {
  * K and water density rho0, at absolute temperature th. Both solvers call
  * it: MPM per boundary particle (transport.c, boundary.c's area and depth),
  * SPH per surface particle (sph_water.c). */
+static inline double water_surface_layer(double bw, double K, double rho0, double depth) {
+    return K > 0 ? bw * depth / (rho0 * K) : 0.0; /* d beta^w / (rho_0^w K): water_surface_excess's a */
+}
 static inline double water_evaporation(double bw, double K, double rho0, double th, double s_d, double s_amb,
                                        double depth, double area, double psat_b) {
-    const double lay = K > 0 ? bw * depth / (rho0 * K) : 0.0; /* d beta^w / (rho_0^w K) */
+    const double lay = water_surface_layer(bw, K, rho0, depth);
     const double e = bw * th * water_surface_excess(s_d, s_amb, lay) * area;
     return psat_b > 0 ? e * water_vapour_factor(th, psat_b) : e;
 }
@@ -141,6 +144,14 @@ static inline double water_evaporation(double bw, double K, double rho0, double 
 /* P_sat at the scene's boiling point (Pa) when its latent_heat is on and it
  * has temperatures, else 0: water_evaporation's psat_b. */
 double water_psat_boiling(const struct hearth_scene *s);
+
+/// The saturation at the air surface above particle i whose sample reads s_d, by
+/// the closure evaporation uses (water_surface_excess through boundary.c's
+/// depth, the particle's material): s_amb + the excess. s_d itself where the
+/// closure has no layer (no evaporation or no diffusivity: nothing carries
+/// water between the sample and the surface) or i holds no air surface.
+/// Valid from boundary_find until the next step's sort, as its depth.
+double water_surface_saturation(const struct hearth_scene *s, int i, double s_d);
 
 /// Is the water field live?
 int water_active(const struct hearth_scene *s);

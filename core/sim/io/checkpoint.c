@@ -541,7 +541,7 @@ static int check_column(ck_cursor *c, const hearth_scene *s, int col, int n) {
     return 0;
 }
 
-static int get_particles(ck_cursor *c, hearth_scene *s, hearth_error *err) {
+static int get_particles(ck_cursor *c, hearth_scene *s, uint32_t *absent, hearth_error *err) {
     get_tag(c, "PART", "the particles section is missing");
     const uint32_t n = get_u32(c), stride = get_u32(c), enabled = get_u32(c);
     if (c->bad) return -1;
@@ -590,6 +590,10 @@ static int get_particles(ck_cursor *c, hearth_scene *s, hearth_error *err) {
     /* nor one saved before the gas vented between the fields' updates: nothing vents until the next (gas.c) */
     if ((ps->enabled & (1u << PC_VENT)) && !(enabled & (1u << PC_VENT)) && n)
         memset(ps->col[PC_VENT], 0, sizeof(double) * (size_t)n);
+    /* nor one saved before browning read the air surface: each particle its own until the next field step */
+    if ((ps->enabled & (1u << PC_SURFACE)) && !(enabled & (1u << PC_SURFACE)) && n)
+        memset(ps->col[PC_SURFACE], 0, sizeof(double) * 2 * (size_t)n);
+    *absent = ps->enabled & ~enabled; /* the columns above, zeroed: the file's hash never saw them */
     ps->n = (int)n;
     return 0;
 }
@@ -667,12 +671,18 @@ hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name
     if (get_materials(&c, s, name, version, err)) return refuse_at(s, err, name, &c, "materials");
     if (get_colliders(&c, s, err)) return refuse_at(s, err, name, &c, "colliders");
     s->next_id = k.next_id;
-    if (get_particles(&c, s, err)) return refuse_at(s, err, name, &c, "particles");
+    uint32_t absent = 0;
+    if (get_particles(&c, s, &absent, err)) return refuse_at(s, err, name, &c, "particles");
     get_tag(&c, "HASH", "the particle hash is missing");
     const uint64_t h = get_u64(&c);
     if (c.bad) return refuse_at(s, err, name, &c, "particle hash");
     if (c.left) return refuse(s, err, name, "bytes after the end of the checkpoint");
-    if (h != hearth_scene_hash(s)) return refuse(s, err, name, "particle data checksum mismatch (the file is damaged)");
+    /* over the columns the file holds: one its writer did not have (zeroed above) is not in its hash */
+    const uint32_t live = s->ps.enabled;
+    s->ps.enabled &= ~absent;
+    const uint64_t mine = hearth_scene_hash(s);
+    s->ps.enabled = live;
+    if (h != mine) return refuse(s, err, name, "particle data checksum mismatch (the file is damaged)");
     set_clocks(s, &k); /* last: adding materials and particles above touched them */
     return s;
 }

@@ -46,8 +46,11 @@
 #include <stdint.h>
 
 #define CK_MAGIC "HEARTHCK"
-/* 7: the water's step limits in the clocks, the materials' dry_conductivity (params.h); 8: their dry_specific_heat */
-#define CK_VERSION 8u
+/* 7: the water's step limits in the clocks, the materials' dry_conductivity (params.h); 8: their dry_specific_heat;
+ * 9: the browning surface's column (PC_SURFACE, "browning_surface") in PART for MPM with browning and an oven: a
+ * version 8 or older file has none and loads with it zeroed, its hash taken over the columns it holds (an older
+ * hearth refuses a version 9 file by its version, not by a column it would misread) */
+#define CK_VERSION 9u
 /// Oldest version read: a version 4 file is version 5's layout without the
 /// DEF fields version 5 appended.
 #define CK_VERSION_MIN 4u

@@ -42,6 +42,8 @@ typedef enum pcol {
     PC_DRIED,                  /* 1 - the lowest moisture ratio X/X_0 reached, 0..1 (irreversible moisture curves), 1 */
     PC_THERMAL,                /* thermal volume strain ln J_th at the last stress (eq. 10 as a strain: material.h), 1 */
     PC_VENT,                   /* gas_vent: h S_p at the last field step, 0 where closed or inside (gas.c's gas_between), 1 */
+    PC_SURFACE,                /* browning with an oven (MPM): the air surface's temperature (K) and saturation above the
+                                * particle's own at the last field step, 0 inside (browning.c), 2 */
     /* memos (exp_memo.h): a cache of exp at the particle's last argument, 2 (the argument, its exp); never
      * hashed nor saved: a zeroed entry misses, so any value computes the same bits */
     PC_THERMAL_MEMO,           /* the thermal split's exp(-ln J_th / 3) (material_batch.c's thermal_scales_block) */
