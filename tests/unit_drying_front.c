@@ -99,6 +99,9 @@ typedef struct front {
     double spread;   /* the columns' dried depth at the end: (largest - smallest) / largest */
     double b_top[NT], Ts_top[NT], probe_top[NT]; /* with BROWN: the top particle's browning, the air surface's
                                                   * temperature browning.c gave it, the field at its place */
+    double row_depth[3], row_b[3];               /* with BROWN, at the end: the middle column's rows within 3 dx
+                                                  * of the top that hold air area, their depth and index, top first */
+    int nrows;
     double crust_probe, crust_part; /* at the end, over the middle column's dried particles (ratio < 0.01), the
                                      * largest |T - T_(4)(depth)| / (T_s - T_b) of the probe (the B-spline average
                                      * at the particle's place) and of the particle's own temperature */
@@ -202,6 +205,21 @@ static int run(double dx, double dt_max, double flip, front *f) {
                 if (fabs(X[3 * i] - 0.5 * WIDTH) < 0.5 * dx && DEPTH - X[3 * i + 1] < 4 * dx)
                     printf("      row at %.3f mm: b %.4f, surface offset %.2f K, depth %.3f mm, area %.3g\n", 1e3 * (DEPTH - X[3 * i + 1]), bb[i],
                            o[2 * i], 1e3 * s->boundary.depth[i], s->boundary.area[i]);
+        }
+        if (BROWN && k == NT - 1) {
+            f->nrows = 0;
+            const double *X = pcold(&s->ps, PC_X), *bb = pcold(&s->ps, PC_BROWNING);
+            for (int i = 0; i < s->ps.n; i++) {
+                const double dp = DEPTH - X[3 * i + 1];
+                if (!(fabs(X[3 * i] - 0.5 * WIDTH) < 0.5 * dx && dp < 3 * dx && s->boundary.area[i] > 0)) continue;
+                int same = 0; /* the column is two particles wide: one of each row */
+                for (int q = 0; q < f->nrows; q++) same |= fabs(f->row_depth[q] - dp) < 0.1 * dx;
+                if (same) continue;
+                int j = f->nrows < 3 ? f->nrows++ : 3; /* insert by depth, keeping the three shallowest */
+                for (; j > 0 && f->row_depth[j - 1] > dp; j--)
+                    if (j < 3) f->row_depth[j] = f->row_depth[j - 1], f->row_b[j] = f->row_b[j - 1];
+                if (j < 3) f->row_depth[j] = dp, f->row_b[j] = bb[i];
+            }
         }
         if (BROWN) {
             const int it = top_particle(s, dx);
@@ -352,15 +370,16 @@ TEST(drying_front_crust_particles_follow_profile) {
 /* The closed form's surface browning: browning.c's kinetics (Zanoni et al. 1995) at full rate (the surface is
  * dry from t = 0, when the front starts) integrated over (4)'s surface temperature T_s(t) = T_b + q d / k,
  * by the midpoint rule in steps of 1 s (rounding below 1e-6 of b). */
-static double b_closed(double t_end) {
+static double b_closed_at(double y, double t_end) {
     double I = 0;
     const int n = (int)lround(t_end);
     for (int j = 0; j < n; j++) {
         const double t = j + 0.5, d4 = d_of_t(t, 1), q = (TO - TB) / (1 / BETA + d4 / KD);
-        I += browning_rate(TB + q * d4 / KD, 1.0);
+        if (d4 > y) I += browning_rate(TB + q * (d4 - y) / KD, 1.0); /* dry from when the front passes y */
     }
     return -expm1(-I);
 }
+static double b_closed(double t_end) { return b_closed_at(0, t_end); }
 
 /* The top's colour against the closed form's surface (issue #18, helper surfacecolour). Colour is the surface's,
  * and browning.c reads, for a particle on the oven's air surface, the surface temperature the oven's flux defines
@@ -380,6 +399,12 @@ static double b_closed(double t_end) {
  * temperature) 0.183 / 0.206 / 0.241; the surface from the particle's own temperature (rejected) 0.325 / 0.296 /
  * 0.290 with T_s 153.6 / 146.5 / 145.6 degC; the surface from the nodes' sample (this) 0.224 / 0.255 with T_s
  * 144.3 / 143.2 degC (1 mm: 0.265, 143.3); with the surface taken dry (water factor 1, not done) 0.252 / 0.264.
+ * The rows under the top that hold air area too (boundary.c's ramp) read the profiles d0 above their sample
+ * (browning.c): bars, set before measuring, that their index falls with depth and stays under the form's at half
+ * a cell above the row (b_closed_at). Measured at 25 min (4 mm rows at 1, 3, 5 mm; 2 mm rows at 0.5, 1.5, 2.5 mm):
+ * 0.224, 0.118, 0.036 and 0.255, 0.204, 0.140 (the form there 0.193, 0.078, 0.020 and 0.235, 0.158, 0.101; half
+ * a cell above 0.282, 0.193, 0.078 and 0.282, 0.235, 0.158); every row read at the surface (surfacecolour's
+ * first version) 0.224, 0.170, 0.079 and 0.255, 0.250, 0.236, over the bar at 3 of 4 rows.
  * 2.6 s CPU in release: release_only. */
 TEST(drying_front_surface_browns) {
     BROWN = 1;
@@ -403,6 +428,19 @@ TEST(drying_front_surface_browns) {
     CHECK(e2 < 0.15 * bc);
     CHECK(e2 < 0.7 * e4);
     for (int r = 0; r < 2; r++) CHECK(fabs(f[r].Ts_top[e] - Ts) < 0.05 * (Ts - TB));
+    /* the rows under the top that also hold air area (boundary.c's ramp) read the profile d0 above their
+     * sample, not the surface: their colour falls with depth and stays under the form's half a cell above them */
+    for (int r = 0; r < 2; r++) {
+        CHECK(f[r].nrows >= 2);
+        for (int j = 0; j < f[r].nrows; j++) {
+            const double up = b_closed_at(fmax(0, f[r].row_depth[j] - 0.5 * DXS[r]), t);
+            printf("    dx %g mm, row %d at %.2f mm: index %.4f; the form %.4f there, %.4f half a cell above\n", 1e3 * DXS[r],
+                   j, 1e3 * f[r].row_depth[j], f[r].row_b[j], b_closed_at(f[r].row_depth[j], t), up);
+            if (j == 0) continue;
+            CHECK(f[r].row_b[j] <= f[r].row_b[j - 1]);
+            CHECK(f[r].row_b[j] <= up);
+        }
+    }
 }
 
 TEST_MAIN(T(drying_front_follows_stefan), T(drying_front_crust_particles_follow_profile), T(drying_front_surface_browns))

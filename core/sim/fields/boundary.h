@@ -19,6 +19,12 @@ typedef struct boundary_state {
     int blocks_cap;
 } boundary_state;
 
+/* The depth (grid units) at which the grid samples a flat face's outer row of
+ * particles, a quarter cell in (boundary.c's D_OF_PHI, averaged over the
+ * offsets): a particle whose sample is this deep or less stands for the
+ * surface itself. */
+#define BOUNDARY_OUTER_DEPTH 0.57
+
 /// Empty state (allocates nothing).
 void boundary_init(boundary_state *b);
 /// Free the arrays; b is empty afterwards (boundary_init's state).

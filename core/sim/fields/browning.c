@@ -46,10 +46,15 @@
  * the loaf's top evaporates through a layer the closure resolves, so its
  * surface is dry long before its particle is (loaf 25 min, 5 / 2.5 mm: top
  * 0.147 / 0.157 with it, 0.082 / 0.135 with the particle's own water).
- * Limits: every particle holding air area reads its surface, and boundary.c
- * spreads the area over the ramp, up to 2.5 cells in (a row 3.5 mm deep at
- * 2 mm browns 0.197 against the top's 0.255): the colour's depth in a
- * cross-section is a few cells, not the crust's; a particle by a heated
+ * The rows under the outer one: boundary.c spreads the air area over the
+ * ramp, up to 2.5 cells in, and read at the surface those rows browned as the
+ * top (the drying slab at 2 mm: 0.250, 0.236 at 1.5, 2.5 mm against the form's
+ * 0.158, 0.101 there), and at the loaf's 5 mm, where the closure's surface
+ * water is drier for a deeper sample, more than the top: a brown ring a cell
+ * under a paler skin. So each particle reads the two profiles (T linear, s^2
+ * linear) BOUNDARY_OUTER_DEPTH dx above its sample: the outer row (d ~ d0)
+ * at the surface, deeper rows nearer their own sample (the slab: 0.204,
+ * 0.140; the loaf's ring gone). A particle by a heated
  * collider's face keeps its own temperature (the loaf's base on its tray:
  * the contact is not the air's closure). The offsets (T_s - T, s_s - s) are
  * found on the steps that carry the fields, where the boundary arrays follow
@@ -75,6 +80,7 @@
 
 #include <math.h>
 
+#include "boundary.h"
 #include "scene.h"
 #include "thermal.h"
 #include "water.h"
@@ -109,15 +115,22 @@ static void surface_offsets(hearth_scene *s) {
     double *o = pcold(ps, PC_SURFACE);
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        const double Ts = thermal_surface_temperature(s, i);
+        double th = NAN;
+        const double Ts = thermal_surface_temperature(s, i, &th);
         if (isnan(Ts)) {
             o[2 * i] = o[2 * i + 1] = 0.0;
             continue;
         }
-        o[2 * i] = Ts - T[i];
+        /* the closures' profiles (T linear, s^2 linear: D = K theta s, eq. 22) from the surface down to the
+         * sample at depth d, read d0 above the sample: the outer row (d ~ d0) at the surface, a deeper row
+         * nearer its own sample, so the colour falls with depth across the rows that hold area */
+        const double d = s->boundary.depth[i], d0 = BOUNDARY_OUTER_DEPTH * s->g.dx;
+        const double z = d > d0 ? (d - d0) / d : 0.0; /* the reading's depth as a share of d */
+        o[2 * i] = Ts + (th - Ts) * z - T[i];
         if (wet) {
-            const double sp = water_saturation(s, i);
-            o[2 * i + 1] = water_surface_saturation(s, i, sp) - sp;
+            const double sp = water_saturation(s, i), ss = water_surface_saturation(s, i, sp);
+            const double s2 = ss * ss + (sp * sp - ss * ss) * z;
+            o[2 * i + 1] = (s2 > 0 ? sqrt(s2) : 0.0) - sp;
         } else {
             o[2 * i + 1] = 0.0;
         }

@@ -299,7 +299,7 @@ static int contact_stencil(const grid *g, const double x[3], double *node[27], i
     return m;
 }
 
-double thermal_surface_temperature(const hearth_scene *s, int i) {
+double thermal_surface_temperature(const hearth_scene *s, int i, double *sample) {
     const particles *ps = &s->ps;
     if (isnan(s->def.oven_temperature) || !(s->def.oven_beta > 0) || !s->heat.bnd_surf || i >= s->heat.bnd_cap) return NAN;
     if (!(pcoli(ps, PC_FLAGS)[i] & PF_BOUNDARY) || !(s->heat.bnd_coef[i] > 0)) return NAN; /* not on the oven's air */
@@ -317,6 +317,7 @@ double thermal_surface_temperature(const hearth_scene *s, int i) {
     /* q = beta (T_o - T_s) = beta r (T_o - th): the air film takes the share r of the difference, the layer above
      * the sample the rest */
     const double To = s->heat.bnd_temp[i];
+    if (sample) *sample = th;
     return To - (To - th) * s->heat.bnd_surf[i];
 }
 

@@ -58,7 +58,8 @@ int thermal_cg_iterations(const struct hearth_scene *s);
 /// surface at this field step, or the scene has no oven. Valid after
 /// thermal_finish of a step that carried the fields, until the next step's
 /// P2G (the grid) and sort (the particle order of the boundary arrays).
-double thermal_surface_temperature(const struct hearth_scene *s, int i);
+/// `sample` (may be NULL) takes th.
+double thermal_surface_temperature(const struct hearth_scene *s, int i, double *sample);
 
 /// Is heat transport on for this scene (temperature live)?
 int thermal_active(const struct hearth_scene *s);
