@@ -48,9 +48,15 @@
 #define FRONT_NS 7 /* scratch doubles a particle */
 enum { FRONT_H = CH_R, FRONT_G = CH_B }; /* dead after thermal_finish until the next P2G (grid.c) */
 
+/* The scratch's doubles: FRONT_NS a particle, then a byte of marks per active grid block (FB_*) in the same
+ * allocation, so the front asks the allocator what it asked before the marks. */
+static size_t front_need(const hearth_scene *s) {
+    return FRONT_NS * (size_t)s->ps.n + ((size_t)s->g.nactive + sizeof(double) - 1) / sizeof(double);
+}
+
 hearth_status water_boil_front_prepare(hearth_scene *s, hearth_error *err) {
     water_state *w = &s->water;
-    const size_t need = FRONT_NS * (size_t)s->ps.n;
+    const size_t need = front_need(s);
     if (need <= w->front_cap) return HEARTH_OK;
     double *f = mem_alloc(sizeof(double) * need);
     if (!f) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the boiling front's scratch (%d particles)", s->ps.n);
@@ -64,35 +70,64 @@ hearth_status water_boil_front_prepare(hearth_scene *s, hearth_error *err) {
  * mass, one-sided where one does; into FRONT_A (dead after G2P, as CH_R). */
 static const int FRONT_A[3] = {CH_CG_R, CH_CG_P, CH_HC};
 
-static void front_gradient(hearth_scene *s) {
-    grid *g = &s->g;
+/* Block slot k's nodes. Only front_pair reads FRONT_A, at the nodes a sender reaches (front_mark), so the
+ * blocks that hold none are skipped: nothing else reads these channels before the next step writes them. */
+static void front_gradient(grid *g, int k) {
     const int D = g->dim, NPB = g->nodes_per_block;
-    for (int k = 0; k < g->nactive; k++) {
-        int bc[3];
-        grid_block_coords(g, g->active[k], bc);
-        double *d = grid_block(g, k);
-        for (int l = 0; l < NPB; l++) {
-            int gi[3];
-            grid_node_index(g, bc, l, gi);
-            for (int ax = 0; ax < D; ax++) {
-                double a = 0;
-                if (d[CH_M * NPB + l] > 0) {
-                    double Tn[2];
-                    int ok[2];
-                    for (int sgn = 0; sgn < 2; sgn++) {
-                        int gj[3] = {gi[0], gi[1], gi[2]}, lj;
-                        gj[ax] += sgn ? 1 : -1;
-                        const double *nj = grid_node_at(g, gj, &lj);
-                        ok[sgn] = nj && nj[CH_M * NPB + lj] > 0;
-                        Tn[sgn] = ok[sgn] ? nj[CH_T * NPB + lj] : 0.0;
-                    }
-                    const double T = d[CH_T * NPB + l];
-                    a = ok[0] && ok[1] ? 0.5 * (Tn[1] - Tn[0]) : ok[1] ? Tn[1] - T : ok[0] ? T - Tn[0] : 0.0;
+    int bc[3];
+    grid_block_coords(g, g->active[k], bc);
+    double *d = grid_block(g, k);
+    for (int l = 0; l < NPB; l++) {
+        int gi[3];
+        grid_node_index(g, bc, l, gi);
+        for (int ax = 0; ax < D; ax++) {
+            double a = 0;
+            if (d[CH_M * NPB + l] > 0) {
+                double Tn[2];
+                int ok[2];
+                for (int sgn = 0; sgn < 2; sgn++) {
+                    int gj[3] = {gi[0], gi[1], gi[2]}, lj;
+                    gj[ax] += sgn ? 1 : -1;
+                    const double *nj = grid_node_at(g, gj, &lj);
+                    ok[sgn] = nj && nj[CH_M * NPB + lj] > 0;
+                    Tn[sgn] = ok[sgn] ? nj[CH_T * NPB + lj] : 0.0;
                 }
-                d[FRONT_A[ax] * NPB + l] = a;
+                const double T = d[CH_T * NPB + l];
+                a = ok[0] && ok[1] ? 0.5 * (Tn[1] - Tn[0]) : ok[1] ? Tn[1] - T : ok[0] ? T - Tn[0] : 0.0;
             }
+            d[FRONT_A[ax] * NPB + l] = a;
         }
     }
+}
+
+/* The marks of an active grid block (a byte each, after the particles' scratch): FB_SENT, a sender of this
+ * pass reaches one of its nodes; FB_GRAD, its FRONT_A holds this step's gradient. */
+enum { FB_SENT = 1, FB_GRAD = 2 };
+
+/* A sender reaches node (storage node): its block is marked, and its gradient made on first reach. */
+static void front_mark(grid *g, unsigned char *fb, const double *node) {
+    const int k = (int)((size_t)(node - g->data) / ((size_t)g->nch * (size_t)g->nodes_per_block));
+    if (!(fb[k] & FB_GRAD)) front_gradient(g, k), fb[k] |= FB_GRAD;
+    fb[k] |= FB_SENT;
+}
+
+/* Whether the stencil of point x (grid_point_weights' base, the same arithmetic) reaches a block marked
+ * FB_SENT: a receiver that reaches none gets nothing this pass (below). */
+static int front_near(const grid *g, const unsigned char *fb, const double *x) {
+    int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (int d = 0; d < g->dim; d++) {
+        const int base = (int)floor((x[d] - g->lo[d]) * g->inv_dx - 0.5);
+        const int a = base < 0 ? 0 : base, b = base + 2 > g->nn[d] - 1 ? g->nn[d] - 1 : base + 2;
+        if (a > b) return 0;
+        lo[d] = a / GRID_B, hi[d] = b / GRID_B;
+    }
+    for (int bx = lo[0]; bx <= hi[0]; bx++)
+        for (int by = lo[1]; by <= hi[1]; by++)
+            for (int bz = lo[2]; bz <= hi[2]; bz++) {
+                const int k = g->slot[grid_block_id(g, bx, by, bz)];
+                if (k >= 0 && (fb[k] & FB_SENT)) return 1;
+            }
+    return 0;
 }
 
 /* Particle p's weight on node i: exp(K e), e = ((x_p - x_i) / dx) . a / (|a| + A0), so that on a node the
@@ -116,32 +151,56 @@ static double front_pair(const grid *g, const double *node, int l, const double 
  * hands its H_i back to the particles that sent it (w_ip r_p each) to send again (front_return hands out what
  * is left at the end: kept by the overflowing particle, the heat of a block's nodes ran into its last wet
  * particles); the weight of a node without storage stays with the sender (kept_p). Sum_p (q_p + kept_p) = sum_p r_p. Returns the heat still to
- * hand out. */
-static double front_pass(hearth_scene *s, const int chs[2], double *r, double *cap, double *Q, double *kept,
-                         hearth_error *err, hearth_status *st) {
+ * hand out.
+ *
+ * What it costs is the front's, not the body's: on one rank G_i is made only at the nodes a sender reaches
+ * (the rest hold -1), and a receiver whose stencil reaches no block such a node lies in is passed by. The
+ * bits are those of the walk over every node and particle, which MPI slabs keep (all: G sums over the
+ * ranks with H, and a node's senders may sit on another rank): a node without senders has H_i = +0, so a
+ * receiver's q gains +0 there whatever G_i is; its `back` only counts times r_p, +0 for a non-sender, and
+ * a sender's nodes all hold G_i, summed over the same receivers in the same order; a passed-by receiver's
+ * r, cap, Q, kept and the pass's sum `left` change by +0 (q = take = 0). */
+static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned char *fb, double *r, double *cap,
+                         double *Q, double *kept, hearth_error *err, hearth_status *st) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block, n = s->ps.n;
     const double *X = pcold(&s->ps, PC_X);
     for (int k = 0; k < g->nactive; k++) {
         double *d = grid_block(g, k);
-        for (int c = 0; c < 2; c++) memset(d + chs[c] * NPB, 0, sizeof(double) * (size_t)NPB);
+        memset(d + chs[0] * NPB, 0, sizeof(double) * (size_t)NPB);
+        if (all) {
+            memset(d + chs[1] * NPB, 0, sizeof(double) * (size_t)NPB);
+        } else {
+            for (int l = 0; l < NPB; l++) d[chs[1] * NPB + l] = -1.0; /* no sender reaches it (yet) */
+            fb[k] &= (unsigned char)~FB_SENT;
+        }
     }
+    /* the senders, then the receivers: each channel still sums its particles in their order */
     for (int i = 0; i < n; i++) {
-        if (!(r[i] > 0) && !(cap[i] > 0)) continue;
+        if (!(r[i] > 0)) continue;
         grid_point_nodes pn;
         grid_point_nodes_of(g, X + 3 * i, &pn);
         for (int j = 0; j < pn.n; j++) {
             double *node = pn.node[j];
-            const int l = pn.l[j], *gi = pn.gi[j];
-            const double wt = pn.w[j];
-            if (r[i] > 0) node[chs[0] * NPB + l] += wt * r[i];
-            if (cap[i] > 0) node[chs[1] * NPB + l] += wt * front_pair(g, node, l, X + 3 * i, gi);
+            const int l = pn.l[j];
+            node[chs[0] * NPB + l] += pn.w[j] * r[i];
+            if (!all && node[chs[1] * NPB + l] < 0) node[chs[1] * NPB + l] = 0, front_mark(g, fb, node);
+        }
+    }
+    for (int i = 0; i < n; i++) {
+        if (!(cap[i] > 0) || !(all || front_near(g, fb, X + 3 * i))) continue;
+        grid_point_nodes pn;
+        grid_point_nodes_of(g, X + 3 * i, &pn);
+        for (int j = 0; j < pn.n; j++) {
+            double *node = pn.node[j];
+            const int l = pn.l[j];
+            if (!(node[chs[1] * NPB + l] < 0)) node[chs[1] * NPB + l] += pn.w[j] * front_pair(g, node, l, X + 3 * i, pn.gi[j]);
         }
     }
     if ((*st = mpm_ranks_fields_sum(s, chs, 2, err))) return 0;
     double left = 0;
     for (int i = 0; i < n; i++) {
-        if (!(r[i] > 0) && !(cap[i] > 0)) continue;
+        if (!(r[i] > 0) && !(cap[i] > 0 && (all || front_near(g, fb, X + 3 * i)))) continue;
         grid_point_nodes pn;
         grid_point_nodes_of(g, X + 3 * i, &pn);
         double q = 0, back = 0, none = 1; /* none: the weight on nodes without storage */
@@ -221,9 +280,11 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
     double *r = E + 2 * (size_t)n, *cap = r + n, *Q = cap + n, *kept = Q + n;
     const int chs[2] = {FRONT_H, FRONT_G};
     s->water.front_removed = 0;
+    int boils = 0;
     for (int i = 0; i < n; i++) {
         r[i] = cap[i] = Q[i] = kept[i] = 0;
         if (!(E[2 * i] > 0)) continue;
+        boils = 1;
         const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
         const double spare = W[i] - WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * vol[i];
         cap[i] = spare > 0 ? spare * HEARTH_LATENT_HEAT : 0.0;
@@ -233,10 +294,19 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
         r[i] = E[2 * i] < cap[i] ? E[2 * i] : cap[i];
         kept[i] = E[2 * i] - r[i];
     }
-    front_gradient(s);
+    /* MPI slabs walk every node and particle (front_pass); one rank walks the front's own, and without a
+     * particle past T_b has nothing to do: every pass, front_return and the books below would change nothing */
+    const int all = s->mpm->nranks > 1;
+    if (!all && !boils) return HEARTH_OK;
+    grid *g = &s->g;
+    unsigned char *fb = (unsigned char *)(E + FRONT_NS * (size_t)n);
+    for (int k = 0; k < g->nactive; k++) {
+        if (all) front_gradient(g, k);
+        fb[k] = all ? FB_GRAD | FB_SENT : 0;
+    }
     hearth_status st = HEARTH_OK;
     for (int pass = 0; pass < WATER_FRONT_PASSES; pass++) {
-        const double left = front_pass(s, chs, r, cap, Q, kept, err, &st);
+        const double left = front_pass(s, chs, all, fb, r, cap, Q, kept, err, &st);
         if (st) return st;
         if (!(left > 0) && s->mpm->nranks == 1) break; /* every rank takes part in each pass's exchange */
     }
