@@ -48,10 +48,13 @@
 #define FRONT_NS 7 /* scratch doubles a particle */
 enum { FRONT_H = CH_R, FRONT_G = CH_B }; /* dead after thermal_finish until the next P2G (grid.c) */
 
-/* The scratch's doubles: FRONT_NS a particle, then a byte of marks per active grid block (FB_*) in the same
- * allocation, so the front asks the allocator what it asked before the marks. */
+/* Stencil nodes a particle: the pair weights it keeps for the step (front_pair_of). */
+static int front_ng(const grid *g) { return g->dim == 3 ? 27 : 9; }
+
+/* The scratch's doubles: FRONT_NS a particle, its pair weights (front_ng), then a byte of marks per active
+ * grid block (FB_*), in one allocation, so the front asks the allocator what it asked before. */
 static size_t front_need(const hearth_scene *s) {
-    return FRONT_NS * (size_t)s->ps.n + ((size_t)s->g.nactive + sizeof(double) - 1) / sizeof(double);
+    return (FRONT_NS + (size_t)front_ng(&s->g)) * (size_t)s->ps.n + ((size_t)s->g.nactive + sizeof(double) - 1) / sizeof(double);
 }
 
 hearth_status water_boil_front_prepare(hearth_scene *s, hearth_error *err) {
@@ -145,6 +148,13 @@ static double front_pair(const grid *g, const double *node, int l, const double 
     return exp(WATER_FRONT_K * e / (sqrt(a2) + 0.1));
 }
 
+/* front_pair of a particle's j-th stencil node, made once a step: the positions and the gradient hold through
+ * the passes, so it is the same number every pass asks for (0: not made yet; exp(K e) > 0). */
+static double front_pair_of(const grid *g, double *gp, const grid_point_nodes *pn, int j, const double *x) {
+    if (!(gp[j] > 0)) gp[j] = front_pair(g, pn->node[j], pn->l[j], x, pn->gi[j]);
+    return gp[j];
+}
+
 /* One pass of the hand-out: each particle's r_p (J) to the nodes, H_i = sum_p w_ip r_p, and back to the
  * receivers with room left (cap_p > 0), q_p = g_p sum_i w_ip H_i / G_i, G_i = sum_p w_ip g_p over them. A
  * receiver takes up to its room; what it cannot take is its r_p for the next pass. A node without receivers
@@ -160,10 +170,10 @@ static double front_pair(const grid *g, const double *node, int l, const double 
  * receiver's q gains +0 there whatever G_i is; its `back` only counts times r_p, +0 for a non-sender, and
  * a sender's nodes all hold G_i, summed over the same receivers in the same order; a passed-by receiver's
  * r, cap, Q, kept and the pass's sum `left` change by +0 (q = take = 0). */
-static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned char *fb, double *r, double *cap,
-                         double *Q, double *kept, hearth_error *err, hearth_status *st) {
+static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned char *fb, double *gc, double *r,
+                         double *cap, double *Q, double *kept, hearth_error *err, hearth_status *st) {
     grid *g = &s->g;
-    const int NPB = g->nodes_per_block, n = s->ps.n;
+    const int NPB = g->nodes_per_block, n = s->ps.n, NG = front_ng(g);
     const double *X = pcold(&s->ps, PC_X);
     for (int k = 0; k < g->nactive; k++) {
         double *d = grid_block(g, k);
@@ -194,7 +204,7 @@ static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned ch
         for (int j = 0; j < pn.n; j++) {
             double *node = pn.node[j];
             const int l = pn.l[j];
-            if (!(node[chs[1] * NPB + l] < 0)) node[chs[1] * NPB + l] += pn.w[j] * front_pair(g, node, l, X + 3 * i, pn.gi[j]);
+            if (!(node[chs[1] * NPB + l] < 0)) node[chs[1] * NPB + l] += pn.w[j] * front_pair_of(g, gc + (size_t)NG * i, &pn, j, X + 3 * i);
         }
     }
     if ((*st = mpm_ranks_fields_sum(s, chs, 2, err))) return 0;
@@ -206,12 +216,12 @@ static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned ch
         double q = 0, back = 0, none = 1; /* none: the weight on nodes without storage */
         for (int j = 0; j < pn.n; j++) {
             const double *node = pn.node[j];
-            const int l = pn.l[j], *gi = pn.gi[j];
+            const int l = pn.l[j];
             const double wt = pn.w[j];
             none -= wt;
             const double G = node[chs[1] * NPB + l];
             if (G > 0) {
-                if (cap[i] > 0) q += wt * front_pair(g, node, l, X + 3 * i, gi) * node[chs[0] * NPB + l] / G;
+                if (cap[i] > 0) q += wt * front_pair_of(g, gc + (size_t)NG * i, &pn, j, X + 3 * i) * node[chs[0] * NPB + l] / G;
             } else {
                 back += wt;
             }
@@ -299,14 +309,16 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
     const int all = s->mpm->nranks > 1;
     if (!all && !boils) return HEARTH_OK;
     grid *g = &s->g;
-    unsigned char *fb = (unsigned char *)(E + FRONT_NS * (size_t)n);
+    double *gc = E + FRONT_NS * (size_t)n;
+    memset(gc, 0, sizeof(double) * (size_t)front_ng(g) * (size_t)n);
+    unsigned char *fb = (unsigned char *)(gc + (size_t)front_ng(g) * (size_t)n);
     for (int k = 0; k < g->nactive; k++) {
         if (all) front_gradient(g, k);
         fb[k] = all ? FB_GRAD | FB_SENT : 0;
     }
     hearth_status st = HEARTH_OK;
     for (int pass = 0; pass < WATER_FRONT_PASSES; pass++) {
-        const double left = front_pass(s, chs, all, fb, r, cap, Q, kept, err, &st);
+        const double left = front_pass(s, chs, all, fb, gc, r, cap, Q, kept, err, &st);
         if (st) return st;
         if (!(left > 0) && s->mpm->nranks == 1) break; /* every rank takes part in each pass's exchange */
     }
