@@ -36,7 +36,13 @@
  * the front sharper but broke the slab's first order and its columns'
  * symmetry. Serial over nodes and particles in their order (the same bits
  * at any thread count; boil_front_threads_same_bits); MPI slabs sum the node
- * channels. Rejected (docs/validation.md, "A sharper boiling front" and its
+ * channels. It costs what the front needs (the frontspeed branch,
+ * docs/performance.md "The boiling front's cost"), with the bits of the walk
+ * over every wet particle: a step where nothing passed T_b returns at once;
+ * on one rank a pass makes G_i and the gradient only where this pass's
+ * senders reach and passes by the receivers whose stencil reaches no such
+ * block (front_pass says why that changes no bit), and each pair's g is made
+ * once a step (front_pair_of). MPI slabs keep the whole walk. Rejected (docs/validation.md, "A sharper boiling front" and its
  * sequel): ordering by dryness (exp(40 (1 - X/X_0))), which let one column
  * run ahead of its neighbours; the ordering only at nodes holding both a
  * dried and a wet particle, which dried the crumb slab 14.2% early. On its
@@ -45,7 +51,7 @@
  * relaxes it, and the two run together. */
 #define WATER_FRONT_K 3.0
 #define WATER_FRONT_PASSES 8
-#define FRONT_NS 7 /* scratch doubles a particle */
+#define FRONT_NS 7 /* scratch doubles a particle, before the pair weights (front_ng) */
 enum { FRONT_H = CH_R, FRONT_G = CH_B }; /* dead after thermal_finish until the next P2G (grid.c) */
 
 /* Stencil nodes a particle: the pair weights it keeps for the step (front_pair_of). */
