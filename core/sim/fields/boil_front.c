@@ -312,7 +312,7 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
     }
     /* MPI slabs walk every node and particle (front_pass); one rank walks the front's own, and without a
      * particle past T_b has nothing to do: every pass, front_return and the books below would change nothing */
-    const int all = s->mpm->nranks > 1;
+    const int all = s->mpm->nranks > 1 || s->water.front_walk_all;
     if (!all && !boils) return HEARTH_OK;
     grid *g = &s->g;
     double *gc = E + FRONT_NS * (size_t)n;

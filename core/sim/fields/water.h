@@ -29,6 +29,7 @@ typedef struct water_state {
     double *front;
     size_t front_cap;      /* doubles held */
     double front_removed;  /* the water water_boil_front boiled this step (kg), added by water_finish */
+    int front_walk_all;    /* tests: the front walks every node and particle on one rank too, as on MPI slabs */
 } water_state;
 
 /// Empty state: nothing lost, limits to be scanned.
