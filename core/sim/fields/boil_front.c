@@ -177,7 +177,7 @@ static double front_pair_of(const grid *g, double *gp, const grid_point_nodes *p
  * a sender's nodes all hold G_i, summed over the same receivers in the same order; a passed-by receiver's
  * r, cap, Q, kept and the pass's sum `left` change by +0 (q = take = 0). */
 static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned char *fb, double *gc, double *r,
-                         double *cap, double *Q, double *kept, hearth_error *err, hearth_status *st) {
+                         double *cap, double *Q, double *kept, double *near, hearth_error *err, hearth_status *st) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block, n = s->ps.n, NG = front_ng(g);
     const double *X = pcold(&s->ps, PC_X);
@@ -203,8 +203,10 @@ static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned ch
             if (!all && node[chs[1] * NPB + l] < 0) node[chs[1] * NPB + l] = 0, front_mark(g, fb, node);
         }
     }
-    for (int i = 0; i < n; i++) {
-        if (!(cap[i] > 0) || !(all || front_near(g, fb, X + 3 * i))) continue;
+    for (int i = 0; i < n; i++) { /* near: the receivers walked, for the gather (cap and the marks hold till then) */
+        if (!(cap[i] > 0)) continue;
+        near[i] = all || front_near(g, fb, X + 3 * i);
+        if (!(near[i] > 0)) continue;
         grid_point_nodes pn;
         grid_point_nodes_of(g, X + 3 * i, &pn);
         for (int j = 0; j < pn.n; j++) {
@@ -216,7 +218,7 @@ static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned ch
     if ((*st = mpm_ranks_fields_sum(s, chs, 2, err))) return 0;
     double left = 0;
     for (int i = 0; i < n; i++) {
-        if (!(r[i] > 0) && !(cap[i] > 0 && (all || front_near(g, fb, X + 3 * i)))) continue;
+        if (!(r[i] > 0) && !(cap[i] > 0 && near[i] > 0)) continue;
         grid_point_nodes pn;
         grid_point_nodes_of(g, X + 3 * i, &pn);
         double q = 0, back = 0, none = 1; /* none: the weight on nodes without storage */
@@ -292,8 +294,8 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
     const int n = ps->n;
     double *E = s->water.front, *T = pcold(ps, PC_TEMPERATURE), *Tmax = pcold(ps, PC_TEMP_MAX), *W = pcold(ps, PC_WATER);
     const double *vol = mpm_state_of(s)->vol;
-    /* the scratch: E_p, m c (from G2P), then r, cap, Q, kept, g (FRONT_NS doubles a particle) */
-    double *r = E + 2 * (size_t)n, *cap = r + n, *Q = cap + n, *kept = Q + n;
+    /* the scratch: E_p, m c (from G2P), then r, cap, Q, kept, near (FRONT_NS doubles a particle) */
+    double *r = E + 2 * (size_t)n, *cap = r + n, *Q = cap + n, *kept = Q + n, *near = kept + n;
     const int chs[2] = {FRONT_H, FRONT_G};
     s->water.front_removed = 0;
     int boils = 0;
@@ -324,7 +326,7 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
     }
     hearth_status st = HEARTH_OK;
     for (int pass = 0; pass < WATER_FRONT_PASSES; pass++) {
-        const double left = front_pass(s, chs, all, fb, gc, r, cap, Q, kept, err, &st);
+        const double left = front_pass(s, chs, all, fb, gc, r, cap, Q, kept, near, err, &st);
         if (st) return st;
         if (!(left > 0) && s->mpm->nranks == 1) break; /* every rank takes part in each pass's exchange */
     }
