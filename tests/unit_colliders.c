@@ -512,5 +512,76 @@ TEST(collider_bad_def) {
     CHECK(hearth_bytes_allocated() == base);
 }
 
+/* collider_bound_half_space (MPM's tray): its box must hold every point whose collider_sdf is within the
+ * margin (2 dx), to the last bit, so that the callers, whose bands are all within it, find what the
+ * infinite box found; and it must leave out the points well past it, else it saves nothing. For the six
+ * axis normals of a plane at 0.2 with a pivot at 0.37, moved by a velocity over 7 steps (offset 0.0203...),
+ * dx 1/64 and 2.5 mm: points at 4001 distances across -3..3 margins and, around the margin itself, 200
+ * ulp steps either side, the other two coordinates spread over -5..5 m. A turned plane and a slanted
+ * normal keep the infinite box. */
+TEST(plane_box_holds_the_band) {
+    hearth_error err;
+    long held = 0, missed = 0, pruned = 0, far = 0;
+    for (int k = 0; k < 3; k++)
+        for (int sg = -1; sg <= 1; sg += 2)
+            for (int r = 0; r < 2; r++) {
+                const double dx = r ? 0.0025 : 1.0 / 64, M = 2 * dx;
+                double p[3] = {0.3, 0.3, 0.3}, u[3] = {0, 0, 0};
+                p[k] = 0.2, u[k] = sg;
+                hearth_shape *pl = hearth_shape_plane(p, u);
+                hearth_collider_def def;
+                memset(&def, 0, sizeof def);
+                def.shape = pl;
+                def.velocity[k] = 0.0029;
+                for (int d = 0; d < 3; d++) def.pivot[d] = 0.37;
+                collider c;
+                CHECK(collider_init(&c, &def, &err) == HEARTH_OK);
+                hearth_shape_free(pl);
+                for (int i = 0; i < 7; i++) collider_advance(&c, 1.0);
+                collider_update_bounds(&c, M);
+                collider_bound_half_space(&c, M);
+                const double face = 0.2 + c.offset[k];
+                for (int j = 0; j < 4401; j++) {
+                    double x[3];
+                    for (int d = 0; d < 3; d++) x[d] = -5 + 10 * (double)((j * 7919 + d * 104729) % 4001) / 4000;
+                    if (j < 4001) {
+                        x[k] = face + sg * (-3 + 6 * (double)j / 4000) * M;
+                    } else { /* 200 ulp steps either side of the margin */
+                        double y = face + sg * M;
+                        for (int q = 0; q < 200; q++) y = nextafter(y, sg > 0 ? -INFINITY : INFINITY);
+                        for (int q = 0; q < j - 4001; q++) y = nextafter(y, sg > 0 ? INFINITY : -INFINITY);
+                        x[k] = y;
+                    }
+                    const double sd = collider_sdf(&c, x, NULL);
+                    const int near = collider_near(&c, x);
+                    if (sd <= M) held += near, missed += !near;
+                    if (sd >= 1.01 * M) far++, pruned += !near;
+                }
+                collider_free(&c);
+            }
+    printf("  points within the margin: %ld in the box, %ld missed; past 1.01 margins: %ld of %ld left out\n", held, missed,
+           pruned, far);
+    CHECK(missed == 0 && held > 0);
+    CHECK(pruned == far && far > 0);
+    /* turned, or slanted: the whole space, as collider_update_bounds gives a plane */
+    hearth_shape *pl = hearth_shape_plane((double[]){0, 0.2, 0}, (double[]){0, 1, 0});
+    hearth_shape *sl = hearth_shape_plane((double[]){0, 0.2, 0}, (double[]){0.1, 1, 0});
+    for (int t = 0; t < 2; t++) {
+        hearth_collider_def def;
+        memset(&def, 0, sizeof def);
+        def.shape = t ? sl : pl;
+        def.omega[2] = t ? 0 : 0.1;
+        collider c;
+        CHECK(collider_init(&c, &def, &err) == HEARTH_OK);
+        collider_advance(&c, 0.5);
+        collider_update_bounds(&c, 0.01);
+        collider_bound_half_space(&c, 0.01);
+        CHECK(collider_near(&c, (double[]){0, 1e3, 0}) && collider_near(&c, (double[]){1e3, -1e3, 1e3}));
+        collider_free(&c);
+    }
+    hearth_shape_free(pl);
+    hearth_shape_free(sl);
+}
+
 TEST_MAIN(T(shape_sdf_primitives), T(shape_sdf_combine), T(shape_normals), T(collider_motion), T(contact_modes),
-          T(collider_bad_def))
+          T(collider_bad_def), T(plane_box_holds_the_band))

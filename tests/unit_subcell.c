@@ -188,4 +188,45 @@ TEST(boil_front_threads_same_bits) {
     CHECK(h[0] == h[1]);
 }
 
-TEST_MAIN(T(subcell_conserves_heat_and_keeps_linear_profiles), T(subcell_threads_same_bits), T(boil_front_threads_same_bits))
+/* The front's passes walk only the front on one rank (boil_front.c: G_i where this pass's senders reach,
+ * the receivers whose stencil reaches those blocks, the pair weights once a step, nothing on a step where no
+ * particle passed T_b) and claim the bits of the walk over every node and particle that MPI slabs keep. On
+ * the block above with its lower half at 60 degC (a front over wet particles that do not boil, which the
+ * front's own walk passes by), one thread, the two walks (water_state's front_walk_all) must give the same
+ * hash, with some wet particles boiling in the last step and some not, else this checks nothing. */
+TEST(boil_front_walk_same_bits) {
+    uint64_t h[2] = {0, 1};
+    int boiling = 0, wet = 0;
+    hearth_set_threads(1);
+    for (int all = 0; all <= 1; all++) {
+        hearth_scene *s = block(0.001, 0.024, 0.024);
+        CHECK(s != NULL);
+        if (!s) break;
+        s->water.front_walk_all = all;
+        particles *ps = &s->ps;
+        const double *X = pcold(ps, PC_X);
+        double *T = pcold(ps, PC_TEMPERATURE), *W = pcold(ps, PC_WATER);
+        for (int i = 0; i < ps->n; i++) {
+            if (X[3 * i + 1] > 0.042 - 0.003) W[i] = 0, T[i] = 130;
+            if (X[3 * i + 1] < 0.030) T[i] = 60;
+        }
+        hearth_error err;
+        CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+        h[all] = hearth_scene_hash(s);
+        boiling = wet = 0;
+        for (int i = 0; i < ps->n && s->water.front; i++) {
+            const int w = material_moisture_ratio(&s->mats.slot[pcoli(ps, PC_MAT)[i]], ps, i) > 0.01;
+            wet += w;
+            boiling += s->water.front[2 * i] > 0 && w;
+        }
+        printf("  %s: %d of %d wet particles boiling in the last step, hash %016llx\n",
+               all ? "every node and particle" : "the front's own", boiling, wet, (unsigned long long)h[all]);
+        hearth_scene_destroy(s);
+    }
+    hearth_set_threads(0);
+    CHECK(boiling > 0 && boiling < wet);
+    CHECK(h[0] == h[1]);
+}
+
+TEST_MAIN(T(subcell_conserves_heat_and_keeps_linear_profiles), T(subcell_threads_same_bits), T(boil_front_threads_same_bits),
+          T(boil_front_walk_same_bits))

@@ -514,6 +514,16 @@ static void cylinder_bounds(const double c[3], const double u[3], double r, doub
     }
 }
 
+int shape_axis_plane(const hearth_shape *s, int *axis, int *sign, double *c) {
+    if (s->kind != SHAPE_PLANE) return 0;
+    for (int k = 0; k < 3; k++)
+        if (fabs(s->u[k]) == 1.0 && s->u[(k + 1) % 3] == 0.0 && s->u[(k + 2) % 3] == 0.0) {
+            *axis = k, *sign = s->u[k] > 0 ? 1 : -1, *c = s->c[k];
+            return 1;
+        }
+    return 0;
+}
+
 void hearth_shape_bounds(const hearth_shape *s, double lo[3], double hi[3]) {
     HEARTH_ASSERT(s && lo && hi);
     switch (s->kind) {

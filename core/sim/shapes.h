@@ -13,6 +13,9 @@ int shape_write(FILE *f, const hearth_shape *s);
 /// Reads the rest of f into memory and parses it with shape_read_mem; f is left
 /// just after the tree.
 hearth_shape *shape_read(FILE *f, int depth);
+/// Whether s is a plane whose normal is a coordinate axis exactly (the other two components zero, this one
+/// +-1): its axis, the normal's sign and the plane point's coordinate on that axis. 0 for anything else.
+int shape_axis_plane(const hearth_shape *s, int *axis, int *sign, double *c);
 struct ck_cursor;
 /// Deepest shape tree a checkpoint may hold (levels below the root).
 #define SHAPE_DEPTH_MAX 64

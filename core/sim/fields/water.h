@@ -22,11 +22,14 @@ typedef struct water_state {
     int limits_valid;      /* 0: particles or materials changed since, scan again */
     int exchange;          /* this step has wet colliders with beta_water > 0 (Robin): water_prepare sets it */
     int hold;              /* this step has wet colliders that hold their saturation: water_prepare sets it */
-    /* latent_heat in MPM (water_boil_front): per particle, the step's boiling heat E_p (J) and its heat
-     * capacity m c (J/K), 2 doubles each; scratch within a step, grown by water_boil_front_prepare */
+    /* latent_heat in MPM (water_boil_front, boil_front.c): per particle, the step's boiling heat E_p (J) and
+     * its heat capacity m c (J/K), 2 doubles each, then the front's own scratch (the passes' columns, each
+     * particle's 9 or 27 pair weights, a byte per active grid block); within a step, grown by
+     * water_boil_front_prepare */
     double *front;
     size_t front_cap;      /* doubles held */
     double front_removed;  /* the water water_boil_front boiled this step (kg), added by water_finish */
+    int front_walk_all;    /* tests: the front walks every node and particle on one rank too, as on MPI slabs */
 } water_state;
 
 /// Empty state: nothing lost, limits to be scanned.

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "error.h"
+#include "shapes.h"
 #include "tensor.h"
 
 /* Report the first non-finite component of a def vector. */
@@ -176,6 +177,24 @@ void collider_update_bounds(collider *c, double margin) {
             c->bhi[d] = fmax(c->bhi[d], x + margin);
         }
     }
+}
+
+void collider_bound_half_space(collider *c, double margin) {
+    int axis, sign;
+    double pc;
+    const double *R = c->R;
+    if (!shape_axis_plane(c->shape, &axis, &sign, &pc)) return;
+    if (!(R[0] == 1 && R[4] == 1 && R[8] == 1 && R[1] == 0 && R[2] == 0 && R[3] == 0 && R[5] == 0 && R[6] == 0 && R[7] == 0))
+        return;
+    /* collider_sdf is then sign (((x - pivot0) - offset) + pivot0 - pc) on that axis (R's products by 1 and 0
+     * exact), four roundings of numbers below |x| + |pivot0| + |offset| + |pc|: the slack is some 1e5 times
+     * that and still far below a cell */
+    const double o = c->offset[axis], face = pc + o;
+    const double slack = 1e-10 * (margin + 2 * (fabs(pc) + fabs(o) + fabs(c->pivot0[axis])));
+    if (!isfinite(face + slack)) return;
+    for (int d = 0; d < 3; d++) c->blo[d] = -INFINITY, c->bhi[d] = INFINITY;
+    if (sign > 0) c->bhi[axis] = face + margin + slack; /* the solid lies below the face */
+    else c->blo[axis] = face - margin - slack;
 }
 
 int collider_carry_particle(const collider *c, int dim, double dt, double x[3], double v[3], double C[9]) {

@@ -40,6 +40,13 @@ double collider_sdf(const collider *c, const double x[3], double n[3]);
 /// Recompute the world bounding box (blo, bhi) of the current pose, grown by margin (m).
 /// Unbounded shapes (planes) get infinite boxes.
 void collider_update_bounds(collider *c, double margin);
+/// After collider_update_bounds, on MPM: a plane whose normal is a coordinate axis and that has not turned
+/// (R the identity; a tray) gets the half-space within margin of its face (and a rounding's slack) as its
+/// box, open along the other axes, instead of the whole space, so that collider_near passes by the
+/// particles above a tray as it does those far from a finite shape. Every MPM caller's band is within the
+/// margin (2 dx: CONTACT_BAND, boundary.c's 2 dx, water.c's dx, the sticky 1.5 dx, COLLIDER_ROW_TOL),
+/// so what they find is the same. Not on SPH, whose heated colliders reach h = h_factor V0^(1/dim), past 2 dx.
+void collider_bound_half_space(collider *c, double margin);
 /// 1 when x lies inside the cached bounding box (cheap test before collider_sdf).
 static inline int collider_near(const collider *c, const double x[3]) {
     return x[0] >= c->blo[0] && x[0] <= c->bhi[0] && x[1] >= c->blo[1] && x[1] <= c->bhi[1] && x[2] >= c->blo[2] &&

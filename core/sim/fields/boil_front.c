@@ -1,0 +1,359 @@
+/* boil_front.c: the boiling front of latent_heat on MPM (issue #18), water_boil_front and its passes, out of
+ * water.c (which keeps water_boil, the per-particle boiling SPH calls and G2P's test), so that water.c stays
+ * about water's transport. The names keep water.h's prefix: water.h declares them. */
+#include <math.h>
+#include <string.h>
+
+#include "water.h"
+
+#include "alloc.h"
+#include "error.h"
+#include "grid.h"
+#include "material.h"
+#include "mpm.h"
+#include "physics_constants.h"
+#include "scene.h"
+
+/* The boiling front (issue #18; MPM with latent_heat). Calling water_boil
+ * in G2P, each particle boils the heat its own nodes hand it: every wet
+ * particle within a stencil of the nodes the flux reaches boils at once, so
+ * the zone at T_b is about two cells wide (1.85-2.29 dx) and the top dries
+ * only when the whole layer has (docs/validation.md, "The drying front
+ * against Stefan"). In a real Stefan front the wet layer at T_b has no
+ * gradient and the heat is taken at its outer edge. So G2P leaves each wet
+ * particle that passed T_b at T_b and its excess E_p = m_p c_p (T_p - T_b)
+ * here (the heat water_boil would have boiled), and this pass hands each
+ * node's share of it back to the node's boiling particles, the side the
+ * heat comes from first:
+ *   H_i = sum_p w_ip E_p,  G_i = sum_p w_ip g_p,
+ *   Q_p = g_p sum_i w_ip H_i / G_i,  g_p = exp(K e_p),
+ * e_p the particle's offset from node i along the node's temperature
+ * gradient (front_pair), over the particles with water to boil. Sum_p Q_p =
+ * sum_i H_i = sum_p E_p: exact, node by node. Q_p boils water down to the
+ * floor (water_boil's dm = Q / L); what a particle's water cannot take goes
+ * round again (front_pass, up to WATER_FRONT_PASSES passes) and what is left at
+ * the end goes back to the particles that boiled it. K = 3: K 8 and 20 made
+ * the front sharper but broke the slab's first order and its columns'
+ * symmetry. Serial over nodes and particles in their order (the same bits
+ * at any thread count; boil_front_threads_same_bits); MPI slabs sum the node
+ * channels. It costs what the front needs (the frontspeed branch,
+ * docs/performance.md "The boiling front's cost"), with the bits of the walk
+ * over every wet particle: a step where nothing passed T_b returns at once;
+ * on one rank a pass makes G_i and the gradient only where this pass's
+ * senders reach and passes by the receivers whose stencil reaches no such
+ * block (front_pass says why that changes no bit), and each pair's g is made
+ * once a step (front_pair_of). MPI slabs keep the whole walk. Rejected (docs/validation.md, "A sharper boiling front" and its
+ * sequel): ordering by dryness (exp(40 (1 - X/X_0))), which let one column
+ * run ahead of its neighbours; the ordering only at nodes holding both a
+ * dried and a wet particle, which dried the crumb slab 14.2% early. On its
+ * own this pass overheated a wet block's last dried particles (a FLIP
+ * sub-cell offset, +40 K, that G2P never damps); subcell.c's exchange
+ * relaxes it, and the two run together. */
+#define WATER_FRONT_K 3.0
+#define WATER_FRONT_PASSES 8
+#define FRONT_NS 7 /* scratch doubles a particle, before the pair weights (front_ng) */
+enum { FRONT_H = CH_R, FRONT_G = CH_B }; /* dead after thermal_finish until the next P2G (grid.c) */
+
+/* Stencil nodes a particle: the pair weights it keeps for the step (front_pair_of). */
+static int front_ng(const grid *g) { return g->dim == 3 ? 27 : 9; }
+
+/* The scratch's doubles: FRONT_NS a particle, its pair weights (front_ng), then a byte of marks per active
+ * grid block (FB_*), in one allocation, so the front asks the allocator what it asked before. */
+static size_t front_need(const hearth_scene *s) {
+    return (FRONT_NS + (size_t)front_ng(&s->g)) * (size_t)s->ps.n + ((size_t)s->g.nactive + sizeof(double) - 1) / sizeof(double);
+}
+
+hearth_status water_boil_front_prepare(hearth_scene *s, hearth_error *err) {
+    water_state *w = &s->water;
+    const size_t need = front_need(s);
+    if (need <= w->front_cap) return HEARTH_OK;
+    double *f = mem_alloc(sizeof(double) * need);
+    if (!f) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the boiling front's scratch (%d particles)", s->ps.n);
+    mem_free(w->front, sizeof(double) * w->front_cap);
+    w->front = f, w->front_cap = need;
+    return HEARTH_OK;
+}
+
+/* The heat's direction at each node: a = dx grad T (K a cell) from the new
+ * temperatures (CH_T, nodes with mass), central where both neighbours hold
+ * mass, one-sided where one does; into FRONT_A (dead after G2P, as CH_R). */
+static const int FRONT_A[3] = {CH_CG_R, CH_CG_P, CH_HC};
+
+/* Block slot k's nodes. Only front_pair reads FRONT_A, at the nodes a sender reaches (front_mark), so the
+ * blocks that hold none are skipped: nothing else reads these channels before the next step writes them. */
+static void front_gradient(grid *g, int k) {
+    const int D = g->dim, NPB = g->nodes_per_block;
+    int bc[3];
+    grid_block_coords(g, g->active[k], bc);
+    double *d = grid_block(g, k);
+    for (int l = 0; l < NPB; l++) {
+        int gi[3];
+        grid_node_index(g, bc, l, gi);
+        for (int ax = 0; ax < D; ax++) {
+            double a = 0;
+            if (d[CH_M * NPB + l] > 0) {
+                double Tn[2];
+                int ok[2];
+                for (int sgn = 0; sgn < 2; sgn++) {
+                    int gj[3] = {gi[0], gi[1], gi[2]}, lj;
+                    gj[ax] += sgn ? 1 : -1;
+                    const double *nj = grid_node_at(g, gj, &lj);
+                    ok[sgn] = nj && nj[CH_M * NPB + lj] > 0;
+                    Tn[sgn] = ok[sgn] ? nj[CH_T * NPB + lj] : 0.0;
+                }
+                const double T = d[CH_T * NPB + l];
+                a = ok[0] && ok[1] ? 0.5 * (Tn[1] - Tn[0]) : ok[1] ? Tn[1] - T : ok[0] ? T - Tn[0] : 0.0;
+            }
+            d[FRONT_A[ax] * NPB + l] = a;
+        }
+    }
+}
+
+/* The marks of an active grid block (a byte each, after the particles' scratch): FB_SENT, a sender of this
+ * pass reaches one of its nodes; FB_GRAD, its FRONT_A holds this step's gradient. */
+enum { FB_SENT = 1, FB_GRAD = 2 };
+
+/* A sender reaches node (storage node): its block is marked, and its gradient made on first reach. */
+static void front_mark(grid *g, unsigned char *fb, const double *node) {
+    const int k = (int)((size_t)(node - g->data) / ((size_t)g->nch * (size_t)g->nodes_per_block));
+    if (!(fb[k] & FB_GRAD)) front_gradient(g, k), fb[k] |= FB_GRAD;
+    fb[k] |= FB_SENT;
+}
+
+/* Whether the stencil of point x (grid_point_weights' base, the same arithmetic) reaches a block marked
+ * FB_SENT: a receiver that reaches none gets nothing this pass (below). */
+static int front_near(const grid *g, const unsigned char *fb, const double *x) {
+    int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (int d = 0; d < g->dim; d++) {
+        const int base = (int)floor((x[d] - g->lo[d]) * g->inv_dx - 0.5);
+        const int a = base < 0 ? 0 : base, b = base + 2 > g->nn[d] - 1 ? g->nn[d] - 1 : base + 2;
+        if (a > b) return 0;
+        lo[d] = a / GRID_B, hi[d] = b / GRID_B;
+    }
+    for (int bx = lo[0]; bx <= hi[0]; bx++)
+        for (int by = lo[1]; by <= hi[1]; by++)
+            for (int bz = lo[2]; bz <= hi[2]; bz++) {
+                const int k = g->slot[grid_block_id(g, bx, by, bz)];
+                if (k >= 0 && (fb[k] & FB_SENT)) return 1;
+            }
+    return 0;
+}
+
+/* Particle p's weight on node i: exp(K e), e = ((x_p - x_i) / dx) . a / (|a| + A0), so that on a node the
+ * heat comes to from one side, the particles on that side take it first; across a (1D) front they share
+ * alike. A0 = 0.1 K a cell: a node inside the wet zone, flat at T_b, shares alike (its rounding's direction
+ * is no direction). */
+static double front_pair(const grid *g, const double *node, int l, const double *x, const int gi[3]) {
+    const int NPB = g->nodes_per_block;
+    double a2 = 0, e = 0;
+    for (int d = 0; d < g->dim; d++) {
+        const double a = node[FRONT_A[d] * NPB + l];
+        a2 += a * a;
+        e += (x[d] - (g->lo[d] + gi[d] * g->dx)) * g->inv_dx * a;
+    }
+    return exp(WATER_FRONT_K * e / (sqrt(a2) + 0.1));
+}
+
+/* front_pair of a particle's j-th stencil node, made once a step: the positions and the gradient hold through
+ * the passes, so it is the same number every pass asks for (0: not made yet; exp(K e) > 0). */
+static double front_pair_of(const grid *g, double *gp, const grid_point_nodes *pn, int j, const double *x) {
+    if (!(gp[j] > 0)) gp[j] = front_pair(g, pn->node[j], pn->l[j], x, pn->gi[j]);
+    return gp[j];
+}
+
+/* One pass of the hand-out: each particle's r_p (J) to the nodes, H_i = sum_p w_ip r_p, and back to the
+ * receivers with room left (cap_p > 0), q_p = g_p sum_i w_ip H_i / G_i, G_i = sum_p w_ip g_p over them. A
+ * receiver takes up to its room; what it cannot take is its r_p for the next pass. A node without receivers
+ * hands its H_i back to the particles that sent it (w_ip r_p each) to send again (front_return hands out what
+ * is left at the end: kept by the overflowing particle, the heat of a block's nodes ran into its last wet
+ * particles); the weight of a node without storage stays with the sender (kept_p). Sum_p (q_p + kept_p) = sum_p r_p. Returns the heat still to
+ * hand out.
+ *
+ * What it costs is the front's, not the body's: on one rank G_i is made only at the nodes a sender reaches
+ * (the rest hold -1), and a receiver whose stencil reaches no block such a node lies in is passed by. The
+ * bits are those of the walk over every node and particle, which MPI slabs keep (all: G sums over the
+ * ranks with H, and a node's senders may sit on another rank): a node without senders has H_i = +0, so a
+ * receiver's q gains +0 there whatever G_i is; its `back` only counts times r_p, +0 for a non-sender, and
+ * a sender's nodes all hold G_i, summed over the same receivers in the same order; a passed-by receiver's
+ * r, cap, Q, kept and the pass's sum `left` change by +0 (q = take = 0). */
+static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned char *fb, double *gc, double *r,
+                         double *cap, double *Q, double *kept, double *near, hearth_error *err, hearth_status *st) {
+    grid *g = &s->g;
+    const int NPB = g->nodes_per_block, n = s->ps.n, NG = front_ng(g);
+    const double *X = pcold(&s->ps, PC_X);
+    for (int k = 0; k < g->nactive; k++) {
+        double *d = grid_block(g, k);
+        memset(d + chs[0] * NPB, 0, sizeof(double) * (size_t)NPB);
+        if (all) {
+            memset(d + chs[1] * NPB, 0, sizeof(double) * (size_t)NPB);
+        } else {
+            for (int l = 0; l < NPB; l++) d[chs[1] * NPB + l] = -1.0; /* no sender reaches it (yet) */
+            fb[k] &= (unsigned char)~FB_SENT;
+        }
+    }
+    /* the senders, then the receivers: each channel still sums its particles in their order */
+    for (int i = 0; i < n; i++) {
+        if (!(r[i] > 0)) continue;
+        grid_point_nodes pn;
+        grid_point_nodes_of(g, X + 3 * i, &pn);
+        for (int j = 0; j < pn.n; j++) {
+            double *node = pn.node[j];
+            const int l = pn.l[j];
+            node[chs[0] * NPB + l] += pn.w[j] * r[i];
+            if (!all && node[chs[1] * NPB + l] < 0) node[chs[1] * NPB + l] = 0, front_mark(g, fb, node);
+        }
+    }
+    for (int i = 0; i < n; i++) { /* near: the receivers walked, for the gather (cap and the marks hold till then) */
+        if (!(cap[i] > 0)) continue;
+        near[i] = all || front_near(g, fb, X + 3 * i);
+        if (!(near[i] > 0)) continue;
+        grid_point_nodes pn;
+        grid_point_nodes_of(g, X + 3 * i, &pn);
+        for (int j = 0; j < pn.n; j++) {
+            double *node = pn.node[j];
+            const int l = pn.l[j];
+            if (!(node[chs[1] * NPB + l] < 0)) node[chs[1] * NPB + l] += pn.w[j] * front_pair_of(g, gc + (size_t)NG * i, &pn, j, X + 3 * i);
+        }
+    }
+    if ((*st = mpm_ranks_fields_sum(s, chs, 2, err))) return 0;
+    double left = 0;
+    for (int i = 0; i < n; i++) {
+        if (!(r[i] > 0) && !(cap[i] > 0 && near[i] > 0)) continue;
+        grid_point_nodes pn;
+        grid_point_nodes_of(g, X + 3 * i, &pn);
+        double q = 0, back = 0, none = 1; /* none: the weight on nodes without storage */
+        for (int j = 0; j < pn.n; j++) {
+            const double *node = pn.node[j];
+            const int l = pn.l[j];
+            const double wt = pn.w[j];
+            none -= wt;
+            const double G = node[chs[1] * NPB + l];
+            if (G > 0) {
+                if (cap[i] > 0) q += wt * front_pair_of(g, gc + (size_t)NG * i, &pn, j, X + 3 * i) * node[chs[0] * NPB + l] / G;
+            } else {
+                back += wt;
+            }
+        }
+        const double r0 = r[i] > 0 ? r[i] : 0.0;
+        kept[i] += none * r0;
+        q = cap[i] > 0 ? q : 0.0;
+        const double take = q < cap[i] ? q : cap[i] > 0 ? cap[i] : 0.0;
+        Q[i] += take;
+        cap[i] -= take;
+        r[i] = q - take + back * r0;
+        left += r[i];
+    }
+    return left;
+}
+
+/* The rest r_p back to the particles that boiled (E_p > 0), by w_ip E_p / sum_q w_iq E_q on each node,
+ * into kept; a sender's weight on a node without storage stays with it. r ends at 0. */
+static hearth_status front_return(hearth_scene *s, const int chs[2], double *r, double *kept, const double *E,
+                                  hearth_error *err) {
+    grid *g = &s->g;
+    const int NPB = g->nodes_per_block, n = s->ps.n;
+    const double *X = pcold(&s->ps, PC_X);
+    for (int k = 0; k < g->nactive; k++) {
+        double *d = grid_block(g, k);
+        for (int c = 0; c < 2; c++) memset(d + chs[c] * NPB, 0, sizeof(double) * (size_t)NPB);
+    }
+    for (int i = 0; i < n; i++) {
+        if (!(E[2 * i] > 0)) continue;
+        grid_point_nodes pn;
+        grid_point_nodes_of(g, X + 3 * i, &pn);
+        for (int j = 0; j < pn.n; j++) {
+            double *node = pn.node[j];
+            const int l = pn.l[j];
+            const double wt = pn.w[j];
+            if (r[i] > 0) node[chs[0] * NPB + l] += wt * r[i];
+            node[chs[1] * NPB + l] += wt * E[2 * i];
+        }
+    }
+    hearth_status st = mpm_ranks_fields_sum(s, chs, 2, err);
+    if (st) return st;
+    for (int i = 0; i < n; i++) {
+        if (!(E[2 * i] > 0)) continue;
+        grid_point_nodes pn;
+        grid_point_nodes_of(g, X + 3 * i, &pn);
+        double q = 0, none = 1;
+        for (int j = 0; j < pn.n; j++) {
+            const double *node = pn.node[j];
+            const int l = pn.l[j];
+            const double wt = pn.w[j];
+            none -= wt;
+            q += wt * node[chs[0] * NPB + l] / node[chs[1] * NPB + l];
+        }
+        kept[i] += E[2 * i] * q + none * (r[i] > 0 ? r[i] : 0.0);
+    }
+    for (int i = 0; i < n; i++) r[i] = 0;
+    return HEARTH_OK;
+}
+
+hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
+    particles *ps = &s->ps;
+    const int n = ps->n;
+    double *E = s->water.front, *T = pcold(ps, PC_TEMPERATURE), *Tmax = pcold(ps, PC_TEMP_MAX), *W = pcold(ps, PC_WATER);
+    const double *vol = mpm_state_of(s)->vol;
+    /* the scratch: E_p, m c (from G2P), then r, cap, Q, kept, near (FRONT_NS doubles a particle) */
+    double *r = E + 2 * (size_t)n, *cap = r + n, *Q = cap + n, *kept = Q + n, *near = kept + n;
+    const int chs[2] = {FRONT_H, FRONT_G};
+    s->water.front_removed = 0;
+    int boils = 0;
+    for (int i = 0; i < n; i++) {
+        r[i] = cap[i] = Q[i] = kept[i] = 0;
+        if (!(E[2 * i] > 0)) continue;
+        boils = 1;
+        const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
+        const double spare = W[i] - WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * vol[i];
+        cap[i] = spare > 0 ? spare * HEARTH_LATENT_HEAT : 0.0;
+        /* what water_boil would boil goes to the pool; the rest the particle keeps, as water_boil leaves it (a
+         * dried particle that water_take's floor leaves a rounding's spare, or that diffusion wets a little,
+         * would otherwise be held at T_b every step, handing its heat to the front) */
+        r[i] = E[2 * i] < cap[i] ? E[2 * i] : cap[i];
+        kept[i] = E[2 * i] - r[i];
+    }
+    /* MPI slabs walk every node and particle (front_pass); one rank walks the front's own, and without a
+     * particle past T_b has nothing to do: every pass, front_return and the books below would change nothing */
+    const int all = s->mpm->nranks > 1 || s->water.front_walk_all;
+    if (!all && !boils) return HEARTH_OK;
+    grid *g = &s->g;
+    double *gc = E + FRONT_NS * (size_t)n;
+    memset(gc, 0, sizeof(double) * (size_t)front_ng(g) * (size_t)n);
+    unsigned char *fb = (unsigned char *)(gc + (size_t)front_ng(g) * (size_t)n);
+    for (int k = 0; k < g->nactive; k++) {
+        if (all) front_gradient(g, k);
+        fb[k] = all ? FB_GRAD | FB_SENT : 0;
+    }
+    hearth_status st = HEARTH_OK;
+    for (int pass = 0; pass < WATER_FRONT_PASSES; pass++) {
+        const double left = front_pass(s, chs, all, fb, gc, r, cap, Q, kept, near, err, &st);
+        if (st) return st;
+        if (!(left > 0) && s->mpm->nranks == 1) break; /* every rank takes part in each pass's exchange */
+    }
+    /* what is still to hand out after the passes goes back over the nodes to every particle that boiled, in
+     * proportion to w_ip E_p, as sensible heat: left with the receiver that last overflowed, the heat of a
+     * whole block's nodes ran into its last wet particles (247 degC in a 200 degC oven, latent_heat_wet_plateau) */
+    if ((st = front_return(s, chs, r, kept, E, err))) return st;
+    double removed = 0;
+    for (int i = 0; i < n; i++) {
+        if (!(E[2 * i] > 0) && !(kept[i] > 0)) continue;
+        if (kept[i] > 0 && cap[i] > 0) { /* heat kept or handed back boils what water is left first: wet stays at T_b */
+            const double take = kept[i] < cap[i] ? kept[i] : cap[i];
+            Q[i] += take, cap[i] -= take, kept[i] -= take;
+        }
+        const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
+        const double floor_w = WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * vol[i];
+        /* within its room; a particle that filled it is at the floor exactly, so that it boils no more (a
+         * rounding's spare would make it a source every step, at T_b, handing its heat on) */
+        const int filled = E[2 * i] > 0 && !(cap[i] > 0);
+        const double dm = filled ? W[i] - floor_w : Q[i] / HEARTH_LATENT_HEAT;
+        W[i] = filled ? floor_w : W[i] - dm;
+        removed += dm;
+        /* what it could not boil, its own or passed on and back; a particle that never boiled has no m c here,
+         * but it only keeps heat it sent (r and kept start at 0 without E) */
+        if (kept[i] > 0) T[i] += kept[i] / E[2 * i + 1];
+        if (T[i] > Tmax[i]) Tmax[i] = T[i];
+    }
+    s->water.front_removed = removed;
+    return HEARTH_OK;
+}
