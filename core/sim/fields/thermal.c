@@ -227,7 +227,7 @@ static hearth_status find_boundary(hearth_scene *s) {
             }
             coef[i] = s->boundary.area[i] * b;
             temp[i] = oven ? s->def.oven_temperature : 0.0;
-            surf[i] = r; /* the surface's temperature by the same closure (thermal_surface_temperature) */
+            if (surf) surf[i] = r; /* the surface's temperature by the same closure (thermal_surface_temperature) */
         }
     /* heated colliders: surface quadrature points on the collider's face; a held
      * collider's (infinite beta) carry its face's Nitsche terms */
@@ -242,7 +242,7 @@ static hearth_status find_boundary(hearth_scene *s) {
             const double sd = collider_sdf(col, x, nrm);
             if (sd >= CONTACT_BAND * g->dx) continue;
             if (!(flags[i] & PF_BOUNDARY)) coef[i] = temp[i] = 0.0; /* the probe's flag; the contact is not in coef */
-            surf[i] = NAN; /* its surface is the collider's contact, which the oven's closure does not describe: the
+            if (surf) surf[i] = NAN; /* its surface is the collider's contact, which the oven's closure does not describe: the
                             * loaf's base on its tray browned 0.29 at 10 min through it, 0.96 from its own temperature */
             flags[i] |= PF_BOUNDARY;
             if (s->heat.nct == s->heat.ct_cap) return HEARTH_ERR_NOMEM; /* thermal_prepare sized it: n per collider */
@@ -531,8 +531,10 @@ hearth_status thermal_prepare(hearth_scene *s, hearth_error *err) {
     if (n > s->heat.bnd_cap || g->nactive > s->heat.cg_cap) {
         const int nc = n > s->heat.bnd_cap ? n : s->heat.bnd_cap, gc = g->nactive > s->heat.cg_cap ? g->nactive * 2 : s->heat.cg_cap;
         double *a = mem_alloc(sizeof(double) * (size_t)nc), *b = mem_alloc(sizeof(double) * (size_t)nc);
-        double *c = mem_alloc(sizeof(double) * (size_t)gc), *e = mem_alloc(sizeof(double) * (size_t)nc);
-        if (!a || !b || !c || !e) {
+        /* bnd_surf only for browning's surface reading (PC_SURFACE: MPM, browning and an oven, scene.c) */
+        const int surf = (s->ps.enabled & (1u << PC_SURFACE)) != 0;
+        double *c = mem_alloc(sizeof(double) * (size_t)gc), *e = surf ? mem_alloc(sizeof(double) * (size_t)nc) : NULL;
+        if (!a || !b || !c || (surf && !e)) {
             mem_free(a, sizeof(double) * (size_t)nc);
             mem_free(b, sizeof(double) * (size_t)nc);
             mem_free(e, sizeof(double) * (size_t)nc);
