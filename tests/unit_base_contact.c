@@ -51,6 +51,7 @@
 
 #include "browning.h"
 #include "mpm_fixture.h"
+#include "stefan_form.h"
 
 static double CD = 0.55 * 1650; /* BASE_CD (below) */
 static const double RHO = 484, CW = 2700, KW = 0.51, KD = 0.23, SAT = 0.218, TP = 200, TB = 100,
@@ -58,23 +59,10 @@ static const double RHO = 484, CW = 2700, KW = 0.51, KD = 0.23, SAT = 0.218, TP 
 static const double DEPTH = 0.016, WIDTH = 0.02, TEND = 1500;
 static double DXS[3] = {0.005, 0.0025, 0.00125};
 
-/* (3) and (4): the time at which the front reaches d. */
-static double t_of_d(double d, int sensible) {
-    const double a = 1 / BETA, b = 1 / KD, W = 1000 * SAT * HEARTH_LATENT_HEAT;
-    double t = W * (a * d + 0.5 * b * d * d) / (TP - TB);
-    if (sensible) t += 0.5 * RHO * CD * b * (0.5 * d * d + a / b * d - (a / b) * (a / b) * log1p(b * d / a));
-    return t;
-}
-
-static double d_of_t(double t, int sensible) {
-    double lo = 0, hi = 1;
-    for (int k = 0; k < 200; k++) {
-        const double m = 0.5 * (lo + hi);
-        if (t_of_d(m, sensible) < t) lo = m;
-        else hi = m;
-    }
-    return 0.5 * (lo + hi);
-}
+/* (3) and (4) (stefan_form.h) with this slab's numbers: the time at which the front reaches d, and back. */
+static stefan_form form(void) { return (stefan_form){BETA, KD, RHO * CD, 1000 * SAT * HEARTH_LATENT_HEAT, TP, TB}; }
+static double t_of_d(double d, int sensible) { const stefan_form f = form(); return stefan_t_of_d(&f, d, sensible); }
+static double d_of_t(double t, int sensible) { const stefan_form f = form(); return stefan_d_of_t(&f, t, sensible); }
 
 /* (4)'s temperature at height y above the tray at time t. */
 static double t_form(double y, double t) {

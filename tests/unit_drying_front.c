@@ -50,6 +50,7 @@
 #include <string.h>
 
 #include "mpm_fixture.h"
+#include "stefan_form.h"
 #include "browning.h"
 
 static const double RHO = 484, CP = 2700, KW = 0.51, KD = 0.23, SAT = 0.218, TO = 200, TB = 100, BETA = 30;
@@ -57,24 +58,10 @@ static const double DEPTH = 0.024, WIDTH = 0.024; /* the slab; the front reaches
 #define NT 10 /* samples, every 150 s to 25 min */
 static const double EVERY = 150;
 
-/* (3) and (4): the time at which the front reaches d. */
-static double t_of_d(double d, int sensible) {
-    const double a = 1 / BETA, b = 1 / KD, W = 1000 * SAT * HEARTH_LATENT_HEAT;
-    double t = W * (a * d + 0.5 * b * d * d) / (TO - TB);
-    if (sensible) t += 0.5 * RHO * CP * b * (0.5 * d * d + a / b * d - (a / b) * (a / b) * log1p(b * d / a));
-    return t;
-}
-
-/* Inverts t_of_d by bisection (t_of_d rises with d). */
-static double d_of_t(double t, int sensible) {
-    double lo = 0, hi = 1;
-    for (int k = 0; k < 200; k++) {
-        const double m = 0.5 * (lo + hi);
-        if (t_of_d(m, sensible) < t) lo = m;
-        else hi = m;
-    }
-    return 0.5 * (lo + hi);
-}
+/* (3) and (4) (stefan_form.h) with this slab's numbers: the time at which the front reaches d, and back. */
+static stefan_form form(void) { return (stefan_form){BETA, KD, RHO * CP, 1000 * SAT * HEARTH_LATENT_HEAT, TO, TB}; }
+static double t_of_d(double d, int sensible) { const stefan_form f = form(); return stefan_t_of_d(&f, d, sensible); }
+static double d_of_t(double t, int sensible) { const stefan_form f = form(); return stefan_d_of_t(&f, t, sensible); }
 
 /* Measurement switches, unset in the tests (docs/validation.md's loaf
  * comparison used them): FRONT_T0 the slab's start (degC; a cold crumb, as the
