@@ -59,7 +59,6 @@
 #include "alloc.h"
 #include "error.h"
 #include "hearth/tensor.h"
-#include <stdlib.h>
 
 #define SUBCELL_PI 3.14159265358979323846
 
@@ -210,7 +209,7 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
     if (st) return st;
     /* each node's fit once: fit(x) = f_i + G_i . (x - x_i), f_i = Tbar_i + G_i . (x_i - xbar_i), the value at
      * the node (NaN where it holds no dried particle) */
-    const size_t nf0 = (size_t)(1 + D), nf = nf0 + 4, need = (size_t)g->nactive * (size_t)NPB * nf;
+    const size_t nf = (size_t)(1 + D), need = (size_t)g->nactive * (size_t)NPB * nf;
     if (need > s->heat.sub_cap) {
         double *f = mem_alloc(sizeof(double) * need);
         if (!f) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the dried particles' node fits (%zu nodes)",
@@ -219,7 +218,6 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
         s->heat.sub_fit = f, s->heat.sub_cap = need;
     }
     double *fit = s->heat.sub_fit;
-    const size_t stride = (size_t)g->nch * (size_t)NPB;
     for (int k = 0; k < g->nactive; k++) {
         int bc[3];
         grid_block_coords(g, g->active[k], bc);
@@ -240,37 +238,11 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
             for (int d = 0; d < D; d++) f[0] += G[d] * (g->lo[d] + gi[d] * g->dx - xb[d]), f[1 + d] = G[d];
         }
     }
-    /* EXPERIMENT (baseheat): the wet particles as a sink. Per node: Cd = sum_dried w C, Ww = sum_wet w C,
-     * Sw = sum_wet w C T0 (then Tw = Sw / Ww), H the heat handed to the node's wet particles. */
-    const char *bhe = getenv("HEARTH_BASEHEAT");
-    const int bh = bhe ? atoi(bhe) : 0;
-    for (int k = 0; bh && k < g->nactive; k++)
-        for (int l = 0; l < NPB; l++) {
-            double *f = fit + ((size_t)k * (size_t)NPB + (size_t)l) * nf + nf0;
-            f[0] = f[1] = f[2] = f[3] = 0;
-        }
-    for (int i = 0; bh && i < n; i++) {
-        if (flags && (flags[i] & PF_HOLD_T)) continue;
-        const material_slot *ms = &s->mats.slot[mat[i]];
-        const double phi = dryness(ms, ps, i), C = M[i] * material_specific_heat_of(ms, ps, i, Wc[i]);
-        if (!(C > 0)) continue;
-        grid_point_nodes pn;
-        grid_point_nodes_of(g, X + 3 * i, &pn);
-        for (int j = 0; j < pn.n; j++) {
-            double *f = fit + ((size_t)((pn.node[j] - g->data) / (ptrdiff_t)stride) * (size_t)NPB + (size_t)pn.l[j]) * nf + nf0;
-            if (phi > 0) f[0] += pn.w[j] * C;
-            else f[1] += pn.w[j] * C, f[2] += pn.w[j] * C * T[i];
-        }
-    }
-    for (int k = 0; bh && k < g->nactive; k++)
-        for (int l = 0; l < NPB; l++) {
-            double *f = fit + ((size_t)k * (size_t)NPB + (size_t)l) * nf + nf0;
-            if (f[1] > 0) f[2] /= f[1];
-        }
     /* each dried particle toward its nodes' fits, from the same step-start values (the sums above read T
      * before any particle changes). Summed with weights C_p the change is sum_i [W_i f_i + G_i . M_i - S_i]
      * = sum_i [W_i Tbar_i - S_i + G_i . (M_i - W_i (xbar_i - x_i))] = 0 for any G_i, M_i the first moments
      * (xbar_i - x_i = M_i / W_i). */
+    const size_t stride = (size_t)g->nch * (size_t)NPB;
     for (int i = 0; i < n; i++) {
         if (flags && (flags[i] & PF_HOLD_T)) continue;
         const material_slot *ms = &s->mats.slot[mat[i]];
@@ -280,45 +252,18 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
         if (!(kp * phi > 0)) continue; /* C_p = 0 would add nothing to the books either way */
         grid_point_nodes pn;
         grid_point_nodes_of(g, X + 3 * i, &pn);
-        double sum = 0, sumw = 0, Fp = 0;
-        for (int j = 0; bh >= 3 && j < pn.n; j++) Fp += pn.w[j] * pn.node[j][CH_T0 * NPB + pn.l[j]];
+        double sum = 0;
         for (int j = 0; j < pn.n; j++) {
             const double *node = pn.node[j];
             const int l = pn.l[j], *gi = pn.gi[j];
             const double wt = pn.w[j];
-            double *f = fit + ((size_t)((node - g->data) / (ptrdiff_t)stride) * (size_t)NPB + (size_t)l) * nf;
+            const double *f = fit + ((size_t)((node - g->data) / (ptrdiff_t)stride) * (size_t)NPB + (size_t)l) * nf;
             if (isnan(f[0])) continue;
             double v = f[0];
             for (int d = 0; d < D; d++) v += f[1 + d] * (X[3 * i + d] - (g->lo[d] + gi[d] * g->dx));
-            double th = 0;
-            if (bh && f[nf0 + 1] > 0) {
-                th = f[nf0 + 1] / (f[nf0 + 1] + f[nf0]);
-                const double Cp = M[i] * material_specific_heat_of(ms, ps, i, Wc[i]);
-                const double drive = bh >= 3 ? fmax(0.0, T[i] - Fp) : T[i] - f[nf0 + 2];
-                const double dq = (getenv("HEARTH_BASEHEAT_K") ? atof(getenv("HEARTH_BASEHEAT_K")) : 1.0) * kp * phi * wt * (bh == 4 ? 1.0 : th) * drive; /* K: the particle's loss to this node's wet ones */
-                f[nf0 + 3] += Cp * dq;
-                sumw -= dq;
-            }
-            sum += wt * (bh == 1 || bh == 3 ? 1 - th : 1) * (v - T[i]);
+            sum += wt * (v - T[i]);
         }
-        T[i] += bh ? kp * phi * sum + sumw : kp * phi * sum;
-    }
-    if (bh) {
-        for (int i = 0; i < n; i++) {
-            if (flags && (flags[i] & PF_HOLD_T)) continue;
-            const material_slot *ms = &s->mats.slot[mat[i]];
-            if (dryness(ms, ps, i) > 0) continue;
-            const double C = M[i] * material_specific_heat_of(ms, ps, i, Wc[i]);
-            if (!(C > 0)) continue;
-            grid_point_nodes pn;
-            grid_point_nodes_of(g, X + 3 * i, &pn);
-            double q = 0;
-            for (int j = 0; j < pn.n; j++) {
-                const double *f = fit + ((size_t)((pn.node[j] - g->data) / (ptrdiff_t)stride) * (size_t)NPB + (size_t)pn.l[j]) * nf + nf0;
-                if (f[1] > 0) q += pn.w[j] * f[3] / f[1];
-            }
-            T[i] += q;
-        }
+        T[i] += kp * phi * sum;
     }
     return HEARTH_OK;
 }
