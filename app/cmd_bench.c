@@ -155,8 +155,8 @@ int cmd_bench(int argc, char **argv) {
                      bytes = hearth_ranks_max((b1 - b0) / (double)steps), wall = hearth_ranks_max(secs);
         if (hearth_ranks_rank() == 0)
             printf("{\"ranks\": %d, \"threads\": %d, \"scaling\": \"%s\", \"dim\": %ld, \"cells\": %ld, \"particles\": %d, "
-                   "\"particles_per_rank\": %.1f, \"steps\": %ld, \"seconds\": %.4f, \"ms_per_step\": %.3f, "
-                   "\"particle_steps_per_s\": %.6g, \"comm_share\": %.4f, \"comm_seconds\": %.4f, "
+                   "\"particles_per_rank\": %.1f, \"steps\": %ld, \"seconds\": %.6g, \"ms_per_step\": %.3f, "
+                   "\"particle_steps_per_s\": %.6g, \"comm_share\": %.4f, \"comm_seconds\": %.6g, "
                    "\"bytes_received_per_step\": %.0f, \"slab_steps\": %ld, \"replicated_steps\": %ld}\n",
                    N, hearth_get_threads(), weak ? "weak" : "strong", dim, cells, st.particles, (double)st.particles / N, steps,
                    wall, 1e3 * wall / (double)steps, (double)st.particles * (double)steps / wall, share, comm, bytes,
