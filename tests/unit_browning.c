@@ -310,5 +310,38 @@ TEST(browning_surface_threads) {
     CHECK(h[0] == h[1]);
 }
 
+/* An oven lit after the scene was made (hearth_scene_set_oven, Lua's s:oven) reads the surface as one made with
+ * it: the same 1600-particle block in a 250 degC oven (beta 40) for 0.2 s at browning_scale 600, made with the oven
+ * and made without one then lit before its bodies and after them: the same hash, and surface offsets live.
+ * Before, the column was made only with the scene and the later oven browned every particle at its own
+ * temperature (a different hash, no offsets). */
+TEST(browning_surface_with_oven_lit_later) {
+    uint64_t h[3];
+    int live[3];
+    for (int k = 0; k < 3; k++) {
+        hearth_scene *s = brown_scene(HEARTH_SOLVER_MPM, 0.005, 0.2, 600, k == 0 ? 250 : NAN);
+        CHECK(s != NULL);
+        if (!s) return;
+        hearth_error err;
+        if (k == 0) s->def.oven_beta = 40;
+        if (k == 1) CHECK(hearth_scene_set_oven(s, 250, 40, &err) == HEARTH_OK);
+        const int m = brown_material(s, HEARTH_SOLVER_MPM, 2800.0 / 600, 0.4);
+        const double c[3] = {0.1, 0.1, 0}, hh[3] = {0.05, 0.05, 0.5};
+        CHECK(m >= 0 && brown_block(s, m, c, hh, 4, 1, 20) >= 0);
+        if (k == 2) CHECK(hearth_scene_set_oven(s, 250, 40, &err) == HEARTH_OK);
+        CHECK(hearth_scene_advance(s, 0.2, &err) == HEARTH_OK);
+        live[k] = 0;
+        if (s->ps.enabled & (1u << PC_SURFACE))
+            for (int i = 0; i < s->ps.n; i++) live[k] += pcold(&s->ps, PC_SURFACE)[2 * i] > 0;
+        h[k] = hearth_scene_hash(s);
+        printf("  oven %s: %d particles, %d read a hotter surface, hash %016llx\n",
+               k == 0 ? "made with the scene" : k == 1 ? "lit before the bodies" : "lit after the bodies", s->ps.n, live[k],
+               (unsigned long long)h[k]);
+        hearth_scene_destroy(s);
+    }
+    CHECK(live[0] > 0 && live[1] == live[0] && live[2] == live[0]);
+    CHECK(h[1] == h[0] && h[2] == h[0]);
+}
+
 TEST_MAIN(T(browning_closed_form), T(browning_checkpoint_roundtrip), T(browning_surface_not_crumb), T(browning_surface_not_crumb_sph), T(browning_history_not_current),
-          T(browning_wet_does_not_brown), T(browning_surface_threads))
+          T(browning_wet_does_not_brown), T(browning_surface_threads), T(browning_surface_with_oven_lit_later))

@@ -252,10 +252,7 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
         hearth_scene_destroy(s); /* browning.c reads the temperature */
         return NULL;
     }
-    /* with an oven, MPM's browning reads the air surface above a boundary particle, kept between the fields'
-     * updates (browning.c) */
-    if (d.browning && d.solver == HEARTH_SOLVER_MPM && !isnan(d.oven_temperature) && d.oven_beta > 0 &&
-        particles_enable(&s->ps, PC_SURFACE, err)) {
+    if (scene_enable_browning_surface(s, err)) {
         hearth_scene_destroy(s);
         return NULL;
     }
@@ -304,7 +301,15 @@ hearth_status hearth_scene_set_oven(hearth_scene *s, double temperature, double 
     if (st) return st;
     if (!isnan(temperature) && (st = scene_enable_temperature(s, err))) return st; /* an oven makes the field live */
     s->def = d;
-    return HEARTH_OK;
+    return scene_enable_browning_surface(s, err); /* an oven lit after the scene was made, as one made with it */
+}
+
+/* With an oven, MPM's browning reads the air surface above a boundary particle, kept between the fields' updates
+ * in the PC_SURFACE column (browning.c); the column stays once made (an oven turned off leaves its offsets 0). */
+hearth_status scene_enable_browning_surface(hearth_scene *s, hearth_error *err) {
+    const hearth_scene_def *d = &s->def;
+    if (!(d->browning && d->solver == HEARTH_SOLVER_MPM && !isnan(d->oven_temperature) && d->oven_beta > 0)) return HEARTH_OK;
+    return particles_enable(&s->ps, PC_SURFACE, err);
 }
 
 /* ---- materials ------------------------------------------------------- */

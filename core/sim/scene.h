@@ -122,6 +122,8 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
                        hearth_error *err);
 /* Turn the temperature field on (room temperature for particles that have none). */
 hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err);
+/* With browning and an oven on MPM, make the PC_SURFACE column browning.c keeps its surface offsets in; else nothing. */
+hearth_status scene_enable_browning_surface(hearth_scene *s, hearth_error *err);
 /* Widen seeded_t over particles [i0, i1) when the temperature field is live. */
 void scene_note_seeded_temperature(hearth_scene *s, int i0, int i1);
 /* Largest wave speed over moving particles (s->c_max), after particles change. */

@@ -528,7 +528,8 @@ static void clear_channel(hearth_scene *s, int ch) {
 hearth_status thermal_prepare(hearth_scene *s, hearth_error *err) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block, n = s->ps.n;
-    if (n > s->heat.bnd_cap || g->nactive > s->heat.cg_cap) {
+    /* bnd_surf also when browning's surface reading came after the arrays (an oven lit later: scene.c) */
+    if (n > s->heat.bnd_cap || g->nactive > s->heat.cg_cap || ((s->ps.enabled & (1u << PC_SURFACE)) && !s->heat.bnd_surf)) {
         const int nc = n > s->heat.bnd_cap ? n : s->heat.bnd_cap, gc = g->nactive > s->heat.cg_cap ? g->nactive * 2 : s->heat.cg_cap;
         double *a = mem_alloc(sizeof(double) * (size_t)nc), *b = mem_alloc(sizeof(double) * (size_t)nc);
         /* bnd_surf only for browning's surface reading (PC_SURFACE: MPM, browning and an oven, scene.c) */
