@@ -165,6 +165,16 @@ static double k_of(const hearth_scene *s, k_memo *km, int m, double fdt) {
     return km->k;
 }
 
+/* Particle i's share of its nodes' fit this step, k phi: 0 for a particle held at its temperature or still wet
+ * (both passes below select by it) */
+static double relax_share(const hearth_scene *s, k_memo *km, const int *flags, int i, double fdt) {
+    if (flags && (flags[i] & PF_HOLD_T)) return 0.0;
+    const int m = pcoli(&s->ps, PC_MAT)[i];
+    const double phi = dryness(&s->mats.slot[m], &s->ps, i);
+    if (!(phi > 0)) return 0.0;
+    return k_of(s, km, m, fdt) * phi;
+}
+
 hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
     particles *ps = &s->ps;
     grid *g = &s->g;
@@ -187,12 +197,9 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
     }
     /* W_i, S_i and the first moments */
     for (int i = 0; i < n; i++) {
-        if (flags && (flags[i] & PF_HOLD_T)) continue;
-        const material_slot *ms = &s->mats.slot[mat[i]];
-        const double phi = dryness(ms, ps, i);
-        if (!(phi > 0)) continue;
-        const double kp = k_of(s, &km, mat[i], fdt);
-        const double a = kp * phi * M[i] * material_specific_heat_of(ms, ps, i, Wc[i]);
+        const double r = relax_share(s, &km, flags, i, fdt);
+        if (!(r > 0)) continue;
+        const double a = r * M[i] * material_specific_heat_of(&s->mats.slot[mat[i]], ps, i, Wc[i]);
         if (!(a > 0)) continue;
         grid_point_nodes pn;
         grid_point_nodes_of(g, X + 3 * i, &pn);
@@ -244,12 +251,8 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
      * (xbar_i - x_i = M_i / W_i). */
     const size_t stride = (size_t)g->nch * (size_t)NPB;
     for (int i = 0; i < n; i++) {
-        if (flags && (flags[i] & PF_HOLD_T)) continue;
-        const material_slot *ms = &s->mats.slot[mat[i]];
-        const double phi = dryness(ms, ps, i);
-        if (!(phi > 0)) continue;
-        const double kp = k_of(s, &km, mat[i], fdt);
-        if (!(kp * phi > 0)) continue; /* C_p = 0 would add nothing to the books either way */
+        const double r = relax_share(s, &km, flags, i, fdt);
+        if (!(r > 0)) continue; /* C_p = 0 would add nothing to the books either way */
         grid_point_nodes pn;
         grid_point_nodes_of(g, X + 3 * i, &pn);
         double sum = 0;
@@ -263,7 +266,7 @@ hearth_status subcell_exchange(hearth_scene *s, double fdt, hearth_error *err) {
             for (int d = 0; d < D; d++) v += f[1 + d] * (X[3 * i + d] - (g->lo[d] + gi[d] * g->dx));
             sum += wt * (v - T[i]);
         }
-        T[i] += kp * phi * sum;
+        T[i] += r * sum;
     }
     return HEARTH_OK;
 }
