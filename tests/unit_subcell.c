@@ -118,6 +118,21 @@ TEST(subcell_conserves_heat_and_keeps_linear_profiles) {
     hearth_scene_destroy(s);
 }
 
+/* The 24 x 24 mm block at dx 1 mm (2304 particles, past SCENE_PARALLEL_MIN) with its top 3 mm dried at
+ * 130 degC over wet particles at the boiling point: the three same-bits cases below start from it. */
+static hearth_scene *dried_top_block(void) {
+    hearth_scene *s = block(0.001, 0.024, 0.024);
+    CHECK(s != NULL);
+    if (!s) return NULL;
+    particles *ps = &s->ps;
+    const double *X = pcold(ps, PC_X);
+    double *T = pcold(ps, PC_TEMPERATURE), *W = pcold(ps, PC_WATER);
+    for (int i = 0; i < ps->n; i++)
+        if (X[3 * i + 1] > 0.042 - 0.003) W[i] = 0, T[i] = 130;
+    CHECK(ps->n >= SCENE_PARALLEL_MIN);
+    return s;
+}
+
 /* A 24 x 24 mm block at dx 1 mm (2304 particles, past SCENE_PARALLEL_MIN: the
  * step runs on two threads) with its top 3 mm dried at 130 degC, 20 implicit
  * steps of 1 s with latent_heat: the same hash at 1 and 2 threads (the
@@ -128,15 +143,9 @@ TEST(subcell_threads_same_bits) {
     int ndry = 0;
     for (int t = 1; t <= 2; t++) {
         hearth_set_threads(t);
-        hearth_scene *s = block(0.001, 0.024, 0.024);
-        CHECK(s != NULL);
+        hearth_scene *s = dried_top_block();
         if (!s) break;
         particles *ps = &s->ps;
-        const double *X = pcold(ps, PC_X);
-        double *T = pcold(ps, PC_TEMPERATURE), *W = pcold(ps, PC_WATER);
-        for (int i = 0; i < ps->n; i++)
-            if (X[3 * i + 1] > 0.042 - 0.003) W[i] = 0, T[i] = 130;
-        CHECK(ps->n >= SCENE_PARALLEL_MIN);
         hearth_error err;
         CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
         h[t - 1] = hearth_scene_hash(s);
@@ -161,15 +170,9 @@ TEST(boil_front_threads_same_bits) {
     int boiling[2] = {0, 0};
     for (int t = 1; t <= 2; t++) {
         hearth_set_threads(t);
-        hearth_scene *s = block(0.001, 0.024, 0.024);
-        CHECK(s != NULL);
+        hearth_scene *s = dried_top_block();
         if (!s) break;
         particles *ps = &s->ps;
-        const double *X = pcold(ps, PC_X);
-        double *T = pcold(ps, PC_TEMPERATURE), *W = pcold(ps, PC_WATER);
-        for (int i = 0; i < ps->n; i++)
-            if (X[3 * i + 1] > 0.042 - 0.003) W[i] = 0, T[i] = 130;
-        CHECK(ps->n >= SCENE_PARALLEL_MIN);
         hearth_error err;
         CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
         h[t - 1] = hearth_scene_hash(s);
@@ -199,17 +202,14 @@ TEST(boil_front_walk_same_bits) {
     int boiling = 0, wet = 0;
     hearth_set_threads(1);
     for (int all = 0; all <= 1; all++) {
-        hearth_scene *s = block(0.001, 0.024, 0.024);
-        CHECK(s != NULL);
+        hearth_scene *s = dried_top_block();
         if (!s) break;
         s->water.front_walk_all = all;
         particles *ps = &s->ps;
         const double *X = pcold(ps, PC_X);
-        double *T = pcold(ps, PC_TEMPERATURE), *W = pcold(ps, PC_WATER);
-        for (int i = 0; i < ps->n; i++) {
-            if (X[3 * i + 1] > 0.042 - 0.003) W[i] = 0, T[i] = 130;
-            if (X[3 * i + 1] < 0.030) T[i] = 60;
-        }
+        double *T = pcold(ps, PC_TEMPERATURE);
+        for (int i = 0; i < ps->n; i++)
+            if (X[3 * i + 1] < 0.030) T[i] = 60; /* a cool bottom: wet particles that do not boil */
         hearth_error err;
         CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
         h[all] = hearth_scene_hash(s);
