@@ -56,7 +56,7 @@
  * loaf; yc prints T at that depth (mm); hold=FILE holds the bottom cell at a
  * temperature history read from FILE ("t_min T" lines: the loaf's centre from
  * its CSV, a diagnostic of the loaf's 2D heating, not an independent
- * reference); geo=1 makes the column a cylinder of radius H heated all round
+ * reference); geo=1 makes the column a cylinder of radius H heated all round (geo=2 a ball)
  * (the loaf's round top, radius w/2 = 40 mm: lua/hearth/shapes.lua's loaf;
  * the water and boiled totals are then per unit of the outer area). Prints a row per `every` seconds:
  * t (min), face T, s, b; T and s at depths y = 1.25, 0.625, 0.3125 mm (the top
@@ -140,10 +140,13 @@ int main(int argc, char **argv) {
             while (NH < 256 && fscanf(fp, "%lf %lf", &HT[NH], &HV[NH]) == 2) NH++;
             fclose(fp);
         }
-    const int n = (int)lround(H / h), geo = (int)arg(argc, argv, "geo", 0); /* geo=1: a cylinder of radius H */
+    const int n = (int)lround(H / h), geo = (int)arg(argc, argv, "geo", 0); /* 1: a cylinder, 2: a ball of radius H */
     double *A = malloc(sizeof(double) * (n + 1)), *Vc = malloc(sizeof(double) * n); /* face areas, cell volumes per h */
-    for (int i = 0; i <= n; i++) A[i] = geo ? (H - i * h) / H : 1;
-    for (int i = 0; i < n; i++) Vc[i] = geo ? (H - (i + 0.5) * h) / H : 1;
+    for (int i = 0; i <= n; i++) A[i] = pow((H - i * h) / H, geo);
+    for (int i = 0; i < n; i++) { /* the shell's volume over h times the outer area */
+        const double ro = (H - i * h) / H, ri = (H - (i + 1) * h) / H;
+        Vc[i] = geo ? (pow(ro, geo + 1) - pow(ri, geo + 1)) / ((geo + 1) * h / H) : 1;
+    }
     double *T = malloc(sizeof(double) * n), *s = malloc(sizeof(double) * n), *qh = malloc(sizeof(double) * (n + 1)),
            *qw = malloc(sizeof(double) * (n + 1));
     for (int i = 0; i < n; i++) T[i] = T0, s[i] = S0;
