@@ -46,6 +46,7 @@
  * (with subcell.c's exchange), browning on. dx 5, 2.5 and 1.25 mm, the loaf's
  * ladder. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -109,7 +110,8 @@ typedef struct base {
     double Tall, t_all; /* the largest temperature of any particle over the samples (degC), and when (s) */
 } base;
 
-static int run(double dx, base *r) {
+/* The slab on its tray at dx (NULL on failure, CHECKed). */
+static hearth_scene *slab(double dx) {
     hearth_scene_def d = hearth_default_scene_def();
     d.dx = dx;
     d.gravity[1] = 0;
@@ -125,7 +127,8 @@ static int run(double dx, base *r) {
     d.oven_temperature = knob("BASE_OVEN", NAN); /* a measurement switch: an oven at T_b leaves the wet top at T_b */
     d.oven_beta = 30;
     hearth_scene *s = fx_scene_def(&d);
-    if (!s) return 0;
+    CHECK(s != NULL);
+    if (!s) return NULL;
     hearth_error err;
     const char *nm[] = {"E", "density", "conductivity", "specific_heat", "water_diffusivity", "evaporation", "dry_conductivity",
                         "dry_specific_heat"};
@@ -142,6 +145,13 @@ static int run(double dx, base *r) {
     CHECK(hearth_scene_add_collider(s, &cd, &err) == 0);
     hearth_shape_free(plate);
     CHECK(hearth_scene_set_dt_limits(s, 0.5, knob("BASE_DT", 1.0), &err) == HEARTH_OK);
+    return s;
+}
+
+static int run(double dx, base *r) {
+    hearth_scene *s = slab(dx);
+    if (!s) return 0;
+    hearth_error err;
     hearth_stats st;
     hearth_scene_stats(s, &st);
     const double W0 = st.water_mass;
@@ -296,4 +306,38 @@ TEST(base_stays_below_tray) {
     for (int k = 0; k < 3; k++) CHECK(r[k].Tall <= TP + 1e-9);
 }
 
-TEST_MAIN(T(base_front_follows_stefan), T(base_particle_follows_stefan), T(base_stays_below_tray))
+/* The dried face's reading (thermal.c's dried_face) at 1 and 2 threads: the
+ * slab at dx 0.625 mm (3264 particles, past SCENE_PARALLEL_MIN: the step runs
+ * on two threads) with its bottom 1 mm dried at 150 degC over wet particles
+ * at T_b, 20 steps of 1 s: the same hash at 1 and 2 threads (the node sums
+ * walk the particles in their sorted order, the contact points in theirs),
+ * and the reading was taken (a contact point read a dried face). */
+TEST(base_dried_face_threads_same_bits) {
+    uint64_t h[2] = {0, 1};
+    int nread = 0;
+    for (int t = 1; t <= 2; t++) {
+        hearth_set_threads(t);
+        hearth_scene *s = slab(0.000625);
+        if (!s) break;
+        particles *ps = &s->ps;
+        const double *X = pcold(ps, PC_X);
+        double *T = pcold(ps, PC_TEMPERATURE), *W = pcold(ps, PC_WATER);
+        for (int i = 0; i < ps->n; i++)
+            if (X[3 * i + 1] < 0.001) W[i] = 0, T[i] = 150;
+        CHECK(ps->n >= SCENE_PARALLEL_MIN);
+        hearth_error err;
+        CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+        h[t - 1] = hearth_scene_hash(s);
+        nread = 0;
+        for (int k = 0; k < s->heat.nct; k++) nread += !isnan(s->heat.ct[THERMAL_CT * k + 9]);
+        printf("    %d thread(s): %d particles, %d of %d contact points read the dried face, hash %016llx\n", t, ps->n, nread,
+               s->heat.nct, (unsigned long long)h[t - 1]);
+        hearth_scene_destroy(s);
+    }
+    hearth_set_threads(0);
+    CHECK(nread > 0);
+    CHECK(h[0] == h[1]);
+}
+
+TEST_MAIN(T(base_front_follows_stefan), T(base_particle_follows_stefan), T(base_stays_below_tray),
+          T(base_dried_face_threads_same_bits))
