@@ -23,7 +23,10 @@
  * beta (theta_c - theta(x_s)) w_i(x_s) of the weak form is evaluated. The band
  * particles themselves (V_p / dx each, within dx, rejected) put the contact half
  * a cell inside the body and made it first order (`heat_collider_robin_converges`,
- * docs/validation.md).
+ * docs/validation.md). Under latent_heat and forward Euler a point whose nodes
+ * carry dried particles reads the dried face instead of theta(x_s) (dried_face:
+ * the wet rows' hold at T_b otherwise kept the face's field near T_b and the
+ * lone dried row on the tray passed the tray's temperature).
  *
  * Held temperatures (Dirichlet): a collider with infinite beta holds the nodes
  * on or inside its face, a body with fixed_temperature the nodes it fills (at
