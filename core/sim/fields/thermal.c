@@ -91,7 +91,6 @@
 
 #include "physics_constants.h"
 #include "subcell.h"
-#include <stdlib.h>
 
 /* A heated collider's contact: particles within CONTACT_BAND cells of its face
  * each carry V_p delta(sdf) of its area, delta the hat (2 dx - s) / (2 dx^2) on
@@ -615,31 +614,12 @@ static hearth_status dried_face(hearth_scene *s, hearth_error *err) {
         double *node[27], w[27];
         int l[27];
         const int m = contact_stencil(g, ct, node, l, w, NULL);
-        const char *ge = getenv("HEARTH_BASEFACE_GRAD"); /* EXPERIMENT: last step's subcell fits, extrapolated */
-        const int gm = ge ? atoi(ge) : 0;
-        double gsum = 0, gw = 0, gmax = NAN;
         for (int j = 0; j < m; j++) {
             const double W = node[j][CH_R * NPB + l[j]];
             if (!(W > 0)) continue;
             const double v = node[j][CH_B * NPB + l[j]] / W;
             if (isnan(ct[9]) || v > ct[9]) ct[9] = v;
-            if (gm && s->heat.sub_fit) {
-                const ptrdiff_t kb = (node[j] - g->data) / ((ptrdiff_t)g->nch * NPB);
-                const size_t nf = (size_t)(1 + g->dim), at = ((size_t)kb * (size_t)NPB + (size_t)l[j]) * nf;
-                if (at + nf > s->heat.sub_cap) continue;
-                const double *f = s->heat.sub_fit + at;
-                if (isnan(f[0])) continue;
-                int bc[3], gi[3];
-                grid_block_coords(g, g->active[kb], bc);
-                grid_node_index(g, bc, l[j], gi);
-                double e = f[0];
-                for (int d = 0; d < g->dim; d++) e += f[1 + d] * (ct[d] - (g->lo[d] + gi[d] * g->dx));
-                gsum += w[j] * e, gw += w[j];
-                if (isnan(gmax) || e > gmax) gmax = e;
-            }
         }
-        if (gm == 1 && gw > 0) ct[9] = gsum / gw;
-        if (gm == 2 && !isnan(gmax)) ct[9] = gmax;
     }
     clear_channel(s, CH_R);
     clear_channel(s, CH_B);
