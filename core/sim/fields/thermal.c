@@ -559,7 +559,9 @@ static void clear_channel(hearth_scene *s, int ch) {
  * unchanged). Measured (docs/validation.md, "The tray reads the dried face"):
  * the largest particle temperature 183.3, 179.6, 180.0 degC at 5, 2.5, 1.25
  * mm against the tray's 200, and the water boiled converging to the fine 1D
- * reference at order ~1.5 from below.
+ * reference at order ~1.5 from below; the price is a slow front at coarse dx
+ * (15% short at 5 mm, where main boiled 4% too much): a coarse dried row
+ * still sits too hot for its height, and its reading throttles the flux.
  *
  * Convergence. The dried particles nearest the face lie within about dx / 2
  * of it, so their mean differs from the face's temperature by at most
