@@ -74,6 +74,13 @@ static double dryness(const material_slot *ms, const particles *ps, int i) {
     return material_moisture_ratio(ms, ps, i) < 0.01 ? 1.0 : 0.0;
 }
 
+int subcell_dried(const hearth_scene *s, int i) {
+    const particles *ps = &s->ps;
+    if (!(s->def.latent_heat && (ps->enabled & (1u << PC_WATER)))) return 0;
+    if ((ps->enabled & (1u << PC_FLAGS)) && (pcoli(ps, PC_FLAGS)[i] & PF_HOLD_T)) return 0;
+    return dryness(&s->mats.slot[pcoli(ps, PC_MAT)[i]], ps, i) > 0;
+}
+
 /* The sub-cell rate of a dried particle of material ms (1/s). */
 static double subcell_rate(const material_slot *ms, double dx) {
     const double kd = ms->core[CP_DRY_CONDUCTIVITY] > 0 ? ms->core[CP_DRY_CONDUCTIVITY] : ms->core[CP_CONDUCTIVITY];

@@ -14,4 +14,9 @@ struct hearth_scene;
 /// Nothing changes where no particle has dried. Fails only on an MPI slab
 /// exchange's allocation.
 hearth_status subcell_exchange(struct hearth_scene *s, double fdt, hearth_error *err);
+/// Whether particle i takes part in the exchange as dried (moisture ratio
+/// under 0.01, not held at a temperature, the scene's latent_heat on with
+/// water): the one test of "dried" that subcell.c and thermal.c's tray
+/// contact (find_boundary) share.
+int subcell_dried(const struct hearth_scene *s, int i);
 #endif

@@ -23,7 +23,10 @@
  * beta (theta_c - theta(x_s)) w_i(x_s) of the weak form is evaluated. The band
  * particles themselves (V_p / dx each, within dx, rejected) put the contact half
  * a cell inside the body and made it first order (`heat_collider_robin_converges`,
- * docs/validation.md).
+ * docs/validation.md). Under latent_heat and forward Euler a point whose nodes
+ * carry dried particles reads the dried face instead of theta(x_s) (dried_face:
+ * the wet rows' hold at T_b otherwise kept the face's field near T_b and the
+ * lone dried row on the tray passed the tray's temperature).
  *
  * Held temperatures (Dirichlet): a collider with infinite beta holds the nodes
  * on or inside its face, a body with fixed_temperature the nodes it fills (at
@@ -87,6 +90,7 @@
 #include "transport.h"
 
 #include "physics_constants.h"
+#include "subcell.h"
 
 /* A heated collider's contact: particles within CONTACT_BAND cells of its face
  * each carry V_p delta(sdf) of its area, delta the hat (2 dx - s) / (2 dx^2) on
@@ -254,6 +258,7 @@ static hearth_status find_boundary(hearth_scene *s) {
             ct[6] = held ? S : col->beta * S;
             ct[7] = col->temperature;
             ct[8] = held ? s->mats.slot[mat[i]].core[CP_CONDUCTIVITY] : 0.0;
+            ct[9] = NAN; /* the nodes' field; dried_face may set the dried face's reading */
         }
     }
     return HEARTH_OK;
@@ -349,7 +354,8 @@ static void heat_contact_apply(hearth_scene *s, int in, int out, int src) {
         }
         const double T = src ? ct[7] : 0.0;
         if (ct[8] == 0) { /* Robin */
-            const double f = ct[6] * (v - T);
+            if (!isnan(ct[9]) && !src) continue; /* on a dried face: a known source (dried_face), not in the operator */
+            const double f = ct[6] * ((isnan(ct[9]) ? v : ct[9]) - T);
             for (int j = 0; j < m; j++) node[j][out * NPB + l[j]] += f * w[j];
             continue;
         }
@@ -525,6 +531,104 @@ static void clear_channel(hearth_scene *s, int ch) {
     for (int k = 0; k < g->nactive; k++) memset(grid_block(g, k) + ch * NPB, 0, sizeof(double) * (size_t)NPB);
 }
 
+/* A heated collider's Robin contact on a dried face (issue #18, helper baseface).
+ *
+ * Why. The contact reads theta(x_s), the all-particle B-spline field at the
+ * face point (heat_contact_apply). Under latent_heat the face's nodes are
+ * shared by the dried row on the tray and the wet rows above it, held at T_b
+ * by water_boil and weighing three times as much (bread's c 2700 wet, 907.5
+ * dried), so the field reads near T_b however hot the dried row is, the tray
+ * lets in about beta (T_p - T_b), and FLIP (eq. 21) hands the lone dried row
+ * its nodes' share as sensible heat that nothing conducts on: the row passed
+ * the 200 degC tray (237, 207 degC at 5, 2.5 mm in unit_base_contact;
+ * docs/validation.md, "A dried row hotter than its tray").
+ *
+ * What. The flux through the face is set by the material at the face, and
+ * where the face has dried that is the dried layer. Each point whose
+ * stencil's nodes carry dried particles (subcell_dried: moisture ratio under
+ * 0.01) reads the dried particles' temperature at the face instead of the
+ * field: the largest over its nodes i of the dried particles' own mean
+ * there, S_i / W_i, S_i = sum_p w_ip C_p T_p, W_i = sum_p w_ip C_p over dried
+ * p (C_p = m_p alpha_p, P2G's weights), at the step start. On a face the
+ * largest is the node nearest the tray, which only the dried row beside the
+ * face reaches: the material at the face. The flux beta (T_p - reading)
+ * stops when that material reaches the tray's temperature, so the tray cannot
+ * drive it past T_p; where no dried particle reaches a point's nodes the
+ * point reads the field as before (every bake before its base dries, every
+ * scene without latent_heat or without heated colliders: their bits are
+ * unchanged). Measured (docs/validation.md, "The tray reads the dried face"):
+ * the largest particle temperature 183.3, 179.6, 180.0 degC at 5, 2.5, 1.25
+ * mm against the tray's 200, and the water boiled converging to the fine 1D
+ * reference at order ~1.5 from below; the price is a slow front at coarse dx
+ * (15% short at 5 mm, where main boiled 4% too much): a coarse dried row
+ * still sits too hot for its height, and its reading throttles the flux.
+ *
+ * Convergence. The dried particles nearest the face lie within about dx / 2
+ * of it, so their mean differs from the face's temperature by at most
+ * |dT/dn| dx / 2 plus their spread across the node's support (both O(dx));
+ * as dx -> 0 the reading tends to the face's temperature and the Robin term
+ * to beta (T_p - T_s), the continuous condition. First order, not second:
+ * no extrapolation to the face along the dried fit's gradient (a single
+ * dried row has none, subcell.c's node_fit, and between a hot row and a row
+ * just dried the extrapolation overshoots the face by the rows' difference).
+ *
+ * Rejected (measured, unit_base_contact, docs/validation.md): each point
+ * reading its own particle when that particle is dried (the wet rows' points
+ * still read the field, let in the heat and FLIP gave the dried row its share:
+ * 219 degC at 5 mm); the w_i(x_s)-weighted mean of the nodes' dried means
+ * instead of the largest (a row just dried pulls the reading down, the flux
+ * jumps and the row above it takes it: 206.8 degC at 5 mm).
+ *
+ * Stability. The reading is the step start's, so the term is explicit in the
+ * particles' temperatures: a node gains at most dt beta S / C_i of the
+ * difference and a dried particle its share of that, within forward Euler's
+ * own Robin limit rho alpha dx / (2 beta) (thermal_dt_limit). Backward Euler
+ * has no step limit, so there the contact stays on the field (implicit, as
+ * before): a lagged reading at its long steps would need the limit it exists
+ * to avoid. Channels: CH_R and CH_B as scratch, zero again on return (the
+ * transport pass then accumulates into them). */
+static hearth_status dried_face(hearth_scene *s, hearth_error *err) {
+    grid *g = &s->g;
+    particles *ps = &s->ps;
+    if (s->def.heat_implicit || !s->def.latent_heat || !(ps->enabled & (1u << PC_WATER))) return HEARTH_OK;
+    const int NPB = g->nodes_per_block, n = ps->n;
+    const double *X = pcold(ps, PC_X), *M = pcold(ps, PC_MASS), *T = pcold(ps, PC_TEMPERATURE);
+    const int *mat = pcoli(ps, PC_MAT);
+    int any = 0;
+    for (int i = 0; i < n; i++) { /* serial in the particles' order: the same sums at any thread count */
+        if (!subcell_dried(s, i)) continue;
+        const double c = M[i] * material_specific_heat(&s->mats.slot[mat[i]], ps, i); /* as P2G's */
+        if (!(c > 0)) continue;
+        double *node[27], w[27];
+        int l[27];
+        const int m = contact_stencil(g, X + 3 * i, node, l, w, NULL);
+        for (int j = 0; j < m; j++) node[j][CH_R * NPB + l[j]] += w[j] * c, node[j][CH_B * NPB + l[j]] += w[j] * c * T[i];
+        any = 1;
+    }
+    /* every rank takes part in the slab exchange, so only a scene of one rank may stop here */
+    if (!any && s->mpm->nranks == 1) return HEARTH_OK;
+    const int sums[2] = {CH_R, CH_B};
+    hearth_status st = mpm_ranks_fields_sum(s, sums, 2, err);
+    if (st) return st;
+    for (int q = 0; q < s->heat.nct; q++) {
+        double *ct = s->heat.ct + THERMAL_CT * q;
+        if (ct[8] != 0) continue; /* a held face's Nitsche terms */
+        double *node[27], w[27];
+        int l[27];
+        const int m = contact_stencil(g, ct, node, l, w, NULL);
+        for (int j = 0; j < m; j++) {
+            const double W = node[j][CH_R * NPB + l[j]];
+            if (!(W > 0)) continue;
+            const double v = node[j][CH_B * NPB + l[j]] / W;
+            if (isnan(ct[9]) || v > ct[9]) ct[9] = v;
+        }
+    }
+    clear_channel(s, CH_R);
+    clear_channel(s, CH_B);
+    return HEARTH_OK;
+}
+
+
 hearth_status thermal_prepare(hearth_scene *s, hearth_error *err) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block, n = s->ps.n;
@@ -578,7 +682,9 @@ hearth_status thermal_prepare(hearth_scene *s, hearth_error *err) {
     if (find_boundary(s) || mark_held(s))
         return err_set(err, HEARTH_ERR_NOMEM, "out of memory for held temperatures (%d grid blocks)", g->nactive);
     /* MPI slabs: each contact point to the rank that holds its whole stencil */
-    return mpm_ranks_fields_contacts(s, err);
+    hearth_status st = mpm_ranks_fields_contacts(s, err);
+    if (st || !heated) return st;
+    return dried_face(s, err);
 }
 
 /* ---- small nodes at the air surface (explicit heat with an oven) ----------

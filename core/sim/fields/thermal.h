@@ -11,7 +11,7 @@ struct hearth_scene;
  * allocated until the temperature field is live. transport.c reads bnd_coef
  * and bnd_temp (it applies the operator whose sources they are); only
  * thermal.c writes. */
-#define THERMAL_CT 9
+#define THERMAL_CT 10
 typedef struct thermal_state {
     double *bnd_coef, *bnd_temp; /* per particle: boundary S beta (W/K) and outside temperature (degrees C) */
     double *bnd_surf;            /* per particle on the oven's air surface: 1 / (1 + beta d / kappa), the share of
@@ -24,7 +24,10 @@ typedef struct thermal_state {
     /* heated colliders' contact, as surface quadrature points (find_boundary) */
     double *ct;                  /* per point THERMAL_CT doubles: position on the collider's face (3), the body's
                                   * outward normal there (3), beta S or S (W/K, m^dim-1), temperature, kappa
-                                  * (0: Robin contact; > 0: a held face's Nitsche terms) */
+                                  * (0: Robin contact; > 0: a held face's Nitsche terms), and the temperature a
+                                  * Robin contact reads where its nodes carry dried particles (dried_face: the
+                                  * largest of those nodes' dried means, from the step start; NaN: the nodes'
+                                  * field at the point) */
     int nct, ct_cap;
     /* held (Dirichlet) nodes: per active node (block slot * nodes per block) the
      * temperature it keeps, NaN where free; scratch for the held bodies' sums */
