@@ -147,6 +147,19 @@ mpi_heat_matches_one_rank)
         on_slabs 100
     done
     ;;
+mpi_dough_boils_matches_one_rank)
+    # the dough on a hot tray (250 degC through beta 1e5): its bottom rows reach 100 degC at step ~120 and boil
+    # through the boiling front (core/sim/fields/boil_front.c) from then on; 200 steps, none dried yet. The
+    # front's gradient at a slab's first node row once read the cleared lower halo layer: 1.0e-3 in saturation.
+    # The same 1e-12 as every case here; the run must have boiled (at least 10 particles held at 100 degC in the
+    # one-process state), or it checks nothing of the front.
+    against_one dough.lua 200 --set tray=250 --set tray_beta=1e5 --set steps=200
+    on_slabs 200
+    same_sums
+    boiling=$(awk -F, '$8 == 100 {n++} END {print n + 0}' "$tmp/one/state.csv")
+    echo "particles held at 100 degC (boiling) in the one-process state: $boiling"
+    [ "$boiling" -ge 10 ] || fail "only $boiling particles at 100 degC: the scene no longer boils, so the case checks nothing"
+    ;;
 mpi_heated_plate_across_slabs_matches_one_rank)
     # a hot plate across the slab axis, a jelly block seeded three cells into
     # it just above the ranks' cut: contact points whose stencils reach two
