@@ -160,22 +160,6 @@ mpi_dough_boils_matches_one_rank)
     echo "particles held at 100 degC (boiling) in the one-process state: $boiling"
     [ "$boiling" -ge 10 ] || fail "only $boiling particles at 100 degC: the scene no longer boils, so the case checks nothing"
     ;;
-mpi_dough_dries_matches_one_rank)
-    # hotter still (450 degC through beta 1e5), 700 steps: the bottom row boils dry (33 particles under
-    # saturation 1e-3) while the rows above boil. A dried particle sits at the floor, and its spare water over it
-    # was 0 or 1 ulp by the rounding of its volume, which differs by ulps between one process and the slabs; the
-    # ulp made it a boiling particle whose whole excess counted in the front's shares (1.7e-3 and 1.2e-3 in
-    # saturation at 2 and 4 ranks). G2P now takes no spare within WATER_SPARE_MIN of the floor (core/sim/fields/water.h).
-    # The same 1e-12; the run must have dried at least 10 particles (saturation under 1e-3), and boiled.
-    against_one dough.lua 700 --set tray=450 --set tray_beta=1e5 --set steps=700
-    on_slabs 700
-    same_sums
-    dried=$(awk -F, '$9 < 1e-3 {n++} END {print n + 0}' "$tmp/one/state.csv")
-    boiling=$(awk -F, '$8 == 100 {n++} END {print n + 0}' "$tmp/one/state.csv")
-    echo "in the one-process state: $dried particles dried (saturation under 1e-3), $boiling held at 100 degC"
-    [ "$dried" -ge 10 ] || fail "only $dried particles dried: the case no longer checks the dried row"
-    [ "$boiling" -ge 10 ] || fail "only $boiling particles at 100 degC: the case no longer checks the boiling"
-    ;;
 mpi_heated_plate_across_slabs_matches_one_rank)
     # a hot plate across the slab axis, a jelly block seeded three cells into
     # it just above the ranks' cut: contact points whose stencils reach two

@@ -307,8 +307,8 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
         const double spare = W[i] - WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * vol[i];
         cap[i] = spare > 0 ? spare * HEARTH_LATENT_HEAT : 0.0;
         /* what water_boil would boil goes to the pool; the rest the particle keeps, as water_boil leaves it (a
-         * dried particle that diffusion wets a little would otherwise be held at T_b every step, handing its heat
-         * to the front; one whose spare is only the floor's rounding G2P leaves out: WATER_SPARE_MIN) */
+         * dried particle that water_take's floor leaves a rounding's spare, or that diffusion wets a little,
+         * would otherwise be held at T_b every step, handing its heat to the front) */
         r[i] = E[2 * i] < cap[i] ? E[2 * i] : cap[i];
         kept[i] = E[2 * i] - r[i];
     }

@@ -49,16 +49,6 @@ void water_restore_limits(water_state *w, double dmax, double emax, double lmax)
  * completely dry"): particles keep at least this much. */
 #define WATER_SATURATION_FLOOR 1e-4
 
-/* latent_heat's boiling front on MPM (boil_front.c): a particle passed T_b has water to boil when its water
- * exceeds the floor by more than this share of the floor. A dried particle sits at the floor, which its
- * water and the test reach by different roundings (water_take floors to 1e-4 x (rho_w V), the test takes
- * (1e-4 rho_w) x V; a stuck particle's V moves by ulps): its spare is 0 or +-1 ulp, and +1 ulp made it a
- * boiling particle whose whole excess counts in the front's shares. One process and MPI slabs (V a few ulps
- * apart at the seams) took different branches and different answers (docs/validation.md, "The boiling
- * front on MPI slabs"). The spares diffusion gave that dough's dried particles were 5e-4 to 9e-4 of the
- * floor; 1e-9 of it boils 4e-16 kg and is far above a few ulps (1e-15). */
-#define WATER_SPARE_MIN 1e-9
-
 /* Evaporation through the air surface (transport.c) from the grid's
  * saturation s_d at a surface particle, sampled at depth d below the surface
  * (boundary.c's depth), toward the ambient s_amb: returns s_surface - s_amb,

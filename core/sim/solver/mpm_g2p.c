@@ -155,10 +155,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                 if (WATER && T1 > boil) {
                     const double mc = pcold(ps, PC_MASS)[i] * material_specific_heat_of(&s->mats.slot[mat[i]], ps, i, w_step);
                     const double vol = mpm_state_of(s)->vol[i];
-                    const double floor_w = WATER_SATURATION_FLOOR * s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * vol;
-                    const double spare = pcold(ps, PC_WATER)[i] - floor_w;
-                    /* water_boil's test, past a rounding's spare (WATER_SPARE_MIN); the heat to water_boil_front */
-                    if (front && spare > WATER_SPARE_MIN * floor_w && mc > 0) {
+                    const double spare = pcold(ps, PC_WATER)[i] - WATER_SATURATION_FLOOR * s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * vol;
+                    if (front && spare > 0 && mc > 0) { /* water_boil's test; the heat to water_boil_front */
                         front[2 * i] = mc * (T1 - boil), front[2 * i + 1] = mc;
                         Tcol[i] = boil;
                     } else if (!front) {
