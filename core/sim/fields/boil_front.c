@@ -324,8 +324,9 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
      * a node of the upper halo reads its neighbours there; mpm.c cleared both layers before the grid update
      * (mpm_ranks_fields_clear) and halo_back refilled only the upper blocks this rank's particles touch, so
      * the gradient went one-sided (or 0) at the seam where one process's is central, and the seam's boiling
-     * particles took another share (tests/mpi/dough.lua with its tray at 250 degC, beta 1e5: 5.9e-5 in saturation after 150 steps, 1.0e-3 after 200).
-     * The owners' mass and temperatures back first: a node pass then gives the owner's bits (mpm_ranks_fields.c). */
+     * particles took other shares (tests/mpi/dough.lua, its tray at 250 degC through beta 1e5: 5.9e-5 in
+     * saturation after 150 steps, 1.0e-3 after 200; mpi_dough_boils_matches_one_rank). The owners' mass and
+     * temperatures back first: a node pass then gives the owner's bits (mpm_ranks_fields.c). */
     const int chT[2] = {CH_M, CH_T};
     hearth_status st = s->mpm->nranks > 1 ? mpm_ranks_fields_fill(s, chT, 2, err) : HEARTH_OK;
     if (st) return st;
