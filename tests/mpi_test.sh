@@ -152,13 +152,16 @@ mpi_dough_boils_matches_one_rank)
     # through the boiling front (core/sim/fields/boil_front.c) from then on; 200 steps, none dried yet. The
     # front's gradient at a slab's first node row once read the cleared lower halo layer: 1.0e-3 in saturation.
     # The same 1e-12 as every case here; the run must have boiled (at least 10 particles held at 100 degC in the
-    # one-process state), or it checks nothing of the front.
-    against_one dough.lua 200 --set tray=250 --set tray_beta=1e5 --set steps=200
-    on_slabs 200
-    same_sums
-    boiling=$(awk -F, '$8 == 100 {n++} END {print n + 0}' "$tmp/one/state.csv")
-    echo "particles held at 100 degC (boiling) in the one-process state: $boiling"
-    [ "$boiling" -ge 10 ] || fail "only $boiling particles at 100 degC: the scene no longer boils, so the case checks nothing"
+    # one-process state), or it checks nothing of the front. Then the 3D dough the same way (2310 particles, its
+    # slabs' halo layers planes of blocks; 5.5e-4 at 2 ranks and 1.4e-3 at 4 before the fix).
+    for dim in 2 3; do
+        against_one dough.lua 200 --set dim=$dim --set tray=250 --set tray_beta=1e5 --set steps=200
+        on_slabs 200
+        same_sums
+        boiling=$(awk -F, '$8 == 100 {n++} END {print n + 0}' "$tmp/one/state.csv")
+        echo "${dim}D: particles held at 100 degC (boiling) in the one-process state: $boiling"
+        [ "$boiling" -ge 10 ] || fail "${dim}D: only $boiling particles at 100 degC: the scene no longer boils, so the case checks nothing"
+    done
     ;;
 mpi_dough_dries_matches_one_rank)
     # hotter still (450 degC through beta 1e5), 700 steps: the bottom row boils dry (28 particles under saturation
