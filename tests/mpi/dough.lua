@@ -3,8 +3,10 @@
 -- on a tray, 100 steps; every particle's id, x, v, temperature, saturation
 -- and J to state.csv (17 digits) for tests/mpi_test.sh. dim = 3: the same
 -- dough 0.02 m deep on a tray 0.04 m deep (mpi_dough_3d_matches_one_rank).
+-- tray, tray_beta: the tray's temperature (degC) and Robin coefficient (W/(m2 K); 0: the collider's
+-- default); a hot tray boils and dries the bottom row (mpi_dough_boils_matches_one_rank).
 local h = require "hearth"
-local P = h.params { steps = 100, heat = "explicit", dim = 2 }
+local P = h.params { steps = 100, heat = "explicit", dim = 2, tray = 180, tray_beta = 0 }
 local three = P.dim == 3
 local s = h.scene { dim = P.dim, dx = three and 0.006 or 0.004,
   box = three and { { 0, 0, 0 }, { 0.12, 0.08, 0.04 } } or { { 0, 0 }, { 0.12, 0.08 } },
@@ -16,7 +18,8 @@ d.dry_conductivity, d.dry_specific_heat = 0, 0 -- its own real-unit conductivity
 d.water_diffusivity, d.evaporation = 5e-8 / 373.15, 3e-5
 s:add { shape = three and h.box({ 0.02, 0.012, 0.01 }, { 0.10, 0.05, 0.03 }) or h.box({ 0.02, 0.012 }, { 0.10, 0.05 }), material = h.material("cam_clay_dough", d), temperature = 25,
   saturation = 0.4 }
-s:collider { shape = h.plane({ 0, 0.01, 0 }, { 0, 1, 0 }), mode = "sticky", temperature = 180 }
+s:collider { shape = h.plane({ 0, 0.01, 0 }, { 0, 1, 0 }), mode = "sticky", temperature = P.tray,
+  beta = P.tray_beta > 0 and P.tray_beta or nil }
 s:step(P.steps)
 local r = s:particles { fields = { "id", "x", "v", "temperature", "saturation", "J" } }
 local lines = {}

@@ -320,11 +320,20 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
     double *gc = E + FRONT_NS * (size_t)n;
     memset(gc, 0, sizeof(double) * (size_t)front_ng(g) * (size_t)n);
     unsigned char *fb = (unsigned char *)(gc + (size_t)front_ng(g) * (size_t)n);
+    /* MPI slabs: the gradient at a slab's first node row reads the row below, in the lower halo layer, and
+     * a node of the upper halo reads its neighbours there; mpm.c cleared both layers before the grid update
+     * (mpm_ranks_fields_clear) and halo_back refilled only the upper blocks this rank's particles touch, so
+     * the gradient went one-sided (or 0) at the seam where one process's is central, and the seam's boiling
+     * particles took other shares (tests/mpi/dough.lua, its tray at 250 degC through beta 1e5: 5.9e-5 in
+     * saturation after 150 steps, 1.0e-3 after 200; mpi_dough_boils_matches_one_rank). The owners' mass and
+     * temperatures back first: a node pass then gives the owner's bits (mpm_ranks_fields.c). */
+    const int chT[2] = {CH_M, CH_T};
+    hearth_status st = s->mpm->nranks > 1 ? mpm_ranks_fields_fill(s, chT, 2, err) : HEARTH_OK;
+    if (st) return st;
     for (int k = 0; k < g->nactive; k++) {
         if (all) front_gradient(g, k);
         fb[k] = all ? FB_GRAD | FB_SENT : 0;
     }
-    hearth_status st = HEARTH_OK;
     for (int pass = 0; pass < WATER_FRONT_PASSES; pass++) {
         const double left = front_pass(s, chs, all, fb, gc, r, cap, Q, kept, near, err, &st);
         if (st) return st;
