@@ -51,6 +51,7 @@
 #include <string.h>
 
 #include "browning.h"
+#include "column_fixture.h"
 #include "mpm_fixture.h"
 #include "stefan_form.h"
 
@@ -93,11 +94,7 @@ static double b_form(double y, double t) {
  * dried heat capacity, J/(kg K), the form's too), BASE_TRACE (the
  * bottom particle's history every 100 s), BASE_ROWS (the middle column's
  * lowest eight particles' temperatures, "d" where dried, and the field at the
- * face, every BASE_ROWS samples of 10 s). */
-static double knob(const char *name, double dflt) {
-    const char *v = getenv(name);
-    return v ? atof(v) : dflt;
-}
+ * face, every BASE_ROWS samples of 10 s). Read by knob (column_fixture.h). */
 
 typedef struct base {
     double d;        /* water boiled / (1000 s) per unit area at TEND (m) */

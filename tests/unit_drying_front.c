@@ -49,6 +49,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "column_fixture.h"
 #include "mpm_fixture.h"
 #include "stefan_form.h"
 #include "browning.h"
@@ -69,11 +70,8 @@ static double d_of_t(double t, int sensible) { const stefan_form f = form(); ret
  * diffusivity K (bread's 1.2e-5 and 2.46e-11), FRONT_DX one spacing for the
  * three runs (a whole number of cells across WIDTH), FRONT_DT the step,
  * FRONT_FLIP the heat_flip, FRONT_DEBUG the end's crust profile. With any set,
- * the checks no longer speak of (4): read the table. */
-static double knob(const char *name, double dflt) {
-    const char *v = getenv(name);
-    return v ? atof(v) : dflt;
-}
+ * the checks no longer speak of (4): read the table. (Read by knob,
+ * column_fixture.h.) */
 
 typedef struct front {
     double d[NT];    /* water boiled / (1000 s) per unit area (m) */
@@ -117,15 +115,6 @@ static double crossing(const double *depth, const double *ratio, int n, double l
         if (ratio[k] >= level)
             return depth[k - 1] + (depth[k] - depth[k - 1]) * (level - ratio[k - 1]) / (ratio[k] - ratio[k - 1]);
     return depth[n - 1];
-}
-
-/* The middle column's top particle (the shallowest within dx/2 of the middle), or -1. */
-static int top_particle(const hearth_scene *s, double dx) {
-    const double *X = pcold(&s->ps, PC_X);
-    int best = -1;
-    for (int i = 0; i < s->ps.n; i++)
-        if (fabs(X[3 * i] - 0.5 * WIDTH) < 0.5 * dx && (best < 0 || X[3 * i + 1] > X[3 * best + 1])) best = i;
-    return best;
 }
 
 static int BROWN; /* the run bakes with browning on (drying_front_surface_browns) */
@@ -209,7 +198,7 @@ static int run(double dx, double dt_max, double flip, front *f) {
             }
         }
         if (BROWN) {
-            const int it = top_particle(s, dx);
+            const int it = column_top_particle(s, 0.5 * WIDTH, dx);
             const double *o = pcold(&s->ps, PC_SURFACE), *X = pcold(&s->ps, PC_X);
             f->b_top[k] = pcold(&s->ps, PC_BROWNING)[it];
             f->Ts_top[k] = pcold(&s->ps, PC_TEMPERATURE)[it] + o[2 * it];

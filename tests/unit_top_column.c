@@ -62,6 +62,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "column_fixture.h"
 #include "mpm_fixture.h"
 #include "water.h"
 
@@ -76,20 +77,6 @@ static const double REF_HIST[5][2] = {{95.62, 0.00237}, {106.10, 0.01599}, {114.
 typedef struct column {
     double b[NT], Ts[NT], ss[NT], Tp[NT], sp[NT], depth;
 } column;
-
-/* The middle column's top particle (the shallowest within dx/2 of the middle), or -1. */
-static int top_particle(const hearth_scene *s, double dx) {
-    const double *X = pcold(&s->ps, PC_X);
-    int best = -1;
-    for (int i = 0; i < s->ps.n; i++)
-        if (fabs(X[3 * i] - 0.5 * WIDTH) < 0.5 * dx && (best < 0 || X[3 * i + 1] > X[3 * best + 1])) best = i;
-    return best;
-}
-
-static double knob(const char *name, double dflt) {
-    const char *v = getenv(name);
-    return v ? atof(v) : dflt;
-}
 
 static int run(double dx, column *c) {
     /* TOP_S: the preset's way, every rate S times fast and the time 1/S (a check that real time is the same history) */
@@ -130,7 +117,7 @@ static int run(double dx, column *c) {
             hearth_scene_destroy(s);
             return 0;
         }
-        const int it = top_particle(s, dx);
+        const int it = column_top_particle(s, 0.5 * WIDTH, dx);
         const double *o = pcold(&s->ps, PC_SURFACE), *T = pcold(&s->ps, PC_TEMPERATURE);
         c->b[k] = pcold(&s->ps, PC_BROWNING)[it];
         c->Tp[k] = T[it], c->sp[k] = water_saturation(s, it);
