@@ -67,7 +67,10 @@
  * answer to rounding (mpi_dough_dries_matches_one_rank; docs/validation.md, "The front's shares scale with
  * room"). The books stay exact: rho_p splits each H_i otherwise, not its sum (sum_p w_ip g_p rho_p H_i / G_i
  * = H_i over the node's receivers), so still sum_p (Q_p + kept_p) = sum_p E_p; Q_p <= c_p boils dm = Q_p / L
- * and kept_p is sensible heat: heat in = sensible + L x water boiled (latent_heat_boiling_energy_balance). */
+ * and kept_p is sensible heat: heat in = sensible + L x water boiled (latent_heat_boiling_energy_balance).
+ * G2P's gas reads the same T_b + (E_p - s_p) / (m c) for a sender (mpm_g2p.c), not the T_b it leaves it at
+ * until this pass: at T_b a dried particle with one ulp of spare made its CO2 at 100 degC and one with none at
+ * its own temperature, and the slabs' velocities moved by 1e-8 through the gas's pressure. */
 #define WATER_FRONT_K 3.0
 #define WATER_FRONT_PASSES 8
 #define FRONT_NS 7 /* scratch doubles a particle, before the pair weights (front_ng) */
