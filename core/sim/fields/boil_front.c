@@ -48,7 +48,29 @@
  * dried and a wet particle, which dried the crumb slab 14.2% early. On its
  * own this pass overheated a wet block's last dried particles (a FLIP
  * sub-cell offset, +40 K, that G2P never damps); subcell.c's exchange
- * relaxes it, and the two run together. */
+ * relaxes it, and the two run together.
+ *
+ * Continuous in the room (#18, helper frontroom). A particle's room is c_p = L (W_p - W_floor), the heat its
+ * water can boil down to the floor (water_boil's cap: dm = min(E / L, spare)), 0 without spare. Three places
+ * let a particle's part jump at c_p = 0, and each now goes to the no-room particle's as c_p -> 0:
+ *   sender:   it sends s_p = min(E_p, c_p) and keeps E_p - s_p, so T_p = T_b + (E_p - s_p) / (m c)
+ *             (this one already held: a particle without room sends nothing and keeps T_p);
+ *   receiver: it weighs in G_i with g_p rho_p, rho_p = min(1, c_p / E_p) (c_p the room left at that pass),
+ *             G_i = sum_p w_ip g_p rho_p and q_p = g_p rho_p sum_i w_ip H_i / G_i. Before, one ulp of room
+ *             weighed as much as a full particle: it drew a full share of its nodes' H_i, took a ulp of it, and
+ *             sent the rest again from its own place in the next pass;
+ *   the rest: what the passes could not hand out goes back by w_ip s_p / sum_q w_iq s_q (front_return), not
+ *             by w_ip E_p, which gave a dried particle's whole excess a say in its wet neighbours' heat.
+ * A wet particle, whose room holds its own excess (c_p >= E_p), keeps rho_p = 1 and s_p = E_p exactly: its
+ * numbers are the ones it had, so only nodes near a particle that could not boil its own excess move. On
+ * MPI slabs a dried particle's spare of 0 or one ulp, by the rounding of its volume, now gives the same
+ * answer to rounding (mpi_dough_dries_matches_one_rank; docs/validation.md, "The front's shares scale with
+ * room"). The books stay exact: rho_p splits each H_i otherwise, not its sum (sum_p w_ip g_p rho_p H_i / G_i
+ * = H_i over the node's receivers), so still sum_p (Q_p + kept_p) = sum_p E_p; Q_p <= c_p boils dm = Q_p / L
+ * and kept_p is sensible heat: heat in = sensible + L x water boiled (latent_heat_boiling_energy_balance).
+ * G2P's gas reads the same T_b + (E_p - s_p) / (m c) for a sender (mpm_g2p.c), not the T_b it leaves it at
+ * until this pass: at T_b a dried particle with one ulp of spare made its CO2 at 100 degC and one with none at
+ * its own temperature, and the slabs' velocities moved by 1e-8 through the gas's pressure. */
 #define WATER_FRONT_K 3.0
 #define WATER_FRONT_PASSES 8
 #define FRONT_NS 7 /* scratch doubles a particle, before the pair weights (front_ng) */
@@ -161,6 +183,19 @@ static double front_pair_of(const grid *g, double *gp, const grid_point_nodes *p
     return gp[j];
 }
 
+/* The heat particle i's water can boil, L x its spare over the floor (water_boil's cap; 0 without spare): what
+ * it may send (the rest of its E_p it keeps) and what it may take. W is the step's before the front boils. */
+static double front_cap0(const hearth_scene *s, int i, const double *W, const double *vol) {
+    const material_slot *ms = &s->mats.slot[pcoli(&s->ps, PC_MAT)[i]];
+    const double spare = W[i] - WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * vol[i];
+    return spare > 0 ? spare * HEARTH_LATENT_HEAT : 0.0;
+}
+
+/* A receiver's weight in G_i, its room against the excess it brought: rho_p = min(1, cap_p / E_p). 1 for a
+ * particle whose water can boil its own excess (every wet one), so its share is the one it took before; it
+ * falls to 0 with the room, so one ulp of room draws one ulp's share, not a full particle's (header). */
+static double front_room(double cap, double E) { return cap >= E ? 1.0 : cap > 0 ? cap / E : 0.0; }
+
 /* One pass of the hand-out: each particle's r_p (J) to the nodes, H_i = sum_p w_ip r_p, and back to the
  * receivers with room left (cap_p > 0), q_p = g_p sum_i w_ip H_i / G_i, G_i = sum_p w_ip g_p over them. A
  * receiver takes up to its room; what it cannot take is its r_p for the next pass. A node without receivers
@@ -176,8 +211,8 @@ static double front_pair_of(const grid *g, double *gp, const grid_point_nodes *p
  * receiver's q gains +0 there whatever G_i is; its `back` only counts times r_p, +0 for a non-sender, and
  * a sender's nodes all hold G_i, summed over the same receivers in the same order; a passed-by receiver's
  * r, cap, Q, kept and the pass's sum `left` change by +0 (q = take = 0). */
-static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned char *fb, double *gc, double *r,
-                         double *cap, double *Q, double *kept, double *near, hearth_error *err, hearth_status *st) {
+static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned char *fb, double *gc, const double *E,
+                         double *r, double *cap, double *Q, double *kept, double *near, hearth_error *err, hearth_status *st) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block, n = s->ps.n, NG = front_ng(g);
     const double *X = pcold(&s->ps, PC_X);
@@ -207,12 +242,13 @@ static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned ch
         if (!(cap[i] > 0)) continue;
         near[i] = all || front_near(g, fb, X + 3 * i);
         if (!(near[i] > 0)) continue;
+        const double rho = front_room(cap[i], E[2 * i]);
         grid_point_nodes pn;
         grid_point_nodes_of(g, X + 3 * i, &pn);
         for (int j = 0; j < pn.n; j++) {
             double *node = pn.node[j];
             const int l = pn.l[j];
-            if (!(node[chs[1] * NPB + l] < 0)) node[chs[1] * NPB + l] += pn.w[j] * front_pair_of(g, gc + (size_t)NG * i, &pn, j, X + 3 * i);
+            if (!(node[chs[1] * NPB + l] < 0)) node[chs[1] * NPB + l] += pn.w[j] * (rho * front_pair_of(g, gc + (size_t)NG * i, &pn, j, X + 3 * i));
         }
     }
     if ((*st = mpm_ranks_fields_sum(s, chs, 2, err))) return 0;
@@ -222,6 +258,7 @@ static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned ch
         grid_point_nodes pn;
         grid_point_nodes_of(g, X + 3 * i, &pn);
         double q = 0, back = 0, none = 1; /* none: the weight on nodes without storage */
+        const double rho = cap[i] > 0 ? front_room(cap[i], E[2 * i]) : 0.0;
         for (int j = 0; j < pn.n; j++) {
             const double *node = pn.node[j];
             const int l = pn.l[j];
@@ -229,7 +266,7 @@ static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned ch
             none -= wt;
             const double G = node[chs[1] * NPB + l];
             if (G > 0) {
-                if (cap[i] > 0) q += wt * front_pair_of(g, gc + (size_t)NG * i, &pn, j, X + 3 * i) * node[chs[0] * NPB + l] / G;
+                if (cap[i] > 0) q += wt * (rho * front_pair_of(g, gc + (size_t)NG * i, &pn, j, X + 3 * i)) * node[chs[0] * NPB + l] / G;
             } else {
                 back += wt;
             }
@@ -246,13 +283,19 @@ static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned ch
     return left;
 }
 
-/* The rest r_p back to the particles that boiled (E_p > 0), by w_ip E_p / sum_q w_iq E_q on each node,
+/* What particle i sent to the front, s_p = min(E_p, cap_p): the weight of its share of the rest below. */
+static double front_sent(const hearth_scene *s, int i, const double *E, const double *W, const double *vol) {
+    const double c = front_cap0(s, i, W, vol);
+    return E[2 * i] < c ? E[2 * i] : c;
+}
+
+/* The rest r_p back to the particles that boiled (E_p > 0), by w_ip s_p / sum_q w_iq s_q on each node,
  * into kept; a sender's weight on a node without storage stays with it. r ends at 0. */
 static hearth_status front_return(hearth_scene *s, const int chs[2], double *r, double *kept, const double *E,
                                   hearth_error *err) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block, n = s->ps.n;
-    const double *X = pcold(&s->ps, PC_X);
+    const double *X = pcold(&s->ps, PC_X), *W = pcold(&s->ps, PC_WATER), *vol = mpm_state_of(s)->vol;
     for (int k = 0; k < g->nactive; k++) {
         double *d = grid_block(g, k);
         for (int c = 0; c < 2; c++) memset(d + chs[c] * NPB, 0, sizeof(double) * (size_t)NPB);
@@ -266,7 +309,7 @@ static hearth_status front_return(hearth_scene *s, const int chs[2], double *r, 
             const int l = pn.l[j];
             const double wt = pn.w[j];
             if (r[i] > 0) node[chs[0] * NPB + l] += wt * r[i];
-            node[chs[1] * NPB + l] += wt * E[2 * i];
+            node[chs[1] * NPB + l] += wt * front_sent(s, i, E, W, vol);
         }
     }
     hearth_status st = mpm_ranks_fields_sum(s, chs, 2, err);
@@ -281,9 +324,10 @@ static hearth_status front_return(hearth_scene *s, const int chs[2], double *r, 
             const int l = pn.l[j];
             const double wt = pn.w[j];
             none -= wt;
-            q += wt * node[chs[0] * NPB + l] / node[chs[1] * NPB + l];
+            const double S = node[chs[1] * NPB + l];
+            if (S > 0) q += wt * node[chs[0] * NPB + l] / S; /* S = 0: no sender weighs on it, so no rest is there */
         }
-        kept[i] += E[2 * i] * q + none * (r[i] > 0 ? r[i] : 0.0);
+        kept[i] += front_sent(s, i, E, W, vol) * q + none * (r[i] > 0 ? r[i] : 0.0);
     }
     for (int i = 0; i < n; i++) r[i] = 0;
     return HEARTH_OK;
@@ -303,9 +347,7 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
         r[i] = cap[i] = Q[i] = kept[i] = 0;
         if (!(E[2 * i] > 0)) continue;
         boils = 1;
-        const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
-        const double spare = W[i] - WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * vol[i];
-        cap[i] = spare > 0 ? spare * HEARTH_LATENT_HEAT : 0.0;
+        cap[i] = front_cap0(s, i, W, vol);
         /* what water_boil would boil goes to the pool; the rest the particle keeps, as water_boil leaves it (a
          * dried particle that water_take's floor leaves a rounding's spare, or that diffusion wets a little,
          * would otherwise be held at T_b every step, handing its heat to the front) */
@@ -335,7 +377,7 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
         fb[k] = all ? FB_GRAD | FB_SENT : 0;
     }
     for (int pass = 0; pass < WATER_FRONT_PASSES; pass++) {
-        const double left = front_pass(s, chs, all, fb, gc, r, cap, Q, kept, near, err, &st);
+        const double left = front_pass(s, chs, all, fb, gc, E, r, cap, Q, kept, near, err, &st);
         if (st) return st;
         if (!(left > 0) && s->mpm->nranks == 1) break; /* every rank takes part in each pass's exchange */
     }

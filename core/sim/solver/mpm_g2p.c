@@ -149,6 +149,12 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             if (PIC && hold_h && hold_h[i] > 0) T1 += hold_h[i] * (Tn - T1); /* toward held nodes (thermal.c's held_settle) */
             /* a held body's particle keeps its temperature (thermal.c holds its nodes) */
             if (front) front[2 * i] = 0.0;
+            /* the temperature the gas below reads: the particle's own, or a front sender's T_b plus the excess its
+             * water cannot boil, which it keeps (boil_front.c: it sends min(E, L spare)); so a dried particle whose
+             * spare is one ulp makes the gas one with none makes, not the gas of T_b (the front hands out the rest
+             * after G2P) */
+            double Tgas = 0;
+            int Tgas_set = 0;
             if (!(flags && (flags[i] & PF_HOLD_T))) {
                 Tcol[i] = T1;
                 /* interior boiling (latent_heat): wet matter stays at the boiling point (water.c) */
@@ -159,6 +165,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                     if (front && spare > 0 && mc > 0) { /* water_boil's test; the heat to water_boil_front */
                         front[2 * i] = mc * (T1 - boil), front[2 * i + 1] = mc;
                         Tcol[i] = boil;
+                        const double E = front[2 * i], c = spare * HEARTH_LATENT_HEAT;
+                        Tgas = boil + (E - (E < c ? E : c)) / mc, Tgas_set = 1; /* boil + 0 / mc = boil when wet */
                     } else if (!front) {
                         w_removed += water_boil(s, i, &Tcol[i], boil, vol, mc);
                     }
@@ -168,7 +176,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             if (Gcol) { /* CO2 over the cycle, temperature moving linearly from T0 to T1 (§5.4), less what its
                          * earlier steps made (gas.c's gas_between: the gas moves every step) */
                 const material_slot *gm = &s->mats.slot[mat[i]];
-                Gcol[i] += gas_moles_field_step(T0, Tcol[i], fdt, s->field_acc, gm->core[CP_GAS_RATE],
+                Gcol[i] += gas_moles_field_step(T0, Tgas_set ? Tgas : Tcol[i], fdt, s->field_acc, gm->core[CP_GAS_RATE],
                                                 gm->params[gm->density_index], gm->core[CP_REACTION_T],
                                                 gm->core[CP_REACTION_WIDTH]);
                 if (vent) Gcol[i] *= gas_vent_factor(s, i, dt); /* open surface pores lose their CO2 (gas.c) */
