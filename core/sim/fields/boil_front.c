@@ -187,8 +187,7 @@ static double front_pair_of(const grid *g, double *gp, const grid_point_nodes *p
  * it may send (the rest of its E_p it keeps) and what it may take. W is the step's before the front boils. */
 static double front_cap0(const hearth_scene *s, int i, const double *W, const double *vol) {
     const material_slot *ms = &s->mats.slot[pcoli(&s->ps, PC_MAT)[i]];
-    const double spare = W[i] - WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * vol[i];
-    return spare > 0 ? spare * HEARTH_LATENT_HEAT : 0.0;
+    return water_room(W[i] - water_floor(ms->core[CP_WATER_DENSITY], vol[i]));
 }
 
 /* A receiver's weight in G_i, its room against the excess it brought: rho_p = min(1, cap_p / E_p). 1 for a
@@ -285,8 +284,7 @@ static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned ch
 
 /* What particle i sent to the front, s_p = min(E_p, cap_p): the weight of its share of the rest below. */
 static double front_sent(const hearth_scene *s, int i, const double *E, const double *W, const double *vol) {
-    const double c = front_cap0(s, i, W, vol);
-    return E[2 * i] < c ? E[2 * i] : c;
+    return water_front_sent(E[2 * i], front_cap0(s, i, W, vol));
 }
 
 /* The rest r_p back to the particles that boiled (E_p > 0), by w_ip s_p / sum_q w_iq s_q on each node,
@@ -351,7 +349,7 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
         /* what water_boil would boil goes to the pool; the rest the particle keeps, as water_boil leaves it (a
          * dried particle that water_take's floor leaves a rounding's spare, or that diffusion wets a little,
          * would otherwise be held at T_b every step, handing its heat to the front) */
-        r[i] = E[2 * i] < cap[i] ? E[2 * i] : cap[i];
+        r[i] = water_front_sent(E[2 * i], cap[i]);
         kept[i] = E[2 * i] - r[i];
     }
     /* MPI slabs walk every node and particle (front_pass); one rank walks the front's own, and without a
@@ -393,7 +391,7 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
             Q[i] += take, cap[i] -= take, kept[i] -= take;
         }
         const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
-        const double floor_w = WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * vol[i];
+        const double floor_w = water_floor(ms->core[CP_WATER_DENSITY], vol[i]);
         /* within its room; a particle that filled it is at the floor exactly, so that it boils no more (a
          * rounding's spare would make it a source every step, at T_b, handing its heat on) */
         const int filled = E[2 * i] > 0 && !(cap[i] > 0);

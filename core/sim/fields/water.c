@@ -489,7 +489,7 @@ double water_boil(hearth_scene *s, int i, double *T, double Tb, double vol, doub
     particles *ps = &s->ps;
     double *W = pcold(ps, PC_WATER);
     const material_slot *ms = &s->mats.slot[pcoli(ps, PC_MAT)[i]];
-    const double spare = W[i] - WATER_SATURATION_FLOOR * ms->core[CP_WATER_DENSITY] * vol;
+    const double spare = W[i] - water_floor(ms->core[CP_WATER_DENSITY], vol);
     if (!(spare > 0) || !(mc > 0)) return 0.0;
     double dm = mc * (*T - Tb) / HEARTH_LATENT_HEAT;
     if (dm < spare) {

@@ -49,6 +49,15 @@ void water_restore_limits(water_state *w, double dmax, double emax, double lmax)
  * completely dry"): particles keep at least this much. */
 #define WATER_SATURATION_FLOOR 1e-4
 
+/* Boiling (latent_heat) compares a particle's water with the floor's mass at its volume vol: the one rounding
+ * water_boil, G2P's test and the boiling front all take. */
+static inline double water_floor(double rho_w, double vol) { return WATER_SATURATION_FLOOR * rho_w * vol; }
+/* The heat a particle's water above the floor can boil, L x spare (none without spare), and what a particle past
+ * T_b with excess E sends to the boiling front: E up to that room; it keeps the rest as sensible heat (water_boil's
+ * cap, which the front's shares and G2P's gas read alike: boil_front.c). */
+static inline double water_room(double spare) { return spare > 0 ? spare * HEARTH_LATENT_HEAT : 0.0; }
+static inline double water_front_sent(double E, double room) { return E < room ? E : room; }
+
 /* Evaporation through the air surface (transport.c) from the grid's
  * saturation s_d at a surface particle, sampled at depth d below the surface
  * (boundary.c's depth), toward the ambient s_amb: returns s_surface - s_amb,

@@ -152,21 +152,20 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             /* the temperature the gas below reads: the particle's own, or a front sender's T_b plus the excess its
              * water cannot boil, which it keeps (boil_front.c: it sends min(E, L spare)); so a dried particle whose
              * spare is one ulp makes the gas one with none makes, not the gas of T_b (the front hands out the rest
-             * after G2P) */
-            double Tgas = 0;
-            int Tgas_set = 0;
+             * after G2P); NaN: the particle's own */
+            double Tgas = NAN;
             if (!(flags && (flags[i] & PF_HOLD_T))) {
                 Tcol[i] = T1;
                 /* interior boiling (latent_heat): wet matter stays at the boiling point (water.c) */
                 if (WATER && T1 > boil) {
                     const double mc = pcold(ps, PC_MASS)[i] * material_specific_heat_of(&s->mats.slot[mat[i]], ps, i, w_step);
                     const double vol = mpm_state_of(s)->vol[i];
-                    const double spare = pcold(ps, PC_WATER)[i] - WATER_SATURATION_FLOOR * s->mats.slot[mat[i]].core[CP_WATER_DENSITY] * vol;
+                    const double spare = pcold(ps, PC_WATER)[i] - water_floor(s->mats.slot[mat[i]].core[CP_WATER_DENSITY], vol);
                     if (front && spare > 0 && mc > 0) { /* water_boil's test; the heat to water_boil_front */
                         front[2 * i] = mc * (T1 - boil), front[2 * i + 1] = mc;
                         Tcol[i] = boil;
-                        const double E = front[2 * i], c = spare * HEARTH_LATENT_HEAT;
-                        Tgas = boil + (E - (E < c ? E : c)) / mc, Tgas_set = 1; /* boil + 0 / mc = boil when wet */
+                        const double E = front[2 * i];
+                        Tgas = boil + (E - water_front_sent(E, water_room(spare))) / mc; /* boil + 0 / mc = boil when wet */
                     } else if (!front) {
                         w_removed += water_boil(s, i, &Tcol[i], boil, vol, mc);
                     }
@@ -176,7 +175,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             if (Gcol) { /* CO2 over the cycle, temperature moving linearly from T0 to T1 (§5.4), less what its
                          * earlier steps made (gas.c's gas_between: the gas moves every step) */
                 const material_slot *gm = &s->mats.slot[mat[i]];
-                Gcol[i] += gas_moles_field_step(T0, Tgas_set ? Tgas : Tcol[i], fdt, s->field_acc, gm->core[CP_GAS_RATE],
+                Gcol[i] += gas_moles_field_step(T0, isnan(Tgas) ? Tcol[i] : Tgas, fdt, s->field_acc, gm->core[CP_GAS_RATE],
                                                 gm->params[gm->density_index], gm->core[CP_REACTION_T],
                                                 gm->core[CP_REACTION_WIDTH]);
                 if (vent) Gcol[i] *= gas_vent_factor(s, i, dt); /* open surface pores lose their CO2 (gas.c) */
