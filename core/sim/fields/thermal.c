@@ -198,7 +198,6 @@ double thermal_energy(const hearth_scene *s) {
 
 /* ---- boundary coefficients ------------------------------------------- */
 
-
 /* Fills s->heat.bnd_coef (S beta, W/K) and s->heat.bnd_temp (degrees C) for the
  * particles flagged PF_BOUNDARY, from the air boundary (boundary.c) and the
  * heated colliders. Other particles' entries are stale: readers check the
@@ -227,8 +226,8 @@ static hearth_status find_boundary(hearth_scene *s) {
             double b = 0.0, r = 1.0;
             if (oven) { /* the layer above the sample conducts as the particle does, dried or not */
                 const double kap = material_conductivity(&s->mats.slot[mat[i]], ps, i);
-                if (kap > 0) r = 1.0 / (1.0 + beta * depth[i] / kap);
-                b = kap > 0 ? beta / (1.0 + beta * depth[i] / kap) : beta;
+                const double den = kap > 0 ? 1.0 + beta * depth[i] / kap : 1.0;
+                r = 1.0 / den, b = beta / den;
             }
             coef[i] = s->boundary.area[i] * b;
             temp[i] = oven ? s->def.oven_temperature : 0.0;
@@ -305,6 +304,18 @@ static int contact_stencil(const grid *g, const double x[3], double *node[27], i
     return m;
 }
 
+/* The nodes' channel ch at x: sum_j w_j(x) node_j[ch] over contact_stencil's
+ * nodes (the B-spline field there, 0 where none has storage); *m the nodes. */
+static double field_at(const grid *g, const double x[3], int ch, int *m) {
+    double *node[27], w[27];
+    int l[27];
+    const int NPB = g->nodes_per_block;
+    *m = contact_stencil(g, x, node, l, w, NULL);
+    double v = 0;
+    for (int j = 0; j < *m; j++) v += w[j] * node[j][ch * NPB + l[j]];
+    return v;
+}
+
 double thermal_surface_temperature(const hearth_scene *s, int i, double *sample) {
     const particles *ps = &s->ps;
     if (isnan(s->def.oven_temperature) || !(s->def.oven_beta > 0) || !s->heat.bnd_surf || i >= s->heat.bnd_cap) return NAN;
@@ -314,12 +325,9 @@ double thermal_surface_temperature(const hearth_scene *s, int i, double *sample)
      * own, which FLIP and subcell.c keep nearer its own, shallower place (docs/validation.md, "The surface's
      * colour": with the particle's own the drying slab's surface read 9.2, 2.0, 1.1 K hot at 4, 2, 1 mm, with
      * the nodes' 0.1, 1.2, 1.1 K cool of the closed form's) */
-    double *node[27], w[27];
-    int l[27];
-    const int NPB = s->g.nodes_per_block, m = contact_stencil(&s->g, pcold(ps, PC_X) + 3 * i, node, l, w, NULL);
+    int m;
+    const double th = field_at(&s->g, pcold(ps, PC_X) + 3 * i, CH_T, &m);
     if (m == 0) return NAN;
-    double th = 0;
-    for (int j = 0; j < m; j++) th += w[j] * node[j][CH_T * NPB + l[j]];
     /* q = beta (T_o - T_s) = beta r (T_o - th): the air film takes the share r of the difference, the layer above
      * the sample the rest */
     const double To = s->heat.bnd_temp[i];
@@ -702,18 +710,14 @@ static void oven_ledger(hearth_scene *s, double dt) {
     s->heat.step_oven_heat = 0;
     if (!s->def.latent_heat || isnan(s->def.oven_temperature)) return;
     const grid *g = &s->g;
-    const int NPB = g->nodes_per_block, ch = s->def.heat_implicit ? CH_T : CH_T0;
+    const int ch = s->def.heat_implicit ? CH_T : CH_T0;
     const double *X = pcold(&s->ps, PC_X), *coef = s->heat.bnd_coef;
     const int *flags = pcoli(&s->ps, PC_FLAGS);
     double q = 0;
     for (int i = 0; i < s->ps.n; i++) {
         if (!(flags[i] & PF_BOUNDARY) || !(coef[i] > 0)) continue; /* a collider's contact alone leaves coef 0 */
-        double *node[27], w[27];
-        int l[27];
-        const int m = contact_stencil(g, X + 3 * i, node, l, w, NULL);
-        double th = 0;
-        for (int j = 0; j < m; j++) th += w[j] * node[j][ch * NPB + l[j]];
-        q += coef[i] * (s->heat.bnd_temp[i] - th);
+        int m;
+        q += coef[i] * (s->heat.bnd_temp[i] - field_at(g, X + 3 * i, ch, &m));
     }
     mpm_ranks_fields_reduce(s, &q, 1, NULL, 0); /* MPI slabs: every rank's particles, in rank order */
     s->heat.step_oven_heat = dt * q;
