@@ -43,6 +43,12 @@ against_one() {
         fail "$ranks ranks differ from one process by more than 1e-12 ($scene $*)"
 }
 
+# state_count AWK_CONDITION: how many particles of the one-process state.csv
+# meet it ($8 the temperature, $9 the saturation)
+state_count() {
+    awk -F, "$1 {n++} END {print n + 0}" "$tmp/one/state.csv"
+}
+
 # on_slabs STEPS: the N-rank run's record says every step ran on slabs
 on_slabs() {
     grep -q "MPI ranks: $ranks; $1 steps with each rank holding its slab, 0 replicated" "$tmp/many/run.log" ||
@@ -158,7 +164,7 @@ mpi_dough_boils_matches_one_rank)
         against_one dough.lua 200 --set dim=$dim --set tray=250 --set tray_beta=1e5 --set steps=200
         on_slabs 200
         same_sums
-        boiling=$(awk -F, '$8 == 100 {n++} END {print n + 0}' "$tmp/one/state.csv")
+        boiling=$(state_count '$8 == 100')
         echo "${dim}D: particles held at 100 degC (boiling) in the one-process state: $boiling"
         [ "$boiling" -ge 10 ] || fail "${dim}D: only $boiling particles at 100 degC: the scene no longer boils, so the case checks nothing"
     done
@@ -166,7 +172,7 @@ mpi_dough_boils_matches_one_rank)
 mpi_dough_dries_matches_one_rank)
     # hotter still (450 degC through beta 1e5), 700 steps: the bottom row boils dry (27 particles under saturation
     # 1e-3) while the rows above boil (56 at 100 degC). The run must have dried at least 10 particles and held at
-    # least 10 at 100 degC, or it checks nothing of the dried row; then the same 1e-12 as every case here. A dried
+    # least 10 at 100 degC, or it checks nothing of the dried row, and the same 1e-12 as every case here. A dried
     # particle's water sits on the saturation floor, and G2P's test of water to boil (spare > 0) compares it with a
     # floor taken by another rounding from a volume that differs by ulps between one process and the slabs, so its
     # spare is 0 or one ulp. The boiling front's shares scale with the room (core/sim/fields/boil_front.c) and G2P's
@@ -174,20 +180,14 @@ mpi_dough_dries_matches_one_rank)
     # particle a full receiver and its whole excess weighed in the front's rest (1.8e-3 in temperature at 2 ranks,
     # 3.5e-4 in saturation at 4), and with the front alone scaled its gas was made at T_b (7.4e-9, 1.0e-8 in a
     # velocity; docs/validation.md, "The front's shares scale with room").
-    set -- dough.lua --set tray=450 --set tray_beta=1e5 --set steps=700
-    "$hearth" run "$here/mpi/$1" --out "$tmp/one" --quiet "${@:2}" >"$tmp/one.txt" || fail "one-process run failed"
-    mp "$ranks" many "$1" "${@:2}" >"$tmp/many.txt" || fail "$ranks-rank run failed (status $?)"
-    cat "$tmp/one.txt" "$tmp/many.txt"
-    grep -q "^steps 700 " "$tmp/many.txt" || fail "the $ranks-rank run did not take 700 steps"
+    against_one dough.lua 700 --set tray=450 --set tray_beta=1e5 --set steps=700
     on_slabs 700
-    dried=$(awk -F, '$9 < 1e-3 {n++} END {print n + 0}' "$tmp/one/state.csv")
-    boiling=$(awk -F, '$8 == 100 {n++} END {print n + 0}' "$tmp/one/state.csv")
+    same_sums
+    dried=$(state_count '$9 < 1e-3')
+    boiling=$(state_count '$8 == 100')
     echo "in the one-process state: $dried particles dried (saturation under 1e-3), $boiling held at 100 degC"
     [ "$dried" -ge 10 ] || fail "only $dried particles dried: the case no longer checks the dried row"
     [ "$boiling" -ge 10 ] || fail "only $boiling particles at 100 degC: the case no longer checks the boiling"
-    python3 "$here/mpi_compare.py" "$tmp/one/state.csv" "$tmp/many/state.csv" 1e-12 ||
-        fail "$ranks ranks differ from one process once the bottom row has dried (column 7 is the temperature, 8 the saturation)"
-    same_sums
     ;;
 mpi_heated_plate_across_slabs_matches_one_rank)
     # a hot plate across the slab axis, a jelly block seeded three cells into
