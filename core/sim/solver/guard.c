@@ -82,7 +82,7 @@ static void guard_measure(const hearth_scene *s, int i, guard_terms *t) {
     if (ms->core[CP_EXPANSION] > 0 && T && (J > 0 || !(fabs(J) <= GUARD_SWELL))) {
         t->expansion = fabs(ms->core[CP_EXPANSION] * (T[i] - ms->core[CP_REFERENCE_T])); /* material.h: eq. 10's thermal strain */
     }
-    if (G && T) t->gas = fabs(gas_tau(G[i], T[i], gas_porosity(JP, ms->core[CP_POROSITY0])));
+    if (G && T) t->gas = fabs(material_gas_tau(ms, &s->ps, i, G[i], T[i], gas_porosity(JP, ms->core[CP_POROSITY0]), J));
     mem_free(state, sbytes);
 }
 
