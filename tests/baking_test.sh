@@ -120,6 +120,33 @@ PY
     [ $rc -eq 0 ] || fail "$case_name: the crumb browns (numbers above)"
     ;;
 
+# #18: the physical loaf (h.library.dough.bread, its pores' gas at the atmosphere: ambient_pressure, gas.h) rises in
+# its oven as a baker's loaf springs: the issue's bread bar, set before the run and the same as bread.lua's
+# (claim_bread_loaf_rises): its area (V0 J summed, loaf.csv's area_m2) grows >= 15% from raw to its peak and keeps
+# >= 10% at the end of the 25 minute bake, and it ends at least as tall as raw (height_m). At dx 5 mm (_fine: 2.5
+# mm). Before the gas stood at the atmosphere the loaf went 71.6 -> 68.6 mm and froze (docs/gallery/crumb_plateau.md).
+claim_loaf_physical_rises | claim_loaf_physical_rises_fine)
+    dx=0.005
+    [ "$case_name" = claim_loaf_physical_rises_fine ] && dx=0.0025
+    run loaf_physical --set dx=$dx >/dev/null
+    python3 - "$(find hearth-out/loaf_physical -name loaf.csv | head -1)" $dx <<'PY' || fail "$case_name: the physical loaf does not rise (numbers above)"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+dx = float(sys.argv[2])
+a = [float(r["area_m2"]) for r in rows]
+h = [float(r["height_m"]) for r in rows]
+k = max(range(len(a)), key=lambda i: a[i])
+for r in rows:
+    print(f"  {r['t_real_min']} min: area {float(r['area_m2']) / a[0] - 1:+.1%}, height {float(r['height_m']) * 1e3:.1f} mm, "
+          f"crumb {r['centre_T_degC']} degC")
+peak, end = a[k] / a[0] - 1, a[-1] / a[0] - 1
+print(f"dx {dx * 1e3:.1f} mm: area {a[0]:.5g} -> peak {a[k]:.5g} m^2 at {rows[k]['t_real_min']} min ({peak:+.1%}, need >= +15%), "
+      f"end {a[-1]:.5g} ({end:+.1%}, need >= +10%); height {h[0] * 1e3:.1f} -> peak {max(h) * 1e3:.1f} -> end "
+      f"{h[-1] * 1e3:.1f} mm (need end >= raw)")
+sys.exit(0 if peak >= 0.15 and end >= 0.10 and h[-1] >= h[0] else 1)
+PY
+    ;;
+
 # §7.3: "Too much leavening agent would produce a very tall cookie, while no
 # leavener at all yields a flat one." Height rises with alpha^g at one oven,
 # and the unleavened top is flat: over the middle third of the cookie its
