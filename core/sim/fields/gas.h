@@ -53,9 +53,9 @@ static inline double gas_tau(double ng, double T, double np) { return -ng * R_GA
 /// docs/validation.md "The physical loaf's oven spring"). Ding et al.'s n^g R theta / (J n^p) is the whole pore
 /// gas's pressure, and their dough starts with no gas in its pores, so a real yeast's CO2 reads ~1e5 Pa against a
 /// dough that yields at ~1e2 Pa. A proofed dough's cells hold gas at about the atmosphere's pressure, and what
-/// moves the dough is their overpressure (Fan, Mitchell & Blanshard 1999, Int. J. Food Sci. Tech. 34:311: the
-/// cell's pressure is p_a plus the surface tension's and the wall's stress; Zhang & Datta 2006, the pores' gas at
-/// p_a to start). Here:
+/// moves the dough is their overpressure (Fan, Mitchell & Blanshard 1999, J. Food Eng. 41:69, "A model for the oven
+/// rise of dough during baking": a cell's pressure is p_a plus its surface tension's and its wall's stress; Zhang,
+/// Datta & Mukherjee 2005, AIChE J. 51:2569, as gas.c cites: the pores' gas at p_a to start). Here:
 ///   pores at the start: air and, while the pores hold water, its saturated vapour p_v(theta_0), at p_a, i.e.
 ///     n_air = (p_a - p_v(theta_0)) n^p_0 / (R theta_0) moles per reference volume, theta_0 = reference_temperature;
 ///   the pores' volume per reference volume: J - (1 - n^p_0), the solid incompressible (its bulk modulus, ~GPa for
@@ -67,7 +67,7 @@ static inline double gas_tau(double ng, double T, double np) { return -ng * R_GA
 /// none, from the start). At theta_0 and J = 1 the gauge pressure is 0: the dough starts at rest. A free block
 /// swells until its skeleton carries the gauge pressure (~tau_y): V / V_0 = 1 - n^p_0 + n^p_0 (theta / theta_0)
 /// (p_a - p_v(theta_0)) / (p_a - p_v(theta)) times (n_air + n^g) / n_air on the gas (tests/unit_gas.c,
-/// gas_ambient_block_swells_as_closed_form). The pores' volume from the total J, not eq. 13's J^P: with the
+/// gas_ambient_{dry,wet}_block_swells_as_closed_form). The pores' volume from the total J, not eq. 13's J^P: with the
 /// gas ~10x stiffer than the skeleton, a pressure that fell with this step's plastic flow (the plugin returns
 /// without knowing it) fed back through the motion and grew a free block's breathing without bound at dx 5 mm
 /// unless cfl <= 0.05 (docs/validation.md); from J alone the gas is an elastic term the CFL limit covers.

@@ -151,6 +151,12 @@ static void guard_cause(const hearth_scene *s, int i, int swollen, char *buf, si
                  "outweighs the plugin's stress (%.4g Pa) and gas pressure (%.4g Pa) at the particle; lower the "
                  "material's `expansion` or heat it more slowly. ",
                  t.expansion, t.plugin, t.gas);
+    else if (t.gas > t.plugin && s->mats.slot[pcoli(&s->ps, PC_MAT)[i]].core[CP_AMBIENT_PRESSURE] > 0)
+        snprintf(buf, n,
+                 "gas pressure blew the material apart: the pores' overpressure over ambient_pressure (gas.h, "
+                 "gas_tau_ambient) = %.4g Pa outweighs the plugin's stress (%.4g Pa) and thermal expansion (%.4g Pa) "
+                 "at the particle (the gas's stiffness is in the step's wave speed); lower gas_rate or cfl. ",
+                 t.gas, t.plugin, t.expansion);
     else if (t.gas > t.plugin)
         snprintf(buf, n,
                  "gas pressure blew the material apart: the CO2 pressure n^g R T / n^p = %.4g Pa outweighs the "
