@@ -310,6 +310,44 @@ TEST(gas_ambient_refusals) {
 }
 TEST(gas_ambient_wet_block_swells_as_closed_form) { ambient_case(1); }
 
+/* The law on, with CO2 and water, in an oven (the physical bread's heat at S = 300), 4096 particles (above
+ * SCENE_PARALLEL_MIN): the same hash after 100 steps at 1 and 2 threads, and another than the law off. */
+static unsigned long long ambient_oven_hash(double pa, int threads) {
+    hearth_set_threads(threads);
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.00125;
+    d.hi[0] = d.hi[1] = 0.1;
+    d.gravity[1] = -9.81;
+    d.oven_temperature = 200, d.oven_beta = 30 * 300;
+    hearth_scene *s = fx_scene_def(&d);
+    const char *nm[] = {"E", "nu", "tau_y", "eta", "density", "porosity", "ambient_pressure", "reference_temperature",
+                        "conductivity", "specific_heat", "water_diffusivity", "saturation", "gas_rate"};
+    const double nv[] = {3e4, 0.3, 200, 2 * 200.0 * 200 * 1e5 / 300, 484, 0.5, pa, 25, 0.51 * 300, 2700, 1e-9, 0.218,
+                         1.5e-5 * 300};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "cam_clay_dough", nm, nv, 13, &err);
+    CHECK(m >= 0);
+    const double c[3] = {0.05, 0.05, 0}, h[3] = {0.02, 0.02, 0};
+    hearth_shape *box = hearth_shape_box(c, h);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = box, bd.material = m, bd.jitter = 0, bd.temperature = 25;
+    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    hearth_shape_free(box);
+    const int ok = hearth_scene_step(s, 100, &err) == HEARTH_OK;
+    if (!ok) fprintf(stderr, "ambient oven: %s\n", err.msg);
+    CHECK(ok && s->ps.n > SCENE_PARALLEL_MIN);
+    const unsigned long long hsh = (unsigned long long)hearth_scene_hash(s);
+    hearth_scene_destroy(s);
+    hearth_set_threads(0);
+    return hsh;
+}
+
+TEST(gas_ambient_threads_same_bits) {
+    const unsigned long long h1 = ambient_oven_hash(101325, 1), h2 = ambient_oven_hash(101325, 2), h0 = ambient_oven_hash(0, 1);
+    printf("  hash ambient_pressure 101325: 1 thread %016llx, 2 threads %016llx (ambient 0: %016llx)\n", h1, h2, h0);
+    CHECK(h1 == h2 && h1 != h0);
+}
+
 TEST_MAIN(T(co2_constant_temperature), T(co2_linear_ramp), T(gas_pressure_field), T(gas_rise), T(gas_rise_fine),
-          T(gas_ambient_dry_block_swells_as_closed_form), T(gas_ambient_refusals),
+          T(gas_ambient_dry_block_swells_as_closed_form), T(gas_ambient_refusals), T(gas_ambient_threads_same_bits),
           T(gas_ambient_wet_block_swells_as_closed_form))
