@@ -84,10 +84,12 @@ mpi_elastic_matches_one_rank)
     against_one elastic_block.lua 100
     ;;
 mpi_dough_matches_one_rank)
-    # every field live (heat with the oven, water, evaporation, latent heat, CO2); heat explicit, then the CG solve
+    # every field live (heat with the oven, water, evaporation, latent heat, CO2); heat explicit, then the CG solve;
+    # then the pores' gas at the atmosphere (ambient_pressure, gas.h) as h.library.dough.bread has it
     for heat in explicit implicit; do
         against_one dough.lua 100 --set heat=$heat
     done
+    against_one dough.lua 100 --set ambient=101325
     ;;
 mpi_collider_matches_one_rank)
     # a moving sticky plate (a Lua velocity function), a sticky floor and a grip

@@ -88,9 +88,9 @@ TEST(checkpoint_v4_reads_at_defaults) {
     memcpy(b, img, clk - cut);
     memcpy(b + clk - cut, img + clk, tail - clk);
     memcpy(b + tail - cut, img + tail + vt, n - tail - vt);
-    /* and the last two core material parameters (version 7's dry_conductivity, version 8's dry_specific_heat):
-     * files before 7 hold CP_COUNT - 2 of them */
-    if (!cut_core_params(b, &m, 2)) {
+    /* and the last four core material parameters (version 7's dry_conductivity, version 8's dry_specific_heat,
+     * version 10's ambient_pressure and open_temperature): files before 7 hold CP_COUNT - 4 of them */
+    if (!cut_core_params(b, &m, 4)) {
         free(b);
         free(img);
         hearth_scene_destroy(s);
@@ -121,7 +121,7 @@ TEST(checkpoint_v4_reads_at_defaults) {
     ck_reseal(b, m);
     CHECK(hearth_scene_load_mem(b, m, "v3.ck", &err) == NULL);
     printf("  %s\n", err.msg);
-    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 9 only");
+    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 10 only");
     free(b);
     free(img);
     hearth_scene_destroy(s);
@@ -171,7 +171,7 @@ TEST(checkpoint_v7_reads_dry_specific_heat_as_wet) {
     img = save_image(s, &n);
     CHECK(img != NULL);
     size_t m = n;
-    if (!img || !cut_core_params(img, &m, 1)) {
+    if (!img || !cut_core_params(img, &m, 3)) { /* dry_specific_heat and version 10's two */
         free(img);
         hearth_scene_destroy(s);
         return;
@@ -219,6 +219,11 @@ TEST(checkpoint_v8_reads_browning_surface_as_zero) {
     size_t n;
     uint8_t *img = save_image(s, &n);
     CHECK(img != NULL);
+    if (img && !cut_core_params(img, &n, 2)) { /* version 10's ambient_pressure and open_temperature */
+        free(img);
+        hearth_scene_destroy(s);
+        return;
+    }
     const size_t at = img ? find(img, n, "browning_surface", 16) : (size_t)-1, part = img ? find(img, n, "PART", 4) : (size_t)-1;
     CHECK(at != (size_t)-1 && part != (size_t)-1);
     if (at == (size_t)-1 || part == (size_t)-1) {
@@ -259,5 +264,66 @@ TEST(checkpoint_v8_reads_browning_surface_as_zero) {
     hearth_scene_destroy(s);
 }
 
+/* Version 10 carries a material's ambient_pressure and open_temperature through a save; a version 9 file (a
+ * version 10 image without the two, before the curve count) loads with ambient_pressure 0 (eq. 13 as printed) and
+ * open_temperature at its default, and continues as the scene it was saved from, which had both so. */
+TEST(checkpoint_v9_reads_ambient_pressure_as_zero) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.1;
+    d.gravity[1] = 0;
+    hearth_scene *s = fx_scene_def(&d);
+    CHECK(s != NULL);
+    if (!s) return;
+    const char *nm[] = {"E", "density", "porosity", "ambient_pressure", "open_temperature", "reference_temperature"};
+    const double nv[] = {1e4, 484, 0.5, 101325, 70, 25};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 6, &err);
+    CHECK(m >= 0);
+    const double c[3] = {0.5, 0.4, 0}, h[3] = {0.1, 0.1, 0};
+    CHECK(fx_box(s, m, c, h, 1, NULL) > 0);
+    CHECK(hearth_scene_step(s, 3, &err) == HEARTH_OK);
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    hearth_scene *r = img ? hearth_scene_load_mem(img, n, "v10.ck", &err) : NULL;
+    if (!r && img) printf("  v10 refused: %s\n", err.msg);
+    CHECK(r != NULL);
+    if (r) {
+        printf("  v10: ambient_pressure %g, open_temperature %g restored\n", r->mats.slot[0].core[CP_AMBIENT_PRESSURE],
+               r->mats.slot[0].core[CP_OPEN_TEMPERATURE]);
+        CHECK(r->mats.slot[0].core[CP_AMBIENT_PRESSURE] == 101325 && r->mats.slot[0].core[CP_OPEN_TEMPERATURE] == 70);
+        continues_as(s, r, "v10 copy");
+        hearth_scene_destroy(r);
+    }
+    free(img);
+    hearth_scene_destroy(s);
+    s = dry_heat_scene(0);
+    img = save_image(s, &n);
+    CHECK(img != NULL);
+    size_t k = n;
+    if (!img || !cut_core_params(img, &k, 2)) {
+        free(img);
+        hearth_scene_destroy(s);
+        return;
+    }
+    const uint32_t v9 = 9;
+    memcpy(img + 8, &v9, 4);
+    ck_reseal(img, k);
+    r = hearth_scene_load_mem(img, k, "v9.ck", &err);
+    if (!r) printf("  v9 refused: %s\n", err.msg);
+    CHECK(r != NULL);
+    if (r) {
+        const hearth_param *cp = hearth_core_params(NULL);
+        CHECK(r->mats.slot[0].core[CP_AMBIENT_PRESSURE] == 0);
+        CHECK(r->mats.slot[0].core[CP_OPEN_TEMPERATURE] == cp[CP_OPEN_TEMPERATURE].def);
+        printf("  v9 file of %zu bytes (v10: %zu)\n", k, n);
+        continues_as(s, r, "v9 copy");
+        hearth_scene_destroy(r);
+    }
+    free(img);
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_v4_reads_at_defaults),
-          T(checkpoint_v7_reads_dry_specific_heat_as_wet), T(checkpoint_v8_reads_browning_surface_as_zero))
+          T(checkpoint_v7_reads_dry_specific_heat_as_wet), T(checkpoint_v8_reads_browning_surface_as_zero),
+          T(checkpoint_v9_reads_ambient_pressure_as_zero))

@@ -71,6 +71,17 @@ hearth_status material_slot_init(material_slot *ms, const hearth_plugin *pl, con
                        "range [0, specific_heat] (the water a material loses takes its heat capacity with it; 0 = as wet)",
                        m->name, core[CP_DRY_SPECIFIC_HEAT], core[CP_SPECIFIC_HEAT]);
     }
+    if (core[CP_AMBIENT_PRESSURE] > 0) { /* the pores start with air at p_a - p_v(theta_0) (gas.h, gas_tau_ambient) */
+        const double pv0 = vapour_psat(core[CP_REFERENCE_T] + KELVIN);
+        if (!(core[CP_AMBIENT_PRESSURE] > pv0)) {
+            mem_free(p, params_bytes(m));
+            return err_set(err, HEARTH_ERR_PARAM,
+                           "material '%s': ambient_pressure = %g Pa is not above water's vapour pressure %.6g Pa at its "
+                           "reference_temperature = %g degC; valid range (%.6g, 1e7] Pa (the pores start with air at "
+                           "ambient_pressure less the vapour; 0 = eq. 13 as printed), or a lower reference_temperature",
+                           m->name, core[CP_AMBIENT_PRESSURE], pv0, core[CP_REFERENCE_T], pv0);
+        }
+    }
     *ms = (material_slot){.plugin = pl, .m = m, .params = p, .density_index = params_index(m, "density")};
     memcpy(ms->core, core, sizeof core);
     return HEARTH_OK;

@@ -440,7 +440,12 @@ MATERIAL_INLINE void material_point_couple_terms(const hearth_material *m, const
     if (gas) { /* gas pressure (eq. 13): tau_g = J sigma_g = -n^g R theta / n^p I */
         /* porosity after this step's plastic flow */
         const double np = m->plastic_J ? gas_porosity(JP1, core[CP_POROSITY0]) : pt->porosity;
-        const double tg = gas_tau(gas[env->index], env->temperature, np);
+        double stiff;
+        const double tg = core[CP_AMBIENT_PRESSURE] > 0
+                              ? gas_tau_ambient(gas[env->index], env->temperature, J, pt->saturation > 0,
+                                                core[CP_AMBIENT_PRESSURE], core[CP_POROSITY0], core[CP_REFERENCE_T],
+                                                core[CP_OPEN_TEMPERATURE], &stiff)
+                              : gas_tau(gas[env->index], env->temperature, np);
         tau[0] += tg;
         tau[4] += tg;
         tau[8] += tg;
@@ -470,6 +475,26 @@ MATERIAL_INLINE void material_point_couple_terms(const hearth_material *m, const
         tau[4] -= th;
         tau[8] -= th;
     }
+}
+
+/* The wave speed c of a point whose pores' gas has the stiffness `stiff` (Pa; gas.h, gas_tau_ambient) beside its
+ * skeleton: sqrt(c^2 + stiff / rho) at the current density rho0 / J, so the step's CFL limit (mpm_stable_dt)
+ * sees the gas (a p_a of 1e5 Pa against a step chosen from the dough's E stopped the guard at 0.56 s; #18). */
+MATERIAL_INLINE double material_gas_wave(double c, double stiff, double J, double rho0) {
+    return stiff > 0 ? sqrt(c * c + stiff * J / rho0) : c;
+}
+
+/* Particle i's gas term tau_g (Kirchhoff, the coefficient on I) as P2G adds it, for the readers outside the step
+ * (the guard's cause, the probes): eq. 13 (gas_tau), or over the atmosphere with ambient_pressure (gas_tau_ambient;
+ * the particle holds water when its PC_WATER is > 0, as P2G's saturation). */
+static inline double material_gas_tau(const material_slot *ms, const particles *ps, int i, double ng, double T, double np,
+                                      double J) {
+    const double *core = ms->core;
+    if (!(core[CP_AMBIENT_PRESSURE] > 0)) return gas_tau(ng, T, np);
+    const int wet = (ps->enabled & (1u << PC_WATER)) && pcold(ps, PC_WATER)[i] > 0;
+    double stiff;
+    return gas_tau_ambient(ng, T, J, wet, core[CP_AMBIENT_PRESSURE], core[CP_POROSITY0], core[CP_REFERENCE_T],
+                           core[CP_OPEN_TEMPERATURE], &stiff);
 }
 
 /* A cracked point (the plugin's damage callback at 1): each tensile

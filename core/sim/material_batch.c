@@ -46,6 +46,13 @@ static inline void run_after(const material_slot *ms, hearth_point *pt, const ma
         if (nu > *numax) *numax = nu;
     }
     material_point_couple(m, ms->core, pt, env, tau);
+    if (env->gas && ms->core[CP_AMBIENT_PRESSURE] > 0) { /* eq. 13 over the atmosphere: its stiffness (gas.h) */
+        double stiff;
+        (void)gas_tau_ambient(env->gas[env->index], env->temperature, env->J, pt->saturation > 0,
+                              ms->core[CP_AMBIENT_PRESSURE], ms->core[CP_POROSITY0], ms->core[CP_REFERENCE_T],
+                              ms->core[CP_OPEN_TEMPERATURE], &stiff);
+        *wave = material_gas_wave(*wave, stiff, env->J, pt->p[ms->density_index]);
+    }
 }
 
 static material_env run_env(const material_run *r, int j, unsigned flags) {
@@ -567,7 +574,18 @@ static double run_after_block(const material_slot *ms, const material_run *r, un
             t0[j] += tw, t4[j] += tw, t8[j] += tw;
         }
     }
-    if (gas) { /* gas pressure (eq. 13), with the porosity after this step's plastic flow */
+    if (gas && core[CP_AMBIENT_PRESSURE] > 0) { /* eq. 13 over the atmosphere (gas.h), its stiffness in the wave speed */
+        const double *gj = gas + r->i0, n0 = core[CP_POROSITY0], rho0 = ms->params[ms->density_index];
+        for (int j = 0; j < n; j++) {
+            if (cracked[j]) continue;
+            const double sj = r->saturation ? r->saturation[j] : NAN;
+            double stiff;
+            const double tg = gas_tau_ambient(gj[j], T ? T[j] : NAN, r->J[j], sj > 0, core[CP_AMBIENT_PRESSURE], n0,
+                                              core[CP_REFERENCE_T], core[CP_OPEN_TEMPERATURE], &stiff);
+            t0[j] += tg, t4[j] += tg, t8[j] += tg;
+            wave[j] = material_gas_wave(wave[j], stiff, r->J[j], rho0);
+        }
+    } else if (gas) { /* gas pressure (eq. 13), with the porosity after this step's plastic flow */
         const double *gj = gas + r->i0, n0 = core[CP_POROSITY0];
         if (!ncracked && m->plastic_J && T) { /* the usual block: the same arithmetic without a test per point */
             /* into a local column first: the compiler cannot know tau's columns do not alias gas, T or JP1, and

@@ -35,6 +35,15 @@ static const hearth_param core_schema[CP_COUNT] = {
                               "alpha of the dried material per kg of the particle's initial mass: linear in the water "
                               "left m^w/m^w_0 from it (dry) to specific_heat (as mixed); at most specific_heat; 0 = as wet",
                               0, 0, 1e7},
+    /* eq. 13 as an overpressure over the atmosphere, the pores' gas at p_a to start (gas.h, gas_tau_ambient; #18) */
+    [CP_AMBIENT_PRESSURE] = {"ambient_pressure", "Pa",
+                             "MPM: eq. 13 as the gauge pressure n R theta / V_pores + p_v - p_a of pores that start "
+                             "with air (and vapour) at p_a = this; 0 = eq. 13 as printed (the whole gas's pressure)",
+                             0, 0, 1e7},
+    [CP_OPEN_TEMPERATURE] = {"open_temperature", "degC",
+                             "with ambient_pressure: the temperature at which the pores open to the air (the set crumb "
+                             "turns from a foam to a sponge): no gas pressure from there on; 5000 = never",
+                             5000, -273.15, 5000},
 };
 
 const hearth_param *hearth_core_params(int *n) {

@@ -13,6 +13,8 @@ enum {
                           * checkpoints before version 7 read the others in place */
     CP_DRY_SPECIFIC_HEAT, /* heat capacity of the dried material (material_specific_heat, material.h); last, so
                            * checkpoints before version 8 read the others in place */
+    CP_AMBIENT_PRESSURE,  /* the pores' gas stands at the atmosphere (gas.h, gas_tau_ambient); with */
+    CP_OPEN_TEMPERATURE,  /* ... the temperature its cells open at: both last, so checkpoints before 10 read the others */
     CP_COUNT
 };
 

@@ -244,7 +244,7 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
             plugin_call_leave();
         }
         const double np = gas_porosity(JP, ms->core[CP_POROSITY0]);
-        out[0] = f == F_POROSITY ? np : -gas_tau(pcold(ps, PC_GAS)[i], pcold(ps, PC_TEMPERATURE)[i], np) / J;
+        out[0] = f == F_POROSITY ? np : -material_gas_tau(ms, ps, i, pcold(ps, PC_GAS)[i], pcold(ps, PC_TEMPERATURE)[i], np, J) / J;
         break;
     }
     default: {

@@ -344,6 +344,14 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
     if (solver_accepts(s->solver, hearth_plugin_material(pl), err)) return -1; /* it needs a point field the solver does not fill */
     material_slot ms;
     if (material_slot_init(&ms, pl, names, values, n, err)) return -1;
+    if (ms.core[CP_AMBIENT_PRESSURE] > 0 && s->def.solver != HEARTH_SOLVER_MPM) { /* MPM's door adds it (gas.h) */
+        err_set(err, HEARTH_ERR_PARAM,
+                "material '%s': ambient_pressure = %g Pa is read by the MPM solver only; valid value on this solver: 0 "
+                "(SPH bubbles have their own gas law, sph.gas_law)",
+                hearth_plugin_material(pl)->name, ms.core[CP_AMBIENT_PRESSURE]);
+        material_slot_free(&ms);
+        return -1;
+    }
     const hearth_material *m = ms.m;
     if (material_table_reserve(&s->mats, err) || particles_set_state_stride(&s->ps, m->state_size, err)) {
         material_slot_free(&ms);
@@ -356,8 +364,9 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
         return -1;
     }
     const double *core = s->mats.slot[id].core;
-    /* leavening needs the gas column, and the reaction needs temperature */
-    if (core[CP_GAS_RATE] > 0 &&
+    /* leavening needs the gas column, and the reaction needs temperature; so does the pores' air at the
+     * atmosphere (ambient_pressure, gas.h), with or without CO2 */
+    if ((core[CP_GAS_RATE] > 0 || core[CP_AMBIENT_PRESSURE] > 0) &&
         (particles_enable(&s->ps, PC_GAS, err) || scene_enable_temperature(s, err))) return -1;
     /* venting between the fields' updates needs each particle's open surface from the last (gas.c, gas_between) */
     if (core[CP_GAS_RATE] > 0 && s->def.gas_vent > 0 && s->def.solver == HEARTH_SOLVER_MPM &&

@@ -84,11 +84,27 @@ D.goods = {
     -- at the fridge point (a stiff dough holds a 7 cm loaf, rho g H ~ 330 Pa, once it is a few degrees warmer and
     -- sets at 70 degC: Fig. 8's shape)
     E = 3e4, nu = 0.3, tau_y = 200, mu = 1e5,
-    -- CO2: no measured counterpart: the model's gas pressure n^g R theta / n^p (eq. 13) is not an overpressure over
-    -- the atmosphere, so a real yeast's output (~1e-5 mol/(kg s)) would stand for 1e5 Pa against a dough that
-    -- yields at 1e2 Pa (seen: the guard stopped the loaf at 0.28 s with 2.4e6 Pa of CO2). Set so the bake makes
-    -- what h.library.paper.bread makes over its scene's bake: 2e-5 mol/(kg s) x 2.5 s / 1500 s, in real time
-    gas_rate = 0.03 / 600 * 0.4 * 2.5 / 1500, reaction_temperature = 40, reaction_width = 20, porosity = 0.1,
+    -- the pores' gas: a proofed dough's cells hold gas at about the atmosphere's pressure and what moves the dough is
+    -- their overpressure (Fan, Mitchell & Blanshard 1999, J. Food Eng. 41:69, "A model for the oven rise of dough
+    -- during baking"), so eq. 13 is taken over the atmosphere (core parameter ambient_pressure, p_a = 101325 Pa;
+    -- core/sim/fields/gas.h, gas_tau_ambient): the pores start with air and water vapour at p_a, and heating,
+    -- the vapour and the CO2 swell them (the oven rise). Porosity 0.5: the gas fraction of this density's dough
+    -- proofed to twice its volume (above). Before, eq. 13 read the whole pores' gas (no atmosphere), so a real
+    -- yeast's CO2 stood for 1e5 Pa against a dough that yields at 1e2 Pa and the rate was cut to the paper
+    -- bread's, 2.2e-8 mol/(kg s) with porosity 0.1: the loaf did not rise (docs/gallery/crumb_plateau.md).
+    -- The cells open to the air (the set crumb turns from a foam to a sponge) at 70 degC, where this preset's crumb
+    -- sets (Fig. 8's 70 degC, tau_y x20): pore opening is measured at 71-81 degC (Zhang et al. 2025, Foods 14:1649;
+    -- as core/sim/fields/gas.c's venting cites), and from there the gas holds no pressure (core parameter
+    -- open_temperature). At 75 degC the set skeleton held the vapour's swelling between 70 and 75 degC in the layer
+    -- over the hot base, which bent the dried base up at its edges (5 mm off the tray at dx 5 mm) and tore it at
+    -- 2.5 mm (docs/validation.md, "The physical loaf's oven spring").
+    ambient_pressure = 101325, open_temperature = 70,
+    -- CO2: the order a proof retains: doubling this dough's volume (0.5 of it gas) in about an hour at 30 degC is
+    -- p V / (R T) = 101325 x (0.5 / 484) / (8.314 x 303) = 0.042 mol/kg per hour, 1.15e-5 mol/(kg s) (a proof's
+    -- usual hour; the preset's own 50% porosity), at the bell's 30 degC: the peak rate 1.15e-5 / exp(-(10/20)^2).
+    -- The yeast's optimum is 32-40 degC (bakemag.com, "The science of fermentation"): theta_r = 40 degC, width 20 K
+    -- (Ding et al.'s bell), so it dies away past ~60 degC.
+    gas_rate = 1.15e-5 / math.exp(-0.25), reaction_temperature = 40, reaction_width = 20, porosity = 0.5,
     expansion = 0.1, dough_temperature = 25,
     -- oven: 200 degC, beta 30 W/(m^2 K) (effective coefficients, radiation included, 20-48 W/(m^2 K) in Baik et al.
     -- 1999, J. Food Sci. 64:688); pan: a tray at the oven's temperature through ~100 W/(m^2 K) contact
@@ -156,6 +172,7 @@ function D.preset(name)
     evaporation = g.evaporation * S, saturation = g.saturation,
     gas_rate = g.gas_rate * S, reaction_temperature = g.reaction_temperature, reaction_width = g.reaction_width,
     porosity = g.porosity, max_porosity = g.max_porosity, expansion = g.expansion,
+    ambient_pressure = g.ambient_pressure, open_temperature = g.open_temperature,
     reference_temperature = g.dough_temperature,
   }
   -- Fig. 8's points, or a good's own (the cookie's set, lua/hearth/dough.lua's SET)

@@ -6,7 +6,7 @@
 -- tray, tray_beta: the tray's temperature (degC) and Robin coefficient (W/(m2 K); 0: the collider's
 -- default); a hot tray boils and dries the bottom row (mpi_dough_boils_matches_one_rank).
 local h = require "hearth"
-local P = h.params { steps = 100, heat = "explicit", dim = 2, tray = 180, tray_beta = 0 }
+local P = h.params { steps = 100, heat = "explicit", dim = 2, tray = 180, tray_beta = 0, ambient = 0 }
 local three = P.dim == 3
 local s = h.scene { dim = P.dim, dx = three and 0.006 or 0.004,
   box = three and { { 0, 0, 0 }, { 0.12, 0.08, 0.04 } } or { { 0, 0 }, { 0.12, 0.08 } },
@@ -16,6 +16,16 @@ d.specific_heat, d.conductivity = 2800, 0.5
 d.dry_conductivity, d.dry_specific_heat = 0, 0 -- its own real-unit conductivity and specific heat, one for wet
 -- and dry, as when this was written
 d.water_diffusivity, d.evaporation = 5e-8 / 373.15, 3e-5
+-- its gas as when this was written (eq. 13 as printed, porosity 0.1, the paper bread's CO2), unless ambient (Pa)
+-- puts the pores' gas at the atmosphere as the preset now does (gas.h, gas_tau_ambient; mpi_dough_matches_one_rank):
+-- the gas's stiffness shortens the step, so a case of a fixed step count would cover less of its bake (the hot
+-- tray's cases would no longer boil or dry), and the 450 degC tray heats the bottom row past 70 degC in a few steps
+if P.ambient > 0 then
+  d.ambient_pressure = P.ambient
+else
+  d.ambient_pressure, d.porosity = 0, 0.1
+  d.gas_rate = 0.03 / 600 * 0.4 * 2.5 / 1500 * h.library.oven.bread.time_scale
+end
 s:add { shape = three and h.box({ 0.02, 0.012, 0.01 }, { 0.10, 0.05, 0.03 }) or h.box({ 0.02, 0.012 }, { 0.10, 0.05 }), material = h.material("cam_clay_dough", d), temperature = 25,
   saturation = 0.4 }
 s:collider { shape = h.plane({ 0, 0.01, 0 }, { 0, 1, 0 }), mode = "sticky", temperature = P.tray,

@@ -193,7 +193,7 @@ enum {
 #define HEARTH_RESERVED_PARAM_NAMES                                                                          \
     "conductivity", "specific_heat", "expansion", "reference_temperature", "gas_rate", "reaction_temperature", \
         "reaction_width", "porosity", "saturation", "water_diffusivity", "evaporation", "water_stiffness",       \
-        "water_density", "bubble", "dry_conductivity", "dry_specific_heat"
+        "water_density", "bubble", "dry_conductivity", "dry_specific_heat", "ambient_pressure", "open_temperature"
 
 /// One entry of a parameter schema. def must lie in [min, max].
 typedef struct hearth_param {

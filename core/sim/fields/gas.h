@@ -3,6 +3,7 @@
 #define HEARTH_GAS_H
 
 #include "physics_constants.h"
+#include "vapour.h"
 
 /// Moles per unit reference volume produced over one step while the
 /// temperature goes linearly from T0 to T1 (degrees C):
@@ -47,4 +48,43 @@ static inline double gas_porosity(double JP, double n0) {
 }
 /// Kirchhoff gas stress coefficient: tau_g = -n^g R theta_abs / n^p I (eq. 13 times J).
 static inline double gas_tau(double ng, double T, double np) { return -ng * R_GAS * (T + KELVIN) / np; }
+
+/// Eq. 13 as an overpressure over the atmosphere (material parameter ambient_pressure p_a > 0; issue #18,
+/// docs/validation.md "The physical loaf's oven spring"). Ding et al.'s n^g R theta / (J n^p) is the whole pore
+/// gas's pressure, and their dough starts with no gas in its pores, so a real yeast's CO2 reads ~1e5 Pa against a
+/// dough that yields at ~1e2 Pa. A proofed dough's cells hold gas at about the atmosphere's pressure, and what
+/// moves the dough is their overpressure (Fan, Mitchell & Blanshard 1999, J. Food Eng. 41:69, "A model for the oven
+/// rise of dough during baking": a cell's pressure is p_a plus its surface tension's and its wall's stress; Zhang,
+/// Datta & Mukherjee 2005, AIChE J. 51:2569, as gas.c cites: the pores' gas at p_a to start). Here:
+///   pores at the start: air and, while the pores hold water, its saturated vapour p_v(theta_0), at p_a, i.e.
+///     n_air = (p_a - p_v(theta_0)) n^p_0 / (R theta_0) moles per reference volume, theta_0 = reference_temperature;
+///   the pores' volume per reference volume: J - (1 - n^p_0), the solid incompressible (its bulk modulus, ~GPa for
+///     the water-starch-gluten matrix, against the skeleton's ~1e4 Pa), i.e. n^p J with n^p = gas_porosity(J, n^p_0);
+///   p = (n_air + n^g) R theta / (J n^p) + p_v(theta)   (n^g the CO2 made since, gas.c),
+///   tau_g = -J (p - p_a) = -(n_air + n^g) R theta / n^p - J (p_v(theta) - p_a)   (Kirchhoff, as gas_tau),
+/// p_v by Clausius-Clapeyron (vapour.h, Rodriguez-Arenas 2011 eq. 2.43; the pores' vapour as her bubbles' eq.
+/// 2.42 after Fan et al.), only where the particle holds water (saturation s > 0; a dry particle's cells hold
+/// none, from the start). At theta_0 and J = 1 the gauge pressure is 0: the dough starts at rest. A free block
+/// swells until its skeleton carries the gauge pressure (~tau_y): V / V_0 = 1 - n^p_0 + n^p_0 (theta / theta_0)
+/// (p_a - p_v(theta_0)) / (p_a - p_v(theta)) times (n_air + n^g) / n_air on the gas (tests/unit_gas.c,
+/// gas_ambient_{dry,wet}_block_swells_as_closed_form). The pores' volume from the total J, not eq. 13's J^P: with the
+/// gas ~10x stiffer than the skeleton, a pressure that fell with this step's plastic flow (the plugin returns
+/// without knowing it) fed back through the motion and grew a free block's breathing without bound at dx 5 mm
+/// unless cfl <= 0.05 (docs/validation.md); from J alone the gas is an elastic term the CFL limit covers.
+/// Once the particle's temperature reaches open_temperature the cells are open (the set crumb is a sponge: McGee
+/// 2004; pore opening measured at 71-81 degC by Zhang et al. 2025, Foods 14:1649, as gas.c's venting cites) and
+/// the gas holds no pressure: 0 from there. The gas's stiffness -J dp/dJ = n R theta / (J n^p) / n^p, 2e5-1e6 Pa
+/// against the dough's E ~ 3e4, goes into *stiff for the step (material_gas_wave); 0 when open. Ambient 0 never
+/// comes here: gas_tau, the same bits as before.
+static inline double gas_tau_ambient(double ng, double T, double J, int wet, double pa, double n0, double T0,
+                                     double Topen, double *stiff) {
+    *stiff = 0;
+    if (T >= Topen) return 0;
+    const double th = T + KELVIN, th0 = T0 + KELVIN, np = gas_porosity(J, n0);
+    const double pv = wet ? vapour_psat(th) : 0, pv0 = wet ? vapour_psat(th0) : 0;
+    const double nair = (pa - pv0) * n0 / (R_GAS * th0);
+    const double nrt = (nair + ng) * R_GAS * th; /* J n^p times the non-condensable gas's partial pressure */
+    *stiff = nrt / (J * np * np);
+    return -nrt / np - J * (pv - pa);
+}
 #endif

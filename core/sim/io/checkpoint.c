@@ -29,7 +29,8 @@
  * without version 6's field_steps (1, every step: their bits) and fields' cycle (a new one); versions 4
  * to 6 without version 7's water step limits (scanned again from the particles, as their readers did) and
  * its last core material parameter, dry_conductivity (0, as wet: their bits); versions 4 to 7 without
- * version 8's last core material parameter, dry_specific_heat (0, as wet: their bits). */
+ * version 8's last core material parameter, dry_specific_heat (0, as wet: their bits); versions 4 to 9 without
+ * version 10's last two, ambient_pressure (0: eq. 13 as printed, their bits) and open_temperature. */
 #include "checkpoint.h"
 
 #include <errno.h>
@@ -371,9 +372,13 @@ static hearth_scene *refuse_at(hearth_scene *s, hearth_error *err, const char *n
 }
 
 static int get_materials(ck_cursor *c, hearth_scene *s, const char *name, uint32_t version, hearth_error *err) {
-    /* the core parameters the file holds: before version 7, all but dry_conductivity and dry_specific_heat (the
-     * last two), before version 8 all but dry_specific_heat; those left at 0 (as wet) */
-    const int ncore = version >= 8 ? CP_COUNT : version >= 7 ? CP_DRY_SPECIFIC_HEAT : CP_DRY_CONDUCTIVITY;
+    /* the core parameters the file holds: before version 7, all up to dry_conductivity, before version 8 up to
+     * dry_specific_heat, before version 10 up to ambient_pressure; those left at their defaults (0, as wet; 0,
+     * eq. 13 as printed, and open_temperature unread) */
+    const int ncore = version >= 10  ? CP_COUNT
+                      : version >= 8 ? CP_AMBIENT_PRESSURE
+                      : version >= 7 ? CP_DRY_SPECIFIC_HEAT
+                                     : CP_DRY_CONDUCTIVITY;
     get_tag(c, "MATS", "the materials section is missing");
     const uint32_t nmat = get_u32(c);
     if (c->bad) return -1;

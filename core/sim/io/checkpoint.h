@@ -32,7 +32,7 @@
  *           dmax, emax and lmax (water.h's water_state)
  *    "MATS" u32 count; per material: name, u32 ABI, u64 schema hash,
  *           u32 nparams, f64 params, f64 core params (params.h's order: version 7 appended
- *           dry_conductivity, version 8 dry_specific_heat), u32 curves, curves (each: u32 param,
+ *           dry_conductivity, version 8 dry_specific_heat, version 10 ambient_pressure and open_temperature), u32 curves, curves (each: u32 param,
  *           u32 points, u32 flags: bit 0 irreversible, bit 1 a moisture curve; f64 x, f64 values)
  *    "COLS" u32 count; per collider: shape tree (shape_read_mem), contact and pose
  *    "PART" u32 n, u32 state stride, u32 enabled columns; per enabled column
@@ -49,8 +49,9 @@
 /* 7: the water's step limits in the clocks, the materials' dry_conductivity (params.h); 8: their dry_specific_heat;
  * 9: the browning surface's column (PC_SURFACE, "browning_surface") in PART for MPM with browning and an oven: a
  * version 8 or older file has none and loads with it zeroed, its hash taken over the columns it holds (an older
- * hearth refuses a version 9 file by its version, not by a column it would misread) */
-#define CK_VERSION 9u
+ * hearth refuses a version 9 file by its version, not by a column it would misread); 10: the materials'
+ * ambient_pressure and open_temperature (params.h; gas.h's gas_tau_ambient) */
+#define CK_VERSION 10u
 /// Oldest version read: a version 4 file is version 5's layout without the
 /// DEF fields version 5 appended.
 #define CK_VERSION_MIN 4u

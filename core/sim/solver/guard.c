@@ -82,7 +82,7 @@ static void guard_measure(const hearth_scene *s, int i, guard_terms *t) {
     if (ms->core[CP_EXPANSION] > 0 && T && (J > 0 || !(fabs(J) <= GUARD_SWELL))) {
         t->expansion = fabs(ms->core[CP_EXPANSION] * (T[i] - ms->core[CP_REFERENCE_T])); /* material.h: eq. 10's thermal strain */
     }
-    if (G && T) t->gas = fabs(gas_tau(G[i], T[i], gas_porosity(JP, ms->core[CP_POROSITY0])));
+    if (G && T) t->gas = fabs(material_gas_tau(ms, &s->ps, i, G[i], T[i], gas_porosity(JP, ms->core[CP_POROSITY0]), J));
     mem_free(state, sbytes);
 }
 
@@ -151,6 +151,12 @@ static void guard_cause(const hearth_scene *s, int i, int swollen, char *buf, si
                  "outweighs the plugin's stress (%.4g Pa) and gas pressure (%.4g Pa) at the particle; lower the "
                  "material's `expansion` or heat it more slowly. ",
                  t.expansion, t.plugin, t.gas);
+    else if (t.gas > t.plugin && s->mats.slot[pcoli(&s->ps, PC_MAT)[i]].core[CP_AMBIENT_PRESSURE] > 0)
+        snprintf(buf, n,
+                 "gas pressure blew the material apart: the pores' overpressure over ambient_pressure (gas.h, "
+                 "gas_tau_ambient) = %.4g Pa outweighs the plugin's stress (%.4g Pa) and thermal expansion (%.4g Pa) "
+                 "at the particle (the gas's stiffness is in the step's wave speed); lower gas_rate or cfl. ",
+                 t.gas, t.plugin, t.expansion);
     else if (t.gas > t.plugin)
         snprintf(buf, n,
                  "gas pressure blew the material apart: the CO2 pressure n^g R T / n^p = %.4g Pa outweighs the "

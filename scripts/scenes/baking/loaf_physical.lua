@@ -12,7 +12,7 @@
 -- oven. Writes, under hearth-out/loaf_physical/: loaf.csv (per frame, in real
 -- minutes: the crumb's and the crust's temperature and saturation, particle
 -- values (crust_and_crumb), the loaf's height and the water left; the top's, the base's and the crumb's browning
--- index, fields/browning.c's 0..1), temperature_%04d.png, and at the end temperature.png, saturation.png and
+-- index, fields/browning.c's 0..1; the loaf's area, V0 J summed), temperature_%04d.png, and at the end temperature.png, saturation.png and
 -- browning.png.
 local h = require "hearth"
 local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0 }
@@ -51,9 +51,19 @@ local function crust_and_crumb(H)
   return r.temperature[ctr], r.saturation[ctr], r.temperature[top], r.saturation[top], r.browning[top],
     r.browning[base], r.browning[ctr]
 end
+-- the loaf's area (m^2 per metre of depth, 2D): V0 J summed over its particles, every one made with the same V0
+-- (one dx and ppc), read at the start as volume / count (as bread.lua's)
+local v0
+local function area()
+  local p = s:particles { fields = { "J" } }
+  v0 = v0 or s:volume() / p.n
+  local a = 0
+  for k = 1, p.n do a = a + v0 * p.J[k] end
+  return a
+end
 local w0 = s:stats().water_mass
 local rows = { "t_real_min,centre_T_degC,centre_s,top_T_degC,top_s,height_m,water_left,top_browning,base_browning,"
-  .. "centre_browning" }
+  .. "centre_browning,area_m2" }
 local last
 -- the pictures' titles give the real time (the oven's rates run S times fast) beside the simulated seconds
 s:run { until_t = until_t, every = until_t / P.frames,
@@ -61,8 +71,8 @@ s:run { until_t = until_t, every = until_t / P.frames,
   on_frame = function(f)
     local H = height()
     local Tc, sc, Tt, st, bt, bb, bc = crust_and_crumb(H)
-    last = { f.t * S / 60, Tc, sc, Tt, st, H, s:stats().water_mass / w0, bt, bb, bc }
-    rows[#rows + 1] = ("%.2f,%.2f,%.4f,%.2f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f"):format(table.unpack(last))
+    last = { f.t * S / 60, Tc, sc, Tt, st, H, s:stats().water_mass / w0, bt, bb, bc, area() }
+    rows[#rows + 1] = ("%.2f,%.2f,%.4f,%.2f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,%.6g"):format(table.unpack(last))
     h.write("loaf.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
   end }
