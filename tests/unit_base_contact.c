@@ -347,6 +347,34 @@ TEST(heat_stays_within_its_sources) {
             }
 }
 
+/* fields/flip_bound.c at 1 and 2 threads: the slab at 0.625 mm (3264
+ * particles, past SCENE_PARALLEL_MIN) on the 5000 degC tray through beta 1e9
+ * (heat_stays_within_its_sources' case), latent heat off, 10 steps: the same
+ * hash at 1 and 2 threads (the tests run in parallel and read only; the
+ * shares, means and clamps are written in particle order), and the bound
+ * was reached (the hottest particle within 1 K of the tray, where the
+ * unbounded update passes it: 5506.5 degC at main). */
+TEST(flip_bound_threads_same_bits) {
+    uint64_t h[2] = {0, 1};
+    double hi = 0;
+    for (int t = 1; t <= 2; t++) {
+        hearth_set_threads(t);
+        hearth_scene *s = slab_at(0.000625, 5000, 1e9, 0, 0);
+        if (!s) break;
+        CHECK(s->ps.n >= SCENE_PARALLEL_MIN);
+        hearth_error err;
+        CHECK(hearth_scene_step(s, 10, &err) == HEARTH_OK);
+        h[t - 1] = hearth_scene_hash(s);
+        hi = -INFINITY;
+        for (int i = 0; i < s->ps.n; i++) hi = fmax(hi, pcold(&s->ps, PC_TEMPERATURE)[i]);
+        printf("    %d thread(s): %d particles, hottest %.6f degC, hash %016llx\n", t, s->ps.n, hi, (unsigned long long)h[t - 1]);
+        hearth_scene_destroy(s);
+    }
+    hearth_set_threads(0);
+    CHECK(hi > 4999 && hi <= 5000 + 1e-9 * 5101);
+    CHECK(h[0] == h[1]);
+}
+
 /* The dried face's reading (thermal.c's dried_face) at 1 and 2 threads: the
  * slab at dx 0.625 mm (3264 particles, past SCENE_PARALLEL_MIN: the step runs
  * on two threads) with its bottom 1 mm dried at 150 degC over wet particles
@@ -380,5 +408,5 @@ TEST(base_dried_face_threads_same_bits) {
     CHECK(h[0] == h[1]);
 }
 
-TEST_MAIN(T(base_front_follows_stefan), T(base_particle_follows_stefan), T(base_stays_below_tray), T(heat_stays_within_its_sources),
+TEST_MAIN(T(base_front_follows_stefan), T(base_particle_follows_stefan), T(base_stays_below_tray), T(heat_stays_within_its_sources), T(flip_bound_threads_same_bits),
           T(base_dried_face_threads_same_bits))
