@@ -140,7 +140,7 @@ static double leaves(const hearth_scene *s, int i, const double *X, const double
         const double t1 = node[CH_T * NPB + l], t0 = node[CH_T0 * NPB + l];
         dT += pn.w[j] * (t1 - t0);
         Tn += pn.w[j] * t1;
-        r += pn.w[j] * (1.0 - (marked ? node[BOUND_MARK * NPB + l] : 0.0)) * ((marked ? node[BOUND_A * NPB + l] : t0) - T[i]);
+        r += pn.w[j] * (1.0 - (marked ? fmin(node[BOUND_MARK * NPB + l], 1.0) : 0.0)) * ((marked ? node[BOUND_A * NPB + l] : t0) - T[i]);
     }
     const double f = s->def.heat_flip, T0 = T[i] + c;
     const double T1 = f == 1.0 ? T0 + dT : f * (T0 + dT) + (1.0 - f) * Tn;
@@ -240,7 +240,7 @@ hearth_status flip_bound_apply(hearth_scene *s, hearth_error *err) {
             for (int j = 0; j < pn.n; j++) {
                 const double *node = pn.node[j];
                 const int l = pn.l[j];
-                const double th = node[BOUND_MARK * NPB + l];
+                const double th = fmin(node[BOUND_MARK * NPB + l], 1.0); /* MPI slabs sum two ranks' shares of a halo node */
                 if (th > 0) cor[i] += pn.w[j] * th * (node[BOUND_A * NPB + l] - T[i]);
             }
         }
