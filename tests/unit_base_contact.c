@@ -107,8 +107,9 @@ typedef struct base {
     double Tall, t_all; /* the largest temperature of any particle over the samples (degC), and when (s) */
 } base;
 
-/* The slab on its tray at dx (NULL on failure, CHECKed). */
-static hearth_scene *slab(double dx) {
+/* The slab on its tray at dx (NULL on failure, CHECKed): the tray at tp through beta, latent heat on or off,
+ * forward or backward Euler. */
+static hearth_scene *slab_at(double dx, double tp, double beta, int latent, int implicit) {
     hearth_scene_def d = hearth_default_scene_def();
     d.dx = dx;
     d.gravity[1] = 0;
@@ -116,10 +117,10 @@ static hearth_scene *slab(double dx) {
     d.hi[0] = WIDTH + dx;
     d.lo[1] = -0.01; /* the tray's top at y = 0: room for its nodes below */
     d.hi[1] = DEPTH + 0.008;
-    d.latent_heat = 1;
+    d.latent_heat = latent;
     d.boiling_point = TB;
     d.browning = 1;
-    d.heat_implicit = (int)knob("BASE_IMPLICIT", 0);
+    d.heat_implicit = implicit;
     d.heat_flip = knob("BASE_FLIP", 1.0);
     d.oven_temperature = knob("BASE_OVEN", NAN); /* a measurement switch: an oven at T_b leaves the wet top at T_b */
     d.oven_beta = 30;
@@ -138,12 +139,14 @@ static hearth_scene *slab(double dx) {
     const double p0[3] = {0, 0, 0}, nrm[3] = {0, 1, 0};
     hearth_shape *plate = hearth_shape_plane(p0, nrm);
     hearth_collider_def cd = hearth_default_collider_def();
-    cd.shape = plate, cd.temperature = TP, cd.beta = BETA;
+    cd.shape = plate, cd.temperature = tp, cd.beta = beta;
     CHECK(hearth_scene_add_collider(s, &cd, &err) == 0);
     hearth_shape_free(plate);
     CHECK(hearth_scene_set_dt_limits(s, 0.5, knob("BASE_DT", 1.0), &err) == HEARTH_OK);
     return s;
 }
+
+static hearth_scene *slab(double dx) { return slab_at(dx, TP, BETA, 1, (int)knob("BASE_IMPLICIT", 0)); }
 
 static int run(double dx, base *r) {
     hearth_scene *s = slab(dx);
@@ -303,6 +306,75 @@ TEST(base_stays_below_tray) {
     for (int k = 0; k < 3; k++) CHECK(r[k].Tall <= TP + 1e-9);
 }
 
+/* Heat's maximum principle at the extremes (#18, helper maxprinciple): the
+ * slab, starting at T_b = 100 degC, on a tray at the largest temperature the
+ * schema allows (5000 degC) through beta = 1e9 W/(m^2 K), no oven, no
+ * expansion: nothing in the scene is hotter than the tray or colder than
+ * T_b, so no particle may pass either, at any step. Bar set before the run:
+ * 1e-9 of the bounds' scale (|5000| + |100| + 1 K, 5.1e-6 K), rounding's
+ * room and nothing more, checked after every step. Four cases at 5 and
+ * 2.5 mm: forward Euler (400 steps: the Robin limit rho alpha dx / (2 beta)
+ * makes them microseconds) and backward Euler (40 steps of up to 1 s), latent
+ * heat on and off. Before fields/flip_bound.c (main at c7b44f0) the forward
+ * Euler cases reached 6500-7000 degC within a few steps (FLIP's increment
+ * at the tray's face; docs/validation.md, "The heat's maximum principle"). */
+TEST(heat_stays_within_its_sources) {
+    const double tp = 5000, lo = TB, tol = 1e-9 * (tp + TB + 1);
+    for (int implicit = 0; implicit < 2; implicit++)
+        for (int latent = 0; latent < 2; latent++)
+            for (int k = 0; k < 2; k++) {
+                const double dx = DXS[k];
+                hearth_scene *s = slab_at(dx, tp, 1e9, latent, implicit);
+                if (!s) return;
+                hearth_error err;
+                double hi_T = -INFINITY, lo_T = INFINITY;
+                const int steps = implicit ? 40 : 400;
+                for (int n = 0; n < steps; n++) {
+                    if (hearth_scene_step(s, 1, &err) != HEARTH_OK) {
+                        printf("    step: %s\n", err.msg);
+                        CHECK(0);
+                        break;
+                    }
+                    const double *T = pcold(&s->ps, PC_TEMPERATURE);
+                    for (int i = 0; i < s->ps.n; i++) hi_T = fmax(hi_T, T[i]), lo_T = fmin(lo_T, T[i]);
+                }
+                printf("    %s, latent heat %s, dx %.4g mm: %d steps to %.3g s, particles %.6f .. %.6f degC (bounds %.0f .. %.0f)\n",
+                       implicit ? "backward Euler" : "forward Euler", latent ? "on " : "off", 1e3 * dx, steps, hearth_scene_time(s),
+                       lo_T, hi_T, lo, tp);
+                CHECK(hi_T <= tp + tol);
+                CHECK(lo_T >= lo - tol);
+                hearth_scene_destroy(s);
+            }
+}
+
+/* fields/flip_bound.c at 1 and 2 threads: the slab at 0.625 mm (3264
+ * particles, past SCENE_PARALLEL_MIN) on the 5000 degC tray through beta 1e9
+ * (heat_stays_within_its_sources' case), latent heat off, 10 steps: the same
+ * hash at 1 and 2 threads (the tests run in parallel and read only; the
+ * shares, means and clamps are written in particle order), and the bound
+ * was reached (the hottest particle within 1 K of the tray, where the
+ * unbounded update passes it: 5506.5 degC at main). */
+TEST(flip_bound_threads_same_bits) {
+    uint64_t h[2] = {0, 1};
+    double hi = 0;
+    for (int t = 1; t <= 2; t++) {
+        hearth_set_threads(t);
+        hearth_scene *s = slab_at(0.000625, 5000, 1e9, 0, 0);
+        if (!s) break;
+        CHECK(s->ps.n >= SCENE_PARALLEL_MIN);
+        hearth_error err;
+        CHECK(hearth_scene_step(s, 10, &err) == HEARTH_OK);
+        h[t - 1] = hearth_scene_hash(s);
+        hi = -INFINITY;
+        for (int i = 0; i < s->ps.n; i++) hi = fmax(hi, pcold(&s->ps, PC_TEMPERATURE)[i]);
+        printf("    %d thread(s): %d particles, hottest %.6f degC, hash %016llx\n", t, s->ps.n, hi, (unsigned long long)h[t - 1]);
+        hearth_scene_destroy(s);
+    }
+    hearth_set_threads(0);
+    CHECK(hi > 4999 && hi <= 5000 + 1e-9 * 5101);
+    CHECK(h[0] == h[1]);
+}
+
 /* The dried face's reading (thermal.c's dried_face) at 1 and 2 threads: the
  * slab at dx 0.625 mm (3264 particles, past SCENE_PARALLEL_MIN: the step runs
  * on two threads) with its bottom 1 mm dried at 150 degC over wet particles
@@ -336,5 +408,5 @@ TEST(base_dried_face_threads_same_bits) {
     CHECK(h[0] == h[1]);
 }
 
-TEST_MAIN(T(base_front_follows_stefan), T(base_particle_follows_stefan), T(base_stays_below_tray),
+TEST_MAIN(T(base_front_follows_stefan), T(base_particle_follows_stefan), T(base_stays_below_tray), T(heat_stays_within_its_sources), T(flip_bound_threads_same_bits),
           T(base_dried_face_threads_same_bits))

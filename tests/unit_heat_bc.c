@@ -187,7 +187,11 @@ static double ladder(const char *what, slab_case c, const int *cells_in, int nle
 }
 
 /* A slab on a heated plate (Robin contact, Bi = 1 and Bi = 100 ~ contact)
- * converges to the series at second order: +0.25% and +0.40% at 20 cells.
+ * converges to the series at second order: +0.25% and +0.61% at 20 cells
+ * (Bi 100: +19.6%, +4.4%, +0.61% at 5, 10, 20 cells since fields/flip_bound.c
+ * clamps the contact rows at the plate's 120 degC; they overshot to 147,
+ * 143, 137 degC before, with +8.1%, +1.5%, +0.40%: docs/validation.md,
+ * "The heat's maximum principle").
  * The band it replaced (particles within dx each carrying V_p / dx at their
  * own temperature) put the contact half a cell inside the slab: first order,
  * +2.7% and +10.5% at 20 cells (orders 1.03 and 1.12). */

@@ -74,9 +74,13 @@
  * it is a projection, so it needs no step limit.
  *
  * FLIP keeps heat exactly but not a maximum principle: where two materials
- * share nodes a particle can overshoot (seen: 110 degC from a 90 degC start in
- * `heat_insulated_conservation_explicit`); the scene's heat_flip < 1 blends
- * toward PIC, which keeps one (`heat_flip_pic_bounds`). */
+ * share nodes a particle can overshoot (seen: 108.7 degC from a 90 degC start
+ * in `heat_flip_pic_bounds`), and at a strong Robin contact the contact rows
+ * pass the collider's temperature (7035 degC on a 5000 degC tray at beta
+ * 1e9). fields/flip_bound.c brings such a particle back before G2P
+ * (`heat_flip_pic_bounds`, `heat_stays_within_its_sources`); the nodes'
+ * own update is not bounded (the Robin contact's consistent weights, the
+ * B-spline Laplacian's positive off-diagonal entries). */
 #include "thermal.h"
 
 #include <math.h>
@@ -126,6 +130,7 @@ void thermal_free(thermal_state *h) {
     mem_free(h->fix_w, sizeof(double) * (size_t)h->fix_cap);
     mem_free(h->hold_h, sizeof(double) * (size_t)h->hold_cap);
     mem_free(h->sub_fit, sizeof(double) * h->sub_cap);
+    mem_free(h->bound_c, sizeof(double) * 2 * (size_t)h->bound_cap);
     thermal_init(h);
 }
 

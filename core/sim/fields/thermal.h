@@ -45,6 +45,11 @@ typedef struct thermal_state {
      * and their gradient), grown when a latent_heat scene first has a dried particle; scratch within a step */
     double *sub_fit;
     size_t sub_cap;
+    /* flip_bound.c's scratch (2 doubles a particle: its move, its share of the move left) and the field step's
+     * bounds (degC, taken before subcell.c moves the dried particles) */
+    double *bound_c;
+    int bound_cap;
+    double bound_lo, bound_hi, bound_tol;
 } thermal_state;
 
 /// Empty state (allocates nothing).

@@ -74,6 +74,7 @@
 #include "mixing.h"
 #include "transport.h"
 #include "subcell.h"
+#include "flip_bound.h"
 #include "tensor2.h"
 #include "phase_clock.h"
 
@@ -800,7 +801,10 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         if ((st = mpm_ranks_fields_sum(s, heat ? sums : sums + 2, (heat ? 2 : 0) + (water ? 1 : 0), err))) return st;
         if (heat && (st = thermal_finish(s, fdt, err))) return st;
         /* latent_heat: the dried particles' sub-cell exchange, from the step-start temperatures G2P adds to */
+        if (heat) flip_bound_prepare(s, fdt);
         if (heat && water && (st = subcell_exchange(s, fdt, err))) return st;
+        /* FLIP's increment within the heat's bounds (flip_bound.c), from the temperatures G2P adds to */
+        if (heat && (st = flip_bound_apply(s, err))) return st;
         mpm_ranks_fields_clear(s);
     }
     if (s->def.two_field) mpm_two_field_split(s);
