@@ -41,8 +41,8 @@
  * over every wet particle: a step where nothing passed T_b returns at once;
  * on one rank a pass makes G_i and the gradient only where this pass's
  * senders reach and passes by the receivers whose stencil reaches no such
- * block (front_pass says why that changes no bit), and each pair's g is made
- * once a step (front_pair_of). MPI slabs keep the whole walk. Rejected (docs/validation.md, "A sharper boiling front" and its
+ * block (front_pass says why that changes no bit), and each pair's g and each
+ * particle's stencil are made once a step (front_pair_of, front_stencil). MPI slabs keep the whole walk. Rejected (docs/validation.md, "A sharper boiling front" and its
  * sequel): ordering by dryness (exp(40 (1 - X/X_0))), which let one column
  * run ahead of its neighbours; the ordering only at nodes holding both a
  * dried and a wet particle, which dried the crumb slab 14.2% early. On its
