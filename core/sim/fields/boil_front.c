@@ -1,6 +1,7 @@
 /* boil_front.c: the boiling front of latent_heat on MPM (issue #18), water_boil_front and its passes, out of
  * water.c (which keeps water_boil, the per-particle boiling SPH calls and G2P's test), so that water.c stays
  * about water's transport. The names keep water.h's prefix: water.h declares them. */
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 
@@ -90,6 +91,8 @@ static size_t front_need(const hearth_scene *s) {
 
 hearth_status water_boil_front_prepare(hearth_scene *s, hearth_error *err) {
     water_state *w = &s->water;
+    if ((size_t)s->g.nactive * (size_t)s->g.nodes_per_block > (size_t)INT_MAX) /* front_stencil packs a node in an int */
+        return err_set(err, HEARTH_ERR_NOMEM, "too many grid blocks for the boiling front's stencils (%d active)", s->g.nactive);
     const size_t need = front_need(s);
     if (need <= w->front_cap) return HEARTH_OK;
     double *f = mem_alloc(sizeof(double) * need);
@@ -199,11 +202,7 @@ static __attribute__((noinline)) void front_nodes_make(const grid *g, const fron
     int *ni = fs->node + (size_t)NG * i;
     grid_point_nodes pn;
     grid_point_nodes_of(g, x, &pn);
-    const size_t blk = (size_t)g->nch * (size_t)NPB;
-    for (int j = 0; j < pn.n; j++) {
-        wi[j] = pn.w[j];
-        ni[j] = (int)((size_t)(pn.node[j] - g->data) / blk) * NPB + pn.l[j];
-    }
+    for (int j = 0; j < pn.n; j++) wi[j] = pn.w[j], ni[j] = pn.slot[j] * NPB + pn.l[j];
     fs->n[i] = pn.n;
 }
 
@@ -224,10 +223,15 @@ static inline double *front_node(const grid *g, const front_stencil *fs, int at,
 /* front_pair of a particle's j-th stencil node (made: below). */
 static __attribute__((noinline)) double front_pair_make(const grid *g, const front_stencil *fs, double *gp, const int *node,
                                                         int j, const double *x) {
-    int l, bc[3], gi[3];
+    int l, gi[3] = {0, 0, 0};
     const double *nd = front_node(g, fs, node[j], &l);
-    grid_block_coords(g, g->active[node[j] >> fs->shift], bc);
-    grid_node_index(g, bc, l, gi);
+    /* the node's grid coordinates: the stencil's base on each axis (grid_point_weights' arithmetic) and the
+     * one of its 3 nodes whose local index is the node's (3 < GRID_B, so one does) */
+    for (int d = 0; d < g->dim; d++) {
+        const int base = (int)floor((x[d] - g->lo[d]) * g->inv_dx - 0.5);
+        const int ld = g->dim == 2 ? (d ? l % GRID_B : l / GRID_B) : (d == 0 ? l / (GRID_B * GRID_B) : d == 1 ? (l / GRID_B) % GRID_B : l % GRID_B);
+        gi[d] = base + (((ld - base) % GRID_B) + GRID_B) % GRID_B;
+    }
     gp[j] = front_pair(g, nd, l, x, gi);
     return gp[j];
 }

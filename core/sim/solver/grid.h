@@ -184,7 +184,7 @@ static inline void grid_point_weights(const grid *g, const double x[3], int base
 /// fields/subcell.c).
 typedef struct grid_point_nodes {
     double *node[27];
-    int l[27], gi[27][3];
+    int slot[27], l[27], gi[27][3]; /* slot: node's block storage slot (node = grid_block(g, slot)) */
     double w[27];
     int n;
 } grid_point_nodes;
@@ -213,7 +213,7 @@ static inline void grid_point_nodes_of(const grid *g, const double x[3], grid_po
                 const int slot = g->slot[grid_block_id(g, bq[0][a], bq[1][b], bq[2][c])];
                 if (slot < 0 || !(wt > 0)) continue;
                 const int k = pn->n++;
-                pn->node[k] = grid_block(g, slot);
+                pn->node[k] = grid_block(g, slot), pn->slot[k] = slot;
                 pn->l[k] = D == 2 ? lq[0][a] * GRID_B + lq[1][b] : (lq[0][a] * GRID_B + lq[1][b]) * GRID_B + lq[2][c];
                 pn->w[k] = wt;
                 pn->gi[k][0] = gq[0][a], pn->gi[k][1] = gq[1][b], pn->gi[k][2] = gq[2][c];
