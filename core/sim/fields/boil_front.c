@@ -182,9 +182,11 @@ static double front_pair(const grid *g, const double *node, int l, const double 
     return exp(WATER_FRONT_K * e / (sqrt(a2) + 0.1));
 }
 
-/* A particle's stencil, made once a step (the frontcost branch, docs/performance.md "The boiling front's
- * stencils"): the passes and front_return walked grid_point_nodes_of afresh for every sender and receiver in
- * each of their loops (up to 3 a pass, 8 passes, then 2), 56% of latent_heat_crumb_plateau's instructions.
+/* A particle's stencil, made once a step (helper citime, docs/performance.md "Room in CI: the front's
+ * stencils, a 2D box's bounds"): the passes and front_return walked grid_point_nodes_of afresh for every
+ * sender and receiver in each of their loops (up to 3 a pass, 8 passes, then 2): with them, the front was 63%
+ * of latent_heat_crumb_plateau's sampled time. It costs 9 doubles and 10 ints a particle in 2D (27 and 28 in
+ * 3D) in the front's one scratch allocation.
  * The positions and the grid's storage hold from G2P to the front's end, so each walk found the same nodes and
  * weights: they are kept here in grid_point_nodes_of's order, the node as slot * nodes_per_block + l, and the
  * weights are its products, bit for bit. n[i] < 0: not made yet this step. */
@@ -238,7 +240,7 @@ static __attribute__((noinline)) double front_pair_make(const grid *g, const fro
 
 /* front_pair of a particle's j-th stencil node, made once a step: the positions and the gradient hold through
  * the passes, so it is the same number every pass asks for (0: not made yet; exp(K e) > 0). The node's grid
- * coordinates from its block's, which are grid_point_nodes_of's gi. */
+ * coordinates (front_pair_make) are grid_point_nodes_of's gi. */
 static inline double front_pair_of(const grid *g, const front_stencil *fs, double *gp, const int *node, int j, const double *x) {
     return gp[j] > 0 ? gp[j] : front_pair_make(g, fs, gp, node, j, x);
 }
