@@ -6,6 +6,7 @@
 
 #include "alloc.h"
 #include "colliders.h"
+#include "tensor.h"
 #include "hearth/hearth.h"
 #include "test.h"
 
@@ -583,5 +584,95 @@ TEST(plane_box_holds_the_band) {
     hearth_shape_free(sl);
 }
 
+/* collider_bound_prism (helper citime): a 2D box (no z extent) gets its rectangle's box grown by the margin,
+ * open in z, and every point whose SDF is within the margin must still be in it, or MPM's callers would miss
+ * a contact they found before (each asks collider_near first). A box moved 7 s at 2.9 mm/s, and the same
+ * box turned about z by 0.7 rad, at dx 1/64 and 2.5 mm: points on 4001 rays from the box's centre at -3..3
+ * margins past its rectangle (z spread over -5..5 m), and on the +x face 200 ulp steps either side of the
+ * margin. Bar, a priori: none within the margin missed; every point past 1.01 margins of the moved
+ * rectangle's own axis-aligned box (along x or y) left out where the box is finite (the unturned box, and the
+ * turned one when its R keeps z exactly); a 3D box keeps its finite box
+ * and a 2D sphere's box is not narrowed. */
+TEST(box_2d_box_holds_the_band) {
+    hearth_error err;
+    long held = 0, missed = 0, pruned = 0, far = 0, turned_finite = 0;
+    for (int t = 0; t < 2; t++)
+        for (int r = 0; r < 2; r++) {
+            const double dx = r ? 0.0025 : 1.0 / 64, M = 2 * dx;
+            hearth_shape *bx = hearth_shape_box((double[]){0.3, 0.2, 0}, (double[]){0.05, 0.02, 0});
+            hearth_collider_def def;
+            memset(&def, 0, sizeof def);
+            def.shape = bx;
+            def.velocity[0] = 0.0029, def.velocity[1] = -0.0013;
+            def.omega[2] = t ? 0.1 : 0.0;
+            for (int d = 0; d < 2; d++) def.pivot[d] = 0.31;
+            collider c;
+            CHECK(collider_init(&c, &def, &err) == HEARTH_OK);
+            hearth_shape_free(bx);
+            for (int i = 0; i < 7; i++) collider_advance(&c, 1.0);
+            collider_update_bounds(&c, M);
+            CHECK(!isfinite(c.blo[2]) && !isfinite(c.bhi[0])); /* before: the whole space */
+            collider_bound_prism(&c, M);
+            const int finite = isfinite(c.blo[0]) && isfinite(c.bhi[0]) && isfinite(c.blo[1]) && isfinite(c.bhi[1]);
+            CHECK(!isfinite(c.blo[2]) && !isfinite(c.bhi[2]));
+            if (!t) CHECK(finite);
+            turned_finite += t && finite;
+            double ctr[3] = {0.3, 0.2, 0}, cw[3], alo[2] = {INFINITY, INFINITY}, ahi[2] = {-INFINITY, -INFINITY};
+            for (int d = 0; d < 3; d++) ctr[d] -= c.pivot0[d];
+            t3_mulv(c.R, ctr, cw);
+            for (int d = 0; d < 2; d++) cw[d] += c.pivot0[d] + c.offset[d];
+            for (int k = 0; k < 4; k++) { /* the moved rectangle's own axis-aligned box, for "far" */
+                const double e[2] = {k & 1 ? 0.05 : -0.05, k & 2 ? 0.02 : -0.02};
+                for (int d = 0; d < 2; d++) {
+                    const double v = cw[d] + c.R[3 * d] * e[0] + c.R[3 * d + 1] * e[1];
+                    alo[d] = fmin(alo[d], v), ahi[d] = fmax(ahi[d], v);
+                }
+            }
+            for (int j = 0; j < 4401; j++) {
+                double x[3];
+                x[2] = -5 + 10 * (double)((j * 7919) % 4001) / 4000;
+                if (j < 4001) { /* a ray at angle a from the centre, to -3..3 margins past the rectangle's corner radius */
+                    const double a = 2 * 3.14159265358979323846 * (double)((j * 104729) % 4001) / 4001, len = hypot(0.05, 0.02) + (-3 + 6 * (double)j / 4000) * M;
+                    x[0] = cw[0] + len * cos(a), x[1] = cw[1] + len * sin(a);
+                } else { /* the +x face (unturned) at the margin, 200 ulp steps either side */
+                    double y = cw[0] + 0.05 + M;
+                    for (int q = 0; q < 200; q++) y = nextafter(y, -INFINITY);
+                    for (int q = 0; q < j - 4001; q++) y = nextafter(y, INFINITY);
+                    x[0] = y, x[1] = cw[1];
+                }
+                const double sd = collider_sdf(&c, x, NULL);
+                const int near = collider_near(&c, x);
+                if (sd <= M) held += near, missed += !near;
+                /* far: past 1.01 margins of that box along x or y (a point by its corner may be farther than
+                 * the margin from the rectangle and still in the box: no bar on those) */
+                const double ex = fmax(fmax(alo[0] - x[0], x[0] - ahi[0]), fmax(alo[1] - x[1], x[1] - ahi[1]));
+                if (finite && ex >= 1.01 * M) far++, pruned += !near;
+            }
+            collider_free(&c);
+        }
+    printf("  points within the margin: %ld in the box, %ld missed; past 1.01 margins of its box: %ld of %ld left out; turned box "
+           "finite at %ld of 2 resolutions\n", held, missed, pruned, far, turned_finite);
+    CHECK(missed == 0 && held > 0);
+    CHECK(pruned == far && far > 0);
+    /* a 3D box keeps collider_update_bounds' finite box; a 2D sphere (not a box) is left as it was */
+    hearth_shape *b3 = hearth_shape_box((double[]){0.3, 0.2, 0.1}, (double[]){0.05, 0.02, 0.03});
+    hearth_shape *sp = hearth_shape_sphere((double[]){0.3, 0.2, 0}, 0.05);
+    for (int k = 0; k < 2; k++) {
+        hearth_collider_def def;
+        memset(&def, 0, sizeof def);
+        def.shape = k ? sp : b3;
+        collider c;
+        CHECK(collider_init(&c, &def, &err) == HEARTH_OK);
+        collider_update_bounds(&c, 0.01);
+        double lo[3], hi[3];
+        memcpy(lo, c.blo, sizeof lo), memcpy(hi, c.bhi, sizeof hi);
+        collider_bound_prism(&c, 0.01);
+        CHECK(memcmp(lo, c.blo, sizeof lo) == 0 && memcmp(hi, c.bhi, sizeof hi) == 0);
+        collider_free(&c);
+    }
+    hearth_shape_free(b3);
+    hearth_shape_free(sp);
+}
+
 TEST_MAIN(T(shape_sdf_primitives), T(shape_sdf_combine), T(shape_normals), T(collider_motion), T(contact_modes),
-          T(collider_bad_def), T(plane_box_holds_the_band))
+          T(collider_bad_def), T(plane_box_holds_the_band), T(box_2d_box_holds_the_band))

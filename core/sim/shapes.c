@@ -252,6 +252,8 @@ hearth_shape *hearth_shape_mask(const char *png_path, const double lo[2], const 
     return s;
 }
 
+int shape_box_2d(const hearth_shape *s) { return s && s->kind == SHAPE_BOX && !(s->b[2] > 0); }
+
 /* Whether s is a function of x and y only (a 2D shape): then the extrusion
  * formula below is exact. */
 static int z_free(const hearth_shape *s) {

@@ -16,6 +16,9 @@ hearth_shape *shape_read(FILE *f, int depth);
 /// Whether s is a plane whose normal is a coordinate axis exactly (the other two components zero, this one
 /// +-1): its axis, the normal's sign and the plane point's coordinate on that axis. 0 for anything else.
 int shape_axis_plane(const hearth_shape *s, int *axis, int *sign, double *c);
+/// 1 for a box with no z extent (a 2D scene's box): its SDF is the exact distance to its x-y rectangle,
+/// whatever z is (colliders.c's collider_bound_prism).
+int shape_box_2d(const hearth_shape *s);
 struct ck_cursor;
 /// Deepest shape tree a checkpoint may hold (levels below the root).
 #define SHAPE_DEPTH_MAX 64

@@ -1,6 +1,7 @@
 /* boil_front.c: the boiling front of latent_heat on MPM (issue #18), water_boil_front and its passes, out of
  * water.c (which keeps water_boil, the per-particle boiling SPH calls and G2P's test), so that water.c stays
  * about water's transport. The names keep water.h's prefix: water.h declares them. */
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 
@@ -41,8 +42,8 @@
  * over every wet particle: a step where nothing passed T_b returns at once;
  * on one rank a pass makes G_i and the gradient only where this pass's
  * senders reach and passes by the receivers whose stencil reaches no such
- * block (front_pass says why that changes no bit), and each pair's g is made
- * once a step (front_pair_of). MPI slabs keep the whole walk. Rejected (docs/validation.md, "A sharper boiling front" and its
+ * block (front_pass says why that changes no bit), and each pair's g and each
+ * particle's stencil are made once a step (front_pair_of, front_stencil). MPI slabs keep the whole walk. Rejected (docs/validation.md, "A sharper boiling front" and its
  * sequel): ordering by dryness (exp(40 (1 - X/X_0))), which let one column
  * run ahead of its neighbours; the ordering only at nodes holding both a
  * dried and a wet particle, which dried the crumb slab 14.2% early. On its
@@ -79,14 +80,19 @@ enum { FRONT_H = CH_R, FRONT_G = CH_B }; /* dead after thermal_finish until the 
 /* Stencil nodes a particle: the pair weights it keeps for the step (front_pair_of). */
 static int front_ng(const grid *g) { return g->dim == 3 ? 27 : 9; }
 
-/* The scratch's doubles: FRONT_NS a particle, its pair weights (front_ng), then a byte of marks per active
- * grid block (FB_*), in one allocation, so the front asks the allocator what it asked before. */
+/* The scratch's doubles: FRONT_NS a particle, its pair weights (front_ng), its stencil's weights (front_ng),
+ * the stencil's nodes and count (front_ng + 1 ints: front_stencil), then a byte of marks per active grid block
+ * (FB_*), in one allocation, so the front asks the allocator as often as it did before the stencil cache. */
+static size_t front_ints(const hearth_scene *s) { return ((size_t)front_ng(&s->g) + 1) * (size_t)s->ps.n; }
 static size_t front_need(const hearth_scene *s) {
-    return (FRONT_NS + (size_t)front_ng(&s->g)) * (size_t)s->ps.n + ((size_t)s->g.nactive + sizeof(double) - 1) / sizeof(double);
+    return (FRONT_NS + 2 * (size_t)front_ng(&s->g)) * (size_t)s->ps.n + (front_ints(s) * sizeof(int) + sizeof(double) - 1) / sizeof(double) +
+           ((size_t)s->g.nactive + sizeof(double) - 1) / sizeof(double);
 }
 
 hearth_status water_boil_front_prepare(hearth_scene *s, hearth_error *err) {
     water_state *w = &s->water;
+    if ((size_t)s->g.nactive * (size_t)s->g.nodes_per_block > (size_t)INT_MAX) /* front_stencil packs a node in an int */
+        return err_set(err, HEARTH_ERR_NOMEM, "too many grid blocks for the boiling front's stencils (%d active)", s->g.nactive);
     const size_t need = front_need(s);
     if (need <= w->front_cap) return HEARTH_OK;
     double *f = mem_alloc(sizeof(double) * need);
@@ -176,11 +182,67 @@ static double front_pair(const grid *g, const double *node, int l, const double 
     return exp(WATER_FRONT_K * e / (sqrt(a2) + 0.1));
 }
 
-/* front_pair of a particle's j-th stencil node, made once a step: the positions and the gradient hold through
- * the passes, so it is the same number every pass asks for (0: not made yet; exp(K e) > 0). */
-static double front_pair_of(const grid *g, double *gp, const grid_point_nodes *pn, int j, const double *x) {
-    if (!(gp[j] > 0)) gp[j] = front_pair(g, pn->node[j], pn->l[j], x, pn->gi[j]);
+/* A particle's stencil, made once a step (helper citime, docs/performance.md "Room in CI: the front's
+ * stencils, a 2D box's bounds"): the passes and front_return walked grid_point_nodes_of afresh for every
+ * sender and receiver in each of their loops (up to 3 a pass, 8 passes, then 2): with them, the front was 63%
+ * of latent_heat_crumb_plateau's sampled time. It costs 9 doubles and 10 ints a particle in 2D (27 and 28 in
+ * 3D) in the front's one scratch allocation.
+ * The positions and the grid's storage hold from G2P to the front's end, so each walk found the same nodes and
+ * weights: they are kept here in grid_point_nodes_of's order, the node as slot * nodes_per_block + l, and the
+ * weights are its products, bit for bit. n[i] < 0: not made yet this step. */
+typedef struct front_stencil {
+    double *w; /* front_ng a particle */
+    int *node; /* front_ng a particle: slot * nodes_per_block + l */
+    int *n;    /* a particle: its nodes, -1 before it is made */
+    int shift; /* log2 nodes_per_block (16 or 64): a node's slot and l by a shift and a mask, not a division */
+} front_stencil;
+
+/* Particle i's stencil made: grid_point_nodes_of's nodes and weights in its order. */
+static __attribute__((noinline)) void front_nodes_make(const grid *g, const front_stencil *fs, int i, const double *x) {
+    const int NG = front_ng(g), NPB = g->nodes_per_block;
+    double *wi = fs->w + (size_t)NG * i;
+    int *ni = fs->node + (size_t)NG * i;
+    grid_point_nodes pn;
+    grid_point_nodes_of(g, x, &pn);
+    for (int j = 0; j < pn.n; j++) wi[j] = pn.w[j], ni[j] = pn.slot[j] * NPB + pn.l[j];
+    fs->n[i] = pn.n;
+}
+
+/* Particle i's stencil nodes (their count; *w and *node its rows), made on the first ask of the step. */
+static inline int front_nodes(const grid *g, const front_stencil *fs, int i, const double *x, const double **w, const int **node) {
+    const int NG = front_ng(g);
+    if (fs->n[i] < 0) front_nodes_make(g, fs, i, x);
+    *w = fs->w + (size_t)NG * i, *node = fs->node + (size_t)NG * i;
+    return fs->n[i];
+}
+
+/* Storage of a stencil node (front_stencil's packing) and its local index in *l. */
+static inline double *front_node(const grid *g, const front_stencil *fs, int at, int *l) {
+    *l = at & ((1 << fs->shift) - 1);
+    return grid_block(g, at >> fs->shift);
+}
+
+/* front_pair of a particle's j-th stencil node (made: below). */
+static __attribute__((noinline)) double front_pair_make(const grid *g, const front_stencil *fs, double *gp, const int *node,
+                                                        int j, const double *x) {
+    int l, gi[3] = {0, 0, 0};
+    const double *nd = front_node(g, fs, node[j], &l);
+    /* the node's grid coordinates: the stencil's base on each axis (grid_point_weights' arithmetic) and the
+     * one of its 3 nodes whose local index is the node's (3 < GRID_B, so one does) */
+    for (int d = 0; d < g->dim; d++) {
+        const int base = (int)floor((x[d] - g->lo[d]) * g->inv_dx - 0.5);
+        const int ld = g->dim == 2 ? (d ? l % GRID_B : l / GRID_B) : (d == 0 ? l / (GRID_B * GRID_B) : d == 1 ? (l / GRID_B) % GRID_B : l % GRID_B);
+        gi[d] = base + (((ld - base) % GRID_B) + GRID_B) % GRID_B;
+    }
+    gp[j] = front_pair(g, nd, l, x, gi);
     return gp[j];
+}
+
+/* front_pair of a particle's j-th stencil node, made once a step: the positions and the gradient hold through
+ * the passes, so it is the same number every pass asks for (0: not made yet; exp(K e) > 0). The node's grid
+ * coordinates (front_pair_make) are grid_point_nodes_of's gi. */
+static inline double front_pair_of(const grid *g, const front_stencil *fs, double *gp, const int *node, int j, const double *x) {
+    return gp[j] > 0 ? gp[j] : front_pair_make(g, fs, gp, node, j, x);
 }
 
 /* The heat particle i's water can boil, L x its spare over the floor (water_boil's cap; 0 without spare): what
@@ -210,8 +272,9 @@ static double front_room(double cap, double E) { return cap >= E ? 1.0 : cap > 0
  * receiver's q gains +0 there whatever G_i is; its `back` only counts times r_p, +0 for a non-sender, and
  * a sender's nodes all hold G_i, summed over the same receivers in the same order; a passed-by receiver's
  * r, cap, Q, kept and the pass's sum `left` change by +0 (q = take = 0). */
-static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned char *fb, double *gc, const double *E,
-                         double *r, double *cap, double *Q, double *kept, double *near, hearth_error *err, hearth_status *st) {
+static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned char *fb, double *gc, const front_stencil *fs,
+                         const double *E, double *r, double *cap, double *Q, double *kept, double *near, hearth_error *err,
+                         hearth_status *st) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block, n = s->ps.n, NG = front_ng(g);
     const double *X = pcold(&s->ps, PC_X);
@@ -228,12 +291,13 @@ static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned ch
     /* the senders, then the receivers: each channel still sums its particles in their order */
     for (int i = 0; i < n; i++) {
         if (!(r[i] > 0)) continue;
-        grid_point_nodes pn;
-        grid_point_nodes_of(g, X + 3 * i, &pn);
-        for (int j = 0; j < pn.n; j++) {
-            double *node = pn.node[j];
-            const int l = pn.l[j];
-            node[chs[0] * NPB + l] += pn.w[j] * r[i];
+        const double *w;
+        const int *at;
+        const int nn = front_nodes(g, fs, i, X + 3 * i, &w, &at);
+        for (int j = 0; j < nn; j++) {
+            int l;
+            double *node = front_node(g, fs, at[j], &l);
+            node[chs[0] * NPB + l] += w[j] * r[i];
             if (!all && node[chs[1] * NPB + l] < 0) node[chs[1] * NPB + l] = 0, front_mark(g, fb, node);
         }
     }
@@ -242,30 +306,32 @@ static double front_pass(hearth_scene *s, const int chs[2], int all, unsigned ch
         near[i] = all || front_near(g, fb, X + 3 * i);
         if (!(near[i] > 0)) continue;
         const double rho = front_room(cap[i], E[2 * i]);
-        grid_point_nodes pn;
-        grid_point_nodes_of(g, X + 3 * i, &pn);
-        for (int j = 0; j < pn.n; j++) {
-            double *node = pn.node[j];
-            const int l = pn.l[j];
-            if (!(node[chs[1] * NPB + l] < 0)) node[chs[1] * NPB + l] += pn.w[j] * (rho * front_pair_of(g, gc + (size_t)NG * i, &pn, j, X + 3 * i));
+        const double *w;
+        const int *at;
+        const int nn = front_nodes(g, fs, i, X + 3 * i, &w, &at);
+        for (int j = 0; j < nn; j++) {
+            int l;
+            double *node = front_node(g, fs, at[j], &l);
+            if (!(node[chs[1] * NPB + l] < 0)) node[chs[1] * NPB + l] += w[j] * (rho * front_pair_of(g, fs, gc + (size_t)NG * i, at, j, X + 3 * i));
         }
     }
     if ((*st = mpm_ranks_fields_sum(s, chs, 2, err))) return 0;
     double left = 0;
     for (int i = 0; i < n; i++) {
         if (!(r[i] > 0) && !(cap[i] > 0 && near[i] > 0)) continue;
-        grid_point_nodes pn;
-        grid_point_nodes_of(g, X + 3 * i, &pn);
+        const double *w;
+        const int *at;
+        const int nn = front_nodes(g, fs, i, X + 3 * i, &w, &at);
         double q = 0, back = 0, none = 1; /* none: the weight on nodes without storage */
         const double rho = cap[i] > 0 ? front_room(cap[i], E[2 * i]) : 0.0;
-        for (int j = 0; j < pn.n; j++) {
-            const double *node = pn.node[j];
-            const int l = pn.l[j];
-            const double wt = pn.w[j];
+        for (int j = 0; j < nn; j++) {
+            int l;
+            const double *node = front_node(g, fs, at[j], &l);
+            const double wt = w[j];
             none -= wt;
             const double G = node[chs[1] * NPB + l];
             if (G > 0) {
-                if (cap[i] > 0) q += wt * (rho * front_pair_of(g, gc + (size_t)NG * i, &pn, j, X + 3 * i)) * node[chs[0] * NPB + l] / G;
+                if (cap[i] > 0) q += wt * (rho * front_pair_of(g, fs, gc + (size_t)NG * i, at, j, X + 3 * i)) * node[chs[0] * NPB + l] / G;
             } else {
                 back += wt;
             }
@@ -289,8 +355,8 @@ static double front_sent(const hearth_scene *s, int i, const double *E, const do
 
 /* The rest r_p back to the particles that boiled (E_p > 0), by w_ip s_p / sum_q w_iq s_q on each node,
  * into kept; a sender's weight on a node without storage stays with it. r ends at 0. */
-static hearth_status front_return(hearth_scene *s, const int chs[2], double *r, double *kept, const double *E,
-                                  hearth_error *err) {
+static hearth_status front_return(hearth_scene *s, const int chs[2], const front_stencil *fs, double *r, double *kept,
+                                  const double *E, hearth_error *err) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block, n = s->ps.n;
     const double *X = pcold(&s->ps, PC_X), *W = pcold(&s->ps, PC_WATER), *vol = mpm_state_of(s)->vol;
@@ -300,27 +366,30 @@ static hearth_status front_return(hearth_scene *s, const int chs[2], double *r, 
     }
     for (int i = 0; i < n; i++) {
         if (!(E[2 * i] > 0)) continue;
-        grid_point_nodes pn;
-        grid_point_nodes_of(g, X + 3 * i, &pn);
-        for (int j = 0; j < pn.n; j++) {
-            double *node = pn.node[j];
-            const int l = pn.l[j];
-            const double wt = pn.w[j];
+        const double *w;
+        const int *at;
+        const int nn = front_nodes(g, fs, i, X + 3 * i, &w, &at);
+        const double sent = front_sent(s, i, E, W, vol); /* once a particle, not once a node: W holds till the books */
+        for (int j = 0; j < nn; j++) {
+            int l;
+            double *node = front_node(g, fs, at[j], &l);
+            const double wt = w[j];
             if (r[i] > 0) node[chs[0] * NPB + l] += wt * r[i];
-            node[chs[1] * NPB + l] += wt * front_sent(s, i, E, W, vol);
+            node[chs[1] * NPB + l] += wt * sent;
         }
     }
     hearth_status st = mpm_ranks_fields_sum(s, chs, 2, err);
     if (st) return st;
     for (int i = 0; i < n; i++) {
         if (!(E[2 * i] > 0)) continue;
-        grid_point_nodes pn;
-        grid_point_nodes_of(g, X + 3 * i, &pn);
+        const double *w;
+        const int *at;
+        const int nn = front_nodes(g, fs, i, X + 3 * i, &w, &at);
         double q = 0, none = 1;
-        for (int j = 0; j < pn.n; j++) {
-            const double *node = pn.node[j];
-            const int l = pn.l[j];
-            const double wt = pn.w[j];
+        for (int j = 0; j < nn; j++) {
+            int l;
+            const double *node = front_node(g, fs, at[j], &l);
+            const double wt = w[j];
             none -= wt;
             const double S = node[chs[1] * NPB + l];
             if (S > 0) q += wt * node[chs[0] * NPB + l] / S; /* S = 0: no sender weighs on it, so no rest is there */
@@ -359,7 +428,12 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
     grid *g = &s->g;
     double *gc = E + FRONT_NS * (size_t)n;
     memset(gc, 0, sizeof(double) * (size_t)front_ng(g) * (size_t)n);
-    unsigned char *fb = (unsigned char *)(gc + (size_t)front_ng(g) * (size_t)n);
+    const front_stencil fs = {gc + (size_t)front_ng(g) * (size_t)n, (int *)(gc + 2 * (size_t)front_ng(g) * (size_t)n),
+                              (int *)(gc + 2 * (size_t)front_ng(g) * (size_t)n) + (size_t)front_ng(g) * (size_t)n,
+                              g->dim == 3 ? 6 : 4};
+    HEARTH_ASSERT(1 << fs.shift == g->nodes_per_block);
+    for (int i = 0; i < n; i++) fs.n[i] = -1;
+    unsigned char *fb = (unsigned char *)(fs.node + front_ints(s));
     /* MPI slabs: the gradient at a slab's first node row reads the row below, in the lower halo layer, and
      * a node of the upper halo reads its neighbours there; mpm.c cleared both layers before the grid update
      * (mpm_ranks_fields_clear) and halo_back refilled only the upper blocks this rank's particles touch, so
@@ -375,14 +449,14 @@ hearth_status water_boil_front(hearth_scene *s, hearth_error *err) {
         fb[k] = all ? FB_GRAD | FB_SENT : 0;
     }
     for (int pass = 0; pass < WATER_FRONT_PASSES; pass++) {
-        const double left = front_pass(s, chs, all, fb, gc, E, r, cap, Q, kept, near, err, &st);
+        const double left = front_pass(s, chs, all, fb, gc, &fs, E, r, cap, Q, kept, near, err, &st);
         if (st) return st;
         if (!(left > 0) && s->mpm->nranks == 1) break; /* every rank takes part in each pass's exchange */
     }
     /* what is still to hand out after the passes goes back over the nodes to every particle that boiled, in
      * proportion to w_ip E_p, as sensible heat: left with the receiver that last overflowed, the heat of a
      * whole block's nodes ran into its last wet particles (247 degC in a 200 degC oven, latent_heat_wet_plateau) */
-    if ((st = front_return(s, chs, r, kept, E, err))) return st;
+    if ((st = front_return(s, chs, &fs, r, kept, E, err))) return st;
     double removed = 0;
     for (int i = 0; i < n; i++) {
         if (!(E[2 * i] > 0) && !(kept[i] > 0)) continue;

@@ -197,6 +197,33 @@ void collider_bound_half_space(collider *c, double margin) {
     else c->blo[axis] = face - margin - slack;
 }
 
+void collider_bound_prism(collider *c, double margin) {
+    const double *R = c->R;
+    /* a 2D box alone: its SDF is the exact distance to its rectangle (a mask's reaches half a pixel into its
+     * border; a combination's is its parts'), so no point past the padded rectangle is within margin of it */
+    if (!shape_box_2d(c->shape)) return;
+    double lo[3], hi[3];
+    hearth_shape_bounds(c->shape, lo, hi);
+    if (!(isfinite(lo[0]) && isfinite(hi[0]) && isfinite(lo[1]) && isfinite(hi[1]))) return;
+    /* turned about z alone (a 2D scene's rotations), so that the moved x and y depend on the local x and y alone */
+    if (!(R[2] == 0 && R[5] == 0 && R[6] == 0 && R[7] == 0 && R[8] == 1)) return;
+    double blo[2] = {INFINITY, INFINITY}, bhi[2] = {-INFINITY, -INFINITY}, big = margin;
+    for (int k = 0; k < 4; k++) { /* the box of the 4 moved corners contains the moved section */
+        const double rel[2] = {(k & 1 ? hi[0] : lo[0]) - c->pivot0[0], (k & 2 ? hi[1] : lo[1]) - c->pivot0[1]};
+        for (int d = 0; d < 2; d++) {
+            const double x = R[3 * d] * rel[0] + R[3 * d + 1] * rel[1] + c->pivot0[d] + c->offset[d];
+            blo[d] = fmin(blo[d], x), bhi[d] = fmax(bhi[d], x);
+            big = fmax(big, fabs(x) + fabs(c->pivot0[d]) + fabs(c->offset[d]));
+        }
+    }
+    /* collider_sdf's own roundings, of numbers below big, move a distance by some 1e-16 big: the slack is a
+     * million times that and still far below a cell, so a point it passes by is farther than margin */
+    const double pad = margin + 1e-10 * big;
+    if (!isfinite(pad)) return;
+    for (int d = 0; d < 2; d++) c->blo[d] = blo[d] - pad, c->bhi[d] = bhi[d] + pad;
+    c->blo[2] = -INFINITY, c->bhi[2] = INFINITY;
+}
+
 int collider_carry_particle(const collider *c, int dim, double dt, double x[3], double v[3], double C[9]) {
     if (c->mode != HEARTH_GRIP || collider_sdf(c, x, NULL) >= 0) return 0;
     /* the rigid motion of the coming step about the current pivot, exact as in collider_advance */

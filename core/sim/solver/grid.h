@@ -184,7 +184,7 @@ static inline void grid_point_weights(const grid *g, const double x[3], int base
 /// fields/subcell.c).
 typedef struct grid_point_nodes {
     double *node[27];
-    int l[27], gi[27][3];
+    int slot[27], l[27], gi[27][3]; /* slot: node's block storage slot (node = grid_block(g, slot)) */
     double w[27];
     int n;
 } grid_point_nodes;
@@ -193,17 +193,32 @@ static inline void grid_point_nodes_of(const grid *g, const double x[3], grid_po
     double w[3][3], dw[3][3];
     grid_point_weights(g, x, base, w, dw);
     pn->n = 0;
-    for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++)
-            for (int c = 0; c < (g->dim == 3 ? 3 : 1); c++) {
+    /* grid_node_at's arithmetic per axis once (the block coordinate, the local index, whether it is on the
+     * grid), not per node: the same nodes, local indices and weights */
+    const int D = g->dim, nc = D == 3 ? 3 : 1;
+    int gq[3][3], bq[3][3], lq[3][3], on[3][3];
+    for (int d = 0; d < 3; d++)
+        for (int a = 0; a < 3; a++) {
+            const int gi = d < D ? base[d] + a : 0;
+            on[d][a] = d >= D || (gi >= 0 && gi <= g->nn[d] - 1);
+            gq[d][a] = gi, bq[d][a] = on[d][a] ? gi / GRID_B : 0, lq[d][a] = on[d][a] ? gi % GRID_B : 0;
+        }
+    for (int a = 0; a < 3; a++) {
+        if (!on[0][a]) continue;
+        for (int b = 0; b < 3; b++) {
+            if (!on[1][b]) continue;
+            for (int c = 0; c < nc; c++) {
+                if (!on[2][c]) continue;
                 const double wt = w[0][a] * w[1][b] * w[2][c];
-                const int gi[3] = {base[0] + a, base[1] + b, g->dim == 3 ? base[2] + c : 0};
-                int l;
-                double *node = grid_node_at(g, gi, &l);
-                if (!node || !(wt > 0)) continue;
+                const int slot = g->slot[grid_block_id(g, bq[0][a], bq[1][b], bq[2][c])];
+                if (slot < 0 || !(wt > 0)) continue;
                 const int k = pn->n++;
-                pn->node[k] = node, pn->l[k] = l, pn->w[k] = wt;
-                pn->gi[k][0] = gi[0], pn->gi[k][1] = gi[1], pn->gi[k][2] = gi[2];
+                pn->node[k] = grid_block(g, slot), pn->slot[k] = slot;
+                pn->l[k] = D == 2 ? lq[0][a] * GRID_B + lq[1][b] : (lq[0][a] * GRID_B + lq[1][b]) * GRID_B + lq[2][c];
+                pn->w[k] = wt;
+                pn->gi[k][0] = gq[0][a], pn->gi[k][1] = gq[1][b], pn->gi[k][2] = gq[2][c];
             }
+        }
+    }
 }
 #endif
