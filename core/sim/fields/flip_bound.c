@@ -164,7 +164,7 @@ hearth_status flip_bound_apply(hearth_scene *s, hearth_error *err) {
     particles *ps = &s->ps;
     grid *g = &s->g;
     const int n = ps->n, NPB = g->nodes_per_block;
-    if (n == 0) return HEARTH_OK;
+    if (n == 0 && s->mpm->nranks <= 1) return HEARTH_OK; /* an empty slab still joins the ranks' reductions */
     const double *X = pcold(ps, PC_X);
     double *T = pcold(ps, PC_TEMPERATURE);
     const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
