@@ -6,12 +6,13 @@
 -- The crust is a few mm thick: at the default dx = 5 mm the front spans a
 -- particle's stencil (10 mm), so the top particle still holds water at the
 -- end; dx = 2.5 mm shows the dried crust (docs/gallery/crumb_plateau.md).
--- The tray is bare: the dough sticks to it (tray = "sticky", the contact holds the base where it touches, in
--- tension too); tray = "separate" is a greased tray or baking paper (the base may slide, friction 0.4, and lift).
--- On the separate tray the bottom rows, heated through 25..70 degC in the first half minute, swell under their
--- pores' gas (gas.h, gas_tau_ambient) and lift the base off the tray by ~0.4 dx, and the base's ends curl up
--- (docs/validation.md, "The physical loaf's base on its tray").
---   hearth run scripts/scenes/baking/loaf_physical.lua [--set dx=0.0025] [--set latent=false] [--set tray=separate]
+-- The tray: tray = "separate" (default; a greased tray or baking paper: the base may slide, friction 0.4, and lift)
+-- or "sticky" (a bare tray the dough sticks to: the contact holds the base where it touches, in tension too).
+-- On the separate tray the bottom rows, heated through 25..70 degC in the first minute, swell under their pores'
+-- gas (gas.h, gas_tau_ambient) and lift the base off the tray by ~0.4 dx, and the base's ends curl up; on the
+-- sticky one the base stays, but at dx 2.5 mm the top tears open at 12 min (docs/validation.md, "The physical
+-- loaf's base on its tray").
+--   hearth run scripts/scenes/baking/loaf_physical.lua [--set dx=0.0025] [--set latent=false] [--set tray=sticky]
 -- What it shows: the crumb climbs to 100 degC and holds there while it holds
 -- water (the boiling plateau), while the crust dries and heats on toward the
 -- oven. Writes, under hearth-out/loaf_physical/: loaf.csv (per frame, in real
@@ -21,7 +22,7 @@
 -- browning.png; loaf.csv's base_lift_m is the most the lowest particle has risen off its start, over the raw
 -- base's middle 80% (16 columns of 4 mm across x0 +- 32 mm).
 local h = require "hearth"
-local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0, tray = "sticky" }
+local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0, tray = "separate" }
 local oven = h.library.oven.bread
 local S = oven.time_scale
 local until_t = (P.until_real > 0 and P.until_real or oven.bake_time * S) / S
