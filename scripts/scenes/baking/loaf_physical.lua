@@ -106,6 +106,6 @@ s:png("temperature", "temperature.png", { time_scale = S })
 s:png("saturation", "saturation.png", { time_scale = S })
 s:png("browning", "browning.png", { time_scale = S })
 print(("after %.0f min: centre %.1f degC at saturation %.3f, top %.1f degC at saturation %.3f; height %.1f mm; "
-  .. "%.1f%% of the water left (latent_heat = %s); browning: top %.3f, base %.3f, centre %.3f; base lift %.2f mm (tray = %s)"):format(
-  last[1], last[2], last[3], last[4], last[5], 1000 * last[6], 100 * last[7], tostring(P.latent), last[8], last[9], last[10],
-  1000 * last[12], P.tray))
+  .. "%.1f%% of the water left (latent_heat = %s); browning: top %.3f, base %.3f, centre %.3f; "
+  .. "base lift %.2f mm (tray = %s)"):format(last[1], last[2], last[3], last[4], last[5], 1000 * last[6],
+  100 * last[7], tostring(P.latent), last[8], last[9], last[10], 1000 * last[12], P.tray))
