@@ -473,15 +473,6 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
             double vb[3];
             collider_velocity_at(&s->cols[c], xi, vb);
             if (D == 2) n[2] = vb[2] = 0.0;
-            {   /* EXPERIMENT (basefoot, not kept): a separate face holds a leaving node while the traction
-                 * that takes to stop it, m vn / (dt dx^(D-1)), is below HEARTH_BF_ADH Pa */
-                static double adh = -1;
-                if (adh < 0) { const char *e = getenv("HEARTH_BF_ADH"); adh = e ? atof(e) : 0; }
-                const double vn = (v[0] - vb[0]) * n[0] + (v[1] - vb[1]) * n[1] + (v[2] - vb[2]) * n[2];
-                if (adh > 0 && s->cols[c].mode == HEARTH_SEPARATE && vn > 0 &&
-                    m * vn / (dt * (D == 3 ? g->dx * g->dx : g->dx)) < adh)
-                    for (int d = 0; d < 3; d++) v[d] -= vn * n[d];
-            }
             contact_apply(s->cols[c].mode, s->cols[c].friction, n, vb, v);
             vcol2 = fmax(vcol2, vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]);
         }
