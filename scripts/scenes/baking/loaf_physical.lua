@@ -6,16 +6,23 @@
 -- The crust is a few mm thick: at the default dx = 5 mm the front spans a
 -- particle's stencil (10 mm), so the top particle still holds water at the
 -- end; dx = 2.5 mm shows the dried crust (docs/gallery/crumb_plateau.md).
---   hearth run scripts/scenes/baking/loaf_physical.lua [--set dx=0.0025] [--set latent=false]
+-- The tray: tray = "separate" (default; a greased tray or baking paper: the base may slide, friction 0.4, and lift)
+-- or "sticky" (a bare tray the dough sticks to: the contact holds the base where it touches, in tension too).
+-- On the separate tray the bottom rows, heated through 25..70 degC in the first minute, swell under their pores'
+-- gas (gas.h, gas_tau_ambient) and lift the base off the tray by ~0.4 dx, and the base's ends curl up; on the
+-- sticky one the base stays, but at dx 2.5 mm the top tears open at 12 min (docs/validation.md, "The physical
+-- loaf's base on its tray").
+--   hearth run scripts/scenes/baking/loaf_physical.lua [--set dx=0.0025] [--set latent=false] [--set tray=sticky]
 -- What it shows: the crumb climbs to 100 degC and holds there while it holds
 -- water (the boiling plateau), while the crust dries and heats on toward the
 -- oven. Writes, under hearth-out/loaf_physical/: loaf.csv (per frame, in real
 -- minutes: the crumb's and the crust's temperature and saturation, particle
 -- values (crust_and_crumb), the loaf's height and the water left; the top's, the base's and the crumb's browning
 -- index, fields/browning.c's 0..1; the loaf's area, V0 J summed), temperature_%04d.png, and at the end temperature.png, saturation.png and
--- browning.png.
+-- browning.png; loaf.csv's base_lift_m is the most the lowest particle has risen off its start, over the raw
+-- base's middle 80% (16 columns of 4 mm across x0 +- 32 mm).
 local h = require "hearth"
-local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0 }
+local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0, tray = "separate" }
 local oven = h.library.oven.bread
 local S = oven.time_scale
 local until_t = (P.until_real > 0 and P.until_real or oven.bake_time * S) / S
@@ -26,7 +33,11 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name
   oven = { temperature = oven.temperature, beta = oven.beta }, latent_heat = P.latent and oven.latent_heat,
   boiling_point = oven.boiling_point, browning = true, browning_scale = oven.browning_scale,
   gas_vent = oven.gas_vent, vent_porosity = oven.vent_porosity }
-h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta })
+if P.tray ~= "sticky" and P.tray ~= "separate" then
+  error(("loaf_physical.lua: tray = %q; valid: \"sticky\" (a bare tray) or \"separate\" (greased or paper)"):format(
+    tostring(P.tray)), 0)
+end
+h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta, mode = P.tray })
 s:add { shape = h.shapes.loaf({ X0, TRAY }, WIDTH, BODY), material = h.material("cam_clay_dough", h.library.dough.bread),
   temperature = oven.dough_temperature }
 
@@ -61,9 +72,24 @@ local function area()
   for k = 1, p.n do a = a + v0 * p.J[k] end
   return a
 end
+-- the base's lift: per 4 mm column over the raw base's middle 80% (x0 +- 32 mm), the lowest particle's height;
+-- base_lift = the largest rise of any column's lowest particle over its height at the start
+local base0
+local function base_lift()
+  local r, lo = s:particles { fields = { "x" } }, {}
+  for i = 1, r.n do
+    local b = math.floor((r.x[3 * i - 2] - (X0 - 0.032)) / 0.004) + 1
+    if b >= 1 and b <= 16 and (not lo[b] or r.x[3 * i - 1] < lo[b]) then lo[b] = r.x[3 * i - 1] end
+  end
+  base0 = base0 or lo
+  local m = 0
+  for b = 1, 16 do if lo[b] and base0[b] then m = math.max(m, lo[b] - base0[b]) end end
+  return m
+end
+base_lift()
 local w0 = s:stats().water_mass
 local rows = { "t_real_min,centre_T_degC,centre_s,top_T_degC,top_s,height_m,water_left,top_browning,base_browning,"
-  .. "centre_browning,area_m2" }
+  .. "centre_browning,area_m2,base_lift_m" }
 local last
 -- the pictures' titles give the real time (the oven's rates run S times fast) beside the simulated seconds
 s:run { until_t = until_t, every = until_t / P.frames,
@@ -71,8 +97,8 @@ s:run { until_t = until_t, every = until_t / P.frames,
   on_frame = function(f)
     local H = height()
     local Tc, sc, Tt, st, bt, bb, bc = crust_and_crumb(H)
-    last = { f.t * S / 60, Tc, sc, Tt, st, H, s:stats().water_mass / w0, bt, bb, bc, area() }
-    rows[#rows + 1] = ("%.2f,%.2f,%.4f,%.2f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,%.6g"):format(table.unpack(last))
+    last = { f.t * S / 60, Tc, sc, Tt, st, H, s:stats().water_mass / w0, bt, bb, bc, area(), base_lift() }
+    rows[#rows + 1] = ("%.2f,%.2f,%.4f,%.2f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,%.6g,%.6f"):format(table.unpack(last))
     h.write("loaf.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
   end }
@@ -80,5 +106,6 @@ s:png("temperature", "temperature.png", { time_scale = S })
 s:png("saturation", "saturation.png", { time_scale = S })
 s:png("browning", "browning.png", { time_scale = S })
 print(("after %.0f min: centre %.1f degC at saturation %.3f, top %.1f degC at saturation %.3f; height %.1f mm; "
-  .. "%.1f%% of the water left (latent_heat = %s); browning: top %.3f, base %.3f, centre %.3f"):format(last[1], last[2],
-  last[3], last[4], last[5], 1000 * last[6], 100 * last[7], tostring(P.latent), last[8], last[9], last[10]))
+  .. "%.1f%% of the water left (latent_heat = %s); browning: top %.3f, base %.3f, centre %.3f; "
+  .. "base lift %.2f mm (tray = %s)"):format(last[1], last[2], last[3], last[4], last[5], 1000 * last[6],
+  100 * last[7], tostring(P.latent), last[8], last[9], last[10], 1000 * last[12], P.tray))
