@@ -415,9 +415,10 @@ MATERIAL_INLINE int material_thermal_split(const hearth_material *m, const doubl
 /* The core's coupling terms, after the plugin's stress (material_point_couple
  * below adds a cracked point's cut-off). MPM calls the door's halves apart so
  * it can read the step limits (wave_speed, viscosity) between them while the
- * state is in cache. */
+ * state is in cache. *gas_stiff (when not NULL) gets the pores' gas stiffness
+ * for the step's wave speed (gas_tau_ambient; 0 without ambient_pressure). */
 MATERIAL_INLINE void material_point_couple_terms(const hearth_material *m, const double *core, hearth_point *pt,
-                                                 const material_env *env, double tau[9]) {
+                                                 const material_env *env, double tau[9], double *gas_stiff) {
     const unsigned fl = env->flags;
     const double *gas = env->gas, *s0 = env->saturation0;
     if (!gas && !s0 && !(fl & MATERIAL_EXPANSION)) return;
@@ -440,12 +441,13 @@ MATERIAL_INLINE void material_point_couple_terms(const hearth_material *m, const
     if (gas) { /* gas pressure (eq. 13): tau_g = J sigma_g = -n^g R theta / n^p I */
         /* porosity after this step's plastic flow */
         const double np = m->plastic_J ? gas_porosity(JP1, core[CP_POROSITY0]) : pt->porosity;
-        double stiff;
+        double stiff = 0;
         const double tg = core[CP_AMBIENT_PRESSURE] > 0
                               ? gas_tau_ambient(gas[env->index], env->temperature, J, pt->saturation > 0,
                                                 core[CP_AMBIENT_PRESSURE], core[CP_POROSITY0], core[CP_REFERENCE_T],
                                                 core[CP_OPEN_TEMPERATURE], &stiff)
                               : gas_tau(gas[env->index], env->temperature, np);
+        if (gas_stiff) *gas_stiff = stiff;
         tau[0] += tg;
         tau[4] += tg;
         tau[8] += tg;
@@ -512,7 +514,8 @@ void material_tension_cutoff(double tau[9]);
  * stopped the run (J^E ~ 400 at 2 s). Eq. 10 is now a thermal strain (above),
  * bounded; a cracked point still drops its terms (its faces are free). */
 MATERIAL_INLINE void material_point_couple(const hearth_material *m, const double *core, hearth_point *pt,
-                                           const material_env *env, double tau[9]) {
+                                           const material_env *env, double tau[9], double *gas_stiff) {
+    if (gas_stiff) *gas_stiff = 0; /* a cracked point holds no gas pressure, so its gas no stiffness */
     if ((env->flags & MATERIAL_DAMAGE) && m->damage) {
         plugin_call_enter(m, "damage");
         if (m->damage(pt->p, pt->state) >= 1) {
@@ -520,7 +523,7 @@ MATERIAL_INLINE void material_point_couple(const hearth_material *m, const doubl
             return;
         }
     }
-    material_point_couple_terms(m, core, pt, env, tau);
+    material_point_couple_terms(m, core, pt, env, tau, gas_stiff);
 }
 
 /* The door: material_point_stress, then material_point_couple. Returns 0, the
@@ -528,7 +531,7 @@ MATERIAL_INLINE void material_point_couple(const hearth_material *m, const doubl
 MATERIAL_INLINE int material_point_eval(const hearth_material *m, const double *core, hearth_point *pt,
                                         const material_env *env, double tau[9]) {
     const int code = material_point_stress(m, core, pt, env, tau);
-    material_point_couple(m, core, pt, env, tau);
+    material_point_couple(m, core, pt, env, tau, NULL);
     return code;
 }
 

@@ -45,14 +45,9 @@ static inline void run_after(const material_slot *ms, hearth_point *pt, const ma
         const double nu = m->viscosity(pt->p, m->state_size > 0 ? pt->state : NULL) / pt->p[ms->density_index];
         if (nu > *numax) *numax = nu;
     }
-    material_point_couple(m, ms->core, pt, env, tau);
-    if (env->gas && ms->core[CP_AMBIENT_PRESSURE] > 0) { /* eq. 13 over the atmosphere: its stiffness (gas.h) */
-        double stiff;
-        (void)gas_tau_ambient(env->gas[env->index], env->temperature, env->J, pt->saturation > 0,
-                              ms->core[CP_AMBIENT_PRESSURE], ms->core[CP_POROSITY0], ms->core[CP_REFERENCE_T],
-                              ms->core[CP_OPEN_TEMPERATURE], &stiff);
-        *wave = material_gas_wave(*wave, stiff, env->J, pt->p[ms->density_index]);
-    }
+    double stiff; /* eq. 13 over the atmosphere: its stiffness in the wave speed (gas.h), 0 without */
+    material_point_couple(m, ms->core, pt, env, tau, &stiff);
+    *wave = material_gas_wave(*wave, stiff, env->J, pt->p[ms->density_index]);
 }
 
 static material_env run_env(const material_run *r, int j, unsigned flags) {
