@@ -143,7 +143,7 @@ static double leaves(const hearth_scene *s, int i, const double *X, const double
         r += pn.w[j] * (1.0 - (marked ? fmin(node[BOUND_MARK * NPB + l], 1.0) : 0.0)) * ((marked ? node[BOUND_A * NPB + l] : t0) - T[i]);
     }
     const double f = s->def.heat_flip, T0 = T[i] + c;
-    const double T1 = f == 1.0 ? T0 + dT : f * (T0 + dT) + (1.0 - f) * Tn;
+    const double T1 = thermal_flip_blend(f, T0, dT, Tn); /* as G2P will make it */
     const double hi = b->hi, lo = b->latent && s->boundary.area[i] > 0 ? -INFINITY : b->lo;
     if (clamp) { /* a boundary particle: how far past the bounds, signed (its clamp, after the moves) */
         *clamp = T1 > hi + b->tol ? hi - T1 : T1 < lo - b->tol ? lo - T1 : 0.0;

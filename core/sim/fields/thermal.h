@@ -88,4 +88,10 @@ hearth_status thermal_finish(struct hearth_scene *s, double dt, hearth_error *er
 void thermal_step_stands(thermal_state *h);
 /// Total heat energy sum m alpha (theta + 273.15) of the particles (J).
 double thermal_energy(const struct hearth_scene *s);
+/// G2P's temperature update (Ding et al. eq. 21): FLIP's T0 + dT, blended toward PIC's Tn by the scene's
+/// heat_flip < 1. mpm_g2p.c makes it and flip_bound.c predicts it, so the two cannot drift apart.
+static inline double thermal_flip_blend(double flip, double T0, double dT, double Tn) {
+    return flip == 1.0 ? T0 + dT : flip * (T0 + dT) + (1.0 - flip) * Tn;
+}
+
 #endif

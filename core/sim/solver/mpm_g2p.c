@@ -145,7 +145,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         if (WATER) w_removed += water_take(s, i, ds, &w_dmax, &w_emax, &w_lmax);
         if (HEAT) { /* FLIP (eq. 21): the particle takes its nodes' temperature change */
             const double T0 = Tcol[i], flip = s->def.heat_flip;
-            double T1 = !PIC || flip == 1.0 ? T0 + dT : flip * (T0 + dT) + (1.0 - flip) * Tn; /* FLIP-PIC blend */
+            double T1 = !PIC ? T0 + dT : thermal_flip_blend(flip, T0, dT, Tn); /* FLIP-PIC blend */
             if (PIC && hold_h && hold_h[i] > 0) T1 += hold_h[i] * (Tn - T1); /* toward held nodes (thermal.c's held_settle) */
             /* a held body's particle keeps its temperature (thermal.c holds its nodes) */
             if (front) front[2 * i] = 0.0;
