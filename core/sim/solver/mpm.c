@@ -800,8 +800,8 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
         const int sums[3] = {CH_R, CH_B, CH_DMW};
         if ((st = mpm_ranks_fields_sum(s, heat ? sums : sums + 2, (heat ? 2 : 0) + (water ? 1 : 0), err))) return st;
         if (heat && (st = thermal_finish(s, fdt, err))) return st;
+        if (heat) flip_bound_prepare(s, fdt); /* the heat's bounds, before subcell.c moves any particle */
         /* latent_heat: the dried particles' sub-cell exchange, from the step-start temperatures G2P adds to */
-        if (heat) flip_bound_prepare(s, fdt);
         if (heat && water && (st = subcell_exchange(s, fdt, err))) return st;
         /* FLIP's increment within the heat's bounds (flip_bound.c), from the temperatures G2P adds to */
         if (heat && (st = flip_bound_apply(s, err))) return st;
