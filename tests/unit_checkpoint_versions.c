@@ -148,6 +148,28 @@ static hearth_scene *dry_heat_scene(double dry_c) {
     return s;
 }
 
+/* Scene s saved, as the older version's writer would have: its image without the last `cut` core material
+ * parameters, stamped `version`; that file loaded (NULL, the refusal printed, when it is not). *bytes gets the
+ * older file's size, *newer the image's. */
+static hearth_scene *load_older(hearth_scene *s, int cut, uint32_t version, size_t *bytes, size_t *newer) {
+    uint8_t *img = save_image(s, newer);
+    CHECK(img != NULL);
+    *bytes = *newer;
+    if (!img || !cut_core_params(img, bytes, cut)) {
+        free(img);
+        return NULL;
+    }
+    memcpy(img + 8, &version, 4);
+    ck_reseal(img, *bytes);
+    char name[16];
+    snprintf(name, sizeof name, "v%u.ck", (unsigned)version);
+    hearth_error err;
+    hearth_scene *r = hearth_scene_load_mem(img, *bytes, name, &err);
+    if (!r) printf("  v%u refused: %s\n", (unsigned)version, err.msg);
+    free(img);
+    return r;
+}
+
 /* Version 8 carries a material's dry_specific_heat through a save; a version
  * 7 file (a version 8 image without it, before the curve count) loads with 0,
  * as wet, and continues as the scene it was saved from, which had 0. */
@@ -168,19 +190,8 @@ TEST(checkpoint_v7_reads_dry_specific_heat_as_wet) {
     free(img);
     hearth_scene_destroy(s);
     s = dry_heat_scene(0);
-    img = save_image(s, &n);
-    CHECK(img != NULL);
-    size_t m = n;
-    if (!img || !cut_core_params(img, &m, 3)) { /* dry_specific_heat and version 10's two */
-        free(img);
-        hearth_scene_destroy(s);
-        return;
-    }
-    const uint32_t v7 = 7;
-    memcpy(img + 8, &v7, 4);
-    ck_reseal(img, m);
-    r = hearth_scene_load_mem(img, m, "v7.ck", &err);
-    if (!r) printf("  v7 refused: %s\n", err.msg);
+    size_t m;
+    r = load_older(s, 3, 7, &m, &n); /* without dry_specific_heat and version 10's two */
     CHECK(r != NULL);
     if (r) {
         CHECK(r->mats.slot[0].core[CP_DRY_SPECIFIC_HEAT] == 0);
@@ -188,7 +199,6 @@ TEST(checkpoint_v7_reads_dry_specific_heat_as_wet) {
         continues_as(s, r, "v7 copy");
         hearth_scene_destroy(r);
     }
-    free(img);
     hearth_scene_destroy(s);
 }
 
@@ -298,19 +308,8 @@ TEST(checkpoint_v9_reads_ambient_pressure_as_zero) {
     free(img);
     hearth_scene_destroy(s);
     s = dry_heat_scene(0);
-    img = save_image(s, &n);
-    CHECK(img != NULL);
-    size_t k = n;
-    if (!img || !cut_core_params(img, &k, 2)) {
-        free(img);
-        hearth_scene_destroy(s);
-        return;
-    }
-    const uint32_t v9 = 9;
-    memcpy(img + 8, &v9, 4);
-    ck_reseal(img, k);
-    r = hearth_scene_load_mem(img, k, "v9.ck", &err);
-    if (!r) printf("  v9 refused: %s\n", err.msg);
+    size_t k;
+    r = load_older(s, 2, 9, &k, &n); /* without ambient_pressure and open_temperature */
     CHECK(r != NULL);
     if (r) {
         const hearth_param *cp = hearth_core_params(NULL);
@@ -320,7 +319,6 @@ TEST(checkpoint_v9_reads_ambient_pressure_as_zero) {
         continues_as(s, r, "v9 copy");
         hearth_scene_destroy(r);
     }
-    free(img);
     hearth_scene_destroy(s);
 }
 
