@@ -27,6 +27,11 @@ lua_error_messages)
     check err_range.lua 2 "'nu' = 0.7" "[0, 0.499]" "Poisson's ratio"
     grep -qE "\[0, 0\.499\] (1\b|\(dimensionless\))" err.txt || fail "nu: no unit after the range: $(cat err.txt)"
     check err_range_unit.lua 2 "'density' = 1e+09" "[0.001, 100000] kg/m^3"
+    # Lua's 0/0 has its sign bit set; a NaN is named without a sign (error.c)
+    check err_range_nan.lua 2 "'nu' = nan is outside its range" "[0, 0.499]"
+    grep -q -- "-nan" err.txt && fail "a NaN printed with a sign: $(cat err.txt)"
+    # s:oven(NaN): the core reads NaN as "no oven"; only nil may turn it off
+    check err_oven_nan.lua 3 "s:oven: temperature = nan" "[-273.15, 5000] degC, or nil for no oven"
     check err_curve.lua 2 "h.curve: temperatures must increase" "point 2: 50 after 100"
     check err_add_nomat.lua 3 "s:add: material = h.material(...) is required"
     check err_plugin.lua 2 "plugin not found" "hearth_no_such_plugin_xyz.so" "search path" "HEARTH_PLUGIN_PATH"

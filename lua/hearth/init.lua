@@ -61,9 +61,16 @@ local function check_keys(t, valid, what, level)
   end
 end
 
+-- a value as an error message shows it: Lua's tostring writes 0/0 as "-nan" (its sign bit), a sign a NaN does not
+-- have for the reader; the core's messages say "nan" too (core/sim/error.c)
+local function shown(v)
+  if type(v) == "number" and v ~= v then return "nan" end
+  return tostring(v)
+end
+
 local function check_number(v, what, lo, hi, unit, level)
   if type(v) ~= "number" or v ~= v or v < lo or v > hi then
-    error(("%s = %s; valid range [%s, %s]%s"):format(what, tostring(v), tostring(lo), tostring(hi),
+    error(("%s = %s; valid range [%s, %s]%s"):format(what, shown(v), tostring(lo), tostring(hi),
       unit and (" " .. unit) or ""), level or 3)
   end
   return v
@@ -158,8 +165,8 @@ function h.curve(t)
       error(("h.curve: point %d must be %s"):format(i, what), 2)
     end
     if i > 1 and not (p[1] > t[i - 1][1]) then
-      error(("h.curve: %s must increase (point %d: %g after %g)"):format(moist and "moisture ratios" or "temperatures",
-        i, p[1], t[i - 1][1]), 2)
+      error(("h.curve: %s must increase (point %d: %s after %s)"):format(moist and "moisture ratios" or "temperatures",
+        i, shown(p[1]), shown(t[i - 1][1])), 2)
     end
     c[i] = { p[1], p[2] }
   end
@@ -273,7 +280,7 @@ function h.top_curvature(s, o)
     error("h.top_curvature(s, {keep = function(id), origin = x, bin = width > 0, fraction = 0.6, z = z}): keep, origin and bin are required", 2)
   end
   local frac = o.fraction or 0.6
-  if not (frac > 0 and frac <= 1) then error(("h.top_curvature: fraction = %s; valid range (0, 1]"):format(tostring(frac)), 2) end
+  if not (frac > 0 and frac <= 1) then error(("h.top_curvature: fraction = %s; valid range (0, 1]"):format(shown(frac)), 2) end
   if o.rest ~= nil and type(o.rest) ~= "table" then
     error("h.top_curvature: rest must be a table {[particle id] = its height at rest}", 2)
   end
@@ -442,7 +449,7 @@ local function check_setting(e, v)
       or (e.min_open and not (v > e.min) or v < e.min) or v > e.max
       or (e.kind ~= "real" and v ~= math.floor(v))
     if bad then
-      error(("%s = %s; valid range %s%s (%s)"):format(what, tostring(v), range_text(e),
+      error(("%s = %s; valid range %s%s (%s)"):format(what, shown(v), range_text(e),
         e.kind ~= "real" and ", whole numbers" or "", e.help), 3)
     end
     return v

@@ -59,7 +59,7 @@ local function check_run_outputs(o)
     local ts = o.png.time_scale -- likewise
     if ts ~= nil and not (type(ts) == "number" and ts > 0 and ts <= 1e9) then
       error(("s:run: png: time_scale = %s; valid range (0, 1e9], the real seconds one simulated second stands for")
-        :format(tostring(ts)), 3)
+        :format(ts ~= ts and "nan" or tostring(ts)), 3)
     end
   end
   if o.csv ~= nil and type(o.csv) ~= "string" then
