@@ -657,6 +657,12 @@ static int l_oven(lua_State *L) {
     const hearth_scene_def *d = hearth_scene_get_def(u->s);
     if (lua_gettop(L) >= 2) {
         double T = lua_isnil(L, 2) ? NAN : luaL_checknumber(L, 2);
+        /* the core reads a NaN temperature as "no oven": only nil may say that, or a 0/0 would put the oven out */
+        if (!lua_isnil(L, 2) && isnan(T)) {
+            const hearth_setting *e = hearth_scene_setting("oven.temperature");
+            return hl_errorf(L, "s:oven: temperature = nan; valid range [%g, %g] %s, or nil for no oven", e->min, e->max,
+                             e->unit);
+        }
         /* beta: the scene's own when it has one, else the schema's default (10) */
         double beta = luaL_optnumber(L, 3, d->oven_beta > 0 ? d->oven_beta : hearth_scene_setting("oven.beta")->def);
         hearth_error err;
