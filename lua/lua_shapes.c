@@ -44,6 +44,7 @@ void hl_checkvec(lua_State *L, int idx, const char *what, double v[3]) {
 
 static double posnum(lua_State *L, int idx, const char *what, const char *unit) {
     double x = luaL_checknumber(L, idx);
+    if (isnan(x)) hl_errorf(L, "%s = nan %s; it must be > 0", what, unit); /* %g writes 0/0 as "-nan" */
     if (!(x > 0) || !isfinite(x)) hl_errorf(L, "%s = %g %s; it must be > 0", what, x, unit);
     return x;
 }
