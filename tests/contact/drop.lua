@@ -1,0 +1,35 @@
+-- A w x ht (default 6 x 3 cm) block of h.library.dough.bread (cold, no oven) released at rest with its base `lift` cells above
+-- a face, under gravity for t seconds (#18, helper traygap; the defect's reproduction from /tmp/gap/gap.lua).
+-- face = "tray": h.recipes.tray (a plane at y = 2 cm, mode `mode`, friction 0.4); "wall": no collider, the
+-- domain's floor (wall = `mode`), whose face is one cell inside the box (G2P keeps particles there).
+-- Prints, every tenth of t, the lowest particle's distance to the face in dx, and at the end one line:
+--   result lowest=<dx> spread=<dx over the last 40% of t> hp=<the particles' half-spacing in dx>
+local h = require "hearth"
+local P = h.params { dx = 0.005, lift = 1.0, t = 0.4, face = "tray", mode = "separate", w = 0.06, ht = 0.03 }
+local TRAY = 0.02
+local wall = P.face == "wall"
+local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name = "drop",
+  wall = wall and P.mode or "slip" }
+local floor_y = wall and P.dx or TRAY
+if not wall then h.recipes.tray(s, TRAY, { mode = P.mode }) end
+local y0 = floor_y + P.lift * P.dx
+s:add { shape = require("hearth.core").box({ 0.07 - P.w / 2, y0 }, { 0.07 + P.w / 2, y0 + P.ht }),
+  material = h.material("cam_clay_dough", h.library.dough.bread), temperature = 25 }
+local function low()
+  local r = s:particles { fields = { "x" } }
+  local m = math.huge
+  for i = 1, r.n do m = math.min(m, r.x[3 * i - 1]) end
+  return (m - floor_y) / P.dx
+end
+print(("t 0.00 lowest %.4f dx"):format(low()))
+local late = {}
+for k = 1, 10 do
+  s:run { until_t = P.t * k / 10 }
+  local l = low()
+  print(("t %.2f lowest %.4f dx"):format(P.t * k / 10, l))
+  if k >= 6 then late[#late + 1] = l end
+end
+local lo, hi = math.huge, -math.huge
+for _, l in ipairs(late) do lo, hi = math.min(lo, l), math.max(hi, l) end
+-- ppc 4 in 2D (bodies.c's default): a 2 x 2 lattice a cell, half-spacing dx / 4
+print(("result lowest=%.4f spread=%.4f hp=%.4f"):format(late[#late], hi - lo, 0.25))
