@@ -32,4 +32,4 @@ end
 local lo, hi = math.huge, -math.huge
 for _, l in ipairs(late) do lo, hi = math.min(lo, l), math.max(hi, l) end
 -- ppc 4 in 2D (bodies.c's default): a 2 x 2 lattice a cell, half-spacing dx / 4
-print(("result lowest=%.4f spread=%.4f hp=%.4f"):format(late[#late], hi - lo, 0.25))
+print(("result lowest=%.4f spread=%.4f hp=%.4f hash=%s"):format(late[#late], hi - lo, 0.25, s:hash()))
