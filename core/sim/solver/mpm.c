@@ -411,7 +411,7 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
 
 /* A slip or separate face (collider or domain wall) holds a node only where the body touches it; sticky
  * and grip faces hold every node on and inside them (mpm_touch.c says why). */
-static inline int touch_gated(hearth_contact mode) { return mode == HEARTH_SLIP || mode == HEARTH_SEPARATE; }
+static inline int touch_gated(hearth_contact mode) { return mpm_touch_gated(mode); }
 enum { TOUCH_CACHE = 32 }; /* colliders whose masks a block keeps; past them each node asks again (the same mask) */
 
 /* One active block's nodes; returns the fastest collider speed squared at a
@@ -466,7 +466,10 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
             else continue;
             if (touch_gated(def->wall) && (def->wall == HEARTH_SLIP || v[d] * n[d] < 0)) {
                 const int side = n[d] < 0;
-                if (!(wdone[d] >> side & 1)) wmask[d][side] = mpm_touch_mask(s, bc, NULL, d, side, dt), wdone[d] |= 1 << side;
+                if (!(wdone[d] >> side & 1)) {
+                    wmask[d][side] = mpm_touch_mask(s, bc, NULL, d, side, dt), wdone[d] |= 1 << side;
+                    if (s->mpm->nranks > 1) wmask[d][side] |= mpm_ranks_touch_below(s, g->active[k], s->ncol + 2 * d + side);
+                }
                 if (!(wmask[d][side] >> l & 1)) continue;
             }
             contact_apply(def->wall, def->wall_friction, n, zero, v);
@@ -490,11 +493,12 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
             const double vn = (v[0] - vb[0]) * n[0] + (v[1] - vb[1]) * n[1] + (v[2] - vb[2]) * n[2];
             if (touch_gated(s->cols[c].mode) && (s->cols[c].mode != HEARTH_SEPARATE || vn < 0)) {
                 uint64_t mask;
-                if (c < TOUCH_CACHE) {
-                    if (!(cdone >> c & 1)) cmask[c] = mpm_touch_mask(s, bc, &s->cols[c], 0, 0, dt), cdone |= 1u << c;
+                if (c < TOUCH_CACHE && cdone >> c & 1) {
                     mask = cmask[c];
                 } else {
                     mask = mpm_touch_mask(s, bc, &s->cols[c], 0, 0, dt);
+                    if (s->mpm->nranks > 1) mask |= mpm_ranks_touch_below(s, g->active[k], c); /* a seam's other side */
+                    if (c < TOUCH_CACHE) cmask[c] = mask, cdone |= 1u << c;
                 }
                 if (!(mask >> l & 1)) {
                     vcol2 = fmax(vcol2, vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]);
@@ -773,6 +777,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     int usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
     hearth_status st;
     int sorted = 0;
+    s->mpm->step_dt = dt; /* the slabs' touch masks (mpm_ranks.c's halo_sum) */
     PHASE_STEP();
     if (usual && !mixing_active(s) && s->ps.n >= SCENE_PARALLEL_MIN && mpm_p2g_store_held(s)) { /* the gather's step */
         mpm_sort_team t;

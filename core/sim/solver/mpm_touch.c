@@ -122,3 +122,18 @@ uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *
     }
     return mask;
 }
+
+int mpm_touch_gated(hearth_contact mode) { return mode == HEARTH_SLIP || mode == HEARTH_SEPARATE; }
+
+int mpm_touch_faces(const hearth_scene *s) { return s->ncol + 6; }
+
+uint64_t mpm_touch_face_mask(const hearth_scene *s, const int bc[3], int f, double dt) {
+    if (f < s->ncol) return mpm_touch_gated(s->cols[f].mode) ? mpm_touch_mask(s, bc, &s->cols[f], 0, 0, dt) : 0;
+    const int d = (f - s->ncol) / 2, side = (f - s->ncol) % 2;
+    const grid *g = &s->g;
+    if (d >= g->dim || s->def.periodic[d] || !mpm_touch_gated(s->def.wall)) return 0;
+    /* the walls hold the two node layers nearest each face: a block that has none of them has no mask */
+    const int lo = bc[d] * GRID_B, hi = lo + GRID_B - 1;
+    if (side ? hi < g->nn[d] - 2 : lo > 1) return 0;
+    return mpm_touch_mask(s, bc, NULL, d, side, dt);
+}

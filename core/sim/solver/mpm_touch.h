@@ -10,4 +10,9 @@
  * the face (collider c, or with c NULL the domain wall on axis d, side 0 low / 1 high) this step of dt (s).
  * Reads the sorted particles of the step; call between P2G and G2P. */
 uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *c, int d, int side, double dt);
+/* The faces a touch mask is made for, numbered f: colliders 0..ncol-1, then the domain walls ncol + 2 d + side;
+ * mpm_touch_face's count. mpm_touch_face_mask is face f's mask (0 for a face the touch does not gate). */
+int mpm_touch_faces(const hearth_scene *s);
+int mpm_touch_gated(hearth_contact mode);
+uint64_t mpm_touch_face_mask(const hearth_scene *s, const int bc[3], int f, double dt);
 #endif
