@@ -5,15 +5,20 @@
 -- Prints, every tenth of t, the lowest particle's distance to the face in dx, and at the end one line:
 --   result lowest=<dx> spread=<dx over the last 40% of t> hp=<the particles' half-spacing in dx>
 local h = require "hearth"
-local P = h.params { dx = 0.005, lift = 1.0, t = 0.4, face = "tray", mode = "separate", w = 0.06, ht = 0.03 }
+local P = h.params { dx = 0.005, lift = 1.0, t = 0.4, face = "tray", mode = "separate", w = 0.06, ht = 0.03, dim = 2 }
 local TRAY = 0.02
 local wall = P.face == "wall"
-local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name = "drop",
+-- dim = 3: a w x ht x w block in a 0.14 x 0.14 x (w + 4 cm) box (8 particles a cell: half-spacing dx/4 too)
+local D3 = P.dim == 3
+local s = h.scene { dim = P.dim, dx = P.dx, box = D3 and { { 0, 0, 0 }, { 0.14, 0.14, P.w + 0.04 } } or { { 0, 0 }, { 0.14, 0.14 } },
+  name = "drop",
   wall = wall and P.mode or "slip" }
 local floor_y = wall and P.dx or TRAY
 if not wall then h.recipes.tray(s, TRAY, { mode = P.mode }) end
 local y0 = floor_y + P.lift * P.dx
-s:add { shape = require("hearth.core").box({ 0.07 - P.w / 2, y0 }, { 0.07 + P.w / 2, y0 + P.ht }),
+local zc = P.w / 2 + 0.02
+s:add { shape = D3 and require("hearth.core").box({ 0.07 - P.w / 2, y0, zc - P.w / 2 }, { 0.07 + P.w / 2, y0 + P.ht, zc + P.w / 2 })
+    or require("hearth.core").box({ 0.07 - P.w / 2, y0 }, { 0.07 + P.w / 2, y0 + P.ht }),
   material = h.material("cam_clay_dough", h.library.dough.bread), temperature = 25 }
 local function low()
   local r = s:particles { fields = { "x" } }
@@ -31,5 +36,5 @@ for k = 1, 10 do
 end
 local lo, hi = math.huge, -math.huge
 for _, l in ipairs(late) do lo, hi = math.min(lo, l), math.max(hi, l) end
--- ppc 4 in 2D (bodies.c's default): a 2 x 2 lattice a cell, half-spacing dx / 4
+-- bodies.c's default ppc (4 in 2D, 8 in 3D): 2 a cell along each axis, half-spacing dx / 4
 print(("result lowest=%.4f spread=%.4f hp=%.4f hash=%s"):format(late[#late], hi - lo, 0.25, s:hash()))
