@@ -70,19 +70,17 @@ static double half_extent(const hearth_scene *s, int i) {
     return 0.5 * (s->g.dim == 2 ? sqrt(fabs(v)) : cbrt(fabs(v)));
 }
 
-/* The face: collider c, or (c < 0) the domain wall on axis d, side (0 low, 1 high). Returns the
- * particle's distance to it (m) and its outward normal n and velocity vb there. */
-static double face_distance(const hearth_scene *s, const collider *c, int d, int side, const double x[3], double n[3],
-                            double vb[3]) {
+/* The face: collider c, or (c NULL) the domain wall on axis d, side (0 low, 1 high). Returns the particle's
+ * distance to it (m) and its outward normal n there. */
+static double face_distance(const hearth_scene *s, const collider *c, int d, int side, const double x[3], double n[3]) {
     const grid *g = &s->g;
     if (c) {
         const double phi = collider_sdf(c, x, n);
-        collider_velocity_at(c, x, vb);
-        if (g->dim == 2) n[2] = vb[2] = 0.0;
+        if (g->dim == 2) n[2] = 0.0;
         return phi;
     }
     /* G2P keeps particles within [lo + dx, lo + (nn - 2) dx]: the walls' faces (their held layers end there) */
-    for (int a = 0; a < 3; a++) n[a] = vb[a] = 0.0;
+    for (int a = 0; a < 3; a++) n[a] = 0.0;
     n[d] = side ? -1.0 : 1.0;
     return side ? g->lo[d] + (g->nn[d] - 2) * g->dx - x[d] : x[d] - (g->lo[d] + g->dx);
 }
@@ -101,12 +99,17 @@ uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *
         for (int i = m->pb[k].start; i < m->pb[k].end; i++) {
             const double *x = X + 3 * i, *v = V + 3 * i;
             if (c && !collider_near(c, x)) continue; /* the bound reaches 2 dx past the face */
-            double n[3], vb[3];
-            const double phi = face_distance(s, c, d, side, x, n, vb);
+            double n[3];
+            const double phi = face_distance(s, c, d, side, x, n);
             if (phi > 2.0 * g->dx) continue;
-            const double hp = half_extent(s, i);
-            const double close = -((v[0] - vb[0]) * n[0] + (v[1] - vb[1]) * n[1] + (v[2] - vb[2]) * n[2]);
-            if (phi > hp + COLLIDER_ROW_TOL * g->dx + dt * fmax(0.0, close)) continue;
+            const double reach = half_extent(s, i) + COLLIDER_ROW_TOL * g->dx;
+            if (phi > reach) { /* within reach only by what it closes this step: the face's velocity too */
+                double vb[3] = {0, 0, 0};
+                if (c) collider_velocity_at(c, x, vb);
+                if (g->dim == 2) vb[2] = 0.0;
+                const double close = -((v[0] - vb[0]) * n[0] + (v[1] - vb[1]) * n[1] + (v[2] - vb[2]) * n[2]);
+                if (phi > reach + dt * fmax(0.0, close)) continue;
+            }
             /* its stencil's nodes in this block */
             int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
             for (int a = 0; a < D; a++) {
