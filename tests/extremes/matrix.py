@@ -31,7 +31,6 @@ KNOWN = {
     ("elastic", "porosity", "1e-06"): "gas pressure (Ding et al. §5.4) is not in the wave speed the step is chosen from",
     ("newtonian", "porosity", "1e-06"): "gas pressure (Ding et al. §5.4) is not in the wave speed the step is chosen from",
     ("von_mises_sauce", "porosity", "1e-06"): "gas pressure (Ding et al. §5.4) is not in the wave speed the step is chosen from",
-    ("newtonian", "cfl", "1"): "at the CFL limit a falling fluid block stops late: F inverted on the floor (step ~136); cfl 0.5 completes",
     ("newtonian", "impact speed", "20 m/s"):
         "a 20 m/s impact is supersonic for the default fluid (sound speed sqrt(K/rho) = 10 m/s): compression inverts F late (step ~113)",
     ("snow_plastic", "temperature", "400 degC"):

@@ -164,8 +164,8 @@ typedef struct hearth_scene hearth_scene;
 /// Contact response at walls and colliders.
 typedef enum hearth_contact {
     HEARTH_STICKY = 0,  ///< velocity equals the boundary's
-    HEARTH_SLIP = 1,    ///< normal velocity removed, tangential kept (friction applies)
-    HEARTH_SEPARATE = 2, ///< only approaching normal velocity removed (friction applies)
+    HEARTH_SLIP = 1,    ///< normal velocity removed, tangential kept (friction applies); on MPM only where the body touches the face
+    HEARTH_SEPARATE = 2, ///< only approaching normal velocity removed (friction applies); on MPM only where the body touches
     HEARTH_GRIP = 3      ///< colliders only: sticky, and particles inside are carried rigidly (a clamp holding a dough's end)
 } hearth_contact;
 

@@ -8,6 +8,7 @@
 #ifndef HEARTH_SIM_MPM_H
 #define HEARTH_SIM_MPM_H
 #include <math.h>
+#include <stdint.h>
 
 #include "error.h"
 #include "grid.h"
@@ -81,6 +82,7 @@ typedef struct mpm_state {
     /* MPI ranks (mpm_ranks.c): this rank steps particle blocks [k_lo, k_hi); rank r
      * owns blocks [kfirst[r], kfirst[r + 1]) and particles [pfirst[r], pfirst[r + 1]) */
     int nranks, k_lo, k_hi;
+    double step_dt;         /* this step's dt, for the touch masks the slabs' halo_sum makes (mpm_touch.c) */
     int *kfirst, *pfirst;   /* nranks + 1 each */
     int failed_alone;       /* a step call failed here with an error the other ranks may not share: no more exchanges (mpm_ranks_end) */
     struct mpm_slabs *slabs; /* the slab mode's state (mpm_ranks.c) */
@@ -293,6 +295,9 @@ hearth_status mpm_ranks_migrate(hearth_scene *s, hearth_error *err);
 hearth_status mpm_ranks_mark(hearth_scene *s, hearth_error *err);
 /// After the grid update: the owners' node values of the ghost blocks back to the ranks that touch them.
 hearth_status mpm_ranks_halo_back(hearth_scene *s, hearth_error *err);
+/* Slabs: the touch mask (mpm_touch.h) of face f (mpm_touch_face) that the lower neighbour's particles give
+ * block id of this rank's first layer, sent with the ghost layer's sums (halo_sum); 0 elsewhere. */
+uint64_t mpm_ranks_touch_below(const hearth_scene *s, int id, int f);
 /// In the slab mode: 1, this rank's slab's block layers [*lo, *hi) along *axis; else 0.
 int mpm_ranks_slab(const mpm_state *m, int *axis, int *lo, int *hi);
 /* mpm_ranks_fields.c: heat and water on slabs, through one complete block

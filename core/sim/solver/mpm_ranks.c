@@ -63,6 +63,7 @@
 #include "error.h"
 #include "mixing.h"
 #include "mpm.h"
+#include "mpm_touch.h"
 #include "particles.h"
 #include "ranks.h"
 #include "thermal.h"
@@ -97,6 +98,10 @@ struct mpm_slabs {
     unsigned char *out[2];  /* packed particles for the lower and the upper neighbour */
     size_t outcap[2];
     int *nall;              /* nranks + 1: every rank's particle count, then the prefix */
+    uint64_t *touch;        /* the touch masks: the ghost layer's, packed to send up, then the layer cut[me]'s from
+                             * below (layer blocks x faces, 0 where none came; mpm_touch.c) */
+    size_t touchcap;        /* uint64_t */
+    int touch_nf;           /* faces a block's masks hold (mpm_touch_faces), 0 when none came this step */
 };
 
 /* (a test may give the state a rank count by hand, without the slab tables) */
@@ -126,6 +131,7 @@ void mpm_ranks_free(mpm_state *m) {
         mem_free(sl->lowmark, sl->lowcap);
         mem_free(sl->halo, sl->halocap * sizeof(double));
         for (int k = 0; k < 2; k++) mem_free(sl->out[k], sl->outcap[k]);
+        mem_free(sl->touch, sl->touchcap * sizeof(uint64_t));
         mem_free(sl, sizeof *sl);
         m->slabs = NULL;
     }
@@ -590,6 +596,65 @@ static hearth_status halo_reserve(struct mpm_slabs *sl, size_t n, hearth_error *
     return HEARTH_OK;
 }
 
+/* A slip or separate face holds a node only where a particle in its stencil touches the face (mpm_touch.c),
+ * and the particles whose stencils reach the first layer of a slab include the lower neighbour's: after the
+ * ghost layer's sums, its touch masks (every face's, for each block this rank's particles touched) go up too,
+ * and the owner ORs them into its own (mpm_ranks_touch_below), so a node on a seam is held as on one rank. */
+static hearth_status halo_touch(hearth_scene *s, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    struct mpm_slabs *sl = m->slabs;
+    const grid *g = &s->g;
+    const int up = ghost_layer(m), me = ranks_rank(), F = mpm_touch_faces(s), S = layer_blocks(g, sl->axis);
+    const size_t need = (size_t)S * (size_t)F;
+    if (need > sl->touchcap) {
+        uint64_t *b = mem_alloc(need * sizeof(uint64_t));
+        if (!b) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the seam's touch masks (%zu bytes)", need * sizeof(uint64_t));
+        mem_free(sl->touch, sl->touchcap * sizeof(uint64_t));
+        sl->touch = b, sl->touchcap = need;
+    }
+    size_t nup = 0;
+    if (up >= 0)
+        FOR_LAYER(g, sl->axis, up, id, k, {
+            if (m->mark[id] & 1) {
+                int bc[3];
+                grid_block_coords(g, id, bc);
+                for (int f = 0; f < F; f++) sl->touch[nup++] = mpm_touch_face_mask(s, bc, f, m->step_dt);
+            }
+        });
+    const void *lo, *hi;
+    size_t nlo, nhi;
+    hearth_status st = ranks_neighbours(NULL, 0, sl->touch, nup * sizeof(uint64_t), &lo, &nlo, &hi, &nhi, err);
+    if (st) return st;
+    memset(sl->touch, 0, need * sizeof(uint64_t));
+    sl->touch_nf = 0;
+    if (me > 0) {
+        const uint64_t *src = lo;
+        size_t r = 0;
+        FOR_LAYER(g, sl->axis, sl->cut[me], id, k, {
+            if (sl->lowmark[k]) {
+                memcpy(sl->touch + (size_t)k * (size_t)F, src + r, (size_t)F * sizeof(uint64_t));
+                r += (size_t)F;
+            }
+        });
+        HEARTH_ASSERT(r * sizeof(uint64_t) == nlo);
+        sl->touch_nf = F;
+    }
+    return HEARTH_OK;
+}
+
+uint64_t mpm_ranks_touch_below(const hearth_scene *s, int id, int f) {
+    const mpm_state *m = s->mpm;
+    if (!slabs_live(m) || !m->slabs->touch_nf) return 0;
+    const struct mpm_slabs *sl = m->slabs;
+    const grid *g = &s->g;
+    int c[3];
+    grid_block_coords(g, id, c);
+    if (c[sl->axis] != sl->cut[ranks_rank()]) return 0;
+    const int o1 = sl->axis == 0 ? 1 : 0, o2 = sl->axis == 2 ? 1 : 2; /* FOR_LAYER's order */
+    const int k = c[o1] * g->nb[o2] + c[o2];
+    return sl->touch[(size_t)k * (size_t)sl->touch_nf + (size_t)f];
+}
+
 /* After P2G: this rank's sums on the ghost layer go to their owner, which adds
  * them after its own (own, then the lower neighbour's: a fixed order); here
  * they are cleared, so the grid update sees only blocks this rank owns. */
@@ -628,7 +693,7 @@ static hearth_status halo_sum(hearth_scene *s, hearth_error *err) {
         });
         HEARTH_ASSERT(r * sizeof(double) == nlo);
     }
-    return HEARTH_OK;
+    return halo_touch(s, err);
 }
 
 hearth_status mpm_ranks_halo_back(hearth_scene *s, hearth_error *err) {

@@ -9,9 +9,12 @@
 -- The tray: tray = "separate" (default; a greased tray or baking paper: the base may slide, friction 0.4, and lift)
 -- or "sticky" (a bare tray the dough sticks to: the contact holds the base where it touches, in tension too).
 -- On the separate tray the bottom rows, heated through 25..70 degC in the first minute, swell under their pores'
--- gas (gas.h, gas_tau_ambient) and lift the base off the tray by ~0.4 dx, and the base's ends curl up; on the
+-- gas (gas.h, gas_tau_ambient) and push the base up, and it comes back down: the tray holds a node only where the
+-- dough touches it (mpm_touch.c), so the base rests with its lowest particles about their half-spacing above the
+-- tray (base_lift_m at most 1.8 mm at 5 mm, 0.76 at 2.5 mm: the lowest particles start jittered below their
+-- half-spacing, and swell; it was ~0.4 dx, 3.3 and 1.7 mm, when the tray held every node a cell up). On the
 -- sticky one the base stays, but at dx 2.5 mm the top tears open at 12 min (docs/validation.md, "The physical
--- loaf's base on its tray").
+-- loaf's base on its tray", "A body rests on what it touches").
 --   hearth run scripts/scenes/baking/loaf_physical.lua [--set dx=0.0025] [--set latent=false] [--set tray=sticky]
 -- What it shows: the crumb climbs to 100 degC and holds there while it holds
 -- water (the boiling plateau), while the crust dries and heats on toward the

@@ -1,0 +1,142 @@
+/* mpm_touch.c: a slip or separate face holds a node only where the body touches it (#18).
+ *
+ * The grid update holds every node on or inside a collider's face (and the two
+ * node layers of a closed domain wall) whose velocity approaches it. A node on
+ * the face has mass from every particle within 1.5 dx of it (quadratic
+ * B-splines), so the contact used to engage up to about a cell before the body
+ * reached the face: a block released a cell above a separate tray came to rest
+ * a cell above it, on nothing, and the physical loaf's base, once its bottom
+ * rows had swelled off the tray, never came back down (docs/validation.md, "A
+ * body rests on what it touches").
+ *
+ * Here a held node of a slip or separate face needs a particle that touches
+ * that face among the particles whose stencil holds the node. A particle
+ * touches when its distance to the face is at most its own half-extent h_p
+ * (half its current spacing, (J V0)^(1/dim) / 2: a risen loaf's swollen base
+ * rests higher than a fresh one; 2D's default 4 particles a cell sit dx / 2
+ * apart, h_p = dx / 4), with two allowances:
+ *  - COLLIDER_ROW_TOL dx, as for a node on a face's row: a body seeded on a
+ *    lattice with the face at its edge has its lowest row at h_p up to the
+ *    SDF's round-off;
+ *  - the distance the particle closes on the face in this step, dt times its
+ *    approach speed: without it a falling body's base row can pass the face
+ *    before the contact engages, and collider_project_particle stops it on the
+ *    face, h_p too low.
+ * A quarter of h_p more (an allowance for the particle's shape under F) left
+ * dropped blocks resting 0.03-0.06 dx above h_p; without it they rest within
+ * 0.03 dx below it (docs/validation.md). The particles that still cross the
+ * face are put back by collider_project_particle after G2P, as before.
+ *
+ * Sticky and grip faces keep holding every node on and inside them. A grip
+ * holds material inside it. A sticky face is glue: it holds a body in tension
+ * too, and the same test there let go of a vibrating bar's glued end as it
+ * stretched away (vibrating_bar: no period found) and of a Couette layer whose
+ * sticky lid sits 1e-6 dx off its top (couette_lid_on_node_row: 0.0 of the lid
+ * speed for 0.5). So a sticky tray still grabs a body released a cell above it
+ * (docs/validation.md: it hangs a cell up).
+ *
+ * The test reads the particles of the 2^dim particle blocks whose stencils
+ * reach the grid block (the block itself and its -1 neighbours: a particle's
+ * stencil starts at its block's base node), sorted by the step's sort, only
+ * for a grid block with a node on a slip or separate face, once per block and
+ * face. It reads positions P2G scattered from and writes nothing: the same
+ * result at any thread count or order. Rejected: a touch channel scattered in
+ * P2G like the mass (every scene's P2G and its tiles, the gather's store and
+ * the ranks' halo sums would carry one more channel for a few nodes on a
+ * tray). Under MPI slabs a rank sees only its own particles: a node on a
+ * seam is held only for a touching particle of its owner (docs/validation.md). */
+#include "mpm_touch.h"
+
+#include <math.h>
+
+#include "colliders.h"
+
+
+/* the particle block of grid block id, or -1 (the sort lists them in ascending block order) */
+static int pb_of_block(const mpm_state *m, int id) {
+    int lo = 0, hi = m->npb - 1;
+    while (lo <= hi) {
+        const int mid = (lo + hi) / 2, b = m->pb[mid].block;
+        if (b == id) return mid;
+        if (b < id) lo = mid + 1;
+        else hi = mid - 1;
+    }
+    return -1;
+}
+
+/* particle i's half-extent h_p (m): half its current spacing */
+static double half_extent(const hearth_scene *s, int i) {
+    const double v = particles_J(&s->ps, i) * pcold(&s->ps, PC_VOL0)[i];
+    return 0.5 * (s->g.dim == 2 ? sqrt(fabs(v)) : cbrt(fabs(v)));
+}
+
+/* The face: collider c, or (c NULL) the domain wall on axis d, side (0 low, 1 high). Returns the particle's
+ * distance to it (m) and its outward normal n there. */
+static double face_distance(const hearth_scene *s, const collider *c, int d, int side, const double x[3], double n[3]) {
+    const grid *g = &s->g;
+    if (c) {
+        const double phi = collider_sdf(c, x, n);
+        if (g->dim == 2) n[2] = 0.0;
+        return phi;
+    }
+    /* G2P keeps particles within [lo + dx, lo + (nn - 2) dx]: the walls' faces (their held layers end there) */
+    for (int a = 0; a < 3; a++) n[a] = 0.0;
+    n[d] = side ? -1.0 : 1.0;
+    return side ? g->lo[d] + (g->nn[d] - 2) * g->dx - x[d] : x[d] - (g->lo[d] + g->dx);
+}
+
+uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *c, int d, int side, double dt) {
+    const grid *g = &s->g;
+    const mpm_state *m = s->mpm;
+    const int D = g->dim;
+    const double *X = pcold(&s->ps, PC_X), *V = pcold(&s->ps, PC_V);
+    uint64_t mask = 0;
+    for (int o = 0; o < (D == 2 ? 4 : 8); o++) {
+        int b[3] = {bc[0] - (o & 1), bc[1] - ((o >> 1) & 1), D == 3 ? bc[2] - ((o >> 2) & 1) : 0};
+        if (b[0] < 0 || b[1] < 0 || b[2] < 0) continue;
+        const int k = pb_of_block(m, grid_block_id(g, b[0], b[1], b[2]));
+        if (k < 0) continue;
+        for (int i = m->pb[k].start; i < m->pb[k].end; i++) {
+            const double *x = X + 3 * i, *v = V + 3 * i;
+            if (c && !collider_near(c, x)) continue; /* the bound reaches 2 dx past the face */
+            double n[3];
+            const double phi = face_distance(s, c, d, side, x, n);
+            if (phi > 2.0 * g->dx) continue;
+            const double reach = half_extent(s, i) + COLLIDER_ROW_TOL * g->dx;
+            if (phi > reach) { /* within reach only by what it closes this step: the face's velocity too */
+                double vb[3] = {0, 0, 0};
+                if (c) collider_velocity_at(c, x, vb);
+                if (g->dim == 2) vb[2] = 0.0;
+                const double close = -((v[0] - vb[0]) * n[0] + (v[1] - vb[1]) * n[1] + (v[2] - vb[2]) * n[2]);
+                if (phi > reach + dt * fmax(0.0, close)) continue;
+            }
+            /* its stencil's nodes in this block */
+            int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+            for (int a = 0; a < D; a++) {
+                const int base = base_node((x[a] - g->lo[a]) * g->inv_dx) - bc[a] * GRID_B;
+                lo[a] = base < 0 ? 0 : base;
+                hi[a] = base + 2 > GRID_B - 1 ? GRID_B - 1 : base + 2;
+            }
+            for (int p = lo[0]; p <= hi[0]; p++)
+                for (int q = lo[1]; q <= hi[1]; q++)
+                    for (int r = lo[2]; r <= hi[2]; r++)
+                        mask |= (uint64_t)1 << (D == 2 ? p * GRID_B + q : (p * GRID_B + q) * GRID_B + r);
+        }
+    }
+    return mask;
+}
+
+int mpm_touch_gated(hearth_contact mode) { return mode == HEARTH_SLIP || mode == HEARTH_SEPARATE; }
+
+int mpm_touch_faces(const hearth_scene *s) { return s->ncol + 6; }
+
+uint64_t mpm_touch_face_mask(const hearth_scene *s, const int bc[3], int f, double dt) {
+    if (f < s->ncol) return mpm_touch_gated(s->cols[f].mode) ? mpm_touch_mask(s, bc, &s->cols[f], 0, 0, dt) : 0;
+    const int d = (f - s->ncol) / 2, side = (f - s->ncol) % 2;
+    const grid *g = &s->g;
+    if (d >= g->dim || s->def.periodic[d] || !mpm_touch_gated(s->def.wall)) return 0;
+    /* the walls hold the two node layers nearest each face: a block that has none of them has no mask */
+    const int lo = bc[d] * GRID_B, hi = lo + GRID_B - 1;
+    if (side ? hi < g->nn[d] - 2 : lo > 1) return 0;
+    return mpm_touch_mask(s, bc, NULL, d, side, dt);
+}
