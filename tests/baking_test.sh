@@ -122,30 +122,40 @@ PY
     ;;
 
 # #18 (helper basefoot): a baker's loaf sits flat on its tray; the physical loaf's base must not leave it. Over the raw
-# base's middle 80% (16 columns of 4 mm), no column's lowest particle may stand more than 0.5 mm above where it
-# started (loaf.csv's base_lift_m, each real minute) over the bake's first 2 real minutes, when the bottom rows pass
-# 25..70 degC on the 200 degC tray. Bar set before the run, from what is seen: a base off its tray by half a mm shows
-# a gap in its browned band; a fifth of a 2.5 mm cell. At dx 5 mm, 2 real minutes (~2 s).
-claim_loaf_physical_base_on_tray)
-    run loaf_physical --set until_real=120 --set frames=2 >/dev/null
-    python3 - "$(find hearth-out/loaf_physical -name loaf.csv | head -1)" <<'PY'
+# base's middle 80% (16 columns of 4 mm), no column's lowest particle edge (y - h_p, h_p = (V0 J)^(1/2) / 2, the
+# half-extent the tray's contact reads: mpm_touch.c) may stand more than 0.5 mm above the tray (loaf.csv's
+# base_gap_m, each real minute) over the bake's first 2 real minutes, when the bottom rows pass 25..70 degC on the
+# 200 degC tray. Bar set before the run (basefoot's), from what is seen: a base off its tray by half a mm shows a gap
+# in its browned band; a fifth of a 2.5 mm cell. At dx 5 mm (~2 s); _fine at 2.5 mm (~11 s).
+# Until traygap the claim read base_lift_m, each column's rise off its start: that also counts the seeding's jitter
+# (the lowest particles start up to 0.12 dx inside their half-extent and rest at it once the contact holds) and the
+# bottom particles' own swelling, neither of which is the base leaving the tray; it is still printed.
+claim_loaf_physical_base_on_tray | claim_loaf_physical_base_on_tray_fine)
+    dx=0.005
+    [ "$case_name" = claim_loaf_physical_base_on_tray_fine ] && dx=0.0025
+    run loaf_physical --set dx=$dx --set until_real=120 --set frames=2 >/dev/null
+    python3 - "$(find hearth-out/loaf_physical -name loaf.csv | head -1)" $dx <<'PY'
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
+dx = float(sys.argv[2])
+gap = [float(r["base_gap_m"]) for r in rows]
 lift = [float(r["base_lift_m"]) for r in rows]
-j = max(range(len(lift)), key=lambda i: lift[i])
-print(f"dx 5.0 mm: the base's largest lift over its middle 80% {lift[j] * 1e3:.2f} mm at {rows[j]['t_real_min']} min "
-      f"(need <= 0.5 mm)")
-if lift[j] <= 0.5e-3:
+j = max(range(len(gap)), key=lambda i: gap[i])
+print(f"dx {dx * 1e3:.1f} mm: the base's largest gap to the tray over its middle 80% {gap[j] * 1e3:.2f} mm at "
+      f"{rows[j]['t_real_min']} min (need <= 0.5 mm); at the start {gap[0] * 1e3:.2f} mm (the seeding's); the largest "
+      f"rise of a column's lowest particle off its start {max(lift) * 1e3:.2f} mm")
+if gap[j] <= 0.5e-3:
     sys.exit(0)
-print("EXPECTED FAILURE: the base comes back down onto its separate tray since a face holds a node only where the "
-      "body touches it (mpm_touch.c, helper traygap: 2.96 mm here before, when the tray held every node a cell up), but "
-      "the bar measures each column's lowest particle against its start, and those start jittered 0.13-0.30 dx above "
-      "the tray (bodies.c's seeding) and, once the bottom rows have swelled under their pores' gas in the first minute "
-      "(J ~1.15; helper basefoot), come to rest about their half-spacing (J V0)^(1/2) / 2 above it (~0.27 dx; 0.49 dx "
-      "at the end column): at most 1.80 mm at 5 mm and 0.76 at 2.5 mm over the bake (mean 1.43 and 0.64 mm), first "
-      "order in dx. The base browns end to end (0.870 at 5 mm, 0.785 at 2.5 mm). Half a particle spacing of play at "
-      "a face is the discretisation's; the 0.5 mm bar at 5 mm asks for less than the seeding's jitter "
-      "(docs/validation.md, \"A body rests on what it touches\").")
+if dx < 0.004:
+    sys.exit(1)
+print("EXPECTED FAILURE: at 5 mm a column's lowest particle edge stands up to ~0.2 dx off the tray, and at 2.5 mm "
+      "0.14 dx (0.36 mm: _fine passes). The base is down (the contact holds a node only where a particle touches the "
+      "face, mpm_touch.c, helper traygap: before it the base floated 2.96 mm up), but its edge is a particle's: the "
+      "seeding jitters each particle by up to 0.125 dx (half a spacing of jitter: bodies.c, scene.c; the gap at the start "
+      "ranges -0.62..+0.24 mm at 5 mm), "
+      "and a column whose lowest particle sits higher than a neighbour that touches is carried by the same held "
+      "nodes, so the base is as rough as its particles, ~0.2 dx; the 0.5 mm bar is 0.1 dx here. The base browns end "
+      "to end (docs/validation.md, \"A body rests on what it touches\").")
 sys.exit(77)
 PY
     rc=$?
