@@ -65,7 +65,17 @@ def cracks(path, dx):
           f"{r['cracked']} cracked particles, top X/X0 {float(r['moisture_top']):.3f}")
     if d >= 0.1 * h and w >= 2 * dx:
         return 0
-    print("EXPECTED FAILURE: no crack starts in the crust at this dx. Under the stretch rule (cam_clay_dough's "
+    print("EXPECTED FAILURE: no crack starts in the crust at this dx; at 4 mm the crown reads 0.26 mm (4 mm wide, 9 "
+          "cracked, top X/X0 0.213; 9.96 mm before the tray held only where the loaf touches it), because the crack "
+          "was made by the tray's friction holding the loaf's base: the old contact held the nodes under the loaf's "
+          "foot, whose lowest particles stand 1.0-2.6 mm above the tray from 1 s on (the touch reach h_p is 1.0 mm), with friction, so the base stopped spreading "
+          "(93 mm wide at 2 s; now 97) and the rise went into the crown's stretch (top_arc_m 74.9 mm at 2 s; now 70.0); "
+          "on a frictionless tray neither contact cracks the crown at 5 or 4 mm (0.33, 0.29 mm deep) nor 3 mm (1.45 mm; "
+          "15.51 mm with friction), a touch "
+          "reach 0.25 dx longer brings the 4 mm crack back (8.08 mm), 0.5 dx its old depth (9.96 mm), 1 dx the old run's numbers, and a stuck tray "
+          "(sticky, or friction 1) cracks the 4 mm crown (32, 36 mm) but not 5 mm (0.24, 0.18 mm), whose skin is "
+          "stretched as much (74.8 mm) but wetter (docs/validation.md, 'The unscored crack with the loaf on its tray "
+          "(#18, helper crackback)', scripts/validation/crack_tray.lua). Before that: under the stretch rule (cam_clay_dough's "
           "fracture_stretch = 1) the rise stretches the top (top_arc_m +12% between 0.5 and 1.3 s) while its one cell "
           "of crust is still wet: the top particle stands for the top cell, whose water leaves through the next cell "
           "at a rate ~D/dx^2, so at 5 mm its X is 0.28-0.31 kg/kg during the rise (stretch to fracture 0.13-0.21) "
