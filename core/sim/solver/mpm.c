@@ -411,7 +411,6 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
 
 /* A slip or separate face (collider or domain wall) holds a node only where the body touches it; sticky
  * and grip faces hold every node on and inside them (mpm_touch.c says why). */
-static inline int touch_gated(hearth_contact mode) { return mpm_touch_gated(mode); }
 enum { TOUCH_CACHE = 32 }; /* colliders whose masks a block keeps; past them each node asks again (the same mask) */
 
 /* One active block's nodes; returns the fastest collider speed squared at a
@@ -464,7 +463,7 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
             if (idx[d] < wlo[d]) n[d] = 1.0;
             else if (idx[d] > whi[d]) n[d] = -1.0;
             else continue;
-            if (touch_gated(def->wall) && (def->wall == HEARTH_SLIP || v[d] * n[d] < 0)) {
+            if (mpm_touch_gated(def->wall) && (def->wall == HEARTH_SLIP || v[d] * n[d] < 0)) {
                 const int side = n[d] < 0;
                 if (!(wdone[d] >> side & 1)) {
                     wmask[d][side] = mpm_touch_mask(s, bc, NULL, d, side, dt), wdone[d] |= 1 << side;
@@ -491,7 +490,7 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
             /* only where the body touches the face (mpm_touch.c); a separate face leaves a node that does not
              * approach it alone anyway, so it asks only for one that does */
             const double vn = (v[0] - vb[0]) * n[0] + (v[1] - vb[1]) * n[1] + (v[2] - vb[2]) * n[2];
-            if (touch_gated(s->cols[c].mode) && (s->cols[c].mode != HEARTH_SEPARATE || vn < 0)) {
+            if (mpm_touch_gated(s->cols[c].mode) && (s->cols[c].mode != HEARTH_SEPARATE || vn < 0)) {
                 uint64_t mask;
                 if (c < TOUCH_CACHE && cdone >> c & 1) {
                     mask = cmask[c];
