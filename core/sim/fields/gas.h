@@ -76,25 +76,15 @@ static inline double gas_tau(double ng, double T, double np) { return -ng * R_GA
 /// the gas holds no pressure: 0 from there. The gas's stiffness -J dp/dJ = n R theta / (J n^p) / n^p, 2e5-1e6 Pa
 /// against the dough's E ~ 3e4, goes into *stiff for the step (material_gas_wave); 0 when open. Ambient 0 never
 /// comes here: gas_tau, the same bits as before.
-#ifndef GAS_OPEN_RANGE_EXPERIMENT
-#define GAS_OPEN_RANGE_EXPERIMENT 10.0
-#endif
 static inline double gas_tau_ambient(double ng, double T, double J, int wet, double pa, double n0, double T0,
                                      double Topen, double *stiff) {
     *stiff = 0;
-    const double W = GAS_OPEN_RANGE_EXPERIMENT; /* EXPERIMENT (openrange): the cells open over [Topen, Topen + W] */
-    if (T >= Topen + W) return 0;
+    if (T >= Topen) return 0;
     const double th = T + KELVIN, th0 = T0 + KELVIN, np = gas_porosity(J, n0);
     const double pv = wet ? vapour_psat(th) : 0, pv0 = wet ? vapour_psat(th0) : 0;
     const double nair = (pa - pv0) * n0 / (R_GAS * th0);
     const double nrt = (nair + ng) * R_GAS * th; /* J n^p times the non-condensable gas's partial pressure */
     *stiff = nrt / (J * np * np);
-    const double tau = -nrt / np - J * (pv - pa);
-    if (T > Topen) { /* the closed fraction */
-        const double fc = (Topen + W - T) / W;
-        *stiff *= fc;
-        return fc * tau;
-    }
-    return tau;
+    return -nrt / np - J * (pv - pa);
 }
 #endif
