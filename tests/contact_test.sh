@@ -60,6 +60,24 @@ drop_same_bits_threads)
     echo "1 thread: $a"; echo "2 threads: $b"
     [ "$a" = "$b" ] || bad=1
     ;;
+drop_rests_across_periodic_seam)
+    # tests/contact/seam.lua: a block split across the seam of a box periodic in x lands on the separate floor
+    # from 1 and 2 cells up; its lowest particle within 6 mm of the seam must rest within 0.05 dx of its
+    # half-spacing, as anywhere else (the bar of the drops above, set before the run)
+    for l in 1 2; do
+        "$hearth" run "$root/tests/contact/seam.lua" --quiet --set lift=$l >out.txt 2>err.txt ||
+            { echo "FAIL: seam.lua lift=$l: exit $?: $(cat err.txt)" >&2; exit 1; }
+        python3 - out.txt $l <<'PY' || bad=1
+import sys
+r = dict(kv.split("=") for kv in open(sys.argv[1]).read().split("result")[-1].split())
+low, seam, hp = float(r["lowest"]), float(r["seam"]), float(r["hp"])
+ok = abs(seam - hp) <= 0.05 and abs(low - hp) <= 0.05
+print(f"dropped {sys.argv[2]} dx across the periodic seam: lowest {low:.4f} dx, by the seam {seam:.4f} dx "
+      f"(need {hp - 0.05:.2f}..{hp + 0.05:.2f}): {'ok' if ok else 'FAIL'}")
+sys.exit(0 if ok else 1)
+PY
+    done
+    ;;
 *) echo "unknown case $case_name" >&2; exit 1 ;;
 esac
 [ $bad -eq 0 ] || { echo "FAIL: $case_name (numbers above)" >&2; exit 1; }
