@@ -409,10 +409,6 @@ void mpm_p2g(hearth_scene *s, double dt, step_report *rep) {
 
 /* ---- grid update ----------------------------------------------------- */
 
-/* A slip or separate face (collider or domain wall) holds a node only where the body touches it; sticky
- * and grip faces hold every node on and inside them (mpm_touch.c says why). */
-enum { TOUCH_CACHE = 32 }; /* colliders whose masks a block keeps; past them each node asks again (the same mask) */
-
 /* One active block's nodes; returns the fastest collider speed squared at a
  * node with mass (the guard's driven energy). DAMP is a compile-time constant
  * in each of the two loops of mpm_grid_update, so the undamped one carries no
@@ -432,9 +428,9 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
         wlo[d] = def->periodic[d] ? INT_MIN : 2;
         whi[d] = def->periodic[d] ? INT_MAX : g->nn[d] - 3;
     }
-    /* the touch masks of this block's walls and first TOUCH_CACHE colliders, each made once when a node asks */
-    uint64_t wmask[3][2], cmask[TOUCH_CACHE];
-    unsigned wdone[3] = {0, 0, 0}, cdone = 0;
+    /* a slip or separate face holds a node only where the body touches it (mpm_touch.c): the block's masks,
+     * each made when a node first asks */
+    mpm_touch_cache touch = {.done = 0};
     for (int l = 0; l < NPB; l++) {
         const double m = node[l];
         if (m <= 0.0) {
@@ -463,14 +459,9 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
             if (idx[d] < wlo[d]) n[d] = 1.0;
             else if (idx[d] > whi[d]) n[d] = -1.0;
             else continue;
-            if (mpm_touch_gated(def->wall) && (def->wall == HEARTH_SLIP || v[d] * n[d] < 0)) {
-                const int side = n[d] < 0;
-                if (!(wdone[d] >> side & 1)) {
-                    wmask[d][side] = mpm_touch_mask(s, bc, NULL, d, side, dt), wdone[d] |= 1 << side;
-                    if (s->mpm->nranks > 1) wmask[d][side] |= mpm_ranks_touch_below(s, g->active[k], s->ncol + 2 * d + side);
-                }
-                if (!(wmask[d][side] >> l & 1)) continue;
-            }
+            if (mpm_touch_gated(def->wall) && (def->wall == HEARTH_SLIP || v[d] * n[d] < 0) &&
+                !mpm_touch_holds(s, &touch, g->active[k], bc, s->ncol + 2 * d + (n[d] < 0), l, dt))
+                continue;
             contact_apply(def->wall, def->wall_friction, n, zero, v);
         }
         for (int c = 0; c < s->ncol; c++) {
@@ -490,19 +481,10 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
             /* only where the body touches the face (mpm_touch.c); a separate face leaves a node that does not
              * approach it alone anyway, so it asks only for one that does */
             const double vn = (v[0] - vb[0]) * n[0] + (v[1] - vb[1]) * n[1] + (v[2] - vb[2]) * n[2];
-            if (mpm_touch_gated(s->cols[c].mode) && (s->cols[c].mode != HEARTH_SEPARATE || vn < 0)) {
-                uint64_t mask;
-                if (c < TOUCH_CACHE && cdone >> c & 1) {
-                    mask = cmask[c];
-                } else {
-                    mask = mpm_touch_mask(s, bc, &s->cols[c], 0, 0, dt);
-                    if (s->mpm->nranks > 1) mask |= mpm_ranks_touch_below(s, g->active[k], c); /* a seam's other side */
-                    if (c < TOUCH_CACHE) cmask[c] = mask, cdone |= 1u << c;
-                }
-                if (!(mask >> l & 1)) {
-                    vcol2 = fmax(vcol2, vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]);
-                    continue;
-                }
+            if (mpm_touch_gated(s->cols[c].mode) && (s->cols[c].mode != HEARTH_SEPARATE || vn < 0) &&
+                !mpm_touch_holds(s, &touch, g->active[k], bc, c, l, dt)) {
+                vcol2 = fmax(vcol2, vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]);
+                continue;
             }
             /* a held node within reach of a sticky face's reflection: a negative mass marks it for
              * mpm_sticky_ghosts_block, which finds it without an SDF per node and restores the sign */

@@ -140,3 +140,17 @@ uint64_t mpm_touch_face_mask(const hearth_scene *s, const int bc[3], int f, doub
     if (side ? hi < g->nn[d] - 2 : lo > 1) return 0;
     return mpm_touch_mask(s, bc, NULL, d, side, dt);
 }
+
+int mpm_touch_holds(const hearth_scene *s, mpm_touch_cache *tc, int id, const int bc[3], int f, int l, double dt) {
+    uint64_t mask;
+    if (f < MPM_TOUCH_CACHE && tc->done >> f & 1) {
+        mask = tc->mask[f];
+    } else {
+        const int w = f - s->ncol; /* a wall: axis w / 2, side w % 2 */
+        mask = w < 0 ? mpm_touch_mask(s, bc, &s->cols[f], 0, 0, dt) : mpm_touch_mask(s, bc, NULL, w / 2, w % 2, dt);
+        if (s->mpm->nranks > 1) mask |= mpm_ranks_touch_below(s, id, f); /* a seam's other side */
+        if (f < MPM_TOUCH_CACHE) tc->mask[f] = mask, tc->done |= (uint64_t)1 << f;
+    }
+    return (int)(mask >> l & 1);
+}
+

@@ -15,4 +15,14 @@ uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *
 int mpm_touch_faces(const hearth_scene *s);
 int mpm_touch_gated(hearth_contact mode);
 uint64_t mpm_touch_face_mask(const hearth_scene *s, const int bc[3], int f, double dt);
+/* A grid block's touch masks, by face number f, for the grid update: each made once, when a node first asks. */
+enum { MPM_TOUCH_CACHE = 64 }; /* faces a block keeps; past them each node asks again (the same mask) */
+typedef struct mpm_touch_cache {
+    uint64_t mask[MPM_TOUCH_CACHE];
+    uint64_t done; /* bit f: mask[f] made */
+} mpm_touch_cache;
+/* 1: slip or separate face f (a collider, or ncol + 2 d + side a domain wall) may hold node l of the grid block
+ * id at block coordinates bc: a particle that touches the face has the node in its stencil, on this rank or
+ * (a slab's seam) the lower neighbour's (mpm_ranks_touch_below). */
+int mpm_touch_holds(const hearth_scene *s, mpm_touch_cache *tc, int id, const int bc[3], int f, int l, double dt);
 #endif
