@@ -85,11 +85,31 @@ static double face_distance(const hearth_scene *s, const collider *c, int d, int
     return side ? g->lo[d] + (g->nn[d] - 2) * g->dx - x[d] : x[d] - (g->lo[d] + g->dx);
 }
 
-uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *c, int d, int side, double dt) {
+/* 1: particle i touches the face (collider c, or the wall on axis d, side) this step of dt: its distance within
+ * its half-extent and the allowances above. The one test of the slip and separate faces' hold and of the glue. */
+static int touches(const hearth_scene *s, const collider *c, int d, int side, int i, double dt) {
+    const grid *g = &s->g;
+    const double *x = pcold(&s->ps, PC_X) + 3 * i, *v = pcold(&s->ps, PC_V) + 3 * i;
+    if (c && !collider_near(c, x)) return 0; /* the bound reaches 2 dx past the face */
+    double n[3];
+    const double phi = face_distance(s, c, d, side, x, n);
+    if (phi > 2.0 * g->dx) return 0;
+    const double reach = half_extent(s, i) + COLLIDER_ROW_TOL * g->dx;
+    if (phi <= reach) return 1;
+    /* within reach only by what it closes this step: the face's velocity too */
+    double vb[3] = {0, 0, 0};
+    if (c) collider_velocity_at(c, x, vb);
+    if (g->dim == 2) vb[2] = 0.0;
+    const double close = -((v[0] - vb[0]) * n[0] + (v[1] - vb[1]) * n[1] + (v[2] - vb[2]) * n[2]);
+    return phi <= reach + dt * fmax(0.0, close);
+}
+
+uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *c, int d, int side, double dt, int glue) {
     const grid *g = &s->g;
     const mpm_state *m = s->mpm;
     const int D = g->dim;
-    const double *X = pcold(&s->ps, PC_X), *V = pcold(&s->ps, PC_V);
+    const double *X = pcold(&s->ps, PC_X);
+    const int *flags = glue ? pcoli(&s->ps, PC_FLAGS) : NULL; /* mpm_glue_mark enabled them */
     uint64_t mask = 0;
     for (int o = 0; o < (D == 2 ? 4 : 8); o++) {
         int b[3] = {bc[0] - (o & 1), bc[1] - ((o >> 1) & 1), D == 3 ? bc[2] - ((o >> 2) & 1) : 0};
@@ -97,19 +117,8 @@ uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *
         const int k = pb_of_block(m, grid_block_id(g, b[0], b[1], b[2]));
         if (k < 0) continue;
         for (int i = m->pb[k].start; i < m->pb[k].end; i++) {
-            const double *x = X + 3 * i, *v = V + 3 * i;
-            if (c && !collider_near(c, x)) continue; /* the bound reaches 2 dx past the face */
-            double n[3];
-            const double phi = face_distance(s, c, d, side, x, n);
-            if (phi > 2.0 * g->dx) continue;
-            const double reach = half_extent(s, i) + COLLIDER_ROW_TOL * g->dx;
-            if (phi > reach) { /* within reach only by what it closes this step: the face's velocity too */
-                double vb[3] = {0, 0, 0};
-                if (c) collider_velocity_at(c, x, vb);
-                if (g->dim == 2) vb[2] = 0.0;
-                const double close = -((v[0] - vb[0]) * n[0] + (v[1] - vb[1]) * n[1] + (v[2] - vb[2]) * n[2]);
-                if (phi > reach + dt * fmax(0.0, close)) continue;
-            }
+            if (glue ? !(flags[i] & glue) : !touches(s, c, d, side, i, dt)) continue;
+            const double *x = X + 3 * i;
             /* its stencil's nodes in this block */
             int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
             for (int a = 0; a < D; a++) {
@@ -128,17 +137,32 @@ uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *
 
 int mpm_touch_gated(hearth_contact mode) { return mode == HEARTH_SLIP || mode == HEARTH_SEPARATE; }
 
+int mpm_touch_glued(hearth_contact mode) { return mode == HEARTH_STICKY; }
+
 int mpm_touch_faces(const hearth_scene *s) { return s->ncol + 6; }
 
+int mpm_touch_glue_bit(const hearth_scene *s, int f) {
+    const int slot = f >= s->ncol ? f - s->ncol : 6 + f;
+    return 1 << (PF_GLUE_SHIFT + (slot < PF_GLUE_SLOTS ? slot : PF_GLUE_SLOTS - 1));
+}
+
+/* face f's mask, whatever its mode: the glued particles' stencils for a sticky face, the touching ones' else */
+static uint64_t face_mask(const hearth_scene *s, const int bc[3], int f, double dt) {
+    const int w = f - s->ncol; /* a wall: axis w / 2, side w % 2 */
+    const hearth_contact mode = w < 0 ? s->cols[f].mode : s->def.wall;
+    const int glue = mpm_touch_glued(mode) ? mpm_touch_glue_bit(s, f) : 0;
+    return w < 0 ? mpm_touch_mask(s, bc, &s->cols[f], 0, 0, dt, glue) : mpm_touch_mask(s, bc, NULL, w / 2, w % 2, dt, glue);
+}
+
 uint64_t mpm_touch_face_mask(const hearth_scene *s, const int bc[3], int f, double dt) {
-    if (f < s->ncol) return mpm_touch_gated(s->cols[f].mode) ? mpm_touch_mask(s, bc, &s->cols[f], 0, 0, dt) : 0;
+    if (f < s->ncol) return mpm_touch_gated(s->cols[f].mode) || mpm_touch_glued(s->cols[f].mode) ? face_mask(s, bc, f, dt) : 0;
     const int d = (f - s->ncol) / 2, side = (f - s->ncol) % 2;
     const grid *g = &s->g;
-    if (d >= g->dim || s->def.periodic[d] || !mpm_touch_gated(s->def.wall)) return 0;
+    if (d >= g->dim || s->def.periodic[d] || !(mpm_touch_gated(s->def.wall) || mpm_touch_glued(s->def.wall))) return 0;
     /* the walls hold the two node layers nearest each face: a block that has none of them has no mask */
     const int lo = bc[d] * GRID_B, hi = lo + GRID_B - 1;
     if (side ? hi < g->nn[d] - 2 : lo > 1) return 0;
-    return mpm_touch_mask(s, bc, NULL, d, side, dt);
+    return face_mask(s, bc, f, dt);
 }
 
 int mpm_touch_holds(const hearth_scene *s, mpm_touch_cache *tc, int id, const int bc[3], int f, int l, double dt) {
@@ -146,11 +170,62 @@ int mpm_touch_holds(const hearth_scene *s, mpm_touch_cache *tc, int id, const in
     if (f < MPM_TOUCH_CACHE && tc->done >> f & 1) {
         mask = tc->mask[f];
     } else {
-        const int w = f - s->ncol; /* a wall: axis w / 2, side w % 2 */
-        mask = w < 0 ? mpm_touch_mask(s, bc, &s->cols[f], 0, 0, dt) : mpm_touch_mask(s, bc, NULL, w / 2, w % 2, dt);
+        mask = face_mask(s, bc, f, dt);
         if (s->mpm->nranks > 1) mask |= mpm_ranks_touch_below(s, id, f); /* a seam's other side */
         if (f < MPM_TOUCH_CACHE) tc->mask[f] = mask, tc->done |= (uint64_t)1 << f;
     }
     return (int)(mask >> l & 1);
 }
 
+/* 1: a node of particle i's stencil is one the sticky face held before glue (checkpoints before version 11):
+ * a collider's node on or inside its face, a wall's node in its two layers */
+static int held_before_glue(const hearth_scene *s, const collider *c, int d, int side, int i) {
+    const grid *g = &s->g;
+    const double *x = pcold(&s->ps, PC_X) + 3 * i;
+    int base[3] = {0, 0, 0};
+    for (int a = 0; a < g->dim; a++) base[a] = base_node((x[a] - g->lo[a]) * g->inv_dx);
+    if (!c) return side ? base[d] + 2 > g->nn[d] - 3 : base[d] < 2;
+    if (!collider_near(c, x)) return 0;
+    for (int p = 0; p < 3; p++)
+        for (int q = 0; q < 3; q++)
+            for (int r = 0; r < (g->dim == 3 ? 3 : 1); r++) {
+                const int o[3] = {p, q, r};
+                double xi[3] = {0, 0, 0}, n[3];
+                for (int a = 0; a < g->dim; a++) xi[a] = g->lo[a] + (base[a] + o[a]) * g->dx;
+                if (collider_sdf(c, xi, n) <= COLLIDER_ROW_TOL * g->dx) return 1;
+            }
+    return 0;
+}
+
+hearth_status mpm_glue_mark(hearth_scene *s, double dt, hearth_error *err) {
+    const grid *g = &s->g;
+    const int legacy = s->glue_legacy; /* once, at the first step after the restore */
+    s->glue_legacy = 0;
+    int nf = 0, face[MPM_TOUCH_CACHE + 6];
+    for (int c = 0; c < s->ncol && nf < MPM_TOUCH_CACHE; c++)
+        if (mpm_touch_glued(s->cols[c].mode)) face[nf++] = c;
+    if (mpm_touch_glued(s->def.wall))
+        for (int d = 0; d < g->dim; d++)
+            if (!s->def.periodic[d]) face[nf++] = s->ncol + 2 * d, face[nf++] = s->ncol + 2 * d + 1;
+    if (!nf) return HEARTH_OK;
+    particles *ps = &s->ps;
+    if (!(ps->enabled & (1u << PC_FLAGS))) {
+        const hearth_status st = particles_enable(ps, PC_FLAGS, err);
+        if (st) return st;
+    }
+    int *flags = pcoli(ps, PC_FLAGS);
+    const int n = ps->n;
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        int fl = flags[i];
+        for (int j = 0; j < nf; j++) {
+            const int f = face[j], bit = mpm_touch_glue_bit(s, f), w = f - s->ncol;
+            if (fl & bit) continue;
+            const collider *c = w < 0 ? &s->cols[f] : NULL;
+            const int d = w < 0 ? 0 : w / 2, side = w < 0 ? 0 : w % 2;
+            if (touches(s, c, d, side, i, dt) || (legacy && held_before_glue(s, c, d, side, i))) fl |= bit;
+        }
+        flags[i] = fl;
+    }
+    return HEARTH_OK;
+}

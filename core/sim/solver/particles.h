@@ -69,6 +69,11 @@ static inline int particles_col_is_memo(int c) {
 enum { CURVE_MEMO_WIDTH = 5 };
 
 enum { PF_FIXED = 1, PF_BOUNDARY = 2, PF_HOLD_T = 4 }; /* pinned body; boundary particle (Ding et al. §6.6); keeps its temperature (a held body) */
+/* Glue (mpm_touch.c): bit PF_GLUE_SHIFT + slot set once the particle has touched the sticky face of that slot
+ * (mpm_touch_glue_slot: the domain walls' six faces 0..5, collider c 6 + c, colliders past the last slot share
+ * it); a glued particle stays glued. Checkpoint version 11 carries them. */
+enum { PF_GLUE_SHIFT = 3, PF_GLUE_SLOTS = 28 };
+#define PF_GLUE_ALL ((int)(((1u << PF_GLUE_SLOTS) - 1u) << PF_GLUE_SHIFT))
 
 typedef struct particles {
     int n, cap;            /* cap: particles every enabled column holds room for */
