@@ -47,6 +47,12 @@ drop_rests_on_floor_wall) for l in 1 2; do drop $l --set face=wall; done ;;
 drop_rests_on_floor_wall_fine) for l in 1 2; do drop $l --set face=wall --set dx=0.0025; done ;;
 resting_block_stays_on_tray_and_floor) drop 0; drop 0 --set face=wall; drop 0 --set mode=slip ;;
 drop_rests_on_slip_tray) drop 1 --set mode=slip; drop 1 --set mode=slip --set dx=0.0025 ;;
+# a sticky face holds what has touched it (mpm_touch.c's glue): the same bars (set before the runs); before glue
+# the 1 and 2 dx drops stayed caught at 1.000 and 0.980 dx (main 9c8120c)
+drop_rests_on_sticky_tray) for l in 1 2; do drop $l --set mode=sticky; done ;;
+drop_rests_on_sticky_tray_fine) for l in 1 2; do drop $l --set mode=sticky --set dx=0.0025; done ;;
+drop_rests_on_sticky_floor_wall) for l in 1 2; do drop $l --set mode=sticky --set face=wall; done ;;
+resting_block_stays_on_sticky_tray_and_floor) drop 0 --set mode=sticky; drop 0 --set mode=sticky --set face=wall ;;
 drop_rests_in_3d) # a 3 x 1.5 x 3 cm block at 5 mm (8 particles a cell, 1728 particles)
     drop 1 --set dim=3 --set w=0.03 --set ht=0.015; drop 2 --set dim=3 --set w=0.03 --set ht=0.015 --set face=wall ;;
 drop_same_bits_threads)
