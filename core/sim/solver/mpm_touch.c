@@ -1,4 +1,5 @@
-/* mpm_touch.c: a slip or separate face holds a node only where the body touches it (#18).
+/* mpm_touch.c: a slip or separate face holds a node only where the body touches it, a sticky one where it
+ * touches or has touched (#18).
  *
  * The grid update holds every node on or inside a collider's face (and the two
  * node layers of a closed domain wall) whose velocity approaches it. A node on
@@ -27,24 +28,50 @@
  * 0.03 dx below it (docs/validation.md). The particles that still cross the
  * face are put back by collider_project_particle after G2P, as before.
  *
- * Sticky and grip faces keep holding every node on and inside them. A grip
- * holds material inside it. A sticky face is glue: it holds a body in tension
- * too, and the same test there let go of a vibrating bar's glued end as it
- * stretched away (vibrating_bar: no period found) and of a Couette layer whose
- * sticky lid sits 1e-6 dx off its top (couette_lid_on_node_row: 0.0 of the lid
- * speed for 0.5). So a sticky tray still grabs a body released a cell above it
- * (docs/validation.md: it hangs a cell up).
+ * A grip holds every node on and inside it (it holds the material inside it).
+ *
+ * A sticky face is glue: it must hold a body in tension too, and the touch test
+ * alone let go of a vibrating bar's glued end as it stretched away
+ * (vibrating_bar: no period found) and of a Couette layer whose sticky lid sits
+ * 1e-6 dx off its top (couette_lid_on_node_row: 0.0 of the lid speed), while
+ * holding every node on and inside it grabbed a body released a cell above it
+ * and hung it there. So a sticky face holds a node where a particle in its
+ * stencil touches it now or has touched it before: glue with memory, and no
+ * strength (a glued particle stays glued). mpm_glue_mark, at the step's start
+ * (the positions P2G scatters from, before the sort), runs the same test,
+ * `touches`, for each sticky face and sets the particle's glue bit for that face
+ * in PC_FLAGS (particles.h's PF_GLUE_*: the six domain wall faces slots 0..5,
+ * collider c slot 6 + c, past the last slot colliders share it; PC_FLAGS is
+ * enabled the first time a scene has a sticky face); the grid update's mask for
+ * a sticky face is then the stencils of the particles holding its bit. Per face,
+ * not any sticky face: a body glued to one sticky face whose glued particles pass
+ * within a stencil of another it never touches would be caught by that one too
+ * (tests/contact/two_faces.lua: a sheet carried over a sticky tray 0.75 dx above
+ * it; docs/validation.md, "A sticky face holds what touched it"). The bits
+ * travel as any column: the sort permutes them, a slab crossing carries them
+ * (mpm_ranks.c packs every enabled column), the ranks' halo_touch sends a sticky
+ * face's glue masks with the others (mpm_touch_face_mask), and checkpoint
+ * version 11 saves them; an older file had its sticky faces hold every node on
+ * and inside them, so its first step glues each particle whose stencil reaches
+ * such a node (held_before_glue) and it goes on as it was saved. A particle
+ * glued to a collider keeps its bit if the collider's mode changes; a scene
+ * without a sticky face pays nothing (no column, no pass). The sticky mirrors
+ * and ghost reflections (mpm_sticky.c) are as before: the mirrors by distance
+ * (a free-falling body's stress is nil), the reflections at the held nodes.
  *
  * The test reads the particles of the 2^dim particle blocks whose stencils
  * reach the grid block (the block itself and its -1 neighbours: a particle's
  * stencil starts at its block's base node), sorted by the step's sort, only
- * for a grid block with a node on a slip or separate face, once per block and
- * face. It reads positions P2G scattered from and writes nothing: the same
- * result at any thread count or order. Rejected: a touch channel scattered in
- * P2G like the mass (every scene's P2G and its tiles, the gather's store and
- * the ranks' halo sums would carry one more channel for a few nodes on a
- * tray). Under MPI slabs a rank sees only its own particles: a node on a
- * seam is held only for a touching particle of its owner (docs/validation.md). */
+ * for a grid block with a node on a slip, separate or sticky face, once per
+ * block and face. It reads positions P2G scattered from (and the glue bits)
+ * and writes nothing; mpm_glue_mark writes only each particle's own flags: the
+ * same result at any thread count or order. Rejected: a touch channel
+ * scattered in P2G like the mass (every scene's P2G and its tiles, the
+ * gather's store and the ranks' halo sums would carry one more channel for a
+ * few nodes on a tray); setting the glue bits inside the mask (a particle
+ * block is read by up to 2^dim grid blocks at once: racing writes). Under MPI
+ * slabs the lower neighbour's masks for a seam's blocks come with the ghost
+ * sums (mpm_ranks.c's halo_touch), so a node on a seam is held as on one rank. */
 #include "mpm_touch.h"
 
 #include <math.h>
