@@ -329,7 +329,7 @@ static double lowest_above(const hearth_scene *s, double y0) {
     return (lo - y0) / s->def.dx;
 }
 
-/* Version 11 carries a sticky face's glue (particles.h's PF_GLUE_*): a sticky face holds only what has touched it
+/* Version 11 carries a sticky face's glue (particles.h's PC_GLUE): a sticky face holds only what has touched it
  * (mpm_touch.c). Before it, a sticky face held every node on and inside it, so a body within a cell and a half of
  * one was held where it was. A 6 x 3 cm elastic block released 1 dx above a sticky tray (dx 1 cm, 2 x 2 particles
  * a cell, half-spacing dx / 4) and saved before its first step loads as a version 11 file and falls onto the

@@ -519,7 +519,7 @@ static int get_colliders(ck_cursor *c, hearth_scene *s, hearth_error *err) {
 
 /* Whether every value of a column is acceptable: finite where it must be,
  * indices in range. Names the first offender in c. */
-static int check_column(ck_cursor *c, const hearth_scene *s, int col, int n, uint32_t version) {
+static int check_column(ck_cursor *c, const hearth_scene *s, int col, int n) {
     const particles *ps = &s->ps;
     if (col == PC_STATE) return 0; /* the plugin's own numbers: its state, its meaning */
     if (particles_col_is_int(col)) {
@@ -528,9 +528,8 @@ static int check_column(ck_cursor *c, const hearth_scene *s, int col, int n, uin
             const int v = a[i];
             if (col == PC_MAT && (v < 0 || v >= s->mats.n)) return ck_fail(c, "a particle with an unknown material");
             if (col == PC_BODY && (v < -1 || v >= s->nbodies)) return ck_fail(c, "a particle with an unknown body");
-            /* version 11: a sticky face's glue bits too (mpm_touch.c) */
-            const int known = PF_FIXED | PF_BOUNDARY | PF_HOLD_T | (version >= 11 ? PF_GLUE_ALL : 0);
-            if (col == PC_FLAGS && (v & ~known)) return ck_fail(c, "a particle with unknown flags");
+            if (col == PC_FLAGS && (v & ~(PF_FIXED | PF_BOUNDARY | PF_HOLD_T))) return ck_fail(c, "a particle with unknown flags");
+            if (col == PC_GLUE && v < 0) return ck_fail(c, "a particle glued to an unknown face"); /* 31 slots */
             if (col == PC_ID && (v < 0 || v >= s->next_id)) return ck_fail(c, "a particle id out of range");
         }
         return 0;
@@ -548,7 +547,7 @@ static int check_column(ck_cursor *c, const hearth_scene *s, int col, int n, uin
     return 0;
 }
 
-static int get_particles(ck_cursor *c, hearth_scene *s, uint32_t *absent, uint32_t version, hearth_error *err) {
+static int get_particles(ck_cursor *c, hearth_scene *s, uint32_t *absent, hearth_error *err) {
     get_tag(c, "PART", "the particles section is missing");
     const uint32_t n = get_u32(c), stride = get_u32(c), enabled = get_u32(c);
     if (c->bad) return -1;
@@ -589,7 +588,7 @@ static int get_particles(ck_cursor *c, hearth_scene *s, uint32_t *absent, uint32
         }
         const size_t bytes = particles_col_bytes(ps, k) * (size_t)n;
         if (bytes && ck_get(c, ps->col[k], bytes)) return -1;
-        if (check_column(c, s, k, (int)n, version)) return -1;
+        if (check_column(c, s, k, (int)n)) return -1;
     }
     /* a file saved before eq. 10 became a strain (material.h) has no thermal strain column: none taken out yet */
     if ((ps->enabled & (1u << PC_THERMAL)) && !(enabled & (1u << PC_THERMAL)) && n)
@@ -679,7 +678,7 @@ hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name
     if (get_colliders(&c, s, err)) return refuse_at(s, err, name, &c, "colliders");
     s->next_id = k.next_id;
     uint32_t absent = 0;
-    if (get_particles(&c, s, &absent, version, err)) return refuse_at(s, err, name, &c, "particles");
+    if (get_particles(&c, s, &absent, err)) return refuse_at(s, err, name, &c, "particles");
     get_tag(&c, "HASH", "the particle hash is missing");
     const uint64_t h = get_u64(&c);
     if (c.bad) return refuse_at(s, err, name, &c, "particle hash");

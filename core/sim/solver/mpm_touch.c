@@ -39,21 +39,25 @@
  * stencil touches it now or has touched it before: glue with memory, and no
  * strength (a glued particle stays glued). mpm_glue_mark, at the step's start
  * (the positions P2G scatters from, before the sort), runs the same test,
- * `touches`, for each sticky face and sets the particle's glue bit for that face
- * in PC_FLAGS (particles.h's PF_GLUE_*: the six domain wall faces slots 0..5,
- * collider c slot 6 + c, past the last slot colliders share it; PC_FLAGS is
- * enabled the first time a scene has a sticky face); the grid update's mask for
- * a sticky face is then the stencils of the particles holding its bit. Per face,
- * not any sticky face: a body glued to one sticky face whose glued particles pass
+ * `touches`, for each sticky face and sets the particle's bit for that face in
+ * its own column PC_GLUE (the six domain wall faces slots 0..5, collider c slot
+ * 6 + c, past the last slot colliders share it; the column is enabled the first
+ * time a scene has a sticky face); the grid update's mask for a sticky face is
+ * then the stencils of the particles holding its bit. Not bits of PC_FLAGS:
+ * enabling that column turns on the heat's boundary clamp (boundary.c marks
+ * PF_BOUNDARY only where it exists, flip_bound.c clamps those) and, on MPI
+ * slabs, moved the heated tray's ledger (docs/validation.md). Per face, not any
+ * sticky face: a body glued to one sticky face whose glued particles pass
  * within a stencil of another it never touches would be caught by that one too
  * (tests/contact/two_faces.lua: a sheet carried over a sticky tray 0.75 dx above
  * it; docs/validation.md, "A sticky face holds what touched it"). The bits
  * travel as any column: the sort permutes them, a slab crossing carries them
  * (mpm_ranks.c packs every enabled column), the ranks' halo_touch sends a sticky
  * face's glue masks with the others (mpm_touch_face_mask), and checkpoint
- * version 11 saves them; an older file had its sticky faces hold every node on
- * and inside them, so its first step glues each particle whose stencil reaches
- * such a node (held_before_glue) and it goes on as it was saved. A particle
+ * version 11 saves the column; an older file had its sticky faces hold every
+ * node on and inside them, so its first step glues each particle whose stencil
+ * reaches such a node (held_before_glue) and it goes on as it was saved. A
+ * particle
  * glued to a collider keeps its bit if the collider's mode changes; a scene
  * without a sticky face pays nothing (no column, no pass). The sticky mirrors
  * and ghost reflections (mpm_sticky.c) are as before: the mirrors by distance
@@ -136,7 +140,7 @@ uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *
     const mpm_state *m = s->mpm;
     const int D = g->dim;
     const double *X = pcold(&s->ps, PC_X);
-    const int *flags = glue ? pcoli(&s->ps, PC_FLAGS) : NULL; /* mpm_glue_mark enabled them */
+    const int *glued = glue ? pcoli(&s->ps, PC_GLUE) : NULL; /* mpm_glue_mark enabled it */
     uint64_t mask = 0;
     for (int o = 0; o < (D == 2 ? 4 : 8); o++) {
         int b[3] = {bc[0] - (o & 1), bc[1] - ((o >> 1) & 1), D == 3 ? bc[2] - ((o >> 2) & 1) : 0};
@@ -144,7 +148,7 @@ uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *
         const int k = pb_of_block(m, grid_block_id(g, b[0], b[1], b[2]));
         if (k < 0) continue;
         for (int i = m->pb[k].start; i < m->pb[k].end; i++) {
-            if (glue ? !(flags[i] & glue) : !touches(s, c, d, side, i, dt)) continue;
+            if (glue ? !(glued[i] & glue) : !touches(s, c, d, side, i, dt)) continue;
             const double *x = X + 3 * i;
             /* its stencil's nodes in this block */
             int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
@@ -170,7 +174,7 @@ int mpm_touch_faces(const hearth_scene *s) { return s->ncol + 6; }
 
 int mpm_touch_glue_bit(const hearth_scene *s, int f) {
     const int slot = f >= s->ncol ? f - s->ncol : 6 + f;
-    return 1 << (PF_GLUE_SHIFT + (slot < PF_GLUE_SLOTS ? slot : PF_GLUE_SLOTS - 1));
+    return 1 << (slot < GLUE_SLOTS ? slot : GLUE_SLOTS - 1);
 }
 
 /* face f's mask, whatever its mode: the glued particles' stencils for a sticky face, the touching ones' else */
@@ -204,6 +208,8 @@ int mpm_touch_holds(const hearth_scene *s, mpm_touch_cache *tc, int id, const in
     return (int)(mask >> l & 1);
 }
 
+enum { GLUE_CHUNK = 64 }; /* particles whose face distance mpm_glue_mark skips together */
+
 /* 1: a node of particle i's stencil is one the sticky face held before glue (checkpoints before version 11):
  * a collider's node on or inside its face, a wall's node in its two layers */
 static int held_before_glue(const hearth_scene *s, const collider *c, int d, int side, int i) {
@@ -236,23 +242,36 @@ hearth_status mpm_glue_mark(hearth_scene *s, double dt, hearth_error *err) {
             if (!s->def.periodic[d]) face[nf++] = s->ncol + 2 * d, face[nf++] = s->ncol + 2 * d + 1;
     if (!nf) return HEARTH_OK;
     particles *ps = &s->ps;
-    if (!(ps->enabled & (1u << PC_FLAGS))) {
-        const hearth_status st = particles_enable(ps, PC_FLAGS, err);
+    if (!(ps->enabled & (1u << PC_GLUE))) {
+        const hearth_status st = particles_enable(ps, PC_GLUE, err);
         if (st) return st;
     }
-    int *flags = pcoli(ps, PC_FLAGS);
-    const int n = ps->n;
+    int *glued = pcoli(ps, PC_GLUE);
+    const double *X = pcold(ps, PC_X);
+    const int n = ps->n, nchunk = (n + GLUE_CHUNK - 1) / GLUE_CHUNK;
+    /* In chunks of the store's order (the last sort's: neighbours): a collider far from a chunk's box is far from
+     * every particle in it. A shape's distance changes by at most L times a move, L = 1 for the exact leaves and
+     * their min / max (shapes.c) and about 1 for a mask's sampled field: a chunk whose centre stands more than
+     * 2 (r + 2 dx) off the face, r the box's half-diagonal, has no particle within the 2 dx the test reads even
+     * for L = 2, so its distances are skipped (the same bits: the test's answer for each particle is unchanged) */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        int fl = flags[i];
+    for (int k = 0; k < nchunk; k++) {
+        const int i0 = k * GLUE_CHUNK, i1 = i0 + GLUE_CHUNK < n ? i0 + GLUE_CHUNK : n;
+        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+        for (int i = i0; i < i1; i++)
+            for (int a = 0; a < 3; a++) lo[a] = fmin(lo[a], X[3 * i + a]), hi[a] = fmax(hi[a], X[3 * i + a]);
+        const double mid[3] = {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])};
+        const double r = 0.5 * sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
         for (int j = 0; j < nf; j++) {
             const int f = face[j], bit = mpm_touch_glue_bit(s, f), w = f - s->ncol;
-            if (fl & bit) continue;
             const collider *c = w < 0 ? &s->cols[f] : NULL;
+            if (c && !legacy && collider_sdf(c, mid, NULL) > 2.0 * (r + 2.0 * g->dx)) continue;
             const int d = w < 0 ? 0 : w / 2, side = w < 0 ? 0 : w % 2;
-            if (touches(s, c, d, side, i, dt) || (legacy && held_before_glue(s, c, d, side, i))) fl |= bit;
+            for (int i = i0; i < i1; i++)
+                if (!(glued[i] & bit) && (touches(s, c, d, side, i, dt) || (legacy && held_before_glue(s, c, d, side, i))))
+                    glued[i] |= bit;
         }
-        flags[i] = fl;
     }
     return HEARTH_OK;
 }

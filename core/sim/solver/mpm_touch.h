@@ -8,7 +8,7 @@
 
 /* Bit l set: node l of the grid block at block coordinates bc lies in the stencil of a particle that touches
  * the face (collider c, or with c NULL the domain wall on axis d, side 0 low / 1 high) this step of dt (s), or
- * (glue nonzero: a sticky face's PF_* glue bit) of a particle whose flags hold glue.
+ * (glue nonzero: a sticky face's glue bit) of a particle whose PC_GLUE holds it.
  * Reads the sorted particles of the step; call between P2G and G2P. */
 uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *c, int d, int side, double dt, int glue);
 /* The faces a touch mask is made for, numbered f: colliders 0..ncol-1, then the domain walls ncol + 2 d + side;
@@ -17,7 +17,7 @@ uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *
 int mpm_touch_faces(const hearth_scene *s);
 int mpm_touch_gated(hearth_contact mode); /* slip, separate: held where touched now */
 int mpm_touch_glued(hearth_contact mode); /* sticky: held where touched now or before */
-/* face f's glue bit in PC_FLAGS (particles.h's PF_GLUE_*): walls slots 0..5, collider c slot 6 + c */
+/* face f's bit in PC_GLUE (particles.h's GLUE_SLOTS): walls slots 0..5, collider c slot 6 + c */
 int mpm_touch_glue_bit(const hearth_scene *s, int f);
 uint64_t mpm_touch_face_mask(const hearth_scene *s, const int bc[3], int f, double dt);
 /* A grid block's touch masks, by face number f, for the grid update: each made once, when a node first asks. */
@@ -31,7 +31,7 @@ typedef struct mpm_touch_cache {
  * its stencil, on this rank or (a slab's seam) the lower neighbour's (mpm_ranks_touch_below). */
 int mpm_touch_holds(const hearth_scene *s, mpm_touch_cache *tc, int id, const int bc[3], int f, int l, double dt);
 /* At the step's start, before the sort (the positions P2G will scatter from): each particle that touches a
- * sticky face now gets that face's glue bit (enabling PC_FLAGS the first time); after a checkpoint older than
+ * sticky face now gets that face's glue bit (enabling PC_GLUE the first time); after a checkpoint older than
  * glue (s->glue_legacy), also each particle whose stencil reaches a node the face held then. Nothing in a
  * scene without a sticky face. */
 hearth_status mpm_glue_mark(hearth_scene *s, double dt, hearth_error *err);
