@@ -44,9 +44,9 @@
  * 6 + c, past the last slot colliders share it; the column is enabled the first
  * time a scene has a sticky face); the grid update's mask for a sticky face is
  * then the stencils of the particles holding its bit. Not bits of PC_FLAGS:
- * enabling that column turns on the heat's boundary clamp (boundary.c marks
- * PF_BOUNDARY only where it exists, flip_bound.c clamps those) and, on MPI
- * slabs, moved the heated tray's ledger (docs/validation.md). Per face, not any
+ * that column is the heat's too (boundary.c marks PF_BOUNDARY only where it
+ * exists, and flip_bound.c clamps those particles instead of relaxing them), so
+ * enabling it for glue could change a sticky scene's heat. Per face, not any
  * sticky face: a body glued to one sticky face whose glued particles pass
  * within a stencil of another it never touches would be caught by that one too
  * (tests/contact/two_faces.lua: a sheet carried over a sticky tray 0.75 dx above
@@ -57,9 +57,10 @@
  * version 11 saves the column; an older file had its sticky faces hold every
  * node on and inside them, so its first step glues each particle whose stencil
  * reaches such a node (held_before_glue) and it goes on as it was saved. A
- * particle
- * glued to a collider keeps its bit if the collider's mode changes; a scene
- * without a sticky face pays nothing (no column, no pass). The sticky mirrors
+ * particle glued to a collider keeps its bit if the collider's mode changes; a
+ * scene without a sticky face pays nothing (no column, no pass), and the pass
+ * skips the distances of a chunk of particles far from a collider (exactly:
+ * mpm_glue_mark says how). The sticky mirrors
  * and ghost reflections (mpm_sticky.c) are as before: the mirrors by distance
  * (a free-falling body's stress is nil), the reflections at the held nodes.
  *
@@ -68,7 +69,7 @@
  * stencil starts at its block's base node), sorted by the step's sort, only
  * for a grid block with a node on a slip, separate or sticky face, once per
  * block and face. It reads positions P2G scattered from (and the glue bits)
- * and writes nothing; mpm_glue_mark writes only each particle's own flags: the
+ * and writes nothing; mpm_glue_mark writes only each particle's own glue: the
  * same result at any thread count or order. Rejected: a touch channel
  * scattered in P2G like the mass (every scene's P2G and its tiles, the
  * gather's store and the ranks' halo sums would carry one more channel for a
