@@ -39,6 +39,7 @@
 #include "mixing.h"
 #include "ranks.h"
 #include "mpm.h"
+#include "mpm_touch.h"
 #include "field_clock.h"
 #include "gas.h"
 
@@ -715,8 +716,9 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
     const int rollback = s->def.guard == HEARTH_GUARD_ROLLBACK;
     s->consecutive_rollbacks = 0;
     for (;;) {
-        if (rollback) {
-            hearth_status st = particles_copy(&s->snap, &s->ps, err);
+        if (rollback) { /* the glue column first (mpm_touch.c): the restore below keeps the layout it saved */
+            hearth_status st = mpm_glue_column(s, err);
+            if (!st) st = particles_copy(&s->snap, &s->ps, err);
             if (st) return st;
         }
         const double speed_before = s->max_speed;

@@ -231,6 +231,21 @@ static int held_before_glue(const hearth_scene *s, const collider *c, int d, int
     return 0;
 }
 
+/* 1: the scene has a sticky face (a collider, or the domain walls on a closed axis) */
+static int sticky_faces(const hearth_scene *s) {
+    for (int c = 0; c < s->ncol; c++)
+        if (mpm_touch_glued(s->cols[c].mode)) return 1;
+    if (mpm_touch_glued(s->def.wall))
+        for (int d = 0; d < s->g.dim; d++)
+            if (!s->def.periodic[d]) return 1;
+    return 0;
+}
+
+hearth_status mpm_glue_column(hearth_scene *s, hearth_error *err) {
+    if (s->def.solver != HEARTH_SOLVER_MPM || (s->ps.enabled & (1u << PC_GLUE)) || !sticky_faces(s)) return HEARTH_OK;
+    return particles_enable(&s->ps, PC_GLUE, err);
+}
+
 hearth_status mpm_glue_mark(hearth_scene *s, double dt, hearth_error *err) {
     const grid *g = &s->g;
     const int legacy = s->glue_legacy; /* once, at the first step after the restore */
@@ -243,10 +258,8 @@ hearth_status mpm_glue_mark(hearth_scene *s, double dt, hearth_error *err) {
             if (!s->def.periodic[d]) face[nf++] = s->ncol + 2 * d, face[nf++] = s->ncol + 2 * d + 1;
     if (!nf) return HEARTH_OK;
     particles *ps = &s->ps;
-    if (!(ps->enabled & (1u << PC_GLUE))) {
-        const hearth_status st = particles_enable(ps, PC_GLUE, err);
-        if (st) return st;
-    }
+    const hearth_status st = mpm_glue_column(s, err);
+    if (st) return st;
     int *glued = pcoli(ps, PC_GLUE);
     const double *X = pcold(ps, PC_X);
     const int n = ps->n, nchunk = (n + GLUE_CHUNK - 1) / GLUE_CHUNK;

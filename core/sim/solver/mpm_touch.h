@@ -35,4 +35,7 @@ int mpm_touch_holds(const hearth_scene *s, mpm_touch_cache *tc, int id, const in
  * glue (s->glue_legacy), also each particle whose stencil reaches a node the face held then. Nothing in a
  * scene without a sticky face. */
 hearth_status mpm_glue_mark(hearth_scene *s, double dt, hearth_error *err);
+/* PC_GLUE enabled now if the scene (MPM) has a sticky face: scene.c's step asks before the rollback guard's
+ * snapshot, so a restore finds the layout it saved (mpm_glue_mark would enable it inside the step). */
+hearth_status mpm_glue_column(hearth_scene *s, hearth_error *err);
 #endif
