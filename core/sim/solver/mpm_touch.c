@@ -141,7 +141,8 @@ uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *
     const mpm_state *m = s->mpm;
     const int D = g->dim;
     const double *X = pcold(&s->ps, PC_X);
-    const int *glued = glue ? pcoli(&s->ps, PC_GLUE) : NULL; /* mpm_glue_mark enabled it */
+    if (glue && !(s->ps.enabled & (1u << PC_GLUE))) return 0; /* no step has marked (a caller outside mpm_step) */
+    const int *glued = glue ? pcoli(&s->ps, PC_GLUE) : NULL;
     uint64_t mask = 0;
     for (int o = 0; o < (D == 2 ? 4 : 8); o++) {
         int b[3] = {bc[0] - (o & 1), bc[1] - ((o >> 1) & 1), D == 3 ? bc[2] - ((o >> 2) & 1) : 0};
@@ -250,14 +251,9 @@ hearth_status mpm_glue_mark(hearth_scene *s, double dt, hearth_error *err) {
     const grid *g = &s->g;
     const int legacy = s->glue_legacy; /* once, at the first step after the restore */
     s->glue_legacy = 0;
-    int nf = 0, face[MPM_TOUCH_CACHE + 6];
-    for (int c = 0; c < s->ncol && nf < MPM_TOUCH_CACHE; c++)
-        if (mpm_touch_glued(s->cols[c].mode)) face[nf++] = c;
-    if (mpm_touch_glued(s->def.wall))
-        for (int d = 0; d < g->dim; d++)
-            if (!s->def.periodic[d]) face[nf++] = s->ncol + 2 * d, face[nf++] = s->ncol + 2 * d + 1;
-    if (!nf) return HEARTH_OK;
+    if (!sticky_faces(s)) return HEARTH_OK;
     particles *ps = &s->ps;
+    const int nf = mpm_touch_faces(s); /* every face; the sticky ones are marked */
     const hearth_status st = mpm_glue_column(s, err);
     if (st) return st;
     int *glued = pcoli(ps, PC_GLUE);
@@ -277,8 +273,11 @@ hearth_status mpm_glue_mark(hearth_scene *s, double dt, hearth_error *err) {
         const double mid[3] = {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])};
         const double r = 0.5 * sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                                     (hi[2] - lo[2]) * (hi[2] - lo[2]));
-        for (int j = 0; j < nf; j++) {
-            const int f = face[j], bit = mpm_touch_glue_bit(s, f), w = f - s->ncol;
+        for (int f = 0; f < nf; f++) {
+            const int bit = mpm_touch_glue_bit(s, f), w = f - s->ncol;
+            if (w < 0 ? !mpm_touch_glued(s->cols[f].mode)
+                      : !mpm_touch_glued(s->def.wall) || w / 2 >= g->dim || s->def.periodic[w / 2])
+                continue;
             const collider *c = w < 0 ? &s->cols[f] : NULL;
             if (c && !legacy && collider_sdf(c, mid, NULL) > 2.0 * (r + 2.0 * g->dx)) continue;
             const int d = w < 0 ? 0 : w / 2, side = w < 0 ? 0 : w % 2;
