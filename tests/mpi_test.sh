@@ -156,7 +156,8 @@ mpi_heat_matches_one_rank)
     done
     ;;
 mpi_dough_boils_matches_one_rank)
-    # the dough on a hot tray (250 degC through beta 1e5): its bottom rows reach 100 degC at step ~120 and boil
+    # the dough on a hot tray (250 degC through beta 1e5): its bottom rows reach 100 degC from step ~60 (2D: 2
+    # particles at step 60, 39 at 100, 54 at 200; ~120 when the dough started 2 mm over the tray) and boil
     # through the boiling front (core/sim/fields/boil_front.c) from then on; 200 steps, none dried yet. The
     # front's gradient at a slab's first node row once read the cleared lower halo layer: 1.0e-3 in saturation.
     # The same 1e-12 as every case here; the run must have boiled (at least 10 particles held at 100 degC in the
@@ -172,8 +173,8 @@ mpi_dough_boils_matches_one_rank)
     done
     ;;
 mpi_dough_dries_matches_one_rank)
-    # hotter still (450 degC through beta 1e5), 700 steps: the bottom row boils dry (27 particles under saturation
-    # 1e-3) while the rows above boil (56 at 100 degC). The run must have dried at least 10 particles and held at
+    # hotter still (450 degC through beta 1e5), 700 steps: the bottom row boils dry (39 particles under saturation
+    # 1e-3, 27 before the dough was seeded on the tray) while the rows above boil (81 at 100 degC, 56 before). The run must have dried at least 10 particles and held at
     # least 10 at 100 degC, or it checks nothing of the dried row, and the same 1e-12 as every case here. A dried
     # particle's water sits on the saturation floor, and G2P's test of water to boil (spare > 0) compares it with a
     # floor taken by another rounding from a volume that differs by ulps between one process and the slabs, so its

@@ -309,6 +309,165 @@ TEST(column_base_stress) {
     }
 }
 
+/* The stretch of a neo-Hookean column (nu = 0, so lambda = 0 and mu = E / 2) hanging under its weight from a
+ * face at its top: in the reference coordinate Y (0 at its foot) the first Piola stress mu (F - 1/F) carries
+ * the weight below, rho g (H - Y), so F = (a + sqrt(a^2 + 4)) / 2 with a = rho g (H - Y) / mu, and the material
+ * between Y0 and Y1 stretches by the integral of F - 1 (Simpson, 2000 intervals; rho g H^2 / (2 E) to first
+ * order). */
+static double hanging_stretch(double E, double rho, double g, double H, double Y0, double Y1) {
+    const int N = 2000;
+    const double mu = 0.5 * E, h = (Y1 - Y0) / N;
+    double sum = 0;
+    for (int k = 0; k <= N; k++) {
+        const double a = rho * g * (H - (Y0 + k * h)) / mu, F = 0.5 * (a + sqrt(a * a + 4));
+        sum += (k == 0 || k == N ? 1 : k % 2 ? 4 : 2) * (F - 1);
+    }
+    return sum * h / 3;
+}
+
+/* An elastic column (E = 5e4 Pa, nu = 0, rho = 1000, H = 0.1 m, width H/2) seeded under a sticky ceiling (a box
+ * collider whose face lies on a node row), its top row touching it, hangs under gravity, settled by column_base's
+ * test-side damping (a = 2 omega_1, omega_1 t = 12). The glue holds in tension (mpm_touch.c): its top row stays
+ * on the face (moves under 0.02 dx), and its stretch between the top and bottom particle rows matches the closed
+ * form hanging_stretch (0.98 mm over 0.1 m, 1.9% strain at the top). Bars, set before the run: within 5% at 10,
+ * 20, 40 cells (a clamp off the face by up to the half-spacing dx / 4 changes it by about 2 h_p / H, 5% at 10
+ * cells), and the error at 40 cells below the one at 10. The 5% is missed (+17.5%, +8.4%, +4.1%, first order,
+ * the same on main 9c8120c): an expected failure that prints them; the top row's bar and the fall hold. */
+static double hanging_column(int cells, double *top) {
+    const double H = 0.1, E = 5e4, rho = 1000, g = 9.81, dx = H / cells, yc = 0.12;
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = dx;
+    d.lo[0] = 0, d.hi[0] = 0.1;
+    d.lo[1] = 0, d.hi[1] = 0.16;
+    d.gravity[1] = -g;
+    hearth_scene *s = fx_scene_def(&d);
+    const int m = fx_elastic(s, E, 0.0, rho);
+    const double c[3] = {0.05, yc - 0.5 * H, 0}, h[3] = {0.25 * H, 0.5 * H, 0};
+    fx_box(s, m, c, h, 4, NULL);
+    const double fc[3] = {0.05, yc + 0.02, 0}, fh[3] = {0.1, 0.02, 0};
+    CHECK(fx_box_collider(s, fc, fh, HEARTH_STICKY, 0) == 0);
+    const int n = s->ps.n;
+    double *y0 = n > 0 ? malloc(sizeof(double) * (size_t)n) : NULL;
+    if (!y0) {
+        hearth_scene_destroy(s);
+        test_failures++;
+        return NAN;
+    }
+    for (int i = 0; i < n; i++) y0[i] = pcold(&s->ps, PC_X)[3 * i + 1];
+    const double omega1 = 0.5 * PI * sqrt(E / rho) / H, a = 2 * omega1;
+    hearth_error err;
+    while (s->t < 12 / omega1) {
+        const double t0 = s->t;
+        if (hearth_scene_step(s, 1, &err) != HEARTH_OK) {
+            fprintf(stderr, "%s\n", err.msg);
+            test_failures++;
+            break;
+        }
+        const double f = exp(-a * (s->t - t0));
+        double *V = pcold(&s->ps, PC_V), *C = pcold(&s->ps, PC_C);
+        for (int i = 0; i < 3 * s->ps.n; i++) V[i] *= f;
+        for (int i = 0; i < particles_tn(&s->ps) * s->ps.n; i++) C[i] *= f;
+    }
+    /* the rows by their seeded heights (the ids keep them through the sort) */
+    const int *id = pcoli(&s->ps, PC_ID);
+    double ut = 0, ub = 0, yt = -1e300, yb = 1e300;
+    for (int i = 0; i < n; i++) yt = fmax(yt, y0[i]), yb = fmin(yb, y0[i]);
+    int nt = 0, nb = 0;
+    for (int i = 0; i < n; i++) {
+        const double y = pcold(&s->ps, PC_X)[3 * i + 1], Y = y0[id[i]];
+        if (Y > yt - 0.1 * dx) ut += y - Y, nt++;
+        if (Y < yb + 0.1 * dx) ub += y - Y, nb++;
+    }
+    ut /= nt, ub /= nb;
+    const double form = hanging_stretch(E, rho, g, H, yb - (yc - H), yt - (yc - H));
+    *top = ut / dx;
+    printf("  %2d cells tall: %4d particles, %4ld steps: top row moved %+.4f dx; stretch between the end rows %.4f mm, "
+           "closed form %.4f mm (%+.2f%%)\n", cells, n, s->step, *top, 1e3 * (ut - ub), 1e3 * form, 100 * ((ut - ub) / form - 1));
+    free(y0);
+    hearth_scene_destroy(s);
+    return (ut - ub) / form - 1;
+}
+
+TEST(sticky_ceiling_holds_hanging_column) {
+    double e[3], top[3];
+    for (int k = 0; k < 3; k++) e[k] = hanging_column(10 << k, &top[k]);
+    printf("  stretch error %.2f%%, %.2f%%, %.2f%%: observed order %.2f, %.2f\n", 100 * e[0], 100 * e[1], 100 * e[2],
+           log2(fabs(e[0] / e[1])), log2(fabs(e[1] / e[2])));
+    int within = 1;
+    for (int k = 0; k < 3; k++) {
+        CHECK(fabs(top[k]) < 0.02);
+        within &= fabs(e[k]) < 0.05;
+    }
+    CHECK(fabs(e[2]) < fabs(e[0]));
+    if (!within)
+        XFAIL("the stretch misses the closed form by more than 5%% (%+.2f%%, %+.2f%%, %+.2f%% at 10, 20, 40 cells; "
+              "first order): the sticky face clamps the column as if about 0.8 dx above its face (the excess is the "
+              "top strain, 1.98%%, times 0.83, 0.81, 0.80 dx), the same numbers on main before glue: its held nodes' "
+              "boundary error, not the glue's (docs/validation.md, 'A sticky face holds what touched it')",
+              100 * e[0], 100 * e[1], 100 * e[2]);
+}
+
+/* A 4 x 2 cm elastic block (E = 1e6 Pa, nu = 0.3, rho = 1000) seeded under a sticky plate, its top row touching
+ * it, is carried as the plate rises at 0.1 m/s under gravity for 0.2 s (4 cells at dx 5 mm, 8 at 2.5 mm): glue
+ * holds a body the face pulls away from (a touch alone let go: mpm_touch.c). Bars, set before the run: at every
+ * hundredth of a second its top row's mean distance to the plate stays within 0.05 dx of its start (it does not
+ * come off; the drops' 0.05 dx), and at the end the block's mean height has risen by the plate's 2 cm within
+ * 0.1 dx (its own stretch under its weight is 2e-6 m). */
+static void carried_block(double dx) {
+    const double u = 0.1, yp = 0.1;
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = dx;
+    d.lo[0] = 0, d.hi[0] = 0.1;
+    d.lo[1] = 0, d.hi[1] = 0.2;
+    d.gravity[1] = -9.81;
+    hearth_scene *s = fx_scene_def(&d);
+    const int m = fx_elastic(s, 1e6, 0.3, 1000);
+    const double c[3] = {0.05, yp - 0.01, 0}, h[3] = {0.02, 0.01, 0};
+    fx_box(s, m, c, h, 4, NULL);
+    hearth_shape *b = hearth_shape_box((const double[]){0.05, yp + 0.01, 0}, (const double[]){0.03, 0.01, 0});
+    hearth_collider_def cd = hearth_default_collider_def();
+    cd.shape = b, cd.mode = HEARTH_STICKY, cd.velocity[1] = u;
+    hearth_error err;
+    CHECK(hearth_scene_add_collider(s, &cd, &err) == 0);
+    hearth_shape_free(b);
+    const int n = s->ps.n;
+    double ytop = -1e300, mean0 = 0;
+    for (int i = 0; i < n; i++) ytop = fmax(ytop, pcold(&s->ps, PC_X)[3 * i + 1]), mean0 += pcold(&s->ps, PC_X)[3 * i + 1];
+    mean0 /= n;
+    const int *id = pcoli(&s->ps, PC_ID);
+    unsigned char *toprow = n > 0 ? calloc((size_t)n, 1) : NULL;
+    for (int i = 0; toprow && i < n; i++) toprow[id[i]] = pcold(&s->ps, PC_X)[3 * i + 1] > ytop - 0.1 * dx;
+    double gap0 = NAN, worst = 0;
+    for (int k = 0; toprow && k <= 20; k++) {
+        if (k && hearth_scene_advance(s, 0.01 * k, &err) != HEARTH_OK) {
+            fprintf(stderr, "%s\n", err.msg);
+            test_failures++;
+            break;
+        }
+        double gap = 0;
+        int nt = 0;
+        for (int i = 0; i < n; i++)
+            if (toprow[id[i]]) gap += yp + u * s->t - pcold(&s->ps, PC_X)[3 * i + 1], nt++;
+        gap /= nt * dx;
+        if (k == 0) gap0 = gap;
+        worst = fmax(worst, fabs(gap - gap0));
+    }
+    double mean = 0;
+    for (int i = 0; i < n; i++) mean += pcold(&s->ps, PC_X)[3 * i + 1];
+    mean /= n;
+    const double rise = (mean - mean0) / dx, want = u * s->t / dx;
+    printf("  dx %.1f mm: top row %.4f dx under the plate at the start, off that by at most %.4f dx (need < 0.05); the "
+           "block rose %.4f dx, the plate %.4f (need within 0.1)\n", 1e3 * dx, gap0, worst, rise, want);
+    CHECK(worst < 0.05 && fabs(rise - want) < 0.1);
+    free(toprow);
+    hearth_scene_destroy(s);
+}
+
+TEST(sticky_plate_carries_glued_block) {
+    carried_block(0.005);
+    carried_block(0.0025);
+}
+
 /* A shear wave in a box periodic along x and y, filled with a Newtonian fluid
  * (nu = 0.01 m^2/s): u_x = U sin(k y) decays as exp(-nu k^2 t) with no wall
  * anywhere. `cells` across the period L = 0.25 m; run to nu k^2 t = 0.6.
@@ -481,4 +640,4 @@ TEST(mpm_periodic_refusals) {
     hearth_scene_destroy(s);
 }
 
-TEST_MAIN(T(colliders_contact), T(grip_holds_pulled_strip), T(couette_lid_on_node_row), T(grip_cantilever_clamped_at_face), T(column_base_stress), T(mpm_periodic_shear_wave), T(mpm_periodic_conserves_momentum), T(mpm_periodic_refusals))
+TEST_MAIN(T(colliders_contact), T(grip_holds_pulled_strip), T(couette_lid_on_node_row), T(grip_cantilever_clamped_at_face), T(column_base_stress), T(sticky_ceiling_holds_hanging_column), T(sticky_plate_carries_glued_block), T(mpm_periodic_shear_wave), T(mpm_periodic_conserves_momentum), T(mpm_periodic_refusals))

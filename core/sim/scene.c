@@ -39,6 +39,7 @@
 #include "mixing.h"
 #include "ranks.h"
 #include "mpm.h"
+#include "mpm_touch.h"
 #include "field_clock.h"
 #include "gas.h"
 
@@ -459,6 +460,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         if (ps->enabled & (1u << PC_THERMAL)) pcold(ps, PC_THERMAL)[j] = 0; /* F = I: no thermal strain taken out yet */
         if (ps->enabled & (1u << PC_VENT)) pcold(ps, PC_VENT)[j] = 0; /* no surface until a field step finds it (gas.c) */
         if (ps->enabled & (1u << PC_SURFACE)) pcold(ps, PC_SURFACE)[2 * j] = pcold(ps, PC_SURFACE)[2 * j + 1] = 0; /* browning.c */
+        if (ps->enabled & (1u << PC_GLUE)) pcoli(ps, PC_GLUE)[j] = 0; /* touched no sticky face yet (mpm_touch.c) */
         if (ps->enabled & (1u << PC_PLUGIN_MEMO)) /* zeros (they miss): a plugin's memo holds only what it wrote (rule 10) */
             memset(pcold(ps, PC_PLUGIN_MEMO) + (size_t)j * ps->memo_stride, 0, sizeof(double) * (size_t)ps->memo_stride);
         if (ps->state_stride) {
@@ -714,8 +716,9 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
     const int rollback = s->def.guard == HEARTH_GUARD_ROLLBACK;
     s->consecutive_rollbacks = 0;
     for (;;) {
-        if (rollback) {
-            hearth_status st = particles_copy(&s->snap, &s->ps, err);
+        if (rollback) { /* the glue column first (mpm_touch.c): the restore below keeps the layout it saved */
+            hearth_status st = mpm_glue_column(s, err);
+            if (!st) st = particles_copy(&s->snap, &s->ps, err);
             if (st) return st;
         }
         const double speed_before = s->max_speed;

@@ -76,6 +76,8 @@ struct hearth_scene {
     uint64_t rng;
     int next_id;
     int nbodies;
+    int glue_legacy; /* restored from a checkpoint older than glue (version < 11): the next MPM step glues what
+                      * the sticky faces held then (mpm_touch.c's mpm_glue_mark) */
     /* the fields' clock (fields/field_clock.c): the time and steps since the last field update; this
      * step's plan (field_skip: no field update; else over field_dt, 0 meaning dt); the last update's (stats) */
     double field_acc, field_dt, field_dt_last;

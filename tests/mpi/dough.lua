@@ -1,7 +1,10 @@
 -- mpi_dough_matches_one_rank: a bread dough with every field live (heat with
 -- the oven's surface, water and evaporation with latent heat, CO2), sagging
 -- on a tray, 100 steps; every particle's id, x, v, temperature, saturation
--- and J to state.csv (17 digits) for tests/mpi_test.sh. dim = 3: the same
+-- and J to state.csv (17 digits) for tests/mpi_test.sh. The dough is seeded on the tray (its lowest row a
+-- half-spacing over it, glued from the first step); it started 2 mm higher (0.75 dx in 2D) while a sticky
+-- tray grabbed what came within a cell and a half, and fell once the tray held only what touched it (helper glue,
+-- docs/validation.md "A sticky face holds what touched it"). dim = 3: the same
 -- dough 0.02 m deep on a tray 0.04 m deep (mpi_dough_3d_matches_one_rank).
 -- tray, tray_beta: the tray's temperature (degC) and Robin coefficient (W/(m2 K); 0: the collider's
 -- default); a hot tray boils and dries the bottom row (mpi_dough_boils_matches_one_rank).
@@ -26,7 +29,7 @@ else
   d.ambient_pressure, d.porosity = 0, 0.1
   d.gas_rate = 0.03 / 600 * 0.4 * 2.5 / 1500 * h.library.oven.bread.time_scale
 end
-s:add { shape = three and h.box({ 0.02, 0.012, 0.01 }, { 0.10, 0.05, 0.03 }) or h.box({ 0.02, 0.012 }, { 0.10, 0.05 }), material = h.material("cam_clay_dough", d), temperature = 25,
+s:add { shape = three and h.box({ 0.02, 0.0102, 0.01 }, { 0.10, 0.0482, 0.03 }) or h.box({ 0.02, 0.010 }, { 0.10, 0.048 }), material = h.material("cam_clay_dough", d), temperature = 25,
   saturation = 0.4 }
 s:collider { shape = h.plane({ 0, 0.01, 0 }, { 0, 1, 0 }), mode = "sticky", temperature = P.tray,
   beta = P.tray_beta > 0 and P.tray_beta or nil }

@@ -260,6 +260,10 @@ hearth_status flip_bound_apply(hearth_scene *s, hearth_error *err) {
             cor[i] += cl;
             if (s->heat.bnd_coef[i] > 0) ret_oven += Mm[i] * material_specific_heat(&s->mats.slot[mat[i]], ps, i) * cl;
         }
+        /* MPI slabs: every rank's particles, as oven_ledger's own sum (thermal.c); each rank's alone left the
+         * ledger short by the other ranks' returns once a boundary particle was clamped (docs/validation.md, "A
+         * sticky face holds what touched it") */
+        if (s->mpm->nranks > 1) mpm_ranks_fields_reduce(s, &ret_oven, 1, NULL, 0);
         s->heat.step_oven_heat += ret_oven;
     }
     if (!moved_any) return HEARTH_OK;

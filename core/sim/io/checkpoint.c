@@ -529,6 +529,7 @@ static int check_column(ck_cursor *c, const hearth_scene *s, int col, int n) {
             if (col == PC_MAT && (v < 0 || v >= s->mats.n)) return ck_fail(c, "a particle with an unknown material");
             if (col == PC_BODY && (v < -1 || v >= s->nbodies)) return ck_fail(c, "a particle with an unknown body");
             if (col == PC_FLAGS && (v & ~(PF_FIXED | PF_BOUNDARY | PF_HOLD_T))) return ck_fail(c, "a particle with unknown flags");
+            if (col == PC_GLUE && v < 0) return ck_fail(c, "a particle glued to an unknown face"); /* 31 slots */
             if (col == PC_ID && (v < 0 || v >= s->next_id)) return ck_fail(c, "a particle id out of range");
         }
         return 0;
@@ -689,6 +690,9 @@ hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name
     s->ps.enabled = live;
     if (h != mine) return refuse(s, err, name, "particle data checksum mismatch (the file is damaged)");
     set_clocks(s, &k); /* last: adding materials and particles above touched them */
+    /* before version 11 a sticky face held every node on and inside it: the first step glues the particles
+     * whose stencils reach those nodes, so the file means what it meant (mpm_touch.c) */
+    if (version < 11) s->glue_legacy = 1;
     return s;
 }
 

@@ -50,8 +50,11 @@
  * 9: the browning surface's column (PC_SURFACE, "browning_surface") in PART for MPM with browning and an oven: a
  * version 8 or older file has none and loads with it zeroed, its hash taken over the columns it holds (an older
  * hearth refuses a version 9 file by its version, not by a column it would misread); 10: the materials'
- * ambient_pressure and open_temperature (params.h; gas.h's gas_tau_ambient) */
-#define CK_VERSION 10u
+ * ambient_pressure and open_temperature (params.h; gas.h's gas_tau_ambient); 11: the sticky faces' glue column
+ * (PC_GLUE, "glue", mpm_touch.c) in PART for an MPM scene with a sticky face that has stepped: an older file has
+ * none, and its first step glues what its sticky faces held then (every particle whose stencil reaches a node on
+ * or inside them), so it goes on as it was saved (an older hearth refuses a version 11 file by its version) */
+#define CK_VERSION 11u
 /// Oldest version read: a version 4 file is version 5's layout without the
 /// DEF fields version 5 appended.
 #define CK_VERSION_MIN 4u

@@ -459,7 +459,7 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
             if (idx[d] < wlo[d]) n[d] = 1.0;
             else if (idx[d] > whi[d]) n[d] = -1.0;
             else continue;
-            if (mpm_touch_gated(def->wall) && (def->wall == HEARTH_SLIP || v[d] * n[d] < 0) &&
+            if (((mpm_touch_gated(def->wall) && (def->wall == HEARTH_SLIP || v[d] * n[d] < 0)) || mpm_touch_glued(def->wall)) &&
                 !mpm_touch_holds(s, &touch, g->active[k], bc, s->ncol + 2 * d + (n[d] < 0), l, dt))
                 continue;
             contact_apply(def->wall, def->wall_friction, n, zero, v);
@@ -478,10 +478,11 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
             double vb[3];
             collider_velocity_at(&s->cols[c], xi, vb);
             if (D == 2) n[2] = vb[2] = 0.0;
-            /* only where the body touches the face (mpm_touch.c); a separate face leaves a node that does not
-             * approach it alone anyway, so it asks only for one that does */
+            /* only where the body touches the face, or (sticky) has touched it (mpm_touch.c); a separate face
+             * leaves a node that does not approach it alone anyway, so it asks only for one that does */
             const double vn = (v[0] - vb[0]) * n[0] + (v[1] - vb[1]) * n[1] + (v[2] - vb[2]) * n[2];
-            if (mpm_touch_gated(s->cols[c].mode) && (s->cols[c].mode != HEARTH_SEPARATE || vn < 0) &&
+            if (((mpm_touch_gated(s->cols[c].mode) && (s->cols[c].mode != HEARTH_SEPARATE || vn < 0)) ||
+                 mpm_touch_glued(s->cols[c].mode)) &&
                 !mpm_touch_holds(s, &touch, g->active[k], bc, c, l, dt)) {
                 vcol2 = fmax(vcol2, vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]);
                 continue;
@@ -759,6 +760,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     hearth_status st;
     int sorted = 0;
     s->mpm->step_dt = dt; /* the slabs' touch masks (mpm_ranks.c's halo_sum) */
+    if ((st = mpm_glue_mark(s, dt, err))) return st; /* a sticky face's glue: before the sort (mpm_touch.c) */
     PHASE_STEP();
     if (usual && !mixing_active(s) && s->ps.n >= SCENE_PARALLEL_MIN && mpm_p2g_store_held(s)) { /* the gather's step */
         mpm_sort_team t;

@@ -37,6 +37,7 @@ static const struct {
     [PC_THERMAL] = {"thermal_strain", 1, 0},
     [PC_VENT] = {"vent_rate", 1, 0},
     [PC_SURFACE] = {"browning_surface", 2, 0},
+    [PC_GLUE] = {"glue", 1, 1},
     [PC_THERMAL_MEMO] = {"thermal_memo", 2, 0},
     [PC_GAS_MEMO] = {"gas_memo", 2, 0},
     [PC_CURVE_MEMO] = {"curve_memo", CURVE_MEMO_WIDTH, 0},

@@ -44,6 +44,8 @@ typedef enum pcol {
     PC_VENT,                   /* gas_vent: h S_p at the last field step, 0 where closed or inside (gas.c's gas_between), 1 */
     PC_SURFACE,                /* browning with an oven (MPM): the air surface's temperature (K) and saturation above the
                                 * particle's own at the last field step, 0 inside (browning.c), 2 */
+    PC_GLUE,                   /* the sticky faces the particle has touched: bit s for glue slot s (mpm_touch.c's
+                                * mpm_touch_glue_bit), int32; enabled in an MPM scene with a sticky face */
     /* memos (exp_memo.h): a cache of exp at the particle's last argument, 2 (the argument, its exp); never
      * hashed nor saved: a zeroed entry misses, so any value computes the same bits */
     PC_THERMAL_MEMO,           /* the thermal split's exp(-ln J_th / 3) (material_batch.c's thermal_scales_block) */
@@ -69,6 +71,9 @@ static inline int particles_col_is_memo(int c) {
 enum { CURVE_MEMO_WIDTH = 5 };
 
 enum { PF_FIXED = 1, PF_BOUNDARY = 2, PF_HOLD_T = 4 }; /* pinned body; boundary particle (Ding et al. §6.6); keeps its temperature (a held body) */
+/* PC_GLUE's slots (mpm_touch.c): the domain walls' six faces 0..5, collider c 6 + c; colliders past the last
+ * slot share it. A glued particle stays glued. */
+enum { GLUE_SLOTS = 31 };
 
 typedef struct particles {
     int n, cap;            /* cap: particles every enabled column holds room for */
