@@ -401,8 +401,8 @@ claim_bread_loaf_rises | claim_bread_loaf_rises_fine | claim_bread_scored_loaf_r
 # the end, the loaf stands at least as tall as the raw dough (the density probe on its axis, z = 0.06), and the
 # scored loaf's slit ends open (gap > one cell) and wider than it started: the 2D bars, set before the run
 # (tests/bread_claims.py rises, the same columns the 2D claims read). The plain and the one-slit loaf at the scene's
-# 3D dx (8 mm) and one finer (6 mm: bread.lua's dx_min_3d lowered to it). Each bake takes 1.5 (8 mm) and 6-16
-# (6 mm) minutes of wall time on a loaded machine: suite campaign. When the volume holds and the height or the slit
+# 3D dx (8 mm) and one finer (6 mm: bread.lua's dx_min_3d lowered to it). Each bake takes 1.5-2 (8 mm: 110 and 87 s
+# through meson) and 22-23 (6 mm) minutes of wall time on the loaded machine: suite campaign. When the volume holds and the height or the slit
 # does not, the case prints the measured numbers and the cause found (docs/validation.md, "bread.lua in 3D") and
 # exits 77; a volume short of its bars is a failure.
 claim_bread3d_loaf_rises | claim_bread3d_loaf_rises_fine | claim_bread3d_scored_loaf_rises | claim_bread3d_scored_loaf_rises_fine)
