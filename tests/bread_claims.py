@@ -6,7 +6,7 @@ finer) and a run at any other dx (docs/validation.md, "bread.lua over dx") read 
 numbers the same way. Prints the measured numbers; exits 0 when the claim holds, 1 when
 it fails, 77 for the unscored crack's expected failure (with its cause).
   slit_widens CSV        the scored loaf's slit opens while the loaf rises (Ding §7.4, Fig. 15)
-  rises CSV DX COL       a loaf (COL plain or one_slit) grows in area and stands at least as tall
+  rises CSV DX COL [3]   a loaf (COL plain or one_slit) grows in area (volume: a 3D run's CSV, 3) and stands at least as tall
   dries CSV DX           the plain loaf's surface dries before its crumb
   cracks CSV DX          the plain loaf's top has a crack (Ding Fig. 16)"""
 import csv, sys
@@ -23,14 +23,16 @@ def slit_widens(path):
     return 0 if i < len(hs) - 1 and hs[-1] > hs[i] and gs[-1] > gs[i] else 1
 
 
-def rises(path, dx, col):
-    """Area (2D: V0 J summed) +15% from raw to peak, +10% at the end, height at least the
-    raw dough's; a scored loaf's slit ends open (gap > one cell) and wider than it started."""
+def rises(path, dx, col, dim=2):
+    """Area (2D: V0 J summed; 3D: the volume, the same column) +15% from raw to peak, +10% at the
+    end, height at least the raw dough's; a scored loaf's slit ends open (gap > one cell) and wider
+    than it started."""
     rows = list(csv.DictReader(open(path)))
     a = [float(r["area_" + col]) for r in rows]
     h = [float(r["height_" + col + "_m"]) for r in rows]
     peak, end = max(a) / a[0] - 1, a[-1] / a[0] - 1
-    print(f"{col} loaf, dx {dx * 1e3:.1f} mm: area {a[0]:.5g} -> peak {max(a):.5g} m^2 ({peak:+.1%}, need >= +15%), "
+    what, unit = ("volume", "m^3") if dim == 3 else ("area", "m^2")
+    print(f"{col} loaf, dx {dx * 1e3:.1f} mm: {what} {a[0]:.5g} -> peak {max(a):.5g} {unit} ({peak:+.1%}, need >= +15%), "
           f"end {a[-1]:.5g} ({end:+.1%}, need >= +10%); height {h[0] * 1e3:.1f} -> {h[-1] * 1e3:.1f} mm (need >= raw)")
     ok = peak >= 0.15 and end >= 0.10 and h[-1] >= h[0]
     if col == "one_slit":
@@ -125,7 +127,7 @@ if __name__ == "__main__":
     if claim == "slit_widens":
         sys.exit(slit_widens(args[0]))
     if claim == "rises":
-        sys.exit(rises(args[0], float(args[1]), args[2]))
+        sys.exit(rises(args[0], float(args[1]), args[2], int(args[3]) if len(args) > 3 else 2))
     if claim == "dries":
         sys.exit(dries(args[0], float(args[1])))
     if claim == "cracks":

@@ -24,9 +24,12 @@
 -- rates x600, so 2.5 s stand for a 25 minute bake); at the end it writes
 -- damage.png and browning.png.
 local h = require "hearth"
-local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth = 0.02, slit_width = 0.01, only = 0 }
+local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth = 0.02, slit_width = 0.01, only = 0,
+  dx_min_3d = 0.008 }
 local d3 = P.dim == 3
-local dx = d3 and math.max(P.dx, 0.008) or P.dx
+-- 3D keeps dx at least dx_min_3d (8 mm: a loaf in minutes); lower it to measure finer (docs/validation.md,
+-- "bread.lua in 3D"); the validation wrappers that hand this scene their own params (crack_heat.lua) leave it unset
+local dx = d3 and math.max(P.dx, P.dx_min_3d or 0.008) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local oven = h.library.paper_oven.bread

@@ -1,0 +1,62 @@
+-- bread3d.lua: bread.lua in 3D, measured (docs/validation.md, "bread.lua in 3D").
+-- It runs scripts/scenes/baking/bread.lua itself (same loaves, same measures,
+-- same bread.csv) and adds:
+--  * zw: the length (m) each loaf is extruded along z (the scene's 0.06). With
+--    zw = 0.12 a loaf spans the whole box, its two ends against the box's slip
+--    walls, so it cannot grow along its length, as a 2D (plane strain) loaf
+--    cannot: only h.recipes.loaf_shape's length is changed.
+--  * box_z: the box's length along z (m; the scene's 0.12), centred on the loaf's z = 0.06, so a loaf longer than
+--    the scene's (zw up to box_z) keeps free ends: does a long loaf's middle stand as a 2D loaf?
+--  * beta_scale: a factor on the oven's heat transfer coefficient (oven.beta, Ding et al. eq. 9's Robin boundary;
+--    the tray's is kept), to heat a loaf with free ends as slowly as one with held ends.
+--  * pictures of the raw and the baked loaf, cut through its middle: across it
+--    (the plane z = 0.06: slice_z_raw.png, slice_z_end.png) and along it (the
+--    plane x through the loaf's axis: slice_x_raw.png, slice_x_end.png), of the
+--    field `field` (default J, the volume ratio) and of the damage at the end.
+--   hearth run scripts/validation/bread3d.lua --set only=1 [--set zw=0.12] [--set dx=0.006 --set dx_min_3d=0.006]
+local h = require "hearth"
+local P = h.params { dim = 3, dx = 0.008, until_t = 2.5, frames = 10, slit_depth = 0.02, slit_width = 0.01, only = 1,
+  dx_min_3d = 0.008, zw = 0.06, box_z = 0.12, beta_scale = 1, field = "J", bread = "scripts/scenes/baking/bread.lua" }
+if P.dim ~= 3 then error(("bread3d.lua: dim %d: expected 3 (bread.lua itself runs 2D)"):format(P.dim)) end
+if not (P.box_z >= 0.12 and P.box_z <= 0.6) then error(("bread3d.lua: box_z %g m: expected [0.12, 0.6]"):format(P.box_z)) end
+if not (P.zw > 0 and P.zw <= P.box_z) then
+  error(("bread3d.lua: zw %g m: expected (0, box_z = %g] (the box's length in z)"):format(P.zw, P.box_z))
+end
+if not (P.beta_scale > 0 and P.beta_scale <= 10) then error(("bread3d.lua: beta_scale %g: expected (0, 10]"):format(P.beta_scale)) end
+if P.only < 1 or P.only > 3 then error(("bread3d.lua: only %d: expected 1, 2 or 3 (one loaf)"):format(P.only)) end
+
+-- bread.lua's own h.params sees the values parsed here (it declares a subset of these names)
+h.params = function(defaults)
+  local Q = {}
+  for k in pairs(defaults) do Q[k] = P[k] end
+  return Q
+end
+local loaf_shape = h.recipes.loaf_shape
+h.recipes.loaf_shape = function(dim, x, tray, w, body, zc, _) return loaf_shape(dim, x, tray, w, body, zc, P.zw) end
+
+-- the scene bread.lua makes, behind a proxy whose run draws the slices before and after the bake
+local xl = (P.only - 0.5) * 0.14 -- the loaf's axis (bread.lua: SPACING 0.14)
+local function slices(s, tag)
+  s:png(P.field, "slice_z_" .. tag .. ".png", { kind = "slice", axis = "z", at = 0.06, range = "frame" })
+  s:png(P.field, "slice_x_" .. tag .. ".png", { kind = "slice", axis = "x", at = xl, range = "frame" })
+end
+local scene = h.scene
+h.scene = function(def)
+  if def.oven and P.beta_scale ~= 1 then def.oven.beta = def.oven.beta * P.beta_scale end
+  if P.box_z ~= 0.12 then def.box[1][3], def.box[2][3] = 0.06 - P.box_z / 2, 0.06 + P.box_z / 2 end
+  local s = scene(def)
+  return setmetatable({}, { __index = function(_, k)
+    if k == "run" then
+      return function(_, opts)
+        slices(s, "raw")
+        s:run(opts)
+        slices(s, "end")
+        s:png("damage", "damage_x_end.png", { kind = "slice", axis = "x", at = xl, range = { 0, 1 } })
+      end
+    end
+    local f = s[k]
+    if type(f) == "function" then return function(_, ...) return f(s, ...) end end
+    return f
+  end })
+end
+dofile(P.bread)
