@@ -331,7 +331,10 @@ static void meridian(const double c[3], const double u[3], const double x[3], do
     *a = dot3(p, u);
     double rv[3] = {p[0] - *a * u[0], p[1] - *a * u[1], p[2] - *a * u[2]};
     *rho = len3(rv);
-    if (!unit3(rv, rhat)) perp3(u, rhat); /* on the axis: a ridge, any radial direction */
+    if (!rhat) return; /* the distance alone asks no direction (helper speed) */
+    /* unit3(rv) with its length, which is *rho: the same numbers */
+    if (!(*rho > 1e-300) || !isfinite(*rho)) perp3(u, rhat); /* on the axis: a ridge, any radial direction */
+    else set3(rhat, rv[0] / *rho, rv[1] / *rho, rv[2] / *rho);
 }
 
 /* Exact SDF of a solid of revolution whose meridian section is the rectangle
@@ -340,14 +343,19 @@ static void meridian(const double c[3], const double u[3], const double x[3], do
  * rho_c - hr >= 0 (an annulus lying in rho >= 0); in both cases the 2D
  * distance in the meridian plane is the 3D distance. Covers the capped
  * cylinder, the container's wall and its floor disc. */
-static double revolved_rect(const double c[3], const double u[3], const double x[3], double rho_c, double hr,
+static double meridian_rect(double a, double rho, const double rhat[3], const double u[3], double rho_c, double hr,
                             double a_c, double ha, double n[3]) {
-    double a, rho, rhat[3], g[2];
-    meridian(c, u, x, &a, &rho, rhat);
+    double g[2];
     double d = rect2(rho - rho_c, a - a_c, hr, ha, n ? g : NULL);
     if (n)
         for (int i = 0; i < 3; i++) n[i] = g[0] * rhat[i] + g[1] * u[i];
     return d;
+}
+static double revolved_rect(const double c[3], const double u[3], const double x[3], double rho_c, double hr,
+                            double a_c, double ha, double n[3]) {
+    double a, rho, rhat[3] = {0, 0, 0};
+    meridian(c, u, x, &a, &rho, n ? rhat : NULL);
+    return meridian_rect(a, rho, rhat, u, rho_c, hr, a_c, ha, n);
 }
 
 static double sdf_box(const hearth_shape *s, const double x[3], double n[3]) {
@@ -403,14 +411,17 @@ static double sdf_container(const hearth_shape *s, const double x[3], double n[3
     double rw = s->r + 0.5 * s->wall;
     double aw = 0.5 * (s->hh - s->floor);
     double hw = 0.5 * (s->hh + s->floor);
-    double nw[3];
-    double d = revolved_rect(s->c, s->u, x, rw, 0.5 * s->wall, aw, hw, n ? nw : NULL);
+    /* the wall and the floor share the point's meridian coordinates (the same c, u and x: the same numbers;
+     * made once, helper speed) */
+    double nw[3], a, rho, rhat[3] = {0, 0, 0};
+    meridian(s->c, s->u, x, &a, &rho, n ? rhat : NULL);
+    double d = meridian_rect(a, rho, rhat, s->u, rw, 0.5 * s->wall, aw, hw, n ? nw : NULL);
     if (n) memcpy(n, nw, sizeof nw);
     if (s->floor > 0) {
         /* floor disc: radius r_in + wall, axial -floor..0 */
         double nf[3];
         double R = s->r + s->wall;
-        double df = revolved_rect(s->c, s->u, x, 0.0, R, -0.5 * s->floor, 0.5 * s->floor, n ? nf : NULL);
+        double df = meridian_rect(a, rho, rhat, s->u, 0.0, R, -0.5 * s->floor, 0.5 * s->floor, n ? nf : NULL);
         if (df < d) {
             d = df;
             if (n) memcpy(n, nf, sizeof nf);
