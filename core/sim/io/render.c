@@ -258,6 +258,22 @@ static hearth_status collider_map_make(collider_map *m, const frame *f, const he
     if (m->w <= 0 || m->h <= 0) return HEARTH_OK;
     if (!(m->d = mem_alloc(sizeof(float) * (size_t)m->w * (size_t)m->h)))
         return err_set(err, HEARTH_ERR_NOMEM, "out of memory drawing the colliders (%d x %d px)", m->w, m->h);
+    /* Each collider's bounds at its pose now, grown by two pixels (collider_update_bounds and the MPM bounds,
+     * which are geometry alone: the tray's half-space, a 2D box's prism): a point they pass by is
+     * more than two pixels from that collider, and a pixel whose distance is 0.5 px or more is drawn by
+     * neither pass (colliders_draw), so leaving such a collider out of dmin changes no pixel (helper speed:
+     * the cup's distance at every pixel was a tenth of tear_open.lua's muffin). Up to MAP_BOUNDED colliders;
+     * any after them are asked at every pixel, as before. */
+    enum { MAP_BOUNDED = 16 };
+    collider nb[MAP_BOUNDED];
+    const int nbk = s->ncol < MAP_BOUNDED ? s->ncol : MAP_BOUNDED;
+    const double margin = 2.0 / f->sc;
+    for (int k = 0; k < nbk; k++) {
+        nb[k] = s->cols[k];
+        collider_update_bounds(&nb[k], margin);
+        collider_bound_half_space(&nb[k], margin);
+        collider_bound_prism(&nb[k], margin);
+    }
     for (int j = 0; j < m->h; j++)
         for (int i = 0; i < m->w; i++) {
             double dmin = INFINITY;
@@ -267,6 +283,7 @@ static hearth_status collider_map_make(collider_map *m, const frame *f, const he
                     x[uv[0]] = f->lo[0] + (m->px0 + i + 0.5 - f->x0) / f->sc;
                     x[uv[1]] = f->lo[1] + (f->y0 + f->h - (m->py0 + j) - 0.5) / f->sc;
                     if (naxis >= 0) x[naxis] = depths[z];
+                    if (k < nbk && !collider_near(&nb[k], x)) continue;
                     dmin = fmin(dmin, collider_sdf(&s->cols[k], x, NULL));
                 }
             m->d[(size_t)j * m->w + i] = (float)(dmin * f->sc);
