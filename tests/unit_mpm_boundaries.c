@@ -164,6 +164,25 @@ static void tip_mean(const hearth_scene *s, double L, double dx, double *xm, dou
     *ym = n ? sy / n : NAN;
 }
 
+/* Steps s until t_end, damping every particle's velocity and affine matrix by exp(-a dt) after each step (a
+ * test-side mass-proportional damping: the scene API has none), so a body settles to its static state
+ * (grip_cantilever_clamped_at_face, column_base_stress, the hanging column). */
+static void settle_damped(hearth_scene *s, double t_end, double a) {
+    hearth_error err;
+    while (s->t < t_end) {
+        const double t0 = s->t;
+        if (hearth_scene_step(s, 1, &err) != HEARTH_OK) {
+            fprintf(stderr, "%s\n", err.msg);
+            test_failures++;
+            break;
+        }
+        const double f = exp(-a * (s->t - t0));
+        double *V = pcold(&s->ps, PC_V), *C = pcold(&s->ps, PC_C);
+        for (int i = 0; i < 3 * s->ps.n; i++) V[i] *= f;
+        for (int i = 0; i < particles_tn(&s->ps) * s->ps.n; i++) C[i] *= f;
+    }
+}
+
 static double cantilever_tip(int cells) {
     const double L = 0.1, t = 0.01, E = 3e7, rho = 1000, g = 9.81, dx = t / cells, Lg = 0.01;
     hearth_scene_def d = hearth_default_scene_def();
@@ -181,19 +200,7 @@ static double cantilever_tip(int cells) {
     const double omega1 = 1.875104 * 1.875104 * sqrt(E * t * t / 12 / (rho * pow(L, 4))), a = 2 * omega1;
     double x0, yr;
     tip_mean(s, L, dx, &x0, &yr);
-    hearth_error err;
-    while (s->t < 9 / omega1) {
-        const double t0 = s->t;
-        if (hearth_scene_step(s, 1, &err) != HEARTH_OK) {
-            fprintf(stderr, "%s\n", err.msg);
-            test_failures++;
-            break;
-        }
-        const double f = exp(-a * (s->t - t0));
-        double *V = pcold(&s->ps, PC_V), *C = pcold(&s->ps, PC_C);
-        for (int i = 0; i < 3 * s->ps.n; i++) V[i] *= f;
-        for (int i = 0; i < particles_tn(&s->ps) * s->ps.n; i++) C[i] *= f;
-    }
+    settle_damped(s, 9 / omega1, a);
     double x1, y1;
     tip_mean(s, L, dx, &x1, &y1);
     const double w = yr - y1;
@@ -233,24 +240,6 @@ TEST(grip_cantilever_clamped_at_face) {
  * rho g H / 3. Returns that probe over rho g H / 3, `cells` across the
  * height; row1 gets the mean particle pressure of the particle row 0.75 dx
  * above the floor over the exact rho g (H - y) / 3 there. */
-/* Steps s to 12 periods of its first mode (omega1), damping every particle's velocity and affine matrix by
- * exp(-a dt) each step, so a column settles to its static state (column_base_stress, the hanging column). */
-static void settle_damped(hearth_scene *s, double omega1, double a) {
-    hearth_error err;
-    while (s->t < 12 / omega1) {
-        const double t0 = s->t;
-        if (hearth_scene_step(s, 1, &err) != HEARTH_OK) {
-            fprintf(stderr, "%s\n", err.msg);
-            test_failures++;
-            break;
-        }
-        const double f = exp(-a * (s->t - t0));
-        double *V = pcold(&s->ps, PC_V), *C = pcold(&s->ps, PC_C);
-        for (int i = 0; i < 3 * s->ps.n; i++) V[i] *= f;
-        for (int i = 0; i < particles_tn(&s->ps) * s->ps.n; i++) C[i] *= f;
-    }
-}
-
 static double column_base(int cells, double *interior, double *row1) {
     const double H = 0.1, E = 1e6, rho = 1000, g = 9.81, dx = H / cells, yf = 0.02;
     hearth_scene_def d = hearth_default_scene_def();
@@ -265,7 +254,7 @@ static double column_base(int cells, double *interior, double *row1) {
     const double fc[3] = {0.05, 0.5 * yf, 0}, fh[3] = {0.1, 0.5 * yf, 0};
     CHECK(fx_box_collider(s, fc, fh, HEARTH_STICKY, 0) == 0);
     const double omega1 = 0.5 * PI * sqrt(E / rho) / H, a = 2 * omega1;
-    settle_damped(s, omega1, a);
+    settle_damped(s, 12 / omega1, a);
     hearth_error err;
     const double ref = rho * g * H / 3;
     double p = NAN, pm = NAN;
@@ -362,7 +351,7 @@ static double hanging_column(int cells, double *top) {
     }
     for (int i = 0; i < n; i++) y0[i] = pcold(&s->ps, PC_X)[3 * i + 1];
     const double omega1 = 0.5 * PI * sqrt(E / rho) / H, a = 2 * omega1;
-    settle_damped(s, omega1, a);
+    settle_damped(s, 12 / omega1, a);
     /* the rows by their seeded heights (the ids keep them through the sort) */
     const int *id = pcoli(&s->ps, PC_ID);
     double ut = 0, ub = 0, yt = -1e300, yb = 1e300;
