@@ -179,19 +179,29 @@ int mpm_touch_glue_bit(const hearth_scene *s, int f) {
     return 1 << (slot < GLUE_SLOTS ? slot : GLUE_SLOTS - 1);
 }
 
+/* 1: face f exists (a collider, or a domain wall on a closed axis of the scene's dimension); *mode is its contact */
+static int face_mode(const hearth_scene *s, int f, hearth_contact *mode) {
+    if (f < s->ncol) return *mode = s->cols[f].mode, 1;
+    const int d = (f - s->ncol) / 2;
+    *mode = s->def.wall;
+    return d < s->g.dim && !s->def.periodic[d];
+}
+
 /* face f's mask, whatever its mode: the glued particles' stencils for a sticky face, the touching ones' else */
 static uint64_t face_mask(const hearth_scene *s, const int bc[3], int f, double dt) {
     const int w = f - s->ncol; /* a wall: axis w / 2, side w % 2 */
-    const hearth_contact mode = w < 0 ? s->cols[f].mode : s->def.wall;
+    hearth_contact mode;
+    face_mode(s, f, &mode);
     const int glue = mpm_touch_glued(mode) ? mpm_touch_glue_bit(s, f) : 0;
     return w < 0 ? mpm_touch_mask(s, bc, &s->cols[f], 0, 0, dt, glue) : mpm_touch_mask(s, bc, NULL, w / 2, w % 2, dt, glue);
 }
 
 uint64_t mpm_touch_face_mask(const hearth_scene *s, const int bc[3], int f, double dt) {
-    if (f < s->ncol) return mpm_touch_gated(s->cols[f].mode) || mpm_touch_glued(s->cols[f].mode) ? face_mask(s, bc, f, dt) : 0;
+    hearth_contact mode;
+    if (!face_mode(s, f, &mode) || !(mpm_touch_gated(mode) || mpm_touch_glued(mode))) return 0;
+    if (f < s->ncol) return face_mask(s, bc, f, dt);
     const int d = (f - s->ncol) / 2, side = (f - s->ncol) % 2;
     const grid *g = &s->g;
-    if (d >= g->dim || s->def.periodic[d] || !(mpm_touch_gated(s->def.wall) || mpm_touch_glued(s->def.wall))) return 0;
     /* the walls hold the two node layers nearest each face: a block that has none of them has no mask */
     const int lo = bc[d] * GRID_B, hi = lo + GRID_B - 1;
     if (side ? hi < g->nn[d] - 2 : lo > 1) return 0;
@@ -234,11 +244,9 @@ static int held_before_glue(const hearth_scene *s, const collider *c, int d, int
 
 /* 1: the scene has a sticky face (a collider, or the domain walls on a closed axis) */
 static int sticky_faces(const hearth_scene *s) {
-    for (int c = 0; c < s->ncol; c++)
-        if (mpm_touch_glued(s->cols[c].mode)) return 1;
-    if (mpm_touch_glued(s->def.wall))
-        for (int d = 0; d < s->g.dim; d++)
-            if (!s->def.periodic[d]) return 1;
+    hearth_contact mode;
+    for (int f = 0; f < mpm_touch_faces(s); f++)
+        if (face_mode(s, f, &mode) && mpm_touch_glued(mode)) return 1;
     return 0;
 }
 
@@ -274,10 +282,9 @@ hearth_status mpm_glue_mark(hearth_scene *s, double dt, hearth_error *err) {
         const double r = 0.5 * sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                                     (hi[2] - lo[2]) * (hi[2] - lo[2]));
         for (int f = 0; f < nf; f++) {
+            hearth_contact mode;
+            if (!face_mode(s, f, &mode) || !mpm_touch_glued(mode)) continue;
             const int bit = mpm_touch_glue_bit(s, f), w = f - s->ncol;
-            if (w < 0 ? !mpm_touch_glued(s->cols[f].mode)
-                      : !mpm_touch_glued(s->def.wall) || w / 2 >= g->dim || s->def.periodic[w / 2])
-                continue;
             const collider *c = w < 0 ? &s->cols[f] : NULL;
             if (c && !legacy && collider_sdf(c, mid, NULL) > 2.0 * (r + 2.0 * g->dx)) continue;
             const int d = w < 0 ? 0 : w / 2, side = w < 0 ? 0 : w % 2;
