@@ -1,5 +1,10 @@
 -- Muffin tray (Ding et al. 2019, Fig. 2): batter in heated cups rises into a dome.
---   hearth run scripts/scenes/baking/muffins.lua [--set dim=3] [--set cups=3] [--set ppc=9]
+--   hearth run scripts/scenes/baking/muffins.lua [--set dim=3] [--set cups=3] [--set ppc=9] [--set preset=physical]
+-- preset: "paper" (the default: h.library.paper.muffin, Table 2's animation units, 3 s) or "physical"
+-- (h.library.dough.muffin: a batter's measured density, heat capacity and conductivity, its rates 60 times fast,
+-- latent heat and boiling on; 22 s stand for a 22 minute bake, and the frames' titles give the real time). The
+-- physical batter has no crust fracture, so it domes and does not tear: its tear columns read the top of all of
+-- its particles. until_t = 0 bakes the preset's own time.
 -- (ppc: particles a cell, 0 = 4 in 2D and 8 in 3D; the risen crumb, J up to 2.25 at the preset's pore cap,
 -- keeps ~1.8 of 4 a cell, and at dx 4 mm its crown parts along a column of particles: a numerical
 -- fracture that 9 a cell does not show, docs/validation.md "The muffin's tear: the heat under the crown,
@@ -38,22 +43,38 @@
 -- (dome 4.14 mm); with Table 2's kappa (an isothermal batter; gas x0.1) the
 -- same cup ended dished: centre 1.2 mm below the edge, curvature +5 1/m.
 local h = require "hearth"
-local P = h.params { dim = 2, dx = 0.004, until_t = 3, frames = 6, cups = 3, fill = 0.022, wall_mode = "slip", ppc = 0 }
+local P = h.params { dim = 2, dx = 0.004, until_t = 0, frames = 6, cups = 3, fill = 0.022, wall_mode = "slip", ppc = 0,
+  preset = "paper" }
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.006) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
-local oven = h.library.paper_oven.muffin
-print(("muffins.lua: h.library.paper.muffin, animation units (Ding Table 2): heat runs in seconds, not minutes; water %g times fast")
-  :format(oven.water_time_scale))
+if P.preset ~= "paper" and P.preset ~= "physical" then
+  error(("muffins.lua: preset = %q; valid: \"paper\" (Ding Table 2, animation units) or \"physical\" (h.library.dough.muffin)")
+    :format(tostring(P.preset)), 0)
+end
+local physical = P.preset == "physical"
+local oven = physical and h.library.oven.muffin or h.library.paper_oven.muffin
+local S = physical and oven.time_scale or nil -- the physical preset's rates run S times fast: t_real = S t
+local until_t = P.until_t > 0 and P.until_t or physical and oven.bake_time or 3
+if physical then
+  print(("muffins.lua: h.library.dough.muffin, %s; bake %.0f min in %.1f s"):format(oven.units, until_t * S / 60, until_t))
+else
+  print(("muffins.lua: h.library.paper.muffin, animation units (Ding Table 2): heat runs in seconds, not minutes; water %g times fast")
+    :format(oven.water_time_scale))
+end
 -- m: the cups' inner floor, inner radius, wall height above the floor, wall and floor thickness, cup spacing
 local BASE, R, CUP_H, WALL, SPACING = 0.012, 0.025, 0.03, 0.004, 0.08
 local W = SPACING * P.cups
 local zc = 0.04
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.1, 0.08) },
   oven = { temperature = oven.temperature, beta = oven.beta }, name = "muffins", browning = true,
-  browning_scale = oven.water_time_scale }
-local batter = h.material("cam_clay_dough", h.library.paper.muffin)
+  browning_scale = physical and oven.browning_scale or oven.water_time_scale, latent_heat = physical and oven.latent_heat,
+  boiling_point = physical and oven.boiling_point or nil, gas_vent = physical and oven.gas_vent or nil,
+  vent_porosity = physical and oven.vent_porosity or nil }
+local batter = h.material("cam_clay_dough", physical and h.library.dough.muffin or h.library.paper.muffin)
+-- the paper batter's dried skin cracks (its damage field); the physical one has no fracture law
+local cracks = not physical
 local xs = {}
 for i = 1, P.cups do
   -- cup centres on grid nodes: both walls then sit alike on the grid and the
@@ -71,13 +92,13 @@ local RIM = BASE + CUP_H
 -- bread.lua's crack: a band of fully damaged particles is the tear itself,
 -- and cracked crust heaped in it is debris, not the top).
 local function tops(intact)
-  local q = s:particles { fields = { "x", "damage" } }
+  local q = s:particles { fields = cracks and { "x", "damage" } or { "x" } }
   local x = q.x
   local t = {}
   for i = 1, P.cups do t[i] = {} end
   for p = 0, q.n - 1 do
     local px, py, pz = x[3 * p + 1], x[3 * p + 2], x[3 * p + 3]
-    if (not d3 or math.abs(pz - zc) < dx / 2) and not (intact and q.damage[p + 1] >= 1) then
+    if (not d3 or math.abs(pz - zc) < dx / 2) and not (intact and cracks and q.damage[p + 1] >= 1) then
       local i = math.floor(px / SPACING) + 1
       if xs[i] and math.abs(px - xs[i]) <= R then
         local b = math.floor((px - xs[i]) / dx + 0.5)
@@ -124,11 +145,11 @@ end
 
 -- the first cup's water (header): X/X0 of its top particle and its centre, and its cracked particles
 local function water()
-  local p = s:particles { fields = { "x", "saturation", "J", "damage" } }
+  local p = s:particles { fields = cracks and { "x", "saturation", "J", "damage" } or { "x", "saturation", "J" } }
   local top, ctr, nc, yc = nil, nil, 0, BASE + P.fill / 2
   for k = 1, p.n do
     local x, y = p.x[3 * k - 2], p.x[3 * k - 1]
-    if math.abs(x - xs[1]) <= R and p.damage[k] >= 1 then nc = nc + 1 end
+    if cracks and math.abs(x - xs[1]) <= R and p.damage[k] >= 1 then nc = nc + 1 end
     if math.abs(x - xs[1]) < dx / 2 and (not d3 or math.abs(p.x[3 * k] - zc) < dx / 2) then
       if not top or y > p.x[3 * top - 1] then top = k end
       if not ctr or math.abs(y - yc) < math.abs(p.x[3 * ctr - 1] - yc) then ctr = k end
@@ -145,7 +166,7 @@ for i = 1, P.cups do
 end
 head[#head + 1] = "moisture_top_1,moisture_centre_1,cracked_1"
 local rows = { table.concat(head, ",") }
-s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png" },
+s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png", time_scale = S },
   on_frame = function(f)
     local r = { ("%.3f"):format(f.t) }
     local t, ti = tops(false), tops(true)
@@ -159,5 +180,5 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temp
     h.write("muffins.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
   end }
-s:png("damage", "damage.png", { kind = "particles", range = { 0, 1 } })
-s:png("browning", "browning.png")
+if cracks then s:png("damage", "damage.png", { kind = "particles", range = { 0, 1 } }) end
+s:png("browning", "browning.png", { time_scale = S })
