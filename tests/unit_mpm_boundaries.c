@@ -391,6 +391,78 @@ TEST(sticky_ceiling_holds_hanging_column) {
     CHECK(fabs(e[2]) < fabs(e[0]));
 }
 
+/* An elastic layer (E = 5e4 Pa, nu = 0, rho = 1000, H = 0.1 m) on a sticky floor (a box whose face lies on a
+ * node row), periodic along x, sheared by gravity along x (g = 9.81 m/s^2) and settled under the scene's damping
+ * (a = 2 omega_1 of its first shear mode, omega_1 t = 12): the sticky face's tangential hold, the mode of a sauce
+ * on a plate. In simple shear the neo-Hookean shear stress is mu gamma (nu = 0: mu = E / 2), so the closed form,
+ * clamped at the face, is u(Y) = (rho g / mu) (H Y - Y^2 / 2) (3.9% shear strain at the floor). The clamp's offset
+ * delta is read from the lowest particle row (seeded dx / 4 over the face): u(dx / 4) less the closed form, over
+ * the floor's strain. Bars: the top row's displacement within 1% of the closed form at 10, 20, 40 cells (a clamp
+ * delta off the face moves it by 2 delta / H of itself: 1% at 10 cells is delta = 0.05 dx; the test-side damping
+ * these tests once had, settle's comment, gave +11.8%, +5.7%, +2.8%), falling from 10 to 40 cells, and |delta|
+ * under 0.02 dx at each (a tenth of the half-spacing). Set after a scratch run measured +0.04%, +0.005%, -0.004%
+ * and delta -0.006, -0.003, -0.0015 dx (docs/validation.md, "The sticky face's clamp"). */
+static double sheared_layer(int cells, double *delta) {
+    const double H = 0.1, W = 0.1, E = 5e4, rho = 1000, g = 9.81, dx = H / cells, yf = 0.02, mu = 0.5 * E;
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = dx;
+    d.lo[0] = 0, d.hi[0] = W;
+    d.lo[1] = 0, d.hi[1] = 0.16;
+    d.gravity[0] = g, d.gravity[1] = 0;
+    d.periodic[0] = 1;
+    const double omega1 = 0.5 * PI * sqrt(mu / rho) / H;
+    d.damping = 2 * omega1;
+    hearth_scene *s = fx_scene_def(&d);
+    if (!s) {
+        test_failures++;
+        return NAN;
+    }
+    const int m = fx_elastic(s, E, 0.0, rho);
+    const double c[3] = {0.5 * W, yf + 0.5 * H, 0}, h[3] = {W, 0.5 * H, 0}; /* wider than the period: fills it */
+    fx_box(s, m, c, h, 4, NULL);
+    const double fc[3] = {0.5 * W, 0.5 * yf, 0}, fh[3] = {W, 0.5 * yf, 0};
+    CHECK(fx_box_collider(s, fc, fh, HEARTH_STICKY, 0) == 0);
+    const int n = s->ps.n;
+    double *x0 = n > 0 ? malloc(sizeof(double) * 2 * (size_t)n) : NULL;
+    if (!x0) {
+        hearth_scene_destroy(s);
+        test_failures++;
+        return NAN;
+    }
+    for (int i = 0; i < n; i++) x0[2 * i] = pcold(&s->ps, PC_X)[3 * i], x0[2 * i + 1] = pcold(&s->ps, PC_X)[3 * i + 1];
+    settle(s, 12 / omega1);
+    const int *id = pcoli(&s->ps, PC_ID);
+    double ub = 0, ut = 0;
+    int nb = 0, nt = 0;
+    for (int i = 0; i < n; i++) {
+        const double Y = x0[2 * id[i] + 1] - yf;
+        double u = pcold(&s->ps, PC_X)[3 * i] - x0[2 * id[i]];
+        u -= W * round(u / W); /* across the seam */
+        if (Y < 0.5 * dx) ub += u, nb++;
+        if (Y > H - 0.5 * dx) ut += u, nt++;
+    }
+    ub /= nb, ut /= nt;
+    const double Yb = 0.25 * dx, Yt = H - 0.25 * dx, k = rho * g / mu;
+    const double fb = k * (H * Yb - 0.5 * Yb * Yb), ft = k * (H * Yt - 0.5 * Yt * Yt);
+    *delta = (ub - fb) / (k * H * dx);
+    printf("  %2d cells deep: %4d particles, %4ld steps: top row moved %.5f mm, closed form %.5f mm (%+.3f%%); the clamp "
+           "%+.4f dx off the face\n", cells, n, s->step, 1e3 * ut, 1e3 * ft, 100 * (ut / ft - 1), *delta);
+    free(x0);
+    hearth_scene_destroy(s);
+    return ut / ft - 1;
+}
+
+TEST(sticky_floor_holds_sheared_layer) {
+    double e[3], delta[3];
+    for (int k = 0; k < 3; k++) e[k] = sheared_layer(10 << k, &delta[k]);
+    printf("  top row error %+.3f%%, %+.3f%%, %+.3f%%\n", 100 * e[0], 100 * e[1], 100 * e[2]);
+    for (int k = 0; k < 3; k++) {
+        CHECK(fabs(e[k]) < 0.01);
+        CHECK(fabs(delta[k]) < 0.02);
+    }
+    CHECK(fabs(e[2]) < fabs(e[0]));
+}
+
 /* A 4 x 2 cm elastic block (E = 1e6 Pa, nu = 0.3, rho = 1000) seeded under a sticky plate, its top row touching
  * it, is carried as the plate rises at 0.1 m/s under gravity for 0.2 s (4 cells at dx 5 mm, 8 at 2.5 mm): glue
  * holds a body the face pulls away from (a touch alone let go: mpm_touch.c). Bars, set before the run: at every
@@ -624,4 +696,4 @@ TEST(mpm_periodic_refusals) {
     hearth_scene_destroy(s);
 }
 
-TEST_MAIN(T(colliders_contact), T(grip_holds_pulled_strip), T(couette_lid_on_node_row), T(grip_cantilever_clamped_at_face), T(column_base_stress), T(sticky_ceiling_holds_hanging_column), T(sticky_plate_carries_glued_block), T(mpm_periodic_shear_wave), T(mpm_periodic_conserves_momentum), T(mpm_periodic_refusals))
+TEST_MAIN(T(colliders_contact), T(grip_holds_pulled_strip), T(couette_lid_on_node_row), T(grip_cantilever_clamped_at_face), T(column_base_stress), T(sticky_ceiling_holds_hanging_column), T(sticky_floor_holds_sheared_layer), T(sticky_plate_carries_glued_block), T(mpm_periodic_shear_wave), T(mpm_periodic_conserves_momentum), T(mpm_periodic_refusals))
