@@ -416,8 +416,9 @@ TEST(sticky_ceiling_off_row_holds_hanging_column) {
         }
 }
 
-/* An elastic layer (E = 5e4 Pa, nu = 0, rho = 1000, H = 0.1 m) on a sticky floor (a box whose face lies on a
- * node row), periodic along x, sheared by gravity along x (g = 9.81 m/s^2) and settled under the scene's damping
+/* An elastic layer (E = 5e4 Pa, nu = 0, rho = 1000, H = 0.1 m; 6 cm wide, the fewest cells a scene's box takes at
+ * 10 cells) on a sticky floor (a box whose face lies on a node row), periodic along x, sheared by gravity along x
+ * (g = 9.81 m/s^2) and settled under the scene's damping
  * (a = 2 omega_1 of its first shear mode, omega_1 t = 12): the sticky face's tangential hold, the mode of a sauce
  * on a plate. In simple shear the neo-Hookean shear stress is mu gamma (nu = 0: mu = E / 2), so the closed form,
  * clamped at the face, is u(Y) = (rho g / mu) (H Y - Y^2 / 2) (3.9% shear strain at the floor). The clamp's offset
@@ -428,7 +429,7 @@ TEST(sticky_ceiling_off_row_holds_hanging_column) {
  * under 0.02 dx at each (a tenth of the half-spacing). Set after a scratch run measured +0.04%, +0.005%, -0.004%
  * and delta -0.006, -0.003, -0.0015 dx (docs/validation.md, "The sticky face's clamp"). */
 static double sheared_layer(int cells, double *delta) {
-    const double H = 0.1, W = 0.1, E = 5e4, rho = 1000, g = 9.81, dx = H / cells, yf = 0.02, mu = 0.5 * E;
+    const double H = 0.1, W = 0.06, E = 5e4, rho = 1000, g = 9.81, dx = H / cells, yf = 0.02, mu = 0.5 * E;
     hearth_scene_def d = hearth_default_scene_def();
     d.dx = dx;
     d.lo[0] = 0, d.hi[0] = W;
