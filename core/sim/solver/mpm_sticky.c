@@ -147,7 +147,7 @@ int mpm_block_near_sticky(const hearth_scene *s, const int D, const int org[3]) 
 }
 
 /* The first sticky collider that holds the point x (on or inside its face,
- * as grid_update_block decides), or NULL; its velocity at x in vb, and its
+ * or within STICKY_NEAR_BAND dx outside it, as grid_update_block decides), or NULL; its velocity at x in vb, and its
  * sdf and outward normal there in *phi and n when asked. */
 static const collider *sticky_held(const hearth_scene *s, const double x[3], double vb[3], double *phi, double n[3]) {
     const double band = STICKY_NEAR_BAND * s->g.dx;
@@ -223,10 +223,11 @@ static int grid_velocity_linear(const hearth_scene *s, const double x[3], double
  * further out, v_i = v_b + phi_i / (phi_i + dx) (v(x_i + dx n) - v_b): such a
  * node, left free, had no net force but its weight (the mirrors' even stress
  * cancels its own), and a column hanging from the face fell off; held at v_b
- * it clamped the body up to 0.3 dx inside the face. A particle near the face reads them in G2P: a velocity field
- * linear through the wall then gives the particle its exact velocity and
- * gradient, where holding those nodes at v_b left the particle 0.25 dx above
- * a floor on a node row 16% short of its strain rate (its lowest node,
+ * it clamped the body up to 0.3 dx inside the face (a thin blade's, with no
+ * solid behind it, still is). A particle near the face reads them in G2P: a
+ * velocity field linear through the wall then gives the particle its exact
+ * velocity and gradient, where holding those nodes at v_b left the particle
+ * 0.25 dx above a floor on a node row 16% short of its strain rate (its lowest node,
  * weight 1/32, a cell inside the floor, read 0 instead of -v of the first
  * free row), and the rows next to the floor settled to a wrong stress
  * (`column_base_stress`). Together with mpm_p2g_mirror's reaction this is the
