@@ -224,7 +224,10 @@ static int grid_velocity_linear(const hearth_scene *s, const double x[3], double
  * node, left free, had no net force but its weight (the mirrors' even stress
  * cancels its own), and a column hanging from the face fell off; held at v_b
  * it clamped the body up to 0.3 dx inside the face (a thin blade's, with no
- * solid behind it, still is). A particle near the face reads them in G2P: a
+ * solid behind it, still is). A held node under half a cell inside the face
+ * takes the same linear velocity, from a point 1.5 dx out, not the reflection,
+ * whose point lies among held nodes read as v_b: there the body was held
+ * 0.04-0.08 dx inside the face at every dx. A particle near the face reads them in G2P: a
  * velocity field linear through the wall then gives the particle its exact
  * velocity and gradient, where holding those nodes at v_b left the particle
  * 0.25 dx above a floor on a node row 16% short of its strain rate (its lowest node,
@@ -257,6 +260,16 @@ void mpm_sticky_ghosts_block(const hearth_scene *s, int k) {
             for (int d = 0; d < D; d++) xr[d] = xi[d] + g->dx * n[d];
             if (!grid_velocity_linear(s, xr, vr)) continue;
             const double f = phi / (phi + g->dx);
+            for (int d = 0; d < D; d++) node[(d + 1) * NPB + l] = vb[d] + f * (vr[d] - vb[d]);
+            continue;
+        }
+        if (phi > -0.5 * g->dx && phi < -COLLIDER_ROW_TOL * g->dx) {
+            /* under half a cell inside: the reflection x_i - 2 phi n lies within half a cell of the face, where
+             * the grid velocity reads this node itself and its held neighbours as v_b; the velocity linear from
+             * the face to the grid 1.5 dx out, which only free nodes carry, instead (the same for a linear field) */
+            for (int d = 0; d < D; d++) xr[d] = xi[d] + (1.5 * g->dx - phi) * n[d];
+            if (!grid_velocity_linear(s, xr, vr)) continue;
+            const double f = phi / (1.5 * g->dx);
             for (int d = 0; d < D; d++) node[(d + 1) * NPB + l] = vb[d] + f * (vr[d] - vb[d]);
             continue;
         }
