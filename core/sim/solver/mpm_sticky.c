@@ -12,8 +12,9 @@
  * first order (`column_base_stress`, docs/validation.md). A face just off
  * a node row leaves a free node almost on it, whose own stress the mirrors
  * cancel: the face also holds the nodes up to STICKY_NEAR_BAND (0.3) dx
- * outside it, each at the velocity linear from the face (colliders.h;
- * "The sticky face's clamp" in docs/validation.md). Only scenes with
+ * outside it, each at the velocity linear from the face (colliders.h), and
+ * the held nodes under half a cell inside take that linear velocity too
+ * ("The sticky face's clamp" in docs/validation.md). Only scenes with
  * a sticky collider run any of this (mpm.c instantiates P2G with and
  * without mirrors). */
 #include "mpm_sticky.h"
