@@ -81,6 +81,18 @@ void collider_velocity_at(const collider *c, const double x[3], double v[3]);
 /// below anything a scene means by moving a face.
 #define COLLIDER_ROW_TOL 1e-3
 
+/// A sticky face also holds the nodes up to this many cells outside it, each
+/// at the velocity linear from the face's to the grid's a cell further out
+/// (mpm_sticky.c, mpm_sticky_ghosts_block). Such a node, free, had half its
+/// B-spline support in the collider, whose mirrors extend the stress evenly:
+/// its net internal force cancelled and nothing carried its weight, so a
+/// column hanging from a face 0.005-0.02 dx outside a node row fell off and
+/// one 0.1 dx outside hung as if clamped 0.43 dx above the face at 10 cells
+/// (docs/validation.md, "The sticky face's clamp"). 0.3: the band where the
+/// hold's clamp offset was under 0.03 dx; past 0.45 a node held this way
+/// clamped worse than a free one.
+#define STICKY_NEAR_BAND 0.3
+
 /// Project velocity v (in place) of a grid node touching a boundary with outward
 /// unit normal n that moves at vb. sticky: v = vb. slip: the normal part of
 /// v - vb is removed, then Coulomb friction acts on the tangential part.

@@ -470,8 +470,11 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
              * face (COLLIDER_ROW_TOL), none outside: a grip clamps at its face.
              * (Holding a grip's nodes a cell outside kept a pulled strip from
              * peeling off, at the cost of a clamp one cell in; G2P's carry now
-             * keeps the stress continuous instead.) */
-            const double band = COLLIDER_ROW_TOL * g->dx;
+             * keeps the stress continuous instead.) A sticky face also holds
+             * those within STICKY_NEAR_BAND cells outside it, which
+             * mpm_sticky_ghosts_block then gives the velocity linear from the
+             * face (colliders.h). */
+            const double band = (s->cols[c].mode == HEARTH_STICKY ? STICKY_NEAR_BAND : COLLIDER_ROW_TOL) * g->dx;
             if (!collider_near(&s->cols[c], xi)) continue;
             const double phi = collider_sdf(&s->cols[c], xi, n);
             if (phi > band) continue;

@@ -9,7 +9,12 @@
  * free velocity (mpm_sticky_ghosts_block), so the velocity field is linear
  * through the wall. Each alone left the particle row 0.75 dx above a floor
  * about 9% over; together the base stress of a settled column converges at
- * first order (`column_base_stress`, docs/validation.md). Only scenes with
+ * first order (`column_base_stress`, docs/validation.md). A face just off
+ * a node row leaves a free node almost on it, whose own stress the mirrors
+ * cancel: the face also holds the nodes up to STICKY_NEAR_BAND (0.3) dx
+ * outside it, each at the velocity linear from the face (colliders.h), and
+ * the held nodes under half a cell inside take that linear velocity too
+ * ("The sticky face's clamp" in docs/validation.md). Only scenes with
  * a sticky collider run any of this (mpm.c instantiates P2G with and
  * without mirrors). */
 #include "mpm_sticky.h"
@@ -143,10 +148,10 @@ int mpm_block_near_sticky(const hearth_scene *s, const int D, const int org[3]) 
 }
 
 /* The first sticky collider that holds the point x (on or inside its face,
- * as grid_update_block decides), or NULL; its velocity at x in vb, and its
+ * or within STICKY_NEAR_BAND dx outside it, as grid_update_block decides), or NULL; its velocity at x in vb, and its
  * sdf and outward normal there in *phi and n when asked. */
 static const collider *sticky_held(const hearth_scene *s, const double x[3], double vb[3], double *phi, double n[3]) {
-    const double band = COLLIDER_ROW_TOL * s->g.dx;
+    const double band = STICKY_NEAR_BAND * s->g.dx;
     for (int c = 0; c < s->ncol; c++) {
         const collider *cl = &s->cols[c];
         if (cl->mode != HEARTH_STICKY || !collider_near(cl, x)) continue;
@@ -214,10 +219,19 @@ static int grid_velocity_linear(const hearth_scene *s, const double x[3], double
 
 /* The held nodes within 1.5 dx inside a sticky face take the odd reflection
  * of the free velocity, v_i = 2 v_b - v(x_i - 2 phi_i n), instead of v_b
- * (ghost nodes). A particle near the face reads them in G2P: a velocity field
- * linear through the wall then gives the particle its exact velocity and
- * gradient, where holding those nodes at v_b left the particle 0.25 dx above
- * a floor on a node row 16% short of its strain rate (its lowest node,
+ * (ghost nodes), and those held just outside it (0 < phi_i <= STICKY_NEAR_BAND
+ * dx, colliders.h) the velocity linear from the face's to the grid's a cell
+ * further out, v_i = v_b + phi_i / (phi_i + dx) (v(x_i + dx n) - v_b): such a
+ * node, left free, had no net force but its weight (the mirrors' even stress
+ * cancels its own), and a column hanging from the face fell off; held at v_b
+ * it clamped the body up to 0.3 dx inside the face (a thin blade's, with no
+ * solid behind it, still is). A held node under half a cell inside the face
+ * takes the same linear velocity, from a point 1.5 dx out, not the reflection,
+ * whose point lies among held nodes read as v_b: there the body was held
+ * 0.04-0.08 dx inside the face at every dx. A particle near the face reads them in G2P: a
+ * velocity field linear through the wall then gives the particle its exact
+ * velocity and gradient, where holding those nodes at v_b left the particle
+ * 0.25 dx above a floor on a node row 16% short of its strain rate (its lowest node,
  * weight 1/32, a cell inside the floor, read 0 instead of -v of the first
  * free row), and the rows next to the floor settled to a wrong stress
  * (`column_base_stress`). Together with mpm_p2g_mirror's reaction this is the
@@ -243,6 +257,23 @@ void mpm_sticky_ghosts_block(const hearth_scene *s, int k) {
         const double deep[3] = {xi[0] - 1.5 * g->dx * n[0], xi[1] - 1.5 * g->dx * n[1], xi[2] - 1.5 * g->dx * n[2]};
         if (!solid_behind(s, cl, deep)) continue; /* a particle beyond the collider may read this node */
         double xr[3] = {0, 0, 0}, vr[3];
+        if (phi > COLLIDER_ROW_TOL * g->dx) { /* just outside the face (STICKY_NEAR_BAND): linear from it */
+            for (int d = 0; d < D; d++) xr[d] = xi[d] + g->dx * n[d];
+            if (!grid_velocity_linear(s, xr, vr)) continue;
+            const double f = phi / (phi + g->dx);
+            for (int d = 0; d < D; d++) node[(d + 1) * NPB + l] = vb[d] + f * (vr[d] - vb[d]);
+            continue;
+        }
+        if (phi > -0.5 * g->dx && phi < -COLLIDER_ROW_TOL * g->dx) {
+            /* under half a cell inside: the reflection x_i - 2 phi n lies within half a cell of the face, where
+             * the grid velocity reads this node itself and its held neighbours as v_b; the velocity linear from
+             * the face to the grid 1.5 dx out, which only free nodes carry, instead (the same for a linear field) */
+            for (int d = 0; d < D; d++) xr[d] = xi[d] + (1.5 * g->dx - phi) * n[d];
+            if (!grid_velocity_linear(s, xr, vr)) continue;
+            const double f = phi / (1.5 * g->dx);
+            for (int d = 0; d < D; d++) node[(d + 1) * NPB + l] = vb[d] + f * (vr[d] - vb[d]);
+            continue;
+        }
         for (int d = 0; d < D; d++) xr[d] = xi[d] - 2 * phi * n[d];
         if (!grid_velocity_linear(s, xr, vr)) continue;
         for (int d = 0; d < D; d++) node[(d + 1) * NPB + l] = 2 * vb[d] - vr[d];
