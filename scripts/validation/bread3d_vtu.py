@@ -47,8 +47,10 @@ def main():
         at = {a["id"][k]: k for k in k1}
         if slab is None:
             zlo, zhi = min(Z[k] for k in mid), max(Z[k] for k in mid)
-            slab = ([a["id"][k] for k in mid], [a["id"][k] for k in mid if Z[k] < zlo + 1e-4],
-                    [a["id"][k] for k in mid if Z[k] > zhi - 1e-4], zhi - zlo)
+            lo = [k for k in mid if Z[k] < zlo + 1e-4]
+            hi = [k for k in mid if Z[k] > zhi - 1e-4]
+            slab = ([a["id"][k] for k in mid], [a["id"][k] for k in lo], [a["id"][k] for k in hi],
+                    sum(Z[k] for k in hi) / len(hi) - sum(Z[k] for k in lo) / len(lo))
         lo = [Z[at[i]] for i in slab[1] if i in at]
         hi = [Z[at[i]] for i in slab[2] if i in at]
         stretch = (sum(hi) / len(hi) - sum(lo) / len(lo)) / slab[3]

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""loaf3d_yield.py DIR X0 [ZMID]: the stress and the Cam-clay yield (Ding et al. 2019 eq. 12) of one bread.lua loaf's
+"""loaf3d_yield.py DIR X0 [ZMID [NU]]: the stress and the Cam-clay yield (Ding et al. 2019 eq. 12) of one bread.lua loaf's
 middle, from its VTU frames (DIR: the run's vtu/ folder; X0: the loaf's axis, m; ZMID: 3D, the middle slab's z, default
 0.06; a 2D run: the whole loaf). docs/validation.md, "bread.lua's 3D loaf: its ends and its yield". Per frame and per
 height band of the middle slab (|z - ZMID| < 10 mm): the mean solid Cauchy stress sigma_xx, sigma_yy, sigma_zz (Pa, tension
@@ -12,7 +12,7 @@ flows, at the rate (1/eta) f of section 5.3), the share of particles above 1, J 
 irreversible: its highest temperature, the same in a loaf that only heats); the drying factor on tau_y is left out
 (the middle's crumb stays near its raw water). And the elastic Hencky strain the solid's stress stands for, eps =
 ((1 + nu) tau - nu tr(tau) I) / E (section 5.2's Psi; E 2 kPa, nu 0.3: the bread preset, whose E only its drying factor
-moves), its xx, yy and zz components: the stretch the gas holds the crumb at. Needs only Python's standard library."""
+moves; NU: the run's Poisson ratio, bread3d.lua's nu), its xx, yy and zz components: the stretch the gas holds the crumb at. Needs only Python's standard library."""
 import glob
 import math
 import sys
@@ -45,8 +45,9 @@ def M_of(n):
 def main():
     d, x0 = sys.argv[1], float(sys.argv[2])
     zmid = float(sys.argv[3]) if len(sys.argv) > 3 else 0.06
+    nu = float(sys.argv[4]) if len(sys.argv) > 4 else NU
     bands = ((0, 0.2), (0, 0.025), (0.025, 0.05), (0.05, 0.2))  # the whole slab, then its foot, middle and crown
-    print("t | band (mm above tray) | n | solid sxx syy szz | p_gas | total szz | solid tau p | q | yield ratio (mean, share >1) | "
+    print("t | band (mm above tray) | n | solid sxx syy szz | p_gas | total szz, solid tau p | q | yield ratio (mean, share >1) | "
           "J | J^P | T | elastic strain xx yy zz")
     for f in sorted(glob.glob(d + "/*_[0-9][0-9][0-9][0-9].vtu")):
         a = read_vtu(f)
@@ -74,7 +75,7 @@ def main():
                 r = (M_of(n) * p * p + q * q) / (ty * ty)
                 jp = (1 - N0) / (1 - n) if n == n else float("nan")
                 for i, v in enumerate((s[0], s[4], s[8], pg, s[8] - pg - pw, p, q, r, 1.0 if r > 1 else 0.0, J, jp, T,
-                                       *(((1 + NU) * ss[i] + 3 * NU * p) / E for i in (0, 4, 8)))):
+                                       *(((1 + nu) * ss[i] + 3 * nu * p) / E for i in (0, 4, 8)))):
                     acc[i] += v
             m = [v / len(kb) for v in acc]
             print(f"{a['TimeValue'][0]:.2f} | {lo * 1e3:.0f}-{min(hi, 0.2) * 1e3:.0f} | {len(kb)} | {m[0]:.0f} {m[1]:.0f} "
