@@ -422,8 +422,8 @@ print("EXPECTED FAILURE: the volume grows as the bars ask (plain +21.8% / +16.3%
       "66.8 -> 62.5, 67.1 -> 64.1), because a loaf with free ends is not in plane strain: the gas's pressure, which "
       "the solid carries in tension in every direction, stretches its middle along z as much as across (elastic "
       "strain along z 0.134 at the end at 8 mm against 0.002 with its ends held; its middle's material 13.5% longer) "
-      "and plane strain, as in 2D, puts 1 + nu = 1.3 times more of the same gas into the cross-section's height "
-      "(measured per unit gas pressure: 1.30 held over free at nu 0.3, 0.94 at nu 0). "
+      "and plane strain, as in 2D, puts 1 + nu = 1.3 times more of the same gas into the cross-section (measured "
+      "per unit gas pressure on an 18 cm loaf, held over free: 1.30 at nu 0.3, 0.94 at nu 0). "
       "Extruded 6 cm with two flat free ends the loaf also lengthens at its foot (60 -> 74 mm at 8 mm) and its slit "
       "barely opens (8 mm: 7.8 -> 7.8 mm, between particles 14.4 -> 14.3 mm; 6 mm: 7.6 -> 8.8 mm; 2D 6.8 -> 19.7 "
       "mm). Held by the box's slip walls along z (scripts/validation/bread3d.lua --set zw=0.12) it rises as in 2D: "
@@ -476,8 +476,8 @@ print("EXPECTED FAILURE: the rounded loaf's volume grows as the bars ask (8 mm +
       "+21.6%) but it ends below its raw height (71.6 -> 68.5 mm at 8 mm, 72.0 -> 70.1 at 6 mm), because its free "
       "ends leave it out of plane strain: the gas stretches its middle along z as much as across (its middle's "
       "material 11.0% longer at 8 mm, 8.3% at 6 mm; elastic strain along z 0.119, across 0.136 and up 0.041) where "
-      "2D and a loaf held at its ends along z put 1 + nu = 1.3 times more of the same gas into the cross-section's "
-      "height; its middle section gains +13.0% (8 mm) and +14.3% (6 mm) against the held loaf's +29.4%. "
+      "2D and a loaf held at its ends along z put 1 + nu = 1.3 times more of the same gas into the cross-section; "
+      "its middle section gains +13.0% (8 mm) and +14.3% (6 mm) against the held loaf's +29.4%. "
       "docs/validation.md, 'bread.lua's 3D loaf: its ends and its yield'")
 sys.exit(77)
 PY

@@ -1,18 +1,20 @@
 #!/usr/bin/env python3
-"""loaf3d_yield.py DIR X0 [ZMID [NU]]: the stress and the Cam-clay yield (Ding et al. 2019 eq. 12) of one bread.lua loaf's
-middle, from its VTU frames (DIR: the run's vtu/ folder; X0: the loaf's axis, m; ZMID: 3D, the middle slab's z, default
-0.06; a 2D run: the whole loaf). docs/validation.md, "bread.lua's 3D loaf: its ends and its yield". Per frame and per
-height band of the middle slab (|z - ZMID| < 10 mm): the mean solid Cauchy stress sigma_xx, sigma_yy, sigma_zz (Pa, tension
-positive: the VTU's stress, which is the plugin's own, core/sim/probe.c), the gas pressure (eq. 13, the VTU's
-gas_pressure), the total sigma_zz (the solid's less the gas and water pressures the core adds after the plugin,
-core/sim/material_batch.c), the solid's Kirchhoff stress J sigma as eq. 12 sees it: its p = -tr/3, q = sqrt(3/2) |dev|, M(n^p) p^2 + q^2 over tau_y(T)^2 (the yield ratio: above 1 the dough
-flows, at the rate (1/eta) f of section 5.3), the share of particles above 1, J and J^P = (1 - n_0) / (1 - n^p)
-(plugins/cam_clay_dough.c; n_0 = 0.1, lua/hearth/dough.lua). tau_y(T) is the bread preset's Fig. 8 curve (200 Pa x
-1, 0.8, 0.3, 20 at 5, 20, 35, 70 degC, lua/hearth/dough.lua), read at the particle's temperature (the curve is
-irreversible: its highest temperature, the same in a loaf that only heats); the drying factor on tau_y is left out
-(the middle's crumb stays near its raw water). And the elastic Hencky strain the solid's stress stands for, eps =
-((1 + nu) tau - nu tr(tau) I) / E (section 5.2's Psi; E 2 kPa, nu 0.3: the bread preset, whose E only its drying factor
-moves; NU: the run's Poisson ratio, bread3d.lua's nu), its xx, yy and zz components: the stretch the gas holds the crumb at. Needs only Python's standard library."""
+"""loaf3d_yield.py DIR X0 [ZMID [NU]]: the stress and the Cam-clay yield (Ding et al. 2019 eq. 12) of one bread.lua
+loaf's middle, from its VTU frames (DIR: the run's vtu/ folder; X0: the loaf's axis, m; ZMID: 3D, the middle slab's z,
+default 0.06; a 2D run: the whole loaf). docs/validation.md, "bread.lua's 3D loaf: its ends and its yield". Per frame
+and per height band of the middle slab (|z - ZMID| < 10 mm): the mean solid Cauchy stress sigma_xx, sigma_yy, sigma_zz
+(Pa, tension positive: the VTU's stress, which is the plugin's own, core/sim/probe.c), the gas pressure (eq. 13, the
+VTU's gas_pressure), the total sigma_zz (the solid's less the gas and water pressures the core adds after the plugin,
+core/sim/material_batch.c), the solid's Kirchhoff stress J sigma as eq. 12 sees it: its p = -tr/3, q = sqrt(3/2)
+|dev|, M(n^p) p^2 + q^2 over tau_y(T)^2 (the yield ratio: above 1 the dough flows, at the rate (1/eta) f of section
+5.3), the share of particles above 1, J and J^P = (1 - n_0) / (1 - n^p) (plugins/cam_clay_dough.c; n_0 = 0.1,
+lua/hearth/dough.lua). tau_y(T) is the bread preset's Fig. 8 curve (200 Pa x 1, 0.8, 0.3, 20 at 5, 20, 35, 70 degC,
+lua/hearth/dough.lua), read at the particle's temperature (the curve is irreversible: its highest temperature, the
+same in a loaf that only heats); the drying factor on tau_y is left out (the middle's crumb stays near its raw water).
+And the elastic Hencky strain the solid's stress stands for, eps = ((1 + nu) tau - nu tr(tau) I) / E (section 5.2's
+Psi; E 2 kPa, nu 0.3: the bread preset, whose E only its drying factor moves; NU: the run's Poisson ratio,
+bread3d.lua's nu), its xx, yy and zz components: the stretch the gas holds the crumb at. Needs only Python's standard
+library."""
 import glob
 import math
 import sys
