@@ -7,6 +7,14 @@
 --    cannot: only h.recipes.loaf_shape's length is changed.
 --  * box_z: the box's length along z (m; the scene's 0.12), centred on the loaf's z = 0.06, so a loaf longer than
 --    the scene's (zw up to box_z) keeps free ends: does a long loaf's middle stand as a 2D loaf?
+--  * ends: "cut" (the scene's: the profile extruded, two flat cut ends) or "round" (a loaf a baker shapes, a batard:
+--    the straight part zw long and each end the profile revolved about the vertical through the end of the straight
+--    part, a half dome of the loaf's half width: the box's straight walls become a half cylinder standing on the tray
+--    and the round top a quarter sphere, so the loaf is zw + its width long; docs/validation.md, "bread.lua's 3D
+--    loaf: its ends and its yield"). The scene's slits (cut over z in [0, 0.12]) then run to ~1 cm from the tips.
+--  * nu: the dough's Poisson ratio (the bread preset's 0.3 unless set): with nu = 0 a crumb held along z and one free
+--    along it stretch alike in their cross-section under the same gas (docs/validation.md, "bread.lua's 3D loaf: its
+--    ends and its yield": the check of plane strain's (1 + nu)).
 --  * beta_scale: a factor on the oven's heat transfer coefficient (oven.beta, Ding et al. eq. 9's Robin boundary;
 --    the tray's is kept), to heat a loaf with free ends as slowly as one with held ends.
 --  * pictures of the raw and the baked loaf, cut through its middle: across it
@@ -16,12 +24,19 @@
 --   hearth run scripts/validation/bread3d.lua --set only=1 [--set zw=0.12] [--set dx=0.006 --set dx_min_3d=0.006]
 local h = require "hearth"
 local P = h.params { dim = 3, dx = 0.008, until_t = 2.5, frames = 10, slit_depth = 0.02, slit_width = 0.01, only = 1,
-  dx_min_3d = 0.008, zw = 0.06, box_z = 0.12, beta_scale = 1, field = "J", bread = "scripts/scenes/baking/bread.lua" }
+  dx_min_3d = 0.008, zw = 0.06, box_z = 0.12, beta_scale = 1, ends = "cut", nu = 0.3, field = "J",
+  bread = "scripts/scenes/baking/bread.lua" }
 if P.dim ~= 3 then error(("bread3d.lua: dim %d: expected 3 (bread.lua itself runs 2D)"):format(P.dim)) end
 if not (P.box_z >= 0.12 and P.box_z <= 0.6) then error(("bread3d.lua: box_z %g m: expected [0.12, 0.6]"):format(P.box_z)) end
 if not (P.zw > 0 and P.zw <= P.box_z) then
   error(("bread3d.lua: zw %g m: expected (0, box_z = %g] (the box's length in z)"):format(P.zw, P.box_z))
 end
+if P.ends ~= "cut" and P.ends ~= "round" then error(("bread3d.lua: ends %q: expected \"cut\" or \"round\""):format(P.ends)) end
+if P.ends == "round" and P.zw + 0.08 > P.box_z - 0.02 then -- 0.08: bread.lua's loaf width, the two half domes
+  error(("bread3d.lua: zw %g m with ends = \"round\": the loaf is zw + 0.08 m long; expected zw <= box_z - 0.1 = %g "
+    .. "(1 cm of room at each tip)"):format(P.zw, P.box_z - 0.1))
+end
+if not (P.nu >= 0 and P.nu < 0.5) then error(("bread3d.lua: nu %g: expected [0, 0.5)"):format(P.nu)) end
 if not (P.beta_scale > 0 and P.beta_scale <= 10) then error(("bread3d.lua: beta_scale %g: expected (0, 10]"):format(P.beta_scale)) end
 if P.only < 1 or P.only > 3 then error(("bread3d.lua: only %d: expected 1, 2 or 3 (one loaf)"):format(P.only)) end
 
@@ -32,7 +47,23 @@ h.params = function(defaults)
   return Q
 end
 local loaf_shape = h.recipes.loaf_shape
-h.recipes.loaf_shape = function(dim, x, tray, w, body, zc, _) return loaf_shape(dim, x, tray, w, body, zc, P.zw) end
+h.recipes.loaf_shape = function(dim, x, tray, w, body, zc, _)
+  if P.ends == "cut" then return loaf_shape(dim, x, tray, w, body, zc, P.zw) end
+  local z0, z1, r = zc - P.zw / 2, zc + P.zw / 2, w / 2
+  return (h.box({ x - r, tray, z0 }, { x + r, tray + body, z1 }) + -- the straight part's walls
+    h.cylinder({ x, tray + body / 2, z0 }, { 0, 1, 0 }, r, body / 2) + -- each end's walls, revolved
+    h.cylinder({ x, tray + body / 2, z1 }, { 0, 1, 0 }, r, body / 2) +
+    h.capsule({ x, tray + body, z0 }, { x, tray + body, z1 }, r)) - -- the round top, its ends revolved
+    h.box({ x - w, tray - w, z0 - w }, { x + w, tray, z1 + w })
+end
+
+if P.nu ~= 0.3 then
+  local material = h.material
+  h.material = function(plugin, params)
+    if plugin == "cam_clay_dough" then params.nu = P.nu end
+    return material(plugin, params)
+  end
+end
 
 -- the scene bread.lua makes, behind a proxy whose run draws the slices before and after the bake
 local xl = (P.only - 0.5) * 0.14 -- the loaf's axis (bread.lua: SPACING 0.14)
