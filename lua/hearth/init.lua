@@ -409,6 +409,19 @@ function h.params(defaults)
   return P
 end
 
+--- For a script that runs a shipped scene (dofile) after parsing its own h.params P, a superset of the scene's
+--- names so that every --set reaches it: from here on the scene's h.params returns P's value of each name it
+--- declares, and its own default for a name P does not know (a parameter the scene gained after the script).
+function h.pass_params(P)
+  h.params = function(defaults)
+    local Q = {}
+    for k, v in pairs(defaults) do
+      if P[k] == nil then Q[k] = v else Q[k] = P[k] end
+    end
+    return Q
+  end
+end
+
 -- ---- scenes -----------------------------------------------------------------
 
 local S = core.scene_methods

@@ -41,11 +41,7 @@ if not (P.beta_scale > 0 and P.beta_scale <= 10) then error(("bread3d.lua: beta_
 if P.only < 1 or P.only > 3 then error(("bread3d.lua: only %d: expected 1, 2 or 3 (one loaf)"):format(P.only)) end
 
 -- bread.lua's own h.params sees the values parsed here (it declares a subset of these names)
-h.params = function(defaults)
-  local Q = {}
-  for k in pairs(defaults) do Q[k] = P[k] end
-  return Q
-end
+h.pass_params(P)
 local loaf_shape = h.recipes.loaf_shape
 h.recipes.loaf_shape = function(dim, x, tray, w, body, zc, _)
   if P.ends == "cut" then return loaf_shape(dim, x, tray, w, body, zc, P.zw) end

@@ -30,11 +30,7 @@ local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth 
   cfl = 0.5, dt_max = 0, transfer = "apic", field_steps = 0, bread = "scripts/scenes/baking/bread.lua" }
 
 -- bread.lua's own h.params sees the values parsed here (it declares a subset of these names)
-h.params = function(defaults)
-  local Q = {}
-  for k in pairs(defaults) do Q[k] = P[k] end
-  return Q
-end
+h.pass_params(P)
 
 local scene = h.scene
 h.scene = function(o)

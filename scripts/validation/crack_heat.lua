@@ -28,11 +28,7 @@ local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 10, slit_depth
   conductivity = 1, oven = -1, pan = -1, set_strain = -1, set_prop = 0, dry_shift = 1, dough = -1, bread = "scripts/scenes/baking/bread.lua" }
 
 -- bread.lua's own h.params sees the values parsed here (it declares a subset of these names)
-h.params = function(defaults)
-  local Q = {}
-  for k in pairs(defaults) do Q[k] = P[k] end
-  return Q
-end
+h.pass_params(P)
 
 local paper, paper_oven = h.library.paper, h.library.paper_oven
 h.library.paper = setmetatable({}, { __index = function(_, name)

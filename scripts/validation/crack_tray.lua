@@ -17,11 +17,7 @@ local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth 
   tray_mode = "separate", tray_friction = 0.4, bread = "scripts/scenes/baking/bread.lua" }
 
 -- bread.lua's own h.params sees the values parsed here (it declares a subset of these names)
-h.params = function(defaults)
-  local Q = {}
-  for k in pairs(defaults) do Q[k] = P[k] end
-  return Q
-end
+h.pass_params(P)
 
 local TRAY, X0 = 0.02, 0.07 -- bread.lua's tray height and its plain loaf's axis (m)
 local tray = h.recipes.tray

@@ -13,11 +13,7 @@ local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0, tra
   loaf = "scripts/scenes/baking/loaf_physical.lua" }
 
 -- loaf_physical.lua's own h.params sees the values parsed here (it declares a subset of these names)
-h.params = function(defaults)
-  local Q = {}
-  for k in pairs(defaults) do Q[k] = P[k] end
-  return Q
-end
+h.pass_params(P)
 
 -- the loaf's material: the preset with its open_temperature replaced (only a material with ambient_pressure reads it)
 local material = h.material

@@ -56,11 +56,7 @@ local P = h.params { dim = 2, dx = 0.004, until_t = 3, frames = 6, cups = 3, fil
   muffins = "scripts/scenes/baking/muffins.lua" }
 
 -- muffins.lua's own h.params sees the values parsed here (it declares a subset of these names)
-h.params = function(defaults)
-  local Q = {}
-  for k in pairs(defaults) do Q[k] = P[k] end
-  return Q
-end
+h.pass_params(P)
 
 -- DRY's factor at X/X0 = r (log-linear over its points, flat past its ends)
 local function dry_factor(pts, r)
