@@ -725,11 +725,8 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
         gravity_at_step(s);
         for (int c = 0; c < s->ncol; c++) {
             collider_set_time(&s->cols[c], s->t);
-            collider_update_bounds(&s->cols[c], 2.0 * s->def.dx);
-            if (s->def.solver == HEARTH_SOLVER_MPM) {
-                collider_bound_half_space(&s->cols[c], 2.0 * s->def.dx);
-                collider_bound_prism(&s->cols[c], 2.0 * s->def.dx);
-            }
+            if (s->def.solver == HEARTH_SOLVER_MPM) collider_update_bounds_tight(&s->cols[c], 2.0 * s->def.dx);
+            else collider_update_bounds(&s->cols[c], 2.0 * s->def.dx);
         }
         step_report rep;
         field_clock_plan(s, dt); /* whether this step carries the fields, and over what time */

@@ -270,9 +270,7 @@ static hearth_status collider_map_make(collider_map *m, const frame *f, const he
     const double margin = 2.0 / f->sc;
     for (int k = 0; k < nbk; k++) {
         nb[k] = s->cols[k];
-        collider_update_bounds(&nb[k], margin);
-        collider_bound_half_space(&nb[k], margin);
-        collider_bound_prism(&nb[k], margin);
+        collider_update_bounds_tight(&nb[k], margin);
     }
     for (int j = 0; j < m->h; j++)
         for (int i = 0; i < m->w; i++) {

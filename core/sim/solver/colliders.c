@@ -224,6 +224,12 @@ void collider_bound_prism(collider *c, double margin) {
     c->blo[2] = -INFINITY, c->bhi[2] = INFINITY;
 }
 
+void collider_update_bounds_tight(collider *c, double margin) {
+    collider_update_bounds(c, margin);
+    collider_bound_half_space(c, margin);
+    collider_bound_prism(c, margin);
+}
+
 int collider_carry_particle(const collider *c, int dim, double dt, double x[3], double v[3], double C[9]) {
     if (c->mode != HEARTH_GRIP || collider_sdf(c, x, NULL) >= 0) return 0;
     /* the rigid motion of the coming step about the current pivot, exact as in collider_advance */

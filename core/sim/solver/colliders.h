@@ -55,6 +55,9 @@ void collider_bound_half_space(collider *c, double margin);
 /// both every step; helper citime). Every MPM caller's band is within the margin (collider_bound_half_space),
 /// so what they find is the same. Not on SPH (collider_bound_half_space says why).
 void collider_bound_prism(collider *c, double margin);
+/// collider_update_bounds, then collider_bound_half_space and collider_bound_prism: the tight bounds an MPM
+/// step and a picture's collider map use (their bands within margin).
+void collider_update_bounds_tight(collider *c, double margin);
 /// 1 when x lies inside the cached bounding box (cheap test before collider_sdf).
 static inline int collider_near(const collider *c, const double x[3]) {
     return x[0] >= c->blo[0] && x[0] <= c->bhi[0] && x[1] >= c->blo[1] && x[1] <= c->bhi[1] && x[2] >= c->blo[2] &&
@@ -92,6 +95,13 @@ void collider_velocity_at(const collider *c, const double x[3], double v[3]);
 /// hold's clamp offset was under 0.03 dx; past 0.45 a node held this way
 /// clamped worse than a free one.
 #define STICKY_NEAR_BAND 0.3
+
+/// How far outside its face (cells) a collider holds grid nodes: STICKY_NEAR_BAND
+/// for a sticky face, COLLIDER_ROW_TOL (on the face) for the others. The grid
+/// update (mpm.c) and the sticky ghosts (mpm_sticky.c) must agree on it.
+static inline double collider_hold_band(const collider *c) {
+    return c->mode == HEARTH_STICKY ? STICKY_NEAR_BAND : COLLIDER_ROW_TOL;
+}
 
 /// Project velocity v (in place) of a grid node touching a boundary with outward
 /// unit normal n that moves at vb. sticky: v = vb. slip: the normal part of

@@ -474,7 +474,7 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
              * those within STICKY_NEAR_BAND cells outside it, which
              * mpm_sticky_ghosts_block then gives the velocity linear from the
              * face (colliders.h). */
-            const double band = (s->cols[c].mode == HEARTH_STICKY ? STICKY_NEAR_BAND : COLLIDER_ROW_TOL) * g->dx;
+            const double band = collider_hold_band(&s->cols[c]) * g->dx;
             if (!collider_near(&s->cols[c], xi)) continue;
             const double phi = collider_sdf(&s->cols[c], xi, n);
             if (phi > band) continue;

@@ -151,13 +151,12 @@ int mpm_block_near_sticky(const hearth_scene *s, const int D, const int org[3]) 
  * or within STICKY_NEAR_BAND dx outside it, as grid_update_block decides), or NULL; its velocity at x in vb, and its
  * sdf and outward normal there in *phi and n when asked. */
 static const collider *sticky_held(const hearth_scene *s, const double x[3], double vb[3], double *phi, double n[3]) {
-    const double band = STICKY_NEAR_BAND * s->g.dx;
     for (int c = 0; c < s->ncol; c++) {
         const collider *cl = &s->cols[c];
         if (cl->mode != HEARTH_STICKY || !collider_near(cl, x)) continue;
         double nn[3];
         const double d = collider_sdf(cl, x, nn);
-        if (d > band) continue;
+        if (d > collider_hold_band(cl) * s->g.dx) continue;
         collider_velocity_at(cl, x, vb);
         if (s->g.dim == 2) vb[2] = 0.0;
         if (phi) *phi = d;
@@ -256,26 +255,23 @@ void mpm_sticky_ghosts_block(const hearth_scene *s, int k) {
         if (D == 2) n[2] = 0.0;
         const double deep[3] = {xi[0] - 1.5 * g->dx * n[0], xi[1] - 1.5 * g->dx * n[1], xi[2] - 1.5 * g->dx * n[2]};
         if (!solid_behind(s, cl, deep)) continue; /* a particle beyond the collider may read this node */
+        /* the grid point this node's velocity is read from, `step` along n, and (not the reflection) the node's
+         * share f of that point's velocity over the face's */
+        double step, f = 0;
+        int reflect = 0;
+        if (phi > COLLIDER_ROW_TOL * g->dx) /* just outside the face (STICKY_NEAR_BAND): linear from it */
+            step = g->dx, f = phi / (phi + g->dx);
+        else if (phi > -0.5 * g->dx && phi < -COLLIDER_ROW_TOL * g->dx)
+            /* under half a cell inside: the reflection x_i - 2 phi n would lie within half a cell of the face,
+             * where the grid velocity reads this node itself and its held neighbours as v_b; the velocity linear
+             * from the face to the grid 1.5 dx out, which only free nodes carry, instead (the same for a linear
+             * field) */
+            step = 1.5 * g->dx - phi, f = phi / (1.5 * g->dx);
+        else
+            step = -2 * phi, reflect = 1; /* the odd reflection */
         double xr[3] = {0, 0, 0}, vr[3];
-        if (phi > COLLIDER_ROW_TOL * g->dx) { /* just outside the face (STICKY_NEAR_BAND): linear from it */
-            for (int d = 0; d < D; d++) xr[d] = xi[d] + g->dx * n[d];
-            if (!grid_velocity_linear(s, xr, vr)) continue;
-            const double f = phi / (phi + g->dx);
-            for (int d = 0; d < D; d++) node[(d + 1) * NPB + l] = vb[d] + f * (vr[d] - vb[d]);
-            continue;
-        }
-        if (phi > -0.5 * g->dx && phi < -COLLIDER_ROW_TOL * g->dx) {
-            /* under half a cell inside: the reflection x_i - 2 phi n lies within half a cell of the face, where
-             * the grid velocity reads this node itself and its held neighbours as v_b; the velocity linear from
-             * the face to the grid 1.5 dx out, which only free nodes carry, instead (the same for a linear field) */
-            for (int d = 0; d < D; d++) xr[d] = xi[d] + (1.5 * g->dx - phi) * n[d];
-            if (!grid_velocity_linear(s, xr, vr)) continue;
-            const double f = phi / (1.5 * g->dx);
-            for (int d = 0; d < D; d++) node[(d + 1) * NPB + l] = vb[d] + f * (vr[d] - vb[d]);
-            continue;
-        }
-        for (int d = 0; d < D; d++) xr[d] = xi[d] - 2 * phi * n[d];
+        for (int d = 0; d < D; d++) xr[d] = xi[d] + step * n[d];
         if (!grid_velocity_linear(s, xr, vr)) continue;
-        for (int d = 0; d < D; d++) node[(d + 1) * NPB + l] = 2 * vb[d] - vr[d];
+        for (int d = 0; d < D; d++) node[(d + 1) * NPB + l] = reflect ? 2 * vb[d] - vr[d] : vb[d] + f * (vr[d] - vb[d]);
     }
 }
