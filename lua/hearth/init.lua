@@ -413,6 +413,7 @@ end
 --- names so that every --set reaches it: from here on the scene's h.params returns P's value of each name it
 --- declares, and its own default for a name P does not know (a parameter the scene gained after the script).
 function h.pass_params(P)
+  if type(P) ~= "table" then error("h.pass_params: expected the table h.params returned, got " .. type(P), 2) end
   h.params = function(defaults)
     local Q = {}
     for k, v in pairs(defaults) do
