@@ -91,7 +91,8 @@ claim_sph_bread_roll_one_piece_whole_bake)
         "0.3-0.8 spacings: sph.own_squeeze takes the squeeze from det F, which does not see particles close, the" \
         "unit test sph_own_squeeze_resists_pairing); the tray, which takes only approach speeds, rectifies them." \
         "dt is the viscous limit's in every step (force and CFL limits 6x and 1.6x the step; a frame costs two half" \
-        "steps); frames every 20 ms seed another trajectory that hopped 0.63 mm (0.1 s: 1.55 mm), and with" \
+        "steps; half the step with half XSPH's epsilons hopped 1.98 mm); frames every 20 ms seed another trajectory" \
+        "that hopped 0.63 mm (0.1 s: 1.55 mm), and with" \
         "own_squeeze off the fast particles nearly vanish and the roll does not hop. Frames every 5 ms (sphtear) and" \
         "the 1.5 mm roll stayed whole to 3 s (at most 1.36% torn). Tried, not kept: the stiffness held at its" \
         "100 degC value (5.07 kPa) stayed whole to 3 s but its base lifted 13.6 mm; at its 95 degC value (20.8" \
