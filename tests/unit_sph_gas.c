@@ -274,10 +274,10 @@ TEST(sph_own_squeeze_keeps_stretch_and_true_squeeze) {
 }
 
 /* Two dough particles pushed within 0.4 spacings of each other in a block at
- * rest (the bread roll's hot base, helper sphbounce: 20 particles in 1.5-1.8 s
- * came within 0.33-0.7 spacings of a neighbour at a summed density 1.3-1.5x
- * rest and p = 0, then sprang apart at 0.2-0.6 m/s; docs/validation.md "The
- * roll's bounce on its tray"). The renormalised sum reads the pair squeezed
+ * rest (the bread roll's hot dough, helper sphbounce: of the 20 particles
+ * past 0.25 m/s in 1.5-1.8 s at 2 mm, 13 had a neighbour within 0.30-0.78
+ * spacings, and 14 of the 16 dough ones stood at p = 0 with a summed density
+ * 1.1-1.5x rest; docs/validation.md "The roll's bounce on its tray"). The renormalised sum reads the pair squeezed
  * and Tait pushes it apart; own_squeeze reads the squeeze from det F, which
  * the smoothed velocity gradient of eq. 3.27 keeps at 1 for a pair that
  * closes inside one kernel, so the pair gets no pressure at all. A 40 x 24 mm
