@@ -142,21 +142,16 @@ static double volume_density(const double *F, double m, double V0, double summed
  * wall's boundary integral. V in st->perm (free scratch between
  * sph_kinematics and sph_forces); a non-positive det F (phase_stress reports
  * it) counts the raw volume. */
-/* Each particle's own volume V0 det F into V (a non-positive det F counts the raw volume). */
-static void own_volumes(const sph_cols *c, double *V) {
-    for (int i = 0; i < c->n; i++) {
+static void renormalise(hearth_scene *s, const sph_cols *c, double *rho_out) {
+    struct sph_state *st = s->sph;
+    const int n = c->n, dim = c->dim, *off = st->nl.off, *nb = st->nl.j;
+    double *V = st->perm;
+    for (int i = 0; i < n; i++) {
         const double *F = c->F + 9 * i;
         const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
                          F[2] * (F[3] * F[7] - F[4] * F[6]);
         V[i] = c->V0[i] * (J > 0 ? J : 1);
     }
-}
-
-static void renormalise(hearth_scene *s, const sph_cols *c, double *rho_out) {
-    struct sph_state *st = s->sph;
-    const int n = c->n, dim = c->dim, *off = st->nl.off, *nb = st->nl.j;
-    double *V = st->perm;
-    own_volumes(c, V);
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         const double hi = st->h[i];
@@ -190,39 +185,8 @@ static void renormalise(hearth_scene *s, const sph_cols *c, double *rho_out) {
  * and that tension is what holds the films (docs/validation.md "The films'
  * tension"; the own volume alone lets them tear). Where both read a squeeze
  * the smaller counts. A non-positive det F keeps the sum. */
-/* How far the own volumes may overlap (own_overlap over 1) before own_squeeze
- * charges it as a squeeze: the Shepard sum's own error on ordered particles
- * (1e-3 resting, a few 1e-3 with rows sliding) stays under it, a pair closed
- * to half a spacing (1.12 on the lattice) far over. */
-#define OWN_OVERLAP_SLACK 0.02
-
-static double own_squeeze(const double *F, double m, double V0, double rho0, double summed, double overlap) {
-    double own = volume_density(F, m, V0, summed);
-    if (overlap > 1 + OWN_OVERLAP_SLACK) own *= overlap - OWN_OVERLAP_SLACK;
-    return fmin(summed, fmax(rho0, own));
-}
-
-/* The overlap of particle i's own volume with its neighbours': the Shepard
- * sum sum_j V_j W_ij (i itself included) over the particles' own volumes
- * V_j = V0_j det F_j, as renormalise's gamma_i, V in st->perm. Where the own
- * volumes tile the plane it is 1 up to the sum's error (within 1e-3 on the
- * resting lattice at h = 2.4 spacings, settings.c's h_factor), a bubble held
- * below its gas volume included (its own volume is the one it holds); where
- * two particles close on each other, which det F (from the smoothed velocity
- * gradient of eq. 3.27) does not see, it grows: 1.15 for a pair at 0.4
- * spacings on the lattice. */
-static double own_overlap(const struct sph_state *st, const sph_cols *c, const double *V, int i) {
-    const int dim = c->dim;
-    const double hi = st->h[i];
-    double g = V[i] * sph_w(dim, 0, hi);
-    for (int k = st->nl.off[i]; k < st->nl.off[i + 1]; k++) {
-        const int j = st->nl.j[k];
-        double d[3];
-        sph_disp(&st->cells, c->x + 3 * i, c->x + 3 * j, d);
-        const double r = sqrt(d[0] * d[0] + d[1] * d[1] + (dim == 3 ? d[2] * d[2] : 0));
-        g += V[j] * sph_w(dim, r, 0.5 * (hi + st->h[j]));
-    }
-    return g;
+static double own_squeeze(const double *F, double m, double V0, double rho0, double summed) {
+    return fmin(summed, fmax(rho0, volume_density(F, m, V0, summed)));
 }
 
 /* A bubble's stiffness under the gas law. With sph.gas_pressure = P_a it is
@@ -318,7 +282,6 @@ void sph_pressure_gas_law(hearth_scene *s) {
     const int n = c.n, *mat = c.mat;
     const double *T = c.T, *F = c.F, *V0 = pcold(&s->ps, PC_VOL0);
     if (o->renormalised_density) renormalise(s, &c, st->vr); /* vr: free once the sum stands (sort_and_list) */
-    else if (o->own_squeeze) own_volumes(&c, st->perm);    /* own_overlap's V, as renormalise leaves it */
     const double w = st->water_per_gas = sph_dough_water_share(s);
     for (int i = 0; i < n; i++) {
         const double rho0 = st->rho0[i], bub = s->mats.slot[mat[i]].core[CP_BUBBLE];
@@ -327,7 +290,7 @@ void sph_pressure_gas_law(hearth_scene *s) {
         const double rho = o->continuity_density     ? volume_density(F + 9 * i, c.m[i], V0[i], st->rho[i])
                            : o->renormalised_density ? st->vr[i]
                                                      : st->rho[i];
-        const double rt = o->own_squeeze ? own_squeeze(F + 9 * i, c.m[i], V0[i], rho0, rho, own_overlap(st, &c, st->perm, i)) : rho;
+        const double rt = o->own_squeeze ? own_squeeze(F + 9 * i, c.m[i], V0[i], rho0, rho) : rho;
         const double tait = st->B[i] * (pow(rt / rho0, o->gamma) - 1); /* eq. 3.17 */
         const double Bg = bub > 0 && T ? sph_gas_modulus(o, st->B[i], T[i]) : st->B[i];
         const double gas = Bg * (rho / rr - 1);
