@@ -185,41 +185,8 @@ static void renormalise(hearth_scene *s, const sph_cols *c, double *rho_out) {
  * and that tension is what holds the films (docs/validation.md "The films'
  * tension"; the own volume alone lets them tear). Where both read a squeeze
  * the smaller counts. A non-positive det F keeps the sum. */
-__attribute__((unused)) static double own_squeeze(const double *F, double m, double V0, double rho0, double summed) {
+static double own_squeeze(const double *F, double m, double V0, double rho0, double summed) {
     return fmin(summed, fmax(rho0, volume_density(F, m, V0, summed)));
-}
-
-/* sph.own_squeeze's density: the sum over rest volumes (sort_and_list) with
- * each bubble's volume the smaller of its rest volume and its own, V0 det F:
- *   rho_h,i = (m_i / V_i) sum_j min(V_j, V0_j det F_j) W_ij  (bubbles; dough V_j),
- * V the rest volumes, into out. A bubble the set crumb holds below its gas
- * volume then lends its neighbours no volume it does not fill, while two
- * particles closing on each other read the squeeze the sum reads. */
-static double held_volume(const hearth_scene *s, const sph_cols *c, const double *vr, int j) {
-    if (!(s->mats.slot[c->mat[j]].core[CP_BUBBLE] > 0)) return vr[j];
-    const double *F = c->F + 9 * j;
-    const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
-                     F[2] * (F[3] * F[7] - F[4] * F[6]);
-    return J > 0 ? fmin(vr[j], c->V0[j] * J) : vr[j];
-}
-
-static void held_sum(hearth_scene *s, const sph_cols *c, double *out) {
-    struct sph_state *st = s->sph;
-    const int n = c->n, dim = c->dim;
-    const double *vr = st->vr;
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        const double hi = st->h[i];
-        double g = held_volume(s, c, vr, i) * sph_w(dim, 0, hi);
-        for (int k = st->nl.off[i]; k < st->nl.off[i + 1]; k++) {
-            const int j = st->nl.j[k];
-            double d[3];
-            sph_disp(&st->cells, c->x + 3 * i, c->x + 3 * j, d);
-            const double r = sqrt(d[0] * d[0] + d[1] * d[1] + (dim == 3 ? d[2] * d[2] : 0));
-            g += held_volume(s, c, vr, j) * sph_w(dim, r, 0.5 * (hi + st->h[j]));
-        }
-        out[i] = c->m[i] / vr[i] * g;
-    }
 }
 
 /* A bubble's stiffness under the gas law. With sph.gas_pressure = P_a it is
@@ -314,7 +281,6 @@ void sph_pressure_gas_law(hearth_scene *s) {
     const sph_cols c = sph_cols_of(s);
     const int n = c.n, *mat = c.mat;
     const double *T = c.T, *F = c.F, *V0 = pcold(&s->ps, PC_VOL0);
-    if (o->own_squeeze) held_sum(s, &c, st->prs); /* before renormalise takes vr; prs is written below */
     if (o->renormalised_density) renormalise(s, &c, st->vr); /* vr: free once the sum stands (sort_and_list) */
     const double w = st->water_per_gas = sph_dough_water_share(s);
     for (int i = 0; i < n; i++) {
@@ -324,8 +290,7 @@ void sph_pressure_gas_law(hearth_scene *s) {
         const double rho = o->continuity_density     ? volume_density(F + 9 * i, c.m[i], V0[i], st->rho[i])
                            : o->renormalised_density ? st->vr[i]
                                                      : st->rho[i];
-        /* the held sum renormalised as the sum was (rho over st->rho is 1 / gamma_i, or 1) */
-        const double rt = o->own_squeeze ? fmin(rho, fmax(rho0, st->prs[i] * (rho / st->rho[i]))) : rho;
+        const double rt = o->own_squeeze ? own_squeeze(F + 9 * i, c.m[i], V0[i], rho0, rho) : rho;
         const double tait = st->B[i] * (pow(rt / rho0, o->gamma) - 1); /* eq. 3.17 */
         const double Bg = bub > 0 && T ? sph_gas_modulus(o, st->B[i], T[i]) : st->B[i];
         const double gas = Bg * (rho / rr - 1);
