@@ -5,6 +5,8 @@
 -- bread.csv, read by tests/bread_claims.py) with h.recipes.tray's contact changed by:
 --   tray_mode      "separate" (bread.lua's tray, h.recipes.tray's default), "slip", "sticky"
 --   tray_friction  the tray's friction coefficient (default 0.4, h.recipes.tray's)
+--   grid_shift     the box's floor moved down by this much (m, [0, 0.02); default 0), so the grid's node rows
+--                  fall elsewhere against the tray (y = 0.02; docs/validation.md, "The loaf's foot on its tray")
 --   hearth run scripts/validation/crack_tray.lua --quiet [--set dx=0.004] [--set tray_friction=0] ...
 -- from the source root (or --set bread=PATH to bread.lua).
 -- Besides bread.csv's row, every frame prints the plain loaf's base: the width of its
@@ -14,7 +16,10 @@
 -- core/sim/solver/mpm_touch.c), and where its cracked particles (damage 1) are.
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth = 0.02, slit_width = 0.01, only = 1,
-  tray_mode = "separate", tray_friction = 0.4, bread = "scripts/scenes/baking/bread.lua" }
+  tray_mode = "separate", tray_friction = 0.4, grid_shift = 0, bread = "scripts/scenes/baking/bread.lua" }
+if not (P.grid_shift >= 0 and P.grid_shift < 0.02) then
+  error(("crack_tray.lua: grid_shift %g m: expected [0, 0.02) (the box's floor moved down, below the tray)"):format(P.grid_shift))
+end
 
 -- bread.lua's own h.params sees the values parsed here (it declares a subset of these names)
 h.pass_params(P)
@@ -28,6 +33,7 @@ end
 
 local scene = h.scene
 h.scene = function(o)
+  if P.grid_shift ~= 0 then o.box[1][2] = o.box[1][2] - P.grid_shift end
   local s = scene(o)
   local methods = getmetatable(s).__index
   local run = methods.run

@@ -23,9 +23,16 @@
 -- start, by id): its growth is the stretch the rise puts on the crust. The dough carries water (lua/hearth/dough.lua, WATER:
 -- rates x600, so 2.5 s stand for a 25 minute bake); at the end it writes
 -- damage.png and browning.png.
+-- The tray: tray = "separate" (default; a greased tray or baking paper: the foot may slide, friction 0.4, and
+-- lift) or "sticky" (a bare tray the dough sticks to: the contact holds the foot where it touched, in tension
+-- too), as loaf_physical.lua's (docs/validation.md, "The loaf's foot on its tray (#18, helper loaffoot)").
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth = 0.02, slit_width = 0.01, only = 0,
-  dx_min_3d = 0.008 }
+  dx_min_3d = 0.008, tray = "separate" }
+if P.tray ~= "separate" and P.tray ~= "sticky" then
+  error(("bread.lua: tray %q: expected \"separate\" (friction 0.4) or \"sticky\" (the foot held where it touched)")
+    :format(tostring(P.tray)))
+end
 local d3 = P.dim == 3
 -- 3D keeps dx at least dx_min_3d (8 mm: a loaf in minutes); lower it to measure finer (docs/validation.md,
 -- "bread.lua in 3D"); the validation wrappers that hand this scene their own params (crack_heat.lua) leave it unset
@@ -40,7 +47,7 @@ local zc, ZW = 0.06, 0.06 -- 3D: loaves are extruded along z over +-ZW/2
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(3 * SPACING, 0.14, 0.12) },
   oven = { temperature = oven.temperature, beta = oven.beta }, name = "bread", browning = true,
   browning_scale = oven.water_time_scale }
-h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta })
+h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta, mode = P.tray })
 local dough = h.material("cam_clay_dough", h.library.paper.bread)
 
 -- a loaf: a box with a round top (2D), extruded in 3D; slits are thin boxes cut from the top
