@@ -226,8 +226,11 @@ TEST(sph_own_squeeze_dough_beside_held_bubble) {
  * renormalised sum, tension, no gravity, B 1.4e4) set expanding, then
  * compressing, v = rate (x - c), 8 steps: every particle's pressure with and
  * without the option; *in the inside's mean p / B, with and without. */
-static double block_pressure(int own, double rate, double *in) {
-    const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.08, 0}, c[2] = {0.05, 0.04};
+/* The dough block both tests below use: 40 x 24 mm at dx 2 mm in a 100 x 80 mm
+ * box, the renormalised sum, tension, the gas law, no gravity; own_squeeze
+ * as asked. NULL when the scene or the block cannot be made. */
+static hearth_scene *dough_block(int own) {
+    const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.08, 0};
     hearth_scene_def d = sph_def(2, dx, lo, hi);
     d.gravity[1] = 0;
     d.sph.tension = 1;
@@ -235,13 +238,21 @@ static double block_pressure(int own, double rate, double *in) {
     d.sph.renormalised_density = 1;
     d.sph.own_squeeze = own;
     hearth_scene *s = hearth_scene_create(&d, NULL);
-    *in = NAN;
-    if (!s) return NAN;
+    if (!s) return NULL;
     const int m = newtonian(s, 1100, 1e5, 2.0);
     const double blo[3] = {0.03, 0.028, 0}, bhi[3] = {0.07, 0.052, 0};
+    if (m >= 0 && sph_box(s, m, blo, bhi, 0, 26) >= 0) return s;
+    hearth_scene_destroy(s);
+    return NULL;
+}
+
+static double block_pressure(int own, double rate, double *in) {
+    const double c[2] = {0.05, 0.04};
+    hearth_scene *s = dough_block(own);
+    *in = NAN;
     double sum = NAN;
     hearth_error err;
-    if (m >= 0 && sph_box(s, m, blo, bhi, 0, 26) >= 0) {
+    if (s) {
         double *v = pcold(&s->ps, PC_V);
         const double *x = pcold(&s->ps, PC_X);
         for (int i = 0; i < s->ps.n; i++) v[3 * i] = rate * (x[3 * i] - c[0]), v[3 * i + 1] = rate * (x[3 * i + 1] - c[1]);
@@ -287,20 +298,11 @@ TEST(sph_own_squeeze_keeps_stretch_and_true_squeeze) {
  * pair's pressure at least half the sum's, since no volume the dough can hold
  * brings two particles within 0.4 spacings and the sum is what sees it. */
 static void pair_closed(int own, double *p, double *apart) {
-    const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.08, 0};
-    hearth_scene_def d = sph_def(2, dx, lo, hi);
-    d.gravity[1] = 0;
-    d.sph.tension = 1;
-    d.sph.gas_law = 1;
-    d.sph.renormalised_density = 1;
-    d.sph.own_squeeze = own;
+    const double dx = 0.002;
     *p = *apart = NAN;
-    hearth_scene *s = hearth_scene_create(&d, NULL);
-    if (!s) return;
-    const int m = newtonian(s, 1100, 1e5, 2.0);
-    const double blo[3] = {0.03, 0.028, 0}, bhi[3] = {0.07, 0.052, 0};
+    hearth_scene *s = dough_block(own);
     hearth_error err;
-    if (m >= 0 && sph_box(s, m, blo, bhi, 0, 26) >= 0) {
+    if (s) {
         double *x = pcold(&s->ps, PC_X);
         const int *id = pcoli(&s->ps, PC_ID);
         int a = -1, b = -1; /* the particle nearest the middle and its right-hand neighbour */
