@@ -7,7 +7,7 @@
 -- stands (tests/contact/drop.lua), so every offset starts from the same body.
 -- mode = "slide" instead: the block (no body force) is given a uniform velocity u along x and slides to a stop on
 -- the tray (a rigid block's Coulomb stop distance is u^2 / (2 mu g)).
--- Prints one line at the end:
+-- Prints the state's hash, then one line at the end:
 --   result base=<the base's edge particles' outward move, mm> top=<the top edge's, mm> mid=<the mid-height edge's>
 --          lowest=<the lowest particle's height over the tray, dx> (slide: slid=<the mean x move, mm> v=<mean vx>)
 local h = require "hearth"
@@ -58,5 +58,6 @@ for i = 1, r.n do
   end
 end
 local function mm(k) return cnt[k] > 0 and 1000 * sum[k] / cnt[k] or 0 / 0 end
+print("hash " .. s:hash())
 print(("result base=%.4f top=%.4f mid=%.4f slid=%.4f v=%.5f lowest=%.4f"):format(mm("base"), mm("top"), mm("mid"),
   1000 * slid / r.n, vx / r.n, (low - TRAY) / P.dx))
