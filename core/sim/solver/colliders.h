@@ -107,6 +107,10 @@ void collider_velocity_at(const collider *c, const double x[3], double v[3]);
 /// (tests/contact/spread.lua; docs/validation.md, "The separate tray between
 /// node rows"). Under a cell by far more than COLLIDER_ROW_TOL, so a face on
 /// a row (the row above a cell out) holds what it held before, bit for bit.
+/// Rejected: 0.3 (the sticky band) mends f >= 0.7 only; 0.5 leaves f = 0.25 as
+/// it was and makes f = 0.5 (bread.lua's 3D tray at 8 mm) hang on the SDF's
+/// last bit; holding the row a cell above a face on a row as well would move
+/// every scene whose tray sits on a row.
 #define SEPARATE_NEAR_BAND 0.99
 
 /// How far outside its face (cells) a collider holds grid nodes: STICKY_NEAR_BAND
