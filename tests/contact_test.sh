@@ -104,6 +104,56 @@ sys.exit(0 if ok else 1)
 PY
     done
     ;;
+separate_tray_slide_stops_between_rows | separate_tray_spread_same_between_rows)
+    # The separate tray between node rows (#18, helper touchrows; tests/contact/spread.lua): the tray `off` cells
+    # above the node row under it, off 0 (a row on the tray), 0.25, 0.5, 0.75, at 5 and 2.5 mm. Bars:
+    #  - slide: a 6 x 2 cm elastic block given 0.2 m/s along the tray (friction 0.4) stops, its mean move within 5%
+    #    of a rigid block's Coulomb stop u^2 / (2 mu g) = 5.097 mm at every offset (the reference is not the code's;
+    #    5%: the on-row runs' own error is 1.5%). Before SEPARATE_NEAR_BAND: 5.76 mm (+13%) at off 0.5, 6.00 (+18%)
+    #    at off 0.75 (2.5 mm).
+    #  - spread: the block pushed outward by a body force (A = 200 s^-2) comes to rest; its base's edge moves out
+    #    by the on-row run's amount within 0.2 of the top edge's on-row move (~0.1 mm: the foot's hold must not
+    #    depend on the offset by more than a fifth of what the block spreads) at each dx, and the lowest particle
+    #    rests within 0.05 dx of its half-spacing (dx / 8 at 16 particles a cell; the drops' bar above). Before
+    #    SEPARATE_NEAR_BAND the base moved 0.018 mm on a row and 0.136 at off 0.75 (5 mm), the foot sank to 0.084 dx.
+    #  Both bars were set after the defect's runs on main (docs/validation.md says which numbers came first).
+    mode=spread; [ "$case_name" = separate_tray_slide_stops_between_rows ] && mode=slide
+    : >all.txt
+    for dx in 0.005 0.0025; do
+        for off in 0 0.25 0.5 0.75; do
+            extra="--set A=200"; [ $mode = slide ] && extra="--set mode=slide --set t=0.15"
+            "$hearth" run "$root/tests/contact/spread.lua" --quiet --set dx=$dx --set off=$off $extra >out.txt 2>err.txt ||
+                { echo "FAIL: spread.lua dx=$dx off=$off: exit $?: $(cat err.txt)" >&2; exit 1; }
+            echo "dx=$dx off=$off $(tail -1 out.txt)" >>all.txt
+        done
+    done
+    python3 - all.txt $mode <<'PY' || bad=1
+import sys
+mode, ok = sys.argv[2], True
+rows = []
+for line in open(sys.argv[1]):
+    a, b = line.split("result")
+    r = dict(kv.split("=") for kv in (a + b).split())
+    rows.append({k: float(v) for k, v in r.items()})
+stop = 0.2 ** 2 / (2 * 0.4 * 9.81) * 1000
+for dx in sorted({r["dx"] for r in rows}, reverse=True):
+    rs = [r for r in rows if r["dx"] == dx]
+    on = next(r for r in rs if r["off"] == 0)
+    for r in rs:
+        if mode == "slide":
+            good = abs(r["slid"] / stop - 1) <= 0.05
+            print(f"dx {dx * 1000:g} mm, tray {r['off']:.2f} dx above a row: slid {r['slid']:.3f} mm "
+                  f"(Coulomb stop {stop:.3f}, need within 5%: {100 * (r['slid'] / stop - 1):+.1f}%): {'ok' if good else 'FAIL'}")
+        else:
+            dev = abs(r["base"] - on["base"])
+            good = dev <= 0.2 * on["top"] and abs(r["lowest"] - 0.125) <= 0.05
+            print(f"dx {dx * 1000:g} mm, tray {r['off']:.2f} dx above a row: base edge out {r['base']:.4f} mm (on a row "
+                  f"{on['base']:.4f}; off by {dev:.4f}, need <= {0.2 * on['top']:.4f}), top {r['top']:.4f} mm, lowest "
+                  f"{r['lowest']:.4f} dx (need 0.075..0.175): {'ok' if good else 'FAIL'}")
+        ok = ok and good
+sys.exit(0 if ok else 1)
+PY
+    ;;
 *) echo "unknown case $case_name" >&2; exit 1 ;;
 esac
 [ $bad -eq 0 ] || { echo "FAIL: $case_name (numbers above)" >&2; exit 1; }
