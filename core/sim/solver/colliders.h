@@ -96,29 +96,11 @@ void collider_velocity_at(const collider *c, const double x[3], double v[3]);
 /// clamped worse than a free one.
 #define STICKY_NEAR_BAND 0.3
 
-/// A separate face also holds (where the body touches it, mpm_touch.c) the nodes
-/// up to this many cells outside it: the first node row at or above a face
-/// that lies between rows. Holding only the rows on or inside the face, a face
-/// f dx above the row under it held a foot particle resting h_p over it
-/// through that row's B-spline weight alone, 0.73 on a row down to 0.20 at
-/// f = 0.75 (2D, h_p = dx / 8), and the free row above carried the rest: an
-/// elastic block's base spread 0.018 mm on a row and 0.136 mm at f = 0.75,
-/// a block slid 18% past its Coulomb stop, and its foot sank 0.04 dx
-/// (tests/contact/spread.lua; docs/validation.md, "The separate tray between
-/// node rows"). Under a cell by far more than COLLIDER_ROW_TOL, so a face on
-/// a row (the row above a cell out) holds what it held before, bit for bit.
-/// Rejected: 0.3 (the sticky band) mends f >= 0.7 only; 0.5 leaves f = 0.25 as
-/// it was and makes f = 0.5 (bread.lua's 3D tray at 8 mm) hang on the SDF's
-/// last bit; holding the row a cell above a face on a row as well would move
-/// every scene whose tray sits on a row.
-#define SEPARATE_NEAR_BAND 0.99
-
 /// How far outside its face (cells) a collider holds grid nodes: STICKY_NEAR_BAND
-/// for a sticky face, SEPARATE_NEAR_BAND for a separate one, COLLIDER_ROW_TOL (on
-/// the face) for the others. The grid update (mpm.c) and the sticky ghosts
-/// (mpm_sticky.c) must agree on it.
+/// for a sticky face, COLLIDER_ROW_TOL (on the face) for the others. The grid
+/// update (mpm.c) and the sticky ghosts (mpm_sticky.c) must agree on it.
 static inline double collider_hold_band(const collider *c) {
-    return c->mode == HEARTH_STICKY ? STICKY_NEAR_BAND : c->mode == HEARTH_SEPARATE ? SEPARATE_NEAR_BAND : COLLIDER_ROW_TOL;
+    return c->mode == HEARTH_STICKY ? STICKY_NEAR_BAND : COLLIDER_ROW_TOL;
 }
 
 /// Project velocity v (in place) of a grid node touching a boundary with outward

@@ -473,9 +473,7 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
              * keeps the stress continuous instead.) A sticky face also holds
              * those within STICKY_NEAR_BAND cells outside it, which
              * mpm_sticky_ghosts_block then gives the velocity linear from the
-             * face (colliders.h); a separate face those within
-             * SEPARATE_NEAR_BAND (the first row at or above a face between
-             * rows), where the body touches it, as on its face. */
+             * face (colliders.h). */
             const double band = collider_hold_band(&s->cols[c]) * g->dx;
             if (!collider_near(&s->cols[c], xi)) continue;
             const double phi = collider_sdf(&s->cols[c], xi, n);
