@@ -472,75 +472,57 @@ bread3d_ends_held_loaf_rises | bread3d_ends_held_loaf_rises_fine)
 # min of wall time under load; 6 mm: 16-41 min: campaign. Every bar met is a pass; when the volume holds and the
 # height does not, the case prints the numbers and the cause found (docs/validation.md, "bread.lua's 3D loaf: its ends
 # and its yield") and exits 77; a volume short of its bars is a failure.
-bread3d_round_loaf_rises | bread3d_round_loaf_rises_fine | bread3d_round_scored_loaf_rises | bread3d_round_scored_loaf_rises_fine)
-    dx=0.008 only=1 col=plain
+# The loaf's foot on its tray (#18, helper loaffoot): *_sticky_tray_* is the plain rounded loaf on a sticky tray
+# (bread.lua --set tray=sticky: the foot held where it touched, as on an unlined steel tray the dough has wetted),
+# against the same bars. On bread.lua's separate tray (friction 0.4) the same loaf's foot slides out 10 mm a side and
+# it ends 3.1 / 1.9 mm low; held, it meets every bar at 8 mm (with the scene's grid and with a node row on the tray).
+# 8 mm: 51-90 s of wall time; 6 mm: 4.5-5.5 min: campaign.
+bread3d_round_loaf_rises | bread3d_round_loaf_rises_fine | bread3d_round_scored_loaf_rises | bread3d_round_scored_loaf_rises_fine | \
+bread3d_round_loaf_sticky_tray_rises | bread3d_round_loaf_sticky_tray_rises_fine)
+    dx=0.008 only=1 col=plain tray=separate
     case $case_name in *_fine) dx=0.006 ;; esac
     case $case_name in *scored*) only=2 col=one_slit ;; esac
+    case $case_name in *sticky_tray*) tray=sticky ;; esac
     "$hearth" run "$root/scripts/validation/bread3d.lua" --quiet --set bread="$scenes/bread.lua" --set only=$only \
-        --set ends=round --set box_z=0.24 --set dx=$dx --set dx_min_3d=$dx >out.txt 2>err.txt ||
+        --set ends=round --set box_z=0.24 --set tray=$tray --set dx=$dx --set dx_min_3d=$dx >out.txt 2>err.txt ||
         fail "bread3d.lua: exit $?: $(cat err.txt)"
     python3 "$root/tests/bread_claims.py" rises hearth-out/bread3d/bread.csv $dx $col 3 && exit 0
-    python3 - hearth-out/bread3d/bread.csv $col <<'PY'
+    python3 - hearth-out/bread3d/bread.csv $col $tray <<'PY'
 import csv, sys
 v = [float(r["area_" + sys.argv[2]]) for r in csv.DictReader(open(sys.argv[1]))]
 if max(v) / v[0] < 1.15 or v[-1] / v[0] < 1.10:
     sys.exit(1)
-print("EXPECTED FAILURE: the rounded loaf's volume grows as the bars ask (plain 8 mm +27.2% / +22.9%, 6 mm +24.2% "
-      "/ +21.6%; one slit 8 mm +25.1% / +21.1%) but it ends below its raw height (plain 71.6 -> 68.5 mm at 8 mm, 72.0 "
-      "-> 70.1 at 6 mm; one slit 67.6 -> 67.4 at 8 mm, its slit open 7.8 -> 15.0 mm; at 6 mm the one-slit loaf "
-      "meets every bar: 66.6 -> 67.7 mm, slit 6.0 -> 14.4 mm), because its free ends leave it out of plane strain: "
-      "the gas stretches its middle along z as much as across (the plain loaf's middle 11.0% longer at 8 mm, 8.3% at "
-      "6 mm; elastic strain along z 0.119, across 0.136 and up 0.041 at 8 mm) where 2D and a loaf held at its ends "
-      "along z put 1 + nu = 1.3 times more of the same gas into the cross-section; its middle section gains +13.0% "
-      "(8 mm) and +14.3% (6 mm) against the held loaf's +29.4%. "
-      "On a sticky tray (bread.lua --set tray=sticky), its foot held instead of sliding out 10 mm a side, the plain "
-      "rounded loaf meets every bar at 8 mm (71.6 -> 72.5 mm) and ends 72.0 -> 71.9 mm at 6 mm "
-      "(bread3d_round_loaf_sticky_tray_rises; docs/validation.md, 'The loaf's foot on its tray'). A separate tray "
-      "that also held the first node row above a face between rows (SEPARATE_NEAR_BAND, helper touchrows; tried and "
-      "reverted, it moved the stability matrix) stood the plain rounded loaf at its raw height at 8 and 6 mm "
-      "(71.6 -> 71.6, 72.0 -> 72.0 mm, nothing to spare) and the one-slit one 67.6 -> 70.7 mm at 8 mm, slit 7.8 -> "
-      "16.2 mm (docs/validation.md, 'The separate tray between node rows'). "
-      "docs/validation.md, 'bread.lua's 3D loaf: its ends and its yield'")
+if sys.argv[3] == "separate":
+    print("EXPECTED FAILURE: the rounded loaf's volume grows as the bars ask (plain 8 mm +27.2% / +22.9%, 6 mm +24.2% "
+          "/ +21.6%; one slit 8 mm +25.1% / +21.1%) but it ends below its raw height (plain 71.6 -> 68.5 mm at 8 mm, 72.0 "
+          "-> 70.1 at 6 mm; one slit 67.6 -> 67.4 at 8 mm, its slit open 7.8 -> 15.0 mm; at 6 mm the one-slit loaf "
+          "meets every bar: 66.6 -> 67.7 mm, slit 6.0 -> 14.4 mm), because its free ends leave it out of plane strain: "
+          "the gas stretches its middle along z as much as across (the plain loaf's middle 11.0% longer at 8 mm, 8.3% at "
+          "6 mm; elastic strain along z 0.119, across 0.136 and up 0.041 at 8 mm) where 2D and a loaf held at its ends "
+          "along z put 1 + nu = 1.3 times more of the same gas into the cross-section; its middle section gains +13.0% "
+          "(8 mm) and +14.3% (6 mm) against the held loaf's +29.4%. "
+          "On a sticky tray (bread.lua --set tray=sticky), its foot held instead of sliding out 10 mm a side, the plain "
+          "rounded loaf meets every bar at 8 mm (71.6 -> 72.5 mm) and ends 72.0 -> 71.9 mm at 6 mm "
+          "(bread3d_round_loaf_sticky_tray_rises; docs/validation.md, 'The loaf's foot on its tray'). A separate tray "
+          "that also held the first node row above a face between rows (SEPARATE_NEAR_BAND, helper touchrows; tried and "
+          "reverted, it moved the stability matrix) stood the plain rounded loaf at its raw height at 8 and 6 mm "
+          "(71.6 -> 71.6, 72.0 -> 72.0 mm, nothing to spare) and the one-slit one 67.6 -> 70.7 mm at 8 mm, slit 7.8 -> "
+          "16.2 mm (docs/validation.md, 'The separate tray between node rows'). "
+          "docs/validation.md, 'bread.lua's 3D loaf: its ends and its yield'")
+else:
+    print("EXPECTED FAILURE: on a sticky tray the rounded loaf's volume grows as the bars ask (6 mm +22.7% / +18.9%) "
+          "and it stands 72.0 -> 71.9 mm, one probe step (0.12 mm) short of its raw height (8 mm: 71.6 -> 72.5 mm, a "
+          "pass), having stood 72.5 mm at 2.25 s, because the held foot's gain depends on where the grid's rows fall "
+          "against the tray and its middle is still out of plane strain: with the scene's rows 2 mm under the tray the "
+          "hold gives 1.8 mm (separate 72.0 -> 70.1 mm), with a row on the tray (bread3d.lua --set grid_shift=0.004) "
+          "it ends 72.1 -> 73.0 mm (separate 71.3); above the held foot (its edge 1.8 mm out against 9.1 on the "
+          "separate tray) the gas still stretches the middle 6.6% along z (separate 8.3%). "
+          "docs/validation.md, 'The loaf's foot on its tray (#18, helper loaffoot)'")
 sys.exit(77)
 PY
     rc=$?
     [ $rc -eq 77 ] && exit 77
-    fail "$case_name: the rounded loaf's volume does not grow (numbers above)"
-    ;;
-# The loaf's foot on its tray (#18, helper loaffoot): bread.lua's plain loaf with rounded ends (as bread3d_round_loaf_rises)
-# on a sticky tray (bread.lua --set tray=sticky: the foot held where it touched, as on an unlined steel tray the dough
-# has wetted), against the same 2D bars set before the run (tests/bread_claims.py rises: volume +15% at the peak, +10%
-# at the end, at least as tall as raw), at the scene's 3D dx (8 mm) and one finer (6 mm, _fine). On bread.lua's
-# separate tray (friction 0.4) the same loaf's foot slides out 10 mm a side and it ends 3.1 / 1.9 mm low; held, it
-# meets every bar at 8 mm (with the scene's grid and with a node row on the tray). 8 mm: 51-90 s of wall time; 6 mm:
-# 4.5-5.5 min: campaign. Every bar met is a pass; when the
-# volume holds and the height does not, the case prints the numbers and the cause and exits 77; a volume short of its
-# bars is a failure.
-bread3d_round_loaf_sticky_tray_rises | bread3d_round_loaf_sticky_tray_rises_fine)
-    dx=0.008
-    [ "$case_name" = bread3d_round_loaf_sticky_tray_rises_fine ] && dx=0.006
-    "$hearth" run "$root/scripts/validation/bread3d.lua" --quiet --set bread="$scenes/bread.lua" --set only=1 \
-        --set ends=round --set box_z=0.24 --set tray=sticky --set dx=$dx --set dx_min_3d=$dx >out.txt 2>err.txt ||
-        fail "bread3d.lua: exit $?: $(cat err.txt)"
-    python3 "$root/tests/bread_claims.py" rises hearth-out/bread3d/bread.csv $dx plain 3 && exit 0
-    python3 - hearth-out/bread3d/bread.csv <<'PY'
-import csv, sys
-v = [float(r["area_plain"]) for r in csv.DictReader(open(sys.argv[1]))]
-if max(v) / v[0] < 1.15 or v[-1] / v[0] < 1.10:
-    sys.exit(1)
-print("EXPECTED FAILURE: on a sticky tray the rounded loaf's volume grows as the bars ask (6 mm +22.7% / +18.9%) "
-      "and it stands 72.0 -> 71.9 mm, one probe step (0.12 mm) short of its raw height (8 mm: 71.6 -> 72.5 mm, a "
-      "pass), having stood 72.5 mm at 2.25 s, because the held foot's gain depends on where the grid's rows fall "
-      "against the tray and its middle is still out of plane strain: with the scene's rows 2 mm under the tray the "
-      "hold gives 1.8 mm (separate 72.0 -> 70.1 mm), with a row on the tray (bread3d.lua --set grid_shift=0.004) "
-      "it ends 72.1 -> 73.0 mm (separate 71.3); above the held foot (its edge 1.8 mm out against 9.1 on the "
-      "separate tray) the gas still stretches the middle 6.6% along z (separate 8.3%). "
-      "docs/validation.md, 'The loaf's foot on its tray (#18, helper loaffoot)'")
-sys.exit(77)
-PY
-    rc=$?
-    [ $rc -eq 77 ] && exit 77
-    fail "$case_name: the rounded loaf's volume does not grow on a sticky tray (numbers above)"
+    fail "$case_name: the rounded loaf's volume does not grow on a $tray tray (numbers above)"
     ;;
 # bread.lua's tray (helper loaffoot) takes "separate" or "sticky"; another value is refused with a message naming
 # the parameter and what it takes, before any step.

@@ -17,10 +17,10 @@
 --    ends and its yield": the check of plane strain's (1 + nu)).
 --  * beta_scale: a factor on the oven's heat transfer coefficient (oven.beta, Ding et al. eq. 9's Robin boundary;
 --    the tray's is kept), to heat a loaf with free ends as slowly as one with held ends.
---  * tray_mode, tray_friction: h.recipes.tray's contact (its defaults "separate" and 0.4 unless set; "slip",
---    "sticky", "grip" the other modes, docs/lua.md): does the tray's hold on the loaf's foot decide how tall the 3D
---    loaf stands? (docs/validation.md, "The loaf's foot on its tray (#18, helper loaffoot)"). bread.lua's own
---    `tray` ("separate" or "sticky") is passed through as well; tray_mode, when set, overrides it.
+--  * tray_mode, tray_friction: h.recipes.tray's contact ("separate", "slip", "sticky" or "grip", docs/lua.md;
+--    friction 0.4 unless set): does the tray's hold on the loaf's foot decide how tall the 3D loaf stands?
+--    (docs/validation.md, "The loaf's foot on its tray (#18, helper loaffoot)"). bread.lua's own `tray` ("separate"
+--    or "sticky") is passed through as well; tray_mode, when set, overrides it (its default "" leaves bread.lua's).
 --  * grid_shift: the box's floor moved down by this much (m, [0, 0.02); the scene's 0), so the grid's node rows fall
 --    elsewhere against the tray (y = 0.02): does what a tray holds depend on where its rows fall?
 --  * pictures of the raw and the baked loaf, cut through its middle: across it
@@ -31,7 +31,7 @@
 local h = require "hearth"
 local P = h.params { dim = 3, dx = 0.008, until_t = 2.5, frames = 10, slit_depth = 0.02, slit_width = 0.01, only = 1,
   dx_min_3d = 0.008, zw = 0.06, box_z = 0.12, beta_scale = 1, ends = "cut", nu = 0.3, field = "J",
-  tray = "separate", tray_mode = "separate", tray_friction = 0.4, grid_shift = 0,
+  tray = "separate", tray_mode = "", tray_friction = 0.4, grid_shift = 0,
   bread = "scripts/scenes/baking/bread.lua" }
 if P.dim ~= 3 then error(("bread3d.lua: dim %d: expected 3 (bread.lua itself runs 2D)"):format(P.dim)) end
 if not (P.box_z >= 0.12 and P.box_z <= 0.6) then error(("bread3d.lua: box_z %g m: expected [0.12, 0.6]"):format(P.box_z)) end
@@ -45,9 +45,10 @@ if P.ends == "round" and P.zw + 0.08 > P.box_z - 0.02 then -- 0.08: bread.lua's 
 end
 if not (P.nu >= 0 and P.nu < 0.5) then error(("bread3d.lua: nu %g: expected [0, 0.5)"):format(P.nu)) end
 if not (P.beta_scale > 0 and P.beta_scale <= 10) then error(("bread3d.lua: beta_scale %g: expected (0, 10]"):format(P.beta_scale)) end
-local TRAY_MODES = { separate = true, slip = true, sticky = true, grip = true }
+local TRAY_MODES = { [""] = true, separate = true, slip = true, sticky = true, grip = true }
 if not TRAY_MODES[P.tray_mode] then
-  error(("bread3d.lua: tray_mode %q: expected \"separate\", \"slip\", \"sticky\" or \"grip\""):format(P.tray_mode))
+  error(("bread3d.lua: tray_mode %q: expected \"separate\", \"slip\", \"sticky\" or \"grip\" (or \"\": bread.lua's tray)")
+    :format(P.tray_mode))
 end
 if not (P.tray_friction >= 0 and P.tray_friction <= 100) then
   error(("bread3d.lua: tray_friction %g: expected [0, 100] (Coulomb coefficient)"):format(P.tray_friction))
@@ -57,11 +58,12 @@ if not (P.grid_shift >= 0 and P.grid_shift < 0.02) then
 end
 if P.only < 1 or P.only > 3 then error(("bread3d.lua: only %d: expected 1, 2 or 3 (one loaf)"):format(P.only)) end
 
-if P.tray_mode ~= "separate" or P.tray_friction ~= 0.4 then -- the defaults leave h.recipes.tray untouched
+if P.tray_mode ~= "" or P.tray_friction ~= 0.4 then -- the defaults leave h.recipes.tray untouched
   local tray = h.recipes.tray
   h.recipes.tray = function(s, y, o)
     o = o or {}
-    o.mode, o.friction = P.tray_mode, P.tray_friction
+    if P.tray_mode ~= "" then o.mode = P.tray_mode end -- else bread.lua's own `tray`
+    o.friction = P.tray_friction
     return tray(s, y, o)
   end
 end
