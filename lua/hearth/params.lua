@@ -54,7 +54,8 @@ function h.choice(t, ...)
       error(('h.choice: %s is not a word: the default comes first, then word = "what it means" (a list '
         .. 'holds one default)'):format(tostring(k)), 2)
     elseif type(v) ~= "string" or v == "" then
-      error(('h.choice: word %s needs a short description (a non-empty string), got %s'):format(q(k), tostring(v)), 2)
+      error(('h.choice: word %s needs a short description (a non-empty string), got %s'):format(q(k),
+        type(v) == "string" and q(v) or tostring(v)), 2)
     elseif k:find("[,%s=]") then
       error(('h.choice: word %s holds a comma, a space or =, which --set name=word cannot give'):format(q(k)), 2)
     else
