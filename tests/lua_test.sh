@@ -484,6 +484,7 @@ params_choice_declaration_errors)
         "shared words not a table"
     has out.txt 'a word twice: '"$scenes"'/choice_errors.lua:14: h.choice(default, words, ...): word "slip" given twice' \
         "a word twice"
+    has out.txt "no default: $scenes/choice_errors.lua:15: h.choice: the default comes first" "no default"
     has out.txt "shared and own: accepted" "shared words merged with the scene's own"
     ;;
 run_params_lists_words)

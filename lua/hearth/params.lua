@@ -47,12 +47,15 @@ function h.choice(t, ...)
     error('h.choice: expected {"default", word = "what it means", ...} or ("default", {word = "what it means", ...}, '
       .. '...)', 2)
   end
+  if t[1] == nil then
+    error('h.choice: the default comes first: h.choice{"default", word = "what it means", ...}', 2)
+  end
   local words, n = {}, 0
   for k, v in pairs(t) do
     if k == 1 then -- the default, checked by h.params, where the parameter's name is known
     elseif type(k) ~= "string" then
-      error(('h.choice: %s is not a word: the default comes first, then word = "what it means" (a list '
-        .. 'holds one default)'):format(tostring(k)), 2)
+      error(('h.choice: %s is not a word: one default comes first, then word = "what it means" pairs')
+        :format(tostring(k)), 2)
     elseif type(v) ~= "string" or v == "" then
       error(('h.choice: word %s needs a short description (a non-empty string), got %s'):format(q(k),
         type(v) == "string" and q(v) or tostring(v)), 2)

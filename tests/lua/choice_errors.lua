@@ -12,4 +12,5 @@ try("a word with a comma", function() local c = h.choice { "a", a = "first", ["b
 try("not a table", function() local c = h.choice "a" return c end)
 try("shared words not a table", function() local c = h.choice("a", "b") return c end)
 try("a word twice", function() local c = h.choice("slip", h.contact_words, { slip = "again" }) return c end)
+try("no default", function() local c = h.choice { a = "first", b = "second" } return c end)
 try("shared and own", function() local c = h.choice("", h.contact_words, { [""] = "the scene's own" }) return c end)
