@@ -26,7 +26,7 @@ static void run_usage(FILE *f, const char *cmd) {
                    "Lines read from a pipe run too:  echo 'print(s:stats().t)' | hearth repl scene.lua\n");
     else
         fprintf(f, "usage: hearth run SCENE.lua [--until T] [--frames N] [--vtu DIR] [--movie FILE] [--out DIR] [--set k=v]... [--threads N] [--quiet]\n"
-                   "                 [--lua-memory SIZE] [--trust]\n"
+                   "                 [--lua-memory SIZE] [--trust] [--params]\n"
                    "Runs a Lua scene headless. Outputs go to DIR (default ./hearth-out/<scene name>/).\n"
                    "  --until T    stop every s:run at sim time T (s)\n"
                    "  --frames N   N frames per run (every = span / N)\n"
@@ -34,6 +34,8 @@ static void run_usage(FILE *f, const char *cmd) {
                    "  --movie FILE every s:run's PNG frames also become the movie FILE (.mp4; 10 fps) through the\n"
                    "               ffmpeg program; without ffmpeg a notice says so and the frames stay\n"
                    "  --set k=v    override a parameter the scene declares with h.params{...}\n"
+                   "  --params     list the scene's parameters, their defaults and the words each word\n"
+                   "               parameter takes (h.choice), then stop: nothing is simulated or written\n"
                    "  --threads N  OpenMP threads (results do not depend on it)\n"
                    "  --quiet      no progress output\n"
                    "  --metric M   at the end print metric M (h.metric or built-in: height, spread,\n"
@@ -79,13 +81,14 @@ int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
         }
         if (!strcmp(s, "--quiet")) { a->quiet = 1; continue; }
         if (!strcmp(s, "--trust")) { a->trust = 1; continue; }
+        if (!strcmp(s, "--params") && !strcmp(cmd, "run")) { a->list_params = 1; continue; }
         if (s[0] == '-' && s[1] == '-') {
             static const char *const valued[] = {"--out", "--until", "--frames", "--threads", "--set", "--metric", "--metric-out", "--lua-memory", "--vtu", "--movie", NULL};
             int known = 0;
             for (int k = 0; valued[k]; k++) known |= !strcmp(s, valued[k]);
             if (!known) {
                 static const char *const all[] = {"--out", "--until", "--frames", "--threads", "--set", "--metric", "--metric-out",
-                                                  "--lua-memory", "--vtu", "--movie", "--quiet", "--trust", "--help", NULL};
+                                                  "--lua-memory", "--vtu", "--movie", "--quiet", "--trust", "--params", "--help", NULL};
                 const char *near = app_did_you_mean(s, all);
                 if (near) fprintf(stderr, "hearth %s: unknown option '%s'; did you mean '%s'? (see --help)\n", cmd, s, near);
                 else fprintf(stderr, "hearth %s: unknown option '%s' (see --help)\n", cmd, s);
@@ -194,6 +197,9 @@ static int report(lua_State *L, const char *cmd, const char *out) {
         fprintf(stderr, "hearth %s: %s\n", cmd, lua_tostring(L, -1));
         st = 2;
         break;
+    case HL_ERR_LISTED: /* --params: the listing is on stdout, and that is the whole run */
+        st = 0;
+        break;
     case HL_ERR_INTERRUPT:
         fprintf(stderr, "hearth %s: %s; the outputs written before it are whole, in %s/\n", cmd, lua_tostring(L, -1), out);
         st = 128 + hl_interrupted();
@@ -208,11 +214,11 @@ static int report(lua_State *L, const char *cmd, const char *out) {
 
 static lua_State *start(run_args *a, progress *pr, const char *cmd) {
     hearth_error err;
-    if (hearth_mkdir_p(a->out, &err)) {
+    if (!a->list_params && hearth_mkdir_p(a->out, &err)) { /* a listing writes nothing */
         fprintf(stderr, "hearth %s: %s\n", cmd, err.msg);
         return NULL;
     }
-    int stale = hearth_clean_stale_temps(a->out);
+    int stale = a->list_params ? 0 : hearth_clean_stale_temps(a->out);
     if (stale > 0)
         fprintf(stderr, "hearth %s: removed %d stale temporary file%s of killed runs from %s/\n", cmd, stale,
                 stale == 1 ? "" : "s", a->out);
@@ -225,7 +231,7 @@ static lua_State *start(run_args *a, progress *pr, const char *cmd) {
                     .frames_override = (int)a->frames, .quiet = a->quiet, .trusted = a->trust,
                     .sets = a->sets, .progress = on_progress, .progress_ud = pr,
                     .assets_dir = app_assets_dir(), .lua_memory = a->lua_memory, .vtu_dir = a->vtu,
-                    .movie = a->movie, .in_dir = a->out_shared};
+                    .movie = a->movie, .in_dir = a->out_shared, .list_params = a->list_params};
     lua_State *L = hl_new_state(&o, &err);
     if (!L) fprintf(stderr, "hearth %s: %s\n", cmd, err.msg);
     return L;
@@ -308,7 +314,7 @@ int cmd_run(int argc, char **argv) {
             lua_pop(L, 1);
         }
     }
-    if (a.metric && status < 128) status = metric_report(L, &a, status);
+    if (a.metric && status < 128 && !a.list_params) status = metric_report(L, &a, status);
     /* Under several ranks stats() is collective while slabs are kept: a rank
      * whose run failed on its own (a Lua error only it raised, between two
      * step calls) would wait in it for ranks waiting in their next step. A
@@ -317,8 +323,8 @@ int cmd_run(int argc, char **argv) {
      * main's _exit lets mpirun end the others (#21). */
     if (!(status && status != 3 && hearth_ranks_size() > 1)) run_log_scene(&rec, L);
     if (status) run_log_message(&rec, g_last_error);
-    run_log_write(&rec, status);
-    if (status == 0 && !a.quiet) fprintf(stderr, "hearth run: done; outputs in %s/\n", a.out);
+    if (!a.list_params) run_log_write(&rec, status); /* a listing writes nothing */
+    if (status == 0 && !a.quiet && !a.list_params) fprintf(stderr, "hearth run: done; outputs in %s/\n", a.out);
     hl_close_state(L);
     app_ranks_cleanup(scratch);
     app_ranks_report(&a, status, g_last_error);

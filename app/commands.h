@@ -26,6 +26,7 @@ typedef struct run_args {
     double until;
     long frames;
     int quiet, trust;
+    int list_params; /* --params: list the scene's parameters (h.params) and stop, nothing simulated or written */
     size_t lua_memory; /* --lua-memory SIZE in bytes; 0 = the default ceiling */
     const char *metric, *metric_out; /* --metric NAME [--metric-out FILE] (used by hearth trade) */
     const char *vtu;                 /* --vtu DIR: VTU frames and a .pvd from every s:run, under the output folder */

@@ -22,6 +22,7 @@ static void usage(FILE *f) {
             "  hearth run SCENE.lua [--until T] [--frames N] [--out DIR] [--set k=v]... [--threads N] [--quiet] [--trust]\n"
             "                     [--vtu DIR] [--movie FILE]  (hearth run --help lists every option)\n"
             "                                run a Lua scene headless (progress bar, PNG/VTU/CSV outputs)\n"
+            "  hearth run SCENE.lua --params the scene's parameters (--set), their defaults and words, and stop\n"
             "  hearth repl [SCENE.lua]       a plain Lua prompt with the scene loaded (reads pipes too)\n"
             "  hearth plugins                list material plugins and their parameters\n"
             "  hearth plugin check [--timeout S] FILE.so\n"

@@ -32,7 +32,7 @@ const hl_options *hl_opts(lua_State *L) {
     return o;
 }
 
-#define HL_ERROR "hearth.error" /* metatable of the module's marked errors (guard stops, usage) */
+#define HL_ERROR "hearth.error" /* metatable of the module's marked errors (guard stops, usage, --params listed) */
 
 /* Is the value at idx one of the module's marked errors? Compares the real
  * metatable (lua_getmetatable ignores __metatable), which scenes cannot reach. */
@@ -71,6 +71,12 @@ static int l_usage_error(lua_State *L) {
     lua_pushstring(L, msg);
     lua_concat(L, 2);
     return hl_raise_kind(L, "usage", lua_tostring(L, -1));
+}
+
+/* core.listed(): hearth run --params has printed the scene's parameters (lua/hearth/params.lua); the
+ * run ends here, successfully, before the scene makes anything. A marked error, so only the module raises it. */
+static int l_listed(lua_State *L) {
+    return hl_raise_kind(L, "listed", "the scene's parameters are listed (hearth run --params)");
 }
 
 static int traceback(lua_State *L) {
@@ -113,6 +119,7 @@ static int l_options(lua_State *L) {
     if (o->movie) lua_pushstring(L, o->movie), lua_setfield(L, -2, "movie");
     lua_pushboolean(L, o->quiet), lua_setfield(L, -2, "quiet");
     lua_pushboolean(L, o->yield_steps), lua_setfield(L, -2, "yield");
+    lua_pushboolean(L, o->list_params), lua_setfield(L, -2, "list_params");
     lua_newtable(L);
     for (int i = 0; o->sets && o->sets[i]; i++) {
         const char *eq = strchr(o->sets[i], '=');
@@ -158,6 +165,8 @@ static int open_core(lua_State *L) {
     lua_setfield(L, -2, "field_unit");
     lua_pushcfunction(L, l_usage_error);
     lua_setfield(L, -2, "usage_error");
+    lua_pushcfunction(L, l_listed);
+    lua_setfield(L, -2, "listed");
     lua_pushstring(L, HEARTH_VERSION);
     lua_setfield(L, -2, "version");
     return 1;
@@ -343,13 +352,14 @@ hl_error_kind hl_error_message(lua_State *L, int idx) {
     if (marked_error(L, idx)) {
         lua_getfield(L, idx, "kind");
         const int guard = lua_tostring(L, -1) && !strcmp(lua_tostring(L, -1), "guard");
+        const int listed = lua_tostring(L, -1) && !strcmp(lua_tostring(L, -1), "listed");
         lua_pop(L, 1);
         lua_getfield(L, idx, "message");
         if (!lua_isstring(L, -1)) {
             lua_pop(L, 1);
             lua_pushliteral(L, "(no message)");
         }
-        return guard ? HL_ERR_GUARD : HL_ERR_USAGE;
+        return guard ? HL_ERR_GUARD : listed ? HL_ERR_LISTED : HL_ERR_USAGE;
     }
     const int t = lua_type(L, idx);
     if (t != LUA_TSTRING && t != LUA_TNUMBER) {

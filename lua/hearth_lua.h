@@ -40,6 +40,8 @@ typedef struct hl_options {
     const char *vtu_dir;    ///< every s:run without its own vtu = {...} writes VTU frames and a .pvd here (hearth run --vtu)
     const char *movie;      ///< every s:run without its own movie = ... encodes its PNG frames into this file (hearth run --movie)
     const char *in_dir;     ///< or NULL: a file to read that is not in out_dir is looked for here (mpirun ranks > 0: rank 0's output folder)
+    int list_params;        ///< hearth run --params: h.params prints the scene's parameters and their words, then
+                            ///< core.listed() ends the run (HL_ERR_LISTED, exit 0) before anything is simulated
 } hl_options;
 
 /// The one constructor of a Lua state that runs scenes (hearth run, repl, the
@@ -70,6 +72,7 @@ typedef enum hl_error_kind {
     HL_ERR_USAGE,     ///< a bad --set value (core.usage_error): exit 2
     HL_ERR_MEMORY,    ///< the Lua memory ceiling was reached: exit 1
     HL_ERR_INTERRUPT, ///< SIGINT / SIGTERM (hl_interrupted says which): exit 128 + signal
+    HL_ERR_LISTED,    ///< hearth run --params printed the scene's parameters and stopped it (core.listed): exit 0
 } hl_error_kind;
 /// Classify the error value at idx and push its message (a string, always).
 /// Only errors made by the module are guard or usage errors: their marker

@@ -525,11 +525,15 @@ PY
     fail "$case_name: the rounded loaf's volume does not grow on a $tray tray (numbers above)"
     ;;
 # bread.lua's tray (helper loaffoot) takes "separate" or "sticky"; another value is refused with a message naming
-# the parameter and what it takes, before any step.
+# the parameter and what it takes, before any step (its h.choice: lua/hearth/params.lua; a bad --set, exit 2).
 bread_tray_refused)
-    "$hearth" run "$scenes/bread.lua" --quiet --set tray=glue >out.txt 2>err.txt && fail "bread.lua ran with tray=glue"
-    grep -q 'bread.lua: tray "glue": expected "separate" (friction 0.4) or "sticky"' err.txt ||
+    "$hearth" run "$scenes/bread.lua" --quiet --set tray=glue >out.txt 2>err.txt
+    rc=$?
+    [ $rc -eq 2 ] || fail "bread.lua with tray=glue exited $rc, expected 2: $(cat err.txt)"
+    grep -q 'bread.lua:[0-9]*: --set tray=glue: tray takes one of the words below, not "glue"' err.txt ||
         fail "unexpected message: $(cat err.txt)"
+    grep -q '^  "separate" *friction 0.4' err.txt || fail "separate and its friction not listed: $(cat err.txt)"
+    grep -q '^  "sticky" *the foot held where it touched' err.txt || fail "sticky and what it does not listed: $(cat err.txt)"
     ;;
 # #18, "the surface dries faster than the crumb": bread.lua's plain loaf, whose
 # dough carries water (lua/hearth/dough.lua, WATER), at the scene's dx 5 mm and
@@ -1030,7 +1034,7 @@ PY
 # tear_open.lua as a user runs it, shortly: its CSV's cells are numbers (the faces' columns nan before the pull, and
 # crack_from_face_m while the pull has cracked nothing: the raw batter never cracks),
 # its frames written, and a scene it cannot build (dim=3, an unknown food, two_field neither true nor false, a pull
-# of no frames)
+# of no frames; the food's words are its h.choice's: "muffin", "bread")
 # refused with the parameter and its range.
 baking_scene_tear_open)
     run tear_open --set raw=true --set pull=0.1 --set frames=5 >/dev/null
@@ -1045,7 +1049,7 @@ for r in rows:
         v = float(c)
         assert math.isfinite(v) or k.startswith("face_peak") or k == "crack_from_face_m", (k, c)
 PY
-    for bad in "dim=3:only dim=2" "food=cake:expected muffin or bread" "two_field=yes:expected true or false" \
+    for bad in "dim=3:only dim=2" "food=cake:food takes one of the words below, not \"cake\"" "two_field=yes:expected true or false" \
                "frames=0:a whole number of frames"; do
         "$hearth" run "$scenes/tear_open.lua" --quiet --set "${bad%%:*}" >out.txt 2>err.txt && fail "--set ${bad%%:*} ran"
         grep -q "${bad#*:}" err.txt || fail "--set ${bad%%:*}: the message does not say '${bad#*:}': $(cat err.txt)"

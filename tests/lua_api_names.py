@@ -6,7 +6,7 @@ The names come from the code, so the reference cannot drift from it:
     lua/lua_output.c that become the scene's methods), written s:NAME;
   - shape constructors registered in lua/lua_shapes.c, written h.NAME;
   - functions the Lua module defines (`function h.NAME`, `function S:NAME`
-    in lua/hearth/init.lua, run.lua, metrics.lua; `function S.NAME` in shapes.lua is h.shapes.NAME).
+    in lua/hearth/init.lua, run.lua, metrics.lua, params.lua; `function S.NAME` in shapes.lua is h.shapes.NAME).
 Names starting with '_' are internal (wrapped by a public function) and skipped.
 Each must appear in docs/lua.md as written (s:NAME, h.NAME or h.shapes NAME).
 """
@@ -36,7 +36,7 @@ for n in reg_names("lua/lua_output.c", "methods"):
     want.append((f"s:{n}", "lua_output.c"))
 for n in reg_names("lua/lua_shapes.c", "fns"):
     want.append((f"h.{n}", "lua_shapes.c"))
-for part in ("init.lua", "run.lua", "metrics.lua"):  # init.lua and the parts it loads
+for part in ("init.lua", "run.lua", "metrics.lua", "params.lua"):  # init.lua and the parts it loads
     init = open(os.path.join(root, "lua", "hearth", part)).read()
     for n in re.findall(r"^function h\.(\w+)", init, re.M):
         if not n.startswith("_"):

@@ -138,6 +138,14 @@ h._check = { keys = check_keys, number = check_number, choice = check_choice, ve
 -- or "labels" rebuilds the material from them (see material_id).
 local mix_mt = { __name = "hearth.mix" }
 local blend_modes = scene_setting.blend.words
+--- h.blend_words: h.scene's blend modes, each with what it does, for a scene's parameter that picks one:
+--- h.params{blend = h.choice("nonlinear", h.blend_words)}.
+h.blend_words = {
+  nonlinear = "the plugin's blend model (Nagasawa et al. eq. 28-31)",
+  linear = "the weighted mean of every parameter",
+  labels = "one material per constituent, drawn per particle with the ratios",
+}
+for _, w in ipairs(blend_modes) do assert(h.blend_words[w], "h.blend_words lacks the schema's blend word " .. w) end
 
 local function mix_info(t)
   local mt = type(t) == "table" and getmetatable(t)
@@ -373,55 +381,9 @@ function h.blend(m, mode)
   return r
 end
 
--- ---- scene parameters -----------------------------------------------------
+-- ---- scene parameters: h.params, h.choice, h.pass_params (params.lua) ----------
 
---- Named defaults that `hearth run scene.lua --set name=value` overrides.
---- A default that is a list of numbers takes `--set name=1,2.5,3`.
-function h.params(defaults)
-  if type(defaults) ~= "table" then error("h.params: expected a table of name = default", 2) end
-  local P = {}
-  h._param_names = {}
-  for k, v in pairs(defaults) do P[k], h._param_names[k] = v, true end
-  for k, v in pairs(core.options().sets) do
-    local d = defaults[k]
-    if d == nil and scene_knobs[k] then -- a scene setting, applied by h.scene / s:add / h.mix
-    elseif d == nil then
-      local near = nearest(k, defaults)
-      usage_error(("--set %s: this scene has no parameter '%s'%s; valid names: %s"):format(k, k,
-        near and ("; did you mean '" .. near .. "'?") or "", table.concat(sorted_keys(defaults), ", ")), 2)
-    end
-    if type(d) == "number" then
-      P[k] = tonumber(v) or usage_error(("--set %s=%s: expected a number"):format(k, v), 2)
-    elseif type(d) == "table" then
-      local t = {}
-      for w in (v .. ","):gmatch("([^,]*),") do
-        t[#t + 1] = tonumber(w) or usage_error(("--set %s=%s: expected numbers separated by commas"):format(k, v), 2)
-      end
-      P[k] = t
-    elseif type(d) == "boolean" then
-      if v ~= "true" and v ~= "false" then usage_error(("--set %s=%s: expected true or false"):format(k, v), 2) end
-      P[k] = v == "true"
-    else
-      P[k] = v
-    end
-  end
-  h._params_declared = true
-  return P
-end
-
---- For a script that runs a shipped scene (dofile) after parsing its own h.params P, a superset of the scene's
---- names so that every --set reaches it: from here on the scene's h.params returns P's value of each name it
---- declares, and its own default for a name P does not know (a parameter the scene gained after the script).
-function h.pass_params(P)
-  if type(P) ~= "table" then error("h.pass_params: expected the table h.params returned, got " .. type(P), 2) end
-  h.params = function(defaults)
-    local Q = {}
-    for k, v in pairs(defaults) do
-      if P[k] == nil then Q[k] = v else Q[k] = P[k] end
-    end
-    return Q
-  end
-end
+(require "hearth.params")(h, core, { nearest = nearest, sorted_keys = sorted_keys, scene_knobs = scene_knobs })
 
 -- ---- scenes -----------------------------------------------------------------
 
@@ -439,6 +401,15 @@ for _, e in ipairs(scene_settings) do
   end
 end
 local contact = { "sticky", "slip", "separate", "grip" }
+--- h.contact_words: s:collider's modes, each with what it does, for a scene's parameter that picks one:
+--- h.params{tray = h.choice("separate", h.contact_words)}.
+h.contact_words = {
+  sticky = "holds what touches its face where it touched, in tension too",
+  slip = "lets the body slide along its face without friction and lift off",
+  separate = "lets the body slide with Coulomb friction and lift off",
+  grip = "holds every grid node on and inside it",
+}
+for _, w in ipairs(contact) do assert(h.contact_words[w], "h.contact_words lacks the mode " .. w) end
 
 -- a number as a person writes it: 4, not 4.0; inf for no bound
 local function num_text(x)
@@ -486,6 +457,10 @@ end
 function h.scene(o)
   o = o or {}
   if type(o) ~= "table" then error("h.scene: expected a table", 2) end
+  if h._listed then core.listed() end -- hearth run --params listed them: nothing is made
+  if core.options().list_params and not h._params_declared then -- hearth run --params, and no h.params
+    h._list_knobs { "parameters (--set name=value): this scene declares none (h.params{...})" }
+  end
   for k in pairs(core.options().sets) do
     if not h._params_declared and not scene_knobs[k] then
       usage_error(("--set %s: this scene declares no parameters with h.params{...} before h.scene; scene settings that --set may change: %s")
@@ -873,6 +848,9 @@ end
 -- Called by `hearth run` after the scene file: checks --set use, and runs a
 -- scene the file built but did not run.
 function h._finish()
+  if core.options().list_params and not h._params_declared then -- hearth run --params, no h.params, no h.scene
+    h._list_knobs { "parameters (--set name=value): this scene declares none (h.params{...})" }
+  end
   for k in pairs(core.options().sets) do
     if not h._params_declared and not scene_knobs[k] then
       usage_error(("--set %s: this scene declares no parameters (h.params{...}); there is nothing to set"):format(k))

@@ -54,6 +54,17 @@ sauce_mt.__index = function(t, name)
 end
 h.library.sauce = setmetatable({}, sauce_mt)
 
+--- h.library.sauce_words(): every sauce's name with its Table 1 label and numbers, for a scene's parameter
+--- that picks one: h.params{sauce = h.choice("mayo", h.library.sauce_words())}.
+function h.library.sauce_words()
+  local _ = h.library.sauce.honey -- loads the table (a sauce every Table 1 has)
+  local words = {}
+  for name, s in pairs(rawget(h.library.sauce, "_all")) do
+    words[name] = ("%s, Table 1: eta %g Pa s, sigma_y %g Pa, h %g"):format(s.label, s.eta, s.sigma_y, s.h)
+  end
+  return words
+end
+
 -- h.library.paper.<name>: the baked goods of Ding et al. Table 2 with Fig. 8's
 -- temperature curves, in the paper's animation units, as parameters for the
 -- cam_clay_dough plugin; h.library.paper_oven.<name>: their oven, pan and

@@ -1,7 +1,8 @@
 -- Cookie cutter: dough shaped by a PNG mask (assets/masks/gingerbread.png),
 -- dropped onto a tray. --set mask=star for the star, --set dim=3 for an extruded cookie.
 local h = require "hearth"
-local P = h.params { mask = "gingerbread", dim = 2, thickness = 0.02 }
+local P = h.params { mask = h.choice { "gingerbread", gingerbread = "assets/masks/gingerbread.png: a gingerbread man",
+  star = "assets/masks/star.png: a five-pointed star" }, dim = 2, thickness = 0.02 }
 local d3 = P.dim == 3
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 

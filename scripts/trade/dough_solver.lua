@@ -3,7 +3,7 @@
 -- one solver per run):
 --   hearth trade scripts/trade/dough_solver.lua --metric height --knob dx=0.008,0.004 --knob solver=mpm,sph
 local h = require "hearth"
-local P = h.params { t_end = 0.5, solver = "mpm" } -- the knob sets this parameter, so the SPH options follow it
+local P = h.params { t_end = 0.5, solver = h.choice { "mpm", mpm = "the MPM solver", sph = "the SPH solver" } } -- the knob sets this parameter, so the SPH options follow it
 local sph = P.solver == "sph"
 local s = h.scene { dim = 2, dx = 0.004, box = { { 0, 0 }, { 0.3, 0.15 } }, solver = P.solver,
   oven = { temperature = 180, beta = 20 },

@@ -30,26 +30,23 @@
 --   hearth run scripts/validation/bread3d.lua --set only=1 [--set zw=0.12] [--set dx=0.006 --set dx_min_3d=0.006]
 local h = require "hearth"
 local P = h.params { dim = 3, dx = 0.008, until_t = 2.5, frames = 10, slit_depth = 0.02, slit_width = 0.01, only = 1,
-  dx_min_3d = 0.008, zw = 0.06, box_z = 0.12, beta_scale = 1, ends = "cut", nu = 0.3, field = "J",
-  tray = "separate", tray_mode = "", tray_friction = 0.4, grid_shift = 0,
+  dx_min_3d = 0.008, zw = 0.06, box_z = 0.12, beta_scale = 1, nu = 0.3, field = "J",
+  ends = h.choice { "cut", cut = "cut faces at z = 0.06 +- zw/2 (bread.lua's 2D loaf extruded)",
+    round = "rounded ends as a baker shapes them: the 2D profile turned about the loaf's axis at each end" },
+  tray = "separate", -- bread.lua's own tray, passed on (h.pass_params: bread.lua's words hold)
+  tray_mode = h.choice("", h.contact_words, { [""] = "bread.lua's tray (its --set tray)" }), tray_friction = 0.4, grid_shift = 0,
   bread = "scripts/scenes/baking/bread.lua" }
 if P.dim ~= 3 then error(("bread3d.lua: dim %d: expected 3 (bread.lua itself runs 2D)"):format(P.dim)) end
 if not (P.box_z >= 0.12 and P.box_z <= 0.6) then error(("bread3d.lua: box_z %g m: expected [0.12, 0.6]"):format(P.box_z)) end
 if not (P.zw > 0 and P.zw <= P.box_z) then
   error(("bread3d.lua: zw %g m: expected (0, box_z = %g] (the box's length in z)"):format(P.zw, P.box_z))
 end
-if P.ends ~= "cut" and P.ends ~= "round" then error(("bread3d.lua: ends %q: expected \"cut\" or \"round\""):format(P.ends)) end
 if P.ends == "round" and P.zw + 0.08 > P.box_z - 0.02 then -- 0.08: bread.lua's loaf width, the two half domes
   error(("bread3d.lua: zw %g m with ends = \"round\": the loaf is zw + 0.08 m long; expected zw <= box_z - 0.1 = %g "
     .. "(1 cm of room at each tip)"):format(P.zw, P.box_z - 0.1))
 end
 if not (P.nu >= 0 and P.nu < 0.5) then error(("bread3d.lua: nu %g: expected [0, 0.5)"):format(P.nu)) end
 if not (P.beta_scale > 0 and P.beta_scale <= 10) then error(("bread3d.lua: beta_scale %g: expected (0, 10]"):format(P.beta_scale)) end
-local TRAY_MODES = { [""] = true, separate = true, slip = true, sticky = true, grip = true }
-if not TRAY_MODES[P.tray_mode] then
-  error(("bread3d.lua: tray_mode %q: expected \"separate\", \"slip\", \"sticky\" or \"grip\" (or \"\": bread.lua's tray)")
-    :format(P.tray_mode))
-end
 if not (P.tray_friction >= 0 and P.tray_friction <= 100) then
   error(("bread3d.lua: tray_friction %g: expected [0, 100] (Coulomb coefficient)"):format(P.tray_friction))
 end

@@ -31,7 +31,7 @@
 --                   top, rim and base heat first; cookies.lua's lever of the same name), with a bake long enough to set it
 local h = require "hearth"
 local P = h.params { dx = 0.005, until_t = 2.5, frames = 25, gas = 0, seed = 1, vent = 5, eta = 1, tau = 1, friction = 0.4,
-  tray_mode = "separate", png = true, conductivity = 1 }
+  tray_mode = h.choice("separate", h.contact_words), png = true, conductivity = 1 }
 local TRAY, SLOT, R, THICK = 0.02, 0.18, 0.03, 0.025
 local X = SLOT / 2
 local d = h.library.paper.cookie

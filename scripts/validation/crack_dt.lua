@@ -27,7 +27,7 @@
 -- seen at the frames (smallest, largest) and the mean step.
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth = 0.02, slit_width = 0.01, only = 1,
-  cfl = 0.5, dt_max = 0, transfer = "apic", field_steps = 0, bread = "scripts/scenes/baking/bread.lua" }
+  cfl = 0.5, dt_max = 0, transfer = h.choice { "apic", apic = "APIC (the scene setting's default)", pic = "PIC: no affine part, dissipative" }, field_steps = 0, bread = "scripts/scenes/baking/bread.lua" }
 
 -- bread.lua's own h.params sees the values parsed here (it declares a subset of these names)
 h.pass_params(P)

@@ -16,7 +16,7 @@
 -- core/sim/solver/mpm_touch.c), and where its cracked particles (damage 1) are.
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth = 0.02, slit_width = 0.01, only = 1,
-  tray_mode = "separate", tray_friction = 0.4, grid_shift = 0, bread = "scripts/scenes/baking/bread.lua" }
+  tray_mode = h.choice("separate", h.contact_words), tray_friction = 0.4, grid_shift = 0, bread = "scripts/scenes/baking/bread.lua" }
 if not (P.grid_shift >= 0 and P.grid_shift < 0.02) then
   error(("crack_tray.lua: grid_shift %g m: expected [0, 0.02) (the box's floor moved down, below the tray)"):format(P.grid_shift))
 end

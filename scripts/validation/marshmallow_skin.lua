@@ -32,7 +32,9 @@
 local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dim = 2, dx = 0.002, roast = 0.9, press = 0.8, speed = 0.01, frames = 17, F = 10, ef_dry = 1e-3,
-  Kw = 1.5e-5, evap = 2, s0 = 0.5, skin = 0.004, only = "", mode = "slip", friction = 0.5, two_field = 0 }
+  Kw = 1.5e-5, evap = 2, s0 = 0.5, skin = 0.004,
+  only = h.choice { "", [""] = "both marshmallows", raw = "the raw one alone", roasted = "the roasted one alone" },
+  mode = h.choice("slip", h.contact_words), friction = 0.5, two_field = 0 }
 local d3 = P.dim == 3
 local dx = P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end

@@ -16,7 +16,11 @@
 local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dx = 0.005, until_t = 2.5, frames = 10, gas = 1, tau = 1, eta = 1, expansion = -1, g = 9.81,
-  max_porosity = -1, compaction = -1, oven = -1, pore_hardening = -1, dough = "bread", soft_until = -1, soft = "both",
+  max_porosity = -1, compaction = -1, oven = -1, pore_hardening = -1, soft_until = -1,
+  dough = h.choice { "bread", bread = "h.library.paper.bread as a loaf", cookie = "h.library.paper.cookie as a cookie",
+    muffin = "h.library.paper.muffin as a loaf", pancake = "h.library.paper.pancake as a loaf",
+    lava_cake = "h.library.paper.lava_cake as a loaf", smore = "h.library.paper.smore as a loaf" },
+  soft = h.choice { "both", both = "tau_y and eta", tau = "tau_y only", eta = "eta only" },
   png = "" }
 local params, curves, oven = D.preset(P.dough)
 -- soft_until (degC): the fat-melted value of Fig. 8 (its 35 degC point) held up to this temperature, on

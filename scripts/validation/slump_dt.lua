@@ -24,7 +24,9 @@
 -- Prints per frame the top of the loaf on its axis (mm above the tray), the
 -- highest particle, the centroid's height and the kinetic energy.
 local h = require "hearth"
-local P = h.params { dx = 0.005, dt_max = 1e-4, until_t = 0.5, frames = 4, transfer = "apic", material = "dough", damping = 0,
+local P = h.params { dx = 0.005, dt_max = 1e-4, until_t = 0.5, frames = 4, transfer = h.choice { "apic", apic = "APIC (the scene setting's default)", pic = "PIC: no affine part, dissipative" },
+  material = h.choice { "dough", dough = "h.library.paper.bread's dough (cam_clay_dough)",
+    elastic = "an elastic body of the dough's E, nu and density" }, damping = 0,
   field_steps = 0, sealed = 0 }
 local TRAY, WIDTH, BODY, X0 = 0.02, 0.08, 0.03, 0.07 -- bread.lua's plain loaf
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name = "slump", dt_max = P.dt_max,

@@ -28,11 +28,9 @@
 -- too), as loaf_physical.lua's (docs/validation.md, "The loaf's foot on its tray (#18, helper loaffoot)").
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth = 0.02, slit_width = 0.01, only = 0,
-  dx_min_3d = 0.008, tray = "separate" }
-if P.tray ~= "separate" and P.tray ~= "sticky" then
-  error(("bread.lua: tray %q: expected \"separate\" (friction 0.4) or \"sticky\" (the foot held where it touched)")
-    :format(tostring(P.tray)))
-end
+  dx_min_3d = 0.008, tray = h.choice { "separate",
+    separate = "friction 0.4: the foot slides out, as on a greased or papered tray",
+    sticky = "the foot held where it touched, as on a bare tray the dough has wetted" } }
 local d3 = P.dim == 3
 -- 3D keeps dx at least dx_min_3d (8 mm: a loaf in minutes); lower it to measure finer (docs/validation.md,
 -- "bread.lua in 3D"); the validation wrappers that hand this scene their own params (crack_heat.lua) leave it unset

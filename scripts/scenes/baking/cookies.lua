@@ -80,7 +80,7 @@
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 5, frames = 5, ovens = { 190, 150, 110 },
   leaveners = { 0.015, 0.0075, 0 }, baseline = false, reaction_temperature = -1, reaction_width = -1, gas = 1,
-  tray_mode = "separate", tray_friction = 0.4, conductivity = 0.01, water = false, soft_until = -1, max_porosity = -1,
+  tray_mode = h.choice("separate", h.contact_words), tray_friction = 0.4, conductivity = 0.01, water = false, soft_until = -1, max_porosity = -1,
   seed = 1, vent = 5 }
 -- vent (m/s, the scene setting gas_vent; 0 = Ding et al.'s closed skin): a surface particle whose pores have
 -- opened (gas porosity >= 0.7, vent_porosity) loses its CO2 to the oven air (core/sim/fields/gas.c). 5 m/s is

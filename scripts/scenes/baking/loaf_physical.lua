@@ -26,7 +26,9 @@
 -- base's middle 80% (16 columns of 4 mm across x0 +- 32 mm), and base_gap_m the most any column's lowest particle
 -- edge stands off the tray (at most 1.1 mm at 5 mm, 0.36 mm at 2.5 mm: the base is as rough as its jittered particles).
 local h = require "hearth"
-local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0, tray = "separate" }
+local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0, tray = h.choice { "separate",
+  separate = "friction 0.4: the foot slides out, as on a greased or papered tray",
+  sticky = "the foot held where it touched, as on a bare tray the dough has wetted" } }
 local oven = h.library.oven.bread
 local S = oven.time_scale
 local until_t = (P.until_real > 0 and P.until_real or oven.bake_time * S) / S
@@ -37,10 +39,6 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name
   oven = { temperature = oven.temperature, beta = oven.beta }, latent_heat = P.latent and oven.latent_heat,
   boiling_point = oven.boiling_point, browning = true, browning_scale = oven.browning_scale,
   gas_vent = oven.gas_vent, vent_porosity = oven.vent_porosity }
-if P.tray ~= "sticky" and P.tray ~= "separate" then
-  error(("loaf_physical.lua: tray = %q; valid: \"sticky\" (a bare tray) or \"separate\" (greased or paper)"):format(
-    tostring(P.tray)), 0)
-end
 h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta, mode = P.tray })
 s:add { shape = h.shapes.loaf({ X0, TRAY }, WIDTH, BODY), material = h.material("cam_clay_dough", h.library.dough.bread),
   temperature = oven.dough_temperature }

@@ -54,7 +54,8 @@
 local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dim = 2, dx = 0.002, roast = 0.9, press = 1.0, speed = 0.01, frames = 20, expansion = 0.1,
-  only = "", mode = "sticky", friction = 0.5 }
+  only = h.choice { "", [""] = "both marshmallows", raw = "the raw one alone", roasted = "the roasted one alone" },
+  mode = h.choice("sticky", h.contact_words), friction = 0.5 } -- mode: the crackers' contact
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.004) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
@@ -72,9 +73,6 @@ if closure > room then
   error(("--set speed=%g, press=%g: the crackers would close %.1f mm, more than the %.1f mm that leaves the "
     .. "marshmallow a fifth of its %.0f mm height; keep 2 speed press <= %.3f m (at this speed, press <= %.3g s)")
     :format(P.speed, P.press, closure * 1e3, room * 1e3, HM * 1e3, room, room / (2 * P.speed)))
-end
-if P.only ~= "" and P.only ~= "raw" and P.only ~= "roasted" then
-  error(("--set only=%s: expected raw or roasted (or leave it out for both)"):format(P.only))
 end
 
 -- The material. A marshmallow is a sugar-gelatin foam, not a dough: nothing in it gelatinises, so Fig. 8's

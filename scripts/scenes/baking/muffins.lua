@@ -43,16 +43,14 @@
 -- (dome 4.14 mm); with Table 2's kappa (an isothermal batter; gas x0.1) the
 -- same cup ended dished: centre 1.2 mm below the edge, curvature +5 1/m.
 local h = require "hearth"
-local P = h.params { dim = 2, dx = 0.004, until_t = 0, frames = 6, cups = 3, fill = 0.022, wall_mode = "slip", ppc = 0,
-  preset = "paper" }
+local P = h.params { dim = 2, dx = 0.004, until_t = 0, frames = 6, cups = 3, fill = 0.022, ppc = 0,
+  wall_mode = h.choice("slip", h.contact_words), -- the cup's walls and floor
+  preset = h.choice { "paper", paper = "h.library.paper.muffin: Ding Table 2, animation units",
+    physical = "h.library.dough.muffin: a real batter's properties, its bake in real minutes mapped" } }
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.006) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
-if P.preset ~= "paper" and P.preset ~= "physical" then
-  error(("muffins.lua: preset = %q; valid: \"paper\" (Ding Table 2, animation units) or \"physical\" (h.library.dough.muffin)")
-    :format(tostring(P.preset)), 0)
-end
 local physical = P.preset == "physical"
 local oven = physical and h.library.oven.muffin or h.library.paper_oven.muffin
 local S = physical and oven.time_scale or nil -- the physical preset's rates run S times fast: t_real = S t

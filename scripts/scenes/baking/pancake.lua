@@ -31,7 +31,7 @@
 local h = require "hearth"
 local THETA_SET = require("hearth.dough").THETA[4] -- gelatinisation, degC
 local P = h.params { dim = 2, dx = 0.002, until_t = 2, frames = 20, pour = 0.4, spin = 0.5, gas = 0.1, flip_dt = 0,
-  porosity = -1, spatula = "sticky", pan = h.library.paper_oven.pancake.pan_temperature, set_at = THETA_SET }
+  porosity = -1, spatula = h.choice("sticky", h.contact_words), pan = h.library.paper_oven.pancake.pan_temperature, set_at = THETA_SET }
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.004) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end

@@ -63,13 +63,12 @@
 -- Cost (CPU, --threads 1, a shared 2-core machine): muffin 13 / 17 s at 4 mm, 50 / 65 s at 3 mm (one field / two);
 -- loaf 7 / 8 s at 5 mm, 13 / 17 s at 4 mm; a raw pull 1-3 s.
 local h = require "hearth"
-local P = h.params { dim = 2, food = "muffin", raw = false, dx = 0, bake = 0, speed = 0.05, pull = 0.4, frames = 20,
+local P = h.params { dim = 2, raw = false,
+  food = h.choice { "muffin", muffin = "a muffin's batter in its cup (h.library.paper.muffin)",
+    bread = "a loaf of bread dough on its tray (h.library.paper.bread)" }, dx = 0, bake = 0, speed = 0.05, pull = 0.4, frames = 20,
   ppc = 0, two_field = false }
 if P.dim ~= 2 then
   error(("--set dim=%d: tear_open.lua measures its tear over the plane's columns; only dim=2"):format(P.dim))
-end
-if P.food ~= "muffin" and P.food ~= "bread" then
-  error(("--set food=%s: expected muffin or bread"):format(P.food))
 end
 local muffin = P.food == "muffin"
 -- the pull's and the run's numbers, each with its valid range (0 for dx, bake and ppc: the food's own)

@@ -11,7 +11,8 @@
 -- wets the celery only through its sticky contact; there is no adhesion or
 -- surface tension, so little sauce leaves the bowl with it.
 local h = require "hearth"
-local P = h.params { sauce = "mix", blend = "nonlinear", dx = 0.003, speed = 0.1, depth = 0.025, rest = 0.2,
+local P = h.params { blend = h.choice("nonlinear", h.blend_words),
+  sauce = h.choice("mix", h.library.sauce_words(), { mix = "half mayo, half mustard (Fig. 12), blended as blend says" }), dx = 0.003, speed = 0.1, depth = 0.025, rest = 0.2,
   until_t = 1.2, every = 0.05, png = true }
 
 local material

@@ -12,7 +12,9 @@
 -- stir.csv: the sauce's kinetic energy and mean speed over time: the same
 -- spoon moves a thinner sauce more.
 local h = require "hearth"
-local P = h.params { blend = "nonlinear", mixing = "dynamic", premixed = false, dx = 0.003, radius = 0.04, rps = 1.0,
+local P = h.params { blend = h.choice("nonlinear", h.blend_words),
+  mixing = h.choice { "dynamic", dynamic = "the halves share one mixture whose ratios follow the particles (eq. 43-44; "
+    .. "with blend = nonlinear, else fixed)", fixed = "each half keeps its own sauce" }, premixed = false, dx = 0.003, radius = 0.04, rps = 1.0,
   until_t = 1.0, every = 0.05, png = true }
 
 local R = P.radius

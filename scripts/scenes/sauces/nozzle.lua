@@ -12,7 +12,7 @@
 -- over time. Frames go to frames/speed_%04d.png.
 local h = require "hearth"
 local P = h.params {
-  pair = "mayo:honey", ratios = "0,0.25,0.5,0.75,1", blend = "nonlinear",
+  pair = "mayo:honey", ratios = "0,0.25,0.5,0.75,1", blend = h.choice("nonlinear", h.blend_words),
   dx = 0.0025,        -- m; 4 cells across the nozzle
   angle = 45,         -- degrees, the plate's slope
   speed = 0.2,        -- m/s, extrusion speed at the nozzle exit

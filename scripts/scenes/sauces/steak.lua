@@ -7,7 +7,9 @@
 -- spread.csv: how far the sauce reaches over the steak's top to the left
 -- and right of the pour point over time, and the area that ran off onto the plate.
 local h = require "hearth"
-local P = h.params { sauce = "mix", blend = "nonlinear", dx = 0.0025, speed = 0.2, width = 0.02, drop = 0.006, pour = 0.4,
+local P = h.params { blend = h.choice("nonlinear", h.blend_words),
+  sauce = h.choice("mix", h.library.sauce_words(), { mix = "half pork cutlet, half BBQ sauce (Fig. 14), blended as blend "
+    .. "says" }), dx = 0.0025, speed = 0.2, width = 0.02, drop = 0.006, pour = 0.4,
   until_t = 1.0, every = 0.05, png = true }
 
 local material

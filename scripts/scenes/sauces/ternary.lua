@@ -7,7 +7,7 @@
 -- three half-and-half pairs, and the centre of the triangle (1/3 each).
 -- front.csv: distance down the slope of each lane's farthest material over time.
 local h = require "hearth"
-local P = h.params { blend = "nonlinear", dx = 0.0025, angle = 45, speed = 0.2, width = 0.01, drop = 0.02,
+local P = h.params { blend = h.choice("nonlinear", h.blend_words), dx = 0.0025, angle = 45, speed = 0.2, width = 0.01, drop = 0.02,
   emit = 0.6, until_t = 1.0, lane = 0.22, every = 0.05, png = true }
 
 local L = h.library.sauce

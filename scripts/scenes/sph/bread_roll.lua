@@ -97,12 +97,17 @@
 local h = require "hearth"
 local lib = h.library.sph.bread_roll
 local sph = lib.sph
-local P = h.params { bubbles = "even", dx = 0.002, oven = 180, visc_scale = 100, mue_scale = 100, visc_cap = 300,
+local P = h.params { dx = 0.002, oven = 180, visc_scale = 100, mue_scale = 100, visc_cap = 300,
   radius = 0.025, xsph0 = 0.05, heat_ext = 4.44, artificial_stress = sph.artificial_stress, tension = sph.tension,
   gas_law = sph.gas_law, vapour = sph.bubble_vapour, vmax = sph.bubble_vmax or 4,
   continuity = sph.continuity_density or false, renormalised = sph.renormalised_density or false,
   gas_pressure = sph.gas_pressure or 0, dough_water = sph.dough_water or 0, own_squeeze = sph.own_squeeze or false,
-  mu_e_curve = "sourced", crust = false, dry = true }
+  crust = false, dry = true,
+  bubbles = h.choice { "even", even = "small bubbles spread evenly through the roll",
+    centre = "one bubble at the centre, half the roll's radius",
+    dispersed = "one bubble particle in four, each alone among dough particles (Fig. 4.4a)" },
+  mu_e_curve = h.choice { "sourced", sourced = "mu_e as measured breads set (the preset's own: sph_library.lua)",
+    table = "the thesis's eq. 4.2 as printed (.paper.mu_e), times mue_scale" } }
 
 sph.heat_ext, sph.heat_int, sph.av_beta = P.heat_ext, 0.2, 1
 sph.gas_law, sph.bubble_vapour, sph.bubble_vmax = P.gas_law, P.vapour, P.vmax
@@ -121,11 +126,7 @@ local function scaled(c, k, cap)
 end
 local m = lib.material
 m.viscosity = scaled(lib.material.viscosity, P.visc_scale, P.visc_cap)
-if P.mu_e_curve == "table" then
-  m.mu_e = scaled(lib.paper.mu_e, P.mue_scale)
-elseif P.mu_e_curve ~= "sourced" then
-  error("mu_e_curve must be sourced or table, got " .. tostring(P.mu_e_curve))
-end
+if P.mu_e_curve == "table" then m.mu_e = scaled(lib.paper.mu_e, P.mue_scale) end
 local bubble_m = {}
 for k, v in pairs(m) do bubble_m[k] = v end
 if P.crust then -- the bread's water and dried crust (lua/hearth/dough_physical.lua), on the scene's time scale
@@ -167,8 +168,6 @@ elseif P.bubbles == "dispersed" then
     end
   end
   gas = h.union(table.unpack(spots))
-else
-  error("bubbles must be even, centre or dispersed, got " .. tostring(P.bubbles))
 end
 s:add { shape = h.difference(roll, gas), material = dough, ppc = 1, jitter = 0, temperature = lib.table.T0,
   saturation = P.crust and h.library.dough.bread.saturation or nil }

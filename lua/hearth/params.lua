@@ -1,0 +1,216 @@
+-- hearth.params: a scene's own knobs, which `hearth run SCENE.lua --set name=value` overrides:
+-- h.params, h.choice (a word-valued parameter: its words and what each means), h.pass_params
+-- (a wrapper script that runs a shipped scene) and the listing of `hearth run SCENE.lua --params`.
+-- Loaded by init.lua: (require "hearth.params")(h, core, {nearest = ..., sorted_keys = ..., scene_knobs = ...}).
+--
+-- Why one declaration of the words: each scene used to check its word parameters its own way, after
+-- other work, with its own message; some misspellings ran silently (a validation script's `--set
+-- soft=bth` softened nothing, `--set material=elastik` ran the dough, `--set only=rwa` pressed no
+-- marshmallow, cup_spoon.lua's `mixing` under a linear blend took any word). A word declared here is
+-- checked before the scene makes anything, and the message is the same everywhere: the scene file
+-- and line, the parameter, the word given, every valid word with what it means, and the nearest one.
+
+return function(h, core, u)
+local nearest, sorted_keys, scene_knobs = u.nearest, u.sorted_keys, u.scene_knobs
+local usage_error = core.usage_error
+
+local choice_mt = { __name = "hearth.choice" }
+local function is_choice(v) return getmetatable(v) == choice_mt end
+
+-- a word as messages and the listing show it: quoted, so the empty word reads ""
+local function q(w) return '"' .. w .. '"' end
+
+--- h.choice{"default", word = "what it means", other = "...", ...}: a word-valued parameter for
+--- h.params. The first (array) item is the default; every other key is a valid word, its value a
+--- short description that the refusal of a wrong word and `hearth run SCENE.lua --params` show.
+--- The empty word is a word like any other: `[""] = "both"` (`--set only=`).
+--- h.choice("default", words, more, ...): the same with the words of tables {word = "what it means", ...}
+--- that scenes share (h.contact_words: a collider's modes; h.blend_words; h.library.sauce_words()),
+--- merged with a scene's own: h.choice("mix", h.library.sauce_words(), {mix = "half mayo, half mustard"}).
+function h.choice(t, ...)
+  if type(t) == "string" and select("#", ...) > 0 then
+    local c = { t }
+    for i = 1, select("#", ...) do
+      local w = select(i, ...)
+      if type(w) ~= "table" then
+        error(("h.choice(default, words, ...): argument %d is a %s, not a table {word = \"what it means\"}"):format(i + 1,
+          type(w)), 2)
+      end
+      for k, v in pairs(w) do
+        if k == 1 then error("h.choice(default, words, ...): a words table holds only word = \"what it means\" pairs", 2) end
+        if c[k] ~= nil then error(("h.choice(default, words, ...): word %s given twice"):format(q(tostring(k))), 2) end
+        c[k] = v
+      end
+    end
+    t = c
+  elseif type(t) ~= "table" or select("#", ...) > 0 then
+    error('h.choice: expected {"default", word = "what it means", ...} or ("default", {word = "what it means", ...}, '
+      .. '...)', 2)
+  end
+  if t[1] == nil then
+    error('h.choice: the default comes first: h.choice{"default", word = "what it means", ...}', 2)
+  end
+  local words, n = {}, 0
+  for k, v in pairs(t) do
+    if k == 1 then -- the default, checked by h.params, where the parameter's name is known
+    elseif type(k) ~= "string" then
+      error(('h.choice: %s is not a word: one default comes first, then word = "what it means" pairs')
+        :format(tostring(k)), 2)
+    elseif type(v) ~= "string" or v == "" then
+      error(('h.choice: word %s needs a short description (a non-empty string), got %s'):format(q(k),
+        type(v) == "string" and q(v) or tostring(v)), 2)
+    elseif k:find("[,%s=]") then
+      error(('h.choice: word %s holds a comma, a space or =, which --set name=word cannot give'):format(q(k)), 2)
+    else
+      words[k], n = v, n + 1
+    end
+  end
+  if n < 2 then error("h.choice: a choice needs at least two words, each with its description", 2) end
+  return setmetatable({ default = t[1], words = words }, choice_mt)
+end
+
+-- The valid words of choice c, one a line, each with its description, sorted (the empty word first).
+local function word_lines(c, indent)
+  local ks, wide = sorted_keys(c.words), 0
+  for _, w in ipairs(ks) do wide = math.max(wide, #w + 2) end
+  local out = {}
+  for _, w in ipairs(ks) do
+    out[#out + 1] = ("%s%-" .. wide .. "s  %s"):format(indent, q(w), c.words[w])
+  end
+  return table.concat(out, "\n")
+end
+
+-- A word w for the parameter `name` declared as choice c: nil when valid, else the message (from
+-- `what`: "--set tray=stiky", or the script that passed it) naming it, every valid word and the nearest.
+local function word_error(c, name, w, what)
+  if type(w) == "string" and c.words[w] then return nil end
+  local near = type(w) == "string" and nearest(w, c.words)
+  return ("%s: %s takes one of the words below, not %s%s\n%s"):format(what, name,
+    type(w) == "string" and q(w) or tostring(w), near and ("; did you mean " .. q(near) .. "?") or "", word_lines(c, "  "))
+end
+
+-- The scene author's own mistake: a default that is not one of its words (a plain error, exit 1).
+local function check_default(c, name, level)
+  local m = word_error(c, name, c.default, ("h.params: %s's default"):format(name))
+  if m then error(m, level + 1) end
+end
+
+-- `hearth run SCENE.lua --params`: the scene's parameters, their defaults and, for a choice, its words.
+local function value_text(v)
+  if is_choice(v) then return q(v.default) end
+  if type(v) == "table" then
+    local t = {}
+    for i, x in ipairs(v) do t[i] = tostring(x) end
+    return table.concat(t, ",")
+  end
+  if type(v) == "string" then return q(v) end
+  return tostring(v)
+end
+
+local function list_params(defaults)
+  local lines = { "parameters (--set name=value), with their defaults:" }
+  for _, k in ipairs(sorted_keys(defaults)) do
+    local v = defaults[k]
+    lines[#lines + 1] = ("  %s = %s%s"):format(k, value_text(v), is_choice(v) and ", one of:" or "")
+    if is_choice(v) then lines[#lines + 1] = word_lines(v, "      ") end
+  end
+  h._list_knobs(lines, defaults)
+end
+
+-- the scene settings --set may change besides (h.scene's knobs that the scene does not declare itself), and the
+-- stop of the listing
+function h._list_knobs(lines, declared)
+  local knobs = {}
+  for k in pairs(scene_knobs) do
+    if not (declared and declared[k] ~= nil) then knobs[k] = true end
+  end
+  lines[#lines + 1] = "scene settings --set may also change: " .. table.concat(sorted_keys(knobs), ", ")
+    .. " (hearth help scene)"
+  io.stdout:write(table.concat(lines, "\n"), "\n")
+  h._listed = true -- h.scene raises it again, should a scene's pcall swallow the stop
+  core.listed() -- ends the run here: exit 0, nothing simulated
+end
+
+--- Named defaults that `hearth run scene.lua --set name=value` overrides.
+--- A default that is a list of numbers takes `--set name=1,2.5,3`; a boolean `true` or `false`;
+--- h.choice{"default", word = "what it means", ...} one of its words (refused otherwise, before the
+--- scene makes anything, naming the scene file, the parameter, every word and the nearest).
+function h.params(defaults)
+  if type(defaults) ~= "table" then error("h.params: expected a table of name = default", 2) end
+  local P = {}
+  h._param_names = {}
+  for k, v in pairs(defaults) do
+    if is_choice(v) then
+      check_default(v, k, 2)
+      P[k] = v.default
+    else
+      P[k] = v
+    end
+    h._param_names[k] = true
+  end
+  if core.options().list_params then list_params(defaults) end
+  for k, v in pairs(core.options().sets) do
+    local d = defaults[k]
+    if d == nil and scene_knobs[k] then -- a scene setting, applied by h.scene / s:add / h.mix
+    elseif d == nil then
+      local near = nearest(k, defaults)
+      usage_error(("--set %s: this scene has no parameter '%s'%s; valid names: %s"):format(k, k,
+        near and ("; did you mean '" .. near .. "'?") or "", table.concat(sorted_keys(defaults), ", ")), 2)
+    end
+    if type(d) == "number" then
+      P[k] = tonumber(v) or usage_error(("--set %s=%s: expected a number"):format(k, v), 2)
+    elseif is_choice(d) then
+      local m = word_error(d, k, v, ("--set %s=%s"):format(k, v))
+      if m then usage_error(m, 2) end
+      P[k] = v
+    elseif type(d) == "table" then
+      local t = {}
+      for w in (v .. ","):gmatch("([^,]*),") do
+        t[#t + 1] = tonumber(w) or usage_error(("--set %s=%s: expected numbers separated by commas"):format(k, v), 2)
+      end
+      P[k] = t
+    elseif type(d) == "boolean" then
+      if v ~= "true" and v ~= "false" then usage_error(("--set %s=%s: expected true or false"):format(k, v), 2) end
+      P[k] = v == "true"
+    else
+      P[k] = v
+    end
+  end
+  h._params_declared = true
+  return P
+end
+
+--- For a script that runs a shipped scene (dofile) after parsing its own h.params P, a superset of the scene's
+--- names so that every --set reaches it: from here on the scene's h.params returns P's value of each name it
+--- declares, and its own default for a name P does not know (a parameter the scene gained after the script).
+--- The scene's h.choice words still hold: a word of P that the scene does not take is refused there, naming the
+--- scene's file and line (a usage error when --set gave it, else the script's mistake).
+function h.pass_params(P)
+  if type(P) ~= "table" then error("h.pass_params: expected the table h.params returned, got " .. type(P), 2) end
+  h.params = function(defaults)
+    if type(defaults) ~= "table" then error("h.params: expected a table of name = default", 2) end
+    local Q = {}
+    for k, v in pairs(defaults) do
+      if is_choice(v) then
+        check_default(v, k, 2)
+        local w = P[k]
+        if w == nil then
+          w = v.default
+        else
+          local given = core.options().sets[k]
+          local m = word_error(v, k, w, given and ("--set %s=%s"):format(k, given)
+            or ("%s = %s, passed by the script's h.pass_params"):format(k, q(tostring(w))))
+          if m and given then usage_error(m, 2) elseif m then error(m, 2) end
+        end
+        Q[k] = w
+      elseif P[k] == nil then
+        Q[k] = v
+      else
+        Q[k] = P[k]
+      end
+    end
+    return Q
+  end
+end
+
+end
