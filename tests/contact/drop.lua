@@ -5,12 +5,21 @@
 -- Prints, every tenth of t, the lowest particle's distance to the face in dx, and at the end one line:
 --   result lowest=<dx> spread=<dx over the last 40% of t> hp=<the particles' half-spacing in dx>
 local h = require "hearth"
-local P = h.params { dx = 0.005, lift = 1.0, t = 0.4, face = "tray", mode = "separate", w = 0.06, ht = 0.03, dim = 2 }
+local P = h.params { dx = 0.005, lift = 1.0, t = 0.4, face = "tray", mode = "separate", w = 0.06, ht = 0.03, dim = 2, off = 0 }
+if not (P.off >= 0 and P.off < 1) then
+  error(("drop.lua: off %g: expected [0, 1) (cells the tray lies above the node row under it)"):format(P.off))
+end
+if P.off > 0 and (P.face ~= "tray" or P.dim ~= 2) then
+  error(("drop.lua: off %g: only for face = \"tray\" in 2D (the tray between node rows)"):format(P.off))
+end
 local TRAY = 0.02
 local wall = P.face == "wall"
 -- dim = 3: a w x ht x w block in a 0.14 x 0.14 x (w + 4 cm) box (8 particles a cell: half-spacing dx/4 too)
 local D3 = P.dim == 3
-local s = h.scene { dim = P.dim, dx = P.dx, box = D3 and { { 0, 0, 0 }, { 0.14, 0.14, P.w + 0.04 } } or { { 0, 0 }, { 0.14, 0.14 } },
+-- off > 0 (2D): the box moved down by off cells, so the tray lies off dx above the node row under it (0: on a row, as
+-- tests/contact/spread.lua; the box is then exactly the one the other cases use)
+local y_lo = P.off > 0 and -P.off * P.dx or 0
+local s = h.scene { dim = P.dim, dx = P.dx, box = D3 and { { 0, 0, 0 }, { 0.14, 0.14, P.w + 0.04 } } or { { 0, y_lo }, { 0.14, 0.14 + y_lo } },
   name = "drop",
   wall = wall and P.mode or "slip" }
 local floor_y = wall and P.dx or TRAY

@@ -99,6 +99,15 @@ void collider_velocity_at(const collider *c, const double x[3], double v[3]);
 /// How far outside its face (cells) a collider holds grid nodes: STICKY_NEAR_BAND
 /// for a sticky face, COLLIDER_ROW_TOL (on the face) for the others. The grid
 /// update (mpm.c) and the sticky ghosts (mpm_sticky.c) must agree on it.
+/// A separate face between node rows therefore holds a resting body through rows
+/// under the face only: its foot sinks up to 0.18 dx below its half-spacing and
+/// slides up to 18% past Coulomb's stop (contact tests *_between_rows, expected
+/// failures). Holding the first row above such a face where the body touches it
+/// (SEPARATE_NEAR_BAND 0.99, reverted) fixed both but made the stability matrix's
+/// fluid dropped at cfl 1 stop late; holding it only for a body at rest (with or
+/// without memory), with friction alone, or in part (the velocity linear from the
+/// face) each missed a contact bar or moved that cell too (docs/validation.md,
+/// "The separate tray between node rows", "Tried again").
 static inline double collider_hold_band(const collider *c) {
     return c->mode == HEARTH_STICKY ? STICKY_NEAR_BAND : COLLIDER_ROW_TOL;
 }
