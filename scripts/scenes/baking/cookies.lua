@@ -31,6 +31,19 @@
 --                           own set, dough.lua's COOKIE_SET); the plugin's pore
 --                           cap. Not presets: the defaults are Table 2's cookie
 --                           with a real dough's conductivity.
+--   [--set preset=physical] h.library.dough.cookie (#18: a sugar-snap dough's density,
+--                           heat capacity and conductivity, its rates 50 times fast, latent
+--                           heat, boiling and browning on; 13.2 s stand for 11 minutes and the
+--                           frames' titles give the real time) in each oven of --set ovens
+--                           (h.library.oven.cookie's own bake is 190 degC); the same cookies,
+--                           each leavener a scaling the preset's CO2 rate by a / 0.015. It also
+--                           writes oven_<T>/browning.png and prints each cookie's browning at its
+--                           top, rim, base and centre. Measured (2D, dx 5 mm): it does not spread
+--                           (its yield stress, 150 Pa once the fat melts, holds its weight) and its
+--                           CO2 (the paper cookie's amount) barely yields it: the leavened cookie
+--                           stands 1.08x the unleavened at 190 degC, 1.15x at 150, 1.39x at 110 (docs/validation.md "The physical cookie
+--                           (#18, helper physcookie)"; claim_cookie_physical_leavened_taller, an
+--                           expected failure). until_t = 0 bakes the preset's own time (paper 5 s).
 --   [--set seed=2]        the particles' jitter (h.scene's seed, default 1): a
 --                           new sampling of the same dough, to see a reading's
 --                           noise (docs/validation.md, "Fig. 17: the top's
