@@ -770,6 +770,55 @@ print(f"dx {dx * 1e3:.0f} mm, t = {float(rows[-1]['t']):.0f} s (the preset's 60 
 sys.exit(0 if ce > dx and k < 0 and top1 > top0 else 1)
 PY
     ;;
+# #18, Ding §7.3 with the physical cookie (cookies.lua --set preset=physical: h.library.dough.cookie, a sugar-snap
+# dough's measured or composition-predicted density, heat capacity and conductivity, latent heat, boiling and
+# browning on; 13.2 s stand for 11 minutes at 190 degC, h.library.oven.cookie's bake). The same bar as
+# claim_cookie_leavened_taller, set before this was run: the most leavened cookie (0.015) ends at least 1.3x as tall
+# as the unleavened one, and domed (both measures of its top curve down). In the preset's own 190 degC oven, at the
+# scene's dx 5 mm and one finer (_fine, 3.75 mm, suite campaign).
+claim_cookie_physical_leavened_taller | claim_cookie_physical_leavened_taller_fine)
+    dx=0.005
+    [ "$case_name" = claim_cookie_physical_leavened_taller_fine ] && dx=0.00375
+    run cookies --set preset=physical --set dx=$dx --set frames=1 --set ovens=190 --set leaveners=0.015,0 >/dev/null
+    python3 - hearth-out/cookies/cookies.csv $dx <<'PY'
+import csv, sys
+rows = {float(r["leavener"]): r for r in csv.DictReader(open(sys.argv[1]))}
+h = {k: float(r["height_m"]) for k, r in rows.items()}
+w = {k: float(r["spread_m"]) for k, r in rows.items()}
+k = [float(rows[0.015][c]) for c in ("top_curvature_1_per_m", "top_curvature_particles_1_per_m")]
+se = float(rows[0.015]["top_curvature_particles_se_1_per_m"])
+ratio = h[0.015] / h[0.0]
+print(f"dx {float(sys.argv[2]) * 1e3:.2f} mm, 11 min at 190 degC: leavened {h[0.015] * 1e3:.1f} mm tall, {w[0.015] * 1e3:.1f} mm "
+      f"wide; unleavened {h[0.0] * 1e3:.1f} mm, {w[0.0] * 1e3:.1f} mm; ratio {ratio:.3f} (need >= 1.3); leavened top curvature "
+      f"{k[0]:.2f}, {k[1]:.2f} +- {se:.2f} 1/m (probe, particles +- the fit's standard error; domed: both < 0)")
+if ratio >= 1.3 and all(x < 0 for x in k):
+    sys.exit(0)
+print("EXPECTED FAILURE: the physical dough does not flow. Its yield stress once the fat has melted, 0.3 x 500 = 150 Pa "
+      "(lua/hearth/dough_physical.lua, cookie; COOKIE_SET), is above the shear its own weight puts on it (rho g H / 2 "
+      "~ 100 Pa for 17.5 mm at 1200 kg/m^3): the unleavened cookie keeps the raw dough's reading (19.1-19.2 mm tall, "
+      "61.5-62.2 mm wide at 5 mm, by its slot on the grid) in every oven, and the leavened one's CO2, the paper cookie's 3 s amount (~3e-5 mol/kg; a "
+      "real cookie's soda makes ~1e3 times that), lifts it 1.4 mm against that yield. Either lever passes the bar at 5 "
+      "mm: tau_y at 100 Pa (30 Pa melted) 24.9 / 18.0 mm, 1.38x, both spreading (78, 68 mm); or --set gas=3, 1.70x, the "
+      "unleavened still unspread; at gas=10 the stability guard stops the bake (the closed pores' gas outweighs the "
+      "stress); in a 110 degC oven, the dough soft for longer before it sets, 1.385x "
+      "(docs/validation.md, 'The physical cookie (#18, helper physcookie)')")
+sys.exit(77)
+PY
+    rc=$?
+    [ $rc -eq 77 ] && exit 77
+    [ $rc -eq 0 ] || fail "the physical leavened cookie is not 1.3x as tall and domed (numbers above)"
+    ;;
+# cookies.lua --set preset=physical refuses a lever on Table 2's cookie (here conductivity, a factor on Table 2's
+# kappa): exit non-zero before baking, the message naming the scene's file and line, the parameter and the preset
+# it belongs to.
+cookies_physical_lever_refused)
+    "$hearth" run "$scenes/cookies.lua" --quiet --set preset=physical --set conductivity=1 >out.txt 2>err.txt &&
+        fail "cookies.lua took --set conductivity=1 with preset=physical"
+    grep -q "cookies.lua:[0-9]*:.*--set conductivity=1: .*preset=paper only" err.txt ||
+        fail "the refusal does not name the file, line, parameter and preset: $(cat err.txt)"
+    [ -d hearth-out/cookies ] && [ -n "$(find hearth-out/cookies -name '*.png')" ] && fail "it baked before refusing"
+    cat err.txt
+    ;;
 # #18, Ding Fig. 2: the muffin's top tears as it domes. A tear is a notch in
 # the top of the intact batter (muffins.lua's tear_depth, tear_width over
 # one-cell bins of the highest particle with damage below 1) at least two

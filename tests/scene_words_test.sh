@@ -50,6 +50,7 @@ case "$case_name" in
 word_refused_loaf_physical_tray) refused scripts/scenes/baking/loaf_physical.lua tray=seperate separate separate sticky ;;
 word_refused_muffins_preset) refused scripts/scenes/baking/muffins.lua preset=phisical physical paper physical ;;
 word_refused_muffins_wall_mode) refused scripts/scenes/baking/muffins.lua wall_mode=slipp slip "${contact[@]}" ;;
+word_refused_cookies_preset) refused scripts/scenes/baking/cookies.lua preset=physcal physical paper physical ;;
 word_refused_cookies_tray_mode) refused scripts/scenes/baking/cookies.lua tray_mode=stiky sticky "${contact[@]}" ;;
 word_refused_tear_open_food) refused scripts/scenes/baking/tear_open.lua food=mufin muffin bread muffin ;;
 word_refused_marshmallow_only) refused scripts/scenes/baking/marshmallow.lua only=rwa raw "" raw roasted ;;

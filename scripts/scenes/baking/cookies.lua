@@ -31,6 +31,19 @@
 --                           own set, dough.lua's COOKIE_SET); the plugin's pore
 --                           cap. Not presets: the defaults are Table 2's cookie
 --                           with a real dough's conductivity.
+--   [--set preset=physical] h.library.dough.cookie (#18: a sugar-snap dough's density,
+--                           heat capacity and conductivity, its rates 50 times fast, latent
+--                           heat, boiling and browning on; 13.2 s stand for 11 minutes and the
+--                           frames' titles give the real time) in each oven of --set ovens
+--                           (h.library.oven.cookie's own bake is 190 degC); the same cookies,
+--                           each leavener a scaling the preset's CO2 rate by a / 0.015. It also
+--                           writes oven_<T>/browning.png and prints each cookie's browning at its
+--                           top, rim, base and centre. Measured (2D, dx 5 mm): it does not spread
+--                           (its yield stress, 150 Pa once the fat melts, holds its weight) and its
+--                           CO2 (the paper cookie's amount) barely yields it: the leavened cookie
+--                           stands 1.08x the unleavened at 190 degC, 1.15x at 150, 1.39x at 110 (docs/validation.md "The physical cookie
+--                           (#18, helper physcookie)"; claim_cookie_physical_leavened_taller, an
+--                           expected failure). until_t = 0 bakes the preset's own time (paper 5 s).
 --   [--set seed=2]        the particles' jitter (h.scene's seed, default 1): a
 --                           new sampling of the same dough, to see a reading's
 --                           noise (docs/validation.md, "Fig. 17: the top's
@@ -78,17 +91,39 @@
 -- 3e-5 against 1.4e-7 m^2/s: a 15-minute bake in 4 s), and every cookie has set
 -- (71-78 degC, COOKIE_SET) by ~3.5 s at 150 degC (centre 76-78 degC at 3 s, 95 at 4 s).
 local h = require "hearth"
-local P = h.params { dim = 2, dx = 0.005, until_t = 5, frames = 5, ovens = { 190, 150, 110 },
+local P = h.params { dim = 2, dx = 0.005, until_t = 0, frames = 5, ovens = { 190, 150, 110 },
   leaveners = { 0.015, 0.0075, 0 }, baseline = false, reaction_temperature = -1, reaction_width = -1, gas = 1,
   tray_mode = h.choice("separate", h.contact_words), tray_friction = 0.4, conductivity = 0.01, water = false, soft_until = -1, max_porosity = -1,
-  seed = 1, vent = 5 }
+  seed = 1, vent = -1,
+  preset = h.choice { "paper", paper = "h.library.paper.cookie: Ding Table 2, animation units",
+    physical = "h.library.dough.cookie: a real sugar-snap dough's properties, its bake in real minutes mapped" } }
+-- preset=physical (#18): h.library.dough.cookie and h.library.oven.cookie (lua/hearth/dough_physical.lua: each
+-- number's source; its rates run S = 50 times fast, so the 11 minute bake at 190 degC takes 13.2 s), latent heat,
+-- boiling and browning on. The same cookies: leavener a multiplies the preset's CO2 rate by a / 0.015, the
+-- leavener its rate stands for (Table 2's cookie alpha^g), as the paper path's gas_rate is a x GAS_SCALE. The
+-- levers below that change Table 2's cookie (baseline, conductivity, water, soft_until, max_porosity,
+-- reaction_*) are the paper preset's only; gas and the grid's words hold for both.
+local physical = P.preset == "physical"
+if physical then
+  for _, k in ipairs { { "baseline", false }, { "conductivity", 0.01 }, { "water", false }, { "soft_until", -1 },
+    { "max_porosity", -1 }, { "reaction_temperature", -1 }, { "reaction_width", -1 } } do
+    if P[k[1]] ~= k[2] then
+      error(("--set %s=%s: a lever on Table 2's cookie, for preset=paper only (the physical dough's numbers are "
+        .. "its own, lua/hearth/dough_physical.lua)"):format(k[1], tostring(P[k[1]])))
+    end
+  end
+end
+-- until_t 0: the preset's own bake (paper 5 s; physical h.library.oven.cookie.bake_time, 13.2 s for 11 minutes)
+if P.until_t < 0 then error(("--set until_t=%g: the bake's simulated seconds, must be >= 0 (0: the preset's)"):format(P.until_t)) end
 -- vent (m/s, the scene setting gas_vent; 0 = Ding et al.'s closed skin): a surface particle whose pores have
 -- opened (gas porosity >= 0.7, vent_porosity) loses its CO2 to the oven air (core/sim/fields/gas.c). 5 m/s is
 -- an open pore's ~0.02 m/s (CO2 diffusing out across a millimetre) at Table 2's heat, which bakes the cookie
 -- ~250 times fast (a 10-minute bake in 2.5 s); any value past ~1 m/s vents an open pore within a few steps.
 -- Without it the leavened cookie's top and rim swell past its crumb (issue #18, docs/validation.md "The
--- cookie's skin").
-if P.vent < 0 then error(("--set vent=%g: the CO2 vent velocity of open surface pores, m/s, must be >= 0"):format(P.vent)) end
+-- cookie's skin"). -1: the preset's, 5 m/s for paper and h.library.oven.cookie.gas_vent (0.02 m/s x S) for physical.
+if P.vent < 0 and P.vent ~= -1 then
+  error(("--set vent=%g: the CO2 vent velocity of open surface pores, m/s, must be >= 0 (or -1: the preset's)"):format(P.vent))
+end
 local d3 = P.dim == 3
 if P.soft_until ~= -1 and not (P.soft_until > 35 and P.soft_until < 70) then
   error(("--set soft_until=%g: must lie between Fig. 8's fat-melting and gelatinisation points, (35, 70) degC, "
@@ -99,10 +134,21 @@ local dx = d3 and math.max(P.dx, 0.01) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 local ovens, leaveners = P.ovens, P.leaveners
 
-local oven = h.library.paper_oven.cookie
-print(("cookies.lua: h.library.paper.cookie, animation units (Ding Table 2) with its conductivity x%g (1: Table 2's; "
-  .. "0.01: a real dough's): heat runs in seconds, not minutes; open surface pores vent CO2 at %g m/s (--set vent=0: "
-  .. "none)"):format(P.conductivity, P.vent))
+local oven = physical and h.library.oven.cookie or h.library.paper_oven.cookie
+local S = physical and oven.time_scale or nil -- the physical preset's rates run S times fast: t_real = S t
+local vent = P.vent ~= -1 and P.vent or physical and oven.gas_vent or 5
+local until_t = P.until_t > 0 and P.until_t or physical and oven.bake_time or 5
+-- the leavener the physical preset's CO2 rate stands for: Table 2's cookie alpha^g (h.library.paper.cookie's rate
+-- is it x GAS_SCALE)
+local A_PRESET = h.library.paper.cookie.gas_rate / h.library.dough_scale.gas
+if physical then
+  print(("cookies.lua: h.library.dough.cookie, %s; bake %.1f min in %.1f s; open surface pores vent CO2 at %g m/s")
+    :format(oven.units, until_t * S / 60, until_t, vent))
+else
+  print(("cookies.lua: h.library.paper.cookie, animation units (Ding Table 2) with its conductivity x%g (1: Table 2's; "
+    .. "0.01: a real dough's): heat runs in seconds, not minutes; open surface pores vent CO2 at %g m/s (--set vent=0: "
+    .. "none)"):format(P.conductivity, vent))
+end
 -- m: tray height, cookie spacing, dough radius and height. Each cookie is read
 -- in its own slot (SPACING wide, centred on it), so the slot must hold the
 -- cookie's whole spread: at 0.12 m the leavened cookie (60 mm raw, 110-130 mm
@@ -130,13 +176,16 @@ local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_pe
 local series = { "oven_degC,leavener,t,height_m,spread_m,centre_temperature_degC" }
 for _, T in ipairs(ovens) do
   local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.09, 0.12) },
-    oven = { temperature = T, beta = oven.beta }, gas_vent = P.vent, name = "cookies", seed = P.seed }
+    oven = { temperature = T, beta = oven.beta }, gas_vent = vent, name = "cookies", seed = P.seed,
+    browning = physical or nil, browning_scale = S, latent_heat = physical and oven.latent_heat or nil,
+    boiling_point = physical and oven.boiling_point or nil, vent_porosity = physical and oven.vent_porosity or nil }
   h.recipes.tray(s, TRAY, { temperature = T, beta = oven.pan_beta, mode = P.tray_mode, friction = P.tray_friction })
-  local xs, first = {}, {} -- first[i]: cookie i's first particle id (ids run in the order s:add made them)
+  local xs, first, gas_of = {}, {}, {} -- gas_of[i]: the physical cookie i's CO2 rate (mol/(kg s), S times fast); first[i]: cookie i's first particle id (ids run in the order s:add made them)
   for i, a in ipairs(leaveners) do
-    local d = h.library.paper.cookie
-    d.gas_rate = a * h.library.dough_scale.gas * P.gas
-    d.conductivity = d.conductivity * P.conductivity
+    local d = physical and h.library.dough.cookie or h.library.paper.cookie
+    if physical then d.gas_rate = d.gas_rate * a / A_PRESET * P.gas; gas_of[i] = d.gas_rate
+    else d.gas_rate = a * h.library.dough_scale.gas * P.gas end
+    if not physical then d.conductivity = d.conductivity * P.conductivity end
     local S0, WATER_S = 0.10, 600 -- the levers above: water as dough.lua's WATER (2e-7 m^2/s, 1.2e-3 kg/(m^2 s K), x600)
     if P.water then d.saturation, d.water_diffusivity, d.evaporation = S0, 2e-7 / (373.15 * S0) * WATER_S, 1.2e-3 * WATER_S end
     if P.soft_until ~= -1 then -- Table 2's cookie (tau_y 20 Pa, eta 500 x ETA_SCALE) with Fig. 8's 35 degC point held to soft_until
@@ -154,7 +203,7 @@ for _, T in ipairs(ovens) do
     xs[i] = (i - 0.5) * SPACING
     first[i] = s:stats().particles
     s:add { shape = h.shapes.cookie(v(xs[i], TRAY + THICK / 2, zc), R, THICK), material = mat,
-      temperature = oven.dough_temperature, saturation = P.water and S0 or nil, ppc = d3 and 8 or 4 }
+      temperature = oven.dough_temperature, saturation = physical and oven.saturation or P.water and S0 or nil, ppc = d3 and 8 or 4 }
   end
   first[#leaveners + 1] = s:stats().particles
   local function cookie_of(id) -- which cookie particle id belongs to
@@ -257,8 +306,8 @@ for _, T in ipairs(ovens) do
     return h.top_curvature(s, { keep = function(id) return cookie_of(id) == i end, origin = xs[i], bin = dx,
       fraction = 0.6, z = d3 and zc or nil, rest = rest_y })
   end
-  s:run { until_t = P.until_t, every = P.until_t / P.frames,
-    png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T) },
+  s:run { until_t = until_t, every = until_t / P.frames,
+    png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T), time_scale = S },
     on_frame = function(f)
       for i, a in ipairs(leaveners) do
         local hgt, spread = measure(i)
@@ -271,7 +320,7 @@ for _, T in ipairs(ovens) do
     local hgt, spread, curv = measure(i)
     local pcurv, pse = particle_curvature(i)
     local one = alone(i)
-    rows[#rows + 1] = ("%g,%g,%.3g,%.5f,%.5f,%.4f,%.4f,%d,%.4f"):format(T, a, P.baseline and 0 or a * h.library.dough_scale.gas,
+    rows[#rows + 1] = ("%g,%g,%.3g,%.5f,%.5f,%.4f,%.4f,%d,%.4f"):format(T, a, P.baseline and 0 or physical and gas_of[i] or a * h.library.dough_scale.gas,
       hgt, spread, curv, pcurv, one, pse)
     if one == 0 then
       print(("cookies.lua: warning: oven %g degC, leavener %g: the cookie reaches the edge of its slot (%.0f mm wide): "
@@ -281,4 +330,32 @@ for _, T in ipairs(ovens) do
       a, hgt, spread, curv, pcurv, pse))
   end
   h.write("cookies.csv", table.concat(rows, "\n") .. "\n")
+  if physical then -- the crust's colour (Zanoni et al. 1995's index, 0..1): a picture, and per cookie a printed line
+    s:png("browning", ("oven_%g/browning.png"):format(T), { time_scale = S })
+    local r = s:particles { fields = { "id", "x", "browning" } }
+    for i, a in ipairs(leaveners) do
+      -- top: the highest particle within dx/2 of the cookie's axis; rim: the one farthest from it; base: the lowest on
+      -- the axis; centre: the nearest to the axis' midpoint between base and top
+      local top, rim, base, ctr
+      for p = 1, r.n do
+        if cookie_of(r.id[p]) == i then
+          local u, y = math.abs(r.x[3 * p - 2] - xs[i]), r.x[3 * p - 1]
+          if not rim or u > math.abs(r.x[3 * rim - 2] - xs[i]) then rim = p end
+          if u < dx / 2 and (not d3 or math.abs(r.x[3 * p] - zc) < dx / 2) then
+            if not top or y > r.x[3 * top - 1] then top = p end
+            if not base or y < r.x[3 * base - 1] then base = p end
+          end
+        end
+      end
+      if top then
+        local ym = (r.x[3 * top - 1] + r.x[3 * base - 1]) / 2
+        for p = 1, r.n do
+          if cookie_of(r.id[p]) == i and (not ctr or math.abs(r.x[3 * p - 2] - xs[i]) + math.abs(r.x[3 * p - 1] - ym)
+              < math.abs(r.x[3 * ctr - 2] - xs[i]) + math.abs(r.x[3 * ctr - 1] - ym)) then ctr = p end
+        end
+        print(("oven %g degC, leavener %g: browning top %.3f, rim %.3f, base %.3f, centre %.3f"):format(T, a,
+          r.browning[top], r.browning[rim], r.browning[base], r.browning[ctr]))
+      end
+    end
+  end
 end
