@@ -100,7 +100,7 @@ D.goods = {
     -- 2.5 mm (docs/validation.md, "The physical loaf's oven spring"). Once the tray held only where the dough
     -- touches it (mpm_touch.c), 76 degC kept the base down but burst one flank of the 2.5 mm loaf and not the 5 mm
     -- one ("A body rests on what it touches", the opening temperature asked again): 70 stays.
-    ambient_pressure = 101325, open_temperature = 70,
+    ambient_pressure = 101325, open_temperature = 78,
     -- CO2: the order a proof retains: doubling this dough's volume (0.5 of it gas) in about an hour at 30 degC is
     -- p V / (R T) = 101325 x (0.5 / 484) / (8.314 x 303) = 0.042 mol/kg per hour, 1.15e-5 mol/(kg s) (a proof's
     -- usual hour; the preset's own 50% porosity), at the bell's 30 degC: the peak rate 1.15e-5 / exp(-(10/20)^2).
@@ -126,9 +126,37 @@ D.goods = {
     -- rheology: short doughs are stiffer than bread dough (G' 1e4-1e5 Pa, Dobraszczyk & Morgenstern 2003's range for
     -- doughs); E = 1e5, yield 500 Pa, viscosity 1e5 Pa s; the cookie spreads as the fat melts (Fig. 8's dip)
     E = 1e5, nu = 0.3, tau_y = 500, mu = 1e5,
-    -- CO2 as bread's: the gas the paper cookie's rate makes in 3 s (cookies.lua's bake when this was chosen; it
-    -- bakes 5 s since session 33 and the amount here stays as chosen), spread over the real bake
-    gas_rate = 0.015 / 600 * 3 / 660, reaction_temperature = 40, reaction_width = 20, porosity = 0.1,
+    -- CO2: a sugar-snap cookie's soda (issue #18, helper sodacookie). The formula: the micro sugar-snap cookie of
+    -- AACC Method 10-52 as the Wheat Marketing Center's "Wheat and Flour Testing Methods" (wheatflourbook.org, 2008;
+    -- "Sugar Snap Cookie") gives it: flour 40 g (14% moisture), sugar 24 g, shortening 12 g, nonfat dry milk 1.2 g,
+    -- NaHCO3 0.40 g dry plus 0.32 g in solution, NH4Cl 0.20 g and salt 0.18 g in solution, water 0.3-2.1 mL more;
+    -- baked 11 minutes at 205 degC. The soda, 0.72 / 84.01 = 8.57 mmol, meets an acid salt, NH4Cl 0.20 / 53.49 = 3.74
+    -- mmol: NaHCO3 + NH4Cl -> NaCl + NH3 + H2O + CO2 gives one CO2 per NH4Cl, 3.74 mmol; the soda left over, 4.83
+    -- mmol, has no acid and decomposes by heat alone, 2 NaHCO3 -> Na2CO3 + H2O + CO2, half a mole each: 2.42 mmol.
+    -- 6.16 mmol CO2 in all (the NH3, 3.74 mmol more gas, is taken to stay in the dough's water, uncounted: eq. 12
+    -- carries one gas). The dough's mass: 78.3 g of ingredients, the solutions' water not given there; at this
+    -- preset's 18% water (flour's 5.6 g included) it is 72.7 / 0.82 = 88.7 g, so 6.16 / 88.7 = 0.069 mol/kg (0.078
+    -- at 78.6 g, the solutions holding no water and 0.3 mL added). Every mole assumes the soda reacts whole in the bake.
+    -- When: a soda is heat-triggered, not a yeast's 40 degC bell. NaHCO3 decomposes gradually from 80-100 degC and
+    -- faster toward 200 (en.wikipedia.org "Sodium bicarbonate", thermal decomposition; no dough DSC found here), and
+    -- the NH4Cl reaction runs as the dough heats and its NH3 and CO2 leave. Ding et al.'s eq. 14 bell is what the
+    -- plugin has: centre theta_r = 100 degC (the top of that range and the dough's boiling plateau), width 20 K, so
+    -- the rate is e^-1 of its peak at 80 degC, 2% at 60 and 1e-7 in the 20 degC raw dough. The bell falls again past
+    -- 100 degC where a real soda's rate keeps rising; only the crust passes 100. Eq. 14 has no depletion, so the rate
+    -- is set by the amount: the peak rate is 0.069 mol/kg over the 229 s the bell integrates to along the dough's
+    -- centre temperature in this preset's 190 degC, 11 minute bake (cookies.lua --set preset=physical, dx 5 mm,
+    -- series.csv, 22 frames, with this preset's earlier gas: 20 degC to 100 at 11 minutes): 0.069 / 229 = 3.0e-4
+    -- mol/(kg s) (under the gas law below the centre reads 216 s, 0.065 mol/kg). The hotter outer dough makes more
+    -- than the centre, the crust past 100 degC less.
+    -- The gas law: bread's, eq. 13 over the atmosphere (ambient_pressure; the bread entry above says why). With eq.
+    -- 13 as printed (the pores' whole gas, porosity 0.1) this amount stopped the bake at 49 s of 11 minutes: the
+    -- stability guard, 13.9 kPa of CO2 in a hot particle whose stress had gone to 0 (docs/validation.md, "The physical
+    -- cookie's soda"). Porosity 0.15: the ~15% air of the density above, which this law fills at p_a. The cells
+    -- open where the dough has set, 78 degC (COOKIE_SET's end, within the 71-81 degC of pore opening Zhang et al.
+    -- 2025 measure in bread, as bread's open_temperature takes its set): at 95 the leavened cookie spread to 130 mm
+    -- and dished, and at 100 the pores' vapour reaches p_a and both cookies burst.
+    gas_rate = 0.069 / 229, reaction_temperature = 100, reaction_width = 20, porosity = 0.15,
+    ambient_pressure = 101325, open_temperature = 78,
     expansion = 0.1, dough_temperature = 20,
     -- the set: a sugar-snap dough's gluten glass transition at 71-78 degC, no starch gelatinisation (lua/hearth/dough.lua,
     -- COOKIE_SET, the same curve as h.library.paper.cookie's)

@@ -40,10 +40,13 @@
 --                           writes oven_<T>/browning.png and prints each cookie's browning at its
 --                           top, rim, base and centre. Measured (2D, dx 5 mm): it does not spread
 --                           (its yield stress, 150 Pa once the fat melts, holds its weight) and its
---                           CO2 (the paper cookie's amount) barely yields it: the leavened cookie
---                           stands 1.08x the unleavened at 190 degC, 1.15x at 150, 1.39x at 110 (docs/validation.md "The physical cookie
---                           (#18, helper physcookie)"; claim_cookie_physical_leavened_taller, an
---                           expected failure). until_t = 0 bakes the preset's own time (paper 5 s).
+--                           CO2 (a sugar-snap soda's, 0.069 mol/kg, made from ~80 degC) comes
+--                           mostly after it sets and its cells open (78 degC): the leavened cookie
+--                           stands 1.06x the unleavened at 190 degC, 1.12x at 150, 1.22x at 110
+--                           (docs/validation.md "The physical cookie's soda (#18, helper sodacookie)";
+--                           claim_cookie_physical_leavened_taller, an expected failure). The
+--                           leavener a scales the preset's soda by a / 0.015, so 0.015 is the
+--                           formula's. until_t = 0 bakes the preset's own time (paper 5 s).
 --   [--set seed=2]        the particles' jitter (h.scene's seed, default 1): a
 --                           new sampling of the same dough, to see a reading's
 --                           noise (docs/validation.md, "Fig. 17: the top's
