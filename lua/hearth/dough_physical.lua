@@ -100,7 +100,7 @@ D.goods = {
     -- 2.5 mm (docs/validation.md, "The physical loaf's oven spring"). Once the tray held only where the dough
     -- touches it (mpm_touch.c), 76 degC kept the base down but burst one flank of the 2.5 mm loaf and not the 5 mm
     -- one ("A body rests on what it touches", the opening temperature asked again): 70 stays.
-    ambient_pressure = 101325, open_temperature = 78,
+    ambient_pressure = 101325, open_temperature = 70,
     -- CO2: the order a proof retains: doubling this dough's volume (0.5 of it gas) in about an hour at 30 degC is
     -- p V / (R T) = 101325 x (0.5 / 484) / (8.314 x 303) = 0.042 mol/kg per hour, 1.15e-5 mol/(kg s) (a proof's
     -- usual hour; the preset's own 50% porosity), at the bell's 30 degC: the peak rate 1.15e-5 / exp(-(10/20)^2).
