@@ -46,14 +46,12 @@
 --                  on the tray (with eq. 4.2's early set the roll rose 1.14x, the gas
 --                  volume reached before the crumb set; with MU_E_SET 1.43x, and the
 --                  base's ends lift from 1.6 s: docs/validation.md "The roll's base:
---                  its own squeeze", "The roll's set");
---                hourglass = 1: the pairs' motion that eq. 3.27's velocity gradient
---                  does not describe (two particles closing inside one kernel, which
---                  own_squeeze's det F does not see) is damped with the dough's own
---                  pair viscosity (core/sim/solver/sph_hourglass.c): without it single
---                  particles of the hot dough sprang apart at 0.25-0.8 m/s for 21% of
---                  1.5-1.9 s and the roll hopped 1.55 mm on its tray; with it 2%, no
---                  hop (docs/validation.md "The roll's bounce on its tray").
+--                  its own squeeze", "The roll's set").
+--              Not in it: sph.hourglass (core/sim/solver/sph_hourglass.c), which damps
+--                the pairs' motion eq. 3.27's gradient does not describe: at 2 mm it
+--                stopped the roll hopping and kept it whole to 3 s, but the 1.5 mm
+--                roll tore 2.08% at 2.0 s with it, where it is whole without
+--                (docs/validation.md "Hourglass control for the roll's dough").
 --   .paper     eq. 4.2 as printed, mu_e through (T0, mu_e0), (Tc, mu_ec), (Tf, mu_ef) of
 --              Table 4.1 (animation units; the scene scales it by 100 with --set
 --              mu_e_curve=table).
@@ -106,7 +104,7 @@ return function(h)
         -- eps_f: §4.3's text value 0.5, not Table 4.1's 5 (XSPH overshoots above 1; the core refuses it)
         sph = { xsph0 = t.eps0, xsph_f = 0.5, xsph_T0 = t.T0, xsph_Tf = t.Tf, tension = true, artificial_stress = 0.5,
                 gas_law = true, bubble_vapour = 0.95, bubble_T0 = t.T0, renormalised_density = true,
-                gas_pressure = 101325, own_squeeze = true, hourglass = 1 },
+                gas_pressure = 101325, own_squeeze = true },
         table = (function() local c = {} for k, v in pairs(t) do c[k] = v end return c end)(),
       }
     end,

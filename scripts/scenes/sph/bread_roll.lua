@@ -12,10 +12,11 @@
 -- rho0 / V_b(T) with the dough's water vapour (sph.gas_law, sph.bubble_vapour),
 -- each bubble as stiff as its own gas, P_a - P_v (sph.gas_pressure = 101325):
 -- the bubbles grow with their temperature, and only with it; the dough reads
--- a squeeze only as far as its own det F confirms it (sph.own_squeeze), and
--- the pairs' motion its velocity gradient does not see is damped
--- (sph.hourglass; --set hourglass=0 gives the roll that hops on its tray:
--- docs/validation.md "The roll's bounce on its tray").
+-- a squeeze only as far as its own det F confirms it (sph.own_squeeze).
+-- --set hourglass=1 damps the pairs' motion its velocity gradient does not
+-- see (sph.hourglass): at 2 mm the roll then no longer hops on its tray and
+-- stays whole to 3 s, but at 1.5 mm it tore 2.08% at 2.0 s (docs/validation.md
+-- "Hourglass control for the roll's dough").
 -- Measured (2D default, from the particles, tests/sph_roll_measure.py: the
 -- dough with its closed gas cells, less what is torn): whole in every frame
 -- to 2 s, 1.3x at 1.3 s and 1.43x at 1.9 s (1.5 mm alike), its crumb soft
