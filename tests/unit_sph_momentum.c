@@ -133,7 +133,7 @@ TEST(sph_xsph_pair_eps_damps_between_its_ends) {
  * blocks above (one temperature, XSPH's epsilon 0.05) at hourglass 1 and 10,
  * |P| within 1e-12 of sum m |v| after 40 steps, as XSPH is held. (Taking
  * the sweeps' velocities as the new ones does not keep it: the bread roll
- * slid 1.7 mm sideways in 2 s, docs/validation.md "The roll's bounce on its
+ * slid 1.6 mm sideways in 2 s, docs/validation.md "The roll's bounce on its
  * tray".) */
 TEST(sph_hourglass_keeps_momentum) {
     const double alpha[2] = {1, 10};

@@ -42,8 +42,8 @@
  * pair forces above, with v* in delta, are added to v' explicitly. A solved
  * v* makes that last pass v* itself; an unfinished one still gives equal and
  * opposite pair forces. (The Jacobi result taken as the new velocity keeps
- * no momentum: the roll slid 5 mm sideways in 2 s with one sweep, 1.7 mm
- * with four.) Fixed particles (walls) take no part: their pairs have
+ * no momentum: the roll slid 5 mm sideways in 2 s solved for v_i alone, 1.6
+ * mm after four sweeps.) Fixed particles (walls) take no part: their pairs have
  * Morris et al.'s no-slip velocities (sph_walls.c). Every loop writes only
  * its own particle's entries, so any thread count gives the same bits. */
 #include <math.h>
