@@ -557,48 +557,52 @@ TEST(sph_refuses_saturation) {
 TEST(sph_alloc_failure_paths) {
     const size_t base = hearth_bytes_allocated();
     const double lo[3] = {0, 0, 0}, hi[3] = {0.2, 0.2, 0};
-    int failures = 0, ok = 0;
-    for (long k = 0; k < 400 && !ok; k++) {
-        hearth_scene_def d = sph_def(2, 0.01, lo, hi);
-        mem_fail_after(k);
-        hearth_error err = {0};
-        hearth_scene *s = hearth_scene_create(&d, &err);
-        ok = s != NULL;
-        int m = -1;
-        if (ok) {
-            const char *n[] = {"density", "bulk", "viscosity"};
-            const double v[] = {1000, 1e4, 0.1};
-            m = hearth_scene_add_material(s, "newtonian", n, v, 3, &err);
+    for (int hg = 0; hg < 2; hg++) { /* then with sph.hourglass, whose scratch is its own allocation */
+        int failures = 0, ok = 0;
+        for (long k = 0; k < 400 && !ok; k++) {
+            hearth_scene_def d = sph_def(2, 0.01, lo, hi);
+            d.sph.hourglass = hg;
+            mem_fail_after(k);
+            hearth_error err = {0};
+            hearth_scene *s = hearth_scene_create(&d, &err);
+            ok = s != NULL;
+            int m = -1;
+            if (ok) {
+                const char *n[] = {"density", "bulk", "viscosity"};
+                const double v[] = {1000, 1e4, 0.1};
+                m = hearth_scene_add_material(s, "newtonian", n, v, 3, &err);
+            }
+            ok = ok && m >= 0;
+            const double c[3] = {0.1, 0.1, 0}, h[3] = {0.05, 0.05, 0};
+            hearth_shape *b = hearth_shape_box(c, h);
+            ok = ok && b && hearth_scene_seed_shape(s, m, b, 1, 0.0, NULL, &err) > 0;
+            hearth_shape_free(b);
+            /* a moving wall under the block: its motion record is allocated too */
+            const double wc[3] = {0.1, 0.02, 0}, wh[3] = {0.08, 0.015, 0}, U[3] = {0.01, 0, 0};
+            hearth_shape *wb = ok ? hearth_shape_box(wc, wh) : NULL;
+            const int shape_nomem = !b || (ok && !wb); /* a shape's allocation has no error to report */
+            hearth_body_def bd = hearth_default_body_def();
+            bd.shape = wb, bd.material = m, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1;
+            const int wall = ok && wb ? hearth_scene_add_body(s, &bd, &err) : -1;
+            hearth_shape_free(wb);
+            ok = ok && wb && wall >= 0 &&
+                 hearth_scene_body_motion(s, wall, U, NULL, NULL, NULL, NULL, &err) == HEARTH_OK;
+            ok = ok && hearth_scene_step(s, 2, &err) == HEARTH_OK;
+            mem_fail_after(-1);
+            if (!ok) {
+                failures++;
+                if (!(err.code == HEARTH_ERR_NOMEM || shape_nomem)) fprintf(stderr, "  failure %ld: %s\n", k, err.msg);
+                CHECK(err.code == HEARTH_ERR_NOMEM || shape_nomem);
+            }
+            hearth_scene_destroy(s);
+            if (hearth_bytes_allocated() > base + 4096) /* the plugin cache may keep its first entry */
+                printf("  injected failure %ld left %zu bytes counted\n", k, hearth_bytes_allocated() - base);
+            CHECK(hearth_bytes_allocated() <= base + 4096);
         }
-        ok = ok && m >= 0;
-        const double c[3] = {0.1, 0.1, 0}, h[3] = {0.05, 0.05, 0};
-        hearth_shape *b = hearth_shape_box(c, h);
-        ok = ok && b && hearth_scene_seed_shape(s, m, b, 1, 0.0, NULL, &err) > 0;
-        hearth_shape_free(b);
-        /* a moving wall under the block: its motion record is allocated too */
-        const double wc[3] = {0.1, 0.02, 0}, wh[3] = {0.08, 0.015, 0}, U[3] = {0.01, 0, 0};
-        hearth_shape *wb = ok ? hearth_shape_box(wc, wh) : NULL;
-        const int shape_nomem = !b || (ok && !wb); /* a shape's allocation has no error to report */
-        hearth_body_def bd = hearth_default_body_def();
-        bd.shape = wb, bd.material = m, bd.ppc = 1, bd.jitter = 0, bd.fixed = 1;
-        const int wall = ok && wb ? hearth_scene_add_body(s, &bd, &err) : -1;
-        hearth_shape_free(wb);
-        ok = ok && wb && wall >= 0 && hearth_scene_body_motion(s, wall, U, NULL, NULL, NULL, NULL, &err) == HEARTH_OK;
-        ok = ok && hearth_scene_step(s, 2, &err) == HEARTH_OK;
-        mem_fail_after(-1);
-        if (!ok) {
-            failures++;
-            if (!(err.code == HEARTH_ERR_NOMEM || shape_nomem)) fprintf(stderr, "  failure %ld: %s\n", k, err.msg);
-            CHECK(err.code == HEARTH_ERR_NOMEM || shape_nomem);
-        }
-        hearth_scene_destroy(s);
-        if (hearth_bytes_allocated() > base + 4096) /* the plugin cache may keep its first entry */
-            printf("  injected failure %ld left %zu bytes counted\n", k, hearth_bytes_allocated() - base);
-        CHECK(hearth_bytes_allocated() <= base + 4096);
+        printf("  hourglass %d: %d injected failures reported cleanly before a run succeeded\n", hg, failures);
+        CHECK(ok);
+        CHECK(failures > 10);
     }
-    printf("  %d injected failures reported cleanly before a run succeeded\n", failures);
-    CHECK(ok);
-    CHECK(failures > 10);
 }
 
 /* SPH never transfers to the grid: its scene makes the grid's geometry (the

@@ -214,6 +214,14 @@ static const hearth_setting settings[] = {
         "2.44) and comes out into the bubbles as the dough heats (each bubble draws on an even share of the "
         "particles' water per raw gas volume); 0 = none",
         0, 0, 0.9),
+    /* SPH's zero-energy modes: a pair that closes inside one kernel moves no
+     * velocity gradient (eq. 3.27), so nothing the dough reads from det F
+     * holds it (docs/validation.md "The roll's bounce on its tray") */
+    SPH(hourglass, "1",
+        "hourglass control: each pair's relative velocity along its line beyond what the velocity gradient (eq. 3.27) "
+        "predicts is damped with this many times the pair's viscosity (eq. 3.19), implicitly (Ganzenmueller 2015's "
+        "control in rate form); 0 = off",
+        0, 0, 100),
 };
 
 const hearth_setting *hearth_scene_settings(int *n) {

@@ -47,6 +47,11 @@
 --                  volume reached before the crumb set; with MU_E_SET 1.43x, and the
 --                  base's ends lift from 1.6 s: docs/validation.md "The roll's base:
 --                  its own squeeze", "The roll's set").
+--              Not in it: sph.hourglass (core/sim/solver/sph_hourglass.c), which damps
+--                the pairs' motion eq. 3.27's gradient does not describe: at 2 mm it
+--                stopped the roll hopping and kept it whole to 3 s, but the 1.5 mm
+--                roll tore 2.08% at 2.0 s with it, where it is whole without
+--                (docs/validation.md "Hourglass control for the roll's dough").
 --   .paper     eq. 4.2 as printed, mu_e through (T0, mu_e0), (Tc, mu_ec), (Tf, mu_ef) of
 --              Table 4.1 (animation units; the scene scales it by 100 with --set
 --              mu_e_curve=table).

@@ -211,6 +211,7 @@ typedef struct hearth_sph_def {
     int own_squeeze;      ///< with gas_law: Tait (eq. 3.17) reads the summed density (eq. 3.13) only as far as the particle's own volume m / (V0 det F) confirms a squeeze, min(rho_sum, max(rho0, rho_own)): the sum's tension holds the films, and a held-back bubble's missing volume no longer reads as its dough neighbours' squeeze; default 0
     double gas_pressure;   ///< with gas_law: the outside pressure P_a (Pa) whose ideal gas a bubble holds: its stiffness is its gas's own, P_a - P_v(T) (the vapour's partial pressure, eq. 2.42-2.43), at any dough stiffness, so it pushes (P_a - P_v)(rho / rho_b - 1), its ideal gas exactly; 0 = the dough's Tait B (default)
     double dough_water;    ///< with gas_law: the dough's water as a mass fraction (kg/kg, bread dough ~0.43); CO2 dissolves in it by Henry's law (Sander 2015; thesis eq. 2.44, Fan et al.) and comes out of solution into the bubbles as it heats, each bubble drawing on an even share of all the particles' water per unit raw gas volume; 0 = no dissolved CO2 (default)
+    double hourglass;      ///< hourglass control: each pair's relative velocity along its line beyond what eq. 3.27's velocity gradient predicts is damped with this many times eq. 3.19's pair viscosity (implicit; sph_hourglass.c, after Ganzenmueller 2015's control in rate form); 0 = off (default)
 } hearth_sph_def;
 
 /// A scene's settings. Each field is one row of hearth_scene_settings(), which

@@ -29,6 +29,8 @@
  *                        et al. 1997), artificial viscosity beta term (3.41),
  *                        surface tension (3.30), gravity; the kick
  *                        (sph_forces.c)
+ *   sph_hourglass        with sph.hourglass, the pairs' motion (3.27) does not
+ *                        describe damped, implicitly (sph_hourglass.c)
  *   sph_heat_rates       heat (sph_heat.c): internal (3.45-3.46), external
  *                        at surface particles (3.42), the oven's Robin flux
  *                        and heated colliders' contact beta (as MPM)
@@ -205,6 +207,7 @@ static void sph_free(hearth_scene *s) {
     arrays_free(st, st->cap);
     mem_free(st->visc_index, sizeof(int) * (size_t)st->visc_cap);
     sph_water_free(st);
+    sph_hourglass_free(st);
     mem_free(st, sizeof *st);
     s->sph = NULL;
 }
@@ -814,6 +817,7 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     rep->mover = -1;
     hearth_status e = ensure(s, n > 0 ? n : 1, err);
     if (!e) e = sph_water_ensure(s, n > 0 ? n : 1, err); /* only with water or latent_heat */
+    if (!e) e = sph_hourglass_ensure(s, n > 0 ? n : 1, err); /* only with sph.hourglass */
     if (e) return e;
     struct sph_state *st = s->sph;
     if (st->n != n) /* particles added or removed since the last step: final densities start over */
@@ -833,6 +837,7 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     if (phase_stress(s, dt, rep)) return HEARTH_OK; /* the guard reads rep */
     sph_artificial_stress(s);
     sph_forces(s, dt);
+    sph_hourglass(s, dt);
     sph_heat_rates(s); /* reads st->vc and st->sp (sph_kinematics) */
     if (water_active(s)) sph_water_rates(s); /* after the heat: the latent sink takes from st->dT */
     phase_xsph(s);
@@ -869,7 +874,8 @@ static double sph_bytes_per_particle(const hearth_scene *s) {
     const double nb = s->def.dim == 3 ? 4.0 / 3.0 * SPH_PI * hf * hf * hf : SPH_PI * hf * hf;
     const double entry = 2 * sizeof(int) + (s->def.dim + 1) * sizeof(double);
     const double water = sph_water_live(s) ? SPH_WATER_ARRAYS : 0; /* sph_water_ensure's, with the same margin */
-    return 1.25 * ((doubles + water) * sizeof(double) + 2 * sizeof(int)) + sizeof(int) + 1.25 * nb * entry;
+    const double hg = sph_hourglass_doubles(s); /* sph_hourglass_ensure's, likewise */
+    return 1.25 * ((doubles + water + hg) * sizeof(double) + 2 * sizeof(int)) + sizeof(int) + 1.25 * nb * entry;
 }
 
 /* No grid, so no margin: particles may fill the whole box. */

@@ -62,6 +62,8 @@ struct sph_state {
     int visc_cap;
     sph_wall_motion *walls; /* moving fixed bodies (hearth_scene_body_motion), nwalls of walls_cap */
     int nwalls, walls_cap;
+    double *hg; /* sph_hourglass.c's scratch, made only with sph.hourglass (sph_hourglass_ensure; hg_cap particles) */
+    int hg_cap;
 };
 
 /* The particle columns a phase reads. Sorting permutes the particles, and
@@ -199,6 +201,13 @@ double sph_water_stable_dt(const hearth_scene *s, double hmin, double rhomin);
 /// With sph.gas_law: st->rhof (each particle's rest density: rho0, a bubble's
 /// rho0 / V_b(T)) and st->prs against it; st->Tprev <- T.
 void sph_pressure_gas_law(hearth_scene *s);
+/* sph_hourglass.c: sph.hourglass's damping of the pairs' motion eq. 3.27's gradient does not describe,
+ * into st->vnew after sph_forces' kick; its scratch (made only when on), freed by sph_hourglass_free;
+ * the doubles per particle it keeps (0 when off). */
+void sph_hourglass(hearth_scene *s, double dt);
+hearth_status sph_hourglass_ensure(hearth_scene *s, int n, hearth_error *err);
+void sph_hourglass_free(struct sph_state *st);
+int sph_hourglass_doubles(const hearth_scene *s);
 /// A bubble's stiffness (Pa) at T (degC): its gas's own P_a - P_v(T) with
 /// sph.gas_pressure = P_a, else the dough's Tait B.
 double sph_gas_modulus(const hearth_sph_def *o, double B, double T);
