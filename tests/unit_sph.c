@@ -270,35 +270,52 @@ TEST(sph_extremes) {
         }
 }
 
-/* 1 and 2 threads give the same particles bit for bit (a scene above the
- * parallel threshold, with plugin stress, XSPH and artificial viscosity). */
-TEST(sph_determinism_threads) {
-    uint64_t hsh[2];
-    for (int k = 0; k < 2; k++) {
-        hearth_set_threads(k + 1);
-        const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.2, 0.2, 0};
-        hearth_scene_def d = sph_def(2, dx, lo, hi);
-        d.sph.xsph0 = 0.1;
-        d.sph.av_beta = 1;
-        hearth_scene *s = hearth_scene_create(&d, NULL);
-        const char *n[] = {"density", "viscosity", "mu_e", "bulk"};
-        const double v[] = {1000, 0.5, 100, 1e4};
-        hearth_error err;
-        int m = hearth_scene_add_material(s, "maxwell_sph", n, v, 4, &err);
-        double c[3] = {0.1, 0.06, 0}, hh[3] = {0.05, 0.05, 0.5};
-        hearth_shape *bx = hearth_shape_box(c, hh);
-        hearth_body_def bd = hearth_default_body_def();
-        bd.shape = bx, bd.material = m, bd.ppc = 1, bd.jitter = 0.5;
-        CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
-        hearth_shape_free(bx);
-        CHECK(s->ps.n > SCENE_PARALLEL_MIN);
-        CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
-        hsh[k] = hearth_scene_hash(s);
-        hearth_scene_destroy(s);
-    }
+/* The particles' hash after 20 steps at the given thread count (a scene above
+ * the parallel threshold, with plugin stress, XSPH and artificial viscosity,
+ * and sph.hourglass at the given strength). */
+static uint64_t determinism_hash(int threads, double hourglass) {
+    hearth_set_threads(threads);
+    const double dx = 0.002, lo[3] = {0, 0, 0}, hi[3] = {0.2, 0.2, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.sph.xsph0 = 0.1;
+    d.sph.av_beta = 1;
+    d.sph.hourglass = hourglass;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    const char *n[] = {"density", "viscosity", "mu_e", "bulk"};
+    const double v[] = {1000, 0.5, 100, 1e4};
+    hearth_error err;
+    int m = hearth_scene_add_material(s, "maxwell_sph", n, v, 4, &err);
+    double c[3] = {0.1, 0.06, 0}, hh[3] = {0.05, 0.05, 0.5};
+    hearth_shape *bx = hearth_shape_box(c, hh);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = bx, bd.material = m, bd.ppc = 1, bd.jitter = 0.5;
+    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    hearth_shape_free(bx);
+    CHECK(s->ps.n > SCENE_PARALLEL_MIN);
+    CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+    uint64_t hsh = hearth_scene_hash(s);
+    hearth_scene_destroy(s);
     hearth_set_threads(1);
+    return hsh;
+}
+
+/* 1 and 2 threads give the same particles bit for bit. */
+TEST(sph_determinism_threads) {
+    uint64_t hsh[2] = {determinism_hash(1, 0), determinism_hash(2, 0)};
     printf("hash 1 thread %016llx, 2 threads %016llx\n", (unsigned long long)hsh[0], (unsigned long long)hsh[1]);
     CHECK(hsh[0] == hsh[1]);
+}
+
+/* The same with sph.hourglass on (its Jacobi sweeps and pair forces run in
+ * parallel loops that each write one particle's own entries), and it must
+ * change the run, or the check would pass on a switch that does nothing. */
+TEST(sph_hourglass_determinism_threads) {
+    uint64_t hsh[2] = {determinism_hash(1, 1), determinism_hash(2, 1)};
+    uint64_t off = determinism_hash(1, 0);
+    printf("hourglass 1: hash 1 thread %016llx, 2 threads %016llx (off: %016llx)\n", (unsigned long long)hsh[0],
+           (unsigned long long)hsh[1], (unsigned long long)off);
+    CHECK(hsh[0] == hsh[1]);
+    CHECK(hsh[0] != off);
 }
 
 /* The loops written for one h (sph_fast_paths: in 2D the neighbour walk,
@@ -636,4 +653,4 @@ TEST(sph_keeps_no_grid_tables) {
     hearth_scene_destroy(s);
 }
 
-TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_kernel_one_pass_same_bits), T(sph_neighbours_agree), T(sph_hydrostatic), T(sph_extremes), T(sph_determinism_threads), T(sph_fast_paths_same_bits), T(sph_integrators_free_fall), T(sph_adaptive_h), T(sph_solver_table), T(sph_viscosity_rule), T(sph_porosity_supplied), T(sph_refuses_saturation), T(sph_alloc_failure_paths), T(sph_keeps_no_grid_tables))
+TEST_MAIN(T(sph_kernel_normalisation), T(sph_kernel_gradient_support), T(sph_kernel_one_pass_same_bits), T(sph_neighbours_agree), T(sph_hydrostatic), T(sph_extremes), T(sph_determinism_threads), T(sph_hourglass_determinism_threads), T(sph_fast_paths_same_bits), T(sph_integrators_free_fall), T(sph_adaptive_h), T(sph_solver_table), T(sph_viscosity_rule), T(sph_porosity_supplied), T(sph_refuses_saturation), T(sph_alloc_failure_paths), T(sph_keeps_no_grid_tables))
