@@ -794,15 +794,16 @@ print(f"dx {float(sys.argv[2]) * 1e3:.2f} mm, 11 min at 190 degC: leavened {h[0.
 if ratio >= 1.3 and all(x < 0 for x in k):
     sys.exit(0)
 print("EXPECTED FAILURE: the physical dough does not flow and its soda's CO2 comes after it has set. Its yield stress "
-      "once the fat has melted, 0.3 x 500 = 150 Pa (lua/hearth/dough_physical.lua, cookie; COOKIE_SET), is above the "
-      "shear its own weight puts on it (rho g H / 2 ~ 100 Pa for 17.5 mm at 1200 kg/m^3), so the unleavened cookie "
-      "does not spread (61.5-62.2 mm raw, 64.5-65.3 baked at 5 mm; it stands 1.5 mm taller than the raw dough from "
-      "its pores' air and vapour). The leavened one's CO2 is a sugar-snap soda's (AACC 10-52's NaHCO3 and NH4Cl, "
-      "0.069 mol/kg) on a heat-triggered bell (100 +- 20 degC), under the atmosphere's gas law with the cells open "
-      "from the set's 78 degC: the dough's centre makes 7% of its gas below 78 degC, so the leavened cookie gains "
-      "~1.3 mm. Levers at 5 mm (scratch): the bell's centre at the cited onset, 80 degC (same amount), 1.29x with a "
-      "torn, dished top; --set gas=3, 1.27x, not domed; --set gas=10, 1.53x and domed, ten times the formula's soda; "
-      "eq. 13 as printed (no atmosphere) stops the bake at 49 s (docs/validation.md, 'The physical cookie's soda')")
+      "is now measured (In, Jeong & Min 2022: cookie doughs with oil, 50-73 Pa in shear; lua/hearth/dough_physical.lua, "
+      "cookie): 61.5 Pa in shear once the fat has melted (tau_y 355 x 0.3 = 106.5 Pa on the von Mises surface), and a "
+      "yield-stress layer 30 mm in half-width holds a centre sqrt(2 x 61.5 x 0.03 / (1200 x 9.81)) = 17.7 mm tall, the "
+      "raw dough's 17.5, so the unleavened cookie barely spreads (61.5 mm raw, 65.2 baked at 5 mm; it stands 1.5 mm "
+      "taller than the raw dough from its pores' air and vapour). The leavened one's CO2 is a sugar-snap soda's (AACC "
+      "10-52's NaHCO3 and NH4Cl, 0.069 mol/kg) on a heat-triggered bell (100 +- 20 degC), under the atmosphere's gas "
+      "law with the cells open from the set's 78 degC: the dough's centre makes 7% of its gas below 78 degC, so the "
+      "leavened cookie gains ~1.5 mm. A softer dough does not pass either (5 mm, scratch): tau_y 133, 100, 50 give "
+      "1.090, 1.086, 1.116x; the soda's timing is the cause left (docs/validation.md, 'The physical cookie's yield "
+      "stress' and 'The physical cookie's soda')")
 sys.exit(77)
 PY
     rc=$?

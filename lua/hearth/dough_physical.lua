@@ -123,9 +123,19 @@ D.goods = {
     saturation = 0.216,                        -- 0.18 x 1200 / 1000
     water_diffusivity_m2s = 1e-9,              -- chosen, as bread's, lower for the denser dough
     evaporation = 1.2e-5,
-    -- rheology: short doughs are stiffer than bread dough (G' 1e4-1e5 Pa, Dobraszczyk & Morgenstern 2003's range for
-    -- doughs); E = 1e5, yield 500 Pa, viscosity 1e5 Pa s; the cookie spreads as the fat melts (Fig. 8's dip)
-    E = 1e5, nu = 0.3, tau_y = 500, mu = 1e5,
+    -- rheology: E = 1e5 Pa and viscosity 1e5 Pa s are guesses (short doughs stiffer than bread dough, G' 1e4-1e5 Pa,
+    -- Dobraszczyk & Morgenstern 2003's range for doughs). The yield stress is measured (issue #18, helper cookieyield):
+    -- cookie doughs of soft wheat flour, sugar, water and olive oil, by shear rheometry, yield at 50.22-72.80 Pa (In,
+    -- Jeong & Min 2022, Food Sci. Biotechnol. 31:807, abstract: the printable formulations; G' 7165-12590 Pa; the
+    -- same doughs with butter and egg in place of the oil and water yield higher). Their fat is liquid, as this
+    -- dough's is once it has melted, so the midpoint, 61.5 Pa, is taken as the melted plateau (COOKIE_SET's x0.3,
+    -- 35-71 degC). A shear yield stress s is q = sqrt(3) s on this plugin's von Mises surface (plugins/
+    -- cam_clay_dough.c, eq. 12 as the pores close): 106.5 Pa melted, so 106.5 / 0.3 = 355 Pa at the fridge's x1 (284
+    -- at room, the solid fat's x0.8 / x0.3 = 2.7 over the oil dough's, as the butter doughs' higher yield). The
+    -- abstract gives neither the measurement's temperature nor the doughs' water; the range's ends give 290-420 Pa.
+    -- Was 500, a guess, under which the unleavened cookie did not spread (docs/validation.md, "The physical
+    -- cookie's yield stress").
+    E = 1e5, nu = 0.3, tau_y = 355, mu = 1e5,
     -- CO2: a sugar-snap cookie's soda (issue #18, helper sodacookie). The formula: the micro sugar-snap cookie of
     -- AACC Method 10-52 as the Wheat Marketing Center's "Wheat and Flour Testing Methods" (wheatflourbook.org, 2008;
     -- "Sugar Snap Cookie") gives it: flour 40 g (14% moisture), sugar 24 g, shortening 12 g, nonfat dry milk 1.2 g,

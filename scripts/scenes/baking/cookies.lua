@@ -38,12 +38,13 @@
 --                           (h.library.oven.cookie's own bake is 190 degC); the same cookies,
 --                           each leavener a scaling the preset's CO2 rate by a / 0.015. It also
 --                           writes oven_<T>/browning.png and prints each cookie's browning at its
---                           top, rim, base and centre. Measured (2D, dx 5 mm): it does not spread
---                           (its yield stress, 150 Pa once the fat melts, holds its weight) and its
---                           CO2 (a sugar-snap soda's, 0.069 mol/kg, made from ~80 degC) comes
---                           mostly after it sets and its cells open (78 degC): the leavened cookie
---                           stands 1.06x the unleavened at 190 degC, 1.12x at 150, 1.22x at 110
---                           (docs/validation.md "The physical cookie's soda (#18, helper sodacookie)";
+--                           top, rim, base and centre. Measured (2D, dx 5 mm): it barely spreads
+--                           (its measured yield stress, 61.5 Pa in shear once the fat melts, holds
+--                           its 17.5 mm) and its CO2 (a sugar-snap soda's, 0.069 mol/kg, made from
+--                           ~80 degC) comes mostly after it sets and its cells open (78 degC): the
+--                           leavened cookie stands 1.07x the unleavened at 190 degC, 1.14x at 150,
+--                           1.22x at 110 (docs/validation.md "The physical cookie's yield stress
+--                           (#18, helper cookieyield)" and "The physical cookie's soda";
 --                           claim_cookie_physical_leavened_taller, an expected failure). The
 --                           leavener a scales the preset's soda by a / 0.015, so 0.015 is the
 --                           formula's. until_t = 0 bakes the preset's own time (paper 5 s).
