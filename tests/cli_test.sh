@@ -571,6 +571,10 @@ cli_guard_expansion_named)
     # (tau_y 20 Pa) did the same until eq. 10 became a thermal strain for a plugin that gives its bulk modulus
     # (core/sim/material.h, material_thermal_split): ln J_th = 10 x 380 / K = 0.114, bounded, and it completes.
     # (An elastic block never burst: the pressure's free swelling exp(c lambda dT / K) is bounded.)
+    # The cause snow_plastic's guard names is knife-edge on the floor's friction: with main's binary at 0.28, 0.295,
+    # 0.305 or 0.4 (this test's 0.3) the same blow-up, at steps 161-205 against 169, is not named thermal expansion
+    # (docs/validation.md, "Tried again: a hold for the resting body only"). A contact change that flips it has not
+    # by that alone broken the guard; check the step it stops at and the cause over a few frictions.
     for mat in snow_plastic cam_clay_dough; do
         cat >"$tmp/s.lua" <<EOF
 local h = require "hearth"
