@@ -57,7 +57,7 @@ static hearth_scene *sliding_blocks(double dx, double Tl, double Tr, int *ok) {
  * from 0.05 at 26 degC to 0.5 at 120 degC (eq. 4.4), so across the seam
  * every pair joins a hot particle to a cool one moving the other way. Per
  * particle epsilons push the pair sum off zero by eps_i - eps_j (sph.c,
- * phase_xsph); |P| must stay within 1e-12 of the momentum in motion (sum m
+ * sph_xsph.c); |P| must stay within 1e-12 of the momentum in motion (sum m
  * |v|), round-off over some 800 particles and 40 steps, at dx 2 and 1 mm.
  * The same blocks at one temperature are the control: eq. 3.34 with one
  * epsilon conserves. Before each pair shared one epsilon (sph.c,

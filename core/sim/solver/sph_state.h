@@ -201,6 +201,9 @@ double sph_water_stable_dt(const hearth_scene *s, double hmin, double rhomin);
 /// With sph.gas_law: st->rhof (each particle's rest density: rho0, a bubble's
 /// rho0 / V_b(T)) and st->prs against it; st->Tprev <- T.
 void sph_pressure_gas_law(hearth_scene *s);
+/* sph_xsph.c: XSPH (eq. 3.34, epsilon by eq. 4.4) from st->vnew into the particles' v; st->amax for the force limit. */
+void sph_xsph(hearth_scene *s);
+
 /* sph_hourglass.c: sph.hourglass's damping of the pairs' motion eq. 3.27's gradient does not describe,
  * into st->vnew after sph_forces' kick; its scratch (made only when on), freed by sph_hourglass_free;
  * the doubles per particle it keeps (0 when off). */
