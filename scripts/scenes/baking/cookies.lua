@@ -95,25 +95,31 @@
 -- 3e-5 against 1.4e-7 m^2/s: a 15-minute bake in 4 s), and every cookie has set
 -- (71-78 degC, COOKIE_SET) by ~3.5 s at 150 degC (centre 76-78 degC at 3 s, 95 at 4 s).
 local h = require "hearth"
-local P = h.params { dim = 2, dx = 0.005, until_t = 0, frames = 5, ovens = { 190, 150, 110 },
-  leaveners = { 0.015, 0.0075, 0 }, baseline = false, reaction_temperature = -1, reaction_width = -1, gas = 1,
-  tray_mode = h.choice("separate", h.contact_words), tray_friction = 0.4, conductivity = 0.01, water = false, soft_until = -1, max_porosity = -1,
+-- The levers that change Table 2's cookie (below, each where it acts), with their defaults: preset=paper's only.
+local PAPER_LEVERS = { baseline = false, reaction_temperature = -1, reaction_width = -1, conductivity = 0.01,
+  water = false, soft_until = -1, max_porosity = -1 }
+local defaults = { dim = 2, dx = 0.005, until_t = 0, frames = 5, ovens = { 190, 150, 110 },
+  leaveners = { 0.015, 0.0075, 0 }, gas = 1,
+  tray_mode = h.choice("separate", h.contact_words), tray_friction = 0.4,
   seed = 1, vent = -1,
   preset = h.choice { "paper", paper = "h.library.paper.cookie: Ding Table 2, animation units",
     physical = "h.library.dough.cookie: a real sugar-snap dough's properties, its bake in real minutes mapped" } }
+for k, v in pairs(PAPER_LEVERS) do defaults[k] = v end
+local P = h.params(defaults)
 -- preset=physical (#18): h.library.dough.cookie and h.library.oven.cookie (lua/hearth/dough_physical.lua: each
 -- number's source; its rates run S = 50 times fast, so the 11 minute bake at 190 degC takes 13.2 s), latent heat,
 -- boiling and browning on. The same cookies: leavener a multiplies the preset's CO2 rate by a / 0.015, the
 -- leavener its rate stands for (Table 2's cookie alpha^g), as the paper path's gas_rate is a x GAS_SCALE. The
--- levers below that change Table 2's cookie (baseline, conductivity, water, soft_until, max_porosity,
--- reaction_*) are the paper preset's only; gas and the grid's words hold for both.
+-- PAPER_LEVERS are the paper preset's only; gas and the grid's words hold for both.
 local physical = P.preset == "physical"
 if physical then
-  for _, k in ipairs { { "baseline", false }, { "conductivity", 0.01 }, { "water", false }, { "soft_until", -1 },
-    { "max_porosity", -1 }, { "reaction_temperature", -1 }, { "reaction_width", -1 } } do
-    if P[k[1]] ~= k[2] then
+  local levers = {}
+  for k in pairs(PAPER_LEVERS) do levers[#levers + 1] = k end
+  table.sort(levers) -- the first one set, named the same way every run
+  for _, k in ipairs(levers) do
+    if P[k] ~= PAPER_LEVERS[k] then
       error(("--set %s=%s: a lever on Table 2's cookie, for preset=paper only (the physical dough's numbers are "
-        .. "its own, lua/hearth/dough_physical.lua)"):format(k[1], tostring(P[k[1]])))
+        .. "its own, lua/hearth/dough_physical.lua)"):format(k, tostring(P[k])))
     end
   end
 end
