@@ -108,7 +108,8 @@ for k, v in pairs(PAPER_LEVERS) do defaults[k] = v end
 local P = h.params(defaults)
 -- preset=physical (#18): h.library.dough.cookie and h.library.oven.cookie (lua/hearth/dough_physical.lua: each
 -- number's source; its rates run S = 50 times fast, so the 11 minute bake at 190 degC takes 13.2 s), latent heat,
--- boiling and browning on. The same cookies: leavener a multiplies the preset's CO2 rate by a / 0.015, the
+-- boiling and browning on. The same cookies: leavener a multiplies the preset's CO2 rates (both shares; cookies.csv's
+-- gas_rate column is the first's, gas_rate) by a / 0.015, the
 -- leavener its rate stands for (Table 2's cookie alpha^g), as the paper path's gas_rate is a x GAS_SCALE. The
 -- PAPER_LEVERS are the paper preset's only; gas and the grid's words hold for both.
 local physical = P.preset == "physical"
@@ -193,7 +194,9 @@ for _, T in ipairs(ovens) do
   local xs, first, gas_of = {}, {}, {} -- gas_of[i]: the physical cookie i's CO2 rate (mol/(kg s), S times fast); first[i]: cookie i's first particle id (ids run in the order s:add made them)
   for i, a in ipairs(leaveners) do
     local d = physical and h.library.dough.cookie or h.library.paper.cookie
-    if physical then d.gas_rate = d.gas_rate * a / A_PRESET * P.gas; gas_of[i] = d.gas_rate
+    if physical then -- both of the preset's CO2 shares (its NH4Cl share is gas_rate_2, dough_physical.lua)
+      d.gas_rate = d.gas_rate * a / A_PRESET * P.gas; gas_of[i] = d.gas_rate
+      if d.gas_rate_2 then d.gas_rate_2 = d.gas_rate_2 * a / A_PRESET * P.gas end
     else d.gas_rate = a * h.library.dough_scale.gas * P.gas end
     if not physical then d.conductivity = d.conductivity * P.conductivity end
     local S0, WATER_S = 0.10, 600 -- the levers above: water as dough.lua's WATER (2e-7 m^2/s, 1.2e-3 kg/(m^2 s K), x600)
