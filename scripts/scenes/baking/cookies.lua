@@ -38,16 +38,16 @@
 --                           (h.library.oven.cookie's own bake is 190 degC); the same cookies,
 --                           each leavener a scaling the preset's CO2 rate by a / 0.015. It also
 --                           writes oven_<T>/browning.png and prints each cookie's browning at its
---                           top, rim, base and centre. Measured (2D, dx 5 mm): it barely spreads
---                           (its measured yield stress, 61.5 Pa in shear once the fat melts, holds
---                           its 17.5 mm) and its CO2 (a sugar-snap soda's, 0.069 mol/kg, made from
---                           ~80 degC) comes mostly after it sets and its cells open (78 degC): the
---                           leavened cookie stands 1.07x the unleavened at 190 degC, 1.14x at 150,
---                           1.22x at 110 (docs/validation.md "The physical cookie's yield stress
---                           (#18, helper cookieyield)" and "The physical cookie's soda";
---                           claim_cookie_physical_leavened_taller, an expected failure). The
---                           leavener a scales the preset's soda by a / 0.015, so 0.015 is the
---                           formula's. until_t = 0 bakes the preset's own time (paper 5 s).
+--                           top, rim, base and centre. Measured (2D, dx 5 mm): the unleavened
+--                           cookie barely spreads (its measured yield stress, 61.5 Pa in shear once
+--                           the fat melts, holds its 17.5 mm); the soda's CO2 (0.069 mol/kg) comes
+--                           in two shares, the NH4Cl one on a 60 degC bell before the 78 degC set
+--                           and the leftover soda's at 100 degC, and the leavened cookie stands
+--                           1.56x the unleavened at 190 degC (92 mm wide), 1.38x at 150, 1.73x at
+--                           110, where the most leavened sheds pieces (docs/validation.md "The
+--                           physical cookie's two shares (#18, helper sodatwo)";
+--                           claim_cookie_physical_leavened_taller passes). The leavener a scales
+--                           both of the preset's shares by a / 0.015, so 0.015 is the formula's. until_t = 0 bakes the preset's own time (paper 5 s).
 --   [--set seed=2]        the particles' jitter (h.scene's seed, default 1): a
 --                           new sampling of the same dough, to see a reading's
 --                           noise (docs/validation.md, "Fig. 17: the top's
