@@ -422,9 +422,11 @@ TEST(gas_two_shares_on_a_ramp) {
 }
 
 /* The second share at one temperature, with the fields' own clock (gas_between makes the CO2 between the
- * fields' updates): n^g(t) = (a1 e^{-u1^2} + a2 e^{-u2^2}) R0 t to 1e-12, as co2_constant_temperature. And the
- * second share alone (gas_rate 0) is refused with a message naming the material, the parameter and what is valid. */
-TEST(gas_two_shares_constant_temperature) {
+ * fields' updates): n^g(t) = (a1 e^{-u1^2} + a2 e^{-u2^2}) R0 t to 1e-12, as co2_constant_temperature; once with
+ * the gassy material alone and once behind 16 others (gas_between's loop for scenes of more than 16 materials).
+ * And the second share alone (gas_rate 0) is refused with a message naming the material, the parameter and what
+ * is valid. */
+static void two_shares_at(int others) {
     hearth_scene_def d = hearth_default_scene_def();
     d.dx = 1.0 / 32;
     d.gravity[1] = 0;
@@ -436,8 +438,9 @@ TEST(gas_two_shares_constant_temperature) {
     const double a1 = 0.015, Tr1 = 100, w1 = 20, a2 = 0.02, Tr2 = 60, w2 = 20, R0 = 500, T = 70;
     const double nv[] = {1e4, R0, 0, a1, Tr1, w1, a2, Tr2, w2};
     hearth_error err;
+    for (int k = 0; k < others; k++) CHECK(fx_elastic(s, 1e4, 0.3, 1000) == k);
     const int m = hearth_scene_add_material(s, "elastic", nm, nv, 9, &err);
-    CHECK(m == 0);
+    CHECK(m == others);
     const double c[3] = {0.5, 0.5, 0}, h[3] = {0.1, 0.1, 0};
     hearth_shape *box = hearth_shape_box(c, h);
     hearth_body_def bd = hearth_default_body_def();
@@ -450,11 +453,19 @@ TEST(gas_two_shares_constant_temperature) {
     double worst = 0;
     for (int i = 0; i < s->ps.n; i++) worst = fmax(worst, fabs(pcold(&s->ps, PC_GAS)[i] / exact - 1));
     CHECK(s->field_cycle_last == 5);
-    printf("  t = %.3f s at %.0f degC, field updates every %d steps: n^g = %.12g mol/m^3, exact %.12g, worst "
-           "relative error %.2e\n", t, T, s->field_cycle_last, pcold(&s->ps, PC_GAS)[0], exact, worst);
+    printf("  %d materials; t = %.3f s at %.0f degC, field updates every %d steps: n^g = %.12g mol/m^3, exact %.12g, "
+           "worst relative error %.2e\n", others + 1, t, T, s->field_cycle_last, pcold(&s->ps, PC_GAS)[0], exact, worst);
     CHECK(worst <= 1e-12);
     hearth_scene_destroy(s);
-    s = fx_scene_def(&d);
+}
+
+TEST(gas_two_shares_constant_temperature) {
+    two_shares_at(0);
+    two_shares_at(16);
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 32;
+    hearth_error err;
+    hearth_scene *s = fx_scene_def(&d);
     const char *nm2[] = {"E", "gas_rate_2"};
     const double nv2[] = {1e4, 0.01};
     CHECK(hearth_scene_add_material(s, "elastic", nm2, nv2, 2, &err) < 0);
