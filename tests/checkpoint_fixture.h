@@ -111,6 +111,10 @@ static inline size_t clk_at(const uint8_t *b, size_t n) {
     return at;
 }
 
+/* The core material parameters version 12 appended (the second CO2 share: gas_rate_2, reaction_temperature_2,
+ * reaction_width_2, params.h): every older file lacks them, after those its own version lacks. */
+#define V12_CORE 3
+
 /* The image of a save of one material, "elastic" (3 parameters), with the
  * last k of its core parameters cut out, as files from before they were
  * appended hold them (before the curve count; *n shrinks by 8 k). Returns 0

@@ -88,9 +88,10 @@ TEST(checkpoint_v4_reads_at_defaults) {
     memcpy(b, img, clk - cut);
     memcpy(b + clk - cut, img + clk, tail - clk);
     memcpy(b + tail - cut, img + tail + vt, n - tail - vt);
-    /* and the last four core material parameters (version 7's dry_conductivity, version 8's dry_specific_heat,
-     * version 10's ambient_pressure and open_temperature): files before 7 hold CP_COUNT - 4 of them */
-    if (!cut_core_params(b, &m, 4)) {
+    /* and the last four core material parameters before version 12's (version 7's dry_conductivity, version 8's
+     * dry_specific_heat, version 10's ambient_pressure and open_temperature) and version 12's: files before 7 hold
+     * CP_COUNT - 4 - V12_CORE of them */
+    if (!cut_core_params(b, &m, 4 + V12_CORE)) {
         free(b);
         free(img);
         hearth_scene_destroy(s);
@@ -121,7 +122,7 @@ TEST(checkpoint_v4_reads_at_defaults) {
     ck_reseal(b, m);
     CHECK(hearth_scene_load_mem(b, m, "v3.ck", &err) == NULL);
     printf("  %s\n", err.msg);
-    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 11 only");
+    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 12 only");
     free(b);
     free(img);
     hearth_scene_destroy(s);
@@ -191,7 +192,7 @@ TEST(checkpoint_v7_reads_dry_specific_heat_as_wet) {
     hearth_scene_destroy(s);
     s = dry_heat_scene(0);
     size_t m;
-    r = load_older(s, 3, 7, &m, &n); /* without dry_specific_heat and version 10's two */
+    r = load_older(s, 3 + V12_CORE, 7, &m, &n); /* without dry_specific_heat, version 10's two and version 12's */
     CHECK(r != NULL);
     if (r) {
         CHECK(r->mats.slot[0].core[CP_DRY_SPECIFIC_HEAT] == 0);
@@ -229,7 +230,7 @@ TEST(checkpoint_v8_reads_browning_surface_as_zero) {
     size_t n;
     uint8_t *img = save_image(s, &n);
     CHECK(img != NULL);
-    if (img && !cut_core_params(img, &n, 2)) { /* version 10's ambient_pressure and open_temperature */
+    if (img && !cut_core_params(img, &n, 2 + V12_CORE)) { /* version 10's ambient_pressure and open_temperature, 12's */
         free(img);
         hearth_scene_destroy(s);
         return;
@@ -309,7 +310,7 @@ TEST(checkpoint_v9_reads_ambient_pressure_as_zero) {
     hearth_scene_destroy(s);
     s = dry_heat_scene(0);
     size_t k;
-    r = load_older(s, 2, 9, &k, &n); /* without ambient_pressure and open_temperature */
+    r = load_older(s, 2 + V12_CORE, 9, &k, &n); /* without ambient_pressure and open_temperature (and 12's) */
     CHECK(r != NULL);
     if (r) {
         const hearth_param *cp = hearth_core_params(NULL);
@@ -361,6 +362,11 @@ TEST(checkpoint_v10_sticky_holds_as_then) {
         return;
     }
     hearth_error err;
+    if (!cut_core_params(img, &n, V12_CORE)) { /* a version 11 file holds no second CO2 share */
+        free(img);
+        hearth_scene_destroy(s);
+        return;
+    }
     for (uint32_t v = 11; v >= 10; v--) {
         memcpy(img + 8, &v, 4);
         ck_reseal(img, n);
@@ -380,6 +386,62 @@ TEST(checkpoint_v10_sticky_holds_as_then) {
     hearth_scene_destroy(s);
 }
 
+/* Version 12 carries a material's second CO2 share (gas_rate_2, reaction_temperature_2, reaction_width_2; gas.c)
+ * through a save; a version 11 file (a version 12 image without the three, before the curve count) loads with
+ * gas_rate_2 0 (no second share) and the other two at their defaults, and continues as the scene it was saved
+ * from, which had no second share. */
+TEST(checkpoint_v11_reads_no_second_share) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.1;
+    d.gravity[1] = 0;
+    hearth_scene *s = fx_scene_def(&d);
+    CHECK(s != NULL);
+    if (!s) return;
+    const char *nm[] = {"E", "density", "gas_rate", "gas_rate_2", "reaction_temperature_2", "reaction_width_2"};
+    const double nv[] = {1e4, 484, 1e-3, 2e-3, 60, 15};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 6, &err);
+    CHECK(m >= 0);
+    const double c[3] = {0.5, 0.4, 0}, h[3] = {0.1, 0.1, 0};
+    hearth_body_def bd = hearth_default_body_def();
+    hearth_shape *box = hearth_shape_box(c, h);
+    bd.shape = box, bd.material = m, bd.temperature = 55;
+    CHECK(hearth_scene_add_body(s, &bd, &err) == 0);
+    hearth_shape_free(box);
+    CHECK(hearth_scene_step(s, 3, &err) == HEARTH_OK);
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    hearth_scene *r = img ? hearth_scene_load_mem(img, n, "v12.ck", &err) : NULL;
+    if (!r && img) printf("  v12 refused: %s\n", err.msg);
+    CHECK(r != NULL);
+    if (r) {
+        const double *k = r->mats.slot[0].core;
+        printf("  v12: gas_rate_2 %g, reaction_temperature_2 %g, reaction_width_2 %g restored\n", k[CP_GAS_RATE_2],
+               k[CP_REACTION_T_2], k[CP_REACTION_WIDTH_2]);
+        CHECK(k[CP_GAS_RATE_2] == 2e-3 && k[CP_REACTION_T_2] == 60 && k[CP_REACTION_WIDTH_2] == 15);
+        continues_as(s, r, "v12 copy");
+        hearth_scene_destroy(r);
+    }
+    free(img);
+    hearth_scene_destroy(s);
+    s = dry_heat_scene(0);
+    size_t k;
+    r = load_older(s, V12_CORE, 11, &k, &n); /* without the second share */
+    CHECK(r != NULL);
+    if (r) {
+        const hearth_param *cp = hearth_core_params(NULL);
+        CHECK(r->mats.slot[0].core[CP_GAS_RATE_2] == 0);
+        CHECK(r->mats.slot[0].core[CP_REACTION_T_2] == cp[CP_REACTION_T_2].def);
+        CHECK(r->mats.slot[0].core[CP_REACTION_WIDTH_2] == cp[CP_REACTION_WIDTH_2].def);
+        printf("  v11 file of %zu bytes (v12: %zu)\n", k, n);
+        continues_as(s, r, "v11 copy");
+        hearth_scene_destroy(r);
+    }
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_v4_reads_at_defaults),
           T(checkpoint_v7_reads_dry_specific_heat_as_wet), T(checkpoint_v8_reads_browning_surface_as_zero),
-          T(checkpoint_v9_reads_ambient_pressure_as_zero), T(checkpoint_v10_sticky_holds_as_then))
+          T(checkpoint_v9_reads_ambient_pressure_as_zero), T(checkpoint_v10_sticky_holds_as_then),
+          T(checkpoint_v11_reads_no_second_share))

@@ -353,6 +353,130 @@ TEST(gas_ambient_threads_same_bits) {
     CHECK(h1 == h2 && h1 != h0);
 }
 
+/* Two CO2 shares (the core's gas_rate_2, reaction_temperature_2, reaction_width_2; gas.c): a leavener of two
+ * reactions, each its own eq. 14 bell, makes the sum of the two bells' gas. Along a linear ramp T = T0 + r t the
+ * closed form is the sum of two Gaussian integrals (ramp_closed_form per share). Checked twice: the step integrator
+ * summed over 20 -> 140 degC (to 1e-6, as co2_linear_ramp), and a pinned block in a scene at one step per field
+ * update (field_steps 1: every step makes its CO2 in G2P, gas_moles_field_step), its particles' temperature set to
+ * the ramp's value at each step's middle (conductivity 0, no oven: nothing else moves it; the same 20 -> 140 degC
+ * at 20 K/s, 1 ms steps), so the scene's total is the midpoint rule of the two bells' integral, within 1e-6 of the
+ * closed form (the rule's error, ~(r dt / dtheta)^2 / 24 relative, is ~1e-9 here). The shares, at 60 and 100 degC, 20 K wide, are the
+ * physical cookie's (lua/hearth/dough_physical.lua). */
+TEST(gas_two_shares_on_a_ramp) {
+    const double a1 = 0.012, Tr1 = 100, w1 = 20, a2 = 0.016, Tr2 = 60, w2 = 25, R0 = 500, T0 = 20, r = 2.0;
+    double worst = 0;
+    for (int nsteps = 7; nsteps <= 7000; nsteps *= 10) {
+        const double tend = 60, dt = tend / nsteps;
+        double n = 0;
+        for (int k = 0; k < nsteps; k++) {
+            const double Ta = T0 + r * k * dt, Tb = T0 + r * (k + 1) * dt;
+            n += gas_moles_step(Ta, Tb, dt, a1, R0, Tr1, w1);
+            n += gas_moles_step(Ta, Tb, dt, a2, R0, Tr2, w2);
+        }
+        const double exact = ramp_closed_form(a1, R0, Tr1, w1, T0, r, tend) + ramp_closed_form(a2, R0, Tr2, w2, T0, r, tend);
+        printf("  %5d steps, two shares over a 20 -> 140 degC ramp: n^g = %.12g, closed form %.12g, relative error %.2e\n",
+               nsteps, n, exact, fabs(n / exact - 1));
+        worst = fmax(worst, fabs(n / exact - 1));
+    }
+    CHECK(worst <= 1e-6);
+    /* the scene */
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 32;
+    d.gravity[1] = 0;
+    d.dt_max = 1e-3; /* under the block's CFL step, so each advance below is one step */
+    d.field_steps = 1;
+    hearth_scene *s = fx_scene_def(&d);
+    const char *nm[] = {"E", "density", "conductivity", "gas_rate", "reaction_temperature", "reaction_width",
+                        "gas_rate_2", "reaction_temperature_2", "reaction_width_2"};
+    const double nv[] = {1e4, R0, 0, a1, Tr1, w1, a2, Tr2, w2};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 9, &err);
+    CHECK(m == 0);
+    const double c[3] = {0.5, 0.5, 0}, h[3] = {0.1, 0.1, 0};
+    hearth_shape *box = hearth_shape_box(c, h);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = box, bd.material = m, bd.temperature = T0, bd.fixed = 1;
+    CHECK(hearth_scene_add_body(s, &bd, &err) == 0);
+    hearth_shape_free(box);
+    const double tend = 6, rs = 20; /* the same 20 -> 140 degC at 20 K/s: 6000 steps */
+    int steps = 0;
+    while (s->t < tend * (1 - 1e-12) && steps < 100000) {
+        const double t0 = s->t;
+        double dt = d.dt_max;
+        if (t0 + dt > tend) dt = tend - t0;
+        const double Tm = T0 + rs * (t0 + 0.5 * dt);
+        for (int i = 0; i < s->ps.n; i++) pcold(&s->ps, PC_TEMPERATURE)[i] = Tm;
+        if (hearth_scene_advance_steps(s, t0 + dt, 1, &err) != HEARTH_OK) break;
+        CHECK(fabs(s->t - (t0 + dt)) <= 1e-12); /* one step: the midpoint above is its own */
+        steps++;
+    }
+    const double exact = ramp_closed_form(a1, R0, Tr1, w1, T0, rs, s->t) + ramp_closed_form(a2, R0, Tr2, w2, T0, rs, s->t);
+    double worst_scene = 0;
+    for (int i = 0; i < s->ps.n; i++) worst_scene = fmax(worst_scene, fabs(pcold(&s->ps, PC_GAS)[i] / exact - 1));
+    printf("  scene, %d steps to t = %.3f s: n^g = %.12g mol/m^3, closed form of the two bells %.12g (the first alone "
+           "%.6g), worst relative error %.2e\n", steps, s->t, pcold(&s->ps, PC_GAS)[0], exact,
+           ramp_closed_form(a1, R0, Tr1, w1, T0, rs, s->t), worst_scene);
+    CHECK(s->t >= tend * (1 - 1e-12));
+    CHECK(worst_scene <= 1e-6);
+    hearth_scene_destroy(s);
+}
+
+/* The second share at one temperature, with the fields' own clock (gas_between makes the CO2 between the
+ * fields' updates): n^g(t) = (a1 e^{-u1^2} + a2 e^{-u2^2}) R0 t to 1e-12, as co2_constant_temperature; once with
+ * the gassy material alone and once behind 16 others (gas_between's loop for scenes of more than 16 materials).
+ * And the second share alone (gas_rate 0) is refused with a message naming the material, the parameter and what
+ * is valid. */
+static void two_shares_at(int others) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 32;
+    d.gravity[1] = 0;
+    d.dt_max = 1e-2;
+    d.field_steps = 5; /* four steps of five make their CO2 in gas_between, the fifth in G2P */
+    hearth_scene *s = fx_scene_def(&d);
+    const char *nm[] = {"E", "density", "conductivity", "gas_rate", "reaction_temperature", "reaction_width",
+                        "gas_rate_2", "reaction_temperature_2", "reaction_width_2"};
+    const double a1 = 0.015, Tr1 = 100, w1 = 20, a2 = 0.02, Tr2 = 60, w2 = 20, R0 = 500, T = 70;
+    const double nv[] = {1e4, R0, 0, a1, Tr1, w1, a2, Tr2, w2};
+    hearth_error err;
+    for (int k = 0; k < others; k++) CHECK(fx_elastic(s, 1e4, 0.3, 1000) == k);
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 9, &err);
+    CHECK(m == others);
+    const double c[3] = {0.5, 0.5, 0}, h[3] = {0.1, 0.1, 0};
+    hearth_shape *box = hearth_shape_box(c, h);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = box, bd.material = m, bd.temperature = T, bd.fixed = 1;
+    CHECK(hearth_scene_add_body(s, &bd, &err) == 0);
+    hearth_shape_free(box);
+    CHECK(hearth_scene_step(s, 500, &err) == HEARTH_OK);
+    const double u1 = (T - Tr1) / w1, u2 = (T - Tr2) / w2;
+    const double t = s->t, exact = (a1 * exp(-u1 * u1) + a2 * exp(-u2 * u2)) * R0 * t;
+    double worst = 0;
+    for (int i = 0; i < s->ps.n; i++) worst = fmax(worst, fabs(pcold(&s->ps, PC_GAS)[i] / exact - 1));
+    CHECK(s->field_cycle_last == 5);
+    printf("  %d materials; t = %.3f s at %.0f degC, field updates every %d steps: n^g = %.12g mol/m^3, exact %.12g, "
+           "worst relative error %.2e\n", others + 1, t, T, s->field_cycle_last, pcold(&s->ps, PC_GAS)[0], exact, worst);
+    CHECK(worst <= 1e-12);
+    hearth_scene_destroy(s);
+}
+
+TEST(gas_two_shares_constant_temperature) {
+    two_shares_at(0);
+    two_shares_at(16);
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 32;
+    hearth_error err;
+    hearth_scene *s = fx_scene_def(&d);
+    const char *nm2[] = {"E", "gas_rate_2"};
+    const double nv2[] = {1e4, 0.01};
+    CHECK(hearth_scene_add_material(s, "elastic", nm2, nv2, 2, &err) < 0);
+    printf("  refused: %s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, "gas_rate_2 = 0.01");
+    CHECK_STR_CONTAINS(err.msg, "gas_rate > 0");
+    CHECK_STR_CONTAINS(err.msg, "elastic");
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(co2_constant_temperature), T(co2_linear_ramp), T(gas_pressure_field), T(gas_rise), T(gas_rise_fine),
           T(gas_ambient_dry_block_swells_as_closed_form), T(gas_ambient_refusals), T(gas_ambient_threads_same_bits),
-          T(gas_ambient_wet_block_swells_as_closed_form))
+          T(gas_ambient_wet_block_swells_as_closed_form), T(gas_two_shares_on_a_ramp),
+          T(gas_two_shares_constant_temperature))

@@ -44,6 +44,15 @@ static const hearth_param core_schema[CP_COUNT] = {
                              "with ambient_pressure: the temperature at which the pores open to the air (the set crumb "
                              "turns from a foam to a sponge): no gas pressure from there on; 5000 = never",
                              5000, -273.15, 5000},
+    /* a leavener of two reactions (issue #18: the sugar-snap cookie's NH4Cl share and its leftover soda, each with
+     * its own temperature; gas.c) */
+    [CP_GAS_RATE_2] = {"gas_rate_2", "mol/(kg s)",
+                       "a second CO2 share's peak rate: eq. 14's bell again, added to gas_rate's, with its own "
+                       "reaction_temperature_2 and reaction_width_2; needs gas_rate > 0; 0 = no second share",
+                       0, 0, 1e3},
+    [CP_REACTION_T_2] = {"reaction_temperature_2", "degC", "temperature of the second CO2 share's peak rate", 40, -273.15,
+                         1000},
+    [CP_REACTION_WIDTH_2] = {"reaction_width_2", "K", "width of the second CO2 share's bell curve", 20, 1e-3, 1000},
 };
 
 const hearth_param *hearth_core_params(int *n) {

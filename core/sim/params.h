@@ -15,6 +15,9 @@ enum {
                            * checkpoints before version 8 read the others in place */
     CP_AMBIENT_PRESSURE,  /* the pores' gas stands at the atmosphere (gas.h, gas_tau_ambient); with */
     CP_OPEN_TEMPERATURE,  /* ... the temperature its cells open at: both last, so checkpoints before 10 read the others */
+    CP_GAS_RATE_2,        /* a second CO2 share, eq. 14's bell again with its own amount, centre and width (gas.c): */
+    CP_REACTION_T_2,      /* ... its centre theta_r and */
+    CP_REACTION_WIDTH_2,  /* ... its width dtheta; the three last, so checkpoints before 12 read the others */
     CP_COUNT
 };
 

@@ -353,6 +353,14 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
         material_slot_free(&ms);
         return -1;
     }
+    if (ms.core[CP_GAS_RATE_2] > 0 && !(ms.core[CP_GAS_RATE] > 0)) { /* a second share adds to the first (gas.c) */
+        err_set(err, HEARTH_ERR_PARAM,
+                "material '%s': gas_rate_2 = %g mol/(kg s) is a second CO2 share added to gas_rate's, which is 0; "
+                "valid: gas_rate_2 = 0, or gas_rate > 0 (a leavener of one reaction takes gas_rate alone)",
+                hearth_plugin_material(pl)->name, ms.core[CP_GAS_RATE_2]);
+        material_slot_free(&ms);
+        return -1;
+    }
     const hearth_material *m = ms.m;
     if (material_table_reserve(&s->mats, err) || particles_set_state_stride(&s->ps, m->state_size, err)) {
         material_slot_free(&ms);

@@ -153,7 +153,7 @@ D.goods = {
     -- plugin has: centre theta_r = 100 degC (the top of that range and the dough's boiling plateau), width 20 K, so
     -- the rate is e^-1 of its peak at 80 degC, 2% at 60 and 1e-7 in the 20 degC raw dough. The bell falls again past
     -- 100 degC where a real soda's rate keeps rising; only the crust passes 100. Eq. 14 has no depletion, so the rate
-    -- is set by the amount: the peak rate is 0.069 mol/kg over the 229 s the bell integrates to along the dough's
+    -- is set by the amount: the one bell's peak rate (before the two shares below) was 0.069 mol/kg over the 229 s the bell integrates to along the dough's
     -- centre temperature in this preset's 190 degC, 11 minute bake (cookies.lua --set preset=physical, dx 5 mm,
     -- series.csv, 22 frames, with this preset's earlier gas: 20 degC to 100 at 11 minutes): 0.069 / 229 = 3.0e-4
     -- mol/(kg s) (under the gas law below the centre reads 216 s, 0.065 mol/kg). The hotter outer dough makes more
@@ -165,7 +165,30 @@ D.goods = {
     -- open where the dough has set, 78 degC (COOKIE_SET's end, within the 71-81 degC of pore opening Zhang et al.
     -- 2025 measure in bread, as bread's open_temperature takes its set): at 95 the leavened cookie spread to 130 mm
     -- and dished, and at 100 the pores' vapour reaches p_a and both cookies burst.
-    gas_rate = 0.069 / 229, reaction_temperature = 100, reaction_width = 20, porosity = 0.15,
+    -- Two shares (issue #18, helper sodatwo; docs/validation.md "The physical cookie's two shares"): the two
+    -- reactions above are two sources, so each takes its own eq. 14 bell (the core's second share, gas_rate_2), its
+    -- centre and width fixed from sources before any run with them. The NH4Cl share, 3.74 mmol / 88.7 g = 0.0422
+    -- mol/kg, is in effect dissolved ammonium bicarbonate (NH4+ and HCO3- in the dough's water): it releases slowly at
+    -- room temperature and rapidly above ~40 degC (Church & Dwight's ammonium bicarbonate sheet, ahperformance.com),
+    -- "more noticeable" at ~60 degC, "a very short time" at oven temperature (LibreTexts, Chemistry of Cooking 5.7),
+    -- from 60 degC (ammoniumbicarbonate.com); measured in solution, it leaves over tens of minutes at 50 degC (an
+    -- NH3-CO2-H2O solution lost ~90% of its solutes in 90 min at 50 degC under 0.35 bar: Kolliopoulos &
+    -- Papangelakis 2019, Ind. Eng. Chem. Res. 58:12247, abstract; HCO3- falls sharply in the first 30 min at 50-90
+    -- degC, faster when hotter: Liu, Zhang & Liu 2017, Chin. J. Process Eng. 17:123, abstract), too slowly for an
+    -- 11 minute bake below ~50. The solid salt decomposes from ~75 degC (DSC, Resentera et al. 2025, Ind. Eng.
+    -- Chem. Res., abstract), but in this dough it is dissolved. Centre 60 degC (where the sources agree the release
+    -- is under way), width 20 K: e^-1 of the peak at 40 (the sheet's "rapidly") and at 80, 2% in the 20 degC raw
+    -- dough (its slow room-temperature loss). Eq. 14 has no depletion: the bell's fall past 60 stands for the share
+    -- running out, as the solution's rate falls once its HCO3- is spent. The leftover soda, 2.42 / 88.7 = 0.0273
+    -- mol/kg, keeps the one bell's 100 degC, 20 K (the bicarbonate-carbonate equilibrium; no source found for
+    -- another). Each peak rate is the share's amount over the time its bell integrates to along the dough centre's
+    -- temperature in this preset's 190 degC bake before the shares (main's binary at 5cac4e3, cookies.lua --set
+    -- preset=physical --set ovens=190 --set leaveners=0.015 --set frames=66, series.csv, erf per 10 s frame): 265 s
+    -- for 60/20 (89% of it before the 78 degC set), 220 s for 100/20 (9% before it). Was one bell, 0.069 / 229 at
+    -- 100 degC, 20 K, under which the leavened cookie stood 1.07x the unleavened at 190 degC; with the two shares
+    -- 1.55x at dx 5 mm, 1.81x at 3.75 (Ding §7.3's bar 1.3x; claim_cookie_physical_leavened_taller).
+    gas_rate = 2.42 / 88.7 / 220, reaction_temperature = 100, reaction_width = 20,
+    gas_rate_2 = 3.74 / 88.7 / 265, reaction_temperature_2 = 60, reaction_width_2 = 20, porosity = 0.15,
     ambient_pressure = 101325, open_temperature = 78,
     expansion = 0.1, dough_temperature = 20,
     -- the set: a sugar-snap dough's gluten glass transition at 71-78 degC, no starch gelatinisation (lua/hearth/dough.lua,
@@ -211,6 +234,8 @@ function D.preset(name)
     water_diffusivity = g.water_diffusivity_m2s / (373.15 * g.saturation) * S,
     evaporation = g.evaporation * S, saturation = g.saturation,
     gas_rate = g.gas_rate * S, reaction_temperature = g.reaction_temperature, reaction_width = g.reaction_width,
+    gas_rate_2 = g.gas_rate_2 and g.gas_rate_2 * S, reaction_temperature_2 = g.reaction_temperature_2,
+    reaction_width_2 = g.reaction_width_2,
     porosity = g.porosity, max_porosity = g.max_porosity, expansion = g.expansion,
     ambient_pressure = g.ambient_pressure, open_temperature = g.open_temperature,
     reference_temperature = g.dough_temperature,

@@ -37,6 +37,7 @@ local function scaled(pts, f, which)
   return c
 end
 params.gas_rate = params.gas_rate * P.gas
+if params.gas_rate_2 then params.gas_rate_2 = params.gas_rate_2 * P.gas end -- the cookie's second CO2 share
 local tau_pts = scaled(curves.tau_y, P.tau, "tau")
 params.tau_y = h.curve(tau_pts)
 params.eta = h.curve(scaled(curves.eta, P.eta, "eta"))

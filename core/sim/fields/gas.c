@@ -45,7 +45,18 @@
  * (`gas_vent_decays_at_closed_form` read NaN rates). The field step then adds
  * the linear-temperature law over the whole cycle less what its earlier steps
  * made (gas_moles_field_step): a cycle makes the single-rate total for the
- * temperature's linear path, and a temperature that holds makes a t exactly. */
+ * temperature's linear path, and a temperature that holds makes a t exactly.
+ *
+ * A second share (core parameters gas_rate_2, reaction_temperature_2, reaction_width_2; beyond Ding et al., whose
+ * eq. 14 has one bell per material): a chemical leavener can be two reactions at two temperatures, the sugar-snap
+ * cookie's NH4Cl share (dissolved ammonium bicarbonate, under way by ~60 degC) and its leftover soda (~100 degC)
+ * (issue #18, docs/validation.md "The physical cookie's two shares"). Its moles are a second bell added after the
+ * first's, n += a1 b1 + a2 b2 in that order, by the same linear-path integral, so with gas_rate_2 = 0 nothing is
+ * added and every bit is the one-bell code's; a scene pays the second exp only when it has a second share. Its
+ * exp takes no memo (PC_GAS_MEMO holds the first bell's; a second column for a rarely used share was not worth
+ * its place in the sort): exp is what exp_memo returns, so the bits are the same. It needs gas_rate > 0 (scene.c
+ * refuses it alone), so everything that turns the gas on still reads gas_rate. `gas_two_shares_on_a_ramp` checks
+ * the two bells' sum along a linear ramp against the two Gaussian integrals' closed form. */
 #include "gas.h"
 
 #include <math.h>
@@ -169,20 +180,28 @@ void gas_between(hearth_scene *s, double dt) {
             if (!(a > 0)) continue;
             const double u = (T[i] - gm->core[CP_REACTION_T]) / gm->core[CP_REACTION_WIDTH];
             G[i] += a * gm->params[gm->density_index] * dt * (memo ? exp_memo(memo + 2 * (size_t)i, -u * u) : exp(-u * u));
+            const double a2 = gm->core[CP_GAS_RATE_2];
+            if (a2 > 0) { /* the second share (above) */
+                const double u2 = (T[i] - gm->core[CP_REACTION_T_2]) / gm->core[CP_REACTION_WIDTH_2];
+                G[i] += a2 * gm->params[gm->density_index] * dt * exp(-u2 * u2);
+            }
             if (vent) G[i] *= vent_decay(ps, i, vent[i], dt);
         }
         return;
     }
-    double rate[GAS_MATS], Tr[GAS_MATS], width[GAS_MATS];
-    int live[GAS_MATS];
+    double rate[GAS_MATS], Tr[GAS_MATS], width[GAS_MATS], rate2[GAS_MATS], Tr2[GAS_MATS], width2[GAS_MATS];
+    int live[GAS_MATS], two = 0;
     for (int k = 0; k < s->mats.n; k++) {
         const material_slot *gm = &slot[k];
-        const double a = gm->core[CP_GAS_RATE];
+        const double a = gm->core[CP_GAS_RATE], a2 = gm->core[CP_GAS_RATE_2];
         live[k] = a > 0;
         rate[k] = live[k] ? a * gm->params[gm->density_index] * dt : 0;
         Tr[k] = gm->core[CP_REACTION_T], width[k] = gm->core[CP_REACTION_WIDTH];
+        rate2[k] = live[k] && a2 > 0 ? a2 * gm->params[gm->density_index] * dt : 0; /* the second share (above) */
+        Tr2[k] = gm->core[CP_REACTION_T_2], width2[k] = gm->core[CP_REACTION_WIDTH_2];
+        two |= rate2[k] > 0;
     }
-    if (s->mats.n == 1 && live[0] && memo) {
+    if (s->mats.n == 1 && live[0] && memo && !two) {
         gas_between_one(G, T, memo, vent, ps, n, rate[0], Tr[0], width[0], dt);
         return;
     }
@@ -192,6 +211,10 @@ void gas_between(hearth_scene *s, double dt) {
         if (!live[k]) continue;
         const double u = (T[i] - Tr[k]) / width[k];
         G[i] += rate[k] * (memo ? exp_memo(memo + 2 * (size_t)i, -u * u) : exp(-u * u));
+        if (two && rate2[k] > 0) {
+            const double u2 = (T[i] - Tr2[k]) / width2[k];
+            G[i] += rate2[k] * exp(-u2 * u2);
+        }
         if (vent && vent[i] > 0) G[i] *= vent_decay(ps, i, vent[i], dt);
     }
 }

@@ -30,7 +30,8 @@
  * to 6 without version 7's water step limits (scanned again from the particles, as their readers did) and
  * its last core material parameter, dry_conductivity (0, as wet: their bits); versions 4 to 7 without
  * version 8's last core material parameter, dry_specific_heat (0, as wet: their bits); versions 4 to 9 without
- * version 10's last two, ambient_pressure (0: eq. 13 as printed, their bits) and open_temperature. */
+ * version 10's last two, ambient_pressure (0: eq. 13 as printed, their bits) and open_temperature; versions 4 to
+ * 11 without version 12's last three, the second CO2 share (gas_rate_2 0: none, their bits). */
 #include "checkpoint.h"
 
 #include <errno.h>
@@ -373,9 +374,10 @@ static hearth_scene *refuse_at(hearth_scene *s, hearth_error *err, const char *n
 
 static int get_materials(ck_cursor *c, hearth_scene *s, const char *name, uint32_t version, hearth_error *err) {
     /* the core parameters the file holds: before version 7, all up to dry_conductivity, before version 8 up to
-     * dry_specific_heat, before version 10 up to ambient_pressure; those left at their defaults (0, as wet; 0,
-     * eq. 13 as printed, and open_temperature unread) */
-    const int ncore = version >= 10  ? CP_COUNT
+     * dry_specific_heat, before version 10 up to ambient_pressure, before version 12 up to gas_rate_2; those left at
+     * their defaults (0, as wet; 0, eq. 13 as printed, and open_temperature unread; 0, no second CO2 share) */
+    const int ncore = version >= 12  ? CP_COUNT
+                      : version >= 10 ? CP_GAS_RATE_2
                       : version >= 8 ? CP_AMBIENT_PRESSURE
                       : version >= 7 ? CP_DRY_SPECIFIC_HEAT
                                      : CP_DRY_CONDUCTIVITY;

@@ -53,8 +53,10 @@
  * ambient_pressure and open_temperature (params.h; gas.h's gas_tau_ambient); 11: the sticky faces' glue column
  * (PC_GLUE, "glue", mpm_touch.c) in PART for an MPM scene with a sticky face that has stepped: an older file has
  * none, and its first step glues what its sticky faces held then (every particle whose stencil reaches a node on
- * or inside them), so it goes on as it was saved (an older hearth refuses a version 11 file by its version) */
-#define CK_VERSION 11u
+ * or inside them), so it goes on as it was saved (an older hearth refuses a version 11 file by its version); 12: the
+ * materials' second CO2 share, gas_rate_2, reaction_temperature_2, reaction_width_2 (params.h; gas.c): an older file
+ * has none and loads with gas_rate_2 0, its bits */
+#define CK_VERSION 12u
 /// Oldest version read: a version 4 file is version 5's layout without the
 /// DEF fields version 5 appended.
 #define CK_VERSION_MIN 4u

@@ -178,6 +178,10 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                 Gcol[i] += gas_moles_field_step(T0, isnan(Tgas) ? Tcol[i] : Tgas, fdt, s->field_acc, gm->core[CP_GAS_RATE],
                                                 gm->params[gm->density_index], gm->core[CP_REACTION_T],
                                                 gm->core[CP_REACTION_WIDTH]);
+                if (gm->core[CP_GAS_RATE_2] > 0) /* the second share, after the first (gas.c) */
+                    Gcol[i] += gas_moles_field_step(T0, isnan(Tgas) ? Tcol[i] : Tgas, fdt, s->field_acc,
+                                                    gm->core[CP_GAS_RATE_2], gm->params[gm->density_index],
+                                                    gm->core[CP_REACTION_T_2], gm->core[CP_REACTION_WIDTH_2]);
                 if (vent) Gcol[i] *= gas_vent_factor(s, i, dt); /* open surface pores lose their CO2 (gas.c) */
             }
         }

@@ -38,16 +38,16 @@
 --                           (h.library.oven.cookie's own bake is 190 degC); the same cookies,
 --                           each leavener a scaling the preset's CO2 rate by a / 0.015. It also
 --                           writes oven_<T>/browning.png and prints each cookie's browning at its
---                           top, rim, base and centre. Measured (2D, dx 5 mm): it barely spreads
---                           (its measured yield stress, 61.5 Pa in shear once the fat melts, holds
---                           its 17.5 mm) and its CO2 (a sugar-snap soda's, 0.069 mol/kg, made from
---                           ~80 degC) comes mostly after it sets and its cells open (78 degC): the
---                           leavened cookie stands 1.07x the unleavened at 190 degC, 1.14x at 150,
---                           1.22x at 110 (docs/validation.md "The physical cookie's yield stress
---                           (#18, helper cookieyield)" and "The physical cookie's soda";
---                           claim_cookie_physical_leavened_taller, an expected failure). The
---                           leavener a scales the preset's soda by a / 0.015, so 0.015 is the
---                           formula's. until_t = 0 bakes the preset's own time (paper 5 s).
+--                           top, rim, base and centre. Measured (2D, dx 5 mm): the unleavened
+--                           cookie barely spreads (its measured yield stress, 61.5 Pa in shear once
+--                           the fat melts, holds its 17.5 mm); the soda's CO2 (0.069 mol/kg) comes
+--                           in two shares, the NH4Cl one on a 60 degC bell before the 78 degC set
+--                           and the leftover soda's at 100 degC, and the leavened cookie stands
+--                           1.56x the unleavened at 190 degC (92 mm wide), 1.38x at 150, 1.73x at
+--                           110, where the most leavened sheds pieces (docs/validation.md "The
+--                           physical cookie's two shares (#18, helper sodatwo)";
+--                           claim_cookie_physical_leavened_taller passes). The leavener a scales
+--                           both of the preset's shares by a / 0.015, so 0.015 is the formula's. until_t = 0 bakes the preset's own time (paper 5 s).
 --   [--set seed=2]        the particles' jitter (h.scene's seed, default 1): a
 --                           new sampling of the same dough, to see a reading's
 --                           noise (docs/validation.md, "Fig. 17: the top's
@@ -108,7 +108,8 @@ for k, v in pairs(PAPER_LEVERS) do defaults[k] = v end
 local P = h.params(defaults)
 -- preset=physical (#18): h.library.dough.cookie and h.library.oven.cookie (lua/hearth/dough_physical.lua: each
 -- number's source; its rates run S = 50 times fast, so the 11 minute bake at 190 degC takes 13.2 s), latent heat,
--- boiling and browning on. The same cookies: leavener a multiplies the preset's CO2 rate by a / 0.015, the
+-- boiling and browning on. The same cookies: leavener a multiplies the preset's CO2 rates (both shares; cookies.csv's
+-- gas_rate column is the first's, gas_rate) by a / 0.015, the
 -- leavener its rate stands for (Table 2's cookie alpha^g), as the paper path's gas_rate is a x GAS_SCALE. The
 -- PAPER_LEVERS are the paper preset's only; gas and the grid's words hold for both.
 local physical = P.preset == "physical"
@@ -193,7 +194,9 @@ for _, T in ipairs(ovens) do
   local xs, first, gas_of = {}, {}, {} -- gas_of[i]: the physical cookie i's CO2 rate (mol/(kg s), S times fast); first[i]: cookie i's first particle id (ids run in the order s:add made them)
   for i, a in ipairs(leaveners) do
     local d = physical and h.library.dough.cookie or h.library.paper.cookie
-    if physical then d.gas_rate = d.gas_rate * a / A_PRESET * P.gas; gas_of[i] = d.gas_rate
+    if physical then -- both of the preset's CO2 shares (its NH4Cl share is gas_rate_2, dough_physical.lua)
+      d.gas_rate = d.gas_rate * a / A_PRESET * P.gas; gas_of[i] = d.gas_rate
+      if d.gas_rate_2 then d.gas_rate_2 = d.gas_rate_2 * a / A_PRESET * P.gas end
     else d.gas_rate = a * h.library.dough_scale.gas * P.gas end
     if not physical then d.conductivity = d.conductivity * P.conductivity end
     local S0, WATER_S = 0.10, 600 -- the levers above: water as dough.lua's WATER (2e-7 m^2/s, 1.2e-3 kg/(m^2 s K), x600)
