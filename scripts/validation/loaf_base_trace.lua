@@ -3,17 +3,20 @@
 -- on h.recipes.tray) with switches, and per frame, over the raw base's 16 middle columns of 4 mm (the claim's), each
 -- column's lowest particle edge over the tray (y - h_p, h_p = (V0 J)^(1/2) / 2: loaf.csv's base_gap_m per column),
 -- the largest rise of a column's lowest particle (base_lift_m), the worst column's particle (height, J, T, stress_yy,
--- v_y) and the mean J, T and stress_yy of the particles within a cell of the tray. Ends with a SUMMARY line: the gap
--- at the start, at 2 real min and its largest over the first 2 and 3 min.
+-- v_y) and the mean J, T and stress_yy of the particles within a cell of the tray. Ends with a SUMMARY line: the
+-- gap at the start, at 2 real min and its largest over the first 2 and 3 min.
 --   hearth run scripts/validation/loaf_base_trace.lua [--set dx=0.0025] [--set detail=1] (every column's gap)
 --   switches: jitter=0 (the seeding's, default 0.5), smooth=1 (s:add's smooth_surface), open=26 (the pores open from
 --   26 degC: no gas gauge), expansion=0 (eq. 10's thermal coupling), latent=false, gas=0 (the CO2 rate's factor),
 --   vent=0 (gas_vent's factor), browning=false, tray=sticky, off=F (the tray and loaf moved up F dx off the node row),
 --   seed=N (the jitter's draw), flatbase=1 (the base's first particle row a body of its own, unjittered: smooth's
---   forerunner), until_real=S (real seconds, default 180), frames=N (default 36: every 5 real s), quiet=1 (SUMMARY only)
+--   forerunner), until_real=S (real seconds, default 180), frames=N (default 36: every 5 real s),
+--   quiet=1 (SUMMARY only)
 local h = require "hearth"
-local P = h.params { dx = 0.005, frames = 36, latent = true, until_real = 180, tray = "separate", off = 0.0,
-  open = 70, expansion = 0.1, gas = 1.0, browning = true, vent = 1.0, detail = 0, jitter = 0.5, quiet = 0, seed = 1, flatbase = 0, smooth = 0 }
+local P = h.params { dx = 0.005, frames = 36, latent = true, until_real = 180, tray = h.choice { "separate",
+  separate = "friction 0.4, as loaf_physical.lua", sticky = "the foot held where it touched" }, off = 0.0,
+  open = 70, expansion = 0.1, gas = 1.0, browning = true, vent = 1.0, detail = 0, jitter = 0.5, quiet = 0, seed = 1,
+  flatbase = 0, smooth = 0 }
 local oven = h.library.oven.bread
 local S = oven.time_scale
 local until_t = P.until_real / S
@@ -32,11 +35,12 @@ local mat = h.material("cam_clay_dough", mp)
 if P.flatbase > 0 then
   -- the base's first particle row (lattice centres dx/4 above the tray) unjittered, the rest as usual
   local band = h.box({ 0, TRAY - 0.01 }, { 0.14, TRAY + P.dx / 2 })
-  s:add { shape = h.shapes.loaf({ X0, TRAY }, WIDTH, BODY) * band, material = mat, temperature = oven.dough_temperature, jitter = 0 }
-  s:add { shape = h.shapes.loaf({ X0, TRAY }, WIDTH, BODY) - band, material = mat, temperature = oven.dough_temperature, jitter = P.jitter }
+  local loaf, T0 = h.shapes.loaf({ X0, TRAY }, WIDTH, BODY), oven.dough_temperature
+  s:add { shape = loaf * band, material = mat, temperature = T0, jitter = 0 }
+  s:add { shape = loaf - band, material = mat, temperature = T0, jitter = P.jitter }
 else
-  s:add { shape = h.shapes.loaf({ X0, TRAY }, WIDTH, BODY), material = mat, temperature = oven.dough_temperature, jitter = P.jitter,
-    smooth_surface = P.smooth > 0 }
+  s:add { shape = h.shapes.loaf({ X0, TRAY }, WIDTH, BODY), material = mat, temperature = oven.dough_temperature,
+    jitter = P.jitter, smooth_surface = P.smooth > 0 }
 end
 local v0
 local lo0
@@ -69,9 +73,9 @@ local function cols(t)
       nJ = nJ + 1; sJ = sJ + r.J[k]; sT = sT + r.temperature[k]; sS = sS + r.stress_yy[k]
     end
   end
-  local line = ("t %6.1f s: gap max %.3f mm (col %2d, mean %.3f), lift max %.3f; worst: y %.3f mm J %.3f T %.1f syy %.0f vy %.2e; bottom dx: J %.3f T %.1f syy %.0f"):format(
-    t * S, mg * 1e3, mb, sg / 16 * 1e3, ml * 1e3, (r.x[3 * i - 1] - TRAY) * 1e3, r.J[i], r.temperature[i], r.stress_yy[i],
-    r.v[3 * i - 1], sJ / nJ, sT / nJ, sS / nJ)
+  local line = ("t %6.1f s: gap max %.3f mm (col %2d, mean %.3f), lift max %.3f; worst: y %.3f mm J %.3f T %.1f "
+    .. "syy %.0f vy %.2e; bottom dx: J %.3f T %.1f syy %.0f"):format(t * S, mg * 1e3, mb, sg / 16 * 1e3, ml * 1e3,
+    (r.x[3 * i - 1] - TRAY) * 1e3, r.J[i], r.temperature[i], r.stress_yy[i], r.v[3 * i - 1], sJ / nJ, sT / nJ, sS / nJ)
   if P.quiet == 0 then print(line) end
   SUM[#SUM + 1] = { t * S, mg, sg / 16, ml }
   if P.detail > 0 and P.quiet == 0 then
@@ -89,5 +93,6 @@ for _, r in ipairs(SUM) do
 end
 local function at(tt) for _, r in ipairs(SUM) do if math.abs(r[1] - tt) < 0.01 then return r end end end
 local a, b = at(0), at(120)
-print(("SUMMARY dx %.2f mm: gap start %.2f mean %.2f; at 2 min %.2f (mean %.2f, lift %.2f); max <=2 min %.2f, <=3 min %.2f mm"):format(
-  P.dx * 1e3, a[2] * 1e3, a[3] * 1e3, b[2] * 1e3, b[3] * 1e3, b[4] * 1e3, m2 * 1e3, m3 * 1e3))
+print(("SUMMARY dx %.2f mm: gap start %.2f mean %.2f; at 2 min %.2f (mean %.2f, lift %.2f); max <=2 min %.2f, "
+  .. "<=3 min %.2f mm"):format(P.dx * 1e3, a[2] * 1e3, a[3] * 1e3, b[2] * 1e3, b[3] * 1e3, b[4] * 1e3, m2 * 1e3,
+  m3 * 1e3))
