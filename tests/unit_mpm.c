@@ -538,11 +538,12 @@ TEST(body_force) {
  * spacings h of the surface) stays on the lattice while the interior keeps the same jitter draw. A box whose base
  * lies on the lattice's half-spacing (y = 0.1, a node row) has its lowest row exactly h/2 above it when smooth and
  * spread over the jitter (+-0.25 h at jitter 0.5) when not; a base through a lattice row (y = 0.1 + h/2) has its first
- * row inside, h above it, flat too. The jittered base's spread is what stood the physical loaf's base off its tray. */
-static hearth_scene *seed_box(double ylo, int smooth, int *n) {
-    hearth_scene *s = fx_scene(2, 0.02, 0, 1);
+ * row inside, h above it, flat too; and in 3D. The jittered base's spread is what stood the physical loaf's base off its
+ * tray. */
+static hearth_scene *seed_box(int dim, double dx, double ylo, int smooth, int *n) {
+    hearth_scene *s = fx_scene(dim, dx, 0, 1);
     const int mat = fx_elastic(s, 1e4, 0.3, 1000);
-    const double c[3] = {0.4, ylo + 0.1, 0}, half[3] = {0.2, 0.1, 0.1};
+    const double c[3] = {0.4, ylo + 0.1, dim == 3 ? 0.5 : 0}, half[3] = {0.2, 0.1, 0.1};
     hearth_body_def b = hearth_default_body_def();
     b.shape = hearth_shape_box(c, half);
     b.material = mat;
@@ -568,7 +569,7 @@ static double base_spread(const hearth_scene *s, int n, double ylo, double h, do
 TEST(seed_smooth_surface_flat_face) {
     const double h = 0.01, ylo = 0.1; /* dx 0.02, ppc 4: h = dx / 2 */
     int nj, ns;
-    hearth_scene *sj = seed_box(ylo, 0, &nj), *ss = seed_box(ylo, 1, &ns);
+    hearth_scene *sj = seed_box(2, 0.02, ylo, 0, &nj), *ss = seed_box(2, 0.02, ylo, 1, &ns);
     CHECK(nj > 0 && nj == ns); /* a face on the half-spacing: no jittered point crosses it either way */
     double lj, ls;
     const double spread_j = base_spread(sj, nj, ylo, h, &lj), spread_s = base_spread(ss, ns, ylo, h, &ls);
@@ -607,14 +608,26 @@ TEST(seed_smooth_surface_flat_face) {
     hearth_scene_destroy(ss);
     /* a base through a lattice row: smooth, the first row inside stands h above it, flat */
     const double yrow = ylo + 0.5 * h;
-    sj = seed_box(yrow, 0, &nj);
-    ss = seed_box(yrow, 1, &ns);
+    sj = seed_box(2, 0.02, yrow, 0, &nj);
+    ss = seed_box(2, 0.02, yrow, 1, &ns);
     CHECK(nj > 0 && ns > 0);
     const double sp_j = base_spread(sj, nj, yrow, 1.5 * h, &lj), sp_s = base_spread(ss, ns, yrow, 1.5 * h, &ls);
     printf("  base through a row: lowest heights' spread jittered %.4f h (lowest %.4f h), smooth %.2e h (lowest %.6f h)\n",
            sp_j / h, lj / h, sp_s / h, ls / h);
     CHECK(sp_j > 0.3 * h);
     CHECK(sp_s < 1e-9 * h && fabs(ls - h) < 1e-9 * h);
+    hearth_scene_destroy(sj);
+    hearth_scene_destroy(ss);
+    /* 3D (ppc 4 rounds to 2^3: h = dx / 2 = 0.02), the base on a node row: flat when smooth */
+    const double y3 = 0.12;
+    sj = seed_box(3, 0.04, y3, 0, &nj);
+    ss = seed_box(3, 0.04, y3, 1, &ns);
+    CHECK(nj > 1000 && nj == ns);
+    const double s3j = base_spread(sj, nj, y3, 0.02, &lj), s3s = base_spread(ss, ns, y3, 0.02, &ls);
+    printf("  3D, %d particles: lowest row's spread jittered %.4f h, smooth %.2e h (lowest %.6f h)\n", ns, s3j / 0.02,
+           s3s / 0.02, ls / 0.02);
+    CHECK(s3j > 0.3 * 0.02);
+    CHECK(s3s < 1e-9 * 0.02 && fabs(ls - 0.01) < 1e-9 * 0.02);
     hearth_scene_destroy(sj);
     hearth_scene_destroy(ss);
 }
