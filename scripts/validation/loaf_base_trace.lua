@@ -8,15 +8,15 @@
 --   hearth run scripts/validation/loaf_base_trace.lua [--set dx=0.0025] [--set detail=1] (every column's gap)
 --   switches: jitter=0 (the seeding's, default 0.5), smooth=1 (s:add's smooth_surface), open=26 (the pores open from
 --   26 degC: no gas gauge), expansion=0 (eq. 10's thermal coupling), latent=false, gas=0 (the CO2 rate's factor),
---   vent=0 (gas_vent's factor), browning=false, tray=sticky, off=F (the tray and loaf moved up F dx off the node row),
---   seed=N (the jitter's draw), flatbase=1 (the base's first particle row a body of its own, unjittered: smooth's
---   forerunner), until_real=S (real seconds, default 180), frames=N (default 36: every 5 real s),
---   quiet=1 (SUMMARY only)
+--   vent=0 (gas_vent's factor), water=0 (evaporation's and water diffusivity's factor), browning=false, tray=sticky,
+--   off=F (the tray and loaf moved up F dx off the node row), seed=N (the jitter's draw), flatbase=1 (the base's
+--   first particle row a body of its own, unjittered: smooth's forerunner), until_real=S (real seconds, default 180),
+--   frames=N (default 36: every 5 real s), quiet=1 (SUMMARY only)
 local h = require "hearth"
 local P = h.params { dx = 0.005, frames = 36, latent = true, until_real = 180, tray = h.choice { "separate",
   separate = "friction 0.4, as loaf_physical.lua", sticky = "the foot held where it touched" }, off = 0.0,
   open = 70, expansion = 0.1, gas = 1.0, browning = true, vent = 1.0, detail = 0, jitter = 0.5, quiet = 0, seed = 1,
-  flatbase = 0, smooth = 0 }
+  flatbase = 0, smooth = 0, water = 1.0 }
 local oven = h.library.oven.bread
 local S = oven.time_scale
 local until_t = P.until_real / S
@@ -26,6 +26,7 @@ for k, v in pairs(h.library.dough.bread) do mp[k] = v end
 mp.open_temperature = P.open
 mp.expansion = P.expansion
 mp.gas_rate = mp.gas_rate * P.gas
+mp.evaporation, mp.water_diffusivity = mp.evaporation * P.water, mp.water_diffusivity * P.water
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name = "loaf_base_trace", seed = P.seed,
   oven = { temperature = oven.temperature, beta = oven.beta }, latent_heat = P.latent and oven.latent_heat,
   boiling_point = oven.boiling_point, browning = P.browning, browning_scale = oven.browning_scale,
