@@ -263,7 +263,8 @@ static int l_mixture(lua_State *L) {
     return 1;
 }
 
-/* s:_add(shape, mat, ppc, jitter, velocity, temperature|nil, fixed, saturation|nil, ratios|nil, fixed_temperature) -> body id */
+/* s:_add(shape, mat, ppc, jitter, velocity, temperature|nil, fixed, saturation|nil, ratios|nil, fixed_temperature,
+ *        smooth_surface) -> body id */
 static int l_add(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     hearth_body_def b = hearth_default_body_def();
@@ -276,6 +277,7 @@ static int l_add(lua_State *L) {
     b.fixed = lua_toboolean(L, 8);
     b.saturation = lua_isnoneornil(L, 9) ? NAN : luaL_checknumber(L, 9);
     b.fixed_temperature = lua_toboolean(L, 11);
+    b.smooth_surface = lua_toboolean(L, 12);
     if (lua_istable(L, 10)) { /* a dynamic mixture's initial ratios */
         const int k = (int)luaL_len(L, 10);
         for (int c = 0; c < k && c < 8; c++) {

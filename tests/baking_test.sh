@@ -108,8 +108,10 @@ print("EXPECTED FAILURE: the top browns short of golden (> 0.5), and what holds 
       "same flat column in the model browns 0.112, 0.110 at 5, 2.5 mm (loaf_top_follows_reference), and the loaf 0.136, 0.154, "
       "0.151 at 5, 2.5, 1.25 mm (within 0.01 of the round top's 0.160 at 2.5 and 1.25 mm; measured after the boiling front's "
       "shares came to scale with room, helper frontroom), 0.158 and 0.187 at 5 and 2.5 mm since the loaf rises (its pores' "
-      "gas at the atmosphere, helper physrise: a wider, taller top), and 0.166 and 0.187 since its base rests on the "
-      "tray (helper traygap). The Stefan form's 0.28 holds the crumb "
+      "gas at the atmosphere, helper physrise: a wider, taller top), 0.166 and 0.187 since its base rests on the "
+      "tray (helper traygap), and 0.155 and 0.178 since the loaf is seeded with smooth_surface (helper loafbase: the top "
+      "particle read sits on the lattice, 1.25 and 0.625 mm under the top, where the jittered one sat 1.107 and 0.563 mm "
+      "under it). The Stefan form's 0.28 holds the crumb "
       "at 100 degC from t = 0: the 25 degC start (the surface reaches 100 degC at 4-6 min) and the cold crumb under the front, "
       "which takes heat the form boils, bring it to 0.115 in the flat column; the water's evaporation and diffusion move it "
       "by -0.003; the round top adds +0.049. Golden needs more heat at the top: the round top reaches 0.5 near beta = 60 "
@@ -131,6 +133,12 @@ PY
 # Until traygap the claim read base_lift_m, each column's rise off its start: that also counts the seeding's jitter
 # (the lowest particles start up to 0.12 dx inside their half-extent and rest at it once the contact holds) and the
 # bottom particles' own swelling, neither of which is the base leaving the tray; it is still printed.
+# Until loafbase this was an expected failure at 5 mm (1.10 mm at 2 min): the jittered base was as rough as its
+# particles' lower edges (spread over 0.25 dx, 1.25 mm), and the bottom rows' gas swelling (5-15 real s, 35-60 degC)
+# pushed the deepest ones out of the tray to rest at their half-spacing, lifting the base around them by up to 0.6 mm
+# so the highest edges stood 0.9-1.1 mm off. Switches measured it (docs/validation.md, "The physical loaf's base
+# lifts: traced"): jitter 0, 0.03 mm; the pores' gas off, 0.15 mm; thermal expansion off, 1.09 mm. The scene now seeds
+# the loaf with smooth_surface (its outer layer on the lattice) and the claim is a plain test at both dx.
 claim_loaf_physical_base_on_tray | claim_loaf_physical_base_on_tray_fine)
     dx=0.005
     [ "$case_name" = claim_loaf_physical_base_on_tray_fine ] && dx=0.0025
@@ -145,23 +153,9 @@ j = max(range(len(gap)), key=lambda i: gap[i])
 print(f"dx {dx * 1e3:.1f} mm: the base's largest gap to the tray over its middle 80% {gap[j] * 1e3:.2f} mm at "
       f"{rows[j]['t_real_min']} min (need <= 0.5 mm); at the start {gap[0] * 1e3:.2f} mm (the seeding's); the largest "
       f"rise of a column's lowest particle off its start {max(lift) * 1e3:.2f} mm")
-if gap[j] <= 0.5e-3:
-    sys.exit(0)
-if dx < 0.004:
-    sys.exit(1)
-print("EXPECTED FAILURE: at 5 mm a column's lowest particle edge stands up to ~0.2 dx off the tray, and at 2.5 mm "
-      "0.14 dx (0.36 mm: _fine passes). The base is down (the contact holds a node only where a particle touches the "
-      "face, mpm_touch.c, helper traygap: before it the base floated 2.96 mm up), but its edge is a particle's: the "
-      "seeding jitters each particle by up to 0.125 dx (half a spacing of jitter: bodies.c, scene.c; the gap at the start "
-      "ranges -0.62..+0.24 mm at 5 mm), "
-      "and a column whose lowest particle sits higher than a neighbour that touches is carried by the same held "
-      "nodes, so the base is as rough as its particles, ~0.2 dx; the 0.5 mm bar is 0.1 dx here. The base browns end "
-      "to end (docs/validation.md, \"A body rests on what it touches\").")
-sys.exit(77)
+sys.exit(0 if gap[j] <= 0.5e-3 else 1)
 PY
-    rc=$?
-    [ $rc -eq 77 ] && exit 77
-    [ $rc -eq 0 ] || fail "$case_name: the base leaves its tray (numbers above)"
+    [ $? -eq 0 ] || fail "$case_name: the base leaves its tray (numbers above)"
     ;;
 
 # #18: the physical loaf (h.library.dough.bread, its pores' gas at the atmosphere: ambient_pressure, gas.h) rises in

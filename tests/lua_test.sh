@@ -34,6 +34,7 @@ lua_error_messages)
     check err_oven_nan.lua 3 "s:oven: temperature = nan" "[-273.15, 5000] degC, or nil for no oven"
     check err_curve.lua 2 "h.curve: temperatures must increase" "point 2: 50 after 100"
     check err_add_nomat.lua 3 "s:add: material = h.material(...) is required"
+    check err_add_smooth.lua 3 "s:add: smooth_surface = 1; valid: true or false"
     check err_plugin.lua 2 "plugin not found" "hearth_no_such_plugin_xyz.so" "search path" "HEARTH_PLUGIN_PATH"
     if [ -n "${HEARTH_PLUGIN_PATH:-}" ]; then has err.txt "$HEARTH_PLUGIN_PATH" "plugin folders listed"; fi
     # the scene's own folder is searched only with --trust (an untrusted scene may have put a plugin there)

@@ -534,4 +534,102 @@ TEST(body_force) {
     hearth_scene_destroy(s);
 }
 
-TEST_MAIN(T(bspline_weights), T(transfer_conservation_2d), T(transfer_conservation_3d), T(transfer_pic_dissipates), T(rotating_disc), T(free_fall), T(vibrating_bar), T(probe_fields), T(stress_tensor_components), T(particles_optional_columns), T(body_force))
+/* hearth_body_def.smooth_surface (#18, helper loafbase): the seeding's outer layer (lattice points within 1.25
+ * spacings h of the surface) stays on the lattice while the interior keeps the same jitter draw. A box whose base
+ * lies on the lattice's half-spacing (y = 0.1, a node row) has its lowest row exactly h/2 above it when smooth and
+ * spread over the jitter (+-0.25 h at jitter 0.5) when not; a base through a lattice row (y = 0.1 + h/2) has its first
+ * row inside, h above it, flat too; and in 3D. The jittered base's spread is what stood the physical loaf's base off its
+ * tray. */
+static hearth_scene *seed_box(int dim, double dx, double ylo, int smooth, int *n) {
+    hearth_scene *s = fx_scene(dim, dx, 0, 1);
+    const int mat = fx_elastic(s, 1e4, 0.3, 1000);
+    const double c[3] = {0.4, ylo + 0.1, dim == 3 ? 0.5 : 0}, half[3] = {0.2, 0.1, 0.1};
+    hearth_body_def b = hearth_default_body_def();
+    b.shape = hearth_shape_box(c, half);
+    b.material = mat;
+    b.smooth_surface = smooth;
+    hearth_error err;
+    *n = hearth_scene_add_body(s, &b, &err) >= 0 ? hearth_scene_body_particles(s, 0) : -1;
+    hearth_shape_free((hearth_shape *)b.shape);
+    return s;
+}
+
+/* the spread (max - min) of the lowest row's heights above ylo: particles within h of it */
+static double base_spread(const hearth_scene *s, int n, double ylo, double h, double *lowest) {
+    double lo = INFINITY, hi = -INFINITY;
+    const double *x = pcold(&s->ps, PC_X);
+    for (int i = 0; i < n; i++) {
+        const double y = x[3 * i + 1] - ylo;
+        if (y < h) lo = fmin(lo, y), hi = fmax(hi, y);
+    }
+    *lowest = lo;
+    return hi - lo;
+}
+
+TEST(seed_smooth_surface_flat_face) {
+    const double h = 0.01, ylo = 0.1; /* dx 0.02, ppc 4: h = dx / 2 */
+    int nj, ns;
+    hearth_scene *sj = seed_box(2, 0.02, ylo, 0, &nj), *ss = seed_box(2, 0.02, ylo, 1, &ns);
+    CHECK(nj > 0 && nj == ns); /* a face on the half-spacing: no jittered point crosses it either way */
+    double lj, ls;
+    const double spread_j = base_spread(sj, nj, ylo, h, &lj), spread_s = base_spread(ss, ns, ylo, h, &ls);
+    printf("  base on the half-spacing: lowest row's spread jittered %.4f h, smooth %.2e h (lowest at %.6f h)\n",
+           spread_j / h, spread_s / h, ls / h);
+    CHECK(spread_j > 0.3 * h);
+    CHECK(spread_s < 1e-9 * h);
+    CHECK(fabs(ls - 0.5 * h) < 1e-9 * h);
+    /* the interior (farther than 1.5 h from every face) is the same draw, and still jittered */
+    const double *xj = pcold(&sj->ps, PC_X), *xs = pcold(&ss->ps, PC_X);
+    int inner = 0, same = 0, off_lattice = 0;
+    for (int i = 0; i < nj && nj == ns; i++) {
+        const double x = xj[3 * i], y = xj[3 * i + 1];
+        const double d = fmin(fmin(x - 0.2, 0.6 - x), fmin(y - ylo, ylo + 0.2 - y));
+        if (d < 1.5 * h + 0.25 * h) continue;
+        inner++;
+        same += xj[3 * i] == xs[3 * i] && xj[3 * i + 1] == xs[3 * i + 1];
+        const double fy = (y - ylo) / h - 0.5;
+        off_lattice += fabs(fy - floor(fy + 0.5)) > 0.01;
+    }
+    printf("  interior: %d particles, %d the same in both, %d off the lattice\n", inner, same, off_lattice);
+    CHECK(inner > 100 && same == inner && off_lattice > inner / 2);
+    /* every particle of the smooth seeding within 1.25 h of a face sits on the lattice */
+    int layer = 0, on = 0;
+    for (int i = 0; i < ns; i++) {
+        const double x = xs[3 * i], y = xs[3 * i + 1];
+        const double d = fmin(fmin(x - 0.2, 0.6 - x), fmin(y - ylo, ylo + 0.2 - y));
+        if (d >= 1.25 * h) continue;
+        layer++;
+        const double fx = (x - 0.2) / h - 0.5, fy = (y - ylo) / h - 0.5;
+        on += fabs(fx - floor(fx + 0.5)) < 1e-6 && fabs(fy - floor(fy + 0.5)) < 1e-6;
+    }
+    printf("  outer layer: %d particles, %d on the lattice\n", layer, on);
+    CHECK(layer > 50 && on == layer);
+    hearth_scene_destroy(sj);
+    hearth_scene_destroy(ss);
+    /* a base through a lattice row: smooth, the first row inside stands h above it, flat */
+    const double yrow = ylo + 0.5 * h;
+    sj = seed_box(2, 0.02, yrow, 0, &nj);
+    ss = seed_box(2, 0.02, yrow, 1, &ns);
+    CHECK(nj > 0 && ns > 0);
+    const double sp_j = base_spread(sj, nj, yrow, 1.5 * h, &lj), sp_s = base_spread(ss, ns, yrow, 1.5 * h, &ls);
+    printf("  base through a row: lowest heights' spread jittered %.4f h (lowest %.4f h), smooth %.2e h (lowest %.6f h)\n",
+           sp_j / h, lj / h, sp_s / h, ls / h);
+    CHECK(sp_j > 0.3 * h);
+    CHECK(sp_s < 1e-9 * h && fabs(ls - h) < 1e-9 * h);
+    hearth_scene_destroy(sj);
+    hearth_scene_destroy(ss);
+    /* 3D (ppc 4 rounds to 2^3: h = dx / 2 = 0.02), the base on a node row: flat when smooth */
+    const double y3 = 0.12;
+    sj = seed_box(3, 0.04, y3, 0, &nj);
+    ss = seed_box(3, 0.04, y3, 1, &ns);
+    CHECK(nj > 1000 && nj == ns);
+    const double s3j = base_spread(sj, nj, y3, 0.02, &lj), s3s = base_spread(ss, ns, y3, 0.02, &ls);
+    printf("  3D, %d particles: lowest row's spread jittered %.4f h, smooth %.2e h (lowest %.6f h)\n", ns, s3j / 0.02,
+           s3s / 0.02, ls / 0.02);
+    CHECK(s3j > 0.3 * 0.02);
+    CHECK(s3s < 1e-9 * 0.02 && fabs(ls - 0.01) < 1e-9 * 0.02);
+    hearth_scene_destroy(sj);
+    hearth_scene_destroy(ss);
+}
+
+TEST_MAIN(T(bspline_weights), T(transfer_conservation_2d), T(transfer_conservation_3d), T(transfer_pic_dissipates), T(rotating_disc), T(free_fall), T(vibrating_bar), T(probe_fields), T(stress_tensor_components), T(particles_optional_columns), T(body_force), T(seed_smooth_surface_flat_face))

@@ -53,7 +53,7 @@ int hearth_scene_add_body(hearth_scene *s, const hearth_body_def *def, hearth_er
     if (!st && !isnan(def->saturation)) st = water_enable(s, err);
     if (st) return -1;
     const int n0 = s->ps.n;
-    int n = hearth_scene_seed_shape(s, def->material, def->shape, def->ppc, def->jitter, def->velocity, err);
+    int n = scene_seed_shape(s, def->material, def->shape, def->ppc, def->jitter, def->smooth_surface, def->velocity, err);
     if (n < 0) return -1;
     if (n == 0) {
         err_set(err, HEARTH_ERR_PARAM, "body: its shape holds no particle inside the domain (check the shape's position and size against the box)");

@@ -642,13 +642,15 @@ local function material_id(s, m)
 end
 
 --- s:add{shape = ..., material = ..., ppc = 4, velocity = {0,0}, jitter = 0.5, temperature = 20, saturation = 0.5,
----   fixed_temperature = false} -> body id (fixed_temperature: the body keeps its temperature, a Dirichlet boundary)
+---   fixed_temperature = false, smooth_surface = false} -> body id (fixed_temperature: the body keeps its temperature, a
+---   Dirichlet boundary; smooth_surface: the particles within 1.25 lattice spacings of the surface are not jittered)
 --- A fixed body (fixed = true) under SPH is a wall; velocity = {..} or function(t), omega = ... and
 --- pivot = {..} (spelt as s:collider's) make it move rigidly: a lid, a paddle, a piston.
 function S:add(o)
   if type(o) ~= "table" then error("s:add: expected a table", 2) end
   check_keys(o, { shape = true, material = true, ppc = true, velocity = true, jitter = true, temperature = true,
-    name = true, fixed = true, saturation = true, omega = true, pivot = true, fixed_temperature = true }, "s:add")
+    name = true, fixed = true, saturation = true, omega = true, pivot = true, fixed_temperature = true,
+    smooth_surface = true }, "s:add")
   local mv, mw, mp, start_v = nil, o.omega, nil, o.velocity
   if o.fixed and (o.velocity ~= nil or o.omega ~= nil or o.pivot ~= nil) then -- a moving wall
     mv = o.velocity
@@ -686,8 +688,11 @@ function S:add(o)
   if o.fixed_temperature and o.temperature == nil then
     error("s:add: fixed_temperature = true needs temperature = ... (degC), the temperature the body keeps", 2)
   end
+  if o.smooth_surface ~= nil and type(o.smooth_surface) ~= "boolean" then
+    error(("s:add: smooth_surface = %s; valid: true or false"):format(tostring(o.smooth_surface)), 2)
+  end
   local ok2, body = pcall(self._add, self, o.shape, type(id) == "table" and id[1] or id, math.floor(ppc), jitter, vel,
-    o.temperature, o.fixed, o.saturation, mix_ratios, o.fixed_temperature and true or false)
+    o.temperature, o.fixed, o.saturation, mix_ratios, o.fixed_temperature and true or false, o.smooth_surface == true)
   if not ok2 then error(body, 2) end
   if mv ~= nil or mw ~= nil or mp ~= nil then
     local okm, em = pcall(self._body_motion, self, body, mv, mw, mp)

@@ -467,6 +467,8 @@ typedef struct hearth_body_def {
     int fixed;                 ///< pinned: the particles never move (for tests of the fields alone)
     double ratios[8];          ///< a mixture's initial mixing ratios per constituent (normalised; need not sum to 1)
     int fixed_temperature;     ///< 1: the body keeps `temperature` (Dirichlet: its particles and the grid nodes it fills); needs a temperature; MPM only
+    int smooth_surface;        ///< 1: particles seeded within 1.25 lattice spacings of the shape's surface are not jittered, so a flat
+                               ///< face is flat (a base resting on a tray); 0 (default): every particle jittered alike
 } hearth_body_def;
 
 /// ppc 4, jitter 0.5, at rest, temperature and saturation unset.

@@ -10,11 +10,12 @@
 -- or "sticky" (a bare tray the dough sticks to: the contact holds the base where it touches, in tension too).
 -- On the separate tray the bottom rows, heated through 25..70 degC in the first minute, swell under their pores'
 -- gas (gas.h, gas_tau_ambient) and push the base up, and it comes back down: the tray holds a node only where the
--- dough touches it (mpm_touch.c), so the base rests with its lowest particles about their half-spacing above the
--- tray (base_lift_m at most 1.8 mm at 5 mm, 0.76 at 2.5 mm: the lowest particles start jittered below their
--- half-spacing, and swell; it was ~0.4 dx, 3.3 and 1.7 mm, when the tray held every node a cell up). On the
--- sticky one the base stays, but at dx 2.5 mm the top tears open at 12 min (docs/validation.md, "The physical
--- loaf's base on its tray", "A body rests on what it touches").
+-- dough touches it (mpm_touch.c), so the base rests with its lowest particles at their half-spacing above the tray.
+-- The loaf is seeded with smooth_surface (its outer layer of particles on the lattice, unjittered): jittered, its
+-- base was as rough as the jitter (lower edges spread over 0.25 dx), the bottom rows' swelling pushed the deepest
+-- particles out to rest on the tray and the rest of the base then stood up to 1.1 mm (5 mm) off it; smooth, at most
+-- 0.15 mm (docs/validation.md, "The physical loaf's base lifts: traced"). On the sticky tray the base stays, but at
+-- dx 2.5 mm the top tore open at 12 min (measured jittered: "The physical loaf's base on its tray").
 --   hearth run scripts/scenes/baking/loaf_physical.lua [--set dx=0.0025] [--set latent=false] [--set tray=sticky]
 -- What it shows: the crumb climbs to 100 degC and holds there while it holds
 -- water (the boiling plateau), while the crust dries and heats on toward the
@@ -24,7 +25,7 @@
 -- index, fields/browning.c's 0..1; the loaf's area, V0 J summed), temperature_%04d.png, and at the end temperature.png, saturation.png and
 -- browning.png; loaf.csv's base_lift_m is the most the lowest particle has risen off its start, over the raw
 -- base's middle 80% (16 columns of 4 mm across x0 +- 32 mm), and base_gap_m the most any column's lowest particle
--- edge stands off the tray (at most 1.1 mm at 5 mm, 0.36 mm at 2.5 mm: the base is as rough as its jittered particles).
+-- edge stands off the tray.
 local h = require "hearth"
 local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0, tray = h.choice { "separate",
   separate = "friction 0.4: the foot slides out, as on a greased or papered tray",
@@ -40,8 +41,9 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name
   boiling_point = oven.boiling_point, browning = true, browning_scale = oven.browning_scale,
   gas_vent = oven.gas_vent, vent_porosity = oven.vent_porosity }
 h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta, mode = P.tray })
+-- smooth_surface: the outer layer on the lattice, so the base is flat on the tray (the header)
 s:add { shape = h.shapes.loaf({ X0, TRAY }, WIDTH, BODY), material = h.material("cam_clay_dough", h.library.dough.bread),
-  temperature = oven.dough_temperature }
+  temperature = oven.dough_temperature, smooth_surface = true }
 
 local function height() return h.recipes.height(s, X0, TRAY, 0.14, 280) end
 -- particle values, as the unit tests read them (a probe is the grid's B-spline
