@@ -1,0 +1,247 @@
+# shellcheck shell=bash
+# tests/baking/cookie.sh: cookies.lua: leavened against unleavened, flat tops, spread by oven, Fig. 17's dome; the
+# physical cookie (Ding et al. 2019 §7.3).
+# Sourced by tests/baking_test.sh, whose variables (case_name, hearth, root, scenes, COARSE) and
+# functions (run, fail) it uses. An arm exits with its verdict or falls through to the driver's "ok"; any other
+# case leaves `unmatched` set for the next part.
+case "$case_name" in
+
+# §7.3: "Too much leavening agent would produce a very tall cookie, while no
+# leavener at all yields a flat one." Height rises with alpha^g at one oven,
+# and the unleavened top is flat: over the middle third of the cookie its
+# parabola sags less than a quarter cell (the resolution of the measure) and
+# less than the most leavened cookie's. The flat top at the claims' coarse dx
+# (7.5 mm), the scene's dx (_fine, 5 mm) and one finer level (_finer, 3.75
+# mm, suite campaign), as #18 asks; each cookie must be read alone (cookies.lua's
+# column alone: it touches neither the box's wall nor its neighbour). A plain
+# test at all three since helper flat3 (cookies.lua's oven bakes a real dough's
+# conductivity, so the base and rim set first, and its dough is 17.5 mm thick);
+# the bake runs 4 s, by which every cookie has set (3.5 s at 150 degC).
+claim_cookie_height_leavener | claim_cookie_flat_without_leavener | claim_cookie_flat_without_leavener_fine | \
+    claim_cookie_flat_without_leavener_finer)
+    lv=0.015,0.0075,0 dx=0.0075
+    case $case_name in claim_cookie_flat_without_leavener*) lv=0.015,0 ;; esac # the flat claim needs only these two
+    [ "$case_name" = claim_cookie_flat_without_leavener_fine ] && dx=0.005
+    [ "$case_name" = claim_cookie_flat_without_leavener_finer ] && dx=0.00375
+    run cookies --set dx=$dx --set until_t=4 --set frames=1 --set ovens=150 --set leaveners=$lv
+    python3 - hearth-out/cookies/cookies.csv "$case_name" $dx <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+h = {float(r["leavener"]): float(r["height_m"]) for r in rows}
+k = {float(r["leavener"]): float(r["top_curvature_1_per_m"]) for r in rows}
+kp = {float(r["leavener"]): float(r["top_curvature_particles_1_per_m"]) for r in rows}
+se = {float(r["leavener"]): float(r["top_curvature_particles_se_1_per_m"]) for r in rows}
+w = {float(r["leavener"]): float(r["spread_m"]) for r in rows}
+print("heights by leavener:", h, "curvatures:", k, "spreads:", w)
+print("particles' top curvature +- the fit's standard error (h.top_curvature of the displacements since placing; "
+      "a static flat top reads its settling, under 0.12 1/m, docs/validation.md 'Fig. 17 at 3.75 mm: the jitter, "
+      "read and removed'):",
+      ", ".join(f"{a}: {kp[a]:.2f} +- {se[a]:.2f}" for a in sorted(kp, reverse=True)))
+if not all(r["alone"] == "1" for r in rows):
+    print("a cookie touches the box's wall or its neighbour (cookies.lua's alone column): its readings are not its own")
+    sys.exit(1)
+if sys.argv[2] == "claim_cookie_height_leavener":
+    sys.exit(0 if h[0.015] > h[0.0075] > h[0.0] else 1)
+dx = float(sys.argv[3])
+sag = abs(k[0.0]) / 2 * (w[0.0] / 6) ** 2
+print(f"dx {dx * 1e3:.2f} mm: unleavened sag over the middle third {sag * 1e3:.3f} mm (flat: < dx/4 = {dx / 4 * 1e3:.3f} "
+      f"mm); |curvature| {abs(k[0.0]):.2f} vs most leavened {abs(k[0.015]):.2f} 1/m (particles: {abs(kp[0.0]):.2f} vs "
+      f"{abs(kp[0.015]):.2f})")
+if sag < dx / 4 and abs(k[0.0]) < abs(k[0.015]):
+    sys.exit(0)
+print("FAIL: the unleavened top is domed (and/or not flatter than the leavened one's). Until #18 helper flat3 this "
+      "was an expected failure at every dx: with Table 2's kappa the cookie baked evenly (Biot ~0.01) and spread as a "
+      "puddle whose base the tray held, which domes (Huppert 1982) by a fraction of H, not of dx. cookies.lua now bakes "
+      "a real dough's conductivity (x0.01, Biot ~1: the base and rim set first, the unleavened dough sets flat on them, "
+      "the leavened centre rises inside its set rim) and a 17.5 mm dough: check its oven and dough against "
+      "docs/validation.md 'The unleavened cookie's top: a real dough's heat'")
+sys.exit(1)
+PY
+    rc=$?
+    [ $rc -eq 77 ] && exit 77
+    [ $rc -eq 0 ] || fail "$case_name does not hold (numbers above)"
+    ;;
+
+# Issue #18, why the unleavened top is domed (docs/validation.md "The unleavened
+# cookie's top: traced"): it spreads as a gravity current whose base the tray
+# holds, and such a current's top is domed however fine the grid. The same
+# dough on a free-slip tray (friction 0) spreads as a plug, in extension,
+# where a thicker part thins faster, so its top sets flat: cookies.lua's
+# unleavened dough alone (scripts/validation/cookie_top_trace.lua, dx 5 mm,
+# 2.5 s, 150 degC) must end set (every particle past 78 degC), with the flat
+# claim's sag (the density probe's parabola over the middle third, |k|/2
+# (w/6)^2) under dx/4, and its top at two thirds of the half-width within 10%
+# of the centre's (the particles' top; a no-slip Newtonian current's is 0.822
+# of it, Huppert 1982; the shipped tray's measures 0.81).
+cookie_top_flat_on_slipping_tray)
+    "$hearth" run "$root/scripts/validation/cookie_top_trace.lua" --quiet --set dx=0.005 --set friction=0 --set png=false \
+        --set frames=5 >out.txt 2>err.txt || fail "cookie_top_trace.lua: exit $?: $(cat err.txt)"
+    cat out.txt
+    python3 - out.txt <<'PY' || fail "the unleavened dough on a free-slip tray does not set flat (numbers above)"
+import csv, sys
+last = list(csv.DictReader(open(sys.argv[1])))[-1]
+dx, w, H = 0.005, float(last["w_mm"]) * 1e-3, float(last["H_mm"])
+sag = abs(float(last["k_probe"])) / 2 * (w / 6) ** 2
+r = float(last["h_two_thirds"])
+print(f"free-slip tray, dx 5 mm, t {last['t_s']} s: {H:.1f} mm tall, {w * 1e3:.1f} mm wide, set {last['set78']}; "
+      f"probe sag over the middle third {sag * 1e3:.3f} mm (need < {dx / 4 * 1e3:.3f}); top at 2/3 of the half-width "
+      f"{r:.3f} of the centre's (need >= 0.9); particle curvature {last['k_particles']} 1/m")
+sys.exit(0 if float(last["set78"]) == 1 and sag < dx / 4 and r >= 0.9 else 1)
+PY
+    ;;
+
+# §7.2: "With the temperature being too high, the dough gets heated up very
+# quickly, so the cookie does not get enough time to spread": at fixed
+# leavener, the final spread falls as the oven temperature rises (each
+# cookie alone in its slot, so the spread is its own: cookies.lua's alone).
+claim_cookie_spread_oven)
+    run cookies "${COARSE[@]}" --set ovens=190,150,110 --set leaveners=0.0075
+    python3 - hearth-out/cookies/cookies.csv <<'PY' || fail "spread does not fall with oven temperature (numbers above)"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+w = {float(r["oven_degC"]): float(r["spread_m"]) for r in rows}
+print("spread by oven temperature:", w, "each alone in its slot:", [r["alone"] for r in rows])
+sys.exit(0 if w[190] < w[150] < w[110] and all(r["alone"] == "1" for r in rows) else 1)
+PY
+    ;;
+
+# §7.5, Fig. 17: the full model's cookie is domed; the Stomakhin-like
+# baseline (the snow_plastic plugin: Stomakhin et al. 2013's clamped
+# fixed-corotated law with the snow paper's theta_c, theta_s and xi and the
+# cookie's E, nu and density; no gas, no viscoplasticity, no thermal
+# expansion) is flat or dented. Both measures of the top (the density probe's
+# and the particles', h.top_curvature; see cookies.lua) must say so, each
+# against the particles' sampling noise sigma: a reading of a top's curvature
+# scatters by about 2 1/m from one jittered sampling of the same dough to the
+# next (five samplings at each dx, docs/validation.md "Fig. 17: the top's
+# curvature and its noise"), so domed is k < -2 sigma and flat or dented is
+# k >= -2 sigma. (Until #18 helper fig17 the limits were k < 0 and k >= 0: a
+# flat top read with either sign.) At the claims' coarse dx (7.5 mm), the
+# scene's own dx (_fine, 5 mm) and one finer level (_finer, 3.75 mm), as #18
+# asks; the paper's three ovens are scripts/validation/fig17_grid.sh. _finer
+# was an expected failure from helper flat3 (cookies.lua's dough thinned to
+# 17.5 mm) to helper fig17c: the baseline's static capsule read -3.21 1/m by
+# the probe (five samplings: -3.21 .. +2.46), and 0 with the seeding's jitter
+# off. Since fig17c both measures read the top's change since the dough was
+# placed (the probe less the raw dough's height where the material on top
+# was placed; the particles by their displacements, h.top_curvature's rest),
+# so the jitter the static capsule keeps cancels; the bands below are unchanged (docs/validation.md
+# "Fig. 17 at 3.75 mm: the jitter, read and removed").
+claim_cookie_domed_vs_baseline | claim_cookie_domed_vs_baseline_fine | claim_cookie_domed_vs_baseline_finer)
+    dx=0.0075
+    [ "$case_name" = claim_cookie_domed_vs_baseline_fine ] && dx=0.005
+    [ "$case_name" = claim_cookie_domed_vs_baseline_finer ] && dx=0.00375
+    run cookies --set dx=$dx --set until_t=4 --set frames=1 --set ovens=150 --set leaveners=0.015 >/dev/null
+    cp hearth-out/cookies/cookies.csv full.csv
+    run cookies --set dx=$dx --set until_t=4 --set frames=1 --set ovens=150 --set leaveners=0.015 --set baseline=true >/dev/null
+    python3 - full.csv hearth-out/cookies/cookies.csv $dx <<'PY'
+import csv, sys
+full = list(csv.DictReader(open(sys.argv[1])))[0]
+base = list(csv.DictReader(open(sys.argv[2])))[0]
+dx = float(sys.argv[3])
+cols = ("top_curvature_1_per_m", "top_curvature_particles_1_per_m")
+kf = [float(full[c]) for c in cols]
+kb = [float(base[c]) for c in cols]
+se = [float(r["top_curvature_particles_se_1_per_m"]) for r in (full, base)]
+# sigma: the standard deviation of each cookie's particle reading (h.top_curvature
+# from heights) over five jitter samplings of the 25 mm dough's bake (cookies.lua
+# --set seed=1..5; docs/validation.md, "Fig. 17: the top's curvature and its
+# noise"), full model and baseline; the probe's reading is held to the same
+# sigma. Kept as the bands since helper fig17c changed both measures to read
+# the top's change since placing: their scatter over five samplings of today's
+# 17.5 mm bake is then 0.01-0.03 1/m for the baseline (its elastic settling,
+# -0.003 to -0.11 1/m, is what remains) and 1.5-7 1/m for the full model (the
+# coarse bake's own, probe and particles alike); docs/validation.md "Fig. 17 at
+# 3.75 mm: the jitter, read and removed"
+sf, sb = {0.0075: (2.06, 2.20), 0.005: (1.86, 2.12), 0.00375: (0.43, 1.33)}[dx]
+print(f"dx {dx * 1e3:.2f} mm, top curvature (probe, particles +- the fit's standard error): full model {kf[0]:.3f}, "
+      f"{kf[1]:.3f} +- {se[0]:.3f} 1/m; baseline {kb[0]:.3f}, {kb[1]:.3f} +- {se[1]:.3f} 1/m (each the change since "
+      f"placing); sigma (the 25 mm dough's sampling noise of the heights' reading, kept as the bands) "
+      f"{sf:.2f} and {sb:.2f} 1/m: domed needs k < {-2 * sf:.2f}, flat or dented k >= {-2 * sb:.2f}")
+domed, flat = all(k < -2 * sf for k in kf), all(k >= -2 * sb for k in kb)
+print(f"full model domed beyond noise: {domed}; baseline flat or dented within noise: {flat}")
+sys.exit(0 if domed and flat else 1)
+PY
+    [ $? -eq 0 ] || fail "the full model's cookie is not domed beyond noise, or the baseline's top is not flat within it (numbers above)"
+    ;;
+# #18, Ding §7.3 ("too much leavening agent would produce a very tall cookie,
+# while no leavener at all yields a flat one"): in cookies.lua's 150 degC oven
+# the most leavened cookie (0.015) ends at least 1.3x as tall as the
+# unleavened one, and domed (both measures of its top curve down). At the
+# claims' coarse dx (7.5 mm), the scene's (_fine, 5 mm) and one finer
+# (_finer, 3.75 mm, suite campaign). Passes since the cookie sets at its
+# gluten's glass transition, 71-78 degC (lua/hearth/dough.lua, COOKIE_SET;
+# docs/validation.md "The cookie's set"): before, 1.068x and 1.049x. At all
+# three levels since the porosity is the gas volume fraction and open surface
+# pores vent ("The cookie's skin"): 1.364 / 1.354 / 1.330; _finer was an
+# expected failure at 1.291 before, and is now a plain test. Since helper
+# flat3 (cookies.lua bakes a real dough's conductivity and a 17.5 mm dough):
+# 1.649 / 1.559 / 1.542.
+claim_cookie_leavened_taller | claim_cookie_leavened_taller_fine | claim_cookie_leavened_taller_finer)
+    dx=0.0075
+    [ "$case_name" = claim_cookie_leavened_taller_fine ] && dx=0.005
+    [ "$case_name" = claim_cookie_leavened_taller_finer ] && dx=0.00375
+    run cookies --set dx=$dx --set until_t=4 --set frames=1 --set ovens=150 --set leaveners=0.015,0 >/dev/null
+    python3 - hearth-out/cookies/cookies.csv $dx "$case_name" <<'PY'
+import csv, sys
+rows = {float(r["leavener"]): r for r in csv.DictReader(open(sys.argv[1]))}
+h = {k: float(r["height_m"]) for k, r in rows.items()}
+k = [float(rows[0.015][c]) for c in ("top_curvature_1_per_m", "top_curvature_particles_1_per_m")]
+se = float(rows[0.015]["top_curvature_particles_se_1_per_m"])
+ratio = h[0.015] / h[0.0]
+print(f"dx {float(sys.argv[2]) * 1e3:.2f} mm: leavened {h[0.015] * 1e3:.1f} mm, unleavened {h[0.0] * 1e3:.1f} mm, "
+      f"ratio {ratio:.3f} (need >= 1.3); leavened top curvature {k[0]:.2f}, {k[1]:.2f} +- {se:.2f} 1/m (probe, "
+      "particles +- the fit's standard error; domed: both < 0)")
+if ratio < 1.3:
+    print("the ratio was 1.068x / 1.049x (dx 7.5 / 5 mm) while the cookie set from 35 degC on bread's Fig. 8 "
+          "curve (docs/validation.md, 'The cookie, measured again' to 'The cookie's CO2 traced'): check "
+          "h.library.paper.cookie's tau_y and eta curves (lua/hearth/dough.lua, COOKIE_SET); and 1.322 / 1.306 / "
+          "1.291 (7.5 / 5 / 3.75 mm) while the porosity was the linear J^P - 1 + n0, whose clamp at 1 let the skin "
+          "swell (docs/validation.md, 'The cookie's skin': core/sim/fields/gas.h, gas_porosity; gas_vent)")
+sys.exit(0 if ratio >= 1.3 and all(x < 0 for x in k) else 1)
+PY
+    rc=$?
+    [ $rc -eq 77 ] && exit 77
+    [ $rc -eq 0 ] || fail "the leavened cookie is not 1.3x as tall and domed (numbers above)"
+    ;;
+# #18, Ding §7.3 with the physical cookie (cookies.lua --set preset=physical: h.library.dough.cookie, a sugar-snap
+# dough's measured or composition-predicted density, heat capacity and conductivity, latent heat, boiling and
+# browning on; 13.2 s stand for 11 minutes at 190 degC, h.library.oven.cookie's bake). The same bar as
+# claim_cookie_leavened_taller, set before this was run: the most leavened cookie (0.015) ends at least 1.3x as tall
+# as the unleavened one, and domed (both measures of its top curve down). In the preset's own 190 degC oven, at the
+# scene's dx 5 mm and one finer (_fine, 3.75 mm, suite campaign). Expected failures (1.07x, 1.14x) until the preset's
+# CO2 took its formula's two shares, each on its own bell (helper sodatwo: the NH4Cl share at 60 degC, before the 78
+# degC set; the leftover soda at 100): 1.545x and 1.814x (docs/validation.md, "The physical cookie's two shares").
+# At 5 mm the particles' curvature (-0.26 +- 3.57 1/m) does not resolve its sign; the probe's does (-10.4).
+claim_cookie_physical_leavened_taller | claim_cookie_physical_leavened_taller_fine)
+    dx=0.005
+    [ "$case_name" = claim_cookie_physical_leavened_taller_fine ] && dx=0.00375
+    run cookies --set preset=physical --set dx=$dx --set frames=1 --set ovens=190 --set leaveners=0.015,0 >/dev/null
+    python3 - hearth-out/cookies/cookies.csv $dx <<'PY'
+import csv, sys
+rows = {float(r["leavener"]): r for r in csv.DictReader(open(sys.argv[1]))}
+h = {k: float(r["height_m"]) for k, r in rows.items()}
+w = {k: float(r["spread_m"]) for k, r in rows.items()}
+k = [float(rows[0.015][c]) for c in ("top_curvature_1_per_m", "top_curvature_particles_1_per_m")]
+se = float(rows[0.015]["top_curvature_particles_se_1_per_m"])
+ratio = h[0.015] / h[0.0]
+print(f"dx {float(sys.argv[2]) * 1e3:.2f} mm, 11 min at 190 degC: leavened {h[0.015] * 1e3:.1f} mm tall, {w[0.015] * 1e3:.1f} mm "
+      f"wide; unleavened {h[0.0] * 1e3:.1f} mm, {w[0.0] * 1e3:.1f} mm; ratio {ratio:.3f} (need >= 1.3); leavened top curvature "
+      f"{k[0]:.2f}, {k[1]:.2f} +- {se:.2f} 1/m (probe, particles +- the fit's standard error; domed: both < 0)")
+sys.exit(0 if ratio >= 1.3 and all(x < 0 for x in k) else 1)
+PY
+    [ $? -eq 0 ] || fail "the physical leavened cookie is not 1.3x as tall and domed (numbers above)"
+    ;;
+# cookies.lua --set preset=physical refuses a lever on Table 2's cookie (here conductivity, a factor on Table 2's
+# kappa): exit non-zero before baking, the message naming the scene's file and line, the parameter and the preset
+# it belongs to.
+cookies_physical_lever_refused)
+    "$hearth" run "$scenes/cookies.lua" --quiet --set preset=physical --set conductivity=1 >out.txt 2>err.txt &&
+        fail "cookies.lua took --set conductivity=1 with preset=physical"
+    grep -q "cookies.lua:[0-9]*:.*--set conductivity=1: .*preset=paper only" err.txt ||
+        fail "the refusal does not name the file, line, parameter and preset: $(cat err.txt)"
+    [ -d hearth-out/cookies ] && [ -n "$(find hearth-out/cookies -name '*.png')" ] && fail "it baked before refusing"
+    cat err.txt
+    ;;
+*) unmatched=1 ;;
+esac
