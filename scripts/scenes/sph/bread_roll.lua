@@ -13,10 +13,13 @@
 -- each bubble as stiff as its own gas, P_a - P_v (sph.gas_pressure = 101325):
 -- the bubbles grow with their temperature, and only with it; the dough reads
 -- a squeeze only as far as its own det F confirms it (sph.own_squeeze).
--- --set hourglass=1 damps the pairs' motion its velocity gradient does not
--- see (sph.hourglass): at 2 mm the roll then no longer hops on its tray and
--- stays whole to 3 s, but at 1.5 mm it tore 2.08% at 2.0 s (docs/validation.md
--- "Hourglass control for the roll's dough").
+-- The preset's sph.hourglass = 0.5 damps the pairs' motion their velocity
+-- gradient does not see: the roll no longer hops on its tray, and it stayed
+-- whole in every run of an ensemble (4 at 2 mm to 3 s, 3 at 1.5 mm to 2 s);
+-- --set hourglass=0 is the roll before it (at 2 mm it tore 2.02% at 2.4 s),
+-- --set hourglass=1 tore the 1.5 mm roll 2.08% at 2.0 s (docs/validation.md
+-- "Hourglass control for the roll's dough", "The hourglass control over an
+-- ensemble").
 -- --set shift=k moves the roll k spacings (k dx) along the tray: the same roll
 -- on the same slip tray, each particle where it was relative to the roll,
 -- only the arithmetic's round-off (and neighbour sums' order) differs. The
