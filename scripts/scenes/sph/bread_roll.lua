@@ -32,9 +32,9 @@
 -- itself from the first step, a larger seed of chance than round-off.
 -- Measured (2D default, from the particles, tests/sph_roll_measure.py: the
 -- dough with its closed gas cells, less what is torn): whole in every frame
--- to 2 s, 1.3x at 1.3 s and 1.43x at 1.9 s (1.5 mm alike), its crumb soft
+-- to 2 s, 1.3x at 1.3 s and 1.435x at 1.9 s (1.5 mm alike), its crumb soft
 -- until bread's set at 68-80 degC (the preset's mu_e, helper rollset); from
--- 1.6 s the ends of its base lift off the tray (3.8 mm at 1.9 s) as the set
+-- 1.6 s the ends of its base lift off the tray (4.5 mm at 1.9 s) as the set
 -- crust rounds over bubbles that stay closed (docs/validation.md "The roll's
 -- set"). With eq. 4.2 (--set mu_e_curve=table) the crumb set before 50 degC:
 -- on its tray (largest gap 1.30 mm) but 1.14x ("The roll's base: its own
