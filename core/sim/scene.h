@@ -127,7 +127,7 @@ hearth_status scene_enable_temperature(hearth_scene *s, hearth_error *err);
 /* With browning and an oven on MPM, make the PC_SURFACE column browning.c keeps its surface offsets in; else nothing. */
 hearth_status scene_enable_browning_surface(hearth_scene *s, hearth_error *err);
 /* hearth_scene_seed_shape with `smooth` (hearth_body_def.smooth_surface): the outer layer (within 1.25 spacings of the
- * surface) seeded on the lattice, unjittered (scene.c, seed_point). */
+ * surface) seeded on the lattice, unjittered (bodies.c, seed_point). */
 int scene_seed_shape(hearth_scene *s, int material, const hearth_shape *shape, int ppc, double jitter, int smooth,
                      const double velocity[3], hearth_error *err);
 /* Widen seeded_t over particles [i0, i1) when the temperature field is live. */
