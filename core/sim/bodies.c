@@ -17,14 +17,17 @@
 
 /* ---- seeding: a shape filled on a jittered lattice, ppc per cell ------ */
 
-static double rng_uniform(uint64_t *st) {
-    /* splitmix64: tiny, good enough for jitter, and the same on every machine */
-    uint64_t z = (*st += 0x9e3779b97f4a7c15ULL);
+/* splitmix64's finaliser of z as a uniform number in [0, 1): tiny, good enough for jitter and labels, and the same on
+ * every machine */
+static double splitmix_uniform(uint64_t z) {
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
     z ^= z >> 31;
     return (double)(z >> 11) * (1.0 / 9007199254740992.0);
 }
+
+/* the seeding's stream: splitmix64, its state advanced by the golden ratio's step */
+static double rng_uniform(uint64_t *st) { return splitmix_uniform(*st += 0x9e3779b97f4a7c15ULL); }
 
 /* Lattice point q of a seeding (jittered, one random number per axis): its
  * position in x, and 1 when it lies in the shape and the usable region.
@@ -228,11 +231,7 @@ int hearth_scene_body_particles(const hearth_scene *s, int body) {
 
 /* splitmix64 finaliser of seed and id: one uniform number per particle. */
 static double label_uniform(uint64_t seed, int id) {
-    uint64_t z = seed + 0x9e3779b97f4a7c15ULL * ((uint64_t)(uint32_t)id + 1);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    z ^= z >> 31;
-    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+    return splitmix_uniform(seed + 0x9e3779b97f4a7c15ULL * ((uint64_t)(uint32_t)id + 1));
 }
 
 hearth_status hearth_scene_body_labels(hearth_scene *s, int body, int k, const int *materials, const double *ratio,
