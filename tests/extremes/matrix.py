@@ -236,7 +236,7 @@ def one_cell(hearth, name, seed, expect_fail):
         return 2
     pl, pname, value, sets, expect = found[0]
     with tempfile.TemporaryDirectory() as tmp:
-        r = run_cell(hearth, (pl, pname, value, dict(sets, seed_=str(seed)), expect), tmp)
+        r = run_cell(hearth, (pl, pname, value, dict(sets, seed=str(seed)), expect), tmp)
     print(f"{name}, seed {seed}: {r['outcome']}  ({r['steps']} steps, max speed {r.get('vmax', math.nan):.4g} m/s, "
           f"{r['wall']} s)")
     failing = not r["ok"] or r["outcome"].startswith("XFAIL")
@@ -259,7 +259,7 @@ def main():
     ap.add_argument("--known", help="list the expected failures (XFAIL) of a generated table; exit 77 when there are any")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--cell", help="run one cell, named 'plugin/parameter/value' as the table names it")
-    ap.add_argument("--seed", type=int, default=1, help="with --cell: the seeding's jitter (cell.lua's seed_; the table's is 1)")
+    ap.add_argument("--seed", type=int, default=1, help="with --cell: the seeding's jitter (--set seed, a scene knob; the table's is 1)")
     ap.add_argument("--expect-fail", metavar="CAUSE",
                     help="with --cell: a known failure on this seed; exit 77 while it fails or is an XFAIL, printing "
                          "its outcome and CAUSE, and 1 once it passes (then make it a plain check)")
