@@ -64,7 +64,7 @@ assert(not pcall(h.top_curvature, st, { keep = function() return true end, origi
 -- given through rest reads its curvature: c (xb - x0)^2, with xb the centre of the particle's bin, where the fit
 -- places each bin's top, reads 2c to round-off. A smooth c (x - x0)^2 is printed, not asserted: each bin's top
 -- particle sits up to half a bin off its centre, so it read -8.08, -7.70, -7.66, -7.55, -7.91 for 2c = -8 with
--- seeds 1-5 (up to 3.4 se off); the assertion was "to 2%", which held for seed 1 alone of the five
+-- seeds 1-5 (up to 3.4 se off); the assertion was "to 2%", which held for seeds 1 and 5 alone
 -- (docs/validation.md, "Tests that flip with the seeding"). The box is jittered on purpose (smooth_surface off,
 -- which would keep its top rows on the lattice).
 local sj = h.scene { dim = 2, dx = 0.005, box = { { 0, 0 }, { 0.6, 0.3 } } }
