@@ -504,8 +504,19 @@ TEST(water_conservation) {
  * outside the code: J cancels, so the two runs give the same saturations
  * (to 0.01: their steps differ by 0.1%, and at 1e6 the dry block still
  * weighs 1e-6 in the shared nodes), and the water is conserved; a forward Euler runaway (heat's was
- * x4 a step) would grow without end, so the largest saturation must not grow
- * from step 500 to step 1000. Not asserted, printed: the dry particles next to
+ * x4 a step) would grow without end, so the largest change of any particle's
+ * saturation in one step must not grow from steps 451-500 to steps 951-1000
+ * (windows, so a multirate cycle's field step falls in each). It was "the
+ * largest saturation must not grow from step 500 to 1000", which read the
+ * bounded overshoot below: that plateau wanders between particles on the
+ * diffusion's time scale (seeded with seeds 2-5 it still rose 0.0001-0.023 from
+ * step 500 to 1000; run to 40000 steps, seeds 3 and 5 settled at 1.151 and 1.173:
+ * docs/validation.md, "Tests that flip with the seeding"). The change per step
+ * falls 4.4 to 34 times over the ten samplings (seeds 1-5, jittered and
+ * smooth_surface); with the water's field step forced to 16 steps (field_steps
+ * 16, past its explicit limit: a local build, not kept) it rose from 0.24 to
+ * 1.0 at J 1e30 and the check failed, as it must (at J 1e6 the saturations hit
+ * their floor at once, 1.8 a step in both windows, and conservation failed). Not asserted, printed: the dry particles next to
  * the swollen block overshoot the 0.9 they draw from (1.18 here, 1.03 at
  * J = 10, none at 2): a bounded plateau of the particle transfer at a sharp
  * volume contrast, which a cap on the flux volume would not touch (the
@@ -534,12 +545,19 @@ TEST(water_swollen_particles_no_runaway) {
         hearth_stats st;
         hearth_scene_stats(s, &st);
         const double w0 = st.water_mass;
-        double worst = 0, smin = 1, smax = 0, smax500 = 0;
+        double worst = 0, smin = 1, smax = 0, smax500 = 0, rate[2] = {0, 0};
         int finite = 1;
+        double *prev = malloc(sizeof *prev * (size_t)ps->n);
+        CHECK(prev != NULL);
         for (int n = 1; n <= 1000; n++) {
+            const int window = (n > 500 - 50 && n <= 500) || n > 1000 - 50; /* the 50 steps to 500 and to 1000 */
+            if (window)
+                for (int i = 0; i < ps->n; i++) prev[i] = water_saturation(s, i);
             CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
             hearth_scene_stats(s, &st);
             worst = fmax(worst, fabs(st.water_mass / w0 - 1));
+            if (window)
+                for (int i = 0; i < ps->n; i++) rate[n > 500] = fmax(rate[n > 500], fabs(water_saturation(s, i) - prev[i]));
             if (n != 500 && n != 1000) continue;
             smin = 1, smax = 0;
             for (int i = 0; i < ps->n; i++) {
@@ -550,13 +568,15 @@ TEST(water_swollen_particles_no_runaway) {
             }
             if (n == 500) smax500 = smax;
         }
+        free(prev);
         ends[k][0] = smin, ends[k][1] = smax;
         printf("  J %.0e on %d of %d particles, 1000 steps of %.3g s: saturation in [%.6f, %.6f] (largest %.6f at step "
-               "500; it started in [0.1, 0.9]); max |W/W0 - 1| = %.3g\n",
-               Js[k], swollen, ps->n, st.dt, smin, smax, smax500, worst);
+               "500; it started in [0.1, 0.9]); max |W/W0 - 1| = %.3g; the largest change of a particle's saturation "
+               "in one step: %.3g over steps 451-500, %.3g over steps 951-1000\n",
+               Js[k], swollen, ps->n, st.dt, smin, smax, smax500, worst, rate[0], rate[1]);
         CHECK(finite);
         CHECK(worst < 1e-9);
-        CHECK(smax <= smax500 * (1 + 1e-9));
+        CHECK(rate[1] <= rate[0]);
         hearth_scene_destroy(s);
     }
     printf("  J 1e6 against 1e30: saturation extremes differ by %.3g and %.3g\n", fabs(ends[1][0] - ends[0][0]),

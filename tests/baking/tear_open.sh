@@ -52,27 +52,47 @@ PY
 # flowing thin (Cam-clay's porous yield in tension, pull_twist.lua). The bread is the baker's dough; the muffin's
 # raw batter (20 Pa) cannot carry its own free third (rho g L / 2 ~ 40 Pa on each face) and flows down as it is
 # pulled, so _batter_ is the same contrast in a batter.
+#
+# #18 (helper seedrobust): the bread's claim at 4 mm holds on main's seeding (seed 1) and not on seeds 2 and 4 of 1-5
+# (baked 14 / 12 mm against raw 20 / 22), nor on 3 of 5 with smooth_surface: the baked loaf's parting spread over 6-20
+# mm across the ten samplings, the raw one's over 20-30 mm or never (docs/validation.md, "Tests that flip with the
+# seeding"). The baked crumb cracks from the grips' feet and leaves an intact strip in the middle whose ligament (12-16
+# mm of intact rows, ~30 N/m through the middle at 16 mm with seed 2) holds or lets go as the sampling has it: one
+# velocity field shares the nodes across the cracked band. The _seedN cases run the claim on those seeds as expected
+# failures (exit 77, the numbers printed) and fail once the claim holds there.
 claim_raw_dough_stretches_before_tearing | claim_raw_dough_stretches_before_tearing_fine | \
+claim_raw_dough_stretches_before_tearing_fine_seed2 | claim_raw_dough_stretches_before_tearing_fine_seed4 | \
 claim_raw_batter_stretches_before_tearing | claim_raw_batter_stretches_before_tearing_fine)
-    food=bread dx=0.005
+    food=bread dx=0.005 seed=1
     case $case_name in *batter*) food=muffin dx=0.004 ;; esac
-    case $case_name in *batter*_fine) dx=0.003 ;; *dough*_fine) dx=0.004 ;; esac
-    run tear_open --set food=$food --set dx=$dx --out baked >/dev/null
-    run tear_open --set food=$food --set dx=$dx --set raw=true --out raw >/dev/null
-    python3 - baked/tear_open.csv raw/tear_open.csv $food $dx <<'PY'
+    case $case_name in *batter*_fine) dx=0.003 ;; *dough*_fine*) dx=0.004 ;; esac
+    case $case_name in *_seed*) seed=${case_name##*_seed} ;; esac
+    run tear_open --set food=$food --set dx=$dx --set seed=$seed --out baked >/dev/null
+    run tear_open --set food=$food --set dx=$dx --set seed=$seed --set raw=true --out raw >/dev/null
+    python3 - baked/tear_open.csv raw/tear_open.csv $food $dx $seed <<'PY'
 import csv, sys
 def parted(path):
     rows = [r for r in csv.DictReader(open(path)) if float(r["separation_m"]) > 0]
     torn = [float(r["separation_m"]) for r in rows if int(r["pieces"]) >= 2]
     return (torn[0] if torn else None), float(rows[-1]["separation_m"]), max(float(r["force_mid_N_per_m"]) for r in rows)
 (b, _, fb), (r, rmax, fr) = parted(sys.argv[1]), parted(sys.argv[2])
-food, dx = sys.argv[3], float(sys.argv[4])
+food, dx, seed = sys.argv[3], float(sys.argv[4]), int(sys.argv[5])
 text = lambda v: "never" if v is None else f"{v * 1e3:.1f} mm"
-print(f"{food}, dx {dx * 1e3:.0f} mm: the baked one parts at {text(b)} of separation (peak force {fb:.1f} N/m), the raw "
-      f"one at {text(r)} (peak force {fr:.1f} N/m; need >= twice the baked, or not within {rmax * 1e3:.0f} mm)")
-sys.exit(0 if b is not None and (r is None or r >= 2 * b) else 1)
+print(f"{food}, dx {dx * 1e3:.0f} mm, seed {seed}: the baked one parts at {text(b)} of separation (peak force {fb:.1f} "
+      f"N/m), the raw one at {text(r)} (peak force {fr:.1f} N/m; need >= twice the baked, or not within {rmax * 1e3:.0f} mm)")
+holds = b is not None and (r is None or r >= 2 * b)
+if seed != 1:  # an expected failure on this seed
+    if holds:
+        print(f"seed {seed}: the claim holds now; make this a plain test")
+        sys.exit(1)
+    print(f"expected failure (seed {seed}): the baked loaf's parting turns on its sampling (6-20 mm over ten at 4 mm): "
+          "the intact middle strip's ligament across the one-field cracked band")
+    sys.exit(77)
+sys.exit(0 if holds else 1)
 PY
-    [ $? -eq 0 ] || fail "the raw $food does not stretch further than the baked one before it parts (numbers above)"
+    rc=$?
+    [ $rc -eq 77 ] && exit 77
+    [ $rc -eq 0 ] || fail "the raw $food does not stretch further than the baked one before it parts (numbers above)"
     ;;
 # #18 (helper tearclean): a torn muffin is two halves with rough faces (Ding Fig. 2), not a heap of crumbs. With
 # the muffin's two velocity fields (--set two_field=true) the cracked faces stay on their halves and the
