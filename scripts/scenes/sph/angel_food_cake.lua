@@ -43,6 +43,9 @@
 local h = require "hearth"
 local P = h.params { dx = 0.003, oven = 180, cool_to = 25, bake = 1.5, until_t = 3.5, bubble_share = 0.4, foam = 1.0,
   xsph_cool = 0.05, xsph_hot = 0.3 }
+-- what a run's seconds stand for (S = 1600, the scene's browning_scale and its heat_ext, below)
+print(("angel_food_cake.lua: viscosity and mu_e scaled from Table 4.1's animation units; heat and browning 1600 times fast: "
+  .. "the %g s bake stands for %.0f min, 1 s for %.1f min"):format(P.bake, P.bake * 1600 / 60, 1600 / 60))
 
 local T0 = 26
 -- The pan is mirror symmetric about x = 0.1 m, and its particles must be too

@@ -36,6 +36,9 @@
 local h = require "hearth"
 local P = h.params { dx = 0.002, oven = 180, mu_e = 2000, viscosity = 5, lambda = 20, until_t = 1.2, vb0 = 1.0, xsph0 = 0.6, xsph_f = 0.9,
   artificial_stress = 0.3 }
+-- what a run's seconds stand for (S = 1500, the scene's browning_scale and its heat_ext, below)
+print(("bread_of_the_dead.lua: heat (an oven's h = 30 W/(m^2 K)) and browning 1500 times fast: "
+  .. "the %g s run stands for %.0f min, 1 s for %.0f min"):format(P.until_t, P.until_t * 1500 / 60, 1500 / 60))
 
 local T0, tray = 26, 0.01
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph",

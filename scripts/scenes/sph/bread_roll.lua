@@ -126,6 +126,9 @@ local P = h.params { dx = 0.002, oven = 180, visc_scale = 100, mue_scale = 100, 
     dispersed = "one bubble particle in four, each alone among dough particles (Fig. 4.4a)" },
   mu_e_curve = h.choice { "sourced", sourced = "mu_e as measured breads set (the preset's own: sph_library.lua)",
     table = "the thesis's eq. 4.2 as printed (.paper.mu_e), times mue_scale" } }
+-- what a run's seconds stand for (S = 400, the scene's browning_scale and heat_ext's default, below)
+print("bread_roll.lua: h.library.sph.bread_roll, its viscosity scaled from Table 4.1's animation units; heat (an "
+  .. "oven's h = 30 W/(m^2 K)) and browning 400 times fast: the 3 s run stands for 20 min, 1 s for 6.7 min")
 
 sph.heat_ext, sph.heat_int, sph.av_beta = P.heat_ext, 0.2, 1
 sph.gas_law, sph.bubble_vapour, sph.bubble_vmax = P.gas_law, P.vapour, P.vmax
