@@ -133,7 +133,8 @@ s:step(1) -- the density slice needs one SPH step (before it the probe has no SP
 local A0 = area()
 local csv = { "t,relative_volume,mean_temperature_C,phase,T_left_C,T_right_C,T_right_minus_left_C" }
 local cooling, peak = false, 1
-s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png" },
+-- the frames' titles give the real time the scene's S = 1600 stands for, then the simulated seconds
+s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1600 },
   on_frame = function(f)
     if not cooling and f.t >= P.bake - 1e-9 then
       s:oven(P.cool_to, 0) -- out of the oven, left upright in its pan
@@ -147,7 +148,7 @@ s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "fr
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
     -- one range for the whole run: the default one follows the oven, which
     -- the cooling sets to cool_to, and then every frame saturated at 26 degC
-    f:png("temperature", "frames/temperature_%04d.png", { range = { math.min(T0, P.cool_to), P.oven } })
+    f:png("temperature", "frames/temperature_%04d.png", { range = { math.min(T0, P.cool_to), P.oven }, time_scale = 1600 })
   end }
 print(("angel food cake: relative volume %.3f at the end of baking, %.3f at t = %.2f s (mean %.1f degC)"):format(
   peak, area() / A0, s:stats().t, mean_T()))

@@ -213,13 +213,14 @@ local function positions(path)
   h.write(path, table.concat(rows, "\n") .. "\n")
 end
 positions("particles_0000.csv")
-s:run { until_t = 3, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png" },
+-- the frames' titles give the real time the scene's S = 400 stands for, then the simulated seconds
+s:run { until_t = 3, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 400 },
   on_frame = function(f)
     local T, cool = s:particles { fields = { "temperature" } }.temperature, math.huge
     for i = 1, #T do cool = math.min(cool, T[i]) end
     csv[#csv + 1] = ("%.4f,%.5f,%.2f"):format(f.t, area() / A0, cool)
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
-    f:png("temperature", "frames/temperature_%04d.png")
+    f:png("temperature", "frames/temperature_%04d.png", { time_scale = 400 })
     positions(("particles_%04d.csv"):format(#csv - 1))
   end }
 print(("bread roll (%s bubbles): relative volume %.3f at t = %.2f s"):format(P.bubbles, area() / A0, s:stats().t))
