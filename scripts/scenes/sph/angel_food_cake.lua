@@ -133,8 +133,11 @@ s:step(1) -- the density slice needs one SPH step (before it the probe has no SP
 local A0 = area()
 local csv = { "t,relative_volume,mean_temperature_C,phase,T_left_C,T_right_C,T_right_minus_left_C" }
 local cooling, peak = false, 1
--- the frames' titles give the real time the scene's S = 1600 stands for, then the simulated seconds
-s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1600 },
+-- the frames' titles give the real time the scene's S = 1600 stands for, then the simulated seconds; browning
+-- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
+-- dark grey discs, which on the browning map read as burnt spots through the crumb
+s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1600,
+  kind = "slice" },
   on_frame = function(f)
     if not cooling and f.t >= P.bake - 1e-9 then
       s:oven(P.cool_to, 0) -- out of the oven, left upright in its pan

@@ -109,8 +109,11 @@ local knuckle_x = on_body(math.pi / 2 + 1.25, kn)[1]
 s:step(1) -- the density slice needs one SPH step (before it the probe has no SPH density)
 local A0 = area()
 local csv = { "t,relative_volume,ball_top_m,knuckle_top_m" }
--- the frames' titles give the real time the scene's S = 1500 stands for, then the simulated seconds
-s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1500 },
+-- the frames' titles give the real time the scene's S = 1500 stands for, then the simulated seconds; browning
+-- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
+-- dark grey discs, which on the browning map read as burnt spots through the crumb
+s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1500,
+  kind = "slice" },
   on_frame = function(f)
     csv[#csv + 1] = ("%.4f,%.5f,%.5f,%.5f"):format(f.t, area() / A0, top_at(cx), top_at(knuckle_x))
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")

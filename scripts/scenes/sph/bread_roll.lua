@@ -213,8 +213,11 @@ local function positions(path)
   h.write(path, table.concat(rows, "\n") .. "\n")
 end
 positions("particles_0000.csv")
--- the frames' titles give the real time the scene's S = 400 stands for, then the simulated seconds
-s:run { until_t = 3, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 400 },
+-- the frames' titles give the real time the scene's S = 400 stands for, then the simulated seconds; browning
+-- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
+-- dark grey discs, which on the browning map read as burnt spots through the crumb
+s:run { until_t = 3, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 400,
+  kind = "slice" },
   on_frame = function(f)
     local T, cool = s:particles { fields = { "temperature" } }.temperature, math.huge
     for i = 1, #T do cool = math.min(cool, T[i]) end
