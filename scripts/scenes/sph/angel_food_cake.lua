@@ -93,6 +93,12 @@ local function side(x0, x1)
 end
 local cake = h.union(side(0.02, 0.092), side(0.108, 0.18))
 local spots, r = {}, 0.004
+-- the discs of radius r on a square pitch hold pi r^2 / pitch^2 of the batter: at most pi / 4, where they touch
+-- (--set bubble_share=0 had left no spots, and h.union's raw Lua error was all a user saw)
+if not (P.bubble_share > 0 and P.bubble_share <= math.pi / 4) then
+  error(("--set bubble_share=%g: the share of the batter seeded as bubble particles, valid range (0, %.3f] "
+    .. "(discs of %g mm on a square pitch touch at pi / 4)"):format(P.bubble_share, math.pi / 4, r * 1e3))
+end
 local pitch = r * math.sqrt(math.pi / P.bubble_share)
 for y = floor_y + pitch / 2, top0, pitch do
   for x = 0.02 + pitch / 2, cx, pitch do
