@@ -64,7 +64,7 @@ claim_drying_volume_monotone)
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 w = [float(r["water_fraction"]) for r in rows]
-v = [float(r["volume"]) for r in rows]
+v = [float(r["volume_m2"]) for r in rows]  # 2D: m^2 (per metre of depth)
 print("water fraction:", w)
 print("volume:", v)
 ok = len(rows) >= 5 and all(w[k + 1] < w[k] and v[k + 1] < v[k] for k in range(len(rows) - 1))

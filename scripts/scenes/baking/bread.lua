@@ -180,6 +180,7 @@ end
 
 local rows = { "t,height_plain_m,height_one_slit_m,height_two_slits_m,gap_one_slit_m,gap_two_slits_left_m,gap_two_slits_right_m," ..
   "area_plain,area_one_slit,area_two_slits,crack_depth_m,crack_width_m,moisture_top,moisture_centre,cracked,top_arc_m" }
+print(rows[1]) -- the rows each frame prints below are bread.csv's: its header first, so they read as columns
 s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png" },
   on_frame = function(f)
     local r = { ("%.3f"):format(f.t) }

@@ -13,8 +13,8 @@
 -- the slice falls far below the air's temperature; docs/validation.md ("Latent
 -- heat of evaporation (#18)") has the numbers. Off by default for that reason.
 -- Writes, under hearth-out/drying/: sat_%04d.png (saturation) and drying.csv
--- (time, water fraction left, volume by s:volume(): m^2 in 2D, m^3 in 3D, and
--- temperature and saturation at the skin's top and the flesh's centre).
+-- (time, water fraction left, volume by s:volume(): volume_m2 in 2D, volume_m3 in 3D, and
+-- temperature (degC) and saturation at the skin's top and the flesh's centre).
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.0025, until_t = 2, frames = 20, temperature = 60, latent_heat = false }
 local d3 = P.dim == 3
@@ -49,7 +49,8 @@ local function probes()
   return s:probe("temperature", top), s:probe("saturation", top), s:probe("temperature", centre),
     s:probe("saturation", centre)
 end
-local rows = { "t_s,water_fraction,volume,top_T,top_s,centre_T,centre_s" }
+-- the columns' units in their names: volume_m2 in 2D (m^2 per metre of depth), volume_m3 in 3D; saturations are 0..1
+local rows = { ("t_s,water_fraction,%s,top_T_degC,top_s,centre_T_degC,centre_s"):format(d3 and "volume_m3" or "volume_m2") }
 s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "saturation", path = "sat_%04d.png" },
   on_frame = function(f)
     local st = f.scene:stats()
@@ -57,7 +58,7 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "satu
     h.write("drying.csv", table.concat(rows, "\n") .. "\n")
   end }
 local st = s:stats()
-print(("dried to %.1f%% of its water; volume %.4g (%s)"):format(100 * st.water_mass / w0, s:volume(),
-  d3 and "m^3" or "m^2"))
+print(("%.1f%% of its water left (%.1f%% evaporated); volume %.4g %s"):format(100 * st.water_mass / w0,
+  100 - 100 * st.water_mass / w0, s:volume(), d3 and "m^3" or "m^2"))
 print(("latent_heat = %s: skin top %.1f degC at saturation %.3f, flesh centre %.1f degC at saturation %.3f")
   :format(tostring(P.latent_heat), probes()))

@@ -21,6 +21,9 @@
 -- Writes, under hearth-out/lava_cake/: heat_%04d.png (temperature) and
 -- lava_cake.csv: over time, the centre's temperature, the cake's height and
 -- how far the material reaches along the plate to the right of the centre.
+-- The centre's temperature is probed at the raw cake's mid-height (15 mm above
+-- the plate, on its axis); once the slumped cake no longer reaches that point
+-- (from t ~ 1.3 s by default) the column reads -1, not a temperature.
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.002, bake = 0.8, lift = 0.4, after = 0.6, frames = 18, kappa = 0.02, gas = 1,
   dt_max = 0 }

@@ -111,6 +111,7 @@ local w0 = s:stats().water_mass
 local rows = { "t_real_min,centre_T_degC,centre_s,top_T_degC,top_s,height_m,water_left,top_browning,base_browning,"
   .. "centre_browning,area_m2,base_lift_m,base_gap_m" }
 local last
+print(rows[1]) -- the rows each frame prints below are loaf.csv's: its header first, so they read as columns
 -- the pictures' titles give the real time (the oven's rates run S times fast) beside the simulated seconds
 s:run { until_t = until_t, every = until_t / P.frames,
   png = { field = "temperature", path = "temperature_%04d.png", time_scale = S },

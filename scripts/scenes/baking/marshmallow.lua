@@ -202,7 +202,9 @@ for _, name in ipairs(names) do
       sc:collider_velocity(lower, v(0, 0, 0), 0)
       sc:collider_velocity(upper, v(0, 0, 0), 0)
     end)
-    s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperature", path = name .. "_%04d.png" },
+    -- one colour range for both (the raw one's own, room air to room air, was -0.5..0.5 degC), so their frames compare
+    s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperature", path = name .. "_%04d.png",
+      range = { c.theta0, c.ambient_theta } },
       on_frame = function(f)
         local th, T = measure(s)
         cols[name][#cols[name] + 1] = { t = f.t, th = th, T = T, ooze = ooze(s, skin) }

@@ -164,6 +164,7 @@ for i = 1, P.cups do
 end
 head[#head + 1] = "moisture_top_1,moisture_centre_1,cracked_1"
 local rows = { table.concat(head, ",") }
+print(rows[1]) -- the rows each frame prints below are muffins.csv's: its header first, so they read as columns
 s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png", time_scale = S },
   on_frame = function(f)
     local r = { ("%.3f"):format(f.t) }

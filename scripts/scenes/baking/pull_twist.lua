@@ -15,16 +15,22 @@
 -- dough: its length (the extent of its material along the pull), the
 -- thinnest section of its free part (the neck; 0 = torn through), and how
 -- far its free part sagged.
--- What it shows (2D, dx 2 mm, 0.4 s, neck of the 12 mm strips): at eta = 1e8
--- a 300 Pa dough flows along its whole length and keeps a 10.2 mm neck, a
--- 1000 Pa one necks next to its grips (3.9 mm) and a 3000 Pa one tears
--- there (0); at eta = 1e10 all three keep ~10 mm (the viscous stress holds
--- them); at eta = 1e6 all tear, the 300 Pa one off both grips (it falls).
+-- What it shows (2D, dx 2 mm, 0.4 s, neck of the 12 mm strips; measured at
+-- commit 76ac79a, #18 helper userview): at eta = 1e8 a 300 Pa dough flows along its
+-- whole length and keeps a 10.2 mm neck, a 1000 Pa one necks next to its
+-- grips (6.3 mm) and a 3000 Pa one nearly tears at one grip (4.4 mm); at
+-- eta = 1e10 all three keep 10.0-10.7 mm (the viscous stress holds them); at
+-- eta = 1e6 the 300 Pa one tears off both grips and falls (0, sagged 30 mm),
+-- the 3000 Pa one tears off one grip and hangs from the other (0), and the
+-- 1000 Pa one hangs 6.7 mm low from both grips by threads (8.8 mm: the neck
+-- is read from two cells inside each grip's face, so a tear at the face
+-- itself is not in it; look at j_0004.png). (Before, at commit f8dc5d5, the
+-- necks at eta = 1e8 were 10.2, 3.9 and 0 mm and all three tore at 1e6.)
 -- The porous Cam-clay surface (eq. 12) yields in tension and dilates where
--- a dough necks, so the stiffer doughs localise. 3D (dx 4 mm): the same
--- order (eta = 1e8: 11.9, 0, 0 mm; 1e10: 11.9, 11.9, 0 mm).
--- Cost: 2D ~60 s of CPU on one thread (the steps run on 2 threads; the shared
--- machine was too loaded to time the 2-core wall clock), 3D ~45 s.
+-- a dough necks, so the stiffer doughs localise. 3D (dx 4 mm, at f8dc5d5, not
+-- measured since): the same order (eta = 1e8: 11.9, 0, 0 mm; 1e10: 11.9, 11.9, 0 mm).
+-- Cost: 2D 9 s of CPU on one thread (25 s of wall on the loaded shared
+-- machine; 60 s at f8dc5d5), 3D ~45 s at f8dc5d5.
 -- The grips: a "sticky" collider holds only the grid nodes inside it, so a
 -- dough's end in it was squeezed out to its surface and the dough peeled
 -- off when pulled; a grip carries the particles inside it and holds the

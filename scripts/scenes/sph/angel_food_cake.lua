@@ -43,6 +43,9 @@
 local h = require "hearth"
 local P = h.params { dx = 0.003, oven = 180, cool_to = 25, bake = 1.5, until_t = 3.5, bubble_share = 0.4, foam = 1.0,
   xsph_cool = 0.05, xsph_hot = 0.3 }
+-- what a run's seconds stand for (S = 1600, the scene's browning_scale and its heat_ext, below)
+print(("angel_food_cake.lua: viscosity and mu_e scaled from Table 4.1's animation units; heat and browning 1600 times fast: "
+  .. "the %g s bake stands for %.0f min, 1 s for %.1f min"):format(P.bake, P.bake * 1600 / 60, 1600 / 60))
 
 local T0 = 26
 -- The pan is mirror symmetric about x = 0.1 m, and its particles must be too
@@ -90,6 +93,12 @@ local function side(x0, x1)
 end
 local cake = h.union(side(0.02, 0.092), side(0.108, 0.18))
 local spots, r = {}, 0.004
+-- the discs of radius r on a square pitch hold pi r^2 / pitch^2 of the batter: at most pi / 4, where they touch
+-- (--set bubble_share=0 had left no spots, and h.union's raw Lua error was all a user saw)
+if not (P.bubble_share > 0 and P.bubble_share <= math.pi / 4) then
+  error(("--set bubble_share=%g: the share of the batter seeded as bubble particles, valid range (0, %.3f] "
+    .. "(discs of %g mm on a square pitch touch at pi / 4)"):format(P.bubble_share, math.pi / 4, r * 1e3))
+end
 local pitch = r * math.sqrt(math.pi / P.bubble_share)
 for y = floor_y + pitch / 2, top0, pitch do
   for x = 0.02 + pitch / 2, cx, pitch do
@@ -130,7 +139,11 @@ s:step(1) -- the density slice needs one SPH step (before it the probe has no SP
 local A0 = area()
 local csv = { "t,relative_volume,mean_temperature_C,phase,T_left_C,T_right_C,T_right_minus_left_C" }
 local cooling, peak = false, 1
-s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png" },
+-- the frames' titles give the real time the scene's S = 1600 stands for, then the simulated seconds; browning
+-- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
+-- dark grey discs, which on the browning map read as burnt spots through the crumb
+s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1600,
+  kind = "slice" },
   on_frame = function(f)
     if not cooling and f.t >= P.bake - 1e-9 then
       s:oven(P.cool_to, 0) -- out of the oven, left upright in its pan
@@ -144,7 +157,7 @@ s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "fr
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
     -- one range for the whole run: the default one follows the oven, which
     -- the cooling sets to cool_to, and then every frame saturated at 26 degC
-    f:png("temperature", "frames/temperature_%04d.png", { range = { math.min(T0, P.cool_to), P.oven } })
+    f:png("temperature", "frames/temperature_%04d.png", { range = { math.min(T0, P.cool_to), P.oven }, time_scale = 1600 })
   end }
 print(("angel food cake: relative volume %.3f at the end of baking, %.3f at t = %.2f s (mean %.1f degC)"):format(
   peak, area() / A0, s:stats().t, mean_T()))

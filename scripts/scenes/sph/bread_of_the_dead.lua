@@ -36,6 +36,9 @@
 local h = require "hearth"
 local P = h.params { dx = 0.002, oven = 180, mu_e = 2000, viscosity = 5, lambda = 20, until_t = 1.2, vb0 = 1.0, xsph0 = 0.6, xsph_f = 0.9,
   artificial_stress = 0.3 }
+-- what a run's seconds stand for (S = 1500, the scene's browning_scale and its heat_ext, below)
+print(("bread_of_the_dead.lua: heat (an oven's h = 30 W/(m^2 K)) and browning 1500 times fast: "
+  .. "the %g s run stands for %.0f min, 1 s for %.0f min"):format(P.until_t, P.until_t * 1500 / 60, 1500 / 60))
 
 local T0, tray = 26, 0.01
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph",
@@ -106,11 +109,15 @@ local knuckle_x = on_body(math.pi / 2 + 1.25, kn)[1]
 s:step(1) -- the density slice needs one SPH step (before it the probe has no SPH density)
 local A0 = area()
 local csv = { "t,relative_volume,ball_top_m,knuckle_top_m" }
-s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png" },
+-- the frames' titles give the real time the scene's S = 1500 stands for, then the simulated seconds; browning
+-- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
+-- dark grey discs, which on the browning map read as burnt spots through the crumb
+s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1500,
+  kind = "slice" },
   on_frame = function(f)
     csv[#csv + 1] = ("%.4f,%.5f,%.5f,%.5f"):format(f.t, area() / A0, top_at(cx), top_at(knuckle_x))
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
-    f:png("temperature", "frames/temperature_%04d.png")
+    f:png("temperature", "frames/temperature_%04d.png", { time_scale = 1500 })
   end }
 print(("bread of the dead: relative volume %.3f, top ball %.4f m above the tray at t = %.2f s"):format(
   area() / A0, top_at(cx), s:stats().t))

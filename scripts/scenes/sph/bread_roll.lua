@@ -126,6 +126,9 @@ local P = h.params { dx = 0.002, oven = 180, visc_scale = 100, mue_scale = 100, 
     dispersed = "one bubble particle in four, each alone among dough particles (Fig. 4.4a)" },
   mu_e_curve = h.choice { "sourced", sourced = "mu_e as measured breads set (the preset's own: sph_library.lua)",
     table = "the thesis's eq. 4.2 as printed (.paper.mu_e), times mue_scale" } }
+-- what a run's seconds stand for (S = 400, the scene's browning_scale and heat_ext's default, below)
+print("bread_roll.lua: h.library.sph.bread_roll, its viscosity scaled from Table 4.1's animation units; heat (an "
+  .. "oven's h = 30 W/(m^2 K)) and browning 400 times fast: the 3 s run stands for 20 min, 1 s for 6.7 min")
 
 sph.heat_ext, sph.heat_int, sph.av_beta = P.heat_ext, 0.2, 1
 sph.gas_law, sph.bubble_vapour, sph.bubble_vmax = P.gas_law, P.vapour, P.vmax
@@ -210,13 +213,17 @@ local function positions(path)
   h.write(path, table.concat(rows, "\n") .. "\n")
 end
 positions("particles_0000.csv")
-s:run { until_t = 3, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png" },
+-- the frames' titles give the real time the scene's S = 400 stands for, then the simulated seconds; browning
+-- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
+-- dark grey discs, which on the browning map read as burnt spots through the crumb
+s:run { until_t = 3, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 400,
+  kind = "slice" },
   on_frame = function(f)
     local T, cool = s:particles { fields = { "temperature" } }.temperature, math.huge
     for i = 1, #T do cool = math.min(cool, T[i]) end
     csv[#csv + 1] = ("%.4f,%.5f,%.2f"):format(f.t, area() / A0, cool)
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
-    f:png("temperature", "frames/temperature_%04d.png")
+    f:png("temperature", "frames/temperature_%04d.png", { time_scale = 400 })
     positions(("particles_%04d.csv"):format(#csv - 1))
   end }
 print(("bread roll (%s bubbles): relative volume %.3f at t = %.2f s"):format(P.bubbles, area() / A0, s:stats().t))

@@ -2,7 +2,7 @@
 --   hearth run scripts/scenes/sph/compare_mpm_sph.lua [--until 0.5]
 -- The dough is one maxwell_sph material (Rodriguez-Arenas 2011 eq. 3.20; the
 -- ABI is solver-agnostic, so the plugin runs unchanged in both). Each run
--- reports its wall time, steps, particles and final shape (width and height of
+-- reports its CPU time (os.clock, s), steps, particles and final shape (width and height, m, of
 -- the material from density lines), side by side, and compare.csv holds both.
 -- Heat enters differently: MPM through the oven's Robin flux (Ding et al.);
 -- SPH through eq. 3.42 at surface particles (per unit area, heat_ext = h / c
@@ -38,9 +38,9 @@ end
 
 local r = { run("mpm"), run("sph") }
 local rows = { "solver,cpu_s,steps,particles,width_m,height_m" }
-print(("%-6s %10s %8s %10s %9s %9s"):format("solver", "cpu (s)", "steps", "particles", "width", "height"))
+print(("%-6s %10s %8s %10s %10s %10s"):format("solver", "cpu (s)", "steps", "particles", "width (m)", "height (m)"))
 for _, x in ipairs(r) do
-  print(("%-6s %10.2f %8d %10d %9.4f %9.4f"):format(x.solver, x.cpu, x.steps, x.particles, x.width, x.height))
+  print(("%-6s %10.2f %8d %10d %10.4f %10.4f"):format(x.solver, x.cpu, x.steps, x.particles, x.width, x.height))
   rows[#rows + 1] = ("%s,%.3f,%d,%d,%.5f,%.5f"):format(x.solver, x.cpu, x.steps, x.particles, x.width, x.height)
 end
 h.write("compare.csv", table.concat(rows, "\n") .. "\n")
