@@ -38,8 +38,9 @@ local dx = d3 and math.max(P.dx, P.dx_min_3d or 0.008) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local oven = h.library.paper_oven.bread
-print(("bread.lua: h.library.paper.bread, animation units (Ding Table 2): heat runs in seconds, not minutes; water %g times fast")
-  :format(oven.water_time_scale))
+print(("bread.lua: h.library.paper.bread, animation units (Ding Table 2): heat runs in seconds, not minutes; water %g times fast; its %g degC oven does not brown the crust (for a "
+  .. "browning crust: loaf_physical.lua; its base browns, its top stays pale)")
+  :format(oven.water_time_scale, oven.temperature))
 local TRAY, WIDTH, BODY, SPACING = 0.02, 0.08, 0.03, 0.14 -- m: tray, loaf width, straight part, loaf spacing
 local zc, ZW = 0.06, 0.06 -- 3D: loaves are extruded along z over +-ZW/2
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(3 * SPACING, 0.14, 0.12) },

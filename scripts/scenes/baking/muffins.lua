@@ -58,8 +58,9 @@ local until_t = P.until_t > 0 and P.until_t or physical and oven.bake_time or 3
 if physical then
   print(("muffins.lua: h.library.dough.muffin, %s; bake %.0f min in %.1f s"):format(oven.units, until_t * S / 60, until_t))
 else
-  print(("muffins.lua: h.library.paper.muffin, animation units (Ding Table 2): heat runs in seconds, not minutes; water %g times fast")
-    :format(oven.water_time_scale))
+  print(("muffins.lua: h.library.paper.muffin, animation units (Ding Table 2): heat runs in seconds, not minutes; water %g times fast; its %g degC oven does not brown the crust ("
+    .. "--set preset=physical browns it where the cup touches it; its top stays pale, as loaf_physical.lua's)")
+    :format(oven.water_time_scale, oven.temperature))
 end
 -- m: the cups' inner floor, inner radius, wall height above the floor, wall and floor thickness, cup spacing
 local BASE, R, CUP_H, WALL, SPACING = 0.012, 0.025, 0.03, 0.004, 0.08
