@@ -85,6 +85,21 @@ static int traceback(lua_State *L) {
     if (!msg)
         msg = lua_pushfstring(L, "the scene raised an error that is a %s, not a message (error(\"text\") gives one)",
                               luaL_typename(L, 1));
+    /* An error raised in the scene's main chunk itself (its own check of a --set value, or a slip on a top-level
+     * line) already names the file and line, and a traceback would repeat that line under "stack traceback:";
+     * userview saw users read it as a crash. Keep it where it says more: any Lua function between the error and
+     * the chunk (a helper, an on_frame callback, hearth's own modules). */
+    int lua_frames = 0, main_only = 1;
+    lua_Debug ar;
+    for (int level = 1; lua_getstack(L, level, &ar); level++) {
+        if (!lua_getinfo(L, "S", &ar) || ar.what[0] == 'C') continue;
+        lua_frames++;
+        if (strcmp(ar.what, "main") != 0) main_only = 0;
+    }
+    if (lua_frames == 1 && main_only) {
+        lua_pushstring(L, msg);
+        return 1;
+    }
     luaL_traceback(L, L, msg, 1);
     return 1;
 }

@@ -46,6 +46,9 @@ lua_error_messages)
     has out.txt "speed" "a live field probes before the error"
     check err_runtime.lua 3 "attempt to call a nil value (field 'missing_function')" "stack traceback" \
         "err_runtime.lua:5: in main chunk"
+    # an error raised in the scene's main chunk names its file and line; no traceback repeats that line (hearth_lua.c)
+    check err_toplevel.lua 3 "k = -1: must be > 0"
+    grep -q "stack traceback" err.txt && fail "a main chunk's own error printed a traceback: $(cat err.txt)"
     ;;
 batch_scene_matches_one_point)
     # <hearth/material.h> rule 7: scenes of plugins with stress_block (elastic, dough_batched = cam_clay_dough.c's test build with its batch; 2D and 3D;
