@@ -257,7 +257,8 @@ PY
 # 190 and 150 degC cookies are whole at 5 mm. Still short, so an expected failure (exit 77) while only the most
 # leavened cookie misses: at 110 degC its foam swells to a median J ~3.5 (eq. 14's bell has no depletion: the slow
 # bake makes 0.056 mol/kg of the NH4Cl share, the formula holds 0.042), whose particle spacing dx/2 sqrt(J) reaches
-# the link; at 3.75 mm a few set base particles at its rim foot stand a link off the body at 190 and 150 degC.
+# the link; at 3.75 mm a few of its rim's outer particles slide down the flank to the tray, a link off the body,
+# at 190 and 150 degC.
 # shed_swollen (the link stretched by each pair's J, read after the bar was seen) is printed, not judged. Any other
 # cookie past the bar fails (exit 1). At the scene's dx 5 mm and one finer (_fine, 3.75 mm, suite campaign).
 claim_cookie_physical_whole_in_each_oven | claim_cookie_physical_whole_in_each_oven_fine)
@@ -284,8 +285,8 @@ if all(float(r["leavener"]) == 0.015 for r in bad):
     print("EXPECTED FAILURE (#18, helper cookiecool): only the most leavened cookie misses. At 110 degC eq. 14's bell has "
           "no depletion, so the slow bake makes 0.056 mol/kg of the NH4Cl share (the formula's 0.042; 0.051 of it before "
           "the 78 degC set, 0.022 at 190 degC) and the foam swells to a median J ~3.5: its particles stand dx/2 sqrt(J) "
-          "~0.9 dx apart, at the link. At 3.75 mm a few set base particles at the rim foot stand a link off the body at "
-          "190 and 150 degC. docs/validation.md 'The physical cookie in the cooler ovens (#18, helper cookiecool)'")
+          "~0.9 dx apart, at the link. At 3.75 mm a few of the rim's outer particles slide down the flank to the tray, "
+          "a link off the body, at 190 and 150 degC. docs/validation.md 'The physical cookie in the cooler ovens (#18, helper cookiecool)'")
     sys.exit(77)
 sys.exit(1)
 PY
