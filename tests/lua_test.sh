@@ -646,6 +646,10 @@ gas_vent_decays_at_closed_form)
         has out.txt "gas_vent ok" "the vented CO2 on its closed form (closed = $m)"
     done
     ;;
+gas_vent_ambient_reaches_atmosphere) # #18 cookiecool: open surface pores vent to p_a, not a vacuum (the script says how)
+    run gas_vent_ambient.lua; expect_rc 0 "gas_vent with the atmosphere"; cat out.txt
+    has out.txt "gas_vent_ambient ok" "the open surface pores at the atmosphere, the inside at its vacuum"
+    ;;
 lone_gassy_pore_gas_volume_fraction)
     # issue #18 (the cookie's skin): the porosity is §5.4's gas volume fraction n^p = 1 - (1 - n^p_0) / J^P. A lone
     # gassy particle's pore grows past eq. 12's tension tip along the closed form n^g R theta / n = tau_y / sqrt(M(n))

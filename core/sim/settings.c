@@ -90,7 +90,8 @@ static const hearth_setting settings[] = {
          "m c (T - T_b) / L, and the vapour leaves (the crumb's plateau)", 100, -273.15, 5000, boiling_point, 0),
     REAL("gas_vent", "m/s",
          "CO2 loss through open surface pores: an air-boundary particle whose gas porosity is at least vent_porosity "
-         "loses its CO2 at dn^g/dt = -gas_vent S_p / V_p n^g, S_p its share of the surface (MPM; beyond Ding et al. "
+         "loses its CO2 at dn^g/dt = -gas_vent S_p / V_p (n^g - n*), S_p its share of the surface, n* the CO2 at "
+         "which its pores stand at the material's ambient_pressure (0 without one) (MPM; beyond Ding et al. "
          "§5.4: a real dough's surface cells open and vent); 0 = none",
          0, 0, 1e6, gas_vent, 0),
     REAL_GT("vent_porosity", "1",

@@ -212,7 +212,10 @@ PY
 # scene's dx 5 mm and one finer (_fine, 3.75 mm, suite campaign). Expected failures (1.07x, 1.14x) until the preset's
 # CO2 took its formula's two shares, each on its own bell (helper sodatwo: the NH4Cl share at 60 degC, before the 78
 # degC set; the leftover soda at 100): 1.545x and 1.814x (docs/validation.md, "The physical cookie's two shares").
-# At 5 mm the particles' curvature (-0.26 +- 3.57 1/m) does not resolve its sign; the probe's does (-10.4).
+# At 5 mm the particles' curvature (-0.26 +- 3.57 1/m) does not resolve its sign; the probe's does (-10.4). Since
+# open pores vent toward the atmosphere (helper cookiecool) it reads +2.40 +- 3.96 there: an expected failure (exit
+# 77) while the ratio holds, the probe reads a dome and the particles' reading is within two standard errors of 0;
+# any reading the measures resolve as not domed fails. _fine passes (1.826x; -23.0, -19.6 +- 2.9 1/m).
 claim_cookie_physical_leavened_taller | claim_cookie_physical_leavened_taller_fine)
     dx=0.005
     [ "$case_name" = claim_cookie_physical_leavened_taller_fine ] && dx=0.00375
@@ -228,9 +231,68 @@ ratio = h[0.015] / h[0.0]
 print(f"dx {float(sys.argv[2]) * 1e3:.2f} mm, 11 min at 190 degC: leavened {h[0.015] * 1e3:.1f} mm tall, {w[0.015] * 1e3:.1f} mm "
       f"wide; unleavened {h[0.0] * 1e3:.1f} mm, {w[0.0] * 1e3:.1f} mm; ratio {ratio:.3f} (need >= 1.3); leavened top curvature "
       f"{k[0]:.2f}, {k[1]:.2f} +- {se:.2f} 1/m (probe, particles +- the fit's standard error; domed: both < 0)")
-sys.exit(0 if ratio >= 1.3 and all(x < 0 for x in k) else 1)
+if ratio >= 1.3 and all(x < 0 for x in k): sys.exit(0)
+if ratio >= 1.3 and k[0] < 0 and abs(k[1]) < 2 * se:
+    print("EXPECTED FAILURE (#18, helper cookiecool): taller, and domed by the probe, but the particles' curvature is "
+          "within two standard errors of 0, so its sign is not resolved at this dx. Since open pores vent toward the "
+          "atmosphere (core/sim/fields/gas.c) the 5 mm reading is +2.40 +- 3.96 1/m (was -0.26 +- 3.57); over the "
+          "particles' samplings (--set seed=1..4) it reads +2.40, -20.76, +2.27, -15.43 (before -0.26, -7.04, -0.77, "
+          "-18.12): the coarse dome is a coin flip of the sampling; at 3.75 mm both measures read it clearly "
+          "(docs/validation.md 'The physical cookie in the cooler ovens (#18, helper cookiecool)')")
+    sys.exit(77)
+sys.exit(1)
 PY
-    [ $? -eq 0 ] || fail "the physical leavened cookie is not 1.3x as tall and domed (numbers above)"
+    rc=$?
+    [ $rc -eq 77 ] && exit 77
+    [ $rc -eq 0 ] || fail "the physical leavened cookie is not 1.3x as tall and domed (numbers above)"
+    ;;
+# #18 (helper cookiecool): the physical cookie ends in one piece in each of Fig. 17's ovens. cookies.lua --set
+# preset=physical bakes the three leaveners (0.015, 0.0075, 0) in the 190, 150 and 110 degC ovens; each cookie's
+# particles are linked when within two seeded spacings (dx), and at most 1% of them may lie outside the largest
+# linked group (cookies.lua's shed column). The bar was set before the fix was run. Before, the most leavened cookie
+# shed 10-11 particles (6-7%) at 150 and 110 degC (5 mm): open surface pores vented their CO2 to nothing, so their
+# pores fell tens of kPa under the atmosphere while the dough was still soft (70-78 degC), the skin collapsed and the
+# crumb it squeezed burst (docs/validation.md "The physical cookie in the cooler ovens (#18, helper cookiecool)").
+# Since the vent exchanges a pore's gas with the air toward the atmosphere's pressure (core/sim/fields/gas.c) the
+# 190 and 150 degC cookies are whole at 5 mm. Still short, so an expected failure (exit 77) while only the most
+# leavened cookie misses: at 110 degC its foam swells to a median J ~3.5 (eq. 14's bell has no depletion: the slow
+# bake makes 0.056 mol/kg of the NH4Cl share, the formula holds 0.042), whose particle spacing dx/2 sqrt(J) reaches
+# the link; at 3.75 mm a few of its rim's outer particles slide down the flank to the tray, a link off the body,
+# at 190 and 150 degC.
+# shed_swollen (the link stretched by each pair's J, read after the bar was seen) is printed, not judged. Any other
+# cookie past the bar fails (exit 1). At the scene's dx 5 mm and one finer (_fine, 3.75 mm, suite campaign).
+claim_cookie_physical_whole_in_each_oven | claim_cookie_physical_whole_in_each_oven_fine)
+    dx=0.005
+    [ "$case_name" = claim_cookie_physical_whole_in_each_oven_fine ] && dx=0.00375
+    run cookies --set preset=physical --set dx=$dx --set frames=1 --set ovens=190,150,110 >/dev/null
+    python3 - hearth-out/cookies/cookies.csv $dx <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+bad = []
+print(f"dx {float(sys.argv[2]) * 1e3:.2f} mm: particles beyond two spacings (dx) of each cookie's largest piece "
+      "(need <= 1% of its particles; in brackets the same with the link stretched by J, not judged)")
+for r in rows:
+    n, off, offs = int(r["particles"]), int(r["shed"]), int(r["shed_swollen"])
+    ok = off <= 0.01 * n
+    print(f"  oven {r['oven_degC']} degC, leavener {r['leavener']}: {off} of {n} ({100 * off / n:.1f}%) [{offs}], height "
+          f"{float(r['height_m']) * 1e3:.1f} mm, spread {float(r['spread_m']) * 1e3:.1f} mm{'' if ok else '  NOT WHOLE'}")
+    if not ok: bad.append(r)
+if len(rows) != 9:
+    print(f"expected 9 cookies (3 ovens x 3 leaveners), read {len(rows)}")
+    sys.exit(1)
+if not bad: sys.exit(0)
+if all(float(r["leavener"]) == 0.015 for r in bad):
+    print("EXPECTED FAILURE (#18, helper cookiecool): only the most leavened cookie misses. At 110 degC eq. 14's bell has "
+          "no depletion, so the slow bake makes 0.056 mol/kg of the NH4Cl share (the formula's 0.042; 0.051 of it before "
+          "the 78 degC set, 0.022 at 190 degC) and the foam swells to a median J ~3.5: its particles stand dx/2 sqrt(J) "
+          "~0.9 dx apart, at the link. At 3.75 mm a few of the rim's outer particles slide down the flank to the tray, "
+          "a link off the body, at 190 and 150 degC. docs/validation.md 'The physical cookie in the cooler ovens (#18, helper cookiecool)'")
+    sys.exit(77)
+sys.exit(1)
+PY
+    rc=$?
+    [ $rc -eq 77 ] && exit 77
+    [ $rc -eq 0 ] || fail "a physical cookie sheds more than 1% of its particles in one of the ovens (numbers above)"
     ;;
 # cookies.lua --set preset=physical refuses a lever on Table 2's cookie (here conductivity, a factor on Table 2's
 # kappa): exit non-zero before baking, the message naming the scene's file and line, the parameter and the preset

@@ -33,6 +33,20 @@
  * its pores stop at J^P ~ (1 - n^p_0) / (1 - vent_porosity).
  * `gas_vent_decays_at_closed_form` checks it against the exponential.
  *
+ * Toward the atmosphere, not to nothing (issue #18, helper cookiecool; docs/validation.md "The physical cookie in
+ * the cooler ovens"). With the gas law over the atmosphere (ambient_pressure p_a > 0, gas.h's gas_tau_ambient) an
+ * open pore is the air's: its gas exchanges with the oven until it stands at p_a, so the loss is first order in
+ * the CO2 over what that takes, dn^g/dt = -h S_p / V_p (n^g - n*), n* the CO2 at which the pores' air, vapour and
+ * CO2 make p_a (at least 0), integrated exactly as n* + (n^g - n*) e^{-h S_p dt / V_p} with n* held over the step.
+ * That is the Robin condition multiphase bread models put on the gas pressure at an open surface (the gas
+ * pressure relaxes to the oven's through a mass-transfer coefficient: Zhang, Datta & Mukherjee 2005's model as
+ * the breadBakingFoam solver sets it up, its breadPGMixed condition). Vented to n^g = 0 as before, a swollen
+ * pore's air and vapour alone stood tens of kPa under p_a (J 2.5, 75 degC: -52 kPa), which crushed the soft
+ * skin (yield ~0.1-7 kPa) of the physical cookie at 70-78 degC in the 150 degC oven; the crumb it squeezed rose
+ * to +69 kPa and burst, and the cookie shed 6-7% of its particles. Without an atmosphere (ambient_pressure 0,
+ * eq. 13 as printed, every paper preset) n* = 0: the law and its bits are as before. n* takes the particle's
+ * temperature, J and water as the step leaves them (G2P) or as it holds them (gas_between).
+ *
  * On the fields' own clock (field_clock.c) the grid carries heat and the
  * boundary only every k-th step, but the CO2 is the particles' own and moves
  * every step, as at single rate: a step without a field update makes each
@@ -114,10 +128,35 @@ static inline double vent_decay(const particles *ps, int i, double c, double dt)
     return V > 0 ? exp(-c * dt / V) : 1.0;
 }
 
-double gas_vent_factor(const hearth_scene *s, int i, double dt) {
+/* The CO2 n* (moles per reference volume) at which particle i's open pores stand at the atmosphere (the vent's
+ * target, above): 0 for eq. 13 as printed (ambient_pressure 0, no atmosphere in the gas law), else gas.h's
+ * gas_tau_ambient solved for p = p_a, n* = (p_a - p_v(theta)) J n^p / (R theta) - n_air, at least 0 (a pore whose
+ * air and vapour alone stand over p_a keeps its CO2 at 0: the air's own loss is not modelled). */
+static double vent_target(const hearth_scene *s, int i) {
+    const particles *ps = &s->ps;
+    const double *core = s->mats.slot[pcoli(ps, PC_MAT)[i]].core;
+    const double pa = core[CP_AMBIENT_PRESSURE];
+    if (!(pa > 0) || !(ps->enabled & (1u << PC_TEMPERATURE))) return 0.0;
+    const double n0 = core[CP_POROSITY0], T = pcold(ps, PC_TEMPERATURE)[i];
+    const int wet = (ps->enabled & (1u << PC_WATER)) && pcold(ps, PC_WATER)[i] > 0;
+    const double th = T + KELVIN, th0 = core[CP_REFERENCE_T] + KELVIN;
+    const double pv = wet ? vapour_psat(th) : 0, pv0 = wet ? vapour_psat(th0) : 0;
+    const double nair = (pa - pv0) * n0 / (R_GAS * th0), J = particles_J(ps, i);
+    const double n = (pa - pv) * J * gas_porosity(J, n0) / (R_GAS * th) - nair;
+    return n > 0 ? n : 0.0;
+}
+
+/* n <- n* + (n - n*) e, e the step's decay; n* = 0 (no atmosphere) is n e, the same bits as the law before */
+static inline double vent_relax(const hearth_scene *s, int i, double n, double e) {
+    if (e == 1.0) return n;
+    const double t = vent_target(s, i);
+    return t > 0 ? t + (n - t) * e : n * e;
+}
+
+double gas_vent(const hearth_scene *s, int i, double n, double dt) {
     const double c = vent_coefficient(s, i);
     if (s->ps.enabled & (1u << PC_VENT)) pcold(&s->ps, PC_VENT)[i] = c; /* for the steps until the next field step */
-    return vent_decay(&s->ps, i, c, dt);
+    return vent_relax(s, i, n, vent_decay(&s->ps, i, c, dt));
 }
 
 /* gas_between for a scene of one gassy material with the memo (the dough bench's): per chunk of particles, the
@@ -126,7 +165,7 @@ double gas_vent_factor(const hearth_scene *s, int i, double dt) {
  * operations and values as the loop of gas_between, so the same bits; the chunks share nothing, so any thread
  * count gives them. Per particle the loop of exp_memo calls cost 25 instructions a step in the 2D bench. */
 enum { GAS_CHUNK = 256 };
-static void gas_between_one(double *restrict G, const double *restrict T, double *restrict memo,
+static void gas_between_one(const hearth_scene *s, double *restrict G, const double *restrict T, double *restrict memo,
                             const double *restrict vent, const particles *ps, int n, double rate, double Tr, double width,
                             double dt) {
     const int nchunks = (n + GAS_CHUNK - 1) / GAS_CHUNK;
@@ -148,7 +187,7 @@ static void gas_between_one(double *restrict G, const double *restrict T, double
         for (int j = 0; j < m; j++) g[j] += rate * E[j];
         if (vent)
             for (int j = 0; j < m; j++)
-                if (vent[i0 + j] > 0) g[j] *= vent_decay(ps, i0 + j, vent[i0 + j], dt);
+                if (vent[i0 + j] > 0) g[j] = vent_relax(s, i0 + j, g[j], vent_decay(ps, i0 + j, vent[i0 + j], dt));
     }
 }
 
@@ -185,7 +224,7 @@ void gas_between(hearth_scene *s, double dt) {
                 const double u2 = (T[i] - gm->core[CP_REACTION_T_2]) / gm->core[CP_REACTION_WIDTH_2];
                 G[i] += a2 * gm->params[gm->density_index] * dt * exp(-u2 * u2);
             }
-            if (vent) G[i] *= vent_decay(ps, i, vent[i], dt);
+            if (vent) G[i] = vent_relax(s, i, G[i], vent_decay(ps, i, vent[i], dt));
         }
         return;
     }
@@ -202,7 +241,7 @@ void gas_between(hearth_scene *s, double dt) {
         two |= rate2[k] > 0;
     }
     if (s->mats.n == 1 && live[0] && memo && !two) {
-        gas_between_one(G, T, memo, vent, ps, n, rate[0], Tr[0], width[0], dt);
+        gas_between_one(s, G, T, memo, vent, ps, n, rate[0], Tr[0], width[0], dt);
         return;
     }
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
@@ -215,6 +254,6 @@ void gas_between(hearth_scene *s, double dt) {
             const double u2 = (T[i] - Tr2[k]) / width2[k];
             G[i] += rate2[k] * exp(-u2 * u2);
         }
-        if (vent && vent[i] > 0) G[i] *= vent_decay(ps, i, vent[i], dt);
+        if (vent && vent[i] > 0) G[i] = vent_relax(s, i, G[i], vent_decay(ps, i, vent[i], dt));
     }
 }

@@ -11,11 +11,12 @@
 /// Exact for constant and for linearly varying temperature (an erf difference).
 double gas_moles_step(double T0, double T1, double dt, double alpha_g, double R0, double Tr, double dT);
 struct hearth_scene;
-/// Venting (gas.c): the factor on particle i's n^g over a step of dt, exp(-gas_vent S_p dt / V_p) when the
+/// Venting (gas.c): particle i's n^g after a step of dt, n* + (n - n*) exp(-gas_vent S_p dt / V_p) when the
 /// particle holds air surface (boundary.c's area, this step's) and its gas porosity has reached vent_porosity,
-/// else 1. MPM's G2P calls it on a field step after the step's production; it keeps gas_vent S_p (0 when
-/// closed or inside) in the particle's PC_VENT for the steps until the next field step (gas_between).
-double gas_vent_factor(const struct hearth_scene *s, int i, double dt);
+/// else n; n* the CO2 at which its pores stand at the atmosphere (0 without ambient_pressure). MPM's G2P calls it
+/// on a field step after the step's production; it keeps gas_vent S_p (0 when closed or inside) in the particle's
+/// PC_VENT for the steps until the next field step (gas_between).
+double gas_vent(const struct hearth_scene *s, int i, double n, double dt);
 /// The CO2 of a step that carries no field update (field_clock.c), per particle after the step stood: each
 /// particle makes its gas at the temperature it holds since the last field step and vents through the
 /// surface it held then (PC_VENT), n <- (n + a dt) e^{-h S_p dt / V_p}, as a single-rate step would.

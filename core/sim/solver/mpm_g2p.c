@@ -182,7 +182,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                     Gcol[i] += gas_moles_field_step(T0, isnan(Tgas) ? Tcol[i] : Tgas, fdt, s->field_acc,
                                                     gm->core[CP_GAS_RATE_2], gm->params[gm->density_index],
                                                     gm->core[CP_REACTION_T_2], gm->core[CP_REACTION_WIDTH_2]);
-                if (vent) Gcol[i] *= gas_vent_factor(s, i, dt); /* open surface pores lose their CO2 (gas.c) */
+                if (vent) Gcol[i] = gas_vent(s, i, Gcol[i], dt); /* open surface pores vent to the air (gas.c) */
             }
         }
         if (flags && (flags[i] & PF_FIXED)) { /* a pinned particle keeps its place */

@@ -43,10 +43,12 @@
 --                           the fat melts, holds its 17.5 mm); the soda's CO2 (0.069 mol/kg) comes
 --                           in two shares, the NH4Cl one on a 60 degC bell before the 78 degC set
 --                           and the leftover soda's at 100 degC, and the leavened cookie stands
---                           1.56x the unleavened at 190 degC (92 mm wide), 1.38x at 150, 1.73x at
---                           110, where the most leavened sheds pieces (docs/validation.md "The
---                           physical cookie's two shares (#18, helper sodatwo)";
---                           claim_cookie_physical_leavened_taller passes). The leavener a scales
+--                           1.51x the unleavened at 190 degC (94 mm wide), 1.86x at 150, 2.20x at
+--                           110 (docs/validation.md "The physical cookie's two shares (#18, helper
+--                           sodatwo)"; since open pores vent toward the atmosphere, not to a vacuum,
+--                           the 150 and 110 degC cookies no longer shed pieces, and at 110 the most
+--                           leavened is a foam of J ~3.5: "The physical cookie in the cooler ovens
+--                           (#18, helper cookiecool)"). The leavener a scales
 --                           both of the preset's shares by a / 0.015, so 0.015 is the formula's. until_t = 0 bakes the preset's own time (paper 5 s).
 --   [--set seed=2]        the particles' jitter (h.scene's seed, default 1): a
 --                           new sampling of the same dough, to see a reading's
@@ -55,7 +57,9 @@
 -- Writes, under hearth-out/cookies/: oven_<T>/heat_%04d.png (the heat
 -- progress, Fig. 3's right column) and cookies.csv (final height, spread and
 -- top curvature per cookie; negative curvature = domed; alone = 1 when no
--- other cookie reaches its slot, so its readings are its own), series.csv (height
+-- other cookie reaches its slot, so its readings are its own; particles, and shed: how many of them lie
+-- beyond two spacings of its largest piece, shed_swollen the same with the link stretched by J; see shed
+-- below), series.csv (height
 -- and spread over time). Two curvatures: top_curvature from the density
 -- probe's top over the middle third of the spread (9 samples), and
 -- top_curvature_particles from the highest particle in each one-cell bin,
@@ -183,7 +187,7 @@ local TRAY, SPACING, R, THICK = 0.02, 0.18, 0.03, 0.0175
 local W = SPACING * #leaveners
 local zc = 0.06
 
-local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_per_m,top_curvature_particles_1_per_m,alone,top_curvature_particles_se_1_per_m" }
+local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_per_m,top_curvature_particles_1_per_m,alone,top_curvature_particles_se_1_per_m,particles,shed,shed_swollen" }
 local series = { "oven_degC,leavener,t,height_m,spread_m,centre_temperature_degC" }
 for _, T in ipairs(ovens) do
   local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.09, 0.12) },
@@ -233,6 +237,49 @@ for _, T in ipairs(ovens) do
       if cookie_of(r.id[p]) == i and math.abs(r.x[3 * p - 2] - xs[i]) > SPACING / 2 - 2.5 * dx then return 0 end
     end
     return 1
+  end
+  -- shed(i): is cookie i one piece? Its particles linked when within two seeded spacings (dx: s:add seeds ppc 4
+  -- in 2D and 8 in 3D, dx/2 apart), the count outside the largest linked group (issue #18, helper cookiecool:
+  -- the most leavened physical cookie shed 6-7% of its particles in the 150 and 110 degC ovens), and its
+  -- particle count. A swollen foam's spacing (dx/2 sqrt(J) in 2D: 0.85 dx at J 2.9) comes near the link, so a
+  -- lone interior particle can read as shed; a piece a baker would see is a group.
+  -- shed(i, true): the same with the link stretched to each pair's swelling, dx max(J_a, J_b)^(1/dim) (cells of
+  -- 2 dx, the link at most 2 dx): a foam whose spacing has grown past dx reads whole, a piece still apart; a
+  -- reading made after the bar above was seen (cookies.csv's shed_swollen), not a bar.
+  local function shed(i, swollen)
+    local r = s:particles { fields = swollen and { "id", "x", "J" } or { "id", "x" } }
+    local L = swollen and 2 * dx or dx
+    local px, parent, cell, n = {}, {}, {}, 0
+    local function find(a) while parent[a] ~= a do parent[a] = parent[parent[a]]; a = parent[a] end return a end
+    local function key(a, b, c) return (a * 4096 + b) * 4096 + c end
+    for p = 1, r.n do
+      if cookie_of(r.id[p]) == i then
+        n = n + 1
+        px[n] = { r.x[3 * p - 2], r.x[3 * p - 1], d3 and r.x[3 * p] or 0,
+          j = swollen and math.min(r.J[p] ^ (1 / (d3 and 3 or 2)), 2) or 1 }
+        parent[n] = n
+        local c = { math.floor(px[n][1] / L), math.floor(px[n][2] / L), math.floor(px[n][3] / L) }
+        px[n].c = c
+        local k = key(c[1], c[2], c[3])
+        cell[k] = cell[k] or {}
+        table.insert(cell[k], n)
+      end
+    end
+    for a = 1, n do
+      local c = px[a].c
+      for ox = -1, 1 do for oy = -1, 1 do for oz = d3 and -1 or 0, d3 and 1 or 0 do
+        for _, b in ipairs(cell[key(c[1] + ox, c[2] + oy, c[3] + oz)] or {}) do
+          if b > a then
+            local u, w, z = px[a][1] - px[b][1], px[a][2] - px[b][2], px[a][3] - px[b][3]
+            local l = dx * math.max(px[a].j, px[b].j)
+            if u * u + w * w + z * z <= l * l then parent[find(a)] = find(b) end
+          end
+        end
+      end end end
+    end
+    local size, big = {}, 0
+    for a = 1, n do local f = find(a); size[f] = (size[f] or 0) + 1; if size[f] > big then big = size[f] end end
+    return n - big, n
   end
   -- line_h(x): the probe's height above the tray at x (in 3D on the plane z = zc): the highest of 1401
   -- samples up the line where the probe reads material, then bisected between it and the sample above to
@@ -333,14 +380,17 @@ for _, T in ipairs(ovens) do
     local hgt, spread, curv = measure(i)
     local pcurv, pse = particle_curvature(i)
     local one = alone(i)
-    rows[#rows + 1] = ("%g,%g,%.3g,%.5f,%.5f,%.4f,%.4f,%d,%.4f"):format(T, a, P.baseline and 0 or physical and gas_of[i] or a * h.library.dough_scale.gas,
-      hgt, spread, curv, pcurv, one, pse)
+    local off, count = shed(i)
+    local off_swollen = shed(i, true)
+    rows[#rows + 1] = ("%g,%g,%.3g,%.5f,%.5f,%.4f,%.4f,%d,%.4f,%d,%d,%d"):format(T, a, P.baseline and 0 or physical and gas_of[i] or a * h.library.dough_scale.gas,
+      hgt, spread, curv, pcurv, one, pse, count, off, off_swollen)
     if one == 0 then
       print(("cookies.lua: warning: oven %g degC, leavener %g: the cookie reaches the edge of its slot (%.0f mm wide): "
         .. "it touches the box's wall or its neighbour, and its readings are not its own alone"):format(T, a, SPACING * 1e3))
     end
-    print(("oven %g degC, leavener %g: height %.4f m, spread %.4f m, top curvature %.3f 1/m (particles %.3f +- %.3f)"):format(T,
-      a, hgt, spread, curv, pcurv, pse))
+    print(("oven %g degC, leavener %g: height %.4f m, spread %.4f m, top curvature %.3f 1/m (particles %.3f +- %.3f); "
+      .. "%d of its %d particles beyond two spacings of its largest piece (%d with the link stretched by J)"):format(T, a,
+      hgt, spread, curv, pcurv, pse, off, count, off_swollen))
   end
   h.write("cookies.csv", table.concat(rows, "\n") .. "\n")
   if physical then -- the crust's colour (Zanoni et al. 1995's index, 0..1): a picture, and per cookie a printed line
