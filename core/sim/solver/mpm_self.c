@@ -20,8 +20,8 @@
  * The step is held to MPM_SELF_MARGIN of that bound, which can bind only at cfl > MPM_SELF_MARGIN / sqrt(dim)
  * (0.64 in 2D, 0.52 in 3D): a scene at the default cfl 0.5 computes nothing here and steps as before. When asked,
  * the step takes the separate passes (mpm.c's `usual` is off: no one-region step) and this pass runs between the grid update and
- * G2P: per active grid block, from the particles of the 2^dim particle blocks whose stencils reach it (as
- * mpm_touch.c reads them), the same sums at any thread count; under MPI slabs the seam's sums go across
+ * G2P: each particle block's particles add to their stencils' nodes, in 2^dim colours of blocks (as P2G's
+ * colour phases), the same sums at any thread count; under MPI slabs the seam's sums go across
  * (mpm_ranks_self_halo), as P2G's do. Across a periodic axis a node misses the particles on the far side. */
 #include <string.h>
 
@@ -41,59 +41,32 @@ void mpm_self_free(mpm_state *m) {
     m->self_g_cap = 0;
 }
 
-/* the particle block of grid block id, or -1 (the sort lists them in ascending block order) */
-static int pb_at(const mpm_state *m, int id) {
-    int lo = 0, hi = m->npb - 1;
-    while (lo <= hi) {
-        const int mid = (lo + hi) / 2, b = m->pb[mid].block;
-        if (b == id) return mid;
-        if (b < id) lo = mid + 1;
-        else hi = mid - 1;
-    }
-    return -1;
-}
-
-/* grid block k's sums over this rank's particles: m_i g_i (3 doubles a node), then m_i */
-static void self_block(hearth_scene *s, int k) {
+/* particle block q's particles' sums into the nodes of their stencils (m_i g_i, then m_i: MPM_SELF_NCH a node) */
+static void self_scatter(hearth_scene *s, int q) {
     const grid *g = &s->g;
     const mpm_state *m = s->mpm;
     const int D = g->dim, NPB = g->nodes_per_block;
-    double *out = m->self_g + (size_t)k * (size_t)NPB * MPM_SELF_NCH;
-    memset(out, 0, sizeof(double) * (size_t)NPB * MPM_SELF_NCH);
-    int bc[3];
-    grid_block_coords(g, g->active[k], bc);
     const double *X = pcold(&s->ps, PC_X), *M = pcold(&s->ps, PC_MASS);
-    for (int o = 0; o < (D == 2 ? 4 : 8); o++) {
-        const int b[3] = {bc[0] - (o & 1), bc[1] - ((o >> 1) & 1), D == 3 ? bc[2] - ((o >> 2) & 1) : 0};
-        if (b[0] < 0 || b[1] < 0 || b[2] < 0) continue;
-        const int q = pb_at(m, grid_block_id(g, b[0], b[1], b[2]));
-        if (q < 0) continue;
-        for (int i = m->pb[q].start; i < m->pb[q].end; i++) {
-            const double *x = X + 3 * i;
-            int base[3] = {0, 0, 0};
-            double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
-            for (int a = 0; a < D; a++) {
-                const double Xa = (x[a] - g->lo[a]) * g->inv_dx;
-                base[a] = base_node(Xa);
-                bspline_weights(Xa - base[a], w[a], dw);
-            }
-            for (int p = 0; p < 3; p++)
-                for (int r = 0; r < 3; r++)
-                    for (int t = 0; t < (D == 3 ? 3 : 1); t++) {
-                        const int gi[3] = {base[0] + p, base[1] + r, base[2] + t};
-                        int l = 0, in = 1;
-                        for (int a = 0; a < D; a++) {
-                            const int loc = gi[a] - bc[a] * GRID_B;
-                            if (loc < 0 || loc >= GRID_B) in = 0;
-                        }
-                        if (!in) continue;
-                        l = D == 2 ? (gi[0] - bc[0] * GRID_B) * GRID_B + gi[1] - bc[1] * GRID_B
-                                   : ((gi[0] - bc[0] * GRID_B) * GRID_B + gi[1] - bc[1] * GRID_B) * GRID_B + gi[2] - bc[2] * GRID_B;
-                        const double mw = M[i] * w[0][p] * w[1][r] * (D == 3 ? w[2][t] : 1.0);
-                        out[MPM_SELF_NCH * l + 3] += mw;
-                        for (int a = 0; a < D; a++) out[MPM_SELF_NCH * l + a] += mw * (g->lo[a] + gi[a] * g->dx - x[a]);
-                    }
+    for (int i = m->pb[q].start; i < m->pb[q].end; i++) {
+        const double *x = X + 3 * i;
+        int base[3] = {0, 0, 0};
+        double w[3][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, dw[3];
+        for (int a = 0; a < D; a++) {
+            const double Xa = (x[a] - g->lo[a]) * g->inv_dx;
+            base[a] = base_node(Xa);
+            bspline_weights(Xa - base[a], w[a], dw);
         }
+        for (int p = 0; p < 3; p++)
+            for (int r = 0; r < 3; r++)
+                for (int t = 0; t < (D == 3 ? 3 : 1); t++) {
+                    const int gi[3] = {base[0] + p, base[1] + r, D == 3 ? base[2] + t : 0};
+                    int l;
+                    const int slot = grid_tile_slot_at(g, D, (const int[3]){0, 0, 0}, gi[0], gi[1], gi[2], &l);
+                    double *o = m->self_g + ((size_t)slot * (size_t)NPB + (size_t)l) * MPM_SELF_NCH;
+                    const double mw = M[i] * w[0][p] * w[1][r] * (D == 3 ? w[2][t] : 1.0);
+                    for (int a = 0; a < D; a++) o[a] += mw * (g->lo[a] + gi[a] * g->dx - x[a]);
+                    o[3] += mw;
+                }
     }
 }
 
@@ -107,8 +80,19 @@ hearth_status mpm_self_gather(hearth_scene *s, hearth_error *err) {
         if (!m->self_g) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the lone-particle bound (%d grid blocks)", g->nactive);
         m->self_g_cap = need;
     }
+    memset(m->self_g, 0, sizeof(double) * need);
+    /* in 2^dim colours of particle blocks: a block's stencils reach its grid block and the next along each axis, so
+     * two blocks of one colour share no node, and each node takes its particle blocks in colour order, the same sums
+     * at any thread count */
+    const int D = g->dim;
+    for (int c = 0; c < (1 << D); c++) {
 #pragma omp parallel for schedule(guided) if (s->ps.n >= SCENE_PARALLEL_MIN)
-    for (int k = 0; k < g->nactive; k++) self_block(s, k);
+        for (int q = 0; q < m->npb; q++) {
+            int b[3];
+            grid_block_coords(g, m->pb[q].block, b);
+            if (((b[0] & 1) | (b[1] & 1) << 1 | (D == 3 ? (b[2] & 1) << 2 : 0)) == c) self_scatter(s, q);
+        }
+    }
     hearth_status st = mpm_ranks_self_halo(s, m->self_g, err); /* a seam's nodes: every rank's particles */
     if (st) return st;
     const size_t nodes = (size_t)g->nactive * (size_t)g->nodes_per_block;
