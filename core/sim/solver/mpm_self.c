@@ -80,7 +80,7 @@ hearth_status mpm_self_gather(hearth_scene *s, hearth_error *err) {
         if (!m->self_g) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for the lone-particle bound (%d grid blocks)", g->nactive);
         m->self_g_cap = need;
     }
-    memset(m->self_g, 0, sizeof(double) * need);
+    if (need) memset(m->self_g, 0, sizeof(double) * need); /* no block: nothing (the seam exchange below still runs) */
     /* in 2^dim colours of particle blocks: a block's stencils reach its grid block and the next along each axis, so
      * two blocks of one colour share no node, and each node takes its particle blocks in colour order, the same sums
      * at any thread count */
