@@ -642,6 +642,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
             s->max_speed = rep.max_speed;
             s->c_max = rep.c_max; /* moving particles only: a pinned body has no waves */
             s->nu_max = rep.nu_max;
+            s->self_max = s->def.solver == HEARTH_SOLVER_MPM ? rep.self_max : 0.0;
             s->kinetic = rep.kinetic;
             if (s->kinetic > s->kinetic_peak) s->kinetic_peak = s->kinetic;
             s->out_of_domain += rep.out_of_domain;

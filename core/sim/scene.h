@@ -53,6 +53,7 @@ typedef struct step_report {
     double kinetic;
     double c_max;      /* largest wave speed met (stateful plugins; stateless come from the slot) */
     double nu_max;     /* largest kinematic viscosity met (plugins with a viscosity callback) */
+    double self_max;   /* MPM: the largest share of a particle's own affine mode, 0..1 (mpm_g2p.c; 0 when not asked) */
     long out_of_domain;
     double mass;           /* of the particles that move */
     double driven_kinetic; /* 1/2 (mass) (fastest collider speed at a node it holds)^2: energy a collider may give */
@@ -69,6 +70,7 @@ struct hearth_scene {
     int rollbacks, consecutive_rollbacks;
     double max_speed, c_max, kinetic, cfl_last;
     double nu_max;       /* largest kinematic viscosity a plugin applies explicitly (m^2/s) */
+    double self_max;     /* the last step's step_report.self_max: mpm_stable_dt's bound on a lone particle */
     double kinetic_peak; /* largest kinetic energy so far: runaway is judged against it */
     long out_of_domain;
     hearth_guard_state guard;

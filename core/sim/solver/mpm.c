@@ -91,6 +91,7 @@ static void mpm_free(hearth_scene *s) {
     mpm_state *m = s->mpm;
     if (!m) return;
     mpm_scratch_free(m);
+    mpm_self_free(m);
     mem_free(m->pb, sizeof(pblock) * (size_t)m->pbcap);
     mem_free(m->colour_pb, sizeof(int) * (size_t)m->pbcap);
     mem_free(m->partial, sizeof(pb_partial) * (size_t)m->pbcap);
@@ -759,7 +760,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     HEARTH_ASSERT(s->ps.t2 == (s->g.dim == 2)); /* P2G and G2P read 2D's C and F as 2x2 blocks (scene.c sets it) */
     int heat = heat_now(s), water = water_now(s);
     const int wrap = s->def.periodic[0] || s->def.periodic[1] || s->def.periodic[2];
-    int usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
+    int usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field && !mpm_self_asked(s);
     hearth_status st;
     int sorted = 0;
     s->mpm->step_dt = dt; /* the slabs' touch masks (mpm_ranks.c's halo_sum) */
@@ -783,7 +784,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     if (!sorted && (st = mpm_sort(s, err))) return st;
     if (mixing_active(s) && (st = mixing_update(s, err))) return st;
     heat = heat_now(s), water = water_now(s); /* as the mixing left them */
-    usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field;
+    usual = !heat && !water && !wrap && s->mpm->nranks == 1 && !s->body_force_serial && !s->def.two_field && !mpm_self_asked(s);
     if (wrap && (thermal_active(s) || water_active(s)))
         return err_set(err, HEARTH_ERR_PARAM, "scene: periodic axes (periodic_%c) do not carry %s yet; use a closed box",
                        "xyz"[s->def.periodic[0] ? 0 : s->def.periodic[1] ? 1 : 2], thermal_active(s) ? "heat" : "water");
@@ -836,6 +837,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     if (wrap) mpm_periodic_fold(s, 1);
     const int front = heat && water && s->def.latent_heat;
     if (front && (st = water_boil_front_prepare(s, err))) return st;
+    if (mpm_self_asked(s) && (st = mpm_self_gather(s, err))) return st;
     mpm_g2p(s, dt, rep);
     /* before the wrap: the positions and nodes G2P left (water.c) */
     if (front && (st = water_boil_front(s, err))) return st;
@@ -856,6 +858,7 @@ double mpm_stable_dt(const hearth_scene *s) {
     /* explicit viscosity is diffusion of momentum: the same limit as explicit heat */
     if (s->nu_max > 0 && dt > s->def.dx * s->def.dx / (2.0 * s->def.dim * s->nu_max))
         dt = s->def.dx * s->def.dx / (2.0 * s->def.dim * s->nu_max);
+    dt = fmin(dt, mpm_self_dt(s)); /* a lone particle's or small cluster's own mode (mpm_self.c) */
     if (isinf(dt)) dt = s->def.cfl * s->def.dx; /* nothing moves or conducts: as if at 1 m/s */
     return dt * s->dt_scale;
 }

@@ -20,12 +20,23 @@ typedef struct pblock {
     int block, start, end;
 } pblock;
 
+/* A lone particle's or small cluster's own mode (mpm_self.c): the step is held to MPM_SELF_MARGIN of its stability
+ * bound (mpm_stable_dt), which can bind only at cfl > MPM_SELF_MARGIN / sqrt(dim); mpm_self_asked says whether the
+ * step measures it (mpm_self_gather after the grid update, G2P's alpha). */
+#define MPM_SELF_MARGIN 0.9
+#define MPM_SELF_NCH 4 /* mpm_self.c's doubles a node: g_i (3), then the node's mass */
+int mpm_self_asked(const hearth_scene *s);
+hearth_status mpm_self_gather(hearth_scene *s, hearth_error *err);
+void mpm_self_free(struct mpm_state *m);
+double mpm_self_dt(const hearth_scene *s); /* the step's bound, INFINITY when nothing was measured */
+
 /* Per particle-block partial results, reduced in block order. */
 typedef struct pb_partial {
     int fail_i, fail_kind, fail_code, fastest, mover;
     int clamped; /* particles G2P put back inside the grid after a collider pushed them out */
     double move; /* largest displacement in the block this step (m) */
     double ke, mass, vmax, cmax, numax; /* numax: largest kinematic viscosity eta / rho (m^2/s) */
+    double selfmax; /* largest share of a particle's own affine mode in the block (mpm_g2p.c), 0 when not asked */
     long ood;
     /* water.c's per-block sums, written by G2P's block loop and reduced by water_finish: they stay
      * here with the other partials so a step's reduction is one array in block order */
@@ -65,6 +76,8 @@ typedef struct mpm_state {
     double *tiles;
     size_t tiles_cap;
     int *pbof;
+    double *self_g;         /* mpm_self.c: each active node's g_i and mass (MPM_SELF_NCH doubles), when asked */
+    size_t self_g_cap;
     int colour_phases;      /* HEARTH_MPM_COLOUR_PHASES=1 at init: step_team keeps the colour phases at any thread count */
     /* 3D, more than one thread (mpm.c): the blocks each phase hands out from both ends of its range, and whether
      * P2G orders each block's flush after its lower-coloured neighbours' instead of a barrier per colour (both
@@ -298,6 +311,8 @@ hearth_status mpm_ranks_halo_back(hearth_scene *s, hearth_error *err);
 /* Slabs: the touch mask (mpm_touch.h) of face f (mpm_touch_face) that the lower neighbour's particles give
  * block id of this rank's first layer, sent with the ghost layer's sums (halo_sum); 0 elsewhere. */
 uint64_t mpm_ranks_touch_below(const hearth_scene *s, int id, int f);
+/* mpm_self.c's node sums across a slab's seam (nothing off slabs) */
+hearth_status mpm_ranks_self_halo(hearth_scene *s, double *sums, hearth_error *err);
 /// In the slab mode: 1, this rank's slab's block layers [*lo, *hi) along *axis; else 0.
 int mpm_ranks_slab(const mpm_state *m, int *axis, int *lo, int *hi);
 /* mpm_ranks_fields.c: heat and water on slabs, through one complete block

@@ -38,6 +38,10 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     int clamped = 0;
     const int TN = D == 2 ? GRID_T * GRID_T : GRID_T * GRID_T * GRID_T;
     const int NPB = g->nodes_per_block;
+    /* alpha, how much of a uniform stress over its neighbourhood comes back into a particle's C (mpm_self.c), only at
+     * a cfl where mpm_stable_dt's bound on it can be the tighter: the nodes' g_i in tile channels SCH.. SCH + D - 1 */
+    const int SELF = mpm_self_asked(s), SCH = D == 2 ? 10 : 6;
+    const double *selfg = SELF ? s->mpm->self_g : NULL;
     int bc[3];
     grid_block_coords(g, pb.block, bc);
     const int org[3] = {bc[0] * GRID_B, bc[1] * GRID_B, bc[2] * GRID_B};
@@ -48,7 +52,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             for (int c = 0; c < (D == 3 ? GRID_T : 1); c++) {
                 const int t = D == 2 ? a * GRID_T + b : (a * GRID_T + b) * GRID_T + c;
                 int l;
-                const double *node = grid_tile_node(g, D, bc, a, b, c, &l);
+                const int slot = grid_tile_slot_at(g, D, bc, a, b, c, &l);
+                const double *node = grid_block(g, slot);
                 for (int d = 0; d < 3; d++) tile[d * TN + t] = node[(d + 1) * NPB + l];
                 if (HEAT) {
                     tile[3 * TN + t] = node[CH_T * NPB + l] - node[CH_T0 * NPB + l];
@@ -58,6 +63,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                     const double cw = node[CH_MW * NPB + l];
                     tile[5 * TN + t] = cw > 0 ? node[CH_DMW * NPB + l] / cw : 0.0;
                 }
+                if (SELF)
+                    for (int d = 0; d < D; d++) tile[(SCH + d) * TN + t] = selfg[((size_t)slot * (size_t)NPB + (size_t)l) * MPM_SELF_NCH + (size_t)d];
                 if (TWO) /* two_field (2D): the second field's velocity and the node's reference gradient */
                     for (int ch = 0; ch < 2; ch++) {
                         tile[(6 + ch) * TN + t] = node[(CH_TF_PX + ch) * NPB + l];
@@ -76,7 +83,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         hi[d] = g->lo[d] + (g->nn[d] - 2) * dx;
         if (s->def.periodic[d]) lo[d] = -INFINITY, hi[d] = INFINITY; /* wrapped after G2P instead */
     }
-    double ke = 0, mass = 0, vmax = -1, move2 = 0;
+    double ke = 0, mass = 0, vmax = -1, move2 = 0, selfmax = 0;
     int mover = -1;
     double w_removed = 0, w_dmax = 0, w_emax = 0, w_lmax = 0;
     int fastest = -1;
@@ -87,6 +94,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         double fx[3], w[3][3];
         tile_stencil(g, D, x, org, inv_dx, base, fx, w);
         double nv[3] = {0, 0, 0}, B[9] = {0}, dT = 0, Tn = 0, ds = 0; /* 2D sums B's in-plane entries 0, 1, 3, 4 */
+        double self = 0; /* SELF: sum_i w_ip (x_i - x_p) . g_i */
         /* the stencil's corner in the tile: the 3^dim nodes then sit at constant offsets from it */
         const double *const tp = tile + (D == 2 ? base[0] * GRID_T + base[1] : (base[0] * GRID_T + base[1]) * GRID_T + base[2]);
         /* 3D sums nv and B in pairs of lanes: Ak = {B[3k], B[3k+1]} += (wt u_k) {d0, d1} and Nk = {nv[k], B[3k+2]}
@@ -108,6 +116,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                     if (HEAT) dT += wab * tp[3 * TN + t];
                     if (PIC) Tn += wab * tp[4 * TN + t];
                     if (WATER) ds += wab * tp[5 * TN + t];
+                    if (SELF) self += wab * (d0 * tp[SCH * TN + t] + d1 * tp[(SCH + 1) * TN + t]);
                     nv[0] += wab * u0;
                     nv[1] += wab * u1;
                     B[0] += wab * u0 * d0; B[1] += wab * u0 * d1;
@@ -120,6 +129,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                         if (HEAT) dT += wt * tp[3 * TN + t];
                         if (PIC) Tn += wt * tp[4 * TN + t];
                         if (WATER) ds += wt * tp[5 * TN + t];
+                        if (SELF) self += wt * (d0 * tp[SCH * TN + t] + d1 * tp[(SCH + 1) * TN + t] + q2[c][1] * tp[(SCH + 2) * TN + t]);
                         const double wu0 = wt * tp[t], wu1 = wt * tp[TN + t], wu2 = wt * tp[2 * TN + t];
                         const v2d g0 = {wu0, wu0}, g1 = {wu1, wu1}, g2 = {wu2, wu2};
                         A0 += g0 * p01; N0 += g0 * q2[c];
@@ -135,6 +145,8 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             B[3] = A1[0], B[4] = A1[1], B[5] = N1[1];
             B[6] = A2[0], B[7] = A2[1], B[8] = N2[1];
         }
+        /* alpha = tr(D^-1 sum_i w_ip (x_i - x_p) g_i^T) / dim: 1 for a lone particle or cluster, ~0 inside a body */
+        if (SELF) selfmax = fmax(selfmax, Dinv * self / D);
         if (D == 2) C[0] = Dinv * B[0], C[1] = Dinv * B[1], C[2] = Dinv * B[3], C[3] = Dinv * B[4];
         else
             for (int a = 0; a < 9; a++) C[a] = Dinv * B[a];
@@ -262,6 +274,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     pp->mass = mass;
     pp->vmax = vmax;
     pp->fastest = fastest;
+    pp->selfmax = selfmax;
     pp->move = sqrt(move2);
     pp->mover = mover;
     pp->ood = ood;
@@ -312,7 +325,7 @@ block_fn g2p_fn(const hearth_scene *s) {
  * still ends in single blocks where a late thread catches up. */
 void g2p_team(hearth_scene *s, block_fn fn, double dt) {
     const mpm_state *m = s->mpm;
-    double tile[6 * GRID_T * GRID_T * GRID_T];
+    double tile[9 * GRID_T * GRID_T * GRID_T]; /* 3D's channels 6-8: SELF's g_i */
     if (m->claims) { /* 3D at more than one thread: from both ends, the same thread on the same end as P2G (claim_take) */
         const int back = claim_end();
         for (int k; (k = claim_take(&m->claims->g2p, back)) >= 0;) fn(s, k, dt, tile);
@@ -347,6 +360,7 @@ void g2p_reduce(hearth_scene *s, step_report *rep) {
         }
         if (pp->cmax > rep->c_max) rep->c_max = pp->cmax;
         if (pp->numax > rep->nu_max) rep->nu_max = pp->numax;
+        if (pp->selfmax > rep->self_max) rep->self_max = pp->selfmax;
         rep->out_of_domain += pp->ood + pp->clamped;
     }
     /* the keys stand for the positions the step leaves, if it stands (s->step is then one more) */
@@ -373,7 +387,7 @@ void mpm_g2p(hearth_scene *s, double dt, step_report *rep) {
  * for the next step's scatter. */
 void g2p_chunks(hearth_scene *s, mpm_sort_team *t, block_fn fn, double dt) {
     mpm_state *m = s->mpm;
-    double tile[6 * GRID_T * GRID_T * GRID_T];
+    double tile[9 * GRID_T * GRID_T * GRID_T]; /* 3D's channels 6-8: SELF's g_i */
     span_walk w = span_walk_start(t->T);
     int lo, hi;
     while (span_next(t->span[MPM_SPAN_G2P], &w, NULL, &lo, &hi))

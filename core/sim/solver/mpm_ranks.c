@@ -733,6 +733,65 @@ hearth_status mpm_ranks_halo_back(hearth_scene *s, hearth_error *err) {
     return HEARTH_OK;
 }
 
+/* mpm_self.c's node sums (MPM_SELF_NCH doubles a node, by grid slot) across a seam: the ghost layer's go up and the
+ * owner adds them after its own, then the owner's whole sums come back down (halo_sum's and halo_back's order), so
+ * every node a rank's particles read holds the sums of every rank's particles. */
+hearth_status mpm_ranks_self_halo(hearth_scene *s, double *sums, hearth_error *err) {
+    mpm_state *m = s->mpm;
+    if (!slabs_live(m)) return HEARTH_OK;
+    struct mpm_slabs *sl = m->slabs;
+    const grid *g = &s->g;
+    const int up = ghost_layer(m), me = ranks_rank();
+    const size_t sd = MPM_SELF_NCH * (size_t)g->nodes_per_block;
+    size_t n = 0, w = 0, r = 0;
+    if (up >= 0) FOR_LAYER(g, sl->axis, up, id, k, { n += m->mark[id] & 1 ? sd : 0; });
+    hearth_status st = halo_reserve(sl, n, err);
+    if (st) return st;
+    if (up >= 0)
+        FOR_LAYER(g, sl->axis, up, id, k, {
+            if (m->mark[id] & 1) {
+                memcpy(sl->halo + w, sums + (size_t)g->slot[id] * sd, sd * sizeof(double));
+                w += sd;
+            }
+        });
+    const void *lo, *hi;
+    size_t nlo, nhi;
+    if ((st = ranks_neighbours(NULL, 0, sl->halo, n * sizeof(double), &lo, &nlo, &hi, &nhi, err))) return st;
+    if (me > 0) {
+        const double *src = lo;
+        FOR_LAYER(g, sl->axis, sl->cut[me], id, k, {
+            if (sl->lowmark[k]) {
+                double *b = sums + (size_t)g->slot[id] * sd;
+                for (size_t j = 0; j < sd; j++) b[j] += src[r + j];
+                r += sd;
+            }
+        });
+        HEARTH_ASSERT(r * sizeof(double) == nlo);
+    }
+    n = w = r = 0;
+    if (me > 0) FOR_LAYER(g, sl->axis, sl->cut[me], id, k, { n += sl->lowmark[k] ? sd : 0; });
+    if ((st = halo_reserve(sl, n, err))) return st;
+    if (me > 0)
+        FOR_LAYER(g, sl->axis, sl->cut[me], id, k, {
+            if (sl->lowmark[k]) {
+                memcpy(sl->halo + w, sums + (size_t)g->slot[id] * sd, sd * sizeof(double));
+                w += sd;
+            }
+        });
+    if ((st = ranks_neighbours(sl->halo, n * sizeof(double), NULL, 0, &lo, &nlo, &hi, &nhi, err))) return st;
+    if (up >= 0) {
+        const double *src = hi;
+        FOR_LAYER(g, sl->axis, up, id, k, {
+            if (m->mark[id] & 1) {
+                memcpy(sums + (size_t)g->slot[id] * sd, src + r, sd * sizeof(double));
+                r += sd;
+            }
+        });
+        HEARTH_ASSERT(r * sizeof(double) == nhi);
+    }
+    return HEARTH_OK;
+}
+
 /* One rank's part of the step report, holding only what the combination
  * reads, each at the value a rank-order fold from an empty report would
  * leave (no particle: -1 and 0; a non-positive maximum: 0), so that
@@ -746,6 +805,7 @@ static rank_report report_leaf(const step_report *q, double vcol, long clamped, 
     t->kinetic = q->kinetic, t->mass = q->mass, t->out_of_domain = q->out_of_domain;
     t->c_max = q->c_max > 0 ? q->c_max : 0;
     t->nu_max = q->nu_max > 0 ? q->nu_max : 0;
+    t->self_max = q->self_max > 0 ? q->self_max : 0;
     return l;
 }
 
@@ -767,6 +827,7 @@ static void report_combine(void *acc, const void *next, void *ctx) {
     t->out_of_domain += q->out_of_domain;
     if (q->c_max > t->c_max) t->c_max = q->c_max;
     if (q->nu_max > t->nu_max) t->nu_max = q->nu_max;
+    if (q->self_max > t->self_max) t->self_max = q->self_max;
     a->n += b->n, a->blocks += b->blocks, a->clamped += b->clamped;
     if (b->vcol > a->vcol) a->vcol = b->vcol;
 }
