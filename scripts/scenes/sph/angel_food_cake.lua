@@ -15,11 +15,18 @@
 -- volume it gained. The thesis does the same by hand (§4.5: rho_f raised,
 -- mu_e and lambda lowered after baking); turning the pan over is what a baker
 -- does to stop it, not modelled. Measured (2D default, the per-area heat
--- below, the mirror-symmetric seed below): relative volume 2.25 at the end of
--- baking (t = 1.5 s), 2.00 at t = 3.5 s (mean 82 degC) and still falling;
--- four particles, two from each side, are thrown onto the tube's top by 1.4
--- s; the halves' mean temperatures agree to 4e-13 degC throughout. With the
--- old asymmetric seed it was 2.22 and 1.95 (mean 78 degC), the right half
+-- below on the cake's outer surface, sph_outer.c): relative volume 2.33 at
+-- the end of baking (t = 1.5 s), 1.87 at t = 3.5 s (mean 29 degC); the crumb
+-- is the coolest band while it bakes (bands.csv: 104 degC against the top's
+-- 137 and the bottom's 132 at 0.5 s, at dx 3 and 2 mm alike), though the
+-- whole cake passes 150 degC by 1 s (no water, so no boiling plateau holds the
+-- crumb near 100 degC, and the crumb browns); a few particles are thrown onto
+-- the tube's top; the halves' mean temperatures agree to 6e-12 degC
+-- throughout. Until the oven's heat entered at the outer surface (#18) it
+-- entered at the colour field's surface particles, which in the risen cake
+-- were batter rows inside it and not its top: 2.25 and 2.00 (mean 82 degC),
+-- the crumb band 17 degC hotter than the top at 0.5 s, and the mean 16.6
+-- degC apart between dx 3 and 2 mm. With the old asymmetric seed it was 2.22 and 1.95 (mean 78 degC), the right half
 -- 13.7 degC hotter than the left at 1 s. Before the time step counted the
 -- stiffness eq. 3.52 gives the batter (sph.c, signal_speed) it was 2.05 and
 -- 1.61 (mean 63 degC), the cooled crumb full of holes, and the scene needed
@@ -28,7 +35,9 @@
 -- heat (6e8, 0.3x this) it was 1.95 and 1.72.
 -- Writes volume.csv (relative volume over time, from a density slice, with
 -- the mean temperature, and the mean temperatures of the particles left and
--- right of the tube's axis and their difference) and browning and
+-- right of the tube's axis and their difference), bands.csv (the mean
+-- temperatures of the top, crumb and bottom bands away from the pan's walls,
+-- sph_cake_crumb_coolest) and browning and
 -- temperature frames (the browning index of Zanoni et al. 1995 from
 -- temperature history; browning_scale = 1600 lets the 1.5 s bake stand for
 -- 40 minutes).
