@@ -15,8 +15,9 @@
  * Here the body is the union of discs (balls) of radius h_i / 2 about the
  * particles: two particles within the support of each other overlap, so the
  * body is whole wherever the kernel joins its particles. A grid of cells
- * (half the smallest rest spacing, coarser when the box would need more
- * than OUTER_MAX_CELLS) marks the cells whose centres lie inside, floods the
+ * (half the smallest rest spacing; coarser when the box would need more
+ * than OUTER_MAX_CELLS of them, and past h/4 the colour field's flag
+ * instead) marks the cells whose centres lie inside, floods the
  * empty cells from the grid's border (the padding makes the border empty),
  * and a particle is on the outer surface when an outside cell lies within
  * h_i / 2 plus one cell's diagonal of it. Gaps enclosed by the body (the
@@ -26,14 +27,15 @@
  * a flood fill of the kind used to tell a body's outside from its cavities
  * (as in the marker-and-cell method's free-surface marking, Harlow & Welch
  * 1965, Phys. Fluids 8:2182). With a periodic axis the colour field's
- * flag is kept (a flood across the wrap is not built). */
+ * flag is kept (a flood across the wrap is not built). With adaptive h
+ * (eq. 3.54) the discs follow each particle's h. */
 #include <math.h>
 #include <stdint.h>
 
 #include "alloc.h"
 #include "sph_state.h"
 
-#define OUTER_MAX_CELLS 4000000
+#define OUTER_MAX_CELLS 8000000 /* 40 MB of scratch at most: a byte and a queue entry per cell */
 
 void sph_outer_free(struct sph_state *st) {
     mem_free(st->og, st->og_cap);
@@ -50,7 +52,7 @@ void sph_outer_surface(hearth_scene *s) {
     const double *x = c.x;
     if (n <= 0) return;
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, spmin = INFINITY,
-           hmax = 0;
+           hmax = 0, hmin = INFINITY;
     for (int i = 0; i < n; i++) {
         for (int a = 0; a < dim; a++) {
             lo[a] = fmin(lo[a], x[3 * i + a]);
@@ -58,6 +60,7 @@ void sph_outer_surface(hearth_scene *s) {
         }
         spmin = fmin(spmin, st->sp[i]);
         hmax = fmax(hmax, st->h[i]);
+        hmin = fmin(hmin, st->h[i]);
     }
     double cs = 0.5 * spmin;
     int ng[3] = {1, 1, 1};
@@ -72,7 +75,9 @@ void sph_outer_surface(hearth_scene *s) {
         if (cells <= OUTER_MAX_CELLS) break;
         cs *= 1.25;
     }
-    if (!(isfinite(cs) && cs > 0) || st->cells.anyper) goto colour;
+    /* cells coarser than h/2 over 2 (h/2 the discs' radius) no longer close the lens between two joined
+     * particles' discs reliably: then, and with a periodic axis, the colour field's flag */
+    if (!(isfinite(cs) && cs > 0) || cs > 0.25 * hmin || st->cells.anyper) goto colour;
     if (cells > st->og_cap) {
         sph_outer_free(st);
         st->og = mem_alloc(cells);
