@@ -62,22 +62,29 @@ void sph_outer_surface(hearth_scene *s) {
         hmax = fmax(hmax, st->h[i]);
         hmin = fmin(hmin, st->h[i]);
     }
+    /* cells coarser than h/2 over 2 (h/2 the discs' radius) no longer close the lens between two joined
+     * particles' discs reliably: then, with a periodic axis, and with a position or h not finite, the colour
+     * field's flag */
     double cs = 0.5 * spmin;
     int ng[3] = {1, 1, 1};
     size_t cells = 0;
+    if (st->cells.anyper || !(isfinite(cs) && cs > 0 && isfinite(hmax))) goto colour;
+    for (int a = 0; a < dim; a++)
+        if (!isfinite(hi[a] - lo[a])) goto colour;
     for (;;) {
-        cells = 1;
+        if (cs > 0.25 * hmin) goto colour;
+        double count = 1;
         for (int a = 0; a < dim; a++) {
-            const double pad = 0.5 * hmax + 2 * cs;
-            ng[a] = (int)ceil((hi[a] - lo[a] + 2 * pad) / cs) + 1;
-            cells *= (size_t)ng[a];
+            const double pad = 0.5 * hmax + 2 * cs, k = ceil((hi[a] - lo[a] + 2 * pad) / cs) + 1;
+            count *= k;
+            ng[a] = k < 1e9 ? (int)k : 1000000000;
         }
-        if (cells <= OUTER_MAX_CELLS) break;
+        if (count <= OUTER_MAX_CELLS) {
+            cells = (size_t)count;
+            break;
+        }
         cs *= 1.25;
     }
-    /* cells coarser than h/2 over 2 (h/2 the discs' radius) no longer close the lens between two joined
-     * particles' discs reliably: then, and with a periodic axis, the colour field's flag */
-    if (!(isfinite(cs) && cs > 0) || cs > 0.25 * hmin || st->cells.anyper) goto colour;
     if (cells > st->og_cap) {
         sph_outer_free(st);
         st->og = mem_alloc(cells);
