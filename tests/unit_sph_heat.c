@@ -763,8 +763,87 @@ TEST(sph_gas_sound_speed_limits_dt) {
     CHECK(d0 > 2 * limit && dc < 0.5 * cg); /* the soft dough alone: its own, slower wave */
 }
 
+/* Which particles eq. 3.42 heats (sph_outer.c, #18). Two 2D bodies of rest
+ * spacing dx 1 mm (h 2.4 mm), one step, no gravity:
+ *  - a 40 x 30 mm block around a closed 10 x 10 mm cavity: the particles
+ *    within dx of its outline are all outer, and none deeper than that (the
+ *    cavity's walls take no oven heat: the body encloses them);
+ *  - a 40 x 10 mm block under a layer of particles 2 dx apart (their rest
+ *    volume still dx^2, as the angel food cake's expanded bubbles are): the
+ *    layer's top row is outer, the dense block's top row under it is not.
+ * The colour field's flag (st->surf, eq. 3.29), which eq. 3.42 heated before,
+ * is printed beside: it marked the cavity's walls (40 particles) and missed 28
+ * of the second body's 86 outline particles (there it did not mark the dense
+ * row; in the risen cake it marked such rows, whose layers are not this
+ * regular). */
+static hearth_scene *outer_case(int sparse, double dx) {
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.08, 0.08, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[1] = 0;
+    d.oven_temperature = 180;
+    d.oven_beta = 0;
+    d.sph.heat_ext = 1;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    if (!s) return NULL;
+    const int m = newtonian(s, 1000, 1e4, 1.0);
+    int ok = m >= 0;
+    if (!sparse) { /* four boxes round the cavity [0.035, 0.045] x [0.03, 0.04] */
+        ok = ok && box_body(s, m, 0.02, 0.02, 0.06, 0.03, 0, 26) >= 0 && box_body(s, m, 0.02, 0.04, 0.06, 0.05, 0, 26) >= 0;
+        ok = ok && box_body(s, m, 0.02, 0.03, 0.035, 0.04, 0, 26) >= 0 && box_body(s, m, 0.045, 0.03, 0.06, 0.04, 0, 26) >= 0;
+    } else { /* the dense block, and a 20 x 5 mm block stretched twofold about (0.02, 0.03) into the layer */
+        ok = ok && box_body(s, m, 0.02, 0.02, 0.06, 0.03, 0, 26) >= 0;
+        const int n0 = s->ps.n;
+        ok = ok && box_body(s, m, 0.02, 0.03, 0.04, 0.035, 0, 26) >= 0;
+        double *x = pcold(&s->ps, PC_X);
+        for (int i = n0; i < s->ps.n; i++) x[3 * i] = 0.02 + 2 * (x[3 * i] - 0.02), x[3 * i + 1] = 0.03 + 2 * (x[3 * i + 1] - 0.03);
+    }
+    hearth_error err;
+    if (!ok || hearth_scene_step(s, 1, &err) != HEARTH_OK) {
+        hearth_scene_destroy(s);
+        return NULL;
+    }
+    return s;
+}
+
+TEST(sph_oven_heats_outer_surface_only) {
+    const double dx = 0.001;
+    for (int sparse = 0; sparse < 2; sparse++) {
+        hearth_scene *s = outer_case(sparse, dx);
+        CHECK(s != NULL);
+        if (!s) return;
+        const double *x = hearth_scene_positions(s), *outer = sph_particle_values(s, "outer"),
+                     *surf = sph_particle_values(s, "surface");
+        CHECK(outer != NULL && surf != NULL);
+        if (!outer || !surf) {
+            hearth_scene_destroy(s);
+            return;
+        }
+        int want = 0, got = 0, wrong = 0, cs_want = 0, cs_wrong = 0;
+        for (int i = 0; i < s->ps.n; i++) {
+            const double px = x[3 * i], py = x[3 * i + 1];
+            int should, shouldnt;
+            if (!sparse) { /* distance to the outline [0.02, 0.06] x [0.02, 0.05] */
+                const double e = fmin(fmin(px - 0.02, 0.06 - px), fmin(py - 0.02, 0.05 - py));
+                should = e < dx, shouldnt = e > 1.5 * dx;
+            } else { /* the layer's top row (y 0.039) and the outline's sides and base; not the dense top row inside */
+                const int inside_x = px > 0.02 + 3 * dx && px < 0.06 - 3 * dx;
+                should = py > 0.038 || py < 0.02 + dx || px < 0.02 + 1.2 * dx || px > 0.06 - 1.2 * dx;
+                shouldnt = inside_x && fabs(py - 0.0295) < 0.1 * dx;
+            }
+            want += should, got += should && outer[i] > 0.5, wrong += shouldnt && outer[i] > 0.5;
+            cs_want += should && surf[i] > 0.5, cs_wrong += shouldnt && surf[i] > 0.5;
+        }
+        printf("%s: outer surface %d of the %d particles that should be, %d that should not; the colour field %d and %d\n",
+               sparse ? "dense block under a layer 2 dx apart" : "block round a closed cavity", got, want, wrong, cs_want,
+               cs_wrong);
+        CHECK(want > 0 && got == want && wrong == 0);
+        hearth_scene_destroy(s);
+    }
+}
+
 TEST_MAIN(T(sph_heat_ext_flux_per_area), T(sph_heat_ext_slab_converges), T(sph_gas_law_clusters_reach_gas_volume),
           T(sph_heat_mirror_symmetric), T(sph_gas_law_films_keep_rest_spacing),
           T(sph_continuity_density_reads_no_skin), T(sph_bubble_gas_pressure_is_the_gas),
           T(sph_renormalised_density_reads_no_skin), T(sph_gas_law_refusals_word_for_word),
-          T(sph_gas_law_bubble_near_cap_within_its_gas), T(sph_gas_law_own_gas_one_ratio), T(sph_gas_sound_speed_limits_dt))
+          T(sph_gas_law_bubble_near_cap_within_its_gas), T(sph_gas_law_own_gas_one_ratio), T(sph_gas_sound_speed_limits_dt),
+          T(sph_oven_heats_outer_surface_only))

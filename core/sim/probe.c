@@ -191,6 +191,13 @@ static int carries(const hearth_scene *s, int f, int i) {
 static void particle_value(const hearth_scene *s, int f, int i, double *out, double *state_copy) {
     const particles *ps = &s->ps;
     const double *v = pcold(ps, PC_V) + 3 * i, J = particles_J(ps, i);
+    if (f == F_BOUNDARY) { /* SPH: the particles on the body's outer surface, where eq. 3.42's oven heat enters */
+        const double *sv = solver_values(s, "outer");
+        if (sv) {
+            out[0] = sv[i];
+            return;
+        }
+    }
     if (f == F_DENSITY || f == F_PRESSURE) { /* SPH: the summed density (eq. 3.13) and the Tait pressure that move it */
         const double *sv = solver_values(s, f == F_DENSITY ? "density" : "pressure");
         if (sv) {

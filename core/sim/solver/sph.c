@@ -31,8 +31,11 @@
  *                        (sph_forces.c)
  *   sph_hourglass        with sph.hourglass, the pairs' motion (3.27) does not
  *                        describe damped, implicitly (sph_hourglass.c)
+ *   sph_outer_surface    the body's outer surface particles (sph_outer.c: a
+ *                        flood fill; the colour field of 3.29 misses a risen
+ *                        cake's top and marks rows inside it)
  *   sph_heat_rates       heat (sph_heat.c): internal (3.45-3.46), external
- *                        at surface particles (3.42), the oven's Robin flux
+ *                        at outer surface particles (3.42), the oven's Robin flux
  *                        and heated colliders' contact beta (as MPM)
  *   sph_water_rates      water as MPM's (Ding eq. 8, 22; sph_water.c)
  *   sph_xsph             XSPH (3.34 with the tuner of 4.4; sph_xsph.c)
@@ -92,7 +95,7 @@
  * plastic_J for a material that needs it; no saturation: a material that needs
  * it is refused when added), water (sph_water.c: MPM's law and column, its
  * evaporation and latent sink), colliders, probes, outputs, the oven's Robin flux
- * and heated colliders' contact beta (each surface particle carries its face
+ * and heated colliders' contact beta (each outer surface particle carries its face
  * V^((d-1)/d) of oven surface, a particle within its spacing of a heated
  * collider the same face of contact; `sph_oven_robin`), a dried crust's
  * dry_conductivity and dry_specific_heat (sph_heat.c: they scale `sph.heat_int`
@@ -182,7 +185,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
 #define ARRAYS(X)                                                                                                      \
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(surf, 1) X(rhof, 1)                  \
         X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9) X(vc, 1)  \
-        X(vr, 1)
+        X(vr, 1) X(outer, 1)
 
 /* Frees the per-particle columns (ARRAYS, key, order) of a set sized for cap
  * particles: sph_free's set, and ensure's old set or the new one it could not
@@ -208,6 +211,7 @@ static void sph_free(hearth_scene *s) {
     mem_free(st->visc_index, sizeof(int) * (size_t)st->visc_cap);
     sph_water_free(st);
     sph_hourglass_free(st);
+    sph_outer_free(st);
     mem_free(st, sizeof *st);
     s->sph = NULL;
 }
@@ -708,6 +712,7 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     sph_artificial_stress(s);
     sph_forces(s, dt);
     sph_hourglass(s, dt);
+    sph_outer_surface(s); /* the oven's heat enters there (sph_outer.c) */
     sph_heat_rates(s); /* reads st->vc and st->sp (sph_kinematics) */
     if (water_active(s)) sph_water_rates(s); /* after the heat: the latent sink takes from st->dT */
     sph_xsph(s);
@@ -726,6 +731,7 @@ const double *sph_particle_values(const hearth_scene *s, const char *which) {
     if (!strcmp(which, "pressure")) return st->prs;
     if (!strcmp(which, "h")) return st->h;
     if (!strcmp(which, "surface")) return st->surf;
+    if (!strcmp(which, "outer")) return st->outer;
     return NULL;
 }
 

@@ -18,7 +18,8 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err);
 
 /// Per-particle results of the last step, in the scene's current particle
 /// order; NULL before the first step or after particles were added/removed.
-/// which: "density", "pressure", "h", "surface" (0/1).
+/// which: "density", "pressure", "h", "surface" (0/1, the colour field's), "outer" (0/1, the
+/// body's outer surface, where the oven heats: sph_outer.c).
 const double *sph_particle_values(const hearth_scene *s, const char *which);
 
 /// A bubble particle's gas volume V_b at temperature T (degC) for its initial

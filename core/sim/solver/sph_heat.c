@@ -12,8 +12,12 @@
 #include "water.h"
 
 /* Per particle: internal heat (eq. 3.45-3.46) over the neighbours, external
- * heat at surface particles (eq. 3.42 per unit area of surface, not as printed:
- * see there) and the Robin exchange.
+ * heat at the body's outer surface particles (eq. 3.42 per unit area of
+ * surface, not as printed: see there) and the Robin exchange. Which particles
+ * are on the outer surface is sph_outer.c's (st->outer), not the colour
+ * field's flag (st->surf): in the risen angel food cake (#18) the colour
+ * field missed its top and marked batter rows inside it, which took 46% of
+ * the oven's heat and made the crumb hotter than the crust.
  *
  * Eq. 3.45's Laplacian is eq. 3.8's kernel, the viscous term's, and had its
  * bias: summed over a resting lattice at h = 2.4 spacings it is 5.7% strong,
@@ -107,7 +111,7 @@ void sph_heat_rates(hearth_scene *s) {
                 }
                 dTi += o->heat_int * 4 * m[j] / ((ri + rj) * (ri + rj)) * (T[j] - T[i]) * lv * kij; /* eq. 3.45-3.46 */
             }
-        if (o->heat_ext > 0 && st->surf[i]) { /* eq. 3.42 at surface particles, per unit area (below) */
+        if (o->heat_ext > 0 && st->outer[i]) { /* eq. 3.42 at surface particles, per unit area (below) */
             double Tout = Text;
             for (int q = 0; q < s->ncol; q++) { /* a heated collider within h is the outside instead */
                 const collider *cl = &s->cols[q];
@@ -148,7 +152,7 @@ void sph_heat_rates(hearth_scene *s) {
              * block's outline. */
             const double ci = dry ? ai : msi->core[CP_SPECIFIC_HEAT], Vr = m[i] / st->rho0[i];
             const double sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
-            double coef = beta_oven > 0 && st->surf[i] ? face * beta_oven : 0.0, Tr = Text;
+            double coef = beta_oven > 0 && st->outer[i] ? face * beta_oven : 0.0, Tr = Text;
             for (int q = 0; q < s->ncol; q++) {
                 const collider *cl = &s->cols[q];
                 if (isnan(cl->temperature) || !(cl->beta > 0) || !collider_near(cl, x + 3 * i)) continue;
@@ -159,7 +163,7 @@ void sph_heat_rates(hearth_scene *s) {
             }
             if (coef > 0 && ci > 0) dTi += coef * (Tr - T[i]) / (m[i] * ci);
             /* the oven's part (W), for latent_heat's ledger: coef (Tr - T) is the sum of its parts */
-            if (ledger) st->qo[i] = beta_oven > 0 && st->surf[i] ? face * beta_oven * (Text - T[i]) : 0.0;
+            if (ledger) st->qo[i] = beta_oven > 0 && st->outer[i] ? face * beta_oven * (Text - T[i]) : 0.0;
         }
         st->dT[i] = dTi;
     }

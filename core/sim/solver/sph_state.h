@@ -9,6 +9,7 @@
 #include "sph.h"
 #include "sph_neighbours.h"
 
+#include <stdint.h>
 #include <string.h>
 
 #include "physics_constants.h"
@@ -62,6 +63,11 @@ struct sph_state {
     int visc_cap;
     sph_wall_motion *walls; /* moving fixed bodies (hearth_scene_body_motion), nwalls of walls_cap */
     int nwalls, walls_cap;
+    /* sph_outer.c: the outer-surface flag per particle (in ARRAYS) and its grid's scratch, og_cap cells */
+    double *outer;
+    uint8_t *og;
+    int *oq;
+    size_t og_cap;
     double *hg; /* sph_hourglass.c's scratch, made only with sph.hourglass (sph_hourglass_ensure; hg_cap particles) */
     int hg_cap;
 };
@@ -210,6 +216,9 @@ void sph_xsph(hearth_scene *s);
 void sph_hourglass(hearth_scene *s, double dt);
 hearth_status sph_hourglass_ensure(hearth_scene *s, int n, hearth_error *err);
 void sph_hourglass_free(struct sph_state *st);
+/// The particles on the body's outer surface into st->outer (sph_outer.c): where eq. 3.42's oven heat enters.
+void sph_outer_surface(hearth_scene *s);
+void sph_outer_free(struct sph_state *st);
 int sph_hourglass_doubles(const hearth_scene *s);
 /// A bubble's stiffness (Pa) at T (degC): its gas's own P_a - P_v(T) with
 /// sph.gas_pressure = P_a, else the dough's Tait B.

@@ -140,7 +140,7 @@ void sph_water_rates(hearth_scene *s) {
             dw += rw * (0.5 * (D[i] + D[j])) * (4 * (m[i] * m[j]) / (rs * rs)) * lv * (sw[j] - sw[i]);
         }
         double e = 0;
-        if (st->surf[i] && ms->core[CP_EVAPORATION] > 0) {
+        if (st->outer[i] && ms->core[CP_EVAPORATION] > 0) {
             const double Vr = m[i] / st->rho0[i], sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
             const double th = (T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN;
             e = water_evaporation(ms->core[CP_EVAPORATION], ms->core[CP_WATER_DIFFUSIVITY], rwi, th, sw[i], s_amb, 0.5 * sp,

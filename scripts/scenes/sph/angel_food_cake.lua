@@ -15,11 +15,18 @@
 -- volume it gained. The thesis does the same by hand (§4.5: rho_f raised,
 -- mu_e and lambda lowered after baking); turning the pan over is what a baker
 -- does to stop it, not modelled. Measured (2D default, the per-area heat
--- below, the mirror-symmetric seed below): relative volume 2.25 at the end of
--- baking (t = 1.5 s), 2.00 at t = 3.5 s (mean 82 degC) and still falling;
--- four particles, two from each side, are thrown onto the tube's top by 1.4
--- s; the halves' mean temperatures agree to 4e-13 degC throughout. With the
--- old asymmetric seed it was 2.22 and 1.95 (mean 78 degC), the right half
+-- below on the cake's outer surface, sph_outer.c): relative volume 2.33 at
+-- the end of baking (t = 1.5 s), 1.87 at t = 3.5 s (mean 29 degC); the crumb
+-- is the coolest band while it bakes (bands.csv: 104 degC against the top's
+-- 137 and the bottom's 132 at 0.5 s, at dx 3 and 2 mm alike), though the
+-- whole cake passes 150 degC by 1 s (no water, so no boiling plateau holds the
+-- crumb near 100 degC, and the crumb browns); a few particles are thrown onto
+-- the tube's top; the halves' mean temperatures agree to 6e-12 degC
+-- throughout. Until the oven's heat entered at the outer surface (#18) it
+-- entered at the colour field's surface particles, which in the risen cake
+-- were batter rows inside it and not its top: 2.25 and 2.00 (mean 82 degC),
+-- the crumb band 17 degC hotter than the top at 0.5 s, and the mean 16.6
+-- degC apart between dx 3 and 2 mm. With the old asymmetric seed it was 2.22 and 1.95 (mean 78 degC), the right half
 -- 13.7 degC hotter than the left at 1 s. Before the time step counted the
 -- stiffness eq. 3.52 gives the batter (sph.c, signal_speed) it was 2.05 and
 -- 1.61 (mean 63 degC), the cooled crumb full of holes, and the scene needed
@@ -28,7 +35,9 @@
 -- heat (6e8, 0.3x this) it was 1.95 and 1.72.
 -- Writes volume.csv (relative volume over time, from a density slice, with
 -- the mean temperature, and the mean temperatures of the particles left and
--- right of the tube's axis and their difference) and browning and
+-- right of the tube's axis and their difference), bands.csv (the mean
+-- temperatures of the top, crumb and bottom bands away from the pan's walls,
+-- sph_cake_crumb_coolest) and browning and
 -- temperature frames (the browning index of Zanoni et al. 1995 from
 -- temperature history; browning_scale = 1600 lets the 1.5 s bake stand for
 -- 40 minutes).
@@ -135,9 +144,33 @@ local function halves_T()
   end
   return sl / nl, sr / nr
 end
+-- mean temperatures of three bands of the cake (#18: the crumb had run hotter than its crust, eq. 3.42's oven
+-- heat entering rows inside the risen cake): the particles at least 10 mm from the pan's walls and tube, the
+-- bottom band within 10 mm of the floor, the top band within 10 mm of the highest of them, the crumb band 10 mm
+-- about their middle height (sph_cake_crumb_coolest)
+local function bands_T()
+  local p = s:particles { fields = { "x", "temperature" } }
+  local inner, ytop = {}, floor_y
+  for i = 1, p.n do
+    local x, y = p.x[3 * i - 2], p.x[3 * i - 1]
+    local d = math.min(math.abs(x - 0.02), math.abs(x - 0.18), math.abs(x - 0.092), math.abs(x - 0.108))
+    if d >= 0.01 and (x < 0.092 or x > 0.108) then
+      inner[#inner + 1] = i
+      ytop = math.max(ytop, y)
+    end
+  end
+  local mid, sum, cnt = 0.5 * (floor_y + ytop), { 0, 0, 0 }, { 0, 0, 0 }
+  for _, i in ipairs(inner) do
+    local y, T = p.x[3 * i - 1], p.temperature[i]
+    local b = (y > ytop - 0.01 and 1) or (math.abs(y - mid) < 0.005 and 2) or (y < floor_y + 0.01 and 3) or nil
+    if b then sum[b], cnt[b] = sum[b] + T, cnt[b] + 1 end
+  end
+  return sum[1] / cnt[1], sum[2] / cnt[2], sum[3] / cnt[3], ytop
+end
 s:step(1) -- the density slice needs one SPH step (before it the probe has no SPH density)
 local A0 = area()
 local csv = { "t,relative_volume,mean_temperature_C,phase,T_left_C,T_right_C,T_right_minus_left_C" }
+local bands = { "t,T_top_C,T_crumb_C,T_bottom_C,top_mm" }
 local cooling, peak = false, 1
 -- the frames' titles give the real time the scene's S = 1600 stands for, then the simulated seconds; browning
 -- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
@@ -155,6 +188,9 @@ s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "fr
     csv[#csv + 1] = ("%.4f,%.5f,%.2f,%s,%.4f,%.4f,%.3g"):format(f.t, rv, mean_T(), cooling and "cooling" or "baking",
       TL, TR, TR - TL)
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
+    local Tt, Tc, Tb, yt = bands_T()
+    bands[#bands + 1] = ("%.4f,%.3f,%.3f,%.3f,%.1f"):format(f.t, Tt, Tc, Tb, yt * 1e3)
+    h.write("bands.csv", table.concat(bands, "\n") .. "\n")
     -- one range for the whole run: the default one follows the oven, which
     -- the cooling sets to cool_to, and then every frame saturated at 26 degC
     f:png("temperature", "frames/temperature_%04d.png", { range = { math.min(T0, P.cool_to), P.oven }, time_scale = 1600 })

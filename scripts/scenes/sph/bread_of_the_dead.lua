@@ -12,7 +12,13 @@
 -- XSPH (eq. 3.34, 0.6 raw to 0.9 baked by eq. 4.4, the thesis's own
 -- stiffening knob) and Monaghan's artificial stress (sph.artificial_stress,
 -- 0.3) against the tensile instability of the stretched dough.
--- Measured (2D default, to t = 1.2 s, the per-area heat below): relative
+-- Measured (2D default, to t = 1.2 s, the per-area heat below on the body's
+-- outer surface, sph_outer.c, the tray's face included): relative volume
+-- 1.532, ball top 73.0 mm above the tray; by 1.1 s the two lowest knuckles
+-- have parted from the body and a slit has opened under the top ball (#18,
+-- docs/validation.md "The angel food cake heats from inside": with eq. 3.42
+-- at the colour field's surface particles the base's middle on the hot tray
+-- read about 90 degC in the 1.1 s frame, now about 140). Before that: relative
 -- volume 1.244, ball top 63.5 mm above the tray (62.5 mm at the start, 55.0
 -- after settling; 1.230 and 63.0 mm before XSPH's pair epsilon and the time
 -- step of eq. 3.52's stiffness, sph.c), bones in place, one piece, the crust near 160 degC and the
