@@ -114,12 +114,21 @@
 local h = require "hearth"
 local lib = h.library.sph.bread_roll
 local sph = lib.sph
-local P = h.params { dx = 0.002, oven = 180, visc_scale = 100, mue_scale = 100, visc_cap = 300,
-  radius = 0.025, xsph0 = 0.05, heat_ext = 4.44, artificial_stress = sph.artificial_stress, tension = sph.tension,
-  gas_law = sph.gas_law, vapour = sph.bubble_vapour, vmax = sph.bubble_vmax or 4,
+-- the sph.* numbers in h.scene's ranges (hearth help scene); radius: the roll sits on the tray at 10 mm in the
+-- 0.12 m tall box
+local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" }, oven = h.number { 180, min = -273.15, max = 5000, unit = "degC", what = "the oven's temperature" },
+  visc_scale = h.number { 100, min = 0, what = "a factor on the dough's viscosity curve" },
+  mue_scale = h.number { 100, above = 0, what = "a factor on eq. 4.2's mu_e (mu_e_curve=table)" },
+  visc_cap = h.number { 300, min = 0, unit = "Pa s", what = "the cap on the scaled viscosity" },
+  radius = h.number { 0.025, above = 0, max = 0.055, unit = "m", what = "the roll's radius" }, xsph0 = h.number { 0.05, min = 0, max = 1, what = "XSPH's epsilon in the raw dough (h.scene's range)" },
+  heat_ext = h.number { 4.44, min = 0, max = 1000000.0, what = "the oven's heat transfer to the surface (sph.heat_ext)" },
+  artificial_stress = h.number { sph.artificial_stress, min = 0, max = 1, what = "Monaghan's epsilon against the tensile instability" }, tension = sph.tension,
+  gas_law = sph.gas_law, vapour = h.number { sph.bubble_vapour, min = 0, max = 0.99, what = "the bubbles' vapour share (sph.bubble_vapour)" },
+  vmax = h.number { sph.bubble_vmax or 4, min = 1, max = 100, what = "the bubbles' largest growth (sph.bubble_vmax)" },
   continuity = sph.continuity_density or false, renormalised = sph.renormalised_density or false,
-  gas_pressure = sph.gas_pressure or 0, dough_water = sph.dough_water or 0, own_squeeze = sph.own_squeeze or false,
-  hourglass = sph.hourglass or 0,
+  gas_pressure = h.number { sph.gas_pressure or 0, min = 0, max = 10000000.0, unit = "Pa", what = "the bubbles' gas pressure (sph.gas_pressure)" },
+  dough_water = h.number { sph.dough_water or 0, min = 0, max = 0.9, unit = "kg/kg", what = "CO2 dissolved in the dough's water (sph.dough_water)" }, own_squeeze = sph.own_squeeze or false,
+  hourglass = h.number { sph.hourglass or 0, min = 0, max = 100, what = "the hourglass control's coefficient (sph.hourglass)" },
   crust = false, dry = true, shift = 0, warm = 0,
   bubbles = h.choice { "even", even = "small bubbles spread evenly through the roll",
     centre = "one bubble at the centre, half the roll's radius",
