@@ -16,7 +16,7 @@ local P = h.params { blend = h.choice("nonlinear", h.blend_words),
   speed = h.number { 0.1, above = 0, unit = "m/s", what = "the celery's speed" },
   depth = h.number { 0.025, min = 0, unit = "m", what = "how deep the celery dips below the sauce's top" },
   rest = h.number { 0.2, min = 0, unit = "s", what = "the celery's rest at the bottom" },
-  until_t = h.number { 1.2, above = 0, unit = "s", what = "the run's simulated time" }, every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" }, png = true }
+  until_t = h.number { 1.2, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" }, every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" }, png = true }
 
 local material
 if P.sauce == "mix" then

@@ -19,7 +19,7 @@ local P = h.params {
   width = h.number { 0.01, above = 0, unit = "m", what = "the nozzle's slot width" },
   drop = h.number { 0.02, min = 0, unit = "m", what = "the nozzle exit's height above the plate" },
   emit = h.number { 0.6, above = 0, unit = "s", what = "the extrusion's time" },
-  until_t = h.number { 1.0, above = 0, unit = "s", what = "the run's simulated time" },
+  until_t = h.number { 1.0, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
   lane = h.number { 0.16, above = 0, unit = "m", what = "a lane's width" },
   every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" },
   -- scales kappa and mu (the paper's 1e6 and 1e5 Pa, section 4.6); von_mises_sauce's range of kappa: [1, 1e12] Pa

@@ -12,7 +12,7 @@ local P = h.params { blend = h.choice("nonlinear", h.blend_words), dx = h.number
   speed = h.number { 0.2, above = 0, unit = "m/s", what = "the extrusion speed at the nozzle's exit" },
   width = h.number { 0.01, above = 0, unit = "m", what = "the nozzle's slot width" },
   drop = h.number { 0.02, min = 0, unit = "m", what = "the nozzle exit's height above the plate" },
-  emit = h.number { 0.6, above = 0, unit = "s", what = "the extrusion's time" }, until_t = h.number { 1.0, above = 0, unit = "s", what = "the run's simulated time" },
+  emit = h.number { 0.6, above = 0, unit = "s", what = "the extrusion's time" }, until_t = h.number { 1.0, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
   -- the reach along the plate runs lane - 0.03 m - dx
   lane = h.number { 0.22, above = 0.03, unit = "m", what = "a lane's width" }, every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" }, png = true }
 
