@@ -139,8 +139,9 @@ end
 local function range_text(n)
   local lo = n.min and ("[" .. num(n.min)) or n.above and ("(" .. num(n.above)) or "(-inf"
   local hi = n.max and (num(n.max) .. "]") or n.below and (num(n.below) .. ")") or "inf)"
-  local r = (n.integer and "a whole number in " or "a number in ") .. lo .. ", " .. hi .. (n.unit and (" " .. n.unit) or "")
-  if n.min and n.min == n.max then r = "only " .. num(n.min) .. (n.unit and (" " .. n.unit) or "") end
+  local unit = n.unit and (" " .. n.unit) or ""
+  local r = (n.integer and "a whole number in " or "a number in ") .. lo .. ", " .. hi .. unit
+  if n.min and n.min == n.max then r = "only " .. num(n.min) .. unit end
   if n.also then
     local ks = {}
     for x in pairs(n.also) do ks[#ks + 1] = x end

@@ -3,7 +3,8 @@
 --   hearth run scripts/scenes/cutting.lua [--set gap=0.01]
 local h = require "hearth"
 -- the knife's slab is cut from the 0.4 m block's middle
-local P = h.params { gap = h.number { 0.01, above = 0, below = 0.4, unit = "m", what = "the width of the slab the knife removes" },
+local P = h.params {
+  gap = h.number { 0.01, above = 0, below = 0.4, unit = "m", what = "the width of the slab the knife removes" },
   at = h.number { 0.2, min = 0, unit = "s", what = "the cut's time" } }
 
 local s = h.scene { dim = 2, dx = 1 / 100, box = { { 0, 0 }, { 1, 0.5 } } }

@@ -108,7 +108,8 @@ local LEVER_RANGES = {
   -- Fig. 8's fat-melting and gelatinisation points
   soft_until = h.number { -1, above = 35, below = 70, unit = "degC", what = "the end of the soft spread",
     also = { [-1] = "Table 2's curve" } },
-  max_porosity = h.number { -1, above = 0, below = 1, what = "the gas porosity's cap", also = { [-1] = "the preset's" } } }
+  max_porosity = h.number { -1, above = 0, below = 1,
+    what = "the gas porosity's cap", also = { [-1] = "the preset's" } } }
 local defaults = { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
   dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 0, min = 0, unit = "s", what = "the bake's simulated time (0: the preset's own)" },

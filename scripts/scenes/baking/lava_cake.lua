@@ -25,10 +25,12 @@
 -- the plate, on its axis); once the slumped cake no longer reaches that point
 -- (from t ~ 1.3 s by default) the column reads -1, not a temperature.
 local h = require "hearth"
-local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" }, dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
+local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
+  dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
   bake = h.number { 0.8, min = 0, unit = "s", what = "the bake before the ring lifts" },
   lift = h.number { 0.4, above = 0, unit = "s", what = "the ring's lift" },
-  after = h.number { 0.6, min = 0, unit = "s", what = "the run after the lift" }, frames = h.number { 18, min = 1, integer = true, what = "PNG frames over the run" },
+  after = h.number { 0.6, min = 0, unit = "s", what = "the run after the lift" },
+  frames = h.number { 18, min = 1, integer = true, what = "PNG frames over the run" },
   kappa = h.number { 0.02, min = 0, what = "a factor on the batter's conductivity" },
   gas = h.number { 1, min = 0, what = "a factor on the batter's CO2 rate" },
   dt_max = h.number { 0, min = 0, unit = "s", what = "a cap on the time step (0: none)" } }

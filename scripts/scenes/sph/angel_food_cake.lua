@@ -45,11 +45,13 @@ local h = require "hearth"
 -- 3.50 in maxwell_sph's range [0, 100]; bubble_share: discs of 4 mm on a square pitch touch at pi / 4 (--set
 -- bubble_share=0 had left no spots, and h.union's raw Lua error was all a user saw)
 local P = h.params { dx = h.number { 0.003, above = 0, unit = "m", what = "the grid spacing" },
-  oven = h.number { 180, above = 26, max = 5000, unit = "degC", what = "the oven's temperature, above the batter's 26 degC" },
+  oven = h.number { 180, above = 26, max = 5000, unit = "degC",
+    what = "the oven's temperature, above the batter's 26 degC" },
   cool_to = h.number { 25, min = -273.15, max = 5000, unit = "degC", what = "the air it cools in after the bake" },
   bake = h.number { 1.5, min = 0, unit = "s", what = "the bake's time before it cools" },
   until_t = h.number { 3.5, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
-  bubble_share = h.number { 0.4, above = 0, max = math.pi / 4, what = "the share of the batter seeded as bubble particles" },
+  bubble_share = h.number { 0.4, above = 0, max = math.pi / 4,
+    what = "the share of the batter seeded as bubble particles" },
   foam = h.number { 1.0, min = 0, max = 100, what = "the batter's initial bubble volume V_b0 (eq. 3.50)" },
   xsph_cool = h.number { 0.05, min = 0, max = 1, what = "XSPH's epsilon in the cool batter (h.scene's range)" },
   xsph_hot = h.number { 0.3, min = 0, max = 1, what = "XSPH's epsilon in the hot batter (h.scene's range)" } }
