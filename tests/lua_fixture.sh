@@ -1,4 +1,4 @@
-# lua_fixture.sh, sourced by lua_test.sh and sandbox_test.sh with their
+# lua_fixture.sh, sourced by lua_test.sh, lua_params_test.sh and sandbox_test.sh with their
 # arguments (CASE HEARTH): the case's temp folder and the helpers both drivers use.
 # here: the driver's folder (png_check.py lives there); scenes: tests/lua/.
 here=$(cd "$(dirname "$0")" && pwd) # png_check.py lives here

@@ -1,5 +1,6 @@
 -- hearth.params: a scene's own knobs, which `hearth run SCENE.lua --set name=value` overrides:
--- h.params, h.choice (a word-valued parameter: its words and what each means), h.pass_params
+-- h.params, h.choice (a word-valued parameter: its words and what each means), h.number (a numeric
+-- parameter: its valid range, unit and meaning), h.pass_params
 -- (a wrapper script that runs a shipped scene) and the listing of `hearth run SCENE.lua --params`.
 -- Loaded by init.lua: (require "hearth.params")(h, core, {nearest = ..., sorted_keys = ..., scene_knobs = ...}).
 --
@@ -9,6 +10,11 @@
 -- marshmallow, cup_spoon.lua's `mixing` under a linear blend took any word). A word declared here is
 -- checked before the scene makes anything, and the message is the same everywhere: the scene file
 -- and line, the parameter, the word given, every valid word with what it means, and the nearest one.
+--
+-- Why one declaration of a number's range (#18, helper setrange): a numeric --set had none, so a value the scene
+-- could not use was refused (when at all) by whatever it became first ("box: hi[1] = 0.21 must exceed lo[1] =
+-- 0.21" for bread.lua's slit_width=0, "s:at: time = -1" for lava_cake.lua's bake=-1), or by a check each scene
+-- wrote by hand in its own words. h.number's range is checked with the words, before the scene makes anything.
 
 return function(h, core, u)
 local nearest, sorted_keys, scene_knobs = u.nearest, u.sorted_keys, u.scene_knobs
@@ -69,6 +75,97 @@ function h.choice(t, ...)
   return setmetatable({ default = t[1], words = words }, choice_mt)
 end
 
+local number_mt = { __name = "hearth.number" }
+local function is_number(v) return getmetatable(v) == number_mt end
+
+local function finite(x) return type(x) == "number" and x == x and x ~= math.huge and x ~= -math.huge end
+
+-- a number as the messages and the listing show it (%.10g: 0.1 stays 0.1; nan without a sign)
+local function num(x)
+  if x ~= x then return "nan" end
+  if math.type and math.type(x) == "integer" then return tostring(x) end
+  return ("%.10g"):format(x)
+end
+
+--- h.number{default, min = a, max = b, above = a, below = b, integer = true, unit = "m", what = "meaning",
+--- also = {[0] = "what 0 means"}}: a numeric parameter for h.params with its valid range. min and max are
+--- inclusive bounds, above and below strict ones (above = 0: > 0); either end may be left open (no bound).
+--- integer = true takes whole numbers only (counts: cups, frames). also lists values outside the range that
+--- the scene gives a meaning of its own (0: the preset's; -1: Table 2's curve). unit and what are shown in the
+--- refusal and in `hearth run SCENE.lua --params`; what is required (a short meaning), unit when the number has one.
+function h.number(t)
+  if type(t) ~= "table" then
+    error('h.number: expected {default, min = a, max = b, unit = "m", what = "what it means"}', 2)
+  end
+  local n = { default = t[1] }
+  for k, v in pairs(t) do
+    if k == 1 then
+    elseif k == "min" or k == "max" or k == "above" or k == "below" then
+      if not finite(v) then error(("h.number: %s = %s is not a finite number"):format(k, tostring(v)), 2) end
+      n[k] = v
+    elseif k == "integer" then
+      if type(v) ~= "boolean" then error("h.number: integer = true or false, got " .. tostring(v), 2) end
+      n.integer = v
+    elseif k == "unit" or k == "what" then
+      if type(v) ~= "string" or v == "" then error(("h.number: %s needs a non-empty string"):format(k), 2) end
+      n[k] = v
+    elseif k == "also" then
+      if type(v) ~= "table" then error('h.number: also = {[value] = "what it means"}, got ' .. type(v), 2) end
+      for x, m in pairs(v) do
+        if not finite(x) or type(m) ~= "string" or m == "" then
+          error('h.number: also = {[value] = "what it means"}: each key a finite number, each value a meaning', 2)
+        end
+      end
+      n.also = v
+    else
+      error(("h.number: unknown key %s (default first, then min, max, above, below, integer, unit, what, also)")
+        :format(tostring(k)), 2)
+    end
+  end
+  if n.min and n.above then error("h.number: give min or above, not both", 2) end
+  if n.max and n.below then error("h.number: give max or below, not both", 2) end
+  if not n.what then error('h.number: what = "a short meaning" is required (the refusal and --params show it)', 2) end
+  local lo, hi = n.min or n.above, n.max or n.below
+  if lo and hi and not (lo < hi or (lo == hi and n.min and n.max)) then
+    error(("h.number: the range from %s to %s is empty"):format(num(lo), num(hi)), 2)
+  end
+  if not (n.min or n.max or n.above or n.below or n.integer) then
+    error("h.number: give a range (min, max, above, below) or integer = true", 2)
+  end
+  return setmetatable(n, number_mt)
+end
+
+-- n's range as the messages and the listing show it: "a number in (0, 0.05] m", "a whole number in [1, 20]"
+local function range_text(n)
+  local lo = n.min and ("[" .. num(n.min)) or n.above and ("(" .. num(n.above)) or "(-inf"
+  local hi = n.max and (num(n.max) .. "]") or n.below and (num(n.below) .. ")") or "inf)"
+  local unit = n.unit and (" " .. n.unit) or ""
+  local r = (n.integer and "a whole number in " or "a number in ") .. lo .. ", " .. hi .. unit
+  if n.min and n.min == n.max then r = "only " .. num(n.min) .. unit end
+  if n.also then
+    local ks = {}
+    for x in pairs(n.also) do ks[#ks + 1] = x end
+    table.sort(ks)
+    for _, x in ipairs(ks) do r = r .. ("; or %s: %s"):format(num(x), n.also[x]) end
+  end
+  return r
+end
+
+local function in_range(n, x)
+  if not finite(x) then return false end
+  if n.also and n.also[x] then return true end
+  return not ((n.min and x < n.min) or (n.above and x <= n.above) or (n.max and x > n.max)
+    or (n.below and x >= n.below) or (n.integer and x ~= math.floor(x)))
+end
+
+-- A value x for the parameter `name` declared as number n: nil when valid, else the message (from `what`:
+-- "--set dx=-1", the scene's default, or the script that passed it) naming the parameter, its meaning, its range.
+local function number_error(n, name, x, what)
+  if in_range(n, x) then return nil end
+  return ("%s: %s (%s) takes %s, not %s"):format(what, name, n.what, range_text(n),
+    type(x) == "number" and num(x) or tostring(x))
+end
+
 -- The valid words of choice c, one a line, each with its description, sorted (the empty word first).
 local function word_lines(c, indent)
   local ks, wide = sorted_keys(c.words), 0
@@ -91,13 +188,16 @@ end
 
 -- The scene author's own mistake: a default that is not one of its words (a plain error, exit 1).
 local function check_default(c, name, level)
-  local m = word_error(c, name, c.default, ("h.params: %s's default"):format(name))
+  local what = ("h.params: %s's default"):format(name)
+  local m
+  if is_number(c) then m = number_error(c, name, c.default, what) else m = word_error(c, name, c.default, what) end
   if m then error(m, level + 1) end
 end
 
 -- `hearth run SCENE.lua --params`: the scene's parameters, their defaults and, for a choice, its words.
 local function value_text(v)
   if is_choice(v) then return q(v.default) end
+  if is_number(v) then return tostring(v.default) end
   if type(v) == "table" then
     local t = {}
     for i, x in ipairs(v) do t[i] = tostring(x) end
@@ -113,6 +213,7 @@ local function list_params(defaults)
     local v = defaults[k]
     lines[#lines + 1] = ("  %s = %s%s"):format(k, value_text(v), is_choice(v) and ", one of:" or "")
     if is_choice(v) then lines[#lines + 1] = word_lines(v, "      ") end
+    if is_number(v) then lines[#lines + 1] = ("      %s: %s"):format(v.what, range_text(v)) end
   end
   h._list_knobs(lines, defaults)
 end
@@ -134,13 +235,15 @@ end
 --- Named defaults that `hearth run scene.lua --set name=value` overrides.
 --- A default that is a list of numbers takes `--set name=1,2.5,3`; a boolean `true` or `false`;
 --- h.choice{"default", word = "what it means", ...} one of its words (refused otherwise, before the
---- scene makes anything, naming the scene file, the parameter, every word and the nearest).
+--- scene makes anything, naming the scene file, the parameter, every word and the nearest);
+--- h.number{default, min = , max = , unit = , what = , ...} a number in its range (refused otherwise, the same way,
+--- naming the parameter, what it means, the value and the range with its unit).
 function h.params(defaults)
   if type(defaults) ~= "table" then error("h.params: expected a table of name = default", 2) end
   local P = {}
   h._param_names = {}
   for k, v in pairs(defaults) do
-    if is_choice(v) then
+    if is_choice(v) or is_number(v) then
       check_default(v, k, 2)
       P[k] = v.default
     else
@@ -159,6 +262,11 @@ function h.params(defaults)
     end
     if type(d) == "number" then
       P[k] = tonumber(v) or usage_error(("--set %s=%s: expected a number"):format(k, v), 2)
+    elseif is_number(d) then
+      local x = tonumber(v)
+      local m = number_error(d, k, x or v, ("--set %s=%s"):format(k, v))
+      if m then usage_error(m, 2) end
+      P[k] = x
     elseif is_choice(d) then
       local m = word_error(d, k, v, ("--set %s=%s"):format(k, v))
       if m then usage_error(m, 2) end
@@ -183,8 +291,8 @@ end
 --- For a script that runs a shipped scene (dofile) after parsing its own h.params P, a superset of the scene's
 --- names so that every --set reaches it: from here on the scene's h.params returns P's value of each name it
 --- declares, and its own default for a name P does not know (a parameter the scene gained after the script).
---- The scene's h.choice words still hold: a word of P that the scene does not take is refused there, naming the
---- scene's file and line (a usage error when --set gave it, else the script's mistake).
+--- The scene's h.choice words and h.number ranges still hold: a value of P that the scene does not take is refused
+--- there, naming the scene's file and line (a usage error when --set gave it, else the script's mistake).
 function h.pass_params(P)
   if type(P) ~= "table" then error("h.pass_params: expected the table h.params returned, got " .. type(P), 2) end
   h.params = function(defaults)
@@ -203,6 +311,18 @@ function h.pass_params(P)
           if m and given then usage_error(m, 2) elseif m then error(m, 2) end
         end
         Q[k] = w
+      elseif is_number(v) then
+        check_default(v, k, 2)
+        local x = P[k]
+        if x == nil then
+          x = v.default
+        else
+          local given = core.options().sets[k]
+          local m = number_error(v, k, x, given and ("--set %s=%s"):format(k, given)
+            or ("%s = %s, passed by the script's h.pass_params"):format(k, tostring(x)))
+          if m and given then usage_error(m, 2) elseif m then error(m, 2) end
+        end
+        Q[k] = x
       elseif P[k] == nil then
         Q[k] = v
       else

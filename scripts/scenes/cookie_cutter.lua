@@ -2,7 +2,10 @@
 -- dropped onto a tray. --set mask=star for the star, --set dim=3 for an extruded cookie.
 local h = require "hearth"
 local P = h.params { mask = h.choice { "gingerbread", gingerbread = "assets/masks/gingerbread.png: a gingerbread man",
-  star = "assets/masks/star.png: a five-pointed star" }, dim = 2, thickness = 0.02 }
+  star = "assets/masks/star.png: a five-pointed star" },
+  dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
+  -- 3D: the cutter's extrusion about the box's middle depth (0.2 m deep)
+  thickness = h.number { 0.02, above = 0, below = 0.2, unit = "m", what = "the cutter's thickness in 3D" } }
 local d3 = P.dim == 3
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 

@@ -2,7 +2,10 @@
 -- thin slab (a removal event), and the two halves are pushed apart.
 --   hearth run scripts/scenes/cutting.lua [--set gap=0.01]
 local h = require "hearth"
-local P = h.params { gap = 0.01, at = 0.2 }
+-- the knife's slab is cut from the 0.4 m block's middle
+local P = h.params {
+  gap = h.number { 0.01, above = 0, below = 0.4, unit = "m", what = "the width of the slab the knife removes" },
+  at = h.number { 0.2, min = 0, unit = "s", what = "the cut's time" } }
 
 local s = h.scene { dim = 2, dx = 1 / 100, box = { { 0, 0 }, { 1, 0.5 } } }
 local dough = h.material("elastic", { E = 3e4, nu = 0.3, density = 1100 })

@@ -2,7 +2,11 @@
 --   hearth run scripts/scenes/dam_break.lua [--set viscosity=5] [--set dx=0.005]
 -- The front position (the right-most particle) is written to front.csv.
 local h = require "hearth"
-local P = h.params { viscosity = 2.0, dx = 1 / 100, width = 0.2, height = 0.4 }
+-- the column stands at (0.02, 0.02) in the 1.2 x 0.6 m box; newtonian's range of viscosity: [0, 1e6] Pa s
+local P = h.params { viscosity = h.number { 2.0, min = 0, max = 1e6, unit = "Pa s", what = "the syrup's viscosity" },
+  dx = h.number { 1 / 100, above = 0, unit = "m", what = "the grid spacing" },
+  width = h.number { 0.2, above = 0, max = 1.18, unit = "m", what = "the column's width" },
+  height = h.number { 0.4, above = 0, max = 0.58, unit = "m", what = "the column's height" } }
 
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 1.2, 0.6 } }, wall = "slip" }
 local syrup = h.material("newtonian", { density = 1300, bulk = 1e5, viscosity = P.viscosity })

@@ -1,7 +1,11 @@
 -- An elastic block dropped onto a plane: the simplest complete scene.
 --   hearth run scripts/scenes/drop_block.lua [--set height=0.4] [--set stiffness=2e4]
 local h = require "hearth"
-local P = h.params { height = 0.35, stiffness = 5e4, dim = 2 }
+-- the 0.2 m block's bottom in the 1 m box; elastic's range of E: [0.01, 1e12] Pa
+local P = h.params {
+  height = h.number { 0.35, min = 0, max = 0.8, unit = "m", what = "the block's bottom above the floor" },
+  stiffness = h.number { 5e4, min = 0.01, max = 1e12, unit = "Pa", what = "the jelly's Young's modulus" },
+  dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" } }
 
 local s = h.scene { dim = P.dim, dx = 1 / 64, box = { { 0, 0, 0 }, { 1, 1, 0.5 } }, wall = "slip" }
 local jelly = h.material("elastic", { E = P.stiffness, nu = 0.3, density = 1000 })

@@ -8,7 +8,11 @@
 -- under a minute while the elastic waves are still resolved.
 -- Writes frames of saturation and drying.csv (time, water left, area).
 local h = require "hearth"
-local P = h.params { momentum = 0, duration = 3, temperature = 60 }
+local P = h.params {
+  momentum = h.number { 0, min = 0, max = 1, integer = true, what = "the water's own momentum (1: on, 0: off)" },
+  duration = h.number { 3, above = 0, unit = "s", what = "the run's simulated time" },
+  temperature = h.number { 60, min = -273.15, max = 5000, unit = "degC",
+    what = "the oven air's (and the slice's start)" } }
 
 local s = h.scene { dim = 2, dx = 1 / 500, box = { { 0, 0 }, { 0.1, 0.04 } }, gravity = { 0, -9.81 },
   oven = { temperature = P.temperature, beta = 20 }, water_momentum = P.momentum == 1 }

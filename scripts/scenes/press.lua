@@ -1,7 +1,12 @@
 -- A moving collider presses a soft block: a plate comes down, holds, and lifts.
 --   hearth run scripts/scenes/press.lua [--set depth=0.05] [--set dim=3]
 local h = require "hearth"
-local P = h.params { depth = 0.06, speed = 0.2, stiffness = 2e4, dim = 2 }
+-- the block stands 0.15 m tall on the floor at 0.05 m; elastic's range of E: [0.01, 1e12] Pa
+local P = h.params {
+  depth = h.number { 0.06, min = 0, below = 0.15, unit = "m", what = "how far the plate presses into the block" },
+  speed = h.number { 0.2, above = 0, unit = "m/s", what = "the plate's speed" },
+  stiffness = h.number { 2e4, min = 0.01, max = 1e12, unit = "Pa", what = "the dough's Young's modulus" },
+  dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" } }
 local d3 = P.dim == 3
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 

@@ -135,8 +135,8 @@ for r in rows:
         v = float(c)
         assert math.isfinite(v) or k.startswith("face_peak") or k == "crack_from_face_m", (k, c)
 PY
-    for bad in "dim=3:only dim=2" "food=cake:food takes one of the words below, not \"cake\"" "two_field=yes:expected true or false" \
-               "frames=0:a whole number of frames"; do
+    for bad in "dim=3:dim (the space's dimensions; the tear is measured over the plane's columns) takes only 2, not 3" "food=cake:food takes one of the words below, not \"cake\"" "two_field=yes:expected true or false" \
+               "frames=0:frames (PNG frames over the pull) takes a whole number in .1, 10000., not 0"; do
         "$hearth" run "$scenes/tear_open.lua" --quiet --set "${bad%%:*}" >out.txt 2>err.txt && fail "--set ${bad%%:*} ran"
         grep -q "${bad#*:}" err.txt || fail "--set ${bad%%:*}: the message does not say '${bad#*:}': $(cat err.txt)"
     done

@@ -27,8 +27,18 @@
 -- lift) or "sticky" (a bare tray the dough sticks to: the contact holds the foot where it touched, in tension
 -- too), as loaf_physical.lua's (docs/validation.md, "The loaf's foot on its tray (#18, helper loaffoot)").
 local h = require "hearth"
-local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth = 0.02, slit_width = 0.01, only = 0,
-  dx_min_3d = 0.008, tray = h.choice { "separate",
+local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
+  dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
+  until_t = h.number { 2.5, above = 0, unit = "s", what = "the bake's simulated time" },
+  frames = h.number { 5, min = 1, integer = true, what = "PNG frames over the bake" },
+  -- a slit is cut down from the round top (BODY + WIDTH / 2 = 70 mm above the tray): at most to the tray
+  slit_depth = h.number { 0.02, min = 0, below = 0.07, unit = "m", what = "the slits' depth below the loaf's top" },
+  slit_width = h.number { 0.01, above = 0, below = 0.08, unit = "m",
+    what = "the slits' width; the loaf is 80 mm wide" },
+  only = h.number { 0, min = 0, max = 3, integer = true,
+    what = "the one loaf to bake (1: plain, 2: one slit, 3: two; 0: all)" },
+  dx_min_3d = h.number { 0.008, min = 0, unit = "m", what = "the finest grid spacing in 3D (0: no floor)" },
+  tray = h.choice { "separate",
     separate = "friction 0.4: the foot slides out, as on a greased or papered tray",
     sticky = "the foot held where it touched, as on a bare tray the dough has wetted" } }
 local d3 = P.dim == 3

@@ -102,13 +102,32 @@ local h = require "hearth"
 -- The levers that change Table 2's cookie (below, each where it acts), with their defaults: preset=paper's only.
 local PAPER_LEVERS = { baseline = false, reaction_temperature = -1, reaction_width = -1, conductivity = 0.01,
   water = false, soft_until = -1, max_porosity = -1 }
-local defaults = { dim = 2, dx = 0.005, until_t = 0, frames = 5, ovens = { 190, 150, 110 },
-  leaveners = { 0.015, 0.0075, 0 }, gas = 1,
-  tray_mode = h.choice("separate", h.contact_words), tray_friction = 0.4,
-  seed = 1, vent = -1,
+-- each lever's valid range (h.number; -1: the preset's own value, as the scene reads it below)
+local LEVER_RANGES = {
+  reaction_temperature = h.number { -1, min = 0, unit = "degC", what = "the CO2 reaction's temperature",
+    also = { [-1] = "the preset's" } },
+  reaction_width = h.number { -1, above = 0, unit = "degC", what = "the CO2 reaction's width",
+    also = { [-1] = "the preset's" } },
+  conductivity = h.number { 0.01, above = 0, what = "a factor on Table 2's kappa" },
+  -- Fig. 8's fat-melting and gelatinisation points
+  soft_until = h.number { -1, above = 35, below = 70, unit = "degC", what = "the end of the soft spread",
+    also = { [-1] = "Table 2's curve" } },
+  max_porosity = h.number { -1, above = 0, below = 1,
+    what = "the gas porosity's cap", also = { [-1] = "the preset's" } } }
+local defaults = { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
+  dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
+  until_t = h.number { 0, min = 0, unit = "s", what = "the bake's simulated time (0: the preset's own)" },
+  frames = h.number { 5, min = 1, integer = true, what = "PNG frames over the bake" }, ovens = { 190, 150, 110 },
+  leaveners = { 0.015, 0.0075, 0 }, gas = h.number { 1, min = 0, what = "a factor on the CO2 rates" },
+  tray_mode = h.choice("separate", h.contact_words),
+  tray_friction = h.number { 0.4, min = 0, what = "the tray's Coulomb friction coefficient" },
+  seed = h.number { 1, min = 0, integer = true, what = "the particles' seeding (0 acts as 1)" },
+  -- vent: the scene setting gas_vent (below); -1: the preset's
+  vent = h.number { -1, min = 0, unit = "m/s", what = "the CO2 vent velocity of open surface pores",
+    also = { [-1] = "the preset's" } },
   preset = h.choice { "paper", paper = "h.library.paper.cookie: Ding Table 2, animation units",
     physical = "h.library.dough.cookie: a real sugar-snap dough's properties, its bake in real minutes mapped" } }
-for k, v in pairs(PAPER_LEVERS) do defaults[k] = v end
+for k, v in pairs(PAPER_LEVERS) do defaults[k] = LEVER_RANGES[k] or v end
 local P = h.params(defaults)
 -- preset=physical (#18): h.library.dough.cookie and h.library.oven.cookie (lua/hearth/dough_physical.lua: each
 -- number's source; its rates run S = 50 times fast, so the 11 minute bake at 190 degC takes 13.2 s), latent heat,
@@ -129,22 +148,13 @@ if physical then
   end
 end
 -- until_t 0: the preset's own bake (paper 5 s; physical h.library.oven.cookie.bake_time, 13.2 s for 11 minutes)
-if P.until_t < 0 then error(("--set until_t=%g: the bake's simulated seconds, must be >= 0 (0: the preset's)"):format(P.until_t)) end
 -- vent (m/s, the scene setting gas_vent; 0 = Ding et al.'s closed skin): a surface particle whose pores have
 -- opened (gas porosity >= 0.7, vent_porosity) loses its CO2 to the oven air (core/sim/fields/gas.c). 5 m/s is
 -- an open pore's ~0.02 m/s (CO2 diffusing out across a millimetre) at Table 2's heat, which bakes the cookie
 -- ~250 times fast (a 10-minute bake in 2.5 s); any value past ~1 m/s vents an open pore within a few steps.
 -- Without it the leavened cookie's top and rim swell past its crumb (issue #18, docs/validation.md "The
 -- cookie's skin"). -1: the preset's, 5 m/s for paper and h.library.oven.cookie.gas_vent (0.02 m/s x S) for physical.
-if P.vent < 0 and P.vent ~= -1 then
-  error(("--set vent=%g: the CO2 vent velocity of open surface pores, m/s, must be >= 0 (or -1: the preset's)"):format(P.vent))
-end
 local d3 = P.dim == 3
-if P.soft_until ~= -1 and not (P.soft_until > 35 and P.soft_until < 70) then
-  error(("--set soft_until=%g: must lie between Fig. 8's fat-melting and gelatinisation points, (35, 70) degC, "
-    .. "or be -1 (Table 2's curve)"):format(P.soft_until))
-end
-if P.conductivity <= 0 then error(("--set conductivity=%g: a factor on Table 2's kappa, must be > 0"):format(P.conductivity)) end
 local dx = d3 and math.max(P.dx, 0.01) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 local ovens, leaveners = P.ovens, P.leaveners

@@ -16,7 +16,13 @@
 -- (time, water fraction left, volume by s:volume(): volume_m2 in 2D, volume_m3 in 3D, and
 -- temperature (degC) and saturation at the skin's top and the flesh's centre).
 local h = require "hearth"
-local P = h.params { dim = 2, dx = 0.0025, until_t = 2, frames = 20, temperature = 60, latent_heat = false }
+local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
+  dx = h.number { 0.0025, above = 0, unit = "m", what = "the grid spacing" },
+  until_t = h.number { 2, above = 0, unit = "s", what = "the run's simulated time" },
+  frames = h.number { 20, min = 1, integer = true, what = "PNG frames over the run" },
+  temperature = h.number { 60, min = -273.15, max = 5000, unit = "degC",
+    what = "the oven air's (and the slab's start)" },
+  latent_heat = false }
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.004) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end

@@ -27,7 +27,10 @@
 -- base's middle 80% (16 columns of 4 mm across x0 +- 32 mm), and base_gap_m the most any column's lowest particle
 -- edge stands off the tray.
 local h = require "hearth"
-local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0, tray = h.choice { "separate",
+local P = h.params { dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
+  frames = h.number { 25, min = 1, integer = true, what = "PNG frames over the run" }, latent = true,
+  until_real = h.number { 0, min = 0, unit = "s", what = "the real bake time (0: the oven's own)" },
+  tray = h.choice { "separate",
   separate = "friction 0.4: the foot slides out, as on a greased or papered tray",
   sticky = "the foot held where it touched, as on a bare tray the dough has wetted" } }
 local oven = h.library.oven.bread

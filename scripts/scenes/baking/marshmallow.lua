@@ -53,9 +53,17 @@
 -- other's columns NaN).
 local h = require "hearth"
 local D = require "hearth.dough"
-local P = h.params { dim = 2, dx = 0.002, roast = 0.9, press = 1.0, speed = 0.01, frames = 20, expansion = 0.1,
+local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
+  dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
+  roast = h.number { 0.9, min = 0, unit = "s", what = "the roast before the press" },
+  press = h.number { 1.0, min = 0, unit = "s", what = "the press's time" },
+  speed = h.number { 0.01, min = 0, unit = "m/s", what = "each cracker's speed toward the other" },
+  frames = h.number { 20, min = 1, integer = true, what = "PNG frames over the run" },
+  expansion = h.number { 0.1, min = 0, what = "the marshmallow's thermal expansion (the material's)" },
   only = h.choice { "", [""] = "both marshmallows", raw = "the raw one alone", roasted = "the roasted one alone" },
-  mode = h.choice("sticky", h.contact_words), friction = 0.5 } -- mode: the crackers' contact
+  mode = h.choice("sticky", h.contact_words),
+  friction = h.number { 0.5, min = 0,
+    what = "the crackers' Coulomb friction coefficient" } } -- mode: the crackers' contact
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.004) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end

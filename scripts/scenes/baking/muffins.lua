@@ -43,7 +43,15 @@
 -- (dome 4.14 mm); with Table 2's kappa (an isothermal batter; gas x0.1) the
 -- same cup ended dished: centre 1.2 mm below the edge, curvature +5 1/m.
 local h = require "hearth"
-local P = h.params { dim = 2, dx = 0.004, until_t = 0, frames = 6, cups = 3, fill = 0.022, ppc = 0,
+local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
+  dx = h.number { 0.004, above = 0, unit = "m", what = "the grid spacing" },
+  until_t = h.number { 0, min = 0, unit = "s", what = "the bake's simulated time (0: the preset's own)" },
+  frames = h.number { 6, min = 1, integer = true, what = "PNG frames over the run" },
+  cups = h.number { 3, min = 1, integer = true, what = "muffin cups in a row" },
+  -- the batter's depth above the cup's inner floor (12 mm up), at most to the box's top (100 mm)
+  fill = h.number { 0.022, above = 0, below = 0.088, unit = "m", what = "the batter's depth in its cup" },
+  -- s:add's range of ppc: 1 to 1000 (lua/hearth/init.lua)
+  ppc = h.number { 0, min = 0, max = 1000, integer = true, what = "particles per cell (0: 4 in 2D, 8 in 3D)" },
   wall_mode = h.choice("slip", h.contact_words), -- the cup's walls and floor
   preset = h.choice { "paper", paper = "h.library.paper.muffin: Ding Table 2, animation units",
     physical = "h.library.dough.muffin: a real batter's properties, its bake in real minutes mapped" } }

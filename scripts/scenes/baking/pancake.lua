@@ -31,8 +31,21 @@
 -- flip.csv: the flip time and the bottom's temperature then.
 local h = require "hearth"
 local THETA_SET = require("hearth.dough").THETA[4] -- gelatinisation, degC
-local P = h.params { dim = 2, dx = 0.002, until_t = 2, frames = 20, pour = 0.4, spin = 0.5, gas = 0.1, flip_dt = 0,
-  porosity = -1, spatula = h.choice("sticky", h.contact_words), pan = h.library.paper_oven.pancake.pan_temperature, set_at = THETA_SET }
+local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
+  dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
+  until_t = h.number { 2, above = 0, unit = "s", what = "the run's simulated time" },
+  frames = h.number { 20, min = 1, integer = true, what = "PNG frames over the run" },
+  pour = h.number { 0.4, above = 0, unit = "s", what = "the pour's time" },
+  spin = h.number { 0.5, above = 0, unit = "s", what = "the spatula's half turn" },
+  gas = h.number { 0.1, min = 0, what = "a factor on the batter's CO2 rate" },
+  flip_dt = h.number { 0, min = 0, unit = "s", what = "a cap on the time step through the flip (0: none)" },
+  -- the material's range of an initial gas porosity: [1e-06, 0.99] (cam_clay_dough)
+  porosity = h.number { -1, min = 1e-6, max = 0.99, what = "the batter's initial gas porosity",
+    also = { [-1] = "the preset's" } },
+  spatula = h.choice("sticky", h.contact_words),
+  pan = h.number { h.library.paper_oven.pancake.pan_temperature, min = -273.15, unit = "degC",
+    what = "the pan's temperature" },
+  set_at = h.number { THETA_SET, min = -273.15, unit = "degC", what = "the bottom's temperature that flips it" } }
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.004) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end

@@ -36,8 +36,13 @@
 -- off when pulled; a grip carries the particles inside it and holds the
 -- nodes within a cell of its surface (core/sim/solver/colliders.c, mpm.c).
 local h = require "hearth"
-local P = h.params { dim = 2, dx = 0.002, until_t = 0.4, frames = 4, taus = { 300, 1000, 3000 },
-  etas = { 1e6, 1e8, 1e10 }, speed = 0.02, spin = 0.5, E = 4e4 }
+local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
+  dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
+  until_t = h.number { 0.4, above = 0, unit = "s", what = "the run's simulated time" },
+  frames = h.number { 4, min = 1, integer = true, what = "PNG frames over the run" }, taus = { 300, 1000, 3000 },
+  etas = { 1e6, 1e8, 1e10 }, speed = 0.02, spin = 0.5,
+  -- cam_clay_dough's range of E: [0.01, 1e12] Pa
+  E = h.number { 4e4, min = 0.01, max = 1e12, unit = "Pa", what = "the dough's Young's modulus" } }
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.004) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end

@@ -63,24 +63,18 @@
 -- Cost (CPU, --threads 1, a shared 2-core machine): muffin 13 / 17 s at 4 mm, 50 / 65 s at 3 mm (one field / two);
 -- loaf 7 / 8 s at 5 mm, 13 / 17 s at 4 mm; a raw pull 1-3 s.
 local h = require "hearth"
-local P = h.params { dim = 2, raw = false,
-  food = h.choice { "muffin", muffin = "a muffin's batter in its cup (h.library.paper.muffin)",
-    bread = "a loaf of bread dough on its tray (h.library.paper.bread)" }, dx = 0, bake = 0, speed = 0.05, pull = 0.4, frames = 20,
-  ppc = 0, two_field = false }
-if P.dim ~= 2 then
-  error(("--set dim=%d: tear_open.lua measures its tear over the plane's columns; only dim=2"):format(P.dim))
-end
-local muffin = P.food == "muffin"
 -- the pull's and the run's numbers, each with its valid range (0 for dx, bake and ppc: the food's own)
-local function check(name, ok, range)
-  if not ok then error(("--set %s=%s: expected %s"):format(name, tostring(P[name]), range), 2) end
-end
-check("speed", P.speed > 0 and P.speed <= 10, "a grip speed in (0, 10] m/s")
-check("pull", P.pull > 0 and P.pull <= 100, "a pull of (0, 100] s")
-check("frames", P.frames >= 1 and P.frames <= 10000 and P.frames == math.floor(P.frames), "a whole number of frames, 1 to 10000")
-check("dx", P.dx == 0 or (P.dx >= 1e-4 and P.dx <= 0.02), "0 (the food's own) or a cell of 0.0001 to 0.02 m")
-check("bake", P.bake >= 0 and P.bake <= 100, "0 (the food's own) or a bake of up to 100 s")
-check("ppc", P.ppc >= 0 and P.ppc <= 64 and P.ppc == math.floor(P.ppc), "0 (4 a cell) or a whole number up to 64")
+local P = h.params { dim = h.number { 2, min = 2, max = 2, integer = true,
+    what = "the space's dimensions; the tear is measured over the plane's columns" }, raw = false,
+  food = h.choice { "muffin", muffin = "a muffin's batter in its cup (h.library.paper.muffin)",
+    bread = "a loaf of bread dough on its tray (h.library.paper.bread)" },
+  dx = h.number { 0, min = 1e-4, max = 0.02, unit = "m", what = "the grid spacing", also = { [0] = "the food's own" } },
+  bake = h.number { 0, min = 0, max = 100, unit = "s", what = "the bake before the pull (0: the food's own)" },
+  speed = h.number { 0.05, above = 0, max = 10, unit = "m/s", what = "the grips' speed" },
+  pull = h.number { 0.4, above = 0, max = 100, unit = "s", what = "the pull's time" },
+  frames = h.number { 20, min = 1, max = 10000, integer = true, what = "PNG frames over the pull" },
+  ppc = h.number { 0, min = 0, max = 64, integer = true, what = "particles per cell (0: 4)" }, two_field = false }
+local muffin = P.food == "muffin"
 local dx = P.dx > 0 and P.dx or muffin and 0.004 or 0.005 -- the food's own scene's dx
 local bake = P.raw and 0 or P.bake > 0 and P.bake or muffin and 3 or 2.5
 local oven = h.library.paper_oven[P.food]

@@ -12,8 +12,13 @@
 -- surface tension, so little sauce leaves the bowl with it.
 local h = require "hearth"
 local P = h.params { blend = h.choice("nonlinear", h.blend_words),
-  sauce = h.choice("mix", h.library.sauce_words(), { mix = "half mayo, half mustard (Fig. 12), blended as blend says" }), dx = 0.003, speed = 0.1, depth = 0.025, rest = 0.2,
-  until_t = 1.2, every = 0.05, png = true }
+  sauce = h.choice("mix", h.library.sauce_words(), { mix = "half mayo, half mustard (Fig. 12), blended as blend says" }),
+  dx = h.number { 0.003, above = 0, unit = "m", what = "the grid spacing" },
+  speed = h.number { 0.1, above = 0, unit = "m/s", what = "the celery's speed" },
+  depth = h.number { 0.025, min = 0, unit = "m", what = "how deep the celery dips below the sauce's top" },
+  rest = h.number { 0.2, min = 0, unit = "s", what = "the celery's rest at the bottom" },
+  until_t = h.number { 1.2, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
+  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" }, png = true }
 
 local material
 if P.sauce == "mix" then

@@ -13,16 +13,17 @@
 local h = require "hearth"
 local P = h.params {
   pair = "mayo:honey", ratios = "0,0.25,0.5,0.75,1", blend = h.choice("nonlinear", h.blend_words),
-  dx = 0.0025,        -- m; 4 cells across the nozzle
-  angle = 45,         -- degrees, the plate's slope
-  speed = 0.2,        -- m/s, extrusion speed at the nozzle exit
-  width = 0.01,       -- m, nozzle slot width
-  drop = 0.02,        -- m, nozzle exit height above the plate
-  emit = 0.6,         -- s, extrusion time
-  until_t = 1.0,      -- s
-  lane = 0.16,        -- m, lane width
-  every = 0.05,       -- s between frames
-  stiffness = 1,      -- scales kappa and mu (the paper's 1e6 and 1e5 Pa, section 4.6)
+  dx = h.number { 0.0025, above = 0, unit = "m", what = "the grid spacing" }, -- 4 cells across the nozzle
+  angle = h.number { 45, min = 0, below = 90, unit = "degrees", what = "the plate's slope" },
+  speed = h.number { 0.2, above = 0, unit = "m/s", what = "the extrusion speed at the nozzle's exit" },
+  width = h.number { 0.01, above = 0, unit = "m", what = "the nozzle's slot width" },
+  drop = h.number { 0.02, min = 0, unit = "m", what = "the nozzle exit's height above the plate" },
+  emit = h.number { 0.6, above = 0, unit = "s", what = "the extrusion's time" },
+  until_t = h.number { 1.0, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
+  lane = h.number { 0.16, above = 0, unit = "m", what = "a lane's width" },
+  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" },
+  -- scales kappa and mu (the paper's 1e6 and 1e5 Pa, section 4.6); von_mises_sauce's range of kappa: [1, 1e12] Pa
+  stiffness = h.number { 1, min = 1e-6, max = 1e6, what = "a factor on the sauces' kappa and mu" },
   png = true,
 }
 

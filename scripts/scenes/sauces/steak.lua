@@ -9,8 +9,13 @@
 local h = require "hearth"
 local P = h.params { blend = h.choice("nonlinear", h.blend_words),
   sauce = h.choice("mix", h.library.sauce_words(), { mix = "half pork cutlet, half BBQ sauce (Fig. 14), blended as blend "
-    .. "says" }), dx = 0.0025, speed = 0.2, width = 0.02, drop = 0.006, pour = 0.4,
-  until_t = 1.0, every = 0.05, png = true }
+    .. "says" }), dx = h.number { 0.0025, above = 0, unit = "m", what = "the grid spacing" },
+  speed = h.number { 0.2, above = 0, unit = "m/s", what = "the pour's speed at the nozzle's exit" },
+  width = h.number { 0.02, above = 0, unit = "m", what = "the nozzle's slot width" },
+  drop = h.number { 0.006, min = 0, unit = "m", what = "the nozzle exit's height above the steak" },
+  pour = h.number { 0.4, above = 0, unit = "s", what = "the pour's time" },
+  until_t = h.number { 1.0, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
+  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" }, png = true }
 
 local material
 if P.sauce == "mix" then

@@ -7,8 +7,17 @@
 -- three half-and-half pairs, and the centre of the triangle (1/3 each).
 -- front.csv: distance down the slope of each lane's farthest material over time.
 local h = require "hearth"
-local P = h.params { blend = h.choice("nonlinear", h.blend_words), dx = 0.0025, angle = 45, speed = 0.2, width = 0.01, drop = 0.02,
-  emit = 0.6, until_t = 1.0, lane = 0.22, every = 0.05, png = true }
+local P = h.params { blend = h.choice("nonlinear", h.blend_words),
+  dx = h.number { 0.0025, above = 0, unit = "m", what = "the grid spacing" },
+  angle = h.number { 45, min = 0, below = 90, unit = "degrees", what = "the plate's slope" },
+  speed = h.number { 0.2, above = 0, unit = "m/s", what = "the extrusion speed at the nozzle's exit" },
+  width = h.number { 0.01, above = 0, unit = "m", what = "the nozzle's slot width" },
+  drop = h.number { 0.02, min = 0, unit = "m", what = "the nozzle exit's height above the plate" },
+  emit = h.number { 0.6, above = 0, unit = "s", what = "the extrusion's time" },
+  until_t = h.number { 1.0, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
+  -- the reach along the plate runs lane - 0.03 m - dx
+  lane = h.number { 0.22, above = 0.03, unit = "m", what = "a lane's width" },
+  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" }, png = true }
 
 local L = h.library.sauce
 local sauces = { L.mayo, L.mustard, L.honey }

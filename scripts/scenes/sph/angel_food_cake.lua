@@ -50,8 +50,20 @@
 -- Units: viscosity and mu_e are scaled from Table 4.1 (animation units) as in
 -- bread_roll.lua, so the 2D default runs in well under a minute.
 local h = require "hearth"
-local P = h.params { dx = 0.003, oven = 180, cool_to = 25, bake = 1.5, until_t = 3.5, bubble_share = 0.4, foam = 1.0,
-  xsph_cool = 0.05, xsph_hot = 0.3 }
+-- oven: above the batter's 26 degC start (the bake heats it; the temperature frames span the two); foam: V_b0 of eq.
+-- 3.50 in maxwell_sph's range [0, 100]; bubble_share: discs of 4 mm on a square pitch touch at pi / 4 (--set
+-- bubble_share=0 had left no spots, and h.union's raw Lua error was all a user saw)
+local P = h.params { dx = h.number { 0.003, above = 0, unit = "m", what = "the grid spacing" },
+  oven = h.number { 180, above = 26, max = 5000, unit = "degC",
+    what = "the oven's temperature, above the batter's 26 degC" },
+  cool_to = h.number { 25, min = -273.15, max = 5000, unit = "degC", what = "the air it cools in after the bake" },
+  bake = h.number { 1.5, min = 0, unit = "s", what = "the bake's time before it cools" },
+  until_t = h.number { 3.5, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
+  bubble_share = h.number { 0.4, above = 0, max = math.pi / 4,
+    what = "the share of the batter seeded as bubble particles" },
+  foam = h.number { 1.0, min = 0, max = 100, what = "the batter's initial bubble volume V_b0 (eq. 3.50)" },
+  xsph_cool = h.number { 0.05, min = 0, max = 1, what = "XSPH's epsilon in the cool batter (h.scene's range)" },
+  xsph_hot = h.number { 0.3, min = 0, max = 1, what = "XSPH's epsilon in the hot batter (h.scene's range)" } }
 -- what a run's seconds stand for (S = 1600, the scene's browning_scale and its heat_ext, below)
 print(("angel_food_cake.lua: viscosity and mu_e scaled from Table 4.1's animation units; heat and browning 1600 times fast: "
   .. "the %g s bake stands for %.0f min, 1 s for %.1f min"):format(P.bake, P.bake * 1600 / 60, 1600 / 60))
@@ -103,11 +115,7 @@ end
 local cake = h.union(side(0.02, 0.092), side(0.108, 0.18))
 local spots, r = {}, 0.004
 -- the discs of radius r on a square pitch hold pi r^2 / pitch^2 of the batter: at most pi / 4, where they touch
--- (--set bubble_share=0 had left no spots, and h.union's raw Lua error was all a user saw)
-if not (P.bubble_share > 0 and P.bubble_share <= math.pi / 4) then
-  error(("--set bubble_share=%g: the share of the batter seeded as bubble particles, valid range (0, %.3f] "
-    .. "(discs of %g mm on a square pitch touch at pi / 4)"):format(P.bubble_share, math.pi / 4, r * 1e3))
-end
+-- (bubble_share's range, h.params above)
 local pitch = r * math.sqrt(math.pi / P.bubble_share)
 for y = floor_y + pitch / 2, top0, pitch do
   for x = 0.02 + pitch / 2, cx, pitch do

@@ -40,8 +40,18 @@
 -- Writes volume.csv: relative volume (from a density slice), the height of
 -- the top ball and of a bone knuckle above the tray, over time.
 local h = require "hearth"
-local P = h.params { dx = 0.002, oven = 180, mu_e = 2000, viscosity = 5, lambda = 20, until_t = 1.2, vb0 = 1.0, xsph0 = 0.6, xsph_f = 0.9,
-  artificial_stress = 0.3 }
+-- mu_e, viscosity, lambda and vb0 (the bubble's V_b0, eq. 3.50) in maxwell_sph's ranges
+local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
+  oven = h.number { 180, min = -273.15, max = 5000, unit = "degC", what = "the oven's temperature" },
+  mu_e = h.number { 2000, min = 0.001, max = 10000000000.0, unit = "Pa", what = "the dough's elastic modulus mu_e" },
+  viscosity = h.number { 5, min = 0, max = 1e6, unit = "Pa s", what = "the dough's viscosity" },
+  lambda = h.number { 20, min = 1e-09, max = 1000000000.0, unit = "s", what = "the dough's relaxation time" },
+  until_t = h.number { 1.2, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
+  vb0 = h.number { 1.0, min = 0, max = 100, what = "the bubbles' initial volume V_b0 (eq. 3.50)" },
+  xsph0 = h.number { 0.6, min = 0, max = 1, what = "XSPH's epsilon in the raw dough (h.scene's range)" },
+  xsph_f = h.number { 0.9, min = 0, max = 1, what = "XSPH's epsilon in the baked dough (h.scene's range)" },
+  artificial_stress = h.number { 0.3, min = 0, max = 1,
+    what = "Monaghan's epsilon against the tensile instability (h.scene's range)" } }
 -- what a run's seconds stand for (S = 1500, the scene's browning_scale and its heat_ext, below)
 print(("bread_of_the_dead.lua: heat (an oven's h = 30 W/(m^2 K)) and browning 1500 times fast: "
   .. "the %g s run stands for %.0f min, 1 s for %.0f min"):format(P.until_t, P.until_t * 1500 / 60, 1500 / 60))

@@ -10,7 +10,9 @@
 -- an animation-scaled h of 6.1 x 2500 = 15000 W/(m^2 K)) plus the same Robin
 -- flux, which at beta = 20 is about 1/800 of it.
 local h = require "hearth"
-local P = h.params { t_end = 0.5, dx = 0.004, oven = 180 }
+local P = h.params { t_end = h.number { 0.5, above = 0, unit = "s", what = "each solver's simulated time" },
+  dx = h.number { 0.004, above = 0, unit = "m", what = "the grid spacing" },
+  oven = h.number { 180, min = -273.15, max = 5000, unit = "degC", what = "the oven's temperature" } }
 
 local function run(solver)
   local opts = { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.3, 0.15 } }, solver = solver,

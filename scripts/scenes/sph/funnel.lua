@@ -7,7 +7,9 @@
 -- --set viscosity=0.5 with --set viscosity=50. Writes outflow.csv: the share
 -- of a line at y = 0.05 m (below the neck) covered by fluid, over time.
 local h = require "hearth"
-local P = h.params { viscosity = 0.5, dx = 0.005 }
+-- newtonian's range of viscosity: [0, 1e6] Pa s
+local P = h.params { viscosity = h.number { 0.5, min = 0, max = 1e6, unit = "Pa s", what = "the fluid's viscosity" },
+  dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" } }
 
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.4, 0.5 } }, solver = "sph",
   sph = { av_beta = 1, xsph0 = 0.05, alpha_c = 0.1, beta_c = 0.9 } }

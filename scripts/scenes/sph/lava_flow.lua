@@ -15,8 +15,14 @@
 -- farthest particle), the mean temperature of the particles' rows in a
 -- temperature slice, over time; and temperature frames.
 local h = require "hearth"
-local P = h.params { dx = 0.005, T_hot = 1100, T_air = 20, xsph_hot = 0.05, xsph_cold = 0.9, cooling = 8,
-  until_t = 3.0 }
+-- the viscosity curve runs from T_air through 600 degC to T_hot, so T_air lies below 600 and T_hot above it
+local P = h.params { dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
+  T_hot = h.number { 1100, above = 600, max = 5000, unit = "degC", what = "the lava's eruption temperature" },
+  T_air = h.number { 20, min = -273.15, below = 600, unit = "degC", what = "the air's temperature" },
+  xsph_hot = h.number { 0.05, min = 0, max = 1, what = "XSPH's epsilon in the hot lava (h.scene's range)" },
+  xsph_cold = h.number { 0.9, min = 0, max = 1, what = "XSPH's epsilon in the cold lava (h.scene's range)" },
+  cooling = h.number { 8, min = 0, max = 1e6, what = "the air's heat transfer to the surface (sph.heat_ext)" },
+  until_t = h.number { 3.0, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" } }
 
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.8, 0.3 } }, solver = "sph",
   sph = { heat_ext = P.cooling, heat_int = 2, av_beta = 1, alpha_c = 0.1, beta_c = 0.9,

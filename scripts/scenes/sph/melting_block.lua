@@ -8,7 +8,9 @@
 -- kg/(m^2 s), animation-scaled) is 6.1, the heat the thesis's printed form
 -- gave with 3e8 at this dx (3e8 dx^3 / pi in 2D).
 local h = require "hearth"
-local P = h.params { floor = 150, dx = 0.004 }
+local P = h.params {
+  floor = h.number { 150, min = -273.15, max = 5000, unit = "degC", what = "the floor's temperature" },
+  dx = h.number { 0.004, above = 0, unit = "m", what = "the grid spacing" } }
 
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.3, 0.15 } }, solver = "sph",
   sph = { heat_ext = 6.1, heat_int = 0.5, av_beta = 1, xsph0 = 0.1, xsph_f = 0.02, xsph_T0 = 20, xsph_Tf = 80 } }
