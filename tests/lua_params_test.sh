@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# lua_params_test.sh CASE HEARTH: a scene's numeric parameters declared with their valid range, h.number
-# (lua/hearth/params.lua), as a user meets them through --set and --params, and through a wrapper's h.pass_params.
+# lua_params_test.sh CASE HEARTH: a scene's parameters, h.params (lua/hearth/params.lua): word parameters (h.choice),
+# numbers declared with their valid range (h.number), bad --set values, the --params listing, and a wrapper's h.pass_params.
 # The scene files are in tests/lua/; the helpers in lua_fixture.sh, shared with lua_test.sh.
 . "$(dirname "$0")/lua_fixture.sh" "$@"
 
@@ -87,6 +87,116 @@ params_number_passed_through_refused)
     expect_rc 2 "a --set the scene refuses, passed on"
     has_msg "numbers.lua:3: --set dx=-1: dx (the grid spacing) takes a number in (0, 0.05] m, not -1" \
         "the scene file and line, the --set and the range"
+    ;;
+set_bad_value_exit2)
+    bad_set() { # what text args...
+        local what=$1 text=$2
+        shift 2
+        run params.lua "$@"
+        expect_rc 2 "$what"
+        has err.txt "$text" "$what"
+    }
+    bad_set "a number expected" "--set height=abc: expected a number" --set height=abc
+    bad_set "an unknown name" "no parameter 'heigt'; did you mean 'height'?" --set heigt=1
+    bad_set "a bad number list" "--set sizes=1,,2: expected numbers separated by commas" --set sizes=1,,2
+    bad_set "a scene setting that is not a number" "--set dx=fine: expected a number" --set dx=fine
+    run no_params.lua --set depth=1
+    expect_rc 2 "--set on a scene without h.params"
+    has err.txt "--set depth" "the parameter named"
+    run params.lua --set height=0.5
+    expect_rc 0 "a good --set"
+    ;;
+params_word_nearest_suggested)
+    # h.choice (lua/hearth/params.lua): a word parameter takes its words, the empty one too; a misspelt word is a
+    # bad --set (exit 2) at the scene's h.params line, naming the word, every valid word with its description, and
+    # the nearest; a word near none gets no suggestion
+    run words.lua
+    expect_rc 0 "the defaults"
+    has out.txt "tray=separate only=[] wall=slip" "the defaults"
+    run words.lua --set tray=sticky --set only=roasted --set wall=grip
+    expect_rc 0 "valid words"
+    has out.txt "tray=sticky only=[roasted] wall=grip" "valid words"
+    run words.lua --set only=
+    expect_rc 0 "the empty word"
+    has out.txt "only=[]" "the empty word"
+    run words.lua --set tray=stiky
+    expect_rc 2 "a misspelt word"
+    has err.txt 'words.lua:3: --set tray=stiky: tray takes one of the words below, not "stiky"; did you mean "sticky"?' \
+        "file, line, the --set, the word and the nearest"
+    has err.txt '  "separate"  slides out with friction' "the first word and its description"
+    has err.txt '  "sticky"    held where it touched' "the second word and its description"
+    run words.lua --set only=rosted
+    expect_rc 2 "a misspelt word beside the empty one"
+    has err.txt 'did you mean "roasted"?' "the nearest of three"
+    has err.txt '  ""         both' "the empty word listed as \"\""
+    run words.lua --set wall=frozen
+    expect_rc 2 "a word near none"
+    has err.txt 'wall takes one of the words below, not "frozen"' "the word"
+    grep -q "did you mean" err.txt && fail "a suggestion for a word near none: $(cat err.txt)"
+    has err.txt '  "grip"      holds every grid node on and inside it' "h.contact_words' descriptions"
+    ;;
+params_word_bad_default_refused)
+    # a default that is not one of its words is the scene author's mistake: a scene error (exit 1) at its
+    # h.params line, before the scene runs on
+    run words_bad_default.lua
+    expect_rc 1 "a default that is not a word"
+    has_msg "words_bad_default.lua:3: h.params: tray's default: tray takes one of the words below, not \"stiky\"; did you mean \"sticky\"?" \
+        "the scene file, line, parameter, default and nearest"
+    has_msg '  "separate"  slides out with friction' "the valid words"
+    grep -q "ran with" out.txt && fail "the scene ran on past its bad default"
+    ;;
+params_word_passed_through_refused)
+    # h.pass_params: the scene's words hold for what a wrapper passes; a word the scene does not take is refused at
+    # the scene's h.params line: the wrapper's own default (exit 1, the wrapper's mistake) or a --set (exit 2)
+    run words_wrapper.lua --set scene="$scenes/words.lua"
+    expect_rc 1 "the wrapper's default the scene does not take"
+    has_msg "words.lua:3: tray = \"glue\", passed by the script's h.pass_params: tray takes one of the words below, not \"glue\"" \
+        "the scene file and line, the parameter and the word"
+    has_msg '  "sticky"    held where it touched' "the scene's words"
+    run words_wrapper.lua --set scene="$scenes/words.lua" --set tray=sticky
+    expect_rc 0 "a word the scene takes"
+    has out.txt "tray=sticky only=[] wall=slip" "passed on"
+    run words_wrapper.lua --set scene="$scenes/words.lua" --set tray=sticky --set only=rw
+    expect_rc 2 "a misspelt --set passed on"
+    has err.txt 'words.lua:3: --set only=rw: only takes one of the words below, not "rw"; did you mean "raw"?' \
+        "the scene file and line, the --set and the nearest"
+    ;;
+params_choice_declaration_errors)
+    # h.choice's own refusals name the call's line and what is wrong
+    run choice_errors.lua
+    expect_rc 0 "choice_errors.lua"
+    has out.txt "one word: $scenes/choice_errors.lua:7: h.choice: a choice needs at least two words" "one word"
+    has out.txt 'no description: '"$scenes"'/choice_errors.lua:8: h.choice: word "b" needs a short description' "no description"
+    has out.txt 'empty description: '"$scenes"'/choice_errors.lua:9: h.choice: word "b" needs a short description (a non-empty string), got ""' \
+        "an empty description"
+    has out.txt "a second default: $scenes/choice_errors.lua:10: h.choice: 2 is not a word" "two defaults"
+    has out.txt 'a word with a comma: '"$scenes"'/choice_errors.lua:11: h.choice: word "b,c" holds a comma' "a comma"
+    has out.txt "not a table: $scenes/choice_errors.lua:12: h.choice: expected" "not a table"
+    has out.txt "shared words not a table: $scenes/choice_errors.lua:13: h.choice(default, words, ...): argument 2 is a string" \
+        "shared words not a table"
+    has out.txt 'a word twice: '"$scenes"'/choice_errors.lua:14: h.choice(default, words, ...): word "slip" given twice' \
+        "a word twice"
+    has out.txt "no default: $scenes/choice_errors.lua:15: h.choice: the default comes first" "no default"
+    has out.txt "shared and own: accepted" "shared words merged with the scene's own"
+    ;;
+run_params_lists_words)
+    # hearth run SCENE.lua --params: the parameters, their defaults and each word parameter's words with their
+    # descriptions; exit 0 with nothing simulated and nothing written (no output folder, no run record)
+    run words.lua --params --out listed
+    expect_rc 0 "--params"
+    has out.txt "parameters (--set name=value), with their defaults:" "the heading"
+    has out.txt "  height = 0.3" "a number's default"
+    has out.txt '  tray = "separate", one of:' "a word parameter's default"
+    has out.txt '      "sticky"    held where it touched' "its words"
+    has out.txt '      ""         both' "the empty word"
+    has out.txt "scene settings --set may also change: " "the scene settings"
+    grep -q "tray=separate only" out.txt && fail "the scene ran on past the listing: $(cat out.txt)"
+    [ -e listed ] && fail "--params made the output folder: $(find listed)"
+    # a scene without h.params: none, and the scene is not run (tiny.lua's s:run would write frames)
+    run tiny.lua --params --out listed
+    expect_rc 0 "--params on a scene without parameters"
+    has out.txt "this scene declares none" "no parameters"
+    [ -e listed ] && fail "--params ran tiny.lua: $(find listed)"
     ;;
 *)
     fail "unknown case $case_name"
