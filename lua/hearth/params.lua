@@ -299,27 +299,16 @@ function h.pass_params(P)
     if type(defaults) ~= "table" then error("h.params: expected a table of name = default", 2) end
     local Q = {}
     for k, v in pairs(defaults) do
-      if is_choice(v) then
-        check_default(v, k, 2)
-        local w = P[k]
-        if w == nil then
-          w = v.default
-        else
-          local given = core.options().sets[k]
-          local m = word_error(v, k, w, given and ("--set %s=%s"):format(k, given)
-            or ("%s = %s, passed by the script's h.pass_params"):format(k, q(tostring(w))))
-          if m and given then usage_error(m, 2) elseif m then error(m, 2) end
-        end
-        Q[k] = w
-      elseif is_number(v) then
+      local refusal = is_choice(v) and word_error or is_number(v) and number_error -- a declared word or number
+      if refusal then
         check_default(v, k, 2)
         local x = P[k]
         if x == nil then
           x = v.default
         else
           local given = core.options().sets[k]
-          local m = number_error(v, k, x, given and ("--set %s=%s"):format(k, given)
-            or ("%s = %s, passed by the script's h.pass_params"):format(k, tostring(x)))
+          local m = refusal(v, k, x, given and ("--set %s=%s"):format(k, given)
+            or ("%s = %s, passed by the script's h.pass_params"):format(k, is_choice(v) and q(tostring(x)) or tostring(x)))
           if m and given then usage_error(m, 2) elseif m then error(m, 2) end
         end
         Q[k] = x

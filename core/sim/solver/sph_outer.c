@@ -45,6 +45,17 @@ void sph_outer_free(struct sph_state *st) {
     st->og_cap = 0;
 }
 
+/* the cells [a0, a1] (clipped to the grid) that a ball of radius R about p can reach */
+static void cell_span(const double *p, double R, const double o[3], double cs, const int ng[3], int dim, int a0[3],
+                      int a1[3]) {
+    for (int a = 0; a < dim; a++) {
+        a0[a] = (int)floor((p[a] - R - o[a]) / cs);
+        a1[a] = (int)ceil((p[a] + R - o[a]) / cs);
+        if (a0[a] < 0) a0[a] = 0;
+        if (a1[a] > ng[a] - 1) a1[a] = ng[a] - 1;
+    }
+}
+
 void sph_outer_surface(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
@@ -105,12 +116,7 @@ void sph_outer_surface(hearth_scene *s) {
     for (int i = 0; i < n; i++) {
         const double R = 0.5 * st->h[i], R2 = R * R;
         int a0[3] = {0, 0, 0}, a1[3] = {0, 0, 0};
-        for (int a = 0; a < dim; a++) {
-            a0[a] = (int)floor((x[3 * i + a] - R - o[a]) / cs);
-            a1[a] = (int)ceil((x[3 * i + a] + R - o[a]) / cs);
-            if (a0[a] < 0) a0[a] = 0;
-            if (a1[a] > ng[a] - 1) a1[a] = ng[a] - 1;
-        }
+        cell_span(x + 3 * i, R, o, cs, ng, dim, a0, a1);
         for (int k = a0[2]; k <= a1[2]; k++)
             for (int j = a0[1]; j <= a1[1]; j++)
                 for (int l = a0[0]; l <= a1[0]; l++) {
@@ -150,12 +156,7 @@ void sph_outer_surface(hearth_scene *s) {
     for (int i = 0; i < n; i++) {
         const double R = 0.5 * st->h[i] + diag, R2 = R * R;
         int a0[3] = {0, 0, 0}, a1[3] = {0, 0, 0};
-        for (int a = 0; a < dim; a++) {
-            a0[a] = (int)floor((x[3 * i + a] - R - o[a]) / cs);
-            a1[a] = (int)ceil((x[3 * i + a] + R - o[a]) / cs);
-            if (a0[a] < 0) a0[a] = 0;
-            if (a1[a] > ng[a] - 1) a1[a] = ng[a] - 1;
-        }
+        cell_span(x + 3 * i, R, o, cs, ng, dim, a0, a1);
         int out = 0;
         for (int k = a0[2]; k <= a1[2] && !out; k++)
             for (int j = a0[1]; j <= a1[1] && !out; j++)
