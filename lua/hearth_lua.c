@@ -91,7 +91,8 @@ static int traceback(lua_State *L) {
      * the chunk (a helper, an on_frame callback, hearth's own modules). */
     int lua_frames = 0, main_only = 1;
     lua_Debug ar;
-    for (int level = 1; lua_getstack(L, level, &ar); level++) {
+    /* stop at the second Lua frame: a stack overflow holds ~1e5 frames, and lua_getstack walks to its level */
+    for (int level = 1; lua_frames < 2 && lua_getstack(L, level, &ar); level++) {
         if (!lua_getinfo(L, "S", &ar) || ar.what[0] == 'C') continue;
         lua_frames++;
         if (strcmp(ar.what, "main") != 0) main_only = 0;
