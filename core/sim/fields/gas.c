@@ -139,9 +139,8 @@ static double vent_target(const hearth_scene *s, int i) {
     if (!(pa > 0) || !(ps->enabled & (1u << PC_TEMPERATURE))) return 0.0;
     const double n0 = core[CP_POROSITY0], T = pcold(ps, PC_TEMPERATURE)[i];
     const int wet = (ps->enabled & (1u << PC_WATER)) && pcold(ps, PC_WATER)[i] > 0;
-    const double th = T + KELVIN, th0 = core[CP_REFERENCE_T] + KELVIN;
-    const double pv = wet ? vapour_psat(th) : 0, pv0 = wet ? vapour_psat(th0) : 0;
-    const double nair = (pa - pv0) * n0 / (R_GAS * th0), J = particles_J(ps, i);
+    const double th = T + KELVIN, pv = wet ? vapour_psat(th) : 0;
+    const double nair = gas_air_moles(pa, n0, core[CP_REFERENCE_T], wet), J = particles_J(ps, i);
     const double n = (pa - pv) * J * gas_porosity(J, n0) / (R_GAS * th) - nair;
     return n > 0 ? n : 0.0;
 }

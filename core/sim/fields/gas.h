@@ -77,13 +77,20 @@ static inline double gas_tau(double ng, double T, double np) { return -ng * R_GA
 /// the gas holds no pressure: 0 from there. The gas's stiffness -J dp/dJ = n R theta / (J n^p) / n^p, 2e5-1e6 Pa
 /// against the dough's E ~ 3e4, goes into *stiff for the step (material_gas_wave); 0 when open. Ambient 0 never
 /// comes here: gas_tau, the same bits as before.
+/// n_air, the moles of the pores' starting air per reference volume (above): the air a pore was closed on at
+/// theta_0, with the vapour's share of p_a left out when the dough is wet. gas_tau_ambient's pressure and gas.c's
+/// vent target (the CO2 at which an open pore stands at p_a) both count it.
+static inline double gas_air_moles(double pa, double n0, double T0, int wet) {
+    const double th0 = T0 + KELVIN, pv0 = wet ? vapour_psat(th0) : 0;
+    return (pa - pv0) * n0 / (R_GAS * th0);
+}
+
 static inline double gas_tau_ambient(double ng, double T, double J, int wet, double pa, double n0, double T0,
                                      double Topen, double *stiff) {
     *stiff = 0;
     if (T >= Topen) return 0;
-    const double th = T + KELVIN, th0 = T0 + KELVIN, np = gas_porosity(J, n0);
-    const double pv = wet ? vapour_psat(th) : 0, pv0 = wet ? vapour_psat(th0) : 0;
-    const double nair = (pa - pv0) * n0 / (R_GAS * th0);
+    const double th = T + KELVIN, np = gas_porosity(J, n0);
+    const double pv = wet ? vapour_psat(th) : 0, nair = gas_air_moles(pa, n0, T0, wet);
     const double nrt = (nair + ng) * R_GAS * th; /* J n^p times the non-condensable gas's partial pressure */
     *stiff = nrt / (J * np * np);
     return -nrt / np - J * (pv - pa);
