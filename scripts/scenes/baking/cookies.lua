@@ -377,7 +377,10 @@ for _, T in ipairs(ovens) do
       fraction = 0.6, z = d3 and zc or nil, rest = rest_y })
   end
   s:run { until_t = until_t, every = until_t / P.frames,
-    png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T), time_scale = S },
+    -- one temperature range for every oven (the dough's start to the hottest oven), so their frames compare side
+    -- by side; each oven's own run had grown its own range
+    png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T), time_scale = S,
+      range = { oven.dough_temperature, math.max(table.unpack(ovens)) } },
     on_frame = function(f)
       for i, a in ipairs(leaveners) do
         local hgt, spread = measure(i)
@@ -404,7 +407,7 @@ for _, T in ipairs(ovens) do
   end
   h.write("cookies.csv", table.concat(rows, "\n") .. "\n")
   if physical then -- the crust's colour (Zanoni et al. 1995's index, 0..1): a picture, and per cookie a printed line
-    s:png("browning", ("oven_%g/browning.png"):format(T), { time_scale = S })
+    s:png("browning", ("oven_%g/browning.png"):format(T), { time_scale = S, range = { 0, 1 } }) -- the index's own 0..1
     local r = s:particles { fields = { "id", "x", "browning" } }
     for i, a in ipairs(leaveners) do
       -- top: the highest particle within dx/2 of the cookie's axis; rim: the one farthest from it; base: the lowest on
