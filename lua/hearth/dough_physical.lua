@@ -237,12 +237,18 @@ D.goods = {
     -- liquid water diffusivity and surface evaporation: the muffin's (bread's liquid 2e-9 m^2/s, chosen within
     -- the 1e-10..1e-8 m^2/s range of baking models; the boiling front carries most of the water)
     water_diffusivity_m2s = 2e-9, evaporation = 1.2e-5,
-    -- rheology and its set: the muffin batter's (E 1e4, yield 20 Pa, 1e2 Pa s; MUFFIN_SET, set by 70 degC at starch
-    -- gelatinisation). A poured pancake batter is a weak yield-stress liquid: a puddle of height H and radius R
-    -- stops spreading at tau_y ~ rho g H^2 / (2 R), 5.5 Pa for 8 mm and 60 mm, so 20 Pa (melted x0.3: 6 Pa) is
-    -- its order; its viscosity, 1-100 Pa s for batters, is taken at the top as the muffin's (no pancake batter
-    -- rheometry found here)
-    E = 1e4, nu = 0.3, tau_y = 20, mu = 100, max_porosity = 0.6, curve = "muffin",
+    -- rheology and its set: E 1e4 Pa, 1e2 Pa s and the set (MUFFIN_SET: soft to 55 degC, x20 by 70 degC at starch
+    -- gelatinisation) are the muffin batter's (batters are 1-100 Pa s fluids; no pancake batter rheometry found
+    -- here). The yield stress is the pancake's own, from the shape recipes give it: about a quarter cup (59 mL) of
+    -- batter a pancake ("a little less than 1/4 cup of batter will make a decent pancake", gist.github.com/willb/
+    -- 170844) and 4-inch pancakes ("about fourteen 4-inch cakes", pastebin.com/qB56Nt3S), a disc 7.3 mm deep over
+    -- R = 50.8 mm. A yield-stress puddle stops spreading when its height is H = sqrt(2 s R / (rho g)) (the
+    -- lubrication shape h(x)^2 = 2 s (R - x) / (rho g)), so its shear yield stress is s = rho g H^2 / (2 R) = 5.4 Pa
+    -- at the room's 20 degC; on this plugin's von Mises surface q = sqrt(3) s = 9.4 Pa (as the cookie's), x0.8 of
+    -- the fridge point's on MUFFIN_SET: 11.7 Pa. The spread sets first where the pan sets the batter, so the
+    -- batter's own yield stress is at most this. (Was the muffin's 20 Pa in the first runs: 10.6 mm thick before
+    -- the flip at dx 2 mm, 9.7 mm with 11.7.)
+    E = 1e4, nu = 0.3, tau_y = 11.7, mu = 100, max_porosity = 0.6, curve = "muffin",
     -- no CO2: the baking powder's rise is left out (gas_rate 0; the porosity the batter's stirred-in bubbles)
     gas_rate = 0, reaction_temperature = 60, reaction_width = 20, porosity = 0.1,
     expansion = 0.1, dough_temperature = 20,
@@ -255,8 +261,10 @@ D.goods = {
     -- dx 4 mm (docs/validation.md, "The physical pancake"). The air above: kitchen air at 25 degC, free convection
     -- 10 W/(m^2 K) (free convection in gases is 2-25 W/(m^2 K): Incropera & DeWitt, Table 1.1)
     oven_temperature = 25, oven_beta = 10, pan_temperature = 190, pan_beta = 1700,
-    -- cooked 2 min on its first side, then flipped (recipes flip once bubbles open on the top and the edges look set,
-    -- "2 to 3 minutes"; 1.5-3 min in the brief's sources), and 1.5 min on its second: 3.5 min in 3.5 s
+    -- cooked 2 min on its first side, then flipped: recipes flip once bubbles open on the top and the edges look set
+    -- (whatis.eokultv.com's guide), "until browned on the bottom, about 3 minutes" on a low heat (github.com/
+    -- dpapathanasiou/recipes, mini chocolate chip pancakes); 2 min at this griddle's 190 degC, and 1.5 min on the
+    -- second side: 3.5 min in 3.5 s
     time_scale = 60, bake_time_real = 210, flip_time_real = 120,
   },
 }

@@ -12,7 +12,7 @@
 --   [--set spatula=sticky|slip|separate] [--set spin=0.5] (s for the half turn)
 --   [--set flip_dt=0] (a dt cap during the turn) [--set gas=0.1] [--set porosity=-1]
 --   [--set pan=200] (degC) [--set set_at=70] (the bottom temperature that triggers the flip, degC)
---   [--set preset=paper|physical] [--set flip_at=120] (physical: the flip's real time, s)
+--   [--set preset=paper|physical] [--set flip_at=120] (physical: the flip's real time, s) [--set width=800] (px)
 -- preset: "paper" (the default: h.library.paper.pancake, Table 2's animation units, 2 s, flipped once the
 -- bottom passes set_at) or "physical" (h.library.dough.pancake: a 54% water batter, lua/hearth/dough_physical.lua,
 -- with latent heat, boiling and browning on, on a 190 degC griddle under 25 degC air; heat and water run 60
@@ -20,12 +20,13 @@
 -- minutes, the recipes' time, whatever its bottom reads). The mechanics is not scaled: the pour (0.4 s) spans
 -- 24 s of the real heat history and the turn (0.5 s) 30 s.
 -- The physical pancake (2D, helper pancake; docs/validation.md "The physical pancake"): at dx 2 mm its middle
--- climbs to 70.8 degC by the flip and holds at 100.0 degC from 2.5 min to the end, keeping 0.97 of its water,
--- while the face on the pan browns 0.178 (fields/browning.c's 0..1) by the flip and the top stays at 0.000;
--- 68% of the batter's water is left at 3.5 min (it boils off the pan faces). At 1.5 mm: 59.0 degC by the flip,
--- 98.7 at the end (0.97 of its water), browning 0.170 / 0.000. The paper preset's pancake reads 167.9 degC at
--- its pan face and top alike at 2 s. The flipped sheet lands ragged, as the paper one does, over loose
--- particles, so its second face meets the pan late and browns less (0.0002 at 2 mm, 0.079 at 1.5 mm).
+-- climbs to 71.1 degC by the flip and holds at 100.0 degC after it while it keeps 0.98 of its water; the face on
+-- the pan browns 0.180 (fields/browning.c's 0..1) by the flip while the top stays at 0.000; 9.7 mm thick before
+-- the flip, and 66% of the batter's water is left at 3.5 min (it boils off the pan faces). At 1.5 mm: 71.0 degC
+-- by the flip, 94.1 at the end (0.97 of its water), browning 0.166 / 0.000. The paper preset's pancake reads
+-- 167.9 degC at its pan face and top alike at 2 s. The flipped sheet lands ragged, as the paper one does (its raw
+-- top, at 1/60 of the batter's viscosity under the time mapping, runs off the set layer during the 0.5 s turn),
+-- so its second face meets the pan late and browns little (0.002 at 2 mm, 0.080 at 1.5 mm by 3.5 min).
 -- Status: the pour, the cooking and the flip work (2D, dx 2 mm: the bottom
 -- passes 70 degC at t = 0.58 s, measured at commit 76ac79a; 0.82 s when this
 -- was first written; the spatula lifts the pancake ~8 cm and lays
@@ -53,6 +54,8 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   until_t = h.number { 0, min = 0, unit = "s",
     what = "the run's simulated time (0: the preset's own: paper 2 s, physical its 3.5 real minutes)" },
   frames = h.number { 20, min = 1, integer = true, what = "PNG frames over the run" },
+  width = h.number { 800, min = 64, max = 8192, integer = true, unit = "px",
+    what = "the PNG frames' width (the pancake is a quarter of the pan's)" },
   pour = h.number { 0.4, above = 0, unit = "s", what = "the pour's time" },
   spin = h.number { 0.5, above = 0, unit = "s", what = "the spatula's half turn" },
   gas = h.number { 0.1, min = 0, what = "a factor on the batter's CO2 rate" },
@@ -210,7 +213,7 @@ if physical then
 end
 local rows = { head }
 s:run { until_t = until_t, every = until_t / P.frames,
-  png = { field = "temperature", path = "heat_%04d.png", time_scale = S },
+  png = { field = "temperature", path = "heat_%04d.png", time_scale = S, width = P.width },
   on_frame = function(f)
     local bt, tt, th = faces()
     local my, mx = mean_place()
@@ -229,8 +232,8 @@ s:run { until_t = until_t, every = until_t / P.frames,
   end }
 local bt, tt, th = faces()
 if physical then
-  s:png("browning", "browning.png", { time_scale = S })
-  s:png("saturation", "saturation.png", { time_scale = S })
+  s:png("browning", "browning.png", { time_scale = S, width = P.width })
+  s:png("saturation", "saturation.png", { time_scale = S, width = P.width })
   local m = inside()
   print(("flipped at %.1f min (t = %.3f s); after %.1f min: face on the pan %.1f degC, top %.1f degC (probes), middle "
     .. "%.1f degC holding %.2f of its water, browning pan face %.3f, top %.3f; thickness %.1f mm; %.1f%% of the water "
