@@ -129,6 +129,14 @@ sys.exit(0 if all(ok) else 1)
 PY
     ;;
 
+# The physical preset's flip time (flip_at, real seconds) means nothing to the paper preset, which flips at set_at:
+# refused before anything runs, naming both.
+pancake_paper_flip_at_refused)
+    "$hearth" run "$scenes/pancake.lua" --quiet --set flip_at=60 >out.txt 2>err.txt && fail "flip_at ran on the paper preset"
+    grep -q "pancake.lua: --set flip_at is the physical preset's (a real time); the paper preset flips at set_at" err.txt ||
+        fail "unexpected message: $(cat err.txt)"
+    ;;
+
 # Fig. 4: the lava cake's molten centre flows out once the cut opens it: the
 # material reaches further right along the plate at the end than just after
 # the cut (by at least two cells). Before the thermal expansion fix the guard

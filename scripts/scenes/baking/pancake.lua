@@ -250,9 +250,10 @@ if physical then
   s:png("browning", "browning.png", { time_scale = S, width = P.width })
   s:png("saturation", "saturation.png", { time_scale = S, width = P.width })
   local m = inside()
-  print(("flipped at %.1f min (t = %.3f s); after %.1f min: face on the pan %.1f degC, top %.1f degC (probes), middle "
+  print(((flip_t and ("flipped at %.1f min (t = %.3f s)"):format(flip_t * S / 60, flip_t) or "not flipped yet")
+    .. "; after %.1f min: face on the pan %.1f degC, top %.1f degC (probes), middle "
     .. "%.1f degC holding %.2f of its water, browning pan face %.3f, top %.3f; thickness %.1f mm; %.1f%% of the water "
-    .. "left"):format(flip_t and flip_t * S / 60 or 0 / 0, flip_t or 0 / 0, until_t * S / 60, bt, tt,
+    .. "left"):format(s:stats().t * S / 60, bt, tt,
     m and m.T or 0 / 0, m and m.held or 0 / 0, m and m.bottom_browning or 0 / 0, m and m.top_browning or 0 / 0,
     1000 * th, m and 100 * water_left(m.n) or 0 / 0))
   return
