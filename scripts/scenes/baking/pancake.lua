@@ -27,7 +27,8 @@
 -- 167.9 degC at its pan face and top alike at 2 s. The flipped sheet lands ragged, as the paper one does: its raw
 -- side drops off the set layer as loose particles under it, so its second face meets the pan late and browns
 -- little (0.002 at 2 mm, 0.080 at 1.5 mm by 3.5 min). Not the time mapping's runny batter (its viscosity is
--- 1/60 of the real one): with the real viscosity it lands as ragged (docs/validation.md); not traced further.
+-- 1/60 of the real one) alone: with the real viscosity it lands as ragged. Likely (docs/validation.md, "The
+-- physical pancake"): far past its yield stress the plugin's batter flows at ~mu (tau_y / q)^2, ~1% of mu here.
 -- Status: the pour, the cooking and the flip work (2D, dx 2 mm: the bottom
 -- passes 70 degC at t = 0.58 s, measured at commit 76ac79a; 0.82 s when this
 -- was first written; the spatula lifts the pancake ~8 cm and lays
