@@ -5,7 +5,7 @@
 -- -c (s - s0) I pulls the flesh in, so the slice shrinks, and where the
 -- shrinking strain passes the yield surface it stays (the wrinkles).
 --   hearth run scripts/scenes/baking/drying.lua [--set dim=3] [--set until_t=12]
--- What it shows (2D, dx 2.5 mm, measured this stop's lead, #18): by the default 2 s 11.9% of the water is gone and
+-- What it shows (2D, dx 2.5 mm, measured at commit d59d707, #18): by the default 2 s 11.9% of the water is gone and
 -- 9.4% of the area, a flat slab whose skin grows wetter from the flesh (saturation 0.32 -> 0.47); by 12 s (30 s of
 -- CPU) 52.5% is gone and 32% of the area, the slice shrunk to a low ridge with a notch or two in its top, but
 -- no wrinkles as Ding's Figs. 9 and 13 show (docs/validation.md, "The shipped scenes as a user meets them").
