@@ -2,8 +2,10 @@
 # sph_melt_test.sh CASE HEARTH SOURCE_ROOT: the SPH melting block (#18; scripts/scenes/sph/melting_block.lua,
 # Rodriguez-Arenas 2011 Fig. 3.14) run as a user runs it (its 2 s), measured from its particle positions
 # alone (tests/sph_melt_measure.py). Wax or chocolate on a hot plate melts from below into a pool around a
-# shrinking block. The bars were set on 7 Dec 2026 before the scene's no-slip tray was run at either dx
-# (docs/validation.md "The melting block pools (#18, helper meltblock)"):
+# shrinking block. When the bars were set (7 Dec 2026, docs/validation.md "The melting block pools (#18, helper
+# meltblock)"): the measures (links and heights of 2 DX, the 2 DX margin) before the no-slip tray first ran; the
+# thresholds on rise, dip and spread after one 4 mm run of it with an earlier form of the wall drag and before
+# any 3 mm run or the final form; the brief's four criteria, made precise:
 #   claim_sph_melting_block_stays_whole[_fine]  the block slumps and spreads, it does not split: the centre
 #       column's top never rises more than DX/2 from one 0.1 s frame to the next (the top of a particle
 #       column moves by less than a spacing as it settles), at 2 s it is within 2 DX of the highest column
