@@ -646,6 +646,61 @@ TEST(sph_collider_response) {
     hearth_scene_destroy(s);
 }
 
+/* The channel of `poiseuille` between two sticky plane colliders instead of
+ * fixed-particle walls (no particles beyond y = 0 and y = L; 20 across,
+ * periodic in x, 1 Pa s, at L^2 / nu): a no-slip collider is a wall in eq.
+ * 3.19 (sph_collider_drag, sph_walls.c), so the steady parabola must hold to
+ * the fixed walls' bar, 3% of the peak (bar set before the first run; the
+ * walls' own channel measured 0.58%). Before, a sticky collider stopped only
+ * particles that crossed it, and the body force slid the whole layer along.
+ * Measured 3.00% (4.88% with the summed density in the wall term): an
+ * expected failure, the cause printed. */
+TEST(sph_sticky_collider_channel) {
+    const int N = 20;
+    const double L = 0.02, dx = L / N, lo[3] = {0, 0, 0}, hi[3] = {12 * dx, L, 0}, eta = 1.0, rho = 1000;
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.gravity[1] = 0;
+    d.sph.periodic[0] = 1;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    CHECK(s != NULL);
+    if (!s) return;
+    double f = 0.1 * eta;
+    const int m = newtonian(s, rho, 1e3, eta);
+    CHECK(box_body(s, m, 0, 0, hi[0], L, 0, NAN) >= 0);
+    hearth_scene_set_body_force(s, push_x, &f);
+    hearth_error e;
+    for (int k = 0; k < 2; k++) {
+        hearth_collider_def cd = hearth_default_collider_def();
+        double p[3] = {0, k ? L : 0, 0}, nrm[3] = {0, k ? -1 : 1, 0};
+        cd.shape = hearth_shape_plane(p, nrm);
+        cd.mode = HEARTH_STICKY;
+        CHECK(hearth_scene_add_collider(s, &cd, &e) >= 0);
+        hearth_shape_free((hearth_shape *)cd.shape);
+    }
+    const double nu = eta / rho;
+    CHECK(hearth_scene_advance(s, L * L / nu, &e) == HEARTH_OK);
+    const double *x = hearth_scene_positions(s), *v = pcold(&s->ps, PC_V);
+    const double peak = startup_series(f, nu, L, 0.5 * L, s->t);
+    double worst = 0;
+    for (int i = 0; i < hearth_scene_particle_count(s); i++)
+    {
+        worst = fmax(worst, fabs(v[3 * i] - startup_series(f, nu, L, x[3 * i + 1], s->t)));
+        if (getenv("SPH_DEBUG") && x[3 * i] < dx)
+            printf("y %.5f u %.5g want %.5g\n", x[3 * i + 1], v[3 * i], startup_series(f, nu, L, x[3 * i + 1], s->t));
+    }
+    printf("channel between sticky colliders, %d across: worst |u - u_exact| = %.2f%% of the peak (%.4g m/s)\n", N,
+           100 * worst / peak, peak);
+    CHECK(isfinite(worst));
+    if (!(worst / peak < 0.03))
+        XFAIL("the channel between sticky colliders is %.2f%% off its parabola (bar 3%%, the fixed walls' 0.58%%): the "
+              "first row runs 7%% fast and the second 10%% slow; a collider fills neither eq. 3.13's density sum nor "
+              "the fluid pairs' neighbourhood that fixed wall particles fill, so the two rows nearest it see a "
+              "truncated kernel (sph_collider_drag adds only eq. 3.19's wall term). 4.88%% with the virtual wall's "
+              "term over the row's summed density rather than its rest density",
+              100 * worst / peak);
+    hearth_scene_destroy(s);
+}
+
 /* Internal heat (eq. 3.45-3.46) in a pinned block, hot left half: the
  * pairwise form conserves sum m T exactly and the halves approach each other. */
 TEST(sph_heat_internal_conserves) {
@@ -806,4 +861,4 @@ TEST(sph_surface_tension_rounds_drop) {
     CHECK(J1 < J0 - 0.02); /* the whole drop rounder, not just its corner particles */
 }
 
-TEST_MAIN(T(sph_poiseuille), T(sph_wall_drag_stable), T(sph_creeping_startup_converges), T(sph_poiseuille_converges), T(sph_couette_moving_lid_converges), T(sph_viscosity_ladder), T(sph_walls_ladder), T(sph_artificial_stress_fluid), T(sph_artificial_stress_elastic), T(sph_oven_robin), T(sph_moving_lid_holds_fluid), T(sph_wall_motion_rigid), T(sph_collider_response), T(sph_heat_internal_conserves), T(sph_heat_conduction_converges), T(sph_surface_tension_rounds_drop))
+TEST_MAIN(T(sph_poiseuille), T(sph_wall_drag_stable), T(sph_creeping_startup_converges), T(sph_poiseuille_converges), T(sph_couette_moving_lid_converges), T(sph_viscosity_ladder), T(sph_walls_ladder), T(sph_artificial_stress_fluid), T(sph_artificial_stress_elastic), T(sph_oven_robin), T(sph_moving_lid_holds_fluid), T(sph_wall_motion_rigid), T(sph_collider_response), T(sph_sticky_collider_channel), T(sph_heat_internal_conserves), T(sph_heat_conduction_converges), T(sph_surface_tension_rounds_drop))

@@ -103,7 +103,8 @@
  * parameter itself (eq. 3.45 uses `sph.heat_int`), thermal expansion, CO2 and water pressure (eq. 14) (not
  * applied), wet colliders and the water's momentum (refused), collider friction and the slip/separate distinction (both
  * take the thesis response; beta_c plays friction's part; sticky is sticky,
- * and so is a grip, which carries no particles here). A rollback restores the
+ * and so is a grip, which carries no particles here; both are also no-slip
+ * walls in eq. 3.19's viscous term, sph_collider_drag in sph_walls.c). A rollback restores the
  * particles but not the final densities of eq. 3.52.
  *
  * Not built: checkpoints of SPH scenes (can_checkpoint = 0, so saving one is

@@ -382,8 +382,13 @@ static inline __attribute__((always_inline)) void forces_one(hearth_scene *s, co
      * to about 5 it would otherwise break the viscous dt limit, which is
      * set for fluid-fluid pairs (a channel at 100 Pa s blew up) */
     const int fixed = flags && (flags[i] & PF_FIXED);
+    /* a no-slip collider's wall in eq. 3.19 (sph_collider_drag): -dc (v - Vc), implicit as the walls' */
+    double Vc[3] = {0, 0, 0};
+    const double dc = fixed || s->ncol == 0 ? 0.0 : sph_collider_drag(s, i, Vc);
     for (int q = 0; q < 3; q++) /* a fixed particle keeps its prescribed velocity (sph_walls_begin) */
-        st->vnew[3 * i + q] = fixed ? v[3 * i + q] : (v[3 * i + q] + dt * a[q]) / (1.0 + dt * drag);
+        st->vnew[3 * i + q] = fixed     ? v[3 * i + q]
+                              : dc > 0 ? (v[3 * i + q] + dt * a[q] + dt * dc * Vc[q]) / (1.0 + dt * (drag + dc))
+                                       : (v[3 * i + q] + dt * a[q]) / (1.0 + dt * drag);
 }
 
 /* Accelerations, then the kick into st->vnew (sph_step then takes the heat

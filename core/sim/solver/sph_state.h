@@ -161,6 +161,10 @@ static inline double sph_wall_beta(const double d[3], const double n[3], double 
     const double db = d[0] * n[0] + d[1] * n[1] + d[2] * n[2] - da;
     return db > 0 ? 1.0 + db / dah : 1.0;
 }
+/// Particle i's viscous drag (eq. 3.19, 1/s) from the no-slip (sticky, grip) colliders within its h, as
+/// virtual wall particles with Morris et al.'s velocities (sph_walls.c): the kick takes -D (v_i - V)
+/// implicitly, V the colliders' velocity (weighted by their parts of D). 0 (and V = 0) when none is near.
+double sph_collider_drag(const hearth_scene *s, int i, double V[3]);
 /// At the start of a step (serial: it may call motion callbacks): every fixed
 /// particle's velocity, its body's prescribed motion at time t or 0.
 void sph_walls_begin(hearth_scene *s, double t);

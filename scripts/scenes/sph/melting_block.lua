@@ -1,12 +1,21 @@
 -- A block melting on a hot floor with the SPH solver (Rodriguez-Arenas 2011 Fig. 3.14).
---   hearth run scripts/scenes/sph/melting_block.lua [--set floor=150]
+--   hearth run scripts/scenes/sph/melting_block.lua [--set floor=150] [--set dx=0.003]
 -- A stiff block (maxwell_sph whose viscosity and mu_e fall with temperature,
 -- through h.curve) sits on a heated tray. Heat enters the particles touching
 -- the tray (eq. 3.42) and diffuses (eq. 3.45-3.46); the bottom softens first
--- and the block slumps into a puddle. Writes height.csv (top of the material
--- above the tray over time). heat_ext (eq. 3.42 per unit area, h / c in
--- kg/(m^2 s), animation-scaled) is 6.1, the heat the thesis's printed form
--- gave with 3e8 at this dx (3e8 dx^3 / pi in 2D).
+-- and its melt runs out into a pool around the shrinking block. Writes
+-- height.csv (top of the material above the tray over time) and
+-- particles_NNNN.csv (x, y in m at each 0.1 s frame, NNNN = 0 at t = 0;
+-- tests/sph_melt_measure.py measures the pool from them). heat_ext (eq. 3.42
+-- per unit area, h / c in kg/(m^2 s), animation-scaled) is 6.1, the heat the
+-- thesis's printed form gave with 3e8 at this dx (3e8 dx^3 / pi in 2D).
+-- The tray is no-slip (mode "sticky": eq. 3.33 with beta_c = 0, which the
+-- thesis names the non-slip condition): a viscous melt does not slide on a
+-- plate, and the no-slip collider is a wall in eq. 3.19's viscous term
+-- (sph_walls.c). On the free-slip tray the melt ran out from under the block
+-- as single particles at up to 1 m/s, hit the box's walls and flew up to
+-- 70 mm, and the block's bottom slid apart until it split down its middle at
+-- 1.9 s (docs/validation.md "The melting block pools (#18, helper meltblock)").
 local h = require "hearth"
 local P = h.params {
   floor = h.number { 150, min = -273.15, max = 5000, unit = "degC", what = "the floor's temperature" },
@@ -20,7 +29,7 @@ local wax = h.material("maxwell_sph", {
   mu_e = h.curve { { 20, 2e3 }, { 45, 200 }, { 70, 1 } },
 })
 s:add { shape = h.box({ 0.11, 0.01 }, { 0.19, 0.07 }), material = wax, ppc = 1, jitter = 0, temperature = 20 }
-s:collider { shape = h.plane({ 0, 0.01 }, { 0, 1 }), mode = "slip", temperature = P.floor, beta = 0 }
+s:collider { shape = h.plane({ 0, 0.01 }, { 0, 1 }), mode = "sticky", temperature = P.floor, beta = 0 }
 
 local rows = { "t,top_m" }
 local function top()
@@ -33,5 +42,8 @@ s:run { until_t = 2.0, every = 0.1, png = { field = "temperature", path = "frame
   on_frame = function(f)
     rows[#rows + 1] = ("%.3f,%.4f"):format(f.t, top())
     h.write("height.csv", table.concat(rows, "\n") .. "\n")
+    local x, pos = s:positions(), { "x,y" }
+    for i = 1, #x // 3 do pos[#pos + 1] = ("%.6g,%.6g"):format(x[3 * i - 2], x[3 * i - 1]) end
+    h.write(("particles_%04d.csv"):format(#rows - 2), table.concat(pos, "\n") .. "\n")
   end }
 print(("melting block: height %.3f m at t = %.2f s"):format(top(), s:stats().t))
