@@ -34,10 +34,12 @@ d=hearth-out/bread_of_the_dead
 for f in $(ls $d/particles_0*.csv | sort) $d/particles_end.csv; do
     m=$(python3 "$here/sph_dead_measure.py" $dx $d/particles_0000.csv "$f") || fail "measure $f: $m"
     echo "$(basename "$f"): $m"
+    [ "$(basename "$f")" = particles_0000.csv ] && raw_open=${m##* }
 done
 read -r _ pieces _ share _ closed _ opened <<<"$m"
 echo "dx $dx at t = 1.2 s: $pieces piece(s), the largest holding $share of the particles; the largest closed void" \
-    "$closed DX^2 (bar: 1), the largest open one $opened DX^2 (not judged: the raw loaf's notches are 6.4)"
+    "$closed DX^2 (bar: 1), the largest open one $opened DX^2 (not judged: the raw loaf's notches between its" \
+    "bones and body are $raw_open)"
 [ "$pieces" = 1 ] || fail "at dx $dx the loaf is in $pieces pieces at 1.2 s"
 python3 -c "import sys; sys.exit(0 if $closed <= 1.0 else 1)" ||
     fail "at dx $dx a gap of $closed DX^2 has opened inside the loaf by 1.2 s"
