@@ -56,9 +56,9 @@ static void cell_span(const double *p, double R, const double o[3], double cs, c
     }
 }
 
-/* Each outer particle's share of the outer surface, st->oface: the face of
- * its rest volume, V^((d-1)/d) (a boundary node's in MPM, boundary.c),
- * shrunk where the outer particles crowd along the surface. A fixed face per
+/* The share of its rest face each outer particle stands for, st->oshare:
+ * 1, the face of its rest volume, V^((d-1)/d) (a boundary node's in MPM,
+ * boundary.c), less where the outer particles crowd along the surface. A fixed face per
  * particle is the surface's area only while the outer particles stand at
  * their rest spacing along it: the bread of the dead's lowest rows, squeezed
  * into one line on its tray (#18: 34 particles on 40 mm at 2 mm spacing,
@@ -68,7 +68,7 @@ static void cell_span(const double *p, double R, const double o[3], double cs, c
  *   S_i = sum_j (1 - r_ij / (1.4 sp_i))_+   (j = i included),
  * against the same count on a resting lattice's face, S_ref (a row's two
  * neighbours at one spacing in 2D, a square layer's four in 3D), and
- *   oface_i = face_i min(1, S_ref / S_i)
+ *   oshare_i = min(1, S_ref / S_i)
  * (the squeezed base's 48 particles on 57 mm at 0.5 s: 0.65 each, faces of
  * 62 mm where the rest face gave 96). The hat
  * stops short of sqrt 2 spacings so that the two neighbours of a block's
@@ -94,7 +94,7 @@ static void outer_faces(hearth_scene *s) {
     const double Sref = 1 + 2 * (dim - 1) * outer_share(1.0); /* a row's two neighbours, a square layer's four */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        st->oface[i] = 0;
+        st->oshare[i] = 0;
         if (!(st->outer[i] > 0)) continue;
         const double Vr = m[i] / st->rho0[i], sp = dim == 3 ? cbrt(Vr) : sqrt(Vr);
         double S = 1;
@@ -106,7 +106,8 @@ static void outer_faces(hearth_scene *s) {
             const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
             S += outer_share(r / sp);
         }
-        st->oface[i] = Vr / sp * fmin(1.0, Sref / S);
+        /* a lattice's face reads S_ref to round-off: 1 exactly there, so its heat keeps its bits */
+        st->oshare[i] = S > Sref * (1 + 1e-9) ? Sref / S : 1.0;
     }
 }
 
