@@ -19,7 +19,7 @@
 -- 1.342 against V_b(T) 1.343) (#18, helper deadbread, docs/validation.md "The
 -- bread of the dead stays in one piece": eq. 3.51 now stops where the bubble
 -- reaches its gas's volume, sph.c's bubble_expands, and the base squeezed on
--- the tray takes the oven's heat for its length, sph_outer.c's oface). Before
+-- the tray takes the oven's heat for its length, sph_outer.c's oshare). Before
 -- that, with the heat on the body's outer surface (sph_outer.c, the tray's face
 -- included): relative volume 1.532, ball top 73.0 mm; by 0.9 s the two lowest
 -- knuckles had parted from the body (3 pieces) and by 1.1 s two slits of 13.5
