@@ -106,6 +106,57 @@ TEST(sph_bubble_expansion) {
     hearth_scene_destroy(s);
 }
 
+/* A heating bubble stops at its gas (#18, helper deadbread): eq. 3.51
+ * pushes while the bubble particle is smaller than its gas, rho_i > rho0 /
+ * V_b(T) (eq. 3.49-3.50), and no longer ("Equation 3.51 ... cannot be used
+ * indefinitely since the volume will continue to increase", the thesis after
+ * it). Heated from 26 to 100 degC over 600 steps and then slowly on to 110
+ * over 2000 more (every step warmer, so eq. 3.51 stays on as long as it may),
+ * the bubble particles away from the surface stand at a mean rho0 / rho of at
+ * most 1.05 V_b(T): the bar set before the first run. Before the volume test
+ * they pushed at B (V_b - 1) for as long as they heated and the bread of the
+ * dead's bubbles reached 1.44 V_b (docs/validation.md "The bread of the dead
+ * stays in one piece"). */
+TEST(sph_bubble_stops_at_gas_volume) {
+    int nd = 0;
+    hearth_scene *s = bubble_dough(&nd);
+    CHECK(s != NULL);
+    if (!s) return;
+    hearth_error err;
+    const int n = s->ps.n;
+    double *T = pcold(&s->ps, PC_TEMPERATURE);
+    for (int i = 0; i < n; i++) T[i] = 26;
+    CHECK(hearth_scene_step(s, 50, &err) == HEARTH_OK);
+    const double V0 = sph_volume(s);
+    double Tnow = 26;
+    for (int k = 0; k < 2600; k++) {
+        Tnow = k < 600 ? 26 + 74.0 * (k + 1) / 600 : 100 + 10.0 * (k - 599) / 2000;
+        T = pcold(&s->ps, PC_TEMPERATURE);
+        for (int i = 0; i < n; i++) T[i] = Tnow;
+        if (hearth_scene_step(s, 1, &err)) {
+            fprintf(stderr, "%s\n", err.msg);
+            CHECK(0);
+            hearth_scene_destroy(s);
+            return;
+        }
+    }
+    const double *rho = sph_particle_values(s, "density"), *surf = sph_particle_values(s, "surface");
+    const int *mat = pcoli(&s->ps, PC_MAT);
+    double sum = 0, worst = 0;
+    int cnt = 0;
+    for (int i = 0; i < n; i++) {
+        if (!(s->mats.slot[mat[i]].core[CP_BUBBLE] > 0) || surf[i] > 0.5) continue;
+        const double e = 1000 / rho[i];
+        sum += e, cnt++, worst = fmax(worst, e);
+    }
+    const double Vb = (Tnow + 273.15) / (26 + 273.15), mean = cnt ? sum / cnt : 0;
+    printf("at %.1f degC (V_b %.4f): %d inner bubble particles at mean rho0 / rho %.4f (%.4f V_b), largest %.4f; "
+           "relative volume %.4f\n", Tnow, Vb, cnt, mean, mean / Vb, worst, sph_volume(s) / V0);
+    CHECK(cnt > 0 && mean <= 1.05 * Vb);
+    (void)nd;
+    hearth_scene_destroy(s);
+}
+
 /* A cooling bubble contracts (eq. 3.51's ideal gas in reverse): heat a
  * bubble dough from 26 to 100 degC, then cool it back to 40 degC step by
  * step: the volume falls with every cooling stage, by what the bubble
@@ -236,4 +287,4 @@ TEST(sph_gas_law_bubble_volume) {
     CHECK(sph_bubble_volume(&o, 1, 26) < sph_bubble_volume(&o, 1, 50));
 }
 
-TEST_MAIN(T(sph_bubble_expansion), T(sph_bubble_cooling_contracts), T(sph_gas_law_follows_temperature), T(sph_gas_law_bubble_volume))
+TEST_MAIN(T(sph_bubble_expansion), T(sph_bubble_stops_at_gas_volume), T(sph_bubble_cooling_contracts), T(sph_gas_law_follows_temperature), T(sph_gas_law_bubble_volume))

@@ -117,7 +117,8 @@
  * splitting at 1.9 s. The bread roll (#18) split by 0.3 s with the pressure
  * clamped (no cohesion: its stretched base tears as it slumps, before it has
  * warmed), and with `tension` and artificial stress its top burst at 1.64 s
- * under eq. 3.51, whose bubble pushes by whatever volume it already gained;
+ * under eq. 3.51, whose bubble then pushed by whatever volume it already
+ * gained (it now stops at its gas's volume, bubble_expands);
  * its preset (h.library.sph.bread_roll) now takes tension, artificial stress
  * and sph.gas_law (docs/validation.md "SPH bread roll (#18)"), and with the
  * gas law the density sums rest volumes (sort_and_list): eq. 3.13's mass sum
@@ -186,7 +187,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
 #define ARRAYS(X)                                                                                                      \
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(surf, 1) X(rhof, 1)                  \
         X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9) X(vc, 1)  \
-        X(vr, 1) X(outer, 1)
+        X(vr, 1) X(outer, 1) X(oshare, 1)
 
 /* Frees the per-particle columns (ARRAYS, key, order) of a set sized for cap
  * particles: sph_free's set, and ensure's old set or the new one it could not
@@ -430,9 +431,28 @@ static hearth_status phase_density(hearth_scene *s, hearth_error *err) {
     return HEARTH_OK; /* st->rho: summed with the new lists */
 }
 
+/* Whether bubble particle i expands by eq. 3.51: while it heats above
+ * bubble_T0 and is still smaller than its gas, rho_i > rho_bi = rho0 / V_b
+ * (eq. 3.49-3.50). The thesis (after eq. 3.51): "Equation 3.51 for bubble
+ * pressure cannot be used indefinitely since the volume will continue to
+ * increase. In order to avoid this, the pressure term changes back to" Tait
+ * (eq. 3.17, against the final density of eq. 3.52). Without the volume test
+ * a bubble pushed at B (V_b - 1) for as long as it heated, whatever volume it
+ * had reached: in the bread of the dead (#18) the bubbles stood at rho0 / rho
+ * = 1.93 at 1.2 s where their gas's V_b(T) was 1.34, and the webs of dough
+ * between them tore into slits (docs/validation.md "The bread of the dead
+ * stays in one piece"). rho_i is eq. 3.48's, the summed density. */
+static inline int bubble_expands(const hearth_sph_def *o, const struct sph_state *st, int i, double bub,
+                                 const double *T) {
+    if (!(bub > 0) || !T || !(T[i] > o->bubble_T0) || !(T[i] > st->Tprev[i])) return 0;
+    const double Vb = bub * (T[i] + KELVIN) / (o->bubble_T0 + KELVIN);
+    return st->rho[i] * Vb > st->rho0[i];
+}
+
 /* Pressure: Tait (eq. 3.17) against the final density (eq. 3.52); bubble
- * particles (eq. 3.48-3.51) while they heat. While any bubble expands, dough
- * and bubbles keep their density as the final density. */
+ * particles (eq. 3.48-3.51) while they heat and are smaller than their gas
+ * (bubble_expands). While any bubble expands, dough and bubbles keep their
+ * density as the final density. */
 static void phase_pressure(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
@@ -448,8 +468,6 @@ static void phase_pressure(hearth_scene *s) {
         const material_slot *ms = &s->mats.slot[mat[i]];
         const double gam = o->gamma, rho0 = st->rho0[i];
         const double bub = ms->core[CP_BUBBLE];
-        /* a bubble expands while its temperature rises (since the last step) above bubble_T0 */
-        const int heating = T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
         if (!isfinite(st->rhof[i])) st->rhof[i] = rho0;
         /* A cooling bubble contracts: eq. 3.51's ideal gas in reverse (V
          * proportional to absolute temperature), so its final density of
@@ -459,7 +477,7 @@ static void phase_pressure(hearth_scene *s) {
         if (bub > 0 && T && T[i] < st->Tprev[i])
             st->rhof[i] = fmin(rho0, st->rhof[i] * (st->Tprev[i] + KELVIN) / (T[i] + KELVIN));
         st->prs[i] = st->B[i] * (pow(st->rho[i] / st->rhof[i], gam) - 1); /* eq. 3.17, 3.52 */
-        if (bub > 0 && heating) { /* eq. 3.51 (Kelvin: ideal gas) */
+        if (bubble_expands(o, st, i, bub, T)) { /* eq. 3.51 (Kelvin: ideal gas) */
             const double Vb = bub * (T[i] + KELVIN) / (o->bubble_T0 + KELVIN);
             /* Not below Tait: eq. 3.51 alone has no resistance to compression,
              * so a heating bubble squeezed by its neighbours (on a tray, seen)
@@ -473,7 +491,7 @@ static void phase_pressure(hearth_scene *s) {
     }
     int any_heating = 0;
     for (int i = 0; i < n && !any_heating; i++)
-        any_heating = s->mats.slot[mat[i]].core[CP_BUBBLE] > 0 && T && T[i] > o->bubble_T0 && T[i] > st->Tprev[i];
+        any_heating = bubble_expands(o, st, i, s->mats.slot[mat[i]].core[CP_BUBBLE], T);
     if (any_heating) {
         /* A surface particle's summed density is low for want of neighbours,
          * not because it expanded: keeping that as its final density would

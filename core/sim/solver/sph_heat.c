@@ -130,14 +130,16 @@ void sph_heat_rates(hearth_scene *s) {
                  * (kg/(m^2 s)) and
                  *   dT_i/dt = k_h,ext (T_ext - T_i) A_i / m_i,
                  * A_i = V_i^((d-1)/d) the particle's face (its rest volume
-                 * V_i = m_i / rho0_i, eq. 3.43's, as the Robin term below):
+                 * V_i = m_i / rho0_i, eq. 3.43's, as the Robin term below;
+                 * times st->oshare, less than 1 where the outer particles
+                 * crowd along the surface, sph_outer.c):
                  * r_i^2 / rho_i becomes A_i / (rho_i V_i) with the mass for
                  * rho_i V_i (a surface particle's summed density is low for
                  * want of neighbours). The sum over a surface row is
                  * k (T_ext - T) times its area, at any dx
                  * (sph_heat_ext_flux_per_area). The thesis's sign is
                  * reversed: heat flows from the hotter side. */
-                const double Vr = m[i] / st->rho0[i], face = dim == 3 ? cbrt(Vr) * cbrt(Vr) : sqrt(Vr);
+                const double Vr = m[i] / st->rho0[i], face = (dim == 3 ? cbrt(Vr) * cbrt(Vr) : sqrt(Vr)) * st->oshare[i];
                 dTi += o->heat_ext * (Tout - T[i]) * face / m[i] * (dry ? msi->core[CP_SPECIFIC_HEAT] : 1.0);
             }
         }
@@ -145,14 +147,15 @@ void sph_heat_rates(hearth_scene *s) {
         if (robin) { /* the oven's Robin flux and heated colliders' contact beta, as MPM sees them */
             /* Each surface particle (the ones eq. 3.42 heats) carries its
              * face, V^((d-1)/d) of its rest volume, as a boundary node does in
-             * MPM (boundary.c); a particle within its spacing of a heated
+             * MPM (boundary.c), less where outer particles crowd (st->oshare,
+             * sph_outer.c); a particle within its spacing of a heated
              * collider carries the same face of contact (MPM: within dx). The
              * colour gradient as a surface delta (V |grad C|) would need no
              * flag, but with particles on one side only it sums to 0.69 of a
              * block's outline. */
             const double ci = dry ? ai : msi->core[CP_SPECIFIC_HEAT], Vr = m[i] / st->rho0[i];
             const double sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
-            double coef = beta_oven > 0 && st->outer[i] ? face * beta_oven : 0.0, Tr = Text;
+            double coef = beta_oven > 0 && st->outer[i] ? face * st->oshare[i] * beta_oven : 0.0, Tr = Text;
             for (int q = 0; q < s->ncol; q++) {
                 const collider *cl = &s->cols[q];
                 if (isnan(cl->temperature) || !(cl->beta > 0) || !collider_near(cl, x + 3 * i)) continue;
@@ -163,7 +166,7 @@ void sph_heat_rates(hearth_scene *s) {
             }
             if (coef > 0 && ci > 0) dTi += coef * (Tr - T[i]) / (m[i] * ci);
             /* the oven's part (W), for latent_heat's ledger: coef (Tr - T) is the sum of its parts */
-            if (ledger) st->qo[i] = beta_oven > 0 && st->outer[i] ? face * beta_oven * (Text - T[i]) : 0.0;
+            if (ledger) st->qo[i] = beta_oven > 0 && st->outer[i] ? face * st->oshare[i] * beta_oven * (Text - T[i]) : 0.0;
         }
         st->dT[i] = dTi;
     }

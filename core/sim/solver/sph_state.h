@@ -63,8 +63,10 @@ struct sph_state {
     int visc_cap;
     sph_wall_motion *walls; /* moving fixed bodies (hearth_scene_body_motion), nwalls of walls_cap */
     int nwalls, walls_cap;
-    /* sph_outer.c: the outer-surface flag per particle (in ARRAYS) and its grid's scratch, og_cap cells */
-    double *outer;
+    /* sph_outer.c: the outer-surface flag per particle and the share of its rest face each outer particle stands
+     * for (oshare: 1 at the rest spacing, less where outer particles crowd), both in ARRAYS, and its grid's
+     * scratch, og_cap cells */
+    double *outer, *oshare;
     uint8_t *og;
     int *oq;
     size_t og_cap;

@@ -141,7 +141,8 @@ void sph_water_rates(hearth_scene *s) {
         }
         double e = 0;
         if (st->outer[i] && ms->core[CP_EVAPORATION] > 0) {
-            const double Vr = m[i] / st->rho0[i], sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
+            /* its share of the outer surface (sph_outer.c), the face eq. 3.42's heat enters by */
+            const double Vr = m[i] / st->rho0[i], sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp * st->oshare[i];
             const double th = (T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN;
             e = water_evaporation(ms->core[CP_EVAPORATION], ms->core[CP_WATER_DIFFUSIVITY], rwi, th, sw[i], s_amb, 0.5 * sp,
                                   face, psat_b);

@@ -15,14 +15,19 @@
 -- volume it gained. The thesis does the same by hand (§4.5: rho_f raised,
 -- mu_e and lambda lowered after baking); turning the pan over is what a baker
 -- does to stop it, not modelled. Measured (2D default, the per-area heat
--- below on the cake's outer surface, sph_outer.c): relative volume 2.33 at
--- the end of baking (t = 1.5 s), 1.87 at t = 3.5 s (mean 29 degC); the crumb
--- is the coolest band while it bakes (bands.csv: 104 degC against the top's
--- 137 and the bottom's 132 at 0.5 s, at dx 3 and 2 mm alike), though the
+-- below on the cake's outer surface, sph_outer.c, and eq. 3.51 stopped where
+-- a bubble reaches its gas's volume, sph.c's bubble_expands, #18 helper
+-- deadbread): relative volume 1.205 at the end of baking (t = 1.5 s), 0.993
+-- at t = 3.5 s (mean 28 degC): the 40% of bubble particles grow by their
+-- gas's T / T0 (1.48 at 170 degC) and no further; the crumb is the coolest
+-- band while it bakes (bands.csv at 0.5 s: 114 degC against the top's 126
+-- and the bottom's 125 at dx 3 mm, 116 / 128 / 126 at 2 mm). Before the
+-- stop, with eq. 3.51 pushing for as long as a bubble heated: 2.33 and 1.87
+-- (mean 29 degC), the crumb band 104 degC against 137 and 132, though the
 -- whole cake passes 150 degC by 1 s (no water, so no boiling plateau holds the
--- crumb near 100 degC, and the crumb browns); a few particles are thrown onto
--- the tube's top; the halves' mean temperatures agree to 6e-12 degC
--- throughout. Until the oven's heat entered at the outer surface (#18) it
+-- crumb near 100 degC, and the crumb browns); a few particles were thrown
+-- onto the tube's top then (none now); the halves' mean temperatures agree
+-- to 6e-12 degC throughout. Until the oven's heat entered at the outer surface (#18) it
 -- entered at the colour field's surface particles, which in the risen cake
 -- were batter rows inside it and not its top: 2.25 and 2.00 (mean 82 degC),
 -- the crumb band 17 degC hotter than the top at 0.5 s, and the mean 16.6

@@ -12,13 +12,23 @@
 -- XSPH (eq. 3.34, 0.6 raw to 0.9 baked by eq. 4.4, the thesis's own
 -- stiffening knob) and Monaghan's artificial stress (sph.artificial_stress,
 -- 0.3) against the tensile instability of the stretched dough.
--- Measured (2D default, to t = 1.2 s, the per-area heat below on the body's
--- outer surface, sph_outer.c, the tray's face included): relative volume
--- 1.532, ball top 73.0 mm above the tray; by 1.1 s the two lowest knuckles
--- have parted from the body and a slit has opened under the top ball (#18,
--- docs/validation.md "The angel food cake heats from inside": with eq. 3.42
--- at the colour field's surface particles the base's middle on the hot tray
--- read about 90 degC in the 1.1 s frame, now about 140). Before that: relative
+-- Measured (2D default, to t = 1.2 s; tests/sph_dead_measure.py reads the
+-- particles_*.csv it writes): relative volume 1.067, ball top 57.5 mm above
+-- the tray, one piece with no gap inside (claim_sph_bread_of_the_dead_one_piece),
+-- the bones in place; the bubbles stand at their gas's volume (mean rho0 / rho
+-- 1.342 against V_b(T) 1.343) (#18, helper deadbread, docs/validation.md "The
+-- bread of the dead stays in one piece": eq. 3.51 now stops where the bubble
+-- reaches its gas's volume, sph.c's bubble_expands, and the base squeezed on
+-- the tray takes the oven's heat for its length, sph_outer.c's oshare). Before
+-- that, with the heat on the body's outer surface (sph_outer.c, the tray's face
+-- included): relative volume 1.532, ball top 73.0 mm; by 0.9 s the two lowest
+-- knuckles had parted from the body (3 pieces) and by 1.1 s two slits of 13.5
+-- raw particle areas had opened under the top ball, where the bubbles stood at
+-- 1.44x their gas's volume (pushed for as long as they heated); the base's
+-- middle on the hot tray read about 140 degC at 1.1 s, its squeezed bottom row
+-- taking 1.7 faces of heat per face of base. With eq. 3.42 at the colour
+-- field's surface particles (which missed that row) the base's middle read
+-- about 90 degC in the 1.1 s frame. Before that: relative
 -- volume 1.244, ball top 63.5 mm above the tray (62.5 mm at the start, 55.0
 -- after settling; 1.230 and 63.0 mm before XSPH's pair epsilon and the time
 -- step of eq. 3.52's stiffness, sph.c), bones in place, one piece, the crust near 160 degC and the
@@ -38,7 +48,10 @@
 -- (The thesis's printed form had 4e8, 1.0 in these units at dx 2 mm: the
 -- numbers measured above were taken with it.)
 -- Writes volume.csv: relative volume (from a density slice), the height of
--- the top ball and of a bone knuckle above the tray, over time.
+-- the top ball and of a bone knuckle above the tray, over time; and
+-- particles_NNNN.csv (the raw loaf, then every frame) and particles_end.csv
+-- (at until_t): x, y (m), T (degC) and outer (1 where the oven's heat
+-- enters, sph_outer.c) per particle.
 local h = require "hearth"
 -- mu_e, viscosity, lambda and vb0 (the bubble's V_b0, eq. 3.50) in maxwell_sph's ranges
 local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
@@ -122,9 +135,18 @@ local function top_at(x)
   return y - tray
 end
 local knuckle_x = on_body(math.pi / 2 + 1.25, kn)[1]
+-- particle positions (x, y in m), temperatures and the outer-surface flag, for measures that do not go
+-- through the density field (tests/sph_dead_measure.py's pieces and inner gaps; bread_roll.lua writes its own)
+local function positions(path)
+  local r = s:particles { fields = { "x", "temperature", "boundary" } }
+  local x, T, b, rows = r.x, r.temperature, r.boundary, { "x,y,T,outer" }
+  for i = 1, #T do rows[#rows + 1] = ("%.6g,%.6g,%.2f,%d"):format(x[3 * i - 2], x[3 * i - 1], T[i], b[i]) end
+  h.write(path, table.concat(rows, "\n") .. "\n")
+end
 s:step(1) -- the density slice needs one SPH step (before it the probe has no SPH density)
 local A0 = area()
 local csv = { "t,relative_volume,ball_top_m,knuckle_top_m" }
+positions("particles_0000.csv")
 -- the frames' titles give the real time the scene's S = 1500 stands for, then the simulated seconds; browning
 -- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
 -- dark grey discs, which on the browning map read as burnt spots through the crumb
@@ -134,6 +156,8 @@ s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "fr
     csv[#csv + 1] = ("%.4f,%.5f,%.5f,%.5f"):format(f.t, area() / A0, top_at(cx), top_at(knuckle_x))
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
     f:png("temperature", "frames/temperature_%04d.png", { time_scale = 1500 })
+    positions(("particles_%04d.csv"):format(#csv - 1))
   end }
+positions("particles_end.csv") -- the loaf at until_t (the frames stop one interval short of it)
 print(("bread of the dead: relative volume %.3f, top ball %.4f m above the tray at t = %.2f s"):format(
   area() / A0, top_at(cx), s:stats().t))
