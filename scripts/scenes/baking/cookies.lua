@@ -118,7 +118,7 @@ local defaults = { dim = h.number { 2, min = 2, max = 3, integer = true, what = 
   dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 0, min = 0, unit = "s", what = "the bake's simulated time (0: the preset's own)" },
   frames = h.number { 5, min = 1, integer = true, what = "PNG frames over the bake" }, ovens = { 190, 150, 110 },
-  leaveners = { 0.015, 0.0075, 0 }, gas = h.number { 1, min = 0, what = "a factor on the CO2 rates" },
+  leaveners = { 0.015, 0.0075, 0 }, gas = h.number { 1, min = 0, what = "a factor on the CO2 rates (and the physical preset's amounts)" },
   tray_mode = h.choice("separate", h.contact_words),
   tray_friction = h.number { 0.4, min = 0, what = "the tray's Coulomb friction coefficient" },
   seed = h.number { 1, min = 0, integer = true, what = "the particles' seeding (0 acts as 1)" },
@@ -211,6 +211,9 @@ for _, T in ipairs(ovens) do
     if physical then -- both of the preset's CO2 shares (its NH4Cl share is gas_rate_2, dough_physical.lua)
       d.gas_rate = d.gas_rate * a / A_PRESET * P.gas; gas_of[i] = d.gas_rate
       if d.gas_rate_2 then d.gas_rate_2 = d.gas_rate_2 * a / A_PRESET * P.gas end
+      -- and each share's amount (its reactant: the leavener), the same factor
+      if d.gas_amount then d.gas_amount = d.gas_amount * a / A_PRESET * P.gas end
+      if d.gas_amount_2 then d.gas_amount_2 = d.gas_amount_2 * a / A_PRESET * P.gas end
     else d.gas_rate = a * h.library.dough_scale.gas * P.gas end
     if not physical then d.conductivity = d.conductivity * P.conductivity end
     local S0, WATER_S = 0.10, 600 -- the levers above: water as dough.lua's WATER (2e-7 m^2/s, 1.2e-3 kg/(m^2 s K), x600)
