@@ -152,8 +152,8 @@ D.goods = {
     -- the NH4Cl reaction runs as the dough heats and its NH3 and CO2 leave. Ding et al.'s eq. 14 bell is what the
     -- plugin has: centre theta_r = 100 degC (the top of that range and the dough's boiling plateau), width 20 K, so
     -- the rate is e^-1 of its peak at 80 degC, 2% at 60 and 1e-7 in the 20 degC raw dough. The bell falls again past
-    -- 100 degC where a real soda's rate keeps rising; only the crust passes 100. Eq. 14 has no depletion, so the rate
-    -- is set by the amount: the one bell's peak rate (before the two shares below) was 0.069 mol/kg over the 229 s the bell integrates to along the dough's
+    -- 100 degC where a real soda's rate keeps rising; only the crust passes 100. Eq. 14 has no depletion of its own, so
+    -- the rate was set from the amount (since helper depletion the amount also caps it, below): the one bell's peak rate (before the two shares below) was 0.069 mol/kg over the 229 s the bell integrates to along the dough's
     -- centre temperature in this preset's 190 degC, 11 minute bake (cookies.lua --set preset=physical, dx 5 mm,
     -- series.csv, 22 frames, with this preset's earlier gas: 20 degC to 100 at 11 minutes): 0.069 / 229 = 3.0e-4
     -- mol/(kg s) (under the gas law below the centre reads 216 s, 0.065 mol/kg). The hotter outer dough makes more
@@ -178,8 +178,8 @@ D.goods = {
     -- 11 minute bake below ~50. The solid salt decomposes from ~75 degC (DSC, Resentera et al. 2025, Ind. Eng.
     -- Chem. Res., abstract), but in this dough it is dissolved. Centre 60 degC (where the sources agree the release
     -- is under way), width 20 K: e^-1 of the peak at 40 (the sheet's "rapidly") and at 80, 2% in the 20 degC raw
-    -- dough (its slow room-temperature loss). Eq. 14 has no depletion: the bell's fall past 60 stands for the share
-    -- running out, as the solution's rate falls once its HCO3- is spent. The leftover soda, 2.42 / 88.7 = 0.0273
+    -- dough (its slow room-temperature loss). Eq. 14 has no depletion of its own: the bell's fall past 60 stood for
+    -- the share running out, as the solution's rate falls once its HCO3- is spent (gas_amount_2 below now ends it). The leftover soda, 2.42 / 88.7 = 0.0273
     -- mol/kg, keeps the one bell's 100 degC, 20 K (the bicarbonate-carbonate equilibrium; no source found for
     -- another). Each peak rate is the share's amount over the time its bell integrates to along the dough centre's
     -- temperature in this preset's 190 degC bake before the shares (main's binary at 5cac4e3, cookies.lua --set

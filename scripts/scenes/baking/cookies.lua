@@ -48,8 +48,11 @@
 --                           sodatwo)"; since open pores vent toward the atmosphere, not to a vacuum,
 --                           the 150 and 110 degC cookies no longer shed pieces, and at 110 the most
 --                           leavened is a foam of J ~3.5: "The physical cookie in the cooler ovens
---                           (#18, helper cookiecool)"). The leavener a scales
---                           both of the preset's shares by a / 0.015, so 0.015 is the formula's. until_t = 0 bakes the preset's own time (paper 5 s).
+--                           (#18, helper cookiecool)"; each share now stops at the formula's amount,
+--                           0.042 mol/kg of the NH4Cl share and 0.027 of the soda, where the bell alone
+--                           made 0.056 of the first at 110 degC: "A leavener runs out (#18, helper
+--                           depletion)"). The leavener a scales both of the preset's shares (their
+--                           rates and amounts) by a / 0.015, so 0.015 is the formula's. until_t = 0 bakes the preset's own time (paper 5 s).
 --   [--set seed=2]        the particles' jitter (h.scene's seed, default 1): a
 --                           new sampling of the same dough, to see a reading's
 --                           noise (docs/validation.md, "Fig. 17: the top's
