@@ -288,8 +288,8 @@ if all(float(r["leavener"]) == 0.015 for r in bad):
           "CO2 share now stops at its amount (the NH4Cl share's 0.042 mol/kg, where eq. 14's bell alone made 0.056), but "
           "the foam it makes still swells to a median J ~3.3 (3.6 before): its particles stand dx/2 sqrt(J) ~0.9 dx apart, "
           "near the link (5 mm: 10 of 158 beyond it, 57 before; 3.75 mm: 141 of 280, 195 before; none by the stretched "
-          "link); which of them leave was not "
-          "traced. At 3.75 mm a few of the rim's outer particles slide down the flank to the tray, a link off the body, at "
+          "link; at 5 mm 8 of the 10 are one group on the top's shoulder, a swollen layer a little more than dx off the crumb, "
+          "and 2 the rim's tip). At 3.75 mm a few of the rim's outer particles slide down the flank to the tray, a link off the body, at "
           "190 and 150 degC. docs/validation.md 'The physical cookie in the cooler ovens (#18, helper cookiecool)' and "
           "'A leavener runs out (#18, helper depletion)'")
     sys.exit(77)
