@@ -87,19 +87,27 @@ static int traceback(lua_State *L) {
                               luaL_typename(L, 1));
     /* An error raised in the scene's main chunk itself (its own check of a --set value, or a slip on a top-level
      * line) already names the file and line, and a traceback would repeat that line under "stack traceback:";
-     * userview saw users read it as a crash. Keep it where it says more: any Lua function between the error and
-     * the chunk (a helper, an on_frame callback, hearth's own modules). */
-    int lua_frames = 0, main_only = 1;
+     * userview saw users read it as a crash. So does a refusal hearth's own modules raise at the caller's line
+     * (h.material's range check, error(msg, level)): the frames above the chunk are then hearth's, and the message
+     * begins with the chunk's own file:line. Keep the traceback where it says more: a scene function between the
+     * error and the chunk (a helper, an on_frame callback), or an error inside hearth's modules (a message that
+     * names a line of theirs). */
+    int scene_frames = 0, main_level = 0;
     lua_Debug ar;
-    /* stop at the second Lua frame: a stack overflow holds ~1e5 frames, and lua_getstack walks to its level */
-    for (int level = 1; lua_frames < 2 && lua_getstack(L, level, &ar); level++) {
-        if (!lua_getinfo(L, "S", &ar) || ar.what[0] == 'C') continue;
-        lua_frames++;
-        if (strcmp(ar.what, "main") != 0) main_only = 0;
+    /* stop at the second scene frame, or 64 levels: a stack overflow holds ~1e5 frames, and lua_getstack walks
+     * to its level */
+    for (int level = 1; scene_frames < 2 && level <= 64 && lua_getstack(L, level, &ar); level++) {
+        if (!lua_getinfo(L, "S", &ar) || ar.what[0] == 'C' || !strncmp(ar.source, "=[hearth]/", 10)) continue;
+        scene_frames++;
+        if (!strcmp(ar.what, "main")) main_level = level;
     }
-    if (lua_frames == 1 && main_only) {
-        lua_pushstring(L, msg);
-        return 1;
+    if (scene_frames == 1 && main_level && lua_getstack(L, main_level, &ar) && lua_getinfo(L, "Sl", &ar)) {
+        char where[LUA_IDSIZE + 32];
+        snprintf(where, sizeof where, "%s:%d:", ar.short_src, ar.currentline);
+        if (!strncmp(msg, where, strlen(where))) {
+            lua_pushstring(L, msg);
+            return 1;
+        }
     }
     luaL_traceback(L, L, msg, 1);
     return 1;

@@ -16,6 +16,12 @@ params_number_set_in_range)
     run numbers.lua --set cups=1 --set vent=0
     expect_rc 0 "the closed low ends"
     has out.txt "cups=1 vent=0" "the low ends"
+    has out.txt "height=0.3 ovens=190,150" "a list's default"
+    run numbers.lua --set ovens=5000 && expect_rc 0 "a list of one number, on its closed end"
+    has out.txt "ovens=5000" "a list of one"
+    run numbers.lua --set ovens=-273.15,20,100
+    expect_rc 0 "a list of three"
+    has out.txt "ovens=-273.15,20,100" "a list of three"
     ;;
 params_number_out_of_range_refused)
     # a value outside the range is a usage error (exit 2) at the scene's h.params line, naming the parameter,
@@ -39,6 +45,11 @@ params_number_out_of_range_refused)
         "--set vent=-2: vent (the CO2 vent velocity) takes a number in [0, inf) m/s; or -1: the preset's, not -2" --set vent=-2
     refuse "not a number" "--set dx=abc: dx (the grid spacing) takes a number in (0, 0.05] m, not abc" --set dx=abc
     refuse "infinite" "--set dx=1e999: dx (the grid spacing) takes a number in (0, 0.05] m, not inf" --set dx=1e999
+    # a list (list = true): each number in the range; the message names the first one that is not
+    refuse "a list's second number" \
+        "--set ovens=190,-300,9000: ovens (the ovens) takes numbers separated by commas, each in [-273.15, 5000] degC, not -300" \
+        --set ovens=190,-300,9000
+    refuse "a list's word" "--set ovens=190,hot: expected numbers separated by commas" --set ovens=190,hot
     ;;
 params_number_bad_default_refused)
     # the scene author's default outside its own range is the scene's error (exit 1), not the user's
@@ -71,6 +82,8 @@ run_params_lists_ranges)
     has out.txt "      muffin cups in a row: a whole number in [1, 12]" "a count's range"
     has out.txt "      the CO2 vent velocity: a number in [0, inf) m/s; or -1: the preset's" "an open end and also"
     has out.txt "  height = 0.3" "a plain number listed as before"
+    has out.txt "  ovens = 190,150" "a list's default"
+    has out.txt "      the ovens: numbers separated by commas, each in [-273.15, 5000] degC" "a list's range"
     grep -q "dx=" out.txt && fail "--params ran the scene"
     ;;
 params_number_passed_through_refused)

@@ -26,6 +26,10 @@ lua_error_messages)
     check err_material_key.lua 2 "material 'elastic'" "unknown parameter 'Ee'" "did you mean 'E'"
     check err_range.lua 2 "'nu' = 0.7" "[0, 0.499]" "Poisson's ratio"
     grep -qE "\[0, 0\.499\] (1\b|\(dimensionless\))" err.txt || fail "nu: no unit after the range: $(cat err.txt)"
+    # hearth's own refusal at the scene's line (h.material's error(msg, level)): the message names the line,
+    # and hearth.lua's frames add nothing; with a scene function between, the traceback names its call
+    grep -q "stack traceback" err.txt && fail "a refusal at the chunk's own line printed a traceback: $(cat err.txt)"
+    check err_range_helper.lua 4 "'nu' = 0.7" "stack traceback" "err_range_helper.lua:7: in main chunk"
     check err_range_unit.lua 2 "'density' = 1e+09" "[0.001, 100000] kg/m^3"
     # Lua's 0/0 has its sign bit set; a NaN is named without a sign (error.c)
     check err_range_nan.lua 2 "'nu' = nan is outside its range" "[0, 0.499]"

@@ -221,6 +221,59 @@ D.goods = {
     oven_temperature = 180, oven_beta = 30, pan_temperature = 180, pan_beta = 100,
     time_scale = 60, bake_time_real = 1320,
   },
+  pancake = {
+    -- American pancake batter (issue #18, helper pancake). Not the muffin's: a pancake batter holds ~54% water where
+    -- the muffin's cake batter holds 38%, and it is a denser, barely aerated liquid. The composition: Eames, Khaw &
+    -- Bouremel, "How to make the perfect pancake" (Mathematics Today, IMA), whose American pancake has a baker's ratio
+    -- (milk to flour by mass) of ~100: 200 g milk (87.5% water), 200 g flour (14% water), one 55 g egg (75% water):
+    -- 244 g water in 455 g, 54% wet basis (two eggs: 54.5%), within the 50-55% the brief asks.
+    -- density: its airless constituents (water 1.0, flour solids ~1.45 g/cm^3) give 1170 kg/m^3; with ~10% of gas
+    -- (the porosity below; a stirred batter's bubbles, estimated, not measured) 1050 kg/m^3
+    density = 1050,
+    -- specific heat: Choi & Okos composition model (ASHRAE), per kg of batter 0.54 water (4.18 kJ/(kg K)), 0.34
+    -- carbohydrate (1.55), 0.07 protein (2.0), 0.04 fat (1.98), 0.01 ash (1.1): 3.0 kJ/(kg K)
+    specific_heat = 3000,
+    -- conductivity: the same model's volume-weighted parallel sum (water 0.61, carbohydrate 0.20, protein and fat
+    -- 0.18, ash 0.33 W/(m K)) gives 0.46 W/(m K) for the airless batter; with 10% air (0.026) 0.41. Predicted, not
+    -- measured; no dried-crust value is taken (no measurement found for a pancake's crust: dry_conductivity unset)
+    conductivity = 0.41,
+    -- dried, it holds less heat: the mixture rule as bread's (m c = m_s c_s, the solids' c_s = 1.65 kJ/(kg K) from
+    -- the composition above), 0.46 x 1650 J/(kg K)
+    dry_specific_heat = 0.46 * 1650,
+    saturation = 0.567,                        -- 0.54 x 1050 / 1000
+    -- liquid water diffusivity and surface evaporation: the muffin's (bread's liquid 2e-9 m^2/s, chosen within
+    -- the 1e-10..1e-8 m^2/s range of baking models; the boiling front carries most of the water)
+    water_diffusivity_m2s = 2e-9, evaporation = 1.2e-5,
+    -- rheology and its set: E 1e4 Pa, 1e2 Pa s and the set (MUFFIN_SET: soft to 55 degC, x20 by 70 degC at starch
+    -- gelatinisation) are the muffin batter's (batters are 1-100 Pa s fluids; no pancake batter rheometry found
+    -- here). The yield stress is the pancake's own, from the shape recipes give it: about a quarter cup (59 mL) of
+    -- batter a pancake ("a little less than 1/4 cup of batter will make a decent pancake", gist.github.com/willb/
+    -- 170844) and 4-inch pancakes ("about fourteen 4-inch cakes", pastebin.com/qB56Nt3S), a disc 7.3 mm deep over
+    -- R = 50.8 mm. A yield-stress puddle stops spreading when its height is H = sqrt(2 s R / (rho g)) (the
+    -- lubrication shape h(x)^2 = 2 s (R - x) / (rho g)), so its shear yield stress is s = rho g H^2 / (2 R) = 5.4 Pa
+    -- at the room's 20 degC; on this plugin's von Mises surface q = sqrt(3) s = 9.4 Pa (as the cookie's), x0.8 of
+    -- the fridge point's on MUFFIN_SET: 11.7 Pa. The spread sets first where the pan sets the batter, so the
+    -- batter's own yield stress is at most this. (Was the muffin's 20 Pa in the first runs: 10.6 mm thick before
+    -- the flip at dx 2 mm, 9.7 mm with 11.7.)
+    E = 1e4, nu = 0.3, tau_y = 11.7, mu = 100, max_porosity = 0.6, curve = "muffin",
+    -- no CO2: the baking powder's rise is left out (gas_rate 0; the porosity the batter's stirred-in bubbles)
+    gas_rate = 0, reaction_temperature = 60, reaction_width = 20, porosity = 0.1,
+    expansion = 0.1, dough_temperature = 20,
+    -- the griddle: 175-190 degC (350-375 degF) is the range cooking guides give for pancakes (e.g. whatis.eokultv.com,
+    -- "griddle temperature guide"): 190. The contact: no measured batter-to-griddle coefficient was found here, so it
+    -- is the conductance of the greased pan's oil film, k / delta: a teaspoon of oil (5 mL) over a 25 cm pan (0.049
+    -- m^2) is 0.1 mm thick, vegetable oil conducts 0.17 W/(m K): 1700 W/(m^2 K). An upper bound: it leaves out the
+    -- steam under the boiling face and the pan's own cooling where the batter lands (the pan here stays at 190 degC).
+    -- The other presets' tray, 100 W/(m^2 K), boiled the pan face for minutes and browned it 0.0004 by the flip at
+    -- dx 4 mm (docs/validation.md, "The physical pancake"). The air above: kitchen air at 25 degC, free convection
+    -- 10 W/(m^2 K) (free convection in gases is 2-25 W/(m^2 K): Incropera & DeWitt, Table 1.1)
+    oven_temperature = 25, oven_beta = 10, pan_temperature = 190, pan_beta = 1700,
+    -- cooked 2 min on its first side, then flipped: recipes flip once bubbles open on the top and the edges look set
+    -- (whatis.eokultv.com's guide), "until browned on the bottom, about 3 minutes" on a low heat (github.com/
+    -- dpapathanasiou/recipes, mini chocolate chip pancakes); 2 min at this griddle's 190 degC, and 1.5 min on the
+    -- second side: 3.5 min in 3.5 s
+    time_scale = 60, bake_time_real = 210, flip_time_real = 120,
+  },
 }
 
 local function curve(points, theta)
@@ -258,6 +311,7 @@ function D.preset(name)
   local oven = { temperature = g.oven_temperature, beta = g.oven_beta * S, pan_temperature = g.pan_temperature,
     pan_beta = g.pan_beta * S, dough_temperature = g.dough_temperature, saturation = g.saturation,
     latent_heat = true, boiling_point = 100, browning_scale = S, time_scale = S, bake_time = g.bake_time_real / S,
+    flip_time = g.flip_time_real and g.flip_time_real / S,
     -- open surface pores vent their CO2 (scene settings gas_vent, vent_porosity; core/sim/fields/gas.c): an open
     -- pore's CO2 diffuses into the air across ~1 mm, D / delta = 1.6e-5 m^2/s (CO2 in air near room temperature;
     -- ~3e-5 at 200 degC) / 1e-3 m ~ 0.02 m/s in real time, S times fast here; the pores open past a gas fraction of

@@ -90,7 +90,8 @@ end
 --- h.number{default, min = a, max = b, above = a, below = b, integer = true, unit = "m", what = "meaning",
 --- also = {[0] = "what 0 means"}}: a numeric parameter for h.params with its valid range. min and max are
 --- inclusive bounds, above and below strict ones (above = 0: > 0); either end may be left open (no bound).
---- integer = true takes whole numbers only (counts: cups, frames). also lists values outside the range that
+--- integer = true takes whole numbers only (counts: cups, frames). list = true takes one or more numbers, each in the
+--- range (`--set ovens=190,150`; the default a list {190, 150, 110}). also lists values outside the range that
 --- the scene gives a meaning of its own (0: the preset's; -1: Table 2's curve). unit and what are shown in the
 --- refusal and in `hearth run SCENE.lua --params`; what is required (a short meaning), unit when the number has one.
 function h.number(t)
@@ -103,9 +104,9 @@ function h.number(t)
     elseif k == "min" or k == "max" or k == "above" or k == "below" then
       if not finite(v) then error(("h.number: %s = %s is not a finite number"):format(k, tostring(v)), 2) end
       n[k] = v
-    elseif k == "integer" then
-      if type(v) ~= "boolean" then error("h.number: integer = true or false, got " .. tostring(v), 2) end
-      n.integer = v
+    elseif k == "integer" or k == "list" then
+      if type(v) ~= "boolean" then error(("h.number: %s = true or false, got %s"):format(k, tostring(v)), 2) end
+      n[k] = v
     elseif k == "unit" or k == "what" then
       if type(v) ~= "string" or v == "" then error(("h.number: %s needs a non-empty string"):format(k), 2) end
       n[k] = v
@@ -118,7 +119,7 @@ function h.number(t)
       end
       n.also = v
     else
-      error(("h.number: unknown key %s (default first, then min, max, above, below, integer, unit, what, also)")
+      error(("h.number: unknown key %s (default first, then min, max, above, below, integer, list, unit, what, also)")
         :format(tostring(k)), 2)
     end
   end
@@ -140,7 +141,8 @@ local function range_text(n)
   local lo = n.min and ("[" .. num(n.min)) or n.above and ("(" .. num(n.above)) or "(-inf"
   local hi = n.max and (num(n.max) .. "]") or n.below and (num(n.below) .. ")") or "inf)"
   local unit = n.unit and (" " .. n.unit) or ""
-  local r = (n.integer and "a whole number in " or "a number in ") .. lo .. ", " .. hi .. unit
+  local r = (n.list and (n.integer and "whole numbers, each in " or "numbers separated by commas, each in ")
+    or (n.integer and "a whole number in " or "a number in ")) .. lo .. ", " .. hi .. unit
   if n.min and n.min == n.max then r = "only " .. num(n.min) .. unit end
   if n.also then
     local ks = {}
@@ -161,9 +163,16 @@ end
 -- A value x for the parameter `name` declared as number n: nil when valid, else the message (from `what`:
 -- "--set dx=-1", the scene's default, or the script that passed it) naming the parameter, its meaning, its range.
 local function number_error(n, name, x, what)
-  if in_range(n, x) then return nil end
+  local bad = x -- a list's first number out of range (or x itself when it is not a list)
+  if n.list and type(x) == "table" and #x > 0 then
+    bad = nil
+    for i = #x, 1, -1 do if not in_range(n, x[i]) then bad = x[i] end end
+    if bad == nil then return nil end
+  elseif not n.list and in_range(n, x) then
+    return nil
+  end
   return ("%s: %s (%s) takes %s, not %s"):format(what, name, n.what, range_text(n),
-    type(x) == "number" and num(x) or tostring(x))
+    type(bad) == "number" and num(bad) or type(bad) == "table" and "an empty list" or tostring(bad))
 end
 
 -- The valid words of choice c, one a line, each with its description, sorted (the empty word first).
@@ -197,10 +206,11 @@ end
 -- `hearth run SCENE.lua --params`: the scene's parameters, their defaults and, for a choice, its words.
 local function value_text(v)
   if is_choice(v) then return q(v.default) end
-  if is_number(v) then return tostring(v.default) end
+  if is_number(v) then v = v.default end
+  if type(v) == "number" then return num(v) end -- 40000, not 40000.0; 1e+10, not 10000000000.0
   if type(v) == "table" then
     local t = {}
-    for i, x in ipairs(v) do t[i] = tostring(x) end
+    for i, x in ipairs(v) do t[i] = type(x) == "number" and num(x) or tostring(x) end
     return table.concat(t, ",")
   end
   if type(v) == "string" then return q(v) end
@@ -230,6 +240,15 @@ function h._list_knobs(lines, declared)
   io.stdout:write(table.concat(lines, "\n"), "\n")
   h._listed = true -- h.scene raises it again, should a scene's pcall swallow the stop
   core.listed() -- ends the run here: exit 0, nothing simulated
+end
+
+-- `--set name=1,2.5,3`: the numbers, or a usage error naming the parameter
+local function numbers(k, v)
+  local t = {}
+  for w in (v .. ","):gmatch("([^,]*),") do
+    t[#t + 1] = tonumber(w) or usage_error(("--set %s=%s: expected numbers separated by commas"):format(k, v), 3)
+  end
+  return t
 end
 
 --- Named defaults that `hearth run scene.lua --set name=value` overrides.
@@ -264,6 +283,7 @@ function h.params(defaults)
       P[k] = tonumber(v) or usage_error(("--set %s=%s: expected a number"):format(k, v), 2)
     elseif is_number(d) then
       local x = tonumber(v)
+      if d.list then x = numbers(k, v) end
       local m = number_error(d, k, x or v, ("--set %s=%s"):format(k, v))
       if m then usage_error(m, 2) end
       P[k] = x
@@ -272,11 +292,7 @@ function h.params(defaults)
       if m then usage_error(m, 2) end
       P[k] = v
     elseif type(d) == "table" then
-      local t = {}
-      for w in (v .. ","):gmatch("([^,]*),") do
-        t[#t + 1] = tonumber(w) or usage_error(("--set %s=%s: expected numbers separated by commas"):format(k, v), 2)
-      end
-      P[k] = t
+      P[k] = numbers(k, v)
     elseif type(d) == "boolean" then
       if v ~= "true" and v ~= "false" then usage_error(("--set %s=%s: expected true or false"):format(k, v), 2) end
       P[k] = v == "true"

@@ -378,7 +378,11 @@ function S:run(o)
       at_rest = stt.max_speed < rest and stt.max_speed <= last_speed
       last_speed = stt.max_speed
     end
-    if stt.t >= next_frame - 1e-9 * every or at_rest then
+    -- the end's frame: a run that started a step past a multiple of every (a scene's one s:step before its
+    -- run, for an SPH density: 0.3 ms of 0.1 s frames) ends that sliver short of its last frame; a frame due
+    -- within 1% of every after the end is the end's, or the run would show no end state
+    local ends_frame = stt.t >= until_t - 1e-12 * math.max(1, until_t) and next_frame - until_t < 0.01 * every
+    if stt.t >= next_frame - 1e-9 * every or at_rest or ends_frame then
       frame() -- a run that stops at rest ends with a frame of the rest state
       next_frame = next_frame + every
     end

@@ -93,6 +93,50 @@ sys.exit(0 if x0 < XP < x1 and hmax > 5 * h0 and h1 < 2 * h0 else 1)
 PY
     ;;
 
+# #18 (helper pancake): the physical pancake (pancake.lua --set preset=physical, h.library.dough.pancake: 54% water,
+# latent heat and boiling on, the 190 degC griddle, flipped at 2 real minutes, 3.5 minutes in all) holds its inside
+# near 100 degC while it holds its water, where the paper preset's pancake cooks through to the pan's temperature
+# (pan face = top = 167.9 degC at 2 s: docs/validation.md, "The shipped scenes as a user meets them", Physics 5).
+# The bar, set at 03:50 UTC on the day of helper pancake, before the first run of the physical preset: the middle
+# particle (pancake.csv's middle_*: the particle nearest the middle of the centre line) (1) reaches at least 90 degC
+# (the pancake cooks through), (2) in every frame where it still holds at least half of its raw water, stays at or
+# below 100 + 5 degC, (3) still holds at least half of its raw water at the end, and (4) in the last frame before the
+# flip the face on the pan has browned more than twice as much as the top (fields/browning.c's 0..1 index).
+# At the scene's dx 2 mm (~7 s of CPU in release: release_only) and _fine at 1.5 mm (campaign).
+claim_pancake_physical_holds_water_plateau | claim_pancake_physical_holds_water_plateau_fine)
+    dx=0.002
+    [ "$case_name" = claim_pancake_physical_holds_water_plateau_fine ] && dx=0.0015
+    run pancake --set preset=physical --set dx=$dx --set frames=21 >/dev/null
+    python3 - hearth-out/pancake/pancake.csv $dx <<'PY' || fail "$case_name: the physical pancake's inside does not plateau (numbers above)"
+import csv, sys
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if float(r["middle_water_held"]) >= 0]
+dx = float(sys.argv[2])
+for r in rows:
+    print(f"  {float(r['t_real_s']):5.0f} s{' (flipped)' if r['flipped'] == '1' else '':10s}: middle "
+          f"{float(r['middle_temperature_degC']):6.1f} degC holding {float(r['middle_water_held']):.3f} of its water; "
+          f"browning pan face {float(r['bottom_browning']):.4f}, top {float(r['top_browning']):.4f}; "
+          f"{float(r['water_left']):.3f} of the water left")
+before = [r for r in rows if r["flipped"] == "0"]
+Tmax = max(float(r["middle_temperature_degC"]) for r in rows)
+wet = [float(r["middle_temperature_degC"]) for r in rows if float(r["middle_water_held"]) >= 0.5]
+held = float(rows[-1]["middle_water_held"])
+bb, bt = float(before[-1]["bottom_browning"]), float(before[-1]["top_browning"])
+ok = [Tmax >= 90, max(wet) <= 105, held >= 0.5, bb > 2 * bt]
+print(f"dx {dx * 1e3:g} mm: middle's highest {Tmax:.1f} degC (need >= 90); highest while it holds >= 0.5 of its water "
+      f"{max(wet):.1f} degC (need <= 105); water held at the end {held:.3f} (need >= 0.5); before the flip "
+      f"({float(before[-1]['t_real_s']):.0f} s) browning pan face {bb:.4f}, top {bt:.4f} (need pan face > 2 x top)")
+sys.exit(0 if all(ok) else 1)
+PY
+    ;;
+
+# The physical preset's flip time (flip_at, real seconds) means nothing to the paper preset, which flips at set_at:
+# refused before anything runs, naming both.
+pancake_paper_flip_at_refused)
+    "$hearth" run "$scenes/pancake.lua" --quiet --set flip_at=60 >out.txt 2>err.txt && fail "flip_at ran on the paper preset"
+    grep -q "pancake.lua: --set flip_at is the physical preset's (a real time); the paper preset flips at set_at" err.txt ||
+        fail "unexpected message: $(cat err.txt)"
+    ;;
+
 # Fig. 4: the lava cake's molten centre flows out once the cut opens it: the
 # material reaches further right along the plate at the end than just after
 # the cut (by at least two cells). Before the thermal expansion fix the guard

@@ -30,6 +30,21 @@ for _, name in ipairs { "bread", "cookie", "muffin" } do
   assert(mu1 >= 100 and mu1 <= 1e6, name .. ": the viscosity behind eta, Pa s: " .. mu1)
   h.material("cam_clay_dough", d) -- passes the plugin's schema
 end
+-- the pancake (helper pancake): a batter of 50-55% water on a 180-200 degC griddle under room air, flipped at 1.5-3
+-- real minutes (the brief's ranges; the sources in lua/hearth/dough_physical.lua), on the muffin's set
+do
+  local d, o = h.library.dough.pancake, h.library.oven.pancake
+  local S = o.time_scale
+  local xw = 1000 * d.saturation / d.density
+  assert(xw >= 0.50 and xw <= 0.55, "pancake: water mass fraction " .. xw)
+  assert(o.latent_heat == true and o.boiling_point == 100 and o.browning_scale == S, "pancake: latent heat and boiling on")
+  assert(o.pan_temperature >= 180 and o.pan_temperature <= 200 and o.temperature <= 30, "pancake: a griddle under room air")
+  assert(o.flip_time * S >= 90 and o.flip_time * S <= 180 and o.flip_time < o.bake_time, "pancake: the flip's real time")
+  assert(d.specific_heat >= 2000 and d.specific_heat <= 4200 and d.conductivity / S >= 0.2 and d.conductivity / S <= 0.6,
+    "pancake: a batter's heat capacity and conductivity")
+  assert(#d.tau_y == 5 and d.tau_y[5][1] == 70 and d.tau_y[4][1] == 55, "pancake: the muffin batter's set (MUFFIN_SET)")
+  h.material("cam_clay_dough", d) -- passes the plugin's schema
+end
 -- the paper presets keep Table 2's animation units and say so
 local p, po = h.library.paper.bread, h.library.paper_oven.bread
 assert(p.specific_heat == 20 and po.latent_heat == false, "h.library.paper: Table 2 verbatim (c = 20 J/(kg K)), latent heat off")

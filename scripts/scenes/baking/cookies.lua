@@ -120,8 +120,12 @@ local LEVER_RANGES = {
 local defaults = { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
   dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 0, min = 0, unit = "s", what = "the bake's simulated time (0: the preset's own)" },
-  frames = h.number { 5, min = 1, integer = true, what = "PNG frames over the bake" }, ovens = { 190, 150, 110 },
-  leaveners = { 0.015, 0.0075, 0 }, gas = h.number { 1, min = 0, what = "a factor on the CO2 rates (and the physical preset's amounts)" },
+  frames = h.number { 5, min = 1, integer = true, what = "PNG frames over the bake" },
+  ovens = h.number { { 190, 150, 110 }, list = true, min = -273.15, max = 5000, unit = "degC",
+    what = "the ovens' temperatures, one bake each" },
+  leaveners = h.number { { 0.015, 0.0075, 0 }, list = true, min = 0,
+    what = "the cookies' leaveners, side by side on each tray (0.015: the formula's)" },
+  gas = h.number { 1, min = 0, what = "a factor on the CO2 rates (and the physical preset's amounts)" },
   tray_mode = h.choice("separate", h.contact_words),
   tray_friction = h.number { 0.4, min = 0, what = "the tray's Coulomb friction coefficient" },
   seed = h.number { 1, min = 0, integer = true, what = "the particles' seeding (0 acts as 1)" },
@@ -383,7 +387,10 @@ for _, T in ipairs(ovens) do
       fraction = 0.6, z = d3 and zc or nil, rest = rest_y })
   end
   s:run { until_t = until_t, every = until_t / P.frames,
-    png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T), time_scale = S },
+    -- one temperature range for every oven (the dough's start to the hottest oven), so their frames compare side
+    -- by side; each oven's own run had grown its own range
+    png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T), time_scale = S,
+      range = { oven.dough_temperature, math.max(table.unpack(ovens)) } },
     on_frame = function(f)
       for i, a in ipairs(leaveners) do
         local hgt, spread = measure(i)
@@ -410,7 +417,7 @@ for _, T in ipairs(ovens) do
   end
   h.write("cookies.csv", table.concat(rows, "\n") .. "\n")
   if physical then -- the crust's colour (Zanoni et al. 1995's index, 0..1): a picture, and per cookie a printed line
-    s:png("browning", ("oven_%g/browning.png"):format(T), { time_scale = S })
+    s:png("browning", ("oven_%g/browning.png"):format(T), { time_scale = S, range = { 0, 1 } }) -- the index's own 0..1
     local r = s:particles { fields = { "id", "x", "browning" } }
     for i, a in ipairs(leaveners) do
       -- top: the highest particle within dx/2 of the cookie's axis; rim: the one farthest from it; base: the lowest on

@@ -12,6 +12,23 @@
 --   [--set spatula=sticky|slip|separate] [--set spin=0.5] (s for the half turn)
 --   [--set flip_dt=0] (a dt cap during the turn) [--set gas=0.1] [--set porosity=-1]
 --   [--set pan=200] (degC) [--set set_at=70] (the bottom temperature that triggers the flip, degC)
+--   [--set preset=paper|physical] [--set flip_at=120] (physical: the flip's real time, s) [--set width=800] (px)
+-- preset: "paper" (the default: h.library.paper.pancake, Table 2's animation units, 2 s, flipped once the
+-- bottom passes set_at) or "physical" (h.library.dough.pancake: a 54% water batter, lua/hearth/dough_physical.lua,
+-- with latent heat, boiling and browning on, on a 190 degC griddle under 25 degC air; heat and water run 60
+-- times fast, so 3.5 s stand for 3.5 minutes and the frames' titles give the real time; flipped at 2 real
+-- minutes, the recipes' time, whatever its bottom reads). The mechanics is not scaled: the pour (0.4 s) spans
+-- 24 s of the real heat history and the turn (0.5 s) 30 s.
+-- The physical pancake (2D, helper pancake; docs/validation.md "The physical pancake"): at dx 2 mm its middle
+-- climbs to 71.1 degC by the flip and holds at 100.0 degC after it while it keeps 0.98 of its water; the face on
+-- the pan browns 0.180 (fields/browning.c's 0..1) by the flip while the top stays at 0.000; 9.7 mm thick before
+-- the flip, and 66% of the batter's water is left at 3.5 min (it boils off the pan faces). At 1.5 mm: 71.0 degC
+-- by the flip, 94.1 at the end (0.97 of its water), browning 0.166 / 0.000. The paper preset's pancake reads
+-- 167.9 degC at its pan face and top alike at 2 s. The flipped sheet lands ragged, as the paper one does: its raw
+-- side drops off the set layer as loose particles under it, so its second face meets the pan late and browns
+-- little (0.002 at 2 mm, 0.080 at 1.5 mm by 3.5 min). Not the time mapping's runny batter (its viscosity is
+-- 1/60 of the real one) alone: with the real viscosity it lands as ragged. Likely (docs/validation.md, "The
+-- physical pancake"): far past its yield stress the plugin's batter flows at ~mu (tau_y / q)^2, ~1% of mu here.
 -- Status: the pour, the cooking and the flip work (2D, dx 2 mm: the bottom
 -- passes 70 degC at t = 0.58 s, measured at commit 76ac79a; 0.82 s when this
 -- was first written; the spatula lifts the pancake ~8 cm and lays
@@ -28,13 +45,20 @@
 -- pancake.csv: over time, the temperature of the pancake's face on the pan and
 -- of its top face (-1 while no batter lies on the pan at its centre), whether
 -- it has been flipped, and the batter's mean height above the pan and mean x;
--- flip.csv: the flip time and the bottom's temperature then.
+-- flip.csv: the flip time and the bottom's temperature then. With preset=physical, pancake.csv also has the real
+-- time, the middle particle's temperature and the water it holds (of the raw batter's), the browning of the
+-- lowest (on the pan) and highest particle on the centre line, and the water left of what was poured; and
+-- browning.png and saturation.png at the end, and profile.csv: the particles within dx/2 of the centre line at
+-- the end, from the pan up (height, temperature, water held, browning).
 local h = require "hearth"
 local THETA_SET = require("hearth.dough").THETA[4] -- gelatinisation, degC
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
   dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
-  until_t = h.number { 2, above = 0, unit = "s", what = "the run's simulated time" },
+  until_t = h.number { 0, min = 0, unit = "s",
+    what = "the run's simulated time (0: the preset's own: paper 2 s, physical its 3.5 real minutes)" },
   frames = h.number { 20, min = 1, integer = true, what = "PNG frames over the run" },
+  width = h.number { 800, min = 64, max = 8192, integer = true, unit = "px",
+    what = "the PNG frames' width (the pancake is a quarter of the pan's)" },
   pour = h.number { 0.4, above = 0, unit = "s", what = "the pour's time" },
   spin = h.number { 0.5, above = 0, unit = "s", what = "the spatula's half turn" },
   gas = h.number { 0.1, min = 0, what = "a factor on the batter's CO2 rate" },
@@ -43,28 +67,49 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   porosity = h.number { -1, min = 1e-6, max = 0.99, what = "the batter's initial gas porosity",
     also = { [-1] = "the preset's" } },
   spatula = h.choice("sticky", h.contact_words),
-  pan = h.number { h.library.paper_oven.pancake.pan_temperature, min = -273.15, unit = "degC",
-    what = "the pan's temperature" },
-  set_at = h.number { THETA_SET, min = -273.15, unit = "degC", what = "the bottom's temperature that flips it" } }
+  pan = h.number { -1000, min = -273.15, unit = "degC", what = "the pan's temperature",
+    also = { [-1000] = "the preset's (paper 200, physical 190)" } },
+  set_at = h.number { THETA_SET, min = -273.15, unit = "degC",
+    what = "the bottom's temperature that flips it (preset paper)" },
+  flip_at = h.number { 0, min = 0, unit = "s",
+    what = "the real time of the flip (preset physical; 0: the preset's 2 min)" },
+  preset = h.choice { "paper", paper = "h.library.paper.pancake: Ding Table 2, animation units",
+    physical = "h.library.dough.pancake: a real batter's properties, its minutes on the griddle mapped" } }
 local d3 = P.dim == 3
 local dx = d3 and math.max(P.dx, 0.004) or P.dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
-local oven = h.library.paper_oven.pancake
-print("pancake.lua: h.library.paper.pancake, animation units (Ding Table 2): heat runs in seconds, not minutes")
+local physical = P.preset == "physical"
+local oven = physical and h.library.oven.pancake or h.library.paper_oven.pancake
+local S = physical and oven.time_scale or nil -- the physical preset's rates run S times fast: t_real = S t
+local until_t = P.until_t > 0 and P.until_t or physical and oven.bake_time or 2
+local pan_T = P.pan > -1000 and P.pan or oven.pan_temperature
+if P.flip_at > 0 and not physical then
+  error("pancake.lua: --set flip_at is the physical preset's (a real time); the paper preset flips at set_at", 0)
+end
+local flip_real = physical and (P.flip_at > 0 and P.flip_at or oven.flip_time * S) or nil
+if physical then
+  print(("pancake.lua: h.library.dough.pancake, %s; griddle %g degC, flip at %.1f min, %.1f min in %.2f s")
+    :format(oven.units, pan_T, flip_real / 60, until_t * S / 60, until_t))
+else
+  print("pancake.lua: h.library.paper.pancake, animation units (Ding Table 2): heat runs in seconds, not minutes")
+end
 local W, PAN, zc = 0.32, 0.01, 0.05         -- m: pan width, pan top height, depth centre (3D)
 local X0, X1 = 0.045, 0.105                 -- m: the spout's path
 local SPOUT_W, SPOUT_Y, SPEED = 0.008, PAN + 0.025, 0.15 -- m, m, m/s: spout width, exit height, batter speed
 local XP, HALF = 0.165, 0.008               -- m: spatula pivot x, its height above the pan (~ the pancake's)
+-- the physical preset: the kitchen's air above (its "oven"), latent heat and boiling, browning
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.18, 0.1) }, gravity = v(0, -9.81, 0),
-  name = "pancake" }
+  name = "pancake", oven = physical and { temperature = oven.temperature, beta = oven.beta } or nil,
+  latent_heat = physical and oven.latent_heat or nil, boiling_point = physical and oven.boiling_point or nil,
+  browning = physical or nil, browning_scale = physical and oven.browning_scale or nil }
 s:collider { shape = h.box(v(-1, -1, -1), v(W + 1, PAN, 1)), mode = "separate", friction = 0.5,
-  temperature = P.pan, beta = oven.pan_beta }
+  temperature = pan_T, beta = oven.pan_beta }
 -- the spatula: flush with the pan's top under where the batter lands
 -- (sticky: the batter wets it, so the pancake turns over with it and does
 -- not slide off first, as it did on a "separate" spatula at 60 degrees)
 local spatula = s:collider { shape = h.box(v(0.02, PAN - 0.004, zc - 0.05), v(XP, PAN, zc + 0.05)), mode = P.spatula,
-  friction = 1, pivot = v(XP, PAN + HALF, zc), temperature = P.pan, beta = oven.pan_beta }
+  friction = 1, pivot = v(XP, PAN + HALF, zc), temperature = pan_T, beta = oven.pan_beta }
 
 -- The spout: a row of batter one lattice spacing high leaves it every
 -- spacing / SPEED seconds, at the spout's position then (as h.recipes.nozzle,
@@ -72,7 +117,7 @@ local spatula = s:collider { shape = h.box(v(0.02, PAN - 0.004, zc - 0.05), v(XP
 -- Gas x0.1, as the lava cake preset (lua/hearth/dough.lua): at
 -- the preset's rate this 2 Pa batter tears while it passes theta_r (the
 -- guard stopped the run at t = 0.59 s, kinetic energy x18).
-local d = h.library.paper.pancake
+local d = physical and h.library.dough.pancake or h.library.paper.pancake
 d.gas_rate = d.gas_rate * P.gas
 if P.porosity >= 0 then d.porosity = P.porosity end
 local batter = h.material("cam_clay_dough", d)
@@ -119,7 +164,10 @@ local function flip(sc)
 end
 local function watch(sc)
   local bottom = faces()
-  if bottom == bottom and bottom > P.set_at then
+  if physical and sc:stats().t * S >= flip_real - 1e-9 then -- the physical preset flips at the recipe's time
+    flip_T = bottom == bottom and bottom or -1
+    flip(sc)
+  elseif not physical and bottom == bottom and bottom > P.set_at then
     flip_T = bottom
     flip(sc)
   else
@@ -136,19 +184,81 @@ local function mean_place()
   if n == 0 then return 0 / 0, 0 / 0 end
   return sy / n - PAN, sx / n
 end
-local rows = { "t_s,bottom_temperature_degC,top_temperature_degC,thickness_m,flipped,mean_height_m,mean_x_m" }
-s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png" },
+-- the physical preset's inside, from particle values (a probe is the grid's B-spline average over three cells,
+-- about the whole pancake's thickness): the particles within dx/2 of the centre line, the lowest (the pan face), the
+-- highest (the top) and the one nearest the middle of the two; the middle's water held as a fraction of the raw
+-- batter's (saturation x J over the preset's saturation, as muffins.lua's); their browning (fields/browning.c's 0..1)
+local function inside()
+  local r = s:particles { fields = { "x", "temperature", "saturation", "J", "browning" } }
+  local x, lo, hi = centre(), nil, nil
+  for k = 1, r.n do
+    local px, py = r.x[3 * k - 2], r.x[3 * k - 1]
+    if py > PAN and math.abs(px - x) < dx / 2 then
+      if not lo or py < r.x[3 * lo - 1] then lo = k end
+      if not hi or py > r.x[3 * hi - 1] then hi = k end
+    end
+  end
+  if not lo then return nil end
+  local ym, mid, dm = (r.x[3 * lo - 1] + r.x[3 * hi - 1]) / 2, nil, math.huge
+  for k = 1, r.n do
+    local dd = math.abs(r.x[3 * k - 2] - x) + math.abs(r.x[3 * k - 1] - ym)
+    if r.x[3 * k - 1] > PAN and dd < dm then mid, dm = k, dd end
+  end
+  return { T = r.temperature[mid], held = r.saturation[mid] * r.J[mid] / oven.saturation,
+    bottom_browning = r.browning[lo], top_browning = r.browning[hi], n = r.n }
+end
+-- the water left: the water the batter holds now over what the poured particles brought (each lattice particle's
+-- volume hp^dim at the preset's saturation, 1000 kg/m^3 of water per unit saturation)
+local function water_left(n) return s:stats().water_mass / (n * hp ^ (d3 and 3 or 2) * 1000 * oven.saturation) end
+
+local head = "t_s,bottom_temperature_degC,top_temperature_degC,thickness_m,flipped,mean_height_m,mean_x_m"
+if physical then
+  head = head .. ",t_real_s,middle_temperature_degC,middle_water_held,bottom_browning,top_browning,water_left"
+end
+local rows = { head }
+s:run { until_t = until_t, every = until_t / P.frames,
+  png = { field = "temperature", path = "heat_%04d.png", time_scale = S, width = P.width },
   on_frame = function(f)
     local bt, tt, th = faces()
     local my, mx = mean_place()
     if my == my then -- the face temperatures are -1 while no batter lies on the pan at the centre (mid-flip)
       local ok = bt == bt and tt == tt
-      rows[#rows + 1] = ("%.3f,%.2f,%.2f,%.5f,%d,%.5f,%.5f"):format(f.t, ok and bt or -1, ok and tt or -1, ok and th or 0,
+      local row = ("%.3f,%.2f,%.2f,%.5f,%d,%.5f,%.5f"):format(f.t, ok and bt or -1, ok and tt or -1, ok and th or 0,
         flipped and 1 or 0, my, mx)
+      if physical then
+        local m = ok and inside()
+        row = row .. (m and (",%.1f,%.2f,%.4f,%.4f,%.4f,%.4f"):format(f.t * S, m.T, m.held, m.bottom_browning,
+          m.top_browning, water_left(m.n)) or (",%.1f,-1,-1,-1,-1,-1"):format(f.t * S))
+      end
+      rows[#rows + 1] = row
       h.write("pancake.csv", table.concat(rows, "\n") .. "\n")
     end
   end }
 local bt, tt, th = faces()
+if physical then
+  -- the profile through the pancake at the end: each particle within dx/2 of the centre line, from the pan up
+  local r, prof = s:particles { fields = { "x", "temperature", "saturation", "J", "browning" } }, {}
+  for k = 1, r.n do
+    local px, py = r.x[3 * k - 2], r.x[3 * k - 1]
+    if py > PAN and math.abs(px - centre()) < dx / 2 then
+      prof[#prof + 1] = { py - PAN, r.temperature[k], r.saturation[k] * r.J[k] / oven.saturation, r.browning[k] }
+    end
+  end
+  table.sort(prof, function(a, b) return a[1] < b[1] end)
+  local lines = { "height_m,temperature_degC,water_held,browning" }
+  for _, q in ipairs(prof) do lines[#lines + 1] = ("%.5f,%.2f,%.4f,%.4f"):format(table.unpack(q)) end
+  h.write("profile.csv", table.concat(lines, "\n") .. "\n")
+  s:png("browning", "browning.png", { time_scale = S, width = P.width })
+  s:png("saturation", "saturation.png", { time_scale = S, width = P.width })
+  local m = inside()
+  print(((flip_t and ("flipped at %.1f min (t = %.3f s)"):format(flip_t * S / 60, flip_t) or "not flipped yet")
+    .. "; after %.1f min: face on the pan %.1f degC, top %.1f degC (probes), middle "
+    .. "%.1f degC holding %.2f of its water, browning pan face %.3f, top %.3f; thickness %.1f mm; %.1f%% of the water "
+    .. "left"):format(s:stats().t * S / 60, bt, tt,
+    m and m.T or 0 / 0, m and m.held or 0 / 0, m and m.bottom_browning or 0 / 0, m and m.top_browning or 0 / 0,
+    1000 * th, m and 100 * water_left(m.n) or 0 / 0))
+  return
+end
 print(flip_t and ("flipped at t = %.3f s (bottom %.1f degC > %g degC); at the end: face on the pan %.1f degC, "
   .. "top %.1f degC, "
   .. "thickness %.4f m"):format(flip_t, flip_T, P.set_at, bt, tt, th) or "not flipped yet (the bottom has not set)")
