@@ -524,6 +524,10 @@ static void amounts_at(int field_steps, int others) {
     int exact_end = 1;
     for (int i = 0; i < s->ps.n; i++)
         exact_end &= pcold(&s->ps, PC_GAS_MADE)[2 * i] == A1 && pcold(&s->ps, PC_GAS_MADE)[2 * i + 1] == A2;
+    double p1 = NAN, p2 = NAN; /* the probe fields read the counts (mol/kg) */
+    CHECK(hearth_probe_point(s, "gas_made", c, &p1, &err) == HEARTH_OK);
+    CHECK(hearth_probe_point(s, "gas_made_2", c, &p2, &err) == HEARTH_OK);
+    CHECK(fabs(p1 / A1 - 1) <= 1e-12 && fabs(p2 / A2 - 1) <= 1e-12);
     printf("  field updates every %d steps, %d materials: t = %.3f s at %.0f degC, share 1 made %.12g mol/kg (amount %g, "
            "uncapped %.6g), share 2 %.12g (amount %g, uncapped %.6g); n^g %.12g mol/m^3, R0 (A1 + A2) %.12g; worst "
            "relative error over the run: n^g %.2e, made %.2e; made == amounts at the end: %s\n",
