@@ -111,21 +111,28 @@ static inline size_t clk_at(const uint8_t *b, size_t n) {
     return at;
 }
 
-/* The core material parameters version 12 appended (the second CO2 share: gas_rate_2, reaction_temperature_2,
- * reaction_width_2, params.h): every older file lacks them, after those its own version lacks. */
-#define V12_CORE 3
+/* The core material parameters version 13 appended (the shares' amounts: gas_amount, gas_amount_2, params.h), and
+ * those version 12 appended (the second CO2 share: gas_rate_2, reaction_temperature_2, reaction_width_2) with
+ * them: every file before 12 lacks all five, after those its own version lacks. */
+#define V13_CORE 2
+#define V12_CORE (3 + V13_CORE)
+/* Version 13 appended f64 self_max to the clocks, their last field (right before "MATS") */
+#define V13_CLK_BYTES 8
 
 /* The image of a save of one material, "elastic" (3 parameters), with the
  * last k of its core parameters cut out, as files from before they were
- * appended hold them (before the curve count; *n shrinks by 8 k). Returns 0
- * when the material is not found. */
+ * appended hold them (before the curve count; *n shrinks by 8 k), and
+ * without the clocks' version 13 tail (self_max): every caller makes a file
+ * older than 13. Returns 0 when the material is not found. */
 static inline int cut_core_params(uint8_t *b, size_t *n, int k) {
-    const size_t el = find(b, *n, "elastic", 7);
-    CHECK(el != (size_t)-1);
-    if (el == (size_t)-1) return 0;
+    const size_t el = find(b, *n, "elastic", 7), mats = find(b, *n, "MATS", 4);
+    CHECK(el != (size_t)-1 && mats != (size_t)-1 && mats < el);
+    if (el == (size_t)-1 || mats == (size_t)-1 || mats > el) return 0;
     const size_t at = el + 7 + 4 + 8 + 4 + 8 * 3 + 8 * (size_t)(CP_COUNT - k), len = 8 * (size_t)k;
     memmove(b + at, b + at + len, *n - at - len);
     *n -= len;
+    memmove(b + mats - V13_CLK_BYTES, b + mats, *n - mats);
+    *n -= V13_CLK_BYTES;
     return 1;
 }
 

@@ -7,6 +7,7 @@
 
 #include "alloc.h"
 #include "checkpoint_fixture.h"
+#include "mpm.h"
 
 /* A save restores bit-identically, from a file and from memory, and the
  * header holds the size and the CRC of the whole file. */
@@ -603,10 +604,65 @@ TEST(checkpoint_plugin_memo_refused_and_refilled) {
     hearth_scene_destroy(s);
 }
 
+/* The step's bound on a lone particle (mpm_self.c; helper wallcrush) comes from the previous step's G2P (self_max)
+ * and binds at cfl > 0.9 / sqrt(dim). Version 13 saves it: an elastic block and a lone particle falling beside it
+ * at cfl 0.9 (the bound binding), saved after 20 steps and restored, continue bit for bit as the run that never stopped (20 steps more);
+ * the same restore with self_max 0, as a version 12 file restored it, takes its first step unbounded and ends on
+ * other bits, so the equality says the bound came back. */
+static hearth_scene *lone_scene(void) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.05;
+    d.cfl = 0.9;
+    d.dt_max = 1;
+    d.gravity[1] = -1; /* slow: at 9.81 m/s^2 the speed's CFL term binds before the bound does */
+    hearth_scene *s = fx_scene_def(&d);
+    if (!s) return NULL;
+    const int m = fx_elastic(s, 1e4, 0.3, 1000);
+    CHECK(fx_box(s, m, (const double[3]){0.5, 0.3, 0}, (const double[3]){0.1, 0.1, 0}, 4, NULL) > 0);
+    hearth_error err;
+    const double x[3] = {0.2, 0.5, 0};
+    CHECK(hearth_scene_add_particles(s, m, 1, x, NULL, 0.025 * 0.025, &err) >= 0);
+    CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+    return s;
+}
+TEST(checkpoint_self_max_continues_same_bits) {
+    hearth_scene *s = lone_scene();
+    CHECK(s != NULL);
+    if (!s) return;
+    CHECK(mpm_self_asked(s) && s->self_max > 0);
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    hearth_error err;
+    hearth_scene *r = img ? hearth_scene_load_mem(img, n, "lone.ck", &err) : NULL;
+    hearth_scene *z = img ? hearth_scene_load_mem(img, n, "lone.ck", &err) : NULL;
+    if (!r && img) printf("  refused: %s\n", err.msg);
+    CHECK(r != NULL && z != NULL);
+    if (r && z) {
+        const double saved = s->self_max;
+        CHECK(r->self_max == saved);
+        z->self_max = 0; /* as a version 12 file restored it */
+        const double dt_bound = mpm_self_dt(s);
+        CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+        CHECK(hearth_scene_step(r, 20, &err) == HEARTH_OK);
+        CHECK(hearth_scene_step(z, 20, &err) == HEARTH_OK);
+        const uint64_t hs = hearth_scene_hash(s), hr = hearth_scene_hash(r), hz = hearth_scene_hash(z);
+        printf("  cfl 0.9, self_max %.6f at the save (its step bound %.3g s); 20 steps on: hash %016llx unbroken, %016llx "
+               "restored, %016llx restored without it; t %.9g / %.9g / %.9g s\n", saved, dt_bound, (unsigned long long)hs,
+               (unsigned long long)hr, (unsigned long long)hz, s->t, r->t, z->t);
+        CHECK(hr == hs);
+        CHECK(hz != hs);
+    }
+    hearth_scene_destroy(r);
+    hearth_scene_destroy(z);
+    free(img);
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(checkpoint_v4_roundtrip), T(checkpoint_bad_magic), T(checkpoint_truncated), T(checkpoint_every_byte_flip),
           T(checkpoint_bitflip_campaign), T(checkpoint_resealed_flips), T(checkpoint_crafted_fields),
           T(checkpoint_count_before_alloc),
           T(checkpoint_not_regular_file), T(checkpoint_alloc_failures),
           T(checkpoint_v5_def_fields_refused), T(checkpoint_venting_continues_same_bits),
           T(checkpoint_memo_columns_refused),
-          T(checkpoint_curve_memo_refused_and_refilled), T(checkpoint_plugin_memo_refused_and_refilled))
+          T(checkpoint_curve_memo_refused_and_refilled), T(checkpoint_plugin_memo_refused_and_refilled), T(checkpoint_self_max_continues_same_bits))

@@ -122,7 +122,7 @@ TEST(checkpoint_v4_reads_at_defaults) {
     ck_reseal(b, m);
     CHECK(hearth_scene_load_mem(b, m, "v3.ck", &err) == NULL);
     printf("  %s\n", err.msg);
-    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 12 only");
+    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 13 only");
     free(b);
     free(img);
     hearth_scene_destroy(s);
@@ -441,7 +441,127 @@ TEST(checkpoint_v11_reads_no_second_share) {
     hearth_scene_destroy(s);
 }
 
+/* A pinned block at 70 degC whose material gives both CO2 shares an amount (gas_amount, gas_amount_2; gas.h's
+ * gas_share_capped), 20 steps in: mid-reaction, the first share's 5e-4 mol/kg not yet made. amounts 0: the same
+ * block without them. */
+static hearth_scene *amount_scene(int amounts) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.1;
+    d.gravity[1] = 0;
+    d.dt_max = 1e-2;
+    hearth_scene *s = fx_scene_def(&d);
+    if (!s) return NULL;
+    const char *nm[] = {"E", "density", "conductivity", "gas_rate", "reaction_temperature", "gas_rate_2",
+                        "reaction_temperature_2", "gas_amount", "gas_amount_2"};
+    const double nv[] = {1e4, 500, 0, 0.015, 100, 0.02, 60, 5e-4, 5e-3};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, amounts ? 9 : 7, &err);
+    CHECK(m >= 0);
+    const double c[3] = {0.5, 0.4, 0}, h[3] = {0.1, 0.1, 0};
+    hearth_body_def bd = hearth_default_body_def();
+    hearth_shape *box = hearth_shape_box(c, h);
+    bd.shape = box, bd.material = m, bd.temperature = 70, bd.fixed = 1; /* pinned: its gas would burst it */
+    CHECK(hearth_scene_add_body(s, &bd, &err) == 0);
+    hearth_shape_free(box);
+    CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+    return s;
+}
+
+/* the first particle's gas_made entries set to v (the column's data follows its name) */
+static double made_value;
+static void made_set(uint8_t *b, size_t n) {
+    const size_t at = find(b, n, "gas_made", 8);
+    CHECK(at != (size_t)-1);
+    if (at != (size_t)-1) memcpy(b + at + 8, &made_value, 8);
+}
+static void as_is(uint8_t *b, size_t n) { (void)b, (void)n; }
+static void made_bit(uint8_t *b, size_t n) { /* claims the column in a file that has none */
+    const size_t at = find(b, n, "PART", 4);
+    uint32_t v;
+    memcpy(&v, b + at + 12, 4);
+    v |= 1u << PC_GAS_MADE;
+    memcpy(b + at + 12, &v, 4);
+}
+
+/* Version 13 carries each share's amount and the CO2 each particle has made of it (PC_GAS_MADE). Saved
+ * mid-reaction (the first share's amount met by no particle yet), the restore holds the same counts and, 60 steps
+ * on (both shares used up by then), the unbroken run's bits and counts equal to the amounts. A crafted count above
+ * its share's amount, a negative one, and the column claimed in a version 12 file are refused by name; a version
+ * 12 file (a version 13 image of the block without amounts, cut of the two and the clocks' self_max) loads with
+ * amounts 0, no column, and continues as the scene it was saved from. */
+TEST(checkpoint_gas_made_mid_reaction) {
+    hearth_scene *s = amount_scene(1);
+    CHECK(s != NULL);
+    if (!s) return;
+    double lo = 1, hi = 0;
+    for (int i = 0; i < s->ps.n; i++) {
+        lo = fmin(lo, pcold(&s->ps, PC_GAS_MADE)[2 * i]);
+        hi = fmax(hi, pcold(&s->ps, PC_GAS_MADE)[2 * i]);
+    }
+    printf("  t = %.3f s, %d particles: share 1 made %.6g..%.6g of 5e-4 mol/kg, share 2 %.6g of 5e-3\n", s->t, s->ps.n,
+           lo, hi, pcold(&s->ps, PC_GAS_MADE)[1]);
+    CHECK(lo > 0 && hi < 5e-4 && pcold(&s->ps, PC_GAS_MADE)[1] < 5e-3); /* mid-reaction, both shares */
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    hearth_error err;
+    hearth_scene *r = img ? hearth_scene_load_mem(img, n, "v13.ck", &err) : NULL;
+    if (!r && img) printf("  v13 refused: %s\n", err.msg);
+    CHECK(r != NULL);
+    if (r) {
+        CHECK(r->mats.slot[0].core[CP_GAS_AMOUNT] == 5e-4 && r->mats.slot[0].core[CP_GAS_AMOUNT_2] == 5e-3);
+        CHECK(r->ps.enabled & (1u << PC_GAS_MADE));
+        CHECK(memcmp(pcold(&r->ps, PC_GAS_MADE), pcold(&s->ps, PC_GAS_MADE), sizeof(double) * 2 * (size_t)s->ps.n) == 0);
+        CHECK(hearth_scene_step(s, 60, &err) == HEARTH_OK);
+        CHECK(hearth_scene_step(r, 60, &err) == HEARTH_OK);
+        int used = 1;
+        for (int i = 0; i < r->ps.n; i++)
+            used &= pcold(&r->ps, PC_GAS_MADE)[2 * i] == 5e-4 && pcold(&r->ps, PC_GAS_MADE)[2 * i + 1] == 5e-3;
+        printf("  60 steps on: hash %016llx unbroken, %016llx restored; both shares used up: %s\n",
+               (unsigned long long)hearth_scene_hash(s), (unsigned long long)hearth_scene_hash(r), used ? "yes" : "no");
+        CHECK(hearth_scene_hash(r) == hearth_scene_hash(s));
+        CHECK(used);
+        hearth_scene_destroy(r);
+    }
+    if (img) {
+        made_value = 6e-4;
+        expect_refused(img, n, made_set, "a particle's CO2 made outside [0, its share's gas_amount]");
+        made_value = -1e-9;
+        expect_refused(img, n, made_set, "a particle's CO2 made outside [0, its share's gas_amount]");
+        size_t k = n;
+        if (cut_core_params(img, &k, V13_CORE)) { /* a version 12 file cannot hold the column */
+            memcpy(img + 8, &(uint32_t){12}, 4);
+            expect_refused(img, k, as_is, "a CO2-made column in a file older than version 13");
+        }
+    }
+    free(img);
+    hearth_scene_destroy(s);
+    s = amount_scene(0);
+    CHECK(s != NULL && !(s->ps.enabled & (1u << PC_GAS_MADE)));
+    if (!s) return;
+    size_t k;
+    r = load_older(s, V13_CORE, 12, &k, &n);
+    CHECK(r != NULL);
+    if (r) {
+        CHECK(r->mats.slot[0].core[CP_GAS_AMOUNT] == 0 && r->mats.slot[0].core[CP_GAS_AMOUNT_2] == 0);
+        CHECK(!(r->ps.enabled & (1u << PC_GAS_MADE)) && r->self_max == 0);
+        printf("  v12 file of %zu bytes (v13: %zu)\n", k, n);
+        continues_as(s, r, "v12 copy");
+        hearth_scene_destroy(r);
+    }
+    img = save_image(s, &n);
+    if (img) { /* a version 12 file that claims the column */
+        size_t m = n;
+        if (cut_core_params(img, &m, V13_CORE)) {
+            memcpy(img + 8, &(uint32_t){12}, 4);
+            expect_refused(img, m, made_bit, "a CO2-made column in a file older than version 13");
+        }
+    }
+    free(img);
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_v4_reads_at_defaults),
           T(checkpoint_v7_reads_dry_specific_heat_as_wet), T(checkpoint_v8_reads_browning_surface_as_zero),
           T(checkpoint_v9_reads_ambient_pressure_as_zero), T(checkpoint_v10_sticky_holds_as_then),
-          T(checkpoint_v11_reads_no_second_share))
+          T(checkpoint_v11_reads_no_second_share), T(checkpoint_gas_made_mid_reaction))

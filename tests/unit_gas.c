@@ -476,7 +476,104 @@ TEST(gas_two_shares_constant_temperature) {
     hearth_scene_destroy(s);
 }
 
+/* Each share's amount (gas_amount, gas_amount_2; gas.h's gas_share_capped): a pinned block held at 70 degC makes
+ * eq. 14's bell of each share until the share's amount is made, then none of it. The closed form at every step's
+ * end t: n^g(t) = R0 (min(a1 e^{-u1^2} t, A1) + min(a2 e^{-u2^2} t, A2)), A the amounts (mol/kg), which the first
+ * share reaches at ~1.9 s and the second at ~3.2 s of 5 s; each particle's count of what it made (the gas_made and
+ * gas_made_2 fields) min(a e^{-u^2} t, A). The bar, set before the first run: 1e-12 relative at every 10th step
+ * (the sum of the steps' increments rounds at ~1 ulp a step) and the counts equal to the amounts exactly at the end.
+ * Both call sites: field_steps 1 (every step's CO2 in G2P) and 5 (four steps of five in gas_between), the second
+ * also behind 16 other materials (gas_between's loop for more than 16). And without an amount the column is not
+ * made (a scene pays for what it uses); an amount without its share's rate, a negative and a NaN one are refused
+ * by name. */
+static void amounts_at(int field_steps, int others) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 32;
+    d.gravity[1] = 0;
+    d.dt_max = 1e-2;
+    d.field_steps = field_steps;
+    hearth_scene *s = fx_scene_def(&d);
+    const char *nm[] = {"E", "density", "conductivity", "gas_rate", "reaction_temperature", "reaction_width",
+                        "gas_rate_2", "reaction_temperature_2", "reaction_width_2", "gas_amount", "gas_amount_2"};
+    const double a1 = 0.015, Tr1 = 100, w1 = 20, a2 = 0.02, Tr2 = 60, w2 = 20, R0 = 500, T = 70, A1 = 3e-3, A2 = 0.05;
+    const double nv[] = {1e4, R0, 0, a1, Tr1, w1, a2, Tr2, w2, A1, A2};
+    hearth_error err;
+    for (int k = 0; k < others; k++) CHECK(fx_elastic(s, 1e4, 0.3, 1000) == k);
+    CHECK(!(s->ps.enabled & (1u << PC_GAS_MADE)));
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 11, &err);
+    CHECK(m == others);
+    CHECK(s->ps.enabled & (1u << PC_GAS_MADE));
+    CHECK(strstr(hearth_scene_fields(s), "gas_made gas_made_2") != NULL);
+    const double c[3] = {0.5, 0.5, 0}, h[3] = {0.1, 0.1, 0};
+    hearth_shape *box = hearth_shape_box(c, h);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = box, bd.material = m, bd.temperature = T, bd.fixed = 1;
+    CHECK(hearth_scene_add_body(s, &bd, &err) == 0);
+    hearth_shape_free(box);
+    const double u1 = (T - Tr1) / w1, u2 = (T - Tr2) / w2, r1 = a1 * exp(-u1 * u1), r2 = a2 * exp(-u2 * u2);
+    double worst = 0, worst_made = 0;
+    for (int k = 0; k < 50; k++) {
+        CHECK(hearth_scene_step(s, 10, &err) == HEARTH_OK);
+        const double t = s->t, m1 = fmin(r1 * t, A1), m2 = fmin(r2 * t, A2), exact = R0 * (m1 + m2);
+        for (int i = 0; i < s->ps.n; i++) {
+            const double *mk = pcold(&s->ps, PC_GAS_MADE) + 2 * i;
+            worst = fmax(worst, fabs(pcold(&s->ps, PC_GAS)[i] / exact - 1));
+            worst_made = fmax(worst_made, fmax(fabs(mk[0] / m1 - 1), fabs(mk[1] / m2 - 1)));
+        }
+    }
+    int exact_end = 1;
+    for (int i = 0; i < s->ps.n; i++)
+        exact_end &= pcold(&s->ps, PC_GAS_MADE)[2 * i] == A1 && pcold(&s->ps, PC_GAS_MADE)[2 * i + 1] == A2;
+    double p1 = NAN, p2 = NAN; /* the probe fields read the counts (mol/kg) */
+    CHECK(hearth_probe_point(s, "gas_made", c, &p1, &err) == HEARTH_OK);
+    CHECK(hearth_probe_point(s, "gas_made_2", c, &p2, &err) == HEARTH_OK);
+    CHECK(fabs(p1 / A1 - 1) <= 1e-12 && fabs(p2 / A2 - 1) <= 1e-12);
+    printf("  field updates every %d steps, %d materials: t = %.3f s at %.0f degC, share 1 made %.12g mol/kg (amount %g, "
+           "uncapped %.6g), share 2 %.12g (amount %g, uncapped %.6g); n^g %.12g mol/m^3, R0 (A1 + A2) %.12g; worst "
+           "relative error over the run: n^g %.2e, made %.2e; made == amounts at the end: %s\n",
+           field_steps, others + 1, s->t, T, pcold(&s->ps, PC_GAS_MADE)[0], A1, r1 * s->t, pcold(&s->ps, PC_GAS_MADE)[1],
+           A2, r2 * s->t, pcold(&s->ps, PC_GAS)[0], R0 * (A1 + A2), worst, worst_made, exact_end ? "yes" : "no");
+    CHECK(s->field_cycle_last == field_steps); /* field_steps 5: four of five steps in gas_between */
+    CHECK(r1 * s->t > 2 * A1 && r2 * s->t > 1.2 * A2); /* both shares ran out well before the end */
+    CHECK(worst <= 1e-12 && worst_made <= 1e-12);
+    CHECK(exact_end);
+    hearth_scene_destroy(s);
+}
+
+static void amount_refused(const char *name2, double v2, const char *want) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 32;
+    hearth_scene *s = fx_scene_def(&d);
+    const char *nm[] = {"E", "gas_rate", name2};
+    const double nv[] = {1e4, 0.01, v2};
+    hearth_error err;
+    CHECK(hearth_scene_add_material(s, "elastic", nm, nv, 3, &err) < 0);
+    printf("  refused: %s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, want);
+    CHECK_STR_CONTAINS(err.msg, "elastic");
+    hearth_scene_destroy(s);
+}
+
+TEST(gas_amount_caps_share_at_held_temperature) {
+    amounts_at(1, 0);
+    amounts_at(5, 0);
+    amounts_at(5, 16);
+    amount_refused("gas_amount_2", 0.01, "gas_amount_2 = 0.01 mol/kg is the most CO2 gas_rate_2's share makes, and gas_rate_2 is 0");
+    amount_refused("gas_amount", -0.01, "'gas_amount' = -0.01 is outside its range [0, 1000] mol/kg");
+    amount_refused("gas_amount", NAN, "'gas_amount' = nan is outside its range");
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 1.0 / 32;
+    hearth_scene *s = fx_scene_def(&d);
+    const char *nm[] = {"E", "gas_amount"};
+    const double nv[] = {1e4, 0.01};
+    hearth_error err;
+    CHECK(hearth_scene_add_material(s, "elastic", nm, nv, 2, &err) < 0);
+    printf("  refused: %s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, "gas_amount = 0.01 mol/kg is the most CO2 gas_rate's share makes, and gas_rate is 0");
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(co2_constant_temperature), T(co2_linear_ramp), T(gas_pressure_field), T(gas_rise), T(gas_rise_fine),
           T(gas_ambient_dry_block_swells_as_closed_form), T(gas_ambient_refusals), T(gas_ambient_threads_same_bits),
           T(gas_ambient_wet_block_swells_as_closed_form), T(gas_two_shares_on_a_ramp),
-          T(gas_two_shares_constant_temperature))
+          T(gas_two_shares_constant_temperature), T(gas_amount_caps_share_at_held_temperature))

@@ -500,7 +500,7 @@ TEST(plugin_reserved_name) {
     CHECK_STR_CONTAINS(err.msg, "parameter 'porosity' clashes with the core parameter 'porosity' (1, initial gas porosity");
     CHECK_STR_CONTAINS(err.msg, "rename the plugin's parameter (reserved names: conductivity, specific_heat, expansion,");
     CHECK_STR_CONTAINS(err.msg, "water_density, bubble, dry_conductivity, dry_specific_heat, ambient_pressure, open_temperature, "
-                                "gas_rate_2, reaction_temperature_2, reaction_width_2)");
+                                "gas_rate_2, reaction_temperature_2, reaction_width_2, gas_amount, gas_amount_2)");
     int n = 0;
     const hearth_param *core = hearth_core_params(&n);
     CHECK(n >= 14);

@@ -267,6 +267,9 @@ hearth_status hearth_scene_body_labels(hearth_scene *s, int body, int k, const i
             pcold(ps, PC_MASS)[i] = ms->params[ms->density_index] * pcold(ps, PC_VOL0)[i];
             if (ps->enabled & (1u << PC_PLUGIN_MEMO)) /* zeros (they miss): a plugin's memo holds only what it wrote (rule 10) */
                 memset(pcold(ps, PC_PLUGIN_MEMO) + (size_t)i * ps->memo_stride, 0, sizeof(double) * (size_t)ps->memo_stride);
+            /* its new material's shares have made nothing yet (gas.h's gas_share_capped; a checkpoint checks each
+             * count against the particle's own material's amount) */
+            if (ps->enabled & (1u << PC_GAS_MADE)) pcold(ps, PC_GAS_MADE)[2 * i] = pcold(ps, PC_GAS_MADE)[2 * i + 1] = 0;
             if (ps->state_stride) {
                 double *st = pcold(ps, PC_STATE) + (size_t)i * ps->state_stride;
                 memset(st, 0, sizeof(double) * (size_t)ps->state_stride);

@@ -53,6 +53,15 @@ static const hearth_param core_schema[CP_COUNT] = {
     [CP_REACTION_T_2] = {"reaction_temperature_2", "degC", "temperature of the second CO2 share's peak rate", 40, -273.15,
                          1000},
     [CP_REACTION_WIDTH_2] = {"reaction_width_2", "K", "width of the second CO2 share's bell curve", 20, 1e-3, 1000},
+    /* a leavener is a finite amount (issue #18: eq. 14's bell never runs out; gas.h's gas_share_capped) */
+    [CP_GAS_AMOUNT] = {"gas_amount", "mol/kg",
+                       "the most CO2 gas_rate's share makes (its reactant's moles per kg of dough): its rate stops "
+                       "there; needs gas_rate > 0; 0 = no limit (eq. 14 as printed)",
+                       0, 0, 1e3},
+    [CP_GAS_AMOUNT_2] = {"gas_amount_2", "mol/kg",
+                         "the most CO2 the second share (gas_rate_2) makes: its rate stops there; needs gas_rate_2 > 0; "
+                         "0 = no limit",
+                         0, 0, 1e3},
 };
 
 const hearth_param *hearth_core_params(int *n) {

@@ -18,6 +18,8 @@ enum {
     CP_GAS_RATE_2,        /* a second CO2 share, eq. 14's bell again with its own amount, centre and width (gas.c): */
     CP_REACTION_T_2,      /* ... its centre theta_r and */
     CP_REACTION_WIDTH_2,  /* ... its width dtheta; the three last, so checkpoints before 12 read the others */
+    CP_GAS_AMOUNT,        /* the first share's reactant: the most CO2 it makes (mol/kg; 0 = no limit; gas.h's */
+    CP_GAS_AMOUNT_2,      /* ... gas_share_capped), and the second's; both last, so checkpoints before 13 read the others */
     CP_COUNT
 };
 

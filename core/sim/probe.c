@@ -26,7 +26,8 @@
 
 typedef enum field_id {
     F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_STRESS_XY, F_TEMPERATURE, F_BOUNDARY,
-    F_GAS, F_POROSITY, F_GAS_PRESSURE, F_SATURATION, F_WATER_MASS, F_WATER_PRESSURE, F_BROWNING, F_MIX_RATIO, F_STRESS,
+    F_GAS, F_POROSITY, F_GAS_PRESSURE, F_GAS_MADE, F_GAS_MADE_2, F_SATURATION, F_WATER_MASS, F_WATER_PRESSURE, F_BROWNING,
+    F_MIX_RATIO, F_STRESS,
     F_SXX, F_SYY, F_SZZ, F_SXZ, F_SYZ, F_DAMAGE, F_COUNT
 } field_id;
 
@@ -44,6 +45,9 @@ static const struct {
     [F_GAS] = {"gas", "mol/m^3", 1, PC_GAS, "give a material a leavening rate (gas_rate > 0)"},
     [F_POROSITY] = {"porosity", "1", 1, PC_GAS, "give a material a leavening rate (gas_rate > 0)"},
     [F_GAS_PRESSURE] = {"gas_pressure", "Pa", 1, PC_GAS, "give a material a leavening rate (gas_rate > 0)"},
+    /* the CO2 each share has made so far, against its amount (gas.h's gas_share_capped) */
+    [F_GAS_MADE] = {"gas_made", "mol/kg", 1, PC_GAS_MADE, "give a material's CO2 share an amount (gas_amount > 0)"},
+    [F_GAS_MADE_2] = {"gas_made_2", "mol/kg", 1, PC_GAS_MADE, "give a material's CO2 share an amount (gas_amount_2 > 0)"},
     [F_MIX_RATIO] = {"mixing_ratio", "1", 1, PC_MIXD,
                      "make a dynamic mixture (h.scene{mixing = \"dynamic\"} with h.mix bodies); this is its first constituent's ratio"},
     [F_SATURATION] = {"saturation", "1", 1, PC_WATER,
@@ -214,6 +218,7 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
     case F_TEMPERATURE: out[0] = pcold(ps, PC_TEMPERATURE)[i]; break;
     case F_BOUNDARY: out[0] = (pcoli(ps, PC_FLAGS)[i] & PF_BOUNDARY) ? 1.0 : 0.0; break;
     case F_GAS: out[0] = pcold(ps, PC_GAS)[i]; break;
+    case F_GAS_MADE: case F_GAS_MADE_2: out[0] = pcold(ps, PC_GAS_MADE)[2 * i + (f == F_GAS_MADE_2)]; break;
     case F_SATURATION: out[0] = carries(s, f, i) ? water_saturation(s, i) : NAN; break;
     case F_MIX_RATIO: /* NaN on other materials' particles: they are not part of the mixture */
         out[0] = carries(s, f, i) ? pcold(ps, PC_MIXD)[8 * i] : NAN;

@@ -361,6 +361,21 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
         material_slot_free(&ms);
         return -1;
     }
+    /* an amount bounds its own share's production (gas.h's gas_share_capped): without the rate it bounds nothing,
+     * which is a mistake to say, not to ignore */
+    for (int k = 0; k < 2; k++) {
+        const int amount = k ? CP_GAS_AMOUNT_2 : CP_GAS_AMOUNT, rate = k ? CP_GAS_RATE_2 : CP_GAS_RATE;
+        if (ms.core[amount] > 0 && !(ms.core[rate] > 0)) {
+            err_set(err, HEARTH_ERR_PARAM,
+                    "material '%s': %s = %g mol/kg is the most CO2 %s's share makes, and %s is 0; valid: %s = 0 (no "
+                    "limit), or %s > 0",
+                    hearth_plugin_material(pl)->name, k ? "gas_amount_2" : "gas_amount", ms.core[amount],
+                    k ? "gas_rate_2" : "gas_rate", k ? "gas_rate_2" : "gas_rate", k ? "gas_amount_2" : "gas_amount",
+                    k ? "gas_rate_2" : "gas_rate");
+            material_slot_free(&ms);
+            return -1;
+        }
+    }
     const hearth_material *m = ms.m;
     if (material_table_reserve(&s->mats, err) || particles_set_state_stride(&s->ps, m->state_size, err)) {
         material_slot_free(&ms);
@@ -380,6 +395,8 @@ int scene_add_material(hearth_scene *s, const char *plugin, const char *const *n
     /* venting between the fields' updates needs each particle's open surface from the last (gas.c, gas_between) */
     if (core[CP_GAS_RATE] > 0 && s->def.gas_vent > 0 && s->def.solver == HEARTH_SOLVER_MPM &&
         particles_enable(&s->ps, PC_VENT, err)) return -1;
+    /* a share with an amount counts what each particle has made of it (gas.h's gas_share_capped) */
+    if ((core[CP_GAS_AMOUNT] > 0 || core[CP_GAS_AMOUNT_2] > 0) && particles_enable(&s->ps, PC_GAS_MADE, err)) return -1;
     /* and its exp between the fields' updates, once a cycle (exp_memo.h) */
     if (core[CP_GAS_RATE] > 0 && s->def.solver == HEARTH_SOLVER_MPM && particles_enable(&s->ps, PC_GAS_MEMO, err)) return -1;
     /* eq. 10 as a thermal strain needs each particle's last one (material.h, material_thermal_split), and the
@@ -469,6 +486,7 @@ int hearth_scene_add_particles(hearth_scene *s, int material, int n, const doubl
         if (ps->enabled & (1u << PC_VENT)) pcold(ps, PC_VENT)[j] = 0; /* no surface until a field step finds it (gas.c) */
         if (ps->enabled & (1u << PC_SURFACE)) pcold(ps, PC_SURFACE)[2 * j] = pcold(ps, PC_SURFACE)[2 * j + 1] = 0; /* browning.c */
         if (ps->enabled & (1u << PC_GLUE)) pcoli(ps, PC_GLUE)[j] = 0; /* touched no sticky face yet (mpm_touch.c) */
+        if (ps->enabled & (1u << PC_GAS_MADE)) pcold(ps, PC_GAS_MADE)[2 * j] = pcold(ps, PC_GAS_MADE)[2 * j + 1] = 0; /* gas.h */
         if (ps->enabled & (1u << PC_PLUGIN_MEMO)) /* zeros (they miss): a plugin's memo holds only what it wrote (rule 10) */
             memset(pcold(ps, PC_PLUGIN_MEMO) + (size_t)j * ps->memo_stride, 0, sizeof(double) * (size_t)ps->memo_stride);
         if (ps->state_stride) {

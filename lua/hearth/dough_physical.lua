@@ -152,8 +152,8 @@ D.goods = {
     -- the NH4Cl reaction runs as the dough heats and its NH3 and CO2 leave. Ding et al.'s eq. 14 bell is what the
     -- plugin has: centre theta_r = 100 degC (the top of that range and the dough's boiling plateau), width 20 K, so
     -- the rate is e^-1 of its peak at 80 degC, 2% at 60 and 1e-7 in the 20 degC raw dough. The bell falls again past
-    -- 100 degC where a real soda's rate keeps rising; only the crust passes 100. Eq. 14 has no depletion, so the rate
-    -- is set by the amount: the one bell's peak rate (before the two shares below) was 0.069 mol/kg over the 229 s the bell integrates to along the dough's
+    -- 100 degC where a real soda's rate keeps rising; only the crust passes 100. Eq. 14 has no depletion of its own, so
+    -- the rate was set from the amount (since helper depletion the amount also caps it, below): the one bell's peak rate (before the two shares below) was 0.069 mol/kg over the 229 s the bell integrates to along the dough's
     -- centre temperature in this preset's 190 degC, 11 minute bake (cookies.lua --set preset=physical, dx 5 mm,
     -- series.csv, 22 frames, with this preset's earlier gas: 20 degC to 100 at 11 minutes): 0.069 / 229 = 3.0e-4
     -- mol/(kg s) (under the gas law below the centre reads 216 s, 0.065 mol/kg). The hotter outer dough makes more
@@ -178,8 +178,8 @@ D.goods = {
     -- 11 minute bake below ~50. The solid salt decomposes from ~75 degC (DSC, Resentera et al. 2025, Ind. Eng.
     -- Chem. Res., abstract), but in this dough it is dissolved. Centre 60 degC (where the sources agree the release
     -- is under way), width 20 K: e^-1 of the peak at 40 (the sheet's "rapidly") and at 80, 2% in the 20 degC raw
-    -- dough (its slow room-temperature loss). Eq. 14 has no depletion: the bell's fall past 60 stands for the share
-    -- running out, as the solution's rate falls once its HCO3- is spent. The leftover soda, 2.42 / 88.7 = 0.0273
+    -- dough (its slow room-temperature loss). Eq. 14 has no depletion of its own: the bell's fall past 60 stood for
+    -- the share running out, as the solution's rate falls once its HCO3- is spent (gas_amount_2 below now ends it). The leftover soda, 2.42 / 88.7 = 0.0273
     -- mol/kg, keeps the one bell's 100 degC, 20 K (the bicarbonate-carbonate equilibrium; no source found for
     -- another). Each peak rate is the share's amount over the time its bell integrates to along the dough centre's
     -- temperature in this preset's 190 degC bake before the shares (main's binary at 5cac4e3, cookies.lua --set
@@ -187,8 +187,15 @@ D.goods = {
     -- for 60/20 (89% of it before the 78 degC set), 220 s for 100/20 (9% before it). Was one bell, 0.069 / 229 at
     -- 100 degC, 20 K, under which the leavened cookie stood 1.07x the unleavened at 190 degC; with the two shares
     -- 1.55x at dx 5 mm, 1.81x at 3.75 (Ding §7.3's bar 1.3x; claim_cookie_physical_leavened_taller).
-    gas_rate = 2.42 / 88.7 / 220, reaction_temperature = 100, reaction_width = 20,
-    gas_rate_2 = 3.74 / 88.7 / 265, reaction_temperature_2 = 60, reaction_width_2 = 20, porosity = 0.15,
+    -- Each share is a finite amount (issue #18, helper depletion; the core's gas_amount and gas_amount_2, gas.h's
+    -- gas_share_capped): the formula's moles above, 2.42 / 88.7 = 0.0273 mol/kg of the soda and 3.74 / 88.7 =
+    -- 0.0422 of the NH4Cl share, one CO2 per NaHCO3 (NaHCO3 + NH4Cl -> NaCl + NH3 + CO2 + H2O for the NH4Cl share;
+    -- the leftover soda's CO2 from its acid-free decomposition as "When the physical cookie's soda releases its CO2"
+    -- counts it). Without them a dough held near 60 degC made the NH4Cl share's bell for ever: 0.056 mol/kg in the
+    -- 110 degC oven (docs/validation.md "The physical cookie in the cooler ovens"). The amounts are not time-scaled.
+    gas_rate = 2.42 / 88.7 / 220, reaction_temperature = 100, reaction_width = 20, gas_amount = 2.42 / 88.7,
+    gas_rate_2 = 3.74 / 88.7 / 265, reaction_temperature_2 = 60, reaction_width_2 = 20, gas_amount_2 = 3.74 / 88.7,
+    porosity = 0.15,
     ambient_pressure = 101325, open_temperature = 78,
     expansion = 0.1, dough_temperature = 20,
     -- the set: a sugar-snap dough's gluten glass transition at 71-78 degC, no starch gelatinisation (lua/hearth/dough.lua,
@@ -289,6 +296,7 @@ function D.preset(name)
     gas_rate = g.gas_rate * S, reaction_temperature = g.reaction_temperature, reaction_width = g.reaction_width,
     gas_rate_2 = g.gas_rate_2 and g.gas_rate_2 * S, reaction_temperature_2 = g.reaction_temperature_2,
     reaction_width_2 = g.reaction_width_2,
+    gas_amount = g.gas_amount, gas_amount_2 = g.gas_amount_2, -- moles per kg: no time in them, not scaled by S
     porosity = g.porosity, max_porosity = g.max_porosity, expansion = g.expansion,
     ambient_pressure = g.ambient_pressure, open_temperature = g.open_temperature,
     reference_temperature = g.dough_temperature,

@@ -38,6 +38,9 @@ local function scaled(pts, f, which)
 end
 params.gas_rate = params.gas_rate * P.gas
 if params.gas_rate_2 then params.gas_rate_2 = params.gas_rate_2 * P.gas end -- the cookie's second CO2 share
+-- the cookie's shares' amounts (its leavener): the same factor
+if params.gas_amount then params.gas_amount = params.gas_amount * P.gas end
+if params.gas_amount_2 then params.gas_amount_2 = params.gas_amount_2 * P.gas end
 local tau_pts = scaled(curves.tau_y, P.tau, "tau")
 params.tau_y = h.curve(tau_pts)
 params.eta = h.curve(scaled(curves.eta, P.eta, "eta"))

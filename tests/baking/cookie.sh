@@ -255,10 +255,12 @@ PY
 # crumb it squeezed burst (docs/validation.md "The physical cookie in the cooler ovens (#18, helper cookiecool)").
 # Since the vent exchanges a pore's gas with the air toward the atmosphere's pressure (core/sim/fields/gas.c) the
 # 190 and 150 degC cookies are whole at 5 mm. Still short, so an expected failure (exit 77) while only the most
-# leavened cookie misses: at 110 degC its foam swells to a median J ~3.5 (eq. 14's bell has no depletion: the slow
-# bake makes 0.056 mol/kg of the NH4Cl share, the formula holds 0.042), whose particle spacing dx/2 sqrt(J) reaches
-# the link; at 3.75 mm a few of its rim's outer particles slide down the flank to the tray, a link off the body,
-# at 190 and 150 degC.
+# leavened cookie misses: at 110 degC its foam swelled to a median J ~3.5 while eq. 14's bell had no depletion (the
+# slow bake made 0.056 mol/kg of the NH4Cl share, the formula holds 0.042); since each share stops at its amount
+# (gas_amount, gas_amount_2; helper depletion) it makes 0.042 and swells to a median J 3.3, and 10 of its 158
+# particles (57 before; 141 of 280 at 3.75 mm, 195 before) still stand beyond the link, whose particle spacing dx/2
+# sqrt(J) it nears; at 3.75 mm a few of its rim's outer particles slide down the flank to the tray, a link off the
+# body, at 190 and 150 degC.
 # shed_swollen (the link stretched by each pair's J, read after the bar was seen) is printed, not judged. Any other
 # cookie past the bar fails (exit 1). At the scene's dx 5 mm and one finer (_fine, 3.75 mm, suite campaign).
 claim_cookie_physical_whole_in_each_oven | claim_cookie_physical_whole_in_each_oven_fine)
@@ -282,11 +284,14 @@ if len(rows) != 9:
     sys.exit(1)
 if not bad: sys.exit(0)
 if all(float(r["leavener"]) == 0.015 for r in bad):
-    print("EXPECTED FAILURE (#18, helper cookiecool): only the most leavened cookie misses. At 110 degC eq. 14's bell has "
-          "no depletion, so the slow bake makes 0.056 mol/kg of the NH4Cl share (the formula's 0.042; 0.051 of it before "
-          "the 78 degC set, 0.022 at 190 degC) and the foam swells to a median J ~3.5: its particles stand dx/2 sqrt(J) "
-          "~0.9 dx apart, at the link. At 3.75 mm a few of the rim's outer particles slide down the flank to the tray, "
-          "a link off the body, at 190 and 150 degC. docs/validation.md 'The physical cookie in the cooler ovens (#18, helper cookiecool)'")
+    print("EXPECTED FAILURE (#18, helpers cookiecool, depletion): only the most leavened cookie misses. At 110 degC each "
+          "CO2 share now stops at its amount (the NH4Cl share's 0.042 mol/kg, where eq. 14's bell alone made 0.056), but "
+          "the foam it makes still swells to a median J ~3.3 (3.6 before): its particles stand dx/2 sqrt(J) ~0.9 dx apart, "
+          "near the link (5 mm: 10 of 158 beyond it, 57 before; 3.75 mm: 141 of 280, 195 before; none by the stretched "
+          "link; at 5 mm 8 of the 10 are one group on the top's shoulder, a swollen layer a little more than dx off the crumb, "
+          "and 2 the rim's tip). At 3.75 mm a few of the rim's outer particles slide down the flank to the tray, a link off the body, at "
+          "190 and 150 degC. docs/validation.md 'The physical cookie in the cooler ovens (#18, helper cookiecool)' and "
+          "'A leavener runs out (#18, helper depletion)'")
     sys.exit(77)
 sys.exit(1)
 PY

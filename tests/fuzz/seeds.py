@@ -332,6 +332,16 @@ s:add{shape = h.box({0.8, 0.3}, {1.0, 0.5}), material = jelly, ppc = 2, velocity
 s:step(2)
 s:save("OUT")
 """,
+    # version 13: CO2 shares with amounts (the gas_made column) and, at cfl 0.9, the lone-particle bound (self_max)
+    "gas_amount_v13_2d.ck": """local h = require "hearth"
+local s = h.scene{dim = 2, dx = 1 / 16, box = {{0, 0}, {1, 1}}, seed = 10, cfl = 0.9, oven = {temperature = 180, beta = 20}}
+local m = h.material("elastic", {E = 5e4, density = 500, conductivity = 0.5, gas_rate = 0.01, reaction_temperature = 60,
+  gas_rate_2 = 0.02, reaction_temperature_2 = 40, gas_amount = 1e-3, gas_amount_2 = 2e-3})
+s:add{shape = h.box({0.3, 0.1}, {0.7, 0.3}), material = m, ppc = 2, temperature = 60, fixed = true}
+s:add{shape = h.box({0.1, 0.6}, {0.13, 0.63}), material = m, ppc = 1, temperature = 60}
+s:step(4)
+s:save("OUT")
+""",
 }
 
 

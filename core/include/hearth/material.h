@@ -194,7 +194,7 @@ enum {
     "conductivity", "specific_heat", "expansion", "reference_temperature", "gas_rate", "reaction_temperature", \
         "reaction_width", "porosity", "saturation", "water_diffusivity", "evaporation", "water_stiffness",       \
         "water_density", "bubble", "dry_conductivity", "dry_specific_heat", "ambient_pressure", "open_temperature", \
-        "gas_rate_2", "reaction_temperature_2", "reaction_width_2"
+        "gas_rate_2", "reaction_temperature_2", "reaction_width_2", "gas_amount", "gas_amount_2"
 
 /// One entry of a parameter schema. def must lie in [min, max].
 typedef struct hearth_param {

@@ -70,7 +70,14 @@
  * exp takes no memo (PC_GAS_MEMO holds the first bell's; a second column for a rarely used share was not worth
  * its place in the sort): exp is what exp_memo returns, so the bits are the same. It needs gas_rate > 0 (scene.c
  * refuses it alone), so everything that turns the gas on still reads gas_rate. `gas_two_shares_on_a_ramp` checks
- * the two bells' sum along a linear ramp against the two Gaussian integrals' closed form. */
+ * the two bells' sum along a linear ramp against the two Gaussian integrals' closed form.
+ *
+ * Each share's amount (core parameters gas_amount, gas_amount_2, mol/kg; beyond Ding et al., whose eq. 14 never
+ * runs out): a leavener is a finite amount, so with an amount set each particle counts what each share has made
+ * (PC_GAS_MADE, enabled only then) and the share's step is capped at what is left, in G2P and here through one
+ * helper, gas.h's gas_share_capped (why capped within the step: there). Without amounts the helper returns its
+ * argument and nothing is counted: eq. 14's bits. `gas_amount_caps_share_at_held_temperature` checks both call
+ * sites against the closed form, the bell's integral capped at the amount. */
 #include "gas.h"
 
 #include <math.h>
@@ -198,6 +205,7 @@ void gas_between(hearth_scene *s, double dt) {
     const double *vent = s->def.gas_vent > 0 && (ps->enabled & (1u << PC_VENT)) ? pcold(ps, PC_VENT) : NULL;
     const int *mat = pcoli(ps, PC_MAT);
     double *memo = ps->enabled & (1u << PC_GAS_MEMO) ? pcold(ps, PC_GAS_MEMO) : NULL;
+    double *made = ps->enabled & (1u << PC_GAS_MADE) ? pcold(ps, PC_GAS_MADE) : NULL; /* a share's amount (gas.h) */
     const material_slot *slot = s->mats.slot;
     const int n = ps->n;
     /* At constant temperature gas_moles_step is k exp(-m^2) (1 + 0), k = alpha^g R0 dt, m = (theta - theta_r) /
@@ -214,20 +222,23 @@ void gas_between(hearth_scene *s, double dt) {
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
         for (int i = 0; i < n; i++) {
             const material_slot *gm = &slot[mat[i]];
-            const double a = gm->core[CP_GAS_RATE];
+            const double a = gm->core[CP_GAS_RATE], R0 = gm->params[gm->density_index];
             if (!(a > 0)) continue;
+            double *mk = made ? made + 2 * (size_t)i : NULL; /* each share within its amount (gas.h) */
             const double u = (T[i] - gm->core[CP_REACTION_T]) / gm->core[CP_REACTION_WIDTH];
-            G[i] += a * gm->params[gm->density_index] * dt * (memo ? exp_memo(memo + 2 * (size_t)i, -u * u) : exp(-u * u));
+            G[i] += gas_share_capped(a * R0 * dt * (memo ? exp_memo(memo + 2 * (size_t)i, -u * u) : exp(-u * u)), R0,
+                                     gm->core[CP_GAS_AMOUNT], mk);
             const double a2 = gm->core[CP_GAS_RATE_2];
             if (a2 > 0) { /* the second share (above) */
                 const double u2 = (T[i] - gm->core[CP_REACTION_T_2]) / gm->core[CP_REACTION_WIDTH_2];
-                G[i] += a2 * gm->params[gm->density_index] * dt * exp(-u2 * u2);
+                G[i] += gas_share_capped(a2 * R0 * dt * exp(-u2 * u2), R0, gm->core[CP_GAS_AMOUNT_2], mk ? mk + 1 : NULL);
             }
             if (vent) G[i] = vent_relax(s, i, G[i], vent_decay(ps, i, vent[i], dt));
         }
         return;
     }
     double rate[GAS_MATS], Tr[GAS_MATS], width[GAS_MATS], rate2[GAS_MATS], Tr2[GAS_MATS], width2[GAS_MATS];
+    double R0[GAS_MATS], amount[GAS_MATS], amount2[GAS_MATS];
     int live[GAS_MATS], two = 0;
     for (int k = 0; k < s->mats.n; k++) {
         const material_slot *gm = &slot[k];
@@ -238,8 +249,11 @@ void gas_between(hearth_scene *s, double dt) {
         rate2[k] = live[k] && a2 > 0 ? a2 * gm->params[gm->density_index] * dt : 0; /* the second share (above) */
         Tr2[k] = gm->core[CP_REACTION_T_2], width2[k] = gm->core[CP_REACTION_WIDTH_2];
         two |= rate2[k] > 0;
+        /* each share's amount (gas.h's gas_share_capped; 0: no limit) */
+        R0[k] = gm->params[gm->density_index], amount[k] = gm->core[CP_GAS_AMOUNT], amount2[k] = gm->core[CP_GAS_AMOUNT_2];
     }
-    if (s->mats.n == 1 && live[0] && memo && !two) {
+    /* the one-material loop has no amounts (a scene with one takes the loop below, which pays for them) */
+    if (s->mats.n == 1 && live[0] && memo && !two && !made) {
         gas_between_one(s, G, T, memo, vent, ps, n, rate[0], Tr[0], width[0], dt);
         return;
     }
@@ -247,11 +261,12 @@ void gas_between(hearth_scene *s, double dt) {
     for (int i = 0; i < n; i++) {
         const int k = mat[i];
         if (!live[k]) continue;
+        double *mk = made ? made + 2 * (size_t)i : NULL; /* each share within its amount (gas.h) */
         const double u = (T[i] - Tr[k]) / width[k];
-        G[i] += rate[k] * (memo ? exp_memo(memo + 2 * (size_t)i, -u * u) : exp(-u * u));
+        G[i] += gas_share_capped(rate[k] * (memo ? exp_memo(memo + 2 * (size_t)i, -u * u) : exp(-u * u)), R0[k], amount[k], mk);
         if (two && rate2[k] > 0) {
             const double u2 = (T[i] - Tr2[k]) / width2[k];
-            G[i] += rate2[k] * exp(-u2 * u2);
+            G[i] += gas_share_capped(rate2[k] * exp(-u2 * u2), R0[k], amount2[k], mk ? mk + 1 : NULL);
         }
         if (vent && vent[i] > 0) G[i] = vent_relax(s, i, G[i], vent_decay(ps, i, vent[i], dt));
     }

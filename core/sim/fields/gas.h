@@ -25,6 +25,30 @@ void gas_between(struct hearth_scene *s, double dt);
 /// linearly from T0 to T1 over fdt (gas_moles_step), less what the cycle's earlier steps (acc of it) made at
 /// T0 (gas_between), so a cycle makes the linear law's exact total. Single rate (acc = 0) is gas_moles_step.
 double gas_moles_field_step(double T0, double T1, double fdt, double acc, double alpha_g, double R0, double Tr, double dT);
+/// One share's moles within its amount (core parameters gas_amount, gas_amount_2; issue #18). Eq. 14 (Ding et al.
+/// 2019 §5.4, dn^g/dt = alpha^g R0 exp(-((theta - theta_r)/dtheta)^2)) has no reactant to run out of: a particle
+/// that stays near a share's theta_r makes CO2 for ever (the physical cookie's NH4Cl share made 0.056 mol/kg in the
+/// 110 degC oven, its formula holds 0.042; docs/validation.md "The physical cookie in the cooler ovens"). A leavener
+/// is a finite amount a (mol/kg of dough), so each particle counts what the share has made, *made (mol/kg, its
+/// PC_GAS_MADE entry), and the step's n (moles per reference volume, as gas_moles_step gives them; R0 the
+/// material's density) is cut to what is left: made <- min(max(made + n / R0, 0), a), and the step adds
+/// (made' - made) R0. Capped within the step, not after it: the step that reaches a makes exactly its rest, so a
+/// particle's total is a whatever the step (a rate switched off from the next step on would overshoot by up to one
+/// step's production, more at a larger dt). The rate is eq. 14's until then: depletion as a budget, not as a rate
+/// that falls with the reactant left (first-order kinetics), for which no measured constant in dough was found.
+/// The floor at 0: a field step's n is its cycle's linear-path total less what the cycle's earlier steps made
+/// (gas_moles_field_step), negative where the temperature fell; a cycle whose earlier steps met the amount may end
+/// up to that correction under a (second order in the cycle's temperature change). amount <= 0 or no column
+/// (made NULL): no limit, n as it is, so a scene without an amount keeps eq. 14's bits.
+static inline double gas_share_capped(double n, double R0, double amount, double *made) {
+    if (!(amount > 0) || !made) return n;
+    const double m0 = *made;
+    double m1 = m0 + n / R0;
+    if (m1 > amount) m1 = amount;
+    if (m1 < 0) m1 = 0;
+    *made = m1;
+    return (m1 - m0) * R0;
+}
 /// Porosity n^p = 1 - (1 - n^p_0) / J^P: Ding et al.'s gas volume fraction
 /// n^p = V^g / V^s in (0, 1) (§5.4) when the plastic flow changes only the
 /// pores' volume, the rest of the mixture keeping its (1 - n^p_0) V_0. Their

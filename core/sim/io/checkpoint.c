@@ -31,7 +31,10 @@
  * its last core material parameter, dry_conductivity (0, as wet: their bits); versions 4 to 7 without
  * version 8's last core material parameter, dry_specific_heat (0, as wet: their bits); versions 4 to 9 without
  * version 10's last two, ambient_pressure (0: eq. 13 as printed, their bits) and open_temperature; versions 4 to
- * 11 without version 12's last three, the second CO2 share (gas_rate_2 0: none, their bits). */
+ * 11 without version 12's last three, the second CO2 share (gas_rate_2 0: none, their bits); versions 4 to 12
+ * without version 13's last two, the shares' amounts (0: no limit, their bits), the CO2 each share made (none:
+ * the column is made only with an amount) and the bound on a lone particle (0: none for the first step, as they
+ * restored). */
 #include "checkpoint.h"
 
 #include <errno.h>
@@ -281,6 +284,7 @@ typedef struct ck_clocks {
     int32_t field_phase, field_cycle_last;
     int32_t water_limits; /* version 7: the water's explicit-step limits as the last step left them (1), or none (0) */
     double water_dmax, water_emax, water_lmax;
+    double self_max; /* version 13: the last step's bound on a lone particle (mpm_self.c); 0 before */
     int64_t step, ood;
     uint64_t rng;
 } ck_clocks;
@@ -343,6 +347,16 @@ static void get_clocks(ck_cursor *c, ck_clocks *k, uint32_t version) {
             !(k->water_lmax >= 0))
             ck_fail(c, "clock: the water's step limits are out of range (a flag 0 or 1, limits >= 0)");
     }
+    /* Version 13: the lone-particle bound's share alpha, which the next step's dt reads (mpm_self_dt) and the
+     * last step's G2P measured: without it a restore at cfl > 0.9 / sqrt(dim) took one step unbounded. alpha =
+     * tr(D^-1 sum_i w_ip (x_i - x_p) g_i^T) / dim with D = dx^2 / 4, |x_i - x_p| and |g_i| at most 1.5 dx per
+     * axis and the weights summing to 1: at most 9. A larger one would only shrink dt, a NaN or negative one
+     * would lift the bound: both refused. */
+    k->self_max = 0;
+    if (version >= 13) {
+        k->self_max = get_f64(c);
+        if (!(k->self_max >= 0 && k->self_max <= 9)) ck_fail(c, "clock: the lone-particle bound's share is outside [0, 9]");
+    }
 }
 
 /* A refusal: the file named, then what is wrong. Frees s. */
@@ -376,7 +390,8 @@ static int get_materials(ck_cursor *c, hearth_scene *s, const char *name, uint32
     /* the core parameters the file holds: before version 7, all up to dry_conductivity, before version 8 up to
      * dry_specific_heat, before version 10 up to ambient_pressure, before version 12 up to gas_rate_2; those left at
      * their defaults (0, as wet; 0, eq. 13 as printed, and open_temperature unread; 0, no second CO2 share) */
-    const int ncore = version >= 12  ? CP_COUNT
+    const int ncore = version >= 13  ? CP_COUNT
+                      : version >= 12 ? CP_GAS_AMOUNT
                       : version >= 10 ? CP_GAS_RATE_2
                       : version >= 8 ? CP_AMBIENT_PRESSURE
                       : version >= 7 ? CP_DRY_SPECIFIC_HEAT
@@ -543,18 +558,29 @@ static int check_column(ck_cursor *c, const hearth_scene *s, int col, int n) {
     if (col == PC_DRIED) /* 1 - the lowest moisture ratio reached */
         for (int i = 0; i < n; i++)
             if (!(a[i] >= 0 && a[i] <= 1)) return ck_fail(c, "a particle's dried value outside [0, 1]");
+    if (col == PC_GAS_MADE) /* each share's CO2 made, within its material's amount (gas.h's gas_share_capped) */
+        for (int i = 0; i < n; i++) {
+            const double *core = s->mats.slot[pcoli(ps, PC_MAT)[i]].core;
+            for (int k = 0; k < 2; k++) {
+                const double amount = core[k ? CP_GAS_AMOUNT_2 : CP_GAS_AMOUNT], m = a[2 * i + k];
+                if (!(m >= 0 && m <= (amount > 0 ? amount : 0)))
+                    return ck_fail(c, "a particle's CO2 made outside [0, its share's gas_amount]");
+            }
+        }
     if (col == PC_MASS || col == PC_VOL0)
         for (int i = 0; i < n; i++)
             if (!(a[i] > 0)) return ck_fail(c, "a particle mass or volume <= 0");
     return 0;
 }
 
-static int get_particles(ck_cursor *c, hearth_scene *s, uint32_t *absent, hearth_error *err) {
+static int get_particles(ck_cursor *c, hearth_scene *s, uint32_t version, uint32_t *absent, hearth_error *err) {
     get_tag(c, "PART", "the particles section is missing");
     const uint32_t n = get_u32(c), stride = get_u32(c), enabled = get_u32(c);
     if (c->bad) return -1;
     const uint32_t core = (1u << PC_NCORE) - 1;
     if ((enabled & core) != core || enabled >= (1u << PC_COUNT)) return ck_fail(c, "unknown or missing particle columns");
+    if (version < 13 && (enabled & (1u << PC_GAS_MADE))) /* its bit was a memo's before version 13 */
+        return ck_fail(c, "a CO2-made column in a file older than version 13");
     for (int k = 0; k < PC_COUNT; k++) /* never saved (checkpoint_save.c): a file that has one was not written by hearth */
         if ((enabled & (1u << k)) && particles_col_is_memo(k))
             return ck_fail(c, "a memo column (a cache the scene recomputes, never saved) in the particles section");
@@ -601,6 +627,9 @@ static int get_particles(ck_cursor *c, hearth_scene *s, uint32_t *absent, hearth
     /* nor one saved before browning read the air surface: each particle its own until the next field step */
     if ((ps->enabled & (1u << PC_SURFACE)) && !(enabled & (1u << PC_SURFACE)) && n)
         memset(ps->col[PC_SURFACE], 0, sizeof(double) * 2 * (size_t)n);
+    /* nor one saved before a share had an amount: nothing made yet (gas.h's gas_share_capped) */
+    if ((ps->enabled & (1u << PC_GAS_MADE)) && !(enabled & (1u << PC_GAS_MADE)) && n)
+        memset(ps->col[PC_GAS_MADE], 0, sizeof(double) * 2 * (size_t)n);
     *absent = ps->enabled & ~enabled; /* the columns above, zeroed: the file's hash never saw them */
     ps->n = (int)n;
     return 0;
@@ -627,6 +656,7 @@ static void set_clocks(hearth_scene *s, const ck_clocks *k) {
     s->field_phase = k->field_phase;
     s->field_dt_last = k->field_dt_last;
     s->field_cycle_last = k->field_cycle_last;
+    s->self_max = k->self_max;
     if (k->water_limits && water_active(s)) water_restore_limits(&s->water, k->water_dmax, k->water_emax, k->water_lmax);
 }
 
@@ -680,7 +710,7 @@ hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name
     if (get_colliders(&c, s, err)) return refuse_at(s, err, name, &c, "colliders");
     s->next_id = k.next_id;
     uint32_t absent = 0;
-    if (get_particles(&c, s, &absent, err)) return refuse_at(s, err, name, &c, "particles");
+    if (get_particles(&c, s, version, &absent, err)) return refuse_at(s, err, name, &c, "particles");
     get_tag(&c, "HASH", "the particle hash is missing");
     const uint64_t h = get_u64(&c);
     if (c.bad) return refuse_at(s, err, name, &c, "particle hash");

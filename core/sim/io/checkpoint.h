@@ -30,9 +30,11 @@
  *           f64 the fields' cycle time, i32 its steps, f64 and i32 the last field step's
  *           version 7 appends i32 whether the water's step limits are kept (1) and f64 their
  *           dmax, emax and lmax (water.h's water_state)
+ *           version 13 appends f64 self_max (mpm_self.c's bound on a lone particle, in [0, 9])
  *    "MATS" u32 count; per material: name, u32 ABI, u64 schema hash,
  *           u32 nparams, f64 params, f64 core params (params.h's order: version 7 appended
- *           dry_conductivity, version 8 dry_specific_heat, version 10 ambient_pressure and open_temperature), u32 curves, curves (each: u32 param,
+ *           dry_conductivity, version 8 dry_specific_heat, version 10 ambient_pressure and open_temperature, version 12
+ *           the second CO2 share's three, version 13 gas_amount and gas_amount_2), u32 curves, curves (each: u32 param,
  *           u32 points, u32 flags: bit 0 irreversible, bit 1 a moisture curve; f64 x, f64 values)
  *    "COLS" u32 count; per collider: shape tree (shape_read_mem), contact and pose
  *    "PART" u32 n, u32 state stride, u32 enabled columns; per enabled column
@@ -55,8 +57,11 @@
  * none, and its first step glues what its sticky faces held then (every particle whose stencil reaches a node on
  * or inside them), so it goes on as it was saved (an older hearth refuses a version 11 file by its version); 12: the
  * materials' second CO2 share, gas_rate_2, reaction_temperature_2, reaction_width_2 (params.h; gas.c): an older file
- * has none and loads with gas_rate_2 0, its bits */
-#define CK_VERSION 12u
+ * has none and loads with gas_rate_2 0, its bits; 13: the materials' gas_amount and gas_amount_2 (params.h; gas.h's
+ * gas_share_capped), the CO2 each share has made (PC_GAS_MADE, "gas_made") in PART when a material has an amount, and
+ * f64 self_max appended to CLK (the last step's bound on a lone particle, mpm_self.c): an older file has no amounts
+ * (no limit), so nothing made, and self_max 0 (its first step unbounded, as it restored then) */
+#define CK_VERSION 13u
 /// Oldest version read: a version 4 file is version 5's layout without the
 /// DEF fields version 5 appended.
 #define CK_VERSION_MIN 4u

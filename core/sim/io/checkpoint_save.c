@@ -101,6 +101,9 @@ static void put_clocks(ck_out *o, const hearth_scene *s) {
     put_f64(o, s->water.dmax);
     put_f64(o, s->water.emax);
     put_f64(o, s->water.lmax);
+    /* version 13: the last step's bound on a lone particle, so a restore at cfl > 0.9 / sqrt(dim) takes the step the
+     * run takes (mpm_self.c: the bound comes from the previous step's G2P) */
+    put_f64(o, s->self_max);
 }
 
 static void put_materials(ck_out *o, const hearth_scene *s) {

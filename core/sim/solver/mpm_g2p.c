@@ -23,6 +23,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
     const int PIC = HEAT == 2;
     double *Tcol = HEAT ? pcold(ps, PC_TEMPERATURE) : NULL, *Tmax = HEAT ? pcold(ps, PC_TEMP_MAX) : NULL;
     double *Gcol = HEAT && (ps->enabled & (1u << PC_GAS)) ? pcold(ps, PC_GAS) : NULL;
+    double *Mcol = Gcol && (ps->enabled & (1u << PC_GAS_MADE)) ? pcold(ps, PC_GAS_MADE) : NULL; /* gas.h's gas_share_capped */
     const int *flags = ps->enabled & (1u << PC_FLAGS) ? pcoli(ps, PC_FLAGS) : NULL;
     const double *hold_h = HEAT && s->heat.nfix > 0 ? s->heat.hold_h : NULL; /* held temperatures (thermal.c) */
     const double boil = HEAT && WATER && s->def.latent_heat ? s->def.boiling_point : INFINITY; /* no boiling: never passed */
@@ -187,13 +188,17 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
             if (Gcol) { /* CO2 over the cycle, temperature moving linearly from T0 to T1 (§5.4), less what its
                          * earlier steps made (gas.c's gas_between: the gas moves every step) */
                 const material_slot *gm = &s->mats.slot[mat[i]];
-                Gcol[i] += gas_moles_field_step(T0, isnan(Tgas) ? Tcol[i] : Tgas, fdt, s->field_acc, gm->core[CP_GAS_RATE],
-                                                gm->params[gm->density_index], gm->core[CP_REACTION_T],
-                                                gm->core[CP_REACTION_WIDTH]);
+                const double R0 = gm->params[gm->density_index];
+                double *made = Mcol ? Mcol + 2 * (size_t)i : NULL; /* each share within its amount, if it has one */
+                Gcol[i] += gas_share_capped(gas_moles_field_step(T0, isnan(Tgas) ? Tcol[i] : Tgas, fdt, s->field_acc,
+                                                                 gm->core[CP_GAS_RATE], R0, gm->core[CP_REACTION_T],
+                                                                 gm->core[CP_REACTION_WIDTH]),
+                                            R0, gm->core[CP_GAS_AMOUNT], made);
                 if (gm->core[CP_GAS_RATE_2] > 0) /* the second share, after the first (gas.c) */
-                    Gcol[i] += gas_moles_field_step(T0, isnan(Tgas) ? Tcol[i] : Tgas, fdt, s->field_acc,
-                                                    gm->core[CP_GAS_RATE_2], gm->params[gm->density_index],
-                                                    gm->core[CP_REACTION_T_2], gm->core[CP_REACTION_WIDTH_2]);
+                    Gcol[i] += gas_share_capped(gas_moles_field_step(T0, isnan(Tgas) ? Tcol[i] : Tgas, fdt, s->field_acc,
+                                                                     gm->core[CP_GAS_RATE_2], R0, gm->core[CP_REACTION_T_2],
+                                                                     gm->core[CP_REACTION_WIDTH_2]),
+                                                R0, gm->core[CP_GAS_AMOUNT_2], made ? made + 1 : NULL);
                 if (vent) Gcol[i] = gas_vent(s, i, Gcol[i], dt); /* open surface pores vent to the air (gas.c) */
             }
         }

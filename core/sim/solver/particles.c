@@ -38,6 +38,7 @@ static const struct {
     [PC_VENT] = {"vent_rate", 1, 0},
     [PC_SURFACE] = {"browning_surface", 2, 0},
     [PC_GLUE] = {"glue", 1, 1},
+    [PC_GAS_MADE] = {"gas_made", 2, 0},
     [PC_THERMAL_MEMO] = {"thermal_memo", 2, 0},
     [PC_GAS_MEMO] = {"gas_memo", 2, 0},
     [PC_CURVE_MEMO] = {"curve_memo", CURVE_MEMO_WIDTH, 0},

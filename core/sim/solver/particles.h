@@ -46,6 +46,8 @@ typedef enum pcol {
                                 * particle's own at the last field step, 0 inside (browning.c), 2 */
     PC_GLUE,                   /* the sticky faces the particle has touched: bit s for glue slot s (mpm_touch.c's
                                 * mpm_touch_glue_bit), int32; enabled in an MPM scene with a sticky face */
+    PC_GAS_MADE,               /* the CO2 each share has made (mol/kg: gas_rate's, gas_rate_2's), 2; enabled when a
+                                * material gives a share an amount (gas_amount, gas_amount_2; gas.h's gas_share_capped) */
     /* memos (exp_memo.h): a cache of exp at the particle's last argument, 2 (the argument, its exp); never
      * hashed nor saved: a zeroed entry misses, so any value computes the same bits */
     PC_THERMAL_MEMO,           /* the thermal split's exp(-ln J_th / 3) (material_batch.c's thermal_scales_block) */

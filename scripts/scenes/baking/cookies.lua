@@ -48,8 +48,11 @@
 --                           sodatwo)"; since open pores vent toward the atmosphere, not to a vacuum,
 --                           the 150 and 110 degC cookies no longer shed pieces, and at 110 the most
 --                           leavened is a foam of J ~3.5: "The physical cookie in the cooler ovens
---                           (#18, helper cookiecool)"). The leavener a scales
---                           both of the preset's shares by a / 0.015, so 0.015 is the formula's. until_t = 0 bakes the preset's own time (paper 5 s).
+--                           (#18, helper cookiecool)"; each share now stops at the formula's amount,
+--                           0.042 mol/kg of the NH4Cl share and 0.027 of the soda, where the bell alone
+--                           made 0.056 of the first at 110 degC: "A leavener runs out (#18, helper
+--                           depletion)"). The leavener a scales both of the preset's shares (their
+--                           rates and amounts) by a / 0.015, so 0.015 is the formula's. until_t = 0 bakes the preset's own time (paper 5 s).
 --   [--set seed=2]        the particles' jitter (h.scene's seed, default 1): a
 --                           new sampling of the same dough, to see a reading's
 --                           noise (docs/validation.md, "Fig. 17: the top's
@@ -122,7 +125,7 @@ local defaults = { dim = h.number { 2, min = 2, max = 3, integer = true, what = 
     what = "the ovens' temperatures, one bake each" },
   leaveners = h.number { { 0.015, 0.0075, 0 }, list = true, min = 0,
     what = "the cookies' leaveners, side by side on each tray (0.015: the formula's)" },
-  gas = h.number { 1, min = 0, what = "a factor on the CO2 rates" },
+  gas = h.number { 1, min = 0, what = "a factor on the CO2 rates (and the physical preset's amounts)" },
   tray_mode = h.choice("separate", h.contact_words),
   tray_friction = h.number { 0.4, min = 0, what = "the tray's Coulomb friction coefficient" },
   seed = h.number { 1, min = 0, integer = true, what = "the particles' seeding (0 acts as 1)" },
@@ -215,6 +218,9 @@ for _, T in ipairs(ovens) do
     if physical then -- both of the preset's CO2 shares (its NH4Cl share is gas_rate_2, dough_physical.lua)
       d.gas_rate = d.gas_rate * a / A_PRESET * P.gas; gas_of[i] = d.gas_rate
       if d.gas_rate_2 then d.gas_rate_2 = d.gas_rate_2 * a / A_PRESET * P.gas end
+      -- and each share's amount (its reactant: the leavener), the same factor
+      if d.gas_amount then d.gas_amount = d.gas_amount * a / A_PRESET * P.gas end
+      if d.gas_amount_2 then d.gas_amount_2 = d.gas_amount_2 * a / A_PRESET * P.gas end
     else d.gas_rate = a * h.library.dough_scale.gas * P.gas end
     if not physical then d.conductivity = d.conductivity * P.conductivity end
     local S0, WATER_S = 0.10, 600 -- the levers above: water as dough.lua's WATER (2e-7 m^2/s, 1.2e-3 kg/(m^2 s K), x600)
