@@ -101,7 +101,10 @@ claim_sph_bread_roll_sits_on_tray | claim_sph_bread_roll_sits_on_tray_fine)
         "spacing: with the preset's set (soft to 68 degC, 1 MPa at 80, helper rollset) the roll rises 1.42-1.43x," \
         "and from 1.6 s (coolest particle 75 degC) its base turns convex under the set crust: the middle stays on" \
         "the tray, the ends lift (with the preset's sph.hourglass = 0.5, 2 mm: 2.56 mm at 1.6 s, 4.46 at 1.9 s," \
-        "5.94 at 2.0 s; 1.5 mm: 6.24 mm at 1.4 s, 2.8-4.3 after; before it, 2 mm: 1.63 mm at 1.6 s, 5.52 at 2.0 s;" \
+        "5.94 at 2.0 s; with the oven's heat on the outer surface (sph_outer.c, helper angelheat) 7.92 at 2.0 s; with" \
+        "eq. 3.51 stopped at the gas's volume and each outer particle's share of the face (helper deadbread) 3.96 mm" \
+        "at 1.7 s, 2.53 at 2.0 s, a 1.4167x rise (the same run read by claim_sph_bread_roll_rises);" \
+        "1.5 mm: 6.24 mm at 1.4 s, 2.8-4.3 after; before it, 2 mm: 1.63 mm at 1.6 s, 5.52 at 2.0 s;" \
         "1.5 mm: 1.66 mm at 1.6 s, 7.85 at 2.0 s, a slit up through the base crust; helper rollglass):" \
         "the crumb's closed bubbles go on pushing their gas inside a set shell. A real crumb's cells open at the" \
         "set and its pressure leaves (McGee 2004); the model's bubbles stay closed. Measured before the hourglass" \
