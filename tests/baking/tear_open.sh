@@ -70,7 +70,7 @@ claim_raw_batter_stretches_before_tearing | claim_raw_batter_stretches_before_te
     # seed 1 is the setting's default: the baked run is then the very one the claims above make, and shares it
     # (baking_test.sh's shared_run)
     seeded=()
-    [ "$seed" = 1 ] || seeded=(--set seed=$seed)
+    [ "$seed" = 1 ] || seeded=(--set "seed=$seed")
     run tear_open --set food=$food --set dx=$dx "${seeded[@]}" >/dev/null
     run tear_open --set food=$food --set dx=$dx "${seeded[@]}" --set raw=true --out raw >/dev/null
     python3 - hearth-out/tear_open/tear_open.csv raw/tear_open.csv $food $dx $seed <<'PY'
