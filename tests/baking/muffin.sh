@@ -156,7 +156,10 @@ claim_muffin_top_tears | claim_muffin_top_tears_fine | claim_muffin_top_tears_pp
     dx=0.004 ppc=0
     [ "$case_name" = claim_muffin_top_tears_fine ] && dx=0.003
     [ "$case_name" = claim_muffin_top_tears_ppc9 ] && ppc=9
-    run muffins --set cups=1 --set dx=$dx --set ppc=$ppc --set until_t=1.5 --set frames=3 >/dev/null
+    # ppc 0 is the scene's default: at 4 mm the run is then claim_muffin_domes', and shares it (baking_test.sh's shared_run)
+    dense=()
+    [ "$ppc" = 0 ] || dense=(--set "ppc=$ppc")
+    run muffins --set cups=1 --set dx=$dx "${dense[@]}" --set until_t=1.5 --set frames=3 >/dev/null
     python3 - hearth-out/muffins/muffins.csv $dx $ppc <<'PY'
 import csv, sys
 r = list(csv.DictReader(open(sys.argv[1])))[-1]
