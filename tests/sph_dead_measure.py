@@ -24,21 +24,16 @@ largest, in DX^2)."""
 import math, os, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sph_roll_measure import Raster, closing, components, discs, load, pieces  # noqa: E402
+from sph_roll_measure import Raster, discs, load, pieces, void_parts  # noqa: E402
 
 
 def voids(pts, dx, rc):
     """The largest closed and the largest open void (m^2)."""
-    g = dx / 4
-    ras = Raster(pts, g, dx + rc + 4 * g)
-    nx, ny = ras.nx, ras.ny
-    dough = discs(pts, dx, ras)
-    env = closing(dough, nx, ny, rc / g)
-    void = bytearray(1 if env[c] and not dough[c] else 0 for c in range(nx * ny))
+    ras, _, _, parts = void_parts(pts, dx, rc)
     closed_max = open_max = 0.0
-    for comp in components(void, nx, ny):
-        a = len(comp) * g * g
-        if all(env[c - 1] and env[c + 1] and env[c - nx] and env[c + nx] for c in comp):
+    for comp, closed in parts:
+        a = len(comp) * ras.g * ras.g
+        if closed:
             closed_max = max(closed_max, a)
         else:
             open_max = max(open_max, a)

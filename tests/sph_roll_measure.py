@@ -131,23 +131,31 @@ def components(mask, nx, ny):
     return comps
 
 
-def measure(pts, dx, rc, picture=None):
-    """(dough + closed gas cells, envelope, torn area, largest torn void) in m^2.
-    With picture (a path), also a PNG of what it counted: dough brown, gas cells
-    blue, torn voids red, surface notches grey, particles black."""
+def void_parts(pts, dx, rc):
+    """The body's raster (Raster at dx/4), its dough (discs of radius dx), its envelope (the dough's closing by
+    rc), and each connected part of the envelope outside the dough with whether it is closed (no cell of it borders
+    a cell outside the envelope): a hole inside, not a notch in the outline. sph_dead_measure.py reads the same."""
     g = dx / 4
     ras = Raster(pts, g, dx + rc + 4 * g)
     nx, ny = ras.nx, ras.ny
     dough = discs(pts, dx, ras)
     env = closing(dough, nx, ny, rc / g)
     void = bytearray(1 if env[c] and not dough[c] else 0 for c in range(nx * ny))
-    cell, cap = g * g, 4 * dx * dx
+    parts = [(comp, all(env[c - 1] and env[c + 1] and env[c - nx] and env[c + nx] for c in comp))
+             for comp in components(void, nx, ny)]
+    return ras, dough, env, parts
+
+
+def measure(pts, dx, rc, picture=None):
+    """(dough + closed gas cells, envelope, torn area, largest torn void) in m^2.
+    With picture (a path), also a PNG of what it counted: dough brown, gas cells
+    blue, torn voids red, surface notches grey, particles black."""
+    ras, dough, env, parts = void_parts(pts, dx, rc)
+    cell, cap = ras.g * ras.g, 4 * dx * dx
     gas = torn = biggest = 0.0
     kind = bytearray(dough)  # 0 outside, 1 dough, 2 gas cell, 3 notch, 4 torn
-    for comp in components(void, nx, ny):
+    for comp, closed in parts:
         a = len(comp) * cell
-        # closed: no cell of it borders a cell outside the envelope
-        closed = all(env[c - 1] and env[c + 1] and env[c - nx] and env[c + nx] for c in comp)
         if closed and a <= cap:
             gas, k = gas + a, 2
         elif a <= dx * dx:
