@@ -13,9 +13,12 @@ without it: a disc of dough on a square lattice of spacing DX, radius 25 DX.
   part     a knuckle of 3 x 3 particles moved 2.5 DX off the disc's side:
            two pieces, the largest holding all but 9 particles
 Exit 0 pass, 1 fail (prints the numbers)."""
-import os, subprocess, sys, tempfile
+import os, sys
 
-DX, RAD = 0.002, 25
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import sph_roll_measure_check as roll_check  # noqa: E402  (its run(), at the same DX)
+
+DX, RAD = roll_check.DX, 25
 
 
 def lattice(k=1.0, drop=lambda i, j: False):
@@ -24,17 +27,7 @@ def lattice(k=1.0, drop=lambda i, j: False):
 
 
 def run(p0, p1):
-    with tempfile.TemporaryDirectory() as d:
-        paths = []
-        for name, pts in (("a.csv", p0), ("b.csv", p1)):
-            path = os.path.join(d, name)
-            with open(path, "w") as f:
-                f.write("x,y\n" + "".join("%.9g,%.9g\n" % p for p in pts))
-            paths.append(path)
-        here = os.path.dirname(os.path.abspath(__file__))
-        out = subprocess.run([sys.executable, os.path.join(here, "sph_dead_measure.py"), str(DX)] + paths,
-                             capture_output=True, text=True, check=True).stdout.split()
-    return {out[i]: float(out[i + 1]) for i in range(0, len(out), 2)}
+    return roll_check.run(p0, p1, "sph_dead_measure.py")
 
 
 def main():

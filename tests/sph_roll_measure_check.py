@@ -28,7 +28,9 @@ def lattice(k=1.0, drop=lambda i, j: False):
     return pts
 
 
-def run(p0, p1):
+def run(p0, p1, measure="sph_roll_measure.py"):
+    """The measure script's 'key value ...' output on the two particle sets (sph_dead_measure_check.py reads
+    sph_dead_measure.py through it)."""
     with tempfile.TemporaryDirectory() as d:
         paths = []
         for name, pts in (("a.csv", p0), ("b.csv", p1)):
@@ -37,7 +39,7 @@ def run(p0, p1):
                 f.write("x,y\n" + "".join("%.9g,%.9g\n" % p for p in pts))
             paths.append(path)
         here = os.path.dirname(os.path.abspath(__file__))
-        out = subprocess.run([sys.executable, os.path.join(here, "sph_roll_measure.py"), str(DX)] + paths,
+        out = subprocess.run([sys.executable, os.path.join(here, measure), str(DX)] + paths,
                              capture_output=True, text=True, check=True).stdout.split()
     return {out[i]: float(out[i + 1]) for i in range(0, len(out), 2)}
 

@@ -505,11 +505,7 @@ static void amounts_at(int field_steps, int others) {
     CHECK(s->ps.enabled & (1u << PC_GAS_MADE));
     CHECK(strstr(hearth_scene_fields(s), "gas_made gas_made_2") != NULL);
     const double c[3] = {0.5, 0.5, 0}, h[3] = {0.1, 0.1, 0};
-    hearth_shape *box = hearth_shape_box(c, h);
-    hearth_body_def bd = hearth_default_body_def();
-    bd.shape = box, bd.material = m, bd.temperature = T, bd.fixed = 1;
-    CHECK(hearth_scene_add_body(s, &bd, &err) == 0);
-    hearth_shape_free(box);
+    CHECK(fx_pinned_box(s, m, c, h, T, NAN) == 0);
     const double u1 = (T - Tr1) / w1, u2 = (T - Tr2) / w2, r1 = a1 * exp(-u1 * u1), r2 = a2 * exp(-u2 * u2);
     double worst = 0, worst_made = 0;
     for (int k = 0; k < 50; k++) {
