@@ -31,7 +31,7 @@ def stands(rows, bake, cut, dx):
     b, c, e = at(bake), at(cut), rows[-1]
     moved = float(e["reach_left_m"]) - float(b["reach_left_m"])
     kept = float(c["height_m"]) / float(b["height_m"])
-    print(f"dx {dx*1e3:.0f} mm: uncut edge {float(b['reach_left_m'])*1e3:.1f} mm left of the centre at {b['t_s']} s, "
+    print(f"dx {dx*1e3:g} mm: uncut edge {float(b['reach_left_m'])*1e3:.1f} mm left of the centre at {b['t_s']} s, "
           f"{float(e['reach_left_m'])*1e3:.1f} mm at {e['t_s']} s (moved {moved*1e3:.1f} mm; bar < {2*dx*1e3:.0f}); "
           f"height {float(b['height_m'])*1e3:.1f} mm -> {float(c['height_m'])*1e3:.1f} mm at {c['t_s']} s "
           f"({kept*100:.0f}%; bar >= 75%)")
@@ -41,10 +41,10 @@ def stands(rows, bake, cut, dx):
 def flows(rows, bake, cut, dx):
     after = [r for r in rows if float(r["t_s"]) >= cut - 1e-9]
     if not after:
-        print(f"dx {dx*1e3:.0f} mm: no frame from the cut (t = {cut} s) on")
+        print(f"dx {dx*1e3:g} mm: no frame from the cut (t = {cut} s) on")
         return False
     r0, r1 = float(after[0]["reach_right_m"]), float(rows[-1]["reach_right_m"])
-    print(f"dx {dx*1e3:.0f} mm: reach right of the centre: {r0*1e3:.1f} mm at the cut (t = {after[0]['t_s']} s), "
+    print(f"dx {dx*1e3:g} mm: reach right of the centre: {r0*1e3:.1f} mm at the cut (t = {after[0]['t_s']} s), "
           f"{r1*1e3:.1f} mm at t = {rows[-1]['t_s']} s")
     return len(after) >= 3 and r1 > r0 + 2 * dx
 
