@@ -49,7 +49,7 @@
 -- left side the batter has passed its egg set (73 degC) at the raw cake's mid-height, and the share of the
 -- particles past it (their temperature now).
 -- The centre's temperature is probed at the raw cake's mid-height (15 mm above
--- the plate, on its axis); once the slumped cake no longer reaches that point
+-- the plate, physical 22 mm, on its axis); once the slumped cake no longer reaches that point
 -- (from t ~ 1.3 s by default) the column reads -1, not a temperature.
 local h = require "hearth"
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
@@ -107,7 +107,8 @@ local ring_shape = d3 and (h.cylinder(v(XC, PLATE + HC / 2, zc), { 0, 1, 0 }, R 
   or (h.box(v(XC - R - WALL, PLATE), v(XC - R, PLATE + HC)) + h.box(v(XC + R, PLATE), v(XC + R + WALL, PLATE + HC)))
 if P.dt_max > 0 then s:set_dt(nil, P.dt_max) end
 local ring = s:collider { shape = ring_shape, mode = "slip", temperature = oven.pan_temperature, beta = oven.pan_beta }
--- ramekin_base = 1: the ramekin's floor, heated as its wall (Table 2's conductive theta and beta), under the cake
+-- ramekin_base = 1: the ramekin's floor, heated as its wall (the preset's pan: Table 2's conductive theta and beta, or
+-- the physical mould's 200 degC through 100 W/(m^2 K)), under the cake
 -- during the bake; it drops out of the scene when the ring lifts, leaving the cake on the cold plate
 local ramekin_base = P.ramekin_base >= 0 and P.ramekin_base or physical and 1 or 0
 local base = ramekin_base == 1 and s:collider { shape = h.box(v(XC - R - WALL, PLATE - WALL, -1), v(XC + R + WALL, PLATE, 1)),
