@@ -223,11 +223,6 @@ static int report(lua_State *L, const char *cmd, const char *out) {
         break;
     default:
         fprintf(stderr, "hearth %s: %s\n", cmd, lua_tostring(L, -1));
-        if (hearth_memory_limit_refused())
-            fprintf(stderr, "hearth %s: the simulation reached its memory ceiling of %.3g %s (--memory SIZE sets it; "
-                            "the machine has %.3g GB)\n",
-                    cmd, (double)hearth_memory_limit() / (hearth_memory_limit() < 1e9 ? 1e6 : 1e9),
-                    hearth_memory_limit() < 1e9 ? "MB" : "GB", (double)hearth_machine_memory() / 1e9);
         st = 1;
     }
     lua_pop(L, 2);

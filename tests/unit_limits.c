@@ -158,6 +158,7 @@ TEST(memory_limit_refuses_seed_and_growth) {
            st ? err.msg : "ran");
     CHECK(st == HEARTH_ERR_NOMEM);
     CHECK(hearth_memory_limit_refused());
+    CHECK_STR_CONTAINS(err.msg, "the simulation reached its memory ceiling of");
     CHECK(hearth_bytes_allocated() <= ceiling);
     hearth_set_memory_limit(0);
     CHECK(!hearth_memory_limit_refused());
