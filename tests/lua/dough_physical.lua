@@ -45,11 +45,32 @@ do
   assert(#d.tau_y == 5 and d.tau_y[5][1] == 70 and d.tau_y[4][1] == 55, "pancake: the muffin batter's set (MUFFIN_SET)")
   h.material("cam_clay_dough", d) -- passes the plugin's schema
 end
+-- the lava cake (helper lavaphys): a chocolate fondant batter in a 200-220 degC oven for 10-15 real minutes (recipes'
+-- ranges), egg-set between 62 and 80 degC (the brief's range of egg proteins) to at least the 62 Pa a 28 mm cake
+-- needs ("The lava cake stands"), from a batter at the room's or the fridge's temperature; its portion a ramekin's
+do
+  local d, o = h.library.dough.lava_cake, h.library.oven.lava_cake
+  local S = o.time_scale
+  local xw = 1000 * d.saturation / d.density
+  assert(xw >= 0.15 and xw <= 0.35, "lava_cake: water mass fraction " .. xw)
+  assert(o.latent_heat == true and o.boiling_point == 100 and o.browning_scale == S, "lava_cake: latent heat and boiling on")
+  assert(o.temperature >= 200 and o.temperature <= 220 and o.pan_temperature == o.temperature, "lava_cake: the oven")
+  assert(o.bake_time * S >= 600 and o.bake_time * S <= 900, "lava_cake: the bake's real time " .. o.bake_time * S)
+  assert(o.dough_temperature >= 4 and o.dough_temperature <= 25, "lava_cake: a batter from the fridge or the room")
+  assert(o.portion >= 50e-6 and o.portion <= 250e-6, "lava_cake: a ramekin's portion, m^3: " .. o.portion)
+  assert(d.specific_heat >= 2000 and d.specific_heat <= 3000 and d.conductivity / S >= 0.2 and d.conductivity / S <= 0.6,
+    "lava_cake: a batter's heat capacity and conductivity")
+  local ty = d.tau_y
+  assert(#ty == 5 and ty[4][1] >= 62 and ty[5][1] <= 80 and ty[4][1] < ty[5][1], "lava_cake: the egg's set temperatures")
+  assert(ty[4][2] == ty[3][2] and ty[5][2] >= 62, "lava_cake: melted until the set starts, set to >= 62 Pa")
+  h.material("cam_clay_dough", d) -- passes the plugin's schema
+end
 -- the paper presets keep Table 2's animation units and say so
 local p, po = h.library.paper.bread, h.library.paper_oven.bread
 assert(p.specific_heat == 20 and po.latent_heat == false, "h.library.paper: Table 2 verbatim (c = 20 J/(kg K)), latent heat off")
 local ok, e = pcall(function() return h.library.dough.smore end)
-assert(not ok and e:find("no preset 'smore'") and e:find("bread, cookie, muffin"), "physical presets list their names: " .. tostring(e))
+assert(not ok and e:find("no preset 'smore'") and e:find("bread, cookie, lava_cake, muffin, pancake"),
+  "physical presets list their names: " .. tostring(e))
 ok, e = pcall(function() return h.library.paper.cooky end)
 assert(not ok and e:find("did you mean 'cookie'"), "nearest paper preset: " .. tostring(e))
 -- a physical scene takes its oven as given
