@@ -37,7 +37,8 @@
  * there a real crumb's cells open and vent, so V_b / V_b0 stops at
  * sph.bubble_vmax. A bubble's rest volume m / rho_b follows its temperature
  * both ways: it grows while it heats and shrinks as it cools, with no history
- * to keep (and nothing for a rollback to lose). */
+ * to keep (and nothing for a rollback to lose), unless sph.bubble_stays_open
+ * keeps a cell that has opened at the cap open (sph_pressure_gas_law). */
 /* The vapour's partial pressure in a bubble, a_w P_sat(T) (eq. 2.43 through
  * 100 degC at 101325 Pa, Delta H_v = 40.66 kJ/mol: vapour.h); 0 for a dry gas. */
 static double vapour_pressure(const hearth_sph_def *o, double T) {
