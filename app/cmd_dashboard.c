@@ -23,7 +23,7 @@ static hearth_scene *builtin_scene(const char **name, hearth_error *err) {
 
 static void usage(FILE *f) {
     fprintf(f, "usage: hearth [SCENE.lua] [--out DIR] [--set k=v]... [--threads N] [--trust] [--until T]\n"
-               "              [--lua-memory SIZE] [--play] [--exit-when-done]\n"
+               "              [--lua-memory SIZE] [--memory SIZE] [--play] [--exit-when-done]\n"
                "The live dashboard: two slice views, status, probes, a log and a Lua prompt.\n"
                "With no scene it opens the built-in demo. Press ? inside for the keys.\n"
                "  --out DIR         where s, c and the scene's outputs go (default hearth-out/<scene>)\n"
@@ -32,6 +32,7 @@ static void usage(FILE *f) {
                "  --play            start running instead of paused\n"
                "  --exit-when-done  quit when the scene's runs have finished (for benchmarks)\n"
                "  --lua-memory SIZE ceiling of the scene's Lua memory (default 512M)\n"
+               "  --memory SIZE     ceiling of the simulation's memory (default half the machine's)\n"
                "  --trust           lift the scene sandbox\n"
                "It needs a terminal; for pipes and scripts use `hearth run SCENE.lua` (headless)\n"
                "or `hearth repl [SCENE.lua]` (a plain prompt). TERM=dumb gives a line mode.\n");

@@ -6,6 +6,7 @@
 #include <lauxlib.h>
 #include <lua.h>
 #include <lualib.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,12 +22,13 @@
 
 static void run_usage(FILE *f, const char *cmd) {
     if (!strcmp(cmd, "repl"))
-        fprintf(f, "usage: hearth repl [SCENE.lua] [--out DIR] [--set k=v]... [--threads N] [--lua-memory SIZE] [--trust]\n"
+        fprintf(f, "usage: hearth repl [SCENE.lua] [--out DIR] [--set k=v]... [--threads N] [--lua-memory SIZE] [--memory SIZE]\n"
+                   "                  [--trust]\n"
                    "A plain Lua prompt (no curses) with the scene loaded; its variables are globals.\n"
                    "Lines read from a pipe run too:  echo 'print(s:stats().t)' | hearth repl scene.lua\n");
     else
         fprintf(f, "usage: hearth run SCENE.lua [--until T] [--frames N] [--vtu DIR] [--movie FILE] [--out DIR] [--set k=v]... [--threads N] [--quiet]\n"
-                   "                 [--lua-memory SIZE] [--trust] [--params]\n"
+                   "                 [--lua-memory SIZE] [--memory SIZE] [--trust] [--params]\n"
                    "Runs a Lua scene headless. Outputs go to DIR (default ./hearth-out/<scene name>/).\n"
                    "  --until T    stop every s:run at sim time T (s)\n"
                    "  --frames N   N frames per run (every = span / N)\n"
@@ -43,6 +45,8 @@ static void run_usage(FILE *f, const char *cmd) {
                    "               centre_temperature, front, volume, water_lost)\n"
                    "  --metric-out FILE  also write it with steps and wall time to FILE (for hearth trade)\n"
                    "  --lua-memory SIZE  ceiling of the scene's Lua memory: bytes, or with K, M, G (default 512M)\n"
+                   "  --memory SIZE      ceiling of the simulation's memory (particles, grid, scratch): bytes,\n"
+                   "               or with K, M, G (default half the machine's memory)\n"
                    "  --trust      lift the sandbox (os.execute, io.popen, writes outside DIR, C modules,\n"
                    "               plugins by path or from the scene's folder)\n"
                    "Exit status: 0 done, 1 scene error, 2 bad usage or --set value, 3 the stability guard stopped\n"
@@ -84,12 +88,12 @@ int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
         if (!strcmp(s, "--trust")) { a->trust = 1; continue; }
         if (!strcmp(s, "--params") && !strcmp(cmd, "run")) { a->list_params = 1; continue; }
         if (s[0] == '-' && s[1] == '-') {
-            static const char *const valued[] = {"--out", "--until", "--frames", "--threads", "--set", "--metric", "--metric-out", "--lua-memory", "--vtu", "--movie", NULL};
+            static const char *const valued[] = {"--out", "--until", "--frames", "--threads", "--set", "--metric", "--metric-out", "--lua-memory", "--memory", "--vtu", "--movie", NULL};
             int known = 0;
             for (int k = 0; valued[k]; k++) known |= !strcmp(s, valued[k]);
             if (!known) {
                 static const char *const all[] = {"--out", "--until", "--frames", "--threads", "--set", "--metric", "--metric-out",
-                                                  "--lua-memory", "--vtu", "--movie", "--quiet", "--trust", "--params", "--help", NULL};
+                                                  "--lua-memory", "--memory", "--vtu", "--movie", "--quiet", "--trust", "--params", "--help", NULL};
                 const char *near = app_did_you_mean(s, all);
                 if (near) fprintf(stderr, "hearth %s: unknown option '%s'; did you mean '%s'? (see --help)\n", cmd, s, near);
                 else fprintf(stderr, "hearth %s: unknown option '%s' (see --help)\n", cmd, s);
@@ -110,6 +114,14 @@ int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
                 if (parse_size(v, &a->lua_memory) || a->lua_memory < ((size_t)16 << 20) || a->lua_memory > ((size_t)1 << 40)) {
                     fprintf(stderr, "hearth %s: --lua-memory needs a size from 16M to 1T (bytes, or with K, M, G: "
                                     "300M, 2G), got '%s'\n", cmd, v);
+                    return 2;
+                }
+            }
+            else if (!strcmp(s, "--memory")) {
+                /* below 64M not even a small scene fits; the top is only a sanity bound */
+                if (parse_size(v, &a->memory) || a->memory < ((size_t)64 << 20) || a->memory > ((size_t)1 << 50)) {
+                    fprintf(stderr, "hearth %s: --memory needs a size from 64M to 1024T (bytes, or with K, M, G, T: "
+                                    "8G, 500M), got '%s'\n", cmd, v);
                     return 2;
                 }
             }
@@ -148,6 +160,10 @@ int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
         }
         a->scene = s;
     }
+    /* a scene from someone else may not take the whole machine: half of it
+     * unless the user says otherwise (the library alone has no ceiling but the machine's) */
+    const size_t machine = hearth_machine_memory();
+    hearth_set_memory_limit(a->memory ? a->memory : machine == SIZE_MAX ? 0 : machine / 2);
     if (!a->scene && !strcmp(cmd, "run")) {
         fprintf(stderr, "hearth run: which scene? usage: hearth run SCENE.lua (see --help)\n");
         return 2;

@@ -28,6 +28,7 @@ typedef struct run_args {
     int quiet, trust;
     int list_params; /* --params: list the scene's parameters (h.params) and stop, nothing simulated or written */
     size_t lua_memory; /* --lua-memory SIZE in bytes; 0 = the default ceiling */
+    size_t memory;     /* --memory SIZE in bytes: the library's ceiling (hearth_set_memory_limit); 0 = half the machine's */
     const char *metric, *metric_out; /* --metric NAME [--metric-out FILE] (used by hearth trade) */
     const char *vtu;                 /* --vtu DIR: VTU frames and a .pvd from every s:run, under the output folder */
     const char *movie;               /* --movie FILE: every s:run's PNG frames also become this movie (ffmpeg) */

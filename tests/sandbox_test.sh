@@ -216,6 +216,27 @@ sandbox_lua_memory)
         has err.txt "--lua-memory needs a size" "--lua-memory $bad: the message"
     done
     ;;
+sandbox_core_memory)
+    run core_hog.lua --memory 64M
+    expect_rc 1 "blocks of particles past --memory 64M"
+    has_msg "would need about" "the estimate"
+    has_msg "this run may use 67.1 MB of memory" "the ceiling named"
+    has_msg "--memory" "the flag named"
+    grep -q "unreachable" out.txt && fail "the scene went on past the ceiling"
+    # the particles' estimate fits, but the box's grid tables already hold part of the ceiling
+    run core_hog.lua --memory 64M --set blocks=48 --set tall=10
+    expect_rc 1 "a growth past --memory 64M after the up-front estimate passed"
+    has_msg "out of memory" "the call that needed it"
+    has_msg "reached its memory ceiling of 67.1 MB" "the ceiling named"
+    grep -q "unreachable" out.txt && fail "the scene went on past the ceiling"
+    run tiny.lua --memory 64M
+    expect_rc 0 "a small scene under --memory 64M"
+    for bad in abc 12M 0 -5M 2Q; do
+        run tiny.lua --memory "$bad"
+        expect_rc 2 "--memory $bad"
+        has err.txt "--memory needs a size" "--memory $bad: the message"
+    done
+    ;;
 sandbox_sigint_loop)
     # stop(kind, signal, status): start, wait for "started", signal, time the stop
     stop() {

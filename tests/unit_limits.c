@@ -127,6 +127,49 @@ TEST(scene_particles_memory_refused) {
     hearth_scene_destroy(s);
 }
 
+/* A program's memory ceiling (hearth run --memory): particles past it are
+ * refused up front with the estimate and the ceiling's words; a step whose
+ * grid would pass it fails as out-of-memory, holds no more than the ceiling,
+ * and the scene steps on once the ceiling is lifted. */
+TEST(memory_limit_refuses_seed_and_growth) {
+    hearth_scene *s = fx_scene(2, 0.01, 0.0, 1.0);
+    CHECK(s);
+    if (!s) return;
+    const int m = fx_elastic(s, 1e5, 0.3, 1000);
+    const double c[3] = {0.5, 0.5, 0}, h[3] = {0.3, 0.3, 0};
+    hearth_shape *b = hearth_shape_box(c, h);
+    hearth_error err;
+    /* the box's 3600 cells at 4 per cell: ~14400 particles, a few MB; 1 MB over what is held now refuses them */
+    hearth_set_memory_limit(hearth_bytes_allocated() + ((size_t)1 << 20));
+    CHECK(hearth_scene_seed_shape(s, m, b, 4, 0, NULL, &err) == -1);
+    CHECK_STR_CONTAINS(err.msg, "would need about");
+    CHECK_STR_CONTAINS(err.msg, "this run may use");
+    CHECK_STR_CONTAINS(err.msg, "--memory");
+    printf("  refused: %s\n", err.msg);
+    CHECK(s->ps.n == 0);
+    /* room for the particles but not for the first step's grid blocks and scratch */
+    hearth_set_memory_limit(0);
+    CHECK(hearth_scene_seed_shape(s, m, b, 4, 0, NULL, &err) > 0);
+    const size_t held = hearth_bytes_allocated(), ceiling = held + 4096;
+    hearth_set_memory_limit(ceiling);
+    CHECK(!hearth_memory_limit_refused());
+    const hearth_status st = hearth_scene_step(s, 1, &err);
+    printf("  step under a ceiling %zu bytes over the %zu held: status %d, %s\n", ceiling - held, held, (int)st,
+           st ? err.msg : "ran");
+    CHECK(st == HEARTH_ERR_NOMEM);
+    CHECK(hearth_memory_limit_refused());
+    CHECK_STR_CONTAINS(err.msg, "the simulation reached its memory ceiling of");
+    CHECK(hearth_bytes_allocated() <= ceiling);
+    hearth_set_memory_limit(0);
+    CHECK(!hearth_memory_limit_refused());
+    CHECK(hearth_scene_step(s, 2, &err) == HEARTH_OK);
+    hearth_stats stats;
+    hearth_scene_stats(s, &stats);
+    CHECK(stats.step == 2);
+    hearth_shape_free(b);
+    hearth_scene_destroy(s);
+}
+
 /* A NaN centre or radius is named as such, not reported as out of memory. */
 TEST(shape_nan_named) {
     const double nanc[3] = {NAN, 0, 0}, c[3] = {0, 0, 0}, axis[3] = {0, 0, 0}, up[3] = {0, 1, 0};
@@ -152,4 +195,4 @@ TEST(shape_nan_named) {
 }
 
 TEST_MAIN(T(covering_collider_2d), T(covering_collider_3d), T(scene_dx_refused), T(scene_box_refused),
-          T(scene_particles_memory_refused), T(shape_nan_named))
+          T(scene_particles_memory_refused), T(memory_limit_refuses_seed_and_growth), T(shape_nan_named))

@@ -2,8 +2,10 @@
 #include "alloc.h"
 
 #include <stdatomic.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "hearth/hearth.h"
 
@@ -21,6 +23,10 @@ static hearth_alloc_fn g_fn = default_alloc;
 static void *g_ud;
 static atomic_size_t g_bytes, g_peak; /* held now, and the most held at once */
 static atomic_long g_fail_after = -1;
+/* hearth_set_memory_limit: the most the library may hold at once (SIZE_MAX:
+ * no ceiling of its own), and whether an allocation was refused for it */
+static atomic_size_t g_limit = SIZE_MAX;
+static atomic_int g_limit_refused;
 
 void hearth_set_allocator(hearth_alloc_fn fn, void *ud) {
     g_fn = fn ? fn : default_alloc;
@@ -32,6 +38,37 @@ size_t hearth_bytes_allocated(void) { return atomic_load(&g_bytes); }
 size_t hearth_bytes_peak(void) { return atomic_load(&g_peak); }
 
 void mem_fail_after(long n) { atomic_store(&g_fail_after, n); }
+
+size_t hearth_machine_memory(void) {
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || page <= 0) return SIZE_MAX; /* unknown */
+    const double b = (double)pages * (double)page;
+    return b >= (double)SIZE_MAX ? SIZE_MAX : (size_t)b;
+}
+
+void hearth_set_memory_limit(size_t bytes) {
+    atomic_store(&g_limit, bytes ? bytes : SIZE_MAX);
+    atomic_store(&g_limit_refused, 0);
+}
+
+size_t hearth_memory_limit(void) {
+    const size_t set = atomic_load(&g_limit), machine = hearth_machine_memory();
+    return set < machine ? set : machine;
+}
+
+int hearth_memory_limit_refused(void) { return atomic_load(&g_limit_refused); }
+
+/* A growth past the ceiling fails as an out-of-memory would, so every caller's
+ * existing NULL path reports it; the flag lets the program name the ceiling.
+ * Two threads growing at once may both pass by a block: a ceiling, not an audit. */
+static int over_limit(size_t osize, size_t nsize) {
+    const size_t limit = atomic_load(&g_limit);
+    if (limit == SIZE_MAX || nsize <= osize) return 0;
+    const size_t held = atomic_load(&g_bytes) - osize;
+    if (nsize <= limit && held <= limit - nsize) return 0;
+    atomic_store(&g_limit_refused, 1);
+    return 1;
+}
 
 static int should_fail(void) {
     long n = atomic_load(&g_fail_after);
@@ -56,7 +93,7 @@ void *mem_realloc(void *p, size_t osize, size_t nsize) {
         mem_free(p, osize);
         return EMPTY;
     }
-    if (should_fail()) return NULL;
+    if (should_fail() || over_limit(p ? osize : 0, nsize)) return NULL;
     void *q = g_fn(g_ud, p, p ? osize : 0, nsize);
     if (!q) return NULL;
     if (p) atomic_fetch_sub(&g_bytes, osize);

@@ -138,13 +138,16 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
 
 /* ---- memory estimates ------------------------------------------------ */
 
-size_t scene_memory_limit(void) {
-    /* the machine's physical memory: a scene that needs more would be
-     * OOM-killed without a word, so it is refused up front with the estimate */
-    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
-    if (pages <= 0 || page <= 0) return SIZE_MAX; /* unknown: no up-front refusal */
-    const double b = (double)pages * (double)page;
-    return b >= (double)SIZE_MAX ? SIZE_MAX : (size_t)b;
+/* The up-front refusals' ceiling: the machine's physical memory (a scene that
+ * needs more would be OOM-killed without a word), or the program's lower
+ * limit (hearth run --memory). Its words name which. */
+static double memory_limit(char *words, size_t n) {
+    const size_t limit = hearth_memory_limit(), machine = hearth_machine_memory();
+    if (limit < machine)
+        snprintf(words, n, "this run may use %.3g %s of memory (hearth run --memory SIZE; the machine has %.3g GB)",
+                 (double)limit / (limit < 1e9 ? 1e6 : 1e9), limit < 1e9 ? "MB" : "GB", (double)machine / 1e9);
+    else snprintf(words, n, "this machine has %.3g GB of memory", (double)limit / 1e9);
+    return (double)limit;
 }
 
 double scene_bytes_per_particle(const hearth_scene *s) {
@@ -184,12 +187,14 @@ hearth_status scene_check_particle_budget(const hearth_scene *s, double more, co
     if (!(total <= (double)(INT_MAX / 2)))
         return err_set(err, HEARTH_ERR_PARAM, "%s: %.4g particles (%d already in the scene); at most %d", what, total,
                        s->ps.n, INT_MAX / 2);
-    const double need = total * scene_bytes_per_particle(s), limit = (double)scene_memory_limit();
+    char words[160];
+    const double need = total * scene_bytes_per_particle(s), limit = memory_limit(words, sizeof words);
     if (need > limit)
         return err_set(err, HEARTH_ERR_PARAM,
-                       "%s: %.4g particles would need about %.3g GB (%.0f bytes each); this machine has %.3g GB of "
-                       "memory (use a larger dx, fewer particles per cell or a smaller shape)",
-                       what, total, need / 1e9, scene_bytes_per_particle(s), limit / 1e9);
+                       "%s: %.4g particles would need about %.3g %s (%.0f bytes each); %s (use a larger dx, fewer "
+                       "particles per cell or a smaller shape)",
+                       what, total, need / (need < 1e9 ? 1e6 : 1e9), need < 1e9 ? "MB" : "GB",
+                       scene_bytes_per_particle(s), words);
     return HEARTH_OK;
 }
 
@@ -202,13 +207,14 @@ hearth_scene *hearth_scene_create(const hearth_scene_def *def, hearth_error *err
         int nn[3], nb[3];
         long blocks = 0;
         if (grid_plan(d.dim, d.dx, d.lo, d.hi, nn, nb, &blocks, err)) return NULL;
-        const double need = sv->uses_grid ? (double)blocks * (double)GRID_TABLE_BYTES_PER_BLOCK : 0.0, limit = (double)scene_memory_limit();
+        char words[160];
+        const double limit = memory_limit(words, sizeof words);
+        const double need = sv->uses_grid ? (double)blocks * (double)GRID_TABLE_BYTES_PER_BLOCK : 0.0;
         if (need > limit / 2) {
             err_set(err, HEARTH_ERR_PARAM,
                     "scene: dx = %g m over this box needs %ld grid blocks, about %.3g GB for the grid tables alone; "
-                    "this machine has %.3g GB of memory, and the tables may take at most half (use a larger dx or a "
-                    "smaller box)",
-                    d.dx, blocks, need / 1e9, limit / 1e9);
+                    "%s, and the tables may take at most half (use a larger dx or a smaller box)",
+                    d.dx, blocks, need / 1e9, words);
             return NULL;
         }
     }

@@ -138,9 +138,6 @@ void scene_note_seeded_temperature(hearth_scene *s, int i0, int i1);
 void scene_refresh_wave_speed(hearth_scene *s);
 /* The solver's stable step (solver.h). */
 double scene_stable_dt(const hearth_scene *s);
-/// Memory a scene may plan for (bytes): the machine's physical memory
-/// (SIZE_MAX when unknown).
-size_t scene_memory_limit(void);
 /// Bytes a particle costs in this scene: its enabled columns and step scratch.
 double scene_bytes_per_particle(const hearth_scene *s);
 /// Refuse (HEARTH_ERR_PARAM, what names the caller) adding `more` particles

@@ -52,6 +52,18 @@ void hearth_set_allocator(hearth_alloc_fn fn, void *ud);
 size_t hearth_bytes_allocated(void);
 /// The most bytes the library held at once since the process started (growing arrays hold old and new).
 size_t hearth_bytes_peak(void);
+/// The most the library may hold at once, in bytes (0: no ceiling of its own). An allocation
+/// past it fails as out-of-memory would: the call that needed it returns its error and
+/// nothing else changes. A scene's particles and grid are also refused up front, with
+/// the estimate, when they would not fit under it. Programs running other people's scenes
+/// set it (hearth run --memory); the library's own default is the machine's memory.
+void hearth_set_memory_limit(size_t bytes);
+/// That ceiling, or the machine's physical memory when lower (SIZE_MAX when neither is known).
+size_t hearth_memory_limit(void);
+/// The machine's physical memory in bytes (SIZE_MAX when unknown).
+size_t hearth_machine_memory(void);
+/// 1 when an allocation was refused for the ceiling since it was last set.
+int hearth_memory_limit_refused(void);
 
 /* ---- threads -------------------------------------------------------- */
 

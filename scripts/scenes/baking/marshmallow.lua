@@ -39,6 +39,17 @@
 --    out whole ahead of the inside at this press (ooze 0.000; 0.31 pressed 24
 --    mm, where the raw one curls over the crackers' edges too, 0.05;
 --    docs/validation.md, "The marshmallow's ooze (#18)").
+--  * What falls below the crackers is ooze run off their ends, not a leak
+--    (helper marshfall; docs/validation.md, "Particles below the
+--    marshmallow's crackers"). The sticky fountain flow carries the roasted
+--    one's broken crust past both cracker ends from ~1.6 s and it hangs over
+--    them; at the press's end (1.83-1.94 s) a few crumbs of that crust (skin
+--    particles; at dx 2 mm each has damage 1) drop off the overhangs, 2-12 mm
+--    beyond the lower cracker's ends: 6 at dx 2 mm (still falling at 2 s), 3
+--    at 1.5 mm (on the floor; 14 more in a flap sagging 5-7 mm below the
+--    cracker). None crosses a cracker (tests/contact/thin_plate.lua: a plate
+--    a quarter of a cell thick holds). With slip crackers or in 3D (dx 4 mm)
+--    nothing falls; the raw one drapes over the ends but sheds nothing.
 -- The material is Table 2's s'more (h.library.paper.smore) with a
 -- marshmallow's own temperature curve and expansion and a skin that dries
 -- (below, at `mat`). The molten inside's yield stress is the preset's (below,
