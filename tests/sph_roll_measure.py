@@ -193,7 +193,8 @@ def write_png(path, ras, kind, pts, scale=3):
     os.replace(path + ".tmp", path)
 
 
-def pieces(pts, L):
+def piece_labels(pts, L):
+    """Each particle's piece (the root of its union-find set): particles closer than L are linked."""
     parent = list(range(len(pts)))
 
     def find(i):
@@ -214,9 +215,12 @@ def pieces(pts, L):
                             ri, rj = find(i), find(j)
                             if ri != rj:
                                 parent[ri] = rj
+    return [find(i) for i in range(len(pts))]
+
+
+def pieces(pts, L):
     sizes = {}
-    for i in range(len(pts)):
-        r = find(i)
+    for r in piece_labels(pts, L):
         sizes[r] = sizes.get(r, 0) + 1
     return len(sizes), max(sizes.values()) / len(pts)
 

@@ -639,7 +639,7 @@ TEST(sph_renormalised_density_reads_no_skin) {
     else printf("refused: %s\n", err.msg);
 }
 
-/* The five options that act through sph.gas_law's pressure are refused
+/* The six options that act through sph.gas_law's pressure are refused
  * without it, each by one table (sph_gas.c sph_gas_check_def): the messages word for
  * word as they were when each had its own check (scripts and users grep
  * them), and none of them once sph.gas_law is on. */
@@ -655,9 +655,11 @@ TEST(sph_gas_law_refusals_word_for_word) {
         "set sph.gas_law = true or sph.gas_pressure = 0",
         "scene: sph.dough_water = 0.43 needs sph.gas_law = true (its CO2 comes out into the gas law's bubbles); set "
         "sph.gas_law = true or sph.dough_water = 0",
+        "scene: sph.bubble_stays_open = true needs sph.gas_law = true (it is the gas law's bubble that opens at "
+        "bubble_vmax); set both or neither",
     };
     const double lo[3] = {0, 0, 0}, hi[3] = {0.1, 0.1, 0};
-    for (int k = 0; k < 5; k++)
+    for (int k = 0; k < 6; k++)
         for (int law = 0; law < 2; law++) {
             hearth_scene_def d = sph_def(2, 0.005, lo, hi);
             d.sph.gas_law = law;
@@ -666,6 +668,7 @@ TEST(sph_gas_law_refusals_word_for_word) {
             d.sph.own_squeeze = k == 2;
             d.sph.gas_pressure = k == 3 ? 2.5e4 : 0;
             d.sph.dough_water = k == 4 ? 0.43 : 0;
+            d.sph.bubble_stays_open = k == 5;
             hearth_error err;
             err.msg[0] = 0;
             hearth_scene *s = hearth_scene_create(&d, &err);

@@ -186,6 +186,12 @@ static const hearth_setting settings[] = {
         0, 0, 0.99),
     SPH(bubble_vmax, "1", "with gas_law: the largest V_b / V_b0, where the crumb's cells open and vent (the vapour law "
         "diverges at the boiling point)", 4, 1, 100),
+    /* a cell that has vented at the cap holds the oven's air at P_a whatever its
+     * temperature: cooling draws air in, not the crumb (sph_gas.c) */
+    SPH_FLAG("bubble_stays_open",
+             "with gas_law: a bubble that has reached bubble_vmax stays open (its cell vented to the oven's air) and keeps "
+             "that volume as it cools, instead of contracting as a closed gas",
+             bubble_stays_open),
     SPH_FLAG("continuity_density",
              "with gas_law: Tait and the gas law read each particle's density from its own volume, m / (V0 det F) (the "
              "continuity equation, Gray, Monaghan & Swift 2001), not the summation (eq. 3.13), which reads a free surface "

@@ -37,7 +37,8 @@
  * there a real crumb's cells open and vent, so V_b / V_b0 stops at
  * sph.bubble_vmax. A bubble's rest volume m / rho_b follows its temperature
  * both ways: it grows while it heats and shrinks as it cools, with no history
- * to keep (and nothing for a rollback to lose). */
+ * to keep (and nothing for a rollback to lose), unless sph.bubble_stays_open
+ * keeps a cell that has opened at the cap open (sph_pressure_gas_law). */
 /* The vapour's partial pressure in a bubble, a_w P_sat(T) (eq. 2.43 through
  * 100 degC at 101325 Pa, Delta H_v = 40.66 kJ/mol: vapour.h); 0 for a dry gas. */
 static double vapour_pressure(const hearth_sph_def *o, double T) {
@@ -233,6 +234,8 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
         {"renormalised_density", "true", "it is the gas law's pressure that reads it", both, o->renormalised_density},
         {"own_squeeze", "true", "it is the gas law's dough that reads its squeeze from its own volume", both,
          o->own_squeeze},
+        {"bubble_stays_open", "true", "it is the gas law's bubble that opens at bubble_vmax", both,
+         o->bubble_stays_open},
         {"gas_pressure", gp, "it is the gas law's bubble that holds the gas",
          "set sph.gas_law = true or sph.gas_pressure = 0", o->gas_pressure > 0},
         {"dough_water", dw, "its CO2 comes out into the gas law's bubbles",
@@ -285,7 +288,18 @@ void sph_pressure_gas_law(hearth_scene *s) {
     const double w = st->water_per_gas = sph_dough_water_share(s);
     for (int i = 0; i < n; i++) {
         const double rho0 = st->rho0[i], bub = s->mats.slot[mat[i]].core[CP_BUBBLE];
-        const double rr = bub > 0 && T ? rho0 / sph_bubble_volume_dissolved(o, bub, T[i], w) : rho0; /* eq. 3.49 */
+        double rr = bub > 0 && T ? rho0 / sph_bubble_volume_dissolved(o, bub, T[i], w) : rho0; /* eq. 3.49 */
+        /* sph.bubble_stays_open: the cap is where a crumb's cells open and vent
+         * (sph_bubble_volume_dissolved); an open cell is joined to the oven's
+         * air and holds P_a at any temperature, so as it cools air comes in
+         * and the cell keeps its volume (what holds the crumb around it is the
+         * crumb's). A closed gas would contract and draw the crumb in with it.
+         * The last step's rest density (st->rhof, sorted with the particles)
+         * at the cap marks the cell open; a rollback does not restore it, as
+         * it does not restore eq. 3.52's (sph.c). */
+        if (o->bubble_stays_open && bub > 0 && st->rhof[i] > 0 &&
+            st->rhof[i] <= rho0 / (bub * o->bubble_vmax) * (1 + 1e-9))
+            rr = st->rhof[i];
         st->rhof[i] = rr;
         const double rho = o->continuity_density     ? volume_density(F + 9 * i, c.m[i], V0[i], st->rho[i])
                            : o->renormalised_density ? st->vr[i]
