@@ -73,6 +73,10 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
     what = "the bottom's temperature that flips it (preset paper)" },
   flip_at = h.number { 0, min = 0, unit = "s",
     what = "the real time of the flip (preset physical; 0: the preset's 2 min)" },
+  particles = h.number { 0, min = 0, max = 1, integer = true,
+    what = "1: also every particle (id, position, J, temperature) to particles_%04d.csv at each frame" },
+  turn = h.choice { "smooth", smooth = "the spatula's turn starts and ends at rest (a wrist's minimum-jerk turn)",
+    constant = "the turn at pi / spin from its first step to its last (the scene before helper pancakeflip)" },
   preset = h.choice { "paper", paper = "h.library.paper.pancake: Ding Table 2, animation units",
     physical = "h.library.dough.pancake: a real batter's properties, its minutes on the griddle mapped" } }
 local d3 = P.dim == 3
@@ -149,11 +153,27 @@ local function faces()
 end
 
 -- the flip event: checked every 10 ms once the pour is over
+local TURN_STEPS = 100 -- the smooth turn's rate is set this many times
 local function flip(sc)
   flipped, flip_t = true, sc:stats().t
   if P.flip_dt > 0 then sc:set_dt(nil, P.flip_dt) end
   h.write("flip.csv", ("flip_time_s,bottom_temperature_at_flip_degC\n%.3f,%.2f\n"):format(flip_t, flip_T))
-  sc:collider_velocity(spatula, v(0, 0, 0), d3 and { 0, 0, -math.pi / P.spin } or -math.pi / P.spin)
+  local function omega(w) return d3 and { 0, 0, -w } or -w end
+  if P.turn == "constant" then
+    sc:collider_velocity(spatula, v(0, 0, 0), omega(math.pi / P.spin))
+  else
+    -- a wrist's turn: the minimum-jerk profile of a human point-to-point movement (Flash & Hogan 1985, J.
+    -- Neurosci. 5:1688, eq. 2), theta(s) = pi (10 s^3 - 15 s^4 + 6 s^5) over s = (t - flip_t) / spin, from rest
+    -- to rest; the old turn jumped to pi / spin in one step and stopped dead. Set every TURN_STEPS-th of the turn
+    -- to the mean rate over that part, so the turn is exactly half a circle.
+    local function theta(x) return math.pi * x ^ 3 * (10 - 15 * x + 6 * x * x) end
+    for k = 0, TURN_STEPS - 1 do
+      sc:at(flip_t + k * P.spin / TURN_STEPS, function(sc2)
+        sc2:collider_velocity(spatula, v(0, 0, 0),
+          omega((theta((k + 1) / TURN_STEPS) - theta(k / TURN_STEPS)) * TURN_STEPS / P.spin))
+      end)
+    end
+  end
   -- turned over, the pancake hangs under the spatula just above the pan;
   -- the spatula is then withdrawn at once (moved out of the scene), and the
   -- pancake drops the last few millimetres onto its uncooked face
@@ -211,6 +231,18 @@ end
 -- volume hp^dim at the preset's saturation, 1000 kg/m^3 of water per unit saturation)
 local function water_left(n) return s:stats().water_mass / (n * hp ^ (d3 and 3 or 2) * 1000 * oven.saturation) end
 
+-- every particle (the time, its id, position, J, temperature) to a CSV: landed.csv at the end, for measuring the landed sheet
+-- (tests/pancake_landed_measure.py: its pieces and holes), and with --set particles=1 particles_%04d.csv each frame
+local function write_particles(path)
+  local r = s:particles { fields = { "id", "x", "J", "temperature" } }
+  local lines, t = { "t_s,id,x,y,z,J,temperature_degC" }, s:stats().t
+  for k = 1, r.n do
+    lines[#lines + 1] = ("%.4f,%d,%.6f,%.6f,%.6f,%.5f,%.2f"):format(t, r.id[k], r.x[3 * k - 2], r.x[3 * k - 1],
+      r.x[3 * k], r.J[k], r.temperature[k])
+  end
+  h.write(path, table.concat(lines, "\n") .. "\n")
+end
+
 local head = "t_s,bottom_temperature_degC,top_temperature_degC,thickness_m,flipped,mean_height_m,mean_x_m"
 if physical then
   head = head .. ",t_real_s,middle_temperature_degC,middle_water_held,bottom_browning,top_browning,water_left"
@@ -219,6 +251,7 @@ local rows = { head }
 s:run { until_t = until_t, every = until_t / P.frames,
   png = { field = "temperature", path = "heat_%04d.png", time_scale = S, width = P.width },
   on_frame = function(f)
+    if P.particles == 1 then write_particles(("particles_%04d.csv"):format(f.index)) end
     local bt, tt, th = faces()
     local my, mx = mean_place()
     if my == my then -- the face temperatures are -1 while no batter lies on the pan at the centre (mid-flip)
@@ -235,6 +268,7 @@ s:run { until_t = until_t, every = until_t / P.frames,
     end
   end }
 local bt, tt, th = faces()
+write_particles("landed.csv")
 if physical then
   -- the profile through the pancake at the end: each particle within dx/2 of the centre line, from the pan up
   local r, prof = s:particles { fields = { "x", "temperature", "saturation", "J", "browning" } }, {}
