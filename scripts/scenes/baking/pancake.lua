@@ -58,8 +58,9 @@
 -- of its top face (-1 while no batter lies on the pan at its centre), whether
 -- it has been flipped, and the batter's mean height above the pan and mean x;
 -- flip.csv: the flip time and the bottom's temperature then; landed.csv: every particle at the end (the time, id,
--- position, J, temperature; tests/pancake_landed_measure.py reads its pieces and holes). With preset=physical, pancake.csv also has the real
--- time, the middle particle's temperature and the water it holds (of the raw batter's), the browning of the
+-- position, J, temperature; tests/pancake_landed_measure.py reads its pieces and holes). With preset=physical,
+-- pancake.csv also has the real time, the middle particle's temperature and the water it holds (of the raw
+-- batter's), the browning of the
 -- lowest (on the pan) and highest particle on the centre line, and the water left of what was poured; and
 -- browning.png and saturation.png at the end, and profile.csv: the particles within dx/2 of the centre line at
 -- the end, from the pan up (height, temperature, water held, browning).
@@ -87,7 +88,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   flip_at = h.number { 0, min = 0, unit = "s",
     what = "the real time of the flip (preset physical; 0: the preset's 2 min)" },
   particles = h.number { 0, min = 0, max = 1, integer = true,
-    what = "1: also every particle (id, position, J, temperature) to particles_%04d.csv at each frame" },
+    what = "1: also every particle (the time, id, position, J, temperature) to particles_%04d.csv at each frame" },
   turn = h.choice { "smooth", smooth = "the spatula's turn starts and ends at rest (a wrist's minimum-jerk turn)",
     constant = "the turn at pi / spin from its first step to its last (the scene before helper pancakeflip)" },
   preset = h.choice { "paper", paper = "h.library.paper.pancake: Ding Table 2, animation units",
@@ -244,8 +245,9 @@ end
 -- volume hp^dim at the preset's saturation, 1000 kg/m^3 of water per unit saturation)
 local function water_left(n) return s:stats().water_mass / (n * hp ^ (d3 and 3 or 2) * 1000 * oven.saturation) end
 
--- every particle (the time, its id, position, J, temperature) to a CSV: landed.csv at the end, for measuring the landed sheet
--- (tests/pancake_landed_measure.py: its pieces and holes), and with --set particles=1 particles_%04d.csv each frame
+-- every particle (the time, its id, position, J, temperature) to a CSV: landed.csv at the end, for measuring the
+-- landed sheet (tests/pancake_landed_measure.py: its pieces and holes), and with --set particles=1 particles_%04d.csv
+-- each frame
 local function write_particles(path)
   local r = s:particles { fields = { "id", "x", "J", "temperature" } }
   local lines, t = { "t_s,id,x,y,z,J,temperature_degC" }, s:stats().t
