@@ -33,6 +33,8 @@ def through(dx, out, bar):
     2 mm runs of the old turn and of the smooth turn, before any other run of the smooth turn): in every frame from
     the flip to the end the largest piece holds at least 95% of the particles (it is not torn apart mid-air and
     joined again where its pieces land)."""
+    if not os.path.exists(os.path.join(out, "flip.csv")):
+        sys.exit("pancake_landed_measure: %s has no flip.csv: the pancake was not flipped" % out)
     flip_t = float(list(csv.DictReader(open(os.path.join(out, "flip.csv"))))[0]["flip_time_s"])
     worst, before, last = 1.0, None, None
     for path in sorted(glob.glob(os.path.join(out, "particles_*.csv"))):
