@@ -6,10 +6,22 @@ particle carries no browning, NaN).
 
 Pieces: each side of the pan's tube (x below and above the pan's axis,
 x = 0.1 m) is one piece of batter when every particle on it is linked to the
-rest at two raw spacings, as tests/sph_roll_measure.py links the roll's
-(union-find over pairs closer than 2 DX): a bubble at the gas law's cap
-(V_b = 4) moves its neighbours out by about sqrt(4) DX, and a torn cake, or
-a particle thrown onto the tube's top, leaves a gap with none within two.
+rest, as tests/sph_roll_measure.py links the roll's (union-find over pairs):
+two raw particles link closer than two raw spacings, 2 DX, which leaves a gap
+of one DX between their own extents (DX wide each); a torn cake, or a
+particle thrown onto the tube's top, leaves more. A bubble particle is its
+gas (thesis §3.3.3: bubble particles are the batter's particles in every way
+but their pressure, eq. 3.48-3.51, which sets their rest volume to the gas's
+V_b), so its own extent is sqrt(V_b) DX wide and it reaches (sqrt(V_b) - 1)
+DX / 2 further than a raw particle: the pair links closer than 2 DX plus both
+reaches, the same one DX of gap between their extents (#18, helper
+angelpieces: at a fixed 2 DX a bubble at the cap, V_b = 4, 2 DX across, in
+the middle of the cavity its gas fills stood 2.0-2.3 DX from the batter
+around it and counted as a piece apart). V_b is the bubble's gas volume at
+its temperature (below); with cells that stay open (A_W > 0, as the scene
+sets sph.bubble_stays_open = water_activity > 0) a bubble that had reached
+the cap at the bake's end keeps it in END.csv (matched by the particles' id
+column), as the solver's open cell keeps its volume.
 
 Bubbles against their gas (#18: eq. 3.51 once pushed a bubble to 1.44x its
 gas's volume, docs/validation.md "The bread of the dead stays in one
@@ -52,14 +64,31 @@ def gas_volume(T, a_w):
 
 
 def load(path):
+    """Rows (x, y, T, J, browning, id); id -1 where the file has no id column."""
     with open(path) as f:
-        return [(float(r["x"]), float(r["y"]), float(r["T"]), float(r["J"]), float(r["browning"]))
-                for r in csv.DictReader(f)]
+        return [(float(r["x"]), float(r["y"]), float(r["T"]), float(r["J"]), float(r["browning"]),
+                 int(r.get("id") or -1)) for r in csv.DictReader(f)]
 
 
-def side(rows, dx):
+def rest_volume(row, a_w, opened=()):
+    """A particle's rest volume over a raw one's: 1 for batter; a bubble's gas volume at its temperature, or the
+    cap when its id is in opened (its cell reached the cap and stays open)."""
+    if not math.isnan(row[4]):
+        return 1.0
+    return VMAX if len(row) > 5 and row[5] in opened else gas_volume(row[2], a_w)
+
+
+def opened_ids(rows, a_w):
+    """The ids of the bubbles at the cap in rows (the bake's end) whose cells stay open: none with the dry gas."""
+    if a_w <= 0:
+        return set()
+    return {r[5] for r in rows if math.isnan(r[4]) and r[5] >= 0 and gas_volume(r[2], a_w) >= VMAX}
+
+
+def side(rows, dx, a_w=0.0, opened=()):
     """One side's pieces, and its batter and bubble particles outside its largest piece."""
-    labels = piece_labels([(r[0], r[1]) for r in rows], 2 * dx)
+    reach = [(math.sqrt(rest_volume(r, a_w, opened)) - 1) * dx / 2 for r in rows]
+    labels = piece_labels([(r[0], r[1]) for r in rows], 2 * dx, reach)
     sizes = {}
     for l in labels:
         sizes[l] = sizes.get(l, 0) + 1
@@ -69,17 +98,17 @@ def side(rows, dx):
     return len(sizes), len(off) - bubbles, bubbles
 
 
-def sides(rows, dx):
+def sides(rows, dx, a_w=0.0, opened=()):
     """'pieces_left L pieces_right R off_batter B off_bubbles G': B, G summed over both sides."""
-    l = side([r for r in rows if r[0] < AXIS], dx)
-    r = side([r for r in rows if r[0] >= AXIS], dx)
+    l = side([r for r in rows if r[0] < AXIS], dx, a_w, opened)
+    r = side([r for r in rows if r[0] >= AXIS], dx, a_w, opened)
     return "pieces_left %d pieces_right %d off_batter %d off_bubbles %d" % (l[0], r[0], l[1] + r[1], l[2] + r[2])
 
 
 def worst_bubble(rows, a_w):
     """The largest J / V_b(T) over the bubble particles, and that bubble's T."""
     worst, at = 0.0, math.nan
-    for x, y, T, J, b in rows:
+    for x, y, T, J, b, *_ in rows:
         if math.isnan(b):
             q = J / gas_volume(T, a_w)
             if q > worst:
@@ -94,9 +123,13 @@ def main():
     baked, end = load(sys.argv[3]), load(sys.argv[4])
     if not baked or not end:
         sys.exit("sph_cake_rise: no particles in %s or %s" % (sys.argv[3], sys.argv[4]))
+    if a_w > 0 and any(r[5] < 0 for r in baked + end):
+        sys.exit("sph_cake_rise: %s or %s has no id column: with A_W > 0 (open cells) the measure follows each "
+                 "bubble from the bake's end by its id (the scene writes it since helper angelpieces)"
+                 % (sys.argv[3], sys.argv[4]))
     w, T = worst_bubble(baked, a_w)
-    print("%s worst_bubble_over_gas %.4f at_T %.1f" % (sides(baked, dx), w, T))
-    print(sides(end, dx))
+    print("%s worst_bubble_over_gas %.4f at_T %.1f" % (sides(baked, dx, a_w), w, T))
+    print(sides(end, dx, a_w, opened_ids(baked, a_w)))
 
 
 if __name__ == "__main__":

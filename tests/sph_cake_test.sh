@@ -30,6 +30,12 @@
 #           keeps part (thesis §4.5, Fig. 4.11: "loose part of the volume it
 #           gained"): at least a tenth of the gain lost, at least a tenth kept;
 #       (c) each side of the tube stays one piece, baked and cooled;
+#           particles link across one raw spacing of gap between their own
+#           extents: two batter particles closer than 2 DX, as before; a
+#           bubble particle is its gas (thesis §3.3.3), sqrt(V_b) DX across,
+#           so it reaches (sqrt(V_b) - 1) DX / 2 further (helper angelpieces:
+#           at a fixed 2 DX a bubble at the cap in the middle of the cavity
+#           its gas fills stood apart; sph_cake_rise_bubble_fills_its_cavity);
 #       (d) no bubble runs away: at the bake's end no bubble's own volume J
 #           exceeds 1.2x its gas's (eq. 2.42-2.43, 3.50, written in the
 #           measure, not read from the solver).
@@ -37,8 +43,13 @@
 #   the cake with its steam (it then rose 1.205x and fell to 0.993). (b)
 #   failed with the steam alone (0.902, 0.884: the vented cells contracted as
 #   closed ones); it holds since the cake's cells stay open at the gas law's
-#   cap (sph.bubble_stays_open), and is now a plain requirement.
-# Exit 0 pass, 1 fail, 77 the expected failure (c), its numbers and cause printed.
+#   cap (sph.bubble_stays_open), and is now a plain requirement. (c) was the
+#   expected failure (exit 77) until its measure took each bubble's own
+#   extent (helper angelpieces, 2026-12-07: the link rule was set from the
+#   thesis's bubble before the scene was measured with it; the cake's physics
+#   and numbers unchanged): every side was then one piece at 3 and 2 mm, baked
+#   and cooled, and (c) is a plain requirement too.
+# Exit 0 pass, 1 fail.
 set -u
 case_name=$1 hearth=$2 root=$3
 tmp=$(mktemp -d)
@@ -94,8 +105,7 @@ baked, end = dict(zip(m[:half:2], m[1:half:2])), dict(zip(m[half::2], m[half + 1
 gain = peak - 1
 lo, hi = 1 + 0.1 * gain, peak - 0.1 * gain
 one = lambda d: d["pieces_left"] == d["pieces_right"] == "1"
-# (a), (b) and (d) must hold (exit 1); (c) is the expected failure whose cause docs/validation.md "The angel food
-# cake rises on its steam" gives (exit 77)
+# every part must hold (exit 1); (c)'s link rule: tests/sph_cake_rise.py's docstring
 checks = [
     ("a", peak >= 1.3, f"risen {peak:.3f}x at the bake's end (bar 1.3)"),
     ("b", lo <= cool <= hi, f"cooled to {cool:.3f}x (bar [{lo:.3f}, {hi:.3f}]: a tenth of the gain kept, a tenth lost)"),
@@ -109,15 +119,7 @@ checks = [
 ]
 for k, ok, what in checks:
     print(f"dx {dx}: {'ok  ' if ok else 'FAIL'} ({k}) {what}")
-failed = {k for k, ok, _ in checks if not ok}
-if failed & {"a", "b", "d"}:
-    sys.exit(1)
-if "c" in failed:
-    print(f"expected failure (c): apart from the largest pieces stand {baked['off_bubbles']} bubble and "
-          f"{baked['off_batter']} batter particles at the bake's end, {end['off_bubbles']} and {end['off_batter']} cooled: "
-          "a bubble spot's particles gather inside the cavity its steam opened (V_b up to 4, 2 DX across), more than "
-          "2 DX from the batter around it (measured at 3 and 2 mm: bubble particles alone)")
-sys.exit(77 if failed else 0)
+sys.exit(1 if any(not ok for _, ok, _ in checks) else 0)
 PY
     rc=$?
     [ $rc = 1 ] && fail "the cake at dx $dx does not rise on its steam as claimed"

@@ -193,8 +193,11 @@ def write_png(path, ras, kind, pts, scale=3):
     os.replace(path + ".tmp", path)
 
 
-def piece_labels(pts, L):
-    """Each particle's piece (the root of its union-find set): particles closer than L are linked."""
+def piece_labels(pts, L, reach=None):
+    """Each particle's piece (the root of its union-find set): particles closer than L are linked.
+    reach (optional, one per particle, m): how much further particle i's own rest extent reaches than a raw
+    particle's, so i and j link closer than L + reach[i] + reach[j] (tests/sph_cake_rise.py: a bubble particle
+    whose gas has grown; a raw particle's reach is 0, and without reach every pair links at L as before)."""
     parent = list(range(len(pts)))
 
     def find(i):
@@ -203,15 +206,17 @@ def piece_labels(pts, L):
             i = parent[i]
         return i
 
+    far = L + 2 * max(reach, default=0.0) if reach else L  # the longest link: the grid's cell
     grid = {}
     for i, (x, y) in enumerate(pts):
-        grid.setdefault((int(x // L), int(y // L)), []).append(i)
+        grid.setdefault((int(x // far), int(y // far)), []).append(i)
     for (cx, cy), members in grid.items():
         for a in (-1, 0, 1):
             for b in (-1, 0, 1):
                 for j in grid.get((cx + a, cy + b), ()):
                     for i in members:
-                        if i < j and (pts[i][0] - pts[j][0]) ** 2 + (pts[i][1] - pts[j][1]) ** 2 < L * L:
+                        Lij = L + reach[i] + reach[j] if reach else L
+                        if i < j and (pts[i][0] - pts[j][0]) ** 2 + (pts[i][1] - pts[j][1]) ** 2 < Lij * Lij:
                             ri, rj = find(i), find(j)
                             if ri != rj:
                                 parent[ri] = rj

@@ -36,8 +36,9 @@
 -- rises on its steam"): relative volume (density slice) at the end of baking
 -- and at t = 3.5 s: 1.692 and 1.526 at dx 3 mm, 1.743 and 1.604 at 2 mm
 -- (claim_sph_angel_cake_rises[_fine]: rises past 1.3x, loses part of it and
--- keeps part, no bubble past its gas; the expected failure: some bubble spots'
--- particles stand apart inside the cavities their steam opened, no batter).
+-- keeps part, no bubble past its gas, each side one piece: a bubble spot's
+-- particles in the middle of the cavity their steam opened are its gas,
+-- each as wide as its volume, helper angelpieces; no batter tears off).
 -- With the cells closed as they cool, 1.692 / 0.902 and 1.743 / 0.884: the
 -- cake fell below its batter. Dry (water_activity = 0): 1.205 and 0.993 at 3 mm,
 -- 1.193 and 0.961 at 2 mm. The crumb stays the coolest band while it bakes
@@ -202,15 +203,15 @@ local function bands_T()
   return sum[1] / cnt[1], sum[2] / cnt[2], sum[3] / cnt[3], ytop
 end
 -- particle positions (x, y in m), temperatures, own volumes J = det F, browning (NaN: a bubble particle), the
--- summed density and the pressure,
--- for measures that do not go through the density field (tests/sph_cake_rise.py: pieces, bubbles against
--- their gas)
+-- summed density, the pressure and the particle's id (SPH sorts its particles, so the rows' order changes: the
+-- id follows a bubble from the bake's end to the cooled cake), for measures that do not go through the density
+-- field (tests/sph_cake_rise.py: pieces, bubbles against their gas)
 local function positions(path)
-  local r = s:particles { fields = { "x", "temperature", "J", "browning", "density", "pressure" } }
-  local rows = { "x,y,T,J,browning,density,pressure" }
+  local r = s:particles { fields = { "x", "temperature", "J", "browning", "density", "pressure", "id" } }
+  local rows = { "x,y,T,J,browning,density,pressure,id" }
   for i = 1, r.n do
-    rows[#rows + 1] = ("%.6g,%.6g,%.3f,%.5g,%.4g,%.5g,%.5g"):format(r.x[3 * i - 2], r.x[3 * i - 1], r.temperature[i],
-      r.J[i], r.browning[i], r.density[i], r.pressure[i])
+    rows[#rows + 1] = ("%.6g,%.6g,%.3f,%.5g,%.4g,%.5g,%.5g,%d"):format(r.x[3 * i - 2], r.x[3 * i - 1],
+      r.temperature[i], r.J[i], r.browning[i], r.density[i], r.pressure[i], r.id[i])
   end
   h.write(path, table.concat(rows, "\n") .. "\n")
 end
