@@ -125,8 +125,17 @@ end
 -- core.usage_error raises is marked so `hearth run` can tell.
 local usage_error = core.usage_error
 
+-- "--set k=v" as a message shows it: a value past 60 characters (--set leaveners= with a list of 10000 numbers) is
+-- cut to its first 40 and its length, so the refusal stays one line a user can read (h.params' messages too)
+local function shorten(v)
+  v = tostring(v)
+  return #v > 60 and ("%s... (%d characters)"):format(v:sub(1, 40), #v) or v
+end
+local function set_text(k, v) return ("--set %s=%s"):format(k, shorten(v)) end
+h._shorten, h._set_text = shorten, set_text
+
 local function knob_number(name, v, level)
-  return tonumber(v) or usage_error(("--set %s=%s: expected a number"):format(name, v), level or 3)
+  return tonumber(v) or usage_error(("%s: expected a number"):format(set_text(name, v)), level or 3)
 end
 
 h._check = { keys = check_keys, number = check_number, choice = check_choice, vec = check_vec }
@@ -486,7 +495,7 @@ function h.scene(o)
         if e.kind == "choice" then
           local ok = false
           for _, c in ipairs(e.words) do ok = ok or v:lower() == c end
-          if not ok then usage_error(("--set %s=%s: valid: %s"):format(e.name, v, table.concat(e.words, ", ")), 2) end
+          if not ok then usage_error(("%s: valid: %s"):format(set_text(e.name, v), table.concat(e.words, ", ")), 2) end
           oo[e.name] = v
         else
           oo[e.name] = knob_number(e.name, v)
