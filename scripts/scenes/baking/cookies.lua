@@ -121,9 +121,11 @@ local defaults = { dim = h.number { 2, min = 2, max = 3, integer = true, what = 
   dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 0, min = 0, unit = "s", what = "the bake's simulated time (0: the preset's own)" },
   frames = h.number { 5, min = 1, integer = true, what = "PNG frames over the bake" },
-  ovens = h.number { { 190, 150, 110 }, list = true, min = -273.15, max = 5000, unit = "degC",
+  -- at most a dozen of each (muffins.lua's cups likewise): each oven is a bake and each leavener a cookie on every
+  -- tray, so the cost grows with the count (a list of 10000 leaveners had laid a tray 10000 cookies wide)
+  ovens = h.number { { 190, 150, 110 }, list = true, max_count = 12, min = -273.15, max = 5000, unit = "degC",
     what = "the ovens' temperatures, one bake each" },
-  leaveners = h.number { { 0.015, 0.0075, 0 }, list = true, min = 0,
+  leaveners = h.number { { 0.015, 0.0075, 0 }, list = true, max_count = 12, min = 0,
     what = "the cookies' leaveners, side by side on each tray (0.015: the formula's)" },
   gas = h.number { 1, min = 0, what = "a factor on the CO2 rates (and the physical preset's amounts)" },
   tray_mode = h.choice("separate", h.contact_words),
