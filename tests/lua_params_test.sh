@@ -147,6 +147,24 @@ set_long_value_cut)
     run numbers_count.lua --set dx=0.0123456789012345678901234567890123456789012345678901234567890
     expect_rc 0 "a 61-character number that is in range runs"
     ;;
+dx_3d_floor_said)
+    # h.dx_3d: a scene's 3D floor on dx (its cost) raises a finer dx and says so on stdout; 2D runs and a dx at or
+    # above the floor pass unchanged and silent (lava_cake.lua --set dim=3 --set dx=0.001 had run at 4 mm silently)
+    run dx_3d.lua
+    expect_rc 0 "2D"
+    has out.txt "dx used: 0.002" "2D keeps dx"
+    grep -q "3D floor" out.txt && fail "2D: a floor notice"
+    run dx_3d.lua --set dim=3
+    expect_rc 0 "3D below the floor"
+    has out.txt "hearth: dx = 0.002 m is below this scene's 3D floor; the 3D run uses dx = 0.004 m" "the notice"
+    has out.txt "dx used: 0.004" "the floor used"
+    run dx_3d.lua --set dim=3 --set dx=0.004
+    expect_rc 0 "3D on the floor"
+    has out.txt "dx used: 0.004" "on the floor"
+    grep -q "3D floor" out.txt && fail "3D on the floor: a notice"
+    run dx_3d.lua --set dim=3 --set dx=0.005
+    has out.txt "dx used: 0.005" "above the floor"
+    ;;
 set_bad_value_exit2)
     bad_set() { # what text args...
         local what=$1 text=$2

@@ -147,6 +147,17 @@ h._check = { keys = check_keys, number = check_number, choice = check_choice, ve
 -- or "labels" rebuilds the material from them (see material_id).
 local mix_mt = { __name = "hearth.mix" }
 local blend_modes = scene_setting.blend.words
+--- h.dx_3d(dx, floor, d3) -> the grid spacing a scene runs at: dx, or in 3D (d3 true) at least floor (m), the
+--- scene's floor for a 3D run's cost. When it raises dx it says so on stdout: `--set dim=3 --set dx=0.001` of
+--- lava_cake.lua had run at 4 mm without a word, a different run from the one asked for.
+function h.dx_3d(dx, floor, d3)
+  if d3 and dx < floor then
+    print(("hearth: dx = %g m is below this scene's 3D floor; the 3D run uses dx = %g m"):format(dx, floor))
+    return floor
+  end
+  return dx
+end
+
 --- h.blend_words: h.scene's blend modes, each with what it does, for a scene's parameter that picks one:
 --- h.params{blend = h.choice("nonlinear", h.blend_words)}.
 h.blend_words = {

@@ -165,7 +165,7 @@ end
 -- Without it the leavened cookie's top and rim swell past its crumb (issue #18, docs/validation.md "The
 -- cookie's skin"). -1: the preset's, 5 m/s for paper and h.library.oven.cookie.gas_vent (0.02 m/s x S) for physical.
 local d3 = P.dim == 3
-local dx = d3 and math.max(P.dx, 0.01) or P.dx
+local dx = h.dx_3d(P.dx, 0.01, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 local ovens, leaveners = P.ovens, P.leaveners
 

@@ -51,7 +51,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   -- cam_clay_dough's range of E: [0.01, 1e12] Pa
   E = h.number { 4e4, min = 0.01, max = 1e12, unit = "Pa", what = "the dough's Young's modulus" } }
 local d3 = P.dim == 3
-local dx = d3 and math.max(P.dx, 0.004) or P.dx
+local dx = h.dx_3d(P.dx, 0.004, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 local taus, etas = P.taus, P.etas
 
