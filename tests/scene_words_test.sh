@@ -57,6 +57,7 @@ word_refused_marshmallow_only) refused scripts/scenes/baking/marshmallow.lua onl
 word_refused_marshmallow_mode) refused scripts/scenes/baking/marshmallow.lua mode=glued "" "${contact[@]}" ;;
 word_refused_pancake_spatula) refused scripts/scenes/baking/pancake.lua spatula=sticy sticky "${contact[@]}" ;;
 word_refused_pancake_preset) refused scripts/scenes/baking/pancake.lua preset=phisical physical paper physical ;;
+word_refused_pancake_turn) refused scripts/scenes/baking/pancake.lua turn=smoth smooth constant smooth ;;
 word_refused_lava_cake_preset) refused scripts/scenes/baking/lava_cake.lua preset=pysical physical paper physical ;;
 word_refused_sph_bread_roll_bubbles) refused scripts/scenes/sph/bread_roll.lua bubbles=centr centre centre dispersed even ;;
 word_refused_sph_bread_roll_mu_e_curve) refused scripts/scenes/sph/bread_roll.lua mu_e_curve=tabel table sourced table ;;

@@ -37,7 +37,8 @@ PY
 claim_loaf_top_browns | claim_loaf_top_browns_fine)
     dx=0.005
     [ "$case_name" = claim_loaf_top_browns_fine ] && dx=0.0025
-    run loaf_physical --set dx=$dx --set frames=5 >/dev/null
+    # the very run claim_loaf_physical_rises reads (its 25 frames: one a real minute), made once for both (shared_run)
+    run loaf_physical --set dx=$dx >/dev/null
     python3 - "$(find hearth-out/loaf_physical -name loaf.csv | head -1)" $dx <<'PY'
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))

