@@ -72,6 +72,10 @@ params_number_declaration_errors)
     has out.txt "unknown key: $scenes/number_errors.lua:11: h.number: unknown key mn" "unknown key"
     has out.txt "bound not finite: $scenes/number_errors.lua:12: h.number: max = inf is not a finite number" "infinite bound"
     has out.txt "not a table: $scenes/number_errors.lua:13: h.number: expected" "not a table"
+    has out.txt "max_count without list: $scenes/number_errors.lua:14: h.number: max_count needs list = true" \
+        "max_count on a plain number"
+    has out.txt "max_count not whole: $scenes/number_errors.lua:15: h.number: max_count = a whole number >= 1, got 2.5" \
+        "a fraction of a count"
     ;;
 run_params_lists_ranges)
     # --params lists each numeric parameter's meaning, range and unit, and stops
@@ -100,6 +104,66 @@ params_number_passed_through_refused)
     expect_rc 2 "a --set the scene refuses, passed on"
     has_msg "numbers.lua:3: --set dx=-1: dx (the grid spacing) takes a number in (0, 0.05] m, not -1" \
         "the scene file and line, the --set and the range"
+    ;;
+params_number_list_count_refused)
+    # max_count: a list of at most that many numbers (cookies.lua's leaveners, pull_twist.lua's taus: each number is a
+    # cookie or a strip; 10000 of them had built the scene for a minute and 800 MB before any refusal); the bar set
+    # before the run: refused with exit 2 within 2 s, naming the count allowed and the count given
+    run numbers_count.lua --set sizes=1,2,3
+    expect_rc 0 "a list of max_count numbers"
+    has out.txt "sizes=1,2,3" "three sizes"
+    run numbers_count.lua --set sizes=1,2,3,4
+    expect_rc 2 "one number too many"
+    has_msg "numbers_count.lua:3: --set sizes=1,2,3,4: sizes (the cookies' sizes) takes numbers separated by commas, each in [0, 1000000] mm; at most 3 of them, not a list of 4" \
+        "file, line, the parameter, its range, the count allowed and the count given"
+    start=$(date +%s%N)
+    run numbers_count.lua --set sizes="$(seq -s, 1 10000)"
+    ms=$(( ($(date +%s%N) - start) / 1000000 ))
+    echo "a list of 10000 numbers refused in $ms ms (bar 2000)"
+    expect_rc 2 "a list of 10000 numbers"
+    has_msg "not a list of 10000" "the count given"
+    [ "$ms" -le 2000 ] || fail "a list of 10000 numbers took $ms ms to refuse (bar 2000)"
+    run numbers_count.lua --params
+    has out.txt "      the cookies' sizes: numbers separated by commas, each in [0, 1000000] mm; at most 3 of them" \
+        "--params lists the count"
+    ;;
+set_long_value_cut)
+    # a refused --set value longer than 60 characters is shown as its first 40 and its length, so the message stays
+    # one readable line (a list of 10000 numbers had put 49 000 characters in it, twice); short values are shown whole
+    long=$(seq -s, 1 10000)
+    run numbers_count.lua --set dx="$long"
+    expect_rc 2 "a list where a number is expected"
+    has_msg "numbers_count.lua:3: --set dx=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,1... (48893 characters): dx (the grid spacing) takes a number in (0, inf) m, not 1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,1... (48893 characters)" \
+        "the value cut, with its length, in both places"
+    n=$(sed '/^stack traceback:/,$d' err.txt | wc -c)
+    echo "the message: $n characters"
+    [ "$n" -le 400 ] || fail "the message is $n characters (bar 400)"
+    run params.lua --set cfl="$long"
+    expect_rc 2 "a scene setting given a list"
+    has_msg "--set cfl=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,1... (48893 characters): expected a number" "a scene setting's value cut"
+    run words.lua --set tray="$(printf 'x%.0s' $(seq 1 100))"
+    expect_rc 2 "a long word"
+    has_msg 'not "xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx... (100 characters)"' "a word's value cut"
+    run numbers_count.lua --set dx=0.0123456789012345678901234567890123456789012345678901234567890
+    expect_rc 0 "a 61-character number that is in range runs"
+    ;;
+dx_3d_floor_said)
+    # h.dx_3d: a scene's 3D floor on dx (its cost) raises a finer dx and says so on stdout; 2D runs and a dx at or
+    # above the floor pass unchanged and silent (lava_cake.lua --set dim=3 --set dx=0.001 had run at 4 mm silently)
+    run dx_3d.lua
+    expect_rc 0 "2D"
+    has out.txt "dx used: 0.002" "2D keeps dx"
+    grep -q "3D floor" out.txt && fail "2D: a floor notice"
+    run dx_3d.lua --set dim=3
+    expect_rc 0 "3D below the floor"
+    has out.txt "hearth: dx = 0.002 m is below this scene's 3D floor; the 3D run uses dx = 0.004 m" "the notice"
+    has out.txt "dx used: 0.004" "the floor used"
+    run dx_3d.lua --set dim=3 --set dx=0.004
+    expect_rc 0 "3D on the floor"
+    has out.txt "dx used: 0.004" "on the floor"
+    grep -q "3D floor" out.txt && fail "3D on the floor: a notice"
+    run dx_3d.lua --set dim=3 --set dx=0.005
+    has out.txt "dx used: 0.005" "above the floor"
     ;;
 set_bad_value_exit2)
     bad_set() { # what text args...

@@ -220,7 +220,7 @@ sandbox_core_memory)
     run core_hog.lua --memory 64M
     expect_rc 1 "blocks of particles past --memory 64M"
     has_msg "would need about" "the estimate"
-    has_msg "this run may use 67.1 MB of memory" "the ceiling named"
+    has_msg "this run may use 64 MiB = 67.1 MB of memory" "the ceiling named, as --memory 64M gave it and in MB"
     has_msg "--memory" "the flag named"
     grep -q "unreachable" out.txt && fail "the scene went on past the ceiling"
     # the particles' estimate fits, but the box's grid tables already hold part of the ceiling

@@ -125,8 +125,17 @@ end
 -- core.usage_error raises is marked so `hearth run` can tell.
 local usage_error = core.usage_error
 
+-- "--set k=v" as a message shows it: a value past 60 characters (--set leaveners= with a list of 10000 numbers) is
+-- cut to its first 40 and its length, so the refusal stays one line a user can read (h.params' messages too)
+local function shorten(v)
+  v = tostring(v)
+  return #v > 60 and ("%s... (%d characters)"):format(v:sub(1, 40), #v) or v
+end
+local function set_text(k, v) return ("--set %s=%s"):format(k, shorten(v)) end
+h._shorten, h._set_text = shorten, set_text
+
 local function knob_number(name, v, level)
-  return tonumber(v) or usage_error(("--set %s=%s: expected a number"):format(name, v), level or 3)
+  return tonumber(v) or usage_error(("%s: expected a number"):format(set_text(name, v)), level or 3)
 end
 
 h._check = { keys = check_keys, number = check_number, choice = check_choice, vec = check_vec }
@@ -138,6 +147,17 @@ h._check = { keys = check_keys, number = check_number, choice = check_choice, ve
 -- or "labels" rebuilds the material from them (see material_id).
 local mix_mt = { __name = "hearth.mix" }
 local blend_modes = scene_setting.blend.words
+--- h.dx_3d(dx, floor, d3) -> the grid spacing a scene runs at: dx, or in 3D (d3 true) at least floor (m), the
+--- scene's floor for a 3D run's cost. When it raises dx it says so on stdout: `--set dim=3 --set dx=0.001` of
+--- lava_cake.lua had run at 4 mm without a word, a different run from the one asked for.
+function h.dx_3d(dx, floor, d3)
+  if d3 and dx < floor then
+    print(("hearth: dx = %g m is below this scene's 3D floor; the 3D run uses dx = %g m"):format(dx, floor))
+    return floor
+  end
+  return dx
+end
+
 --- h.blend_words: h.scene's blend modes, each with what it does, for a scene's parameter that picks one:
 --- h.params{blend = h.choice("nonlinear", h.blend_words)}.
 h.blend_words = {
@@ -486,7 +506,7 @@ function h.scene(o)
         if e.kind == "choice" then
           local ok = false
           for _, c in ipairs(e.words) do ok = ok or v:lower() == c end
-          if not ok then usage_error(("--set %s=%s: valid: %s"):format(e.name, v, table.concat(e.words, ", ")), 2) end
+          if not ok then usage_error(("%s: valid: %s"):format(set_text(e.name, v), table.concat(e.words, ", ")), 2) end
           oo[e.name] = v
         else
           oo[e.name] = knob_number(e.name, v)

@@ -19,6 +19,7 @@
 return function(h, core, u)
 local nearest, sorted_keys, scene_knobs = u.nearest, u.sorted_keys, u.scene_knobs
 local usage_error = core.usage_error
+local shorten, set_text = h._shorten, h._set_text -- a long value cut, "--set k=v" with it (init.lua)
 
 local choice_mt = { __name = "hearth.choice" }
 local function is_choice(v) return getmetatable(v) == choice_mt end
@@ -91,7 +92,9 @@ end
 --- also = {[0] = "what 0 means"}}: a numeric parameter for h.params with its valid range. min and max are
 --- inclusive bounds, above and below strict ones (above = 0: > 0); either end may be left open (no bound).
 --- integer = true takes whole numbers only (counts: cups, frames). list = true takes one or more numbers, each in the
---- range (`--set ovens=190,150`; the default a list {190, 150, 110}). also lists values outside the range that
+--- range (`--set ovens=190,150`; the default a list {190, 150, 110}); max_count = N takes at most N of them (each one
+--- a cookie or a strip the scene lays out: `--set leaveners=` with 10000 numbers had built a tray 10000 cookies wide and
+--- run out of time and memory instead of being refused). also lists values outside the range that
 --- the scene gives a meaning of its own (0: the preset's; -1: Table 2's curve). unit and what are shown in the
 --- refusal and in `hearth run SCENE.lua --params`; what is required (a short meaning), unit when the number has one.
 function h.number(t)
@@ -103,6 +106,10 @@ function h.number(t)
     if k == 1 then
     elseif k == "min" or k == "max" or k == "above" or k == "below" then
       if not finite(v) then error(("h.number: %s = %s is not a finite number"):format(k, tostring(v)), 2) end
+      n[k] = v
+    elseif k == "max_count" then
+      if math.type(v) ~= "integer" or v < 1 then error(("h.number: max_count = a whole number >= 1, got %s")
+        :format(tostring(v)), 2) end
       n[k] = v
     elseif k == "integer" or k == "list" then
       if type(v) ~= "boolean" then error(("h.number: %s = true or false, got %s"):format(k, tostring(v)), 2) end
@@ -119,10 +126,11 @@ function h.number(t)
       end
       n.also = v
     else
-      error(("h.number: unknown key %s (default first, then min, max, above, below, integer, list, unit, what, also)")
+      error(("h.number: unknown key %s (default first, then min, max, above, below, integer, list, max_count, unit, what, also)")
         :format(tostring(k)), 2)
     end
   end
+  if n.max_count and not n.list then error("h.number: max_count needs list = true", 2) end
   if n.min and n.above then error("h.number: give min or above, not both", 2) end
   if n.max and n.below then error("h.number: give max or below, not both", 2) end
   if not n.what then error('h.number: what = "a short meaning" is required (the refusal and --params show it)', 2) end
@@ -144,6 +152,7 @@ local function range_text(n)
   local r = (n.list and (n.integer and "whole numbers, each in " or "numbers separated by commas, each in ")
     or (n.integer and "a whole number in " or "a number in ")) .. lo .. ", " .. hi .. unit
   if n.min and n.min == n.max then r = "only " .. num(n.min) .. unit end
+  if n.max_count then r = r .. ("; at most %d of them"):format(n.max_count) end
   if n.also then
     local ks = {}
     for x in pairs(n.also) do ks[#ks + 1] = x end
@@ -164,6 +173,9 @@ end
 -- "--set dx=-1", the scene's default, or the script that passed it) naming the parameter, its meaning, its range.
 local function number_error(n, name, x, what)
   local bad = x -- a list's first number out of range (or x itself when it is not a list)
+  if n.list and n.max_count and type(x) == "table" and #x > n.max_count then
+    return ("%s: %s (%s) takes %s, not a list of %d"):format(what, name, n.what, range_text(n), #x)
+  end
   if n.list and type(x) == "table" and #x > 0 then
     bad = nil
     for i = #x, 1, -1 do if not in_range(n, x[i]) then bad = x[i] end end
@@ -172,7 +184,7 @@ local function number_error(n, name, x, what)
     return nil
   end
   return ("%s: %s (%s) takes %s, not %s"):format(what, name, n.what, range_text(n),
-    type(bad) == "number" and num(bad) or type(bad) == "table" and "an empty list" or tostring(bad))
+    type(bad) == "number" and num(bad) or type(bad) == "table" and "an empty list" or shorten(bad))
 end
 
 -- The valid words of choice c, one a line, each with its description, sorted (the empty word first).
@@ -192,7 +204,7 @@ local function word_error(c, name, w, what)
   if type(w) == "string" and c.words[w] then return nil end
   local near = type(w) == "string" and nearest(w, c.words)
   return ("%s: %s takes one of the words below, not %s%s\n%s"):format(what, name,
-    type(w) == "string" and q(w) or tostring(w), near and ("; did you mean " .. q(near) .. "?") or "", word_lines(c, "  "))
+    type(w) == "string" and q(shorten(w)) or tostring(w), near and ("; did you mean " .. q(near) .. "?") or "", word_lines(c, "  "))
 end
 
 -- The scene author's own mistake: a default that is not one of its words (a plain error, exit 1).
@@ -246,7 +258,7 @@ end
 local function numbers(k, v)
   local t = {}
   for w in (v .. ","):gmatch("([^,]*),") do
-    t[#t + 1] = tonumber(w) or usage_error(("--set %s=%s: expected numbers separated by commas"):format(k, v), 3)
+    t[#t + 1] = tonumber(w) or usage_error(("%s: expected numbers separated by commas"):format(set_text(k, v)), 3)
   end
   return t
 end
@@ -280,21 +292,21 @@ function h.params(defaults)
         near and ("; did you mean '" .. near .. "'?") or "", table.concat(sorted_keys(defaults), ", ")), 2)
     end
     if type(d) == "number" then
-      P[k] = tonumber(v) or usage_error(("--set %s=%s: expected a number"):format(k, v), 2)
+      P[k] = tonumber(v) or usage_error(("%s: expected a number"):format(set_text(k, v)), 2)
     elseif is_number(d) then
       local x = tonumber(v)
       if d.list then x = numbers(k, v) end
-      local m = number_error(d, k, x or v, ("--set %s=%s"):format(k, v))
+      local m = number_error(d, k, x or v, set_text(k, v))
       if m then usage_error(m, 2) end
       P[k] = x
     elseif is_choice(d) then
-      local m = word_error(d, k, v, ("--set %s=%s"):format(k, v))
+      local m = word_error(d, k, v, set_text(k, v))
       if m then usage_error(m, 2) end
       P[k] = v
     elseif type(d) == "table" then
       P[k] = numbers(k, v)
     elseif type(d) == "boolean" then
-      if v ~= "true" and v ~= "false" then usage_error(("--set %s=%s: expected true or false"):format(k, v), 2) end
+      if v ~= "true" and v ~= "false" then usage_error(("%s: expected true or false"):format(set_text(k, v)), 2) end
       P[k] = v == "true"
     else
       P[k] = v
@@ -323,7 +335,7 @@ function h.pass_params(P)
           x = v.default
         else
           local given = core.options().sets[k]
-          local m = refusal(v, k, x, given and ("--set %s=%s"):format(k, given)
+          local m = refusal(v, k, x, given and set_text(k, given)
             or ("%s = %s, passed by the script's h.pass_params"):format(k, is_choice(v) and q(tostring(x)) or tostring(x)))
           if m and given then usage_error(m, 2) elseif m then error(m, 2) end
         end

@@ -43,8 +43,9 @@
 --                           the fat melts, holds its 17.5 mm); the soda's CO2 (0.069 mol/kg) comes
 --                           in two shares, the NH4Cl one on a 60 degC bell before the 78 degC set
 --                           and the leftover soda's at 100 degC, and the leavened cookie stands
---                           1.51x the unleavened at 190 degC (94 mm wide), 1.86x at 150, 2.20x at
---                           110 (docs/validation.md "The physical cookie's two shares (#18, helper
+--                           1.51x the unleavened at 190 degC (94 mm wide), 1.86x at 150, 1.97x at
+--                           110 (41.0 against 20.8 mm, commit 80e63bd; 2.20x before each share stopped at
+--                           its amount, below) (docs/validation.md "The physical cookie's two shares (#18, helper
 --                           sodatwo)"; since open pores vent toward the atmosphere, not to a vacuum,
 --                           the 150 and 110 degC cookies no longer shed pieces, and at 110 the most
 --                           leavened is a foam of J ~3.5: "The physical cookie in the cooler ovens
@@ -121,9 +122,11 @@ local defaults = { dim = h.number { 2, min = 2, max = 3, integer = true, what = 
   dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 0, min = 0, unit = "s", what = "the bake's simulated time (0: the preset's own)" },
   frames = h.number { 5, min = 1, integer = true, what = "PNG frames over the bake" },
-  ovens = h.number { { 190, 150, 110 }, list = true, min = -273.15, max = 5000, unit = "degC",
+  -- at most a dozen of each (muffins.lua's cups likewise): each oven is a bake and each leavener a cookie on every
+  -- tray, so the cost grows with the count (a list of 10000 leaveners had laid a tray 10000 cookies wide)
+  ovens = h.number { { 190, 150, 110 }, list = true, max_count = 12, min = -273.15, max = 5000, unit = "degC",
     what = "the ovens' temperatures, one bake each" },
-  leaveners = h.number { { 0.015, 0.0075, 0 }, list = true, min = 0,
+  leaveners = h.number { { 0.015, 0.0075, 0 }, list = true, max_count = 12, min = 0,
     what = "the cookies' leaveners, side by side on each tray (0.015: the formula's)" },
   gas = h.number { 1, min = 0, what = "a factor on the CO2 rates (and the physical preset's amounts)" },
   tray_mode = h.choice("separate", h.contact_words),
@@ -162,7 +165,7 @@ end
 -- Without it the leavened cookie's top and rim swell past its crumb (issue #18, docs/validation.md "The
 -- cookie's skin"). -1: the preset's, 5 m/s for paper and h.library.oven.cookie.gas_vent (0.02 m/s x S) for physical.
 local d3 = P.dim == 3
-local dx = d3 and math.max(P.dx, 0.01) or P.dx
+local dx = h.dx_3d(P.dx, 0.01, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 local ovens, leaveners = P.ovens, P.leaveners
 

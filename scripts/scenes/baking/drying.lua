@@ -28,7 +28,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
     what = "the oven air's (and the slab's start)" },
   latent_heat = false }
 local d3 = P.dim == 3
-local dx = d3 and math.max(P.dx, 0.004) or P.dx
+local dx = h.dx_3d(P.dx, 0.004, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local L, H, SKIN, RACK, zc = 0.06, 0.008, 0.002, 0.012, 0.03 -- m: slice length, flesh height, skin, rack height

@@ -79,7 +79,7 @@ if physical and P.set_yield > 0 then
     .. "preset's set is its egg proteins' (lua/hearth/dough_physical.lua, lava_cake)", 0)
 end
 local d3 = P.dim == 3
-local dx = d3 and math.max(P.dx, 0.004) or P.dx
+local dx = h.dx_3d(P.dx, 0.004, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local oven = physical and h.library.oven.lava_cake or h.library.paper_oven.lava_cake

@@ -40,17 +40,18 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 0.4, above = 0, unit = "s", what = "the run's simulated time" },
   frames = h.number { 4, min = 1, integer = true, what = "PNG frames over the run" }, 
-  -- cam_clay_dough's ranges of tau_y, [1e-6, 1e9] Pa, and of eta, [0, 1e12] Pa^3 s
-  taus = h.number { { 300, 1000, 3000 }, list = true, min = 1e-6, max = 1e9, unit = "Pa",
+  -- cam_clay_dough's ranges of tau_y, [1e-6, 1e9] Pa, and of eta, [0, 1e12] Pa^3 s; at most a dozen of each, as
+  -- cookies.lua's lists: each pair is a strip in the grid, so the cost grows with their product
+  taus = h.number { { 300, 1000, 3000 }, list = true, max_count = 12, min = 1e-6, max = 1e9, unit = "Pa",
     what = "the doughs' yield stresses, one column each" },
-  etas = h.number { { 1e6, 1e8, 1e10 }, list = true, min = 0, max = 1e12, unit = "Pa^3 s",
+  etas = h.number { { 1e6, 1e8, 1e10 }, list = true, max_count = 12, min = 0, max = 1e12, unit = "Pa^3 s",
     what = "the doughs' viscoplastic penalties eta, one row each" },
   speed = h.number { 0.02, min = 0, unit = "m/s", what = "each grip's pull speed" },
   spin = h.number { 0.5, min = -100, max = 100, unit = "rad/s", what = "each grip's turn rate" },
   -- cam_clay_dough's range of E: [0.01, 1e12] Pa
   E = h.number { 4e4, min = 0.01, max = 1e12, unit = "Pa", what = "the dough's Young's modulus" } }
 local d3 = P.dim == 3
-local dx = d3 and math.max(P.dx, 0.004) or P.dx
+local dx = h.dx_3d(P.dx, 0.004, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 local taus, etas = P.taus, P.etas
 

@@ -4,7 +4,7 @@
 -- through h.curve) sits on a heated tray. Heat enters the particles touching
 -- the tray (eq. 3.42) and diffuses (eq. 3.45-3.46); the bottom softens first
 -- and its melt runs out into a pool around the shrinking block. Writes
--- height.csv (top of the material above the tray over time) and
+-- height.csv (t_s, top_m: the top of the material above the tray over time) and
 -- particles_NNNN.csv (x, y in m at each 0.1 s frame, NNNN = 0 at t = 0;
 -- tests/sph_melt_measure.py measures the pool from them). heat_ext (eq. 3.42
 -- per unit area, h / c in kg/(m^2 s), animation-scaled) is 6.1, the heat the
@@ -16,6 +16,13 @@
 -- as single particles at up to 1 m/s, hit the box's walls and flew up to
 -- 70 mm, and the block's bottom slid apart until it split down its middle at
 -- 1.9 s (docs/validation.md "The melting block pools (#18, helper meltblock)").
+-- What it shows (2D, dx 4 mm, 2 s; measured at commit 80e63bd, #18 helper userview2, with tests/sph_melt_measure.py):
+-- one piece; the centre's top falls 56.0 -> 47.4 mm (height.csv, 59 -> 50 mm at the line it probes) and the melt
+-- makes a foot 11 / 7 mm wide left / right of the block's footprint, one particle 9.9 mm up; its bottom rows read
+-- 70-80 degC in frames/temperature_0020.png's colours, against the floor's 150. A block on its own melt, not yet a puddle.
+-- meltblock's 25.5 / 21.5 mm foot and 43.8 mm top were measured before deadbread's sph_outer.c oshare, which gives
+-- the block's crowded sides and corners a little less of the floor's heat (docs/validation.md "The bread of the
+-- dead stays in one piece"). ~6 s of CPU.
 local h = require "hearth"
 local P = h.params {
   floor = h.number { 150, min = -273.15, max = 5000, unit = "degC", what = "the floor's temperature" },
@@ -31,7 +38,7 @@ local wax = h.material("maxwell_sph", {
 s:add { shape = h.box({ 0.11, 0.01 }, { 0.19, 0.07 }), material = wax, ppc = 1, jitter = 0, temperature = 20 }
 s:collider { shape = h.plane({ 0, 0.01 }, { 0, 1 }), mode = "sticky", temperature = P.floor, beta = 0 }
 
-local rows = { "t,top_m" }
+local rows = { "t_s,top_m" }
 local function top()
   local col = s:line("density", { 0.15, 0.01 }, { 0.15, 0.15 }, 141)
   local y = 0.01
