@@ -227,7 +227,7 @@ sandbox_core_memory)
     run core_hog.lua --memory 64M --set blocks=48 --set tall=10
     expect_rc 1 "a growth past --memory 64M after the up-front estimate passed"
     has_msg "out of memory" "the call that needed it"
-    has_msg "reached its memory ceiling of 67.1 MB" "the ceiling named"
+    has_msg "reached its memory ceiling of 64 MiB = 67.1 MB" "the ceiling named"
     grep -q "unreachable" out.txt && fail "the scene went on past the ceiling"
     run tiny.lua --memory 64M
     expect_rc 0 "a small scene under --memory 64M"

@@ -3,6 +3,7 @@
 
 #include <stdatomic.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -57,6 +58,16 @@ size_t hearth_memory_limit(void) {
 }
 
 int hearth_memory_limit_refused(void) { return atomic_load(&g_limit_refused); }
+
+void mem_limit_words(char *buf, size_t n) {
+    const size_t limit = hearth_memory_limit();
+    /* --memory counts K, M, G in powers of 1024 (64M is 64 MiB, 67.1 MB): the ceiling as the user gave it, then in
+     * the decimal MB or GB of the sizes beside it, so "--memory 64M" does not come back as an unexplained 67.1 MB */
+    char given[40] = "";
+    if (limit % ((size_t)1 << 30) == 0) snprintf(given, sizeof given, "%zu GiB = ", limit >> 30);
+    else if (limit % ((size_t)1 << 20) == 0) snprintf(given, sizeof given, "%zu MiB = ", limit >> 20);
+    snprintf(buf, n, "%s%.3g %s", given, (double)limit / (limit < 1e9 ? 1e6 : 1e9), limit < 1e9 ? "MB" : "GB");
+}
 
 /* A growth past the ceiling fails as an out-of-memory would, so every caller's
  * existing NULL path reports it; the flag lets the program name the ceiling.

@@ -20,6 +20,9 @@ void mem_free(void *p, size_t n);
 char *mem_strdup(const char *s);
 void mem_strfree(char *s);
 
+/// The memory ceiling (hearth_memory_limit) in words for a message: "64 MiB = 67.1 MB", "12.6 GB".
+void mem_limit_words(char *buf, size_t n);
+
 /// Testing: make the allocation after `n` more succeed calls fail (n < 0 disables).
 void mem_fail_after(long n);
 #endif

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "alloc.h"
 #include "hearth/hearth.h"
 
 /* printf writes a NaN whose sign bit is set as "-nan" (Lua's 0/0 is one): a
@@ -30,12 +31,12 @@ hearth_status err_set(hearth_error *err, hearth_status code, const char *fmt, ..
     /* a growth refused at the program's memory ceiling (alloc.c) fails as out
      * of memory at whichever call needed it: every such message names the cause */
     if (code == HEARTH_ERR_NOMEM && hearth_memory_limit_refused()) {
-        const double limit = (double)hearth_memory_limit(), machine = (double)hearth_machine_memory();
+        char ceiling[64];
+        mem_limit_words(ceiling, sizeof ceiling);
         const size_t n = strlen(err->msg);
         snprintf(err->msg + n, sizeof err->msg - n,
-                 "; the simulation reached its memory ceiling of %.3g %s (hearth run --memory SIZE; the machine has "
-                 "%.3g GB)",
-                 limit / (limit < 1e9 ? 1e6 : 1e9), limit < 1e9 ? "MB" : "GB", machine / 1e9);
+                 "; the simulation reached its memory ceiling of %s (hearth run --memory SIZE; the machine has %.3g GB)",
+                 ceiling, (double)hearth_machine_memory() / 1e9);
     }
     return code;
 }

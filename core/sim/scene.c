@@ -143,14 +143,11 @@ static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
  * limit (hearth run --memory). Its words name which. */
 static double memory_limit(char *words, size_t n) {
     const size_t limit = hearth_memory_limit(), machine = hearth_machine_memory();
-    /* --memory counts K, M, G in powers of 1024 (64M is 64 MiB, 67.1 MB): the ceiling as the user gave it, then in
-     * the decimal MB of the sizes beside it, so "--memory 64M" does not come back as an unexplained 67.1 MB */
-    char given[40] = "";
-    if (limit % ((size_t)1 << 30) == 0) snprintf(given, sizeof given, "%zu GiB = ", limit >> 30);
-    else if (limit % ((size_t)1 << 20) == 0) snprintf(given, sizeof given, "%zu MiB = ", limit >> 20);
+    char ceiling[64];
+    mem_limit_words(ceiling, sizeof ceiling);
     if (limit < machine)
-        snprintf(words, n, "this run may use %s%.3g %s of memory (hearth run --memory SIZE; the machine has %.3g GB)",
-                 given, (double)limit / (limit < 1e9 ? 1e6 : 1e9), limit < 1e9 ? "MB" : "GB", (double)machine / 1e9);
+        snprintf(words, n, "this run may use %s of memory (hearth run --memory SIZE; the machine has %.3g GB)", ceiling,
+                 (double)machine / 1e9);
     else snprintf(words, n, "this machine has %.3g GB of memory", (double)limit / 1e9);
     return (double)limit;
 }
