@@ -25,7 +25,7 @@
 -- 24 s of the real heat history and the turn (0.5 s) 30 s.
 -- The physical pancake (2D, helper pancake; docs/validation.md "The physical pancake"): at dx 2 mm its middle
 -- climbs to 71.1 degC by the flip and (old turn: its torn landing put a 100 degC particle there) holds at 100.0 degC
--- after it while it keeps 0.98 of its water (with today's smooth turn it reaches 80.6-81.2 degC: below); the face on
+-- after it while it keeps 0.98 of its water (with today's smooth turn it reaches 80.6-81.9 degC, by the frame count: below); the face on
 -- the pan browns 0.180 (fields/browning.c's 0..1) by the flip while the top stays at 0.000; 9.7 mm thick before
 -- the flip, and 66% of the batter's water is left at 3.5 min (it boils off the pan faces). At 1.5 mm: 71.0 degC
 -- by the flip, 94.1 at the end (0.97 of its water), browning 0.166 / 0.000 (these with the old turn,
