@@ -17,12 +17,11 @@ pan), its thickness (median, min, max, coefficient of variation over the middle 
 --bar exits 1 unless (the bar set at 07:47 UTC on helper pancakeflip's day, before its first run): (1) the largest
 piece holds at least 95% of the particles, (2) it lies right of the pivot (mean x > 0.165 m) with its lowest
 particle within DX of the pan (y 0.01 m), and (3) no hole is wider than 2 DX."""
-import csv, os, statistics, sys
+import csv, glob, math, os, statistics, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sph_roll_measure import piece_labels  # noqa: E402
+from sph_roll_measure import piece_labels, piece_sizes  # noqa: E402
 
-import glob, math
 
 PAN, XP = 0.01, 0.165  # m: the pan's top and the spatula's pivot x (scripts/scenes/baking/pancake.lua)
 
@@ -44,10 +43,7 @@ def through(dx, out, bar):
         t = float(rows[0]["t_s"])
         pts = [(float(r["x"]), float(r["y"])) for r in rows]
         labels = piece_labels(pts, 1.5 * dx)
-        sizes = {}
-        for r in labels:
-            sizes[r] = sizes.get(r, 0) + 1
-        big = max(sizes, key=sizes.get)
+        sizes, big = piece_sizes(labels)
         mine = [pts[i] for i in range(len(pts)) if labels[i] == big]
         mx, my = sum(p[0] for p in mine) / len(mine), sum(p[1] for p in mine) / len(mine)
         sxx = sum((p[0] - mx) ** 2 for p in mine)
@@ -88,10 +84,7 @@ def main():
     pts = [(float(r["x"]), float(r["y"])) for r in rows]
     J = [float(r["J"]) for r in rows]
     labels = piece_labels(pts, 1.5 * dx)
-    sizes = {}
-    for r in labels:
-        sizes[r] = sizes.get(r, 0) + 1
-    big = max(sizes, key=sizes.get)
+    sizes, big = piece_sizes(labels)
     share = sizes[big] / len(pts)
     mine = [i for i in range(len(pts)) if labels[i] == big]
     mean_x = sum(pts[i][0] for i in mine) / len(mine)

@@ -42,7 +42,7 @@ of that line for END.csv."""
 import csv, math, os, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sph_roll_measure import piece_labels  # noqa: E402
+from sph_roll_measure import piece_labels, piece_sizes  # noqa: E402
 
 AXIS = 0.1  # the pan's mirror axis (the scene's cx), m
 P_A, T0, VMAX = 101325.0, 26.0, 4.0
@@ -89,10 +89,7 @@ def side(rows, dx, a_w=0.0, opened=()):
     """One side's pieces, and its batter and bubble particles outside its largest piece."""
     reach = [(math.sqrt(rest_volume(r, a_w, opened)) - 1) * dx / 2 for r in rows]
     labels = piece_labels([(r[0], r[1]) for r in rows], 2 * dx, reach)
-    sizes = {}
-    for l in labels:
-        sizes[l] = sizes.get(l, 0) + 1
-    main = max(sizes, key=sizes.get)
+    sizes, main = piece_sizes(labels)
     off = [r for r, l in zip(rows, labels) if l != main]
     bubbles = sum(1 for r in off if math.isnan(r[4]))
     return len(sizes), len(off) - bubbles, bubbles

@@ -34,7 +34,7 @@ moves its neighbours out by about sqrt(V_b) DX, under 2 DX for V_b < 4; a
 torn roll leaves a gap with no particle within two raw spacings.
 Prints 'ratio R pieces P largest_share S torn F void V'; --png draws what was
 counted (dough brown, gas cells blue, torn red, notches grey, particles black)."""
-import csv, math, sys
+import collections, csv, math, sys
 
 BIG = 1e18
 
@@ -223,11 +223,15 @@ def piece_labels(pts, L, reach=None):
     return [find(i) for i in range(len(pts))]
 
 
+def piece_sizes(labels):
+    """piece_labels' pieces: ({piece: particle count}, the largest piece; the first met of equal ones)."""
+    sizes = collections.Counter(labels)
+    return sizes, max(sizes, key=sizes.get)
+
+
 def pieces(pts, L):
-    sizes = {}
-    for r in piece_labels(pts, L):
-        sizes[r] = sizes.get(r, 0) + 1
-    return len(sizes), max(sizes.values()) / len(pts)
+    sizes, big = piece_sizes(piece_labels(pts, L))
+    return len(sizes), sizes[big] / len(pts)
 
 
 def main():

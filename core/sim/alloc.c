@@ -59,6 +59,10 @@ size_t hearth_memory_limit(void) {
 
 int hearth_memory_limit_refused(void) { return atomic_load(&g_limit_refused); }
 
+void mem_size_words(char *buf, size_t n, double bytes) {
+    snprintf(buf, n, "%.3g %s", bytes / (bytes < 1e9 ? 1e6 : 1e9), bytes < 1e9 ? "MB" : "GB");
+}
+
 void mem_limit_words(char *buf, size_t n) {
     const size_t limit = hearth_memory_limit();
     /* --memory counts K, M, G in powers of 1024 (64M is 64 MiB, 67.1 MB): the ceiling as the user gave it, then in
@@ -66,7 +70,9 @@ void mem_limit_words(char *buf, size_t n) {
     char given[40] = "";
     if (limit % ((size_t)1 << 30) == 0) snprintf(given, sizeof given, "%zu GiB = ", limit >> 30);
     else if (limit % ((size_t)1 << 20) == 0) snprintf(given, sizeof given, "%zu MiB = ", limit >> 20);
-    snprintf(buf, n, "%s%.3g %s", given, (double)limit / (limit < 1e9 ? 1e6 : 1e9), limit < 1e9 ? "MB" : "GB");
+    char size[32];
+    mem_size_words(size, sizeof size, (double)limit);
+    snprintf(buf, n, "%s%s", given, size);
 }
 
 /* A growth past the ceiling fails as an out-of-memory would, so every caller's

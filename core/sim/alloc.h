@@ -20,6 +20,8 @@ void mem_free(void *p, size_t n);
 char *mem_strdup(const char *s);
 void mem_strfree(char *s);
 
+/// A size in decimal megabytes or gigabytes for a message: "2.19 MB", "231 GB".
+void mem_size_words(char *buf, size_t n, double bytes);
 /// The memory ceiling (hearth_memory_limit) in words for a message: "64 MiB = 67.1 MB", "12.6 GB".
 void mem_limit_words(char *buf, size_t n);
 

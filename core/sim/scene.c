@@ -189,14 +189,14 @@ hearth_status scene_check_particle_budget(const hearth_scene *s, double more, co
     if (!(total <= (double)(INT_MAX / 2)))
         return err_set(err, HEARTH_ERR_PARAM, "%s: %.4g particles (%d already in the scene); at most %d", what, total,
                        s->ps.n, INT_MAX / 2);
-    char words[160];
+    char words[160], size[32];
     const double need = total * scene_bytes_per_particle(s), limit = memory_limit(words, sizeof words);
+    mem_size_words(size, sizeof size, need);
     if (need > limit)
         return err_set(err, HEARTH_ERR_PARAM,
-                       "%s: %.4g particles would need about %.3g %s (%.0f bytes each); %s (use a larger dx, fewer "
+                       "%s: %.4g particles would need about %s (%.0f bytes each); %s (use a larger dx, fewer "
                        "particles per cell or a smaller shape)",
-                       what, total, need / (need < 1e9 ? 1e6 : 1e9), need < 1e9 ? "MB" : "GB",
-                       scene_bytes_per_particle(s), words);
+                       what, total, size, scene_bytes_per_particle(s), words);
     return HEARTH_OK;
 }
 
