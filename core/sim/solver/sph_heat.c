@@ -84,12 +84,22 @@ void sph_heat_rates(hearth_scene *s) {
     if (s->def.latent_heat && !robin)
         for (int i = 0; i < n; i++) st->qo[i] = 0;
     const int dry = sph_heat_dry(s);
+    /* With a dry parameter each particle's k_i, taken once here rather than once for each pair it is in (the same
+     * values, so the same bits: a pair's conduction read it from both sides, which cost the bread of the dead 12% of
+     * its run with its water, helper sphcrumb), where sph_water_ensure made room (a caller outside the step may not
+     * have: then per pair, as before) */
+    double *kd = dry && st->kd && st->wcap >= n ? st->kd : NULL;
+    if (kd) {
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+        for (int i = 0; i < n; i++) kd[i] = sph_dry_k(s, i, mat[i]);
+    }
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         const double ri = st->rho[i];
         const material_slot *msi = &s->mats.slot[mat[i]];
         /* with a dry parameter: i's k_i and alpha(w_i), and the sums below are heat per m_i until divided by it */
-        const double ki = dry ? sph_dry_k(s, i, mat[i]) : 0.0, ai = dry ? material_specific_heat(msi, &s->ps, i) : 0.0;
+        const double ki = dry ? (kd ? kd[i] : sph_dry_k(s, i, mat[i])) : 0.0;
+        const double ai = dry ? material_specific_heat(msi, &s->ps, i) : 0.0;
         double dTi = 0;
         if (o->heat_int > 0)
             for (int k = off[i]; k < off[i + 1]; k++) {
@@ -106,7 +116,7 @@ void sph_heat_rates(hearth_scene *s) {
                  * Monaghan 1999, eq. 9); without, 1 (a product by 1 is exact: the thesis's bits) */
                 double kij = 1.0;
                 if (dry) {
-                    const double kj = sph_dry_k(s, j, mat[j]);
+                    const double kj = kd ? kd[j] : sph_dry_k(s, j, mat[j]);
                     kij = ki + kj > 0 ? 2 * (ki * kj) / (ki + kj) : 0.0;
                 }
                 dTi += o->heat_int * 4 * m[j] / ((ri + rj) * (ri + rj)) * (T[j] - T[i]) * lv * kij; /* eq. 3.45-3.46 */

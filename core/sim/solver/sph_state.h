@@ -42,8 +42,9 @@ struct sph_state {
     double *vr;     /* rest volume (rest_volume) per particle this step, for sph.gas_law's density sum */
     /* sph_water.c's, made only with water or latent_heat (sph_water_ensure; wcap particles): the
      * water's rate (kg/s), saturation and K theta s this step, and the oven's Robin heat per
-     * particle (W) for latent_heat's ledger (sph_fields_advance's ledger) */
-    double *dW, *sw, *wd, *qo;
+     * particle (W) for latent_heat's ledger (sph_fields_advance's ledger), and each particle's k_i of a
+     * dried crust's conduction this step (sph_heat.c's sph_dry_k, taken once a particle, not once a pair) */
+    double *dW, *sw, *wd, *qo, *kd;
     int wcap;
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
     double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
@@ -201,7 +202,7 @@ void sph_water_advance(hearth_scene *s, double dt);
 /// Does the step need sph_water.c's arrays (the water field live, or latent_heat's ledger)?
 int sph_water_live(const hearth_scene *s);
 /// The doubles per particle sph_water_ensure keeps.
-#define SPH_WATER_ARRAYS 4
+#define SPH_WATER_ARRAYS 5
 /// Before a step of n particles: the water's arrays, when sph_water_live; NOMEM when they cannot be had.
 hearth_status sph_water_ensure(hearth_scene *s, int n, hearth_error *err);
 /// Release them (with the state).

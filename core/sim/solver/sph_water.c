@@ -77,7 +77,8 @@ void sph_water_free(struct sph_state *st) {
     mem_free(st->sw, sizeof(double) * c);
     mem_free(st->wd, sizeof(double) * c);
     mem_free(st->qo, sizeof(double) * c);
-    st->dW = st->sw = st->wd = st->qo = NULL;
+    mem_free(st->kd, sizeof(double) * c);
+    st->dW = st->sw = st->wd = st->qo = st->kd = NULL;
     st->wcap = 0;
 }
 
@@ -90,9 +91,9 @@ hearth_status sph_water_ensure(hearth_scene *s, int n, hearth_error *err) {
     sph_water_free(st);
     const int cap = n + n / 4 + 16;
     const size_t b = sizeof(double) * (size_t)cap;
-    st->dW = mem_calloc(b), st->sw = mem_calloc(b), st->wd = mem_calloc(b), st->qo = mem_calloc(b);
+    st->dW = mem_calloc(b), st->sw = mem_calloc(b), st->wd = mem_calloc(b), st->qo = mem_calloc(b), st->kd = mem_calloc(b);
     st->wcap = cap;
-    if (!st->dW || !st->sw || !st->wd || !st->qo) {
+    if (!st->dW || !st->sw || !st->wd || !st->qo || !st->kd) {
         sph_water_free(st);
         return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory for the water of %d particles", n);
     }

@@ -64,7 +64,10 @@ local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the g
   xsph0 = h.number { 0.6, min = 0, max = 1, what = "XSPH's epsilon in the raw dough (h.scene's range)" },
   xsph_f = h.number { 0.9, min = 0, max = 1, what = "XSPH's epsilon in the baked dough (h.scene's range)" },
   artificial_stress = h.number { 0.3, min = 0, max = 1,
-    what = "Monaghan's epsilon against the tensile instability (h.scene's range)" } }
+    what = "Monaghan's epsilon against the tensile instability (h.scene's range)" },
+  -- the dough's water (WATER below): true carries the bread dough's, with latent_heat and boiling at 100 degC;
+  -- false is the dough before #18 helper sphcrumb, which held none
+  water = true }
 -- what a run's seconds stand for (S = 1500, the scene's browning_scale and its heat_ext, below)
 print(("bread_of_the_dead.lua: heat (an oven's h = 30 W/(m^2 K)) and browning 1500 times fast: "
   .. "the %g s run stands for %.0f min, 1 s for %.0f min"):format(P.until_t, P.until_t * 1500 / 60, 1500 / 60))
@@ -74,9 +77,24 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solv
   sph = { heat_ext = 16.7, heat_int = 0.5, av_beta = 1, xsph0 = P.xsph0, xsph_f = P.xsph_f, xsph_T0 = T0, xsph_Tf = 120,
           bubble_T0 = T0, tension = true, artificial_stress = P.artificial_stress },
   oven = { temperature = P.oven, beta = 0 },
-  browning = true, browning_scale = 1500 } -- Zanoni et al. 1995 kinetics; 1.2 s stand for a 30-minute bake
+  browning = true, browning_scale = 1500, -- Zanoni et al. 1995 kinetics; 1.2 s stand for a 30-minute bake
+  latent_heat = P.water or nil, boiling_point = P.water and 100 or nil }
 
 local props = { density = 1100, bulk = 2e4, lambda = P.lambda, viscosity = P.viscosity, mu_e = P.mu_e }
+-- WATER (#18, helper sphcrumb): the dough is bread dough (its heat capacity above is h.library.dough.bread's), so
+-- it carries that dough's water: 45% wet basis (lua/hearth/dough_physical.lua: Zanoni, Peri & Pierucci 1993), at
+-- this scene's 1100 kg/m^3 s = 0.45 x 1100 / 1000 = 0.495 of rho_0^w (Ding et al. eq. 8); the bread's liquid
+-- diffusivity 2e-9 m^2/s (eq. 22: K = D / (373.15 s)) and surface evaporation 1.2e-5, on this scene's S = 1500;
+-- its dried crust's heat capacity by the mixture rule (m c = m_s c_s: 0.55 x 1650 = 907.5 J/(kg K), whose slope
+-- (2700 - 907.5) x 1100 / 495 = 3983 J/(kg K) per kg of water is water's own c, as the rule asks) and conductivity
+-- (Zanoni et al. 1995's measured crust against crumb, 0.23 of 0.51 W/(m K): SPH's conduction takes their ratio on
+-- sph.heat_int, core/sim/solver/sph_heat.c). The bubbles share the parameters but hold no water (sph_water.c).
+if P.water then
+  local g, S, s0, D = require("hearth.dough_physical").goods.bread, 1500, 0.495, 2e-9
+  props.saturation, props.water_diffusivity, props.evaporation = s0, D / (373.15 * s0) * S, g.evaporation * S
+  props.specific_heat, props.dry_specific_heat = g.specific_heat, g.dry_specific_heat
+  props.conductivity, props.dry_conductivity = g.conductivity, g.dry_conductivity
+end
 local dough = h.material("maxwell_sph", props)
 props.bubble = P.vb0 -- V_b0 of eq. 3.50
 local bubble = h.material("maxwell_sph", props)
@@ -161,3 +179,29 @@ s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "fr
 positions("particles_end.csv") -- the loaf at until_t (the frames stop one interval short of it)
 print(("bread of the dead: relative volume %.3f, top ball %.4f m above the tray at t = %.2f s"):format(
   area() / A0, top_at(cx), s:stats().t))
+-- the centre (particles within a fifth of the body's radius of the particles' centroid) against the outer surface
+-- (the boundary flag, where the oven's heat enters, sph_outer.c): temperature, browning and saturation, the dough's
+-- (a bubble is gas: no browning, no water, NaN)
+do
+  local fields = { "x", "temperature", "browning", "boundary" }
+  if P.water then fields[#fields + 1] = "saturation" end
+  local r = s:particles { fields = fields }
+  local cxm, cym = 0, 0
+  for i = 1, r.n do cxm, cym = cxm + r.x[3 * i - 2] / r.n, cym + r.x[3 * i - 1] / r.n end
+  local acc = { centre = { 0, 0, 0, 0, 0 }, outer = { 0, 0, 0, 0, 0 } }
+  for i = 1, r.n do
+    local d = math.sqrt((r.x[3 * i - 2] - cxm) ^ 2 + (r.x[3 * i - 1] - cym) ^ 2)
+    local a = r.boundary[i] > 0 and acc.outer or d < 0.2 * R and acc.centre or nil
+    if a then
+      a[1], a[2] = a[1] + 1, a[2] + r.temperature[i]
+      local b = r.browning[i]
+      if b == b then a[3], a[4], a[5] = a[3] + 1, a[4] + b, a[5] + (P.water and r.saturation[i] or 0 / 0) end
+    end
+  end
+  for _, k in ipairs { "centre", "outer" } do
+    local a = acc[k]
+    print(("bread of the dead at t = %.2f s (water %s): %s %d particles (%d dough), %.1f degC, the dough's browning %.4f "
+      .. "and saturation %.4f"):format(s:stats().t, tostring(P.water), k, a[1], a[3], a[2] / a[1], a[4] / a[3],
+      a[5] / a[3]))
+  end
+end
