@@ -155,10 +155,17 @@ end
 local knuckle_x = on_body(math.pi / 2 + 1.25, kn)[1]
 -- particle positions (x, y in m), temperatures and the outer-surface flag, for measures that do not go
 -- through the density field (tests/sph_dead_measure.py's pieces and inner gaps; bread_roll.lua writes its own)
+-- (and the browning and saturation: NaN for a bubble, which is gas, and the saturation for every particle with the
+-- water off; tests/sph_crumb_measure.py)
 local function positions(path)
-  local r = s:particles { fields = { "x", "temperature", "boundary" } }
-  local x, T, b, rows = r.x, r.temperature, r.boundary, { "x,y,T,outer" }
-  for i = 1, #T do rows[#rows + 1] = ("%.6g,%.6g,%.2f,%d"):format(x[3 * i - 2], x[3 * i - 1], T[i], b[i]) end
+  local fields = { "x", "temperature", "boundary", "browning" }
+  if P.water then fields[#fields + 1] = "saturation" end
+  local r = s:particles { fields = fields }
+  local x, T, b, rows = r.x, r.temperature, r.boundary, { "x,y,T,outer,browning,saturation" }
+  for i = 1, #T do
+    rows[#rows + 1] = ("%.6g,%.6g,%.2f,%d,%.4g,%.4g"):format(x[3 * i - 2], x[3 * i - 1], T[i], b[i], r.browning[i],
+      P.water and r.saturation[i] or 0 / 0)
+  end
   h.write(path, table.concat(rows, "\n") .. "\n")
 end
 s:step(1) -- the density slice needs one SPH step (before it the probe has no SPH density)
