@@ -1,7 +1,7 @@
 -- Angel food cake baked, then left in its pan to collapse, with the SPH solver
 -- (Rodriguez-Arenas 2011 Fig. 4.11).
 --   hearth run scripts/scenes/sph/angel_food_cake.lua [--set bake=1.5 --set cool_to=25 --set bubble_share=0.4]
---     [--set xsph_cool=0.05 --set xsph_hot=0.3 --set water_activity=0.94]
+--     [--set xsph_cool=0.05 --set xsph_hot=0.3 --set water_activity=0.94 --set water=false]
 -- A 2D section through a tube pan: batter on both sides of the central tube,
 -- between the pan's walls. A share of its particles are bubble particles
 -- (eq. 3.48-3.50; whisked egg white holds many). In the oven (oven, degC)
@@ -32,6 +32,12 @@
 -- h.curve), gives way. The thesis does the
 -- same by hand (§4.5: rho_f raised, mu_e and lambda lowered after baking);
 -- turning the pan over is what a baker does to stop it, not modelled.
+-- Measured with the batter's water (the default since #18 helper sphcrumb, WATER below; docs/validation.md "The
+-- angel food cake's crumb holds its water"): relative volume at its highest in the oven and at t = 3.5 s 1.694 and
+-- 1.548 at dx 3 mm, 1.743 and 1.593 at 2 mm; as the bake ends the crumb band is 102.9 degC (101.2 at 2 mm), browned
+-- 0.0074 (0.0068) and holds 0.74 (0.71) of its water, under a top band at 142 degC (141) browned 0.29 (0.34) and an
+-- outer surface browned 0.34 (0.38) (claim_sph_angel_cake_crumb_pale[_fine]). The rest of this note was measured
+-- without the water (--set water=false, the same bits as before it).
 -- Measured (2D, #18 helper angelsteam, docs/validation.md "The angel food cake
 -- rises on its steam"): relative volume (density slice) at its highest in the oven
 -- and at t = 3.5 s: 1.692 and 1.526 at dx 3 mm, 1.743 and 1.604 at 2 mm (at 3 mm the
@@ -44,9 +50,10 @@
 -- cake fell below its batter. Dry (water_activity = 0): 1.205 and 0.993 at 3 mm,
 -- 1.193 and 0.961 at 2 mm. The crumb stays the coolest band while it bakes
 -- (bands.csv at 0.5 s: 106 degC against the top's 137 and the bottom's 123 at
--- 3 mm, 111 / 139 / 130 at 2 mm; dry 114 / 126 / 125, 116 / 128 / 126). No
--- water here, so no boiling plateau holds the crumb near 100 degC: the whole
--- cake passes 150 degC by 1 s and browns. History of the dry cake: eq. 3.51
+-- 3 mm, 111 / 139 / 130 at 2 mm; dry 114 / 126 / 125, 116 / 128 / 126; with the
+-- batter's water 95.0 / 102.0 / 101.3 and 94.9 / 102.6 / 100.5). Without water
+-- no boiling plateau holds the crumb near 100 degC: the whole cake passes 150
+-- degC by 1 s and browns (the crumb band 0.54 as the bake ends, at 166 degC). History of the dry cake: eq. 3.51
 -- pushing for as long as a bubble heated (before sph.c's bubble_expands)
 -- gave 2.33 and 1.87; with the oven's heat at the colour field's surface
 -- particles (before sph_outer.c) 2.25 and 2.00; with the old asymmetric seed
@@ -59,7 +66,8 @@
 -- the mean temperature, and the mean temperatures of the particles left and
 -- right of the tube's axis and their difference), bands.csv (the mean
 -- temperatures of the top, crumb and bottom bands away from the pan's walls,
--- sph_cake_crumb_coolest), particles_raw.csv, particles_baked.csv and
+-- sph_cake_crumb_coolest, their batter's browning, the crumb band's saturation
+-- and the outer surface's browning and saturation), particles_raw.csv, particles_baked.csv and
 -- particles_end.csv (the particles after the first step, as the bake ends and
 -- at until_t: tests/sph_cake_rise.py) and browning and
 -- temperature frames (the browning index of Zanoni et al. 1995 from

@@ -1,6 +1,6 @@
 -- Bread of the dead (pan de muerto) rising with the SPH solver (Rodriguez-Arenas
 -- 2011 Fig. 4.12-4.13).
---   hearth run scripts/scenes/sph/bread_of_the_dead.lua [--set mu_e=2000 --set oven=180 --until 1.2]
+--   hearth run scripts/scenes/sph/bread_of_the_dead.lua [--set mu_e=2000 --set oven=180 --until 1.2 --set water=false]
 -- A 2D section of the loaf: a round mass on a hot tray with bone-like dough
 -- pieces laid over it (a capsule down each flank with a knuckle disc at each
 -- end) and a ball on top in the centre. The body holds bubble particles
@@ -12,6 +12,13 @@
 -- XSPH (eq. 3.34, 0.6 raw to 0.9 baked by eq. 4.4, the thesis's own
 -- stiffening knob) and Monaghan's artificial stress (sph.artificial_stress,
 -- 0.3) against the tensile instability of the stretched dough.
+-- Measured with the dough's water (the default since #18 helper sphcrumb, WATER below; docs/validation.md "The
+-- angel food cake's crumb holds its water", its bread of the dead part): at 1.2 s relative volume 1.041 (1.062 at
+-- dx 1.5 mm), ball top 56.5 mm, one piece with no gap inside; its centre 94.9 degC (94.7), unbrowned, with all its
+-- water, under an outer surface at 102.1 degC (104.2) browned 0.020 (0.028): a pale crust
+-- (claim_sph_bread_of_the_dead_crumb_pale[_fine]). Without the water (--set water=false, the same bits as before
+-- it) the centre reads 118.8 degC, browned 0.044, the outer surface 144.7 degC, 0.22. The rest of this note was
+-- measured without the water.
 -- Measured (2D default, to t = 1.2 s; tests/sph_dead_measure.py reads the
 -- particles_*.csv it writes): relative volume 1.067, ball top 57.5 mm above
 -- the tray, one piece with no gap inside (claim_sph_bread_of_the_dead_one_piece),
@@ -50,8 +57,8 @@
 -- Writes volume.csv: relative volume (from a density slice), the height of
 -- the top ball and of a bone knuckle above the tray, over time; and
 -- particles_NNNN.csv (the raw loaf, then every frame) and particles_end.csv
--- (at until_t): x, y (m), T (degC) and outer (1 where the oven's heat
--- enters, sph_outer.c) per particle.
+-- (at until_t): x, y (m), T (degC), outer (1 where the oven's heat
+-- enters, sph_outer.c), browning and saturation per particle.
 local h = require "hearth"
 -- mu_e, viscosity, lambda and vb0 (the bubble's V_b0, eq. 3.50) in maxwell_sph's ranges
 local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
