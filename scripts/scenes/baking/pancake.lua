@@ -30,7 +30,11 @@
 -- the flip, and 66% of the batter's water is left at 3.5 min (it boils off the pan faces). At 1.5 mm: 71.0 degC
 -- by the flip, 94.1 at the end (0.97 of its water), browning 0.166 / 0.000 (these with the old turn,
 -- --set turn=constant; with the smooth turn its middle climbs to 80.6 degC by 3.5 min at 2 mm, 90.2 at 1.5 mm, and
--- its second face browns 0.098 / 0.001, with the old turn 0.0001 / 0.083). The paper preset's pancake reads 167.9
+-- its second face browns 0.098 / 0.001, with the old turn 0.0001 / 0.083). Why 80.6-81.9 at 2 mm (helper
+-- pancakeheat, docs/validation.md "The pancake's middle at 2 mm"): strands of the raw side drip onto the pan while
+-- the sheet hangs, and at 2 mm one lies under the centre line; the set sheet lands on it and stays 1.3 dx above the
+-- pan there (the grid couples the two a cell apart: tests/contact/pebble.lua), so the middle heats through that one
+-- particle. The paper preset's pancake reads 167.9
 -- degC at its pan face and top alike at 2 s (156.8 with the smooth turn). The flipped sheet's raw side drops off
 -- the set layer as loose particles while it hangs, so its second face meets the pan unevenly. Not the time
 -- mapping's runny batter (its viscosity is
