@@ -41,6 +41,10 @@
  *   temperatures moved, a wet particle past the boiling point boils its
  *   excess heat away through water.c's water_boil, MPM's own.
  *
+ * The pairs' sum is made in sph_heat_rates's pair walk, which has the
+ * pair's r and kernel value at hand (sph_water_prepare fills what it reads
+ * first; sph_water_pair, sph_state.h, is the term either walk sums), and
+ * here only for a step that walk did not make (no temperature field).
  * Forward Euler, like SPH's heat. What leaves (evaporation, boiling, less
  * what the saturation floor hands back) goes into s->water.step_removed and
  * counts once the step stands (water_step_stands, scene.c), as in MPM, so
