@@ -148,8 +148,9 @@ local props = {
 -- before. Boiling at 100 degC, as the roll: the batter's 2.62 mol/kg of sucrose would raise it by 0.512 x 2.62 =
 -- 1.3 K (ebullioscopy, ideal), not taken.
 if P.water then
-  local S, s0, D = 1600, 0.256, 2e-9
-  props.saturation, props.water_diffusivity, props.evaporation = s0, D / (373.15 * s0) * S, 1.2e-5 * S
+  local g, S, s0 = require("hearth.dough_physical").goods.bread, 1600, 0.256 -- the roll's bread: its D and evaporation
+  props.saturation, props.water_diffusivity = s0, g.water_diffusivity_m2s / (373.15 * s0) * S
+  props.evaporation = g.evaporation * S
   props.specific_heat, props.dry_specific_heat = 2800, 0.573 * 1641
   props.conductivity, props.dry_conductivity = 0.222, 0.071
 end

@@ -97,8 +97,9 @@ local props = { density = 1100, bulk = 2e4, lambda = P.lambda, viscosity = P.vis
 -- (Zanoni et al. 1995's measured crust against crumb, 0.23 of 0.51 W/(m K): SPH's conduction takes their ratio on
 -- sph.heat_int, core/sim/solver/sph_heat.c). The bubbles share the parameters but hold no water (sph_water.c).
 if P.water then
-  local g, S, s0, D = require("hearth.dough_physical").goods.bread, 1500, 0.495, 2e-9
-  props.saturation, props.water_diffusivity, props.evaporation = s0, D / (373.15 * s0) * S, g.evaporation * S
+  local g, S, s0 = require("hearth.dough_physical").goods.bread, 1500, 0.495
+  props.saturation, props.water_diffusivity = s0, g.water_diffusivity_m2s / (373.15 * s0) * S
+  props.evaporation = g.evaporation * S
   props.specific_heat, props.dry_specific_heat = g.specific_heat, g.dry_specific_heat
   props.conductivity, props.dry_conductivity = g.conductivity, g.dry_conductivity
 end
