@@ -353,6 +353,7 @@ lua_State *hl_new_state(const hl_options *opt, hearth_error *err) {
     lua_atpanic(L, on_panic);
     lua_setwarnf(L, NULL, NULL);
     g_host_interrupted = opt->interrupted;
+    hearth_set_interrupt_check(hl_interrupted); /* a batch of steps (s:run's 64) ends at the next step's start */
     lua_sethook(L, interrupt_hook, LUA_MASKCOUNT, HOOK_COUNT);
     g_main = L;
     /* before any scene code: native code only by name from folders the scene cannot write */

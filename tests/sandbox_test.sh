@@ -296,7 +296,7 @@ sandbox_sigint_loop)
     ls -a "$out" | grep -q '\.tmp\.' && fail "temp files left after SIGINT: $(ls -a "$out")"
     ;;
 sandbox_sigterm_long_step)
-    # A signal that lands inside one long call into the core (a step of 2000 colliders against ~150 000 particles,
+    # A signal that lands inside one long call into the core (a step of 12 000 colliders against ~520 000 particles,
     # tens of seconds on one thread) cannot stop the scene at its next Lua instruction: within 4 s stderr says so
     # and how to quit at once, and the second SIGTERM quits at once with 143. Before, nothing was said until the
     # step ended (pull_twist with 30 000 grips: ~3 minutes of silence).
