@@ -66,6 +66,19 @@ int hearth_get_threads(void) {
 #endif
 }
 
+/* ---- interrupts ------------------------------------------------------ */
+
+/* The host's "stop now" (a signal it caught): a step call of many steps
+ * returns between two of them when it answers non-zero, with the scene whole
+ * at the last step's end; the host then reports its interrupt. Not over MPI
+ * ranks, whose step calls are collective: one rank leaving alone would leave
+ * the others waiting in an exchange (they stop at the call's end together). */
+static int (*g_interrupted)(void);
+
+void hearth_set_interrupt_check(int (*interrupted)(void)) { g_interrupted = interrupted; }
+
+static int stop_requested(void) { return g_interrupted && ranks_size() <= 1 && g_interrupted(); }
+
 /* ---- definition ------------------------------------------------------ */
 
 hearth_scene_def hearth_default_scene_def(void) {
@@ -705,6 +718,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
 static hearth_status step_loop(hearth_scene *s, int n, hearth_error *err) {
     if (s->guard == HEARTH_GUARD_STOPPED) s->guard = HEARTH_GUARD_OK; /* the caller chose to go on */
     for (int k = 0; k < n; k++) {
+        if (k > 0 && stop_requested()) break;
         const double dt = scene_stable_dt(s);
         if (!(dt > 0) || s->t + dt == s->t) return guard_no_step(s, dt, err);
         hearth_status st = one_step(s, dt, err);
@@ -748,6 +762,7 @@ hearth_status hearth_scene_advance(hearth_scene *s, double t_end, hearth_error *
 static hearth_status advance_loop(hearth_scene *s, double t_end, long max_steps, hearth_error *err) {
     if (s->guard == HEARTH_GUARD_STOPPED) s->guard = HEARTH_GUARD_OK;
     for (long k = 0; s->t < t_end && (max_steps < 0 || k < max_steps); k++) {
+        if (k > 0 && stop_requested()) break;
         double dt = scene_stable_dt(s);
         /* A stable step of 0 or NaN (an infinite or NaN wave speed, say) used
          * to end this loop quietly, and s:run called it again forever. */
