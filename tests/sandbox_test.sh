@@ -223,8 +223,15 @@ sandbox_core_memory)
     has_msg "this run may use 64 MiB = 67.1 MB of memory" "the ceiling named, as --memory 64M gave it and in MB"
     has_msg "--memory" "the flag named"
     grep -q "unreachable" out.txt && fail "the scene went on past the ceiling"
-    # the particles' estimate fits, but the box's grid tables already hold part of the ceiling
+    # the particles' estimate alone fits (60 MB), but the 10 m tall box's grid tables already hold 15 MB of the
+    # ceiling: refused up front, the held bytes named (before they were not counted, and the first step failed)
     run core_hog.lua --memory 64M --set blocks=48 --set tall=10
+    expect_rc 1 "blocks of particles past --memory 64M beside the grid tables"
+    has_msg "would need about" "the estimate"
+    has_msg "already held" "the bytes held besides the particles"
+    grep -q "unreachable" out.txt && fail "the scene went on past the ceiling"
+    # an estimate that fits beside the tables, and a first step whose sort and grid blocks do not
+    run core_hog.lua --memory 64M --set blocks=40 --set tall=10
     expect_rc 1 "a growth past --memory 64M after the up-front estimate passed"
     has_msg "out of memory" "the call that needed it"
     has_msg "reached its memory ceiling of 64 MiB = 67.1 MB" "the ceiling named"

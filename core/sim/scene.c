@@ -202,14 +202,23 @@ hearth_status scene_check_particle_budget(const hearth_scene *s, double more, co
     if (!(total <= (double)(INT_MAX / 2)))
         return err_set(err, HEARTH_ERR_PARAM, "%s: %.4g particles (%d already in the scene); at most %d", what, total,
                        s->ps.n, INT_MAX / 2);
-    char words[160], size[32];
-    const double need = total * scene_bytes_per_particle(s), limit = memory_limit(words, sizeof words);
+    char words[160], size[32], held[48];
+    /* what the library holds besides these particles counts against the same ceiling: a tall box's grid tables,
+     * other scenes of the same process (the repl's); what the present particles' scratch will take is in bpp */
+    const double bpp = scene_bytes_per_particle(s), other = fmax(0.0, (double)hearth_bytes_allocated() - s->ps.n * bpp);
+    const double need = total * bpp, limit = memory_limit(words, sizeof words);
     mem_size_words(size, sizeof size, need);
-    if (need > limit)
+    held[0] = 0;
+    if (other >= 1e6) { /* named where it matters */
+        char w[32];
+        mem_size_words(w, sizeof w, other);
+        snprintf(held, sizeof held, ", beside %s", w);
+    }
+    if (need + other > limit)
         return err_set(err, HEARTH_ERR_PARAM,
-                       "%s: %.4g particles would need about %s (%.0f bytes each); %s (use a larger dx, fewer "
+                       "%s: %.4g particles would need about %s (%.0f bytes each)%s%s; %s (use a larger dx, fewer "
                        "particles per cell or a smaller shape)",
-                       what, total, size, scene_bytes_per_particle(s), words);
+                       what, total, size, bpp, held, held[0] ? " already held (grid tables, other scenes)" : "", words);
     return HEARTH_OK;
 }
 
