@@ -303,10 +303,10 @@ sandbox_sigint_loop)
     ls -a "$out" | grep -q '\.tmp\.' && fail "temp files left after SIGINT: $(ls -a "$out")"
     ;;
 sandbox_sigterm_long_step)
-    # A signal that lands inside one long call into the core (a step of 12 000 colliders against ~520 000 particles,
-    # tens of seconds on one thread) cannot stop the scene at its next Lua instruction: within 4 s stderr says so
-    # and how to quit at once, and the second SIGTERM quits at once with 143. Before, nothing was said until the
-    # step ended (pull_twist with 30 000 grips: ~3 minutes of silence).
+    # A signal that lands inside one long call into the core (2000 cups around ~130 000 particles, each near every
+    # particle: one step of ~15 s on one thread) cannot stop the scene at its next Lua instruction: within 4 s stderr
+    # says so and how to quit at once, and the second SIGTERM quits at once with 143. Before, nothing was said until
+    # the call ended (pull_twist with 30 000 grips: ~3 minutes of silence, s:run's 64 steps of seconds each).
     rm -f out.txt err.txt
     "$hearth" run "$scenes/runaway.lua" --quiet --threads 1 --set kind=long_step >out.txt 2>err.txt &
     bg_pid=$!
