@@ -270,12 +270,29 @@ static int (*g_host_interrupted)(void);
 static lua_State *volatile g_main; /* the state of hl_new_state, for the signal handler */
 static void interrupt_hook(lua_State *L, lua_Debug *ar);
 
+/* The scene stops at its next Lua instruction, but not inside a call into the
+ * core: one step of a big scene (a few thousand colliders against a million
+ * particles) can take minutes, and a user who sent SIGTERM saw nothing happen.
+ * If the process is still here STOP_NOTICE_S seconds after the first signal,
+ * say why and how to quit at once (write and alarm are async-signal-safe). */
+enum { STOP_NOTICE_S = 2 };
+static void on_stop_notice(int sig) {
+    (void)sig;
+    static const char msg_int[] = "hearth: stopping after SIGINT once the core returns from the call it is in "
+                                  "(a long step); SIGINT again quits at once\n";
+    static const char msg_term[] = "hearth: stopping after SIGTERM once the core returns from the call it is in "
+                                   "(a long step); SIGTERM again quits at once\n";
+    if (g_signal == SIGTERM) (void)!write(STDERR_FILENO, msg_term, sizeof msg_term - 1);
+    else (void)!write(STDERR_FILENO, msg_int, sizeof msg_int - 1);
+}
+
 static void on_signal(int sig) {
     if (g_signal) _exit(128 + sig); /* the second Ctrl-C: the user means it */
     g_signal = sig;
     /* lua_sethook is safe in a signal handler (the manual says so): the main
      * thread now stops at its next instruction, not its next count */
     if (g_main) lua_sethook(g_main, interrupt_hook, LUA_MASKCALL | LUA_MASKRET | LUA_MASKCOUNT, 1);
+    alarm(STOP_NOTICE_S);
 }
 
 void hl_interrupt_install(void) {
@@ -285,6 +302,9 @@ void hl_interrupt_install(void) {
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
+    sa.sa_handler = on_stop_notice;
+    sa.sa_flags = SA_RESTART; /* the notice must not fail a write the stop is finishing (EINTR) */
+    sigaction(SIGALRM, &sa, NULL);
 }
 
 int hl_interrupted(void) {
@@ -333,6 +353,7 @@ lua_State *hl_new_state(const hl_options *opt, hearth_error *err) {
     lua_atpanic(L, on_panic);
     lua_setwarnf(L, NULL, NULL);
     g_host_interrupted = opt->interrupted;
+    hearth_set_interrupt_check(hl_interrupted); /* a batch of steps (s:run's 64) ends at the next step's start */
     lua_sethook(L, interrupt_hook, LUA_MASKCOUNT, HOOK_COUNT);
     g_main = L;
     /* before any scene code: native code only by name from folders the scene cannot write */

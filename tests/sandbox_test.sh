@@ -223,8 +223,15 @@ sandbox_core_memory)
     has_msg "this run may use 64 MiB = 67.1 MB of memory" "the ceiling named, as --memory 64M gave it and in MB"
     has_msg "--memory" "the flag named"
     grep -q "unreachable" out.txt && fail "the scene went on past the ceiling"
-    # the particles' estimate fits, but the box's grid tables already hold part of the ceiling
+    # the particles' estimate alone fits (60 MB), but the 10 m tall box's grid tables already hold 15 MB of the
+    # ceiling: refused up front, the held bytes named (before they were not counted, and the first step failed)
     run core_hog.lua --memory 64M --set blocks=48 --set tall=10
+    expect_rc 1 "blocks of particles past --memory 64M beside the grid tables"
+    has_msg "would need about" "the estimate"
+    has_msg "already held" "the bytes held besides the particles"
+    grep -q "unreachable" out.txt && fail "the scene went on past the ceiling"
+    # an estimate that fits beside the tables, and a first step whose sort and grid blocks do not
+    run core_hog.lua --memory 64M --set blocks=40 --set tall=10
     expect_rc 1 "a growth past --memory 64M after the up-front estimate passed"
     has_msg "out of memory" "the call that needed it"
     has_msg "reached its memory ceiling of 64 MiB = 67.1 MB" "the ceiling named"
@@ -294,6 +301,32 @@ sandbox_sigint_loop)
     echo "after SIGINT in s:run: $summary"
     ls "$out"/frame_*.vtu >/dev/null 2>&1 || fail "no frame written before the interrupt"
     ls -a "$out" | grep -q '\.tmp\.' && fail "temp files left after SIGINT: $(ls -a "$out")"
+    ;;
+sandbox_sigterm_long_step)
+    # A signal that lands inside one long call into the core (2000 cups around ~130 000 particles, each near every
+    # particle: one step of ~15 s on one thread) cannot stop the scene at its next Lua instruction: within 4 s stderr
+    # says so and how to quit at once, and the second SIGTERM quits at once with 143. Before, nothing was said until
+    # the call ended (pull_twist with 30 000 grips: ~3 minutes of silence, s:run's 64 steps of seconds each).
+    rm -f out.txt err.txt
+    "$hearth" run "$scenes/runaway.lua" --quiet --threads 1 --set kind=long_step >out.txt 2>err.txt &
+    bg_pid=$!
+    for _ in $(seq 400); do grep -q stepping out.txt && break; sleep 0.05; done
+    grep -q stepping out.txt || fail "long_step: the scene did not reach its step: $(cat err.txt)"
+    sleep 0.5
+    kill -TERM "$bg_pid"
+    for _ in $(seq 80); do grep -q "SIGTERM again quits at once" err.txt && break; sleep 0.05; done
+    kill -0 "$bg_pid" 2>/dev/null || fail "long_step: the step ended within 4 s, so this case tests nothing: make it longer"
+    has err.txt "stopping after SIGTERM once the core returns" "long_step: the notice"
+    t0=$(date +%s%N)
+    kill -TERM "$bg_pid"
+    for _ in $(seq 40); do kill -0 "$bg_pid" 2>/dev/null || break; sleep 0.025; done
+    t1=$(date +%s%N)
+    kill -0 "$bg_pid" 2>/dev/null && fail "long_step: still running 1 s after the second SIGTERM"
+    wait "$bg_pid"
+    rc=$?
+    bg_pid=
+    echo "long_step: the notice after the first SIGTERM; exit $rc $(((t1 - t0) / 1000000)) ms after the second"
+    expect_rc 143 "long_step after the second SIGTERM"
     ;;
 *) fail "unknown case $case_name" ;;
 esac

@@ -170,6 +170,47 @@ TEST(memory_limit_refuses_seed_and_growth) {
     hearth_scene_destroy(s);
 }
 
+/* A host's interrupt ends a call of many steps between two of them: asked
+ * before each step after the first, the third "yes" ends a 50-step call after
+ * 3 steps, in hearth_scene_step and hearth_scene_advance_steps alike (s:run
+ * asks for 64 at a time: a step of seconds made an interrupt wait minutes);
+ * without an interrupt every step runs. */
+static int g_asked, g_yes_at;
+static int interrupted_at(void) { return ++g_asked >= g_yes_at; }
+
+TEST(interrupt_check_stops_between_steps) {
+    hearth_scene *s = fx_scene(2, 0.05, 0.0, 1.0);
+    CHECK(s);
+    if (!s) return;
+    const int m = fx_elastic(s, 1e5, 0.3, 1000);
+    const double c[3] = {0.5, 0.5, 0}, h[3] = {0.2, 0.2, 0};
+    hearth_shape *b = hearth_shape_box(c, h);
+    hearth_error err;
+    CHECK(hearth_scene_seed_shape(s, m, b, 2, 0, NULL, &err) > 0);
+    hearth_stats st;
+    hearth_set_interrupt_check(interrupted_at);
+    g_asked = 0, g_yes_at = 3;
+    CHECK(hearth_scene_step(s, 50, &err) == HEARTH_OK);
+    hearth_scene_stats(s, &st);
+    printf("  hearth_scene_step(50), interrupted at the 3rd question: %ld steps, %d questions\n", (long)st.step, g_asked);
+    CHECK(st.step == 3);
+    g_asked = 0, g_yes_at = 3;
+    CHECK(hearth_scene_advance_steps(s, 1e6, 50, &err) == HEARTH_OK);
+    hearth_scene_stats(s, &st);
+    printf("  hearth_scene_advance_steps(50), likewise: %ld steps in all\n", (long)st.step);
+    CHECK(st.step == 6);
+    g_asked = 0, g_yes_at = 1 << 30;
+    CHECK(hearth_scene_step(s, 50, &err) == HEARTH_OK);
+    hearth_scene_stats(s, &st);
+    CHECK(st.step == 56);
+    hearth_set_interrupt_check(NULL);
+    CHECK(hearth_scene_step(s, 4, &err) == HEARTH_OK);
+    hearth_scene_stats(s, &st);
+    CHECK(st.step == 60);
+    hearth_shape_free(b);
+    hearth_scene_destroy(s);
+}
+
 /* A NaN centre or radius is named as such, not reported as out of memory. */
 TEST(shape_nan_named) {
     const double nanc[3] = {NAN, 0, 0}, c[3] = {0, 0, 0}, axis[3] = {0, 0, 0}, up[3] = {0, 1, 0};
@@ -195,4 +236,5 @@ TEST(shape_nan_named) {
 }
 
 TEST_MAIN(T(covering_collider_2d), T(covering_collider_3d), T(scene_dx_refused), T(scene_box_refused),
-          T(scene_particles_memory_refused), T(memory_limit_refuses_seed_and_growth), T(shape_nan_named))
+          T(scene_particles_memory_refused), T(memory_limit_refuses_seed_and_growth), T(interrupt_check_stops_between_steps),
+          T(shape_nan_named))

@@ -66,6 +66,19 @@ int hearth_get_threads(void) {
 #endif
 }
 
+/* ---- interrupts ------------------------------------------------------ */
+
+/* The host's "stop now" (a signal it caught): a step call of many steps
+ * returns between two of them when it answers non-zero, with the scene whole
+ * at the last step's end; the host then reports its interrupt. Not over MPI
+ * ranks, whose step calls are collective: one rank leaving alone would leave
+ * the others waiting in an exchange (they stop at the call's end together). */
+static int (*g_interrupted)(void);
+
+void hearth_set_interrupt_check(int (*interrupted)(void)) { g_interrupted = interrupted; }
+
+static int stop_requested(void) { return g_interrupted && ranks_size() <= 1 && g_interrupted(); }
+
 /* ---- definition ------------------------------------------------------ */
 
 hearth_scene_def hearth_default_scene_def(void) {
@@ -189,14 +202,23 @@ hearth_status scene_check_particle_budget(const hearth_scene *s, double more, co
     if (!(total <= (double)(INT_MAX / 2)))
         return err_set(err, HEARTH_ERR_PARAM, "%s: %.4g particles (%d already in the scene); at most %d", what, total,
                        s->ps.n, INT_MAX / 2);
-    char words[160], size[32];
-    const double need = total * scene_bytes_per_particle(s), limit = memory_limit(words, sizeof words);
+    char words[160], size[32], held[48];
+    /* what the library holds besides these particles counts against the same ceiling: a tall box's grid tables,
+     * other scenes of the same process (the repl's); what the present particles' scratch will take is in bpp */
+    const double bpp = scene_bytes_per_particle(s), other = fmax(0.0, (double)hearth_bytes_allocated() - s->ps.n * bpp);
+    const double need = total * bpp, limit = memory_limit(words, sizeof words);
     mem_size_words(size, sizeof size, need);
-    if (need > limit)
+    held[0] = 0;
+    if (other >= 1e6) { /* named where it matters */
+        char w[32];
+        mem_size_words(w, sizeof w, other);
+        snprintf(held, sizeof held, ", beside %s", w);
+    }
+    if (need + other > limit)
         return err_set(err, HEARTH_ERR_PARAM,
-                       "%s: %.4g particles would need about %s (%.0f bytes each); %s (use a larger dx, fewer "
+                       "%s: %.4g particles would need about %s (%.0f bytes each)%s%s; %s (use a larger dx, fewer "
                        "particles per cell or a smaller shape)",
-                       what, total, size, scene_bytes_per_particle(s), words);
+                       what, total, size, bpp, held, held[0] ? " already held (grid tables, other scenes)" : "", words);
     return HEARTH_OK;
 }
 
@@ -705,6 +727,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
 static hearth_status step_loop(hearth_scene *s, int n, hearth_error *err) {
     if (s->guard == HEARTH_GUARD_STOPPED) s->guard = HEARTH_GUARD_OK; /* the caller chose to go on */
     for (int k = 0; k < n; k++) {
+        if (k > 0 && stop_requested()) break;
         const double dt = scene_stable_dt(s);
         if (!(dt > 0) || s->t + dt == s->t) return guard_no_step(s, dt, err);
         hearth_status st = one_step(s, dt, err);
@@ -748,6 +771,7 @@ hearth_status hearth_scene_advance(hearth_scene *s, double t_end, hearth_error *
 static hearth_status advance_loop(hearth_scene *s, double t_end, long max_steps, hearth_error *err) {
     if (s->guard == HEARTH_GUARD_STOPPED) s->guard = HEARTH_GUARD_OK;
     for (long k = 0; s->t < t_end && (max_steps < 0 || k < max_steps); k++) {
+        if (k > 0 && stop_requested()) break;
         double dt = scene_stable_dt(s);
         /* A stable step of 0 or NaN (an infinite or NaN wave speed, say) used
          * to end this loop quietly, and s:run called it again forever. */

@@ -1,8 +1,9 @@
 -- sandbox_core_memory: adds block after block of particles, as a scene with a
 -- list parameter of 5000 doughs would: the core's memory grows, not Lua's.
 -- --set blocks=48 --set tall=10: the particles' estimate (60 MB) fits under a
--- 64M ceiling, but the 10 m tall box's grid tables (~14 MB) hold part of it,
--- so the first step's growth is refused.
+-- 64M ceiling, but the 10 m tall box's grid tables (~15 MB) hold part of it:
+-- refused up front. --set blocks=40 --set tall=10: the estimate fits beside
+-- the tables, and the first step's sort and grid blocks are refused.
 local h = require "hearth"
 local P = h.params { blocks = h.number { 100, min = 1, max = 100, integer = true, what = "blocks of 8000 particles" },
   tall = h.number { 0.1, min = 0.1, max = 10, unit = "m", what = "the box's height" } }

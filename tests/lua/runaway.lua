@@ -1,5 +1,5 @@
 -- sandbox_sigint_loop: a scene that never ends by itself, in several ways
--- (--set kind=loop|pcall_loop|recursion_loop|run); prints "started" first.
+-- (--set kind=loop|pcall_loop|recursion_loop|run|long_step); prints "started" first.
 local h = require "hearth"
 local P = h.params { kind = "loop" }
 io.stdout:setvbuf("no")
@@ -19,6 +19,14 @@ elseif P.kind == "rep_loop" then
 elseif P.kind == "coroutine_loop" then
   local co = coroutine.wrap(function() while true do end end)
   co()
+elseif P.kind == "long_step" then
+  -- one step that takes many seconds inside the core: 2000 copies of one cup around a block of ~130 000 particles,
+  -- each near every particle and node (a collider's distance found twice per particle in G2P and once per node)
+  local s = h.scene { dim = 2, dx = 1 / 256, box = { { 0, 0 }, { 1, 1 } } }
+  s:add { shape = h.box({ 0.05, 0.05 }, { 0.95, 0.6 }), material = h.material("elastic", { E = 1e4, nu = 0.3, density = 1000 }) }
+  for _ = 1, 2000 do s:collider { shape = h.container({ 0.5, 0.02 }, { 0, 1 }, 0.46, 0.9, 0.01, 0.01) } end
+  print("stepping")
+  s:run { until_t = 1e6 }
 elseif P.kind == "run" then
   local s = h.scene { dim = 2, dx = 1 / 32, box = { { 0, 0 }, { 1, 1 } } }
   s:add { shape = h.box({ 0.3, 0.3 }, { 0.7, 0.6 }), material = h.material("elastic", { E = 1e4, nu = 0.3, density = 1000 }) }

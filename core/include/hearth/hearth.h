@@ -65,6 +65,12 @@ size_t hearth_machine_memory(void);
 /// 1 when an allocation was refused for the ceiling since it was last set.
 int hearth_memory_limit_refused(void);
 
+/// A host's interrupt (a signal it caught): a step call of many steps (hearth_scene_step,
+/// hearth_scene_advance_steps) returns early, between two steps, when `interrupted` answers
+/// non-zero; the scene is whole at the last step's end and the host reports the interrupt.
+/// NULL (the default) never stops early. Not over MPI ranks (their step calls are collective).
+void hearth_set_interrupt_check(int (*interrupted)(void));
+
 /* ---- threads -------------------------------------------------------- */
 
 /// Number of OpenMP threads the library uses (0 = the OpenMP default). Results

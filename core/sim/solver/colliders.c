@@ -230,6 +230,19 @@ void collider_update_bounds_tight(collider *c, double margin) {
     collider_bound_prism(c, margin);
 }
 
+int collider_list_near_box(const collider *cols, int ncol, const double lo[3], const double hi[3], int *near) {
+    int n = 0;
+    for (int c = 0; c < ncol; c++) {
+        const collider *k = &cols[c];
+        if (k->bhi[0] < lo[0] || k->blo[0] > hi[0] || k->bhi[1] < lo[1] || k->blo[1] > hi[1] || k->bhi[2] < lo[2] ||
+            k->blo[2] > hi[2])
+            continue;
+        if (n == COLLIDER_NEAR_CAP) return -1;
+        near[n++] = c;
+    }
+    return n;
+}
+
 int collider_carry_particle(const collider *c, int dim, double dt, double x[3], double v[3], double C[9]) {
     if (c->mode != HEARTH_GRIP || collider_sdf(c, x, NULL) >= 0) return 0;
     /* the rigid motion of the coming step about the current pivot, exact as in collider_advance */

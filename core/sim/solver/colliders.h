@@ -63,6 +63,16 @@ static inline int collider_near(const collider *c, const double x[3]) {
     return x[0] >= c->blo[0] && x[0] <= c->bhi[0] && x[1] >= c->blo[1] && x[1] <= c->bhi[1] && x[2] >= c->blo[2] &&
            x[2] <= c->bhi[2];
 }
+/// The colliders whose bounds meet the box [lo, hi], in ascending order, into near (room for
+/// COLLIDER_NEAR_CAP): their count, or -1 when more meet it (the caller then walks them all).
+/// For a point inside the box, collider_near is true only for colliders on the list, so a loop
+/// over the list does what a loop over every collider does, in the same order: a grid block's
+/// nodes and particles test a handful of bounds, not a scene's thousands (pull_twist's grips).
+enum { COLLIDER_NEAR_CAP = 32 };
+int collider_list_near_box(const collider *cols, int ncol, const double lo[3], const double hi[3], int *near);
+static inline int point_in_box(const double lo[3], const double hi[3], const double x[3]) {
+    return x[0] >= lo[0] && x[0] <= hi[0] && x[1] >= lo[1] && x[1] <= hi[1] && x[2] >= lo[2] && x[2] <= hi[2];
+}
 /// Push a particle at x that is inside the collider back to its surface and
 /// apply the contact rule to its velocity v. dim 2 keeps z untouched. Returns 1 if it was inside.
 int collider_project_particle(const collider *c, int dim, double x[3], double v[3]);

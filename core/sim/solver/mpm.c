@@ -432,6 +432,17 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
     /* a slip or separate face holds a node only where the body touches it (mpm_touch.c): the block's masks,
      * each made when a node first asks */
     mpm_touch_cache touch = {.done = 0};
+    /* the colliders near this block's nodes (all of them when more than COLLIDER_NEAR_CAP are) */
+    int near[COLLIDER_NEAR_CAP], nnear = -1;
+    if (s->ncol > 0) {
+        double blo[3] = {0, 0, 0}, bhi[3] = {0, 0, 0};
+        for (int d = 0; d < D; d++) {
+            blo[d] = g->lo[d] + bc[d] * GRID_B * g->dx;
+            bhi[d] = blo[d] + (GRID_B - 1) * g->dx;
+        }
+        nnear = collider_list_near_box(s->cols, s->ncol, blo, bhi, near);
+    }
+    const int nwalk = nnear < 0 ? s->ncol : nnear;
     for (int l = 0; l < NPB; l++) {
         const double m = node[l];
         if (m <= 0.0) {
@@ -465,7 +476,8 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
                 continue;
             contact_apply(def->wall, def->wall_friction, n, zero, v);
         }
-        for (int c = 0; c < s->ncol; c++) {
+        for (int q = 0; q < nwalk; q++) {
+            const int c = nnear < 0 ? q : near[q];
             double n[3];
             /* Every collider, a grip too, holds the nodes inside it and on its
              * face (COLLIDER_ROW_TOL), none outside: a grip clamps at its face.

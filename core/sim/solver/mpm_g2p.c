@@ -84,6 +84,17 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         hi[d] = g->lo[d] + (g->nn[d] - 2) * dx;
         if (s->def.periodic[d]) lo[d] = -INFINITY, hi[d] = INFINITY; /* wrapped after G2P instead */
     }
+    /* the colliders near this block (COLLIDER_NEAR_CAP at most, else all): a box two cells past the block's
+     * nodes; a particle outside it (one that moved far) walks them all */
+    int near[COLLIDER_NEAR_CAP], nnear = -1;
+    double nlo[3] = {0, 0, 0}, nhi[3] = {0, 0, 0};
+    if (s->ncol > 0) {
+        for (int d = 0; d < D; d++) {
+            nlo[d] = g->lo[d] + (org[d] - 2) * dx;
+            nhi[d] = g->lo[d] + (org[d] + GRID_B + 2) * dx;
+        }
+        nnear = collider_list_near_box(s->cols, s->ncol, nlo, nhi, near);
+    }
     double ke = 0, mass = 0, vmax = -1, move2 = 0, selfmax = 0;
     int mover = -1;
     double w_removed = 0, w_dmax = 0, w_emax = 0, w_lmax = 0;
@@ -221,9 +232,12 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
          * material slid off unless the nodes a cell outside were held too: a
          * clamp a cell in from the face (`grip_cantilever_clamped_at_face`). */
         int carried = 0;
-        for (int c = 0; c < s->ncol && !carried; c++)
+        int listed = nnear >= 0 && point_in_box(nlo, nhi, x);
+        for (int q = 0, nq = listed ? nnear : s->ncol; q < nq && !carried; q++) {
+            const int c = listed ? near[q] : q;
             if (s->cols[c].mode == HEARTH_GRIP && collider_near(&s->cols[c], x))
                 carried = collider_carry_particle(&s->cols[c], D, dt, x, v, NULL);
+        }
         /* The guard judges motion, not only the end speed: a wall or collider
          * below may zero v after the particle has already jumped cells. The
          * grid's velocity over dt is the motion asked for; a carried particle
@@ -243,8 +257,16 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         /* Grid nodes past the middle of a thin wall see the far face's normal and
          * let material through; a particle that ends inside a collider is put
          * back on its surface (the usual particle-level safeguard). */
-        for (int c = 0; c < s->ncol && !carried; c++)
-            if (collider_near(&s->cols[c], x)) collider_project_particle(&s->cols[c], D, x, v);
+        listed = nnear >= 0 && point_in_box(nlo, nhi, x);
+        for (int q = 0, nq = listed ? nnear : s->ncol; q < nq && !carried; q++) {
+            const int c = listed ? near[q] : q;
+            if (!collider_near(&s->cols[c], x) || !collider_project_particle(&s->cols[c], D, x, v)) continue;
+            if (listed && !point_in_box(nlo, nhi, x)) { /* pushed out of the box: the colliders after c, all of them */
+                for (int c2 = c + 1; c2 < s->ncol; c2++)
+                    if (collider_near(&s->cols[c2], x)) collider_project_particle(&s->cols[c2], D, x, v);
+                break;
+            }
+        }
         /* The sort's clamp and key, here where x is in registers: a collider
          * may have pushed x off the grid, and NaN goes to the low edge, as in
          * clamp_to_grid (lo and hi are its bounds off a periodic axis, and a
