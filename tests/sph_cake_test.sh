@@ -40,6 +40,27 @@
 #       (d) no bubble runs away: at the bake's end no bubble's own volume J
 #           exceeds 1.2x its gas's (eq. 2.42-2.43, 3.50, written in the
 #           measure, not read from the solver).
+#   claim_sph_angel_cake_crumb_pale[_fine]  the same run (shared with the rise
+#       claim when one meson process runs both: tests/run_share.sh), its
+#       bands.csv (the batter's mean browning and saturation in the top, crumb
+#       and bottom bands, and on the outer surface where the oven's heat
+#       enters): an angel food cake's crumb is pale and holds its water near
+#       the boiling point while the crust browns (#18: "only the surface
+#       browns; the crumb stays pale", the crumb "plateaus near 100 degC
+#       while it holds water"). The scene's batter carries its recipe's water
+#       (its WATER note; helper sphcrumb):
+#       (a) as the bake ends (the row at t = 1.5 s, the scene's bake) the
+#           crumb band's batter browns less than 0.1 (before the water: 0.4-0.6);
+#       (b) at every frame in the oven while the crumb band's batter holds at
+#           least half its raw water (mean saturation at least half the first
+#           row's), the band's mean temperature is at most 103 degC (boiling at
+#           100, 3 K for a band that averages a few particles that dried);
+#       (c) as the bake ends the crumb band's batter holds at least half its
+#           raw water;
+#       (d) as the bake ends the outer surface's batter browns at least twice
+#           as much as the crumb band's, and at least 0.01 more.
+#   These four bars were set on 2026-12-07 at 09:44 UTC (helper sphcrumb),
+#   before any run of the cake with its water past 0.21 s.
 #   These bars were set on 2026-12-07 (helper angelsteam) before any run of
 #   the cake with its steam (it then rose 1.205x and fell to 0.993). (b)
 #   failed with the steam alone (0.902, 0.884: the vented cells contracted as
@@ -58,6 +79,15 @@ here=$(cd "$(dirname "$0")" && pwd)
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
 fail() { echo "FAIL: $*" >&2; exit 1; }
+# shellcheck source=/dev/null
+. "$root/tests/run_share.sh"
+aw=0.94 # the scene's default water_activity, passed so the measure's gas is the scene's
+# whole_run DX: the whole default run (1.5 s bake, cooled to 3.5 s) at DX into ./cake, shared by the rise and the
+# crumb claims (tests/run_share.sh)
+whole_run() {
+    shared_run_path "$root/scripts/scenes/sph/angel_food_cake.lua" --set dx="$1" --set water_activity=$aw --out cake ||
+        fail "angel_food_cake dx=$1: exit $?: $(cat err.txt)"
+}
 
 case "$case_name" in
 sph_cake_crumb_coolest)
@@ -90,9 +120,7 @@ PY
 claim_sph_angel_cake_rises | claim_sph_angel_cake_rises_fine)
     dx=0.003
     [ "$case_name" = claim_sph_angel_cake_rises_fine ] && dx=0.002
-    aw=0.94 # the scene's default water_activity, passed so the measure's gas is the scene's
-    "$hearth" run "$root/scripts/scenes/sph/angel_food_cake.lua" --quiet --set dx=$dx --set water_activity=$aw \
-        --out cake >out.txt 2>err.txt || fail "angel_food_cake dx=$dx: exit $?: $(cat err.txt)"
+    whole_run $dx
     cat out.txt
     line=$(grep "angel food cake: relative volume" out.txt) || fail "no volume line in the scene's output"
     read -r peak cool <<<"$(sed -n 's/.*relative volume \([0-9.]*\) at its highest in the oven (.*), \([0-9.]*\) at t = .*/\1 \2/p' <<<"$line")"
@@ -124,6 +152,48 @@ sys.exit(1 if any(not ok for _, ok, _ in checks) else 0)
 PY
     rc=$?
     [ $rc = 1 ] && fail "the cake at dx $dx does not rise on its steam as claimed"
+    exit $rc
+    ;;
+claim_sph_angel_cake_crumb_pale | claim_sph_angel_cake_crumb_pale_fine)
+    dx=0.003
+    [ "$case_name" = claim_sph_angel_cake_crumb_pale_fine ] && dx=0.002
+    whole_run $dx
+    grep "angel food cake" out.txt
+    python3 - "$dx" cake/bands.csv <<'PY'
+import csv, math, sys
+dx, path = sys.argv[1], sys.argv[2]
+BAKE = 1.5  # the scene's default bake (s), which the run keeps
+rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(path))]
+need = ("B_crumb", "S_crumb", "B_outer")
+if not rows or any(k not in rows[0] for k in need) or math.isnan(rows[0]["S_crumb"]):
+    print(f"dx {dx}: bands.csv has no batter saturation (the scene's water off?)"); sys.exit(1)
+s_raw = rows[0]["S_crumb"]
+oven = [r for r in rows if r["t"] < BAKE + 0.05]  # the last is the frame the cake leaves the oven in
+end = oven[-1]
+wet = [r for r in oven if r["S_crumb"] >= 0.5 * s_raw]
+hot = max(wet, key=lambda r: r["T_crumb_C"]) if wet else None
+for r in oven:
+    print(f"dx {dx} t = {r['t']:.2f} s: crumb {r['T_crumb_C']:.1f} degC, browning {r['B_crumb']:.4f}, saturation "
+          f"{r['S_crumb']:.4f}; top {r['T_top_C']:.1f} degC, browning {r['B_top']:.4f}; outer surface's batter "
+          f"browning {r['B_outer']:.4f}, saturation {r['S_outer']:.4f}")
+bc, bo = end["B_crumb"], end["B_outer"]
+checks = [
+    ("a", bc < 0.1, f"the crumb band's browning {bc:.4f} as the bake ends (t = {end['t']:.2f} s; bar < 0.1)"),
+    ("b", bool(wet) and hot["T_crumb_C"] <= 103,
+     (f"the crumb band at most {hot['T_crumb_C']:.2f} degC (t = {hot['t']:.2f} s) over the {len(wet)} frames in the "
+      f"oven where it held half its water (bar 103)") if wet else "the crumb band never held half its water"),
+    ("c", end["S_crumb"] >= 0.5 * s_raw,
+     f"the crumb band's saturation {end['S_crumb']:.4f} as the bake ends, {end['S_crumb'] / s_raw:.3f} of its raw "
+     f"{s_raw:.4f} (bar 0.5)"),
+    ("d", bo >= max(2 * bc, bc + 0.01),
+     f"the outer surface's browning {bo:.4f} against the crumb's {bc:.4f} (bar: at least twice, and 0.01 more)"),
+]
+for k, ok, what in checks:
+    print(f"dx {dx}: {'ok  ' if ok else 'FAIL'} ({k}) {what}")
+sys.exit(1 if any(not ok for _, ok, _ in checks) else 0)
+PY
+    rc=$?
+    [ $rc = 1 ] && fail "the cake's crumb at dx $dx is not pale and wet under a browner crust as claimed"
     exit $rc
     ;;
 *) fail "unknown case $case_name" ;;

@@ -11,7 +11,26 @@
 # _fine runs at dx 1.5 mm instead of the scene's 2 mm. The bars were set from
 # the brief of helper deadbread before the fixed scene's runs (the scene then
 # stood in 3 pieces with slits of 13.5 DX^2 at 1.1 s, docs/validation.md "The
-# bread of the dead stays in one piece"). Exit 0 pass, 1 fail.
+# bread of the dead stays in one piece").
+#   claim_sph_bread_of_the_dead_crumb_pale[_fine]  the same run (shared with
+#       the one-piece claim when one meson process runs both:
+#       tests/run_share.sh), its frames measured by tests/sph_crumb_measure.py:
+#       the centre (particles within 6 mm, a fifth of the body's raw 30 mm
+#       radius, of the particles' centroid) against the outer surface (where
+#       the oven's heat enters). The dough carries bread dough's water (the
+#       scene's WATER note; helper sphcrumb); the four bars of
+#       claim_sph_angel_cake_crumb_pale (tests/sph_cake_test.sh):
+#       (a) at 1.2 s the centre's dough browns less than 0.1;
+#       (b) at every frame while the centre's dough holds at least half its raw
+#           water, the centre's mean temperature is at most 103 degC;
+#       (c) at 1.2 s the centre's dough holds at least half its raw water;
+#       (d) at 1.2 s the outer surface's dough browns at least twice as much as
+#           the centre's, and at least 0.01 more.
+#   The bars were set for the angel food cake on 2026-12-07 at 09:44 UTC,
+#   before its first run with water; they were taken for this loaf at 09:58,
+#   after its first run with water had been seen (centre 94.9 degC, browning
+#   0.0000, saturation 0.495; outer browning 0.0199 at 2 mm), unchanged.
+# Exit 0 pass, 1 fail.
 here=$(cd "$(dirname "$0")" && pwd)
 set -u
 case_name=$1 hearth=$2 root=$3
@@ -21,15 +40,57 @@ cd "$tmp" || exit 1
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 dx=0.002 # the scene's default
+claim=one_piece
 case "$case_name" in
 claim_sph_bread_of_the_dead_one_piece) ;;
 claim_sph_bread_of_the_dead_one_piece_fine) dx=0.0015 ;;
+claim_sph_bread_of_the_dead_crumb_pale) claim=crumb ;;
+claim_sph_bread_of_the_dead_crumb_pale_fine) dx=0.0015 claim=crumb ;;
 *) fail "unknown case $case_name" ;;
 esac
-"$hearth" run "$root/scripts/scenes/sph/bread_of_the_dead.lua" --quiet --set dx=$dx >out.txt 2>err.txt ||
+# shellcheck source=/dev/null
+. "$root/tests/run_share.sh"
+shared_run_path "$root/scripts/scenes/sph/bread_of_the_dead.lua" --set dx=$dx ||
     fail "bread_of_the_dead dx=$dx: exit $?: $(cat err.txt)"
 cat out.txt
 d=hearth-out/bread_of_the_dead
+if [ $claim = crumb ]; then
+    m=$(python3 "$here/sph_crumb_measure.py" 0.006 $(ls $d/particles_0*.csv | sort) $d/particles_end.csv) ||
+        fail "measure: $m"
+    echo "$m"
+    python3 - "$dx" "$m" <<'PY'
+import math, sys
+dx, lines = sys.argv[1], sys.argv[2].splitlines()
+frames = []
+for line in lines:
+    w = line.split()
+    frames.append((w[0], {k: float(v) for k, v in zip(w[1::2], w[2::2])}))
+raw, end = frames[0][1], frames[-1][1]
+s_raw = raw["centre_saturation"]
+if math.isnan(s_raw):
+    print(f"dx {dx}: the particles carry no saturation (the scene's water off?)"); sys.exit(1)
+wet = [(f, m) for f, m in frames if m["centre_saturation"] >= 0.5 * s_raw]
+hot = max(wet, key=lambda fm: fm[1]["centre_T"]) if wet else None
+bc, bo = end["centre_browning"], end["outer_browning"]
+checks = [
+    ("a", bc < 0.1, f"the centre's browning {bc:.4f} at 1.2 s (bar < 0.1)"),
+    ("b", bool(wet) and hot[1]["centre_T"] <= 103,
+     (f"the centre at most {hot[1]['centre_T']:.2f} degC ({hot[0]}) over the {len(wet)} files where it held half its "
+      f"water (bar 103)") if wet else "the centre never held half its water"),
+    ("c", end["centre_saturation"] >= 0.5 * s_raw,
+     f"the centre's saturation {end['centre_saturation']:.4f} at 1.2 s, {end['centre_saturation'] / s_raw:.3f} of its "
+     f"raw {s_raw:.4f} (bar 0.5)"),
+    ("d", bo >= max(2 * bc, bc + 0.01),
+     f"the outer surface's browning {bo:.4f} against the centre's {bc:.4f} (bar: at least twice, and 0.01 more)"),
+]
+for k, ok, what in checks:
+    print(f"dx {dx}: {'ok  ' if ok else 'FAIL'} ({k}) {what}")
+sys.exit(1 if any(not ok for _, ok, _ in checks) else 0)
+PY
+    rc=$?
+    [ $rc = 1 ] && fail "the loaf's centre at dx $dx is not pale and wet under a browner crust as claimed"
+    exit $rc
+fi
 # the frames (0.1 s apart: particles_NNNN at t = (NNNN - 1) x 0.1 s) for the record, then the loaf at 1.2 s
 for f in $(ls $d/particles_0*.csv | sort) $d/particles_end.csv; do
     m=$(python3 "$here/sph_dead_measure.py" $dx $d/particles_0000.csv "$f") || fail "measure $f: $m"

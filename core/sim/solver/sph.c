@@ -34,9 +34,11 @@
  *   sph_outer_surface    the body's outer surface particles (sph_outer.c: a
  *                        flood fill; the colour field of 3.29 misses a risen
  *                        cake's top and marks rows inside it)
+ *   sph_water_prepare    the saturations the water's pairs read (sph_water.c)
  *   sph_heat_rates       heat (sph_heat.c): internal (3.45-3.46), external
  *                        at outer surface particles (3.42), the oven's Robin flux
- *                        and heated colliders' contact beta (as MPM)
+ *                        and heated colliders' contact beta (as MPM); in the
+ *                        same pair walk the water's Fick flux (sph_water_pair)
  *   sph_water_rates      water as MPM's (Ding eq. 8, 22; sph_water.c)
  *   sph_xsph             XSPH (3.34 with the tuner of 4.4; sph_xsph.c)
  *   sph_fields_advance   temperatures and water forward; boiling (sph_heat.c)
@@ -732,6 +734,7 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     sph_forces(s, dt);
     sph_hourglass(s, dt);
     sph_outer_surface(s); /* the oven's heat enters there (sph_outer.c) */
+    if (water_active(s)) sph_water_prepare(s); /* the saturations the water's pairs read in the heat's walk */
     sph_heat_rates(s); /* reads st->vc and st->sp (sph_kinematics) */
     if (water_active(s)) sph_water_rates(s); /* after the heat: the latent sink takes from st->dT */
     sph_xsph(s);

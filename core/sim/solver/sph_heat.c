@@ -84,29 +84,45 @@ void sph_heat_rates(hearth_scene *s) {
     if (s->def.latent_heat && !robin)
         for (int i = 0; i < n; i++) st->qo[i] = 0;
     const int dry = sph_heat_dry(s);
+    /* the water's pairs in this walk, where sph_water_prepare ran this step (sph_water.c; the same r and kernel,
+     * each sum in list order: the bits of the water's own walk) */
+    const int water = st->wready && water_active(s);
+    /* With a dry parameter each particle's k_i, taken once here rather than once for each pair it is in (the same
+     * values, so the same bits: a pair's conduction read it from both sides, which cost the bread of the dead 12% of
+     * its run with its water, helper sphcrumb), where sph_water_ensure made room (a caller outside the step may not
+     * have: then per pair, as before) */
+    double *kd = dry && st->kd && st->wcap >= n ? st->kd : NULL;
+    if (kd) {
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+        for (int i = 0; i < n; i++) kd[i] = sph_dry_k(s, i, mat[i]);
+    }
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         const double ri = st->rho[i];
         const material_slot *msi = &s->mats.slot[mat[i]];
         /* with a dry parameter: i's k_i and alpha(w_i), and the sums below are heat per m_i until divided by it */
-        const double ki = dry ? sph_dry_k(s, i, mat[i]) : 0.0, ai = dry ? material_specific_heat(msi, &s->ps, i) : 0.0;
-        double dTi = 0;
-        if (o->heat_int > 0)
+        const double ki = dry ? (kd ? kd[i] : sph_dry_k(s, i, mat[i])) : 0.0;
+        const double ai = dry ? material_specific_heat(msi, &s->ps, i) : 0.0;
+        double dTi = 0, dw = 0;
+        const int wi = water && !(st->wd[i] < 0); /* i trades water (a bubble trades none) */
+        if (o->heat_int > 0 || wi)
             for (int k = off[i]; k < off[i + 1]; k++) {
                 const int j = nb[k];
                 double d[3];
                 sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
                 const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
                 if (r <= 0) continue;
-                const double hij = 0.5 * (st->h[i] + st->h[j]), rj = st->rho[j];
+                const double hij = 0.5 * (st->h[i] + st->h[j]), rj = st->rho[j], lap = sph_lap_visc(dim, r, hij);
+                if (wi && sph_water_pairs_with(st->wd, i, j)) dw += sph_water_pair(st, m, i, j, lap); /* sph_water.c's */
+                if (!(o->heat_int > 0)) continue;
                 /* eq. 3.8 renormalised as in the viscous term (sph_viscous_factor), the pair's mean factor
                  * so what i gains j loses */
-                const double lv = sph_lap_visc(dim, r, hij) * 0.5 * (st->vc[i] + st->vc[j]);
+                const double lv = lap * 0.5 * (st->vc[i] + st->vc[j]);
                 /* with a dry parameter the pair's conductivity factor, the harmonic mean of the two (Cleary &
                  * Monaghan 1999, eq. 9); without, 1 (a product by 1 is exact: the thesis's bits) */
                 double kij = 1.0;
                 if (dry) {
-                    const double kj = sph_dry_k(s, j, mat[j]);
+                    const double kj = kd ? kd[j] : sph_dry_k(s, j, mat[j]);
                     kij = ki + kj > 0 ? 2 * (ki * kj) / (ki + kj) : 0.0;
                 }
                 dTi += o->heat_int * 4 * m[j] / ((ri + rj) * (ri + rj)) * (T[j] - T[i]) * lv * kij; /* eq. 3.45-3.46 */
@@ -169,7 +185,9 @@ void sph_heat_rates(hearth_scene *s) {
             if (ledger) st->qo[i] = beta_oven > 0 && st->outer[i] ? face * st->oshare[i] * beta_oven * (Text - T[i]) : 0.0;
         }
         st->dT[i] = dTi;
+        if (water) st->dW[i] = dw; /* the water's pairs, which sph_water_rates completes */
     }
+    if (water) st->wpairs = 1;
 }
 
 /* With a dry parameter (sph_heat_dry) particle i's conduction runs at k_h,int sum_j k_ij (...) / alpha_i, k_ij

@@ -42,9 +42,12 @@ struct sph_state {
     double *vr;     /* rest volume (rest_volume) per particle this step, for sph.gas_law's density sum */
     /* sph_water.c's, made only with water or latent_heat (sph_water_ensure; wcap particles): the
      * water's rate (kg/s), saturation and K theta s this step, and the oven's Robin heat per
-     * particle (W) for latent_heat's ledger (sph_fields_advance's ledger) */
-    double *dW, *sw, *wd, *qo;
+     * particle (W) for latent_heat's ledger (sph_fields_advance's ledger), each particle's k_i of a
+     * dried crust's conduction this step (sph_heat.c's sph_dry_k, taken once a particle, not once a pair)
+     * and its material's rho_0^w (sph_water_prepare) */
+    double *dW, *sw, *wd, *qo, *kd, *rwd;
     int wcap;
+    int wready, wpairs; /* this step: sph_water_prepare ran; sph_heat_rates summed the water's pairs into dW */
     double *sp;     /* rest spacing V0^(1/dim), per particle this step (walls, artificial stress) */
     double *R;      /* artificial stress over rho^2 (Monaghan 2000), 9 per particle */
     double amax;    /* largest |a| of the last step, for the force limit */
@@ -191,17 +194,34 @@ void sph_fields_advance(hearth_scene *s, double dt);
 double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin);
 
 /* ---- sph_water.c ---- */
-/// The water's rates into st->dW (Fick's flux through the heat's Laplacian,
+/// Each particle's saturation, K theta s (or -1 for a bubble) and rho_0^w into st->sw, st->wd and st->rwd,
+/// for the water's pairs. Only while the water field is live; before sph_heat_rates, which then sums the
+/// water's pairs (sph_water_pair) in its own pair loop.
+void sph_water_prepare(hearth_scene *s);
+/// The water's rates into st->dW (Fick's flux through the heat's Laplacian, unless sph_heat_rates summed it,
 /// evaporation at surface particles) and, with latent_heat, L x evaporation
 /// out of st->dT. Only while the water field is live; after sph_heat_rates.
 void sph_water_rates(hearth_scene *s);
+/// Do i and j trade water (sph_water.c's rule: one of them holds some, and j is no bubble; i's own bubble
+/// test is the caller's)? D = st->wd.
+static inline int sph_water_pairs_with(const double *D, int i, int j) { return (D[i] > 0 || D[j] > 0) && !(D[j] < 0); }
+/// The water i takes from j (kg/s), Fick's flux through the heat's Laplacian (sph_water.c's header): lap the
+/// kernel's sph_lap_visc at the pair's r and mean h, every factor the pair's own, in the same order from either
+/// side, so the pair sums move no water (to round-off). Written once for the two loops that sum it (sph_heat.c's,
+/// sph_water.c's), so both give the same bits.
+static inline double sph_water_pair(const struct sph_state *st, const double *m, int i, int j, double lap) {
+    const double *D = st->wd, *sw = st->sw;
+    const double rs = st->rho[i] + st->rho[j], lv = lap * (0.5 * (st->vc[i] + st->vc[j]));
+    const double rw = 0.5 * (st->rwd[i] + st->rwd[j]);
+    return rw * (0.5 * (D[i] + D[j])) * (4 * (m[i] * m[j]) / (rs * rs)) * lv * (sw[j] - sw[i]);
+}
 /// After the temperatures moved: the water by dt st->dW, floored; with
 /// latent_heat water_boil past the boiling point; the step's removed water.
 void sph_water_advance(hearth_scene *s, double dt);
 /// Does the step need sph_water.c's arrays (the water field live, or latent_heat's ledger)?
 int sph_water_live(const hearth_scene *s);
 /// The doubles per particle sph_water_ensure keeps.
-#define SPH_WATER_ARRAYS 4
+#define SPH_WATER_ARRAYS 6
 /// Before a step of n particles: the water's arrays, when sph_water_live; NOMEM when they cannot be had.
 hearth_status sph_water_ensure(hearth_scene *s, int n, hearth_error *err);
 /// Release them (with the state).

@@ -41,6 +41,10 @@
  *   temperatures moved, a wet particle past the boiling point boils its
  *   excess heat away through water.c's water_boil, MPM's own.
  *
+ * The pairs' sum is made in sph_heat_rates's pair walk, which has the
+ * pair's r and kernel value at hand (sph_water_prepare fills what it reads
+ * first; sph_water_pair, sph_state.h, is the term either walk sums), and
+ * here only for a step that walk did not make (no temperature field).
  * Forward Euler, like SPH's heat. What leaves (evaporation, boiling, less
  * what the saturation floor hands back) goes into s->water.step_removed and
  * counts once the step stands (water_step_stands, scene.c), as in MPM, so
@@ -77,7 +81,9 @@ void sph_water_free(struct sph_state *st) {
     mem_free(st->sw, sizeof(double) * c);
     mem_free(st->wd, sizeof(double) * c);
     mem_free(st->qo, sizeof(double) * c);
-    st->dW = st->sw = st->wd = st->qo = NULL;
+    mem_free(st->kd, sizeof(double) * c);
+    mem_free(st->rwd, sizeof(double) * c);
+    st->dW = st->sw = st->wd = st->qo = st->kd = st->rwd = NULL;
     st->wcap = 0;
 }
 
@@ -90,17 +96,38 @@ hearth_status sph_water_ensure(hearth_scene *s, int n, hearth_error *err) {
     sph_water_free(st);
     const int cap = n + n / 4 + 16;
     const size_t b = sizeof(double) * (size_t)cap;
-    st->dW = mem_calloc(b), st->sw = mem_calloc(b), st->wd = mem_calloc(b), st->qo = mem_calloc(b);
+    st->dW = mem_calloc(b), st->sw = mem_calloc(b), st->wd = mem_calloc(b), st->qo = mem_calloc(b), st->kd = mem_calloc(b);
+    st->rwd = mem_calloc(b);
     st->wcap = cap;
-    if (!st->dW || !st->sw || !st->wd || !st->qo) {
+    if (!st->dW || !st->sw || !st->wd || !st->qo || !st->kd || !st->rwd) {
         sph_water_free(st);
         return err_set(err, HEARTH_ERR_NOMEM, "sph: out of memory for the water of %d particles", n);
     }
     return HEARTH_OK;
 }
 
-/* Fills st->sw with each particle's saturation and st->dW with its water's
- * rate (kg/s); with latent_heat takes L e_i from st->dT (sph_heat_rates ran). */
+/* Fills st->sw with each particle's saturation, st->wd with its K theta s (-1: a bubble, which trades none) and
+ * st->rwd with its rho_0^w, for the pairs (sph_heat_rates sums them in its own pair loop, which walks the same
+ * lists with the same r: the water's own walk had cost the bread of the dead 5% of its run, helper sphcrumb). */
+void sph_water_prepare(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    const sph_cols c = sph_cols_of(s);
+    const int n = c.n, *mat = c.mat;
+    const double *T = c.T;
+    double *sw = st->sw, *D = st->wd, *rw = st->rwd;
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        const material_slot *ms = &s->mats.slot[mat[i]];
+        sw[i] = water_saturation(s, i);
+        D[i] = ms->core[CP_WATER_DIFFUSIVITY] * ((T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN) * sw[i]; /* K theta s */
+        if (water_sph_gas(s, ms)) D[i] = -1; /* a bubble: no exchange (below) */
+        rw[i] = ms->core[CP_WATER_DENSITY];
+    }
+    st->wready = 1;
+}
+
+/* st->dW with each particle's water rate (kg/s): the pairs' flux (unless sph_heat_rates summed it this step,
+ * st->wpairs) less its evaporation; with latent_heat takes L e_i from st->dT (sph_heat_rates ran). */
 void sph_water_rates(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
@@ -110,34 +137,30 @@ void sph_water_rates(hearth_scene *s) {
     const double s_amb = s->def.oven_saturation;
     const int latent = s->def.latent_heat && T;
     const double psat_b = water_psat_boiling(s); /* with latent_heat: the vapour's factor (water.h), MPM's */
-    double *sw = st->sw, *D = st->wd;
+    if (!st->wready) sph_water_prepare(s);
+    const int pairs = !st->wpairs;
+    const double *sw = st->sw, *D = st->wd;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         const material_slot *ms = &s->mats.slot[mat[i]];
-        sw[i] = water_saturation(s, i);
-        D[i] = ms->core[CP_WATER_DIFFUSIVITY] * ((T ? T[i] : ms->core[CP_REFERENCE_T]) + KELVIN) * sw[i]; /* K theta s */
-        if (water_sph_gas(s, ms)) D[i] = -1; /* a bubble: no exchange (below) */
-    }
-#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
-    for (int i = 0; i < n; i++) {
-        const material_slot *ms = &s->mats.slot[mat[i]];
-        const double ri = st->rho[i], rwi = ms->core[CP_WATER_DENSITY];
+        const double rwi = ms->core[CP_WATER_DENSITY];
+        if (D[i] < 0) { /* a bubble holds no water and trades none */
+            st->dW[i] = 0;
+            continue;
+        }
         double dw = 0;
-        st->dW[i] = 0;
-        if (D[i] < 0) continue; /* a bubble holds no water and trades none */
-        for (int k = off[i]; k < off[i + 1]; k++) {
-            const int j = nb[k];
-            if (!(D[i] > 0) && !(D[j] > 0)) continue;
-            if (D[j] < 0) continue; /* water goes round a bubble, through its films */
-            double d[3];
-            sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
-            const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            if (r <= 0) continue;
-            const double hij = 0.5 * (st->h[i] + st->h[j]), rs = ri + st->rho[j];
-            const double lv = sph_lap_visc(dim, r, hij) * (0.5 * (st->vc[i] + st->vc[j]));
-            const double rw = 0.5 * (rwi + s->mats.slot[mat[j]].core[CP_WATER_DENSITY]);
-            /* every factor the pair's own, in the same order from either side */
-            dw += rw * (0.5 * (D[i] + D[j])) * (4 * (m[i] * m[j]) / (rs * rs)) * lv * (sw[j] - sw[i]);
+        if (pairs) {
+            for (int k = off[i]; k < off[i + 1]; k++) {
+                const int j = nb[k];
+                if (!sph_water_pairs_with(D, i, j)) continue; /* water goes round a bubble, through its films */
+                double d[3];
+                sph_disp(&st->cells, x + 3 * i, x + 3 * j, d);
+                const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+                if (r <= 0) continue;
+                dw += sph_water_pair(st, m, i, j, sph_lap_visc(dim, r, 0.5 * (st->h[i] + st->h[j])));
+            }
+        } else {
+            dw = st->dW[i]; /* the pairs' sum, sph_heat_rates's */
         }
         double e = 0;
         if (st->outer[i] && ms->core[CP_EVAPORATION] > 0) {
@@ -151,6 +174,7 @@ void sph_water_rates(hearth_scene *s) {
         }
         st->dW[i] = dw - e;
     }
+    st->wready = st->wpairs = 0;
 }
 
 /* After the temperatures moved by st->dT (before their maxima are taken, as

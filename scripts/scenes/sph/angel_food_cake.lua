@@ -1,7 +1,7 @@
 -- Angel food cake baked, then left in its pan to collapse, with the SPH solver
 -- (Rodriguez-Arenas 2011 Fig. 4.11).
 --   hearth run scripts/scenes/sph/angel_food_cake.lua [--set bake=1.5 --set cool_to=25 --set bubble_share=0.4]
---     [--set xsph_cool=0.05 --set xsph_hot=0.3 --set water_activity=0.94]
+--     [--set xsph_cool=0.05 --set xsph_hot=0.3 --set water_activity=0.94 --set water=false]
 -- A 2D section through a tube pan: batter on both sides of the central tube,
 -- between the pan's walls. A share of its particles are bubble particles
 -- (eq. 3.48-3.50; whisked egg white holds many). In the oven (oven, degC)
@@ -32,6 +32,12 @@
 -- h.curve), gives way. The thesis does the
 -- same by hand (§4.5: rho_f raised, mu_e and lambda lowered after baking);
 -- turning the pan over is what a baker does to stop it, not modelled.
+-- Measured with the batter's water (the default since #18 helper sphcrumb, WATER below; docs/validation.md "The
+-- angel food cake's crumb holds its water"): relative volume at its highest in the oven and at t = 3.5 s 1.694 and
+-- 1.548 at dx 3 mm, 1.743 and 1.593 at 2 mm; as the bake ends the crumb band is 102.9 degC (101.2 at 2 mm), browned
+-- 0.0074 (0.0068) and holds 0.74 (0.71) of its water, under a top band at 142 degC (141) browned 0.29 (0.34) and an
+-- outer surface browned 0.34 (0.38) (claim_sph_angel_cake_crumb_pale[_fine]). The rest of this note was measured
+-- without the water (--set water=false, the same bits as before it).
 -- Measured (2D, #18 helper angelsteam, docs/validation.md "The angel food cake
 -- rises on its steam"): relative volume (density slice) at its highest in the oven
 -- and at t = 3.5 s: 1.692 and 1.526 at dx 3 mm, 1.743 and 1.604 at 2 mm (at 3 mm the
@@ -44,9 +50,10 @@
 -- cake fell below its batter. Dry (water_activity = 0): 1.205 and 0.993 at 3 mm,
 -- 1.193 and 0.961 at 2 mm. The crumb stays the coolest band while it bakes
 -- (bands.csv at 0.5 s: 106 degC against the top's 137 and the bottom's 123 at
--- 3 mm, 111 / 139 / 130 at 2 mm; dry 114 / 126 / 125, 116 / 128 / 126). No
--- water here, so no boiling plateau holds the crumb near 100 degC: the whole
--- cake passes 150 degC by 1 s and browns. History of the dry cake: eq. 3.51
+-- 3 mm, 111 / 139 / 130 at 2 mm; dry 114 / 126 / 125, 116 / 128 / 126; with the
+-- batter's water 95.0 / 102.0 / 101.3 and 94.9 / 102.6 / 100.5). Without water
+-- no boiling plateau holds the crumb near 100 degC: the whole cake passes 150
+-- degC by 1 s and browns (the crumb band 0.54 as the bake ends, at 166 degC). History of the dry cake: eq. 3.51
 -- pushing for as long as a bubble heated (before sph.c's bubble_expands)
 -- gave 2.33 and 1.87; with the oven's heat at the colour field's surface
 -- particles (before sph_outer.c) 2.25 and 2.00; with the old asymmetric seed
@@ -59,7 +66,8 @@
 -- the mean temperature, and the mean temperatures of the particles left and
 -- right of the tube's axis and their difference), bands.csv (the mean
 -- temperatures of the top, crumb and bottom bands away from the pan's walls,
--- sph_cake_crumb_coolest), particles_raw.csv, particles_baked.csv and
+-- sph_cake_crumb_coolest, their batter's browning, the crumb band's saturation
+-- and the outer surface's browning and saturation), particles_raw.csv, particles_baked.csv and
 -- particles_end.csv (the particles after the first step, as the bake ends and
 -- at until_t: tests/sph_cake_rise.py) and browning and
 -- temperature frames (the browning index of Zanoni et al. 1995 from
@@ -90,7 +98,10 @@ local P = h.params { dx = h.number { 0.003, above = 0, unit = "m", what = "the g
   xsph_hot = h.number { 0.3, min = 0, max = 1, what = "XSPH's epsilon in the hot batter (h.scene's range)" },
   water_activity = h.number { 0.94, min = 0, max = 0.99,
     what = "the batter's water activity a_w: its steam joins the bubbles' air (sph.gas_law, eq. 2.42-2.43; 0: the "
-      .. "thesis's dry eq. 3.51-3.52)" } }
+      .. "thesis's dry eq. 3.51-3.52)" },
+  -- the batter's water (WATER below): true carries it, with latent_heat and boiling at 100 degC; false is the batter
+  -- before #18 helper sphcrumb, which held none
+  water = true }
 -- what a run's seconds stand for (S = 1600, the scene's browning_scale and its heat_ext, below)
 print(("angel_food_cake.lua: viscosity and mu_e scaled from Table 4.1's animation units; heat and browning 1600 times fast: "
   .. "the %g s bake stands for %.0f min, 1 s for %.1f min"):format(P.bake, P.bake * 1600 / 60, 1600 / 60))
@@ -110,7 +121,8 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { cx - half, 0 }, { cx + half, 0
   sph = { heat_ext = 17.1, heat_int = 0.5, av_beta = 1, xsph0 = P.xsph_cool, xsph_f = P.xsph_hot, xsph_T0 = T0, xsph_Tf = 120,
           bubble_T0 = T0, tension = true, alpha_c = 0.1, beta_c = 0.8,
           gas_law = P.water_activity > 0, bubble_vapour = P.water_activity, bubble_stays_open = P.water_activity > 0 },
-  oven = { temperature = P.oven, beta = 0 }, browning = true, browning_scale = 1600 }
+  oven = { temperature = P.oven, beta = 0 }, browning = true, browning_scale = 1600,
+  latent_heat = P.water or nil, boiling_point = P.water and 100 or nil }
 
 -- The crumb sets while hot and softens again as it cools (the structure of
 -- an angel food cake left upright is not set enough to hold).
@@ -119,6 +131,29 @@ local props = {
   viscosity = h.curve { { T0, 2 }, { 80, 4 }, { 110, 10 } },
   mu_e = h.curve { { T0, 20 }, { 80, 60 }, { 110, 1000 } },
 }
+-- WATER (#18, helper sphcrumb): the batter's water, as bread_roll.lua's --set crust=true gives its dough the
+-- bread's. The recipe above (360 g egg white at 87.6% water, USDA SR; 298 g sugar; 120 g cake flour at 14%) holds
+-- 332 g of water in 778 g, 42.7% wet basis; at the batter's 600 kg/m^3 that is s = 0.427 x 600 / 1000 = 0.256 of
+-- rho_0^w (Ding et al. eq. 8). Its liquid diffusivity 2e-9 m^2/s and surface evaporation 1.2e-5 are the roll's
+-- (h.library.dough.bread's, chosen within baking models' range: lua/hearth/dough_physical.lua), on this scene's
+-- S = 1600; eq. 22's D = K theta s gives K = D / (373.15 s). Heat capacity by the mixture rule the roll's bread takes
+-- (m c = m_s c_s + m_w c_w; Choi & Okos 1986 at 25 degC, the ASHRAE composition model), with the recipe's solids
+-- (USDA SR egg white and cake flour: 88% carbohydrate, 11% protein, 0.4% fat, 0.6% ash of the solids):
+-- c_s = 1641 J/(kg K); wet 2724 (2800 taken, the c the oven's heat_ext above is written with, 3% above, as the
+-- bread's 2.7 against its 2.79), dried (m_s / m) c_s = 0.573 x 1641 = 941. Conductivity by the same model's
+-- volume-weighted parallel sum (the ASHRAE rule the lava cake and pancake presets use) at this density: 0.222
+-- W/(m K) wet, 0.071 with the water's volume turned to air (the dried particle keeps its volume): SPH's conduction
+-- takes only their ratio, 0.32, on sph.heat_int (core/sim/solver/sph_heat.c). The bubbles share the batter's
+-- parameters but hold no water (sph_water.c: a bubble is gas) and read as wet, so they conduct and hold heat as
+-- before. Boiling at 100 degC, as the roll: the batter's 2.62 mol/kg of sucrose would raise it by 0.512 x 2.62 =
+-- 1.3 K (ebullioscopy, ideal), not taken.
+if P.water then
+  local g, S, s0 = require("hearth.dough_physical").goods.bread, 1600, 0.256 -- the roll's bread: its D and evaporation
+  props.saturation, props.water_diffusivity = s0, g.water_diffusivity_m2s / (373.15 * s0) * S
+  props.evaporation = g.evaporation * S
+  props.specific_heat, props.dry_specific_heat = 2800, 0.573 * 1641
+  props.conductivity, props.dry_conductivity = 0.222, 0.071
+end
 local batter = h.material("maxwell_sph", props)
 props.bubble = P.foam -- V_b0 of eq. 3.50 (the thesis sets 1; above about 1.3 the batter bursts at once)
 local bubble = h.material("maxwell_sph", props)
@@ -183,10 +218,16 @@ end
 -- mean temperatures of three bands of the cake (#18: the crumb had run hotter than its crust, eq. 3.42's oven
 -- heat entering rows inside the risen cake): the particles at least 10 mm from the pan's walls and tube, the
 -- bottom band within 10 mm of the floor, the top band within 10 mm of the highest of them, the crumb band 10 mm
--- about their middle height (sph_cake_crumb_coolest)
+-- about their middle height (sph_cake_crumb_coolest); and the batter's (the bubbles are gas: NaN) mean browning
+-- in each band, its mean saturation in the crumb band, and the mean browning and saturation of the batter on
+-- the outer surface, where the oven's heat enters (the boundary flag, sph_outer.c; with water off its saturation
+-- is NaN) (claim_sph_angel_cake_crumb_pale)
 local function bands_T()
-  local p = s:particles { fields = { "x", "temperature" } }
+  local fields = { "x", "temperature", "browning", "boundary" }
+  if P.water then fields[#fields + 1] = "saturation" end
+  local p = s:particles { fields = fields }
   local inner, ytop = {}, floor_y
+  local bo, so, no = 0, 0, 0
   for i = 1, p.n do
     local x, y = p.x[3 * i - 2], p.x[3 * i - 1]
     local d = math.min(math.abs(x - 0.02), math.abs(x - 0.18), math.abs(x - 0.092), math.abs(x - 0.108))
@@ -194,14 +235,28 @@ local function bands_T()
       inner[#inner + 1] = i
       ytop = math.max(ytop, y)
     end
+    local b = p.browning[i]
+    if p.boundary[i] > 0 and b == b then
+      bo, so, no = bo + b, so + (P.water and p.saturation[i] or 0 / 0), no + 1
+    end
   end
   local mid, sum, cnt = 0.5 * (floor_y + ytop), { 0, 0, 0 }, { 0, 0, 0 }
+  local bsum, bcnt, ssum = { 0, 0, 0 }, { 0, 0, 0 }, 0
   for _, i in ipairs(inner) do
     local y, T = p.x[3 * i - 1], p.temperature[i]
     local b = (y > ytop - 0.01 and 1) or (math.abs(y - mid) < 0.005 and 2) or (y < floor_y + 0.01 and 3) or nil
-    if b then sum[b], cnt[b] = sum[b] + T, cnt[b] + 1 end
+    if b then
+      sum[b], cnt[b] = sum[b] + T, cnt[b] + 1
+      local br = p.browning[i]
+      if br == br then
+        bsum[b], bcnt[b] = bsum[b] + br, bcnt[b] + 1
+        if b == 2 then ssum = ssum + (P.water and p.saturation[i] or 0 / 0) end
+      end
+    end
   end
-  return sum[1] / cnt[1], sum[2] / cnt[2], sum[3] / cnt[3], ytop
+  return { T = { sum[1] / cnt[1], sum[2] / cnt[2], sum[3] / cnt[3] }, top = ytop,
+           B = { bsum[1] / bcnt[1], bsum[2] / bcnt[2], bsum[3] / bcnt[3] }, S_crumb = ssum / bcnt[2],
+           B_outer = bo / no, S_outer = so / no }
 end
 -- particle positions (x, y in m), temperatures, own volumes J = det F, browning (NaN: a bubble particle), the
 -- summed density, the pressure and the particle's id (SPH sorts its particles, so the rows' order changes: the
@@ -220,8 +275,8 @@ s:step(1) -- the density slice needs one SPH step (before it the probe has no SP
 positions("particles_raw.csv")
 local A0 = area()
 local csv = { "t,relative_volume,mean_temperature_C,phase,T_left_C,T_right_C,T_right_minus_left_C" }
-local bands = { "t,T_top_C,T_crumb_C,T_bottom_C,top_mm" }
-local cooling, peak, peak_t, baked = false, 1, 0, nil
+local bands = { "t,T_top_C,T_crumb_C,T_bottom_C,top_mm,B_top,B_crumb,B_bottom,S_crumb,B_outer,S_outer" }
+local cooling, peak, peak_t, baked, baked_b = false, 1, 0, nil, nil
 -- the frames' titles give the real time the scene's S = 1600 stands for, then the simulated seconds; browning
 -- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
 -- dark grey discs, which on the browning map read as burnt spots through the crumb
@@ -235,13 +290,14 @@ s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "fr
     end
     local rv = area() / A0
     if not cooling and rv > peak then peak, peak_t = rv, f.t end
-    if cooling and not baked then baked = rv end -- the first frame out of the oven: the cake as the bake ends
+    local b = bands_T()
+    if cooling and not baked then baked, baked_b = rv, b end -- the first frame out of the oven: the cake as the bake ends
     local TL, TR = halves_T()
     csv[#csv + 1] = ("%.4f,%.5f,%.2f,%s,%.4f,%.4f,%.3g"):format(f.t, rv, mean_T(), cooling and "cooling" or "baking",
       TL, TR, TR - TL)
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
-    local Tt, Tc, Tb, yt = bands_T()
-    bands[#bands + 1] = ("%.4f,%.3f,%.3f,%.3f,%.1f"):format(f.t, Tt, Tc, Tb, yt * 1e3)
+    bands[#bands + 1] = ("%.4f,%.3f,%.3f,%.3f,%.1f,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g"):format(f.t, b.T[1], b.T[2], b.T[3],
+      b.top * 1e3, b.B[1], b.B[2], b.B[3], b.S_crumb, b.B_outer, b.S_outer)
     h.write("bands.csv", table.concat(bands, "\n") .. "\n")
     -- one range for the whole run: the default one follows the oven, which
     -- the cooling sets to cool_to, and then every frame saturated at 26 degC
@@ -253,3 +309,9 @@ positions("particles_end.csv")
 print(("angel food cake: relative volume %.3f at its highest in the oven (t = %.2f s, %.0f min; %.3f as the bake ends), "
   .. "%.3f at t = %.2f s (mean %.1f degC)"):format(peak, peak_t, peak_t * 1600 / 60, baked or area() / A0,
   area() / A0, s:stats().t, mean_T()))
+-- the crumb against the crust as the bake ends (bands.csv's row then; claim_sph_angel_cake_crumb_pale)
+if baked_b then
+  print(("angel food cake as the bake ends: crumb band %.1f degC, browning %.4f, saturation %.4f; top band %.1f degC, "
+    .. "browning %.4f; outer surface's batter browning %.4f, saturation %.4f"):format(baked_b.T[2], baked_b.B[2],
+    baked_b.S_crumb, baked_b.T[1], baked_b.B[1], baked_b.B_outer, baked_b.S_outer))
+end

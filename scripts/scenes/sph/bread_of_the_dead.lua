@@ -1,6 +1,6 @@
 -- Bread of the dead (pan de muerto) rising with the SPH solver (Rodriguez-Arenas
 -- 2011 Fig. 4.12-4.13).
---   hearth run scripts/scenes/sph/bread_of_the_dead.lua [--set mu_e=2000 --set oven=180 --until 1.2]
+--   hearth run scripts/scenes/sph/bread_of_the_dead.lua [--set mu_e=2000 --set oven=180 --until 1.2 --set water=false]
 -- A 2D section of the loaf: a round mass on a hot tray with bone-like dough
 -- pieces laid over it (a capsule down each flank with a knuckle disc at each
 -- end) and a ball on top in the centre. The body holds bubble particles
@@ -12,6 +12,13 @@
 -- XSPH (eq. 3.34, 0.6 raw to 0.9 baked by eq. 4.4, the thesis's own
 -- stiffening knob) and Monaghan's artificial stress (sph.artificial_stress,
 -- 0.3) against the tensile instability of the stretched dough.
+-- Measured with the dough's water (the default since #18 helper sphcrumb, WATER below; docs/validation.md "The
+-- angel food cake's crumb holds its water", its bread of the dead part): at 1.2 s relative volume 1.041 (1.062 at
+-- dx 1.5 mm), ball top 56.5 mm, one piece with no gap inside; its centre 94.9 degC (94.7), unbrowned, with all its
+-- water, under an outer surface at 102.1 degC (104.2) browned 0.020 (0.028): a pale crust
+-- (claim_sph_bread_of_the_dead_crumb_pale[_fine]). Without the water (--set water=false, the same bits as before
+-- it) the centre reads 118.8 degC, browned 0.044, the outer surface 144.7 degC, 0.22. The rest of this note was
+-- measured without the water.
 -- Measured (2D default, to t = 1.2 s; tests/sph_dead_measure.py reads the
 -- particles_*.csv it writes): relative volume 1.067, ball top 57.5 mm above
 -- the tray, one piece with no gap inside (claim_sph_bread_of_the_dead_one_piece),
@@ -50,8 +57,8 @@
 -- Writes volume.csv: relative volume (from a density slice), the height of
 -- the top ball and of a bone knuckle above the tray, over time; and
 -- particles_NNNN.csv (the raw loaf, then every frame) and particles_end.csv
--- (at until_t): x, y (m), T (degC) and outer (1 where the oven's heat
--- enters, sph_outer.c) per particle.
+-- (at until_t): x, y (m), T (degC), outer (1 where the oven's heat
+-- enters, sph_outer.c), browning and saturation per particle.
 local h = require "hearth"
 -- mu_e, viscosity, lambda and vb0 (the bubble's V_b0, eq. 3.50) in maxwell_sph's ranges
 local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
@@ -64,7 +71,10 @@ local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the g
   xsph0 = h.number { 0.6, min = 0, max = 1, what = "XSPH's epsilon in the raw dough (h.scene's range)" },
   xsph_f = h.number { 0.9, min = 0, max = 1, what = "XSPH's epsilon in the baked dough (h.scene's range)" },
   artificial_stress = h.number { 0.3, min = 0, max = 1,
-    what = "Monaghan's epsilon against the tensile instability (h.scene's range)" } }
+    what = "Monaghan's epsilon against the tensile instability (h.scene's range)" },
+  -- the dough's water (WATER below): true carries the bread dough's, with latent_heat and boiling at 100 degC;
+  -- false is the dough before #18 helper sphcrumb, which held none
+  water = true }
 -- what a run's seconds stand for (S = 1500, the scene's browning_scale and its heat_ext, below)
 print(("bread_of_the_dead.lua: heat (an oven's h = 30 W/(m^2 K)) and browning 1500 times fast: "
   .. "the %g s run stands for %.0f min, 1 s for %.0f min"):format(P.until_t, P.until_t * 1500 / 60, 1500 / 60))
@@ -74,9 +84,25 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solv
   sph = { heat_ext = 16.7, heat_int = 0.5, av_beta = 1, xsph0 = P.xsph0, xsph_f = P.xsph_f, xsph_T0 = T0, xsph_Tf = 120,
           bubble_T0 = T0, tension = true, artificial_stress = P.artificial_stress },
   oven = { temperature = P.oven, beta = 0 },
-  browning = true, browning_scale = 1500 } -- Zanoni et al. 1995 kinetics; 1.2 s stand for a 30-minute bake
+  browning = true, browning_scale = 1500, -- Zanoni et al. 1995 kinetics; 1.2 s stand for a 30-minute bake
+  latent_heat = P.water or nil, boiling_point = P.water and 100 or nil }
 
 local props = { density = 1100, bulk = 2e4, lambda = P.lambda, viscosity = P.viscosity, mu_e = P.mu_e }
+-- WATER (#18, helper sphcrumb): the dough is bread dough (its heat capacity above is h.library.dough.bread's), so
+-- it carries that dough's water: 45% wet basis (lua/hearth/dough_physical.lua: Zanoni, Peri & Pierucci 1993), at
+-- this scene's 1100 kg/m^3 s = 0.45 x 1100 / 1000 = 0.495 of rho_0^w (Ding et al. eq. 8); the bread's liquid
+-- diffusivity 2e-9 m^2/s (eq. 22: K = D / (373.15 s)) and surface evaporation 1.2e-5, on this scene's S = 1500;
+-- its dried crust's heat capacity by the mixture rule (m c = m_s c_s: 0.55 x 1650 = 907.5 J/(kg K), whose slope
+-- (2700 - 907.5) x 1100 / 495 = 3983 J/(kg K) per kg of water is water's own c, as the rule asks) and conductivity
+-- (Zanoni et al. 1995's measured crust against crumb, 0.23 of 0.51 W/(m K): SPH's conduction takes their ratio on
+-- sph.heat_int, core/sim/solver/sph_heat.c). The bubbles share the parameters but hold no water (sph_water.c).
+if P.water then
+  local g, S, s0 = require("hearth.dough_physical").goods.bread, 1500, 0.495
+  props.saturation, props.water_diffusivity = s0, g.water_diffusivity_m2s / (373.15 * s0) * S
+  props.evaporation = g.evaporation * S
+  props.specific_heat, props.dry_specific_heat = g.specific_heat, g.dry_specific_heat
+  props.conductivity, props.dry_conductivity = g.conductivity, g.dry_conductivity
+end
 local dough = h.material("maxwell_sph", props)
 props.bubble = P.vb0 -- V_b0 of eq. 3.50
 local bubble = h.material("maxwell_sph", props)
@@ -137,10 +163,17 @@ end
 local knuckle_x = on_body(math.pi / 2 + 1.25, kn)[1]
 -- particle positions (x, y in m), temperatures and the outer-surface flag, for measures that do not go
 -- through the density field (tests/sph_dead_measure.py's pieces and inner gaps; bread_roll.lua writes its own)
+-- (and the browning and saturation: NaN for a bubble, which is gas, and the saturation for every particle with the
+-- water off; tests/sph_crumb_measure.py)
 local function positions(path)
-  local r = s:particles { fields = { "x", "temperature", "boundary" } }
-  local x, T, b, rows = r.x, r.temperature, r.boundary, { "x,y,T,outer" }
-  for i = 1, #T do rows[#rows + 1] = ("%.6g,%.6g,%.2f,%d"):format(x[3 * i - 2], x[3 * i - 1], T[i], b[i]) end
+  local fields = { "x", "temperature", "boundary", "browning" }
+  if P.water then fields[#fields + 1] = "saturation" end
+  local r = s:particles { fields = fields }
+  local x, T, b, rows = r.x, r.temperature, r.boundary, { "x,y,T,outer,browning,saturation" }
+  for i = 1, #T do
+    rows[#rows + 1] = ("%.6g,%.6g,%.2f,%d,%.4g,%.4g"):format(x[3 * i - 2], x[3 * i - 1], T[i], b[i], r.browning[i],
+      P.water and r.saturation[i] or 0 / 0)
+  end
   h.write(path, table.concat(rows, "\n") .. "\n")
 end
 s:step(1) -- the density slice needs one SPH step (before it the probe has no SPH density)
@@ -161,3 +194,29 @@ s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "fr
 positions("particles_end.csv") -- the loaf at until_t (the frames stop one interval short of it)
 print(("bread of the dead: relative volume %.3f, top ball %.4f m above the tray at t = %.2f s"):format(
   area() / A0, top_at(cx), s:stats().t))
+-- the centre (particles within a fifth of the body's radius of the particles' centroid) against the outer surface
+-- (the boundary flag, where the oven's heat enters, sph_outer.c): temperature, browning and saturation, the dough's
+-- (a bubble is gas: no browning, no water, NaN)
+do
+  local fields = { "x", "temperature", "browning", "boundary" }
+  if P.water then fields[#fields + 1] = "saturation" end
+  local r = s:particles { fields = fields }
+  local cxm, cym = 0, 0
+  for i = 1, r.n do cxm, cym = cxm + r.x[3 * i - 2] / r.n, cym + r.x[3 * i - 1] / r.n end
+  local acc = { centre = { 0, 0, 0, 0, 0 }, outer = { 0, 0, 0, 0, 0 } }
+  for i = 1, r.n do
+    local d = math.sqrt((r.x[3 * i - 2] - cxm) ^ 2 + (r.x[3 * i - 1] - cym) ^ 2)
+    local a = r.boundary[i] > 0 and acc.outer or d < 0.2 * R and acc.centre or nil
+    if a then
+      a[1], a[2] = a[1] + 1, a[2] + r.temperature[i]
+      local b = r.browning[i]
+      if b == b then a[3], a[4], a[5] = a[3] + 1, a[4] + b, a[5] + (P.water and r.saturation[i] or 0 / 0) end
+    end
+  end
+  for _, k in ipairs { "centre", "outer" } do
+    local a = acc[k]
+    print(("bread of the dead at t = %.2f s (water %s): %s %d particles (%d dough), %.1f degC, the dough's browning %.4f "
+      .. "and saturation %.4f"):format(s:stats().t, tostring(P.water), k, a[1], a[3], a[2] / a[1], a[4] / a[3],
+      a[5] / a[3]))
+  end
+end

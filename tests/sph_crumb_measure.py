@@ -1,0 +1,50 @@
+#!/usr/bin/env python3
+"""sph_crumb_measure.py RC FRAME.csv...: an SPH loaf's centre against its outer
+surface, from its particles alone (a particles_*.csv of
+scripts/scenes/sph/bread_of_the_dead.lua: x, y in m, T in degC, outer (1 where
+the oven's heat enters, sph_outer.c), browning and saturation; a bubble
+particle is gas and carries neither: NaN).
+
+The centre: the particles within RC (m) of the particles' centroid; the
+outer surface: the particles flagged outer. For each, the mean temperature
+over all its particles, and the mean browning and saturation over its dough
+particles (those with a browning). Prints one line a file:
+'FILE centre_T T centre_browning B centre_saturation S outer_browning BO
+outer_saturation SO centre_n N dough_n D' (#18, helper sphcrumb:
+claim_sph_bread_of_the_dead_crumb_pale, tests/sph_dead_test.sh)."""
+import csv, math, os, sys
+
+
+def nanmean(v):
+    v = [x for x in v if not math.isnan(x)]
+    return sum(v) / len(v) if v else float("nan")
+
+
+def measure(path, rc):
+    with open(path) as f:
+        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+    n = len(rows)
+    cx, cy = sum(r["x"] for r in rows) / n, sum(r["y"] for r in rows) / n
+    centre = [r for r in rows if math.hypot(r["x"] - cx, r["y"] - cy) < rc]
+    outer = [r for r in rows if r["outer"] > 0]
+    dough = lambda part: [r for r in part if not math.isnan(r["browning"])]
+    return {"centre_T": nanmean([r["T"] for r in centre]),
+            "centre_browning": nanmean([r["browning"] for r in dough(centre)]),
+            "centre_saturation": nanmean([r["saturation"] for r in dough(centre)]),
+            "outer_browning": nanmean([r["browning"] for r in dough(outer)]),
+            "outer_saturation": nanmean([r["saturation"] for r in dough(outer)]),
+            "centre_n": len(centre), "dough_n": len(dough(centre))}
+
+
+def main(argv):
+    if len(argv) < 3:
+        print(__doc__.strip().splitlines()[0]); return 2
+    rc = float(argv[1])
+    for path in argv[2:]:
+        m = measure(path, rc)
+        print(os.path.basename(path), " ".join(f"{k} {v:.6g}" for k, v in m.items()))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
