@@ -165,6 +165,25 @@ dx_3d_floor_said)
     run dx_3d.lua --set dim=3 --set dx=0.005
     has out.txt "dx used: 0.005" "above the floor"
     ;;
+scenes_3d_dx_floor_said)
+    # #18 (helper userfix3): no shipped scene raises dx to a 3D floor in silence. Bar set before the run: no
+    # "dx = ... math.max(" line in scripts/scenes (the silent form bread, muffins, marshmallow and pancake had), and
+    # each of those four, run in 3D at dx = 1 mm, says "dx = 0.001 m is below this scene's 3D floor" with its own floor
+    # (bread's dx_min_3d default 8 mm, muffins 6 mm, marshmallow and pancake 4 mm) and runs; set-up only (--until 1e-9)
+    shipped=$here/../scripts/scenes
+    silent=$(grep -rnE "dx *=.*math\.max\(" "$shipped" | sed "s|$shipped/||")
+    [ -z "$silent" ] || fail "a scene raises dx without a word (use h.dx_3d): $silent"
+    for sf in "bread 0.008 --set only=1 --set frames=1" "muffins 0.006" "marshmallow 0.004" "pancake 0.004"; do
+        set -- $sf
+        sc=$1 floor=$2
+        shift 2
+        "$hearth" run "$shipped/baking/$sc.lua" --quiet --until 1e-9 --set dim=3 --set dx=0.001 "$@" >out.txt 2>err.txt
+        rc=$?
+        expect_rc 0 "$sc.lua in 3D at dx 1 mm"
+        has out.txt "hearth: dx = 0.001 m is below this scene's 3D floor; the 3D run uses dx = $floor m" "$sc.lua's notice"
+        echo "$sc.lua: $(grep '3D floor' out.txt)"
+    done
+    ;;
 set_bad_value_exit2)
     bad_set() { # what text args...
         local what=$1 text=$2

@@ -44,7 +44,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
 local d3 = P.dim == 3
 -- 3D keeps dx at least dx_min_3d (8 mm: a loaf in minutes); lower it to measure finer (docs/validation.md,
 -- "bread.lua in 3D"); the validation wrappers that hand this scene their own params (crack_heat.lua) leave it unset
-local dx = d3 and math.max(P.dx, P.dx_min_3d or 0.008) or P.dx
+local dx = h.dx_3d(P.dx, P.dx_min_3d or 0.008, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local oven = h.library.paper_oven.bread

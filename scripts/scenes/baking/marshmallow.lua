@@ -76,7 +76,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   friction = h.number { 0.5, min = 0,
     what = "the crackers' Coulomb friction coefficient" } } -- mode: the crackers' contact
 local d3 = P.dim == 3
-local dx = d3 and math.max(P.dx, 0.004) or P.dx
+local dx = h.dx_3d(P.dx, 0.004, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local c = D.paper.smore

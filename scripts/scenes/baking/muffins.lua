@@ -56,7 +56,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   preset = h.choice { "paper", paper = "h.library.paper.muffin: Ding Table 2, animation units",
     physical = "h.library.dough.muffin: a real batter's properties, its bake in real minutes mapped" } }
 local d3 = P.dim == 3
-local dx = d3 and math.max(P.dx, 0.006) or P.dx
+local dx = h.dx_3d(P.dx, 0.006, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local physical = P.preset == "physical"
