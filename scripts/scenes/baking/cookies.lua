@@ -392,8 +392,9 @@ for _, T in ipairs(ovens) do
   s:run { until_t = until_t, every = until_t / P.frames,
     -- one temperature range for every oven (the dough's start to the hottest oven), so their frames compare side
     -- by side; each oven's own run had grown its own range
+    -- the title names the oven: a frame looked at alone (or copied out of oven_110/) says which bake it is
     png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T), time_scale = S,
-      range = { oven.dough_temperature, math.max(table.unpack(ovens)) } },
+      range = { oven.dough_temperature, math.max(table.unpack(ovens)) }, label = ("oven %g °C"):format(T) },
     on_frame = function(f)
       for i, a in ipairs(leaveners) do
         local hgt, spread = measure(i)
