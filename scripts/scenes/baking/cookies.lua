@@ -121,7 +121,7 @@ local LEVER_RANGES = {
 local defaults = { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
   dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 0, min = 0, unit = "s", what = "the bake's simulated time (0: the preset's own)" },
-  frames = h.number { 5, min = 1, integer = true, what = "PNG frames over the bake" },
+  frames = h.number { 5, min = 1, integer = true, unit = "frames", what = "PNG frames over the bake" },
   -- at most a dozen of each (muffins.lua's cups likewise): each oven is a bake and each leavener a cookie on every
   -- tray, so the cost grows with the count (a list of 10000 leaveners had laid a tray 10000 cookies wide)
   ovens = h.number { { 190, 150, 110 }, list = true, max_count = 12, min = -273.15, max = 5000, unit = "degC",

@@ -23,7 +23,7 @@ local h = require "hearth"
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
   dx = h.number { 0.0025, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 2, above = 0, unit = "s", what = "the run's simulated time" },
-  frames = h.number { 20, min = 1, integer = true, what = "PNG frames over the run" },
+  frames = h.number { 20, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" },
   temperature = h.number { 60, min = -273.15, max = 5000, unit = "degC",
     what = "the oven air's (and the slab's start)" },
   latent_heat = false }

@@ -69,7 +69,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   roast = h.number { 0.9, min = 0, unit = "s", what = "the roast before the press" },
   press = h.number { 1.0, min = 0, unit = "s", what = "the press's time" },
   speed = h.number { 0.01, min = 0, unit = "m/s", what = "each cracker's speed toward the other" },
-  frames = h.number { 20, min = 1, integer = true, what = "PNG frames over the run" },
+  frames = h.number { 20, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" },
   expansion = h.number { 0.1, min = 0, what = "the marshmallow's thermal expansion (the material's)" },
   only = h.choice { "", [""] = "both marshmallows", raw = "the raw one alone", roasted = "the roasted one alone" },
   mode = h.choice("sticky", h.contact_words),

@@ -75,7 +75,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 0, min = 0, unit = "s",
     what = "the run's simulated time (0: the preset's own: paper 2 s, physical its 3.5 real minutes)" },
-  frames = h.number { 20, min = 1, integer = true, what = "PNG frames over the run" },
+  frames = h.number { 20, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" },
   width = h.number { 800, min = 64, max = 8192, integer = true, unit = "px",
     what = "the PNG frames' width (the pancake is a quarter of the pan's)" },
   pour = h.number { 0.4, above = 0, unit = "s", what = "the pour's time" },

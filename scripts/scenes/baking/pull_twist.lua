@@ -39,7 +39,7 @@ local h = require "hearth"
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
   dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 0.4, above = 0, unit = "s", what = "the run's simulated time" },
-  frames = h.number { 4, min = 1, integer = true, what = "PNG frames over the run" }, 
+  frames = h.number { 4, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" }, 
   -- cam_clay_dough's ranges of tau_y, [1e-6, 1e9] Pa, and of eta, [0, 1e12] Pa^3 s; at most a dozen of each, as
   -- cookies.lua's lists: each pair is a strip in the grid, so the cost grows with their product
   taus = h.number { { 300, 1000, 3000 }, list = true, max_count = 12, min = 1e-6, max = 1e9, unit = "Pa",
