@@ -213,6 +213,37 @@ params_time_frames_top_named)
         echo "$1.lua: $(head -1 err.txt)"
     done
     ;;
+pull_twist_speed_below_wave_speed)
+    # #18 (helper userfix3): pull_twist.lua's grip speed is below the dough's elastic wave speed
+    # c = sqrt(E (1 - nu) / ((1 + nu) (1 - 2 nu)) / rho) (nu 0.3, rho 500): 10.38 m/s at the default E = 4e4 Pa, 51.9 at
+    # 1e6 (worked by hand before the run). Past it the scene refuses before building anything, naming speed, E and the
+    # range (--set speed=1e300 had been stopped by the guard at step 1 with advice to lower cfl); under it the scene
+    # builds and runs (set-up only, --until 1e-9).
+    pt=$here/../scripts/scenes/baking/pull_twist.lua
+    refuse() { # WHAT TEXT --set...
+        local what=$1 text=$2
+        shift 2
+        "$hearth" run "$pt" --quiet --until 1e-9 "$@" >out.txt 2>err.txt
+        rc=$?
+        expect_rc 1 "$what"
+        has_msg "$text" "$what"
+        grep -q "tau_y" out.txt && fail "$what: the scene ran on past the refused speed"
+        echo "$what: $(head -1 err.txt | cut -c1-160)"
+    }
+    refuse "speed 1e300" "speed = 1e+300 m/s at E = 40000 Pa: speed (each grip's pull speed) takes a number in [0, 10.38) m/s at this E" \
+        --set speed=1e300
+    grep -qE "pull_twist\.lua:[0-9]+: speed = 1e\+300" err.txt || fail "the refusal names the scene's file and line: $(cat err.txt)"
+    refuse "speed just past c" "speed = 10.5 m/s at E = 40000 Pa: speed (each grip's pull speed) takes a number in [0, 10.38) m/s" --set speed=10.5
+    refuse "E lowered under the default speed" "speed = 0.02 m/s at E = 0.01 Pa: speed (each grip's pull speed) takes a number in [0, 0.005189) m/s" \
+        --set E=0.01
+    has_msg "lower --set speed or raise --set E" "the way out"
+    for ok in "--set speed=10" "--set speed=50 --set E=1e6"; do
+        "$hearth" run "$pt" --quiet --until 1e-9 $ok >out.txt 2>err.txt
+        rc=$?
+        expect_rc 0 "$ok, under the wave speed"
+        has out.txt "tau_y    300 Pa" "$ok: the scene ran"
+    done
+    ;;
 scenes_3d_dx_floor_said)
     # #18 (helper userfix3): no shipped scene raises dx to a 3D floor in silence. Bar set before the run: no
     # "dx = ... math.max(" line in scripts/scenes (the silent form bread, muffins, marshmallow and pancake had), and
