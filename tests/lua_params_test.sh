@@ -167,9 +167,10 @@ dx_3d_floor_said)
     ;;
 params_time_frames_top_named)
     # #18 (helper userfix3): a time (unit "s") tops at s:run's 1e12 s, a frame count (unit "frames") at hearth run
-    # --frames's 1e6; 1e300 is refused by the parameter's own name and range (exit 2), where the shipped scenes had
-    # refused it later by a derived name ("s:run: every = 2.5e+299", exit 1). A declared max under the top stands; a
-    # max or below past it becomes the top; other units keep their open end. Bars set before the run.
+    # --frames's 1e6, a temperature (unit "degC") at the core's 5000 degC (guard.c); 1e300 is refused by the parameter's
+    # own name and range (exit 2), where the shipped scenes had refused it later by a derived name ("s:run: every =
+    # 2.5e+299", exit 1). A declared max under the top stands; a max or below past it becomes the top; other units keep
+    # their open end. Bars set before the run.
     refuse() { # WHAT TEXT --set...
         local what=$1 text=$2
         shift 2
@@ -194,9 +195,11 @@ params_time_frames_top_named)
     refuse "frames past the top" \
         "--set frames=1000001: frames (PNG frames over the run) takes a whole number in [1, 1000000] frames, not 1000001" \
         --set frames=1000001
-    run numbers_tops.lua --set until_t=1e12 --set wait=1e12 --set gap=-1 --set frames=1000000 --set dx=1e300
+    refuse "a temperature past the core's 5000 degC" \
+        "--set pan=1e300: pan (the pan's temperature) takes a number in [-273.15, 5000] degC, not 1e+300" --set pan=1e300
+    run numbers_tops.lua --set until_t=1e12 --set wait=1e12 --set gap=-1 --set frames=1000000 --set pan=5000 --set dx=1e300
     expect_rc 0 "the tops themselves, also's value, and a metre's open end"
-    has out.txt "until_t=1e+12 lambda=20 wait=1e+12 gap=-1 frames=1e+06 dx=1e+300" "the values at the tops"
+    has out.txt "until_t=1e+12 lambda=20 wait=1e+12 gap=-1 frames=1e+06 pan=5000 dx=1e+300" "the values at the tops"
     run numbers_tops.lua --params
     expect_rc 0 "--params"
     has out.txt "      the run's simulated time: a number in (0, 1e+12] s" "until_t's listed top"

@@ -89,11 +89,12 @@ local function num(x)
 end
 
 -- A unit's top (#18): what the run itself takes in that unit. s:run takes no time past 1e12 s (its until_t and every,
--- run.lua) and `hearth run --frames` no more than 1e6 frames (app/cmd_run.c), so a number declared in seconds or
--- frames is refused past them by its own name and range ("--set until_t=1e300: until_t (...) takes a number in (0,
--- 1e+12] s"), not later by what the scene made of it ("s:run: every = 2.5e+299", naming no parameter). One rule for
--- every scene, not a max in each; a declared max or below under the top stands.
-local unit_top = { s = 1e12, frames = 1e6 }
+-- run.lua), `hearth run --frames` no more than 1e6 frames (app/cmd_run.c), and the core no temperature past 5000 degC
+-- (every temperature a scene sets, and the guard's range: core/sim/solver/guard.c), so a number declared in seconds,
+-- frames or degC is refused past them by its own name and range ("--set until_t=1e300: until_t (...) takes a number
+-- in (0, 1e+12] s"), not later by what the scene made of it ("s:run: every = 2.5e+299", naming no parameter). One
+-- rule for every scene, not a max in each; a declared max or below under the top stands.
+local unit_top = { s = 1e12, frames = 1e6, degC = 5000 }
 
 --- h.number{default, min = a, max = b, above = a, below = b, integer = true, unit = "m", what = "meaning",
 --- also = {[0] = "what 0 means"}}: a numeric parameter for h.params with its valid range. min and max are
@@ -104,7 +105,8 @@ local unit_top = { s = 1e12, frames = 1e6 }
 --- run out of time and memory instead of being refused). also lists values outside the range that
 --- the scene gives a meaning of its own (0: the preset's; -1: Table 2's curve). unit and what are shown in the
 --- refusal and in `hearth run SCENE.lua --params`; what is required (a short meaning), unit when the number has one.
---- unit = "s" (a time) tops the range at 1e12 s and unit = "frames" (a count of frames) at 1e6, what the run takes.
+--- unit = "s" (a time) tops the range at 1e12 s, unit = "frames" (a count of frames) at 1e6 and unit = "degC" at
+--- 5000 degC: what the run takes.
 function h.number(t)
   if type(t) ~= "table" then
     error('h.number: expected {default, min = a, max = b, unit = "m", what = "what it means"}', 2)
