@@ -207,7 +207,7 @@ params_time_frames_top_named)
     has out.txt "      the grid spacing: a number in (0, inf) m" "a metre keeps its open end"
     # the shipped scenes that had refused these by a derived name (scripts/validation/hostile_values.sh)
     shipped=$here/../scripts/scenes/baking
-    for sp in "pull_twist until_t" "pull_twist frames" "drying until_t" "drying frames" "bread until_t" "muffins frames"; do
+    for sp in "pull_twist until_t" "pull_twist frames" "drying until_t" "drying frames" "bread until_t" "muffins frames" "muffins cups"; do
         set -- $sp
         "$hearth" run "$shipped/$1.lua" --quiet --set "$2=1e300" >out.txt 2>err.txt
         rc=$?
