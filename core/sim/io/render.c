@@ -382,9 +382,12 @@ static hearth_status check_def(const hearth_scene *s, const hearth_picture_def *
                        d->time_scale);
     if (d->label) {
         const size_t len = strlen(d->label);
-        if (len > HEARTH_PICTURE_LABEL_MAX)
-            return err_set(err, HEARTH_ERR_PARAM, "picture: label of %zu bytes (\"%.20s...\"); at most %d, a short text before the time",
-                           len, d->label, HEARTH_PICTURE_LABEL_MAX);
+        if (len > HEARTH_PICTURE_LABEL_MAX) {
+            int cut = 20; /* its start in the message, cut on a UTF-8 character's first byte */
+            while (cut > 0 && ((unsigned char)d->label[cut] & 0xC0) == 0x80) cut--;
+            return err_set(err, HEARTH_ERR_PARAM, "picture: label of %zu bytes (\"%.*s...\"); at most %d, a short text before the time",
+                           len, cut, d->label, HEARTH_PICTURE_LABEL_MAX);
+        }
         for (size_t k = 0; k < len; k++)
             if ((unsigned char)d->label[k] < 32 || d->label[k] == 127)
                 return err_set(err, HEARTH_ERR_PARAM, "picture: label has a control character (byte %zu); the title is one line", k + 1);
