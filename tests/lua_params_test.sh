@@ -219,16 +219,16 @@ params_time_frames_top_named)
 pull_twist_speed_below_wave_speed)
     # #18 (helper userfix3): pull_twist.lua's grip speed is below the dough's elastic wave speed
     # c = sqrt(E (1 - nu) / ((1 + nu) (1 - 2 nu)) / rho) (nu 0.3, rho 500): 10.38 m/s at the default E = 4e4 Pa, 51.9 at
-    # 1e6 (worked by hand before the run). Past it the scene refuses before building anything, naming speed, E and the
-    # range (--set speed=1e300 had been stopped by the guard at step 1 with advice to lower cfl); under it the scene
-    # builds and runs (set-up only, --until 1e-9).
+    # 1e6 (worked by hand before the run). Past it the scene refuses before building anything (h.refuse: a usage
+    # error, exit 2, as h.params's), naming speed, E and the range (--set speed=1e300 had been stopped by the guard at
+    # step 1 with advice to lower cfl); under it the scene builds and runs (set-up only, --until 1e-9).
     pt=$here/../scripts/scenes/baking/pull_twist.lua
     refuse() { # WHAT TEXT --set...
         local what=$1 text=$2
         shift 2
         "$hearth" run "$pt" --quiet --until 1e-9 "$@" >out.txt 2>err.txt
         rc=$?
-        expect_rc 1 "$what"
+        expect_rc 2 "$what"
         has_msg "$text" "$what"
         grep -q "tau_y" out.txt && fail "$what: the scene ran on past the refused speed"
         echo "$what: $(head -1 err.txt | cut -c1-160)"

@@ -328,6 +328,14 @@ function h.params(defaults)
   return P
 end
 
+--- h.refuse(msg): a scene's own refusal of its parameters where h.params's ranges cannot say it, a check across two
+--- of them (pull_twist's speed against its E, marshmallow's press against its speed): a usage error as h.params's
+--- (exit 2 in hearth run, no traceback) at the scene's line. error() had given exit 1, the code of a scene's own fault.
+function h.refuse(msg)
+  if type(msg) ~= "string" then error("h.refuse: expected the message (a string), got " .. type(msg), 2) end
+  usage_error(msg, 2)
+end
+
 --- For a script that runs a shipped scene (dofile) after parsing its own h.params P, a superset of the scene's
 --- names so that every --set reaches it: from here on the scene's h.params returns P's value of each name it
 --- declares, and its own default for a name P does not know (a parameter the scene gained after the script).

@@ -152,7 +152,7 @@ if physical then
   table.sort(levers) -- the first one set, named the same way every run
   for _, k in ipairs(levers) do
     if P[k] ~= PAPER_LEVERS[k] then
-      error(("--set %s=%s: a lever on Table 2's cookie, for preset=paper only (the physical dough's numbers are "
+      h.refuse(("--set %s=%s: a lever on Table 2's cookie, for preset=paper only (the physical dough's numbers are "
         .. "its own, lua/hearth/dough_physical.lua)"):format(k, tostring(P[k])))
     end
   end

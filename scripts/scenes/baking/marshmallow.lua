@@ -91,7 +91,7 @@ local closure, room = 2 * P.speed * P.press, HM + GAP - HM / 5 -- m: how far the
 if closure > room then
   -- the closure as %.1f mm, or %g past a kilometre (--set speed=1e300 had printed 300 digits)
   local mm = closure * 1e3 < 1e6 and ("%.1f"):format(closure * 1e3) or ("%g"):format(closure * 1e3)
-  error(("--set speed=%g, press=%g: the crackers would close %s mm, more than the %.1f mm that leaves the "
+  h.refuse(("--set speed=%g, press=%g: the crackers would close %s mm, more than the %.1f mm that leaves the "
     .. "marshmallow a fifth of its %.0f mm height; keep 2 speed press <= %.3f m (at this speed, press <= %.3g s)")
     :format(P.speed, P.press, mm, room * 1e3, HM * 1e3, room, room / (2 * P.speed)))
 end

@@ -59,7 +59,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
 local RHO, NU = 500, 0.3
 local wave = math.sqrt(P.E * (1 - NU) / ((1 + NU) * (1 - 2 * NU)) / RHO)
 if not (P.speed < wave) then
-  error(("speed = %g m/s at E = %g Pa: speed (each grip's pull speed) takes a number in [0, %.4g) m/s at this E, below "
+  h.refuse(("speed = %g m/s at E = %g Pa: speed (each grip's pull speed) takes a number in [0, %.4g) m/s at this E, below "
     .. "the dough's elastic wave speed sqrt(E (1 - nu) / ((1 + nu) (1 - 2 nu)) / rho), nu %g, rho %g kg/m^3 (a faster "
     .. "grip tears its end away before the dough feels the pull); lower --set speed or raise --set E")
     :format(P.speed, P.E, wave, NU, RHO))
