@@ -149,7 +149,7 @@ static void range_pair(lua_State *L, int idx, const char *opt, double r[2]) {
 }
 
 /* s:png(field, path, {kind = "slice"|"particles", width, height, axis, at,
- * range = {lo, hi} | "frame", colormap, grow = {lo, hi}, time_scale}) -> path, info
+ * range = {lo, hi} | "frame", colormap, grow = {lo, hi}, time_scale, label}) -> path, info
  * (info: range, data, ticks, colormap, unit, width, height, title: what it drew with) */
 static int l_png(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
@@ -159,13 +159,13 @@ static int l_png(lua_State *L) {
     const char *path = hl_out_path(L, "s:png", luaL_checkstring(L, 3), HL_PATH_MKDIRS, buf, sizeof buf);
     const char *kind = "slice";
     if (lua_istable(L, 4)) {
-        static const char *const keys[] = {"kind", "width", "height", "axis", "at", "range", "colormap", "grow", "time_scale", NULL};
+        static const char *const keys[] = {"kind", "width", "height", "axis", "at", "range", "colormap", "grow", "time_scale", "label", NULL};
         lua_pushnil(L);
         while (lua_next(L, 4)) { /* a misspelt option must not be silently ignored */
             int ok = 0;
             for (int k = 0; keys[k]; k++) ok |= lua_type(L, -2) == LUA_TSTRING && !strcmp(lua_tostring(L, -2), keys[k]);
             if (!ok)
-                return luaL_error(L, "png: unknown option '%s' (valid: kind, width, height, axis, at, range, colormap, grow, time_scale)",
+                return luaL_error(L, "png: unknown option '%s' (valid: kind, width, height, axis, at, range, colormap, grow, time_scale, label)",
                                   luaL_tolstring(L, -2, NULL));
             lua_pop(L, 1);
         }
@@ -197,6 +197,10 @@ static int l_png(lua_State *L) {
         t = lua_getfield(L, 4, "colormap");
         if (t == LUA_TSTRING) d.colormap = lua_tostring(L, -1); /* stays on the stack while the picture is drawn */
         else if (t != LUA_TNIL) return luaL_error(L, "png: colormap = a name (%s), got %s", hearth_colormap_names(), luaL_typename(L, -1));
+        t = lua_getfield(L, 4, "label"); /* stays on the stack while the picture is drawn; hearth_render checks it */
+        if (t == LUA_TSTRING) d.label = lua_tostring(L, -1);
+        else if (t != LUA_TNIL)
+            return luaL_error(L, "png: label = a short text before the time in the title (a string), got %s", luaL_typename(L, -1));
     }
     if (!strcmp(kind, "particles")) d.kind = HEARTH_PICTURE_PARTICLES;
     else if (strcmp(kind, "slice") != 0) return luaL_error(L, "png: kind = '%s'; valid: 'slice', 'particles'", kind);

@@ -88,6 +88,14 @@ local function num(x)
   return ("%.10g"):format(x)
 end
 
+-- A unit's top (#18): what the run itself takes in that unit. s:run takes no time past 1e12 s (its until_t and every,
+-- run.lua), `hearth run --frames` no more than 1e6 frames (app/cmd_run.c), and the core no temperature past 5000 degC
+-- (every temperature a scene sets, and the guard's range: core/sim/solver/guard.c), so a number declared in seconds,
+-- frames or degC is refused past them by its own name and range ("--set until_t=1e300: until_t (...) takes a number
+-- in (0, 1e+12] s"), not later by what the scene made of it ("s:run: every = 2.5e+299", naming no parameter). One
+-- rule for every scene, not a max in each; a declared max or below under the top stands.
+local unit_top = { s = 1e12, frames = 1e6, degC = 5000 }
+
 --- h.number{default, min = a, max = b, above = a, below = b, integer = true, unit = "m", what = "meaning",
 --- also = {[0] = "what 0 means"}}: a numeric parameter for h.params with its valid range. min and max are
 --- inclusive bounds, above and below strict ones (above = 0: > 0); either end may be left open (no bound).
@@ -97,6 +105,8 @@ end
 --- run out of time and memory instead of being refused). also lists values outside the range that
 --- the scene gives a meaning of its own (0: the preset's; -1: Table 2's curve). unit and what are shown in the
 --- refusal and in `hearth run SCENE.lua --params`; what is required (a short meaning), unit when the number has one.
+--- unit = "s" (a time) tops the range at 1e12 s, unit = "frames" (a count of frames) at 1e6 and unit = "degC" at
+--- 5000 degC: what the run takes.
 function h.number(t)
   if type(t) ~= "table" then
     error('h.number: expected {default, min = a, max = b, unit = "m", what = "what it means"}', 2)
@@ -134,6 +144,8 @@ function h.number(t)
   if n.min and n.above then error("h.number: give min or above, not both", 2) end
   if n.max and n.below then error("h.number: give max or below, not both", 2) end
   if not n.what then error('h.number: what = "a short meaning" is required (the refusal and --params show it)', 2) end
+  local top = n.unit and unit_top[n.unit]
+  if top and not ((n.max or n.below or math.huge) <= top) then n.max, n.below = top, nil end
   local lo, hi = n.min or n.above, n.max or n.below
   if lo and hi and not (lo < hi or (lo == hi and n.min and n.max)) then
     error(("h.number: the range from %s to %s is empty"):format(num(lo), num(hi)), 2)
@@ -314,6 +326,14 @@ function h.params(defaults)
   end
   h._params_declared = true
   return P
+end
+
+--- h.refuse(msg): a scene's own refusal of its parameters where h.params's ranges cannot say it, a check across two
+--- of them (pull_twist's speed against its E, marshmallow's press against its speed): a usage error as h.params's
+--- (exit 2 in hearth run, no traceback) at the scene's line. error() had given exit 1, the code of a scene's own fault.
+function h.refuse(msg)
+  if type(msg) ~= "string" then error("h.refuse: expected the message (a string), got " .. type(msg), 2) end
+  usage_error(msg, 2)
 end
 
 --- For a script that runs a shipped scene (dofile) after parsing its own h.params P, a superset of the scene's

@@ -34,9 +34,9 @@ end
 local run_keys = { until_t = true, every = true, on_frame = true, csv = true, probes = true, png = true, until_rest = true,
   vtu = true, ply = true, movie = true }
 local run_png_keys = { field = true, path = true, kind = true, width = true, height = true, axis = true, at = true,
-  range = true, colormap = true, time_scale = true }
+  range = true, colormap = true, time_scale = true, label = true }
 local png_keys = { kind = true, width = true, height = true, axis = true, at = true, range = true, colormap = true, grow = true,
-  time_scale = true }
+  time_scale = true, label = true }
 
 -- s:png checks its options here first, for the "did you mean" (the C method checks again)
 local raw_png = S.png
@@ -60,6 +60,10 @@ local function check_run_outputs(o)
     if ts ~= nil and not (type(ts) == "number" and ts > 0 and ts <= 1e9) then
       error(("s:run: png: time_scale = %s; valid range (0, 1e9], the real seconds one simulated second stands for")
         :format(ts ~= ts and "nan" or tostring(ts)), 3)
+    end
+    local lb = o.png.label -- likewise: its length and characters are hearth_render's to check, at the first frame
+    if lb ~= nil and type(lb) ~= "string" then
+      error(("s:run: png: label = a short text before the time in each frame's title (a string), got %s"):format(type(lb)), 3)
     end
   end
   if o.csv ~= nil and type(o.csv) ~= "string" then
@@ -318,7 +322,8 @@ function S:run(o)
       st.png_range = st.png_range or {}
       local _, info = output(where, "png", self.png, self, field, frame_path(fr, pf.path or "frame_%04d.png"),
         { kind = pf.kind or "particles", width = pf.width, height = pf.height, axis = pf.axis, at = pf.at,
-          range = pf.range, colormap = pf.colormap, grow = st.png_range[field], time_scale = pf.time_scale })
+          range = pf.range, colormap = pf.colormap, grow = st.png_range[field], time_scale = pf.time_scale,
+          label = pf.label })
       if info then st.png_range[field] = info.range end
     end
     if rows then

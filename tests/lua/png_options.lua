@@ -1,4 +1,4 @@
--- png_range_option, png_colormap_option: the options of s:png and s:run's png.
+-- png_range_option, png_colormap_option, png_label_in_title: the options of s:png and s:run's png.
 -- A jelly block at 20 degC in a 180 degC oven, on a tray.
 local h = require "hearth"
 local which = h.params { case = "range" }.case
@@ -31,6 +31,24 @@ if which == "range" then
     png = { field = "temperature", path = "run_%04d.png", range = { 0, 250 }, kind = "slice" } }
   local ok, err = pcall(s.run, s, { until_t = s:stats().t + 0.001, png = { field = "temperature", rnage = { 0, 1 } } })
   print("run_typo " .. tostring(ok) .. " " .. tostring(err))
+elseif which == "label" then
+  -- the label goes first in the title, the time after it; without one the title is the time alone, as before
+  local _, plain = s:png("temperature", "plain.png")
+  print("plain title: " .. plain.title)
+  local _, l = s:png("temperature", "label.png", { label = "oven 110 °C" })
+  print("label title: " .. l.title)
+  local _, ls = s:png("temperature", "label_scaled.png", { label = "oven 110 °C", time_scale = 50 })
+  print("scaled title: " .. ls.title)
+  local _, long = s:png("temperature", "label_64.png", { label = ("x"):rep(64) })
+  print("64-byte title length " .. #long.title)
+  refused { label = ("x"):rep(65) }
+  refused { label = "two\nlines" }
+  refused { label = 3 }
+  s:run { until_t = 0.002, every = 0.001, png = { field = "temperature", path = "run_%04d.png", label = "oven 110 °C" } }
+  local ok, err = pcall(s.run, s, { until_t = s:stats().t + 0.001, png = { field = "temperature", label = {} } })
+  print("run_label_table " .. tostring(ok) .. " " .. tostring(err))
+  ok, err = pcall(s.run, s, { until_t = s:stats().t + 0.001, png = { field = "temperature", label = ("y"):rep(65) } })
+  print("run_label_long " .. tostring(ok) .. " " .. tostring(err))
 else
   local _, c = s:png("temperature", "cividis.png", { colormap = "cividis" })
   show("cividis", c)

@@ -635,7 +635,15 @@ typedef struct hearth_picture_def {
     /// physical presets' oven.time_scale): the title then gives the real time beside the simulated one.
     /// (0, 1e9]; 1 (default) = the title gives the simulated time alone.
     double time_scale;
+    /// A short text the title shows before the time, saying what the frame is of or what its clock means
+    /// ("oven 110 °C": a scene that bakes several ovens into one folder tree); UTF-8, at most
+    /// HEARTH_PICTURE_LABEL_MAX bytes, no control characters. NULL or "" (default) = the time alone. The caller
+    /// keeps it; it is read during the call only.
+    const char *label;
 } hearth_picture_def;
+
+/// The longest hearth_picture_def.label in bytes: with the longest time it still fits the title's 192 bytes.
+#define HEARTH_PICTURE_LABEL_MAX 64
 
 hearth_picture_def hearth_default_picture_def(void);
 
@@ -651,7 +659,7 @@ typedef struct hearth_picture_info {
     double area[4];      ///< the plot area: left, top, width, height (pixels)
     double view_lo[2], view_hi[2]; ///< the domain it shows (m), horizontal then vertical axis
     double bar[4];       ///< the colour bar: left, top, width, height (pixels); range[1] at the top
-    char title[128];     ///< the title as drawn: the time (real and simulated with a time_scale) and the step
+    char title[192];     ///< the title as drawn: the label, the time (real and simulated with a time_scale) and the step
 } hearth_picture_info;
 
 /// Draw a picture of the scene as an RGB PNG, written atomically: the field in

@@ -213,19 +213,25 @@ static void colorbar(canvas *c, const frame *f, int map, const char *field, cons
     canvas_text(c, fmax(0.3 * fs, tx), by - 0.45 * fs, buf, 0.9 * fs, CANVAS_LEFT, CANVAS_BASELINE, 0, FG);
 }
 
-/* The title: the time and the step. A scene whose rates run time_scale times
+/* The title: the label, the time and the step. A scene whose rates run time_scale times
  * fast (a 25 minute bake in 5 simulated seconds) is read in real time, so the
  * title gives that first, in minutes past two of them, and the simulated
- * seconds and the factor after it: a picture in a paper says which clock. */
-static void title(canvas *c, const frame *f, const hearth_scene *s, double time_scale, hearth_picture_info *info) {
+ * seconds and the factor after it: a picture in a paper says which clock.
+ * The label comes first (#18): a frame looked at alone, oven_110/heat_0005.png
+ * among several ovens' folders, says what it is of; the folder's name is lost
+ * once the picture is copied into a note. */
+static void title(canvas *c, const frame *f, const hearth_scene *s, const hearth_picture_def *d, hearth_picture_info *info) {
     char *buf = info->title;
     const size_t n = sizeof info->title;
+    const double time_scale = d->time_scale;
+    int at = d->label && d->label[0] ? snprintf(buf, n, "%s   ", d->label) : 0; /* label <= 64 bytes: fits */
     if (time_scale == 1) {
-        snprintf(buf, n, "t = %.4g s   (step %ld)", s->t, s->step);
+        snprintf(buf + at, n - at, "t = %.4g s   (step %ld)", s->t, s->step);
     } else {
         const double real = s->t * time_scale;
-        if (real >= 120) snprintf(buf, n, "t = %.4g min   (%.4g s simulated x %g, step %ld)", real / 60, s->t, time_scale, s->step);
-        else snprintf(buf, n, "t = %.4g s   (%.4g s simulated x %g, step %ld)", real, s->t, time_scale, s->step);
+        if (real >= 120)
+            snprintf(buf + at, n - at, "t = %.4g min   (%.4g s simulated x %g, step %ld)", real / 60, s->t, time_scale, s->step);
+        else snprintf(buf + at, n - at, "t = %.4g s   (%.4g s simulated x %g, step %ld)", real, s->t, time_scale, s->step);
     }
     canvas_text(c, f->x0, 0.6 * f->fs, buf, 1.0 * f->fs, CANVAS_LEFT, CANVAS_TOP, 0, FG);
 }
@@ -374,6 +380,18 @@ static hearth_status check_def(const hearth_scene *s, const hearth_picture_def *
     if (!(d->time_scale > 0 && d->time_scale <= 1e9))
         return err_set(err, HEARTH_ERR_PARAM, "picture: time_scale = %g; valid range (0, 1e9], 1 for a scene in real time",
                        d->time_scale);
+    if (d->label) {
+        const size_t len = strlen(d->label);
+        if (len > HEARTH_PICTURE_LABEL_MAX) {
+            int cut = 20; /* its start in the message, cut on a UTF-8 character's first byte */
+            while (cut > 0 && ((unsigned char)d->label[cut] & 0xC0) == 0x80) cut--;
+            return err_set(err, HEARTH_ERR_PARAM, "picture: label of %zu bytes (\"%.*s...\"); at most %d, a short text before the time",
+                           len, cut, d->label, HEARTH_PICTURE_LABEL_MAX);
+        }
+        for (size_t k = 0; k < len; k++)
+            if ((unsigned char)d->label[k] < 32 || d->label[k] == 127)
+                return err_set(err, HEARTH_ERR_PARAM, "picture: label has a control character (byte %zu); the title is one line", k + 1);
+    }
     *map = d->colormap ? cmap_by_name(d->colormap) : map_for(d->field);
     if (*map < 0)
         return err_set(err, HEARTH_ERR_PARAM, "picture: colormap '%s' is unknown; valid: %s", d->colormap, cmap_names());
@@ -452,7 +470,7 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
     collider_map_free(&cm);
     axes(c, &f, "x", "y");
     colorbar(c, &f, map, d->field, info->unit, info);
-    title(c, &f, s, d->time_scale, info);
+    title(c, &f, s, d, info);
     return HEARTH_OK;
 }
 
@@ -526,7 +544,7 @@ static hearth_status draw_slice(canvas *c, const hearth_scene *s, const hearth_p
     collider_map_free(&cm);
     axes(c, &f, names[u], names[v]);
     colorbar(c, &f, map, d->field, info->unit, info);
-    title(c, &f, s, d->time_scale, info);
+    title(c, &f, s, d, info);
     return HEARTH_OK;
 }
 

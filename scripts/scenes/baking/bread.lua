@@ -30,7 +30,7 @@ local h = require "hearth"
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
   dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 2.5, above = 0, unit = "s", what = "the bake's simulated time" },
-  frames = h.number { 5, min = 1, integer = true, what = "PNG frames over the bake" },
+  frames = h.number { 5, min = 1, integer = true, unit = "frames", what = "PNG frames over the bake" },
   -- a slit is cut down from the round top (BODY + WIDTH / 2 = 70 mm above the tray): at most to the tray
   slit_depth = h.number { 0.02, min = 0, below = 0.07, unit = "m", what = "the slits' depth below the loaf's top" },
   slit_width = h.number { 0.01, above = 0, below = 0.08, unit = "m",
@@ -44,7 +44,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
 local d3 = P.dim == 3
 -- 3D keeps dx at least dx_min_3d (8 mm: a loaf in minutes); lower it to measure finer (docs/validation.md,
 -- "bread.lua in 3D"); the validation wrappers that hand this scene their own params (crack_heat.lua) leave it unset
-local dx = d3 and math.max(P.dx, P.dx_min_3d or 0.008) or P.dx
+local dx = h.dx_3d(P.dx, P.dx_min_3d or 0.008, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local oven = h.library.paper_oven.bread

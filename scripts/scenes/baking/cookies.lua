@@ -121,7 +121,7 @@ local LEVER_RANGES = {
 local defaults = { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
   dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 0, min = 0, unit = "s", what = "the bake's simulated time (0: the preset's own)" },
-  frames = h.number { 5, min = 1, integer = true, what = "PNG frames over the bake" },
+  frames = h.number { 5, min = 1, integer = true, unit = "frames", what = "PNG frames over the bake" },
   -- at most a dozen of each (muffins.lua's cups likewise): each oven is a bake and each leavener a cookie on every
   -- tray, so the cost grows with the count (a list of 10000 leaveners had laid a tray 10000 cookies wide)
   ovens = h.number { { 190, 150, 110 }, list = true, max_count = 12, min = -273.15, max = 5000, unit = "degC",
@@ -152,7 +152,7 @@ if physical then
   table.sort(levers) -- the first one set, named the same way every run
   for _, k in ipairs(levers) do
     if P[k] ~= PAPER_LEVERS[k] then
-      error(("--set %s=%s: a lever on Table 2's cookie, for preset=paper only (the physical dough's numbers are "
+      h.refuse(("--set %s=%s: a lever on Table 2's cookie, for preset=paper only (the physical dough's numbers are "
         .. "its own, lua/hearth/dough_physical.lua)"):format(k, tostring(P[k])))
     end
   end
@@ -392,8 +392,9 @@ for _, T in ipairs(ovens) do
   s:run { until_t = until_t, every = until_t / P.frames,
     -- one temperature range for every oven (the dough's start to the hottest oven), so their frames compare side
     -- by side; each oven's own run had grown its own range
+    -- the title names the oven: a frame looked at alone (or copied out of oven_110/) says which bake it is
     png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T), time_scale = S,
-      range = { oven.dough_temperature, math.max(table.unpack(ovens)) } },
+      range = { oven.dough_temperature, math.max(table.unpack(ovens)) }, label = ("oven %g °C"):format(T) },
     on_frame = function(f)
       for i, a in ipairs(leaveners) do
         local hgt, spread = measure(i)

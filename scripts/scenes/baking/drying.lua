@@ -23,7 +23,7 @@ local h = require "hearth"
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
   dx = h.number { 0.0025, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 2, above = 0, unit = "s", what = "the run's simulated time" },
-  frames = h.number { 20, min = 1, integer = true, what = "PNG frames over the run" },
+  frames = h.number { 20, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" },
   temperature = h.number { 60, min = -273.15, max = 5000, unit = "degC",
     what = "the oven air's (and the slab's start)" },
   latent_heat = false }
@@ -73,7 +73,10 @@ local function probes()
 end
 -- the columns' units in their names: volume_m2 in 2D (m^2 per metre of depth), volume_m3 in 3D; saturations are 0..1
 local rows = { ("t_s,water_fraction,%s,top_T_degC,top_s,centre_T_degC,centre_s"):format(d3 and "volume_m3" or "volume_m2") }
-s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "saturation", path = "sat_%04d.png" },
+-- the title says what its seconds are: water's rates are a time lapse (scaled up together by a factor the header
+-- does not name, so no time_scale), heat's are an apple's own
+s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "saturation", path = "sat_%04d.png",
+    label = "time lapse: drying's hours in seconds; heat in real time" },
   on_frame = function(f)
     local st = f.scene:stats()
     rows[#rows + 1] = ("%.4f,%.6f,%.8g,%.3f,%.4f,%.3f,%.4f"):format(f.t, st.water_mass / w0, f.scene:volume(), probes())

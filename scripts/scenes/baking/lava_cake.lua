@@ -59,7 +59,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
     also = { [-1] = "the preset's: paper 0.8 s, physical its 12 real minutes" } },
   lift = h.number { 0.4, above = 0, unit = "s", what = "the ring's lift" },
   after = h.number { 0.6, min = 0, unit = "s", what = "the run after the lift" },
-  frames = h.number { 18, min = 1, integer = true, what = "PNG frames over the run" },
+  frames = h.number { 18, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" },
   gas = h.number { 1, min = 0, what = "a factor on the batter's CO2 rate" },
   dt_max = h.number { 0, min = 0, unit = "s", what = "a cap on the time step (0: none)" },
   -- the levers of docs/validation.md "The lava cake stands" (#18, helper lavacake); their defaults are the shipped

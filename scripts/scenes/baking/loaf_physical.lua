@@ -28,7 +28,7 @@
 -- edge stands off the tray.
 local h = require "hearth"
 local P = h.params { dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
-  frames = h.number { 25, min = 1, integer = true, what = "PNG frames over the run" }, latent = true,
+  frames = h.number { 25, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" }, latent = true,
   until_real = h.number { 0, min = 0, unit = "s", what = "the real bake time (0: the oven's own)" },
   tray = h.choice { "separate",
   separate = "friction 0.4: the foot slides out, as on a greased or papered tray",

@@ -69,14 +69,14 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   roast = h.number { 0.9, min = 0, unit = "s", what = "the roast before the press" },
   press = h.number { 1.0, min = 0, unit = "s", what = "the press's time" },
   speed = h.number { 0.01, min = 0, unit = "m/s", what = "each cracker's speed toward the other" },
-  frames = h.number { 20, min = 1, integer = true, what = "PNG frames over the run" },
+  frames = h.number { 20, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" },
   expansion = h.number { 0.1, min = 0, what = "the marshmallow's thermal expansion (the material's)" },
   only = h.choice { "", [""] = "both marshmallows", raw = "the raw one alone", roasted = "the roasted one alone" },
   mode = h.choice("sticky", h.contact_words),
   friction = h.number { 0.5, min = 0,
     what = "the crackers' Coulomb friction coefficient" } } -- mode: the crackers' contact
 local d3 = P.dim == 3
-local dx = d3 and math.max(P.dx, 0.004) or P.dx
+local dx = h.dx_3d(P.dx, 0.004, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local c = D.paper.smore
@@ -89,9 +89,11 @@ local AWAY, LAY = 0.012, 0.001            -- m: the crackers' extra distance in 
 local xc = W / 2
 local closure, room = 2 * P.speed * P.press, HM + GAP - HM / 5 -- m: how far the crackers close, and may
 if closure > room then
-  error(("--set speed=%g, press=%g: the crackers would close %.1f mm, more than the %.1f mm that leaves the "
+  -- the closure as %.1f mm, or %g past a kilometre (--set speed=1e300 had printed 300 digits)
+  local mm = closure * 1e3 < 1e6 and ("%.1f"):format(closure * 1e3) or ("%g"):format(closure * 1e3)
+  h.refuse(("--set speed=%g, press=%g: the crackers would close %s mm, more than the %.1f mm that leaves the "
     .. "marshmallow a fifth of its %.0f mm height; keep 2 speed press <= %.3f m (at this speed, press <= %.3g s)")
-    :format(P.speed, P.press, closure * 1e3, room * 1e3, HM * 1e3, room, room / (2 * P.speed)))
+    :format(P.speed, P.press, mm, room * 1e3, HM * 1e3, room, room / (2 * P.speed)))
 end
 
 -- The material. A marshmallow is a sugar-gelatin foam, not a dough: nothing in it gelatinises, so Fig. 8's

@@ -46,8 +46,10 @@ local h = require "hearth"
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
   dx = h.number { 0.004, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 0, min = 0, unit = "s", what = "the bake's simulated time (0: the preset's own)" },
-  frames = h.number { 6, min = 1, integer = true, what = "PNG frames over the run" },
-  cups = h.number { 3, min = 1, integer = true, what = "muffin cups in a row" },
+  frames = h.number { 6, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" },
+  -- at most a dozen, as cookies' ovens and pull_twist's doughs: each cup widens the box (1e300 had been refused by
+  -- the box's cell count, naming no parameter)
+  cups = h.number { 3, min = 1, max = 12, integer = true, what = "muffin cups in a row" },
   -- the batter's depth above the cup's inner floor (12 mm up), at most to the box's top (100 mm)
   fill = h.number { 0.022, above = 0, below = 0.088, unit = "m", what = "the batter's depth in its cup" },
   -- s:add's range of ppc: 1 to 1000 (lua/hearth/init.lua)
@@ -56,7 +58,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   preset = h.choice { "paper", paper = "h.library.paper.muffin: Ding Table 2, animation units",
     physical = "h.library.dough.muffin: a real batter's properties, its bake in real minutes mapped" } }
 local d3 = P.dim == 3
-local dx = d3 and math.max(P.dx, 0.006) or P.dx
+local dx = h.dx_3d(P.dx, 0.006, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local physical = P.preset == "physical"

@@ -75,7 +75,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 0, min = 0, unit = "s",
     what = "the run's simulated time (0: the preset's own: paper 2 s, physical its 3.5 real minutes)" },
-  frames = h.number { 20, min = 1, integer = true, what = "PNG frames over the run" },
+  frames = h.number { 20, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" },
   width = h.number { 800, min = 64, max = 8192, integer = true, unit = "px",
     what = "the PNG frames' width (the pancake is a quarter of the pan's)" },
   pour = h.number { 0.4, above = 0, unit = "s", what = "the pour's time" },
@@ -99,7 +99,7 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   preset = h.choice { "paper", paper = "h.library.paper.pancake: Ding Table 2, animation units",
     physical = "h.library.dough.pancake: a real batter's properties, its minutes on the griddle mapped" } }
 local d3 = P.dim == 3
-local dx = d3 and math.max(P.dx, 0.004) or P.dx
+local dx = h.dx_3d(P.dx, 0.004, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
 
 local physical = P.preset == "physical"

@@ -39,17 +39,31 @@ local h = require "hearth"
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
   dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 0.4, above = 0, unit = "s", what = "the run's simulated time" },
-  frames = h.number { 4, min = 1, integer = true, what = "PNG frames over the run" }, 
+  frames = h.number { 4, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" }, 
   -- cam_clay_dough's ranges of tau_y, [1e-6, 1e9] Pa, and of eta, [0, 1e12] Pa^3 s; at most a dozen of each, as
   -- cookies.lua's lists: each pair is a strip in the grid, so the cost grows with their product
   taus = h.number { { 300, 1000, 3000 }, list = true, max_count = 12, min = 1e-6, max = 1e9, unit = "Pa",
     what = "the doughs' yield stresses, one column each" },
   etas = h.number { { 1e6, 1e8, 1e10 }, list = true, max_count = 12, min = 0, max = 1e12, unit = "Pa^3 s",
     what = "the doughs' viscoplastic penalties eta, one row each" },
-  speed = h.number { 0.02, min = 0, unit = "m/s", what = "each grip's pull speed" },
+  speed = h.number { 0.02, min = 0, unit = "m/s", what = "each grip's pull speed (below the dough's wave speed)" },
   spin = h.number { 0.5, min = -100, max = 100, unit = "rad/s", what = "each grip's turn rate" },
   -- cam_clay_dough's range of E: [0.01, 1e12] Pa
   E = h.number { 4e4, min = 0.01, max = 1e12, unit = "Pa", what = "the dough's Young's modulus" } }
+-- A grip pulls slower than the dough's elastic (P) wave speed, c = sqrt(E (1 - nu) / ((1 + nu) (1 - 2 nu)) / rho)
+-- (nu 0.3, cam_clay_dough's default; rho 500 kg/m^3 below; 10.4 m/s at the default E): faster, the grip tears
+-- its end away before the rest of the dough can feel the pull (an impact, not a pull), and the explicit step cannot
+-- carry it: its first step is sized by the waves alone, and the guard stops a grip past c / cfl (at the cfl <= 1 the
+-- waves allow, c at most). `--set speed=1e300` had been stopped by the guard at step 1 ("speed inf m/s ... lower
+-- cfl or dt_max", advice that does not fit); now refused here, naming the range at the E given.
+local RHO, NU = 500, 0.3
+local wave = math.sqrt(P.E * (1 - NU) / ((1 + NU) * (1 - 2 * NU)) / RHO)
+if not (P.speed < wave) then
+  h.refuse(("speed = %g m/s at E = %g Pa: speed (each grip's pull speed) takes a number in [0, %.4g) m/s at this E, below "
+    .. "the dough's elastic wave speed sqrt(E (1 - nu) / ((1 + nu) (1 - 2 nu)) / rho), nu %g, rho %g kg/m^3 (a faster "
+    .. "grip tears its end away before the dough feels the pull); lower --set speed or raise --set E")
+    :format(P.speed, P.E, wave, NU, RHO))
+end
 local d3 = P.dim == 3
 local dx = h.dx_3d(P.dx, 0.004, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
@@ -66,7 +80,7 @@ for j, eta in ipairs(etas) do
   for i, tau in ipairs(taus) do
     local xc, yc = (i - 0.5) * CW, (j - 0.45) * CH
     local x0, x1 = xc - L / 2, xc + L / 2
-    local m = h.material("cam_clay_dough", { E = P.E, tau_y = tau, eta = eta, density = 500 })
+    local m = h.material("cam_clay_dough", { E = P.E, tau_y = tau, eta = eta, density = RHO })
     local shape = d3 and h.cylinder(v(xc, yc, zc), { 1, 0, 0 }, T / 2, L / 2) or h.box(v(x0, yc - T / 2), v(x1, yc + T / 2))
     s:add { shape = shape, material = m, ppc = d3 and 8 or 4, jitter = 0 }
     local r = T / 2 + LIP
