@@ -12,13 +12,18 @@
 -- XSPH (eq. 3.34, 0.6 raw to 0.9 baked by eq. 4.4, the thesis's own
 -- stiffening knob) and Monaghan's artificial stress (sph.artificial_stress,
 -- 0.3) against the tensile instability of the stretched dough.
--- Measured with the dough's water (the default since #18 helper sphcrumb, WATER below; docs/validation.md "The
--- angel food cake's crumb holds its water", its bread of the dead part): at 1.2 s relative volume 1.041 (1.062 at
--- dx 1.5 mm), ball top 56.5 mm, one piece with no gap inside; its centre 94.9 degC (94.7), unbrowned, with all its
--- water, under an outer surface at 102.1 degC (104.2) browned 0.020 (0.028): a pale crust
--- (claim_sph_bread_of_the_dead_crumb_pale[_fine]). Without the water (--set water=false, the same bits as before
--- it) the centre reads 118.8 degC, browned 0.044, the outer surface 144.7 degC, 0.22. The rest of this note was
--- measured without the water.
+-- Measured with the dough's water (the default since #18 helper sphcrumb, WATER below) and the dough's own
+-- conduction, heat_int = S kappa / c = 0.283 (since helper deadcrust; docs/validation.md "The bread of the dead's
+-- crust is pale because its oven is"): at 1.2 s relative volume 1.038 (1.056 at dx 1.5 mm), ball top 56.5 mm
+-- (57.0), one piece with no gap inside; its centre 82.6 degC (82.3), unbrowned, with all its water, under an outer
+-- surface at 104.1 degC (107.5) browned 0.023 (0.034), saturation 0.133 (0.067): a pale crust
+-- (claim_sph_bread_of_the_dead_crumb_pale[_fine]), as a 1D slab of the same dough in the same oven
+-- (scripts/validation/dead_crust_slab.py: 105.5 degC, 0.03 at 30 min) is; golden (0.5,
+-- claim_sph_bread_of_the_dead_crust_browns, an expected failure) needs a hotter oven's flux than h = 30 at 180 degC.
+-- With the earlier heat_int 0.5 (kappa 0.90 W/(m K) on S; --set heat_int=0.5): relative volume 1.041 (1.062), centre
+-- 94.9 degC (94.7), outer surface 102.1 degC (104.2) browned 0.020 (0.028). Without the water (--set water=false
+-- --set heat_int=0.5, the same bits as before helper sphcrumb) the centre reads 118.8 degC, browned 0.044, the outer
+-- surface 144.7 degC, 0.22. The rest of this note was measured without the water, with heat_int 0.5.
 -- Measured (2D default, to t = 1.2 s; tests/sph_dead_measure.py reads the
 -- particles_*.csv it writes): relative volume 1.067, ball top 57.5 mm above
 -- the tray, one piece with no gap inside (claim_sph_bread_of_the_dead_one_piece),
@@ -54,6 +59,11 @@
 -- (browning_scale: 1.2 s for 30 minutes): 1500 x 30 / 2700 = 16.7 kg/(m^2 s).
 -- (The thesis's printed form had 4e8, 1.0 in these units at dx 2 mm: the
 -- numbers measured above were taken with it.)
+-- Inside, eq. 3.45's k_h,int = kappa / c on the same S: 1500 x 0.51 / 2700 =
+-- 0.283 kg/(m s) (bread dough's kappa and c, Zanoni et al. 1995 and Choi &
+-- Okos, h.library.dough.bread's; the heat_int parameter). It was 0.5, kappa
+-- 0.90 W/(m K) on S: 1.77x the dough's, so the surface took ~25 min instead of
+-- ~15 to reach 100 degC in the 1D slab of scripts/validation/dead_crust_slab.py.
 -- Writes volume.csv: relative volume (from a density slice), the height of
 -- the top ball and of a bone knuckle above the tray, over time; and
 -- particles_NNNN.csv (the raw loaf, then every frame) and particles_end.csv
