@@ -84,8 +84,8 @@ if [ $claim = crust ]; then
     if python3 -c "import sys; sys.exit(0 if $bo >= 0.5 else 1)"; then
         fail "the crust browns $bo at dx $dx: the expected failure passes; make it a plain requirement"
     fi
-    echo "expected failure: the scene's oven (h = 30 W/(m^2 K), 180 degC) holds a wet dough's surface near 100 degC" \
-        "for the bake's first ~15 min; a 1D slab of the same dough browns its surface 0.03-0.04 by 30 min, the" \
+    echo "expected failure: the scene's oven (h = 30 W/(m^2 K), 180 degC) brings a wet dough's surface to 100 degC" \
+        "only after ~15 min, then holds it there while it dries; a 1D slab of the same dough browns its surface 0.03-0.04 by 30 min, the" \
         "quasi-steady dried front's upper bound 0.06-0.16 (scripts/validation/dead_crust_slab.py): golden needs" \
         "a hotter oven's flux, not this dough's numbers"
     exit 77
