@@ -10,8 +10,10 @@ outer surface: the particles flagged outer. For each, the mean temperature
 over all its particles, and the mean browning and saturation over its dough
 particles (those with a browning). Prints one line a file:
 'FILE centre_T T centre_browning B centre_saturation S outer_browning BO
-outer_saturation SO centre_n N dough_n D' (#18, helper sphcrumb:
-claim_sph_bread_of_the_dead_crumb_pale, tests/sph_dead_test.sh)."""
+outer_saturation SO outer_T TO centre_n N dough_n D' (#18, helper sphcrumb:
+claim_sph_bread_of_the_dead_crumb_pale, tests/sph_dead_test.sh; outer_T, the
+outer surface's mean temperature, helper deadcrust's
+claim_sph_bread_of_the_dead_crust_browns)."""
 import csv, math, os, sys
 
 
@@ -33,6 +35,7 @@ def measure(path, rc):
             "centre_saturation": nanmean([r["saturation"] for r in dough(centre)]),
             "outer_browning": nanmean([r["browning"] for r in dough(outer)]),
             "outer_saturation": nanmean([r["saturation"] for r in dough(outer)]),
+            "outer_T": nanmean([r["T"] for r in outer]),
             "centre_n": len(centre), "dough_n": len(dough(centre))}
 
 

@@ -12,13 +12,18 @@
 -- XSPH (eq. 3.34, 0.6 raw to 0.9 baked by eq. 4.4, the thesis's own
 -- stiffening knob) and Monaghan's artificial stress (sph.artificial_stress,
 -- 0.3) against the tensile instability of the stretched dough.
--- Measured with the dough's water (the default since #18 helper sphcrumb, WATER below; docs/validation.md "The
--- angel food cake's crumb holds its water", its bread of the dead part): at 1.2 s relative volume 1.041 (1.062 at
--- dx 1.5 mm), ball top 56.5 mm, one piece with no gap inside; its centre 94.9 degC (94.7), unbrowned, with all its
--- water, under an outer surface at 102.1 degC (104.2) browned 0.020 (0.028): a pale crust
--- (claim_sph_bread_of_the_dead_crumb_pale[_fine]). Without the water (--set water=false, the same bits as before
--- it) the centre reads 118.8 degC, browned 0.044, the outer surface 144.7 degC, 0.22. The rest of this note was
--- measured without the water.
+-- Measured with the dough's water (the default since #18 helper sphcrumb, WATER below) and the dough's own
+-- conduction, heat_int = S kappa / c = 0.283 (since helper deadcrust; docs/validation.md "The bread of the dead's
+-- crust is pale because its oven is"): at 1.2 s relative volume 1.038 (1.056 at dx 1.5 mm), ball top 56.5 mm
+-- (57.0), one piece with no gap inside; its centre 82.6 degC (82.3), unbrowned, with all its water, under an outer
+-- surface at 104.1 degC (107.5) browned 0.023 (0.034), saturation 0.133 (0.067): a pale crust
+-- (claim_sph_bread_of_the_dead_crumb_pale[_fine]), as a 1D slab of the same dough in the same oven
+-- (scripts/validation/dead_crust_slab.py: 105.5 degC, 0.03 at 30 min) is; golden (0.5,
+-- claim_sph_bread_of_the_dead_crust_browns, an expected failure) needs a hotter oven's flux than h = 30 at 180 degC.
+-- With the earlier heat_int 0.5 (kappa 0.90 W/(m K) on S; --set heat_int=0.5): relative volume 1.041 (1.062), centre
+-- 94.9 degC (94.7), outer surface 102.1 degC (104.2) browned 0.020 (0.028). Without the water (--set water=false
+-- --set heat_int=0.5, the same bits as before helper sphcrumb) the centre reads 118.8 degC, browned 0.044, the outer
+-- surface 144.7 degC, 0.22. The rest of this note was measured without the water, with heat_int 0.5.
 -- Measured (2D default, to t = 1.2 s; tests/sph_dead_measure.py reads the
 -- particles_*.csv it writes): relative volume 1.067, ball top 57.5 mm above
 -- the tray, one piece with no gap inside (claim_sph_bread_of_the_dead_one_piece),
@@ -54,12 +59,21 @@
 -- (browning_scale: 1.2 s for 30 minutes): 1500 x 30 / 2700 = 16.7 kg/(m^2 s).
 -- (The thesis's printed form had 4e8, 1.0 in these units at dx 2 mm: the
 -- numbers measured above were taken with it.)
+-- Inside, eq. 3.45's k_h,int = kappa / c on the same S: 1500 x 0.51 / 2700 =
+-- 0.283 kg/(m s) (bread dough's kappa and c, Zanoni et al. 1995 and Choi &
+-- Okos, h.library.dough.bread's; the heat_int parameter). It was 0.5, kappa
+-- 0.90 W/(m K) on S: 1.77x the dough's, so the surface took ~25 min instead of
+-- ~15 to reach 100 degC in the 1D slab of scripts/validation/dead_crust_slab.py.
 -- Writes volume.csv: relative volume (from a density slice), the height of
 -- the top ball and of a bone knuckle above the tray, over time; and
 -- particles_NNNN.csv (the raw loaf, then every frame) and particles_end.csv
 -- (at until_t): x, y (m), T (degC), outer (1 where the oven's heat
 -- enters, sph_outer.c), browning and saturation per particle.
 local h = require "hearth"
+-- the bread dough's physical properties (lua/hearth/dough_physical.lua: Zanoni et al. 1995, Choi & Okos) and the
+-- scene's time scale S (browning_scale: 1.2 s for a 30-minute bake), which heat_ext, heat_int, the water and the
+-- browning all share
+local BREAD, S = require("hearth.dough_physical").goods.bread, 1500
 -- mu_e, viscosity, lambda and vb0 (the bubble's V_b0, eq. 3.50) in maxwell_sph's ranges
 local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },
   oven = h.number { 180, min = -273.15, max = 5000, unit = "degC", what = "the oven's temperature" },
@@ -74,17 +88,22 @@ local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the g
     what = "Monaghan's epsilon against the tensile instability (h.scene's range)" },
   -- the dough's water (WATER below): true carries the bread dough's, with latent_heat and boiling at 100 degC;
   -- false is the dough before #18 helper sphcrumb, which held none
-  water = true }
+  water = true,
+  -- eq. 3.45's k_h,int = S kappa / c on the dough's own kappa and c (the HEAT note): 1500 x 0.51 / 2700 = 0.283;
+  -- 0.5 was the scene's before #18 helper deadcrust (kappa 0.90 W/(m K) on S = 1500)
+  heat_int = h.number { S * BREAD.conductivity / BREAD.specific_heat, min = 0, max = 1e6, unit = "kg/(m s)",
+    what = "the dough's internal heat conduction k_h,int = S kappa / c (eq. 3.45)" } }
 -- what a run's seconds stand for (S = 1500, the scene's browning_scale and its heat_ext, below)
 print(("bread_of_the_dead.lua: heat (an oven's h = 30 W/(m^2 K)) and browning 1500 times fast: "
-  .. "the %g s run stands for %.0f min, 1 s for %.0f min"):format(P.until_t, P.until_t * 1500 / 60, 1500 / 60))
+  .. "the %g s run stands for %.0f min, 1 s for %.0f min"):format(P.until_t, P.until_t * S / 60, S / 60))
 
 local T0, tray = 26, 0.01
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph",
-  sph = { heat_ext = 16.7, heat_int = 0.5, av_beta = 1, xsph0 = P.xsph0, xsph_f = P.xsph_f, xsph_T0 = T0, xsph_Tf = 120,
+  sph = { heat_ext = 16.7, heat_int = P.heat_int, av_beta = 1, xsph0 = P.xsph0, xsph_f = P.xsph_f, xsph_T0 = T0,
+          xsph_Tf = 120,
           bubble_T0 = T0, tension = true, artificial_stress = P.artificial_stress },
   oven = { temperature = P.oven, beta = 0 },
-  browning = true, browning_scale = 1500, -- Zanoni et al. 1995 kinetics; 1.2 s stand for a 30-minute bake
+  browning = true, browning_scale = S, -- Zanoni et al. 1995 kinetics; 1.2 s stand for a 30-minute bake
   latent_heat = P.water or nil, boiling_point = P.water and 100 or nil }
 
 local props = { density = 1100, bulk = 2e4, lambda = P.lambda, viscosity = P.viscosity, mu_e = P.mu_e }
@@ -97,7 +116,7 @@ local props = { density = 1100, bulk = 2e4, lambda = P.lambda, viscosity = P.vis
 -- (Zanoni et al. 1995's measured crust against crumb, 0.23 of 0.51 W/(m K): SPH's conduction takes their ratio on
 -- sph.heat_int, core/sim/solver/sph_heat.c). The bubbles share the parameters but hold no water (sph_water.c).
 if P.water then
-  local g, S, s0 = require("hearth.dough_physical").goods.bread, 1500, 0.495
+  local g, s0 = BREAD, 0.495
   props.saturation, props.water_diffusivity = s0, g.water_diffusivity_m2s / (373.15 * s0) * S
   props.evaporation = g.evaporation * S
   props.specific_heat, props.dry_specific_heat = g.specific_heat, g.dry_specific_heat
@@ -183,12 +202,12 @@ positions("particles_0000.csv")
 -- the frames' titles give the real time the scene's S = 1500 stands for, then the simulated seconds; browning
 -- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
 -- dark grey discs, which on the browning map read as burnt spots through the crumb
-s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1500,
+s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = S,
   kind = "slice" },
   on_frame = function(f)
     csv[#csv + 1] = ("%.4f,%.5f,%.5f,%.5f"):format(f.t, area() / A0, top_at(cx), top_at(knuckle_x))
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
-    f:png("temperature", "frames/temperature_%04d.png", { time_scale = 1500 })
+    f:png("temperature", "frames/temperature_%04d.png", { time_scale = S })
     positions(("particles_%04d.csv"):format(#csv - 1))
   end }
 positions("particles_end.csv") -- the loaf at until_t (the frames stop one interval short of it)
