@@ -39,6 +39,31 @@ def measure(path, rc):
             "centre_n": len(centre), "dough_n": len(dough(centre))}
 
 
+def crumb_bars(dx, part, at, s_raw, wet, end, bo):
+    """The four bars of the SPH crumb claims (claim_sph_angel_cake_crumb_pale, tests/sph_cake_test.sh;
+    claim_sph_bread_of_the_dead_crumb_pale, tests/sph_dead_test.sh), set by helper sphcrumb before the cake's
+    first run with water: (a) the crumb's browning below 0.1 at the end; (b) at most 103 degC while it holds half
+    its raw water; (c) it keeps half its water; (d) the outer surface browns at least twice the crumb, and 0.01 more.
+    part names the crumb ("the crumb band", "the centre"), at the end's time; s_raw its raw saturation; wet the
+    (when, T) of each frame where it held half its water; end its (browning, saturation) at the end; bo the outer
+    surface's browning there. Prints each bar; returns whether all hold."""
+    bc, s_end = end
+    hot = max(wet, key=lambda w: w[1]) if wet else None
+    checks = [
+        ("a", bc < 0.1, f"{part}'s browning {bc:.4f} {at} (bar < 0.1)"),
+        ("b", bool(wet) and hot[1] <= 103,
+         (f"{part} at most {hot[1]:.2f} degC ({hot[0]}) over the {len(wet)} frames where it held half its water "
+          "(bar 103)") if wet else f"{part} never held half its water"),
+        ("c", s_end >= 0.5 * s_raw,
+         f"{part}'s saturation {s_end:.4f} {at}, {s_end / s_raw:.3f} of its raw {s_raw:.4f} (bar 0.5)"),
+        ("d", bo >= max(2 * bc, bc + 0.01),
+         f"the outer surface's browning {bo:.4f} against {part}'s {bc:.4f} (bar: at least twice, and 0.01 more)"),
+    ]
+    for k, ok, what in checks:
+        print(f"dx {dx}: {'ok  ' if ok else 'FAIL'} ({k}) {what}")
+    return all(ok for _, ok, _ in checks)
+
+
 def main(argv):
     if len(argv) < 3:
         print(__doc__.strip().splitlines()[0]); return 2
