@@ -14,16 +14,24 @@ double progress_wall(void) {
 void progress_start(progress *p, double t_end, int quiet) {
     p->t0_wall = p->last_print = progress_wall();
     p->t_end = t_end;
+    p->run_wall0 = p->t0_wall, p->run_t0 = 0;
     p->steps0 = 0;
     p->tty = isatty(2);
     p->quiet = quiet;
 }
 
+void progress_run_start(progress *p, double t, double t_end, long steps) {
+    p->run_wall0 = progress_wall();
+    p->run_t0 = t, p->t_end = t_end, p->steps0 = steps;
+}
+
+/* The fraction, rate and ETA are the current run's (since progress_run_start), elapsed the process's. */
 static void draw(progress *p, double t, long steps, int final) {
-    const double now = progress_wall(), el = now - p->t0_wall;
-    const double frac = p->t_end > 0 ? t / p->t_end : 1.0;
-    const double sps = el > 0 ? steps / el : 0.0;
-    const double eta = frac > 1e-9 && frac < 1 ? el * (1 - frac) / frac : 0.0;
+    const double now = progress_wall(), el = now - p->t0_wall, run_el = now - p->run_wall0;
+    const double span = p->t_end - p->run_t0;
+    const double frac = span > 0 ? (t - p->run_t0) / span : 1.0;
+    const double sps = run_el > 0 ? (steps - p->steps0) / run_el : 0.0;
+    const double eta = frac > 1e-9 && frac < 1 ? run_el * (1 - frac) / frac : 0.0;
     if (p->tty) {
         char bar[31];
         int k = (int)(frac * 30 + 0.5);
