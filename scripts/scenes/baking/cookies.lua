@@ -421,7 +421,9 @@ for _, T in ipairs(ovens) do
   end
   h.write("cookies.csv", table.concat(rows, "\n") .. "\n")
   if physical then -- the crust's colour (Zanoni et al. 1995's index, 0..1): a picture, and per cookie a printed line
-    s:png("browning", ("oven_%g/browning.png"):format(T), { time_scale = S, range = { 0, 1 } }) -- the index's own 0..1
+    -- the index's own 0..1; titled with its oven as the heat frames are (it had read 't = 11 min' alone)
+    s:png("browning", ("oven_%g/browning.png"):format(T), { time_scale = S, range = { 0, 1 },
+      label = ("oven %g °C"):format(T) })
     local r = s:particles { fields = { "id", "x", "browning" } }
     for i, a in ipairs(leaveners) do
       -- top: the highest particle within dx/2 of the cookie's axis; rim: the one farthest from it; base: the lowest on
