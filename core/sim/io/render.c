@@ -243,7 +243,15 @@ static void title(canvas *c, const frame *f, const hearth_scene *s, const hearth
     double x = f->x0, size = fs;
     if (x + tw > right - fs) {
         x = fmin(f->x0, 0.3 * fs);
-        size = fs * fmax(0.5, fmin(1, (right - fs - x) / tw));
+        const double room = right - fs - x;
+        size = fs * fmax(0.5, fmin(1, room / tw));
+        /* measured again at the smaller size: the font's hinted advances round glyph by glyph, so the width is not
+         * quite proportional (cookies.lua's 95-byte title had come out 10 px longer than scaled, and was cut) */
+        for (int k = 0; k < 4 && size > 0.5 * fs; k++) {
+            const double w = canvas_text_width(c, buf, size);
+            if (w <= room) break;
+            size = fmax(0.5 * fs, size * room / w * 0.99);
+        }
     }
     cairo_save(c->cr);
     cairo_rectangle(c->cr, 0, 0, fmax(0, right - 0.5 * fs), c->h);
