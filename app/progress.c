@@ -16,6 +16,7 @@ void progress_start(progress *p, double t_end, int quiet) {
     p->t_end = t_end;
     p->run_wall0 = p->t0_wall, p->run_t0 = 0;
     p->steps0 = 0;
+    p->shown_t = -1, p->shown_steps = -1;
     p->tty = isatty(2);
     p->quiet = quiet;
 }
@@ -23,6 +24,7 @@ void progress_start(progress *p, double t_end, int quiet) {
 void progress_run_start(progress *p, double t, double t_end, long steps) {
     p->run_wall0 = progress_wall();
     p->run_t0 = t, p->t_end = t_end, p->steps0 = steps;
+    p->shown_t = -1, p->shown_steps = -1; /* a new run's last line is its own, whatever it reads */
 }
 
 /* The fraction, rate and ETA are the current run's (since progress_run_start), elapsed the process's. */
@@ -40,8 +42,12 @@ static void draw(progress *p, double t, long steps, int final) {
         fprintf(stderr, "\r[%s] %3.0f%%  t = %.4g / %.4g s  %.0f steps/s  ETA %.0f s   %s", bar, 100 * frac, t, p->t_end, sps,
                 eta, final ? "\n" : "");
     } else {
+        /* a run's last line once: its last batch of steps may just have printed the same t and steps (a 3D bread
+         * at dx 3 mm, whose batches take seconds, had printed its 100% line twice) */
+        if (final && t == p->shown_t && steps == p->shown_steps) return;
         fprintf(stderr, "progress: t = %.4g / %.4g s (%.0f%%), %ld steps, %.0f steps/s, elapsed %.1f s\n", t, p->t_end,
                 100 * frac, steps, sps, el);
+        p->shown_t = t, p->shown_steps = steps;
     }
     fflush(stderr);
 }

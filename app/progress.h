@@ -7,6 +7,8 @@ typedef struct progress {
     double t0_wall, last_print, t_end;
     double run_wall0, run_t0; /* the current run's start: its wall time and sim time */
     long steps0;              /* the step count at the current run's start */
+    double shown_t;           /* the sim time and steps of the last plain line printed (not on a terminal) */
+    long shown_steps;
     int tty, quiet;
 } progress;
 
