@@ -106,8 +106,11 @@ local h = require "hearth"
 -- The levers that change Table 2's cookie (below, each where it acts), with their defaults: preset=paper's only.
 local PAPER_LEVERS = { baseline = false, reaction_temperature = -1, reaction_width = -1, conductivity = 0.01,
   water = false, soft_until = -1, max_porosity = -1 }
--- each lever's valid range (h.number; -1: the preset's own value, as the scene reads it below)
+-- each lever's valid range (h.number; -1: the preset's own value, as the scene reads it below) or what it switches
+-- (h.flag)
 local LEVER_RANGES = {
+  baseline = h.flag { false, what = "Fig. 17's comparison: Stomakhin et al.'s snow law, no gas, no expansion" },
+  water = h.flag { false, what = "the dough carries bread's water (s_0 0.10): its surface dries and stiffens" },
   reaction_temperature = h.number { -1, min = 0, unit = "degC", what = "the CO2 reaction's temperature",
     also = { [-1] = "the preset's" } },
   reaction_width = h.number { -1, above = 0, unit = "degC", what = "the CO2 reaction's width",

@@ -101,7 +101,7 @@ local P = h.params { dx = h.number { 0.003, above = 0, unit = "m", what = "the g
       .. "thesis's dry eq. 3.51-3.52)" },
   -- the batter's water (WATER below): true carries it, with latent_heat and boiling at 100 degC; false is the batter
   -- before #18 helper sphcrumb, which held none
-  water = true }
+  water = h.flag { true, what = "the batter carries its water: latent heat, boiling at 100 degC (false: the dry batter)" } }
 -- what a run's seconds stand for (S = 1600, the scene's browning_scale and its heat_ext, below)
 print(("angel_food_cake.lua: viscosity and mu_e scaled from Table 4.1's animation units; heat and browning 1600 times fast: "
   .. "the %g s bake stands for %.0f min, 1 s for %.1f min"):format(P.bake, P.bake * 1600 / 60, 1600 / 60))
@@ -306,8 +306,11 @@ s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "fr
 positions("particles_end.csv")
 -- the highest volume in the oven (tests/sph_cake_test.sh reads it), when, and the volume as the bake ends: the
 -- cake is highest about a third of the way into its bake and settles a little before it comes out
-print(("angel food cake: relative volume %.3f at its highest in the oven (t = %.2f s, %.0f min; %.3f as the bake ends), "
-  .. "%.3f at t = %.2f s (mean %.1f degC)"):format(peak, peak_t, peak_t * 1600 / 60, baked or area() / A0,
+-- (a run that stops before the bake's end, --until under bake, says so: it had printed its last volume "as the bake
+-- ends")
+print(("angel food cake: relative volume %.3f at its highest in the oven (t = %.2f s, %.0f min; %s), "
+  .. "%.3f at t = %.2f s (mean %.1f degC)"):format(peak, peak_t, peak_t * 1600 / 60,
+  baked and ("%.3f as the bake ends"):format(baked) or ("still in the oven: the bake ends at %g s"):format(P.bake),
   area() / A0, s:stats().t, mean_T()))
 -- the crumb against the crust as the bake ends (bands.csv's row then; claim_sph_angel_cake_crumb_pale)
 if baked_b then

@@ -74,7 +74,7 @@ local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the g
     what = "Monaghan's epsilon against the tensile instability (h.scene's range)" },
   -- the dough's water (WATER below): true carries the bread dough's, with latent_heat and boiling at 100 degC;
   -- false is the dough before #18 helper sphcrumb, which held none
-  water = true }
+  water = h.flag { true, what = "the dough carries its water: latent heat, boiling at 100 degC (false: the dry dough)" } }
 -- what a run's seconds stand for (S = 1500, the scene's browning_scale and its heat_ext, below)
 print(("bread_of_the_dead.lua: heat (an oven's h = 30 W/(m^2 K)) and browning 1500 times fast: "
   .. "the %g s run stands for %.0f min, 1 s for %.0f min"):format(P.until_t, P.until_t * 1500 / 60, 1500 / 60))
