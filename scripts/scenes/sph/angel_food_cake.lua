@@ -280,10 +280,16 @@ local cooling, peak, peak_t, baked, baked_b = false, 1, 0, nil, nil
 -- the frames' titles give the real time the scene's S = 1600 stands for, then the simulated seconds; browning
 -- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
 -- dark grey discs, which on the browning map read as burnt spots through the crumb
-s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1600,
-  kind = "slice" },
+-- The label says whether the cake is in the oven or cooling in its pan (#18, helper userview3: the cooling frames,
+-- 26-93 min, read like the bake's); the run's browning frame is drawn before on_frame, the temperature frame in it,
+-- both with the label of the state the frame shows, then the label turns when the cake comes out.
+local png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1600, kind = "slice",
+  label = ("angel food cake in the oven, %g °C"):format(P.oven) }
+s:run { until_t = P.until_t, every = 0.1, png = png,
   on_frame = function(f)
+    local label = png.label
     if not cooling and f.t >= P.bake - 1e-9 then
+      png.label = ("angel food cake out of the oven, cooling at %g °C"):format(P.cool_to)
       positions("particles_baked.csv") -- the cake as it leaves the oven
       s:oven(P.cool_to, 0) -- out of the oven, left upright in its pan
       cooling = true
@@ -301,7 +307,8 @@ s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "fr
     h.write("bands.csv", table.concat(bands, "\n") .. "\n")
     -- one range for the whole run: the default one follows the oven, which
     -- the cooling sets to cool_to, and then every frame saturated at 26 degC
-    f:png("temperature", "frames/temperature_%04d.png", { range = { math.min(T0, P.cool_to), P.oven }, time_scale = 1600 })
+    f:png("temperature", "frames/temperature_%04d.png", { range = { math.min(T0, P.cool_to), P.oven }, time_scale = 1600,
+      label = label })
   end }
 positions("particles_end.csv")
 -- the highest volume in the oven (tests/sph_cake_test.sh reads it), when, and the volume as the bake ends: the

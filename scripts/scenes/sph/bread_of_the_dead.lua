@@ -183,12 +183,14 @@ positions("particles_0000.csv")
 -- the frames' titles give the real time the scene's S = 1500 stands for, then the simulated seconds; browning
 -- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
 -- dark grey discs, which on the browning map read as burnt spots through the crumb
+-- the label names the bread and its oven (#18, helper userview3: a frame copied out said only its time)
+local label = ("bread of the dead, oven %g °C"):format(P.oven)
 s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1500,
-  kind = "slice" },
+  kind = "slice", label = label },
   on_frame = function(f)
     csv[#csv + 1] = ("%.4f,%.5f,%.5f,%.5f"):format(f.t, area() / A0, top_at(cx), top_at(knuckle_x))
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
-    f:png("temperature", "frames/temperature_%04d.png", { time_scale = 1500 })
+    f:png("temperature", "frames/temperature_%04d.png", { time_scale = 1500, label = label })
     positions(("particles_%04d.csv"):format(#csv - 1))
   end }
 positions("particles_end.csv") -- the loaf at until_t (the frames stop one interval short of it)
