@@ -320,8 +320,11 @@ print(("angel food cake: relative volume %.3f at its highest in the oven (t = %.
   baked and ("%.3f as the bake ends"):format(baked) or ("still in the oven: the bake ends at %g s"):format(P.bake),
   area() / A0, s:stats().t, mean_T()))
 -- the crumb against the crust as the bake ends (bands.csv's row then; claim_sph_angel_cake_crumb_pale)
+-- a saturation also as its share of the batter's start (WATER, 0.256): 0.19 alone had read as a dried crumb; without
+-- the water, none (it had printed -nan)
+local function sat(x) return P.water and ("%.4f (%.2f of its start)"):format(x, x / 0.256) or "none (water = false)" end
 if baked_b then
-  print(("angel food cake as the bake ends: crumb band %.1f degC, browning %.4f, saturation %.4f; top band %.1f degC, "
-    .. "browning %.4f; outer surface's batter browning %.4f, saturation %.4f"):format(baked_b.T[2], baked_b.B[2],
-    baked_b.S_crumb, baked_b.T[1], baked_b.B[1], baked_b.B_outer, baked_b.S_outer))
+  print(("angel food cake as the bake ends: crumb band %.1f degC, browning %.4f, saturation %s; top band %.1f degC, "
+    .. "browning %.4f; outer surface's batter browning %.4f, saturation %s"):format(baked_b.T[2], baked_b.B[2],
+    sat(baked_b.S_crumb), baked_b.T[1], baked_b.B[1], baked_b.B_outer, sat(baked_b.S_outer)))
 end
