@@ -67,7 +67,8 @@
 -- right of the tube's axis and their difference), bands.csv (the mean
 -- temperatures of the top, crumb and bottom bands away from the pan's walls,
 -- sph_cake_crumb_coolest, their batter's browning, the crumb band's saturation
--- and the outer surface's browning and saturation), particles_raw.csv, particles_baked.csv and
+-- and the outer surface's browning and saturation; both CSVs by simulated time t in s and, last, t_real_min, the
+-- frames' real minutes), particles_raw.csv, particles_baked.csv and
 -- particles_end.csv (the particles after the first step, as the bake ends and
 -- at until_t: tests/sph_cake_rise.py) and browning and
 -- temperature frames (the browning index of Zanoni et al. 1995 from
@@ -274,8 +275,10 @@ end
 s:step(1) -- the density slice needs one SPH step (before it the probe has no SPH density)
 positions("particles_raw.csv")
 local A0 = area()
-local csv = { "t,relative_volume,mean_temperature_C,phase,T_left_C,T_right_C,T_right_minus_left_C" }
-local bands = { "t,T_top_C,T_crumb_C,T_bottom_C,top_mm,B_top,B_crumb,B_bottom,S_crumb,B_outer,S_outer" }
+-- t is the simulated time (s); t_real_min, last, the real minutes the frames' titles give (S = 1600): the CSVs had
+-- the one clock and the frames the other (#18, helper userview3)
+local csv = { "t,relative_volume,mean_temperature_C,phase,T_left_C,T_right_C,T_right_minus_left_C,t_real_min" }
+local bands = { "t,T_top_C,T_crumb_C,T_bottom_C,top_mm,B_top,B_crumb,B_bottom,S_crumb,B_outer,S_outer,t_real_min" }
 local cooling, peak, peak_t, baked, baked_b = false, 1, 0, nil, nil
 -- the frames' titles give the real time the scene's S = 1600 stands for, then the simulated seconds; browning
 -- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
@@ -299,11 +302,11 @@ s:run { until_t = P.until_t, every = 0.1, png = png,
     local b = bands_T()
     if cooling and not baked then baked, baked_b = rv, b end -- the first frame out of the oven: the cake as the bake ends
     local TL, TR = halves_T()
-    csv[#csv + 1] = ("%.4f,%.5f,%.2f,%s,%.4f,%.4f,%.3g"):format(f.t, rv, mean_T(), cooling and "cooling" or "baking",
-      TL, TR, TR - TL)
+    csv[#csv + 1] = ("%.4f,%.5f,%.2f,%s,%.4f,%.4f,%.3g,%.2f"):format(f.t, rv, mean_T(), cooling and "cooling" or "baking",
+      TL, TR, TR - TL, f.t * 1600 / 60)
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
-    bands[#bands + 1] = ("%.4f,%.3f,%.3f,%.3f,%.1f,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g"):format(f.t, b.T[1], b.T[2], b.T[3],
-      b.top * 1e3, b.B[1], b.B[2], b.B[3], b.S_crumb, b.B_outer, b.S_outer)
+    bands[#bands + 1] = ("%.4f,%.3f,%.3f,%.3f,%.1f,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.2f"):format(f.t, b.T[1], b.T[2], b.T[3],
+      b.top * 1e3, b.B[1], b.B[2], b.B[3], b.S_crumb, b.B_outer, b.S_outer, f.t * 1600 / 60)
     h.write("bands.csv", table.concat(bands, "\n") .. "\n")
     -- one range for the whole run: the default one follows the oven, which
     -- the cooling sets to cool_to, and then every frame saturated at 26 degC

@@ -55,7 +55,8 @@
 -- (The thesis's printed form had 4e8, 1.0 in these units at dx 2 mm: the
 -- numbers measured above were taken with it.)
 -- Writes volume.csv: relative volume (from a density slice), the height of
--- the top ball and of a bone knuckle above the tray, over time; and
+-- the top ball and of a bone knuckle above the tray, over time (t in simulated s and, last, t_real_min, the frames'
+-- real minutes); and
 -- particles_NNNN.csv (the raw loaf, then every frame) and particles_end.csv
 -- (at until_t): x, y (m), T (degC), outer (1 where the oven's heat
 -- enters, sph_outer.c), browning and saturation per particle.
@@ -178,7 +179,8 @@ local function positions(path)
 end
 s:step(1) -- the density slice needs one SPH step (before it the probe has no SPH density)
 local A0 = area()
-local csv = { "t,relative_volume,ball_top_m,knuckle_top_m" }
+-- t is the simulated time (s); t_real_min, last, the real minutes the frames' titles give (S = 1500)
+local csv = { "t,relative_volume,ball_top_m,knuckle_top_m,t_real_min" }
 positions("particles_0000.csv")
 -- the frames' titles give the real time the scene's S = 1500 stands for, then the simulated seconds; browning
 -- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
@@ -188,7 +190,7 @@ local label = ("bread of the dead, oven %g °C"):format(P.oven)
 s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1500,
   kind = "slice", label = label },
   on_frame = function(f)
-    csv[#csv + 1] = ("%.4f,%.5f,%.5f,%.5f"):format(f.t, area() / A0, top_at(cx), top_at(knuckle_x))
+    csv[#csv + 1] = ("%.4f,%.5f,%.5f,%.5f,%.2f"):format(f.t, area() / A0, top_at(cx), top_at(knuckle_x), f.t * 1500 / 60)
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
     f:png("temperature", "frames/temperature_%04d.png", { time_scale = 1500, label = label })
     positions(("particles_%04d.csv"):format(#csv - 1))
