@@ -90,8 +90,10 @@ local P = h.params { dx = h.number { 0.003, above = 0, unit = "m", what = "the g
   oven = h.number { 180, above = 26, max = 5000, unit = "degC",
     what = "the oven's temperature, above the batter's 26 degC" },
   cool_to = h.number { 25, min = -273.15, max = 5000, unit = "degC", what = "the air it cools in after the bake" },
-  bake = h.number { 1.5, min = 0, unit = "s", what = "the bake's time before it cools" },
-  until_t = h.number { 3.5, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
+  -- simulated seconds, each 26.7 real minutes (S = 1600, below): --params had not said so, only the run's first line
+  bake = h.number { 1.5, min = 0, unit = "s", what = "the bake's simulated time before it cools (1 s: 26.7 real min)" },
+  until_t = h.number { 3.5, min = 0, unit = "s",
+    what = "the run's simulated time (1 s: 26.7 real min; 0: the set-up alone, measured)" },
   bubble_share = h.number { 0.4, above = 0, max = math.pi / 4,
     what = "the share of the batter seeded as bubble particles" },
   foam = h.number { 1.0, min = 0, max = 100, what = "the batter's initial bubble volume V_b0 (eq. 3.50)" },

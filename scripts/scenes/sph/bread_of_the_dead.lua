@@ -67,7 +67,9 @@ local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the g
   mu_e = h.number { 2000, min = 0.001, max = 10000000000.0, unit = "Pa", what = "the dough's elastic modulus mu_e" },
   viscosity = h.number { 5, min = 0, max = 1e6, unit = "Pa s", what = "the dough's viscosity" },
   lambda = h.number { 20, min = 1e-09, max = 1000000000.0, unit = "s", what = "the dough's relaxation time" },
-  until_t = h.number { 1.2, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
+  -- simulated seconds, each 25 real minutes (S = 1500, below): --params had not said so, only the run's first line
+  until_t = h.number { 1.2, min = 0, unit = "s",
+    what = "the run's simulated time (1 s: 25 real min; 0: the set-up alone, measured)" },
   vb0 = h.number { 1.0, min = 0, max = 100, what = "the bubbles' initial volume V_b0 (eq. 3.50)" },
   xsph0 = h.number { 0.6, min = 0, max = 1, what = "XSPH's epsilon in the raw dough (h.scene's range)" },
   xsph_f = h.number { 0.9, min = 0, max = 1, what = "XSPH's epsilon in the baked dough (h.scene's range)" },
