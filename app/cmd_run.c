@@ -192,7 +192,8 @@ int app_run_parse(run_args *a, int argc, char **argv, const char *cmd) {
 static void on_progress(void *ud, double t, double t_end, long steps, int final) {
     progress *p = ud;
     p->t_end = t_end;
-    if (final) progress_finish(p, t, steps);
+    if (final == HL_PROGRESS_START) progress_run_start(p, t, t_end, steps);
+    else if (final) progress_finish(p, t, steps);
     else progress_update(p, t, steps);
 }
 

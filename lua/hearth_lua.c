@@ -158,9 +158,11 @@ static int l_options(lua_State *L) {
 
 static int l_progress(lua_State *L) {
     const hl_options *o = hl_opts(L);
+    /* the 4th argument: true at a run's end, "start" at its start (run.lua), else nothing */
+    const int phase = lua_type(L, 4) == LUA_TSTRING && !strcmp(lua_tostring(L, 4), "start") ? HL_PROGRESS_START
+                                                                                             : lua_toboolean(L, 4);
     if (o->progress && !o->quiet)
-        o->progress(o->progress_ud, luaL_checknumber(L, 1), luaL_checknumber(L, 2), (long)luaL_checkinteger(L, 3),
-                    lua_toboolean(L, 4));
+        o->progress(o->progress_ud, luaL_checknumber(L, 1), luaL_checknumber(L, 2), (long)luaL_checkinteger(L, 3), phase);
     return 0;
 }
 

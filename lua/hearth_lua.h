@@ -18,6 +18,9 @@
 /// any scene we ship many times over, far below what takes a machine down.
 #define HL_LUA_MEMORY_DEFAULT ((size_t)512 << 20)
 
+/// hl_options.progress's `final` at a run's start (s:run's first call, before its steps)
+enum { HL_PROGRESS_START = 2 };
+
 /// Options a host (the command line) gives the module before scenes run.
 typedef struct hl_options {
     const char *out_dir;    ///< output folder; relative paths in scenes resolve here
@@ -28,7 +31,8 @@ typedef struct hl_options {
     int trusted;            ///< --trust: no sandbox
     const char *const *sets;///< --set k=v strings (NULL-terminated), read by h.params
     const char *assets_dir; ///< where the material tables live (sauces.csv), for h.library
-    /// Progress of s:run (sim time t of t_end after `steps` steps; final = last call). May be NULL.
+    /// Progress of s:run (sim time t of t_end after `steps` steps; final: 0 on the way, 1 the run's last call,
+    /// HL_PROGRESS_START its first, before any step: a new run, whose rate is its own). May be NULL.
     void (*progress)(void *ud, double t, double t_end, long steps, int final);
     void *progress_ud;
     int yield_steps;        ///< s:run and s:step yield (coroutine.yield) between steps, so a host

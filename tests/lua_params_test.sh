@@ -90,6 +90,33 @@ run_params_lists_ranges)
     has out.txt "      the ovens: numbers separated by commas, each in [-273.15, 5000] degC" "a list's range"
     grep -q "dx=" out.txt && fail "--params ran the scene"
     ;;
+params_flag_meaning)
+    # #18 (helper userview3): a true-or-false parameter declared with h.flag says what it switches in --params and in
+    # the refusal of a value other than true or false (exit 2, nothing runs); --set flips it; a bare boolean default
+    # still works, listed bare; h.flag's own declaration errors name the call. Bar set before the run.
+    run flags.lua
+    expect_rc 0 "the defaults"
+    has out.txt "water=true baseline=false png=true" "the defaults"
+    run flags.lua --set water=false --set baseline=true --set png=false
+    expect_rc 0 "flipped"
+    has out.txt "water=false baseline=true png=false" "each flipped"
+    run flags.lua --set water=no
+    expect_rc 2 "a value other than true or false"
+    has_msg "flags.lua:3: --set water=no: water (the batter carries its water) takes true or false" "the refusal"
+    grep -q "water=" out.txt && fail "the scene ran on past the refused value"
+    run flags.lua --params
+    expect_rc 0 "--params"
+    has out.txt "  water = true" "water's default"
+    has out.txt "      the batter carries its water: true or false" "water's meaning"
+    has out.txt "      Stomakhin's law in place of the dough's: true or false" "baseline's meaning"
+    has out.txt "  png = true" "a bare boolean listed as before"
+    grep -q "water=" out.txt && fail "--params ran the scene"
+    run flags.lua
+    has out.txt "declaration refused: true h.flag: expected {true or false" "a number default"
+    has out.txt "h.flag: what = \"what it switches\" is required" "no what"
+    has out.txt "h.flag: unknown key wat" "a misspelt key"
+    [ "$(grep -c 'declaration refused: true' out.txt)" -eq 4 ] || fail "every bad declaration refused: $(cat out.txt)"
+    ;;
 params_number_passed_through_refused)
     # h.pass_params: the scene's ranges hold for what a wrapper passes: the wrapper's own default the scene does
     # not take is the wrapper's error (exit 1) at the scene's h.params line; a --set passed on is a usage error (2)

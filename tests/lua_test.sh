@@ -259,6 +259,24 @@ png_range_option)
     done
     echo "run frames: $r"
     ;;
+progress_rate_per_run)
+    # #18 (helper userview3): a scene that runs one scene after another (cookies.lua's ovens) reports each run's own
+    # steps/s; the second oven of cookies.lua --set preset=physical read 213 steps/s at its first line against the
+    # first's 1923, its steps over the whole process's time. The second run is a quarter of the first (the same work
+    # per step): its last line gives at least 0.5x the first's steps/s, where the process's time gives ~0.2x. (The
+    # helper's first form, two equal runs and a 0.7 bar against ~0.5 before, was changed by the lead at the merge,
+    # before any run of this form: a test sharing two cores with a two-thread test could read 0.67 by load alone.)
+    # Without --quiet: the progress lines are the thing tested (stderr, one plain line every 5 s and one at each run's end).
+    "$hearth" run "$scenes/two_runs.lua" >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "two runs"
+    grep "(100%)" err.txt
+    rates=$(grep "(100%)" err.txt | sed -E 's/.* steps, ([0-9]+) steps\/s.*/\1/')
+    set -- $rates
+    [ $# -eq 2 ] || fail "two runs: expected two final progress lines: $(cat err.txt)"
+    python3 -c "import sys; a, b = float(sys.argv[1]), float(sys.argv[2]); print(f'second run / first: {b / a:.2f}'); sys.exit(0 if b >= 0.5 * a else 1)" "$1" "$2" \
+        || fail "the second run's steps/s $2 is under 0.5x the first's $1 (the same work per step)"
+    ;;
 png_label_in_title)
     # #18 (helper userfix3): png's label goes first in the title, before the time (cookies.lua names its oven, drying.lua
     # its time lapse); without one the title is the time alone, as before; a label that would not fit the title's

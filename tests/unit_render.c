@@ -273,6 +273,52 @@ TEST(png_title_gives_real_time) {
     rm_dir(dir);
 }
 
+/* A long title (a 64-byte label, the real and simulated times, the step) stays clear of the colour bar's
+ * name above the bar (#18, helper userview3: drying.lua's "time lapse: ..." title ran into "saturation (-)" at
+ * 800 px). Bar set before the first run: right of the bar's left edge and above the bar, the picture with the
+ * long title is pixel for pixel the one with no label (only the bar's name is drawn there), and the long
+ * title still leaves ink left of the bar. */
+TEST(png_long_title_clear_of_bar) {
+    char dir[64], plain[128], longp[128];
+    make_dir(dir, sizeof dir);
+    snprintf(plain, sizeof plain, "%s/plain.png", dir);
+    snprintf(longp, sizeof longp, "%s/long.png", dir);
+    hearth_scene *s = heated_scene();
+    CHECK(s != NULL);
+    hearth_error err;
+    CHECK(hearth_scene_step(s, 400, &err) == HEARTH_OK);
+    hearth_picture_def d = hearth_default_picture_def();
+    d.field = "temperature", d.width = 800, d.time_scale = 50;
+    hearth_picture_info a, b;
+    CHECK(hearth_render(s, &d, plain, &a, &err) == HEARTH_OK);
+    char label[65];
+    memset(label, 'W', 64), label[64] = '\0';
+    d.label = label;
+    CHECK(hearth_render(s, &d, longp, &b, &err) == HEARTH_OK);
+    printf("long title (%zu bytes): \"%s\"\n", strlen(b.title), b.title);
+    int w = 0, h = 0, w2 = 0, h2 = 0;
+    unsigned char *pa = decode_rgb(plain, &w, &h), *pb = decode_rgb(longp, &w2, &h2);
+    CHECK(pa && pb && w == w2 && h == h2);
+    if (!pa || !pb || w != w2 || h != h2) {
+        free(pa), free(pb);
+        hearth_scene_destroy(s);
+        rm_dir(dir);
+        return;
+    }
+    int differ = 0, ink = 0;
+    for (int y = 0; y < (int)b.bar[1] - 1; y++) {
+        for (int x = (int)b.bar[0]; x < w; x++) differ += memcmp(pixel(pa, w, x, y), pixel(pb, w, x, y), 3) != 0;
+        for (int x = 0; x < (int)b.bar[0]; x++) ink += pixel(pb, w, x, y)[0] < 128;
+    }
+    printf("above the bar and right of x = %.1f px: %d pixels differ from the unlabelled picture; title ink left of it %d px\n",
+           b.bar[0], differ, ink);
+    CHECK(differ == 0);
+    CHECK(ink > 500);
+    free(pa), free(pb);
+    hearth_scene_destroy(s);
+    rm_dir(dir);
+}
+
 /* Every allocation a picture makes may fail: each failure is HEARTH_ERR_NOMEM
  * with nothing leaked, for both kinds (the colliders' map included). */
 TEST(png_alloc_failures) {
@@ -305,4 +351,4 @@ TEST(png_alloc_failures) {
 }
 
 TEST_MAIN(T(png_fixed_range_across_frames), T(png_colliders_drawn), T(png_colorbar_ticks), T(png_options_checked),
-          T(png_title_gives_real_time), T(png_alloc_failures))
+          T(png_title_gives_real_time), T(png_alloc_failures), T(png_long_title_clear_of_bar))

@@ -156,6 +156,26 @@ function h.number(t)
   return setmetatable(n, number_mt)
 end
 
+local flag_mt = { __name = "hearth.flag" }
+local function is_flag(v) return getmetatable(v) == flag_mt end
+
+--- h.flag{default, what = "meaning"}: a true-or-false parameter for h.params with what it switches, which the refusal
+--- of a value other than true or false and `hearth run SCENE.lua --params` show. A bare boolean default still works,
+--- listed with no meaning (#18, helper userview3: the SPH cake's and bread's `water = true`, drying's `latent_heat =
+--- false` and cookies' `water` and `baseline` were listed as a bare word, with nothing to say what they switch).
+function h.flag(t)
+  if type(t) ~= "table" or type(t[1]) ~= "boolean" then
+    error('h.flag: expected {true or false, what = "what it switches"}', 2)
+  end
+  for k in pairs(t) do
+    if k ~= 1 and k ~= "what" then error(("h.flag: unknown key %s (the default first, then what)"):format(tostring(k)), 2) end
+  end
+  if type(t.what) ~= "string" or t.what == "" then
+    error('h.flag: what = "what it switches" is required (the refusal and --params show it)', 2)
+  end
+  return setmetatable({ default = t[1], what = t.what }, flag_mt)
+end
+
 -- n's range as the messages and the listing show it: "a number in (0, 0.05] m", "a whole number in [1, 20]"
 local function range_text(n)
   local lo = n.min and ("[" .. num(n.min)) or n.above and ("(" .. num(n.above)) or "(-inf"
@@ -230,7 +250,7 @@ end
 -- `hearth run SCENE.lua --params`: the scene's parameters, their defaults and, for a choice, its words.
 local function value_text(v)
   if is_choice(v) then return q(v.default) end
-  if is_number(v) then v = v.default end
+  if is_number(v) or is_flag(v) then v = v.default end
   if type(v) == "number" then return num(v) end -- 40000, not 40000.0; 1e+10, not 10000000000.0
   if type(v) == "table" then
     local t = {}
@@ -248,6 +268,7 @@ local function list_params(defaults)
     lines[#lines + 1] = ("  %s = %s%s"):format(k, value_text(v), is_choice(v) and ", one of:" or "")
     if is_choice(v) then lines[#lines + 1] = word_lines(v, "      ") end
     if is_number(v) then lines[#lines + 1] = ("      %s: %s"):format(v.what, range_text(v)) end
+    if is_flag(v) then lines[#lines + 1] = ("      %s: true or false"):format(v.what) end
   end
   h._list_knobs(lines, defaults)
 end
@@ -280,7 +301,8 @@ end
 --- h.choice{"default", word = "what it means", ...} one of its words (refused otherwise, before the
 --- scene makes anything, naming the scene file, the parameter, every word and the nearest);
 --- h.number{default, min = , max = , unit = , what = , ...} a number in its range (refused otherwise, the same way,
---- naming the parameter, what it means, the value and the range with its unit).
+--- naming the parameter, what it means, the value and the range with its unit); h.flag{default, what = } true or
+--- false (refused otherwise, naming what it switches).
 function h.params(defaults)
   if type(defaults) ~= "table" then error("h.params: expected a table of name = default", 2) end
   local P = {}
@@ -288,6 +310,8 @@ function h.params(defaults)
   for k, v in pairs(defaults) do
     if is_choice(v) or is_number(v) then
       check_default(v, k, 2)
+      P[k] = v.default
+    elseif is_flag(v) then
       P[k] = v.default
     else
       P[k] = v
@@ -311,6 +335,11 @@ function h.params(defaults)
       local m = number_error(d, k, x or v, set_text(k, v))
       if m then usage_error(m, 2) end
       P[k] = x
+    elseif is_flag(d) then
+      if v ~= "true" and v ~= "false" then
+        usage_error(("%s: %s (%s) takes true or false"):format(set_text(k, v), k, d.what), 2)
+      end
+      P[k] = v == "true"
     elseif is_choice(d) then
       local m = word_error(d, k, v, set_text(k, v))
       if m then usage_error(m, 2) end
@@ -358,6 +387,14 @@ function h.pass_params(P)
           local m = refusal(v, k, x, given and set_text(k, given)
             or ("%s = %s, passed by the script's h.pass_params"):format(k, is_choice(v) and q(tostring(x)) or tostring(x)))
           if m and given then usage_error(m, 2) elseif m then error(m, 2) end
+        end
+        Q[k] = x
+      elseif is_flag(v) then -- a wrapper's own value must be a boolean too
+        local x = P[k]
+        if x == nil then x = v.default end
+        if type(x) ~= "boolean" then
+          error(("%s = %s, passed by the script's h.pass_params: %s (%s) takes true or false"):format(k, tostring(x), k,
+            v.what), 2)
         end
         Q[k] = x
       elseif P[k] == nil then

@@ -173,8 +173,8 @@ static void axes(canvas *c, const frame *f, const char *uname, const char *vname
 }
 
 /* The colour bar right of the frame: vmax at the top, ticks and labels on
- * its right, "field (unit)" as its title. */
-static void colorbar(canvas *c, const frame *f, int map, const char *field, const char *unit, hearth_picture_info *info) {
+ * its right, "field (unit)" as its title. Returns where that name starts (px), the title's right limit. */
+static double colorbar(canvas *c, const frame *f, int map, const char *field, const char *unit, hearth_picture_info *info) {
     cairo_t *cr = c->cr;
     const double fs = f->fs;
     const double bx = f->x0 + f->w + 1.2 * fs, bw = 1.2 * fs, by = f->y0, bh = f->h;
@@ -209,8 +209,9 @@ static void colorbar(canvas *c, const frame *f, int map, const char *field, cons
     }
     snprintf(buf, sizeof buf, "%s (%s)", field, unit);
     double tw = canvas_text_width(c, buf, 0.9 * fs);
-    double tx = fmin(bx, c->w - 0.7 * fs - tw); /* right-aligned to the canvas when the name is long */
-    canvas_text(c, fmax(0.3 * fs, tx), by - 0.45 * fs, buf, 0.9 * fs, CANVAS_LEFT, CANVAS_BASELINE, 0, FG);
+    double tx = fmax(0.3 * fs, fmin(bx, c->w - 0.7 * fs - tw)); /* right-aligned to the canvas when the name is long */
+    canvas_text(c, tx, by - 0.45 * fs, buf, 0.9 * fs, CANVAS_LEFT, CANVAS_BASELINE, 0, FG);
+    return tx;
 }
 
 /* The title: the label, the time and the step. A scene whose rates run time_scale times
@@ -219,8 +220,13 @@ static void colorbar(canvas *c, const frame *f, int map, const char *field, cons
  * seconds and the factor after it: a picture in a paper says which clock.
  * The label comes first (#18): a frame looked at alone, oven_110/heat_0005.png
  * among several ovens' folders, says what it is of; the folder's name is lost
- * once the picture is copied into a note. */
-static void title(canvas *c, const frame *f, const hearth_scene *s, const hearth_picture_def *d, hearth_picture_info *info) {
+ * once the picture is copied into a note. The title ends a font size short of the colour bar's name (right, px),
+ * whose line it shares: a long one (a label, the real and simulated times) starts at the canvas's left margin
+ * instead of the plot's and, if it still does not fit, is set smaller, down to half the font size, and past that is cut
+ * there (a 64-byte label of wide letters; info->title keeps it whole) (#18: drying.lua's "time lapse: ..." title had
+ * run into "saturation (-)" at 800 px). */
+static void title(canvas *c, const frame *f, const hearth_scene *s, const hearth_picture_def *d, hearth_picture_info *info,
+                  double right) {
     char *buf = info->title;
     const size_t n = sizeof info->title;
     const double time_scale = d->time_scale;
@@ -233,7 +239,25 @@ static void title(canvas *c, const frame *f, const hearth_scene *s, const hearth
             snprintf(buf + at, n - at, "t = %.4g min   (%.4g s simulated x %g, step %ld)", real / 60, s->t, time_scale, s->step);
         else snprintf(buf + at, n - at, "t = %.4g s   (%.4g s simulated x %g, step %ld)", real, s->t, time_scale, s->step);
     }
-    canvas_text(c, f->x0, 0.6 * f->fs, buf, 1.0 * f->fs, CANVAS_LEFT, CANVAS_TOP, 0, FG);
+    const double fs = f->fs, tw = canvas_text_width(c, buf, fs);
+    double x = f->x0, size = fs;
+    if (x + tw > right - fs) {
+        x = fmin(f->x0, 0.3 * fs);
+        const double room = right - fs - x;
+        size = fs * fmax(0.5, fmin(1, room / tw));
+        /* measured again at the smaller size: the font's hinted advances round glyph by glyph, so the width is not
+         * quite proportional (cookies.lua's 95-byte title had come out 10 px longer than scaled, and was cut) */
+        for (int k = 0; k < 4 && size > 0.5 * fs; k++) {
+            const double w = canvas_text_width(c, buf, size);
+            if (w <= room) break;
+            size = fmax(0.5 * fs, size * room / w * 0.99);
+        }
+    }
+    cairo_save(c->cr);
+    cairo_rectangle(c->cr, 0, 0, fmax(0, right - 0.5 * fs), c->h);
+    cairo_clip(c->cr);
+    canvas_text(c, x, 0.6 * fs, buf, size, CANVAS_LEFT, CANVAS_TOP, 0, FG);
+    cairo_restore(c->cr);
 }
 
 /* Colliders as filled grey shapes: each pixel of the plot area is shaded by
@@ -469,8 +493,7 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
     colliders_draw(c, &cm, 1);
     collider_map_free(&cm);
     axes(c, &f, "x", "y");
-    colorbar(c, &f, map, d->field, info->unit, info);
-    title(c, &f, s, d, info);
+    title(c, &f, s, d, info, colorbar(c, &f, map, d->field, info->unit, info));
     return HEARTH_OK;
 }
 
@@ -543,8 +566,7 @@ static hearth_status draw_slice(canvas *c, const hearth_scene *s, const hearth_p
     colliders_draw(c, &cm, 1);
     collider_map_free(&cm);
     axes(c, &f, names[u], names[v]);
-    colorbar(c, &f, map, d->field, info->unit, info);
-    title(c, &f, s, d, info);
+    title(c, &f, s, d, info, colorbar(c, &f, map, d->field, info->unit, info));
     return HEARTH_OK;
 }
 

@@ -192,7 +192,12 @@ end
 local rows = { "t,height_plain_m,height_one_slit_m,height_two_slits_m,gap_one_slit_m,gap_two_slits_left_m,gap_two_slits_right_m," ..
   "area_plain,area_one_slit,area_two_slits,crack_depth_m,crack_width_m,moisture_top,moisture_centre,cracked,top_arc_m" }
 print(rows[1]) -- the rows each frame prints below are bread.csv's: its header first, so they read as columns
-s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png" },
+-- the frames' titles say which loaf lies where and whose seconds they are (#18, helper userview3: "t = 2.5 s" alone
+-- read as two and a half seconds of a real bake)
+local label = (P.only == 0 and "plain, one slit, two slits" or ({ "plain loaf", "one slit", "two slits" })[P.only])
+  .. "; Table 2's animation units"
+s:run { until_t = P.until_t, every = P.until_t / P.frames,
+  png = { field = "temperature", path = "heat_%04d.png", label = label },
   on_frame = function(f)
     local r = { ("%.3f"):format(f.t) }
     for _, L in ipairs(loaves) do
@@ -218,5 +223,5 @@ s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "temp
   -- for ParaView (open vtu/bread.pvd: the time axis, temperature, stress, ids) and Blender (ply/)
   vtu = { path = "vtu/bread_%04d.vtu" },
   ply = { path = "ply/bread_%04d.ply", color = "temperature", colormap = "inferno" } }
-s:png("damage", "damage.png", { kind = "particles", range = { 0, 1 } })
-s:png("browning", "browning.png")
+s:png("damage", "damage.png", { kind = "particles", range = { 0, 1 }, label = label })
+s:png("browning", "browning.png", { label = label })

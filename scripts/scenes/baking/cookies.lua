@@ -106,8 +106,11 @@ local h = require "hearth"
 -- The levers that change Table 2's cookie (below, each where it acts), with their defaults: preset=paper's only.
 local PAPER_LEVERS = { baseline = false, reaction_temperature = -1, reaction_width = -1, conductivity = 0.01,
   water = false, soft_until = -1, max_porosity = -1 }
--- each lever's valid range (h.number; -1: the preset's own value, as the scene reads it below)
+-- each lever's valid range (h.number; -1: the preset's own value, as the scene reads it below) or what it switches
+-- (h.flag)
 local LEVER_RANGES = {
+  baseline = h.flag { false, what = "Fig. 17's comparison: Stomakhin et al.'s snow law, no gas, no expansion" },
+  water = h.flag { false, what = "the dough carries bread's water (s_0 0.10): its surface dries and stiffens" },
   reaction_temperature = h.number { -1, min = 0, unit = "degC", what = "the CO2 reaction's temperature",
     also = { [-1] = "the preset's" } },
   reaction_width = h.number { -1, above = 0, unit = "degC", what = "the CO2 reaction's width",
@@ -389,12 +392,18 @@ for _, T in ipairs(ovens) do
     return h.top_curvature(s, { keep = function(id) return cookie_of(id) == i end, origin = xs[i], bin = dx,
       fraction = 0.6, z = d3 and zc or nil, rest = rest_y })
   end
+  -- the leaveners too, left to right as they lie on the tray, when they fit a title's 64 bytes (three cookies with
+  -- nothing to say which is which)
+  local lv = {}
+  for i, a in ipairs(leaveners) do lv[i] = ("%g"):format(a) end
+  local oven_label = ("oven %g °C, leaveners %s left to right"):format(T, table.concat(lv, ", "))
+  if #oven_label > 64 then oven_label = ("oven %g °C"):format(T) end
   s:run { until_t = until_t, every = until_t / P.frames,
     -- one temperature range for every oven (the dough's start to the hottest oven), so their frames compare side
     -- by side; each oven's own run had grown its own range
     -- the title names the oven: a frame looked at alone (or copied out of oven_110/) says which bake it is
     png = { field = "temperature", path = ("oven_%g/heat_%%04d.png"):format(T), time_scale = S,
-      range = { oven.dough_temperature, math.max(table.unpack(ovens)) }, label = ("oven %g °C"):format(T) },
+      range = { oven.dough_temperature, math.max(table.unpack(ovens)) }, label = oven_label },
     on_frame = function(f)
       for i, a in ipairs(leaveners) do
         local hgt, spread = measure(i)
@@ -421,7 +430,8 @@ for _, T in ipairs(ovens) do
   end
   h.write("cookies.csv", table.concat(rows, "\n") .. "\n")
   if physical then -- the crust's colour (Zanoni et al. 1995's index, 0..1): a picture, and per cookie a printed line
-    s:png("browning", ("oven_%g/browning.png"):format(T), { time_scale = S, range = { 0, 1 } }) -- the index's own 0..1
+    -- the index's own 0..1; titled with its oven as the heat frames are (it had read 't = 11 min' alone)
+    s:png("browning", ("oven_%g/browning.png"):format(T), { time_scale = S, range = { 0, 1 }, label = oven_label })
     local r = s:particles { fields = { "id", "x", "browning" } }
     for i, a in ipairs(leaveners) do
       -- top: the highest particle within dx/2 of the cookie's axis; rim: the one farthest from it; base: the lowest on

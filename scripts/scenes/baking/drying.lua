@@ -26,7 +26,8 @@ local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what 
   frames = h.number { 20, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" },
   temperature = h.number { 60, min = -273.15, max = 5000, unit = "degC",
     what = "the oven air's (and the slab's start)" },
-  latent_heat = false }
+  latent_heat = h.flag { false,
+    what = "evaporation takes L = 2.26 MJ/kg from the slice's heat (the time lapse makes it ~500x the oven's)" } }
 local d3 = P.dim == 3
 local dx = h.dx_3d(P.dx, 0.004, d3) -- says so when it raises dx
 local function v(x, y, z) return d3 and { x, y, z } or { x, y } end

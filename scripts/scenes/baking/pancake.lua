@@ -173,8 +173,15 @@ end
 
 -- the flip event: checked every 10 ms once the pour is over
 local TURN_STEPS = 100 -- the smooth turn's rate is set this many times
+-- the frames' title (s:run below): the pan, whether the pancake was flipped, and the paper preset's units
+local png
+local function pan_label()
+  return ("pancake on a %g °C pan%s%s"):format(pan_T, flipped and ", flipped" or "",
+    physical and "" or "; Table 2's animation units")
+end
 local function flip(sc)
   flipped, flip_t = true, sc:stats().t
+  if png then png.label = pan_label() end
   if P.flip_dt > 0 then sc:set_dt(nil, P.flip_dt) end
   h.write("flip.csv", ("flip_time_s,bottom_temperature_at_flip_degC\n%.3f,%.2f\n"):format(flip_t, flip_T))
   local function omega(w) return d3 and { 0, 0, -w } or -w end
@@ -268,8 +275,11 @@ if physical then
   head = head .. ",t_real_s,middle_temperature_degC,middle_water_held,bottom_browning,top_browning,water_left"
 end
 local rows = { head }
-s:run { until_t = until_t, every = until_t / P.frames,
-  png = { field = "temperature", path = "heat_%04d.png", time_scale = S, width = P.width },
+-- the title names the pan and, once turned, says so (#18, helper userview3: a frame said only its time, and the
+-- paper preset's seconds are Table 2's animation units); the flip event turns it
+png = { field = "temperature", path = "heat_%04d.png", time_scale = S, width = P.width,
+  label = pan_label() }
+s:run { until_t = until_t, every = until_t / P.frames, png = png,
   on_frame = function(f)
     if P.particles == 1 then write_particles(("particles_%04d.csv"):format(f.index)) end
     local bt, tt, th = faces()
@@ -302,8 +312,8 @@ if physical then
   local lines = { "height_m,temperature_degC,water_held,browning" }
   for _, q in ipairs(prof) do lines[#lines + 1] = ("%.5f,%.2f,%.4f,%.4f"):format(table.unpack(q)) end
   h.write("profile.csv", table.concat(lines, "\n") .. "\n")
-  s:png("browning", "browning.png", { time_scale = S, width = P.width })
-  s:png("saturation", "saturation.png", { time_scale = S, width = P.width })
+  s:png("browning", "browning.png", { time_scale = S, width = P.width, label = pan_label() })
+  s:png("saturation", "saturation.png", { time_scale = S, width = P.width, label = pan_label() })
   local m = inside()
   print(((flip_t and ("flipped at %.1f min (t = %.3f s)"):format(flip_t * S / 60, flip_t) or "not flipped yet")
     .. "; after %.1f min: face on the pan %.1f degC, top %.1f degC (probes), middle "

@@ -130,8 +130,14 @@ end
 
 -- J's colour runs over 1-1.5 (beyond it, the top colour): a necking dough dilates by tens of percent, while the
 -- whole range ran to the one particle torn loose at a grip (J 27 at 0.4 s), which left every strip dark
+-- The title names the grid (#18, helper userview3: the frames showed nine doughs with nothing to say which is which):
+-- the yield stresses left to right and the penalties bottom to top, or, when the lists do not fit a title's 64
+-- bytes, which way each rises.
+local function list(t) local r = {} for i, x in ipairs(t) do r[i] = ("%g"):format(x) end return table.concat(r, ", ") end
+local label = ("tau_y %s Pa across; eta %s up"):format(list(taus), list(etas))
+if #label > 64 then label = "tau_y rises left to right, eta bottom to top" end
 s:run { until_t = P.until_t, every = P.until_t / P.frames,
-  png = { field = "J", path = "j_%04d.png", range = { 1, 1.5 } } }
+  png = { field = "J", path = "j_%04d.png", range = { 1, 1.5 }, label = label } }
 measure(s:stats().t)
 local rows = { "tau_y_Pa,eta_Pa3s,length_m,neck_m,sag_m" }
 for _, d in ipairs(doughs) do

@@ -67,7 +67,8 @@
 -- right of the tube's axis and their difference), bands.csv (the mean
 -- temperatures of the top, crumb and bottom bands away from the pan's walls,
 -- sph_cake_crumb_coolest, their batter's browning, the crumb band's saturation
--- and the outer surface's browning and saturation), particles_raw.csv, particles_baked.csv and
+-- and the outer surface's browning and saturation; both CSVs by simulated time t in s and, last, t_real_min, the
+-- frames' real minutes), particles_raw.csv, particles_baked.csv and
 -- particles_end.csv (the particles after the first step, as the bake ends and
 -- at until_t: tests/sph_cake_rise.py) and browning and
 -- temperature frames (the browning index of Zanoni et al. 1995 from
@@ -89,8 +90,10 @@ local P = h.params { dx = h.number { 0.003, above = 0, unit = "m", what = "the g
   oven = h.number { 180, above = 26, max = 5000, unit = "degC",
     what = "the oven's temperature, above the batter's 26 degC" },
   cool_to = h.number { 25, min = -273.15, max = 5000, unit = "degC", what = "the air it cools in after the bake" },
-  bake = h.number { 1.5, min = 0, unit = "s", what = "the bake's time before it cools" },
-  until_t = h.number { 3.5, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
+  -- simulated seconds, each 26.7 real minutes (S = 1600, below): --params had not said so, only the run's first line
+  bake = h.number { 1.5, min = 0, unit = "s", what = "the bake's simulated time before it cools (1 s: 26.7 real min)" },
+  until_t = h.number { 3.5, min = 0, unit = "s",
+    what = "the run's simulated time (1 s: 26.7 real min; 0: the set-up alone, measured)" },
   bubble_share = h.number { 0.4, above = 0, max = math.pi / 4,
     what = "the share of the batter seeded as bubble particles" },
   foam = h.number { 1.0, min = 0, max = 100, what = "the batter's initial bubble volume V_b0 (eq. 3.50)" },
@@ -101,7 +104,7 @@ local P = h.params { dx = h.number { 0.003, above = 0, unit = "m", what = "the g
       .. "thesis's dry eq. 3.51-3.52)" },
   -- the batter's water (WATER below): true carries it, with latent_heat and boiling at 100 degC; false is the batter
   -- before #18 helper sphcrumb, which held none
-  water = true }
+  water = h.flag { true, what = "the batter carries its water: latent heat, boiling at 100 degC (false: the dry batter)" } }
 -- what a run's seconds stand for (S = 1600, the scene's browning_scale and its heat_ext, below)
 print(("angel_food_cake.lua: viscosity and mu_e scaled from Table 4.1's animation units; heat and browning 1600 times fast: "
   .. "the %g s bake stands for %.0f min, 1 s for %.1f min"):format(P.bake, P.bake * 1600 / 60, 1600 / 60))
@@ -274,16 +277,24 @@ end
 s:step(1) -- the density slice needs one SPH step (before it the probe has no SPH density)
 positions("particles_raw.csv")
 local A0 = area()
-local csv = { "t,relative_volume,mean_temperature_C,phase,T_left_C,T_right_C,T_right_minus_left_C" }
-local bands = { "t,T_top_C,T_crumb_C,T_bottom_C,top_mm,B_top,B_crumb,B_bottom,S_crumb,B_outer,S_outer" }
+-- t is the simulated time (s); t_real_min, last, the real minutes the frames' titles give (S = 1600): the CSVs had
+-- the one clock and the frames the other (#18, helper userview3)
+local csv = { "t,relative_volume,mean_temperature_C,phase,T_left_C,T_right_C,T_right_minus_left_C,t_real_min" }
+local bands = { "t,T_top_C,T_crumb_C,T_bottom_C,top_mm,B_top,B_crumb,B_bottom,S_crumb,B_outer,S_outer,t_real_min" }
 local cooling, peak, peak_t, baked, baked_b = false, 1, 0, nil, nil
 -- the frames' titles give the real time the scene's S = 1600 stands for, then the simulated seconds; browning
 -- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
 -- dark grey discs, which on the browning map read as burnt spots through the crumb
-s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1600,
-  kind = "slice" },
+-- The label says whether the cake is in the oven or cooling in its pan (#18, helper userview3: the cooling frames,
+-- 26-93 min, read like the bake's); the run's browning frame is drawn before on_frame, the temperature frame in it,
+-- both with the label of the state the frame shows, then the label turns when the cake comes out.
+local png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1600, kind = "slice",
+  label = ("angel food cake in the oven, %g °C"):format(P.oven) }
+s:run { until_t = P.until_t, every = 0.1, png = png,
   on_frame = function(f)
+    local label = png.label
     if not cooling and f.t >= P.bake - 1e-9 then
+      png.label = ("angel food cake out of the oven, cooling at %g °C"):format(P.cool_to)
       positions("particles_baked.csv") -- the cake as it leaves the oven
       s:oven(P.cool_to, 0) -- out of the oven, left upright in its pan
       cooling = true
@@ -293,25 +304,32 @@ s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "fr
     local b = bands_T()
     if cooling and not baked then baked, baked_b = rv, b end -- the first frame out of the oven: the cake as the bake ends
     local TL, TR = halves_T()
-    csv[#csv + 1] = ("%.4f,%.5f,%.2f,%s,%.4f,%.4f,%.3g"):format(f.t, rv, mean_T(), cooling and "cooling" or "baking",
-      TL, TR, TR - TL)
+    csv[#csv + 1] = ("%.4f,%.5f,%.2f,%s,%.4f,%.4f,%.3g,%.2f"):format(f.t, rv, mean_T(), cooling and "cooling" or "baking",
+      TL, TR, TR - TL, f.t * 1600 / 60)
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
-    bands[#bands + 1] = ("%.4f,%.3f,%.3f,%.3f,%.1f,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g"):format(f.t, b.T[1], b.T[2], b.T[3],
-      b.top * 1e3, b.B[1], b.B[2], b.B[3], b.S_crumb, b.B_outer, b.S_outer)
+    bands[#bands + 1] = ("%.4f,%.3f,%.3f,%.3f,%.1f,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.2f"):format(f.t, b.T[1], b.T[2], b.T[3],
+      b.top * 1e3, b.B[1], b.B[2], b.B[3], b.S_crumb, b.B_outer, b.S_outer, f.t * 1600 / 60)
     h.write("bands.csv", table.concat(bands, "\n") .. "\n")
     -- one range for the whole run: the default one follows the oven, which
     -- the cooling sets to cool_to, and then every frame saturated at 26 degC
-    f:png("temperature", "frames/temperature_%04d.png", { range = { math.min(T0, P.cool_to), P.oven }, time_scale = 1600 })
+    f:png("temperature", "frames/temperature_%04d.png", { range = { math.min(T0, P.cool_to), P.oven }, time_scale = 1600,
+      label = label })
   end }
 positions("particles_end.csv")
 -- the highest volume in the oven (tests/sph_cake_test.sh reads it), when, and the volume as the bake ends: the
 -- cake is highest about a third of the way into its bake and settles a little before it comes out
-print(("angel food cake: relative volume %.3f at its highest in the oven (t = %.2f s, %.0f min; %.3f as the bake ends), "
-  .. "%.3f at t = %.2f s (mean %.1f degC)"):format(peak, peak_t, peak_t * 1600 / 60, baked or area() / A0,
+-- (a run that stops before the bake's end, --until under bake, says so: it had printed its last volume "as the bake
+-- ends")
+print(("angel food cake: relative volume %.3f at its highest in the oven (t = %.2f s, %.0f min; %s), "
+  .. "%.3f at t = %.2f s (mean %.1f degC)"):format(peak, peak_t, peak_t * 1600 / 60,
+  baked and ("%.3f as the bake ends"):format(baked) or ("still in the oven: the bake ends at %g s"):format(P.bake),
   area() / A0, s:stats().t, mean_T()))
 -- the crumb against the crust as the bake ends (bands.csv's row then; claim_sph_angel_cake_crumb_pale)
+-- a saturation also as its share of the batter's start (WATER, 0.256): 0.19 alone had read as a dried crumb; without
+-- the water, none (it had printed -nan)
+local function sat(x) return P.water and ("%.4f (%.2f of its start)"):format(x, x / 0.256) or "none (water = false)" end
 if baked_b then
-  print(("angel food cake as the bake ends: crumb band %.1f degC, browning %.4f, saturation %.4f; top band %.1f degC, "
-    .. "browning %.4f; outer surface's batter browning %.4f, saturation %.4f"):format(baked_b.T[2], baked_b.B[2],
-    baked_b.S_crumb, baked_b.T[1], baked_b.B[1], baked_b.B_outer, baked_b.S_outer))
+  print(("angel food cake as the bake ends: crumb band %.1f degC, browning %.4f, saturation %s; top band %.1f degC, "
+    .. "browning %.4f; outer surface's batter browning %.4f, saturation %s"):format(baked_b.T[2], baked_b.B[2],
+    sat(baked_b.S_crumb), baked_b.T[1], baked_b.B[1], baked_b.B_outer, sat(baked_b.S_outer)))
 end

@@ -65,7 +65,8 @@
 -- 0.90 W/(m K) on S: 1.77x the dough's, so the surface took ~25 min instead of
 -- ~15 to reach 100 degC in the 1D slab of scripts/validation/dead_crust_slab.py.
 -- Writes volume.csv: relative volume (from a density slice), the height of
--- the top ball and of a bone knuckle above the tray, over time; and
+-- the top ball and of a bone knuckle above the tray, over time (t in simulated s and, last, t_real_min, the frames'
+-- real minutes); and
 -- particles_NNNN.csv (the raw loaf, then every frame) and particles_end.csv
 -- (at until_t): x, y (m), T (degC), outer (1 where the oven's heat
 -- enters, sph_outer.c), browning and saturation per particle.
@@ -80,7 +81,9 @@ local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the g
   mu_e = h.number { 2000, min = 0.001, max = 10000000000.0, unit = "Pa", what = "the dough's elastic modulus mu_e" },
   viscosity = h.number { 5, min = 0, max = 1e6, unit = "Pa s", what = "the dough's viscosity" },
   lambda = h.number { 20, min = 1e-09, max = 1000000000.0, unit = "s", what = "the dough's relaxation time" },
-  until_t = h.number { 1.2, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
+  -- simulated seconds, each 25 real minutes (S = 1500, above): --params had not said so, only the run's first line
+  until_t = h.number { 1.2, min = 0, unit = "s",
+    what = "the run's simulated time (1 s: 25 real min; 0: the set-up alone, measured)" },
   vb0 = h.number { 1.0, min = 0, max = 100, what = "the bubbles' initial volume V_b0 (eq. 3.50)" },
   xsph0 = h.number { 0.6, min = 0, max = 1, what = "XSPH's epsilon in the raw dough (h.scene's range)" },
   xsph_f = h.number { 0.9, min = 0, max = 1, what = "XSPH's epsilon in the baked dough (h.scene's range)" },
@@ -88,7 +91,7 @@ local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the g
     what = "Monaghan's epsilon against the tensile instability (h.scene's range)" },
   -- the dough's water (WATER below): true carries the bread dough's, with latent_heat and boiling at 100 degC;
   -- false is the dough before #18 helper sphcrumb, which held none
-  water = true,
+  water = h.flag { true, what = "the dough carries its water: latent heat, boiling at 100 degC (false: the dry dough)" },
   -- eq. 3.45's k_h,int = S kappa / c on the dough's own kappa and c (the HEAT note): 1500 x 0.51 / 2700 = 0.283;
   -- 0.5 was the scene's before #18 helper deadcrust (kappa 0.90 W/(m K) on S = 1500)
   heat_int = h.number { S * BREAD.conductivity / BREAD.specific_heat, min = 0, max = 1e6, unit = "kg/(m s)",
@@ -197,17 +200,20 @@ local function positions(path)
 end
 s:step(1) -- the density slice needs one SPH step (before it the probe has no SPH density)
 local A0 = area()
-local csv = { "t,relative_volume,ball_top_m,knuckle_top_m" }
+-- t is the simulated time (s); t_real_min, last, the real minutes the frames' titles give (S = 1500)
+local csv = { "t,relative_volume,ball_top_m,knuckle_top_m,t_real_min" }
 positions("particles_0000.csv")
 -- the frames' titles give the real time the scene's S = 1500 stands for, then the simulated seconds; browning
 -- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as
 -- dark grey discs, which on the browning map read as burnt spots through the crumb
+-- the label names the bread and its oven (#18, helper userview3: a frame copied out said only its time)
+local label = ("bread of the dead, oven %g °C"):format(P.oven)
 s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "frames/browning_%04d.png", time_scale = S,
-  kind = "slice" },
+  kind = "slice", label = label },
   on_frame = function(f)
-    csv[#csv + 1] = ("%.4f,%.5f,%.5f,%.5f"):format(f.t, area() / A0, top_at(cx), top_at(knuckle_x))
+    csv[#csv + 1] = ("%.4f,%.5f,%.5f,%.5f,%.2f"):format(f.t, area() / A0, top_at(cx), top_at(knuckle_x), f.t * S / 60)
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
-    f:png("temperature", "frames/temperature_%04d.png", { time_scale = S })
+    f:png("temperature", "frames/temperature_%04d.png", { time_scale = S, label = label })
     positions(("particles_%04d.csv"):format(#csv - 1))
   end }
 positions("particles_end.csv") -- the loaf at until_t (the frames stop one interval short of it)
