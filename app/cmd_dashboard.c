@@ -28,7 +28,7 @@ static void usage(FILE *f) {
                "With no scene it opens the built-in demo. Press ? inside for the keys.\n"
                "  --out DIR         where s, c and the scene's outputs go (default hearth-out/<scene>)\n"
                "  --set k=v         override a parameter the scene declares with h.params{...}\n"
-               "  --until T         stop every s:run at sim time T (s)\n"
+               "  --until T         stop every s:run at sim time T (s), with a frame of the state there\n"
                "  --play            start running instead of paused\n"
                "  --exit-when-done  quit when the scene's runs have finished (for benchmarks)\n"
                "  --lua-memory SIZE ceiling of the scene's Lua memory (default 512M)\n"

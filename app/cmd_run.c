@@ -30,7 +30,7 @@ static void run_usage(FILE *f, const char *cmd) {
         fprintf(f, "usage: hearth run SCENE.lua [--until T] [--frames N] [--vtu DIR] [--movie FILE] [--out DIR] [--set k=v]... [--threads N] [--quiet]\n"
                    "                 [--lua-memory SIZE] [--memory SIZE] [--trust] [--params]\n"
                    "Runs a Lua scene headless. Outputs go to DIR (default ./hearth-out/<scene name>/).\n"
-                   "  --until T    stop every s:run at sim time T (s)\n"
+                   "  --until T    stop every s:run at sim time T (s), with a frame of the state there\n"
                    "  --frames N   N frames per run (every = span / N)\n"
                    "  --vtu DIR    every s:run also writes VTU frames and DIR/frame.pvd (DIR under the outputs)\n"
                    "  --movie FILE every s:run's PNG frames also become the movie FILE (.mp4; 10 fps) through the\n"

@@ -277,6 +277,36 @@ progress_rate_per_run)
     python3 -c "import sys; a, b = float(sys.argv[1]), float(sys.argv[2]); print(f'second run / first: {b / a:.2f}'); sys.exit(0 if b >= 0.5 * a else 1)" "$1" "$2" \
         || fail "the second run's steps/s $2 is under 0.5x the first's $1 (the same work per step)"
     ;;
+run_until_ends_on_frame)
+    # #18 (helper userfix4, from userview3's list): a run cut by --until ends with a frame (and a dump) of the state it
+    # reached, and adds none where it already ends on one. tests/lua/end_frame.lua runs 0.25 s with a frame and a VTU
+    # every 0.1 s. Before: --until 0.05 wrote the t = 0 frame alone (drying.lua --until 0.05 --set frames=1 wrote
+    # sat_0000.png alone). Bars set before the fix: the frames' times are exactly those listed below.
+    frames() { # ARGS...: the frames' times, space-separated
+        run end_frame.lua "$@"
+        expect_rc 0 "end_frame.lua $*"
+        sed -n 's/^frame [0-9]* t = //p' out.txt | tr '\n' ' ' | sed 's/ $//'
+    }
+    expect_frames() { # WANT ARGS...
+        local want=$1 got
+        shift
+        got=$(frames "$@")
+        echo "$*: frames at t = $got (want $want)"
+        [ "$got" = "$want" ] || fail "end_frame.lua $*: frames at t = '$got', want '$want'"
+    }
+    expect_frames "0 0.05" --until 0.05            # under one frame interval: the end's frame
+    expect_frames "0 0.1 0.2 0.25" --until 0.25    # between frames
+    expect_frames "0 0.1 0.2" --until 0.2          # on a frame: no second frame at 0.2
+    expect_frames "0 0.025 0.05" --until 0.05 --frames 2 # --frames divides the span: ends on a frame
+    expect_frames "0 0.1 0.2" # the scene's own until_t (0.25) is the scene's choice: unchanged, no --until
+    # the VTU series ends at the end too: two data sets, the second at t = 0.05
+    expect_frames "0 0.05" --until 0.05 --set vtu=true
+    n=$(grep -c "<DataSet" hearth-out/end_frame/d.pvd)
+    grep "<DataSet" hearth-out/end_frame/d.pvd
+    last=$(sed -n 's/.*timestep="\([^"]*\)".*/\1/p' hearth-out/end_frame/d.pvd | tail -1)
+    [ "$n" -eq 2 ] && python3 -c "import sys; sys.exit(0 if abs(float(sys.argv[1]) - 0.05) < 1e-9 else 1)" "$last" ||
+        fail "--until 0.05 with a VTU series: $n data sets: $(cat hearth-out/end_frame/d.pvd)"
+    ;;
 png_label_in_title)
     # #18 (helper userfix3): png's label goes first in the title, before the time (cookies.lua names its oven, drying.lua
     # its time lapse); without one the title is the time alone, as before; a label that would not fit the title's

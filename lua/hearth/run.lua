@@ -291,6 +291,7 @@ function S:run(o)
   local mv = movie_option(o, opts)
   local t0 = self:_time()
   local until_t = opts.until_t or o.until_t
+  local cut = opts.until_t ~= nil -- the end is --until's (below: it gets a frame)
   if until_t == nil then error("s:run: until_t is required (or pass --until to hearth run)", 2) end
   check_number(until_t, "s:run: until_t", 0, 1e12, "s")
   local rest = o.until_rest
@@ -388,13 +389,16 @@ function S:run(o)
     end
     -- the end's frame: a run that started a step past a multiple of every (a scene's one s:step before its
     -- run, for an SPH density: 0.3 ms of 0.1 s frames) ends that sliver short of its last frame; a frame due
-    -- within 1% of every after the end is the end's, or the run would show no end state
-    local ends_frame = stt.t >= until_t - 1e-12 * math.max(1, until_t) and next_frame - until_t < 0.01 * every
+    -- within 1% of every after the end is the end's, or the run would show no end state. An end set by
+    -- --until is the user's: it always gets its frame and dumps (the scenes take every from their own until_t,
+    -- so --until 0.05 under 0.1 s frames showed t = 0 alone); one due there anyway is written once.
+    local at_end = stt.t >= until_t - 1e-12 * math.max(1, until_t)
+    local ends_frame = at_end and (cut or next_frame - until_t < 0.01 * every)
     if stt.t >= next_frame - 1e-9 * every or at_rest or ends_frame then
       frame() -- a run that stops at rest ends with a frame of the rest state
       next_frame = next_frame + every
     end
-    dumps_write(self, dumps, stt.t, at_rest, where)
+    dumps_write(self, dumps, stt.t, at_rest or (cut and at_end), where)
     core.progress(stt.t, until_t, stt.step, false)
   end
   local stt = self:stats()

@@ -266,6 +266,28 @@ print("neck (m) by (tau_y, eta):", neck)
 sys.exit(0 if neck[(300, 1e8)] > neck[(1000, 1e8)] and neck[(1000, 1e10)] > neck[(1000, 1e8)] else 1)
 PY
     ;;
+# #18 (helper userfix4, from userview3's list): pull_twist.csv says which doughs have torn. Its neck is read two cells
+# inside each grip's face, so a tear at a face was not in it; the columns gap_m (the widest step a chain of particles
+# from grip to grip must take) and torn (gap_m >= dx, twice an intact dough's spacing) say it. Bars set before the
+# run: at the scene's dx (2 mm) and 0.4 s the 300 Pa, eta 1e6 dough (it tears off both grips and falls, neck 0 at
+# 76ac79a) reads torn = 1, gap_m >= dx and neck_m 0; the 300 Pa, eta 1e10 one (a 10.7 mm neck at 76ac79a) reads
+# torn = 0, gap_m < dx and neck_m > 9 mm. Before: no gap_m or torn column.
+pull_twist_torn_column)
+    run pull_twist --set taus=300 --set etas=1e6,1e10 >/dev/null
+    python3 - hearth-out/pull_twist/pull_twist.csv <<'PY' || fail "pull_twist.csv does not say which dough tore (numbers above)"
+import csv, sys
+rows = {float(r["eta_Pa3s"]): r for r in csv.DictReader(open(sys.argv[1]))}
+dx = 0.002
+for eta, r in sorted(rows.items()):
+    print(f"tau_y 300 Pa, eta {eta:g}: neck {r['neck_m']} m, gap {r.get('gap_m')} m, torn {r.get('torn')}")
+if "torn" not in rows[1e6] or "gap_m" not in rows[1e6]:
+    sys.exit(1)
+a, b = rows[1e6], rows[1e10]
+ok = (a["torn"] == "1" and float(a["gap_m"]) >= dx and float(a["neck_m"]) == 0
+      and b["torn"] == "0" and float(b["gap_m"]) < dx and float(b["neck_m"]) > 0.009)
+sys.exit(0 if ok else 1)
+PY
+    ;;
 # #18, Ding Fig. 18: "after roasting a crust forms on the exterior and the
 # interior is melted. When pressed the crust breaks and the inside oozes out."
 # marshmallow.lua as a user runs it (2D, dx 2 mm; _fine 1.5 mm): the roasted

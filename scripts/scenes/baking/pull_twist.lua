@@ -13,8 +13,11 @@
 -- Writes, under hearth-out/pull_twist/: j_%04d.png (the volume ratio J:
 -- where a dough dilates as it necks and tears) and pull_twist.csv, per
 -- dough: its length (the extent of its material along the pull), the
--- thinnest section of its free part (the neck; 0 = torn through), and how
--- far its free part sagged.
+-- thinnest section of its free part (the neck; 0 = torn through), how
+-- far its free part sagged, gap_m (the widest step a chain of particles
+-- from one grip to the other must take; an intact dough's particles lie
+-- dx / 2 apart) and torn (1 when gap_m >= dx: the dough has parted
+-- somewhere, at a grip's face too, and its neck reads 0).
 -- What it shows (2D, dx 2 mm, 0.4 s, neck of the 12 mm strips; measured at
 -- commit 76ac79a, #18 helper userview): at eta = 1e8 a 300 Pa dough flows along its
 -- whole length and keeps a 10.2 mm neck, a 1000 Pa one necks next to its
@@ -24,7 +27,10 @@
 -- the 3000 Pa one tears off one grip and hangs from the other (0), and the
 -- 1000 Pa one hangs 6.7 mm low from both grips by threads (8.8 mm: the neck
 -- is read from two cells inside each grip's face, so a tear at the face
--- itself is not in it; look at j_0004.png). (Before, at commit f8dc5d5, the
+-- itself is not in it; look at j_0004.png; gap_m reads 1.9 mm there, under
+-- dx: loose particles a little under a cell apart still join it to both
+-- grips, where the intact doughs' widest steps are 1.4-1.5 mm and the two
+-- torn ones' over 4 mm; #18 helper userfix4). (Before, at commit f8dc5d5, the
 -- necks at eta = 1e8 were 10.2, 3.9 and 0 mm and all three tore at 1e6.)
 -- The porous Cam-clay surface (eq. 12) yields in tension and dilates where
 -- a dough necks, so the stiffer doughs localise. 3D (dx 4 mm, at f8dc5d5, not
@@ -110,6 +116,68 @@ local function measure(t)
     local fa, fb = d.x0 + G - P.speed * t, d.x1 - G + P.speed * t
     if x > fa + dx and x < fb - dx then d.sy, d.n = d.sy + y, d.n + 1 end
   end
+  -- gap: the widest step a chain of particles from one grip to the other must take (the smallest distance at which
+  -- particles that close link the grips), searched up to 2 dx; torn: a gap of a grid cell dx or more, twice an intact
+  -- dough's spacing (dx / 2 at 4 particles a cell in 2D and 8 in 3D): a hole in the dough, seen in the frames, whose
+  -- particles are drawn about their own spacing across. (MPM still passes momentum across gaps of up to ~3 dx
+  -- through the nodes two particles share, so a torn dough may still hang by the grid's reach: torn says the dough
+  -- has parted.) A tear at a grip's face lies outside the neck's columns (two cells inside each face, below), which
+  -- had read a dough whose grips only loose particles still join as necked (8.8 mm, tau_y 1000 Pa, eta 1e6; #18
+  -- helpers userview3, userfix4).
+  local reach = 2 * dx -- the search's cells: a gap up to reach is found among the 3 (x 3) x 3 next cells
+  for _, d in ipairs(doughs) do d.at, d.cell, d.seeds, d.goal = {}, {}, {}, {} end
+  local r = T / 2 + LIP + dx -- a grip's half height, and a cell: the particles it holds
+  local function key(i, j, k) return (i + 1) + 4096 * ((j + 1) + 4096 * (k + 1)) end
+  for k = 1, #X, 3 do
+    local x, y = X[k], X[k + 1]
+    local i, j = math.floor(x / CW) + 1, math.floor(y / CH) + 1
+    local d = doughs[(math.max(1, math.min(#etas, j)) - 1) * #taus + math.max(1, math.min(#taus, i))]
+    local c = key(math.floor(x / reach), math.floor(y / reach), d3 and math.floor(X[k + 2] / reach) or 0)
+    d.cell[c] = d.cell[c] or {}
+    table.insert(d.cell[c], k)
+    d.at[k] = c
+    if math.abs(y - d.yc) < r then
+      if x < d.x0 + G - P.speed * t then d.seeds[#d.seeds + 1] = k end -- in grip A, left of its face
+      if x > d.x1 - G + P.speed * t then d.goal[k] = true end          -- in grip B, right of its face
+    end
+  end
+  local kz = d3 and 1 or 0
+  local function links(d, within) -- do particles closer than within link the grips?
+    local seen, queue = {}, {}
+    for _, k in ipairs(d.seeds) do if not seen[k] then seen[k] = true; queue[#queue + 1] = k end end
+    local head = 1
+    while head <= #queue do
+      local p = queue[head]
+      head = head + 1
+      if d.goal[p] then return true end
+      for dk = -kz, kz do
+        for dj = -1, 1 do
+          for di = -1, 1 do
+            for _, q in ipairs(d.cell[d.at[p] + di + 4096 * (dj + 4096 * dk)] or {}) do
+              if not seen[q] then
+                local ex, ey, ez = X[q] - X[p], X[q + 1] - X[p + 1], X[q + 2] - X[p + 2]
+                if ex * ex + ey * ey + ez * ez < within * within then seen[q] = true; queue[#queue + 1] = q end
+              end
+            end
+          end
+        end
+      end
+    end
+    return false
+  end
+  for _, d in ipairs(doughs) do
+    if links(d, reach) then -- bisect the gap to a 2^-16 of reach
+      local lo, hi = 0, reach
+      for _ = 1, 16 do
+        local mid = 0.5 * (lo + hi)
+        if links(d, mid) then hi = mid else lo = mid end
+      end
+      d.gap = hi
+    else
+      d.gap = reach -- or wider
+    end
+    d.torn = d.gap >= dx
+  end
   for _, d in ipairs(doughs) do
     local fa, fb = d.x0 + G - P.speed * t + 2 * dx, d.x1 - G + P.speed * t - 2 * dx
     local neck, ncol, nres = math.huge, math.max(2, math.floor((fb - fa) / dx)), 200
@@ -123,7 +191,7 @@ local function measure(t)
       for _, val in ipairs(col) do if val == val then c = c + 1 end end
       neck = math.min(neck, c * (yhi - ylo) / nres)
     end
-    d.neck = neck
+    d.neck = d.torn and 0 or neck -- the header's 0 = torn through, wherever the tear is
     d.sag = d.n > 0 and d.yc - d.sy / d.n or 0 / 0
   end
 end
@@ -139,10 +207,11 @@ if #label > 64 then label = "tau_y rises left to right, eta bottom to top" end
 s:run { until_t = P.until_t, every = P.until_t / P.frames,
   png = { field = "J", path = "j_%04d.png", range = { 1, 1.5 }, label = label } }
 measure(s:stats().t)
-local rows = { "tau_y_Pa,eta_Pa3s,length_m,neck_m,sag_m" }
+local rows = { "tau_y_Pa,eta_Pa3s,length_m,neck_m,sag_m,gap_m,torn" }
 for _, d in ipairs(doughs) do
-  rows[#rows + 1] = ("%g,%g,%.5f,%.5f,%.5f"):format(d.tau, d.eta, d.hi - d.lo, d.neck, d.sag)
-  print(("tau_y %6g Pa, eta %6g: length %.4f m, neck %.4f m (of %.3f), sag %.4f m"):format(d.tau, d.eta, d.hi - d.lo,
-    d.neck, T, d.sag))
+  rows[#rows + 1] = ("%g,%g,%.5f,%.5f,%.5f,%.5f,%d"):format(d.tau, d.eta, d.hi - d.lo, d.neck, d.sag, d.gap,
+    d.torn and 1 or 0)
+  print(("tau_y %6g Pa, eta %6g: length %.4f m, neck %.4f m (of %.3f), sag %.4f m, gap %.4f m%s"):format(d.tau, d.eta,
+    d.hi - d.lo, d.neck, T, d.sag, d.gap, d.torn and ", torn" or ""))
 end
 h.write("pull_twist.csv", table.concat(rows, "\n") .. "\n")
