@@ -321,10 +321,24 @@ static hearth_status splat(const hearth_scene *s, int f, const lattice *L, doubl
     const double la2 = L->ea[0] * L->ea[0] + L->ea[1] * L->ea[1] + L->ea[2] * L->ea[2];
     const double lb2 = L->eb[0] * L->eb[0] + L->eb[1] * L->eb[1] + L->eb[2] * L->eb[2];
     const double *X = pcold(ps, PC_X);
+    /* A line (or a point): a particle weighs on a sample only within 1.5 dx of it on every axis, so within
+     * 1.5 dx sqrt(D) of the line; one farther is passed over before its weights are made (they would all be 0:
+     * the same sums). A line probe had walked every particle's stencil (pull_twist's neck: thousands a frame). */
+    const int line = L->nb == 1;
+    const double reach2 = 2.25 * dx * dx * D;
     for (int i = 0; i < ps->n; i++) {
         const double *x = X + 3 * i;
         /* candidate sample range: project onto the lattice axes (they are orthogonal) */
         double rel[3] = {x[0] - L->origin[0], x[1] - L->origin[1], x[2] - L->origin[2]};
+        if (line) {
+            const double t = la2 > 0 ? (rel[0] * L->ea[0] + rel[1] * L->ea[1] + rel[2] * L->ea[2]) / la2 : 0.0;
+            double q2 = 0;
+            for (int d = 0; d < D; d++) {
+                const double e = rel[d] - t * L->ea[d];
+                q2 += e * e;
+            }
+            if (q2 > reach2 * (1 + 1e-9)) continue;
+        }
         int a0 = 0, a1 = L->na - 1, b0 = 0, b1 = L->nb - 1;
         if (la2 > 0) {
             double ta = (rel[0] * L->ea[0] + rel[1] * L->ea[1] + rel[2] * L->ea[2]) / la2, ra = r / sqrt(la2);
