@@ -432,17 +432,9 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
     /* a slip or separate face holds a node only where the body touches it (mpm_touch.c): the block's masks,
      * each made when a node first asks */
     mpm_touch_cache touch = {.done = 0};
-    /* the colliders near this block's nodes (all of them when more than COLLIDER_NEAR_CAP are) */
-    int near[COLLIDER_NEAR_CAP], nnear = -1;
-    if (s->ncol > 0) {
-        double blo[3] = {0, 0, 0}, bhi[3] = {0, 0, 0};
-        for (int d = 0; d < D; d++) {
-            blo[d] = g->lo[d] + bc[d] * GRID_B * g->dx;
-            bhi[d] = blo[d] + (GRID_B - 1) * g->dx;
-        }
-        nnear = collider_list_near_box(s->cols, s->ncol, blo, bhi, near);
-    }
-    const int nwalk = nnear < 0 ? s->ncol : nnear;
+    int near[COLLIDER_NEAR_CAP]; /* the colliders near this block's nodes (mpm_block.h) */
+    double blo[3], bhi[3];
+    const int nnear = mpm_block_colliders(s, bc, 0, blo, bhi, near), nwalk = nnear < 0 ? s->ncol : nnear;
     for (int l = 0; l < NPB; l++) {
         const double m = node[l];
         if (m <= 0.0) {

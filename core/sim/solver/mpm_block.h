@@ -11,6 +11,22 @@
 
 #define FORCE_INLINE static inline __attribute__((always_inline))
 
+/* The colliders near grid block bc (colliders.h's collider_list_near_box) into near: the box of the block's
+ * nodes grown by `cells` on each side (into lo, hi). Returns -1, "walk them all", without colliders or when more
+ * than COLLIDER_NEAR_CAP are near. The grid update asks for its nodes (0 cells), G2P two cells past them (its
+ * particles start inside, and move). */
+static inline int mpm_block_colliders(const hearth_scene *s, const int bc[3], int cells, double lo[3], double hi[3],
+                                      int *near) {
+    const grid *g = &s->g;
+    for (int d = 0; d < 3; d++) lo[d] = hi[d] = 0;
+    if (s->ncol <= 0) return -1;
+    for (int d = 0; d < g->dim; d++) {
+        lo[d] = g->lo[d] + (bc[d] * GRID_B - cells) * g->dx;
+        hi[d] = g->lo[d] + (bc[d] * GRID_B + GRID_B - 1 + cells) * g->dx;
+    }
+    return collider_list_near_box(s->cols, s->ncol, lo, hi, near);
+}
+
 /* Whether this step updates heat and water on the grid, and over what time:
  * the fields' clock (fields/field_clock.c) skips them on most steps of a
  * multirate cycle; the particles' temperature, water and CO2 still ride along. */

@@ -84,17 +84,11 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
         hi[d] = g->lo[d] + (g->nn[d] - 2) * dx;
         if (s->def.periodic[d]) lo[d] = -INFINITY, hi[d] = INFINITY; /* wrapped after G2P instead */
     }
-    /* the colliders near this block (COLLIDER_NEAR_CAP at most, else all): a box two cells past the block's
-     * nodes; a particle outside it (one that moved far) walks them all */
-    int near[COLLIDER_NEAR_CAP], nnear = -1;
-    double nlo[3] = {0, 0, 0}, nhi[3] = {0, 0, 0};
-    if (s->ncol > 0) {
-        for (int d = 0; d < D; d++) {
-            nlo[d] = g->lo[d] + (org[d] - 2) * dx;
-            nhi[d] = g->lo[d] + (org[d] + GRID_B + 2) * dx;
-        }
-        nnear = collider_list_near_box(s->cols, s->ncol, nlo, nhi, near);
-    }
+    /* the colliders near this block, two cells past its nodes (mpm_block.h); a particle outside that box (one that
+     * moved far) walks them all */
+    int near[COLLIDER_NEAR_CAP];
+    double nlo[3], nhi[3];
+    const int nnear = mpm_block_colliders(s, bc, 2, nlo, nhi, near);
     double ke = 0, mass = 0, vmax = -1, move2 = 0, selfmax = 0;
     int mover = -1;
     double w_removed = 0, w_dmax = 0, w_emax = 0, w_lmax = 0;
