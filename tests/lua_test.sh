@@ -321,6 +321,8 @@ png_label_in_title)
     has out.txt "64-byte title length 85" "a 64-byte label whole in the title"
     has out.txt 'refused true picture: label of 65 bytes ("xxxxxxxxxxxxxxxxxxxx..."); at most 64' "a 65-byte label"
     has out.txt "refused true picture: label has a control character (byte 4)" "a newline in the label"
+    has out.txt "refused true picture: label has a control character (byte 3)" "a long label with an escape"
+    grep -q "$(printf '\033')" out.txt && fail "an escape the scene put in a label reached the output"
     has out.txt "refused true png: label = a short text before the time in the title (a string), got number" "a number"
     has out.txt "run_label_table false s:run: png: label = a short text" "s:run's label a table, before the run"
     has out.txt "run_label_long false s:run: png: picture: label of 65 bytes" "s:run's label too long"

@@ -43,6 +43,9 @@ elseif which == "label" then
   print("64-byte title length " .. #long.title)
   refused { label = ("x"):rep(65) }
   refused { label = "two\nlines" }
+  -- long and with an escape: refused for the escape, so the length's message (which quotes the label's start)
+  -- never carries it to the terminal
+  refused { label = "ab\27[2J" .. ("x"):rep(70) }
   refused { label = 3 }
   s:run { until_t = 0.002, every = 0.001, png = { field = "temperature", path = "run_%04d.png", label = "oven 110 °C" } }
   local ok, err = pcall(s.run, s, { until_t = s:stats().t + 0.001, png = { field = "temperature", label = {} } })

@@ -405,16 +405,18 @@ static hearth_status check_def(const hearth_scene *s, const hearth_picture_def *
         return err_set(err, HEARTH_ERR_PARAM, "picture: time_scale = %g; valid range (0, 1e9], 1 for a scene in real time",
                        d->time_scale);
     if (d->label) {
+        /* control characters first: the length's refusal quotes the label's start, and an escape sequence a
+         * scene put there would reach the user's terminal */
         const size_t len = strlen(d->label);
+        for (size_t k = 0; k < len; k++)
+            if ((unsigned char)d->label[k] < 32 || d->label[k] == 127)
+                return err_set(err, HEARTH_ERR_PARAM, "picture: label has a control character (byte %zu); the title is one line", k + 1);
         if (len > HEARTH_PICTURE_LABEL_MAX) {
             int cut = 20; /* its start in the message, cut on a UTF-8 character's first byte */
             while (cut > 0 && ((unsigned char)d->label[cut] & 0xC0) == 0x80) cut--;
             return err_set(err, HEARTH_ERR_PARAM, "picture: label of %zu bytes (\"%.*s...\"); at most %d, a short text before the time",
                            len, cut, d->label, HEARTH_PICTURE_LABEL_MAX);
         }
-        for (size_t k = 0; k < len; k++)
-            if ((unsigned char)d->label[k] < 32 || d->label[k] == 127)
-                return err_set(err, HEARTH_ERR_PARAM, "picture: label has a control character (byte %zu); the title is one line", k + 1);
     }
     *map = d->colormap ? cmap_by_name(d->colormap) : map_for(d->field);
     if (*map < 0)
