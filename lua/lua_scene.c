@@ -449,6 +449,8 @@ static int l_collider(lua_State *L) {
     cd.beta = luaL_optnumber(L, 9, 0);
     if (!lua_isnoneornil(L, 10)) cd.saturation = luaL_checknumber(L, 10);
     cd.beta_water = luaL_optnumber(L, 11, 0);
+    if (!lua_isnoneornil(L, 12)) cd.start_temperature = luaL_checknumber(L, 12);
+    cd.warm_time = luaL_optnumber(L, 13, 0);
     if (vfn || ofn) {
         cd.motion = motion_cb;
         cd.motion_ud = new_motion(L, vfn ? 5 : 0, ofn ? 6 : 0, NULL);

@@ -13,6 +13,7 @@
 
 #include "checkpoint.h"
 #include "mpm_fixture.h"
+#include "shapes.h"
 
 /* A small scene with something in every section: a temperature curve, two
  * colliders (one a boolean tree), the temperature column. */
@@ -119,11 +120,35 @@ static inline size_t clk_at(const uint8_t *b, size_t n) {
 /* Version 13 appended f64 self_max to the clocks, their last field (right before "MATS") */
 #define V13_CLK_BYTES 8
 
+/* Each collider's fields version 14 appended (start_temperature, warm_time, t_added), after its shape tree and the
+ * 216 bytes of contact, pose, heat and water before them: cut out of the image (*n shrinks by 24 a collider), as a
+ * file older than 14 holds its colliders. Returns 0 when the section cannot be walked. */
+#define V14_COL_BYTES 24
+static inline int cut_v14_colliders(uint8_t *b, size_t *n) {
+    const size_t cols = find(b, *n, "COLS", 4);
+    CHECK(cols != (size_t)-1);
+    if (cols == (size_t)-1) return 0;
+    uint32_t ncol;
+    memcpy(&ncol, b + cols + 4, 4);
+    size_t at = cols + 8;
+    for (uint32_t i = 0; i < ncol; i++) {
+        ck_cursor c = {b + at, *n - at, 0, NULL, {0}};
+        hearth_shape *sh = shape_read_mem(&c, 0);
+        CHECK(sh != NULL);
+        if (!sh) return 0;
+        hearth_shape_free(sh);
+        at = (size_t)(c.p - b) + 216;
+        memmove(b + at, b + at + V14_COL_BYTES, *n - at - V14_COL_BYTES);
+        *n -= V14_COL_BYTES;
+    }
+    return 1;
+}
+
 /* The image of a save of one material, "elastic" (3 parameters), with the
  * last k of its core parameters cut out, as files from before they were
  * appended hold them (before the curve count; *n shrinks by 8 k), and
- * without the clocks' version 13 tail (self_max): every caller makes a file
- * older than 13. Returns 0 when the material is not found. */
+ * without the clocks' version 13 tail (self_max) and the colliders' version 14
+ * one: every caller makes a file older than 13. Returns 0 when the material is not found. */
 static inline int cut_core_params(uint8_t *b, size_t *n, int k) {
     const size_t el = find(b, *n, "elastic", 7), mats = find(b, *n, "MATS", 4);
     CHECK(el != (size_t)-1 && mats != (size_t)-1 && mats < el);
@@ -133,7 +158,7 @@ static inline int cut_core_params(uint8_t *b, size_t *n, int k) {
     *n -= len;
     memmove(b + mats - V13_CLK_BYTES, b + mats, *n - mats);
     *n -= V13_CLK_BYTES;
-    return 1;
+    return cut_v14_colliders(b, n);
 }
 
 /* A restored copy r continues as the scene s it was saved from: the same

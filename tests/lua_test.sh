@@ -636,6 +636,13 @@ lone_molten_particle_thermal_strain)
         has out.txt "lone_molten ok" "J within the thermal strain's bound ($m)"
     done
     ;;
+warming_tray_lua)
+    # a tray that goes in cold: its refusals, a slab heated later than on a hot tray, a checkpoint while it warms
+    run warming_tray.lua
+    expect_rc 0 "warming_tray.lua"
+    has out.txt "warming_tray ok" "warming tray refusals, slab, restore"
+    cat out.txt
+    ;;
 held_temperature_lua)
     # s:collider{fixed_temperature} and s:add{fixed_temperature}: refusals, held values, a checkpoint keeps them
     run held_temperature.lua

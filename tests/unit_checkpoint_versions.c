@@ -122,7 +122,7 @@ TEST(checkpoint_v4_reads_at_defaults) {
     ck_reseal(b, m);
     CHECK(hearth_scene_load_mem(b, m, "v3.ck", &err) == NULL);
     printf("  %s\n", err.msg);
-    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 13 only");
+    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 14 only");
     free(b);
     free(img);
     hearth_scene_destroy(s);
@@ -505,8 +505,8 @@ TEST(checkpoint_gas_made_mid_reaction) {
     uint8_t *img = save_image(s, &n);
     CHECK(img != NULL);
     hearth_error err;
-    hearth_scene *r = img ? hearth_scene_load_mem(img, n, "v13.ck", &err) : NULL;
-    if (!r && img) printf("  v13 refused: %s\n", err.msg);
+    hearth_scene *r = img ? hearth_scene_load_mem(img, n, "new.ck", &err) : NULL;
+    if (!r && img) printf("  the new file refused: %s\n", err.msg);
     CHECK(r != NULL);
     if (r) {
         CHECK(r->mats.slot[0].core[CP_GAS_AMOUNT] == 5e-4 && r->mats.slot[0].core[CP_GAS_AMOUNT_2] == 5e-3);
@@ -561,7 +561,72 @@ TEST(checkpoint_gas_made_mid_reaction) {
     hearth_scene_destroy(s);
 }
 
+/* Version 14 appended each collider's start_temperature, warm_time and t_added (a tray that warms). A version 13
+ * file (a new image cut of them, stamped 13) loads with colliders that do not warm: small_scene's two colliders
+ * continue as the scene it was saved from, and a heated collider saved while warming (its slot holds the
+ * temperature it warms toward) reads as at that temperature, what a version 13 writer meant by it. */
+TEST(checkpoint_v13_colliders_do_not_warm) {
+    hearth_scene *s = small_scene();
+    size_t n, m;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    if (!img || !s) return;
+    m = n;
+    CHECK(cut_v14_colliders(img, &m) && m == n - 2 * V14_COL_BYTES);
+    const uint32_t v13 = 13;
+    memcpy(img + 8, &v13, 4);
+    ck_reseal(img, m);
+    hearth_error err;
+    hearth_scene *r = hearth_scene_load_mem(img, m, "v13.ck", &err);
+    if (!r) printf("  v13 refused: %s\n", err.msg);
+    CHECK(r != NULL);
+    if (r) {
+        printf("  v13 file of %zu bytes (v14: %zu)\n", m, n);
+        continues_as(s, r, "v13 copy");
+        hearth_scene_destroy(r);
+    }
+    free(img);
+    hearth_scene_destroy(s);
+    /* a tray warming from 20 toward 180 degC, saved mid-warm */
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.1;
+    s = fx_scene_def(&d);
+    const double fc[3] = {0.5, 0.1, 0}, fh[3] = {0.5, 0.05, 0};
+    hearth_shape *tray = hearth_shape_box(fc, fh);
+    hearth_collider_def cd = hearth_default_collider_def();
+    cd.shape = tray, cd.temperature = 180, cd.beta = 100, cd.start_temperature = 20, cd.warm_time = 1;
+    CHECK(hearth_scene_add_collider(s, &cd, &err) == 0);
+    hearth_shape_free(tray);
+    s->t = 0.5; /* as if stepped there: its present temperature */
+    collider_set_time(&s->cols[0], s->t);
+    CHECK_NEAR(s->cols[0].temperature, 180 - 160 * exp(-0.5), 1e-9);
+    img = save_image(s, &n);
+    CHECK(img != NULL);
+    if (!img) return;
+    r = hearth_scene_load_mem(img, n, "v14.ck", &err);
+    CHECK(r != NULL);
+    if (r) { /* the new file: warming on from where it was */
+        CHECK(r->cols[0].temperature == s->cols[0].temperature && r->cols[0].warm_time == 1);
+        hearth_scene_destroy(r);
+    }
+    m = n;
+    CHECK(cut_v14_colliders(img, &m));
+    memcpy(img + 8, &v13, 4);
+    ck_reseal(img, m);
+    r = hearth_scene_load_mem(img, m, "v13.ck", &err);
+    CHECK(r != NULL);
+    if (r) {
+        printf("  saved warming at %.3f degC; a v13 copy reads %.3f degC, not warming (warm_time %g)\n",
+               s->cols[0].temperature, r->cols[0].temperature, r->cols[0].warm_time);
+        CHECK(r->cols[0].temperature == 180 && r->cols[0].warm_time == 0);
+        hearth_scene_destroy(r);
+    }
+    free(img);
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_v4_reads_at_defaults),
           T(checkpoint_v7_reads_dry_specific_heat_as_wet), T(checkpoint_v8_reads_browning_surface_as_zero),
           T(checkpoint_v9_reads_ambient_pressure_as_zero), T(checkpoint_v10_sticky_holds_as_then),
-          T(checkpoint_v11_reads_no_second_share), T(checkpoint_gas_made_mid_reaction))
+          T(checkpoint_v11_reads_no_second_share), T(checkpoint_gas_made_mid_reaction),
+          T(checkpoint_v13_colliders_do_not_warm))

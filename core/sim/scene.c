@@ -88,7 +88,7 @@ hearth_scene_def hearth_default_scene_def(void) {
 }
 
 hearth_collider_def hearth_default_collider_def(void) {
-    return (hearth_collider_def){.mode = HEARTH_SLIP, .temperature = NAN, .saturation = NAN};
+    return (hearth_collider_def){.mode = HEARTH_SLIP, .temperature = NAN, .saturation = NAN, .start_temperature = NAN};
 }
 
 static hearth_status check_def(const hearth_scene_def *d, hearth_error *err) {
@@ -593,6 +593,7 @@ int hearth_scene_add_collider(hearth_scene *s, const hearth_collider_def *def, h
         collider_free(&s->cols[s->ncol]);
         return -1;
     }
+    s->cols[s->ncol].t_added = s->t; /* a warming tray starts warming now */
     collider_set_time(&s->cols[s->ncol], s->t);
     return s->ncol++;
 }
@@ -680,6 +681,7 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
         }
         step_report rep;
         field_clock_plan(s, dt); /* whether this step carries the fields, and over what time */
+        for (int c = 0; c < s->ncol; c++) collider_heat_interval(&s->cols[c], s->t + dt - s->field_dt, s->t + dt);
         hearth_status st = s->solver->step(s, dt, &rep, err);
         if (st) return st;
         if (!guard_check(s, &rep, dt, speed_before)) {

@@ -388,8 +388,6 @@ function h.mix(t)
   return setmetatable(r, { __name = mix_mt.__name, mix = { plugin = plugin, sets = sets, weights = weights } })
 end
 
-
-
 --- h.blend(mix, mode): the parameters a scene with blend = mode simulates a mixture with:
 --- "nonlinear" (the model) or "linear" (the weighted mean of every parameter).
 function h.blend(m, mode)
@@ -729,12 +727,14 @@ function S:add(o)
 end
 
 --- s:collider{shape = ..., mode = "separate", friction = 0, velocity = {..} or function(t), omega = ..., pivot = {..},
----   temperature = degC, beta = W/(m^2 K) or fixed_temperature = true, saturation = 0..1, beta_water = kg/(m^2 s)}
+---   temperature = degC, beta = W/(m^2 K) or fixed_temperature = true, saturation = 0..1, beta_water = kg/(m^2 s),
+---   start_temperature = degC, warm_time = s (a tray that goes in cold and warms toward temperature: colliders.h)}
 --- fixed_temperature = true (or beta = math.huge) holds the touching material at temperature (Dirichlet).
 function S:collider(o)
   if type(o) ~= "table" then error("s:collider: expected a table", 2) end
   check_keys(o, { shape = true, mode = true, friction = true, velocity = true, omega = true, pivot = true, name = true,
-    temperature = true, beta = true, saturation = true, fixed_temperature = true, beta_water = true }, "s:collider")
+    temperature = true, beta = true, saturation = true, fixed_temperature = true, beta_water = true,
+    start_temperature = true, warm_time = true }, "s:collider")
   if o.saturation ~= nil then check_number(o.saturation, "s:collider: saturation", 0, 1) end
   if o.beta_water ~= nil then
     check_number(o.beta_water, "s:collider: beta_water", 0, 1e9, "kg/(m^2 s)")
@@ -744,6 +744,9 @@ function S:collider(o)
   end
   if o.temperature ~= nil then check_number(o.temperature, "s:collider: temperature", -273.15, 5000, "degC") end
   if o.beta ~= nil and o.beta ~= math.huge then check_number(o.beta, "s:collider: beta", 0, 1e9, "W/(m^2 K)") end
+  if (o.start_temperature == nil) ~= (o.warm_time == nil) then -- the values: collider_init's ranges
+    error("s:collider: start_temperature (degC, when added) and warm_time (s) go together: a tray warming to temperature", 2)
+  end
   if o.fixed_temperature and o.temperature == nil then
     error("s:collider: fixed_temperature = true needs temperature = ... (degC), the temperature it holds", 2)
   end
@@ -759,7 +762,8 @@ function S:collider(o)
   if w ~= nil and type(w) ~= "function" and type(w) ~= "number" then w = check_vec(w, "s:collider: omega") end
   local p = o.pivot and check_vec(o.pivot, "s:collider: pivot") or nil
   local ok, id = pcall(self._collider, self, o.shape, mode, fr, v, w, p, o.temperature,
-    o.temperature and (o.fixed_temperature and math.huge or o.beta or 100) or 0, o.saturation, o.beta_water)
+    o.temperature and (o.fixed_temperature and math.huge or o.beta or 100) or 0, o.saturation, o.beta_water,
+    o.start_temperature, o.warm_time)
   if not ok then error(id, 2) end
   return id
 end

@@ -497,7 +497,8 @@ static int rotation_ok(const double R[9]) {
     return 1;
 }
 
-static int get_colliders(ck_cursor *c, hearth_scene *s, hearth_error *err) {
+/* t: the restored clock's time (set_clocks applies it after), at which a warming collider takes its temperature */
+static int get_colliders(ck_cursor *c, hearth_scene *s, uint32_t version, double t, hearth_error *err) {
     get_tag(c, "COLS", "the colliders section is missing");
     const uint32_t ncol = get_u32(c);
     if (c->bad) return -1;
@@ -524,11 +525,19 @@ static int get_colliders(ck_cursor *c, hearth_scene *s, hearth_error *err) {
         cd.beta = get_f64(c); /* +inf: held at its temperature; collider_init refuses NaN and negatives */
         cd.saturation = get_f64(c);  /* NaN: dry */
         cd.beta_water = get_finite(c, "collider beta_water is not finite");
+        double t_added = 0;
+        if (version >= 14) { /* a warming tray; collider_init checks start_temperature and warm_time */
+            cd.start_temperature = get_f64(c);
+            cd.warm_time = get_f64(c);
+            t_added = get_finite(c, "collider t_added is not finite");
+        }
         const int id = c->bad ? -1 : hearth_scene_add_collider(s, &cd, err);
         hearth_shape_free(sh);
         if (id < 0) return -1;
         memcpy(s->cols[id].offset, offset, sizeof offset);
         memcpy(s->cols[id].R, R, sizeof R);
+        s->cols[id].t_added = t_added;
+        collider_set_time(&s->cols[id], t);
         collider_update_bounds(&s->cols[id], 2 * s->def.dx);
     }
     return 0;
@@ -707,7 +716,7 @@ hearth_scene *hearth_scene_load_mem(const void *data, size_t n, const char *name
     if (c.bad) return refuse_at(s, err, name, &c, "clocks");
     s->nbodies = k.nbodies; /* particle body ids are checked against it */
     if (get_materials(&c, s, name, version, err)) return refuse_at(s, err, name, &c, "materials");
-    if (get_colliders(&c, s, err)) return refuse_at(s, err, name, &c, "colliders");
+    if (get_colliders(&c, s, version, k.t, err)) return refuse_at(s, err, name, &c, "colliders");
     s->next_id = k.next_id;
     uint32_t absent = 0;
     if (get_particles(&c, s, version, &absent, err)) return refuse_at(s, err, name, &c, "particles");

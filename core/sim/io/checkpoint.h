@@ -36,7 +36,8 @@
  *           dry_conductivity, version 8 dry_specific_heat, version 10 ambient_pressure and open_temperature, version 12
  *           the second CO2 share's three, version 13 gas_amount and gas_amount_2), u32 curves, curves (each: u32 param,
  *           u32 points, u32 flags: bit 0 irreversible, bit 1 a moisture curve; f64 x, f64 values)
- *    "COLS" u32 count; per collider: shape tree (shape_read_mem), contact and pose
+ *    "COLS" u32 count; per collider: shape tree (shape_read_mem), contact and pose, heat and water; version 14
+ *           appends f64 start_temperature, warm_time and t_added
  *    "PART" u32 n, u32 state stride, u32 enabled columns; per enabled column
  *           its name and n * (bytes per particle)
  *    "HASH" u64 hearth_scene_hash of the restored particles
@@ -60,8 +61,10 @@
  * has none and loads with gas_rate_2 0, its bits; 13: the materials' gas_amount and gas_amount_2 (params.h; gas.h's
  * gas_share_capped), the CO2 each share has made (PC_GAS_MADE, "gas_made") in PART when a material has an amount, and
  * f64 self_max appended to CLK (the last step's bound on a lone particle, mpm_self.c): an older file has no amounts
- * (no limit), so nothing made, and self_max 0 (its first step unbounded, as it restored then) */
-#define CK_VERSION 13u
+ * (no limit), so nothing made, and self_max 0 (its first step unbounded, as it restored then); 14: each collider's
+ * start_temperature, warm_time and t_added appended in COLS (a tray that warms, colliders.h), its temperature slot the
+ * one it warms toward: an older file's colliders do not warm */
+#define CK_VERSION 14u
 /// Oldest version read: a version 4 file is version 5's layout without the
 /// DEF fields version 5 appended.
 #define CK_VERSION_MIN 4u

@@ -143,10 +143,13 @@ static void put_colliders(ck_out *o, const hearth_scene *s) {
         put(o, c->offset, sizeof c->offset);
         put(o, c->R, sizeof c->R);
         put_i32(o, c->motion != NULL);
-        put_f64(o, c->temperature);
+        put_f64(o, c->temperature_end); /* the def's temperature; a warming one's present value follows from the rest */
         put_f64(o, c->beta);
         put_f64(o, c->saturation);
         put_f64(o, c->beta_water);
+        put_f64(o, c->start_temperature); /* version 14: a tray that warms (NaN: it does not) */
+        put_f64(o, c->warm_time);
+        put_f64(o, c->t_added);
     }
 }
 

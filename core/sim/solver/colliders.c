@@ -74,7 +74,25 @@ hearth_status collider_init(collider *c, const hearth_collider_def *def, hearth_
         return err_set(err, HEARTH_ERR_PARAM, "collider beta_water = %g kg/(m^2 s); valid range [0, inf) (0 = hold the saturation)",
                        def->beta_water);
     }
+    if (!isnan(def->start_temperature) &&
+        (isnan(def->temperature) || !(def->start_temperature >= -273.15 && def->start_temperature <= 5000) ||
+         !(def->warm_time > 0 && isfinite(def->warm_time)))) {
+        hearth_shape_free(c->shape);
+        c->shape = NULL;
+        if (isnan(def->temperature))
+            return err_set(err, HEARTH_ERR_PARAM, "collider start_temperature = %g degrees C needs the collider's temperature "
+                                                  "(the temperature it warms toward)", def->start_temperature);
+        if (!(def->start_temperature >= -273.15 && def->start_temperature <= 5000))
+            return err_set(err, HEARTH_ERR_PARAM, "collider start_temperature = %g degrees C; valid range [-273.15, 5000]",
+                           def->start_temperature);
+        return err_set(err, HEARTH_ERR_PARAM, "collider warm_time = %g s; valid range (0, inf) (the warming sheet's time "
+                                              "constant, with start_temperature)", def->warm_time);
+    }
     c->temperature = def->temperature;
+    c->temperature_end = def->temperature;
+    c->start_temperature = def->start_temperature;
+    c->warm_time = isnan(def->start_temperature) ? 0 : def->warm_time;
+    c->t_added = 0;
     c->beta = def->beta;
     c->saturation = def->saturation;
     c->beta_water = def->beta_water;
@@ -92,6 +110,19 @@ void collider_free(collider *c) {
 
 void collider_set_time(collider *c, double t) {
     if (c->motion) c->motion(c->motion_ud, t, c->vel, c->omega);
+    if (c->warm_time > 0) /* a lumped sheet: its Biot number is small (a metal tray), so one temperature */
+        c->temperature = c->temperature_end + (c->start_temperature - c->temperature_end) *
+                                                  exp(-fmax(t - c->t_added, 0) / c->warm_time);
+}
+
+void collider_heat_interval(collider *c, double t0, double t1) {
+    if (!(c->warm_time > 0) || !(t1 > t0)) return;
+    t0 = fmax(t0, c->t_added); /* added within the interval: its start */
+    const double h = (t1 - t0) / c->warm_time;
+    if (!(h > 0)) return;
+    /* the mean of end + (start - end) e^{-(t - t_added)/w} over [t0, t1]: e^{-a} (1 - e^{-h}) / h, a = (t0 - t_added)/w */
+    c->temperature = c->temperature_end + (c->start_temperature - c->temperature_end) *
+                                              exp(-(t0 - c->t_added) / c->warm_time) * -expm1(-h) / h;
 }
 
 /* The rotation Q of one step dt at the angular velocity omega; 0 (Q

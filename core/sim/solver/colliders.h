@@ -19,7 +19,11 @@ typedef struct collider {
     hearth_motion_fn motion; /* optional; not owned */
     void *motion_ud;
     double blo[3], bhi[3];   /* world bounding box at the current pose (collider_update_bounds) */
-    double temperature, beta;/* heated collider (degrees C, W/(m^2 K)); NaN temperature = not heated */
+    double temperature, beta;/* heated collider (degrees C, W/(m^2 K)); NaN temperature = not heated; the present
+                              * temperature when it warms (collider_set_time) */
+    double temperature_end;  /* a warming collider: the temperature it approaches (degrees C) */
+    double start_temperature;/* a warming collider: its temperature at t_added; NaN = it does not warm */
+    double warm_time, t_added;/* a warming collider: its time constant and when it was added (s) */
     double saturation;       /* wet collider: held saturation of touching particles; NaN = dry */
     double beta_water;       /* wet collider: 0 holds saturation (Dirichlet); > 0 Robin exchange, kg/(m^2 s) */
 } collider;
@@ -30,8 +34,13 @@ typedef struct collider {
 hearth_status collider_init(collider *c, const hearth_collider_def *def, hearth_error *err);
 /// Release the shape copy (c may be zeroed or already freed).
 void collider_free(collider *c);
-/// If c has a motion function, vel and omega = motion(t); otherwise nothing.
+/// If c has a motion function, vel and omega = motion(t); a warming collider's temperature at t (its
+/// lumped sheet's exponential from start_temperature toward temperature_end since t_added).
 void collider_set_time(collider *c, double t);
+/// A warming collider's temperature over the heat step that covers [t0, t1]: its mean there (exact for the
+/// exponential), so the fields see it without the lag a value at the step's start would leave (first order in
+/// the step; with it the slab on a warming plate converges as on a steady one, unit_heat_bc). Else nothing.
+void collider_heat_interval(collider *c, double t0, double t1);
 /// Move by the current vel/omega over dt (s): exact for constant vel and omega.
 void collider_advance(collider *c, double dt);
 /// Signed distance (m, negative inside) at world point x; n (may be NULL) gets the
