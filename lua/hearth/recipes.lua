@@ -4,11 +4,13 @@ local core = ...
 local R = {}
 
 --- A flat tray (a plane collider at height y), optionally heated.
---- opts: mode ("separate"), friction (0.4), temperature (degC), beta (W/(m^2 K)).
+--- opts: mode ("separate"), friction (0.4), temperature (degC), beta (W/(m^2 K)), and for a tray that goes in
+--- cold start_temperature (degC) and warm_time (s, the scene's time: a scaled preset's real seconds over its S).
 function R.tray(s, y, opts)
   opts = opts or {}
   return s:collider { shape = core.plane({ 0, y, 0 }, { 0, 1, 0 }), mode = opts.mode or "separate",
-    friction = opts.friction or 0.4, temperature = opts.temperature, beta = opts.beta }
+    friction = opts.friction or 0.4, temperature = opts.temperature, beta = opts.beta,
+    start_temperature = opts.start_temperature, warm_time = opts.warm_time }
 end
 
 --- A muffin cup and its batter (scripts/scenes/baking/muffins.lua, Ding Fig. 2; tear_open.lua bakes one
