@@ -202,6 +202,12 @@ D.goods = {
     -- COOKIE_SET, the same curve as h.library.paper.cookie's)
     curve = "cookie",
     oven_temperature = 190, oven_beta = 30, pan_temperature = 190, pan_beta = 100,
+    -- the sheet goes into the oven with the dough on it, at the room's 20 degC, and warms as a lumped sheet (its Biot
+    -- number ~1e-4): a 1 mm aluminium sheet (2700 kg/m^3 x 900 J/(kg K) x 0.001 m = 2430 J/(m^2 K), handbook values)
+    -- heated on both faces by the oven's 30 W/(m^2 K) reaches it with a time constant of 2430 / 60 = 40 s (the heat it
+    -- gives the dough is not taken from it: colliders.h). Before, the sheet stood at 190 degC from the first step
+    -- (docs/validation.md, "A tray that goes in cold")
+    pan_start_temperature = 20, pan_warm_time_real = 40,
     time_scale = 50, bake_time_real = 660,
   },
   muffin = {
@@ -367,6 +373,7 @@ function D.preset(name)
   }
   local oven = { temperature = g.oven_temperature, beta = g.oven_beta * S, pan_temperature = g.pan_temperature,
     pan_beta = g.pan_beta * S, dough_temperature = g.dough_temperature, saturation = g.saturation,
+    pan_start_temperature = g.pan_start_temperature, pan_warm_time = g.pan_warm_time_real and g.pan_warm_time_real / S,
     latent_heat = true, boiling_point = 100, browning_scale = S, time_scale = S, bake_time = g.bake_time_real / S,
     flip_time = g.flip_time_real and g.flip_time_real / S, portion = g.portion,
     -- open surface pores vent their CO2 (scene settings gas_vent, vent_porosity; core/sim/fields/gas.c): an open

@@ -217,7 +217,9 @@ for _, T in ipairs(ovens) do
     oven = { temperature = T, beta = oven.beta }, gas_vent = vent, name = "cookies", seed = P.seed,
     browning = physical or nil, browning_scale = S, latent_heat = physical and oven.latent_heat or nil,
     boiling_point = physical and oven.boiling_point or nil, vent_porosity = physical and oven.vent_porosity or nil }
-  h.recipes.tray(s, TRAY, { temperature = T, beta = oven.pan_beta, mode = P.tray_mode, friction = P.tray_friction })
+  -- the physical preset's sheet goes in cold (oven.pan_start_temperature, pan_warm_time: dough_physical.lua)
+  h.recipes.tray(s, TRAY, { temperature = T, beta = oven.pan_beta, mode = P.tray_mode, friction = P.tray_friction,
+    start_temperature = oven.pan_start_temperature, warm_time = oven.pan_warm_time })
   local xs, first, gas_of = {}, {}, {} -- gas_of[i]: the physical cookie i's CO2 rate (mol/(kg s), S times fast); first[i]: cookie i's first particle id (ids run in the order s:add made them)
   for i, a in ipairs(leaveners) do
     local d = physical and h.library.dough.cookie or h.library.paper.cookie
