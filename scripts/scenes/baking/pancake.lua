@@ -60,8 +60,7 @@
 -- energy the spatula gives a runaway (core/sim/solver/guard.c).
 -- Writes, under hearth-out/pancake/: heat_%04d.png (temperature) and
 -- pancake.csv: over time, the temperature of the pancake's face on the pan and
--- of its top face (-1 while no batter lies on the pan at its centre), whether
--- it has been flipped, and the batter's mean height above the pan and mean x;
+-- of its top face, whether it has been flipped, and the batter's mean height above the pan and mean x;
 -- flip.csv: the flip time and the bottom's temperature then; landed.csv: every particle at the end (the time, id,
 -- position, J, temperature; tests/pancake_landed_measure.py reads its pieces and holes). With preset=physical,
 -- pancake.csv also has the real time, the middle particle's temperature and the water it holds (of the raw
@@ -69,6 +68,12 @@
 -- lowest (on the pan) and highest particle on the centre line, and the water left of what was poured; and
 -- browning.png and saturation.png at the end, and profile.csv: the particles within dx/2 of the centre line at
 -- the end, from the pan up (height, temperature, water held, browning).
+-- An empty cell is "not measured": while no batter lies on the pan at the centre (the pour, the flip) nothing is read
+-- on the centre line. tests/baking/scenes.sh (baking_scene_*) reads the next line and accepts empty cells in its
+-- columns alone:
+-- pancake.csv may leave empty (not measured): bottom_temperature_degC, top_temperature_degC, thickness_m,
+--   middle_temperature_degC, middle_water_held, bottom_browning, top_browning
+-- flip.csv may leave empty (not measured): bottom_temperature_at_flip_degC
 local h = require "hearth"
 local THETA_SET = require("hearth.dough").THETA[4] -- gelatinisation, degC
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
@@ -183,7 +188,8 @@ local function flip(sc)
   flipped, flip_t = true, sc:stats().t
   if png then png.label = pan_label() end
   if P.flip_dt > 0 then sc:set_dt(nil, P.flip_dt) end
-  h.write("flip.csv", ("flip_time_s,bottom_temperature_at_flip_degC\n%.3f,%.2f\n"):format(flip_t, flip_T))
+  h.write("flip.csv", ("flip_time_s,bottom_temperature_at_flip_degC\n%.3f,%s\n"):format(flip_t,
+    flip_T and ("%.2f"):format(flip_T) or ""))
   local function omega(w) return d3 and { 0, 0, -w } or -w end
   if P.turn == "constant" then
     sc:collider_velocity(spatula, v(0, 0, 0), omega(math.pi / P.spin))
@@ -211,7 +217,7 @@ end
 local function watch(sc)
   local bottom = faces()
   if physical and sc:stats().t * S >= flip_real - 1e-9 then -- the physical preset flips at the recipe's time
-    flip_T = bottom == bottom and bottom or -1
+    flip_T = bottom == bottom and bottom or nil -- flip.csv's cell is then empty: not measured
     flip(sc)
   elseif not physical and bottom == bottom and bottom > P.set_at then
     flip_T = bottom
@@ -284,14 +290,17 @@ s:run { until_t = until_t, every = until_t / P.frames, png = png,
     if P.particles == 1 then write_particles(("particles_%04d.csv"):format(f.index)) end
     local bt, tt, th = faces()
     local my, mx = mean_place()
-    if my == my then -- the face temperatures are -1 while no batter lies on the pan at the centre (mid-flip)
+    if my == my then
+      -- while no batter lies on the pan at the centre (the pour, mid-flip) the centre line's cells are empty: "not
+      -- measured" (the header's list; -1 had read as a temperature, helper userview3's item 3)
       local ok = bt == bt and tt == tt
-      local row = ("%.3f,%.2f,%.2f,%.5f,%d,%.5f,%.5f"):format(f.t, ok and bt or -1, ok and tt or -1, ok and th or 0,
-        flipped and 1 or 0, my, mx)
+      local row = ("%.3f,%s,%s,%s,%d,%.5f,%.5f"):format(f.t, ok and ("%.2f"):format(bt) or "",
+        ok and ("%.2f"):format(tt) or "", ok and ("%.5f"):format(th) or "", flipped and 1 or 0, my, mx)
       if physical then
         local m = ok and inside()
-        row = row .. (m and (",%.1f,%.2f,%.4f,%.4f,%.4f,%.4f"):format(f.t * S, m.T, m.held, m.bottom_browning,
-          m.top_browning, water_left(m.n)) or (",%.1f,-1,-1,-1,-1,-1"):format(f.t * S))
+        row = row .. (m and (",%.1f,%.2f,%.4f,%.4f,%.4f"):format(f.t * S, m.T, m.held, m.bottom_browning,
+          m.top_browning) or (",%.1f,,,,"):format(f.t * S))
+          .. (",%.4f"):format(water_left(s:stats().particles)) -- the whole batter's: measured whatever lies at the centre
       end
       rows[#rows + 1] = row
       h.write("pancake.csv", table.concat(rows, "\n") .. "\n")
