@@ -413,11 +413,11 @@ hearth_status hearth_probe_line(const hearth_scene *s, const char *field, const 
 
 hearth_status hearth_probe_slice(const hearth_scene *s, const char *field, int axis, double at, int w, int h, double *out,
                                  hearth_error *err) {
-    return probe_slice_fraction(s, field, axis, at, w, h, out, NULL, err);
+    return probe_slice_fraction(s, field, axis, at, NULL, w, h, out, NULL, err);
 }
 
-hearth_status probe_slice_fraction(const hearth_scene *s, const char *field, int axis, double at, int w, int h, double *out,
-                                   double *frac, hearth_error *err) {
+hearth_status probe_slice_fraction(const hearth_scene *s, const char *field, int axis, double at, const double rect[4], int w,
+                                   int h, double *out, double *frac, hearth_error *err) {
     int f = 0;
     hearth_status st = find_field(s, field, 1, &f, err);
     if (st) return st;
@@ -426,7 +426,9 @@ hearth_status probe_slice_fraction(const hearth_scene *s, const char *field, int
     if (axis < 0 || axis > 2) return err_set(err, HEARTH_ERR_PARAM, "slice: axis %d; valid: 0 (x), 1 (y), 2 (z)", axis);
     if (s->def.dim == 2 && axis != 2) return err_set(err, HEARTH_ERR_PARAM, "slice: a 2D scene has only the z slice (axis 2)");
     const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2; /* in-plane axes: columns along u, rows along v */
-    const double *lo = s->def.lo, *hi = s->def.hi;
+    double lo[3], hi[3];
+    memcpy(lo, s->def.lo, sizeof lo), memcpy(hi, s->def.hi, sizeof hi);
+    if (rect) lo[u] = rect[0], lo[v] = rect[1], hi[u] = rect[2], hi[v] = rect[3]; /* a picture's region */
     /* rows are sampled along v, columns along u: out[row*w + col], row 0 at the low end of v */
     lattice L = {.na = h, .nb = w};
     L.origin[axis] = s->def.dim == 2 ? 0 : at;

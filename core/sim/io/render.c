@@ -28,7 +28,8 @@ static const unsigned char BG[3] = {255, 255, 255}, FG[3] = {20, 20, 24}, FRAME[
 
 hearth_picture_def hearth_default_picture_def(void) {
     return (hearth_picture_def){.kind = HEARTH_PICTURE_SLICE, .width = 800, .axis = 2, .at = NAN,
-                                .range_mode = HEARTH_RANGE_DEFAULT, .range = {NAN, NAN}, .time_scale = 1};
+                                .range_mode = HEARTH_RANGE_DEFAULT, .range = {NAN, NAN}, .time_scale = 1,
+                                .region = {NAN, NAN, NAN, NAN}};
 }
 
 static int is_unit_interval(const char *f) {
@@ -390,6 +391,15 @@ static hearth_status choose_range(const hearth_scene *s, const hearth_picture_de
 
 /* ---- drawing ---------------------------------------------------------------- */
 
+/* The picture's in-plane axes (u horizontal, v vertical) and the part of them it shows: its region, or the domain. */
+static void view_of(const hearth_scene *s, const hearth_picture_def *d, int *u, int *v, double lo[2], double hi[2]) {
+    const int slice = d->kind == HEARTH_PICTURE_SLICE;
+    *u = slice && d->axis == 0 ? 1 : 0, *v = !slice || d->axis == 2 ? 1 : 2;
+    if (isnan(d->region[0])) {
+        lo[0] = s->def.lo[*u], lo[1] = s->def.lo[*v], hi[0] = s->def.hi[*u], hi[1] = s->def.hi[*v];
+    } else lo[0] = d->region[0], lo[1] = d->region[1], hi[0] = d->region[2], hi[1] = d->region[3];
+}
+
 static hearth_status check_def(const hearth_scene *s, const hearth_picture_def *d, int *map, hearth_error *err) {
     if (!d->field) return err_set(err, HEARTH_ERR_PARAM, "picture: no field named");
     if ((unsigned)d->kind > HEARTH_PICTURE_PARTICLES)
@@ -417,6 +427,24 @@ static hearth_status check_def(const hearth_scene *s, const hearth_picture_def *
             return err_set(err, HEARTH_ERR_PARAM, "picture: label of %zu bytes (\"%.*s...\"); at most %d, a short text before the time",
                            len, cut, d->label, HEARTH_PICTURE_LABEL_MAX);
         }
+    }
+    int set = 0;
+    for (int k = 0; k < 4; k++) set += !isnan(d->region[k]);
+    if (set) { /* a close-up: inside the domain's plane, lo < hi on both axes */
+        static const char *const names[3] = {"x", "y", "z"};
+        const int u = d->kind == HEARTH_PICTURE_SLICE && d->axis == 0 ? 1 : 0;
+        const int v = d->kind != HEARTH_PICTURE_SLICE || d->axis == 2 ? 1 : 2;
+        const double *r = d->region, *lo = s->def.lo, *hi = s->def.hi, tol = 1e-9 * (hi[u] - lo[u] + hi[v] - lo[v]);
+        int ok = set == 4;
+        for (int k = 0; k < 4; k++) ok = ok && isfinite(r[k]);
+        ok = ok && r[0] < r[2] && r[1] < r[3] && r[0] >= lo[u] - tol && r[2] <= hi[u] + tol && r[1] >= lo[v] - tol &&
+             r[3] <= hi[v] + tol;
+        if (!ok)
+            return err_set(err, HEARTH_ERR_PARAM,
+                           "picture: region = {{%g, %g}, {%g, %g}} (m); valid: {{%s lo, %s lo}, {%s hi, %s hi}}, lo < hi, "
+                           "inside the domain's %s [%g, %g] and %s [%g, %g]",
+                           r[0], r[1], r[2], r[3], names[u], names[v], names[u], names[v], names[u], lo[u], hi[u], names[v],
+                           lo[v], hi[v]);
     }
     *map = d->colormap ? cmap_by_name(d->colormap) : map_for(d->field);
     if (*map < 0)
@@ -452,7 +480,8 @@ static hearth_status fill_material(canvas *c, const frame *f, const hearth_scene
     const size_t bytes = sizeof(double) * (size_t)nw * (size_t)nh;
     double *val = mem_alloc(bytes), *frac = mem_alloc(bytes);
     hearth_status st = val && frac ? HEARTH_OK : err_set(err, HEARTH_ERR_NOMEM, "out of memory filling a %d x %d picture", nw, nh);
-    if (!st && (st = probe_slice_fraction(s, d->field, 2, 0, nw, nh, val, frac, err)) == HEARTH_ERR_PARAM) {
+    if (!st && (st = probe_slice_fraction(s, d->field, 2, 0, (const double[4]){f->lo[0], f->lo[1], f->hi[0], f->hi[1]}, nw, nh,
+                                                        val, frac, err)) == HEARTH_ERR_PARAM) {
         st = HEARTH_OK; /* a field the slice does not take: the discs alone */
         err_clear(err);
         mem_free(val, bytes), mem_free(frac, bytes);
@@ -508,7 +537,9 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
         mem_free(val, bytes);
         return st;
     }
-    const double lo[2] = {s->def.lo[0], s->def.lo[1]}, hi[2] = {s->def.hi[0], s->def.hi[1]};
+    double lo[2], hi[2];
+    int pu, pv;
+    view_of(s, d, &pu, &pv, lo, hi);
     frame f = layout(c, lo, hi);
     const int uv[2] = {0, 1};
     double depths[5];
@@ -579,8 +610,9 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
 static hearth_status draw_slice(canvas *c, const hearth_scene *s, const hearth_picture_def *d, int map,
                                 hearth_picture_info *info, hearth_error *err) {
     static const char *const names[3] = {"x", "y", "z"};
-    const int u = d->axis == 0 ? 1 : 0, v = d->axis == 2 ? 1 : 2;
-    const double lo[2] = {s->def.lo[u], s->def.lo[v]}, hi[2] = {s->def.hi[u], s->def.hi[v]};
+    int u, v;
+    double lo[2], hi[2];
+    view_of(s, d, &u, &v, lo, hi);
     const double at = isnan(d->at) ? 0.5 * (s->def.lo[d->axis] + s->def.hi[d->axis]) : d->at;
     frame f = layout(c, lo, hi);
     const int sw = f.w > 1 ? (int)f.w : 1, sh = f.h > 1 ? (int)f.h : 1;
@@ -591,7 +623,8 @@ static hearth_status draw_slice(canvas *c, const hearth_scene *s, const hearth_p
     size_t bytes = sizeof(double) * (size_t)nw * (size_t)nh;
     double *val = mem_alloc(bytes);
     if (!val) return err_set(err, HEARTH_ERR_NOMEM, "out of memory for a %d x %d slice", nw, nh);
-    hearth_status st = hearth_probe_slice(s, d->field, d->axis, at, nw, nh, val, err);
+    const double rect[4] = {lo[0], lo[1], hi[0], hi[1]};
+    hearth_status st = probe_slice_fraction(s, d->field, d->axis, at, rect, nw, nh, val, NULL, err);
     if (!st) {
         data_range(val, (long)nw * nh, info->data);
         st = choose_range(s, d, info, err);
@@ -663,9 +696,10 @@ hearth_status hearth_render(const hearth_scene *s, const hearth_picture_def *d, 
     canvas_unit(hearth_field_unit(d->field), info->unit, sizeof info->unit);
     int height = d->height;
     if (height == 0) {
-        const int u = d->kind == HEARTH_PICTURE_SLICE && d->axis == 0 ? 1 : 0;
-        const int v = d->kind == HEARTH_PICTURE_SLICE && d->axis == 2 ? 1 : d->kind == HEARTH_PICTURE_SLICE ? 2 : 1;
-        height = aspect_height(d->width, s->def.hi[u] - s->def.lo[u], s->def.hi[v] - s->def.lo[v]);
+        int u, v;
+        double lo[2], hi[2];
+        view_of(s, d, &u, &v, lo, hi);
+        height = aspect_height(d->width, hi[0] - lo[0], hi[1] - lo[1]);
     }
     canvas c;
     if ((st = canvas_init(&c, d->width, height, BG, err))) return st;
