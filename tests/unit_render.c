@@ -420,6 +420,46 @@ TEST(png_particles_paired_filled) {
     rm_dir(dir);
 }
 
+/* A long title on a narrow picture (#18, helper userfix5; userview3's item 11: drying.lua's 93-byte title at
+ * width = 300 was set 4 px high, half the 8 px floor font). The bar, set before the change: at width 300 a 47-byte
+ * label with a time_scale's long time gives title ink (above the plot, in the left 150 px) spanning at least 12 rows
+ * with at least 10 of them inked: two lines at the floor font, where one line set at half of it spans about 5. */
+TEST(png_narrow_title_two_lines) {
+    char dir[64], path[128];
+    make_dir(dir, sizeof dir);
+    snprintf(path, sizeof path, "%s/narrow.png", dir);
+    hearth_scene *s = heated_scene();
+    CHECK(s != NULL);
+    if (!s) return;
+    hearth_error err;
+    CHECK(hearth_scene_step(s, 40, &err) == HEARTH_OK);
+    hearth_picture_def d = hearth_default_picture_def();
+    d.field = "temperature", d.width = 300, d.time_scale = 50;
+    d.label = "time lapse: 1 s of drying a frame, skin 0.5 mm";
+    hearth_picture_info in;
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
+    int w = 0, h = 0;
+    unsigned char *px = decode_rgb(path, &w, &h);
+    CHECK(px != NULL);
+    if (!px) {
+        hearth_scene_destroy(s);
+        return;
+    }
+    int first = -1, last = -1, rows = 0;
+    for (int y = 0; y < (int)in.area[1] - 1; y++) {
+        int ink = 0;
+        for (int x = 0; x < 150 && x < w; x++) ink += pixel(px, w, x, y)[0] < 160;
+        if (ink) rows++, last = y, first = first < 0 ? y : first;
+    }
+    printf("title \"%s\" at %d px wide: ink rows %d..%d (%d inked) above the plot's top at %.1f px\n", in.title, w, first, last,
+           rows, in.area[1]);
+    CHECK(first >= 0 && last - first + 1 >= 12 && rows >= 10);
+    CHECK(strstr(in.title, d.label) == in.title); /* info->title keeps it whole, on one line */
+    free(px);
+    hearth_scene_destroy(s);
+    rm_dir(dir);
+}
+
 TEST_MAIN(T(png_fixed_range_across_frames), T(png_colliders_drawn), T(png_colorbar_ticks), T(png_options_checked),
           T(png_title_gives_real_time), T(png_alloc_failures), T(png_long_title_clear_of_bar),
-          T(png_particles_paired_filled))
+          T(png_particles_paired_filled), T(png_narrow_title_two_lines))

@@ -100,7 +100,8 @@ static hearth_status scalar_per_particle(const hearth_scene *s, const char *fiel
 /* Margins in units of the font size fs, which follows the picture's width:
  * a title line above, tick labels and an axis name below and left, the
  * colour bar with its tick labels right. */
-static double font_size(int width) { return fmin(16, fmax(8, width / 50.0)); }
+enum { FONT_FLOOR = 8 }; /* px: the smallest font a picture's text is set in by its width */
+static double font_size(int width) { return fmin(16, fmax(FONT_FLOOR, width / 50.0)); }
 static void margins(double fs, double *l, double *r, double *t, double *b) {
     *l = 5.2 * fs, *r = 7.6 * fs, *t = 2.6 * fs, *b = 3.4 * fs;
 }
@@ -226,6 +227,30 @@ static double colorbar(canvas *c, const frame *f, int map, const char *field, co
  * instead of the plot's and, if it still does not fit, is set smaller, down to half the font size, and past that is cut
  * there (a 64-byte label of wide letters; info->title keeps it whole) (#18: drying.lua's "time lapse: ..." title had
  * run into "saturation (-)" at 800 px). */
+/* The size (px) that sets text within room px: the font size fs, or smaller down to half of it. Measured again at the
+ * smaller size: the font's hinted advances round glyph by glyph, so the width is not quite proportional
+ * (cookies.lua's 95-byte title had come out 10 px longer than scaled, and was cut). */
+static double fit_size(canvas *c, const char *text, double fs, double room) {
+    const double tw = canvas_text_width(c, text, fs);
+    if (tw <= room) return fs;
+    double size = fs * fmax(0.5, fmin(1, room / tw));
+    for (int k = 0; k < 4 && size > 0.5 * fs; k++) {
+        const double w = canvas_text_width(c, text, size);
+        if (w <= room) break;
+        size = fmax(0.5 * fs, size * room / w * 0.99);
+    }
+    return size;
+}
+
+/* One line of the title at (x, y) (its top), set at size and cut at right (px). */
+static void title_line(canvas *c, double x, double y, const char *text, double size, double right) {
+    cairo_save(c->cr);
+    cairo_rectangle(c->cr, 0, 0, fmax(0, right), c->h);
+    cairo_clip(c->cr);
+    canvas_text(c, x, y, text, size, CANVAS_LEFT, CANVAS_TOP, 0, FG);
+    cairo_restore(c->cr);
+}
+
 static void title(canvas *c, const frame *f, const hearth_scene *s, const hearth_picture_def *d, hearth_picture_info *info,
                   double right) {
     char *buf = info->title;
@@ -240,25 +265,29 @@ static void title(canvas *c, const frame *f, const hearth_scene *s, const hearth
             snprintf(buf + at, n - at, "t = %.4g min   (%.4g s simulated x %g, step %ld)", real / 60, s->t, time_scale, s->step);
         else snprintf(buf + at, n - at, "t = %.4g s   (%.4g s simulated x %g, step %ld)", real, s->t, time_scale, s->step);
     }
-    const double fs = f->fs, tw = canvas_text_width(c, buf, fs);
+    const double fs = f->fs;
     double x = f->x0, size = fs;
-    if (x + tw > right - fs) {
+    if (x + canvas_text_width(c, buf, fs) > right - fs) {
         x = fmin(f->x0, 0.3 * fs);
-        const double room = right - fs - x;
-        size = fs * fmax(0.5, fmin(1, room / tw));
-        /* measured again at the smaller size: the font's hinted advances round glyph by glyph, so the width is not
-         * quite proportional (cookies.lua's 95-byte title had come out 10 px longer than scaled, and was cut) */
-        for (int k = 0; k < 4 && size > 0.5 * fs; k++) {
-            const double w = canvas_text_width(c, buf, size);
-            if (w <= room) break;
-            size = fmax(0.5 * fs, size * room / w * 0.99);
-        }
+        size = fit_size(c, buf, fs, right - fs - x);
     }
-    cairo_save(c->cr);
-    cairo_rectangle(c->cr, 0, 0, fmax(0, right - 0.5 * fs), c->h);
-    cairo_clip(c->cr);
-    canvas_text(c, x, 0.6 * fs, buf, size, CANVAS_LEFT, CANVAS_TOP, 0, FG);
-    cairo_restore(c->cr);
+    if (size >= FONT_FLOOR - 1e-9 || !at) {
+        title_line(c, x, 0.6 * fs, buf, size, right - 0.5 * fs);
+        return;
+    }
+    /* Two lines (#18, helper userfix5; userview3's item 11): one would be set under the floor font (drying.lua's
+     * 93-byte title at width = 300 came out 4 px high, past that cut short of the time). The label on the first,
+     * across the canvas above the colour bar's name (whose top is at least 1.1 fs below the picture's top); the time
+     * under it, short of that name, from the plot's left edge when it fits there (the top tick's label lies left of
+     * it). Both fit the top margin (2.6 fs): a line set at the top y spans to y + 0.97 of its size. */
+    char label[HEARTH_PICTURE_LABEL_MAX + 1];
+    snprintf(label, sizeof label, "%s", d->label);
+    const char *time = buf + at;
+    const double l1 = fit_size(c, label, fs, c->w - 0.6 * fs);
+    title_line(c, 0.3 * fs, 0.2 * fs, label, l1, c->w - 0.3 * fs);
+    double x2 = f->x0;
+    if (x2 + canvas_text_width(c, time, fs) > right - fs) x2 = fmin(f->x0, 0.3 * fs);
+    title_line(c, x2, 1.3 * fs, time, fit_size(c, time, fs, right - fs - x2), right - 0.5 * fs);
 }
 
 /* Colliders as filled grey shapes: each pixel of the plot area is shaded by
