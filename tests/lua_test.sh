@@ -866,7 +866,7 @@ import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 gap = max(abs(float(r["T_right_minus_left_C"])) for r in rows)  # taken before the columns' rounding
 heated = float(rows[-1]["T_left_C"]) - float(rows[0]["T_left_C"])
-print(f"dx {sys.argv[2]}: {len(rows)} frames to t = {rows[-1]['t']} s; the left half heated {heated:.2f} degC; "
+print(f"dx {sys.argv[2]}: {len(rows)} frames to t = {rows[-1]['t_s']} s; the left half heated {heated:.2f} degC; "
       f"worst |T_right - T_left| {gap:.3g} degC (bound 1e-6)")
 sys.exit(0 if len(rows) >= 2 and heated > 10 and gap <= 1e-6 else 1)
 PY
