@@ -148,8 +148,27 @@ static void range_pair(lua_State *L, int idx, const char *opt, double r[2]) {
     if (!(r[0] < r[1])) luaL_error(L, "png: %s = {%f, %f}; the first must be smaller", opt, r[0], r[1]);
 }
 
+/* region = {{u lo, v lo}, {u hi, v hi}} (m): the picture's close-up (hearth_picture_def.region; hearth_render
+ * checks it against the domain) */
+static void region_pair(lua_State *L, int idx, double r[4]) {
+    const char *want = "png: region = {{lo, lo}, {hi, hi}}, the corners of the part shown (m), the picture's "
+                       "horizontal axis first";
+    if (!lua_istable(L, idx) || lua_rawlen(L, idx) != 2) luaL_error(L, "%s", want);
+    for (int c = 0; c < 2; c++) {
+        lua_rawgeti(L, idx, c + 1);
+        if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2) luaL_error(L, "%s", want);
+        for (int k = 0; k < 2; k++) {
+            lua_rawgeti(L, -1, k + 1);
+            if (!lua_isnumber(L, -1)) luaL_error(L, "%s", want);
+            r[2 * c + k] = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+        lua_pop(L, 1);
+    }
+}
+
 /* s:png(field, path, {kind = "slice"|"particles", width, height, axis, at,
- * range = {lo, hi} | "frame", colormap, grow = {lo, hi}, time_scale, label}) -> path, info
+ * range = {lo, hi} | "frame", colormap, grow = {lo, hi}, time_scale, label, region}) -> path, info
  * (info: range, data, ticks, colormap, unit, width, height, title: what it drew with) */
 static int l_png(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
@@ -159,13 +178,14 @@ static int l_png(lua_State *L) {
     const char *path = hl_out_path(L, "s:png", luaL_checkstring(L, 3), HL_PATH_MKDIRS, buf, sizeof buf);
     const char *kind = "slice";
     if (lua_istable(L, 4)) {
-        static const char *const keys[] = {"kind", "width", "height", "axis", "at", "range", "colormap", "grow", "time_scale", "label", NULL};
+        static const char *const keys[] = {"kind",     "width",      "height", "axis",   "at", "range", "colormap",
+                                           "grow",     "time_scale", "label",  "region", NULL};
         lua_pushnil(L);
         while (lua_next(L, 4)) { /* a misspelt option must not be silently ignored */
             int ok = 0;
             for (int k = 0; keys[k]; k++) ok |= lua_type(L, -2) == LUA_TSTRING && !strcmp(lua_tostring(L, -2), keys[k]);
             if (!ok)
-                return luaL_error(L, "png: unknown option '%s' (valid: kind, width, height, axis, at, range, colormap, grow, time_scale, label)",
+                return luaL_error(L, "png: unknown option '%s' (valid: kind, width, height, axis, at, range, colormap, grow, time_scale, label, region)",
                                   luaL_tolstring(L, -2, NULL));
             lua_pop(L, 1);
         }
@@ -190,6 +210,8 @@ static int l_png(lua_State *L) {
         else if (t != LUA_TNIL)
             return luaL_error(L, "png: range = {lo, hi} (the field's unit) or \"frame\" (each frame its own), got %s",
                               luaL_typename(L, -1));
+        lua_pop(L, 1);
+        if (lua_getfield(L, 4, "region") != LUA_TNIL) region_pair(L, -1, d.region);
         lua_pop(L, 1);
         if (lua_getfield(L, 4, "grow") == LUA_TTABLE && d.range_mode == HEARTH_RANGE_DEFAULT)
             range_pair(L, -1, "grow", d.range), d.range_mode = HEARTH_RANGE_GROW;

@@ -259,6 +259,34 @@ png_range_option)
     done
     echo "run frames: $r"
     ;;
+png_region_option)
+    # #18 (helper userfix5; userview3's item 7, a 10 mm pancake in a 0.32 m box): region = {{lo, lo}, {hi, hi}}
+    # shows that part of the plane, its height from its aspect, for particles, slices and a run's frames; a region
+    # beyond the domain, backwards or not two corners is refused naming the option. The bar, set before the first
+    # run: the close-up of 0.12 x 0.05 m is 800 px wide and less tall than the whole 0.2 x 0.1 m picture, its frames
+    # the size of s:png's, the refusals' messages as below.
+    run png_options.lua --set case=region
+    cat out.txt
+    expect_rc 0 "png region scene"
+    out="hearth-out/png_options"
+    python3 - out.txt <<'PY' || fail "the close-up's size (above)"
+import re, sys
+t = open(sys.argv[1]).read()
+size = {m.group(1): (int(m.group(2)), int(m.group(3))) for m in re.finditer(r"^(\w+) range .* size (\d+)x(\d+)$", t, re.M)}
+print("sizes:", size)
+w, c, cs = size["whole"], size["close"], size["close_slice"]
+sys.exit(0 if c[0] == w[0] == 800 and c[1] < w[1] and cs == c else 1)
+PY
+    has out.txt "refused true picture: region = {{0.04, 0.01}, {0.26, 0.06}} (m); valid: {{x lo, y lo}, {x hi, y hi}}, lo < hi, inside the domain's x [0, 0.2] and y [0, 0.1]" "a region beyond the domain"
+    has out.txt "refused true picture: region = {{0.16, 0.01}, {0.04, 0.06}}" "a backwards region"
+    has out.txt "refused true png: region = {{lo, lo}, {hi, hi}}, the corners of the part shown (m)" "a region not of two corners"
+    has out.txt "did you mean 'region'?" "a misspelt run option"
+    for f in run_0000.png run_0001.png run_0002.png; do
+        r=$(png_check "$out/$f" 800) || fail "s:run frame $f"
+        [ "${r% *}" = "$(png_check "$out/close.png" 800 | cut -d' ' -f1,2)" ] || fail "frame $f is not the close-up's size: $r"
+    done
+    echo "run frames: $r"
+    ;;
 progress_rate_per_run)
     # #18 (helper userview3): a scene that runs one scene after another (cookies.lua's ovens) reports each run's own
     # steps/s; the second oven of cookies.lua --set preset=physical read 213 steps/s at its first line against the
@@ -845,7 +873,7 @@ import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 gap = max(abs(float(r["T_right_minus_left_C"])) for r in rows)  # taken before the columns' rounding
 heated = float(rows[-1]["T_left_C"]) - float(rows[0]["T_left_C"])
-print(f"dx {sys.argv[2]}: {len(rows)} frames to t = {rows[-1]['t']} s; the left half heated {heated:.2f} degC; "
+print(f"dx {sys.argv[2]}: {len(rows)} frames to t = {rows[-1]['t_s']} s; the left half heated {heated:.2f} degC; "
       f"worst |T_right - T_left| {gap:.3g} degC (bound 1e-6)")
 sys.exit(0 if len(rows) >= 2 and heated > 10 and gap <= 1e-6 else 1)
 PY

@@ -99,15 +99,15 @@ sph_cake_crumb_coolest)
 import csv
 ok, means = True, {}
 for dx in ("0.003", "0.002"):
-    bands = [r for r in csv.DictReader(open(f"cake_{dx}/bands.csv")) if abs(float(r["t"]) - 0.5) < 0.01]
-    vol = [r for r in csv.DictReader(open(f"cake_{dx}/volume.csv")) if abs(float(r["t"]) - 0.5) < 0.01]
+    bands = [r for r in csv.DictReader(open(f"cake_{dx}/bands.csv")) if abs(float(r["t_s"]) - 0.5) < 0.01]
+    vol = [r for r in csv.DictReader(open(f"cake_{dx}/volume.csv")) if abs(float(r["t_s"]) - 0.5) < 0.01]
     if not bands or not vol:
         print(f"dx {dx}: no frame at t = 0.5 s"); ok = False; continue
     b, v = bands[0], vol[0]
     top, crumb, bottom = float(b["T_top_C"]), float(b["T_crumb_C"]), float(b["T_bottom_C"])
     means[dx] = 0.5 * (float(v["T_left_C"]) + float(v["T_right_C"]))
     good = crumb <= top - 5 and crumb <= bottom - 5
-    print(f"dx {dx} t = {b['t']} s: top band {top:.2f}, crumb band {crumb:.2f}, bottom band {bottom:.2f} degC "
+    print(f"dx {dx} t = {b['t_s']} s: top band {top:.2f}, crumb band {crumb:.2f}, bottom band {bottom:.2f} degC "
           f"(top {b['top_mm']} mm); particles' mean {means[dx]:.2f} degC: crumb {'coolest' if good else 'NOT coolest'}")
     ok = ok and good
 if len(means) == 2:
@@ -170,14 +170,14 @@ need = ("B_crumb", "S_crumb", "B_outer")
 if not rows or any(k not in rows[0] for k in need) or math.isnan(rows[0]["S_crumb"]):
     print(f"dx {dx}: bands.csv has no batter saturation (the scene's water off?)"); sys.exit(1)
 s_raw = rows[0]["S_crumb"]
-oven = [r for r in rows if r["t"] < BAKE + 0.05]  # the last is the frame the cake leaves the oven in
+oven = [r for r in rows if r["t_s"] < BAKE + 0.05]  # the last is the frame the cake leaves the oven in
 end = oven[-1]
 for r in oven:
-    print(f"dx {dx} t = {r['t']:.2f} s: crumb {r['T_crumb_C']:.1f} degC, browning {r['B_crumb']:.4f}, saturation "
+    print(f"dx {dx} t = {r['t_s']:.2f} s: crumb {r['T_crumb_C']:.1f} degC, browning {r['B_crumb']:.4f}, saturation "
           f"{r['S_crumb']:.4f}; top {r['T_top_C']:.1f} degC, browning {r['B_top']:.4f}; outer surface's batter "
           f"browning {r['B_outer']:.4f}, saturation {r['S_outer']:.4f}")
-wet = [(f"t = {r['t']:.2f} s", r["T_crumb_C"]) for r in oven if r["S_crumb"] >= 0.5 * s_raw]
-ok = crumb_bars(dx, "the crumb band", f"as the bake ends (t = {end['t']:.2f} s)", s_raw, wet,
+wet = [(f"t = {r['t_s']:.2f} s", r["T_crumb_C"]) for r in oven if r["S_crumb"] >= 0.5 * s_raw]
+ok = crumb_bars(dx, "the crumb band", f"as the bake ends (t = {end['t_s']:.2f} s)", s_raw, wet,
                 (end["B_crumb"], end["S_crumb"]), end["B_outer"])
 sys.exit(0 if ok else 1)
 PY

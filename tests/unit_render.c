@@ -350,5 +350,116 @@ TEST(png_alloc_failures) {
     rm_dir(dir);
 }
 
+/* A 2D body whose particles have paired up (#18, helper userfix5; userview3's item 6: the leavened physical cookies,
+ * particles at J ~2.5 whose nearest neighbour lies at 0.73 of their own spacing, drew as loose beads): a lattice of
+ * spacing h (each particle's volume h^2) whose columns are moved 0.3 h toward each other in pairs, so a disc of 1.3 h
+ * across leaves a stripe 0.3 h wide between pairs while the material, by volume, fills the block. The bar, set
+ * before the fill was written: no background pixel inside the block (1 h in from its outline); and a lone particle
+ * of the same volume is drawn as its disc alone: no ink from 0.65 h + 2 px to 1.5 h from its centre. */
+TEST(png_particles_paired_filled) {
+    char dir[64], path[128];
+    make_dir(dir, sizeof dir);
+    snprintf(path, sizeof path, "%s/pairs.png", dir);
+    hearth_scene_def sd = hearth_default_scene_def();
+    sd.dim = 2, sd.dx = 0.01;
+    sd.lo[0] = sd.lo[1] = sd.lo[2] = 0;
+    sd.hi[0] = 0.2, sd.hi[1] = 0.1, sd.hi[2] = 0.01;
+    hearth_scene *s = fx_scene_def(&sd);
+    CHECK(s != NULL);
+    if (!s) return;
+    const char *names[] = {"E", "nu", "density"};
+    const double vals[] = {2e5, 0.3, 1000};
+    hearth_error err;
+    int m = hearth_scene_add_material(s, "elastic", names, vals, 3, &err);
+    CHECK(m >= 0);
+    const double h = 0.005, x0 = 0.05, y0 = 0.03;
+    enum { NX = 20, NY = 8 };
+    double X[3 * (NX * NY + 1)];
+    for (int i = 0; i < NX; i++)
+        for (int j = 0; j < NY; j++) {
+            double *x = X + 3 * (i * NY + j);
+            x[0] = x0 + (i + 0.5) * h + (i % 2 ? -0.3 : 0.3) * h, x[1] = y0 + (j + 0.5) * h, x[2] = 0;
+        }
+    double *lone = X + 3 * NX * NY;
+    lone[0] = 0.175, lone[1] = 0.05, lone[2] = 0;
+    CHECK(hearth_scene_add_particles(s, m, NX * NY + 1, X, NULL, h * h, &err) == NX * NY + 1);
+    hearth_picture_def d = hearth_default_picture_def();
+    d.field = "speed", d.kind = HEARTH_PICTURE_PARTICLES, d.width = 800;
+    hearth_picture_info in;
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
+    int w = 0, ht = 0;
+    unsigned char *px = decode_rgb(path, &w, &ht);
+    CHECK(px != NULL);
+    if (!px) {
+        hearth_scene_destroy(s);
+        return;
+    }
+    static const unsigned char white[3] = {255, 255, 255};
+    const double sc = in.area[2] / (in.view_hi[0] - in.view_lo[0]);
+    int inside = 0, holes = 0, halo = 0, ring = 0;
+    for (int y = 0; y < ht; y++)
+        for (int x = 0; x < w; x++) {
+            const double mx = in.view_lo[0] + (x + 0.5 - in.area[0]) / sc;
+            const double my = in.view_lo[1] + (in.area[1] + in.area[3] - (y + 0.5)) / sc;
+            if (mx > x0 + h && mx < x0 + (NX - 1) * h && my > y0 + h && my < y0 + (NY - 1) * h) {
+                inside++;
+                holes += near_rgb(pixel(px, w, x, y), white, 8);
+            }
+            const double r = hypot(mx - lone[0], my - lone[1]) * sc;
+            if (r > 0.65 * h * sc + 2 && r < 1.5 * h * sc) {
+                ring++;
+                halo += !near_rgb(pixel(px, w, x, y), white, 8);
+            }
+        }
+    printf("%.2f px per h; inside the paired block: %d of %d pixels background (need 0); around the lone particle: %d of %d "
+           "pixels inked from 0.65 h + 2 px to 1.5 h (need 0)\n", h * sc, holes, inside, halo, ring);
+    CHECK(inside > 1000 && holes == 0);
+    CHECK(ring > 100 && halo == 0);
+    free(px);
+    hearth_scene_destroy(s);
+    rm_dir(dir);
+}
+
+/* A long title on a narrow picture (#18, helper userfix5; userview3's item 11: drying.lua's 93-byte title at
+ * width = 300 was set 4 px high, half the 8 px floor font). The bar, set before the change: at width 300 a 47-byte
+ * label with a time_scale's long time gives title ink (above the plot, in the left 150 px) spanning at least 12 rows
+ * with at least 10 of them inked: two lines at the floor font, where one line set at half of it spans about 5. */
+TEST(png_narrow_title_two_lines) {
+    char dir[64], path[128];
+    make_dir(dir, sizeof dir);
+    snprintf(path, sizeof path, "%s/narrow.png", dir);
+    hearth_scene *s = heated_scene();
+    CHECK(s != NULL);
+    if (!s) return;
+    hearth_error err;
+    CHECK(hearth_scene_step(s, 40, &err) == HEARTH_OK);
+    hearth_picture_def d = hearth_default_picture_def();
+    d.field = "temperature", d.width = 300, d.time_scale = 50;
+    d.label = "time lapse: 1 s of drying a frame, skin 0.5 mm";
+    hearth_picture_info in;
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
+    int w = 0, h = 0;
+    unsigned char *px = decode_rgb(path, &w, &h);
+    CHECK(px != NULL);
+    if (!px) {
+        hearth_scene_destroy(s);
+        return;
+    }
+    int first = -1, last = -1, rows = 0;
+    for (int y = 0; y < (int)in.area[1] - 1; y++) {
+        int ink = 0;
+        for (int x = 0; x < 150 && x < w; x++) ink += pixel(px, w, x, y)[0] < 160;
+        if (ink) rows++, last = y, first = first < 0 ? y : first;
+    }
+    printf("title \"%s\" at %d px wide: ink rows %d..%d (%d inked) above the plot's top at %.1f px\n", in.title, w, first, last,
+           rows, in.area[1]);
+    CHECK(first >= 0 && last - first + 1 >= 12 && rows >= 10);
+    CHECK(strstr(in.title, d.label) == in.title); /* info->title keeps it whole, on one line */
+    free(px);
+    hearth_scene_destroy(s);
+    rm_dir(dir);
+}
+
 TEST_MAIN(T(png_fixed_range_across_frames), T(png_colliders_drawn), T(png_colorbar_ticks), T(png_options_checked),
-          T(png_title_gives_real_time), T(png_alloc_failures), T(png_long_title_clear_of_bar))
+          T(png_title_gives_real_time), T(png_alloc_failures), T(png_long_title_clear_of_bar),
+          T(png_particles_paired_filled), T(png_narrow_title_two_lines))

@@ -307,7 +307,8 @@ typedef struct lattice {
     int na, nb;
 } lattice;
 
-static hearth_status splat(const hearth_scene *s, int f, const lattice *L, double *out, hearth_error *err) {
+/* frac, when not NULL, receives each sample's volume fraction under the kernel (the material test's number) */
+static hearth_status splat(const hearth_scene *s, int f, const lattice *L, double *out, double *frac, hearth_error *err) {
     const particles *ps = &s->ps;
     const int D = s->def.dim, nc = fields[f].ncomp, ns = L->na * L->nb;
     const double dx = s->def.dx, r = 1.5 * dx, cellv = pow(dx, D);
@@ -378,6 +379,7 @@ static hearth_status splat(const hearth_scene *s, int f, const lattice *L, doubl
     for (int q = 0; q < ns; q++) {
         const double *A = acc + (size_t)q * (nc + 2);
         for (int k = 0; k < nc; k++) out[(size_t)q * nc + k] = A[0] >= 0.25 && A[1] > 0 ? A[2 + k] / A[1] : NAN;
+        if (frac) frac[q] = A[0];
     }
     mem_free(acc, sizeof(double) * (size_t)ns * (size_t)(nc + 2));
     mem_free(copy, sizeof(double) * (size_t)ps->state_stride);
@@ -391,7 +393,7 @@ hearth_status hearth_probe_point(const hearth_scene *s, const char *field, const
     lattice L = {.na = 1, .nb = 1};
     memcpy(L.origin, x, sizeof L.origin);
     if (s->def.dim == 2) L.origin[2] = 0;
-    return splat(s, f, &L, out, err);
+    return splat(s, f, &L, out, NULL, err);
 }
 
 hearth_status hearth_probe_line(const hearth_scene *s, const char *field, const double a[3], const double b[3], int n,
@@ -406,11 +408,16 @@ hearth_status hearth_probe_line(const hearth_scene *s, const char *field, const 
         L.ea[d] = (b[d] - a[d]) / (n - 1);
     }
     if (s->def.dim == 2) L.origin[2] = L.ea[2] = 0;
-    return splat(s, f, &L, out, err);
+    return splat(s, f, &L, out, NULL, err);
 }
 
 hearth_status hearth_probe_slice(const hearth_scene *s, const char *field, int axis, double at, int w, int h, double *out,
                                  hearth_error *err) {
+    return probe_slice_fraction(s, field, axis, at, NULL, w, h, out, NULL, err);
+}
+
+hearth_status probe_slice_fraction(const hearth_scene *s, const char *field, int axis, double at, const double rect[4], int w,
+                                   int h, double *out, double *frac, hearth_error *err) {
     int f = 0;
     hearth_status st = find_field(s, field, 1, &f, err);
     if (st) return st;
@@ -419,7 +426,9 @@ hearth_status hearth_probe_slice(const hearth_scene *s, const char *field, int a
     if (axis < 0 || axis > 2) return err_set(err, HEARTH_ERR_PARAM, "slice: axis %d; valid: 0 (x), 1 (y), 2 (z)", axis);
     if (s->def.dim == 2 && axis != 2) return err_set(err, HEARTH_ERR_PARAM, "slice: a 2D scene has only the z slice (axis 2)");
     const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2; /* in-plane axes: columns along u, rows along v */
-    const double *lo = s->def.lo, *hi = s->def.hi;
+    double lo[3], hi[3];
+    memcpy(lo, s->def.lo, sizeof lo), memcpy(hi, s->def.hi, sizeof hi);
+    if (rect) lo[u] = rect[0], lo[v] = rect[1], hi[u] = rect[2], hi[v] = rect[3]; /* a picture's region */
     /* rows are sampled along v, columns along u: out[row*w + col], row 0 at the low end of v */
     lattice L = {.na = h, .nb = w};
     L.origin[axis] = s->def.dim == 2 ? 0 : at;
@@ -427,7 +436,7 @@ hearth_status hearth_probe_slice(const hearth_scene *s, const char *field, int a
     L.origin[v] = lo[v] + 0.5 * (hi[v] - lo[v]) / h;
     L.eb[u] = (hi[u] - lo[u]) / w;
     L.ea[v] = (hi[v] - lo[v]) / h;
-    return splat(s, f, &L, out, err);
+    return splat(s, f, &L, out, frac, err);
 }
 
 double hearth_scene_volume(const hearth_scene *s) {

@@ -149,4 +149,10 @@ int guard_check(hearth_scene *s, const step_report *rep, double dt, double speed
 /* guard.c: dt is 0, NaN or does not advance the clock: stop with a diagnosis
  * naming why (a plugin's wave speed, usually) instead of looping forever. */
 hearth_status guard_no_step(hearth_scene *s, double dt, hearth_error *err);
+/* probe.c: hearth_probe_slice over rect = {u lo, v lo, u hi, v hi} of its plane (m; NULL: the domain), and when
+ * frac is not NULL each sample's volume fraction under the kernel (the particles' V0 J over the cell, B-spline
+ * weighted: the number its "outside the material" test reads; w x h doubles). render.c fills the material between a
+ * 2D picture's particle discs from it, and draws a picture's region. */
+hearth_status probe_slice_fraction(const hearth_scene *s, const char *field, int axis, double at, const double rect[4], int w,
+                                   int h, double *out, double *frac, hearth_error *err);
 #endif

@@ -204,6 +204,39 @@ PY
     [ $rc -eq 77 ] && exit 77
     [ $rc -eq 0 ] || fail "the leavened cookie is not 1.3x as tall and domed (numbers above)"
     ;;
+# #18 (helper userfix5; userview3's item 5): each cookie's printed line says which curvature the claims read and what
+# its particles' reading resolves. The bar, set before the first run: every cookie's line gives the probe's and the
+# particles' curvature as cookies.csv holds them (to the printed 3 decimals), says "the claims need both", and calls the
+# particles' reading "flat within noise" exactly when |k| < 2 standard errors, else domed (k < 0) or dented; the
+# probe's domed (k < 0) or dented. A short coarse bake (0.3 s, dx 7.5 mm, ~1 s).
+cookie_line_says_which_curvature)
+    run cookies --set dx=0.0075 --set until_t=0.3 --set frames=1 --set ovens=150 --set leaveners=0.015,0 >out_run.txt
+    python3 - out_run.txt hearth-out/cookies/cookies.csv <<'PY' || fail "a cookie's line does not say what its curvatures read (above)"
+import csv, re, sys
+lines = [l for l in open(sys.argv[1]) if l.startswith("oven ") and "height" in l]
+rows = list(csv.DictReader(open(sys.argv[2])))
+pat = re.compile(r"the claims need both\): probe ([-+]?[0-9.]+) 1/m, (domed|dented|flat); particles ([-+]?[0-9.]+) \+- "
+                 r"([0-9.]+) 1/m, (flat within noise, \|k\| < 2 standard errors|domed|dented);")
+ok = len(lines) == len(rows) >= 2
+for l, r in zip(lines, rows):
+    print(l.rstrip())
+    m = pat.search(l)
+    if not m:
+        print("  no 'probe K 1/m, verdict; particles K +- SE 1/m, verdict' after 'the claims need both'")
+        ok = False
+        continue
+    k, kp, se = float(r["top_curvature_1_per_m"]), float(r["top_curvature_particles_1_per_m"]), \
+        float(r["top_curvature_particles_se_1_per_m"])
+    want_p = "domed" if k < 0 else "dented" if k > 0 else "flat"
+    want = "flat within noise" if abs(kp) < 2 * se else "domed" if kp < 0 else "dented"
+    got = (float(m.group(1)), m.group(2), float(m.group(3)), float(m.group(4)), m.group(5))
+    good = abs(got[0] - k) < 6e-4 and abs(got[2] - kp) < 6e-4 and abs(got[3] - se) < 6e-4 and got[1] == want_p \
+        and got[4].startswith(want)
+    print(f"  csv: probe {k}, particles {kp} +- {se}: want {want_p}, {want}; {'ok' if good else 'MISMATCH'}")
+    ok = ok and good
+sys.exit(0 if ok else 1)
+PY
+    ;;
 # #18, Ding §7.3 with the physical cookie (cookies.lua --set preset=physical: h.library.dough.cookie, a sugar-snap
 # dough's measured or composition-predicted density, heat capacity and conductivity, latent heat, boiling and
 # browning on; 13.2 s stand for 11 minutes at 190 degC, h.library.oven.cookie's bake). The same bar as

@@ -52,6 +52,21 @@ elseif which == "label" then
   print("run_label_table " .. tostring(ok) .. " " .. tostring(err))
   ok, err = pcall(s.run, s, { until_t = s:stats().t + 0.001, png = { field = "temperature", label = ("y"):rep(65) } })
   print("run_label_long " .. tostring(ok) .. " " .. tostring(err))
+elseif which == "region" then
+  -- png_region_option (#18, helper userfix5): a close-up of the block, particles and slice, and a run's frames
+  local _, d = s:png("temperature", "whole.png", { kind = "particles" })
+  show("whole", d)
+  local R = { { 0.04, 0.01 }, { 0.16, 0.06 } }
+  local _, p = s:png("temperature", "close.png", { kind = "particles", region = R })
+  show("close", p)
+  local _, q = s:png("temperature", "close_slice.png", { region = R })
+  show("close_slice", q)
+  refused { region = { { 0.04, 0.01 }, { 0.26, 0.06 } } } -- beyond the domain's x
+  refused { region = { { 0.16, 0.01 }, { 0.04, 0.06 } } } -- backwards
+  refused { region = { 0.04, 0.01, 0.16, 0.06 } }         -- not two corners
+  s:run { until_t = 0.002, every = 0.001, png = { field = "temperature", path = "run_%04d.png", region = R } }
+  local ok, err = pcall(s.run, s, { until_t = s:stats().t + 0.001, png = { field = "temperature", regoin = R } })
+  print("run_misspelt " .. tostring(ok) .. " " .. tostring(err))
 else
   local _, c = s:png("temperature", "cividis.png", { colormap = "cividis" })
   show("cividis", c)

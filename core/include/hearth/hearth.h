@@ -646,6 +646,11 @@ typedef struct hearth_picture_def {
     /// HEARTH_PICTURE_LABEL_MAX bytes, no control characters. NULL or "" (default) = the time alone. The caller
     /// keeps it; it is read during the call only.
     const char *label;
+    /// The part of the picture's plane it shows (m): {horizontal lo, vertical lo, horizontal hi, vertical hi}, the
+    /// axes as the picture's (x and y for particles; a slice's in-plane axes in order), inside the domain, lo < hi;
+    /// the height follows its aspect. NaN (default) = the whole domain. A close-up of a thin body: a 10 mm
+    /// pancake in a 0.32 m box (#18, helper userfix5).
+    double region[4];
 } hearth_picture_def;
 
 /// The longest hearth_picture_def.label in bytes: with the longest time it still fits the title's 192 bytes.

@@ -426,9 +426,16 @@ for _, T in ipairs(ovens) do
       print(("cookies.lua: warning: oven %g degC, leavener %g: the cookie reaches the edge of its slot (%.0f mm wide): "
         .. "it touches the box's wall or its neighbour, and its readings are not its own alone"):format(T, a, SPACING * 1e3))
     end
-    print(("oven %g degC, leavener %g: height %.4f m, spread %.4f m, top curvature %.3f 1/m (particles %.3f +- %.3f); "
+    -- the two curvatures with what each says (#18, helper userview3's item 5: the physical cookie's disagreed in sign
+    -- and the line did not say which to read): the claims (tests/baking/cookie.sh) call a top domed when both read
+    -- below 0, and take the particles' fit as unresolved when it lies within two of its standard errors of 0
+    local pread = pse ~= pse and "no standard error" or math.abs(pcurv) < 2 * pse
+      and "flat within noise, |k| < 2 standard errors" or pcurv < 0 and "domed" or "dented"
+    print(("oven %g degC, leavener %g: height %.4f m, spread %.4f m; top curvature, below 0 domed (the claims need "
+      .. "both): probe %+.3f 1/m, %s; particles %+.3f +- %.3f 1/m, %s; "
       .. "%d of its %d particles beyond two spacings of its largest piece (%d with the link stretched by J)"):format(T, a,
-      hgt, spread, curv, pcurv, pse, off, count, off_swollen))
+      hgt, spread, curv, curv < 0 and "domed" or curv > 0 and "dented" or "flat", pcurv, pse, pread,
+      off, count, off_swollen))
   end
   h.write("cookies.csv", table.concat(rows, "\n") .. "\n")
   if physical then -- the crust's colour (Zanoni et al. 1995's index, 0..1): a picture, and per cookie a printed line

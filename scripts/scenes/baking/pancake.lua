@@ -58,17 +58,23 @@
 -- of the warm batter (Cam-clay yields in tension), which fed itself; it now
 -- takes the elastic J^E (core/sim/solver/mpm.c). The guard also no longer calls the
 -- energy the spatula gives a runaway (core/sim/solver/guard.c).
--- Writes, under hearth-out/pancake/: heat_%04d.png (temperature) and
+-- Writes, under hearth-out/pancake/: heat_%04d.png (temperature, the whole box: the flip lifts it ~8 cm), pan_%04d.png
+-- (the same frames' close-up on the pancake: 0.12 m of the pan around it, 30 mm high; picture option region) and
 -- pancake.csv: over time, the temperature of the pancake's face on the pan and
--- of its top face (-1 while no batter lies on the pan at its centre), whether
--- it has been flipped, and the batter's mean height above the pan and mean x;
+-- of its top face, whether it has been flipped, and the batter's mean height above the pan and mean x;
 -- flip.csv: the flip time and the bottom's temperature then; landed.csv: every particle at the end (the time, id,
 -- position, J, temperature; tests/pancake_landed_measure.py reads its pieces and holes). With preset=physical,
 -- pancake.csv also has the real time, the middle particle's temperature and the water it holds (of the raw
 -- batter's), the browning of the
 -- lowest (on the pan) and highest particle on the centre line, and the water left of what was poured; and
--- browning.png and saturation.png at the end, and profile.csv: the particles within dx/2 of the centre line at
--- the end, from the pan up (height, temperature, water held, browning).
+-- browning.png and saturation.png at the end (the close-up's region), and profile.csv: the particles within dx/2 of
+-- the centre line at the end, from the pan up (height, temperature, water held, browning).
+-- An empty cell is "not measured": while no batter lies on the pan at the centre (the pour, the flip) nothing is read
+-- on the centre line. tests/baking/scenes.sh (baking_scene_*) reads the next line and accepts empty cells in its
+-- columns alone:
+-- pancake.csv may leave empty (not measured): bottom_temperature_degC, top_temperature_degC, thickness_m,
+--   middle_temperature_degC, middle_water_held, bottom_browning, top_browning
+-- flip.csv may leave empty (not measured): bottom_temperature_at_flip_degC
 local h = require "hearth"
 local THETA_SET = require("hearth.dough").THETA[4] -- gelatinisation, degC
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
@@ -183,7 +189,8 @@ local function flip(sc)
   flipped, flip_t = true, sc:stats().t
   if png then png.label = pan_label() end
   if P.flip_dt > 0 then sc:set_dt(nil, P.flip_dt) end
-  h.write("flip.csv", ("flip_time_s,bottom_temperature_at_flip_degC\n%.3f,%.2f\n"):format(flip_t, flip_T))
+  h.write("flip.csv", ("flip_time_s,bottom_temperature_at_flip_degC\n%.3f,%s\n"):format(flip_t,
+    flip_T and ("%.2f"):format(flip_T) or ""))
   local function omega(w) return d3 and { 0, 0, -w } or -w end
   if P.turn == "constant" then
     sc:collider_velocity(spatula, v(0, 0, 0), omega(math.pi / P.spin))
@@ -211,7 +218,7 @@ end
 local function watch(sc)
   local bottom = faces()
   if physical and sc:stats().t * S >= flip_real - 1e-9 then -- the physical preset flips at the recipe's time
-    flip_T = bottom == bottom and bottom or -1
+    flip_T = bottom == bottom and bottom or nil -- flip.csv's cell is then empty: not measured
     flip(sc)
   elseif not physical and bottom == bottom and bottom > P.set_at then
     flip_T = bottom
@@ -275,6 +282,14 @@ if physical then
   head = head .. ",t_real_s,middle_temperature_degC,middle_water_held,bottom_browning,top_browning,water_left"
 end
 local rows = { head }
+-- the close-up (#18, helper userfix5; userview3's item 7: in the whole 0.32 x 0.18 m box a 10 mm pancake is 19 px
+-- thick and its particles 2 px, a sliver): 0.12 m of the pan around the pancake (the landed sheet is ~9 cm long),
+-- from 6 mm below the pan's face to 24 mm above it, about 5 px a millimetre at the default width; on the far side of
+-- the pivot once flipped
+local function close_region()
+  local x = centre()
+  return { { x - 0.06, PAN - 0.006 }, { x + 0.06, PAN + 0.024 } }
+end
 -- the title names the pan and, once turned, says so (#18, helper userview3: a frame said only its time, and the
 -- paper preset's seconds are Table 2's animation units); the flip event turns it
 png = { field = "temperature", path = "heat_%04d.png", time_scale = S, width = P.width,
@@ -282,16 +297,21 @@ png = { field = "temperature", path = "heat_%04d.png", time_scale = S, width = P
 s:run { until_t = until_t, every = until_t / P.frames, png = png,
   on_frame = function(f)
     if P.particles == 1 then write_particles(("particles_%04d.csv"):format(f.index)) end
+    f:png("temperature", "pan_%04d.png", { kind = "particles", time_scale = S, width = P.width, label = pan_label(),
+      region = close_region() })
     local bt, tt, th = faces()
     local my, mx = mean_place()
-    if my == my then -- the face temperatures are -1 while no batter lies on the pan at the centre (mid-flip)
+    if my == my then
+      -- while no batter lies on the pan at the centre (the pour, mid-flip) the centre line's cells are empty: "not
+      -- measured" (the header's list; -1 had read as a temperature, helper userview3's item 3)
       local ok = bt == bt and tt == tt
-      local row = ("%.3f,%.2f,%.2f,%.5f,%d,%.5f,%.5f"):format(f.t, ok and bt or -1, ok and tt or -1, ok and th or 0,
-        flipped and 1 or 0, my, mx)
+      local row = ("%.3f,%s,%s,%s,%d,%.5f,%.5f"):format(f.t, ok and ("%.2f"):format(bt) or "",
+        ok and ("%.2f"):format(tt) or "", ok and ("%.5f"):format(th) or "", flipped and 1 or 0, my, mx)
       if physical then
         local m = ok and inside()
-        row = row .. (m and (",%.1f,%.2f,%.4f,%.4f,%.4f,%.4f"):format(f.t * S, m.T, m.held, m.bottom_browning,
-          m.top_browning, water_left(m.n)) or (",%.1f,-1,-1,-1,-1,-1"):format(f.t * S))
+        row = row .. (m and (",%.1f,%.2f,%.4f,%.4f,%.4f"):format(f.t * S, m.T, m.held, m.bottom_browning,
+          m.top_browning) or (",%.1f,,,,"):format(f.t * S))
+          .. (",%.4f"):format(water_left(s:stats().particles)) -- the whole batter's, whatever lies at the centre
       end
       rows[#rows + 1] = row
       h.write("pancake.csv", table.concat(rows, "\n") .. "\n")
@@ -312,8 +332,10 @@ if physical then
   local lines = { "height_m,temperature_degC,water_held,browning" }
   for _, q in ipairs(prof) do lines[#lines + 1] = ("%.5f,%.2f,%.4f,%.4f"):format(table.unpack(q)) end
   h.write("profile.csv", table.concat(lines, "\n") .. "\n")
-  s:png("browning", "browning.png", { time_scale = S, width = P.width, label = pan_label() })
-  s:png("saturation", "saturation.png", { time_scale = S, width = P.width, label = pan_label() })
+  s:png("browning", "browning.png",
+    { time_scale = S, width = P.width, label = pan_label(), region = close_region() })
+  s:png("saturation", "saturation.png",
+    { time_scale = S, width = P.width, label = pan_label(), region = close_region() })
   local m = inside()
   print(((flip_t and ("flipped at %.1f min (t = %.3f s)"):format(flip_t * S / 60, flip_t) or "not flipped yet")
     .. "; after %.1f min: face on the pan %.1f degC, top %.1f degC (probes), middle "

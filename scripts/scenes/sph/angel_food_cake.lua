@@ -67,8 +67,8 @@
 -- right of the tube's axis and their difference), bands.csv (the mean
 -- temperatures of the top, crumb and bottom bands away from the pan's walls,
 -- sph_cake_crumb_coolest, their batter's browning, the crumb band's saturation
--- and the outer surface's browning and saturation; both CSVs by simulated time t in s and, last, t_real_min, the
--- frames' real minutes), particles_raw.csv, particles_baked.csv and
+-- and the outer surface's browning and saturation; both CSVs by simulated time t_s (s; named t before helper
+-- userfix5) and, last, t_real_min, the frames' real minutes), particles_raw.csv, particles_baked.csv and
 -- particles_end.csv (the particles after the first step, as the bake ends and
 -- at until_t: tests/sph_cake_rise.py) and browning and
 -- temperature frames (the browning index of Zanoni et al. 1995 from
@@ -279,8 +279,8 @@ positions("particles_raw.csv")
 local A0 = area()
 -- t is the simulated time (s); t_real_min, last, the real minutes the frames' titles give (S = 1600): the CSVs had
 -- the one clock and the frames the other (#18, helper userview3)
-local csv = { "t,relative_volume,mean_temperature_C,phase,T_left_C,T_right_C,T_right_minus_left_C,t_real_min" }
-local bands = { "t,T_top_C,T_crumb_C,T_bottom_C,top_mm,B_top,B_crumb,B_bottom,S_crumb,B_outer,S_outer,t_real_min" }
+local csv = { "t_s,relative_volume,mean_temperature_C,phase,T_left_C,T_right_C,T_right_minus_left_C,t_real_min" }
+local bands = { "t_s,T_top_C,T_crumb_C,T_bottom_C,top_mm,B_top,B_crumb,B_bottom,S_crumb,B_outer,S_outer,t_real_min" }
 local cooling, peak, peak_t, baked, baked_b = false, 1, 0, nil, nil
 -- the frames' titles give the real time the scene's S = 1600 stands for, then the simulated seconds; browning
 -- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as

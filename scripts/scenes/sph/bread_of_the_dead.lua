@@ -65,7 +65,7 @@
 -- 0.90 W/(m K) on S: 1.77x the dough's, so the surface took ~25 min instead of
 -- ~15 to reach 100 degC in the 1D slab of scripts/validation/dead_crust_slab.py.
 -- Writes volume.csv: relative volume (from a density slice), the height of
--- the top ball and of a bone knuckle above the tray, over time (t in simulated s and, last, t_real_min, the frames'
+-- the top ball and of a bone knuckle above the tray, over time (t_s in simulated s and, last, t_real_min, the frames'
 -- real minutes); and
 -- particles_NNNN.csv (the raw loaf, then every frame) and particles_end.csv
 -- (at until_t): x, y (m), T (degC), outer (1 where the oven's heat
@@ -201,7 +201,7 @@ end
 s:step(1) -- the density slice needs one SPH step (before it the probe has no SPH density)
 local A0 = area()
 -- t is the simulated time (s); t_real_min, last, the real minutes the frames' titles give (S = 1500)
-local csv = { "t,relative_volume,ball_top_m,knuckle_top_m,t_real_min" }
+local csv = { "t_s,relative_volume,ball_top_m,knuckle_top_m,t_real_min" }
 positions("particles_0000.csv")
 -- the frames' titles give the real time the scene's S = 1500 stands for, then the simulated seconds; browning
 -- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as

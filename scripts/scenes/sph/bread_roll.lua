@@ -70,7 +70,7 @@
 -- "The roll's cells open at the set", and one that opens as the dough round
 -- it sets: "The roll's cells open as their walls set".)
 -- Writes volume.csv (relative volume over time, from a density slice, and the
--- coolest particle's temperature), particles_NNNN.csv (positions, for
+-- coolest particle's temperature; by simulated time t_s, s), particles_NNNN.csv (positions, for
 -- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
 -- particle's temperature history (Zanoni et al. 1995, the thesis's [89];
 -- browning_scale = 400 lets the 3 s animation stand for a 20-minute bake).
@@ -224,7 +224,7 @@ local function area()
   return n * (0.16 / 160) * (0.12 / 120)
 end
 local A0 = area()
-local csv = { "t,relative_volume,coolest_T_degC" }
+local csv = { "t_s,relative_volume,coolest_T_degC" }
 -- particle positions (x, y in m) for measures that do not go through the density field
 -- (tests/sph_roll_measure.py: occupied area and connected pieces)
 local function positions(path)

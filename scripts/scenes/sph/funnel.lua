@@ -5,7 +5,7 @@
 -- animation units; here viscosity is in Pa s and the explicit viscous step
 -- (dt <= 0.125 rho h^2 / mu) makes very high values slow, so compare e.g.
 -- --set viscosity=0.5 with --set viscosity=50. Writes outflow.csv: the share
--- of a line at y = 0.05 m (below the neck) covered by fluid, over time.
+-- of a line at y = 0.05 m (below the neck) covered by fluid, over time (t_s, s).
 local h = require "hearth"
 -- newtonian's range of viscosity: [0, 1e6] Pa s
 local P = h.params { viscosity = h.number { 0.5, min = 0, max = 1e6, unit = "Pa s", what = "the fluid's viscosity" },
@@ -20,7 +20,7 @@ s:collider { shape = h.capsule({ 0.02, 0.3 }, { 0.2 - neck, 0.18 }, 0.006), mode
 s:collider { shape = h.capsule({ 0.38, 0.3 }, { 0.2 + neck, 0.18 }, 0.006), mode = "slip" }
 
 local n = s:stats().particles
-local rows = { "t,pool_share" }
+local rows = { "t_s,pool_share" }
 s:run { until_t = 1.0, every = 0.05, png = { field = "speed", path = "frames/speed_%04d.png" },
   on_frame = function(f)
     local below = 0

@@ -13,7 +13,7 @@
 -- flow without the tuner.
 -- Writes front.csv: the position of the flow front along the slope (its
 -- farthest particle), the mean temperature of the particles' rows in a
--- temperature slice, over time; and temperature frames.
+-- temperature slice, over time (t_s, s); and temperature frames.
 local h = require "hearth"
 -- the viscosity curve runs from T_air through 600 degC to T_hot, so T_air lies below 600 and T_hot above it
 local P = h.params { dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
@@ -60,7 +60,7 @@ local function mean_T()
   for _, row in ipairs(T) do for _, v in ipairs(row) do if v == v then sum, n = sum + v, n + 1 end end end
   return n > 0 and sum / n or 0 / 0
 end
-local csv = { "t,front_m,mean_temperature_C" }
+local csv = { "t_s,front_m,mean_temperature_C" }
 s:run { until_t = P.until_t, every = 0.1, png = { field = "temperature", path = "frames/temperature_%04d.png" },
   on_frame = function(f)
     csv[#csv + 1] = ("%.4f,%.5f,%.1f"):format(f.t, front(), mean_T())
