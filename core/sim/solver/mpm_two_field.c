@@ -195,7 +195,7 @@ static void gather_gradient(hearth_scene *s, int k) {
 }
 
 /* pass 4, per particle block (colour phases): each node's reference, the particle gradient of largest norm; where
- * two bodies meet, the contact normal's sum grad m_B - grad m_A instead (header) */
+ * two bodies meet, the two fields' mass gradients instead (header) */
 static void scatter_reference(hearth_scene *s, int k) {
     const grid *g = &s->g;
     const pblock pb = s->mpm->pb[k];
@@ -214,11 +214,13 @@ static void scatter_reference(hearth_scene *s, int k) {
                 double *node = node_of(g, st.base[0] + a, st.base[1] + b, &l);
                 double *gx = node + CH_TF_GX * NPB + l, *gy = node + CH_TF_GY * NPB + l;
                 const double gb = node[CH_TF_GB * NPB + l];
-                if (gb > 0.0) { /* a body contact node: dw is d w_ip / d x_p, so the node's mass gradient (d / d x_i)
-                                 * takes -m dw: - for the second field's mass, + for the first's */
-                    const double sg = G[PD * i + 2] != gb ? -mg : mg;
-                    *gx += sg * st.dw[0][a] * st.w[1][b];
-                    *gy += sg * st.w[0][a] * st.dw[1][b];
+                if (gb > 0.0) { /* a body contact node: dw is d w_ip / d x_p, so a field's mass gradient (d / d x_i) is
+                                 * sum -m dw: the first's negated (outward) in CH_TF_GX/GY, the second's in CH_TF_D/S,
+                                 * each pointing from the first toward the second */
+                    const int sec = G[PD * i + 2] != gb;
+                    const double sg = sec ? -mg : mg;
+                    node[(sec ? CH_TF_D : CH_TF_GX) * NPB + l] += sg * st.dw[0][a] * st.w[1][b];
+                    node[(sec ? CH_TF_S : CH_TF_GY) * NPB + l] += sg * st.w[0][a] * st.dw[1][b];
                 } else if (n2 > *gx * *gx + *gy * *gy) {
                     *gx = px, *gy = py; /* ties keep the first (a fixed order) */
                 }
@@ -301,6 +303,14 @@ hearth_status mpm_two_field_prepare(hearth_scene *s, hearth_error *err) {
         }
 #pragma omp for schedule(dynamic, 2)
         for (int k = 0; k < m->npb; k++) gather_gradient(s, k);
+        if (bodies) {
+#pragma omp for schedule(static)
+            for (int k = 0; k < g->nactive; k++) { /* a body contact node's D_i is read: its channel takes a gradient */
+                double *node = grid_block(g, k);
+                for (int l = 0; l < NPB; l++)
+                    if (node[CH_TF_GB * NPB + l] > 0.0) node[CH_TF_D * NPB + l] = 0.0;
+            }
+        }
         colours_team(s, scatter_reference);
 #pragma omp for schedule(static)
         for (int k = 0; k < g->nactive; k++) { /* a node below the threshold is not split (a body contact node is) */
@@ -309,6 +319,8 @@ hearth_status mpm_two_field_prepare(hearth_scene *s, hearth_error *err) {
                 double *gx = node + CH_TF_GX * NPB + l, *gy = node + CH_TF_GY * NPB + l;
                 if (node[CH_TF_GB * NPB + l] == 0.0 && *gx * *gx + *gy * *gy < split2) *gx = *gy = 0.0;
                 if (node[CH_TF_GB * NPB + l] > 0.0) { /* a body contact node: its unit normal, surfaces not found yet */
+                    const double bx = node[CH_TF_D * NPB + l], by = node[CH_TF_S * NPB + l];
+                    if (bx * bx + by * by > *gx * *gx + *gy * *gy) *gx = bx, *gy = by; /* the larger gradient (header) */
                     const double gl = sqrt(*gx * *gx + *gy * *gy);
                     if (gl > 0) *gx /= gl, *gy /= gl;
                     node[CH_TF_D * NPB + l] = -INFINITY;
