@@ -46,12 +46,32 @@
  * in the prepare pass, so P2G and G2P agree), that body's particles are the
  * first field and every other body's the second (three or more bodies at one
  * node: all but the lowest share the second field and move as one there).
- * Its normal n, from the first field toward the second, is the direction of
- * grad m_B - grad m_A, the two fields' mass gradients sum m_p grad w_ip
- * (Bardenhagen et al. 2000: each body's normal at a node is its mass
- * gradient's direction; the difference makes n = -n' for the pair), and the
- * same correction as at a crack applies: approach stopped, momentum kept,
- * separation free, Coulomb friction two_field_friction. Where a crack meets a
+ * Its normal n, from the first field toward the second, is a body's mass
+ * gradient sum m_p grad w_ip (Bardenhagen et al. 2000: a body's normal at a
+ * node), the first's negated, of the two the larger (the choice NairnMPM
+ * calls the maximum volume gradient). Measured (tests/unit_body_contact.c): a block sliding on
+ * a slab took the block's gradient, tilted at its ends, as its normal when
+ * that was used alone, and its friction came out 2x mu g; the difference of
+ * the two, 30% over at 2.5 mm; the larger, 5.7% (18.7% at 5 mm, 8 cells).
+ * The same correction as at a crack applies, approach stopped, momentum kept,
+ * separation free, Coulomb friction two_field_friction, with three changes:
+ *  - only where the bodies touch by the step's end: the gap along n between
+ *    the first field's surface, max (x_p . n + h_p), and the second's, min
+ *    (x_p . n - h_p), over the particles facing the node, is at most what the
+ *    fields close in dt (h_p and the allowances are mpm_touch.c's, the faces'
+ *    touch test). Without it two bodies meet a cell apart, as with one field
+ *    (the block on pebble.lua's pebbles rested at 1.66 dx, touching 0.75);
+ *  - a field that a face (wall or collider) held at the node in the grid
+ *    update is rigid there: the other field takes its normal velocity (and
+ *    the friction against it), and the face takes the reaction. The
+ *    momentum-weighted correction after the face had held a pebble pushed it
+ *    into its tray (the block then lay on the tray at 0.25 dx);
+ *  - a face holds a field where a particle of that field's body touches the
+ *    face (mpm_two_field_holds, for mpm_touch.c): the pebble touching the
+ *    tray had the tray hold the block's field too, a cell up (1.18 dx).
+ * The rigid rule and the face's field are for body nodes only: a crack's
+ * nodes keep the behaviour they had (its sides never touched a face in a
+ * test). Where a crack meets a
  * body boundary the body rule wins at the nodes both bodies touch, and the
  * damage rule stands at the nodes only one body touches (the crack's sides
  * within one body part as before). Each particle carries its body's tag,
@@ -59,7 +79,7 @@
  * in m->dgrad; a node's tag channel CH_TF_GB holds its reference body's tag,
  * 0 where fewer than two bodies touch it. A scene of one body (or of none)
  * splits no node by body and takes the damage-only path to the bit.
- * A scene without a cracked particle splits no node: the second field is
+ * A scene without a cracked particle or a second body splits no node: the second field is
  * empty, the first is the total to the bit, and the step is the one-field
  * step's bits (two_field_off_same_bits). A scene with two_field = false
  * allocates and runs none of this.
@@ -195,7 +215,7 @@ static void gather_gradient(hearth_scene *s, int k) {
 }
 
 /* pass 4, per particle block (colour phases): each node's reference, the particle gradient of largest norm; where
- * two bodies meet, the two fields' mass gradients instead (header) */
+ * two bodies meet, the two fields' mass gradients instead (header; the larger becomes the normal) */
 static void scatter_reference(hearth_scene *s, int k) {
     const grid *g = &s->g;
     const pblock pb = s->mpm->pb[k];
