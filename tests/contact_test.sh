@@ -251,6 +251,26 @@ PY
     [ $rc -eq 77 ] && exit 77
     [ $rc -eq 0 ] || bad=1
     ;;
+drop_rests_on_pebbles_two_field)
+    # drop_rests_on_pebbles's drops (released 1 and 0.25 dx above the pebbles) with two_field = true (helper
+    # bodycontact, #18): a node two bodies' stencils share is split by body, and the bodies push on each other only
+    # where they touch (core/sim/solver/mpm_two_field.c). The bar is drop_rests_on_pebbles's, set before its first run:
+    # the block's lowest particle over the pebbles within 0.25 dx of where touching puts it, both drops.
+    for l in 1 0.25; do
+        "$hearth" run "$root/tests/contact/pebble.lua" --quiet --set two_field=true --set lift=$l >out.txt 2>err.txt ||
+            { echo "FAIL: pebble.lua --set two_field=true --set lift=$l: exit $?: $(cat err.txt)" >&2; exit 1; }
+        python3 - out.txt $l <<'PY' || bad=1
+import sys
+line = [l for l in open(sys.argv[1]).read().splitlines() if l.startswith("result ")][-1]
+r = {k: float(v) for k, v in (kv.split("=") for kv in line.split()[1:])}
+ok = abs(r["over"] - r["contact"]) <= 0.25
+print(f"dx 2 mm, two fields, released {sys.argv[2]} dx above two one-particle pebbles: the block rests {r['over']:.4f} dx "
+      f"above the tray over them, {r['away']:.4f} dx midway, the pebbles' top {r['pebble']:.4f} dx; touching them it "
+      f"would stand at {r['contact']:.4f} dx (need within 0.25 of it): {'ok' if ok else 'FAIL'}")
+sys.exit(0 if ok else 1)
+PY
+    done
+    ;;
 *) echo "unknown case $case_name" >&2; exit 1 ;;
 esac
 [ $bad -eq 0 ] || { echo "FAIL: $case_name (numbers above)" >&2; exit 1; }

@@ -3,15 +3,17 @@
 -- pancake's middle at 2 mm"). Here the same in its simplest form: on a separate tray (h.recipes.tray, y = 2 cm) lie
 -- two pebbles of one particle each (`pebble` x `pebble` cells of the lattice, default 1: a quarter cell, h_p = dx / 4
 -- half-extent) 2 cm apart, and a w x ht elastic block (E 1e5 Pa, 1000 kg/m^3, damped 100 1/s) is released
--- `lift` cells above them over both, for t seconds. Touching, the block's lowest particle over a pebble stands at the
+-- `lift` cells above them over both, for t seconds. two_field = true gives the bodies their own velocity fields
+-- where they meet (core/sim/solver/mpm_two_field.c). Touching, the block's lowest particle over a pebble stands at the
 -- pebble's top plus its own half-spacing h_p.
 -- Prints one line:
 --   result over=<the block's lowest particle over the pebbles, dx above the tray> contact=<where it would stand
 --   touching them, dx> away=<its lowest particle midway between them, dx> pebble=<the pebbles' highest particle, dx>
 local h = require "hearth"
-local P = h.params { dx = 0.002, t = 0.4, lift = 1.0, pebble = 1, w = 0.04, ht = 0.006 }
+local P = h.params { dx = 0.002, t = 0.4, lift = 1.0, pebble = 1, w = 0.04, ht = 0.006, two_field = false }
 local TRAY, XC, GAP = 0.02, 0.07, 0.02
-local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.1 } }, name = "pebble", damping = 100 }
+local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.1 } }, name = "pebble", damping = 100,
+  two_field = P.two_field }
 h.recipes.tray(s, TRAY, { mode = "separate" })
 local m = h.material("elastic", { E = 1e5, nu = 0.3, density = 1000 })
 local hp = P.dx / 2 -- the lattice spacing at 4 particles a cell

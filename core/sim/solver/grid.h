@@ -34,8 +34,13 @@ enum {
  * other scene pays for them: the second field's mass and momentum (velocity
  * after the grid update), in CH_M..CH_PZ's order so the grid update runs on
  * either; the node's reference damage gradient (1/m; zero where the node is
- * not split); the nodal damage (the mass-weighted mean). */
-enum { CH_TF_M = GRID_NCH_MAX, CH_TF_PX, CH_TF_PY, CH_TF_PZ, CH_TF_GX, CH_TF_GY, CH_TF_D, GRID_NCH_TWO };
+ * not split; at a node two bodies touch, the contact normal instead); the
+ * node's reference body's tag (0 where no two bodies touch it; right after the
+ * gradient, so P2G and G2P load the three together); the nodal damage (the
+ * mass-weighted mean; at a node two bodies touch, after the prepare pass, the
+ * gap between their surfaces along the normal); CH_TF_S, the second body's
+ * surface while the prepare pass finds that gap. */
+enum { CH_TF_M = GRID_NCH_MAX, CH_TF_PX, CH_TF_PY, CH_TF_PZ, CH_TF_GX, CH_TF_GY, CH_TF_GB, CH_TF_D, CH_TF_S, GRID_NCH_TWO };
 
 typedef struct grid {
     int dim;

@@ -144,9 +144,9 @@ FORCE_INLINE void p2g_add2(double *p, v2d x) {
  * lane, so the same bits; 0.15M of the 2D dough's 18.2M instructions a
  * step fewer, callgrind). */
 enum { P2G_HC = GRID_NCH_MOMENTUM, P2G_T, P2G_MW, P2G_SW, P2G_V, P2G_NCH };
-/* two_field (2D only): the nodes' reference damage gradients, then the second field's mass and momentum, past
- * the channels above in the same tile (2D uses 36 nodes of its 216) */
-enum { P2G_GX = P2G_NCH, P2G_GY, P2G_BM, P2G_BX, P2G_BY, P2G_NCH_TWO };
+/* two_field (2D only): the nodes' reference damage gradients and body tags, then the second field's mass and
+ * momentum, past the channels above in the same tile (2D uses 36 nodes of its 216) */
+enum { P2G_GX = P2G_NCH, P2G_GY, P2G_GB, P2G_BM, P2G_BX, P2G_BY, P2G_NCH_TWO };
 _Static_assert(P2G_NCH_TWO * GRID_T * GRID_T <= P2G_NCH * GRID_T * GRID_T * GRID_T, "2D's two_field tile fits");
 static const int p2g_channel[P2G_NCH] = {CH_M, CH_PX, CH_PY, CH_PZ, CH_HC, CH_T, CH_MW, CH_SW, CH_CG_R};
 
@@ -183,8 +183,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
             for (int b = 0; b < GRID_T; b++) {
                 int l;
                 const double *node = grid_tile_node(g, D, bc, a, b, 0, &l);
-                tile[P2G_GX * TN + a * GRID_T + b] = node[CH_TF_GX * NPB + l];
-                tile[P2G_GY * TN + a * GRID_T + b] = node[CH_TF_GY * NPB + l];
+                for (int c = 0; c < 3; c++) tile[(P2G_GX + c) * TN + a * GRID_T + b] = node[(CH_TF_GX + c) * NPB + l];
             }
     }
 
@@ -257,7 +256,7 @@ FORCE_INLINE void p2g_block(hearth_scene *s, const int D, const int HEAT, const 
                     if (WATER) p2g_add2(tw + 2 * t, (v2d){wab, wab} * wp);
                     if (HS || WATER) tp[P2G_V * TN + t] += vab;
                     /* the second field's particles at this node scatter the same terms into its channels too */
-                    if (TWO && mpm_two_field_second(tp[P2G_GX * TN + t], tp[P2G_GY * TN + t], dgrad[2 * i], dgrad[2 * i + 1])) {
+                    if (TWO && mpm_two_field_second(tp[P2G_GX * TN + t], tp[P2G_GY * TN + t], tp[P2G_GB * TN + t], dgrad + 3 * i)) {
                         tp[P2G_BM * TN + t] += wab * m;
                         tp[P2G_BX * TN + t] += wab * (mv0 + Q[0] * d0 + Q[1] * d1);
                         tp[P2G_BY * TN + t] += wab * (mv1 + Q[3] * d0 + Q[4] * d1);
@@ -431,7 +430,7 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
     }
     /* a slip or separate face holds a node only where the body touches it (mpm_touch.c): the block's masks,
      * each made when a node first asks */
-    mpm_touch_cache touch = {.done = 0};
+    mpm_touch_cache touch = {.done = 0, .field = s->def.two_field ? (ch0 == CH_TF_M ? 2 : 1) : 0};
     int near[COLLIDER_NEAR_CAP]; /* the colliders near this block's nodes (mpm_block.h) */
     double blo[3], bhi[3];
     const int nnear = mpm_block_colliders(s, bc, 0, blo, bhi, near), nwalk = nnear < 0 ? s->ncol : nnear;
@@ -441,7 +440,7 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
             node[NPB + l] = node[2 * NPB + l] = node[3 * NPB + l] = 0.0;
             continue;
         }
-        int idx[3];
+        int idx[3], held = 0; /* held: a face acted on the node (two_field's contact reads it: mpm_two_field.c) */
         grid_node_index(g, bc, l, idx);
         double xi[3] = {0, 0, 0};
         for (int d = 0; d < D; d++) xi[d] = g->lo[d] + idx[d] * g->dx;
@@ -466,7 +465,7 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
             if (((mpm_touch_gated(def->wall) && (def->wall == HEARTH_SLIP || v[d] * n[d] < 0)) || mpm_touch_glued(def->wall)) &&
                 !mpm_touch_holds(s, &touch, g->active[k], bc, s->ncol + 2 * d + (n[d] < 0), l, dt))
                 continue;
-            contact_apply(def->wall, def->wall_friction, n, zero, v);
+            contact_apply(def->wall, def->wall_friction, n, zero, v), held = 1;
         }
         for (int q = 0; q < nwalk; q++) {
             const int c = nnear < 0 ? q : near[q];
@@ -498,12 +497,12 @@ FORCE_INLINE double grid_update_block(hearth_scene *s, int k, double dt, double 
             /* a held node within reach of a sticky face's reflection: a negative mass marks it for
              * mpm_sticky_ghosts_block, which finds it without an SDF per node and restores the sign */
             if (s->cols[c].mode == HEARTH_STICKY && phi > -1.5 * g->dx) node[l] = -m;
-            contact_apply(s->cols[c].mode, s->cols[c].friction, n, vb, v);
+            contact_apply(s->cols[c].mode, s->cols[c].friction, n, vb, v), held = 1;
             vcol2 = fmax(vcol2, vb[0] * vb[0] + vb[1] * vb[1] + vb[2] * vb[2]);
         }
         node[NPB + l] = v[0];
         node[2 * NPB + l] = v[1];
-        node[3 * NPB + l] = D == 3 ? v[2] : 0.0;
+        node[3 * NPB + l] = D == 3 ? v[2] : held * (double)def->two_field; /* 2D two_field: the held mark */
     }
     return vcol2;
 }
@@ -836,7 +835,7 @@ hearth_status mpm_step(hearth_scene *s, double dt, step_report *rep, hearth_erro
     }
     if (s->def.two_field) mpm_two_field_split(s);
     const double vcol = mpm_grid_update(s, dt);
-    if (s->def.two_field) mpm_two_field_contact(s);
+    if (s->def.two_field) mpm_two_field_contact(s, dt);
     if ((st = mpm_ranks_halo_back(s, err))) return st;
     if (wrap) mpm_periodic_fold(s, 1);
     const int front = heat && water && s->def.latent_heat;

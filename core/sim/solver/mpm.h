@@ -100,7 +100,7 @@ typedef struct mpm_state {
     int failed_alone;       /* a step call failed here with an error the other ranks may not share: no more exchanges (mpm_ranks_end) */
     struct mpm_slabs *slabs; /* the slab mode's state (mpm_ranks.c) */
     struct mpm_slab_fields *sfields; /* the slabs' halo layers for heat and water (mpm_ranks_fields.c) */
-    double *dgrad;          /* two_field: each particle's damage gradient (x, y; 1/m) this step (mpm_two_field.c) */
+    double *dgrad;          /* two_field: each particle's damage gradient (x, y; 1/m) and body tag this step (mpm_two_field.c) */
     int dgrad_cap;
     /* the waits of the step's teams (team_wait.h; HEARTH_TEAM_SPIN at init): the sort's, the one-region
      * step's and 3D's claimed step's barriers spin a while before they sleep */
@@ -113,18 +113,30 @@ typedef struct mpm_state {
 /// each node's reference gradient (CH_TF_GX, CH_TF_GY; zero where the node is
 /// not split). Fails only for memory.
 hearth_status mpm_two_field_prepare(hearth_scene *s, hearth_error *err);
-/// Whether particle gradient (px, py) puts the particle in the second field of
-/// a node whose reference gradient is (gx, gy): the sign of their dot product
-/// (Homel & Herbold 2017); a node that is not split has (0, 0) and keeps all.
-static inline int mpm_two_field_second(double gx, double gy, double px, double py) { return gx * px + gy * py < 0.0; }
+/// Whether a particle goes into the second field of a node whose reference
+/// gradient is (gx, gy) and reference body tag gb. pd is the particle's entry
+/// of m->dgrad: its damage gradient (px, py) and its body tag. Where two bodies
+/// touch the node (gb > 0) every particle of another body than the reference
+/// is in the second field; elsewhere the sign of the gradients' dot product
+/// decides (Homel & Herbold 2017), and a node that is not split has (0, 0)
+/// and keeps all.
+static inline int mpm_two_field_second(double gx, double gy, double gb, const double *pd) {
+    return gb > 0.0 ? pd[2] != gb : gx * pd[0] + gy * pd[1] < 0.0;
+}
 /// Before the grid update: the first field's mass and momentum are the total
 /// less the second's (P2G scatters every particle into the total, so the
 /// field passes see all the material).
 void mpm_two_field_split(hearth_scene *s);
-/// After both fields' grid updates: where the fields press together, the
-/// contact correction (frictionless or Coulomb, momentum kept).
-void mpm_two_field_contact(hearth_scene *s);
+/// After both fields' grid updates (of dt s): where the fields press together
+/// (two bodies: and touch by the step's end), the contact correction
+/// (frictionless or Coulomb, momentum kept).
+void mpm_two_field_contact(hearth_scene *s, double dt);
 void mpm_two_field_free(mpm_state *m);
+/// Whether two or more bodies may meet (the scene has them), so nodes may be split by body.
+int mpm_two_field_bodies(const hearth_scene *s);
+/// Whether particle i belongs to field (1 first, 2 second) at grid node gi (a node of its stencil), for a face's
+/// touch test (mpm_touch.c): at a node two bodies meet, by its body; elsewhere every particle is in both.
+int mpm_two_field_holds(const hearth_scene *s, int i, const int gi[3], int field);
 
 /// The MPM state of s (NULL under another solver), for the field passes an
 /// MPM step runs: the particle blocks of this step's sort and P2G's volumes.

@@ -66,11 +66,13 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                 }
                 if (SELF)
                     for (int d = 0; d < D; d++) tile[(SCH + d) * TN + t] = selfg[((size_t)slot * (size_t)NPB + (size_t)l) * MPM_SELF_NCH + (size_t)d];
-                if (TWO) /* two_field (2D): the second field's velocity and the node's reference gradient */
+                if (TWO) { /* two_field (2D): the second field's velocity, the node's reference gradient and body tag */
                     for (int ch = 0; ch < 2; ch++) {
                         tile[(6 + ch) * TN + t] = node[(CH_TF_PX + ch) * NPB + l];
                         tile[(8 + ch) * TN + t] = node[(CH_TF_GX + ch) * NPB + l];
                     }
+                    tile[12 * TN + t] = node[CH_TF_GB * NPB + l]; /* past SELF's 10 and 11 */
+                }
             }
     const double *dgrad = TWO ? s->mpm->dgrad : NULL;
 
@@ -117,7 +119,7 @@ FORCE_INLINE void g2p_block(hearth_scene *s, const int D, const int HEAT, const 
                 if (D == 2) {
                     const int t = a * GRID_T + b;
                     /* two_field: a particle of the node's second field reads that field's velocity */
-                    const int sec = TWO && mpm_two_field_second(tp[8 * TN + t], tp[9 * TN + t], dgrad[2 * i], dgrad[2 * i + 1]);
+                    const int sec = TWO && mpm_two_field_second(tp[8 * TN + t], tp[9 * TN + t], tp[12 * TN + t], dgrad + 3 * i);
                     const double u0 = sec ? tp[6 * TN + t] : tp[t], u1 = sec ? tp[7 * TN + t] : tp[TN + t];
                     if (HEAT) dT += wab * tp[3 * TN + t];
                     if (PIC) Tn += wab * tp[4 * TN + t];

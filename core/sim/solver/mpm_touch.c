@@ -96,8 +96,7 @@ static int pb_of_block(const mpm_state *m, int id) {
     return -1;
 }
 
-/* particle i's half-extent h_p (m): half its current spacing */
-static double half_extent(const hearth_scene *s, int i) {
+double mpm_touch_half_extent(const hearth_scene *s, int i) {
     const double v = particles_J(&s->ps, i) * pcold(&s->ps, PC_VOL0)[i];
     return 0.5 * (s->g.dim == 2 ? sqrt(fabs(v)) : cbrt(fabs(v)));
 }
@@ -126,7 +125,7 @@ static int touches(const hearth_scene *s, const collider *c, int d, int side, in
     double n[3];
     const double phi = face_distance(s, c, d, side, x, n);
     if (phi > 2.0 * g->dx) return 0;
-    const double reach = half_extent(s, i) + COLLIDER_ROW_TOL * g->dx;
+    const double reach = mpm_touch_half_extent(s, i) + COLLIDER_ROW_TOL * g->dx;
     if (phi <= reach) return 1;
     /* within reach only by what it closes this step: the face's velocity too */
     double vb[3] = {0, 0, 0};
@@ -136,13 +135,15 @@ static int touches(const hearth_scene *s, const collider *c, int d, int side, in
     return phi <= reach + dt * fmax(0.0, close);
 }
 
-uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *c, int d, int side, double dt, int glue) {
+uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *c, int d, int side, double dt, int glue,
+                        int field) {
     const grid *g = &s->g;
     const mpm_state *m = s->mpm;
     const int D = g->dim;
     const double *X = pcold(&s->ps, PC_X);
     if (glue && !(s->ps.enabled & (1u << PC_GLUE))) return 0; /* no step has marked (a caller outside mpm_step) */
     const int *glued = glue ? pcoli(&s->ps, PC_GLUE) : NULL;
+    if (field && !mpm_two_field_bodies(s)) field = 0; /* no node is split by body: every particle holds for both */
     uint64_t mask = 0;
     for (int o = 0; o < (D == 2 ? 4 : 8); o++) {
         int b[3] = {bc[0] - (o & 1), bc[1] - ((o >> 1) & 1), D == 3 ? bc[2] - ((o >> 2) & 1) : 0};
@@ -161,8 +162,12 @@ uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *
             }
             for (int p = lo[0]; p <= hi[0]; p++)
                 for (int q = lo[1]; q <= hi[1]; q++)
-                    for (int r = lo[2]; r <= hi[2]; r++)
+                    for (int r = lo[2]; r <= hi[2]; r++) {
+                        /* two_field: where two bodies meet, a body touching the face holds only its own field */
+                        const int gi[3] = {bc[0] * GRID_B + p, bc[1] * GRID_B + q, 0};
+                        if (field && !mpm_two_field_holds(s, i, gi, field)) continue;
                         mask |= (uint64_t)1 << (D == 2 ? p * GRID_B + q : (p * GRID_B + q) * GRID_B + r);
+                    }
         }
     }
     return mask;
@@ -188,24 +193,25 @@ static int face_mode(const hearth_scene *s, int f, hearth_contact *mode) {
 }
 
 /* face f's mask, whatever its mode: the glued particles' stencils for a sticky face, the touching ones' else */
-static uint64_t face_mask(const hearth_scene *s, const int bc[3], int f, double dt) {
+static uint64_t face_mask(const hearth_scene *s, const int bc[3], int f, double dt, int field) {
     const int w = f - s->ncol; /* a wall: axis w / 2, side w % 2 */
     hearth_contact mode;
     face_mode(s, f, &mode);
     const int glue = mpm_touch_glued(mode) ? mpm_touch_glue_bit(s, f) : 0;
-    return w < 0 ? mpm_touch_mask(s, bc, &s->cols[f], 0, 0, dt, glue) : mpm_touch_mask(s, bc, NULL, w / 2, w % 2, dt, glue);
+    return w < 0 ? mpm_touch_mask(s, bc, &s->cols[f], 0, 0, dt, glue, field)
+                 : mpm_touch_mask(s, bc, NULL, w / 2, w % 2, dt, glue, field);
 }
 
 uint64_t mpm_touch_face_mask(const hearth_scene *s, const int bc[3], int f, double dt) {
     hearth_contact mode;
     if (!face_mode(s, f, &mode) || !(mpm_touch_gated(mode) || mpm_touch_glued(mode))) return 0;
-    if (f < s->ncol) return face_mask(s, bc, f, dt);
+    if (f < s->ncol) return face_mask(s, bc, f, dt, 0);
     const int d = (f - s->ncol) / 2, side = (f - s->ncol) % 2;
     const grid *g = &s->g;
     /* the walls hold the two node layers nearest each face: a block that has none of them has no mask */
     const int lo = bc[d] * GRID_B, hi = lo + GRID_B - 1;
     if (side ? hi < g->nn[d] - 2 : lo > 1) return 0;
-    return face_mask(s, bc, f, dt);
+    return face_mask(s, bc, f, dt, 0);
 }
 
 int mpm_touch_holds(const hearth_scene *s, mpm_touch_cache *tc, int id, const int bc[3], int f, int l, double dt) {
@@ -213,7 +219,7 @@ int mpm_touch_holds(const hearth_scene *s, mpm_touch_cache *tc, int id, const in
     if (f < MPM_TOUCH_CACHE && tc->done >> f & 1) {
         mask = tc->mask[f];
     } else {
-        mask = face_mask(s, bc, f, dt);
+        mask = face_mask(s, bc, f, dt, tc->field);
         if (s->mpm->nranks > 1) mask |= mpm_ranks_touch_below(s, id, f); /* a seam's other side */
         if (f < MPM_TOUCH_CACHE) tc->mask[f] = mask, tc->done |= (uint64_t)1 << f;
     }

@@ -9,8 +9,13 @@
 /* Bit l set: node l of the grid block at block coordinates bc lies in the stencil of a particle that touches
  * the face (collider c, or with c NULL the domain wall on axis d, side 0 low / 1 high) this step of dt (s), or
  * (glue nonzero: a sticky face's glue bit) of a particle whose PC_GLUE holds it.
- * Reads the sorted particles of the step; call between P2G and G2P. */
-uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *c, int d, int side, double dt, int glue);
+ * Reads the sorted particles of the step; call between P2G and G2P. field (two_field): 0 every particle, 1 or 2
+ * at a node two bodies meet only the particles of that node's first or second field (mpm_two_field_holds). */
+/* particle i's half-extent h_p (m): half its current spacing, (J V0)^(1/dim) / 2; also where two bodies touch
+ * (mpm_two_field.c) */
+double mpm_touch_half_extent(const hearth_scene *s, int i);
+uint64_t mpm_touch_mask(const hearth_scene *s, const int bc[3], const collider *c, int d, int side, double dt, int glue,
+                        int field);
 /* The faces a touch mask is made for, numbered f: colliders 0..ncol-1, then the domain walls ncol + 2 d + side;
  * mpm_touch_face's count. mpm_touch_face_mask is face f's mask (0 for a face neither the touch nor the glue
  * gates: a grip). */
@@ -25,6 +30,7 @@ enum { MPM_TOUCH_CACHE = 64 }; /* faces a block keeps; past them each node asks 
 typedef struct mpm_touch_cache {
     uint64_t mask[MPM_TOUCH_CACHE];
     uint64_t done; /* bit f: mask[f] made */
+    int field;     /* two_field: the field whose grid update asks, 1 first or 2 second (mpm_touch_mask); 0 one field */
 } mpm_touch_cache;
 /* 1: face f (a collider, or ncol + 2 d + side a domain wall) may hold node l of the grid block id at block
  * coordinates bc: a particle that touches the face (slip, separate) or is glued to it (sticky) has the node in

@@ -1,5 +1,5 @@
-/* mpm_two_field.c: two velocity fields at the nodes a crack crosses (scene
- * setting two_field; 2D MPM, one rank).
+/* mpm_two_field.c: two velocity fields at the nodes a crack crosses or two
+ * bodies meet (scene setting two_field; 2D MPM, one rank).
  *
  * With one velocity field a node moves everything near it together, so a
  * cracked point is carried along with the material on both sides of it: a
@@ -38,7 +38,48 @@
  *    left alone, so a crack opens freely;
  *  - G2P reads each particle's velocity at each node from its own field, by
  *    the same test with the same gradients as P2G.
- * A scene without a cracked particle splits no node: the second field is
+ * Two bodies (particles.h's PC_BODY: each s:add is one) meet the same way:
+ * with one field a body is held up by another through every node their
+ * stencils share, up to 1.5 dx apart (tests/contact/pebble.lua). A node whose
+ * support holds particles of two or more bodies is split by body instead of
+ * by damage: its reference body is the lowest body id in its support (found
+ * in the prepare pass, so P2G and G2P agree), that body's particles are the
+ * first field and every other body's the second (three or more bodies at one
+ * node: all but the lowest share the second field and move as one there).
+ * Its normal n, from the first field toward the second, is a body's mass
+ * gradient sum m_p grad w_ip (Bardenhagen et al. 2000: a body's normal at a
+ * node), the first's negated, of the two the larger (the choice NairnMPM
+ * calls the maximum volume gradient). Measured (tests/unit_body_contact.c): a block sliding on
+ * a slab took the block's gradient, tilted at its ends, as its normal when
+ * that was used alone, and its friction came out 2x mu g; the difference of
+ * the two, 30% over at 2.5 mm; the larger, 5.7% (18.7% at 5 mm, 8 cells).
+ * The same correction as at a crack applies, approach stopped, momentum kept,
+ * separation free, Coulomb friction two_field_friction, with three changes:
+ *  - only where the bodies touch by the step's end: the gap along n between
+ *    the first field's surface, max (x_p . n + h_p), and the second's, min
+ *    (x_p . n - h_p), over the particles facing the node, is at most what the
+ *    fields close in dt (h_p and the allowances are mpm_touch.c's, the faces'
+ *    touch test). Without it two bodies meet a cell apart, as with one field
+ *    (the block on pebble.lua's pebbles rested at 1.66 dx, touching 0.75);
+ *  - a field that a face (wall or collider) held at the node in the grid
+ *    update is rigid there: the other field takes its normal velocity (and
+ *    the friction against it), and the face takes the reaction. The
+ *    momentum-weighted correction after the face had held a pebble pushed it
+ *    into its tray (the block then lay on the tray at 0.25 dx);
+ *  - a face holds a field where a particle of that field's body touches the
+ *    face (mpm_two_field_holds, for mpm_touch.c): the pebble touching the
+ *    tray had the tray hold the block's field too, a cell up (1.18 dx).
+ * The rigid rule and the face's field are for body nodes only: a crack's
+ * nodes keep the behaviour they had (its sides never touched a face in a
+ * test). Where a crack meets a
+ * body boundary the body rule wins at the nodes both bodies touch, and the
+ * damage rule stands at the nodes only one body touches (the crack's sides
+ * within one body part as before). Each particle carries its body's tag,
+ * body + 2 (>= 1: a particle of no body has -1), next to its damage gradient
+ * in m->dgrad; a node's tag channel CH_TF_GB holds its reference body's tag,
+ * 0 where fewer than two bodies touch it. A scene of one body (or of none)
+ * splits no node by body and takes the damage-only path to the bit.
+ * A scene without a cracked particle or a second body splits no node: the second field is
  * empty, the first is the total to the bit, and the step is the one-field
  * step's bits (two_field_off_same_bits). A scene with two_field = false
  * allocates and runs none of this.
@@ -53,6 +94,7 @@
 #include "error.h"
 #include "material.h"
 #include "mpm.h"
+#include "mpm_touch.h"
 #include "plugins.h"
 
 /* A node is split where its reference damage gradient is at least SPLIT / dx:
@@ -60,8 +102,11 @@
  * smooth rounding of 0/1 damage over several cells does not split. */
 #define SPLIT 0.25
 
+/* particle entries of m->dgrad: damage gradient x, y, body tag */
+#define PD 3
+
 void mpm_two_field_free(mpm_state *m) {
-    mem_free(m->dgrad, sizeof(double) * 2 * (size_t)m->dgrad_cap);
+    mem_free(m->dgrad, sizeof(double) * PD * (size_t)m->dgrad_cap);
     m->dgrad = NULL;
     m->dgrad_cap = 0;
 }
@@ -94,12 +139,26 @@ static void stencil_of(const grid *g, const double *x, stencil2 *st) {
     }
 }
 
+/* whether two or more bodies can meet: the body rule runs only then */
+static int bodies_meet(const hearth_scene *s) { return (s->ps.enabled & (1u << PC_BODY)) && s->nbodies > 1; }
+int mpm_two_field_bodies(const hearth_scene *s) { return bodies_meet(s); }
+
+/* a particle's body tag: body + 2, >= 1 (a particle of no body has -1) */
+static double body_tag(const hearth_scene *s, int i) { return (double)pcoli(&s->ps, PC_BODY)[i] + 2.0; }
+
 /* a stencil node: always in an active block (the sort activated every block a particle's stencil touches) */
 static double *node_of(const grid *g, int i0, int i1, int *l) {
     const int gi[3] = {i0, i1, 0};
     double *node = grid_node_at(g, gi, l);
     HEARTH_ASSERT(node);
     return node;
+}
+
+int mpm_two_field_holds(const hearth_scene *s, int i, const int gi[3], int field) {
+    int l = 0;
+    const double *node = grid_node_at(&s->g, gi, &l);
+    const double gb = node ? node[CH_TF_GB * s->g.nodes_per_block + l] : 0.0;
+    return !(gb > 0.0) || (field == 2) == (s->mpm->dgrad[PD * i + 2] != gb);
 }
 
 /* pass 1, per particle block (colour phases): sum w m and w m D_p at the nodes */
@@ -109,10 +168,11 @@ static void scatter_damage(hearth_scene *s, int k) {
     const pblock pb = s->mpm->pb[k];
     const int NPB = g->nodes_per_block;
     const double *X = pcold(ps, PC_X), *M = pcold(ps, PC_MASS);
+    const int bodies = bodies_meet(s);
     for (int i = pb.start; i < pb.end; i++) {
         stencil2 st;
         stencil_of(g, X + 3 * i, &st);
-        const double m = M[i], md = m * cracked(s, i);
+        const double m = M[i], md = m * cracked(s, i), tag = bodies ? body_tag(s, i) : 0.0;
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++) {
                 int l = 0;
@@ -120,6 +180,11 @@ static void scatter_damage(hearth_scene *s, int k) {
                 const double w = st.w[0][a] * st.w[1][b];
                 node[CH_TF_M * NPB + l] += w * m;
                 node[CH_TF_D * NPB + l] += w * md;
+                if (bodies) { /* the support's lowest tag in CH_TF_GB (0: none yet), its highest in CH_TF_GX for now */
+                    double *lo = node + CH_TF_GB * NPB + l, *hi = node + CH_TF_GX * NPB + l;
+                    if (*lo == 0.0 || tag < *lo) *lo = tag;
+                    if (tag > *hi) *hi = tag;
+                }
             }
     }
 }
@@ -143,28 +208,74 @@ static void gather_gradient(hearth_scene *s, int k) {
                 gx += D * st.dw[0][a] * st.w[1][b];
                 gy += D * st.w[0][a] * st.dw[1][b];
             }
-        G[2 * i] = gx * g->inv_dx;
-        G[2 * i + 1] = gy * g->inv_dx;
+        G[PD * i] = gx * g->inv_dx;
+        G[PD * i + 1] = gy * g->inv_dx;
+        G[PD * i + 2] = bodies_meet(s) ? body_tag(s, i) : 0.0;
     }
 }
 
-/* pass 4, per particle block (colour phases): each node's reference, the particle gradient of largest norm */
+/* pass 4, per particle block (colour phases): each node's reference, the particle gradient of largest norm; where
+ * two bodies meet, the two fields' mass gradients instead (header; the larger becomes the normal) */
 static void scatter_reference(hearth_scene *s, int k) {
     const grid *g = &s->g;
     const pblock pb = s->mpm->pb[k];
     const int NPB = g->nodes_per_block;
-    const double *X = pcold(&s->ps, PC_X), *G = s->mpm->dgrad;
+    const double *X = pcold(&s->ps, PC_X), *G = s->mpm->dgrad, *M = pcold(&s->ps, PC_MASS);
+    const int bodies = bodies_meet(s);
     for (int i = pb.start; i < pb.end; i++) {
-        const double px = G[2 * i], py = G[2 * i + 1], n2 = px * px + py * py;
-        if (n2 == 0.0) continue;
+        const double px = G[PD * i], py = G[PD * i + 1], n2 = px * px + py * py;
+        if (n2 == 0.0 && !bodies) continue;
         stencil2 st;
         stencil_of(g, X + 3 * i, &st);
+        const double mg = M[i] * g->inv_dx;
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++) {
                 int l = 0;
                 double *node = node_of(g, st.base[0] + a, st.base[1] + b, &l);
                 double *gx = node + CH_TF_GX * NPB + l, *gy = node + CH_TF_GY * NPB + l;
-                if (n2 > *gx * *gx + *gy * *gy) *gx = px, *gy = py; /* ties keep the first (a fixed order) */
+                const double gb = node[CH_TF_GB * NPB + l];
+                if (gb > 0.0) { /* a body contact node: dw is d w_ip / d x_p, so a field's mass gradient (d / d x_i) is
+                                 * sum -m dw: the first's negated (outward) in CH_TF_GX/GY, the second's in CH_TF_D/S,
+                                 * each pointing from the first toward the second */
+                    const int sec = G[PD * i + 2] != gb;
+                    const double sg = sec ? -mg : mg;
+                    node[(sec ? CH_TF_D : CH_TF_GX) * NPB + l] += sg * st.dw[0][a] * st.w[1][b];
+                    node[(sec ? CH_TF_S : CH_TF_GY) * NPB + l] += sg * st.w[0][a] * st.dw[1][b];
+                } else if (n2 > *gx * *gx + *gy * *gy) {
+                    *gx = px, *gy = py; /* ties keep the first (a fixed order) */
+                }
+            }
+    }
+}
+
+/* pass 5, per particle block (colour phases), where bodies meet: at each body contact node (unit normal n by now),
+ * the first field's surface max (x_p . n + h_p) in CH_TF_D and the second's min (x_p . n - h_p) in CH_TF_S, h_p
+ * the particle's half-extent (mpm_touch.c's, the colliders' touch test), over the particles that face the node:
+ * those whose extent along the tangent t overlaps the node's cell, |(x_p - x_i) . t| <= dx / 2 + h_p. (Over the
+ * whole support a tilted n projects a flat body's far corner below a neighbour it is still a cell above: the
+ * block on pebble.lua's pebbles then rested 0.27 dx over touching.) */
+static void scatter_surfaces(hearth_scene *s, int k) {
+    const grid *g = &s->g;
+    const pblock pb = s->mpm->pb[k];
+    const int NPB = g->nodes_per_block;
+    const double *X = pcold(&s->ps, PC_X), *G = s->mpm->dgrad;
+    for (int i = pb.start; i < pb.end; i++) {
+        const double *x = X + 3 * i, h = mpm_touch_half_extent(s, i);
+        stencil2 st;
+        stencil_of(g, x, &st);
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) {
+                int l = 0;
+                double *node = node_of(g, st.base[0] + a, st.base[1] + b, &l);
+                const double gb = node[CH_TF_GB * NPB + l];
+                if (!(gb > 0.0)) continue;
+                const double nx = node[CH_TF_GX * NPB + l], ny = node[CH_TF_GY * NPB + l];
+                const double rx = x[0] - (g->lo[0] + (st.base[0] + a) * g->dx), ry = x[1] - (g->lo[1] + (st.base[1] + b) * g->dx);
+                if (fabs(ny * rx - nx * ry) > 0.5 * g->dx + h) continue; /* not facing the node */
+                const double xn = x[0] * nx + x[1] * ny;
+                double *sa = node + CH_TF_D * NPB + l, *sb = node + CH_TF_S * NPB + l;
+                if (G[PD * i + 2] != gb) *sb = fmin(*sb, xn - h);
+                else *sa = fmax(*sa, xn + h);
             }
     }
 }
@@ -186,12 +297,13 @@ hearth_status mpm_two_field_prepare(hearth_scene *s, hearth_error *err) {
     HEARTH_ASSERT(g->dim == 2 && g->nch == GRID_NCH_TWO && m->nranks == 1);
     if (s->ps.n > m->dgrad_cap) {
         mpm_two_field_free(m);
-        if (!(m->dgrad = mem_alloc(sizeof(double) * 2 * (size_t)s->ps.n)))
+        if (!(m->dgrad = mem_alloc(sizeof(double) * PD * (size_t)s->ps.n)))
             return err_set(err, HEARTH_ERR_NOMEM, "out of memory for %d particles' damage gradients (two_field)", s->ps.n);
         m->dgrad_cap = s->ps.n;
     }
     const int NPB = g->nodes_per_block;
     const double split2 = (SPLIT * g->inv_dx) * (SPLIT * g->inv_dx);
+    const int bodies = bodies_meet(s);
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
         colours_team(s, scatter_damage);
@@ -202,17 +314,47 @@ hearth_status mpm_two_field_prepare(hearth_scene *s, hearth_error *err) {
                 const double mw = node[CH_TF_M * NPB + l];
                 node[CH_TF_D * NPB + l] = mw > 0 ? node[CH_TF_D * NPB + l] / mw : 0.0;
                 node[CH_TF_M * NPB + l] = 0.0;
+                if (bodies) { /* two or more tags: the lowest is the reference; fewer: no body split */
+                    double *lo = node + CH_TF_GB * NPB + l, *hi = node + CH_TF_GX * NPB + l;
+                    if (!(*hi > *lo)) *lo = 0.0;
+                    *hi = 0.0;
+                }
             }
         }
 #pragma omp for schedule(dynamic, 2)
         for (int k = 0; k < m->npb; k++) gather_gradient(s, k);
+        if (bodies) {
+#pragma omp for schedule(static)
+            for (int k = 0; k < g->nactive; k++) { /* a body contact node's D_i is read: its channel takes a gradient */
+                double *node = grid_block(g, k);
+                for (int l = 0; l < NPB; l++)
+                    if (node[CH_TF_GB * NPB + l] > 0.0) node[CH_TF_D * NPB + l] = 0.0;
+            }
+        }
         colours_team(s, scatter_reference);
 #pragma omp for schedule(static)
-        for (int k = 0; k < g->nactive; k++) { /* a node below the threshold is not split */
+        for (int k = 0; k < g->nactive; k++) { /* a node below the threshold is not split (a body contact node is) */
             double *node = grid_block(g, k);
             for (int l = 0; l < NPB; l++) {
                 double *gx = node + CH_TF_GX * NPB + l, *gy = node + CH_TF_GY * NPB + l;
-                if (*gx * *gx + *gy * *gy < split2) *gx = *gy = 0.0;
+                if (node[CH_TF_GB * NPB + l] == 0.0 && *gx * *gx + *gy * *gy < split2) *gx = *gy = 0.0;
+                if (node[CH_TF_GB * NPB + l] > 0.0) { /* a body contact node: its unit normal, surfaces not found yet */
+                    const double bx = node[CH_TF_D * NPB + l], by = node[CH_TF_S * NPB + l];
+                    if (bx * bx + by * by > *gx * *gx + *gy * *gy) *gx = bx, *gy = by; /* the larger gradient (header) */
+                    const double gl = sqrt(*gx * *gx + *gy * *gy);
+                    if (gl > 0) *gx /= gl, *gy /= gl;
+                    node[CH_TF_D * NPB + l] = -INFINITY;
+                    node[CH_TF_S * NPB + l] = INFINITY;
+                }
+            }
+        }
+        if (bodies) {
+            colours_team(s, scatter_surfaces);
+#pragma omp for schedule(static)
+            for (int k = 0; k < g->nactive; k++) { /* the gap: the second body's surface less the first's */
+                double *node = grid_block(g, k);
+                for (int l = 0; l < NPB; l++)
+                    if (node[CH_TF_GB * NPB + l] > 0.0) node[CH_TF_D * NPB + l] = node[CH_TF_S * NPB + l] - node[CH_TF_D * NPB + l];
             }
         }
     }
@@ -246,14 +388,18 @@ static void correct(double *v, const double r[2], double rn, const double n[2], 
     v[1] -= rn * n[1] + slip * t[1];
 }
 
-void mpm_two_field_contact(hearth_scene *s) {
+void mpm_two_field_contact(hearth_scene *s, double dt) {
     grid *g = &s->g;
     const int NPB = g->nodes_per_block;
-    const double mu = s->def.two_field_friction;
+    const double mu = s->def.two_field_friction, tol = COLLIDER_ROW_TOL * g->dx;
 #pragma omp parallel for schedule(static) if (s->ps.n >= SCENE_PARALLEL_MIN)
     for (int k = 0; k < g->nactive; k++) {
         double *node = grid_block(g, k);
         for (int l = 0; l < NPB; l++) {
+            /* the grid update's marks where a face held each field (mpm.c's grid_update_block, 2D's z channel),
+             * read and cleared */
+            const int ha = node[CH_PZ * NPB + l] != 0.0, hb = node[CH_TF_PZ * NPB + l] != 0.0;
+            node[CH_PZ * NPB + l] = node[CH_TF_PZ * NPB + l] = 0.0;
             const double ma = node[CH_M * NPB + l], mb = node[CH_TF_M * NPB + l];
             if (!(ma > 0 && mb > 0)) continue;
             const double gx = node[CH_TF_GX * NPB + l], gy = node[CH_TF_GY * NPB + l], gl = sqrt(gx * gx + gy * gy);
@@ -261,7 +407,19 @@ void mpm_two_field_contact(hearth_scene *s) {
             const double n[2] = {gx / gl, gy / gl}; /* from the first field toward the second */
             double va[2] = {node[CH_PX * NPB + l], node[CH_PY * NPB + l]};
             double vb[2] = {node[CH_TF_PX * NPB + l], node[CH_TF_PY * NPB + l]};
-            if (!((va[0] - vb[0]) * n[0] + (va[1] - vb[1]) * n[1] > 0)) continue; /* apart or sliding: free */
+            const double close = (va[0] - vb[0]) * n[0] + (va[1] - vb[1]) * n[1];
+            if (!(close > 0)) continue; /* apart or sliding: free */
+            /* two bodies: in contact only where they touch by the step's end (the colliders' test, mpm_touch.c) */
+            const int body = node[CH_TF_GB * NPB + l] > 0.0;
+            if (body && node[CH_TF_D * NPB + l] > dt * close + tol) continue;
+            if (body && (ha || hb)) { /* a body a face holds here is rigid: the other takes its normal velocity */
+                if (ha && hb) continue; /* the faces have set both */
+                double *vf = ha ? vb : va; /* the free field, its velocity relative to the held one's */
+                const double *vh = ha ? va : vb, r[2] = {vf[0] - vh[0], vf[1] - vh[1]};
+                correct(vf, r, r[0] * n[0] + r[1] * n[1], n, mu);
+                node[(ha ? CH_TF_PX : CH_PX) * NPB + l] = vf[0], node[(ha ? CH_TF_PY : CH_PY) * NPB + l] = vf[1];
+                continue;
+            }
             const double vc[2] = {(ma * va[0] + mb * vb[0]) / (ma + mb), (ma * va[1] + mb * vb[1]) / (ma + mb)};
             const double ra[2] = {va[0] - vc[0], va[1] - vc[1]}, rb[2] = {vb[0] - vc[0], vb[1] - vc[1]};
             correct(va, ra, ra[0] * n[0] + ra[1] * n[1], n, mu);
