@@ -78,12 +78,11 @@
 #include "flip_bound.h"
 #include "tensor2.h"
 #include "phase_clock.h"
+#include "mpm_block.h"
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
-
-#include "mpm_block.h"
 
 /* ---- state ----------------------------------------------------------- */
 
