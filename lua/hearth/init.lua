@@ -744,8 +744,8 @@ function S:collider(o)
   end
   if o.temperature ~= nil then check_number(o.temperature, "s:collider: temperature", -273.15, 5000, "degC") end
   if o.beta ~= nil and o.beta ~= math.huge then check_number(o.beta, "s:collider: beta", 0, 1e9, "W/(m^2 K)") end
-  if (o.start_temperature == nil) ~= (o.warm_time == nil) then -- the values: collider_init's ranges
-    error("s:collider: start_temperature (degC, when added) and warm_time (s) go together: a tray warming to temperature", 2)
+  if (o.start_temperature == nil) ~= (o.warm_time == nil) or (o.warm_time and not (type(o.warm_time) == "number" and o.warm_time > 0)) then
+    error("s:collider: start_temperature (degC, when added) and warm_time (s, > 0) go together: a tray warming to temperature", 2)
   end
   if o.fixed_temperature and o.temperature == nil then
     error("s:collider: fixed_temperature = true needs temperature = ... (degC), the temperature it holds", 2)

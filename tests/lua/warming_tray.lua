@@ -20,8 +20,10 @@ local s = scene(true)
 fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20 } end, "go together")
 fails(function() s:collider { shape = floor, temperature = 100, warm_time = 10 } end, "go together")
 fails(function() s:collider { shape = floor, start_temperature = 20, warm_time = 10 } end, "needs the collider's temperature")
-fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20, warm_time = 0 } end,
-  "warm_time = 0 s; valid range (0, inf)")
+fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20, warm_time = 0 } end, "warm_time (s, > 0)")
+fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20, warm_time = 0 / 0 } end, "warm_time (s, > 0)")
+fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 0 / 0, warm_time = 1 } end,
+  "start_temperature = nan degrees C; valid range [-273.15, 5000]")
 fails(function() s:collider { shape = floor, temperature = 100, start_temperature = -300, warm_time = 1 } end,
   "start_temperature = -300 degrees C; valid range [-273.15, 5000]")
 s:run { until_t = 0.03 }

@@ -388,12 +388,13 @@ typedef struct hearth_collider_def {
     double saturation;         ///< a wet collider (cloth, humid surface) holds the saturation of the particles touching it; NaN = dry
     double beta_water;         ///< with saturation: 0 holds it at the contact (Dirichlet); > 0 exchanges water instead, a flux
                                ///< beta_water (s - saturation) out of the body through the contact (Robin), kg/(m^2 s)
-    double start_temperature;  ///< with temperature: a tray that goes into the oven cold. The collider is at start_temperature
-                               ///< (degrees C) when added and approaches temperature as a lumped sheet heated by the oven,
-                               ///< T(t) = temperature + (start_temperature - temperature) exp(-(t - t_added) / warm_time),
-                               ///< set once a step at the step's start; NaN (the default) = at temperature from the start
-    double warm_time;          ///< with start_temperature: the sheet's time constant (s), its heat capacity per area over the
-                               ///< coefficient that heats it (rho c thickness / beta_total); finite and > 0
+    double start_temperature;  ///< with temperature and warm_time > 0: a tray that goes into the oven cold. The collider is at
+                               ///< start_temperature (degrees C) when added and approaches temperature as a lumped sheet heated
+                               ///< by the oven, T(t) = temperature + (start_temperature - temperature) exp(-(t - t_added) /
+                               ///< warm_time), each heat step taking its mean over the step; read only when warm_time > 0
+    double warm_time;          ///< the sheet's time constant (s), its heat capacity per area over the coefficient that heats it
+                               ///< (rho c thickness / beta_total); 0 (the default, and a zeroed def) = at temperature from
+                               ///< the start
 } hearth_collider_def;
 
 hearth_collider_def hearth_default_collider_def(void);

@@ -147,7 +147,7 @@ static void put_colliders(ck_out *o, const hearth_scene *s) {
         put_f64(o, c->beta);
         put_f64(o, c->saturation);
         put_f64(o, c->beta_water);
-        put_f64(o, c->start_temperature); /* version 14: a tray that warms (NaN: it does not) */
+        put_f64(o, c->start_temperature); /* version 14: a tray that warms (warm_time 0: it does not) */
         put_f64(o, c->warm_time);
         put_f64(o, c->t_added);
     }

@@ -74,24 +74,24 @@ hearth_status collider_init(collider *c, const hearth_collider_def *def, hearth_
         return err_set(err, HEARTH_ERR_PARAM, "collider beta_water = %g kg/(m^2 s); valid range [0, inf) (0 = hold the saturation)",
                        def->beta_water);
     }
-    if (!isnan(def->start_temperature) &&
-        (isnan(def->temperature) || !(def->start_temperature >= -273.15 && def->start_temperature <= 5000) ||
-         !(def->warm_time > 0 && isfinite(def->warm_time)))) {
+    /* warm_time 0 (a zeroed def too): a collider at its temperature from the start */
+    if (def->warm_time != 0 && (!(def->warm_time > 0 && isfinite(def->warm_time)) || isnan(def->temperature) ||
+                                !(def->start_temperature >= -273.15 && def->start_temperature <= 5000))) {
         hearth_shape_free(c->shape);
         c->shape = NULL;
+        if (!(def->warm_time > 0 && isfinite(def->warm_time)))
+            return err_set(err, HEARTH_ERR_PARAM, "collider warm_time = %g s; valid range [0, inf) (the warming sheet's time "
+                                                  "constant; 0 = at its temperature from the start)", def->warm_time);
         if (isnan(def->temperature))
-            return err_set(err, HEARTH_ERR_PARAM, "collider start_temperature = %g degrees C needs the collider's temperature "
-                                                  "(the temperature it warms toward)", def->start_temperature);
-        if (!(def->start_temperature >= -273.15 && def->start_temperature <= 5000))
-            return err_set(err, HEARTH_ERR_PARAM, "collider start_temperature = %g degrees C; valid range [-273.15, 5000]",
-                           def->start_temperature);
-        return err_set(err, HEARTH_ERR_PARAM, "collider warm_time = %g s; valid range (0, inf) (the warming sheet's time "
-                                              "constant, with start_temperature)", def->warm_time);
+            return err_set(err, HEARTH_ERR_PARAM, "collider warm_time = %g s needs the collider's temperature (the "
+                                                  "temperature it warms toward)", def->warm_time);
+        return err_set(err, HEARTH_ERR_PARAM, "collider start_temperature = %g degrees C; valid range [-273.15, 5000] (with "
+                                              "warm_time, its temperature when added)", def->start_temperature);
     }
     c->temperature = def->temperature;
     c->temperature_end = def->temperature;
-    c->start_temperature = def->start_temperature;
-    c->warm_time = isnan(def->start_temperature) ? 0 : def->warm_time;
+    c->start_temperature = def->warm_time > 0 ? def->start_temperature : NAN;
+    c->warm_time = def->warm_time;
     c->t_added = 0;
     c->beta = def->beta;
     c->saturation = def->saturation;

@@ -22,8 +22,8 @@ typedef struct collider {
     double temperature, beta;/* heated collider (degrees C, W/(m^2 K)); NaN temperature = not heated; the present
                               * temperature when it warms (collider_set_time) */
     double temperature_end;  /* a warming collider: the temperature it approaches (degrees C) */
-    double start_temperature;/* a warming collider: its temperature at t_added; NaN = it does not warm */
-    double warm_time, t_added;/* a warming collider: its time constant and when it was added (s) */
+    double start_temperature;/* a warming collider: its temperature at t_added (NaN when it does not warm) */
+    double warm_time, t_added;/* a warming collider: its time constant (0: it does not warm) and when it was added (s) */
     double saturation;       /* wet collider: held saturation of touching particles; NaN = dry */
     double beta_water;       /* wet collider: 0 holds saturation (Dirichlet); > 0 Robin exchange, kg/(m^2 s) */
 } collider;
