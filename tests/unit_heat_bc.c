@@ -54,19 +54,9 @@ static double slab_taken_warming(double Bi, double Fo, double Fo_w) {
 static double slab_taken(double Bi, double Fo) {
     double mean = 0;
     for (int n = 0; n < 400; n++) {
-        double z;
-        if (isinf(Bi)) {
-            z = (n + 0.5) * PI;
-        } else {
-            double a = n * PI + 1e-12, b = n * PI + PI / 2 - 1e-12;
-            for (int k = 0; k < 200; k++) {
-                const double m = 0.5 * (a + b);
-                if (m * tan(m) - Bi > 0) b = m;
-                else a = m;
-            }
-            z = 0.5 * (a + b);
-        }
-        mean += 4 * sin(z) / (2 * z + sin(2 * z)) * exp(-z * z * Fo) * sin(z) / z;
+        double a;
+        const double z = slab_mode(Bi, n, &a);
+        mean += a * exp(-z * z * Fo);
     }
     return 1 - mean;
 }
