@@ -671,6 +671,14 @@ warming_tray_lua)
     has out.txt "warming_tray ok" "warming tray refusals, slab, restore"
     cat out.txt
     ;;
+muffin_cup_goes_in_cold_lua)
+    # h.recipes.muffin_cup's tin goes in cold when the oven says so (pan_start_temperature, pan_warm_time), and is
+    # the hot cup of before when it does not (the paper presets)
+    run muffin_cup_cold.lua
+    expect_rc 0 "muffin_cup_cold.lua"
+    has out.txt "muffin_cup_cold ok" "muffin cup cold start, hot cup unchanged"
+    cat out.txt
+    ;;
 held_temperature_lua)
     # s:collider{fixed_temperature} and s:add{fixed_temperature}: refusals, held values, a checkpoint keeps them
     run held_temperature.lua

@@ -225,6 +225,15 @@ D.goods = {
     gas_rate = 0.03 / 600 * 2.5 * 3 / 1320, reaction_temperature = 40, reaction_width = 20, porosity = 0.1,
     expansion = 0.1, dough_temperature = 20,
     oven_temperature = 180, oven_beta = 30, pan_temperature = 180, pan_beta = 100,
+    -- the tin goes into the oven with the batter in it, at the room's 20 degC, and warms as a lumped sheet (Biot
+    -- 30 x 0.0007 / 60.5 = 3.5e-4): a steel muffin tin of 22 to 24 gauge (0.79 to 0.61 mm; 0.7 mm taken), plain
+    -- carbon steel's 7854 kg/m^3 x 434 J/(kg K) (Incropera & DeWitt, Fundamentals of Heat and Mass Transfer, Table
+    -- A.1) x 0.0007 m = 2386 J/(m^2 K), heated on its outer face only (the batter covers the inner one) by the oven's
+    -- 30 W/(m^2 K): 2386 / 30 = 80 s (69 to 90 s over the two gauges; an aluminium tin of 1 mm, 2440 J/(m^2 K), 81 s).
+    -- A paper liner between holds ~50 g/m^2 x 1.3 kJ/(kg K) = 65 J/(m^2 K), 3% of the tin's: left out. The heat the
+    -- tin gives the batter is not taken from it (colliders.h). Before, the tin stood at 180 degC from the first step
+    -- (docs/validation.md, "The muffin tin and the lava cake's mould go in cold")
+    pan_start_temperature = 20, pan_warm_time_real = 80,
     time_scale = 60, bake_time_real = 1320,
   },
   pancake = {
@@ -329,6 +338,17 @@ D.goods = {
     -- a hot tray, taken at the oven's temperature through the other presets' 100 W/(m^2 K) contact. The batter from
     -- the room (20 degC: baked at once), so the egg set lies (73 - 20) / (200 - 20) = 29% of the way to the oven
     oven_temperature = 200, oven_beta = 30, pan_temperature = 200, pan_beta = 100,
+    -- the mould's wall goes into the oven with the batter in it, at the room's 20 degC, and warms as a lumped sheet
+    -- (Biot 30 x 0.0007 / 237 ~ 1e-4): a spun aluminium pudding (dariole) mould, its wall 0.7 mm (taken: no measured
+    -- gauge here), 2702 kg/m^3 x 903 J/(kg K) (Incropera & DeWitt, Table A.1) x 0.0007 m = 1708 J/(m^2 K), heated on
+    -- its outer face only by the oven's 30 W/(m^2 K): 1708 / 30 = 57 s. Its floor stands on the recipe's hot tray:
+    -- through a ~0.1 mm air gap (0.035 W/(m K) / 1e-4 m ~ 350 W/(m^2 K)) it takes the tray's temperature in
+    -- 1708 / 350 ~ 5 s, so lava_cake.lua keeps the floor at 200 degC and gives these two numbers to the wall only.
+    -- A ceramic ramekin would not be a lumped sheet: a 4.5 mm wall of 2000 x 900 J/(m^3 K) holds 8100 J/(m^2 K)
+    -- (270 s through the oven's face) and its Biot number with the batter's 100 W/(m^2 K) drawing on its inner face
+    -- is (30 + 100) x 0.0045 / 1.5 = 0.39; the batter would take much of that heat, which colliders.h does not take
+    -- from a collider (docs/validation.md, "The muffin tin and the lava cake's mould go in cold")
+    pan_start_temperature = 20, pan_warm_time_real = 57,
     -- 12 real minutes in 12 s (the muffin's and the pancake's S = 60): the scene's 0.4 s lift stands for 24 s of
     -- the heat history, about the recipe's 30 s rest
     time_scale = 60, bake_time_real = 720,

@@ -18,12 +18,15 @@ end
 --- in 2D its section is a U) and the batter filling it to the walls from the floor up.
 --- o: dim, x (the cup's axis), base (the inner floor's y), radius, height (the wall above the floor), wall (wall and
 --- floor thickness), fill (the batter's depth), zc (3D: the axis' z), material, oven (a preset's oven: pan
---- temperature and beta, dough temperature, saturation), mode (the cup's contact), ppc. Returns the cup's collider.
+--- temperature and beta, and for a tin that goes in cold pan_start_temperature and pan_warm_time as R.tray's
+--- start_temperature and warm_time; dough temperature, saturation), mode (the cup's contact), ppc. Returns the cup's
+--- collider.
 function R.muffin_cup(s, o)
   local d3 = o.dim == 3
   local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
   local cup = s:collider { shape = core.cup(v(o.x, o.base, o.zc), { 0, 1, 0 }, o.radius, o.height, o.wall, o.wall),
-    mode = o.mode, friction = 0.3, temperature = o.oven.pan_temperature, beta = o.oven.pan_beta }
+    mode = o.mode, friction = 0.3, temperature = o.oven.pan_temperature, beta = o.oven.pan_beta,
+    start_temperature = o.oven.pan_start_temperature, warm_time = o.oven.pan_warm_time }
   local inner = d3 and core.cylinder(v(o.x, o.base + o.fill / 2, o.zc), { 0, 1, 0 }, o.radius, o.fill / 2)
     or core.box({ o.x - o.radius, o.base }, { o.x + o.radius, o.base + o.fill })
   s:add { shape = inner, material = o.material, temperature = o.oven.dough_temperature, saturation = o.oven.saturation,

@@ -107,7 +107,10 @@ local ring_shape = d3 and (h.cylinder(v(XC, PLATE + HC / 2, zc), { 0, 1, 0 }, R 
     - h.cylinder(v(XC, PLATE + HC / 2, zc), { 0, 1, 0 }, R, HC))
   or (h.box(v(XC - R - WALL, PLATE), v(XC - R, PLATE + HC)) + h.box(v(XC + R, PLATE), v(XC + R + WALL, PLATE + HC)))
 if P.dt_max > 0 then s:set_dt(nil, P.dt_max) end
-local ring = s:collider { shape = ring_shape, mode = "slip", temperature = oven.pan_temperature, beta = oven.pan_beta }
+-- the physical preset's mould wall goes into the oven cold and warms (oven.pan_start_temperature, pan_warm_time:
+-- dough_physical.lua); its floor stands on the recipe's preheated tray and is taken at the tray's temperature
+local ring = s:collider { shape = ring_shape, mode = "slip", temperature = oven.pan_temperature, beta = oven.pan_beta,
+  start_temperature = oven.pan_start_temperature, warm_time = oven.pan_warm_time }
 -- ramekin_base = 1: the ramekin's floor, heated as its wall (the preset's pan: Table 2's conductive theta and beta, or
 -- the physical mould's 200 degC through 100 W/(m^2 K)), under the cake
 -- during the bake; it drops out of the scene when the ring lifts, leaving the cake on the cold plate
