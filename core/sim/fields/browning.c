@@ -59,7 +59,13 @@
  * the contact is not the air's closure). The offsets (T_s - T, s_s - s) are
  * found on the steps that carry the fields, where the boundary arrays follow
  * the particle order, and kept in PC_SURFACE for the steps between (saved in
- * checkpoints, version 9). Without an oven or in SPH nothing changes.
+ * checkpoints, version 9). Without an oven nothing changes.
+ *
+ * SPH (helper sphsurface): an outer particle (sph_outer.c, where the oven's heat enters) browns at its face's
+ * temperature by the same air-film closure (thermal.h's thermal_face_temperature), its centre half its spacing
+ * under the face (sph_heat.c's sph_surface_temperatures, handed over as the solver's "surface_temperature"
+ * values). Its water factor stays the particle's own (SPH has no surface-water closure). Interior particles
+ * keep their own temperature.
  *
  * Integration. Over a step the temperature is taken as constant (its value
  * at the end of the step) and b advances exactly: b <- 1 - (1 - b)
@@ -82,6 +88,7 @@
 
 #include "boundary.h"
 #include "scene.h"
+#include "solver.h"
 #include "thermal.h"
 #include "water.h"
 
@@ -149,6 +156,8 @@ void browning_step(hearth_scene *s, double dt) {
     const int surf = (ps->enabled & (1u << PC_SURFACE)) != 0; /* MPM with an oven (scene.c) */
     if (surf && !s->field_skip) surface_offsets(s);
     const double *o = surf ? pcold(ps, PC_SURFACE) : NULL;
+    /* a solver that reads its own surface (SPH's outer particles, sph_heat.c): the face's temperature, NaN off it */
+    const double *ts = s->solver->particle_values ? s->solver->particle_values(s, "surface_temperature") : NULL;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         if (water_sph_gas(s, &s->mats.slot[mat[i]])) continue; /* an SPH bubble is gas: no crust of its own */
@@ -158,6 +167,6 @@ void browning_step(hearth_scene *s, double dt) {
             continue;
         }
         const double f = wet ? browning_water_factor(water_saturation(s, i), sat0[i]) : 1.0;
-        b[i] = browning_advance(b[i], browning_rate(T[i], scale) * f, dt);
+        b[i] = browning_advance(b[i], browning_rate(ts && !isnan(ts[i]) ? ts[i] : T[i], scale) * f, dt);
     }
 }

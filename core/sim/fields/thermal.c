@@ -231,7 +231,7 @@ static hearth_status find_boundary(hearth_scene *s) {
             double b = 0.0, r = 1.0;
             if (oven) { /* the layer above the sample conducts as the particle does, dried or not */
                 const double kap = material_conductivity(&s->mats.slot[mat[i]], ps, i);
-                const double den = kap > 0 ? 1.0 + beta * depth[i] / kap : 1.0;
+                const double den = thermal_film_den(beta, depth[i], kap);
                 r = 1.0 / den, b = beta / den;
             }
             coef[i] = s->boundary.area[i] * b;
@@ -337,7 +337,7 @@ double thermal_surface_temperature(const hearth_scene *s, int i, double *sample)
      * the sample the rest */
     const double To = s->heat.bnd_temp[i];
     if (sample) *sample = th;
-    return To - (To - th) * s->heat.bnd_surf[i];
+    return thermal_face_temperature(To, th, s->heat.bnd_surf[i]);
 }
 
 /* The colliders' surface terms on the nodes, out_i += (A x)_i - b_i (b only

@@ -69,6 +69,23 @@ int thermal_cg_iterations(const struct hearth_scene *s);
 /// `sample` (may be NULL) takes th.
 double thermal_surface_temperature(const struct hearth_scene *s, int i, double *sample);
 
+/// The air film's closure both solvers read a surface's temperature by (Ding et al. 2019 §3.2's heat flow boundary
+/// condition, kappa grad theta . n = beta (theta_out - theta_s) at the face, across a layer of depth d that conducts
+/// as Fourier's law with a linear profile, the quasi-steady form of Rodriguez-Arenas eq. 3.44 over it): the flux
+/// q = beta (theta_out - theta_s) = kappa (theta_s - theta_p) / d leaves theta_out - theta_p shared between the film
+/// and the layer, and thermal_film_den returns 1 + beta d / kappa, the denominator of the film's share (1 without
+/// conduction, kappa <= 0: nothing carries heat from the face to the particle, which then is the face). beta and
+/// kappa in any units with the same time and heat (their ratio, 1/m, is what counts), d in m.
+static inline double thermal_film_den(double beta, double d, double kappa) {
+    return kappa > 0 ? 1.0 + beta * d / kappa : 1.0;
+}
+/// The face's temperature (degrees C) of that closure: theta_out - (theta_out - theta_p) r, r = 1 / den the film's
+/// share (thermal_film_den). MPM reads theta_p at its grid's sample (thermal_surface_temperature), SPH at an outer
+/// particle's centre (sph_heat.c's sph_surface_temperatures).
+static inline double thermal_face_temperature(double theta_out, double theta_p, double r) {
+    return theta_out - (theta_out - theta_p) * r;
+}
+
 /// Is heat transport on for this scene (temperature live)?
 int thermal_active(const struct hearth_scene *s);
 /// Largest explicit heat step (s), or INFINITY when implicit or inactive.

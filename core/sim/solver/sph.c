@@ -189,7 +189,7 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
 #define ARRAYS(X)                                                                                                      \
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(surf, 1) X(rhof, 1)                  \
         X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9) X(vc, 1)  \
-        X(vr, 1) X(outer, 1) X(oshare, 1)
+        X(vr, 1) X(outer, 1) X(oshare, 1) X(ts, 1)
 
 /* Frees the per-particle columns (ARRAYS, key, order) of a set sized for cap
  * particles: sph_free's set, and ensure's old set or the new one it could not
@@ -754,6 +754,7 @@ const double *sph_particle_values(const hearth_scene *s, const char *which) {
     if (!strcmp(which, "h")) return st->h;
     if (!strcmp(which, "surface")) return st->surf;
     if (!strcmp(which, "outer")) return st->outer;
+    if (!strcmp(which, "surface_temperature")) return s->ps.enabled & (1u << PC_TEMPERATURE) ? st->ts : NULL;
     return NULL;
 }
 

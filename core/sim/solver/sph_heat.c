@@ -7,6 +7,7 @@
 #include <math.h>
 
 #include "material.h"
+#include "thermal.h"
 #include "sph_kernel.h"
 #include "sph_state.h"
 #include "water.h"
@@ -256,6 +257,46 @@ static void heat_ledger(hearth_scene *s, double dt) {
     s->heat.step_oven_heat = dt * q;
 }
 
+/* Each outer particle's face temperature (st->ts, degC; NaN for the rest), for browning.c: colour is the surface's
+ * (issue #18), and an outer particle's centre lies half its spacing under the face it stands for (its rest volume
+ * V = m / rho0, eq. 3.43's, a layer sp = V^(1/d) thick), colder than the face by that half-layer's conduction. The
+ * closure is MPM's (thermal.h's thermal_film_den and thermal_face_temperature, the oven's flux through an air film
+ * h (T_ext - T_s) = kappa (T_s - T_i) / d): d = sp / 2; h the oven's coefficient per unit area, eq. 3.42's
+ * k_h,ext c (the heat per unit area sph_heat_rates gives it, c the material's specific_heat) plus the Robin beta;
+ * kappa the conduction eq. 3.45 gives the particle, k_h,int c, or k_h,int k_i with a dry parameter (k_i =
+ * c kappa(w_i) / kappa_wet, sph_dry_k). h / kappa is what counts, so S and c cancel: k_h,ext / k_h,int without
+ * the Robin term. Without conduction (k_h,int = 0) the face is the particle (film_den 1). A particle by a heated
+ * collider (within h: eq. 3.42's outside is the collider; within its spacing: the Robin contact) keeps its own
+ * temperature, as MPM's by a collider's face: its surface is a contact the air film does not describe.
+ * The flux itself is not moved in by d (MPM's is): sph_heat_rates heats with T_i (docs/validation.md, "SPH's
+ * crust browns at its surface's temperature"). Read at the step's end temperatures, which browning integrates. */
+static void sph_surface_temperatures(hearth_scene *s) {
+    struct sph_state *st = s->sph;
+    const hearth_sph_def *o = &s->def.sph;
+    const sph_cols c = sph_cols_of(s);
+    const int n = c.n, dim = c.dim, *mat = c.mat;
+    const double *x = c.x, *m = c.m, *T = c.T, Text = s->def.oven_temperature;
+    const double beta = isfinite(Text) ? s->def.oven_beta : 0.0;
+    const int dry = sph_heat_dry(s);
+#pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
+    for (int i = 0; i < n; i++) {
+        st->ts[i] = NAN;
+        if (!st->outer[i] || !isfinite(Text) || !(o->heat_ext > 0 || beta > 0)) continue;
+        const double Vr = m[i] / st->rho0[i], sp = dim == 3 ? cbrt(Vr) : sqrt(Vr);
+        int contact = 0;
+        for (int q = 0; q < s->ncol && !contact; q++) { /* sph_heat_rates's two rules for a collider's outside */
+            const collider *cl = &s->cols[q];
+            if (isnan(cl->temperature) || !collider_near(cl, x + 3 * i)) continue;
+            const double sd = collider_sdf(cl, x + 3 * i, NULL);
+            contact = (o->heat_ext > 0 && sd < st->h[i]) || (cl->beta > 0 && sd < sp);
+        }
+        if (contact) continue;
+        const double cw = s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT];
+        const double h = o->heat_ext * cw + beta, kappa = o->heat_int * (dry ? sph_dry_k(s, i, mat[i]) : cw);
+        st->ts[i] = thermal_face_temperature(Text, T[i], 1.0 / thermal_film_den(h, 0.5 * sp, kappa));
+    }
+}
+
 /* Temperatures and water forward by their rates (sph_water.c: with
  * latent_heat a wet particle past the boiling point boils), then the highest
  * temperatures. */
@@ -270,4 +311,5 @@ void sph_fields_advance(hearth_scene *s, double dt) {
     if (T && Tmax)
         for (int i = 0; i < c.n; i++)
             if (T[i] > Tmax[i]) Tmax[i] = T[i];
+    if (T) sph_surface_temperatures(s);
 }

@@ -70,6 +70,8 @@ struct sph_state {
      * for (oshare: 1 at the rest spacing, less where outer particles crowd), both in ARRAYS, and its grid's
      * scratch, og_cap cells */
     double *outer, *oshare;
+    double *ts; /* sph_heat.c's sph_surface_temperatures: an outer particle's face temperature (degC) by the oven's
+                 * film closure, NaN for the others; in ARRAYS, valid after a step (particle_values' "surface_temperature") */
     uint8_t *og;
     int *oq;
     size_t og_cap;

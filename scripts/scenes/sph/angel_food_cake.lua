@@ -35,9 +35,10 @@
 -- Measured with the batter's water (the default since #18 helper sphcrumb, WATER below; docs/validation.md "The
 -- angel food cake's crumb holds its water"): relative volume at its highest in the oven and at t = 3.5 s 1.694 and
 -- 1.548 at dx 3 mm, 1.743 and 1.593 at 2 mm; as the bake ends the crumb band is 102.9 degC (101.2 at 2 mm), browned
--- 0.0074 (0.0068) and holds 0.74 (0.71) of its water, under a top band at 142 degC (141) browned 0.29 (0.34) and an
--- outer surface browned 0.34 (0.38) (claim_sph_angel_cake_crumb_pale[_fine]). The rest of this note was measured
--- without the water (--set water=false, the same bits as before it).
+-- 0.0074 (0.0068) and holds 0.74 (0.71) of its water, under a top band at 142 degC (141) browned 0.34 (0.36) and an
+-- outer surface browned 0.41 (0.43) (claim_sph_angel_cake_crumb_pale[_fine]; the outer particles read at their
+-- face's temperature since helper sphsurface: 0.29 (0.34) and 0.34 (0.38) at their centres' before). The rest of
+-- this note was measured without the water (--set water=false, the same bits as before it).
 -- Measured (2D, #18 helper angelsteam, docs/validation.md "The angel food cake
 -- rises on its steam"): relative volume (density slice) at its highest in the oven
 -- and at t = 3.5 s: 1.692 and 1.526 at dx 3 mm, 1.743 and 1.604 at 2 mm (at 3 mm the
