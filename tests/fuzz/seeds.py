@@ -342,6 +342,15 @@ s:add{shape = h.box({0.1, 0.6}, {0.13, 0.63}), material = m, ppc = 1, temperatur
 s:step(4)
 s:save("OUT")
 """,
+    # version 14: a heated tray that goes in cold (start_temperature, warm_time, t_added per collider)
+    "warming_v14_2d.ck": """local h = require "hearth"
+local s = h.scene{dim = 2, dx = 1 / 16, box = {{0, 0}, {1, 1}}, seed = 11, oven = {temperature = 180, beta = 20}}
+local m = h.material("elastic", {E = 5e4, density = 500, specific_heat = 2000, conductivity = 0.5})
+s:collider{shape = h.plane({0, 0.1}, {0, 1}), temperature = 180, beta = 100, start_temperature = 20, warm_time = 0.5}
+s:add{shape = h.box({0.3, 0.1}, {0.7, 0.3}), material = m, ppc = 2, temperature = 20}
+s:step(3)
+s:save("OUT")
+""",
 }
 
 
