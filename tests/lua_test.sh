@@ -740,7 +740,13 @@ sph_bread_roll_crust_runs)
         expect_rc 0 "the roll with its crust, dry=$dry"
         has out.txt "crust (dry $dry): rim" "the rim's line, dry=$dry"
         has out.txt "crust (dry $dry): centre" "the centre's line, dry=$dry"
+        grep -qi "nan" out.txt && fail "a NaN printed for the roll, dry=$dry: $(grep -i nan out.txt)"
     done
+    # a centre that holds bubbles alone (bubbles=centre) is said to, not printed as -nan (helper sphsurface saw it)
+    run ../../scripts/scenes/sph/bread_roll.lua --set crust=true --set bubbles=centre --set dx=0.003 --until 0.02
+    expect_rc 0 "the roll with its crust and one central bubble"
+    has out.txt "centre 9 particles (0 dough), no dough particle there" "the bubble-only centre said"
+    grep -qi "nan" out.txt && fail "a NaN printed for the roll: $(grep -i nan out.txt)"
     ;;
 sph_cake_heats_mirror_symmetric)
     # The shipped angel food cake is a mirror-symmetric pan, so its two halves

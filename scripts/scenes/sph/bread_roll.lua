@@ -267,7 +267,10 @@ if P.crust then -- the rim against the centre: browning, saturation (the dough's
   end
   for _, k in ipairs { "rim", "centre" } do
     local a = acc[k]
-    print(("crust (dry %s): %s %d particles (%d dough), dough's browning %.4f and saturation %.4f, temperature %.1f degC"):format(
-      tostring(P.dry), k, a[1], a[5] or 0, a[2] / (a[5] or 0), a[3] / (a[5] or 0), a[4] / a[1]))
+    -- a coarse roll's centre can hold bubbles alone (3 mm: its four centre particles): no dough to read there
+    local dough = (a[5] or 0) > 0 and ("dough's browning %.4f and saturation %.4f"):format(a[2] / a[5], a[3] / a[5])
+      or "no dough particle there to read browning and saturation from"
+    print(("crust (dry %s): %s %d particles (%d dough), %s, temperature %.1f degC"):format(
+      tostring(P.dry), k, a[1], a[5] or 0, dough, a[4] / a[1]))
   end
 end
