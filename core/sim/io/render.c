@@ -420,10 +420,15 @@ static hearth_status choose_range(const hearth_scene *s, const hearth_picture_de
 
 /* ---- drawing ---------------------------------------------------------------- */
 
-/* The picture's in-plane axes (u horizontal, v vertical) and the part of them it shows: its region, or the domain. */
-static void view_of(const hearth_scene *s, const hearth_picture_def *d, int *u, int *v, double lo[2], double hi[2]) {
+/* The picture's in-plane axes: u horizontal, v vertical (a particle picture's x and y, a slice's plane in order). */
+static void view_axes(const hearth_picture_def *d, int *u, int *v) {
     const int slice = d->kind == HEARTH_PICTURE_SLICE;
     *u = slice && d->axis == 0 ? 1 : 0, *v = !slice || d->axis == 2 ? 1 : 2;
+}
+
+/* Those axes and the part of them the picture shows: its region, or the domain. */
+static void view_of(const hearth_scene *s, const hearth_picture_def *d, int *u, int *v, double lo[2], double hi[2]) {
+    view_axes(d, u, v);
     if (isnan(d->region[0])) {
         lo[0] = s->def.lo[*u], lo[1] = s->def.lo[*v], hi[0] = s->def.hi[*u], hi[1] = s->def.hi[*v];
     } else lo[0] = d->region[0], lo[1] = d->region[1], hi[0] = d->region[2], hi[1] = d->region[3];
@@ -461,8 +466,8 @@ static hearth_status check_def(const hearth_scene *s, const hearth_picture_def *
     for (int k = 0; k < 4; k++) set += !isnan(d->region[k]);
     if (set) { /* a close-up: inside the domain's plane, lo < hi on both axes */
         static const char *const names[3] = {"x", "y", "z"};
-        const int u = d->kind == HEARTH_PICTURE_SLICE && d->axis == 0 ? 1 : 0;
-        const int v = d->kind != HEARTH_PICTURE_SLICE || d->axis == 2 ? 1 : 2;
+        int u, v;
+        view_axes(d, &u, &v);
         const double *r = d->region, *lo = s->def.lo, *hi = s->def.hi, tol = 1e-9 * (hi[u] - lo[u] + hi[v] - lo[v]);
         int ok = set == 4;
         for (int k = 0; k < 4; k++) ok = ok && isfinite(r[k]);

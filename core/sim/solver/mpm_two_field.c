@@ -140,8 +140,7 @@ static void stencil_of(const grid *g, const double *x, stencil2 *st) {
 }
 
 /* whether two or more bodies can meet: the body rule runs only then */
-static int bodies_meet(const hearth_scene *s) { return (s->ps.enabled & (1u << PC_BODY)) && s->nbodies > 1; }
-int mpm_two_field_bodies(const hearth_scene *s) { return bodies_meet(s); }
+int mpm_two_field_bodies(const hearth_scene *s) { return (s->ps.enabled & (1u << PC_BODY)) && s->nbodies > 1; }
 
 /* a particle's body tag: body + 2, >= 1 (a particle of no body has -1) */
 static double body_tag(const hearth_scene *s, int i) { return (double)pcoli(&s->ps, PC_BODY)[i] + 2.0; }
@@ -168,7 +167,7 @@ static void scatter_damage(hearth_scene *s, int k) {
     const pblock pb = s->mpm->pb[k];
     const int NPB = g->nodes_per_block;
     const double *X = pcold(ps, PC_X), *M = pcold(ps, PC_MASS);
-    const int bodies = bodies_meet(s);
+    const int bodies = mpm_two_field_bodies(s);
     for (int i = pb.start; i < pb.end; i++) {
         stencil2 st;
         stencil_of(g, X + 3 * i, &st);
@@ -210,7 +209,7 @@ static void gather_gradient(hearth_scene *s, int k) {
             }
         G[PD * i] = gx * g->inv_dx;
         G[PD * i + 1] = gy * g->inv_dx;
-        G[PD * i + 2] = bodies_meet(s) ? body_tag(s, i) : 0.0;
+        G[PD * i + 2] = mpm_two_field_bodies(s) ? body_tag(s, i) : 0.0;
     }
 }
 
@@ -221,7 +220,7 @@ static void scatter_reference(hearth_scene *s, int k) {
     const pblock pb = s->mpm->pb[k];
     const int NPB = g->nodes_per_block;
     const double *X = pcold(&s->ps, PC_X), *G = s->mpm->dgrad, *M = pcold(&s->ps, PC_MASS);
-    const int bodies = bodies_meet(s);
+    const int bodies = mpm_two_field_bodies(s);
     for (int i = pb.start; i < pb.end; i++) {
         const double px = G[PD * i], py = G[PD * i + 1], n2 = px * px + py * py;
         if (n2 == 0.0 && !bodies) continue;
@@ -303,7 +302,7 @@ hearth_status mpm_two_field_prepare(hearth_scene *s, hearth_error *err) {
     }
     const int NPB = g->nodes_per_block;
     const double split2 = (SPLIT * g->inv_dx) * (SPLIT * g->inv_dx);
-    const int bodies = bodies_meet(s);
+    const int bodies = mpm_two_field_bodies(s);
 #pragma omp parallel if (s->ps.n >= SCENE_PARALLEL_MIN)
     {
         colours_team(s, scatter_damage);
