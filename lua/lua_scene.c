@@ -449,7 +449,11 @@ static int l_collider(lua_State *L) {
     cd.beta = luaL_optnumber(L, 9, 0);
     if (!lua_isnoneornil(L, 10)) cd.saturation = luaL_checknumber(L, 10);
     cd.beta_water = luaL_optnumber(L, 11, 0);
-    if (!lua_isnoneornil(L, 12)) cd.start_temperature = luaL_checknumber(L, 12);
+    if (!lua_isnoneornil(L, 12)) { /* its range: collider_init; a wrong type named here, not as argument #12 */
+        if (lua_type(L, 12) != LUA_TNUMBER)
+            return luaL_error(L, "s:collider: start_temperature is a %s; valid: a number, degrees C", luaL_typename(L, 12));
+        cd.start_temperature = lua_tonumber(L, 12);
+    }
     cd.warm_time = luaL_optnumber(L, 13, 0);
     if (vfn || ofn) {
         cd.motion = motion_cb;

@@ -22,6 +22,8 @@ fails(function() s:collider { shape = floor, temperature = 100, warm_time = 10 }
 fails(function() s:collider { shape = floor, start_temperature = 20, warm_time = 10 } end, "needs the collider's temperature")
 fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20, warm_time = 0 } end, "warm_time (s, > 0)")
 fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20, warm_time = 0 / 0 } end, "warm_time (s, > 0)")
+fails(function() s:collider { shape = floor, temperature = 100, start_temperature = "cold", warm_time = 1 } end,
+  "start_temperature is a string; valid: a number, degrees C")
 fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 0 / 0, warm_time = 1 } end,
   "start_temperature = nan degrees C; valid range [-273.15, 5000]")
 fails(function() s:collider { shape = floor, temperature = 100, start_temperature = -300, warm_time = 1 } end,
