@@ -455,6 +455,8 @@ static int l_collider(lua_State *L) {
         cd.start_temperature = lua_tonumber(L, 12);
     }
     cd.warm_time = luaL_optnumber(L, 13, 0);
+    cd.heat_capacity = luaL_optnumber(L, 14, 0); /* their ranges: collider_init */
+    cd.area = luaL_optnumber(L, 15, 0);
     if (vfn || ofn) {
         cd.motion = motion_cb;
         cd.motion_ud = new_motion(L, vfn ? 5 : 0, ofn ? 6 : 0, NULL);

@@ -395,6 +395,12 @@ typedef struct hearth_collider_def {
     double warm_time;          ///< the sheet's time constant (s), its heat capacity per area over the coefficient that heats it
                                ///< (rho c thickness / beta_total); 0 (the default, and a zeroed def) = at temperature from
                                ///< the start
+    double heat_capacity;      ///< with warm_time > 0: the sheet's heat capacity per area (J/(m^2 K), rho c thickness), so the
+                               ///< heat it gives the food is taken from it: C A dT/dt = (C A / warm_time) (temperature - T) -
+                               ///< (the heat its contact passed this field step), one lumped temperature over the sheet (MPM
+                               ///< only; a finite beta). 0 (the default) = the food draws nothing from it (T(t) above)
+    double area;               ///< with heat_capacity: the sheet's area (m^2; in 2D its length, m, per metre of depth), the
+                               ///< area that holds C and that the oven heats
 } hearth_collider_def;
 
 hearth_collider_def hearth_default_collider_def(void);
