@@ -540,6 +540,10 @@ hearth_status hearth_scene_collider_set_velocity(hearth_scene *s, int id, const 
 /// Move a collider now by d (m), e.g. to press or place it.
 hearth_status hearth_scene_collider_translate(hearth_scene *s, int id, const double d[3], hearth_error *err);
 int hearth_scene_collider_count(const hearth_scene *s);
+/// A heated collider's heat now: out[0] its temperature (degC; NaN when not heated; a warming sheet's present one),
+/// out[1] the heat a drawing sheet (heat_capacity > 0) has given the food and out[2] the oven's input into it since
+/// it was added (J; in 2D per metre of depth; 0 for a collider that does not draw).
+hearth_status hearth_scene_collider_heat(const hearth_scene *s, int id, double out[3], hearth_error *err);
 /// Signed distance (m, negative inside) from x to the nearest collider in its
 /// current pose; +INFINITY when the scene has none. For drawing colliders.
 double hearth_scene_collider_distance(const hearth_scene *s, const double x[3]);

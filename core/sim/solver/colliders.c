@@ -149,15 +149,17 @@ static double sheet_mean(const collider *c, double T0, double H, double P) {
 /* the draw the next field step takes (lagged one field step: its own is known after its solve) */
 static double sheet_last_power(const collider *c) { return c->last_span > 0 ? c->last_heat / c->last_span : 0.0; }
 
+double collider_temperature_at(const collider *c, double t) {
+    if (collider_draws(c)) /* from its state, the last field step's draw going on */
+        return sheet_at(c, c->sheet_T, fmax(t - c->sheet_t, 0), sheet_last_power(c));
+    if (c->warm_time > 0) /* a lumped sheet: its Biot number is small (a metal tray), so one temperature */
+        return c->temperature_end + (c->start_temperature - c->temperature_end) * exp(-fmax(t - c->t_added, 0) / c->warm_time);
+    return c->temperature;
+}
+
 void collider_set_time(collider *c, double t) {
     if (c->motion) c->motion(c->motion_ud, t, c->vel, c->omega);
-    if (collider_draws(c)) { /* from its state, the last field step's draw going on */
-        c->temperature = sheet_at(c, c->sheet_T, fmax(t - c->sheet_t, 0), sheet_last_power(c));
-        return;
-    }
-    if (c->warm_time > 0) /* a lumped sheet: its Biot number is small (a metal tray), so one temperature */
-        c->temperature = c->temperature_end + (c->start_temperature - c->temperature_end) *
-                                                  exp(-fmax(t - c->t_added, 0) / c->warm_time);
+    if (c->warm_time > 0) c->temperature = collider_temperature_at(c, t);
 }
 
 void collider_heat_interval(collider *c, double t0, double t1) {

@@ -44,6 +44,9 @@ void collider_free(collider *c);
 /// If c has a motion function, vel and omega = motion(t); a warming collider's temperature at t (its
 /// lumped sheet's exponential from start_temperature toward temperature_end since t_added).
 void collider_set_time(collider *c, double t);
+/// A heated collider's temperature at t (collider_set_time's, without its motion): a warming sheet's exponential, a
+/// drawing sheet's state carried on with its last draw, else its temperature.
+double collider_temperature_at(const collider *c, double t);
 /// A warming collider's temperature over the heat step that covers [t0, t1]: its mean there (exact for the
 /// exponential), so the fields see it without the lag a value at the step's start would leave (first order in
 /// the step; with it the slab on a warming plate converges as on a steady one, unit_heat_bc). Else nothing.
