@@ -26,21 +26,23 @@ local function scene(o)
 end
 local s, id = scene { face_beta = 400 }
 fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20, heat_capacity = 20, warm_time = 1 } end,
-  "s:collider: area = nil")
+  "collider area = 0 m^2 (in 2D m, per metre of depth); valid range (0, 1e6]")
 fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20, area = 0.4, warm_time = 1 } end,
-  "s:collider: heat_capacity = nil")
+  "collider heat_capacity = 0 J/(m^2 K); valid range (0, 1e9]")
 fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20, heat_capacity = -1, area = 0.4,
-  warm_time = 1 } end, "s:collider: heat_capacity = -1; valid range")
+  warm_time = 1 } end, "collider heat_capacity = -1 J/(m^2 K); valid range (0, 1e9]")
 fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20, heat_capacity = 20, area = 0 / 0,
-  warm_time = 1 } end, "s:collider: area = nan; valid range")
+  warm_time = 1 } end, "collider area = nan m^2")
+fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20, heat_capacity = "thick",
+  area = 0.4, warm_time = 1 } end, "s:collider: heat_capacity is a string; valid: a number")
 fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20, heat_capacity = 20, area = 0.4,
   warm_time = 1, face_beta = 20 } end, "give one of the two")
 fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20, warm_time = 1, face_beta = 20 } end,
   "face_beta (the oven's coefficient on the sheet's faces) goes with heat_capacity")
 fails(function() s:collider { shape = floor, temperature = 100, heat_capacity = 20, area = 0.4, face_beta = 20 } end,
-  "needs start_temperature")
+  "go together")
 fails(function() s:collider { shape = floor, temperature = 100, start_temperature = 20, heat_capacity = 20, area = 0.4,
-  face_beta = 0 } end, "s:collider: face_beta = 0; valid range")
+  face_beta = 0 } end, "s:collider: face_beta = 0.0 W/(m^2 K); valid range (0, 1e9]")
 fails(function() s:collider_heat(7) end, "collider 7 does not exist")
 s:run { until_t = 0.03 }
 s:save("sheet.ck")
