@@ -202,6 +202,16 @@ mpi_heated_plate_across_slabs_matches_one_rank)
         on_slabs 60
     done
     ;;
+mpi_drawing_plate_across_slabs_matches_one_rank)
+    # hot_plate.lua's plate as a sheet the blocks draw their heat from: each rank's contact points' heat is summed
+    # over the ranks, so the plate's temperature, its books and every particle agree with one process
+    for heat in explicit implicit; do
+        against_one hot_plate.lua 60 --set heat=$heat --set draw=1
+        on_slabs 60
+        one=$(grep '^plate ' "$tmp/one.txt") many=$(grep '^plate ' "$tmp/many.txt")
+        [ -n "$one" ] && [ "$one" = "$many" ] || fail "the plate's sheet differs: one process '$one', $ranks ranks '$many'"
+    done
+    ;;
 mpi_wall_column_matches_one_rank)
     # a column against the box's far wall in an oven, the cut two layers
     # below the end layer: the surface search's domain-wall test reads the end
