@@ -206,8 +206,10 @@ D.goods = {
     -- number ~1e-4): a 1 mm aluminium sheet (2700 kg/m^3 x 900 J/(kg K) x 0.001 m = 2430 J/(m^2 K), handbook values)
     -- heated on both faces by the oven's 30 W/(m^2 K) reaches it with a time constant of 2430 / 60 = 40 s (the heat it
     -- gives the dough is not taken from it: colliders.h). Before, the sheet stood at 190 degC from the first step
-    -- (docs/validation.md, "A tray that goes in cold")
-    pan_start_temperature = 20, pan_warm_time_real = 40,
+    -- (docs/validation.md, "A tray that goes in cold"). pan_heat_capacity, that same 2430 J/(m^2 K): the heat the
+    -- dough draws through pan_beta comes out of the sheet (colliders.h's heat_capacity; cookies.lua gives the sheet's
+    -- area; docs/validation.md, "The sheet gives the food its heat (#18, helper traydraw)")
+    pan_start_temperature = 20, pan_warm_time_real = 40, pan_heat_capacity = 2430,
     time_scale = 50, bake_time_real = 660,
   },
   muffin = {
@@ -394,6 +396,9 @@ function D.preset(name)
   local oven = { temperature = g.oven_temperature, beta = g.oven_beta * S, pan_temperature = g.pan_temperature,
     pan_beta = g.pan_beta * S, dough_temperature = g.dough_temperature, saturation = g.saturation,
     pan_start_temperature = g.pan_start_temperature, pan_warm_time = g.pan_warm_time_real and g.pan_warm_time_real / S,
+    -- the sheet's own heat capacity per area (J/(m^2 K)), real: the scene's time runs S times fast through beta and
+    -- the conductivity (x S), so the sheet's C over the scaled coefficients keeps its scaled time constant
+    pan_heat_capacity = g.pan_heat_capacity,
     latent_heat = true, boiling_point = 100, browning_scale = S, time_scale = S, bake_time = g.bake_time_real / S,
     flip_time = g.flip_time_real and g.flip_time_real / S, portion = g.portion,
     -- open surface pores vent their CO2 (scene settings gas_vent, vent_porosity; core/sim/fields/gas.c): an open

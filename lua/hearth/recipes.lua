@@ -5,12 +5,14 @@ local R = {}
 
 --- A flat tray (a plane collider at height y), optionally heated.
 --- opts: mode ("separate"), friction (0.4), temperature (degC), beta (W/(m^2 K)), and for a tray that goes in
---- cold start_temperature (degC) and warm_time (s, the scene's time: a scaled preset's real seconds over its S).
+--- cold start_temperature (degC) and warm_time (s, the scene's time: a scaled preset's real seconds over its S), and
+--- for one the food draws its heat from heat_capacity (J/(m^2 K)) and area (m^2; 2D: m) (s:collider's).
 function R.tray(s, y, opts)
   opts = opts or {}
   return s:collider { shape = core.plane({ 0, y, 0 }, { 0, 1, 0 }), mode = opts.mode or "separate",
     friction = opts.friction or 0.4, temperature = opts.temperature, beta = opts.beta,
-    start_temperature = opts.start_temperature, warm_time = opts.warm_time }
+    start_temperature = opts.start_temperature, warm_time = opts.warm_time, heat_capacity = opts.heat_capacity,
+    area = opts.heat_capacity and opts.area or nil }
 end
 
 --- A muffin cup and its batter (scripts/scenes/baking/muffins.lua, Ding Fig. 2; tear_open.lua bakes one
