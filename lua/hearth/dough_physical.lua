@@ -234,8 +234,10 @@ D.goods = {
     -- 30 W/(m^2 K): 2386 / 30 = 80 s (69 to 90 s over the two gauges; an aluminium tin of 1 mm, 2440 J/(m^2 K), 81 s).
     -- A paper liner between holds ~50 g/m^2 x 1.3 kJ/(kg K) = 65 J/(m^2 K), 3% of the tin's: left out. The heat the
     -- tin gives the batter is not taken from it (colliders.h). Before, the tin stood at 180 degC from the first step
-    -- (docs/validation.md, "The muffin tin and the lava cake's mould go in cold")
-    pan_start_temperature = 20, pan_warm_time_real = 80,
+    -- (docs/validation.md, "The muffin tin and the lava cake's mould go in cold"). pan_heat_capacity, that same 2386
+    -- J/(m^2 K): the batter's heat comes out of the tin (h.recipes.muffin_cup gives the cup's area; docs/validation.md,
+    -- "The sheet gives the food its heat (#18, helper traydraw)")
+    pan_start_temperature = 20, pan_warm_time_real = 80, pan_heat_capacity = 2386,
     time_scale = 60, bake_time_real = 1320,
   },
   pancake = {
