@@ -351,8 +351,10 @@ D.goods = {
     -- A ceramic ramekin would not be a lumped sheet: a 4.5 mm wall of 2000 x 900 J/(m^3 K) holds 8100 J/(m^2 K)
     -- (270 s through the oven's face) and its Biot number with the batter's 100 W/(m^2 K) drawing on its inner face
     -- is (30 + 100) x 0.0045 / 1.5 = 0.39; the batter would take much of that heat, which colliders.h does not take
-    -- from a collider (docs/validation.md, "The muffin tin and the lava cake's mould go in cold")
-    pan_start_temperature = 20, pan_warm_time_real = 57,
+    -- from a collider (docs/validation.md, "The muffin tin and the lava cake's mould go in cold"). pan_heat_capacity,
+    -- that same 1708 J/(m^2 K): the batter's heat comes out of the wall (lava_cake.lua gives the wall's area; docs/
+    -- validation.md, "The sheet gives the food its heat (#18, helper traydraw)")
+    pan_start_temperature = 20, pan_warm_time_real = 57, pan_heat_capacity = 1708,
     -- 12 real minutes in 12 s (the muffin's and the pancake's S = 60): the scene's 0.4 s lift stands for 24 s of
     -- the heat history, about the recipe's 30 s rest
     time_scale = 60, bake_time_real = 720,
