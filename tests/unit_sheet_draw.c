@@ -172,6 +172,24 @@ TEST(sheet_draw_lumped_pair_closed_form) {
     CHECK(order >= 0.7);
 }
 
+/* Time scaling as the physical presets do it (dough_physical.lua: beta and the conductivity x S, the heat capacities
+ * real, warm_time the real one over S): the energy test's cookie sheet at S = 50, to 120 / S s with steps S times
+ * shorter, takes the same heat and ends at the same temperature as at S = 1 (bar set before the first run: 1e-6
+ * relative; a heat capacity scaled with them would be S times too heavy and fail it). */
+TEST(sheet_draw_time_scaled) {
+    const double S = 50;
+    const sheet_case c1 = {.L = 0.0175, .W = 0.04, .dx = 0.0025, .rho = 1000, .alpha = 2000, .kappa = 0.5,
+                           .beta = 100, .Te = 190, .T0 = 20, .Tf0 = 20, .w = 40, .Ca = 2430, .A = 0.12,
+                           .implicit = 0, .field_steps = 1, .dt = 0.5, .tend = 120};
+    sheet_case cS = c1;
+    cS.kappa *= S, cS.beta *= S, cS.w /= S, cS.dt /= S, cS.tend /= S;
+    const sheet_result r1 = run_sheet(&c1), rS = run_sheet(&cS);
+    const double dq = (rS.food_heat - r1.food_heat) / r1.food_heat, dT = (rS.sheet_T - r1.sheet_T) / r1.sheet_T;
+    printf("  S = 1: %ld steps, food %.6f J/m, sheet %.9f degC; S = %g: %ld steps, food %.6f J/m (%+.2e), sheet %.9f "
+           "degC (%+.2e); bar 1e-6\n", r1.steps, r1.food_heat, r1.sheet_T, S, rS.steps, rS.food_heat, dq, rS.sheet_T, dT);
+    CHECK(fabs(dq) < 1e-6 && fabs(dT) < 1e-6);
+}
+
 /* What the core refuses, each naming the parameter and its range; a sheet with nothing on it is the warm_time
  * exponential (the special case: no draw). */
 TEST(sheet_draw_refusals) {
@@ -226,4 +244,5 @@ TEST(sheet_draw_refusals) {
     hearth_shape_free(plate);
 }
 
-TEST_MAIN(T(sheet_draw_energy_balance), T(sheet_draw_lumped_pair_closed_form), T(sheet_draw_refusals))
+TEST_MAIN(T(sheet_draw_energy_balance), T(sheet_draw_lumped_pair_closed_form), T(sheet_draw_time_scaled),
+          T(sheet_draw_refusals))
