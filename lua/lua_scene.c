@@ -455,6 +455,25 @@ static int l_collider(lua_State *L) {
         cd.start_temperature = lua_tonumber(L, 12);
     }
     cd.warm_time = luaL_optnumber(L, 13, 0);
+    /* a sheet the food draws from: heat_capacity and area (their ranges: collider_init), and face_beta, warm_time's
+     * other name (warm_time = heat_capacity / face_beta) */
+    static const char *const sheet_keys[] = {"heat_capacity", "area", "face_beta"};
+    for (int k = 14; k <= 16; k++)
+        if (!lua_isnoneornil(L, k) && lua_type(L, k) != LUA_TNUMBER)
+            return luaL_error(L, "s:collider: %s is a %s; valid: a number", sheet_keys[k - 14], luaL_typename(L, k));
+    cd.heat_capacity = luaL_optnumber(L, 14, 0);
+    cd.area = luaL_optnumber(L, 15, 0);
+    if (!lua_isnoneornil(L, 16)) {
+        const double fb = lua_tonumber(L, 16);
+        if (!(fb > 0 && fb <= 1e9))
+            return luaL_error(L, "s:collider: face_beta = %f W/(m^2 K); valid range (0, 1e9] (the oven's coefficient on "
+                                 "the sheet's faces)", fb);
+        if (!(cd.heat_capacity > 0) || cd.warm_time != 0)
+            return luaL_error(L, "s:collider: face_beta (the oven's coefficient on the sheet's faces) goes with "
+                                 "heat_capacity, in place of warm_time (warm_time = heat_capacity / face_beta): give "
+                                 "one of the two");
+        cd.warm_time = cd.heat_capacity / fb;
+    }
     if (vfn || ofn) {
         cd.motion = motion_cb;
         cd.motion_ud = new_motion(L, vfn ? 5 : 0, ofn ? 6 : 0, NULL);

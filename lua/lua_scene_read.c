@@ -199,6 +199,25 @@ static int l_hash(lua_State *L) {
     return 1;
 }
 
+/* s:collider_heat(id) -> {temperature = degC, drawn = J, oven_in = J} (hearth_scene_collider_heat) */
+static int l_collider_heat(lua_State *L) {
+    hl_scene *u = hl_checkscene(L, 1);
+    const lua_Integer id = luaL_checkinteger(L, 2);
+    double out[3];
+    hearth_error err;
+    if (id < 0 || id > INT32_MAX || hearth_scene_collider_heat(u->s, (int)id, out, &err))
+        return luaL_error(L, "s:collider_heat: collider %I does not exist (the scene has %d; ids from s:collider)", id,
+                          hearth_scene_collider_count(u->s));
+    lua_createtable(L, 0, 3);
+    lua_pushnumber(L, out[0]);
+    lua_setfield(L, -2, "temperature");
+    lua_pushnumber(L, out[1]);
+    lua_setfield(L, -2, "drawn");
+    lua_pushnumber(L, out[2]);
+    lua_setfield(L, -2, "oven_in");
+    return 1;
+}
+
 /* the read-only methods, added to the scene's method table by hl_open_scene */
 const luaL_Reg hl_scene_readers[] = {
     {"probe", l_probe},
@@ -212,4 +231,5 @@ const luaL_Reg hl_scene_readers[] = {
     {"_particle_field", l_particle_field},
     {"volume", l_volume},
     {"material_params", l_material_params},
+    {"collider_heat", l_collider_heat},
     {NULL, NULL}};

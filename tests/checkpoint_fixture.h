@@ -121,10 +121,13 @@ static inline size_t clk_at(const uint8_t *b, size_t n) {
 #define V13_CLK_BYTES 8
 
 /* Each collider's fields version 14 appended (start_temperature, warm_time, t_added), after its shape tree and the
- * 216 bytes of contact, pose, heat and water before them: cut out of the image (*n shrinks by 24 a collider), as a
- * file older than 14 holds its colliders. Returns 0 when the section cannot be walked. */
+ * 216 bytes of contact, pose, heat and water before them, and version 15's after those (heat_capacity, area and the
+ * sheet's six state numbers): cut_colliders_after(b, n, keep, len) cuts len bytes a collider from 216 + keep on.
+ * cut_v15_colliders makes a version 14 file's colliders (*n shrinks by 64 a collider), cut_v14_colliders a file's
+ * older than 14 (by 24 + 64). Return 0 when the section cannot be walked. */
 #define V14_COL_BYTES 24
-static inline int cut_v14_colliders(uint8_t *b, size_t *n) {
+#define V15_COL_BYTES 64
+static inline int cut_colliders_after(uint8_t *b, size_t *n, size_t keep, size_t len) {
     const size_t cols = find(b, *n, "COLS", 4);
     CHECK(cols != (size_t)-1);
     if (cols == (size_t)-1) return 0;
@@ -137,18 +140,20 @@ static inline int cut_v14_colliders(uint8_t *b, size_t *n) {
         CHECK(sh != NULL);
         if (!sh) return 0;
         hearth_shape_free(sh);
-        at = (size_t)(c.p - b) + 216;
-        memmove(b + at, b + at + V14_COL_BYTES, *n - at - V14_COL_BYTES);
-        *n -= V14_COL_BYTES;
+        at = (size_t)(c.p - b) + 216 + keep;
+        memmove(b + at, b + at + len, *n - at - len);
+        *n -= len;
     }
     return 1;
 }
+static inline int cut_v15_colliders(uint8_t *b, size_t *n) { return cut_colliders_after(b, n, V14_COL_BYTES, V15_COL_BYTES); }
+static inline int cut_v14_colliders(uint8_t *b, size_t *n) { return cut_colliders_after(b, n, 0, V14_COL_BYTES + V15_COL_BYTES); }
 
 /* The image of a save of one material, "elastic" (3 parameters), with the
  * last k of its core parameters cut out, as files from before they were
  * appended hold them (before the curve count; *n shrinks by 8 k), and
  * without the clocks' version 13 tail (self_max) and the colliders' version 14
- * one: every caller makes a file older than 13. Returns 0 when the material is not found. */
+ * and 15 ones: every caller makes a file older than 13. Returns 0 when the material is not found. */
 static inline int cut_core_params(uint8_t *b, size_t *n, int k) {
     const size_t el = find(b, *n, "elastic", 7), mats = find(b, *n, "MATS", 4);
     CHECK(el != (size_t)-1 && mats != (size_t)-1 && mats < el);

@@ -671,6 +671,13 @@ warming_tray_lua)
     has out.txt "warming_tray ok" "warming tray refusals, slab, restore"
     cat out.txt
     ;;
+drawing_sheet_lua)
+    # a sheet the food draws its heat from: its refusals, face_beta as warm_time, the sheet and the slab lagging
+    run drawing_sheet.lua
+    expect_rc 0 "drawing_sheet.lua"
+    has out.txt "drawing_sheet ok" "drawing sheet refusals, lag, restore"
+    cat out.txt
+    ;;
 muffin_cup_goes_in_cold_lua)
     # h.recipes.muffin_cup's tin goes in cold when the oven says so (pan_start_temperature, pan_warm_time), and is
     # the hot cup of before when it does not (the paper presets)

@@ -122,7 +122,7 @@ TEST(checkpoint_v4_reads_at_defaults) {
     ck_reseal(b, m);
     CHECK(hearth_scene_load_mem(b, m, "v3.ck", &err) == NULL);
     printf("  %s\n", err.msg);
-    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 14 only");
+    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 15 only");
     free(b);
     free(img);
     hearth_scene_destroy(s);
@@ -572,7 +572,7 @@ TEST(checkpoint_v13_colliders_do_not_warm) {
     CHECK(img != NULL);
     if (!img || !s) return;
     m = n;
-    CHECK(cut_v14_colliders(img, &m) && m == n - 2 * V14_COL_BYTES);
+    CHECK(cut_v14_colliders(img, &m) && m == n - 2 * (V14_COL_BYTES + V15_COL_BYTES));
     const uint32_t v13 = 13;
     memcpy(img + 8, &v13, 4);
     ck_reseal(img, m);
@@ -625,8 +625,71 @@ TEST(checkpoint_v13_colliders_do_not_warm) {
     hearth_scene_destroy(s);
 }
 
+/* Version 15 appended each collider's heat_capacity, area and its sheet's state (a sheet the food draws from,
+ * colliders.h). A block on a drawing sheet saved mid-warm goes on with the same bits, the sheet's temperature and
+ * books too; a version 14 copy (cut of them, stamped 14) loads with a sheet that draws nothing and warms by its
+ * warm_time, what a version 14 writer meant. */
+TEST(checkpoint_v14_sheets_draw_nothing) {
+    hearth_scene_def d = hearth_default_scene_def();
+    d.dx = 0.0025;
+    d.gravity[1] = 0;
+    d.lo[0] = d.lo[1] = -0.03, d.hi[0] = d.hi[1] = 0.03;
+    hearth_scene *s = fx_scene_def(&d);
+    const char *nm[] = {"E", "density", "conductivity", "specific_heat"};
+    const double nv[] = {1e-2, 1000, 0.5, 2000};
+    hearth_error err;
+    const int mat = hearth_scene_add_material(s, "elastic", nm, nv, 4, &err);
+    const double bc[3] = {0, 0.005, 0}, bh[3] = {0.01, 0.005, 1}, pp[3] = {0, 0, 0}, pn[3] = {0, 1, 0};
+    hearth_shape *blk = hearth_shape_box(bc, bh), *plate = hearth_shape_plane(pp, pn);
+    hearth_body_def b = hearth_default_body_def();
+    b.shape = blk, b.material = mat, b.jitter = 0, b.temperature = 20, b.fixed = 1;
+    CHECK(mat >= 0 && hearth_scene_add_body(s, &b, &err) == 0);
+    hearth_collider_def cd = hearth_default_collider_def();
+    cd.shape = plate, cd.temperature = 190, cd.beta = 100, cd.start_temperature = 20, cd.warm_time = 40;
+    cd.heat_capacity = 2430, cd.area = 0.06;
+    CHECK(hearth_scene_add_collider(s, &cd, &err) == 0);
+    hearth_shape_free(blk);
+    hearth_shape_free(plate);
+    CHECK(hearth_scene_set_dt_limits(s, 0.5, 0.5, &err) == HEARTH_OK);
+    CHECK(hearth_scene_step(s, 20, &err) == HEARTH_OK);
+    size_t n, m;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    if (!img) return;
+    hearth_scene *r = hearth_scene_load_mem(img, n, "v15.ck", &err);
+    CHECK(r != NULL);
+    if (r) {
+        CHECK(hearth_scene_set_dt_limits(r, 0.5, 0.5, &err) == HEARTH_OK);
+        continues_as(s, r, "restored");
+        printf("  sheet %.6f degC drawn %.3f J/m saved scene, %.6f degC drawn %.3f J/m restored\n", s->cols[0].sheet_T,
+               s->cols[0].drawn, r->cols[0].sheet_T, r->cols[0].drawn);
+        CHECK(r->cols[0].sheet_T == s->cols[0].sheet_T && r->cols[0].drawn == s->cols[0].drawn &&
+              r->cols[0].oven_in == s->cols[0].oven_in && r->cols[0].temperature == s->cols[0].temperature);
+        CHECK(s->cols[0].drawn > 0);
+        hearth_scene_destroy(r);
+    }
+    m = n;
+    CHECK(cut_v15_colliders(img, &m) && m == n - V15_COL_BYTES);
+    const uint32_t v14 = 14;
+    memcpy(img + 8, &v14, 4);
+    ck_reseal(img, m);
+    r = hearth_scene_load_mem(img, m, "v14.ck", &err);
+    if (!r) printf("  v14 refused: %s\n", err.msg);
+    CHECK(r != NULL);
+    if (r) {
+        const double t = hearth_scene_time(r), want = 190 - 170 * exp(-t / 40);
+        printf("  a v14 copy at %.1f s: the sheet %.6f degC, drawing nothing (heat_capacity %g), its exponential %.6f\n", t,
+               r->cols[0].temperature, r->cols[0].heat_capacity, want);
+        CHECK(r->cols[0].heat_capacity == 0 && r->cols[0].warm_time == 40);
+        CHECK_NEAR(r->cols[0].temperature, want, 1e-9);
+        hearth_scene_destroy(r);
+    }
+    free(img);
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_v4_reads_at_defaults),
           T(checkpoint_v7_reads_dry_specific_heat_as_wet), T(checkpoint_v8_reads_browning_surface_as_zero),
           T(checkpoint_v9_reads_ambient_pressure_as_zero), T(checkpoint_v10_sticky_holds_as_then),
           T(checkpoint_v11_reads_no_second_share), T(checkpoint_gas_made_mid_reaction),
-          T(checkpoint_v13_colliders_do_not_warm))
+          T(checkpoint_v13_colliders_do_not_warm), T(checkpoint_v14_sheets_draw_nothing))

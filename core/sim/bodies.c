@@ -357,6 +357,15 @@ hearth_status hearth_scene_collider_translate(hearth_scene *s, int id, const dou
 
 int hearth_scene_collider_count(const hearth_scene *s) { return s->ncol; }
 
+hearth_status hearth_scene_collider_heat(const hearth_scene *s, int id, double out[3], hearth_error *err) {
+    if (id < 0 || id >= s->ncol) return err_set(err, HEARTH_ERR_PARAM, "collider %d does not exist (the scene has %d)", id, s->ncol);
+    const collider *c = &s->cols[id];
+    out[0] = isnan(c->temperature_end) ? NAN : collider_temperature_at(c, s->t);
+    out[1] = c->drawn;
+    out[2] = c->oven_in;
+    return HEARTH_OK;
+}
+
 double hearth_scene_collider_distance(const hearth_scene *s, const double x[3]) {
     double best = INFINITY;
     for (int i = 0; i < s->ncol; i++) {

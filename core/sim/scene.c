@@ -593,7 +593,15 @@ int hearth_scene_add_collider(hearth_scene *s, const hearth_collider_def *def, h
         collider_free(&s->cols[s->ncol]);
         return -1;
     }
+    if (def->heat_capacity > 0 && s->def.solver != HEARTH_SOLVER_MPM) { /* thermal.c books the contact's heat */
+        collider_free(&s->cols[s->ncol]);
+        err_set(err, HEARTH_ERR_PARAM, "collider: heat_capacity = %g J/(m^2 K) (a sheet the food draws heat from) needs "
+                "the MPM solver; this scene's solver is SPH (leave heat_capacity out: the sheet then warms by warm_time "
+                "alone)", def->heat_capacity);
+        return -1;
+    }
     s->cols[s->ncol].t_added = s->t; /* a warming tray starts warming now */
+    s->cols[s->ncol].sheet_t = s->t;
     collider_set_time(&s->cols[s->ncol], s->t);
     return s->ncol++;
 }
@@ -685,6 +693,10 @@ static hearth_status one_step(hearth_scene *s, double dt, hearth_error *err) {
         hearth_status st = s->solver->step(s, dt, &rep, err);
         if (st) return st;
         if (!guard_check(s, &rep, dt, speed_before)) {
+            /* a drawing sheet takes the heat its contact passed in a field step that stood (colliders.h) */
+            if (!s->field_skip)
+                for (int c = 0; c < s->ncol; c++)
+                    collider_sheet_stands(&s->cols[c], s->t + dt - s->field_dt, s->t + dt, s->cols[c].step_heat);
             s->t += dt;
             s->step++;
             s->dt_last = dt;

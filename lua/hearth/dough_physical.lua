@@ -204,10 +204,12 @@ D.goods = {
     oven_temperature = 190, oven_beta = 30, pan_temperature = 190, pan_beta = 100,
     -- the sheet goes into the oven with the dough on it, at the room's 20 degC, and warms as a lumped sheet (its Biot
     -- number ~1e-4): a 1 mm aluminium sheet (2700 kg/m^3 x 900 J/(kg K) x 0.001 m = 2430 J/(m^2 K), handbook values)
-    -- heated on both faces by the oven's 30 W/(m^2 K) reaches it with a time constant of 2430 / 60 = 40 s (the heat it
-    -- gives the dough is not taken from it: colliders.h). Before, the sheet stood at 190 degC from the first step
-    -- (docs/validation.md, "A tray that goes in cold")
-    pan_start_temperature = 20, pan_warm_time_real = 40,
+    -- heated on both faces by the oven's 30 W/(m^2 K) reaches it with a time constant of 2430 / 60 = 40 s (the oven's side
+    -- alone: the dough's draw comes on top). Before, the sheet stood at 190 degC from the first step
+    -- (docs/validation.md, "A tray that goes in cold"). pan_heat_capacity, that same 2430 J/(m^2 K): the heat the
+    -- dough draws through pan_beta comes out of the sheet (colliders.h's heat_capacity; cookies.lua gives the sheet's
+    -- area; docs/validation.md, "The sheet gives the food its heat (#18, helper traydraw)")
+    pan_start_temperature = 20, pan_warm_time_real = 40, pan_heat_capacity = 2430,
     time_scale = 50, bake_time_real = 660,
   },
   muffin = {
@@ -230,10 +232,12 @@ D.goods = {
     -- carbon steel's 7854 kg/m^3 x 434 J/(kg K) (Incropera & DeWitt, Fundamentals of Heat and Mass Transfer, Table
     -- A.1) x 0.0007 m = 2386 J/(m^2 K), heated on its outer face only (the batter covers the inner one) by the oven's
     -- 30 W/(m^2 K): 2386 / 30 = 80 s (69 to 90 s over the two gauges; an aluminium tin of 1 mm, 2440 J/(m^2 K), 81 s).
-    -- A paper liner between holds ~50 g/m^2 x 1.3 kJ/(kg K) = 65 J/(m^2 K), 3% of the tin's: left out. The heat the
-    -- tin gives the batter is not taken from it (colliders.h). Before, the tin stood at 180 degC from the first step
-    -- (docs/validation.md, "The muffin tin and the lava cake's mould go in cold")
-    pan_start_temperature = 20, pan_warm_time_real = 80,
+    -- A paper liner between holds ~50 g/m^2 x 1.3 kJ/(kg K) = 65 J/(m^2 K), 3% of the tin's: left out. 80 s is the oven's
+    -- side alone: the batter's draw comes on top. Before, the tin stood at 180 degC from the first step
+    -- (docs/validation.md, "The muffin tin and the lava cake's mould go in cold"). pan_heat_capacity, that same 2386
+    -- J/(m^2 K): the batter's heat comes out of the tin (h.recipes.muffin_cup gives the cup's area; docs/validation.md,
+    -- "The sheet gives the food its heat (#18, helper traydraw)")
+    pan_start_temperature = 20, pan_warm_time_real = 80, pan_heat_capacity = 2386,
     time_scale = 60, bake_time_real = 1320,
   },
   pancake = {
@@ -346,9 +350,11 @@ D.goods = {
     -- 1708 / 350 ~ 5 s, so lava_cake.lua keeps the floor at 200 degC and gives these two numbers to the wall only.
     -- A ceramic ramekin would not be a lumped sheet: a 4.5 mm wall of 2000 x 900 J/(m^3 K) holds 8100 J/(m^2 K)
     -- (270 s through the oven's face) and its Biot number with the batter's 100 W/(m^2 K) drawing on its inner face
-    -- is (30 + 100) x 0.0045 / 1.5 = 0.39; the batter would take much of that heat, which colliders.h does not take
-    -- from a collider (docs/validation.md, "The muffin tin and the lava cake's mould go in cold")
-    pan_start_temperature = 20, pan_warm_time_real = 57,
+    -- is (30 + 100) x 0.0045 / 1.5 = 0.39; the batter would take much of that heat, and across the wall: one
+    -- lumped temperature is not fair there (docs/validation.md, "The muffin tin and the lava cake's mould go in cold"). pan_heat_capacity,
+    -- that same 1708 J/(m^2 K): the batter's heat comes out of the wall (lava_cake.lua gives the wall's area; docs/
+    -- validation.md, "The sheet gives the food its heat (#18, helper traydraw)")
+    pan_start_temperature = 20, pan_warm_time_real = 57, pan_heat_capacity = 1708,
     -- 12 real minutes in 12 s (the muffin's and the pancake's S = 60): the scene's 0.4 s lift stands for 24 s of
     -- the heat history, about the recipe's 30 s rest
     time_scale = 60, bake_time_real = 720,
@@ -394,6 +400,9 @@ function D.preset(name)
   local oven = { temperature = g.oven_temperature, beta = g.oven_beta * S, pan_temperature = g.pan_temperature,
     pan_beta = g.pan_beta * S, dough_temperature = g.dough_temperature, saturation = g.saturation,
     pan_start_temperature = g.pan_start_temperature, pan_warm_time = g.pan_warm_time_real and g.pan_warm_time_real / S,
+    -- the sheet's own heat capacity per area (J/(m^2 K)), real: the scene's time runs S times fast through beta and
+    -- the conductivity (x S), so the sheet's C over the scaled coefficients keeps its scaled time constant
+    pan_heat_capacity = g.pan_heat_capacity,
     latent_heat = true, boiling_point = 100, browning_scale = S, time_scale = S, bake_time = g.bake_time_real / S,
     flip_time = g.flip_time_real and g.flip_time_real / S, portion = g.portion,
     -- open surface pores vent their CO2 (scene settings gas_vent, vent_porosity; core/sim/fields/gas.c): an open

@@ -728,13 +728,13 @@ end
 
 --- s:collider{shape = ..., mode = "separate", friction = 0, velocity = {..} or function(t), omega = ..., pivot = {..},
 ---   temperature = degC, beta = W/(m^2 K) or fixed_temperature = true, saturation = 0..1, beta_water = kg/(m^2 s),
----   start_temperature = degC, warm_time = s (a tray that goes in cold and warms toward temperature: colliders.h)}
+---   start_temperature = degC, warm_time = s, heat_capacity = J/(m^2 K), area = m^2, face_beta = W/(m^2 K) (docs/lua.md)}
 --- fixed_temperature = true (or beta = math.huge) holds the touching material at temperature (Dirichlet).
 function S:collider(o)
   if type(o) ~= "table" then error("s:collider: expected a table", 2) end
   check_keys(o, { shape = true, mode = true, friction = true, velocity = true, omega = true, pivot = true, name = true,
     temperature = true, beta = true, saturation = true, fixed_temperature = true, beta_water = true,
-    start_temperature = true, warm_time = true }, "s:collider")
+    start_temperature = true, warm_time = true, heat_capacity = true, area = true, face_beta = true }, "s:collider")
   if o.saturation ~= nil then check_number(o.saturation, "s:collider: saturation", 0, 1) end
   if o.beta_water ~= nil then
     check_number(o.beta_water, "s:collider: beta_water", 0, 1e9, "kg/(m^2 s)")
@@ -744,7 +744,7 @@ function S:collider(o)
   end
   if o.temperature ~= nil then check_number(o.temperature, "s:collider: temperature", -273.15, 5000, "degC") end
   if o.beta ~= nil and o.beta ~= math.huge then check_number(o.beta, "s:collider: beta", 0, 1e9, "W/(m^2 K)") end
-  if (o.start_temperature == nil) ~= (o.warm_time == nil) or (o.warm_time and not (type(o.warm_time) == "number" and o.warm_time > 0)) then
+  if (o.start_temperature == nil) ~= (o.warm_time == nil and o.face_beta == nil) or (o.warm_time and not (type(o.warm_time) == "number" and o.warm_time > 0)) then
     error("s:collider: start_temperature (degC, when added) and warm_time (s, > 0) go together: a tray warming to temperature", 2)
   end
   if o.fixed_temperature and o.temperature == nil then
@@ -763,7 +763,7 @@ function S:collider(o)
   local p = o.pivot and check_vec(o.pivot, "s:collider: pivot") or nil
   local ok, id = pcall(self._collider, self, o.shape, mode, fr, v, w, p, o.temperature,
     o.temperature and (o.fixed_temperature and math.huge or o.beta or 100) or 0, o.saturation, o.beta_water,
-    o.start_temperature, o.warm_time)
+    o.start_temperature, o.warm_time, o.heat_capacity, o.area, o.face_beta)
   if not ok then error(id, 2) end
   return id
 end

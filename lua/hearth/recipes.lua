@@ -5,12 +5,14 @@ local R = {}
 
 --- A flat tray (a plane collider at height y), optionally heated.
 --- opts: mode ("separate"), friction (0.4), temperature (degC), beta (W/(m^2 K)), and for a tray that goes in
---- cold start_temperature (degC) and warm_time (s, the scene's time: a scaled preset's real seconds over its S).
+--- cold start_temperature (degC) and warm_time (s, the scene's time: a scaled preset's real seconds over its S), and
+--- for one the food draws its heat from heat_capacity (J/(m^2 K)) and area (m^2; 2D: m) (s:collider's).
 function R.tray(s, y, opts)
   opts = opts or {}
   return s:collider { shape = core.plane({ 0, y, 0 }, { 0, 1, 0 }), mode = opts.mode or "separate",
     friction = opts.friction or 0.4, temperature = opts.temperature, beta = opts.beta,
-    start_temperature = opts.start_temperature, warm_time = opts.warm_time }
+    start_temperature = opts.start_temperature, warm_time = opts.warm_time, heat_capacity = opts.heat_capacity,
+    area = opts.heat_capacity and opts.area or nil }
 end
 
 --- A muffin cup and its batter (scripts/scenes/baking/muffins.lua, Ding Fig. 2; tear_open.lua bakes one
@@ -19,14 +21,19 @@ end
 --- o: dim, x (the cup's axis), base (the inner floor's y), radius, height (the wall above the floor), wall (wall and
 --- floor thickness), fill (the batter's depth), zc (3D: the axis' z), material, oven (a preset's oven: pan
 --- temperature and beta, and for a tin that goes in cold pan_start_temperature and pan_warm_time as R.tray's
---- start_temperature and warm_time; dough temperature, saturation), mode (the cup's contact), ppc. Returns the cup's
+--- start_temperature and warm_time, and pan_heat_capacity as its heat_capacity over the cup's inside; dough temperature,
+--- saturation), mode (the cup's contact), ppc. Returns the cup's
 --- collider.
 function R.muffin_cup(s, o)
   local d3 = o.dim == 3
   local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
+  -- a tin the batter draws its heat from (the oven's pan_heat_capacity): the cup's metal as one lumped sheet, its area
+  -- the inside's floor and wall (2D: per metre of depth, the U's floor and two walls)
+  local C = o.oven.pan_warm_time and o.oven.pan_heat_capacity
+  local area = C and (d3 and math.pi * o.radius * (o.radius + 2 * o.height) or 2 * (o.radius + o.height)) or nil
   local cup = s:collider { shape = core.cup(v(o.x, o.base, o.zc), { 0, 1, 0 }, o.radius, o.height, o.wall, o.wall),
     mode = o.mode, friction = 0.3, temperature = o.oven.pan_temperature, beta = o.oven.pan_beta,
-    start_temperature = o.oven.pan_start_temperature, warm_time = o.oven.pan_warm_time }
+    start_temperature = o.oven.pan_start_temperature, warm_time = o.oven.pan_warm_time, heat_capacity = C, area = area }
   local inner = d3 and core.cylinder(v(o.x, o.base + o.fill / 2, o.zc), { 0, 1, 0 }, o.radius, o.fill / 2)
     or core.box({ o.x - o.radius, o.base }, { o.x + o.radius, o.base + o.fill })
   s:add { shape = inner, material = o.material, temperature = o.oven.dough_temperature, saturation = o.oven.saturation,

@@ -351,6 +351,16 @@ s:add{shape = h.box({0.3, 0.1}, {0.7, 0.3}), material = m, ppc = 2, temperature 
 s:step(3)
 s:save("OUT")
 """,
+    # version 15: a sheet the food draws its heat from (heat_capacity, area and the sheet's state per collider)
+    "drawing_sheet_v15_2d.ck": """local h = require "hearth"
+local s = h.scene{dim = 2, dx = 1 / 16, box = {{0, 0}, {1, 1}}, seed = 12, oven = {temperature = 180, beta = 20}}
+local m = h.material("elastic", {E = 5e4, density = 500, specific_heat = 2000, conductivity = 0.5})
+s:collider{shape = h.plane({0, 0.1}, {0, 1}), temperature = 180, beta = 100, start_temperature = 20, warm_time = 0.5,
+  heat_capacity = 2430, area = 1}
+s:add{shape = h.box({0.3, 0.1}, {0.7, 0.3}), material = m, ppc = 2, temperature = 20}
+s:step(3)
+s:save("OUT")
+""",
 }
 
 

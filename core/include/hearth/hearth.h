@@ -395,6 +395,12 @@ typedef struct hearth_collider_def {
     double warm_time;          ///< the sheet's time constant (s), its heat capacity per area over the coefficient that heats it
                                ///< (rho c thickness / beta_total); 0 (the default, and a zeroed def) = at temperature from
                                ///< the start
+    double heat_capacity;      ///< with warm_time > 0: the sheet's heat capacity per area (J/(m^2 K), rho c thickness), so the
+                               ///< heat it gives the food is taken from it: C A dT/dt = (C A / warm_time) (temperature - T) -
+                               ///< (the heat its contact passed this field step), one lumped temperature over the sheet (MPM
+                               ///< only; a finite beta). 0 (the default) = the food draws nothing from it (T(t) above)
+    double area;               ///< with heat_capacity: the sheet's area (m^2; in 2D its length, m, per metre of depth), the
+                               ///< area that holds C and that the oven heats
 } hearth_collider_def;
 
 hearth_collider_def hearth_default_collider_def(void);
@@ -534,6 +540,10 @@ hearth_status hearth_scene_collider_set_velocity(hearth_scene *s, int id, const 
 /// Move a collider now by d (m), e.g. to press or place it.
 hearth_status hearth_scene_collider_translate(hearth_scene *s, int id, const double d[3], hearth_error *err);
 int hearth_scene_collider_count(const hearth_scene *s);
+/// A heated collider's heat now: out[0] its temperature (degC; NaN when not heated; a warming sheet's present one),
+/// out[1] the heat a drawing sheet (heat_capacity > 0) has given the food and out[2] the oven's input into it since
+/// it was added (J; in 2D per metre of depth; 0 for a collider that does not draw).
+hearth_status hearth_scene_collider_heat(const hearth_scene *s, int id, double out[3], hearth_error *err);
 /// Signed distance (m, negative inside) from x to the nearest collider in its
 /// current pose; +INFINITY when the scene has none. For drawing colliders.
 double hearth_scene_collider_distance(const hearth_scene *s, const double x[3]);

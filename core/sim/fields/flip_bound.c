@@ -258,8 +258,11 @@ hearth_status flip_bound_apply(hearth_scene *s, hearth_error *err) {
             if (cl == 0.0) continue;
             if (!moved_any) memset(cor, 0, sizeof(double) * (size_t)n), moved_any = 1;
             cor[i] += cl;
-            if (s->heat.bnd_coef[i] > 0) ret_oven += Mm[i] * material_specific_heat(&s->mats.slot[mat[i]], ps, i) * cl;
+            const double back = Mm[i] * material_specific_heat(&s->mats.slot[mat[i]], ps, i) * cl;
+            if (s->heat.bnd_coef[i] > 0) ret_oven += back;
+            else thermal_sheet_return(s, i, back); /* a drawing sheet's contact alone: back to the sheet */
         }
+        thermal_sheet_returns_done(s);
         /* MPI slabs: every rank's particles, as oven_ledger's own sum (thermal.c); each rank's alone left the
          * ledger short by the other ranks' returns once a boundary particle was clamped (docs/validation.md, "A
          * sticky face holds what touched it") */

@@ -264,6 +264,7 @@ static hearth_status find_boundary(hearth_scene *s) {
             ct[7] = col->temperature;
             ct[8] = held ? s->mats.slot[mat[i]].core[CP_CONDUCTIVITY] : 0.0;
             ct[9] = NAN; /* the nodes' field; dried_face may set the dried face's reading */
+            ct[10] = c;
         }
     }
     return HEARTH_OK;
@@ -728,6 +729,53 @@ static void oven_ledger(hearth_scene *s, double dt) {
     s->heat.step_oven_heat = dt * q;
 }
 
+/* The heat each drawing sheet's contact passed to the food this field step (colliders.h: its own balance takes it
+ * from the sheet): dt sum over its Robin points of beta S (T_c - theta(x_s)), theta the nodes' field the update used
+ * (the step start's for forward Euler, the solution's for backward, as oven_ledger; a dried face's reading where
+ * dried_face set one), which is what heat_contact_apply scattered onto the nodes (its weights sum to one). Serial in
+ * the points' order; MPI slabs sum each sheet's over the ranks. */
+static void sheet_ledger(hearth_scene *s, double dt) {
+    int any = 0;
+    for (int c = 0; c < s->ncol; c++)
+        if (collider_draws(&s->cols[c])) s->cols[c].step_heat = s->cols[c].step_ret = 0, any = 1;
+    if (!any) return;
+    const grid *g = &s->g;
+    const int ch = s->def.heat_implicit ? CH_T : CH_T0;
+    for (int k = 0; k < s->heat.nct; k++) {
+        const double *ct = s->heat.ct + THERMAL_CT * k;
+        collider *col = &s->cols[(int)ct[10]];
+        if (ct[8] != 0 || !collider_draws(col)) continue;
+        int m = 1;
+        const double v = isnan(ct[9]) ? field_at(g, ct, ch, &m) : ct[9];
+        if (m == 0) continue; /* no node with heat capacity: heat_contact_apply passed nothing */
+        col->step_heat += dt * ct[6] * (ct[7] - v);
+    }
+    for (int c = 0; c < s->ncol; c++)
+        if (collider_draws(&s->cols[c])) mpm_ranks_fields_reduce(s, &s->cols[c].step_heat, 1, NULL, 0);
+}
+
+void thermal_sheet_return(hearth_scene *s, int i, double heat) {
+    const double *x = pcold(&s->ps, PC_X) + 3 * i;
+    for (int c = 0; c < s->ncol; c++) {
+        collider *col = &s->cols[c];
+        if (!collider_draws(col) || !collider_near(col, x)) continue;
+        if (collider_sdf(col, x, NULL) < CONTACT_BAND * s->g.dx) {
+            col->step_ret += heat;
+            return;
+        }
+    }
+}
+
+void thermal_sheet_returns_done(hearth_scene *s) {
+    for (int c = 0; c < s->ncol; c++) {
+        collider *col = &s->cols[c];
+        if (!collider_draws(col)) continue;
+        mpm_ranks_fields_reduce(s, &col->step_ret, 1, NULL, 0); /* every rank's clamped particles, in rank order */
+        col->step_heat += col->step_ret;
+        col->step_ret = 0;
+    }
+}
+
 void thermal_contact(hearth_scene *s) {
     /* the heated colliders' contact into L theta^n - b (both schemes read CH_B - CH_R) */
     heat_contact_apply(s, CH_T, CH_R, 1);
@@ -743,6 +791,7 @@ hearth_status thermal_finish(hearth_scene *s, double dt, hearth_error *err) {
         small_nodes_explicit_step(s, dt); /* forward Euler, the surface's small nodes merged */
         held_settle(s);
         oven_ledger(s, dt);
+        sheet_ledger(s, dt);
         return HEARTH_OK;
     }
     if (!s->def.heat_implicit) { /* forward Euler (gamma = 0) */
@@ -756,6 +805,7 @@ hearth_status thermal_finish(hearth_scene *s, double dt, hearth_error *err) {
         }
         held_settle(s);
         oven_ledger(s, dt);
+        sheet_ledger(s, dt);
         return HEARTH_OK;
     }
     /* backward Euler (gamma = 1): (C/dt + L) x = C/dt theta^n + b, solved by
@@ -841,5 +891,6 @@ hearth_status thermal_finish(hearth_scene *s, double dt, hearth_error *err) {
     }
     held_settle(s);
     oven_ledger(s, dt);
+    sheet_ledger(s, dt);
     return HEARTH_OK;
 }

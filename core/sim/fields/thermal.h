@@ -11,7 +11,7 @@ struct hearth_scene;
  * allocated until the temperature field is live. transport.c reads bnd_coef
  * and bnd_temp (it applies the operator whose sources they are); only
  * thermal.c writes. */
-#define THERMAL_CT 10
+#define THERMAL_CT 11
 typedef struct thermal_state {
     double *bnd_coef, *bnd_temp; /* per particle: boundary S beta (W/K) and outside temperature (degrees C) */
     double *bnd_surf;            /* per particle on the oven's air surface: 1 / (1 + beta d / kappa), the share of
@@ -27,7 +27,7 @@ typedef struct thermal_state {
                                   * (0: Robin contact; > 0: a held face's Nitsche terms), and the temperature a
                                   * Robin contact reads where its nodes carry dried particles (dried_face: the
                                   * largest of those nodes' dried means, from the step start; NaN: the nodes'
-                                  * field at the point) */
+                                  * field at the point), and the collider's index (for a drawing sheet's books) */
     int nct, ct_cap;
     /* held (Dirichlet) nodes: per active node (block slot * nodes per block) the
      * temperature it keeps, NaN where free; scratch for the held bodies' sums */
@@ -101,6 +101,13 @@ void thermal_contact(struct hearth_scene *s);
 /// The forward or backward Euler update of eq. 9 on the nodes (§6.3). Fails
 /// only on MPI slabs (the CG's halo exchange out of memory).
 hearth_status thermal_finish(struct hearth_scene *s, double dt, hearth_error *err);
+/// A clamped boundary particle i (flip_bound.c) gives heat (J, the clamp's m alpha dT: negative when it gave back what
+/// a drawing sheet let in past the bounds) back to the first drawing sheet whose contact band holds it, as the oven's
+/// ledger takes its own particles' returns. Nothing when no drawing sheet holds it. Summed over MPI ranks by
+/// thermal_sheet_returns_done.
+void thermal_sheet_return(struct hearth_scene *s, int i, double heat);
+/// After flip_bound's clamps: each drawing sheet's returns (summed over ranks) join the heat its contact passed.
+void thermal_sheet_returns_done(struct hearth_scene *s);
 /// A step stood (the guard kept it): its oven heat joins the ledger.
 void thermal_step_stands(thermal_state *h);
 /// Total heat energy sum m alpha (theta + 273.15) of the particles (J).

@@ -531,12 +531,28 @@ static int get_colliders(ck_cursor *c, hearth_scene *s, uint32_t version, double
             cd.warm_time = get_f64(c);
             t_added = get_finite(c, "collider t_added is not finite");
         }
+        double sheet[6] = {NAN, 0, 0, 0, 0, 0}; /* a drawing sheet's state: T, t, last heat and span, oven_in, drawn */
+        if (version >= 15) { /* collider_init checks heat_capacity and area */
+            cd.heat_capacity = get_f64(c);
+            cd.area = get_f64(c);
+            sheet[0] = get_f64(c); /* NaN for a collider that does not warm */
+            get_finite_n(c, sheet + 1, 5, "collider sheet state is not finite");
+            if (!c->bad && cd.heat_capacity > 0 && !(sheet[0] >= -273.15 && sheet[0] <= 1e4))
+                ck_fail(c, "a drawing collider's sheet temperature is out of range [-273.15, 10000] degrees C");
+            if (!c->bad && cd.heat_capacity > 0 && !(sheet[3] >= 0)) ck_fail(c, "a drawing collider's last span is negative");
+        }
         const int id = c->bad ? -1 : hearth_scene_add_collider(s, &cd, err);
         hearth_shape_free(sh);
         if (id < 0) return -1;
         memcpy(s->cols[id].offset, offset, sizeof offset);
         memcpy(s->cols[id].R, R, sizeof R);
         s->cols[id].t_added = t_added;
+        s->cols[id].sheet_t = t_added;
+        if (version >= 15 && cd.heat_capacity > 0) {
+            collider *cl = &s->cols[id];
+            cl->sheet_T = sheet[0], cl->sheet_t = sheet[1], cl->last_heat = sheet[2], cl->last_span = sheet[3];
+            cl->oven_in = sheet[4], cl->drawn = sheet[5];
+        }
         collider_set_time(&s->cols[id], t);
         collider_update_bounds(&s->cols[id], 2 * s->def.dx);
     }

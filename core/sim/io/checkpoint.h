@@ -37,7 +37,8 @@
  *           the second CO2 share's three, version 13 gas_amount and gas_amount_2), u32 curves, curves (each: u32 param,
  *           u32 points, u32 flags: bit 0 irreversible, bit 1 a moisture curve; f64 x, f64 values)
  *    "COLS" u32 count; per collider: shape tree (shape_read_mem), contact and pose, heat and water; version 14
- *           appends f64 start_temperature, warm_time and t_added
+ *           appends f64 start_temperature, warm_time and t_added; version 15 f64 heat_capacity, area, sheet_T,
+ *           sheet_t, last_heat, last_span, oven_in, drawn
  *    "PART" u32 n, u32 state stride, u32 enabled columns; per enabled column
  *           its name and n * (bytes per particle)
  *    "HASH" u64 hearth_scene_hash of the restored particles
@@ -63,8 +64,10 @@
  * f64 self_max appended to CLK (the last step's bound on a lone particle, mpm_self.c): an older file has no amounts
  * (no limit), so nothing made, and self_max 0 (its first step unbounded, as it restored then); 14: each collider's
  * start_temperature, warm_time and t_added appended in COLS (a tray that warms, colliders.h), its temperature slot the
- * one it warms toward: an older file's colliders do not warm */
-#define CK_VERSION 14u
+ * one it warms toward: an older file's colliders do not warm; 15: each collider's heat_capacity and area (a sheet the food
+ * draws heat from, colliders.h) and its state (f64 sheet temperature, its time, the last field step's draw and span,
+ * the oven's input and the draw since added) appended in COLS: an older file's sheets draw nothing */
+#define CK_VERSION 15u
 /// Oldest version read: a version 4 file is version 5's layout without the
 /// DEF fields version 5 appended.
 #define CK_VERSION_MIN 4u

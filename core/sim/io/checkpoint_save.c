@@ -150,6 +150,14 @@ static void put_colliders(ck_out *o, const hearth_scene *s) {
         put_f64(o, c->start_temperature); /* version 14: a tray that warms (warm_time 0: it does not) */
         put_f64(o, c->warm_time);
         put_f64(o, c->t_added);
+        put_f64(o, c->heat_capacity); /* version 15: a sheet the food draws from (0: it does not) and its state */
+        put_f64(o, c->area);
+        put_f64(o, c->sheet_T);
+        put_f64(o, c->sheet_t);
+        put_f64(o, c->last_heat);
+        put_f64(o, c->last_span);
+        put_f64(o, c->oven_in);
+        put_f64(o, c->drawn);
     }
 }
 

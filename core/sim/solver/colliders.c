@@ -88,6 +88,32 @@ hearth_status collider_init(collider *c, const hearth_collider_def *def, hearth_
         return err_set(err, HEARTH_ERR_PARAM, "collider start_temperature = %g degrees C; valid range [-273.15, 5000] (with "
                                               "warm_time, its temperature when added)", def->start_temperature);
     }
+    /* heat_capacity 0 (a zeroed def too): the food draws nothing from the sheet (its T(t) the oven's alone) */
+    if (def->heat_capacity != 0 || def->area != 0) {
+        st = HEARTH_OK;
+        if (!(def->heat_capacity > 0 && def->heat_capacity <= 1e9))
+            st = err_set(err, HEARTH_ERR_PARAM, "collider heat_capacity = %g J/(m^2 K); valid range (0, 1e9] (the sheet's "
+                         "rho c thickness; 0 with area 0 = the food draws nothing from it)", def->heat_capacity);
+        else if (!(def->area > 0 && def->area <= 1e6))
+            st = err_set(err, HEARTH_ERR_PARAM, "collider area = %g m^2 (in 2D m, per metre of depth); valid range (0, 1e6] "
+                         "(the sheet's area, with heat_capacity)", def->area);
+        else if (!(def->warm_time > 0))
+            st = err_set(err, HEARTH_ERR_PARAM, "collider heat_capacity = %g J/(m^2 K) needs warm_time > 0 and "
+                         "start_temperature (the sheet's time constant under the oven: heat_capacity over the oven's "
+                         "beta on its faces)", def->heat_capacity);
+        else if (!(def->beta < INFINITY))
+            st = err_set(err, HEARTH_ERR_PARAM, "collider heat_capacity = %g J/(m^2 K) needs a finite beta (a held face "
+                         "passes no flux that could be taken from the sheet)", def->heat_capacity);
+        if (st) {
+            hearth_shape_free(c->shape);
+            c->shape = NULL;
+            return st;
+        }
+    }
+    c->heat_capacity = def->heat_capacity;
+    c->area = def->area;
+    c->sheet_T = def->warm_time > 0 ? def->start_temperature : NAN;
+    c->sheet_t = c->last_heat = c->last_span = c->step_heat = c->step_ret = c->oven_in = c->drawn = 0;
     c->temperature = def->temperature;
     c->temperature_end = def->temperature;
     c->start_temperature = def->warm_time > 0 ? def->start_temperature : NAN;
@@ -108,21 +134,68 @@ void collider_free(collider *c) {
     c->shape = NULL;
 }
 
+/* A drawing sheet under the oven and a constant draw P (W): C A dT/dt = (C A / w) (T_end - T) - P, so T relaxes
+ * toward T_inf = T_end - P w / (C A) with the time constant w. sheet_at: T after h from T0; sheet_mean: its mean over
+ * [0, H] (exact for the exponential, as collider_heat_interval's). */
+static double sheet_inf(const collider *c, double P) { return c->temperature_end - P * c->warm_time / (c->heat_capacity * c->area); }
+static double sheet_at(const collider *c, double T0, double h, double P) {
+    const double Ti = sheet_inf(c, P);
+    return Ti + (T0 - Ti) * exp(-h / c->warm_time);
+}
+static double sheet_mean(const collider *c, double T0, double H, double P) {
+    const double Ti = sheet_inf(c, P), x = H / c->warm_time;
+    return Ti + (T0 - Ti) * -expm1(-x) / x;
+}
+/* the draw the next field step takes (lagged one field step: its own is known after its solve) */
+static double sheet_last_power(const collider *c) { return c->last_span > 0 ? c->last_heat / c->last_span : 0.0; }
+
+double collider_temperature_at(const collider *c, double t) {
+    if (collider_draws(c)) /* from its state, the last field step's draw going on */
+        return sheet_at(c, c->sheet_T, fmax(t - c->sheet_t, 0), sheet_last_power(c));
+    if (c->warm_time > 0) /* a lumped sheet: its Biot number is small (a metal tray), so one temperature */
+        return c->temperature_end + (c->start_temperature - c->temperature_end) * exp(-fmax(t - c->t_added, 0) / c->warm_time);
+    return c->temperature;
+}
+
 void collider_set_time(collider *c, double t) {
     if (c->motion) c->motion(c->motion_ud, t, c->vel, c->omega);
-    if (c->warm_time > 0) /* a lumped sheet: its Biot number is small (a metal tray), so one temperature */
-        c->temperature = c->temperature_end + (c->start_temperature - c->temperature_end) *
-                                                  exp(-fmax(t - c->t_added, 0) / c->warm_time);
+    if (c->warm_time > 0) c->temperature = collider_temperature_at(c, t);
 }
 
 void collider_heat_interval(collider *c, double t0, double t1) {
     if (!(c->warm_time > 0) || !(t1 > t0)) return;
+    if (collider_draws(c)) {
+        /* from its state (the last field step's end; a gap before t0, none when the field steps follow each other,
+         * warms by the oven alone, as collider_sheet_stands books it), its mean over the step with the last step's draw */
+        const double a = fmax(t0, c->sheet_t);
+        if (!(t1 > a)) return;
+        const double Ta = sheet_at(c, c->sheet_T, a - c->sheet_t, 0.0);
+        c->temperature = sheet_mean(c, Ta, t1 - a, sheet_last_power(c));
+        return;
+    }
     t0 = fmax(t0, c->t_added); /* added within the interval: its start */
     const double h = (t1 - t0) / c->warm_time;
     if (!(h > 0)) return;
     /* the mean of end + (start - end) e^{-(t - t_added)/w} over [t0, t1]: e^{-a} (1 - e^{-h}) / h, a = (t0 - t_added)/w */
     c->temperature = c->temperature_end + (c->start_temperature - c->temperature_end) *
                                               exp(-(t0 - c->t_added) / c->warm_time) * -expm1(-h) / h;
+}
+
+void collider_sheet_stands(collider *c, double t0, double t1, double heat) {
+    if (!collider_draws(c)) return;
+    const double CA = c->heat_capacity * c->area, a = fmax(t0, c->sheet_t);
+    if (!(t1 > a)) return;
+    /* the gap before the step (none when field steps follow each other): the oven alone */
+    const double Ta = sheet_at(c, c->sheet_T, a - c->sheet_t, 0.0);
+    /* the step: the draw its contact passed, spread evenly over it; the oven's input is what the ODE says it is,
+     * C A dT + the draw (the test integrates the oven's term itself: unit_sheet_draw) */
+    const double Tb = sheet_at(c, Ta, t1 - a, heat / (t1 - a));
+    c->oven_in += CA * (Tb - c->sheet_T) + heat;
+    c->drawn += heat;
+    c->sheet_T = Tb;
+    c->sheet_t = t1;
+    c->last_heat = heat;
+    c->last_span = t1 - a;
 }
 
 /* The rotation Q of one step dt at the angular velocity omega; 0 (Q

@@ -24,6 +24,13 @@ typedef struct collider {
     double temperature_end;  /* a warming collider: the temperature it approaches (degrees C) */
     double start_temperature;/* a warming collider: its temperature at t_added (NaN when it does not warm) */
     double warm_time, t_added;/* a warming collider: its time constant (0: it does not warm) and when it was added (s) */
+    /* a drawing sheet (heat_capacity > 0): the food's heat is taken from it, C A dT/dt = (C A / w) (T_end - T) - Q(t).
+     * Its state: sheet_T at sheet_t (the end of the last field step that stood); last_heat (J) over last_span (s), the
+     * heat its contact passed in that step, which the next step's temperature takes as its draw (lagged one field
+     * step: the step's own is known only after its solve); step_heat the heat this field step's contact passes
+     * (thermal.c; flip_bound.c's clamps give back step_ret, this rank's until summed); oven_in and drawn the books since t_added (J). */
+    double heat_capacity, area;
+    double sheet_T, sheet_t, last_heat, last_span, step_heat, step_ret, oven_in, drawn;
     double saturation;       /* wet collider: held saturation of touching particles; NaN = dry */
     double beta_water;       /* wet collider: 0 holds saturation (Dirichlet); > 0 Robin exchange, kg/(m^2 s) */
 } collider;
@@ -37,10 +44,19 @@ void collider_free(collider *c);
 /// If c has a motion function, vel and omega = motion(t); a warming collider's temperature at t (its
 /// lumped sheet's exponential from start_temperature toward temperature_end since t_added).
 void collider_set_time(collider *c, double t);
+/// A heated collider's temperature at t (collider_set_time's, without its motion): a warming sheet's exponential, a
+/// drawing sheet's state carried on with its last draw, else its temperature.
+double collider_temperature_at(const collider *c, double t);
 /// A warming collider's temperature over the heat step that covers [t0, t1]: its mean there (exact for the
 /// exponential), so the fields see it without the lag a value at the step's start would leave (first order in
 /// the step; with it the slab on a warming plate converges as on a steady one, unit_heat_bc). Else nothing.
 void collider_heat_interval(collider *c, double t0, double t1);
+/// 1 when c is a drawing sheet (heat_capacity > 0): the heat its contact gives the food is taken from it.
+static inline int collider_draws(const collider *c) { return c->heat_capacity > 0; }
+/// A drawing sheet's field step over [t0, t1] stood, its contact having passed heat (J) to the food: the sheet
+/// advances from its state to t1 (the oven's exponential with the draw heat / (t1 - t0) as a constant sink, exact
+/// for that ODE) and its books take the oven's input and the draw. A sheet that does not draw: nothing.
+void collider_sheet_stands(collider *c, double t0, double t1, double heat);
 /// Move by the current vel/omega over dt (s): exact for constant vel and omega.
 void collider_advance(collider *c, double dt);
 /// Signed distance (m, negative inside) at world point x; n (may be NULL) gets the

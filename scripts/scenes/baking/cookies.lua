@@ -217,9 +217,12 @@ for _, T in ipairs(ovens) do
     oven = { temperature = T, beta = oven.beta }, gas_vent = vent, name = "cookies", seed = P.seed,
     browning = physical or nil, browning_scale = S, latent_heat = physical and oven.latent_heat or nil,
     boiling_point = physical and oven.boiling_point or nil, vent_porosity = physical and oven.vent_porosity or nil }
-  -- the physical preset's sheet goes in cold (oven.pan_start_temperature, pan_warm_time: dough_physical.lua)
-  h.recipes.tray(s, TRAY, { temperature = T, beta = oven.pan_beta, mode = P.tray_mode, friction = P.tray_friction,
-    start_temperature = oven.pan_start_temperature, warm_time = oven.pan_warm_time })
+  -- the physical preset's sheet goes in cold (oven.pan_start_temperature, pan_warm_time: dough_physical.lua) and the
+  -- dough draws its heat from it (oven.pan_heat_capacity): the sheet is the box's floor, each cookie's 0.18 m share
+  -- of it, a third under the dough (2D: per metre of depth; 3D: the box's 0.12 m deep)
+  local tray = h.recipes.tray(s, TRAY, { temperature = T, beta = oven.pan_beta, mode = P.tray_mode,
+    friction = P.tray_friction, start_temperature = oven.pan_start_temperature, warm_time = oven.pan_warm_time,
+    heat_capacity = oven.pan_warm_time and oven.pan_heat_capacity, area = P.dim == 3 and W * 0.12 or W })
   local xs, first, gas_of = {}, {}, {} -- gas_of[i]: the physical cookie i's CO2 rate (mol/(kg s), S times fast); first[i]: cookie i's first particle id (ids run in the order s:add made them)
   for i, a in ipairs(leaveners) do
     local d = physical and h.library.dough.cookie or h.library.paper.cookie
@@ -466,5 +469,10 @@ for _, T in ipairs(ovens) do
           r.browning[top], r.browning[rim], r.browning[base], r.browning[ctr]))
       end
     end
+  end
+  local sheet = s:collider_heat(tray)
+  if physical and sheet.oven_in > 0 then -- the sheet the dough drew its heat from (colliders.h)
+    print(("oven %g degC: the sheet at %.1f min %.1f degC; it gave the dough %.0f J of the oven's %.0f (J%s)"):format(T,
+      s:stats().t * S / 60, sheet.temperature, sheet.drawn, sheet.oven_in, d3 and "" or " per metre of depth"))
   end
 end

@@ -109,8 +109,12 @@ local ring_shape = d3 and (h.cylinder(v(XC, PLATE + HC / 2, zc), { 0, 1, 0 }, R 
 if P.dt_max > 0 then s:set_dt(nil, P.dt_max) end
 -- the physical preset's mould wall goes into the oven cold and warms (oven.pan_start_temperature, pan_warm_time:
 -- dough_physical.lua); its floor stands on the recipe's preheated tray and is taken at the tray's temperature
+-- the batter draws its heat from the wall (oven.pan_heat_capacity): its inside's area, the ring's height (2D: two walls
+-- per metre of depth)
+local wall_C = oven.pan_warm_time and oven.pan_heat_capacity
 local ring = s:collider { shape = ring_shape, mode = "slip", temperature = oven.pan_temperature, beta = oven.pan_beta,
-  start_temperature = oven.pan_start_temperature, warm_time = oven.pan_warm_time }
+  start_temperature = oven.pan_start_temperature, warm_time = oven.pan_warm_time, heat_capacity = wall_C,
+  area = wall_C and (d3 and 2 * math.pi * R * HC or 2 * HC) or nil }
 -- ramekin_base = 1: the ramekin's floor, heated as its wall (the preset's pan: Table 2's conductive theta and beta, or
 -- the physical mould's 200 degC through 100 W/(m^2 K)), under the cake
 -- during the bake; it drops out of the scene when the ring lifts, leaving the cake on the cold plate
@@ -132,6 +136,11 @@ s:add { shape = cake, material = h.material("cam_clay_dough", d), temperature = 
 
 -- out of the oven: the ring rises to the top of the scene over P.lift seconds, then the cut
 s:at(bake, function(sc)
+  local wall = sc:collider_heat(ring)
+  if physical and wall.oven_in > 0 then -- the wall the batter drew its heat from (colliders.h)
+    print(("lava_cake.lua: the mould's wall at the bake's end %.1f degC; it gave the batter %.0f J of the oven's %.0f (J%s)")
+      :format(wall.temperature, wall.drawn, wall.oven_in, d3 and "" or " per metre of depth"))
+  end
   sc:oven(nil)
   if base then sc:move(base, v(0, -1, 0)) end
   sc:collider_velocity(ring, v(0, (H - PLATE) / P.lift, 0), 0)

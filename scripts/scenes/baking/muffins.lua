@@ -84,13 +84,13 @@ local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.1, 0.08) },
 local batter = h.material("cam_clay_dough", physical and h.library.dough.muffin or h.library.paper.muffin)
 -- the paper batter's dried skin cracks (its damage field); the physical one has no fracture law
 local cracks = not physical
-local xs = {}
+local xs, tins = {}, {}
 for i = 1, P.cups do
   -- cup centres on grid nodes: both walls then sit alike on the grid and the
   -- batter's top is symmetric (off-node, one side's top climbed its wall)
   xs[i] = math.floor((i - 0.5) * SPACING / dx + 0.5) * dx
   -- the cup, its inner floor at BASE, and the batter filling it (h.recipes.muffin_cup, shared with tear_open.lua)
-  h.recipes.muffin_cup(s, { dim = P.dim, x = xs[i], base = BASE, radius = R, height = CUP_H, wall = WALL, fill = P.fill,
+  tins[i] = h.recipes.muffin_cup(s, { dim = P.dim, x = xs[i], base = BASE, radius = R, height = CUP_H, wall = WALL, fill = P.fill,
     zc = zc, material = batter, oven = oven, mode = P.wall_mode, ppc = P.ppc > 0 and P.ppc or d3 and 8 or 4 })
 end
 local RIM = BASE + CUP_H
@@ -192,3 +192,8 @@ s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperat
   end }
 if cracks then s:png("damage", "damage.png", { kind = "particles", range = { 0, 1 } }) end
 s:png("browning", "browning.png", { time_scale = S })
+local tin = s:collider_heat(tins[1])
+if physical and tin.oven_in > 0 then -- the tin the batter drew its heat from (colliders.h)
+  print(("muffins.lua: the first cup's tin at %.1f min %.1f degC; it gave the batter %.0f J of the oven's %.0f (J%s)")
+    :format(s:stats().t * S / 60, tin.temperature, tin.drawn, tin.oven_in, d3 and "" or " per metre of depth"))
+end
