@@ -19,7 +19,7 @@ def slit_widens(path):
     hs = [float(r["height_one_slit_m"]) for r in rows]
     gs = [float(r["gap_one_slit_m"]) for r in rows]
     i = min(range(len(hs)), key=lambda k: hs[k])
-    print(f"lowest height {hs[i]:.5f} m at t = {rows[i]['t']} s with gap {gs[i]:.5f} m; end: height {hs[-1]:.5f} m, gap {gs[-1]:.5f} m")
+    print(f"lowest height {hs[i]:.5f} m at t = {rows[i]['t_s']} s with gap {gs[i]:.5f} m; end: height {hs[-1]:.5f} m, gap {gs[-1]:.5f} m")
     return 0 if i < len(hs) - 1 and hs[-1] > hs[i] and gs[-1] > gs[i] else 1
 
 
@@ -48,7 +48,7 @@ def dries(path, dx):
     centre's share, is below X/X0 0.5 and the centre keeps at least 85 %."""
     rows = list(csv.DictReader(open(path)))
     for r in rows:
-        print(f"dx {dx * 1e3:g} mm, t = {r['t']} s: X/X0 top {float(r['moisture_top']):.4f}, centre {float(r['moisture_centre']):.4f}")
+        print(f"dx {dx * 1e3:g} mm, t = {r['t_s']} s: X/X0 top {float(r['moisture_top']):.4f}, centre {float(r['moisture_centre']):.4f}")
     top = [float(r["moisture_top"]) for r in rows]
     ctr = [float(r["moisture_centre"]) for r in rows]
     ok = len(rows) >= 4 and all(t < c for t, c in zip(top[1:], ctr[1:]))
@@ -62,7 +62,7 @@ def cracks(path, dx):
     deep; without one, the expected failure and its cause (77)."""
     r = list(csv.DictReader(open(path)))[-1]
     d, w, h = float(r["crack_depth_m"]), float(r["crack_width_m"]), float(r["height_plain_m"])
-    print(f"dx {dx * 1e3:g} mm, t = {r['t']} s: deepest notch in the top of the intact crust {d * 1e3:.2f} mm deep "
+    print(f"dx {dx * 1e3:g} mm, t = {r['t_s']} s: deepest notch in the top of the intact crust {d * 1e3:.2f} mm deep "
           f"(need >= {0.1 * h * 1e3:.2f} mm), {w * 1e3:.1f} mm wide (need >= {2 * dx * 1e3:g} mm); "
           f"{r['cracked']} cracked particles, top X/X0 {float(r['moisture_top']):.3f}")
     if d >= 0.1 * h and w >= 2 * dx:

@@ -19,7 +19,7 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree the tests ru
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bread_claims  # noqa: E402
 
-COLS = ("t,height_plain_m,height_one_slit_m,height_two_slits_m,gap_one_slit_m,gap_two_slits_left_m,"
+COLS = ("t_s,height_plain_m,height_one_slit_m,height_two_slits_m,gap_one_slit_m,gap_two_slits_left_m,"
         "gap_two_slits_right_m,area_plain,area_one_slit,area_two_slits,crack_depth_m,crack_width_m,moisture_top,"
         "moisture_centre,cracked,top_arc_m").split(",")
 
@@ -29,7 +29,7 @@ def csv_of(rows):
     f = tempfile.NamedTemporaryFile("w", suffix=".csv", delete=False)
     f.write(",".join(COLS) + "\n")
     for k, r in enumerate(rows):
-        f.write(",".join(str(r.get(c, k * 0.5 if c == "t" else 0)) for c in COLS) + "\n")
+        f.write(",".join(str(r.get(c, k * 0.5 if c == "t_s" else 0)) for c in COLS) + "\n")
     f.close()
     return f.name
 

@@ -755,6 +755,30 @@ sph_bread_roll_crust_runs)
     has out.txt "centre 9 particles (0 dough), no dough particle there" "the bubble-only centre said"
     grep -qi "nan" out.txt && fail "a NaN printed for the roll: $(grep -i nan out.txt)"
     ;;
+sph_bread_roll_crust_water_wet_basis)
+    # #18 (helper userfix6): bread_roll.lua --set crust=true gives its dough h.library.dough.bread's water, 45% wet
+    # basis (lua/hearth/dough_physical.lua: Zanoni, Peri & Pierucci 1993), the share its dried heat capacity
+    # (0.55 x 1650 J/(kg K)) takes. Saturation is the water's volume over the particle's (Ding et al. eq. 8), so in
+    # this dough of 1100 kg/m^3 (h.library.sph.bread_roll; its bubbles are their own particles) that is s = 0.495;
+    # the crumb's 0.218 (at 484 kg/m^3, pores and all) had made it 19.8%. The bar, set at 15:30 UTC before the
+    # first run: the centre's dough at 0.02 s (3 mm; the water has not moved there) reads a wet basis
+    # s x 1000 / 1100 within 0.005 of 0.45. Printed too: the heat capacity's slope per kg of water,
+    # (2700 - 907.5) x 1100 / (1000 s), against water's 4180 J/(kg K).
+    run ../../scripts/scenes/sph/bread_roll.lua --set crust=true --set dx=0.003 --until 0.02
+    expect_rc 0 "the roll with its crust"
+    python3 - out.txt <<'PY' || fail "the roll's dough does not hold the 45% wet basis its heat capacity takes (above)"
+import re, sys
+m = re.search(r"crust \(dry true\): centre .*saturation ([0-9.]+)", open(sys.argv[1]).read())
+if not m:
+    print("no centre line with the dough's saturation")
+    sys.exit(1)
+s = float(m.group(1))
+wb, slope = s * 1000 / 1100, (2700 - 907.5) * 1100 / (1000 * s)
+print(f"centre dough saturation {s:.4f}: {100 * wb:.1f}% wet basis (need 45 +- 0.5); heat capacity's slope "
+      f"{slope:.0f} J/(kg K) per kg of water (water's own 4180)")
+sys.exit(0 if abs(wb - 0.45) <= 0.005 else 1)
+PY
+    ;;
 sph_cake_heats_mirror_symmetric)
     # The shipped angel food cake is a mirror-symmetric pan, so its two halves
     # must heat alike: the scene's volume.csv gives the mean temperature of

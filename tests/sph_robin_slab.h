@@ -69,6 +69,7 @@ static inline int robin_slab(int N, double *err, double *taken, double *taken_ex
     d.oven_temperature = Text;
     d.oven_beta = 0;
     d.dt_max = 0.01 * (d.sph.h_factor * dx) * (d.sph.h_factor * dx) / D;
+    d.browning = face != NULL; /* the face temperatures are browning's: a scene that does not brown makes none */
     hearth_scene *s = hearth_scene_create(&d, NULL);
     if (!s) return -1;
     const int m = newtonian(s, rho, 1e4, 1.0);

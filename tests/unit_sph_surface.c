@@ -1,6 +1,7 @@
 /* unit_sph_surface.c: the face temperature SPH's outer particles brown at (issue #18, helper sphsurface;
  * core/sim/solver/sph_heat.c's sph_surface_temperatures, the air-film closure shared with MPM in thermal.h):
- * against the Robin slab's series at three resolutions, and what browning.c integrates from it. */
+ * against the Robin slab's series at three resolutions, and what browning.c integrates from it; and that a scene
+ * that reads no face temperatures or no outer surface makes none (helper userfix6). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,6 +11,7 @@
 #include "scene.h"
 #include "sph.h"
 #include "sph_fixture.h"
+#include "sph_state.h"
 #include "sph_robin_slab.h"
 #include "test.h"
 
@@ -87,4 +89,126 @@ TEST(sph_outer_browns_at_face_temperature) {
     hearth_scene_destroy(s);
 }
 
-TEST_MAIN(T(sph_surface_temperature_slab_matches_series), T(sph_outer_browns_at_face_temperature))
+/* A scene pays only for the physics it uses (#18, helper userfix6): the face temperatures are browning.c's alone, so
+ * a scene that does not brown makes none. Twin 2D blocks 20 x 10 mm at dx 1 mm, 150 degC in a 200 degC oven by eq.
+ * 3.42 (k_h,ext 20, k_h,int 1), free to move (gravity on, on the domain's floor), one browning and one not. The
+ * bars, set at 15:10 UTC before the first run: after a step the one that does not brown gives no face temperatures
+ * (particle_values NULL; the other gives them), and a second step leaves its face temperatures' slots as the test
+ * wrote them (a sentinel in each: nothing computed them); after 40 steps both hold the same positions, velocities and
+ * temperatures bit for bit (the face temperatures feed browning alone), and the browning one has browned. */
+static hearth_scene *oven_block(int browning) {
+    const double dx = 0.001, lo[3] = {0, 0, 0}, hi[3] = {0.04, 0.03, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    d.sph.heat_ext = 20;
+    d.sph.heat_int = 1;
+    d.oven_temperature = 200;
+    d.oven_beta = 0;
+    d.browning = browning;
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    if (!s) return NULL;
+    const int m = newtonian(s, 1000, 1e4, 1.0);
+    const double blo[3] = {0.01, 0.0, 0}, bhi[3] = {0.03, 0.01, 0};
+    if (m < 0 || sph_box(s, m, blo, bhi, 0, 150) < 0) {
+        hearth_scene_destroy(s);
+        return NULL;
+    }
+    return s;
+}
+
+TEST(sph_surface_temperature_skipped_without_browning) {
+    hearth_scene *off = oven_block(0), *on = oven_block(1);
+    CHECK(off != NULL && on != NULL);
+    if (!off || !on) {
+        if (off) hearth_scene_destroy(off);
+        if (on) hearth_scene_destroy(on);
+        return;
+    }
+    hearth_error err;
+    CHECK(hearth_scene_step(off, 1, &err) == HEARTH_OK && hearth_scene_step(on, 1, &err) == HEARTH_OK);
+    const double *ts_off = sph_particle_values(off, "surface_temperature"), *ts_on = sph_particle_values(on, "surface_temperature");
+    const int n = off->ps.n;
+    int faces = 0;
+    for (int i = 0; ts_on && i < n; i++) faces += !isnan(ts_on[i]);
+    const double SENTINEL = -12345.0;
+    for (int i = 0; i < n; i++) off->sph->ts[i] = SENTINEL;
+    CHECK(hearth_scene_step(off, 1, &err) == HEARTH_OK && hearth_scene_step(on, 1, &err) == HEARTH_OK);
+    int touched = 0;
+    for (int i = 0; i < n; i++) touched += off->sph->ts[i] != SENTINEL;
+    CHECK(hearth_scene_step(off, 38, &err) == HEARTH_OK && hearth_scene_step(on, 38, &err) == HEARTH_OK);
+    const particles *a = &off->ps, *b = &on->ps;
+    const size_t v3 = sizeof(double) * 3 * (size_t)n, v1 = sizeof(double) * (size_t)n;
+    const int same = a->n == b->n && off->step == on->step && off->t == on->t &&
+                     !memcmp(pcold(a, PC_X), pcold(b, PC_X), v3) && !memcmp(pcold(a, PC_V), pcold(b, PC_V), v3) &&
+                     !memcmp(pcold(a, PC_TEMPERATURE), pcold(b, PC_TEMPERATURE), v1);
+    double bmax = 0;
+    for (int i = 0; i < b->n; i++) bmax = fmax(bmax, pcold(b, PC_BROWNING)[i]);
+    printf("%d particles; after a step: face temperatures %s without browning, %s with it (%d outer particles' faces); "
+           "a second step without browning rewrote %d of its %d sentinel slots (need 0); after %ld steps positions, "
+           "velocities and temperatures %s (need the same bits); the browning block's most browned %.3e (need > 0)\n",
+           n, ts_off ? "given" : "none", ts_on ? "given" : "none", faces, touched, n, off->step,
+           same ? "the same bits" : "DIFFER", bmax);
+    CHECK(ts_off == NULL && ts_on != NULL && faces > 0);
+    CHECK(touched == 0);
+    CHECK(same && off->step == 40 && bmax > 0);
+    hearth_scene_destroy(off);
+    hearth_scene_destroy(on);
+}
+
+/* The same for the outer surface (sph_outer.c; #18, helper userfix6: 22% of funnel.lua's run, a fluid with no heat
+ * and no water). Its readers all come with the flags column (temperature, water, a fixed body), so a block with none
+ * makes no outer surface. Twin 2D blocks of a Newtonian fluid 20 x 10 mm at dx 1 mm under gravity: one without a
+ * temperature, one at a uniform 20 degC with no oven and no conduction (its temperature moves nothing). The bars, set
+ * at 15:20 UTC before the first run: after a step the first gives no outer surface (particle_values NULL) and the
+ * second does (some particles on it); a second step leaves the first's outer slots as the test wrote them (a
+ * sentinel); after 40 steps the two hold the same positions and velocities bit for bit. */
+static hearth_scene *plain_block(double T) {
+    const double dx = 0.001, lo[3] = {0, 0, 0}, hi[3] = {0.04, 0.03, 0};
+    hearth_scene_def d = sph_def(2, dx, lo, hi);
+    hearth_scene *s = hearth_scene_create(&d, NULL);
+    if (!s) return NULL;
+    const int m = newtonian(s, 1000, 1e4, 1.0);
+    const double blo[3] = {0.01, 0.0, 0}, bhi[3] = {0.03, 0.01, 0};
+    if (m < 0 || sph_box(s, m, blo, bhi, 0, T) < 0) {
+        hearth_scene_destroy(s);
+        return NULL;
+    }
+    return s;
+}
+
+TEST(sph_outer_surface_skipped_without_readers) {
+    hearth_scene *bare = plain_block(NAN), *warm = plain_block(20);
+    CHECK(bare != NULL && warm != NULL);
+    if (!bare || !warm) {
+        if (bare) hearth_scene_destroy(bare);
+        if (warm) hearth_scene_destroy(warm);
+        return;
+    }
+    hearth_error err;
+    CHECK(hearth_scene_step(bare, 1, &err) == HEARTH_OK && hearth_scene_step(warm, 1, &err) == HEARTH_OK);
+    const double *o_bare = sph_particle_values(bare, "outer"), *o_warm = sph_particle_values(warm, "outer");
+    const int n = bare->ps.n;
+    int outer = 0;
+    for (int i = 0; o_warm && i < warm->ps.n; i++) outer += o_warm[i] > 0.5;
+    const double SENTINEL = -7.0;
+    for (int i = 0; i < n; i++) bare->sph->outer[i] = SENTINEL;
+    CHECK(hearth_scene_step(bare, 1, &err) == HEARTH_OK && hearth_scene_step(warm, 1, &err) == HEARTH_OK);
+    int touched = 0;
+    for (int i = 0; i < n; i++) touched += bare->sph->outer[i] != SENTINEL;
+    CHECK(hearth_scene_step(bare, 38, &err) == HEARTH_OK && hearth_scene_step(warm, 38, &err) == HEARTH_OK);
+    const particles *a = &bare->ps, *b = &warm->ps;
+    const size_t v3 = sizeof(double) * 3 * (size_t)n;
+    const int same = a->n == b->n && bare->step == warm->step && bare->t == warm->t &&
+                     !memcmp(pcold(a, PC_X), pcold(b, PC_X), v3) && !memcmp(pcold(a, PC_V), pcold(b, PC_V), v3);
+    printf("%d particles; after a step: outer surface %s without a temperature, %s at 20 degC (%d particles on it); a "
+           "second step without one rewrote %d of its %d sentinel slots (need 0); after %ld steps positions and "
+           "velocities %s (need the same bits)\n", n, o_bare ? "made" : "none", o_warm ? "made" : "none", outer,
+           touched, n, bare->step, same ? "the same bits" : "DIFFER");
+    CHECK(o_bare == NULL && o_warm != NULL && outer > 0);
+    CHECK(touched == 0);
+    CHECK(same && bare->step == 40);
+    hearth_scene_destroy(bare);
+    hearth_scene_destroy(warm);
+}
+
+TEST_MAIN(T(sph_surface_temperature_slab_matches_series), T(sph_outer_browns_at_face_temperature),
+          T(sph_surface_temperature_skipped_without_browning), T(sph_outer_surface_skipped_without_readers))

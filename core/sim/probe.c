@@ -301,10 +301,12 @@ hearth_status hearth_scene_particle_field(const hearth_scene *s, const char *fie
 }
 
 /* Accumulate particle values onto sample points. Samples are given as a
- * regular lattice: origin + a*ea + b*eb for a < na, b < nb (a line is nb = 1). */
+ * regular lattice: origin + a*ea + b*eb for a_first <= a < a_first + na, b < nb (a line is nb = 1), stored from
+ * a = a_first on. A band of a slice's rows (a_first > 0) is the very samples of the whole slice's, summed in the same
+ * order: render.c fills a picture band by band and draws the same pixels. */
 typedef struct lattice {
     double origin[3], ea[3], eb[3];
-    int na, nb;
+    int na, nb, a_first;
 } lattice;
 
 /* frac, when not NULL, receives each sample's volume fraction under the kernel (the material test's number) */
@@ -340,11 +342,11 @@ static hearth_status splat(const hearth_scene *s, int f, const lattice *L, doubl
             }
             if (q2 > reach2 * (1 + 1e-9)) continue;
         }
-        int a0 = 0, a1 = L->na - 1, b0 = 0, b1 = L->nb - 1;
+        int a0 = L->a_first, a1 = L->a_first + L->na - 1, b0 = 0, b1 = L->nb - 1;
         if (la2 > 0) {
             double ta = (rel[0] * L->ea[0] + rel[1] * L->ea[1] + rel[2] * L->ea[2]) / la2, ra = r / sqrt(la2);
-            a0 = (int)fmax(0, ceil(ta - ra));
-            a1 = (int)fmin(L->na - 1, floor(ta + ra));
+            a0 = (int)fmax(L->a_first, ceil(ta - ra));
+            a1 = (int)fmin(L->a_first + L->na - 1, floor(ta + ra));
         }
         if (lb2 > 0) {
             double tb = (rel[0] * L->eb[0] + rel[1] * L->eb[1] + rel[2] * L->eb[2]) / lb2, rb = r / sqrt(lb2);
@@ -369,7 +371,7 @@ static hearth_status splat(const hearth_scene *s, int f, const lattice *L, doubl
                     particle_value(s, f, i, val, copy);
                     have = 1;
                 }
-                double *A = acc + (size_t)(a * L->nb + b) * (nc + 2);
+                double *A = acc + (size_t)((a - L->a_first) * L->nb + b) * (nc + 2);
                 A[0] += w * V / cellv;
                 if (!carried) continue; /* present, but without the quantity (the header) */
                 A[1] += w * m;
@@ -418,6 +420,11 @@ hearth_status hearth_probe_slice(const hearth_scene *s, const char *field, int a
 
 hearth_status probe_slice_fraction(const hearth_scene *s, const char *field, int axis, double at, const double rect[4], int w,
                                    int h, double *out, double *frac, hearth_error *err) {
+    return probe_slice_rows(s, field, axis, at, rect, w, h, 0, h, out, frac, err);
+}
+
+hearth_status probe_slice_rows(const hearth_scene *s, const char *field, int axis, double at, const double rect[4], int w,
+                               int h, int row0, int rows, double *out, double *frac, hearth_error *err) {
     int f = 0;
     hearth_status st = find_field(s, field, 1, &f, err);
     if (st) return st;
@@ -425,12 +432,13 @@ hearth_status probe_slice_fraction(const hearth_scene *s, const char *field, int
         return err_set(err, HEARTH_ERR_PARAM, "slice: %d x %d samples; each side must be >= 1 and the total <= 67108864", w, h);
     if (axis < 0 || axis > 2) return err_set(err, HEARTH_ERR_PARAM, "slice: axis %d; valid: 0 (x), 1 (y), 2 (z)", axis);
     if (s->def.dim == 2 && axis != 2) return err_set(err, HEARTH_ERR_PARAM, "slice: a 2D scene has only the z slice (axis 2)");
+    HEARTH_ASSERT(row0 >= 0 && rows >= 1 && row0 + rows <= h); /* render.c's bands lie inside the slice */
     const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2; /* in-plane axes: columns along u, rows along v */
     double lo[3], hi[3];
     memcpy(lo, s->def.lo, sizeof lo), memcpy(hi, s->def.hi, sizeof hi);
     if (rect) lo[u] = rect[0], lo[v] = rect[1], hi[u] = rect[2], hi[v] = rect[3]; /* a picture's region */
     /* rows are sampled along v, columns along u: out[row*w + col], row 0 at the low end of v */
-    lattice L = {.na = h, .nb = w};
+    lattice L = {.na = rows, .nb = w, .a_first = row0};
     L.origin[axis] = s->def.dim == 2 ? 0 : at;
     L.origin[u] = lo[u] + 0.5 * (hi[u] - lo[u]) / w;
     L.origin[v] = lo[v] + 0.5 * (hi[v] - lo[v]) / h;

@@ -155,4 +155,8 @@ hearth_status guard_no_step(hearth_scene *s, double dt, hearth_error *err);
  * 2D picture's particle discs from it, and draws a picture's region. */
 hearth_status probe_slice_fraction(const hearth_scene *s, const char *field, int axis, double at, const double rect[4], int w,
                                    int h, double *out, double *frac, hearth_error *err);
+/* The same slice's rows row0 .. row0 + rows - 1 alone (out and frac: rows x w doubles), the very values the whole
+ * slice gives them: a picture filled band by band holds a band's samples at once, not the picture's (render.c). */
+hearth_status probe_slice_rows(const hearth_scene *s, const char *field, int axis, double at, const double rect[4], int w,
+                               int h, int row0, int rows, double *out, double *frac, hearth_error *err);
 #endif

@@ -305,7 +305,8 @@ function S:run(o)
   local probes = o.probes or {}
   local rows
   if o.csv then
-    local head = { "t", "step", "dt", "particles", "kinetic", "max_speed" }
+    -- the times say their unit in their names (t_s, dt_s: simulated seconds), as the shipped scenes' CSVs do
+    local head = { "t_s", "step", "dt_s", "particles", "kinetic", "max_speed" }
     for _, p in ipairs(probes) do
       local v = check_vec(p[2], "s:run: probe point")
       head[#head + 1] = ("%s@%g:%g:%g"):format(p[1], v[1], v[2], v[3])

@@ -30,7 +30,7 @@ local function top() -- the block's highest particle along its centre line
   for i, dd in ipairs(ys) do if dd == dd then y = 0.05 + (i - 1) * 0.25 / 100 end end
   return y
 end
-local rows = { "t,top_m" }
+local rows = { "t_s,top_m" }
 s:run { until_t = travel + 0.5, every = 0.05, png = { field = "von_mises", path = "frames/q_%04d.png" },
   on_frame = function(f)
     rows[#rows + 1] = ("%.4f,%.4f"):format(f.t, top())

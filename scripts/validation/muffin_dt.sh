@@ -34,7 +34,7 @@ for r in rows[1:]:
     height = RIM + float(r["top_above_rim_1_m"]) - BASE
     d, w = float(r["tear_depth_1_m"]), float(r["tear_width_1_m"])
     ok = "holds" if d >= 0.1 * height and w >= 2 * dx else "short"
-    print(f"muffin dx {dx * 1e3:g} mm, {sys.argv[3]}, t {r['t']} s: notch {d * 1e3:.2f} mm (need {0.1 * height * 1e3:.2f}), "
+    print(f"muffin dx {dx * 1e3:g} mm, {sys.argv[3]}, t {r['t_s']} s: notch {d * 1e3:.2f} mm (need {0.1 * height * 1e3:.2f}), "
           f"{w * 1e3:.0f} mm wide (need {2 * dx * 1e3:.0f}) {ok}; dome {float(r['centre_above_edge_1_m']) * 1e3:.2f} mm; "
           f"CPU {sys.argv[4]} s")
 PY

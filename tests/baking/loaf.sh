@@ -26,6 +26,8 @@ print("after %s real min: crumb %s degC, crust %s degC (saturation %s)" % (last[
 assert abs(float(last["t_real_min"]) - 2.0) < 1e-6
 assert float(last["centre_T_degC"]) < 30 and float(last["top_T_degC"]) > 45
 PY
+    python3 "$root/tests/scene_csv.py" --time "$(find hearth-out/loaf_physical -name loaf.csv | head -1)" ||
+        fail "loaf.csv's time column gives no unit"
     ;;
 
 # #18: "only the surface browns; the crumb stays pale", and a baker expects a golden-brown top after the 25 minute

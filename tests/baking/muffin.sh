@@ -89,9 +89,9 @@ dx = float(sys.argv[2])
 top0, top1 = float(rows[0]["top_above_rim_1_m"]), float(rows[-1]["top_above_rim_1_m"])
 ce, k = float(rows[-1]["centre_above_edge_1_m"]), float(rows[-1]["top_curvature_1_1_per_m"])
 for r in rows:
-    print(f"  t = {r['t']} s: centre {float(r['centre_above_edge_1_m']) * 1e3:.2f} mm above the edge, curvature "
+    print(f"  t = {r['t_s']} s: centre {float(r['centre_above_edge_1_m']) * 1e3:.2f} mm above the edge, curvature "
           f"{float(r['top_curvature_1_1_per_m']):.2f} 1/m, notch {float(r['tear_depth_1_m']) * 1e3:.2f} mm, {r['cracked_1']} cracked")
-print(f"dx {dx * 1e3:.0f} mm, t = {rows[-1]['t']} s: centre {ce * 1e3:.2f} mm above the edge (need > dx = {dx * 1e3:.1f} mm), "
+print(f"dx {dx * 1e3:.0f} mm, t = {rows[-1]['t_s']} s: centre {ce * 1e3:.2f} mm above the edge (need > dx = {dx * 1e3:.1f} mm), "
       f"top curvature {k:.2f} 1/m (need < 0); centre top {top0 * 1e3:.2f} -> {top1 * 1e3:.2f} mm from the rim")
 if ce > dx and k < 0 and top1 > top0:
     sys.exit(0)
@@ -127,9 +127,9 @@ dx = float(sys.argv[2])
 top0, top1 = float(rows[0]["top_above_rim_1_m"]), float(rows[-1]["top_above_rim_1_m"])
 ce, k = float(rows[-1]["centre_above_edge_1_m"]), float(rows[-1]["top_curvature_1_1_per_m"])
 for r in rows:
-    print(f"  t = {float(r['t']):.1f} s: centre top {float(r['top_above_rim_1_m']) * 1e3:+.2f} mm from the rim, "
+    print(f"  t = {float(r['t_s']):.1f} s: centre top {float(r['top_above_rim_1_m']) * 1e3:+.2f} mm from the rim, "
           f"{float(r['centre_above_edge_1_m']) * 1e3:.2f} mm above the edge, curvature {float(r['top_curvature_1_1_per_m']):.2f} 1/m")
-print(f"dx {dx * 1e3:.0f} mm, t = {float(rows[-1]['t']):.0f} s (the preset's 60 times fast: {float(rows[-1]['t']):.0f} min): centre {ce * 1e3:.2f} mm above the edge (need > dx = "
+print(f"dx {dx * 1e3:.0f} mm, t = {float(rows[-1]['t_s']):.0f} s (the preset's 60 times fast: {float(rows[-1]['t_real_s']) / 60:.0f} min): centre {ce * 1e3:.2f} mm above the edge (need > dx = "
       f"{dx * 1e3:.1f} mm), top curvature {k:.2f} 1/m (need < 0); centre top {top0 * 1e3:.2f} -> {top1 * 1e3:.2f} mm from the rim "
       f"(need a rise)")
 sys.exit(0 if ce > dx and k < 0 and top1 > top0 else 1)
@@ -167,7 +167,7 @@ dx, ppc = float(sys.argv[2]), int(sys.argv[3])
 BASE, RIM = 0.012, 0.042  # the cup's inner floor and rim (scripts/scenes/baking/muffins.lua)
 height = RIM + float(r["top_above_rim_1_m"]) - BASE
 d, w = float(r["tear_depth_1_m"]), float(r["tear_width_1_m"])
-print(f"dx {dx * 1e3:.0f} mm, {ppc or 4} particles a cell, t = {r['t']} s: deepest notch in the top {d * 1e3:.2f} mm deep (need >= "
+print(f"dx {dx * 1e3:.0f} mm, {ppc or 4} particles a cell, t = {r['t_s']} s: deepest notch in the top {d * 1e3:.2f} mm deep (need >= "
       f"{0.1 * height * 1e3:.2f} mm), {w * 1e3:.0f} mm wide (need >= {2 * dx * 1e3:.0f} mm); dome "
       f"{float(r['centre_above_edge_1_m']) * 1e3:.2f} mm")
 if d >= 0.1 * height and w >= 2 * dx:

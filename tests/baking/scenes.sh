@@ -26,8 +26,13 @@ baking_scene_cookies | baking_scene_bread | baking_scene_muffins | baking_scene_
     [ "$rows" -ge 2 ] || fail "$csv has $rows lines"
     # every cell numeric and finite, or empty ("not measured") in a column the scene's header declares may be:
     # "-- NAME.csv may leave empty (not measured): col, col, ..." (continued on "--   " lines after a comma)
-    python3 "$root/tests/scene_csv.py" "$csv" "$scenes/$sc.lua" ||
-        fail "$csv has non-numeric or non-finite cells, or empty ones in a column its scene does not declare"
+    # and a time column says its unit (t_s; t_real_s or t_real_min for a real time: #18, helper userfix6), in every
+    # CSV the scene writes (cookies.lua's series.csv, lava_cake.lua's lava_cake_times.csv, ...)
+    for f in $(find "hearth-out/$sc" -name '*.csv' | sort); do
+        python3 "$root/tests/scene_csv.py" "$f" "$scenes/$sc.lua" ||
+            fail "$f has non-numeric or non-finite cells, empty ones in a column its scene does not declare," \
+                "or a time without its unit"
+    done
     ;;
 
 # #18 (helper userfix5; userview3's item 3): while no batter lies on the pan at its centre (the pour's first rows, the

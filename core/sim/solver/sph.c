@@ -733,7 +733,10 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     sph_artificial_stress(s);
     sph_forces(s, dt);
     sph_hourglass(s, dt);
-    sph_outer_surface(s); /* the oven's heat enters there (sph_outer.c) */
+    /* the oven's heat enters there (sph_outer.c). Its readers, the heat, the water's evaporation, browning's face
+     * temperatures and the "boundary" field, each come with the flags column (scene.c's temperature, water.c's
+     * water): a scene with none of them (funnel.lua: 22% of its run) pays nothing for it (#18, helper userfix6) */
+    if (s->ps.enabled & (1u << PC_FLAGS)) sph_outer_surface(s);
     if (water_active(s)) sph_water_prepare(s); /* the saturations the water's pairs read in the heat's walk */
     sph_heat_rates(s); /* reads st->vc and st->sp (sph_kinematics) */
     if (water_active(s)) sph_water_rates(s); /* after the heat: the latent sink takes from st->dT */
@@ -753,8 +756,9 @@ const double *sph_particle_values(const hearth_scene *s, const char *which) {
     if (!strcmp(which, "pressure")) return st->prs;
     if (!strcmp(which, "h")) return st->h;
     if (!strcmp(which, "surface")) return st->surf;
-    if (!strcmp(which, "outer")) return st->outer;
-    if (!strcmp(which, "surface_temperature")) return s->ps.enabled & (1u << PC_TEMPERATURE) ? st->ts : NULL;
+    if (!strcmp(which, "outer")) return s->ps.enabled & (1u << PC_FLAGS) ? st->outer : NULL; /* made then (sph_step) */
+    if (!strcmp(which, "surface_temperature")) /* made for browning.c alone: in a scene that browns (sph_heat.c) */
+        return s->def.browning && (s->ps.enabled & (1u << PC_TEMPERATURE)) ? st->ts : NULL;
     return NULL;
 }
 

@@ -19,9 +19,11 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err);
 /// Per-particle results of the last step, in the scene's current particle
 /// order; NULL before the first step or after particles were added/removed.
 /// which: "density", "pressure", "h", "surface" (0/1, the colour field's), "outer" (0/1, the
-/// body's outer surface, where the oven heats: sph_outer.c), "surface_temperature" (degC: an outer particle's
-/// face temperature by the oven's air-film closure, NaN for the rest; NULL without the temperature field;
-/// sph_heat.c's sph_surface_temperatures, which browning.c reads).
+/// body's outer surface, where the oven heats: sph_outer.c; NULL in a scene with no temperature, water or fixed
+/// body, where nothing reads it and it is not made), "surface_temperature" (degC: an outer particle's
+/// face temperature by the oven's air-film closure, NaN for the rest; NULL without the temperature field or in a
+/// scene that does not brown, where nothing reads them and they are not made; sph_heat.c's
+/// sph_surface_temperatures, which browning.c reads).
 const double *sph_particle_values(const hearth_scene *s, const char *which);
 
 /// A bubble particle's gas volume V_b at temperature T (degC) for its initial

@@ -269,7 +269,8 @@ static void heat_ledger(hearth_scene *s, double dt) {
  * collider (within h: eq. 3.42's outside is the collider; within its spacing: the Robin contact) keeps its own
  * temperature, as MPM's by a collider's face: its surface is a contact the air film does not describe.
  * The flux itself is not moved in by d (MPM's is): sph_heat_rates heats with T_i (docs/validation.md, "SPH's
- * crust browns at its surface's temperature"). Read at the step's end temperatures, which browning integrates. */
+ * crust browns at its surface's temperature"). Read at the step's end temperatures, which browning integrates; only
+ * in a scene that browns (sph_fields_advance). */
 static void sph_surface_temperatures(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
@@ -311,5 +312,7 @@ void sph_fields_advance(hearth_scene *s, double dt) {
     if (T && Tmax)
         for (int i = 0; i < c.n; i++)
             if (T[i] > Tmax[i]) Tmax[i] = T[i];
-    if (T) sph_surface_temperatures(s);
+    /* browning.c is their one reader: a scene that does not brown pays for no face temperatures (#18, helper
+     * userfix6; particle_values gives none then) */
+    if (T && s->def.browning) sph_surface_temperatures(s);
 }

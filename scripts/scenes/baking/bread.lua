@@ -2,7 +2,8 @@
 -- by side, one intact, one with a slit scored on top, one with two.
 --   hearth run scripts/scenes/baking/bread.lua [--set dim=3] [--set until_t=4]
 -- Writes, under hearth-out/bread/: heat_%04d.png (temperature) and
--- bread.csv: per frame, each loaf's height and each slit's gap width (the
+-- bread.csv: per frame (t_s, the simulated time: Table 2's animation units),
+-- each loaf's height and each slit's gap width (the
 -- open width of the cut, measured across it just below the loaf's top), each
 -- loaf's area (2D, m^2) or volume (3D, m^3): the sum of V0 J over its
 -- particles (area_plain, area_one_slit, area_two_slits, the names kept in
@@ -191,7 +192,7 @@ local function top_arc(x0)
   return len
 end
 
-local rows = { "t,height_plain_m,height_one_slit_m,height_two_slits_m,gap_one_slit_m,gap_two_slits_left_m,gap_two_slits_right_m," ..
+local rows = { "t_s,height_plain_m,height_one_slit_m,height_two_slits_m,gap_one_slit_m,gap_two_slits_left_m,gap_two_slits_right_m," ..
   "area_plain,area_one_slit,area_two_slits,crack_depth_m,crack_width_m,moisture_top,moisture_centre,cracked,top_arc_m" }
 -- the area_* columns keep their names in 3D, where they hold volumes (tests/bread_claims.py, tests/baking/loaf.sh and
 -- the validation wrappers read them by name); their unit is said here, in --params and in the header above

@@ -211,7 +211,9 @@ local W = SPACING * #leaveners
 local zc = 0.06
 
 local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_per_m,top_curvature_particles_1_per_m,alone,top_curvature_particles_se_1_per_m,particles,shed,shed_swollen" }
-local series = { "oven_degC,leavener,t,height_m,spread_m,centre_temperature_degC" }
+-- series.csv's t_s is the simulated time (the paper preset's Table 2 animation units; the physical preset's S times
+-- fast, whose real time t_real_s = S t_s comes last, as pancake.lua's and lava_cake.lua's)
+local series = { "oven_degC,leavener,t_s,height_m,spread_m,centre_temperature_degC" .. (S and ",t_real_s" or "") }
 for _, T in ipairs(ovens) do
   local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.09, 0.12) },
     oven = { temperature = T, beta = oven.beta }, gas_vent = vent, name = "cookies", seed = P.seed,
@@ -414,6 +416,7 @@ for _, T in ipairs(ovens) do
         local hgt, spread = measure(i)
         local tc = s:probe("temperature", v(xs[i], TRAY + 0.01, zc))
         series[#series + 1] = ("%g,%g,%.4f,%.5f,%.5f,%.2f"):format(T, a, f.t, hgt, spread, tc)
+          .. (S and (",%.1f"):format(S * f.t) or "")
       end
       h.write("series.csv", table.concat(series, "\n") .. "\n")
     end }

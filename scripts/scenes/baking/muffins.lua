@@ -10,7 +10,8 @@
 -- fracture that 9 a cell does not show, docs/validation.md "The muffin's tear: the heat under the crown,
 -- and particles a cell")
 -- Writes, under hearth-out/muffins/: heat_%04d.png (temperature) and
--- muffins.csv: per frame and cup, the top of the batter at the cup's centre
+-- muffins.csv: per frame (t_s, the simulated time; the physical preset adds
+-- its real time, t_real_s) and cup, the top of the batter at the cup's centre
 -- above the rim, its centre's height above its edge, the curvature of
 -- its top (negative = domed), and its deepest tear (#18): over the one-cell
 -- bins of the top of its intact material (particles with damage below 1; see
@@ -168,12 +169,15 @@ local function water()
   return p.saturation[top] * p.J[top] / oven.saturation, p.saturation[ctr] * p.J[ctr] / oven.saturation, nc
 end
 
-local head = { "t" }
+local head = { "t_s" }
 for i = 1, P.cups do
   head[#head + 1] = ("top_above_rim_%d_m,centre_above_edge_%d_m,top_curvature_%d_1_per_m,tear_depth_%d_m,tear_width_%d_m")
     :format(i, i, i, i, i)
 end
 head[#head + 1] = "moisture_top_1,moisture_centre_1,cracked_1"
+-- t_s is the simulated time: the paper preset's Table 2 animation units, the physical preset's S times fast, whose
+-- real time t_real_s = S t_s comes last (pancake.lua's and lava_cake.lua's columns)
+if physical then head[#head + 1] = "t_real_s" end
 local rows = { table.concat(head, ",") }
 print(rows[1]) -- the rows each frame prints below are muffins.csv's: its header first, so they read as columns
 s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png", time_scale = S },
@@ -186,6 +190,7 @@ s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperat
       r[#r + 1] = ("%.5f,%.5f,%.3f,%.5f,%.5f"):format(c - RIM, ce, k, td, tw)
     end
     r[#r + 1] = ("%.4f,%.4f,%d"):format(water())
+    if physical then r[#r + 1] = ("%.1f"):format(S * f.t) end
     rows[#rows + 1] = table.concat(r, ",")
     h.write("muffins.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])

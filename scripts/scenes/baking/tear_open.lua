@@ -20,7 +20,8 @@
 -- 17 mm (muffin, w = 50 mm) or 27 mm (loaf, w = 80 mm). (With the middle half free, 25 and 40 mm, the loaf's
 -- whole middle sheared off at the grips and fell under its own weight.)
 -- Writes, under hearth-out/tear_open/: heat_%04d.png (temperature) and damage_%04d.png at the end of the bake
--- and every fifth frame of the pull and its last, browning.png at the end, and tear_open.csv, per frame:
+-- and every fifth frame of the pull and its last, browning.png at the end, and tear_open.csv, per frame
+-- (t_s, the simulated time, s):
 --   separation_m: how far the grips have moved apart (0 through the bake);
 --   neck_m: the thinnest section between the grips: over one-cell columns from a cell inside each grip's face,
 --     the height of the one-cell rows that hold an intact particle (damage below 1: a fully cracked particle
@@ -226,7 +227,7 @@ local function take_out(sc)
 end
 s:at(bake, take_out)
 
-local rows = { "t,separation_m,neck_m,pieces,face_particles,face_peak_min_degC,face_peak_max_degC,cracked,"
+local rows = { "t_s,separation_m,neck_m,pieces,face_particles,face_peak_min_degC,face_peak_max_degC,cracked,"
   .. "force_mid_N_per_m,free_cracked_fraction,largest_piece_share,crack_from_face_m,bodies,loose_share" }
 local every = P.pull / P.frames
 local frame = 0

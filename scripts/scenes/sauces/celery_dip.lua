@@ -58,7 +58,7 @@ local function lifted()
   return n * (W / nx) * (H / ny)
 end
 
-local rows = { "t,centre_height_m,lifted_m2" }
+local rows = { "t_s,centre_height_m,lifted_m2" }
 local last, centre = 0, 0
 s:run { until_t = P.until_t, every = P.every,
   png = P.png and { field = "speed", path = "frames/speed_%04d.png" } or nil,

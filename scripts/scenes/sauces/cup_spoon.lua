@@ -42,7 +42,7 @@ end
 local omega = 2 * math.pi * P.rps
 s:collider { shape = h.disc({ cx + 0.5 * R, cy }, R / 6), mode = "sticky", omega = omega, pivot = { cx, cy } }
 
-local rows = { "t,kinetic_J_per_m,mean_speed_m_s,mixed_fraction" }
+local rows = { "t_s,kinetic_J_per_m,mean_speed_m_s,mixed_fraction" }
 -- the share of sauce whose mayo ratio lies between 0.1 and 0.9 (dynamic mixing only)
 local function mixed()
   if s:_state().dynamic == nil then return 0 end

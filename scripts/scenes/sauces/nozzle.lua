@@ -73,7 +73,7 @@ end
 -- for hearth trade: the front of the middle lane (the 50:50 mix by default) at the end
 h.metric("front", function() return front(lanes[(#lanes + 1) // 2]) end)
 
-local head = { "t" }
+local head = { "t_s" }
 for _, L in ipairs(lanes) do head[#head + 1] = ("front_%g"):format(L.ratio) end
 local rows = { table.concat(head, ",") }
 local last = {}

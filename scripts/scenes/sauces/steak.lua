@@ -53,7 +53,7 @@ local function spread()
   return left, right, n * (W / nx) * (H / ny)
 end
 
-local rows = { "t,left_m,right_m,runoff_m2" }
+local rows = { "t_s,left_m,right_m,runoff_m2" }
 local l, r, ro = 0, 0, 0
 s:run { until_t = P.until_t, every = P.every,
   png = P.png and { field = "speed", path = "frames/speed_%04d.png" } or nil,

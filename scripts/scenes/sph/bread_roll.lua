@@ -96,8 +96,11 @@
 -- passes the gas's 20 kPa at 45.3 degC and held the roll at 1.14x. --set
 -- visc_scale=1 --set mue_scale=1 --set visc_cap=1e9 --set mu_e_curve=table is
 -- the table as printed.
--- --set crust=true gives the dough h.library.dough.bread's water (saturation
--- 0.218, its diffusivity and surface evaporation on the scene's S = 400),
+-- --set crust=true gives the dough h.library.dough.bread's water (its 45% wet
+-- basis, at this dough's 1100 kg/m^3 saturation s = 0.45 x 1100 / 1000 = 0.495
+-- of rho_0^w, Ding et al. eq. 8, as bread_of_the_dead.lua's; its liquid
+-- diffusivity 2e-9 m^2/s, eq. 22's K = D / (373.15 s), and surface evaporation
+-- on the scene's S = 400),
 -- latent_heat with boiling at 100 degC, and its dried crust's conductivity and
 -- heat capacity (dry_conductivity 0.23 of 0.51 W/(m K): sph.heat_int x 0.45
 -- where dried; dry_specific_heat 907.5 of 2700 J/(kg K); core/sim/solver/
@@ -170,10 +173,22 @@ m.viscosity = scaled(lib.material.viscosity, P.visc_scale, P.visc_cap)
 if P.mu_e_curve == "table" then m.mu_e = scaled(lib.paper.mu_e, P.mue_scale) end
 local bubble_m = {}
 for k, v in pairs(m) do bubble_m[k] = v end
+-- The crust's water (#18, helper userfix6): saturation is the water's volume over the particle's, s = W / (rho_0^w V)
+-- (Ding et al. eq. 8; sph_water.c's V is the rest volume m / rho_0). h.library.dough.bread's 0.218 is 45% wet basis
+-- in its crumb of 484 kg/m^3, a volume that holds its pores; this roll's dough particles are the dough between its
+-- bubbles, 1100 kg/m^3, so the same 45% is 0.45 x 1100 / 1000 = 0.495 (0.218 there was 19.8%, while the dried
+-- crust's heat capacity, 907.5 = 0.55 x 1650 J/(kg K), takes 45%: its slope (2700 - 907.5) x 1100 / 218 = 9045
+-- J/(kg K) per kg of water, twice water's own; at 0.495 it is 3983, 5% under water's 4180 as the 2700 is 3% under
+-- Choi and Okos's 2.79). bread_of_the_dead.lua's dough takes the same.
+local WET_BASIS = 0.45
+local s0 = P.crust and WET_BASIS * m.density / 1000 or nil
 if P.crust then -- the bread's water and dried crust (lua/hearth/dough_physical.lua), on the scene's time scale
-  local g, k = h.library.dough.bread, 400 / h.library.oven.bread.time_scale -- its rates on S = 400 instead
+  local g = h.library.dough.bread
   m.specific_heat, m.conductivity = g.specific_heat, g.conductivity -- SPH reads only dry_conductivity / conductivity
-  m.water_diffusivity, m.evaporation = g.water_diffusivity * k, g.evaporation * k
+  -- eq. 22: D = K theta s, so K = D / (373.15 s0) for the bread's D at 373 K; its evaporation, both on S = 400
+  local raw = require("hearth.dough_physical").goods.bread -- the preset's own figures, before its S = 300
+  m.water_diffusivity = raw.water_diffusivity_m2s / (373.15 * s0) * 400
+  m.evaporation = raw.evaporation * 400
   if P.dry then m.dry_conductivity, m.dry_specific_heat = g.dry_conductivity, g.dry_specific_heat end
 end
 local dough = h.material("maxwell_sph", m)
@@ -211,8 +226,16 @@ elseif P.bubbles == "dispersed" then
   gas = h.union(table.unpack(spots))
 end
 s:add { shape = h.difference(roll, gas), material = dough, ppc = 1, jitter = 0, temperature = lib.table.T0 + P.warm,
-  saturation = P.crust and h.library.dough.bread.saturation or nil }
+  saturation = s0 }
 local n_dough = #s:positions() // 3 -- ids 0 .. n_dough - 1: the dough's; the bubbles' follow (gas: no water)
+if P.crust then -- the water the dough was given, read back from its particles, as a share of its mass
+  local r = s:particles { fields = { "saturation" } }
+  local lo, hi = math.huge, -math.huge
+  for i = 1, n_dough do lo, hi = math.min(lo, r.saturation[i]), math.max(hi, r.saturation[i]) end
+  print(("crust: the dough's water, saturation %.4f-%.4f of rho_w 1000 kg/m^3 in its %g kg/m^3: %.1f%% wet basis "
+    .. "(h.library.dough.bread's, whose dried heat capacity takes %g%%)"):format(lo, hi, m.density,
+    100 * hi * 1000 / m.density, 100 * WET_BASIS))
+end
 s:add { shape = h.intersection(roll, gas), material = bubble, ppc = 1, jitter = 0, temperature = lib.table.T0 + P.warm }
 s:collider { shape = h.plane({ 0, 0.01 }, { 0, 1 }), mode = "slip", temperature = P.oven, beta = 0 }
 
