@@ -42,6 +42,36 @@ TEST(sph_surface_temperature_slab_matches_series) {
     }
 }
 
+/* The same slab with the oven's flux moved in by the film (sph_heat.c's sph_film_share: the flux crosses the half
+ * spacing between the face and the outer particle's centre, h (T_ext - T_i) / (1 + h d / kappa), thermal.h's
+ * thermal_film_den, as MPM's find_boundary). Against the series: the heat taken, and the face reading. The bars,
+ * set at 15:01 UTC on 2026-12-07 before the first run of the committed code, from the 1D finite-volume model of
+ * the same discretisation (scripts/validation/sph_surface_fv.py --film: the face's error 0.0022 / 0.00056 / 0.00014,
+ * order 2) and from the old bar of sph_heat_ext_slab_converges (within 2% at 40 across): the heat taken within 2%
+ * of the series at every resolution, its error falling by at least half per halving (order >= 1); the face
+ * reading's error under 0.005 at 10 across and falling by a factor of at most 0.4 per halving (order >= 1.3). */
+TEST(sph_surface_flux_through_film_matches_series) {
+    const int Ns[] = {10, 20, 40};
+    robin_slab_face f[3];
+    double E[3], Q[3], Qx[3], qe[3];
+    for (int r = 0; r < 3; r++) {
+        CHECK(robin_slab(Ns[r], &E[r], &Q[r], &Qx[r], &f[r]) == 0);
+        qe[r] = Q[r] / Qx[r] - 1;
+        printf("Robin slab through the film, %d across: heat taken %.5f of the most, series %.5f (%+.3f%%, bar 2%%); "
+               "face reading's error %.5f (signed %+.5f); worst profile error %.5f\n",
+               Ns[r], Q[r], Qx[r], 100 * qe[r], f[r].face_err, f[r].face_bias, E[r]);
+        CHECK(fabs(qe[r]) < 0.02);
+    }
+    CHECK(f[0].face_err < 0.005);
+    for (int r = 1; r < 3; r++) {
+        const double qr = fabs(qe[r] / qe[r - 1]), fr = f[r].face_err / f[r - 1].face_err;
+        printf("Robin slab through the film: %d -> %d across, heat taken's error ratio %.3f (bar 0.5), order %.2f; "
+               "face reading's ratio %.3f (bar 0.4), order %.2f\n",
+               Ns[r - 1], Ns[r], qr, log(1 / qr) / log(2.0), fr, log(1 / fr) / log(2.0));
+        CHECK(qr <= 0.5 && fr <= 0.4);
+    }
+}
+
 /* Zanoni et al. 1995's first-order kinetics, written out here rather than taken from browning.c: k0 42000 1/s,
  * Ea 64151 J/mol. */
 static double zanoni_k(double T) { return 42000.0 * exp(-64151.0 / (8.314462618 * (T + 273.15))); }
@@ -210,5 +240,6 @@ TEST(sph_outer_surface_skipped_without_readers) {
     hearth_scene_destroy(warm);
 }
 
-TEST_MAIN(T(sph_surface_temperature_slab_matches_series), T(sph_outer_browns_at_face_temperature),
+TEST_MAIN(T(sph_surface_temperature_slab_matches_series), T(sph_surface_flux_through_film_matches_series),
+          T(sph_outer_browns_at_face_temperature),
           T(sph_surface_temperature_skipped_without_browning), T(sph_outer_surface_skipped_without_readers))

@@ -66,6 +66,43 @@ static double sph_dry_k(const hearth_scene *s, int i, int mat) {
     return cw * (material_conductivity(ms, &s->ps, i) / kw);
 }
 
+/* The oven's flux at an outer particle crosses the half-layer between the face it stands for and its centre
+ * (its rest volume V = m / rho0, eq. 3.43's, a layer sp = V^(1/d) thick; d = sp / 2 from face to centre), as MPM's
+ * find_boundary moves its Robin condition in by the sample's depth: the film and the half-layer in series,
+ * h (T_ext - T_s) = kappa (T_s - T_i) / d, pass h (T_ext - T_i) / (1 + h d / kappa) (thermal.h's thermal_film_den,
+ * Ding et al. 2019 §3.2's heat flow condition over a layer conducting by Fourier's law). h is the oven's
+ * coefficient per unit area, eq. 3.42's k_h,ext c (what sph_heat_rates gives per unit area, c the material's
+ * specific_heat) plus the Robin beta; kappa the conduction eq. 3.45 gives the particle, k_h,int c, or k_h,int k_i
+ * with a dry parameter (k_i = c kappa(w_i) / kappa_wet, sph_dry_k; ki its value, < 0: take it here; c the
+ * step's columns). h / kappa is
+ * what counts, so S and c cancel: k_h,ext / k_h,int without the Robin term. Returns the film's share
+ * r = 1 / (1 + h d / kappa) of particle i: 1 without conduction (the face is the particle), and 1 for a particle
+ * that is not outer or sits by a heated collider (within h: eq. 3.42's outside is the collider; within its spacing:
+ * the Robin contact), whose surface is a contact the air film does not describe (MPM's by a collider's face, too);
+ * *face (may be NULL) says whether i has a face in the oven's air. One rule for the flux (sph_heat_rates) and the
+ * face temperature browning reads (sph_surface_temperatures), so the face the colour sees is the one the heat
+ * crossed. */
+static double sph_film_share(const hearth_scene *s, const sph_cols *cs, int i, double ki, int *face) {
+    const struct sph_state *st = s->sph;
+    const hearth_sph_def *o = &s->def.sph;
+    const sph_cols c = *cs;
+    const double Text = s->def.oven_temperature, beta = isfinite(Text) ? s->def.oven_beta : 0.0;
+    if (face) *face = 0;
+    if (!st->outer[i] || !isfinite(Text) || !(o->heat_ext > 0 || beta > 0)) return 1.0;
+    const double Vr = c.m[i] / st->rho0[i], sp = c.dim == 3 ? cbrt(Vr) : sqrt(Vr);
+    for (int q = 0; q < s->ncol; q++) { /* sph_heat_rates's two rules for a collider's outside */
+        const collider *cl = &s->cols[q];
+        if (isnan(cl->temperature) || !collider_near(cl, c.x + 3 * i)) continue;
+        const double sd = collider_sdf(cl, c.x + 3 * i, NULL);
+        if ((o->heat_ext > 0 && sd < st->h[i]) || (cl->beta > 0 && sd < sp)) return 1.0;
+    }
+    if (face) *face = 1;
+    const double cw = s->mats.slot[c.mat[i]].core[CP_SPECIFIC_HEAT];
+    const double h = o->heat_ext * cw + beta;
+    const double kappa = o->heat_int * (sph_heat_dry(s) ? (ki >= 0 ? ki : sph_dry_k(s, i, c.mat[i])) : cw);
+    return 1.0 / thermal_film_den(h, 0.5 * sp, kappa);
+}
+
 void sph_heat_rates(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
@@ -128,6 +165,8 @@ void sph_heat_rates(hearth_scene *s) {
                 }
                 dTi += o->heat_int * 4 * m[j] / ((ri + rj) * (ri + rj)) * (T[j] - T[i]) * lv * kij; /* eq. 3.45-3.46 */
             }
+        /* the oven's flux crosses the half-layer to i's centre (sph_film_share; 1 where none, the thesis's bits) */
+        const double film = st->outer[i] ? sph_film_share(s, &c, i, dry ? ki : -1.0, NULL) : 1.0;
         if (o->heat_ext > 0 && st->outer[i]) { /* eq. 3.42 at surface particles, per unit area (below) */
             double Tout = Text;
             for (int q = 0; q < s->ncol; q++) { /* a heated collider within h is the outside instead */
@@ -157,7 +196,7 @@ void sph_heat_rates(hearth_scene *s) {
                  * (sph_heat_ext_flux_per_area). The thesis's sign is
                  * reversed: heat flows from the hotter side. */
                 const double Vr = m[i] / st->rho0[i], face = (dim == 3 ? cbrt(Vr) * cbrt(Vr) : sqrt(Vr)) * st->oshare[i];
-                dTi += o->heat_ext * (Tout - T[i]) * face / m[i] * (dry ? msi->core[CP_SPECIFIC_HEAT] : 1.0);
+                dTi += film * o->heat_ext * (Tout - T[i]) * face / m[i] * (dry ? msi->core[CP_SPECIFIC_HEAT] : 1.0);
             }
         }
         if (dry) dTi = ai > 0 ? dTi / ai : 0.0; /* heat per m_i over alpha(w_i) */
@@ -172,7 +211,7 @@ void sph_heat_rates(hearth_scene *s) {
              * block's outline. */
             const double ci = dry ? ai : msi->core[CP_SPECIFIC_HEAT], Vr = m[i] / st->rho0[i];
             const double sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
-            double coef = beta_oven > 0 && st->outer[i] ? face * st->oshare[i] * beta_oven : 0.0, Tr = Text;
+            double coef = beta_oven > 0 && st->outer[i] ? film * face * st->oshare[i] * beta_oven : 0.0, Tr = Text;
             for (int q = 0; q < s->ncol; q++) {
                 const collider *cl = &s->cols[q];
                 if (isnan(cl->temperature) || !(cl->beta > 0) || !collider_near(cl, x + 3 * i)) continue;
@@ -183,7 +222,8 @@ void sph_heat_rates(hearth_scene *s) {
             }
             if (coef > 0 && ci > 0) dTi += coef * (Tr - T[i]) / (m[i] * ci);
             /* the oven's part (W), for latent_heat's ledger: coef (Tr - T) is the sum of its parts */
-            if (ledger) st->qo[i] = beta_oven > 0 && st->outer[i] ? face * st->oshare[i] * beta_oven * (Text - T[i]) : 0.0;
+            if (ledger)
+                st->qo[i] = beta_oven > 0 && st->outer[i] ? film * face * st->oshare[i] * beta_oven * (Text - T[i]) : 0.0;
         }
         st->dT[i] = dTi;
         if (water) st->dW[i] = dw; /* the water's pairs, which sph_water_rates completes */
@@ -258,43 +298,22 @@ static void heat_ledger(hearth_scene *s, double dt) {
 }
 
 /* Each outer particle's face temperature (st->ts, degC; NaN for the rest), for browning.c: colour is the surface's
- * (issue #18), and an outer particle's centre lies half its spacing under the face it stands for (its rest volume
- * V = m / rho0, eq. 3.43's, a layer sp = V^(1/d) thick), colder than the face by that half-layer's conduction. The
- * closure is MPM's (thermal.h's thermal_film_den and thermal_face_temperature, the oven's flux through an air film
- * h (T_ext - T_s) = kappa (T_s - T_i) / d): d = sp / 2; h the oven's coefficient per unit area, eq. 3.42's
- * k_h,ext c (the heat per unit area sph_heat_rates gives it, c the material's specific_heat) plus the Robin beta;
- * kappa the conduction eq. 3.45 gives the particle, k_h,int c, or k_h,int k_i with a dry parameter (k_i =
- * c kappa(w_i) / kappa_wet, sph_dry_k). h / kappa is what counts, so S and c cancel: k_h,ext / k_h,int without
- * the Robin term. Without conduction (k_h,int = 0) the face is the particle (film_den 1). A particle by a heated
- * collider (within h: eq. 3.42's outside is the collider; within its spacing: the Robin contact) keeps its own
- * temperature, as MPM's by a collider's face: its surface is a contact the air film does not describe.
- * The flux itself is not moved in by d (MPM's is): sph_heat_rates heats with T_i (docs/validation.md, "SPH's
- * crust browns at its surface's temperature"). Read at the step's end temperatures, which browning integrates; only
+ * (issue #18), and an outer particle's centre lies half its spacing under the face it stands for, colder than the
+ * face by that half-layer's conduction: T_s = T_ext - (T_ext - T_i) r (thermal.h's thermal_face_temperature), r the
+ * film's share sph_film_share gives, the same closure that moved the flux in (sph_heat_rates), so the face's
+ * temperature and the heat that crossed it agree. A particle by a heated collider keeps its own temperature
+ * (NaN here: browning reads T_i). Read at the step's end temperatures, which browning integrates; only
  * in a scene that browns (sph_fields_advance). */
 static void sph_surface_temperatures(hearth_scene *s) {
     struct sph_state *st = s->sph;
-    const hearth_sph_def *o = &s->def.sph;
     const sph_cols c = sph_cols_of(s);
-    const int n = c.n, dim = c.dim, *mat = c.mat;
-    const double *x = c.x, *m = c.m, *T = c.T, Text = s->def.oven_temperature;
-    const double beta = isfinite(Text) ? s->def.oven_beta : 0.0;
-    const int dry = sph_heat_dry(s);
+    const int n = c.n;
+    const double *T = c.T, Text = s->def.oven_temperature;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
-        st->ts[i] = NAN;
-        if (!st->outer[i] || !isfinite(Text) || !(o->heat_ext > 0 || beta > 0)) continue;
-        const double Vr = m[i] / st->rho0[i], sp = dim == 3 ? cbrt(Vr) : sqrt(Vr);
-        int contact = 0;
-        for (int q = 0; q < s->ncol && !contact; q++) { /* sph_heat_rates's two rules for a collider's outside */
-            const collider *cl = &s->cols[q];
-            if (isnan(cl->temperature) || !collider_near(cl, x + 3 * i)) continue;
-            const double sd = collider_sdf(cl, x + 3 * i, NULL);
-            contact = (o->heat_ext > 0 && sd < st->h[i]) || (cl->beta > 0 && sd < sp);
-        }
-        if (contact) continue;
-        const double cw = s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT];
-        const double h = o->heat_ext * cw + beta, kappa = o->heat_int * (dry ? sph_dry_k(s, i, mat[i]) : cw);
-        st->ts[i] = thermal_face_temperature(Text, T[i], 1.0 / thermal_film_den(h, 0.5 * sp, kappa));
+        int face;
+        const double r = sph_film_share(s, &c, i, -1.0, &face);
+        st->ts[i] = face ? thermal_face_temperature(Text, T[i], r) : NAN;
     }
 }
 

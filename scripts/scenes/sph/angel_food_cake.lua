@@ -33,11 +33,12 @@
 -- same by hand (§4.5: rho_f raised, mu_e and lambda lowered after baking);
 -- turning the pan over is what a baker does to stop it, not modelled.
 -- Measured with the batter's water (the default since #18 helper sphcrumb, WATER below; docs/validation.md "The
--- angel food cake's crumb holds its water"): relative volume at its highest in the oven and at t = 3.5 s 1.694 and
--- 1.548 at dx 3 mm, 1.743 and 1.593 at 2 mm; as the bake ends the crumb band is 102.9 degC (101.2 at 2 mm), browned
--- 0.0074 (0.0068) and holds 0.74 (0.71) of its water, under a top band at 142 degC (141) browned 0.34 (0.36) and an
--- outer surface browned 0.41 (0.43) (claim_sph_angel_cake_crumb_pale[_fine]; the outer particles read at their
--- face's temperature since helper sphsurface: 0.29 (0.34) and 0.34 (0.38) at their centres' before). The rest of
+-- angel food cake's crumb holds its water"): relative volume at its highest in the oven and at t = 3.5 s 1.688 and
+-- 1.563 at dx 3 mm, 1.742 and 1.581 at 2 mm; as the bake ends the crumb band is 102.6 degC (101.0 at 2 mm), browned
+-- 0.0058 (0.0073) and holds 0.78 (0.68) of its water, under a top band at 139 degC (142) browned 0.29 (0.36) and an
+-- outer surface browned 0.34 (0.38) (claim_sph_angel_cake_crumb_pale[_fine]; the outer particles read at their
+-- face's temperature, the oven's flux through the film since helper sphflux: before it 1.694 / 1.548, crumb 0.0074,
+-- top band 0.34, outer 0.41 at 3 mm). The rest of
 -- this note was measured without the water (--set water=false, the same bits as before it).
 -- Measured (2D, #18 helper angelsteam, docs/validation.md "The angel food cake
 -- rises on its steam"): relative volume (density slice) at its highest in the oven

@@ -15,9 +15,9 @@
 -- Measured with the dough's water (the default since #18 helper sphcrumb, WATER below) and the dough's own
 -- conduction, heat_int = S kappa / c = 0.283 (since helper deadcrust; docs/validation.md "The bread of the dead's
 -- crust is pale because its oven is"): at 1.2 s relative volume 1.038 (1.056 at dx 1.5 mm), ball top 56.5 mm
--- (57.0), one piece with no gap inside; its centre 82.6 degC (82.3), unbrowned, with all its water, under an outer
--- surface at 104.1 degC (107.5) browned 0.031 (0.043; read at its face's temperature since helper sphsurface, 0.023
--- (0.034) at the outer particles' centres), saturation 0.133 (0.067): a pale crust
+-- (57.0), one piece with no gap inside; its centre 82.2 degC (82.0), unbrowned, with all its water, under an outer
+-- surface at 101.9 degC (105.5) browned 0.026 (0.038), saturation 0.154 (0.080), read at its face's temperature
+-- with the oven's flux through the film (helper sphflux: before it, 104.1 (107.5) degC, 0.031 (0.043)): a pale crust
 -- (claim_sph_bread_of_the_dead_crumb_pale[_fine]), as a 1D slab of the same dough in the same oven
 -- (scripts/validation/dead_crust_slab.py: 105.5 degC, 0.03 at 30 min) is; golden (0.5,
 -- claim_sph_bread_of_the_dead_crust_browns, an expected failure) needs a hotter oven's flux than h = 30 at 180 degC.

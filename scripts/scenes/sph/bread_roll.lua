@@ -84,7 +84,11 @@
 -- the thesis's printed form, which at dx 2 mm is 2.55 in these units and went
 -- as dx^3, so the finer roll stayed cool.) The tray heats through the same
 -- coefficient. heat_int (0.2, kappa / c) is not rescaled: the same S on
--- bread's 0.51 W/(m K) would give 0.076.
+-- bread's 0.51 W/(m K) would give 0.076. Tried with the oven's flux through
+-- the film (helper sphflux): at 2 mm the roll rose 1.344x by 2 s and tore 2.1%
+-- of its envelope at 2.7 s (claim_sph_bread_roll_one_piece_whole_bake's bar
+-- 2%), where 0.2 stays whole to 3 s; so 0.2 stays (docs/validation.md "SPH's
+-- oven heat enters at the face").
 -- Scaling: Table 4.1's numbers are animation units. Taken as SI, the raw dough
 -- (0.1 Pa s, mu_e 1 Pa) is water and the roll splashes, and the baked end
 -- (5e3 Pa s) needs microsecond steps. So the viscosity is multiplied by
