@@ -108,8 +108,23 @@ static inline void expect_refused(const uint8_t *img, size_t n, void (*fn)(uint8
 #define V7_CLK_BYTES (4 + 3 * 8)
 static inline size_t clk_at(const uint8_t *b, size_t n) {
     const size_t at = find(b, n, "CLK ", 4);
-    CHECK(at != (size_t)-1 && at >= CK_HEADER_SIZE + V5_DEF_BYTES + V6_DEF_BYTES);
+    CHECK(at != (size_t)-1 && at >= CK_HEADER_SIZE + V5_DEF_BYTES + V6_DEF_BYTES); /* (and V15_DEF_BYTES in a 15) */
     return at;
+}
+
+/* Version 15 appended the oven's walls to DEF (oven.wall_temperature, oven.emissivity, oven.radiation_scale: three
+ * f64), its last fields, right before "CLK ": V15_DEF_BYTES. cut_v15_def cuts them out of an image stamped 15 and
+ * stamps it 14, the layout every older file's DEF has (an image stamped older is left alone, so a test that cut
+ * them first and then calls cut_v14_colliders, which calls this, does not cut twice). */
+#define V15_DEF_BYTES 24
+static inline void cut_v15_def(uint8_t *b, size_t *n) {
+    uint32_t v;
+    memcpy(&v, b + 8, 4);
+    if (v < 15) return;
+    const size_t at = clk_at(b, *n);
+    memmove(b + at - V15_DEF_BYTES, b + at, *n - at);
+    *n -= V15_DEF_BYTES;
+    memcpy(b + 8, &(uint32_t){14}, 4);
 }
 
 /* The core material parameters version 13 appended (the shares' amounts: gas_amount, gas_amount_2, params.h), and
@@ -125,6 +140,7 @@ static inline size_t clk_at(const uint8_t *b, size_t n) {
  * file older than 14 holds its colliders. Returns 0 when the section cannot be walked. */
 #define V14_COL_BYTES 24
 static inline int cut_v14_colliders(uint8_t *b, size_t *n) {
+    cut_v15_def(b, n); /* older than 14 is older than 15 */
     const size_t cols = find(b, *n, "COLS", 4);
     CHECK(cols != (size_t)-1);
     if (cols == (size_t)-1) return 0;

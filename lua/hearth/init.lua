@@ -501,13 +501,23 @@ function h.scene(o)
     for _, e in ipairs(scene_settings) do
       local v = ks[e.name]
       if v and not e.lua_only then -- blend is h.mix's
+        local x
         if e.kind == "choice" then
           local ok = false
           for _, c in ipairs(e.words) do ok = ok or v:lower() == c end
           if not ok then usage_error(("%s: valid: %s"):format(set_text(e.name, v), table.concat(e.words, ", ")), 2) end
-          oo[e.name] = v
+          x = v
         else
-          oo[e.name] = knob_number(e.name, v)
+          x = knob_number(e.name, v)
+        end
+        -- a dotted knob (oven.wall_temperature) is a key of its sub-table, which is copied, not written through
+        local top, sub = e.name:match("^([^.]+)%.(.+)$")
+        if top then
+          local t = {}
+          for k2, v2 in pairs(oo[top] or {}) do t[k2] = v2 end
+          t[sub], oo[top] = x, t
+        else
+          oo[e.name] = x
         end
       end
     end
@@ -523,7 +533,9 @@ function h.scene(o)
     local v
     if top then v = o[top] and o[top][sub] else v = o[e.name] end
     -- (oven = {saturation = ...} alone is humid air for evaporation, without heat)
-    if v == nil and e.nan_ok and top and o[top] ~= nil and not (top == "oven" and o.oven.saturation ~= nil) then
+    -- (and the oven's walls, oven.wall_temperature, are optional: unset, the oven does not radiate)
+    if v == nil and e.nan_ok and top and o[top] ~= nil
+      and not (top == "oven" and (o.oven.saturation ~= nil or sub ~= "temperature")) then
       -- a sub-table's unset-able setting is its reason to be there (oven = {...} needs its temperature)
       error(("h.scene: %s = nil; valid range %s (%s)"):format(e.name, range_text(e), e.help), 2)
     end

@@ -63,8 +63,9 @@
  * f64 self_max appended to CLK (the last step's bound on a lone particle, mpm_self.c): an older file has no amounts
  * (no limit), so nothing made, and self_max 0 (its first step unbounded, as it restored then); 14: each collider's
  * start_temperature, warm_time and t_added appended in COLS (a tray that warms, colliders.h), its temperature slot the
- * one it warms toward: an older file's colliders do not warm */
-#define CK_VERSION 14u
+ * one it warms toward: an older file's colliders do not warm; 15: the oven's wall temperature, emissivity and
+ * radiation_scale appended to DEF (fields/thermal.h): an older file's oven has no radiating walls */
+#define CK_VERSION 15u
 /// Oldest version read: a version 4 file is version 5's layout without the
 /// DEF fields version 5 appended.
 #define CK_VERSION_MIN 4u

@@ -78,7 +78,9 @@ void sph_heat_rates(hearth_scene *s) {
     /* Robin heat exchange (Ding et al. 2019 §6.6, the MPM solver's oven): beta
      * of the oven and of heated colliders, next to eq. 3.42's heat_ext */
     const double beta_oven = isfinite(Text) ? s->def.oven_beta : 0.0;
-    int robin = beta_oven > 0;
+    /* the oven's radiating walls (#18, thermal.h): eps sigma, 0 without them */
+    const double rad = thermal_oven_rad(&s->def), Tw = s->def.oven_wall_temperature;
+    int robin = beta_oven > 0 || rad > 0;
     for (int q = 0; q < s->ncol; q++) robin |= !isnan(s->cols[q].temperature) && s->cols[q].beta > 0;
     /* with latent_heat the oven's Robin heat is tallied (heat_ledger), as MPM's (thermal.c's oven_ledger) */
     const int ledger = s->def.latent_heat && robin;
@@ -172,7 +174,13 @@ void sph_heat_rates(hearth_scene *s) {
              * block's outline. */
             const double ci = dry ? ai : msi->core[CP_SPECIFIC_HEAT], Vr = m[i] / st->rho0[i];
             const double sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
-            double coef = beta_oven > 0 && st->outer[i] ? face * st->oshare[i] * beta_oven : 0.0, Tr = Text;
+            /* With radiating walls the outer particle's face also takes h_r (T_w - T_i), h_r = eps sigma (T_w^2 +
+             * T_i^2) (T_w + T_i) (thermal_radiative_h): q = eps sigma (T_w^4 - T_i^4) at T_i, the temperature the
+             * Robin flux reads here (SPH's flux is not moved in by the half layer, sph_surface_temperatures), so
+             * the walls see what the air sees; taken at the step's start, as the whole rate is (forward Euler). */
+            const double hr = rad > 0 && st->outer[i] ? thermal_radiative_h(rad, Tw, T[i]) : 0.0;
+            const double bo = beta_oven + hr, To = hr > 0 ? (beta_oven * Text + hr * Tw) / bo : Text;
+            double coef = bo > 0 && st->outer[i] ? face * st->oshare[i] * bo : 0.0, Tr = To;
             for (int q = 0; q < s->ncol; q++) {
                 const collider *cl = &s->cols[q];
                 if (isnan(cl->temperature) || !(cl->beta > 0) || !collider_near(cl, x + 3 * i)) continue;
@@ -183,7 +191,7 @@ void sph_heat_rates(hearth_scene *s) {
             }
             if (coef > 0 && ci > 0) dTi += coef * (Tr - T[i]) / (m[i] * ci);
             /* the oven's part (W), for latent_heat's ledger: coef (Tr - T) is the sum of its parts */
-            if (ledger) st->qo[i] = beta_oven > 0 && st->outer[i] ? face * st->oshare[i] * beta_oven * (Text - T[i]) : 0.0;
+            if (ledger) st->qo[i] = bo > 0 && st->outer[i] ? face * st->oshare[i] * bo * (To - T[i]) : 0.0;
         }
         st->dT[i] = dTi;
         if (water) st->dW[i] = dw; /* the water's pairs, which sph_water_rates completes */
@@ -230,6 +238,12 @@ double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin) {
     if (o->heat_ext > 0 && T) dt = fmin(dt, 0.25 * rhomin * hmin / o->h_factor / o->heat_ext * ext);
     if (T) { /* Robin: a face of V / spacing against the heat capacity rho c V */
         double beta = isnan(s->def.oven_temperature) ? 0 : s->def.oven_beta, bc = 0;
+        if (thermal_oven_radiates(&s->def)) { /* the walls' h_r at its largest (thermal.h): walls or the hottest other heat */
+            double hot = s->def.oven_temperature;
+            for (int k = 0; k < s->ncol; k++)
+                if (!isnan(s->cols[k].temperature) && s->cols[k].temperature > hot) hot = s->cols[k].temperature;
+            beta += thermal_radiative_h_max(thermal_oven_rad(&s->def), s->def.oven_wall_temperature, hot);
+        }
         for (int k = 0; k < s->ncol; k++)
             if (!isnan(s->cols[k].temperature) && s->cols[k].beta > bc) bc = s->cols[k].beta;
         beta += bc;
@@ -277,11 +291,12 @@ static void sph_surface_temperatures(hearth_scene *s) {
     const int n = c.n, dim = c.dim, *mat = c.mat;
     const double *x = c.x, *m = c.m, *T = c.T, Text = s->def.oven_temperature;
     const double beta = isfinite(Text) ? s->def.oven_beta : 0.0;
+    const double rad = thermal_oven_rad(&s->def), Tw = s->def.oven_wall_temperature;
     const int dry = sph_heat_dry(s);
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         st->ts[i] = NAN;
-        if (!st->outer[i] || !isfinite(Text) || !(o->heat_ext > 0 || beta > 0)) continue;
+        if (!st->outer[i] || !isfinite(Text) || !(o->heat_ext > 0 || beta > 0 || rad > 0)) continue;
         const double Vr = m[i] / st->rho0[i], sp = dim == 3 ? cbrt(Vr) : sqrt(Vr);
         int contact = 0;
         for (int q = 0; q < s->ncol && !contact; q++) { /* sph_heat_rates's two rules for a collider's outside */
@@ -293,7 +308,11 @@ static void sph_surface_temperatures(hearth_scene *s) {
         if (contact) continue;
         const double cw = s->mats.slot[mat[i]].core[CP_SPECIFIC_HEAT];
         const double h = o->heat_ext * cw + beta, kappa = o->heat_int * (dry ? sph_dry_k(s, i, mat[i]) : cw);
-        st->ts[i] = thermal_face_temperature(Text, T[i], 1.0 / thermal_film_den(h, 0.5 * sp, kappa));
+        /* with radiating walls the film carries h + h_r toward (h T_ext + h_r T_w) / (h + h_r), h_r at the face's
+         * own temperature (thermal_oven_exchange's fixed point); without, the convective closure in its bits */
+        double To, r;
+        thermal_oven_exchange(h, Text, rad, Tw, T[i], 0.5 * sp, kappa, &To, &r);
+        st->ts[i] = thermal_face_temperature(To, T[i], r);
     }
 }
 

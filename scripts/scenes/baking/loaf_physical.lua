@@ -40,7 +40,8 @@ print(("loaf_physical.lua: h.library.dough.bread, %s; bake %.0f min in %.1f s"):
 
 local TRAY, WIDTH, BODY, X0 = 0.02, 0.08, 0.03, 0.07 -- m: tray top, loaf width, straight part, loaf centre
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name = "loaf_physical",
-  oven = { temperature = oven.temperature, beta = oven.beta }, latent_heat = P.latent and oven.latent_heat,
+  oven = { temperature = oven.temperature, beta = oven.beta, wall_temperature = oven.wall_temperature,
+    emissivity = oven.emissivity, radiation_scale = oven.radiation_scale }, latent_heat = P.latent and oven.latent_heat,
   boiling_point = oven.boiling_point, browning = true, browning_scale = oven.browning_scale,
   gas_vent = oven.gas_vent, vent_porosity = oven.vent_porosity }
 h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta, mode = P.tray })
