@@ -501,24 +501,13 @@ function h.scene(o)
     for _, e in ipairs(scene_settings) do
       local v = ks[e.name]
       if v and not e.lua_only then -- blend is h.mix's
-        local x
         if e.kind == "choice" then
           local ok = false
           for _, c in ipairs(e.words) do ok = ok or v:lower() == c end
           if not ok then usage_error(("%s: valid: %s"):format(set_text(e.name, v), table.concat(e.words, ", ")), 2) end
-          x = v
-        else
-          x = knob_number(e.name, v)
-        end
-        -- a dotted knob (oven.wall_temperature) is a key of its sub-table, which is copied, not written through
-        local top, sub = e.name:match("^([^.]+)%.(.+)$")
-        if top then
-          local t = {}
-          for k2, v2 in pairs(oo[top] or {}) do t[k2] = v2 end
-          t[sub], oo[top] = x, t
-        else
-          oo[e.name] = x
-        end
+        else v = knob_number(e.name, v) end
+        local top, sub = e.name:match("^([^.]+)%.(.+)$") -- a dotted knob (oven.emissivity): a key of its table's copy
+        if top then local t = {}; for a, b in pairs(oo[top] or {}) do t[a] = b end; t[sub], oo[top] = v, t else oo[e.name] = v end
       end
     end
     if oo.dim == 3 and oo.box and not ((oo.box[2][3] or 0) > (oo.box[1][3] or 0)) then
@@ -532,10 +521,8 @@ function h.scene(o)
     local top, sub = e.name:match("^([^.]+)%.(.+)$")
     local v
     if top then v = o[top] and o[top][sub] else v = o[e.name] end
-    -- (oven = {saturation = ...} alone is humid air for evaporation, without heat)
-    -- (and the oven's walls, oven.wall_temperature, are optional: unset, the oven does not radiate)
-    if v == nil and e.nan_ok and top and o[top] ~= nil
-      and not (top == "oven" and (o.oven.saturation ~= nil or sub ~= "temperature")) then
+    -- (oven = {saturation = ...} alone is humid air for evaporation, without heat; the walls are optional)
+    if v == nil and e.nan_ok and top and o[top] ~= nil and not (top == "oven" and (o.oven.saturation or sub ~= "temperature")) then
       -- a sub-table's unset-able setting is its reason to be there (oven = {...} needs its temperature)
       error(("h.scene: %s = nil; valid range %s (%s)"):format(e.name, range_text(e), e.help), 2)
     end
