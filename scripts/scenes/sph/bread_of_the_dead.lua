@@ -109,7 +109,7 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solv
   sph = { heat_ext = P.h_c > 0 and S * P.h_c / BREAD.specific_heat or 16.7, heat_int = P.heat_int, av_beta = 1, xsph0 = P.xsph0, xsph_f = P.xsph_f, xsph_T0 = T0,
           xsph_Tf = 120,
           bubble_T0 = T0, tension = true, artificial_stress = P.artificial_stress },
-  oven = { temperature = P.oven, beta = 0, radiation_scale = S }, -- walls' radiation S times fast, as heat_ext (none unless set)
+  oven = { temperature = P.oven, beta = 0, radiation_scale = S }, -- walls (--set) radiate S times fast, as heat_ext
   browning = true, browning_scale = S, -- Zanoni et al. 1995 kinetics; 1.2 s stand for a 30-minute bake
   latent_heat = P.water or nil, boiling_point = P.water and 100 or nil }
 
