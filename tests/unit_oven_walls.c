@@ -345,6 +345,63 @@ TEST(oven_walls_off_same_bits) {
     }
 }
 
+/* The walls on two threads step as on one (find_boundary's fixed point runs in its parallel loop): MPM explicit
+ * heat every step and backward Euler, SPH; hashes of the state after 12 steps at 1 and 2 threads. Bar: equal. */
+TEST(oven_walls_threads_same_bits) {
+    uint64_t hash[2] = {0, 0};
+    for (int t = 1; t <= 2; t++) {
+        hearth_set_threads(t);
+        for (int run = 0; run < 3; run++) {
+            hearth_scene_def d;
+            if (run < 2) {
+                d = hearth_default_scene_def();
+                d.dx = 1.0 / 96; /* enough particles that the step really runs on two threads */
+                d.heat_implicit = run == 1, d.field_steps = 1, d.dt_max = 2e-4;
+            } else {
+                const double lo[3] = {0, 0, 0}, hi[3] = {0.08, 0.05, 0};
+                d = sph_def(2, 0.0005, lo, hi);
+                d.sph.heat_int = 1;
+            }
+            d.gravity[1] = 0;
+            d.oven_temperature = 180, d.oven_beta = 30, d.oven_wall_temperature = 250, d.oven_emissivity = 0.9;
+            d.oven_radiation_scale = 1e3; /* fast enough that 12 steps move the surface */
+            hearth_error err;
+            hearth_scene *s = hearth_scene_create(&d, &err);
+            CHECK(s != NULL);
+            if (!s) return;
+            int m;
+            if (run < 2) {
+                const char *nm[] = {"E", "conductivity", "specific_heat"};
+                const double nv[] = {2e4, 0.4, 1000};
+                m = hearth_scene_add_material(s, "elastic", nm, nv, 3, &err);
+                const double c[3] = {0.5, 0.3, 0};
+                hearth_shape *ball = hearth_shape_sphere(c, 0.2);
+                hearth_body_def bd = hearth_default_body_def();
+                bd.shape = ball, bd.material = m, bd.temperature = 20, bd.fixed = 1;
+                CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+                hearth_shape_free(ball);
+            } else {
+                const char *n[] = {"density", "bulk", "viscosity", "specific_heat"};
+                const double v[] = {1000, 1e4, 1.0, 1000};
+                m = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
+                const double blo[3] = {0.01, 0.01, -0.5}, bhi[3] = {0.07, 0.04, 0.5};
+                CHECK(m >= 0 && sph_box(s, m, blo, bhi, 1, 20) >= 0);
+            }
+            CHECK(s->ps.n >= SCENE_PARALLEL_MIN);
+            CHECK(hearth_scene_step(s, 12, &err) == HEARTH_OK);
+            hash[t - 1] ^= hearth_scene_hash(s) * (uint64_t)(2 * run + 31);
+            if (t == 2) printf("  run %d (%s): %d particles, a surface particle at %.4f degC\n", run,
+                               run == 0 ? "MPM explicit" : run == 1 ? "MPM implicit" : "SPH", s->ps.n,
+                               pcold(&s->ps, PC_TEMPERATURE)[0]);
+            hearth_scene_destroy(s);
+        }
+    }
+    hearth_set_threads(1);
+    printf("hashes: 1 thread %016llx, 2 threads %016llx (bar: equal)\n", (unsigned long long)hash[0],
+           (unsigned long long)hash[1]);
+    CHECK(hash[0] == hash[1]);
+}
+
 /* Bad walls are refused, naming the setting and its range: emissivity below 0, above 1 or NaN; walls below
  * absolute zero; radiation_scale 0. */
 TEST(oven_walls_refusals) {
@@ -367,4 +424,5 @@ TEST(oven_walls_refusals) {
 
 TEST_MAIN(T(oven_exchange_closure_exact), T(mpm_oven_walls_heat_lumped_disc_as_closed_form),
           T(mpm_oven_walls_disc_converges_to_radial_reference),
-          T(sph_oven_walls_heat_outer_particles_as_closed_form), T(oven_walls_off_same_bits), T(oven_walls_refusals))
+          T(sph_oven_walls_heat_outer_particles_as_closed_form), T(oven_walls_off_same_bits), T(oven_walls_threads_same_bits),
+          T(oven_walls_refusals))
