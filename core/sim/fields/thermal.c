@@ -15,7 +15,9 @@
  * S beta (theta_out - theta) (the printed signs in §4/§6.3 are ambiguous; the
  * analytic slab test decides). Boundary particles and their areas S come from
  * boundary.c (§6.6), with the depth of their temperature sample: the oven's
- * coefficient is beta / (1 + beta d / kappa) (find_boundary).
+ * coefficient is beta / (1 + beta d / kappa) (find_boundary). An oven with radiating walls (#18: oven.wall_temperature,
+ * oven.emissivity) adds eps sigma (T_w^4 - T_s^4) at the face T_s of that closure, as one coefficient and outside
+ * temperature with the air's (thermal.h's thermal_oven_exchange; docs/validation.md, "An oven's hot walls").
  * Heated colliders act through surface quadrature points: each particle within
  * 2 dx of the collider carries V_p delta(sdf) of contact area (delta a hat
  * whose integral is one, so the band sums to the contact area), and its point

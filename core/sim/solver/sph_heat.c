@@ -1,6 +1,7 @@
 /* sph_heat.c: the SPH solver's heat rates (Rodriguez-Arenas 2011 eq. 3.42,
  * 3.45-3.46) and the oven's Robin flux with heated colliders' contact beta
- * (as MPM's, Ding et al. 2019 §6.6), and the limits they put on dt.
+ * (as MPM's, Ding et al. 2019 §6.6), the oven's radiating walls (#18, thermal.h's thermal_oven_exchange), and the
+ * limits they put on dt.
  * phase_forces (sph.c) calls sph_heat_rates after the viscous moments;
  * sph_fields_advance moves the temperatures by st->dT, and the water with
  * them (sph_water.c). */
