@@ -58,7 +58,7 @@
  * (s - s_amb) S, g the vapour factor's bound (water_latent_stiffness, 14.1 at
  * a 100 degC boiling point), so the explicit step is limited as for a Robin
  * coefficient L e g (s - s_amb), with the largest excess the particles hold
- * when the step starts (thermal_dt_limit). With the switch on, oven_ledger tallies the oven's Robin
+ * when the step starts (thermal_dt_limit). With the switch on, oven_ledger (thermal_ledger.c) tallies the oven's Robin
  * heat so that heat in = sensible heat + L x water lost can be checked
  * (`latent_heat_energy_balance`: to 1e-13; a particle that reaches water.c's
  * saturation floor keeps water whose heat was taken, so the books then differ
@@ -347,6 +347,7 @@ static double field_at(const grid *g, const double x[3], int ch, int *m) {
     for (int j = 0; j < *m; j++) v += w[j] * node[j][ch * NPB + l[j]];
     return v;
 }
+double thermal_field_at(const hearth_scene *s, const double x[3], int ch, int *m) { return field_at(&s->g, x, ch, m); }
 
 double thermal_surface_temperature(const hearth_scene *s, int i, double *sample) {
     const particles *ps = &s->ps;
@@ -734,52 +735,6 @@ static void apply(hearth_scene *s, int in, int out) {
     transport_apply(s, &tp);
 }
 
-/* The heat the oven's Robin boundary put in this step, dt sum_p S_p beta_p
- * (theta_out - theta_p), theta_p the nodes' temperature at the particle that
- * the update used: the step start's (forward Euler) or the solution's
- * (backward). Only for the latent_heat ledger; serial, so deterministic. */
-static void oven_ledger(hearth_scene *s, double dt) {
-    s->heat.step_oven_heat = 0;
-    if (!s->def.latent_heat || isnan(s->def.oven_temperature)) return;
-    const grid *g = &s->g;
-    const int ch = s->def.heat_implicit ? CH_T : CH_T0;
-    const double *X = pcold(&s->ps, PC_X), *coef = s->heat.bnd_coef;
-    const int *flags = pcoli(&s->ps, PC_FLAGS);
-    double q = 0;
-    for (int i = 0; i < s->ps.n; i++) {
-        if (!(flags[i] & PF_BOUNDARY) || !(coef[i] > 0)) continue; /* a collider's contact alone leaves coef 0 */
-        int m;
-        q += coef[i] * (s->heat.bnd_temp[i] - field_at(g, X + 3 * i, ch, &m));
-    }
-    mpm_ranks_fields_reduce(s, &q, 1, NULL, 0); /* MPI slabs: every rank's particles, in rank order */
-    s->heat.step_oven_heat = dt * q;
-}
-
-/* The heat each drawing sheet's contact passed to the food this field step (colliders.h: its own balance takes it
- * from the sheet): dt sum over its Robin points of beta S (T_c - theta(x_s)), theta the nodes' field the update used
- * (the step start's for forward Euler, the solution's for backward, as oven_ledger; a dried face's reading where
- * dried_face set one), which is what heat_contact_apply scattered onto the nodes (its weights sum to one). Serial in
- * the points' order; MPI slabs sum each sheet's over the ranks. */
-static void sheet_ledger(hearth_scene *s, double dt) {
-    int any = 0;
-    for (int c = 0; c < s->ncol; c++)
-        if (collider_draws(&s->cols[c])) s->cols[c].step_heat = s->cols[c].step_ret = 0, any = 1;
-    if (!any) return;
-    const grid *g = &s->g;
-    const int ch = s->def.heat_implicit ? CH_T : CH_T0;
-    for (int k = 0; k < s->heat.nct; k++) {
-        const double *ct = s->heat.ct + THERMAL_CT * k;
-        collider *col = &s->cols[(int)ct[10]];
-        if (ct[8] != 0 || !collider_draws(col)) continue;
-        int m = 1;
-        const double v = isnan(ct[9]) ? field_at(g, ct, ch, &m) : ct[9];
-        if (m == 0) continue; /* no node with heat capacity: heat_contact_apply passed nothing */
-        col->step_heat += dt * ct[6] * (ct[7] - v);
-    }
-    for (int c = 0; c < s->ncol; c++)
-        if (collider_draws(&s->cols[c])) mpm_ranks_fields_reduce(s, &s->cols[c].step_heat, 1, NULL, 0);
-}
-
 void thermal_sheet_return(hearth_scene *s, int i, double heat) {
     const double *x = pcold(&s->ps, PC_X) + 3 * i;
     for (int c = 0; c < s->ncol; c++) {
@@ -816,8 +771,7 @@ hearth_status thermal_finish(hearth_scene *s, double dt, hearth_error *err) {
     if (!s->def.heat_implicit && thermal_oven_on(&s->def)) {
         small_nodes_explicit_step(s, dt); /* forward Euler, the surface's small nodes merged */
         held_settle(s);
-        oven_ledger(s, dt);
-        sheet_ledger(s, dt);
+        thermal_step_books(s, dt);
         return HEARTH_OK;
     }
     if (!s->def.heat_implicit) { /* forward Euler (gamma = 0) */
@@ -830,8 +784,7 @@ hearth_status thermal_finish(hearth_scene *s, double dt, hearth_error *err) {
             }
         }
         held_settle(s);
-        oven_ledger(s, dt);
-        sheet_ledger(s, dt);
+        thermal_step_books(s, dt);
         return HEARTH_OK;
     }
     /* backward Euler (gamma = 1): (C/dt + L) x = C/dt theta^n + b, solved by
@@ -916,7 +869,6 @@ hearth_status thermal_finish(hearth_scene *s, double dt, hearth_error *err) {
         s->heat.cg_iterations = it + 1;
     }
     held_settle(s);
-    oven_ledger(s, dt);
-    sheet_ledger(s, dt);
+    thermal_step_books(s, dt);
     return HEARTH_OK;
 }

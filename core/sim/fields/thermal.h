@@ -169,6 +169,11 @@ void thermal_sheet_return(struct hearth_scene *s, int i, double heat);
 void thermal_sheet_returns_done(struct hearth_scene *s);
 /// A step stood (the guard kept it): its oven heat joins the ledger.
 void thermal_step_stands(thermal_state *h);
+/// After a field step's update (thermal_finish): the oven's Robin heat for latent_heat's ledger and each drawing
+/// sheet's draw (thermal_ledger.c), from the nodes' field the update read.
+void thermal_step_books(struct hearth_scene *s, double dt);
+/// The nodes' channel ch at x (the B-spline field of the contact stencil, 0 where no node has storage); *m the nodes.
+double thermal_field_at(const struct hearth_scene *s, const double x[3], int ch, int *m);
 /// Total heat energy sum m alpha (theta + 273.15) of the particles (J).
 double thermal_energy(const struct hearth_scene *s);
 /// G2P's temperature update (Ding et al. eq. 21): FLIP's T0 + dT, blended toward PIC's Tn by the scene's

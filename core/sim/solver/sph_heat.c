@@ -138,7 +138,7 @@ void sph_heat_rates(hearth_scene *s) {
     const double rad = thermal_oven_rad(&s->def), Tw = s->def.oven_wall_temperature;
     int robin = beta_oven > 0 || rad > 0;
     for (int q = 0; q < s->ncol; q++) robin |= !isnan(s->cols[q].temperature) && s->cols[q].beta > 0;
-    /* with latent_heat the oven's Robin heat is tallied (heat_ledger), as MPM's (thermal.c's oven_ledger) */
+    /* with latent_heat the oven's Robin heat is tallied (heat_ledger), as MPM's (thermal_ledger.c's oven_ledger) */
     const int ledger = s->def.latent_heat && robin;
     if (s->def.latent_heat && !robin)
         for (int i = 0; i < n; i++) st->qo[i] = 0;
