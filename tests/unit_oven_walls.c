@@ -237,7 +237,8 @@ TEST(mpm_oven_walls_disc_converges_to_radial_reference) {
  * tau ~ 34 ms, a few hundred of the block's steps. Read: the outer particles of the top face away from its corners
  * (8 mm and more from them), where the closed form has risen 30%, 60% and 80% of the way; interior particles take
  * nothing. Bars: every reading within 0.5% of T_w - T_0 (forward Euler at the step the block takes, h_r at each
- * step's start), the interior at T_0 exactly. */
+ * step's start), the interior at T_0 exactly. Without conduction the film's share is 1 (sph_film_share: the face is
+ * the particle), so the flux through the film (the merge onto sphflux's main) reads this closed form as before. */
 TEST(sph_oven_walls_heat_outer_particles_as_closed_form) {
     const double dx = 0.001, lo[3] = {0, 0, 0}, hi[3] = {0.04, 0.03, 0}, rho = 1000, c = 1, eps = 0.9, Tw = 250;
     const double T0 = 20;
@@ -286,6 +287,70 @@ TEST(sph_oven_walls_heat_outer_particles_as_closed_form) {
     printf("SPH outer particles: worst error %.3e of T_w - T_0 (bar 5e-3); interior particles off T_0: %d (bar 0); "
            "last dt %.3e s\n", worst, bad_interior, s->dt_last);
     CHECK(nread > 0 && worst < 5e-3 && bad_interior == 0);
+    hearth_scene_destroy(s);
+}
+
+/* SPH with conduction: the walls' flux crosses the half spacing's film as the air's does (helper ovenmerge: one rule in
+ * sph_film_share, B = beta + h_r toward T_o, h_r at the face). A pinned 2D block at a uniform 20 degC (so its first
+ * step conducts nothing inside: every pair's difference is 0), air 200 degC beta 30, walls 250 degC eps 0.9,
+ * kappa = k_h,int c = 0.1 W/(m K), no eq. 3.42 term; dx 1 mm, rho 1000, c 1000. The face of a straight top's middle
+ * particle (m = rho dx^2, face dx, d = dx / 2 from face to centre) balances the air and the walls against the
+ * half-layer's conduction,
+ *   beta (T_air - T_s) + eps sigma (T_w^4 - T_s^4) = kappa (T_s - T_i) / d,
+ * solved here by bisection (its left side falls in T_s, its right rises), so the step takes
+ *   T_1 = T_i + dt kappa (T_s - T_i) / (d rho c dx)
+ * and the face temperature browning reads at the step's end is the same balance's root with T_1 for T_i. Bars (set at
+ * 16:11 UTC, before the first run): both within 1e-6 (relative to the rise; in K for the face). For contrast the
+ * rule the merge replaced (the air through the film, the walls' h_r (T_w - T_i) at the particle) is printed. */
+static double walls_face_root(double beta, double Ta, double rad, double Tw, double Ti, double kd) {
+    double lo = Ti, hi = fmax(Ta, Tw);
+    for (int k = 0; k < 200; k++) {
+        const double mid = 0.5 * (lo + hi);
+        const double f = beta * (Ta - mid) + rad * (pow(Tw + K0, 4) - pow(mid + K0, 4)) - kd * (mid - Ti);
+        if (f > 0) lo = mid; else hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+TEST(sph_oven_walls_flux_crosses_film_as_closed_form) {
+    const double dx = 0.001, lo[3] = {0, 0, 0}, hi[3] = {0.04, 0.03, 0}, rho = 1000, c = 1000, kappa = 0.1;
+    const double T0 = 20, Ta = 200, beta = 30, Tw = 250, eps = 0.9, d = 0.5 * dx;
+    hearth_scene_def def = sph_def(2, dx, lo, hi);
+    def.gravity[1] = 0;
+    def.sph.heat_ext = 0;
+    def.sph.heat_int = kappa / c;
+    def.oven_temperature = Ta, def.oven_beta = beta;
+    def.oven_wall_temperature = Tw, def.oven_emissivity = eps;
+    def.browning = 1; /* the face temperatures are made for browning alone */
+    hearth_scene *s = hearth_scene_create(&def, NULL);
+    CHECK(s != NULL);
+    if (!s) return;
+    const char *n[] = {"density", "bulk", "viscosity", "specific_heat"};
+    const double v[] = {rho, 1e4, 1.0, c};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
+    const double blo[3] = {0.01, 0.01, -0.5}, bhi[3] = {0.03, 0.02, 0.5};
+    CHECK(m >= 0 && sph_box(s, m, blo, bhi, 1, T0) >= 0);
+    CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+    const double dt = s->dt_last, rad = eps * SIGMA;
+    const double Ts = walls_face_root(beta, Ta, rad, Tw, T0, kappa / d);
+    const double want = dt * kappa * (Ts - T0) / (d * rho * c * dx);
+    /* the replaced rule: the air's beta through the film, the walls' h_r (T_w - T_i) at the particle */
+    const double a = Tw + K0, t0 = T0 + K0, hr0 = rad * (a * a + t0 * t0) * (a + t0);
+    const double old = dt * (beta / (1 + beta * d / kappa) * (Ta - T0) + hr0 * (Tw - T0)) / (rho * c * dx);
+    const double *outer = sph_particle_values(s, "outer"), *ts = sph_particle_values(s, "surface_temperature");
+    const double *T = pcold(&s->ps, PC_TEMPERATURE), *x = pcold(&s->ps, PC_X);
+    double worst = 0, worst_face = 0, got = 0;
+    int cnt = 0;
+    for (int i = 0; outer && ts && i < s->ps.n; i++) {
+        if (!(outer[i] > 0.5) || !(x[3 * i + 1] > 0.019 && x[3 * i] > 0.018 && x[3 * i] < 0.022)) continue;
+        const double face = walls_face_root(beta, Ta, rad, Tw, T[i], kappa / d);
+        worst = fmax(worst, fabs((T[i] - T0) - want) / want), worst_face = fmax(worst_face, fabs(ts[i] - face));
+        got = T[i] - T0, cnt++;
+    }
+    printf("dt %.4e s: %d top-face particles rose %.9e K, closed form %.9e K (film r = %.4f; the replaced rule %.9e K, "
+           "%+.2f%%): worst %.2e of the rise (bar 1e-6); face temperatures within %.2e K of the balance (bar 1e-6)\n",
+           dt, cnt, got, want, 1 / (1 + (beta + hr0) * d / kappa), old, 100 * (old - want) / want, worst, worst_face);
+    CHECK(cnt > 0 && worst < 1e-6 && worst_face < 1e-6);
     hearth_scene_destroy(s);
 }
 
@@ -481,5 +546,6 @@ TEST(oven_walls_refusals) {
 
 TEST_MAIN(T(oven_exchange_closure_exact), T(mpm_oven_walls_heat_lumped_disc_as_closed_form),
           T(mpm_oven_walls_disc_converges_to_radial_reference),
-          T(sph_oven_walls_heat_outer_particles_as_closed_form), T(oven_walls_off_same_bits), T(oven_walls_threads_same_bits),
+          T(sph_oven_walls_heat_outer_particles_as_closed_form), T(sph_oven_walls_flux_crosses_film_as_closed_form),
+          T(oven_walls_off_same_bits), T(oven_walls_threads_same_bits),
           T(oven_walls_energy_balance), T(oven_walls_refusals))
