@@ -108,8 +108,23 @@ static inline void expect_refused(const uint8_t *img, size_t n, void (*fn)(uint8
 #define V7_CLK_BYTES (4 + 3 * 8)
 static inline size_t clk_at(const uint8_t *b, size_t n) {
     const size_t at = find(b, n, "CLK ", 4);
-    CHECK(at != (size_t)-1 && at >= CK_HEADER_SIZE + V5_DEF_BYTES + V6_DEF_BYTES);
+    CHECK(at != (size_t)-1 && at >= CK_HEADER_SIZE + V5_DEF_BYTES + V6_DEF_BYTES); /* (and V16_DEF_BYTES in a 16) */
     return at;
+}
+
+/* Version 16 appended the oven's walls to DEF (oven.wall_temperature, oven.emissivity, oven.radiation_scale: three
+ * f64), its last fields, right before "CLK ": V16_DEF_BYTES. cut_v16_def cuts them out of an image stamped 16 and
+ * stamps it 15, the layout every older file's DEF has (an image stamped older is left alone, so a test that cut
+ * them first and then calls cut_v15_colliders or cut_v14_colliders, which call this, does not cut twice). */
+#define V16_DEF_BYTES 24
+static inline void cut_v16_def(uint8_t *b, size_t *n) {
+    uint32_t v;
+    memcpy(&v, b + 8, 4);
+    if (v < 16) return;
+    const size_t at = clk_at(b, *n);
+    memmove(b + at - V16_DEF_BYTES, b + at, *n - at);
+    *n -= V16_DEF_BYTES;
+    memcpy(b + 8, &(uint32_t){15}, 4);
 }
 
 /* The core material parameters version 13 appended (the shares' amounts: gas_amount, gas_amount_2, params.h), and
@@ -124,10 +139,12 @@ static inline size_t clk_at(const uint8_t *b, size_t n) {
  * 216 bytes of contact, pose, heat and water before them, and version 15's after those (heat_capacity, area and the
  * sheet's six state numbers): cut_colliders_after(b, n, keep, len) cuts len bytes a collider from 216 + keep on.
  * cut_v15_colliders makes a version 14 file's colliders (*n shrinks by 64 a collider), cut_v14_colliders a file's
- * older than 14 (by 24 + 64). Return 0 when the section cannot be walked. */
+ * older than 14 (by 24 + 64); both cut version 16's DEF tail first (cut_v16_def, V16_DEF_BYTES more), so either
+ * gives the whole of an older file's layout. Return 0 when the section cannot be walked. */
 #define V14_COL_BYTES 24
 #define V15_COL_BYTES 64
 static inline int cut_colliders_after(uint8_t *b, size_t *n, size_t keep, size_t len) {
+    cut_v16_def(b, n); /* a file older than 15 is older than 16: its DEF has no walls */
     const size_t cols = find(b, *n, "COLS", 4);
     CHECK(cols != (size_t)-1);
     if (cols == (size_t)-1) return 0;

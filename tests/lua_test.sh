@@ -457,6 +457,17 @@ lua_settings_schema)
     out=$("$hearth" run "$scenes/settings_schema.lua" --quiet 2>&1) || fail "settings_schema.lua: $out"
     echo "$out" | grep -q "settings ok" || fail "settings_schema.lua did not finish: $out"
     ;;
+oven_walls_set_knobs)
+    # --set oven.wall_temperature / oven.emissivity reach a scene's oven table (a dotted knob is a key of its
+    # sub-table), keep the scene's own temperature and beta, and are refused out of range naming the setting
+    out=$("$hearth" run "$scenes/oven_walls_knob.lua" --quiet --set oven.wall_temperature=250 --set oven.emissivity=0.9 2>&1) \
+        || fail "oven_walls_knob.lua: $out"
+    echo "$out" | grep -q "oven 180 30 walls 250 0.9 scale 1" || fail "the walls did not reach the oven: $out"
+    out=$("$hearth" run "$scenes/oven_walls_knob.lua" --quiet 2>&1) || fail "oven_walls_knob.lua: $out"
+    echo "$out" | grep -q "oven 180 30 walls nil 0 scale 1" || fail "an oven without walls: $out"
+    out=$("$hearth" run "$scenes/oven_walls_knob.lua" --quiet --set oven.emissivity=2 2>&1) && fail "emissivity 2 accepted: $out"
+    echo "$out" | grep -q "oven.emissivity" || fail "the refusal does not name oven.emissivity: $out"
+    ;;
 lua_library)
     out=$("$hearth" run "$scenes/library.lua" --quiet 2>&1) || fail "library.lua: $out"
     echo "$out" | grep -q "library ok" || fail "library.lua did not finish: $out"

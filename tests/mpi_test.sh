@@ -155,6 +155,17 @@ mpi_heat_matches_one_rank)
         on_slabs 100
     done
     ;;
+mpi_oven_walls_matches_one_rank)
+    # heat_traffic.lua's bar in an oven whose walls radiate (250 degC, eps 0.9; fields/thermal.h): find_boundary's
+    # face closure reads the nodes' temperature at each air-surface particle, on slabs the halo's (#18, helper ovenwall);
+    # field_steps=1: at the automatic field clock the explicit run's 100 steps take no heat update (the same bits with
+    # and without walls, seen at the first run)
+    for heat in explicit implicit; do
+        against_one heat_traffic.lua 100 --set heat=$heat --set state=1 --set field_steps=1 --set oven.wall_temperature=250 \
+            --set oven.emissivity=0.9
+        on_slabs 100
+    done
+    ;;
 mpi_dough_boils_matches_one_rank)
     # the dough on a hot tray (250 degC through beta 1e5): its bottom rows reach 100 degC from step ~60 (2D: 2
     # particles at step 60, 39 at 100, 54 at 200; ~120 when the dough started 2 mm over the tray) and boil

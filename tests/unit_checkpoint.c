@@ -414,7 +414,7 @@ TEST(checkpoint_alloc_failures) {
 }
 
 static void set_before_clk(uint8_t *b, size_t n, size_t back, const void *v, size_t len) {
-    memcpy(b + clk_at(b, n) - V6_DEF_BYTES - back, v, len);
+    memcpy(b + clk_at(b, n) - V16_DEF_BYTES - V6_DEF_BYTES - back, v, len);
 }
 static void damping_nan(uint8_t *b, size_t n) { set_before_clk(b, n, V5_DEF_BYTES, &(double){NAN}, 8); }
 static void boiling_cold(uint8_t *b, size_t n) { set_before_clk(b, n, V5_DEF_BYTES - 8, &(double){-300}, 8); }
@@ -424,6 +424,13 @@ static void gas_vent_neg(uint8_t *b, size_t n) { set_before_clk(b, n, 16, &(doub
 static void vent_porosity_15(uint8_t *b, size_t n) { set_before_clk(b, n, 8, &(double){1.5}, 8); }
 static void vent_porosity_0(uint8_t *b, size_t n) { set_before_clk(b, n, 8, &(double){0}, 8); }
 static void vent_porosity_inf(uint8_t *b, size_t n) { set_before_clk(b, n, 8, &(double){INFINITY}, 8); }
+/* version 16's fields, the last of DEF (checkpoint_fixture.h): walls, emissivity, radiation_scale */
+static void set_v16(uint8_t *b, size_t n, int k, double v) { memcpy(b + clk_at(b, n) - V16_DEF_BYTES + 8 * k, &v, 8); }
+static void walls_cold(uint8_t *b, size_t n) { set_v16(b, n, 0, -300); }
+static void walls_inf(uint8_t *b, size_t n) { set_v16(b, n, 0, INFINITY); }
+static void emissivity_15(uint8_t *b, size_t n) { set_v16(b, n, 1, 1.5); }
+static void emissivity_nan(uint8_t *b, size_t n) { set_v16(b, n, 1, NAN); }
+static void radiation_scale_0(uint8_t *b, size_t n) { set_v16(b, n, 2, 0); }
 
 /* A hostile version 5 file: each DEF field version 5 added is checked on its
  * own, the message naming the field, the value read and the valid range. */
@@ -441,6 +448,12 @@ TEST(checkpoint_v5_def_fields_refused) {
     expect_refused(img, n, vent_porosity_15, "vent_porosity = 1.5 is outside its valid range (0, 1]");
     expect_refused(img, n, vent_porosity_0, "vent_porosity = 0 is outside its valid range (0, 1]");
     expect_refused(img, n, vent_porosity_inf, "vent_porosity = inf is outside its valid range (0, 1]");
+    /* and version 16's oven walls */
+    expect_refused(img, n, walls_cold, "oven.wall_temperature = -300 degC is outside its valid range [-273.15, 5000]");
+    expect_refused(img, n, walls_inf, "oven.wall_temperature = inf degC is outside its valid range [-273.15, 5000]");
+    expect_refused(img, n, emissivity_15, "oven.emissivity = 1.5 is outside its valid range [0, 1]");
+    expect_refused(img, n, emissivity_nan, "oven.emissivity = nan is outside its valid range [0, 1]");
+    expect_refused(img, n, radiation_scale_0, "oven.radiation_scale = 0 is outside its valid range (0, 1e+09]");
     free(img);
     hearth_scene_destroy(s);
 }

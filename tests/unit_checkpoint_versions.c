@@ -80,7 +80,8 @@ TEST(checkpoint_v4_reads_at_defaults) {
     uint8_t *img = save_image(s, &n);
     CHECK(img != NULL);
     if (!img || !s) return;
-    /* the DEF fields 5 and 6 appended and the clocks' version 6 and 7 tails cut out */
+    /* version 16's DEF tail, then the DEF fields 5 and 6 appended and the clocks' version 6 and 7 tails cut out */
+    cut_v16_def(img, &n);
     const size_t clk = clk_at(img, n), cut = V5_DEF_BYTES + V6_DEF_BYTES, tail = clk + 4 + V5_CLK_BYTES;
     const size_t vt = V6_CLK_BYTES + V7_CLK_BYTES;
     size_t m = n - cut - vt;
@@ -122,7 +123,7 @@ TEST(checkpoint_v4_reads_at_defaults) {
     ck_reseal(b, m);
     CHECK(hearth_scene_load_mem(b, m, "v3.ck", &err) == NULL);
     printf("  %s\n", err.msg);
-    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 15 only");
+    CHECK_STR_CONTAINS(err.msg, "checkpoint version 3; this hearth reads versions 4 to 16 only");
     free(b);
     free(img);
     hearth_scene_destroy(s);
@@ -572,7 +573,7 @@ TEST(checkpoint_v13_colliders_do_not_warm) {
     CHECK(img != NULL);
     if (!img || !s) return;
     m = n;
-    CHECK(cut_v14_colliders(img, &m) && m == n - 2 * (V14_COL_BYTES + V15_COL_BYTES));
+    CHECK(cut_v14_colliders(img, &m) && m == n - V16_DEF_BYTES - 2 * (V14_COL_BYTES + V15_COL_BYTES));
     const uint32_t v13 = 13;
     memcpy(img + 8, &v13, 4);
     ck_reseal(img, m);
@@ -656,7 +657,7 @@ TEST(checkpoint_v14_sheets_draw_nothing) {
     uint8_t *img = save_image(s, &n);
     CHECK(img != NULL);
     if (!img) return;
-    hearth_scene *r = hearth_scene_load_mem(img, n, "v15.ck", &err);
+    hearth_scene *r = hearth_scene_load_mem(img, n, "v16.ck", &err);
     CHECK(r != NULL);
     if (r) {
         CHECK(hearth_scene_set_dt_limits(r, 0.5, 0.5, &err) == HEARTH_OK);
@@ -669,7 +670,7 @@ TEST(checkpoint_v14_sheets_draw_nothing) {
         hearth_scene_destroy(r);
     }
     m = n;
-    CHECK(cut_v15_colliders(img, &m) && m == n - V15_COL_BYTES);
+    CHECK(cut_v15_colliders(img, &m) && m == n - V16_DEF_BYTES - V15_COL_BYTES);
     const uint32_t v14 = 14;
     memcpy(img + 8, &v14, 4);
     ck_reseal(img, m);
@@ -688,8 +689,50 @@ TEST(checkpoint_v14_sheets_draw_nothing) {
     hearth_scene_destroy(s);
 }
 
+/* Version 16 appended the oven's radiating walls to DEF: they are kept, and a restore continues with the same bits
+ * (continues_as); a version 15 copy of the same save (its DEF without them) reads an oven without walls: no wall
+ * temperature, emissivity 0, radiation_scale 1, as every file before 16 was written. */
+TEST(checkpoint_v16_keeps_oven_walls) {
+    hearth_scene *s = small_scene();
+    CHECK(s != NULL);
+    if (!s) return;
+    s->def.oven_wall_temperature = 250, s->def.oven_emissivity = 0.9, s->def.oven_radiation_scale = 2;
+    hearth_error err;
+    CHECK(hearth_scene_step(s, 2, &err) == HEARTH_OK);
+    size_t n;
+    uint8_t *img = save_image(s, &n);
+    CHECK(img != NULL);
+    if (!img) return;
+    hearth_scene *r = hearth_scene_load_mem(img, n, "v16.ck", &err);
+    if (!r) printf("  v16 refused: %s\n", err.msg);
+    CHECK(r != NULL);
+    if (r) {
+        printf("  v16: walls %g degC, emissivity %g, radiation_scale %g restored\n", r->def.oven_wall_temperature,
+               r->def.oven_emissivity, r->def.oven_radiation_scale);
+        CHECK(r->def.oven_wall_temperature == 250 && r->def.oven_emissivity == 0.9 && r->def.oven_radiation_scale == 2);
+        continues_as(s, r, "restored from version 16");
+        hearth_scene_destroy(r);
+    }
+    size_t m = n;
+    cut_v16_def(img, &m);
+    CHECK(m == n - V16_DEF_BYTES);
+    ck_reseal(img, m);
+    r = hearth_scene_load_mem(img, m, "v16.ck", &err);
+    if (!r) printf("  v15 refused: %s\n", err.msg);
+    CHECK(r != NULL);
+    if (r) {
+        printf("  v15 copy: walls %g, emissivity %g, radiation_scale %g\n", r->def.oven_wall_temperature,
+               r->def.oven_emissivity, r->def.oven_radiation_scale);
+        CHECK(isnan(r->def.oven_wall_temperature) && r->def.oven_emissivity == 0 && r->def.oven_radiation_scale == 1);
+        hearth_scene_destroy(r);
+    }
+    free(img);
+    hearth_scene_destroy(s);
+}
+
 TEST_MAIN(T(checkpoint_old_version), T(checkpoint_2d_old_tensors_refused), T(checkpoint_v4_reads_at_defaults),
           T(checkpoint_v7_reads_dry_specific_heat_as_wet), T(checkpoint_v8_reads_browning_surface_as_zero),
           T(checkpoint_v9_reads_ambient_pressure_as_zero), T(checkpoint_v10_sticky_holds_as_then),
           T(checkpoint_v11_reads_no_second_share), T(checkpoint_gas_made_mid_reaction),
-          T(checkpoint_v13_colliders_do_not_warm), T(checkpoint_v14_sheets_draw_nothing))
+          T(checkpoint_v13_colliders_do_not_warm), T(checkpoint_v14_sheets_draw_nothing),
+          T(checkpoint_v16_keeps_oven_walls))

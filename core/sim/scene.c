@@ -339,7 +339,7 @@ hearth_status hearth_scene_set_oven(hearth_scene *s, double temperature, double 
  * in the PC_SURFACE column (browning.c); the column stays once made (an oven turned off leaves its offsets 0). */
 hearth_status scene_enable_browning_surface(hearth_scene *s, hearth_error *err) {
     const hearth_scene_def *d = &s->def;
-    if (!(d->browning && d->solver == HEARTH_SOLVER_MPM && !isnan(d->oven_temperature) && d->oven_beta > 0)) return HEARTH_OK;
+    if (!(d->browning && d->solver == HEARTH_SOLVER_MPM && thermal_oven_on(d))) return HEARTH_OK;
     return particles_enable(&s->ps, PC_SURFACE, err);
 }
 

@@ -71,6 +71,17 @@ static const hearth_setting settings[] = {
      "field live",
      NAN, -273.15, 5000, 0, 1, NULL, NULL, OFF(oven_temperature), -1, "oven_temperature", 0},
     REAL("oven.beta", "W/(m^2 K)", "oven air heat transfer coefficient beta", 10, 0, HUGE_VAL, oven_beta, 0),
+    {"oven.wall_temperature", HEARTH_SETTING_REAL, "degC",
+     "the oven's radiating walls: q = oven.emissivity sigma (T_w^4 - T_s^4) (T in K) at the oven's air surface, beside "
+     "beta (T_air - T_s) (both solvers; fields/thermal.h); unset = no radiation",
+     NAN, -273.15, 5000, 0, 1, NULL, NULL, OFF(oven_wall_temperature), -1, "oven_wall_temperature", 1},
+    REAL("oven.emissivity", "1",
+         "effective emissivity of the oven walls' exchange with the surface (a small body in a large enclosure: the "
+         "body's own); 0 = no radiation",
+         0, 0, 1, oven_emissivity, 1),
+    REAL_GT("oven.radiation_scale", "1",
+            "multiplies emissivity sigma as a scene whose heat runs N times fast multiplies beta (1 = physical time)", 1, 0,
+            1e9, oven_radiation_scale, 0),
     REAL("oven.saturation", "1",
          "ambient saturation (humidity) that evaporation goes toward: q.n = beta^w theta (s - s_amb) (our extension of Ding "
          "et al. §3.2); 0 = dry air",

@@ -397,7 +397,12 @@ function D.preset(name)
     tau_y = curve(function(i) return g.tau_y * ts[i] end, theta),
     eta = curve(function(i) local t = g.tau_y * ts[i]; return 2 * t * t * g.mu * ms[i] / S end, theta),
   }
+  -- the oven's radiating walls (core setting oven.wall_temperature, oven.emissivity; fields/thermal.h): no preset
+  -- has them (no measured wall temperature for these ovens was found, docs/validation.md "An oven's hot walls"), so
+  -- wall_temperature and emissivity stay nil (g.oven_wall_temperature, g.oven_emissivity if a good gives them); the
+  -- scale is S, as beta's, for a scene that sets walls (--set oven.wall_temperature=... oven.emissivity=...)
   local oven = { temperature = g.oven_temperature, beta = g.oven_beta * S, pan_temperature = g.pan_temperature,
+    wall_temperature = g.oven_wall_temperature, emissivity = g.oven_emissivity, radiation_scale = S,
     pan_beta = g.pan_beta * S, dough_temperature = g.dough_temperature, saturation = g.saturation,
     pan_start_temperature = g.pan_start_temperature, pan_warm_time = g.pan_warm_time_real and g.pan_warm_time_real / S,
     -- the sheet's own heat capacity per area (J/(m^2 K)), real: the scene's time runs S times fast through beta and

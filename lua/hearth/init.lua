@@ -505,10 +505,9 @@ function h.scene(o)
           local ok = false
           for _, c in ipairs(e.words) do ok = ok or v:lower() == c end
           if not ok then usage_error(("%s: valid: %s"):format(set_text(e.name, v), table.concat(e.words, ", ")), 2) end
-          oo[e.name] = v
-        else
-          oo[e.name] = knob_number(e.name, v)
-        end
+        else v = knob_number(e.name, v) end
+        local top, sub = e.name:match("^([^.]+)%.(.+)$") -- a dotted knob (oven.emissivity): a key of its table's copy
+        if top then local t = {}; for a, b in pairs(oo[top] or {}) do t[a] = b end; t[sub], oo[top] = v, t else oo[e.name] = v end
       end
     end
     if oo.dim == 3 and oo.box and not ((oo.box[2][3] or 0) > (oo.box[1][3] or 0)) then
@@ -522,8 +521,8 @@ function h.scene(o)
     local top, sub = e.name:match("^([^.]+)%.(.+)$")
     local v
     if top then v = o[top] and o[top][sub] else v = o[e.name] end
-    -- (oven = {saturation = ...} alone is humid air for evaporation, without heat)
-    if v == nil and e.nan_ok and top and o[top] ~= nil and not (top == "oven" and o.oven.saturation ~= nil) then
+    -- (oven = {saturation = ...} alone is humid air for evaporation, without heat; the walls are optional)
+    if v == nil and e.nan_ok and top and o[top] ~= nil and not (top == "oven" and (o.oven.saturation or sub ~= "temperature")) then
       -- a sub-table's unset-able setting is its reason to be there (oven = {...} needs its temperature)
       error(("h.scene: %s = nil; valid range %s (%s)"):format(e.name, range_text(e), e.help), 2)
     end

@@ -361,6 +361,15 @@ s:add{shape = h.box({0.3, 0.1}, {0.7, 0.3}), material = m, ppc = 2, temperature 
 s:step(3)
 s:save("OUT")
 """,
+    # version 16: an oven whose walls radiate (oven.wall_temperature, oven.emissivity, oven.radiation_scale in DEF)
+    "walls_v16_2d.ck": """local h = require "hearth"
+local s = h.scene{dim = 2, dx = 1 / 16, box = {{0, 0}, {1, 1}}, seed = 12,
+  oven = {temperature = 180, beta = 20, wall_temperature = 240, emissivity = 0.9, radiation_scale = 2}}
+local m = h.material("elastic", {E = 5e4, density = 500, specific_heat = 2000, conductivity = 0.5})
+s:add{shape = h.box({0.3, 0.1}, {0.7, 0.3}), material = m, ppc = 2, temperature = 20}
+s:step(3)
+s:save("OUT")
+""",
 }
 
 

@@ -63,4 +63,12 @@ refused({ wall = "grip" }, "h.scene: wall = grip; valid: sticky, slip, separate"
 refused({ sph = { gamma = 7 } }, 'needs solver = "sph"')
 refused({ oven = { beta = 5 } }, "h.scene: oven.temperature = nil")
 refused({ water_momentum = 1 }, "h.scene: water_momentum must be true or false")
+-- the oven's radiating walls (fields/thermal.h): optional in the oven's table, checked when given
+refused({ oven = { temperature = 180, emissivity = 1.5 } }, "h.scene: oven.emissivity = 1.5; valid range [0, 1]")
+refused({ oven = { temperature = 180, wall_temperature = -300 } },
+  "h.scene: oven.wall_temperature = -300; valid range [-273.15, 5000] degC")
+refused({ oven = { temperature = 180, radiation_scale = 0 } }, "h.scene: oven.radiation_scale = 0; valid range (0,")
+refused({ oven = { wall_temperature = 250 } }, "h.scene: oven.temperature = nil")
+local w = h.scene { oven = { temperature = 180, beta = 30, wall_temperature = 250, emissivity = 0.9 } }:settings()
+assert(w["oven.wall_temperature"] == 250 and w["oven.emissivity"] == 0.9 and w["oven.radiation_scale"] == 1, "walls")
 print("settings ok")

@@ -268,6 +268,9 @@ typedef struct hearth_scene_def {
     double gas_vent;         ///< m/s: CO2 leaves an air-boundary particle whose pores are open (porosity >= vent_porosity) at dn^g/dt = -gas_vent S_p / V_p n^g (MPM; beyond Ding et al.; fields/gas.c). Default 0 = none
     double vent_porosity;    ///< with gas_vent: the gas porosity at which a surface particle's pores open to the air. Default 0.7
     int field_steps;         ///< MPM heat, water and CO2 update on the grid every k-th step over the k steps' time (fields/field_clock.c): 0 = k automatic from the fields' explicit limit (default), 1 = every step (single rate, the old scheme to the bit), k = every k-th
+    double oven_wall_temperature; ///< the oven's radiating walls (degrees C): q = emissivity sigma (T_w^4 - T_s^4) at the oven's air surface, beside beta (T_air - T_s) (both solvers; fields/thermal.h); NaN = none (default)
+    double oven_emissivity;       ///< with oven_wall_temperature: the exchange's effective emissivity, 0..1 (a small body in a large enclosure: the body's own); 0 = no radiation (default)
+    double oven_radiation_scale;  ///< multiplies emissivity sigma, as the physical presets multiply beta: 1 for physical time, N for a scene whose heat runs N times fast. Default 1
 } hearth_scene_def;
 
 /// Latent heat of vaporisation of water near 100 degC (J/kg): 2257 kJ/kg at

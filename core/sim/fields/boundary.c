@@ -51,6 +51,7 @@
 #include "error.h"
 #include "scene.h"
 #include "mpm.h"
+#include "thermal.h"
 
 #define FORCE_INLINE static inline __attribute__((always_inline))
 
@@ -64,7 +65,7 @@ void boundary_free(boundary_state *b) {
 }
 
 int boundary_needed(const hearth_scene *s) {
-    if (!isnan(s->def.oven_temperature) && s->def.oven_beta > 0) return 1;
+    if (thermal_oven_on(&s->def)) return 1;
     for (int m = 0; m < s->mats.n; m++)
         if (s->mats.slot[m].core[CP_EVAPORATION] > 0 && (s->ps.enabled & (1u << PC_WATER))) return 1;
     return 0;
@@ -517,7 +518,7 @@ hearth_status boundary_find(hearth_scene *s, hearth_error *err) {
      * (transport.c: the node saturation averages by capacity, rho_0^w V, as the
      * temperature does by heat capacity, so a uniform material's samples lie at
      * the same depth) */
-    int want_depth = !isnan(s->def.oven_temperature) && s->def.oven_beta > 0 && (ps->enabled & (1u << PC_TEMPERATURE));
+    int want_depth = thermal_oven_on(&s->def) && (ps->enabled & (1u << PC_TEMPERATURE));
     for (int q = 0; q < s->mats.n && !want_depth; q++)
         want_depth = s->mats.slot[q].core[CP_EVAPORATION] > 0 && (ps->enabled & (1u << PC_WATER));
 

@@ -71,6 +71,7 @@
 #include "error.h"
 #include "material.h"
 #include "physics_constants.h"
+#include "thermal.h"
 
 /* A particle leaves the bounds when it passes them by more than this share
  * of their scale (|hi| + |lo| + 1 K): far above the increments' rounding
@@ -115,6 +116,8 @@ static bounds step_bounds(const hearth_scene *s, double fdt) {
     if (s->mpm->nranks > 1) mpm_ranks_fields_reduce(s, NULL, 0, mx, 3); /* MPI slabs: every rank's particles */
     hi = mx[0], lo = -mx[1], q = mx[2];
     if (!isnan(s->def.oven_temperature) && s->def.oven_beta > 0) lo = fmin(lo, s->def.oven_temperature), hi = fmax(hi, s->def.oven_temperature);
+    if (thermal_oven_radiates(&s->def)) /* the walls are a source too: the outside temperature lies between air and walls */
+        lo = fmin(lo, s->def.oven_wall_temperature), hi = fmax(hi, s->def.oven_wall_temperature);
     for (int c = 0; c < s->ncol; c++) {
         const double Tc = s->cols[c].temperature;
         if (!isnan(Tc) && s->cols[c].beta > 0) lo = fmin(lo, Tc), hi = fmax(hi, Tc);

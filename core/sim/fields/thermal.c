@@ -15,7 +15,9 @@
  * S beta (theta_out - theta) (the printed signs in §4/§6.3 are ambiguous; the
  * analytic slab test decides). Boundary particles and their areas S come from
  * boundary.c (§6.6), with the depth of their temperature sample: the oven's
- * coefficient is beta / (1 + beta d / kappa) (find_boundary).
+ * coefficient is beta / (1 + beta d / kappa) (find_boundary). An oven with radiating walls (#18: oven.wall_temperature,
+ * oven.emissivity) adds eps sigma (T_w^4 - T_s^4) at the face T_s of that closure, as one coefficient and outside
+ * temperature with the air's (thermal.h's thermal_oven_exchange; docs/validation.md, "An oven's hot walls").
  * Heated colliders act through surface quadrature points: each particle within
  * 2 dx of the collider carries V_p delta(sdf) of contact area (delta a hat
  * whose integral is one, so the band sums to the contact area), and its point
@@ -56,7 +58,7 @@
  * (s - s_amb) S, g the vapour factor's bound (water_latent_stiffness, 14.1 at
  * a 100 degC boiling point), so the explicit step is limited as for a Robin
  * coefficient L e g (s - s_amb), with the largest excess the particles hold
- * when the step starts (thermal_dt_limit). With the switch on, oven_ledger tallies the oven's Robin
+ * when the step starts (thermal_dt_limit). With the switch on, oven_ledger (thermal_ledger.c) tallies the oven's Robin
  * heat so that heat in = sensible heat + L x water lost can be checked
  * (`latent_heat_energy_balance`: to 1e-13; a particle that reaches water.c's
  * saturation floor keeps water whose heat was taken, so the books then differ
@@ -142,6 +144,12 @@ double thermal_dt_limit(const hearth_scene *s) {
     if (!thermal_active(s) || s->def.heat_implicit) return INFINITY;
     /* the strongest boundary coupling: a node's heat capacity against S beta */
     double beta = isnan(s->def.oven_temperature) ? 0 : s->def.oven_beta;
+    if (thermal_oven_radiates(&s->def)) { /* the walls' h_r at its largest: the walls or the hottest other heat (thermal.h) */
+        double hot = s->def.oven_temperature;
+        for (int c = 0; c < s->ncol; c++)
+            if (!isnan(s->cols[c].temperature) && s->cols[c].temperature > hot) hot = s->cols[c].temperature;
+        beta += thermal_radiative_h_max(thermal_oven_rad(&s->def), s->def.oven_wall_temperature, hot);
+    }
     for (int c = 0; c < s->ncol; c++)
         if (!isnan(s->cols[c].temperature) && isfinite(s->cols[c].beta) && s->cols[c].beta > beta) beta = s->cols[c].beta; /* held nodes are not integrated */
     int held = 0; /* a held collider's Nitsche penalty acts as beta = gamma kappa / dx */
@@ -203,6 +211,8 @@ double thermal_energy(const hearth_scene *s) {
 
 /* ---- boundary coefficients ------------------------------------------- */
 
+static double field_at(const grid *g, const double x[3], int ch, int *m);
+
 /* Fills s->heat.bnd_coef (S beta, W/K) and s->heat.bnd_temp (degrees C) for the
  * particles flagged PF_BOUNDARY, from the air boundary (boundary.c) and the
  * heated colliders. Other particles' entries are stale: readers check the
@@ -214,9 +224,11 @@ static hearth_status find_boundary(hearth_scene *s) {
     double *coef = s->heat.bnd_coef, *temp = s->heat.bnd_temp, *surf = s->heat.bnd_surf;
     const double *X = pcold(ps, PC_X);
     int *flags = pcoli(ps, PC_FLAGS); /* live with temperature */
-    const int oven = !isnan(s->def.oven_temperature) && s->def.oven_beta > 0;
+    const int oven = thermal_oven_on(&s->def);
     const int *mat = pcoli(ps, PC_MAT);
     const double beta = s->def.oven_beta, *depth = s->boundary.depth;
+    /* the oven's radiating walls (#18): eps sigma, 0 without them (thermal.h) */
+    const double rad = thermal_oven_rad(&s->def), t_wall = s->def.oven_wall_temperature, t_air = s->def.oven_temperature;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++)
         if (flags[i] & PF_BOUNDARY) { /* flagged by boundary.c: the air boundary */
@@ -228,14 +240,28 @@ static hearth_status find_boundary(hearth_scene *s) {
              * (first order). A coefficient, not an extrapolated temperature, so the
              * implicit operator stays symmetric. With no conduction nothing carries heat
              * from the surface to the sample: the flux acts on the particle directly. */
-            double b = 0.0, r = 1.0;
+            double b = 0.0, r = 1.0, to = 0.0;
             if (oven) { /* the layer above the sample conducts as the particle does, dried or not */
                 const double kap = material_conductivity(&s->mats.slot[mat[i]], ps, i);
-                const double den = thermal_film_den(beta, depth[i], kap);
-                r = 1.0 / den, b = beta / den;
+                if (rad > 0) {
+                    /* Radiating walls: beta (T_air - T_s) + eps sigma (T_w^4 - T_s^4) as one coefficient B and one
+                     * outside temperature T_o (thermal_oven_exchange), T_s the face the same closure reads from the
+                     * nodes' temperature at the particle (the sample the flux acts on, thermal_surface_temperature's),
+                     * so the walls see the face's temperature and not the sample's, colder by the layer's drop. The
+                     * radiation's coefficient is taken at the step's start (explicitly in h_r, as transport.c's
+                     * latent sink): backward Euler keeps its symmetric operator, lagged in h_r alone. */
+                    int nm;
+                    const double th = field_at(g, X + 3 * i, CH_T, &nm);
+                    const double tp = nm ? th : pcold(ps, PC_TEMPERATURE)[i];
+                    const double B = thermal_oven_exchange(beta, t_air, rad, t_wall, tp, depth[i], kap, &to, &r);
+                    b = B * r;
+                } else {
+                    const double den = thermal_film_den(beta, depth[i], kap);
+                    r = 1.0 / den, b = beta / den, to = t_air;
+                }
             }
             coef[i] = s->boundary.area[i] * b;
-            temp[i] = oven ? s->def.oven_temperature : 0.0;
+            temp[i] = to;
             if (surf) surf[i] = r; /* the surface's temperature by the same closure (thermal_surface_temperature) */
         }
     /* heated colliders: surface quadrature points on the collider's face; a held
@@ -321,10 +347,11 @@ static double field_at(const grid *g, const double x[3], int ch, int *m) {
     for (int j = 0; j < *m; j++) v += w[j] * node[j][ch * NPB + l[j]];
     return v;
 }
+double thermal_field_at(const hearth_scene *s, const double x[3], int ch, int *m) { return field_at(&s->g, x, ch, m); }
 
 double thermal_surface_temperature(const hearth_scene *s, int i, double *sample) {
     const particles *ps = &s->ps;
-    if (isnan(s->def.oven_temperature) || !(s->def.oven_beta > 0) || !s->heat.bnd_surf || i >= s->heat.bnd_cap) return NAN;
+    if (!thermal_oven_on(&s->def) || !s->heat.bnd_surf || i >= s->heat.bnd_cap) return NAN;
     if (!(pcoli(ps, PC_FLAGS)[i] & PF_BOUNDARY) || !(s->heat.bnd_coef[i] > 0)) return NAN; /* not on the oven's air */
     if (isnan(s->heat.bnd_surf[i])) return NAN; /* by a heated collider's face (find_boundary) */
     /* the sample the flux read: the nodes' temperature at the particle (this step's solution), not the particle's
@@ -708,52 +735,6 @@ static void apply(hearth_scene *s, int in, int out) {
     transport_apply(s, &tp);
 }
 
-/* The heat the oven's Robin boundary put in this step, dt sum_p S_p beta_p
- * (theta_out - theta_p), theta_p the nodes' temperature at the particle that
- * the update used: the step start's (forward Euler) or the solution's
- * (backward). Only for the latent_heat ledger; serial, so deterministic. */
-static void oven_ledger(hearth_scene *s, double dt) {
-    s->heat.step_oven_heat = 0;
-    if (!s->def.latent_heat || isnan(s->def.oven_temperature)) return;
-    const grid *g = &s->g;
-    const int ch = s->def.heat_implicit ? CH_T : CH_T0;
-    const double *X = pcold(&s->ps, PC_X), *coef = s->heat.bnd_coef;
-    const int *flags = pcoli(&s->ps, PC_FLAGS);
-    double q = 0;
-    for (int i = 0; i < s->ps.n; i++) {
-        if (!(flags[i] & PF_BOUNDARY) || !(coef[i] > 0)) continue; /* a collider's contact alone leaves coef 0 */
-        int m;
-        q += coef[i] * (s->heat.bnd_temp[i] - field_at(g, X + 3 * i, ch, &m));
-    }
-    mpm_ranks_fields_reduce(s, &q, 1, NULL, 0); /* MPI slabs: every rank's particles, in rank order */
-    s->heat.step_oven_heat = dt * q;
-}
-
-/* The heat each drawing sheet's contact passed to the food this field step (colliders.h: its own balance takes it
- * from the sheet): dt sum over its Robin points of beta S (T_c - theta(x_s)), theta the nodes' field the update used
- * (the step start's for forward Euler, the solution's for backward, as oven_ledger; a dried face's reading where
- * dried_face set one), which is what heat_contact_apply scattered onto the nodes (its weights sum to one). Serial in
- * the points' order; MPI slabs sum each sheet's over the ranks. */
-static void sheet_ledger(hearth_scene *s, double dt) {
-    int any = 0;
-    for (int c = 0; c < s->ncol; c++)
-        if (collider_draws(&s->cols[c])) s->cols[c].step_heat = s->cols[c].step_ret = 0, any = 1;
-    if (!any) return;
-    const grid *g = &s->g;
-    const int ch = s->def.heat_implicit ? CH_T : CH_T0;
-    for (int k = 0; k < s->heat.nct; k++) {
-        const double *ct = s->heat.ct + THERMAL_CT * k;
-        collider *col = &s->cols[(int)ct[10]];
-        if (ct[8] != 0 || !collider_draws(col)) continue;
-        int m = 1;
-        const double v = isnan(ct[9]) ? field_at(g, ct, ch, &m) : ct[9];
-        if (m == 0) continue; /* no node with heat capacity: heat_contact_apply passed nothing */
-        col->step_heat += dt * ct[6] * (ct[7] - v);
-    }
-    for (int c = 0; c < s->ncol; c++)
-        if (collider_draws(&s->cols[c])) mpm_ranks_fields_reduce(s, &s->cols[c].step_heat, 1, NULL, 0);
-}
-
 void thermal_sheet_return(hearth_scene *s, int i, double heat) {
     const double *x = pcold(&s->ps, PC_X) + 3 * i;
     for (int c = 0; c < s->ncol; c++) {
@@ -787,11 +768,10 @@ hearth_status thermal_finish(hearth_scene *s, double dt, hearth_error *err) {
     /* held nodes keep their temperature: no update, no unknown */
     clear_held(s, CH_R);
     clear_held(s, CH_B);
-    if (!s->def.heat_implicit && !isnan(s->def.oven_temperature) && s->def.oven_beta > 0) {
+    if (!s->def.heat_implicit && thermal_oven_on(&s->def)) {
         small_nodes_explicit_step(s, dt); /* forward Euler, the surface's small nodes merged */
         held_settle(s);
-        oven_ledger(s, dt);
-        sheet_ledger(s, dt);
+        thermal_step_books(s, dt);
         return HEARTH_OK;
     }
     if (!s->def.heat_implicit) { /* forward Euler (gamma = 0) */
@@ -804,8 +784,7 @@ hearth_status thermal_finish(hearth_scene *s, double dt, hearth_error *err) {
             }
         }
         held_settle(s);
-        oven_ledger(s, dt);
-        sheet_ledger(s, dt);
+        thermal_step_books(s, dt);
         return HEARTH_OK;
     }
     /* backward Euler (gamma = 1): (C/dt + L) x = C/dt theta^n + b, solved by
@@ -890,7 +869,6 @@ hearth_status thermal_finish(hearth_scene *s, double dt, hearth_error *err) {
         s->heat.cg_iterations = it + 1;
     }
     held_settle(s);
-    oven_ledger(s, dt);
-    sheet_ledger(s, dt);
+    thermal_step_books(s, dt);
     return HEARTH_OK;
 }

@@ -2,7 +2,10 @@
  * Runs only when the temperature field is live. */
 #ifndef HEARTH_THERMAL_H
 #define HEARTH_THERMAL_H
+#include <math.h>
+
 #include "hearth/hearth.h"
+#include "physics_constants.h"
 
 struct hearth_scene;
 
@@ -86,6 +89,62 @@ static inline double thermal_face_temperature(double theta_out, double theta_p, 
     return theta_out - (theta_out - theta_p) * r;
 }
 
+/// The oven's radiating walls (#18): an oven (oven_temperature set) whose walls have a temperature and an emissivity
+/// above 0. Off, every path is the convective one, in its bits.
+static inline int thermal_oven_radiates(const hearth_scene_def *d) {
+    return !isnan(d->oven_temperature) && isfinite(d->oven_wall_temperature) && d->oven_emissivity > 0;
+}
+/// Does the oven exchange heat with the body's air surface at all (beta > 0, or radiating walls)?
+static inline int thermal_oven_on(const hearth_scene_def *d) {
+    return !isnan(d->oven_temperature) && (d->oven_beta > 0 || thermal_oven_radiates(d));
+}
+/// eps sigma times the scene's radiation_scale (W/(m^2 K^4)); 0 without radiating walls.
+static inline double thermal_oven_rad(const hearth_scene_def *d) {
+    return thermal_oven_radiates(d) ? d->oven_emissivity * SIGMA_SB * d->oven_radiation_scale : 0.0;
+}
+/// The walls' radiation q = rad (T_w^4 - T_s^4) written as h_r (T_w - T_s), h_r = rad (T_w^2 + T_s^2) (T_w + T_s),
+/// temperatures in K inside (degrees C outside): exact at T_s, and the form the Robin coefficient takes, so the
+/// implicit operator stays symmetric. rad = eps sigma (thermal_oven_rad). A face below 0 K is taken at 0 K.
+static inline double thermal_radiative_h(double rad, double t_wall, double t_s) {
+    const double w = t_wall + KELVIN, f = t_s + KELVIN > 0 ? t_s + KELVIN : 0.0;
+    return rad * (w * w + f * f) * (w + f);
+}
+/// The oven's air and its walls as one Robin exchange through the air film's closure (thermal_film_den): the face
+/// at temperature T_s takes beta (T_air - T_s) + h_r(T_s) (T_w - T_s) = B (T_o - T_s), B = beta + h_r and T_o =
+/// (beta T_air + h_r T_w) / B. T_s is the face of the closure over the sample th at depth d (kappa the layer's), and
+/// h_r depends on it: a fixed point T_s = T_o - (T_o - th) / (1 + B d / kappa), from T_s = th, to 1e-10 K (a
+/// contraction: h_r moves by 4 h_r / T per K of T_s, and the film's share is below 1; 8-10 sweeps for the loaf's top,
+/// at most 24 over walls to 900 degC, layers to 5 mm and kappa down to 0.05 W/(m K), counted on the same iteration). So the flux at the step's sample is the radiation at the face's own temperature, not a lag of it.
+/// Returns B; *t_out = T_o, *r = 1 / (1 + B d / kappa), the film's share (thermal_face_temperature). With rad = 0:
+/// beta, T_air and 1 / thermal_film_den(beta, d, kappa), the convective closure's values to the bit.
+static inline double thermal_oven_exchange(double beta, double t_air, double rad, double t_wall, double th, double d,
+                                           double kappa, double *t_out, double *r) {
+    if (!(rad > 0)) {
+        *t_out = t_air, *r = 1.0 / thermal_film_den(beta, d, kappa);
+        return beta;
+    }
+    double ts = th, B = beta, to = t_air, rr = 1.0;
+    for (int k = 0; k < 60; k++) {
+        const double hr = thermal_radiative_h(rad, t_wall, ts);
+        B = beta + hr;
+        to = (beta * t_air + hr * t_wall) / B;
+        rr = 1.0 / thermal_film_den(B, d, kappa);
+        const double next = thermal_face_temperature(to, th, rr);
+        const int done = fabs(next - ts) <= 1e-10;
+        ts = next;
+        if (done) break;
+    }
+    *t_out = to, *r = rr;
+    return B;
+}
+/// The largest h_r a face meets (W/(m^2 K)): 4 rad T^3 at the hotter of the walls and hot, the highest temperature
+/// (degrees C) a face may reach by the scene's other heat (the oven's air, a heated collider); for the explicit
+/// step's Robin limit.
+static inline double thermal_radiative_h_max(double rad, double t_wall, double hot) {
+    const double t = (t_wall > hot ? t_wall : hot) + KELVIN;
+    return rad > 0 && t > 0 ? 4.0 * rad * t * t * t : 0.0;
+}
+
 /// Is heat transport on for this scene (temperature live)?
 int thermal_active(const struct hearth_scene *s);
 /// Largest explicit heat step (s), or INFINITY when implicit or inactive.
@@ -110,6 +169,11 @@ void thermal_sheet_return(struct hearth_scene *s, int i, double heat);
 void thermal_sheet_returns_done(struct hearth_scene *s);
 /// A step stood (the guard kept it): its oven heat joins the ledger.
 void thermal_step_stands(thermal_state *h);
+/// After a field step's update (thermal_finish): the oven's Robin heat for latent_heat's ledger and each drawing
+/// sheet's draw (thermal_ledger.c), from the nodes' field the update read.
+void thermal_step_books(struct hearth_scene *s, double dt);
+/// The nodes' channel ch at x (the B-spline field of the contact stencil, 0 where no node has storage); *m the nodes.
+double thermal_field_at(const struct hearth_scene *s, const double x[3], int ch, int *m);
 /// Total heat energy sum m alpha (theta + 273.15) of the particles (J).
 double thermal_energy(const struct hearth_scene *s);
 /// G2P's temperature update (Ding et al. eq. 21): FLIP's T0 + dT, blended toward PIC's Tn by the scene's

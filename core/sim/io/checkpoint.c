@@ -274,6 +274,19 @@ static void get_def(ck_cursor *c, hearth_scene_def *d, uint32_t version) {
         }
     } else
         d->field_steps = 1; /* written single rate (every step), whatever today's default: their bits */
+    if (version >= 16) { /* the oven's radiating walls; NaN walls: none (an older file's oven has none: its bits) */
+        d->oven_wall_temperature = get_f64(c);
+        const hearth_setting *e = hearth_scene_setting("oven.wall_temperature");
+        if (!c->bad && !isnan(d->oven_wall_temperature) &&
+            !(d->oven_wall_temperature >= e->min && d->oven_wall_temperature <= e->max)) {
+            snprintf(c->msg, sizeof c->msg, "scene: oven.wall_temperature = %g degC is outside its valid range [%g, %g]",
+                     d->oven_wall_temperature, e->min, e->max);
+            ck_fail(c, c->msg);
+        }
+        get_real_setting(c, d, "oven.emissivity");
+        get_real_setting(c, d, "oven.radiation_scale");
+    } else
+        d->oven_wall_temperature = NAN, d->oven_emissivity = 0, d->oven_radiation_scale = 1;
     d->solver = HEARTH_SOLVER_MPM; /* the only solver whose table says can_checkpoint (solver.h) */
 }
 

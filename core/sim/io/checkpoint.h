@@ -25,7 +25,8 @@
  *    "DEF " the scene definition (put_def in checkpoint.c); version 5 appends
  *           f64 damping, f64 boiling_point, i32 periodic[3], i32 two_field,
  *           f64 two_field_friction, f64 gas_vent, f64 vent_porosity; version 6
- *           i32 field_steps
+ *           i32 field_steps; version 16 f64 oven_wall_temperature, oven_emissivity and
+ *           oven_radiation_scale
  *    "CLK " i32 guard state, then the clocks and the jitter generator; version 6 appends
  *           f64 the fields' cycle time, i32 its steps, f64 and i32 the last field step's
  *           version 7 appends i32 whether the water's step limits are kept (1) and f64 their
@@ -66,8 +67,10 @@
  * start_temperature, warm_time and t_added appended in COLS (a tray that warms, colliders.h), its temperature slot the
  * one it warms toward: an older file's colliders do not warm; 15: each collider's heat_capacity and area (a sheet the food
  * draws heat from, colliders.h) and its state (f64 sheet temperature, its time, the last field step's draw and span,
- * the oven's input and the draw since added) appended in COLS: an older file's sheets draw nothing */
-#define CK_VERSION 15u
+ * the oven's input and the draw since added) appended in COLS: an older file's sheets draw nothing; 16: the oven's wall
+ * temperature, emissivity and radiation_scale appended to DEF (fields/thermal.h): an older file's oven has no
+ * radiating walls */
+#define CK_VERSION 16u
 /// Oldest version read: a version 4 file is version 5's layout without the
 /// DEF fields version 5 appended.
 #define CK_VERSION_MIN 4u

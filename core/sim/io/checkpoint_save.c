@@ -71,6 +71,10 @@ static void put_def(ck_out *o, const hearth_scene_def *d) {
     put_f64(o, d->vent_porosity);
     /* version 6: the fields' clock (fields/field_clock.c) */
     put_i32(o, d->field_steps);
+    /* version 16: the oven's radiating walls (fields/thermal.h) */
+    put_f64(o, d->oven_wall_temperature);
+    put_f64(o, d->oven_emissivity);
+    put_f64(o, d->oven_radiation_scale);
 }
 
 static void put_clocks(ck_out *o, const hearth_scene *s) {

@@ -1,6 +1,7 @@
 /* sph_heat.c: the SPH solver's heat rates (Rodriguez-Arenas 2011 eq. 3.42,
  * 3.45-3.46) and the oven's Robin flux with heated colliders' contact beta
- * (as MPM's, Ding et al. 2019 §6.6), and the limits they put on dt.
+ * (as MPM's, Ding et al. 2019 §6.6), the oven's radiating walls (#18, thermal.h's thermal_oven_exchange), and the
+ * limits they put on dt.
  * phase_forces (sph.c) calls sph_heat_rates after the viscous moments;
  * sph_fields_advance moves the temperatures by st->dT, and the water with
  * them (sph_water.c). */
@@ -81,26 +82,44 @@ static double sph_dry_k(const hearth_scene *s, int i, int mat) {
  * the Robin contact), whose surface is a contact the air film does not describe (MPM's by a collider's face, too);
  * *face (may be NULL) says whether i has a face in the oven's air. One rule for the flux (sph_heat_rates) and the
  * face temperature browning reads (sph_surface_temperatures), so the face the colour sees is the one the heat
- * crossed. */
-static double sph_film_share(const hearth_scene *s, const sph_cols *cs, int i, double ki, int *face) {
+ * crossed.
+ * With the oven's radiating walls (#18) the film carries B = h + h_r toward T_o = (h T_ext + h_r T_w) / B, h_r the
+ * walls' coefficient at the face's own temperature by thermal_oven_exchange's fixed point (MPM's find_boundary's
+ * closure), and r = 1 / (1 + B d / kappa): the outer particle takes B r (T_o - T_i) over its face, which is
+ * r [h (T_ext - T_i) + h_r (T_w - T_i)], so the air's part keeps its terms and the walls add r h_r (T_w - T_i).
+ * *hr gets h_r (0 without walls; for a particle by a heated collider the walls' h_r at T_i, the film being 1) and
+ * *to T_o (T_ext without walls, to the bit); either may be NULL. */
+static double sph_film_share(const hearth_scene *s, const sph_cols *cs, int i, double ki, int *face, double *hr,
+                             double *to) {
     const struct sph_state *st = s->sph;
     const hearth_sph_def *o = &s->def.sph;
     const sph_cols c = *cs;
     const double Text = s->def.oven_temperature, beta = isfinite(Text) ? s->def.oven_beta : 0.0;
+    const double rad = thermal_oven_rad(&s->def), Tw = s->def.oven_wall_temperature;
     if (face) *face = 0;
-    if (!st->outer[i] || !isfinite(Text) || !(o->heat_ext > 0 || beta > 0)) return 1.0;
+    if (hr) *hr = 0.0;
+    if (to) *to = Text;
+    if (!st->outer[i] || !isfinite(Text) || !(o->heat_ext > 0 || beta > 0 || rad > 0)) return 1.0;
     const double Vr = c.m[i] / st->rho0[i], sp = c.dim == 3 ? cbrt(Vr) : sqrt(Vr);
     for (int q = 0; q < s->ncol; q++) { /* sph_heat_rates's two rules for a collider's outside */
         const collider *cl = &s->cols[q];
         if (isnan(cl->temperature) || !collider_near(cl, c.x + 3 * i)) continue;
         const double sd = collider_sdf(cl, c.x + 3 * i, NULL);
-        if ((o->heat_ext > 0 && sd < st->h[i]) || (cl->beta > 0 && sd < sp)) return 1.0;
+        if ((o->heat_ext > 0 && sd < st->h[i]) || (cl->beta > 0 && sd < sp)) {
+            if (hr && rad > 0) *hr = thermal_radiative_h(rad, Tw, c.T[i]);
+            return 1.0;
+        }
     }
     if (face) *face = 1;
     const double cw = s->mats.slot[c.mat[i]].core[CP_SPECIFIC_HEAT];
     const double h = o->heat_ext * cw + beta;
     const double kappa = o->heat_int * (sph_heat_dry(s) ? (ki >= 0 ? ki : sph_dry_k(s, i, c.mat[i])) : cw);
-    return 1.0 / thermal_film_den(h, 0.5 * sp, kappa);
+    if (!(rad > 0)) return 1.0 / thermal_film_den(h, 0.5 * sp, kappa); /* without walls: sphflux's bits */
+    double To, r;
+    const double B = thermal_oven_exchange(h, Text, rad, Tw, c.T[i], 0.5 * sp, kappa, &To, &r);
+    if (hr) *hr = B - h;
+    if (to) *to = To;
+    return r;
 }
 
 void sph_heat_rates(hearth_scene *s) {
@@ -115,9 +134,11 @@ void sph_heat_rates(hearth_scene *s) {
     /* Robin heat exchange (Ding et al. 2019 §6.6, the MPM solver's oven): beta
      * of the oven and of heated colliders, next to eq. 3.42's heat_ext */
     const double beta_oven = isfinite(Text) ? s->def.oven_beta : 0.0;
-    int robin = beta_oven > 0;
+    /* the oven's radiating walls (#18, thermal.h): eps sigma, 0 without them */
+    const double rad = thermal_oven_rad(&s->def), Tw = s->def.oven_wall_temperature;
+    int robin = beta_oven > 0 || rad > 0;
     for (int q = 0; q < s->ncol; q++) robin |= !isnan(s->cols[q].temperature) && s->cols[q].beta > 0;
-    /* with latent_heat the oven's Robin heat is tallied (heat_ledger), as MPM's (thermal.c's oven_ledger) */
+    /* with latent_heat the oven's Robin heat is tallied (heat_ledger), as MPM's (thermal_ledger.c's oven_ledger) */
     const int ledger = s->def.latent_heat && robin;
     if (s->def.latent_heat && !robin)
         for (int i = 0; i < n; i++) st->qo[i] = 0;
@@ -166,7 +187,8 @@ void sph_heat_rates(hearth_scene *s) {
                 dTi += o->heat_int * 4 * m[j] / ((ri + rj) * (ri + rj)) * (T[j] - T[i]) * lv * kij; /* eq. 3.45-3.46 */
             }
         /* the oven's flux crosses the half-layer to i's centre (sph_film_share; 1 where none, the thesis's bits) */
-        const double film = st->outer[i] ? sph_film_share(s, &c, i, dry ? ki : -1.0, NULL) : 1.0;
+        double hr = 0.0; /* the walls' h_r at i's face (sph_film_share; 0 without walls) */
+        const double film = st->outer[i] ? sph_film_share(s, &c, i, dry ? ki : -1.0, NULL, &hr, NULL) : 1.0;
         if (o->heat_ext > 0 && st->outer[i]) { /* eq. 3.42 at surface particles, per unit area (below) */
             double Tout = Text;
             for (int q = 0; q < s->ncol; q++) { /* a heated collider within h is the outside instead */
@@ -211,7 +233,12 @@ void sph_heat_rates(hearth_scene *s) {
              * block's outline. */
             const double ci = dry ? ai : msi->core[CP_SPECIFIC_HEAT], Vr = m[i] / st->rho0[i];
             const double sp = dim == 3 ? cbrt(Vr) : sqrt(Vr), face = Vr / sp;
-            double coef = beta_oven > 0 && st->outer[i] ? film * face * st->oshare[i] * beta_oven : 0.0, Tr = Text;
+            /* With radiating walls the oven's Robin part carries beta + h_r toward (beta T_ext + h_r T_w) / (beta +
+             * h_r), h_r at the face's temperature (sph_film_share: thermal_oven_exchange's fixed point), through the
+             * same film: with eq. 3.42's part above the particle takes B r (T_o - T_i) over its face, MPM's closure;
+             * taken at the step's start, as the whole rate is (forward Euler). Without walls: sphflux's bits. */
+            const double bo = beta_oven + hr, To = hr > 0 ? (beta_oven * Text + hr * Tw) / bo : Text;
+            double coef = bo > 0 && st->outer[i] ? film * face * st->oshare[i] * bo : 0.0, Tr = To;
             for (int q = 0; q < s->ncol; q++) {
                 const collider *cl = &s->cols[q];
                 if (isnan(cl->temperature) || !(cl->beta > 0) || !collider_near(cl, x + 3 * i)) continue;
@@ -222,8 +249,7 @@ void sph_heat_rates(hearth_scene *s) {
             }
             if (coef > 0 && ci > 0) dTi += coef * (Tr - T[i]) / (m[i] * ci);
             /* the oven's part (W), for latent_heat's ledger: coef (Tr - T) is the sum of its parts */
-            if (ledger)
-                st->qo[i] = beta_oven > 0 && st->outer[i] ? film * face * st->oshare[i] * beta_oven * (Text - T[i]) : 0.0;
+            if (ledger) st->qo[i] = bo > 0 && st->outer[i] ? film * face * st->oshare[i] * bo * (To - T[i]) : 0.0;
         }
         st->dT[i] = dTi;
         if (water) st->dW[i] = dw; /* the water's pairs, which sph_water_rates completes */
@@ -270,6 +296,12 @@ double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin) {
     if (o->heat_ext > 0 && T) dt = fmin(dt, 0.25 * rhomin * hmin / o->h_factor / o->heat_ext * ext);
     if (T) { /* Robin: a face of V / spacing against the heat capacity rho c V */
         double beta = isnan(s->def.oven_temperature) ? 0 : s->def.oven_beta, bc = 0;
+        if (thermal_oven_radiates(&s->def)) { /* the walls' h_r at its largest (thermal.h): walls or the hottest other heat */
+            double hot = s->def.oven_temperature;
+            for (int k = 0; k < s->ncol; k++)
+                if (!isnan(s->cols[k].temperature) && s->cols[k].temperature > hot) hot = s->cols[k].temperature;
+            beta += thermal_radiative_h_max(thermal_oven_rad(&s->def), s->def.oven_wall_temperature, hot);
+        }
         for (int k = 0; k < s->ncol; k++)
             if (!isnan(s->cols[k].temperature) && s->cols[k].beta > bc) bc = s->cols[k].beta;
         beta += bc;
@@ -299,8 +331,9 @@ static void heat_ledger(hearth_scene *s, double dt) {
 
 /* Each outer particle's face temperature (st->ts, degC; NaN for the rest), for browning.c: colour is the surface's
  * (issue #18), and an outer particle's centre lies half its spacing under the face it stands for, colder than the
- * face by that half-layer's conduction: T_s = T_ext - (T_ext - T_i) r (thermal.h's thermal_face_temperature), r the
- * film's share sph_film_share gives, the same closure that moved the flux in (sph_heat_rates), so the face's
+ * face by that half-layer's conduction: T_s = T_o - (T_o - T_i) r (thermal.h's thermal_face_temperature), r the
+ * film's share and T_o the outside sph_film_share gives (T_ext; with radiating walls the air's and the walls' blend
+ * at the face's h_r), the same closure that moved the flux in (sph_heat_rates), so the face's
  * temperature and the heat that crossed it agree. A particle by a heated collider keeps its own temperature
  * (NaN here: browning reads T_i). Read at the step's end temperatures, which browning integrates; only
  * in a scene that browns (sph_fields_advance). */
@@ -308,12 +341,13 @@ static void sph_surface_temperatures(hearth_scene *s) {
     struct sph_state *st = s->sph;
     const sph_cols c = sph_cols_of(s);
     const int n = c.n;
-    const double *T = c.T, Text = s->def.oven_temperature;
+    const double *T = c.T;
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         int face;
-        const double r = sph_film_share(s, &c, i, -1.0, &face);
-        st->ts[i] = face ? thermal_face_temperature(Text, T[i], r) : NAN;
+        double To;
+        const double r = sph_film_share(s, &c, i, -1.0, &face, NULL, &To);
+        st->ts[i] = face ? thermal_face_temperature(To, T[i], r) : NAN;
     }
 }
 

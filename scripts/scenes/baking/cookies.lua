@@ -216,7 +216,8 @@ local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_pe
 local series = { "oven_degC,leavener,t_s,height_m,spread_m,centre_temperature_degC" .. (S and ",t_real_s" or "") }
 for _, T in ipairs(ovens) do
   local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.09, 0.12) },
-    oven = { temperature = T, beta = oven.beta }, gas_vent = vent, name = "cookies", seed = P.seed,
+    oven = { temperature = T, beta = oven.beta, wall_temperature = oven.wall_temperature,
+      emissivity = oven.emissivity, radiation_scale = oven.radiation_scale }, gas_vent = vent, name = "cookies", seed = P.seed,
     browning = physical or nil, browning_scale = S, latent_heat = physical and oven.latent_heat or nil,
     boiling_point = physical and oven.boiling_point or nil, vent_porosity = physical and oven.vent_porosity or nil }
   -- the physical preset's sheet goes in cold (oven.pan_start_temperature, pan_warm_time: dough_physical.lua) and the

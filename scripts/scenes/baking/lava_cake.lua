@@ -99,7 +99,8 @@ local PLATE, R, HC, WALL, XC = 0.01, 0.02, 0.03, 0.004, 0.08
 -- minutes are for that size
 if physical then R = (oven.portion / (1.5 * math.pi)) ^ (1 / 3); HC = 1.5 * R end
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, H, 0.1) }, gravity = v(0, -9.81, 0),
-  oven = { temperature = oven.temperature, beta = oven.beta }, name = "lava_cake",
+  oven = { temperature = oven.temperature, beta = oven.beta, wall_temperature = oven.wall_temperature,
+    emissivity = oven.emissivity, radiation_scale = oven.radiation_scale }, name = "lava_cake",
   latent_heat = physical and oven.latent_heat or nil, boiling_point = physical and oven.boiling_point or nil,
   browning = physical or nil, browning_scale = physical and oven.browning_scale or nil }
 s:collider { shape = h.box(v(-1, -1, -1), v(W + 1, PLATE, 1)), mode = "slip", friction = 0.5 }

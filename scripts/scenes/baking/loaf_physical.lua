@@ -30,6 +30,9 @@ local h = require "hearth"
 local P = h.params { dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
   frames = h.number { 25, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" }, latent = true,
   until_real = h.number { 0, min = 0, unit = "s", what = "the real bake time (0: the oven's own)" },
+  -- with --set oven.wall_temperature / oven.emissivity (radiating walls, docs/validation.md "An oven's hot walls"):
+  -- the air's own coefficient, the preset's 30 being an effective one with radiation in it
+  h_c = h.number { 0, min = 0, unit = "W/(m^2 K)", what = "the oven air's coefficient in real time (0: the preset's beta)" },
   tray = h.choice { "separate",
   separate = "friction 0.4: the foot slides out, as on a greased or papered tray",
   sticky = "the foot held where it touched, as on a bare tray the dough has wetted" } }
@@ -40,7 +43,8 @@ print(("loaf_physical.lua: h.library.dough.bread, %s; bake %.0f min in %.1f s"):
 
 local TRAY, WIDTH, BODY, X0 = 0.02, 0.08, 0.03, 0.07 -- m: tray top, loaf width, straight part, loaf centre
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name = "loaf_physical",
-  oven = { temperature = oven.temperature, beta = oven.beta }, latent_heat = P.latent and oven.latent_heat,
+  oven = { temperature = oven.temperature, beta = P.h_c > 0 and P.h_c * S or oven.beta, wall_temperature = oven.wall_temperature,
+    emissivity = oven.emissivity, radiation_scale = oven.radiation_scale }, latent_heat = P.latent and oven.latent_heat,
   boiling_point = oven.boiling_point, browning = true, browning_scale = oven.browning_scale,
   gas_vent = oven.gas_vent, vent_porosity = oven.vent_porosity }
 h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta, mode = P.tray })

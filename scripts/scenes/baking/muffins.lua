@@ -78,7 +78,8 @@ local BASE, R, CUP_H, WALL, SPACING = 0.012, 0.025, 0.03, 0.004, 0.08
 local W = SPACING * P.cups
 local zc = 0.04
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.1, 0.08) },
-  oven = { temperature = oven.temperature, beta = oven.beta }, name = "muffins", browning = true,
+  oven = { temperature = oven.temperature, beta = oven.beta, wall_temperature = oven.wall_temperature,
+    emissivity = oven.emissivity, radiation_scale = oven.radiation_scale }, name = "muffins", browning = true,
   browning_scale = physical and oven.browning_scale or oven.water_time_scale, latent_heat = physical and oven.latent_heat,
   boiling_point = physical and oven.boiling_point or nil, gas_vent = physical and oven.gas_vent or nil,
   vent_porosity = physical and oven.vent_porosity or nil }

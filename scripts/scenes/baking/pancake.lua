@@ -129,7 +129,8 @@ local SPOUT_W, SPOUT_Y, SPEED = 0.008, PAN + 0.025, 0.15 -- m, m, m/s: spout wid
 local XP, HALF = 0.165, 0.008               -- m: spatula pivot x, its height above the pan (~ the pancake's)
 -- the physical preset: the kitchen's air above (its "oven"), latent heat and boiling, browning
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.18, 0.1) }, gravity = v(0, -9.81, 0),
-  name = "pancake", oven = physical and { temperature = oven.temperature, beta = oven.beta } or nil,
+  name = "pancake", oven = physical and { temperature = oven.temperature, beta = oven.beta,
+    wall_temperature = oven.wall_temperature, emissivity = oven.emissivity, radiation_scale = oven.radiation_scale } or nil,
   latent_heat = physical and oven.latent_heat or nil, boiling_point = physical and oven.boiling_point or nil,
   browning = physical or nil, browning_scale = physical and oven.browning_scale or nil }
 s:collider { shape = h.box(v(-1, -1, -1), v(W + 1, PAN, 1)), mode = "separate", friction = 0.5,

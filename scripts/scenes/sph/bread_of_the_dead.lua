@@ -96,17 +96,20 @@ local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the g
   -- eq. 3.45's k_h,int = S kappa / c on the dough's own kappa and c (the HEAT note): 1500 x 0.51 / 2700 = 0.283;
   -- 0.5 was the scene's before #18 helper deadcrust (kappa 0.90 W/(m K) on S = 1500)
   heat_int = h.number { S * BREAD.conductivity / BREAD.specific_heat, min = 0, max = 1e6, unit = "kg/(m s)",
-    what = "the dough's internal heat conduction k_h,int = S kappa / c (eq. 3.45)" } }
+    what = "the dough's internal heat conduction k_h,int = S kappa / c (eq. 3.45)" },
+  -- with --set oven.wall_temperature / oven.emissivity (radiating walls, docs/validation.md "An oven's hot walls"):
+  -- the air's own coefficient, heat_ext = S h_c / c, the scene's h = 30 being an effective one with radiation in it
+  h_c = h.number { 0, min = 0, unit = "W/(m^2 K)", what = "the oven air's coefficient in real time (0: heat_ext 16.7, h = 30)" } }
 -- what a run's seconds stand for (S = 1500, the scene's browning_scale and its heat_ext, below)
 print(("bread_of_the_dead.lua: heat (an oven's h = 30 W/(m^2 K)) and browning 1500 times fast: "
   .. "the %g s run stands for %.0f min, 1 s for %.0f min"):format(P.until_t, P.until_t * S / 60, S / 60))
 
 local T0, tray = 26, 0.01
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph",
-  sph = { heat_ext = 16.7, heat_int = P.heat_int, av_beta = 1, xsph0 = P.xsph0, xsph_f = P.xsph_f, xsph_T0 = T0,
+  sph = { heat_ext = P.h_c > 0 and S * P.h_c / BREAD.specific_heat or 16.7, heat_int = P.heat_int, av_beta = 1, xsph0 = P.xsph0, xsph_f = P.xsph_f, xsph_T0 = T0,
           xsph_Tf = 120,
           bubble_T0 = T0, tension = true, artificial_stress = P.artificial_stress },
-  oven = { temperature = P.oven, beta = 0 },
+  oven = { temperature = P.oven, beta = 0, radiation_scale = S }, -- walls (--set) radiate S times fast, as heat_ext
   browning = true, browning_scale = S, -- Zanoni et al. 1995 kinetics; 1.2 s stand for a 30-minute bake
   latent_heat = P.water or nil, boiling_point = P.water and 100 or nil }
 

@@ -164,7 +164,7 @@ sph.continuity_density, sph.renormalised_density, sph.gas_pressure = P.continuit
 sph.dough_water, sph.own_squeeze, sph.hourglass = P.dough_water, P.own_squeeze, P.hourglass
 sph.xsph0 = P.xsph0 -- eq. 4.4 at the raw end (Table 4.1: 0.05)
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph", sph = sph,
-  oven = { temperature = P.oven, beta = 0 }, browning = true, browning_scale = 400,
+  oven = { temperature = P.oven, beta = 0, radiation_scale = 400 }, browning = true, browning_scale = 400, -- S: walls by --set
   latent_heat = P.crust or nil, boiling_point = P.crust and 100 or nil }
 
 local function scaled(c, k, cap)
