@@ -604,7 +604,7 @@ TEST(checkpoint_v13_colliders_do_not_warm) {
     img = save_image(s, &n);
     CHECK(img != NULL);
     if (!img) return;
-    r = hearth_scene_load_mem(img, n, "v14.ck", &err);
+    r = hearth_scene_load_mem(img, n, "current.ck", &err);
     CHECK(r != NULL);
     if (r) { /* the new file: warming on from where it was */
         CHECK(r->cols[0].temperature == s->cols[0].temperature && r->cols[0].warm_time == 1);

@@ -114,7 +114,8 @@ static inline double thermal_radiative_h(double rad, double t_wall, double t_s) 
 /// (beta T_air + h_r T_w) / B. T_s is the face of the closure over the sample th at depth d (kappa the layer's), and
 /// h_r depends on it: a fixed point T_s = T_o - (T_o - th) / (1 + B d / kappa), from T_s = th, to 1e-10 K (a
 /// contraction: h_r moves by 4 h_r / T per K of T_s, and the film's share is below 1; 8-10 sweeps for the loaf's top,
-/// at most 24 over walls to 900 degC, layers to 5 mm and kappa down to 0.05 W/(m K), counted on the same iteration). So the flux at the step's sample is the radiation at the face's own temperature, not a lag of it.
+/// at most 24 over walls to 900 degC, layers to 5 mm and kappa down to 0.05 W/(m K), counted on the same iteration).
+/// So the flux at the step's sample is the radiation at the face's own temperature, not a lag of it.
 /// Returns B; *t_out = T_o, *r = 1 / (1 + B d / kappa), the film's share (thermal_face_temperature). With rad = 0:
 /// beta, T_air and 1 / thermal_film_den(beta, d, kappa), the convective closure's values to the bit.
 static inline double thermal_oven_exchange(double beta, double t_air, double rad, double t_wall, double th, double d,
