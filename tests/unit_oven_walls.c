@@ -76,6 +76,21 @@ TEST(oven_exchange_closure_exact) {
  * rounded corners (docs/validation.md, "Oven surface measure"), more at 5 dx: not the walls' flux. The bars stay;
  * the body changed to one without corners (a slab periodic along x was refused: periodic axes do not carry heat),
  * set before its first run. */
+/* A fixed elastic disc of radius R about the origin (rho, kappa, c; at T0): the body both MPM walls tests heat. */
+static int add_disc(hearth_scene *s, double R, double rho, double kappa, double c, double T0) {
+    const char *nm[] = {"E", "density", "conductivity", "specific_heat"};
+    const double nv[] = {1e-2, rho, kappa, c};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 4, &err);
+    const double cc[3] = {0, 0, 0};
+    hearth_shape *disc = hearth_shape_sphere(cc, R);
+    hearth_body_def bd = hearth_default_body_def();
+    bd.shape = disc, bd.material = m, bd.jitter = 0, bd.fixed = 1, bd.temperature = T0;
+    const int ok = m >= 0 && hearth_scene_add_body(s, &bd, &err) >= 0;
+    hearth_shape_free(disc);
+    return ok;
+}
+
 static double mpm_lumped_error(int N, double *worst_at) {
     const double R = 0.016, dx = 0.001, kappa = 200, rho = 1000, c = 1000, eps = 0.9, Tw = 250, T0 = 20;
     hearth_scene_def d = hearth_default_scene_def();
@@ -90,16 +105,8 @@ static double mpm_lumped_error(int N, double *worst_at) {
     hearth_scene *s = fx_scene_def(&d);
     CHECK(s != NULL);
     if (!s) return INFINITY;
-    const char *nm[] = {"E", "density", "conductivity", "specific_heat"};
-    const double nv[] = {1e-2, rho, kappa, c};
+    CHECK(add_disc(s, R, rho, kappa, c, T0));
     hearth_error err;
-    const int m = hearth_scene_add_material(s, "elastic", nm, nv, 4, &err);
-    const double cc[3] = {0, 0, 0};
-    hearth_shape *disc = hearth_shape_sphere(cc, R);
-    hearth_body_def bd = hearth_default_body_def();
-    bd.shape = disc, bd.material = m, bd.jitter = 0, bd.fixed = 1, bd.temperature = T0;
-    CHECK(m >= 0 && hearth_scene_add_body(s, &bd, &err) >= 0);
-    hearth_shape_free(disc);
     const double a = Tw + K0, tau = rho * c * (R / 2) / (4 * eps * SIGMA * a * a * a);
     CHECK(hearth_scene_set_dt_limits(s, 0.5, tau / N, &err) == HEARTH_OK);
     const double share[3] = {0.3, 0.6, 0.8};
@@ -199,16 +206,8 @@ TEST(mpm_oven_walls_disc_converges_to_radial_reference) {
         hearth_scene *s = fx_scene_def(&d);
         CHECK(s != NULL);
         if (!s) return;
-        const char *nm[] = {"E", "density", "conductivity", "specific_heat"};
-        const double nv[] = {1e-2, rho, kappa, c};
+        CHECK(add_disc(s, R, rho, kappa, c, T0));
         hearth_error err;
-        const int m = hearth_scene_add_material(s, "elastic", nm, nv, 4, &err);
-        const double cc[3] = {0, 0, 0};
-        hearth_shape *disc = hearth_shape_sphere(cc, R);
-        hearth_body_def bd = hearth_default_body_def();
-        bd.shape = disc, bd.material = m, bd.jitter = 0, bd.fixed = 1, bd.temperature = T0;
-        CHECK(m >= 0 && hearth_scene_add_body(s, &bd, &err) >= 0);
-        hearth_shape_free(disc);
         e[r] = 0;
         for (int k = 0; k < 2; k++) {
             CHECK(hearth_scene_advance(s, times[k], &err) == HEARTH_OK);
