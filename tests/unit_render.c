@@ -350,6 +350,22 @@ TEST(png_alloc_failures) {
     rm_dir(dir);
 }
 
+/* A 2D scene lo = 0, hi = (w, hh) at dx with an elastic material (*m its index), for the particle-fill pictures. */
+static hearth_scene *elastic_2d(double dx, double w, double hh, int *m) {
+    hearth_scene_def sd = hearth_default_scene_def();
+    sd.dim = 2, sd.dx = dx;
+    sd.lo[0] = sd.lo[1] = sd.lo[2] = 0;
+    sd.hi[0] = w, sd.hi[1] = hh, sd.hi[2] = 0.01;
+    hearth_scene *s = fx_scene_def(&sd);
+    *m = -1;
+    if (!s) return NULL;
+    const char *names[] = {"E", "nu", "density"};
+    const double vals[] = {2e5, 0.3, 1000};
+    hearth_error err;
+    *m = hearth_scene_add_material(s, "elastic", names, vals, 3, &err);
+    return s;
+}
+
 /* A 2D body whose particles have paired up (#18, helper userfix5; userview3's item 6: the leavened physical cookies,
  * particles at J ~2.5 whose nearest neighbour lies at 0.73 of their own spacing, drew as loose beads): a lattice of
  * spacing h (each particle's volume h^2) whose columns are moved 0.3 h toward each other in pairs, so a disc of 1.3 h
@@ -360,18 +376,11 @@ TEST(png_particles_paired_filled) {
     char dir[64], path[128];
     make_dir(dir, sizeof dir);
     snprintf(path, sizeof path, "%s/pairs.png", dir);
-    hearth_scene_def sd = hearth_default_scene_def();
-    sd.dim = 2, sd.dx = 0.01;
-    sd.lo[0] = sd.lo[1] = sd.lo[2] = 0;
-    sd.hi[0] = 0.2, sd.hi[1] = 0.1, sd.hi[2] = 0.01;
-    hearth_scene *s = fx_scene_def(&sd);
-    CHECK(s != NULL);
-    if (!s) return;
-    const char *names[] = {"E", "nu", "density"};
-    const double vals[] = {2e5, 0.3, 1000};
     hearth_error err;
-    int m = hearth_scene_add_material(s, "elastic", names, vals, 3, &err);
-    CHECK(m >= 0);
+    int m;
+    hearth_scene *s = elastic_2d(0.01, 0.2, 0.1, &m);
+    CHECK(s != NULL && m >= 0);
+    if (!s) return;
     const double h = 0.005, x0 = 0.05, y0 = 0.03;
     enum { NX = 20, NY = 8 };
     double X[3 * (NX * NY + 1)];
@@ -470,18 +479,11 @@ TEST(png_narrow_title_two_lines) {
 TEST(png_particle_fill_memory_bounded) {
     char dir[64], path[128];
     make_dir(dir, sizeof dir);
-    hearth_scene_def sd = hearth_default_scene_def();
-    sd.dim = 2, sd.dx = 0.005;
-    sd.lo[0] = sd.lo[1] = sd.lo[2] = 0;
-    sd.hi[0] = 1, sd.hi[1] = 0.6, sd.hi[2] = 0.01;
-    hearth_scene *s = fx_scene_def(&sd);
-    CHECK(s != NULL);
-    if (!s) return;
-    const char *names[] = {"E", "nu", "density"};
-    const double vals[] = {2e5, 0.3, 1000};
     hearth_error err;
-    int m = hearth_scene_add_material(s, "elastic", names, vals, 3, &err);
-    CHECK(m >= 0);
+    int m;
+    hearth_scene *s = elastic_2d(0.005, 1, 0.6, &m);
+    CHECK(s != NULL && m >= 0);
+    if (!s) return;
     enum { NX = 160, NY = 80 };
     const double h = 0.0025;
     double *X = malloc(sizeof(double) * 3 * NX * NY);
@@ -513,9 +515,9 @@ TEST(png_particle_fill_memory_bounded) {
     const double added = (double)(filled - discs) / (1 << 20);
     printf("%.0f x %.0f px picture, %.2f px per mm (a fill sample a pixel below %.2f px per mm): the library held %.2f MB; "
            "peak over it %.2f MB drawing the discs alone, %.2f MB filled: the fill adds %.2f MiB (bar 2)\n",
-           in.area[2], in.area[3], px_per_m / 1000, 8 / (sd.dx * 1000), held / 1e6, (discs - held) / 1e6,
+           in.area[2], in.area[3], px_per_m / 1000, 8 / (s->def.dx * 1000), held / 1e6, (discs - held) / 1e6,
            (filled - held) / 1e6, added);
-    CHECK(px_per_m * 0.125 * sd.dx <= 1.0); /* the picture is sampled at a pixel, as the bar's numbers assume */
+    CHECK(px_per_m * 0.125 * s->def.dx <= 1.0); /* the picture is sampled at a pixel, as the bar's numbers assume */
     CHECK(added <= 2.0);
     hearth_scene_destroy(s);
     rm_dir(dir);
