@@ -345,8 +345,8 @@ if all(float(r["leavener"]) > 0 and float(r["oven_degC"]) < 190 for r in bad):
           "through the cookie's middle; 5 mm: the crown at 150 degC, the right flank at 110), within the 1% bar at "
           "a link of 1.04-1.07 dx (3.75 mm: 1 of 280 beyond 1.05 dx, none beyond 1.1); the cooler sheet leaves the 110 degC "
           "core unset at the end (68 of 280 under 78 degC against 21, J 3.39 against 3.28), no gas pressure builds (under "
-          "2.7 kPa), and which seam crosses is the seeding's (3.75 mm, 110 degC, seeds 1-3: 163/138/120 on the drawing "
-          "sheet, 15/146/12 without). docs/validation.md 'The physical cookie in the cooler ovens (#18, helper cookiecool)', 'A leavener runs out (#18, "
+          "2.7 kPa), and which seam crosses is the seeding's (3.75 mm, 110 degC, seeds 1-5: 163/138/120/127/24 on the "
+          "drawing sheet, 15/146/12/76/15 without). docs/validation.md 'The physical cookie in the cooler ovens (#18, helper cookiecool)', 'A leavener runs out (#18, "
           "helper depletion)', 'The sheet gives the food its heat (#18, helper traydraw)' and 'The cool oven's cookie on "
           "the drawing sheet: a seam at the link, not particles leaving (#18, helper cookiecool2)'")
     sys.exit(77)
