@@ -434,6 +434,16 @@ static hl_motion *new_motion(lua_State *L, int vidx, int oidx, const char *what)
 
 /* s:_collider(shape, mode, friction, velocity (vec|fn), omega (num|vec|fn), pivot, ...) -> id */
 
+/* s:collider's optional number at idx, named by its key (unit: what the message adds after "a number"): 1 and *out set
+ * when given, 0 when nil (*out keeps its default); any other type is an error naming the key. */
+static int collider_number(lua_State *L, int idx, const char *key, const char *unit, double *out) {
+    if (lua_isnoneornil(L, idx)) return 0;
+    if (lua_type(L, idx) != LUA_TNUMBER)
+        return luaL_error(L, "s:collider: %s is a %s; valid: a number%s", key, luaL_typename(L, idx), unit);
+    *out = lua_tonumber(L, idx);
+    return 1;
+}
+
 static int l_collider(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     hearth_collider_def cd = hearth_default_collider_def();
@@ -449,22 +459,16 @@ static int l_collider(lua_State *L) {
     cd.beta = luaL_optnumber(L, 9, 0);
     if (!lua_isnoneornil(L, 10)) cd.saturation = luaL_checknumber(L, 10);
     cd.beta_water = luaL_optnumber(L, 11, 0);
-    if (!lua_isnoneornil(L, 12)) { /* its range: collider_init; a wrong type named here, not as argument #12 */
-        if (lua_type(L, 12) != LUA_TNUMBER)
-            return luaL_error(L, "s:collider: start_temperature is a %s; valid: a number, degrees C", luaL_typename(L, 12));
-        cd.start_temperature = lua_tonumber(L, 12);
-    }
+    /* the warming and drawing sheet's numbers (their ranges: collider_init); a wrong type named here by its key, not
+     * as argument #12 */
+    collider_number(L, 12, "start_temperature", ", degrees C", &cd.start_temperature);
     cd.warm_time = luaL_optnumber(L, 13, 0);
-    /* a sheet the food draws from: heat_capacity and area (their ranges: collider_init), and face_beta, warm_time's
-     * other name (warm_time = heat_capacity / face_beta) */
-    static const char *const sheet_keys[] = {"heat_capacity", "area", "face_beta"};
-    for (int k = 14; k <= 16; k++)
-        if (!lua_isnoneornil(L, k) && lua_type(L, k) != LUA_TNUMBER)
-            return luaL_error(L, "s:collider: %s is a %s; valid: a number", sheet_keys[k - 14], luaL_typename(L, k));
-    cd.heat_capacity = luaL_optnumber(L, 14, 0);
-    cd.area = luaL_optnumber(L, 15, 0);
-    if (!lua_isnoneornil(L, 16)) {
-        const double fb = lua_tonumber(L, 16);
+    /* a sheet the food draws from: heat_capacity and area, and face_beta, warm_time's other name (warm_time =
+     * heat_capacity / face_beta) */
+    collider_number(L, 14, "heat_capacity", "", &cd.heat_capacity);
+    collider_number(L, 15, "area", "", &cd.area);
+    double fb = NAN;
+    if (collider_number(L, 16, "face_beta", "", &fb)) {
         if (!(fb > 0 && fb <= 1e9))
             return luaL_error(L, "s:collider: face_beta = %f W/(m^2 K); valid range (0, 1e9] (the oven's coefficient on "
                                  "the sheet's faces)", fb);

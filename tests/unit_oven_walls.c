@@ -230,6 +230,16 @@ TEST(mpm_oven_walls_disc_converges_to_radial_reference) {
     CHECK(e[2] < 5e-3);
 }
 
+/* A pinned 20 x 10 mm block of a Newtonian fluid (rho, c; at T0) at (0.01, 0.01): the body both SPH walls tests heat. */
+static int add_pinned_block(hearth_scene *s, double rho, double c, double T0) {
+    const char *n[] = {"density", "bulk", "viscosity", "specific_heat"};
+    const double v[] = {rho, 1e4, 1.0, c};
+    hearth_error err;
+    const int m = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
+    const double blo[3] = {0.01, 0.01, -0.5}, bhi[3] = {0.03, 0.02, 0.5};
+    return m >= 0 && sph_box(s, m, blo, bhi, 1, T0) >= 0;
+}
+
 /* SPH: a pinned 2D block 20 x 10 mm at dx 1 mm (one particle a cell), no conduction (heat_int 0, heat_ext 0) and no
  * air (beta 0), so each outer particle is a lumped body of its own: m = rho dx^2, face dx (a straight face's
  * particle, oshare 1), m c / A = rho c dx. Walls 250 degC, eps 0.9, from 20 degC; c 1 J/(kg K) so the rise takes
@@ -252,12 +262,8 @@ TEST(sph_oven_walls_heat_outer_particles_as_closed_form) {
     hearth_scene *s = hearth_scene_create(&d, NULL);
     CHECK(s != NULL);
     if (!s) return;
-    const char *n[] = {"density", "bulk", "viscosity", "specific_heat"};
-    const double v[] = {rho, 1e4, 1.0, c};
+    CHECK(add_pinned_block(s, rho, c, T0));
     hearth_error err;
-    const int m = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
-    const double blo[3] = {0.01, 0.01, -0.5}, bhi[3] = {0.03, 0.02, 0.5};
-    CHECK(m >= 0 && sph_box(s, m, blo, bhi, 1, T0) >= 0);
     const double a = Tw + K0, tau = rho * c * dx / (4 * eps * SIGMA * a * a * a);
     const double share[3] = {0.3, 0.6, 0.8};
     double worst = 0;
@@ -323,12 +329,8 @@ TEST(sph_oven_walls_flux_crosses_film_as_closed_form) {
     hearth_scene *s = hearth_scene_create(&def, NULL);
     CHECK(s != NULL);
     if (!s) return;
-    const char *n[] = {"density", "bulk", "viscosity", "specific_heat"};
-    const double v[] = {rho, 1e4, 1.0, c};
+    CHECK(add_pinned_block(s, rho, c, T0));
     hearth_error err;
-    const int m = hearth_scene_add_material(s, "newtonian", n, v, 4, &err);
-    const double blo[3] = {0.01, 0.01, -0.5}, bhi[3] = {0.03, 0.02, 0.5};
-    CHECK(m >= 0 && sph_box(s, m, blo, bhi, 1, T0) >= 0);
     CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
     const double dt = s->dt_last, rad = eps * SIGMA;
     const double Ts = walls_face_root(beta, Ta, rad, Tw, T0, kappa / d);

@@ -140,16 +140,20 @@ int thermal_cg_iterations(const hearth_scene *s) { return s->heat.cg_iterations;
 
 int thermal_active(const hearth_scene *s) { return (s->ps.enabled & (1u << PC_TEMPERATURE)) != 0; }
 
+double thermal_walls_h_max(const hearth_scene *s) {
+    if (!thermal_oven_radiates(&s->def)) return 0.0;
+    double hot = s->def.oven_temperature; /* the walls or the hottest other heat */
+    for (int c = 0; c < s->ncol; c++)
+        if (!isnan(s->cols[c].temperature) && s->cols[c].temperature > hot) hot = s->cols[c].temperature;
+    const double t = (s->def.oven_wall_temperature > hot ? s->def.oven_wall_temperature : hot) + KELVIN;
+    return t > 0 ? 4.0 * thermal_oven_rad(&s->def) * t * t * t : 0.0;
+}
+
 double thermal_dt_limit(const hearth_scene *s) {
     if (!thermal_active(s) || s->def.heat_implicit) return INFINITY;
     /* the strongest boundary coupling: a node's heat capacity against S beta */
     double beta = isnan(s->def.oven_temperature) ? 0 : s->def.oven_beta;
-    if (thermal_oven_radiates(&s->def)) { /* the walls' h_r at its largest: the walls or the hottest other heat (thermal.h) */
-        double hot = s->def.oven_temperature;
-        for (int c = 0; c < s->ncol; c++)
-            if (!isnan(s->cols[c].temperature) && s->cols[c].temperature > hot) hot = s->cols[c].temperature;
-        beta += thermal_radiative_h_max(thermal_oven_rad(&s->def), s->def.oven_wall_temperature, hot);
-    }
+    beta += thermal_walls_h_max(s); /* the walls' h_r at its largest (0 without walls) */
     for (int c = 0; c < s->ncol; c++)
         if (!isnan(s->cols[c].temperature) && isfinite(s->cols[c].beta) && s->cols[c].beta > beta) beta = s->cols[c].beta; /* held nodes are not integrated */
     int held = 0; /* a held collider's Nitsche penalty acts as beta = gamma kappa / dx */

@@ -138,13 +138,10 @@ static inline double thermal_oven_exchange(double beta, double t_air, double rad
     *t_out = to, *r = rr;
     return B;
 }
-/// The largest h_r a face meets (W/(m^2 K)): 4 rad T^3 at the hotter of the walls and hot, the highest temperature
-/// (degrees C) a face may reach by the scene's other heat (the oven's air, a heated collider); for the explicit
-/// step's Robin limit.
-static inline double thermal_radiative_h_max(double rad, double t_wall, double hot) {
-    const double t = (t_wall > hot ? t_wall : hot) + KELVIN;
-    return rad > 0 && t > 0 ? 4.0 * rad * t * t * t : 0.0;
-}
+/// The largest h_r a face meets in scene s (W/(m^2 K)): 4 eps sigma T^3 at the hotter of the walls and the highest
+/// temperature a face may reach by the scene's other heat (the oven's air, a heated collider); 0 without radiating
+/// walls. For the explicit steps' Robin limits (thermal_dt_limit, SPH's sph_heat_stable_dt).
+double thermal_walls_h_max(const struct hearth_scene *s);
 
 /// Is heat transport on for this scene (temperature live)?
 int thermal_active(const struct hearth_scene *s);

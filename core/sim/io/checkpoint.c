@@ -202,7 +202,7 @@ static void get_real_setting(ck_cursor *c, hearth_scene_def *d, const char *name
     }
     double *v = (double *)((char *)d + e->offset);
     *v = get_f64(c);
-    if (c->bad) return;
+    if (c->bad || (e->nan_ok && isnan(*v))) return; /* NaN where the table says it means "none" */
     if (!(isfinite(*v) && (e->min_open ? *v > e->min : *v >= e->min) && *v <= e->max)) {
         const int unit = strcmp(e->unit, "1") != 0; /* "1": dimensionless, no unit to print */
         snprintf(c->msg, sizeof c->msg, "scene: %s = %g%s%s is outside its valid range %c%g, %g]", name, *v,
@@ -275,14 +275,7 @@ static void get_def(ck_cursor *c, hearth_scene_def *d, uint32_t version) {
     } else
         d->field_steps = 1; /* written single rate (every step), whatever today's default: their bits */
     if (version >= 16) { /* the oven's radiating walls; NaN walls: none (an older file's oven has none: its bits) */
-        d->oven_wall_temperature = get_f64(c);
-        const hearth_setting *e = hearth_scene_setting("oven.wall_temperature");
-        if (!c->bad && !isnan(d->oven_wall_temperature) &&
-            !(d->oven_wall_temperature >= e->min && d->oven_wall_temperature <= e->max)) {
-            snprintf(c->msg, sizeof c->msg, "scene: oven.wall_temperature = %g degC is outside its valid range [%g, %g]",
-                     d->oven_wall_temperature, e->min, e->max);
-            ck_fail(c, c->msg);
-        }
+        get_real_setting(c, d, "oven.wall_temperature");
         get_real_setting(c, d, "oven.emissivity");
         get_real_setting(c, d, "oven.radiation_scale");
     } else

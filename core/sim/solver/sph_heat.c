@@ -296,12 +296,7 @@ double sph_heat_stable_dt(const hearth_scene *s, double hmin, double rhomin) {
     if (o->heat_ext > 0 && T) dt = fmin(dt, 0.25 * rhomin * hmin / o->h_factor / o->heat_ext * ext);
     if (T) { /* Robin: a face of V / spacing against the heat capacity rho c V */
         double beta = isnan(s->def.oven_temperature) ? 0 : s->def.oven_beta, bc = 0;
-        if (thermal_oven_radiates(&s->def)) { /* the walls' h_r at its largest (thermal.h): walls or the hottest other heat */
-            double hot = s->def.oven_temperature;
-            for (int k = 0; k < s->ncol; k++)
-                if (!isnan(s->cols[k].temperature) && s->cols[k].temperature > hot) hot = s->cols[k].temperature;
-            beta += thermal_radiative_h_max(thermal_oven_rad(&s->def), s->def.oven_wall_temperature, hot);
-        }
+        beta += thermal_walls_h_max(s); /* the walls' h_r at its largest (thermal.c; 0 without walls) */
         for (int k = 0; k < s->ncol; k++)
             if (!isnan(s->cols[k].temperature) && s->cols[k].beta > bc) bc = s->cols[k].beta;
         beta += bc;
