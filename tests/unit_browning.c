@@ -375,8 +375,14 @@ static void reading_is_what_browns(int solver) {
     hearth_shape *box = hearth_shape_box(c, h);
     bd.shape = box, bd.material = m, bd.ppc = sph ? 1 : 4, bd.jitter = 0, bd.fixed = !sph, bd.temperature = 20;
     if (!sph) bd.saturation = 0.2;
-    CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+    const int body = m >= 0 ? hearth_scene_add_body(s, &bd, &err) : -1;
     hearth_shape_free(box);
+    CHECK(body >= 0);
+    if (body < 0) {
+        fprintf(stderr, "set-up: %s\n", err.msg);
+        hearth_scene_destroy(s);
+        return;
+    }
     CHECK(hearth_scene_advance(s, sph ? 0.1 : 0.3, &err) == HEARTH_OK);
     const int n = s->ps.n;
     double *b0 = malloc(sizeof(double) * (size_t)n), *Tr = malloc(sizeof(double) * (size_t)n),
