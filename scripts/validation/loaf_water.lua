@@ -7,7 +7,9 @@
 --          4-8 times it (docs/validation.md, the section above)
 --   diff   multiplies the preset's water diffusivity (2e-9 m^2/s at 373 K and s0, chosen within 1e-10..1e-8)
 --   hearth run scripts/validation/loaf_water.lua --quiet [--set dx=0.0025] [--set evap=8] [--set diff=0.1] [--out DIR]
--- from the source root (or --set loaf=PATH to loaf_physical.lua). It writes what loaf_physical.lua writes.
+-- from the source root (or --set loaf=PATH to loaf_physical.lua). It writes what loaf_physical.lua writes, and at the
+-- end prints the loaf's axis column (particles within dx/2 of it, from the top down): each one's depth under the top
+-- particle, saturation and browning, and where the moisture ratio X = s / s0 first reaches 0.5 (the dried layer).
 local h = require "hearth"
 local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0, tray = "separate", h_c = 0, evap = 1,
   diff = 1, loaf = "scripts/scenes/baking/loaf_physical.lua" }
@@ -29,4 +31,30 @@ h.material = function(plugin, params)
   return material(plugin, params)
 end
 
+-- the scene loaf_physical.lua makes, to read its particles at the end
+local scene, made = h.scene, nil
+h.scene = function(...)
+  made = scene(...)
+  return made
+end
+
 dofile(P.loaf)
+
+local r, X0, s0, col = made:particles { fields = { "x", "saturation", "browning" } }, 0.07, 0.218, {}
+for i = 1, r.n do
+  if math.abs(r.x[3 * i - 2] - X0) < P.dx / 2 then col[#col + 1] = { r.x[3 * i - 1], r.saturation[i], r.browning[i] } end
+end
+table.sort(col, function(a, b) return a[1] > b[1] end)
+local top, half = col[1][1], nil
+for k = 2, #col do
+  if col[k][2] >= 0.5 * s0 and not half then -- X = 0.5 between this particle and the one above, linearly
+    local a, b = col[k - 1], col[k]
+    half = top - (a[1] + (0.5 * s0 - a[2]) / (b[2] - a[2]) * (b[1] - a[1]))
+  end
+end
+print(("axis column at the end, dx %g m: X = 0.5 at %s mm under the top particle"):format(P.dx,
+  half and ("%.2f"):format(half * 1e3) or "(none)"))
+for k = 1, math.min(14, #col) do
+  print(("  %.2f mm under the top particle: saturation %.4f, browning %.4f"):format((top - col[k][1]) * 1e3, col[k][2],
+    col[k][3]))
+end
