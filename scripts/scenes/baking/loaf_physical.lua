@@ -25,7 +25,9 @@
 -- index, fields/browning.c's 0..1; the loaf's area, V0 J summed), temperature_%04d.png, and at the end temperature.png, saturation.png and
 -- browning.png; loaf.csv's base_lift_m is the most the lowest particle has risen off its start, over the raw
 -- base's middle 80% (16 columns of 4 mm across x0 +- 32 mm), and base_gap_m the most any column's lowest particle
--- edge stands off the tray.
+-- edge stands off the tray; top_surface_T_degC and top_surface_s the temperature and saturation the top particle
+-- browned at in the frame's last step (the fields browning_temperature, browning_saturation: its surface's, by
+-- the oven's and the evaporation's closures, browning.c), the crust's surface as the colour sees it.
 local h = require "hearth"
 local P = h.params { dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
   frames = h.number { 25, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" }, latent = true,
@@ -59,7 +61,8 @@ local function height() return h.recipes.height(s, X0, TRAY, 0.14, 280) end
 -- lowest one there (on the tray), the crumb the particle nearest the axis at
 -- 45% of the loaf's height
 local function crust_and_crumb(H)
-  local r = s:particles { fields = { "x", "temperature", "saturation", "browning" } }
+  local r = s:particles { fields = { "x", "temperature", "saturation", "browning", "browning_temperature",
+    "browning_saturation" } }
   local top, base, ctr, dc = nil, nil, nil, math.huge
   for i = 1, r.n do
     local x, y = r.x[3 * i - 2], r.x[3 * i - 1]
@@ -71,7 +74,7 @@ local function crust_and_crumb(H)
     end
   end
   return r.temperature[ctr], r.saturation[ctr], r.temperature[top], r.saturation[top], r.browning[top],
-    r.browning[base], r.browning[ctr]
+    r.browning[base], r.browning[ctr], r.browning_temperature[top], r.browning_saturation[top]
 end
 -- the loaf's area (m^2 per metre of depth, 2D): V0 J summed over its particles, every one made with the same V0
 -- (one dx and ppc), read at the start as volume / count (as bread.lua's)
@@ -116,7 +119,7 @@ local function base_gap()
 end
 local w0 = s:stats().water_mass
 local rows = { "t_real_min,centre_T_degC,centre_s,top_T_degC,top_s,height_m,water_left,top_browning,base_browning,"
-  .. "centre_browning,area_m2,base_lift_m,base_gap_m" }
+  .. "centre_browning,area_m2,base_lift_m,base_gap_m,top_surface_T_degC,top_surface_s" }
 local last
 print(rows[1]) -- the rows each frame prints below are loaf.csv's: its header first, so they read as columns
 -- the pictures' titles give the real time (the oven's rates run S times fast) beside the simulated seconds
@@ -124,9 +127,11 @@ s:run { until_t = until_t, every = until_t / P.frames,
   png = { field = "temperature", path = "temperature_%04d.png", time_scale = S },
   on_frame = function(f)
     local H = height()
-    local Tc, sc, Tt, st, bt, bb, bc = crust_and_crumb(H)
-    last = { f.t * S / 60, Tc, sc, Tt, st, H, s:stats().water_mass / w0, bt, bb, bc, area(), base_lift(), base_gap() }
-    rows[#rows + 1] = ("%.2f,%.2f,%.4f,%.2f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,%.6g,%.6f,%.6f"):format(table.unpack(last))
+    local Tc, sc, Tt, st, bt, bb, bc, Ts, ss = crust_and_crumb(H)
+    last = { f.t * S / 60, Tc, sc, Tt, st, H, s:stats().water_mass / w0, bt, bb, bc, area(), base_lift(), base_gap(),
+      Ts, ss }
+    rows[#rows + 1] = ("%.2f,%.2f,%.4f,%.2f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,%.6g,%.6f,%.6f,%.2f,%.4f")
+      :format(table.unpack(last))
     h.write("loaf.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
   end }
