@@ -401,7 +401,9 @@ if len(w) == 3 and all(baked[T]["alone"] == "1" and w[T] >= float(raw[T]["spread
           "the AACC disc's spread (16.6 Pa, 1.3e4 Pa s; branch cookiespread2-dough) on the drawing sheet it reaches 1.13-"
           "1.23x wide and stays 0.99-1.03x tall: the tray's friction (0.4) holds the base, which sets at 2.0 min at 190 "
           "degC (3.5 at 110) before the centre melts (2.5; 4.0), and over a held base the melted dough hardly flows (all "
-          "at 50 degC, nothing set: 84-86 mm, 15.7 mm tall, stopped by 1 min; on a frictionless tray 154 mm, 8.8 mm). "
+          "at 50 degC, nothing set: 84-86 mm, 15.7 mm tall, stopped by 1 min; on a frictionless tray 154 mm, 8.8 mm): "
+          "its rest shape reads a yield stress of 34 Pa in shear against 9.6, less at dx 2.5 mm (26) and without "
+          "flow_stress (19; 13 at 2.5 mm), so the grid's held base layer and flow_stress hold it, not the sheet. "
           "docs/validation.md 'Does the physical cookie spread on the drawing sheet? (#18, helper cookiespread2)'")
     sys.exit(77)
 sys.exit(1)
