@@ -40,7 +40,9 @@
 --                           writes oven_<T>/browning.png and prints each cookie's browning at its
 --                           top, rim, base and centre. Measured (2D, dx 5 mm): the unleavened
 --                           cookie barely spreads (its measured yield stress, 61.5 Pa in shear once
---                           the fat melts, holds its 17.5 mm); the soda's CO2 (0.069 mol/kg) comes
+--                           the fat melts, holds its 17.5 mm: 62 -> 66 mm on the drawing sheet, raw.csv
+--                           against cookies.csv; docs/validation.md "Does the physical cookie spread on
+--                           the drawing sheet? (#18, helper cookiespread2)"); the soda's CO2 (0.069 mol/kg) comes
 --                           in two shares, the NH4Cl one on a 60 degC bell before the 78 degC set
 --                           and the leftover soda's at 100 degC, and the leavened cookie stands
 --                           1.51x the unleavened at 190 degC (94 mm wide), 1.86x at 150, 1.97x at
@@ -59,7 +61,8 @@
 --                           noise (docs/validation.md, "Fig. 17: the top's
 --                           curvature and its noise").
 -- Writes, under hearth-out/cookies/: oven_<T>/heat_%04d.png (the heat
--- progress, Fig. 3's right column) and cookies.csv (final height, spread and
+-- progress, Fig. 3's right column), raw.csv (each cookie's height and spread as placed, by the same probe) and
+-- cookies.csv (final height, spread and
 -- top curvature per cookie; negative curvature = domed; alone = 1 when no
 -- other cookie reaches its slot, so its readings are its own; particles, and shed: how many of them lie
 -- beyond two spacings of its largest piece, shed_swollen the same with the link stretched by J; see shed
@@ -214,6 +217,9 @@ local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_pe
 -- series.csv's t_s is the simulated time (the paper preset's Table 2 animation units; the physical preset's S times
 -- fast, whose real time t_real_s = S t_s comes last, as pancake.lua's and lava_cake.lua's)
 local series = { "oven_degC,leavener,t_s,height_m,spread_m,centre_temperature_degC" .. (S and ",t_real_s" or "") }
+-- raw.csv: each cookie's height and spread as placed, by the same probe as cookies.csv's (issue #18, helper
+-- cookiespread: claim_cookie_physical_spreads compares the baked cookie with its raw dough at each dx)
+local raw_rows = { "oven_degC,leavener,height_m,spread_m" }
 for _, T in ipairs(ovens) do
   local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.09, 0.12) },
     oven = { temperature = T, beta = oven.beta, wall_temperature = oven.wall_temperature,
@@ -400,6 +406,11 @@ for _, T in ipairs(ovens) do
     return h.top_curvature(s, { keep = function(id) return cookie_of(id) == i end, origin = xs[i], bin = dx,
       fraction = 0.6, z = d3 and zc or nil, rest = rest_y })
   end
+  for i, a in ipairs(leaveners) do
+    local hgt, spread = measure(i)
+    raw_rows[#raw_rows + 1] = ("%g,%g,%.5f,%.5f"):format(T, a, hgt, spread)
+  end
+  h.write("raw.csv", table.concat(raw_rows, "\n") .. "\n")
   -- the leaveners too, left to right as they lie on the tray, when they fit a title's 64 bytes (three cookies with
   -- nothing to say which is which)
   local lv = {}
