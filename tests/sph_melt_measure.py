@@ -24,7 +24,7 @@ FLOOR, X0, X1, XC = 0.01, 0.11, 0.19, 0.15
 
 def load(path):
     with open(path) as f:
-        return [(float(r["x"]), float(r["y"])) for r in csv.DictReader(f)]
+        return [(float(r["x_m"]), float(r["y_m"])) for r in csv.DictReader(f)]
 
 
 def pieces(pts, link):

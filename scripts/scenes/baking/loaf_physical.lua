@@ -26,6 +26,8 @@
 -- browning.png; loaf.csv's base_lift_m is the most the lowest particle has risen off its start, over the raw
 -- base's middle 80% (16 columns of 4 mm across x0 +- 32 mm), and base_gap_m the most any column's lowest particle
 -- edge stands off the tray.
+-- water_left, the loaf's water over the raw dough's, has no unit (tests/scene_csv.py's unit rule):
+-- loaf.csv has no unit: water_left
 local h = require "hearth"
 local P = h.params { dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
   frames = h.number { 25, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" }, latent = true,
@@ -115,7 +117,7 @@ local function base_gap()
   return m
 end
 local w0 = s:stats().water_mass
-local rows = { "t_real_min,centre_T_degC,centre_s,top_T_degC,top_s,height_m,water_left,top_browning,base_browning,"
+local rows = { "t_real_min,centre_T_degC,centre_saturation,top_T_degC,top_saturation,height_m,water_left,top_browning,base_browning,"
   .. "centre_browning,area_m2,base_lift_m,base_gap_m" }
 local last
 print(rows[1]) -- the rows each frame prints below are loaf.csv's: its header first, so they read as columns
