@@ -343,5 +343,92 @@ TEST(browning_surface_with_oven_lit_later) {
     CHECK(h[1] == h[0] && h[2] == h[0]);
 }
 
+/* What the colour reads (#18, helper crustdry): the fields browning_temperature and browning_saturation are what
+ * the kinetics read in the last step, so a scene can print its crust's surface history. Bars set before the first
+ * run (17:51 UTC, 2026-12-07; the off-surface count reworded at 17:53, still before it): after one more step every
+ * particle's index is browning_advance of its index before, at the rate of the two fields read after the step
+ * (|diff| <= 1e-14); on MPM's air surface they are the surface's (some particles read hotter than their own
+ * temperature, all below the 250 degC oven, and a wet block's surface reads drier than its particle), every
+ * particle off it (its offsets PC_SURFACE both 0) the particle's own, bit for bit; an SPH outer particle reads its
+ * face, hotter than itself; without water the saturation is NaN. MPM: a pinned wet block (s 0.2, evaporating,
+ * diffusing) in a 250 degC oven, beta 40, 0.3 s at browning_scale 600; SPH: a free block, no water, 0.1 s. */
+static void reading_is_what_browns(int solver) {
+    const double S = 600;
+    const int sph = solver == HEARTH_SOLVER_SPH;
+    hearth_scene *s = brown_scene(solver, 0.005, 0.2, S, 250);
+    CHECK(s != NULL);
+    if (!s) return;
+    s->def.oven_beta = 40;
+    if (sph) s->def.sph.heat_int = S * 0.4 / 2800;
+    hearth_error err;
+    int m;
+    if (sph) {
+        m = brown_material(s, solver, 2800 / S, 0.4);
+    } else {
+        const char *n[] = {"E", "nu", "density", "specific_heat", "conductivity", "water_diffusivity", "evaporation"};
+        const double v[] = {1e4, 0.3, 500, 2800 / S, 0.4, 1e-8 * S, 1.2e-5 * S};
+        m = hearth_scene_add_material(s, "elastic", n, v, 7, &err);
+    }
+    CHECK(m >= 0);
+    const double c[3] = {0.1, 0.1, 0}, h[3] = {0.04, 0.04, 0.5};
+    hearth_body_def bd = hearth_default_body_def();
+    hearth_shape *box = hearth_shape_box(c, h);
+    bd.shape = box, bd.material = m, bd.ppc = sph ? 1 : 4, bd.jitter = 0, bd.fixed = !sph, bd.temperature = 20;
+    if (!sph) bd.saturation = 0.2;
+    const int body = m >= 0 ? hearth_scene_add_body(s, &bd, &err) : -1;
+    hearth_shape_free(box);
+    CHECK(body >= 0);
+    if (body < 0) {
+        fprintf(stderr, "set-up: %s\n", err.msg);
+        hearth_scene_destroy(s);
+        return;
+    }
+    CHECK(hearth_scene_advance(s, sph ? 0.1 : 0.3, &err) == HEARTH_OK);
+    const int n = s->ps.n;
+    double *b0 = malloc(sizeof(double) * (size_t)n), *Tr = malloc(sizeof(double) * (size_t)n),
+           *sr = malloc(sizeof(double) * (size_t)n), *sown = malloc(sizeof(double) * (size_t)n);
+    memcpy(b0, pcold(&s->ps, PC_BROWNING), sizeof(double) * (size_t)n);
+    CHECK(hearth_scene_step(s, 1, &err) == HEARTH_OK);
+    CHECK(s->ps.n == n);
+    CHECK(hearth_scene_particle_field(s, "browning_temperature", Tr, &err) == HEARTH_OK);
+    CHECK(hearth_scene_particle_field(s, "browning_saturation", sr, &err) == HEARTH_OK);
+    const int wet = (s->ps.enabled & (1u << PC_WATER)) != 0;
+    if (wet) CHECK(hearth_scene_particle_field(s, "saturation", sown, &err) == HEARTH_OK);
+    const double *T = pcold(&s->ps, PC_TEMPERATURE), *b = pcold(&s->ps, PC_BROWNING);
+    /* off the surface: MPM's offsets both 0 (browning.c), SPH's particles not outer (the boundary field: sph_outer.c,
+     * where sph_heat.c gives a face temperature) */
+    const double *o = (s->ps.enabled & (1u << PC_SURFACE)) ? pcold(&s->ps, PC_SURFACE) : NULL;
+    double *face = malloc(sizeof(double) * (size_t)n);
+    CHECK(hearth_scene_particle_field(s, "boundary", face, &err) == HEARTH_OK);
+    double worst = 0, Tmax = -INFINITY, ds = 0;
+    int hotter = 0, own = 0, off = 0, nan_s = 0;
+    for (int i = 0; i < n; i++) {
+        const double f = wet ? browning_water_factor(sr[i], pcold(&s->ps, PC_SAT0)[i]) : 1.0;
+        worst = fmax(worst, fabs(b[i] - browning_advance(b0[i], browning_rate(Tr[i], S) * f, s->dt_last)));
+        Tmax = fmax(Tmax, Tr[i]);
+        const int on = o ? (o[2 * i] != 0.0 || o[2 * i + 1] != 0.0) : face[i] > 0.5;
+        if (on && Tr[i] > T[i]) hotter++;
+        if (on && wet) ds = fmin(ds, sr[i] - sown[i]);
+        if (!on) off++, own += Tr[i] == T[i] && (!wet || sr[i] == sown[i]);
+        nan_s += isnan(sr[i]);
+    }
+    printf("  %s: %d particles after %.3f s (step dt %.3g s): index against the fields' rate, worst |diff| %.1e; "
+           "%d read a hotter surface (hottest %.2f degC), %d of %d off it their own; %s\n",
+           sph ? "sph" : "mpm", n, s->t, s->dt_last, worst, hotter, Tmax, own, off,
+           wet ? "water live" : "no water");
+    if (wet) printf("  the surface's saturation against its particle's, most below: %.4f\n", ds);
+    CHECK(worst <= 1e-14);
+    CHECK(hotter > 0 && off > 0 && own == off);
+    CHECK(Tmax < 250);
+    if (wet) CHECK(ds < 0 && nan_s == 0);
+    else CHECK(nan_s == n);
+    free(b0), free(Tr), free(sr), free(sown), free(face);
+    hearth_scene_destroy(s);
+}
+
+TEST(browning_reading_is_what_browns) { reading_is_what_browns(HEARTH_SOLVER_MPM); }
+TEST(browning_reading_is_what_browns_sph) { reading_is_what_browns(HEARTH_SOLVER_SPH); }
+
 TEST_MAIN(T(browning_closed_form), T(browning_checkpoint_roundtrip), T(browning_surface_not_crumb), T(browning_surface_not_crumb_sph), T(browning_history_not_current),
-          T(browning_wet_does_not_brown), T(browning_surface_threads), T(browning_surface_with_oven_lit_later))
+          T(browning_wet_does_not_brown), T(browning_surface_threads), T(browning_surface_with_oven_lit_later),
+          T(browning_reading_is_what_browns), T(browning_reading_is_what_browns_sph))

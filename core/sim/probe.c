@@ -17,6 +17,7 @@
 #include "plugins.h"
 #include "alloc.h"
 #include "error.h"
+#include "browning.h"
 #include "gas.h"
 #include "material.h"
 #include "scene.h"
@@ -28,7 +29,7 @@ typedef enum field_id {
     F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_STRESS_XY, F_TEMPERATURE, F_BOUNDARY,
     F_GAS, F_POROSITY, F_GAS_PRESSURE, F_GAS_MADE, F_GAS_MADE_2, F_SATURATION, F_WATER_MASS, F_WATER_PRESSURE, F_BROWNING,
     F_MIX_RATIO, F_STRESS,
-    F_SXX, F_SYY, F_SZZ, F_SXZ, F_SYZ, F_DAMAGE, F_COUNT
+    F_SXX, F_SYY, F_SZZ, F_SXZ, F_SYZ, F_DAMAGE, F_BROWNING_T, F_BROWNING_S, F_COUNT
 } field_id;
 
 /* A field is live when its column is enabled (column -1: always live;
@@ -76,11 +77,20 @@ static const struct {
     [F_SXX] = {"stress_xx", "Pa", 1, -1, NULL},       [F_SYY] = {"stress_yy", "Pa", 1, -1, NULL},
     [F_SZZ] = {"stress_zz", "Pa", 1, -1, NULL},       [F_SXZ] = {"stress_xz", "Pa", 1, -1, NULL},
     [F_SYZ] = {"stress_yz", "Pa", 1, -1, NULL},
+    /* what the crust's colour read in the last step (browning.c's browning_reading): the surface's temperature and
+     * saturation on the oven's air surface (MPM), an SPH outer particle's face, else the particle's own. Not listed
+     * (no dump or dashboard carries them): a diagnostic for the crust's history (#18, helper crustdry) */
+    [F_BROWNING_T] = {"browning_temperature", "degC", 1, PC_BROWNING,
+                      "set browning = true in the scene (h.scene{browning = true}); the saturation also needs water"},
+    [F_BROWNING_S] = {"browning_saturation", "1", 1, PC_BROWNING,
+                      "set browning = true in the scene (h.scene{browning = true}); the saturation also needs water"},
 };
 
-/* Scalar fields that are one component of a listed field: not listed themselves. */
+/* Scalar fields that are one component of a listed field, and browning's readings (diagnostics): not listed
+ * themselves. */
 static int field_is_component(int f) {
-    return f == F_VX || f == F_VY || f == F_VZ || f == F_STRESS_XY || (f >= F_SXX && f <= F_SYZ);
+    return f == F_VX || f == F_VY || f == F_VZ || f == F_STRESS_XY || (f >= F_SXX && f <= F_SYZ) || f == F_BROWNING_T ||
+           f == F_BROWNING_S;
 }
 
 static int field_lookup(const char *name) {
@@ -187,7 +197,7 @@ static int gas_particle(const hearth_scene *s, int i) {
 }
 
 static int carries(const hearth_scene *s, int f, int i) {
-    if (f == F_SATURATION || f == F_BROWNING) return !gas_particle(s, i);
+    if (f == F_SATURATION || f == F_BROWNING || f == F_BROWNING_T || f == F_BROWNING_S) return !gas_particle(s, i);
     if (f == F_MIX_RATIO) return pcoli(&s->ps, PC_MAT)[i] == s->mix.mat;
     return 1;
 }
@@ -230,6 +240,12 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
         out[0] = s->mats.slot[pcoli(ps, PC_MAT)[i]].core[CP_WATER_STIFFNESS] * (water_saturation(s, i) - pcold(ps, PC_SAT0)[i]);
         break;
     case F_BROWNING: out[0] = carries(s, f, i) ? pcold(ps, PC_BROWNING)[i] : NAN; break; /* Delta E / 52 (browning.c) */
+    case F_BROWNING_T: case F_BROWNING_S: {
+        double T = NAN, sat = NAN;
+        if (carries(s, f, i)) browning_reading(s, i, &T, &sat);
+        out[0] = f == F_BROWNING_T ? T : sat;
+        break;
+    }
     case F_DAMAGE: {
         const int m = pcoli(ps, PC_MAT)[i];
         const material_slot *ms = &s->mats.slot[m];

@@ -839,6 +839,7 @@ function S:particles(o)
     if f == "stress" then
       for _, c in ipairs { "xx", "yy", "zz", "xy", "xz", "yz" } do valid["stress_" .. c] = true end
     end
+    if f == "browning" then valid.browning_temperature, valid.browning_saturation = true, true end -- probe.c: unlisted
   end
   local r = { n = self:stats().particles }
   for k, f in ipairs(o.fields) do

@@ -48,9 +48,10 @@
  *   cc -O2 -o top_reference top_reference.c -lm
  *   ./top_reference [h=0.05] [T0=25] [evap=1] [diff=1] [vf=1] [To=200] [beta=30]
  *                   [H=36] [tend=1500] [rad=0 hc=10 eps=0.9 Tw=200] [every=60] [quiet=0]
- *                   [tray=0 betap=100 Tp=200] [yc=-1] [hold=FILE] [cd=907.5] [geo=0]
+ *                   [tray=0 betap=100 Tp=200] [yc=-1] [hold=FILE] [cd=907.5] [geo=0] [bw=1.2e-5] [dw=2e-9]
  * h and H in mm; evap 0 sets beta^w = 0, diff 0 sets K = 0, vf 0 drops the
- * vapour factor (eq. 8's flux verbatim); tray=1 puts the bottom face on the
+ * vapour factor (eq. 8's flux verbatim); bw sets beta^w (kg/(m^2 s K)) and dw
+ * the water diffusivity D at 373.15 K and s0 (m^2/s), for what-ifs; tray=1 puts the bottom face on the
  * loaf's tray (h.recipes.tray: 200 degC through 100 W/(m^2 K) of contact, the
  * oven preset's pan) instead of the symmetry plane, for a column as tall as the
  * loaf; yc prints T at that depth (mm); hold=FILE holds the bottom cell at a
@@ -124,6 +125,7 @@ int main(int argc, char **argv) {
     const double h = arg(argc, argv, "h", 0.05) * 1e-3, T0 = arg(argc, argv, "T0", 25), H = arg(argc, argv, "H", 36) * 1e-3;
     const double tend = arg(argc, argv, "tend", 1500), every = arg(argc, argv, "every", 60);
     const int quiet = (int)arg(argc, argv, "quiet", 0);
+    BW = arg(argc, argv, "bw", BW), DREF = arg(argc, argv, "dw", DREF); /* what-ifs: beta^w, D (helper crustdry) */
     if (!(int)arg(argc, argv, "evap", 1)) BW = 0;
     KWAT = (int)arg(argc, argv, "diff", 1) ? DREF / ((TB + KELV) * S0) : 0;
     VF = (int)arg(argc, argv, "vf", 1);

@@ -144,29 +144,53 @@ static void surface_offsets(hearth_scene *s) {
     }
 }
 
+/* What particle i browns at (browning_step and browning_reading, so a probe shows what the kinetics read): on
+ * the oven's air surface (o, MPM) its surface's temperature and saturation, at an SPH outer particle (ts) its
+ * face's temperature and its own saturation, else its own; *sat is left alone without water. */
+static inline void reading(const hearth_scene *s, const double *o, const double *ts, int wet, int i, double *T,
+                           double *sat) {
+    const double Ti = pcold(&s->ps, PC_TEMPERATURE)[i];
+    if (o && (o[2 * i] != 0.0 || o[2 * i + 1] != 0.0)) { /* on the oven's air surface: its surface's colour */
+        *T = Ti + o[2 * i];
+        if (wet) *sat = water_saturation(s, i) + o[2 * i + 1];
+        return;
+    }
+    *T = ts && !isnan(ts[i]) ? ts[i] : Ti;
+    if (wet) *sat = water_saturation(s, i);
+}
+
+/* the surface offsets (MPM with an oven: scene.c) and a solver's own face temperatures (SPH's outer particles,
+ * sph_heat.c: NaN off them), or NULL */
+static const double *surface_of(const hearth_scene *s) {
+    return (s->ps.enabled & (1u << PC_SURFACE)) ? pcold(&s->ps, PC_SURFACE) : NULL;
+}
+static const double *faces_of(const hearth_scene *s) {
+    return s->solver->particle_values ? s->solver->particle_values(s, "surface_temperature") : NULL;
+}
+
+void browning_reading(const hearth_scene *s, int i, double *T, double *sat) {
+    const int wet = (s->ps.enabled & (1u << PC_WATER)) != 0;
+    *sat = NAN;
+    reading(s, surface_of(s), faces_of(s), wet, i, T, sat);
+}
+
 void browning_step(hearth_scene *s, double dt) {
     const particles *ps = &s->ps;
     const int n = ps->n;
     double *b = pcold(ps, PC_BROWNING);
-    const double *T = pcold(ps, PC_TEMPERATURE); /* browning = true makes it live (scene.c) */
     const int wet = (ps->enabled & (1u << PC_WATER)) != 0;
     const double *sat0 = wet ? pcold(ps, PC_SAT0) : NULL;
     const double scale = s->def.browning_scale;
     const int *mat = pcoli(ps, PC_MAT);
-    const int surf = (ps->enabled & (1u << PC_SURFACE)) != 0; /* MPM with an oven (scene.c) */
-    if (surf && !s->field_skip) surface_offsets(s);
-    const double *o = surf ? pcold(ps, PC_SURFACE) : NULL;
-    /* a solver that reads its own surface (SPH's outer particles, sph_heat.c): the face's temperature, NaN off it */
-    const double *ts = s->solver->particle_values ? s->solver->particle_values(s, "surface_temperature") : NULL;
+    const double *o = surface_of(s);
+    if (o && !s->field_skip) surface_offsets(s);
+    const double *ts = faces_of(s);
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         if (water_sph_gas(s, &s->mats.slot[mat[i]])) continue; /* an SPH bubble is gas: no crust of its own */
-        if (o && (o[2 * i] != 0.0 || o[2 * i + 1] != 0.0)) { /* on the oven's air surface: its surface's colour */
-            const double f = wet ? browning_water_factor(water_saturation(s, i) + o[2 * i + 1], sat0[i]) : 1.0;
-            b[i] = browning_advance(b[i], browning_rate(T[i] + o[2 * i], scale) * f, dt);
-            continue;
-        }
-        const double f = wet ? browning_water_factor(water_saturation(s, i), sat0[i]) : 1.0;
-        b[i] = browning_advance(b[i], browning_rate(ts && !isnan(ts[i]) ? ts[i] : T[i], scale) * f, dt);
+        double T, sat = 0.0;
+        reading(s, o, ts, wet, i, &T, &sat);
+        const double f = wet ? browning_water_factor(sat, sat0[i]) : 1.0;
+        b[i] = browning_advance(b[i], browning_rate(T, scale) * f, dt);
     }
 }

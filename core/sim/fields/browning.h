@@ -27,4 +27,9 @@ double browning_advance(double b, double kf, double dt);
 /// Advance every particle's PC_BROWNING by dt from its present temperature
 /// (and saturation, when the water field is live). The column must exist.
 void browning_step(struct hearth_scene *s, double dt);
+/// The temperature (degrees C) and saturation particle i browned at in the last step that stood: on the oven's air
+/// surface (MPM) its surface's, by the oven's and the evaporation's closures; at an SPH outer particle its face's
+/// temperature and its own saturation; else its own. sat is NaN without the water field. The probes' fields
+/// browning_temperature and browning_saturation (probe.c) read it.
+void browning_reading(const struct hearth_scene *s, int i, double *T, double *sat);
 #endif

@@ -25,7 +25,10 @@
 -- index, fields/browning.c's 0..1; the loaf's area, V0 J summed), temperature_%04d.png, and at the end temperature.png, saturation.png and
 -- browning.png; loaf.csv's base_lift_m is the most the lowest particle has risen off its start, over the raw
 -- base's middle 80% (16 columns of 4 mm across x0 +- 32 mm), and base_gap_m the most any column's lowest particle
--- edge stands off the tray; tray_T_degC the tray's temperature (it goes in cold and the dough draws on it).
+-- edge stands off the tray; top_surface_T_degC and top_surface_saturation the temperature and saturation the top
+-- particle browned at in the frame's last step (the fields browning_temperature, browning_saturation: its surface's,
+-- by the oven's and the evaporation's closures, browning.c), the crust's surface as the colour sees it; tray_T_degC
+-- the tray's temperature (it goes in cold and the dough draws on it).
 -- water_left, the loaf's water over the raw dough's, has no unit (tests/scene_csv.py's unit rule):
 -- loaf.csv has no unit: water_left
 local h = require "hearth"
@@ -66,7 +69,8 @@ local function height() return h.recipes.height(s, X0, TRAY, 0.14, 280) end
 -- lowest one there (on the tray), the crumb the particle nearest the axis at
 -- 45% of the loaf's height
 local function crust_and_crumb(H)
-  local r = s:particles { fields = { "x", "temperature", "saturation", "browning" } }
+  local r = s:particles { fields = { "x", "temperature", "saturation", "browning", "browning_temperature",
+    "browning_saturation" } }
   local top, base, ctr, dc = nil, nil, nil, math.huge
   for i = 1, r.n do
     local x, y = r.x[3 * i - 2], r.x[3 * i - 1]
@@ -78,7 +82,7 @@ local function crust_and_crumb(H)
     end
   end
   return r.temperature[ctr], r.saturation[ctr], r.temperature[top], r.saturation[top], r.browning[top],
-    r.browning[base], r.browning[ctr]
+    r.browning[base], r.browning[ctr], r.browning_temperature[top], r.browning_saturation[top]
 end
 -- the loaf's area (m^2 per metre of depth, 2D): V0 J summed over its particles, every one made with the same V0
 -- (one dx and ppc), read at the start as volume / count (as bread.lua's)
@@ -122,8 +126,8 @@ local function base_gap()
   return m
 end
 local w0 = s:stats().water_mass
-local rows = { "t_real_min,centre_T_degC,centre_saturation,top_T_degC,top_saturation,height_m,water_left,top_browning,base_browning,"
-  .. "centre_browning,area_m2,base_lift_m,base_gap_m,tray_T_degC" }
+local rows = { "t_real_min,centre_T_degC,centre_saturation,top_T_degC,top_saturation,height_m,water_left,top_browning,"
+  .. "base_browning,centre_browning,area_m2,base_lift_m,base_gap_m,top_surface_T_degC,top_surface_saturation,tray_T_degC" }
 local last
 print(rows[1]) -- the rows each frame prints below are loaf.csv's: its header first, so they read as columns
 -- the pictures' titles give the real time (the oven's rates run S times fast) beside the simulated seconds
@@ -131,10 +135,11 @@ s:run { until_t = until_t, every = until_t / P.frames,
   png = { field = "temperature", path = "temperature_%04d.png", time_scale = S },
   on_frame = function(f)
     local H = height()
-    local Tc, sc, Tt, st, bt, bb, bc = crust_and_crumb(H)
+    local Tc, sc, Tt, st, bt, bb, bc, Ts, ss = crust_and_crumb(H)
     last = { f.t * S / 60, Tc, sc, Tt, st, H, s:stats().water_mass / w0, bt, bb, bc, area(), base_lift(), base_gap(),
-      s:collider_heat(tray).temperature }
-    rows[#rows + 1] = ("%.2f,%.2f,%.4f,%.2f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,%.6g,%.6f,%.6f,%.2f"):format(table.unpack(last))
+      Ts, ss, s:collider_heat(tray).temperature }
+    rows[#rows + 1] = ("%.2f,%.2f,%.4f,%.2f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,%.6g,%.6f,%.6f,%.2f,%.4f,%.2f")
+      :format(table.unpack(last))
     h.write("loaf.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
   end }
@@ -144,4 +149,4 @@ s:png("browning", "browning.png", { time_scale = S })
 print(("after %.0f min: centre %.1f degC at saturation %.3f, top %.1f degC at saturation %.3f; height %.1f mm; "
   .. "%.1f%% of the water left (latent_heat = %s); browning: top %.3f, base %.3f, centre %.3f; "
   .. "base lift %.2f mm (tray = %s, at %.1f degC)"):format(last[1], last[2], last[3], last[4], last[5], 1000 * last[6],
-  100 * last[7], tostring(P.latent), last[8], last[9], last[10], 1000 * last[12], P.tray, last[14]))
+  100 * last[7], tostring(P.latent), last[8], last[9], last[10], 1000 * last[12], P.tray, last[16]))
