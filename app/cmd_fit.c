@@ -17,9 +17,10 @@ static void usage(FILE *f) {
                "Fits the Herschel-Bulkley law sigma = sigma_y + eta rate^h to a flow curve by the sum of\n"
                "squared relative residuals (Nagasawa et al. 2019, eq. 2) and prints the parameters and\n"
                "the residual of every point; draws data and fit on log-log axes as DIR/<name>_fit.png.\n"
-               "The CSV needs a header row naming the columns shear_rate (1/s) and stress (Pa); other\n"
-               "columns are ignored (a `hearth rheometer` CSV fits as it is), lines starting with # are\n"
-               "comments. At least 3 rows, every rate and stress a number > 0.\n"
+               "The CSV needs a header row naming the columns shear_rate_1_per_s and stress_Pa (or the\n"
+               "bare shear_rate and stress: 1/s and Pa); other columns are ignored (a `hearth rheometer`\n"
+               "CSV fits as it is), lines starting with # are comments. At least 3 rows, every rate and\n"
+               "stress a number > 0.\n"
                "  --json     print {\"sigma_y\":..., \"eta\":..., \"h\":..., \"rel_error\":...} and nothing else\n"
                "             (rel_error: root-mean-square relative residual)\n"
                "  --out DIR  output folder for the PNG (default ./hearth-out/fit)\n");

@@ -78,8 +78,9 @@ static void usage(FILE *f) {
             "usage: hearth rheometer MATERIAL [--mix sauce.a:0.5,sauce.b:0.5] [--rates MIN:MAX:COUNT]\n"
             "                        [--out DIR] [--json] [--dt DT] [--library FILE] [--mode homogeneous|mpm]\n"
             "Drives the material in simple shear at each rate until the shear stress is steady and\n"
-            "prints the flow curve. It is saved as DIR/<material>.csv (shear_rate, stress, and\n"
-            "hb_stress when the material has Herschel-Bulkley parameters) and drawn on log-log axes\n"
+            "prints the flow curve. It is saved as DIR/<material>.csv (shear_rate_1_per_s, stress_Pa,\n"
+            "hb_stress_Pa when the material has Herschel-Bulkley parameters, measured_rate_1_per_s in\n"
+            "--mode mpm) and drawn on log-log axes\n"
             "with the analytic curve as DIR/<material>.png.\n"
             "  MATERIAL        sauce.<name> from the sauce library (assets/sauces.csv, Nagasawa et al.\n"
             "                  2019 Table 1) with the %s plugin, or a plugin name with its defaults\n"
@@ -191,7 +192,10 @@ static int write_csv(const char *path, const double *x, const double *y, const d
                      hearth_error *err) {
     hearth_atomic_file *af = hearth_atomic_file_open(path, err);
     if (!af) return -1;
-    hearth_atomic_file_printf(af, "shear_rate,stress%s%s\n", hb ? ",hb_stress" : "", measured ? ",measured_rate" : "");
+    /* each column says its unit in its name, as every CSV hearth writes (#18, helper userfix7); hearth fit and
+     * hearth_flow_curve_read take these names and the bare ones */
+    hearth_atomic_file_printf(af, "shear_rate_1_per_s,stress_Pa%s%s\n", hb ? ",hb_stress_Pa" : "",
+                              measured ? ",measured_rate_1_per_s" : "");
     for (int i = 0; i < n; i++) {
         hearth_atomic_file_printf(af, "%.10g,%.10g", x[i], y[i]);
         if (hb) hearth_atomic_file_printf(af, ",%.10g", hb[i]);

@@ -23,12 +23,18 @@ def slit_widens(path):
     return 0 if i < len(hs) - 1 and hs[-1] > hs[i] and gs[-1] > gs[i] else 1
 
 
+def size(row, col):
+    """a loaf's size in a bread.csv row: area_<loaf>_m2 (2D) or volume_<loaf>_m3 (3D); #18, helper userfix7: one
+    column area_<loaf> had held both without a unit"""
+    return row["area_" + col + "_m2"] if "area_" + col + "_m2" in row else row["volume_" + col + "_m3"]
+
+
 def rises(path, dx, col, dim=2):
     """Area (2D: V0 J summed; 3D: the volume, the same column) +15% from raw to peak, +10% at the
     end, height at least the raw dough's; a scored loaf's slit ends open (gap > one cell) and wider
     than it started."""
     rows = list(csv.DictReader(open(path)))
-    a = [float(r["area_" + col]) for r in rows]
+    a = [float(size(r, col)) for r in rows]
     h = [float(r["height_" + col + "_m"]) for r in rows]
     peak, end = max(a) / a[0] - 1, a[-1] / a[0] - 1
     what, unit = ("volume", "m^3") if dim == 3 else ("area", "m^2")

@@ -20,7 +20,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bread_claims  # noqa: E402
 
 COLS = ("t_s,height_plain_m,height_one_slit_m,height_two_slits_m,gap_one_slit_m,gap_two_slits_left_m,"
-        "gap_two_slits_right_m,area_plain,area_one_slit,area_two_slits,crack_depth_m,crack_width_m,moisture_top,"
+        "gap_two_slits_right_m,area_plain_m2,area_one_slit_m2,area_two_slits_m2,crack_depth_m,crack_width_m,moisture_top,"
         "moisture_centre,cracked,top_arc_m").split(",")
 
 
@@ -46,7 +46,7 @@ def expect(label, want, fn, *args):
 
 
 def loaf(col, areas, heights, gaps=None):
-    rows = [{"area_" + col: a, "height_" + col + "_m": h} for a, h in zip(areas, heights)]
+    rows = [{"area_" + col + "_m2": a, "height_" + col + "_m": h} for a, h in zip(areas, heights)]
     for r, g in zip(rows, gaps or []):
         r["gap_one_slit_m"] = g
     return csv_of(rows)

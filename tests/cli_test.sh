@@ -195,7 +195,7 @@ cli_rheometer_mpm)
     # the MPM shear-cell mode as a user runs it: --json, the CSV with the measured rate, a bad mode named
     out=$(cd "$tmp" && "$hearth" rheometer sauce.mayo --mode mpm --rates 10:10:1 --json) || fail "rheometer --mode mpm exited $?"
     echo "$out" | grep -qE '^\{"shear_rate":\[10\],"stress":\[1[45][0-9]\.[0-9]+\]\}$' || fail "mpm json: $out"
-    head -1 "$tmp"/hearth-out/rheometer/sauce.mayo.csv | grep -qx "shear_rate,stress,hb_stress,measured_rate" ||
+    head -1 "$tmp"/hearth-out/rheometer/sauce.mayo.csv | grep -qx "shear_rate_1_per_s,stress_Pa,hb_stress_Pa,measured_rate_1_per_s" ||
         fail "mpm CSV header: $(head -1 "$tmp"/hearth-out/rheometer/sauce.mayo.csv)"
     png_ok "$tmp"/hearth-out/rheometer/sauce.mayo.png || fail "mpm flow-curve PNG does not decode"
     "$hearth" rheometer --help | grep -q -- "--mode MODE" || fail "rheometer --help lacks --mode"

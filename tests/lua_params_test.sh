@@ -295,21 +295,22 @@ scenes_3d_dx_floor_said)
     ;;
 bread_area_unit_said)
     # #18 (helper userfix4, from userview3's list): bread.csv's area_plain, area_one_slit and area_two_slits had no
-    # unit and hold volumes in 3D. They keep their names (tests/bread_claims.py, tests/baking/loaf.sh and the
-    # validation wrappers read them); bread.lua --params says the unit under dim, and a run says it above the CSV
-    # header it prints: m^2 in 2D, m^3 in 3D. Set-up only (--until 1e-9, one loaf).
+    # unit and hold volumes in 3D. Since helper userfix7 the names say it: area_<loaf>_m2 in 2D, volume_<loaf>_m3 in
+    # 3D (tests/bread_claims.py reads either); bread.lua --params says the unit under dim, and a run says it above the
+    # CSV header it prints and in the header. Set-up only (--until 1e-9, one loaf).
     bread=$here/../scripts/scenes/baking/bread.lua
     "$hearth" run "$bread" --params >out.txt 2>err.txt
     rc=$?
     expect_rc 0 "bread.lua --params"
-    has out.txt "area_* columns: m^2 in 2D, volumes in m^3 in 3D" "--params names area_*'s unit"
-    for du in "2 in m^2 (2D)" "3 a volume in m^3 (3D)"; do
-        d=${du%% *} unit=${du#* }
+    has out.txt "loaf sizes: area_*_m2 in 2D, volume_*_m3 in 3D" "--params names the sizes' unit"
+    for du in "2 area_*_m2 in m^2 (2D)" "3 volume_*_m3 a volume in m^3 (3D)"; do
+        d=${du%% *} unit=${du#* } col=${unit%% *} unit=${unit#* }
         "$hearth" run "$bread" --quiet --until 1e-9 --set dim=$d --set only=1 >out.txt 2>err.txt
         rc=$?
         expect_rc 0 "bread.lua dim=$d"
         grep "^bread.csv:" out.txt
-        has out.txt "bread.csv: area_* is each loaf's V0 J summed, $unit" "dim=$d: the unit above the header"
+        has out.txt "bread.csv: $col is each loaf's V0 J summed, $unit" "dim=$d: the unit above the header"
+        has out.txt "${col/\*/plain}" "dim=$d: the header's plain loaf"
     done
     ;;
 set_bad_value_exit2)

@@ -121,6 +121,23 @@ lua_determinism)
     # the first line after the header is the initial state: the jitter differs too
     cmp -s o1/series.csv o4/series.csv && fail "a different seed gave the same CSV"
     ;;
+run_csv_columns_say_units)
+    # #18 (helper userfix7): s:run{csv = ...} wrote kinetic (J in 3D, J per metre of depth in 2D) and max_speed with
+    # no unit, and a probe's column as field@x:y:z. The bar, set before the first run: the header is exactly
+    # t_s,step,dt_s,particles,kinetic_J_per_m (2D) or kinetic_J (3D),max_speed_m_s, then speed_m_s@...,
+    # temperature_degC@... and J@... (dimensionless: its name alone), and tests/scene_csv.py's unit rule keeps it.
+    for d in 2 3; do
+        run run_csv_units.lua --set dim=$d --out "o$d"
+        expect_rc 0 "run_csv_units.lua dim=$d"
+        head=$(head -1 "o$d/series.csv")
+        echo "dim $d: $head"
+        ke=kinetic_J_per_m at=0.45:0.45:0
+        [ $d = 3 ] && ke=kinetic_J at=0.45:0.45:0.25
+        want="t_s,step,dt_s,particles,$ke,max_speed_m_s,speed_m_s@$at,temperature_degC@$at,J@$at"
+        [ "$head" = "$want" ] || fail "dim $d: series.csv's header is $head, want $want"
+        python3 "$here/scene_csv.py" --units - "o$d/series.csv" || fail "dim $d: a column of series.csv gives no unit"
+    done
+    ;;
 lua_set_overrides)
     run params.lua
     expect_rc 0 "defaults"
@@ -808,8 +825,8 @@ sph_cake_heats_mirror_symmetric)
         python3 - "$csv" "$dx" <<'PY' || fail "the cake's halves heat differently at dx $dx"
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
-gap = max(abs(float(r["T_right_minus_left_C"])) for r in rows)  # taken before the columns' rounding
-heated = float(rows[-1]["T_left_C"]) - float(rows[0]["T_left_C"])
+gap = max(abs(float(r["T_right_minus_left_degC"])) for r in rows)  # taken before the columns' rounding
+heated = float(rows[-1]["T_left_degC"]) - float(rows[0]["T_left_degC"])
 print(f"dx {sys.argv[2]}: {len(rows)} frames to t = {rows[-1]['t_s']} s; the left half heated {heated:.2f} degC; "
       f"worst |T_right - T_left| {gap:.3g} degC (bound 1e-6)")
 sys.exit(0 if len(rows) >= 2 and heated > 10 and gap <= 1e-6 else 1)

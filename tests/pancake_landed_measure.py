@@ -41,7 +41,7 @@ def through(dx, out, bar):
         if not rows:
             continue
         t = float(rows[0]["t_s"])
-        pts = [(float(r["x"]), float(r["y"])) for r in rows]
+        pts = [(float(r["x_m"]), float(r["y_m"])) for r in rows]
         labels = piece_labels(pts, 1.5 * dx)
         sizes, big = piece_sizes(labels)
         mine = [pts[i] for i in range(len(pts)) if labels[i] == big]
@@ -81,7 +81,7 @@ def main():
     rows = list(csv.DictReader(open(args[1])))
     if not rows:
         sys.exit("pancake_landed_measure: %s has no particles" % args[1])
-    pts = [(float(r["x"]), float(r["y"])) for r in rows]
+    pts = [(float(r["x_m"]), float(r["y_m"])) for r in rows]
     J = [float(r["J"]) for r in rows]
     labels = piece_labels(pts, 1.5 * dx)
     sizes, big = piece_sizes(labels)

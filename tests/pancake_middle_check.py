@@ -25,7 +25,7 @@ DX = 0.002
 def landed(heights, extra=()):
     """a landed.csv holding two particles a row at the given heights (m above the pan) and the extra (x, y) points"""
     f = tempfile.NamedTemporaryFile("w", suffix=".csv", delete=False)
-    f.write("t_s,id,x,y,z,J,temperature_degC\n")
+    f.write("t_s,id,x_m,y_m,z_m,J,temperature_degC\n")
     k = 0
     pts = [(m.XC + s * DX / 4, m.PAN + hgt) for hgt in heights for s in (-1, 1)] + list(extra)
     for x, y in pts:

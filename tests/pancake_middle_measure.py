@@ -53,7 +53,7 @@ def centre_column(rows, dx, xc=XC):
 
 
 def read_landed(path):
-    return [(float(r["x"]), float(r["y"]), float(r["J"]), float(r["temperature_degC"]))
+    return [(float(r["x_m"]), float(r["y_m"]), float(r["J"]), float(r["temperature_degC"]))
             for r in csv.DictReader(open(path))]
 
 

@@ -25,7 +25,7 @@ sauce_nozzle_claim)
         fail "linear run: $(cat lin.txt)"
     "$hearth" run "$scenes/nozzle.lua" "${common[@]}" --set ratios=0.5 --set blend=labels --out lab >lab.txt 2>&1 ||
         fail "labels run: $(cat lab.txt)"
-    head -1 nl/front.csv | grep -qx "t_s,front_0,front_0.5,front_1" || fail "front.csv header: $(head -1 nl/front.csv)"
+    head -1 nl/front.csv | grep -qx "t_s,front_0_m,front_0.5_m,front_1_m" || fail "front.csv header: $(head -1 nl/front.csv)"
     IFS=, read -r t honey half mayo <<<"$(last_row nl/front.csv)"
     IFS=, read -r t2 lin <<<"$(last_row lin/front.csv)"
     IFS=, read -r t3 lab <<<"$(last_row lab/front.csv)"
@@ -50,8 +50,8 @@ scene_sauces_*)
         python3 "$here/png_check.py" "$f" >/dev/null || fail "$f does not decode"
     done
     [ "$(wc -l <"out/$csv")" -ge 3 ] || fail "$name: out/$csv has fewer than 2 data rows: $(cat "out/$csv")"
-    # its time column names its unit (t_s; #18, helper userfix6)
-    python3 "$here/scene_csv.py" --time "out/$csv" || fail "$name: out/$csv's time column gives no unit (above)"
+    # its time column names its unit (t_s; #18, helper userfix6), and every other column its unit too (helper userfix7)
+    python3 "$here/scene_csv.py" --units "$scenes/$name.lua" "out/$csv" || fail "$name: out/$csv's column gives no unit (above)"
     cat out.txt
     ;;
 *) fail "unknown case $case_name" ;;

@@ -1,6 +1,7 @@
 """scene_csv.py CSV SCENE.lua: a shipped scene's CSV as its readers take it (#18, helper userfix5).
-scene_csv.py --time CSV...: the time rule alone, for CSVs whose cells have rules of their own.
-scene_csv.py --time-check: the time rule on headers written here, whose verdicts are known.
+scene_csv.py --units SCENE.lua CSV...: the naming rules alone (time and units), for CSVs whose cells have rules of
+their own; SCENE.lua may be - for a CSV no scene wrote (s:run{csv = ...}'s in a test's own script).
+scene_csv.py --time-check, --unit-check: each naming rule on headers written here, whose verdicts are known.
 
 Every cell is a finite number, or empty where nothing was measured. An empty cell is allowed only in a column the
 scene's header declares may be one, on a line
@@ -16,6 +17,17 @@ A time column says its unit in its name (#18, helper userfix6: bread.csv, muffin
 `t` where the other scenes wrote `t_s`): a column named `t` or `time` is refused, and one named `t_...` must be `t_s`
 (the simulated time, s) or a real time, `t_real_s` or `t_real_min` (a scene whose rates run S times fast).
 
+Every other column says its unit the same way (#18, helper userfix7: the SPH particle files' `T`, s:run's `kinetic`
+said none): its name ends in `_<unit>` (UNITS below: `_m`, `_degC`, `_J_per_m`, `_m_s` for m/s, `_1_per_m`, ...), or
+it is a dimensionless quantity hearth names the same everywhere (one of its words is in PLAIN: `browning`,
+`saturation`, `fraction`, `share`, `J` (det F), `id`, `particles`, ...), or its scene declares it on a line
+
+    -- NAME.csv has no unit: col, col,
+    --   col, ...
+
+(a count, flag, label or ratio of the scene's own, which its header explains). A probe's column `field_<unit>@x:y:z`
+is judged by the part before `@`. `T`, `x`, `kinetic` or `area_plain` are refused.
+
 Exit 0 when the file keeps the rules, 1 naming the first cell or column that breaks one.
 """
 import csv
@@ -25,20 +37,33 @@ import re
 import sys
 
 
-def declared_empty(scene, name):
-    """The columns the scene at path `scene` declares may be empty in its CSV `name` (a set; empty if none)."""
+def declared(scene, name, what):
+    """The columns the scene at path `scene` lists on its `-- NAME.csv <what>:` lines (a set; empty if none)."""
+    if scene in (None, "-"):
+        return set()
     cols, lines = set(), open(scene, encoding="utf-8").read().splitlines()
-    head = re.compile(r"^--\s*" + re.escape(name) + r" may leave empty \(not measured\):\s*(.*)$")
+    head = re.compile(r"^--\s*(\S+\.csv) " + re.escape(what) + r":\s*(.*)$")
     for k, line in enumerate(lines):
         m = head.match(line)
-        if not m:
+        # NNNN in the declared name stands for a frame's number (particles_NNNN.csv)
+        if not m or not re.fullmatch(re.escape(m.group(1)).replace("NNNN", r"\d+"), name):
             continue
-        text = m.group(1).strip()
+        text = m.group(2).strip()
         while text.endswith(",") and k + 1 < len(lines) and lines[k + 1].startswith("--"):
             k += 1
             text += " " + lines[k][2:].strip()
         cols |= {c.strip() for c in text.split(",") if c.strip()}
     return cols
+
+
+def declared_empty(scene, name):
+    """The columns the scene at path `scene` declares may be empty in its CSV `name` (a set; empty if none)."""
+    return declared(scene, name, "may leave empty (not measured)")
+
+
+def declared_plain(scene, name):
+    """The columns the scene at path `scene` declares have no unit in its CSV `name` (a set; empty if none)."""
+    return declared(scene, name, "has no unit")
 
 
 TIME_NAMES = ("t_s", "t_real_s", "t_real_min")
@@ -55,34 +80,97 @@ def time_column_fault(head):
     return None
 
 
-def check_time(path):
+# The units a column's name may end in, as `_<unit>`: SI symbols, `_per_` for a quotient whose numerator is a unit
+# (J_per_m: 2D's energy per metre of depth) and the run-together forms the scenes used first (m_s for m/s, kg_m3 for
+# kg/m^3, Pa3s for eq. 11's Pa s^3 fluidity).
+UNITS = ("s", "min", "m", "mm", "m2", "m3", "degC", "K", "J", "J_per_m", "W", "N", "N_per_m", "Pa", "Pa_s", "Pa3s",
+         "m_s", "1_per_m", "1_per_s", "kg", "kg_per_m", "kg_m3", "mol_m3", "mol_kg", "mol_per_kg_s", "MB")
+# Dimensionless quantities hearth names the same in every CSV: a column with one of these words needs no unit.
+PLAIN = {"browning", "saturation", "moisture", "fraction", "share", "ratio", "relative", "porosity", "damage", "J",
+         "id", "step", "steps", "particles", "pieces", "bodies", "boundary"}
+
+
+def unit_fault(col, plain=frozenset()):
+    """why the column `col` says no unit (None when it does, or needs none)"""
+    name = col.strip()
+    base = name.split("@", 1)[0]  # a probe's column: field_<unit>@x:y:z
+    if base in plain or name in plain:
+        return None
+    if any(base.endswith("_" + u) for u in UNITS):
+        return None
+    if any(w in PLAIN for w in base.split("_")):
+        return None
+    hint = {"T": "T_degC", "x": "x_m", "y": "y_m", "z": "z_m", "kinetic": "kinetic_J or kinetic_J_per_m (2D)",
+            "temperature": "temperature_degC", "density": "density_kg_m3", "pressure": "pressure_Pa"}.get(base)
+    return (f"column {name!r} gives no unit: end its name in _<unit> ({hint or ', '.join(UNITS[:8]) + ', ...'}), or "
+            "declare it in its scene (-- NAME.csv has no unit: ...) if it is a count, flag or ratio")
+
+
+def naming_fault(head, plain=frozenset()):
+    """why the header `head` breaks the time rule or the unit rule, or None"""
+    why = time_column_fault(head)
+    if why:
+        return why
+    for col in head:
+        if col.strip() in TIME_NAMES:
+            continue
+        why = unit_fault(col, plain)
+        if why:
+            return why
+    return None
+
+
+def check_time(path, scene=None):
     with open(path, encoding="utf-8") as f:
         head = next(csv.reader(f), [])
-    why = time_column_fault(head)
+    why = naming_fault(head, declared_plain(scene, os.path.basename(path)))
     if why:
         print(f"{path}:1: {why}")
         return 1
     times = [c for c in head if c in TIME_NAMES]
-    print(f"{path}: time columns {times or 'none (not a time series)'}")
+    print(f"{path}: time columns {times or 'none (not a time series)'}; every column says its unit")
     return 0
 
 
 def time_check():
-    """the rule on headers whose verdicts are known (a column that only starts with t is not a time)"""
+    """the time rule on headers whose verdicts are known (a column that only starts with t is not a time)"""
     cases = [("t,front_m", False), ("time,x", False), ("x,y,T", True), ("t_sim,x", False), ("t_s,front_m", True),
              ("oven_degC,leavener,t_s,height_m,t_real_s", True), ("t_real_min,centre_T_degC", True),
              ("tau_y_Pa,top_m,torn,thickness_m", True), ("bake_end_s,cut_s,end_s", True)]
+    return verdicts(cases, time_column_fault)
+
+
+def unit_check():
+    """the unit rule on headers whose verdicts are known (#18, helper userfix7: a bare T, x or kinetic says no unit;
+    the old s:run header and SPH particle file are refused, the new ones kept)"""
+    cases = [("x,y,T", False), ("x_m,y_m,T", False), ("t_s,step,dt_s,particles,kinetic,max_speed", False),
+             ("t_s,step,dt_s,particles,kinetic_J_per_m,max_speed_m_s", True),
+             ("t_s,kinetic_J,speed_m_s@0.5:0.2:0,saturation@0.1:0.1:0", True), ("t_s,speed@0.5:0.2:0", False),
+             ("t_s,area_plain,height_plain_m", False), ("t_s,top_browning,centre_saturation,water_fraction", True),
+             ("t_s,mean_temperature_C", False), ("x_m,y_m,T_degC,J,browning,density_kg_m3,pressure_Pa,id", True),
+             ("oven_degC,leavener,t_s,height_m,t_real_s", False), ("t_real_min,centre_T_degC", True),
+             ("shear_rate,stress", False), ("shear_rate_1_per_s,stress_Pa,hb_stress_Pa", True)]
+    ok = verdicts(cases, naming_fault)
+    # a scene's declaration lets a count, flag or ratio of its own go without a unit
+    got = naming_fault("oven_degC,leavener,height_m".split(","), {"leavener"}) is None
+    print(f"'oven_degC,leavener,height_m' with leavener declared: {'kept' if got else 'refused'} "
+          f"({'as known' if got else 'WRONG'})")
+    return ok if got else 1
+
+
+def verdicts(cases, fault):
     bad = 0
     for head, ok in cases:
-        got = time_column_fault(head.split(",")) is None
-        print(f"{head!r}: {'kept' if got else 'refused'} ({'as known' if got == ok else 'WRONG'})")
+        why = fault(head.split(","))
+        got = why is None
+        print(f"{head!r}: {'kept' if got else 'refused: ' + why} ({'as known' if got == ok else 'WRONG'})")
         bad += got != ok
     return 1 if bad else 0
 
 
 def check_cells(path, scene):
     rows = list(csv.reader(open(path, encoding="utf-8")))
-    if check_time(path):
+    if check_time(path, scene):
         return 1
     head, may = rows[0], declared_empty(scene, os.path.basename(path))
     may &= set(head)  # a preset may write fewer columns (pancake.lua's paper preset has no middle_*)
@@ -113,6 +201,8 @@ def check_cells(path, scene):
 if __name__ == "__main__":
     if sys.argv[1] == "--time-check":
         sys.exit(time_check())
-    if sys.argv[1] == "--time":
-        sys.exit(max([check_time(p) for p in sys.argv[2:]] or [0]))
+    if sys.argv[1] == "--unit-check":
+        sys.exit(unit_check())
+    if sys.argv[1] == "--units":
+        sys.exit(max([check_time(p, sys.argv[2]) for p in sys.argv[3:]] or [0]))
     sys.exit(check_cells(sys.argv[1], sys.argv[2]))

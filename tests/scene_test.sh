@@ -16,11 +16,13 @@ n=$(find "hearth-out/$out" -name '*.png' | wc -l)
 for f in $(find "hearth-out/$out" -name '*.png'); do
     python3 "$here/png_check.py" "$f" >/dev/null || { echo "FAIL: $f does not decode" >&2; exit 1; }
 done
-# every CSV it writes names its time with the unit (t_s; #18, helper userfix6: a bare t gave none)
+# every CSV it writes names its time with the unit (t_s; #18, helper userfix6: a bare t gave none), and every other
+# column its unit too (#18, helper userfix7: the SPH particle files' T, s:run's kinetic gave none)
 csvs=$(find "hearth-out/$out" -name '*.csv' | sort)
 if [ -n "$csvs" ]; then
     # shellcheck disable=SC2086 # one argument a file; the names have no spaces
-    python3 "$here/scene_csv.py" --time $csvs || { echo "FAIL: $name: a CSV's time column gives no unit (above)" >&2; exit 1; }
+    python3 "$here/scene_csv.py" --units "$root/scripts/scenes/$name.lua" $csvs ||
+        { echo "FAIL: $name: a CSV's column gives no unit (above)" >&2; exit 1; }
 fi
 cat out.txt
 echo ok

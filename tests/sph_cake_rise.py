@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """sph_cake_rise.py DX A_W BAKED.csv END.csv: the SPH angel food cake
 (scripts/scenes/sph/angel_food_cake.lua) measured from its particles alone
-(its particles_*.csv: x, y in m, T in degC, J = det F, browning; a bubble
+(its particles_*.csv: x_m, y_m, T_degC, J = det F, browning; a bubble
 particle carries no browning, NaN).
 
 Pieces: each side of the pan's tube (x below and above the pan's axis,
@@ -66,7 +66,7 @@ def gas_volume(T, a_w):
 def load(path):
     """Rows (x, y, T, J, browning, id); id -1 where the file has no id column."""
     with open(path) as f:
-        return [(float(r["x"]), float(r["y"]), float(r["T"]), float(r["J"]), float(r["browning"]),
+        return [(float(r["x_m"]), float(r["y_m"]), float(r["T_degC"]), float(r["J"]), float(r["browning"]),
                  int(r.get("id") or -1)) for r in csv.DictReader(f)]
 
 

@@ -104,8 +104,8 @@ for dx in ("0.003", "0.002"):
     if not bands or not vol:
         print(f"dx {dx}: no frame at t = 0.5 s"); ok = False; continue
     b, v = bands[0], vol[0]
-    top, crumb, bottom = float(b["T_top_C"]), float(b["T_crumb_C"]), float(b["T_bottom_C"])
-    means[dx] = 0.5 * (float(v["T_left_C"]) + float(v["T_right_C"]))
+    top, crumb, bottom = float(b["T_top_degC"]), float(b["T_crumb_degC"]), float(b["T_bottom_degC"])
+    means[dx] = 0.5 * (float(v["T_left_degC"]) + float(v["T_right_degC"]))
     good = crumb <= top - 5 and crumb <= bottom - 5
     print(f"dx {dx} t = {b['t_s']} s: top band {top:.2f}, crumb band {crumb:.2f}, bottom band {bottom:.2f} degC "
           f"(top {b['top_mm']} mm); particles' mean {means[dx]:.2f} degC: crumb {'coolest' if good else 'NOT coolest'}")
@@ -173,10 +173,10 @@ s_raw = rows[0]["S_crumb"]
 oven = [r for r in rows if r["t_s"] < BAKE + 0.05]  # the last is the frame the cake leaves the oven in
 end = oven[-1]
 for r in oven:
-    print(f"dx {dx} t = {r['t_s']:.2f} s: crumb {r['T_crumb_C']:.1f} degC, browning {r['B_crumb']:.4f}, saturation "
-          f"{r['S_crumb']:.4f}; top {r['T_top_C']:.1f} degC, browning {r['B_top']:.4f}; outer surface's batter "
+    print(f"dx {dx} t = {r['t_s']:.2f} s: crumb {r['T_crumb_degC']:.1f} degC, browning {r['B_crumb']:.4f}, saturation "
+          f"{r['S_crumb']:.4f}; top {r['T_top_degC']:.1f} degC, browning {r['B_top']:.4f}; outer surface's batter "
           f"browning {r['B_outer']:.4f}, saturation {r['S_outer']:.4f}")
-wet = [(f"t = {r['t_s']:.2f} s", r["T_crumb_C"]) for r in oven if r["S_crumb"] >= 0.5 * s_raw]
+wet = [(f"t = {r['t_s']:.2f} s", r["T_crumb_degC"]) for r in oven if r["S_crumb"] >= 0.5 * s_raw]
 ok = crumb_bars(dx, "the crumb band", f"as the bake ends (t = {end['t_s']:.2f} s)", s_raw, wet,
                 (end["B_crumb"], end["S_crumb"]), end["B_outer"])
 sys.exit(0 if ok else 1)

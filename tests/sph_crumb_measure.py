@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """sph_crumb_measure.py RC FRAME.csv...: an SPH loaf's centre against its outer
 surface, from its particles alone (a particles_*.csv of
-scripts/scenes/sph/bread_of_the_dead.lua: x, y in m, T in degC, outer (1 where
+scripts/scenes/sph/bread_of_the_dead.lua: x_m, y_m, T_degC, outer (1 where
 the oven's heat enters, sph_outer.c), browning and saturation; a bubble
 particle is gas and carries neither: NaN).
 
@@ -26,16 +26,16 @@ def measure(path, rc):
     with open(path) as f:
         rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
     n = len(rows)
-    cx, cy = sum(r["x"] for r in rows) / n, sum(r["y"] for r in rows) / n
-    centre = [r for r in rows if math.hypot(r["x"] - cx, r["y"] - cy) < rc]
+    cx, cy = sum(r["x_m"] for r in rows) / n, sum(r["y_m"] for r in rows) / n
+    centre = [r for r in rows if math.hypot(r["x_m"] - cx, r["y_m"] - cy) < rc]
     outer = [r for r in rows if r["outer"] > 0]
     dough = lambda part: [r for r in part if not math.isnan(r["browning"])]
-    return {"centre_T": nanmean([r["T"] for r in centre]),
+    return {"centre_T": nanmean([r["T_degC"] for r in centre]),
             "centre_browning": nanmean([r["browning"] for r in dough(centre)]),
             "centre_saturation": nanmean([r["saturation"] for r in dough(centre)]),
             "outer_browning": nanmean([r["browning"] for r in dough(outer)]),
             "outer_saturation": nanmean([r["saturation"] for r in dough(outer)]),
-            "outer_T": nanmean([r["T"] for r in outer]),
+            "outer_T": nanmean([r["T_degC"] for r in outer]),
             "centre_n": len(centre), "dough_n": len(dough(centre))}
 
 

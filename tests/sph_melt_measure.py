@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """sph_melt_measure.py DX DIR: the SPH melting block (scripts/scenes/sph/melting_block.lua) measured from
-its particle positions alone (DIR/particles_NNNN.csv, x,y columns in metres, NNNN = 0 at t = 0 and one
+its particle positions alone (DIR/particles_NNNN.csv, x_m, y_m columns (m), NNNN = 0 at t = 0 and one
 frame each 0.1 s), not through the solver's density field.
 
 The block stood on the tray (y = 0.01 m) over x in [0.11, 0.19] m, 60 mm tall.
@@ -24,7 +24,7 @@ FLOOR, X0, X1, XC = 0.01, 0.11, 0.19, 0.15
 
 def load(path):
     with open(path) as f:
-        return [(float(r["x"]), float(r["y"])) for r in csv.DictReader(f)]
+        return [(float(r["x_m"]), float(r["y_m"])) for r in csv.DictReader(f)]
 
 
 def pieces(pts, link):

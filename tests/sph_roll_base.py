@@ -38,7 +38,7 @@ def main(argv):
         sys.exit(__doc__)
     dx, tray = float(argv[1]), float(argv[2])
     with open(argv[3]) as f:
-        pts = [(float(r["x"]), float(r["y"])) for r in csv.DictReader(f)]
+        pts = [(float(r["x_m"]), float(r["y_m"])) for r in csv.DictReader(f)]
     if not pts:
         sys.exit(f"{argv[3]}: no particles")
     g, m, n, s = measure(dx, tray, pts)

@@ -29,7 +29,7 @@ def run(pts):
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "p.csv")
         with open(path, "w") as f:
-            f.write("x,y\n" + "".join("%.9g,%.9g\n" % p for p in pts))
+            f.write("x_m,y_m\n" + "".join("%.9g,%.9g\n" % p for p in pts))
         here = os.path.dirname(os.path.abspath(__file__))
         out = subprocess.run([sys.executable, os.path.join(here, "sph_roll_base.py"), str(DX), str(TRAY), path],
                              capture_output=True, text=True, check=True).stdout.split()

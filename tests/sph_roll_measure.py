@@ -41,7 +41,7 @@ BIG = 1e18
 
 def load(path):
     with open(path) as f:
-        return [(float(r["x"]), float(r["y"])) for r in csv.DictReader(f)]
+        return [(float(r["x_m"]), float(r["y_m"])) for r in csv.DictReader(f)]
 
 
 class Raster:

@@ -36,7 +36,7 @@ def run(p0, p1, measure="sph_roll_measure.py"):
         for name, pts in (("a.csv", p0), ("b.csv", p1)):
             path = os.path.join(d, name)
             with open(path, "w") as f:
-                f.write("x,y\n" + "".join("%.9g,%.9g\n" % p for p in pts))
+                f.write("x_m,y_m\n" + "".join("%.9g,%.9g\n" % p for p in pts))
             paths.append(path)
         here = os.path.dirname(os.path.abspath(__file__))
         out = subprocess.run([sys.executable, os.path.join(here, measure), str(DX)] + paths,

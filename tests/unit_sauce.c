@@ -465,6 +465,30 @@ static void bad_csv(const char *text, const char *want1, const char *want2) {
     CHECK_STR_CONTAINS(err.msg, want2);
 }
 
+/* #18, helper userfix7: `hearth rheometer` now writes shear_rate_1_per_s,stress_Pa (every CSV hearth writes says its
+ * units); the reader takes those names and the bare ones a hand-made file or an older CSV has, to the same numbers,
+ * in any order beside other columns. */
+TEST(fit_csv_reads_unit_names) {
+    const char *texts[2] = {"# from hearth rheometer\nshear_rate_1_per_s,stress_Pa,hb_stress_Pa\n1,10,9\n2,11,9\n3,12,9\n",
+                            "stress,shear_rate\n10,1\n11,2\n12,3\n"};
+    for (int k = 0; k < 2; k++) {
+        char path[4096];
+        tmp_path(path, sizeof path, "units.csv");
+        CHECK(write_file(path, texts[k]));
+        hearth_flow_curve c;
+        hearth_error err;
+        hearth_status st = hearth_flow_curve_read(path, &c, &err);
+        unlink(path);
+        printf("fit_csv_reads_unit_names: header %d: %s, %d rows\n", k, st == HEARTH_OK ? "read" : err.msg,
+               st == HEARTH_OK ? c.n : 0);
+        CHECK(st == HEARTH_OK);
+        if (st != HEARTH_OK) continue;
+        CHECK(c.n == 3);
+        for (int i = 0; i < c.n && i < 3; i++) CHECK(c.rate[i] == i + 1 && c.stress[i] == 10 + i);
+        hearth_flow_curve_free(&c);
+    }
+}
+
 TEST(fit_bad_csv) {
     bad_csv("rate,stress\n1,2\n2,3\n3,4\n", "line 1 (header row)", "'shear_rate'");
     bad_csv("shear_rate,stress\n1,10\n2,abc\n3,12\n", "line 3 (data row 2)", "stress 'abc' is not a finite number");
@@ -777,6 +801,6 @@ TEST(sauce_mpm_shear_cell) {
 
 TEST_MAIN(T(sauce_rheometer_library), T(sauce_maxwell_startup), T(sauce_limits), T(blend_zero_law),
           T(blend_identity_law), T(blend_commutative), T(blend_associative), T(blend_fig4a_claim), T(fit_roundtrip),
-          T(fit_bad_csv), T(fit_csv_empty_and_short), T(fit_csv_bad_numbers), T(fit_csv_long_lines),
+          T(fit_csv_reads_unit_names), T(fit_bad_csv), T(fit_csv_empty_and_short), T(fit_csv_bad_numbers), T(fit_csv_long_lines),
           T(fit_csv_nul_bytes), T(fit_csv_too_many_rows), T(sauce_library_hostile), T(sauce_extremes), T(sauce_mpm_shear_cell),
           T(labels_hook))

@@ -574,11 +574,14 @@ TEST(sph_refuses_saturation) {
 TEST(sph_alloc_failure_paths) {
     const size_t base = hearth_bytes_allocated();
     const double lo[3] = {0, 0, 0}, hi[3] = {0.2, 0.2, 0};
-    for (int hg = 0; hg < 2; hg++) { /* then with sph.hourglass, whose scratch is its own allocation */
+    /* then with sph.hourglass, whose scratch is its own allocation; then browning, whose face temperatures are an
+     * allocation of their own (#18, helper userfix7: made only in a scene that browns) */
+    for (int hg = 0; hg < 3; hg++) {
         int failures = 0, ok = 0;
         for (long k = 0; k < 400 && !ok; k++) {
             hearth_scene_def d = sph_def(2, 0.01, lo, hi);
-            d.sph.hourglass = hg;
+            d.sph.hourglass = hg == 1;
+            d.browning = hg == 2;
             mem_fail_after(k);
             hearth_error err = {0};
             hearth_scene *s = hearth_scene_create(&d, &err);
@@ -616,7 +619,8 @@ TEST(sph_alloc_failure_paths) {
                 printf("  injected failure %ld left %zu bytes counted\n", k, hearth_bytes_allocated() - base);
             CHECK(hearth_bytes_allocated() <= base + 4096);
         }
-        printf("  hourglass %d: %d injected failures reported cleanly before a run succeeded\n", hg, failures);
+        printf("  %s: %d injected failures reported cleanly before a run succeeded\n",
+               hg == 0 ? "plain" : hg == 1 ? "hourglass" : "browning", failures);
         CHECK(ok);
         CHECK(failures > 10);
     }

@@ -159,11 +159,13 @@ TEST(sph_surface_temperature_skipped_without_browning) {
     const int n = off->ps.n;
     int faces = 0;
     for (int i = 0; ts_on && i < n; i++) faces += !isnan(ts_on[i]);
+    /* the sentinel slots, where the scene without browning has the array (since helper userfix7 it has none,
+     * sph_surface_temperature_not_allocated_without_browning: then nothing can be written and none is touched) */
     const double SENTINEL = -12345.0;
-    for (int i = 0; i < n; i++) off->sph->ts[i] = SENTINEL;
+    for (int i = 0; off->sph->ts && i < n; i++) off->sph->ts[i] = SENTINEL;
     CHECK(hearth_scene_step(off, 1, &err) == HEARTH_OK && hearth_scene_step(on, 1, &err) == HEARTH_OK);
     int touched = 0;
-    for (int i = 0; i < n; i++) touched += off->sph->ts[i] != SENTINEL;
+    for (int i = 0; off->sph->ts && i < n; i++) touched += off->sph->ts[i] != SENTINEL;
     CHECK(hearth_scene_step(off, 38, &err) == HEARTH_OK && hearth_scene_step(on, 38, &err) == HEARTH_OK);
     const particles *a = &off->ps, *b = &on->ps;
     const size_t v3 = sizeof(double) * 3 * (size_t)n, v1 = sizeof(double) * (size_t)n;
@@ -180,6 +182,42 @@ TEST(sph_surface_temperature_skipped_without_browning) {
     CHECK(ts_off == NULL && ts_on != NULL && faces > 0);
     CHECK(touched == 0);
     CHECK(same && off->step == 40 && bmax > 0);
+    hearth_scene_destroy(off);
+    hearth_scene_destroy(on);
+}
+
+/* #18, helper userfix7: the face temperatures' array itself (st->ts, a double a particle with ensure's 1/4 margin) was
+ * allocated with the step's columns in every SPH scene, browning or not. The twin oven blocks above; the bars, set at
+ * 17:55 UTC before the first run: after 5 steps the scene without browning holds no array (NULL) and the one with it
+ * does; the solver's bytes_per_particle estimate (what `hearth run --memory` and the particle ceiling read) is 10
+ * bytes (8 x 1.25) lower without browning; and the library's bytes held by the scene without browning are lower than
+ * the same scene's bytes would be with the array, by at least the array's 8 x cap bytes (read from the two scenes'
+ * held bytes: the browning twin also carries the browning column, 8 bytes a particle, so the gap is at least 16 x n). */
+TEST(sph_surface_temperature_not_allocated_without_browning) {
+    const size_t b0 = hearth_bytes_allocated();
+    hearth_scene *off = oven_block(0);
+    hearth_error err;
+    CHECK(off != NULL);
+    if (!off) return;
+    CHECK(hearth_scene_step(off, 5, &err) == HEARTH_OK);
+    const size_t b_off = hearth_bytes_allocated() - b0;
+    hearth_scene *on = oven_block(1);
+    CHECK(on != NULL);
+    if (!on) {
+        hearth_scene_destroy(off);
+        return;
+    }
+    CHECK(hearth_scene_step(on, 5, &err) == HEARTH_OK);
+    const size_t b_on = hearth_bytes_allocated() - b0 - b_off;
+    const int n = off->ps.n, cap = off->sph->cap;
+    const double per_off = sph_solver.bytes_per_particle(off), per_on = sph_solver.bytes_per_particle(on);
+    printf("%d particles (cap %d): face temperatures' array %s without browning, %s with it; bytes_per_particle %.2f "
+           "without, %.2f with (need 10 less); bytes held %zu without, %zu with: %zd more (need >= 16 x n = %d)\n", n,
+           cap, off->sph->ts ? "ALLOCATED" : "none", on->sph->ts ? "allocated" : "NONE", per_off, per_on, b_off, b_on,
+           (ptrdiff_t)(b_on - b_off), 16 * n);
+    CHECK(off->sph->ts == NULL && on->sph->ts != NULL);
+    CHECK(fabs((per_on - per_off) - 10.0) < 1e-9);
+    CHECK(b_on >= b_off + (size_t)16 * (size_t)n);
     hearth_scene_destroy(off);
     hearth_scene_destroy(on);
 }
@@ -242,4 +280,5 @@ TEST(sph_outer_surface_skipped_without_readers) {
 
 TEST_MAIN(T(sph_surface_temperature_slab_matches_series), T(sph_surface_flux_through_film_matches_series),
           T(sph_outer_browns_at_face_temperature),
-          T(sph_surface_temperature_skipped_without_browning), T(sph_outer_surface_skipped_without_readers))
+          T(sph_surface_temperature_skipped_without_browning), T(sph_surface_temperature_not_allocated_without_browning),
+          T(sph_outer_surface_skipped_without_readers))

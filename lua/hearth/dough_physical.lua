@@ -111,6 +111,12 @@ D.goods = {
     -- oven: 200 degC, beta 30 W/(m^2 K) (effective coefficients, radiation included, 20-48 W/(m^2 K) in Baik et al.
     -- 1999, J. Food Sci. 64:688); pan: a tray at the oven's temperature through ~100 W/(m^2 K) contact
     oven_temperature = 200, oven_beta = 30, pan_temperature = 200, pan_beta = 100,
+    -- the tray goes into the oven with the dough on it, at the room's 20 degC, and warms as a lumped sheet drawn on by
+    -- the dough, as the cookie's (#18, helper userfix7; before, it stood at 200 degC from the first step): the same
+    -- 1 mm aluminium baking sheet, 2700 kg/m^3 x 900 J/(kg K) x 0.001 m = 2430 J/(m^2 K) (handbook values, helper
+    -- lead's "A tray that goes in cold"), heated on both faces by the oven's 30 W/(m^2 K): 2430 / 60 = 40 s real
+    -- (docs/validation.md, "The sheet gives the food its heat (#18, helper traydraw)"; loaf_physical.lua gives its area)
+    pan_start_temperature = 20, pan_warm_time_real = 40, pan_heat_capacity = 2430,
     time_scale = 300, bake_time_real = 1500,
   },
   cookie = {

@@ -305,11 +305,16 @@ function S:run(o)
   local probes = o.probes or {}
   local rows
   if o.csv then
-    -- the times say their unit in their names (t_s, dt_s: simulated seconds), as the shipped scenes' CSVs do
-    local head = { "t_s", "step", "dt_s", "particles", "kinetic", "max_speed" }
+    -- every column says its unit in its name, as the shipped scenes' CSVs do (tests/scene_csv.py's rule): t_s and
+    -- dt_s simulated seconds; the kinetic energy J in 3D, J per metre of depth in 2D (a plane scene's mass is per
+    -- metre: #18, helper userfix7, where it read a bare "kinetic"); a probe's field with its unit (speed_m_s@x:y:z,
+    -- a dimensionless field's name alone)
+    local head = { "t_s", "step", "dt_s", "particles", st.dim == 2 and "kinetic_J_per_m" or "kinetic_J", "max_speed_m_s" }
     for _, p in ipairs(probes) do
       local v = check_vec(p[2], "s:run: probe point")
-      head[#head + 1] = ("%s@%g:%g:%g"):format(p[1], v[1], v[2], v[3])
+      local unit = core.field_unit(p[1])
+      unit = (unit and unit ~= "1" and unit ~= "") and "_" .. unit:gsub("%^", ""):gsub("/", "_") or ""
+      head[#head + 1] = ("%s%s@%g:%g:%g"):format(p[1], unit, v[1], v[2], v[3])
     end
     rows = { table.concat(head, ",") }
   end

@@ -139,8 +139,9 @@ for r in rows:
         v = float(c)
         assert math.isfinite(v) or k.startswith("face_peak") or k == "crack_from_face_m", (k, c)
 PY
-    # its time column names its unit (t_s; #18, helper userfix6: it wrote a bare t)
-    python3 "$root/tests/scene_csv.py" --time hearth-out/tear_open/tear_open.csv || fail "tear_open.csv's time column gives no unit"
+    # its time column names its unit (t_s; #18, helper userfix6: it wrote a bare t), every other column its own (userfix7)
+    python3 "$root/tests/scene_csv.py" --units "$scenes/tear_open.lua" hearth-out/tear_open/tear_open.csv ||
+        fail "tear_open.csv's time column or another column gives no unit"
     for bad in "dim=3:dim (the space's dimensions; the tear is measured over the plane's columns) takes only 2, not 3" "food=cake:food takes one of the words below, not \"cake\"" "two_field=yes:expected true or false" \
                "frames=0:frames (PNG frames over the pull) takes a whole number in .1, 10000., not 0"; do
         "$hearth" run "$scenes/tear_open.lua" --quiet --set "${bad%%:*}" >out.txt 2>err.txt && fail "--set ${bad%%:*} ran"

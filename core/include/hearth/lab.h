@@ -128,8 +128,9 @@ typedef struct hearth_flow_curve {
     double *rate, *stress;
 } hearth_flow_curve;
 
-/// Read a CSV with a header row naming the columns `shear_rate` and `stress`
-/// (any order, other columns ignored; blank lines and lines starting with '#'
+/// Read a CSV with a header row naming the columns `shear_rate_1_per_s` (1/s)
+/// and `stress_Pa` (Pa), as `hearth rheometer` writes them, or the bare
+/// `shear_rate` and `stress` (any order, other columns ignored; blank lines and lines starting with '#'
 /// skipped). Every data row needs both cells as finite numbers, shear_rate > 0
 /// and stress > 0 (the fit's residuals are relative and the plot is log-log);
 /// at least 3 rows, at most 1,000,000; lines of at most 4095 characters and

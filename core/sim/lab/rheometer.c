@@ -289,13 +289,16 @@ hearth_status hearth_flow_curve_read(const char *path, hearth_flow_curve *c, hea
         if (!header_line) {
             header_line = lineno;
             for (int i = 0; i < nc; i++) {
-                if (!strcmp(cells[i], "shear_rate") && col_rate < 0) col_rate = i;
-                if (!strcmp(cells[i], "stress") && col_stress < 0) col_stress = i;
+                /* the names with their units, as `hearth rheometer` writes them (#18, helper userfix7), or the
+                 * bare names it wrote before and a hand-made file may use */
+                if ((!strcmp(cells[i], "shear_rate_1_per_s") || !strcmp(cells[i], "shear_rate")) && col_rate < 0)
+                    col_rate = i;
+                if ((!strcmp(cells[i], "stress_Pa") || !strcmp(cells[i], "stress")) && col_stress < 0) col_stress = i;
             }
             if (col_rate < 0 || col_stress < 0) {
                 st = err_set(err, HEARTH_ERR_FORMAT,
-                             "%s: line %d (header row): the header must name the columns 'shear_rate' (1/s) and "
-                             "'stress' (Pa); %s missing (first cell '%s')",
+                             "%s: line %d (header row): the header must name the columns 'shear_rate_1_per_s' (or "
+                             "'shear_rate', 1/s) and 'stress_Pa' (or 'stress', Pa); %s missing (first cell '%s')",
                              path, lineno,
                              col_rate < 0 && col_stress < 0 ? "both are" : col_rate < 0 ? "'shear_rate' is" : "'stress' is",
                              nc > 0 ? cells[0] : "");

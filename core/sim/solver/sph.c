@@ -189,8 +189,9 @@ hearth_status sph_check_def(const hearth_scene_def *d, hearth_error *err) {
 #define ARRAYS(X)                                                                                                      \
     X(rho, 1) X(prs, 1) X(h, 1) X(S, 9) X(acc, 3) X(vnew, 3) X(N, 3) X(lapC, 1) X(surf, 1) X(rhof, 1)                  \
         X(dT, 1) X(rho0, 1) X(B, 1) X(mu, 1) X(c0, 1) X(xsph, 1) X(perm, 1) X(Tprev, 1) X(sp, 1) X(R, 9) X(vc, 1)  \
-        X(vr, 1) X(outer, 1) X(oshare, 1) X(ts, 1)
-
+        X(vr, 1) X(outer, 1) X(oshare, 1)
+/* and ts, the outer particles' face temperatures, only in a scene that browns (their one reader: browning.c; #18,
+ * helper userfix7: a double a particle every SPH scene had paid for) */
 /* Frees the per-particle columns (ARRAYS, key, order) of a set sized for cap
  * particles: sph_free's set, and ensure's old set or the new one it could not
  * complete (mem_free passes over the columns left NULL). */
@@ -199,6 +200,7 @@ static void arrays_free(struct sph_state *a, int cap) {
 #define FREE(x, k) mem_free(a->x, sizeof(double) * (k) * c);
     ARRAYS(FREE)
 #undef FREE
+    mem_free(a->ts, sizeof(double) * c);
     mem_free(a->key, sizeof(int) * c);
     mem_free(a->order, sizeof(int) * c);
 }
@@ -244,6 +246,10 @@ static hearth_status ensure(hearth_scene *s, int n, hearth_error *err) {
     nw.a = mem_calloc(sizeof(double) * (k) * (size_t)cap);                                                             \
     ok = ok && nw.a;
     ARRAYS(ALLOC)
+    nw.ts = NULL;
+    if (s->def.browning) {
+        ALLOC(ts, 1)
+    }
 #undef ALLOC
     nw.key = mem_alloc(sizeof(int) * (size_t)cap);
     nw.order = mem_alloc(sizeof(int) * (size_t)cap);
@@ -771,7 +777,7 @@ const double *sph_particle_values(const hearth_scene *s, const char *which) {
  * lists past this. */
 static double sph_bytes_per_particle(const hearth_scene *s) {
 #define COUNT(a, k) +(k)
-    const double doubles = 0 ARRAYS(COUNT);
+    const double doubles = 0 ARRAYS(COUNT) + (s->def.browning ? 1 : 0); /* ts, in a scene that browns */
 #undef COUNT
     const double hf = s->def.sph.h_factor;
     const double nb = s->def.dim == 3 ? 4.0 / 3.0 * SPH_PI * hf * hf * hf : SPH_PI * hf * hf;

@@ -337,6 +337,7 @@ static void sph_surface_temperatures(hearth_scene *s) {
     const sph_cols c = sph_cols_of(s);
     const int n = c.n;
     const double *T = c.T;
+    if (!st->ts) return; /* made with the step's columns in a scene that browns (sph.c's ensure) */
 #pragma omp parallel for schedule(static) if (n >= SCENE_PARALLEL_MIN)
     for (int i = 0; i < n; i++) {
         int face;

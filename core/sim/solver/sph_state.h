@@ -71,8 +71,8 @@ struct sph_state {
      * scratch, og_cap cells */
     double *outer, *oshare;
     double *ts; /* sph_heat.c's sph_surface_temperatures: an outer particle's face temperature (degC) by the oven's
-                 * film closure, NaN for the others; in ARRAYS, valid after a step of a scene that browns
-                 * (particle_values' "surface_temperature") */
+                 * film closure, NaN for the others; made with ARRAYS only in a scene that browns (else NULL), valid
+                 * after a step of one (particle_values' "surface_temperature") */
     uint8_t *og;
     int *oq;
     size_t og_cap;

@@ -6,8 +6,9 @@
 -- each loaf's height and each slit's gap width (the
 -- open width of the cut, measured across it just below the loaf's top), each
 -- loaf's area (2D, m^2) or volume (3D, m^3): the sum of V0 J over its
--- particles (area_plain, area_one_slit, area_two_slits, the names kept in
--- 3D; --params and the run's first lines say the unit); and the plain loaf's top crack: the deepest notch in the top of
+-- particles (area_plain_m2, area_one_slit_m2, area_two_slits_m2 in 2D; volume_plain_m3, volume_one_slit_m3 and
+-- volume_two_slits_m3 in 3D: #18, helper userfix7, where one name had held both without a unit; --params and the
+-- run's first lines say it too); and the plain loaf's top crack: the deepest notch in the top of
 -- its intact material (crack_depth_m: how far the top of a one-cell column
 -- lies below the lower of the highest tops within 15 mm (whole cells) to its left and to
 -- its right) and the notch's width (crack_width_m: the run of columns around
@@ -28,9 +29,11 @@
 -- The tray: tray = "separate" (default; a greased tray or baking paper: the foot may slide, friction 0.4, and
 -- lift) or "sticky" (a bare tray the dough sticks to: the contact holds the foot where it touched, in tension
 -- too), as loaf_physical.lua's (docs/validation.md, "The loaf's foot on its tray (#18, helper loaffoot)").
+-- cracked, the plain loaf's count of cracked particles, has no unit (tests/scene_csv.py's unit rule):
+-- bread.csv has no unit: cracked
 local h = require "hearth"
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true,
-    what = "the space's dimensions (bread.csv's area_* columns: m^2 in 2D, volumes in m^3 in 3D)" },
+    what = "the space's dimensions (bread.csv's loaf sizes: area_*_m2 in 2D, volume_*_m3 in 3D)" },
   dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
   until_t = h.number { 2.5, above = 0, unit = "s", what = "the bake's simulated time" },
   frames = h.number { 5, min = 1, integer = true, unit = "frames", what = "PNG frames over the bake" },
@@ -192,11 +195,13 @@ local function top_arc(x0)
   return len
 end
 
-local rows = { "t_s,height_plain_m,height_one_slit_m,height_two_slits_m,gap_one_slit_m,gap_two_slits_left_m,gap_two_slits_right_m," ..
-  "area_plain,area_one_slit,area_two_slits,crack_depth_m,crack_width_m,moisture_top,moisture_centre,cracked,top_arc_m" }
--- the area_* columns keep their names in 3D, where they hold volumes (tests/bread_claims.py, tests/baking/loaf.sh and
--- the validation wrappers read them by name); their unit is said here, in --params and in the header above
-print(("bread.csv: area_* is each loaf's V0 J summed, %s"):format(d3 and "a volume in m^3 (3D)" or "in m^2 (2D)"))
+-- each loaf's size says its unit in its name: an area in 2D, a volume in 3D (tests/bread_claims.py reads either)
+local size = d3 and "volume_%s_m3" or "area_%s_m2"
+local rows = { "t_s,height_plain_m,height_one_slit_m,height_two_slits_m,gap_one_slit_m,gap_two_slits_left_m,gap_two_slits_right_m,"
+  .. size:format("plain") .. "," .. size:format("one_slit") .. "," .. size:format("two_slits")
+  .. ",crack_depth_m,crack_width_m,moisture_top,moisture_centre,cracked,top_arc_m" }
+print(("bread.csv: %s is each loaf's V0 J summed, %s"):format(size:format("*"), d3 and "a volume in m^3 (3D)"
+  or "in m^2 (2D)"))
 print(rows[1]) -- the rows each frame prints below are bread.csv's: its header first, so they read as columns
 -- the frames' titles say which loaf lies where and whose seconds they are (#18, helper userview3: "t = 2.5 s" alone
 -- read as two and a half seconds of a real bake)

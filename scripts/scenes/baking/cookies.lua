@@ -105,6 +105,10 @@
 -- gives that Biot number; the heat then runs ~220x a real dough's (diffusivity
 -- 3e-5 against 1.4e-7 m^2/s: a 15-minute bake in 4 s), and every cookie has set
 -- (71-78 degC, COOKIE_SET) by ~3.5 s at 150 degC (centre 76-78 degC at 3 s, 95 at 4 s).
+-- Columns without a unit (tests/scene_csv.py's unit rule; #18, helper userfix7): leavener, Table 2's alpha^g of the
+-- cookie (animation units, a label: 0.015 the formula's); alone and shed, shed_swollen, a flag and counts (above).
+-- cookies.csv has no unit: leavener, alone, shed, shed_swollen
+-- series.csv has no unit: leavener
 local h = require "hearth"
 -- The levers that change Table 2's cookie (below, each where it acts), with their defaults: preset=paper's only.
 local PAPER_LEVERS = { baseline = false, reaction_temperature = -1, reaction_width = -1, conductivity = 0.01,
@@ -148,7 +152,7 @@ local P = h.params(defaults)
 -- preset=physical (#18): h.library.dough.cookie and h.library.oven.cookie (lua/hearth/dough_physical.lua: each
 -- number's source; its rates run S = 50 times fast, so the 11 minute bake at 190 degC takes 13.2 s), latent heat,
 -- boiling and browning on. The same cookies: leavener a multiplies the preset's CO2 rates (both shares; cookies.csv's
--- gas_rate column is the first's, gas_rate) by a / 0.015, the
+-- gas_rate_mol_per_kg_s column is the first's, gas_rate) by a / 0.015, the
 -- leavener its rate stands for (Table 2's cookie alpha^g), as the paper path's gas_rate is a x GAS_SCALE. The
 -- PAPER_LEVERS are the paper preset's only; gas and the grid's words hold for both.
 local physical = P.preset == "physical"
@@ -213,7 +217,7 @@ local TRAY, SPACING, R, THICK = 0.02, 0.18, 0.03, 0.0175
 local W = SPACING * #leaveners
 local zc = 0.06
 
-local rows = { "oven_degC,leavener,gas_rate,height_m,spread_m,top_curvature_1_per_m,top_curvature_particles_1_per_m,alone,top_curvature_particles_se_1_per_m,particles,shed,shed_swollen" }
+local rows = { "oven_degC,leavener,gas_rate_mol_per_kg_s,height_m,spread_m,top_curvature_1_per_m,top_curvature_particles_1_per_m,alone,top_curvature_particles_se_1_per_m,particles,shed,shed_swollen" }
 -- series.csv's t_s is the simulated time (the paper preset's Table 2 animation units; the physical preset's S times
 -- fast, whose real time t_real_s = S t_s comes last, as pancake.lua's and lava_cake.lua's)
 local series = { "oven_degC,leavener,t_s,height_m,spread_m,centre_temperature_degC" .. (S and ",t_real_s" or "") }

@@ -73,7 +73,7 @@ local function probes()
     s:probe("saturation", centre)
 end
 -- the columns' units in their names: volume_m2 in 2D (m^2 per metre of depth), volume_m3 in 3D; saturations are 0..1
-local rows = { ("t_s,water_fraction,%s,top_T_degC,top_s,centre_T_degC,centre_s"):format(d3 and "volume_m3" or "volume_m2") }
+local rows = { ("t_s,water_fraction,%s,top_T_degC,top_saturation,centre_T_degC,centre_saturation"):format(d3 and "volume_m3" or "volume_m2") }
 -- the title says what its seconds are: water's rates are a time lapse (scaled up together by a factor the header
 -- does not name, so no time_scale), heat's are an apple's own
 s:run { until_t = P.until_t, every = P.until_t / P.frames, png = { field = "saturation", path = "sat_%04d.png",

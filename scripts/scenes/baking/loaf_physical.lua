@@ -25,9 +25,12 @@
 -- index, fields/browning.c's 0..1; the loaf's area, V0 J summed), temperature_%04d.png, and at the end temperature.png, saturation.png and
 -- browning.png; loaf.csv's base_lift_m is the most the lowest particle has risen off its start, over the raw
 -- base's middle 80% (16 columns of 4 mm across x0 +- 32 mm), and base_gap_m the most any column's lowest particle
--- edge stands off the tray; top_surface_T_degC and top_surface_s the temperature and saturation the top particle
--- browned at in the frame's last step (the fields browning_temperature, browning_saturation: its surface's, by
--- the oven's and the evaporation's closures, browning.c), the crust's surface as the colour sees it.
+-- edge stands off the tray; top_surface_T_degC and top_surface_saturation the temperature and saturation the top
+-- particle browned at in the frame's last step (the fields browning_temperature, browning_saturation: its surface's,
+-- by the oven's and the evaporation's closures, browning.c), the crust's surface as the colour sees it; tray_T_degC
+-- the tray's temperature (it goes in cold and the dough draws on it).
+-- water_left, the loaf's water over the raw dough's, has no unit (tests/scene_csv.py's unit rule):
+-- loaf.csv has no unit: water_left
 local h = require "hearth"
 local P = h.params { dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
   frames = h.number { 25, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" }, latent = true,
@@ -49,7 +52,12 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name
     emissivity = oven.emissivity, radiation_scale = oven.radiation_scale }, latent_heat = P.latent and oven.latent_heat,
   boiling_point = oven.boiling_point, browning = true, browning_scale = oven.browning_scale,
   gas_vent = oven.gas_vent, vent_porosity = oven.vent_porosity }
-h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta, mode = P.tray })
+-- the tray goes in cold with the dough (oven.pan_start_temperature, pan_warm_time: dough_physical.lua) and the dough
+-- draws its heat from it (oven.pan_heat_capacity): the sheet is the box's floor, 0.14 m per metre of depth, 57% under
+-- the loaf (cookies.lua's sheet likewise; #18, helper userfix7: it had stood at 200 degC from the first step)
+local tray = h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta, mode = P.tray,
+  start_temperature = oven.pan_start_temperature, warm_time = oven.pan_warm_time,
+  heat_capacity = oven.pan_warm_time and oven.pan_heat_capacity, area = 0.14 })
 -- smooth_surface: the outer layer on the lattice, so the base is flat on the tray (the header)
 s:add { shape = h.shapes.loaf({ X0, TRAY }, WIDTH, BODY), material = h.material("cam_clay_dough", h.library.dough.bread),
   temperature = oven.dough_temperature, smooth_surface = true }
@@ -118,8 +126,8 @@ local function base_gap()
   return m
 end
 local w0 = s:stats().water_mass
-local rows = { "t_real_min,centre_T_degC,centre_s,top_T_degC,top_s,height_m,water_left,top_browning,base_browning,"
-  .. "centre_browning,area_m2,base_lift_m,base_gap_m,top_surface_T_degC,top_surface_s" }
+local rows = { "t_real_min,centre_T_degC,centre_saturation,top_T_degC,top_saturation,height_m,water_left,top_browning,"
+  .. "base_browning,centre_browning,area_m2,base_lift_m,base_gap_m,top_surface_T_degC,top_surface_saturation,tray_T_degC" }
 local last
 print(rows[1]) -- the rows each frame prints below are loaf.csv's: its header first, so they read as columns
 -- the pictures' titles give the real time (the oven's rates run S times fast) beside the simulated seconds
@@ -129,8 +137,8 @@ s:run { until_t = until_t, every = until_t / P.frames,
     local H = height()
     local Tc, sc, Tt, st, bt, bb, bc, Ts, ss = crust_and_crumb(H)
     last = { f.t * S / 60, Tc, sc, Tt, st, H, s:stats().water_mass / w0, bt, bb, bc, area(), base_lift(), base_gap(),
-      Ts, ss }
-    rows[#rows + 1] = ("%.2f,%.2f,%.4f,%.2f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,%.6g,%.6f,%.6f,%.2f,%.4f")
+      Ts, ss, s:collider_heat(tray).temperature }
+    rows[#rows + 1] = ("%.2f,%.2f,%.4f,%.2f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,%.6g,%.6f,%.6f,%.2f,%.4f,%.2f")
       :format(table.unpack(last))
     h.write("loaf.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
@@ -140,5 +148,5 @@ s:png("saturation", "saturation.png", { time_scale = S })
 s:png("browning", "browning.png", { time_scale = S })
 print(("after %.0f min: centre %.1f degC at saturation %.3f, top %.1f degC at saturation %.3f; height %.1f mm; "
   .. "%.1f%% of the water left (latent_heat = %s); browning: top %.3f, base %.3f, centre %.3f; "
-  .. "base lift %.2f mm (tray = %s)"):format(last[1], last[2], last[3], last[4], last[5], 1000 * last[6],
-  100 * last[7], tostring(P.latent), last[8], last[9], last[10], 1000 * last[12], P.tray))
+  .. "base lift %.2f mm (tray = %s, at %.1f degC)"):format(last[1], last[2], last[3], last[4], last[5], 1000 * last[6],
+  100 * last[7], tostring(P.latent), last[8], last[9], last[10], 1000 * last[12], P.tray, last[16]))

@@ -62,6 +62,9 @@
 -- the centre line), the centre temperature and the ooze (below) of the raw
 -- and the roasted one. `--set only=raw` (or roasted) runs one scene (the
 -- other's columns NaN).
+-- ooze_raw and ooze_roasted, the fraction of each outline that is inside material (below), have no unit
+-- (tests/scene_csv.py's unit rule):
+-- marshmallow.csv has no unit: ooze_raw, ooze_roasted
 local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },

@@ -75,6 +75,12 @@
 -- pancake.csv may leave empty (not measured): bottom_temperature_degC, top_temperature_degC, thickness_m,
 --   middle_temperature_degC, middle_water_held, bottom_browning, top_browning
 -- flip.csv may leave empty (not measured): bottom_temperature_at_flip_degC
+-- Columns that are counts, flags or ratios of the scene's own say no unit (tests/scene_csv.py's unit rule; #18,
+-- helper userfix7): flipped is 1 once the spatula has turned the sheet; middle_water_held and water_held the water a
+-- particle holds over the raw batter's (saturation x J / the preset's); water_left the pancake's water over the raw
+-- batter's.
+-- pancake.csv has no unit: flipped, middle_water_held, water_left
+-- profile.csv has no unit: water_held
 local h = require "hearth"
 local THETA_SET = require("hearth.dough").THETA[4] -- gelatinisation, degC
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
@@ -270,7 +276,7 @@ local function water_left(n) return s:stats().water_mass / (n * hp ^ (d3 and 3 o
 -- each frame
 local function write_particles(path)
   local r = s:particles { fields = { "id", "x", "J", "temperature" } }
-  local lines, t = { "t_s,id,x,y,z,J,temperature_degC" }, s:stats().t
+  local lines, t = { "t_s,id,x_m,y_m,z_m,J,temperature_degC" }, s:stats().t
   for k = 1, r.n do
     lines[#lines + 1] = ("%.4f,%d,%.6f,%.6f,%.6f,%.5f,%.2f"):format(t, r.id[k], r.x[3 * k - 2], r.x[3 * k - 1],
       r.x[3 * k], r.J[k], r.temperature[k])

@@ -41,6 +41,8 @@
 -- dough's end in it was squeezed out to its surface and the dough peeled
 -- off when pulled; a grip carries the particles inside it and holds the
 -- nodes within a cell of its surface (core/sim/solver/colliders.c, mpm.c).
+-- torn, 1 when the rope has come apart, has no unit (tests/scene_csv.py's unit rule):
+-- pull_twist.csv has no unit: torn
 local h = require "hearth"
 local P = h.params { dim = h.number { 2, min = 2, max = 3, integer = true, what = "the space's dimensions" },
   dx = h.number { 0.002, above = 0, unit = "m", what = "the grid spacing" },

@@ -63,6 +63,8 @@
 --     at 4 mm (the contrast claim_raw_dough_stretches_before_tearing_fine asks, with one field).
 -- Cost (CPU, --threads 1, a shared 2-core machine): muffin 13 / 17 s at 4 mm, 50 / 65 s at 3 mm (one field / two);
 -- loaf 7 / 8 s at 5 mm, 13 / 17 s at 4 mm; a raw pull 1-3 s.
+-- cracked, the count of cracked particles, has no unit (tests/scene_csv.py's unit rule):
+-- tear_open.csv has no unit: cracked
 local h = require "hearth"
 -- the pull's and the run's numbers, each with its valid range (0 for dx, bake and ppc: the food's own)
 local P = h.params { dim = h.number { 2, min = 2, max = 2, integer = true,

@@ -74,7 +74,7 @@ end
 h.metric("front", function() return front(lanes[(#lanes + 1) // 2]) end)
 
 local head = { "t_s" }
-for _, L in ipairs(lanes) do head[#head + 1] = ("front_%g"):format(L.ratio) end
+for _, L in ipairs(lanes) do head[#head + 1] = ("front_%g_m"):format(L.ratio) end -- each front in m
 local rows = { table.concat(head, ",") }
 local last = {}
 s:run { until_t = P.until_t, every = P.every,

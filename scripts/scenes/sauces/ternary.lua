@@ -49,7 +49,7 @@ local function front(ln)
   return h.recipes.reach(s, { ln.xn + off * sn, top + off * c }, { c, -sn }, (P.lane - 0.03 - P.dx) / c, P.dx / 2)
 end
 
-local rows = { "t_s,front_" .. table.concat(names, ",front_") }
+local rows = { "t_s,front_" .. table.concat(names, "_m,front_") .. "_m" } -- each front in m
 local last = {}
 s:run { until_t = P.until_t, every = P.every,
   png = P.png and { field = "speed", path = "frames/speed_%04d.png", width = 1600 } or nil,

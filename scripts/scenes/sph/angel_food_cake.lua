@@ -84,6 +84,10 @@
 -- form had 6e8, 5.2 in these units at dx 3 mm and falling as dx^3.)
 -- Units: viscosity and mu_e are scaled from Table 4.1 (animation units) as in
 -- bread_roll.lua, so the 2D default runs in well under a minute.
+-- Columns without a unit (tests/scene_csv.py's unit rule; #18, helper userfix7): phase, a word (baking or
+-- cooling); bands.csv's B_* the bands' mean browning index and S_* their batter's mean saturation.
+-- volume.csv has no unit: phase
+-- bands.csv has no unit: B_top, B_crumb, B_bottom, S_crumb, B_outer, S_outer
 local h = require "hearth"
 -- oven: above the batter's 26 degC start (the bake heats it; the temperature frames span the two); foam: V_b0 of eq.
 -- 3.50 in maxwell_sph's range [0, 100]; bubble_share: discs of 4 mm on a square pitch touch at pi / 4 (--set
@@ -263,13 +267,13 @@ local function bands_T()
            B = { bsum[1] / bcnt[1], bsum[2] / bcnt[2], bsum[3] / bcnt[3] }, S_crumb = ssum / bcnt[2],
            B_outer = bo / no, S_outer = so / no }
 end
--- particle positions (x, y in m), temperatures, own volumes J = det F, browning (NaN: a bubble particle), the
+-- particle positions (x_m, y_m), temperatures (T_degC), own volumes J = det F, browning (NaN: a bubble particle), the
 -- summed density, the pressure and the particle's id (SPH sorts its particles, so the rows' order changes: the
 -- id follows a bubble from the bake's end to the cooled cake), for measures that do not go through the density
 -- field (tests/sph_cake_rise.py: pieces, bubbles against their gas)
 local function positions(path)
   local r = s:particles { fields = { "x", "temperature", "J", "browning", "density", "pressure", "id" } }
-  local rows = { "x,y,T,J,browning,density,pressure,id" }
+  local rows = { "x_m,y_m,T_degC,J,browning,density_kg_m3,pressure_Pa,id" }
   for i = 1, r.n do
     rows[#rows + 1] = ("%.6g,%.6g,%.3f,%.5g,%.4g,%.5g,%.5g,%d"):format(r.x[3 * i - 2], r.x[3 * i - 1],
       r.temperature[i], r.J[i], r.browning[i], r.density[i], r.pressure[i], r.id[i])
@@ -281,8 +285,8 @@ positions("particles_raw.csv")
 local A0 = area()
 -- t is the simulated time (s); t_real_min, last, the real minutes the frames' titles give (S = 1600): the CSVs had
 -- the one clock and the frames the other (#18, helper userview3)
-local csv = { "t_s,relative_volume,mean_temperature_C,phase,T_left_C,T_right_C,T_right_minus_left_C,t_real_min" }
-local bands = { "t_s,T_top_C,T_crumb_C,T_bottom_C,top_mm,B_top,B_crumb,B_bottom,S_crumb,B_outer,S_outer,t_real_min" }
+local csv = { "t_s,relative_volume,mean_temperature_degC,phase,T_left_degC,T_right_degC,T_right_minus_left_degC,t_real_min" }
+local bands = { "t_s,T_top_degC,T_crumb_degC,T_bottom_degC,top_mm,B_top,B_crumb,B_bottom,S_crumb,B_outer,S_outer,t_real_min" }
 local cooling, peak, peak_t, baked, baked_b = false, 1, 0, nil, nil
 -- the frames' titles give the real time the scene's S = 1600 stands for, then the simulated seconds; browning
 -- is drawn as a slice, as the temperature is: as particles, the bubbles (gas, no browning: NaN) drew as

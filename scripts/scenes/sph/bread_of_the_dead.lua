@@ -71,6 +71,9 @@
 -- particles_NNNN.csv (the raw loaf, then every frame) and particles_end.csv
 -- (at until_t): x, y (m), T (degC), outer (1 where the oven's heat
 -- enters, sph_outer.c), browning and saturation per particle.
+-- outer, 1 on the loaf's outer surface (the boundary field, sph_outer.c), has no unit (tests/scene_csv.py's rule):
+-- particles_NNNN.csv has no unit: outer
+-- particles_end.csv has no unit: outer
 local h = require "hearth"
 -- the bread dough's physical properties (lua/hearth/dough_physical.lua: Zanoni et al. 1995, Choi & Okos) and the
 -- scene's time scale S (browning_scale: 1.2 s for a 30-minute bake), which heat_ext, heat_int, the water and the
@@ -187,7 +190,7 @@ local function top_at(x)
   return y - tray
 end
 local knuckle_x = on_body(math.pi / 2 + 1.25, kn)[1]
--- particle positions (x, y in m), temperatures and the outer-surface flag, for measures that do not go
+-- particle positions (x_m, y_m), temperatures (T_degC) and the outer-surface flag, for measures that do not go
 -- through the density field (tests/sph_dead_measure.py's pieces and inner gaps; bread_roll.lua writes its own)
 -- (and the browning and saturation: NaN for a bubble, which is gas, and the saturation for every particle with the
 -- water off; tests/sph_crumb_measure.py)
@@ -195,7 +198,7 @@ local function positions(path)
   local fields = { "x", "temperature", "boundary", "browning" }
   if P.water then fields[#fields + 1] = "saturation" end
   local r = s:particles { fields = fields }
-  local x, T, b, rows = r.x, r.temperature, r.boundary, { "x,y,T,outer,browning,saturation" }
+  local x, T, b, rows = r.x, r.temperature, r.boundary, { "x_m,y_m,T_degC,outer,browning,saturation" }
   for i = 1, #T do
     rows[#rows + 1] = ("%.6g,%.6g,%.2f,%d,%.4g,%.4g"):format(x[3 * i - 2], x[3 * i - 1], T[i], b[i], r.browning[i],
       P.water and r.saturation[i] or 0 / 0)

@@ -252,10 +252,10 @@ local function area()
 end
 local A0 = area()
 local csv = { "t_s,relative_volume,coolest_T_degC" }
--- particle positions (x, y in m) for measures that do not go through the density field
+-- particle positions (x_m, y_m) for measures that do not go through the density field
 -- (tests/sph_roll_measure.py: occupied area and connected pieces)
 local function positions(path)
-  local x, rows = s:positions(), { "x,y" }
+  local x, rows = s:positions(), { "x_m,y_m" }
   for i = 1, #x // 3 do rows[#rows + 1] = ("%.6g,%.6g"):format(x[3 * i - 2], x[3 * i - 1]) end
   h.write(path, table.concat(rows, "\n") .. "\n")
 end

@@ -9,6 +9,8 @@
 -- = 6.1 kg/(m^2 s), what the thesis's printed form gave with 3e8 at dx 4 mm:
 -- an animation-scaled h of 6.1 x 2500 = 15000 W/(m^2 K)) plus the same Robin
 -- flux, which at beta = 20 is about 1/800 of it.
+-- solver, a word (mpm or sph), has no unit (tests/scene_csv.py's unit rule):
+-- compare.csv has no unit: solver
 local h = require "hearth"
 local P = h.params { t_end = h.number { 0.5, above = 0, unit = "s", what = "each solver's simulated time" },
   dx = h.number { 0.004, above = 0, unit = "m", what = "the grid spacing" },

@@ -60,7 +60,7 @@ local function mean_T()
   for _, row in ipairs(T) do for _, v in ipairs(row) do if v == v then sum, n = sum + v, n + 1 end end end
   return n > 0 and sum / n or 0 / 0
 end
-local csv = { "t_s,front_m,mean_temperature_C" }
+local csv = { "t_s,front_m,mean_temperature_degC" }
 s:run { until_t = P.until_t, every = 0.1, png = { field = "temperature", path = "frames/temperature_%04d.png" },
   on_frame = function(f)
     csv[#csv + 1] = ("%.4f,%.5f,%.1f"):format(f.t, front(), mean_T())

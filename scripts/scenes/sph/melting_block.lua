@@ -5,7 +5,7 @@
 -- the tray (eq. 3.42) and diffuses (eq. 3.45-3.46); the bottom softens first
 -- and its melt runs out into a pool around the shrinking block. Writes
 -- height.csv (t_s, top_m: the top of the material above the tray over time) and
--- particles_NNNN.csv (x, y in m at each 0.1 s frame, NNNN = 0 at t = 0;
+-- particles_NNNN.csv (x_m, y_m at each 0.1 s frame, NNNN = 0 at t = 0;
 -- tests/sph_melt_measure.py measures the pool from them). heat_ext (eq. 3.42
 -- per unit area, h / c in kg/(m^2 s), animation-scaled) is 6.1, the heat the
 -- thesis's printed form gave with 3e8 at this dx (3e8 dx^3 / pi in 2D).
@@ -49,7 +49,7 @@ s:run { until_t = 2.0, every = 0.1, png = { field = "temperature", path = "frame
   on_frame = function(f)
     rows[#rows + 1] = ("%.3f,%.4f"):format(f.t, top())
     h.write("height.csv", table.concat(rows, "\n") .. "\n")
-    local x, pos = s:positions(), { "x,y" }
+    local x, pos = s:positions(), { "x_m,y_m" }
     for i = 1, #x // 3 do pos[#pos + 1] = ("%.6g,%.6g"):format(x[3 * i - 2], x[3 * i - 1]) end
     h.write(("particles_%04d.csv"):format(#rows - 2), table.concat(pos, "\n") .. "\n")
   end }
