@@ -109,6 +109,7 @@
 -- cookie (animation units, a label: 0.015 the formula's); alone and shed, shed_swollen, a flag and counts (above).
 -- cookies.csv has no unit: leavener, alone, shed, shed_swollen
 -- series.csv has no unit: leavener
+-- raw.csv has no unit: leavener
 local h = require "hearth"
 -- The levers that change Table 2's cookie (below, each where it acts), with their defaults: preset=paper's only.
 local PAPER_LEVERS = { baseline = false, reaction_temperature = -1, reaction_width = -1, conductivity = 0.01,
