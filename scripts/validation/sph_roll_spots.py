@@ -8,9 +8,10 @@ spot (the scene's spots lie 9 mm apart, their particles one raw spacing). A base
 is within 2 DX of the tray (y = 0.01 m) at 0.5 s (trace_0006.csv), when the raw roll has settled. Per frame and base
 spot: its mean x (mm), the gap under its lowest particle (mm), its particles on the outer surface (the oven's heat
 enters there: open to the outside) of its count, the dough particles under it (between its x-span and the tray: its
-floor), its mean pressure (kPa) and temperature (degC). Then the slit: the widest run of columns (DX apart over the
+floor), its mean pressure (kPa) and temperature (degC). Then the widest run of columns (DX apart over the
 middle 60% of the roll's width, as tests/sph_roll_base.py) whose lowest particle is over 2 DX above the tray, its x
-span and its height (mm). Prints one line a frame."""
+span and its height (mm): a base that arches off the tray and a spot open onto it alike (tell them by the spot's
+outer count and floor, or a picture). Prints one line a frame."""
 import csv, math, os, sys
 
 TRAY = 0.01
@@ -41,7 +42,7 @@ def spots_of(raw, nd, dx):
     return list(out.values())
 
 
-def slit(fr, dx):
+def off_tray(fr, dx):
     xs = [p["x"] for p in fr.values()]
     x0, x1 = min(xs), max(xs)
     a, b = x0 + 0.2 * (x1 - x0), x1 - 0.2 * (x1 - x0)
@@ -78,8 +79,10 @@ def main(argv):
             cols.append("x %.1f gap %.2f outer %d/%d floor %d p %.1f T %.1f" % (
                 1e3 * sum(p["x"] for p in P) / len(P), 1e3 * (low - TRAY), sum(p["outer"] > 0 for p in P), len(P),
                 floor, 1e-3 * sum(p["p"] for p in P) / len(P), sum(p["T"] for p in P) / len(P)))
-        n, a, b, g = slit(fr, dx)
-        sl = "slit %d columns x %.1f-%.1f up to %.2f" % (n, 1e3 * a, 1e3 * b, 1e3 * g) if n else "slit none"
+        n, a, b, g = off_tray(fr, dx)
+        sl = "off the tray none"
+        if n:
+            sl = "off the tray %d columns x %.1f-%.1f up to %.2f" % (n, 1e3 * a, 1e3 * b, 1e3 * g)
         print("t %.1f | %s | %s" % (round(max(k - 1, 0) * 0.1, 1), " | ".join(cols), sl))
         k += 1
 
