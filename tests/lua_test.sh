@@ -783,6 +783,41 @@ sph_bread_roll_crust_runs)
     has out.txt "centre 9 particles (0 dough), no dough particle there" "the bubble-only centre said"
     grep -qi "nan" out.txt && fail "a NaN printed for the roll: $(grep -i nan out.txt)"
     ;;
+sph_bread_roll_trace_same_bits)
+    # #18 (helper rolltear): bread_roll.lua --set trace=true dumps each frame's particles by id for
+    # scripts/validation/sph_roll_spots.py without changing the run. Bars set at 18:55 UTC before the first run: the
+    # particles_NNNN.csv files byte-equal with and without it; every trace_NNNN.csv one row per particle, each id
+    # 0..n-1 once, the dough's ids those the run prints; the spots script a line per frame (0.5 s at 5 mm).
+    run ../../scripts/scenes/sph/bread_roll.lua --set dx=0.005 --until 0.5
+    expect_rc 0 "the roll without trace"
+    mv hearth-out/bread_roll plain
+    run ../../scripts/scenes/sph/bread_roll.lua --set dx=0.005 --until 0.5 --set trace=true
+    expect_rc 0 "the roll with trace=true"
+    d=hearth-out/bread_roll
+    for f in plain/particles_*.csv; do
+        cmp -s "$f" "$d/$(basename "$f")" || fail "trace=true changed $(basename "$f")"
+    done
+    nd=$(sed -n "s/^trace: the dough's particles are ids 0-\([0-9]*\), the bubbles' from \([0-9]*\)$/\2/p" out.txt)
+    [ -n "$nd" ] || fail "no trace line with the dough's ids: $(cat out.txt)"
+    python3 - "$d" "$nd" <<'PY' || fail "the trace files (above)"
+import csv, glob, os, sys
+d, nd = sys.argv[1], int(sys.argv[2])
+files = sorted(glob.glob(os.path.join(d, "trace_*.csv")))
+if len(files) != 6:
+    sys.exit(f"{len(files)} trace files, expected 6 (t = 0 to 0.5 s)")
+for f in files:
+    rows = list(csv.DictReader(open(f)))
+    with open(os.path.join(d, "particles_" + os.path.basename(f)[6:])) as g:
+        n = sum(1 for _ in g) - 1
+    ids = sorted(int(r["id"]) for r in rows)
+    if ids != list(range(n)) or not 0 < nd < n:
+        sys.exit(f"{f}: {len(rows)} rows, ids {ids[:3]}..{ids[-3:]}, against {n} particles and {nd} dough")
+print(f"{len(files)} trace files of {n} particles, {nd} dough")
+PY
+    python3 "$here/../scripts/validation/sph_roll_spots.py" 0.005 "$nd" "$d" >spots.txt || fail "sph_roll_spots.py: $(cat spots.txt)"
+    cat spots.txt
+    [ "$(grep -c '^t .*off the tray' spots.txt)" = 6 ] || fail "sph_roll_spots.py: not a line per frame"
+    ;;
 sph_bread_roll_crust_water_wet_basis)
     # #18 (helper userfix6): bread_roll.lua --set crust=true gives its dough h.library.dough.bread's water, 45% wet
     # basis (lua/hearth/dough_physical.lua: Zanoni, Peri & Pierucci 1993), the share its dried heat capacity

@@ -69,6 +69,10 @@
 -- deleted: "Both switches on"; so is a bubble that opens as its crumb sets:
 -- "The roll's cells open at the set", and one that opens as the dough round
 -- it sets: "The roll's cells open as their walls set".)
+-- --set trace=true also writes trace_NNNN.csv beside each particles_NNNN.csv: every particle's id (the dough's
+-- first, its bubbles' after: bubble ids from the count the run prints), position, velocity, temperature, pressure,
+-- density, outer flag (the oven's heat enters there) and stress_yy, for scripts/validation/sph_roll_spots.py
+-- (docs/validation.md "The 1.5 mm roll's tear traced"); the run's bits are the same.
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature; by simulated time t_s, s), particles_NNNN.csv (positions, for
 -- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
@@ -145,7 +149,7 @@ local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the g
   own_squeeze = sph.own_squeeze or false,
   hourglass = h.number { sph.hourglass or 0, min = 0, max = 100,
     what = "the hourglass control's coefficient (sph.hourglass)" },
-  crust = false, dry = true,
+  crust = false, dry = true, trace = false,
   shift = h.number { 0, min = -5, max = 5, integer = true, what = "spacings the roll is moved along the tray (below)" },
   warm = h.number { 0, min = -50, max = 50, unit = "K", what = "how much warmer the roll is seeded (below)" },
   bubbles = h.choice { "even", even = "small bubbles spread evenly through the roll",
@@ -232,6 +236,9 @@ end
 s:add { shape = h.difference(roll, gas), material = dough, ppc = 1, jitter = 0, temperature = lib.table.T0 + P.warm,
   saturation = s0 }
 local n_dough = #s:positions() // 3 -- ids 0 .. n_dough - 1: the dough's; the bubbles' follow (gas: no water)
+if P.trace then
+  print(("trace: the dough's particles are ids 0-%d, the bubbles' from %d"):format(n_dough - 1, n_dough))
+end
 if P.crust then -- the water the dough was given, read back from its particles, as a share of its mass
   local r = s:particles { fields = { "saturation" } }
   local lo, hi = math.huge, -math.huge
@@ -272,6 +279,16 @@ s:run { until_t = 3, every = 0.1, png = { field = "browning", path = "frames/bro
     h.write("volume.csv", table.concat(csv, "\n") .. "\n")
     f:png("temperature", "frames/temperature_%04d.png", { time_scale = 400 })
     positions(("particles_%04d.csv"):format(#csv - 1))
+    if P.trace then -- the particles' state by id (scripts/validation/sph_roll_spots.py reads it; helper rolltear)
+      local r = s:particles { fields = { "id", "x", "v", "temperature", "pressure", "density", "boundary", "stress_yy" } }
+      local rows = { "id,x,y,vx,vy,T,p,rho,outer,syy" }
+      for i = 1, r.n do
+        rows[#rows + 1] = ("%d,%.6g,%.6g,%.5g,%.5g,%.5g,%.6g,%.6g,%g,%.6g"):format(r.id[i], r.x[3 * i - 2],
+          r.x[3 * i - 1], r.v[3 * i - 2], r.v[3 * i - 1], r.temperature[i], r.pressure[i], r.density[i], r.boundary[i],
+          r.stress_yy[i])
+      end
+      h.write(("trace_%04d.csv"):format(#csv - 1), table.concat(rows, "\n") .. "\n")
+    end
   end }
 print(("bread roll (%s bubbles): relative volume %.3f at t = %.2f s"):format(P.bubbles, area() / A0, s:stats().t))
 if P.crust then -- the rim against the centre: browning, saturation (the dough's), temperature
