@@ -814,6 +814,8 @@ for f in files:
         sys.exit(f"{f}: {len(rows)} rows, ids {ids[:3]}..{ids[-3:]}, against {n} particles and {nd} dough")
 print(f"{len(files)} trace files of {n} particles, {nd} dough")
 PY
+    python3 "$here/scene_csv.py" --units "$here/../scripts/scenes/sph/bread_roll.lua" "$d"/trace_*.csv ||
+        fail "a trace column gives no unit (above)"
     python3 "$here/../scripts/validation/sph_roll_spots.py" 0.005 "$nd" "$d" >spots.txt || fail "sph_roll_spots.py: $(cat spots.txt)"
     cat spots.txt
     [ "$(grep -c '^t .*off the tray' spots.txt)" = 6 ] || fail "sph_roll_spots.py: not a line per frame"

@@ -15,11 +15,14 @@ outer count and floor, or a picture). Prints one line a frame."""
 import csv, math, os, sys
 
 TRAY = 0.01
+# the trace's columns say their units (tests/scene_csv.py's rule); read here by the quantity's short name
+NAMES = {"x_m": "x", "y_m": "y", "vx_m_s": "vx", "vy_m_s": "vy", "T_degC": "T", "p_Pa": "p", "rho_kg_m3": "rho",
+         "syy_Pa": "syy"}
 
 
 def load(d, k):
     with open(os.path.join(d, "trace_%04d.csv" % k)) as f:
-        return {int(float(r["id"])): {c: float(v) for c, v in r.items()} for r in csv.DictReader(f)}
+        return {int(float(r["id"])): {NAMES.get(c, c): float(v) for c, v in r.items()} for r in csv.DictReader(f)}
 
 
 def spots_of(raw, nd, dx):

@@ -72,7 +72,8 @@
 -- --set trace=true also writes trace_NNNN.csv beside each particles_NNNN.csv: every particle's id (the dough's
 -- first, its bubbles' after: bubble ids from the count the run prints), position, velocity, temperature, pressure,
 -- density, outer flag (the oven's heat enters there) and stress_yy, for scripts/validation/sph_roll_spots.py
--- (docs/validation.md "The 1.5 mm roll's tear traced"); the run's bits are the same.
+-- (docs/validation.md "The 1.5 mm roll's tear traced"); the run's bits are the same. outer is a flag:
+-- trace_NNNN.csv has no unit: outer
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature; by simulated time t_s, s), particles_NNNN.csv (positions, for
 -- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
@@ -281,7 +282,7 @@ s:run { until_t = 3, every = 0.1, png = { field = "browning", path = "frames/bro
     positions(("particles_%04d.csv"):format(#csv - 1))
     if P.trace then -- the particles' state by id (scripts/validation/sph_roll_spots.py reads it; helper rolltear)
       local r = s:particles { fields = { "id", "x", "v", "temperature", "pressure", "density", "boundary", "stress_yy" } }
-      local rows = { "id,x,y,vx,vy,T,p,rho,outer,syy" }
+      local rows = { "id,x_m,y_m,vx_m_s,vy_m_s,T_degC,p_Pa,rho_kg_m3,outer,syy_Pa" }
       for i = 1, r.n do
         rows[#rows + 1] = ("%d,%.6g,%.6g,%.5g,%.5g,%.5g,%.6g,%.6g,%g,%.6g"):format(r.id[i], r.x[3 * i - 2],
           r.x[3 * i - 1], r.v[3 * i - 2], r.v[3 * i - 1], r.temperature[i], r.pressure[i], r.density[i], r.boundary[i],
