@@ -23,10 +23,8 @@ FREE_TEXT = {
     ("validation/crack_heat.lua", "bread"): "the path of the scene it runs",
     ("validation/crack_dt.lua", "bread"): "the path of the scene it runs",
     ("validation/crack_tray.lua", "bread"): "the path of the scene it runs",
-    ("validation/loaf_open.lua", "loaf"): "the path of the scene it runs",
-    ("validation/loaf_open.lua", "tray"): "passed on to loaf_physical.lua, whose h.choice checks it (h.pass_params)",
-    ("validation/loaf_water.lua", "loaf"): "the path of the scene it runs",
-    ("validation/loaf_water.lua", "tray"): "passed on to loaf_physical.lua, whose h.choice checks it (h.pass_params)",
+    ("validation/loaf_whatif.lua", "loaf"): "the path of the scene it runs",
+    ("validation/loaf_whatif.lua", "tray"): "passed on to loaf_physical.lua, whose h.choice checks it (h.pass_params)",
     ("validation/muffin_tear.lua", "muffins"): "the path of the scene it runs",
     ("validation/muffin_tear.lua", "wall_mode"): "passed on to muffins.lua, whose h.choice checks it (h.pass_params)",
 }

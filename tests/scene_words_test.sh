@@ -86,7 +86,7 @@ word_refused_passed_to_bread)
     refused scripts/validation/bread3d.lua tray=stiky sticky separate sticky ;;
 word_refused_passed_to_loaf_physical)
     at=scripts/scenes/baking/loaf_physical.lua extra=(--set "loaf=$root/$at")
-    refused scripts/validation/loaf_open.lua tray=glue "" separate sticky ;;
+    refused scripts/validation/loaf_whatif.lua tray=glue "" separate sticky ;;
 word_refused_passed_to_muffins)
     at=scripts/scenes/baking/muffins.lua extra=(--set "muffins=$root/$at")
     refused scripts/validation/muffin_tear.lua wall_mode=slipp slip "${contact[@]}" ;;
