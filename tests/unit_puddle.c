@@ -222,8 +222,9 @@ TEST(sauce_puddle_rests_at_yield_profile) {
               "%.2f, %.2f tau_y), crest %+.1f%%, %+.1f%%, the middle cut by a slit; its front stands %.1f, %.1f mm "
               "high "
               "where the form goes to 0 (a Tresca face stands %.1f mm). L moves toward the form as dx falls (observed "
-              "order %.2f, extrapolated to %+.1f%% of the form): the resolution holds it, the front a few cells thick "
-              "over the sticky floor's held row (docs/validation.md, #18 helper puddle)",
+              "order %.2f, extrapolated to %+.1f%% of the form): the resolution of the thin layer and its front holds "
+              "it, not the sticky face (a slip floor of Coulomb 1000 holds it within 1-4 points; docs/validation.md, "
+              "#18 helper puddle)",
               100 * (r[1].L / r[1].L_cf - 1), 100 * (r[2].L / r[2].L_cf - 1), r[1].tau_eff / sc.sigma_y,
               r[2].tau_eff / sc.sigma_y, 100 * (r[1].crest / r[1].h0_cf - 1), 100 * (r[2].crest / r[2].h0_cf - 1),
               1e3 * r[1].front, 1e3 * r[2].front, 1e3 * r[1].Hc, pL, 100 * (Linf / r[2].L_cf - 1));
