@@ -108,7 +108,8 @@ typedef struct dough_law {
 static dough_law dough_from_env(void) {
     dough_law dl = {0, 0, 16.6, 1.3e4, 1200, 1200 * 9.81 * 0.007};
     const char *e = getenv("PUDDLE_DOUGH"); /* "flow" (the preset's flow_stress) or "off" */
-    if (e && *e) dl.on = 1, dl.flow = strcmp(e, "off") != 0;
+    /* only with PUDDLE_DX: the test's verdict and its cause are the sauce's */
+    if (e && *e && getenv("PUDDLE_DX")) dl.on = 1, dl.flow = strcmp(e, "off") != 0;
     return dl;
 }
 
