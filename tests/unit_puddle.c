@@ -132,8 +132,9 @@ static puddle_result puddle(const hearth_sauce *sc, double dx, double t_max) {
     const double qr = fmax(dl.q_y, dl.flow_stress);
     const double deta = dl.flow ? dl.mu * qr * (qr + dl.q_y) : 2 * dl.q_y * dl.q_y * dl.mu;
     const double dvals[] = {2.25e4, 0.125, dl.q_y, deta, rho};
-    if (dl.on) printf("  cam_clay_dough: tau_y %.3g Pa on q (%.3g in shear), eta %.3g Pa^3 s (%s flow_stress), density %g\n",
-                      dl.q_y, dl.q_y / sqrt(3.0), deta, dl.flow ? "with" : "without", rho);
+    if (dl.on)
+        printf("  cam_clay_dough: tau_y %.3g Pa on q (%.3g in shear), eta %.3g Pa^3 s (%s flow_stress), density %g\n",
+               dl.q_y, dl.q_y / sqrt(3.0), deta, dl.flow ? "with" : "without", rho);
     const int m = dl.on ? hearth_scene_add_material(s, "cam_clay_dough", dnames, dvals, 5, &err)
                         : hearth_scene_add_material(s, "von_mises_sauce", names, vals, 6, &err);
     if (m < 0) {
