@@ -19,7 +19,11 @@
  * Bars, set before the first run (18:25 UTC, 7 Dec 2026, helper puddle): at dx = 1 mm the rest height at the middle
  * h0 and the half-width L each within 10% of the closed form; and h0's error smaller at 1 mm than at 2 mm.
  * Diagnostics: PUDDLE_DX=d runs one puddle at dx d (m), no verdict (PUDDLE_FLOOR_FRICTION=mu: on a slip floor of
- * Coulomb mu); PUDDLE_TRACE=1 prints the spread every 0.5 s; PUDDLE_DUMP=file writes the particles at rest. */
+ * Coulomb mu); PUDDLE_TRACE=1 prints the spread every 0.5 s; PUDDLE_DUMP=file writes the particles at rest;
+ * PUDDLE_REST=f the rest criterion's growth per second as a fraction of L (1e-3; 0 runs to the longest run);
+ * PUDDLE_DOUGH=flow|off puts the melted cookie dough (cam_clay_dough, with or without its flow_stress; dough_law
+ * below) in the sauce's place, PUDDLE_TMAX=s the longest run (its viscosity is 1e3-1e4 times the sauce's, so
+ * it creeps for minutes: what it prints then is the state at that time; docs/validation.md, #18 helper puddle2). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -88,9 +92,31 @@ static double height_at(const hearth_scene *s, double x, double yf, double dx) {
  * slow, as the closed form assumes: the drag time 1/c is half the free fall's sqrt(H / g), and a front moving at
  * the drag's terminal speed g (h0 / L) / c coasts g (h0 / L) / c^2 = 1.4 mm (2% of L) once its slope is gone.
  * Damping acts on velocity only, so it changes no state at rest. */
+/* The melted cookie dough in the cam_clay_dough plugin, for PUDDLE_DOUGH (a diagnostic; docs/validation.md, #18
+ * helper puddle2). Its plateau from lua/hearth/dough_physical.lua's cookie on branch cookiespread2-dough (helper
+ * cookiespread, fixed there before any run): tau_y 16.6 Pa on eq. 12's q (q = sqrt(3) s, s = 9.6 Pa in shear, the
+ * AACC disc's bound rho g H^2 / (2R)), mu 1.3e4 Pa s (6 mu_s, Huppert 1982 on Miller & Hoseney 1997's spread),
+ * density 1200, flow_stress 82 Pa (rho g H of that disc). eta in the plugin's Pa^3 s as that file maps mu: 2 tau_y^2
+ * mu without flow_stress, mu q_r (q_r + tau_y) with q_r = max(tau_y, flow_stress). No gas field: n^p reads 0, so eq.
+ * 12 is von Mises q <= tau_y, a plain yield-stress dough. E and nu give the sauce's kappa = mu = 1e4 Pa (E 2.25e4,
+ * nu 0.125), so the two piles differ only in the law. */
+typedef struct dough_law {
+    int on, flow; /* on: the dough instead of the sauce; flow: with flow_stress */
+    double q_y, mu, rho, flow_stress;
+} dough_law;
+
+static dough_law dough_from_env(void) {
+    dough_law dl = {0, 0, 16.6, 1.3e4, 1200, 1200 * 9.81 * 0.007};
+    const char *e = getenv("PUDDLE_DOUGH"); /* "flow" (the preset's flow_stress) or "off" */
+    /* only with PUDDLE_DX: the test's verdict and its cause are the sauce's */
+    if (e && *e && getenv("PUDDLE_DX")) dl.on = 1, dl.flow = strcmp(e, "off") != 0;
+    return dl;
+}
+
 static puddle_result puddle(const hearth_sauce *sc, double dx, double t_max) {
     puddle_result r = {0};
-    const double rho = 1000, g = 9.81, H = 0.036, W = 0.030, yf = 0.02;
+    const dough_law dl = dough_from_env();
+    const double rho = dl.on ? dl.rho : 1000, g = 9.81, H = 0.036, W = 0.030, yf = 0.02;
     hearth_scene_def d = hearth_default_scene_def();
     d.dx = dx;
     d.lo[0] = -0.12, d.hi[0] = 0.12;
@@ -102,7 +128,15 @@ static puddle_result puddle(const hearth_sauce *sc, double dx, double t_max) {
     const char *names[] = {"kappa", "mu", "sigma_y", "eta", "h", "density"};
     const double vals[] = {1e4, 1e4, sc->sigma_y, sc->eta, sc->h, rho};
     hearth_error err;
-    const int m = hearth_scene_add_material(s, "von_mises_sauce", names, vals, 6, &err);
+    const char *dnames[] = {"E", "nu", "tau_y", "eta", "density"};
+    const double qr = fmax(dl.q_y, dl.flow_stress);
+    const double deta = dl.flow ? dl.mu * qr * (qr + dl.q_y) : 2 * dl.q_y * dl.q_y * dl.mu;
+    const double dvals[] = {2.25e4, 0.125, dl.q_y, deta, rho};
+    if (dl.on)
+        printf("  cam_clay_dough: tau_y %.3g Pa on q (%.3g in shear), eta %.3g Pa^3 s (%s flow_stress), density %g\n",
+               dl.q_y, dl.q_y / sqrt(3.0), deta, dl.flow ? "with" : "without", rho);
+    const int m = dl.on ? hearth_scene_add_material(s, "cam_clay_dough", dnames, dvals, 5, &err)
+                        : hearth_scene_add_material(s, "von_mises_sauce", names, vals, 6, &err);
     if (m < 0) {
         fprintf(stderr, "material: %s\n", err.msg);
         hearth_scene_destroy(s);
@@ -126,12 +160,14 @@ static puddle_result puddle(const hearth_sauce *sc, double dx, double t_max) {
     }
     double A = 0;
     for (int i = 0; i < s->ps.n; i++) A += pcold(&s->ps, PC_VOL0)[i];
-    const double tau = sc->sigma_y;
+    const double tau = dl.on ? dl.q_y / sqrt(3.0) : sc->sigma_y;
     r.h0_cf = cbrt(3 * A * tau / (2 * rho * g));
     r.L_cf = rho * g * r.h0_cf * r.h0_cf / (2 * tau);
     r.ok = 1;
     /* rest: the half-width grew less than 0.1% of the closed form's L over the last second (the shear-thinning
      * flow index 0.456 makes the last creep slow; eta u^h is still 9% of tau_y at 0.06 1/s) */
+    const char *rest_env = getenv("PUDDLE_REST"); /* the rest criterion's fraction of L per second; 0 = run to t_max */
+    const double rest_frac = rest_env ? atof(rest_env) : 1e-3;
     double Lprev = half_width(s);
     for (int k = 1; k <= (int)(t_max / 0.5 + 0.5); k++) {
         if (hearth_scene_advance(s, 0.5 * k, &err) != HEARTH_OK) {
@@ -144,7 +180,7 @@ static puddle_result puddle(const hearth_sauce *sc, double dx, double t_max) {
         if (getenv("PUDDLE_TRACE"))
             printf("    t %.1f s: max speed %.3g m/s, half-width %.2f mm\n", s->t, r.vmax, 1e3 * Lk);
         if (k % 2 == 0) {
-            if (Lk - Lprev < 1e-3 * r.L_cf) break;
+            if (Lk - Lprev < rest_frac * r.L_cf) break;
             Lprev = Lk;
         }
     }
@@ -199,7 +235,8 @@ TEST(sauce_puddle_rests_at_yield_profile) {
     const double dxs[3] = {0.004, 0.002, 0.001};
     puddle_result r[3];
     if (getenv("PUDDLE_DX")) { /* a diagnostic: one puddle at another dx, no verdict */
-        puddle_result one = puddle(&sc, atof(getenv("PUDDLE_DX")), 15.0);
+        const char *tm = getenv("PUDDLE_TMAX"); /* the longest run (s), 15 by default */
+        puddle_result one = puddle(&sc, atof(getenv("PUDDLE_DX")), tm ? atof(tm) : 15.0);
         CHECK(one.ok);
         return;
     }
