@@ -3,6 +3,22 @@
 local core = ...
 local R = {}
 
+--- A preset oven's pan as s:collider's keys: pan_temperature and pan_beta; for a pan that goes in cold,
+--- pan_start_temperature and pan_warm_time (the scene's time); for one the food draws its heat from,
+--- pan_heat_capacity (J/(m^2 K)) over `area` (m^2; 2D: m per metre of depth), left out without a warm time. `extra`'s
+--- keys (shape, mode, friction, another temperature) go over these. Every pan of a physical preset (the loaf's and
+--- the cookie's sheet, the muffin's tin, the lava cake's mould) is made from it.
+function R.pan(oven, area, extra)
+  if type(oven) ~= "table" then
+    error(("h.recipes.pan: oven is a preset oven's table (h.library.oven.<name>), not %s"):format(type(oven)), 2)
+  end
+  local C = oven.pan_warm_time and oven.pan_heat_capacity
+  local o = { temperature = oven.pan_temperature, beta = oven.pan_beta, start_temperature = oven.pan_start_temperature,
+    warm_time = oven.pan_warm_time, heat_capacity = C, area = C and area or nil }
+  for k, v in pairs(extra or {}) do o[k] = v end
+  return o
+end
+
 --- A flat tray (a plane collider at height y), optionally heated.
 --- opts: mode ("separate"), friction (0.4), temperature (degC), beta (W/(m^2 K)), and for a tray that goes in
 --- cold start_temperature (degC) and warm_time (s, the scene's time: a scaled preset's real seconds over its S), and
@@ -29,11 +45,9 @@ function R.muffin_cup(s, o)
   local function v(x, y, z) return d3 and { x, y, z } or { x, y } end
   -- a tin the batter draws its heat from (the oven's pan_heat_capacity): the cup's metal as one lumped sheet, its area
   -- the inside's floor and wall (2D: per metre of depth, the U's floor and two walls)
-  local C = o.oven.pan_warm_time and o.oven.pan_heat_capacity
-  local area = C and (d3 and math.pi * o.radius * (o.radius + 2 * o.height) or 2 * (o.radius + o.height)) or nil
-  local cup = s:collider { shape = core.cup(v(o.x, o.base, o.zc), { 0, 1, 0 }, o.radius, o.height, o.wall, o.wall),
-    mode = o.mode, friction = 0.3, temperature = o.oven.pan_temperature, beta = o.oven.pan_beta,
-    start_temperature = o.oven.pan_start_temperature, warm_time = o.oven.pan_warm_time, heat_capacity = C, area = area }
+  local area = d3 and math.pi * o.radius * (o.radius + 2 * o.height) or 2 * (o.radius + o.height)
+  local cup = s:collider(R.pan(o.oven, area, { mode = o.mode, friction = 0.3,
+    shape = core.cup(v(o.x, o.base, o.zc), { 0, 1, 0 }, o.radius, o.height, o.wall, o.wall) }))
   local inner = d3 and core.cylinder(v(o.x, o.base + o.fill / 2, o.zc), { 0, 1, 0 }, o.radius, o.fill / 2)
     or core.box({ o.x - o.radius, o.base }, { o.x + o.radius, o.base + o.fill })
   s:add { shape = inner, material = o.material, temperature = o.oven.dough_temperature, saturation = o.oven.saturation,

@@ -234,9 +234,8 @@ for _, T in ipairs(ovens) do
   -- the physical preset's sheet goes in cold (oven.pan_start_temperature, pan_warm_time: dough_physical.lua) and the
   -- dough draws its heat from it (oven.pan_heat_capacity): the sheet is the box's floor, each cookie's 0.18 m share
   -- of it, a third under the dough (2D: per metre of depth; 3D: the box's 0.12 m deep)
-  local tray = h.recipes.tray(s, TRAY, { temperature = T, beta = oven.pan_beta, mode = P.tray_mode,
-    friction = P.tray_friction, start_temperature = oven.pan_start_temperature, warm_time = oven.pan_warm_time,
-    heat_capacity = oven.pan_warm_time and oven.pan_heat_capacity, area = P.dim == 3 and W * 0.12 or W })
+  local tray = h.recipes.tray(s, TRAY, h.recipes.pan(oven, P.dim == 3 and W * 0.12 or W,
+    { temperature = T, mode = P.tray_mode, friction = P.tray_friction }))
   local xs, first, gas_of = {}, {}, {} -- gas_of[i]: the physical cookie i's CO2 rate (mol/(kg s), S times fast); first[i]: cookie i's first particle id (ids run in the order s:add made them)
   for i, a in ipairs(leaveners) do
     local d = physical and h.library.dough.cookie or h.library.paper.cookie

@@ -112,10 +112,7 @@ if P.dt_max > 0 then s:set_dt(nil, P.dt_max) end
 -- dough_physical.lua); its floor stands on the recipe's preheated tray and is taken at the tray's temperature
 -- the batter draws its heat from the wall (oven.pan_heat_capacity): its inside's area, the ring's height (2D: two walls
 -- per metre of depth)
-local wall_C = oven.pan_warm_time and oven.pan_heat_capacity
-local ring = s:collider { shape = ring_shape, mode = "slip", temperature = oven.pan_temperature, beta = oven.pan_beta,
-  start_temperature = oven.pan_start_temperature, warm_time = oven.pan_warm_time, heat_capacity = wall_C,
-  area = wall_C and (d3 and 2 * math.pi * R * HC or 2 * HC) or nil }
+local ring = s:collider(h.recipes.pan(oven, d3 and 2 * math.pi * R * HC or 2 * HC, { shape = ring_shape, mode = "slip" }))
 -- ramekin_base = 1: the ramekin's floor, heated as its wall (the preset's pan: Table 2's conductive theta and beta, or
 -- the physical mould's 200 degC through 100 W/(m^2 K)), under the cake
 -- during the bake; it drops out of the scene when the ring lifts, leaving the cake on the cold plate

@@ -55,9 +55,7 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name
 -- the tray goes in cold with the dough (oven.pan_start_temperature, pan_warm_time: dough_physical.lua) and the dough
 -- draws its heat from it (oven.pan_heat_capacity): the sheet is the box's floor, 0.14 m per metre of depth, 57% under
 -- the loaf (cookies.lua's sheet likewise; #18, helper userfix7: it had stood at 200 degC from the first step)
-local tray = h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta, mode = P.tray,
-  start_temperature = oven.pan_start_temperature, warm_time = oven.pan_warm_time,
-  heat_capacity = oven.pan_warm_time and oven.pan_heat_capacity, area = 0.14 })
+local tray = h.recipes.tray(s, TRAY, h.recipes.pan(oven, 0.14, { mode = P.tray }))
 -- smooth_surface: the outer layer on the lattice, so the base is flat on the tray (the header)
 s:add { shape = h.shapes.loaf({ X0, TRAY }, WIDTH, BODY), material = h.material("cam_clay_dough", h.library.dough.bread),
   temperature = oven.dough_temperature, smooth_surface = true }
