@@ -293,6 +293,32 @@ scenes_3d_dx_floor_said)
         echo "$sc.lua: $(grep '3D floor' out.txt)"
     done
     ;;
+scenes_params_say_meaning)
+    # #18 (helper userview4): every parameter a shipped scene lists in --params says what it is, as a user reads it
+    # before a --set: a word's choices (h.choice), a number's meaning and range (h.number), a switch's meaning (h.flag).
+    # Before: loaf_physical's latent, tear_open's raw and two_field, the SPH bread roll's crust, dry, trace and five
+    # solver switches, cup_spoon's premixed and five sauce scenes' png were listed bare ("  trace = false"). Free
+    # text listed here with its reason (h.params has no meaning for a string): nozzle.lua's pair (two sauce names,
+    # checked by h.library.sauce) and ratios (a comma list the scene parses); its header says both. Bar set before
+    # the run: no other bare parameter.
+    shipped=$here/../scripts/scenes
+    n=0 bare=""
+    for f in $(cd "$shipped" && find . -name '*.lua' | sort); do
+        "$hearth" run "$shipped/$f" --params >out.txt 2>err.txt
+        rc=$?
+        expect_rc 0 "$f --params"
+        n=$((n + 1))
+        bare="$bare$(awk -v f="${f#./}" '
+            prev != "" && $0 !~ /^      / { print f ": " prev "; " }
+            { prev = "" }
+            /^  [A-Za-z_][A-Za-z_0-9.]* = / { prev = $0; sub(/^  /, "", prev) }
+            END { if (prev != "") print f ": " prev "; " }' out.txt |
+            grep -v -e '^sauces/nozzle.lua: pair = ' -e '^sauces/nozzle.lua: ratios = ' | tr '\n' ' ')"
+    done
+    echo "$n shipped scenes listed"
+    [ "$n" -ge 25 ] || fail "only $n scenes found under $shipped"
+    [ -z "$bare" ] || fail "listed without what it is (declare it with h.flag, h.number or h.choice): $bare"
+    ;;
 bread_area_unit_said)
     # #18 (helper userfix4, from userview3's list): bread.csv's area_plain, area_one_slit and area_two_slits had no
     # unit and hold volumes in 3D. Since helper userfix7 the names say it: area_<loaf>_m2 in 2D, volume_<loaf>_m3 in

@@ -33,7 +33,8 @@
 -- loaf.csv has no unit: water_left
 local h = require "hearth"
 local P = h.params { dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
-  frames = h.number { 25, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" }, latent = true,
+  frames = h.number { 25, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" },
+  latent = h.flag { true, what = "the water's latent heat: the crumb holds at the 100 degC boiling plateau" },
   until_real = h.number { 0, min = 0, unit = "s", what = "the real bake time (0: the oven's own)" },
   -- with --set oven.wall_temperature / oven.emissivity (radiating walls, docs/validation.md "An oven's hot walls"):
   -- the air's own coefficient, the preset's 30 being an effective one with radiation in it

@@ -68,7 +68,8 @@
 local h = require "hearth"
 -- the pull's and the run's numbers, each with its valid range (0 for dx, bake and ppc: the food's own)
 local P = h.params { dim = h.number { 2, min = 2, max = 2, integer = true,
-    what = "the space's dimensions; the tear is measured over the plane's columns" }, raw = false,
+    what = "the space's dimensions; the tear is measured over the plane's columns" },
+  raw = h.flag { false, what = "pull the food unbaked, at its own temperature, in place of the baked one" },
   food = h.choice { "muffin", muffin = "a muffin's batter in its cup (h.library.paper.muffin)",
     bread = "a loaf of bread dough on its tray (h.library.paper.bread)" },
   dx = h.number { 0, min = 1e-4, max = 0.02, unit = "m", what = "the grid spacing", also = { [0] = "the food's own" } },
@@ -76,7 +77,8 @@ local P = h.params { dim = h.number { 2, min = 2, max = 2, integer = true,
   speed = h.number { 0.05, above = 0, max = 10, unit = "m/s", what = "the grips' speed" },
   pull = h.number { 0.4, above = 0, max = 100, unit = "s", what = "the pull's time" },
   frames = h.number { 20, min = 1, max = 10000, integer = true, what = "PNG frames over the pull" },
-  ppc = h.number { 0, min = 0, max = 64, integer = true, what = "particles per cell (0: 4)" }, two_field = false }
+  ppc = h.number { 0, min = 0, max = 64, integer = true, what = "particles per cell (0: 4)" },
+  two_field = h.flag { false, what = "two velocity fields where a crack runs (Homel & Herbold 2017), so its sides part" } }
 local muffin = P.food == "muffin"
 local dx = P.dx > 0 and P.dx or muffin and 0.004 or 0.005 -- the food's own scene's dx
 local bake = P.raw and 0 or P.bake > 0 and P.bake or muffin and 3 or 2.5

@@ -18,7 +18,8 @@ local P = h.params { blend = h.choice("nonlinear", h.blend_words),
   depth = h.number { 0.025, min = 0, unit = "m", what = "how deep the celery dips below the sauce's top" },
   rest = h.number { 0.2, min = 0, unit = "s", what = "the celery's rest at the bottom" },
   until_t = h.number { 1.2, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
-  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" }, png = true }
+  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" },
+  png = h.flag { true, what = "PNG frames of the speed in frames/" } }
 
 local material
 if P.sauce == "mix" then
