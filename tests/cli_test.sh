@@ -58,6 +58,19 @@ cli_man_covers_subcommands)
     grep -q '^\.BI \\-\\-movie' "$man" || fail "docs/hearth.1 OPTIONS lacks --movie"
     echo "docs/hearth.1 covers:" $subs
     ;;
+run_help_exit_statuses_as_man)
+    # #18 (helper userview4): `hearth run --help` gave the exit statuses 0, 1, 2, 3, 130, 143 and left out 4 (a plugin
+    # crashed), which README and docs/hearth.1's EXIT STATUS give; a user scripting around hearth reads --help.
+    # Bar set before the run: the numbers --help's "Exit status:" sentence gives equal those of the man page's.
+    man="$HEARTH_SOURCE_ROOT/docs/hearth.1"
+    "$hearth" run --help >"$tmp/help" 2>&1 || fail "run --help exited $?"
+    statuses() { tr '\n' ' ' | sed 's/\. .*//' | grep -oE '(^|[ :;,]) ?[0-9]+ [a-zA-Z]' | grep -oE '[0-9]+' | sort -n | tr '\n' ' '; }
+    from_help=$(sed -n '/^Exit status:/,$p' "$tmp/help" | statuses)
+    from_man=$(sed -n '/^\.SH EXIT STATUS/,/^\.PP/p' "$man" | sed 1d | statuses)
+    echo "run --help: $from_help; docs/hearth.1: $from_man"
+    [ -n "$from_man" ] && [ "$(echo $from_man | wc -w)" -ge 6 ] || fail "too few statuses read from docs/hearth.1: $from_man"
+    [ "$from_help" = "$from_man" ] || fail "run --help gives exit statuses $from_help, docs/hearth.1 $from_man"
+    ;;
 movie_written_with_ffmpeg)
     # s:run{movie = ...}: the run's PNG frames (odd sizes: padded to even for yuv420p) become an H.264 movie
     if ! command -v ffmpeg >/dev/null || ! command -v ffprobe >/dev/null; then
