@@ -357,6 +357,32 @@ set_bad_value_exit2)
     run params.lua --set height=0.5
     expect_rc 0 "a good --set"
     ;;
+scene_knob_out_of_range_exit2)
+    # #18 (helper userview4): a scene setting --set changes in any scene (hearth help scene: dim, cfl, seed, ppc,
+    # oven.emissivity, ...) out of its range was a scene error (exit 1) blaming the scene's h.scene line
+    # ("h.scene: seed = -1; valid range ..."; "s:add: ppc = 0; ..."), where README gives 2 for a bad --set. Now a
+    # usage error that names the --set, the setting's meaning and its range, as an h.params number's refusal. Bar
+    # set before the run; nothing is simulated (the scene prints height= only once h.params passed, which it does).
+    bad_knob() { # what text args...
+        local what=$1 text=$2
+        shift 2
+        run params.lua "$@"
+        expect_rc 2 "$what"
+        has_msg "$text" "$what"
+        grep -q "filled_at" out.txt && fail "$what: the scene ran on past the refused value"
+    }
+    bad_knob "a seed below 0" "params.lua:7: --set seed=-1: seed (seed of jittered seeding" --set seed=-1
+    bad_knob "a seed's range" "takes a whole number in [0, 4503599627370496], not -1" --set seed=-1
+    bad_knob "a cfl of 0 (open lower end)" "--set cfl=0: cfl (CFL number" --set cfl=0
+    bad_knob "cfl's range" ") takes a number in (0, 4], not 0" --set cfl=0
+    bad_knob "dim 4" "--set dim=4: dim (2 (plane strain) or 3) takes a whole number in [2, 3], not 4" --set dim=4
+    bad_knob "a dotted setting" "--set oven.emissivity=2: oven.emissivity (effective emissivity" --set oven.emissivity=2
+    bad_knob "ppc 0" "params.lua:8: --set ppc=0: ppc (particles per cell of every body) takes a whole number in [1, 1000], not 0" --set ppc=0
+    bad_knob "ppc 2.5" "--set ppc=2.5: ppc (particles per cell of every body) takes a whole number in [1, 1000], not 2.5" --set ppc=2.5
+    run params.lua --set seed=3 --set cfl=0.5 --set ppc=9
+    expect_rc 0 "values in range"
+    has out.txt "filled_at_0.35=true" "values in range: the scene ran"
+    ;;
 params_word_nearest_suggested)
     # h.choice (lua/hearth/params.lua): a word parameter takes its words, the empty one too; a misspelt word is a
     # bad --set (exit 2) at the scene's h.params line, naming the word, every valid word with its description, and
