@@ -58,6 +58,16 @@ cli_man_covers_subcommands)
     grep -q '^\.BI \\-\\-movie' "$man" || fail "docs/hearth.1 OPTIONS lacks --movie"
     echo "docs/hearth.1 covers:" $subs
     ;;
+help_demo_options_as_demo_help)
+    # #18 (helper userview4): `hearth --help`'s demo line left out --movie, which README ("hearth demo [--movie
+    # demo.mp4]") and `hearth demo --help` give. Bar set before the run: the --options of the two lines are the same set.
+    opts() { grep -oE '\[--[a-z-]+' | sort -u | tr '\n' ' '; }
+    top=$("$hearth" --help 2>&1 | grep '^  hearth demo ' | opts)
+    own=$("$hearth" demo --help 2>&1 | grep '^usage: hearth \[demo\]' | opts)
+    echo "hearth --help: $top; hearth demo --help: $own"
+    [ "$(echo $own | wc -w)" -ge 5 ] || fail "too few options read from hearth demo --help: $own"
+    [ "$top" = "$own" ] || fail "hearth --help's demo line gives $top, hearth demo --help $own"
+    ;;
 run_help_exit_statuses_as_man)
     # #18 (helper userview4): `hearth run --help` gave the exit statuses 0, 1, 2, 3, 130, 143 and left out 4 (a plugin
     # crashed), which README and docs/hearth.1's EXIT STATUS give; a user scripting around hearth reads --help.
