@@ -142,7 +142,7 @@ PY
     # its time column names its unit (t_s; #18, helper userfix6: it wrote a bare t), every other column its own (userfix7)
     python3 "$root/tests/scene_csv.py" --units "$scenes/tear_open.lua" hearth-out/tear_open/tear_open.csv ||
         fail "tear_open.csv's time column or another column gives no unit"
-    for bad in "dim=3:dim (the space's dimensions; the tear is measured over the plane's columns) takes only 2, not 3" "food=cake:food takes one of the words below, not \"cake\"" "two_field=yes:expected true or false" \
+    for bad in "dim=3:dim (the space's dimensions; the tear is measured over the plane's columns) takes only 2, not 3" "food=cake:food takes one of the words below, not \"cake\"" "two_field=yes:two_field (two velocity fields where a crack runs (Homel & Herbold 2017), so its sides part) takes true or false" \
                "frames=0:frames (PNG frames over the pull) takes a whole number in .1, 10000., not 0"; do
         "$hearth" run "$scenes/tear_open.lua" --quiet --set "${bad%%:*}" >out.txt 2>err.txt && fail "--set ${bad%%:*} ran"
         grep -q "${bad#*:}" err.txt || fail "--set ${bad%%:*}: the message does not say '${bad#*:}': $(cat err.txt)"
