@@ -182,7 +182,9 @@ local rows = { head }
 local until_t = bake + P.lift + P.after
 h.write("lava_cake_times.csv", ("bake_end_s,cut_s,end_s\n%.6f,%.6f,%.6f\n"):format(bake, bake + P.lift, until_t))
 s:run { until_t = until_t, every = until_t / P.frames,
-  png = { field = "temperature", path = "heat_%04d.png", time_scale = S },
+  -- the paper preset's seconds are Table 2's animation units, and its frames say so (#18, helper userview4)
+  png = { field = "temperature", path = "heat_%04d.png", time_scale = S,
+    label = physical and "chocolate fondant" or "lava cake; Table 2's animation units" },
   on_frame = function(f)
     local T, top, reach, left = measure()
     local row = ("%.3f,%.2f,%.5f,%.5f,%.5f"):format(f.t, T == T and T or -1, top, reach, left)

@@ -82,6 +82,9 @@ local P = h.params { dim = h.number { 2, min = 2, max = 2, integer = true,
 local muffin = P.food == "muffin"
 local dx = P.dx > 0 and P.dx or muffin and 0.004 or 0.005 -- the food's own scene's dx
 local bake = P.raw and 0 or P.bake > 0 and P.bake or muffin and 3 or 2.5
+-- the frames' title: which food, baked or raw, and that the seconds are Table 2's animation units (#18, helper
+-- userview4: the frames said their time alone)
+local label = ("%s %s; Table 2's animation units"):format(P.raw and "raw" or "baked", P.food)
 local oven = h.library.paper_oven[P.food]
 print(("tear_open.lua: h.library.paper.%s, animation units (Ding Table 2): heat runs in seconds, not minutes; water %g "
   .. "times fast; %s"):format(P.food, oven.water_time_scale,
@@ -247,13 +250,13 @@ s:run { until_t = bake + P.pull, every = every, on_frame = function(f)
   h.write("tear_open.csv", table.concat(rows, "\n") .. "\n")
   if t0 and f.t >= t0 - 1e-9 then
     if frame % 5 == 0 or f.t >= bake + P.pull - 1e-9 then -- and the pull's last frame, the food torn
-      f:png("temperature", "heat_%04d.png", { kind = "particles" })
-      f:png("damage", "damage_%04d.png", { kind = "particles", range = { 0, 1 } })
+      f:png("temperature", "heat_%04d.png", { kind = "particles", label = label })
+      f:png("damage", "damage_%04d.png", { kind = "particles", range = { 0, 1 }, label = label })
     end
     frame = frame + 1
   end
 end }
-s:png("browning", "browning.png")
+s:png("browning", "browning.png", { label = label })
 print(("%s%s: %s"):format(P.raw and "raw " or "baked ", P.food, parted and
   ("torn through at %.1f mm of separation"):format(parted * 1e3) or
   ("not torn through after %.1f mm of separation"):format(separation(bake + P.pull) * 1e3)))
