@@ -68,6 +68,25 @@ paper_frames_say_animation_units)
     python3 "$root/tests/png_title.py" "$tmp/loaf/temperature_0000.png" | sed "s|$tmp/||" | tee titles.txt
     grep -q ": t = 0 s   (0 s simulated x 300, step 0)$" titles.txt || fail "the physical loaf's frame: its title as drawn"
     ;;
+lava_cake_csv_unmeasured_empty)
+    # #18 (helper userview4): once the slumped lava cake no longer reaches the centre's probe point, lava_cake.csv
+    # wrote -1.00 in centre_temperature_degC (a temperature a plot takes as one; the paper batter starts at 0 degC),
+    # as pancake.csv did before helper userfix5. Bar set before the run: at dx 4 mm to 1 s (the probe point is
+    # empty from 1.0 s there) no cell of the column is a number below the batter's start, at least one is empty,
+    # and the file keeps tests/scene_csv.py's rule (empty cells only in the columns lava_cake.lua declares).
+    "$hearth" run "$scenes/lava_cake.lua" --quiet --set dx=0.004 --set frames=5 --until 1 --out lc >out.txt 2>err.txt ||
+        fail "lava_cake: exit $?: $(cat err.txt)"
+    python3 "$root/tests/scene_csv.py" lc/lava_cake.csv "$scenes/lava_cake.lua" || fail "lava_cake.csv breaks the cells' rule"
+    python3 - lc/lava_cake.csv <<'PY' || fail "lava_cake.csv writes a value where nothing was measured (rows above)"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+cells = [r["centre_temperature_degC"] for r in rows]
+print("centre_temperature_degC by t_s: " + ", ".join(f"{r['t_s']}: {c!r}" for r, c in zip(rows, cells)))
+bad = [c for c in cells if c != "" and float(c) < 0]
+print(f"{cells.count('')} of {len(cells)} rows not measured (need >= 1); below the batter's 0 degC start: {bad}")
+sys.exit(0 if cells.count("") >= 1 and not bad else 1)
+PY
+    ;;
 pancake_csv_unmeasured_empty)
     run pancake --until 0.3 --frames 2 >/dev/null
     python3 "$root/tests/scene_csv.py" hearth-out/pancake/pancake.csv "$scenes/pancake.lua" || fail "pancake.csv breaks the cells' rule"
