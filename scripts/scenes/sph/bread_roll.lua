@@ -69,14 +69,16 @@
 -- deleted: "Both switches on"; so is a bubble that opens as its crumb sets:
 -- "The roll's cells open at the set", and one that opens as the dough round
 -- it sets: "The roll's cells open as their walls set".)
--- --set trace=true also writes trace_NNNN.csv beside each particles_NNNN.csv: every particle's id (the dough's
+-- --set trace=true also writes trace_NNNN.csv beside each particles_NNNN.csv from 0001 on: every particle's id (the dough's
 -- first, its bubbles' after: bubble ids from the count the run prints), position, velocity, temperature, pressure,
 -- density, outer flag (the oven's heat enters there) and stress_yy, for scripts/validation/sph_roll_spots.py
 -- (docs/validation.md "The 1.5 mm roll's tear traced"); the run's bits are the same. outer is a flag:
 -- trace_NNNN.csv has no unit: outer
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature; by simulated time t_s, s), particles_NNNN.csv (positions, for
--- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
+-- tests/sph_roll_measure.py: particles_0000.csv is the raw roll before the run, and NNNN >= 1 the frame at
+-- t = (NNNN - 1) x 0.1 s, volume.csv's row NNNN, whose pictures are frames/*_(NNNN - 1).png: particles_0004.csv and
+-- trace_0004.csv go with temperature_0003.png, at 0.3 s) and browning frames: the crust's colour from each
 -- particle's temperature history (Zanoni et al. 1995, the thesis's [89];
 -- browning_scale = 400 lets the 3 s animation stand for a 20-minute bake).
 -- Heat: eq. 3.42 per unit area of surface (core/sim/solver/sph_heat.c),
@@ -243,6 +245,7 @@ s:add { shape = h.difference(roll, gas), material = dough, ppc = 1, jitter = 0, 
 local n_dough = #s:positions() // 3 -- ids 0 .. n_dough - 1: the dough's; the bubbles' follow (gas: no water)
 if P.trace then
   print(("trace: the dough's particles are ids 0-%d, the bubbles' from %d"):format(n_dough - 1, n_dough))
+  print("trace: trace_NNNN.csv (and particles_NNNN.csv) is the frame at t = (NNNN - 1) x 0.1 s, frames/*_(NNNN - 1).png")
 end
 if P.crust then -- the water the dough was given, read back from its particles, as a share of its mass
   local r = s:particles { fields = { "saturation" } }
