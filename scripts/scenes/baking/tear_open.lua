@@ -40,7 +40,7 @@
 --   largest_piece_share: the largest component of intact bins' particles over all the particles (two clean halves
 --     near 0.5 less their cracked faces; crumbs and a fallen strip lower it);
 --   crack_from_face_m: where the pull cracks: the median, over the free span's particles it has cracked (not those
---     the bake cracked), of their distance now to the nearer grip face (nan until it cracks one);
+--     the bake cracked), of their distance now to the nearer grip face (empty until it cracks one);
 --   bodies, loose_share: pieces, over every particle's bins (cracked or not): two halves with their torn faces on
 --     them and a clean gap are two bodies, crumbs between the halves bridge them into one; loose_share: the
 --     particles outside the bodies (crumbs fallen clear).
@@ -65,6 +65,9 @@
 -- loaf 7 / 8 s at 5 mm, 13 / 17 s at 4 mm; a raw pull 1-3 s.
 -- cracked, the count of cracked particles, has no unit (tests/scene_csv.py's unit rule):
 -- tear_open.csv has no unit: cracked
+-- An empty cell is "not measured" (pancake.lua's rule, read by tests/scene_csv.py): the torn faces' peaks before the
+-- pull has opened a face, where it cracks before it has cracked anything:
+-- tear_open.csv may leave empty (not measured): face_peak_min_degC, face_peak_max_degC, crack_from_face_m
 local h = require "hearth"
 -- the pull's and the run's numbers, each with its valid range (0 for dx, bake and ppc: the food's own)
 local P = h.params { dim = h.number { 2, min = 2, max = 2, integer = true,
@@ -244,9 +247,12 @@ s:run { until_t = bake + P.pull, every = every, on_frame = function(f)
     measure(f.t)
   local sep = separation(f.t)
   if t0 and not parted and pieces >= 2 then parted = sep end
-  rows[#rows + 1] = ("%.4f,%.5f,%.5f,%d,%d,%.2f,%.2f,%d,%.4g,%.4f,%.4f,%.5f,%d,%.4f"):format(f.t, sep, neck, pieces, nf,
-    nf > 0 and tlo or 0 / 0, nf > 0 and thi or 0 / 0, cracked, force, free_cracked, largest, from_face, bodies, loose)
-    :gsub("%-nan", "nan")
+  -- a value not measured (no torn face yet, nothing the pull cracked) is an empty cell, as pancake.csv's (it was
+  -- "nan"; #18, helper userview4)
+  local function cell(fmt, x) return x == x and fmt:format(x) or "" end
+  rows[#rows + 1] = ("%.4f,%.5f,%.5f,%d,%d,%s,%s,%d,%.4g,%.4f,%.4f,%s,%d,%.4f"):format(f.t, sep, neck, pieces, nf,
+    cell("%.2f", nf > 0 and tlo or 0 / 0), cell("%.2f", nf > 0 and thi or 0 / 0), cracked, force, free_cracked, largest,
+    cell("%.5f", from_face), bodies, loose)
   h.write("tear_open.csv", table.concat(rows, "\n") .. "\n")
   if t0 and f.t >= t0 - 1e-9 then
     if frame % 5 == 0 or f.t >= bake + P.pull - 1e-9 then -- and the pull's last frame, the food torn
