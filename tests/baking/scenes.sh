@@ -66,7 +66,8 @@ paper_frames_say_animation_units)
     "$hearth" run "$scenes/loaf_physical.lua" --quiet --until 1e-6 --out "$tmp/loaf" >out.txt 2>err.txt ||
         fail "loaf_physical: exit $?: $(cat err.txt)"
     python3 "$root/tests/png_title.py" "$tmp/loaf/temperature_0000.png" | sed "s|$tmp/||" | tee titles.txt
-    grep -q ": t = 0 s   (0 s simulated x 300, step 0)$" titles.txt || fail "the physical loaf's frame: its title as drawn"
+    grep -q ": physical loaf, oven 200 °C, tray in cold, separate   t = 0 s   (0 s simulated x 300, step 0)$" titles.txt ||
+        fail "the physical loaf's frame: its title as drawn, what it shows and its real time"
     ;;
 lava_cake_csv_unmeasured_empty)
     # #18 (helper userview4): once the slumped lava cake no longer reaches the centre's probe point, lava_cake.csv
