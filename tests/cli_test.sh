@@ -58,6 +58,14 @@ cli_man_covers_subcommands)
     grep -q '^\.BI \\-\\-movie' "$man" || fail "docs/hearth.1 OPTIONS lacks --movie"
     echo "docs/hearth.1 covers:" $subs
     ;;
+plot_png_title_text)
+    # #18 (helper userview4): a plot's title is also its PNG's Title text, as a frame's is (io_png.c; the frames had
+    # it, plot.c's canvas did not set it). Bar set before the run: hearth rheometer's PNG has the Title it draws.
+    "$hearth" rheometer sauce.mayo --out "$tmp/r" >"$tmp/out" 2>&1 || fail "rheometer exited $?: $(cat "$tmp/out")"
+    t=$(python3 "$here/png_title.py" "$tmp/r/sauce.mayo.png") || fail "png_title.py: $t"
+    echo "$t"
+    [ "$t" = "$tmp/r/sauce.mayo.png: flow curve: sauce.mayo, Mayonnaise (My)" ] || fail "the plot's Title text: $t"
+    ;;
 help_demo_options_as_demo_help)
     # #18 (helper userview4): `hearth --help`'s demo line left out --movie, which README ("hearth demo [--movie
     # demo.mp4]") and `hearth demo --help` give. Bar set before the run: the --options of the two lines are the same set.
