@@ -58,6 +58,16 @@ cli_man_covers_subcommands)
     grep -q '^\.BI \\-\\-movie' "$man" || fail "docs/hearth.1 OPTIONS lacks --movie"
     echo "docs/hearth.1 covers:" $subs
     ;;
+readme_run_synopsis_as_help)
+    # #18 (helper userview4): README's `hearth run` synopsis left out --movie, which `hearth run --help`'s usage gives.
+    # Bar set before the run: the [--options] of README's synopsis line and of run --help's usage lines are one set.
+    opts() { grep -oE '\[--[a-z-]+' | sort -u | tr '\n' ' '; }
+    readme=$(grep -E '^- `hearth run SCENE.lua \[' "$HEARTH_SOURCE_ROOT/README.md" | head -1 | opts)
+    help=$("$hearth" run --help 2>&1 | sed -n '1,/^Runs /p' | opts)
+    echo "README: $readme; run --help: $help"
+    [ "$(echo $help | wc -w)" -ge 10 ] || fail "too few options read from run --help: $help"
+    [ "$readme" = "$help" ] || fail "README's hearth run synopsis gives $readme, hearth run --help $help"
+    ;;
 plot_png_title_text)
     # #18 (helper userview4): a plot's title is also its PNG's Title text, as a frame's is (io_png.c; the frames had
     # it, plot.c's canvas did not set it). Bar set before the run: hearth rheometer's PNG has the Title it draws.
