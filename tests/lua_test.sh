@@ -437,6 +437,22 @@ lua_repl_pipe)
     [ "$(head -1 out.txt)" = 2 ] || fail "repl without a scene: $(cat out.txt)"
     [ -n "$(sed -n 2p out.txt)" ] || fail "repl: h is not at hand without a scene"
     ;;
+dofile_relative_path_says_folder)
+    # #18 (helper userview4): scripts/validation/loaf_whatif.lua (and crack_heat, crack_dt, crack_tray, muffin_tear,
+    # bread3d) run their scene by a path from the source root; started elsewhere they stopped with "cannot open
+    # scripts/scenes/...: No such file or directory" alone. Bar set before the run: a scene's dofile of a missing
+    # relative path fails (exit 1) naming the path and the folder it was read from; an absolute one as before.
+    run dofile_relative.lua
+    expect_rc 1 "a missing relative path"
+    has_msg "cannot open scripts/scenes/baking/no_such_scene.lua" "the path"
+    has_msg "(a relative path is read from the folder hearth runs in, $(pwd -P)" "the folder searched"
+    printf 'dofile("%s/no_such.lua")\n' "$PWD" >abs.lua
+    "$hearth" run abs.lua --quiet >out.txt 2>err.txt
+    rc=$?
+    expect_rc 1 "a missing absolute path"
+    has_msg "cannot open $PWD/no_such.lua" "the absolute path"
+    grep -q "relative path" err.txt && fail "an absolute path said to be relative: $(cat err.txt)"
+    ;;
 lua_run_help)
     for sub in run repl; do
         "$hearth" $sub --help >out.txt 2>err.txt || fail "$sub --help exited $?"
