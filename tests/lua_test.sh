@@ -437,6 +437,21 @@ lua_repl_pipe)
     [ "$(head -1 out.txt)" = 2 ] || fail "repl without a scene: $(cat out.txt)"
     [ -n "$(sed -n 2p out.txt)" ] || fail "repl: h is not at hand without a scene"
     ;;
+sph_results_lines_say_real_minutes)
+    # #18 (helper userview4): the SPH bread of the dead's and angel food cake's results lines gave a time in simulated
+    # seconds alone ("at t = 1.20 s"; the cake's "1.563 at t = 3.50 s", where its peak said "13 min"), which only
+    # the run's first line maps to real minutes. Bar set before the run: each line with a time gives its real
+    # minutes beside it (S = 1500 and 1600: 0.04 s is 1 min).
+    run ../../scripts/scenes/sph/bread_of_the_dead.lua --until 0.04
+    expect_rc 0 "the bread of the dead, 0.04 s"
+    has out.txt "above the tray at t = 0.04 s, 1 min" "the volume line's real time"
+    [ "$(grep -c '^bread of the dead at t = 0.04 s, 1 min (water true): ' out.txt)" -eq 2 ] ||
+        fail "the centre and outer lines' real time: $(grep '^bread of the dead at' out.txt)"
+    run ../../scripts/scenes/sph/angel_food_cake.lua --set bake=0.02 --set until_t=0.04
+    expect_rc 0 "the angel food cake, 0.04 s"
+    has out.txt "at t = 0.04 s, 1 min (mean " "the cake's last volume with its real time"
+    grep 'relative volume' out.txt
+    ;;
 dofile_relative_path_says_folder)
     # #18 (helper userview4): scripts/validation/loaf_whatif.lua (and crack_heat, crack_dt, crack_tray, muffin_tear,
     # bread3d) run their scene by a path from the source root; started elsewhere they stopped with "cannot open
