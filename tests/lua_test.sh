@@ -437,6 +437,25 @@ lua_repl_pipe)
     [ "$(head -1 out.txt)" = 2 ] || fail "repl without a scene: $(cat out.txt)"
     [ -n "$(sed -n 2p out.txt)" ] || fail "repl: h is not at hand without a scene"
     ;;
+recipes_surface_below_a_gap)
+    # #18 (helper userview4): celery_dip.lua's "sauce surface" was h.recipes.height, the highest material on the line,
+    # which read the drops on the lifted celery (0.0711 m for a bath ~25 mm deep). h.recipes.surface reads the top
+    # of the lowest material. Bars set before the run (dx 1/64 m, the probe's kernel reaches ~dx/2 past a face):
+    # a 0.2 m block on y0 with a blob at 0.5-0.6 above a gap: surface 0.2 +- 2 dx, height 0.5 +- 2 dx; an empty
+    # line 0.
+    run surface.lua
+    expect_rc 0 "the block and the blob"
+    cat out.txt
+    python3 - out.txt <<'PY' || fail "h.recipes.surface / height (numbers above)"
+import re, sys
+t = open(sys.argv[1]).read()
+hgt, srf = map(float, re.search(r"height=([0-9.]+) surface=([0-9.]+)", t).groups())
+empty = float(re.search(r"empty=([0-9.]+)", t).group(1))
+dx = 1 / 64
+ok = abs(srf - 0.2) <= 2 * dx and abs(hgt - 0.5) <= 2 * dx and empty == 0
+sys.exit(0 if ok else 1)
+PY
+    ;;
 sph_results_lines_say_real_minutes)
     # #18 (helper userview4): the SPH bread of the dead's and angel food cake's results lines gave a time in simulated
     # seconds alone ("at t = 1.20 s"; the cake's "1.563 at t = 3.50 s", where its peak said "13 min"), which only
