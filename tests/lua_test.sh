@@ -121,6 +121,24 @@ lua_determinism)
     # the first line after the header is the initial state: the jitter differs too
     cmp -s o1/series.csv o4/series.csv && fail "a different seed gave the same CSV"
     ;;
+run_csv_probe_outside_empty)
+    # #18 (helper userview4): s:run{csv = ...} wrote "nan" for a probe outside the material (drop_block.lua's
+    # height.csv, speed_m_s@0.5:0.2:0, once the block had fallen past it), where the shipped scenes write an empty
+    # cell for "not measured" (tests/scene_csv.py). Bar set before the run: the outside probe's cells are empty in
+    # every row, the inside one's are numbers (40 degC), no cell reads nan.
+    run run_csv_outside.lua --out o
+    expect_rc 0 "run_csv_outside.lua"
+    cat o/series.csv
+    python3 - o/series.csv <<'PY' || fail "series.csv's probe cells (above)"
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1])))
+head, body = rows[0], rows[1:]
+i, o = head.index("temperature_degC@0.45:0.45:0"), head.index("temperature_degC@0.9:0.9:0")
+ok = len(body) == 3 and all(r[o] == "" for r in body) and all(abs(float(r[i]) - 40) < 1 for r in body)
+ok = ok and not any("nan" in c for r in body for c in r)
+sys.exit(0 if ok else 1)
+PY
+    ;;
 run_csv_columns_say_units)
     # #18 (helper userfix7): s:run{csv = ...} wrote kinetic (J in 3D, J per metre of depth in 2D) and max_speed with
     # no unit, and a probe's column as field@x:y:z. The bar, set before the first run: the header is exactly

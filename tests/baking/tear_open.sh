@@ -121,7 +121,7 @@ sys.exit(0 if rows and not bad else 1)
 PY
     [ $? -eq 0 ] || fail "the baked muffin does not tear into two clean halves (numbers above)"
     ;;
-# tear_open.lua as a user runs it, shortly: its CSV's cells are numbers (the faces' columns nan before the pull, and
+# tear_open.lua as a user runs it, shortly: its CSV's cells are numbers (the faces' columns empty before the pull, and
 # crack_from_face_m while the pull has cracked nothing: the raw batter never cracks),
 # its frames written, and a scene it cannot build (dim=3, an unknown food, two_field neither true nor false, a pull
 # of no frames; the food's words are its h.choice's: "muffin", "bread")
