@@ -372,7 +372,7 @@ scene_knob_out_of_range_exit2)
         grep -q "filled_at" out.txt && fail "$what: the scene ran on past the refused value"
     }
     bad_knob "a seed below 0" "params.lua:7: --set seed=-1: seed (seed of jittered seeding" --set seed=-1
-    bad_knob "a seed's range" "takes a whole number in [0, 4503599627370496], not -1" --set seed=-1
+    bad_knob "a seed's range" "takes a whole number in [0, 4.503599627e+15], not -1" --set seed=-1
     bad_knob "a cfl of 0 (open lower end)" "--set cfl=0: cfl (CFL number" --set cfl=0
     bad_knob "cfl's range" ") takes a number in (0, 4], not 0" --set cfl=0
     bad_knob "dim 4" "--set dim=4: dim (2 (plane strain) or 3) takes a whole number in [2, 3], not 4" --set dim=4
