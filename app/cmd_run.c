@@ -37,8 +37,8 @@ static void run_usage(FILE *f, const char *cmd) {
                    "               ffmpeg program; without ffmpeg a notice says so and the frames stay\n"
                    "  --set k=v    override a parameter the scene declares with h.params{...}\n"
                    "  --params     list the scene's parameters, their defaults, the words each word\n"
-                   "               parameter takes (h.choice) and each number's range (h.number), then\n"
-                   "               stop: nothing is simulated or written\n"
+                   "               parameter takes (h.choice), each number's range (h.number) and what each\n"
+                   "               switch does (h.flag), then stop: nothing is simulated or written\n"
                    "  --threads N  OpenMP threads (results do not depend on it)\n"
                    "  --quiet      no progress output\n"
                    "  --metric M   at the end print metric M (h.metric or built-in: height, spread,\n"
@@ -50,7 +50,7 @@ static void run_usage(FILE *f, const char *cmd) {
                    "  --trust      lift the sandbox (os.execute, io.popen, writes outside DIR, C modules,\n"
                    "               plugins by path or from the scene's folder)\n"
                    "Exit status: 0 done, 1 scene error, 2 bad usage or --set value, 3 the stability guard stopped\n"
-                   "the run, 130 SIGINT (Ctrl-C), 143 SIGTERM.\n");
+                   "the run, 4 a plugin crashed or called exit() (it is named), 130 SIGINT (Ctrl-C), 143 SIGTERM.\n");
 }
 
 /* "300M", "2G", "1.5G", "65536": bytes, K/M/G binary multiples, an optional

@@ -17,7 +17,7 @@ static void usage(FILE *f) {
             "  hearth [SCENE.lua] [--out DIR] [--set k=v]... [--until T] [--play] [--trust]\n"
             "                                the live dashboard on a scene, or on the built-in demo; it needs a\n"
             "                                terminal (press ? inside for the keys; hearth --help-dashboard)\n"
-            "  hearth demo [--out DIR] [--until T] [--frames N] [--threads N] [--quiet]\n"
+            "  hearth demo [--out DIR] [--until T] [--frames N] [--movie FILE] [--threads N] [--quiet]\n"
             "                                the built-in demo headless: progress bar, PNG frames in ./hearth-out/demo/\n"
             "  hearth run SCENE.lua [--until T] [--frames N] [--out DIR] [--set k=v]... [--threads N] [--quiet] [--trust]\n"
             "                     [--vtu DIR] [--movie FILE]  (hearth run --help lists every option)\n"

@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include <lualib.h>
 
 #include "hearth_lua.h"
@@ -124,7 +125,17 @@ static int dofile_cont(lua_State *L, int status, lua_KContext k) {
 static int text_only_dofile(lua_State *L) {
     const char *name = luaL_optstring(L, 1, NULL);
     lua_settop(L, 1);
-    if (luaL_loadfilex(L, name, "t") != LUA_OK) return lua_error(L);
+    if (luaL_loadfilex(L, name, "t") != LUA_OK) {
+        /* A relative path is the current folder's, not the scene's: say which folder was searched, so a script
+         * that runs a shipped scene by its path from the source root (scripts/validation/loaf_whatif.lua) says why
+         * it fails elsewhere (#18, helper userview4: "cannot open scripts/scenes/...: No such file" alone) */
+        char cwd[4096];
+        if (name && name[0] != '/' && access(name, F_OK) != 0 && getcwd(cwd, sizeof cwd))
+            lua_pushfstring(L, "%s (a relative path is read from the folder hearth runs in, %s: run from the "
+                               "folder it is relative to, or give its path)", lua_tostring(L, -1), cwd),
+                lua_error(L);
+        return lua_error(L);
+    }
     lua_callk(L, 0, LUA_MULTRET, 0, dofile_cont);
     return dofile_cont(L, 0, 0);
 }

@@ -58,6 +58,47 @@ cli_man_covers_subcommands)
     grep -q '^\.BI \\-\\-movie' "$man" || fail "docs/hearth.1 OPTIONS lacks --movie"
     echo "docs/hearth.1 covers:" $subs
     ;;
+readme_run_synopsis_as_help)
+    # #18 (helper userview4): README's `hearth run` synopsis left out --movie, which `hearth run --help`'s usage gives.
+    # Bar set before the run: the [--options] of README's synopsis line and of run --help's usage lines are one set.
+    opts() { grep -oE '\[--[a-z-]+' | sort -u | tr '\n' ' '; }
+    readme=$(grep -E '^- `hearth run SCENE.lua \[' "$HEARTH_SOURCE_ROOT/README.md" | head -1 | opts)
+    help=$("$hearth" run --help 2>&1 | sed -n '1,/^Runs /p' | opts)
+    echo "README: $readme; run --help: $help"
+    [ "$(echo $help | wc -w)" -ge 10 ] || fail "too few options read from run --help: $help"
+    [ "$readme" = "$help" ] || fail "README's hearth run synopsis gives $readme, hearth run --help $help"
+    ;;
+plot_png_title_text)
+    # #18 (helper userview4): a plot's title is also its PNG's Title text, as a frame's is (io_png.c; the frames had
+    # it, plot.c's canvas did not set it). Bar set before the run: hearth rheometer's PNG has the Title it draws.
+    "$hearth" rheometer sauce.mayo --out "$tmp/r" >"$tmp/out" 2>&1 || fail "rheometer exited $?: $(cat "$tmp/out")"
+    t=$(python3 "$here/png_title.py" "$tmp/r/sauce.mayo.png") || fail "png_title.py: $t"
+    echo "$t"
+    [ "$t" = "$tmp/r/sauce.mayo.png: flow curve: sauce.mayo, Mayonnaise (My)" ] || fail "the plot's Title text: $t"
+    ;;
+help_demo_options_as_demo_help)
+    # #18 (helper userview4): `hearth --help`'s demo line left out --movie, which README ("hearth demo [--movie
+    # demo.mp4]") and `hearth demo --help` give. Bar set before the run: the --options of the two lines are the same set.
+    opts() { grep -oE '\[--[a-z-]+' | sort -u | tr '\n' ' '; }
+    top=$("$hearth" --help 2>&1 | grep '^  hearth demo ' | opts)
+    own=$("$hearth" demo --help 2>&1 | grep '^usage: hearth \[demo\]' | opts)
+    echo "hearth --help: $top; hearth demo --help: $own"
+    [ "$(echo $own | wc -w)" -ge 5 ] || fail "too few options read from hearth demo --help: $own"
+    [ "$top" = "$own" ] || fail "hearth --help's demo line gives $top, hearth demo --help $own"
+    ;;
+run_help_exit_statuses_as_man)
+    # #18 (helper userview4): `hearth run --help` gave the exit statuses 0, 1, 2, 3, 130, 143 and left out 4 (a plugin
+    # crashed), which README and docs/hearth.1's EXIT STATUS give; a user scripting around hearth reads --help.
+    # Bar set before the run: the numbers --help's "Exit status:" sentence gives equal those of the man page's.
+    man="$HEARTH_SOURCE_ROOT/docs/hearth.1"
+    "$hearth" run --help >"$tmp/help" 2>&1 || fail "run --help exited $?"
+    statuses() { tr '\n' ' ' | sed 's/\. .*//' | grep -oE '(^|[ :;,]) ?[0-9]+ [a-zA-Z]' | grep -oE '[0-9]+' | sort -n | tr '\n' ' '; }
+    from_help=$(sed -n '/^Exit status:/,$p' "$tmp/help" | statuses)
+    from_man=$(sed -n '/^\.SH EXIT STATUS/,/^\.PP/p' "$man" | sed 1d | statuses)
+    echo "run --help: $from_help; docs/hearth.1: $from_man"
+    [ -n "$from_man" ] && [ "$(echo $from_man | wc -w)" -ge 6 ] || fail "too few statuses read from docs/hearth.1: $from_man"
+    [ "$from_help" = "$from_man" ] || fail "run --help gives exit statuses $from_help, docs/hearth.1 $from_man"
+    ;;
 movie_written_with_ffmpeg)
     # s:run{movie = ...}: the run's PNG frames (odd sizes: padded to even for yuv420p) become an H.264 movie
     if ! command -v ffmpeg >/dev/null || ! command -v ffprobe >/dev/null; then

@@ -293,6 +293,32 @@ scenes_3d_dx_floor_said)
         echo "$sc.lua: $(grep '3D floor' out.txt)"
     done
     ;;
+scenes_params_say_meaning)
+    # #18 (helper userview4): every parameter a shipped scene lists in --params says what it is, as a user reads it
+    # before a --set: a word's choices (h.choice), a number's meaning and range (h.number), a switch's meaning (h.flag).
+    # Before: loaf_physical's latent, tear_open's raw and two_field, the SPH bread roll's crust, dry, trace and five
+    # solver switches, cup_spoon's premixed and five sauce scenes' png were listed bare ("  trace = false"). Free
+    # text listed here with its reason (h.params has no meaning for a string): nozzle.lua's pair (two sauce names,
+    # checked by h.library.sauce) and ratios (a comma list the scene parses); its header says both. Bar set before
+    # the run: no other bare parameter.
+    shipped=$here/../scripts/scenes
+    n=0 bare=""
+    for f in $(cd "$shipped" && find . -name '*.lua' | sort); do
+        "$hearth" run "$shipped/$f" --params >out.txt 2>err.txt
+        rc=$?
+        expect_rc 0 "$f --params"
+        n=$((n + 1))
+        bare="$bare$(awk -v f="${f#./}" '
+            prev != "" && $0 !~ /^      / { print f ": " prev "; " }
+            { prev = "" }
+            /^  [A-Za-z_][A-Za-z_0-9.]* = / { prev = $0; sub(/^  /, "", prev) }
+            END { if (prev != "") print f ": " prev "; " }' out.txt |
+            grep -v -e '^sauces/nozzle.lua: pair = ' -e '^sauces/nozzle.lua: ratios = ' | tr '\n' ' ')"
+    done
+    echo "$n shipped scenes listed"
+    [ "$n" -ge 25 ] || fail "only $n scenes found under $shipped"
+    [ -z "$bare" ] || fail "listed without what it is (declare it with h.flag, h.number or h.choice): $bare"
+    ;;
 bread_area_unit_said)
     # #18 (helper userfix4, from userview3's list): bread.csv's area_plain, area_one_slit and area_two_slits had no
     # unit and hold volumes in 3D. Since helper userfix7 the names say it: area_<loaf>_m2 in 2D, volume_<loaf>_m3 in
@@ -330,6 +356,32 @@ set_bad_value_exit2)
     has err.txt "--set depth" "the parameter named"
     run params.lua --set height=0.5
     expect_rc 0 "a good --set"
+    ;;
+scene_knob_out_of_range_exit2)
+    # #18 (helper userview4): a scene setting --set changes in any scene (hearth help scene: dim, cfl, seed, ppc,
+    # oven.emissivity, ...) out of its range was a scene error (exit 1) blaming the scene's h.scene line
+    # ("h.scene: seed = -1; valid range ..."; "s:add: ppc = 0; ..."), where README gives 2 for a bad --set. Now a
+    # usage error that names the --set, the setting's meaning and its range, as an h.params number's refusal. Bar
+    # set before the run; nothing is simulated (the scene prints height= only once h.params passed, which it does).
+    bad_knob() { # what text args...
+        local what=$1 text=$2
+        shift 2
+        run params.lua "$@"
+        expect_rc 2 "$what"
+        has_msg "$text" "$what"
+        grep -q "filled_at" out.txt && fail "$what: the scene ran on past the refused value"
+    }
+    bad_knob "a seed below 0" "params.lua:7: --set seed=-1: seed (seed of jittered seeding" --set seed=-1
+    bad_knob "a seed's range" "takes a whole number in [0, 4.503599627e+15], not -1" --set seed=-1
+    bad_knob "a cfl of 0 (open lower end)" "--set cfl=0: cfl (CFL number" --set cfl=0
+    bad_knob "cfl's range" ") takes a number in (0, 4], not 0" --set cfl=0
+    bad_knob "dim 4" "--set dim=4: dim (2 (plane strain) or 3) takes a whole number in [2, 3], not 4" --set dim=4
+    bad_knob "a dotted setting" "--set oven.emissivity=2: oven.emissivity (effective emissivity" --set oven.emissivity=2
+    bad_knob "ppc 0" "params.lua:8: --set ppc=0: ppc (particles per cell of every body) takes a whole number in [1, 1000], not 0" --set ppc=0
+    bad_knob "ppc 2.5" "--set ppc=2.5: ppc (particles per cell of every body) takes a whole number in [1, 1000], not 2.5" --set ppc=2.5
+    run params.lua --set seed=3 --set cfl=0.5 --set ppc=9
+    expect_rc 0 "values in range"
+    has out.txt "filled_at_0.35=true" "values in range: the scene ran"
     ;;
 params_word_nearest_suggested)
     # h.choice (lua/hearth/params.lua): a word parameter takes its words, the empty one too; a misspelt word is a

@@ -60,6 +60,26 @@ tui_colorterm_truecolor)
         wait_for "no -direct terminal"
     fi
     ;;
+tui_dimensionless_without_unit)
+    # #18 (helper userview4): at 80x24 the probe panel read "J   1.034 1" and "saturation   0.2108 1", the
+    # dimensionless unit "1" reading as a second number, and the colour bar "0.218 1". Bar set before the run: the
+    # probe rows of J and saturation hold their name and one number, then the sparkline (no unit word); the
+    # colour bar of the saturation view ends in its number; temperature and density keep degC and kg/m^3.
+    TUI_COLS=80 TUI_ROWS=24 start "'$src/tests/tui/wet.lua'"
+    wait_for "paused"
+    wait_for "^saturation "
+    screen | sed -n '/^probe at /,/^fields [0-9]/p' | tee "$tmp/panel.txt"
+    for f in J saturation; do
+        row=$(grep -E "^$f +" "$tmp/panel.txt" | cut -c1-36)
+        [ -n "$row" ] || fail "no $f row in the probe panel"
+        echo "$row" | grep -Eq "^$f +[-+0-9.e]+ *$" || fail "the $f row gives more than its number: '$row'"
+    done
+    grep -Eq "^temperature +[-+0-9.e]+ degC" "$tmp/panel.txt" || fail "temperature lost its unit"
+    grep -Eq "^density +[-+0-9.e]+ kg/m\^3" "$tmp/panel.txt" || fail "density lost its unit"
+    bar=$(screen | grep -E "^[-+0-9.e]+ .* degC " | head -1)
+    echo "colour bars: $bar"
+    echo "$bar" | grep -Eq "[0-9] *$" || fail "the saturation view's colour bar ends in a unit: '$bar'"
+    ;;
 tui_probe_panel_scrolls)
     # a wet dough has more live fields than the probe panel has rows at 80x24:
     # the panel says which it shows and PgDn / PgUp (and > / <) page through

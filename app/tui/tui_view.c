@@ -192,6 +192,14 @@ static void plane_axes(int axis, int *u, int *v) {
     *v = axis == 2 ? 1 : 2;
 }
 
+
+/* A field's unit as the panels show it: a dimensionless one (hearth_field_unit's "1": J, saturation, browning)
+ * shows none, where "J 1.034 1" read as a second number (#18, helper userview4; the PNGs' colour bars say "(-)"). */
+static const char *shown_unit(const char *field) {
+    const char *u = hearth_field_unit(field);
+    return !u || !strcmp(u, "1") ? "" : u;
+}
+
 static void draw_view(tui_app *a, int k, const tui_layout *L, int fresh) {
     const tui_rect *t = &L->title[k], *r = &L->view[k], *b = &L->bar[k];
     clear_rect(t->y, t->x, t->w, 1);
@@ -289,7 +297,7 @@ static void draw_view(tui_app *a, int k, const tui_layout *L, int fresh) {
         attroff(A_REVERSE | A_BOLD);
     }
     /* colour bar: min, gradient, max and unit */
-    const char *unit = hearth_field_unit(a->field[k]);
+    const char *unit = shown_unit(a->field[k]);
     char l[48], h[64];
     if (isnan(lo)) snprintf(l, sizeof l, "(no material)"), h[0] = '\0';
     else snprintf(l, sizeof l, "%.4g ", lo), snprintf(h, sizeof h, " %.4g %s", hi, unit ? unit : "");
@@ -331,7 +339,7 @@ static void draw_probes(tui_app *a, const tui_rect *r) {
     a->probe_first = first, a->probe_page = shown;
     for (int i = first; i < first + shown; i++, row++) {
         const tui_field_probe *p = &a->fp[i];
-        const char *unit = hearth_field_unit(p->name);
+        const char *unit = shown_unit(p->name);
         /* 15 columns: water_pressure, gas_pressure and the like whole */
         if (isnan(p->value)) snprintf(line, sizeof line, "%-15.15s %10s %-7.7s", p->name, "-", unit ? unit : "");
         else snprintf(line, sizeof line, "%-15.15s %10.4g %-7.7s", p->name, p->value, unit ? unit : "");

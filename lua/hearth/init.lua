@@ -134,10 +134,6 @@ end
 local function set_text(k, v) return ("--set %s=%s"):format(k, shorten(v)) end
 h._shorten, h._set_text = shorten, set_text
 
-local function knob_number(name, v, level)
-  return tonumber(v) or usage_error(("%s: expected a number"):format(set_text(name, v)), level or 3)
-end
-
 h._check = { keys = check_keys, number = check_number, choice = check_choice, vec = check_vec }
 
 -- ---- curves and materials -------------------------------------------------
@@ -505,7 +501,7 @@ function h.scene(o)
           local ok = false
           for _, c in ipairs(e.words) do ok = ok or v:lower() == c end
           if not ok then usage_error(("%s: valid: %s"):format(set_text(e.name, v), table.concat(e.words, ", ")), 2) end
-        else v = knob_number(e.name, v) end
+        else v = h._knob_in_range(e, v) end
         local top, sub = e.name:match("^([^.]+)%.(.+)$") -- a dotted knob (oven.emissivity): a key of its table's copy
         if top then local t = {}; for a, b in pairs(oo[top] or {}) do t[a] = b end; t[sub], oo[top] = v, t else oo[e.name] = v end
       end
@@ -697,7 +693,7 @@ function S:add(o)
   local ok, id, ratios, mix_ratios = pcall(material_id, self, mat)
   if not ok then error(id, 2) end
   local kppc = knob_sets().ppc
-  local ppc = check_number(kppc and knob_number("ppc", kppc) or o.ppc or 4, "s:add: ppc", 1, 1000, "particles per cell")
+  local ppc = check_number(kppc and h._knob_in_range(h._ppc_knob, kppc) or o.ppc or 4, "s:add: ppc", 1, 1000, "particles per cell")
   local jitter = check_number(o.jitter or 0.5, "s:add: jitter", 0, 1)
   local vel = check_vec(start_v or { 0, 0, 0 }, "s:add: velocity")
   if o.temperature ~= nil then check_number(o.temperature, "s:add: temperature", -273.15, 5000, "degC") end

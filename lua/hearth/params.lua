@@ -357,6 +357,23 @@ function h.params(defaults)
   return P
 end
 
+--- A scene setting's value from --set (h.scene's knobs; s:add's ppc) checked against its range in the schema
+--- (core.scene_settings' e: min, max, min_open, kind, help, unit): out of it, a usage error (exit 2) said as h.params
+--- says its own numbers, where the scene's h.scene line had taken the blame as a scene error (exit 1; #18, helper
+--- userview4). raw is the --set's text; returns its number.
+function h._knob_in_range(e, raw)
+  local x = tonumber(raw) or usage_error(("%s: expected a number"):format(set_text(e.name, raw)), 3)
+  local unit = e.unit ~= "" and e.unit ~= "1" and e.unit or nil
+  local n = { what = e.help, unit = unit, integer = e.kind ~= "real" or nil, max = e.max ~= math.huge and e.max or nil,
+    min = not e.min_open and e.min > -math.huge and e.min or nil, above = e.min_open and e.min or nil }
+  local m = number_error(n, e.name, x, set_text(e.name, raw))
+  if m then usage_error(m, 3) end
+  return x
+end
+
+-- --set ppc, a knob of every s:add (not in the scene settings' schema)
+h._ppc_knob = { name = "ppc", help = "particles per cell of every body", kind = "int", min = 1, max = 1000, unit = "" }
+
 --- h.refuse(msg): a scene's own refusal of its parameters where h.params's ranges cannot say it, a check across two
 --- of them (pull_twist's speed against its E, marshmallow's press against its speed): a usage error as h.params's
 --- (exit 2 in hearth run, no traceback) at the scene's line. error() had given exit 1, the code of a scene's own fault.

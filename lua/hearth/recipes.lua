@@ -89,6 +89,20 @@ function R.height(s, x, y0, y1, n)
   return top and (top - y0) or 0
 end
 
+--- The height above y0 of the lowest material along the vertical line at x: the top of the first run of samples
+--- with material, going up from y0 (0 when there is none). Material above a gap (drops on a
+--- celery stick lifted out of its dip, a crumb in the air) is not the surface, where R.height reads the highest
+--- (#18, helper userview4: celery_dip.lua's "sauce surface" read the drops on the celery, 71 mm for a 25 mm bath).
+function R.surface(s, x, y0, y1, n)
+  n = n or 200
+  local d = s:line("density", { x, y0 }, { x, y1 }, n + 1)
+  local top = nil
+  for i, v in ipairs(d) do
+    if v == v then top = y0 + (i - 1) * (y1 - y0) / n elseif top then break end
+  end
+  return top and (top - y0) or 0
+end
+
 --- A nozzle (Nagasawa et al. 2019, Fig. 8) in a 2D scene: a slot of `width`
 --- centred at x whose exit is at height y, extruding `material` downwards at
 --- `speed` from time `from` to `to`. Every spacing / speed seconds one row of

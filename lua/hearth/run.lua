@@ -344,7 +344,9 @@ function S:run(o)
           for _, c in ipairs(v) do m = m + c * c end
           m = math.sqrt(m)
         end
-        r[#r + 1] = ("%.9g"):format(m)
+        -- outside the material a probe reads NaN: an empty cell, "not measured", as the shipped scenes' CSVs write
+        -- it (tests/scene_csv.py), where "nan" is text to some readers (#18, helper userview4)
+        r[#r + 1] = m == m and ("%.9g"):format(m) or ""
       end
       rows[#rows + 1] = table.concat(r, ",")
       output(where, "csv", core.write_atomic, o.csv, table.concat(rows, "\n") .. "\n", "s:run{csv = ...}")

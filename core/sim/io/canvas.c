@@ -28,7 +28,7 @@ hearth_status canvas_init(canvas *c, int w, int h, const unsigned char bg[3], he
         cairo_surface_destroy(sf);
         return err_set(err, HEARTH_ERR_NOMEM, "out of memory for a %d x %d picture", w, h);
     }
-    *c = (canvas){w, h, sf, cr};
+    *c = (canvas){w, h, sf, cr, NULL};
     canvas_rgb(c, bg, 1);
     cairo_paint(cr);
     cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
@@ -61,7 +61,7 @@ hearth_status canvas_write_png(canvas *c, const char *path, hearth_error *err) {
             unsigned char *o = rgb + 3 * ((size_t)y * c->w + x);
             o[0] = (unsigned char)(p >> 16), o[1] = (unsigned char)(p >> 8), o[2] = (unsigned char)p;
         }
-    hearth_status st = png_write_rgb(path, c->w, c->h, rgb, err);
+    hearth_status st = png_write_rgb_titled(path, c->w, c->h, rgb, c->title, err);
     mem_free(rgb, bytes);
     return st;
 }

@@ -20,6 +20,7 @@ typedef struct canvas {
     int w, h;             ///< pixels
     cairo_surface_t *sf;  ///< CAIRO_FORMAT_RGB24 image surface; owned
     cairo_t *cr;          ///< drawing context on sf; owned
+    const char *title;    ///< written as the PNG's "Title" text when set (borrowed; NULL: none)
 } canvas;
 
 /// A w x h canvas painted with bg (8-bit RGB). On failure *c is zeroed and

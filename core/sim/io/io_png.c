@@ -119,7 +119,7 @@ static void on_read(png_structp p, png_bytep data, size_t n) {
 /* ---- writing --------------------------------------------------------- */
 
 /* Encode to io->fp. Returns 0 on success; on failure io says why. */
-static int encode(pngio *io, int w, int h, const unsigned char *rgb) {
+static int encode(pngio *io, int w, int h, const unsigned char *rgb, const char *title) {
     png_structp p = png_create_write_struct_2(PNG_LIBPNG_VER_STRING, io, on_error, on_warning,
                                               io, hook_malloc, hook_free);
     if (!p) {
@@ -142,6 +142,17 @@ static int encode(pngio *io, int w, int h, const unsigned char *rgb) {
     /* Say the bytes are sRGB, which is what the colour maps produce, so viewers
      * do not guess a different gamma. */
     png_set_sRGB(p, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    /* The title as text: iTXt, since a title holds UTF-8 (degree signs); tEXt is Latin-1. */
+    if (title && *title) {
+        png_text t = {0};
+        t.compression = PNG_ITXT_COMPRESSION_NONE;
+        t.key = (png_charp) "Title";
+        t.text = (png_charp)title;
+        t.itxt_length = strlen(title);
+        t.lang = (png_charp) "";
+        t.lang_key = (png_charp) "";
+        png_set_text(p, info, &t, 1);
+    }
     png_write_info(p, info);
     for (int y = 0; y < h; y++) png_write_row(p, rgb + (size_t)y * (size_t)w * 3);
     png_write_end(p, info);
@@ -173,6 +184,11 @@ static void sync_parent(const char *path) {
 
 hearth_status png_write_rgb(const char *path, int w, int h, const unsigned char *rgb,
                             hearth_error *err) {
+    return png_write_rgb_titled(path, w, h, rgb, NULL, err);
+}
+
+hearth_status png_write_rgb_titled(const char *path, int w, int h, const unsigned char *rgb,
+                                   const char *title, hearth_error *err) {
     HEARTH_ASSERT(path);
     if (w < 1 || h < 1 || w > PNG_DIM_MAX || h > PNG_DIM_MAX)
         return err_set(err, HEARTH_ERR_PARAM,
@@ -195,7 +211,7 @@ hearth_status png_write_rgb(const char *path, int w, int h, const unsigned char 
         return st;
     }
 
-    if (encode(&io, w, h, rgb) != 0) {
+    if (encode(&io, w, h, rgb, title) != 0) {
         if (io.oom && !io.io_failed)
             st = err_set(err, HEARTH_ERR_NOMEM, "cannot write PNG '%s': out of memory", path);
         else

@@ -24,6 +24,11 @@
 /// process writing the same path at once (they share the temporary name).
 hearth_status png_write_rgb(const char *path, int w, int h, const unsigned char *rgb,
                             hearth_error *err);
+/// png_write_rgb with the picture's title (UTF-8, NULL or "" for none) as the PNG's
+/// "Title" text (an uncompressed iTXt chunk, before the image data): viewers and
+/// `exiftool` show it, and a script reads what a frame says it shows without its pixels.
+hearth_status png_write_rgb_titled(const char *path, int w, int h, const unsigned char *rgb,
+                                   const char *title, hearth_error *err);
 
 /// Read any PNG (palette, grey, RGB, with or without alpha, 1..16 bits) as 8-bit
 /// luminance L = 0.299 R + 0.587 G + 0.114 B, composited over white when the

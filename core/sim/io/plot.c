@@ -429,6 +429,7 @@ hearth_status hearth_plot_write_png(const hearth_plot *p, const char *path, hear
         for (int k = 0; k < p->n; k++)
             if (p->s[k].label) legend_entry(f, &p->s[k], y), y += LEGEND_STEP;
     }
+    F.c.title = p->title; /* the file's Title text too, as a frame's (io_png.c) */
     hearth_status st = canvas_write_png(&F.c, path, err);
     canvas_free(&F.c);
     return st;

@@ -753,6 +753,7 @@ hearth_status hearth_render(const hearth_scene *s, const hearth_picture_def *d, 
     if ((st = canvas_init(&c, d->width, height, BG, err))) return st;
     info->width = c.w, info->height = c.h;
     st = d->kind == HEARTH_PICTURE_PARTICLES ? draw_particles(&c, s, d, map, info, err) : draw_slice(&c, s, d, map, info, err);
+    c.title = info->title; /* the title as drawn, also as the file's text: what the frame says it shows */
     if (!st) st = canvas_write_png(&c, path, err);
     canvas_free(&c);
     return st;

@@ -419,8 +419,12 @@ for _, T in ipairs(ovens) do
   -- nothing to say which is which)
   local lv = {}
   for i, a in ipairs(leaveners) do lv[i] = ("%g"):format(a) end
-  local oven_label = ("oven %g °C, leaveners %s left to right"):format(T, table.concat(lv, ", "))
-  if #oven_label > 64 then oven_label = ("oven %g °C"):format(T) end
+  -- and the paper preset's units (its frames said "t = 5 s" with no word that a second is Table 2's animation
+  -- unit; #18, helper userview4): the order goes first, then the leaveners, when the 64 bytes run out
+  local units = physical and "" or "; Table 2's animation units"
+  local oven_label = ("oven %g °C, leaveners %s left to right%s"):format(T, table.concat(lv, ", "), units)
+  if #oven_label > 64 then oven_label = ("oven %g °C, leaveners %s%s"):format(T, table.concat(lv, ", "), units) end
+  if #oven_label > 64 then oven_label = ("oven %g °C%s"):format(T, units) end
   s:run { until_t = until_t, every = until_t / P.frames,
     -- one temperature range for every oven (the dough's start to the hottest oven), so their frames compare side
     -- by side; each oven's own run had grown its own range

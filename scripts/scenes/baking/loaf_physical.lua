@@ -33,7 +33,8 @@
 -- loaf.csv has no unit: water_left
 local h = require "hearth"
 local P = h.params { dx = h.number { 0.005, above = 0, unit = "m", what = "the grid spacing" },
-  frames = h.number { 25, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" }, latent = true,
+  frames = h.number { 25, min = 1, integer = true, unit = "frames", what = "PNG frames over the run" },
+  latent = h.flag { true, what = "the water's latent heat: the crumb holds at the 100 degC boiling plateau" },
   until_real = h.number { 0, min = 0, unit = "s", what = "the real bake time (0: the oven's own)" },
   -- with --set oven.wall_temperature / oven.emissivity (radiating walls, docs/validation.md "An oven's hot walls"):
   -- the air's own coefficient, the preset's 30 being an effective one with radiation in it
@@ -128,9 +129,11 @@ local rows = { "t_real_min,centre_T_degC,centre_saturation,top_T_degC,top_satura
   .. "base_browning,centre_browning,area_m2,base_lift_m,base_gap_m,top_surface_T_degC,top_surface_saturation,tray_T_degC" }
 local last
 print(rows[1]) -- the rows each frame prints below are loaf.csv's: its header first, so they read as columns
--- the pictures' titles give the real time (the oven's rates run S times fast) beside the simulated seconds
+-- the pictures' titles give the real time (the oven's rates run S times fast) beside the simulated seconds, after
+-- what they show: a frame read alone (a paper's figure) said its time alone (#18, helper userview4)
+local label = ("physical loaf, oven %g °C, tray in cold, %s"):format(oven.temperature, P.tray)
 s:run { until_t = until_t, every = until_t / P.frames,
-  png = { field = "temperature", path = "temperature_%04d.png", time_scale = S },
+  png = { field = "temperature", path = "temperature_%04d.png", time_scale = S, label = label },
   on_frame = function(f)
     local H = height()
     local Tc, sc, Tt, st, bt, bb, bc, Ts, ss = crust_and_crumb(H)
@@ -141,9 +144,12 @@ s:run { until_t = until_t, every = until_t / P.frames,
     h.write("loaf.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
   end }
-s:png("temperature", "temperature.png", { time_scale = S })
-s:png("saturation", "saturation.png", { time_scale = S })
-s:png("browning", "browning.png", { time_scale = S })
+s:png("temperature", "temperature.png", { time_scale = S, label = label })
+-- the dough's own span, 0 to the saturation it was seeded with (0.218), not 0..1, where the whole loaf read one dark
+-- blue and its drying rind did not show (#18, helper userview4)
+local s0 = h.library.dough.bread.saturation
+s:png("saturation", "saturation.png", { time_scale = S, label = label, range = { 0, s0 } })
+s:png("browning", "browning.png", { time_scale = S, label = label })
 print(("after %.0f min: centre %.1f degC at saturation %.3f, top %.1f degC at saturation %.3f; height %.1f mm; "
   .. "%.1f%% of the water left (latent_heat = %s); browning: top %.3f, base %.3f, centre %.3f; "
   .. "base lift %.2f mm (tray = %s, at %.1f degC)"):format(last[1], last[2], last[3], last[4], last[5], 1000 * last[6],

@@ -187,6 +187,8 @@ local cols, names = {}, { "raw", "roasted" }
 for _, name in ipairs(names) do
   local roasted = name == "roasted"
   cols[name] = {}
+  -- the frames' title: which marshmallow, and that the seconds are Table 2's animation units (#18, helper userview4)
+  local label = ("%s marshmallow; Table 2's animation units"):format(name)
   if P.only == "" or P.only == name then
     -- the roasted one in the flame's dry air, the raw one in room air (Table 2's initial temperature) that
     -- holds its water
@@ -214,8 +216,8 @@ for _, name in ipairs(names) do
     -- gravity, the upper cracker GAP above it, and the press
     s:at(P.roast, function(sc)
       if roasted then sc:oven(c.theta0, c.ambient_beta) end
-      sc:png("damage", name .. "_damage_roast.png")
-      sc:png("saturation", name .. "_saturation_roast.png", { range = { 0, S0 } })
+      sc:png("damage", name .. "_damage_roast.png", { label = label })
+      sc:png("saturation", name .. "_saturation_roast.png", { range = { 0, S0 }, label = label })
       sc:move(lower, v(0, AWAY - LAY, 0))
       sc:move(upper, v(0, -AWAY, 0))
       sc:gravity(v(0, -9.81, 0))
@@ -228,12 +230,12 @@ for _, name in ipairs(names) do
     end)
     -- one colour range for both (the raw one's own, room air to room air, was -0.5..0.5 degC), so their frames compare
     s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperature", path = name .. "_%04d.png",
-      range = { c.theta0, c.ambient_theta } },
+      range = { c.theta0, c.ambient_theta }, label = label },
       on_frame = function(f)
         local th, T = measure(s)
         cols[name][#cols[name] + 1] = { t = f.t, th = th, T = T, ooze = ooze(s, skin) }
       end }
-    s:png("damage", name .. "_damage_press.png")
+    s:png("damage", name .. "_damage_press.png", { label = label })
   end
 end
 

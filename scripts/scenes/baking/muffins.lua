@@ -183,7 +183,12 @@ head[#head + 1] = "moisture_top_1,moisture_centre_1,cracked_1"
 if physical then head[#head + 1] = "t_real_s" end
 local rows = { table.concat(head, ",") }
 print(rows[1]) -- the rows each frame prints below are muffins.csv's: its header first, so they read as columns
-s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperature", path = "heat_%04d.png", time_scale = S },
+-- the frames' title: what they show and, for the paper preset, that their seconds are Table 2's animation units
+-- (a frame read alone said "t = 3 s"; bread.lua's and pancake.lua's said so already; #18, helper userview4)
+local label = ("%d muffin%s, oven %g °C%s"):format(P.cups, P.cups == 1 and "" or "s", oven.temperature,
+  physical and "" or "; Table 2's animation units")
+s:run { until_t = until_t, every = until_t / P.frames,
+  png = { field = "temperature", path = "heat_%04d.png", time_scale = S, label = label },
   on_frame = function(f)
     local r = { ("%.3f"):format(f.t) }
     local t, ti = tops(false), tops(true)
@@ -198,8 +203,8 @@ s:run { until_t = until_t, every = until_t / P.frames, png = { field = "temperat
     h.write("muffins.csv", table.concat(rows, "\n") .. "\n")
     print(rows[#rows])
   end }
-if cracks then s:png("damage", "damage.png", { kind = "particles", range = { 0, 1 } }) end
-s:png("browning", "browning.png", { time_scale = S })
+if cracks then s:png("damage", "damage.png", { kind = "particles", range = { 0, 1 }, label = label }) end
+s:png("browning", "browning.png", { time_scale = S, label = label })
 local tin = s:collider_heat(tins[1])
 if physical and tin.oven_in > 0 then -- the tin the batter drew its heat from (colliders.h)
   print(("muffins.lua: the first cup's tin at %.1f min %.1f degC; it gave the batter %.0f J of the oven's %.0f (J%s)")

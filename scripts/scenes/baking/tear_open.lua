@@ -40,7 +40,7 @@
 --   largest_piece_share: the largest component of intact bins' particles over all the particles (two clean halves
 --     near 0.5 less their cracked faces; crumbs and a fallen strip lower it);
 --   crack_from_face_m: where the pull cracks: the median, over the free span's particles it has cracked (not those
---     the bake cracked), of their distance now to the nearer grip face (nan until it cracks one);
+--     the bake cracked), of their distance now to the nearer grip face (empty until it cracks one);
 --   bodies, loose_share: pieces, over every particle's bins (cracked or not): two halves with their torn faces on
 --     them and a clean gap are two bodies, crumbs between the halves bridge them into one; loose_share: the
 --     particles outside the bodies (crumbs fallen clear).
@@ -65,10 +65,14 @@
 -- loaf 7 / 8 s at 5 mm, 13 / 17 s at 4 mm; a raw pull 1-3 s.
 -- cracked, the count of cracked particles, has no unit (tests/scene_csv.py's unit rule):
 -- tear_open.csv has no unit: cracked
+-- An empty cell is "not measured" (pancake.lua's rule, read by tests/scene_csv.py): the torn faces' peaks before the
+-- pull has opened a face, where it cracks before it has cracked anything:
+-- tear_open.csv may leave empty (not measured): face_peak_min_degC, face_peak_max_degC, crack_from_face_m
 local h = require "hearth"
 -- the pull's and the run's numbers, each with its valid range (0 for dx, bake and ppc: the food's own)
 local P = h.params { dim = h.number { 2, min = 2, max = 2, integer = true,
-    what = "the space's dimensions; the tear is measured over the plane's columns" }, raw = false,
+    what = "the space's dimensions; the tear is measured over the plane's columns" },
+  raw = h.flag { false, what = "pull the food unbaked, at its own temperature, in place of the baked one" },
   food = h.choice { "muffin", muffin = "a muffin's batter in its cup (h.library.paper.muffin)",
     bread = "a loaf of bread dough on its tray (h.library.paper.bread)" },
   dx = h.number { 0, min = 1e-4, max = 0.02, unit = "m", what = "the grid spacing", also = { [0] = "the food's own" } },
@@ -76,10 +80,14 @@ local P = h.params { dim = h.number { 2, min = 2, max = 2, integer = true,
   speed = h.number { 0.05, above = 0, max = 10, unit = "m/s", what = "the grips' speed" },
   pull = h.number { 0.4, above = 0, max = 100, unit = "s", what = "the pull's time" },
   frames = h.number { 20, min = 1, max = 10000, integer = true, what = "PNG frames over the pull" },
-  ppc = h.number { 0, min = 0, max = 64, integer = true, what = "particles per cell (0: 4)" }, two_field = false }
+  ppc = h.number { 0, min = 0, max = 64, integer = true, what = "particles per cell (0: 4)" },
+  two_field = h.flag { false, what = "two velocity fields where a crack runs (Homel & Herbold 2017), so its sides part" } }
 local muffin = P.food == "muffin"
 local dx = P.dx > 0 and P.dx or muffin and 0.004 or 0.005 -- the food's own scene's dx
 local bake = P.raw and 0 or P.bake > 0 and P.bake or muffin and 3 or 2.5
+-- the frames' title: which food, baked or raw, and that the seconds are Table 2's animation units (#18, helper
+-- userview4: the frames said their time alone)
+local label = ("%s %s; Table 2's animation units"):format(P.raw and "raw" or "baked", P.food)
 local oven = h.library.paper_oven[P.food]
 print(("tear_open.lua: h.library.paper.%s, animation units (Ding Table 2): heat runs in seconds, not minutes; water %g "
   .. "times fast; %s"):format(P.food, oven.water_time_scale,
@@ -239,19 +247,22 @@ s:run { until_t = bake + P.pull, every = every, on_frame = function(f)
     measure(f.t)
   local sep = separation(f.t)
   if t0 and not parted and pieces >= 2 then parted = sep end
-  rows[#rows + 1] = ("%.4f,%.5f,%.5f,%d,%d,%.2f,%.2f,%d,%.4g,%.4f,%.4f,%.5f,%d,%.4f"):format(f.t, sep, neck, pieces, nf,
-    nf > 0 and tlo or 0 / 0, nf > 0 and thi or 0 / 0, cracked, force, free_cracked, largest, from_face, bodies, loose)
-    :gsub("%-nan", "nan")
+  -- a value not measured (no torn face yet, nothing the pull cracked) is an empty cell, as pancake.csv's (it was
+  -- "nan"; #18, helper userview4)
+  local function cell(fmt, x) return x == x and fmt:format(x) or "" end
+  rows[#rows + 1] = ("%.4f,%.5f,%.5f,%d,%d,%s,%s,%d,%.4g,%.4f,%.4f,%s,%d,%.4f"):format(f.t, sep, neck, pieces, nf,
+    cell("%.2f", nf > 0 and tlo or 0 / 0), cell("%.2f", nf > 0 and thi or 0 / 0), cracked, force, free_cracked, largest,
+    cell("%.5f", from_face), bodies, loose)
   h.write("tear_open.csv", table.concat(rows, "\n") .. "\n")
   if t0 and f.t >= t0 - 1e-9 then
     if frame % 5 == 0 or f.t >= bake + P.pull - 1e-9 then -- and the pull's last frame, the food torn
-      f:png("temperature", "heat_%04d.png", { kind = "particles" })
-      f:png("damage", "damage_%04d.png", { kind = "particles", range = { 0, 1 } })
+      f:png("temperature", "heat_%04d.png", { kind = "particles", label = label })
+      f:png("damage", "damage_%04d.png", { kind = "particles", range = { 0, 1 }, label = label })
     end
     frame = frame + 1
   end
 end }
-s:png("browning", "browning.png")
+s:png("browning", "browning.png", { label = label })
 print(("%s%s: %s"):format(P.raw and "raw " or "baked ", P.food, parted and
   ("torn through at %.1f mm of separation"):format(parted * 1e3) or
   ("not torn through after %.1f mm of separation"):format(separation(bake + P.pull) * 1e3)))

@@ -18,7 +18,8 @@ local P = h.params { blend = h.choice("nonlinear", h.blend_words),
   depth = h.number { 0.025, min = 0, unit = "m", what = "how deep the celery dips below the sauce's top" },
   rest = h.number { 0.2, min = 0, unit = "s", what = "the celery's rest at the bottom" },
   until_t = h.number { 1.2, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
-  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" }, png = true }
+  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" },
+  png = h.flag { true, what = "PNG frames of the speed in frames/" } }
 
 local material
 if P.sauce == "mix" then
@@ -64,7 +65,10 @@ s:run { until_t = P.until_t, every = P.every,
   png = P.png and { field = "speed", path = "frames/speed_%04d.png" } or nil,
   on_frame = function(f)
     last = lifted()
-    centre = h.recipes.height(s, W / 2, base, H - 0.01, 400)
+    -- the surface: the top of the sauce in the bowl on the centre line, not the drops on the lifted celery above a
+    -- gap, which h.recipes.height (the highest material) had read as it: 0.0711 m at 1.2 s for a bath ~25 mm deep
+    -- (#18, helper userview4)
+    centre = h.recipes.surface(s, W / 2, base, H - 0.01, 400)
     rows[#rows + 1] = ("%.4f,%.5f,%.6g"):format(f.t, centre, last)
     h.write("dip.csv", table.concat(rows, "\n") .. "\n")
   end }

@@ -15,11 +15,12 @@ local h = require "hearth"
 local P = h.params { blend = h.choice("nonlinear", h.blend_words),
   mixing = h.choice { "dynamic", dynamic = "the halves share one mixture whose ratios follow the particles (eq. 43-44; "
     .. "with blend = nonlinear, else fixed)", fixed = "each half keeps its own sauce" },
-  premixed = false, dx = h.number { 0.003, above = 0, unit = "m", what = "the grid spacing" },
+  premixed = h.flag { false, what = "one 50:50 mix in the cup, in place of mayo left and honey right" }, dx = h.number { 0.003, above = 0, unit = "m", what = "the grid spacing" },
   radius = h.number { 0.04, above = 0, unit = "m", what = "the cup's radius" },
   rps = h.number { 1.0, min = 0, max = 100, unit = "1/s", what = "the spoon's turns a second" },
   until_t = h.number { 1.0, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
-  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" }, png = true }
+  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" },
+  png = h.flag { true, what = "PNG frames in frames/ (the mixing ratio, or the speed)" } }
 
 local R = P.radius
 local cx, cy = 1.5 * R, 1.5 * R

@@ -24,7 +24,7 @@ local P = h.params {
   every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" },
   -- scales kappa and mu (the paper's 1e6 and 1e5 Pa, section 4.6); von_mises_sauce's range of kappa: [1, 1e12] Pa
   stiffness = h.number { 1, min = 1e-6, max = 1e6, what = "a factor on the sauces' kappa and mu" },
-  png = true,
+  png = h.flag { true, what = "PNG frames of the speed in frames/" },
 }
 
 local a, b = P.pair:match("^([%w_]+):([%w_]+)$")

@@ -15,7 +15,8 @@ local P = h.params { blend = h.choice("nonlinear", h.blend_words),
   drop = h.number { 0.006, min = 0, unit = "m", what = "the nozzle exit's height above the steak" },
   pour = h.number { 0.4, above = 0, unit = "s", what = "the pour's time" },
   until_t = h.number { 1.0, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
-  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" }, png = true }
+  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" },
+  png = h.flag { true, what = "PNG frames of the speed in frames/" } }
 
 local material
 if P.sauce == "mix" then

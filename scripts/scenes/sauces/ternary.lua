@@ -17,7 +17,8 @@ local P = h.params { blend = h.choice("nonlinear", h.blend_words),
   until_t = h.number { 1.0, min = 0, unit = "s", what = "the run's simulated time (0: the set-up alone, measured)" },
   -- the reach along the plate runs lane - 0.03 m - dx
   lane = h.number { 0.22, above = 0.03, unit = "m", what = "a lane's width" },
-  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" }, png = true }
+  every = h.number { 0.05, above = 0, unit = "s", what = "the time between frames" },
+  png = h.flag { true, what = "PNG frames of the speed in frames/" } }
 
 local L = h.library.sauce
 local sauces = { L.mayo, L.mustard, L.honey }

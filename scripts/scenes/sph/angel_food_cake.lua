@@ -327,9 +327,9 @@ positions("particles_end.csv")
 -- (a run that stops before the bake's end, --until under bake, says so: it had printed its last volume "as the bake
 -- ends")
 print(("angel food cake: relative volume %.3f at its highest in the oven (t = %.2f s, %.0f min; %s), "
-  .. "%.3f at t = %.2f s (mean %.1f degC)"):format(peak, peak_t, peak_t * 1600 / 60,
+  .. "%.3f at t = %.2f s, %.0f min (mean %.1f degC)"):format(peak, peak_t, peak_t * 1600 / 60,
   baked and ("%.3f as the bake ends"):format(baked) or ("still in the oven: the bake ends at %g s"):format(P.bake),
-  area() / A0, s:stats().t, mean_T()))
+  area() / A0, s:stats().t, s:stats().t * 1600 / 60, mean_T())) -- both times in real minutes too (#18, userview4)
 -- the crumb against the crust as the bake ends (bands.csv's row then; claim_sph_angel_cake_crumb_pale)
 -- a saturation also as its share of the batter's start (WATER, 0.256): 0.19 alone had read as a dried crumb; without
 -- the water, none (it had printed -nan)

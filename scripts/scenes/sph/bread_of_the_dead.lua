@@ -224,8 +224,9 @@ s:run { until_t = P.until_t, every = 0.1, png = { field = "browning", path = "fr
     positions(("particles_%04d.csv"):format(#csv - 1))
   end }
 positions("particles_end.csv") -- the loaf at until_t (the frames stop one interval short of it)
-print(("bread of the dead: relative volume %.3f, top ball %.4f m above the tray at t = %.2f s"):format(
-  area() / A0, top_at(cx), s:stats().t))
+-- the time in real minutes too, as the frames give it (#18, helper userview4: the first line alone said it)
+print(("bread of the dead: relative volume %.3f, top ball %.4f m above the tray at t = %.2f s, %.0f min"):format(
+  area() / A0, top_at(cx), s:stats().t, s:stats().t * S / 60))
 -- the centre (particles within a fifth of the body's radius of the particles' centroid) against the outer surface
 -- (the boundary flag, where the oven's heat enters, sph_outer.c): temperature, browning and saturation, the dough's
 -- (a bubble is gas: no browning, no water, NaN)
@@ -247,8 +248,8 @@ do
   end
   for _, k in ipairs { "centre", "outer" } do
     local a = acc[k]
-    print(("bread of the dead at t = %.2f s (water %s): %s %d particles (%d dough), %.1f degC, the dough's browning %.4f "
-      .. "and saturation %.4f"):format(s:stats().t, tostring(P.water), k, a[1], a[3], a[2] / a[1], a[4] / a[3],
-      a[5] / a[3]))
+    print(("bread of the dead at t = %.2f s, %.0f min (water %s): %s %d particles (%d dough), %.1f degC, the dough's "
+      .. "browning %.4f and saturation %.4f"):format(s:stats().t, s:stats().t * S / 60, tostring(P.water), k, a[1], a[3],
+      a[2] / a[1], a[4] / a[3], a[5] / a[3]))
   end
 end

@@ -69,14 +69,16 @@
 -- deleted: "Both switches on"; so is a bubble that opens as its crumb sets:
 -- "The roll's cells open at the set", and one that opens as the dough round
 -- it sets: "The roll's cells open as their walls set".)
--- --set trace=true also writes trace_NNNN.csv beside each particles_NNNN.csv: every particle's id (the dough's
+-- --set trace=true also writes trace_NNNN.csv beside each particles_NNNN.csv from 0001 on: every particle's id (the dough's
 -- first, its bubbles' after: bubble ids from the count the run prints), position, velocity, temperature, pressure,
 -- density, outer flag (the oven's heat enters there) and stress_yy, for scripts/validation/sph_roll_spots.py
 -- (docs/validation.md "The 1.5 mm roll's tear traced"); the run's bits are the same. outer is a flag:
 -- trace_NNNN.csv has no unit: outer
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature; by simulated time t_s, s), particles_NNNN.csv (positions, for
--- tests/sph_roll_measure.py) and browning frames: the crust's colour from each
+-- tests/sph_roll_measure.py: particles_0000.csv is the raw roll before the run, and NNNN >= 1 the frame at
+-- t = (NNNN - 1) x 0.1 s, volume.csv's row NNNN, whose pictures are frames/*_(NNNN - 1).png: particles_0004.csv and
+-- trace_0004.csv go with temperature_0003.png, at 0.3 s) and browning frames: the crust's colour from each
 -- particle's temperature history (Zanoni et al. 1995, the thesis's [89];
 -- browning_scale = 400 lets the 3 s animation stand for a 20-minute bake).
 -- Heat: eq. 3.42 per unit area of surface (core/sim/solver/sph_heat.c),
@@ -138,19 +140,23 @@ local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the g
   heat_ext = h.number { 4.44, min = 0, max = 1e6, what = "the oven's heat transfer to the surface (sph.heat_ext)" },
   artificial_stress = h.number { sph.artificial_stress, min = 0, max = 1,
     what = "Monaghan's epsilon against the tensile instability" },
-  tension = sph.tension,
-  gas_law = sph.gas_law,
+  tension = h.flag { sph.tension, what = "Tait's negative part (eq. 3.17): the dough pulls back when stretched" },
+  gas_law = h.flag { sph.gas_law, what = "a bubble's rest density follows its gas and vapour (eq. 3.49-3.50)" },
   vapour = h.number { sph.bubble_vapour, min = 0, max = 0.99, what = "the bubbles' vapour share (sph.bubble_vapour)" },
   vmax = h.number { sph.bubble_vmax or 4, min = 1, max = 100, what = "the bubbles' largest growth (sph.bubble_vmax)" },
-  continuity = sph.continuity_density or false, renormalised = sph.renormalised_density or false,
+  continuity = h.flag { sph.continuity_density or false, what = "Tait reads each particle's own volume, not the summed density (with renormalised=false)" },
+  renormalised = h.flag { sph.renormalised_density or false,
+    what = "the summed density divided by the kernel's share inside the body (no skin at the outline)" },
   gas_pressure = h.number { sph.gas_pressure or 0, min = 0, max = 1e7, unit = "Pa",
     what = "the bubbles' gas pressure (sph.gas_pressure)" },
   dough_water = h.number { sph.dough_water or 0, min = 0, max = 0.9, unit = "kg/kg",
     what = "CO2 dissolved in the dough's water (sph.dough_water)" },
-  own_squeeze = sph.own_squeeze or false,
+  own_squeeze = h.flag { sph.own_squeeze or false, what = "Tait reads a squeeze only as far as its own det F confirms it" },
   hourglass = h.number { sph.hourglass or 0, min = 0, max = 100,
     what = "the hourglass control's coefficient (sph.hourglass)" },
-  crust = false, dry = true, trace = false,
+  crust = h.flag { false, what = "the dough carries bread's water, boils at 100 degC and dries a crust" },
+  dry = h.flag { true, what = "with crust: the dried crust's own conductivity and heat capacity" },
+  trace = h.flag { false, what = "trace_NNNN.csv beside each particles_NNNN.csv: every particle's state by id" },
   shift = h.number { 0, min = -5, max = 5, integer = true, what = "spacings the roll is moved along the tray (below)" },
   warm = h.number { 0, min = -50, max = 50, unit = "K", what = "how much warmer the roll is seeded (below)" },
   bubbles = h.choice { "even", even = "small bubbles spread evenly through the roll",
@@ -239,6 +245,7 @@ s:add { shape = h.difference(roll, gas), material = dough, ppc = 1, jitter = 0, 
 local n_dough = #s:positions() // 3 -- ids 0 .. n_dough - 1: the dough's; the bubbles' follow (gas: no water)
 if P.trace then
   print(("trace: the dough's particles are ids 0-%d, the bubbles' from %d"):format(n_dough - 1, n_dough))
+  print("trace: trace_NNNN.csv (and particles_NNNN.csv) is the frame at t = (NNNN - 1) x 0.1 s, frames/*_(NNNN - 1).png")
 end
 if P.crust then -- the water the dough was given, read back from its particles, as a share of its mass
   local r = s:particles { fields = { "saturation" } }

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# lua_user_test.sh CASE HEARTH: what a user reads off a scene run as a user runs it (#18, helper userview4): the SPH
+# results lines' real minutes, a missing relative dofile path's folder, h.recipes.surface against h.recipes.height,
+# s:run's CSV cells where nothing was measured. Shares lua_fixture.sh with lua_test.sh (scene files in tests/lua/).
+. "$(dirname "$0")/lua_fixture.sh" "$@"
+
+case "$case_name" in
+sph_results_lines_say_real_minutes)
+    # #18 (helper userview4): the SPH bread of the dead's and angel food cake's results lines gave a time in simulated
+    # seconds alone ("at t = 1.20 s"; the cake's "1.563 at t = 3.50 s", where its peak said "13 min"), which only
+    # the run's first line maps to real minutes. Bar set before the run: each line with a time gives its real
+    # minutes beside it (S = 1500 and 1600: 0.04 s is 1 min).
+    run ../../scripts/scenes/sph/bread_of_the_dead.lua --until 0.04
+    expect_rc 0 "the bread of the dead, 0.04 s"
+    has out.txt "above the tray at t = 0.04 s, 1 min" "the volume line's real time"
+    [ "$(grep -c '^bread of the dead at t = 0.04 s, 1 min (water true): ' out.txt)" -eq 2 ] ||
+        fail "the centre and outer lines' real time: $(grep '^bread of the dead at' out.txt)"
+    run ../../scripts/scenes/sph/angel_food_cake.lua --set bake=0.02 --set until_t=0.04
+    expect_rc 0 "the angel food cake, 0.04 s"
+    has out.txt "at t = 0.04 s, 1 min (mean " "the cake's last volume with its real time"
+    grep 'relative volume' out.txt
+    ;;
+dofile_relative_path_says_folder)
+    # #18 (helper userview4): scripts/validation/loaf_whatif.lua (and crack_heat, crack_dt, crack_tray, muffin_tear,
+    # bread3d) run their scene by a path from the source root; started elsewhere they stopped with "cannot open
+    # scripts/scenes/...: No such file or directory" alone. Bar set before the run: a scene's dofile of a missing
+    # relative path fails (exit 1) naming the path and the folder it was read from; an absolute one as before.
+    run dofile_relative.lua
+    expect_rc 1 "a missing relative path"
+    has_msg "cannot open scripts/scenes/baking/no_such_scene.lua" "the path"
+    has_msg "(a relative path is read from the folder hearth runs in, $(pwd -P)" "the folder searched"
+    printf 'dofile("%s/no_such.lua")\n' "$PWD" >abs.lua
+    "$hearth" run abs.lua --quiet >out.txt 2>err.txt
+    rc=$?
+    expect_rc 1 "a missing absolute path"
+    has_msg "cannot open $PWD/no_such.lua" "the absolute path"
+    grep -q "relative path" err.txt && fail "an absolute path said to be relative: $(cat err.txt)"
+    ;;
+recipes_surface_below_a_gap)
+    # #18 (helper userview4): celery_dip.lua's "sauce surface" was h.recipes.height, the highest material on the line,
+    # which read the drops on the lifted celery (0.0711 m for a bath ~25 mm deep). h.recipes.surface reads the top
+    # of the lowest material. Bars set before the run (dx 1/64 m, the probe's kernel reaches ~dx/2 past a face):
+    # a 0.2 m block on y0 with a blob at 0.5-0.6 above a gap: surface 0.2 +- 2 dx, height 0.5 +- 2 dx; an empty
+    # line 0.
+    run surface.lua
+    expect_rc 0 "the block and the blob"
+    cat out.txt
+    python3 - out.txt <<'PY' || fail "h.recipes.surface / height (numbers above)"
+import re, sys
+t = open(sys.argv[1]).read()
+hgt, srf = map(float, re.search(r"height=([0-9.]+) surface=([0-9.]+)", t).groups())
+empty = float(re.search(r"empty=([0-9.]+)", t).group(1))
+dx = 1 / 64
+ok = abs(srf - 0.2) <= 2 * dx and abs(hgt - 0.5) <= 2 * dx and empty == 0
+sys.exit(0 if ok else 1)
+PY
+    ;;
+run_csv_probe_outside_empty)
+    # #18 (helper userview4): s:run{csv = ...} wrote "nan" for a probe outside the material (drop_block.lua's
+    # height.csv, speed_m_s@0.5:0.2:0, once the block had fallen past it), where the shipped scenes write an empty
+    # cell for "not measured" (tests/scene_csv.py). Bar set before the run: the outside probe's cells are empty in
+    # every row, the inside one's are numbers (40 degC), no cell reads nan.
+    run run_csv_outside.lua --out o
+    expect_rc 0 "run_csv_outside.lua"
+    cat o/series.csv
+    python3 - o/series.csv <<'PY' || fail "series.csv's probe cells (above)"
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1])))
+head, body = rows[0], rows[1:]
+i, o = head.index("temperature_degC@0.45:0.45:0"), head.index("temperature_degC@0.9:0.9:0")
+ok = len(body) == 3 and all(r[o] == "" for r in body) and all(abs(float(r[i]) - 40) < 1 for r in body)
+ok = ok and not any("nan" in c for r in body for c in r)
+sys.exit(0 if ok else 1)
+PY
+    ;;
+*) fail "unknown case $case_name" ;;
+esac
+echo "ok"
