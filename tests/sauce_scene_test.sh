@@ -52,9 +52,10 @@ steak_pork_pile_within_yield_heap)
     echo "pork cutlet on the steak at t = $t s: reach $left / $right m (at 0.7 s: $left0 / $right0 m), pile $height m tall; heap bound $bound m (+ 0.00125 m)"
     [ "$left" = "$left0" ] && [ "$right" = "$right0" ] || fail "the pile still spreads from 0.7 to $t s: the bound does not apply"
     if awk -v h="$height" -v b="$bound" 'BEGIN { exit !(h > b + 0.00125) }'; then
-        echo "expected failure: the pile stands $height m where a yield-stress heap of its width stands $bound m; since e0623728" \
-            "the sauce rests on the steak's sticky face with a no-slip bottom row, and a pile two to four cells tall on it" \
-            "is held (with mpm_touch_glued off the mix spreads 0.0225 m by 0.5 s against 0.0125; docs/validation.md, sauceregress)"
+        echo "expected failure: the pile stands $height m where a yield-stress heap of its width stands $bound m: a yield" \
+            "layer a few cells tall is held too much on a sticky face at this spacing. Before e0623728 too (7.6 mm at 1 s," \
+            "reach 0.029 m, still spreading); since it the sauce rests on the face with a no-slip bottom row and stops" \
+            "at 0.015 m (docs/validation.md, helper sauceregress)"
         exit 77
     fi
     ;;
