@@ -8,8 +8,9 @@
 -- line (the hole the celery leaves: a sauce with a yield stress keeps it, a
 -- thin one levels), and the area of sauce (m^2 per m of depth) above the
 -- bowl's initial level (what the celery pushes up and lifts out). The sauce
--- wets the celery only through its sticky contact; there is no adhesion or
--- surface tension, so little sauce leaves the bowl with it.
+-- wets the celery only through its sticky contact, which since commit
+-- e062372 is glue (a particle that touched it stays held, in tension too), so
+-- the lifted celery pulls a column of sauce up; no surface tension.
 local h = require "hearth"
 local P = h.params { blend = h.choice("nonlinear", h.blend_words),
   sauce = h.choice("mix", h.library.sauce_words(), { mix = "half mayo, half mustard (Fig. 12), blended as blend says" }),

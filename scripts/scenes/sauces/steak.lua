@@ -5,7 +5,8 @@
 -- sauce: a library name (pork_cutlet, bbq, ...) or "mix", the half-and-half
 -- pork cutlet / BBQ sauce mixture of Fig. 14, blended as `blend` says.
 -- spread.csv: how far the sauce reaches over the steak's top to the left
--- and right of the pour point over time, and the area that ran off onto the plate.
+-- and right of the pour point over time, the area that ran off onto the plate, and the
+-- sauce's height above the steak's top at the pour point (the pile's top).
 local h = require "hearth"
 local P = h.params { blend = h.choice("nonlinear", h.blend_words),
   sauce = h.choice("mix", h.library.sauce_words(), { mix = "half pork cutlet, half BBQ sauce (Fig. 14), blended as blend "
@@ -51,16 +52,17 @@ local function spread()
       end
     end
   end
-  return left, right, n * (W / nx) * (H / ny)
+  local height = h.recipes.surface(s, x_pour, stop, H, math.floor((H - stop) / (P.dx / 2)))
+  return left, right, n * (W / nx) * (H / ny), height
 end
 
-local rows = { "t_s,left_m,right_m,runoff_m2" }
-local l, r, ro = 0, 0, 0
+local rows = { "t_s,left_m,right_m,runoff_m2,height_m" }
+local l, r, ro, ht = 0, 0, 0, 0
 s:run { until_t = P.until_t, every = P.every,
   png = P.png and { field = "speed", path = "frames/speed_%04d.png" } or nil,
   on_frame = function(f)
-    l, r, ro = spread()
-    rows[#rows + 1] = ("%.4f,%.4f,%.4f,%.6g"):format(f.t, l, r, ro)
+    l, r, ro, ht = spread()
+    rows[#rows + 1] = ("%.4f,%.4f,%.4f,%.6g,%.4f"):format(f.t, l, r, ro, ht)
     h.write("spread.csv", table.concat(rows, "\n") .. "\n")
   end }
 print(("steak (%s, %s) at t = %.2f s: sauce reaches %.3f m left and %.3f m right of the pour; %.3g m^2 ran off"):format(
