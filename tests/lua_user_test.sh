@@ -55,6 +55,34 @@ ok = abs(srf - 0.2) <= 2 * dx and abs(hgt - 0.5) <= 2 * dx and empty == 0
 sys.exit(0 if ok else 1)
 PY
     ;;
+csv_negative_zero_written_0)
+    # #18 (helpers userview4, userfix8): loaf.csv's base_gap_m read -0.000000 at t = 0 (%.6f of a negative zero) and
+    # the roll's trace_NNNN.csv wrote -0 pressures. Bar set before the run: every CSV cell that is a negative zero
+    # (-0.000000, -0, -0.000e+00, -0.00) is written 0 (0.000000, 0, ...); -0.5 and a text cell "-0 km" stay; a file
+    # that is not a CSV is left as the scene wrote it.
+    run csv_negative_zero.lua --out o
+    expect_rc 0 "csv_negative_zero.lua"
+    cat o/zeros.csv
+    printf 'a_m,b_Pa,c_1,d_m,e\n0.000000,0,0.000e+00,0.000000,-0 km\n0.000000,0,0.00,-0.5,x\n' >want.csv
+    cmp -s o/zeros.csv want.csv || fail "zeros.csv (above) is not want.csv: $(cat want.csv)"
+    has o/note.txt "-0.000000" "a text file left as written"
+    ;;
+scene_dx_past_box_exit2)
+    # #18 (helpers userview4, userfix8): `--set dx=1` on a scene's own dx reached the core's box check, "box axis x
+    # spans [0, 0.14] m; it must be at least 6 dx = 6 m long" (exit 1, a scene error blaming the box). Bar set before
+    # the run: exit 2 (a usage error) at the scene's line naming --set dx=1, dx and the range its box takes (the
+    # shortest axis / 6), for three scenes' declared dx (loaf_physical.lua, bread_roll.lua, dam_break.lua).
+    run ../../scripts/scenes/baking/loaf_physical.lua --set dx=1
+    expect_rc 2 "loaf_physical.lua --set dx=1"
+    has_msg "loaf_physical.lua:" "the scene's file"
+    has_msg "--set dx=1: dx (the grid spacing) takes a number in (0, 0.02333333333] m in this scene, not 1: its box's x axis spans 0.14 m" "the loaf's dx and its range"
+    run ../../scripts/scenes/sph/bread_roll.lua --set dx=0.05
+    expect_rc 2 "bread_roll.lua --set dx=0.05"
+    has_msg "--set dx=0.05: dx (the grid spacing) takes a number in (0, 0.02] m in this scene, not 0.05: its box's y axis spans 0.12 m" "the roll's dx and its range"
+    run ../../scripts/scenes/dam_break.lua --set dx=0.2
+    expect_rc 2 "dam_break.lua --set dx=0.2"
+    has_msg "dx (the grid spacing) takes a number in (0, 0.1] m in this scene" "the dam break's dx"
+    ;;
 run_csv_probe_outside_empty)
     # #18 (helper userview4): s:run{csv = ...} wrote "nan" for a probe outside the material (drop_block.lua's
     # height.csv, speed_m_s@0.5:0.2:0, once the block had fallen past it), where the shipped scenes write an empty
