@@ -20,6 +20,20 @@ sph_results_lines_say_real_minutes)
     has out.txt "at t = 0.04 s, 1 min (mean " "the cake's last volume with its real time"
     grep 'relative volume' out.txt
     ;;
+sph_cake_out_of_oven_between_frames)
+    # #18 (helpers userview4, userfix8): the angel food cake came out of the oven at its first frame at or past the bake
+    # (frames every 0.1 s), so `--set bake=0.02 --set until_t=0.04`, no frame between, stayed in the oven to 0.04 s
+    # and its line said "still in the oven: the bake ends at 0.02 s". Bar set before the run: the line gives the
+    # volume "as the bake ends", not "still in the oven", the bake's-end line is printed and particles_baked.csv is
+    # written.
+    run ../../scripts/scenes/sph/angel_food_cake.lua --set bake=0.02 --set until_t=0.04 --out o
+    expect_rc 0 "the angel food cake, bake 0.02 s of 0.04 s"
+    grep 'relative volume' out.txt
+    has out.txt " as the bake ends), " "the volume as the bake ends"
+    grep -q "still in the oven" out.txt && fail "the line says the cake is still in the oven at 0.04 s"
+    has out.txt "angel food cake as the bake ends: crumb band" "the bake's-end line"
+    [ -s o/particles_baked.csv ] || fail "no particles_baked.csv"
+    ;;
 dofile_relative_path_says_folder)
     # #18 (helper userview4): scripts/validation/loaf_whatif.lua (and crack_heat, crack_dt, crack_tray, muffin_tear,
     # bread3d) run their scene by a path from the source root; started elsewhere they stopped with "cannot open
