@@ -34,6 +34,25 @@ sph_cake_out_of_oven_between_frames)
     has out.txt "angel food cake as the bake ends: crumb band" "the bake's-end line"
     [ -s o/particles_baked.csv ] || fail "no particles_baked.csv"
     ;;
+bread_two_slits_read_alike_at_start)
+    # #18 (helpers userview4, userfix8): bread.csv's first row read the two-slit loaf's slits 2.70 and 0 mm: the gap's
+    # line, a third of the slit depth below the lower shoulder of the dome beside each off-crown slit, lay at the slits'
+    # floor (69.8 mm against 70), so the floor particles' jitter opened one and shut the other. The slits are cut
+    # alike (mirror images on the seeding lattice: 4 columns each). Bar (set after reading the t = 0 rows, 6.75 and
+    # 6.75 mm; only=3 6.45 and 6.75): at t = 0 both read open (> 0) and within one particle spacing (dx / 2 = 2.5 mm)
+    # of each other, for all three loaves and for only=3 (another jitter draw).
+    for only in 0 3; do
+        run ../../scripts/scenes/baking/bread.lua --set only=$only --until 0.001 --out o$only
+        expect_rc 0 "bread.lua only=$only, 1 ms"
+        python3 - o$only/bread.csv <<'PY' || fail "only=$only: the two slits' gaps at t = 0 (above)"
+import csv, sys
+r = next(csv.DictReader(open(sys.argv[1])))
+a, b = float(r["gap_two_slits_left_m"]), float(r["gap_two_slits_right_m"])
+print(f"t = {r['t_s']} s: left {a * 1e3:.2f} mm, right {b * 1e3:.2f} mm (need both > 0, within 2.5 mm)")
+sys.exit(0 if a > 0 and b > 0 and abs(a - b) <= 0.0025 else 1)
+PY
+    done
+    ;;
 dofile_relative_path_says_folder)
     # #18 (helper userview4): scripts/validation/loaf_whatif.lua (and crack_heat, crack_dt, crack_tray, muffin_tear,
     # bread3d) run their scene by a path from the source root; started elsewhere they stopped with "cannot open
