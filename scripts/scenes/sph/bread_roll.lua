@@ -150,7 +150,7 @@ local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the g
   own_squeeze = sph.own_squeeze or false,
   hourglass = h.number { sph.hourglass or 0, min = 0, max = 100,
     what = "the hourglass control's coefficient (sph.hourglass)" },
-  crust = false, dry = true, trace = false,
+  crust = false, dry = true, trace = false, vent = sph.surface_vent or false,
   shift = h.number { 0, min = -5, max = 5, integer = true, what = "spacings the roll is moved along the tray (below)" },
   warm = h.number { 0, min = -50, max = 50, unit = "K", what = "how much warmer the roll is seeded (below)" },
   bubbles = h.choice { "even", even = "small bubbles spread evenly through the roll",
@@ -167,6 +167,7 @@ sph.gas_law, sph.bubble_vapour, sph.bubble_vmax = P.gas_law, P.vapour, P.vmax
 sph.artificial_stress, sph.tension = P.artificial_stress, P.tension
 sph.continuity_density, sph.renormalised_density, sph.gas_pressure = P.continuity, P.renormalised, P.gas_pressure
 sph.dough_water, sph.own_squeeze, sph.hourglass = P.dough_water, P.own_squeeze, P.hourglass
+sph.surface_vent = P.vent -- the cells the air reaches vent (sph_gas.c; docs/validation.md "Cells open to the air")
 sph.xsph0 = P.xsph0 -- eq. 4.4 at the raw end (Table 4.1: 0.05)
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph", sph = sph,
   oven = { temperature = P.oven, beta = 0, radiation_scale = 400 }, browning = true, browning_scale = 400, -- S: walls by --set
