@@ -259,11 +259,13 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
  * overpressure gone as it forms. So a vented cell keeps the gas that fills its
  * present volume at the outside pressure (its gauge is 0) and loses the rest:
  * gasleft_i, the share of its moles still in it, drops to (rho0 / rho) / V_b,
- * its volume over its gas's volume at P_a, whenever that is smaller. Air is
- * not drawn in (a cell squeezed below its gas's volume keeps its moles: the
- * dough's Tait pushes back, as at any squeeze), and the gas that left does not
- * come back when the cell closes again (a neighbour's wall covers it): the
- * closed cell pushes with what it kept, gasleft V_b(T). The outer flag is
+ * its volume over its gas's volume at P_a, whenever that is smaller. While
+ * open its gas's gauge is 0 either way: it neither pushes nor pulls (an open
+ * cell that grows draws in air; the dough's Tait still resists a squeeze). The
+ * moles counted are the cell's own gas, which never comes back: a cell that
+ * closes again (a neighbour's wall covers it) pushes with what it kept,
+ * gasleft V_b(T) (the air it drew in while open is not counted: a closed cell
+ * that grew after venting reads under its gas and pulls, a limit left). The outer flag is
  * sph_outer_surface's (the flood fill: enclosed spaces between the particles
  * are not the outside), the last step's, carried through the sort
  * (sort_and_list). Per particle, so any thread count gives the same bits.
@@ -344,7 +346,8 @@ void sph_pressure_gas_law(hearth_scene *s) {
         const double rt = o->own_squeeze ? own_squeeze(F + 9 * i, c.m[i], V0[i], rho0, rho) : rho;
         const double tait = st->B[i] * (pow(rt / rho0, o->gamma) - 1); /* eq. 3.17 */
         const double Bg = bub > 0 && T ? sph_gas_modulus(o, st->B[i], T[i]) : st->B[i];
-        const double gas = Bg * (rho / rr - 1);
+        /* an open cell (sph.surface_vent, outer) holds the outside pressure: no push, and no suction (air comes in) */
+        const double gas = st->gasleft && bub > 0 && T && st->outer[i] > 0 ? 0.0 : Bg * (rho / rr - 1);
         st->prs[i] = bub > 0 ? fmax(gas, tait) : tait;
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
     }
