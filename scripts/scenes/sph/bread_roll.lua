@@ -69,6 +69,9 @@
 -- deleted: "Both switches on"; so is a bubble that opens as its crumb sets:
 -- "The roll's cells open at the set", and one that opens as the dough round
 -- it sets: "The roll's cells open as their walls set".)
+-- --set vent=true (sph.surface_vent) lets a bubble on the outer surface vent, as a crumb's cells that open to
+-- the air (the flood fill's outer flag: the crust, and the tray side) lose their gas: its gauge is 0 and the gas
+-- that left stays gone (sph_gas.c; docs/validation.md "Cells open to the air vent"). Off by default, as measured there.
 -- --set trace=true also writes trace_NNNN.csv beside each particles_NNNN.csv: every particle's id (the dough's
 -- first, its bubbles' after: bubble ids from the count the run prints), position, velocity, temperature, pressure,
 -- density, outer flag (the oven's heat enters there) and stress_yy, for scripts/validation/sph_roll_spots.py
