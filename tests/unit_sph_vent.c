@@ -9,7 +9,7 @@
  * row, heated uniformly from 26 to 100 degC and held. The dough holds the
  * middle cell under its gas's volume (V_b = 373.15 / 299.15 of raw), so its
  * gas pushes; the top cell is open to the air above it.
- * Bars, set before the first run (sphvent, 20:45 UTC):
+ * Bars, set before the first run (sphvent, 20:34 UTC, commit 8204a95):
  *  - sph_vent_outer_cell_vents_inner_keeps: with the switch, the top cell's
  *    gas share ends below 0.99 and its pressure is under half of the run
  *    without the switch; the middle cell's share stays exactly 1 and its

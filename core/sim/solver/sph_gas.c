@@ -270,11 +270,13 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
  * are not the outside), the last step's, carried through the sort
  * (sort_and_list). Per particle, so any thread count gives the same bits.
  * Returns the bubble's rest density rho0 / (gasleft V_b) in place of rr =
- * rho0 / V_b. Rejected: a vented cell that pushes nothing while its T is
- * below the cap (sph.bubble_vent at the cap and sph.open_cell_T /
- * open_cell_mu_e opened cells by temperature or set wherever they were;
- * docs/validation.md "The roll's cells open at the set", "... as their walls
- * set"); this opens only cells the air reaches. */
+ * rho0 / V_b. Tried before and deleted: cells opened at the cap
+ * (sph.bubble_vent), at the set (sph.open_cell_T) or as their walls set
+ * (sph.open_cell_mu_e), wherever they were (docs/validation.md "Both
+ * switches on", "The roll's cells open at the set", "... as their walls
+ * set"); this opens only the cells the air reaches. On the roll it keeps the
+ * 1.5 mm base spot shut and the roll whole, but the 2 mm roll rocks more
+ * (docs/validation.md "Cells open to the air vent"), so it is off by default. */
 static double vent(struct sph_state *st, int i, double rr, double rho) {
     double g = st->gasleft[i];
     if (!(g > 0 && g <= 1)) g = 1; /* NaN: a cell that has not vented */
