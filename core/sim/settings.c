@@ -206,6 +206,11 @@ static const hearth_setting settings[] = {
              "with gas_law: a bubble that has reached bubble_vmax stays open (its cell vented to the oven's air) and keeps "
              "that volume as it cools, instead of contracting as a closed gas",
              bubble_stays_open),
+    /* a cell open to the air loses the gas that overfills it (sph_gas.c) */
+    SPH_FLAG("surface_vent",
+             "with gas_law: a bubble particle on the body's outer surface (open to the oven's air) vents: its gas holds "
+             "the outside pressure (zero gauge), and what left is gone if the cell closes again",
+             surface_vent),
     SPH_FLAG("continuity_density",
              "with gas_law: Tait and the gas law read each particle's density from its own volume, m / (V0 det F) (the "
              "continuity equation, Gray, Monaghan & Swift 2001), not the summation (eq. 3.13), which reads a free surface "

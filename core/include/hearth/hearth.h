@@ -231,6 +231,7 @@ typedef struct hearth_sph_def {
     double dough_water;    ///< with gas_law: the dough's water as a mass fraction (kg/kg, bread dough ~0.43); CO2 dissolves in it by Henry's law (Sander 2015; thesis eq. 2.44, Fan et al.) and comes out of solution into the bubbles as it heats, each bubble drawing on an even share of all the particles' water per unit raw gas volume; 0 = no dissolved CO2 (default)
     double hourglass;      ///< hourglass control: each pair's relative velocity along its line beyond what eq. 3.27's velocity gradient predicts is damped with this many times eq. 3.19's pair viscosity (implicit; sph_hourglass.c, after Ganzenmueller 2015's control in rate form); 0 = off (default)
     int bubble_stays_open; ///< with gas_law: a bubble that has reached bubble_vmax stays open (its cell vented to the oven's air) and keeps that volume as it cools, instead of contracting as a closed gas; default 0
+    int surface_vent;      ///< with gas_law: a bubble particle on the body's outer surface (sph_outer.c's flood fill: open to the oven's air) vents: its gas holds the outside pressure (zero gauge) and the gas that leaves is gone when the cell closes again (a ruptured cell; Lostie et al.'s crust permeation, thesis eq. 2.60, with no crust between cell and air); default 0
 } hearth_sph_def;
 
 /// A scene's settings. Each field is one row of hearth_scene_settings(), which

@@ -201,6 +201,7 @@ static void arrays_free(struct sph_state *a, int cap) {
     ARRAYS(FREE)
 #undef FREE
     mem_free(a->ts, sizeof(double) * c);
+    mem_free(a->gasleft, sizeof(double) * c);
     mem_free(a->key, sizeof(int) * c);
     mem_free(a->order, sizeof(int) * c);
 }
@@ -250,6 +251,10 @@ static hearth_status ensure(hearth_scene *s, int n, hearth_error *err) {
     if (s->def.browning) {
         ALLOC(ts, 1)
     }
+    nw.gasleft = NULL;
+    if (s->def.sph.surface_vent) { /* the gas a vented cell has lost (sph_gas.c), only in a scene that vents */
+        ALLOC(gasleft, 1)
+    }
 #undef ALLOC
     nw.key = mem_alloc(sizeof(int) * (size_t)cap);
     nw.order = mem_alloc(sizeof(int) * (size_t)cap);
@@ -257,6 +262,7 @@ static hearth_status ensure(hearth_scene *s, int n, hearth_error *err) {
     if (ok && st->n > 0) { /* the arrays kept across steps */
         memcpy(nw.rhof, st->rhof, sizeof(double) * (size_t)st->n);
         memcpy(nw.Tprev, st->Tprev, sizeof(double) * (size_t)st->n);
+        if (nw.gasleft && st->gasleft) memcpy(nw.gasleft, st->gasleft, sizeof(double) * (size_t)st->n);
     }
     if (!ok) {
         arrays_free(&nw, cap);
@@ -337,6 +343,12 @@ static hearth_status sort_and_list(hearth_scene *s, double hcell, const double *
         memcpy(st->rhof, st->perm, sizeof(double) * (size_t)n);
         for (int i = 0; i < n; i++) st->perm[i] = st->Tprev[st->order[i]];
         memcpy(st->Tprev, st->perm, sizeof(double) * (size_t)n);
+        if (st->gasleft) { /* sph.surface_vent reads the last step's outer flag before sph_outer_surface renews it */
+            for (int i = 0; i < n; i++) st->perm[i] = st->gasleft[st->order[i]];
+            memcpy(st->gasleft, st->perm, sizeof(double) * (size_t)n);
+            for (int i = 0; i < n; i++) st->perm[i] = st->outer[st->order[i]];
+            memcpy(st->outer, st->perm, sizeof(double) * (size_t)n);
+        }
         if (h) {
             for (int i = 0; i < n; i++) st->perm[i] = h[st->order[i]];
             memcpy(st->h, st->perm, sizeof(double) * (size_t)n);
@@ -722,7 +734,10 @@ static hearth_status sph_step(hearth_scene *s, double dt, step_report *rep, hear
     if (e) return e;
     struct sph_state *st = s->sph;
     if (st->n != n) /* particles added or removed since the last step: final densities start over */
-        for (int i = 0; i < n; i++) st->rhof[i] = st->Tprev[i] = NAN;
+        for (int i = 0; i < n; i++) {
+            st->rhof[i] = st->Tprev[i] = NAN;
+            if (st->gasleft) st->gasleft[i] = NAN, st->outer[i] = 0;
+        }
     st->valid = 0;
     if (n == 0) {
         st->n = 0;
@@ -777,7 +792,8 @@ const double *sph_particle_values(const hearth_scene *s, const char *which) {
  * lists past this. */
 static double sph_bytes_per_particle(const hearth_scene *s) {
 #define COUNT(a, k) +(k)
-    const double doubles = 0 ARRAYS(COUNT) + (s->def.browning ? 1 : 0); /* ts, in a scene that browns */
+    const double doubles = 0 ARRAYS(COUNT) + (s->def.browning ? 1 : 0) /* ts, in a scene that browns */
+                           + (s->def.sph.surface_vent ? 1 : 0);         /* gasleft, in a scene that vents */
 #undef COUNT
     const double hf = s->def.sph.h_factor;
     const double nb = s->def.dim == 3 ? 4.0 / 3.0 * SPH_PI * hf * hf * hf : SPH_PI * hf * hf;

@@ -236,6 +236,8 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
          o->own_squeeze},
         {"bubble_stays_open", "true", "it is the gas law's bubble that opens at bubble_vmax", both,
          o->bubble_stays_open},
+        {"surface_vent", "true", "it is the gas law's bubble that vents on the outer surface", both,
+         o->surface_vent},
         {"gas_pressure", gp, "it is the gas law's bubble that holds the gas",
          "set sph.gas_law = true or sph.gas_pressure = 0", o->gas_pressure > 0},
         {"dough_water", dw, "its CO2 comes out into the gas law's bubbles",
@@ -246,6 +248,44 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
             return err_set(err, HEARTH_ERR_PARAM, "scene: sph.%s = %s needs sph.gas_law = true (%s); %s", needs[k].name,
                            needs[k].val, needs[k].why, needs[k].fix);
     return HEARTH_OK;
+}
+
+/* sph.surface_vent: a bubble particle on the body's outer surface is a gas
+ * cell open to the oven's air, a ruptured cell of a real crumb. The thesis's
+ * review of Lostie et al.'s crust-and-crumb model lets the crumb's gas leave
+ * through the crust by Darcy permeation, m_g' = (K / eta) (P - P_atm) / e_t
+ * C_a (eq. 2.60): the flow grows as the crust e_t between gas and air thins,
+ * and a cell with no crust between it and the air (e_t -> 0) holds P_atm, its
+ * overpressure gone as it forms. So a vented cell keeps the gas that fills its
+ * present volume at the outside pressure (its gauge is 0) and loses the rest:
+ * gasleft_i, the share of its moles still in it, drops to (rho0 / rho) / V_b,
+ * its volume over its gas's volume at P_a, whenever that is smaller. While
+ * open its gas's gauge is 0 either way: it neither pushes nor pulls (an open
+ * cell that grows draws in air; the dough's Tait still resists a squeeze). The
+ * moles counted are the cell's own gas, which never comes back: a cell that
+ * closes again (a neighbour's wall covers it) pushes with what it kept,
+ * gasleft V_b(T) (the air it drew in while open is not counted: a closed cell
+ * that grew after venting reads under its gas and pulls, a limit left). The outer flag is
+ * sph_outer_surface's (the flood fill: enclosed spaces between the particles
+ * are not the outside), the last step's, carried through the sort
+ * (sort_and_list). Per particle, so any thread count gives the same bits.
+ * Returns the bubble's rest density rho0 / (gasleft V_b) in place of rr =
+ * rho0 / V_b. Tried before and deleted: cells opened at the cap
+ * (sph.bubble_vent), at the set (sph.open_cell_T) or as their walls set
+ * (sph.open_cell_mu_e), wherever they were (docs/validation.md "Both
+ * switches on", "The roll's cells open at the set", "... as their walls
+ * set"); this opens only the cells the air reaches. On the roll it keeps the
+ * 1.5 mm base spot shut and the roll whole, but the 2 mm roll rocks more
+ * (docs/validation.md "Cells open to the air vent"), so it is off by default. */
+static double vent(struct sph_state *st, int i, double rr, double rho) {
+    double g = st->gasleft[i];
+    if (!(g > 0 && g <= 1)) g = 1; /* NaN: a cell that has not vented */
+    if (st->outer[i] > 0 && rho > 0) {
+        const double full = rr / rho; /* (rho0 / rho) / V_b: the share of the gas that fills the cell at P_a */
+        if (full < g) g = full;
+    }
+    st->gasleft[i] = g;
+    return rr / g;
 }
 
 /* Pressure with sph.gas_law: the dough's Tait (eq. 3.17) against its rest
@@ -289,6 +329,10 @@ void sph_pressure_gas_law(hearth_scene *s) {
     for (int i = 0; i < n; i++) {
         const double rho0 = st->rho0[i], bub = s->mats.slot[mat[i]].core[CP_BUBBLE];
         double rr = bub > 0 && T ? rho0 / sph_bubble_volume_dissolved(o, bub, T[i], w) : rho0; /* eq. 3.49 */
+        const double rho = o->continuity_density     ? volume_density(F + 9 * i, c.m[i], V0[i], st->rho[i])
+                           : o->renormalised_density ? st->vr[i]
+                                                     : st->rho[i];
+        if (st->gasleft && bub > 0 && T) rr = vent(st, i, rr, rho); /* sph.surface_vent: before the cap's latch */
         /* sph.bubble_stays_open: the cap is where a crumb's cells open and vent
          * (sph_bubble_volume_dissolved); an open cell is joined to the oven's
          * air and holds P_a at any temperature, so as it cools air comes in
@@ -301,13 +345,11 @@ void sph_pressure_gas_law(hearth_scene *s) {
             st->rhof[i] <= rho0 / (bub * o->bubble_vmax) * (1 + 1e-9))
             rr = st->rhof[i];
         st->rhof[i] = rr;
-        const double rho = o->continuity_density     ? volume_density(F + 9 * i, c.m[i], V0[i], st->rho[i])
-                           : o->renormalised_density ? st->vr[i]
-                                                     : st->rho[i];
         const double rt = o->own_squeeze ? own_squeeze(F + 9 * i, c.m[i], V0[i], rho0, rho) : rho;
         const double tait = st->B[i] * (pow(rt / rho0, o->gamma) - 1); /* eq. 3.17 */
         const double Bg = bub > 0 && T ? sph_gas_modulus(o, st->B[i], T[i]) : st->B[i];
-        const double gas = Bg * (rho / rr - 1);
+        /* an open cell (sph.surface_vent, outer) holds the outside pressure: no push, and no suction (air comes in) */
+        const double gas = st->gasleft && bub > 0 && T && st->outer[i] > 0 ? 0.0 : Bg * (rho / rr - 1);
         st->prs[i] = bub > 0 ? fmax(gas, tait) : tait;
         if (!o->tension && st->prs[i] < 0) st->prs[i] = 0; /* as phase_pressure */
     }

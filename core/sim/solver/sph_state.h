@@ -73,6 +73,9 @@ struct sph_state {
     double *ts; /* sph_heat.c's sph_surface_temperatures: an outer particle's face temperature (degC) by the oven's
                  * film closure, NaN for the others; made with ARRAYS only in a scene that browns (else NULL), valid
                  * after a step of one (particle_values' "surface_temperature") */
+    double *gasleft; /* sph.surface_vent (sph_gas.c): the share of a bubble's gas still in its cell (1 closed, less once
+                      * it has vented on the outer surface; NaN = not yet set: 1), sorted with the particles; made with
+                      * ARRAYS only when the scene vents (else NULL) */
     uint8_t *og;
     int *oq;
     size_t og_cap;

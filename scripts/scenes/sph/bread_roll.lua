@@ -69,6 +69,9 @@
 -- deleted: "Both switches on"; so is a bubble that opens as its crumb sets:
 -- "The roll's cells open at the set", and one that opens as the dough round
 -- it sets: "The roll's cells open as their walls set".)
+-- --set vent=true (sph.surface_vent) lets a bubble on the outer surface vent, as a crumb's cells that open to
+-- the air (the flood fill's outer flag: the crust, and the tray side) lose their gas: its gauge is 0 and the gas
+-- that left stays gone (sph_gas.c; docs/validation.md "Cells open to the air vent"). Off by default, as measured there.
 -- --set trace=true also writes trace_NNNN.csv beside each particles_NNNN.csv from 0001 on: every particle's id (the dough's
 -- first, its bubbles' after: bubble ids from the count the run prints), position, velocity, temperature, pressure,
 -- density, outer flag (the oven's heat enters there) and stress_yy, for scripts/validation/sph_roll_spots.py
@@ -157,6 +160,8 @@ local P = h.params { dx = h.number { 0.002, above = 0, unit = "m", what = "the g
   crust = h.flag { false, what = "the dough carries bread's water, boils at 100 degC and dries a crust" },
   dry = h.flag { true, what = "with crust: the dried crust's own conductivity and heat capacity" },
   trace = h.flag { false, what = "trace_NNNN.csv beside each particles_NNNN.csv: every particle's state by id" },
+  vent = h.flag { sph.surface_vent or false,
+    what = "a bubble on the outer surface vents: its gauge is 0 and the gas that left stays gone (sph.surface_vent)" },
   shift = h.number { 0, min = -5, max = 5, integer = true, what = "spacings the roll is moved along the tray (below)" },
   warm = h.number { 0, min = -50, max = 50, unit = "K", what = "how much warmer the roll is seeded (below)" },
   bubbles = h.choice { "even", even = "small bubbles spread evenly through the roll",
@@ -173,6 +178,7 @@ sph.gas_law, sph.bubble_vapour, sph.bubble_vmax = P.gas_law, P.vapour, P.vmax
 sph.artificial_stress, sph.tension = P.artificial_stress, P.tension
 sph.continuity_density, sph.renormalised_density, sph.gas_pressure = P.continuity, P.renormalised, P.gas_pressure
 sph.dough_water, sph.own_squeeze, sph.hourglass = P.dough_water, P.own_squeeze, P.hourglass
+sph.surface_vent = P.vent -- the cells the air reaches vent (sph_gas.c; docs/validation.md "Cells open to the air")
 sph.xsph0 = P.xsph0 -- eq. 4.4 at the raw end (Table 4.1: 0.05)
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph", sph = sph,
   oven = { temperature = P.oven, beta = 0, radiation_scale = 400 }, browning = true, browning_scale = 400, -- S: walls by --set
