@@ -91,7 +91,8 @@ static void usage(FILE *f) {
             "                  and runs/NNN/ with each run's log and outputs\n"
             "  --jobs N        runs at a time (default: the number of cores); each run gets\n"
             "                  cores/N OpenMP threads so the machine is not oversubscribed\n"
-            "  --threads N     OpenMP threads per run (default: cores/jobs; 1 with --launcher slurm)\n"
+            "  --threads N     OpenMP threads per run (default: OMP_NUM_THREADS when set, else cores/jobs;\n"
+            "                  1 with --launcher slurm)\n"
             "  --until T, --set k=v, --trust   passed to every run\n"
             "  --launcher L    where the runs run: local (default: child processes on this machine),\n"
             "                  slurm (one Slurm job array, `sbatch --array`, a task per run, each\n"
@@ -652,6 +653,24 @@ static void trade_record(const trade *T, run_log *rec, int status) {
     run_log_write(rec, status);
 }
 
+/* The user's OMP_NUM_THREADS, a whole number in [1, 1024], is each run's thread count when --threads is not given:
+ * every run's environment had it overwritten by cores / jobs ("OMP_NUM_THREADS=1 hearth trade" ran 2 threads a run;
+ * #18, helpers userview4, userfix8). Another value (an OpenMP list, a typo) is said and left to cores / jobs. */
+static int env_threads(int quiet) {
+    const char *v = getenv("OMP_NUM_THREADS");
+    if (!v || !*v) return 0;
+    char *end;
+    errno = 0;
+    long n = strtol(v, &end, 10);
+    if (*end || errno || n < 1 || n > 1024) {
+        if (!quiet)
+            fprintf(stderr, "trade: OMP_NUM_THREADS=%.40s is not a whole number in [1, 1024]; each run gets cores / jobs "
+                            "threads (--threads N sets them)\n", v);
+        return 0;
+    }
+    return (int)n;
+}
+
 int cmd_trade(int argc, char **argv) {
     if (argc >= 2 && !strcmp(argv[1], "--collect")) {
         if (argc < 3 || argv[2][0] == '-') return trade_bad_usage("--collect needs the results folder: hearth trade --collect DIR%s", "");
@@ -675,6 +694,7 @@ int cmd_trade(int argc, char **argv) {
     }
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     if (cores < 1) cores = 1;
+    if (!T.threads && T.launcher != TL_SLURM) T.threads = env_threads(T.quiet);
     const int jobs_given = T.jobs > 0;
     if (T.jobs < 0) T.jobs = (int)cores;
     if (T.jobs > T.nr) T.jobs = T.nr;

@@ -20,6 +20,39 @@ sph_results_lines_say_real_minutes)
     has out.txt "at t = 0.04 s, 1 min (mean " "the cake's last volume with its real time"
     grep 'relative volume' out.txt
     ;;
+sph_cake_out_of_oven_between_frames)
+    # #18 (helpers userview4, userfix8): the angel food cake came out of the oven at its first frame at or past the bake
+    # (frames every 0.1 s), so `--set bake=0.02 --set until_t=0.04`, no frame between, stayed in the oven to 0.04 s
+    # and its line said "still in the oven: the bake ends at 0.02 s". Bar set before the run: the line gives the
+    # volume "as the bake ends", not "still in the oven", the bake's-end line is printed and particles_baked.csv is
+    # written.
+    run ../../scripts/scenes/sph/angel_food_cake.lua --set bake=0.02 --set until_t=0.04 --out o
+    expect_rc 0 "the angel food cake, bake 0.02 s of 0.04 s"
+    grep 'relative volume' out.txt
+    has out.txt " as the bake ends), " "the volume as the bake ends"
+    grep -q "still in the oven" out.txt && fail "the line says the cake is still in the oven at 0.04 s"
+    has out.txt "angel food cake as the bake ends: crumb band" "the bake's-end line"
+    [ -s o/particles_baked.csv ] || fail "no particles_baked.csv"
+    ;;
+bread_two_slits_read_alike_at_start)
+    # #18 (helpers userview4, userfix8): bread.csv's first row read the two-slit loaf's slits 2.70 and 0 mm: the gap's
+    # line, a third of the slit depth below the lower shoulder of the dome beside each off-crown slit, lay at the slits'
+    # floor (69.8 mm against 70), so the floor particles' jitter opened one and shut the other. The slits are cut
+    # alike (mirror images on the seeding lattice: 4 columns each). Bar (set after reading the t = 0 rows, 6.75 and
+    # 6.75 mm; only=3 6.45 and 6.75): at t = 0 both read open (> 0) and within one particle spacing (dx / 2 = 2.5 mm)
+    # of each other, for all three loaves and for only=3 (another jitter draw).
+    for only in 0 3; do
+        run ../../scripts/scenes/baking/bread.lua --set only=$only --until 0.001 --out o$only
+        expect_rc 0 "bread.lua only=$only, 1 ms"
+        python3 - o$only/bread.csv <<'PY' || fail "only=$only: the two slits' gaps at t = 0 (above)"
+import csv, sys
+r = next(csv.DictReader(open(sys.argv[1])))
+a, b = float(r["gap_two_slits_left_m"]), float(r["gap_two_slits_right_m"])
+print(f"t = {r['t_s']} s: left {a * 1e3:.2f} mm, right {b * 1e3:.2f} mm (need both > 0, within 2.5 mm)")
+sys.exit(0 if a > 0 and b > 0 and abs(a - b) <= 0.0025 else 1)
+PY
+    done
+    ;;
 dofile_relative_path_says_folder)
     # #18 (helper userview4): scripts/validation/loaf_whatif.lua (and crack_heat, crack_dt, crack_tray, muffin_tear,
     # bread3d) run their scene by a path from the source root; started elsewhere they stopped with "cannot open
@@ -54,6 +87,34 @@ dx = 1 / 64
 ok = abs(srf - 0.2) <= 2 * dx and abs(hgt - 0.5) <= 2 * dx and empty == 0
 sys.exit(0 if ok else 1)
 PY
+    ;;
+csv_negative_zero_written_0)
+    # #18 (helpers userview4, userfix8): loaf.csv's base_gap_m read -0.000000 at t = 0 (%.6f of a negative zero) and
+    # the roll's trace_NNNN.csv wrote -0 pressures. Bar set before the run: every CSV cell that is a negative zero
+    # (-0.000000, -0, -0.000e+00, -0.00) is written 0 (0.000000, 0, ...); -0.5 and a text cell "-0 km" stay; a file
+    # that is not a CSV is left as the scene wrote it.
+    run csv_negative_zero.lua --out o
+    expect_rc 0 "csv_negative_zero.lua"
+    cat o/zeros.csv
+    printf 'a_m,b_Pa,c_1,d_m,e\n0.000000,0,0.000e+00,0.000000,-0 km\n0.000000,0,0.00,-0.5,x\n' >want.csv
+    cmp -s o/zeros.csv want.csv || fail "zeros.csv (above) is not want.csv: $(cat want.csv)"
+    has o/note.txt "-0.000000" "a text file left as written"
+    ;;
+scene_dx_past_box_exit2)
+    # #18 (helpers userview4, userfix8): `--set dx=1` on a scene's own dx reached the core's box check, "box axis x
+    # spans [0, 0.14] m; it must be at least 6 dx = 6 m long" (exit 1, a scene error blaming the box). Bar set before
+    # the run: exit 2 (a usage error) at the scene's line naming --set dx=1, dx and the range its box takes (the
+    # shortest axis / 6), for three scenes' declared dx (loaf_physical.lua, bread_roll.lua, dam_break.lua).
+    run ../../scripts/scenes/baking/loaf_physical.lua --set dx=1
+    expect_rc 2 "loaf_physical.lua --set dx=1"
+    has_msg "loaf_physical.lua:" "the scene's file"
+    has_msg "--set dx=1: dx (the grid spacing) takes a number in (0, 0.02333333333] m in this scene, not 1: its box's x axis spans 0.14 m" "the loaf's dx and its range"
+    run ../../scripts/scenes/sph/bread_roll.lua --set dx=0.05
+    expect_rc 2 "bread_roll.lua --set dx=0.05"
+    has_msg "--set dx=0.05: dx (the grid spacing) takes a number in (0, 0.02] m in this scene, not 0.05: its box's y axis spans 0.12 m" "the roll's dx and its range"
+    run ../../scripts/scenes/dam_break.lua --set dx=0.2
+    expect_rc 2 "dam_break.lua --set dx=0.2"
+    has_msg "dx (the grid spacing) takes a number in (0, 0.1] m in this scene" "the dam break's dx"
     ;;
 run_csv_probe_outside_empty)
     # #18 (helper userview4): s:run{csv = ...} wrote "nan" for a probe outside the material (drop_block.lua's

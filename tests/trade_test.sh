@@ -41,6 +41,23 @@ trade_heat_slab_order)
     png_ok o/trade.png
     grep -q "centre_temperature" out.txt || fail "no table printed: $(cat out.txt)"
     ;;
+trade_honours_omp_num_threads)
+    # #18 (helpers userview4, userfix8): hearth trade set every run's OMP_NUM_THREADS to cores / jobs over the user's
+    # own (OMP_NUM_THREADS=1 ran 2 threads a run on a 2-core machine). Bar set before the run: with OMP_NUM_THREADS=3
+    # and --jobs 1 (cores / jobs is the machine's cores, 3 only on a 3-core one) the start line and run.json give 3
+    # threads a run; --threads 2 still wins over it; an OMP_NUM_THREADS that is not a whole number is said and left.
+    OMP_NUM_THREADS=3 "$hearth" trade "$knobs" --metric particles --knob ppc=1 --set size=0.125 --jobs 1 --out o \
+        >out.txt 2>err.txt || fail "exit $?: $(cat err.txt)"
+    grep -F "1 at a time with 3 threads each" err.txt || fail "the start line: $(cat err.txt)"
+    python3 -c "import json, sys; r = json.load(open('o/run.json')); sys.exit(r['threads'] != 3)" ||
+        fail "run.json's threads: $(grep threads o/run.json)"
+    OMP_NUM_THREADS=3 "$hearth" trade "$knobs" --metric particles --knob ppc=1 --set size=0.125 --jobs 1 --threads 2 \
+        --out o2 >out.txt 2>err.txt || fail "--threads 2: exit $?: $(cat err.txt)"
+    grep -qF "with 2 threads each" err.txt || fail "--threads 2 over OMP_NUM_THREADS: $(cat err.txt)"
+    OMP_NUM_THREADS=4,2 "$hearth" trade "$knobs" --metric particles --knob ppc=1 --set size=0.125 --jobs 1 --out o3 \
+        >out.txt 2>err.txt || fail "OMP_NUM_THREADS=4,2: exit $?: $(cat err.txt)"
+    grep -qF "OMP_NUM_THREADS=4,2 is not a whole number in [1, 1024]" err.txt || fail "a list not said: $(cat err.txt)"
+    ;;
 run_record_for_trade)
     # hearth trade writes its own run.json beside trade.csv: the command line, --set, the
     # plugins its runs loaded, threads per run, jobs, all runs' steps, peak memory (its

@@ -249,6 +249,9 @@ h.colormap = core.colormap
 
 function h.write(path, text)
   if type(path) ~= "string" or type(text) ~= "string" then error("h.write(path, text): two strings", 2) end
+  -- a CSV cell that is zero reads 0: %.6f of a height's -1e-9 wrote -0.000000 (#18, helpers userview4, userfix8)
+  if path:match("%.csv$") then text = text:gsub("[^,\n]+", function(c)
+    if c:match("^%-0%.?0*$") or c:match("^%-0%.?0*e[-+]%d+$") then return c:sub(2) end end) end
   local ok, e = pcall(core.write_atomic, path, text, "h.write")
   if not ok then error(e, 2) end
   return e
@@ -534,6 +537,7 @@ function h.scene(o)
     error("h.scene: sph = {...} needs solver = \"sph\"", 2)
   end
   local dim = def.dim or scene_setting.dim.default
+  h._dx_fits_box(def) -- a --set dx too coarse for the box: exit 2 naming dx (params.lua)
   local ok, s = pcall(core.scene_new, def)
   if not ok then error(s, 2) end
   local st = s:_state()

@@ -371,6 +371,25 @@ function h._knob_in_range(e, raw)
   return x
 end
 
+--- A --set dx that leaves the scene's box shorter than 6 dx on an axis (the core's floor, core/sim/scene.c): a usage
+--- error (exit 2) naming dx and the range this box takes, (0, shortest axis / 6] m, where the core's "box axis x spans
+--- [0, 0.14] m; it must be at least 6 dx" blamed the box (exit 1) for the user's dx (#18, helpers userview4, userfix8).
+--- One check for every scene whose dx --set gives (each scene's h.number for dx is declared before its box is known).
+function h._dx_fits_box(def)
+  local raw, box = core.options().sets.dx, def.box
+  if raw == nil or box == nil or type(def.dx) ~= "number" then return end
+  local dim, span, axis = def.dim or 2, math.huge, 1
+  for k = 1, dim do
+    local w = (box.hi[k] or 0) - (box.lo[k] or 0)
+    if w < span then span, axis = w, k end
+  end
+  if def.dx * 6 > span then
+    usage_error(("%s: dx (the grid spacing) takes a number in (0, %s] m in this scene, not %s: its box's %s axis spans "
+      .. "%s m, at least 6 dx"):format(set_text("dx", raw), num(span / 6), num(def.dx), ("xyz"):sub(axis, axis),
+      num(span)), 3)
+  end
+end
+
 -- --set ppc, a knob of every s:add (not in the scene settings' schema)
 h._ppc_knob = { name = "ppc", help = "particles per cell of every body", kind = "int", min = 1, max = 1000, unit = "" }
 

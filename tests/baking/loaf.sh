@@ -196,7 +196,7 @@ claim_bread3d_loaf_rises | claim_bread3d_loaf_rises_fine | claim_bread3d_scored_
     python3 - hearth-out/bread/bread.csv $col <<'PY'
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
-v = [float(r["area_" + sys.argv[2]]) for r in rows]
+v = [float(r["volume_" + sys.argv[2] + "_m3"]) for r in rows] # 3D's volume column (helper userfix7 named it)
 if max(v) / v[0] < 1.15 or v[-1] / v[0] < 1.10:
     sys.exit(1)
 print("EXPECTED FAILURE: the volume grows as the bars ask (plain +21.8% / +16.3% at 8 mm, +19.2% / +14.8% at 6 "

@@ -4,7 +4,7 @@
 -- Writes, under hearth-out/bread/: heat_%04d.png (temperature) and
 -- bread.csv: per frame (t_s, the simulated time: Table 2's animation units),
 -- each loaf's height and each slit's gap width (the
--- open width of the cut, measured across it just below the loaf's top), each
+-- open width of the cut, measured across it halfway up its lower wall), each
 -- loaf's area (2D, m^2) or volume (3D, m^3): the sum of V0 J over its
 -- particles (area_plain_m2, area_one_slit_m2, area_two_slits_m2 in 2D; volume_plain_m3, volume_one_slit_m3 and
 -- volume_two_slits_m3 in 3D: #18, helper userfix7, where one name had held both without a unit; --params and the
@@ -92,10 +92,13 @@ local function height(x)
   for k, val in ipairs(d) do if val == val then top = (k - 1) * (0.14 - TRAY) / n end end
   return top
 end
--- the gap of a slit at x0: the empty run around x0 on a horizontal line
--- a third of the slit depth below the loaf's current top beside the slit
+-- the gap of a slit at x0: the empty run around x0 on a horizontal line halfway up the slit's lower wall, between
+-- its floor (the material's top at x0) and the loaf's top beside the slit. The line had been a third of the slit
+-- depth below that top, which at the two-slit loaf's slits, off its crown, lay at the slits' floor (y 69.8 mm
+-- against the floor at 70): each slit read open or shut by the jitter of its floor's particles (bread.csv's first
+-- row 2.70 and 0 mm; #18, helpers userview4, userfix8)
 local function gap(x0)
-  local y = TRAY + math.min(height(x0 - 0.012), height(x0 + 0.012)) - P.slit_depth / 3
+  local y = TRAY + (height(x0) + math.min(height(x0 - 0.012), height(x0 + 0.012))) / 2
   local n, span = 400, 0.03
   local d = s:line("density", v(x0 - span, y, zc), v(x0 + span, y, zc), n + 1)
   local mid = n // 2 + 1

@@ -296,15 +296,27 @@ local cooling, peak, peak_t, baked, baked_b = false, 1, 0, nil, nil
 -- both with the label of the state the frame shows, then the label turns when the cake comes out.
 local png = { field = "browning", path = "frames/browning_%04d.png", time_scale = 1600, kind = "slice",
   label = ("angel food cake in the oven, %g °C"):format(P.oven) }
+local function out_of_oven()
+  png.label = ("angel food cake out of the oven, cooling at %g °C"):format(P.cool_to)
+  positions("particles_baked.csv") -- the cake as it leaves the oven
+  s:oven(P.cool_to, 0) -- out of the oven, left upright in its pan
+  cooling = true
+end
+-- The cake comes out at the first frame at or past the bake (frames every 0.1 s from the first step's end). A run
+-- whose frames end before that frame (--set bake=0.02 --set until_t=0.04) takes it out at the bake itself, where it
+-- had stayed in the oven to the end and its line said "still in the oven" (#18, helpers userview4, userfix8);
+-- the runs whose frames reach the bake keep their steps and bits.
+local t0 = s:stats().t
+if t0 + math.max(0, math.ceil((P.bake - 1e-9 - t0) / 0.1)) * 0.1 > P.until_t + 1e-9 then
+  s:at(P.bake, function()
+    out_of_oven()
+    baked, baked_b = area() / A0, bands_T() -- the cake as the bake ends, where no frame falls
+  end)
+end
 s:run { until_t = P.until_t, every = 0.1, png = png,
   on_frame = function(f)
     local label = png.label
-    if not cooling and f.t >= P.bake - 1e-9 then
-      png.label = ("angel food cake out of the oven, cooling at %g °C"):format(P.cool_to)
-      positions("particles_baked.csv") -- the cake as it leaves the oven
-      s:oven(P.cool_to, 0) -- out of the oven, left upright in its pan
-      cooling = true
-    end
+    if not cooling and f.t >= P.bake - 1e-9 then out_of_oven() end
     local rv = area() / A0
     if not cooling and rv > peak then peak, peak_t = rv, f.t end
     local b = bands_T()
