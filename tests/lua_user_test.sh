@@ -134,6 +134,23 @@ ok = ok and not any("nan" in c for r in body for c in r)
 sys.exit(0 if ok else 1)
 PY
     ;;
+browning_picture_shows_crust)
+    # #18 (helpers userview4, userfix9): s:png("browning", path) drew a slice, which averaged the one-particle crust with
+    # the crumb under it: the physical pancake's browning.png drew its top pale while its line gave 0.247. Bar set
+    # before the run: at the top particle's centre on the centre line, the picture's colour read back against the
+    # browning colour map (tests/png_pixel.py, the nearest of 101 colours) is within 0.05 of that particle's browning.
+    run browning_picture.lua
+    expect_rc 0 "the browned block"
+    cat out.txt | cut -c1-100
+    b=$(awk '/^top particle/{print $NF}' out.txt)
+    r=$(python3 "$here/png_pixel.py" hearth-out/browning_picture/browning.png $(awk '/^pixel/{print $2, $3}' out.txt) \
+        "$(sed -n 's/^map //p' out.txt)") || fail "png_pixel.py: $r"
+    echo "$r"
+    t=$(echo "$r" | awk '/^reads/{print $2}')
+    awk -v b="$b" -v t="$t" 'BEGIN { d = t - b; exit !(b != "" && t != "" && d <= 0.05 && d >= -0.05) }' ||
+        fail "the crust reads $t in the picture, its particle $b"
+    echo "crust particle $b, picture reads $t"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"
