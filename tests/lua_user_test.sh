@@ -151,6 +151,23 @@ browning_picture_shows_crust)
         fail "the crust reads $t in the picture, its particle $b"
     echo "crust particle $b, picture reads $t"
     ;;
+particles_3d_title_says_projection)
+    # #18 (helpers userview4, userfix9): a 3D particle picture draws every depth over each other, the nearest on top,
+    # under a title like the 2D one's: muffins.lua --set dim=3 drew each cup's wall twice (its front and its middle).
+    # Bar set before the run: the Title text of a 3D particle picture (s:png's and s:run's frame) ends with "seen along
+    # -z"; a 2D particle picture's and a slice's (2D, 3D) say no "seen along".
+    run projection_title.lua --until 0.002
+    expect_rc 0 "the jelly blocks"
+    d=hearth-out/projection_title
+    python3 "$here/png_title.py" $d/particles_2d.png $d/particles_3d.png $d/slice_2d.png $d/slice_3d.png \
+        $d/frame_0000.png | tee titles.txt
+    for f in particles_3d frame_0000; do
+        grep -q "^$d/$f.png: .*   seen along -z\$" titles.txt || fail "$f.png's title does not say it is seen along -z"
+    done
+    for f in particles_2d slice_2d slice_3d; do
+        grep "^$d/$f.png: " titles.txt | grep -q "seen along" && fail "$f.png's title says seen along"
+    done
+    ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo "ok"
