@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # lua_user_test.sh CASE HEARTH: what a user reads off a scene run as a user runs it (#18, helper userview4): the SPH
 # results lines' real minutes, a missing relative dofile path's folder, h.recipes.surface against h.recipes.height,
-# s:run's CSV cells where nothing was measured; a browning picture's crust read back off its pixels (png_pixel.py) and a 3D
-# particle picture's title (helper userfix9). Shares lua_fixture.sh with lua_test.sh (scene files in tests/lua/).
+# s:run's CSV cells where nothing was measured; a browning picture's crust read back off its pixels (png_pixel.py)
+# and a 3D particle picture's title (helper userfix9). Shares lua_fixture.sh with lua_test.sh (scene files in tests/lua/).
 . "$(dirname "$0")/lua_fixture.sh" "$@"
 
 case "$case_name" in
