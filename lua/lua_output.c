@@ -169,14 +169,15 @@ static void region_pair(lua_State *L, int idx, double r[4]) {
 
 /* s:png(field, path, {kind = "slice"|"particles", width, height, axis, at,
  * range = {lo, hi} | "frame", colormap, grow = {lo, hi}, time_scale, label, region}) -> path, info
- * (info: range, data, ticks, colormap, unit, width, height, title: what it drew with) */
+ * (info: range, data, ticks, colormap, unit, width, height, title: what it drew with; area = {left, top, width,
+ * height} px and view_lo, view_hi (m): where its plot lies and what it shows) */
 static int l_png(lua_State *L) {
     hl_scene *u = hl_checkscene(L, 1);
     hearth_picture_def d = hearth_default_picture_def();
     d.field = luaL_checkstring(L, 2);
     char buf[4096];
     const char *path = hl_out_path(L, "s:png", luaL_checkstring(L, 3), HL_PATH_MKDIRS, buf, sizeof buf);
-    const char *kind = "slice";
+    const char *kind = NULL; /* not given: by the field (below) */
     if (lua_istable(L, 4)) {
         static const char *const keys[] = {"kind",     "width",      "height", "axis",   "at", "range", "colormap",
                                            "grow",     "time_scale", "label",  "region", NULL};
@@ -224,6 +225,12 @@ static int l_png(lua_State *L) {
         else if (t != LUA_TNIL)
             return luaL_error(L, "png: label = a short text before the time in the title (a string), got %s", luaL_typename(L, -1));
     }
+    /* A crust's colour is one particle deep: browning (and the surface's temperature and water it browned at) is
+     * carried by the outermost particles alone. A slice samples the probe's kernel average, 1.5 dx wide, so it mixed
+     * that particle with the crumb under it and drew the crust pale (#18, helper userfix9; userview4's item 6: the
+     * physical pancake's browning.png drew its top pale while its line gave 0.247). Those fields default to the
+     * particles, each in its own colour; every other field to the slice, as before. */
+    if (!kind) kind = !strncmp(d.field, "browning", 8) ? "particles" : "slice";
     if (!strcmp(kind, "particles")) d.kind = HEARTH_PICTURE_PARTICLES;
     else if (strcmp(kind, "slice") != 0) return luaL_error(L, "png: kind = '%s'; valid: 'slice', 'particles'", kind);
     if (d.width < 64 || d.width > 8192) return luaL_error(L, "png: width = %d px; valid range [64, 8192]", d.width);
@@ -233,7 +240,7 @@ static int l_png(lua_State *L) {
     hearth_picture_info info;
     if (hearth_render(u->s, &d, path, &info, &err)) return hl_raise(L, &err);
     lua_pushstring(L, path);
-    lua_createtable(L, 0, 8);
+    lua_createtable(L, 0, 11);
     lua_createtable(L, 2, 0);
     for (int k = 0; k < 2; k++) lua_pushnumber(L, info.range[k]), lua_rawseti(L, -2, k + 1);
     lua_setfield(L, -2, "range");
@@ -253,6 +260,16 @@ static int l_png(lua_State *L) {
     lua_setfield(L, -2, "height");
     lua_pushstring(L, info.title);
     lua_setfield(L, -2, "title");
+    /* where the plot lies in the picture and what it shows: a test or a caller finds a point's pixel */
+    lua_createtable(L, 4, 0);
+    for (int k = 0; k < 4; k++) lua_pushnumber(L, info.area[k]), lua_rawseti(L, -2, k + 1);
+    lua_setfield(L, -2, "area");
+    lua_createtable(L, 2, 0);
+    for (int k = 0; k < 2; k++) lua_pushnumber(L, info.view_lo[k]), lua_rawseti(L, -2, k + 1);
+    lua_setfield(L, -2, "view_lo");
+    lua_createtable(L, 2, 0);
+    for (int k = 0; k < 2; k++) lua_pushnumber(L, info.view_hi[k]), lua_rawseti(L, -2, k + 1);
+    lua_setfield(L, -2, "view_hi");
     return 2;
 }
 

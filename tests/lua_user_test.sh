@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # lua_user_test.sh CASE HEARTH: what a user reads off a scene run as a user runs it (#18, helper userview4): the SPH
 # results lines' real minutes, a missing relative dofile path's folder, h.recipes.surface against h.recipes.height,
-# s:run's CSV cells where nothing was measured. Shares lua_fixture.sh with lua_test.sh (scene files in tests/lua/).
+# s:run's CSV cells where nothing was measured; a browning picture's crust read back off its pixels (png_pixel.py)
+# and a 3D particle picture's title (helper userfix9). Shares lua_fixture.sh with lua_test.sh (scene files in tests/lua/).
 . "$(dirname "$0")/lua_fixture.sh" "$@"
 
 case "$case_name" in
@@ -133,6 +134,40 @@ ok = len(body) == 3 and all(r[o] == "" for r in body) and all(abs(float(r[i]) - 
 ok = ok and not any("nan" in c for r in body for c in r)
 sys.exit(0 if ok else 1)
 PY
+    ;;
+browning_picture_shows_crust)
+    # #18 (helpers userview4, userfix9): s:png("browning", path) drew a slice, which averaged the one-particle crust with
+    # the crumb under it: the physical pancake's browning.png drew its top pale while its line gave 0.247. Bar set
+    # before the run: at the top particle's centre on the centre line, the picture's colour read back against the
+    # browning colour map (tests/png_pixel.py, the nearest of 101 colours) is within 0.05 of that particle's browning.
+    run browning_picture.lua
+    expect_rc 0 "the browned block"
+    cat out.txt | cut -c1-100
+    b=$(awk '/^top particle/{print $NF}' out.txt)
+    r=$(python3 "$here/png_pixel.py" hearth-out/browning_picture/browning.png $(awk '/^pixel/{print $2, $3}' out.txt) \
+        "$(sed -n 's/^map //p' out.txt)") || fail "png_pixel.py: $r"
+    echo "$r"
+    t=$(echo "$r" | awk '/^reads/{print $2}')
+    awk -v b="$b" -v t="$t" 'BEGIN { d = t - b; exit !(b != "" && t != "" && d <= 0.05 && d >= -0.05) }' ||
+        fail "the crust reads $t in the picture, its particle $b"
+    echo "crust particle $b, picture reads $t"
+    ;;
+particles_3d_title_says_projection)
+    # #18 (helpers userview4, userfix9): a 3D particle picture draws every depth over each other, the nearest on top,
+    # under a title like the 2D one's: muffins.lua --set dim=3 drew each cup's wall twice (its front and its middle).
+    # Bar set before the run: the Title text of a 3D particle picture (s:png's and s:run's frame) ends with "seen along
+    # -z"; a 2D particle picture's and a slice's (2D, 3D) say no "seen along".
+    run projection_title.lua --until 0.002
+    expect_rc 0 "the jelly blocks"
+    d=hearth-out/projection_title
+    python3 "$here/png_title.py" $d/particles_2d.png $d/particles_3d.png $d/slice_2d.png $d/slice_3d.png \
+        $d/frame_0000.png | tee titles.txt
+    for f in particles_3d frame_0000; do
+        grep -q "^$d/$f.png: .*   seen along -z\$" titles.txt || fail "$f.png's title does not say it is seen along -z"
+    done
+    for f in particles_2d slice_2d slice_3d; do
+        grep "^$d/$f.png: " titles.txt | grep -q "seen along" && fail "$f.png's title says seen along"
+    done
     ;;
 *) fail "unknown case $case_name" ;;
 esac

@@ -265,6 +265,13 @@ static void title(canvas *c, const frame *f, const hearth_scene *s, const hearth
             snprintf(buf + at, n - at, "t = %.4g min   (%.4g s simulated x %g, step %ld)", real / 60, s->t, time_scale, s->step);
         else snprintf(buf + at, n - at, "t = %.4g s   (%.4g s simulated x %g, step %ld)", real, s->t, time_scale, s->step);
     }
+    /* A 3D particle picture is a projection: every depth drawn over each other, the nearest (largest z) on top. It
+     * says so, or a muffin cup's front wall and its middle read as two walls (#18, helper userfix9; userview4's
+     * item 15: muffins.lua --set dim=3 drew each wall twice under a title like the 2D one's). */
+    if (s->def.dim == 3 && d->kind == HEARTH_PICTURE_PARTICLES) {
+        const size_t used = strlen(buf);
+        snprintf(buf + used, n - used, "   seen along -z");
+    }
     const double fs = f->fs;
     double x = f->x0, size = fs;
     if (x + canvas_text_width(c, buf, fs) > right - fs) {
