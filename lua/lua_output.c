@@ -167,6 +167,13 @@ static void region_pair(lua_State *L, int idx, double r[4]) {
     }
 }
 
+/* t[name] = {v[1], ..., v[n]} on the table at the top of the stack */
+static void set_numbers(lua_State *L, const char *name, const double *v, int n) {
+    lua_createtable(L, n, 0);
+    for (int k = 0; k < n; k++) lua_pushnumber(L, v[k]), lua_rawseti(L, -2, k + 1);
+    lua_setfield(L, -2, name);
+}
+
 /* s:png(field, path, {kind = "slice"|"particles", width, height, axis, at,
  * range = {lo, hi} | "frame", colormap, grow = {lo, hi}, time_scale, label, region}) -> path, info
  * (info: range, data, ticks, colormap, unit, width, height, title: what it drew with; area = {left, top, width,
@@ -241,15 +248,9 @@ static int l_png(lua_State *L) {
     if (hearth_render(u->s, &d, path, &info, &err)) return hl_raise(L, &err);
     lua_pushstring(L, path);
     lua_createtable(L, 0, 11);
-    lua_createtable(L, 2, 0);
-    for (int k = 0; k < 2; k++) lua_pushnumber(L, info.range[k]), lua_rawseti(L, -2, k + 1);
-    lua_setfield(L, -2, "range");
-    lua_createtable(L, 2, 0);
-    for (int k = 0; k < 2; k++) lua_pushnumber(L, info.data[k]), lua_rawseti(L, -2, k + 1);
-    lua_setfield(L, -2, "data");
-    lua_createtable(L, info.nticks, 0);
-    for (int k = 0; k < info.nticks; k++) lua_pushnumber(L, info.ticks[k]), lua_rawseti(L, -2, k + 1);
-    lua_setfield(L, -2, "ticks");
+    set_numbers(L, "range", info.range, 2);
+    set_numbers(L, "data", info.data, 2);
+    set_numbers(L, "ticks", info.ticks, info.nticks);
     lua_pushstring(L, info.colormap);
     lua_setfield(L, -2, "colormap");
     lua_pushstring(L, info.unit);
@@ -261,15 +262,9 @@ static int l_png(lua_State *L) {
     lua_pushstring(L, info.title);
     lua_setfield(L, -2, "title");
     /* where the plot lies in the picture and what it shows: a test or a caller finds a point's pixel */
-    lua_createtable(L, 4, 0);
-    for (int k = 0; k < 4; k++) lua_pushnumber(L, info.area[k]), lua_rawseti(L, -2, k + 1);
-    lua_setfield(L, -2, "area");
-    lua_createtable(L, 2, 0);
-    for (int k = 0; k < 2; k++) lua_pushnumber(L, info.view_lo[k]), lua_rawseti(L, -2, k + 1);
-    lua_setfield(L, -2, "view_lo");
-    lua_createtable(L, 2, 0);
-    for (int k = 0; k < 2; k++) lua_pushnumber(L, info.view_hi[k]), lua_rawseti(L, -2, k + 1);
-    lua_setfield(L, -2, "view_hi");
+    set_numbers(L, "area", info.area, 4);
+    set_numbers(L, "view_lo", info.view_lo, 2);
+    set_numbers(L, "view_hi", info.view_hi, 2);
     return 2;
 }
 

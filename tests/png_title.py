@@ -1,21 +1,16 @@
 #!/usr/bin/env python3
 """png_title.py FILE...: print each PNG's "Title" text (hearth writes a picture's title as an uncompressed iTXt
 chunk, core/sim/io/io_png.c), one line a file: "FILE: TITLE", or "FILE: (no title)". Shared by the test scripts."""
-import struct
+import os
 import sys
 import zlib
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import png_read  # noqa: E402
+
 
 def title(path):
-    b = open(path, "rb").read()
-    if b[:8] != b"\x89PNG\r\n\x1a\n":
-        sys.exit(f"{path}: not a PNG signature")
-    pos = 8
-    while pos + 8 <= len(b):
-        n, kind = struct.unpack(">I4s", b[pos:pos + 8])
-        data = b[pos + 8:pos + 8 + n]
-        if zlib.crc32(kind + data) != struct.unpack(">I", b[pos + 8 + n:pos + 12 + n])[0]:
-            sys.exit(f"{path}: bad CRC in {kind!r}")
+    for kind, data in png_read.chunks(path):
         if kind == b"iTXt":
             key, rest = data.split(b"\0", 1)
             flag, _method = rest[0], rest[1]
@@ -27,7 +22,6 @@ def title(path):
             key, text = data.split(b"\0", 1)
             if key == b"Title":
                 return text.decode("latin-1")
-        pos += 12 + n
     return None
 
 
