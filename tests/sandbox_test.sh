@@ -170,15 +170,18 @@ sandbox_plugin_path)
     expect_rc 1 "a plugin in the output folder"
     has_msg "in the output folder" "plugin in the output folder: the reason"
     has_msg "--trust" "plugin in the output folder: --trust named"
-    # a plugin next to the scene loads only with --trust
+    # a plugin next to the scene loads only with --trust. The file holds the material its name says (material.h
+    # rule 2, enforced since #18, helper userview5): a fixture plugin that is not on the search path, where this
+    # case copied elastic under the name hearth_besidescene.so, which the loader now refuses as misnamed.
     mkdir -p scenedir
     cp "$scenes/escape.lua" scenedir/
-    cp "$real" scenedir/hearth_besidescene.so
-    "$hearth" run scenedir/escape.lua --quiet --set call=plugin_name --set target=besidescene >out.txt 2>err.txt
+    [ -f "${HEARTH_TEST_PLUGIN_DIR:-}/hearth_asym.so" ] || fail "no asym fixture in HEARTH_TEST_PLUGIN_DIR"
+    cp "$HEARTH_TEST_PLUGIN_DIR/hearth_asym.so" scenedir/hearth_asym.so
+    "$hearth" run scenedir/escape.lua --quiet --set call=plugin_name --set target=asym >out.txt 2>err.txt
     rc=$?
     expect_rc 1 "a plugin beside the scene without --trust"
     has_msg "plugin not found" "beside the scene: not on the path"
-    "$hearth" run scenedir/escape.lua --quiet --trust --set call=plugin_name --set target=besidescene >out.txt 2>err.txt
+    "$hearth" run scenedir/escape.lua --quiet --trust --set call=plugin_name --set target=asym >out.txt 2>err.txt
     rc=$?
     expect_rc 0 "a plugin beside the scene with --trust"
     # names on the search path still work without --trust
