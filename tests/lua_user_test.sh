@@ -2,7 +2,8 @@
 # lua_user_test.sh CASE HEARTH: what a user reads off a scene run as a user runs it (#18, helper userview4): the SPH
 # results lines' real minutes, a missing relative dofile path's folder, h.recipes.surface against h.recipes.height,
 # s:run's CSV cells where nothing was measured; a browning picture's crust read back off its pixels (png_pixel.py)
-# and a 3D particle picture's title (helper userfix9). Shares lua_fixture.sh with lua_test.sh (scene files in tests/lua/).
+# and a 3D particle picture's title (helper userfix9); h.load's relative path, read from the output folder
+# (helper userview5). Shares lua_fixture.sh with lua_test.sh (scene files in tests/lua/).
 . "$(dirname "$0")/lua_fixture.sh" "$@"
 
 case "$case_name" in
@@ -53,6 +54,25 @@ print(f"t = {r['t_s']} s: left {a * 1e3:.2f} mm, right {b * 1e3:.2f} mm (need bo
 sys.exit(0 if a > 0 and b > 0 and abs(a - b) <= 0.0025 else 1)
 PY
     done
+    ;;
+checkpoint_relative_path_says_folder)
+    # #18 (helper userview5): restarting another run's checkpoint, h.load("o/ck.bin") stopped with
+    # "o3/o/ck.bin: cannot open checkpoint (No such file or directory)": h.load reads a relative path from the
+    # output folder, where dofile reads one from the current folder, and nothing said so. Bar set before the
+    # run: a missing relative path fails (exit 1) naming the path and that it is read from the output folder; a
+    # missing absolute one fails without that remark.
+    printf 'local h = require "hearth"\nh.load("other/ck.bin")\n' >rel.lua
+    "$hearth" run rel.lua --quiet --out o >out.txt 2>err.txt
+    rc=$?
+    expect_rc 1 "a missing relative checkpoint"
+    has_msg "o/other/ck.bin: cannot open checkpoint" "the path"
+    has_msg "(h.load reads a relative path from the output folder, o, where s:save writes" "the folder searched"
+    printf 'local h = require "hearth"\nh.load("%s/no_such.bin")\n' "$PWD" >abs.lua
+    "$hearth" run abs.lua --quiet --out o >out.txt 2>err.txt
+    rc=$?
+    expect_rc 1 "a missing absolute checkpoint"
+    has_msg "$PWD/no_such.bin: cannot open checkpoint" "the absolute path"
+    grep -q "relative path" err.txt && fail "an absolute path said to be relative: $(cat err.txt)"
     ;;
 dofile_relative_path_says_folder)
     # #18 (helper userview4): scripts/validation/loaf_whatif.lua (and crack_heat, crack_dt, crack_tray, muffin_tear,
