@@ -74,6 +74,28 @@ checkpoint_relative_path_says_folder)
     has_msg "$PWD/no_such.bin: cannot open checkpoint" "the absolute path"
     grep -q "relative path" err.txt && fail "an absolute path said to be relative: $(cat err.txt)"
     ;;
+checkpoint_csv_units_after_load)
+    # #18 (helper userview5): a 2D scene restored by h.load wrote s:run's CSV with kinetic_J, the 3D column, where
+    # the same scene before the save wrote kinetic_J_per_m (h._adopt left the scene's dim unset). Bar set before
+    # the run: the loaded scene's header says kinetic_J_per_m in 2D and kinetic_J in 3D, as h.scene's does.
+    for d in 2 3; do
+        z0='' z1='' z2=''
+        [ $d = 3 ] && z0=', 0' z1=', 1' z2=', 0.4'
+        cat >save$d.lua <<EOF
+local h = require "hearth"
+local s = h.scene { dim = $d, dx = 0.05, box = { { 0, 0$z0 }, { 1, 1$z1 } } }
+s:add { shape = h.box({ 0.4, 0.4$z2 }, { 0.6, 0.6$z1 }), material = h.material("elastic", { density = 1000 }) }
+s:save("ck$d.bin")
+local r = h.load("ck$d.bin")
+r:run { until_t = 0.01, csv = "loaded$d.csv" }
+EOF
+        "$hearth" run save$d.lua --quiet --out o >out.txt 2>err.txt
+        rc=$?
+        expect_rc 0 "a ${d}D scene saved, loaded and run"
+    done
+    head -1 o/loaded2.csv | grep -q ",kinetic_J_per_m," || fail "2D after h.load: $(head -1 o/loaded2.csv)"
+    head -1 o/loaded3.csv | grep -q ",kinetic_J," || fail "3D after h.load: $(head -1 o/loaded3.csv)"
+    ;;
 dofile_relative_path_says_folder)
     # #18 (helper userview4): scripts/validation/loaf_whatif.lua (and crack_heat, crack_dt, crack_tray, muffin_tear,
     # bread3d) run their scene by a path from the source root; started elsewhere they stopped with "cannot open
