@@ -769,6 +769,8 @@ static int l_load(lua_State *L) {
     u->s = s;
     luaL_setmetatable(L, HL_SCENE);
     lua_newtable(L);
+    lua_pushboolean(L, 1); /* s:run continues a VTU series the saved run left (run.lua's continue_pvd) */
+    lua_setfield(L, -2, "restored");
     lua_setiuservalue(L, -2, 1);
     return 1;
 }

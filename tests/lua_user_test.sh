@@ -96,6 +96,40 @@ EOF
     head -1 o/loaded2.csv | grep -q ",kinetic_J_per_m," || fail "2D after h.load: $(head -1 o/loaded2.csv)"
     head -1 o/loaded3.csv | grep -q ",kinetic_J," || fail "3D after h.load: $(head -1 o/loaded3.csv)"
     ;;
+checkpoint_vtu_series_continues)
+    # #18 (helper userview5): a scene resumed by h.load with the same s:run{vtu = ...} numbered its frames from 0
+    # again, over the first leg's files, and its .pvd listed the second leg alone. Bar set before the run: after
+    # a leg to 0.5 s (frames every 0.25 s) and a restored leg to 1 s, the .pvd lists b_0000..b_0004 at 0, 0.25,
+    # 0.5, 0.75 and 1 s, and the first leg's b_0000.vtu and b_0001.vtu are untouched; a new scene (not restored)
+    # into the same folder starts the series afresh, as before.
+    cat >legs.lua <<EOF
+local h = require "hearth"
+local P = h.params { leg = h.number { 1, min = 1, max = 2, integer = true, what = "which leg" } }
+local s
+if P.leg == 2 then s = h.load("ck.bin") else
+  s = h.scene { dim = 2, dx = 0.05, box = { { 0, 0 }, { 1, 1 } } }
+  s:add { shape = h.box({ 0.4, 0.4 }, { 0.6, 0.6 }), material = h.material("elastic", { density = 1000 }) }
+end
+s:run { until_t = P.leg * 0.5, every = 0.25, vtu = { path = "vtu/b_%04d.vtu" } }
+if P.leg == 1 then s:save("ck.bin") end
+EOF
+    "$hearth" run legs.lua --quiet --out o --set leg=1 >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "the first leg"
+    cp o/vtu/b_0000.vtu first0.vtu && cp o/vtu/b_0001.vtu first1.vtu || fail "the first leg's frames: $(ls o/vtu)"
+    "$hearth" run legs.lua --quiet --out o --set leg=2 >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "the restored leg"
+    got=$(sed -n 's/.*timestep="\([^"]*\)".*file="\([^"]*\)".*/\1 \2/p' o/vtu/b.pvd | tr '\n' ';')
+    want="0 b_0000.vtu;0.25 b_0001.vtu;0.5 b_0002.vtu;0.75 b_0003.vtu;1 b_0004.vtu;"
+    [ "$got" = "$want" ] || fail "the .pvd after the restored leg: $got, expected $want"
+    cmp -s first0.vtu o/vtu/b_0000.vtu && cmp -s first1.vtu o/vtu/b_0001.vtu ||
+        fail "the restored leg wrote over the first leg's frames"
+    "$hearth" run legs.lua --quiet --out o --set leg=1 >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "a new first leg"
+    [ "$(grep -c '<DataSet' o/vtu/b.pvd)" -eq 3 ] || fail "a new scene's .pvd: $(cat o/vtu/b.pvd)"
+    ;;
 dofile_relative_path_says_folder)
     # #18 (helper userview4): scripts/validation/loaf_whatif.lua (and crack_heat, crack_dt, crack_tray, muffin_tear,
     # bread3d) run their scene by a path from the source root; started elsewhere they stopped with "cannot open
