@@ -130,6 +130,17 @@ EOF
     expect_rc 0 "a new first leg"
     [ "$(grep -c '<DataSet' o/vtu/b.pvd)" -eq 3 ] || fail "a new scene's .pvd: $(cat o/vtu/b.pvd)"
     ;;
+drop_block_energy_line_unit)
+    # #18 (helper userview5): drop_block.lua's last line said "kinetic energy 77.4 J" in 2D, where its height.csv
+    # says kinetic_J_per_m (a plane scene's mass is per metre of depth). Bar set before the run: the 2D line says
+    # J per metre of depth, the 3D line J.
+    run ../../scripts/scenes/drop_block.lua --until 0.002
+    expect_rc 0 "drop_block.lua in 2D"
+    grep -q "^after the drop: t = .* kinetic energy .* J per metre of depth$" out.txt || fail "2D: $(cat out.txt)"
+    run ../../scripts/scenes/drop_block.lua --until 0.002 --set dim=3
+    expect_rc 0 "drop_block.lua in 3D"
+    grep -q "^after the drop: t = .* kinetic energy [^ ]* J$" out.txt || fail "3D: $(cat out.txt)"
+    ;;
 dofile_relative_path_says_folder)
     # #18 (helper userview4): scripts/validation/loaf_whatif.lua (and crack_heat, crack_dt, crack_tray, muffin_tear,
     # bread3d) run their scene by a path from the source root; started elsewhere they stopped with "cannot open
