@@ -141,6 +141,20 @@ drop_block_energy_line_unit)
     expect_rc 0 "drop_block.lua in 3D"
     grep -q "^after the drop: t = .* kinetic energy [^ ]* J$" out.txt || fail "3D: $(cat out.txt)"
     ;;
+png_source_names_run)
+    # #18 (helper userview5): a PNG frame said its time, step, field and unit, but not which scene and settings drew
+    # it (run.json beside it does; a frame copied into a paper's folder lost that). Bar set before the run: a
+    # `hearth run` frame carries a "Source" text with the command line (the scene and each --set) and hearth's
+    # version.
+    run ../../scripts/scenes/drop_block.lua --until 0.002 --set stiffness=2e4 --out o
+    expect_rc 0 "drop_block.lua"
+    src=$(python3 "$here/png_title.py" --key Source o/frames/speed_0000.png) || fail "png_title.py: $src"
+    echo "$src"
+    case "$src" in
+    *": hearth run "*"drop_block.lua --quiet --until 0.002 --set stiffness=2e4 --out o (hearth "*", revision "*) ;;
+    *) fail "the frame's Source text: $src" ;;
+    esac
+    ;;
 dofile_relative_path_says_folder)
     # #18 (helper userview4): scripts/validation/loaf_whatif.lua (and crack_heat, crack_dt, crack_tray, muffin_tear,
     # bread3d) run their scene by a path from the source root; started elsewhere they stopped with "cannot open
