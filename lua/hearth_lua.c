@@ -286,6 +286,16 @@ static void on_stop_notice(int sig) {
                                    "(a long step); SIGTERM again quits at once\n";
     if (g_signal == SIGTERM) (void)!write(STDERR_FILENO, msg_term, sizeof msg_term - 1);
     else (void)!write(STDERR_FILENO, msg_int, sizeof msg_int - 1);
+    /* A plugin callback that never returns looks like a long step: when the thread the alarm lands on is inside
+     * one (the main thread, which also steps), name it, as a crash in one is named (#18, helper userview5). Reads
+     * only, and strlen and write are async-signal-safe. */
+    hearth_plugin_call_info c;
+    if (hearth_plugin_call_current(&c)) {
+        const char *part[] = {"hearth: the call is inside plugin '", c.material, "' (", c.file, "), callback ",
+                              c.callback, "; a callback that never returns keeps it there\n"};
+        for (size_t i = 0; i < sizeof part / sizeof *part; i++)
+            (void)!write(STDERR_FILENO, part[i], strlen(part[i]));
+    }
 }
 
 static void on_signal(int sig) {

@@ -390,6 +390,26 @@ static int l_write_atomic(lua_State *L) {
     return 1;
 }
 
+/* core.read_text(path) -> the text of a file an earlier run left in the output folder (read as h.load reads:
+ * a relative path from the output folder, under mpirun rank 0's), or nil when there is none or it is over 64 MB.
+ * s:run reads a restored scene's .pvd with it, to continue the series (run.lua). */
+static int l_read_text(lua_State *L) {
+    char buf[4096];
+    const char *path = hl_in_path(L, luaL_checkstring(L, 1), buf, sizeof buf);
+    FILE *f = fopen(path, "rb");
+    if (!f) return 0;
+    luaL_Buffer b;
+    luaL_buffinit(L, &b);
+    size_t n, total = 0, cap = (size_t)64 << 20;
+    char chunk[8192];
+    while ((n = fread(chunk, 1, sizeof chunk, f)) > 0 && (total += n) <= cap) luaL_addlstring(&b, chunk, n);
+    int bad = ferror(f) || total > cap;
+    fclose(f);
+    luaL_pushresult(&b);
+    if (bad) lua_pushnil(L);
+    return 1;
+}
+
 /* Encode the PNG frames in_pattern % first .. first+count-1 (a printf pattern
  * with one %d or %0Nd) into the movie out_path with the ffmpeg program.
  * ffmpeg runs from an argv, never through a shell, since both paths are the
@@ -479,6 +499,8 @@ void hl_open_output(lua_State *L) {
     lua_pop(L, 2);
     lua_pushcfunction(L, l_write_atomic);
     lua_setfield(L, -2, "write_atomic");
+    lua_pushcfunction(L, l_read_text);
+    lua_setfield(L, -2, "read_text");
     lua_pushcfunction(L, l_colormap);
     lua_setfield(L, -2, "colormap");
     lua_pushcfunction(L, l_movie);

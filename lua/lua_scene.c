@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "hearth_lua.h"
 
@@ -748,15 +749,28 @@ static int l_settings(lua_State *L) {
 
 static int l_load(lua_State *L) {
     char buf[4096];
-    const char *path = hl_in_path(L, luaL_checkstring(L, 1), buf, sizeof buf);
+    const char *given = luaL_checkstring(L, 1);
+    const char *path = hl_in_path(L, given, buf, sizeof buf);
     hearth_error err;
     hearth_scene *s = hearth_scene_load(path, &err);
+    if (!s && given[0] != '/' && hl_opts(L)->out_dir && access(path, F_OK) != 0) {
+        /* dofile reads a relative path from the current folder, h.load from the output folder (where s:save
+         * wrote it): a missing one says which, as a user restarting another run's checkpoint meets it (#18,
+         * helper userview5) */
+        size_t used = strlen(err.msg);
+        snprintf(err.msg + used, sizeof err.msg - used,
+                 " (h.load reads a relative path from the output folder, %s, where s:save writes; give the path "
+                 "from there, or an absolute one)",
+                 hl_opts(L)->out_dir);
+    }
     if (!s) return hl_raise(L, &err);
     hearth_scene_keep_slabs(s, 1); /* as for h.scene */
     hl_scene *u = lua_newuserdatauv(L, sizeof *u, 1);
     u->s = s;
     luaL_setmetatable(L, HL_SCENE);
     lua_newtable(L);
+    lua_pushboolean(L, 1); /* s:run continues a VTU series the saved run left (run.lua's continue_pvd) */
+    lua_setfield(L, -2, "restored");
     lua_setiuservalue(L, -2, 1);
     return 1;
 }

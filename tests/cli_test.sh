@@ -494,6 +494,19 @@ cli_check_segv_stress)
     echo "$out" | grep -q "in its stress callback during check 'rest'" || fail "callback not named: $out"
     echo "$out" | grep -q "FAILED$" || fail "no FAILED verdict: $out"
     ;;
+cli_plugins_list_survives_crash)
+    # #18 (helper userview5): `hearth plugins` with a plugin on the path whose init aborts ended there with exit 4
+    # and listed nothing after it. Bar set before the run: the listing exits 0, names abort_init as not loadable
+    # (its crash named on stderr), and still lists elastic, found after it on the path.
+    d="$tmp/first" && mkdir -p "$d" && cp "$HEARTH_TEST_PLUGIN_DIR/hearth_abort_init.so" "$d/" || fail "fixture"
+    HEARTH_PLUGIN_PATH="$d:$HEARTH_PLUGIN_PATH" "$hearth" plugins >"$tmp/out.txt" 2>"$tmp/err.txt"
+    rc=$?
+    [ $rc -eq 0 ] || fail "exit $rc: $(cat "$tmp/err.txt")"
+    grep -q "^abort_init  (.*hearth_abort_init.so)$" "$tmp/out.txt" || fail "unlisted: $(cat "$tmp/out.txt")"
+    grep -q "cannot load: it crashed or exited while loading" "$tmp/out.txt" || fail "no reason: $(cat "$tmp/out.txt")"
+    grep -q "plugin 'abort_init' .* crashed with SIGABRT" "$tmp/err.txt" || fail "crash unnamed: $(cat "$tmp/err.txt")"
+    grep -q "^elastic  (" "$tmp/out.txt" || fail "elastic not listed after the crash: $(cat "$tmp/out.txt")"
+    ;;
 cli_check_abort_init)
     # abort() in init happens in the loader's wave-speed corners, before the battery
     out=$("$hearth" plugin check "$HEARTH_TEST_PLUGIN_DIR/hearth_abort_init.so" 2>&1) && fail "abort passed: $out"

@@ -3,7 +3,8 @@
 # results lines' real minutes, a missing relative dofile path's folder, h.recipes.surface against h.recipes.height,
 # s:run's CSV cells where nothing was measured; a browning picture's crust read back off its pixels (png_pixel.py)
 # and a 3D particle picture's title (helper userfix9); a 3D browning picture's cut and a 3D slice's plane (helper
-# userfix11). Shares lua_fixture.sh with lua_test.sh (scene files in tests/lua/).
+# userfix11); h.load's relative path, read from the output folder (helper userview5). Shares lua_fixture.sh with
+# lua_test.sh (scene files in tests/lua/).
 . "$(dirname "$0")/lua_fixture.sh" "$@"
 
 case "$case_name" in
@@ -54,6 +55,106 @@ print(f"t = {r['t_s']} s: left {a * 1e3:.2f} mm, right {b * 1e3:.2f} mm (need bo
 sys.exit(0 if a > 0 and b > 0 and abs(a - b) <= 0.0025 else 1)
 PY
     done
+    ;;
+checkpoint_relative_path_says_folder)
+    # #18 (helper userview5): restarting another run's checkpoint, h.load("o/ck.bin") stopped with
+    # "o3/o/ck.bin: cannot open checkpoint (No such file or directory)": h.load reads a relative path from the
+    # output folder, where dofile reads one from the current folder, and nothing said so. Bar set before the
+    # run: a missing relative path fails (exit 1) naming the path and that it is read from the output folder; a
+    # missing absolute one fails without that remark.
+    printf 'local h = require "hearth"\nh.load("other/ck.bin")\n' >rel.lua
+    "$hearth" run rel.lua --quiet --out o >out.txt 2>err.txt
+    rc=$?
+    expect_rc 1 "a missing relative checkpoint"
+    has_msg "o/other/ck.bin: cannot open checkpoint" "the path"
+    has_msg "(h.load reads a relative path from the output folder, o, where s:save writes" "the folder searched"
+    printf 'local h = require "hearth"\nh.load("%s/no_such.bin")\n' "$PWD" >abs.lua
+    "$hearth" run abs.lua --quiet --out o >out.txt 2>err.txt
+    rc=$?
+    expect_rc 1 "a missing absolute checkpoint"
+    has_msg "$PWD/no_such.bin: cannot open checkpoint" "the absolute path"
+    grep -q "relative path" err.txt && fail "an absolute path said to be relative: $(cat err.txt)"
+    ;;
+checkpoint_csv_units_after_load)
+    # #18 (helper userview5): a 2D scene restored by h.load wrote s:run's CSV with kinetic_J, the 3D column, where
+    # the same scene before the save wrote kinetic_J_per_m (h._adopt left the scene's dim unset). Bar set before
+    # the run: the loaded scene's header says kinetic_J_per_m in 2D and kinetic_J in 3D, as h.scene's does.
+    for d in 2 3; do
+        z0='' z1='' z2=''
+        [ $d = 3 ] && z0=', 0' z1=', 1' z2=', 0.4'
+        cat >save$d.lua <<EOF
+local h = require "hearth"
+local s = h.scene { dim = $d, dx = 0.05, box = { { 0, 0$z0 }, { 1, 1$z1 } } }
+s:add { shape = h.box({ 0.4, 0.4$z2 }, { 0.6, 0.6$z1 }), material = h.material("elastic", { density = 1000 }) }
+s:save("ck$d.bin")
+local r = h.load("ck$d.bin")
+r:run { until_t = 0.01, csv = "loaded$d.csv" }
+EOF
+        "$hearth" run save$d.lua --quiet --out o >out.txt 2>err.txt
+        rc=$?
+        expect_rc 0 "a ${d}D scene saved, loaded and run"
+    done
+    head -1 o/loaded2.csv | grep -q ",kinetic_J_per_m," || fail "2D after h.load: $(head -1 o/loaded2.csv)"
+    head -1 o/loaded3.csv | grep -q ",kinetic_J," || fail "3D after h.load: $(head -1 o/loaded3.csv)"
+    ;;
+checkpoint_vtu_series_continues)
+    # #18 (helper userview5): a scene resumed by h.load with the same s:run{vtu = ...} numbered its frames from 0
+    # again, over the first leg's files, and its .pvd listed the second leg alone. Bar set before the run: after
+    # a leg to 0.5 s (frames every 0.25 s) and a restored leg to 1 s, the .pvd lists b_0000..b_0004 at 0, 0.25,
+    # 0.5, 0.75 and 1 s, and the first leg's b_0000.vtu and b_0001.vtu are untouched; a new scene (not restored)
+    # into the same folder starts the series afresh, as before.
+    cat >legs.lua <<EOF
+local h = require "hearth"
+local P = h.params { leg = h.number { 1, min = 1, max = 2, integer = true, what = "which leg" } }
+local s
+if P.leg == 2 then s = h.load("ck.bin") else
+  s = h.scene { dim = 2, dx = 0.05, box = { { 0, 0 }, { 1, 1 } } }
+  s:add { shape = h.box({ 0.4, 0.4 }, { 0.6, 0.6 }), material = h.material("elastic", { density = 1000 }) }
+end
+s:run { until_t = P.leg * 0.5, every = 0.25, vtu = { path = "vtu/b_%04d.vtu" } }
+if P.leg == 1 then s:save("ck.bin") end
+EOF
+    "$hearth" run legs.lua --quiet --out o --set leg=1 >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "the first leg"
+    cp o/vtu/b_0000.vtu first0.vtu && cp o/vtu/b_0001.vtu first1.vtu || fail "the first leg's frames: $(ls o/vtu)"
+    "$hearth" run legs.lua --quiet --out o --set leg=2 >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "the restored leg"
+    got=$(sed -n 's/.*timestep="\([^"]*\)".*file="\([^"]*\)".*/\1 \2/p' o/vtu/b.pvd | tr '\n' ';')
+    want="0 b_0000.vtu;0.25 b_0001.vtu;0.5 b_0002.vtu;0.75 b_0003.vtu;1 b_0004.vtu;"
+    [ "$got" = "$want" ] || fail "the .pvd after the restored leg: $got, expected $want"
+    cmp -s first0.vtu o/vtu/b_0000.vtu && cmp -s first1.vtu o/vtu/b_0001.vtu ||
+        fail "the restored leg wrote over the first leg's frames"
+    "$hearth" run legs.lua --quiet --out o --set leg=1 >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "a new first leg"
+    [ "$(grep -c '<DataSet' o/vtu/b.pvd)" -eq 3 ] || fail "a new scene's .pvd: $(cat o/vtu/b.pvd)"
+    ;;
+drop_block_energy_line_unit)
+    # #18 (helper userview5): drop_block.lua's last line said "kinetic energy 77.4 J" in 2D, where its height.csv
+    # says kinetic_J_per_m (a plane scene's mass is per metre of depth). Bar set before the run: the 2D line says
+    # J per metre of depth, the 3D line J.
+    run ../../scripts/scenes/drop_block.lua --until 0.002
+    expect_rc 0 "drop_block.lua in 2D"
+    grep -q "^after the drop: t = .* kinetic energy .* J per metre of depth$" out.txt || fail "2D: $(cat out.txt)"
+    run ../../scripts/scenes/drop_block.lua --until 0.002 --set dim=3
+    expect_rc 0 "drop_block.lua in 3D"
+    grep -q "^after the drop: t = .* kinetic energy [^ ]* J$" out.txt || fail "3D: $(cat out.txt)"
+    ;;
+png_source_names_run)
+    # #18 (helper userview5): a PNG frame said its time, step, field and unit, but not which scene and settings drew
+    # it (run.json beside it does; a frame copied into a paper's folder lost that). Bar set before the run: a
+    # `hearth run` frame carries a "Source" text with the command line (the scene and each --set) and hearth's
+    # version.
+    run ../../scripts/scenes/drop_block.lua --until 0.002 --set stiffness=2e4 --out o
+    expect_rc 0 "drop_block.lua"
+    src=$(python3 "$here/png_title.py" --key Source o/frames/speed_0000.png) || fail "png_title.py: $src"
+    echo "$src"
+    case "$src" in
+    *": hearth run "*"drop_block.lua --quiet --until 0.002 --set stiffness=2e4 --out o (hearth "*", revision "*) ;;
+    *) fail "the frame's Source text: $src" ;;
+    esac
     ;;
 dofile_relative_path_says_folder)
     # #18 (helper userview4): scripts/validation/loaf_whatif.lua (and crack_heat, crack_dt, crack_tray, muffin_tear,

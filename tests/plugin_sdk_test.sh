@@ -48,5 +48,16 @@ plugin_sdk_out_of_tree)
         out=$("$hearth" plugin check "$tmp/hearth_$p.so" 2>&1) || fail "plugin check $p (exit $?): $out"
     done
     ;;
+plugin_sdk_uninstalled_pc)
+    # an author who builds against a build folder without installing it (README, "Writing a material
+    # plugin"): pkg-config prefers the build's meson-uninstalled/hearth-uninstalled.pc, whose Cflags must
+    # reach <hearth/material.h>. Bar, set before the first run (#18, helper userview5): elastic.c builds
+    # with them alone and passes `hearth plugin check`. Before the fix the .pc gave only core/sim's folders.
+    cflags_u=$(PKG_CONFIG_PATH="$build/meson-uninstalled" pkg-config --cflags hearth) ||
+        fail "pkg-config --cflags hearth with PKG_CONFIG_PATH=$build/meson-uninstalled"
+    "$cc" $warn -O2 -fPIC -shared $cflags_u "$src/plugins/elastic.c" -o "$tmp/hearth_elastic.so" -lm \
+        2>"$tmp/err.txt" || fail "elastic.c with the uninstalled .pc's Cflags ($cflags_u): $(cat "$tmp/err.txt")"
+    out=$("$hearth" plugin check "$tmp/hearth_elastic.so" 2>&1) || fail "plugin check (exit $?): $out"
+    ;;
 *) fail "unknown case $case_name" ;;
 esac

@@ -170,15 +170,18 @@ sandbox_plugin_path)
     expect_rc 1 "a plugin in the output folder"
     has_msg "in the output folder" "plugin in the output folder: the reason"
     has_msg "--trust" "plugin in the output folder: --trust named"
-    # a plugin next to the scene loads only with --trust
+    # a plugin next to the scene loads only with --trust. The file holds the material its name says (material.h
+    # rule 2, enforced since #18, helper userview5): a fixture plugin that is not on the search path, where this
+    # case copied elastic under the name hearth_besidescene.so, which the loader now refuses as misnamed.
     mkdir -p scenedir
     cp "$scenes/escape.lua" scenedir/
-    cp "$real" scenedir/hearth_besidescene.so
-    "$hearth" run scenedir/escape.lua --quiet --set call=plugin_name --set target=besidescene >out.txt 2>err.txt
+    [ -f "${HEARTH_TEST_PLUGIN_DIR:-}/hearth_asym.so" ] || fail "no asym fixture in HEARTH_TEST_PLUGIN_DIR"
+    cp "$HEARTH_TEST_PLUGIN_DIR/hearth_asym.so" scenedir/hearth_asym.so
+    "$hearth" run scenedir/escape.lua --quiet --set call=plugin_name --set target=asym >out.txt 2>err.txt
     rc=$?
     expect_rc 1 "a plugin beside the scene without --trust"
     has_msg "plugin not found" "beside the scene: not on the path"
-    "$hearth" run scenedir/escape.lua --quiet --trust --set call=plugin_name --set target=besidescene >out.txt 2>err.txt
+    "$hearth" run scenedir/escape.lua --quiet --trust --set call=plugin_name --set target=asym >out.txt 2>err.txt
     rc=$?
     expect_rc 0 "a plugin beside the scene with --trust"
     # names on the search path still work without --trust
@@ -327,6 +330,38 @@ sandbox_sigterm_long_step)
     bg_pid=
     echo "long_step: the notice after the first SIGTERM; exit $rc $(((t1 - t0) / 1000000)) ms after the second"
     expect_rc 143 "long_step after the second SIGTERM"
+    ;;
+sandbox_sigint_plugin_hang)
+    # #18 (helper userview5): a plugin whose stress never returns hung the run, and Ctrl-C's notice said only "a
+    # long step". Bar set before the run: within 4 s of SIGINT stderr names the plugin (hang_stress, its file) and
+    # the callback (stress), and the second SIGINT quits with 130. The fixture spins a core until then (~3 s).
+    [ -f "${HEARTH_TEST_PLUGIN_DIR:-}/hearth_hang_stress.so" ] || fail "no hang_stress fixture"
+    cat >hang.lua <<'EOF'
+local h = require "hearth"
+local s = h.scene { dim = 2, dx = 0.1, box = { { 0, 0 }, { 1, 1 } } }
+s:add { shape = h.box({ 0.4, 0.4 }, { 0.6, 0.6 }), material = h.material("hang_stress", {}) }
+print("stepping")
+s:step(1)
+EOF
+    rm -f out.txt err.txt
+    HEARTH_PLUGIN_PATH="$HEARTH_TEST_PLUGIN_DIR:$HEARTH_PLUGIN_PATH" "$hearth" run hang.lua --quiet --threads 1 \
+        >out.txt 2>err.txt &
+    bg_pid=$!
+    for _ in $(seq 400); do grep -q stepping out.txt && break; sleep 0.05; done
+    grep -q stepping out.txt || fail "hang: the scene did not reach its step: $(cat err.txt)"
+    sleep 0.3
+    kill -INT "$bg_pid"
+    for _ in $(seq 80); do grep -q "callback" err.txt && break; sleep 0.05; done
+    kill -0 "$bg_pid" 2>/dev/null || fail "hang: the run ended: $(cat err.txt)"
+    has err.txt "inside plugin 'hang_stress' ($HEARTH_TEST_PLUGIN_DIR/hearth_hang_stress.so), callback stress" \
+        "hang: the plugin and callback named"
+    kill -INT "$bg_pid"
+    for _ in $(seq 40); do kill -0 "$bg_pid" 2>/dev/null || break; sleep 0.025; done
+    kill -0 "$bg_pid" 2>/dev/null && fail "hang: still running 1 s after the second SIGINT"
+    wait "$bg_pid"
+    rc=$?
+    bg_pid=
+    expect_rc 130 "hang after the second SIGINT"
     ;;
 *) fail "unknown case $case_name" ;;
 esac

@@ -554,6 +554,29 @@ static hearth_status plugin_elf_check(const char *shown, const char *real, heart
     return rc;
 }
 
+/* "hearth_foo.so" -> length of "foo", or 0 when the file is not a plugin name. */
+static size_t plugin_stem(const char *f) {
+    size_t n = strlen(f);
+    if (n <= 10 || strncmp(f, "hearth_", 7) != 0 || strcmp(f + n - 3, ".so") != 0) return 0;
+    return n - 10;
+}
+
+/* material.h rule 2: a file named hearth_<name>.so holds the material <name>. Scenes load it by the file's
+ * name and checkpoints name it by the descriptor's, so a copy renamed (hearth_b.so holding 'a') would run and
+ * then leave checkpoints no search finds (#18, helper userview5). A file not named hearth_*.so (a path given
+ * to `hearth plugin check` or, with --trust, to h.material) is not held to it. */
+static hearth_status plugin_name_matches(const char *shown, const char *name, hearth_error *err) {
+    const char *base = strrchr(shown, '/');
+    base = base ? base + 1 : shown;
+    size_t len = plugin_stem(base);
+    if (!len || (strlen(name) == len && strncmp(base + 7, name, len) == 0)) return HEARTH_OK;
+    return err_set(err, HEARTH_ERR_PLUGIN,
+                   "%s: the file is named for material '%.*s' but holds material '%s'; a plugin file is "
+                   "hearth_<name>.so with the descriptor's name (rename the file hearth_%s.so, or build the plugin "
+                   "with name \"%.*s\")",
+                   shown, (int)len, base + 7, name, name, (int)len, base + 7);
+}
+
 /* dlopen the file at real (shown in messages as `shown`), validate, cache. */
 static const hearth_plugin *plugin_open(const char *shown, const char *real, hearth_error *err) {
     if (plugin_elf_check(shown, real, err) != HEARTH_OK) return NULL;
@@ -600,7 +623,9 @@ static const hearth_plugin *plugin_open(const char *shown, const char *real, hea
     const hearth_material *desc = entry();
     plugin_call_leave();
     plugin_call_set_context(NULL, NULL);
-    if (plugin_describe(shown, desc, &pl->desc, err) != HEARTH_OK) {
+    if (plugin_describe(shown, desc, &pl->desc, err) != HEARTH_OK ||
+        plugin_name_matches(shown, pl->desc.mat.name, err) != HEARTH_OK) {
+        plugin_desc_free(&pl->desc); /* empty when plugin_describe refused */
         mem_strfree(pl->path);
         mem_free(pl, sizeof *pl);
         dlclose(h);
@@ -684,13 +709,6 @@ int plugin_density_index(const hearth_plugin *pl) { return pl->desc.density; }
 
 static int plugin_cmp(const void *a, const void *b) {
     return strcmp(*(char *const *)a, *(char *const *)b);
-}
-
-/* "hearth_foo.so" -> length of "foo", or 0 when the file is not a plugin name. */
-static size_t plugin_stem(const char *f) {
-    size_t n = strlen(f);
-    if (n <= 10 || strncmp(f, "hearth_", 7) != 0 || strcmp(f + n - 3, ".so") != 0) return 0;
-    return n - 10;
 }
 
 int hearth_plugin_each(void (*fn)(void *ud, const char *name, const char *path), void *ud) {

@@ -558,7 +558,7 @@ end
 -- A scene made outside Lua (a checkpoint, the dashboard's built-in demo) becomes the current scene.
 function h._adopt(s)
   local st = s:_state()
-  st.events, st.mats, st.frame = {}, {}, 0
+  st.events, st.mats, st.frame, st.dim, st.seed = {}, {}, 0, s:settings().dim, s:settings().seed -- s:run's CSV units
   h._last_scene = s
   return s
 end

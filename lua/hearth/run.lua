@@ -180,6 +180,24 @@ local function pvd_text(list)
   return table.concat(out)
 end
 
+-- A scene restored by h.load continues the VTU series its saved run left in the output folder: the first s:run
+-- of a pattern keeps the .pvd's frames before the scene's time t0 (numbered 0, 1, ... by this pattern, as a run
+-- writes them) and numbers on after them, where it started at 0 and wrote over the first leg's frames and
+-- collection (#18, helper userview5). A .pvd that is not such a series, or none, starts afresh, as before.
+local function continue_pvd(state, pattern, pvd, t0)
+  local text = core.read_text(pvd)
+  if not text then return end
+  local list = {}
+  for ts, file in text:gmatch('<DataSet timestep="([^"]*)"[^>]-file="([^"]*)"') do
+    local t = tonumber(ts)
+    local own = pattern:format(#list):match("([^/]*)$")
+    -- not this pattern's series (under mpirun a frame is its .pvtu index)
+    if not t or (file ~= own and file ~= own:gsub("%.vtu$", ".pvtu")) then return end
+    if t < t0 then list[#list + 1] = { t, file } end
+  end
+  state.count, state.list = #list, list
+end
+
 -- The dumps one run writes: {kind, path, every, next, state, opts}.
 local function run_dumps(self, o, opts, t0, every)
   local specs = {}
@@ -192,7 +210,10 @@ local function run_dumps(self, o, opts, t0, every)
       st.dumps = st.dumps or {}
       local path = d.path or dump_default_path[kind]
       local key = kind .. "\0" .. path
-      st.dumps[key] = st.dumps[key] or { count = 0, list = {} }
+      if not st.dumps[key] then
+        st.dumps[key] = { count = 0, list = {} }
+        if kind == "vtu" and st.restored then continue_pvd(st.dumps[key], path, pvd_path(path, d.pvd), t0) end
+      end
       -- a series continued by another s:run already has this instant (the
       -- last run's end): a second file at the same time would give the .pvd
       -- two data sets for one time step

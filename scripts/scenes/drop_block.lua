@@ -17,4 +17,6 @@ s:collider { shape = h.plane({ 0, 0.1, 0 }, { 0, 1, 0 }), mode = "separate", fri
 
 s:run { until_t = 1.0, every = 0.1, csv = "height.csv", probes = { { "speed", { 0.5, 0.2 } } },
   png = { field = "speed", path = "frames/speed_%04d.png" } }
-print(("after the drop: t = %.2f s, kinetic energy %.3g J"):format(s:stats().t, s:stats().kinetic))
+-- a 2D scene's mass is per metre of depth, and so is its energy (height.csv's kinetic_J_per_m)
+print(("after the drop: t = %.2f s, kinetic energy %.3g %s"):format(s:stats().t, s:stats().kinetic,
+  P.dim == 2 and "J per metre of depth" or "J"))

@@ -58,6 +58,11 @@ size_t hearth_bytes_peak(void);
 /// the estimate, when they would not fit under it. Programs running other people's scenes
 /// set it (hearth run --memory); the library's own default is the machine's memory.
 void hearth_set_memory_limit(size_t bytes);
+/// Every PNG the process writes after this call carries text (UTF-8, copied, at most 1023 bytes; NULL or ""
+/// for none) as its "Source" text, beside its "Title": the command line sets the run that drew it (`hearth run
+/// scene.lua --set k=v ...` and the version), so a frame copied away still names its scene and settings. Call
+/// it before a scene runs, from one thread.
+void hearth_png_set_source(const char *text);
 /// That ceiling, or the machine's physical memory when lower (SIZE_MAX when neither is known).
 size_t hearth_memory_limit(void);
 /// The machine's physical memory in bytes (SIZE_MAX when unknown).

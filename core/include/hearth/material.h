@@ -26,7 +26,9 @@
  *    reads the new field.
  *
  * 2. Descriptor. name is [a-z0-9_]+ (it is the file's <name> and a Lua
- *    string). init, stress, wave_speed and describe_error are non-NULL;
+ *    string: the loader refuses a file hearth_<other>.so that holds it, since
+ *    a checkpoint finds a plugin again by this name). init, stress, wave_speed
+ *    and describe_error are non-NULL;
  *    blend, plastic_J, viscosity, damage, stress_block, bulk_modulus and scalars_block may be NULL,
  *    and memo_size 0. nparams <= 256 with params
  *    non-NULL when nparams > 0; 0 <= state_size <= 4096; 0 <= memo_size <= HEARTH_MEMO_MAX (rule 10);

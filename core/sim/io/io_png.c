@@ -118,6 +118,13 @@ static void on_read(png_structp p, png_bytep data, size_t n) {
 
 /* ---- writing --------------------------------------------------------- */
 
+/* hearth_png_set_source's text: set once by the command line before a scene runs, read by every PNG written. */
+static char g_source[1024];
+
+void hearth_png_set_source(const char *text) {
+    snprintf(g_source, sizeof g_source, "%s", text ? text : "");
+}
+
 /* Encode to io->fp. Returns 0 on success; on failure io says why. */
 static int encode(pngio *io, int w, int h, const unsigned char *rgb, const char *title) {
     png_structp p = png_create_write_struct_2(PNG_LIBPNG_VER_STRING, io, on_error, on_warning,
@@ -142,13 +149,17 @@ static int encode(pngio *io, int w, int h, const unsigned char *rgb, const char 
     /* Say the bytes are sRGB, which is what the colour maps produce, so viewers
      * do not guess a different gamma. */
     png_set_sRGB(p, info, PNG_sRGB_INTENT_PERCEPTUAL);
-    /* The title as text: iTXt, since a title holds UTF-8 (degree signs); tEXt is Latin-1. */
-    if (title && *title) {
+    /* The title as text: iTXt, since a title holds UTF-8 (degree signs); tEXt is Latin-1. Then the run that
+     * drew it (PNG's "Source" keyword: the device or program that made the image), so a frame copied into a
+     * paper's folder still names its scene and settings (#18, helper userview5). */
+    const char *key[2] = {"Title", "Source"}, *text[2] = {title, g_source};
+    for (int k = 0; k < 2; k++) {
+        if (!text[k] || !*text[k]) continue;
         png_text t = {0};
         t.compression = PNG_ITXT_COMPRESSION_NONE;
-        t.key = (png_charp) "Title";
-        t.text = (png_charp)title;
-        t.itxt_length = strlen(title);
+        t.key = (png_charp)key[k];
+        t.text = (png_charp)text[k];
+        t.itxt_length = strlen(text[k]);
         t.lang = (png_charp) "";
         t.lang_key = (png_charp) "";
         png_set_text(p, info, &t, 1);
