@@ -355,7 +355,8 @@ run_until_ends_on_frame)
 png_label_in_title)
     # #18 (helper userfix3): png's label goes first in the title, before the time (cookies.lua names its oven, drying.lua
     # its time lapse); without one the title is the time alone, as before; a label that would not fit the title's
-    # one line (over 64 bytes, a control character) or is not a string is refused, naming the label
+    # one line (over 128 bytes, HEARTH_PICTURE_LABEL_MAX, 64 until helper userfix10; a control character) or is not a
+    # string is refused, naming the label
     run png_options.lua --set case=label
     cat out.txt
     expect_rc 0 "png label scene"
@@ -363,8 +364,8 @@ png_label_in_title)
     has out.txt "plain title: t = 0 s   (step 0)" "no label: the time alone"
     has out.txt "label title: oven 110 °C   t = 0 s   (step 0)" "the label before the time"
     has out.txt "scaled title: oven 110 °C   t = 0 s   (0 s simulated x 50, step 0)" "the label before a time_scale's times"
-    has out.txt "64-byte title length 85" "a 64-byte label whole in the title"
-    has out.txt 'refused true picture: label of 65 bytes ("xxxxxxxxxxxxxxxxxxxx..."); at most 64' "a 65-byte label"
+    has out.txt "128-byte title length 149" "a 128-byte label whole in the title"
+    has out.txt 'refused true picture: label of 129 bytes ("xxxxxxxxxxxxxxxxxxxx..."); at most 128' "a 129-byte label"
     has out.txt "refused true picture: label has a control character (byte 4)" "a newline in the label"
     has out.txt "refused true picture: label has a control character (byte 3)" "a long label with an escape"
     grep -q "$(printf '\033')" out.txt && fail "an escape the scene put in a label reached the output"

@@ -39,9 +39,10 @@ elseif which == "label" then
   print("label title: " .. l.title)
   local _, ls = s:png("temperature", "label_scaled.png", { label = "oven 110 °C", time_scale = 50 })
   print("scaled title: " .. ls.title)
-  local _, long = s:png("temperature", "label_64.png", { label = ("x"):rep(64) })
-  print("64-byte title length " .. #long.title)
-  refused { label = ("x"):rep(65) }
+  -- the longest label, HEARTH_PICTURE_LABEL_MAX (64 bytes until helper userfix10 made it 128), whole in the title
+  local _, long = s:png("temperature", "label_128.png", { label = ("x"):rep(128) })
+  print("128-byte title length " .. #long.title)
+  refused { label = ("x"):rep(129) }
   refused { label = "two\nlines" }
   -- long and with an escape: refused for the escape, so the length's message (which quotes the label's start)
   -- never carries it to the terminal
