@@ -249,8 +249,8 @@ h.colormap = core.colormap
 
 function h.write(path, text)
   if type(path) ~= "string" or type(text) ~= "string" then error("h.write(path, text): two strings", 2) end
-  -- a CSV cell that is zero reads 0: %.6f of a height's -1e-9 wrote -0.000000 (#18, helpers userview4, userfix8)
-  if path:match("%.csv$") then text = text:gsub("[^,\n]+", function(c)
+  -- a .csv cell: a negative zero reads 0 (%.6f of -1e-9 wrote -0.000000; userview4, userfix8), NaN (not measured) ""
+  if path:match("%.csv$") then text = text:gsub("[^,\n]+", function(c) if c:match("^%-?nan$") then return "" end
     if c:match("^%-0%.?0*$") or c:match("^%-0%.?0*e[-+]%d+$") then return c:sub(2) end end) end
   local ok, e = pcall(core.write_atomic, path, text, "h.write")
   if not ok then error(e, 2) end
