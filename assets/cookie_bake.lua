@@ -8,7 +8,7 @@ local oven = h.library.paper_oven.cookie
 print("cookie_bake.lua: h.library.paper.cookie, animation units (Ding Table 2): heat runs in seconds, not minutes")
 local TRAY = 0.02
 local s = h.scene { dim = 2, dx = 1 / 250, box = { { 0, 0 }, { 0.16, 0.09 } },
-  oven = { temperature = 180, beta = oven.beta }, name = "cookie" }
+  oven = { temperature = 180, beta = oven.beta }, name = "cookie", time_units = "animation" }
 h.recipes.tray(s, TRAY, { temperature = 180, beta = oven.pan_beta })
 local d = h.library.paper.cookie
 d.gas_rate = 0.0075 * h.library.dough_scale.gas

@@ -121,8 +121,7 @@ local function knob_sets()
   return k
 end
 
--- A bad --set is a usage error (exit 2), not a scene error: the object
--- core.usage_error raises is marked so `hearth run` can tell.
+-- A bad --set is a usage error (exit 2), not a scene error: what core.usage_error raises is marked for `hearth run`.
 local usage_error = core.usage_error
 
 -- "--set k=v" as a message shows it: a value past 60 characters (--set leaveners= with a list of 10000 numbers) is
@@ -551,6 +550,7 @@ function h.scene(o)
     error(('h.scene: mixing = "dynamic" blends through the model; it needs blend = "nonlinear" (got "%s")'):format(st.blend), 2)
   end
   st.seed = def.seed or scene_setting.seed.default
+  s:_clock(lua_side.time_scale, scene_setting.time_units.words[lua_side.time_units + 1]) -- what a time reads (run.lua)
   h._last_scene = s
   return s
 end

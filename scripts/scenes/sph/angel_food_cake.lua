@@ -135,7 +135,7 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { cx - half, 0 }, { cx + half, 0
           bubble_T0 = T0, tension = true, alpha_c = 0.1, beta_c = 0.8,
           gas_law = P.water_activity > 0, bubble_vapour = P.water_activity, bubble_stays_open = P.water_activity > 0 },
   oven = { temperature = P.oven, beta = 0, radiation_scale = 1600 }, browning = true, browning_scale = 1600,
-  latent_heat = P.water or nil, boiling_point = P.water and 100 or nil }
+  latent_heat = P.water or nil, boiling_point = P.water and 100 or nil, time_scale = 1600 }
 
 -- The crumb sets while hot and softens again as it cools (the structure of
 -- an angel food cake left upright is not set enough to hold).

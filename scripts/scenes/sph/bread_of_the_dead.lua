@@ -118,7 +118,7 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solv
           bubble_T0 = T0, tension = true, artificial_stress = P.artificial_stress },
   oven = { temperature = P.oven, beta = 0, radiation_scale = S }, -- walls (--set) radiate S times fast, as heat_ext
   browning = true, browning_scale = S, -- Zanoni et al. 1995 kinetics; 1.2 s stand for a 30-minute bake
-  latent_heat = P.water or nil, boiling_point = P.water and 100 or nil }
+  latent_heat = P.water or nil, boiling_point = P.water and 100 or nil, time_scale = S }
 
 local props = { density = 1100, bulk = 2e4, lambda = P.lambda, viscosity = P.viscosity, mu_e = P.mu_e }
 -- WATER (#18, helper sphcrumb): the dough is bread dough (its heat capacity above is h.library.dough.bread's), so
