@@ -371,7 +371,7 @@ png_label_in_title)
     grep -q "$(printf '\033')" out.txt && fail "an escape the scene put in a label reached the output"
     has out.txt "refused true png: label = a short text before the time in the title (a string), got number" "a number"
     has out.txt "run_label_table false s:run: png: label = a short text" "s:run's label a table, before the run"
-    has out.txt "run_label_long false s:run: png: picture: label of 65 bytes" "s:run's label too long"
+    has out.txt "run_label_long false s:run: png: picture: label of 129 bytes" "s:run's label too long"
     cmp -s "$out/plain.png" "$out/label.png" && fail "the label drew the same picture as none"
     for f in run_0000.png run_0001.png run_0002.png; do
         png_check "$out/$f" 800 >/dev/null || fail "s:run frame $f with a label"

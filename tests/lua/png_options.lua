@@ -51,7 +51,7 @@ elseif which == "label" then
   s:run { until_t = 0.002, every = 0.001, png = { field = "temperature", path = "run_%04d.png", label = "oven 110 °C" } }
   local ok, err = pcall(s.run, s, { until_t = s:stats().t + 0.001, png = { field = "temperature", label = {} } })
   print("run_label_table " .. tostring(ok) .. " " .. tostring(err))
-  ok, err = pcall(s.run, s, { until_t = s:stats().t + 0.001, png = { field = "temperature", label = ("y"):rep(65) } })
+  ok, err = pcall(s.run, s, { until_t = s:stats().t + 0.001, png = { field = "temperature", label = ("y"):rep(129) } })
   print("run_label_long " .. tostring(ok) .. " " .. tostring(err))
 elseif which == "region" then
   -- png_region_option (#18, helper userfix5): a close-up of the block, particles and slice, and a run's frames
