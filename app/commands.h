@@ -13,6 +13,8 @@ int cmd_repl(int argc, char **argv);
 int cmd_rheometer(int argc, char **argv);
 int cmd_fit(int argc, char **argv);
 int cmd_trade(int argc, char **argv);
+/// hearth scenes: the shipped scenes, each one's path and header's first sentence (cmd_scenes.c)
+int cmd_scenes(int argc, char **argv);
 /// hearth help scene; hearth doc man|lua (cmd_settings.c)
 int cmd_help(int argc, char **argv);
 int cmd_doc(int argc, char **argv);

@@ -38,6 +38,7 @@ static void usage(FILE *f) {
             "                                throughput of a standard elastic block, as JSON\n"
             "  mpirun -n N hearth bench --ranks [--weak] [--cells N] [--dim 2|3]\n"
             "                                the block over N MPI ranks: step time, communication share, bytes\n"
+            "  hearth scenes                 list the shipped scenes: each one's path and what it shows\n"
             "  hearth help scene             every h.scene{...} setting: unit, default, range, help\n"
             "  hearth doc man|lua            print the generated settings sections of docs/hearth.1, docs/lua.md\n"
             "  hearth --help | --version\n"
@@ -160,10 +161,12 @@ int main(int argc, char **argv) {
     if (!strcmp(c, "fit")) return cmd_fit(argc - 1, argv + 1);
     if (!strcmp(c, "trade")) return cmd_trade(argc - 1, argv + 1);
     if (!strcmp(c, "doc")) return cmd_doc(argc - 1, argv + 1);
+    if (!strcmp(c, "scenes")) return cmd_scenes(argc - 1, argv + 1);
     if (strlen(c) > 4 && !strcmp(c + strlen(c) - 4, ".lua")) return cmd_dashboard(argc, argv);
     static const char *const commands[] = {"demo", "run", "repl", "plugins", "plugin", "rheometer", "fit", "trade",
-                                           "bench", "help", "doc", NULL};
-    const char *near = app_did_you_mean(c, commands);
+                                           "bench", "help", "doc", "scenes", NULL};
+    /* `hearth list` and `hearth ls` ask for the scenes by another name (userview4's item 12) */
+    const char *near = !strcmp(c, "list") || !strcmp(c, "ls") ? "scenes" : app_did_you_mean(c, commands);
     if (near) {
         fprintf(stderr, "hearth: unknown command '%s'; did you mean '%s'? (hearth --help lists them)\n", c, near);
         return 2;

@@ -58,6 +58,54 @@ cli_man_covers_subcommands)
     grep -q '^\.BI \\-\\-movie' "$man" || fail "docs/hearth.1 OPTIONS lacks --movie"
     echo "docs/hearth.1 covers:" $subs
     ;;
+cli_scenes_lists_shipped)
+    # #18 (helpers userview4, userfix11): no command listed the shipped scenes (`hearth list` was "unknown command";
+    # README's prose was the list). Bars set before the first run: `hearth scenes` exits 0; its first line names the
+    # source tree's scripts/scenes; every .lua file below it is listed once, by its path there, each with a summary
+    # other than "(no header comment)"; the folders' headings baking/, sauces/, sph/ are printed; the last line gives
+    # their number; `hearth list` exits 2 suggesting 'scenes'.
+    root="$HEARTH_SOURCE_ROOT/scripts/scenes"
+    out=$(HEARTH_SCENES_DIR= "$hearth" scenes) || fail "hearth scenes exited $?"
+    echo "$out" | head -4
+    echo "$out" | head -1 | grep -qF "the shipped scenes in $root (the source tree" ||
+        fail "first line: $(echo "$out" | head -1)"
+    want=$(cd "$root" && find . -name '*.lua' | sed 's|^\./||' | sort)
+    got=$(echo "$out" | sed -n 's/^  \([^ ]*\.lua\)  *.*$/\1/p' | sort)
+    [ "$want" = "$got" ] || fail "listed: $(echo $got); shipped: $(echo $want)"
+    echo "$out" | grep -E '^  [^ ]*\.lua +\(no header comment\)' && fail "a scene listed without its summary"
+    for d in baking sauces sph; do echo "$out" | grep -qx "$d/" || fail "no heading $d/"; done
+    n=$(echo "$want" | wc -l)
+    echo "$out" | tail -1 | grep -qx "$n scenes" || fail "last line: $(echo "$out" | tail -1); $n shipped"
+    "$hearth" list 2>"$tmp/err"
+    [ $? -eq 2 ] || fail "hearth list: expected exit 2"
+    grep -q "did you mean 'scenes'" "$tmp/err" || fail "hearth list: $(cat "$tmp/err")"
+    echo "$n scenes listed; hearth list: $(cat "$tmp/err")"
+    ;;
+cli_scenes_own_folder_and_refusals)
+    # #18 (helper userfix11): hearth scenes on a folder HEARTH_SCENES_DIR names. Bars set before the first run: a
+    # scene's summary is its header's first sentence, a '.' inside parentheses not ending it, over a wrapped line;
+    # a file that opens with code says "(no header comment)"; a subfolder is its own heading; a missing folder is
+    # exit 1 naming it; an argument is exit 2; --help names HEARTH_SCENES_DIR.
+    mkdir -p "$tmp/own/sub"
+    printf -- '-- A test scene (Ding et al. 2019, Fig. 2): a wrapped\n-- first line. Its second sentence.\n' \
+        >"$tmp/own/a.lua"
+    printf 'local x = 1\n' >>"$tmp/own/a.lua"
+    printf 'local h = require "hearth"\n' >"$tmp/own/sub/b.lua"
+    out=$(HEARTH_SCENES_DIR="$tmp/own" "$hearth" scenes) || fail "hearth scenes on its own folder exited $?"
+    echo "$out"
+    echo "$out" | head -1 | grep -qF "in $tmp/own (\$HEARTH_SCENES_DIR)" || fail "first line"
+    echo "$out" | grep -qxE '  a\.lua +A test scene \(Ding et al\. 2019, Fig\. 2\): a wrapped first line\.' ||
+        fail "a.lua's line"
+    echo "$out" | grep -qxE '  sub/b\.lua +\(no header comment\)' || fail "sub/b.lua's line"
+    echo "$out" | grep -qx "sub/" || fail "no heading sub/"
+    echo "$out" | tail -1 | grep -qx "2 scenes" || fail "the count"
+    HEARTH_SCENES_DIR="$tmp/none" "$hearth" scenes 2>"$tmp/err" >/dev/null
+    [ $? -eq 1 ] || fail "a missing folder: expected exit 1"
+    grep -qF "HEARTH_SCENES_DIR = $tmp/none is not a folder" "$tmp/err" || fail "a missing folder: $(cat "$tmp/err")"
+    "$hearth" scenes extra 2>/dev/null
+    [ $? -eq 2 ] || fail "hearth scenes extra: expected exit 2"
+    "$hearth" scenes --help | grep -q HEARTH_SCENES_DIR || fail "scenes --help does not name HEARTH_SCENES_DIR"
+    ;;
 readme_run_synopsis_as_help)
     # #18 (helper userview4): README's `hearth run` synopsis left out --movie, which `hearth run --help`'s usage gives.
     # Bar set before the run: the [--options] of README's synopsis line and of run --help's usage lines are one set.

@@ -2,9 +2,9 @@
 # lua_user_test.sh CASE HEARTH: what a user reads off a scene run as a user runs it (#18, helper userview4): the SPH
 # results lines' real minutes, a missing relative dofile path's folder, h.recipes.surface against h.recipes.height,
 # s:run's CSV cells where nothing was measured; a browning picture's crust read back off its pixels (png_pixel.py)
-# and a 3D particle picture's title (helper userfix9); a validation wrapper run from another folder, the default
-# scene's water, pull_twist's title and the SPH particle files' empty cells (helper userfix10). Shares lua_fixture.sh
-# with lua_test.sh (scene files in tests/lua/).
+# and a 3D particle picture's title (helper userfix9); a 3D browning picture's cut and a 3D slice's plane (helper
+# userfix11); a validation wrapper run from another folder, the default scene's water, pull_twist's title and the SPH
+# particle files' empty cells (helper userfix10). Shares lua_fixture.sh with lua_test.sh (scene files in tests/lua/).
 . "$(dirname "$0")/lua_fixture.sh" "$@"
 
 case "$case_name" in
@@ -267,6 +267,46 @@ particles_3d_title_says_projection)
     for f in particles_2d slice_2d slice_3d; do
         grep "^$d/$f.png: " titles.txt | grep -q "seen along" && fail "$f.png's title says seen along"
     done
+    ;;
+browning_3d_picture_shows_cut)
+    # #18 (helper userfix11; userfix9's Left): a 3D browning picture was the particles seen along -z, every depth, the
+    # nearest on top: the front face's crust, brown all over, not the ring a cut shows. Bars set before the first run,
+    # for a browned block at dx 12.5 and 10 mm (tests/lua/browning_cut_3d.lua): the default picture's title ends
+    # "   particles at z = 0.1 ± DX m" (its slab, 2 dx thick); at the block's centre the pixel reads (png_pixel.py,
+    # the nearest of the map's 101 colours) within 0.05 of the particle the slab puts there, a crumb under 0.25;
+    # at the top of that column within 0.05 of its particle, a crust over 0.5.
+    run browning_cut_3d.lua
+    expect_rc 0 "the browned 3D block"
+    cut -c1-110 out.txt
+    d=hearth-out/browning_cut_3d
+    map=$(sed -n 's/^map //p' out.txt)
+    for dx in 12.5 10; do
+        m=$(awk -v d="$dx" 'BEGIN { printf "%g", d / 1000 }')
+        grep -q "^picture browning_$dx.png title .*   particles at z = 0.1 ± $m m\$" out.txt ||
+            fail "browning_$dx.png's title does not say its slab (z = 0.1 ± $m m)"
+        for where in centre top; do
+            read -r b px py <<<"$(awk -v w="$where" -v d="$m" '$1 == w && $2 == d { print $4, $6, $7 }' out.txt)"
+            r=$(python3 "$here/png_pixel.py" "$d/browning_$dx.png" "$px" "$py" "$map") || fail "png_pixel.py: $r"
+            t=$(echo "$r" | awk '/^reads/{print $2}')
+            echo "dx $dx mm, $where: particle $b, picture reads $t"
+            awk -v b="$b" -v t="$t" -v w="$where" 'BEGIN { d = t - b; ok = b != "" && t != "" && d <= 0.05 && d >= -0.05
+                exit !(ok && (w == "centre" ? b < 0.25 : b > 0.5)) }' ||
+                fail "dx $dx mm, $where: the picture reads $t, its particle $b (a $where: crumb < 0.25, crust > 0.5)"
+        done
+    done
+    ;;
+slice_3d_title_says_plane)
+    # #18 (helper userfix11; userfix9's Left): a 3D slice's title said the time alone; its axes' names gave the plane,
+    # not where along its normal it cut. Bar set before the run: the Title text of tests/lua/projection_title.lua's 3D
+    # slices ends with "   z = 0.05 m" (the default: the domain's middle) and "   x = 0.03 m" (axis = "x", at =
+    # 0.03); the 2D slice's names no plane.
+    run projection_title.lua --until 0.002
+    expect_rc 0 "the jelly blocks"
+    d=hearth-out/projection_title
+    python3 "$here/png_title.py" $d/slice_2d.png $d/slice_3d.png $d/slice_3d_x.png | tee titles.txt
+    grep -q "^$d/slice_3d.png: .*   z = 0.05 m\$" titles.txt || fail "slice_3d.png's title does not say z = 0.05 m"
+    grep -q "^$d/slice_3d_x.png: .*   x = 0.03 m\$" titles.txt || fail "slice_3d_x.png's title does not say x = 0.03 m"
+    grep "^$d/slice_2d.png: " titles.txt | grep -qE " [xyz] = " && fail "slice_2d.png's title names a plane"
     ;;
 *) fail "unknown case $case_name" ;;
 esac

@@ -30,9 +30,9 @@ static int near_rgb(const unsigned char *p, const unsigned char c[3], int tol) {
 
 /* The heated scene: jelly block [0.05, 0.15] x [0.02, 0.05] at 20 degC on a
  * tray [0, 0.2] x [0, 0.02] at 180 degC, oven air 180 degC. */
-static hearth_scene *heated_scene(void) {
+static hearth_scene *heated_scene_on(hearth_solver solver) {
     hearth_scene_def d = hearth_default_scene_def();
-    d.dim = 2, d.dx = 0.005;
+    d.dim = 2, d.dx = 0.005, d.solver = solver;
     d.lo[0] = d.lo[1] = d.lo[2] = 0;
     d.hi[0] = 0.2, d.hi[1] = 0.1, d.hi[2] = 0.005;
     d.oven_temperature = 180, d.oven_beta = 30;
@@ -57,6 +57,7 @@ static hearth_scene *heated_scene(void) {
     hearth_shape_free(block);
     return s;
 }
+static hearth_scene *heated_scene(void) { return heated_scene_on(HEARTH_SOLVER_MPM); }
 
 /* The pixel at the centre of the last particle drawn (on top of the others in 2D). */
 static const unsigned char *last_particle_pixel(const hearth_scene *s, const hearth_picture_info *in,
@@ -115,10 +116,10 @@ TEST(png_fixed_range_across_frames) {
 /* The tray is drawn: pixels inside it are the collider grey in both kinds of
  * picture (the dashboard saves slices), and empty space above the block is
  * the white background. */
-TEST(png_colliders_drawn) {
+static void colliders_drawn(hearth_solver solver) {
     char dir[64], path[128];
     make_dir(dir, sizeof dir);
-    hearth_scene *s = heated_scene();
+    hearth_scene *s = heated_scene_on(solver);
     CHECK(s != NULL);
     static const unsigned char grey[3] = {150, 152, 160}, white[3] = {255, 255, 255};
     for (int kind = 0; kind < 2; kind++) {
@@ -144,6 +145,11 @@ TEST(png_colliders_drawn) {
     hearth_scene_destroy(s);
     rm_dir(dir);
 }
+TEST(png_colliders_drawn) { colliders_drawn(HEARTH_SOLVER_MPM); }
+/* The same on SPH (#18, helper userfix11): an SPH scene's colliders are the scene's, drawn by the same path. Its
+ * brief read the open list's "SPH colliders do not draw" (a drawing sheet's heat, refused on SPH) as pictures; the
+ * SPH scenes' frames drew their trays and moulds on main, and this holds it (it passes on main). */
+TEST(png_sph_colliders_drawn) { colliders_drawn(HEARTH_SOLVER_SPH); }
 
 /* The colour bar has 4-6 ticks at nice values inside the range (40, 80, 120,
  * 160 for 20..180 degC), its unit as printed, and a tick mark at each: the
@@ -227,6 +233,83 @@ TEST(png_options_checked) {
     CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
     printf("grow: data %g..%g, range %g..%g\n", in.data[0], in.data[1], in.range[0], in.range[1]);
     CHECK(in.range[0] == in.data[0] && in.data[0] < 21 && in.range[1] == 120);
+    hearth_scene_destroy(s);
+    rm_dir(dir);
+}
+
+/* A 3D particle picture's slab (hearth_picture_def.depth; #18, helper userfix11). Bars set before the first run: a
+ * depth in 2D, on a slice, of 0 or below, and an `at` outside the domain's z are refused naming depth or at and what
+ * is valid; depth = inf draws the very pixels of the default (every particle, speeds 1 to 3 m/s); a slab 2 dx
+ * thick about the middle draws the middle body of three stacked along z alone (its data 2 .. 2 m/s) and its title
+ * gives "particles at z = 0.1 ± 0.02 m". */
+TEST(png_depth_checked) {
+    char dir[64], path[128], path2[128];
+    make_dir(dir, sizeof dir);
+    hearth_error err;
+    hearth_picture_info in;
+    snprintf(path, sizeof path, "%s/d.png", dir);
+    snprintf(path2, sizeof path2, "%s/e.png", dir);
+    hearth_scene *s2 = heated_scene();
+    CHECK(s2 != NULL);
+    hearth_picture_def d = hearth_default_picture_def();
+    d.field = "temperature", d.kind = HEARTH_PICTURE_PARTICLES, d.depth = 0.01;
+    CHECK(hearth_render(s2, &d, path, &in, &err) == HEARTH_ERR_PARAM);
+    printf("%s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, "depth = 0.01 m draws a slab of a 3D particle picture; this is a 2D scene");
+    hearth_scene_destroy(s2);
+    hearth_scene_def sd = hearth_default_scene_def();
+    sd.dim = 3, sd.dx = 0.02, sd.gravity[1] = 0;
+    for (int k = 0; k < 3; k++) sd.lo[k] = 0, sd.hi[k] = 0.2;
+    hearth_scene *s = fx_scene_def(&sd);
+    CHECK(s != NULL);
+    const char *names[] = {"E", "nu", "density"};
+    const double vals[] = {2e5, 0.3, 1000};
+    const int m = hearth_scene_add_material(s, "elastic", names, vals, 3, &err);
+    CHECK(m >= 0);
+    /* a cube of three bodies along z, each its own speed: z in [0.06, 0.08) at 1 m/s, [0.08, 0.12] at 2, (0.12,
+     * 0.14] at 3; ppc 8 at dx 20 mm: particle layers 2.5 mm apart, the middle body's from 0.08125 to 0.11875 */
+    for (int k = 0; k < 3; k++) {
+        const double z0 = k == 0 ? 0.06 : k == 1 ? 0.08 : 0.12, z1 = k == 0 ? 0.08 : k == 1 ? 0.12 : 0.14;
+        const double c[3] = {0.1, 0.1, 0.5 * (z0 + z1)}, half[3] = {0.04, 0.04, 0.5 * (z1 - z0)};
+        hearth_shape *part = hearth_shape_box(c, half);
+        hearth_body_def bd = hearth_default_body_def();
+        bd.shape = part, bd.material = m, bd.jitter = 0, bd.ppc = 8, bd.velocity[0] = k + 1;
+        CHECK(hearth_scene_add_body(s, &bd, &err) >= 0);
+        hearth_shape_free(part);
+    }
+    d = hearth_default_picture_def();
+    d.field = "temperature", d.kind = HEARTH_PICTURE_SLICE, d.depth = 0.01;
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_ERR_PARAM);
+    printf("%s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, "this is a slice");
+    d.kind = HEARTH_PICTURE_PARTICLES, d.depth = 0;
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_ERR_PARAM);
+    printf("%s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, "depth = 0 m; valid: a slab's thickness > 0, or inf for every particle");
+    d.depth = 0.04, d.at = 0.3;
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_ERR_PARAM);
+    printf("%s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, "at = 0.3 m, the slab's middle along z; valid range [0, 0.2]");
+    /* inf: the default's pixels */
+    d = hearth_default_picture_def();
+    d.field = "speed", d.kind = HEARTH_PICTURE_PARTICLES;
+    CHECK(hearth_render(s, &d, path, &in, &err) == HEARTH_OK);
+    d.depth = INFINITY;
+    CHECK(hearth_render(s, &d, path2, &in, &err) == HEARTH_OK);
+    int w = 0, h = 0, w2 = 0, h2 = 0;
+    unsigned char *a = decode_rgb(path, &w, &h), *b = decode_rgb(path2, &w2, &h2);
+    CHECK(a && b && w == w2 && h == h2 && !memcmp(a, b, (size_t)3 * w * h));
+    free(a), free(b);
+    printf("every particle: data %g .. %g m/s\n", in.data[0], in.data[1]);
+    CHECK(in.data[0] == 1 && in.data[1] == 3);
+    /* the slab 0.08 .. 0.12 holds the middle body's particles alone */
+    d.depth = 0.04;
+    const hearth_status st = hearth_render(s, &d, path, &in, &err);
+    if (st) printf("%s\n", err.msg);
+    CHECK(st == HEARTH_OK);
+    printf("slab: data %g .. %g m/s, title %s\n", in.data[0], in.data[1], in.title);
+    CHECK(in.data[0] == 2 && in.data[1] == 2);
+    CHECK_STR_CONTAINS(in.title, "   particles at z = 0.1 ± 0.02 m");
     hearth_scene_destroy(s);
     rm_dir(dir);
 }
@@ -523,6 +606,6 @@ TEST(png_particle_fill_memory_bounded) {
     rm_dir(dir);
 }
 
-TEST_MAIN(T(png_fixed_range_across_frames), T(png_colliders_drawn), T(png_colorbar_ticks), T(png_options_checked),
+TEST_MAIN(T(png_fixed_range_across_frames), T(png_colliders_drawn), T(png_sph_colliders_drawn), T(png_colorbar_ticks), T(png_options_checked), T(png_depth_checked),
           T(png_title_gives_real_time), T(png_alloc_failures), T(png_long_title_clear_of_bar),
           T(png_particles_paired_filled), T(png_narrow_title_two_lines), T(png_particle_fill_memory_bounded))

@@ -34,9 +34,9 @@ end
 local run_keys = { until_t = true, every = true, on_frame = true, csv = true, probes = true, png = true, until_rest = true,
   vtu = true, ply = true, movie = true }
 local run_png_keys = { field = true, path = true, kind = true, width = true, height = true, axis = true, at = true,
-  range = true, colormap = true, time_scale = true, label = true, region = true }
+  range = true, colormap = true, time_scale = true, label = true, region = true, depth = true }
 local png_keys = { kind = true, width = true, height = true, axis = true, at = true, range = true, colormap = true, grow = true,
-  time_scale = true, label = true, region = true }
+  time_scale = true, label = true, region = true, depth = true }
 
 -- The scene's clock (h.scene's time_scale and time_units; #18, helper userfix10): the real seconds a simulated second
 -- stands for, or Ding et al.'s Table 2 animation units, which no real time measures. Pictures without their own
@@ -349,7 +349,7 @@ function S:run(o)
       local _, info = output(where, "png", self.png, self, field, frame_path(fr, pf.path or "frame_%04d.png"),
         { kind = pf.kind or "particles", width = pf.width, height = pf.height, axis = pf.axis, at = pf.at,
           range = pf.range, colormap = pf.colormap, grow = st.png_range[field], time_scale = pf.time_scale,
-          label = pf.label, region = pf.region })
+          label = pf.label, region = pf.region, depth = pf.depth })
       if info then st.png_range[field] = info.range end
     end
     if rows then

@@ -11,4 +11,6 @@ for _, dim in ipairs { 2, 3 } do
     material = jelly, temperature = 20 }
   s:png("temperature", ("particles_%dd.png"):format(dim), { kind = "particles", width = 300 })
   s:png("temperature", ("slice_%dd.png"):format(dim), { kind = "slice", width = 300 })
+  -- slice_3d_title_says_plane (helper userfix11): a 3D slice across x, its title naming where it cuts
+  if d3 then s:png("temperature", "slice_3d_x.png", { kind = "slice", axis = "x", at = 0.03, width = 300 }) end
 end

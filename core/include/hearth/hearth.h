@@ -648,7 +648,8 @@ typedef struct hearth_picture_def {
     hearth_picture_kind kind;     ///< default HEARTH_PICTURE_SLICE
     int width, height;            ///< pixels, 64..8192; height 0 (default) follows the domain's aspect; default width 800
     int axis;                     ///< slices: the axis normal to the plane, 0..2 (default 2)
-    double at;                    ///< slices: the plane's position along axis (m); NaN (default) = the domain's middle
+    double at;                    ///< slices: the plane's position along axis (m); NaN (default) = the domain's middle;
+                                  ///< 3D particles with a depth: the slab's middle along z (m), NaN the domain's
     hearth_picture_range_mode range_mode; ///< default HEARTH_RANGE_DEFAULT
     double range[2];              ///< field units, range[0] < range[1]; read by FIXED and GROW
     const char *colormap;         ///< a name of hearth_colormap_names(); NULL (default) = the field's own
@@ -666,9 +667,16 @@ typedef struct hearth_picture_def {
     /// the height follows its aspect. NaN (default) = the whole domain. A close-up of a thin body: a 10 mm
     /// pancake in a 0.32 m box (#18, helper userfix5).
     double region[4];
+    /// 3D particle pictures: draw only the particles within depth / 2 of the plane z = at, a slab through the body
+    /// seen along -z, and the colliders where that plane cuts them; the title says where ("particles at z = 0.04 ±
+    /// 0.0025 m"). A finite number > 0 (m). NaN or +inf (default) = every particle, a projection of every depth.
+    /// A crust is one particle deep: the projection shows the front face's, a slab the ring of a cut (#18, helper
+    /// userfix11). Refused in 2D and for slices.
+    double depth;
 } hearth_picture_def;
 
-/// The longest hearth_picture_def.label in bytes: with the longest time it still fits the title's 256 bytes. It was 64
+/// The longest hearth_picture_def.label in bytes: with the longest time and a 3D picture's plane it still fits the
+/// title's 320 bytes (128 + 3 + 87 + 46 at the most: a 19-digit step, "particles at z = ... ± ... m"). It was 64
 /// while the title was one line (#18, helper userfix3); since a title that one line would set too small puts its label
 /// on a line of its own, across the picture (render.c, helper userfix5), what bounds a label is this buffer
 /// (#18, helper userfix10: pull_twist.lua's label with eta's unit, 67 bytes, fell back to its short form).
@@ -688,7 +696,7 @@ typedef struct hearth_picture_info {
     double area[4];      ///< the plot area: left, top, width, height (pixels)
     double view_lo[2], view_hi[2]; ///< the domain it shows (m), horizontal then vertical axis
     double bar[4];       ///< the colour bar: left, top, width, height (pixels); range[1] at the top
-    char title[256];     ///< the title as drawn: the label, the time (real and simulated with a time_scale) and the step
+    char title[320];     ///< the title as drawn: the label, the time (real and simulated with a time_scale) and the step
 } hearth_picture_info;
 
 /// Draw a picture of the scene as an RGB PNG, written atomically: the field in

@@ -29,7 +29,7 @@ static const unsigned char BG[3] = {255, 255, 255}, FG[3] = {20, 20, 24}, FRAME[
 hearth_picture_def hearth_default_picture_def(void) {
     return (hearth_picture_def){.kind = HEARTH_PICTURE_SLICE, .width = 800, .axis = 2, .at = NAN,
                                 .range_mode = HEARTH_RANGE_DEFAULT, .range = {NAN, NAN}, .time_scale = 1,
-                                .region = {NAN, NAN, NAN, NAN}};
+                                .region = {NAN, NAN, NAN, NAN}, .depth = NAN};
 }
 
 static int is_unit_interval(const char *f) {
@@ -251,6 +251,15 @@ static void title_line(canvas *c, double x, double y, const char *text, double s
     cairo_restore(c->cr);
 }
 
+/* A 3D particle picture's slab (hearth_picture_def.depth): 1 and its middle and half thickness along z (m) when the
+ * picture draws a slab, 0 when it draws every particle. */
+static int slab_of(const hearth_scene *s, const hearth_picture_def *d, double *zc, double *half) {
+    if (s->def.dim != 3 || d->kind != HEARTH_PICTURE_PARTICLES || !isfinite(d->depth)) return 0;
+    *zc = isnan(d->at) ? 0.5 * (s->def.lo[2] + s->def.hi[2]) : d->at;
+    *half = 0.5 * d->depth;
+    return 1;
+}
+
 static void title(canvas *c, const frame *f, const hearth_scene *s, const hearth_picture_def *d, hearth_picture_info *info,
                   double right) {
     char *buf = info->title;
@@ -268,10 +277,16 @@ static void title(canvas *c, const frame *f, const hearth_scene *s, const hearth
     /* A 3D particle picture is a projection: every depth drawn over each other, the nearest (largest z) on top. It
      * says so, or a muffin cup's front wall and its middle read as two walls (#18, helper userfix9; userview4's
      * item 15: muffins.lua --set dim=3 drew each wall twice under a title like the 2D one's). */
-    if (s->def.dim == 3 && d->kind == HEARTH_PICTURE_PARTICLES) {
-        const size_t used = strlen(buf);
-        snprintf(buf + used, n - used, "   seen along -z");
-    }
+    /* A 3D slice says where it cuts, and a slab which particles it draws (#18, helper userfix11; userfix9's Left: the
+     * axes' names gave a slice's plane, not where along its normal it lay). */
+    static const char *const names[3] = {"x", "y", "z"};
+    double zc, half;
+    const size_t used = strlen(buf);
+    if (slab_of(s, d, &zc, &half)) snprintf(buf + used, n - used, "   particles at z = %.4g ± %.3g m", zc, half);
+    else if (s->def.dim == 3 && d->kind == HEARTH_PICTURE_PARTICLES) snprintf(buf + used, n - used, "   seen along -z");
+    else if (s->def.dim == 3)
+        snprintf(buf + used, n - used, "   %s = %.4g m", names[d->axis],
+                 isnan(d->at) ? 0.5 * (s->def.lo[d->axis] + s->def.hi[d->axis]) : d->at);
     const double fs = f->fs;
     double x = f->x0, size = fs;
     if (x + canvas_text_width(c, buf, fs) > right - fs) {
@@ -469,6 +484,18 @@ static hearth_status check_def(const hearth_scene *s, const hearth_picture_def *
                            len, cut, d->label, HEARTH_PICTURE_LABEL_MAX);
         }
     }
+    if (!isnan(d->depth) && d->depth != INFINITY) {
+        if (s->def.dim != 3 || d->kind != HEARTH_PICTURE_PARTICLES)
+            return err_set(err, HEARTH_ERR_PARAM, "picture: depth = %g m draws a slab of a 3D particle picture; this "
+                           "is a %s", d->depth, s->def.dim != 3 ? "2D scene" : "slice (its plane is at)");
+        if (!(d->depth > 0))
+            return err_set(err, HEARTH_ERR_PARAM, "picture: depth = %g m; valid: a slab's thickness > 0, or inf for "
+                           "every particle", d->depth);
+        const double zlo = s->def.lo[2], zhi = s->def.hi[2];
+        if (!isnan(d->at) && !(d->at >= zlo && d->at <= zhi))
+            return err_set(err, HEARTH_ERR_PARAM, "picture: at = %g m, the slab's middle along z; valid range [%g, %g] "
+                           "(the domain's z)", d->at, zlo, zhi);
+    }
     int set = 0;
     for (int k = 0; k < 4; k++) set += !isnan(d->region[k]);
     if (set) { /* a close-up: inside the domain's plane, lo < hi on both axes */
@@ -587,6 +614,15 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
     size_t bytes = 0;
     hearth_status st = scalar_per_particle(s, d->field, &val, &bytes, err);
     if (st) return st;
+    /* a slab: the particles outside it are not drawn (NaN: data_range passes them by; the loop below skips them),
+     * and the colliders are cut at its middle plane, as a slice cuts them */
+    double zc = 0, half = 0;
+    const int slab = slab_of(s, d, &zc, &half);
+    if (slab) {
+        const double *Xs = pcold(&s->ps, PC_X);
+        for (int i = 0; i < n; i++)
+            if (!(fabs(Xs[3 * i + 2] - zc) <= half)) val[i] = NAN;
+    }
     data_range(val, n, info->data);
     if ((st = choose_range(s, d, info, err))) {
         mem_free(val, bytes);
@@ -599,8 +635,10 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
     const int uv[2] = {0, 1};
     double depths[5];
     for (int k = 0; k < 5; k++) depths[k] = s->def.lo[2] + (k + 0.5) / 5 * (s->def.hi[2] - s->def.lo[2]);
+    if (slab) depths[0] = zc;
     collider_map cm;
-    if ((st = collider_map_make(&cm, &f, s, uv, s->def.dim == 3 ? 2 : -1, depths, s->def.dim == 3 ? 5 : 1, err))) {
+    const int ndepth = s->def.dim == 3 && !slab ? 5 : 1;
+    if ((st = collider_map_make(&cm, &f, s, uv, s->def.dim == 3 ? 2 : -1, depths, ndepth, err))) {
         mem_free(val, bytes);
         return st;
     }
@@ -643,6 +681,7 @@ static hearth_status draw_particles(canvas *c, const hearth_scene *s, const hear
     const double span = info->range[1] - info->range[0];
     for (int k = 0; k < n; k++) {
         const int i = ord ? ord[k] : k;
+        if (slab && !(fabs(X[3 * i + 2] - zc) <= half)) continue; /* outside the slab */
         unsigned char rgb[3];
         cmap_eval(map, (val[i] - info->range[0]) / span, rgb);
         canvas_rgb(c, rgb, 1);

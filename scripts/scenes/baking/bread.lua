@@ -25,7 +25,7 @@
 -- followed as material (the particles on top of its crown's middle 80% at the
 -- start, by id): its growth is the stretch the rise puts on the crust. The dough carries water (lua/hearth/dough.lua, WATER:
 -- rates x600, so 2.5 s stand for a 25 minute bake); at the end it writes
--- damage.png and browning.png.
+-- damage.png and browning.png (in 3D the particles within dx of the middle plane, z = 0.06 m: a cut's crust ring).
 -- The tray: tray = "separate" (default; a greased tray or baking paper: the foot may slide, friction 0.4, and
 -- lift) or "sticky" (a bare tray the dough sticks to: the contact holds the foot where it touched, in tension
 -- too), as loaf_physical.lua's (docs/validation.md, "The loaf's foot on its tray (#18, helper loaffoot)").

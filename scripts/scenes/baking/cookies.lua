@@ -37,7 +37,8 @@
 --                           frames' titles give the real time) in each oven of --set ovens
 --                           (h.library.oven.cookie's own bake is 190 degC); the same cookies,
 --                           each leavener a scaling the preset's CO2 rate by a / 0.015. It also
---                           writes oven_<T>/browning.png and prints each cookie's browning at its
+--                           writes oven_<T>/browning.png (3D: a slab 2 dx thick about the middle
+--                           plane) and prints each cookie's browning at its
 --                           top, rim, base and centre. Measured (2D, dx 5 mm): the unleavened
 --                           cookie barely spreads (its measured yield stress, 61.5 Pa in shear once
 --                           the fat melts, holds its 17.5 mm: 62 -> 66 mm on the drawing sheet, raw.csv

@@ -22,7 +22,8 @@
 -- J / s_0) of its top particle on the cup's axis and of the particle nearest
 -- the batter's centre (on the axis, fill / 2 above the floor), and its count
 -- of cracked particles (damage 1). The batter carries water (lua/hearth/dough.lua,
--- WATER: rates x600); at the end it writes damage.png and browning.png.
+-- WATER: rates x600); at the end it writes damage.png and browning.png (in 3D the particles within dx of the
+-- middle plane, z = 0.04 m, through the cups' axes: a cut's crust ring, not the front face's crust).
 -- How it domes: the tin heats the batter from its walls and floor (the
 -- muffin preset's kappa gives a Biot number of ~7, see lua/hearth/dough.lua),
 -- so the batter there passes gelatinisation (tau_y x20, frozen) while the

@@ -67,7 +67,8 @@
 -- pancake.csv also has the real time, the middle particle's temperature and the water it holds (of the raw
 -- batter's), the browning of the
 -- lowest (on the pan) and highest particle on the centre line, and the water left of what was poured; and
--- browning.png and saturation.png at the end (the close-up's region), and profile.csv: the particles within dx/2 of
+-- browning.png (3D: a slab 2 dx thick about the middle plane) and saturation.png at the end (the close-up's region),
+-- and profile.csv: the particles within dx/2 of
 -- the centre line at the end, from the pan up (height, temperature, water held, browning).
 -- An empty cell is "not measured": while no batter lies on the pan at the centre (the pour, the flip) nothing is read
 -- on the centre line. tests/baking/scenes.sh (baking_scene_*) reads the next line and accepts empty cells in its

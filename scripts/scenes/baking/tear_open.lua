@@ -20,7 +20,8 @@
 -- 17 mm (muffin, w = 50 mm) or 27 mm (loaf, w = 80 mm). (With the middle half free, 25 and 40 mm, the loaf's
 -- whole middle sheared off at the grips and fell under its own weight.)
 -- Writes, under hearth-out/tear_open/: heat_%04d.png (temperature) and damage_%04d.png at the end of the bake
--- and every fifth frame of the pull and its last, browning.png at the end, and tear_open.csv, per frame
+-- and every fifth frame of the pull and its last, browning.png at the end (3D: a slab 2 dx thick about the middle
+-- plane), and tear_open.csv, per frame
 -- (t_s, the simulated time, s):
 --   separation_m: how far the grips have moved apart (0 through the bake);
 --   neck_m: the thinnest section between the grips: over one-cell columns from a cell inside each grip's face,
