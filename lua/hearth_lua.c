@@ -459,6 +459,27 @@ void hl_push_scene(lua_State *L, hearth_scene *s) {
     lua_remove(L, -2);
 }
 
+int hl_scene_clock(lua_State *L, double *time_scale) {
+    *time_scale = 1;
+    int animation = 0;
+    const int top = lua_gettop(L);
+    lua_getfield(L, LUA_REGISTRYINDEX, LUA_LOADED_TABLE);
+    lua_getfield(L, -1, "hearth");
+    if (lua_istable(L, -1)) {
+        lua_pushliteral(L, "_last_scene");
+        lua_rawget(L, -2);
+        if (luaL_testudata(L, -1, HL_SCENE) && lua_getiuservalue(L, -1, 1) == LUA_TTABLE) {
+            lua_pushliteral(L, "time_scale");
+            if (lua_rawget(L, -2) == LUA_TNUMBER && lua_tonumber(L, -1) > 0) *time_scale = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+            lua_pushliteral(L, "time_units");
+            animation = lua_rawget(L, -2) == LUA_TSTRING && !strcmp(lua_tostring(L, -1), "animation");
+        }
+    }
+    lua_settop(L, top);
+    return animation;
+}
+
 hearth_scene *hl_current_scene(lua_State *L) {
     lua_getfield(L, LUA_REGISTRYINDEX, LUA_LOADED_TABLE);
     lua_getfield(L, -1, "hearth");

@@ -93,6 +93,10 @@ int hl_pcall(lua_State *L, int nargs, int nres);
 void hl_push_scene(lua_State *L, hearth_scene *s);
 /// The C scene of the module's current scene (the last h.scene / h.load), or NULL.
 hearth_scene *hl_current_scene(lua_State *L);
+/// The current scene's clock as its h.scene declared it (time_scale, time_units; run.lua's S:_clock): *time_scale the
+/// real seconds one simulated second stands for (1 when it declared none, or for a scene made outside h.scene).
+/// Returns 1 when its seconds are Ding et al.'s Table 2 animation units, else 0. Reads raw fields; never raises.
+int hl_scene_clock(lua_State *L, double *time_scale);
 /// Open the standard library as the allow-list sandbox for untrusted scenes (see lua_sandbox.c).
 void hl_open_sandboxed_libs(lua_State *L);
 

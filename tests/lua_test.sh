@@ -355,7 +355,8 @@ run_until_ends_on_frame)
 png_label_in_title)
     # #18 (helper userfix3): png's label goes first in the title, before the time (cookies.lua names its oven, drying.lua
     # its time lapse); without one the title is the time alone, as before; a label that would not fit the title's
-    # one line (over 64 bytes, a control character) or is not a string is refused, naming the label
+    # one line (over 128 bytes, HEARTH_PICTURE_LABEL_MAX, 64 until helper userfix10; a control character) or is not a
+    # string is refused, naming the label
     run png_options.lua --set case=label
     cat out.txt
     expect_rc 0 "png label scene"
@@ -363,14 +364,14 @@ png_label_in_title)
     has out.txt "plain title: t = 0 s   (step 0)" "no label: the time alone"
     has out.txt "label title: oven 110 °C   t = 0 s   (step 0)" "the label before the time"
     has out.txt "scaled title: oven 110 °C   t = 0 s   (0 s simulated x 50, step 0)" "the label before a time_scale's times"
-    has out.txt "64-byte title length 85" "a 64-byte label whole in the title"
-    has out.txt 'refused true picture: label of 65 bytes ("xxxxxxxxxxxxxxxxxxxx..."); at most 64' "a 65-byte label"
+    has out.txt "128-byte title length 149" "a 128-byte label whole in the title"
+    has out.txt 'refused true picture: label of 129 bytes ("xxxxxxxxxxxxxxxxxxxx..."); at most 128' "a 129-byte label"
     has out.txt "refused true picture: label has a control character (byte 4)" "a newline in the label"
     has out.txt "refused true picture: label has a control character (byte 3)" "a long label with an escape"
     grep -q "$(printf '\033')" out.txt && fail "an escape the scene put in a label reached the output"
     has out.txt "refused true png: label = a short text before the time in the title (a string), got number" "a number"
     has out.txt "run_label_table false s:run: png: label = a short text" "s:run's label a table, before the run"
-    has out.txt "run_label_long false s:run: png: picture: label of 65 bytes" "s:run's label too long"
+    has out.txt "run_label_long false s:run: png: picture: label of 129 bytes" "s:run's label too long"
     cmp -s "$out/plain.png" "$out/label.png" && fail "the label drew the same picture as none"
     for f in run_0000.png run_0001.png run_0002.png; do
         png_check "$out/$f" 800 >/dev/null || fail "s:run frame $f with a label"

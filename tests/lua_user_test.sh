@@ -3,8 +3,9 @@
 # results lines' real minutes, a missing relative dofile path's folder, h.recipes.surface against h.recipes.height,
 # s:run's CSV cells where nothing was measured; a browning picture's crust read back off its pixels (png_pixel.py)
 # and a 3D particle picture's title (helper userfix9); a 3D browning picture's cut and a 3D slice's plane (helper
-# userfix11); h.load's relative path, read from the output folder (helper userview5). Shares lua_fixture.sh with
-# lua_test.sh (scene files in tests/lua/).
+# userfix11); h.load's relative path, read from the output folder (helper userview5); a validation wrapper run from
+# another folder, the default scene's water, pull_twist's title and the SPH particle files' empty cells (helper
+# userfix10). Shares lua_fixture.sh with lua_test.sh (scene files in tests/lua/).
 . "$(dirname "$0")/lua_fixture.sh" "$@"
 
 case "$case_name" in
@@ -171,6 +172,103 @@ dofile_relative_path_says_folder)
     expect_rc 1 "a missing absolute path"
     has_msg "cannot open $PWD/no_such.lua" "the absolute path"
     grep -q "relative path" err.txt && fail "an absolute path said to be relative: $(cat err.txt)"
+    ;;
+validation_wrapper_finds_scene_anywhere)
+    # #18 (helper userfix10; userview4's item 9): scripts/validation/loaf_whatif.lua (and crack_heat, crack_dt,
+    # crack_tray, muffin_tear, bread3d) named their scene from the source root, so `hearth run /abs/path/...` from
+    # another folder stopped at their dofile. Bar set before the run: from a temp folder, loaf_whatif.lua by its
+    # absolute path (2 real s of the bake) exits 0 and writes loaf.csv; crack_tray.lua likewise (1 ms of bread.lua)
+    # writes bread.csv; --set loaf=PATH relative to the working folder still runs (exit 0); h.scene_path keeps an
+    # absolute path and joins a relative one to the scene file's folder.
+    root=$(cd "$here/.." && pwd)
+    "$hearth" run "$root/scripts/validation/loaf_whatif.lua" --quiet --set until_real=2 --out w >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "loaf_whatif.lua by its absolute path from $(pwd)"
+    [ -s w/loaf.csv ] || fail "loaf_whatif.lua wrote no loaf.csv"
+    "$hearth" run "$root/scripts/validation/crack_tray.lua" --quiet --until 0.001 --out c >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "crack_tray.lua by its absolute path"
+    [ -s c/bread.csv ] || fail "crack_tray.lua wrote no bread.csv"
+    mkdir -p sub && ln -s "$root/scripts/scenes/baking/loaf_physical.lua" sub/loaf.lua
+    "$hearth" run "$root/scripts/validation/loaf_whatif.lua" --quiet --set until_real=2 --set loaf=sub/loaf.lua \
+        --out l >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "--set loaf=sub/loaf.lua, relative to the working folder"
+    [ -s l/loaf.csv ] || fail "--set loaf=PATH wrote no loaf.csv"
+    mkdir -p d && printf '%s\n' 'local h = require "hearth"' \
+        'print(h.scene_path("a/b.lua"), h.scene_path("/x/y.lua"))' >d/p.lua
+    "$hearth" run d/p.lua --quiet >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "h.scene_path"
+    has out.txt "d/a/b.lua	/x/y.lua" "a relative path joined to the scene's folder, an absolute one kept"
+    ;;
+default_scene_water_sourced)
+    # #18 (helper userfix10; userview4's item 11): the dashboard's default scene (assets/cookie_bake.lua) gave its
+    # cookie water of invented numbers (diffusivity 2e-8, evaporation 2e-6, saturation 0.4, "so the saturation view has
+    # something to show"). Bar set before the run, from the sources the scene names, not from its code: the physical
+    # cookie's real water (lua/hearth/dough_physical.lua: D 1e-9 m^2/s, beta^w 1.2e-5 kg/(m^2 s K)) on the water clock
+    # W = 660 s / 5 s = 132 (its 11 minute bake for cookies.lua's paper 5 s), at the paper cookie's s_0 = 0.20 x 500 /
+    # 1000 = 0.10: K = D / (373.15 s_0) W = 3.53745e-09, beta^w W = 0.001584, each within 1e-5 relative.
+    run cookie_water.lua --until 0.001
+    expect_rc 0 "cookie_bake.lua"
+    grep '^water ' out.txt
+    python3 - out.txt <<'PY' || fail "the default scene's water is not the sourced one (above)"
+import sys
+line = next(l for l in open(sys.argv[1]) if l.startswith("water "))
+w = line.split()
+got = {w[k]: float(w[k + 1]) for k in range(1, len(w), 2)}
+W, s0 = 660 / 5, 0.20 * 500 / 1000
+want = {"saturation": s0, "water_diffusivity": 1e-9 / (373.15 * s0) * W, "evaporation": 1.2e-5 * W}
+bad = [k for k in want if abs(got[k] / want[k] - 1) > 1e-5]
+print("want", want, "bad", bad)
+sys.exit(1 if bad else 0)
+PY
+    ;;
+pull_twist_title_gives_eta_unit)
+    # #18 (helper userfix10; userview4's item 10): pull_twist.lua's frames and lines gave eta without its unit (the
+    # plugin's Pa^3 s, pull_twist.csv's eta_Pa3s): with it the label passed the picture label's 64 bytes
+    # (HEARTH_PICTURE_LABEL_MAX, from when a title was one line) and fell back to its short form. Bar set before the
+    # run: at its defaults (1 ms of it) j_0000.png's Title text gives "tau_y 300, 1000, 3000 Pa across; eta 1e+06,
+    # 1e+08, 1e+10 Pa^3 s up" and each dough's line "eta <value> Pa^3 s".
+    run ../../scripts/scenes/baking/pull_twist.lua --until 0.001 --out p
+    expect_rc 0 "pull_twist.lua, 1 ms"
+    title=$(python3 "$here/png_title.py" p/j_0000.png)
+    echo "$title"
+    echo "$title" | grep -qF "tau_y 300, 1000, 3000 Pa across; eta 1e+06, 1e+08, 1e+10 Pa^3 s up" ||
+        fail "the title does not give eta with its unit: $title"
+    [ "$(grep -cE '^tau_y +[0-9]+ Pa, eta +[0-9e+.]+ Pa\^3 s: ' out.txt)" -eq 9 ] ||
+        fail "not every dough's line gives eta's unit: $(cat out.txt)"
+    ;;
+sph_particles_unmeasured_empty)
+    # #18 (helper userfix10; userview4's item 13): the SPH particle files (bread_of_the_dead.lua's particles_*.csv,
+    # angel_food_cake.lua's) wrote `nan` for a bubble's browning and saturation, where the project's rule is an empty
+    # cell for what was not measured. Bars set before the run: h.write writes a `nan` or `-nan` cell of a .csv empty
+    # (a .txt as given; a cell that only holds the letters, "banana", as given); both scenes' particle files (0.04 s of
+    # each) hold no `nan`, keep tests/scene_csv.py's cell rule (empty cells only in the columns each declares) and have
+    # empty browning cells (their bubbles); their readers (sph_crumb_measure.py, sph_cake_rise.py) measure them.
+    run csv_nan_empty.lua --out w
+    expect_rc 0 "h.write of nan cells"
+    printf 'a_m,b_m\n1,\n,2\n,banana\n' | cmp -s - w/x.csv || fail "x.csv: $(cat w/x.csv)"
+    grep -q "nan" w/x.txt || fail "x.txt lost its nan: $(cat w/x.txt)"
+    root=$(cd "$here/.." && pwd)
+    run ../../scripts/scenes/sph/bread_of_the_dead.lua --until 0.04 --out d
+    expect_rc 0 "the bread of the dead, 0.04 s"
+    run ../../scripts/scenes/sph/angel_food_cake.lua --set bake=0.02 --set until_t=0.04 --out c
+    expect_rc 0 "the angel food cake, 0.04 s"
+    for f in d/particles_0000.csv d/particles_end.csv c/particles_raw.csv c/particles_end.csv; do
+        sc=$root/scripts/scenes/sph/bread_of_the_dead.lua
+        case $f in c/*) sc=$root/scripts/scenes/sph/angel_food_cake.lua ;; esac
+        grep -qi "nan" "$f" && fail "$f holds nan: $(grep -m1 -i nan "$f")"
+        python3 "$here/scene_csv.py" "$f" "$sc" || fail "$f breaks the cells' rule"
+        python3 - "$f" <<'PY' || fail "$f: no empty browning cell (its bubbles)"
+import csv, sys
+n = sum(1 for r in csv.DictReader(open(sys.argv[1])) if r["browning"] == "")
+print(f"{sys.argv[1]}: {n} empty browning cells")
+sys.exit(0 if n > 0 else 1)
+PY
+    done
+    python3 "$here/sph_crumb_measure.py" 0.006 d/particles_0000.csv d/particles_end.csv || fail "sph_crumb_measure.py"
+    python3 "$here/sph_cake_rise.py" 0.003 0 c/particles_raw.csv c/particles_end.csv || fail "sph_cake_rise.py"
     ;;
 recipes_surface_below_a_gap)
     # #18 (helper userview4): celery_dip.lua's "sauce surface" was h.recipes.height, the highest material on the line,

@@ -50,6 +50,8 @@ def top_level_strings(table):
     """name = "string" entries at the table's own level (not inside h.choice{...} or a nested table)."""
     # comments out, strings kept (a description may hold "--set ..."); the depth count skips the strings' text
     text = re.sub(r"(\"[^\"]*\"|'[^']*')|--[^\n]*", lambda m: m.group(1) or "", table)
+    # h.scene_path("...") is a string default too: the wrappers' paths of the scenes they run (helper userfix10)
+    text = re.sub(r"h\.scene_path\(\s*(\"[^\"]*\"|'[^']*')\s*\)", r"\1", text)
     masked = re.sub(r"\"[^\"]*\"|'[^']*'", lambda m: m.group(0)[0] + "_" * (len(m.group(0)) - 2) + m.group(0)[0], text)
     depth, level0 = 0, []
     for ch, shown in zip(masked, text):

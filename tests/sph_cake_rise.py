@@ -2,7 +2,7 @@
 """sph_cake_rise.py DX A_W BAKED.csv END.csv: the SPH angel food cake
 (scripts/scenes/sph/angel_food_cake.lua) measured from its particles alone
 (its particles_*.csv: x_m, y_m, T_degC, J = det F, browning; a bubble
-particle carries no browning, NaN).
+particle carries no browning: an empty cell, NaN in the rows here).
 
 Pieces: each side of the pan's tube (x below and above the pan's axis,
 x = 0.1 m) is one piece of batter when every particle on it is linked to the
@@ -63,10 +63,21 @@ def gas_volume(T, a_w):
     return min(V, VMAX)
 
 
+def browning(v):
+    """A bubble's browning cell is empty (gas browns not; not measured, docs/outputs.md): NaN here, as the rows carry
+    it. A `nan` written out, as the scene did before helper userfix10, is refused."""
+    if v == "":
+        return math.nan
+    x = float(v)
+    if math.isnan(x):
+        raise ValueError("browning reads %r: not measured is an empty cell (docs/outputs.md)" % v)
+    return x
+
+
 def load(path):
-    """Rows (x, y, T, J, browning, id); id -1 where the file has no id column."""
+    """Rows (x, y, T, J, browning, id); id -1 where the file has no id column; browning NaN for a bubble."""
     with open(path) as f:
-        return [(float(r["x_m"]), float(r["y_m"]), float(r["T_degC"]), float(r["J"]), float(r["browning"]),
+        return [(float(r["x_m"]), float(r["y_m"]), float(r["T_degC"]), float(r["J"]), browning(r["browning"]),
                  int(r.get("id") or -1)) for r in csv.DictReader(f)]
 
 

@@ -3,7 +3,8 @@
 surface, from its particles alone (a particles_*.csv of
 scripts/scenes/sph/bread_of_the_dead.lua: x_m, y_m, T_degC, outer (1 where
 the oven's heat enters, sph_outer.c), browning and saturation; a bubble
-particle is gas and carries neither: NaN).
+particle is gas and carries neither: empty cells, read as NaN here; a `nan`
+cell, which the scene wrote before helper userfix10, is refused).
 
 The centre: the particles within RC (m) of the particles' centroid; the
 outer surface: the particles flagged outer. For each, the mean temperature
@@ -17,6 +18,16 @@ claim_sph_bread_of_the_dead_crust_browns)."""
 import csv, math, os, sys
 
 
+def cell(v):
+    """A CSV cell as a number: empty (not measured, docs/outputs.md) is NaN; a `nan` written out is refused."""
+    if v == "":
+        return math.nan
+    x = float(v)
+    if math.isnan(x):
+        raise ValueError("a cell reads %r: not measured is an empty cell (docs/outputs.md)" % v)
+    return x
+
+
 def nanmean(v):
     v = [x for x in v if not math.isnan(x)]
     return sum(v) / len(v) if v else float("nan")
@@ -24,7 +35,7 @@ def nanmean(v):
 
 def measure(path, rc):
     with open(path) as f:
-        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+        rows = [{k: cell(v) for k, v in r.items()} for r in csv.DictReader(f)]
     n = len(rows)
     cx, cy = sum(r["x_m"] for r in rows) / n, sum(r["y_m"] for r in rows) / n
     centre = [r for r in rows if math.hypot(r["x_m"] - cx, r["y_m"] - cy) < rc]

@@ -80,6 +80,32 @@ tui_dimensionless_without_unit)
     echo "colour bars: $bar"
     echo "$bar" | grep -Eq "[0-9] *$" || fail "the saturation view's colour bar ends in a unit: '$bar'"
     ;;
+tui_status_says_scene_clock)
+    # #18 (helper userfix10; userview4's item 7): the status line gave "t 0.78914 s" where the physical loaf's frames
+    # said "t = 4 min": the dashboard did not know the scene's clock. Bar set before the first run: a scene declaring
+    # time_scale = 300 shows " t 0 s (0 s x 300)" at the start and, after s:run{until_t = 0.5} at the prompt,
+    # " t 2.5 min (0.5 s x 300)" (real minutes past two of them, as a frame's title); the dashboard's default scene,
+    # in Ding Table 2's animation units, shows "t 0 s (animation units)"; a scene that declares neither keeps "t 0 s".
+    TUI_COLS=80 TUI_ROWS=24 start "'$src/tests/tui/clock.lua'"
+    wait_for "paused"
+    screen | sed -n 1p | grep -Fq " t 0 s (0 s x 300) " || fail "line 1 does not give the real time at t = 0"
+    keys :
+    wait_for "^lua>"
+    keys "s:run{until_t = 0.5}" Enter
+    wait_for "the scene's run finished" 30
+    screen | sed -n 1p | grep -Eq " t 2\.5[0-9]* min \(0\.5[0-9]* s x 300\) " ||
+        fail "line 1 does not give 2.5 real minutes at t = 0.5 s"
+    tmux -L "$sock" kill-server 2>/dev/null
+    sock="$sock-cookie" # a server of its own: a new session on the one just killed can race its exit
+    TUI_COLS=80 TUI_ROWS=24 start "'$src/assets/cookie_bake.lua'"
+    wait_for "paused" 20
+    screen | sed -n 1p | grep -Fq " t 0 s (animation units) " || fail "the cookie's line 1 does not say animation units"
+    tmux -L "$sock" kill-server 2>/dev/null
+    sock="$sock-plain"
+    TUI_COLS=80 TUI_ROWS=24 start "'$scene'"
+    wait_for "paused"
+    screen | sed -n 1p | grep -Eq " t 0 s   step 0 " || fail "a scene in real seconds lost its plain time"
+    ;;
 tui_probe_panel_scrolls)
     # a wet dough has more live fields than the probe panel has rows at 80x24:
     # the panel says which it shows and PgDn / PgUp (and > / <) page through

@@ -226,6 +226,10 @@ tui_lua_result tui_lua_resume(tui_lua *t) {
 }
 
 hearth_scene *tui_lua_scene(tui_lua *t) { return hl_current_scene(t->L); }
+int tui_lua_clock(tui_lua *t, double *time_scale) {
+    if (!t->L) return *time_scale = 1, 0;
+    return hl_scene_clock(t->L, time_scale);
+}
 
 /* Completion in Lua: the candidates for a word, sorted. */
 static const char complete_src[] =

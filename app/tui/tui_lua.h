@@ -51,6 +51,8 @@ void tui_lua_discard(tui_lua *t);
 tui_lua_result tui_lua_resume(tui_lua *t);
 /// The scene the session works on (the last h.scene / h.load), or NULL.
 hearth_scene *tui_lua_scene(tui_lua *t);
+/// The current scene's clock (hl_scene_clock): *time_scale real seconds a simulated second; 1 = animation units.
+int tui_lua_clock(tui_lua *t, double *time_scale);
 /// Completions of word (a name, "tbl.na" or "obj:me") from the globals, the
 /// hearth module and scene methods: up to max candidates written as full
 /// words, sorted, into out (each up to 64 bytes). Returns the count.

@@ -136,6 +136,20 @@ static const char *axis_name(int k) { return k == 0 ? "x" : k == 1 ? "y" : "z"; 
 
 /* ---- panels -------------------------------------------------------------- */
 
+/* The simulated time as the scene's frames give it (#18, helper userfix10; userview4's item 7: "t 0.78914 s" where
+ * the physical loaf's frames said "t = 4 min"): with a time_scale (h.scene's, as its pictures take it) the real time
+ * first, in minutes past two of them as render.c's title, then the simulated seconds and the factor; in animation
+ * units (Ding et al. Table 2) the seconds and that they are those units; else the seconds alone. */
+static void sim_time_text(tui_app *a, double t, char *buf, size_t n) {
+    double scale = 1;
+    const int animation = tui_lua_clock(&a->lua, &scale);
+    const double real = t * scale;
+    if (animation) snprintf(buf, n, "t %.5g s (animation units)", t);
+    else if (scale == 1) snprintf(buf, n, "t %.5g s", t);
+    else if (real >= 120) snprintf(buf, n, "t %.4g min (%.5g s x %g)", real / 60, t, scale);
+    else snprintf(buf, n, "t %.4g s (%.5g s x %g)", real, t, scale);
+}
+
 void tui_status_line(tui_app *a, char *buf, unsigned long n) {
     if (!a->s) {
         snprintf(buf, n, "no scene yet (see the log)");
@@ -144,8 +158,10 @@ void tui_status_line(tui_app *a, char *buf, unsigned long n) {
     hearth_stats st;
     hearth_scene_stats(a->s, &st);
     static const char *gs[] = {"ok", "rolled back", "STOPPED"};
-    snprintf(buf, n, "t %.5g s  step %ld  dt %.3g s  CFL %.2f  particles %d  %.0f steps/s  guard %s  %s", st.t,
-             st.step, st.dt, st.cfl, st.particles, a->sps, gs[st.guard], a->running ? "running" : "paused");
+    char tt[96];
+    sim_time_text(a, st.t, tt, sizeof tt);
+    snprintf(buf, n, "%s  step %ld  dt %.3g s  CFL %.2f  particles %d  %.0f steps/s  guard %s  %s", tt, st.step, st.dt,
+             st.cfl, st.particles, a->sps, gs[st.guard], a->running ? "running" : "paused");
 }
 
 static void draw_status(tui_app *a, const tui_rect *r) {
@@ -163,7 +179,15 @@ static void draw_status(tui_app *a, const tui_rect *r) {
     const hearth_scene_def *d = hearth_scene_get_def(a->s);
     char oven[64] = "";
     if (!isnan(d->oven_temperature)) snprintf(oven, sizeof oven, "  oven %.4g degC", d->oven_temperature);
-    snprintf(l1, sizeof l1, " t %.5g s   step %ld   dt %.3g s   CFL %.2f%s", st.t, st.step, st.dt, st.cfl, oven);
+    char tt[96];
+    sim_time_text(a, st.t, tt, sizeof tt);
+    char solver[64];
+    snprintf(solver, sizeof solver, "dt %.3g s   CFL %.2f", st.dt, st.cfl);
+    snprintf(l1, sizeof l1, " %s   step %ld   %s%s", tt, st.step, solver, oven);
+    /* a clock's longer time ("t 3.76 min (0.7521 s x 300)") would push the oven past line 1's end at 80 columns:
+     * dt and CFL go to the head of line 2 instead (11: the short run label and its margin) */
+    const int solver_below = (int)strlen(l1) + 11 > r->w;
+    if (solver_below) snprintf(l1, sizeof l1, " %s   step %ld%s", tt, st.step, oven);
     if ((int)(strlen(l1) + strlen(a->opt.name)) + 28 < r->w) { /* the scene's name when there is room */
         char named[1100];
         snprintf(named, sizeof named, " %.500s  %s", a->opt.name, l1);
@@ -175,8 +199,8 @@ static void draw_status(tui_app *a, const tui_rect *r) {
     const char *run = a->running ? (a->lua.njobs ? "> running (scene run)" : "> running") : "|| paused";
     /* the long run label only where line 1 still fits beside it */
     if ((int)(strlen(l1) + strlen(run)) + 2 > r->w) run = a->running ? "> running" : "|| paused";
-    snprintf(l2, sizeof l2, " particles %d   %.0f steps/s   guard %s   fields: %s", st.particles, a->sps, gs[st.guard],
-             fields);
+    snprintf(l2, sizeof l2, " %s%sparticles %d   %.0f steps/s   guard %s   fields: %s", solver_below ? solver : "",
+             solver_below ? "   " : "", st.particles, a->sps, gs[st.guard], fields);
     int rl = (int)strlen(run);
     put(r->y, 0, r->w - rl - 2, l1); /* the run state keeps its corner: line 1 stops short of it */
     put(r->y + 1, 0, r->w, l2);

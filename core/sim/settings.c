@@ -28,6 +28,7 @@ static const char *const w_transfer[] = {"apic", "pic", NULL};
 static const char *const w_solver[] = {"mpm", "sph", NULL};
 static const char *const w_blend[] = {"nonlinear", "linear", "labels", NULL};
 static const char *const w_mixing[] = {"fixed", "dynamic", NULL};
+static const char *const w_time_units[] = {"real", "animation", NULL};
 static const double box_def[6] = {0, 0, 0, 1, 1, 1};
 static const double gravity_def[3] = {0, -9.81, 0};
 
@@ -142,6 +143,13 @@ static const hearth_setting settings[] = {
                "or random binary labels (Nagasawa et al. Figs. 1, 9, 10)", 0, w_blend, 1),
     LUA_CHOICE("mixing", "dynamic: h.mix bodies share one mixture whose ratios follow the particles (Nagasawa et al. eq. "
                "43-44; needs blend = nonlinear)", 0, w_mixing, 0),
+    /* The scene's clock, for what a user reads (#18, helper userfix10): its pictures' titles and the dashboard's
+     * status line say the same time. Lua-side: the simulation never reads it. */
+    {"time_scale", HEARTH_SETTING_REAL, "1",
+     "the real seconds one simulated second stands for, in a scene whose rates run time_scale times fast (a "
+     "physical preset's oven.time_scale): its pictures (unless one gives its own) and the dashboard give the real time beside the simulated one", 1, 0, 1e9, 1, 0, NULL, NULL, -1, -1, "", 0},
+    LUA_CHOICE("time_units", "what a simulated second is: real (time_scale real seconds), or animation (Ding et al. "
+               "Table 2's animation units, no real time: the dashboard says so beside the time)", 0, w_time_units, 0),
     /* ---- the SPH solver (sph.c; Rodriguez-Arenas 2011 equation numbers), checked when solver = sph ---- */
     SPH(h_factor, "1", "smoothing length h over the particle spacing V0^(1/dim) (2.4: lattice sum of W V within 1e-3 of 1)",
         2.4, 1, 6),

@@ -121,8 +121,7 @@ local function knob_sets()
   return k
 end
 
--- A bad --set is a usage error (exit 2), not a scene error: the object
--- core.usage_error raises is marked so `hearth run` can tell.
+-- A bad --set is a usage error (exit 2), not a scene error: what core.usage_error raises is marked for `hearth run`.
 local usage_error = core.usage_error
 
 -- "--set k=v" as a message shows it: a value past 60 characters (--set leaveners= with a list of 10000 numbers) is
@@ -249,8 +248,8 @@ h.colormap = core.colormap
 
 function h.write(path, text)
   if type(path) ~= "string" or type(text) ~= "string" then error("h.write(path, text): two strings", 2) end
-  -- a CSV cell that is zero reads 0: %.6f of a height's -1e-9 wrote -0.000000 (#18, helpers userview4, userfix8)
-  if path:match("%.csv$") then text = text:gsub("[^,\n]+", function(c)
+  -- a .csv cell: a negative zero reads 0 (%.6f of -1e-9 wrote -0.000000; userview4, userfix8), NaN (not measured) ""
+  if path:match("%.csv$") then text = text:gsub("[^,\n]+", function(c) if c:match("^%-?nan$") then return "" end
     if c:match("^%-0%.?0*$") or c:match("^%-0%.?0*e[-+]%d+$") then return c:sub(2) end end) end
   local ok, e = pcall(core.write_atomic, path, text, "h.write")
   if not ok then error(e, 2) end
@@ -551,6 +550,7 @@ function h.scene(o)
     error(('h.scene: mixing = "dynamic" blends through the model; it needs blend = "nonlinear" (got "%s")'):format(st.blend), 2)
   end
   st.seed = def.seed or scene_setting.seed.default
+  s:_clock(lua_side.time_scale, scene_setting.time_units.words[lua_side.time_units + 1]) -- what a time reads (run.lua)
   h._last_scene = s
   return s
 end

@@ -401,6 +401,20 @@ function h.refuse(msg)
   usage_error(msg, 2)
 end
 
+--- h.scene_path(rel): rel as a path from the folder of the scene file hearth runs (hl_options.scene_dir; with no scene
+--- file, the folder hearth runs in), an absolute path as it is. A script that runs a shipped scene by dofile names it
+--- so and runs from any folder (#18, helper userfix10: scripts/validation/loaf_whatif.lua's
+--- "scripts/scenes/baking/loaf_physical.lua" was read from the working folder, so only from the source root). It only
+--- makes a path: what a scene may read is the sandbox's rule, unchanged (docs/security.md).
+function h.scene_path(rel)
+  if type(rel) ~= "string" or rel == "" then
+    local got = rel == "" and '""' or type(rel)
+    error("h.scene_path: expected a path relative to the scene file's folder, got " .. got, 2)
+  end
+  if rel:sub(1, 1) == "/" then return rel end
+  return (core.options().scene_dir or ".") .. "/" .. rel
+end
+
 --- For a script that runs a shipped scene (dofile) after parsing its own h.params P, a superset of the scene's
 --- names so that every --set reaches it: from here on the scene's h.params returns P's value of each name it
 --- declares, and its own default for a name P does not know (a parameter the scene gained after the script).

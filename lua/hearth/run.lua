@@ -38,10 +38,29 @@ local run_png_keys = { field = true, path = true, kind = true, width = true, hei
 local png_keys = { kind = true, width = true, height = true, axis = true, at = true, range = true, colormap = true, grow = true,
   time_scale = true, label = true, region = true, depth = true }
 
+-- The scene's clock (h.scene's time_scale and time_units; #18, helper userfix10): the real seconds a simulated second
+-- stands for, or Ding et al.'s Table 2 animation units, which no real time measures. Pictures without their own
+-- time_scale take the scene's, and the dashboard's status line reads both (hearth_lua.c hl_scene_clock), so a frame
+-- and the dashboard say the same time.
+function S:_clock(time_scale, units)
+  if units == "animation" and time_scale ~= 1 then
+    error(("h.scene: time_units = \"animation\" has no real time; time_scale = %s asks for one (leave it at 1)")
+      :format(time_scale), 3)
+  end
+  local st = self:_state()
+  st.time_scale, st.time_units = time_scale, units
+end
+
 -- s:png checks its options here first, for the "did you mean" (the C method checks again)
 local raw_png = S.png
 function S:png(field, path, opts)
   if type(opts) == "table" then check_keys(opts, png_keys, "s:png") end
+  local scale = self:_state().time_scale
+  if scale and scale ~= 1 and (opts == nil or type(opts) == "table" and opts.time_scale == nil) then
+    local o = { time_scale = scale } -- the scene's clock (S:_clock), where the picture gives none
+    for k, v in pairs(opts or {}) do o[k] = v end
+    opts = o
+  end
   local ok, r, info = pcall(raw_png, self, field, path, opts)
   if not ok then error(r, 2) end -- the scene's line, not this one
   return r, info

@@ -35,7 +35,7 @@ local P = h.params { dim = 3, dx = 0.008, until_t = 2.5, frames = 10, slit_depth
     round = "rounded ends as a baker shapes them: the 2D profile turned about the loaf's axis at each end" },
   tray = "separate", -- bread.lua's own tray, passed on (h.pass_params: bread.lua's words hold)
   tray_mode = h.choice("", h.contact_words, { [""] = "bread.lua's tray (its --set tray)" }), tray_friction = 0.4, grid_shift = 0,
-  bread = "scripts/scenes/baking/bread.lua" }
+  bread = h.scene_path("../scenes/baking/bread.lua") }
 if P.dim ~= 3 then error(("bread3d.lua: dim %d: expected 3 (bread.lua itself runs 2D)"):format(P.dim)) end
 if not (P.box_z >= 0.12 and P.box_z <= 0.6) then error(("bread3d.lua: box_z %g m: expected [0.12, 0.6]"):format(P.box_z)) end
 if not (P.zw > 0 and P.zw <= P.box_z) then

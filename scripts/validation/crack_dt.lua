@@ -18,7 +18,7 @@
 --           within 0.1 of their explicit limit, which happens only at the
 --           smallest steps; 1 carries them every step, single rate)
 --   hearth run scripts/validation/crack_dt.lua --quiet [--set dx=0.004] [--set dt_max=2e-5] [--set only=0] ...
--- from the source root (or --set bread=PATH to bread.lua).
+-- from any folder (the scene is found beside this script: h.scene_path; or --set bread=PATH to bread.lua).
 -- Besides bread.csv's row, every frame prints the steps so far, the step's dt,
 -- the two mechanical speeds and the fields' explicit limit, so the table can
 -- say which limit set the step, and the scene's totals of water, CO2 and heat
@@ -27,7 +27,8 @@
 -- seen at the frames (smallest, largest) and the mean step.
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth = 0.02, slit_width = 0.01, only = 1,
-  cfl = 0.5, dt_max = 0, transfer = h.choice { "apic", apic = "APIC (the scene setting's default)", pic = "PIC: no affine part, dissipative" }, field_steps = 0, bread = "scripts/scenes/baking/bread.lua" }
+  cfl = 0.5, dt_max = 0, transfer = h.choice { "apic", apic = "APIC (the scene setting's default)", pic = "PIC: no affine part, dissipative" }, field_steps = 0,
+  bread = h.scene_path("../scenes/baking/bread.lua") }
 
 -- bread.lua's own h.params sees the values parsed here (it declares a subset of these names)
 h.pass_params(P)

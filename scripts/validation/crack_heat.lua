@@ -17,7 +17,7 @@
 --                 to fracture over X): > 1 makes a wetter crust as brittle as a
 --                 drier one (1: the preset)
 --   hearth run scripts/validation/crack_heat.lua --quiet [--set dx=0.004] [--set conductivity=0.0234] ...
--- from the source root (or --set bread=PATH to bread.lua).
+-- from any folder (the scene is found beside this script: h.scene_path; or --set bread=PATH to bread.lua).
 -- Besides bread.csv's row, every frame prints the temperature (degC) of the
 -- loaf's top particle on its axis, of the particle 10 mm below it, of the
 -- crumb's centre (35 mm above the tray) and of the bottom particle, and the
@@ -25,7 +25,8 @@
 local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 10, slit_depth = 0.02, slit_width = 0.01, only = 1,
-  conductivity = 1, oven = -1, pan = -1, set_strain = -1, set_prop = 0, dry_shift = 1, dough = -1, bread = "scripts/scenes/baking/bread.lua" }
+  conductivity = 1, oven = -1, pan = -1, set_strain = -1, set_prop = 0, dry_shift = 1, dough = -1,
+  bread = h.scene_path("../scenes/baking/bread.lua") }
 
 -- bread.lua's own h.params sees the values parsed here (it declares a subset of these names)
 h.pass_params(P)

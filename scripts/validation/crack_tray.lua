@@ -8,7 +8,7 @@
 --   grid_shift     the box's floor moved down by this much (m, [0, 0.02); default 0), so the grid's node rows
 --                  fall elsewhere against the tray (y = 0.02; docs/validation.md, "The loaf's foot on its tray")
 --   hearth run scripts/validation/crack_tray.lua --quiet [--set dx=0.004] [--set tray_friction=0] ...
--- from the source root (or --set bread=PATH to bread.lua).
+-- from any folder (the scene is found beside this script: h.scene_path; or --set bread=PATH to bread.lua).
 -- Besides bread.csv's row, every frame prints the plain loaf's base: the width of its
 -- lowest half-cell row of particles, its overall width, and the height above the tray
 -- of the lowest particle of its outermost one-cell column on each side (the foot),
@@ -16,7 +16,8 @@
 -- core/sim/solver/mpm_touch.c), and where its cracked particles (damage 1) are.
 local h = require "hearth"
 local P = h.params { dim = 2, dx = 0.005, until_t = 2.5, frames = 5, slit_depth = 0.02, slit_width = 0.01, only = 1,
-  tray_mode = h.choice("separate", h.contact_words), tray_friction = 0.4, grid_shift = 0, bread = "scripts/scenes/baking/bread.lua" }
+  tray_mode = h.choice("separate", h.contact_words), tray_friction = 0.4, grid_shift = 0,
+  bread = h.scene_path("../scenes/baking/bread.lua") }
 if not (P.grid_shift >= 0 and P.grid_shift < 0.02) then
   error(("crack_tray.lua: grid_shift %g m: expected [0, 0.02) (the box's floor moved down, below the tray)"):format(P.grid_shift))
 end

@@ -12,14 +12,15 @@
 --          dry, against measurements? (#18, helper crustdry)")
 --   hearth run scripts/validation/loaf_whatif.lua --quiet [--set dx=0.0025] [--set open=72] [--set evap=8]
 --     [--set diff=0.1] [--out DIR]
--- from the source root (or --set loaf=PATH to loaf_physical.lua). It writes what loaf_physical.lua writes
--- (loaf.csv: the area, height and base_gap_m per real minute; temperature_%04d.png; browning.png: look at the
--- frames, a torn flank or crown shows there and in no single number), and at the end prints the loaf's axis column
--- (particles within dx/2 of it, from the top down): each one's depth under the top particle, saturation and
--- browning, and where the moisture ratio X = s / s0 first reaches 0.5 (the dried layer).
+-- from any folder (the scene is found beside this script: h.scene_path; or --set loaf=PATH to loaf_physical.lua). It
+-- writes what loaf_physical.lua writes (loaf.csv: the area, height and base_gap_m per real minute;
+-- temperature_%04d.png; browning.png: look at the frames, a torn flank or crown shows there and in no single
+-- number), and at the end prints the loaf's axis column (particles within dx/2 of it, from the top down): each one's
+-- depth under the top particle, saturation and browning, and where the moisture ratio X = s / s0 first reaches 0.5
+-- (the dried layer).
 local h = require "hearth"
 local P = h.params { dx = 0.005, frames = 25, latent = true, until_real = 0, tray = "separate", open = 70, h_c = 0,
-  evap = 1, diff = 1, loaf = "scripts/scenes/baking/loaf_physical.lua" }
+  evap = 1, diff = 1, loaf = h.scene_path("../scenes/baking/loaf_physical.lua") }
 
 -- loaf_physical.lua's own h.params sees the values parsed here (it declares a subset of these names)
 h.pass_params(P)

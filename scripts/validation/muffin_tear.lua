@@ -46,14 +46,14 @@
 --                 top, and the highest intact one's horizontal stress (Pa, tension positive) (helper
 --                 crownband: does the crown's damage localise, or spread? do a crack's neighbours unload?)
 --   hearth run scripts/validation/muffin_tear.lua --quiet --set cups=1 --set until_t=1.5 [--set dry_fracture=0] ...
--- from the source root (or --set muffins=PATH to muffins.lua).
+-- from any folder (the scene is found beside this script: h.scene_path; or --set muffins=PATH to muffins.lua).
 local h = require "hearth"
 local D = require "hearth.dough"
 local P = h.params { dim = 2, dx = 0.004, until_t = 3, frames = 6, cups = 3, fill = 0.022, wall_mode = "slip",
   dry_fracture = 1, heat_set = 1, glass = 1, glass_at = 0.65, set_strain = -1, air_beta = 1, damage_frames = 0,
   fracture = 1, band = 1, skin_dry = 1, crust_depth = 0, axis_probe = 0, crown_probe = 0, set_prop = 0, two_field = 0,
   set_stiff = 1, ppc = 0,
-  muffins = "scripts/scenes/baking/muffins.lua" }
+  muffins = h.scene_path("../scenes/baking/muffins.lua") }
 
 -- muffins.lua's own h.params sees the values parsed here (it declares a subset of these names)
 h.pass_params(P)

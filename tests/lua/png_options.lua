@@ -39,9 +39,10 @@ elseif which == "label" then
   print("label title: " .. l.title)
   local _, ls = s:png("temperature", "label_scaled.png", { label = "oven 110 °C", time_scale = 50 })
   print("scaled title: " .. ls.title)
-  local _, long = s:png("temperature", "label_64.png", { label = ("x"):rep(64) })
-  print("64-byte title length " .. #long.title)
-  refused { label = ("x"):rep(65) }
+  -- the longest label, HEARTH_PICTURE_LABEL_MAX (64 bytes until helper userfix10 made it 128), whole in the title
+  local _, long = s:png("temperature", "label_128.png", { label = ("x"):rep(128) })
+  print("128-byte title length " .. #long.title)
+  refused { label = ("x"):rep(129) }
   refused { label = "two\nlines" }
   -- long and with an escape: refused for the escape, so the length's message (which quotes the label's start)
   -- never carries it to the terminal
@@ -50,7 +51,7 @@ elseif which == "label" then
   s:run { until_t = 0.002, every = 0.001, png = { field = "temperature", path = "run_%04d.png", label = "oven 110 °C" } }
   local ok, err = pcall(s.run, s, { until_t = s:stats().t + 0.001, png = { field = "temperature", label = {} } })
   print("run_label_table " .. tostring(ok) .. " " .. tostring(err))
-  ok, err = pcall(s.run, s, { until_t = s:stats().t + 0.001, png = { field = "temperature", label = ("y"):rep(65) } })
+  ok, err = pcall(s.run, s, { until_t = s:stats().t + 0.001, png = { field = "temperature", label = ("y"):rep(129) } })
   print("run_label_long " .. tostring(ok) .. " " .. tostring(err))
 elseif which == "region" then
   -- png_region_option (#18, helper userfix5): a close-up of the block, particles and slice, and a run's frames

@@ -680,8 +680,12 @@ typedef struct hearth_picture_def {
     double depth;
 } hearth_picture_def;
 
-/// The longest hearth_picture_def.label in bytes: with the longest time it still fits the title's 192 bytes.
-#define HEARTH_PICTURE_LABEL_MAX 64
+/// The longest hearth_picture_def.label in bytes: with the longest time and a 3D picture's plane it still fits the
+/// title's 320 bytes (128 + 3 + 87 + 46 at the most: a 19-digit step, "particles at z = ... ± ... m"). It was 64
+/// while the title was one line (#18, helper userfix3); since a title that one line would set too small puts its label
+/// on a line of its own, across the picture (render.c, helper userfix5), what bounds a label is this buffer
+/// (#18, helper userfix10: pull_twist.lua's label with eta's unit, 67 bytes, fell back to its short form).
+#define HEARTH_PICTURE_LABEL_MAX 128
 
 hearth_picture_def hearth_default_picture_def(void);
 
@@ -697,7 +701,7 @@ typedef struct hearth_picture_info {
     double area[4];      ///< the plot area: left, top, width, height (pixels)
     double view_lo[2], view_hi[2]; ///< the domain it shows (m), horizontal then vertical axis
     double bar[4];       ///< the colour bar: left, top, width, height (pixels); range[1] at the top
-    char title[192];     ///< the title as drawn: the label, the time (real and simulated with a time_scale) and the step
+    char title[320];     ///< the title as drawn: the label, the time (real and simulated with a time_scale) and the step
 } hearth_picture_info;
 
 /// Draw a picture of the scene as an RGB PNG, written atomically: the field in

@@ -225,7 +225,7 @@ static double colorbar(canvas *c, const frame *f, int map, const char *field, co
  * once the picture is copied into a note. The title ends a font size short of the colour bar's name (right, px),
  * whose line it shares: a long one (a label, the real and simulated times) starts at the canvas's left margin
  * instead of the plot's and, if it still does not fit, is set smaller, down to half the font size, and past that is cut
- * there (a 64-byte label of wide letters; info->title keeps it whole) (#18: drying.lua's "time lapse: ..." title had
+ * there (a long label of wide letters; info->title keeps it whole) (#18: drying.lua's "time lapse: ..." title had
  * run into "saturation (-)" at 800 px). */
 /* The size (px) that sets text within room px: the font size fs, or smaller down to half of it. Measured again at the
  * smaller size: the font's hinted advances round glyph by glyph, so the width is not quite proportional
@@ -265,7 +265,7 @@ static void title(canvas *c, const frame *f, const hearth_scene *s, const hearth
     char *buf = info->title;
     const size_t n = sizeof info->title;
     const double time_scale = d->time_scale;
-    int at = d->label && d->label[0] ? snprintf(buf, n, "%s   ", d->label) : 0; /* label <= 64 bytes: fits */
+    int at = d->label && d->label[0] ? snprintf(buf, n, "%s   ", d->label) : 0; /* label <= 128 bytes: fits */
     if (time_scale == 1) {
         snprintf(buf + at, n - at, "t = %.4g s   (step %ld)", s->t, s->step);
     } else {

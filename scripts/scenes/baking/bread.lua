@@ -61,7 +61,7 @@ local TRAY, WIDTH, BODY, SPACING = 0.02, 0.08, 0.03, 0.14 -- m: tray, loaf width
 local zc, ZW = 0.06, 0.06 -- 3D: loaves are extruded along z over +-ZW/2
 local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(3 * SPACING, 0.14, 0.12) },
   oven = { temperature = oven.temperature, beta = oven.beta }, name = "bread", browning = true,
-  browning_scale = oven.water_time_scale }
+  browning_scale = oven.water_time_scale, time_units = "animation" }
 h.recipes.tray(s, TRAY, { temperature = oven.pan_temperature, beta = oven.pan_beta, mode = P.tray })
 local dough = h.material("cam_clay_dough", h.library.paper.bread)
 

@@ -231,7 +231,8 @@ for _, T in ipairs(ovens) do
     oven = { temperature = T, beta = oven.beta, wall_temperature = oven.wall_temperature,
       emissivity = oven.emissivity, radiation_scale = oven.radiation_scale }, gas_vent = vent, name = "cookies", seed = P.seed,
     browning = physical or nil, browning_scale = S, latent_heat = physical and oven.latent_heat or nil,
-    boiling_point = physical and oven.boiling_point or nil, vent_porosity = physical and oven.vent_porosity or nil }
+    boiling_point = physical and oven.boiling_point or nil, vent_porosity = physical and oven.vent_porosity or nil,
+    time_scale = S, time_units = physical and "real" or "animation" }
   -- the physical preset's sheet goes in cold (oven.pan_start_temperature, pan_warm_time: dough_physical.lua) and the
   -- dough draws its heat from it (oven.pan_heat_capacity): the sheet is the box's floor, each cookie's 0.18 m share
   -- of it, a third under the dough (2D: per metre of depth; 3D: the box's 0.12 m deep)

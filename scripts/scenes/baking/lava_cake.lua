@@ -104,7 +104,8 @@ local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, H, 0.1) }, gr
   oven = { temperature = oven.temperature, beta = oven.beta, wall_temperature = oven.wall_temperature,
     emissivity = oven.emissivity, radiation_scale = oven.radiation_scale }, name = "lava_cake",
   latent_heat = physical and oven.latent_heat or nil, boiling_point = physical and oven.boiling_point or nil,
-  browning = physical or nil, browning_scale = physical and oven.browning_scale or nil }
+  browning = physical or nil, browning_scale = physical and oven.browning_scale or nil, time_scale = S,
+  time_units = physical and "real" or "animation" }
 s:collider { shape = h.box(v(-1, -1, -1), v(W + 1, PLATE, 1)), mode = "slip", friction = 0.5 }
 local ring_shape = d3 and (h.cylinder(v(XC, PLATE + HC / 2, zc), { 0, 1, 0 }, R + WALL, HC / 2)
     - h.cylinder(v(XC, PLATE + HC / 2, zc), { 0, 1, 0 }, R, HC))

@@ -52,7 +52,7 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.14, 0.14 } }, name
   oven = { temperature = oven.temperature, beta = P.h_c > 0 and P.h_c * S or oven.beta, wall_temperature = oven.wall_temperature,
     emissivity = oven.emissivity, radiation_scale = oven.radiation_scale }, latent_heat = P.latent and oven.latent_heat,
   boiling_point = oven.boiling_point, browning = true, browning_scale = oven.browning_scale,
-  gas_vent = oven.gas_vent, vent_porosity = oven.vent_porosity }
+  gas_vent = oven.gas_vent, vent_porosity = oven.vent_porosity, time_scale = S }
 -- the tray goes in cold with the dough (oven.pan_start_temperature, pan_warm_time: dough_physical.lua) and the dough
 -- draws its heat from it (oven.pan_heat_capacity): the sheet is the box's floor, 0.14 m per metre of depth, 57% under
 -- the loaf (cookies.lua's sheet likewise; #18, helper userfix7: it had stood at 200 degC from the first step)

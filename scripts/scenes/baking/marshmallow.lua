@@ -195,7 +195,7 @@ for _, name in ipairs(names) do
     local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, H, 0.08) }, gravity = v(0, 0, 0),
       oven = roasted and { temperature = c.ambient_theta, beta = c.ambient_beta, saturation = 0 }
         or { temperature = c.theta0, beta = c.ambient_beta, saturation = S0 },
-      name = "marshmallow" }
+      name = "marshmallow", time_units = "animation" }
     local lower = s:collider { shape = h.box(v(xc - CW, BASE - AWAY - CT, zc - CW), v(xc + CW, BASE - AWAY, zc + CW)),
       mode = P.mode, friction = P.friction }
     local upper = s:collider { shape = h.box(v(xc - CW, BASE + HM + GAP + AWAY, zc - CW),

@@ -85,7 +85,8 @@ local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.1, 0.08) },
     emissivity = oven.emissivity, radiation_scale = oven.radiation_scale }, name = "muffins", browning = true,
   browning_scale = physical and oven.browning_scale or oven.water_time_scale, latent_heat = physical and oven.latent_heat,
   boiling_point = physical and oven.boiling_point or nil, gas_vent = physical and oven.gas_vent or nil,
-  vent_porosity = physical and oven.vent_porosity or nil }
+  vent_porosity = physical and oven.vent_porosity or nil, time_scale = S,
+  time_units = physical and "real" or "animation" }
 local batter = h.material("cam_clay_dough", physical and h.library.dough.muffin or h.library.paper.muffin)
 -- the paper batter's dried skin cracks (its damage field); the physical one has no fracture law
 local cracks = not physical

@@ -139,7 +139,8 @@ local s = h.scene { dim = P.dim, dx = dx, box = { v(0, 0, 0), v(W, 0.18, 0.1) },
   name = "pancake", oven = physical and { temperature = oven.temperature, beta = oven.beta,
     wall_temperature = oven.wall_temperature, emissivity = oven.emissivity, radiation_scale = oven.radiation_scale } or nil,
   latent_heat = physical and oven.latent_heat or nil, boiling_point = physical and oven.boiling_point or nil,
-  browning = physical or nil, browning_scale = physical and oven.browning_scale or nil }
+  browning = physical or nil, browning_scale = physical and oven.browning_scale or nil, time_scale = S,
+  time_units = physical and "real" or "animation" }
 s:collider { shape = h.box(v(-1, -1, -1), v(W + 1, PAN, 1)), mode = "separate", friction = 0.5,
   temperature = pan_T, beta = oven.pan_beta }
 -- the spatula: flush with the pan's top under where the batter lands

@@ -201,11 +201,12 @@ end
 -- J's colour runs over 1-1.5 (beyond it, the top colour): a necking dough dilates by tens of percent, while the
 -- whole range ran to the one particle torn loose at a grip (J 27 at 0.4 s), which left every strip dark
 -- The title names the grid (#18, helper userview3: the frames showed nine doughs with nothing to say which is which):
--- the yield stresses left to right and the penalties bottom to top, or, when the lists do not fit a title's 64
--- bytes, which way each rises.
+-- the yield stresses left to right and the penalties bottom to top, each with its unit (eta's is the plugin's, Pa^3
+-- s; #18, helper userfix10), or, when the lists do not fit a label's 128 bytes (HEARTH_PICTURE_LABEL_MAX), which way
+-- each rises.
 local function list(t) local r = {} for i, x in ipairs(t) do r[i] = ("%g"):format(x) end return table.concat(r, ", ") end
-local label = ("tau_y %s Pa across; eta %s up"):format(list(taus), list(etas))
-if #label > 64 then label = "tau_y rises left to right, eta bottom to top" end
+local label = ("tau_y %s Pa across; eta %s Pa^3 s up"):format(list(taus), list(etas))
+if #label > 128 then label = "tau_y (Pa) rises left to right, eta (Pa^3 s) bottom to top" end
 s:run { until_t = P.until_t, every = P.until_t / P.frames,
   png = { field = "J", path = "j_%04d.png", range = { 1, 1.5 }, label = label } }
 measure(s:stats().t)
@@ -213,7 +214,7 @@ local rows = { "tau_y_Pa,eta_Pa3s,length_m,neck_m,sag_m,gap_m,torn" }
 for _, d in ipairs(doughs) do
   rows[#rows + 1] = ("%g,%g,%.5f,%.5f,%.5f,%.5f,%d"):format(d.tau, d.eta, d.hi - d.lo, d.neck, d.sag, d.gap,
     d.torn and 1 or 0)
-  print(("tau_y %6g Pa, eta %6g: length %.4f m, neck %.4f m (of %.3f), sag %.4f m, gap %.4f m%s"):format(d.tau, d.eta,
-    d.hi - d.lo, d.neck, T, d.sag, d.gap, d.torn and ", torn" or ""))
+  print(("tau_y %6g Pa, eta %6g Pa^3 s: length %.4f m, neck %.4f m (of %.3f), sag %.4f m, gap %.4f m%s"):format(d.tau,
+    d.eta, d.hi - d.lo, d.neck, T, d.sag, d.gap, d.torn and ", torn" or ""))
 end
 h.write("pull_twist.csv", table.concat(rows, "\n") .. "\n")

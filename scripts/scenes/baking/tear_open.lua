@@ -98,7 +98,7 @@ print(("tear_open.lua: h.library.paper.%s, animation units (Ding Table 2): heat 
 local W, H = muffin and 0.14 or 0.24, muffin and 0.1 or 0.14
 local s = h.scene { dim = 2, dx = dx, box = { { 0, 0 }, { W, H } },
   oven = not P.raw and { temperature = oven.temperature, beta = oven.beta } or nil, name = "tear_open",
-  browning = true, browning_scale = oven.water_time_scale, two_field = P.two_field }
+  browning = true, browning_scale = oven.water_time_scale, two_field = P.two_field, time_units = "animation" }
 local material = h.material("cam_clay_dough", h.library.paper[P.food])
 local xc = math.floor(W / 2 / dx + 0.5) * dx -- on a grid node, as muffins.lua's cups
 local BASE, R, FLOOR -- m: the food's floor, half its raw width, how far below BASE its support reaches

@@ -72,7 +72,8 @@
 -- and the outer surface's browning and saturation; both CSVs by simulated time t_s (s; named t before helper
 -- userfix5) and, last, t_real_min, the frames' real minutes), particles_raw.csv, particles_baked.csv and
 -- particles_end.csv (the particles after the first step, as the bake ends and
--- at until_t: tests/sph_cake_rise.py) and browning and
+-- at until_t: tests/sph_cake_rise.py; a bubble's browning is an empty cell, #18 helper userfix10, where it had been
+-- `nan`: it is gas) and browning and
 -- temperature frames (the browning index of Zanoni et al. 1995 from
 -- temperature history; browning_scale = 1600 lets the 1.5 s bake stand for
 -- 40 minutes).
@@ -88,6 +89,9 @@
 -- cooling); bands.csv's B_* the bands' mean browning index and S_* their batter's mean saturation.
 -- volume.csv has no unit: phase
 -- bands.csv has no unit: B_top, B_crumb, B_bottom, S_crumb, B_outer, S_outer
+-- particles_raw.csv may leave empty (not measured): browning
+-- particles_baked.csv may leave empty (not measured): browning
+-- particles_end.csv may leave empty (not measured): browning
 local h = require "hearth"
 -- oven: above the batter's 26 degC start (the bake heats it; the temperature frames span the two); foam: V_b0 of eq.
 -- 3.50 in maxwell_sph's range [0, 100]; bubble_share: discs of 4 mm on a square pitch touch at pi / 4 (--set
@@ -131,7 +135,7 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { cx - half, 0 }, { cx + half, 0
           bubble_T0 = T0, tension = true, alpha_c = 0.1, beta_c = 0.8,
           gas_law = P.water_activity > 0, bubble_vapour = P.water_activity, bubble_stays_open = P.water_activity > 0 },
   oven = { temperature = P.oven, beta = 0, radiation_scale = 1600 }, browning = true, browning_scale = 1600,
-  latent_heat = P.water or nil, boiling_point = P.water and 100 or nil }
+  latent_heat = P.water or nil, boiling_point = P.water and 100 or nil, time_scale = 1600 }
 
 -- The crumb sets while hot and softens again as it cools (the structure of
 -- an angel food cake left upright is not set enough to hold).

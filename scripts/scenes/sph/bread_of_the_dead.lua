@@ -74,6 +74,10 @@
 -- outer, 1 on the loaf's outer surface (the boundary field, sph_outer.c), has no unit (tests/scene_csv.py's rule):
 -- particles_NNNN.csv has no unit: outer
 -- particles_end.csv has no unit: outer
+-- A bubble is gas: its browning and saturation are empty cells, not measured (and the saturation of every particle
+-- with --set water=false); they had been `nan` (#18, helper userfix10: h.write writes a NaN in a CSV as empty):
+-- particles_NNNN.csv may leave empty (not measured): browning, saturation
+-- particles_end.csv may leave empty (not measured): browning, saturation
 local h = require "hearth"
 -- the bread dough's physical properties (lua/hearth/dough_physical.lua: Zanoni et al. 1995, Choi & Okos) and the
 -- scene's time scale S (browning_scale: 1.2 s for a 30-minute bake), which heat_ext, heat_int, the water and the
@@ -114,7 +118,7 @@ local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solv
           bubble_T0 = T0, tension = true, artificial_stress = P.artificial_stress },
   oven = { temperature = P.oven, beta = 0, radiation_scale = S }, -- walls (--set) radiate S times fast, as heat_ext
   browning = true, browning_scale = S, -- Zanoni et al. 1995 kinetics; 1.2 s stand for a 30-minute bake
-  latent_heat = P.water or nil, boiling_point = P.water and 100 or nil }
+  latent_heat = P.water or nil, boiling_point = P.water and 100 or nil, time_scale = S }
 
 local props = { density = 1100, bulk = 2e4, lambda = P.lambda, viscosity = P.viscosity, mu_e = P.mu_e }
 -- WATER (#18, helper sphcrumb): the dough is bread dough (its heat capacity above is h.library.dough.bread's), so
@@ -192,7 +196,7 @@ end
 local knuckle_x = on_body(math.pi / 2 + 1.25, kn)[1]
 -- particle positions (x_m, y_m), temperatures (T_degC) and the outer-surface flag, for measures that do not go
 -- through the density field (tests/sph_dead_measure.py's pieces and inner gaps; bread_roll.lua writes its own)
--- (and the browning and saturation: NaN for a bubble, which is gas, and the saturation for every particle with the
+-- (and the browning and saturation: empty for a bubble, which is gas, and the saturation for every particle with the
 -- water off; tests/sph_crumb_measure.py)
 local function positions(path)
   local fields = { "x", "temperature", "boundary", "browning" }

@@ -182,7 +182,7 @@ sph.surface_vent = P.vent -- the cells the air reaches vent (sph_gas.c; docs/val
 sph.xsph0 = P.xsph0 -- eq. 4.4 at the raw end (Table 4.1: 0.05)
 local s = h.scene { dim = 2, dx = P.dx, box = { { 0, 0 }, { 0.16, 0.12 } }, solver = "sph", sph = sph,
   oven = { temperature = P.oven, beta = 0, radiation_scale = 400 }, browning = true, browning_scale = 400, -- S: walls by --set
-  latent_heat = P.crust or nil, boiling_point = P.crust and 100 or nil }
+  latent_heat = P.crust or nil, boiling_point = P.crust and 100 or nil, time_scale = 400 }
 
 local function scaled(c, k, cap)
   local pts = {}
