@@ -43,6 +43,7 @@ import csv, math, os, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sph_roll_measure import piece_labels, piece_sizes  # noqa: E402
+import csv_cell  # noqa: E402
 
 AXIS = 0.1  # the pan's mirror axis (the scene's cx), m
 P_A, T0, VMAX = 101325.0, 26.0, 4.0
@@ -63,21 +64,11 @@ def gas_volume(T, a_w):
     return min(V, VMAX)
 
 
-def browning(v):
-    """A bubble's browning cell is empty (gas browns not; not measured, docs/outputs.md): NaN here, as the rows carry
-    it. A `nan` written out, as the scene did before helper userfix10, is refused."""
-    if v == "":
-        return math.nan
-    x = float(v)
-    if math.isnan(x):
-        raise ValueError("browning reads %r: not measured is an empty cell (docs/outputs.md)" % v)
-    return x
-
-
 def load(path):
     """Rows (x, y, T, J, browning, id); id -1 where the file has no id column; browning NaN for a bubble."""
     with open(path) as f:
-        return [(float(r["x_m"]), float(r["y_m"]), float(r["T_degC"]), float(r["J"]), browning(r["browning"]),
+        return [(float(r["x_m"]), float(r["y_m"]), float(r["T_degC"]), float(r["J"]),
+                 csv_cell.cell(r["browning"], "browning"),
                  int(r.get("id") or -1)) for r in csv.DictReader(f)]
 
 

@@ -16,16 +16,8 @@ claim_sph_bread_of_the_dead_crumb_pale, tests/sph_dead_test.sh; outer_T, the
 outer surface's mean temperature, helper deadcrust's
 claim_sph_bread_of_the_dead_crust_browns)."""
 import csv, math, os, sys
-
-
-def cell(v):
-    """A CSV cell as a number: empty (not measured, docs/outputs.md) is NaN; a `nan` written out is refused."""
-    if v == "":
-        return math.nan
-    x = float(v)
-    if math.isnan(x):
-        raise ValueError("a cell reads %r: not measured is an empty cell (docs/outputs.md)" % v)
-    return x
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import csv_cell  # noqa: E402
 
 
 def nanmean(v):
@@ -35,7 +27,7 @@ def nanmean(v):
 
 def measure(path, rc):
     with open(path) as f:
-        rows = [{k: cell(v) for k, v in r.items()} for r in csv.DictReader(f)]
+        rows = [{k: csv_cell.cell(v) for k, v in r.items()} for r in csv.DictReader(f)]
     n = len(rows)
     cx, cy = sum(r["x_m"] for r in rows) / n, sum(r["y_m"] for r in rows) / n
     centre = [r for r in rows if math.hypot(r["x_m"] - cx, r["y_m"] - cy) < rc]
