@@ -395,8 +395,10 @@ function S:run(o)
     if st.restored and not st.csv_continued[o.csv] then rows = continue_csv(o.csv, rows, t0) end
     st.csv_continued[o.csv] = true
   end
+  local movie_from -- a movie of a continued series is the whole series', both legs', not the second leg's over it
   if o.png and st.restored and not st.png_continued then -- the first leg's frames stay (kept_frames above)
-    st.frame = math.max(st.frame, kept_frames(o.png.path or "frame_%04d.png", png_before(self:stats().step)))
+    local kept = kept_frames(o.png.path or "frame_%04d.png", png_before(self:stats().step))
+    if kept > 0 and st.frame == 0 then st.frame, movie_from = kept, 0 end
   end
   if o.png then st.png_continued = true end
   local function frame()
@@ -492,7 +494,7 @@ function S:run(o)
   end
   local stt = self:stats()
   core.progress(stt.t, until_t, stt.step, true)
-  if mv then movie_write(st, mv, first_frame, where) end
+  if mv then movie_write(st, mv, movie_from or first_frame, where) end
   st.ran = true
   if rest then stt.at_rest = at_rest end
   return stt
