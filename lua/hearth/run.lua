@@ -201,7 +201,7 @@ end
 -- A restored scene's PNG frames and PLY dumps continue the same way (#18, helper restartkeep): the first s:run of
 -- a pattern keeps the files pattern % 0, 1, ... that exist and were drawn before the checkpoint, and numbers on
 -- after them. Each file says when it was drawn: a PLY's header its time ("comment hearth t=", %.17g, exact), a PNG's
--- title its step (render.c ends every title with "step N)"; its time is in %.4g). before(head) reads a file's first
+-- title its step (render.c writes "step N)" in every title; its time is in %.4g). before(head) reads a file's first
 -- 8 KB (the PNG's title chunk is written before the image, the PLY's header before the particles).
 local function kept_frames(pattern, before)
   local conv = 0
