@@ -305,17 +305,6 @@ static int metric_report(lua_State *L, const run_args *a, int status) {
     return status;
 }
 
-/* Every PNG of the run names it: the command line as given and the version (run.json says the same, beside it). */
-static void png_source(const run_args *a) {
-    char text[1024];
-    size_t n = (size_t)snprintf(text, sizeof text, "hearth");
-    for (int i = 0; i < a->argc && n < sizeof text; i++)
-        n += (size_t)snprintf(text + n, sizeof text - n, " %s", a->argv[i]);
-    if (n < sizeof text)
-        snprintf(text + n, sizeof text - n, " (hearth %s, revision %s)", HEARTH_VERSION, run_log_revision());
-    hearth_png_set_source(text);
-}
-
 int cmd_run(int argc, char **argv) {
     run_args a;
     int rc = app_run_parse(&a, argc, argv, "run");
@@ -330,7 +319,6 @@ int cmd_run(int argc, char **argv) {
     }
     run_log rec;
     run_log_start(&rec, "run", a.argc, a.argv, a.scene, a.out, a.sets, a.nsets);
-    png_source(&a);
     int status = 0;
     if (luaL_loadfilex(L, a.scene, "t") != LUA_OK) status = report(L, "run", a.out);
     else if (hl_pcall(L, 0, 0) != LUA_OK) status = report(L, "run", a.out);

@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "crash.h"
 #include "hearth/hearth.h"
+#include "run_log.h"
 
 static void usage(FILE *f) {
     fprintf(f,
@@ -90,6 +91,18 @@ const char *app_did_you_mean(const char *word, const char *const *names) {
     return pick;
 }
 
+/* Every PNG a command draws names it in PNG's "Source" text: the command line as given and hearth's version, so a
+ * run's frame, the demo's, the dashboard's slice, a trade plot or a flow curve copied elsewhere still says what drew
+ * it (#18: helper userview5 for hearth run, helper restartkeep for every command, set once here). */
+static void png_source(int argc, char **argv) {
+    char text[1024];
+    size_t n = (size_t)snprintf(text, sizeof text, "hearth");
+    for (int i = 1; i < argc && n < sizeof text; i++) n += (size_t)snprintf(text + n, sizeof text - n, " %s", argv[i]);
+    if (n < sizeof text)
+        snprintf(text + n, sizeof text - n, " (hearth %s, revision %s)", HEARTH_VERSION, run_log_revision());
+    hearth_png_set_source(text);
+}
+
 int main(int argc, char **argv) {
     /* Idle OpenMP threads should sleep, not spin: on a shared machine a
      * spinning pool is several times slower as soon as another process runs
@@ -107,6 +120,7 @@ int main(int argc, char **argv) {
     /* A plugin that crashes or calls exit() inside a callback is named, and the
      * process ends with status 4 (crash.c); other crashes keep their default. */
     crash_install(-1);
+    png_source(argc, argv);
     if (argc < 2) return cmd_dashboard(argc, argv);
     const char *c = argv[1];
     if (!strcmp(c, "help") && argc >= 3) return cmd_help(argc - 1, argv + 1); /* hearth help scene */

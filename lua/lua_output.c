@@ -390,19 +390,25 @@ static int l_write_atomic(lua_State *L) {
     return 1;
 }
 
-/* core.read_text(path) -> the text of a file an earlier run left in the output folder (read as h.load reads:
- * a relative path from the output folder, under mpirun rank 0's), or nil when there is none or it is over 64 MB.
- * s:run reads a restored scene's .pvd with it, to continue the series (run.lua). */
+/* core.read_text(path [, head]) -> the text of a file an earlier run left in the output folder (read as h.load
+ * reads: a relative path from the output folder, under mpirun rank 0's), or nil when there is none or it is over
+ * 64 MB; with head, its first head bytes at most (a PNG's title, a PLY's header). s:run reads a restored scene's
+ * .pvd, CSV, PNG and PLY frames with it, to continue their series (run.lua). */
 static int l_read_text(lua_State *L) {
     char buf[4096];
     const char *path = hl_in_path(L, luaL_checkstring(L, 1), buf, sizeof buf);
+    lua_Integer head = luaL_optinteger(L, 2, 0);
     FILE *f = fopen(path, "rb");
     if (!f) return 0;
     luaL_Buffer b;
     luaL_buffinit(L, &b);
-    size_t n, total = 0, cap = (size_t)64 << 20;
+    size_t n, total = 0, cap = (size_t)64 << 20, want = head > 0 && (size_t)head < cap ? (size_t)head : 0;
     char chunk[8192];
-    while ((n = fread(chunk, 1, sizeof chunk, f)) > 0 && (total += n) <= cap) luaL_addlstring(&b, chunk, n);
+    while ((n = fread(chunk, 1, want && want - total < sizeof chunk ? want - total : sizeof chunk, f)) > 0 &&
+           (total += n) <= cap) {
+        luaL_addlstring(&b, chunk, n);
+        if (want && total >= want) break;
+    }
     int bad = ferror(f) || total > cap;
     fclose(f);
     luaL_pushresult(&b);

@@ -769,7 +769,7 @@ static int l_load(lua_State *L) {
     u->s = s;
     luaL_setmetatable(L, HL_SCENE);
     lua_newtable(L);
-    lua_pushboolean(L, 1); /* s:run continues a VTU series the saved run left (run.lua's continue_pvd) */
+    lua_pushboolean(L, 1); /* s:run continues the series the saved run left: VTU, PNG, PLY, CSV (run.lua) */
     lua_setfield(L, -2, "restored");
     lua_setiuservalue(L, -2, 1);
     return 1;

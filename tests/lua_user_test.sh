@@ -132,6 +132,79 @@ EOF
     expect_rc 0 "a new first leg"
     [ "$(grep -c '<DataSet' o/vtu/b.pvd)" -eq 3 ] || fail "a new scene's .pvd: $(cat o/vtu/b.pvd)"
     ;;
+checkpoint_frames_and_csv_continue)
+    # #18 (helper restartkeep): after h.load, s:run's PNG frames and PLY dumps were numbered from 0 again over the
+    # first leg's files and its CSV started afresh (only the VTU series continued). Bar set before the test's first
+    # run (a hand trial of the same two legs had been looked at): after a leg to 0.5 s (frames every 0.25 s) and a
+    # restored leg to 1 s in a new process, png/f_0000..f_0004 and ply/p_0000..p_0004 are there and no sixth of
+    # either; the first leg's files before the checkpoint (f_0000, f_0001, p_0000, p_0001) are byte-unchanged; frame
+    # 3 is drawn at 0.75 s (its title's time, its PLY's t), and frame 2, at the checkpoint's instant, is the second
+    # leg's (its Source names leg=2), as the VTU series does; series.csv has one header and t_s 0, 0.25, 0.5, 0.75, 1
+    # in that order. A new scene (not restored) into the same folder starts its CSV afresh, as before. The first run
+    # failed on this script's listing (ls sorts its arguments: ply before png), fixed; the bar is unchanged.
+    cat >legs.lua <<EOF
+local h = require "hearth"
+local P = h.params { leg = h.number { 1, min = 1, max = 2, integer = true, what = "which leg" } }
+local s
+if P.leg == 2 then s = h.load("ck.bin") else
+  s = h.scene { dim = 2, dx = 0.05, box = { { 0, 0 }, { 1, 1 } } }
+  s:add { shape = h.box({ 0.4, 0.4 }, { 0.6, 0.6 }), material = h.material("elastic", { density = 1000 }) }
+end
+s:run { until_t = P.leg * 0.5, every = 0.25, csv = "series.csv", png = { field = "speed", path = "png/f_%04d.png" },
+  ply = { path = "ply/p_%04d.ply" } }
+if P.leg == 1 then s:save("ck.bin") end
+EOF
+    "$hearth" run legs.lua --quiet --out o --set leg=1 >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "the first leg"
+    mkdir first && cp o/png/f_0000.png o/png/f_0001.png o/ply/p_0000.ply o/ply/p_0001.ply first/ ||
+        fail "the first leg's files: $(ls o/png o/ply)"
+    "$hearth" run legs.lua --quiet --out o --set leg=2 >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "the restored leg"
+    got="$(cd o && { ls png; ls ply; } | tr '\n' ' ')"
+    want="f_0000.png f_0001.png f_0002.png f_0003.png f_0004.png"
+    want="$want p_0000.ply p_0001.ply p_0002.ply p_0003.ply p_0004.ply "
+    [ "$got" = "$want" ] || fail "the files after the restored leg: $got, expected $want"
+    for f in f_0000.png f_0001.png; do cmp -s first/$f o/png/$f || fail "the restored leg wrote over $f"; done
+    for f in p_0000.ply p_0001.ply; do cmp -s first/$f o/ply/$f || fail "the restored leg wrote over $f"; done
+    python3 "$here/png_title.py" o/png/f_0003.png >title.txt || fail "png_title.py: $(cat title.txt)"
+    has title.txt "t = 0.75 s" "frame 3's time"
+    python3 "$here/png_title.py" --key Source o/png/f_0002.png >title.txt || fail "png_title.py: $(cat title.txt)"
+    has title.txt " --set leg=2 (hearth " "frame 2 at the checkpoint, drawn by the second leg"
+    head -c 200 o/ply/p_0003.ply | grep -qa "^comment hearth t=0.75$" ||
+        fail "p_0003.ply's time: $(head -c 200 o/ply/p_0003.ply)"
+    [ "$(grep -c '^t_s,' o/series.csv)" -eq 1 ] || fail "series.csv's headers: $(cat o/series.csv)"
+    got=$(sed 1d o/series.csv | cut -d, -f1 | tr '\n' ' ')
+    [ "$got" = "0 0.25 0.5 0.75 1 " ] || fail "series.csv's t_s after the restored leg: $got; $(cat o/series.csv)"
+    "$hearth" run legs.lua --quiet --out o --set leg=1 >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "a new first leg"
+    got=$(sed 1d o/series.csv | cut -d, -f1 | tr '\n' ' ')
+    [ "$got" = "0 0.25 0.5 " ] || fail "a new scene's series.csv: $got"
+    ;;
+png_source_names_demo_and_rheometer)
+    # #18 (helper restartkeep): only hearth run's PNGs carried the "Source" text (the command line and version);
+    # the demo's frames, the dashboard's slices and the trade and rheometer plots did not. Bar set before the test's
+    # first run: hearth demo's frame and hearth rheometer's flow curve each name their own command line and
+    # hearth's version and revision.
+    "$hearth" demo --out d --until 0.005 --frames 1 --quiet >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "hearth demo"
+    src=$(python3 "$here/png_title.py" --key Source d/frame_0000.png) || fail "png_title.py: $src"
+    case "$src" in
+    *": hearth demo --out d --until 0.005 --frames 1 --quiet (hearth "*", revision "*) ;;
+    *) fail "the demo frame's Source text: $src" ;;
+    esac
+    "$hearth" rheometer sauce.honey --rates 1:10:3 --out r >out.txt 2>err.txt
+    rc=$?
+    expect_rc 0 "hearth rheometer"
+    src=$(python3 "$here/png_title.py" --key Source r/sauce.honey.png) || fail "png_title.py: $src"
+    case "$src" in
+    *": hearth rheometer sauce.honey --rates 1:10:3 --out r (hearth "*", revision "*) ;;
+    *) fail "the flow curve's Source text: $src" ;;
+    esac
+    ;;
 drop_block_energy_line_unit)
     # #18 (helper userview5): drop_block.lua's last line said "kinetic energy 77.4 J" in 2D, where its height.csv
     # says kinetic_J_per_m (a plane scene's mass is per metre of depth). Bar set before the run: the 2D line says

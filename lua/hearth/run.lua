@@ -217,6 +217,58 @@ local function continue_pvd(state, pattern, pvd, t0)
   state.count, state.list = #list, list
 end
 
+-- A restored scene's PNG frames and PLY dumps continue the same way (#18, helper restartkeep): the first s:run of
+-- a pattern keeps the files pattern % 0, 1, ... that exist and were drawn before the checkpoint, and numbers on
+-- after them. Each file says when it was drawn: a PLY's header its time ("comment hearth t=", %.17g, exact), a PNG's
+-- title its step (render.c writes "step N)" in every title; its time is in %.4g). before(head) reads a file's first
+-- 8 KB (the PNG's title chunk is written before the image, the PLY's header before the particles).
+local function kept_frames(pattern, before)
+  local conv = 0
+  for _ in pattern:gmatch("%%0?%d*d") do conv = conv + 1 end
+  local _, pct = pattern:gsub("%%", "")
+  if conv ~= 1 or pct ~= 1 then return 0 end -- not a numbered series (one file drawn over, or the run refuses it)
+  local n = 0
+  while true do
+    local head = core.read_text(pattern:format(n), 8192)
+    if not head or not before(head) then return n end
+    n = n + 1
+  end
+end
+
+local function png_before(step0)
+  return function(head)
+    local title = head:match("iTXtTitle\0[\0\1][\0\1]\0\0([^\0]*)") -- keyword, flag, method, empty language keys
+    local step
+    for n in (title or ""):gmatch("step (%d+)%)") do step = tonumber(n) end
+    return step ~= nil and step < step0
+  end
+end
+
+local function ply_before(t0)
+  return function(head)
+    local t = tonumber(head:match("^ply\n[^\0]-\ncomment hearth t=([^\n]*)\n") or "")
+    return t ~= nil and t < t0
+  end
+end
+
+-- A restored scene's s:run{csv = ...} keeps the rows the saved run wrote before the checkpoint's time (t_s, in the
+-- %.9g the rows are written in, so the checkpoint's own row is the new leg's) and appends after them; the file is
+-- rewritten whole at each frame (atomically), as before. A file whose header is not this run's starts afresh.
+local function continue_csv(path, rows, t0)
+  local text = core.read_text(path)
+  if not text then return rows end
+  local lines = {}
+  for line in text:gmatch("[^\n]+") do lines[#lines + 1] = line end
+  if lines[1] ~= rows[1] then return rows end
+  local cut, kept = tonumber(("%.9g"):format(t0)), { rows[1] }
+  for i = 2, #lines do
+    local t = tonumber(lines[i]:match("^[^,]*"))
+    if not t then return rows end -- not a series s:run wrote
+    if t < cut then kept[#kept + 1] = lines[i] end
+  end
+  return kept
+end
+
 -- The dumps one run writes: {kind, path, every, next, state, opts}.
 local function run_dumps(self, o, opts, t0, every)
   local specs = {}
@@ -232,6 +284,7 @@ local function run_dumps(self, o, opts, t0, every)
       if not st.dumps[key] then
         st.dumps[key] = { count = 0, list = {} }
         if kind == "vtu" and st.restored then continue_pvd(st.dumps[key], path, pvd_path(path, d.pvd), t0) end
+        if kind == "ply" and st.restored then st.dumps[key].count = kept_frames(path, ply_before(t0)) end
       end
       -- a series continued by another s:run already has this instant (the
       -- last run's end): a second file at the same time would give the .pvd
@@ -357,7 +410,16 @@ function S:run(o)
       head[#head + 1] = ("%s%s@%g:%g:%g"):format(p[1], unit, v[1], v[2], v[3])
     end
     rows = { table.concat(head, ",") }
+    st.csv_continued = st.csv_continued or {}
+    if st.restored and not st.csv_continued[o.csv] then rows = continue_csv(o.csv, rows, t0) end
+    st.csv_continued[o.csv] = true
   end
+  local movie_from -- a movie of a continued series is the whole series', both legs', not the second leg's over it
+  if o.png and st.restored and not st.png_continued then -- the first leg's frames stay (kept_frames above)
+    local kept = kept_frames(o.png.path or "frame_%04d.png", png_before(self:stats().step))
+    if kept > 0 and st.frame == 0 then st.frame, movie_from = kept, 0 end
+  end
+  if o.png then st.png_continued = true end
   local function frame()
     local stt = self:stats()
     local fr = setmetatable({ t = stt.t, index = st.frame, scene = self }, frame_mt)
@@ -451,7 +513,7 @@ function S:run(o)
   end
   local stt = self:stats()
   core.progress(stt.t, until_t, stt.step, true)
-  if mv then movie_write(st, mv, first_frame, where) end
+  if mv then movie_write(st, mv, movie_from or first_frame, where) end
   st.ran = true
   if rest then stt.at_rest = at_rest end
   return stt
