@@ -77,6 +77,7 @@
 -- density, outer flag (the oven's heat enters there) and stress_yy, for scripts/validation/sph_roll_spots.py
 -- (docs/validation.md "The 1.5 mm roll's tear traced"); the run's bits are the same. outer is a flag:
 -- trace_NNNN.csv has no unit: outer
+-- trace_NNNN.csv has no unit: gas_left (with vent=true: the share of a bubble's own gas still in its cell; NaN: dough)
 -- Writes volume.csv (relative volume over time, from a density slice, and the
 -- coolest particle's temperature; by simulated time t_s, s), particles_NNNN.csv (positions, for
 -- tests/sph_roll_measure.py: particles_0000.csv is the raw roll before the run, and NNNN >= 1 the frame at
@@ -294,12 +295,14 @@ s:run { until_t = 3, every = 0.1, png = { field = "browning", path = "frames/bro
     f:png("temperature", "frames/temperature_%04d.png", { time_scale = 400 })
     positions(("particles_%04d.csv"):format(#csv - 1))
     if P.trace then -- the particles' state by id (scripts/validation/sph_roll_spots.py reads it; helper rolltear)
-      local r = s:particles { fields = { "id", "x", "v", "temperature", "pressure", "density", "boundary", "stress_yy" } }
-      local rows = { "id,x_m,y_m,vx_m_s,vy_m_s,T_degC,p_Pa,rho_kg_m3,outer,syy_Pa" }
+      local fields = { "id", "x", "v", "temperature", "pressure", "density", "boundary", "stress_yy" }
+      if P.vent then fields[#fields + 1] = "gas_left" end -- the share of a bubble's gas still in it (NaN: dough)
+      local r = s:particles { fields = fields }
+      local rows = { "id,x_m,y_m,vx_m_s,vy_m_s,T_degC,p_Pa,rho_kg_m3,outer,syy_Pa" .. (P.vent and ",gas_left" or "") }
       for i = 1, r.n do
         rows[#rows + 1] = ("%d,%.6g,%.6g,%.5g,%.5g,%.5g,%.6g,%.6g,%g,%.6g"):format(r.id[i], r.x[3 * i - 2],
           r.x[3 * i - 1], r.v[3 * i - 2], r.v[3 * i - 1], r.temperature[i], r.pressure[i], r.density[i], r.boundary[i],
-          r.stress_yy[i])
+          r.stress_yy[i]) .. (P.vent and (",%.6g"):format(r.gas_left[i]) or "")
       end
       h.write(("trace_%04d.csv"):format(#csv - 1), table.concat(rows, "\n") .. "\n")
     end
