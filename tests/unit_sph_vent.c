@@ -233,7 +233,7 @@ TEST(sph_vent_refused_without_gas_law) {
     if (s) hearth_scene_destroy(s);
 }
 
-/* the block with a bottom bubble, heated as vent_heat's: the bottom and top cells' gas shares, the bottom's outer flag */
+/* the block with a bottom bubble, heated as vent_heat's: the bottom and top cells' gas shares, the bottom's flag */
 static int vent_tray(int tray, double *g_bottom, double *g_top, double *outer_bottom) {
     hearth_scene *s = vent_block_on(1, 0, 1, tray);
     if (!s) return 0;

@@ -70,8 +70,11 @@
 -- "The roll's cells open at the set", and one that opens as the dough round
 -- it sets: "The roll's cells open as their walls set".)
 -- --set vent=true (sph.surface_vent) lets a bubble on the outer surface vent, as a crumb's cells that open to
--- the air (the flood fill's outer flag: the crust, and the tray side) lose their gas: its gauge is 0 and the gas
--- that left stays gone (sph_gas.c; docs/validation.md "Cells open to the air vent"). Off by default, as measured there.
+-- the air (the flood fill's outer flag, less the tray side: a cell within its h of the tray is closed by it) lose
+-- their gas: its gauge is 0 and the gas that left stays gone (sph_gas.c; docs/validation.md "Cells open to the air
+-- vent"). Vented on the tray side too, the 2 mm roll's base cells lost half their gas and it tipped on its tray
+-- (6.29 mm at 2 s); without it, 3.42 mm at 1.7 s and level ("The vented roll rocked because its tray side
+-- vented"). Off by default, as measured there.
 -- --set trace=true also writes trace_NNNN.csv beside each particles_NNNN.csv from 0001 on: every particle's id (the dough's
 -- first, its bubbles' after: bubble ids from the count the run prints), position, velocity, temperature, pressure,
 -- density, outer flag (the oven's heat enters there) and stress_yy, for scripts/validation/sph_roll_spots.py
