@@ -254,7 +254,7 @@ hearth_status sph_gas_check_def(const hearth_sph_def *o, hearth_error *err) {
 /* A bubble open to the oven's air: on the outer surface and not by a collider. The flood fill (sph_outer.c) runs
  * through colliders, which add no particles, so the roll's tray side reads as outer; there the cell's outside is
  * the tray (within h, sph_heat.c's rule for eq. 3.42's outside), whose metal the gas does not cross. Vented
- * there, the 2 mm roll's bottom fifth's cells lost 45% of their gas by 1.7 s where its middle's lost 5-6%, and
+ * there, the 2 mm roll's bottom fifth's cells lost 45% of their gas by 1.7 s where its middle's lost 5-9%, and
  * from 1.7 s it tipped on that vented foot (docs/validation.md "The vented roll rocked because its tray side
  * vented", helper ventrock). */
 static int open_to_air(const hearth_scene *s, const struct sph_state *st, const double *x, int i) {
