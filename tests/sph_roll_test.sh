@@ -103,7 +103,8 @@ claim_sph_bread_roll_one_piece*)
         "With the cells on the outer surface venting (--set vent=true, sph.surface_vent, off in the preset; helper" \
         "sphvent) the 1.5 mm roll was whole to 2 s (at most 0.83% torn, rise 1.3655x), while the 2 mm roll rocked" \
         "6.29 mm off its tray (\"Cells open to the air vent\"); with the tray side not venting (helper ventrock)" \
-        "the 2 mm roll stayed level (3.42 mm), and of two 1.5 mm runs one was whole (0.82%) and one (--set" \
+        "one 2 mm run stayed level (3.42 mm) and one (--set warm=0.3) tore its top 2.51% at 2.0 s; of two 1.5 mm" \
+        "runs one was whole (0.82%) and one (--set" \
         "warm=0.3) tore 2.87% at 2.0 s at that base spot, open onto the air gap under the lifted base, which a" \
         "cell within h of the tray does not vent into (\"The vented roll rocked because its tray side vented\")" >&2
     exit 77
