@@ -74,8 +74,8 @@
 -- their gas: its gauge is 0 and the gas that left stays gone (sph_gas.c; docs/validation.md "Cells open to the air
 -- vent"). Vented on the tray side too, the 2 mm roll's base cells lost half their gas and it tipped on its tray
 -- (6.29 mm at 2 s); without it, 3.42 mm at 1.7 s and level, but with --set warm=0.3 the 2 mm roll tore its top
--- 2.51% at 2 s and the 1.5 mm roll 2.87% at a base spot open onto the gap under its lifted base ("The vented roll rocked because its tray side
--- vented"). Off by default, as measured there.
+-- 2.51% at 2 s and the 1.5 mm roll 2.87% at a base spot open onto the gap under its lifted base ("The vented
+-- roll rocked because its tray side vented"). Off by default, as measured there.
 -- --set trace=true also writes trace_NNNN.csv beside each particles_NNNN.csv from 0001 on: every particle's id (the dough's
 -- first, its bubbles' after: bubble ids from the count the run prints), position, velocity, temperature, pressure,
 -- density, outer flag (the oven's heat enters there) and stress_yy, for scripts/validation/sph_roll_spots.py
