@@ -21,7 +21,15 @@
  *    empty). (Its block made past SCENE_PARALLEL_MIN after the first run,
  *    where 97 particles ran every loop on one thread; the bars unchanged.)
  *  - sph_vent_refused_without_gas_law: the switch alone is refused, naming
- *    sph.gas_law. */
+ *    sph.gas_law.
+ *  - sph_vent_tray_side_keeps_gas (helper ventrock; bars set at 00:00 UTC,
+ *    before its first run): the block with a third bubble in the middle of
+ *    its bottom row, heated as above with the switch. With nothing under it
+ *    that cell is on the outer surface and vents (share < 0.99: the control,
+ *    so the check is not empty). With a slip tray (a collider plane) at the
+ *    block's bottom face, the flood fill still marks it outer (checked), and
+ *    its gas share stays exactly 1 (its outside is the tray, which gas does
+ *    not cross), while the top cell still vents (share < 0.99). */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -42,10 +50,11 @@
 /* the block's particle ids of the two bubbles: the middle one, the top row's middle one */
 #define ID_INNER ((VENT_NY / 2) * VENT_NX + VENT_NX / 2)
 #define ID_TOP ((VENT_NY - 1) * VENT_NX + VENT_NX / 2)
+#define ID_BOTTOM (VENT_NX / 2) /* the bottom row's middle (sph_vent_tray_side_keeps_gas) */
 
 /* nx x ny particles; big: a 48 x 43 block (past SCENE_PARALLEL_MIN, so the threads share its loops) with every
  * fifth particle a bubble, for the threads' check */
-static hearth_scene *vent_block(int vent, int big) {
+static hearth_scene *vent_block_on(int vent, int big, int bottom, int tray) {
     const int nx = big ? 48 : VENT_NX, ny = big ? 43 : VENT_NY;
     const double lo[3] = {0, 0, 0}, hi[3] = {big ? 0.16 : 0.06, big ? 0.12 : 0.06, 0};
     hearth_scene_def d = sph_def(2, VENT_DX, lo, hi);
@@ -74,15 +83,31 @@ static hearth_scene *vent_block(int vent, int big) {
     }
     for (int j = 0; j < ny; j++)
         for (int i = 0; i < nx; i++) {
-            const int id = j * nx + i, b = big ? id % 5 == 0 : id == ID_INNER || id == ID_TOP;
+            const int id = j * nx + i,
+                      b = big ? id % 5 == 0 : id == ID_INNER || id == ID_TOP || (bottom && id == ID_BOTTOM);
             const double p[3] = {0.018 + (i + 0.5) * VENT_DX, 0.022 + (j + 0.5) * VENT_DX, 0};
             if (hearth_scene_add_particles(s, b ? bub : dough, 1, p, NULL,
                                            VENT_DX * VENT_DX, &err) != 1)
                 fprintf(stderr, "%s\n", err.msg);
         }
     sph_heat_speck(s, dough, 0.005, 0.005, 26); /* turns the temperature field on */
+    if (tray) { /* a slip plane along the block's bottom face (y = 0.022 m), as the roll's tray */
+        hearth_collider_def cd = hearth_default_collider_def();
+        const double p[3] = {0, 0.022, 0}, nrm[3] = {0, 1, 0};
+        cd.shape = hearth_shape_plane(p, nrm);
+        cd.mode = HEARTH_SLIP;
+        const int ok = hearth_scene_add_collider(s, &cd, &err) >= 0;
+        hearth_shape_free((hearth_shape *)cd.shape);
+        if (!ok) {
+            fprintf(stderr, "%s\n", err.msg);
+            hearth_scene_destroy(s);
+            return NULL;
+        }
+    }
     return s;
 }
+
+static hearth_scene *vent_block(int vent, int big) { return vent_block_on(vent, big, 0, 0); }
 
 /* index of the particle with id `id` now (the sort moves them) */
 static int index_of(const hearth_scene *s, int id) {
@@ -208,5 +233,44 @@ TEST(sph_vent_refused_without_gas_law) {
     if (s) hearth_scene_destroy(s);
 }
 
+/* the block with a bottom bubble, heated as vent_heat's: the bottom and top cells' gas shares, the bottom's flag */
+static int vent_tray(int tray, double *g_bottom, double *g_top, double *outer_bottom) {
+    hearth_scene *s = vent_block_on(1, 0, 1, tray);
+    if (!s) return 0;
+    hearth_error err;
+    const int n = s->ps.n;
+    double *T = pcold(&s->ps, PC_TEMPERATURE);
+    for (int i = 0; i < n; i++) T[i] = 26;
+    int ok = hearth_scene_step(s, 20, &err) == HEARTH_OK;
+    for (int k = 0; ok && k < 600; k++) {
+        T = pcold(&s->ps, PC_TEMPERATURE);
+        for (int i = 0; i < n; i++) T[i] = k < 400 ? 26 + 74.0 * (k + 1) / 400 : 100;
+        ok = hearth_scene_step(s, 1, &err) == HEARTH_OK;
+    }
+    if (!ok) fprintf(stderr, "step: %s\n", err.msg);
+    const struct sph_state *st = s->sph;
+    const int a = index_of(s, ID_BOTTOM), b = index_of(s, ID_TOP);
+    ok = ok && st->gasleft && a >= 0 && b >= 0;
+    if (ok) {
+        *g_bottom = st->gasleft[a] > 0 ? st->gasleft[a] : 1.0; /* NaN: never vented */
+        *g_top = st->gasleft[b] > 0 ? st->gasleft[b] : 1.0;
+        *outer_bottom = st->outer[a];
+    }
+    hearth_scene_destroy(s);
+    return ok;
+}
+
+TEST(sph_vent_tray_side_keeps_gas) {
+    double gb0 = 0, gt0 = 0, ob0 = 0, gb = 0, gt = 0, ob = 0;
+    CHECK(vent_tray(0, &gb0, &gt0, &ob0));
+    CHECK(vent_tray(1, &gb, &gt, &ob));
+    printf("no tray: bottom cell's gas share %.4f (outer %g; bar < 0.99), top %.4f\n", gb0, ob0, gt0);
+    printf("on a tray: bottom cell's gas share %.6f (outer %g; bar 1 exactly), top %.4f (bar < 0.99)\n", gb, ob, gt);
+    CHECK(gb0 < 0.99);
+    CHECK(ob > 0);
+    CHECK(gb == 1.0);
+    CHECK(gt < 0.99);
+}
+
 TEST_MAIN(T(sph_vent_outer_cell_vents_inner_keeps), T(sph_vent_gas_never_returns), T(sph_vent_threads_same_bits),
-          T(sph_vent_refused_without_gas_law))
+          T(sph_vent_refused_without_gas_law), T(sph_vent_tray_side_keeps_gas))

@@ -29,12 +29,13 @@ typedef enum field_id {
     F_VELOCITY, F_VX, F_VY, F_VZ, F_SPEED, F_DENSITY, F_J, F_PRESSURE, F_VON_MISES, F_STRESS_XY, F_TEMPERATURE, F_BOUNDARY,
     F_GAS, F_POROSITY, F_GAS_PRESSURE, F_GAS_MADE, F_GAS_MADE_2, F_SATURATION, F_WATER_MASS, F_WATER_PRESSURE, F_BROWNING,
     F_MIX_RATIO, F_STRESS,
-    F_SXX, F_SYY, F_SZZ, F_SXZ, F_SYZ, F_DAMAGE, F_BROWNING_T, F_BROWNING_S, F_COUNT
+    F_SXX, F_SYY, F_SZZ, F_SXZ, F_SYZ, F_DAMAGE, F_BROWNING_T, F_BROWNING_S, F_GAS_LEFT, F_COUNT
 } field_id;
 
 /* A field is live when its column is enabled (column -1: always live;
- * COLUMN_DAMAGE: when a material may crack, material_slot.fracture). */
-enum { COLUMN_DAMAGE = -2 };
+ * COLUMN_DAMAGE: when a material may crack, material_slot.fracture; COLUMN_VENT:
+ * in an SPH scene whose cells vent, sph.surface_vent). */
+enum { COLUMN_DAMAGE = -2, COLUMN_VENT = -3 };
 static const struct {
     const char *name, *unit;
     int ncomp, column;
@@ -84,6 +85,9 @@ static const struct {
                       "set browning = true in the scene (h.scene{browning = true}); the saturation also needs water"},
     [F_BROWNING_S] = {"browning_saturation", "1", 1, PC_BROWNING,
                       "set browning = true in the scene (h.scene{browning = true}); the saturation also needs water"},
+    /* the share of an SPH bubble's own gas still in its cell (sph_gas.c's vent(): 1 until its cell opens to the air,
+     * never rising after); NaN on the dough, which holds no gas (#18, helper ventrock) */
+    [F_GAS_LEFT] = {"gas_left", "1", 1, COLUMN_VENT, "set sph.surface_vent = true (SPH with sph.gas_law)"},
 };
 
 /* Scalar fields that are one component of a listed field, and browning's readings (diagnostics): not listed
@@ -121,6 +125,7 @@ static int field_live(const hearth_scene *s, int f) {
             if (s->mats.slot[m].fracture) return 1;
         return 0;
     }
+    if (fields[f].column == COLUMN_VENT) return s->def.sph.surface_vent; /* sph.c allocates gasleft then */
     return fields[f].column < 0 || (s->ps.enabled & (1u << fields[f].column));
 }
 
@@ -199,6 +204,7 @@ static int gas_particle(const hearth_scene *s, int i) {
 static int carries(const hearth_scene *s, int f, int i) {
     if (f == F_SATURATION || f == F_BROWNING || f == F_BROWNING_T || f == F_BROWNING_S) return !gas_particle(s, i);
     if (f == F_MIX_RATIO) return pcoli(&s->ps, PC_MAT)[i] == s->mix.mat;
+    if (f == F_GAS_LEFT) return s->mats.slot[pcoli(&s->ps, PC_MAT)[i]].core[CP_BUBBLE] > 0;
     return 1;
 }
 
@@ -218,6 +224,11 @@ static void particle_value(const hearth_scene *s, int f, int i, double *out, dou
             out[0] = sv[i];
             return;
         }
+    }
+    if (f == F_GAS_LEFT) { /* a bubble's cell that has not vented reads NaN in sph_gas.c: all its gas, 1 */
+        const double *g = solver_values(s, "gasleft");
+        out[0] = !g || !carries(s, f, i) ? NAN : g[i] > 0 && g[i] <= 1 ? g[i] : 1.0;
+        return;
     }
     switch (f) {
     case F_VELOCITY: memcpy(out, v, 3 * sizeof(double)); break;

@@ -217,7 +217,9 @@ static const hearth_setting settings[] = {
     /* a cell open to the air loses the gas that overfills it (sph_gas.c) */
     SPH_FLAG("surface_vent",
              "with gas_law: a bubble particle on the body's outer surface (open to the oven's air) vents: its gas holds "
-             "the outside pressure (zero gauge), and what left is gone if the cell closes again",
+             "the outside pressure (zero gauge), and what left is gone if the cell closes again; one within its h of a "
+             "collider does not (its outside there is the tray). The field gas_left is the share of a bubble's gas "
+             "still in its cell",
              surface_vent),
     SPH_FLAG("continuity_density",
              "with gas_law: Tait and the gas law read each particle's density from its own volume, m / (V0 det F) (the "

@@ -776,6 +776,7 @@ const double *sph_particle_values(const hearth_scene *s, const char *which) {
     if (!strcmp(which, "density")) return st->rho;
     if (!strcmp(which, "pressure")) return st->prs;
     if (!strcmp(which, "h")) return st->h;
+    if (!strcmp(which, "gasleft")) return st->gasleft; /* NULL unless sph.surface_vent (sph_gas.c's vent()) */
     if (!strcmp(which, "surface")) return st->surf;
     if (!strcmp(which, "outer")) return s->ps.enabled & (1u << PC_FLAGS) ? st->outer : NULL; /* made then (sph_step) */
     if (!strcmp(which, "surface_temperature")) /* made for browning.c alone: in a scene that browns (sph_heat.c) */
