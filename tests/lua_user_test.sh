@@ -8,6 +8,22 @@
 # userfix10). Shares lua_fixture.sh with lua_test.sh (scene files in tests/lua/).
 . "$(dirname "$0")/lua_fixture.sh" "$@"
 
+# legs_scene OUTPUTS: legs.lua, a block run in two legs (--set leg=1 to 0.5 s and saved to ck.bin; --set leg=2
+# restored from it, to 1 s), frames every 0.25 s with s:run's OUTPUTS (Lua table fields): the restart cases' scene.
+legs_scene() {
+    cat >legs.lua <<EOF
+local h = require "hearth"
+local P = h.params { leg = h.number { 1, min = 1, max = 2, integer = true, what = "which leg" } }
+local s
+if P.leg == 2 then s = h.load("ck.bin") else
+  s = h.scene { dim = 2, dx = 0.05, box = { { 0, 0 }, { 1, 1 } } }
+  s:add { shape = h.box({ 0.4, 0.4 }, { 0.6, 0.6 }), material = h.material("elastic", { density = 1000 }) }
+end
+s:run { until_t = P.leg * 0.5, every = 0.25, $1 }
+if P.leg == 1 then s:save("ck.bin") end
+EOF
+}
+
 case "$case_name" in
 sph_results_lines_say_real_minutes)
     # #18 (helper userview4): the SPH bread of the dead's and angel food cake's results lines gave a time in simulated
@@ -104,17 +120,7 @@ checkpoint_vtu_series_continues)
     # a leg to 0.5 s (frames every 0.25 s) and a restored leg to 1 s, the .pvd lists b_0000..b_0004 at 0, 0.25,
     # 0.5, 0.75 and 1 s, and the first leg's b_0000.vtu and b_0001.vtu are untouched; a new scene (not restored)
     # into the same folder starts the series afresh, as before.
-    cat >legs.lua <<EOF
-local h = require "hearth"
-local P = h.params { leg = h.number { 1, min = 1, max = 2, integer = true, what = "which leg" } }
-local s
-if P.leg == 2 then s = h.load("ck.bin") else
-  s = h.scene { dim = 2, dx = 0.05, box = { { 0, 0 }, { 1, 1 } } }
-  s:add { shape = h.box({ 0.4, 0.4 }, { 0.6, 0.6 }), material = h.material("elastic", { density = 1000 }) }
-end
-s:run { until_t = P.leg * 0.5, every = 0.25, vtu = { path = "vtu/b_%04d.vtu" } }
-if P.leg == 1 then s:save("ck.bin") end
-EOF
+    legs_scene 'vtu = { path = "vtu/b_%04d.vtu" }'
     "$hearth" run legs.lua --quiet --out o --set leg=1 >out.txt 2>err.txt
     rc=$?
     expect_rc 0 "the first leg"
@@ -142,18 +148,8 @@ checkpoint_frames_and_csv_continue)
     # leg's (its Source names leg=2), as the VTU series does; series.csv has one header and t_s 0, 0.25, 0.5, 0.75, 1
     # in that order. A new scene (not restored) into the same folder starts its CSV afresh, as before. The first run
     # failed on this script's listing (ls sorts its arguments: ply before png), fixed; the bar is unchanged.
-    cat >legs.lua <<EOF
-local h = require "hearth"
-local P = h.params { leg = h.number { 1, min = 1, max = 2, integer = true, what = "which leg" } }
-local s
-if P.leg == 2 then s = h.load("ck.bin") else
-  s = h.scene { dim = 2, dx = 0.05, box = { { 0, 0 }, { 1, 1 } } }
-  s:add { shape = h.box({ 0.4, 0.4 }, { 0.6, 0.6 }), material = h.material("elastic", { density = 1000 }) }
-end
-s:run { until_t = P.leg * 0.5, every = 0.25, csv = "series.csv", png = { field = "speed", path = "png/f_%04d.png" },
-  ply = { path = "ply/p_%04d.ply" } }
-if P.leg == 1 then s:save("ck.bin") end
-EOF
+    legs_scene 'csv = "series.csv", png = { field = "speed", path = "png/f_%04d.png" },
+  ply = { path = "ply/p_%04d.ply" }'
     "$hearth" run legs.lua --quiet --out o --set leg=1 >out.txt 2>err.txt
     rc=$?
     expect_rc 0 "the first leg"
