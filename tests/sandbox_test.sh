@@ -5,6 +5,28 @@
 # are in tests/lua/; the helpers (run, has, has_msg, whole_files) in lua_fixture.sh.
 . "$(dirname "$0")/lua_fixture.sh" "$@"
 
+# await WORD FILE TRIES LABEL: poll FILE for WORD every 0.05 s, TRIES times, or fail naming LABEL (the background
+# run bg_pid writes FILE; err.txt says why it never got there)
+await() {
+    for _ in $(seq "$3"); do grep -q "$1" "$2" && break; sleep 0.05; done
+    grep -q "$1" "$2" || fail "$4: $(cat err.txt)"
+}
+
+# signal_quits SIG LABEL: send SIG to the background run bg_pid and fail unless it ends within 1 s; rc its exit
+# status, ms the milliseconds from the signal to its end
+signal_quits() {
+    local t0 t1
+    t0=$(date +%s%N)
+    kill "-$1" "$bg_pid"
+    for _ in $(seq 40); do kill -0 "$bg_pid" 2>/dev/null || break; sleep 0.025; done
+    t1=$(date +%s%N)
+    kill -0 "$bg_pid" 2>/dev/null && fail "$2: still running 1 s after SIG$1"
+    wait "$bg_pid"
+    rc=$?
+    bg_pid=
+    ms=$(((t1 - t0) / 1000000))
+}
+
 case "$case_name" in
 lua_sandbox)
     printf 'not really a shared object' >evil.so # a C module in the working folder
@@ -256,20 +278,11 @@ sandbox_sigint_loop)
         rm -f out.txt err.txt
         "$hearth" run "$scenes/runaway.lua" --quiet --set "kind=$kind" >out.txt 2>err.txt &
         bg_pid=$!
-        for _ in $(seq 100); do grep -q started out.txt && break; sleep 0.05; done
-        grep -q started out.txt || fail "$kind: the scene did not start: $(cat err.txt)"
+        await started out.txt 100 "$kind: the scene did not start"
         sleep 0.3
-        local t0 t1
-        t0=$(date +%s%N)
-        kill "-$sig" "$bg_pid"
-        for _ in $(seq 40); do kill -0 "$bg_pid" 2>/dev/null || break; sleep 0.025; done
-        t1=$(date +%s%N)
-        kill -0 "$bg_pid" 2>/dev/null && fail "$kind: still running 1 s after SIG$sig"
-        wait "$bg_pid"
-        rc=$?
-        bg_pid=
-        echo "$kind SIG$sig: exit $rc after $(((t1 - t0) / 1000000)) ms"
-        [ $(((t1 - t0) / 1000000)) -le 1000 ] || fail "$kind: took more than 1 s"
+        signal_quits "$sig" "$kind"
+        echo "$kind SIG$sig: exit $rc after $ms ms"
+        [ "$ms" -le 1000 ] || fail "$kind: took more than 1 s"
         expect_rc "$want" "$kind after SIG$sig"
         has err.txt "interrupted by SIG$sig" "$kind: the message"
     }
@@ -287,14 +300,8 @@ sandbox_sigint_loop)
     bg_pid=$!
     exec 3>cmds
     echo 'io.stdout:setvbuf("no") print("started") while true do end' >&3
-    for _ in $(seq 100); do grep -q started out.txt && break; sleep 0.05; done
-    grep -q started out.txt || fail "repl: the command did not start: $(cat err.txt)"
-    kill -INT "$bg_pid"
-    for _ in $(seq 40); do kill -0 "$bg_pid" 2>/dev/null || break; sleep 0.025; done
-    kill -0 "$bg_pid" 2>/dev/null && fail "repl: still running 1 s after SIGINT"
-    wait "$bg_pid"
-    rc=$?
-    bg_pid=
+    await started out.txt 100 "repl: the command did not start"
+    signal_quits INT repl
     exec 3>&-
     expect_rc 130 "repl after SIGINT"
     has err.txt "interrupted by SIGINT" "repl: the message"
@@ -313,22 +320,14 @@ sandbox_sigterm_long_step)
     rm -f out.txt err.txt
     "$hearth" run "$scenes/runaway.lua" --quiet --threads 1 --set kind=long_step >out.txt 2>err.txt &
     bg_pid=$!
-    for _ in $(seq 400); do grep -q stepping out.txt && break; sleep 0.05; done
-    grep -q stepping out.txt || fail "long_step: the scene did not reach its step: $(cat err.txt)"
+    await stepping out.txt 400 "long_step: the scene did not reach its step"
     sleep 0.5
     kill -TERM "$bg_pid"
     for _ in $(seq 80); do grep -q "SIGTERM again quits at once" err.txt && break; sleep 0.05; done
     kill -0 "$bg_pid" 2>/dev/null || fail "long_step: the step ended within 4 s, so this case tests nothing: make it longer"
     has err.txt "stopping after SIGTERM once the core returns" "long_step: the notice"
-    t0=$(date +%s%N)
-    kill -TERM "$bg_pid"
-    for _ in $(seq 40); do kill -0 "$bg_pid" 2>/dev/null || break; sleep 0.025; done
-    t1=$(date +%s%N)
-    kill -0 "$bg_pid" 2>/dev/null && fail "long_step: still running 1 s after the second SIGTERM"
-    wait "$bg_pid"
-    rc=$?
-    bg_pid=
-    echo "long_step: the notice after the first SIGTERM; exit $rc $(((t1 - t0) / 1000000)) ms after the second"
+    signal_quits TERM "long_step: the second SIGTERM"
+    echo "long_step: the notice after the first SIGTERM; exit $rc $ms ms after the second"
     expect_rc 143 "long_step after the second SIGTERM"
     ;;
 sandbox_sigint_plugin_hang)
@@ -347,20 +346,14 @@ EOF
     HEARTH_PLUGIN_PATH="$HEARTH_TEST_PLUGIN_DIR:$HEARTH_PLUGIN_PATH" "$hearth" run hang.lua --quiet --threads 1 \
         >out.txt 2>err.txt &
     bg_pid=$!
-    for _ in $(seq 400); do grep -q stepping out.txt && break; sleep 0.05; done
-    grep -q stepping out.txt || fail "hang: the scene did not reach its step: $(cat err.txt)"
+    await stepping out.txt 400 "hang: the scene did not reach its step"
     sleep 0.3
     kill -INT "$bg_pid"
     for _ in $(seq 80); do grep -q "callback" err.txt && break; sleep 0.05; done
     kill -0 "$bg_pid" 2>/dev/null || fail "hang: the run ended: $(cat err.txt)"
     has err.txt "inside plugin 'hang_stress' ($HEARTH_TEST_PLUGIN_DIR/hearth_hang_stress.so), callback stress" \
         "hang: the plugin and callback named"
-    kill -INT "$bg_pid"
-    for _ in $(seq 40); do kill -0 "$bg_pid" 2>/dev/null || break; sleep 0.025; done
-    kill -0 "$bg_pid" 2>/dev/null && fail "hang: still running 1 s after the second SIGINT"
-    wait "$bg_pid"
-    rc=$?
-    bg_pid=
+    signal_quits INT "hang: the second SIGINT"
     expect_rc 130 "hang after the second SIGINT"
     ;;
 *) fail "unknown case $case_name" ;;

@@ -68,14 +68,18 @@ TEST(plugin_missing_file) {
     CHECK_STR_CONTAINS(err.msg, "plugin name is empty");
 }
 
-TEST(plugin_not_shared_object) {
+/* A fresh folder under $TMPDIR (else /tmp) in dir; 0, the test failed, when none could be made. */
+static int temp_dir(char *dir, size_t n) {
     const char *tmp = getenv("TMPDIR");
+    snprintf(dir, n, "%s/hearth_test_XXXXXX", tmp && *tmp ? tmp : "/tmp");
+    if (mkdtemp(dir)) return 1;
+    CHECK(!"mkdtemp failed");
+    return 0;
+}
+
+TEST(plugin_not_shared_object) {
     char dir[512], path[600];
-    snprintf(dir, sizeof dir, "%s/hearth_test_XXXXXX", tmp && *tmp ? tmp : "/tmp");
-    if (!mkdtemp(dir)) {
-        CHECK(!"mkdtemp failed");
-        return;
-    }
+    if (!temp_dir(dir, sizeof dir)) return;
     snprintf(path, sizeof path, "%s/hearth_garbage.so", dir);
     FILE *f = fopen(path, "w");
     CHECK(f != NULL);
@@ -111,13 +115,8 @@ static int copy_file(const char *from, const char *to) {
 TEST(plugin_file_names_its_material) {
     char src[1024];
     if (!fixture(src, sizeof src, "asym")) return;
-    const char *tmp = getenv("TMPDIR");
     char dir[512], path[600];
-    snprintf(dir, sizeof dir, "%s/hearth_test_XXXXXX", tmp && *tmp ? tmp : "/tmp");
-    if (!mkdtemp(dir)) {
-        CHECK(!"mkdtemp failed");
-        return;
-    }
+    if (!temp_dir(dir, sizeof dir)) return;
     const char *names[] = {"hearth_renamed.so", "hearth_asym.so", "my_law.so"};
     for (int i = 0; i < 3; i++) {
         snprintf(path, sizeof path, "%s/%s", dir, names[i]);

@@ -117,13 +117,39 @@ static int index_of(const hearth_scene *s, int id) {
     return -1;
 }
 
+/* particle i's gas share: 1 where it never vented (NaN in sph_gas.c) or the scene does not vent */
+static double share(const struct sph_state *st, int i) {
+    return st->gasleft && st->gasleft[i] > 0 ? st->gasleft[i] : 1.0;
+}
+
+/* The heating every case here gives its block: 20 steps at 26 degC, then 26 -> 100 degC over 400 steps (the
+ * temperature set on every particle before each step) and held at 100; steps of that schedule from the 20th on,
+ * each(s, ud) after every one of them. 1 when every step stood. */
+static int heat_block(hearth_scene *s, int steps, void (*each)(const hearth_scene *, void *), void *ud) {
+    const int heat = 400, n = s->ps.n;
+    hearth_error err;
+    double *T = pcold(&s->ps, PC_TEMPERATURE);
+    for (int i = 0; i < n; i++) T[i] = 26;
+    int ok = hearth_scene_step(s, 20, &err) == HEARTH_OK;
+    if (ok && each) each(s, ud);
+    for (int k = 0; ok && k < steps; k++) {
+        const double Tnow = k < heat ? 26 + 74.0 * (k + 1) / heat : 100;
+        T = pcold(&s->ps, PC_TEMPERATURE);
+        for (int i = 0; i < n; i++) T[i] = Tnow;
+        ok = hearth_scene_step(s, 1, &err) == HEARTH_OK;
+        if (ok && each) each(s, ud);
+    }
+    if (!ok) fprintf(stderr, "step: %s\n", err.msg);
+    return ok;
+}
+
 /* the bubbles' gas share summed (each bubble holds bubble x V0 of raw gas; here both 1 x dx^2) */
 static double gas_total(const hearth_scene *s) {
     const struct sph_state *st = s->sph;
     const int *mat = pcoli(&s->ps, PC_MAT);
     double g = 0;
     for (int i = 0; i < s->ps.n; i++)
-        if (s->mats.slot[mat[i]].core[CP_BUBBLE] > 0) g += st->gasleft && st->gasleft[i] > 0 ? st->gasleft[i] : 1.0;
+        if (s->mats.slot[mat[i]].core[CP_BUBBLE] > 0) g += share(st, i);
     return g;
 }
 
@@ -135,41 +161,30 @@ typedef struct {
 
 /* 26 -> 100 degC over 400 steps, then 200 steps held (big: the first 20 steps of the heating alone, to 29.7 degC;
  * heated over 40 steps its raw bubbles' first jump set the guard's runaway off) */
+/* heat_block's each: the total share at the start, and how often it rose step to step */
+static void track_gas(const hearth_scene *s, void *ud) {
+    vent_run *r = ud;
+    const double g = gas_total(s);
+    if (r->g_start == 0) r->g_start = g; /* the first call, after the 20 steps at 26 degC (vent_heat zeroes r) */
+    else if (g > r->g_end) r->rises++;
+    r->g_end = g;
+}
+
 static int vent_heat(int vent, int big, vent_run *r) {
     memset(r, 0, sizeof *r);
     hearth_scene *s = vent_block(vent, big);
-    const int heat = 400, steps = big ? 20 : 600;
     if (!s) return 0;
-    hearth_error err;
-    const int n = s->ps.n;
-    double *T = pcold(&s->ps, PC_TEMPERATURE);
-    for (int i = 0; i < n; i++) T[i] = 26;
-    int ok = hearth_scene_step(s, 20, &err) == HEARTH_OK;
-    r->g_start = gas_total(s);
-    double g_prev = r->g_start;
-    for (int k = 0; ok && k < steps; k++) {
-        const double Tnow = k < heat ? 26 + 74.0 * (k + 1) / heat : 100;
-        T = pcold(&s->ps, PC_TEMPERATURE);
-        for (int i = 0; i < n; i++) T[i] = Tnow;
-        ok = hearth_scene_step(s, 1, &err) == HEARTH_OK;
-        const double g = gas_total(s);
-        if (g > g_prev) r->rises++;
-        g_prev = g;
-    }
-    if (!ok) fprintf(stderr, "step: %s\n", err.msg);
+    int ok = heat_block(s, big ? 20 : 600, track_gas, r);
     const double *p = sph_particle_values(s, "pressure");
     const int a = index_of(s, ID_INNER), b = index_of(s, ID_TOP);
     const struct sph_state *st = s->sph;
     if (ok && p && a >= 0 && b >= 0 && !big) {
         r->p_inner = p[a], r->p_top = p[b];
-        r->g_inner = st->gasleft ? st->gasleft[a] : 1, r->g_top = st->gasleft ? st->gasleft[b] : 1;
-        if (!(r->g_inner > 0)) r->g_inner = 1; /* NaN: never vented */
-        if (!(r->g_top > 0)) r->g_top = 1;
+        r->g_inner = share(st, a), r->g_top = share(st, b);
         printf("  vent %d: inner p %.1f Pa, gas %.4f, outer %g; top p %.1f Pa, gas %.4f, outer %g\n", vent, p[a],
                r->g_inner, st->outer[a], p[b], r->g_top, st->outer[b]);
     } else if (!big)
         ok = 0;
-    r->g_end = gas_total(s);
     r->hash = hearth_scene_hash(s);
     hearth_scene_destroy(s);
     return ok;
@@ -237,23 +252,13 @@ TEST(sph_vent_refused_without_gas_law) {
 static int vent_tray(int tray, double *g_bottom, double *g_top, double *outer_bottom) {
     hearth_scene *s = vent_block_on(1, 0, 1, tray);
     if (!s) return 0;
-    hearth_error err;
-    const int n = s->ps.n;
-    double *T = pcold(&s->ps, PC_TEMPERATURE);
-    for (int i = 0; i < n; i++) T[i] = 26;
-    int ok = hearth_scene_step(s, 20, &err) == HEARTH_OK;
-    for (int k = 0; ok && k < 600; k++) {
-        T = pcold(&s->ps, PC_TEMPERATURE);
-        for (int i = 0; i < n; i++) T[i] = k < 400 ? 26 + 74.0 * (k + 1) / 400 : 100;
-        ok = hearth_scene_step(s, 1, &err) == HEARTH_OK;
-    }
-    if (!ok) fprintf(stderr, "step: %s\n", err.msg);
+    int ok = heat_block(s, 600, NULL, NULL);
     const struct sph_state *st = s->sph;
     const int a = index_of(s, ID_BOTTOM), b = index_of(s, ID_TOP);
     ok = ok && st->gasleft && a >= 0 && b >= 0;
     if (ok) {
-        *g_bottom = st->gasleft[a] > 0 ? st->gasleft[a] : 1.0; /* NaN: never vented */
-        *g_top = st->gasleft[b] > 0 ? st->gasleft[b] : 1.0;
+        *g_bottom = share(st, a);
+        *g_top = share(st, b);
         *outer_bottom = st->outer[a];
     }
     hearth_scene_destroy(s);
